@@ -1,0 +1,31 @@
+"""Pydantic project model: the single source of truth for what a user edits.
+
+The JSON Schema in shared_schema/ is generated from these classes.
+"""
+
+from .diagnostics import Diagnostic, Severity, has_errors
+from .fbd import (
+    Block,
+    Connector,
+    Continuation,
+    FbdBody,
+    FbdJump,
+    FbdNetwork,
+    FbdNode,
+    FbdReturn,
+    InputNode,
+    OutputNode,
+    PinFlags,
+    PinRef,
+    Position,
+    Wire,
+)
+from .ld import Box, Coil, Compare, Contact, Jump, LdBody, LdElement, LdNetwork, Parallel, Return
+from .project import PROJECT_FORMAT, Pou, Project, Task
+
+__all__ = [
+    "PROJECT_FORMAT", "Block", "Box", "Coil", "Compare", "Connector", "Contact", "Continuation",
+    "Diagnostic", "FbdBody", "FbdJump", "FbdNetwork", "FbdNode", "FbdReturn", "InputNode", "Jump",
+    "LdBody", "LdElement", "LdNetwork", "OutputNode", "Parallel", "PinFlags", "PinRef", "Position",
+    "Pou", "Project", "Return", "Severity", "Task", "Wire", "has_errors",
+]

@@ -1,0 +1,113 @@
+"""Function block diagram model: networks as graphs of nodes and wires.
+
+Positions are layout hints only; execution order comes from the wiring (and the
+optional ``order`` list where the wiring leaves it open).
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Literal, Union
+
+from pydantic import BaseModel, ConfigDict, Field
+
+from .ld import CoilMode
+
+
+class Position(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+    x: float
+    y: float
+
+
+class PinFlags(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+    negated: bool = False
+    edge: Literal["rising", "falling"] | None = None
+
+
+class _Node(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+    id: str = Field(min_length=1)
+    pos: Position | None = None
+
+
+class Block(_Node):
+    type: Literal["block"] = "block"
+    call: str
+    instance: str | None = None
+    en: bool = False
+    pins: dict[str, PinFlags] | None = None
+
+
+class InputNode(_Node):
+    type: Literal["input"] = "input"
+    expr: str = Field(description="A variable or literal in ST operand syntax.")
+
+
+class OutputNode(_Node):
+    type: Literal["output"] = "output"
+    var: str
+    mode: CoilMode = "normal"
+
+
+class FbdJump(_Node):
+    type: Literal["jump"] = "jump"
+    target: str
+
+
+class FbdReturn(_Node):
+    type: Literal["return"] = "return"
+
+
+class Connector(_Node):
+    type: Literal["connector"] = "connector"
+    name: str
+
+
+class Continuation(_Node):
+    type: Literal["continuation"] = "continuation"
+    name: str
+
+
+FbdNode = Annotated[
+    Union[Block, InputNode, OutputNode, FbdJump, FbdReturn, Connector, Continuation],
+    Field(discriminator="type"),
+]
+
+
+class PinRef(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+    node: str
+    pin: str
+
+
+class Wire(BaseModel):
+    """A connection from an output pin to an input pin (``from`` is a Python keyword, hence the alias)."""
+
+    model_config = ConfigDict(extra="forbid", populate_by_name=True, serialize_by_alias=True)
+
+    from_: PinRef = Field(alias="from")
+    to: PinRef
+
+
+class FbdNetwork(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+    id: str = Field(min_length=1)
+    label: str | None = None
+    comment: str | None = None
+    nodes: list[FbdNode] = Field(default_factory=list)
+    wires: list[Wire] = Field(default_factory=list)
+    order: list[str] | None = Field(
+        default=None, description="Node ids fixing the execution order where the wiring leaves it open."
+    )
+
+
+class FbdBody(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+    networks: list[FbdNetwork] = Field(default_factory=list)

@@ -1,0 +1,91 @@
+"""Ladder diagram model: networks as series/parallel lists of elements.
+
+A series list runs from the left rail to the right rail; ``parallel`` ORs its
+branches. There are no stored coordinates: the editor computes the layout, so
+every edit reflows cleanly and the files diff well in git.
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Literal, Union
+
+from pydantic import BaseModel, ConfigDict, Field
+
+ContactMode = Literal["no", "nc", "p", "n"]
+CoilMode = Literal["normal", "negated", "set", "reset", "p", "n"]
+CompareOp = Literal["GT", "GE", "EQ", "LE", "LT", "NE"]
+
+
+class _Element(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+    id: str = Field(min_length=1, description="Unique within the POU; the probe id for live power flow.")
+
+
+class Contact(_Element):
+    type: Literal["contact"] = "contact"
+    var: str = Field(description="ST operand text of a BOOL variable, e.g. Start or %IX0.1.")
+    mode: ContactMode = "no"
+
+
+class Compare(_Element):
+    type: Literal["compare"] = "compare"
+    op: CompareOp
+    left: str
+    right: str
+
+
+class Coil(_Element):
+    type: Literal["coil"] = "coil"
+    var: str
+    mode: CoilMode = "normal"
+
+
+class Parallel(_Element):
+    type: Literal["parallel"] = "parallel"
+    branches: list[list[LdElement]] = Field(description="Two or more series lists, ORed.")
+
+
+class Box(_Element):
+    type: Literal["box"] = "box"
+    call: str = Field(description="Function or function block type name, e.g. TON or ADD.")
+    instance: str | None = Field(default=None, description="FB instance variable (function blocks only).")
+    inputs: dict[str, str | list[LdElement]] = Field(
+        default_factory=dict,
+        description="Formal input name -> operand text, or a series list fed from the left rail.",
+    )
+    outputs: dict[str, str] = Field(default_factory=dict, description="Formal output name -> variable.")
+    en: bool = False
+
+
+class Jump(_Element):
+    type: Literal["jump"] = "jump"
+    target: str
+
+
+class Return(_Element):
+    type: Literal["return"] = "return"
+
+
+LdElement = Annotated[
+    Union[Contact, Compare, Coil, Parallel, Box, Jump, Return],
+    Field(discriminator="type"),
+]
+
+Parallel.model_rebuild()
+Box.model_rebuild()
+
+
+class LdNetwork(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+    id: str = Field(min_length=1)
+    label: str | None = None
+    comment: str | None = None
+    elements: list[LdElement] = Field(default_factory=list)
+
+
+class LdBody(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+    networks: list[LdNetwork] = Field(default_factory=list)

@@ -1,0 +1,1 @@
+"""Structured Text front end: parser, AST, checker, printer."""
