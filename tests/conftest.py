@@ -1,25 +1,10 @@
-"""Shared pytest fixtures and paths."""
+"""Pytest configuration shared by all suites."""
 
-from __future__ import annotations
+import os
 
-import pathlib
+from hypothesis import settings
 
-import pytest
-
-ROOT = pathlib.Path(__file__).resolve().parents[1]
-EXTERNAL = (ROOT / ".." / "shared" / "external").resolve()
-SPEC = (ROOT / ".." / "shared" / "spec").resolve()
-EXAMPLES = ROOT / "examples"
-
-
-@pytest.fixture
-def root() -> pathlib.Path:
-    return ROOT
-
-
-def external(*parts: str) -> pathlib.Path:
-    """Path under ../shared/external; skips the calling test when it is absent."""
-    path = EXTERNAL.joinpath(*parts)
-    if not path.exists():
-        pytest.skip(f"{path} not present (../shared/external is optional)")
-    return path
+# Property tests are sized for the 2-core CI budget; LADDERLAB_HYPOTHESIS=thorough runs more examples.
+settings.register_profile("ci", max_examples=60, deadline=None)
+settings.register_profile("thorough", max_examples=1000, deadline=None)
+settings.load_profile(os.environ.get("LADDERLAB_HYPOTHESIS", "ci"))
