@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, model_validator
+from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validator, model_validator
 
 from .fbd import FbdBody
 from .ld import LdBody
@@ -17,6 +17,11 @@ Language = Literal["st", "ld", "fbd"]
 BODY_TYPE_BY_LANGUAGE: dict[str, type] = {"st": str, "ld": LdBody, "fbd": FbdBody}
 
 
+def _strip_trailing_whitespace(value: Any) -> Any:
+    """ST texts are kept as typed except trailing whitespace, which files and editors disagree on."""
+    return value.rstrip() if isinstance(value, str) else value
+
+
 class Pou(BaseModel):
     """A program organisation unit. ``body`` is ST text, an ``LdBody`` or an ``FbdBody`` per ``language``."""
 
@@ -27,30 +32,34 @@ class Pou(BaseModel):
     language: Language
     return_type: str | None = Field(default=None, description="Functions only: the result type.")
     declarations: str = Field(default="", description="ST text of the VAR...END_VAR blocks, as typed.")
-    body: str | LdBody | FbdBody
+    body: str | LdBody | FbdBody = ""
 
-    @model_validator(mode="before")
+    _normalise_texts = field_validator("declarations", "body", mode="before")(_strip_trailing_whitespace)
+
+    @field_validator("body", mode="wrap")
     @classmethod
-    def _body_matches_language(cls, data: Any) -> Any:
-        """Parse ``body`` as the type its ``language`` names, so errors point at the right shape."""
-        if not isinstance(data, dict):
-            return data
-        language = data.get("language")
-        body = data.get("body")
-        if language == "st":
-            if "body" not in data:
-                return {**data, "body": ""}
-            if not isinstance(body, str):
+    def _body_matches_language(cls, value: Any, handler: Any, info: ValidationInfo) -> Any:
+        """Validate ``body`` as the type its ``language`` names, so errors point at the right shape."""
+        language = info.data.get("language")
+        expected = BODY_TYPE_BY_LANGUAGE.get(language)
+        if expected is None:
+            return handler(value)
+        if expected is str:
+            if not isinstance(value, str):
                 raise ValueError("an ST POU's body must be a string of ST statements")
-        elif language in ("ld", "fbd"):
-            if "body" not in data:
-                return {**data, "body": {"networks": []}}
-            expected = BODY_TYPE_BY_LANGUAGE[language]
-            if isinstance(body, dict):
-                return {**data, "body": expected.model_validate(body)}
-            if not isinstance(body, expected):
-                raise ValueError(f"an {language.upper()} POU's body must be an object with 'networks'")
-        return data
+            return handler(value)
+        if isinstance(value, expected):
+            return value
+        if not isinstance(value, dict):
+            raise ValueError(f"an {language.upper()} POU's body must be an object with 'networks'")
+        return expected.model_validate(value)
+
+    @model_validator(mode="after")
+    def _empty_graphical_body(self) -> Pou:
+        """A new LD/FBD POU created without a body starts with no networks."""
+        if self.language != "st" and isinstance(self.body, str):
+            self.body = BODY_TYPE_BY_LANGUAGE[self.language]()
+        return self
 
 
 class Task(BaseModel):
@@ -71,6 +80,8 @@ class Project(BaseModel):
     globals: str = Field(default="", description="ST text of VAR_GLOBAL ... END_VAR blocks.")
     pous: list[Pou] = Field(default_factory=list)
     tasks: list[Task] = Field(default_factory=list)
+
+    _normalise_texts = field_validator("types", "globals", mode="before")(_strip_trailing_whitespace)
 
     def pou(self, name: str) -> Pou | None:
         """The POU called ``name`` (IEC names are case-insensitive)."""

@@ -1,1 +1,17 @@
-"""storage package."""
+"""Project storage: workspace folders, single-file projects, and ST source files."""
+
+from .errors import (
+    AlreadyExistsError,
+    ConflictError,
+    InvalidNameError,
+    NotFoundError,
+    ProjectLoadError,
+    StorageError,
+)
+from .load import load_project_path
+from .workspace import ProjectInfo, StoredProject, Workspace
+
+__all__ = [
+    "AlreadyExistsError", "ConflictError", "InvalidNameError", "NotFoundError", "ProjectInfo",
+    "ProjectLoadError", "StorageError", "StoredProject", "Workspace", "load_project_path",
+]

@@ -1,0 +1,51 @@
+# LadderLab: `make run` and `make test` do all set-up on a fresh machine
+# (Python 3.11, Node and npm present; Debian packages installed with apt-get when missing).
+
+PYTHON ?= python3
+VENV   := .venv
+PY     := $(VENV)/bin/python
+PIP    := $(VENV)/bin/pip
+HOST   ?= 127.0.0.1
+PORT   ?= 8000
+SUDO   := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+PYTEST_ARGS ?=
+
+.PHONY: run test test-slow bench schema frontend chromium clean
+
+run: $(VENV)/.installed frontend
+	$(VENV)/bin/ladderlab serve --host $(HOST) --port $(PORT)
+
+test: $(VENV)/.installed chromium
+	$(PY) -m pytest -q $(PYTEST_ARGS)
+
+test-slow: $(VENV)/.installed chromium
+	LADDERLAB_HYPOTHESIS=thorough $(PY) -m pytest -q -m "slow or not slow" $(PYTEST_ARGS)
+
+bench: $(VENV)/.installed
+	@for script in benchmarks/*.py; do echo "== $$script"; $(PY) $$script || exit 1; done
+
+schema: $(VENV)/.installed
+	$(PY) -c "from pathlib import Path; from ladderlab.model.schema import write_schemas; [print('wrote', p) for p in write_schemas(Path('shared_schema'))]"
+
+# The virtual environment is rebuilt whenever pyproject.toml changes.
+$(VENV)/.installed: pyproject.toml
+	$(PYTHON) -m venv $(VENV)
+	$(PIP) install --quiet --upgrade pip
+	$(PIP) install --quiet -e '.[test]'
+	touch $@
+
+# The browser app (frontend/) is built into the server's static folder when it exists.
+frontend:
+	@if [ -f frontend/package.json ]; then \
+		cd frontend && npm ci --no-audit --no-fund && npm run build; \
+	else echo "frontend/ has no package.json yet: serving the placeholder page"; fi
+
+# Browser tests drive Debian's chromium (never a downloaded browser).
+chromium:
+	@command -v chromium >/dev/null 2>&1 || { \
+		echo "installing Debian's chromium for the browser tests"; \
+		$(SUDO) apt-get update -qq && \
+		DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends chromium >/dev/null; }
+
+clean:
+	rm -rf $(VENV) frontend/node_modules frontend/dist backend/ladderlab/server/static .pytest_cache .hypothesis

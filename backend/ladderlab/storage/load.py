@@ -1,0 +1,56 @@
+"""Load the PROJECT argument of the CLI: a project folder, a whole-project .json, or a .st file."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from pydantic import ValidationError
+
+from ..model import Diagnostic, Pou, Project
+from .errors import ProjectLoadError, validation_diagnostics
+from .project_folder import PROJECT_FILE, read_project_folder
+from .st_text import StTextError, split_source
+
+
+def load_project_path(path: Path | str) -> Project:
+    """Read whatever a user points the CLI at; raises ProjectLoadError with located diagnostics."""
+    path = Path(path)
+    if path.is_dir():
+        if not (path / PROJECT_FILE).is_file():
+            raise _error(str(path), f"not a project folder: it has no {PROJECT_FILE}")
+        return read_project_folder(path)
+    if not path.is_file():
+        raise _error(str(path), "no such file or folder")
+    if path.suffix.lower() == ".json":
+        return _load_json_project(path)
+    if path.suffix.lower() == ".st":
+        return project_from_st(path.read_text(encoding="utf-8"), name=path.stem, file=path.name)
+    raise _error(str(path), "expected a project folder, a project .json file or a .st file")
+
+
+def _load_json_project(path: Path) -> Project:
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except json.JSONDecodeError as err:
+        raise ProjectLoadError([Diagnostic(code="BAD-JSON", file=path.name, line=err.lineno,
+                                           column=err.colno, message=f"invalid JSON: {err.msg}")]) from err
+    try:
+        return Project.model_validate(data)
+    except ValidationError as err:
+        raise ProjectLoadError(validation_diagnostics(err, data, path.name)) from err
+
+
+def project_from_st(text: str, *, name: str, file: str) -> Project:
+    """A project made of the POUs, TYPE and VAR_GLOBAL blocks of one ST source file."""
+    try:
+        parsed = split_source(text)
+    except StTextError as err:
+        raise ProjectLoadError([Diagnostic(code="BAD-FILE", file=file, line=err.line, column=err.column,
+                                           message=err.reason)]) from err
+    pous: list[Pou] = parsed.pous
+    return Project(name=name, types=parsed.types, globals=parsed.globals, pous=pous)
+
+
+def _error(file: str, message: str) -> ProjectLoadError:
+    return ProjectLoadError([Diagnostic(code="BAD-PATH", file=file, message=message)])

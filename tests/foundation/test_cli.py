@@ -1,0 +1,82 @@
+"""The ladderlab command line, run as a real process."""
+
+from __future__ import annotations
+
+import json
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+from fastapi.testclient import TestClient
+
+from ladderlab.server.app import create_app
+from ladderlab.storage import Workspace, load_project_path
+from tests.support import EXAMPLES
+
+
+def ladderlab(*args: str) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([sys.executable, "-m", "ladderlab.cli", *args], capture_output=True, text=True, timeout=60)
+
+
+def test_check_example_exits_zero() -> None:
+    result = ladderlab("check", str(EXAMPLES / "motor"))
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert "motor: 3 POUs, 0 errors" in result.stdout
+
+
+def test_check_broken_copy_names_file_and_json_path(tmp_path: Path) -> None:
+    folder = tmp_path / "motor"
+    shutil.copytree(EXAMPLES / "motor", folder)
+    path = folder / "pous" / "Main.ld.json"
+    data = json.loads(path.read_text())
+    data["body"]["networks"][0]["elements"][1]["mode"] = "sideways"
+    path.write_text(json.dumps(data))
+    result = ladderlab("check", str(folder))
+    assert result.returncode != 0
+    assert "pous/Main.ld.json, $.body.networks[0].elements[1].mode: error BAD-FILE: " \
+           "expected 'no', 'nc', 'p' or 'n', got 'sideways'" in result.stderr
+
+
+def test_check_reports_model_errors_with_nonzero_exit(tmp_path: Path) -> None:
+    project = load_project_path(EXAMPLES / "motor")
+    project.tasks[0].programs.append("Blinker")
+    path = tmp_path / "motor.json"
+    path.write_text(project.model_dump_json())
+    result = ladderlab("check", str(path))
+    assert result.returncode == 1
+    assert ("$.tasks[0].programs[2], POU Blinker: error NOT-A-PROGRAM: task MainTask can only run programs; "
+            "Blinker is a function block") in result.stdout
+
+
+def test_check_accepts_st_file(tmp_path: Path) -> None:
+    path = tmp_path / "demo.st"
+    path.write_text("PROGRAM Main\nVAR x : INT; END_VAR\nx := x + 1;\nEND_PROGRAM\n")
+    result = ladderlab("check", str(path))
+    assert result.returncode == 0, result.stderr
+    assert "demo: 1 POUs, 0 errors" in result.stdout
+
+
+def test_check_missing_path() -> None:
+    result = ladderlab("check", "/nonexistent/project")
+    assert result.returncode == 2
+    assert "/nonexistent/project: error BAD-PATH: no such file or folder" in result.stderr
+
+
+def test_schema_prints_project_schema() -> None:
+    result = ladderlab("schema")
+    schema = json.loads(result.stdout)
+    assert schema["title"] == "Project"
+    assert {"name", "format", "types", "globals", "pous", "tasks"} <= set(schema["properties"])
+
+
+def test_serve_refuses_remote_bind_without_flag() -> None:
+    result = ladderlab("serve", "--host", "0.0.0.0", "--port", "1")
+    assert result.returncode == 2
+    assert "pass --allow-remote" in result.stderr
+
+
+def test_health_endpoint(tmp_path: Path) -> None:
+    client = TestClient(create_app(Workspace(tmp_path)))
+    assert client.get("/api/health").json()["status"] == "ok"
+    assert "LadderLab" in client.get("/").text

@@ -1,0 +1,50 @@
+"""The project model: JSON round trip, language/body consistency, schema freshness."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+from hypothesis import given
+from pydantic import ValidationError
+
+from ladderlab.model import LdBody, Pou, Project, Wire
+from ladderlab.model.schema import schema_texts
+from tests.support import ROOT
+
+from .strategies import projects
+
+
+@given(projects())
+def test_model_json_round_trip(project: Project) -> None:
+    text = project.model_dump_json()
+    assert Project.model_validate_json(text) == project
+    assert Project.model_validate(json.loads(text)).model_dump_json() == text
+
+
+def test_wire_uses_from_in_json() -> None:
+    wire = Wire.model_validate({"from": {"node": "a", "pin": "OUT"}, "to": {"node": "b", "pin": "IN"}})
+    assert wire.model_dump(mode="json") == {"from": {"node": "a", "pin": "OUT"}, "to": {"node": "b", "pin": "IN"}}
+
+
+def test_body_is_parsed_by_language() -> None:
+    pou = Pou.model_validate({"name": "M", "kind": "program", "language": "ld",
+                              "body": {"networks": [{"id": "n1", "elements": []}]}})
+    assert isinstance(pou.body, LdBody)
+    with pytest.raises(ValidationError, match="ST POU's body must be a string"):
+        Pou.model_validate({"name": "M", "kind": "program", "language": "st", "body": {"networks": []}})
+    with pytest.raises(ValidationError, match="FBD POU's body must be an object"):
+        Pou.model_validate({"name": "M", "kind": "program", "language": "fbd", "body": "x := 1;"})
+
+
+def test_new_graphical_pou_starts_empty_and_texts_lose_trailing_whitespace() -> None:
+    pou = Pou(name="M", kind="program", language="fbd", declarations="VAR x : INT; END_VAR \n\n")
+    assert pou.body.networks == []
+    assert pou.declarations == "VAR x : INT; END_VAR"
+
+
+def test_committed_schema_is_fresh() -> None:
+    """shared_schema/ must be regenerated (`make schema`) whenever the models change."""
+    for name, text in schema_texts().items():
+        committed = (ROOT / "shared_schema" / name).read_text(encoding="utf-8")
+        assert committed == text, f"shared_schema/{name} is stale: run `make schema`"

@@ -1,0 +1,255 @@
+"""Workspace storage: folder round trip, byte-stable saves, atomicity, conflicts, names, bad files."""
+
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import tempfile
+from pathlib import Path
+
+import pytest
+from hypothesis import given
+
+from ladderlab.model import Pou, Project
+from ladderlab.storage import (
+    AlreadyExistsError, ConflictError, InvalidNameError, ProjectLoadError, Workspace, load_project_path,
+)
+from ladderlab.storage import atomic
+from tests.support import EXAMPLES
+
+from .strategies import projects
+
+
+def snapshot(folder: Path) -> dict[str, tuple[bytes, int]]:
+    return {str(p.relative_to(folder)): (p.read_bytes(), p.stat().st_mtime_ns)
+            for p in sorted(folder.rglob("*")) if p.is_file()}
+
+
+@pytest.fixture
+def ws(tmp_path: Path) -> Workspace:
+    return Workspace(tmp_path / "ws")
+
+
+@pytest.fixture
+def motor() -> Project:
+    return load_project_path(EXAMPLES / "motor")
+
+
+@given(projects())
+def test_folder_round_trip_and_byte_stable_resave(project: Project) -> None:
+    with tempfile.TemporaryDirectory() as tmp:
+        ws = Workspace(tmp)
+        revision = ws.create(project)
+        stored = ws.load(project.name)
+        assert stored.project == project
+        assert stored.revision == revision
+        before = snapshot(ws.folder(project.name))
+        assert ws.save(stored.project, revision) == revision
+        assert snapshot(ws.folder(project.name)) == before
+
+
+def test_example_round_trips_to_identical_files(ws: Workspace, motor: Project) -> None:
+    ws.create(motor)
+    copy = {p.relative_to(EXAMPLES / "motor"): p.read_bytes() for p in (EXAMPLES / "motor").rglob("*") if p.is_file()}
+    saved = {p.relative_to(ws.folder("motor")): p.read_bytes() for p in ws.folder("motor").rglob("*") if p.is_file()}
+    assert saved == copy
+
+
+def test_st_pou_is_stored_as_iec_text(ws: Workspace, motor: Project) -> None:
+    ws.create(motor)
+    text = (ws.folder("motor") / "pous" / "Blinker.st").read_text()
+    assert text.startswith("FUNCTION_BLOCK Blinker\nVAR_INPUT\n")
+    assert text.endswith("END_IF;\nEND_FUNCTION_BLOCK\n")
+
+
+def test_unsplittable_st_text_is_kept_as_json(ws: Workspace) -> None:
+    """A VAR block still being typed (no END_VAR) cannot be stored as IEC text; it is kept exactly."""
+    pou = Pou(name="Draft", kind="program", language="st", declarations="VAR\n  x : INT;", body="x := 1;")
+    ws.create(Project(name="p", pous=[pou]))
+    assert (ws.folder("p") / "pous" / "Draft.st.json").is_file()
+    assert ws.load("p").project.pous == [pou]
+    fixed = pou.model_copy(update={"declarations": "VAR\n  x : INT;\nEND_VAR"})
+    ws.save(Project(name="p", pous=[fixed]), ws.load("p").revision)
+    assert sorted(p.name for p in (ws.folder("p") / "pous").iterdir()) == ["Draft.st"]
+
+
+def test_removed_pou_file_is_deleted(ws: Workspace, motor: Project) -> None:
+    revision = ws.create(motor)
+    ws.save(motor.model_copy(update={"pous": motor.pous[:1]}), revision)
+    assert sorted(p.name for p in (ws.folder("motor") / "pous").iterdir()) == ["Main.ld.json"]
+
+
+def test_failure_mid_write_leaves_old_file_intact(ws: Workspace, motor: Project, monkeypatch) -> None:
+    revision = ws.create(motor)
+    before = snapshot(ws.folder("motor"))
+    changed = motor.model_copy(update={"globals": "VAR_GLOBAL\n    Other : BOOL;\nEND_VAR"})
+
+    def crash(src, dst):
+        raise OSError("disk full")
+
+    monkeypatch.setattr(atomic.os, "replace", crash)
+    with pytest.raises(OSError, match="disk full"):
+        ws.save(changed, revision)
+    monkeypatch.undo()
+    assert snapshot(ws.folder("motor")) == before, "old files intact, no temporary files left behind"
+    assert ws.load("motor").project == motor
+
+
+def test_partial_write_is_never_visible(tmp_path: Path, monkeypatch) -> None:
+    target = tmp_path / "f.json"
+    target.write_bytes(b"old")
+    real_fsync = os.fsync
+
+    def crash_after_partial_write(fd):
+        raise OSError("power cut")
+
+    monkeypatch.setattr(atomic.os, "fsync", crash_after_partial_write)
+    with pytest.raises(OSError):
+        atomic.write_atomic(target, b"new content")
+    monkeypatch.setattr(atomic.os, "fsync", real_fsync)
+    assert target.read_bytes() == b"old"
+    assert [p.name for p in tmp_path.iterdir()] == ["f.json"]
+
+
+def test_save_on_old_revision_is_a_conflict_naming_both(ws: Workspace, motor: Project) -> None:
+    base = ws.create(motor)
+    tab1 = motor.model_copy(update={"globals": "VAR_GLOBAL\n    A : BOOL;\nEND_VAR"})
+    tab2 = motor.model_copy(update={"globals": "VAR_GLOBAL\n    B : BOOL;\nEND_VAR"})
+    new = ws.save(tab1, base)
+    with pytest.raises(ConflictError) as err:
+        ws.save(tab2, base)
+    assert (err.value.base_revision, err.value.current_revision) == (base, new)
+    assert base in str(err.value) and new in str(err.value)
+    assert ws.load("motor").project == tab1
+
+
+def test_create_refuses_existing(ws: Workspace, motor: Project) -> None:
+    ws.create(motor)
+    with pytest.raises(AlreadyExistsError):
+        ws.create(motor)
+
+
+def test_rename_and_delete(ws: Workspace, motor: Project) -> None:
+    revision = ws.create(motor)
+    new_revision = ws.rename("motor", "conveyor", revision)
+    assert [i.name for i in ws.list()] == ["conveyor"]
+    stored = ws.load("conveyor")
+    assert stored.project.name == "conveyor" and stored.revision == new_revision
+    ws.delete("conveyor", new_revision)
+    assert ws.list() == []
+
+
+@pytest.mark.parametrize("name", ["../evil", "..", ".", "/etc", "a/b", "a\\b", ".hidden", "", "x" * 65, "trailing."])
+def test_project_names_cannot_escape_the_workspace(ws: Workspace, name: str) -> None:
+    with pytest.raises(InvalidNameError):
+        ws.create(Project(name=name))
+    with pytest.raises(InvalidNameError):
+        ws.load(name)
+    assert list(ws.root.parent.iterdir()) == [ws.root]
+
+
+@pytest.mark.parametrize("name", ["../../x", "a/b", "1abc", "a__b", "", "x y"])
+def test_pou_names_are_iec_identifiers(ws: Workspace, name: str) -> None:
+    with pytest.raises(InvalidNameError):
+        ws.create(Project(name="p", pous=[Pou(name=name, kind="program", language="st", body="")]))
+    assert not (ws.root / "x").exists()
+
+
+# --- malformed folders: each names the file, the JSON path and what was expected ---------------
+
+def broken_copy(tmp_path: Path) -> Path:
+    folder = tmp_path / "motor"
+    shutil.copytree(EXAMPLES / "motor", folder)
+    return folder
+
+
+def load_error(folder: Path) -> str:
+    with pytest.raises(ProjectLoadError) as err:
+        load_project_path(folder)
+    return "\n".join(d.format() for d in err.value.diagnostics)
+
+
+def edit_json(path: Path, change) -> None:
+    data = json.loads(path.read_text())
+    change(data)
+    path.write_text(json.dumps(data))
+
+
+def test_bad_json_names_file_line_and_column(tmp_path: Path) -> None:
+    folder = broken_copy(tmp_path)
+    (folder / "pous" / "Main.ld.json").write_text('{\n  "name": "Main",\n  "kind": }')
+    assert load_error(folder) == ("pous/Main.ld.json:3:11: error BAD-JSON: invalid JSON: Expecting value")
+
+
+def test_unknown_element_type_names_json_path(tmp_path: Path) -> None:
+    folder = broken_copy(tmp_path)
+    edit_json(folder / "pous" / "Main.ld.json",
+              lambda d: d["body"]["networks"][1]["elements"][0].update(type="contcat"))
+    message = load_error(folder)
+    assert message.startswith("pous/Main.ld.json, $.body.networks[1].elements[0]: error BAD-FILE: "
+                              "unknown type 'contcat': expected one of 'contact', 'compare'")
+
+
+def test_missing_field_names_json_path(tmp_path: Path) -> None:
+    folder = broken_copy(tmp_path)
+    edit_json(folder / "pous" / "Main.ld.json",
+              lambda d: d["body"]["networks"][0]["elements"][0]["branches"][1][0].pop("var"))
+    assert load_error(folder) == ("pous/Main.ld.json, $.body.networks[0].elements[0].branches[1][0].var: "
+                                  "error BAD-FILE: missing required field 'var'")
+
+
+def test_wrong_field_type_in_fbd(tmp_path: Path) -> None:
+    folder = broken_copy(tmp_path)
+    edit_json(folder / "pous" / "Scaling.fbd.json", lambda d: d["body"]["networks"][0]["wires"][2]["to"].pop("pin"))
+    assert load_error(folder) == ("pous/Scaling.fbd.json, $.body.networks[0].wires[2].to.pin: "
+                                  "error BAD-FILE: missing required field 'pin'")
+
+
+def test_bad_task_in_project_json(tmp_path: Path) -> None:
+    folder = broken_copy(tmp_path)
+    edit_json(folder / "project.json", lambda d: d["tasks"][0].update(priority="high"))
+    assert load_error(folder).startswith("project.json, $.tasks[0].priority: error BAD-FILE: "
+                                         "Input should be a valid integer")
+
+
+def test_missing_pou_file(tmp_path: Path) -> None:
+    folder = broken_copy(tmp_path)
+    (folder / "pous" / "Blinker.st").unlink()
+    assert "POU 'Blinker' is listed in project.json but has no file" in load_error(folder)
+
+
+def test_st_pou_without_end(tmp_path: Path) -> None:
+    folder = broken_copy(tmp_path)
+    path = folder / "pous" / "Blinker.st"
+    path.write_text(path.read_text().replace("END_FUNCTION_BLOCK", ""))
+    assert load_error(folder) == ("pous/Blinker.st:1:1, POU Blinker: error BAD-FILE: "
+                                  "FUNCTION_BLOCK without END_FUNCTION_BLOCK")
+
+
+def test_pou_file_declaring_another_name(tmp_path: Path) -> None:
+    folder = broken_copy(tmp_path)
+    path = folder / "pous" / "Blinker.st"
+    path.write_text(path.read_text().replace("FUNCTION_BLOCK Blinker", "FUNCTION_BLOCK Flasher"))
+    assert "the file is named for POU 'Blinker' but declares 'Flasher'" in load_error(folder)
+
+
+def test_language_must_match_file_suffix(tmp_path: Path) -> None:
+    folder = broken_copy(tmp_path)
+    edit_json(folder / "pous" / "Main.ld.json", lambda d: d.update(language="fbd"))
+    assert "pous/Main.ld.json" in load_error(folder)
+
+
+def test_hand_added_pou_file_is_loaded(tmp_path: Path) -> None:
+    folder = broken_copy(tmp_path)
+    (folder / "pous" / "Extra.st").write_text("PROGRAM Extra\nx := 1;\nEND_PROGRAM\n")
+    project = load_project_path(folder)
+    assert [p.name for p in project.pous] == ["Main", "Blinker", "Scaling", "Extra"]
+
+
+def test_nothing_is_overwritten_by_a_failed_load(tmp_path: Path) -> None:
+    folder = broken_copy(tmp_path)
+    (folder / "project.json").write_text("{")
+    before = snapshot(folder)
+    load_error(folder)
+    assert snapshot(folder) == before
