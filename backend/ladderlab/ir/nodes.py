@@ -1,0 +1,259 @@
+"""The common intermediate representation every POU is lowered to (ST, LD and FBD alike).
+
+Structured like ST (so ST maps 1:1 and the generated Python stays readable),
+plus what the diagrams need: labelled network blocks with jumps between them,
+and probes that record per-element power flow. Every node keeps its ``origin``
+so monitoring, breakpoints and runtime errors point at the user's source.
+See docs/ir.md for the invariants.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Literal, Union
+
+from .types import IrType
+
+# --------------------------------------------------------------------------- origin
+
+
+@dataclass(frozen=True)
+class Origin:
+    """Where a node came from: an ST span, or a network and element of a diagram."""
+
+    pou: str
+    line: int | None = None
+    column: int | None = None
+    end_line: int | None = None
+    end_column: int | None = None
+    network: str | None = None
+    element: str | None = None
+
+
+# --------------------------------------------------------------------------- expressions
+
+
+@dataclass(frozen=True)
+class Const:
+    value: object
+    type: IrType
+
+
+@dataclass(frozen=True)
+class Index:
+    indices: tuple[Expr, ...]
+
+
+@dataclass(frozen=True)
+class Member:
+    name: str
+
+
+Selector = Union[Index, Member]
+Scope = Literal["local", "global", "instance"]
+
+
+@dataclass(frozen=True)
+class Var:
+    """A variable access path: a root slot then array indices (Index) and struct/FB member selections (Member).
+
+    ``scope`` says where the root lives: ``local`` in the POU instance, ``global`` in the
+    resource's globals. ``type`` is the type of the whole path.
+    """
+
+    scope: Scope
+    name: str
+    type: IrType
+    path: tuple[Selector, ...] = ()
+
+
+@dataclass(frozen=True)
+class Unary:
+    op: Literal["NEG", "NOT"]
+    operand: Expr
+    type: IrType
+
+
+@dataclass(frozen=True)
+class Binary:
+    """Arithmetic, comparison or boolean operator on operands of one type (after conversions)."""
+
+    op: Literal["ADD", "SUB", "MUL", "DIV", "MOD", "EXPT", "AND", "OR", "XOR",
+                "EQ", "NE", "LT", "LE", "GT", "GE"]
+    left: Expr
+    right: Expr
+    type: IrType
+
+
+@dataclass(frozen=True)
+class Call:
+    """A function call: a standard function (by name, specialised to ``arg_types``) or a user function."""
+
+    function: str
+    args: tuple[Expr, ...]
+    arg_types: tuple[IrType, ...]
+    type: IrType
+    user: bool = False
+    in_outs: tuple[Var, ...] = ()
+
+
+@dataclass(frozen=True)
+class Convert:
+    operand: Expr
+    source: IrType
+    type: IrType
+
+
+Expr = Union[Const, Var, Unary, Binary, Call, Convert]
+
+# --------------------------------------------------------------------------- statements
+
+
+@dataclass
+class Assign:
+    target: Var
+    value: Expr
+    origin: Origin
+
+
+@dataclass
+class If:
+    branches: list[tuple[Expr, list[Stmt]]]
+    orelse: list[Stmt]
+    origin: Origin
+
+
+CaseLabel = Union[int, tuple[int, int]]
+
+
+@dataclass
+class Case:
+    selector: Expr
+    branches: list[tuple[list[CaseLabel], list[Stmt]]]
+    orelse: list[Stmt]
+    origin: Origin
+
+
+@dataclass
+class For:
+    var: Var
+    start: Expr
+    end: Expr
+    step: Expr
+    body: list[Stmt]
+    origin: Origin
+
+
+@dataclass
+class While:
+    cond: Expr
+    body: list[Stmt]
+    origin: Origin
+
+
+@dataclass
+class Repeat:
+    body: list[Stmt]
+    until: Expr
+    origin: Origin
+
+
+@dataclass
+class Exit:
+    origin: Origin
+
+
+@dataclass
+class Return:
+    origin: Origin
+
+
+@dataclass
+class FbCall:
+    """Call an FB instance: set inputs, run one call with the scan's clock, copy outputs out.
+
+    ``en`` (when not None) guards the call; ``eno`` receives whether it ran.
+    """
+
+    instance: Var
+    inputs: list[tuple[str, Expr]]
+    outputs: list[tuple[str, Var]]
+    origin: Origin
+    en: Expr | None = None
+    eno: Var | None = None
+
+
+@dataclass
+class Jump:
+    """Go to the network block ``label`` of the same POU when ``cond`` holds (None: always)."""
+
+    label: str
+    cond: Expr | None
+    origin: Origin
+
+
+@dataclass
+class Probe:
+    """Record ``value`` as element ``element``'s power flow / pin value in this scan (monitoring only)."""
+
+    element: str
+    value: Expr
+    origin: Origin
+
+
+@dataclass
+class Block:
+    """One network (LD/FBD) or the whole body (ST); ``label`` is its jump target, if any."""
+
+    statements: list[Stmt]
+    origin: Origin
+    label: str | None = None
+
+
+Stmt = Union[Assign, If, Case, For, While, Repeat, Exit, Return, FbCall, Jump, Probe]
+
+# --------------------------------------------------------------------------- POUs
+
+
+VarClass = Literal["VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_EXTERNAL", "VAR_TEMP", "VAR_GLOBAL"]
+
+
+@dataclass
+class Slot:
+    """A declared variable of a POU (or a global): its storage, type and initial value."""
+
+    name: str
+    var_class: VarClass
+    type: IrType
+    initial: object | None = None
+    retain: bool = False
+    constant: bool = False
+    address: str | None = None
+    hidden: bool = False
+
+
+@dataclass
+class Pou:
+    name: str
+    kind: Literal["program", "function_block", "function"]
+    slots: list[Slot]
+    blocks: list[Block]
+    return_type: IrType | None = None
+    language: Literal["st", "ld", "fbd"] = "st"
+
+
+@dataclass
+class TaskSpec:
+    name: str
+    interval_ms: int
+    priority: int
+    programs: list[str]
+
+
+@dataclass
+class Program:
+    """Everything the engine needs: all POUs, the globals, and the task configuration."""
+
+    pous: dict[str, Pou]
+    globals: list[Slot]
+    tasks: list[TaskSpec] = field(default_factory=list)

@@ -1,0 +1,76 @@
+"""IR types: what the engine needs to lay out, initialise, wrap and check a value.
+
+The checker's resolved types are lowered to these; the IR knows nothing of ST
+syntax, so LD and FBD lowering produce the same types.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Union
+
+from ..st.elementary import DEFAULT_STRING_LENGTH, ELEMENTARY, ElementaryType
+
+
+@dataclass(frozen=True)
+class Elementary:
+    """An elementary type by canonical name (``INT``, ``TIME_OF_DAY``...); ``length`` for STRING[n]."""
+
+    name: str
+    length: int | None = None
+
+    @property
+    def info(self) -> ElementaryType:
+        return ELEMENTARY[self.name]
+
+    @property
+    def max_length(self) -> int:
+        return self.length if self.length is not None else DEFAULT_STRING_LENGTH
+
+
+@dataclass(frozen=True)
+class Subrange:
+    """An integer type restricted to ``low..high``; a store outside it is a runtime error."""
+
+    base: Elementary
+    low: int
+    high: int
+
+
+@dataclass(frozen=True)
+class Enum:
+    """Enumeration values are ints; ``values`` maps each name to its int, in declaration order."""
+
+    name: str
+    values: tuple[tuple[str, int], ...]
+
+
+@dataclass(frozen=True)
+class Array:
+    element: IrType
+    dims: tuple[tuple[int, int], ...]
+
+
+@dataclass(frozen=True)
+class StructField:
+    name: str
+    type: IrType
+    initial: object | None = None
+
+
+@dataclass(frozen=True)
+class Struct:
+    name: str
+    fields: tuple[StructField, ...]
+
+
+@dataclass(frozen=True)
+class FbInstance:
+    """An instance of a function block: a user FB POU or a standard FB (``TON``, ``CTU_DINT``...)."""
+
+    fb: str
+
+
+IrType = Union[Elementary, Subrange, Enum, Array, Struct, FbInstance]
+
+BOOL = Elementary("BOOL")
