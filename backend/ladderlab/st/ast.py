@@ -1,0 +1,459 @@
+"""Typed AST of IEC 61131-3 Structured Text.
+
+Every node carries a ``span`` (1-based line/column of its first and last
+character, end column exclusive like lark's). Spans, declaration comments and the
+checker's annotations (``ty``, ``ref``) are excluded from equality, so
+``parse(print(ast)) == ast`` compares structure only.
+
+Names are kept as written (IEC names are case-insensitive: compare with
+``.upper()``); keywords and operators are stored in canonical upper case.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, Union
+
+
+@dataclass(frozen=True, slots=True)
+class Span:
+    line: int = 0
+    column: int = 0
+    end_line: int = 0
+    end_column: int = 0
+
+
+NO_SPAN = Span()
+
+
+def _span() -> Any:
+    return field(default=NO_SPAN, compare=False, repr=False)
+
+
+def _annotation() -> Any:
+    """A slot the checker fills in (resolved type or symbol); not part of equality."""
+    return field(default=None, compare=False, repr=False)
+
+
+# ---------------------------------------------------------------- expressions
+
+
+@dataclass(slots=True)
+class IntLit:
+    value: int
+    base: int = 10
+    span: Span = _span()
+    ty: Any = _annotation()
+
+
+@dataclass(slots=True)
+class RealLit:
+    value: float
+    span: Span = _span()
+    ty: Any = _annotation()
+
+
+@dataclass(slots=True)
+class BoolLit:
+    value: bool
+    span: Span = _span()
+    ty: Any = _annotation()
+
+
+@dataclass(slots=True)
+class StringLit:
+    value: str
+    wide: bool = False
+    span: Span = _span()
+    ty: Any = _annotation()
+
+
+@dataclass(slots=True)
+class TimeLit:
+    """``kind`` is TIME, DATE, TIME_OF_DAY or DATE_AND_TIME.
+
+    ``value`` is milliseconds: a (possibly fractional) duration for TIME,
+    since midnight for TIME_OF_DAY, since 1970-01-01 for DATE and DATE_AND_TIME.
+    """
+
+    kind: str
+    value: int | float
+    span: Span = _span()
+    ty: Any = _annotation()
+
+
+@dataclass(slots=True)
+class TypedLit:
+    """``INT#5``, ``BYTE#16#FF``, ``REAL#-2.0``, ``TColor#red``: ``value`` is the literal or enum name."""
+
+    type_name: str
+    value: Expr
+    span: Span = _span()
+    ty: Any = _annotation()
+
+
+@dataclass(slots=True)
+class Name:
+    name: str
+    span: Span = _span()
+    ty: Any = _annotation()
+    ref: Any = _annotation()
+
+
+@dataclass(slots=True)
+class DirectAddr:
+    """A directly represented variable such as ``%IX0.1``, ``%QW5`` or ``%MD48``."""
+
+    address: str
+    span: Span = _span()
+    ty: Any = _annotation()
+    ref: Any = _annotation()
+
+
+@dataclass(slots=True)
+class Member:
+    """``base.name``: struct field, FB instance pin, or bit access (``name`` is digits)."""
+
+    base: Expr
+    name: str
+    span: Span = _span()
+    ty: Any = _annotation()
+    ref: Any = _annotation()
+
+
+@dataclass(slots=True)
+class Index:
+    base: Expr
+    indices: list[Expr]
+    span: Span = _span()
+    ty: Any = _annotation()
+
+
+@dataclass(slots=True)
+class Deref:
+    base: Expr
+    span: Span = _span()
+    ty: Any = _annotation()
+
+
+@dataclass(slots=True)
+class Arg:
+    """One call argument: positional (``name`` None), input ``n := v`` or output ``n => v``."""
+
+    name: str | None
+    value: Expr
+    output: bool = False
+    negated: bool = False
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class Call:
+    """A function call in an expression, or an FB/program call as a statement.
+
+    ``ref`` is set by the checker to the called POU, stdlib entry or instance symbol.
+    """
+
+    callee: Expr
+    args: list[Arg]
+    span: Span = _span()
+    ty: Any = _annotation()
+    ref: Any = _annotation()
+
+
+@dataclass(slots=True)
+class Unary:
+    op: str  # "-" or "NOT"
+    operand: Expr
+    span: Span = _span()
+    ty: Any = _annotation()
+
+
+@dataclass(slots=True)
+class Binary:
+    op: str  # OR XOR AND = <> < > <= >= + - * / MOD **
+    left: Expr
+    right: Expr
+    span: Span = _span()
+    ty: Any = _annotation()
+
+
+Expr = Union[IntLit, RealLit, BoolLit, StringLit, TimeLit, TypedLit, Name, DirectAddr, Member, Index, Deref, Call,
+             Unary, Binary]
+LITERALS = (IntLit, RealLit, BoolLit, StringLit, TimeLit, TypedLit)
+
+# ---------------------------------------------------------------- statements
+
+
+@dataclass(slots=True)
+class Assign:
+    target: Expr
+    value: Expr
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class CallStmt:
+    """``inst(...);`` or ``f(...);``. The parser also accepts a bare ``x;`` here; the checker rejects it."""
+
+    call: Expr
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class If:
+    branches: list[tuple[Expr, list[Stmt]]]
+    else_body: list[Stmt] | None = None
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class CaseRange:
+    low: Expr
+    high: Expr
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class CaseBranch:
+    labels: list[Expr | CaseRange]
+    body: list[Stmt]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class Case:
+    selector: Expr
+    branches: list[CaseBranch]
+    else_body: list[Stmt] | None = None
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class For:
+    var: Name
+    start: Expr
+    end: Expr
+    step: Expr | None
+    body: list[Stmt]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class While:
+    cond: Expr
+    body: list[Stmt]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class Repeat:
+    body: list[Stmt]
+    until: Expr
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class Exit:
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class Return:
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class Empty:
+    span: Span = _span()
+
+
+Stmt = Union[Assign, CallStmt, If, Case, For, While, Repeat, Exit, Return, Empty]
+
+# ---------------------------------------------------------------- types and declarations
+
+
+@dataclass(slots=True)
+class NamedType:
+    name: str
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class SizedType:
+    """``STRING[80]`` / ``WSTRING(10)``: a type name with a length."""
+
+    name: str
+    size: Expr
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class SubrangeType:
+    base: str
+    low: Expr
+    high: Expr
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class ArrayType:
+    ranges: list[tuple[Expr, Expr] | None]  # None is ``*`` (variable-length, VAR_IN_OUT only)
+    element: TypeSpec
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class PointerType:
+    kind: str  # "POINTER TO" or "REF_TO"
+    target: TypeSpec
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class EnumValue:
+    name: str
+    value: Expr | None = None
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class EnumType:
+    values: list[EnumValue]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class StructType:
+    members: list[VarDecl]
+    span: Span = _span()
+
+
+TypeSpec = Union[NamedType, SizedType, SubrangeType, ArrayType, PointerType, EnumType, StructType]
+
+
+@dataclass(slots=True)
+class RepeatInit:
+    """``n(value)`` inside an array initialiser; ``value`` None is ``n()`` (n defaults)."""
+
+    count: int
+    value: Init | None
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class ArrayInit:
+    items: list[Init | RepeatInit]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class StructInit:
+    fields: list[tuple[str, Init]]
+    span: Span = _span()
+
+
+Init = Union[Expr, ArrayInit, StructInit]
+
+
+@dataclass(slots=True)
+class DeclName:
+    """One declared name with its optional ``AT`` address; ``name`` None is ``AT %X0.0 : BOOL``."""
+
+    name: str | None
+    address: str | None = None
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class VarDecl:
+    names: list[DeclName]
+    type: TypeSpec
+    init: Init | None = None
+    edge: str | None = None  # "R_EDGE" / "F_EDGE"
+    span: Span = _span()
+    comment: str | None = field(default=None, compare=False, repr=False)
+
+
+@dataclass(slots=True)
+class VarBlock:
+    kind: str  # VAR, VAR_INPUT, VAR_OUTPUT, VAR_IN_OUT, VAR_GLOBAL, VAR_EXTERNAL, VAR_TEMP
+    qualifiers: list[str]  # CONSTANT, RETAIN, NON_RETAIN, PERSISTENT
+    decls: list[VarDecl]
+    span: Span = _span()
+
+    @property
+    def constant(self) -> bool:
+        return "CONSTANT" in self.qualifiers
+
+    @property
+    def retain(self) -> bool:
+        return "RETAIN" in self.qualifiers or "PERSISTENT" in self.qualifiers
+
+
+@dataclass(slots=True)
+class TypeDecl:
+    name: str
+    type: TypeSpec
+    init: Init | None = None
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class TypeBlock:
+    decls: list[TypeDecl]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class Pou:
+    kind: str  # PROGRAM, FUNCTION_BLOCK, FUNCTION
+    name: str
+    return_type: TypeSpec | None
+    var_blocks: list[VarBlock]
+    body: list[Stmt]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class TaskConfig:
+    name: str
+    properties: list[tuple[str, Expr]]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class ProgramConfig:
+    name: str
+    task: str | None
+    type_name: str
+    args: list[Arg] | None = None  # None: no parentheses
+    retain: str | None = None  # RETAIN / NON_RETAIN
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class Resource:
+    name: str
+    on: str | None
+    items: list[TaskConfig | ProgramConfig | VarBlock]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class Configuration:
+    name: str
+    items: list[Resource | TaskConfig | ProgramConfig | VarBlock]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class Source:
+    """A whole ST file: TYPE blocks, VAR_GLOBAL blocks, POUs and configurations in source order."""
+
+    items: list[TypeBlock | VarBlock | Pou | Configuration]
+    span: Span = _span()
+
+    @property
+    def pous(self) -> list[Pou]:
+        return [item for item in self.items if isinstance(item, Pou)]

@@ -1,0 +1,165 @@
+"""Literal text <-> value, shared by the parser (decode) and the printer (encode).
+
+Spec items: LEX-21..24 (numbers), LEX-30..35 (strings, ``$`` escapes),
+LEX-40..46 (durations), LEX-50..52 (dates and times of day).
+"""
+
+from __future__ import annotations
+
+import datetime as _dt
+import re
+
+_EPOCH = _dt.datetime(1970, 1, 1)
+_MS_PER_UNIT = {"d": 86_400_000, "h": 3_600_000, "m": 60_000, "s": 1000, "ms": 1, "us": 0.001, "ns": 0.000001}
+_UNIT_RE = re.compile(r"(\d[\d_]*(?:\.\d+)?)(ms|us|ns|d|h|m|s)_?", re.IGNORECASE)
+_ESCAPES = {"$": "$", "'": "'", '"': '"', "L": "\n", "N": "\n", "P": "\f", "R": "\r", "T": "\t"}
+_ESCAPE_RE = {False: re.compile(r"\$([0-9A-Fa-f]{2}|.)"), True: re.compile(r"\$([0-9A-Fa-f]{4}|.)")}
+
+
+def decode_integer(text: str) -> tuple[int, int]:
+    """``'16#FF'`` -> ``(255, 16)``; ``'12_548'`` -> ``(12548, 10)``."""
+    text = text.replace("_", "")
+    if "#" in text:
+        base, digits = text.split("#", 1)
+        return int(digits, int(base)), int(base)
+    return int(text), 10
+
+
+def decode_real(text: str) -> float:
+    return float(text.replace("_", ""))
+
+
+def decode_string(text: str) -> str:
+    """Body of a quoted literal with its ``$`` escapes resolved (the lexer only admits valid ones)."""
+    def one(match: re.Match[str]) -> str:
+        code = match.group(1)
+        return chr(int(code, 16)) if len(code) > 1 else _ESCAPES[code.upper()]
+
+    return _ESCAPE_RE[text[0] == '"'].sub(one, text[1:-1])
+
+
+def encode_string(value: str, wide: bool = False) -> str:
+    quote = '"' if wide else "'"
+    out = [quote]
+    for ch in value:
+        if ch == "$":
+            out.append("$$")
+        elif ch == quote:
+            out.append("$" + quote)
+        elif ch == "\n":
+            out.append("$N")
+        elif ch == "\r":
+            out.append("$R")
+        elif ch == "\t":
+            out.append("$T")
+        elif ch == "\f":
+            out.append("$P")
+        elif ord(ch) < 32 or ord(ch) == 127 or (not wide and ord(ch) > 255):
+            out.append(f"${ord(ch):04X}" if wide else f"${ord(ch) & 0xFF:02X}")
+        elif wide and ord(ch) > 127:
+            out.append(f"${ord(ch):04X}")
+        else:
+            out.append(ch)
+    out.append(quote)
+    return "".join(out)
+
+
+def _prefix_and_body(text: str) -> tuple[str, str]:
+    prefix, body = text.split("#", 1)
+    return prefix.upper(), body
+
+
+def _normalise_ms(value: float) -> int | float:
+    rounded = round(value, 6)
+    return int(rounded) if rounded == int(rounded) else rounded
+
+
+def decode_duration(text: str) -> int | float:
+    """``T#1h30m`` -> 5_400_000 ms; ``T#-14ms`` -> -14; clock style ``TIME#12:00:00`` (LEX-46) too."""
+    _, body = _prefix_and_body(text)
+    sign = -1 if body.startswith("-") else 1
+    body = body.lstrip("+-")
+    if ":" in body:
+        return sign * _clock_ms(body)
+    total = sum(float(n.replace("_", "")) * _MS_PER_UNIT[unit.lower()] for n, unit in _UNIT_RE.findall(body))
+    return _normalise_ms(sign * total)
+
+
+def _clock_ms(body: str) -> int:
+    parts = body.split(":")
+    hours, minutes = int(parts[0]), int(parts[1])
+    seconds = float(parts[2]) if len(parts) > 2 else 0.0
+    return round(((hours * 60 + minutes) * 60 + seconds) * 1000)
+
+
+def decode_date(text: str) -> int:
+    """``D#1970-01-02`` -> 86_400_000 (ms since 1970-01-01)."""
+    _, body = _prefix_and_body(text)
+    year, month, day = (int(p) for p in body.split("-"))
+    return _ms_since_epoch(_dt.datetime(year, month, day))
+
+
+def decode_tod(text: str) -> int:
+    _, body = _prefix_and_body(text)
+    return _clock_ms(body)
+
+
+def decode_dt(text: str) -> int:
+    _, body = _prefix_and_body(text)
+    year, month, day, clock = body.split("-", 3)
+    return _ms_since_epoch(_dt.datetime(int(year), int(month), int(day))) + _clock_ms(clock)
+
+
+def _ms_since_epoch(moment: _dt.datetime) -> int:
+    delta = moment - _EPOCH
+    return (delta.days * 86_400 + delta.seconds) * 1000 + delta.microseconds // 1000
+
+
+def decode_time_literal(text: str) -> tuple[str, int | float]:
+    """Any of the four date/time literal forms -> (canonical type name, milliseconds)."""
+    prefix = text.split("#", 1)[0].upper()
+    if prefix in ("T", "TIME", "LT", "LTIME"):
+        return "TIME", decode_duration(text)
+    if prefix in ("D", "DATE"):
+        return "DATE", decode_date(text)
+    if prefix in ("TOD", "TIME_OF_DAY"):
+        return "TIME_OF_DAY", decode_tod(text)
+    return "DATE_AND_TIME", decode_dt(text)
+
+
+def _clock_text(ms: int) -> str:
+    seconds, millis = divmod(ms, 1000)
+    minutes, seconds = divmod(seconds, 60)
+    hours, minutes = divmod(minutes, 60)
+    text = f"{hours:02d}:{minutes:02d}:{seconds:02d}"
+    return text + f".{millis:03d}" if millis else text
+
+
+def encode_time_literal(kind: str, value: int | float) -> str:
+    if kind == "TIME":
+        return "T#" + encode_duration(value)
+    if kind == "TIME_OF_DAY":
+        return "TOD#" + _clock_text(int(value))
+    moment = _EPOCH + _dt.timedelta(milliseconds=int(value))
+    if kind == "DATE":
+        return f"D#{moment.year:04d}-{moment.month:02d}-{moment.day:02d}"
+    day_ms = int(value) - _ms_since_epoch(_dt.datetime(moment.year, moment.month, moment.day))
+    return f"DT#{moment.year:04d}-{moment.month:02d}-{moment.day:02d}-" + _clock_text(day_ms)
+
+
+def encode_duration(value: int | float) -> str:
+    """Milliseconds -> ``1h30m``, ``-500ms``, ``0s``, ``1.5ms`` (largest unit first)."""
+    if value == 0:
+        return "0s"
+    sign = "-" if value < 0 else ""
+    rest = abs(value)
+    whole = int(rest)
+    fraction = _normalise_ms(rest - whole)
+    parts = []
+    for unit in ("d", "h", "m", "s"):
+        count, whole = divmod(whole, _MS_PER_UNIT[unit])
+        if count:
+            parts.append(f"{count}{unit}")
+    if whole or fraction:
+        parts.append(f"{_normalise_ms(whole + fraction)}ms")
+    return sign + "".join(parts)

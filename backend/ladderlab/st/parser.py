@@ -1,0 +1,244 @@
+"""ST parse entry points: text -> AST plus located diagnostics, never an exception.
+
+One LALR parser (contextual lexer, AST built during parsing) is created on first
+use and shared. On a syntax error the parser reports it and recovers where it
+can: a missing ``;`` is inserted and parsing continues; any other error ends the
+current top-level unit, and ``parse_source`` then re-parses the file unit by unit
+so every POU with an error gets its own diagnostic and the good ones still yield
+an AST.
+"""
+
+from __future__ import annotations
+
+import functools
+import pathlib
+import re
+from dataclasses import dataclass, field
+from typing import Any
+
+from lark import Lark, Token
+from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedToken
+
+from ..model.diagnostics import Diagnostic
+from . import ast
+from .comments import attach_comments, blank_nested_comments
+from .errors import describe_unexpected, last_token
+from .transformer import AstBuilder, StSyntaxError
+
+GRAMMAR = pathlib.Path(__file__).with_name("iec61131.lark")
+_STARTS = ["start_source", "start_pou", "start_decls", "start_stmts", "start_expr"]
+_MAX_ERRORS_PER_UNIT = 25
+_END_KEYWORDS = {"END_IF", "END_CASE", "END_FOR", "END_WHILE", "END_REPEAT"}
+
+
+@dataclass
+class ParseResult:
+    """``ast`` is None when nothing usable was parsed; ``diagnostics`` lists every problem found."""
+
+    ast: Any
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+
+    @property
+    def ok(self) -> bool:
+        return not any(d.severity == "error" for d in self.diagnostics)
+
+
+@functools.cache
+def _parser() -> Lark:
+    return Lark(
+        GRAMMAR.read_text(encoding="utf-8"),
+        parser="lalr",
+        lexer="contextual",
+        start=_STARTS,
+        transformer=AstBuilder(),
+        maybe_placeholders=True,
+        cache=False,
+    )
+
+
+@functools.cache
+def _terminal_text() -> dict[str, str]:
+    """Terminal name -> literal text for keywords and punctuation (for error messages)."""
+    return {t.name: t.pattern.value for t in _parser().terminals if t.pattern.type == "str"}
+
+
+def parse_source(text: str, *, file: str | None = None, nested_comments: bool = False) -> ParseResult:
+    """A whole file: TYPE blocks, VAR_GLOBAL blocks, POUs and CONFIGURATIONs."""
+    prepared = _prepare(text, nested_comments)
+    result = _run(prepared, "start_source", file)
+    if result.ast is not None:
+        _name_pous(result)
+        return _finish(result, text)
+    items: list[Any] = []
+    diagnostics: list[Diagnostic] = []
+    for unit in split_units(prepared):
+        padded = "\n" * (unit.line - 1) + " " * (unit.column - 1) + unit.text
+        part = _run(padded, "start_source", file, pou=unit.pou)
+        diagnostics += part.diagnostics
+        if part.ast is not None and part.ok:
+            items += part.ast.items
+    if not diagnostics:  # the split hid the problem (e.g. text outside any unit): keep the whole-file report
+        diagnostics = result.diagnostics
+    return _finish(ParseResult(ast.Source(items, ast.NO_SPAN), diagnostics), text)
+
+
+def parse_pou(text: str, *, file: str | None = None, nested_comments: bool = False) -> ParseResult:
+    """Exactly one PROGRAM, FUNCTION_BLOCK or FUNCTION."""
+    return _finish(_run(_prepare(text, nested_comments), "start_pou", file), text)
+
+
+def parse_declarations(text: str, *, file: str | None = None, nested_comments: bool = False,
+                       pou: str | None = None) -> ParseResult:
+    """A sequence of VAR...END_VAR blocks (the model's ``declarations`` / ``globals`` text): ``list[VarBlock]``."""
+    return _finish(_run(_prepare(text, nested_comments), "start_decls", file, pou=pou), text)
+
+
+def parse_statements(text: str, *, file: str | None = None, nested_comments: bool = False,
+                     pou: str | None = None) -> ParseResult:
+    """A statement list (an ST POU body): ``list[Stmt]``."""
+    return _finish(_run(_prepare(text, nested_comments), "start_stmts", file, pou=pou), text)
+
+
+def parse_expression(text: str, *, file: str | None = None, nested_comments: bool = False,
+                     pou: str | None = None) -> ParseResult:
+    """One operand or expression, e.g. an LD contact's ``T1.Q`` or a pin's ``arr[i] + 1``."""
+    return _finish(_run(_prepare(text, nested_comments), "start_expr", file, pou=pou), text)
+
+
+def _name_pous(result: ParseResult) -> None:
+    """Give each diagnostic of a whole-file parse the POU it lies in."""
+    pous = result.ast.pous
+    for diagnostic in result.diagnostics:
+        line = diagnostic.line or 0
+        diagnostic.pou = next((p.name for p in pous if p.span.line <= line <= p.span.end_line), None)
+
+
+def _prepare(text: str, nested_comments: bool) -> str:
+    return blank_nested_comments(text) if nested_comments else text
+
+
+def _finish(result: ParseResult, original: str) -> ParseResult:
+    if result.ast is not None:
+        attach_comments(result.ast, original)
+    return result
+
+
+def _run(text: str, start: str, file: str | None, pou: str | None = None) -> ParseResult:
+    diagnostics: list[Diagnostic] = []
+    report = _Reporter(diagnostics, file, pou)
+    try:
+        tree = _parser().parse(text, start=start, on_error=report.recover)
+    except UnexpectedInput as error:
+        if not report.seen(error):
+            report.add(error)
+        return ParseResult(None, diagnostics)
+    except StSyntaxError as error:
+        diagnostics.append(_diagnostic(str(error), error.span, file, pou))
+        return ParseResult(None, diagnostics)
+    except RecursionError:
+        diagnostics.append(_diagnostic("the text is nested too deeply to parse", ast.Span(1, 1, 1, 1), file, pou))
+        return ParseResult(None, diagnostics)
+    return ParseResult(tree, diagnostics)
+
+
+def _diagnostic(message: str, span: ast.Span, file: str | None, pou: str | None,
+                severity: str = "error", code: str = "ST-PARSE") -> Diagnostic:
+    return Diagnostic(severity=severity, code=code, message=message, file=file, pou=pou, line=span.line,
+                      column=span.column, end_line=span.end_line, end_column=span.end_column)
+
+
+class _Reporter:
+    """lark ``on_error`` handler: records each error and decides whether parsing can go on."""
+
+    def __init__(self, diagnostics: list[Diagnostic], file: str | None, pou: str | None):
+        self.diagnostics = diagnostics
+        self.file = file
+        self.pou = pou
+        self._reported: set[int] = set()
+
+    def seen(self, error: UnexpectedInput) -> bool:
+        return id(error) in self._reported
+
+    def add(self, error: UnexpectedInput, severity: str = "error") -> None:
+        self._reported.add(id(error))
+        message, span = describe_unexpected(error, _terminal_text())
+        self.diagnostics.append(_diagnostic(message, span, self.file, self.pou, severity))
+
+    def recover(self, error: UnexpectedInput) -> bool:
+        if len(self.diagnostics) >= _MAX_ERRORS_PER_UNIT:
+            return False
+        if isinstance(error, UnexpectedCharacters):
+            self.add(error)
+            return error.char not in "'\""  # lark skips a stray character; a broken string would cascade
+        if isinstance(error, UnexpectedToken):
+            return self._insert_semicolon(error)
+        return False
+
+    def _insert_semicolon(self, error: UnexpectedToken) -> bool:
+        """The commonest slip: a statement or declaration whose ``;`` is missing at the end of a line."""
+        parser = error.interactive_parser
+        previous = last_token(parser.parser_state.value_stack)
+        if "SEMI" not in error.accepts or previous is None:
+            return False
+        at_end = error.token.type == "$END"
+        # ST-40 wants the ';' after END_x; ST-65 tolerates it missing on the last statement of a body.
+        lenient = previous.type.lstrip("_") in _END_KEYWORDS and (at_end or error.token.type.lstrip("_").startswith("END_"))
+        if not lenient and (at_end or previous.end_line >= error.token.line):
+            return False
+        if not at_end:
+            trial = parser.copy(deepcopy_values=False)
+            try:
+                trial.feed_token(Token("SEMI", ";"))
+                trial.feed_token(error.token)
+            except UnexpectedInput:
+                return False
+        self.add(error, "warning" if lenient else "error")
+        parser.feed_token(Token("SEMI", ";"))
+        if not at_end:
+            parser.feed_token(error.token)
+        return True
+
+
+# ---------------------------------------------------------------- unit splitting
+
+_UNIT_RE = re.compile(
+    r"'(?:[^'$\n]|\$.)*'|\"(?:[^\"$\n]|\$.)*\"|\(\*[\s\S]*?\*\)|//[^\n]*|/\*[\s\S]*?\*/"
+    r"|\b(FUNCTION_BLOCK|FUNCTION|PROGRAM|TYPE|VAR_GLOBAL|CONFIGURATION|END_CONFIGURATION)\b",
+    re.IGNORECASE,
+)
+_POU_NAME_RE = re.compile(r"\s*([A-Za-z_][A-Za-z0-9_]*)")
+
+
+@dataclass
+class Unit:
+    text: str
+    line: int
+    column: int
+    pou: str | None
+
+
+def split_units(text: str) -> list[Unit]:
+    """Cut a source file at each top-level POU/TYPE/VAR_GLOBAL/CONFIGURATION keyword."""
+    starts: list[tuple[int, str]] = []
+    in_configuration = False
+    for match in _UNIT_RE.finditer(text):
+        keyword = (match.group(1) or "").upper()
+        if not keyword:
+            continue
+        if keyword == "END_CONFIGURATION":
+            in_configuration = False
+        elif not in_configuration:
+            starts.append((match.start(), keyword))
+            in_configuration = keyword == "CONFIGURATION"
+    units = []
+    for i, (offset, keyword) in enumerate(starts):
+        end = starts[i + 1][0] if i + 1 < len(starts) else len(text)
+        line = text.count("\n", 0, offset) + 1
+        column = offset - (text.rfind("\n", 0, offset) + 1) + 1
+        pou = None
+        if keyword in ("FUNCTION", "FUNCTION_BLOCK", "PROGRAM"):
+            name = _POU_NAME_RE.match(text, offset + len(keyword))
+            pou = name.group(1) if name else None
+        units.append(Unit(text[offset:end], line, column, pou))
+    return units
+

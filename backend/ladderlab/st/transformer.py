@@ -1,0 +1,339 @@
+"""lark Transformer that builds ``ladderlab.st.ast`` nodes while the LALR parser reduces.
+
+It is passed to the ``Lark`` constructor, so no parse tree is ever built. It is
+stateless (one shared instance). Spans come from the first and last child that
+has a position; keyword tokens that start a construct are kept in the grammar
+for that reason.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from lark import Token, Transformer
+
+from . import ast
+from .literals import decode_integer, decode_real, decode_string, decode_time_literal
+
+
+class StSyntaxError(Exception):
+    """A construct the grammar accepts but ST does not (reported as a parse diagnostic)."""
+
+    def __init__(self, message: str, span: ast.Span):
+        super().__init__(message)
+        self.span = span
+
+
+def _start(item: Any) -> tuple[int, int] | None:
+    if isinstance(item, Token):
+        return item.line, item.column
+    span = getattr(item, "span", None)
+    if span is not None and span.line:
+        return span.line, span.column
+    if isinstance(item, (list, tuple)):
+        for sub in item:
+            found = _start(sub)
+            if found:
+                return found
+    return None
+
+
+def _end(item: Any) -> tuple[int, int] | None:
+    if isinstance(item, Token):
+        return item.end_line, item.end_column
+    span = getattr(item, "span", None)
+    if span is not None and span.line:
+        return span.end_line, span.end_column
+    if isinstance(item, (list, tuple)):
+        for sub in reversed(item):
+            found = _end(sub)
+            if found:
+                return found
+    return None
+
+
+def span_of(children: Any) -> ast.Span:
+    start = _start(children)
+    end = _end(children)
+    if start is None or end is None:
+        return ast.NO_SPAN
+    return ast.Span(start[0], start[1], end[0], end[1])
+
+
+class _Labels(list):
+    """The labels of one CASE branch, while the flat CASE body is being grouped."""
+
+    span = ast.NO_SPAN
+
+
+class _Else(list):
+    """Statements of an ELSE part (distinguishes ``ELSE`` with no statements from no ELSE)."""
+
+    span = ast.NO_SPAN
+
+
+def _present(children: list[Any]) -> list[Any]:
+    return [c for c in children if c is not None]
+
+
+class AstBuilder(Transformer):
+    """One method per grammar rule or alias; see iec61131.lark."""
+
+    # ------------------------------------------------------------ entry points
+    def start_source(self, c):
+        return ast.Source(c, span_of(c))
+
+    def start_pou(self, c):
+        return c[0]
+
+    def start_decls(self, c):
+        return c
+
+    def start_stmts(self, c):
+        return c
+
+    def start_expr(self, c):
+        return c[0]
+
+    # ------------------------------------------------------------ POUs and types
+    def pou(self, c):
+        kind = c[0].type
+        return_type = c[2] if kind == "FUNCTION" else None
+        rest = c[3:-1] if kind == "FUNCTION" else c[2:-1]
+        blocks = [x for x in rest if isinstance(x, ast.VarBlock)]
+        body = [x for x in rest if not isinstance(x, ast.VarBlock)]
+        return ast.Pou(kind, str(c[1]), return_type, blocks, body, span_of(c))
+
+    def type_block(self, c):
+        return ast.TypeBlock(c[1:], span_of(c))
+
+    def type_decl(self, c):
+        return ast.TypeDecl(str(c[0]), c[1], c[2] if len(c) > 2 else None, span_of(c))
+
+    def named_type(self, c):
+        return ast.NamedType(str(c[0]), span_of(c))
+
+    def sized_type(self, c):
+        return ast.SizedType(str(c[0]), c[1], span_of(c))
+
+    def subrange_type(self, c):
+        return ast.SubrangeType(str(c[0]), c[1], c[2], span_of(c))
+
+    def array_type(self, c):
+        return ast.ArrayType(c[1:-1], c[-1], span_of(c))
+
+    def array_range(self, c):
+        return None if isinstance(c[0], Token) and c[0].type == "STAR" else (c[0], c[1])
+
+    def pointer_type(self, c):
+        kind = "POINTER TO" if c[0].type == "POINTER" else "REF_TO"
+        return ast.PointerType(kind, c[1], span_of(c))
+
+    def enum_type(self, c):
+        return ast.EnumType(c, span_of(c))
+
+    def enum_value(self, c):
+        return ast.EnumValue(str(c[0]), c[1], span_of(c))
+
+    def struct_type(self, c):
+        return ast.StructType(c[1:], span_of(c))
+
+    # ------------------------------------------------------------ declarations
+    def var_block(self, c):
+        qualifiers = [t.type for t in c[1:] if isinstance(t, Token)]
+        decls = [d for d in c[1:] if isinstance(d, ast.VarDecl)]
+        return ast.VarBlock(c[0].type, qualifiers, decls, span_of(c))
+
+    def var_decl(self, c):
+        names = [x for x in c if isinstance(x, ast.DeclName)]
+        rest = c[len(names):]
+        type_spec = rest[0]
+        edge = next((t.type for t in rest[1:] if isinstance(t, Token) and t.type in ("R_EDGE", "F_EDGE")), None)
+        init = rest[-1] if len(rest) > 1 and not isinstance(rest[-1], Token) else None
+        return ast.VarDecl(names, type_spec, init, edge, span_of(c))
+
+    def decl_name(self, c):
+        c = _present(c)
+        if c[0].type == "DIRECT":
+            return ast.DeclName(None, str(c[0]), span_of(c))
+        return ast.DeclName(str(c[0]), str(c[1]) if len(c) > 1 else None, span_of(c))
+
+    def array_init(self, c):
+        return ast.ArrayInit(_present(c), span_of(c))
+
+    def array_init_item(self, c):
+        return c[0]
+
+    def repeat_init(self, c):
+        return ast.RepeatInit(decode_integer(c[0])[0], c[1], span_of(c))
+
+    def struct_init(self, c):
+        return ast.StructInit(c, span_of(c))
+
+    def field_init(self, c):
+        return (str(c[0]), c[1])
+
+    # ------------------------------------------------------------ configuration
+    def configuration(self, c):
+        return ast.Configuration(str(c[1]), c[2:-1], span_of(c))
+
+    def resource(self, c):
+        return ast.Resource(str(c[1]), str(c[2]) if c[2] is not None else None, c[3:], span_of(c))
+
+    def task_config(self, c):
+        return ast.TaskConfig(str(c[1]), _present(c[2:]), span_of(c))
+
+    def task_prop(self, c):
+        return (str(c[0]), c[1])
+
+    def program_config(self, c):
+        retain, name, task, type_name, args = c[1], c[2], c[3], c[4], c[5]
+        return ast.ProgramConfig(
+            str(name), str(task) if task is not None else None, str(type_name), args or [],
+            retain.type if retain is not None else None, span_of(c),
+        )
+
+    # ------------------------------------------------------------ statements
+    def assignment(self, c):
+        return ast.Assign(c[0], c[1], span_of(c))
+
+    def call_statement(self, c):
+        return ast.CallStmt(c[0], span_of(c))
+
+    def if_statement(self, c):
+        else_part = c[-1]
+        middle = c[2:-1]
+        body = [x for x in middle if not isinstance(x, tuple)]
+        branches = [(c[1], body)] + [x for x in middle if isinstance(x, tuple)]
+        return ast.If(branches, list(else_part) if else_part is not None else None, span_of(c))
+
+    def elsif_part(self, c):
+        return (c[1], c[2:])
+
+    def else_part(self, c):
+        part = _Else(c[1:])
+        part.span = span_of(c)
+        return part
+
+    def case_statement(self, c):
+        else_part = c[-1]
+        branches: list[ast.CaseBranch] = []
+        for item in c[2:-1]:
+            if isinstance(item, _Labels):
+                branches.append(ast.CaseBranch(list(item), [], item.span))
+            elif not branches:
+                raise StSyntaxError("expected a CASE label such as '1:' before the first statement", item.span)
+            else:
+                branches[-1].body.append(item)
+        for branch in branches:
+            branch.span = span_of([branch.span, branch.body])
+        return ast.Case(c[1], branches, list(else_part) if else_part is not None else None, span_of(c))
+
+    def case_labels(self, c):
+        labels = _Labels(c)
+        labels.span = span_of(c)
+        return labels
+
+    def case_range(self, c):
+        return ast.CaseRange(c[0], c[1], span_of(c))
+
+    def for_statement(self, c):
+        var = ast.Name(str(c[1]), span_of(c[1]))
+        return ast.For(var, c[2], c[3], c[4], c[5:], span_of(c))
+
+    def while_statement(self, c):
+        return ast.While(c[1], c[2:], span_of(c))
+
+    def repeat_statement(self, c):
+        return ast.Repeat(c[1:-1], c[-1], span_of(c))
+
+    def exit_statement(self, c):
+        return ast.Exit(span_of(c))
+
+    def return_statement(self, c):
+        return ast.Return(span_of(c))
+
+    def empty_statement(self, c):
+        return ast.Empty(span_of(c))
+
+    # ------------------------------------------------------------ expressions
+    def binary(self, c):
+        op = c[1].type
+        symbol = "AND" if op == "AMP" else str(c[1]).upper()
+        return ast.Binary(symbol, c[0], c[2], span_of(c))
+
+    def unary(self, c):
+        return ast.Unary(str(c[0]).upper(), c[1], span_of(c))
+
+    def unary_plus(self, c):
+        return c[1]
+
+    def name(self, c):
+        return ast.Name(str(c[0]), span_of(c))
+
+    def direct(self, c):
+        return ast.DirectAddr(str(c[0]).upper(), span_of(c))
+
+    def member(self, c):
+        return ast.Member(c[0], str(c[1]), span_of(c))
+
+    def index(self, c):
+        return ast.Index(c[0], c[1:], span_of(c))
+
+    def deref(self, c):
+        return ast.Deref(c[0], span_of(c))
+
+    def call(self, c):
+        return ast.Call(c[0], c[1] or [], span_of(c))
+
+    def call_args(self, c):
+        return c
+
+    def input_arg(self, c):
+        return ast.Arg(str(c[0]), c[1], span=span_of(c))
+
+    def output_arg(self, c):
+        negated = len(c) == 3
+        return ast.Arg(str(c[-2]), c[-1], output=True, negated=negated, span=span_of(c))
+
+    def positional_arg(self, c):
+        return ast.Arg(None, c[0], span=span_of(c))
+
+    # ------------------------------------------------------------ literals
+    def int_literal(self, c):
+        value, base = decode_integer(c[0])
+        return ast.IntLit(value, base, span_of(c))
+
+    def real_literal(self, c):
+        return ast.RealLit(decode_real(c[0]), span_of(c))
+
+    def bool_literal(self, c):
+        return ast.BoolLit(c[0].type == "TRUE", span_of(c))
+
+    def string_literal(self, c):
+        return ast.StringLit(decode_string(c[0]), c[0].type == "WSTRING", span_of(c))
+
+    def time_literal(self, c):
+        kind, value = decode_time_literal(c[0])
+        return ast.TimeLit(kind, value, span_of(c))
+
+    def typed_literal(self, c):
+        prefix, tokens = c[0], _present(c[1:])
+        return ast.TypedLit(str(prefix)[:-1], _typed_value(tokens), span_of(c))
+
+
+def _typed_value(tokens: list[Token]) -> ast.Expr:
+    token = tokens[-1]
+    negative = len(tokens) == 2 and tokens[0].type == "MINUS"
+    span = span_of(tokens)
+    if token.type in ("INTEGER", "BASED_INTEGER"):
+        value, base = decode_integer(token)
+        return ast.IntLit(-value if negative else value, base, span)
+    if token.type == "REAL_NUMBER":
+        value = decode_real(token)
+        return ast.RealLit(-value if negative else value, span)
+    if token.type in ("TRUE", "FALSE"):
+        return ast.BoolLit(token.type == "TRUE", span)
+    if token.type in ("STRING", "WSTRING"):
+        return ast.StringLit(decode_string(token), token.type == "WSTRING", span)
+    return ast.Name(str(token), span)
