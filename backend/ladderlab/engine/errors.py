@@ -1,0 +1,62 @@
+"""The two ways the runtime library reports trouble.
+
+* ``PlcRuntimeError`` is a fault: division by zero, an index or MUX selector out
+  of range, a subrange violation. It is raised (in the fast and the checked
+  form alike); the engine catches it, stops the task and adds the location.
+* ``PlcWarning`` is returned, never raised, by the checked form of a function
+  (the one the code generator uses when ENO is wired or overflow checking is
+  on): the function still produced a value, but ENO must be FALSE
+  (spec POU-41, FUN-20, FUN-83, FUN-87, FUN-90).
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+DIVISION_BY_ZERO = "division_by_zero"
+INDEX_RANGE = "index_out_of_range"
+SUBRANGE = "subrange_violation"
+
+OVERFLOW = "overflow"
+DOMAIN = "domain_error"
+INVALID_ARGUMENT = "invalid_argument"
+TRUNCATED = "string_truncated"
+NOT_A_NUMBER = "invalid_string"
+
+
+class PlcRuntimeError(Exception):
+    """A fault that stops the task; ``code`` is one of the constants above."""
+
+    def __init__(self, code: str, message: str) -> None:
+        super().__init__(message)
+        self.code = code
+        self.message = message
+
+
+class PlcWarning(NamedTuple):
+    """Why a checked function set ENO = FALSE; ``code`` is one of the constants above."""
+
+    code: str
+    message: str
+
+
+def division_by_zero(dividend: object, divisor: object) -> PlcRuntimeError:
+    return PlcRuntimeError(DIVISION_BY_ZERO, f"division by zero: {dividend} / {divisor}")
+
+
+def index_out_of_range(index: int, low: int, high: int, what: str = "array index") -> PlcRuntimeError:
+    return PlcRuntimeError(INDEX_RANGE, f"{what} {index} is outside {low}..{high}")
+
+
+def check_index(index: int, low: int, high: int) -> int:
+    """Offset of ``index`` in an array declared [low..high]; raises when outside."""
+    if low <= index <= high:
+        return index - low
+    raise index_out_of_range(index, low, high)
+
+
+def check_subrange(value: int, low: int, high: int) -> int:
+    """``value`` unchanged when it lies in the subrange low..high; raises otherwise."""
+    if low <= value <= high:
+        return value
+    raise PlcRuntimeError(SUBRANGE, f"{value} is outside the subrange {low}..{high}")

@@ -1,0 +1,198 @@
+"""From one expression per specialisation to the fast callable, the checked callable and an inline template.
+
+Each standard function, given concrete argument and result types, describes
+itself as an ``Impl``: a Python expression over the positional parameters
+``a0..a{n-1}`` computing the exact result, plus the type it is stored into.
+From that one description this module derives
+
+* the fast callable: ``lambda a0, a1: <store(exact)>`` compiled once, positional
+  only, no allocation beyond what the operation itself needs;
+* the checked callable, returning ``(value, None | PlcWarning)``: the same
+  computation, comparing the exact and the stored value to detect overflow
+  (FUN-90), non-finite REAL results (FUN-20, FUN-31) or string truncation
+  (FUN-83);
+* an inline template (``str.format`` placeholders ``{0}``..) when the
+  expression evaluates every argument exactly once and unconditionally, so the
+  code generator can paste it instead of a call.
+"""
+
+from __future__ import annotations
+
+import ast
+import builtins
+import math
+from dataclasses import dataclass, field
+from functools import lru_cache
+from typing import Callable, Mapping
+
+from ..errors import DOMAIN, INVALID_ARGUMENT, OVERFLOW, TRUNCATED, PlcWarning
+from ..values import INLINE_NAMES, resolve, store_expr
+
+#: Globals available to every Impl expression and inline template (module helpers register here).
+HELPERS: dict[str, object] = dict(INLINE_NAMES)
+
+Precheck = Callable[..., "PlcWarning | None"]
+
+
+@dataclass(frozen=True)
+class Impl:
+    """A standard function specialised for concrete types.
+
+    ``exact``: expression over a0..; the value before storing (for integers the
+    true mathematical result, so the checked form can tell it wrapped).
+    ``result``: the type the value is stored into; None when no store is needed
+    (comparisons, selection, bitwise logic: the value is already in range).
+    ``store``: replaces ``values.store_expr`` for this result, with ``{x}``.
+    ``names``: extra per-specialisation globals; their presence disables inlining.
+    ``precheck``: run first by the checked form; a warning it returns wins.
+    """
+
+    exact: str
+    result: str | None = None
+    store: str | None = None
+    names: Mapping[str, object] = field(default_factory=dict)
+    precheck: Precheck | None = None
+
+    def body(self) -> str:
+        if self.result is None:
+            return self.exact
+        if self.store is not None:
+            return self.store.format(x=self.exact)
+        return store_expr(self.exact, self.result)
+
+
+def params(arity: int) -> list[str]:
+    return [f"a{i}" for i in range(arity)]
+
+
+def compile_expr(expr: str, arity: int, names: Mapping[str, object] = {}) -> Callable:
+    """``lambda a0, .., a{arity-1}: expr`` with the helpers as globals."""
+    return eval(f"lambda {', '.join(params(arity))}: {expr}", {**HELPERS, **names})  # noqa: S307 - own source
+
+
+@dataclass(frozen=True)
+class Specialised:
+    fast: Callable
+    checked: Callable
+    template: str | None
+
+
+def specialise(name: str, impl: Impl, arity: int) -> Specialised:
+    body = impl.body()
+    fast = compile_expr(body, arity, impl.names)
+    template = None if impl.names else inline_template(body, arity)
+    return Specialised(fast, _checked(name, impl, arity, fast), template)
+
+
+def _checked(name: str, impl: Impl, arity: int, fast: Callable) -> Callable:
+    precheck = impl.precheck
+    category = resolve(impl.result).category if impl.result else None
+    if category in ("int", "bits", "time", "date", "dt", "real", "string"):
+        exact = compile_expr(impl.exact, arity, impl.names)
+        store = compile_expr(_store_of(impl), 1)
+        problem = _PROBLEMS[category]
+    else:
+        exact = store = problem = None
+
+    def checked(*args):
+        if precheck is not None:
+            warning = precheck(*args)
+            if warning is not None:
+                return fast(*args), warning
+        if problem is None:
+            return fast(*args), None
+        value = exact(*args)
+        stored = store(value)
+        return stored, problem(name, args, value, stored, impl.result)
+
+    return checked
+
+
+def _store_of(impl: Impl) -> str:
+    """The store step alone, as an expression over ``a0``."""
+    return Impl("a0", impl.result, impl.store).body()
+
+
+def _wrapped(name, args, value, stored, result):
+    if value == stored:
+        return None
+    return PlcWarning(OVERFLOW, f"{call_text(name, args)} = {value} does not fit {result}; result {stored}")
+
+
+def _non_finite(name, args, value, stored, result):
+    if stored - stored == 0 or not all(_finite(a) for a in args):
+        return None
+    code = DOMAIN if stored != stored or math.isinf(value) else OVERFLOW
+    return PlcWarning(code, f"{call_text(name, args)} gives {stored} ({result})")
+
+
+def _truncated(name, args, value, stored, result):
+    if len(value) == len(stored):
+        return None
+    return PlcWarning(TRUNCATED, f"{call_text(name, args)} has {len(value)} characters; cut to {len(stored)}")
+
+
+_PROBLEMS = {
+    "int": _wrapped,
+    "bits": _wrapped,
+    "time": _wrapped,
+    "date": _wrapped,
+    "dt": _wrapped,
+    "real": _non_finite,
+    "string": _truncated,
+}
+
+
+def _finite(value: object) -> bool:
+    return not isinstance(value, float) or math.isfinite(value)
+
+
+def finite_args(name: str) -> Precheck:
+    """Precheck for functions that turn REAL arguments into integers: NaN and ±inf are invalid."""
+
+    def precheck(*args):
+        if all(_finite(a) for a in args):
+            return None
+        return PlcWarning(INVALID_ARGUMENT, f"{call_text(name, args)}: argument is not a finite number")
+
+    return precheck
+
+
+def call_text(name: str, args: tuple) -> str:
+    return f"{name}({', '.join(map(repr, args))})"
+
+
+_UNSAFE = (ast.IfExp, ast.BoolOp, ast.Lambda, ast.NamedExpr, ast.comprehension)
+
+
+@lru_cache(maxsize=None)
+def inline_template(body: str, arity: int) -> str | None:
+    """``body`` with parameter i replaced by ``({i})``, or None when inlining could change what is evaluated."""
+    tree = ast.parse(body, mode="eval")
+    found: list[tuple[int, int]] = []  # (column, parameter index)
+    for node in ast.walk(tree):
+        if isinstance(node, _UNSAFE) or (isinstance(node, ast.Compare) and len(node.ops) > 1):
+            return None
+        if isinstance(node, ast.Name):
+            if _is_param(node.id):
+                found.append((node.col_offset, int(node.id[1:])))
+            elif node.id not in HELPERS and not hasattr(builtins, node.id):
+                return None
+    # each input exactly once, and in the IEC left-to-right order
+    if [index for _, index in sorted(found)] != list(range(arity)):
+        return None
+
+    class Placeholders(ast.NodeTransformer):
+        def visit_Name(self, node: ast.Name) -> ast.AST:
+            if _is_param(node.id):
+                return ast.Name(id=f"__ARG{node.id[1:]}__", ctx=node.ctx)
+            return node
+
+    text = ast.unparse(Placeholders().visit(tree)).replace("{", "{{").replace("}", "}}")
+    for i in range(arity):
+        text = text.replace(f"__ARG{i}__", f"({{{i}}})")
+    return text
+
+
+def _is_param(name: str) -> bool:
+    return name[0] == "a" and name[1:].isdigit()

@@ -1,0 +1,117 @@
+"""Type conversions <SRC>_TO_<DST> between all elementary types (spec FUN-10, FUN-11).
+
+* REAL/LREAL -> any integer-like type rounds to nearest, ties to even
+  (FUN-11, IEC 3rd edition: REAL_TO_INT(2.5) = 2, (3.5) = 4, (-1.6) = -2);
+  NaN and ±inf give 0 (checked form: ENO FALSE).
+* Integer narrowing wraps in two's complement (FUN-11: INT_TO_SINT(200) = -56;
+  checked form reports the overflow). Widening is the identity.
+* x_TO_BOOL is x <> 0; BOOL_TO_x gives 0 or 1.
+* Time-like types convert through their millisecond count: TIME_TO_DINT gives
+  ms, TIME_TO_TOD / DT_TO_TOD take it modulo 24 h, DT_TO_DATE drops the time
+  of day, DATE/DT saturate at the epoch.
+* x_TO_STRING writes the IEC literal text (INT_TO_STRING(-25) = '-25',
+  T#1h30m, TOD#11:38:52.35, REAL 11.2 -> '11.2'); STRING_TO_x reads it back.
+  Invalid text gives the type's default (FUN-11: 0) with ENO FALSE.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+from typing import Callable
+
+from ...st.elementary import ALIASES, ELEMENTARY
+from ..errors import NOT_A_NUMBER, PlcWarning
+from ..values import MS_PER_DAY, TypeRef, default_value, resolve, value_range
+from .build import HELPERS, Impl, finite_args, specialise
+from .functions import reject
+from .literals import format_value, parse
+
+
+def floor_day(ms: int) -> int:
+    return ms - ms % MS_PER_DAY
+
+
+HELPERS["ll__day"] = floor_day
+
+
+def conversion(src: str, dst: str) -> Impl:
+    """The Impl of SRC_TO_DST; ``dst`` may be STRING[n]."""
+    s, d = resolve(src), resolve(dst)
+    if d.category == "string":
+        if s.category == "string":
+            return Impl("a0", dst)
+        return Impl("ll__format(a0)", dst, names={"ll__format": lambda v: format_value(v, s.name)})
+    if s.category == "string":
+        return _from_text(d)
+    if d.category == "bool":
+        return Impl("a0" if s.category == "bool" else "a0 != 0")
+    if d.category == "real":
+        return Impl("float(a0)" if d.name == "LREAL" and s.category != "real" else "a0", dst)
+    return _to_integer_like(s, d)
+
+
+def _to_integer_like(s: TypeRef, d: TypeRef) -> Impl:
+    name = f"{s.name}_TO_{d.name}"
+    precheck = None
+    if s.category == "real":
+        exact, precheck = "ll__round(a0)", finite_args(name)
+    else:
+        exact = "int(a0)" if s.category == "bool" else "a0"
+    if d.category == "date":
+        exact = f"ll__day({exact})"
+    src_range, dst_range = value_range(s.name), value_range(d.name)
+    if src_range and dst_range[0] <= src_range[0] and src_range[1] <= dst_range[1]:  # type: ignore[index]
+        return Impl(exact)  # widening: the value always fits
+    return Impl(exact, d.name, precheck=precheck)
+
+
+def _from_text(d: TypeRef) -> Impl:
+    default = default_value(d.name)
+
+    def parsed(text: str) -> object:
+        try:
+            return parse(text, d.name)
+        except ValueError:
+            return default
+
+    def precheck(text: str) -> PlcWarning | None:
+        try:
+            parse(text, d.name)
+        except ValueError as error:
+            return PlcWarning(NOT_A_NUMBER, str(error))
+        return None
+
+    result = None if d.category == "bool" else d.name
+    return Impl("ll__parse(a0)", result, names={"ll__parse": parsed}, precheck=precheck)
+
+
+def conversion_function(src: str, dst: str):
+    """The registry's implement() for SRC_TO_DST: checks the argument type, takes STRING[n] from the result."""
+
+    def implement(types: tuple[str, ...], result: str | None) -> Impl:
+        if resolve(types[0]).name != resolve(src).name:
+            raise reject(f"{src}_TO_{dst}", types)
+        target = result if result and resolve(dst).category == "string" else dst
+        return conversion(src, target)
+
+    return implement
+
+
+def conversion_names() -> dict[str, tuple[str, str]]:
+    """Every SRC_TO_DST name with long and short spellings (FUN-10: DT_TO_TOD = DATE_AND_TIME_TO_TIME_OF_DAY)."""
+    spellings = [*ELEMENTARY, *ALIASES]
+    return {
+        f"{a}_TO_{b}": (a, b) for a in spellings for b in spellings if resolve(a).name != resolve(b).name
+    }
+
+
+@lru_cache(maxsize=None)
+def converter(src: str, dst: str, checked: bool = False) -> Callable:
+    """A specialised one-argument converter; ``checked`` returns (value, None | PlcWarning)."""
+    built = specialise(f"{resolve(src).name}_TO_{resolve(dst).name}", conversion(src, dst), 1)
+    return built.checked if checked else built.fast
+
+
+def convert(value: object, src: str, dst: str) -> object:
+    """Convert one value (convenience; generated code should hold on to ``converter(src, dst)``)."""
+    return converter(src, dst)(value)

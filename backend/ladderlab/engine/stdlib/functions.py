@@ -1,0 +1,318 @@
+"""Numeric, arithmetic, bit-string, selection and comparison functions (spec FUN-20..FUN-71).
+
+Each ``_xxx(types, result)`` returns the ``Impl`` of one specialisation; the
+REAL helpers below never raise on a NaN, infinite or out-of-domain argument:
+they return the IEEE-754 result (FUN-20: NaN or -inf), which the checked form
+turns into ENO = FALSE.
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..errors import division_by_zero, index_out_of_range
+from ..values import resolve
+from .build import HELPERS, Impl, finite_args
+
+_INF, _NAN = math.inf, math.nan
+
+
+def idiv(a: int, b: int) -> int:
+    """Integer quotient truncated toward zero (FUN-31: 7/2 = 3, -7/2 = -3); b = 0 is a fault."""
+    if not b:
+        raise division_by_zero(a, b)
+    q = a // b
+    return q + 1 if q < 0 and q * b != a else q
+
+
+def imod(a: int, b: int) -> int:
+    """IEC MOD: remainder with the sign of the dividend, and 0 when b = 0 (FUN-31)."""
+    if not b:
+        return 0
+    r = a % b
+    return r - b if r and (a < 0) != (b < 0) else r
+
+
+def fdiv(a: float, b: float) -> float:
+    """IEEE division: x/0 is ±inf, 0/0 is NaN (FUN-31)."""
+    try:
+        return a / b
+    except ZeroDivisionError:
+        if a != a or a == 0:
+            return _NAN
+        return math.copysign(_INF, a) * math.copysign(1.0, b)
+
+
+def sqrt(x: float) -> float:
+    return math.sqrt(x) if x >= 0 else _NAN
+
+
+def _log(fn):
+    def log(x: float) -> float:
+        if x > 0:
+            return fn(x)
+        return -_INF if x == 0 else _NAN
+
+    return log
+
+
+def exp(x: float) -> float:
+    try:
+        return math.exp(x)
+    except OverflowError:
+        return _INF
+
+
+def _nan_outside_domain(fn):
+    """sin/cos/tan of ±inf, asin/acos beyond ±1: NaN instead of ValueError."""
+
+    def safe(x: float) -> float:
+        try:
+            return fn(x)
+        except ValueError:
+            return _NAN
+
+    return safe
+
+
+def power(x: float, y: float) -> float:
+    """EXPT with the IEEE pow special cases instead of exceptions or complex results."""
+    try:
+        return math.pow(x, y)
+    except OverflowError:
+        return -_INF if x < 0 and _odd_integer(y) else _INF
+    except ValueError:  # 0 ** negative, or negative ** non-integer
+        if x == 0:
+            return math.copysign(_INF, x) if _odd_integer(y) else _INF
+        return _NAN
+
+
+def _odd_integer(y: float) -> bool:
+    return float(y).is_integer() and int(y) % 2 == 1
+
+
+def shl(x: int, n: int, bits: int) -> int:
+    """Shift left, zero-filled; n outside 0..bits-1 shifts everything out (FUN-40)."""
+    return (x << n) & ((1 << bits) - 1) if 0 <= n < bits else 0
+
+
+def shr(x: int, n: int, bits: int) -> int:
+    return x >> n if 0 <= n < bits else 0
+
+
+def rol(x: int, n: int, bits: int) -> int:
+    """Rotate left by n mod width (so a negative n rotates right)."""
+    n %= bits
+    return ((x << n) | (x >> (bits - n))) & ((1 << bits) - 1)
+
+
+def ror(x: int, n: int, bits: int) -> int:
+    return rol(x, -n, bits)
+
+
+def limit(mn, x, mx):
+    """LIMIT(MN, IN, MX) = MIN(MAX(IN, MN), MX), literally (FUN-60)."""
+    x = x if x >= mn else mn
+    return x if x <= mx else mx
+
+
+def mux_error(k: int, n: int):
+    raise index_out_of_range(k, 0, n - 1, "MUX selector K")
+
+
+def round_half_even(x: float) -> int:
+    """REAL -> integer rounding (FUN-11: ties to even); NaN and ±inf give 0."""
+    try:
+        return round(x)
+    except (ValueError, OverflowError):
+        return 0
+
+
+def trunc(x: float) -> int:
+    """Toward zero (FUN-11, TRUNC); NaN and ±inf give 0."""
+    try:
+        return int(x)
+    except (ValueError, OverflowError):
+        return 0
+
+
+MATH_FUNCTIONS = {
+    "SQRT": sqrt,
+    "LN": _log(math.log),
+    "LOG": _log(math.log10),
+    "EXP": exp,
+    "SIN": _nan_outside_domain(math.sin),
+    "COS": _nan_outside_domain(math.cos),
+    "TAN": _nan_outside_domain(math.tan),
+    "ASIN": _nan_outside_domain(math.asin),
+    "ACOS": _nan_outside_domain(math.acos),
+    "ATAN": math.atan,
+}
+
+HELPERS.update(
+    {f"ll__{name.lower()}": fn for name, fn in MATH_FUNCTIONS.items()},
+    ll__idiv=idiv,
+    ll__imod=imod,
+    ll__fdiv=fdiv,
+    ll__pow=power,
+    ll__shl=shl,
+    ll__shr=shr,
+    ll__rol=rol,
+    ll__ror=ror,
+    ll__limit=limit,
+    ll__mux_error=mux_error,
+    ll__round=round_half_even,
+    ll__trunc=trunc,
+)
+
+
+def categories(types: tuple[str, ...]) -> tuple[str, ...]:
+    return tuple(resolve(t).category for t in types)
+
+
+def reject(name: str, types: tuple[str, ...]) -> TypeError:
+    return TypeError(f"{name} is not defined for ({', '.join(types)})")
+
+
+def _numeric(name: str, types: tuple[str, ...], allowed: frozenset[str]) -> None:
+    if not set(categories(types)) <= allowed:
+        raise reject(name, types)
+
+
+_NUM = frozenset({"int", "real"})
+_INT = frozenset({"int"})
+_REAL = frozenset({"real"})
+
+
+def chain(op: str, types: tuple[str, ...], result: str) -> Impl:
+    """IN1 op IN2 op .. INn; for REAL every intermediate is rounded to float32 as a PLC would."""
+    expr = "a0"
+    last = len(types) - 1
+    for i in range(1, len(types)):
+        expr = f"{expr} {op} a{i}"
+        if i < last and resolve(result).name == "REAL":
+            expr = f"ll__f32({expr})"
+    return Impl(expr, result)
+
+
+def arithmetic(name: str, op: str, allowed: frozenset[str] = _NUM):
+    def implement(types: tuple[str, ...], result: str) -> Impl:
+        _numeric(name, types, allowed)
+        return chain(op, types, result)
+
+    return implement
+
+
+def divide(types: tuple[str, ...], result: str) -> Impl:
+    _numeric("DIV", types, _NUM)
+    helper = "ll__fdiv" if resolve(result).category == "real" else "ll__idiv"
+    return Impl(f"{helper}(a0, a1)", result)
+
+
+def modulo(types: tuple[str, ...], result: str) -> Impl:
+    _numeric("MOD", types, _INT)  # FUN-32: ANY_INT only
+    return Impl("ll__imod(a0, a1)", result)
+
+
+def expt(types: tuple[str, ...], result: str) -> Impl:
+    if categories(types[:1]) != ("real",):  # FUN-33: the base is ANY_REAL
+        raise reject("EXPT", types)
+    _numeric("EXPT", types, _NUM)
+    return Impl("ll__pow(a0, a1)", result)
+
+
+def absolute(types: tuple[str, ...], result: str) -> Impl:
+    _numeric("ABS", types, _NUM)
+    return Impl("abs(a0)", result)  # ABS(INT#-32768) wraps to -32768 (FUN-20)
+
+
+def real_function(name: str):
+    def implement(types: tuple[str, ...], result: str) -> Impl:
+        _numeric(name, types, _REAL)
+        return Impl(f"ll__{name.lower()}(a0)", result)
+
+    return implement
+
+
+def move(types: tuple[str, ...], result: str | None) -> Impl:
+    return Impl("a0")
+
+
+def _bit_widths(name: str, types: tuple[str, ...]) -> int:
+    """Width of the ANY_BIT operands (FUN-40/50); BOOL counts as 1."""
+    refs = [resolve(t) for t in types]
+    if any(r.category not in ("bits", "bool") for r in refs):
+        raise reject(name, types)
+    return refs[0].elem.bits
+
+
+def shift(name: str):
+    def implement(types: tuple[str, ...], result: str) -> Impl:
+        bits = _bit_widths(name, types[:1])
+        if bits == 1 or categories(types[1:]) != ("int",):  # FUN-40: BOOL rejected, N is ANY_INT
+            raise reject(name, types)
+        return Impl(f"ll__{name.lower()}(a0, a1, {bits})")
+
+    return implement
+
+
+def bitwise(name: str, op: str):
+    def implement(types: tuple[str, ...], result: str) -> Impl:
+        _bit_widths(name, types)
+        return Impl(f" {op} ".join(f"a{i}" for i in range(len(types))))
+
+    return implement
+
+
+def negate(types: tuple[str, ...], result: str) -> Impl:
+    bits = _bit_widths("NOT", types)
+    return Impl("not a0" if bits == 1 else f"a0 ^ {(1 << bits) - 1}")
+
+
+def select(types: tuple[str, ...], result: str | None) -> Impl:
+    if categories(types[:1]) != ("bool",):
+        raise reject("SEL", types)
+    return Impl("a2 if a0 else a1")  # SEL(G, IN0, IN1)
+
+
+def extreme(name: str, op: str):
+    def implement(types: tuple[str, ...], result: str | None) -> Impl:
+        if len(types) == 2:
+            return Impl(f"a0 if a0 {op} a1 else a1")
+        return Impl(f"{name.lower()}({', '.join(f'a{i}' for i in range(len(types)))})")
+
+    return implement
+
+
+def limiter(types: tuple[str, ...], result: str | None) -> Impl:
+    return Impl("ll__limit(a0, a1, a2)")  # LIMIT(MN, IN, MX)
+
+
+def multiplexer(types: tuple[str, ...], result: str | None) -> Impl:
+    """MUX(K, IN0..INn-1) = IN_K; K outside 0..n-1 is a fault (FUN-61, APB-09)."""
+    if categories(types[:1]) != ("int",):
+        raise reject("MUX", types)
+    n = len(types) - 1
+    expr = f"ll__mux_error(a0, {n})"
+    for k in reversed(range(n)):
+        expr = f"a{k + 1} if a0 == {k} else {expr}"
+    return Impl(expr)
+
+
+def comparison(op: str):
+    """GT(a, b, c) = a > b AND b > c (FUN-70): Python's chained comparison is exactly that."""
+
+    def implement(types: tuple[str, ...], result: str | None) -> Impl:
+        return Impl(f" {op} ".join(f"a{i}" for i in range(len(types))))
+
+    return implement
+
+
+def to_integer(name: str, helper: str):
+    """TRUNC and REAL_TO_<int>: helper gives the integer, the result type wraps it; NaN/inf are invalid."""
+
+    def implement(types: tuple[str, ...], result: str) -> Impl:
+        _numeric(name, types, _REAL)
+        return Impl(f"{helper}(a0)", result, precheck=finite_args(name))
+
+    return implement
