@@ -54,10 +54,8 @@ def encode_string(value: str, wide: bool = False) -> str:
             out.append("$T")
         elif ch == "\f":
             out.append("$P")
-        elif ord(ch) < 32 or ord(ch) == 127 or (not wide and ord(ch) > 255):
-            out.append(f"${ord(ch):04X}" if wide else f"${ord(ch) & 0xFF:02X}")
-        elif wide and ord(ch) > 127:
-            out.append(f"${ord(ch):04X}")
+        elif ord(ch) < 32 or ord(ch) == 127:
+            out.append(f"${ord(ch):04X}" if wide else f"${ord(ch):02X}")
         else:
             out.append(ch)
     out.append(quote)

@@ -1,0 +1,297 @@
+"""AST -> readable IEC 61131-3 ST text (4-space indentation, upper-case keywords).
+
+Parentheses are inserted only where the precedence table (ST-02) needs them, so
+``parse(print(ast)) == ast`` holds for every AST the parser can produce. The ST
+exporter prints through this module.
+"""
+
+from __future__ import annotations
+
+from . import ast
+from .literals import encode_string, encode_time_literal
+
+INDENT = "    "
+
+# Binding strength, loosest first (ST-02): OR < XOR < AND < = <> < comparisons < + - < * / MOD < unary < **.
+_PRECEDENCE = {"OR": 1, "XOR": 2, "AND": 3, "=": 4, "<>": 4, "<": 5, ">": 5, "<=": 5, ">=": 5,
+               "+": 6, "-": 6, "*": 7, "/": 7, "MOD": 7, "**": 9}
+_UNARY = 8
+_PRIMARY = 10
+
+
+# ---------------------------------------------------------------- expressions
+
+
+def print_expression(expr: ast.Expr) -> str:
+    return _expr(expr, 0)
+
+
+def _precedence(expr: ast.Expr) -> int:
+    if isinstance(expr, ast.Binary):
+        return _PRECEDENCE[expr.op]
+    if isinstance(expr, ast.Unary):
+        return _UNARY
+    return _PRIMARY
+
+
+def _expr(expr: ast.Expr, minimum: int) -> str:
+    text = _bare(expr)
+    return f"({text})" if _precedence(expr) < minimum else text
+
+
+def _bare(expr: ast.Expr) -> str:
+    if isinstance(expr, ast.Binary):
+        level = _PRECEDENCE[expr.op]
+        right = _power_operand(expr.right) if expr.op == "**" else _expr(expr.right, level + 1)
+        return f"{_expr(expr.left, level)} {expr.op} {right}"
+    if isinstance(expr, ast.Unary):
+        return _unary(expr, in_power=False)
+    if isinstance(expr, ast.Name):
+        return expr.name
+    if isinstance(expr, ast.DirectAddr):
+        return expr.address
+    if isinstance(expr, ast.Member):
+        return f"{_expr(expr.base, _PRIMARY)}.{expr.name}"
+    if isinstance(expr, ast.Index):
+        return f"{_expr(expr.base, _PRIMARY)}[{', '.join(_expr(i, 0) for i in expr.indices)}]"
+    if isinstance(expr, ast.Deref):
+        return f"{_expr(expr.base, _PRIMARY)}^"
+    if isinstance(expr, ast.Call):
+        return f"{_expr(expr.callee, _PRIMARY)}({print_args(expr.args)})"
+    return _literal(expr)
+
+
+def _unary(expr: ast.Unary, in_power: bool) -> str:
+    separator = " " if expr.op == "NOT" else ""
+    operand = _power_operand(expr.operand) if in_power else _expr(expr.operand, _UNARY)
+    return f"{expr.op}{separator}{operand}"
+
+
+def _power_operand(expr: ast.Expr) -> str:
+    """Right of ``**``: a primary, or a sign/NOT applied to one (``2 ** -1``)."""
+    if isinstance(expr, ast.Unary):
+        return _unary(expr, in_power=True)
+    return _expr(expr, _PRIMARY)
+
+
+def print_args(args: list[ast.Arg]) -> str:
+    return ", ".join(_arg(a) for a in args)
+
+
+def _arg(arg: ast.Arg) -> str:
+    value = _expr(arg.value, 0)
+    if arg.name is None:
+        return value
+    if arg.output:
+        return f"{'NOT ' if arg.negated else ''}{arg.name} => {value}"
+    return f"{arg.name} := {value}"
+
+
+def _literal(expr: ast.Expr) -> str:
+    if isinstance(expr, ast.IntLit):
+        return _integer(expr.value, expr.base)
+    if isinstance(expr, ast.RealLit):
+        return repr(expr.value)
+    if isinstance(expr, ast.BoolLit):
+        return "TRUE" if expr.value else "FALSE"
+    if isinstance(expr, ast.StringLit):
+        return encode_string(expr.value, expr.wide)
+    if isinstance(expr, ast.TimeLit):
+        return encode_time_literal(expr.kind, expr.value)
+    if isinstance(expr, ast.TypedLit):
+        return f"{expr.type_name}#{_bare(expr.value)}"
+    raise TypeError(f"not an ST expression node: {expr!r}")
+
+
+def _integer(value: int, base: int) -> str:
+    sign = "-" if value < 0 else ""
+    magnitude = abs(value)
+    if base == 16:
+        return f"{sign}16#{magnitude:X}"
+    if base == 8:
+        return f"{sign}8#{magnitude:o}"
+    if base == 2:
+        return f"{sign}2#{magnitude:b}"
+    return f"{sign}{magnitude}"
+
+
+# ---------------------------------------------------------------- statements
+
+
+def print_statements(statements: list[ast.Stmt], level: int = 0) -> str:
+    return "".join(_statement(s, level) for s in statements)
+
+
+def _statement(stmt: ast.Stmt, level: int) -> str:
+    pad = INDENT * level
+    if isinstance(stmt, ast.Assign):
+        return f"{pad}{_expr(stmt.target, 0)} := {_expr(stmt.value, 0)};\n"
+    if isinstance(stmt, ast.CallStmt):
+        return f"{pad}{_expr(stmt.call, 0)};\n"
+    if isinstance(stmt, ast.If):
+        text = ""
+        for i, (cond, body) in enumerate(stmt.branches):
+            text += f"{pad}{'IF' if i == 0 else 'ELSIF'} {_expr(cond, 0)} THEN\n{print_statements(body, level + 1)}"
+        if stmt.else_body is not None:
+            text += f"{pad}ELSE\n{print_statements(stmt.else_body, level + 1)}"
+        return text + f"{pad}END_IF;\n"
+    if isinstance(stmt, ast.Case):
+        text = f"{pad}CASE {_expr(stmt.selector, 0)} OF\n"
+        for branch in stmt.branches:
+            labels = ", ".join(_case_label(label) for label in branch.labels)
+            text += f"{pad}{INDENT}{labels}:\n{print_statements(branch.body, level + 2)}"
+        if stmt.else_body is not None:
+            text += f"{pad}ELSE\n{print_statements(stmt.else_body, level + 1)}"
+        return text + f"{pad}END_CASE;\n"
+    if isinstance(stmt, ast.For):
+        step = f" BY {_expr(stmt.step, 0)}" if stmt.step is not None else ""
+        head = f"FOR {stmt.var.name} := {_expr(stmt.start, 0)} TO {_expr(stmt.end, 0)}{step} DO"
+        return f"{pad}{head}\n{print_statements(stmt.body, level + 1)}{pad}END_FOR;\n"
+    if isinstance(stmt, ast.While):
+        return f"{pad}WHILE {_expr(stmt.cond, 0)} DO\n{print_statements(stmt.body, level + 1)}{pad}END_WHILE;\n"
+    if isinstance(stmt, ast.Repeat):
+        return f"{pad}REPEAT\n{print_statements(stmt.body, level + 1)}{pad}UNTIL {_expr(stmt.until, 0)}\n{pad}END_REPEAT;\n"
+    if isinstance(stmt, ast.Exit):
+        return f"{pad}EXIT;\n"
+    if isinstance(stmt, ast.Return):
+        return f"{pad}RETURN;\n"
+    if isinstance(stmt, ast.Empty):
+        return f"{pad};\n"
+    raise TypeError(f"not an ST statement node: {stmt!r}")
+
+
+def _case_label(label: ast.Expr | ast.CaseRange) -> str:
+    if isinstance(label, ast.CaseRange):
+        return f"{_expr(label.low, 0)}..{_expr(label.high, 0)}"
+    return _expr(label, 0)
+
+
+# ---------------------------------------------------------------- types and declarations
+
+
+def print_type(spec: ast.TypeSpec, level: int = 0) -> str:
+    if isinstance(spec, ast.NamedType):
+        return spec.name
+    if isinstance(spec, ast.SizedType):
+        return f"{spec.name}[{_expr(spec.size, 0)}]"
+    if isinstance(spec, ast.SubrangeType):
+        return f"{spec.base} ({_expr(spec.low, 0)}..{_expr(spec.high, 0)})"
+    if isinstance(spec, ast.ArrayType):
+        ranges = ", ".join("*" if r is None else f"{_expr(r[0], 0)}..{_expr(r[1], 0)}" for r in spec.ranges)
+        return f"ARRAY [{ranges}] OF {print_type(spec.element, level)}"
+    if isinstance(spec, ast.PointerType):
+        return f"{spec.kind} {print_type(spec.target, level)}"
+    if isinstance(spec, ast.EnumType):
+        return "(" + ", ".join(v.name + (f" := {_expr(v.value, 0)}" if v.value is not None else "")
+                               for v in spec.values) + ")"
+    if isinstance(spec, ast.StructType):
+        members = "".join(_var_decl(m, level + 1) for m in spec.members)
+        return f"STRUCT\n{members}{INDENT * level}END_STRUCT"
+    raise TypeError(f"not an ST type node: {spec!r}")
+
+
+def print_initializer(init: ast.Init) -> str:
+    if isinstance(init, ast.ArrayInit):
+        return "[" + ", ".join(_array_item(item) for item in init.items) + "]"
+    if isinstance(init, ast.StructInit):
+        return "(" + ", ".join(f"{name} := {print_initializer(value)}" for name, value in init.fields) + ")"
+    return _expr(init, 0)
+
+
+def _array_item(item: ast.Init | ast.RepeatInit) -> str:
+    if isinstance(item, ast.RepeatInit):
+        return f"{item.count}({print_initializer(item.value) if item.value is not None else ''})"
+    return print_initializer(item)
+
+
+def _decl_name(name: ast.DeclName) -> str:
+    if name.name is None:
+        return f"AT {name.address}"
+    return name.name + (f" AT {name.address}" if name.address else "")
+
+
+def _var_decl(decl: ast.VarDecl, level: int) -> str:
+    text = INDENT * level + ", ".join(_decl_name(n) for n in decl.names) + " : " + print_type(decl.type, level)
+    if decl.edge:
+        text += " " + decl.edge
+    if decl.init is not None:
+        text += " := " + print_initializer(decl.init)
+    text += ";"
+    if decl.comment:
+        text += f" (* {decl.comment} *)" if "*)" not in decl.comment and "(*" not in decl.comment \
+            else f" // {decl.comment}"
+    return text + "\n"
+
+
+def print_varprint_statements(block: ast.VarBlock, level: int = 0) -> str:
+    head = " ".join([block.kind, *block.qualifiers])
+    decls = "".join(_var_decl(d, level + 1) for d in block.decls)
+    return f"{INDENT * level}{head}\n{decls}{INDENT * level}END_VAR\n"
+
+
+def print_declarations(blocks: list[ast.VarBlock]) -> str:
+    return "".join(print_varprint_statements(b) for b in blocks)
+
+
+def _typeprint_statements(block: ast.TypeBlock) -> str:
+    lines = []
+    for decl in block.decls:
+        init = f" := {print_initializer(decl.init)}" if decl.init is not None else ""
+        lines.append(f"{INDENT}{decl.name} : {print_type(decl.type, 1)}{init};\n")
+    return "TYPE\n" + "".join(lines) + "END_TYPE\n"
+
+
+# ---------------------------------------------------------------- POUs, configurations, files
+
+
+def print_pou(pou: ast.Pou) -> str:
+    head = f"{pou.kind} {pou.name}"
+    if pou.return_type is not None:
+        head += f" : {print_type(pou.return_type)}"
+    return f"{head}\n{print_declarations(pou.var_blocks)}{print_statements(pou.body, 1)}END_{pou.kind}\n"
+
+
+def _task(task: ast.TaskConfig, level: int) -> str:
+    props = ", ".join(f"{name} := {_expr(value, 0)}" for name, value in task.properties)
+    return f"{INDENT * level}TASK {task.name}({props});\n"
+
+
+def _program_config(prog: ast.ProgramConfig, level: int) -> str:
+    text = "PROGRAM " + (f"{prog.retain} " if prog.retain else "") + prog.name
+    if prog.task:
+        text += f" WITH {prog.task}"
+    text += f" : {prog.type_name}"
+    if prog.args:
+        text += f"({print_args(prog.args)})"
+    return f"{INDENT * level}{text};\n"
+
+
+def _config_item(item, level: int) -> str:
+    if isinstance(item, ast.TaskConfig):
+        return _task(item, level)
+    if isinstance(item, ast.ProgramConfig):
+        return _program_config(item, level)
+    if isinstance(item, ast.VarBlock):
+        return print_varprint_statements(item, level)
+    on = f" ON {item.on}" if item.on else ""
+    body = "".join(_config_item(i, level + 1) for i in item.items)
+    return f"{INDENT * level}RESOURCE {item.name}{on}\n{body}{INDENT * level}END_RESOURCE\n"
+
+
+def print_configuration(config: ast.Configuration) -> str:
+    body = "".join(_config_item(item, 1) for item in config.items)
+    return f"CONFIGURATION {config.name}\n{body}END_CONFIGURATION\n"
+
+
+def print_source(source: ast.Source) -> str:
+    parts = []
+    for item in source.items:
+        if isinstance(item, ast.Pou):
+            parts.append(print_pou(item))
+        elif isinstance(item, ast.TypeBlock):
+            parts.append(_typeprint_statements(item))
+        elif isinstance(item, ast.VarBlock):
+            parts.append(print_varprint_statements(item))
+        else:
+            parts.append(print_configuration(item))
+    return "\n".join(parts)
