@@ -45,7 +45,7 @@ def f32(x: float) -> float:
     """Round to the nearest IEEE float32 (ties to even); beyond FLT_MAX it becomes ±inf."""
     try:
         return _unpack(_pack(x))[0]
-    except OverflowError:
+    except (OverflowError, struct.error):  # struct.error: an int too large even for a double
         return math.inf if x > 0 else -math.inf
 
 
