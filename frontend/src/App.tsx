@@ -1,0 +1,132 @@
+import { useEffect } from "react";
+import type { ProjectSummary } from "./api/client";
+import { useAppStore } from "./store";
+
+const HEALTH_POLL_MS = 15_000;
+
+function HealthIndicator() {
+  const status = useAppStore((s) => s.healthStatus);
+  const health = useAppStore((s) => s.health);
+  const error = useAppStore((s) => s.healthError);
+  const label =
+    status === "ok"
+      ? `Server ok${health?.version ? ` · v${health.version}` : ""}`
+      : status === "down"
+        ? "Server unreachable"
+        : "Checking server…";
+  return (
+    <div className={`health health-${status}`} role="status" title={error ?? undefined}>
+      <span className="health-dot" aria-hidden="true" />
+      {label}
+    </div>
+  );
+}
+
+function formatModified(iso: string): string {
+  const date = new Date(iso);
+  return Number.isNaN(date.getTime()) ? iso : date.toLocaleString();
+}
+
+function ProjectRow({ project }: { project: ProjectSummary }) {
+  const selected = useAppStore((s) => s.selectedProject === project.name);
+  const selectProject = useAppStore((s) => s.selectProject);
+  return (
+    <li>
+      <button
+        type="button"
+        className="project"
+        aria-current={selected ? "true" : undefined}
+        onClick={() => selectProject(project.name)}
+      >
+        <span className="project-name">{project.name}</span>
+        <span className="project-meta">
+          {project.pou_count} POU{project.pou_count === 1 ? "" : "s"} · rev {project.revision} ·{" "}
+          {formatModified(project.modified)}
+        </span>
+      </button>
+    </li>
+  );
+}
+
+function ProjectList() {
+  const projects = useAppStore((s) => s.projects);
+  const status = useAppStore((s) => s.projectsStatus);
+  const error = useAppStore((s) => s.projectsError);
+  const loadProjects = useAppStore((s) => s.loadProjects);
+
+  let content;
+  if (status === "error") {
+    content = (
+      <div className="empty" role="alert">
+        <p>Could not load the project list.</p>
+        <p className="empty-detail">{error}</p>
+      </div>
+    );
+  } else if ((status === "idle" || status === "loading") && projects.length === 0) {
+    content = <p className="empty">Loading projects…</p>;
+  } else if (projects.length === 0) {
+    content = <p className="empty">No projects in the workspace yet.</p>;
+  } else {
+    content = (
+      <ul className="project-list">
+        {projects.map((p) => (
+          <ProjectRow key={p.name} project={p} />
+        ))}
+      </ul>
+    );
+  }
+
+  return (
+    <nav className="sidebar" aria-label="Projects">
+      <div className="sidebar-head">
+        <h2>Projects</h2>
+        <button type="button" onClick={() => void loadProjects()} disabled={status === "loading"}>
+          Reload
+        </button>
+      </div>
+      {content}
+    </nav>
+  );
+}
+
+function MainArea() {
+  const selected = useAppStore((s) => s.selectedProject);
+  return (
+    <main className="main">
+      {selected ? (
+        <>
+          <h2>{selected}</h2>
+          <p className="placeholder">The editor for this project is not built yet.</p>
+        </>
+      ) : (
+        <p className="placeholder">Select a project to open it.</p>
+      )}
+    </main>
+  );
+}
+
+export default function App() {
+  const loadProjects = useAppStore((s) => s.loadProjects);
+  const checkHealth = useAppStore((s) => s.checkHealth);
+
+  useEffect(() => {
+    void loadProjects();
+  }, [loadProjects]);
+
+  useEffect(() => {
+    void checkHealth();
+    const timer = window.setInterval(() => void checkHealth(), HEALTH_POLL_MS);
+    return () => window.clearInterval(timer);
+  }, [checkHealth]);
+
+  return (
+    <div className="app">
+      <header className="header">
+        <h1>LadderLab</h1>
+        <HealthIndicator />
+      </header>
+      <ProjectList />
+      <MainArea />
+    </div>
+  );
+}

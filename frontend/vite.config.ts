@@ -1,0 +1,26 @@
+import react from "@vitejs/plugin-react";
+import { defineConfig } from "vitest/config";
+
+// The FastAPI backend (`ladderlab serve`, default port 8000) serves the built app from
+// backend/ladderlab/server/static; during `npm run dev` Vite proxies /api to it instead.
+const BACKEND = "http://127.0.0.1:8000";
+
+export default defineConfig({
+  plugins: [react()],
+  build: {
+    outDir: "../backend/ladderlab/server/static",
+    emptyOutDir: true,
+  },
+  server: {
+    proxy: {
+      "/api": { target: BACKEND, changeOrigin: true, ws: true },
+    },
+  },
+  test: {
+    environment: "jsdom",
+    include: ["src/**/*.test.{ts,tsx}"],
+    setupFiles: ["src/test/setup.ts"],
+    restoreMocks: true,
+    unstubGlobals: true,
+  },
+});
