@@ -77,7 +77,16 @@ def _present(children: list[Any]) -> list[Any]:
 
 
 class AstBuilder(Transformer):
-    """One method per grammar rule or alias; see iec61131.lark."""
+    """One method per grammar rule or alias; see iec61131.lark.
+
+    ``reserved`` holds the grammar's keywords (upper case): the contextual lexer
+    lets a keyword through as a name where the keyword itself cannot occur, and
+    KW-02 says such hard keywords are never identifiers.
+    """
+
+    def __init__(self, reserved: frozenset[str]):
+        super().__init__()
+        self.reserved = reserved
 
     # ------------------------------------------------------------ entry points
     def start_source(self, c):
@@ -269,6 +278,8 @@ class AstBuilder(Transformer):
         return c[1]
 
     def name(self, c):
+        if c[0].upper() in self.reserved:
+            raise StSyntaxError(f"'{c[0]}' is a keyword and cannot be used as a name", span_of(c))
         return ast.Name(str(c[0]), span_of(c))
 
     def direct(self, c):
@@ -278,7 +289,7 @@ class AstBuilder(Transformer):
         return ast.Member(c[0], str(c[1]), span_of(c))
 
     def index(self, c):
-        return ast.Index(c[0], c[1:], span_of(c))
+        return ast.Index(c[0], c[1:-1], span_of(c))
 
     def deref(self, c):
         return ast.Deref(c[0], span_of(c))
