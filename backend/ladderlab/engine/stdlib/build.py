@@ -122,7 +122,7 @@ def _wrapped(name, args, value, stored, result):
 def _non_finite(name, args, value, stored, result):
     if stored - stored == 0 or not all(_finite(a) for a in args):
         return None
-    code = DOMAIN if stored != stored or math.isinf(value) else OVERFLOW
+    code = DOMAIN if stored != stored else OVERFLOW  # NaN: no result exists; ±inf: beyond any finite value
     return PlcWarning(code, f"{call_text(name, args)} gives {stored} ({result})")
 
 
