@@ -12,10 +12,13 @@ PYTEST_ARGS ?=
 
 .PHONY: run test test-slow bench schema frontend chromium clean
 
+FRONTEND_DEPS := frontend/node_modules/.installed
+
 run: $(VENV)/.installed frontend
 	$(VENV)/bin/ladderlab serve --host $(HOST) --port $(PORT)
 
-test: $(VENV)/.installed chromium
+test: $(VENV)/.installed chromium $(FRONTEND_DEPS)
+	cd frontend && npm run --silent check:types && npm test --silent
 	$(PY) -m pytest -q $(PYTEST_ARGS)
 
 test-slow: $(VENV)/.installed chromium
@@ -24,8 +27,9 @@ test-slow: $(VENV)/.installed chromium
 bench: $(VENV)/.installed
 	@for script in benchmarks/*.py; do echo "== $$script"; $(PY) $$script || exit 1; done
 
-schema: $(VENV)/.installed
+schema: $(VENV)/.installed $(FRONTEND_DEPS)
 	$(PY) -c "from pathlib import Path; from ladderlab.model.schema import write_schemas; [print('wrote', p) for p in write_schemas(Path('shared_schema'))]"
+	cd frontend && npm run --silent gen:types
 
 # The virtual environment is rebuilt whenever pyproject.toml changes.
 $(VENV)/.installed: pyproject.toml
@@ -34,11 +38,14 @@ $(VENV)/.installed: pyproject.toml
 	$(PIP) install --quiet -e '.[test]'
 	touch $@
 
-# The browser app (frontend/) is built into the server's static folder when it exists.
-frontend:
-	@if [ -f frontend/package.json ]; then \
-		cd frontend && npm ci --no-audit --no-fund && npm run build; \
-	else echo "frontend/ has no package.json yet: serving the placeholder page"; fi
+# Frontend packages are reinstalled whenever the lock file changes.
+$(FRONTEND_DEPS): frontend/package-lock.json
+	cd frontend && npm ci --no-audit --no-fund
+	touch $@
+
+# The browser app is built into the server's static folder (backend/ladderlab/server/static).
+frontend: $(FRONTEND_DEPS)
+	cd frontend && npm run build
 
 # Browser tests drive Debian's chromium (never a downloaded browser).
 chromium:
