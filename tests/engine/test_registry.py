@@ -136,3 +136,17 @@ def test_templates_only_name_inline_names_and_builtins(name, types, result, args
 )
 def test_no_template_where_inlining_could_change_evaluation(name, types):
     assert function_template(name, types, "INT") is None
+
+
+@pytest.mark.parametrize(
+    "name, types, args, expected",
+    [
+        ("ADD", ["INT", "INT"], (32767, 1), -32768),  # FUN-02: the result has the inputs' type
+        ("MUL", ["REAL", "REAL"], (0.1, 1.0), 0.10000000149011612),
+        ("DIV", ["SINT", "SINT"], (-128, -1), -128),
+        ("TRUNC", ["LREAL"], (2.0**40,), 0),  # APB-06 [REC]: DINT
+        ("CONCAT", ["STRING", "STRING"], ("x" * 50, "y" * 50), "x" * 50 + "y" * 30),  # STRING = STRING[80]
+    ],
+)
+def test_result_type_defaults(name, types, args, expected):
+    assert make_function(name, types)(*args) == expected

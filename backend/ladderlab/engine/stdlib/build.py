@@ -86,13 +86,10 @@ def specialise(name: str, impl: Impl, arity: int) -> Specialised:
 
 def _checked(name: str, impl: Impl, arity: int, fast: Callable) -> Callable:
     precheck = impl.precheck
-    category = resolve(impl.result).category if impl.result else None
-    if category in ("int", "bits", "time", "date", "dt", "real", "string"):
+    problem = _PROBLEMS.get(resolve(impl.result).category) if impl.result else None
+    if problem is not None:
         exact = compile_expr(impl.exact, arity, impl.names)
         store = compile_expr(_store_of(impl), 1)
-        problem = _PROBLEMS[category]
-    else:
-        exact = store = problem = None
 
     def checked(*args):
         if precheck is not None:

@@ -196,40 +196,41 @@ def chain(op: str, types: tuple[str, ...], result: str) -> Impl:
 
 
 def arithmetic(name: str, op: str, allowed: frozenset[str] = _NUM):
-    def implement(types: tuple[str, ...], result: str) -> Impl:
+    def implement(types: tuple[str, ...], result: str | None) -> Impl:
         _numeric(name, types, allowed)
-        return chain(op, types, result)
+        return chain(op, types, result or types[0])
 
     return implement
 
 
-def divide(types: tuple[str, ...], result: str) -> Impl:
+def divide(types: tuple[str, ...], result: str | None) -> Impl:
     _numeric("DIV", types, _NUM)
+    result = result or types[0]
     helper = "ll__fdiv" if resolve(result).category == "real" else "ll__idiv"
     return Impl(f"{helper}(a0, a1)", result)
 
 
-def modulo(types: tuple[str, ...], result: str) -> Impl:
+def modulo(types: tuple[str, ...], result: str | None) -> Impl:
     _numeric("MOD", types, _INT)  # FUN-32: ANY_INT only
-    return Impl("ll__imod(a0, a1)", result)
+    return Impl("ll__imod(a0, a1)", result or types[0])
 
 
-def expt(types: tuple[str, ...], result: str) -> Impl:
+def expt(types: tuple[str, ...], result: str | None) -> Impl:
     if categories(types[:1]) != ("real",):  # FUN-33: the base is ANY_REAL
         raise reject("EXPT", types)
     _numeric("EXPT", types, _NUM)
-    return Impl("ll__pow(a0, a1)", result)
+    return Impl("ll__pow(a0, a1)", result or types[0])
 
 
-def absolute(types: tuple[str, ...], result: str) -> Impl:
+def absolute(types: tuple[str, ...], result: str | None) -> Impl:
     _numeric("ABS", types, _NUM)
-    return Impl("abs(a0)", result)  # ABS(INT#-32768) wraps to -32768 (FUN-20)
+    return Impl("abs(a0)", result or types[0])  # ABS(INT#-32768) wraps to -32768 (FUN-20)
 
 
 def real_function(name: str):
-    def implement(types: tuple[str, ...], result: str) -> Impl:
+    def implement(types: tuple[str, ...], result: str | None) -> Impl:
         _numeric(name, types, _REAL)
-        return Impl(f"ll__{name.lower()}(a0)", result)
+        return Impl(f"ll__{name.lower()}(a0)", result or types[0])
 
     return implement
 
@@ -247,7 +248,7 @@ def _bit_widths(name: str, types: tuple[str, ...]) -> int:
 
 
 def shift(name: str):
-    def implement(types: tuple[str, ...], result: str) -> Impl:
+    def implement(types: tuple[str, ...], result: str | None) -> Impl:
         bits = _bit_widths(name, types[:1])
         if bits == 1 or categories(types[1:]) != ("int",):  # FUN-40: BOOL rejected, N is ANY_INT
             raise reject(name, types)
@@ -257,14 +258,14 @@ def shift(name: str):
 
 
 def bitwise(name: str, op: str):
-    def implement(types: tuple[str, ...], result: str) -> Impl:
+    def implement(types: tuple[str, ...], result: str | None) -> Impl:
         _bit_widths(name, types)
         return Impl(f" {op} ".join(f"a{i}" for i in range(len(types))))
 
     return implement
 
 
-def negate(types: tuple[str, ...], result: str) -> Impl:
+def negate(types: tuple[str, ...], result: str | None) -> Impl:
     bits = _bit_widths("NOT", types)
     return Impl("not a0" if bits == 1 else f"a0 ^ {(1 << bits) - 1}")
 
@@ -311,8 +312,8 @@ def comparison(op: str):
 def to_integer(name: str, helper: str):
     """TRUNC and REAL_TO_<int>: helper gives the integer, the result type wraps it; NaN/inf are invalid."""
 
-    def implement(types: tuple[str, ...], result: str) -> Impl:
+    def implement(types: tuple[str, ...], result: str | None) -> Impl:
         _numeric(name, types, _REAL)
-        return Impl(f"{helper}(a0)", result, precheck=finite_args(name))
+        return Impl(f"{helper}(a0)", result or "DINT", precheck=finite_args(name))  # APB-06: DINT
 
     return implement

@@ -70,9 +70,10 @@ def positional(name: str):
             return None
         return PlcWarning(INVALID_ARGUMENT, f"{call_text(name, args)}: {', '.join(bad)} is out of range")
 
-    def implement(types: tuple[str, ...], result: str) -> Impl:
+    def implement(types: tuple[str, ...], result: str | None) -> Impl:
         _check_types(name, types, strings)
-        return Impl(f"ll__op({', '.join(params(len(types)))})", result, names={"ll__op": clamped}, precheck=precheck)
+        call = f"ll__op({', '.join(params(len(types)))})"
+        return Impl(call, result or "STRING", names={"ll__op": clamped}, precheck=precheck)
 
     return implement
 
@@ -87,6 +88,6 @@ def find_position(types: tuple[str, ...], result: str | None) -> Impl:
     return Impl("ll__find(a0, a1)")
 
 
-def concat(types: tuple[str, ...], result: str) -> Impl:
+def concat(types: tuple[str, ...], result: str | None) -> Impl:
     _check_types("CONCAT", types, len(types))
-    return Impl(" + ".join(params(len(types))), result)
+    return Impl(" + ".join(params(len(types))), result or "STRING")
