@@ -76,7 +76,7 @@ def _table() -> dict[str, StandardFunction]:
         ("EXPT", 2, False, f.expt, "FUN-33"),
         ("MOVE", 1, False, f.move, "FUN-32"),
         ("ABS", 1, False, f.absolute, "FUN-20"),
-        ("TRUNC", 1, False, f.to_integer("TRUNC", "ll__trunc"), "FUN-11"),
+        ("TRUNC", 1, False, f.truncate, "FUN-11"),
         ("SHL", 2, False, f.shift("SHL"), "FUN-40"),
         ("SHR", 2, False, f.shift("SHR"), "FUN-40"),
         ("ROL", 2, False, f.shift("ROL"), "FUN-40"),

@@ -309,11 +309,7 @@ def comparison(op: str):
     return implement
 
 
-def to_integer(name: str, helper: str):
-    """TRUNC and REAL_TO_<int>: helper gives the integer, the result type wraps it; NaN/inf are invalid."""
-
-    def implement(types: tuple[str, ...], result: str | None) -> Impl:
-        _numeric(name, types, _REAL)
-        return Impl(f"{helper}(a0)", result or "DINT", precheck=finite_args(name))  # APB-06: DINT
-
-    return implement
+def truncate(types: tuple[str, ...], result: str | None) -> Impl:
+    """TRUNC (FUN-11): toward zero, into the requested integer type; NaN and ±inf are invalid."""
+    _numeric("TRUNC", types, _REAL)
+    return Impl("ll__trunc(a0)", result or "DINT", precheck=finite_args("TRUNC"))  # APB-06 [REC]: DINT
