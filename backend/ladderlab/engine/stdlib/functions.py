@@ -1,9 +1,9 @@
 """Numeric, arithmetic, bit-string, selection and comparison functions (spec FUN-20..FUN-71).
 
-Each ``_xxx(types, result)`` returns the ``Impl`` of one specialisation; the
-REAL helpers below never raise on a NaN, infinite or out-of-domain argument:
-they return the IEEE-754 result (FUN-20: NaN or -inf), which the checked form
-turns into ENO = FALSE.
+The implement functions (``(arg_types, result_type) -> Impl``, registered in
+``stdlib/__init__``) each describe one specialisation. The REAL helpers never
+raise on a NaN, infinite or out-of-domain argument: they return the IEEE-754
+result (FUN-20: NaN or -inf), which the checked form turns into ENO = FALSE.
 """
 
 from __future__ import annotations
@@ -195,9 +195,9 @@ def chain(op: str, types: tuple[str, ...], result: str) -> Impl:
     return Impl(expr, result)
 
 
-def arithmetic(name: str, op: str, allowed: frozenset[str] = _NUM):
+def arithmetic(name: str, op: str):
     def implement(types: tuple[str, ...], result: str | None) -> Impl:
-        _numeric(name, types, allowed)
+        _numeric(name, types, _NUM)
         return chain(op, types, result or types[0])
 
     return implement
