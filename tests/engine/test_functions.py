@@ -350,7 +350,7 @@ def test_bitwise_rejects_numbers(name):
         ("MUX", ["INT", "INT", "INT", "DINT"], (0, 0, 10, 77), 0),  # APB-09 with B = 77
         ("MUX", ["INT", "INT", "INT", "DINT"], (1, 0, 10, 77), 10),
         ("MUX", ["INT", "INT", "INT", "DINT"], (2, 0, 10, 77), 77),
-        ("MUX", ["USINT", "STRING"], (0, "only"), "only"),
+        ("MUX", ["USINT", "STRING", "STRING"], (1, "a", "b"), "b"),
     ],
 )
 def test_selection_vectors_FUN_60_62(name, types, args, expected):

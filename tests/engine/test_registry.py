@@ -150,3 +150,25 @@ def test_no_template_where_inlining_could_change_evaluation(name, types):
 )
 def test_result_type_defaults(name, types, args, expected):
     assert make_function(name, types)(*args) == expected
+
+
+# --- contract with the checker's catalogue (st/stdlib.py) --------------------------------------------
+
+
+def test_runtime_has_every_catalogued_function_with_the_same_arity():
+    from ladderlab.st.stdlib import FUNCTIONS
+
+    assert set(FUNCTIONS) <= set(STANDARD_FUNCTIONS)
+    for name, entry in FUNCTIONS.items():
+        runtime = STANDARD_FUNCTIONS[name]
+        assert (runtime.inputs, runtime.extensible) == (len(entry.inputs), entry.extensible), name
+
+
+def test_runtime_fbs_have_the_catalogued_pins():
+    from ladderlab.engine.stdlib import STANDARD_FBS
+    from ladderlab.st.stdlib import FUNCTION_BLOCKS
+
+    for name, entry in FUNCTION_BLOCKS.items():
+        cls = STANDARD_FBS[name]
+        assert cls.INPUTS == tuple(p.name for p in entry.inputs), name
+        assert cls.OUTPUTS == tuple(p.name for p in entry.outputs), name

@@ -89,7 +89,7 @@ def _table() -> dict[str, StandardFunction]:
         ("MAX", 2, True, f.extreme("MAX", ">="), "FUN-60"),
         ("MIN", 2, True, f.extreme("MIN", "<="), "FUN-60"),
         ("LIMIT", 3, False, f.limiter, "FUN-60"),
-        ("MUX", 2, True, f.multiplexer, "FUN-61"),
+        ("MUX", 3, True, f.multiplexer, "FUN-61"),
         ("GT", 2, True, f.comparison(">"), "FUN-70"),
         ("GE", 2, True, f.comparison(">="), "FUN-70"),
         ("EQ", 2, True, f.comparison("=="), "FUN-70"),
