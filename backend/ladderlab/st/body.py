@@ -1,0 +1,408 @@
+"""Type checking of ST statements and expressions inside one POU.
+
+Fills the AST annotations in place: ``expr.ty`` (resolved type), ``Name.ref`` /
+``Member.ref`` (Symbol, enum value or POU), ``Call.ref`` (PouInfo, StdFunction,
+or the FB instance Symbol). Reports through ``report`` and never raises.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from . import ast, stdlib
+from . import types as t
+from .calls import check_call
+from .cases import check_case
+from .rules import EnumValue, assignable_or_report, constant_value, root_name
+from .symbols import CheckResult, PouInfo, Symbol, did_you_mean
+from .types import ERROR, Type
+
+Report = Callable[..., None]  # report(code, message, node, severity="error")
+
+_ARITHMETIC = {"+", "-", "*", "/"}
+_COMPARISON = {"=", "<>", "<", ">", "<=", ">="}
+_LOGIC = {"AND", "OR", "XOR"}
+# TIME and date arithmetic (ST-21, ST-22, FUN-85): (op, left category, right category) -> result type name
+_TIME_RULES = {
+    ("+", "time", "time"): "TIME", ("-", "time", "time"): "TIME",
+    ("+", "tod", "time"): "TIME_OF_DAY", ("-", "tod", "time"): "TIME_OF_DAY", ("-", "tod", "tod"): "TIME",
+    ("+", "dt", "time"): "DATE_AND_TIME", ("-", "dt", "time"): "DATE_AND_TIME", ("-", "dt", "dt"): "TIME",
+    ("-", "date", "date"): "TIME",
+}
+_DIRECT_DEFAULTS = {"X": "BOOL", "B": "BYTE", "W": "INT", "D": "REAL", "L": "LWORD"}  # S002 Table 10.1 (ST-13)
+
+
+class BodyChecker:
+    def __init__(self, result: CheckResult, pou: PouInfo | None, report: Report):
+        self.result = result
+        self.pou = pou
+        self.report = report
+        self.loop_depth = 0
+        self.loop_vars: list[Symbol] = []
+        self.result_assigned = False
+
+    # ------------------------------------------------------------ names
+    def lookup(self, name: str) -> Symbol | None:
+        upper = name.upper()
+        if self.pou is not None and upper in self.pou.symbols:
+            return self.pou.symbols[upper]
+        return self.result.globals.get(upper)
+
+    def enum_values(self, name: str) -> list[EnumValue]:
+        upper = name.upper()
+        found = []
+        for typedef in self.result.types.values():
+            for enum in _enums_in(typedef.type):
+                if upper in enum.values:
+                    written, value = enum.values[upper]
+                    found.append(EnumValue(enum, written, value))
+        return found
+
+    def _visible_names(self) -> list[str]:
+        names = [s.name for s in self.result.globals.values()]
+        if self.pou is not None:
+            names += [s.name for s in self.pou.symbols.values()]
+        return names
+
+    # ------------------------------------------------------------ expressions
+    def expr(self, node: ast.Expr, expected: Type | None = None) -> Type:
+        ty = self._expr(node, expected)
+        node.ty = ty
+        return ty
+
+    def _expr(self, node: ast.Expr, expected: Type | None) -> Type:
+        if isinstance(node, ast.IntLit):
+            return t.UntypedInt(node.value)
+        if isinstance(node, ast.RealLit):
+            return t.UntypedReal()
+        if isinstance(node, ast.BoolLit):
+            return t.BOOL
+        if isinstance(node, ast.StringLit):
+            return t.StringType(node.wide)
+        if isinstance(node, ast.TimeLit):
+            return t.Elementary(node.kind)
+        if isinstance(node, ast.TypedLit):
+            return self._typed_literal(node)
+        if isinstance(node, ast.Name):
+            return self._name(node, expected)
+        if isinstance(node, ast.DirectAddr):
+            return self._direct(node)
+        if isinstance(node, ast.Member):
+            return self._member(node)
+        if isinstance(node, ast.Index):
+            return self._index(node)
+        if isinstance(node, ast.Deref):
+            base = self.expr(node.base)
+            if isinstance(base, t.PointerType):
+                return base.target
+            if base is not ERROR:
+                self.report("ST-TYPE-MISMATCH", f"'^' needs a pointer, not {base}", node)
+            return ERROR
+        if isinstance(node, ast.Call):
+            return self.call(node, statement=False)
+        if isinstance(node, ast.Unary):
+            return self._unary(node)
+        return self._binary(node)
+
+    def _typed_literal(self, node: ast.TypedLit) -> Type:
+        target = t.elementary(node.type_name)
+        if target is None:
+            typedef = self.result.types.get(node.type_name.upper())
+            if typedef is not None and isinstance(typedef.type, t.EnumType) and isinstance(node.value, ast.Name):
+                if node.value.name.upper() in typedef.type.values:
+                    return typedef.type
+                self.report("ST-UNKNOWN-VAR", f"'{node.value.name}' is not a value of {typedef.name}"
+                            + did_you_mean(node.value.name, [v[0] for v in typedef.type.values.values()]), node)
+                return ERROR
+            self.report("ST-UNKNOWN-TYPE", f"unknown type '{node.type_name}' in typed literal", node)
+            return ERROR
+        value = self.expr(node.value)
+        if assignable_or_report(self, target, value, node, f"{node.type_name}# literal") and isinstance(node.value, ast.IntLit):
+            if not t.literal_fits(target, node.value.value):
+                self.report("ST-RANGE", f"{node.value.value} is out of range for {target}", node)
+        return target
+
+    def _name(self, node: ast.Name, expected: Type | None) -> Type:
+        symbol = self.lookup(node.name)
+        if symbol is not None:
+            node.ref = symbol
+            return symbol.type
+        if self.pou is not None and self.pou.kind == "FUNCTION" and node.name.upper() == self.pou.name.upper():
+            node.ref = self.pou
+            return self.pou.return_type or ERROR
+        values = self.enum_values(node.name)
+        if isinstance(expected, t.EnumType):
+            values = [v for v in values if v.type is expected] or values
+        if len(values) == 1:
+            node.ref = values[0]
+            return values[0].type
+        if len(values) > 1:
+            names = ", ".join(f"{v.type.name}#{v.name}" for v in values)
+            self.report("ST-AMBIGUOUS", f"'{node.name}' is a value of several enumerations: write {names}", node)
+            return ERROR
+        self.report("ST-UNKNOWN-VAR", f"unknown variable '{node.name}'" + did_you_mean(node.name, self._visible_names()),
+                    node)
+        return ERROR
+
+    def _direct(self, node: ast.DirectAddr) -> Type:
+        for scope in (self.pou.symbols.values() if self.pou else (), self.result.globals.values()):
+            for symbol in scope:
+                if symbol.address and symbol.address.upper() == node.address:
+                    node.ref = symbol
+                    return symbol.type
+        size = node.address[2] if len(node.address) > 2 and node.address[2].isalpha() else "X"
+        return t.Elementary(_DIRECT_DEFAULTS.get(size, "BOOL"))
+
+    def _member(self, node: ast.Member) -> Type:
+        base = self.expr(node.base)
+        upper = node.name.upper()
+        if base is ERROR:
+            return ERROR
+        if isinstance(base, t.StructType):
+            if upper in base.fields:
+                return base.fields[upper][1]
+            self.report("ST-UNKNOWN-MEMBER", f"{base.name} has no field '{node.name}'"
+                        + did_you_mean(node.name, [f[0] for f in base.fields.values()]), node)
+            return ERROR
+        if isinstance(base, t.FbType):
+            return self._fb_member(node, base)
+        if node.name.isdigit() and t.category(base) in ("bits", "int"):
+            return t.BOOL  # bit access x.3
+        self.report("ST-UNKNOWN-MEMBER", f"'{node.name}' cannot be selected from a {base}", node)
+        return ERROR
+
+    def _fb_member(self, node: ast.Member, base: t.FbType) -> Type:
+        upper = node.name.upper()
+        if base.std is not None:
+            for pin in (*base.std.inputs, *base.std.outputs):
+                if pin.name == upper:
+                    node.ref = pin
+                    return t.elementary(pin.type) or ERROR
+            if upper in ("EN", "ENO"):
+                return t.BOOL
+            pins = [p.name for p in (*base.std.inputs, *base.std.outputs)]
+            self.report("ST-UNKNOWN-MEMBER", f"{base.name} has no pin '{node.name}'" + did_you_mean(node.name, pins), node)
+            return ERROR
+        symbol = base.pou.symbols.get(upper)
+        if symbol is None:
+            pins = [s.name for s in base.pou.parameters()]
+            self.report("ST-UNKNOWN-MEMBER", f"{base.name} has no input or output '{node.name}'"
+                        + did_you_mean(node.name, pins), node)
+            return ERROR
+        node.ref = symbol
+        if symbol.var_class not in ("VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT"):
+            self.report("ST-NOT-ACCESSIBLE", f"'{node.name}' is internal to {base.name}: only its inputs and outputs "
+                        "can be used from outside", node)
+        return symbol.type
+
+    def _index(self, node: ast.Index) -> Type:
+        base = self.expr(node.base)
+        for index in node.indices:
+            index_type = self.expr(index)
+            if index_type is not ERROR and not t.in_family(index_type, "ANY_INT"):
+                self.report("ST-TYPE-MISMATCH", f"an array index must be an integer (ANY_INT), not {index_type}", index)
+        if isinstance(base, t.ArrayType):
+            if len(node.indices) != len(base.dims):
+                self.report("ST-INDEX", f"{base} needs {len(base.dims)} index(es), got {len(node.indices)}", node)
+            return base.element
+        if isinstance(base, t.StringType):
+            return t.StringType(base.wide)
+        if isinstance(base, t.PointerType):
+            return base.target
+        if base is not ERROR:
+            self.report("ST-INDEX", f"'[...]' needs an array, not {base}", node)
+        return ERROR
+
+    def _unary(self, node: ast.Unary) -> Type:
+        operand = self.expr(node.operand)
+        if operand is ERROR:
+            return ERROR
+        if node.op == "NOT":
+            if t.in_family(operand, "ANY_BIT"):
+                return t.BOOL if isinstance(operand, t.UntypedInt) and operand.value in (0, 1) else operand
+            self.report("ST-TYPE-MISMATCH", f"NOT needs BOOL or a bit string (ANY_BIT), not {operand}", node)
+            return ERROR
+        if isinstance(operand, t.UntypedInt):
+            return t.UntypedInt(-operand.value if operand.value is not None else None)
+        if t.in_family(operand, "ANY_NUM") or t.category(operand) == "time":
+            return operand
+        self.report("ST-TYPE-MISMATCH", f"unary '-' needs a number or TIME, not {operand}", node)
+        return ERROR
+
+    def _binary(self, node: ast.Binary) -> Type:
+        left = self.expr(node.left)
+        right = self.expr(node.right)
+        if left is ERROR or right is ERROR:
+            return ERROR
+        op = node.op
+        if op == "**":
+            return self._power(node, left, right)
+        time_rule = _TIME_RULES.get((op, t.category(left), t.category(right)))
+        if time_rule:
+            return t.Elementary(time_rule)
+        if op in ("*", "/") and t.category(left) == "time" and t.in_family(right, "ANY_NUM"):
+            return t.TIME  # ST-21: TIME * ANY_NUM, TIME / ANY_NUM
+        if op == "*" and t.category(right) == "time" and t.in_family(left, "ANY_NUM"):
+            return t.TIME
+        if op in ("+", "-") and isinstance(left, t.PointerType) and t.in_family(right, "ANY_INT"):
+            return left  # pointer arithmetic in bytes (TYP-43)
+        if op == "+" and isinstance(left, t.StringType) and isinstance(right, t.StringType):
+            return left  # FUN-82 (Mosaic): '+' concatenates
+        combined, verdict = t.common(left, right)
+        if verdict == "error":
+            self.report("ST-TYPE-MISMATCH", f"'{op}' needs operands of the same type: {left} and {right}; "
+                        f"convert one of them (e.g. {_hint(left, right)})", node)
+            return ERROR
+        if verdict == "widen":
+            self.report("ST-IMPLICIT-CONV", f"{left} and {right} are mixed in '{op}': the narrower one is converted "
+                        "implicitly", node, severity="warning")
+        return self._operator_result(node, combined)
+
+    def _operator_result(self, node: ast.Binary, combined: Type) -> Type:
+        op = node.op
+        if op in _COMPARISON:
+            if isinstance(combined, t.EnumType) and op not in ("=", "<>"):
+                self.report("ST-TYPE-MISMATCH", f"enumeration values can only be compared with = and <>", node)
+            elif isinstance(combined, (t.ArrayType, t.StructType, t.FbType)):
+                self.report("ST-TYPE-MISMATCH", f"cannot compare values of type {combined}", node)
+            return t.BOOL
+        if op in _LOGIC:
+            if t.in_family(combined, "ANY_BIT"):
+                return combined
+            self.report("ST-TYPE-MISMATCH", f"{op} needs BOOL or bit strings (ANY_BIT), not {combined}", node)
+            return ERROR
+        if op == "MOD":
+            if t.in_family(combined, "ANY_INT"):
+                return combined
+            self.report("ST-TYPE-MISMATCH", f"MOD needs integers (ANY_INT), not {combined}", node)
+            return ERROR
+        if t.in_family(combined, "ANY_NUM"):
+            return combined
+        self.report("ST-TYPE-MISMATCH", f"'{op}' needs numbers (ANY_NUM), not {combined}", node)
+        return ERROR
+
+    def _power(self, node: ast.Binary, left: Type, right: Type) -> Type:
+        if isinstance(left, t.UntypedInt):
+            left = t.UntypedReal()  # FUN-33: an untyped integer base is promoted
+        if not t.in_family(left, "ANY_REAL"):
+            self.report("ST-TYPE-MISMATCH", f"the base of '**' must be REAL or LREAL, not {left}; convert it "
+                        f"(e.g. {left}_TO_REAL)", node.left)
+            return ERROR
+        if not t.in_family(right, "ANY_NUM"):
+            self.report("ST-TYPE-MISMATCH", f"the exponent of '**' must be a number, not {right}", node.right)
+        return left
+
+    # ------------------------------------------------------------ calls
+    def call(self, node: ast.Call, statement: bool) -> Type:
+        return check_call(self, node, statement)
+
+    # ------------------------------------------------------------ statements
+    def statements(self, body: list[ast.Stmt]) -> None:
+        for stmt in body:
+            self.statement(stmt)
+
+    def statement(self, stmt: ast.Stmt) -> None:
+        if isinstance(stmt, ast.Assign):
+            self.assign(stmt)
+        elif isinstance(stmt, ast.CallStmt):
+            if isinstance(stmt.call, ast.Call):
+                self.call(stmt.call, statement=True)
+            else:
+                self.expr(stmt.call)
+                self.report("ST-NO-EFFECT", "this statement does nothing: expected an assignment ':=' or a call '(...)'",
+                            stmt)
+        elif isinstance(stmt, ast.If):
+            for cond, body in stmt.branches:
+                self.condition(cond, "IF")
+                self.statements(body)
+            self.statements(stmt.else_body or [])
+        elif isinstance(stmt, ast.Case):
+            check_case(self, stmt)
+        elif isinstance(stmt, ast.For):
+            self.for_loop(stmt)
+        elif isinstance(stmt, ast.While):
+            self.condition(stmt.cond, "WHILE")
+            self.loop(stmt.body)
+        elif isinstance(stmt, ast.Repeat):
+            self.loop(stmt.body)
+            self.condition(stmt.until, "UNTIL")
+        elif isinstance(stmt, ast.Exit) and self.loop_depth == 0:
+            self.report("ST-EXIT-OUTSIDE-LOOP", "EXIT is only allowed inside FOR, WHILE or REPEAT", stmt)
+
+    def loop(self, body: list[ast.Stmt]) -> None:
+        self.loop_depth += 1
+        self.statements(body)
+        self.loop_depth -= 1
+
+    def condition(self, cond: ast.Expr, keyword: str) -> None:
+        ty = self.expr(cond)
+        if ty is not ERROR and not t.same(ty, t.BOOL):
+            self.report("ST-TYPE-MISMATCH", f"the {keyword} condition must be BOOL, not {ty}", cond)
+
+    def assign(self, stmt: ast.Assign) -> None:
+        target = self.target(stmt.target)
+        value = self.expr(stmt.value, target)
+        assignable_or_report(self, target, value, stmt.value, "assign")
+
+    def target(self, node: ast.Expr) -> Type:
+        """Type an assignment target and check it may be written (ST-20, POU-23, VAR-21, ST-73)."""
+        if not isinstance(node, (ast.Name, ast.Member, ast.Index, ast.Deref, ast.DirectAddr)):
+            self.expr(node)
+            self.report("ST-NOT-LVALUE", "only a variable, array element, field or pointer target can be assigned",
+                        node)
+            return ERROR
+        ty = self.expr(node)
+        root = root_name(node)
+        if isinstance(node, ast.Name) and node.ref is self.pou and self.pou is not None:
+            self.result_assigned = True
+        symbol = root.ref if root is not None else None
+        if isinstance(symbol, Symbol):
+            if symbol.constant:
+                self.report("ST-CONST-WRITE", f"'{symbol.name}' is a CONSTANT and cannot be assigned", node)
+            if symbol in self.loop_vars and node is root:
+                self.report("ST-LOOP-VAR", f"'{symbol.name}' is the FOR loop variable: it must not be changed inside "
+                            "the loop", node)
+            if symbol.var_class == "VAR_INPUT" and node is root and self.pou is not None:
+                self.report("ST-INPUT-WRITE", f"'{symbol.name}' is an input of {self.pou.name}: assigning it "
+                            "overwrites the caller's value", node, severity="warning")
+        elif root is not None and isinstance(root.ref, EnumValue):
+            self.report("ST-NOT-LVALUE", f"'{root.name}' is an enumeration value and cannot be assigned", node)
+        if isinstance(node, ast.Member) and isinstance(node.base.ty, t.FbType) and _is_output(node):
+            self.report("ST-READONLY", f"'{node.name}' is an output of {node.base.ty.name}: it can be read but not "
+                        "assigned from outside", node)
+        return ty
+
+    def for_loop(self, stmt: ast.For) -> None:
+        var_type = self.expr(stmt.var)
+        if var_type is not ERROR and not t.in_family(var_type, "ANY_INT"):
+            self.report("ST-LOOP-VAR", f"the FOR variable must be an integer (ANY_INT), not {var_type}", stmt.var)
+        for part in (stmt.start, stmt.end, stmt.step):
+            if part is not None:
+                assignable_or_report(self, var_type, self.expr(part, var_type), part, "FOR bound or step")
+        if stmt.step is not None and constant_value(self, stmt.step) == 0:
+            self.report("ST-LOOP-VAR", "the FOR step is 0: the loop would never end", stmt.step)
+        symbol = stmt.var.ref if isinstance(stmt.var.ref, Symbol) else None
+        if symbol is not None:
+            self.loop_vars.append(symbol)
+        self.loop(stmt.body)
+        if symbol is not None:
+            self.loop_vars.pop()
+
+
+def _is_output(node: ast.Member) -> bool:
+    ref = node.ref
+    if isinstance(ref, Symbol):
+        return ref.var_class == "VAR_OUTPUT"
+    return isinstance(ref, stdlib.Pin) and any(p is ref for p in node.base.ty.std.outputs)
+
+
+def _enums_in(ty: Type):
+    if isinstance(ty, t.EnumType):
+        yield ty
+    elif isinstance(ty, t.StructType):
+        for _, field_type in ty.fields.values():
+            yield from _enums_in(field_type)
+
+
+def _hint(left: Type, right: Type) -> str:
+    return f"{right.name}_TO_{left.name}" if isinstance(left, t.Elementary) and isinstance(right, t.Elementary) \
+        else "a *_TO_* conversion"

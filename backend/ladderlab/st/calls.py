@@ -1,0 +1,272 @@
+"""Checking calls: user functions, programs, FB instances, standard functions and ADR/REF/SIZEOF.
+
+Spec: POU-13..15 (formal / positional calls), POU-23..25 and ST-25 (FB calls,
+``=>`` outputs), VAR-51 / ST-55 (VAR_IN_OUT needs a variable), FUN-02 (generic
+inputs share one type), POU-32 (only programs call programs), ST-57.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+from . import ast, stdlib
+from . import types as t
+from .printer import print_expression
+from .rules import assignable_or_report, root_name
+from .symbols import PouInfo, Symbol, did_you_mean
+from .types import ERROR, VOID, Type
+
+_SYSTEM = {"ADR", "REF", "SIZEOF"}
+_WRITABLE = (ast.Name, ast.Member, ast.Index, ast.Deref, ast.DirectAddr)
+
+
+@dataclass
+class Param:
+    name: str
+    type: Type
+    in_out: bool = False
+
+
+def check_call(checker: Any, node: ast.Call, statement: bool) -> Type:
+    callee = node.callee
+    if not isinstance(callee, ast.Name):
+        return _instance_call(checker, node, checker.expr(callee), statement)
+    upper = callee.name.upper()
+    symbol = checker.lookup(callee.name)
+    if symbol is not None:
+        callee.ref, callee.ty = symbol, symbol.type
+        return _instance_call(checker, node, symbol.type, statement)
+    pou = checker.result.pous.get(upper)
+    if pou is not None:
+        return _pou_call(checker, node, pou, statement)
+    if upper in _SYSTEM:
+        return _system_call(checker, node, upper)
+    function = stdlib.function(upper)
+    if function is not None:
+        node.ref = function
+        return _std_call(checker, node, function)
+    if stdlib.function_block(upper) is not None:
+        _args_untyped(checker, node)
+        checker.report("ST-NOT-CALLABLE", f"{callee.name} is a function block type: declare an instance "
+                       f"(e.g. t1 : {upper};) and call the instance", callee)
+        return ERROR
+    _args_untyped(checker, node)
+    known = [*checker.result.pous, *stdlib.FUNCTIONS]
+    checker.report("ST-UNKNOWN-POU", f"unknown function '{callee.name}'" + did_you_mean(callee.name, known), callee)
+    return ERROR
+
+
+def _args_untyped(checker: Any, node: ast.Call) -> None:
+    """Still check the argument expressions (their own errors) when the callee is unknown."""
+    for arg in node.args:
+        checker.expr(arg.value)
+
+
+def _pou_call(checker: Any, node: ast.Call, pou: PouInfo, statement: bool) -> Type:
+    node.ref = pou
+    if checker.pou is not None:
+        checker.pou.calls.add(pou.name.upper())
+    if pou.kind == "FUNCTION_BLOCK":
+        _args_untyped(checker, node)
+        checker.report("ST-NOT-CALLABLE", f"{pou.name} is a function block type: declare an instance "
+                       f"(e.g. inst : {pou.name};) and call the instance", node.callee)
+        return ERROR
+    if pou.kind == "PROGRAM":
+        if checker.pou is not None and checker.pou.kind != "PROGRAM":
+            checker.report("ST-NOT-CALLABLE", f"a {checker.pou.kind.lower().replace('_', ' ')} cannot call the "
+                           f"program {pou.name}", node.callee)
+        if not statement:
+            checker.report("ST-NOT-CALLABLE", f"the program {pou.name} has no value: call it as a statement", node)
+    inputs = [Param(s.name, s.type, s.var_class == "VAR_IN_OUT") for s in pou.parameters("VAR_INPUT", "VAR_IN_OUT")]
+    outputs = [Param(s.name, s.type) for s in pou.parameters("VAR_OUTPUT")]
+    check_arguments(checker, node, pou.name, inputs, outputs, function=pou.kind == "FUNCTION")
+    return (pou.return_type or VOID) if pou.kind == "FUNCTION" else VOID
+
+
+def _instance_call(checker: Any, node: ast.Call, ty: Type, statement: bool) -> Type:
+    if ty is ERROR:
+        _args_untyped(checker, node)
+        return ERROR
+    if not isinstance(ty, t.FbType):
+        _args_untyped(checker, node)
+        checker.report("ST-NOT-CALLABLE", f"'{print_expression(node.callee)}' is a {ty}, not a function or function block "
+                       "instance", node.callee)
+        return ERROR
+    node.ref = root_name(node.callee).ref if root_name(node.callee) is not None else None
+    if not statement:
+        checker.report("ST-NOT-CALLABLE", f"the function block instance '{print_expression(node.callee)}' cannot be called "
+                       "inside an expression: call it as a statement and read its outputs (e.g. inst.Q)", node)
+    if ty.std is not None:
+        inputs = [Param(p.name, t.elementary(p.type) or ERROR) for p in ty.std.inputs]
+        outputs = [Param(p.name, t.elementary(p.type) or ERROR) for p in ty.std.outputs]
+    else:
+        inputs = [Param(s.name, s.type, s.var_class == "VAR_IN_OUT") for s in ty.pou.parameters("VAR_INPUT", "VAR_IN_OUT")]
+        outputs = [Param(s.name, s.type) for s in ty.pou.parameters("VAR_OUTPUT")]
+    check_arguments(checker, node, ty.name, inputs, outputs, function=False)
+    return VOID
+
+
+def check_arguments(checker: Any, node: ast.Call, callee: str, inputs: list[Param], outputs: list[Param],
+                    *, function: bool) -> None:
+    """Formal or positional arguments against the callee's parameters (POU-13..15, ST-25, ST-55)."""
+    formal = [a for a in node.args if a.name is not None]
+    positional = [a for a in node.args if a.name is None]
+    if formal and positional:
+        checker.report("ST-CALL-ARGS", f"do not mix formal (name := value) and positional arguments in a call to "
+                       f"{callee}", node)
+    if positional and (len(positional) > len(inputs) or function and len(positional) < len(inputs)):
+        checker.report("ST-CALL-ARGS", f"{callee} takes {len(inputs)} input(s), got {len(positional)}", node)
+    for arg, param in zip(positional, inputs):
+        _input(checker, arg, param, callee)
+    for arg in positional[len(inputs):]:
+        checker.expr(arg.value)
+    by_name_in = {p.name.upper(): p for p in inputs} | {"EN": Param("EN", t.BOOL)}
+    by_name_out = {p.name.upper(): p for p in outputs} | {"ENO": Param("ENO", t.BOOL)}
+    seen: set[str] = set()
+    for arg in formal:
+        upper = arg.name.upper()
+        if upper in seen:
+            checker.report("ST-CALL-ARGS", f"parameter '{arg.name}' is given twice", arg)
+        seen.add(upper)
+        if arg.output and upper in by_name_out:
+            _output(checker, arg, by_name_out[upper])
+        elif not arg.output and upper in by_name_in:
+            _input(checker, arg, by_name_in[upper], callee)
+        else:
+            checker.expr(arg.value)
+            _misplaced(checker, arg, callee, by_name_in, by_name_out)
+    if function and not positional:
+        missing = [p.name for p in inputs if p.in_out and p.name.upper() not in seen]
+        if missing:
+            checker.report("ST-CALL-ARGS", f"missing in-out parameter(s) {', '.join(missing)} in the call to {callee}",
+                           node)
+
+
+def _misplaced(checker: Any, arg: ast.Arg, callee: str, inputs: dict, outputs: dict) -> None:
+    upper = arg.name.upper()
+    if arg.output and upper in inputs:
+        checker.report("ST-CALL-ARGS", f"'{arg.name}' is an input of {callee}: write {arg.name} := value", arg)
+    elif not arg.output and upper in outputs:
+        checker.report("ST-CALL-ARGS", f"'{arg.name}' is an output of {callee}: write {arg.name} => variable", arg)
+    else:
+        names = [p.name for p in (*inputs.values(), *outputs.values())]
+        checker.report("ST-CALL-ARGS", f"{callee} has no parameter '{arg.name}'" + did_you_mean(arg.name, names), arg)
+
+
+def _input(checker: Any, arg: ast.Arg, param: Param, callee: str) -> None:
+    if param.in_out:
+        _in_out(checker, arg, param, callee)
+        return
+    value = checker.expr(arg.value, param.type)
+    assignable_or_report(checker, param.type, value, arg.value, f"input {param.name} of {callee}")
+
+
+def _in_out(checker: Any, arg: ast.Arg, param: Param, callee: str) -> None:
+    value = checker.expr(arg.value, param.type)
+    root = root_name(arg.value)
+    if not isinstance(arg.value, _WRITABLE):
+        checker.report("ST-NOT-LVALUE", f"in-out parameter {param.name} of {callee} needs a variable, not an "
+                       "expression or literal", arg.value)
+    elif root is not None and isinstance(root.ref, Symbol) and root.ref.constant:
+        checker.report("ST-CONST-WRITE", f"the CONSTANT '{root.ref.name}' cannot be passed as in-out parameter "
+                       f"{param.name}", arg.value)
+    elif not t.same(param.type, value) and not _open_array(param.type, value):
+        checker.report("ST-TYPE-MISMATCH", f"in-out parameter {param.name} of {callee} needs a {param.type}, "
+                       f"got {value}", arg.value)
+
+
+def _open_array(param: Type, value: Type) -> bool:
+    """``ARRAY [*] OF T`` in-out parameters take any array of T."""
+    return isinstance(param, t.ArrayType) and None in param.dims and isinstance(value, t.ArrayType) \
+        and t.same(param.element, value.element)
+
+
+def _output(checker: Any, arg: ast.Arg, param: Param) -> None:
+    target = checker.target(arg.value)
+    if t.assignable(target, param.type) == "error":
+        checker.report("ST-TYPE-MISMATCH", f"output {param.name} is {param.type} and cannot be stored in {target}"
+                       + t.conversion_hint(target, param.type), arg.value)
+
+
+def _std_call(checker: Any, node: ast.Call, function: stdlib.StdFunction) -> Type:
+    formal = [a for a in node.args if a.name is not None and a.name.upper() not in ("EN", "ENO")]
+    positional = [a for a in node.args if a.name is None]
+    if formal and positional:
+        checker.report("ST-CALL-ARGS", f"do not mix formal and positional arguments in a call to {function.name}", node)
+    minimum = len(function.inputs)
+    if positional and (len(positional) < minimum or not function.extensible and len(positional) > minimum):
+        expected = f"at least {minimum}" if function.extensible else str(minimum)
+        checker.report("ST-CALL-ARGS", f"{function.name} takes {expected} input(s), got {len(positional)}", node)
+    bound: list[tuple[ast.Arg, stdlib.Pin]] = []
+    for position, arg in enumerate(positional):
+        name = function.input_name(position)
+        if name is not None:
+            bound.append((arg, function.pin(name)))
+        else:
+            checker.expr(arg.value)
+    for arg in formal:
+        pin = function.pin(arg.name)
+        if pin is None or arg.output:
+            checker.expr(arg.value)
+            names = [p.name for p in function.inputs]
+            checker.report("ST-CALL-ARGS", f"{function.name} has no input '{arg.name}'" + did_you_mean(arg.name, names),
+                           arg)
+        else:
+            bound.append((arg, pin))
+    generic = _generic_type(checker, node, function, bound)
+    if generic is ERROR:
+        return ERROR
+    return generic if function.result == stdlib.T else (t.elementary(function.result) or ERROR)
+
+
+def _generic_type(checker: Any, node: ast.Call, function: stdlib.StdFunction, bound) -> Type:
+    """Type every argument; the generic inputs must share one type T within the pin's family (FUN-02)."""
+    shared: Type | None = None
+    for arg, pin in bound:
+        value = checker.expr(arg.value)
+        if value is ERROR:
+            return ERROR
+        if pin.generic:
+            if shared is None:
+                shared = value
+                continue
+            combined, verdict = t.common(shared, value)
+            if verdict == "error":
+                checker.report("ST-TYPE-MISMATCH", f"{function.name} needs inputs of one type: got {shared} and {value}; "
+                               "convert one of them with a *_TO_* function", arg.value)
+                return ERROR
+            if verdict == "widen":
+                checker.report("ST-IMPLICIT-CONV", f"{function.name} mixes {shared} and {value}: the narrower one is "
+                               "converted implicitly", arg.value, severity="warning")
+            shared = combined
+        elif not t.in_family(value, pin.type) and t.assignable(t.elementary(pin.type) or t.ERROR, value) == "error":
+            checker.report("ST-TYPE-MISMATCH", f"input {pin.name} of {function.name} must be {pin.type}, not {value}",
+                           arg.value)
+    generic_pins = [p for p in function.inputs if p.generic]
+    if shared is None:
+        return ERROR if generic_pins and function.result == stdlib.T else t.VOID
+    shared = t.concrete(shared) if function.result == stdlib.T else shared
+    family = generic_pins[0].type
+    if not t.in_family(shared, family):
+        checker.report("ST-TYPE-MISMATCH", f"{function.name} works on {family}, not on {shared}", node)
+        return ERROR
+    return shared
+
+
+def _system_call(checker: Any, node: ast.Call, name: str) -> Type:
+    """ADR / REF (pointer to a variable, TYP-42) and SIZEOF (size in bytes, TYP-45)."""
+    if len(node.args) != 1 or node.args[0].name is not None:
+        _args_untyped(checker, node)
+        checker.report("ST-CALL-ARGS", f"{name} takes exactly one argument", node)
+        return ERROR
+    value = node.args[0].value
+    if name == "SIZEOF":
+        if isinstance(value, ast.Name) and (t.elementary(value.name) or value.name.upper() in checker.result.types):
+            return t.UntypedInt()
+        checker.expr(value)
+        return t.UntypedInt()
+    ty = checker.expr(value)
+    if not isinstance(value, _WRITABLE):
+        checker.report("ST-NOT-LVALUE", f"{name} needs a variable", value)
+    return t.PointerType(ty)

@@ -1,0 +1,432 @@
+"""Semantic checks of a whole project: ``check_project`` and ``check_operand``.
+
+Order: parse every text, register the POUs, resolve user TYPEs, the globals and
+each POU's declarations (LD/FBD POUs too, so ST can call them), then check the
+ST bodies and the call graph. The result is the resolved program the IR lowering
+consumes (``CheckResult``); problems are ``Diagnostic``s, never exceptions.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from ..model.diagnostics import Diagnostic
+from ..model.project import Project
+from . import ast, stdlib
+from . import types as t
+from .body import BodyChecker
+from .parser import parse_declarations, parse_expression, parse_source, parse_statements
+from .rules import assignable_or_report, constant_value
+from .symbols import CheckResult, PouInfo, Symbol, TypeDef, did_you_mean
+from .types import ERROR, Type
+
+_KIND = {"program": "PROGRAM", "function_block": "FUNCTION_BLOCK", "function": "FUNCTION"}
+# Table 3.11 (VAR-11): which variable classes each POU kind may declare.
+_ALLOWED = {
+    "PROGRAM": {"VAR", "VAR_TEMP", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_EXTERNAL"},
+    "FUNCTION_BLOCK": {"VAR", "VAR_TEMP", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_EXTERNAL"},
+    "FUNCTION": {"VAR", "VAR_TEMP", "VAR_INPUT", "VAR_IN_OUT", "VAR_EXTERNAL"},
+}
+_MAX_ARRAY_DIMENSIONS = 4
+
+
+class Reporter:
+    """Creates located diagnostics for one text (``file``) of one POU."""
+
+    def __init__(self, sink: list[Diagnostic], file: str | None, pou: str | None):
+        self.sink, self.file, self.pou = sink, file, pou
+
+    def __call__(self, code: str, message: str, node: Any, severity: str = "error") -> None:
+        span = getattr(node, "span", None) or ast.NO_SPAN
+        self.sink.append(Diagnostic(
+            severity=severity, code=code, message=message, file=self.file, pou=self.pou,
+            line=span.line or None, column=span.column or None,
+            end_line=span.end_line or None, end_column=span.end_column or None))
+
+
+class ProjectChecker:
+    def __init__(self, project: Project):
+        self.project = project
+        self.result = CheckResult()
+        self.type_decls: dict[str, ast.TypeDecl] = {}
+        self._resolving: set[str] = set()
+
+    # ------------------------------------------------------------ driver
+    def run(self) -> CheckResult:
+        types = self._parse(_parse_types, self.project.types, "types", None)
+        globals_ = self._parse(parse_declarations, self.project.globals, "globals", None) or []
+        declarations, bodies = {}, {}
+        for pou in self.project.pous:
+            declarations[pou.name] = self._parse(parse_declarations, pou.declarations, f"{pou.name}/declarations",
+                                                 pou.name) or []
+            if pou.language == "st":
+                bodies[pou.name] = self._parse(parse_statements, pou.body, f"{pou.name}/body", pou.name)
+        self._register_pous()
+        self._register_types(types or [])
+        self._declare_globals(globals_)
+        for pou in self.project.pous:
+            self._declare_pou(pou, declarations[pou.name])
+        for pou in self.project.pous:
+            info = self.result.pous.get(pou.name.upper())
+            if info is not None and info.language == "st" and bodies.get(pou.name) is not None:
+                self._check_body(info, bodies[pou.name])
+        self._check_recursion()
+        return self.result
+
+    def _parse(self, parse, text: str, file: str, pou: str | None):
+        result = parse(text, file=file, pou=pou)
+        self.result.diagnostics += result.diagnostics
+        return result.ast
+
+    def _reporter(self, file: str | None, pou: str | None) -> Reporter:
+        return Reporter(self.result.diagnostics, file, pou)
+
+    # ------------------------------------------------------------ POUs and types
+    def _register_pous(self) -> None:
+        for pou in self.project.pous:
+            upper = pou.name.upper()
+            where = Reporter(self.result.diagnostics, f"{pou.name}/declarations", pou.name)
+            if upper in self.result.pous:
+                where("ST-DUPLICATE", f"there is already a POU called '{pou.name}'", None)
+                continue
+            if stdlib.function(upper) or stdlib.function_block(upper):
+                where("ST-DUPLICATE", f"'{pou.name}' is a standard function or function block name and cannot be "
+                      "redefined", None)
+            self.result.pous[upper] = PouInfo(pou.name, _KIND[pou.kind], pou.language, None)
+
+    def _register_types(self, blocks: list[ast.TypeBlock]) -> None:
+        report = self._reporter("types", None)
+        for block in blocks:
+            for decl in block.decls:
+                upper = decl.name.upper()
+                if upper in self.type_decls or t.elementary(upper) or upper in self.result.pous \
+                        or stdlib.function_block(upper):
+                    report("ST-DUPLICATE", f"the type name '{decl.name}' is already in use", decl)
+                    continue
+                self.type_decls[upper] = decl
+        for upper in self.type_decls:
+            self._typedef(upper)
+        checker = BodyChecker(self.result, None, report)
+        for typedef in self.result.types.values():
+            if typedef.init is not None:
+                check_init(checker, typedef.type, typedef.init)
+
+    def _typedef(self, upper: str) -> TypeDef | None:
+        if upper in self.result.types:
+            return self.result.types[upper]
+        decl = self.type_decls.get(upper)
+        if decl is None:
+            return None
+        report = self._reporter("types", None)
+        if upper in self._resolving:
+            report("ST-RECURSION", f"the type '{decl.name}' is defined in terms of itself", decl)
+            return None
+        self._resolving.add(upper)
+        resolved = self.resolve(decl.type, BodyChecker(self.result, None, report), decl.name)
+        self._resolving.discard(upper)
+        init = decl.init
+        if init is None and isinstance(decl.type, ast.NamedType):  # THomeTemp : TRoomTemp inherits 20.0 (TYP-11)
+            parent = self._typedef(decl.type.name.upper())
+            init = parent.init if parent is not None else None
+        typedef = TypeDef(decl.name, resolved, init, decl)
+        self.result.types[upper] = typedef
+        return typedef
+
+    def resolve(self, spec: ast.TypeSpec, checker: BodyChecker, name: str = "") -> Type:
+        """Type specification -> resolved type, reporting unknown names and bad sizes."""
+        report = checker.report
+        if isinstance(spec, ast.NamedType):
+            return self._named(spec, report)
+        if isinstance(spec, ast.SizedType):
+            base = t.elementary(spec.name)
+            length = constant_value(checker, spec.size)
+            if not isinstance(base, t.StringType):
+                report("ST-UNKNOWN-TYPE", f"only STRING and WSTRING take a length, not '{spec.name}'", spec)
+                return ERROR
+            if not isinstance(length, int) or length < 1:
+                report("ST-CONST-EXPR", "a string length must be a positive constant", spec.size)
+                return base
+            return t.StringType(base.wide, length)
+        if isinstance(spec, ast.SubrangeType):
+            base = t.elementary(spec.base)
+            if base is None or not t.in_family(base, "ANY_INT"):
+                report("ST-UNKNOWN-TYPE", f"a subrange needs an integer base type, not '{spec.base}'", spec)
+                return ERROR
+            return base
+        if isinstance(spec, ast.ArrayType):
+            return self._array(spec, checker)
+        if isinstance(spec, ast.PointerType):
+            return t.PointerType(self.resolve(spec.target, checker))
+        if isinstance(spec, ast.EnumType):
+            return self._enum(spec, checker, name or "enumeration")
+        struct = t.StructType(name or "STRUCT")
+        for member in spec.members:
+            member_type = self.resolve(member.type, checker)
+            for decl_name in member.names:
+                if decl_name.name is None:
+                    continue
+                if decl_name.name.upper() in struct.fields:
+                    report("ST-DUPLICATE", f"field '{decl_name.name}' is declared twice", decl_name)
+                struct.fields[decl_name.name.upper()] = (decl_name.name, member_type)
+        return struct
+
+    def _named(self, spec: ast.NamedType, report) -> Type:
+        upper = spec.name.upper()
+        builtin = t.elementary(upper)
+        if builtin is not None:
+            return builtin
+        typedef = self._typedef(upper)
+        if typedef is not None:
+            return typedef.type
+        if upper in self.result.pous and self.result.pous[upper].kind != "FUNCTION":
+            return t.FbType(self.result.pous[upper].name, pou=self.result.pous[upper])
+        std = stdlib.function_block(upper)
+        if std is not None:
+            return t.FbType(std.name, std=std)
+        if upper.startswith("ANY"):
+            report("ST-UNKNOWN-TYPE", f"'{spec.name}' is a generic type: it is only used by standard functions", spec)
+            return ERROR
+        known = [*self.type_decls, *t.ELEMENTARY, "STRING", *stdlib.FUNCTION_BLOCKS,
+                 *(p.name for p in self.result.pous.values() if p.kind != "FUNCTION")]
+        report("ST-UNKNOWN-TYPE", f"unknown type '{spec.name}'" + did_you_mean(spec.name, known), spec)
+        return ERROR
+
+    def _array(self, spec: ast.ArrayType, checker: BodyChecker) -> Type:
+        dims: list[tuple[int, int] | None] = []
+        for bounds in spec.ranges:
+            if bounds is None:
+                dims.append(None)
+                continue
+            low, high = (constant_value(checker, b) for b in bounds)
+            if not isinstance(low, int) or not isinstance(high, int):
+                checker.report("ST-CONST-EXPR", "array bounds must be integer constants", bounds[0])
+                return ERROR
+            if low > high:
+                checker.report("ST-INDEX", f"array range {low}..{high} is empty", bounds[0])
+            dims.append((low, high))
+        if len(dims) > _MAX_ARRAY_DIMENSIONS:
+            checker.report("ST-INDEX", f"an array has at most {_MAX_ARRAY_DIMENSIONS} dimensions (TYP-21)", spec)
+        return t.ArrayType(tuple(dims), self.resolve(spec.element, checker))
+
+    def _enum(self, spec: ast.EnumType, checker: BodyChecker, name: str) -> Type:
+        enum = t.EnumType(name)
+        following = 0
+        for value in spec.values:
+            if value.value is not None:
+                number = constant_value(checker, value.value)
+                if not isinstance(number, int):
+                    checker.report("ST-CONST-EXPR", "an enumeration value must be an integer constant", value.value)
+                    number = following
+                following = number
+            if value.name.upper() in enum.values:
+                checker.report("ST-DUPLICATE", f"'{value.name}' appears twice in the enumeration", value)
+            enum.values[value.name.upper()] = (value.name, following)
+            following += 1
+        return enum
+
+    # ------------------------------------------------------------ variables
+    def _declare_globals(self, blocks: list[ast.VarBlock]) -> None:
+        report = self._reporter("globals", None)
+        checker = BodyChecker(self.result, None, report)
+        for block in blocks:
+            if block.kind not in ("VAR_GLOBAL", "VAR_EXTERNAL"):
+                report("ST-DECL", f"only VAR_GLOBAL blocks belong in the global variables, not {block.kind}", block)
+            self._declare_block(block, self.result.globals, checker, None)
+        for symbol in self.result.globals.values():
+            if symbol.init is not None:
+                check_init(checker, symbol.type, symbol.init)
+
+    def _declare_pou(self, pou, blocks: list[ast.VarBlock]) -> None:
+        info = self.result.pous.get(pou.name.upper())
+        if info is None or info.name != pou.name:
+            return
+        report = self._reporter(f"{pou.name}/declarations", pou.name)
+        checker = BodyChecker(self.result, info, report)
+        if pou.return_type:
+            parsed = parse_expression(pou.return_type)
+            spec = ast.NamedType(pou.return_type.strip()) if isinstance(parsed.ast, ast.Name) else None
+            info.return_type = self.resolve(spec, checker) if spec else ERROR
+            if spec is None:
+                report("ST-UNKNOWN-TYPE", f"'{pou.return_type}' is not a type name", None)
+        elif info.kind == "FUNCTION":
+            report("ST-DECL", f"the function {pou.name} needs a return type", None)
+        for block in blocks:
+            if block.kind not in _ALLOWED[info.kind]:
+                report("ST-DECL", f"{block.kind} is not allowed in a {info.kind.lower().replace('_', ' ')} (VAR-11)", block)
+            self._declare_block(block, info.symbols, checker, info)
+        for symbol in info.symbols.values():
+            if symbol.init is not None:
+                check_init(checker, symbol.type, symbol.init)
+            if isinstance(symbol.type, t.FbType) and symbol.type.pou is not None:
+                info.calls.add(symbol.type.pou.name.upper())
+
+    def _declare_block(self, block: ast.VarBlock, table: dict[str, Symbol], checker: BodyChecker,
+                       pou: PouInfo | None) -> None:
+        report = checker.report
+        for decl in block.decls:
+            ty = self.resolve(decl.type, checker)
+            self._check_decl(block, decl, ty, pou, report)
+            init = decl.init
+            if init is None and isinstance(decl.type, ast.NamedType):
+                typedef = self.result.types.get(decl.type.name.upper())
+                init = typedef.init if typedef is not None else None
+            for name in decl.names:
+                key = (name.name or name.address or "").upper()
+                if key in table:
+                    report("ST-DUPLICATE", f"'{name.name or name.address}' is declared twice", name)
+                    continue
+                symbol = Symbol(name.name or name.address, block.kind, ty, decl.type, init, name.address,
+                                block.constant, block.retain, decl.edge, decl.comment, name.span,
+                                pou.name if pou else None)
+                table[key] = symbol
+                if block.kind == "VAR_EXTERNAL" and pou is not None:
+                    self._check_external(symbol, report, name)
+
+    def _check_decl(self, block, decl: ast.VarDecl, ty: Type, pou: PouInfo | None, report) -> None:
+        if decl.edge and (block.kind != "VAR_INPUT" or not t.same(ty, t.BOOL) or pou is None or pou.kind == "FUNCTION"):
+            report("ST-DECL", f"{decl.edge} is only allowed on BOOL inputs of function blocks and programs (VAR-22)",
+                   decl)
+        if decl.init is not None and block.kind in ("VAR_EXTERNAL", "VAR_IN_OUT"):
+            report("ST-DECL", f"a {block.kind} variable cannot have an initial value (VAR-83)", decl.init)
+        if isinstance(ty, t.FbType) and pou is not None and pou.kind == "FUNCTION":
+            report("ST-DECL", f"a function has no memory, so it cannot contain the instance of {ty.name} (ST-57)", decl)
+        if block.constant and decl.init is None and block.kind != "VAR_EXTERNAL":
+            report("ST-DECL", "a CONSTANT needs an initial value", decl, severity="warning")
+
+    def _check_external(self, symbol: Symbol, report, node) -> None:
+        target = self.result.globals.get(symbol.name.upper())
+        if target is None:
+            report("ST-EXTERNAL", f"VAR_EXTERNAL '{symbol.name}' does not match any global variable"
+                   + did_you_mean(symbol.name, [g.name for g in self.result.globals.values()]), node)
+        elif not t.same(target.type, symbol.type):
+            report("ST-EXTERNAL", f"VAR_EXTERNAL '{symbol.name}' is {symbol.type} but the global is {target.type}", node)
+        else:
+            symbol.constant = symbol.constant or target.constant
+
+    # ------------------------------------------------------------ bodies and the call graph
+    def _check_body(self, info: PouInfo, body: list[ast.Stmt]) -> None:
+        report = self._reporter(f"{info.name}/body", info.name)
+        checker = BodyChecker(self.result, info, report)
+        checker.statements(body)
+        info.body = body
+        if info.kind == "FUNCTION" and not checker.result_assigned and info.return_type not in (None, ERROR):
+            report("ST-NO-RESULT", f"the function {info.name} never assigns its result: it returns the default "
+                   "value of its type", None, severity="warning")
+
+    def _check_recursion(self) -> None:
+        """POU-02: a POU must not call or instantiate itself, directly or through others."""
+        state: dict[str, int] = {}
+        reported: set[str] = set()
+
+        def visit(name: str, path: list[str]) -> None:
+            state[name] = 1
+            for callee in sorted(self.result.pous[name].calls):
+                if callee not in self.result.pous:
+                    continue
+                if state.get(callee) == 1:
+                    cycle = path[path.index(callee):] + [callee] if callee in path else [name, callee]
+                    if callee not in reported:
+                        reported.add(callee)
+                        names = " -> ".join(self.result.pous[c].name for c in cycle)
+                        pou = self.result.pous[callee]
+                        self._reporter(f"{pou.name}/body", pou.name)(
+                            "ST-RECURSION", f"recursive call {names}: POUs must not call themselves", None)
+                elif callee not in state:
+                    visit(callee, path + [callee])
+            state[name] = 2
+
+        for name in self.result.pous:
+            if name not in state:
+                visit(name, [name])
+
+
+def _parse_types(text: str, *, file: str, pou: None = None):
+    """The model's ``types`` text holds TYPE blocks only."""
+    result = parse_source(text, file=file)
+    if result.ast is not None:
+        stray = [item for item in result.ast.items if not isinstance(item, ast.TypeBlock)]
+        for item in stray:
+            result.diagnostics.append(Diagnostic(code="ST-DECL", message="only TYPE ... END_TYPE blocks belong here",
+                                                 file=file, line=item.span.line, column=item.span.column))
+        result.ast = [item for item in result.ast.items if isinstance(item, ast.TypeBlock)]
+    return result
+
+
+def check_init(checker: BodyChecker, ty: Type, init: ast.Init) -> None:
+    """An initial value against its variable's type (TYP-25, TYP-33)."""
+    if isinstance(init, ast.ArrayInit):
+        if not isinstance(ty, t.ArrayType):
+            if ty is not ERROR:
+                checker.report("ST-TYPE-MISMATCH", f"an array initialiser [...] needs an array, not {ty}", init)
+            return
+        count = 0
+        for item in init.items:
+            value = item.value if isinstance(item, ast.RepeatInit) else item
+            count += item.count if isinstance(item, ast.RepeatInit) else 1
+            if value is not None:
+                check_init(checker, ty.element, value)
+        size = 1
+        for dim in ty.dims:
+            size *= (dim[1] - dim[0] + 1) if dim is not None else 1
+        if None not in ty.dims and count > size:
+            checker.report("ST-INIT", f"{count} initial values for an array of {size} elements", init)
+        return
+    if isinstance(init, ast.StructInit):
+        if not isinstance(ty, (t.StructType, t.FbType)):
+            if ty is not ERROR:
+                checker.report("ST-TYPE-MISMATCH", f"a structure initialiser (...) needs a structure, not {ty}", init)
+            return
+        for name, value in init.fields:
+            field_type = _field_type(ty, name)
+            if field_type is None:
+                checker.report("ST-UNKNOWN-MEMBER", f"{ty.name} has no field '{name}'", init)
+            else:
+                check_init(checker, field_type, value)
+        return
+    value = checker.expr(init, ty)
+    if value is not ERROR:
+        assignable_or_report(checker, ty, value, init, "init")
+
+
+def _field_type(ty: Type, name: str) -> Type | None:
+    if isinstance(ty, t.StructType):
+        found = ty.fields.get(name.upper())
+        return found[1] if found else None
+    if ty.pou is not None:
+        symbol = ty.pou.symbols.get(name.upper())
+        return symbol.type if symbol else None
+    pin = next((p for p in (*ty.std.inputs, *ty.std.outputs) if p.name == name.upper()), None)
+    return t.elementary(pin.type) if pin else None
+
+
+def check_project(project: Project) -> CheckResult:
+    """Parse and check every text of ``project``; see ``CheckResult`` for what is resolved."""
+    return ProjectChecker(project).run()
+
+
+def check_operand(result_or_scope: CheckResult | Project, pou_name: str, text: str,
+                  expected_type: Type | str | None = None) -> tuple[ast.Expr | None, list[Diagnostic]]:
+    """Resolve an LD/FBD operand (``T1.Q``, ``arr[i]``, ``T#5s``) in the scope of ``pou_name``.
+
+    Returns the typed expression (None when it does not parse) and its diagnostics;
+    ``expected_type`` (a type or a type name such as ``"BOOL"``) adds an assignment-compatibility check.
+    """
+    result = result_or_scope if isinstance(result_or_scope, CheckResult) else check_project(result_or_scope)
+    parsed = parse_expression(text, pou=pou_name)
+    diagnostics = list(parsed.diagnostics)
+    if parsed.ast is None:
+        return None, diagnostics
+    report = Reporter(diagnostics, None, pou_name)
+    checker = BodyChecker(result, result.pou(pou_name), report)
+    expected = _expected(result, expected_type)
+    value = checker.expr(parsed.ast, expected)
+    if expected is not None and value is not ERROR:
+        assignable_or_report(checker, expected, value, parsed.ast, f"operand '{text.strip()}'")
+    return parsed.ast, diagnostics
+
+
+def _expected(result: CheckResult, expected: Type | str | None) -> Type | None:
+    if expected is None or isinstance(expected, Type):
+        return expected
+    typedef = result.types.get(expected.upper())
+    return typedef.type if typedef else t.elementary(expected)

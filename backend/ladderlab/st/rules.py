@@ -1,0 +1,88 @@
+"""Rules shared by the statement, call and CASE checks: assignment compatibility, constant folding."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+from . import ast
+from . import types as t
+from .types import Type
+
+
+@dataclass
+class EnumValue:
+    """What a bare enum value name resolves to."""
+
+    type: t.EnumType
+    name: str
+    value: int
+
+
+def root_name(node: ast.Expr) -> ast.Name | None:
+    while isinstance(node, (ast.Member, ast.Index, ast.Deref)):
+        node = node.base
+    return node if isinstance(node, ast.Name) else None
+
+
+def assignable_or_report(checker: Any, target: Type, value: Type, node, what: str) -> bool:
+    """Check ``value`` can be stored in ``target`` (ST-23/25); report and return False when not."""
+    verdict = t.assignable(target, value)
+    if verdict is None:
+        return True
+    if verdict == "widen":
+        checker.report("ST-IMPLICIT-CONV", f"{value} is converted implicitly to {target}", node, severity="warning")
+        return True
+    if isinstance(value, t.UntypedInt) and isinstance(target, t.Elementary) and target.category in ("int", "bits"):
+        checker.report("ST-RANGE", f"{value.value} is out of range for {target} ({target.info.min}..{target.info.max})",
+                       node)
+        return False
+    hint = t.conversion_hint(target, value)
+    if what == "assign":
+        message = f"cannot assign {value} to {target}{hint}"
+    elif what == "init":
+        message = f"cannot initialise {target} with {value}{hint}"
+    else:
+        message = f"{what}: expected {target}, got {value}{hint}"
+    checker.report("ST-TYPE-MISMATCH", message, node)
+    return False
+
+
+def constant_value(checker: Any, node: ast.Expr | None, depth: int = 0) -> int | float | None:
+    """Value of a constant expression (literals, CONSTANT variables, enum values), else None."""
+    if node is None or depth > 20:
+        return None
+    if isinstance(node, (ast.IntLit, ast.RealLit)):
+        return node.value
+    if isinstance(node, ast.TypedLit):
+        return constant_value(checker, node.value, depth + 1) if not isinstance(node.value, ast.Name) else None
+    if isinstance(node, ast.Unary) and node.op == "-":
+        value = constant_value(checker, node.operand, depth + 1)
+        return -value if value is not None else None
+    if isinstance(node, ast.Name):
+        symbol = checker.lookup(node.name)
+        if symbol is not None:
+            return constant_value(checker, symbol.init, depth + 1) if symbol.constant else None
+        values = checker.enum_values(node.name)
+        return values[0].value if len(values) == 1 else None
+    if isinstance(node, ast.Binary) and node.op in ("+", "-", "*", "/", "MOD"):
+        left = constant_value(checker, node.left, depth + 1)
+        right = constant_value(checker, node.right, depth + 1)
+        if left is None or right is None:
+            return None
+        return _fold(node.op, left, right)
+    return None
+
+
+def _fold(op: str, left, right):
+    if op == "+":
+        return left + right
+    if op == "-":
+        return left - right
+    if op == "*":
+        return left * right
+    if right == 0:
+        return None
+    if op == "/":
+        return int(left / right) if isinstance(left, int) and isinstance(right, int) else left / right
+    return left - int(left / right) * right

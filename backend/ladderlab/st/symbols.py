@@ -1,0 +1,86 @@
+"""The resolved program the checker hands to the IR lowering: symbols, user types, POUs."""
+
+from __future__ import annotations
+
+import difflib
+from dataclasses import dataclass, field
+from typing import Any
+
+from ..model.diagnostics import Diagnostic
+from . import ast
+from .types import Type
+
+PARAMETER_CLASSES = ("VAR_INPUT", "VAR_IN_OUT", "VAR_OUTPUT")
+
+
+@dataclass(eq=False)
+class Symbol:
+    """One declared variable (or directly represented variable when ``name`` is its address)."""
+
+    name: str
+    var_class: str  # VAR, VAR_INPUT, VAR_OUTPUT, VAR_IN_OUT, VAR_GLOBAL, VAR_EXTERNAL, VAR_TEMP
+    type: Type
+    type_spec: ast.TypeSpec
+    init: ast.Init | None = None  # declared initial value, else the type's (TYP-11), else None (type default)
+    address: str | None = None
+    constant: bool = False
+    retain: bool = False
+    edge: str | None = None
+    comment: str | None = None
+    span: ast.Span = ast.NO_SPAN
+    pou: str | None = None  # owning POU, None for globals
+
+
+@dataclass(eq=False)
+class TypeDef:
+    """A user TYPE: its resolved type and its own initial value (TYP-11)."""
+
+    name: str
+    type: Type
+    init: ast.Init | None
+    decl: ast.TypeDecl
+
+
+@dataclass(eq=False)
+class PouInfo:
+    """A POU's interface and, for ST POUs, its checked body.
+
+    ``symbols`` maps upper-case names to symbols in declaration order; ``body`` is
+    the typed AST (every expression has ``.ty``, names have ``.ref``, calls have
+    ``.ref``) or None for LD/FBD POUs. ``calls`` lists the upper-case names of the
+    POUs this one calls or instantiates.
+    """
+
+    name: str
+    kind: str  # PROGRAM, FUNCTION_BLOCK, FUNCTION
+    language: str
+    return_type: Type | None
+    symbols: dict[str, Symbol] = field(default_factory=dict)
+    body: list[ast.Stmt] | None = None
+    calls: set[str] = field(default_factory=set)
+
+    def parameters(self, *classes: str) -> list[Symbol]:
+        wanted = classes or PARAMETER_CLASSES
+        return [s for s in self.symbols.values() if s.var_class in wanted]
+
+
+@dataclass
+class CheckResult:
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+    types: dict[str, TypeDef] = field(default_factory=dict)
+    globals: dict[str, Symbol] = field(default_factory=dict)
+    pous: dict[str, PouInfo] = field(default_factory=dict)
+
+    @property
+    def ok(self) -> bool:
+        return not any(d.severity == "error" for d in self.diagnostics)
+
+    def pou(self, name: str) -> PouInfo | None:
+        return self.pous.get(name.upper())
+
+
+def did_you_mean(name: str, candidates: Any) -> str:
+    """`` - did you mean 'Start'?`` for the closest candidate (case-insensitive), or ''."""
+    by_upper = {c.upper(): c for c in candidates}
+    match = difflib.get_close_matches(name.upper(), list(by_upper), n=1, cutoff=0.6)
+    return f" - did you mean '{by_upper[match[0]]}'?" if match else ""
