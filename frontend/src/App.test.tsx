@@ -27,13 +27,13 @@ describe("App", () => {
     respond({
       "/api/health": () => json({ status: "ok", version: "0.1.0" }),
       "/api/projects": () =>
-        json([{ name: "conveyor", revision: 4, modified: "2024-05-01T10:00:00Z", pou_count: 3 }]),
+        json([{ name: "conveyor", revision: "r4", modified: "2024-05-01T10:00:00Z", pou_count: 3 }]),
     });
     render(<App />);
     expect(screen.getByRole("heading", { level: 1 })).toHaveProperty("textContent", "LadderLab");
     const nav = screen.getByRole("navigation", { name: "Projects" });
     expect(await within(nav).findByText("conveyor")).toBeTruthy();
-    expect(within(nav).getByText(/3 POUs · rev 4/)).toBeTruthy();
+    expect(within(nav).getByText(/3 POUs · rev r4/)).toBeTruthy();
     expect(await screen.findByText("Server ok · v0.1.0")).toBeTruthy();
   });
 

@@ -40,7 +40,7 @@ function ProjectRow({ project }: { project: ProjectSummary }) {
       >
         <span className="project-name">{project.name}</span>
         <span className="project-meta">
-          {project.pou_count} POU{project.pou_count === 1 ? "" : "s"} · rev {project.revision} ·{" "}
+          {project.pou_count} POU{project.pou_count === 1 ? "" : "s"} · rev {project.revision.slice(0, 7)} ·{" "}
           {formatModified(project.modified)}
         </span>
       </button>

@@ -2,8 +2,8 @@ import { describe, expect, it, vi } from "vitest";
 import { ApiError, type Api, type Health, type ProjectSummary } from "./api/client";
 import { createAppStore } from "./store";
 
-const demo: ProjectSummary = { name: "demo", revision: 1, modified: "2024-01-01T00:00:00Z", pou_count: 2 };
-const alpha: ProjectSummary = { name: "alpha", revision: 7, modified: "2024-02-01T00:00:00Z", pou_count: 1 };
+const demo: ProjectSummary = { name: "demo", revision: "r1", modified: "2024-01-01T00:00:00Z", pou_count: 2 };
+const alpha: ProjectSummary = { name: "alpha", revision: "r7", modified: "2024-02-01T00:00:00Z", pou_count: 1 };
 
 function fakeApi(overrides: Partial<Api> = {}): Api {
   return {

@@ -80,3 +80,11 @@ def test_health_endpoint(tmp_path: Path) -> None:
     client = TestClient(create_app(Workspace(tmp_path)))
     assert client.get("/api/health").json()["status"] == "ok"
     assert "LadderLab" in client.get("/").text
+
+
+def test_project_list_endpoint(tmp_path: Path) -> None:
+    workspace = Workspace(tmp_path)
+    revision = workspace.create(load_project_path(EXAMPLES / "motor"))
+    rows = TestClient(create_app(workspace)).get("/api/projects").json()
+    assert [(r["name"], r["revision"], r["pou_count"]) for r in rows] == [("motor", revision, 3)]
+    assert rows[0]["modified"].endswith("Z") or rows[0]["modified"].endswith("+00:00")

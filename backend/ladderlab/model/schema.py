@@ -8,10 +8,11 @@ from typing import Any
 
 from pydantic import BaseModel
 
+from .api import ApiTypes
 from .project import Project
 
 #: File name in shared_schema/ -> model. Later parts add theirs (e.g. the monitor protocol).
-SCHEMA_MODELS: dict[str, type[BaseModel]] = {"project.schema.json": Project}
+SCHEMA_MODELS: dict[str, type[BaseModel]] = {"project.schema.json": Project, "api.schema.json": ApiTypes}
 
 
 def schema_of(model: type[BaseModel]) -> dict[str, Any]:

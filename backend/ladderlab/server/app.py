@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from datetime import datetime, timezone
 from pathlib import Path
 
 from fastapi import FastAPI
@@ -9,6 +10,7 @@ from fastapi.responses import HTMLResponse
 from fastapi.staticfiles import StaticFiles
 
 from .. import __version__
+from ..model.api import ProjectSummary
 from ..storage import Workspace
 
 STATIC_DIR = Path(__file__).parent / "static"
@@ -26,6 +28,14 @@ def create_app(workspace: Workspace) -> FastAPI:
     @app.get("/api/health")
     def health() -> dict[str, str]:
         return {"status": "ok", "version": __version__}
+
+    @app.get("/api/projects", response_model=list[ProjectSummary])
+    def list_projects() -> list[ProjectSummary]:
+        return [
+            ProjectSummary(name=info.name, revision=info.revision, pou_count=info.pou_count,
+                           modified=datetime.fromtimestamp(info.modified, tz=timezone.utc))
+            for info in workspace.list()
+        ]
 
     if (STATIC_DIR / "index.html").is_file():
         app.mount("/", StaticFiles(directory=STATIC_DIR, html=True), name="app")

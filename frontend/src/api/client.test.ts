@@ -90,7 +90,7 @@ describe("requestJson", () => {
 
 describe("endpoints", () => {
   it("listProjects returns the list and rejects anything else", async () => {
-    const rows = [{ name: "demo", revision: 3, modified: "2024-01-01T00:00:00Z", pou_count: 2 }];
+    const rows = [{ name: "demo", revision: "r3", modified: "2024-01-01T00:00:00Z", pou_count: 2 }];
     stubFetch(async () => jsonResponse(rows));
     await expect(listProjects()).resolves.toEqual(rows);
 

@@ -1,14 +1,8 @@
 // Typed helpers for the LadderLab HTTP API (served under /api by the FastAPI backend).
+import type { ProjectSummary } from "../generated/api";
 import type { Project } from "../generated/project";
 
-/** One row of `GET /api/projects`. */
-export interface ProjectSummary {
-  name: string;
-  revision: number;
-  /** ISO 8601 timestamp of the last save. */
-  modified: string;
-  pou_count: number;
-}
+export type { ProjectSummary };
 
 /** `GET /api/health`. */
 export interface Health {
