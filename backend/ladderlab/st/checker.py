@@ -62,8 +62,10 @@ class ProjectChecker:
             if pou.language == "st":
                 bodies[pou.name] = self._parse(parse_statements, pou.body, f"{pou.name}/body", pou.name)
         self._register_pous()
+        constants = [b for b in globals_ if b.constant and all(_elementary_decl(d) for d in b.decls)]
+        self._declare_globals(constants)  # first, so array bounds in TYPEs may name them (TYP-22)
         self._register_types(types or [])
-        self._declare_globals(globals_)
+        self._declare_globals([b for b in globals_ if b not in constants])
         for pou in self.project.pous:
             self._declare_pou(pou, declarations[pou.name])
         for pou in self.project.pous:
@@ -228,12 +230,13 @@ class ProjectChecker:
     def _declare_globals(self, blocks: list[ast.VarBlock]) -> None:
         report = self._reporter("globals", None)
         checker = BodyChecker(self.result, None, report)
+        before = set(self.result.globals)
         for block in blocks:
             if block.kind not in ("VAR_GLOBAL", "VAR_EXTERNAL"):
                 report("ST-DECL", f"only VAR_GLOBAL blocks belong in the global variables, not {block.kind}", block)
             self._declare_block(block, self.result.globals, checker, None)
-        for symbol in self.result.globals.values():
-            if symbol.init is not None:
+        for key, symbol in self.result.globals.items():
+            if key not in before and symbol.init is not None:
                 check_init(checker, symbol.type, symbol.init)
 
     def _declare_pou(self, pou, blocks: list[ast.VarBlock]) -> None:
@@ -338,6 +341,10 @@ class ProjectChecker:
         for name in self.result.pous:
             if name not in state:
                 visit(name, [name])
+
+
+def _elementary_decl(decl: ast.VarDecl) -> bool:
+    return isinstance(decl.type, ast.NamedType) and t.elementary(decl.type.name) is not None
 
 
 def _parse_types(text: str, *, file: str, pou: None = None):

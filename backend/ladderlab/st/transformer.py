@@ -114,7 +114,7 @@ class AstBuilder(Transformer):
         return ast.Pou(kind, str(c[1]), return_type, blocks, body, span_of(c))
 
     def type_block(self, c):
-        return ast.TypeBlock(c[1:], span_of(c))
+        return ast.TypeBlock(c[1:-1], span_of(c))
 
     def type_decl(self, c):
         return ast.TypeDecl(str(c[0]), c[1], c[2] if len(c) > 2 else None, span_of(c))
@@ -149,7 +149,7 @@ class AstBuilder(Transformer):
 
     # ------------------------------------------------------------ declarations
     def var_block(self, c):
-        qualifiers = [t.type for t in c[1:] if isinstance(t, Token)]
+        qualifiers = [t.type for t in c[1:-1] if isinstance(t, Token)]
         decls = [d for d in c[1:] if isinstance(d, ast.VarDecl)]
         return ast.VarBlock(c[0].type, qualifiers, decls, span_of(c))
 
