@@ -95,8 +95,10 @@ def _instance_call(checker: Any, node: ast.Call, ty: Type, statement: bool) -> T
         return ERROR
     node.ref = root_name(node.callee).ref if root_name(node.callee) is not None else None
     if not statement:
-        checker.report("ST-NOT-CALLABLE", f"the function block instance '{print_expression(node.callee)}' cannot be called "
-                       "inside an expression: call it as a statement and read its outputs (e.g. inst.Q)", node)
+        _args_untyped(checker, node)
+        checker.report("ST-NOT-CALLABLE", f"the function block instance '{print_expression(node.callee)}' cannot be "
+                       "called inside an expression: call it as a statement and read its outputs (e.g. inst.Q)", node)
+        return ERROR
     if ty.std is not None:
         inputs = [Param(p.name, t.elementary(p.type) or ERROR) for p in ty.std.inputs]
         outputs = [Param(p.name, t.elementary(p.type) or ERROR) for p in ty.std.outputs]
@@ -113,14 +115,16 @@ def check_arguments(checker: Any, node: ast.Call, callee: str, inputs: list[Para
     formal = [a for a in node.args if a.name is not None]
     positional = [a for a in node.args if a.name is None]
     if formal and positional:
+        _args_untyped(checker, node)
         checker.report("ST-CALL-ARGS", f"do not mix formal (name := value) and positional arguments in a call to "
                        f"{callee}", node)
+        return
     if positional and (len(positional) > len(inputs) or function and len(positional) < len(inputs)):
+        _args_untyped(checker, node)
         checker.report("ST-CALL-ARGS", f"{callee} takes {len(inputs)} input(s), got {len(positional)}", node)
+        return
     for arg, param in zip(positional, inputs):
         _input(checker, arg, param, callee)
-    for arg in positional[len(inputs):]:
-        checker.expr(arg.value)
     by_name_in = {p.name.upper(): p for p in inputs} | {"EN": Param("EN", t.BOOL)}
     by_name_out = {p.name.upper(): p for p in outputs} | {"ENO": Param("ENO", t.BOOL)}
     seen: set[str] = set()

@@ -188,7 +188,7 @@ class ProjectChecker:
         if upper.startswith("ANY"):
             report("ST-UNKNOWN-TYPE", f"'{spec.name}' is a generic type: it is only used by standard functions", spec)
             return ERROR
-        known = [*self.type_decls, *t.ELEMENTARY, "STRING", *stdlib.FUNCTION_BLOCKS,
+        known = [*(d.name for d in self.type_decls.values()), *t.ELEMENTARY, "STRING", *stdlib.FUNCTION_BLOCKS,
                  *(p.name for p in self.result.pous.values() if p.kind != "FUNCTION")]
         report("ST-UNKNOWN-TYPE", f"unknown type '{spec.name}'" + did_you_mean(spec.name, known), spec)
         return ERROR

@@ -36,7 +36,7 @@ class _Text:
 def source_to_project(text: str, name: str = "imported", *,
                       nested_comments: bool = False) -> tuple[Project | None, list[Diagnostic]]:
     parsed = parse_source(text, nested_comments=nested_comments)
-    if parsed.ast is None or not parsed.ok:
+    if parsed.ast is None:
         return None, parsed.diagnostics
     source = _Text(text)
     types, globals_, pous, tasks = [], [], [], []

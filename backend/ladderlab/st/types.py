@@ -168,11 +168,7 @@ def _widens(source: Elementary, target: Elementary) -> bool:
             return chain.index(s) < chain.index(d)
     if s in _UNSIGNED and d in _SIGNED:
         return _UNSIGNED.index(s) < _SIGNED.index(d)
-    if d == "LREAL":
-        return s in ("REAL", *_SIGNED[:3], *_UNSIGNED[:3])
-    if d == "REAL":
-        return s in ("SINT", "INT", "USINT", "UINT")
-    return False
+    return s == "REAL" and d == "LREAL"  # integer -> REAL always needs a conversion (ST-20)
 
 
 def same(a: Type, b: Type) -> bool:
