@@ -10,8 +10,9 @@ from __future__ import annotations
 
 from typing import Any
 
-from lark import Token
+from lark import Token, Tree
 from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedToken
+from lark.parsers.lalr_analysis import Shift
 
 from . import ast
 
@@ -45,7 +46,8 @@ def describe_unexpected(error: UnexpectedInput, terminal_text: dict[str, str]) -
     if "SEMI" in expected and previous is not None and previous.type.lstrip("_").startswith("END_"):
         return f"expected ';' after {str(previous).upper()}", ast.Span(
             previous.end_line, previous.end_column, previous.end_line, previous.end_column + 1)
-    if "SEMI" in expected and previous is not None and token.type != "$END" and previous.end_line < token.line:
+    if "SEMI" in expected and previous is not None and token.type != "$END" and previous.end_line < token.line \
+            and would_accept(error.interactive_parser.parser_state, ["SEMI", token.type]):
         context = _context(error)
         message = "expected ';' after " + context if context else "expected ';' at the end of the line"
         return message, ast.Span(previous.end_line, previous.end_column, previous.end_line, previous.end_column + 1)
@@ -54,6 +56,9 @@ def describe_unexpected(error: UnexpectedInput, terminal_text: dict[str, str]) -
         return "unterminated comment: '(*' without a matching '*)'", ast.Span(
             previous.line, previous.column, token.end_line, token.end_column)
     found = "end of text" if token.type == "$END" else f"'{token}'"
+    closers = {e for e in expected if e.lstrip("_").startswith("END_")}
+    if closers and token.type.lstrip("_").startswith("END_"):  # e.g. END_PROGRAM closing a FUNCTION
+        expected = closers
     message = f"expected {_alternatives(expected, terminal_text)}, found {found}"
     if token.type == "$END" or not getattr(token, "line", None):
         line, column = (previous.end_line, previous.end_column) if previous is not None else (1, 1)
@@ -110,6 +115,8 @@ def _display(name: str, terminal_text: dict[str, str]) -> str:
 def last_token(stack: list[Any]) -> Token | None:
     """The last thing shifted (a token, or an AST node's end) - where a missing ';' belongs."""
     for item in reversed(stack):
+        if isinstance(item, Tree):  # lark's helper for a repeated item (statement*, var_block*)
+            item = item.children
         if isinstance(item, Token):
             return item
         span = getattr(item, "span", None)
@@ -121,3 +128,22 @@ def last_token(stack: list[Any]) -> Token | None:
             if found is not None:
                 return found
     return None
+
+
+def would_accept(state: Any, token_types: list[str]) -> bool:
+    """Run the LALR automaton on a copy of the state stack only (no callbacks, no copying of AST values)."""
+    table = state.parse_conf.parse_table.states
+    stack = list(state.state_stack)
+    for token_type in token_types:
+        while True:
+            action = table[stack[-1]].get(token_type)
+            if action is None:
+                return False
+            kind, argument = action
+            if kind is Shift:
+                stack.append(argument)
+                break
+            if argument.expansion:
+                del stack[-len(argument.expansion):]
+            stack.append(table[stack[-1]][argument.origin.name][1])
+    return True

@@ -118,9 +118,9 @@ def decode_time_literal(text: str) -> tuple[str, int | float]:
     prefix = text.split("#", 1)[0].upper()
     if prefix in ("T", "TIME", "LT", "LTIME"):
         return "TIME", decode_duration(text)
-    if prefix in ("D", "DATE"):
+    if prefix in ("D", "DATE", "LDATE"):
         return "DATE", decode_date(text)
-    if prefix in ("TOD", "TIME_OF_DAY"):
+    if prefix in ("TOD", "TIME_OF_DAY", "LTOD", "LTIME_OF_DAY"):
         return "TIME_OF_DAY", decode_tod(text)
     return "DATE_AND_TIME", decode_dt(text)
 

@@ -17,13 +17,12 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from lark import Lark, Token
-from lark.parsers.lalr_analysis import Shift
 from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedToken
 
 from ..model.diagnostics import Diagnostic
 from . import ast
 from .comments import attach_comments, blank_nested_comments
-from .errors import describe_unexpected, last_token
+from .errors import describe_unexpected, last_token, would_accept
 from .transformer import AstBuilder, StSyntaxError
 
 GRAMMAR = pathlib.Path(__file__).with_name("iec61131.lark")
@@ -46,7 +45,9 @@ class ParseResult:
 
 _KEYWORD_RE = re.compile(r'^_?[A-Z_]+: "([A-Z_]+)"i$', re.MULTILINE)
 # Keywords that only mean something in one spot (after a type, in a RESOURCE): real libraries use them as names.
-_SOFT_KEYWORDS = {"ON", "WITH", "TASK", "RESOURCE", "R_EDGE", "F_EDGE", "NON_RETAIN", "PERSISTENT", "POINTER"}
+# The operator words are also the standard functions AND(...), MOD(...), so they may stand where a name does.
+_SOFT_KEYWORDS = {"ON", "WITH", "TASK", "RESOURCE", "R_EDGE", "F_EDGE", "NON_RETAIN", "PERSISTENT", "POINTER",
+                  "AND", "OR", "XOR", "NOT", "MOD"}
 
 
 @functools.cache
@@ -193,32 +194,13 @@ class _Reporter:
         lenient = previous.type.lstrip("_") in _END_KEYWORDS and (at_end or error.token.type.lstrip("_").startswith("END_"))
         if not lenient and (at_end or previous.end_line >= error.token.line):
             return False
-        if not at_end and not _would_accept(parser.parser_state, ["SEMI", error.token.type]):
+        if not at_end and not would_accept(parser.parser_state, ["SEMI", error.token.type]):
             return False
         self.add(error, "warning" if lenient else "error")
         parser.feed_token(Token("SEMI", ";"))
         if not at_end:
             parser.feed_token(error.token)
         return True
-
-
-def _would_accept(state: Any, token_types: list[str]) -> bool:
-    """Run the LALR automaton on a copy of the state stack only (no callbacks, no copying of AST values)."""
-    table = state.parse_conf.parse_table.states
-    stack = list(state.state_stack)
-    for token_type in token_types:
-        while True:
-            action = table[stack[-1]].get(token_type)
-            if action is None:
-                return False
-            kind, argument = action
-            if kind is Shift:
-                stack.append(argument)
-                break
-            if argument.expansion:
-                del stack[-len(argument.expansion):]
-            stack.append(table[stack[-1]][argument.origin.name][1])
-    return True
 
 
 # ---------------------------------------------------------------- unit splitting
