@@ -4,8 +4,9 @@ from __future__ import annotations
 
 from .model import Diagnostic, Project
 from .model.validate import validate_project
+from .st.checker import check_project as check_st
 
 
 def check_project(project: Project) -> list[Diagnostic]:
-    """All problems of ``project``, most fundamental first."""
-    return validate_project(project)
+    """All problems of ``project``: project structure first, then ST (declarations of every POU, ST bodies)."""
+    return validate_project(project) + check_st(project).diagnostics

@@ -88,3 +88,12 @@ def test_project_list_endpoint(tmp_path: Path) -> None:
     rows = TestClient(create_app(workspace)).get("/api/projects").json()
     assert [(r["name"], r["revision"], r["pou_count"]) for r in rows] == [("motor", revision, 3)]
     assert rows[0]["modified"].endswith("Z") or rows[0]["modified"].endswith("+00:00")
+
+
+def test_check_reports_st_diagnostics_with_location(tmp_path: Path) -> None:
+    path = tmp_path / "demo.st"
+    path.write_text("PROGRAM Main\nVAR Start : BOOL; x : INT; END_VAR\nx := Strat;\nEND_PROGRAM\n")
+    result = ladderlab("check", str(path))
+    assert result.returncode == 1
+    assert "unknown variable 'Strat' - did you mean 'Start'?" in result.stdout
+    assert "Main/body" in result.stdout
