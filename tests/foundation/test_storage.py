@@ -9,7 +9,7 @@ import tempfile
 from pathlib import Path
 
 import pytest
-from hypothesis import given
+from hypothesis import example, given
 
 from ladderlab.model import Pou, Project
 from ladderlab.storage import (
@@ -37,6 +37,7 @@ def motor() -> Project:
 
 
 @given(projects())
+@example(Project(name="cr", pous=[Pou(name="A", kind="program", language="st", body="\r0")]))
 def test_folder_round_trip_and_byte_stable_resave(project: Project) -> None:
     with tempfile.TemporaryDirectory() as tmp:
         ws = Workspace(tmp)

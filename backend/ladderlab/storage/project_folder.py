@@ -158,9 +158,11 @@ def _read_pou(folder: Path, name: str, problems: list[Diagnostic]) -> Pou | None
                                                f"{path.name.split('.', 1)[1]} file, got {pou.language!r}"))
             return None
     else:
-        text = path.read_text(encoding="utf-8")
         try:
-            pou = parse_pou_text(text)
+            pou = parse_pou_text(_read_exact(path))
+        except UnicodeDecodeError as err:
+            problems.append(Diagnostic(code="BAD-FILE", file=rel, pou=name, message=f"not UTF-8 text: {err.reason}"))
+            return None
         except StTextError as err:
             problems.append(Diagnostic(code="BAD-FILE", file=rel, pou=name, line=err.line,
                                        column=err.column, message=err.reason))
@@ -173,7 +175,12 @@ def _read_pou(folder: Path, name: str, problems: list[Diagnostic]) -> Pou | None
 
 
 def _read_text(path: Path) -> str:
-    return path.read_text(encoding="utf-8") if path.is_file() else ""
+    return _read_exact(path) if path.is_file() else ""
+
+
+def _read_exact(path: Path) -> str:
+    """UTF-8 text without newline translation: a '\\r' typed into a POU must come back as typed."""
+    return path.read_bytes().decode("utf-8")
 
 
 def _read_json(path: Path, rel: str, problems: list[Diagnostic]) -> Any:
