@@ -50,15 +50,17 @@ class Member:
 
 
 Selector = Union[Index, Member]
-Scope = Literal["local", "global", "instance"]
+Scope = Literal["local", "global"]
 
 
 @dataclass(frozen=True)
 class Var:
     """A variable access path: a root slot then array indices (Index) and struct/FB member selections (Member).
 
-    ``scope`` says where the root lives: ``local`` in the POU instance, ``global`` in the
-    resource's globals. ``type`` is the type of the whole path.
+    ``scope`` says where the root lives: ``local`` in the POU instance (any declared
+    class, VAR_IN_OUT included: the engine resolves the reference), ``global`` in the
+    resource's globals (VAR_EXTERNAL names lower to global accesses). ``type`` is the
+    type of the whole path.
     """
 
     scope: Scope
@@ -184,6 +186,22 @@ class FbCall:
 
 
 @dataclass
+class FnCall:
+    """A function call as a statement, with EN/ENO: LD/FBD boxes and ST calls that use EN or ENO.
+
+    With ``en`` FALSE the function is not called, ``target`` keeps its value and ``eno``
+    is set FALSE. Otherwise the result goes to ``target`` (None: discarded) and ``eno``
+    gets TRUE unless the call reported a warning (standard functions' checked form).
+    """
+
+    call: Call
+    target: Var | None
+    origin: Origin
+    en: Expr | None = None
+    eno: Var | None = None
+
+
+@dataclass
 class Jump:
     """Go to the network block ``label`` of the same POU when ``cond`` holds (None: always)."""
 
@@ -210,7 +228,7 @@ class Block:
     label: str | None = None
 
 
-Stmt = Union[Assign, If, Case, For, While, Repeat, Exit, Return, FbCall, Jump, Probe]
+Stmt = Union[Assign, If, Case, For, While, Repeat, Exit, Return, FbCall, FnCall, Jump, Probe]
 
 # --------------------------------------------------------------------------- POUs
 
