@@ -97,3 +97,25 @@ def test_check_reports_st_diagnostics_with_location(tmp_path: Path) -> None:
     assert result.returncode == 1
     assert "unknown variable 'Strat' - did you mean 'Start'?" in result.stdout
     assert "Main/body" in result.stdout
+
+
+def test_st_file_configuration_becomes_tasks(tmp_path: Path) -> None:
+    path = tmp_path / "plant.st"
+    path.write_text("PROGRAM Fast\nVAR n : INT; END_VAR\nn := n + 1;\nEND_PROGRAM\n"
+                    "PROGRAM Slow\nVAR n : INT; END_VAR\nn := n + 1;\nEND_PROGRAM\n"
+                    "CONFIGURATION Plant\n  RESOURCE Cpu ON PLC\n"
+                    "    TASK T1 (INTERVAL := T#5ms, PRIORITY := 1);\n"
+                    "    TASK T2 (INTERVAL := T#20ms, PRIORITY := 2);\n"
+                    "    PROGRAM fast_inst WITH T1 : Fast;\n    PROGRAM slow_inst WITH T2 : Slow;\n"
+                    "  END_RESOURCE\nEND_CONFIGURATION\n")
+    project = load_project_path(path)
+    assert [(t.name, t.interval, t.priority, t.programs) for t in project.tasks] == [
+        ("T1", "T#5ms", 1, ["Fast"]), ("T2", "T#20ms", 2, ["Slow"])]
+
+
+def test_st_file_syntax_error_is_located_in_the_file(tmp_path: Path) -> None:
+    path = tmp_path / "broken.st"
+    path.write_text("PROGRAM Main\nVAR x : INT; END_VAR\nx := ;\nEND_PROGRAM\n")
+    result = ladderlab("check", str(path))
+    assert result.returncode != 0
+    assert "broken.st:3:6" in result.stdout + result.stderr

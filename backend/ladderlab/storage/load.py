@@ -7,10 +7,10 @@ from pathlib import Path
 
 from pydantic import ValidationError
 
-from ..model import Diagnostic, Pou, Project
+from ..model import Diagnostic, Project
+from ..st.project_text import source_to_project
 from .errors import ProjectLoadError, validation_diagnostics
 from .project_folder import PROJECT_FILE, read_project_folder
-from .st_text import StTextError, split_source
 
 
 def load_project_path(path: Path | str) -> Project:
@@ -42,14 +42,17 @@ def _load_json_project(path: Path) -> Project:
 
 
 def project_from_st(text: str, *, name: str, file: str) -> Project:
-    """A project made of the POUs, TYPE and VAR_GLOBAL blocks of one ST source file."""
-    try:
-        parsed = split_source(text)
-    except StTextError as err:
-        raise ProjectLoadError([Diagnostic(code="BAD-FILE", file=file, line=err.line, column=err.column,
-                                           message=err.reason)]) from err
-    pous: list[Pou] = parsed.pous
-    return Project(name=name, types=parsed.types, globals=parsed.globals, pous=pous)
+    """A project made of the TYPEs, VAR_GLOBALs, POUs and CONFIGURATION tasks of one ST source file.
+
+    The file is parsed (not just split like a stored POU file) because its CONFIGURATION
+    becomes the project's tasks; POU texts keep the file's line numbers, so later
+    diagnostics point into it.
+    """
+    project, diagnostics = source_to_project(text, name)
+    errors = [d for d in diagnostics if d.severity == "error"]
+    if project is None or errors:
+        raise ProjectLoadError([d.model_copy(update={"file": file}) for d in errors or diagnostics])
+    return project
 
 
 def _error(file: str, message: str) -> ProjectLoadError:
