@@ -196,6 +196,23 @@ def _date_and_time() -> list[StdFunction]:
     return rows
 
 
+#: CV/PV types of the IEC 3rd edition typed counters CTU_INT .. CTUD_ULINT (spec ST-23 uses CTD_DINT).
+TYPED_COUNTER_TYPES = ("INT", "DINT", "LINT", "UDINT", "ULINT")
+
+
+def _counters(suffix: str, i: str) -> list[StdFunctionBlock]:
+    b = "BOOL"
+    return [
+        StdFunctionBlock(f"CTU{suffix}", (Pin("CU", b, edge="R_EDGE"), Pin("R", b), Pin("PV", i)),
+                         (Pin("Q", b), Pin("CV", i)), "up counter: Q when CV >= PV", "SFB-13"),
+        StdFunctionBlock(f"CTD{suffix}", (Pin("CD", b, edge="R_EDGE"), Pin("LD", b), Pin("PV", i)),
+                         (Pin("Q", b), Pin("CV", i)), "down counter: Q when CV <= 0", "SFB-14"),
+        StdFunctionBlock(f"CTUD{suffix}", (Pin("CU", b, edge="R_EDGE"), Pin("CD", b, edge="R_EDGE"), Pin("R", b),
+                                           Pin("LD", b), Pin("PV", i)),
+                         (Pin("QU", b), Pin("QD", b), Pin("CV", i)), "up/down counter", "SFB-15"),
+    ]
+
+
 def _function_blocks() -> list[StdFunctionBlock]:
     b, i, t = "BOOL", "INT", "TIME"
 
@@ -207,13 +224,8 @@ def _function_blocks() -> list[StdFunctionBlock]:
         StdFunctionBlock("RS", (Pin("S", b), Pin("R1", b)), (Pin("Q1", b),), "bistable, reset dominant", "SFB-10"),
         StdFunctionBlock("R_TRIG", (Pin("CLK", b),), (Pin("Q", b),), "TRUE for one call on a rising edge", "SFB-11"),
         StdFunctionBlock("F_TRIG", (Pin("CLK", b),), (Pin("Q", b),), "TRUE for one call on a falling edge", "SFB-12"),
-        StdFunctionBlock("CTU", (Pin("CU", b, edge="R_EDGE"), Pin("R", b), Pin("PV", i)), (Pin("Q", b), Pin("CV", i)),
-                         "up counter: Q when CV >= PV", "SFB-13"),
-        StdFunctionBlock("CTD", (Pin("CD", b, edge="R_EDGE"), Pin("LD", b), Pin("PV", i)), (Pin("Q", b), Pin("CV", i)),
-                         "down counter: Q when CV <= 0", "SFB-14"),
-        StdFunctionBlock("CTUD", (Pin("CU", b, edge="R_EDGE"), Pin("CD", b, edge="R_EDGE"), Pin("R", b), Pin("LD", b),
-                                  Pin("PV", i)), (Pin("QU", b), Pin("QD", b), Pin("CV", i)),
-                         "up/down counter", "SFB-15"),
+        *_counters("", i),
+        *(fb for cv_type in TYPED_COUNTER_TYPES for fb in _counters(f"_{cv_type}", cv_type)),
         timer("TP", "pulse timer: Q TRUE for PT after a rising edge of IN"),
         timer("TON", "on-delay timer: Q TRUE once IN has been TRUE for PT"),
         timer("TOF", "off-delay timer: Q stays TRUE for PT after IN falls"),

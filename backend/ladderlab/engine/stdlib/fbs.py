@@ -24,6 +24,7 @@ Decisions where implementations differ, each pinned by a test:
 from __future__ import annotations
 
 from ..values import resolve
+from ...st.stdlib import TYPED_COUNTER_TYPES
 
 
 class FunctionBlock:
@@ -266,7 +267,7 @@ def _typed_counters() -> dict[str, type[_Counter]]:
     """CTU_INT .. CTUD_ULINT (IEC 3rd edition names; spec ST-23 also uses CTD_DINT)."""
     typed: dict[str, type[_Counter]] = {}
     for base in (CTU, CTD, CTUD):
-        for cv_type in ("INT", "DINT", "LINT", "UDINT", "ULINT"):
+        for cv_type in TYPED_COUNTER_TYPES:
             name = f"{base.__name__}_{cv_type}"
             typed[name] = type(name, (base,), {"__slots__": (), "CV_TYPE": cv_type, "__doc__": base.__doc__})
     return typed
