@@ -1,10 +1,18 @@
-"""Shapes of the HTTP API's JSON bodies that the browser reads (typed from the generated schema)."""
+"""Shapes of the HTTP API's JSON bodies that the browser reads (typed from the generated schema).
+
+Request bodies forbid unknown fields so a typo in a client is a 422 naming the field,
+not a silently ignored value.
+"""
 
 from __future__ import annotations
 
 from datetime import datetime
+from typing import Literal
 
-from pydantic import BaseModel
+from pydantic import BaseModel, ConfigDict, Field
+
+from .diagnostics import Diagnostic
+from .project import Project
 
 
 class ProjectSummary(BaseModel):
@@ -16,7 +24,115 @@ class ProjectSummary(BaseModel):
     pou_count: int
 
 
+class CreateProject(BaseModel):
+    """Body of ``POST /api/projects``: an empty project, or a copy of a shipped example."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    name: str
+    example: str | None = Field(default=None, description="Name of a shipped example to copy, e.g. 'motor'.")
+
+
+class RenameProject(BaseModel):
+    """Body of ``POST /api/projects/{name}/rename``."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    new_name: str
+
+
+class ProjectDocument(BaseModel):
+    """``GET /api/projects/{name}``: the project and the revision a later save must name in ``If-Match``."""
+
+    name: str
+    revision: str
+    modified: datetime
+    project: Project
+
+
+class SaveResult(BaseModel):
+    """Answer to a successful save: the new revision (also sent as the ``ETag`` header)."""
+
+    revision: str
+    modified: datetime
+
+
+class CheckReport(BaseModel):
+    """``POST /api/projects/{name}/check``: every diagnostic of the saved project."""
+
+    diagnostics: list[Diagnostic]
+
+
+class SymbolInfo(BaseModel):
+    """One declared variable, for the variable table and operand autocomplete."""
+
+    name: str
+    var_class: str = Field(description="VAR, VAR_INPUT, VAR_OUTPUT, VAR_IN_OUT, VAR_EXTERNAL, VAR_TEMP or VAR_GLOBAL.")
+    type: str = Field(description="The type as declared, e.g. 'TON' or 'ARRAY[1..10] OF INT'.")
+    initial: str | None = Field(description="Declared initial value (or the user type's), as ST text; "
+                                            "null means the type's default.")
+    address: str | None = Field(description="Direct address of an AT declaration, e.g. '%IX0.0'.")
+    comment: str | None
+    retain: bool
+    constant: bool
+
+
+class SymbolTable(BaseModel):
+    """``GET /api/projects/{name}/pous/{pou}/symbols``."""
+
+    pou: str
+    symbols: list[SymbolInfo] = Field(description="The POU's own declarations, in declaration order.")
+    globals: list[SymbolInfo]
+    diagnostics: list[Diagnostic] = Field(description="Problems of this POU, the global declarations and the user types.")
+
+
+class Pin(BaseModel):
+    """A parameter of a library function or function block."""
+
+    name: str
+    type: str = Field(description="Elementary type, user type, or generic family such as ANY_NUM.")
+
+
+class LibraryEntry(BaseModel):
+    """One function or function block the box picker offers (EN/ENO are implicit on all of them)."""
+
+    name: str
+    kind: Literal["function", "function_block"]
+    source: Literal["standard", "user"]
+    inputs: list[Pin]
+    outputs: list[Pin]
+    in_outs: list[Pin]
+    extensible: bool = Field(description="More inputs like the last one may be added (IN3, IN4, ...).")
+    return_type: str | None = Field(description="Functions only: the result type (a family for generic ones).")
+    comment: str | None
+
+
+class ErrorDetail(BaseModel):
+    """The ``detail`` of every error response except save conflicts."""
+
+    message: str
+    diagnostics: list[Diagnostic] = Field(default_factory=list)
+
+
+class ConflictDetail(BaseModel):
+    """The ``detail`` of a 409 from a save based on an old revision."""
+
+    message: str
+    base_revision: str | None
+    current_revision: str
+    current_modified: datetime | None
+
+
 class ApiTypes(BaseModel):
     """Container so every API shape lands in one schema file (``api.schema.json``)."""
 
     project_summary: ProjectSummary
+    create_project: CreateProject
+    rename_project: RenameProject
+    project_document: ProjectDocument
+    save_result: SaveResult
+    check_report: CheckReport
+    symbol_table: SymbolTable
+    library_entry: LibraryEntry
+    error_detail: ErrorDetail
+    conflict_detail: ConflictDetail

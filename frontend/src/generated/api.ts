@@ -5,7 +5,447 @@
  * Container so every API shape lands in one schema file (``api.schema.json``).
  */
 export interface ApiTypes {
+  check_report: CheckReport;
+  conflict_detail: ConflictDetail;
+  create_project: CreateProject;
+  error_detail: ErrorDetail;
+  library_entry: LibraryEntry;
+  project_document: ProjectDocument;
   project_summary: ProjectSummary;
+  rename_project: RenameProject;
+  save_result: SaveResult;
+  symbol_table: SymbolTable;
+}
+/**
+ * ``POST /api/projects/{name}/check``: every diagnostic of the saved project.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "CheckReport".
+ */
+export interface CheckReport {
+  diagnostics: Diagnostic[];
+}
+/**
+ * A problem found in a project, with as much location as applies.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "Diagnostic".
+ */
+export interface Diagnostic {
+  code: string;
+  column?: number | null;
+  element?: string | null;
+  end_column?: number | null;
+  end_line?: number | null;
+  file?: string | null;
+  json_path?: string | null;
+  line?: number | null;
+  message: string;
+  network?: string | null;
+  pin?: string | null;
+  pou?: string | null;
+  severity?: "error" | "warning" | "info";
+}
+/**
+ * The ``detail`` of a 409 from a save based on an old revision.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "ConflictDetail".
+ */
+export interface ConflictDetail {
+  base_revision: string | null;
+  current_modified: string | null;
+  current_revision: string;
+  message: string;
+}
+/**
+ * Body of ``POST /api/projects``: an empty project, or a copy of a shipped example.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "CreateProject".
+ */
+export interface CreateProject {
+  /**
+   * Name of a shipped example to copy, e.g. 'motor'.
+   */
+  example?: string | null;
+  name: string;
+}
+/**
+ * The ``detail`` of every error response except save conflicts.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "ErrorDetail".
+ */
+export interface ErrorDetail {
+  diagnostics?: Diagnostic[];
+  message: string;
+}
+/**
+ * One function or function block the box picker offers (EN/ENO are implicit on all of them).
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "LibraryEntry".
+ */
+export interface LibraryEntry {
+  comment: string | null;
+  /**
+   * More inputs like the last one may be added (IN3, IN4, ...).
+   */
+  extensible: boolean;
+  in_outs: Pin[];
+  inputs: Pin[];
+  kind: "function" | "function_block";
+  name: string;
+  outputs: Pin[];
+  /**
+   * Functions only: the result type (a family for generic ones).
+   */
+  return_type: string | null;
+  source: "standard" | "user";
+}
+/**
+ * A parameter of a library function or function block.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "Pin".
+ */
+export interface Pin {
+  name: string;
+  /**
+   * Elementary type, user type, or generic family such as ANY_NUM.
+   */
+  type: string;
+}
+/**
+ * ``GET /api/projects/{name}``: the project and the revision a later save must name in ``If-Match``.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "ProjectDocument".
+ */
+export interface ProjectDocument {
+  modified: string;
+  name: string;
+  project: Project;
+  revision: string;
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "Project".
+ */
+export interface Project {
+  format?: "ladderlab/1";
+  /**
+   * ST text of VAR_GLOBAL ... END_VAR blocks.
+   */
+  globals?: string;
+  name: string;
+  pous?: Pou[];
+  tasks?: Task[];
+  /**
+   * ST text of TYPE ... END_TYPE blocks.
+   */
+  types?: string;
+}
+/**
+ * A program organisation unit. ``body`` is ST text, an ``LdBody`` or an ``FbdBody`` per ``language``.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "Pou".
+ */
+export interface Pou {
+  body?: string | LdBody | FbdBody;
+  /**
+   * ST text of the VAR...END_VAR blocks, as typed.
+   */
+  declarations?: string;
+  kind: "program" | "function_block" | "function";
+  language: "st" | "ld" | "fbd";
+  name: string;
+  /**
+   * Functions only: the result type.
+   */
+  return_type?: string | null;
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "LdBody".
+ */
+export interface LdBody {
+  networks?: LdNetwork[];
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "LdNetwork".
+ */
+export interface LdNetwork {
+  comment?: string | null;
+  elements?: (Contact | Compare | Coil | Parallel | Box | Jump | Return)[];
+  id: string;
+  label?: string | null;
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "Contact".
+ */
+export interface Contact {
+  /**
+   * Unique within the POU; the probe id for live power flow.
+   */
+  id: string;
+  mode?: "no" | "nc" | "p" | "n";
+  type?: "contact";
+  /**
+   * ST operand text of a BOOL variable, e.g. Start or %IX0.1.
+   */
+  var: string;
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "Compare".
+ */
+export interface Compare {
+  /**
+   * Unique within the POU; the probe id for live power flow.
+   */
+  id: string;
+  left: string;
+  op: "GT" | "GE" | "EQ" | "LE" | "LT" | "NE";
+  right: string;
+  type?: "compare";
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "Coil".
+ */
+export interface Coil {
+  /**
+   * Unique within the POU; the probe id for live power flow.
+   */
+  id: string;
+  mode?: "normal" | "negated" | "set" | "reset" | "p" | "n";
+  type?: "coil";
+  var: string;
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "Parallel".
+ */
+export interface Parallel {
+  /**
+   * Two or more series lists, ORed.
+   */
+  branches: (Contact | Compare | Coil | Parallel | Box | Jump | Return)[][];
+  /**
+   * Unique within the POU; the probe id for live power flow.
+   */
+  id: string;
+  type?: "parallel";
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "Box".
+ */
+export interface Box {
+  /**
+   * Function or function block type name, e.g. TON or ADD.
+   */
+  call: string;
+  en?: boolean;
+  /**
+   * Unique within the POU; the probe id for live power flow.
+   */
+  id: string;
+  /**
+   * Formal input name -> operand text, or a series list fed from the left rail.
+   */
+  inputs?: {
+    [k: string]: string | (Contact | Compare | Coil | Parallel | Box | Jump | Return)[];
+  };
+  /**
+   * FB instance variable (function blocks only).
+   */
+  instance?: string | null;
+  /**
+   * Formal output name -> variable.
+   */
+  outputs?: {
+    [k: string]: string;
+  };
+  type?: "box";
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "Jump".
+ */
+export interface Jump {
+  /**
+   * Unique within the POU; the probe id for live power flow.
+   */
+  id: string;
+  target: string;
+  type?: "jump";
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "Return".
+ */
+export interface Return {
+  /**
+   * Unique within the POU; the probe id for live power flow.
+   */
+  id: string;
+  type?: "return";
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "FbdBody".
+ */
+export interface FbdBody {
+  networks?: FbdNetwork[];
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "FbdNetwork".
+ */
+export interface FbdNetwork {
+  comment?: string | null;
+  id: string;
+  label?: string | null;
+  nodes?: (Block | InputNode | OutputNode | FbdJump | FbdReturn | Connector | Continuation)[];
+  /**
+   * Node ids fixing the execution order where the wiring leaves it open.
+   */
+  order?: string[] | null;
+  wires?: Wire[];
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "Block".
+ */
+export interface Block {
+  call: string;
+  en?: boolean;
+  id: string;
+  instance?: string | null;
+  pins?: {
+    [k: string]: PinFlags;
+  } | null;
+  pos?: Position | null;
+  type?: "block";
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "PinFlags".
+ */
+export interface PinFlags {
+  edge?: ("rising" | "falling") | null;
+  negated?: boolean;
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "Position".
+ */
+export interface Position {
+  x: number;
+  y: number;
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "InputNode".
+ */
+export interface InputNode {
+  /**
+   * A variable or literal in ST operand syntax.
+   */
+  expr: string;
+  id: string;
+  pos?: Position | null;
+  type?: "input";
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "OutputNode".
+ */
+export interface OutputNode {
+  id: string;
+  mode?: "normal" | "negated" | "set" | "reset" | "p" | "n";
+  pos?: Position | null;
+  type?: "output";
+  var: string;
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "FbdJump".
+ */
+export interface FbdJump {
+  id: string;
+  pos?: Position | null;
+  target: string;
+  type?: "jump";
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "FbdReturn".
+ */
+export interface FbdReturn {
+  id: string;
+  pos?: Position | null;
+  type?: "return";
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "Connector".
+ */
+export interface Connector {
+  id: string;
+  name: string;
+  pos?: Position | null;
+  type?: "connector";
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "Continuation".
+ */
+export interface Continuation {
+  id: string;
+  name: string;
+  pos?: Position | null;
+  type?: "continuation";
+}
+/**
+ * A connection from an output pin to an input pin (``from`` is a Python keyword, hence the alias).
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "Wire".
+ */
+export interface Wire {
+  from: PinRef;
+  to: PinRef;
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "PinRef".
+ */
+export interface PinRef {
+  node: string;
+  pin: string;
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "Task".
+ */
+export interface Task {
+  /**
+   * IEC TIME literal, e.g. T#10ms.
+   */
+  interval?: string;
+  name: string;
+  priority?: number;
+  /**
+   * Program names, run in list order.
+   */
+  programs?: string[];
 }
 /**
  * One row of ``GET /api/projects``.
@@ -18,4 +458,69 @@ export interface ProjectSummary {
   name: string;
   pou_count: number;
   revision: string;
+}
+/**
+ * Body of ``POST /api/projects/{name}/rename``.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "RenameProject".
+ */
+export interface RenameProject {
+  new_name: string;
+}
+/**
+ * Answer to a successful save: the new revision (also sent as the ``ETag`` header).
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "SaveResult".
+ */
+export interface SaveResult {
+  modified: string;
+  revision: string;
+}
+/**
+ * ``GET /api/projects/{name}/pous/{pou}/symbols``.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "SymbolTable".
+ */
+export interface SymbolTable {
+  /**
+   * Problems of this POU, the global declarations and the user types.
+   */
+  diagnostics: Diagnostic[];
+  globals: SymbolInfo[];
+  pou: string;
+  /**
+   * The POU's own declarations, in declaration order.
+   */
+  symbols: SymbolInfo[];
+}
+/**
+ * One declared variable, for the variable table and operand autocomplete.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "SymbolInfo".
+ */
+export interface SymbolInfo {
+  /**
+   * Direct address of an AT declaration, e.g. '%IX0.0'.
+   */
+  address: string | null;
+  comment: string | null;
+  constant: boolean;
+  /**
+   * Declared initial value (or the user type's), as ST text; null means the type's default.
+   */
+  initial: string | null;
+  name: string;
+  retain: boolean;
+  /**
+   * The type as declared, e.g. 'TON' or 'ARRAY[1..10] OF INT'.
+   */
+  type: string;
+  /**
+   * VAR, VAR_INPUT, VAR_OUTPUT, VAR_IN_OUT, VAR_EXTERNAL, VAR_TEMP or VAR_GLOBAL.
+   */
+  var_class: string;
 }
