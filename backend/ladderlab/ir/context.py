@@ -1,0 +1,150 @@
+"""``PouContext``: what every body lowering (ST, LD, FBD) of one POU shares.
+
+It owns the POU's slots (declared ones, then hidden ones added while lowering),
+maps checker symbols to IR variable accesses, and collects located diagnostics.
+One context per POU, so hidden slot names are unique within it.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from ..model.diagnostics import Diagnostic
+from ..st import ast
+from ..st import types as t
+from ..st.symbols import CheckResult, PouInfo, Symbol
+from .lower_types import LoweringError, TypeLowering, ir_default
+from .nodes import Origin, Slot, Stmt, Var, VarClass
+from .types import IrType
+
+#: Hidden slot names start with two underscores, which an IEC identifier cannot contain (LEX-11), so
+#: they never clash with declared names.
+HIDDEN_PREFIX = "__"
+
+
+class PouContext:
+    """The per-POU lowering state: checked symbols, slots, hidden slots, diagnostics.
+
+    ``info`` is None for the globals scope (initial values of VAR_GLOBAL).
+    Body lowerings read ``slots`` only through ``var_for``/``hidden``; the
+    project lowering builds the ``ir.Pou`` from them afterwards.
+    """
+
+    def __init__(self, checked: CheckResult, info: PouInfo | None, diagnostics: list[Diagnostic] | None = None):
+        self.checked = checked
+        self.info = info
+        self.name = info.name.upper() if info is not None else ""
+        self.diagnostics: list[Diagnostic] = diagnostics if diagnostics is not None else []
+        self.types = TypeLowering(checked, info)
+        self.slots: list[Slot] = []
+        self.edges: dict[str, Var] = {}  # R_EDGE/F_EDGE input name -> hidden slot holding the detected edge
+        self._taken: set[str] = set()
+        self._counters: dict[str, int] = {}
+        self._callees: dict[str, TypeLowering] = {}
+        # Statement-level state of the ST lowering: where calls with EN/ENO are lifted to (None: not allowed
+        # here), and how many variable reads / user function calls the current statement evaluated so far.
+        self.lifts: list[Stmt] | None = None
+        self.reads = 0
+        self.calls = 0
+
+    # ------------------------------------------------------------ diagnostics
+    def report(self, code: str, message: str, *, network: str | None = None, element: str | None = None,
+               pin: str | None = None, line: int | None = None, column: int | None = None,
+               end_line: int | None = None, end_column: int | None = None, file: str | None = None,
+               severity: str = "error") -> None:
+        """Append a located diagnostic for this POU (``file`` e.g. ``"Main/body"`` for ST line/column).
+
+        A diagnostic already in the list is not added again (a bad TYPE initial value
+        is met wherever the type is used).
+        """
+        diagnostic = Diagnostic(
+            severity=severity, code=code, message=message, file=file, network=network, element=element, pin=pin,
+            pou=self.info.name if self.info is not None and file != "types" else None, line=line, column=column,
+            end_line=end_line, end_column=end_column)
+        if diagnostic not in self.diagnostics:
+            self.diagnostics.append(diagnostic)
+
+    def report_at(self, code: str, message: str, node: Any, file: str | None = None) -> None:
+        """Report at an ST AST node's span (``file`` defaults to this POU's body text)."""
+        span = getattr(node, "span", None) or ast.NO_SPAN
+        if file is None and self.info is not None:
+            file = f"{self.info.name}/body"
+        self.report(code, message, file=file, line=span.line or None, column=span.column or None,
+                    end_line=span.end_line or None, end_column=span.end_column or None)
+
+    def report_error(self, error: LoweringError, fallback: Any = None, file: str | None = None, **where: Any) -> None:
+        """Report a ``LoweringError`` (silent when the checker already reported its cause).
+
+        Located at the error's AST node (or ``fallback``) in ``file`` (default: this POU's
+        ST body), or at ``where`` (``network=``, ``element=``, ``pin=``) for a diagram.
+        """
+        if error.message is None:
+            return
+        file = error.file or file
+        if where:
+            self.report(error.code, error.message, file=file, **where)
+        else:
+            self.report_at(error.code, error.message, error.node if error.node is not None else fallback, file)
+
+    def origin(self, node: Any) -> Origin:
+        """An ST statement's origin: this POU and the node's span (body-relative, 1-based)."""
+        span = getattr(node, "span", None) or ast.NO_SPAN
+        return Origin(self.name, span.line or None, span.column or None, span.end_line or None,
+                      span.end_column or None)
+
+    # ------------------------------------------------------------ types and slots
+    def ir_type(self, ty: t.Type) -> IrType:
+        """``lower_types.ir_type`` with this project's TYPE declarations (struct field initials, subranges)."""
+        return self.types.type_of(ty)
+
+    def types_for(self, pou: str | None) -> TypeLowering:
+        """Type lowering in the scope of another POU (a callee's parameter types and initial values)."""
+        key = (pou or "").upper()
+        if key == self.name:
+            return self.types
+        if key not in self._callees:
+            self._callees[key] = TypeLowering(self.checked, self.checked.pous.get(key))
+        return self._callees[key]
+
+    def add_slot(self, slot: Slot) -> None:
+        self.slots.append(slot)
+        self._taken.add(slot.name)
+
+    def hidden(self, hint: str, type: IrType, initial: object = None, var_class: VarClass = "VAR") -> Var:
+        """A new hidden slot (unique name from ``hint``), e.g. an edge memory or a power-flow temporary.
+
+        ``initial`` None means the type's default. VAR slots keep their value between calls;
+        pass ``var_class="VAR_TEMP"`` for a value that is recomputed before every use.
+        """
+        stem = HIDDEN_PREFIX + "".join(c if c.isalnum() else "_" for c in hint.upper())
+        name = stem
+        while name in self._taken:
+            self._counters[stem] = self._counters.get(stem, 0) + 1
+            name = f"{stem}_{self._counters[stem]}"
+        if initial is None:
+            initial = ir_default(type)
+        self.add_slot(Slot(name, var_class, type, initial, hidden=True))
+        return Var("local", name, type)
+
+    def var_for(self, symbol: Symbol) -> Var:
+        """The IR access of a declared variable: a local slot, or a global (VAR_GLOBAL, VAR_EXTERNAL).
+
+        Inside a POU an R_EDGE/F_EDGE input reads as its detected edge (a hidden slot).
+        """
+        if symbol.address is not None and symbol.name == symbol.address:
+            raise LoweringError(f"the directly represented variable {symbol.address} has no name: declare it "
+                                f"as 'name AT {symbol.address} : type' (unnamed ones are not supported yet)")
+        upper = symbol.name.upper()
+        if symbol.pou is None or symbol.var_class == "VAR_EXTERNAL":
+            target = self.checked.globals.get(upper, symbol)
+            return Var("global", upper, self.types.type_of(target.type, target.type_spec))
+        if upper in self.edges and self.info is not None and symbol.pou.upper() == self.name:
+            return self.edges[upper]
+        return Var("local", upper, self.types.type_of(symbol.type, symbol.type_spec))
+
+    def result_var(self) -> Var:
+        """The result slot of the FUNCTION being lowered (assigning the function's name)."""
+        if self.info is None or self.info.return_type is None:
+            raise LoweringError(None)
+        return Var("local", self.name, self.types.type_of(self.info.return_type))
+

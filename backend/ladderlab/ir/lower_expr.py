@@ -1,0 +1,400 @@
+"""Typed ST expressions (checked AST, every node has ``.ty``) -> IR expressions.
+
+Mirrors the checker's typing (st/body.py, st/calls.py): operands of one operator
+are brought to the type the checker combined them in, inserting ``Convert`` for
+the implicit widenings it accepted; untyped literals take that type directly.
+Decisions (docs/ir.md "ST lowering"):
+
+* a STRING of any length and a Subrange count as one type with STRING / their base,
+  so they never get a ``Convert``;
+* explicit ``*_TO_*`` conversions and TRUNC stay standard ``Call``s, ``Convert`` is only
+  an implicit widening (which never changes the Python value);
+* operators on mixed time operands (TOD + TIME, DT - DT, TIME * INT ...) become calls of
+  their FUN-85 functions (``ADD_TOD_TIME``, ``MUL_TIME`` ...) via the runtime's
+  ``OPERATOR_OVERLOADS``; ``ANY_NUM * TIME`` is ``MUL_TIME(time, number)``;
+  STRING ``+`` is ``CONCAT``; ``**`` on two types is ``EXPT``; ``MOVE(x)`` is ``x``;
+* a call with EN/ENO is lifted into a ``FnCall`` statement writing a hidden temporary,
+  where the statement lowering allows it (``ctx.lifts``) and evaluation order is kept.
+"""
+
+from __future__ import annotations
+
+from ..engine.stdlib.timefuncs import OPERATOR_OVERLOADS
+from ..st import ast, stdlib
+from ..st import types as t
+from ..st.elementary import DEFAULT_STRING_LENGTH, GENERIC
+from ..st.rules import EnumValue, constant_value
+from ..st.symbols import PouInfo, Symbol
+from .context import PouContext
+from .lower_types import LoweringError, engine_value, ir_default
+from .nodes import Assign, Binary, Call, Const, Convert, Expr, FnCall, Index, Member, Unary, Var
+from .types import BOOL, Elementary, Enum, FbInstance, IrType, Struct, Subrange
+
+_OPERATORS = {"+": "ADD", "-": "SUB", "*": "MUL", "/": "DIV", "MOD": "MOD", "**": "EXPT", "AND": "AND",
+              "OR": "OR", "XOR": "XOR", "=": "EQ", "<>": "NE", "<": "LT", ">": "GT", "<=": "LE", ">=": "GE"}
+_LITERAL_TARGETS = ("bool", "int", "bits", "real")  # what an untyped literal may become (types.assignable)
+_TIME_CATEGORIES = {"time", "tod", "dt", "date"}
+
+
+def lower_expr(node: ast.Expr, ctx: PouContext, expected: IrType | None = None) -> Expr:
+    """The IR of a checked expression; ``expected`` is the type an untyped literal should take.
+
+    Raises ``LoweringError`` for what the engine cannot run yet (pointers, unnamed
+    direct addresses ...) and for nodes the checker typed as errors; report it with
+    ``ctx.report_error``.
+    """
+    ty = node.ty
+    if ty is None or ty is t.ERROR or ty is t.VOID:
+        raise LoweringError(None)
+    if isinstance(ty, (t.UntypedInt, t.UntypedReal)):
+        return _untyped(node, ctx, expected)
+    if isinstance(node, (ast.BoolLit, ast.StringLit, ast.TimeLit, ast.TypedLit)):
+        return _literal(node, ctx)
+    if isinstance(node, ast.Name) and isinstance(node.ref, EnumValue):
+        return Const(node.ref.value, ctx.ir_type(ty))
+    if isinstance(node, ast.Member) and node.name.isdigit():
+        return _bit(node, ctx)
+    if isinstance(node, (ast.Name, ast.DirectAddr, ast.Member, ast.Index, ast.Deref)):
+        return lower_access(node, ctx)
+    if isinstance(node, ast.Unary):
+        return _unary(node, ctx)
+    if isinstance(node, ast.Binary):
+        return _binary(node, ctx)
+    return _call(node, ctx)
+
+
+def lower_to(node: ast.Expr, ctx: PouContext, target: IrType) -> Expr:
+    """``node`` as a value of ``target``: untyped literals take it, accepted widenings get a ``Convert``."""
+    return convert(lower_expr(node, ctx, target), target)
+
+
+def convert(expr: Expr, target: IrType) -> Expr:
+    source = expr.type  # type: ignore[union-attr]
+    if isinstance(source, Elementary | Subrange) and isinstance(target, Elementary | Subrange) \
+            and value_type(source) != value_type(target):
+        return Convert(expr, value_type(source), value_type(target))
+    return expr
+
+
+def value_type(ty: IrType) -> IrType:
+    """The type a value computes in: a Subrange's base, STRING whatever its length."""
+    if isinstance(ty, Subrange):
+        return ty.base
+    if isinstance(ty, Elementary) and ty.length is not None:
+        return Elementary(ty.name)
+    return ty
+
+
+# ---------------------------------------------------------------- literals and constants
+
+
+def _untyped(node: ast.Expr, ctx: PouContext, expected: IrType | None) -> Expr:
+    """An expression of untyped literals (``5``, ``-2.5``, ``3 * 4``) folded into a constant of the target type."""
+    target = _literal_target(node.ty, ctx, expected)
+    value = constant_value(ctx.types.constants, node)
+    if value is None:  # e.g. NOT 5: compute it in the target type
+        if isinstance(node, ast.Unary):
+            return Unary("NOT" if node.op == "NOT" else "NEG", lower_to(node.operand, ctx, target), target)
+        if isinstance(node, ast.Binary):
+            return Binary(_OPERATORS[node.op], lower_to(node.left, ctx, target), lower_to(node.right, ctx, target),
+                          target)
+        raise LoweringError(None)
+    return Const(engine_value(value, target), target)
+
+
+def _literal_target(ty: t.Type, ctx: PouContext, expected: IrType | None) -> IrType:
+    base = value_type(expected) if expected is not None else None
+    if isinstance(base, Elementary) and base.info.category in _LITERAL_TARGETS:
+        if isinstance(ty, t.UntypedInt) or base.info.category == "real":
+            return expected  # type: ignore[return-value]
+    return ctx.ir_type(t.concrete(ty))
+
+
+def _literal(node: ast.Expr, ctx: PouContext) -> Const:
+    if isinstance(node, ast.StringLit):
+        length = len(node.value) if len(node.value) > DEFAULT_STRING_LENGTH else None
+        return Const(node.value, Elementary("STRING", length))
+    ty = ctx.ir_type(node.ty)
+    raw = ctx.types.raw_constant(node)
+    if raw is None:
+        raise LoweringError(None)
+    return Const(engine_value(raw, ty), ty)
+
+
+# ---------------------------------------------------------------- variables
+
+
+def lower_access(node: ast.Expr, ctx: PouContext) -> Var:
+    """A variable access path: a declared variable, then ``[i]`` and ``.field`` / ``.PIN`` selectors."""
+    if isinstance(node, (ast.Name, ast.DirectAddr)):
+        ref = node.ref
+        if isinstance(ref, Symbol):
+            ctx.reads += 1
+            return ctx.var_for(ref)
+        if isinstance(ref, PouInfo):
+            return ctx.result_var()
+        if isinstance(node, ast.DirectAddr):
+            raise LoweringError(f"the directly represented variable {node.address} has no name: declare it as "
+                                f"'name AT {node.address} : type' (unnamed ones are not supported yet)", node)
+        raise LoweringError(None)
+    if isinstance(node, ast.Member) and not node.name.isdigit():
+        base = lower_access(node.base, ctx)
+        return Var(base.scope, base.name, _member_type(node, base.type, ctx), (*base.path, Member(node.name.upper())))
+    if isinstance(node, ast.Index):
+        return _index(node, ctx)
+    if isinstance(node, ast.Deref):
+        raise LoweringError("pointers (POINTER TO, REF_TO, ADR, REF, ^) are not supported by the engine yet", node)
+    if isinstance(node, ast.Member):
+        raise LoweringError("a bit of a variable (x.3) can be read or assigned, but not passed by reference", node)
+    raise LoweringError("only a variable, array element or field can be used here: assign this value to a variable "
+                        "first", node)
+
+
+def _member_type(node: ast.Member, base: IrType, ctx: PouContext) -> IrType:
+    upper = node.name.upper()
+    if isinstance(base, Struct):
+        for field in base.fields:
+            if field.name == upper:
+                return field.type
+        raise LoweringError(None)
+    if isinstance(base, FbInstance) and isinstance(node.ref, Symbol):  # a user FB's input or output
+        return ctx.types_for(node.ref.pou).type_of(node.ref.type, node.ref.type_spec)
+    if isinstance(base, FbInstance):  # a standard FB's pin, or EN / ENO
+        return ctx.ir_type(node.ty)
+    raise LoweringError(None)
+
+
+def _index(node: ast.Index, ctx: PouContext) -> Var:
+    if isinstance(node.base.ty, t.StringType):
+        raise LoweringError("indexing a STRING is not supported: use MID(s, 1, i) to get one character", node)
+    if isinstance(node.base.ty, t.PointerType):
+        raise LoweringError("pointers (POINTER TO, REF_TO, ADR, REF, ^) are not supported by the engine yet", node)
+    base = lower_access(node.base, ctx)
+    if not hasattr(base.type, "element"):
+        raise LoweringError(None)
+    indices = tuple(lower_expr(index, ctx) for index in node.indices)
+    return Var(base.scope, base.name, base.type.element, (*base.path, Index(indices)))  # type: ignore[union-attr]
+
+
+def bit_mask(node: ast.Member, ctx: PouContext) -> tuple[Var, Const]:
+    """``x.3`` -> (the variable x, the constant with bit 3 set in x's type)."""
+    var = lower_access(node.base, ctx)
+    ty = value_type(var.type)
+    if not isinstance(ty, Elementary) or not ty.info.bits or int(node.name) >= ty.info.bits:
+        raise LoweringError(None)
+    return var, Const(engine_value(1 << int(node.name), ty), ty)
+
+
+def _bit(node: ast.Member, ctx: PouContext) -> Expr:
+    """Bit access ``x.3`` reads as ``(x AND 2#1000) <> 0``."""
+    var, mask = bit_mask(node, ctx)
+    if mask.type == BOOL:
+        return var
+    return Binary("NE", Binary("AND", var, mask, mask.type), Const(0, mask.type), BOOL)
+
+
+# ---------------------------------------------------------------- operators
+
+
+def _unary(node: ast.Unary, ctx: PouContext) -> Expr:
+    ty = ctx.ir_type(node.ty)
+    return Unary("NOT" if node.op == "NOT" else "NEG", lower_to(node.operand, ctx, ty), ty)
+
+
+def _binary(node: ast.Binary, ctx: PouContext) -> Expr:
+    op = _OPERATORS[node.op]
+    left_ty, right_ty = node.left.ty, node.right.ty
+    if op == "EXPT":
+        return _power(node, ctx)
+    if t.category(left_ty) == "string" and op == "ADD":  # FUN-82: '+' concatenates
+        return _function("CONCAT", [node.left, node.right], ctx, ctx.ir_type(node.ty))
+    if op in ("ADD", "SUB", "MUL", "DIV") and {t.category(left_ty), t.category(right_ty)} & _TIME_CATEGORIES:
+        mixed = _time_operator(node, op, ctx)
+        if mixed is not None:
+            return mixed
+    combined, _ = t.common(left_ty, right_ty)
+    operand = ctx.ir_type(t.concrete(combined))
+    result = ctx.ir_type(node.ty) if op in ("EQ", "NE", "LT", "GT", "LE", "GE") else operand
+    return Binary(op, lower_to(node.left, ctx, operand), lower_to(node.right, ctx, operand), result)  # type: ignore[arg-type]
+
+
+def _time_operator(node: ast.Binary, op: str, ctx: PouContext) -> Expr | None:
+    """TOD + TIME, DT - DT, TIME * ANY_NUM ...: the FUN-85 function behind the operator (None: TIME +/- TIME)."""
+    left, right = (ctx.ir_type(t.concrete(x)) for x in (node.left.ty, node.right.ty))
+    result = ctx.ir_type(node.ty)
+    if value_type(left) == value_type(right) == value_type(result):
+        return None
+    operands = [node.left, node.right]
+    if op == "MUL" and t.category(node.right.ty) == "time":  # ANY_NUM * TIME = MUL_TIME(TIME, ANY_NUM)
+        operands.reverse()
+        left, right = right, left
+    name = OPERATOR_OVERLOADS.get((op, (_category(left), _category(right))))
+    if name is None:
+        raise LoweringError(None)
+    return _function(name, operands, ctx, result, (left, right))
+
+
+def _category(ty: IrType) -> str:
+    base = value_type(ty)
+    return base.info.category if isinstance(base, Elementary) else ""
+
+
+def _power(node: ast.Binary, ctx: PouContext) -> Expr:
+    """``a ** b``: one Binary when both are the same type (a literal exponent takes the base's), else EXPT."""
+    result = ctx.ir_type(node.ty)
+    if isinstance(node.right.ty, (t.UntypedInt, t.UntypedReal)) or t.same(node.left.ty, node.right.ty):
+        return Binary("EXPT", lower_to(node.left, ctx, result), lower_to(node.right, ctx, result), result)
+    exponent = ctx.ir_type(node.right.ty)
+    return _function("EXPT", [node.left, node.right], ctx, result, (result, exponent))
+
+
+def _function(name: str, operands: list[ast.Expr], ctx: PouContext, result: IrType,
+              arg_types: tuple[IrType, ...] | None = None) -> Call:
+    types = arg_types or (result,) * len(operands)
+    args = tuple(lower_to(operand, ctx, ty) for operand, ty in zip(operands, types))
+    return Call(name, args, tuple(types), result)
+
+
+# ---------------------------------------------------------------- calls
+
+
+def _call(node: ast.Call, ctx: PouContext) -> Expr:
+    ref = node.ref
+    if isinstance(ref, PouInfo) and ref.kind == "PROGRAM":
+        raise LoweringError(f"calling the program {ref.name} from ST is not supported by the engine yet: run it "
+                            "from a task", node)
+    if ref is None and isinstance(node.callee, ast.Name) and node.callee.name.upper() in ("ADR", "REF", "SIZEOF"):
+        raise LoweringError(f"{node.callee.name.upper()} is not supported by the engine yet", node)
+    en, eno = _en_eno(node)
+    before = (ctx.reads, ctx.calls)
+    if isinstance(ref, stdlib.StdFunction):
+        if ref.name == "MOVE" and en is None and eno is None:  # FUN-32: MOVE is an assignment
+            return lower_expr(_arguments(node)[0].value, ctx, ctx.ir_type(node.ty))
+        call = std_call(node, ctx)
+    elif isinstance(ref, PouInfo) and ref.kind == "FUNCTION":
+        call = user_call(node, ctx)
+    else:
+        raise LoweringError(None)
+    if en is None and eno is None:
+        return call
+    return _lift(node, call, en, eno, before, ctx)
+
+
+def _en_eno(node: ast.Call) -> tuple[ast.Arg | None, ast.Arg | None]:
+    en = next((a for a in node.args if a.name is not None and a.name.upper() == "EN" and not a.output), None)
+    eno = next((a for a in node.args if a.name is not None and a.name.upper() == "ENO" and a.output), None)
+    return en, eno
+
+
+def _arguments(node: ast.Call) -> list[ast.Arg]:
+    """The call's arguments without EN and ENO."""
+    return [a for a in node.args if a.name is None or a.name.upper() not in ("EN", "ENO")]
+
+
+def lower_en_eno(node: ast.Call, ctx: PouContext) -> tuple[Expr | None, Var | None, list[Assign]]:
+    """EN as a BOOL expression, ENO as a variable; ``NOT ENO => x`` needs an Assign after the call."""
+    en, eno = _en_eno(node)
+    en_expr = lower_to(en.value, ctx, BOOL) if en is not None else None
+    if eno is None:
+        return en_expr, None, []
+    target = lower_access(eno.value, ctx)
+    if not eno.negated:
+        return en_expr, target, []
+    flag = ctx.hidden("ENO", BOOL, var_class="VAR_TEMP")
+    return en_expr, flag, [Assign(target, Unary("NOT", flag, BOOL), ctx.origin(eno))]
+
+
+def _lift(node: ast.Call, call: Call, en: ast.Arg | None, eno: ast.Arg | None, before: tuple[int, int],
+          ctx: PouContext) -> Var:
+    """Evaluate a call with EN/ENO as a ``FnCall`` before the statement, into a hidden temporary."""
+    where = "inside this statement"
+    if ctx.lifts is None:
+        where = "here"
+    elif before[1] or (call.user and before[0]):
+        where = "after the values this statement computes before it"
+    if ctx.lifts is None or before[1] or (call.user and before[0]):
+        raise LoweringError(f"a call with EN or ENO cannot be evaluated {where} in the right order: assign its "
+                            "result to a variable in a statement of its own first", node, code="IR-EN-CALL")
+    en_expr, eno_var, after = lower_en_eno(node, ctx)
+    result = ctx.hidden(f"{call.function}_RESULT", call.type)
+    ctx.lifts.append(FnCall(call, result, ctx.origin(node), en_expr, eno_var))
+    ctx.lifts.extend(after)
+    return result
+
+
+def std_call(node: ast.Call, ctx: PouContext) -> Call:
+    """A standard function call, arguments in IEC formal order (docs/runtime.md), missing ones as defaults."""
+    function: stdlib.StdFunction = node.ref
+    bound: dict[int, ast.Arg] = {}
+    for position, arg in enumerate(_arguments(node)):
+        index = position if arg.name is None else _position(function, arg.name)
+        if index is None:
+            raise LoweringError(None)
+        bound[index] = arg
+    count = max(len(function.inputs), max(bound, default=-1) + 1)
+    generic = _generic_type(function, node, bound, ctx)
+    args, types = [], []
+    for index in range(count):
+        pin = function.pin(function.input_name(index))  # type: ignore[arg-type]
+        arg = bound.get(index)
+        if pin.generic:
+            target = generic
+        elif pin.type in GENERIC:  # ANY_INT positions and counts, ANY_NUM factors: the argument's own type
+            target = ctx.ir_type(t.concrete(arg.value.ty)) if arg is not None else Elementary("INT")
+        else:
+            target = ctx.ir_type(t.elementary(pin.type))
+        args.append(lower_to(arg.value, ctx, target) if arg is not None else Const(ir_default(target), target))
+        types.append(target)
+    return Call(function.name, tuple(args), tuple(types), ctx.ir_type(node.ty))
+
+
+def _position(function: stdlib.StdFunction, name: str) -> int | None:
+    upper = name.upper()
+    for index, pin in enumerate(function.inputs):
+        if pin.name == upper:
+            return index
+    if function.pin(upper) is None:
+        return None
+    last = function.inputs[-1].name
+    stem = last.rstrip("0123456789")
+    return len(function.inputs) - 1 + int(upper[len(stem):]) - int(last[len(stem):])
+
+
+def _generic_type(function: stdlib.StdFunction, node: ast.Call, bound: dict[int, ast.Arg],
+                  ctx: PouContext) -> IrType:
+    """The type T the generic inputs share, combined as the checker does (st/calls.py, FUN-02)."""
+    shared: t.Type | None = None
+    for index in sorted(bound):
+        pin = function.pin(function.input_name(index))  # type: ignore[arg-type]
+        if pin is not None and pin.generic:
+            ty = bound[index].value.ty
+            shared = ty if shared is None else t.common(shared, ty)[0]
+    if shared is None:
+        return ctx.ir_type(node.ty) if function.result == stdlib.T else Elementary("INT")
+    return ctx.ir_type(t.concrete(shared))
+
+
+def user_call(node: ast.Call, ctx: PouContext) -> Call:
+    """A user function: inputs in VAR_INPUT order (omitted ones as their initial values), then the in-outs."""
+    pou: PouInfo = node.ref
+    callee = ctx.types_for(pou.name)
+    parameters = pou.parameters("VAR_INPUT", "VAR_IN_OUT")
+    given: dict[str, ast.Expr] = {}
+    for position, arg in enumerate(_arguments(node)):
+        if arg.name is None and position >= len(parameters):
+            raise LoweringError(None)
+        given[(arg.name or parameters[position].name).upper()] = arg.value
+    args, types, in_outs = [], [], []
+    for symbol in parameters:
+        ty = callee.type_of(symbol.type, symbol.type_spec)
+        value = given.get(symbol.name.upper())
+        if symbol.var_class == "VAR_IN_OUT":
+            if value is None:
+                raise LoweringError(None)
+            in_outs.append(lower_access(value, ctx))
+            continue
+        initial = callee.initial(symbol.type, symbol.type_spec, symbol.init)
+        args.append(lower_to(value, ctx, ty) if value is not None else Const(initial, ty))
+        types.append(ty)
+    ctx.calls += 1
+    return Call(pou.name.upper(), tuple(args), tuple(types), callee.type_of(pou.return_type), True, tuple(in_outs))

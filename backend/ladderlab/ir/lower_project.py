@@ -1,0 +1,151 @@
+"""A whole project -> ``ir.Program``: the globals, every POU (slots and body blocks) and the tasks.
+
+Bodies are lowered by language through ``LOWER_BODY`` (ST here; the LD and FBD
+lowerings register themselves). The diagnostics are the project's whole check
+(``validate_project`` + the ST checker, as ``ladderlab.check``) plus the
+lowering's own; ``program`` is None as soon as any of them is an error.
+
+Tasks: ``project.tasks`` as given; a project without tasks runs every PROGRAM,
+in project order, in one cyclic task ``DEFAULT_TASK`` every 10 ms (issue 4: a
+single ``.st`` file without a configuration).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from ..model.diagnostics import Diagnostic, has_errors
+from ..model.project import Pou as ModelPou
+from ..model.project import Project
+from ..model.validate import validate_project
+from ..st.checker import check_project
+from ..st import types as st_types
+from ..st.literals import decode_duration
+from ..st.symbols import CheckResult, PouInfo, Symbol
+from .context import PouContext
+from .lower_st import lower_st_body
+from .lower_types import LoweringError, ir_default
+from .nodes import Assign, Binary, Block, Origin, Pou, Program, Slot, Stmt, TaskSpec, Unary, Var
+from .types import BOOL
+
+#: Body lowering per ``Pou.language``; the LD and FBD lowerings add "ld" and "fbd".
+LOWER_BODY: dict[str, Callable[[ModelPou, PouContext], list[Block]]] = {"st": lower_st_body}
+
+#: The task of a project without a task configuration: every PROGRAM once per scan, every 10 ms.
+DEFAULT_TASK = "DEFAULT"
+DEFAULT_INTERVAL_MS = 10
+
+_KIND = {"PROGRAM": "program", "FUNCTION_BLOCK": "function_block", "FUNCTION": "function"}
+
+
+@dataclass
+class LoweringResult:
+    program: Program | None
+    diagnostics: list[Diagnostic]
+
+
+def lower_project(project: Project, checked: CheckResult | None = None) -> LoweringResult:
+    """Check (unless ``checked`` is given) and lower ``project``; never raises for any project content."""
+    if checked is None:
+        checked = check_project(project)
+    diagnostics = validate_project(project) + list(checked.diagnostics)
+    globals_ = lower_globals(checked, diagnostics)
+    pous: dict[str, Pou] = {}
+    for pou in project.pous:
+        info = checked.pou(pou.name)
+        if info is not None and info.name == pou.name:  # not a duplicate (reported by the checker)
+            pous[pou.name.upper()] = lower_pou(pou, info, checked, diagnostics)
+    program = Program(pous, globals_, lower_tasks(project, pous))
+    return LoweringResult(None if has_errors(diagnostics) else program, diagnostics)
+
+
+def lower_globals(checked: CheckResult, diagnostics: list[Diagnostic]) -> list[Slot]:
+    ctx = PouContext(checked, None, diagnostics)
+    slots = (_slot(symbol, ctx, "globals") for symbol in checked.globals.values() if symbol.var_class == "VAR_GLOBAL")
+    return [slot for slot in slots if slot is not None]
+
+
+def lower_pou(pou: ModelPou, info: PouInfo, checked: CheckResult, diagnostics: list[Diagnostic]) -> Pou:
+    """One POU: a slot per declared variable (not VAR_EXTERNAL), the function result, the body blocks."""
+    ctx = PouContext(checked, info, diagnostics)
+    for symbol in info.symbols.values():
+        if symbol.var_class != "VAR_EXTERNAL":
+            slot = _slot(symbol, ctx, f"{info.name}/declarations")
+            if slot is not None:
+                ctx.add_slot(slot)
+    return_type = None
+    if info.kind == "FUNCTION" and info.return_type is not None:
+        try:
+            return_type = ctx.types.type_of(info.return_type)
+            ctx.add_slot(Slot(ctx.name, "VAR_OUTPUT", return_type, ir_default(return_type)))
+        except LoweringError as error:
+            ctx.report_error(error, file=f"{info.name}/declarations")
+    preamble = edge_preamble(ctx)
+    lower = LOWER_BODY.get(pou.language)
+    blocks: list[Block] = []
+    if lower is None:
+        ctx.report("IR-UNSUPPORTED", f"{pou.language.upper()} POUs cannot be run yet")
+    else:
+        blocks = lower(pou, ctx)
+    if preamble:
+        if pou.language == "st" and blocks:
+            blocks[0].statements[:0] = preamble
+        else:
+            blocks.insert(0, Block(preamble, Origin(ctx.name)))
+    return Pou(ctx.name, _KIND[info.kind], ctx.slots, blocks, return_type, pou.language)  # type: ignore[arg-type]
+
+
+def _slot(symbol: Symbol, ctx: PouContext, file: str) -> Slot | None:
+    if symbol.address is not None and symbol.name == symbol.address:
+        ctx.report_at("IR-UNSUPPORTED", f"the directly represented variable {symbol.address} has no name: declare "
+                      f"it as 'name AT {symbol.address} : type' (unnamed ones are not supported yet)", symbol, file)
+        return None
+    try:
+        return ctx.types.slot(symbol)
+    except LoweringError as error:
+        ctx.report_error(error, symbol, file)
+        return None
+
+
+def edge_preamble(ctx: PouContext) -> list[Stmt]:
+    """R_EDGE / F_EDGE inputs (VAR-22): a hidden memory of the input and a hidden edge flag the body reads.
+
+    ``edge := x AND NOT m`` (F_EDGE: ``NOT x AND m``) then ``m := x``, before the body.
+    The input itself keeps the caller's value, so a call that does not pass it
+    sees no new edge; the first call with a TRUE input is a rising edge, like R_TRIG.
+    """
+    out: list[Stmt] = []
+    if ctx.info is None or ctx.info.kind == "FUNCTION":
+        return out
+    origin = Origin(ctx.name)
+    for symbol in ctx.info.symbols.values():
+        if symbol.edge is None or symbol.var_class != "VAR_INPUT" or symbol.type != st_types.BOOL:
+            continue
+        upper = symbol.name.upper()
+        raw = Var("local", upper, BOOL)
+        memory = ctx.hidden(f"{upper}_{symbol.edge}_M", BOOL)
+        edge = ctx.hidden(f"{upper}_{symbol.edge}", BOOL, var_class="VAR_TEMP")
+        if symbol.edge == "R_EDGE":
+            detected = Binary("AND", raw, Unary("NOT", memory, BOOL), BOOL)
+        else:
+            detected = Binary("AND", Unary("NOT", raw, BOOL), memory, BOOL)
+        out += [Assign(edge, detected, origin), Assign(memory, raw, origin)]
+        ctx.edges[upper] = edge
+    return out
+
+
+def lower_tasks(project: Project, pous: dict[str, Pou]) -> list[TaskSpec]:
+    """``project.tasks`` with intervals in ms; without tasks, ``DEFAULT_TASK`` runs every PROGRAM."""
+    if not project.tasks:
+        programs = [name for name, pou in pous.items() if pou.kind == "program"]
+        return [TaskSpec(DEFAULT_TASK, DEFAULT_INTERVAL_MS, 0, programs)] if programs else []
+    tasks = []
+    for task in project.tasks:
+        try:
+            interval = round(decode_duration(task.interval.replace(" ", "")))
+        except (ValueError, IndexError):  # validate_project reported BAD-INTERVAL
+            continue
+        tasks.append(TaskSpec(task.name.upper(), interval, task.priority,
+                              [name.upper() for name in task.programs if name.upper() in pous]))
+    return tasks

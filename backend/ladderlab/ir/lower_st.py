@@ -1,0 +1,262 @@
+"""ST statements -> IR statements; an ST body is one unlabelled ``Block`` (docs/ir.md invariant 4).
+
+Every statement gets the ``Origin`` of its span. A statement that cannot be
+lowered is dropped with a located diagnostic and the rest of the body is still
+lowered, so one pass reports every problem. Calls with EN/ENO nested in a
+statement's expressions are lifted into ``FnCall``s placed before it (see
+``lower_expr._lift``); where that would change when they run (ELSIF, WHILE and
+UNTIL conditions) they are refused with ``IR-EN-CALL``.
+"""
+
+from __future__ import annotations
+
+from ..model.project import Pou as ModelPou
+from ..st import ast, stdlib
+from ..st import types as t
+from ..st.symbols import PouInfo, Symbol
+from .context import PouContext
+from .lower_expr import (
+    bit_mask,
+    convert,
+    lower_access,
+    lower_en_eno,
+    lower_expr,
+    lower_to,
+    std_call,
+    user_call,
+    value_type,
+)
+from .lower_types import LoweringError, engine_value
+from .nodes import (
+    Assign,
+    Binary,
+    Block,
+    Call,
+    Case,
+    CaseLabel,
+    Const,
+    Exit,
+    Expr,
+    FbCall,
+    FnCall,
+    For,
+    If,
+    Member,
+    Origin,
+    Repeat,
+    Return,
+    Stmt,
+    Unary,
+    Var,
+    While,
+)
+from .types import BOOL, IrType
+
+
+def lower_st_body(pou: ModelPou, ctx: PouContext) -> list[Block]:
+    """The checked body of an ST POU as one block (no block when it did not parse)."""
+    body = ctx.info.body if ctx.info is not None else None
+    if body is None:
+        return []
+    origin = Origin(ctx.name)
+    if body:
+        first, last = body[0].span, body[-1].span
+        origin = Origin(ctx.name, first.line or None, first.column or None, last.end_line or None,
+                        last.end_column or None)
+    return [Block(lower_statements(body, ctx), origin)]
+
+
+def lower_statements(statements: list[ast.Stmt], ctx: PouContext) -> list[Stmt]:
+    out: list[Stmt] = []
+    for statement in statements:
+        out += _statement(statement, ctx)
+    return out
+
+
+def _statement(statement: ast.Stmt, ctx: PouContext) -> list[Stmt]:
+    """One statement, preceded by the FnCalls lifted out of its expressions; nothing if it cannot be lowered."""
+    saved = ctx.lifts, ctx.reads, ctx.calls
+    lifted: list[Stmt] = []
+    ctx.lifts, ctx.reads, ctx.calls = lifted, 0, 0
+    try:
+        lowered = _LOWER[type(statement)](statement, ctx)
+    except LoweringError as error:
+        ctx.report_error(error, statement)
+        return []
+    finally:
+        ctx.lifts, ctx.reads, ctx.calls = saved
+    return lifted + lowered
+
+
+# ---------------------------------------------------------------- assignments and calls
+
+
+def _assign(statement: ast.Assign, ctx: PouContext) -> list[Stmt]:
+    origin = ctx.origin(statement)
+    target, value = statement.target, statement.value
+    if isinstance(target, ast.Member) and target.name.isdigit():
+        return [_assign_bit(target, value, ctx, origin)]
+    if isinstance(value, ast.Call) and _has_en_eno(value) and _is_function(value.ref):
+        call = _function_call(value, ctx)
+        en, eno, after = lower_en_eno(value, ctx)
+        return [FnCall(call, lower_access(target, ctx), origin, en, eno), *after]
+    lowered = lower_to(value, ctx, ctx.ir_type(target.ty))  # the value is computed before the target is stored
+    return [Assign(lower_access(target, ctx), lowered, origin)]
+
+
+def _assign_bit(target: ast.Member, value: ast.Expr, ctx: PouContext, origin: Origin) -> Assign:
+    """``x.3 := b`` is ``x := SEL(b, x AND NOT 2#1000, x OR 2#1000)``."""
+    bit = lower_to(value, ctx, BOOL)
+    var, mask = bit_mask(target, ctx)
+    ty = mask.type
+    cleared = Binary("AND", var, Const(engine_value(~mask.value, ty), ty), ty)  # type: ignore[operator]
+    return Assign(var, Call("SEL", (bit, cleared, Binary("OR", var, mask, ty)), (BOOL, ty, ty), ty), origin)
+
+
+def _call_statement(statement: ast.CallStmt, ctx: PouContext) -> list[Stmt]:
+    call = statement.call
+    if not isinstance(call, ast.Call):
+        raise LoweringError(None)
+    if isinstance(call.ref, Symbol):
+        return _fb_call(call, ctx, ctx.origin(statement))
+    if not _is_function(call.ref):
+        lower_expr(call, ctx)  # reports what is not supported (program calls ...)
+        raise LoweringError(None)
+    lowered = _function_call(call, ctx)
+    en, eno, after = lower_en_eno(call, ctx)
+    return [FnCall(lowered, None, ctx.origin(statement), en, eno), *after]
+
+
+def _is_function(ref: object) -> bool:
+    return isinstance(ref, stdlib.StdFunction) or isinstance(ref, PouInfo) and ref.kind == "FUNCTION"
+
+
+def _has_en_eno(call: ast.Call) -> bool:
+    return any(a.name is not None and a.name.upper() in ("EN", "ENO") for a in call.args)
+
+
+def _function_call(call: ast.Call, ctx: PouContext) -> Call:
+    return std_call(call, ctx) if isinstance(call.ref, stdlib.StdFunction) else user_call(call, ctx)
+
+
+def _fb_call(call: ast.Call, ctx: PouContext, origin: Origin) -> list[Stmt]:
+    """``inst(IN := x, PT := T#5s, Q => y)``: inputs by name, ``=>`` outputs copied out after the call.
+
+    An output that needs a conversion or is negated (``NOT Q => y``) becomes an
+    Assign after the call; with EN those run only when the call ran (ENO).
+    """
+    fb = call.callee.ty
+    if not isinstance(fb, t.FbType):
+        raise LoweringError(None)
+    instance = lower_access(call.callee, ctx)
+    pins = _pins(fb, ctx)
+    order = [name for name, (_, kind) in pins.items() if kind != "VAR_OUTPUT"]
+    inputs: list[tuple[str, Expr]] = []
+    outputs: list[tuple[str, Var]] = []
+    copies: list[Stmt] = []
+    arguments = [a for a in call.args if a.name is None or a.name.upper() not in ("EN", "ENO")]
+    for position, arg in enumerate(arguments):
+        name = arg.name.upper() if arg.name is not None else order[position] if position < len(order) else ""
+        if name not in pins:
+            raise LoweringError(None)
+        pin_type, kind = pins[name]
+        if kind == "VAR_IN_OUT":
+            inputs.append((name, lower_access(arg.value, ctx)))
+        elif not arg.output:
+            inputs.append((name, lower_to(arg.value, ctx, pin_type)))
+        else:
+            target = lower_access(arg.value, ctx)
+            if not arg.negated and value_type(target.type) == value_type(pin_type):
+                outputs.append((name, target))
+                continue
+            pin: Expr = Var(instance.scope, instance.name, pin_type, (*instance.path, Member(name)))
+            if arg.negated:
+                pin = Unary("NOT", pin, pin_type)
+            copies.append(Assign(target, convert(pin, target.type), ctx.origin(arg)))
+    en, eno, after = lower_en_eno(call, ctx)
+    if en is not None and copies:
+        eno = eno or ctx.hidden("ENO", BOOL, var_class="VAR_TEMP")
+        copies = [If([(eno, copies)], [], origin)]
+    return [FbCall(instance, inputs, outputs, origin, en, eno), *copies, *after]
+
+
+def _pins(fb: t.FbType, ctx: PouContext) -> dict[str, tuple[IrType, str]]:
+    """Pin name -> (IR type, VAR_INPUT / VAR_IN_OUT / VAR_OUTPUT) of a standard or user FB, inputs first."""
+    if fb.std is not None:
+        return {**{p.name: (ctx.ir_type(t.elementary(p.type)), "VAR_INPUT") for p in fb.std.inputs},
+                **{p.name: (ctx.ir_type(t.elementary(p.type)), "VAR_OUTPUT") for p in fb.std.outputs}}
+    callee = ctx.types_for(fb.pou.name)
+    return {s.name.upper(): (callee.type_of(s.type, s.type_spec), s.var_class)
+            for s in fb.pou.parameters("VAR_INPUT", "VAR_IN_OUT", "VAR_OUTPUT")}
+
+
+# ---------------------------------------------------------------- control flow
+
+
+def _if(statement: ast.If, ctx: PouContext) -> list[Stmt]:
+    branches = []
+    for index, (condition, body) in enumerate(statement.branches):
+        if index:
+            ctx.lifts = None  # an ELSIF condition runs only when the ones before it were FALSE
+        branches.append((lower_to(condition, ctx, BOOL), lower_statements(body, ctx)))
+    return [If(branches, lower_statements(statement.else_body or [], ctx), ctx.origin(statement))]
+
+
+def _case(statement: ast.Case, ctx: PouContext) -> list[Stmt]:
+    selector = lower_expr(statement.selector, ctx)
+    branches = []
+    for branch in statement.branches:
+        labels: list[CaseLabel] = []
+        for label in branch.labels:
+            if isinstance(label, ast.CaseRange):
+                labels.append((_label(label.low, ctx), _label(label.high, ctx)))
+            else:
+                labels.append(_label(label, ctx))
+        branches.append((labels, lower_statements(branch.body, ctx)))
+    return [Case(selector, branches, lower_statements(statement.else_body or [], ctx), ctx.origin(statement))]
+
+
+def _label(label: ast.Expr, ctx: PouContext) -> int:
+    """A CASE label's integer: a literal, a CONSTANT, an enumeration value (its int), constant arithmetic."""
+    value = ctx.types.raw_constant(label)
+    if isinstance(value, bool) or not isinstance(value, int):
+        raise LoweringError(None)
+    return value
+
+
+def _for(statement: ast.For, ctx: PouContext) -> list[Stmt]:
+    """FOR: start, end and step are evaluated once, on entry (ST-31, ST-73); the step defaults to 1."""
+    var = lower_access(statement.var, ctx)
+    ty = value_type(var.type)
+    start, end = lower_to(statement.start, ctx, ty), lower_to(statement.end, ctx, ty)
+    step = lower_to(statement.step, ctx, ty) if statement.step is not None else Const(1, ty)
+    return [For(var, start, end, step, lower_statements(statement.body, ctx), ctx.origin(statement))]
+
+
+def _while(statement: ast.While, ctx: PouContext) -> list[Stmt]:
+    ctx.lifts = None  # the condition is evaluated before every iteration
+    return [While(lower_to(statement.cond, ctx, BOOL), lower_statements(statement.body, ctx), ctx.origin(statement))]
+
+
+def _repeat(statement: ast.Repeat, ctx: PouContext) -> list[Stmt]:
+    ctx.lifts = None
+    body = lower_statements(statement.body, ctx)
+    return [Repeat(body, lower_to(statement.until, ctx, BOOL), ctx.origin(statement))]
+
+
+def _exit(statement: ast.Exit, ctx: PouContext) -> list[Stmt]:
+    return [Exit(ctx.origin(statement))]
+
+
+def _return(statement: ast.Return, ctx: PouContext) -> list[Stmt]:
+    return [Return(ctx.origin(statement))]
+
+
+def _empty(statement: ast.Empty, ctx: PouContext) -> list[Stmt]:
+    return []
+
+
+_LOWER = {
+    ast.Assign: _assign, ast.CallStmt: _call_statement, ast.If: _if, ast.Case: _case, ast.For: _for,
+    ast.While: _while, ast.Repeat: _repeat, ast.Exit: _exit, ast.Return: _return, ast.Empty: _empty,
+}

@@ -1,0 +1,291 @@
+"""Checker types -> IR types, declared initial values -> engine values, symbols -> slots.
+
+The checker resolves a subrange to its base type and keeps initial values as
+AST, so both are recovered here from the type specifications: ``Symbol.type_spec``
+and the TYPE declarations are walked alongside the resolved type. A variable of
+``TYPE TPercent : INT (0..100)`` is a ``Subrange``, an array of ``THomeTemp``
+elements starts with 20.0 in every element (TYP-11).
+
+Initial values are engine values (docs/ir.md invariant 1, docs/runtime.md value
+model) and always complete: an ARRAY's is a tuple of every element's value in
+row-major order, a STRUCT's a tuple of its field values in field order, an FB
+instance's None or a tuple of ``(PIN, value)`` overrides (``t : TON := (PT := T#2s)``).
+Tuples keep the frozen IR types (``StructField.initial``) hashable.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from ..engine.values import default_value, f32, store_fn
+from ..st import ast
+from ..st import types as t
+from ..st.body import BodyChecker
+from ..st.rules import EnumValue, constant_value
+from ..st.symbols import CheckResult, PouInfo, Symbol, TypeDef
+from .nodes import Slot
+from .types import Array, Elementary, Enum, FbInstance, IrType, Struct, StructField, Subrange
+
+_ALIAS_DEPTH = 64  # longer TYPE alias chains than this are cycles the checker already reported
+
+
+class LoweringError(Exception):
+    """A construct the checker accepted that this lowering cannot express.
+
+    ``message`` None means the cause was already reported by the checker (a type
+    with errors), so nothing more is said. ``node`` locates the diagnostic.
+    """
+
+    def __init__(self, message: str | None, node: Any = None, code: str = "IR-UNSUPPORTED", file: str | None = None):
+        super().__init__(message or "already reported")
+        self.message, self.node, self.code, self.file = message, node, code, file
+
+
+def _in_types_text(error: LoweringError) -> LoweringError:
+    """An error in a TYPE declaration's initial value is located in the ``types`` text, wherever it is used."""
+    if error.file is None:
+        error.file = "types"
+    return error
+
+
+def _quiet(*_args: Any, **_kwargs: Any) -> None:
+    """Constant folding during lowering re-reads checked expressions; the checker already reported on them."""
+
+
+class TypeLowering:
+    """Types, initial values and slots of one scope (a POU, or the globals when ``pou`` is None)."""
+
+    def __init__(self, checked: CheckResult | None, pou: PouInfo | None = None):
+        self.checked = checked if checked is not None else CheckResult()
+        self.types: dict[str, TypeDef] = self.checked.types
+        self.constants = BodyChecker(self.checked, pou, _quiet)  # scope for constant_value (CONSTANTs, enums)
+        self._structs: dict[int, Struct] = {}
+
+    # ------------------------------------------------------------ types
+    def type_of(self, ty: t.Type | None, spec: ast.TypeSpec | None = None) -> IrType:
+        """The IR type of a checker type; ``spec`` (the declaration's type specification) restores subranges."""
+        spec = self._spec_body(spec)
+        if isinstance(ty, t.Elementary):
+            if isinstance(spec, ast.SubrangeType):
+                low, high = constant_value(self.constants, spec.low), constant_value(self.constants, spec.high)
+                if isinstance(low, int) and isinstance(high, int) and low <= high:
+                    return Subrange(Elementary(ty.name), low, high)
+            return Elementary(ty.name)
+        if isinstance(ty, t.StringType):
+            return Elementary("STRING", ty.length)  # WSTRING too: both are Python str in the value model
+        if isinstance(ty, (t.UntypedInt, t.UntypedReal)):
+            return self.type_of(t.concrete(ty))
+        if isinstance(ty, t.ArrayType):
+            if any(dim is None for dim in ty.dims):
+                raise LoweringError("open arrays (ARRAY [*]) are not supported by the engine yet")
+            element_spec = spec.element if isinstance(spec, ast.ArrayType) else None
+            return Array(self.type_of(ty.element, element_spec), tuple(ty.dims))  # type: ignore[arg-type]
+        if isinstance(ty, t.EnumType):
+            return Enum(ty.name.upper(), tuple((name, value) for name, (_, value) in ty.values.items()))
+        if isinstance(ty, t.StructType):
+            return self._struct(ty, spec)
+        if isinstance(ty, t.FbType):
+            return FbInstance(ty.name.upper())
+        if isinstance(ty, t.PointerType):
+            raise LoweringError("pointers (POINTER TO, REF_TO, ADR, REF, ^) are not supported by the engine yet")
+        raise LoweringError(None)  # ERROR / VOID / None: the checker reported why
+
+    def _spec_body(self, spec: ast.TypeSpec | None) -> ast.TypeSpec | None:
+        """Follow ``NamedType`` aliases of user TYPEs to the specification that defines them."""
+        for _ in range(_ALIAS_DEPTH):
+            typedef = self._typedef(spec)
+            if typedef is None:
+                return spec
+            spec = typedef.decl.type
+        return None
+
+    def _typedef(self, spec: ast.TypeSpec | None) -> TypeDef | None:
+        return self.types.get(spec.name.upper()) if isinstance(spec, ast.NamedType) else None
+
+    def _struct(self, ty: t.StructType, spec: ast.TypeSpec | None) -> Struct:
+        if id(ty) in self._structs:
+            return self._structs[id(ty)]
+        fields = []
+        for upper, (field_type, field_spec, init) in self._fields(ty, spec).items():
+            try:
+                initial = self.initial(field_type, field_spec, init)
+            except LoweringError as error:
+                raise _in_types_text(error) from None
+            fields.append(StructField(upper, self.type_of(field_type, field_spec), initial))
+        lowered = Struct(ty.name.upper(), tuple(fields))
+        self._structs[id(ty)] = lowered
+        return lowered
+
+    def _fields(self, ty: t.StructType, spec: ast.TypeSpec | None) -> dict[str, tuple[t.Type, Any, Any]]:
+        """Field name -> (resolved type, type specification, declared initial value), in declaration order."""
+        if not isinstance(spec, ast.StructType):
+            spec = next((self._spec_body(d.decl.type) for d in self.types.values() if d.type is ty), None)
+        decls = {}
+        if isinstance(spec, ast.StructType):
+            decls = {n.name.upper(): decl for decl in spec.members for n in decl.names if n.name is not None}
+        out = {}
+        for upper, (_, field_type) in ty.fields.items():
+            decl = decls.get(upper)
+            out[upper] = (field_type, decl.type if decl else None, decl.init if decl else None)
+        return out
+
+    # ------------------------------------------------------------ values
+    def default(self, ty: t.Type | None, spec: ast.TypeSpec | None = None) -> object:
+        """The initial value of a variable declared without one: its TYPE's own (TYP-11), else the type default."""
+        typedef = self._typedef(spec)
+        if typedef is not None:
+            if typedef.init is not None:
+                try:
+                    return self.initial(ty, typedef.decl.type, typedef.init)
+                except LoweringError as error:
+                    raise _in_types_text(error) from None
+            return self.default(ty, typedef.decl.type)
+        lowered = self.type_of(ty, spec)
+        if isinstance(lowered, Array) and isinstance(ty, t.ArrayType):  # elements may have a TYPE's own initial
+            element_spec = spec.element if isinstance(spec, ast.ArrayType) else None
+            return (self.default(ty.element, element_spec),) * _size(lowered)
+        return ir_default(lowered)
+
+    def initial(self, ty: t.Type | None, spec: ast.TypeSpec | None, init: ast.Init | None) -> object:
+        """The value a variable of ``ty`` (declared as ``spec``) starts with, given its initialiser ``init``."""
+        if init is None:
+            return self.default(ty, spec)
+        body = self._spec_body(spec)
+        if isinstance(init, ast.ArrayInit):
+            return self._array_initial(ty, body, init)
+        if isinstance(init, ast.StructInit):
+            return self._struct_initial(ty, body, init)
+        return self.constant(init, self.type_of(ty, spec))
+
+    def _array_initial(self, ty: t.Type | None, spec: ast.TypeSpec | None, init: ast.ArrayInit) -> tuple:
+        if not isinstance(ty, t.ArrayType):
+            raise LoweringError(None)
+        lowered = self.type_of(ty, spec)
+        element_spec = spec.element if isinstance(spec, ast.ArrayType) else None
+        values: list[object] = []
+        for item in init.items:
+            if isinstance(item, ast.RepeatInit):
+                values += [self.initial(ty.element, element_spec, item.value)] * item.count
+            else:
+                values.append(self.initial(ty.element, element_spec, item))
+        size = _size(lowered)  # type: ignore[arg-type]
+        if len(values) < size:
+            values += [self.default(ty.element, element_spec)] * (size - len(values))
+        return tuple(values[:size])
+
+    def _struct_initial(self, ty: t.Type | None, spec: ast.TypeSpec | None, init: ast.StructInit) -> object:
+        if isinstance(ty, t.FbType):
+            return tuple((name.upper(), self.initial(*self._pin(ty, name), value)) for name, value in init.fields)
+        if not isinstance(ty, t.StructType):
+            raise LoweringError(None)
+        fields = self._fields(ty, spec)
+        values = list(self.default(ty, spec))  # type: ignore[arg-type]
+        names = list(fields)
+        for name, value in init.fields:
+            upper = name.upper()
+            if upper not in fields:
+                raise LoweringError(None)
+            field_type, field_spec, _ = fields[upper]
+            values[names.index(upper)] = self.initial(field_type, field_spec, value)
+        return tuple(values)
+
+    @staticmethod
+    def _pin(ty: t.FbType, name: str) -> tuple[t.Type | None, ast.TypeSpec | None]:
+        if ty.pou is not None:
+            symbol = ty.pou.symbols.get(name.upper())
+            return (symbol.type, symbol.type_spec) if symbol else (None, None)
+        pin = next((p for p in (*ty.std.inputs, *ty.std.outputs) if p.name == name.upper()), None)
+        return (t.elementary(pin.type) if pin else None), None
+
+    def constant(self, node: ast.Expr, target: IrType) -> object:
+        """Engine value of a constant expression (literal, CONSTANT, enum value, arithmetic on them) in ``target``."""
+        raw = self.raw_constant(node)
+        if raw is None:
+            raise LoweringError("an initial value must be a constant (a literal, a CONSTANT or an enumeration "
+                                "value)", node, code="IR-INIT")
+        return engine_value(raw, target)
+
+    def raw_constant(self, node: Any, depth: int = 0) -> object:
+        """The Python value of a constant expression before it is stored in a type; None when not constant."""
+        if depth > _ALIAS_DEPTH:
+            return None
+        if isinstance(node, (ast.IntLit, ast.RealLit, ast.BoolLit, ast.StringLit, ast.TimeLit)):
+            return node.value
+        if isinstance(node, ast.TypedLit):
+            if isinstance(node.ty, t.EnumType) and isinstance(node.value, ast.Name):
+                return node.ty.values[node.value.name.upper()][1]
+            return self.raw_constant(node.value, depth + 1)
+        if isinstance(node, ast.Name):
+            if isinstance(node.ref, EnumValue):
+                return node.ref.value
+            if isinstance(node.ref, Symbol) and node.ref.constant and node.ref.init is not None:
+                symbol = node.ref
+                return self.initial(symbol.type, symbol.type_spec, symbol.init)
+            return None
+        if isinstance(node, ast.Unary):
+            value = self.raw_constant(node.operand, depth + 1)
+            if isinstance(value, bool) and node.op == "NOT":
+                return not value
+            if isinstance(value, int) and not isinstance(value, bool):
+                return -value if node.op == "-" else ~value
+            return -value if isinstance(value, float) and node.op == "-" else None
+        if isinstance(node, ast.Binary):
+            return constant_value(self.constants, node)
+        return None
+
+    # ------------------------------------------------------------ slots
+    def slot(self, symbol: Symbol) -> Slot:
+        """The slot of a declared variable; VAR_IN_OUT slots are references and have no initial value."""
+        initial = None if symbol.var_class == "VAR_IN_OUT" else self.initial(symbol.type, symbol.type_spec, symbol.init)
+        return Slot(symbol.name.upper(), symbol.var_class, self.type_of(symbol.type, symbol.type_spec),  # type: ignore[arg-type]
+                    initial, symbol.retain, symbol.constant, symbol.address)
+
+
+def engine_value(raw: object, target: IrType) -> object:
+    """A literal's Python value stored in ``target`` (wrapped, float32-rounded, cut) as the engine holds it."""
+    if isinstance(target, (Enum, Subrange)):
+        return int(raw)  # type: ignore[call-overload]
+    if not isinstance(target, Elementary):
+        return raw  # composite values are built complete by TypeLowering
+    category = target.info.category
+    if category == "bool":
+        return bool(raw)
+    if category == "string":
+        return str(raw)[:target.max_length]
+    if category == "real":
+        return f32(float(raw)) if target.name == "REAL" else float(raw)  # type: ignore[arg-type]
+    if isinstance(raw, float):  # fractional milliseconds (T#1.5ms) or a REAL constant folded for an integer
+        raw = round(raw) if math.isfinite(raw) else 0
+    return store_fn(target.name)(int(raw))  # type: ignore[call-overload]
+
+
+def ir_default(type: IrType) -> object:
+    """The default value of an IR type (TYP-05): 0, FALSE, '', a subrange's lower limit, the first enum value."""
+    if isinstance(type, Elementary):
+        return default_value(type.name)
+    if isinstance(type, Subrange):
+        return type.low if not type.low <= 0 <= type.high else 0
+    if isinstance(type, Enum):
+        return type.values[0][1] if type.values else 0
+    if isinstance(type, Array):
+        return (ir_default(type.element),) * _size(type)
+    if isinstance(type, Struct):
+        return tuple(f.initial for f in type.fields)
+    return None  # FB instance: its own slots hold its initial values
+
+
+def _size(array: Array) -> int:
+    size = 1
+    for low, high in array.dims:
+        size *= high - low + 1
+    return size
+
+
+def ir_type(ty: t.Type, checked: CheckResult | None = None) -> IrType:
+    """The IR type of a checker type (raises ``LoweringError`` for pointers, open arrays and types with errors).
+
+    Pass ``checked`` to get STRUCT field initial values and subranges of fields
+    exactly as in slots; ``PouContext.ir_type`` does that for you.
+    """
+    return TypeLowering(checked).type_of(ty)
