@@ -28,7 +28,7 @@ from ..st.symbols import PouInfo, Symbol
 from .context import PouContext
 from .lower_types import LoweringError, engine_value, ir_default
 from .nodes import Assign, Binary, Call, Const, Convert, Expr, FnCall, Index, Member, Unary, Var
-from .types import BOOL, Elementary, Enum, FbInstance, IrType, Struct, Subrange
+from .types import BOOL, Elementary, FbInstance, IrType, Struct, Subrange
 
 _OPERATORS = {"+": "ADD", "-": "SUB", "*": "MUL", "/": "DIV", "MOD": "MOD", "**": "EXPT", "AND": "AND",
               "OR": "OR", "XOR": "XOR", "=": "EQ", "<>": "NE", "<": "LT", ">": "GT", "<=": "LE", ">=": "GE"}

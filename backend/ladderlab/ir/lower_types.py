@@ -7,8 +7,10 @@ and the TYPE declarations are walked alongside the resolved type. A variable of
 elements starts with 20.0 in every element (TYP-11).
 
 Initial values are engine values (docs/ir.md invariant 1, docs/runtime.md value
-model) and always complete: an ARRAY's is a tuple of every element's value in
-row-major order, a STRUCT's a tuple of its field values in field order, an FB
+model) and always complete: an ARRAY's is a tuple of its elements' values (a
+tuple of tuples for ``ARRAY [1..2, 1..3]``: one level per dimension, like the
+engine's nested lists; IEC initialisers fill it in row-major order), a STRUCT's
+a tuple of its field values in field order, an FB
 instance's None or a tuple of ``(PIN, value)`` overrides (``t : TON := (PT := T#2s)``).
 Tuples keep the frozen IR types (``StructField.initial``) hashable.
 """
@@ -79,6 +81,8 @@ class TypeLowering:
         if isinstance(ty, t.ArrayType):
             if any(dim is None for dim in ty.dims):
                 raise LoweringError("open arrays (ARRAY [*]) are not supported by the engine yet")
+            if any(low > high for low, high in ty.dims):  # type: ignore[misc]
+                raise LoweringError(None)  # the checker reported the empty range
             element_spec = spec.element if isinstance(spec, ast.ArrayType) else None
             return Array(self.type_of(ty.element, element_spec), tuple(ty.dims))  # type: ignore[arg-type]
         if isinstance(ty, t.EnumType):
@@ -144,7 +148,7 @@ class TypeLowering:
         lowered = self.type_of(ty, spec)
         if isinstance(lowered, Array) and isinstance(ty, t.ArrayType):  # elements may have a TYPE's own initial
             element_spec = spec.element if isinstance(spec, ast.ArrayType) else None
-            return (self.default(ty.element, element_spec),) * _size(lowered)
+            return _nest([self.default(ty.element, element_spec)] * _size(lowered), lowered.dims)
         return ir_default(lowered)
 
     def initial(self, ty: t.Type | None, spec: ast.TypeSpec | None, init: ast.Init | None) -> object:
@@ -172,7 +176,7 @@ class TypeLowering:
         size = _size(lowered)  # type: ignore[arg-type]
         if len(values) < size:
             values += [self.default(ty.element, element_spec)] * (size - len(values))
-        return tuple(values[:size])
+        return _nest(values[:size], lowered.dims)  # type: ignore[union-attr]
 
     def _struct_initial(self, ty: t.Type | None, spec: ast.TypeSpec | None, init: ast.StructInit) -> object:
         if isinstance(ty, t.FbType):
@@ -200,6 +204,8 @@ class TypeLowering:
 
     def constant(self, node: ast.Expr, target: IrType) -> object:
         """Engine value of a constant expression (literal, CONSTANT, enum value, arithmetic on them) in ``target``."""
+        if getattr(node, "ty", None) is t.ERROR:
+            raise LoweringError(None)
         raw = self.raw_constant(node)
         if raw is None:
             raise LoweringError("an initial value must be a constant (a literal, a CONSTANT or an enumeration "
@@ -269,10 +275,19 @@ def ir_default(type: IrType) -> object:
     if isinstance(type, Enum):
         return type.values[0][1] if type.values else 0
     if isinstance(type, Array):
-        return (ir_default(type.element),) * _size(type)
+        return _nest([ir_default(type.element)] * _size(type), type.dims)
     if isinstance(type, Struct):
         return tuple(f.initial for f in type.fields)
     return None  # FB instance: its own slots hold its initial values
+
+
+def _nest(values: list[object], dims: tuple[tuple[int, int], ...]) -> tuple:
+    """Row-major element values -> one tuple level per dimension."""
+    if len(dims) == 1:
+        return tuple(values)
+    low, high = dims[0]
+    step = len(values) // (high - low + 1)
+    return tuple(_nest(values[i:i + step], dims[1:]) for i in range(0, len(values), step))
 
 
 def _size(array: Array) -> int:
