@@ -15,12 +15,14 @@ import {
   seriesAt,
   updateElement,
   updateSeries,
+  walk,
   type CoilMode,
   type CompareOp,
   type ContactMode,
   type LdBody,
   type LdElement,
   type LdNetwork,
+  type Location,
   type Place,
   type Series,
 } from "./model";
@@ -82,8 +84,16 @@ function spliceAt(body: LdBody, place: Place, elements: LdElement[], remove = 0)
   ]);
 }
 
+/** Why a place is not on a wire of this body, or null when it is. */
+function placeProblem(body: LdBody, place: Place): string | null {
+  const series = seriesAt(body, place.series);
+  return series && place.index >= 0 && place.index <= series.length ? null : "no such place in this diagram";
+}
+
 /** Inserts a new element at a place on a wire (no fallback). */
 export function insertAt(body: LdBody, place: Place, spec: ElementSpec): EditResult {
+  const problem = placeProblem(body, place);
+  if (problem) return fail(problem);
   const element = withId(spec, usedIds(body));
   return finish(spliceAt(body, place, [element]), [element.id]);
 }
@@ -255,16 +265,27 @@ export function deleteElements(body: LdBody, ids: string[]): EditResult {
   const first = locate(body, ids[0]!);
   if (!first) return fail(`no element ${ids[0]}`);
   const next = withoutIds(body, new Set(ids));
-  const after = locate(next, neighbourAfterDelete(body, first, new Set(ids)) ?? "");
   const problems = ldProblems(next);
   if (problems.length) return fail(`cannot delete: ${problems[0]!.message}`);
-  return { ok: true, body: next, select: after ? [after.element.id] : [] };
+  const survivor = neighbourAfterDelete(body, next, first);
+  return { ok: true, body: next, select: survivor ? [survivor] : [] };
 }
 
-function neighbourAfterDelete(body: LdBody, first: NonNullable<ReturnType<typeof locate>>, ids: Set<string>) {
-  const series = seriesOf(body, first.series);
-  const rest = series.slice(first.index).find((e) => !ids.has(e.id)) ?? series.slice(0, first.index).reverse().find((e) => !ids.has(e.id));
-  return rest?.id;
+/**
+ * What to select after deleting: the next surviving element of the same series, else the previous
+ * one, else (one level up) whatever took the place of the enclosing parallel or box, and so on.
+ */
+function neighbourAfterDelete(body: LdBody, next: LdBody, first: Location): string | undefined {
+  const candidates: string[] = [];
+  let at: Location | undefined = first;
+  while (at) {
+    const series = seriesOf(body, at.series);
+    candidates.push(...series.slice(at.index + 1).map((e) => e.id), ...series.slice(0, at.index).reverse().map((e) => e.id));
+    const owner: string | undefined = at.series.kind === "branch" ? at.series.parallel : at.series.kind === "pin" ? at.series.box : undefined;
+    at = owner === undefined ? undefined : locate(body, owner);
+    if (at) candidates.push(...[...walk({ networks: [{ id: "", elements: [at.element] }] })].map((l) => l.element.id));
+  }
+  return candidates.find((id) => locate(next, id));
 }
 
 /** Sets a contact's or coil's mode (GR-15..GR-25). */
@@ -353,8 +374,9 @@ export function moveElements(body: LdBody, ids: string[], place: Place): EditRes
   const moved = series.slice(run.place.index, run.place.index + run.length);
   const used = usedIds(body);
   const marker: LdElement = { type: "contact", id: freshId("__drop", used), var: "" };
+  const problem = placeProblem(body, place);
+  if (problem) return fail(problem);
   const marked = spliceAt(body, place, [marker]);
-  if (marked === body) return fail("no such place");
   const taken = withoutIds(marked, new Set(ids));
   const at = locate(taken, marker.id);
   if (!at) return fail("cannot move an element into itself");
@@ -365,6 +387,8 @@ export function moveElements(body: LdBody, ids: string[], place: Place): EditRes
 /** Pastes copies of elements at a place; clashing ids get fresh ones. */
 export function pasteElements(body: LdBody, place: Place, elements: LdElement[]): EditResult {
   if (elements.length === 0) return fail("the clipboard holds no elements");
+  const problem = placeProblem(body, place);
+  if (problem) return fail(problem);
   const used = usedIds(body);
   const copies = elements.map((e) => withFreshIds(e, used));
   return finish(spliceAt(body, place, copies), copies.map((e) => e.id));
