@@ -1,8 +1,11 @@
-"""The FastAPI application: serves the browser app and the JSON API."""
+"""The FastAPI application: serves the browser app and the JSON API.
+
+This module only assembles the app; routes live in one module per resource
+(projects, symbols, library; simulations and export join later as their own modules).
+"""
 
 from __future__ import annotations
 
-from datetime import datetime, timezone
 from pathlib import Path
 
 from fastapi import FastAPI
@@ -10,8 +13,10 @@ from fastapi.responses import HTMLResponse
 from fastapi.staticfiles import StaticFiles
 
 from .. import __version__
-from ..model.api import ProjectSummary
 from ..storage import Workspace
+from . import library, projects, symbols
+from .errors import install_error_handlers
+from .limits import BodySizeLimit, Limits
 
 STATIC_DIR = Path(__file__).parent / "static"
 
@@ -21,21 +26,19 @@ _PLACEHOLDER = """<!doctype html>
 """
 
 
-def create_app(workspace: Workspace) -> FastAPI:
+def create_app(workspace: Workspace, limits: Limits | None = None) -> FastAPI:
     app = FastAPI(title="LadderLab", version=__version__)
     app.state.workspace = workspace
+    app.state.limits = limits or Limits()
+    install_error_handlers(app)
+    app.add_middleware(BodySizeLimit, max_bytes=app.state.limits.max_body_bytes)
 
     @app.get("/api/health")
     def health() -> dict[str, str]:
         return {"status": "ok", "version": __version__}
 
-    @app.get("/api/projects", response_model=list[ProjectSummary])
-    def list_projects() -> list[ProjectSummary]:
-        return [
-            ProjectSummary(name=info.name, revision=info.revision, pou_count=info.pou_count,
-                           modified=datetime.fromtimestamp(info.modified, tz=timezone.utc))
-            for info in workspace.list()
-        ]
+    for module in (projects, symbols, library):
+        app.include_router(module.router)
 
     if (STATIC_DIR / "index.html").is_file():
         app.mount("/", StaticFiles(directory=STATIC_DIR, html=True), name="app")

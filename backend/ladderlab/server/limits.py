@@ -1,0 +1,93 @@
+"""Bounds that keep one client from exhausting the server: body size, project size, project count.
+
+The body limit is checked while the body streams in (and up front from ``Content-Length``),
+so an oversized upload is refused before it is held in memory.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Annotated
+
+from fastapi import Depends, Request
+from starlette.datastructures import Headers
+from starlette.exceptions import HTTPException
+from starlette.responses import JSONResponse
+from starlette.types import ASGIApp, Message, Receive, Scope, Send
+
+from ..model import Project
+from ..model.api import ErrorDetail
+from ..storage import Workspace
+from ..storage.project_folder import project_files
+from .errors import ApiError
+
+MB = 1024 * 1024
+
+
+@dataclass(frozen=True)
+class Limits:
+    max_body_bytes: int = 5 * MB
+    max_project_bytes: int = 4 * MB  # stored files; below the body limit so any stored project can be sent back
+    max_projects: int = 200
+
+
+def _limits(request: Request) -> Limits:
+    return request.app.state.limits
+
+
+LimitsDep = Annotated[Limits, Depends(_limits)]
+
+
+def describe_size(size: int) -> str:
+    return f"{size / MB:.1f} MB" if size >= MB else f"{size} bytes"
+
+
+def _too_large_message(limit: int) -> str:
+    return f"the request body is larger than the limit of {describe_size(limit)}"
+
+
+class BodySizeLimit:
+    """ASGI middleware: 413 for a request body over ``max_bytes``."""
+
+    def __init__(self, app: ASGIApp, max_bytes: int) -> None:
+        self.app = app
+        self.max_bytes = max_bytes
+
+    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
+        if scope["type"] != "http":
+            await self.app(scope, receive, send)
+            return
+        declared = Headers(scope=scope).get("content-length", "")
+        if declared.isdigit() and int(declared) > self.max_bytes:
+            detail = ErrorDetail(message=_too_large_message(self.max_bytes))
+            await JSONResponse({"detail": detail.model_dump(mode="json")}, 413)(scope, receive, send)
+            return
+        received = 0
+
+        async def limited_receive() -> Message:
+            nonlocal received
+            message = await receive()
+            if message["type"] == "http.request":
+                received += len(message.get("body", b""))
+                if received > self.max_bytes:
+                    # An HTTPException is what FastAPI lets through from body reading (others become 400).
+                    raise HTTPException(413, _too_large_message(self.max_bytes))
+            return message
+
+        await self.app(scope, limited_receive, send)
+
+
+def check_project_size(project: Project, limits: Limits) -> None:
+    """Refuse a project whose stored files would exceed the project size limit."""
+    size = sum(len(text.encode("utf-8")) for text in project_files(project).values())
+    if size > limits.max_project_bytes:
+        raise ApiError(413, f"project {project.name!r} would take {describe_size(size)} on disk, more than the "
+                            f"limit of {describe_size(limits.max_project_bytes)}")
+
+
+def check_room_for_project(workspace: Workspace, limits: Limits) -> None:
+    """Refuse to create a project when the workspace already holds the maximum number."""
+    count = len(workspace.list())
+    if count >= limits.max_projects:
+        raise ApiError(429, f"the workspace already holds {count} projects, the most this server allows; "
+                            "delete one first")

@@ -1,0 +1,29 @@
+"""A server over a fresh temporary workspace for every test."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from fastapi.testclient import TestClient
+
+from ladderlab.server.app import create_app
+from ladderlab.storage import Workspace
+
+
+@pytest.fixture
+def workspace(tmp_path: Path) -> Workspace:
+    return Workspace(tmp_path / "workspace")
+
+
+@pytest.fixture
+def client(workspace: Workspace) -> TestClient:
+    return TestClient(create_app(workspace))
+
+
+@pytest.fixture
+def motor(client: TestClient) -> str:
+    """The example project stored as 'motor'; returns its revision."""
+    response = client.post("/api/projects", json={"name": "motor", "example": "motor"})
+    assert response.status_code == 201, response.text
+    return response.json()["revision"]
