@@ -175,3 +175,17 @@ describe("diagram", () => {
     expect(layout.networks).toHaveLength(1000);
   });
 });
+
+describe("reuse", () => {
+  it("returns the same layout object for networks an edit did not touch", () => {
+    const body = bodyOf(net("n1", c("a"), q("m")), net("n2", c("z")), net("n3", c("y")));
+    const before = layoutBody(body);
+    const edited = insertNear(body, { element: "z", side: "after" }, { type: "contact", var: "X", mode: "no" });
+    if (!edited.ok) throw new Error(edited.error);
+    const after = layoutBody(edited.body);
+    expect(after.networks[0]).toBe(before.networks[0]);
+    expect(after.networks[1]).not.toBe(before.networks[1]);
+    expect(after.networks[2]).toBe(before.networks[2]);
+    expect(layoutBody(edited.body).networks[1]).toBe(after.networks[1]);
+  });
+});

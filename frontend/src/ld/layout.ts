@@ -82,6 +82,8 @@ export interface PlacedElement {
   /** Boxes: the body rectangle and the pins. */
   body?: { x: number; y: number; width: number; height: number };
   pins?: PlacedPin[];
+  /** Boxes: calls a function block, so it names an instance above the box. */
+  instanced?: boolean;
 }
 
 /** A point on a wire where something can be inserted or dropped. */
@@ -265,7 +267,8 @@ function layoutBox(
   ctx: Ctx,
 ): Block {
   const { boxTop, boxHead, pinRow, stub } = METRICS;
-  const pins = boxPins(element, ctx.library(element.call));
+  const entry = ctx.library(element.call);
+  const pins = boxPins(element, entry);
   const inputRows = pins.inputs.map((pin) => {
     if (Array.isArray(pin.value)) {
       const block = layoutSeries(pin.value, { kind: "pin", box: element.id, pin: pin.name }, null, ctx);
@@ -323,6 +326,7 @@ function layoutBox(
     lineY: out.lineOffset,
     body: { x: bodyX, y: boxTop, width: bodyWidth, height: bodyBottom - boxTop },
     pins: placedPins,
+    instanced: entry ? entry.kind === "function_block" : element.instance != null,
   });
   return out;
 }
@@ -372,7 +376,7 @@ type Laid = ReturnType<typeof layoutNetwork>;
  * they touch (model.ts keeps the others' identity), so reflowing a 1,000-network POU after an edit
  * recomputes one network.
  */
-const cache = new WeakMap<LdNetwork, { rightRailX: number; library: Ctx["library"]; laid: Laid }>();
+const cache = new WeakMap<LdNetwork, { rightRailX: number; library: Ctx["library"]; laid: Laid; placed?: NetworkLayout }>();
 
 function cachedNetwork(network: LdNetwork, rightRailX: number, library: Ctx["library"]): Laid {
   const hit = cache.get(network);
@@ -380,6 +384,14 @@ function cachedNetwork(network: LdNetwork, rightRailX: number, library: Ctx["lib
   const laid = layoutNetwork(network, rightRailX, { network: network.id, library });
   cache.set(network, { rightRailX, library, laid });
   return laid;
+}
+
+/** The network's layout at its place in the diagram, the same object while nothing changed. */
+function placedNetwork(network: LdNetwork, rightRailX: number, library: Ctx["library"], index: number, top: number): NetworkLayout {
+  const { layout } = cachedNetwork(network, rightRailX, library);
+  const entry = cache.get(network)!;
+  if (entry.placed?.index !== index || entry.placed.top !== top) entry.placed = { ...layout, index, top };
+  return entry.placed;
 }
 
 const noLibrary = (): undefined => undefined;
@@ -395,7 +407,7 @@ export function layoutBody(body: LdBody, options: LayoutOptions = {}): LdLayout 
   const rightRailX = Math.max(options.minRightRail ?? METRICS.minRightRail, ...natural);
   let top = 0;
   const laid = networks.map((network, index) => {
-    const layout = { ...cachedNetwork(network, rightRailX, library).layout, index, top };
+    const layout = placedNetwork(network, rightRailX, library, index, top);
     top += layout.height;
     return layout;
   });

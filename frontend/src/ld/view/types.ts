@@ -1,0 +1,36 @@
+// What the diagram view shows besides the model: the selection, diagnostics and online state.
+import type { MouseEvent } from "react";
+import type { Diagnostic } from "../../api/types";
+import type { Place } from "../model";
+import type { OperandField } from "../ops";
+
+export type Selection =
+  | { kind: "elements"; ids: string[] }
+  | { kind: "place"; place: Place }
+  | { kind: "network"; id: string };
+
+/**
+ * Online colouring hooks (issue 7 online mode; no server connection yet). `power` is the engine's
+ * right-side power of each element by id, `executed` false marks elements the last scan skipped,
+ * `forced` and `values` are keyed by operand text in upper case.
+ */
+export interface OnlineView {
+  power?: Readonly<Record<string, boolean>>;
+  executed?: Readonly<Record<string, boolean>>;
+  forced?: ReadonlySet<string>;
+  values?: Readonly<Record<string, string | number | boolean>>;
+}
+
+/** Something the user can point at in the diagram. */
+export type Target = { kind: "element"; id: string } | { kind: "place"; place: Place } | { kind: "network"; id: string };
+
+export interface DiagramHandlers {
+  onPointerDown?(target: Target, event: MouseEvent): void;
+  /** Mouse released over a place (a drop while dragging). */
+  onPlaceUp?(place: Place, event: MouseEvent): void;
+  onOperand?(id: string, field: OperandField, event: MouseEvent): void;
+  onDoubleClick?(target: Target, event: MouseEvent): void;
+  onContextMenu?(target: Target, event: MouseEvent): void;
+}
+
+export type DiagnosticsByElement = ReadonlyMap<string, Diagnostic[]>;
