@@ -84,7 +84,7 @@ def _lower_all(texts: list[str]) -> int:
 
 def test_ironplc_end_to_end_programs_lower():
     cases = json.loads(external("ironplc", "end_to_end_cases.json").read_text(encoding="utf-8"))["cases"]
-    assert _lower_all([c["source"] for c in cases]) >= 740  # 748 of 948: the rest have checker errors, many on purpose
+    assert _lower_all([c["source"] for c in cases]) >= 745  # 748 of 948: the rest have checker errors, many on purpose
 
 
 def test_ironplc_benchmark_programs_lower():

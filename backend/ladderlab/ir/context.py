@@ -12,6 +12,8 @@ from typing import Any
 from ..model.diagnostics import Diagnostic
 from ..st import ast
 from ..st import types as t
+from ..st.body import BodyChecker
+from ..st.rules import assignable_or_report
 from ..st.symbols import CheckResult, PouInfo, Symbol
 from .lower_types import LoweringError, TypeLowering, ir_default
 from .nodes import Origin, Slot, Stmt, Var, VarClass
@@ -85,6 +87,19 @@ class PouContext:
             self.report(error.code, error.message, file=file, **where)
         else:
             self.report_at(error.code, error.message, error.node if error.node is not None else fallback, file)
+
+    def check_en_eno(self, node: ast.Expr, function: str, output: bool) -> None:
+        """Type an EN value / ENO target the checker left untyped (it skips them in standard function calls).
+
+        Reports like the checker: ST-TYPE-MISMATCH, ST-UNKNOWN-VAR, ST-NOT-LVALUE ...
+        """
+        checker = BodyChecker(self.checked, self.info, lambda code, message, at, severity="error": self.report_at(
+            code, message, at) if severity == "error" else None)
+        if not output:
+            assignable_or_report(checker, t.BOOL, checker.expr(node, t.BOOL), node, f"input EN of {function}")
+        elif t.assignable(checker.target(node), t.BOOL) == "error":
+            checker.report("ST-TYPE-MISMATCH", f"output ENO of {function} is BOOL and cannot be stored in {node.ty}",
+                           node)
 
     def origin(self, node: Any) -> Origin:
         """An ST statement's origin: this POU and the node's span (body-relative, 1-based)."""

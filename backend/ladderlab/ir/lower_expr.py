@@ -26,7 +26,7 @@ from ..st.elementary import DEFAULT_STRING_LENGTH, GENERIC
 from ..st.rules import EnumValue, constant_value
 from ..st.symbols import PouInfo, Symbol
 from .context import PouContext
-from .lower_types import LoweringError, engine_value, ir_default
+from .lower_types import LoweringError, byte_size, engine_value, ir_default
 from .nodes import Assign, Binary, Call, Const, Convert, Expr, FnCall, Index, Member, Unary, Var
 from .types import BOOL, Elementary, FbInstance, IrType, Struct, Subrange
 
@@ -43,6 +43,15 @@ def lower_expr(node: ast.Expr, ctx: PouContext, expected: IrType | None = None) 
     direct addresses ...) and for nodes the checker typed as errors; report it with
     ``ctx.report_error``.
     """
+    try:
+        return _lower(node, ctx, expected)
+    except LoweringError as error:
+        if error.node is None:  # located at the innermost expression it arose in
+            error.node = node
+        raise
+
+
+def _lower(node: ast.Expr, ctx: PouContext, expected: IrType | None) -> Expr:
     ty = node.ty
     if ty is None or ty is t.ERROR or ty is t.VOID:
         raise LoweringError(None)
@@ -93,6 +102,8 @@ def _untyped(node: ast.Expr, ctx: PouContext, expected: IrType | None) -> Expr:
     target = _literal_target(node.ty, ctx, expected)
     value = constant_value(ctx.types.constants, node)
     if value is None:  # e.g. NOT 5: compute it in the target type
+        if isinstance(node, ast.Call):  # SIZEOF
+            return _sizeof(node, ctx, target)
         if isinstance(node, ast.Unary):
             return Unary("NOT" if node.op == "NOT" else "NEG", lower_to(node.operand, ctx, target), target)
         if isinstance(node, ast.Binary):
@@ -263,7 +274,7 @@ def _call(node: ast.Call, ctx: PouContext) -> Expr:
     if isinstance(ref, PouInfo) and ref.kind == "PROGRAM":
         raise LoweringError(f"calling the program {ref.name} from ST is not supported by the engine yet: run it "
                             "from a task", node)
-    if ref is None and isinstance(node.callee, ast.Name) and node.callee.name.upper() in ("ADR", "REF", "SIZEOF"):
+    if ref is None and isinstance(node.callee, ast.Name) and node.callee.name.upper() in ("ADR", "REF"):
         raise LoweringError(f"{node.callee.name.upper()} is not supported by the engine yet", node)
     en, eno = _en_eno(node)
     before = (ctx.reads, ctx.calls)
@@ -280,6 +291,21 @@ def _call(node: ast.Call, ctx: PouContext) -> Expr:
     return _lift(node, call, en, eno, before, ctx)
 
 
+def _sizeof(node: ast.Call, ctx: PouContext, target: IrType) -> Const:
+    """``SIZEOF(x)`` / ``SIZEOF(TypeName)``: the size in bytes (``lower_types.byte_size``) as a constant."""
+    if not isinstance(node.callee, ast.Name) or node.callee.name.upper() != "SIZEOF" or len(node.args) != 1:
+        raise LoweringError(None)
+    argument = node.args[0].value
+    if argument.ty is None and isinstance(argument, ast.Name):  # a type name (the checker does not type it)
+        named = t.elementary(argument.name)
+        typedef = ctx.checked.types.get(argument.name.upper())
+        ty = ctx.types.type_of(named if named is not None else typedef.type if typedef else None,
+                               ast.NamedType(argument.name))
+    else:
+        ty = lower_expr(argument, ctx).type  # type: ignore[union-attr]
+    return Const(engine_value(byte_size(ty), target), target)
+
+
 def _en_eno(node: ast.Call) -> tuple[ast.Arg | None, ast.Arg | None]:
     en = next((a for a in node.args if a.name is not None and a.name.upper() == "EN" and not a.output), None)
     eno = next((a for a in node.args if a.name is not None and a.name.upper() == "ENO" and a.output), None)
@@ -294,6 +320,10 @@ def _arguments(node: ast.Call) -> list[ast.Arg]:
 def lower_en_eno(node: ast.Call, ctx: PouContext) -> tuple[Expr | None, Var | None, list[Assign]]:
     """EN as a BOOL expression, ENO as a variable; ``NOT ENO => x`` needs an Assign after the call."""
     en, eno = _en_eno(node)
+    name = node.callee.name.upper() if isinstance(node.callee, ast.Name) else ""
+    for arg in (en, eno):
+        if arg is not None and arg.value.ty is None:
+            ctx.check_en_eno(arg.value, name, arg.output)
     en_expr = lower_to(en.value, ctx, BOOL) if en is not None else None
     if eno is None:
         return en_expr, None, []

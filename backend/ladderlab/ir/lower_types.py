@@ -281,6 +281,24 @@ def ir_default(type: IrType) -> object:
     return None  # FB instance: its own slots hold its initial values
 
 
+def byte_size(type: IrType) -> int:
+    """SIZEOF (TYP-45) as CODESYS counts: the type's width, BOOL 1, STRING[n] n + 1, enumerations 4 (stored as
+    DINT), arrays and structures the sum of their elements (no padding)."""
+    if isinstance(type, Subrange):
+        return byte_size(type.base)
+    if isinstance(type, Elementary):
+        if type.info.category == "string":
+            return type.max_length + 1
+        return max(1, type.info.bits // 8)
+    if isinstance(type, Enum):
+        return 4
+    if isinstance(type, Array):
+        return _size(type) * byte_size(type.element)
+    if isinstance(type, Struct):
+        return sum(byte_size(f.type) for f in type.fields)
+    raise LoweringError("SIZEOF of a function block instance is not supported")
+
+
 def _nest(values: list[object], dims: tuple[tuple[int, int], ...]) -> tuple:
     """Row-major element values -> one tuple level per dimension."""
     if len(dims) == 1:
