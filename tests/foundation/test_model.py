@@ -48,3 +48,13 @@ def test_committed_schema_is_fresh() -> None:
     for name, text in schema_texts().items():
         committed = (ROOT / "shared_schema" / name).read_text(encoding="utf-8")
         assert committed == text, f"shared_schema/{name} is stale: run `make schema`"
+
+
+def test_fbd_positions_must_be_finite() -> None:
+    """NaN/inf cannot be written to the JSON project files, so the model refuses them."""
+    from pydantic import ValidationError
+
+    from ladderlab.model.fbd import Position
+
+    with pytest.raises(ValidationError, match="finite number"):
+        Position(x=float("nan"), y=0)

@@ -14,7 +14,9 @@ from .ld import CoilMode
 
 
 class Position(BaseModel):
-    model_config = ConfigDict(extra="forbid")
+    """Finite coordinates only: NaN/inf would not survive the JSON project files."""
+
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
 
     x: float
     y: float

@@ -28,7 +28,7 @@ from ..storage import (
     ProjectLoadError,
     StorageError,
 )
-from ..storage.errors import _expectation, json_path
+from ..storage.errors import expectation, json_path
 from .context import modified_at
 
 log = logging.getLogger(__name__)
@@ -145,9 +145,9 @@ def _request_diagnostic(err: dict[str, Any], body: Any) -> Diagnostic:
     if where == "body":
         if not loc and err["type"] == "missing":
             return Diagnostic(code="BAD-REQUEST", json_path="$", message="the request needs a JSON body")
-        return Diagnostic(code="BAD-REQUEST", json_path=json_path(body, tuple(loc)), message=_expectation(err))
+        return Diagnostic(code="BAD-REQUEST", json_path=json_path(body, tuple(loc)), message=expectation(err))
     name = ".".join(str(part) for part in loc)
-    return Diagnostic(code="BAD-REQUEST", message=f"{where} parameter {name!r}: {_expectation(err)}")
+    return Diagnostic(code="BAD-REQUEST", message=f"{where} parameter {name!r}: {expectation(err)}")
 
 
 async def _http_error(request: Request, exc: Exception) -> JSONResponse:

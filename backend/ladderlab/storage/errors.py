@@ -80,11 +80,11 @@ def validation_diagnostics(error: ValidationError, data: Any, file: str) -> list
     out = []
     for err in error.errors():
         path = json_path(data, tuple(err["loc"]))
-        out.append(Diagnostic(code="BAD-FILE", file=file, json_path=path, message=_expectation(err)))
+        out.append(Diagnostic(code="BAD-FILE", file=file, json_path=path, message=expectation(err)))
     return out
 
 
-def _expectation(err: dict[str, Any]) -> str:
+def expectation(err: dict[str, Any]) -> str:
     kind = err["type"]
     ctx = err.get("ctx") or {}
     if kind == "missing":

@@ -343,6 +343,8 @@ export interface PinFlags {
   negated?: boolean;
 }
 /**
+ * Finite coordinates only: NaN/inf would not survive the JSON project files.
+ *
  * This interface was referenced by `ApiTypes`'s JSON-Schema
  * via the `definition` "Position".
  */

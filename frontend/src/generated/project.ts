@@ -211,6 +211,8 @@ export interface PinFlags {
   negated?: boolean;
 }
 /**
+ * Finite coordinates only: NaN/inf would not survive the JSON project files.
+ *
  * This interface was referenced by `Project`'s JSON-Schema
  * via the `definition` "Position".
  */
