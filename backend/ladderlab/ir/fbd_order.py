@@ -1,0 +1,302 @@
+"""FBD network structure: which output feeds each input, and the order the nodes run in.
+
+IEC 61131-3 8.1.5 (GR-05, GR-06) and 8.3 (GR-30) as LadderLab applies them:
+
+* Wires are resolved through connector/continuation pairs, so a continuation is
+  just another name for whatever feeds its connector.
+* Each input has at most one wire: FBD has no wired OR (GR-30); two wires into one
+  input are an error that names both.
+* Blocks run in data-flow order (a node after everything feeding it). Among
+  nodes the wiring leaves independent, the network's ``order`` list decides,
+  then position (top to bottom, then left to right), then id.
+* A wire cycle is broken where that order says: the first node of the cycle
+  reads the wires coming back from later nodes as *feedback* (the previous
+  scan's value, GR-06 d).
+* Output nodes run after their source; input nodes are read just before their
+  first consumer; jumps and returns run last, once every other node of the
+  network is evaluated (GR-05 c).
+
+The result is data only (``NetworkGraph``); lower_fbd turns it into IR and the
+editor shows ``order`` as execution-order badges.
+"""
+
+from __future__ import annotations
+
+import heapq
+import math
+from dataclasses import dataclass, field
+
+from ..model import fbd
+from .diagram_checks import Report
+
+PRODUCERS = (fbd.Block, fbd.InputNode, fbd.Continuation)  # nodes with an output pin
+CONSUMERS = (fbd.Block, fbd.OutputNode, fbd.FbdJump, fbd.FbdReturn, fbd.Connector)  # nodes with an input pin
+CONTROL = (fbd.FbdJump, fbd.FbdReturn)
+# The one pin of the simple nodes, as the editor draws them.
+SIMPLE_OUT = "OUT"
+SIMPLE_IN = "IN"
+
+_KIND = {"block": "block", "input": "input node", "output": "output node", "jump": "jump", "return": "return",
+         "connector": "connector", "continuation": "continuation"}
+
+
+@dataclass(frozen=True)
+class Source:
+    """The output pin feeding an input, after following connectors; ``wire`` is the text naming the wire."""
+
+    node: str
+    pin: str
+    wire: str
+
+
+@dataclass
+class NetworkGraph:
+    nodes: dict[str, fbd.FbdNode]
+    #: consumer node id -> {upper-case input pin: its source}
+    inputs: dict[str, dict[str, Source]] = field(default_factory=dict)
+    #: ids of blocks, input, output, jump and return nodes in evaluation order
+    order: list[str] = field(default_factory=list)
+    #: (consumer id, pin) pairs whose wire carries the previous scan's value
+    feedback: set[tuple[str, str]] = field(default_factory=set)
+    #: (consumer id, pin) pairs wired to a continuation that leads nowhere (already reported)
+    broken: set[tuple[str, str]] = field(default_factory=set)
+
+    def consumers(self) -> dict[str, list[tuple[str, str]]]:
+        """producer node id -> [(consumer id, pin)] in evaluation order of the consumers."""
+        out: dict[str, list[tuple[str, str]]] = {}
+        for node_id in self.order:
+            for pin, source in self.inputs.get(node_id, {}).items():
+                out.setdefault(source.node, []).append((node_id, pin))
+        return out
+
+
+def wire_text(wire: fbd.Wire) -> str:
+    return f"{wire.from_.node}.{wire.from_.pin} -> {wire.to.node}.{wire.to.pin}"
+
+
+def analyse(network: fbd.FbdNetwork, report: Report) -> NetworkGraph:
+    """Resolve the wires of ``network`` and fix its evaluation order, reporting structural errors."""
+    nodes: dict[str, fbd.FbdNode] = {}
+    for node in network.nodes:
+        nodes.setdefault(node.id, node)  # a repeated id is reported for the whole POU (check_unique_ids)
+    graph = NetworkGraph(nodes)
+    wires = _wires_by_input(network, nodes, report)
+    connectors = _connectors(network, nodes, report)
+    _resolve(graph, network, wires, connectors, report)
+    graph.order = _order(graph, network, report)
+    return graph
+
+
+def _wires_by_input(network: fbd.FbdNetwork, nodes: dict[str, fbd.FbdNode],
+                    report: Report) -> dict[tuple[str, str], fbd.Wire]:
+    """Valid wires by their (consumer, PIN) end; a second wire into one input is a wired OR (GR-30)."""
+    by_input: dict[tuple[str, str], list[fbd.Wire]] = {}
+    for wire in network.wires:
+        if _valid_end(wire, wire.from_, nodes, PRODUCERS, SIMPLE_OUT, "output", network.id, report) and \
+                _valid_end(wire, wire.to, nodes, CONSUMERS, SIMPLE_IN, "input", network.id, report):
+            by_input.setdefault((wire.to.node, wire.to.pin.upper()), []).append(wire)
+    result: dict[tuple[str, str], fbd.Wire] = {}
+    for (node, pin), group in by_input.items():
+        if len(group) > 1:
+            names = " and ".join(f"from {w.from_.node}.{w.from_.pin}" for w in group)
+            report("FBD-WIRED-OR", f"input {pin} of '{node}' has {len(group)} wires ({names}): FBD has no wired OR, "
+                   "use an OR block", network=network.id, element=node, pin=pin)
+        result[(node, pin)] = group[0]
+    return result
+
+
+def _valid_end(wire: fbd.Wire, end: fbd.PinRef, nodes: dict[str, fbd.FbdNode], kinds: tuple, simple_pin: str,
+               side: str, network: str, report: Report) -> bool:
+    node = nodes.get(end.node)
+    if node is None:
+        report("FBD-BAD-WIRE", f"wire {wire_text(wire)}: there is no node '{end.node}' in this network",
+               network=network, element=end.node, pin=end.pin.upper())
+        return False
+    if not isinstance(node, kinds):
+        report("FBD-BAD-WIRE", f"wire {wire_text(wire)}: a {_KIND[node.type]} has no {side} pin",
+               network=network, element=node.id, pin=end.pin.upper())
+        return False
+    if not isinstance(node, fbd.Block) and end.pin.upper() != simple_pin:
+        report("FBD-BAD-WIRE", f"wire {wire_text(wire)}: the {side} pin of a {_KIND[node.type]} is {simple_pin}",
+               network=network, element=node.id, pin=end.pin.upper())
+        return False
+    return True
+
+
+def _connectors(network: fbd.FbdNetwork, nodes: dict[str, fbd.FbdNode], report: Report) -> dict[str, str]:
+    """Connector name (upper case) -> connector node id; duplicates and orphan continuations are reported."""
+    connectors: dict[str, str] = {}
+    for node in nodes.values():
+        if isinstance(node, fbd.Connector):
+            key = node.name.upper()
+            if key in connectors:
+                report("FBD-CONNECTOR", f"connector '{node.name}' is also defined by '{connectors[key]}'",
+                       network=network.id, element=node.id)
+            else:
+                connectors[key] = node.id
+    for node in nodes.values():
+        if isinstance(node, fbd.Continuation) and node.name.upper() not in connectors:
+            report("FBD-CONNECTOR", f"continuation '{node.id}' continues '{node.name}', but this network has no "
+                   f"connector '{node.name}'", network=network.id, element=node.id)
+    return connectors
+
+
+def _resolve(graph: NetworkGraph, network: fbd.FbdNetwork, wires: dict[tuple[str, str], fbd.Wire],
+             connectors: dict[str, str], report: Report) -> None:
+    """Fill ``graph.inputs`` with every consumer pin's real source; report outputs and connectors left unwired."""
+    for (node_id, pin), wire in wires.items():
+        if isinstance(graph.nodes[node_id], fbd.Connector):
+            continue
+        source = _follow(wire, graph.nodes, wires, connectors, set())
+        if source is None:
+            graph.broken.add((node_id, pin))
+        else:
+            graph.inputs.setdefault(node_id, {})[pin] = source
+    for node in graph.nodes.values():
+        if isinstance(node, (fbd.OutputNode, fbd.Connector)) and (node.id, SIMPLE_IN) not in wires:
+            what = f"output node '{node.id}' ({node.var})" if isinstance(node, fbd.OutputNode) \
+                else f"connector '{node.name}'"
+            report("FBD-DANGLING", f"{what} has no input wire", network=network.id, element=node.id, pin=SIMPLE_IN)
+        elif isinstance(node, fbd.Connector):
+            _follow(wires[(node.id, SIMPLE_IN)], graph.nodes, wires, connectors, set(), report, network.id)
+
+
+def _follow(wire: fbd.Wire, nodes: dict[str, fbd.FbdNode], wires: dict[tuple[str, str], fbd.Wire],
+            connectors: dict[str, str], seen: set[str], report: Report | None = None,
+            network: str = "") -> Source | None:
+    """The block or input node output at the far end of ``wire``, through any connectors."""
+    producer = nodes[wire.from_.node]
+    if not isinstance(producer, fbd.Continuation):
+        return Source(producer.id, wire.from_.pin.upper(), wire_text(wire))
+    connector = connectors.get(producer.name.upper())
+    if connector is None or connector in seen or (connector, SIMPLE_IN) not in wires:
+        if report is not None and connector in seen:
+            report("FBD-CONNECTOR", f"connector '{producer.name}' is fed only through its own continuations",
+                   network=network, element=connector)
+        return None
+    return _follow(wires[(connector, SIMPLE_IN)], nodes, wires, connectors, seen | {connector}, report, network)
+
+
+# --------------------------------------------------------------------------- evaluation order
+
+
+def _order(graph: NetworkGraph, network: fbd.FbdNetwork, report: Report) -> list[str]:
+    rank = _explicit_ranks(network, graph.nodes, report)
+
+    def key(node_id: str) -> tuple:
+        pos = graph.nodes[node_id].pos
+        return (rank.get(node_id, len(rank)), pos.y if pos else math.inf, pos.x if pos else math.inf, node_id)
+
+    data_nodes = [n.id for n in graph.nodes.values() if isinstance(n, (fbd.Block, fbd.OutputNode))]
+    predecessors = {n: {s.node for s in graph.inputs.get(n, {}).values()
+                        if isinstance(graph.nodes[s.node], fbd.Block)} for n in data_nodes}
+    scheduled = _data_flow_order(data_nodes, predecessors, key)
+    done: set[str] = set()
+    for node_id in scheduled:
+        for pin, source in graph.inputs.get(node_id, {}).items():
+            if source.node in predecessors[node_id] and source.node not in done:
+                graph.feedback.add((node_id, pin))
+        done.add(node_id)
+    unused = {s.node for sources in graph.inputs.values() for s in sources.values()}
+    unused = [n.id for n in graph.nodes.values() if isinstance(n, fbd.InputNode) and n.id not in unused]
+    control = [n.id for n in graph.nodes.values() if isinstance(n, CONTROL)]
+    return _place_inputs(graph, scheduled + sorted(unused, key=key) + sorted(control, key=key), key)
+
+
+def _explicit_ranks(network: fbd.FbdNetwork, nodes: dict[str, fbd.FbdNode], report: Report) -> dict[str, int]:
+    ranks: dict[str, int] = {}
+    for node_id in network.order or []:
+        if node_id not in nodes:
+            report("FBD-ORDER", f"the order list names '{node_id}', which is not a node of this network",
+                   network=network.id, element=node_id)
+        else:
+            ranks.setdefault(node_id, len(ranks))
+    return ranks
+
+
+def _data_flow_order(nodes: list[str], predecessors: dict[str, set[str]], key) -> list[str]:
+    """Kahn's algorithm with a priority key; when only cycles remain, the best-keyed node of a source
+    strongly connected component goes first (its incoming cycle wires become feedback)."""
+    component = _components(nodes, predecessors)
+    waiting = {n: set(p) for n, p in predecessors.items()}
+    successors: dict[str, list[str]] = {n: [] for n in nodes}
+    for node, preds in predecessors.items():
+        for pred in preds:
+            successors[pred].append(node)
+    ready = [(key(n), n) for n in nodes if not waiting[n]]
+    heapq.heapify(ready)
+    order: list[str] = []
+    done: set[str] = set()
+    while len(order) < len(nodes):
+        if not ready:  # only cycles are left: start one that nothing outside it still feeds
+            blocked = {component[n] for n in nodes if n not in done
+                       for p in waiting[n] if component[p] != component[n]}
+            first = min((n for n in nodes if n not in done and component[n] not in blocked), key=key)
+            heapq.heappush(ready, (key(first), first))
+        _, node = heapq.heappop(ready)
+        if node in done:
+            continue
+        done.add(node)
+        order.append(node)
+        for succ in successors[node]:
+            waiting[succ].discard(node)
+            if not waiting[succ] and succ not in done:
+                heapq.heappush(ready, (key(succ), succ))
+    return order
+
+
+def _components(nodes: list[str], predecessors: dict[str, set[str]]) -> dict[str, int]:
+    """Strongly connected components (iterative Tarjan over predecessor edges): node -> component number."""
+    index: dict[str, int] = {}
+    low: dict[str, int] = {}
+    component: dict[str, int] = {}
+    stack: list[str] = []
+    on_stack: set[str] = set()
+    count = 0
+    for root in nodes:
+        if root in index:
+            continue
+        work = [(root, iter(sorted(predecessors[root])))]
+        index[root] = low[root] = len(index)
+        stack.append(root)
+        on_stack.add(root)
+        while work:
+            node, edges = work[-1]
+            advanced = False
+            for nxt in edges:
+                if nxt not in index:
+                    index[nxt] = low[nxt] = len(index)
+                    stack.append(nxt)
+                    on_stack.add(nxt)
+                    work.append((nxt, iter(sorted(predecessors[nxt]))))
+                    advanced = True
+                    break
+                if nxt in on_stack:
+                    low[node] = min(low[node], index[nxt])
+            if advanced:
+                continue
+            work.pop()
+            if work:
+                low[work[-1][0]] = min(low[work[-1][0]], low[node])
+            if low[node] == index[node]:
+                while True:
+                    member = stack.pop()
+                    on_stack.discard(member)
+                    component[member] = count
+                    if member == node:
+                        break
+                count += 1
+    return component
+
+
+def _place_inputs(graph: NetworkGraph, order: list[str], key) -> list[str]:
+    """Put each input node just before its first consumer (unused ones stay where ``order`` has them)."""
+    placed = set(order)
+    result: list[str] = []
+    for node_id in order:
+        for source in sorted(graph.inputs.get(node_id, {}).values(), key=lambda s: key(s.node)):
+            if isinstance(graph.nodes[source.node], fbd.InputNode) and source.node not in placed:
+                placed.add(source.node)
+                result.append(source.node)
+        result.append(node_id)
+    return result
