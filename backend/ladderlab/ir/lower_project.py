@@ -24,13 +24,16 @@ from ..st import types as st_types
 from ..st.literals import decode_duration
 from ..st.symbols import CheckResult, PouInfo, Symbol
 from .context import PouContext
+from .lower_fbd import lower_fbd_body
+from .lower_ld import lower_ld_body
 from .lower_st import lower_st_body
 from .lower_types import LoweringError, ir_default
 from .nodes import Assign, Binary, Block, Origin, Pou, Program, Slot, Stmt, TaskSpec, Unary, Var
 from .types import BOOL
 
 #: Body lowering per ``Pou.language``; the LD and FBD lowerings add "ld" and "fbd".
-LOWER_BODY: dict[str, Callable[[ModelPou, PouContext], list[Block]]] = {"st": lower_st_body}
+LOWER_BODY: dict[str, Callable[[ModelPou, PouContext], list[Block]]] = {
+    "st": lower_st_body, "ld": lower_ld_body, "fbd": lower_fbd_body}
 
 #: The task of a project without a task configuration: every PROGRAM once per scan, every 10 ms.
 DEFAULT_TASK = "DEFAULT"

@@ -1,0 +1,222 @@
+"""LD boxes and FBD blocks: what they call, and the call checked and lowered like the ST call it stands for.
+
+A box is the ST call ``inst(EN := power, IN := x, PT := T#5s, Q => y, ENO => eno)``
+or ``result := ADD(EN := power, IN1 := a, IN2 := b, ENO => eno)``, where power
+flow and wires are hidden slots (``Operands.wire_node``). The ST checker types it
+(generic inputs, widening, in-outs, unknown pins, read-only outputs ...) and the
+ST lowering builds the ``FnCall``/``FbCall``, so a box and its ST text behave the
+same by construction. What the checker cannot see from one call - a function
+box with an input left unconnected, an FB without an instance or with an
+instance of another type - is checked here first.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ..st import ast, stdlib
+from ..st import types as t
+from ..st.symbols import PouInfo, did_you_mean
+from .diagram_operands import At, Operands, subnodes
+from .lower_expr import lower_en_eno, std_call, user_call
+from .lower_st import _fb_call  # the FB call of an ST statement; a box is lowered exactly the same way
+from .lower_types import LoweringError
+from .nodes import Expr, FnCall, If, Origin, Stmt, Var
+
+Wired = tuple[Expr, t.Type]  # a value from a wire or the power flow (hidden slot or constant) and its type
+PinValue = str | Wired  # operand text, or a value from a wire or the power flow
+
+
+@dataclass(frozen=True)
+class Callee:
+    """The function or function block a box calls: a standard one or a user POU."""
+
+    name: str
+    std_function: stdlib.StdFunction | None = None
+    std_fb: stdlib.StdFunctionBlock | None = None
+    pou: PouInfo | None = None
+
+    @property
+    def is_fb(self) -> bool:
+        return self.std_fb is not None or self.pou is not None and self.pou.kind == "FUNCTION_BLOCK"
+
+    def input_names(self) -> list[str]:
+        """The declared inputs (VAR_IN_OUT included) in formal order; an extensible function's minimum."""
+        if self.std_function is not None:
+            return [p.name for p in self.std_function.inputs]
+        if self.std_fb is not None:
+            return [p.name for p in self.std_fb.inputs]
+        return [s.name.upper() for s in self.pou.parameters("VAR_INPUT", "VAR_IN_OUT")]
+
+    def output_names(self) -> list[str]:
+        if self.std_fb is not None:
+            return [p.name for p in self.std_fb.outputs]
+        if self.pou is not None and self.is_fb:
+            return [s.name.upper() for s in self.pou.parameters("VAR_OUTPUT")]
+        return ["OUT"]
+
+    def rank(self, pin: str) -> tuple[int, int]:
+        """Position of an input pin as the box draws it (top to bottom): declared order, then IN3, IN4 ..."""
+        names = self.input_names()
+        if pin in names:
+            return 0, names.index(pin)
+        digits = pin[len(pin.rstrip("0123456789")):]
+        return 1, int(digits) if digits else 0
+
+    def is_input(self, pin: str) -> bool:
+        if self.std_function is not None:
+            return self.std_function.pin(pin) is not None
+        return pin in self.input_names()
+
+    def bool_inputs(self) -> list[str]:
+        """Inputs that can carry power flow: BOOL pins, and generic pins whose family admits BOOL (AND, OR ...)."""
+        if self.std_function is not None:
+            return [p.name for p in self.std_function.inputs
+                    if p.type == "BOOL" or p.generic and t.in_family(t.BOOL, p.type)]
+        if self.std_fb is not None:
+            return [p.name for p in self.std_fb.inputs if p.type == "BOOL"]
+        return [s.name.upper() for s in self.pou.parameters("VAR_INPUT") if t.same(s.type, t.BOOL)]
+
+    def bool_outputs(self) -> list[str]:
+        """FB outputs that can carry power flow on (for a function, its result type decides)."""
+        if self.std_fb is not None:
+            return [p.name for p in self.std_fb.outputs if p.type == "BOOL"]
+        return [s.name.upper() for s in self.pou.parameters("VAR_OUTPUT") if t.same(s.type, t.BOOL)]
+
+    def in_outs(self) -> list[str]:
+        if self.pou is None:
+            return []
+        return [s.name.upper() for s in self.pou.parameters("VAR_IN_OUT")]
+
+    def missing(self, connected: set[str]) -> list[str]:
+        """Inputs that must be connected but are not: every input of a standard function (extension pins
+        without gaps: IN3 needs IN2 ...), and every VAR_IN_OUT."""
+        if self.std_function is None:
+            return [pin for pin in self.in_outs() if pin not in connected]
+        needed = self.input_names()
+        extra = [self.rank(pin)[1] for pin in connected if self.rank(pin)[0] == 1 and self.is_input(pin)]
+        if extra and self.std_function.extensible:
+            last = self.std_function.inputs[-1].name
+            stem = last.rstrip("0123456789")
+            needed += [f"{stem}{n}" for n in range(int(last[len(stem):]) + 1, max(extra))]
+        return [pin for pin in needed if pin not in connected]
+
+
+def resolve_callee(ops: Operands, call: str, instance: str | None, at: At) -> tuple[Callee, str | None] | None:
+    """The callee of a box and its instance operand (FBs), or None (reported): unknown name, FB without
+    an instance or with an instance of another type, function with an instance."""
+    name = call.strip()
+    pou = ops.ctx.checked.pou(name)
+    if pou is not None and pou.kind == "PROGRAM":
+        ops.report(at, f"{ops.lang}-NOT-CALLABLE", f"{pou.name} is a program: programs are run by tasks, not "
+                   "called from a diagram")
+        return None
+    if pou is not None:
+        callee = Callee(pou.name, pou=pou)
+    elif stdlib.function(name) is not None:
+        callee = Callee(name.upper(), std_function=stdlib.function(name))
+    elif stdlib.function_block(name) is not None:
+        callee = Callee(name.upper(), std_fb=stdlib.function_block(name))
+    else:
+        known = [*ops.ctx.checked.pous, *stdlib.FUNCTIONS, *stdlib.FUNCTION_BLOCKS]
+        ops.report(at, f"{ops.lang}-UNKNOWN-CALL", f"unknown function or function block '{name}'"
+                   + did_you_mean(name, known))
+        return None
+    if not callee.is_fb:
+        if instance:
+            ops.report(at, f"{ops.lang}-INSTANCE", f"{callee.name} is a function: it has no instance (remove "
+                       f"'{instance}')")
+            return None
+        return callee, None
+    if not instance or not instance.strip():
+        ops.report(at, f"{ops.lang}-NO-INSTANCE", f"the function block {callee.name} needs an instance: declare "
+                   f"one (e.g. inst : {callee.name};) and name it in the box")
+        return None
+    value, ty = ops.read(instance, at, f"the instance of {callee.name}")
+    if value is None:
+        return None
+    if not isinstance(ty, t.FbType) or ty.name.upper() != callee.name.upper():
+        ops.report(at, f"{ops.lang}-INSTANCE-TYPE", f"'{instance.strip()}' is a {ty}, not a {callee.name} instance")
+        return None
+    return callee, instance.strip()
+
+
+def check_call(ops: Operands, callee: Callee, instance: str | None, inputs: dict[str, PinValue],
+               outputs: dict[str, str], at: At, en: PinValue | None = None,
+               eno: Var | None = None) -> ast.Call | None:
+    """The box as a checked ST call (None when reported). ``inputs``/``outputs`` map upper-case pin names
+    to what feeds them / the variable they write (FB outputs)."""
+    missing = callee.missing(set(inputs))
+    for pin in missing:
+        ops.report(at.on(pin), f"{ops.lang}-MISSING-PIN", f"input {pin} of {callee.name} is not connected")
+    args: list[ast.Arg] = []
+    pins: dict[int, str] = {}
+    failed = bool(missing)
+    if en is not None:
+        node = _node(ops, en, at.on("EN"), f"input EN of {callee.name}")
+        failed |= node is None
+        if node is not None:
+            args.append(_arg(ast.Arg("EN", node), "EN", pins))
+    for pin in sorted(inputs, key=callee.rank):
+        node = _node(ops, inputs[pin], at.on(pin), f"input {pin} of {callee.name}")
+        failed |= node is None
+        if node is not None:
+            args.append(_arg(ast.Arg(pin, node), pin, pins))
+    for pin, text in outputs.items():
+        node = ops.parse(text, at.on(pin), f"output {pin} of {callee.name}")
+        failed |= node is None
+        if node is not None:
+            args.append(_arg(ast.Arg(pin, node, output=True), pin, pins))
+    if eno is not None:
+        args.append(ast.Arg("ENO", ops.wire_node(eno, t.BOOL), output=True))
+    if failed:
+        return None
+    target = ops.parse(instance, at, "the instance") if instance is not None else ast.Name(callee.name)
+    node = ast.Call(target, args)
+    before = len(ops.ctx.diagnostics)
+    checker = ops.checker(at, pins)
+    if callee.is_fb:
+        checker.call(node, statement=True)
+    else:
+        checker.expr(node)  # types the call node (its result type)
+    if any(d.severity == "error" for d in ops.ctx.diagnostics[before:]) or node.ty is t.ERROR:
+        return None
+    return node
+
+
+def _node(ops: Operands, value: PinValue, at: At, what: str) -> ast.Expr | None:
+    if isinstance(value, str):
+        return ops.parse(value, at, what)
+    return ops.wire_node(*value)
+
+
+def _arg(arg: ast.Arg, pin: str, pins: dict[int, str]) -> ast.Arg:
+    for node in subnodes(arg):
+        pins[id(node)] = pin
+    return arg
+
+
+def lower_call(ops: Operands, callee: Callee, node: ast.Call, result: Var | None, at: At,
+               origin: Origin) -> list[Stmt] | None:
+    """The statements of a checked box call: one ``FnCall`` writing ``result``, or the ``FbCall`` (and the
+    output copies an ST call would have); None when the engine cannot run it (reported)."""
+    try:
+        if callee.is_fb:
+            return [_located(s, origin) for s in _fb_call(node, ops.ctx, origin)]
+        call = std_call(node, ops.ctx) if callee.std_function is not None else user_call(node, ops.ctx)
+        en, eno, after = lower_en_eno(node, ops.ctx)
+    except LoweringError as error:
+        if error.message is not None:
+            ops.report(at, error.code, error.message)
+        return None
+    return [FnCall(call, result, origin, en, eno), *(_located(s, origin) for s in after)]
+
+
+def _located(statement: Stmt, origin: Origin) -> Stmt:
+    """Give the statements of a box (output copies placed by the ST lowering) the box's own origin."""
+    statement.origin = origin
+    if isinstance(statement, If):
+        for _, body in statement.branches:
+            for inner in body:
+                _located(inner, origin)
+    return statement

@@ -1,0 +1,236 @@
+"""Operand texts of LD/FBD elements, checked by the ST checker and lowered by lower_expr.
+
+The one place where diagram text meets the ST front end. A contact's ``T1.Q``,
+a coil's ``Motor``, a pin's ``T#5s`` are ST operands: they are parsed and typed
+by the ST checker (so names, types and messages are exactly ST's) and lowered
+by ``lower_expr``. The checker's diagnostics are re-located from the operand
+text to the POU, network, element and pin they belong to.
+
+Values that come from a wire or the power flow rather than from text are
+hidden slots; ``wire_node`` gives them an AST name the checker resolves
+(``_WireChecker``), so a box call with wired inputs is checked like any ST call.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+from typing import Any
+
+from ..model.diagnostics import Diagnostic
+from ..st import ast
+from ..st import types as t
+from ..st.body import BodyChecker
+from ..st.checker import check_operand
+from ..st.parser import parse_expression
+from ..st.rules import assignable_or_report
+from ..st.symbols import Symbol
+from .context import HIDDEN_PREFIX, PouContext
+from .lower_expr import lower_access, lower_expr, lower_to
+from .lower_types import LoweringError
+from .nodes import Const, Expr, Var
+from .types import BOOL, IrType
+
+
+@dataclass(frozen=True)
+class At:
+    """Where a diagnostic of a diagram goes: network, element and pin."""
+
+    network: str
+    element: str | None = None
+    pin: str | None = None
+
+    def on(self, pin: str | None) -> At:
+        return At(self.network, self.element, pin)
+
+
+class _WireChecker(BodyChecker):
+    """The ST checker, plus names for values that come from wires and power flow instead of text."""
+
+    def __init__(self, operands: Operands, report: Any):
+        super().__init__(operands.ctx.checked, operands.ctx.info, report)
+        self._wires = operands.wires
+
+    def lookup(self, name: str) -> Symbol | None:
+        return self._wires.get(name.upper()) or super().lookup(name)
+
+
+class Operands:
+    """Reads, writes and checks the operand texts of one diagram POU; ``lang`` prefixes diagram codes (LD, FBD)."""
+
+    def __init__(self, ctx: PouContext, lang: str):
+        self.ctx = ctx
+        self.lang = lang
+        self.wires: dict[str, Symbol] = {}
+        self._reads: dict[tuple[str, str], tuple[Expr | None, t.Type, list[Diagnostic]]] = {}
+        self._temps: list[Var] = []
+        self._used = 0
+
+    # ------------------------------------------------------------ power-flow temporaries
+    def new_network(self) -> None:
+        self._used = 0
+
+    def temp(self) -> Var:
+        """A BOOL temporary for one power-flow value. Each is written before it is read within one network,
+        so every network reuses the same few slots (a 10,000-network POU does not get 50,000 slots)."""
+        if self._used == len(self._temps):
+            self._temps.append(self.ctx.hidden("P", BOOL, var_class="VAR_TEMP"))
+        self._used += 1
+        return self._temps[self._used - 1]
+
+    # ------------------------------------------------------------ diagnostics
+    def report(self, at: At, code: str, message: str, severity: str = "error") -> None:
+        self.ctx.report(code, message, network=at.network, element=at.element, pin=at.pin, severity=severity)
+
+    def _relocate(self, diagnostic: Diagnostic, at: At) -> None:
+        """An operand's diagnostic, moved from the operand text to the element and pin."""
+        code, severity = diagnostic.code, diagnostic.severity
+        if code == "ST-INPUT-WRITE":  # harmless in ST, but a coil or output on an input is a design error here
+            code, severity = f"{self.lang}-INPUT-WRITE", "error"
+        self.report(at, code, diagnostic.message, severity)
+
+    def checker(self, at: At, pins: dict[int, str] | None = None) -> BodyChecker:
+        """A checker reporting at ``at``; ``pins`` maps AST node ids to the pin they belong to."""
+        def report(code: str, message: str, node: Any, severity: str = "error") -> None:
+            where = at.on(pins.get(id(node), at.pin)) if pins else at
+            self._relocate(Diagnostic(code=code, message=message, severity=severity), where)
+        return _WireChecker(self, report)
+
+    # ------------------------------------------------------------ parsing and lowering
+    def parse(self, text: str, at: At, what: str) -> ast.Expr | None:
+        """The AST of an operand text, or None (reported)."""
+        if not text.strip():
+            self.report(at, f"{self.lang}-MISSING-OPERAND", f"{what} has no operand")
+            return None
+        parsed = parse_expression(text, pou=self.ctx.info.name)
+        for diagnostic in parsed.diagnostics:
+            self._relocate(diagnostic, at)
+        return parsed.ast if parsed.ok else None
+
+    def lower(self, node: ast.Expr, at: At, expected: IrType | None = None) -> Expr | None:
+        """``lower_expr`` with its errors reported at ``at`` (None then)."""
+        try:
+            return lower_to(node, self.ctx, expected) if expected is not None else lower_expr(node, self.ctx)
+        except LoweringError as error:
+            if error.message is not None:
+                self.report(at, error.code, error.message)
+            return None
+
+    def access(self, node: ast.Expr, at: At) -> Var | None:
+        try:
+            return lower_access(node, self.ctx)
+        except LoweringError as error:
+            if error.message is not None:
+                self.report(at, error.code, error.message)
+            return None
+
+    def wire_node(self, value: Expr, ty: t.Type) -> ast.Expr:
+        """An AST standing for a computed value (a BOOL constant or a hidden slot) as a call argument."""
+        if isinstance(value, Const) and isinstance(value.value, bool):
+            node: ast.Expr = ast.BoolLit(value.value)
+        else:
+            assert isinstance(value, Var) and not value.path and value.name.startswith(HIDDEN_PREFIX)
+            if value.name not in self.wires:
+                self.wires[value.name] = Symbol(value.name, "VAR", ty, None, pou=self.ctx.info.name)
+            node = ast.Name(value.name)
+            node.ref = self.wires[value.name]  # also when the checker skips it (EN/ENO of standard functions)
+        node.ty = ty
+        return node
+
+    # ------------------------------------------------------------ operands
+    def read(self, text: str, at: At, what: str, expected: t.Type | None = None) -> tuple[Expr | None, t.Type]:
+        """Check and lower a read operand (contact variable, pin value, input node); (None, type) when reported.
+
+        Identical operand texts of one POU are checked once (the IR is immutable), so large
+        generated diagrams lower fast; their diagnostics are reported at every use.
+        """
+        key = (text, expected.name if expected is not None else "")
+        if key not in self._reads:
+            self._reads[key] = self._read(text, what, expected)
+        value, ty, diagnostics = self._reads[key]
+        for diagnostic in diagnostics:
+            self._relocate(diagnostic, at)
+        return value, ty
+
+    def _read(self, text: str, what: str, expected: t.Type | None) -> tuple[Expr | None, t.Type, list[Diagnostic]]:
+        if not text.strip():
+            return None, t.ERROR, [Diagnostic(code=f"{self.lang}-MISSING-OPERAND", message=f"{what} has no operand")]
+        node, diagnostics = check_operand(self.ctx.checked, self.ctx.info.name, text, expected)
+        if node is None or any(d.severity == "error" for d in diagnostics) or node.ty in (t.ERROR, t.VOID):
+            return None, t.ERROR, diagnostics
+        lowered = self._lower_quietly(node, diagnostics, self.ctx.ir_type(expected) if expected is not None else None)
+        return lowered, node.ty, diagnostics
+
+    def _lower_quietly(self, node: ast.Expr, diagnostics: list[Diagnostic], expected: IrType | None) -> Expr | None:
+        try:
+            return lower_to(node, self.ctx, expected) if expected is not None else lower_expr(node, self.ctx)
+        except LoweringError as error:
+            if error.message is not None:
+                diagnostics.append(Diagnostic(code=error.code, message=error.message))
+            return None
+
+    def read_bool(self, text: str, at: At, what: str) -> Expr | None:
+        """A contact's variable: any BOOL operand; anything else is reported as not BOOL."""
+        value, ty = self.read(text, at, what)
+        if value is not None and not t.same(ty, t.BOOL):
+            self.report(at, f"{self.lang}-NOT-BOOL", f"{what} needs a BOOL variable; '{text.strip()}' is {ty}")
+            return None
+        return value
+
+    def target(self, text: str, at: At, what: str) -> tuple[Var | None, t.Type]:
+        """A written operand (coil, output node, box output): a variable that may be assigned."""
+        node = self.parse(text, at, what)
+        if node is None:
+            return None, t.ERROR
+        before = len(self.ctx.diagnostics)
+        ty = self.checker(at).target(node)
+        if ty is t.ERROR or any(d.severity == "error" for d in self.ctx.diagnostics[before:]):
+            return None, t.ERROR
+        return self.access(node, at), ty
+
+    def bool_target(self, text: str, at: At, what: str) -> Var | None:
+        var, ty = self.target(text, at, what)
+        if var is not None and not t.same(ty, t.BOOL):
+            self.report(at, f"{self.lang}-NOT-BOOL", f"{what} needs a BOOL variable; '{text.strip()}' is {ty}")
+            return None
+        return var
+
+    def value_target(self, text: str, at: At, what: str, value: t.Type) -> Var | None:
+        """A written operand that receives a ``value``-typed result (output node, box output pin)."""
+        var, ty = self.target(text, at, what)
+        return var if var is not None and self.assignable(ty, value, at, f"{what} ('{text.strip()}')") else None
+
+    def assignable(self, target: t.Type, value: t.Type, at: At, what: str) -> bool:
+        """Can a ``value`` be stored in ``target``? ST's rule and message (ST-23), reported at ``at``."""
+        return assignable_or_report(self.checker(at), target, value, None, what)
+
+    def compare(self, op: str, left: str, right: str, at: At) -> Expr | None:
+        """A compare contact's condition, typed by the ST rules of ``left <op> right`` (GR-19)."""
+        nodes = [self.parse(left, at.on("left"), "the compare contact"),
+                 self.parse(right, at.on("right"), "the compare contact")]
+        if None in nodes:
+            return None
+        pins = {id(n): pin for root, pin in zip(nodes, ("left", "right")) for n in subnodes(root)}
+        node = ast.Binary(_COMPARE[op], nodes[0], nodes[1])
+        before = len(self.ctx.diagnostics)
+        self.checker(at, pins).expr(node)
+        if any(d.severity == "error" for d in self.ctx.diagnostics[before:]):
+            return None
+        return self.lower(node, at)
+
+
+_COMPARE = {"GT": ">", "GE": ">=", "EQ": "=", "LE": "<=", "LT": "<", "NE": "<>"}
+
+
+def subnodes(node: Any):
+    """``node`` and every AST node below it (to map checker reports back to the pin an argument feeds)."""
+    yield node
+    if not dataclasses.is_dataclass(node):
+        return
+    for field in dataclasses.fields(node):
+        if field.name in ("ty", "ref", "span"):
+            continue
+        value = getattr(node, field.name)
+        for item in value if isinstance(value, list) else [value]:
+            if dataclasses.is_dataclass(item) and not isinstance(item, ast.Span):
+                yield from subnodes(item)

@@ -1,0 +1,287 @@
+"""FBD body -> IR: one labelled block per network, nodes in the order fbd_order fixes (docs/diagrams.md).
+
+Every block is the ST call it stands for (diagram_calls); its outputs stay where
+the call leaves them - a function's result in a hidden slot kept between scans
+(EN FALSE keeps it, a feedback wire reads last scan's value), an FB's outputs
+in its instance - and consumers read them there. Pin flags add the inversion
+or edge detection in front of an input or behind an output. Output nodes
+write like LD coils (power.coil). Every block output pin is probed as
+``<id>.<PIN>``; input, output, jump and return nodes as ``<id>``.
+"""
+
+from __future__ import annotations
+
+from ..model import fbd
+from ..model.project import Pou as ModelPou
+from ..st import types as t
+from ..st.symbols import did_you_mean
+from .context import PouContext
+from .diagram_calls import Callee, PinValue, Wired, check_call, lower_call, resolve_callee
+from .diagram_checks import canonical_label, check_jump_target, check_labels, check_unique_ids, check_unique_networks
+from .diagram_operands import At, Operands
+from .fbd_order import NetworkGraph, Source, analyse
+from .lower_expr import convert
+from .nodes import Assign, Block, Expr, If, Jump, Origin, Probe, Return, Stmt, Var
+from .power import TRUE, coil, edge, not_
+from .types import BOOL
+
+
+def lower_fbd_body(pou: ModelPou, ctx: PouContext) -> list[Block]:
+    """The networks of an FBD POU as IR blocks; problems are reported on ``ctx`` with network and element."""
+    body: fbd.FbdBody = pou.body  # type: ignore[assignment]
+    check_unique_networks(body.networks, ctx.report, "FBD")
+    check_unique_ids(((n.id, node.id) for n in body.networks for node in n.nodes), ctx.report, "FBD")
+    labels = check_labels(body.networks, ctx.report, "FBD")
+    ops = Operands(ctx, "FBD")
+    return [_Network(ctx, ops, labels, network).lower() for network in body.networks]
+
+
+def evaluation_order(network: fbd.FbdNetwork) -> list[str]:
+    """The node ids of ``network`` in the order they run, for the editor's execution-order badges."""
+    return analyse(network, lambda *_args, **_kwargs: None).order
+
+
+class _Network:
+    def __init__(self, ctx: PouContext, ops: Operands, labels: dict[str, str], network: fbd.FbdNetwork):
+        self.ctx, self.ops, self.labels, self.network = ctx, ops, labels, network
+        self.out: list[Stmt] = []
+        #: (producer id, PIN) -> what its consumers read; missing when the producer could not be lowered
+        self.values: dict[tuple[str, str], PinValue] = {}
+        self.graph: NetworkGraph | None = None
+        self.callees: dict[str, tuple[Callee, str | None] | None] = {}
+
+    def lower(self) -> Block:
+        self.ops.new_network()
+        self.graph = graph = analyse(self.network, self.ctx.report)
+        for node in graph.nodes.values():
+            if isinstance(node, fbd.Block):
+                self.callees[node.id] = resolve_callee(self.ops, node.call, node.instance, self.at(node.id))
+        for node_id in graph.order:
+            node = graph.nodes[node_id]
+            if isinstance(node, fbd.InputNode):
+                self.input_node(node)
+            elif isinstance(node, fbd.Block):
+                self.block(node)
+            elif isinstance(node, fbd.OutputNode):
+                self.output_node(node)
+            else:
+                self.control(node)
+        label = canonical_label(self.network.label) if self.network.label else None
+        return Block(self.out, Origin(self.ctx.name, network=self.network.id),
+                     label if label is not None and self.labels.get(label) == self.network.id else None)
+
+    # ------------------------------------------------------------ helpers
+    def at(self, node: str, pin: str | None = None) -> At:
+        return At(self.network.id, node, pin)
+
+    def origin(self, node: str) -> Origin:
+        return Origin(self.ctx.name, network=self.network.id, element=node)
+
+    def expr(self, value: PinValue, at: At, what: str, expected: t.Type | None = None) -> tuple[Expr | None, t.Type]:
+        """A pin value as an IR expression and its type (operand texts are read and typed here)."""
+        if isinstance(value, str):
+            return self.ops.read(value, at, what, expected)
+        return value
+
+    def source(self, node: str, pin: str) -> PinValue | None:
+        """What feeds input ``pin`` of ``node`` (None: not wired, or its producer failed and was reported)."""
+        source = self.graph.inputs.get(node, {}).get(pin)
+        if source is None:
+            return None
+        if (node, pin) in self.graph.feedback:
+            return self.feedback(node, pin, source)
+        return self.values.get((source.node, source.pin))
+
+    def feedback(self, node: str, pin: str, source: Source) -> PinValue | None:
+        """GR-06: a wire that closes a loop carries the producer's value of the previous scan. An FB output
+        keeps it in the instance; a function result only in a variable it writes (an output node)."""
+        resolved = self.callees.get(source.node)
+        if resolved is None:
+            return None
+        callee, instance = resolved
+        flags = _flags(self.graph.nodes[source.node]).get(source.pin)
+        if callee.is_fb and source.pin in callee.output_names():
+            text = f"{instance}.{source.pin}"
+            return f"NOT {text}" if flags is not None and flags.negated else text
+        for consumer, sources in self.graph.inputs.items():
+            target, fed = self.graph.nodes[consumer], sources.get("IN")
+            if isinstance(target, fbd.OutputNode) and target.mode == "normal" and fed is not None \
+                    and (fed.node, fed.pin) == (source.node, source.pin):
+                return target.var
+        self.ops.report(self.at(node, pin), "FBD-FEEDBACK", f"the wire {source.wire} closes a loop: it carries "
+                        f"{source.node}.{source.pin} of the previous scan, and a function's result has none before its "
+                        f"first call; also connect {source.node}.{source.pin} to an output variable, whose declared "
+                        "initial value then starts the loop")
+        return None
+
+    # ------------------------------------------------------------ nodes
+    def input_node(self, node: fbd.InputNode) -> None:
+        value, _ = self.ops.read(node.expr, self.at(node.id), f"input node '{node.id}'")
+        if value is not None:
+            self.values[(node.id, "OUT")] = node.expr
+            self.out.append(Probe(node.id, value, self.origin(node.id)))
+
+    def output_node(self, node: fbd.OutputNode) -> None:
+        """An output variable: ``normal`` stores any type; the other modes act like the LD coils on BOOL."""
+        at, origin = self.at(node.id, "IN"), self.origin(node.id)
+        value = self.source(node.id, "IN")
+        if value is None:
+            return
+        what = f"output node '{node.id}'"
+        if node.mode == "normal":
+            target, target_type = self.ops.target(node.var, at.on(None), what)
+            if target is None:
+                return
+            expr, ty = self.expr(value, at, what, target_type)
+            if expr is None or not isinstance(value, str) and not self.ops.assignable(target_type, ty, at, what):
+                return
+            expr = convert(expr, target.type)
+        else:
+            target = self.ops.bool_target(node.var, at.on(None), what)
+            expr = self.bool_value(value, at, what)
+            if target is None or expr is None:
+                return
+        self.out += coil(node.mode, target, expr, lambda: self.ctx.hidden(f"{node.id}_M", BOOL), origin)
+        self.out.append(Probe(node.id, expr, origin))
+
+    def control(self, node: fbd.FbdJump | fbd.FbdReturn) -> None:
+        """GR-07..10: unwired, a jump or return always acts; wired, when its input is TRUE."""
+        origin = self.origin(node.id)
+        wired = "IN" in self.graph.inputs.get(node.id, {})
+        value = self.source(node.id, "IN")
+        if (node.id, "IN") in self.graph.broken or wired and value is None:
+            return  # reported where the wire breaks or the value fails
+        condition = self.bool_value(value, self.at(node.id, "IN"), f"{node.type} '{node.id}'") if wired else TRUE
+        if condition is None:
+            return
+        self.out.append(Probe(node.id, condition, origin))
+        if isinstance(node, fbd.FbdJump):
+            label = check_jump_target(node.target, self.labels, self.ctx.report, "FBD", network=self.network.id,
+                                      element=node.id)
+            if label is not None:
+                self.out.append(Jump(label, None if condition == TRUE else condition, origin))
+        else:
+            self.out.append(Return(origin) if condition == TRUE else If([(condition, [Return(origin)])], [], origin))
+
+    def bool_value(self, value: PinValue, at: At, what: str) -> Expr | None:
+        expr, ty = self.expr(value, at, what)
+        if expr is not None and not t.same(ty, t.BOOL):
+            self.ops.report(at, "FBD-NOT-BOOL", f"{what} needs a BOOL value, got {ty}")
+            return None
+        return expr
+
+    # ------------------------------------------------------------ blocks
+    def block(self, node: fbd.Block) -> None:
+        resolved = self.callees[node.id]
+        if resolved is None:
+            return
+        callee, instance = resolved
+        at, origin = self.at(node.id), self.origin(node.id)
+        flags = _flags(node)
+        if not self._pins_known(node, callee, flags) or any(n == node.id for n, _ in self.graph.broken):
+            return
+        inputs: dict[str, PinValue] = {}
+        for pin in self.graph.inputs.get(node.id, {}):
+            value = self.source(node.id, pin)
+            if value is None:
+                return  # its producer failed or the loop has no initial value: reported there
+            value = self.flagged(value, flags.get(pin), at.on(pin))
+            if value is None:
+                return
+            inputs[pin] = value
+        en = inputs.pop("EN", None)
+        if node.en and en is None:
+            self.ops.report(at.on("EN"), "FBD-MISSING-PIN", f"input EN of '{node.id}' is not connected")
+            return
+        eno = self.ctx.hidden(f"{node.id}_ENO", BOOL) if node.en else None
+        call = check_call(self.ops, callee, instance, inputs, {}, at, en, eno)
+        if call is None:
+            return
+        result = None if callee.is_fb else self.ctx.hidden(f"{node.id}_OUT", self.ctx.ir_type(call.ty))
+        statements = lower_call(self.ops, callee, call, result, at, origin)
+        if statements is None:
+            return
+        self.out += statements
+        self._outputs(node, callee, instance, call, result, eno, flags, en)
+
+    def _pins_known(self, node: fbd.Block, callee: Callee, flags: dict[str, fbd.PinFlags]) -> bool:
+        """Wires from the block and pin flags name pins it has; EN/ENO need ``en``; edges are for inputs.
+        (Wires into unknown inputs are reported by the call check, with ST's messages.)"""
+        outputs = callee.output_names() + (["ENO"] if node.en else [])
+        used = {s.pin for sources in self.graph.inputs.values() for s in sources.values() if s.node == node.id}
+        wired = set(self.graph.inputs.get(node.id, {}))
+        problems: list[tuple[str, str, str]] = []
+        for pin in sorted(used - set(outputs) - {"ENO"}):
+            problems.append((pin, "FBD-UNKNOWN-PIN", f"{callee.name} has no output '{pin}'" + did_you_mean(pin, outputs)))
+        for pin in ("EN", "ENO"):
+            if not node.en and pin in wired | used | set(flags):
+                problems.append((pin, "FBD-UNKNOWN-PIN", f"'{node.id}' has no {pin}: set en to use EN and ENO"))
+        for pin, flag in sorted(flags.items()):
+            if pin in outputs and flag.edge is not None:
+                problems.append((pin, "FBD-PIN-FLAG", f"output {pin} of '{node.id}' cannot have an edge flag: "
+                                 "edge detection is for inputs"))
+            elif pin not in outputs and not callee.is_input(pin) and pin not in ("EN", "ENO"):
+                problems.append((pin, "FBD-UNKNOWN-PIN", f"{callee.name} has no pin '{pin}' for the flags"))
+        for pin, code, message in problems:
+            self.ops.report(self.at(node.id, pin), code, message)
+        return not problems
+
+    def flagged(self, value: PinValue, flags: fbd.PinFlags | None, at: At) -> PinValue | None:
+        """An input with its pin flags applied: inversion first, then edge detection (an R_TRIG/F_TRIG in
+        front of the pin)."""
+        if flags is None or not flags.negated and flags.edge is None:
+            return value
+        flag = "negated" if flags.edge is None else f"{flags.edge} edge"
+        expr = self.bool_value(value, at, f"the {flag} input {at.pin} of '{at.element}'")
+        if expr is None:
+            return None
+        if flags.negated:
+            expr = not_(expr)
+        if flags.edge is not None:
+            memory = self.ctx.hidden(f"{at.element}_{at.pin}_M", BOOL)
+            expr, remember = edge(flags.edge == "rising", expr, memory, self.origin(at.element))
+            slot = self.ops.temp()
+            self.out += [Assign(slot, expr, self.origin(at.element)), remember]
+            return slot, t.BOOL
+        if isinstance(value, str):
+            return f"NOT ({value})"
+        slot = self.ops.temp()
+        self.out.append(Assign(slot, expr, self.origin(at.element)))
+        return slot, t.BOOL
+
+    def _outputs(self, node: fbd.Block, callee: Callee, instance: str | None, call, result: Var | None,
+                 eno: Var | None, flags: dict, en: PinValue | None) -> None:
+        """Record what each output pin carries (after its negation flag) and probe it."""
+        at, origin = self.at(node.id), self.origin(node.id)
+        pins: dict[str, PinValue] = {}
+        if callee.is_fb:
+            pins = {pin: f"{instance}.{pin}" for pin in callee.output_names()}
+        else:
+            pins["OUT"] = (result, call.ty)
+        if eno is not None:
+            pins["ENO"] = (eno, t.BOOL)
+        probes: list[Stmt] = []
+        for pin, value in pins.items():
+            flag = flags.get(pin)
+            expr, ty = self.expr(value, at.on(pin), f"output {pin} of '{node.id}'")
+            if expr is None:
+                continue
+            if flag is not None and flag.negated:
+                if not t.same(ty, t.BOOL):
+                    self.ops.report(at.on(pin), "FBD-NOT-BOOL", f"output {pin} of '{node.id}' is negated, but "
+                                    f"it is {ty}, not BOOL")
+                    continue
+                negated = self.ops.temp()
+                self.out.append(Assign(negated, not_(expr), origin))
+                value, expr = (negated, t.BOOL), negated
+            self.values[(node.id, pin)] = value
+            probes.append(Probe(f"{node.id}.{pin}", expr, origin))
+        if en is None:
+            self.out += probes
+            return
+        condition, _ = self.expr(en, at.on("EN"), f"input EN of '{node.id}'")
+        self.out += [If([(condition, probes)], [], origin)] if condition != TRUE else probes
+
+
+def _flags(node: fbd.FbdNode) -> dict[str, fbd.PinFlags]:
+    return {pin.upper(): flag for pin, flag in (getattr(node, "pins", None) or {}).items()}

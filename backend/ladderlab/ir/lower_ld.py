@@ -1,0 +1,253 @@
+"""LD body -> IR: one labelled block per network, power flow computed once per element (docs/diagrams.md).
+
+Evaluation order (GR-28, LD-10, GR-05): networks top to bottom unless a jump
+changes it; inside a network every element exactly once, left to right,
+parallel branches top to bottom, every branch (no short-circuit, so edge
+contacts see every scan). Each element's right-side power goes into a hidden
+BOOL that every consumer reads (docs/ir.md invariant 5), so coils fed by one rung
+all see one value. Jumps and returns act after the whole network is evaluated
+(GR-05 c). Every element records its power in a ``Probe`` named by its id.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from ..model import ld
+from ..model.project import Pou as ModelPou
+from ..st import types as t
+from .context import PouContext
+from .diagram_calls import Callee, check_call, lower_call, resolve_callee
+from .diagram_checks import canonical_label, check_jump_target, check_labels, check_unique_ids, check_unique_networks
+from .diagram_operands import At, Operands
+from .nodes import Assign, Block, Expr, If, Jump, Origin, Probe, Return, Stmt, Var
+from .power import FALSE, TRUE, and_, coil, edge, not_, or_
+from .types import BOOL
+
+
+def lower_ld_body(pou: ModelPou, ctx: PouContext) -> list[Block]:
+    """The networks of an LD POU as IR blocks; problems are reported on ``ctx`` with network and element."""
+    body: ld.LdBody = pou.body  # type: ignore[assignment]
+    check_unique_networks(body.networks, ctx.report, "LD")
+    check_unique_ids(((n.id, e.id) for n in body.networks for e in walk(n.elements)), ctx.report, "LD")
+    labels = check_labels(body.networks, ctx.report, "LD")
+    rung = _Rung(ctx, Operands(ctx, "LD"), labels)
+    return [rung.lower(network) for network in body.networks]
+
+
+def walk(elements: list[ld.LdElement]) -> Iterator[ld.LdElement]:
+    """Every element of a series list, nested ones (parallel branches, box inputs) included, left to right."""
+    for element in elements:
+        yield element
+        if isinstance(element, ld.Parallel):
+            for branch in element.branches:
+                yield from walk(branch)
+        elif isinstance(element, ld.Box):
+            for value in element.inputs.values():
+                if isinstance(value, list):
+                    yield from walk(value)
+
+
+class _Rung:
+    """Lowers one network at a time; power-flow temporaries are reused from network to network."""
+
+    def __init__(self, ctx: PouContext, ops: Operands, labels: dict[str, str]):
+        self.ctx, self.ops, self.labels = ctx, ops, labels
+        self.network = ""
+        self.out: list[Stmt] = []
+        self.control: list[Stmt] = []
+
+    def lower(self, network: ld.LdNetwork) -> Block:
+        self.network, self.out, self.control = network.id, [], []
+        self.ops.new_network()
+        self.series(network.elements, TRUE, open_end=True)
+        label = canonical_label(network.label) if network.label else None
+        return Block(self.out + self.control, Origin(self.ctx.name, network=network.id),
+                     label if label is not None and self.labels.get(label) == network.id else None)
+
+    # ------------------------------------------------------------ helpers
+    def origin(self, element: str) -> Origin:
+        return Origin(self.ctx.name, network=self.network, element=element)
+
+    def at(self, element: str, pin: str | None = None) -> At:
+        return At(self.network, element, pin)
+
+    def power(self, element: str, value: Expr, *after: Stmt) -> Var:
+        """Store an element's right-side power once, run ``after`` (edge memories), and probe it."""
+        origin = self.origin(element)
+        slot = self.ops.temp()
+        self.out += [Assign(slot, value, origin), *after, Probe(element, slot, origin)]
+        return slot
+
+    def memory(self, element: str) -> Var:
+        """Per-instance edge memory of an element (docs/ir.md invariant 7)."""
+        return self.ctx.hidden(f"{element}_M", BOOL)
+
+    # ------------------------------------------------------------ series lists
+    def series(self, elements: list[ld.LdElement], power: Expr, open_end: bool) -> Expr | None:
+        """Evaluate a series list from ``power``; its right-side power, None when it ends in a jump/return.
+
+        ``open_end``: the list's right end is the rung's right end, where jumps and returns may stand.
+        """
+        for index, element in enumerate(elements):
+            last = index == len(elements) - 1
+            if isinstance(element, (ld.Jump, ld.Return)):
+                self.control_element(element, power, last and open_end)
+                if last:
+                    return None
+                continue
+            power = self.element(element, power, open_end and last)
+        return power
+
+    def element(self, element: ld.LdElement, power: Expr, open_end: bool) -> Expr:
+        if isinstance(element, ld.Contact):
+            return self.contact(element, power)
+        if isinstance(element, ld.Compare):
+            at = self.at(element.id)
+            condition = self.ops.compare(element.op, element.left, element.right, at)
+            return self.power(element.id, and_(power, condition if condition is not None else FALSE))
+        if isinstance(element, ld.Coil):
+            return self.coil(element, power)
+        if isinstance(element, ld.Parallel):
+            return self.parallel(element, power, open_end)
+        return self.box(element, power)
+
+    def contact(self, contact: ld.Contact, power: Expr) -> Var:
+        """GR-15..18: no / nc / p / n contacts; an edge contact's memory follows its variable every scan."""
+        value = self.ops.read_bool(contact.var, self.at(contact.id), f"contact '{contact.id}'")
+        value = value if value is not None else FALSE
+        if contact.mode == "no":
+            return self.power(contact.id, and_(power, value))
+        if contact.mode == "nc":
+            return self.power(contact.id, and_(power, not_(value)))
+        detected, remember = edge(contact.mode == "p", value, self.memory(contact.id), self.origin(contact.id))
+        return self.power(contact.id, and_(power, detected), remember)
+
+    def coil(self, element: ld.Coil, power: Expr) -> Expr:
+        """GR-20..25: the coil writes a function of its left power and passes that power on unchanged."""
+        origin = self.origin(element.id)
+        target = self.ops.bool_target(element.var, self.at(element.id), f"coil '{element.id}'")
+        if target is not None:
+            self.out += coil(element.mode, target, power, lambda: self.memory(element.id), origin)
+        self.out.append(Probe(element.id, power, origin))
+        return power
+
+    def parallel(self, element: ld.Parallel, power: Expr, open_end: bool) -> Var:
+        """GR-14: every branch from the same left power, top to bottom; the right side ORs the branches
+        that reach it (a branch ending in a jump or return does not)."""
+        if len(element.branches) < 2:
+            self.ops.report(self.at(element.id), "LD-PARALLEL", f"parallel '{element.id}' has "
+                            f"{len(element.branches)} branch(es); it needs at least two")
+        reaching = [out for branch in element.branches
+                    if (out := self.series(branch, power, open_end)) is not None]
+        return self.power(element.id, or_(reaching))
+
+    def control_element(self, element: ld.Jump | ld.Return, power: Expr, at_end: bool) -> None:
+        """GR-07..10: a jump or return acts when its power is ON, after the whole network (GR-05 c)."""
+        origin = self.origin(element.id)
+        self.out.append(Probe(element.id, power, origin))
+        kind = "jump" if isinstance(element, ld.Jump) else "return"
+        if not at_end:
+            self.ops.report(self.at(element.id), "LD-CONTROL-POSITION", f"{kind} '{element.id}' must be the last "
+                            "element of a branch that ends the rung")
+            return
+        if isinstance(element, ld.Jump):
+            label = check_jump_target(element.target, self.labels, self.ctx.report, "LD", network=self.network,
+                                      element=element.id)
+            if label is not None:
+                self.control.append(Jump(label, None if power == TRUE else power, origin))
+        elif power == TRUE:
+            self.control.append(Return(origin))
+        else:
+            self.control.append(If([(power, [Return(origin)])], [], origin))
+
+    # ------------------------------------------------------------ boxes
+    def box(self, box: ld.Box, power: Expr) -> Expr:
+        """A function or FB box: power enters EN (``en``) or the first free BOOL input, and leaves from ENO or
+        the first BOOL output (GR-27). Series lists feeding inputs are evaluated first, in pin order."""
+        at = self.at(box.id)
+        resolved = resolve_callee(self.ops, box.call, box.instance, at)
+        callee = resolved[0] if resolved is not None else None
+        pins = sorted(box.inputs, key=lambda p: callee.rank(p.upper()) if callee else (0, 0))
+        inputs = {}
+        for pin in pins:
+            value = box.inputs[pin]
+            if isinstance(value, list):
+                fed = self.series(value, TRUE, open_end=False)
+                if fed is None:  # the list ends in a jump or return: reported
+                    resolved = None
+                inputs[pin.upper()] = (fed, t.BOOL)
+            else:
+                inputs[pin.upper()] = value
+        if resolved is None:
+            return self.power(box.id, FALSE)
+        right = self._box(box, callee, resolved[1], inputs, power)
+        return right if right is not None else self.power(box.id, FALSE)
+
+    def _box(self, box: ld.Box, callee: Callee, instance: str | None, inputs: dict, power: Expr) -> Expr | None:
+        at, origin = self.at(box.id), self.origin(box.id)
+        for pin in ("EN", "ENO"):
+            if pin in inputs or pin in {p.upper() for p in box.outputs}:
+                self.ops.report(at.on(pin), "LD-UNKNOWN-PIN", f"{pin} is the box's power flow: set en instead of "
+                                "connecting it")
+                return None
+        en = eno = None
+        if box.en:
+            en, eno = (power, t.BOOL), self.ops.temp()
+        else:
+            free = [pin for pin in callee.bool_inputs() if pin not in inputs]
+            if not free:
+                self.ops.report(at, "LD-BOX-POWER", f"{callee.name} has no free BOOL input for the power flow: "
+                                "set en to use EN")
+                return None
+            inputs[free[0]] = (power, t.BOOL)
+        outputs = {pin.upper(): text for pin, text in box.outputs.items()}
+        result_text = outputs.pop("OUT", None) if not callee.is_fb else None
+        if not callee.is_fb and outputs:
+            for pin in outputs:
+                self.ops.report(at.on(pin), "LD-UNKNOWN-PIN", f"{callee.name} is a function: its only output is OUT")
+            return None
+        node = check_call(self.ops, callee, instance, inputs, outputs, at, en, eno)
+        if node is None:
+            return None
+        if callee.is_fb:
+            result, pins = None, {pin: self.ops.read(f"{instance}.{pin}", at.on(pin), f"output {pin}")[0]
+                                  for pin in callee.output_names()}
+        else:
+            result = self._result(node, result_text, at)
+            pins = {"OUT": result}
+        if result is None and not callee.is_fb:
+            return None
+        statements = lower_call(self.ops, callee, node, result, at, origin)
+        if statements is None:
+            return None
+        self.out += statements
+        right = eno if eno is not None else self._bool_output(callee, node, pins, at)
+        if right is None:
+            return None
+        if eno is None:
+            right = self.power(box.id, right)
+            probes: list[Stmt] = []
+        else:
+            probes = [Probe(box.id, eno, origin)]
+        probes += [Probe(f"{box.id}.{pin}", value, origin) for pin, value in pins.items() if value is not None]
+        self.out += probes if en is None or power == TRUE else [If([(power, probes)], [], origin)]
+        return right
+
+    def _result(self, node, text: str | None, at: At) -> Var | None:
+        """Where a function box's result goes: its OUT variable, else a hidden slot kept between scans."""
+        if text is not None:
+            return self.ops.value_target(text, at.on("OUT"), f"output OUT of {node.callee.name}", node.ty)
+        return self.ctx.hidden(f"{at.element}_OUT", self.ctx.ir_type(node.ty))
+
+    def _bool_output(self, callee: Callee, node, pins: dict[str, Expr | None], at: At) -> Expr | None:
+        if callee.is_fb:
+            names = callee.bool_outputs()
+            if names and pins.get(names[0]) is not None:
+                return pins[names[0]]
+        elif t.same(node.ty, t.BOOL):
+            return pins["OUT"]
+        if not callee.is_fb or not callee.bool_outputs():
+            self.ops.report(at, "LD-BOX-POWER", f"{callee.name} has no BOOL output to pass the power flow on: set en "
+                            "to use ENO")
+        return None

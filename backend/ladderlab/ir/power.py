@@ -1,0 +1,65 @@
+"""Boolean power-flow building blocks shared by LD and FBD: AND/OR/NOT, edge detection, coil writes.
+
+One definition of what a contact, an edge and a coil do (GR-15..25, LD-06), so
+an LD coil and an FBD output node with the same mode compile to the same IR.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from .nodes import Assign, Binary, Const, Expr, If, Origin, Stmt, Unary, Var
+from .types import BOOL
+
+TRUE = Const(True, BOOL)
+FALSE = Const(False, BOOL)
+
+
+def and_(left: Expr, right: Expr) -> Expr:
+    """``left AND right``; the left rail (constant TRUE) drops out."""
+    if left == TRUE:
+        return right
+    if right == TRUE:
+        return left
+    return Binary("AND", left, right, BOOL)
+
+
+def or_(values: list[Expr]) -> Expr:
+    if not values:
+        return FALSE
+    result = values[0]
+    for value in values[1:]:
+        result = Binary("OR", result, value, BOOL)
+    return result
+
+
+def not_(value: Expr) -> Expr:
+    if isinstance(value, Const):
+        return Const(not value.value, BOOL)
+    return Unary("NOT", value, BOOL)
+
+
+def edge(rising: bool, value: Expr, memory: Var, origin: Origin) -> tuple[Expr, Stmt]:
+    """A rising (falling) edge of ``value`` since the last evaluation, and the statement that remembers it.
+
+    ``memory`` starts FALSE, as the M of R_TRIG/F_TRIG (SFB-11, SFB-12): a rising edge is seen
+    in the first evaluation when ``value`` is TRUE, a falling one only after a real TRUE.
+    """
+    detected = and_(value, not_(memory)) if rising else and_(memory, not_(value))
+    return detected, Assign(memory, value, origin)
+
+
+def coil(mode: str, target: Var, power: Expr, memory: Callable[[], Var], origin: Origin) -> list[Stmt]:
+    """The write of an LD coil or FBD output node in ``mode`` (normal, negated, set, reset, p, n).
+
+    ``memory`` makes the hidden slot an edge coil needs (GR-24, GR-25).
+    """
+    if mode == "normal":
+        return [Assign(target, power, origin)]
+    if mode == "negated":
+        return [Assign(target, not_(power), origin)]
+    if mode in ("set", "reset"):  # LD-06: IF power THEN x := TRUE / FALSE
+        write = Assign(target, Const(mode == "set", BOOL), origin)
+        return [write] if power == TRUE else [If([(power, [write])], [], origin)]
+    detected, remember = edge(mode == "p", power, memory(), origin)
+    return [Assign(target, detected, origin), remember]
