@@ -81,12 +81,20 @@ class PouContext:
         ST body), or at ``where`` (``network=``, ``element=``, ``pin=``) for a diagram.
         """
         if error.message is None:
+            if not self._checker_found_errors():  # nothing explains the failure: never drop code silently
+                self.report_at("IR-INTERNAL", "this could not be lowered (an internal error of LadderLab: please "
+                               "report it)", error.node if error.node is not None else fallback, file)
             return
         file = error.file or file
         if where:
             self.report(error.code, error.message, file=file, **where)
         else:
             self.report_at(error.code, error.message, error.node if error.node is not None else fallback, file)
+
+    def _checker_found_errors(self) -> bool:
+        """Did checking report an error in this POU, or in the types or globals it may use?"""
+        mine = self.info.name if self.info is not None else None
+        return any(d.severity == "error" and d.pou in (mine, None) for d in self.checked.diagnostics + self.diagnostics)
 
     def check_en_eno(self, node: ast.Expr, function: str, output: bool) -> None:
         """Type an EN value / ENO target the checker left untyped (it skips them in standard function calls).

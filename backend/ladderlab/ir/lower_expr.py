@@ -269,13 +269,19 @@ def _function(name: str, operands: list[ast.Expr], ctx: PouContext, result: IrTy
 # ---------------------------------------------------------------- calls
 
 
-def _call(node: ast.Call, ctx: PouContext) -> Expr:
+def refuse_unsupported_call(node: ast.Call) -> None:
+    """Program calls and ADR/REF cannot be lowered yet: raise the located error."""
     ref = node.ref
     if isinstance(ref, PouInfo) and ref.kind == "PROGRAM":
         raise LoweringError(f"calling the program {ref.name} from ST is not supported by the engine yet: run it "
                             "from a task", node)
     if ref is None and isinstance(node.callee, ast.Name) and node.callee.name.upper() in ("ADR", "REF"):
-        raise LoweringError(f"{node.callee.name.upper()} is not supported by the engine yet", node)
+        raise LoweringError("pointers (POINTER TO, REF_TO, ADR, REF, ^) are not supported by the engine yet", node)
+
+
+def _call(node: ast.Call, ctx: PouContext) -> Expr:
+    refuse_unsupported_call(node)
+    ref = node.ref
     en, eno = _en_eno(node)
     before = (ctx.reads, ctx.calls)
     if isinstance(ref, stdlib.StdFunction):
@@ -375,7 +381,8 @@ def std_call(node: ast.Call, ctx: PouContext) -> Call:
             target = ctx.ir_type(t.elementary(pin.type))
         args.append(lower_to(arg.value, ctx, target) if arg is not None else Const(ir_default(target), target))
         types.append(target)
-    return Call(function.name, tuple(args), tuple(types), ctx.ir_type(node.ty))
+    result = generic if function.result == stdlib.T else ctx.ir_type(t.elementary(function.result))
+    return Call(function.name, tuple(args), tuple(types), result)  # (a call statement's node has no .ty)
 
 
 def _position(function: stdlib.StdFunction, name: str) -> int | None:

@@ -22,6 +22,7 @@ from .lower_expr import (
     lower_en_eno,
     lower_expr,
     lower_to,
+    refuse_unsupported_call,
     std_call,
     user_call,
     value_type,
@@ -120,7 +121,7 @@ def _call_statement(statement: ast.CallStmt, ctx: PouContext) -> list[Stmt]:
     if isinstance(call.ref, Symbol):
         return _fb_call(call, ctx, ctx.origin(statement))
     if not _is_function(call.ref):
-        lower_expr(call, ctx)  # reports what is not supported (program calls ...)
+        refuse_unsupported_call(call)
         raise LoweringError(None)
     lowered = _function_call(call, ctx)
     en, eno, after = lower_en_eno(call, ctx)
