@@ -149,9 +149,13 @@ def check_call(ops: Operands, callee: Callee, instance: str | None, inputs: dict
     missing = callee.missing(set(inputs))
     for pin in missing:
         ops.report(at.on(pin), f"{ops.lang}-MISSING-PIN", f"input {pin} of {callee.name} is not connected")
+    wired_in_outs = [pin for pin in callee.in_outs() if pin in inputs and not isinstance(inputs[pin], str)]
+    for pin in wired_in_outs:  # VAR-51: an in-out is passed by reference, so it needs a variable
+        ops.report(at.on(pin), f"{ops.lang}-IN-OUT", f"in-out {pin} of {callee.name} needs a variable, not a "
+                   "computed value")
     args: list[ast.Arg] = []
     pins: dict[int, str] = {}
-    failed = bool(missing)
+    failed = bool(missing or wired_in_outs)
     if en is not None:
         node = _node(ops, en, at.on("EN"), f"input EN of {callee.name}")
         failed |= node is None
