@@ -96,6 +96,12 @@ class PouContext:
         mine = self.info.name if self.info is not None else None
         return any(d.severity == "error" and d.pou in (mine, None) for d in self.checked.diagnostics + self.diagnostics)
 
+    def checker_error_in(self, span: ast.Span) -> bool:
+        """Did the checker report an error on the lines of ``span`` in this POU's ST body?"""
+        file = f"{self.info.name}/body" if self.info is not None else None
+        return any(d.severity == "error" and d.file == file and d.line is not None
+                   and span.line <= d.line <= span.end_line for d in self.checked.diagnostics)
+
     def check_en_eno(self, node: ast.Expr, function: str, output: bool) -> None:
         """Type an EN value / ENO target the checker left untyped (it skips them in standard function calls).
 

@@ -82,7 +82,8 @@ def _statement(statement: ast.Stmt, ctx: PouContext) -> list[Stmt]:
     try:
         lowered = _LOWER[type(statement)](statement, ctx)
     except LoweringError as error:
-        ctx.report_error(error, statement)
+        if not ctx.checker_error_in(statement.span):  # no second diagnostic for a statement the checker rejected
+            ctx.report_error(error, statement)
         return []
     finally:
         ctx.lifts, ctx.reads, ctx.calls = saved
