@@ -1,7 +1,7 @@
 // The scrolling, virtualised LD diagram: networks are stacked at the offsets the layout computed,
 // and only those intersecting the viewport (plus a margin) are rendered, so a 1,000-network POU
 // opens and scrolls as fast as a small one.
-import { useEffect, useLayoutEffect, useMemo, useRef, useState } from "react";
+import { useEffect, useLayoutEffect, useMemo, useRef, useState, type ReactNode } from "react";
 import type { Diagnostic } from "../../api/types";
 import type { LdLayout, NetworkLayout } from "../layout";
 import { locate, networkOfSeries, type LdBody } from "../model";
@@ -20,6 +20,8 @@ export interface LdDiagramProps {
   reveal?: string | null;
   /** Viewport height to assume before the browser has measured one (and in tests). */
   fallbackHeight?: number;
+  /** Drawn over the diagram in diagram coordinates (the operand editor), scrolling with it. */
+  overlay?: ReactNode;
 }
 
 const OVERSCAN = 400;
@@ -60,7 +62,7 @@ function selectionNetwork(body: LdBody, selection: Selection | null): string | n
   return first ? (locate(body, first)?.network ?? null) : null;
 }
 
-export function LdDiagram({ body, layout, selection, diagnostics = NO_DIAGNOSTICS, online, dropping = false, handlers = NO_HANDLERS, reveal, fallbackHeight = 900 }: LdDiagramProps) {
+export function LdDiagram({ body, layout, selection, diagnostics = NO_DIAGNOSTICS, online, dropping = false, handlers = NO_HANDLERS, reveal, fallbackHeight = 900, overlay }: LdDiagramProps) {
   const scroller = useRef<HTMLDivElement>(null);
   const [viewport, setViewport] = useState({ top: 0, height: fallbackHeight });
 
@@ -109,6 +111,7 @@ export function LdDiagram({ body, layout, selection, diagnostics = NO_DIAGNOSTIC
             />
           </div>
         ))}
+        {overlay}
       </div>
     </div>
   );

@@ -1,0 +1,60 @@
+// Right-click menu: the commands available for what was clicked, grouped like the toolbar.
+import { useEffect, useRef } from "react";
+import { available, COMMANDS, type Command, type CommandContext, type CommandGroup } from "./commands";
+
+const GROUP_ORDER: CommandGroup[] = ["insert", "mode", "edit", "clipboard", "network", "history"];
+
+export interface ContextMenuProps {
+  x: number;
+  y: number;
+  ctx: CommandContext;
+  onClose(): void;
+}
+
+export function ContextMenu({ x, y, ctx, onClose }: ContextMenuProps) {
+  const menu = useRef<HTMLUListElement>(null);
+  useEffect(() => {
+    menu.current?.querySelector<HTMLButtonElement>("button")?.focus();
+    const close = (e: MouseEvent) => {
+      if (!menu.current?.contains(e.target as Node)) onClose();
+    };
+    window.addEventListener("mousedown", close);
+    return () => window.removeEventListener("mousedown", close);
+  }, [onClose]);
+  const groups = GROUP_ORDER.map((group) => COMMANDS.filter((c) => c.group === group && available(c, ctx))).filter((g) => g.length);
+  const run = (command: Command) => {
+    onClose();
+    command.run(ctx);
+  };
+  return (
+    <ul
+      ref={menu}
+      className="ld-context-menu"
+      role="menu"
+      style={{ left: x, top: y }}
+      onKeyDown={(e) => {
+        e.stopPropagation();
+        if (e.key === "Escape") onClose();
+        const items = [...(menu.current?.querySelectorAll<HTMLButtonElement>("button") ?? [])];
+        const at = items.indexOf(document.activeElement as HTMLButtonElement);
+        if (e.key === "ArrowDown") items[(at + 1) % items.length]?.focus();
+        if (e.key === "ArrowUp") items[(at - 1 + items.length) % items.length]?.focus();
+      }}
+    >
+      {groups.map((group, i) => (
+        <li key={group[0]!.group} role="none" className={i > 0 ? "ld-menu-group" : undefined}>
+          <ul role="none">
+            {group.map((command) => (
+              <li key={command.id} role="none">
+                <button type="button" role="menuitem" onClick={() => run(command)}>
+                  <span>{command.label}</span>
+                  {command.keys ? <kbd>{command.keys}</kbd> : null}
+                </button>
+              </li>
+            ))}
+          </ul>
+        </li>
+      ))}
+    </ul>
+  );
+}

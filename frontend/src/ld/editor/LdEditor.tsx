@@ -1,0 +1,539 @@
+// The LD editor: the diagram plus selection (mouse and arrow keys), toolbar, context menu,
+// keyboard shortcuts, operand entry with autocomplete and the "declare variable" offer, the box
+// picker, drag to move, copy/paste through the system clipboard, and undo/redo. The undo history
+// is owned by the caller (one per open POU), so it survives switching tabs.
+import { useCallback, useEffect, useMemo, useRef, useState, type ClipboardEvent, type KeyboardEvent, type MouseEvent } from "react";
+import type { Diagnostic, LibraryEntry, SymbolInfo } from "../../api/types";
+import { parseClip, serializeClip, type Clip } from "../clipboard";
+import { canRedo, canUndo, record, redo, undo, type History } from "../history";
+import { layoutBody } from "../layout";
+import { locate, networksOf, walk, type LdBody, type Place } from "../model";
+import * as ops from "../ops";
+import type { EditResult, OperandField } from "../ops";
+import { LdDiagram } from "../view/LdDiagram";
+import type { DiagramHandlers, OnlineView, Selection, Target } from "../view/types";
+import { BoxPicker } from "./BoxPicker";
+import { available, COMMANDS, commandForKey, insert, selectedNetwork, type CommandContext, type CommandGroup } from "./commands";
+import { ContextMenu } from "./ContextMenu";
+import { guessType, instanceName, symbolNames, undeclared, type VariableDeclaration } from "./declare";
+import { extend, navigate, type Direction } from "./navigation";
+import { OperandEditor } from "./OperandEditor";
+import "../ld.css";
+
+export interface LdEditorProps {
+  history: History<LdBody>;
+  onHistoryChange(history: History<LdBody>): void;
+  /** Functions and function blocks for the box picker and box pins (GET /api/library). */
+  library?: readonly LibraryEntry[];
+  /** The POU's symbols and the globals, for autocomplete and the declare offer. */
+  symbols?: readonly SymbolInfo[];
+  diagnostics?: readonly Diagnostic[];
+  online?: OnlineView;
+  /** Editing is off (online); the reason is shown. */
+  readOnly?: string | null;
+  onDeclareVariable?(declaration: VariableDeclaration): void;
+}
+
+type Editing =
+  | { kind: "operand"; id: string; field: OperandField; x: number; y: number }
+  | { kind: "network"; id: string; field: "label" | "comment"; x: number; y: number };
+
+const TOOLBAR: { group: CommandGroup; ids: string[] }[] = [
+  { group: "insert", ids: ["contact", "contact-nc", "coil", "compare", "box", "parallel", "jump", "return"] },
+  { group: "edit", ids: ["cycle-mode", "toggle-en", "delete"] },
+  { group: "network", ids: ["network-add", "network-duplicate", "network-up", "network-down", "network-label", "network-comment"] },
+  { group: "clipboard", ids: ["copy", "cut", "paste"] },
+  { group: "history", ids: ["undo", "redo"] },
+];
+
+const NO_LIBRARY: readonly LibraryEntry[] = [];
+const NO_SYMBOLS: readonly SymbolInfo[] = [];
+const ARROWS: Record<string, Direction> = { ArrowLeft: "left", ArrowRight: "right", ArrowUp: "up", ArrowDown: "down" };
+
+/** The last clip copied in this tab, for toolbar paste when the browser keeps the clipboard closed. */
+let lastClip: string | null = null;
+
+/** The operand Enter edits: the variable, a compare's left side, a box's instance or first free input, a jump's target. */
+function mainField(body: LdBody, id: string, library: (call: string) => LibraryEntry | undefined): OperandField | undefined {
+  const e = locate(body, id)?.element;
+  switch (e?.type) {
+    case "contact":
+    case "coil":
+      return { kind: "var" };
+    case "compare":
+      return { kind: "left" };
+    case "jump":
+      return { kind: "target" };
+    case "box": {
+      const entry = library(e.call);
+      if (!entry || entry.kind === "function_block") return { kind: "instance" };
+      const pin = entry.inputs.find((p) => p.type.toUpperCase() !== "BOOL") ?? entry.inputs[0];
+      return pin ? { kind: "input", pin: pin.name } : undefined;
+    }
+    default:
+      return undefined;
+  }
+}
+
+function operandText(body: LdBody, id: string, field: OperandField): string {
+  const e = locate(body, id)?.element;
+  if (!e) return "";
+  if (field.kind === "var" && (e.type === "contact" || e.type === "coil")) return e.var;
+  if (field.kind === "left" && e.type === "compare") return e.left;
+  if (field.kind === "right" && e.type === "compare") return e.right;
+  if (field.kind === "target" && e.type === "jump") return e.target;
+  if (e.type === "box") {
+    if (field.kind === "instance") return e.instance ?? "";
+    if (field.kind === "input") {
+      const value = e.inputs?.[field.pin];
+      return typeof value === "string" ? value : "";
+    }
+    if (field.kind === "output") return e.outputs?.[field.pin] ?? "";
+  }
+  return "";
+}
+
+const fieldLabel = (field: OperandField) =>
+  field.kind === "input" || field.kind === "output" ? `Pin ${field.pin}` : { var: "Variable", left: "Left operand", right: "Right operand", instance: "Instance", target: "Jump target" }[field.kind];
+
+export function LdEditor({
+  history,
+  onHistoryChange,
+  library = NO_LIBRARY,
+  symbols = NO_SYMBOLS,
+  diagnostics,
+  online,
+  readOnly = null,
+  onDeclareVariable,
+}: LdEditorProps) {
+  const body = history.present;
+  const root = useRef<HTMLDivElement>(null);
+  const [selection, setSelection] = useState<Selection | null>(null);
+  const [anchor, setAnchor] = useState<string | null>(null);
+  const [editing, setEditing] = useState<Editing | null>(null);
+  const [picker, setPicker] = useState(false);
+  const [menu, setMenu] = useState<{ x: number; y: number } | null>(null);
+  const [message, setMessage] = useState<string | null>(null);
+  const [offer, setOffer] = useState<VariableDeclaration | null>(null);
+  const [dropping, setDropping] = useState(false);
+  const drag = useRef<{ ids: string[]; x: number; y: number } | null>(null);
+  /** An element whose operand editor opens once the edit that created it has been laid out. */
+  const [pendingEdit, setPendingEdit] = useState<string | null>(null);
+
+  const byName = useMemo(() => new Map(library.map((e) => [e.name.toUpperCase(), e])), [library]);
+  const lookup = useCallback((call: string) => byName.get(call.toUpperCase()), [byName]);
+  const layout = useMemo(() => layoutBody(body, { library: lookup }), [body, lookup]);
+  const known = useMemo(() => symbolNames(symbols), [symbols]);
+
+  // A selection naming elements an undo removed is dropped rather than left dangling.
+  const liveSelection = useMemo((): Selection | null => {
+    if (!selection) return null;
+    if (selection.kind === "elements") {
+      const ids = selection.ids.filter((id) => locate(body, id));
+      return ids.length ? { kind: "elements", ids } : null;
+    }
+    if (selection.kind === "network") return networksOf(body).some((n) => n.id === selection.id) ? selection : null;
+    return selection;
+  }, [body, selection]);
+
+  const select = useCallback((next: Selection | null, newAnchor?: string | null) => {
+    setSelection(next);
+    setAnchor(newAnchor !== undefined ? newAnchor : next?.kind === "elements" ? next.ids[0]! : null);
+  }, []);
+
+  const apply = useCallback(
+    (result: EditResult, then?: "edit") => {
+      if (!result.ok) {
+        setMessage(result.error);
+        return;
+      }
+      setMessage(null);
+      setPendingEdit(then === "edit" ? (result.select[0] ?? null) : null);
+      onHistoryChange(record(history, result.body));
+      const networkIds = new Set(networksOf(result.body).map((n) => n.id));
+      const [first] = result.select;
+      if (first === undefined) select(null);
+      else if (networkIds.has(first)) select({ kind: "network", id: first });
+      else select({ kind: "elements", ids: result.select });
+    },
+    [history, onHistoryChange, select],
+  );
+
+  /** Opens the operand editor over `field` of element `id`. */
+  const editField = useCallback(
+    (id: string, field: OperandField) => {
+      const n = layout.networks.find((net) => net.elements.some((e) => e.id === id));
+      const placed = n?.elements.find((e) => e.id === id);
+      if (!n || !placed) return;
+      let { x, y } = { x: placed.x, y: n.top + placed.y };
+      if (field.kind === "input" || field.kind === "output") {
+        const pin = placed.pins?.find((p) => p.name === field.pin && p.side === (field.kind === "input" ? "in" : "out"));
+        if (pin) ({ x, y } = { x: field.kind === "input" ? pin.x - 150 : pin.x + 4, y: n.top + pin.y - 22 });
+      } else if (field.kind === "right") y = n.top + placed.y + 36;
+      setEditing({ kind: "operand", id, field, x: Math.max(0, x), y });
+    },
+    [layout],
+  );
+
+  useEffect(() => {
+    if (!pendingEdit) return;
+    setPendingEdit(null);
+    const field = mainField(body, pendingEdit, lookup);
+    if (field) editField(pendingEdit, field);
+  }, [pendingEdit, body, lookup, editField]);
+
+  const commitOperand = (id: string, field: OperandField, text: string) => {
+    setEditing(null);
+    root.current?.focus();
+    if (text.trim() === operandText(body, id, field)) return;
+    const result = ops.setOperand(body, id, field, text);
+    apply(result);
+    if (!result.ok) return;
+    const name = undeclared(text, known);
+    const type = name ? guessType(result.body, id, field, lookup, symbols) : null;
+    setOffer(name && type && onDeclareVariable ? { name, type } : null);
+  };
+
+  const editNetwork = (field: "label" | "comment") => {
+    const id = selectedNetwork({ body, selection: liveSelection });
+    const n = layout.networks.find((net) => net.network.id === id);
+    if (!id || !n) return;
+    setEditing({ kind: "network", id, field, x: n.leftRailX, y: n.top + (field === "label" ? 0 : 18) });
+  };
+
+  const clipOfSelection = (): Clip | null => {
+    if (liveSelection?.kind === "network") {
+      const network = networksOf(body).find((n) => n.id === liveSelection.id);
+      return network ? { kind: "networks", networks: [network] } : null;
+    }
+    if (liveSelection?.kind === "elements") {
+      const elements = liveSelection.ids.map((id) => locate(body, id)?.element).filter((e) => e !== undefined);
+      return elements.length ? { kind: "elements", elements } : null;
+    }
+    return null;
+  };
+
+  const pasteText = (text: string | null) => {
+    const clip = text ? parseClip(text) : null;
+    if (!clip) {
+      setMessage("The clipboard holds no LadderLab elements or networks.");
+      return;
+    }
+    const networks = networksOf(body);
+    if (clip.kind === "networks") {
+      const index = networks.findIndex((n) => n.id === selectedNetwork({ body, selection: liveSelection }));
+      apply(ops.pasteNetworks(body, index < 0 ? networks.length : index + 1, clip.networks));
+      return;
+    }
+    let place: Place | undefined;
+    if (liveSelection?.kind === "place") place = liveSelection.place;
+    else if (liveSelection?.kind === "elements") {
+      const at = locate(body, liveSelection.ids[liveSelection.ids.length - 1]!);
+      if (at) place = { series: at.series, index: at.index + 1 };
+    } else if (liveSelection?.kind === "network") place = { series: { kind: "network", network: liveSelection.id }, index: 0 };
+    if (!place) {
+      setMessage("Select where to paste: an element, a wire or a network.");
+      return;
+    }
+    apply(ops.pasteElements(body, place, clip.elements));
+  };
+
+  const copy = (cut: boolean, write: (text: string) => void) => {
+    const clip = clipOfSelection();
+    if (!clip) return;
+    const text = serializeClip(clip);
+    lastClip = text;
+    write(text);
+    if (cut && !readOnly) {
+      apply(liveSelection?.kind === "network" ? ops.deleteNetworks(body, [liveSelection.id]) : ops.deleteElements(body, clip.kind === "elements" ? clip.elements.map((e) => e.id) : []));
+    }
+  };
+
+  const ctx: CommandContext = {
+    body,
+    selection: liveSelection,
+    readOnly: readOnly !== null,
+    canUndo: canUndo(history),
+    canRedo: canRedo(history),
+    apply,
+    undo: () => {
+      setMessage(null);
+      onHistoryChange(undo(history));
+    },
+    redo: () => {
+      setMessage(null);
+      onHistoryChange(redo(history));
+    },
+    editOperand: () => {
+      const id = liveSelection?.kind === "elements" ? liveSelection.ids[0] : undefined;
+      const field = id ? mainField(body, id, lookup) : undefined;
+      if (id && field) editField(id, field);
+    },
+    openBoxPicker: () => setPicker(true),
+    editNetwork,
+    copy: (cut) => copy(cut, (text) => void navigator.clipboard?.writeText(text).catch(() => undefined)),
+    paste: () => {
+      const read = navigator.clipboard?.readText?.();
+      if (!read) pasteText(lastClip);
+      else read.then((text) => pasteText(parseClip(text) ? text : lastClip), () => pasteText(lastClip));
+    },
+  };
+
+  const pickBox = (entry: LibraryEntry, en: boolean) => {
+    setPicker(false);
+    root.current?.focus();
+    const used = new Set([...known, ...[...walk(body)].flatMap((l) => (l.element.type === "box" && l.element.instance ? [l.element.instance.toUpperCase()] : []))]);
+    const instance = entry.kind === "function_block" ? instanceName(entry.name, used) : null;
+    const result = insert(ctx, ops.box(entry.name, instance, en), "after");
+    apply(result);
+    if (result.ok && instance) {
+      setOffer(onDeclareVariable ? { name: instance, type: entry.name } : null);
+    }
+  };
+
+  // Drag to move: a press on an element becomes a drag once the mouse travels; slots are the drop targets.
+  useEffect(() => {
+    const move = (e: globalThis.MouseEvent) => {
+      const d = drag.current;
+      if (d && !dropping && Math.hypot(e.clientX - d.x, e.clientY - d.y) > 5) setDropping(true);
+    };
+    const up = () => {
+      drag.current = null;
+      setDropping(false);
+    };
+    window.addEventListener("mousemove", move);
+    window.addEventListener("mouseup", up);
+    return () => {
+      window.removeEventListener("mousemove", move);
+      window.removeEventListener("mouseup", up);
+    };
+  }, [dropping]);
+
+  const handlers: DiagramHandlers = {
+    onPointerDown: (target: Target, event: MouseEvent) => {
+      if (event.button !== 0) return;
+      event.stopPropagation();
+      root.current?.focus();
+      setMenu(null);
+      if (target.kind === "element") {
+        if (event.shiftKey && anchor) {
+          select({ kind: "elements", ids: ops.rangeIds(body, anchor, target.id) }, anchor);
+          return;
+        }
+        const keep = liveSelection?.kind === "elements" && liveSelection.ids.includes(target.id);
+        const ids = keep ? liveSelection.ids : [target.id];
+        select({ kind: "elements", ids }, keep ? anchor : target.id);
+        if (!readOnly) drag.current = { ids, x: event.clientX, y: event.clientY };
+      } else if (target.kind === "place") select({ kind: "place", place: target.place });
+      else select({ kind: "network", id: target.id });
+    },
+    onPlaceUp: (place: Place) => {
+      const d = drag.current;
+      if (!d || !dropping) return;
+      drag.current = null;
+      setDropping(false);
+      apply(ops.moveElements(body, d.ids, place));
+    },
+    onOperand: (id, field, event) => {
+      if (readOnly) return;
+      event.stopPropagation();
+      select({ kind: "elements", ids: [id] });
+      editField(id, field);
+    },
+    onDoubleClick: (target) => {
+      if (readOnly) return;
+      if (target.kind === "network") {
+        select({ kind: "network", id: target.id });
+        return;
+      }
+      if (target.kind !== "element") return;
+      const field = mainField(body, target.id, lookup);
+      if (field) editField(target.id, field);
+    },
+    onContextMenu: (target, event) => {
+      event.preventDefault();
+      const box = root.current?.getBoundingClientRect();
+      if (target.kind === "element") {
+        if (!(liveSelection?.kind === "elements" && liveSelection.ids.includes(target.id))) select({ kind: "elements", ids: [target.id] });
+      } else if (target.kind === "place") select({ kind: "place", place: target.place });
+      else select({ kind: "network", id: target.id });
+      setMenu({ x: event.clientX - (box?.left ?? 0), y: event.clientY - (box?.top ?? 0) });
+    },
+  };
+
+  const onKeyDown = (event: KeyboardEvent<HTMLDivElement>) => {
+    if (editing || picker || (event.target as HTMLElement).closest("input, textarea, .ld-context-menu")) return;
+    const direction = ARROWS[event.key];
+    if (direction && !event.altKey && !event.ctrlKey && !event.metaKey) {
+      event.preventDefault();
+      const focus = liveSelection?.kind === "elements" ? liveSelection.ids[liveSelection.ids.length - 1] : undefined;
+      if (event.shiftKey && anchor && focus && (direction === "left" || direction === "right")) {
+        const next = extend(body, anchor, focus, direction);
+        select({ kind: "elements", ids: ops.rangeIds(body, anchor, next) }, anchor);
+      } else {
+        select(navigate(body, layout, liveSelection, direction));
+      }
+      return;
+    }
+    if (event.key === "Escape") {
+      setMenu(null);
+      select(null);
+      return;
+    }
+    // Copy, cut and paste arrive as clipboard events (below), which reach the system clipboard.
+    if ((event.ctrlKey || event.metaKey) && ["c", "x", "v"].includes(event.key.toLowerCase())) return;
+    const command = commandForKey(event, ctx);
+    if (command) {
+      event.preventDefault();
+      command.run(ctx);
+    }
+  };
+
+  const onCopy = (event: ClipboardEvent<HTMLDivElement>, cut: boolean) => {
+    if ((event.target as HTMLElement).closest("input, textarea")) return;
+    event.preventDefault();
+    copy(cut, (text) => event.clipboardData.setData("text/plain", text));
+  };
+
+  const onPaste = (event: ClipboardEvent<HTMLDivElement>) => {
+    if ((event.target as HTMLElement).closest("input, textarea")) return;
+    event.preventDefault();
+    if (!readOnly) pasteText(event.clipboardData.getData("text/plain"));
+  };
+
+  const reveal = selectedNetwork({ body, selection: liveSelection }) ?? null;
+  const editorOverlay = editing ? (
+    editing.kind === "operand" ? (
+      <OperandEditor
+        key={`${editing.id}:${JSON.stringify(editing.field)}`}
+        label={fieldLabel(editing.field)}
+        initial={operandText(body, editing.id, editing.field)}
+        suggestions={editing.field.kind === "target" ? [] : symbols}
+        style={{ left: editing.x, top: editing.y }}
+        onCommit={(text) => commitOperand(editing.id, editing.field, text)}
+        onCancel={() => {
+          setEditing(null);
+          root.current?.focus();
+        }}
+      />
+    ) : (
+      <OperandEditor
+        key={`${editing.id}:${editing.field}`}
+        label={editing.field === "label" ? "Network label" : "Network comment"}
+        initial={(editing.field === "label" ? networksOf(body).find((n) => n.id === editing.id)?.label : networksOf(body).find((n) => n.id === editing.id)?.comment) ?? ""}
+        style={{ left: editing.x, top: editing.y }}
+        onCommit={(text) => {
+          setEditing(null);
+          root.current?.focus();
+          const current = networksOf(body).find((n) => n.id === editing.id);
+          if (((editing.field === "label" ? current?.label : current?.comment) ?? "") === text) return;
+          apply(editing.field === "label" ? ops.setNetworkLabel(body, editing.id, text) : ops.setNetworkComment(body, editing.id, text));
+        }}
+        onCancel={() => {
+          setEditing(null);
+          root.current?.focus();
+        }}
+      />
+    )
+  ) : null;
+
+  return (
+    <div
+      className={`ld-editor${readOnly ? " ld-readonly" : ""}`}
+      ref={root}
+      tabIndex={0}
+      role="application"
+      aria-label="Ladder diagram editor"
+      onKeyDown={onKeyDown}
+      onCopy={(e) => onCopy(e, false)}
+      onCut={(e) => onCopy(e, true)}
+      onPaste={onPaste}
+      onMouseDown={(e) => {
+        if (e.target === e.currentTarget || (e.target as HTMLElement).classList.contains("ld-canvas")) select(null);
+      }}
+    >
+      <div className="ld-toolbar" role="toolbar" aria-label="LD editing">
+        {TOOLBAR.map(({ group, ids }) => (
+          <div key={group} className="ld-toolbar-group">
+            {ids.map((id) => {
+              const command = COMMANDS.find((c) => c.id === id)!;
+              return (
+                <button key={id} type="button" disabled={!available(command, ctx)} title={command.keys ? `${command.label} (${command.keys})` : command.label} onMouseDown={(e) => e.preventDefault()} onClick={() => command.run(ctx)}>
+                  {command.label}
+                </button>
+              );
+            })}
+          </div>
+        ))}
+      </div>
+      {readOnly ? (
+        <div className="ld-banner" role="status">
+          {readOnly}
+        </div>
+      ) : null}
+      {message ? (
+        <div className="ld-message" role="alert">
+          {message}
+          <button type="button" aria-label="Dismiss" onClick={() => setMessage(null)}>
+            ×
+          </button>
+        </div>
+      ) : null}
+      {offer ? (
+        <DeclareOffer
+          offer={offer}
+          onDeclare={(declaration) => {
+            setOffer(null);
+            onDeclareVariable?.(declaration);
+            root.current?.focus();
+          }}
+          onDismiss={() => setOffer(null)}
+        />
+      ) : null}
+      <LdDiagram
+        body={body}
+        layout={layout}
+        selection={liveSelection}
+        diagnostics={diagnostics}
+        online={online}
+        dropping={dropping}
+        handlers={handlers}
+        reveal={reveal}
+        overlay={editorOverlay}
+      />
+      {networksOf(body).length === 0 ? <p className="ld-empty-hint">This POU has no networks yet: press Ctrl+Enter or C to start a rung.</p> : null}
+      {menu ? <ContextMenu x={menu.x} y={menu.y} ctx={ctx} onClose={() => setMenu(null)} /> : null}
+      {picker ? (
+        <BoxPicker
+          library={library}
+          onPick={pickBox}
+          onCancel={() => {
+            setPicker(false);
+            root.current?.focus();
+          }}
+        />
+      ) : null}
+    </div>
+  );
+}
+
+function DeclareOffer({ offer, onDeclare, onDismiss }: { offer: VariableDeclaration; onDeclare(d: VariableDeclaration): void; onDismiss(): void }) {
+  const [type, setType] = useState(offer.type);
+  return (
+    <div className="ld-declare" role="status">
+      <span>
+        <code>{offer.name}</code> is not declared.
+      </span>
+      <label>
+        Type <input aria-label="Type of the new variable" value={type} onChange={(e) => setType(e.target.value)} spellCheck={false} />
+      </label>
+      <button type="button" onClick={() => onDeclare({ name: offer.name, type: type.trim() || offer.type })}>
+        Declare {offer.name}
+      </button>
+      <button type="button" onClick={onDismiss}>
+        Not now
+      </button>
+    </div>
+  );
+}
+
