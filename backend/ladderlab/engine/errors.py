@@ -60,3 +60,12 @@ def check_subrange(value: int, low: int, high: int) -> int:
     if low <= value <= high:
         return value
     raise PlcRuntimeError(SUBRANGE, f"{value} is outside the subrange {low}..{high}")
+
+
+FOR_STEP_ZERO = "for_step_zero"
+WATCHDOG = "watchdog"
+
+
+def for_step_zero() -> PlcRuntimeError:
+    """A FOR loop whose BY value is 0 at run time would never end (ST-31, ST-70)."""
+    return PlcRuntimeError(FOR_STEP_ZERO, "FOR loop step (BY) is 0")

@@ -1,0 +1,125 @@
+"""State shared while generating one module: POU tables, layouts, origins, bound runtime objects."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Callable
+
+from ...ir import nodes as ir
+from ...ir import types as t
+from ...model.diagnostics import Diagnostic
+from ...st import stdlib as catalogue
+from ..stdlib import STANDARD_FBS
+from . import names
+from .layout import Layout
+
+COMPILE_ERROR = "ENGINE-COMPILE"
+
+
+class CodegenError(Exception):
+    """The IR asks for something the generator cannot produce; reported as a located Diagnostic."""
+
+
+def diagnostic(message: str, origin: ir.Origin | None, code: str = COMPILE_ERROR) -> Diagnostic:
+    if origin is None:
+        return Diagnostic(code=code, message=message)
+    return Diagnostic(
+        code=code, message=message, pou=origin.pou, line=origin.line, column=origin.column,
+        end_line=origin.end_line, end_column=origin.end_column, network=origin.network, element=origin.element,
+    )
+
+
+@dataclass(frozen=True)
+class PausePoint:
+    """Where the debug variant may halt: before a network (``network``), an ST statement (``statement``) or at an element's probe (``element``)."""
+
+    id: int
+    kind: str
+    origin: ir.Origin
+    element: str | None = None  # the probe's element id ("E1" or "E1.PIN")
+
+
+@dataclass
+class ModuleContext:
+    program: ir.Program
+    debug: bool
+    pous: dict[str, ir.Pou] = field(default_factory=dict)
+    layouts: dict[str, Layout] = field(default_factory=dict)
+    globals: Layout | None = None
+    structs: dict[t.Struct, str] = field(default_factory=dict)
+    bound: dict[str, object] = field(default_factory=dict)
+    origins: list[ir.Origin] = field(default_factory=list)
+    #: The statement of each statement origin (its variables are read back for a fault report).
+    origin_statements: dict[int, ir.Stmt] = field(default_factory=dict)
+    pauses: list[PausePoint] = field(default_factory=list)
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+    _bound_keys: dict[object, str] = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        self.pous = {name.upper(): pou for name, pou in self.program.pous.items()}
+        self.layouts = {name: Layout(pou.slots) for name, pou in self.pous.items() if pou.kind != "function"}
+        self.globals = Layout(self.program.globals)
+
+    def origin(self, origin: ir.Origin, statement: ir.Stmt | None = None) -> int:
+        self.origins.append(origin)
+        index = len(self.origins) - 1
+        if statement is not None:
+            self.origin_statements[index] = statement
+        return index
+
+    def pause(self, kind: str, origin: ir.Origin, element: str | None = None) -> int:
+        point = PausePoint(len(self.pauses), kind, origin, element)
+        self.pauses.append(point)
+        return point.id
+
+    def bind(self, key: object, prefix: str, make: Callable[[], object]) -> str:
+        """A module global holding ``make()``, created once per ``key``; returns its generated name."""
+        name = self._bound_keys.get(key)
+        if name is None:
+            name = f"{prefix}_{len(self._bound_keys)}"
+            self._bound_keys[key] = name
+            self.bound[name] = make()
+        return name
+
+    def struct_class(self, struct: t.Struct) -> str:
+        name = self.structs.get(struct)
+        if name is None:
+            name = names.struct_class(struct.name)
+            taken = set(self.structs.values())
+            if name in taken:  # two different structures of one name (anonymous or per POU)
+                name = f"{name}_{sum(1 for n in taken if n.startswith(name))}"
+            self.structs[struct] = name
+            for f in struct.fields:
+                self.visit_type(f.type)
+        return name
+
+    def visit_type(self, ty: t.IrType) -> None:
+        """Register the structure classes a type needs."""
+        if isinstance(ty, t.Struct):
+            self.struct_class(ty)
+        elif isinstance(ty, t.Array):
+            self.visit_type(ty.element)
+
+    def user_fb(self, fb: str) -> ir.Pou | None:
+        pou = self.pous.get(fb.upper())
+        return pou if pou is not None and pou.kind != "function" else None
+
+
+def std_fb_class(fb: str) -> type | None:
+    return STANDARD_FBS.get(fb.upper())
+
+
+def std_pin_type(fb: str, pin: str) -> t.IrType | None:
+    """Type of a pin (or named memory, e.g. the M of R_TRIG) of a standard FB; None when it has no such pin."""
+    cls = std_fb_class(fb)
+    if cls is None:
+        return None
+    pin = pin.upper()
+    info = catalogue.function_block(fb)
+    if info is not None:
+        for p in (*info.inputs, *info.outputs):
+            if p.name == pin:
+                return t.Elementary(p.type)
+    if pin in cls.MEMORY:
+        return t.BOOL
+    return None

@@ -1,0 +1,242 @@
+"""IR expressions -> Python expression source.
+
+Every emitted expression yields a value already stored in its IR type, so
+statements copy it without further work. Operators and standard functions
+go through the runtime library: its inline template when it has one (each
+argument evaluated once, in order), else a specialised callable bound as a
+module global. Every operand is evaluated, left to right (ST-06 [REC]).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+from ...ir import nodes as ir
+from ...ir import types as t
+from .. import values
+from ..stdlib import specialised
+from . import names
+from .context import CodegenError, std_fb_class, std_pin_type
+from .scope import Scope
+from .typeinfo import describe, is_composite, runtime_name, store_code, store_value
+
+_OPERATOR_FUNCTIONS = {op: op for op in ("ADD", "SUB", "MUL", "DIV", "MOD", "EXPT", "AND", "OR", "XOR",
+                                         "EQ", "NE", "LT", "LE", "GT", "GE")}
+_ATOM = re.compile(r"(?:[A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z_][A-Za-z0-9_]*)*|\d+)\Z")
+_COMPARISONS = frozenset({"EQ", "NE", "LT", "LE", "GT", "GE"})
+
+
+def literal(value: object) -> str:
+    """Python source for a stored constant: ``repr``, with non-finite floats by name, negatives in parentheses."""
+    if isinstance(value, bool) or isinstance(value, str):
+        return repr(value)
+    if isinstance(value, float):
+        if math.isnan(value):
+            return "ll_nan"
+        if math.isinf(value):
+            return "ll_inf" if value > 0 else "(-ll_inf)"
+        return f"({value!r})" if math.copysign(1.0, value) < 0 else repr(value)
+    if isinstance(value, int):
+        return f"({value!r})" if value < 0 else repr(value)
+    raise CodegenError(f"constant {value!r} of unsupported kind")
+
+
+class Expressions:
+    def __init__(self, scope: Scope) -> None:
+        self.scope = scope
+        self.module = scope.module
+
+    # ------------------------------------------------------------------ dispatch
+
+    def expr(self, e: ir.Expr) -> str:
+        if isinstance(e, ir.Const):
+            return self.const(e)
+        if isinstance(e, ir.Var):
+            return self.var(e)
+        if isinstance(e, ir.Binary):
+            return self.binary(e)
+        if isinstance(e, ir.Unary):
+            return self.unary(e)
+        if isinstance(e, ir.Call):
+            return self.call(e)
+        if isinstance(e, ir.Convert):
+            return self.convert(e)
+        raise CodegenError(f"unknown expression {type(e).__name__}")
+
+    def const(self, c: ir.Const) -> str:
+        if is_composite(c.type):
+            raise CodegenError(f"a constant of type {describe(c.type)} is not supported")
+        try:
+            return literal(store_value(c.value, c.type))
+        except ValueError as error:
+            raise CodegenError(f"constant: {error}") from None
+
+    def unary(self, u: ir.Unary) -> str:
+        operand = self.expr(u.operand)
+        name = self.scalar(u.operand.type, u.op)
+        if u.op == "NOT":
+            return self.standard("NOT", [operand], (name,), None)
+        if values.resolve(name).category in ("int", "bits", "time"):
+            return f"({values.wrap_expr(f'-{operand}', name)})"
+        if values.resolve(name).category == "real":
+            return f"(-{operand})"  # negating a float32 value is exact
+        raise CodegenError(f"NEG is not defined for {name}")
+
+    def binary(self, b: ir.Binary) -> str:
+        left, right = self.expr(b.left), self.expr(b.right)
+        types = (self.scalar(b.left.type, b.op), self.scalar(b.right.type, b.op))
+        result = None if b.op in _COMPARISONS else self.scalar(b.type, b.op)
+        return self.standard(_OPERATOR_FUNCTIONS[b.op], [left, right], types, result)
+
+    def call(self, c: ir.Call) -> str:
+        if c.user:
+            return self.user_call(c)
+        args = [self.expr(a) for a in c.args]
+        types = tuple(self.scalar(ty, c.function) for ty in c.arg_types)
+        return self.standard(c.function, args, types, runtime_name(c.type))
+
+    def convert(self, c: ir.Convert) -> str:
+        operand = self.expr(c.operand)
+        source, target = self.scalar(c.source, "conversion"), self.scalar(c.type, "conversion")
+        src, dst = values.resolve(source).name, values.resolve(target).name
+        if src == dst:  # subrange <-> base, enum <-> DINT, STRING[n] <-> STRING[m]
+            return store_code(operand, c.source, c.type, checked=isinstance(c.operand, ir.Var))
+        converted = self.standard(f"{src}_TO_{dst}", [operand], (source,), target)
+        if isinstance(c.type, t.Subrange):
+            return f"ll_sub({converted}, {c.type.low!r}, {c.type.high!r})"
+        return converted
+
+    # ------------------------------------------------------------------ calls
+
+    def standard(self, name: str, args: list[str], types: tuple[str, ...], result: str | None) -> str:
+        """A standard function call: inline template or bound specialised callable."""
+        try:
+            built = specialised(name, types, result)
+        except (ValueError, TypeError) as error:
+            raise CodegenError(f"{name}({', '.join(types)}): {error}") from None
+        if built.template is not None:
+            template = built.template
+            for i, arg in enumerate(args):
+                if _ATOM.match(arg):  # a name, attribute or non-negative number needs no parentheses
+                    template = template.replace(f"({{{i}}})", f"{{{i}}}")
+            text = template.format(*args)
+            return text if _ATOM.match(text) or template == "({0})" else f"({text})"
+        fn = self.module.bind(("fast", name.upper(), types, result), f"fn_{names.escape(name)}", lambda: built.fast)
+        return f"{fn}({', '.join(args)})"
+
+    def checked(self, name: str, types: tuple[str, ...], result: str | None) -> str:
+        """The bound checked form of a standard function (returns value, warning) for ENO."""
+        try:
+            built = specialised(name, types, result)
+        except (ValueError, TypeError) as error:
+            raise CodegenError(f"{name}({', '.join(types)}): {error}") from None
+        return self.module.bind(("checked", name.upper(), types, result), f"fn_{names.escape(name)}_eno",
+                                lambda: built.checked)
+
+    def user_call(self, c: ir.Call) -> str:
+        callee = self.module.pous.get(c.function.upper())
+        if callee is None or callee.kind != "function":
+            raise CodegenError(f"{c.function} is not a user function")
+        inputs = [s for s in callee.slots if s.var_class == "VAR_INPUT"]
+        in_outs = [s for s in callee.slots if s.var_class == "VAR_IN_OUT"]
+        if len(c.args) != len(inputs) or len(c.in_outs) != len(in_outs):
+            raise CodegenError(
+                f"{callee.name} takes {len(inputs)} inputs and {len(in_outs)} in-outs, "
+                f"the call passes {len(c.args)} and {len(c.in_outs)}")
+        args = [self.value_for(a, slot.type) for a, slot in zip(c.args, inputs)]
+        args += [self.ref(v) for v in c.in_outs]
+        call = f"{names.function(callee.name)}({', '.join(args)})"
+        return f"(yield from {call})" if self.module.debug else call
+
+    def value_for(self, e: ir.Expr, target: t.IrType) -> str:
+        """``e`` as a value to store in a variable of type ``target`` (a private copy for composites)."""
+        if is_composite(target):
+            if isinstance(target, t.FbInstance):
+                raise CodegenError("an FB instance cannot be passed by value")
+            return f"ll_copy({self.expr(e)})"
+        return self.stored(e, target)
+
+    def stored(self, e: ir.Expr, target: t.IrType) -> str:
+        """``e`` stored into a scalar of type ``target`` (wrapped, cut or range-checked as needed)."""
+        return store_code(self.expr(e), e.type, target, checked=isinstance(e, (ir.Var, ir.Const)))
+
+    # ------------------------------------------------------------------ variables
+
+    def var(self, v: ir.Var) -> str:
+        return self.access(v)[0]
+
+    def access(self, v: ir.Var) -> tuple[str, t.IrType]:
+        """Source of the variable ``v`` (readable and assignable) and its declared type."""
+        code, ty = self.scope.root(v)
+        for selector in v.path:
+            code, ty = self.select(code, ty, selector)
+        return code, ty
+
+    def ref(self, v: ir.Var) -> str:
+        """Source of a ``(container, key)`` reference to the variable ``v`` (VAR_IN_OUT argument)."""
+        if not v.path:
+            return self.scope.root_ref(v)
+        code, ty = self.scope.root(v)
+        for selector in v.path[:-1]:
+            code, ty = self.select(code, ty, selector)
+        last = v.path[-1]
+        if isinstance(last, ir.Index):
+            container, _ = self.select(code, ty, ir.Index(last.indices[:-1])) if len(last.indices) > 1 else (code, ty)
+            array = ty
+            assert isinstance(array, t.Array)
+            lo, hi = array.dims[len(last.indices) - 1]
+            return f"({container}, {self.index(last.indices[-1], lo, hi)})"
+        owner, attr = self.member_parts(code, ty, last.name)
+        return f"({owner}, {attr!r})"
+
+    def select(self, code: str, ty: t.IrType, selector: ir.Index | ir.Member) -> tuple[str, t.IrType]:
+        if isinstance(selector, ir.Index):
+            if not isinstance(ty, t.Array):
+                raise CodegenError(f"cannot index a {describe(ty)}")
+            if not 0 < len(selector.indices) <= len(ty.dims):
+                raise CodegenError(f"{len(selector.indices)} indices for an array of {len(ty.dims)} dimensions")
+            for index, (lo, hi) in zip(selector.indices, ty.dims):
+                code = f"{code}[{self.index(index, lo, hi)}]"
+            rest = ty.dims[len(selector.indices):]
+            return code, (t.Array(ty.element, rest) if rest else ty.element)
+        owner, attr = self.member_parts(code, ty, selector.name)
+        return f"{owner}.{attr}", self.member_type(ty, selector.name)
+
+    def index(self, e: ir.Expr, lo: int, hi: int) -> str:
+        if isinstance(e, ir.Const) and isinstance(e.value, int) and lo <= e.value <= hi:
+            return repr(e.value - lo)
+        return f"ll_ix({self.expr(e)}, {lo!r}, {hi!r})"
+
+    def member_parts(self, code: str, ty: t.IrType, member: str) -> tuple[str, str]:
+        """(object source, attribute name) of ``member`` of a structure or FB instance value ``code``."""
+        if isinstance(ty, t.Struct):
+            if not any(f.name.upper() == member.upper() for f in ty.fields):
+                raise CodegenError(f"{ty.name} has no field {member}")
+            return code, names.slot(member)
+        if isinstance(ty, t.FbInstance):
+            user = self.module.user_fb(ty.fb)
+            if user is not None:
+                place = self.module.layouts[user.name.upper()].get(member)
+                if place is None:
+                    raise CodegenError(f"{user.name} has no variable {member}")
+                return self.module.layouts[user.name.upper()].owner(code, place), place.attr
+            if std_pin_type(ty.fb, member) is None:
+                raise CodegenError(f"{ty.fb} has no pin {member}" if std_fb_class(ty.fb) else f"unknown function block {ty.fb}")
+            return code, member.upper()
+        raise CodegenError(f"a {describe(ty)} has no members")
+
+    def member_type(self, ty: t.IrType, member: str) -> t.IrType:
+        if isinstance(ty, t.Struct):
+            return next(f.type for f in ty.fields if f.name.upper() == member.upper())
+        assert isinstance(ty, t.FbInstance)
+        user = self.module.user_fb(ty.fb)
+        if user is not None:
+            return self.module.layouts[user.name.upper()].get(member).slot.type  # type: ignore[union-attr]
+        return std_pin_type(ty.fb, member)  # type: ignore[return-value]
+
+    def scalar(self, ty: t.IrType, what: str) -> str:
+        name = runtime_name(ty)
+        if name is None:
+            raise CodegenError(f"{what} on a value of type {describe(ty)}")
+        return name

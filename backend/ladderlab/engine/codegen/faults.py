@@ -1,0 +1,197 @@
+"""Runtime faults: from a Python exception in generated code back to the POU, origin and values.
+
+Each generated line is tagged with the origin of the statement it belongs to
+(``Source.line_origins``); the deepest traceback frame in the generated module
+gives the line, hence the ST line/column or the network/element. The values
+reported are those of the variables the failing statement mentions, read from
+that frame (the instance, the function's locals, the globals).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from types import FrameType
+from typing import Callable
+
+from ...ir import nodes as ir
+from ...ir import types as t
+from ...model.diagnostics import Diagnostic
+from ..errors import WATCHDOG, PlcRuntimeError
+from . import names
+from .context import ModuleContext, std_pin_type
+from .mentions import statement_vars
+from .module import Generated
+from .pou import boxed_locals
+from .runtime import WatchdogTimeout
+from .scope import global_owner
+from .typeinfo import is_composite
+
+RUNTIME_FAULT = "ENGINE-RUNTIME"
+
+
+@dataclass(frozen=True)
+class Fault:
+    """Why and where a task stopped.
+
+    ``kind``: ``runtime_error`` (an IEC fault: ``code`` is division_by_zero,
+    index_out_of_range, subrange_violation, for_step_zero), ``watchdog``, or
+    ``internal_error`` (an unexpected exception in generated code; ``code`` is
+    the exception's class name). ``origin`` is the failing statement's origin,
+    ``instance`` the path of the POU instance (None inside a function),
+    ``values`` the variables the statement mentions (IEC text -> value).
+    """
+
+    kind: str
+    code: str
+    message: str
+    task: str
+    time_ms: float
+    scan: int
+    pou: str | None = None
+    instance: str | None = None
+    origin: ir.Origin | None = None
+    values: dict[str, object] = field(default_factory=dict)
+
+    def where(self) -> str:
+        if self.origin is None:
+            return f"POU {self.pou}" if self.pou else "unknown location"
+        o = self.origin
+        parts = [f"POU {o.pou}"]
+        if o.line is not None:
+            parts.append(f"line {o.line}" + (f" column {o.column}" if o.column is not None else ""))
+        if o.network is not None:
+            parts.append(f"network {o.network}")
+        if o.element is not None:
+            parts.append(f"element {o.element}")
+        return ", ".join(parts)
+
+    def text(self) -> str:
+        shown = "; ".join(f"{k} = {v!r}" for k, v in self.values.items())
+        return (f"{self.message} at {self.where()}"
+                + (f" (instance {self.instance})" if self.instance else "")
+                + f", task {self.task}, scan {self.scan}, t = {self.time_ms:g} ms"
+                + (f"; {shown}" if shown else ""))
+
+    def diagnostic(self) -> Diagnostic:
+        o = self.origin or ir.Origin(self.pou or "")
+        return Diagnostic(code=RUNTIME_FAULT, message=self.text(), pou=self.pou, line=o.line, column=o.column,
+                          end_line=o.end_line, end_column=o.end_column, network=o.network, element=o.element)
+
+
+def make_fault(error: BaseException, generated: Generated, filename: str, ns: dict, *, task: str,
+               time_ms: float, scan: int, instance_path: Callable[[object], str | None]) -> Fault:
+    frame, lineno = _deepest_generated_frame(error, filename)
+    oid = error.origin if isinstance(error, WatchdogTimeout) else (
+        generated.line_origins[lineno - 1] if frame is not None and 0 < lineno <= len(generated.line_origins) else None)
+    origin = generated.origins[oid] if oid is not None else None
+    if isinstance(error, PlcRuntimeError):
+        kind = "watchdog" if error.code == WATCHDOG else "runtime_error"
+        code, message = error.code, error.message
+    else:
+        kind, code, message = "internal_error", type(error).__name__, f"internal error: {type(error).__name__}: {error}"
+    values: dict[str, object] = {}
+    instance = None
+    if frame is not None and origin is not None:
+        reader = _FrameReader(generated.context, frame, ns, origin.pou)
+        statement = generated.origin_statements.get(oid)  # type: ignore[arg-type]
+        for var in statement_vars(statement) if statement is not None else ():
+            try:
+                value = reader.read(var)
+            except Exception:  # noqa: BLE001 - best effort: e.g. the very index that is out of range
+                continue
+            if not isinstance(value, (list, tuple)) and not hasattr(value, "__slots__"):
+                values[var_text(var)] = value
+        me = frame.f_locals.get("self")
+        instance = instance_path(me) if me is not None else None
+    return Fault(kind, code, message, task, time_ms, scan, origin.pou if origin else None, instance, origin, values)
+
+
+def _deepest_generated_frame(error: BaseException, filename: str) -> tuple[FrameType | None, int]:
+    tb = error.__traceback__
+    found: tuple[FrameType | None, int] = (None, 0)
+    while tb is not None:
+        if tb.tb_frame.f_code.co_filename == filename:
+            found = (tb.tb_frame, tb.tb_lineno)
+        tb = tb.tb_next
+    return found
+
+
+def var_text(var: ir.Var) -> str:
+    """IEC text of an access path, e.g. ``ARR[I]``, ``S.F``, ``T1.Q``."""
+    text = var.name
+    for selector in var.path:
+        if isinstance(selector, ir.Member):
+            text += f".{selector.name}"
+        else:
+            text += "[" + ", ".join(_index_text(i) for i in selector.indices) + "]"
+    return text
+
+
+def _index_text(e: ir.Expr) -> str:
+    if isinstance(e, ir.Var):
+        return var_text(e)
+    if isinstance(e, ir.Const):
+        return repr(e.value)
+    return "..."
+
+
+class _FrameReader:
+    """Reads IR variables in a frame of generated code, the way the generated code reaches them."""
+
+    def __init__(self, context: ModuleContext, frame: FrameType, ns: dict, pou: str) -> None:
+        self.context, self.locals, self.ns = context, frame.f_locals, ns
+        self.pou = context.pous[pou.upper()]
+        self.slots = {s.name.upper(): s for s in self.pou.slots}
+        self.boxed = boxed_locals(self.pou) if self.pou.kind == "function" else set()
+
+    def read(self, var: ir.Var) -> object:
+        value, ty = self.root(var)
+        for selector in var.path:
+            if isinstance(selector, ir.Index):
+                assert isinstance(ty, t.Array)
+                for index, (lo, hi) in zip(selector.indices, ty.dims):
+                    i = self.scalar(index)
+                    if not lo <= i <= hi:
+                        raise IndexError(i)
+                    value = value[i - lo]  # type: ignore[index]
+                rest = ty.dims[len(selector.indices):]
+                ty = t.Array(ty.element, rest) if rest else ty.element
+            else:
+                value, ty = self.member(value, ty, selector.name)
+        return value
+
+    def scalar(self, e: ir.Expr) -> int:
+        if isinstance(e, ir.Const):
+            return e.value  # type: ignore[return-value]
+        if isinstance(e, ir.Var):
+            return self.read(e)  # type: ignore[return-value]
+        raise ValueError("index is an expression")
+
+    def root(self, var: ir.Var) -> tuple[object, t.IrType]:
+        if var.scope == "global":
+            place = self.context.globals.get(var.name)  # type: ignore[union-attr]
+            return getattr(self.ns[global_owner(place.page)], place.attr), place.slot.type  # type: ignore[union-attr]
+        slot = self.slots[var.name.upper()]
+        attr, key = names.slot(slot.name), names.escape(slot.name)
+        if slot.var_class == "VAR_IN_OUT":
+            if is_composite(slot.type):
+                return self.locals[attr], slot.type
+            return self.locals[f"ll_c_{key}"][self.locals[f"ll_k_{key}"]], slot.type
+        if self.pou.kind == "function":
+            value = self.locals[attr]
+            return (value[0] if slot.name.upper() in self.boxed else value), slot.type
+        place = self.context.layouts[self.pou.name.upper()].get(slot.name)
+        owner = self.locals["self"] if place.page == 0 else getattr(self.locals["self"], f"ll_p{place.page}")  # type: ignore[union-attr]
+        return getattr(owner, place.attr), slot.type  # type: ignore[union-attr]
+
+    def member(self, value: object, ty: t.IrType, name: str) -> tuple[object, t.IrType]:
+        if isinstance(ty, t.Struct):
+            field_type = next(f.type for f in ty.fields if f.name.upper() == name.upper())
+            return getattr(value, names.slot(name)), field_type
+        assert isinstance(ty, t.FbInstance)
+        user = self.context.user_fb(ty.fb)
+        if user is not None:
+            place = self.context.layouts[user.name.upper()].get(name)
+            owner = value if place.page == 0 else getattr(value, f"ll_p{place.page}")  # type: ignore[union-attr]
+            return getattr(owner, place.attr), place.slot.type  # type: ignore[union-attr]
+        return getattr(value, name.upper()), std_pin_type(ty.fb, name)  # type: ignore[return-value]

@@ -1,0 +1,100 @@
+"""The variables a statement mentions (its own expressions, not nested statements): shown in fault reports."""
+
+from __future__ import annotations
+
+from typing import Iterable, Iterator
+
+from ...ir import nodes as ir
+
+
+def expression_vars(e: ir.Expr | None) -> Iterator[ir.Var]:
+    if e is None:
+        return
+    if isinstance(e, ir.Var):
+        yield e
+        for selector in e.path:
+            if isinstance(selector, ir.Index):
+                for index in selector.indices:
+                    yield from expression_vars(index)
+    elif isinstance(e, ir.Unary):
+        yield from expression_vars(e.operand)
+    elif isinstance(e, ir.Binary):
+        yield from expression_vars(e.left)
+        yield from expression_vars(e.right)
+    elif isinstance(e, ir.Call):
+        for a in (*e.args, *e.in_outs):
+            yield from expression_vars(a)
+    elif isinstance(e, ir.Convert):
+        yield from expression_vars(e.operand)
+
+
+def calls_in(e: ir.Expr | None) -> Iterator[ir.Call]:
+    """Every function call in an expression, index expressions included."""
+    if isinstance(e, ir.Call):
+        yield e
+        for a in (*e.args, *e.in_outs):
+            yield from calls_in(a)
+    elif isinstance(e, ir.Var):
+        for selector in e.path:
+            if isinstance(selector, ir.Index):
+                for index in selector.indices:
+                    yield from calls_in(index)
+    elif isinstance(e, ir.Binary):
+        yield from calls_in(e.left)
+        yield from calls_in(e.right)
+    elif isinstance(e, (ir.Unary, ir.Convert)):
+        yield from calls_in(e.operand)
+
+
+def own_expressions(s: ir.Stmt) -> Iterable[ir.Expr | None]:
+    if isinstance(s, ir.Assign):
+        return (s.target, s.value)
+    if isinstance(s, ir.If):
+        return [cond for cond, _ in s.branches]
+    if isinstance(s, ir.Case):
+        return (s.selector,)
+    if isinstance(s, ir.For):
+        return (s.var, s.start, s.end, s.step)
+    if isinstance(s, ir.While):
+        return (s.cond,)
+    if isinstance(s, ir.Repeat):
+        return (s.until,)
+    if isinstance(s, ir.FbCall):
+        return (s.en, *(e for _, e in s.inputs), *(v for _, v in s.outputs), s.eno)
+    if isinstance(s, ir.FnCall):
+        return (s.en, s.call, s.target, s.eno)
+    if isinstance(s, ir.Jump):
+        return (s.cond,)
+    if isinstance(s, ir.Probe):
+        return (s.value,)
+    return ()
+
+
+def statement_vars(s: ir.Stmt) -> list[ir.Var]:
+    """Distinct variables of the statement's own expressions, in order of appearance."""
+    seen: dict[ir.Var, None] = {}
+    for e in own_expressions(s):
+        for v in expression_vars(e):
+            seen.setdefault(v, None)
+    return list(seen)
+
+
+def nested(s: ir.Stmt) -> Iterator[list[ir.Stmt]]:
+    """The statement lists directly inside ``s``."""
+    if isinstance(s, ir.If):
+        for _, body in s.branches:
+            yield body
+        yield s.orelse
+    elif isinstance(s, ir.Case):
+        for _, body in s.branches:
+            yield body
+        yield s.orelse
+    elif isinstance(s, (ir.For, ir.While, ir.Repeat)):
+        yield s.body
+
+
+def walk(statements: list[ir.Stmt]) -> Iterator[ir.Stmt]:
+    for s in statements:
+        yield s
+        for body in nested(s):
+            yield from walk(body)

@@ -1,0 +1,65 @@
+"""Generated Python names for IEC names: safe by construction.
+
+The IR carries canonical IEC names, but nothing a user typed may reach the
+generated source unchecked. Every generated name is a fixed ASCII prefix plus
+either the name itself, when it is a plain identifier (``MOTOR`` -> ``v_MOTOR``,
+readable in ``--emit-python``), or an injective escape of it (``w`` prefixes:
+every character outside ``[A-Z0-9]`` becomes ``_`` and six hex digits), so any
+string - a hidden slot named ``N1.E2`` included - yields a valid identifier and
+two different names never meet. Prefixes keep the kinds apart:
+
+=========  ==========================================
+``v_``     a variable slot (POU slot, global, field)
+``P_``     the class of a PROGRAM or FUNCTION_BLOCK
+``f_``     a user FUNCTION
+``S_``     the class of a structure type
+``fb_``    a standard FB class
+``fn_``    a specialised standard function
+``ll_``    the engine's own helpers and temporaries
+=========  ==========================================
+
+Text that only appears in comments goes through :func:`comment_text`.
+"""
+
+from __future__ import annotations
+
+import re
+from functools import lru_cache
+
+_PLAIN = re.compile(r"[A-Z0-9_]+\Z")
+_ALNUM = re.compile(r"[A-Z0-9]")
+
+
+@lru_cache(maxsize=None)
+def escape(name: str) -> str:
+    """``name`` upper-cased if it is a plain identifier, else the injective escape (starting with ``w``)."""
+    upper = name.upper()
+    if upper and _PLAIN.match(upper) and upper.isascii():
+        return upper
+    return "w" + "".join(c if _ALNUM.match(c) and c.isascii() else f"_{ord(c):06X}" for c in upper)
+
+
+def slot(name: str) -> str:
+    """Attribute / local name of a variable slot or structure field."""
+    return "v_" + escape(name)
+
+
+def pou_class(name: str) -> str:
+    return "P_" + escape(name)
+
+
+def function(name: str) -> str:
+    return "f_" + escape(name)
+
+
+def struct_class(name: str) -> str:
+    return "S_" + escape(name)
+
+
+def std_fb(name: str) -> str:
+    return "fb_" + escape(name)
+
+
+def comment_text(text: object) -> str:
+    """User text as it may appear in a generated comment: one line, ASCII, quoted."""
+    return ascii(str(text))

@@ -1,0 +1,261 @@
+"""One POU -> Python: a class for a PROGRAM / FUNCTION_BLOCK, a function for a FUNCTION.
+
+An instance class has ``__slots__`` for its variables, ``ll_init(warm)``
+(cold: everything to its initial value; warm: RETAIN slots keep theirs, user
+FB instances are re-initialised in place so their own RETAIN slots survive)
+and ``execute(now)``: the same protocol as the standard FBs (set inputs,
+execute with the scan's clock, read outputs). VAR_TEMP slots are re-initialised
+at every call. A FUNCTION is a Python function of its inputs (then its
+VAR_IN_OUT references) returning its result; its variables are locals (VAR-43).
+In the debug variant ``execute`` and functions are generators.
+"""
+
+from __future__ import annotations
+
+from ...ir import nodes as ir
+from ...ir import types as t
+from . import names
+from .constructors import construct
+from .context import CodegenError, ModuleContext, diagnostic
+from .mentions import calls_in, own_expressions, walk
+from .scope import Scope
+from .source import Source
+from .statements import Statements
+from .typeinfo import is_composite
+
+
+def _user_fb(module: ModuleContext, ty: t.IrType) -> bool:
+    return isinstance(ty, t.FbInstance) and module.user_fb(ty.fb) is not None
+
+
+def _init_lines(module: ModuleContext, slot: ir.Slot, target: str, pou: str) -> list[str]:
+    """Lines (re)initialising one slot: ``target`` is its attribute source."""
+    try:
+        value = construct(slot.type, slot.initial, module)
+    except CodegenError as error:
+        module.diagnostics.append(diagnostic(f"{slot.name}: {error}", ir.Origin(pou)))
+        return []
+    if slot.var_class == "VAR_IN_OUT":
+        return [f"{target} = ll_ref({value})"]
+    return [f"{target} = {value}"]
+
+
+def emit_instance_class(module: ModuleContext, pou: ir.Pou, src: Source) -> None:
+    cls = names.pou_class(pou.name)
+    layout = module.layouts[pou.name.upper()]
+    scope = Scope(module, pou)
+    for slot in scope.slots.values():
+        module.visit_type(slot.type)
+    for page in range(1, layout.pages):
+        src.line(f"class {cls}_page{page}(ll_Addressable):")
+        with src.indent():
+            src.line(f"__slots__ = {tuple(layout.page_attrs(page))!r}")
+        src.line()
+    src.line(f"class {cls}(ll_Addressable):")
+    with src.indent():
+        src.line(f"# {pou.kind.upper().replace('_', ' ')} {names.comment_text(pou.name)} ({pou.language.upper()})")
+        extra = [f"ll_p{page}" for page in range(1, layout.pages)] + (["ll_probes"] if module.debug else [])
+        src.line(f"__slots__ = {tuple(layout.page_attrs(0) + extra)!r}")
+        src.line()
+        src.line("def __init__(self):")
+        with src.indent():
+            for page in range(1, layout.pages):
+                src.line(f"self.ll_p{page} = {cls}_page{page}()")
+            if module.debug:
+                src.line("self.ll_probes = {}")
+            src.line("self.ll_init(False)")
+        src.line()
+        _emit_init(module, pou, scope, src)
+        src.line()
+        _emit_execute(module, pou, scope, src)
+    src.line()
+
+
+def _emit_init(module: ModuleContext, pou: ir.Pou, scope: Scope, src: Source) -> None:
+    layout = scope.layout
+    assert layout is not None
+    src.line("def ll_init(self, warm):")
+    with src.indent():
+        for page in range(1, layout.pages):
+            src.line(f"ll_p{page} = self.ll_p{page}")
+        emit_inits(module, list(layout.places.values()), _target, pou.name, src)
+
+
+def emit_inits(module: ModuleContext, places: list, target, owner: str, src: Source) -> None:
+    """The body of an ``ll_init(warm)``: RETAIN slots only when cold, user FB instances in place when warm."""
+    before = len(src.lines)
+    retained = [p for p in places if p.slot.retain]
+    if retained:
+        src.line("if not warm:")
+        with src.indent():
+            _plain_inits(module, retained, target, owner, src)
+    fresh: list = []
+    for place in places:
+        if place.slot.retain:
+            continue
+        if not _user_fb(module, place.slot.type):
+            fresh.append(place)
+            continue
+        _plain_inits(module, fresh, target, owner, src)
+        fresh = []
+        src.line("if warm:")
+        with src.indent():
+            src.line(f"{target(place)}.ll_init(True)")
+        src.line("else:")
+        with src.indent():
+            for line in _init_lines(module, place.slot, target(place), owner) or ["pass"]:
+                src.line(line)
+    _plain_inits(module, fresh, target, owner, src)
+    if len(src.lines) == before:
+        src.line("pass")
+
+
+_CHAIN = 8  # targets per chained assignment
+
+
+def _plain_inits(module: ModuleContext, places: list, target, owner: str, src: Source) -> None:
+    """Initialise slots; consecutive slots with one immutable literal value share a chained assignment."""
+    chain: list[str] = []
+    value = ""
+    for place in places:
+        lines = _init_lines(module, place.slot, target(place), owner)
+        left, right = lines[0].split(" = ", 1) if len(lines) == 1 else ("", "")
+        if right and place.slot.var_class != "VAR_IN_OUT" and _immutable(right):
+            if chain and (right != value or len(chain) == _CHAIN):
+                src.line(" = ".join(chain) + f" = {value}")
+                chain = []
+            chain.append(left)
+            value = right
+            continue
+        if chain:
+            src.line(" = ".join(chain) + f" = {value}")
+            chain = []
+        for line in lines:
+            src.line(line)
+    if chain:
+        src.line(" = ".join(chain) + f" = {value}")
+
+
+def _immutable(value: str) -> bool:
+    """A literal (number, string, TRUE/FALSE), never a constructed list or object that must not be shared."""
+    return value.startswith("(-") or ("(" not in value and not value.startswith("["))
+
+
+def _target(place) -> str:
+    return f"{'self' if place.page == 0 else f'll_p{place.page}'}.{place.attr}"
+
+
+def _emit_execute(module: ModuleContext, pou: ir.Pou, scope: Scope, src: Source) -> None:
+    body = Source()
+    body.depth = src.depth + 1
+    Statements(scope, body).body(pou.blocks)
+    src.line("def execute(self, now):")
+    with src.indent():
+        for page in sorted(scope.pages_used):
+            src.line(f"ll_p{page} = self.ll_p{page}")
+        for slot in scope.in_outs:
+            src.line(f"r_{names.escape(slot.name)} = self.{_slot_attr(scope, slot)}")
+            _unpack_reference(slot, src)
+        for slot in scope.slots.values():
+            if slot.var_class == "VAR_TEMP":
+                place = scope.layout.get(slot.name)  # type: ignore[union-attr]
+                if place.page and place.page not in scope.pages_used:
+                    src.line(f"ll_p{place.page} = self.ll_p{place.page}")
+                    scope.pages_used.add(place.page)
+                for line in _init_lines(module, slot, _target(place), pou.name):
+                    src.line(line)
+        if module.debug:
+            src.line("ll_pr = self.ll_probes")
+        src.extend(body)
+        if module.debug:
+            src.line("return")
+            src.line("yield  # a generator even when no pause point is reached")
+
+
+def _slot_attr(scope: Scope, slot: ir.Slot) -> str:
+    place = scope.layout.get(slot.name)  # type: ignore[union-attr]
+    return place.attr if place.page == 0 else f"ll_p{place.page}.{place.attr}"  # type: ignore[union-attr]
+
+
+def _unpack_reference(slot: ir.Slot, src: Source) -> None:
+    key = names.escape(slot.name)
+    if is_composite(slot.type):
+        src.line(f"{names.slot(slot.name)} = r_{key}[0][r_{key}[1]]")
+    else:
+        src.line(f"ll_c_{key}, ll_k_{key} = r_{key}")
+
+
+def boxed_locals(pou: ir.Pou) -> set[str]:
+    """Locals of a FUNCTION passed whole by reference somewhere in its body: they live in a 1-element list."""
+    local = {s.name.upper() for s in pou.slots if s.var_class not in ("VAR_IN_OUT", "VAR_EXTERNAL")}
+
+    def whole_local(v: object) -> bool:
+        return isinstance(v, ir.Var) and v.scope == "local" and not v.path and v.name.upper() in local
+
+    found: set[str] = set()
+    for block in pou.blocks:
+        for s in walk(block.statements):
+            for e in own_expressions(s):
+                for call in calls_in(e):
+                    found.update(v.name.upper() for v in call.in_outs if whole_local(v))
+            if isinstance(s, ir.FbCall):  # a global FB instance's VAR_IN_OUT pin (boxing an input is harmless)
+                found.update(v.name.upper() for _, v in s.inputs if whole_local(v))
+    return found
+
+
+def emit_function(module: ModuleContext, pou: ir.Pou, src: Source) -> None:
+    scope = Scope(module, pou)
+    scope.boxed = boxed_locals(pou)
+    scope.result_slot()  # raises when missing
+    inputs = [s for s in pou.slots if s.var_class == "VAR_INPUT"]
+    params = [names.slot(s.name) for s in inputs] + [f"r_{names.escape(s.name)}" for s in scope.in_outs]
+    body = Source()
+    body.depth = src.depth + 1
+    Statements(scope, body).body(pou.blocks)
+    src.line(f"def {names.function(pou.name)}({', '.join(params)}):")
+    with src.indent():
+        src.line(f"# FUNCTION {names.comment_text(pou.name)} ({pou.language.upper()})")
+        for slot in scope.in_outs:
+            _unpack_reference(slot, src)
+        for slot in inputs:
+            if slot.name.upper() in scope.boxed:
+                src.line(f"{names.slot(slot.name)} = [{names.slot(slot.name)}]")
+        for slot in scope.slots.values():
+            if slot.var_class in ("VAR_INPUT", "VAR_IN_OUT"):
+                continue
+            module.visit_type(slot.type)
+            try:
+                value = construct(slot.type, slot.initial, module)
+            except CodegenError as error:
+                module.diagnostics.append(diagnostic(f"{slot.name}: {error}", ir.Origin(pou.name)))
+                continue
+            boxed = slot.name.upper() in scope.boxed
+            src.line(f"{names.slot(slot.name)} = {'[' + value + ']' if boxed else value}")
+        if module.debug:
+            src.line(f"ll_pr = {names.function(pou.name)}_probes")
+        src.extend(body)
+        src.line(scope.return_statement())
+        if module.debug:
+            src.line("yield  # a generator even when no pause point is reached")
+    if module.debug:
+        src.line(f"{names.function(pou.name)}_probes = {{}}")
+    src.line()
+
+
+def emit_struct(module: ModuleContext, struct: t.Struct, cls: str, src: Source) -> None:
+    attrs = tuple(names.slot(f.name) for f in struct.fields)
+    src.line(f"class {cls}(ll_Structure):")
+    with src.indent():
+        src.line(f"# STRUCT {names.comment_text(struct.name)}")
+        src.line(f"__slots__ = ll_fields = {attrs!r}")
+        src.line()
+        src.line("def __init__(self):")
+        with src.indent():
+            for f, attr in zip(struct.fields, attrs):
+                try:
+                    src.line(f"self.{attr} = {construct(f.type, f.initial, module)}")
+                except CodegenError as error:
+                    module.diagnostics.append(diagnostic(f"{struct.name}.{f.name}: {error}", None))
+            if not struct.fields:
+                src.line("pass")
+    src.line()

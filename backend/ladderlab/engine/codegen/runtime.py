@@ -1,0 +1,174 @@
+"""What generated modules call besides the standard library: the names they start with.
+
+``namespace()`` returns the globals every generated module is executed in:
+the runtime library's inline helpers (``INLINE_NAMES``), array index and
+subrange checks, whole-value copy and assignment for arrays and structures,
+FOR ranges, references for VAR_IN_OUT, and the standard FB classes (made
+addressable so a reference can point at one of their pins).
+
+VAR_IN_OUT references are ``(container, key)`` pairs: a list and an index, or
+an object and an attribute name. Every generated class derives from
+``Addressable`` so ``container[key]`` reads and writes either kind alike.
+Composite values (arrays as nested lists, structures as objects) keep their
+identity for their whole life - assignments copy into them - so a reference
+into one stays valid.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Callable
+
+from ..errors import WATCHDOG, PlcRuntimeError, check_index, check_subrange, for_step_zero
+from ..stdlib import INLINE_NAMES, STANDARD_FBS
+from . import names
+
+#: Loop iterations between two clock readings of the watchdog.
+WATCHDOG_EVERY = 256
+
+
+class Addressable:
+    """``obj[name]`` reads and ``obj[name] = v`` writes an attribute, so (obj, name) can be a reference."""
+
+    __slots__ = ()
+
+    def __getitem__(self, key: str) -> object:
+        return getattr(self, key)
+
+    def __setitem__(self, key: str, value: object) -> None:
+        setattr(self, key, value)
+
+
+class Structure(Addressable):
+    """Base of generated structure classes: ``ll_fields`` lists the attributes to copy."""
+
+    __slots__ = ()
+    ll_fields: tuple[str, ...] = ()
+
+    def ll_copy(self) -> "Structure":
+        new = self.__class__.__new__(self.__class__)
+        for name in self.ll_fields:
+            setattr(new, name, deep_copy(getattr(self, name)))
+        return new
+
+    def ll_assign(self, source: "Structure") -> None:
+        for name in self.ll_fields:
+            mine = getattr(self, name)
+            if is_composite_value(mine):
+                assign_into(mine, getattr(source, name))
+            else:
+                setattr(self, name, getattr(source, name))
+
+
+def is_composite_value(value: object) -> bool:
+    return value.__class__ is list or isinstance(value, Structure)
+
+
+def deep_copy(value):
+    """A copy of an array (nested lists) or structure that shares nothing mutable; scalars as they are."""
+    if value.__class__ is list:
+        if value and is_composite_value(value[0]):
+            return [deep_copy(v) for v in value]
+        return value[:]
+    if isinstance(value, Structure):
+        return value.ll_copy()
+    return value
+
+
+def assign_into(target, source) -> None:
+    """Whole array / structure assignment (ST-21): copy ``source`` into ``target`` in place."""
+    if target.__class__ is list:
+        if target and is_composite_value(target[0]):
+            for mine, theirs in zip(target, source):
+                assign_into(mine, theirs)
+        else:
+            target[:] = source
+    else:
+        target.ll_assign(source)
+
+
+def with_values(obj, **attributes):
+    """``obj`` with the given attributes set (initial values of structures and FB instances)."""
+    for name, value in attributes.items():
+        setattr(obj, name, value)
+    return obj
+
+
+def for_range(start: int, end: int, step: int) -> range:
+    """The values a FOR loop visits (ST-70): computed up front, so a counter at its type's limit cannot wrap forever."""
+    if step > 0:
+        return range(start, end + 1, step)
+    if step < 0:
+        return range(start, end - 1, step)
+    raise for_step_zero()
+
+
+def dummy_reference(value: object) -> tuple[list, int]:
+    """What an unbound VAR_IN_OUT refers to until a call binds it: a private cell holding the default."""
+    return [value], 0
+
+
+class WatchdogTimeout(PlcRuntimeError):
+    """A task ran longer than its watchdog allows; ``origin`` is the loop or jump that noticed."""
+
+    def __init__(self, origin: int, limit_s: float) -> None:
+        super().__init__(WATCHDOG, f"watchdog: scan exceeded {limit_s:g} s")
+        self.origin = origin
+        self.limit_s = limit_s
+
+
+class Watchdog:
+    """The deadline of the running task, checked at loop back-edges every ``WATCHDOG_EVERY`` iterations."""
+
+    def __init__(self, clock: Callable[[], float]) -> None:
+        self.clock = clock
+        self.deadline = math.inf
+        self.limit_s = math.inf
+
+    def arm(self, limit_s: float) -> None:
+        self.limit_s = limit_s
+        self.deadline = self.clock() + limit_s
+
+    def pause(self) -> float:
+        """Time left; the clock does not run for a halted task."""
+        return self.deadline - self.clock()
+
+    def resume(self, left: float) -> None:
+        self.deadline = self.clock() + left
+
+    def check(self, origin: int) -> int:
+        if self.clock() > self.deadline:
+            raise WatchdogTimeout(origin, self.limit_s)
+        return WATCHDOG_EVERY
+
+
+def _addressable_fbs() -> dict[str, type]:
+    return {
+        name: type(name, (Addressable, cls), {"__slots__": (), "__doc__": cls.__doc__})
+        for name, cls in STANDARD_FBS.items()
+    }
+
+
+#: The standard FB classes generated code instantiates (same behaviour, plus ``Addressable``).
+FB_CLASSES: dict[str, type] = _addressable_fbs()
+
+
+def namespace() -> dict[str, object]:
+    """Fresh globals for executing one generated module."""
+    ns: dict[str, object] = dict(INLINE_NAMES)
+    ns.update(
+        ll_ix=check_index,
+        ll_sub=check_subrange,
+        ll_copy=deep_copy,
+        ll_assign=assign_into,
+        ll_with=with_values,
+        ll_for_range=for_range,
+        ll_ref=dummy_reference,
+        ll_inf=math.inf,
+        ll_nan=math.nan,
+        ll_Addressable=Addressable,
+        ll_Structure=Structure,
+        ll_now=0,
+    )
+    ns.update({names.std_fb(name): cls for name, cls in FB_CLASSES.items()})
+    return ns

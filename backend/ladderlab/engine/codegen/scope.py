@@ -1,0 +1,104 @@
+"""How the body of one POU reaches its variables: roots of access paths and references to them.
+
+Inside a PROGRAM / FUNCTION_BLOCK method a slot is ``self.v_X`` (or
+``ll_p2.v_X`` on a further page, loaded once at entry). Inside a FUNCTION,
+whose variables live only for one call (VAR-43), slots are Python locals;
+a local passed whole to a VAR_IN_OUT is boxed in a one-element list so it can
+be referenced. Globals are ``G.v_X`` (``G1``, ``G2``.. for further pages).
+A VAR_IN_OUT slot holds a reference ``(container, key)``: scalars are read and
+written as ``ll_c_X[ll_k_X]``; an array or structure is fetched once at entry
+into ``v_X`` (composite values never change identity).
+"""
+
+from __future__ import annotations
+
+from ...ir import nodes as ir
+from ...ir import types as t
+from . import names
+from .context import CodegenError, ModuleContext
+from .layout import Layout
+from .typeinfo import is_composite
+
+
+def global_owner(page: int) -> str:
+    return "G" if page == 0 else f"G{page}"
+
+
+class Scope:
+    def __init__(self, module: ModuleContext, pou: ir.Pou) -> None:
+        self.module = module
+        self.pou = pou
+        self.function = pou.kind == "function"
+        self.layout: Layout | None = None if self.function else module.layouts[pou.name.upper()]
+        self.slots = {s.name.upper(): s for s in pou.slots if s.var_class != "VAR_EXTERNAL"}
+        self.in_outs = [s for s in self.slots.values() if s.var_class == "VAR_IN_OUT"]
+        self.boxed: set[str] = set()
+        self.pages_used: set[int] = set()
+        self._temps = 0
+
+    def temp(self, prefix: str) -> str:
+        self._temps += 1
+        return f"ll_{prefix}{self._temps}"
+
+    def slot(self, var: ir.Var) -> ir.Slot:
+        if var.scope == "global":
+            place = self.module.globals.get(var.name)  # type: ignore[union-attr]
+            if place is None:
+                raise CodegenError(f"unknown global variable {var.name}")
+            return place.slot
+        slot = self.slots.get(var.name.upper())
+        if slot is None:
+            raise CodegenError(f"unknown variable {var.name} in {self.pou.name}")
+        return slot
+
+    def _owner(self, var: ir.Var) -> str:
+        """``self`` or the local holding the page of a method's slot (loaded at entry)."""
+        place = self.layout.get(var.name)  # type: ignore[union-attr]
+        if not place.page:  # type: ignore[union-attr]
+            return "self"
+        self.pages_used.add(place.page)  # type: ignore[union-attr]
+        return f"ll_p{place.page}"  # type: ignore[union-attr]
+
+    def root(self, var: ir.Var) -> tuple[str, t.IrType]:
+        """Source reading (and assignable as) the root slot of ``var``, and the slot's type."""
+        slot = self.slot(var)
+        attr = names.slot(slot.name)
+        if var.scope == "global":
+            place = self.module.globals.get(var.name)  # type: ignore[union-attr]
+            return f"{global_owner(place.page)}.{attr}", slot.type  # type: ignore[union-attr]
+        if slot.var_class == "VAR_IN_OUT":
+            if is_composite(slot.type):
+                return attr, slot.type
+            key = names.escape(slot.name)
+            return f"ll_c_{key}[ll_k_{key}]", slot.type
+        if self.function:
+            return (f"{attr}[0]" if slot.name.upper() in self.boxed else attr), slot.type
+        return f"{self._owner(var)}.{attr}", slot.type
+
+    def root_ref(self, var: ir.Var) -> str:
+        """Source of a ``(container, key)`` reference to the whole root slot of ``var``."""
+        slot = self.slot(var)
+        attr = names.slot(slot.name)
+        if var.scope == "global":
+            place = self.module.globals.get(var.name)  # type: ignore[union-attr]
+            return f"({global_owner(place.page)}, {attr!r})"  # type: ignore[union-attr]
+        if slot.var_class == "VAR_IN_OUT":
+            return f"r_{names.escape(slot.name)}"
+        if self.function:
+            if slot.name.upper() not in self.boxed:
+                raise CodegenError(f"{slot.name} cannot be passed by reference")  # boxed() missed it: a bug
+            return f"({attr}, 0)"
+        return f"({self._owner(var)}, {attr!r})"
+
+    def result_slot(self) -> ir.Slot:
+        """A FUNCTION's result: the slot named like the function."""
+        slot = self.slots.get(self.pou.name.upper())
+        if slot is None:
+            raise CodegenError(f"function {self.pou.name} has no result slot")
+        return slot
+
+    def return_statement(self) -> str:
+        if not self.function:
+            return "return"
+        name = self.result_slot().name
+        return f"return {names.slot(name)}{'[0]' if name.upper() in self.boxed else ''}"

@@ -1,0 +1,53 @@
+"""A line-oriented writer for generated Python that remembers where each line came from.
+
+Every emitted line is tagged with the origin index that was current when it
+was written (the statement being generated), so a traceback line number in
+the generated module maps back to an ST line or an LD/FBD network/element.
+"""
+
+from __future__ import annotations
+
+from contextlib import contextmanager
+from typing import Iterator
+
+
+class Source:
+    def __init__(self) -> None:
+        self.lines: list[str] = []
+        self.line_origins: list[int | None] = []  # index 0 is line 1
+        self.depth = 0
+        self.origin: int | None = None
+
+    def line(self, text: str = "") -> None:
+        self.lines.append("    " * self.depth + text if text else "")
+        self.line_origins.append(self.origin)
+
+    @contextmanager
+    def indent(self) -> Iterator[None]:
+        self.depth += 1
+        try:
+            yield
+        finally:
+            self.depth -= 1
+
+    @contextmanager
+    def at(self, origin: int | None) -> Iterator[None]:
+        """Tag the lines written inside with ``origin`` (nested statements override it)."""
+        saved, self.origin = self.origin, origin
+        try:
+            yield
+        finally:
+            self.origin = saved
+
+    def text(self) -> str:
+        return "\n".join(self.lines) + "\n"
+
+    def origin_of_line(self, lineno: int) -> int | None:
+        if 1 <= lineno <= len(self.line_origins):
+            return self.line_origins[lineno - 1]
+        return None
+
+    def extend(self, other: "Source") -> None:
+        """Append the lines of ``other`` (written at its own depth) with their origins."""
+        self.lines.extend(other.lines)
+        self.line_origins.extend(other.line_origins)

@@ -1,0 +1,350 @@
+"""IR statements and blocks -> Python statements.
+
+Loops check the watchdog on their back-edge: a local countdown, so reading
+the clock costs one call every ``WATCHDOG_EVERY`` iterations. A POU whose
+blocks are jump targets runs them inside a dispatch loop (``ll_b`` is the
+segment to resume at; a jump sets it and ``continue``s, backward jumps check
+the watchdog). In the debug variant every pause point is
+``if ll_halt[id]: yield (id, self)``; the debugger arms ``ll_halt``.
+"""
+
+from __future__ import annotations
+
+from contextlib import nullcontext
+
+from ...ir import nodes as ir
+from ...ir import types as t
+from . import names
+from .context import CodegenError, diagnostic, std_fb_class, std_pin_type
+from .expressions import Expressions, literal
+from .mentions import walk
+from .runtime import WATCHDOG_EVERY
+from .scope import Scope
+from .source import Source
+from ..values import store_expr
+from .typeinfo import describe, is_composite, runtime_name, store_code
+
+
+class Statements:
+    def __init__(self, scope: Scope, src: Source) -> None:
+        self.scope = scope
+        self.module = scope.module
+        self.x = Expressions(scope)
+        self.src = src
+        self.loops = 0
+        self.segments: dict[str, int] | None = None  # label -> dispatch segment, when the POU jumps
+        self.segment = 0
+        self.now = "ll_now" if scope.function else "now"
+        self.me = "None" if scope.function else "self"
+        self._line: int | None = None
+
+    # ------------------------------------------------------------------ blocks
+
+    def body(self, blocks: list[ir.Block]) -> None:
+        jumps = any(isinstance(s, ir.Jump) for b in blocks for s in walk(b.statements))
+        if not jumps:
+            for block in blocks:
+                self.block(block)
+            return
+        self.segments = self._segments(blocks)
+        self.src.line("ll_b = 0")
+        self.src.line(f"ll_wj = {WATCHDOG_EVERY}")
+        self.src.line("while True:")
+        with self.src.indent():
+            segment = -1
+            for block in blocks:
+                if block.label is not None or segment < 0:
+                    segment += 1
+                    self.segment = segment
+                    self.src.line(f"if ll_b <= {segment}:")
+                with self.src.indent():
+                    self.block(block)
+            self.src.line("break")
+
+    def _segments(self, blocks: list[ir.Block]) -> dict[str, int]:
+        segments: dict[str, int] = {}
+        segment = -1
+        for block in blocks:
+            if block.label is not None or segment < 0:
+                segment += 1
+            if block.label is not None:
+                label = block.label.upper()
+                if label in segments:
+                    self._report(f"label {block.label} is used twice", block.origin)
+                segments[label] = segment
+        return segments
+
+    def block(self, block: ir.Block) -> None:
+        origin = block.origin
+        if origin.network is not None:
+            self.src.line(f"# network {names.comment_text(origin.network)}"
+                          + (f" label {names.comment_text(block.label)}" if block.label else ""))
+            self._line = None
+        if self.module.debug:
+            with self.src.at(self.module.origin(origin)):
+                self.pause("network" if origin.network is not None else "entry", origin)
+        self.statements(block.statements)
+        if not block.statements and not self.module.debug:
+            self.src.line("pass")
+
+    def statements(self, statements: list[ir.Stmt]) -> None:
+        before = len(self.src.lines)
+        for s in statements:
+            self.statement(s)
+        if len(self.src.lines) == before or all(not l.strip() or l.strip().startswith("#") for l in self.src.lines[before:]):
+            self.src.line("pass")
+
+    def pause(self, kind: str, origin: ir.Origin, element: str | None = None) -> None:
+        pid = self.module.pause(kind, origin, element)
+        self.src.line(f"if ll_halt[{pid}]: yield ({pid}, {self.me})")
+
+    # ------------------------------------------------------------------ statements
+
+    def statement(self, s: ir.Stmt) -> None:
+        origin = s.origin
+        if origin.line is not None and origin.line != self._line and origin.network is None:
+            self._line = origin.line
+            self.src.line(f"# line {origin.line}")
+        oid = self.module.origin(origin, s)
+        mark = len(self.src.lines)
+        try:
+            with self.src.at(oid):
+                if self.module.debug and origin.line is not None and not isinstance(s, ir.Probe):
+                    self.pause("statement", origin)
+                getattr(self, "_" + type(s).__name__.lower())(s, oid)
+        except CodegenError as error:
+            del self.src.lines[mark:], self.src.line_origins[mark:]
+            self._report(str(error), origin)
+
+    def _report(self, message: str, origin: ir.Origin) -> None:
+        self.module.diagnostics.append(diagnostic(message, origin))
+
+    def _assign(self, s: ir.Assign, oid: int) -> None:
+        self.store(s.target, s.value)
+
+    def store(self, target: ir.Var, value: ir.Expr) -> None:
+        code, ty = self.x.access(target)
+        if isinstance(ty, t.FbInstance):
+            raise CodegenError("an FB instance cannot be assigned")
+        if is_composite(ty):
+            self.src.line(f"ll_assign({code}, {self.x.expr(value)})")
+        else:
+            self.src.line(f"{code} = {self.x.stored(value, ty)}")
+
+    def _if(self, s: ir.If, oid: int) -> None:
+        keyword = "if"
+        for cond, body in s.branches:
+            self.src.line(f"{keyword} {self.x.expr(cond)}:")
+            with self.src.indent():
+                self.statements(body)
+            keyword = "elif"
+        if s.orelse:
+            self.src.line("else:")
+            with self.src.indent():
+                self.statements(s.orelse)
+
+    def _case(self, s: ir.Case, oid: int) -> None:
+        selector = self.scope.temp("sel")
+        self.src.line(f"{selector} = {self.x.expr(s.selector)}")
+        keyword = "if"
+        for labels, body in s.branches:
+            tests = []
+            singles = [label for label in labels if isinstance(label, int)]
+            if singles:
+                tests.append(f"{selector} == {literal(singles[0])}" if len(singles) == 1
+                             else f"{selector} in ({', '.join(map(literal, singles))})")
+            for label in labels:
+                if isinstance(label, tuple):
+                    lo, hi = label
+                    tests.append(f"{literal(lo)} <= {selector} <= {literal(hi)}")
+                elif not isinstance(label, int) or isinstance(label, bool):
+                    raise CodegenError(f"CASE label {label!r} is not an integer")
+            self.src.line(f"{keyword} {' or '.join(tests) or 'False'}:")
+            with self.src.indent():
+                self.statements(body)
+            keyword = "elif"
+        if s.orelse:
+            self.src.line("else:" if keyword == "elif" else "if True:")
+            with self.src.indent():
+                self.statements(s.orelse)
+
+    def _countdown(self, oid: int) -> str:
+        counter = self.scope.temp("w")
+        self.src.line(f"{counter} = {WATCHDOG_EVERY}")
+        return counter
+
+    def _back_edge(self, counter: str, oid: int) -> None:
+        self.src.line(f"{counter} -= 1")
+        self.src.line(f"if not {counter}: {counter} = ll_wd({oid})")
+
+    def _loop_body(self, body: list[ir.Stmt]) -> None:
+        self.loops += 1
+        try:
+            self.statements(body)
+        finally:
+            self.loops -= 1
+
+    def _for(self, s: ir.For, oid: int) -> None:
+        var, ty = self.x.access(s.var)
+        if is_composite(ty):
+            raise CodegenError(f"a FOR variable cannot be a {describe(ty)}")
+        self.store(s.var, s.start)
+        values = self.scope.temp("r")
+        end, step = self.x.expr(s.end), self.x.expr(s.step)
+        if isinstance(s.step, ir.Const) and isinstance(s.step.value, int) and s.step.value:
+            stop = f"{end} + 1" if s.step.value > 0 else f"{end} - 1"
+            self.src.line(f"{values} = range({var}, {stop}, {step})")
+        else:
+            self.src.line(f"{values} = ll_for_range({var}, {end}, {step})")
+        counter = self._countdown(oid)
+        self.src.line(f"for {var} in {values}:")
+        with self.src.indent():
+            self._back_edge(counter, oid)
+            self._loop_body(s.body)
+        self.src.line("else:")  # normal end: the first value that failed the test (ST-71), stored like any value
+        with self.src.indent():
+            self.src.line(f"if {values}: {var} = {self._next(values, ty)}")
+
+    def _next(self, values: str, ty: t.IrType) -> str:
+        """The value after the last one of the range, stored in the FOR variable's type."""
+        stored = store_expr(f"{values}[-1] + {values}.step", runtime_name(ty))  # type: ignore[arg-type]
+        if isinstance(ty, t.Subrange):
+            return f"ll_sub({stored}, {ty.low!r}, {ty.high!r})"
+        return stored
+
+    def _while(self, s: ir.While, oid: int) -> None:
+        counter = self._countdown(oid)
+        self.src.line(f"while {self.x.expr(s.cond)}:")
+        with self.src.indent():
+            self._back_edge(counter, oid)
+            self._loop_body(s.body)
+
+    def _repeat(self, s: ir.Repeat, oid: int) -> None:
+        counter = self._countdown(oid)
+        self.src.line("while True:")
+        with self.src.indent():
+            self._back_edge(counter, oid)
+            self._loop_body(s.body)
+            with self.src.at(oid):
+                self.src.line(f"if {self.x.expr(s.until)}:")
+                with self.src.indent():
+                    self.src.line("break")
+
+    def _exit(self, s: ir.Exit, oid: int) -> None:
+        if not self.loops:
+            raise CodegenError("EXIT outside a loop")
+        self.src.line("break")
+
+    def _return(self, s: ir.Return, oid: int) -> None:
+        self.src.line(self.scope.return_statement())
+
+    def _jump(self, s: ir.Jump, oid: int) -> None:
+        if self.segments is None or s.label.upper() not in (self.segments or {}):
+            raise CodegenError(f"jump to unknown label {s.label}")
+        if self.loops:
+            raise CodegenError("a jump cannot leave a loop")
+        target = self.segments[s.label.upper()]
+        if s.cond is not None:
+            self.src.line(f"if {self.x.expr(s.cond)}:")
+        with self.src.indent() if s.cond is not None else nullcontext():
+            if target <= self.segment:  # backward (or to its own segment): a loop back-edge
+                self._back_edge("ll_wj", oid)
+            self.src.line(f"ll_b = {target}")
+            self.src.line("continue")
+
+    def _probe(self, s: ir.Probe, oid: int) -> None:
+        if not self.module.debug:
+            return
+        self.src.line(f"ll_pr[{s.element!r}] = {self.x.expr(s.value)}")
+        self.pause("element", s.origin, s.element)
+
+    # ------------------------------------------------------------------ calls
+
+    def _guarded(self, en: ir.Expr | None, eno: ir.Var | None, emit) -> None:
+        """Run ``emit`` under EN (when given) and set ENO: TRUE when it ran, FALSE when EN was FALSE."""
+        if en is None:
+            emit()
+            return
+        self.src.line(f"if {self.x.expr(en)}:")
+        with self.src.indent():
+            emit()
+        if eno is not None:
+            self.src.line("else:")
+            with self.src.indent():
+                self.src.line(f"{self.x.var(eno)} = False")
+
+    def _fbcall(self, s: ir.FbCall, oid: int) -> None:
+        code, ty = self.x.access(s.instance)
+        if not isinstance(ty, t.FbInstance):
+            raise CodegenError(f"{s.instance.name} is not an FB instance")
+        user = self.module.user_fb(ty.fb)
+        if user is None and std_fb_class(ty.fb) is None:
+            raise CodegenError(f"unknown function block {ty.fb}")
+
+        def emit() -> None:
+            fb = "ll_fb"  # FB calls do not nest: one temporary serves them all
+            self.src.line(f"{fb} = {code}")
+            for pin, value in s.inputs:
+                self._fb_input(fb, ty, user, pin, value)
+            call = f"{fb}.execute({self.now})"
+            self.src.line(f"yield from {call}" if user is not None and self.module.debug else call)
+            for pin, target in s.outputs:
+                owner, attr = self.x.member_parts(fb, ty, pin)
+                pin_type = self.x.member_type(ty, pin)
+                self._copy_out(f"{owner}.{attr}", pin_type, target)
+            if s.eno is not None:
+                self.src.line(f"{self.x.var(s.eno)} = True")
+
+        self._guarded(s.en, s.eno, emit)
+
+    def _fb_input(self, fb: str, ty: t.FbInstance, user: ir.Pou | None, pin: str, value: ir.Expr) -> None:
+        owner, attr = self.x.member_parts(fb, ty, pin)
+        pin_type = self.x.member_type(ty, pin)
+        if user is not None:
+            slot = self.module.layouts[user.name.upper()].get(pin).slot  # type: ignore[union-attr]
+            if slot.var_class == "VAR_IN_OUT":
+                if not isinstance(value, ir.Var):
+                    raise CodegenError(f"VAR_IN_OUT {pin} needs a variable")
+                self.src.line(f"{owner}.{attr} = {self.x.ref(value)}")
+                return
+            if slot.var_class != "VAR_INPUT":
+                raise CodegenError(f"{pin} is not an input of {user.name}")
+        elif pin.upper() not in std_fb_class(ty.fb).INPUTS:  # type: ignore[union-attr]
+            raise CodegenError(f"{pin} is not an input of {ty.fb}")
+        if is_composite(pin_type):
+            self.src.line(f"ll_assign({owner}.{attr}, {self.x.expr(value)})")
+        else:
+            self.src.line(f"{owner}.{attr} = {self.x.stored(value, pin_type)}")
+
+    def _copy_out(self, source: str, source_type: t.IrType, target: ir.Var, checked: bool = True) -> None:
+        """Copy an FB output pin or a call result into ``target``; ``checked``: already stored in ``source_type``."""
+        code, ty = self.x.access(target)
+        if is_composite(ty):
+            self.src.line(f"ll_assign({code}, {source})")
+        else:
+            self.src.line(f"{code} = {store_code(source, source_type, ty, checked=checked)}")
+
+    def _fncall(self, s: ir.FnCall, oid: int) -> None:
+        call = s.call
+
+        def emit() -> None:
+            if s.eno is not None and not call.user:
+                types = tuple(self.x.scalar(ty, call.function) for ty in call.arg_types)
+                fn = self.x.checked(call.function, types, runtime_name(call.type))
+                value, warning = self.scope.temp("v"), self.scope.temp("warn")
+                args = ", ".join(self.x.expr(a) for a in call.args)
+                self.src.line(f"{value}, {warning} = {fn}({args})")
+                if s.target is not None:
+                    self._copy_out(value, call.type, s.target, checked=False)
+                self.src.line(f"{self.x.var(s.eno)} = {warning} is None")
+                return
+            result = self.x.expr(call)
+            if s.target is not None:
+                self._copy_out(result, call.type, s.target, checked=call.user)
+            else:
+                self.src.line(result)
+            if s.eno is not None:
+                self.src.line(f"{self.x.var(s.eno)} = True")
+
+        self._guarded(s.en, s.eno, emit)
+

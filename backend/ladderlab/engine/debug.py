@@ -1,0 +1,95 @@
+"""Breakpoints and stepping for the debug variant of the generated code.
+
+Generated debug code is made of generators: at every pause point it runs
+``if ll_halt[id]: yield (id, instance)``, and calls of user POUs are
+``yield from``. The simulation drives the scan generator; a yield means
+"halt here", so ``cycle()`` returns with the simulation halted and
+``resume()`` / ``step()`` continue the same generator. This module decides
+which pause points are armed in ``ll_halt``:
+
+* breakpoints, always;
+* while stepping ``statement``: every ST statement and every network boundary
+  (LD/FBD step by network, ON-04); ``network``: every network boundary;
+  ``cycle``: nothing more (run to the end of the scan, or the next breakpoint).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ..ir import nodes as ir
+from .codegen.context import PausePoint
+
+GRANULARITIES = ("statement", "network", "cycle")
+_STEP_KINDS = {"statement": ("statement", "network"), "network": ("network",), "cycle": ()}
+
+
+@dataclass(frozen=True)
+class Halt:
+    """Where a halted scan stands: the pause point, the POU instance (path, None in a function), why."""
+
+    point: PausePoint
+    instance: str | None
+    reason: str  # "breakpoint" | "step"
+
+    @property
+    def origin(self) -> ir.Origin:
+        return self.point.origin
+
+
+class Debugger:
+    def __init__(self, points: list[PausePoint], flags: list[bool]) -> None:
+        self.points = points
+        self.flags = flags  # the generated module's ll_halt, shared
+        self.breakpoints: set[int] = set()
+
+    def pause_points(self, pou: str | None = None) -> list[PausePoint]:
+        return [p for p in self.points if pou is None or p.origin.pou.upper() == pou.upper()]
+
+    def find(self, pou: str, *, line: int | None = None, network: str | None = None,
+             element: str | None = None) -> list[int]:
+        """Pause points of a breakpoint on an ST line, an LD/FBD network or an element (exactly one given)."""
+        if sum(x is not None for x in (line, network, element)) != 1:
+            raise ValueError("give exactly one of line, network, element")
+        points = self.pause_points(pou)
+        if not points:
+            known = sorted({p.origin.pou for p in self.points})
+            raise ValueError(f"no POU {pou!r} with pause points (known: {', '.join(known) or 'none'})")
+        if line is not None:
+            found = [p.id for p in points if p.kind == "statement" and p.origin.line == line]
+            what, options = f"statement at line {line}", sorted({p.origin.line for p in points if p.kind == "statement"})
+        elif network is not None:
+            found = [p.id for p in points if p.kind == "network" and p.origin.network == network]
+            what, options = f"network {network!r}", sorted({p.origin.network for p in points if p.kind == "network"})
+        else:
+            found = [p.id for p in points if p.kind == "element" and element in (p.element, p.origin.element)]
+            what, options = f"element {element!r}", sorted({p.element for p in points if p.kind == "element"})
+        if not found:
+            shown = ", ".join(map(str, options[:20])) or "none"
+            raise ValueError(f"{pou} has no {what} (possible: {shown})")
+        return found
+
+    def add_breakpoint(self, pou: str, **where) -> list[int]:
+        ids = self.find(pou, **where)
+        self.breakpoints.update(ids)
+        self.arm(None)
+        return ids
+
+    def remove_breakpoint(self, pou: str, **where) -> None:
+        self.breakpoints.difference_update(self.find(pou, **where))
+        self.arm(None)
+
+    def clear_breakpoints(self) -> None:
+        self.breakpoints.clear()
+        self.arm(None)
+
+    def arm(self, step: str | None) -> None:
+        """Arm the breakpoints, plus the pause points of a step of this granularity."""
+        if step is not None and step not in GRANULARITIES:
+            raise ValueError(f"step granularity must be one of {', '.join(GRANULARITIES)}, not {step!r}")
+        kinds = _STEP_KINDS[step] if step else ()
+        for point in self.points:
+            self.flags[point.id] = point.id in self.breakpoints or point.kind in kinds
+
+    def reason(self, pid: int) -> str:
+        return "breakpoint" if pid in self.breakpoints else "step"

@@ -1,0 +1,310 @@
+"""Variable paths of a running simulation: ``MAIN.T1.Q``, ``GVL.START`` or ``START``, ``MAIN.ARR[3]``, ``MAIN.S.F``.
+
+Names are matched case-insensitively against the IR's canonical names; the
+first segment is a program instance, else ``GVL`` (the globals), else a global.
+``resolve`` turns text into a ``Location``, which walks the live objects on
+every access (so it stays valid across a reset). Unknown names raise
+``UnknownPath`` (a KeyError) with a did-you-mean hint; malformed text and bad
+indices raise ValueError. ``snapshot`` lists every elementary variable.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import Iterator
+
+from ..ir import nodes as ir
+from ..ir import types as t
+from ..st.symbols import did_you_mean
+from . import values
+from .codegen import names
+from .codegen.context import ModuleContext, std_fb_class, std_pin_type
+from .codegen.scope import global_owner
+from .codegen.typeinfo import describe, is_composite, runtime_name
+
+GLOBALS_PREFIX = "GVL"
+_DEREF = object()  # step into a VAR_IN_OUT reference
+_TOKEN = re.compile(r"\s*(?:(?P<name>[A-Za-z_][A-Za-z0-9_]*)|(?P<int>[+-]?\d+)|(?P<punct>[.\[\],]))")
+
+
+class UnknownPath(KeyError):
+    def __str__(self) -> str:
+        return str(self.args[0])
+
+
+@dataclass(frozen=True)
+class Location:
+    """An elementary or composite variable: ``path`` in canonical form, its IR type, how to reach it."""
+
+    path: str
+    type: t.IrType
+    root: tuple[str, str]  # ("program", NAME) or ("global", G-page name)
+    keys: tuple[object, ...]
+
+    @property
+    def elementary(self) -> bool:
+        return not is_composite(self.type)
+
+    def _container(self, roots: "Roots") -> tuple[object, object]:
+        obj = roots.get(self.root)
+        keys = list(self.keys)
+        last = keys.pop()
+        for key in keys:
+            obj = obj[0][obj[1]] if key is _DEREF else obj[key]  # type: ignore[index]
+        if last is _DEREF:
+            return obj  # type: ignore[return-value]  # the reference itself is (container, key)
+        return obj, last
+
+    def get(self, roots: "Roots") -> object:
+        container, key = self._container(roots)
+        return container[key]  # type: ignore[index]
+
+    def set(self, roots: "Roots", value: object) -> None:
+        container, key = self._container(roots)
+        container[key] = value  # type: ignore[index]
+
+
+class Roots:
+    """The live objects paths start from: program instances and global pages."""
+
+    def __init__(self, programs: dict[str, object], ns: dict[str, object]) -> None:
+        self.programs = programs
+        self.ns = ns
+
+    def get(self, root: tuple[str, str]) -> object:
+        kind, name = root
+        return self.programs[name] if kind == "program" else self.ns[name]
+
+
+def tokens(text: str) -> list[tuple[str, str]]:
+    found, pos = [], 0
+    text = text.rstrip()
+    while pos < len(text):
+        match = _TOKEN.match(text, pos)
+        if not match or match.end() == pos:
+            raise ValueError(f"{text!r} is not a variable path (unexpected {text[pos:].strip()[:10]!r})")
+        kind = match.lastgroup
+        found.append((kind, match.group(kind)))  # type: ignore[arg-type]
+        pos = match.end()
+    return found
+
+
+class Resolver:
+    def __init__(self, context: ModuleContext) -> None:
+        self.context = context
+        self.programs = {n: p for n, p in context.pous.items() if p.kind == "program"}
+
+    def resolve(self, text: str) -> Location:
+        if not isinstance(text, str):
+            raise ValueError(f"a variable path must be text, not {text!r}")
+        toks = tokens(text)
+        if not toks or toks[0][0] != "name":
+            raise ValueError(f"{text!r} is not a variable path (it must start with a name)")
+        first = toks[0][1].upper()
+        rest = toks[1:]
+        if first in self.programs:
+            name, rest = self._member_name(rest, text)
+            return self._walk(text, first, ("program", first), self.context.layouts[first], name, rest)
+        if first == GLOBALS_PREFIX and rest[:1] == [("punct", ".")]:
+            name, rest = self._member_name(rest, text)
+            return self._global(text, name, rest)
+        return self._global(text, toks[0][1], rest, top=True)
+
+    def _member_name(self, rest: list, text: str) -> tuple[str, list]:
+        if len(rest) < 2 or rest[0] != ("punct", ".") or rest[1][0] != "name":
+            raise ValueError(f"{text!r}: expected '.name' after {text.split('.')[0].split('[')[0].strip()}")
+        return rest[1][1], rest[2:]
+
+    def _global(self, text: str, name: str, rest: list, top: bool = False) -> Location:
+        place = self.context.globals.get(name)  # type: ignore[union-attr]
+        if place is None:
+            candidates = [p.slot.name for p in self.context.globals.places.values() if not p.slot.hidden]  # type: ignore[union-attr]
+            if top:
+                candidates += list(self.programs)
+                raise UnknownPath(f"unknown variable or program {name!r}{did_you_mean(name, candidates)}")
+            raise UnknownPath(f"unknown global variable {name!r}{did_you_mean(name, candidates)}")
+        root = ("global", global_owner(place.page))
+        return self._steps(text, place.slot.name, root, (place.attr,), place.slot, rest)
+
+    def _walk(self, text, prefix, root, layout, name, rest) -> Location:
+        place = layout.get(name)
+        if place is None:
+            raise UnknownPath(f"{prefix} has no variable {name!r}{did_you_mean(name, _visible(layout))}")
+        keys = (place.attr,) if place.page == 0 else (f"ll_p{place.page}", place.attr)
+        return self._steps(text, f"{prefix}.{place.slot.name}", root, keys, place.slot, rest)
+
+    def _steps(self, text, path, root, keys, slot: ir.Slot, rest) -> Location:
+        ty = slot.type
+        if slot.var_class == "VAR_IN_OUT":
+            keys = (*keys, _DEREF)
+        while rest:
+            kind, value = rest[0]
+            if (kind, value) == ("punct", "."):
+                member, rest = self._member_name(rest, text)
+                path, ty, keys = self._member(path, ty, keys, member)
+            elif (kind, value) == ("punct", "["):
+                indices, rest = self._indices(rest[1:], text)
+                path, ty, keys = self._index(path, ty, keys, indices)
+            else:
+                raise ValueError(f"{text!r} is not a variable path (unexpected {value!r})")
+        return Location(path, ty, root, keys)
+
+    def _indices(self, rest: list, text: str) -> tuple[list[int], list]:
+        indices = []
+        while True:
+            if not rest or rest[0][0] != "int":
+                raise ValueError(f"{text!r}: array indices must be integers")
+            indices.append(int(rest[0][1]))
+            if rest[1:2] == [("punct", ",")]:
+                rest = rest[2:]
+            elif rest[1:2] == [("punct", "]")]:
+                return indices, rest[2:]
+            else:
+                raise ValueError(f"{text!r}: expected ',' or ']' after an index")
+
+    def _member(self, path, ty, keys, member):
+        if isinstance(ty, t.FbInstance):
+            user = self.context.user_fb(ty.fb)
+            if user is not None:
+                layout = self.context.layouts[user.name.upper()]
+                inner = layout.get(member)
+                if inner is None:
+                    raise UnknownPath(f"{path} ({ty.fb}) has no variable {member!r}{did_you_mean(member, _visible(layout))}")
+                step = (inner.attr,) if inner.page == 0 else (f"ll_p{inner.page}", inner.attr)
+                deref = (_DEREF,) if inner.slot.var_class == "VAR_IN_OUT" else ()
+                return f"{path}.{inner.slot.name}", inner.slot.type, (*keys, *step, *deref)
+            pin_type = std_pin_type(ty.fb, member)
+            if pin_type is None:
+                pins = [*std_fb_class(ty.fb).INPUTS, *std_fb_class(ty.fb).OUTPUTS]  # type: ignore[union-attr]
+                raise UnknownPath(f"{path} ({ty.fb}) has no pin {member!r}{did_you_mean(member, pins)}")
+            return f"{path}.{member.upper()}", pin_type, (*keys, member.upper())
+        if isinstance(ty, t.Struct):
+            for f in ty.fields:
+                if f.name.upper() == member.upper():
+                    return f"{path}.{f.name}", f.type, (*keys, names.slot(f.name))
+            fields = [f.name for f in ty.fields]
+            raise UnknownPath(f"{path} ({ty.name}) has no field {member!r}{did_you_mean(member, fields)}")
+        raise ValueError(f"{path} is {_a(ty)}: it has no member {member!r}")
+
+    def _index(self, path, ty, keys, indices):
+        if not isinstance(ty, t.Array):
+            raise ValueError(f"{path} is {_a(ty)}: it cannot be indexed")
+        if len(indices) > len(ty.dims):
+            raise ValueError(f"{path} has {len(ty.dims)} dimension(s), not {len(indices)}")
+        for index, (lo, hi) in zip(indices, ty.dims):
+            if not lo <= index <= hi:
+                raise ValueError(f"index {index} of {path} is outside {lo}..{hi}")
+            keys = (*keys, index - lo)
+        rest = ty.dims[len(indices):]
+        return f"{path}[{', '.join(map(str, indices))}]", (t.Array(ty.element, rest) if rest else ty.element), keys
+
+
+def _visible(layout) -> list[str]:
+    return [p.slot.name for p in layout.places.values() if not p.slot.hidden]
+
+
+def _a(ty: t.IrType) -> str:
+    return values.article(describe(ty))
+
+
+def coerce_for(location: Location, value: object) -> object:
+    """A user value (Python or IEC literal text) for an elementary location; ValueError naming the path."""
+    ty = location.type
+    if not location.elementary:
+        raise ValueError(f"{location.path} is {_a(ty)}: write its elements one by one")
+    try:
+        if isinstance(ty, t.Enum):
+            return _enum_value(ty, value)
+        coerced = values.coerce(value, runtime_name(ty))  # type: ignore[arg-type]
+        if isinstance(ty, t.Subrange) and not ty.low <= coerced <= ty.high:  # type: ignore[operator]
+            raise ValueError(f"{coerced} is outside the subrange {ty.low}..{ty.high}")
+        return coerced
+    except ValueError as error:
+        raise ValueError(f"{location.path}: {error}") from None
+
+
+def _enum_value(ty: t.Enum, value: object) -> int:
+    if isinstance(value, str):
+        text = value.strip().upper()
+        if "#" in text:
+            prefix, text = text.split("#", 1)
+            if prefix != ty.name.upper():
+                raise ValueError(f"{value!r} is not a value of {ty.name}")
+        for name, number in ty.values:
+            if name.upper() == text:
+                return number
+    elif isinstance(value, int) and not isinstance(value, bool) and value in {n for _, n in ty.values}:
+        return value
+    raise ValueError(f"{value!r} is not a value of {ty.name} ({', '.join(n for n, _ in ty.values)})")
+
+
+def leaves(context: ModuleContext, roots: Roots) -> Iterator[tuple[str, object]]:
+    """Every elementary variable (hidden slots and VAR_IN_OUT references left out) with its value."""
+    for name in context.pous:
+        if context.pous[name].kind == "program" and name in roots.programs:
+            yield from _instance_leaves(context, name, context.layouts[name], roots.programs[name])
+    for place in context.globals.places.values():  # type: ignore[union-attr]
+        if not place.slot.hidden:
+            obj = roots.ns[global_owner(place.page)]
+            yield from _value_leaves(context, place.slot.name, place.slot.type, getattr(obj, place.attr))
+
+
+def _instance_leaves(context, path, layout, obj) -> Iterator[tuple[str, object]]:
+    for place in layout.places.values():
+        if place.slot.hidden or place.slot.var_class == "VAR_IN_OUT":
+            continue
+        owner = obj if place.page == 0 else getattr(obj, f"ll_p{place.page}")
+        yield from _value_leaves(context, f"{path}.{place.slot.name}", place.slot.type, getattr(owner, place.attr))
+
+
+def _value_leaves(context, path, ty, value) -> Iterator[tuple[str, object]]:
+    if isinstance(ty, t.Array):
+        yield from _array_leaves(context, path, ty, value, [])
+    elif isinstance(ty, t.Struct):
+        for f in ty.fields:
+            yield from _value_leaves(context, f"{path}.{f.name}", f.type, getattr(value, names.slot(f.name)))
+    elif isinstance(ty, t.FbInstance):
+        user = context.user_fb(ty.fb)
+        if user is not None:
+            yield from _instance_leaves(context, path, context.layouts[user.name.upper()], value)
+        else:
+            cls = std_fb_class(ty.fb)
+            for pin in (*cls.INPUTS, *cls.OUTPUTS, *cls.MEMORY):  # type: ignore[union-attr]
+                yield f"{path}.{pin}", getattr(value, pin)
+    else:
+        yield path, value
+
+
+def _array_leaves(context, path, ty: t.Array, value, prefix: list[int]) -> Iterator[tuple[str, object]]:
+    depth = len(prefix)
+    lo, hi = ty.dims[depth]
+    for offset, item in enumerate(value):
+        indices = [*prefix, lo + offset]
+        if depth + 1 < len(ty.dims):
+            yield from _array_leaves(context, path, ty, item, indices)
+        else:
+            yield from _value_leaves(context, f"{path}[{', '.join(map(str, indices))}]", ty.element, item)
+
+
+def plain(context: ModuleContext, ty: t.IrType, value: object) -> object:
+    """A value as plain data: arrays as (nested) lists, structures and FB instances as dicts."""
+    if isinstance(ty, t.Array):
+        inner = t.Array(ty.element, ty.dims[1:]) if len(ty.dims) > 1 else ty.element
+        return [plain(context, inner, item) for item in value]  # type: ignore[attr-defined]
+    if isinstance(ty, t.Struct):
+        return {f.name: plain(context, f.type, getattr(value, names.slot(f.name))) for f in ty.fields}
+    if isinstance(ty, t.FbInstance):
+        user = context.user_fb(ty.fb)
+        if user is None:
+            cls = std_fb_class(ty.fb)
+            return {pin: getattr(value, pin) for pin in (*cls.INPUTS, *cls.OUTPUTS, *cls.MEMORY)}  # type: ignore[union-attr]
+        layout = context.layouts[user.name.upper()]
+        result = {}
+        for place in layout.places.values():
+            if place.slot.hidden or place.slot.var_class == "VAR_IN_OUT":
+                continue
+            owner = value if place.page == 0 else getattr(value, f"ll_p{place.page}")
+            result[place.slot.name] = plain(context, place.slot.type, getattr(owner, place.attr))
+        return result
+    return value

@@ -1,0 +1,411 @@
+"""The scan engine as one synchronous object: run scans on the virtual clock, read, write, force, debug.
+
+    sim = Simulation(program)                    # an ir.Program (or a CompiledProgram)
+    sim.cycle(3); sim.read("MAIN.T1.ET"); sim.write("MAIN.START", True); sim.force("GVL.LAMP", "TRUE")
+    sim.run_for(1000); sim.scan_at(12.5); sim.snapshot(); sim.reset(cold=True); sim.fault
+
+A scan applies pending writes, then forces, runs every task due (docs: tasks.py),
+applies forces again and records its wall time. A fault (PlcRuntimeError,
+watchdog, or any unexpected exception in generated code) stops its task until
+``reset`` and is kept in ``faults``; the caller's process never sees it.
+
+Debug variant (``variant="debug"``): the scan is a generator that yields at
+armed pause points. ``cycle()`` then returns early with ``halted`` set; while
+halted ``read``/``write``/``force`` act at once, and ``resume()`` / ``step()``
+continue the same scan and return the next ``Halt`` (None when the scan ended).
+Everything happens in the caller's thread: a server drives one Simulation from
+one thread (see docs/runtime.md).
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+from typing import Callable, Iterator
+
+from ..ir import nodes as ir
+from ..ir import types as t
+from .codegen import names
+from .codegen.faults import Fault, make_fault
+from .codegen.runtime import Watchdog
+from .compile import CompiledProgram, compile_program
+from .debug import Debugger, Halt
+from .paths import Location, Resolver, Roots, coerce_for, leaves, plain
+from .tasks import Schedule, Task, task_table
+
+
+@dataclass
+class ScanStats:
+    """Wall time of the scans run so far (halted time excluded), in milliseconds."""
+
+    count: int = 0
+    total_ms: float = 0.0
+    min_ms: float = 0.0
+    max_ms: float = 0.0
+    last_ms: float = 0.0
+
+    @property
+    def avg_ms(self) -> float:
+        return self.total_ms / self.count if self.count else 0.0
+
+    def add(self, ms: float) -> None:
+        self.min_ms = ms if not self.count else min(self.min_ms, ms)
+        self.max_ms = max(self.max_ms, ms)
+        self.count += 1
+        self.total_ms += ms
+        self.last_ms = ms
+
+
+@dataclass(frozen=True)
+class ProbeView:
+    """Monitoring values of one POU instance: last value of every probed element, and which ran in the last scan."""
+
+    values: dict[str, object]
+    executed: frozenset[str]
+
+
+@dataclass
+class _Probes:
+    last: dict[str, dict[str, object]] = field(default_factory=dict)
+    current: dict[str, dict[str, object]] = field(default_factory=dict)
+
+
+class Simulation:
+    def __init__(self, program: ir.Program | CompiledProgram, *, variant: str | None = None,
+                 watchdog_s: float | dict[str, float] = 1.0, wall_clock: Callable[[], float] = time.perf_counter) -> None:
+        if isinstance(program, CompiledProgram):
+            if variant is not None and variant != program.variant:
+                raise ValueError(f"the program was compiled as the {program.variant} variant, not {variant}")
+            compiled = program
+        else:
+            compiled = compile_program(program, variant or "fast")
+        self.compiled = compiled
+        self.variant = compiled.variant
+        self._context = compiled.generated.context
+        self._ns = compiled.namespace()
+        self._clock = wall_clock
+        self._watchdog = Watchdog(wall_clock)
+        self._ns["ll_wd"] = self._watchdog.check
+        self._tasks: list[Task] = task_table(compiled.program, watchdog_s)
+        self._schedule = Schedule(self._tasks)
+        self._resolver = Resolver(self._context)
+        self.programs: dict[str, object] = {}
+        self._roots = Roots(self.programs, self._ns)
+        self.debugger = Debugger(compiled.generated.pauses, self._ns["ll_halt"]) if self.variant == "debug" else None  # type: ignore[arg-type]
+        self._writes: list[tuple[Location, object]] = []
+        self._forces: dict[str, tuple[Location, object]] = {}
+        self.faults: list[Fault] = []
+        self.stats = ScanStats()
+        self.scan_count = 0
+        self.halted: Halt | None = None
+        self._scan: Iterator | None = None
+        self._busy = 0.0
+        self._watchdog_left = 0.0
+        self._paths: dict[int, str] | None = None
+        self._objects: dict[int, object] = {}
+        self._probes = _Probes()
+        self._initialise(warm=False)
+
+    # ------------------------------------------------------------------ state
+
+    def _initialise(self, warm: bool) -> None:
+        self._ns["ll_init_globals"](warm)
+        for key, pou in self._context.pous.items():
+            if pou.kind != "program":
+                continue
+            if key in self.programs:
+                self.programs[key].ll_init(warm)  # type: ignore[attr-defined]
+            else:
+                self.programs[key] = self._ns[names.pou_class(pou.name)]()  # type: ignore[operator]
+        self._paths = None
+
+    @property
+    def time_ms(self) -> float:
+        """Virtual time of the last scan (0 before the first)."""
+        return self._schedule.time_ms
+
+    def next_scan_time(self) -> float:
+        return self._schedule.next_time()
+
+    @property
+    def fault(self) -> Fault | None:
+        """The most recent fault since the last reset."""
+        return self.faults[-1] if self.faults else None
+
+    @property
+    def tasks(self) -> list[Task]:
+        return list(self._tasks)
+
+    def reset(self, cold: bool = False) -> None:
+        """Warm (RETAIN variables keep their values) or cold restart; clears faults, ends a halted scan."""
+        if self._scan is not None:
+            self._scan.close()  # type: ignore[attr-defined]
+        self._scan, self.halted = None, None
+        if self.debugger is not None:
+            self.debugger.arm(None)
+        self.faults.clear()
+        for task in self._tasks:
+            task.stopped = False
+        self._initialise(warm=not cold)
+
+    # ------------------------------------------------------------------ running
+
+    def cycle(self, n: int = 1) -> int:
+        """Run ``n`` scans of the task configuration; returns how many completed (fewer when one halts)."""
+        self._not_halted()
+        for done in range(n):
+            now, due = self._schedule.advance()
+            if not self._scan_now(now, due):
+                return done
+        return n
+
+    def run_for(self, ms: float) -> int:
+        """Run every scan due within the next ``ms`` of virtual time; returns how many completed."""
+        self._not_halted()
+        end, done = self.time_ms + ms, 0
+        while self._schedule.next_time() <= end:
+            now, due = self._schedule.advance()
+            if not self._scan_now(now, due):
+                break
+            done += 1
+        return done
+
+    def scan_at(self, time_ms: float) -> bool:
+        """One scan of every task at the absolute virtual time ``time_ms`` (not before the current time).
+
+        Returns False when the scan halted (debug variant)."""
+        self._not_halted()
+        return self._scan_now(time_ms, self._schedule.at(time_ms))
+
+    def _not_halted(self) -> None:
+        if self.halted is not None:
+            raise RuntimeError("the simulation is halted: resume(), step() or reset() first")
+
+    def _scan_now(self, now: float, due: list[Task]) -> bool:
+        self._apply_writes()
+        self._apply_forces()
+        self._ns["ll_now"] = now
+        if self.debugger is None:
+            start = self._clock()
+            for task in due:
+                if not task.stopped:
+                    self._watchdog.arm(task.watchdog_s)
+                    try:
+                        for name in task.programs:
+                            self.programs[name].execute(now)  # type: ignore[attr-defined]
+                    except Exception as error:  # noqa: BLE001 - any failure of generated code is a fault
+                        self._fault(task, error, now)
+            self._finish((self._clock() - start) * 1000.0)
+            return True
+        self._start_probes()
+        self._scan, self._busy = self._debug_scan(now, due), 0.0
+        return self._drive()
+
+    def _debug_scan(self, now: float, due: list[Task]) -> Iterator:
+        for task in due:
+            if task.stopped:
+                continue
+            self._watchdog.arm(task.watchdog_s)
+            try:
+                for name in task.programs:
+                    yield from self.programs[name].execute(now)  # type: ignore[attr-defined]
+            except Exception as error:  # noqa: BLE001
+                self._fault(task, error, now)
+
+    def _drive(self) -> bool:
+        start = self._clock()
+        try:
+            pid, instance = next(self._scan)  # type: ignore[arg-type]
+        except StopIteration:
+            self._busy += self._clock() - start
+            self._scan = None
+            self.debugger.arm(None)  # type: ignore[union-attr]
+            self._finish(self._busy * 1000.0)
+            return True
+        self._busy += self._clock() - start
+        self._watchdog_left = self._watchdog.pause()
+        point = self.compiled.generated.pauses[pid]
+        self.halted = Halt(point, self._instance_path(instance) if instance is not None else None,
+                           self.debugger.reason(pid))  # type: ignore[union-attr]
+        self.debugger.arm(None)  # type: ignore[union-attr]
+        return False
+
+    def _finish(self, elapsed_ms: float) -> None:
+        self._apply_forces()
+        self.stats.add(elapsed_ms)
+        self.scan_count += 1
+        if self.debugger is not None:
+            for key, current in self._probes.current.items():
+                self._probes.last.setdefault(key, {}).update(current)
+
+    def _fault(self, task: Task, error: Exception, now: float) -> None:
+        task.stopped = True
+        self.faults.append(make_fault(error, self.compiled.generated, self.compiled.filename, self._ns, task=task.name,
+                                      time_ms=now, scan=self.scan_count, instance_path=self._instance_path))
+
+    # ------------------------------------------------------------------ debugging
+
+    def _debugging(self) -> Debugger:
+        if self.debugger is None:
+            raise RuntimeError("breakpoints and stepping need a simulation built with variant='debug'")
+        return self.debugger
+
+    def resume(self) -> Halt | None:
+        """Continue a halted scan to its end or the next breakpoint; returns the new halt (None: scan ended)."""
+        self._debugging()
+        if self.halted is None:
+            raise RuntimeError("the simulation is not halted")
+        return self._continue(None)
+
+    def step(self, granularity: str = "statement") -> Halt | None:
+        """Run to the next pause point of this granularity (statement | network | cycle).
+
+        Halted: continue the current scan. Not halted: start the next scan and
+        stop at its first such point. Returns the new halt (None: the scan ended)."""
+        debugger = self._debugging()
+        debugger.arm(granularity)
+        if self.halted is None:
+            self.cycle(1)
+            return self.halted
+        return self._continue(granularity)
+
+    def _continue(self, granularity: str | None) -> Halt | None:
+        self.debugger.arm(granularity)  # type: ignore[union-attr]
+        self.halted = None
+        self._watchdog.resume(self._watchdog_left)
+        self._drive()
+        return self.halted
+
+    def set_breakpoint(self, pou: str, *, line: int | None = None, network: str | None = None,
+                       element: str | None = None) -> list[int]:
+        """Halt before an ST statement (line), an LD/FBD network, or at an element; returns the pause point ids."""
+        return self._debugging().add_breakpoint(pou, line=line, network=network, element=element)
+
+    def clear_breakpoint(self, pou: str, *, line: int | None = None, network: str | None = None,
+                         element: str | None = None) -> None:
+        self._debugging().remove_breakpoint(pou, line=line, network=network, element=element)
+
+    def clear_breakpoints(self) -> None:
+        self._debugging().clear_breakpoints()
+
+    # ------------------------------------------------------------------ probes
+
+    def _probe_sinks(self) -> Iterator[tuple[str, object | None, str | None]]:
+        """(key, instance, function probe global) for every probe dictionary."""
+        for obj_id, path in self._instance_paths().items():
+            yield path, self._objects[obj_id], None
+        for name, pou in self._context.pous.items():
+            if pou.kind == "function":
+                yield name, None, f"{names.function(pou.name)}_probes"
+
+    def _start_probes(self) -> None:
+        current = {}
+        for key, obj, global_name in self._probe_sinks():
+            fresh: dict[str, object] = {}
+            if obj is not None:
+                obj.ll_probes = fresh  # type: ignore[attr-defined]
+            else:
+                self._ns[global_name] = fresh  # type: ignore[index]
+            current[key] = fresh
+        self._probes.current = current
+
+    def probes(self, instance: str) -> ProbeView:
+        """Probe values of a POU instance (``MAIN``, ``MAIN.FB1``) or a FUNCTION (by name): debug variant only."""
+        self._debugging()
+        key = instance.strip().upper()
+        known = {k.upper(): k for k in self._probes.current} | {k.upper(): k for k in self._probes.last}
+        if key not in known:
+            sinks = [k for k, _, _ in self._probe_sinks()]
+            if key not in {k.upper() for k in sinks}:
+                from ..st.symbols import did_you_mean
+
+                raise KeyError(f"no POU instance {instance!r}{did_you_mean(instance, sinks)}")
+            return ProbeView({}, frozenset())
+        name = known[key]
+        return ProbeView(dict(self._probes.last.get(name, {})), frozenset(self._probes.current.get(name, {})))
+
+    # ------------------------------------------------------------------ instances
+
+    def _instance_paths(self) -> dict[int, str]:
+        """id(user POU instance) -> path (``MAIN``, ``MAIN.FB1``, ``MAIN.ARR[2]``, ``GFB``), cached until reset."""
+        if self._paths is None:
+            self._paths, self._objects = {}, {}
+            for key, obj in self.programs.items():
+                self._add_instance(key, obj, self._context.layouts[key])
+            for place in self._context.globals.places.values():  # type: ignore[union-attr]
+                value = getattr(self._roots.get(("global", "G" if not place.page else f"G{place.page}")), place.attr)
+                self._add_values(place.slot.name, place.slot.type, value)
+        return self._paths
+
+    def _add_instance(self, path: str, obj: object, layout) -> None:
+        self._paths[id(obj)] = path  # type: ignore[index]
+        self._objects[id(obj)] = obj
+        for place in layout.places.values():
+            if place.slot.var_class == "VAR_IN_OUT":
+                continue
+            owner = obj if place.page == 0 else getattr(obj, f"ll_p{place.page}")
+            self._add_values(f"{path}.{place.slot.name}", place.slot.type, getattr(owner, place.attr))
+
+    def _add_values(self, path: str, ty: t.IrType, value: object) -> None:
+        if isinstance(ty, t.FbInstance) and self._context.user_fb(ty.fb) is not None:
+            self._add_instance(path, value, self._context.layouts[ty.fb.upper()])
+        elif isinstance(ty, t.Array) and isinstance(ty.element, (t.FbInstance, t.Array, t.Struct)):
+            lo = ty.dims[0][0]
+            inner = t.Array(ty.element, ty.dims[1:]) if len(ty.dims) > 1 else ty.element
+            for offset, item in enumerate(value):  # type: ignore[arg-type]
+                self._add_values(f"{path}[{lo + offset}]", inner, item)
+        elif isinstance(ty, t.Struct):
+            for f in ty.fields:
+                self._add_values(f"{path}.{f.name}", f.type, getattr(value, names.slot(f.name)))
+
+    def _instance_path(self, obj: object) -> str | None:
+        return self._instance_paths().get(id(obj))
+
+    # ------------------------------------------------------------------ variables
+
+    def location(self, path: str) -> Location:
+        return self._resolver.resolve(path)
+
+    def read(self, path: str) -> object:
+        """Current value (arrays as lists, structures and FB instances as dicts)."""
+        location = self._resolver.resolve(path)
+        return plain(self._context, location.type, location.get(self._roots))
+
+    def write(self, path: str, value: object) -> None:
+        """Write once, before the next scan (at once while halted); the program may overwrite it."""
+        location = self._resolver.resolve(path)
+        coerced = coerce_for(location, value)
+        if self.halted is not None:
+            location.set(self._roots, coerced)
+        else:
+            self._writes.append((location, coerced))
+
+    def force(self, path: str, value: object) -> None:
+        """Hold a variable at ``value``: set now and before and after every scan, until ``unforce``."""
+        location = self._resolver.resolve(path)
+        coerced = coerce_for(location, value)
+        self._forces[location.path] = (location, coerced)
+        location.set(self._roots, coerced)
+
+    def unforce(self, path: str) -> None:
+        self._forces.pop(self._resolver.resolve(path).path, None)
+
+    def unforce_all(self) -> None:
+        self._forces.clear()
+
+    @property
+    def forced(self) -> dict[str, object]:
+        return {path: value for path, (_, value) in self._forces.items()}
+
+    def _apply_writes(self) -> None:
+        writes, self._writes = self._writes, []
+        for location, value in writes:
+            location.set(self._roots, value)
+
+    def _apply_forces(self) -> None:
+        for location, value in self._forces.values():
+            location.set(self._roots, value)
+
+    def snapshot(self) -> dict[str, object]:
+        """Every elementary variable of every program instance and every global: path -> value."""
+        return dict(leaves(self._context, self._roots))

@@ -1,0 +1,93 @@
+"""Scan-engine benchmark: build time and microseconds per scan of a 10,000-network LD-style program.
+
+The program is IR built directly, the way the LD lowering emits a rung: every
+contact's power flow into a hidden BOOL slot, a coil reading the last one,
+probes per element (dropped by the fast variant); every fourth network also
+has a TON, a CTU fed by the timer, an ADD and a compare. Targets (issue 4):
+<= 5 ms per scan and <= 3 s build (IR -> runnable) on the 2-core dev machine.
+Prints one line per figure.
+"""
+
+from __future__ import annotations
+
+import pathlib
+import statistics
+import sys
+import time
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+sys.path[:0] = [str(ROOT / "backend"), str(ROOT)]
+
+from ladderlab.engine.compile import compile_program  # noqa: E402
+from ladderlab.engine.simulation import Simulation  # noqa: E402
+from ladderlab.ir import nodes as ir  # noqa: E402
+from ladderlab.ir import types as t  # noqa: E402
+
+BOOL, INT, TIME = t.Elementary("BOOL"), t.Elementary("INT"), t.Elementary("TIME")
+
+
+def _var(name: str, ty: t.IrType, *path: ir.Member) -> ir.Var:
+    return ir.Var("local", name, ty, tuple(path))
+
+
+def ld_program(networks: int) -> ir.Program:
+    slots: list[ir.Slot] = []
+    blocks: list[ir.Block] = []
+    for n in range(networks):
+        net = f"N{n}"
+
+        def at(element: str, net: str = net) -> ir.Origin:
+            return ir.Origin("MAIN", network=net, element=element)
+
+        a, b, coil, h1, h2 = (f"A{n}", f"B{n}", f"C{n}", f"E{n}_1", f"E{n}_2")
+        slots += [ir.Slot(a, "VAR", BOOL), ir.Slot(b, "VAR", BOOL, n % 3 == 0), ir.Slot(coil, "VAR", BOOL),
+                  ir.Slot(h1, "VAR", BOOL, hidden=True), ir.Slot(h2, "VAR", BOOL, hidden=True)]
+        va, vb, vc, v1, v2 = (_var(x, BOOL) for x in (a, b, coil, h1, h2))
+        statements: list[ir.Stmt] = [
+            ir.Assign(v1, va, at("E1")), ir.Probe("E1", v1, at("E1")),
+            ir.Assign(v2, ir.Binary("AND", v1, ir.Unary("NOT", vb, BOOL), BOOL), at("E2")), ir.Probe("E2", v2, at("E2")),
+            ir.Assign(vc, v2, at("E3")), ir.Probe("E3", v2, at("E3")),
+        ]
+        if n % 4 == 0:
+            ton, ctu, x, y = f"T{n}", f"CNT{n}", f"X{n}", f"Y{n}"
+            slots += [ir.Slot(ton, "VAR", t.FbInstance("TON")), ir.Slot(ctu, "VAR", t.FbInstance("CTU")),
+                      ir.Slot(x, "VAR", INT), ir.Slot(y, "VAR", BOOL)]
+            vx = _var(x, INT)
+            statements += [
+                ir.FbCall(_var(ton, t.FbInstance("TON")), [("IN", vc), ("PT", ir.Const(100, TIME))], [], at("E4")),
+                ir.FbCall(_var(ctu, t.FbInstance("CTU")),
+                          [("CU", _var(ton, BOOL, ir.Member("Q"))), ("PV", ir.Const(5, INT))], [], at("E5")),
+                ir.Assign(vx, ir.Binary("ADD", vx, ir.Const(1, INT), INT), at("E6")),
+                ir.Assign(_var(y, BOOL), ir.Binary("GT", vx, ir.Const(100, INT), BOOL), at("E7")),
+            ]
+        blocks.append(ir.Block(statements, ir.Origin("MAIN", network=net)))
+    main = ir.Pou("MAIN", "program", slots, blocks, language="ld")
+    return ir.Program({"MAIN": main}, [], [ir.TaskSpec("CYCLIC", 10, 0, ["MAIN"])])
+
+
+def main() -> None:
+    networks = 10_000
+    program = ld_program(networks)
+    start = time.perf_counter()
+    compiled = compile_program(program, "fast")
+    sim = Simulation(compiled)
+    build = time.perf_counter() - start
+    print(f"build {networks} LD networks (IR -> runnable, fast variant): {build:.2f} s (target <= 3 s)")
+    sim.cycle(20)  # warm up the interpreter's specialisation
+    samples = []
+    for _ in range(15):
+        before = time.perf_counter()
+        sim.cycle(10)
+        samples.append((time.perf_counter() - before) / 10 * 1e6)
+    print(f"scan {networks} LD networks, fast variant: {statistics.median(samples):.0f} us per scan (target <= 5000 us)")
+    start = time.perf_counter()
+    debug = Simulation(program, variant="debug")
+    print(f"build {networks} LD networks, debug variant: {time.perf_counter() - start:.2f} s")
+    debug.cycle(5)
+    before = time.perf_counter()
+    debug.cycle(20)
+    print(f"scan {networks} LD networks, debug variant (probes on): {(time.perf_counter() - before) / 20 * 1e6:.0f} us per scan")
+
+
+if __name__ == "__main__":
+    main()
