@@ -1,7 +1,7 @@
 // Test data shared by the LD tests: the motor example's Main body, the standard blocks it uses as
 // the library would list them, and small builders for hand-written rungs.
 import main from "../../../examples/motor/pous/Main.ld.json";
-import type { LibraryEntry } from "../api/types";
+import type { LibraryEntry } from "../generated/api";
 import type { LdBody, LdElement, LdNetwork } from "./model";
 
 export const motorMain = main.body as LdBody;

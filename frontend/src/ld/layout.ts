@@ -3,7 +3,7 @@
 // is laid out left to right with a wire gap around each element, a parallel stacks its branches
 // between two vertical links, a box grows with its pins and the series feeding them. In each rung
 // the trailing coils (and jump/return) sit against the right rail, as in CODESYS.
-import type { LibraryEntry } from "../api/types";
+import type { LibraryEntry } from "../generated/api";
 import {
   elementsOf,
   type Box,

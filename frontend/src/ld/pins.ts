@@ -2,7 +2,7 @@
 // them, else its first BOOL input and first BOOL output (a BOOL function's result), as the LD
 // lowering feeds it (issue 5). Pins come from the library entry; pins the model connects but the
 // library does not list (extensible inputs IN3, IN4, ... or an unknown block) follow in model order.
-import type { LibraryEntry, Pin } from "../api/types";
+import type { LibraryEntry, Pin } from "../generated/api";
 import { boxInputs, boxOutputs, type Box, type Series } from "./model";
 
 /** Name of a function's result pin, as in the FBD model (ir/fbd_order.py SIMPLE_OUT). */

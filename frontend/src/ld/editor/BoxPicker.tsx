@@ -1,7 +1,7 @@
 // The box picker: a searchable list of every standard and user function and function block
 // (from /api/library), with the EN/ENO choice.
 import { useMemo, useState } from "react";
-import type { LibraryEntry } from "../../api/types";
+import type { LibraryEntry } from "../../generated/api";
 
 export interface BoxPickerProps {
   library: readonly LibraryEntry[];

@@ -1,7 +1,7 @@
 import { fireEvent, render, screen, within } from "@testing-library/react";
 import { useState } from "react";
 import { describe, expect, it, vi } from "vitest";
-import type { SymbolInfo } from "../../api/types";
+import type { SymbolInfo } from "../../generated/api";
 import { bodyOf, c, LIBRARY, motorMain, net, q } from "../fixtures";
 import { historyOf, type History } from "../history";
 import { locate, networksOf, type LdBody, type LdElement } from "../model";

@@ -3,7 +3,7 @@
 // picker, drag to move, copy/paste through the system clipboard, and undo/redo. The undo history
 // is owned by the caller (one per open POU), so it survives switching tabs.
 import { useCallback, useEffect, useMemo, useRef, useState, type ClipboardEvent, type KeyboardEvent, type MouseEvent } from "react";
-import type { Diagnostic, LibraryEntry, SymbolInfo } from "../../api/types";
+import type { Diagnostic, LibraryEntry, SymbolInfo } from "../../generated/api";
 import { parseClip, serializeClip, type Clip } from "../clipboard";
 import { canRedo, canUndo, record, redo, undo, type History } from "../history";
 import { layoutBody } from "../layout";

@@ -1,6 +1,6 @@
 // The "declare variable" offer: is an operand an undeclared plain name, and which type to propose
 // (BOOL for contacts and coils, the pin's type for box pins, the block for an instance).
-import type { LibraryEntry, SymbolInfo } from "../../api/types";
+import type { LibraryEntry, SymbolInfo } from "../../generated/api";
 import { locate, type LdBody } from "../model";
 import type { OperandField } from "../ops";
 import { RESULT_PIN } from "../pins";

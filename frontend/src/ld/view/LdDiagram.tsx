@@ -2,7 +2,7 @@
 // and only those intersecting the viewport (plus a margin) are rendered, so a 1,000-network POU
 // opens and scrolls as fast as a small one.
 import { useEffect, useLayoutEffect, useMemo, useRef, useState, type ReactNode } from "react";
-import type { Diagnostic } from "../../api/types";
+import type { Diagnostic } from "../../generated/api";
 import type { LdLayout, NetworkLayout } from "../layout";
 import { locate, networkOfSeries, type LdBody } from "../model";
 import { NetworkView } from "./NetworkView";

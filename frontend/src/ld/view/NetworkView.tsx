@@ -2,7 +2,7 @@
 // slots and diagnostic markers. Memoised: the diagram re-renders only networks whose layout,
 // selection, diagnostics or online state changed.
 import { memo, type MouseEvent } from "react";
-import type { Diagnostic } from "../../api/types";
+import type { Diagnostic } from "../../generated/api";
 import type { LaidWire, NetworkLayout, PlacedElement } from "../layout";
 import { sameSeries, type Place } from "../model";
 import { SHAPES, fit } from "./shapes";

@@ -1,6 +1,6 @@
 // What the diagram view shows besides the model: the selection, diagnostics and online state.
 import type { MouseEvent } from "react";
-import type { Diagnostic } from "../../api/types";
+import type { Diagnostic } from "../../generated/api";
 import type { Place } from "../model";
 import type { OperandField } from "../ops";
 
