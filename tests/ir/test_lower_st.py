@@ -156,6 +156,15 @@ def test_function_result_slot_and_assignment_st22():
                                     at(3, 1, 3, 16, "HALF"))]
 
 
+def test_bit_assignment_of_an_integer_goes_through_its_bit_string():
+    (statement,) = program_body("d : DINT; b : BOOL;", "d.31 := b;")
+    bits = ir.Call("DINT_TO_DWORD", (D,), (DINT,), Elementary("DWORD"))
+    dword = Elementary("DWORD")
+    updated = ir.Call("SEL", (B, ir.Binary("AND", bits, const(0x7FFFFFFF, dword), dword),
+                              ir.Binary("OR", bits, const(0x80000000, dword), dword)), (BOOL, dword, dword), dword)
+    assert statement == ir.Assign(D, ir.Call("DWORD_TO_DINT", (updated,), (dword,), DINT), at(3, 1, 3, 10))
+
+
 def test_bit_assignment_st20():
     (statement,) = program_body("w : WORD; b : BOOL;", "w.2 := b;")
     w = local("W", WORD)

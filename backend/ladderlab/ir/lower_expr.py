@@ -187,21 +187,27 @@ def _index(node: ast.Index, ctx: PouContext) -> Var:
     return Var(base.scope, base.name, base.type.element, (*base.path, Index(indices)))  # type: ignore[union-attr]
 
 
-def bit_mask(node: ast.Member, ctx: PouContext) -> tuple[Var, Const]:
-    """``x.3`` -> (the variable x, the constant with bit 3 set in x's type)."""
+_BITS_OF_WIDTH = {8: "BYTE", 16: "WORD", 32: "DWORD", 64: "LWORD"}
+
+
+def bit_access(node: ast.Member, ctx: PouContext) -> tuple[Var, Expr, Const]:
+    """``x.3`` -> (x, x as a bit string, the bit string with bit 3 set); integers go through ``INT_TO_WORD``..."""
     var = lower_access(node.base, ctx)
     ty = value_type(var.type)
     if not isinstance(ty, Elementary) or not ty.info.bits or int(node.name) >= ty.info.bits:
         raise LoweringError(None)
-    return var, Const(engine_value(1 << int(node.name), ty), ty)
+    bits: Expr = var
+    if ty.info.category != "bits":  # AND/OR work on ANY_BIT: same-width bit string, two's complement pattern
+        bits_type = Elementary(_BITS_OF_WIDTH[ty.info.bits])
+        bits = Call(f"{ty.name}_TO_{bits_type.name}", (var,), (ty,), bits_type)
+    mask_type = bits.type  # type: ignore[union-attr]
+    return var, bits, Const(engine_value(1 << int(node.name), mask_type), mask_type)
 
 
 def _bit(node: ast.Member, ctx: PouContext) -> Expr:
     """Bit access ``x.3`` reads as ``(x AND 2#1000) <> 0``."""
-    var, mask = bit_mask(node, ctx)
-    if mask.type == BOOL:
-        return var
-    return Binary("NE", Binary("AND", var, mask, mask.type), Const(0, mask.type), BOOL)
+    _, bits, mask = bit_access(node, ctx)
+    return Binary("NE", Binary("AND", bits, mask, mask.type), Const(0, mask.type), BOOL)
 
 
 # ---------------------------------------------------------------- operators

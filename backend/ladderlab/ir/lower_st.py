@@ -16,7 +16,7 @@ from ..st import types as t
 from ..st.symbols import PouInfo, Symbol
 from .context import PouContext
 from .lower_expr import (
-    bit_mask,
+    bit_access,
     convert,
     lower_access,
     lower_en_eno,
@@ -107,12 +107,16 @@ def _assign(statement: ast.Assign, ctx: PouContext) -> list[Stmt]:
 
 
 def _assign_bit(target: ast.Member, value: ast.Expr, ctx: PouContext, origin: Origin) -> Assign:
-    """``x.3 := b`` is ``x := SEL(b, x AND NOT 2#1000, x OR 2#1000)``."""
+    """``x.3 := b`` is ``x := SEL(b, x AND NOT 2#1000, x OR 2#1000)`` (integers through their bit string)."""
     bit = lower_to(value, ctx, BOOL)
-    var, mask = bit_mask(target, ctx)
+    var, bits, mask = bit_access(target, ctx)
     ty = mask.type
-    cleared = Binary("AND", var, Const(engine_value(~mask.value, ty), ty), ty)  # type: ignore[operator]
-    return Assign(var, Call("SEL", (bit, cleared, Binary("OR", var, mask, ty)), (BOOL, ty, ty), ty), origin)
+    cleared = Binary("AND", bits, Const(engine_value(~mask.value, ty), ty), ty)  # type: ignore[operator]
+    updated: Expr = Call("SEL", (bit, cleared, Binary("OR", bits, mask, ty)), (BOOL, ty, ty), ty)
+    target_type = value_type(var.type)
+    if target_type != ty:
+        updated = Call(f"{ty.name}_TO_{target_type.name}", (updated,), (ty,), target_type)  # type: ignore[union-attr]
+    return Assign(var, updated, origin)
 
 
 def _call_statement(statement: ast.CallStmt, ctx: PouContext) -> list[Stmt]:
