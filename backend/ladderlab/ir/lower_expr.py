@@ -3,7 +3,7 @@
 Mirrors the checker's typing (st/body.py, st/calls.py): operands of one operator
 are brought to the type the checker combined them in, inserting ``Convert`` for
 the implicit widenings it accepted; untyped literals take that type directly.
-Decisions (docs/ir.md "ST lowering"):
+Decisions (docs/ir.md, "Lowering of ST and whole projects"):
 
 * a STRING of any length and a Subrange count as one type with STRING / their base,
   so they never get a ``Convert``;
@@ -28,7 +28,7 @@ from ..st.symbols import PouInfo, Symbol
 from .context import PouContext
 from .lower_types import LoweringError, byte_size, engine_value, ir_default
 from .nodes import Assign, Binary, Call, Const, Convert, Expr, FnCall, Index, Member, Unary, Var
-from .types import BOOL, Elementary, FbInstance, IrType, Struct, Subrange
+from .types import BOOL, Array, Elementary, FbInstance, IrType, Struct, Subrange
 
 _OPERATORS = {"+": "ADD", "-": "SUB", "*": "MUL", "/": "DIV", "MOD": "MOD", "**": "EXPT", "AND": "AND",
               "OR": "OR", "XOR": "XOR", "=": "EQ", "<>": "NE", "<": "LT", ">": "GT", "<=": "LE", ">=": "GE"}
@@ -114,10 +114,11 @@ def _untyped(node: ast.Expr, ctx: PouContext, expected: IrType | None) -> Expr:
 
 
 def _literal_target(ty: t.Type, ctx: PouContext, expected: IrType | None) -> IrType:
+    """The expected type when an untyped literal may take it (a subrange's base: the store checks the range)."""
     base = value_type(expected) if expected is not None else None
     if isinstance(base, Elementary) and base.info.category in _LITERAL_TARGETS:
         if isinstance(ty, t.UntypedInt) or base.info.category == "real":
-            return expected  # type: ignore[return-value]
+            return base
     return ctx.ir_type(t.concrete(ty))
 
 
@@ -181,10 +182,10 @@ def _index(node: ast.Index, ctx: PouContext) -> Var:
     if isinstance(node.base.ty, t.PointerType):
         raise LoweringError("pointers (POINTER TO, REF_TO, ADR, REF, ^) are not supported by the engine yet", node)
     base = lower_access(node.base, ctx)
-    if not hasattr(base.type, "element"):
+    if not isinstance(base.type, Array):
         raise LoweringError(None)
     indices = tuple(lower_expr(index, ctx) for index in node.indices)
-    return Var(base.scope, base.name, base.type.element, (*base.path, Index(indices)))  # type: ignore[union-attr]
+    return Var(base.scope, base.name, base.type.element, (*base.path, Index(indices)))
 
 
 _BITS_OF_WIDTH = {8: "BYTE", 16: "WORD", 32: "DWORD", 64: "LWORD"}
@@ -300,7 +301,7 @@ def _call(node: ast.Call, ctx: PouContext) -> Expr:
         raise LoweringError(None)
     if en is None and eno is None:
         return call
-    return _lift(node, call, en, eno, before, ctx)
+    return _lift(node, call, before, ctx)
 
 
 def _sizeof(node: ast.Call, ctx: PouContext, target: IrType) -> Const:
@@ -346,15 +347,17 @@ def lower_en_eno(node: ast.Call, ctx: PouContext) -> tuple[Expr | None, Var | No
     return en_expr, flag, [Assign(target, Unary("NOT", flag, BOOL), ctx.origin(eno))]
 
 
-def _lift(node: ast.Call, call: Call, en: ast.Arg | None, eno: ast.Arg | None, before: tuple[int, int],
-          ctx: PouContext) -> Var:
-    """Evaluate a call with EN/ENO as a ``FnCall`` before the statement, into a hidden temporary."""
-    where = "inside this statement"
-    if ctx.lifts is None:
-        where = "here"
-    elif before[1] or (call.user and before[0]):
-        where = "after the values this statement computes before it"
-    if ctx.lifts is None or before[1] or (call.user and before[0]):
+def _lift(node: ast.Call, call: Call, before: tuple[int, int], ctx: PouContext) -> Var:
+    """Evaluate a call with EN/ENO as a ``FnCall`` before the statement, into a hidden temporary.
+
+    ``before`` counts the variable reads and user function calls the statement evaluated before
+    this call: a user function could change those variables, and any user function could change
+    what this call reads, so then the call cannot move ahead of them.
+    """
+    reads, calls = before
+    where = "here" if ctx.lifts is None else "after the values this statement computes before it" \
+        if calls or (call.user and reads) else None
+    if where is not None:
         raise LoweringError(f"a call with EN or ENO cannot be evaluated {where} in the right order: assign its "
                             "result to a variable in a statement of its own first", node, code="IR-EN-CALL")
     en_expr, eno_var, after = lower_en_eno(node, ctx)
