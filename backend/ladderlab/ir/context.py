@@ -15,12 +15,12 @@ from ..st import types as t
 from ..st.body import BodyChecker
 from ..st.rules import assignable_or_report
 from ..st.symbols import CheckResult, PouInfo, Symbol
-from .lower_types import LoweringError, TypeLowering, ir_default
+from .lower_types import LoweringError, TypeLowering, ir_default, unnamed_address
 from .nodes import Origin, Slot, Stmt, Var, VarClass
 from .types import IrType
 
-#: Hidden slot names start with two underscores, which an IEC identifier cannot contain (LEX-11), so
-#: they never clash with declared names.
+#: Hidden slot names start with two underscores, which an IEC identifier must not contain (LEX-13); they
+#: get a number suffix if a declared name (the parser does not refuse ``__x``) or another hidden one is taken.
 HIDDEN_PREFIX = "__"
 
 
@@ -161,8 +161,7 @@ class PouContext:
         Inside a POU an R_EDGE/F_EDGE input reads as its detected edge (a hidden slot).
         """
         if symbol.address is not None and symbol.name == symbol.address:
-            raise LoweringError(f"the directly represented variable {symbol.address} has no name: declare it "
-                                f"as 'name AT {symbol.address} : type' (unnamed ones are not supported yet)")
+            raise unnamed_address(symbol.address)
         upper = symbol.name.upper()
         if symbol.pou is None or symbol.var_class == "VAR_EXTERNAL":
             target = self.checked.globals.get(upper, symbol)

@@ -26,7 +26,7 @@ from ..st.elementary import DEFAULT_STRING_LENGTH, GENERIC
 from ..st.rules import EnumValue, constant_value
 from ..st.symbols import PouInfo, Symbol
 from .context import PouContext
-from .lower_types import LoweringError, byte_size, engine_value, ir_default
+from .lower_types import POINTERS_UNSUPPORTED, LoweringError, byte_size, engine_value, ir_default, unnamed_address
 from .nodes import Assign, Binary, Call, Const, Convert, Expr, FnCall, Index, Member, Unary, Var
 from .types import BOOL, Array, Elementary, FbInstance, IrType, Struct, Subrange
 
@@ -146,8 +146,7 @@ def lower_access(node: ast.Expr, ctx: PouContext) -> Var:
         if isinstance(ref, PouInfo):
             return ctx.result_var()
         if isinstance(node, ast.DirectAddr):
-            raise LoweringError(f"the directly represented variable {node.address} has no name: declare it as "
-                                f"'name AT {node.address} : type' (unnamed ones are not supported yet)", node)
+            raise unnamed_address(node.address, node)
         raise LoweringError(None)
     if isinstance(node, ast.Member) and not node.name.isdigit():
         base = lower_access(node.base, ctx)
@@ -155,7 +154,7 @@ def lower_access(node: ast.Expr, ctx: PouContext) -> Var:
     if isinstance(node, ast.Index):
         return _index(node, ctx)
     if isinstance(node, ast.Deref):
-        raise LoweringError("pointers (POINTER TO, REF_TO, ADR, REF, ^) are not supported by the engine yet", node)
+        raise LoweringError(POINTERS_UNSUPPORTED, node)
     if isinstance(node, ast.Member):
         raise LoweringError("a bit of a variable (x.3) can be read or assigned, but not passed by reference", node)
     raise LoweringError("only a variable, array element or field can be used here: assign this value to a variable "
@@ -180,7 +179,7 @@ def _index(node: ast.Index, ctx: PouContext) -> Var:
     if isinstance(node.base.ty, t.StringType):
         raise LoweringError("indexing a STRING is not supported: use MID(s, 1, i) to get one character", node)
     if isinstance(node.base.ty, t.PointerType):
-        raise LoweringError("pointers (POINTER TO, REF_TO, ADR, REF, ^) are not supported by the engine yet", node)
+        raise LoweringError(POINTERS_UNSUPPORTED, node)
     base = lower_access(node.base, ctx)
     if not isinstance(base.type, Array):
         raise LoweringError(None)
@@ -283,7 +282,7 @@ def refuse_unsupported_call(node: ast.Call) -> None:
         raise LoweringError(f"calling the program {ref.name} from ST is not supported by the engine yet: run it "
                             "from a task", node)
     if ref is None and isinstance(node.callee, ast.Name) and node.callee.name.upper() in ("ADR", "REF"):
-        raise LoweringError("pointers (POINTER TO, REF_TO, ADR, REF, ^) are not supported by the engine yet", node)
+        raise LoweringError(POINTERS_UNSUPPORTED, node)
 
 
 def _call(node: ast.Call, ctx: PouContext) -> Expr:

@@ -27,7 +27,7 @@ from .context import PouContext
 from .lower_fbd import lower_fbd_body
 from .lower_ld import lower_ld_body
 from .lower_st import lower_st_body
-from .lower_types import LoweringError, ir_default
+from .lower_types import LoweringError, ir_default, unnamed_address
 from .nodes import Assign, Binary, Block, Origin, Pou, Program, Slot, Stmt, TaskSpec, Unary, Var
 from .types import BOOL
 
@@ -100,11 +100,9 @@ def lower_pou(pou: ModelPou, info: PouInfo, checked: CheckResult, diagnostics: l
 
 
 def _slot(symbol: Symbol, ctx: PouContext, file: str) -> Slot | None:
-    if symbol.address is not None and symbol.name == symbol.address:
-        ctx.report_at("IR-UNSUPPORTED", f"the directly represented variable {symbol.address} has no name: declare "
-                      f"it as 'name AT {symbol.address} : type' (unnamed ones are not supported yet)", symbol, file)
-        return None
     try:
+        if symbol.address is not None and symbol.name == symbol.address:
+            raise unnamed_address(symbol.address)
         return ctx.types.slot(symbol)
     except LoweringError as error:
         ctx.report_error(error, symbol, file)

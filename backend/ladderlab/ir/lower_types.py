@@ -44,6 +44,15 @@ class LoweringError(Exception):
         self.message, self.node, self.code, self.file = message, node, code, file
 
 
+POINTERS_UNSUPPORTED = "pointers (POINTER TO, REF_TO, ADR, REF, ^) are not supported by the engine yet"
+
+
+def unnamed_address(address: str, node: Any = None) -> LoweringError:
+    """``%IX0.0`` used or declared without a name: the engine keeps variables by name."""
+    return LoweringError(f"the directly represented variable {address} has no name: declare it as "
+                         f"'name AT {address} : type' (unnamed ones are not supported yet)", node)
+
+
 def _in_types_text(error: LoweringError) -> LoweringError:
     """An error in a TYPE declaration's initial value is located in the ``types`` text, wherever it is used."""
     if error.file is None:
@@ -92,7 +101,7 @@ class TypeLowering:
         if isinstance(ty, t.FbType):
             return FbInstance(ty.name.upper())
         if isinstance(ty, t.PointerType):
-            raise LoweringError("pointers (POINTER TO, REF_TO, ADR, REF, ^) are not supported by the engine yet")
+            raise LoweringError(POINTERS_UNSUPPORTED)
         raise LoweringError(None)  # ERROR / VOID / None: the checker reported why
 
     def _spec_body(self, spec: ast.TypeSpec | None) -> ast.TypeSpec | None:
