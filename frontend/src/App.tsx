@@ -1,6 +1,8 @@
 import { useEffect } from "react";
 import type { ProjectSummary } from "./api/client";
 import { useAppStore } from "./store";
+import { useWorkspace } from "./project/store";
+import { WorkspaceView } from "./project/WorkspaceView";
 
 const HEALTH_POLL_MS = 15_000;
 
@@ -91,18 +93,11 @@ function ProjectList() {
 
 function MainArea() {
   const selected = useAppStore((s) => s.selectedProject);
-  return (
-    <main className="main">
-      {selected ? (
-        <>
-          <h2>{selected}</h2>
-          <p className="placeholder">The editor for this project is not built yet.</p>
-        </>
-      ) : (
-        <p className="placeholder">Select a project to open it.</p>
-      )}
-    </main>
-  );
+  const open = useWorkspace((s) => s.open);
+  useEffect(() => {
+    if (selected) void open(selected);
+  }, [selected, open]);
+  return <main className="main">{selected ? <WorkspaceView /> : <p className="placeholder">Select a project to open it.</p>}</main>;
 }
 
 export default function App() {

@@ -1,5 +1,5 @@
 import { describe, expect, it, vi } from "vitest";
-import { ApiError, errorFromResponse, getHealth, getProject, listProjects, requestJson } from "./client";
+import { ApiError, errorFromResponse, getHealth, getLibrary, getProject, getSymbols, listProjects, requestJson, saveProject, SaveConflictError } from "./client";
 
 function jsonResponse(body: unknown, status = 200, statusText = ""): Response {
   return new Response(JSON.stringify(body), {
@@ -98,9 +98,41 @@ describe("endpoints", () => {
     await expect(listProjects()).rejects.toThrow(ApiError);
   });
 
-  it("getProject escapes the project name", async () => {
-    const fetchMock = stubFetch(async () => jsonResponse({ name: "a b/c", pous: [] }));
-    await expect(getProject("a b/c")).resolves.toEqual({ name: "a b/c", pous: [] });
+  it("getProject escapes the project name and returns the document", async () => {
+    const doc = { name: "a b/c", revision: "r1", modified: "2024-01-01T00:00:00Z", project: { name: "a b/c", pous: [] } };
+    const fetchMock = stubFetch(async () => jsonResponse(doc));
+    await expect(getProject("a b/c")).resolves.toEqual(doc);
     expect(fetchMock.mock.calls[0]![0]).toBe("/api/projects/a%20b%2Fc");
+  });
+
+  it("saveProject sends the revision in If-Match and the project as JSON", async () => {
+    const fetchMock = stubFetch(async () => jsonResponse({ revision: "r2", modified: "2024-01-02T00:00:00Z" }));
+    await expect(saveProject("demo", "r1", { name: "demo" })).resolves.toEqual({ revision: "r2", modified: "2024-01-02T00:00:00Z" });
+    const [url, init] = fetchMock.mock.calls[0]!;
+    expect(url).toBe("/api/projects/demo");
+    expect(init?.method).toBe("PUT");
+    expect(new Headers(init?.headers).get("If-Match")).toBe('"r1"');
+    expect(JSON.parse(String(init?.body))).toEqual({ name: "demo" });
+  });
+
+  it("saveProject turns a 409 into a SaveConflictError with both revisions", async () => {
+    const detail = { message: "changed since r1", base_revision: "r1", current_revision: "r9", current_modified: "2024-03-01T08:00:00Z" };
+    stubFetch(async () => jsonResponse({ detail }, 409, "Conflict"));
+    const err = await saveProject("demo", "r1", { name: "demo" }).catch((e: unknown) => e);
+    expect(err).toBeInstanceOf(SaveConflictError);
+    expect((err as SaveConflictError).conflict).toEqual(detail);
+    expect((err as SaveConflictError).message).toBe("changed since r1");
+  });
+
+  it("uses the message of an ErrorDetail", async () => {
+    stubFetch(async () => jsonResponse({ detail: { message: "project 'x' not found", diagnostics: [] } }, 404));
+    await expect(getProject("x")).rejects.toThrow("project 'x' not found");
+  });
+
+  it("getLibrary and getSymbols ask the documented paths", async () => {
+    const fetchMock = stubFetch(async () => jsonResponse([]));
+    await getLibrary("my proj");
+    await getSymbols("demo", "Main");
+    expect(fetchMock.mock.calls.map((c) => c[0])).toEqual(["/api/library?project=my%20proj", "/api/projects/demo/pous/Main/symbols"]);
   });
 });

@@ -1,5 +1,5 @@
 // Typed helpers for the LadderLab HTTP API (served under /api by the FastAPI backend).
-import type { ProjectSummary } from "../generated/api";
+import type { ConflictDetail, LibraryEntry, ProjectDocument, ProjectSummary, SaveResult, SymbolTable } from "../generated/api";
 import type { Project } from "../generated/project";
 
 export type { ProjectSummary };
@@ -24,9 +24,15 @@ export class ApiError extends Error {
   }
 }
 
-/** Renders FastAPI's `detail` (a string or a list of `{loc, msg}` validation errors) as text. */
+/**
+ * Renders the server's `detail` as text: a string, our `{message, ...}` objects (ErrorDetail,
+ * ConflictDetail), or FastAPI's list of `{loc, msg}` validation errors.
+ */
 function detailText(detail: unknown): string | null {
   if (typeof detail === "string") return detail.trim() || null;
+  if (detail && typeof detail === "object" && typeof (detail as { message?: unknown }).message === "string") {
+    return (detail as { message: string }).message.trim() || null;
+  }
   if (Array.isArray(detail)) {
     const parts = detail.map((item: unknown) => {
       if (item && typeof item === "object" && "msg" in item) {
@@ -90,14 +96,64 @@ export async function listProjects(): Promise<ProjectSummary[]> {
   return body as ProjectSummary[];
 }
 
-export function getProject(name: string): Promise<Project> {
-  return requestJson<Project>(`/api/projects/${encodeURIComponent(name)}`);
+const projectPath = (name: string) => `/api/projects/${encodeURIComponent(name)}`;
+
+/** `GET /api/projects/{name}`: the project and the revision a save must name. */
+export function getProject(name: string): Promise<ProjectDocument> {
+  return requestJson<ProjectDocument>(projectPath(name));
 }
 
-/** The calls the store needs; tests pass fakes. */
+/** A save refused because the project changed since `base_revision` (HTTP 409). */
+export class SaveConflictError extends ApiError {
+  readonly conflict: ConflictDetail;
+
+  constructor(conflict: ConflictDetail) {
+    super(conflict.message, 409, conflict);
+    this.conflict = conflict;
+  }
+}
+
+const isConflict = (detail: unknown): detail is ConflictDetail =>
+  !!detail && typeof detail === "object" && typeof (detail as ConflictDetail).current_revision === "string";
+
+/** `PUT /api/projects/{name}` with `If-Match: <revision>`; a 409 becomes a SaveConflictError. */
+export async function saveProject(name: string, revision: string, project: Project): Promise<SaveResult> {
+  try {
+    return await requestJson<SaveResult>(projectPath(name), {
+      method: "PUT",
+      headers: { "Content-Type": "application/json", "If-Match": `"${revision}"` },
+      body: JSON.stringify(project),
+    });
+  } catch (err) {
+    if (err instanceof ApiError && err.status === 409 && isConflict(err.detail)) throw new SaveConflictError(err.detail);
+    throw err;
+  }
+}
+
+/** `GET /api/library?project=`: standard and the project's own functions and FBs. */
+export function getLibrary(project: string): Promise<LibraryEntry[]> {
+  return requestJson<LibraryEntry[]>(`/api/library?project=${encodeURIComponent(project)}`);
+}
+
+/** `GET /api/projects/{name}/pous/{pou}/symbols`: the POU's declarations and the globals. */
+export function getSymbols(project: string, pou: string): Promise<SymbolTable> {
+  return requestJson<SymbolTable>(`${projectPath(project)}/pous/${encodeURIComponent(pou)}/symbols`);
+}
+
+/** The calls the stores need; tests pass fakes. */
 export interface Api {
   getHealth(): Promise<Health>;
   listProjects(): Promise<ProjectSummary[]>;
 }
 
 export const api: Api = { getHealth, listProjects };
+
+/** The calls the open project needs. */
+export interface ProjectApi {
+  getProject(name: string): Promise<ProjectDocument>;
+  saveProject(name: string, revision: string, project: Project): Promise<SaveResult>;
+  getLibrary(project: string): Promise<LibraryEntry[]>;
+  getSymbols(project: string, pou: string): Promise<SymbolTable>;
+}
+
+export const projectApi: ProjectApi = { getProject, saveProject, getLibrary, getSymbols };

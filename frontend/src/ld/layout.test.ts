@@ -165,13 +165,14 @@ describe("diagram", () => {
     expect(third.networks[1]!.top).toBe(third.networks[0]!.height);
   });
 
+  // Generous bounds: cold JIT, jsdom and the other test files running in parallel on 2 cores.
   it("lays out 1,000 networks quickly", () => {
     const networks = Array.from({ length: 1000 }, (_, i) =>
       net(`n${i}`, par(`p${i}`, [c(`a${i}`)], [c(`b${i}`)]), c(`d${i}`), q(`m${i}`)),
     );
     const start = performance.now();
     const layout = layoutBody(bodyOf(...networks));
-    expect(performance.now() - start).toBeLessThan(500);
+    expect(performance.now() - start).toBeLessThan(1500);
     expect(layout.networks).toHaveLength(1000);
   });
 });

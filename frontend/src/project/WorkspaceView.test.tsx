@@ -1,0 +1,105 @@
+import { fireEvent, render, screen, within } from "@testing-library/react";
+import { beforeEach, describe, expect, it, vi } from "vitest";
+import App from "../App";
+import { appStore, initialData } from "../store";
+import { motorMain } from "../ld/fixtures";
+import { emptyWorkspace, workspaceStore } from "./store";
+
+const json = (body: unknown, status = 200) => new Response(JSON.stringify(body), { status, headers: { "Content-Type": "application/json" } });
+const project = {
+  name: "plant",
+  pous: [
+    { name: "Main", kind: "program", language: "ld", declarations: "VAR\nEND_VAR", body: motorMain },
+    { name: "Blinker", kind: "function_block", language: "st", body: "" },
+  ],
+  tasks: [{ name: "Fast", interval: "T#10ms", programs: ["Main"] }],
+  globals: "VAR_GLOBAL\n  Start : BOOL;\nEND_VAR",
+};
+
+function serve(put: () => Response) {
+  const fetchMock = vi.fn(async (input: RequestInfo | URL, init?: RequestInit) => {
+    const url = String(input);
+    if (url === "/api/health") return json({ status: "ok", version: "0.1.0" });
+    if (url === "/api/projects") return json([{ name: "plant", revision: "r1", modified: "2024-05-01T10:00:00Z", pou_count: 2 }]);
+    if (url === "/api/projects/plant" && init?.method === "PUT") return put();
+    if (url === "/api/projects/plant") return json({ name: "plant", revision: "r1", modified: "2024-05-01T10:00:00Z", project });
+    if (url.startsWith("/api/library")) return json([]);
+    if (url.endsWith("/symbols")) return json({ pou: "Main", symbols: [], globals: [], diagnostics: [] });
+    throw new Error(`unexpected fetch ${url}`);
+  });
+  vi.stubGlobal("fetch", fetchMock);
+  return fetchMock;
+}
+
+beforeEach(() => {
+  localStorage.clear();
+  appStore.setState(initialData);
+  workspaceStore.setState(emptyWorkspace);
+});
+
+async function openPlant() {
+  render(<App />);
+  fireEvent.click(await screen.findByRole("button", { name: /plant/ }));
+  return screen.findByRole("navigation", { name: "Project tree" });
+}
+
+describe("app shell", () => {
+  it("shows the project tree by kind with languages, globals and tasks", async () => {
+    serve(() => json({}));
+    const tree = await openPlant();
+    const headings = within(tree).getAllByRole("heading").map((h) => h.textContent);
+    expect(headings).toEqual(["Programs", "Function blocks", "Functions", "Types", "Global variables", "Tasks"]);
+    expect(within(tree).getByRole("button", { name: /Main/ }).textContent).toBe("MainLD");
+    expect(within(tree).getByRole("button", { name: /Blinker/ }).textContent).toBe("BlinkerST");
+    expect(within(tree).getByText(/Fast/).textContent).toContain("T#10ms · Main");
+    expect(within(tree).getByText("3 lines of VAR_GLOBAL declarations")).toBeTruthy();
+  });
+
+  it("opens an LD POU in a tab, marks edits unsaved and saves with If-Match", async () => {
+    const fetchMock = serve(() => json({ revision: "r2", modified: "2024-05-02T10:00:00Z" }));
+    const tree = await openPlant();
+    fireEvent.click(within(tree).getByRole("button", { name: /Main/ }));
+    expect(screen.getByRole("tab", { name: "Main" }).getAttribute("aria-selected")).toBe("true");
+    const editor = screen.getByRole("application", { name: "Ladder diagram editor" });
+    fireEvent.mouseDown(editor.querySelector('[data-id="seal"] .ld-hit')!);
+    fireEvent.keyDown(editor, { key: "Delete" });
+    expect(screen.getByRole("tab", { name: /Main/ }).textContent).toContain("●");
+    expect(screen.getByText("Unsaved changes in Main")).toBeTruthy();
+    expect(localStorage.getItem("ladderlab:draft:plant")).toContain('"base_revision":"r1"');
+    fireEvent.keyDown(window, { key: "s", ctrlKey: true });
+    expect(await screen.findByText("All changes saved")).toBeTruthy();
+    const put = fetchMock.mock.calls.find(([, init]) => init?.method === "PUT")!;
+    expect(new Headers(put[1]!.headers).get("If-Match")).toBe('"r1"');
+    expect(JSON.parse(String(put[1]!.body)).pous[0].body.networks[0].elements[0].id).toBe("start");
+    expect(localStorage.getItem("ladderlab:draft:plant")).toBeNull();
+  });
+
+  it("shows both times on a save conflict and lets the user overwrite deliberately", async () => {
+    let puts = 0;
+    serve(() => {
+      puts += 1;
+      return puts === 1
+        ? json({ detail: { message: "saved by someone else", base_revision: "r1", current_revision: "r5", current_modified: "2024-05-03T09:30:00Z" } }, 409)
+        : json({ revision: "r6", modified: "2024-05-03T10:00:00Z" });
+    });
+    const tree = await openPlant();
+    fireEvent.click(within(tree).getByRole("button", { name: /Main/ }));
+    const editor = screen.getByRole("application", { name: "Ladder diagram editor" });
+    fireEvent.mouseDown(editor.querySelector('[data-id="stop"] .ld-hit')!);
+    fireEvent.keyDown(editor, { key: " " });
+    fireEvent.click(screen.getByRole("button", { name: "Save" }));
+    const dialog = await screen.findByRole("alertdialog", { name: "Save conflict" });
+    expect(dialog.textContent).toContain(new Date("2024-05-01T10:00:00Z").toLocaleString());
+    expect(dialog.textContent).toContain(new Date("2024-05-03T09:30:00Z").toLocaleString());
+    fireEvent.click(within(dialog).getByRole("button", { name: "Overwrite with my version" }));
+    expect(await screen.findByText("All changes saved")).toBeTruthy();
+    expect(screen.queryByRole("alertdialog")).toBeNull();
+  });
+
+  it("shows a placeholder for languages whose editor comes later", async () => {
+    serve(() => json({}));
+    const tree = await openPlant();
+    fireEvent.click(within(tree).getByRole("button", { name: /Blinker/ }));
+    expect(screen.getByText(/The ST editor is not built yet/)).toBeTruthy();
+  });
+});

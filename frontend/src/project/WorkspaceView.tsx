@@ -1,0 +1,226 @@
+// The open project: project tree (POUs by kind with their language, types, globals, tasks), tabs
+// of open POUs with unsaved marks, the LD editor for LD POUs, Save (Ctrl+S) and the dialog for a
+// save conflict (reload theirs or overwrite deliberately).
+import { useEffect } from "react";
+import type { Pou } from "../generated/project";
+import { LdEditor } from "../ld/editor/LdEditor";
+import { pouOf, useWorkspace, workspaceStore } from "./store";
+
+const KINDS: { kind: Pou["kind"]; title: string }[] = [
+  { kind: "program", title: "Programs" },
+  { kind: "function_block", title: "Function blocks" },
+  { kind: "function", title: "Functions" },
+];
+const LANGUAGE = { st: "ST", ld: "LD", fbd: "FBD" } as const;
+
+export const formatTime = (iso: string | null | undefined): string => {
+  if (!iso) return "an unknown time";
+  const date = new Date(iso);
+  return Number.isNaN(date.getTime()) ? iso : date.toLocaleString();
+};
+
+function ProjectTree() {
+  const project = useWorkspace((s) => s.project);
+  const changed = useWorkspace((s) => s.changed);
+  const active = useWorkspace((s) => s.active);
+  const openPou = useWorkspace((s) => s.openPou);
+  if (!project) return null;
+  const pous = project.pous ?? [];
+  const lines = (text: string | undefined) => (text ?? "").split("\n").filter((l) => l.trim()).length;
+  return (
+    <nav className="tree" aria-label="Project tree">
+      {KINDS.map(({ kind, title }) => {
+        const group = pous.filter((p) => p.kind === kind);
+        return (
+          <section key={kind}>
+            <h3>{title}</h3>
+            {group.length ? (
+              <ul>
+                {group.map((p) => (
+                  <li key={p.name}>
+                    <button type="button" className="tree-item" aria-current={active === p.name ? "true" : undefined} onClick={() => openPou(p.name)}>
+                      <span className="tree-name">{p.name}</span>
+                      <span className={`lang lang-${p.language}`}>{LANGUAGE[p.language]}</span>
+                      {changed.includes(p.name) ? <span className="unsaved" aria-label="unsaved changes">●</span> : null}
+                    </button>
+                  </li>
+                ))}
+              </ul>
+            ) : (
+              <p className="tree-empty">none</p>
+            )}
+          </section>
+        );
+      })}
+      <section>
+        <h3>Types</h3>
+        <p className="tree-empty">{lines(project.types) ? `${lines(project.types)} lines of TYPE declarations` : "none"}</p>
+      </section>
+      <section>
+        <h3>Global variables</h3>
+        <p className="tree-empty">{lines(project.globals) ? `${lines(project.globals)} lines of VAR_GLOBAL declarations` : "none"}</p>
+      </section>
+      <section>
+        <h3>Tasks</h3>
+        {project.tasks?.length ? (
+          <ul>
+            {project.tasks.map((t) => (
+              <li key={t.name} className="tree-task">
+                {t.name} <span className="tree-meta">{t.interval ?? ""} · {(t.programs ?? []).join(", ") || "no programs"}</span>
+              </li>
+            ))}
+          </ul>
+        ) : (
+          <p className="tree-empty">none (the default task runs every program)</p>
+        )}
+      </section>
+    </nav>
+  );
+}
+
+function Tabs() {
+  const tabs = useWorkspace((s) => s.tabs);
+  const active = useWorkspace((s) => s.active);
+  const changed = useWorkspace((s) => s.changed);
+  const openPou = useWorkspace((s) => s.openPou);
+  const closeTab = useWorkspace((s) => s.closeTab);
+  return (
+    <div className="tabs" role="tablist" aria-label="Open POUs">
+      {tabs.map((pou) => (
+        <div key={pou} className="tab" role="presentation">
+          <button type="button" role="tab" aria-selected={pou === active} onClick={() => openPou(pou)}>
+            {pou}
+            {changed.includes(pou) ? <span className="unsaved" aria-label="unsaved changes"> ●</span> : null}
+          </button>
+          <button type="button" className="tab-close" aria-label={`Close ${pou}`} onClick={() => closeTab(pou)}>
+            ×
+          </button>
+        </div>
+      ))}
+    </div>
+  );
+}
+
+function PouView({ name }: { name: string }) {
+  const pou = useWorkspace((s) => pouOf(s.project, name));
+  const history = useWorkspace((s) => s.histories[name]);
+  const library = useWorkspace((s) => s.library);
+  const table = useWorkspace((s) => s.symbols[name]);
+  const setLdHistory = useWorkspace((s) => s.setLdHistory);
+  const declare = useWorkspace((s) => s.declare);
+  if (!pou) return <p className="placeholder">{name} is no longer in this project.</p>;
+  if (pou.language !== "ld" || !history) {
+    return <p className="placeholder">The {LANGUAGE[pou.language]} editor is not built yet; {name} opens here once it is.</p>;
+  }
+  const symbols = table ? [...table.symbols, ...table.globals] : [];
+  return (
+    <LdEditor
+      key={name}
+      history={history}
+      onHistoryChange={(h) => setLdHistory(name, h)}
+      library={library}
+      symbols={symbols}
+      diagnostics={table?.diagnostics.filter((d) => d.network)}
+      onDeclareVariable={(d) => declare(name, d)}
+    />
+  );
+}
+
+function ConflictDialog() {
+  const conflict = useWorkspace((s) => s.conflict);
+  const modified = useWorkspace((s) => s.modified);
+  const save = useWorkspace((s) => s.save);
+  const reload = useWorkspace((s) => s.reload);
+  const dismiss = useWorkspace((s) => s.dismissConflict);
+  if (!conflict) return null;
+  return (
+    <div className="ld-dialog-backdrop">
+      <div className="ld-dialog conflict" role="alertdialog" aria-label="Save conflict">
+        <h2>The project was changed elsewhere</h2>
+        <p>
+          Your changes are based on the version saved at <strong>{formatTime(modified)}</strong>. Since then another
+          version was saved at <strong>{formatTime(conflict.current_modified)}</strong>.
+        </p>
+        <p className="conflict-detail">{conflict.message}</p>
+        <div className="dialog-buttons">
+          <button type="button" onClick={() => void reload()}>
+            Reload the saved version (discard my changes)
+          </button>
+          <button type="button" onClick={() => void save(true)}>
+            Overwrite with my version
+          </button>
+          <button type="button" onClick={dismiss}>
+            Cancel
+          </button>
+        </div>
+      </div>
+    </div>
+  );
+}
+
+export function WorkspaceView() {
+  const status = useWorkspace((s) => s.status);
+  const error = useWorkspace((s) => s.error);
+  const name = useWorkspace((s) => s.name);
+  const active = useWorkspace((s) => s.active);
+  const changed = useWorkspace((s) => s.changed);
+  const saving = useWorkspace((s) => s.saving);
+  const saveError = useWorkspace((s) => s.saveError);
+  const restoredAt = useWorkspace((s) => s.restoredAt);
+  const save = useWorkspace((s) => s.save);
+  const reload = useWorkspace((s) => s.reload);
+
+  useEffect(() => {
+    const onKey = (e: KeyboardEvent) => {
+      if ((e.ctrlKey || e.metaKey) && e.key.toLowerCase() === "s") {
+        e.preventDefault();
+        void workspaceStore.getState().save();
+      }
+    };
+    window.addEventListener("keydown", onKey);
+    return () => window.removeEventListener("keydown", onKey);
+  }, []);
+
+  if (status === "loading" || status === "idle") return <p className="placeholder">Opening {name}…</p>;
+  if (status === "error") {
+    return (
+      <div className="empty" role="alert">
+        <p>Could not open {name}.</p>
+        <p className="empty-detail">{error}</p>
+      </div>
+    );
+  }
+  return (
+    <div className="workspace">
+      <div className="workspace-bar">
+        <h2>{name}</h2>
+        <span className={`save-state${changed.length ? " dirty" : ""}`} role="status">
+          {saving ? "Saving…" : changed.length ? `Unsaved changes in ${changed.join(", ")}` : "All changes saved"}
+        </span>
+        <button type="button" onClick={() => void save()} disabled={saving || changed.length === 0} title="Save (Ctrl+S)">
+          Save
+        </button>
+        {restoredAt ? (
+          <span className="restored">
+            Restored unsaved changes from {formatTime(restoredAt)}.{" "}
+            <button type="button" className="link" onClick={() => void reload()}>
+              Discard them
+            </button>
+          </span>
+        ) : null}
+        {saveError ? (
+          <span className="save-error" role="alert">
+            Save failed: {saveError}
+          </span>
+        ) : null}
+      </div>
+      <ProjectTree />
+      <div className="editor-area">
+        <Tabs />
+        {active ? <PouView name={active} /> : <p className="placeholder">Open a POU from the project tree.</p>}
+      </div>
+      <ConflictDialog />
+    </div>
+  );
+}
+

@@ -1,0 +1,191 @@
+// The open project (zustand): the working copy, open POU tabs with their LD undo histories,
+// library and symbols for the editors, drafts in localStorage, and saving with conflict handling.
+import { useStore } from "zustand";
+import { createStore, type StoreApi } from "zustand/vanilla";
+import { ApiError, projectApi, SaveConflictError, type ProjectApi } from "../api/client";
+import type { ConflictDetail, LibraryEntry, SymbolInfo, SymbolTable } from "../generated/api";
+import type { LdBody, Pou, Project } from "../generated/project";
+import { historyOf, type History } from "../ld/history";
+import type { VariableDeclaration } from "../ld/editor/declare";
+import { addDeclaration } from "./declarations";
+import { loadDraft, removeDraft, saveDraft } from "./drafts";
+
+export interface WorkspaceData {
+  status: "idle" | "loading" | "ready" | "error";
+  error: string | null;
+  name: string | null;
+  /** The revision the working copy is based on, and when it was saved. */
+  revision: string | null;
+  modified: string | null;
+  project: Project | null;
+  /** POUs with unsaved changes. */
+  changed: string[];
+  /** The working copy came from a draft left by an earlier session. */
+  restoredAt: string | null;
+  tabs: string[];
+  active: string | null;
+  histories: Record<string, History<LdBody>>;
+  library: LibraryEntry[];
+  symbols: Record<string, SymbolTable>;
+  saving: boolean;
+  saveError: string | null;
+  conflict: ConflictDetail | null;
+}
+
+export interface WorkspaceActions {
+  open(name: string): Promise<void>;
+  openPou(pou: string): void;
+  closeTab(pou: string): void;
+  setLdHistory(pou: string, history: History<LdBody>): void;
+  declare(pou: string, declaration: VariableDeclaration): void;
+  /** Saves the working copy; `overwrite` saves over the revision a conflict reported. */
+  save(overwrite?: boolean): Promise<void>;
+  /** Drops the working copy and loads the saved project. */
+  reload(): Promise<void>;
+  dismissConflict(): void;
+}
+
+export type WorkspaceState = WorkspaceData & WorkspaceActions;
+
+export const emptyWorkspace: WorkspaceData = {
+  status: "idle",
+  error: null,
+  name: null,
+  revision: null,
+  modified: null,
+  project: null,
+  changed: [],
+  restoredAt: null,
+  tabs: [],
+  active: null,
+  histories: {},
+  library: [],
+  symbols: {},
+  saving: false,
+  saveError: null,
+  conflict: null,
+};
+
+const message = (err: unknown) => (err instanceof Error ? err.message : String(err));
+export const pouOf = (project: Project | null, name: string): Pou | undefined => project?.pous?.find((p) => p.name === name);
+const isLdBody = (body: Pou["body"]): body is LdBody => typeof body === "object" && body !== null && "networks" in body;
+export const ldBodyOf = (pou: Pou): LdBody => (isLdBody(pou.body) ? pou.body : { networks: [] });
+
+export function createWorkspaceStore(api: ProjectApi = projectApi, storage: Storage = localStorage): StoreApi<WorkspaceState> {
+  let openCall = 0;
+  return createStore<WorkspaceState>()((set, get) => {
+    const replacePou = (pou: string, update: (p: Pou) => Pou) => {
+      const { project, changed } = get();
+      if (!project) return;
+      const next: Project = { ...project, pous: (project.pous ?? []).map((p) => (p.name === pou ? update(p) : p)) };
+      const nextChanged = changed.includes(pou) ? changed : [...changed, pou];
+      set({ project: next, changed: nextChanged });
+      const { revision, modified } = get();
+      saveDraft({ base_revision: revision!, base_modified: modified!, saved_at: new Date().toISOString(), project: next, changed: nextChanged }, storage);
+    };
+
+    const loadSymbols = (pou: string) => {
+      const name = get().name;
+      if (!name) return;
+      api.getSymbols(name, pou).then(
+        (table) => {
+          if (get().name === name) set({ symbols: { ...get().symbols, [pou]: table } });
+        },
+        () => undefined, // no symbols: autocomplete is empty and every name gets the declare offer
+      );
+    };
+
+    const load = async (name: string, useDraft: boolean) => {
+      const call = ++openCall;
+      set({ ...emptyWorkspace, status: "loading", name });
+      try {
+        const doc = await api.getProject(name);
+        if (call !== openCall) return;
+        const draft = useDraft ? loadDraft(name, storage) : null;
+        set({
+          status: "ready",
+          revision: draft?.base_revision ?? doc.revision,
+          modified: draft?.base_modified ?? doc.modified,
+          project: draft?.project ?? doc.project,
+          changed: draft?.changed ?? [],
+          restoredAt: draft?.saved_at ?? null,
+        });
+        api.getLibrary(name).then(
+          (library) => {
+            if (call === openCall) set({ library });
+          },
+          () => undefined, // no library: the box picker is empty, boxes show their connected pins
+        );
+      } catch (err) {
+        if (call === openCall) set({ status: "error", error: message(err) });
+      }
+    };
+
+    return {
+      ...emptyWorkspace,
+
+      open: (name) => load(name, true),
+
+      openPou(pou) {
+        const { tabs, project, histories } = get();
+        const found = pouOf(project, pou);
+        if (!found) return;
+        const patch: Partial<WorkspaceData> = { active: pou, tabs: tabs.includes(pou) ? tabs : [...tabs, pou] };
+        if (found.language === "ld" && !histories[pou]) patch.histories = { ...histories, [pou]: historyOf(ldBodyOf(found)) };
+        set(patch);
+        if (!get().symbols[pou]) loadSymbols(pou);
+      },
+
+      closeTab(pou) {
+        const { tabs, active } = get();
+        const index = tabs.indexOf(pou);
+        const rest = tabs.filter((t) => t !== pou);
+        set({ tabs: rest, active: active === pou ? (rest[Math.min(index, rest.length - 1)] ?? null) : active });
+      },
+
+      setLdHistory(pou, history) {
+        set({ histories: { ...get().histories, [pou]: history } });
+        replacePou(pou, (p) => ({ ...p, body: history.present }));
+      },
+
+      declare(pou, { name, type }) {
+        replacePou(pou, (p) => ({ ...p, declarations: addDeclaration(p.declarations ?? "", name, type) }));
+        const table = get().symbols[pou] ?? { pou, symbols: [], globals: [], diagnostics: [] };
+        const symbol: SymbolInfo = { name, type, var_class: "VAR", initial: null, address: null, comment: null, retain: false, constant: false };
+        set({ symbols: { ...get().symbols, [pou]: { ...table, symbols: [...table.symbols, symbol] } } });
+      },
+
+      async save(overwrite = false) {
+        const { name, project, revision, conflict } = get();
+        if (!name || !project || !revision) return;
+        set({ saving: true, saveError: null });
+        try {
+          const result = await api.saveProject(name, overwrite && conflict ? conflict.current_revision : revision, project);
+          removeDraft(name, storage);
+          set({ saving: false, revision: result.revision, modified: result.modified, changed: [], restoredAt: null, conflict: null });
+          for (const pou of get().tabs) loadSymbols(pou);
+        } catch (err) {
+          if (err instanceof SaveConflictError) set({ saving: false, conflict: err.conflict });
+          else set({ saving: false, saveError: err instanceof ApiError ? err.message : message(err) });
+        }
+      },
+
+      async reload() {
+        const { name, tabs, active } = get();
+        if (!name) return;
+        removeDraft(name, storage);
+        await load(name, false);
+        for (const pou of tabs) get().openPou(pou);
+        if (active && get().tabs.includes(active)) set({ active });
+      },
+
+      dismissConflict: () => set({ conflict: null }),
+    };
+  });
+}
+
+export const workspaceStore = createWorkspaceStore();
+
+export function useWorkspace<T>(selector: (state: WorkspaceState) => T): T {
+  return useStore(workspaceStore, selector);
+}
