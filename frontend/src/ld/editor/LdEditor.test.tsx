@@ -309,6 +309,15 @@ describe("read-only (online)", () => {
   });
 });
 
+describe("shortcut help", () => {
+  it("lists every command with its keys", () => {
+    setup(motorMain);
+    fireEvent.click(screen.getByRole("button", { name: "Shortcuts" }));
+    const rows = within(screen.getByRole("dialog", { name: "Keyboard shortcuts" })).getAllByRole("row").map((r) => r.textContent);
+    expect(rows).toEqual(expect.arrayContaining(["CContact", "Shift+CContact before", "PParallel branch", "Ctrl+ZUndo", "Ctrl+SSave the project", "Alt+ArrowUpMove network up"]));
+  });
+});
+
 describe("history depth", () => {
   it("undoes 100 edits in a row", () => {
     const t = setup(bodyOf(net("n1", c("a"))));

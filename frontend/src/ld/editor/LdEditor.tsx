@@ -116,6 +116,7 @@ export function LdEditor({
   const [message, setMessage] = useState<string | null>(null);
   const [offer, setOffer] = useState<VariableDeclaration | null>(null);
   const [dropping, setDropping] = useState(false);
+  const [help, setHelp] = useState(false);
   const drag = useRef<{ ids: string[]; x: number; y: number } | null>(null);
   /** An element whose operand editor opens once the edit that created it has been laid out. */
   const [pendingEdit, setPendingEdit] = useState<string | null>(null);
@@ -465,7 +466,11 @@ export function LdEditor({
             })}
           </div>
         ))}
+        <button type="button" className="ld-help-button" aria-expanded={help} onClick={() => setHelp((h) => !h)}>
+          Shortcuts
+        </button>
       </div>
+      {help ? <ShortcutHelp onClose={() => setHelp(false)} /> : null}
       {readOnly ? (
         <div className="ld-banner" role="status">
           {readOnly}
@@ -513,6 +518,38 @@ export function LdEditor({
           }}
         />
       ) : null}
+    </div>
+  );
+}
+
+/** Keys that are not commands: selection and saving. */
+const OTHER_KEYS: [string, string][] = [
+  ["Arrow keys", "Move the selection through the rung and between networks"],
+  ["Shift+Arrow left/right", "Extend the selection along a branch"],
+  ["Shift+click", "Select a run of elements"],
+  ["Escape", "Clear the selection"],
+  ["Ctrl+S", "Save the project"],
+];
+
+function ShortcutHelp({ onClose }: { onClose(): void }) {
+  const rows: [string, string][] = [...COMMANDS.filter((c) => c.keys).map((c): [string, string] => [c.keys!, c.label]), ...OTHER_KEYS];
+  return (
+    <div className="ld-help" role="dialog" aria-label="Keyboard shortcuts">
+      <table>
+        <tbody>
+          {rows.map(([keys, label]) => (
+            <tr key={`${keys}:${label}`}>
+              <td>
+                <kbd>{keys}</kbd>
+              </td>
+              <td>{label}</td>
+            </tr>
+          ))}
+        </tbody>
+      </table>
+      <button type="button" onClick={onClose}>
+        Close
+      </button>
     </div>
   );
 }
