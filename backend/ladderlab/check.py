@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
+from .ir.lower_project import lower_project
 from .model import Diagnostic, Project
-from .model.validate import validate_project
-from .st.checker import check_project as check_st
 
 
 def check_project(project: Project) -> list[Diagnostic]:
-    """All problems of ``project``: project structure first, then ST (declarations of every POU, ST bodies)."""
-    return validate_project(project) + check_st(project).diagnostics
+    """All problems of ``project``: its structure, ST (declarations of every POU, ST bodies) and the LD/FBD networks.
+
+    The LD/FBD networks are validated by lowering them, so ``check`` finds exactly what would stop a build.
+    """
+    return lower_project(project).diagnostics

@@ -57,7 +57,8 @@ def test_traversal_names_never_reach_outside_the_workspace(client: TestClient, w
     (tmp_path / "secret" / "project.json").write_text('{"name": "secret", "format": "ladderlab/1"}')
     for method in ("GET", "DELETE"):
         response = client.request(method, path)
-        assert response.status_code in (404, 422), (method, path, response.text)
+        # the client normalises '..' away, so some of these reach the browser app's mount (405 for DELETE)
+        assert response.status_code in (404, 405, 422), (method, path, response.text)
         detail(response)
     response = client.put(path, json={"name": "secret"}, headers={"If-Match": "0"})
     assert response.status_code in (404, 405, 422)
