@@ -119,7 +119,8 @@ def errors(*pous: Pou, globals: str = "") -> list[str]:
 def lower_ok(*pous: Pou, globals: str = "") -> ir.Program:
     """Lower; no errors allowed, and the IR must satisfy docs/ir.md and the diagram invariants."""
     result: LoweringResult = lower_project(project(*pous, globals=globals))
-    assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
+    found = [d.format() for d in result.diagnostics if d.severity == "error"]
+    assert found == [], found
     assert result.program is not None
     check_diagram_program(result.program)
     return result.program
@@ -229,3 +230,33 @@ def probes(program: ir.Program, pou: str) -> list[str]:
     for block in program.pous[pou.upper()].blocks:
         visit(block.statements)
     return found
+
+
+# ------------------------------------------------------------------ running
+
+
+def simulate(*pous: Pou, globals: str = "", interval: str = "T#10ms", variant: str = "fast"):
+    """A Simulation of the lowered project; every PROGRAM runs in one task of ``interval``."""
+    from ladderlab.engine.simulation import Simulation
+    from ladderlab.model.project import Task
+
+    programs = [p.name for p in pous if p.kind == "program"]
+    lowered = project(*pous, globals=globals)
+    lowered.tasks = [Task(name="main", interval=interval, programs=programs)]
+    result = lower_project(lowered)
+    found = [d.format() for d in result.diagnostics if d.severity == "error"]
+    assert found == [], found
+    check_diagram_program(result.program)
+    return Simulation(result.program, variant=variant)
+
+
+def trace(sim, pou: str, scans: list[dict[str, object]], outputs: list[str]) -> list[tuple]:
+    """Per scan: write the inputs (``{name: value}``), run one scan, read ``outputs`` of ``pou``."""
+    rows = []
+    for inputs in scans:
+        for name, value in inputs.items():
+            sim.write(f"{pou}.{name}", value)
+        sim.cycle(1)
+        assert sim.fault is None, sim.fault
+        rows.append(tuple(sim.read(f"{pou}.{name}") for name in outputs))
+    return rows

@@ -178,3 +178,28 @@ def test_extensible_inputs_and_user_functions():
     assert calls[1] == ir.Call("TWICE", (var("N", INT),), (INT,), INT, True)
     assert statements(program, "Twice", "n")[-2] == ir.Assign(ir.Var("local", "TWICE", INT), var("__M_OUT", INT),
                                                                ir.Origin("TWICE", network="n", element="o"))
+
+
+def test_gr05_an_input_node_is_evaluated_once_even_when_its_variable_is_written_in_the_network():
+    """``a`` feeds two output nodes, one of which writes ``a``: both see the value read by the input node."""
+    program = lower_ok(fbd_pou("Main", DECL, net("n", [
+        inp("x", "a", 0, 0), out("flip", "a", "negated", 10, 0), out("copy", "b", "normal", 10, 10)],
+        [("x.OUT", "flip.IN"), ("x.OUT", "copy.IN")])))
+    held = var("__P")
+    assert statements(program, "Main", "n") == [
+        ir.Assign(held, var("A"), at("x")), ir.Probe("x", held, at("x")),
+        ir.Assign(var("A"), ir.Unary("NOT", held, BOOL), at("flip")), ir.Probe("flip", held, at("flip")),
+        ir.Assign(var("B"), held, at("copy")), ir.Probe("copy", held, at("copy")),
+    ]
+
+
+def test_lab01_an_output_node_fed_by_a_block_with_en_is_written_only_when_the_block_runs():
+    program = lower_ok(fbd_pou("Main", DECL, net("n", [
+        inp("go", "a"), inp("x", "n"), blk("add", "ADD", en=True), out("o", "m"), out("ok", "q")],
+        [("go.OUT", "add.EN"), ("x.OUT", "add.IN1"), ("x.OUT", "add.IN2"), ("add.OUT", "o.IN"), ("add.ENO", "ok.IN")])))
+    body = statements(program, "Main", "n")
+    result, eno = var("__ADD_OUT", INT), var("__ADD_ENO")
+    assert body[-3:] == [
+        ir.If([(var("A"), [ir.Assign(var("M", INT), result, at("o")), ir.Probe("o", result, at("o"))])], [], at("o")),
+        ir.Assign(var("Q"), eno, at("ok")), ir.Probe("ok", eno, at("ok")),
+    ]

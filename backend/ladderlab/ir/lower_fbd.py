@@ -14,6 +14,8 @@ from __future__ import annotations
 from ..model import fbd
 from ..model.project import Pou as ModelPou
 from ..st import types as t
+from ..st.parser import parse_expression
+from ..st.rules import root_name
 from ..st.symbols import did_you_mean
 from .context import PouContext
 from .diagram_calls import Callee, PinValue, Wired, check_call, lower_call, resolve_callee
@@ -21,7 +23,7 @@ from .diagram_checks import canonical_label, check_jump_target, check_labels, ch
 from .diagram_operands import At, Operands
 from .fbd_order import NetworkGraph, Source, analyse
 from .lower_expr import convert
-from .nodes import Assign, Block, Expr, If, Jump, Origin, Probe, Return, Stmt, Var
+from .nodes import Assign, Binary, Block, Call, Convert, Expr, If, Jump, Origin, Probe, Return, Stmt, Unary, Var
 from .power import TRUE, coil, edge, not_
 from .types import BOOL
 
@@ -49,10 +51,14 @@ class _Network:
         self.values: dict[tuple[str, str], PinValue] = {}
         self.graph: NetworkGraph | None = None
         self.callees: dict[str, tuple[Callee, str | None] | None] = {}
+        self.written: set[str] = set()  # root variables the output nodes of this network write
+        self.enables: dict[str, Expr] = {}  # block id -> its EN condition (blocks with EN)
 
     def lower(self) -> Block:
         self.ops.new_network()
         self.graph = graph = analyse(self.network, self.ctx.report)
+        self.written = {name for node in graph.nodes.values() if isinstance(node, fbd.OutputNode)
+                        for name in _root_names(node.var)}
         for node in graph.nodes.values():
             if isinstance(node, fbd.Block):
                 self.callees[node.id] = resolve_callee(self.ops, node.call, node.instance, self.at(node.id))
@@ -116,13 +122,28 @@ class _Network:
 
     # ------------------------------------------------------------ nodes
     def input_node(self, node: fbd.InputNode) -> None:
-        value, _ = self.ops.read(node.expr, self.at(node.id), f"input node '{node.id}'")
-        if value is not None:
+        """An input node is evaluated once (GR-05): consumers read its operand text where they run, unless an
+        output node of this network writes a variable it reads - then its value is kept in a temporary first."""
+        value, ty = self.ops.read(node.expr, self.at(node.id), f"input node '{node.id}'")
+        if value is None:
+            return
+        origin = self.origin(node.id)
+        if self.written & set(variables(value)):
+            slot = self.ops.temp() if t.same(ty, t.BOOL) else \
+                self.ctx.hidden(f"{node.id}_IN", self.ctx.ir_type(ty), var_class="VAR_TEMP")
+            self.out.append(Assign(slot, value, origin))
+            self.values[(node.id, "OUT")], value = (slot, ty), slot
+        else:
             self.values[(node.id, "OUT")] = node.expr
-            self.out.append(Probe(node.id, value, self.origin(node.id)))
+        self.out.append(Probe(node.id, value, origin))
 
     def output_node(self, node: fbd.OutputNode) -> None:
-        """An output variable: ``normal`` stores any type; the other modes act like the LD coils on BOOL."""
+        """An output variable: ``normal`` stores any type; the other modes act like the LD coils on BOOL.
+
+        Fed by a block with EN, it is written only when that block runs (EN TRUE), as the output variable
+        of an LD box or an ST call with EN: with EN FALSE the variable keeps its value (LAB-01, LD-08).
+        ENO itself is always written (FALSE when the block did not run).
+        """
         at, origin = self.at(node.id, "IN"), self.origin(node.id)
         value = self.source(node.id, "IN")
         if value is None:
@@ -141,8 +162,11 @@ class _Network:
             expr = self.bool_value(value, at, what)
             if target is None or expr is None:
                 return
-        self.out += coil(node.mode, target, expr, lambda: self.ctx.hidden(f"{node.id}_M", BOOL), origin)
-        self.out.append(Probe(node.id, expr, origin))
+        writes = coil(node.mode, target, expr, lambda: self.ctx.hidden(f"{node.id}_M", BOOL), origin)
+        writes.append(Probe(node.id, expr, origin))
+        source = self.graph.inputs[node.id]["IN"]
+        enable = self.enables.get(source.node, TRUE) if source.pin != "ENO" else TRUE
+        self.out += writes if enable == TRUE else [If([(enable, writes)], [], origin)]
 
     def control(self, node: fbd.FbdJump | fbd.FbdReturn) -> None:
         """GR-07..10: unwired, a jump or return always acts; wired, when its input is TRUE."""
@@ -280,7 +304,30 @@ class _Network:
             self.out += probes
             return
         condition, _ = self.expr(en, at.on("EN"), f"input EN of '{node.id}'")
+        self.enables[node.id] = condition
         self.out += [If([(condition, probes)], [], origin)] if condition != TRUE else probes
+
+
+def _root_names(text: str) -> set[str]:
+    parsed = parse_expression(text)
+    root = root_name(parsed.ast) if parsed.ast is not None else None
+    return {root.name.upper()} if root is not None else set()
+
+
+def variables(expr: Expr):
+    """Upper-case names of the variables an IR expression reads."""
+    if isinstance(expr, Var):
+        yield expr.name
+    elif isinstance(expr, Unary):
+        yield from variables(expr.operand)
+    elif isinstance(expr, Binary):
+        yield from variables(expr.left)
+        yield from variables(expr.right)
+    elif isinstance(expr, Call):
+        for arg in (*expr.args, *expr.in_outs):
+            yield from variables(arg)
+    elif isinstance(expr, Convert):
+        yield from variables(expr.operand)
 
 
 def _flags(node: fbd.FbdNode) -> dict[str, fbd.PinFlags]:
