@@ -1,4 +1,4 @@
-"""The ``ladderlab`` command line: serve, check, schema (more subcommands arrive with later parts)."""
+"""The ``ladderlab`` command line: serve, check, run, compile, schema."""
 
 from __future__ import annotations
 
@@ -9,12 +9,14 @@ import os
 import sys
 from pathlib import Path
 
+from .build import build_project
 from .check import check_project
 from .model import has_errors
 from .model.schema import SCHEMA_MODELS, schema_of
+from .runner import jsonl_line, parse_duration, parse_set, run_scans, table_lines
 from .storage import StorageError, load_project_path
 
-EXIT_OK, EXIT_ERRORS, EXIT_USAGE = 0, 1, 2
+EXIT_OK, EXIT_ERRORS, EXIT_USAGE, EXIT_RUNTIME = 0, 1, 2, 3
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -45,6 +47,26 @@ def _parser() -> argparse.ArgumentParser:
     check.add_argument("--format", choices=["text", "json"], default="text")
     check.set_defaults(func=_check)
 
+    run = sub.add_parser("run", help="run a project on the virtual clock and print watched values per scan")
+    run.add_argument("project", type=Path, help="project folder, project .json file or .st file")
+    length = run.add_mutually_exclusive_group()
+    length.add_argument("--cycles", type=int, default=None, metavar="N", help="number of scans (default 1)")
+    length.add_argument("--for", dest="for_", default=None, metavar="DURATION",
+                        help="run every scan due within this virtual time, e.g. 2s or T#500ms")
+    run.add_argument("--set", dest="sets", action="append", default=[], metavar="PATH=VALUE[@SCAN]",
+                     help="write VALUE (IEC literal) to PATH before scan SCAN (default 0); repeatable")
+    run.add_argument("--watch", action="append", default=[], metavar="PATH",
+                     help="print this variable after every scan (MAIN.x, GVL.y, y, MAIN.T1.Q, MAIN.a[3]); "
+                          "default: every variable")
+    run.add_argument("--format", choices=["table", "jsonl"], default="table")
+    run.set_defaults(func=_run)
+
+    compile_ = sub.add_parser("compile", help="check and compile a project; optionally print the generated Python")
+    compile_.add_argument("project", type=Path, help="project folder, project .json file or .st file")
+    compile_.add_argument("--emit-python", action="store_true", help="print the generated Python module")
+    compile_.add_argument("--variant", choices=["fast", "debug"], default="fast")
+    compile_.set_defaults(func=_compile)
+
     schema = sub.add_parser("schema", help="print the JSON Schema of the project model")
     schema.add_argument("--name", choices=sorted(SCHEMA_MODELS), default="project.schema.json")
     schema.set_defaults(func=_schema)
@@ -62,6 +84,51 @@ def _check(args: argparse.Namespace) -> int:
         errors = sum(d.severity == "error" for d in diagnostics)
         print(f"{project.name}: {len(project.pous)} POUs, {errors} errors, {len(diagnostics) - errors} warnings")
     return EXIT_ERRORS if has_errors(diagnostics) else EXIT_OK
+
+
+def _build(args: argparse.Namespace, variant: str = "fast"):
+    """Load and build the project; prints the diagnostics and returns None when it has errors."""
+    project = load_project_path(args.project)
+    build = build_project(project, variant)
+    for diagnostic in build.diagnostics:
+        print(diagnostic.format(), file=sys.stderr)
+    return build if build.compiled is not None else None
+
+
+def _run(args: argparse.Namespace) -> int:
+    try:
+        sets = [parse_set(text) for text in args.sets]
+        for_ms = parse_duration(args.for_) if args.for_ is not None else None
+    except ValueError as error:
+        print(f"ladderlab run: {error}", file=sys.stderr)
+        return EXIT_USAGE
+    build = _build(args)
+    if build is None:
+        return EXIT_ERRORS
+    sim = build.simulation()
+    watch = args.watch or list(sim.snapshot())
+    cycles = args.cycles if args.cycles is not None or for_ms is not None else 1
+    rows = run_scans(sim, watch=watch, sets=sets, cycles=cycles, for_ms=for_ms)
+    try:
+        lines = (jsonl_line(row) for row in rows) if args.format == "jsonl" else table_lines(rows, watch)
+        for line in lines:
+            print(line)
+    except (KeyError, ValueError) as error:  # unknown path, value that does not fit its variable
+        print(f"ladderlab run: {error.args[0] if error.args else error}", file=sys.stderr)
+        return EXIT_USAGE
+    if sim.fault is not None:
+        print(sim.fault.diagnostic().format(), file=sys.stderr)
+        return EXIT_RUNTIME
+    return EXIT_OK
+
+
+def _compile(args: argparse.Namespace) -> int:
+    build = _build(args, args.variant)
+    if build is None:
+        return EXIT_ERRORS
+    if args.emit_python:
+        print(build.compiled.source)
+    return EXIT_OK
 
 
 def _schema(args: argparse.Namespace) -> int:
