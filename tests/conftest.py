@@ -8,3 +8,14 @@ from hypothesis import settings
 settings.register_profile("ci", max_examples=60, deadline=None)
 settings.register_profile("thorough", max_examples=1000, deadline=None)
 settings.load_profile(os.environ.get("LADDERLAB_HYPOTHESIS", "ci"))
+
+
+def pytest_terminal_summary(terminalreporter):
+    """Prints the external-corpus pass rates the corpus tests recorded in ``tests.support.PASS_RATES``."""
+    from tests.support import PASS_RATES
+
+    if not PASS_RATES:
+        return
+    terminalreporter.section("external corpus pass rates")
+    for corpus, (passed, total) in sorted(PASS_RATES.items()):
+        terminalreporter.write_line(f"{corpus:<48} {passed:>5}/{total:<5} {100 * passed / total:6.1f}%")

@@ -18,3 +18,6 @@ def external(*parts: str) -> pathlib.Path:
     if not path.exists():
         pytest.skip(f"{path} not present (../shared/external is optional)")
     return path
+
+#: External-corpus pass rates (name -> (passed, total)), printed at the end of the run by tests/conftest.py.
+PASS_RATES: dict[str, tuple[int, int]] = {}

@@ -13,8 +13,7 @@ import pytest
 
 from ladderlab.st.parser import parse_source, split_units
 from ladderlab.st.printer import print_source
-from tests.st.conftest import PASS_RATES
-from tests.support import external
+from tests.support import PASS_RATES, external
 
 IRONPLC_UNSUPPORTED = {
     "first_steps.st": "SFC (INITIAL_STEP / TRANSITION), a later phase",

@@ -203,6 +203,7 @@ class BodyChecker:
         if isinstance(base, t.ArrayType):
             if len(node.indices) != len(base.dims):
                 self.report("ST-INDEX", f"{base} needs {len(base.dims)} index(es), got {len(node.indices)}", node)
+            self._constant_indices_in_bounds(node, base)
             return base.element
         if isinstance(base, t.StringType):
             return t.StringType(base.wide)
@@ -211,6 +212,13 @@ class BodyChecker:
         if base is not ERROR:
             self.report("ST-INDEX", f"'[...]' needs an array, not {base}", node)
         return ERROR
+
+    def _constant_indices_in_bounds(self, node: ast.Index, array: t.ArrayType) -> None:
+        """A constant index outside the declared bounds is a compile-time error (it would fault every scan)."""
+        for index, dims in zip(node.indices, array.dims):
+            value = constant_value(self, index)
+            if dims is not None and isinstance(value, int) and not dims[0] <= value <= dims[1]:
+                self.report("ST-INDEX", f"constant array index {value} is outside {array}", index)
 
     def _unary(self, node: ast.Unary) -> Type:
         operand = self.expr(node.operand)

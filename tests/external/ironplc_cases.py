@@ -1,0 +1,109 @@
+"""Runs one IronPLC end-to-end case (../shared/external/ironplc/end_to_end_cases.json) on our engine.
+
+The case format and value conventions are the MANIFEST's: scans with ``set`` and
+absolute ``time_ms``, ``expect`` after the last scan or ``expect_after_scan``,
+DATE/DT in seconds, enums as ordinals, ``tolerance`` / ``float_compare`` for REALs,
+and ``{"op": ...}`` matchers. ``run_case`` returns None on success or why it failed.
+"""
+
+from __future__ import annotations
+
+import math
+import struct
+
+from ladderlab.build import build_project
+from ladderlab.engine.simulation import Simulation
+from ladderlab.st.project_text import source_to_project
+
+_SECONDS = ("DATE", "DT", "DATE_AND_TIME", "LDATE", "LDT")
+
+
+def run_case(case: dict) -> str | None:
+    project, diagnostics = source_to_project(case["source"], "case")
+    build = build_project(project) if project is not None else None
+    compiled = build is not None and build.compiled is not None
+    if case["kind"] == "compile_error":
+        return None if not compiled else f"compiled, expected the error: {case['error']}"
+    if not compiled:
+        found = diagnostics if build is None else build.diagnostics
+        errors = [d.format() for d in found if d.severity == "error"]
+        return "does not compile: " + "; ".join(errors[:2])
+    if case.get("compile_only"):
+        return None
+    sim = build.simulation()
+    prefix = _program_prefix(sim, project)
+    checkpoints = {int(k): v for k, v in case.get("expect_after_scan", {}).items()}
+    if "expect" in case:
+        checkpoints[len(case["scans"]) - 1] = case["expect"]
+    for index, scan in enumerate(case["scans"]):
+        for name, value in scan.get("set", {}).items():
+            sim.write(prefix(name), _to_engine(value, case.get("var_types", {}).get(name)))
+        sim.scan_at(max(scan.get("time_ms", 0), sim.time_ms))
+        if sim.fault is not None:
+            if case["kind"] == "runtime_error":
+                return None
+            return f"scan {index}: fault {sim.fault.text()}"
+        for name, expected in checkpoints.get(index, {}).items():
+            problem = _compare(sim.read(prefix(name)), expected, case, name)
+            if problem:
+                return f"scan {index}: {name}: {problem}"
+    if case["kind"] == "runtime_error":
+        return f"no fault, expected {case['error']}"
+    return None
+
+
+def _program_prefix(sim: Simulation, project):
+    programs = [p.name for p in project.pous if p.kind == "program"]
+
+    def path(name: str) -> str:
+        if len(programs) == 1:
+            try:
+                sim.location(f"{programs[0]}.{name}")
+                return f"{programs[0]}.{name}"
+            except (KeyError, ValueError):
+                pass
+        return name  # a global
+
+    return path
+
+
+def _to_engine(value, type_text: str | None):
+    if type_text and type_text.split()[0].upper() in _SECONDS and isinstance(value, (int, float)):
+        return int(value * 1000)
+    return value
+
+
+def _compare(actual, expected, case: dict, name: str) -> str | None:
+    type_text = (case.get("var_types", {}).get(name) or "").split()[0].upper() if case.get("var_types") else ""
+    if type_text in _SECONDS and isinstance(expected, (int, float)):
+        expected = expected * 1000
+    if isinstance(expected, dict) and "op" in expected:
+        return _matcher(actual, expected)
+    if isinstance(expected, float) or (isinstance(actual, float) and isinstance(expected, int)
+                                       and not isinstance(expected, bool)):
+        if not isinstance(actual, (int, float)) or isinstance(actual, bool):
+            return f"{actual!r} != {expected!r}"
+        if "tolerance" in case:
+            return None if abs(actual - expected) < case["tolerance"] else f"{actual!r} != {expected!r} ± {case['tolerance']}"
+        if case.get("float_compare") == "f32":
+            expected = struct.unpack("f", struct.pack("f", expected))[0]
+        return None if actual == expected else f"{actual!r} != {expected!r}"
+    if isinstance(expected, list) and isinstance(actual, list):
+        return None if actual == expected else f"{actual!r} != {expected!r}"
+    return None if actual == expected and type(actual) is type(expected) or (
+        actual == expected and not isinstance(expected, bool) and not isinstance(actual, bool)) \
+        else f"{actual!r} != {expected!r}"
+
+
+def _matcher(actual, spec: dict) -> str | None:
+    op = spec["op"]
+    ok = {
+        "nan": lambda: isinstance(actual, float) and math.isnan(actual),
+        "pos_inf": lambda: actual == math.inf,
+        "neg_inf": lambda: actual == -math.inf,
+        "neg_zero": lambda: actual == 0 and math.copysign(1, actual) < 0,
+        "ne": lambda: actual != spec["value"],
+        "gt": lambda: actual > spec["value"],
+        "approx": lambda: abs(actual - spec["value"]) <= spec["tol"],
+    }[op]()
+    return None if ok else f"{actual!r} does not satisfy {spec}"
