@@ -83,9 +83,10 @@ def _tasks(config: ast.Configuration) -> list[Task]:
     tasks = []
     for task in (i for i in items if isinstance(i, ast.TaskConfig)):
         props = {name.upper(): value for name, value in task.properties}
-        interval = print_expression(props["INTERVAL"]) if "INTERVAL" in props else "T#0ms"
+        # A task without INTERVAL is free-running (CFG-04, Mosaic process P0): the model's default cycle.
+        interval = {"interval": print_expression(props["INTERVAL"])} if "INTERVAL" in props else {}
         priority = props.get("PRIORITY")
-        tasks.append(Task(name=task.name, interval=interval,
+        tasks.append(Task(name=task.name, **interval,
                           priority=priority.value if isinstance(priority, ast.IntLit) else 0,
                           programs=[p.type_name for p in programs if (p.task or "").upper() == task.name.upper()]))
     return tasks
