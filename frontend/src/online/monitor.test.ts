@@ -1,0 +1,124 @@
+import fc from "fast-check";
+import { describe, expect, it } from "vitest";
+import { applyMessage, emptyMonitor, formatValue, keepSubscribed, LOG_LIMIT, parseValue, type MonitorState } from "./monitor";
+import { parseServerMessage, type ServerMessage, type ValuesMessage } from "./protocol";
+
+const values = (scan: number, changed: Record<string, boolean | number | string>, extra: Partial<ValuesMessage> = {}): ValuesMessage => ({
+  type: "values",
+  scan,
+  time_ms: scan * 10,
+  changed,
+  ...extra,
+});
+
+const fold = (messages: ServerMessage[], start: MonitorState = emptyMonitor) => messages.reduce(applyMessage, start);
+
+describe("monitor message handling (issue 6 websocket messages)", () => {
+  it("takes the first values message as a snapshot and later ones as diffs", () => {
+    const s = fold([
+      values(1, { "MAIN.START": false, "main.motor": false, "MAIN.COUNT": 0 }, { power: { c1: false, q1: false }, forced: [] }),
+      values(2, { "MAIN.START": true }, { power: { c1: true } }),
+    ]);
+    expect(s.scan).toBe(2);
+    expect(s.timeMs).toBe(20);
+    expect(s.values).toEqual({ "MAIN.START": true, "MAIN.MOTOR": false, "MAIN.COUNT": 0 });
+    expect(s.power).toEqual({ c1: true, q1: false });
+  });
+
+  it("replaces the forced list with each message that carries one and keeps it otherwise", () => {
+    const s1 = fold([values(1, {}, { forced: ["main.Stop", "MAIN.X"] })]);
+    expect([...s1.forced].sort()).toEqual(["MAIN.STOP", "MAIN.X"]);
+    const s2 = applyMessage(s1, values(2, { "MAIN.X": 1 }));
+    expect([...s2.forced].sort()).toEqual(["MAIN.STOP", "MAIN.X"]);
+    const s3 = applyMessage(s2, values(3, {}, { forced: ["MAIN.X"] }));
+    expect([...s3.forced]).toEqual(["MAIN.X"]);
+  });
+
+  it("keeps a null power as 'not executed', distinct from FALSE", () => {
+    const s = fold([values(1, {}, { power: { j1: true, c9: null, q9: null } })]);
+    expect(s.power).toEqual({ j1: true, c9: null, q9: null });
+  });
+
+  it("records status, the halt location only while halted, and the last scan time", () => {
+    let s = applyMessage(emptyMonitor, { type: "status", state: "halted", at: { pou: "Main", network: "n1" } });
+    expect(s.state).toBe("halted");
+    expect(s.at).toEqual({ pou: "Main", network: "n1" });
+    s = applyMessage(s, { type: "status", state: "running" });
+    expect(s.state).toBe("running");
+    expect(s.at).toBeNull();
+    s = applyMessage(s, values(5, {}, { last_scan_ms: 0.25 }));
+    expect(s.lastScanMs).toBe(0.25);
+    s = applyMessage(s, values(6, {}));
+    expect(s.lastScanMs).toBe(0.25);
+  });
+
+  it("appends log and error messages in order with the scan they arrived at", () => {
+    const s = fold([
+      values(7, {}),
+      { type: "log", level: "info", message: "force MAIN.STOP := TRUE" },
+      { type: "error", code: "bad-path", message: "no variable MAIN.NOPE" },
+    ]);
+    expect(s.log.map((e) => [e.seq, e.level, e.message, e.scan])).toEqual([
+      [1, "info", "force MAIN.STOP := TRUE", 7],
+      [2, "error", "bad-path: no variable MAIN.NOPE", 7],
+    ]);
+  });
+
+  it("bounds the log to the newest entries", () => {
+    const messages: ServerMessage[] = Array.from({ length: LOG_LIMIT + 5 }, (_, i) => ({ type: "log", level: "info", message: `m${i}` }));
+    const s = fold(messages);
+    expect(s.log).toHaveLength(LOG_LIMIT);
+    expect(s.log[0]!.message).toBe("m5");
+    expect(s.log[LOG_LIMIT - 1]!.message).toBe(`m${LOG_LIMIT + 4}`);
+  });
+
+  it("drops values and power that a new subscription no longer covers", () => {
+    const s = fold([values(1, { "MAIN.A": 1, "MAIN.B": 2 }, { power: { e1: true, e2: false } })]);
+    const kept = keepSubscribed(s, ["main.b"], ["e2"]);
+    expect(kept.values).toEqual({ "MAIN.B": 2 });
+    expect(kept.power).toEqual({ e2: false });
+  });
+
+  it("ends with the last value written to each path, whatever the sequence of diffs (property)", () => {
+    const path = fc.constantFrom("MAIN.A", "main.a", "MAIN.B", "GVL.C");
+    const diff = fc.dictionary(path, fc.oneof(fc.boolean(), fc.integer()));
+    fc.assert(
+      fc.property(fc.array(diff, { maxLength: 12 }), (diffs) => {
+        const s = fold(diffs.map((d, i) => values(i + 1, d)));
+        const expected: Record<string, unknown> = {};
+        for (const d of diffs) for (const [p, v] of Object.entries(d)) expected[p.toUpperCase()] = v;
+        expect(s.values).toEqual(expected);
+        expect(s.scan).toBe(diffs.length);
+      }),
+    );
+  });
+});
+
+describe("parseServerMessage", () => {
+  it("reads the known message types and ignores anything else", () => {
+    expect(parseServerMessage('{"type":"values","scan":3,"time_ms":30,"changed":{}}')).toEqual({ type: "values", scan: 3, time_ms: 30, changed: {} });
+    expect(parseServerMessage('{"type":"status","state":"running"}')).toEqual({ type: "status", state: "running" });
+    expect(parseServerMessage('{"type":"trace","MAIN.A":[1]}')).toBeNull();
+    expect(parseServerMessage('{"type":"values"}')).toBeNull();
+    expect(parseServerMessage("not json")).toBeNull();
+    expect(parseServerMessage("[1]")).toBeNull();
+  });
+});
+
+describe("values typed by the user", () => {
+  it("parses booleans and numbers and passes other text on as an IEC literal", () => {
+    expect(parseValue(" true ")).toBe(true);
+    expect(parseValue("FALSE")).toBe(false);
+    expect(parseValue("-12")).toBe(-12);
+    expect(parseValue("1.5e3")).toBe(1500);
+    expect(parseValue("T#1s")).toBe("T#1s");
+    expect(parseValue("16#FF")).toBe("16#FF");
+  });
+
+  it("formats values like IEC", () => {
+    expect(formatValue(true)).toBe("TRUE");
+    expect(formatValue(false)).toBe("FALSE");
+    expect(formatValue(42)).toBe("42");
+    expect(formatValue(undefined)).toBe("…");
+  });
+});

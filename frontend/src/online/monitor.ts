@@ -1,0 +1,117 @@
+// What the browser knows about a running simulation, folded from the server's monitor messages.
+// Pure functions only (the store and the views call them), so the handling of every message kind
+// is unit-tested without a socket. Paths are compared in upper case, as IEC names ignore case.
+import type { LogMessage, PowerState, ServerMessage, SimulationState, Value, Where } from "./protocol";
+
+export interface LogEntry {
+  /** Increasing number, a stable React key. */
+  seq: number;
+  level: string;
+  message: string;
+  at?: Where | null;
+  /** Scan counter when the entry arrived. */
+  scan: number;
+}
+
+export interface MonitorState {
+  scan: number;
+  timeMs: number;
+  lastScanMs: number | null;
+  state: SimulationState | null;
+  /** Where a halted simulation stopped. */
+  at: Where | null;
+  /** Latest value of every subscribed path, keyed by the upper-case path. */
+  values: Readonly<Record<string, Value>>;
+  /** Upper-case paths forced now. */
+  forced: ReadonlySet<string>;
+  /** Engine power of every subscribed element by id; null = not executed in the last scan. */
+  power: Readonly<Record<string, PowerState>>;
+  log: readonly LogEntry[];
+}
+
+/** The online log keeps this many entries (older ones are dropped). */
+export const LOG_LIMIT = 500;
+
+export const emptyMonitor: MonitorState = {
+  scan: 0,
+  timeMs: 0,
+  lastScanMs: null,
+  state: null,
+  at: null,
+  values: {},
+  forced: new Set(),
+  power: {},
+  log: [],
+};
+
+export const pathKey = (path: string): string => path.trim().toUpperCase();
+
+function appendLog(state: MonitorState, entry: Omit<LogEntry, "seq" | "scan">): MonitorState {
+  const last = state.log[state.log.length - 1];
+  const next = [...state.log, { ...entry, seq: (last?.seq ?? 0) + 1, scan: state.scan }];
+  return { ...state, log: next.length > LOG_LIMIT ? next.slice(next.length - LOG_LIMIT) : next };
+}
+
+/** The state after one server message (values merge, `forced` replaces, status and log append). */
+export function applyMessage(state: MonitorState, message: ServerMessage): MonitorState {
+  switch (message.type) {
+    case "values": {
+      const values = { ...state.values };
+      for (const [path, value] of Object.entries(message.changed ?? {})) values[pathKey(path)] = value;
+      return {
+        ...state,
+        scan: message.scan,
+        timeMs: message.time_ms,
+        lastScanMs: message.last_scan_ms ?? state.lastScanMs,
+        values,
+        forced: message.forced ? new Set(message.forced.map(pathKey)) : state.forced,
+        power: message.power ? { ...state.power, ...message.power } : state.power,
+      };
+    }
+    case "status":
+      return { ...state, state: message.state, at: message.state === "halted" ? (message.at ?? null) : null };
+    case "log":
+      return appendLog(state, { level: message.level, message: message.message, at: message.at ?? null });
+    case "error":
+      return appendLog(state, { level: "error", message: `${message.code}: ${message.message}` });
+  }
+}
+
+/** A local entry in the online log (connection lost, a refused compile), shown like the server's. */
+export function logLocal(state: MonitorState, level: LogMessage["level"], message: string): MonitorState {
+  return appendLog(state, { level, message });
+}
+
+/**
+ * Whether a subscription change can keep the old values: a new subscription's first message is a
+ * full snapshot, but values of paths no longer subscribed must not linger as if they were live.
+ */
+export function keepSubscribed(state: MonitorState, paths: readonly string[], elements: readonly string[]): MonitorState {
+  const wanted = new Set(paths.map(pathKey));
+  const ids = new Set(elements);
+  return {
+    ...state,
+    values: Object.fromEntries(Object.entries(state.values).filter(([p]) => wanted.has(p))),
+    power: Object.fromEntries(Object.entries(state.power).filter(([id]) => ids.has(id))),
+  };
+}
+
+/** Text of a value for labels and the watch list (TRUE/FALSE like IEC). */
+export function formatValue(value: Value | undefined): string {
+  if (value === undefined) return "…";
+  if (value === null) return "—";
+  if (typeof value === "boolean") return value ? "TRUE" : "FALSE";
+  return String(value);
+}
+
+/**
+ * The JSON value to send for text the user typed: TRUE/FALSE become booleans and plain numbers
+ * numbers; anything else goes as text, which the server reads as an IEC literal (T#1s, 16#FF).
+ */
+export function parseValue(text: string): Value {
+  const t = text.trim();
+  if (/^true$/i.test(t)) return true;
+  if (/^false$/i.test(t)) return false;
+  if (/^[+-]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)?$/.test(t)) return Number(t);
+  return t;
+}
