@@ -48,17 +48,17 @@ def test_scaling_example_runs_in_data_flow_order_with_a_probe_per_pin():
         "count", "ten", "mul", "five", "add", "speed_out", "limit", "gt", "high"]
 
 
-def test_function_result_lives_in_a_kept_slot_that_consumers_read():
+def test_function_result_goes_to_a_temporary_that_consumers_read():
     program = lower_ok(fbd_pou("Main", DECL, net("n", [inp("x", "n"), inp("y", "2"), blk("add", "ADD"), out("o", "m")],
                                                  [("x.OUT", "add.IN1"), ("y.OUT", "add.IN2"), ("add.OUT", "o.IN")])))
-    result = var("__ADD_OUT", INT)
+    result = var("__T", INT)
     assert statements(program, "Main", "n") == [
         ir.Probe("x", var("N", INT), at("x")), ir.Probe("y", ir.Const(2, INT), at("y")),
         ir.FnCall(ir.Call("ADD", (var("N", INT), ir.Const(2, INT)), (INT, INT), INT), result, at("add")),
         ir.Probe("add.OUT", result, at("add")),
         ir.Assign(var("M", INT), result, at("o")), ir.Probe("o", result, at("o")),
     ]
-    assert next(s for s in program.pous["MAIN"].slots if s.name == "__ADD_OUT").var_class == "VAR"
+    assert next(s for s in program.pous["MAIN"].slots if s.name == "__T").var_class == "VAR_TEMP"
 
 
 def test_one_input_node_is_typed_for_each_pin_it_feeds():
@@ -77,7 +77,7 @@ def test_gr29_negated_input_and_output_pins():
         inp("x", "a"), inp("y", "b"), blk("and", "AND", IN2={"negated": True}, OUT={"negated": True}),
         out("o", "q")], [("x.OUT", "and.IN1"), ("y.OUT", "and.IN2"), ("and.OUT", "o.IN")])))
     body = statements(program, "Main", "n")
-    result, inverted = var("__AND_OUT"), var("__P")
+    result, inverted = var("__P"), var("__P_1")
     assert body[2:] == [
         ir.FnCall(ir.Call("AND", (var("A"), ir.Unary("NOT", var("B"), BOOL)), (BOOL, BOOL), BOOL), result, at("and")),
         ir.Assign(inverted, ir.Unary("NOT", result, BOOL), at("and")),
@@ -104,7 +104,7 @@ def test_en_eno_block_and_probes_recorded_only_when_it_runs():
         [("go.OUT", "mul.EN"), ("x.OUT", "mul.IN1"), ("x.OUT", "mul.IN2"), ("mul.OUT", "o.IN"),
          ("mul.ENO", "ok.IN")])))
     body = statements(program, "Main", "n")
-    result, eno = var("__MUL_OUT", INT), var("__MUL_ENO")
+    result, eno = var("__MUL_OUT", INT), var("__P")  # kept between scans (EN), ENO a temporary
     assert body[2:4] == [
         ir.FnCall(ir.Call("MUL", (var("N", INT), var("N", INT)), (INT, INT), INT), result, at("mul"), var("A"), eno),
         ir.If([(var("A"), [ir.Probe("mul.OUT", result, at("mul")), ir.Probe("mul.ENO", eno, at("mul"))])], [],
@@ -119,8 +119,8 @@ def test_gr06_feedback_from_an_fb_output_reads_the_instance_before_it_runs():
         [("ton.Q", "not.IN"), ("not.OUT", "ton.IN"), ("pt.OUT", "ton.PT"), ("ton.Q", "o.IN")])))
     body = statements(program, "Main", "n")
     q = var("T1", BOOL, ir.Member("Q"))
-    assert body[0] == ir.FnCall(ir.Call("NOT", (q,), (BOOL,), BOOL), var("__NOT_OUT"), at("not"))
-    assert isinstance(body[3], ir.FbCall) and body[3].inputs[0] == ("IN", var("__NOT_OUT"))
+    assert body[0] == ir.FnCall(ir.Call("NOT", (q,), (BOOL,), BOOL), var("__P"), at("not"))
+    assert isinstance(body[3], ir.FbCall) and body[3].inputs[0] == ("IN", var("__P"))
 
 
 def test_gr06_feedback_from_a_function_reads_the_output_variable_it_writes():
@@ -176,7 +176,7 @@ def test_extensible_inputs_and_user_functions():
     calls = [s.call for s in statements(program, "Main", "n") if isinstance(s, ir.FnCall)]
     assert calls[0] == ir.Call("AND", (var("A"),) * 4, (BOOL,) * 4, BOOL)
     assert calls[1] == ir.Call("TWICE", (var("N", INT),), (INT,), INT, True)
-    assert statements(program, "Twice", "n")[-2] == ir.Assign(ir.Var("local", "TWICE", INT), var("__M_OUT", INT),
+    assert statements(program, "Twice", "n")[-2] == ir.Assign(ir.Var("local", "TWICE", INT), var("__T", INT),
                                                                ir.Origin("TWICE", network="n", element="o"))
 
 
@@ -198,8 +198,19 @@ def test_lab01_an_output_node_fed_by_a_block_with_en_is_written_only_when_the_bl
         inp("go", "a"), inp("x", "n"), blk("add", "ADD", en=True), out("o", "m"), out("ok", "q")],
         [("go.OUT", "add.EN"), ("x.OUT", "add.IN1"), ("x.OUT", "add.IN2"), ("add.OUT", "o.IN"), ("add.ENO", "ok.IN")])))
     body = statements(program, "Main", "n")
-    result, eno = var("__ADD_OUT", INT), var("__ADD_ENO")
+    result, eno = var("__ADD_OUT", INT), var("__P")
     assert body[-3:] == [
         ir.If([(var("A"), [ir.Assign(var("M", INT), result, at("o")), ir.Probe("o", result, at("o"))])], [], at("o")),
         ir.Assign(var("Q"), eno, at("ok")), ir.Probe("ok", eno, at("ok")),
     ]
+
+
+def test_negated_en_pin_from_an_operand():
+    program = lower_ok(fbd_pou("Main", DECL, net("n", [
+        inp("stop", "a"), inp("x", "n"), blk("add", "ADD", en=True, EN={"negated": True}), out("o", "m")],
+        [("stop.OUT", "add.EN"), ("x.OUT", "add.IN1"), ("x.OUT", "add.IN2"), ("add.OUT", "o.IN")])))
+    body = statements(program, "Main", "n")
+    not_a = ir.Unary("NOT", var("A"), BOOL)
+    assert body[2].en == not_a and body[3] == ir.If([(not_a, [ir.Probe("add.OUT", var("__ADD_OUT", INT), at("add")),
+                                                             ir.Probe("add.ENO", var("__P"), at("add"))])],
+                                                   [], at("add"))

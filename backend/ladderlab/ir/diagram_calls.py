@@ -17,14 +17,14 @@ from dataclasses import dataclass
 from ..st import ast, stdlib
 from ..st import types as t
 from ..st.symbols import PouInfo, did_you_mean
-from .diagram_operands import At, Operands, subnodes
+from .diagram_operands import At, Operands
 from .lower_expr import lower_en_eno, std_call, user_call
 from .lower_st import _fb_call  # the FB call of an ST statement; a box is lowered exactly the same way
 from .lower_types import LoweringError
 from .nodes import Expr, FnCall, If, Origin, Stmt, Var
 
 Wired = tuple[Expr, t.Type]  # a value from a wire or the power flow (hidden slot or constant) and its type
-PinValue = str | Wired  # operand text, or a value from a wire or the power flow
+PinValue = str | Wired | ast.Expr  # operand text, a value from a wire or the power flow, or a ready AST
 
 
 @dataclass(frozen=True)
@@ -154,7 +154,7 @@ def check_call(ops: Operands, callee: Callee, instance: str | None, inputs: dict
         ops.report(at.on(pin), f"{ops.lang}-IN-OUT", f"in-out {pin} of {callee.name} needs a variable, not a "
                    "computed value")
     args: list[ast.Arg] = []
-    pins: dict[int, str] = {}
+    pins: dict[str, ast.Arg] = {}
     failed = bool(missing or wired_in_outs)
     if en is not None:
         node = _node(ops, en, at.on("EN"), f"input EN of {callee.name}")
@@ -191,12 +191,11 @@ def check_call(ops: Operands, callee: Callee, instance: str | None, inputs: dict
 def _node(ops: Operands, value: PinValue, at: At, what: str) -> ast.Expr | None:
     if isinstance(value, str):
         return ops.parse(value, at, what)
-    return ops.wire_node(*value)
+    return ops.wire_node(*value) if isinstance(value, tuple) else value
 
 
-def _arg(arg: ast.Arg, pin: str, pins: dict[int, str]) -> ast.Arg:
-    for node in subnodes(arg):
-        pins[id(node)] = pin
+def _arg(arg: ast.Arg, pin: str, pins: dict[str, ast.Arg]) -> ast.Arg:
+    pins[pin] = arg
     return arg
 
 

@@ -11,14 +11,15 @@ write like LD coils (power.coil). Every block output pin is probed as
 
 from __future__ import annotations
 
+import re
+
 from ..model import fbd
 from ..model.project import Pou as ModelPou
+from ..st import ast
 from ..st import types as t
-from ..st.parser import parse_expression
-from ..st.rules import root_name
 from ..st.symbols import did_you_mean
 from .context import PouContext
-from .diagram_calls import Callee, PinValue, Wired, check_call, lower_call, resolve_callee
+from .diagram_calls import Callee, PinValue, check_call, lower_call, resolve_callee
 from .diagram_checks import canonical_label, check_jump_target, check_labels, check_unique_ids, check_unique_networks
 from .diagram_operands import At, Operands
 from .fbd_order import NetworkGraph, Source, analyse
@@ -26,6 +27,8 @@ from .lower_expr import convert
 from .nodes import Assign, Binary, Block, Call, Convert, Expr, If, Jump, Origin, Probe, Return, Stmt, Unary, Var
 from .power import TRUE, coil, edge, not_
 from .types import BOOL
+
+_ROOT = re.compile(r"\s*([A-Za-z_][A-Za-z0-9_]*)")
 
 
 def lower_fbd_body(pou: ModelPou, ctx: PouContext) -> list[Block]:
@@ -87,7 +90,9 @@ class _Network:
         """A pin value as an IR expression and its type (operand texts are read and typed here)."""
         if isinstance(value, str):
             return self.ops.read(value, at, what, expected)
-        return value
+        if isinstance(value, tuple):
+            return value
+        return self.ops.lower(value, at), value.ty  # an AST the call check has typed (a negated operand)
 
     def source(self, node: str, pin: str) -> PinValue | None:
         """What feeds input ``pin`` of ``node`` (None: not wired, or its producer failed and was reported)."""
@@ -129,8 +134,7 @@ class _Network:
             return
         origin = self.origin(node.id)
         if self.written & set(variables(value)):
-            slot = self.ops.temp() if t.same(ty, t.BOOL) else \
-                self.ctx.hidden(f"{node.id}_IN", self.ctx.ir_type(ty), var_class="VAR_TEMP")
+            slot = self.ops.temp(self.ctx.ir_type(t.concrete(ty)))
             self.out.append(Assign(slot, value, origin))
             self.values[(node.id, "OUT")], value = (slot, ty), slot
         else:
@@ -217,16 +221,23 @@ class _Network:
         if node.en and en is None:
             self.ops.report(at.on("EN"), "FBD-MISSING-PIN", f"input EN of '{node.id}' is not connected")
             return
-        eno = self.ctx.hidden(f"{node.id}_ENO", BOOL) if node.en else None
+        eno = self.ops.temp() if node.en else None
         call = check_call(self.ops, callee, instance, inputs, {}, at, en, eno)
         if call is None:
             return
-        result = None if callee.is_fb else self.ctx.hidden(f"{node.id}_OUT", self.ctx.ir_type(call.ty))
+        result = None if callee.is_fb else self._result(node, call.ty)
         statements = lower_call(self.ops, callee, call, result, at, origin)
         if statements is None:
             return
         self.out += statements
         self._outputs(node, callee, instance, call, result, eno, flags, en)
+
+    def _result(self, node: fbd.Block, ty: t.Type) -> Var:
+        """Where a function block's result goes: a slot kept between scans when the block has EN (with EN
+        FALSE it keeps its value), else a temporary (a loop reads it through an output variable)."""
+        if node.en:
+            return self.ctx.hidden(f"{node.id}_OUT", self.ctx.ir_type(ty))
+        return self.ops.temp(self.ctx.ir_type(ty))
 
     def _pins_known(self, node: fbd.Block, callee: Callee, flags: dict[str, fbd.PinFlags]) -> bool:
         """Wires from the block and pin flags name pins it has; EN/ENO need ``en``; edges are for inputs.
@@ -256,7 +267,8 @@ class _Network:
         if flags is None or not flags.negated and flags.edge is None:
             return value
         flag = "negated" if flags.edge is None else f"{flags.edge} edge"
-        expr = self.bool_value(value, at, f"the {flag} input {at.pin} of '{at.element}'")
+        what = f"the {flag} input {at.pin} of '{at.element}'"
+        expr = self.bool_value(value, at, what)
         if expr is None:
             return None
         if flags.negated:
@@ -268,7 +280,8 @@ class _Network:
             self.out += [Assign(slot, expr, self.origin(at.element)), remember]
             return slot, t.BOOL
         if isinstance(value, str):
-            return f"NOT ({value})"
+            node = self.ops.parse(value, at, what)
+            return ast.Unary("NOT", node) if node is not None else None
         slot = self.ops.temp()
         self.out.append(Assign(slot, expr, self.origin(at.element)))
         return slot, t.BOOL
@@ -309,9 +322,9 @@ class _Network:
 
 
 def _root_names(text: str) -> set[str]:
-    parsed = parse_expression(text)
-    root = root_name(parsed.ast) if parsed.ast is not None else None
-    return {root.name.upper()} if root is not None else set()
+    """The variable an output node's operand writes: the name it starts with (``x``, ``x.f``, ``a[i]``)."""
+    match = _ROOT.match(text)
+    return {match.group(1).upper()} if match else set()
 
 
 def variables(expr: Expr):

@@ -214,7 +214,7 @@ class _Rung:
             result, pins = None, {pin: self.ops.read(f"{instance}.{pin}", at.on(pin), f"output {pin}")[0]
                                   for pin in callee.output_names()}
         else:
-            result = self._result(node, result_text, at)
+            result = self._result(node, result_text, at, box.en)
             pins = {"OUT": result}
         if result is None and not callee.is_fb:
             return None
@@ -234,11 +234,14 @@ class _Rung:
         self.out += probes if en is None or power == TRUE else [If([(power, probes)], [], origin)]
         return right
 
-    def _result(self, node, text: str | None, at: At) -> Var | None:
-        """Where a function box's result goes: its OUT variable, else a hidden slot kept between scans."""
+    def _result(self, node, text: str | None, at: At, en: bool) -> Var | None:
+        """Where a function box's result goes: its OUT variable, else a slot kept between scans when the box
+        has EN (with EN FALSE it keeps its value), else a temporary."""
         if text is not None:
             return self.ops.value_target(text, at.on("OUT"), f"output OUT of {node.callee.name}", node.ty)
-        return self.ctx.hidden(f"{at.element}_OUT", self.ctx.ir_type(node.ty))
+        if en:
+            return self.ctx.hidden(f"{at.element}_OUT", self.ctx.ir_type(node.ty))
+        return self.ops.temp(self.ctx.ir_type(node.ty))
 
     def _bool_output(self, callee: Callee, node, pins: dict[str, Expr | None], at: At) -> Expr | None:
         if callee.is_fb:

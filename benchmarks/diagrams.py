@@ -1,0 +1,112 @@
+"""Diagram benchmark (issue 5): a generated 10,000-network LD program and the same logic in FBD, from the
+project model through the LD/FBD lowering and the engine.
+
+Each network: ``--| A |--|/ B |--( C )--``; every fourth also ``--| C |--[TON]--[CTU]--( Y )--`` and an
+ADD box with EN counting while C is on. Figures (issue 5 targets, 2-core machine): lowering + compile
+(<= 3 s), microseconds per scan with monitoring off (fast variant, <= 5 ms) and on (debug variant with
+probes, <= 2x off). Prints one line per figure.
+"""
+
+from __future__ import annotations
+
+import pathlib
+import statistics
+import sys
+import time
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+sys.path[:0] = [str(ROOT / "backend"), str(ROOT)]
+
+from ladderlab.engine.compile import compile_program  # noqa: E402
+from ladderlab.engine.simulation import Simulation  # noqa: E402
+from ladderlab.ir.lower_project import lower_project  # noqa: E402
+from ladderlab.model import fbd, ld  # noqa: E402
+from ladderlab.model.project import Pou, Project, Task  # noqa: E402
+
+NETWORKS = 10_000
+
+
+def declarations(networks: int) -> str:
+    lines = ["VAR"]
+    for n in range(networks):
+        lines.append(f"    A{n}, B{n}, C{n} : BOOL;")
+        if n % 4 == 0:
+            lines.append(f"    T{n} : TON; K{n} : CTU; X{n} : INT; Y{n} : BOOL;")
+    return "\n".join(lines + ["END_VAR"])
+
+
+def ld_network(n: int) -> ld.LdNetwork:
+    elements: list = [ld.Contact(id=f"a{n}", var=f"A{n}"), ld.Contact(id=f"b{n}", var=f"B{n}", mode="nc"),
+                      ld.Coil(id=f"c{n}", var=f"C{n}")]
+    if n % 4:
+        return ld.LdNetwork(id=f"n{n}", elements=elements)
+    timers = [ld.Contact(id=f"tc{n}", var=f"C{n}"),
+              ld.Box(id=f"t{n}", call="TON", instance=f"T{n}", inputs={"PT": "T#100ms"}),
+              ld.Box(id=f"k{n}", call="CTU", instance=f"K{n}", inputs={"PV": "5"}),
+              ld.Coil(id=f"y{n}", var=f"Y{n}")]
+    add = [ld.Box(id=f"x{n}", call="ADD", en=True, inputs={"IN1": f"X{n}", "IN2": "1"}, outputs={"OUT": f"X{n}"})]
+    return ld.LdNetwork(id=f"n{n}", elements=[*elements[:2], ld.Parallel(
+        id=f"p{n}", branches=[[elements[2]], timers, add])])
+
+
+def fbd_network(n: int) -> fbd.FbdNetwork:
+    def wire(a: str, b: str) -> fbd.Wire:
+        (x, p), (y, q) = a.split("."), b.split(".")
+        return fbd.Wire.model_validate({"from": {"node": x, "pin": p}, "to": {"node": y, "pin": q}})
+
+    nodes: list = [fbd.InputNode(id=f"a{n}", expr=f"A{n}"), fbd.InputNode(id=f"b{n}", expr=f"B{n}"),
+                   fbd.Block(id=f"g{n}", call="AND", pins={"IN2": fbd.PinFlags(negated=True)}),
+                   fbd.OutputNode(id=f"c{n}", var=f"C{n}")]
+    wires = [wire(f"a{n}.OUT", f"g{n}.IN1"), wire(f"b{n}.OUT", f"g{n}.IN2"), wire(f"g{n}.OUT", f"c{n}.IN")]
+    if n % 4 == 0:
+        nodes += [fbd.InputNode(id=f"pt{n}", expr="T#100ms"), fbd.Block(id=f"t{n}", call="TON", instance=f"T{n}"),
+                  fbd.InputNode(id=f"pv{n}", expr="5"), fbd.Block(id=f"k{n}", call="CTU", instance=f"K{n}"),
+                  fbd.OutputNode(id=f"y{n}", var=f"Y{n}"), fbd.InputNode(id=f"x{n}", expr=f"X{n}"),
+                  fbd.InputNode(id=f"one{n}", expr="1"), fbd.Block(id=f"add{n}", call="ADD", en=True),
+                  fbd.OutputNode(id=f"xo{n}", var=f"X{n}")]
+        wires += [wire(f"g{n}.OUT", f"t{n}.IN"), wire(f"pt{n}.OUT", f"t{n}.PT"), wire(f"t{n}.Q", f"k{n}.CU"),
+                  wire(f"pv{n}.OUT", f"k{n}.PV"), wire(f"k{n}.Q", f"y{n}.IN"), wire(f"g{n}.OUT", f"add{n}.EN"),
+                  wire(f"x{n}.OUT", f"add{n}.IN1"), wire(f"one{n}.OUT", f"add{n}.IN2"),
+                  wire(f"add{n}.OUT", f"xo{n}.IN")]
+    return fbd.FbdNetwork(id=f"n{n}", nodes=nodes, wires=wires)
+
+
+def project(language: str, networks: int) -> Project:
+    body = ld.LdBody(networks=[ld_network(n) for n in range(networks)]) if language == "ld" else \
+        fbd.FbdBody(networks=[fbd_network(n) for n in range(networks)])
+    pou = Pou(name="Main", kind="program", language=language, declarations=declarations(networks), body=body)
+    return Project(name="bench", pous=[pou], tasks=[Task(name="main", interval="T#10ms", programs=["Main"])])
+
+
+def per_scan_us(sim: Simulation, scans: int) -> float:
+    sim.cycle(5)  # warm up the interpreter's specialisation
+    samples = []
+    for _ in range(scans):
+        for n in range(0, NETWORKS, 7):  # change inputs, so the rungs switch
+            sim.write(f"Main.A{n}", not sim.read(f"Main.A{n}"))
+        before = time.perf_counter()
+        sim.cycle(1)
+        samples.append((time.perf_counter() - before) * 1e6)
+    return statistics.median(samples)
+
+
+def main() -> None:
+    for language in ("ld", "fbd"):
+        model = project(language, NETWORKS)
+        start = time.perf_counter()
+        result = lower_project(model)
+        lowered = time.perf_counter() - start
+        assert result.program is not None, [d.format() for d in result.diagnostics[:5]]
+        compiled = compile_program(result.program, "fast")
+        build = time.perf_counter() - start
+        print(f"{language.upper()} {NETWORKS} networks: lowering {lowered:.2f} s, lowering + compile {build:.2f} s "
+              "(target <= 3 s)")
+        off = per_scan_us(Simulation(compiled), 15)
+        print(f"{language.upper()} scan, monitoring off (fast variant): {off:.0f} us (target <= 5000 us)")
+        on = per_scan_us(Simulation(result.program, variant="debug"), 10)
+        print(f"{language.upper()} scan, monitoring on (debug variant, probes): {on:.0f} us = {on / off:.2f}x off "
+              "(target <= 2x)")
+
+
+if __name__ == "__main__":
+    main()
