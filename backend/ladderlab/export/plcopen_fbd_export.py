@@ -22,7 +22,6 @@ from ..model.diagnostics import Diagnostic
 from ..model.fbd import (
     Block,
     Connector,
-    Continuation,
     FbdJump,
     FbdNetwork,
     FbdNode,

@@ -14,7 +14,7 @@ import xml.etree.ElementTree as ET
 from collections import defaultdict
 from dataclasses import dataclass, field
 
-from .plcopen_blocks import Signatures
+from .plcopen_blocks import RESULT_PIN, Signatures
 from .plcopen_xml import Reader, info, local
 
 #: Elements that take part in the flow (everything but drawing-only objects).
@@ -179,6 +179,7 @@ def _read_pins(element: Element, reader: Reader, signatures: Signatures) -> None
         for position, variable in enumerate(reader.children(reader.child(node, "outputVariables"), "variable")):
             pin = variable.get("formalParameter") or _positional([n for n, _ in sig.outputs] if sig else [],
                                                                  position, "OUT")
+            pin = _result_pin(node, pin)
             element.out_pins.append(pin)
             element.mods.setdefault(pin, _mods(variable))
     elif element.tag == "rightPowerRail":
@@ -189,6 +190,11 @@ def _read_pins(element: Element, reader: Reader, signatures: Signatures) -> None
         element.mods[""] = _mods(node, "In" if element.tag == "inOutVariable" else "")
     if element.tag in SINGLE_OUT and element.tag not in SINGLE_IN:
         element.mods[""] = _mods(node)
+
+
+def _result_pin(block: ET.Element, pin: str) -> str:
+    """RuSTy names a function's result pin after the function; the project calls it OUT."""
+    return RESULT_PIN if pin.upper() == block.get("typeName", "").upper() else pin
 
 
 def _positional(names: list[str], position: int, stem: str) -> str:
@@ -210,7 +216,8 @@ def _resolve(graph: Graph, reader: Reader, pou: str) -> None:
                                   element.node, pou=pou)
                     continue
                 if source.tag == "block":
-                    param = conn.param or next((p for p in source.out_pins if p.upper() != "ENO"), None)
+                    param = _result_pin(source.node, conn.param) if conn.param else next(
+                        (p for p in source.out_pins if p.upper() != "ENO"), None)
                     conn = Conn(conn.ref, param, conn.index)
                 else:
                     conn = Conn(conn.ref, None, conn.index)

@@ -224,26 +224,30 @@ class LdImporter:
             self.inline_call(element, type_name, values)
             self.plans[element.local_id] = _Plan("inline")
             return
-        plan = _Plan("box", en=wired_en)
-        if wired_en:
-            plan.power_in = en_pin
-        else:
-            # An unknown FB (a vendor block) runs unconditionally with every input as drawn: the export
-            # cannot name its power pin again, so the power flow only reaches it as an input.
-            plan.power_in = self.power_input(values, inputs, sig.bool_inputs() if sig is not None else
-                                             values[:1] if not instance else [])
-            if plan.power_in is None:
-                plan.en, plan.virtual_en, plan.power_in = True, True, "EN"
-        if plan.en:
-            plan.power_out = eno_pin or "ENO"
-        else:
-            wanted = sig.power_out(False) if sig is not None else next(
-                (p for p in element.out_pins if p.upper() != "ENO"), None)
-            pin = next((p for p in element.out_pins if wanted and p.upper() == wanted.upper()), wanted)
-            declared = dict(sig.outputs).get(wanted) if sig is not None else None
-            if pin is not None and (canonical_type_name(declared or "") == "BOOL" or self.feeds_power(element, pin)):
-                plan.power_out = pin
+        plan = _Plan("box", en=True, power_in=en_pin, power_out=eno_pin or "ENO")
+        if not wired_en:
+            # Without EN the power flow passes through the box only from a BOOL input to a BOOL output. An
+            # unknown FB (a vendor block) has neither as far as the export could name them again: it runs
+            # unconditionally (EN from the rail, as an unwired EN means) with every input as drawn.
+            power_in = self.power_input(values, inputs, sig.bool_inputs() if sig is not None else
+                                        values[:1] if not instance else [])
+            power_out = self.power_output(element, sig)
+            if power_in is not None and power_out is not None:
+                plan = _Plan("box", power_in=power_in, power_out=power_out)
+            else:
+                plan.virtual_en, plan.power_in = True, "EN"
         self.plans[element.local_id] = plan
+
+    def power_output(self, element: Element, sig) -> str | None:
+        """The output the power flow leaves by: the first that is BOOL, or of a generic type and driving contacts
+        or coils (the lowering accepts a function's generic result when its operands make it BOOL)."""
+        wanted = sig.power_out(False) if sig is not None else next(
+            (p for p in element.out_pins if p.upper() != "ENO"), None)
+        pin = next((p for p in element.out_pins if wanted and p.upper() == wanted.upper()), wanted)
+        declared = dict(sig.outputs).get(wanted) if sig is not None else None
+        if pin is not None and (canonical_type_name(declared or "") == "BOOL" or self.feeds_power(element, pin)):
+            return pin
+        return None
 
     def feeds_power(self, element: Element, pin: str) -> bool:
         """Does a pin of uncertain type (generic OUT of SEL, a vendor block's output) drive contacts or coils?"""

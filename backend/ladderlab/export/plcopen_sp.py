@@ -86,19 +86,12 @@ def reduce_graph(edges: list[Edge], source: int, sink: int, key: Key, ends: list
     ``ends`` are the sinks of jumps and returns, one per element. Branches into them
     are dead branches hung off the live graph. When nothing reaches ``sink`` (a rung
     that ends in a jump), one of them is the rung's end: each is tried in the given
-    order (the importer lists the last element of the top row first).
+    order (the importer lists the top row's last element first).
     Only edges reachable from ``source`` count.
     """
     edges = [e for e in edges if e.u in reachable(edges, source)]
-    if source in reachable(edges, sink, backwards=True) or not ends:
-        return _Reducer(key).live(edges, source, sink, list(ends))
-    failure: NotSeriesParallel | None = None
-    for end in ends:
-        try:
-            return _Reducer(key).live(edges, source, end, [e for e in ends if e != end])
-        except NotSeriesParallel as err:
-            failure = failure or err
-    raise failure
+    reducer = _Reducer(key)
+    return reducer.resolve(reducer.rung(edges, source, sink, list(ends)))
 
 
 class _Reducer:
@@ -128,27 +121,39 @@ class _Reducer:
         filled.sort(key=self.first_key)
         return filled[0] if len(filled) == 1 else [Par(filled)]
 
+    def rung(self, edges: list[Edge], source: int, sink: int | None, ends: list[int]) -> list[Any]:
+        """Reduce towards ``sink``, or, when nothing reaches it, towards the first end that works."""
+        if sink is not None and (source in reachable(edges, sink, backwards=True) or not ends):
+            return self.live(edges, source, sink, ends)
+        failure: NotSeriesParallel | None = None
+        for end in ends:
+            try:
+                return self.live(edges, source, end, [e for e in ends if e != end])
+            except NotSeriesParallel as err:
+                failure = failure or err
+        raise failure or NotSeriesParallel([item for e in edges for item in e.items])
+
     def live(self, edges: list[Edge], source: int, sink: int, ends: list[int]) -> list[Any]:
         """Reduce the part that reaches ``sink``; what only reaches ``ends`` hangs off it as dead branches."""
-        dead = -1  # one sink for all dead branches while they are reduced
-        edges = [Edge(e.u, dead if e.v in ends else e.v, e.items) for e in edges]
         live = reachable(edges, sink, backwards=True)
         marks: dict[int, list[list[Any]]] = defaultdict(list)
-        for point, branch in self.dead_branches(edges, live, dead):
-            marks[point].append(branch)
+        for anchor, region in self.dead_regions(edges, live, set(ends)):
+            region_ends = [e for e in ends if any(edge.v == e for edge in region)]
+            marks[anchor].append(self.rung(region, anchor, None, region_ends))
         main = [e for e in edges if e.u in live and e.v in live]
         items = self.reduce(main, source, sink, marks)
         if marks.get(source):
             items = [_Mark(marks.pop(source)), *items]
         if marks:
             raise NotSeriesParallel([item for branches in marks.values() for b in branches for item in b])
-        return self.resolve(items)
+        return items
 
-    def dead_branches(self, edges: list[Edge], live: set[int], dead: int) -> list[tuple[int, list[Any]]]:
-        """Each dead region hangs off exactly one live point; reduce it to a branch ending in its jumps/returns."""
-        dead_nodes = {n for e in edges for n in (e.u, e.v) if n not in live and n != dead}
+    @staticmethod
+    def dead_regions(edges: list[Edge], live: set[int], ends: set[int]) -> list[tuple[int, list[Edge]]]:
+        """Parts that reach only jumps/returns, each with the one live point it hangs off."""
+        dead_nodes = {n for e in edges for n in (e.u, e.v) if n not in live and n not in ends}
         region_of: dict[int, int] = {}
-        for start in dead_nodes:  # weakly connected regions of dead points (the dead sink does not join them)
+        for start in dead_nodes:  # weakly connected regions of dead points (end sinks do not join them)
             if start in region_of:
                 continue
             region_of[start] = start
@@ -169,8 +174,7 @@ class _Reducer:
             anchors = {e.u for e in region if e.u in live}
             if len(anchors) != 1:
                 raise NotSeriesParallel([item for e in region for item in e.items])
-            anchor = anchors.pop()
-            out.append((anchor, self.reduce(region, anchor, dead, {})))
+            out.append((anchors.pop(), region))
         return out
 
     def reduce(self, edges: list[Edge], source: int, sink: int, marks: dict[int, list[list[Any]]]) -> list[Any]:
