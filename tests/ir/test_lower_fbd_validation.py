@@ -8,7 +8,19 @@ from hypothesis import strategies as st
 
 from ladderlab.ir.lower_project import lower_project
 from ladderlab.model import fbd
-from tests.ir.diagram_support import blk, errors, fbd_pou, fjump, inp, net, out, project, wire
+from tests.ir.diagram_support import (
+    blk,
+    connector,
+    continuation,
+    errors,
+    fbd_pou,
+    fjump,
+    inp,
+    net,
+    out,
+    project,
+    wire,
+)
 
 DECL = ("VAR a, b : BOOL; n, m : INT; t1 : TON; c1 : CTU; END_VAR VAR CONSTANT kc : BOOL := TRUE; END_VAR "
         "VAR_INPUT inb : BOOL; END_VAR")
@@ -98,6 +110,10 @@ CASES = {
     "unknown order entry": (
         net("n1", [], [], order=["ghost"]),
         f"{WHERE} ghost: error FBD-ORDER: the order list names 'ghost', which is not a node of this network"),
+    "connector named like a variable": (
+        net("n1", [inp("i", "a"), connector("k", "B"), continuation("c", "b"), out("o", "a")],
+            [("i.OUT", "k.IN"), ("c.OUT", "o.IN")]),
+        f"{WHERE} k: error FBD-CONNECTOR: connector 'B' has the name of a variable of this POU"),
     "duplicate node id": (
         net("n1", [inp("i", "a"), out("i", "b")], []),
         f"{WHERE} i: error FBD-DUPLICATE-ID: element id 'i' is also used in network n1: element ids must be unique "

@@ -134,13 +134,14 @@ class Operands:
         if _INTEGER.fullmatch(text):
             return ast.IntLit(int(text), span=span)
         match = _ACCESS.fullmatch(text)
-        if match is None or not self._declared(match.group(1)):
+        if match is None or not self.declared(match.group(1)):
             return None
         name = ast.Name(match.group(1), span=ast.Span(1, 1, 1, len(match.group(1)) + 1))
         return ast.Member(name, match.group(2), span=span) if match.group(2) else name
 
-    def _declared(self, name: str) -> bool:
-        """A declared name is never a keyword, so the parser reads it as a name."""
+    def declared(self, name: str) -> bool:
+        """Is ``name`` a variable of this POU or a global? (A declared name is never a keyword, so the parser
+        reads it as a name.)"""
         upper = name.upper()
         return upper in self.ctx.info.symbols or upper in self.ctx.checked.globals
 

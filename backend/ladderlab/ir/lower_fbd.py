@@ -65,6 +65,8 @@ class _Network:
         for node in graph.nodes.values():
             if isinstance(node, fbd.Block):
                 self.callees[node.id] = resolve_callee(self.ops, node.call, node.instance, self.at(node.id))
+            elif isinstance(node, fbd.Connector):
+                self.connector_name(node)
         for node_id in graph.order:
             node = graph.nodes[node_id]
             if isinstance(node, fbd.InputNode):
@@ -124,6 +126,14 @@ class _Network:
                         f"first call; also connect {source.node}.{source.pin} to an output variable, whose declared "
                         "initial value then starts the loop")
         return None
+
+    def connector_name(self, node: fbd.Connector) -> None:
+        """GR-02: a connector may not take the name of another named element of the POU."""
+        upper = node.name.upper()
+        clash = "a label" if upper in self.labels else "a variable" if self.ops.declared(node.name) else None
+        if clash:
+            self.ops.report(self.at(node.id), "FBD-CONNECTOR", f"connector '{node.name}' has the name of {clash} "
+                            "of this POU")
 
     # ------------------------------------------------------------ nodes
     def input_node(self, node: fbd.InputNode) -> None:
