@@ -15,7 +15,7 @@ describe("operand paths of the online LD", () => {
   it("puts the POU's own variables under the instance and leaves globals bare", () => {
     expect(operandPath("Start", "MAIN", SYMBOLS)).toBe("MAIN.START");
     expect(operandPath(" T1.Q ", "MAIN", SYMBOLS)).toBe("MAIN.T1.Q");
-    expect(operandPath("Alarm", "MAIN", SYMBOLS)).toBe("ALARM");
+    expect(operandPath("Alarm", "MAIN", SYMBOLS)).toBe("GVL.ALARM");
     expect(operandPath("arr[3]", "MAIN.FB1", SYMBOLS)).toBe("MAIN.FB1.ARR[3]");
   });
 
@@ -34,9 +34,9 @@ describe("bindLd", () => {
   it("subscribes the elements and variables of the visible networks only", () => {
     const binding = bindLd(motorRung, "MAIN", SYMBOLS, new Set(["n1"]));
     expect(binding.paths.sort()).toEqual(["MAIN.MOTOR", "MAIN.START", "MAIN.STOP"]);
-    expect(binding.elements).toEqual([{ pou_instance: "MAIN", elements: ["p1", "c1", "c2", "c3", "q1"] }]);
+    expect(binding.elements).toEqual([{ pou_instance: "MAIN", ids: ["p1", "c1", "c2", "c3", "q1"] }]);
     const all = bindLd(motorRung, "MAIN", SYMBOLS);
-    expect(all.paths.sort()).toEqual(["ALARM", "MAIN.COUNT", "MAIN.MOTOR", "MAIN.START", "MAIN.STOP"]);
+    expect(all.paths.sort()).toEqual(["GVL.ALARM", "MAIN.COUNT", "MAIN.MOTOR", "MAIN.START", "MAIN.STOP"]);
   });
 
   it("subscribes nothing for networks out of view", () => {
@@ -45,7 +45,7 @@ describe("bindLd", () => {
 });
 
 describe("ldOnlineView", () => {
-  it("colours from the engine's power, dims skipped elements, labels values and marks forces by operand", () => {
+  it("colours from the engine's power of its own instance, dims skipped elements, labels values and marks forces by operand", () => {
     const binding = bindLd(motorRung, "MAIN", SYMBOLS);
     const monitor = applyMessage(emptyMonitor, {
       type: "values",
@@ -53,7 +53,7 @@ describe("ldOnlineView", () => {
       time_ms: 40,
       changed: { "MAIN.START": true, "MAIN.STOP": true, "MAIN.MOTOR": false, "MAIN.COUNT": 7 },
       forced: ["MAIN.STOP"],
-      power: { p1: true, c1: true, c2: false, c3: false, q1: false, c4: null, q2: null },
+      power: { "MAIN/p1": true, "MAIN/c1": true, "MAIN/c2": false, "MAIN/c3": false, "MAIN/q1": false, "MAIN/c4": null, "MAIN/q2": null, "OTHER/c1": false },
     });
     const view = ldOnlineView(monitor, binding);
     expect(view.power).toEqual({ p1: true, c1: true, c2: false, c3: false, q1: false });

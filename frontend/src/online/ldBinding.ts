@@ -4,12 +4,14 @@
 import type { SymbolInfo } from "../generated/api";
 import { walk, type LdBody, type LdElement } from "../ld/model";
 import type { OnlineView } from "../ld/view/types";
-import { pathKey, type MonitorState } from "./monitor";
+import { pathKey, powerKey, type MonitorState } from "./monitor";
 import type { ElementSubscription } from "./protocol";
 
 /** A variable operand: names with member/index access (`T1.Q`, `A[3]`); literals and addresses are not. */
 const VARIABLE = /^[A-Za-z_][A-Za-z0-9_]*(\.[A-Za-z_][A-Za-z0-9_]*|\[\s*\d+\s*\])*$/;
 const LITERALS = new Set(["TRUE", "FALSE"]);
+/** The first path segment of globals (engine/paths.py GLOBALS_PREFIX). */
+const GLOBALS = "GVL";
 
 /** The variable operands one element shows (contact/coil variable, compare sides, box pins). */
 export function operandsOf(element: LdElement): string[] {
@@ -30,8 +32,9 @@ export function operandsOf(element: LdElement): string[] {
 }
 
 /**
- * The simulation path of an operand in POU instance `instance`: the instance's own variable
- * (`MAIN.START`), or the global itself when only a global has that name; null for literals.
+ * The canonical simulation path of an operand in POU instance `instance`, as the server names it
+ * in its messages: the instance's own variable (`MAIN.START`) or a global (`GVL.ALARM`); null for
+ * literals and addresses.
  */
 export function operandPath(operand: string, instance: string, symbols: readonly SymbolInfo[]): string | null {
   const text = operand.trim();
@@ -39,7 +42,7 @@ export function operandPath(operand: string, instance: string, symbols: readonly
   const head = text.split(/[.[]/, 1)[0]!.toUpperCase();
   const symbol = symbols.find((s) => s.name.toUpperCase() === head);
   const global = symbol?.var_class === "VAR_GLOBAL" || symbol?.var_class === "VAR_EXTERNAL";
-  return pathKey(global ? text : `${instance}.${text}`);
+  return pathKey(`${global ? GLOBALS : instance}.${text}`);
 }
 
 export interface LdBinding {
@@ -63,16 +66,16 @@ export function bindLd(body: LdBody, instance: string, symbols: readonly SymbolI
       if (path) pathOf.set(operand.trim().toUpperCase(), path);
     }
   }
-  return { instance, paths: [...new Set(pathOf.values())], elements: ids.length ? [{ pou_instance: instance, elements: ids }] : [], pathOf };
+  return { instance, paths: [...new Set(pathOf.values())], elements: ids.length ? [{ pou_instance: instance, ids }] : [], pathOf };
 }
 
 /** The diagram's online view of a binding: power and dimming by element id, values and forces by operand. */
 export function ldOnlineView(monitor: MonitorState, binding: LdBinding): OnlineView {
   const power: Record<string, boolean> = {};
   const executed: Record<string, boolean> = {};
-  for (const { elements } of binding.elements) {
-    for (const id of elements) {
-      const state = monitor.power[id];
+  for (const { pou_instance, ids } of binding.elements) {
+    for (const id of ids ?? []) {
+      const state = monitor.power[powerKey(pou_instance, id)];
       if (state === null) executed[id] = false;
       else if (state !== undefined) power[id] = state;
     }

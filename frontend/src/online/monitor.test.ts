@@ -39,28 +39,26 @@ describe("monitor message handling (issue 6 websocket messages)", () => {
     expect(s.power).toEqual({ j1: true, c9: null, q9: null });
   });
 
-  it("records status, the halt location only while halted, and the last scan time", () => {
+  it("records status and the halt location only while halted", () => {
     let s = applyMessage(emptyMonitor, { type: "status", state: "halted", at: { pou: "Main", network: "n1" } });
     expect(s.state).toBe("halted");
     expect(s.at).toEqual({ pou: "Main", network: "n1" });
     s = applyMessage(s, { type: "status", state: "running" });
     expect(s.state).toBe("running");
     expect(s.at).toBeNull();
-    s = applyMessage(s, values(5, {}, { last_scan_ms: 0.25 }));
-    expect(s.lastScanMs).toBe(0.25);
-    s = applyMessage(s, values(6, {}));
-    expect(s.lastScanMs).toBe(0.25);
   });
 
-  it("appends log and error messages in order with the scan they arrived at", () => {
+  it("appends log and error messages in order with their scan (the server's, else the current one)", () => {
     const s = fold([
       values(7, {}),
       { type: "log", level: "info", message: "force MAIN.STOP := TRUE" },
+      { type: "log", level: "warning", message: "watchdog", scan: 3 },
       { type: "error", code: "bad-path", message: "no variable MAIN.NOPE" },
     ]);
     expect(s.log.map((e) => [e.seq, e.level, e.message, e.scan])).toEqual([
       [1, "info", "force MAIN.STOP := TRUE", 7],
-      [2, "error", "bad-path: no variable MAIN.NOPE", 7],
+      [2, "warning", "watchdog", 3],
+      [3, "error", "bad-path: no variable MAIN.NOPE", 7],
     ]);
   });
 

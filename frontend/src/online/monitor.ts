@@ -16,7 +16,6 @@ export interface LogEntry {
 export interface MonitorState {
   scan: number;
   timeMs: number;
-  lastScanMs: number | null;
   state: SimulationState | null;
   /** Where a halted simulation stopped. */
   at: Where | null;
@@ -24,7 +23,7 @@ export interface MonitorState {
   values: Readonly<Record<string, Value>>;
   /** Upper-case paths forced now. */
   forced: ReadonlySet<string>;
-  /** Engine power of every subscribed element by id; null = not executed in the last scan. */
+  /** Engine power by "<instance>/<element id>"; null = not executed in the last scan. */
   power: Readonly<Record<string, PowerState>>;
   log: readonly LogEntry[];
 }
@@ -35,7 +34,6 @@ export const LOG_LIMIT = 500;
 export const emptyMonitor: MonitorState = {
   scan: 0,
   timeMs: 0,
-  lastScanMs: null,
   state: null,
   at: null,
   values: {},
@@ -46,9 +44,9 @@ export const emptyMonitor: MonitorState = {
 
 export const pathKey = (path: string): string => path.trim().toUpperCase();
 
-function appendLog(state: MonitorState, entry: Omit<LogEntry, "seq" | "scan">): MonitorState {
+function appendLog(state: MonitorState, entry: Omit<LogEntry, "seq" | "scan">, scan?: number | null): MonitorState {
   const last = state.log[state.log.length - 1];
-  const next = [...state.log, { ...entry, seq: (last?.seq ?? 0) + 1, scan: state.scan }];
+  const next = [...state.log, { ...entry, seq: (last?.seq ?? 0) + 1, scan: scan ?? state.scan }];
   return { ...state, log: next.length > LOG_LIMIT ? next.slice(next.length - LOG_LIMIT) : next };
 }
 
@@ -62,7 +60,6 @@ export function applyMessage(state: MonitorState, message: ServerMessage): Monit
         ...state,
         scan: message.scan,
         timeMs: message.time_ms,
-        lastScanMs: message.last_scan_ms ?? state.lastScanMs,
         values,
         forced: message.forced ? new Set(message.forced.map(pathKey)) : state.forced,
         power: message.power ? { ...state.power, ...message.power } : state.power,
@@ -71,7 +68,7 @@ export function applyMessage(state: MonitorState, message: ServerMessage): Monit
     case "status":
       return { ...state, state: message.state, at: message.state === "halted" ? (message.at ?? null) : null };
     case "log":
-      return appendLog(state, { level: message.level, message: message.message, at: message.at ?? null });
+      return appendLog(state, { level: message.level, message: message.message, at: message.at ?? null }, message.scan);
     case "error":
       return appendLog(state, { level: "error", message: `${message.code}: ${message.message}` });
   }
@@ -86,15 +83,18 @@ export function logLocal(state: MonitorState, level: LogMessage["level"], messag
  * Whether a subscription change can keep the old values: a new subscription's first message is a
  * full snapshot, but values of paths no longer subscribed must not linger as if they were live.
  */
-export function keepSubscribed(state: MonitorState, paths: readonly string[], elements: readonly string[]): MonitorState {
+export function keepSubscribed(state: MonitorState, paths: readonly string[], powerKeys: readonly string[]): MonitorState {
   const wanted = new Set(paths.map(pathKey));
-  const ids = new Set(elements);
+  const ids = new Set(powerKeys);
   return {
     ...state,
     values: Object.fromEntries(Object.entries(state.values).filter(([p]) => wanted.has(p))),
     power: Object.fromEntries(Object.entries(state.power).filter(([id]) => ids.has(id))),
   };
 }
+
+/** The key of an element's power in `values.power`. */
+export const powerKey = (instance: string, id: string): string => `${instance}/${id}`;
 
 /** Text of a value for labels and the watch list (TRUE/FALSE like IEC). */
 export function formatValue(value: Value | undefined): string {

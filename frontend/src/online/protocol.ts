@@ -1,7 +1,7 @@
 // The websocket monitor protocol of /api/simulations/{id}/ws (issue 6), in one place.
-// Every message is a JSON object whose `type` names it. These shapes follow the issue's message
-// list; they give way to src/generated/monitor.ts (generated from the server's pydantic models)
-// once that lands, and nothing outside src/online/ depends on them directly.
+// Every message is a JSON object whose `type` names it. These shapes follow the server's models
+// (backend/ladderlab/model/monitor.py); they give way to src/generated/monitor.ts once that is
+// generated, and nothing outside src/online/ depends on them directly.
 import type { Diagnostic } from "../generated/api";
 
 /** A variable value as JSON carries it (TIME etc. arrive as numbers of ms, strings as text). */
@@ -13,7 +13,8 @@ export type PowerState = boolean | null;
 export interface ElementSubscription {
   /** The POU instance the element ids belong to, e.g. "MAIN" or "MAIN.FB1". */
   pou_instance: string;
-  elements: string[];
+  /** Element ids (box pins as "box.Q"); null: every element of the instance. */
+  ids: string[] | null;
 }
 
 export type ClientMessage =
@@ -34,19 +35,20 @@ export interface ValuesMessage {
   changed?: Record<string, Value>;
   /** Every path forced now. */
   forced?: string[];
+  /** Keyed "<pou_instance>/<element id>" (the instance as subscribed). */
   power?: Record<string, PowerState>;
-  /** Duration of the last scan, when the server reports it. */
-  last_scan_ms?: number | null;
 }
 
 export interface Where {
   pou?: string | null;
+  instance?: string | null;
   network?: string | null;
   element?: string | null;
   line?: number | null;
 }
 
-export type SimulationState = "running" | "stopped" | "halted";
+/** `faulted`: stopped by a runtime error or a watchdog trip. */
+export type SimulationState = "running" | "stopped" | "halted" | "faulted";
 
 export interface StatusMessage {
   type: "status";
@@ -59,6 +61,7 @@ export interface LogMessage {
   level: string;
   message: string;
   at?: Where | null;
+  scan?: number | null;
 }
 
 export interface ErrorMessage {
@@ -75,6 +78,7 @@ export interface SimulationInfo {
   state?: SimulationState | string;
   scan_count?: number;
   virtual_time_ms?: number;
+  /** Duration of the last scan. */
   last_scan_ms?: number | null;
 }
 

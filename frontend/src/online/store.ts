@@ -1,0 +1,250 @@
+// Online mode (zustand): one simulation of the open project, its monitor websocket, the merged
+// subscription of every view that shows live values (LD editors, the watch list), and the
+// commands the toolbar, the diagram and the watch list send. The socket and the REST calls are
+// injected so tests drive the store with fakes.
+import { useStore } from "zustand";
+import { createStore, type StoreApi } from "zustand/vanilla";
+import { ApiError } from "../api/client";
+import type { Diagnostic } from "../generated/api";
+import { monitorUrl, simulationApi, type SimulationApi } from "./api";
+import { applyMessage, emptyMonitor, keepSubscribed, logLocal, pathKey, powerKey, type MonitorState } from "./monitor";
+import { DEFAULT_INTERVAL_MS, parseServerMessage, type ClientMessage, type ElementSubscription, type Value } from "./protocol";
+
+/** The part of WebSocket the store uses. */
+export type SocketLike = Pick<WebSocket, "readyState" | "send" | "close" | "onopen" | "onmessage" | "onclose">;
+
+export type OpenSocket = (url: string) => SocketLike;
+
+const OPEN = 1;
+/** How often the toolbar's scan statistics are refreshed from GET /api/simulations/{id}. */
+export const STATS_POLL_MS = 1000;
+
+export interface Subscription {
+  paths: string[];
+  elements: ElementSubscription[];
+}
+
+export type Phase = "offline" | "compiling" | "connecting" | "online";
+
+export interface OnlineData {
+  phase: Phase;
+  project: string | null;
+  simulation: string | null;
+  error: string | null;
+  /** Why the last compile was refused. */
+  compileDiagnostics: Diagnostic[];
+  monitor: MonitorState;
+  lastScanMs: number | null;
+  /** What each view wants to see, by view key. */
+  views: Record<string, Subscription>;
+  /** Paths in the watch list, as the user typed them. */
+  watch: string[];
+}
+
+export interface OnlineActions {
+  /** Compiles the saved project and connects; an open simulation is closed first. */
+  compile(project: string): Promise<void>;
+  goOffline(): Promise<void>;
+  run(): void;
+  stop(): void;
+  singleCycle(): void;
+  reset(cold?: boolean): Promise<void>;
+  write(path: string, value: Value): void;
+  force(path: string, value: Value): void;
+  unforce(path: string): void;
+  unforceAll(): void;
+  /** Sets (or with null removes) the subscription of one view. */
+  subscribe(view: string, subscription: Subscription | null): void;
+  addWatch(path: string): void;
+  removeWatch(path: string): void;
+}
+
+export type OnlineState = OnlineData & OnlineActions;
+
+export const offline: Omit<OnlineData, "watch"> = {
+  phase: "offline",
+  project: null,
+  simulation: null,
+  error: null,
+  compileDiagnostics: [],
+  monitor: emptyMonitor,
+  lastScanMs: null,
+  views: {},
+};
+
+/** The union of every view's subscription: paths without repeats, element ids merged per instance. */
+export function mergeSubscriptions(views: Iterable<Subscription>): Subscription {
+  const paths = new Set<string>();
+  const byInstance = new Map<string, Set<string> | null>();
+  for (const view of views) {
+    for (const p of view.paths) paths.add(pathKey(p));
+    for (const { pou_instance, ids } of view.elements) {
+      const key = pou_instance.toUpperCase();
+      const known = byInstance.get(key);
+      if (ids === null || known === null) byInstance.set(key, null);
+      else byInstance.set(key, new Set([...(known ?? []), ...ids]));
+    }
+  }
+  return {
+    paths: [...paths].sort(),
+    elements: [...byInstance].map(([pou_instance, ids]) => ({ pou_instance, ids: ids ? [...ids].sort() : null })),
+  };
+}
+
+const message = (err: unknown) => (err instanceof Error ? err.message : String(err));
+
+const compileDiagnosticsOf = (err: unknown): Diagnostic[] => {
+  const detail = err instanceof ApiError ? (err.detail as { diagnostics?: unknown } | undefined) : undefined;
+  return Array.isArray(detail?.diagnostics) ? (detail.diagnostics as Diagnostic[]) : [];
+};
+
+const defaultSocket: OpenSocket = (url) => new WebSocket(url);
+
+export function createOnlineStore(api: SimulationApi = simulationApi, openSocket: OpenSocket = defaultSocket, url: (id: string) => string = monitorUrl): StoreApi<OnlineState> {
+  let socket: SocketLike | null = null;
+  let lastSent = "";
+  let poll: ReturnType<typeof setInterval> | null = null;
+
+  return createStore<OnlineState>()((set, get) => {
+    const send = (msg: ClientMessage): boolean => {
+      if (!socket || socket.readyState !== OPEN) {
+        set({ monitor: logLocal(get().monitor, "warning", `not connected: ${msg.type} was not sent`) });
+        return false;
+      }
+      socket.send(JSON.stringify(msg));
+      return true;
+    };
+
+    const views = (): Subscription[] => [...Object.values(get().views), { paths: get().watch, elements: [] }];
+
+    /** Sends the merged subscription when it changed (and always after connecting). */
+    const resubscribe = (force = false) => {
+      if (!socket || socket.readyState !== OPEN) return;
+      const merged = mergeSubscriptions(views());
+      const text = JSON.stringify(merged);
+      if (!force && text === lastSent) return;
+      lastSent = text;
+      const powerKeys = merged.elements.flatMap((e) => (e.ids ?? []).map((id) => powerKey(e.pou_instance, id)));
+      set({ monitor: keepSubscribed(get().monitor, merged.paths, powerKeys) });
+      send({ type: "subscribe", paths: merged.paths, elements: merged.elements, interval_ms: DEFAULT_INTERVAL_MS });
+    };
+
+    const stopPolling = () => {
+      if (poll !== null) clearInterval(poll);
+      poll = null;
+    };
+
+    const disconnect = () => {
+      stopPolling();
+      const s = socket;
+      socket = null;
+      lastSent = "";
+      if (s) {
+        s.onclose = null;
+        s.onmessage = null;
+        s.close();
+      }
+    };
+
+    const connect = (id: string) => {
+      const s = openSocket(url(id));
+      socket = s;
+      s.onopen = () => {
+        if (socket !== s) return;
+        set({ phase: "online" });
+        resubscribe(true);
+      };
+      s.onmessage = (event) => {
+        if (socket !== s || typeof event.data !== "string") return;
+        const msg = parseServerMessage(event.data);
+        if (msg) set({ monitor: applyMessage(get().monitor, msg) });
+      };
+      s.onclose = () => {
+        if (socket !== s) return;
+        disconnect();
+        set({ ...offline, error: "The connection to the simulation was lost.", monitor: logLocal(get().monitor, "error", "connection to the simulation lost") });
+      };
+      poll = setInterval(() => {
+        api.getSimulation(id).then(
+          (info) => {
+            if (get().simulation === id && typeof info.last_scan_ms === "number") set({ lastScanMs: info.last_scan_ms });
+          },
+          () => undefined, // statistics are a nicety; the websocket reports real trouble
+        );
+      }, STATS_POLL_MS);
+    };
+
+    return {
+      ...offline,
+      watch: [],
+
+      async compile(project) {
+        if (get().simulation) await get().goOffline();
+        set({ phase: "compiling", project, error: null, compileDiagnostics: [] });
+        try {
+          const info = await api.createSimulation(project);
+          if (get().phase !== "compiling") {
+            void api.deleteSimulation(info.id).catch(() => undefined); // went offline meanwhile
+            return;
+          }
+          set({ phase: "connecting", simulation: info.id, monitor: emptyMonitor });
+          connect(info.id);
+        } catch (err) {
+          set({ ...offline, error: message(err), compileDiagnostics: compileDiagnosticsOf(err) });
+        }
+      },
+
+      async goOffline() {
+        const id = get().simulation;
+        disconnect();
+        set({ ...offline, views: get().views });
+        if (id) await api.deleteSimulation(id).catch(() => undefined);
+      },
+
+      run: () => void send({ type: "run" }),
+      stop: () => void send({ type: "stop" }),
+      singleCycle: () => void send({ type: "single_cycle" }),
+
+      async reset(cold = false) {
+        const id = get().simulation;
+        if (!id) return;
+        try {
+          await api.resetSimulation(id, cold);
+        } catch (err) {
+          set({ monitor: logLocal(get().monitor, "error", `reset failed: ${message(err)}`) });
+        }
+      },
+
+      write: (path, value) => void send({ type: "write", path, value }),
+      force: (path, value) => void send({ type: "force", path, value }),
+      unforce: (path) => void send({ type: "unforce", path }),
+      unforceAll: () => void send({ type: "unforce_all" }),
+
+      subscribe(view, subscription) {
+        const next = { ...get().views };
+        if (subscription) next[view] = subscription;
+        else delete next[view];
+        set({ views: next });
+        resubscribe();
+      },
+
+      addWatch(path) {
+        const text = path.trim();
+        if (!text || get().watch.some((p) => pathKey(p) === pathKey(text))) return;
+        set({ watch: [...get().watch, text] });
+        resubscribe();
+      },
+
+      removeWatch(path) {
+        set({ watch: get().watch.filter((p) => pathKey(p) !== pathKey(path)) });
+        resubscribe();
+      },
+    };
+  });
+}
+
+export const onlineStore = createOnlineStore();
+
+export function useOnline<T>(selector: (state: OnlineState) => T): T {
+  return useStore(onlineStore, selector);
+}
