@@ -1,4 +1,4 @@
-"""The ``ladderlab`` command line: serve, check, run, compile, schema."""
+"""The ``ladderlab`` command line: serve, check, run, compile, export, import, schema."""
 
 from __future__ import annotations
 
@@ -15,6 +15,7 @@ from .model import has_errors
 from .model.schema import SCHEMA_MODELS, schema_of
 from .runner import jsonl_line, parse_duration, parse_set, run_scans, table_lines
 from .storage import StorageError, load_project_path
+from .storage.atomic import write_atomic
 
 EXIT_OK, EXIT_ERRORS, EXIT_USAGE, EXIT_RUNTIME = 0, 1, 2, 3
 
@@ -66,6 +67,21 @@ def _parser() -> argparse.ArgumentParser:
     compile_.add_argument("--emit-python", action="store_true", help="print the generated Python module")
     compile_.add_argument("--variant", choices=["fast", "debug"], default="fast")
     compile_.set_defaults(func=_compile)
+
+    export = sub.add_parser("export", help="export a project as PLCopen XML or IEC ST text")
+    export.add_argument("format", choices=["plcopen", "st"])
+    export.add_argument("project", type=Path, help="project folder, project .json file or .st file")
+    export.add_argument("--pou", default=None, help="st: only this POU (default: the whole project)")
+    export.add_argument("-o", "--output", type=Path, default=None, help="file to write (default: standard output)")
+    export.set_defaults(func=_export)
+
+    import_ = sub.add_parser("import", help="import a PLCopen XML project into a workspace")
+    import_.add_argument("format", choices=["plcopen"])
+    import_.add_argument("file", type=Path)
+    import_.add_argument("--into", type=Path, default=None,
+                         help="workspace folder (default: $LADDERLAB_WORKSPACE or ./workspace)")
+    import_.add_argument("--name", default=None, help="project name (default: the document's, else the file name)")
+    import_.set_defaults(func=_import)
 
     schema = sub.add_parser("schema", help="print the JSON Schema of the project model")
     schema.add_argument("--name", choices=sorted(SCHEMA_MODELS), default="project.schema.json")
@@ -128,6 +144,61 @@ def _compile(args: argparse.Namespace) -> int:
         return EXIT_ERRORS
     if args.emit_python:
         print(build.compiled.source)
+    return EXIT_OK
+
+
+def _export(args: argparse.Namespace) -> int:
+    from .export.plcopen_export import PlcopenExportError, export_plcopen
+
+    project = load_project_path(args.project)
+    if args.format == "plcopen":
+        if args.pou is not None:
+            print("ladderlab export plcopen: --pou applies to st only", file=sys.stderr)
+            return EXIT_USAGE
+        try:
+            data = export_plcopen(project)
+        except PlcopenExportError as error:
+            for diagnostic in error.diagnostics:
+                print(diagnostic.format(), file=sys.stderr)
+            return EXIT_ERRORS
+    else:
+        data = _st_export(project, args.pou)
+        if data is None:
+            return EXIT_ERRORS
+    if args.output is None:
+        sys.stdout.write(data.decode("utf-8"))
+    else:
+        write_atomic(args.output, data)
+    return EXIT_OK
+
+
+def _st_export(project, pou: str | None) -> bytes | None:
+    from .export.st_export import export_pou_st, export_project_st
+
+    if pou is not None and not any(p.name.upper() == pou.upper() for p in project.pous):
+        print(f"ladderlab export st: the project has no POU {pou!r}", file=sys.stderr)
+        return None
+    result = export_pou_st(project, pou) if pou is not None else export_project_st(project)
+    for diagnostic in result.diagnostics:
+        print(diagnostic.format(), file=sys.stderr)
+    return None if has_errors(result.diagnostics) else result.text.encode("utf-8")
+
+
+def _import(args: argparse.Namespace) -> int:
+    from .export.plcopen_import import import_plcopen
+    from .storage import Workspace
+
+    if not args.file.is_file():
+        print(f"{args.file}: error BAD-PATH: no such file", file=sys.stderr)
+        return EXIT_USAGE
+    result = import_plcopen(args.file.read_bytes(), name=args.name, file=args.file.name)
+    for diagnostic in result.diagnostics:
+        print(diagnostic.format(), file=sys.stderr)
+    if result.project is None or has_errors(result.diagnostics):
+        return EXIT_ERRORS
+    workspace = Workspace(args.into or Path(os.environ.get("LADDERLAB_WORKSPACE", "workspace")))
+    workspace.create(result.project)
+    print(f"imported {result.project.name!r} ({len(result.project.pous)} POUs) into {workspace.root}")
     return EXIT_OK
 
 
