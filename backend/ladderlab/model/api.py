@@ -123,6 +123,40 @@ class ConflictDetail(BaseModel):
     current_modified: datetime | None
 
 
+class ScanTimes(BaseModel):
+    """Wall time of the scans run so far, in milliseconds (halted time excluded)."""
+
+    min: float
+    avg: float
+    max: float
+    last: float
+
+
+class SimulationInfo(BaseModel):
+    """``GET /api/simulations/{id}``: one live simulation of a saved project."""
+
+    id: str
+    project: str
+    revision: str = Field(description="The project revision it was compiled from.")
+    state: Literal["running", "stopped", "halted", "faulted"]
+    scan_count: int
+    time_ms: float = Field(description="Virtual time of the last scan.")
+    real_time_ms: float = Field(description="Wall time spent running (started and not stopped).")
+    scan_ms: ScanTimes
+    overruns: int = Field(description="Times the scans fell behind the wall clock and skipped ahead.")
+    fault: Diagnostic | None = Field(description="The fault that stopped it, located; null when none.")
+    clients: int = Field(description="Websocket clients watching it.")
+    created: datetime
+
+
+class ResetSimulation(BaseModel):
+    """Body of ``POST /api/simulations/{id}/reset``: warm (RETAIN kept) or cold restart."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    cold: bool = False
+
+
 class ApiTypes(BaseModel):
     """Container so every API shape lands in one schema file (``api.schema.json``)."""
 
@@ -136,3 +170,5 @@ class ApiTypes(BaseModel):
     library_entry: LibraryEntry
     error_detail: ErrorDetail
     conflict_detail: ConflictDetail
+    simulation_info: SimulationInfo
+    reset_simulation: ResetSimulation

@@ -9,10 +9,12 @@ from typing import Any
 from pydantic import BaseModel
 
 from .api import ApiTypes
+from .monitor import MonitorProtocol
 from .project import Project
 
 #: File name in shared_schema/ -> model. Later parts add theirs (e.g. the monitor protocol).
-SCHEMA_MODELS: dict[str, type[BaseModel]] = {"project.schema.json": Project, "api.schema.json": ApiTypes}
+SCHEMA_MODELS: dict[str, type[BaseModel]] = {"project.schema.json": Project, "api.schema.json": ApiTypes,
+                                              "monitor.schema.json": MonitorProtocol}
 
 
 def schema_of(model: type[BaseModel]) -> dict[str, Any]:

@@ -1,7 +1,7 @@
 """The FastAPI application: serves the browser app and the JSON API.
 
 This module only assembles the app; routes live in one module per resource
-(projects, symbols, library; simulations and export join later as their own modules).
+(projects, symbols, library, simulations and the monitor websocket).
 """
 
 from __future__ import annotations
@@ -14,7 +14,7 @@ from fastapi.staticfiles import StaticFiles
 
 from .. import __version__
 from ..storage import Workspace
-from . import library, projects, symbols
+from . import library, monitor, projects, simulations, symbols
 from .errors import install_error_handlers
 from .limits import BodySizeLimit, Limits
 
@@ -37,7 +37,7 @@ def create_app(workspace: Workspace, limits: Limits | None = None) -> FastAPI:
     def health() -> dict[str, str]:
         return {"status": "ok", "version": __version__}
 
-    for module in (projects, symbols, library):
+    for module in (projects, symbols, library, simulations, monitor):
         app.include_router(module.router)
 
     if (STATIC_DIR / "index.html").is_file():

@@ -13,7 +13,9 @@ export interface ApiTypes {
   project_document: ProjectDocument;
   project_summary: ProjectSummary;
   rename_project: RenameProject;
+  reset_simulation: ResetSimulation;
   save_result: SaveResult;
+  simulation_info: SimulationInfo;
   symbol_table: SymbolTable;
 }
 /**
@@ -471,6 +473,15 @@ export interface RenameProject {
   new_name: string;
 }
 /**
+ * Body of ``POST /api/simulations/{id}/reset``: warm (RETAIN kept) or cold restart.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "ResetSimulation".
+ */
+export interface ResetSimulation {
+  cold?: boolean;
+}
+/**
  * Answer to a successful save: the new revision (also sent as the ``ETag`` header).
  *
  * This interface was referenced by `ApiTypes`'s JSON-Schema
@@ -479,6 +490,56 @@ export interface RenameProject {
 export interface SaveResult {
   modified: string;
   revision: string;
+}
+/**
+ * ``GET /api/simulations/{id}``: one live simulation of a saved project.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "SimulationInfo".
+ */
+export interface SimulationInfo {
+  /**
+   * Websocket clients watching it.
+   */
+  clients: number;
+  created: string;
+  /**
+   * The fault that stopped it, located; null when none.
+   */
+  fault: Diagnostic | null;
+  id: string;
+  /**
+   * Times the scans fell behind the wall clock and skipped ahead.
+   */
+  overruns: number;
+  project: string;
+  /**
+   * Wall time spent running (started and not stopped).
+   */
+  real_time_ms: number;
+  /**
+   * The project revision it was compiled from.
+   */
+  revision: string;
+  scan_count: number;
+  scan_ms: ScanTimes;
+  state: "running" | "stopped" | "halted" | "faulted";
+  /**
+   * Virtual time of the last scan.
+   */
+  time_ms: number;
+}
+/**
+ * Wall time of the scans run so far, in milliseconds (halted time excluded).
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "ScanTimes".
+ */
+export interface ScanTimes {
+  avg: number;
+  last: number;
+  max: number;
+  min: number;
 }
 /**
  * ``GET /api/projects/{name}/pous/{pou}/symbols``.

@@ -1,0 +1,353 @@
+"""The online-mode websocket: each client's subscription, commands, and a sender that never backs up.
+
+One ``MonitorClient`` per connection. Its receive loop parses messages
+(``model/monitor.py``) and runs commands on the ``SimRunner`` in a worker thread
+(a command may wait for a scan to finish; the event loop must not). Its sender task
+is the only writer to the socket:
+
+* values are sampled, not queued: every ``interval_ms`` it takes the runner's latest
+  frame and sends what changed since its own previous message. A client that reads
+  slowly makes its sender wait in ``send``, so it gets fewer messages, each complete;
+  the scan thread and the other clients never wait for it;
+* status, log, trace and error messages wait in a bounded queue; only the latest
+  status is kept, and when the queue is full the oldest log entries are dropped and
+  the client is told how many.
+
+Bad input never closes the connection: it gets an ``error`` message.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import json
+import logging
+import math
+from collections import deque
+from typing import Any
+
+from fastapi import APIRouter, WebSocket
+from pydantic import BaseModel, TypeAdapter, ValidationError
+from starlette.websockets import WebSocketDisconnect
+
+from ..model import monitor as m
+from .errors import ApiError
+from .sim_registry import SimulationEntry, SimulationSettings, registry_of
+from .sim_runner import CommandError, Frame, SimRunner, Watch
+
+log = logging.getLogger(__name__)
+
+router = APIRouter(tags=["monitor"])
+
+CLIENT_MESSAGE: TypeAdapter[Any] = TypeAdapter(m.ClientMessage)
+CLOSE_NO_SIMULATION = 4404
+CLOSE_DELETED = 4410
+CLOSE_TRY_LATER = 1013
+_MISSING = object()
+
+
+def origin_allowed(websocket: WebSocket, settings: SimulationSettings) -> bool:
+    """Browsers send ``Origin`` on every websocket upgrade: it must be the origin this server is served
+    from (same host and port) or listed in the settings. Clients that send none are not browsers."""
+    origin = websocket.headers.get("origin")
+    if origin is None:
+        return True
+    host = websocket.headers.get("host", "")
+    return origin in (f"http://{host}", f"https://{host}") or origin in settings.allowed_origins
+
+
+@router.websocket("/api/simulations/{sim_id}/ws")
+async def monitor(websocket: WebSocket, sim_id: str) -> None:
+    registry = registry_of(websocket.app)
+    if not origin_allowed(websocket, registry.settings):
+        await websocket.close(code=1008, reason="origin not allowed")  # before accept: HTTP 403
+        return
+    await websocket.accept()
+    try:
+        entry = registry.get(sim_id)
+    except ApiError as error:
+        await websocket.send_text(m.Error(type="error", code="bad_path", message=error.detail.message).model_dump_json())
+        await websocket.close(code=CLOSE_NO_SIMULATION, reason="no such simulation")
+        return
+    if not registry.attach(entry):
+        message = f"this simulation already has {registry.settings.max_clients} clients, the most allowed"
+        await websocket.send_text(m.Error(type="error", code="too_many", message=message).model_dump_json())
+        await websocket.close(code=CLOSE_TRY_LATER, reason="too many clients")
+        return
+    try:
+        await MonitorClient(websocket, entry, registry.settings).serve()
+    finally:
+        registry.detach(entry)
+
+
+def _same(a: object, b: object) -> bool:
+    """Equal values, NaN equal to NaN (a NaN that stays NaN has not changed)."""
+    if a is b:
+        return True
+    if type(a) is not type(b):  # noqa: E721 - TRUE and 1 are different values to show
+        return False
+    if a == b:
+        return True
+    return isinstance(a, float) and math.isnan(a) and math.isnan(b)  # type: ignore[arg-type]
+
+
+class MonitorClient:
+    def __init__(self, websocket: WebSocket, entry: SimulationEntry, settings: SimulationSettings) -> None:
+        self.websocket = websocket
+        self.entry = entry
+        self.runner: SimRunner = entry.runner
+        self.settings = settings
+        self.loop = asyncio.get_running_loop()
+        self.wake = asyncio.Event()
+        self.outbox: deque[BaseModel] = deque()
+        self.status: m.Status | None = None
+        self.dropped = 0
+        self.ending = False
+        # subscription
+        self.watch: Watch | None = None
+        self.elements: list[tuple[str, str, list[str] | None]] = []  # (label, canonical instance, ids)
+        self.interval_s = 0.1
+        self.next_due = 0.0
+        self.full = True
+        self.sent_seq = -1
+        self.waiting_frame = False
+        self.last_values: dict[str, object] = {}
+        self.last_power: dict[str, object] = {}
+        self.last_forced: list[str] = []
+        self.last_scan = -1
+
+    # ------------------------------------------------------------------ runner listener (any thread)
+
+    def event(self, message: m.Status | m.Log | m.Trace, target: object | None) -> None:
+        if target is None or target is self:
+            self.loop.call_soon_threadsafe(self._enqueue, message)
+
+    def frame(self) -> None:
+        self.loop.call_soon_threadsafe(self._on_frame)
+
+    def closed(self) -> None:
+        self.loop.call_soon_threadsafe(self._on_closed)
+
+    # ------------------------------------------------------------------ event loop side
+
+    def _on_frame(self) -> None:
+        if self.waiting_frame:
+            self.wake.set()
+
+    def _on_closed(self) -> None:
+        self._enqueue(m.Log(type="log", level="warning", message="the simulation was deleted"))
+        self.ending = True
+        self.wake.set()
+
+    def _enqueue(self, message: BaseModel) -> None:
+        if isinstance(message, m.Status):
+            self.status = message  # only the latest state matters
+        else:
+            if len(self.outbox) >= self.settings.max_queued:
+                oldest_log = next((x for x in self.outbox if isinstance(x, m.Log)), None)
+                self.outbox.remove(oldest_log if oldest_log is not None else self.outbox[0])
+                self.dropped += 1
+            self.outbox.append(message)
+        self.wake.set()
+
+    def error(self, code: str, message: str) -> None:
+        self._enqueue(m.Error(type="error", code=code, message=message))  # type: ignore[arg-type]
+
+    async def serve(self) -> None:
+        self.runner.add_listener(self)
+        self._enqueue(self.runner.status())
+        sender = asyncio.create_task(self._send_loop())
+        try:
+            await self._receive_loop(sender)
+        finally:
+            sender.cancel()
+            self.runner.remove_listener(self)
+            await asyncio.to_thread(self.runner.unwatch, self)
+
+    async def _receive_loop(self, sender: asyncio.Task) -> None:
+        while not sender.done():
+            receiving = asyncio.ensure_future(self.websocket.receive())
+            await asyncio.wait({receiving, sender}, return_when=asyncio.FIRST_COMPLETED)
+            if not receiving.done():
+                receiving.cancel()
+                return
+            try:
+                message = receiving.result()
+            except (WebSocketDisconnect, RuntimeError):
+                return
+            if message["type"] == "websocket.disconnect":
+                return
+            text = message.get("text")
+            if text is None:
+                self.error("bad_message", "binary frames are not understood: send JSON text")
+                continue
+            if len(text) > self.settings.max_message_bytes:
+                self.error("too_large", f"the message has {len(text)} characters, more than the limit of "
+                                        f"{self.settings.max_message_bytes}")
+                continue
+            await self.handle(text)
+
+    # ------------------------------------------------------------------ requests
+
+    async def handle(self, text: str) -> None:
+        try:
+            data = json.loads(text)
+        except (ValueError, RecursionError) as error:
+            self.error("bad_json", f"the message is not JSON: {error}")
+            return
+        try:
+            request = CLIENT_MESSAGE.validate_python(data)
+        except ValidationError as error:
+            self.error("bad_message", describe_invalid(data, error))
+            return
+        try:
+            await self._dispatch(request)
+        except CommandError as error:
+            self.error(error.code, error.message)
+        except Exception as error:  # noqa: BLE001 - a bug answers this client; the others carry on
+            log.exception("monitor request %s failed", type(request).__name__)
+            self.error("bad_state", f"internal error: {type(error).__name__}: {error}")
+
+    async def _dispatch(self, request: BaseModel) -> None:
+        runner = self.runner
+        match request:
+            case m.Subscribe():
+                await self._subscribe(request)
+            case m.Write(path=path, value=value):
+                await asyncio.to_thread(runner.write, path, value)
+            case m.Force(path=path, value=value):
+                await asyncio.to_thread(runner.force, path, value)
+            case m.Unforce(path=path):
+                await asyncio.to_thread(runner.unforce, path)
+            case m.UnforceAll():
+                await asyncio.to_thread(runner.unforce_all)
+            case m.BreakpointSet(pou=pou):
+                await asyncio.to_thread(runner.set_breakpoint, pou, **_where(request))
+            case m.BreakpointClear(pou=pou):
+                await asyncio.to_thread(runner.clear_breakpoint, pou, **_where(request))
+            case m.Continue():
+                await asyncio.to_thread(runner.resume)
+            case m.Step(granularity=granularity):
+                await asyncio.to_thread(runner.step, granularity)
+            case m.Run():
+                await asyncio.to_thread(runner.start)
+            case m.Stop():
+                await asyncio.to_thread(runner.stop)
+            case m.SingleCycle():
+                await asyncio.to_thread(runner.single_cycle)
+            case m.TraceStart(paths=paths, samples=samples, trigger=trigger):
+                await asyncio.to_thread(runner.start_trace, self, paths, samples, trigger)
+
+    async def _subscribe(self, request: m.Subscribe) -> None:
+        limits = self.settings
+        if len(request.paths) > limits.max_paths or len(request.elements) > limits.max_instances:
+            raise CommandError("too_many", f"a subscription may hold {limits.max_paths} paths and "
+                                           f"{limits.max_instances} POU instances, not {len(request.paths)} "
+                                           f"and {len(request.elements)}")
+        instances = [e.pou_instance for e in request.elements]
+        self.watch = await asyncio.to_thread(self.runner.watch, self, request.paths, instances)
+        self.elements = [(e.pou_instance, e.pou_instance.strip().upper(), e.ids) for e in request.elements]
+        self.interval_s = request.interval_ms / 1000.0
+        self.full, self.next_due = True, self.loop.time()
+        self.last_values, self.last_power = {}, {}
+        self.wake.set()
+
+    # ------------------------------------------------------------------ sending
+
+    async def _send_loop(self) -> None:
+        try:
+            while True:
+                await self._sleep()
+                await self._drain()
+                if self.ending:
+                    await self.websocket.close(code=CLOSE_DELETED, reason="simulation deleted")
+                    return
+                if self.watch is not None and self.loop.time() >= self.next_due:
+                    await self._send_values(self.runner.frame)
+        except (WebSocketDisconnect, RuntimeError, OSError):
+            return  # the client went away; the receive loop ends too
+
+    async def _sleep(self) -> None:
+        if self.outbox or self.status is not None or self.ending:
+            return
+        timeout: float | None = None
+        if self.watch is not None and not self.waiting_frame:
+            timeout = self.next_due - self.loop.time()
+            if timeout <= 0:
+                return
+        self.wake.clear()
+        try:
+            await asyncio.wait_for(self.wake.wait(), timeout)
+        except TimeoutError:
+            pass
+
+    async def _drain(self) -> None:
+        while self.outbox or self.status is not None:
+            if self.dropped:
+                count, self.dropped = self.dropped, 0
+                await self._send(m.Log(type="log", level="warning", message=f"{count} messages were dropped: this connection "
+                                                                 "did not keep up"))
+            if self.outbox:
+                await self._send(self.outbox.popleft())
+            else:
+                status, self.status = self.status, None
+                await self._send(status)  # type: ignore[arg-type]
+
+    async def _send(self, message: BaseModel) -> None:
+        await self.websocket.send_text(message.model_dump_json())
+
+    async def _send_values(self, frame: Frame) -> None:
+        if frame.seq == self.sent_seq and not self.full:
+            self.waiting_frame = True  # nothing new: wait for the runner's next frame
+            return
+        self.waiting_frame = False
+        self.sent_seq = frame.seq
+        message = self.values_message(frame)
+        if message is not None:
+            await self._send(message)
+        self.next_due = self.loop.time() + self.interval_s
+
+    def values_message(self, frame: Frame) -> m.Values | None:
+        """What changed for this client since its last message (everything after a subscribe); None: nothing."""
+        full, changed, power = self.full, {}, {}
+        last = self.last_values
+        for path in self.watch.locations if self.watch is not None else ():
+            value = frame.values.get(path)
+            if full or not _same(last.get(path, _MISSING), value):
+                changed[path] = last[path] = value
+        for label, instance, ids in self.elements:
+            view = frame.probes.get(instance)
+            if view is None:
+                continue
+            for element in ids if ids is not None else sorted(view.values.keys() | view.executed):
+                state = view.values.get(element) if element in view.executed else None
+                key = f"{label}/{element}"
+                if full or not _same(self.last_power.get(key, _MISSING), state):
+                    power[key] = self.last_power[key] = state
+        forced = list(frame.forced)
+        if not (full or changed or power or forced != self.last_forced or frame.scan != self.last_scan):
+            return None
+        self.full, self.last_forced, self.last_scan = False, forced, frame.scan
+        return m.Values.model_construct(type="values", scan=frame.scan, time_ms=frame.time_ms, changed=changed,
+                                        forced=forced, power=power)
+
+
+def _where(request: m.BreakpointSet | m.BreakpointClear) -> dict[str, object]:
+    return {key: value for key in ("network", "element", "line") if (value := getattr(request, key)) is not None}
+
+
+def describe_invalid(data: object, error: ValidationError) -> str:
+    """One line naming what is wrong with a client message, e.g. ``subscribe.interval_ms: ...``."""
+    kind = data.get("type") if isinstance(data, dict) else None
+    problems = []
+    for err in error.errors()[:3]:
+        if err["type"] == "union_tag_invalid":
+            expected = ", ".join(sorted(CLIENT_MESSAGE.json_schema()["discriminator"]["mapping"]))
+            problems.append(f"unknown message type {kind!r} (expected one of {expected})")
+        elif err["type"] == "union_tag_not_found":
+            problems.append("a message needs a 'type' field")
+        elif err["type"] in ("model_attributes_type", "model_type", "dict_type") and not err["loc"]:
+            problems.append(f"a message must be a JSON object, not {type(data).__name__}")
+        else:
+            where = ".".join(str(part) for part in err["loc"])
+            problems.append(f"{where}: {err['msg']}" if where else err["msg"])
+    return "; ".join(problems)

@@ -1,0 +1,522 @@
+"""The thread that runs one simulation in real time; the only way anything touches it.
+
+A ``Simulation`` is a synchronous object for one thread at a time. ``SimRunner``
+owns it: a scan thread paces scans against the wall clock (``engine.tasks.Pacer``)
+while it is running, and every command (write, force, breakpoint, step, reset...)
+takes the same lock, so commands from the server's worker threads never interleave
+with a scan. A scan that takes long (up to its watchdog) holds the lock; callers on
+the event loop therefore run commands in a worker thread, never on the loop.
+
+Readers never take the lock: after scans the scan thread publishes an immutable
+``Frame`` (the values of everything any client watches, the probes of the watched
+POU instances, the forced paths) at most every ``publish_s`` seconds, and at once
+after a command. Each websocket client diffs the latest frame against what it sent
+last, so the cost of a scan does not grow with the number of clients.
+
+Listeners hear about state changes, log entries (faults, forces), finished traces
+and new frames, from whichever thread made them: they must only hand them over
+(e.g. ``loop.call_soon_threadsafe``).
+"""
+
+from __future__ import annotations
+
+import logging
+import threading
+import time
+from dataclasses import dataclass, field
+from typing import Callable, Protocol
+
+from ..engine.codegen.faults import Fault
+from ..engine.debug import Halt
+from ..engine.paths import Location, UnknownPath, plain
+from ..engine.simulation import ProbeView, Simulation
+from ..engine.tasks import Pacer
+from ..ir import nodes as ir
+from ..model.monitor import At, Log, Status, Trace
+
+log = logging.getLogger(__name__)
+
+State = str  # "running" | "stopped" | "halted" | "faulted"
+
+
+class CommandError(Exception):
+    """A command the simulation refuses; ``code`` is an ``Error`` message code (bad_path, bad_value, bad_state)."""
+
+    def __init__(self, code: str, message: str) -> None:
+        super().__init__(message)
+        self.code = code
+        self.message = message
+
+
+@dataclass(frozen=True)
+class Frame:
+    """Values published after a scan or a command: ``seq`` grows with every publication."""
+
+    seq: int
+    scan: int
+    time_ms: float
+    values: dict[str, object]  # canonical path -> value
+    probes: dict[str, ProbeView]  # canonical instance path (upper case) -> its probes
+    forced: tuple[str, ...]
+
+
+EMPTY_FRAME = Frame(0, 0, 0.0, {}, {}, ())
+
+
+@dataclass(frozen=True)
+class Watch:
+    """One client's resolved subscription: variables by canonical path, POU instances to probe."""
+
+    locations: dict[str, Location]
+    instances: tuple[str, ...] = ()  # canonical (upper-case) instance paths
+
+
+class Listener(Protocol):
+    def event(self, message: Status | Log | Trace, target: object | None) -> None:
+        """A message for every client (``target`` None) or for the client that asked for it."""
+
+    def frame(self) -> None:
+        """A new frame was published."""
+
+    def closed(self) -> None:
+        """The simulation was deleted: nothing more will come."""
+
+
+@dataclass
+class _Trace:
+    owner: object
+    locations: list[Location]
+    samples: int
+    trigger: Location | None
+    previous: object = None  # the trigger's value after the previous scan
+    started: bool = False
+    rows: list[list[object]] = field(default_factory=list)
+    scans: list[int] = field(default_factory=list)
+    times: list[float] = field(default_factory=list)
+
+
+def at_halt(halt: Halt) -> At:
+    origin = halt.origin
+    return At(pou=origin.pou, instance=halt.instance, network=origin.network,
+              element=halt.point.element or origin.element, line=origin.line, column=origin.column)
+
+
+def at_origin(origin: ir.Origin | None, pou: str | None, instance: str | None) -> At | None:
+    if origin is None:
+        return At(pou=pou, instance=instance) if pou else None
+    return At(pou=origin.pou, instance=instance, network=origin.network, element=origin.element,
+              line=origin.line, column=origin.column)
+
+
+class SimRunner:
+    """Runs ``sim`` (debug variant, for breakpoints and power flow) in its own thread."""
+
+    def __init__(self, sim: Simulation, *, speed: float = 1.0, publish_s: float = 0.02,
+                 clock: Callable[[], float] = time.monotonic) -> None:
+        self.sim = sim
+        self.lock = threading.RLock()
+        self.speed = speed
+        self.publish_s = publish_s
+        self.clock = clock
+        self.frame: Frame = EMPTY_FRAME
+        self._overruns = 0  # pacer skips of finished runs
+        self.after_scan: list[Callable[[Simulation], None]] = []  # called in the scan's thread, lock held
+        self._ctx = sim.compiled.generated.context
+        self._roots = sim._roots  # noqa: SLF001 - Location.get needs the live roots; Simulation.read re-parses the path
+        self._listeners: list[Listener] = []
+        self._watches: dict[object, Watch] = {}
+        self._locations: dict[str, Location] = {}
+        self._instances: tuple[str, ...] = ()
+        self._traces: list[_Trace] = []
+        self._running = False
+        self._faulted = False
+        self._seen_faults = 0
+        self._seen_scans = sim.scan_count
+        self._pacer: Pacer | None = None
+        self._real_s = 0.0
+        self._run_since: float | None = None
+        self._last_publish = float("-inf")
+        self._status: tuple[State, At | None] = (self._state(), None)
+        self._wake = threading.Condition(self.lock)
+        self._woken = False
+        self._closed = False
+        self._thread = threading.Thread(target=self._loop, name="ladderlab-sim", daemon=True)
+        self._thread.start()
+
+    # ------------------------------------------------------------------ listeners
+
+    def add_listener(self, listener: Listener) -> None:
+        with self.lock:
+            self._listeners.append(listener)
+
+    def remove_listener(self, listener: Listener) -> None:
+        with self.lock:
+            if listener in self._listeners:
+                self._listeners.remove(listener)
+
+    def _emit(self, message: Status | Log | Trace, target: object | None = None) -> None:
+        for listener in list(self._listeners):
+            listener.event(message, target)
+
+    # ------------------------------------------------------------------ state
+
+    def _state(self) -> State:
+        if self.sim.halted is not None:
+            return "halted"
+        if self._faulted:
+            return "faulted"
+        return "running" if self._running else "stopped"
+
+    @property
+    def state(self) -> State:
+        with self.lock:
+            return self._state()
+
+    def status(self) -> Status:
+        with self.lock:
+            state, at = self._status
+            return Status(type="status", state=state, at=at)  # type: ignore[arg-type]
+
+    @property
+    def overruns(self) -> int:
+        """Times the scans fell more than the pacer's lag behind the wall clock and skipped ahead."""
+        with self.lock:
+            return self._overruns + (self._pacer.overruns if self._pacer is not None else 0)
+
+    def real_time_ms(self) -> float:
+        with self.lock:
+            running = self.clock() - self._run_since if self._run_since is not None else 0.0
+            return (self._real_s + running) * 1000.0
+
+    # ------------------------------------------------------------------ the scan thread
+
+    def _loop(self) -> None:
+        with self.lock:
+            while not self._closed:
+                delay: float | None = None
+                if self._running and self._pacer is not None:  # halted: the pacer idles and re-anchors after
+                    try:
+                        delay = self._pacer.poll()
+                    except Exception as error:  # noqa: BLE001 - a bug must not kill the thread silently
+                        log.exception("simulation thread failed")
+                        self._running = False
+                        self._emit(Log(type="log", level="error", message=f"internal error, simulation stopped: {error!r}"))
+                    self._settle()
+                if not self._woken:
+                    self._wake.wait(delay)
+                self._woken = False
+
+    def _poke(self) -> None:
+        """Wake the scan thread (lock held): the state or the schedule changed."""
+        self._woken = True
+        self._wake.notify()
+
+    def close(self) -> None:
+        """End the scan thread and tell the listeners; every later command is refused."""
+        with self.lock:
+            if self._closed:
+                return
+            self._closed = True
+            self._set_running(False)
+            self._poke()
+            listeners, self._listeners = self._listeners, []
+        for listener in listeners:
+            listener.closed()
+        if threading.current_thread() is not self._thread:
+            self._thread.join(timeout=5)
+
+    # ------------------------------------------------------------------ after every step of the engine
+
+    def _settle(self, publish: bool = False) -> None:
+        """Account for what the engine did since the last call (lock held): scans, faults, halts, state."""
+        sim = self.sim
+        if sim.scan_count != self._seen_scans:
+            self._seen_scans = sim.scan_count
+            self._sample_traces()
+            for hook in self.after_scan:
+                hook(sim)
+        if len(sim.faults) > self._seen_faults:
+            for fault in sim.faults[self._seen_faults:]:
+                self._emit(self._fault_log(fault))
+            self._seen_faults = len(sim.faults)
+            self._faulted = True
+            self._set_running(False)
+        now = self.clock()
+        if publish or now - self._last_publish >= self.publish_s:
+            self._publish(now)
+        state = self._state()
+        status = (state, at_halt(sim.halted) if sim.halted is not None else None)
+        if status != self._status:
+            self._status = status
+            self._emit(Status(type="status", state=state, at=status[1]))  # type: ignore[arg-type]
+
+    def _fault_log(self, fault: Fault) -> Log:
+        return Log(type="log", level="error", message=fault.text(), at=at_origin(fault.origin, fault.pou, fault.instance),
+                   scan=fault.scan, time_ms=fault.time_ms)
+
+    def _publish(self, now: float) -> None:
+        self._last_publish = now
+        values: dict[str, object] = {}
+        for path, location in self._locations.items():
+            try:
+                value = location.get(self._roots)
+                values[path] = value if location.elementary else plain(self._ctx, location.type, value)
+            except Exception:  # noqa: BLE001 - e.g. an unbound VAR_IN_OUT reference: no value to show
+                values[path] = None
+        probes = {}
+        for instance in self._instances:
+            try:
+                probes[instance] = self.sim.probes(instance)
+            except KeyError:
+                probes[instance] = ProbeView({}, frozenset())
+        self.frame = Frame(self.frame.seq + 1, self.sim.scan_count, self.sim.time_ms, values, probes,
+                           tuple(self.sim.forced))
+        for listener in list(self._listeners):
+            listener.frame()
+
+    def _set_running(self, running: bool) -> None:
+        now = self.clock()
+        if running and not self._running:
+            self._run_since = now
+            self._pacer = Pacer(_Scans(self), speed=self.speed, clock=self.clock)
+        elif not running and self._running:
+            self._real_s += now - (self._run_since or now)
+            self._run_since = None
+            if self._pacer is not None:
+                self._overruns += self._pacer.overruns
+            self._pacer = None
+        self._running = running
+
+    def _command(self, action: Callable[[], object]) -> object:
+        """Run ``action`` on the engine under the lock, then publish and report what changed."""
+        with self.lock:
+            self._check_open()
+            try:
+                return action()
+            finally:
+                self._settle(publish=True)
+                self._poke()
+
+    def _check_open(self) -> None:
+        if self._closed:
+            raise CommandError("bad_state", "the simulation has been deleted")
+
+    # ------------------------------------------------------------------ run control
+
+    def start(self) -> None:
+        def action() -> None:
+            if self._faulted:
+                raise CommandError("bad_state", "the simulation stopped on a fault: reset it before running")
+            self._set_running(True)
+            if self.sim.halted is not None:
+                self.sim.resume()
+        self._command(action)
+
+    def stop(self) -> None:
+        self._command(lambda: self._set_running(False))
+
+    def reset(self, cold: bool = False) -> None:
+        """Warm or cold restart: stops, ends a halted scan, clears the faults (forces stay)."""
+        def action() -> None:
+            self._set_running(False)
+            self.sim.reset(cold=cold)
+            self._faulted = False
+            self._seen_faults = 0
+        self._command(action)
+
+    def single_cycle(self) -> None:
+        """One scan of a stopped simulation; when halted, the rest of the current scan."""
+        def action() -> None:
+            if self.sim.halted is not None:
+                self.sim.resume()
+                return
+            if self._running:
+                raise CommandError("bad_state", "the simulation is running: stop it before a single cycle")
+            if self._faulted:
+                raise CommandError("bad_state", "the simulation stopped on a fault: reset it first")
+            self.sim.cycle(1)
+        self._command(action)
+
+    def resume(self) -> None:
+        def action() -> None:
+            if self.sim.halted is None:
+                raise CommandError("bad_state", "the simulation is not halted")
+            self.sim.resume()
+        self._command(action)
+
+    def step(self, granularity: str) -> None:
+        """Halted: continue to the next pause point of this granularity. Else halt in the next scan."""
+        def action() -> None:
+            if self._faulted and self.sim.halted is None:
+                raise CommandError("bad_state", "the simulation stopped on a fault: reset it first")
+            self.sim.step(granularity)
+        self._command(action)
+
+    def set_breakpoint(self, pou: str, **where: object) -> None:
+        self._command(lambda: self._debug(self.sim.set_breakpoint, pou, **where))
+
+    def clear_breakpoint(self, pou: str | None = None, **where: object) -> None:
+        if pou is None:
+            self._command(self.sim.clear_breakpoints)
+        else:
+            self._command(lambda: self._debug(self.sim.clear_breakpoint, pou, **where))
+
+    @staticmethod
+    def _debug(method: Callable[..., object], pou: str, **where: object) -> object:
+        try:
+            return method(pou, **where)
+        except ValueError as error:
+            raise CommandError("bad_path", str(error)) from None
+
+    # ------------------------------------------------------------------ variables
+
+    def location(self, path: str) -> Location:
+        """Resolve a path (no lock: the resolver only reads the compiled program)."""
+        try:
+            return self.sim.location(path)
+        except (UnknownPath, ValueError) as error:
+            raise CommandError("bad_path", str(error)) from None
+
+    def write(self, path: str, value: object) -> None:
+        self.location(path)
+        self._command(lambda: self._coerced(self.sim.write, path, value))
+
+    def force(self, path: str, value: object) -> None:
+        location = self.location(path)
+
+        def action() -> None:
+            self._coerced(self.sim.force, path, value)
+            self._emit(Log(type="log", level="info", message=f"forced {location.path} := {_text(self.sim.read(path))}",
+                           scan=self.sim.scan_count, time_ms=self.sim.time_ms))
+        self._command(action)
+
+    def unforce(self, path: str) -> None:
+        location = self.location(path)
+
+        def action() -> None:
+            if location.path not in self.sim.forced:
+                raise CommandError("bad_path", f"{location.path} is not forced")
+            self.sim.unforce(path)
+            self._emit(Log(type="log", level="info", message=f"released the force on {location.path}",
+                           scan=self.sim.scan_count, time_ms=self.sim.time_ms))
+        self._command(action)
+
+    def unforce_all(self) -> None:
+        def action() -> None:
+            count = len(self.sim.forced)
+            self.sim.unforce_all()
+            if count:
+                self._emit(Log(type="log", level="info", message=f"released all forces ({count})",
+                               scan=self.sim.scan_count, time_ms=self.sim.time_ms))
+        self._command(action)
+
+    @staticmethod
+    def _coerced(method: Callable[[str, object], None], path: str, value: object) -> None:
+        try:
+            method(path, value)
+        except ValueError as error:
+            raise CommandError("bad_value", str(error)) from None
+
+    # ------------------------------------------------------------------ watching
+
+    def watch(self, key: object, paths: list[str], instances: list[str]) -> Watch:
+        """Set ``key``'s subscription (replacing its previous one); the next frame carries its values."""
+        locations = {}
+        for path in paths:
+            location = self.location(path)
+            locations.setdefault(location.path, location)
+        canonical = []
+        for instance in instances:
+            try:
+                self.sim.probes(instance)
+            except KeyError as error:
+                raise CommandError("bad_path", str(error.args[0])) from None
+            canonical.append(instance.strip().upper())
+        watch = Watch(locations, tuple(dict.fromkeys(canonical)))
+
+        def action() -> None:
+            self._watches[key] = watch
+            self._rebuild_union()
+        self._command(action)
+        return watch
+
+    def unwatch(self, key: object) -> None:
+        with self.lock:
+            if self._watches.pop(key, None) is not None:
+                self._rebuild_union()
+            self._traces = [trace for trace in self._traces if trace.owner is not key]
+
+    def _rebuild_union(self) -> None:
+        self._locations = {path: loc for watch in self._watches.values() for path, loc in watch.locations.items()}
+        self._instances = tuple(dict.fromkeys(i for watch in self._watches.values() for i in watch.instances))
+
+    # ------------------------------------------------------------------ traces
+
+    def start_trace(self, owner: object, paths: list[str], samples: int, trigger: str | None = None) -> None:
+        """Record ``paths`` after every scan; the ``Trace`` goes to ``owner`` when ``samples`` are recorded.
+
+        A new trace of the same owner replaces a running one."""
+        locations = [self.location(path) for path in paths]
+        for location in locations:
+            if not location.elementary:
+                raise CommandError("bad_path", f"{location.path} is not elementary: trace its elements")
+        trigger_location = self.location(trigger) if trigger is not None else None
+        if trigger_location is not None and getattr(trigger_location.type, "name", None) != "BOOL":
+            raise CommandError("bad_path", f"the trigger {trigger_location.path} is not a BOOL")
+
+        def action() -> None:
+            trace = _Trace(owner, locations, samples, trigger_location, started=trigger_location is None)
+            if trigger_location is not None:
+                trace.previous = trigger_location.get(self._roots)
+            self._traces = [t for t in self._traces if t.owner is not owner] + [trace]
+        self._command(action)
+
+    def _sample_traces(self) -> None:
+        done = []
+        for trace in self._traces:
+            if not trace.started:
+                value = trace.trigger.get(self._roots)  # type: ignore[union-attr]
+                trace.started = bool(value) and not trace.previous
+                trace.previous = value
+                if not trace.started:
+                    continue
+            trace.rows.append([location.get(self._roots) for location in trace.locations])
+            trace.scans.append(self.sim.scan_count)
+            trace.times.append(self.sim.time_ms)
+            if len(trace.rows) >= trace.samples:
+                done.append(trace)
+        for trace in done:
+            self._traces.remove(trace)
+            columns = list(zip(*trace.rows))
+            values = {loc.path: list(column) for loc, column in zip(trace.locations, columns)}
+            self._emit(Trace.model_construct(type="trace", values=values, scans=trace.scans, time_ms=trace.times),
+                       trace.owner)
+
+
+def _text(value: object) -> str:
+    """A value as the log shows it: BOOLs as TRUE/FALSE like IEC literals."""
+    return ("TRUE" if value else "FALSE") if isinstance(value, bool) else repr(value)
+
+
+class _Scans:
+    """What the pacer drives: one scan at a time, accounted for at once, until the runner stops."""
+
+    def __init__(self, runner: SimRunner) -> None:
+        self.runner = runner
+        self.sim = runner.sim
+
+    @property
+    def halted(self) -> bool:
+        return self.sim.halted is not None or not self.runner._running  # noqa: SLF001 - the runner's own helper
+
+    @property
+    def time_ms(self) -> float:
+        return self.sim.time_ms
+
+    def next_scan_time(self) -> float:
+        return self.sim.next_scan_time()
+
+    def cycle(self, n: int = 1) -> int:
+        done = self.sim.cycle(n)
+        self.runner._settle()  # noqa: SLF001
+        return done
