@@ -1,0 +1,386 @@
+"""The online websocket (issue 6, "Websocket"): subscribe, diffs, write, force, breakpoints, step,
+single cycle, trace, several clients, runtime errors, origin check, deletion."""
+
+from __future__ import annotations
+
+import time
+
+import pytest
+from fastapi.testclient import TestClient
+from starlette.websockets import WebSocketDisconnect
+
+from ladderlab.server.sim_registry import SimulationRegistry, SimulationSettings
+from ladderlab.storage import Workspace
+
+from .test_simulations_support import (
+    counter, counter_project, entry, install, motor_sim, of_type, recv, recv_until, registry, subscribe, wait_for,
+)
+
+__all__ = ["counter", "motor_sim", "registry"]  # fixtures used below
+
+
+def ws_url(sim_id: str) -> str:
+    return f"/api/simulations/{sim_id}/ws"
+
+
+def test_connecting_reports_the_state_then_a_full_snapshot_of_the_subscription(client: TestClient,
+                                                                             counter: str) -> None:
+    client.post(f"/api/simulations/{counter}/cycle")
+    with client.websocket_connect(ws_url(counter)) as ws:
+        assert recv(ws) == {"type": "status", "state": "stopped", "at": None}
+        first = subscribe(ws, ["Main.Count", "main.flag", "MAIN.Idle"])
+        assert first == {"type": "values", "scan": 1, "time_ms": 10.0, "forced": [], "power": {},
+                         "changed": {"MAIN.COUNT": 1, "MAIN.FLAG": True, "MAIN.IDLE": 7}}
+        assert entry(counter_registry(client), counter).clients == 1
+
+
+def counter_registry(client: TestClient) -> SimulationRegistry:
+    return client.app.state.simulations  # type: ignore[attr-defined]
+
+
+def test_values_carry_only_what_changed_since_the_last_message_to_this_client(client: TestClient,
+                                                                              counter: str) -> None:
+    with client.websocket_connect(ws_url(counter)) as ws:
+        subscribe(ws, ["Main.Count", "Main.Flag", "Main.Idle"])
+        ws.send_json({"type": "single_cycle"})
+        one, _ = recv_until(ws, of_type("values", scan=1))
+        assert one["changed"] == {"MAIN.COUNT": 1, "MAIN.FLAG": True}  # Idle did not change: not sent
+        ws.send_json({"type": "single_cycle"})
+        two, _ = recv_until(ws, of_type("values", scan=2))
+        assert two["changed"] == {"MAIN.COUNT": 2, "MAIN.FLAG": False}
+        ws.send_json({"type": "write", "path": "Main.Flag", "value": True})  # NOT TRUE: FALSE again
+        ws.send_json({"type": "single_cycle"})
+        three, _ = recv_until(ws, of_type("values", scan=3))
+        assert three["changed"] == {"MAIN.COUNT": 3}  # Flag ended FALSE as before: not sent
+        ws.send_json({"type": "subscribe", "paths": ["Main.Idle"], "interval_ms": 20})
+        again, _ = recv_until(ws, of_type("values"))
+        assert again["changed"] == {"MAIN.IDLE": 7}  # a new subscription starts with a full snapshot
+
+
+def test_running_sends_at_the_interval_with_increasing_scans(client: TestClient, counter: str) -> None:
+    with client.websocket_connect(ws_url(counter)) as ws:
+        subscribe(ws, ["Main.Count"], interval_ms=50)
+        ws.send_json({"type": "run"})
+        recv_until(ws, of_type("status", state="running"))
+        start = time.monotonic()
+        messages = [recv_until(ws, of_type("values"))[0] for _ in range(6)]
+        elapsed = time.monotonic() - start
+        scans = [m["scan"] for m in messages]
+        assert scans == sorted(set(scans))
+        assert all(m["changed"]["MAIN.COUNT"] == m["scan"] for m in messages)  # Count counts scans
+        assert 0.2 <= elapsed <= 0.6, elapsed  # 6 messages at 50 ms
+        assert all(3 <= b - a <= 8 for a, b in zip(scans, scans[1:])), scans  # ~5 scans of 10 ms apart
+
+
+def test_write_is_applied_once_before_the_next_scan(client: TestClient, counter: str) -> None:
+    with client.websocket_connect(ws_url(counter)) as ws:
+        subscribe(ws, ["Main.Count", "Main.Idle"])
+        ws.send_json({"type": "write", "path": "Main.Count", "value": 100})
+        ws.send_json({"type": "write", "path": "Main.Idle", "value": "16#FF"})
+        ws.send_json({"type": "single_cycle"})
+        message, _ = recv_until(ws, of_type("values", scan=1))
+        assert message["changed"] == {"MAIN.COUNT": 101, "MAIN.IDLE": 255}
+
+
+@pytest.mark.parametrize(("message", "code", "text"), [
+    ({"type": "write", "path": "Main.Count", "value": "abc"}, "bad_value", "MAIN.COUNT: 'abc' is not an INT"),
+    ({"type": "write", "path": "Main.Count", "value": 40000}, "bad_value",
+     "MAIN.COUNT: 40000 is out of range for INT (-32768..32767)"),
+    ({"type": "force", "path": "Main.Flag", "value": 2}, "bad_value", "MAIN.FLAG: 2 is not a BOOL (TRUE, FALSE, 1 or 0)"),
+    ({"type": "write", "path": "Main.Cuont", "value": 1}, "bad_path", "MAIN has no variable 'Cuont' - did you mean 'COUNT'?"),
+    ({"type": "unforce", "path": "Main.Count"}, "bad_path", "MAIN.COUNT is not forced"),
+    ({"type": "subscribe", "paths": ["Nope"]}, "bad_path", "unknown variable or program 'Nope'"),
+    ({"type": "continue"}, "bad_state", "the simulation is not halted"),
+    ({"type": "breakpoint_set", "pou": "Main", "line": 9}, "bad_path", "Main has no statement at line 9 (possible: 1, 2, 3)"),
+    ({"type": "trace_start", "paths": ["Main.Count"], "samples": 3, "trigger": "Main.Count"}, "bad_path",
+     "the trigger MAIN.COUNT is not a BOOL"),
+])
+def test_bad_requests_get_an_error_naming_the_problem_and_change_nothing(client: TestClient, counter: str,
+                                                                        registry: SimulationRegistry,
+                                                                        message: dict, code: str, text: str) -> None:
+    sim = entry(registry, counter).runner.sim
+    before = sim.snapshot()
+    with client.websocket_connect(ws_url(counter)) as ws:
+        recv(ws)
+        ws.send_json(message)
+        error, _ = recv_until(ws, of_type("error"))
+        assert (error["code"], error["message"]) == (code, text)
+        ws.send_json({"type": "single_cycle"})  # the connection still works
+        wait_for(lambda: sim.scan_count == 1)
+    assert sim.snapshot() == {**before, "MAIN.COUNT": 1, "MAIN.FLAG": True, "MAIN.RESULT": 100}
+
+
+def test_force_holds_a_value_the_program_writes_until_released(client: TestClient, counter: str) -> None:
+    with client.websocket_connect(ws_url(counter)) as ws:
+        subscribe(ws, ["Main.Flag"])
+        ws.send_json({"type": "force", "path": "main.flag", "value": "TRUE"})
+        log, _ = recv_until(ws, of_type("log"))
+        assert (log["level"], log["message"]) == ("info", "forced MAIN.FLAG := TRUE")
+        for scan in (1, 2, 3):
+            ws.send_json({"type": "single_cycle"})
+            values, _ = recv_until(ws, of_type("values", scan=scan))
+            assert values["forced"] == ["MAIN.FLAG"]
+        assert entry(counter_registry(client), counter).runner.sim.read("Main.Flag") is True
+        ws.send_json({"type": "unforce", "path": "Main.Flag"})
+        log, _ = recv_until(ws, of_type("log"))
+        assert log["message"] == "released the force on MAIN.FLAG"
+        ws.send_json({"type": "single_cycle"})
+        values, _ = recv_until(ws, of_type("values", scan=4))
+        assert (values["forced"], values["changed"]) == ([], {"MAIN.FLAG": False})
+        ws.send_json({"type": "force", "path": "Main.Count", "value": 5})
+        ws.send_json({"type": "force", "path": "Main.Idle", "value": 6})
+        ws.send_json({"type": "unforce_all"})
+        log, _ = recv_until(ws, of_type("log", message="released all forces (2)"))
+
+
+def test_a_line_breakpoint_halts_the_running_scan_there(client: TestClient, counter: str,
+                                                       registry: SimulationRegistry) -> None:
+    with client.websocket_connect(ws_url(counter)) as ws:
+        subscribe(ws, ["Main.Count", "Main.Flag"])
+        ws.send_json({"type": "breakpoint_set", "pou": "Main", "line": 2})
+        ws.send_json({"type": "run"})
+        status, _ = recv_until(ws, of_type("status", state="halted"))
+        assert status["at"] == {"pou": "MAIN", "instance": "MAIN", "network": None, "element": None,
+                                "line": 2, "column": 1}
+        sim = entry(registry, counter).runner.sim
+        scan = sim.scan_count
+        count = sim.read("Main.Count")
+        time.sleep(0.05)
+        assert sim.scan_count == scan  # the scan thread waits at the breakpoint
+        # statement 1 of the halted scan has run: Count is one ahead of the last complete scan
+        values, _ = recv_until(ws, lambda m: m["type"] == "values" and m["changed"].get("MAIN.COUNT") == count)
+        assert count == scan + 1
+        # writes act at once while halted
+        ws.send_json({"type": "write", "path": "Main.Count", "value": 1000})
+        recv_until(ws, lambda m: m["type"] == "values" and m["changed"].get("MAIN.COUNT") == 1000)
+        ws.send_json({"type": "step", "granularity": "statement"})
+        status, _ = recv_until(ws, of_type("status"))
+        assert (status["state"], status["at"]["line"]) == ("halted", 3)
+        ws.send_json({"type": "breakpoint_clear"})
+        ws.send_json({"type": "continue"})
+        recv_until(ws, of_type("status", state="running"))
+        recv_until(ws, lambda m: m["type"] == "values" and m["changed"].get("MAIN.COUNT", 0) > 1001)
+
+
+def test_step_from_a_stopped_simulation_and_single_cycle_finish_the_scan(client: TestClient, counter: str,
+                                                                         registry: SimulationRegistry) -> None:
+    with client.websocket_connect(ws_url(counter)) as ws:
+        recv(ws)
+        ws.send_json({"type": "step", "granularity": "statement"})
+        status, _ = recv_until(ws, of_type("status", state="halted"))
+        assert status["at"]["line"] == 1
+        ws.send_json({"type": "single_cycle"})  # the rest of this scan
+        recv_until(ws, of_type("status", state="stopped"))
+        sim = entry(registry, counter).runner.sim
+        assert (sim.scan_count, sim.read("Main.Count")) == (1, 1)
+        ws.send_json({"type": "step", "granularity": "cycle"})  # no breakpoint: one whole scan
+        wait_for(lambda: sim.scan_count == 2)
+        assert sim.halted is None
+
+
+def test_element_breakpoints_and_power_flow_in_ladder(client: TestClient, motor_sim: str) -> None:
+    with client.websocket_connect(ws_url(motor_sim)) as ws:
+        recv(ws)
+        first = subscribe(ws, ["Start", "Motor"],
+                          elements=[{"pou_instance": "Main", "ids": ["start", "seal", "stop", "motor", "ton"]}])
+        # nothing ran yet: every element reports "not executed"
+        assert first["power"] == {"Main/start": None, "Main/seal": None, "Main/stop": None, "Main/motor": None,
+                                  "Main/ton": None}
+        ws.send_json({"type": "write", "path": "Start", "value": True})
+        ws.send_json({"type": "single_cycle"})
+        values, _ = recv_until(ws, of_type("values", scan=1))
+        assert values["changed"] == {"START": True, "MOTOR": True}
+        assert values["power"] == {"Main/start": True, "Main/seal": False, "Main/stop": True, "Main/motor": True,
+                                   "Main/ton": False}
+        ws.send_json({"type": "breakpoint_set", "pou": "Main", "element": "motor"})
+        ws.send_json({"type": "single_cycle"})
+        status, _ = recv_until(ws, of_type("status", state="halted"))
+        assert status["at"]["pou"] == "MAIN" and status["at"]["element"] == "motor"
+        assert status["at"]["network"] == "seal_in"
+        ws.send_json({"type": "breakpoint_clear", "pou": "Main", "element": "motor"})
+        ws.send_json({"type": "breakpoint_set", "pou": "Main", "network": "count_starts"})
+        ws.send_json({"type": "continue"})
+        status, _ = recv_until(ws, of_type("status", state="halted"))
+        assert (status["at"]["network"], status["at"]["element"]) == ("count_starts", None)
+        ws.send_json({"type": "step", "granularity": "network"})
+        status, _ = recv_until(ws, of_type("status", state="halted"))
+        assert status["at"]["network"] == "lamp"
+
+
+def test_every_element_of_an_instance_when_no_ids_are_given(client: TestClient, motor_sim: str) -> None:
+    client.post(f"/api/simulations/{motor_sim}/cycle")
+    with client.websocket_connect(ws_url(motor_sim)) as ws:
+        recv(ws)
+        first = subscribe(ws, [], elements=[{"pou_instance": "MAIN"}])
+        assert {"MAIN/start", "MAIN/ton.ET", "MAIN/ctu.CV", "MAIN/lamp_coil"} <= set(first["power"])
+        assert first["power"]["MAIN/ton.ET"] == 0
+
+
+def test_trace_records_one_sample_per_scan_and_sends_it_when_full(client: TestClient, counter: str) -> None:
+    with client.websocket_connect(ws_url(counter)) as ws:
+        recv(ws)
+        ws.send_json({"type": "trace_start", "paths": ["Main.Count", "Main.Flag"], "samples": 4})
+        for _ in range(5):
+            ws.send_json({"type": "single_cycle"})
+        trace, _ = recv_until(ws, of_type("trace"))
+        assert trace == {"type": "trace", "values": {"MAIN.COUNT": [1, 2, 3, 4], "MAIN.FLAG": [True, False, True, False]},
+                         "scans": [1, 2, 3, 4], "time_ms": [10.0, 20.0, 30.0, 40.0]}
+
+
+def test_a_trace_with_a_trigger_starts_at_the_rising_edge(client: TestClient, counter: str) -> None:
+    with client.websocket_connect(ws_url(counter)) as ws:
+        recv(ws)
+        ws.send_json({"type": "force", "path": "Main.Flag", "value": True})  # TRUE from the start: no edge
+        ws.send_json({"type": "trace_start", "paths": ["Main.Count"], "samples": 3, "trigger": "Main.Flag"})
+        for _ in range(3):
+            ws.send_json({"type": "single_cycle"})
+        ws.send_json({"type": "unforce", "path": "Main.Flag"})
+        for _ in range(5):
+            ws.send_json({"type": "single_cycle"})  # scan 4: FALSE, scan 5: TRUE (the edge)
+        trace, _ = recv_until(ws, of_type("trace"))
+        assert trace["values"] == {"MAIN.COUNT": [5, 6, 7]}
+        assert trace["scans"] == [5, 6, 7]
+
+
+def test_trace_limits_are_checked(client: TestClient, counter: str) -> None:
+    with client.websocket_connect(ws_url(counter)) as ws:
+        recv(ws)
+        ws.send_json({"type": "trace_start", "paths": ["Main.Count"] * 21, "samples": 10})
+        error, _ = recv_until(ws, of_type("error"))
+        assert error["code"] == "bad_message" and error["message"].startswith("trace_start.paths: List should have at most 20")
+        ws.send_json({"type": "trace_start", "paths": ["Main.Count"], "samples": 10_001})
+        error, _ = recv_until(ws, of_type("error"))
+        assert error["message"] == "trace_start.samples: Input should be less than or equal to 10000"
+
+
+def test_two_clients_have_their_own_subscriptions(client: TestClient, counter: str) -> None:
+    with client.websocket_connect(ws_url(counter)) as a, client.websocket_connect(ws_url(counter)) as b:
+        assert subscribe(a, ["Main.Count"])["changed"] == {"MAIN.COUNT": 0}
+        assert subscribe(b, ["Main.Flag", "Main.Idle"], interval_ms=40)["changed"] == {"MAIN.FLAG": False,
+                                                                                      "MAIN.IDLE": 7}
+        a.send_json({"type": "single_cycle"})
+        va, _ = recv_until(a, of_type("values", scan=1))
+        vb, _ = recv_until(b, of_type("values", scan=1))
+        assert (va["changed"], vb["changed"]) == ({"MAIN.COUNT": 1}, {"MAIN.FLAG": True})
+        a.send_json({"type": "write", "path": "Main.Count", "value": "x"})
+        recv_until(a, of_type("error"))
+        b.send_json({"type": "single_cycle"})
+        vb, seen = recv_until(b, of_type("values", scan=2))
+        assert all(m["type"] != "error" for m in seen)  # errors go to the client that asked
+
+
+def test_forces_and_state_changes_reach_every_client(client: TestClient, counter: str) -> None:
+    with client.websocket_connect(ws_url(counter)) as a, client.websocket_connect(ws_url(counter)) as b:
+        recv(a), recv(b)
+        a.send_json({"type": "force", "path": "Main.Idle", "value": 3})
+        assert recv_until(b, of_type("log"))[0]["message"] == "forced MAIN.IDLE := 3"
+        a.send_json({"type": "run"})
+        recv_until(b, of_type("status", state="running"))
+        b.send_json({"type": "stop"})
+        recv_until(a, of_type("status", state="stopped"))
+
+
+def test_a_runtime_error_is_logged_with_its_location_and_the_server_keeps_serving(
+        client: TestClient, counter: str) -> None:
+    with client.websocket_connect(ws_url(counter)) as ws:
+        subscribe(ws, ["Main.Count"])
+        ws.send_json({"type": "run"})
+        recv_until(ws, of_type("status", state="running"))
+        ws.send_json({"type": "write", "path": "Main.Divisor", "value": 0})
+        log, _ = recv_until(ws, of_type("log"))
+        assert log["level"] == "error"
+        assert log["message"].startswith("division by zero: 100 / 0 at POU MAIN, line 3 column 1 (instance MAIN)")
+        assert log["at"] == {"pou": "MAIN", "instance": "MAIN", "network": None, "element": None, "line": 3,
+                             "column": 1}
+        recv_until(ws, of_type("status", state="faulted"))
+        assert client.get("/api/health").status_code == 200
+        ws.send_json({"type": "run"})
+        error, _ = recv_until(ws, of_type("error"))
+        assert error["code"] == "bad_state"
+        assert client.post(f"/api/simulations/{counter}/reset").json()["state"] == "stopped"
+        recv_until(ws, of_type("status", state="stopped"))
+
+
+def test_a_watchdog_trip_is_logged(client: TestClient, workspace: Workspace) -> None:
+    from ladderlab.model import Project, Task
+
+    from .helpers import st_program
+
+    registry = install(client, SimulationSettings(watchdog_s=0.05))
+    try:
+        body = "IF Go THEN\n    WHILE TRUE DO\n        n := n + 1;\n    END_WHILE;\nEND_IF;"
+        program = st_program("Main", "VAR\n    Go : BOOL;\n    n : DINT;\nEND_VAR", body)
+        workspace.create(Project(name="loop", pous=[program], tasks=[Task(name="T", programs=["Main"])]))
+        sim_id = client.post("/api/projects/loop/simulations").json()["id"]
+        with client.websocket_connect(ws_url(sim_id)) as ws:
+            recv(ws)
+            ws.send_json({"type": "run"})
+            recv_until(ws, of_type("status", state="running"))
+            ws.send_json({"type": "write", "path": "Main.Go", "value": True})
+            log, _ = recv_until(ws, of_type("log"))
+            assert log["level"] == "error" and "watchdog" in log["message"]
+            assert log["at"]["pou"] == "MAIN" and log["at"]["line"] in (2, 3)
+            recv_until(ws, of_type("status", state="faulted"))
+        assert client.get(f"/api/simulations/{sim_id}").json()["fault"]["code"] == "ENGINE-RUNTIME"
+    finally:
+        registry.close()
+
+
+def test_a_foreign_origin_is_refused_and_the_served_or_listed_ones_accepted(client: TestClient,
+                                                                             counter: str) -> None:
+    with pytest.raises(WebSocketDisconnect) as refused:
+        with client.websocket_connect(ws_url(counter), headers={"Origin": "http://evil.example"}):
+            pass
+    assert refused.value.code == 1008
+    with client.websocket_connect(ws_url(counter), headers={"Origin": "http://testserver"}) as ws:
+        assert recv(ws)["type"] == "status"
+    registry = install(client, SimulationSettings(allowed_origins=("http://localhost:5173",)))
+    try:
+        with client.websocket_connect(ws_url(counter), headers={"Origin": "http://localhost:5173"}) as ws:
+            assert recv(ws)["code"] == "bad_path"  # accepted; this registry has no such simulation
+    finally:
+        registry.close()
+
+
+def test_an_unknown_simulation_gets_an_error_and_a_close(client: TestClient, registry: SimulationRegistry) -> None:
+    with client.websocket_connect(ws_url("nope")) as ws:
+        error = recv(ws)
+        assert (error["code"], error["message"][:24]) == ("bad_path", "no simulation 'nope' (it")
+        with pytest.raises(WebSocketDisconnect) as closed:
+            ws.receive_text()
+        assert closed.value.code == 4404
+
+
+def test_deleting_the_simulation_tells_and_closes_its_clients(client: TestClient, counter: str) -> None:
+    with client.websocket_connect(ws_url(counter)) as ws:
+        recv(ws)
+        assert client.delete(f"/api/simulations/{counter}").status_code == 204
+        log, _ = recv_until(ws, of_type("log"))
+        assert log["message"] == "the simulation was deleted"
+        with pytest.raises(WebSocketDisconnect) as closed:
+            while True:
+                ws.receive_text()
+        assert closed.value.code == 4410
+
+
+def test_clients_per_simulation_and_paths_per_subscription_are_bounded(client: TestClient,
+                                                                       workspace: Workspace) -> None:
+    registry = install(client, SimulationSettings(max_clients=1, max_paths=2))
+    try:
+        workspace.create(counter_project())
+        sim_id = client.post("/api/projects/counter/simulations").json()["id"]
+        with client.websocket_connect(ws_url(sim_id)) as first:
+            recv(first)
+            first.send_json({"type": "subscribe", "paths": ["Main.Count", "Main.Flag", "Main.Idle"]})
+            error, _ = recv_until(first, of_type("error"))
+            assert error == {"type": "error", "code": "too_many",
+                             "message": "a subscription may hold 2 paths and 32 POU instances, not 3 and 0"}
+            with client.websocket_connect(ws_url(sim_id)) as second:
+                assert recv(second)["code"] == "too_many"
+                with pytest.raises(WebSocketDisconnect) as closed:
+                    second.receive_text()
+                assert closed.value.code == 1013
+            assert client.get(f"/api/simulations/{sim_id}").json()["clients"] == 1
+        wait_for(lambda: client.get(f"/api/simulations/{sim_id}").json()["clients"] == 0)
+    finally:
+        registry.close()
