@@ -89,11 +89,11 @@ class _Network:
                 return Text(operand(target.var))
         raise ValueError(f"feedback from {source.node}.{source.pin} without a variable")  # refused by the lowering
 
-    def as_value(self, value: PinValue, element: str) -> Value:
+    def as_value(self, value: PinValue, element: str, hint: str) -> Value:
         """``value`` fixed at this position (an operand text is read here, once)."""
         if isinstance(value, Value):
             return value
-        return self.code.value(value.expr, element, element, pinned=True)
+        return self.code.value(value.expr, element, hint, pinned=True)
 
     # ------------------------------------------------------------ nodes
     def input_node(self, node: fbd.InputNode) -> None:
@@ -139,7 +139,7 @@ class _Network:
             inputs[pin] = self.flagged(self.source(node.id, pin), flags.get(pin), node.id, pin)
         en = inputs.pop("EN", None)
         if en is not None and (node.id, "ENO") in self.consumed:
-            en = self.as_value(en, node.id)
+            en = self.as_value(en, node.id, f"{node.id}_EN")
         args = {pin: self.read(value) for pin, value in inputs.items()}
         instance = operand(node.instance) if callee.is_fb else None
         guard = self.read(en) if en is not None else None
@@ -150,9 +150,12 @@ class _Network:
             if en is not None:
                 pins["ENO"] = en
         elif en is None:
-            call = ast.Call(ast.Name(callee.name), [ast.Arg(pin, args[pin]) for pin in sorted(args, key=callee.rank)])
-            pins["OUT"] = code.value(call, node.id, f"{node.id}_OUT", type=self.result_type(node, callee),
-                                     effect=callee.pou is not None)
+            result_type = self.result_type(node, callee)
+            operands = [args[pin] for pin in sorted(args, key=callee.rank)]
+            call = _operator(callee.name, operands, result_type) if callee.pou is None else None
+            if call is None:
+                call = ast.Call(ast.Name(callee.name), [ast.Arg(pin, args[pin]) for pin in sorted(args, key=callee.rank)])
+            pins["OUT"] = code.value(call, node.id, f"{node.id}_OUT", type=result_type, effect=callee.pou is not None)
         else:
             target = None
             if (node.id, "OUT") in self.consumed:
@@ -175,6 +178,21 @@ class _Network:
             model = self.scope.checked.pou(callee.name)
             return str(model.return_type)
         return _type_text(self.result_types[node.id])
+
+
+def _operator(function: str, operands: list[Any], result_type: str) -> Any:
+    """BOOL AND/OR/XOR/NOT blocks as the operators they are, MOVE as its input (docs/ir.md: ``MOVE(x)`` without
+    EN is ``x``); None for any other call."""
+    if function == "MOVE":
+        return operands[0]
+    if result_type != "BOOL" or function not in ("AND", "OR", "XOR", "NOT"):
+        return None
+    if function == "NOT":
+        return ast.Unary("NOT", operands[0])
+    result = operands[0]
+    for operand_ in operands[1:]:
+        result = ast.Binary(function, result, operand_)
+    return result
 
 
 def _flags(node: fbd.FbdNode) -> dict[str, fbd.PinFlags]:

@@ -166,7 +166,8 @@ def plan(code: NetworkCode, declarations: Declarations) -> Planned:
     temps: dict[int, ast.Expr] = {}
 
     def resolve(node: Any) -> Any:
-        return substitute(node, lambda value: temps[id(value)] if id(value) in temps else resolve(value.expr))
+        return without_double_not(
+            substitute(node, lambda value: temps[id(value)] if id(value) in temps else resolve(value.expr)))
 
     statements: list[tuple[str | None, ast.Stmt]] = []
     for op in code.ops:
@@ -201,6 +202,22 @@ def substitute(node: Any, replace: Any) -> Any:
         return tuple(substitute(item, replace) for item in node)
     if dataclasses.is_dataclass(node) and not isinstance(node, (ast.Span, Value)):
         changes = {f.name: substitute(getattr(node, f.name), replace) for f in dataclasses.fields(node)
+                   if f.name not in ("span", "ty", "ref")}
+        return dataclasses.replace(node, **changes)
+    return node
+
+
+def without_double_not(node: Any) -> Any:
+    """``NOT NOT x`` -> ``x`` (a negated pin fed by a negated value); NOT is its own inverse on BOOL and bits."""
+    if isinstance(node, ast.Unary) and node.op == "NOT" and isinstance(node.operand, ast.Unary) \
+            and node.operand.op == "NOT":
+        return without_double_not(node.operand.operand)
+    if isinstance(node, list):
+        return [without_double_not(item) for item in node]
+    if isinstance(node, tuple):
+        return tuple(without_double_not(item) for item in node)
+    if dataclasses.is_dataclass(node) and not isinstance(node, (ast.Span, Value, Use)):
+        changes = {f.name: without_double_not(getattr(node, f.name)) for f in dataclasses.fields(node)
                    if f.name not in ("span", "ty", "ref")}
         return dataclasses.replace(node, **changes)
     return node
