@@ -1,4 +1,4 @@
-import { useEffect } from "react";
+import { useEffect, useState, type FormEvent } from "react";
 import type { ProjectSummary } from "./api/client";
 import { useAppStore } from "./store";
 import { useWorkspace } from "./project/store";
@@ -50,6 +50,49 @@ function ProjectRow({ project }: { project: ProjectSummary }) {
   );
 }
 
+/** "New project": a name field that creates an empty project and opens it. */
+function NewProject() {
+  const createProject = useAppStore((s) => s.createProject);
+  const [open, setOpen] = useState(false);
+  const [name, setName] = useState("");
+  const [error, setError] = useState<string | null>(null);
+  const [busy, setBusy] = useState(false);
+  if (!open) {
+    return (
+      <button type="button" className="new-project-button" onClick={() => setOpen(true)}>
+        New project
+      </button>
+    );
+  }
+  const submit = async (e: FormEvent) => {
+    e.preventDefault();
+    setBusy(true);
+    const problem = await createProject(name);
+    setBusy(false);
+    setError(problem);
+    if (!problem) {
+      setOpen(false);
+      setName("");
+    }
+  };
+  return (
+    <form className="new-project" onSubmit={(e) => void submit(e)} aria-label="New project">
+      <input aria-label="Project name" autoFocus value={name} onChange={(e) => setName(e.target.value)} placeholder="project name" spellCheck={false} />
+      <button type="submit" disabled={busy}>
+        Create
+      </button>
+      <button type="button" onClick={() => setOpen(false)}>
+        Cancel
+      </button>
+      {error ? (
+        <p className="new-project-error" role="alert">
+          {error}
+        </p>
+      ) : null}
+    </form>
+  );
+}
+
 function ProjectList() {
   const projects = useAppStore((s) => s.projects);
   const status = useAppStore((s) => s.projectsStatus);
@@ -86,6 +129,7 @@ function ProjectList() {
           Reload
         </button>
       </div>
+      <NewProject />
       {content}
     </nav>
   );

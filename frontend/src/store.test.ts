@@ -9,6 +9,7 @@ function fakeApi(overrides: Partial<Api> = {}): Api {
   return {
     getHealth: vi.fn(async (): Promise<Health> => ({ status: "ok", version: "0.1.0" })),
     listProjects: vi.fn(async () => [demo, alpha]),
+    createProject: vi.fn(async (name: string) => ({ name, revision: "r0", modified: "2024-03-01T00:00:00Z", pou_count: 0 })),
     ...overrides,
   };
 }
@@ -144,5 +145,36 @@ describe("health", () => {
     await store.getState().checkHealth();
     expect(store.getState().healthStatus).toBe("down");
     expect(store.getState().healthError).toContain("degraded");
+  });
+});
+
+describe("new project", () => {
+  it("creates the project, reloads the list and selects it", async () => {
+    const fresh: ProjectSummary = { name: "fresh", revision: "r0", modified: "2024-03-01T00:00:00Z", pou_count: 0 };
+    const api = fakeApi({ listProjects: vi.fn(async () => [demo, fresh]) });
+    const store = createAppStore(api);
+    expect(await store.getState().createProject(" fresh ")).toBeNull();
+    expect(api.createProject).toHaveBeenCalledWith("fresh");
+    expect(store.getState().projects.map((p) => p.name)).toEqual(["demo", "fresh"]);
+    expect(store.getState().selectedProject).toBe("fresh");
+  });
+
+  it("returns the server's refusal and keeps the selection", async () => {
+    const api = fakeApi({
+      createProject: vi.fn(async () => {
+        throw new ApiError("a project named demo already exists", 409);
+      }),
+    });
+    const store = createAppStore(api);
+    await store.getState().loadProjects();
+    store.getState().selectProject("alpha");
+    expect(await store.getState().createProject("demo")).toBe("a project named demo already exists");
+    expect(store.getState().selectedProject).toBe("alpha");
+  });
+
+  it("refuses an empty name without asking the server", async () => {
+    const api = fakeApi();
+    expect(await createAppStore(api).getState().createProject("  ")).toBe("Enter a name for the project.");
+    expect(api.createProject).not.toHaveBeenCalled();
   });
 });

@@ -21,6 +21,8 @@ export interface AppActions {
   loadProjects(): Promise<void>;
   checkHealth(): Promise<void>;
   selectProject(name: string | null): void;
+  /** Creates an empty project and opens it; the error message when refused, else null. */
+  createProject(name: string): Promise<string | null>;
 }
 
 export type AppState = AppData & AppActions;
@@ -85,6 +87,19 @@ export function createAppStore(api: Api = defaultApi): StoreApi<AppState> {
     selectProject(name) {
       if (name !== null && !get().projects.some((p) => p.name === name)) return;
       set({ selectedProject: name });
+    },
+
+    async createProject(text) {
+      const name = text.trim();
+      if (!name) return "Enter a name for the project.";
+      try {
+        await api.createProject(name);
+      } catch (err) {
+        return message(err);
+      }
+      await get().loadProjects();
+      get().selectProject(name);
+      return null;
     },
   }));
 }

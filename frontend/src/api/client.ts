@@ -1,5 +1,5 @@
 // Typed helpers for the LadderLab HTTP API (served under /api by the FastAPI backend).
-import type { ConflictDetail, LibraryEntry, ProjectDocument, ProjectSummary, SaveResult, SymbolTable } from "../generated/api";
+import type { CheckReport, ConflictDetail, LibraryEntry, ProjectDocument, ProjectSummary, SaveResult, SymbolTable } from "../generated/api";
 import type { Project } from "../generated/project";
 
 export type { ProjectSummary };
@@ -140,13 +140,45 @@ export function getSymbols(project: string, pou: string): Promise<SymbolTable> {
   return requestJson<SymbolTable>(`${projectPath(project)}/pous/${encodeURIComponent(pou)}/symbols`);
 }
 
+/** `POST /api/projects`: a new empty project. */
+export function createProject(name: string): Promise<ProjectSummary> {
+  return requestJson<ProjectSummary>("/api/projects", {
+    method: "POST",
+    headers: { "Content-Type": "application/json" },
+    body: JSON.stringify({ name }),
+  });
+}
+
+/** `POST /api/projects/{name}/check`: every diagnostic of the saved project, located. */
+export function checkProject(name: string): Promise<CheckReport> {
+  return requestJson<CheckReport>(`${projectPath(name)}/check`, { method: "POST" });
+}
+
+/** One network's lines in an exported POU (1-based line numbers). */
+export interface SourceMapEntry {
+  line: number;
+  network: string;
+  element?: string | null;
+}
+
+/** `GET /api/projects/{name}/export/st?pou=`: a POU as ST, with the lines each network became. */
+export interface StExport {
+  text: string;
+  source_map: SourceMapEntry[];
+}
+
+export function exportSt(project: string, pou: string): Promise<StExport> {
+  return requestJson<StExport>(`${projectPath(project)}/export/st?pou=${encodeURIComponent(pou)}`);
+}
+
 /** The calls the stores need; tests pass fakes. */
 export interface Api {
   getHealth(): Promise<Health>;
   listProjects(): Promise<ProjectSummary[]>;
+  createProject(name: string): Promise<ProjectSummary>;
 }
 
-export const api: Api = { getHealth, listProjects };
+export const api: Api = { getHealth, listProjects, createProject };
 
 /** The calls the open project needs. */
 export interface ProjectApi {

@@ -1,9 +1,18 @@
 // The open project: project tree (POUs by kind with their language, types, globals, tasks), tabs
-// of open POUs with unsaved marks, the LD editor for LD POUs, Save (Ctrl+S) and the dialog for a
-// save conflict (reload theirs or overwrite deliberately).
-import { useEffect } from "react";
-import type { Pou } from "../generated/project";
+// of open POUs with unsaved marks, the LD editor for LD POUs (online when a simulation runs), the
+// simulation toolbar, the bottom panels, Save (Ctrl+S) and the dialog for a save conflict (reload
+// theirs or overwrite deliberately).
+import { useCallback, useEffect, useMemo } from "react";
+import type { Diagnostic, SymbolTable } from "../generated/api";
+import type { LdBody, Pou } from "../generated/project";
 import { LdEditor } from "../ld/editor/LdEditor";
+import type { History } from "../ld/history";
+import { operandPath } from "../online/ldBinding";
+import { onlineStore } from "../online/store";
+import { SIMULATION_KEYS, SimulationBar } from "../online/SimulationBar";
+import { instanceOf, useLdOnline } from "../online/useLdOnline";
+import { BottomPanels } from "../panels/BottomPanels";
+import { focusOf, panelsStore, usePanels } from "../panels/store";
 import { pouOf, useWorkspace, workspaceStore } from "./store";
 
 const KINDS: { kind: Pou["kind"]; title: string }[] = [
@@ -101,18 +110,25 @@ function Tabs() {
   );
 }
 
-function PouView({ name }: { name: string }) {
-  const pou = useWorkspace((s) => pouOf(s.project, name));
-  const history = useWorkspace((s) => s.histories[name]);
+const NO_DIAGNOSTICS: Diagnostic[] = [];
+
+/** The symbols of a POU and the globals, for autocomplete and online paths. */
+const symbolsOf = (table: SymbolTable | undefined) => (table ? [...table.symbols, ...table.globals] : []);
+
+function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
+  const name = pou.name;
   const library = useWorkspace((s) => s.library);
   const table = useWorkspace((s) => s.symbols[name]);
   const setLdHistory = useWorkspace((s) => s.setLdHistory);
   const declare = useWorkspace((s) => s.declare);
-  if (!pou) return <p className="placeholder">{name} is no longer in this project.</p>;
-  if (pou.language !== "ld" || !history) {
-    return <p className="placeholder">The {LANGUAGE[pou.language]} editor is not built yet; {name} opens here once it is.</p>;
-  }
-  const symbols = table ? [...table.symbols, ...table.globals] : [];
+  const checked = usePanels((s) => s.diagnostics) ?? NO_DIAGNOSTICS;
+  const focus = usePanels((s) => (s.focus?.pou.toUpperCase() === name.toUpperCase() ? s.focus : null));
+  const symbols = useMemo(() => symbolsOf(table), [table]);
+  const live = useLdOnline(pou, history.present, symbols);
+  const diagnostics = useMemo(
+    () => [...(table?.diagnostics ?? []), ...checked.filter((d) => d.pou?.toUpperCase() === name.toUpperCase())].filter((d) => d.network),
+    [table, checked, name],
+  );
   return (
     <LdEditor
       key={name}
@@ -120,10 +136,27 @@ function PouView({ name }: { name: string }) {
       onHistoryChange={(h) => setLdHistory(name, h)}
       library={library}
       symbols={symbols}
-      diagnostics={table?.diagnostics.filter((d) => d.network)}
+      diagnostics={diagnostics}
       onDeclareVariable={(d) => declare(name, d)}
+      online={live.online}
+      readOnly={live.readOnly}
+      readOnlyAction={live.readOnly ? { label: "Go offline to edit", run: () => void onlineStore.getState().goOffline() } : undefined}
+      onlineActions={live.actions}
+      onVisibleChange={live.onVisibleChange}
+      focus={focus}
+      extraShortcuts={SIMULATION_KEYS}
     />
   );
+}
+
+function PouView({ name }: { name: string }) {
+  const pou = useWorkspace((s) => pouOf(s.project, name));
+  const history = useWorkspace((s) => s.histories[name]);
+  if (!pou) return <p className="placeholder">{name} is no longer in this project.</p>;
+  if (pou.language !== "ld" || !history) {
+    return <p className="placeholder">The {LANGUAGE[pou.language]} editor is not built yet; {name} opens here once it is.</p>;
+  }
+  return <LdPouView pou={pou} history={history} />;
 }
 
 function ConflictDialog() {
@@ -169,6 +202,31 @@ export function WorkspaceView() {
   const restoredAt = useWorkspace((s) => s.restoredAt);
   const save = useWorkspace((s) => s.save);
   const reload = useWorkspace((s) => s.reload);
+  const project = useWorkspace((s) => s.project);
+
+  const reveal = useCallback((d: Diagnostic) => {
+    const target = focusOf(d);
+    if (!target) return;
+    workspaceStore.getState().openPou(pouOf(workspaceStore.getState().project, target.pou)?.name ?? target.pou);
+    panelsStore.getState().reveal(target);
+  }, []);
+
+  /** A variable dragged from the active diagram, as a path of its POU's instance. */
+  const pathOfOperand = useCallback(
+    (operand: string) => {
+      const ws = workspaceStore.getState();
+      const pou = ws.active ? pouOf(project, ws.active) : undefined;
+      const instance = pou ? instanceOf(pou) : null;
+      return instance ? operandPath(operand, instance, symbolsOf(ws.symbols[pou!.name])) : null;
+    },
+    [project],
+  );
+
+  // A different project: the old one's simulation and check results do not apply.
+  useEffect(() => {
+    void onlineStore.getState().goOffline();
+    panelsStore.getState().clear();
+  }, [name]);
 
   useEffect(() => {
     const onKey = (e: KeyboardEvent) => {
@@ -214,11 +272,13 @@ export function WorkspaceView() {
           </span>
         ) : null}
       </div>
+      <SimulationBar />
       <ProjectTree />
       <div className="editor-area">
         <Tabs />
         {active ? <PouView name={active} /> : <p className="placeholder">Open a POU from the project tree.</p>}
       </div>
+      <BottomPanels onReveal={reveal} pathOfOperand={pathOfOperand} />
       <ConflictDialog />
     </div>
   );

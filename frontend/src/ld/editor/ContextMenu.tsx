@@ -4,14 +4,23 @@ import { available, COMMANDS, type Command, type CommandContext, type CommandGro
 
 const GROUP_ORDER: CommandGroup[] = ["insert", "mode", "edit", "clipboard", "network", "history"];
 
+/** An item that is not an editor command (online: write, force, watch). */
+export interface MenuItem {
+  id: string;
+  label: string;
+  run(): void;
+}
+
 export interface ContextMenuProps {
   x: number;
   y: number;
   ctx: CommandContext;
+  /** Shown first, as their own group. */
+  extra?: readonly MenuItem[];
   onClose(): void;
 }
 
-export function ContextMenu({ x, y, ctx, onClose }: ContextMenuProps) {
+export function ContextMenu({ x, y, ctx, extra = [], onClose }: ContextMenuProps) {
   const menu = useRef<HTMLUListElement>(null);
   useEffect(() => {
     menu.current?.querySelector<HTMLButtonElement>("button")?.focus();
@@ -22,7 +31,7 @@ export function ContextMenu({ x, y, ctx, onClose }: ContextMenuProps) {
     return () => window.removeEventListener("mousedown", close);
   }, [onClose]);
   const groups = GROUP_ORDER.map((group) => COMMANDS.filter((c) => c.group === group && available(c, ctx))).filter((g) => g.length);
-  const run = (command: Command) => {
+  const run = (command: Pick<Command, "run">) => {
     onClose();
     command.run(ctx);
   };
@@ -41,8 +50,21 @@ export function ContextMenu({ x, y, ctx, onClose }: ContextMenuProps) {
         if (e.key === "ArrowUp") items[(at - 1 + items.length) % items.length]?.focus();
       }}
     >
+      {extra.length ? (
+        <li role="none">
+          <ul role="none">
+            {extra.map((item) => (
+              <li key={item.id} role="none">
+                <button type="button" role="menuitem" onClick={() => run({ run: item.run })}>
+                  <span>{item.label}</span>
+                </button>
+              </li>
+            ))}
+          </ul>
+        </li>
+      ) : null}
       {groups.map((group, i) => (
-        <li key={group[0]!.group} role="none" className={i > 0 ? "ld-menu-group" : undefined}>
+        <li key={group[0]!.group} role="none" className={i > 0 || extra.length ? "ld-menu-group" : undefined}>
           <ul role="none">
             {group.map((command) => (
               <li key={command.id} role="none">

@@ -328,3 +328,62 @@ describe("history depth", () => {
     expect(t.current()).toEqual(bodyOf(net("n1", c("a"))));
   });
 });
+
+describe("online commands (issue 7 online mode)", () => {
+  const actions = () => ({ toggle: vi.fn(), write: vi.fn(), force: vi.fn(), unforce: vi.fn(), watch: vi.fn() });
+
+  it("toggles a BOOL operand on double-click instead of editing it", () => {
+    const onlineActions = actions();
+    const t = setup(motorMain, { readOnly: "Go offline to edit", onlineActions });
+    fireEvent.doubleClick(t.hit("start"));
+    fireEvent.doubleClick(t.hit("motor"));
+    expect(onlineActions.toggle.mock.calls).toEqual([["Start"], ["Motor"]]);
+    expect(screen.queryByRole("combobox")).toBeNull();
+    expect(t.current()).toBe(motorMain);
+  });
+
+  it("writes, forces, releases and watches the clicked element's variable from the context menu", () => {
+    const onlineActions = actions();
+    const t = setup(motorMain, { readOnly: "Go offline to edit", onlineActions });
+    const menuItem = (name: string | RegExp) => {
+      fireEvent.contextMenu(t.hit("stop"));
+      return within(screen.getByRole("menu")).getByRole("menuitem", { name });
+    };
+    fireEvent.click(menuItem("Force TRUE"));
+    fireEvent.click(menuItem("Force FALSE"));
+    fireEvent.click(menuItem("Release force"));
+    fireEvent.click(menuItem("Add to watch list"));
+    expect(onlineActions.force.mock.calls).toEqual([["Stop", true], ["Stop", false]]);
+    expect(onlineActions.unforce.mock.calls).toEqual([["Stop"]]);
+    expect(onlineActions.watch.mock.calls).toEqual([["Stop"]]);
+
+    fireEvent.click(menuItem(/Write value of Stop/));
+    const dialog = screen.getByRole("dialog", { name: "Write Stop" });
+    fireEvent.change(within(dialog).getByRole("textbox", { name: "Value" }), { target: { value: "TRUE" } });
+    fireEvent.click(within(dialog).getByRole("button", { name: "OK" }));
+    expect(onlineActions.write.mock.calls).toEqual([["Stop", "TRUE"]]);
+
+    fireEvent.click(menuItem("Force value…"));
+    const force = screen.getByRole("dialog", { name: "Force Stop" });
+    fireEvent.change(within(force).getByRole("textbox", { name: "Value" }), { target: { value: "FALSE" } });
+    fireEvent.submit(force);
+    expect(onlineActions.force.mock.calls.at(-1)).toEqual(["Stop", "FALSE"]);
+  });
+
+  it("offers no online items offline, and a Go offline button with the read-only reason", () => {
+    const run = vi.fn();
+    const t = setup(motorMain, { readOnly: "Online", readOnlyAction: { label: "Go offline to edit", run } });
+    fireEvent.contextMenu(t.hit("stop"));
+    expect(within(screen.getByRole("menu")).queryByRole("menuitem", { name: "Force TRUE" })).toBeNull();
+    fireEvent.click(screen.getByRole("button", { name: "Go offline to edit" }));
+    expect(run).toHaveBeenCalledOnce();
+  });
+
+  it("reports the networks in view and selects what a focus request names", () => {
+    const onVisibleChange = vi.fn();
+    const t = setup(motorMain, { onVisibleChange });
+    expect(onVisibleChange).toHaveBeenLastCalledWith(networksOf(motorMain).map((n) => n.id));
+    t.rerender(<LdEditor history={historyOf(motorMain)} onHistoryChange={() => undefined} focus={{ element: "stop", seq: 1 }} />);
+    expect(t.selected()).toEqual(["stop"]);
+  });
+});

@@ -14,10 +14,12 @@ import { LdDiagram } from "../view/LdDiagram";
 import type { DiagramHandlers, OnlineView, Selection, Target } from "../view/types";
 import { BoxPicker } from "./BoxPicker";
 import { available, COMMANDS, commandForKey, insert, selectedNetwork, type CommandContext, type CommandGroup } from "./commands";
-import { ContextMenu } from "./ContextMenu";
+import { ContextMenu, type MenuItem } from "./ContextMenu";
 import { guessType, instanceName, symbolNames, undeclared, type VariableDeclaration } from "./declare";
 import { extend, navigate, type Direction } from "./navigation";
 import { OperandEditor } from "./OperandEditor";
+import { setDraggedOperand } from "./dragOperand";
+import { ValuePrompt } from "./ValuePrompt";
 import "../ld.css";
 
 export interface LdEditorProps {
@@ -31,7 +33,26 @@ export interface LdEditorProps {
   online?: OnlineView;
   /** Editing is off (online); the reason is shown. */
   readOnly?: string | null;
+  /** A button next to the read-only reason (online: "Go offline to edit"). */
+  readOnlyAction?: { label: string; run(): void };
   onDeclareVariable?(declaration: VariableDeclaration): void;
+  /** Online commands on operands (double-click toggles a BOOL, the context menu writes and forces). */
+  onlineActions?: LdOnlineActions;
+  /** Told which networks are rendered, so online mode subscribes only to those. */
+  onVisibleChange?(networks: readonly string[]): void;
+  /** More rows for the shortcut help (the app's own keys, e.g. the simulation commands). */
+  extraShortcuts?: readonly [string, string][];
+  /** Select and reveal a network or element (a diagnostic was clicked); `seq` repeats a jump to the same place. */
+  focus?: { network?: string | null; element?: string | null; seq: number } | null;
+}
+
+/** What the diagram can ask of a running simulation, by operand text (the caller maps it to a path). */
+export interface LdOnlineActions {
+  toggle(operand: string): void;
+  write(operand: string, text: string): void;
+  force(operand: string, value: boolean | string): void;
+  unforce(operand: string): void;
+  watch(operand: string): void;
 }
 
 type Editing =
@@ -93,6 +114,13 @@ function operandText(body: LdBody, id: string, field: OperandField): string {
   return "";
 }
 
+/** The variable an element is about, for online commands and dragging to the watch list. */
+function variableOf(body: LdBody, id: string): string | null {
+  const e = locate(body, id)?.element;
+  const text = e?.type === "contact" || e?.type === "coil" ? e.var : e?.type === "compare" ? e.left : e?.type === "box" ? (e.instance ?? "") : "";
+  return text.trim() || null;
+}
+
 const fieldLabel = (field: OperandField) =>
   field.kind === "input" || field.kind === "output" ? `Pin ${field.pin}` : { var: "Variable", left: "Left operand", right: "Right operand", instance: "Instance", target: "Jump target" }[field.kind];
 
@@ -104,7 +132,12 @@ export function LdEditor({
   diagnostics,
   online,
   readOnly = null,
+  readOnlyAction,
   onDeclareVariable,
+  onlineActions,
+  onVisibleChange,
+  focus,
+  extraShortcuts = [],
 }: LdEditorProps) {
   const body = history.present;
   const root = useRef<HTMLDivElement>(null);
@@ -120,6 +153,7 @@ export function LdEditor({
   const drag = useRef<{ ids: string[]; x: number; y: number } | null>(null);
   /** An element whose operand editor opens once the edit that created it has been laid out. */
   const [pendingEdit, setPendingEdit] = useState<string | null>(null);
+  const [valuePrompt, setValuePrompt] = useState<{ operand: string; action: "write" | "force" } | null>(null);
 
   const byName = useMemo(() => new Map(library.map((e) => [e.name.toUpperCase(), e])), [library]);
   const lookup = useCallback((call: string) => byName.get(call.toUpperCase()), [byName]);
@@ -141,6 +175,14 @@ export function LdEditor({
     setSelection(next);
     setAnchor(newAnchor !== undefined ? newAnchor : next?.kind === "elements" ? next.ids[0]! : null);
   }, []);
+
+  useEffect(() => {
+    if (!focus) return;
+    if (focus.element && locate(body, focus.element)) select({ kind: "elements", ids: [focus.element] });
+    else if (focus.network && networksOf(body).some((n) => n.id === focus.network)) select({ kind: "network", id: focus.network });
+    root.current?.focus();
+    // Only a new focus request moves the selection, not later edits of the body.
+  }, [focus?.seq]);
 
   const apply = useCallback(
     (result: EditResult, then?: "edit") => {
@@ -324,6 +366,7 @@ export function LdEditor({
         const keep = liveSelection?.kind === "elements" && liveSelection.ids.includes(target.id);
         const ids = keep ? liveSelection.ids : [target.id];
         select({ kind: "elements", ids }, keep ? anchor : target.id);
+        setDraggedOperand(variableOf(body, target.id));
         if (!readOnly) drag.current = { ids, x: event.clientX, y: event.clientY };
       } else if (target.kind === "place") select({ kind: "place", place: target.place });
       else select({ kind: "network", id: target.id });
@@ -342,6 +385,11 @@ export function LdEditor({
       editField(id, field);
     },
     onDoubleClick: (target) => {
+      if (onlineActions && target.kind === "element") {
+        const e = locate(body, target.id)?.element;
+        if ((e?.type === "contact" || e?.type === "coil") && e.var.trim()) onlineActions.toggle(e.var.trim());
+        return;
+      }
       if (readOnly) return;
       if (target.kind === "network") {
         select({ kind: "network", id: target.id });
@@ -400,6 +448,20 @@ export function LdEditor({
     if ((event.target as HTMLElement).closest("input, textarea")) return;
     event.preventDefault();
     if (!readOnly) pasteText(event.clipboardData.getData("text/plain"));
+  };
+
+  /** The online items of the context menu, for the selected element's variable. */
+  const onlineItems = (): MenuItem[] => {
+    const operand = onlineActions && liveSelection?.kind === "elements" ? variableOf(body, liveSelection.ids[0]!) : null;
+    if (!onlineActions || !operand) return [];
+    return [
+      { id: "online-write", label: `Write value of ${operand}…`, run: () => setValuePrompt({ operand, action: "write" }) },
+      { id: "online-force-true", label: "Force TRUE", run: () => onlineActions.force(operand, true) },
+      { id: "online-force-false", label: "Force FALSE", run: () => onlineActions.force(operand, false) },
+      { id: "online-force-value", label: "Force value…", run: () => setValuePrompt({ operand, action: "force" }) },
+      { id: "online-release", label: "Release force", run: () => onlineActions.unforce(operand) },
+      { id: "online-watch", label: "Add to watch list", run: () => onlineActions.watch(operand) },
+    ];
   };
 
   const reveal = selectedNetwork({ body, selection: liveSelection }) ?? null;
@@ -470,10 +532,15 @@ export function LdEditor({
           Shortcuts
         </button>
       </div>
-      {help ? <ShortcutHelp onClose={() => setHelp(false)} /> : null}
+      {help ? <ShortcutHelp extra={extraShortcuts} onClose={() => setHelp(false)} /> : null}
       {readOnly ? (
         <div className="ld-banner" role="status">
           {readOnly}
+          {readOnlyAction ? (
+            <button type="button" onClick={readOnlyAction.run}>
+              {readOnlyAction.label}
+            </button>
+          ) : null}
         </div>
       ) : null}
       {message ? (
@@ -505,9 +572,25 @@ export function LdEditor({
         handlers={handlers}
         reveal={reveal}
         overlay={editorOverlay}
+        onVisibleChange={onVisibleChange}
       />
       {networksOf(body).length === 0 ? <p className="ld-empty-hint">This POU has no networks yet: press Ctrl+Enter or C to start a rung.</p> : null}
-      {menu ? <ContextMenu x={menu.x} y={menu.y} ctx={ctx} onClose={() => setMenu(null)} /> : null}
+      {menu ? <ContextMenu x={menu.x} y={menu.y} ctx={ctx} extra={onlineItems()} onClose={() => setMenu(null)} /> : null}
+      {valuePrompt && onlineActions ? (
+        <ValuePrompt
+          title={`${valuePrompt.action === "write" ? "Write" : "Force"} ${valuePrompt.operand}`}
+          onSubmit={(text) => {
+            setValuePrompt(null);
+            if (valuePrompt.action === "write") onlineActions.write(valuePrompt.operand, text);
+            else onlineActions.force(valuePrompt.operand, text);
+            root.current?.focus();
+          }}
+          onCancel={() => {
+            setValuePrompt(null);
+            root.current?.focus();
+          }}
+        />
+      ) : null}
       {picker ? (
         <BoxPicker
           library={library}
@@ -531,8 +614,8 @@ const OTHER_KEYS: [string, string][] = [
   ["Ctrl+S", "Save the project"],
 ];
 
-function ShortcutHelp({ onClose }: { onClose(): void }) {
-  const rows: [string, string][] = [...COMMANDS.filter((c) => c.keys).map((c): [string, string] => [c.keys!, c.label]), ...OTHER_KEYS];
+function ShortcutHelp({ extra, onClose }: { extra: readonly [string, string][]; onClose(): void }) {
+  const rows: [string, string][] = [...COMMANDS.filter((c) => c.keys).map((c): [string, string] => [c.keys!, c.label]), ...OTHER_KEYS, ...extra];
   return (
     <div className="ld-help" role="dialog" aria-label="Keyboard shortcuts">
       <table>

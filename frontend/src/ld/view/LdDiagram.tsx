@@ -22,6 +22,8 @@ export interface LdDiagramProps {
   fallbackHeight?: number;
   /** Drawn over the diagram in diagram coordinates (the operand editor), scrolling with it. */
   overlay?: ReactNode;
+  /** Told the ids of the networks rendered whenever they change (online mode subscribes to them). */
+  onVisibleChange?(networks: readonly string[]): void;
 }
 
 const OVERSCAN = 400;
@@ -62,7 +64,7 @@ function selectionNetwork(body: LdBody, selection: Selection | null): string | n
   return first ? (locate(body, first)?.network ?? null) : null;
 }
 
-export function LdDiagram({ body, layout, selection, diagnostics = NO_DIAGNOSTICS, online, dropping = false, handlers = NO_HANDLERS, reveal, fallbackHeight = 900, overlay }: LdDiagramProps) {
+export function LdDiagram({ body, layout, selection, diagnostics = NO_DIAGNOSTICS, online, dropping = false, handlers = NO_HANDLERS, reveal, fallbackHeight = 900, overlay, onVisibleChange }: LdDiagramProps) {
   const scroller = useRef<HTMLDivElement>(null);
   const [viewport, setViewport] = useState({ top: 0, height: fallbackHeight });
 
@@ -95,6 +97,10 @@ export function LdDiagram({ body, layout, selection, diagnostics = NO_DIAGNOSTIC
 
   const selected = selectionNetwork(body, selection);
   const shown = visibleNetworks(layout, viewport.top, viewport.height);
+  const shownKey = shown.map((n) => n.network.id).join("\n");
+  useEffect(() => {
+    onVisibleChange?.(shownKey ? shownKey.split("\n") : []);
+  }, [shownKey, onVisibleChange]);
   return (
     <div className="ld-scroller" ref={scroller} onScroll={(e) => setViewport({ top: e.currentTarget.scrollTop, height: e.currentTarget.clientHeight || fallbackHeight })}>
       <div className="ld-canvas" style={{ height: layout.height, width: layout.width }}>

@@ -1,0 +1,49 @@
+// The panels under the editor: Diagnostics, Watch list and Online log, one shown at a time.
+import type { Diagnostic } from "../generated/api";
+import { draggedOperand } from "../ld/editor/dragOperand";
+import { onlineStore, useOnline } from "../online/store";
+import { DiagnosticsPanel } from "./DiagnosticsPanel";
+import { LogPanel } from "./LogPanel";
+import { usePanels, type PanelId } from "./store";
+import { WatchPanel } from "./WatchPanel";
+
+export interface BottomPanelsProps {
+  onReveal(d: Diagnostic): void;
+  /** Turns a variable dragged from the open diagram into a path (its POU instance first). */
+  pathOfOperand(operand: string): string | null;
+}
+
+export function BottomPanels({ onReveal, pathOfOperand }: BottomPanelsProps) {
+  const panel = usePanels((s) => s.panel);
+  const show = usePanels((s) => s.show);
+  const problems = usePanels((s) => s.diagnostics?.length ?? 0);
+  const watched = useOnline((s) => s.watch.length);
+  const logged = useOnline((s) => s.monitor.log.length);
+  const tabs: { id: PanelId; label: string }[] = [
+    { id: "diagnostics", label: `Diagnostics (${problems})` },
+    { id: "watch", label: `Watch list (${watched})` },
+    { id: "log", label: `Online log (${logged})` },
+  ];
+  // A variable dragged from the diagram and released over the panels joins the watch list.
+  const drop = () => {
+    const operand = draggedOperand();
+    const path = operand ? pathOfOperand(operand) : null;
+    if (!path) return;
+    onlineStore.getState().addWatch(path);
+    show("watch");
+  };
+  return (
+    <section className="bottom-panels" aria-label="Panels" onMouseUp={drop}>
+      <div className="panel-tabs" role="tablist">
+        {tabs.map((t) => (
+          <button key={t.id} type="button" role="tab" aria-selected={panel === t.id} onClick={() => show(t.id)}>
+            {t.label}
+          </button>
+        ))}
+      </div>
+      <div className="panel-body" role="tabpanel">
+        {panel === "diagnostics" ? <DiagnosticsPanel onReveal={onReveal} /> : panel === "watch" ? <WatchPanel /> : <LogPanel />}
+      </div>
+    </section>
+  );
+}

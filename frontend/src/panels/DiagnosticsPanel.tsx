@@ -1,0 +1,52 @@
+// The Diagnostics panel: the last Check (or a refused compile), errors first; a click opens the
+// POU and reveals the network, element or line the diagnostic names.
+import type { Diagnostic } from "../generated/api";
+import { focusOf, usePanels } from "./store";
+
+const RANK = { error: 0, warning: 1, info: 2 } as const;
+
+/** Where a diagnostic is, as the panel shows it. */
+export function placeOf(d: Diagnostic): string {
+  const parts: string[] = [];
+  if (d.pou) parts.push(d.pou);
+  if (d.file?.endsWith("/declarations")) parts.push("declarations");
+  if (d.network) parts.push(`network ${d.network}`);
+  if (d.element) parts.push(`element ${d.element}${d.pin ? `.${d.pin}` : ""}`);
+  if (d.line != null) parts.push(`line ${d.line}${d.column != null ? `:${d.column}` : ""}`);
+  if (!parts.length && d.json_path) parts.push(d.json_path);
+  return parts.join(", ") || "project";
+}
+
+export function DiagnosticsPanel({ onReveal }: { onReveal(d: Diagnostic): void }) {
+  const diagnostics = usePanels((s) => s.diagnostics);
+  const checking = usePanels((s) => s.checking);
+  const error = usePanels((s) => s.checkError);
+  if (checking) return <p className="panel-empty">Checking…</p>;
+  if (error) {
+    return (
+      <p className="panel-empty" role="alert">
+        Check failed: {error}
+      </p>
+    );
+  }
+  if (diagnostics === null) return <p className="panel-empty">Press Check to list the problems of the saved project.</p>;
+  if (!diagnostics.length) return <p className="panel-empty">No problems found.</p>;
+  const sorted = [...diagnostics].sort((a, b) => RANK[a.severity ?? "error"] - RANK[b.severity ?? "error"]);
+  return (
+    <ul className="diagnostics" aria-label="Diagnostics">
+      {sorted.map((d, i) => {
+        const target = focusOf(d);
+        return (
+          <li key={i}>
+            <button type="button" className={`diagnostic diagnostic-${d.severity ?? "error"}`} disabled={!target} onClick={() => onReveal(d)}>
+              <span className="diagnostic-severity">{d.severity ?? "error"}</span>
+              <span className="diagnostic-place">{placeOf(d)}</span>
+              <span className="diagnostic-message">{d.message}</span>
+              <span className="diagnostic-code">{d.code}</span>
+            </button>
+          </li>
+        );
+      })}
+    </ul>
+  );
+}

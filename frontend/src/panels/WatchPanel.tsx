@@ -1,0 +1,83 @@
+// The watch list: variables by path (typed, or dragged from a diagram) with their live values;
+// each row writes, forces and releases like the diagram's context menu.
+import { useState, type FormEvent } from "react";
+import { formatValue, parseValue, pathKey } from "../online/monitor";
+import { useOnline, onlineStore } from "../online/store";
+
+function WatchRow({ path }: { path: string }) {
+  const value = useOnline((s) => s.monitor.values[pathKey(path)]);
+  const forced = useOnline((s) => s.monitor.forced.has(pathKey(path)));
+  const online = useOnline((s) => s.phase === "online");
+  const [text, setText] = useState("");
+  const s = onlineStore.getState();
+  const submit = (e: FormEvent, action: "write" | "force") => {
+    e.preventDefault();
+    if (!text.trim()) return;
+    (action === "write" ? s.write : s.force)(path, parseValue(text));
+    setText("");
+  };
+  return (
+    <tr className={forced ? "watch-forced" : undefined} data-path={pathKey(path)}>
+      <td className="watch-path">{path}</td>
+      <td className={`watch-value${value === true ? " watch-true" : ""}`} aria-label={`Value of ${path}`}>
+        {online ? formatValue(value) : "—"}
+        {forced ? <span className="watch-forced-mark" title="forced"> F</span> : null}
+      </td>
+      <td>
+        <form className="watch-edit" onSubmit={(e) => submit(e, "write")}>
+          <input aria-label={`New value for ${path}`} value={text} onChange={(e) => setText(e.target.value)} disabled={!online} spellCheck={false} />
+          <button type="submit" disabled={!online || !text.trim()}>
+            Write
+          </button>
+          <button type="button" disabled={!online || !text.trim()} onClick={(e) => submit(e, "force")}>
+            Force
+          </button>
+          <button type="button" disabled={!online || !forced} onClick={() => s.unforce(path)}>
+            Release
+          </button>
+          <button type="button" aria-label={`Remove ${path}`} onClick={() => s.removeWatch(path)}>
+            ×
+          </button>
+        </form>
+      </td>
+    </tr>
+  );
+}
+
+export function WatchPanel() {
+  const watch = useOnline((s) => s.watch);
+  const [text, setText] = useState("");
+  const add = (e: FormEvent) => {
+    e.preventDefault();
+    onlineStore.getState().addWatch(text);
+    setText("");
+  };
+  return (
+    <div className="watch">
+      <form className="watch-add" onSubmit={add}>
+        <input aria-label="Variable path to watch" placeholder="MAIN.Motor (or drag a variable here)" value={text} onChange={(e) => setText(e.target.value)} spellCheck={false} />
+        <button type="submit" disabled={!text.trim()}>
+          Add
+        </button>
+      </form>
+      {watch.length ? (
+        <table className="watch-table" aria-label="Watch list">
+          <thead>
+            <tr>
+              <th>Variable</th>
+              <th>Value</th>
+              <th>Write / force</th>
+            </tr>
+          </thead>
+          <tbody>
+            {watch.map((p) => (
+              <WatchRow key={pathKey(p)} path={p} />
+            ))}
+          </tbody>
+        </table>
+      ) : (
+        <p className="panel-empty">Type a path such as MAIN.Motor, or drag a variable from the diagram.</p>
+      )}
+    </div>
+  );
+}

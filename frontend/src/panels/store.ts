@@ -1,0 +1,78 @@
+// Bottom panels (zustand): which panel is shown, the diagnostics of the last Check, and the place
+// a clicked diagnostic asks the editors to reveal. The check call is injected for tests.
+import { useStore } from "zustand";
+import { createStore, type StoreApi } from "zustand/vanilla";
+import { checkProject } from "../api/client";
+import type { CheckReport, Diagnostic } from "../generated/api";
+
+export type PanelId = "diagnostics" | "watch" | "log";
+
+/** A place to reveal: a POU, and in it a network/element (diagrams) or a line (texts). */
+export interface Focus {
+  pou: string;
+  network?: string | null;
+  element?: string | null;
+  line?: number | null;
+  /** The declarations or the body (diagnostics name the file `<POU>/declarations` or `<POU>/body`). */
+  part?: "declarations" | "body" | null;
+  /** Increases with every request, so revealing the same place twice still moves the editor. */
+  seq: number;
+}
+
+export interface PanelsData {
+  panel: PanelId;
+  /** Diagnostics of the last Check (null before the first). */
+  diagnostics: Diagnostic[] | null;
+  checking: boolean;
+  checkError: string | null;
+  focus: Focus | null;
+}
+
+export interface PanelsActions {
+  show(panel: PanelId): void;
+  /** Runs Check on the saved project and shows the diagnostics panel. */
+  check(project: string): Promise<void>;
+  /** Shows `diagnostics` (e.g. a refused compile) as the current list. */
+  showDiagnostics(diagnostics: Diagnostic[]): void;
+  /** Asks the editors to reveal where a diagnostic points. */
+  reveal(target: Omit<Focus, "seq">): void;
+  clear(): void;
+}
+
+export type PanelsState = PanelsData & PanelsActions;
+
+/** Where a diagnostic points, or null when it names no POU. */
+export function focusOf(d: Diagnostic): Omit<Focus, "seq"> | null {
+  if (!d.pou) return null;
+  const part = d.file?.endsWith("/declarations") ? "declarations" : d.file?.endsWith("/body") ? "body" : null;
+  return { pou: d.pou, network: d.network ?? null, element: d.element ?? null, line: d.line ?? null, part };
+}
+
+export const emptyPanels: PanelsData = { panel: "diagnostics", diagnostics: null, checking: false, checkError: null, focus: null };
+
+export function createPanelsStore(check: (project: string) => Promise<CheckReport> = checkProject): StoreApi<PanelsState> {
+  let call = 0;
+  return createStore<PanelsState>()((set, get) => ({
+    ...emptyPanels,
+    show: (panel) => set({ panel }),
+    async check(project) {
+      const mine = ++call;
+      set({ checking: true, checkError: null, panel: "diagnostics" });
+      try {
+        const report = await check(project);
+        if (mine === call) set({ checking: false, diagnostics: report.diagnostics });
+      } catch (err) {
+        if (mine === call) set({ checking: false, checkError: err instanceof Error ? err.message : String(err) });
+      }
+    },
+    showDiagnostics: (diagnostics) => set({ diagnostics, checkError: null, panel: "diagnostics" }),
+    reveal: (target) => set({ focus: { ...target, seq: (get().focus?.seq ?? 0) + 1 } }),
+    clear: () => set(emptyPanels),
+  }));
+}
+
+export const panelsStore = createPanelsStore();
+
+export function usePanels<T>(selector: (state: PanelsState) => T): T {
+  return useStore(panelsStore, selector);
+}
