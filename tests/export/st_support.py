@@ -39,12 +39,14 @@ def as_st(project: Project) -> Project:
     return replaced
 
 
-def same_traces(project: Project, scans: int = 200, seed: int = 0) -> list[dict[str, object]]:
-    """Run ``project`` and its ST export ``scans`` scans with the same random writes; the traces must agree.
-    Returns the trace (snapshots of the common variables), so callers can also check what happened."""
-    original = build_project(project)
-    assert [d.format() for d in original.diagnostics if d.severity == "error"] == []
-    sims = [original.simulation(), build_project(as_st(project)).simulation()]
+def same_traces(project: Project, scans: int = 200, seed: int = 0,
+                other: Project | None = None) -> list[dict[str, object]]:
+    """Run ``project`` and ``other`` (default: its ST export) ``scans`` scans with the same random writes; the
+    traces must agree. Returns the trace (snapshots of the common variables), so callers can check it too."""
+    builds = [build_project(project), build_project(other if other is not None else as_st(project))]
+    for build in builds:
+        assert [d.format() for d in build.diagnostics if d.severity == "error"] == []
+    sims = [build.simulation() for build in builds]
     common = sorted(set(sims[0].snapshot()) & set(sims[1].snapshot()))
     writable = [path for path in common if path.count(".") <= 1 and _scalar(sims[0], path) is not None]
     rng = random.Random(seed)
