@@ -1,7 +1,7 @@
 // REST calls of online mode (issue 6): create a simulation from the saved project, reset, read its
 // statistics, delete it. Run, stop and single cycle go over the websocket with everything else.
 import { requestJson } from "../api/client";
-import type { SimulationInfo } from "./protocol";
+import type { SimulationInfo } from "../generated/api";
 
 const simulationPath = (id: string) => `/api/simulations/${encodeURIComponent(id)}`;
 

@@ -77,14 +77,14 @@ export function ldOnlineView(monitor: MonitorState, binding: LdBinding): OnlineV
     for (const id of ids ?? []) {
       const state = monitor.power[powerKey(pou_instance, id)];
       if (state === null) executed[id] = false;
-      else if (state !== undefined) power[id] = state;
+      else if (typeof state === "boolean") power[id] = state;
     }
   }
   const values: Record<string, string | number | boolean> = {};
   const forced = new Set<string>();
   for (const [operand, path] of binding.pathOf) {
     const value = monitor.values[path];
-    if (value !== undefined && value !== null) values[operand] = value;
+    if (typeof value === "boolean" || typeof value === "number" || typeof value === "string") values[operand] = value;
     if (monitor.forced.has(path)) forced.add(operand);
   }
   return { power, executed, values, forced };

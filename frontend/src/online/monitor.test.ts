@@ -8,6 +8,8 @@ const values = (scan: number, changed: Record<string, boolean | number | string>
   scan,
   time_ms: scan * 10,
   changed,
+  forced: [],
+  power: {},
   ...extra,
 });
 
@@ -25,13 +27,13 @@ describe("monitor message handling (issue 6 websocket messages)", () => {
     expect(s.power).toEqual({ c1: true, q1: false });
   });
 
-  it("replaces the forced list with each message that carries one and keeps it otherwise", () => {
+  it("takes the forced list of every message as the whole set of forces", () => {
     const s1 = fold([values(1, {}, { forced: ["main.Stop", "MAIN.X"] })]);
     expect([...s1.forced].sort()).toEqual(["MAIN.STOP", "MAIN.X"]);
-    const s2 = applyMessage(s1, values(2, { "MAIN.X": 1 }));
-    expect([...s2.forced].sort()).toEqual(["MAIN.STOP", "MAIN.X"]);
-    const s3 = applyMessage(s2, values(3, {}, { forced: ["MAIN.X"] }));
-    expect([...s3.forced]).toEqual(["MAIN.X"]);
+    const s2 = applyMessage(s1, values(2, { "MAIN.X": 1 }, { forced: ["MAIN.X"] }));
+    expect([...s2.forced]).toEqual(["MAIN.X"]);
+    const s3 = applyMessage(s2, values(3, {}));
+    expect([...s3.forced]).toEqual([]);
   });
 
   it("keeps a null power as 'not executed', distinct from FALSE", () => {
@@ -53,12 +55,12 @@ describe("monitor message handling (issue 6 websocket messages)", () => {
       values(7, {}),
       { type: "log", level: "info", message: "force MAIN.STOP := TRUE" },
       { type: "log", level: "warning", message: "watchdog", scan: 3 },
-      { type: "error", code: "bad-path", message: "no variable MAIN.NOPE" },
+      { type: "error", code: "bad_path", message: "no variable MAIN.NOPE" },
     ]);
     expect(s.log.map((e) => [e.seq, e.level, e.message, e.scan])).toEqual([
       [1, "info", "force MAIN.STOP := TRUE", 7],
       [2, "warning", "watchdog", 3],
-      [3, "error", "bad-path: no variable MAIN.NOPE", 7],
+      [3, "error", "bad_path: no variable MAIN.NOPE", 7],
     ]);
   });
 

@@ -1,7 +1,7 @@
 // What the browser knows about a running simulation, folded from the server's monitor messages.
 // Pure functions only (the store and the views call them), so the handling of every message kind
 // is unit-tested without a socket. Paths are compared in upper case, as IEC names ignore case.
-import type { LogMessage, PowerState, ServerMessage, SimulationState, Value, Where } from "./protocol";
+import type { PowerState, ServerMessage, SimulationState, Value, Where, WriteValue } from "./protocol";
 
 export interface LogEntry {
   /** Increasing number, a stable React key. */
@@ -50,7 +50,7 @@ function appendLog(state: MonitorState, entry: Omit<LogEntry, "seq" | "scan">, s
   return { ...state, log: next.length > LOG_LIMIT ? next.slice(next.length - LOG_LIMIT) : next };
 }
 
-/** The state after one server message (values merge, `forced` replaces, status and log append). */
+/** The state after one server message (values and power merge, `forced` replaces, status and log append). */
 export function applyMessage(state: MonitorState, message: ServerMessage): MonitorState {
   switch (message.type) {
     case "values": {
@@ -61,8 +61,8 @@ export function applyMessage(state: MonitorState, message: ServerMessage): Monit
         scan: message.scan,
         timeMs: message.time_ms,
         values,
-        forced: message.forced ? new Set(message.forced.map(pathKey)) : state.forced,
-        power: message.power ? { ...state.power, ...message.power } : state.power,
+        forced: new Set(message.forced.map(pathKey)),
+        power: { ...state.power, ...message.power },
       };
     }
     case "status":
@@ -75,7 +75,7 @@ export function applyMessage(state: MonitorState, message: ServerMessage): Monit
 }
 
 /** A local entry in the online log (connection lost, a refused compile), shown like the server's. */
-export function logLocal(state: MonitorState, level: LogMessage["level"], message: string): MonitorState {
+export function logLocal(state: MonitorState, level: "info" | "warning" | "error", message: string): MonitorState {
   return appendLog(state, { level, message });
 }
 
@@ -101,6 +101,7 @@ export function formatValue(value: Value | undefined): string {
   if (value === undefined) return "…";
   if (value === null) return "—";
   if (typeof value === "boolean") return value ? "TRUE" : "FALSE";
+  if (typeof value === "object") return JSON.stringify(value);
   return String(value);
 }
 
@@ -108,7 +109,7 @@ export function formatValue(value: Value | undefined): string {
  * The JSON value to send for text the user typed: TRUE/FALSE become booleans and plain numbers
  * numbers; anything else goes as text, which the server reads as an IEC literal (T#1s, 16#FF).
  */
-export function parseValue(text: string): Value {
+export function parseValue(text: string): WriteValue {
   const t = text.trim();
   if (/^true$/i.test(t)) return true;
   if (/^false$/i.test(t)) return false;

@@ -1,5 +1,6 @@
 import { afterEach, beforeEach, describe, expect, it, vi } from "vitest";
 import { ApiError } from "../api/client";
+import type { SimulationInfo } from "../generated/api";
 import type { SimulationApi } from "./api";
 import { createOnlineStore, mergeSubscriptions, type SocketLike } from "./store";
 
@@ -31,12 +32,27 @@ class FakeSocket {
   }
 }
 
+const info = (scan_count: number, last: number): SimulationInfo => ({
+  id: "s1",
+  project: "demo",
+  revision: "r1",
+  state: "stopped",
+  scan_count,
+  time_ms: scan_count * 10,
+  real_time_ms: 0,
+  scan_ms: { min: last, avg: last, max: last, last },
+  overruns: 0,
+  fault: null,
+  clients: 0,
+  created: "2024-01-01T00:00:00Z",
+});
+
 function setup(overrides: Partial<SimulationApi> = {}) {
   const sockets: FakeSocket[] = [];
   const api: SimulationApi = {
-    createSimulation: vi.fn(async () => ({ id: "s1", state: "stopped" })),
-    getSimulation: vi.fn(async () => ({ id: "s1", last_scan_ms: 0.4 })),
-    resetSimulation: vi.fn(async () => ({ id: "s1" })),
+    createSimulation: vi.fn(async () => info(0, 0)),
+    getSimulation: vi.fn(async () => info(3, 0.4)),
+    resetSimulation: vi.fn(async () => info(0, 0)),
     deleteSimulation: vi.fn(async () => undefined),
     ...overrides,
   };

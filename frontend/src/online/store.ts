@@ -8,7 +8,7 @@ import { ApiError } from "../api/client";
 import type { Diagnostic } from "../generated/api";
 import { monitorUrl, simulationApi, type SimulationApi } from "./api";
 import { applyMessage, emptyMonitor, keepSubscribed, logLocal, pathKey, powerKey, type MonitorState } from "./monitor";
-import { DEFAULT_INTERVAL_MS, parseServerMessage, type ClientMessage, type ElementSubscription, type Value } from "./protocol";
+import { DEFAULT_INTERVAL_MS, parseServerMessage, type ClientMessage, type ElementSubscription, type WriteValue } from "./protocol";
 
 /** The part of WebSocket the store uses. */
 export type SocketLike = Pick<WebSocket, "readyState" | "send" | "close" | "onopen" | "onmessage" | "onclose">;
@@ -49,8 +49,8 @@ export interface OnlineActions {
   stop(): void;
   singleCycle(): void;
   reset(cold?: boolean): Promise<void>;
-  write(path: string, value: Value): void;
-  force(path: string, value: Value): void;
+  write(path: string, value: WriteValue): void;
+  force(path: string, value: WriteValue): void;
   unforce(path: string): void;
   unforceAll(): void;
   /** Sets (or with null removes) the subscription of one view. */
@@ -78,7 +78,7 @@ export function mergeSubscriptions(views: Iterable<Subscription>): Subscription 
   const byInstance = new Map<string, Set<string> | null>();
   for (const view of views) {
     for (const p of view.paths) paths.add(pathKey(p));
-    for (const { pou_instance, ids } of view.elements) {
+    for (const { pou_instance, ids = null } of view.elements) {
       const key = pou_instance.toUpperCase();
       const known = byInstance.get(key);
       if (ids === null || known === null) byInstance.set(key, null);
@@ -167,7 +167,7 @@ export function createOnlineStore(api: SimulationApi = simulationApi, openSocket
       poll = setInterval(() => {
         api.getSimulation(id).then(
           (info) => {
-            if (get().simulation === id && typeof info.last_scan_ms === "number") set({ lastScanMs: info.last_scan_ms });
+            if (get().simulation === id && info.scan_count > 0) set({ lastScanMs: info.scan_ms.last });
           },
           () => undefined, // statistics are a nicety; the websocket reports real trouble
         );
