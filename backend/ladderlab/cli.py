@@ -173,7 +173,8 @@ def _export(args: argparse.Namespace) -> int:
 
 
 def _st_export(project, pou: str | None) -> bytes | None:
-    from .export.st_export import export_pou_st, export_project_st
+    from .export.st_export import export_pou_st
+    from .export.st_project import export_project_st
 
     if pou is not None and not any(p.name.upper() == pou.upper() for p in project.pous):
         print(f"ladderlab export st: the project has no POU {pou!r}", file=sys.stderr)

@@ -38,3 +38,27 @@ def test_import_reports_hostile_xml_with_its_file(tmp_path: Path, capsys) -> Non
 def test_export_plcopen_to_stdout(capsys) -> None:
     assert main(["export", "plcopen", str(EXAMPLES / "motor")]) == 0
     assert "<pou name=\"Main\"" in capsys.readouterr().out
+
+
+def test_export_st_of_one_pou_and_of_the_whole_project(tmp_path: Path, capsys) -> None:
+    assert main(["export", "st", str(EXAMPLES / "motor"), "--pou", "main"]) == 0
+    assert "Motor := (Start OR Motor) AND NOT Stop;" in capsys.readouterr().out
+    out = tmp_path / "motor.st"
+    assert main(["export", "st", str(EXAMPLES / "motor"), "-o", str(out)]) == 0
+    text = out.read_text()
+    assert text.count("END_PROGRAM") == 2 and "CONFIGURATION" in text
+    # the exported file is itself a project that runs like the original
+    runs = []
+    for project in (EXAMPLES / "motor", out):
+        capsys.readouterr()
+        assert main(["run", str(project), "--cycles", "520", "--set", "Start=TRUE", "--set", "Start=FALSE@3",
+                     "--watch", "Motor", "--watch", "Main.MotorRunning", "--watch", "StartCount",
+                     "--format", "jsonl"]) == 0
+        runs.append(capsys.readouterr().out)
+    assert runs[0] == runs[1]
+    assert '"Main.MotorRunning": true' in runs[0]  # 5 s of Motor reached within the run
+
+
+def test_export_st_of_an_unknown_pou_is_an_error(capsys) -> None:
+    assert main(["export", "st", str(EXAMPLES / "motor"), "--pou", "Nope"]) == 1
+    assert "no POU 'Nope'" in capsys.readouterr().err
