@@ -68,7 +68,7 @@ def test_a_user_function_box_runs_where_it_stands_even_when_its_result_is_only_p
     main = ld_pou("Main", "VAR a, b, x : BOOL; END_VAR",
                   rung("n1", contact("k1", "a"), box("f", "Flip"), contact("k2", "b"), coil("q", "x")))
     built = project(flip, main, globals="VAR_GLOBAL count : INT; END_VAR")
-    assert body(exported(built, "Main").text) == "(* Network 1 (n1) *)\nf := Flip(V := a);\nx := f AND b;\n"
+    assert body(exported(built, "Main").text) == "(* Network 1 (n1) *)\nf := Flip(v := a);\nx := f AND b;\n"
     same_traces(built)
 
 

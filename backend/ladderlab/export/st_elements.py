@@ -48,6 +48,21 @@ def callee_of(checked: CheckResult, call: str) -> Callee:
     return Callee(name.upper(), std_fb=stdlib.function_block(name))
 
 
+def spelled(callee: Callee, pin: str) -> str:
+    """A pin as its POU declares it (``Enable``), a standard pin as the catalogue has it (``IN``)."""
+    symbol = callee.pou.symbols.get(pin) if callee.pou is not None else None
+    return symbol.name if symbol is not None else pin
+
+
+def formal_args(callee: Callee, inputs: dict[str, Any]) -> list[ast.Arg]:
+    """``PIN := value`` for upper-case ``inputs``, in the order the box draws its pins (the lowering's order)."""
+    return [ast.Arg(spelled(callee, pin), inputs[pin]) for pin in sorted(inputs, key=callee.rank)]
+
+
+def output_pin(callee: Callee, instance: Any, pin: str) -> ast.Member:
+    return ast.Member(instance, spelled(callee, pin))
+
+
 @dataclass
 class PouScope:
     """What the element exporters of one POU share: the checked project, the POU, and its new variables."""
@@ -115,8 +130,8 @@ class PouScope:
         A function's result goes to ``target`` (None: discarded). Returns the box's ENO as a value when it can
         differ from EN (a standard function's warning, ``eno_hint`` set), else None: then ENO is EN.
         """
-        args = [ast.Arg(pin, inputs[pin]) for pin in sorted(inputs, key=callee.rank)]
-        args += [ast.Arg(pin, value, output=True) for pin, value in outputs.items()]
+        args = formal_args(callee, inputs)
+        args += [ast.Arg(spelled(callee, pin), value, output=True) for pin, value in outputs.items()]
         name = instance if instance is not None else ast.Name(callee.name)
         writes = self.call_writes(callee, instance, [*outputs.values(), *([target] if target is not None else [])])
         if callee.is_fb:

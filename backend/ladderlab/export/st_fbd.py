@@ -23,7 +23,7 @@ from ..ir.lower_fbd import _root_names  # the variable an output node writes, ex
 from ..model import fbd
 from ..st import ast
 from ..st.checker import check_operand
-from .st_elements import PouScope, callee_of, operand
+from .st_elements import PouScope, callee_of, formal_args, operand, output_pin
 from .st_network import TRUE, Control, NetworkCode, Use, Value
 
 
@@ -80,7 +80,7 @@ class _Network:
         callee = callee_of(self.scope.checked, producer.call)
         if callee.is_fb and source.pin in callee.output_names():
             flags = _flags(producer).get(source.pin)
-            pin = ast.Member(operand(producer.instance), source.pin)
+            pin = output_pin(callee, operand(producer.instance), source.pin)
             return Text(ast.Unary("NOT", pin) if flags is not None and flags.negated else pin)
         for consumer, sources in self.graph.inputs.items():
             target, fed = self.graph.nodes[consumer], sources.get("IN")
@@ -146,7 +146,7 @@ class _Network:
         pins: dict[str, PinValue] = {}
         if callee.is_fb:
             scope.call(code, callee, instance, args, {}, guard, node.id)
-            pins = {pin: Text(ast.Member(instance, pin)) for pin in callee.output_names()}
+            pins = {pin: Text(output_pin(callee, instance, pin)) for pin in callee.output_names()}
             if en is not None:
                 pins["ENO"] = en
         elif en is None:
@@ -154,7 +154,7 @@ class _Network:
             operands = [args[pin] for pin in sorted(args, key=callee.rank)]
             call = _operator(callee.name, operands, result_type) if callee.pou is None else None
             if call is None:
-                call = ast.Call(ast.Name(callee.name), [ast.Arg(pin, args[pin]) for pin in sorted(args, key=callee.rank)])
+                call = ast.Call(ast.Name(callee.name), formal_args(callee, args))
             pins["OUT"] = code.value(call, node.id, f"{node.id}_OUT", type=result_type, effect=callee.pou is not None)
         else:
             target = None

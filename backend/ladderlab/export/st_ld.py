@@ -18,7 +18,7 @@ from typing import Any
 from ..ir.diagram_checks import canonical_label
 from ..model import ld
 from ..st import ast
-from .st_elements import PouScope, callee_of, operand
+from .st_elements import PouScope, callee_of, formal_args, operand, output_pin
 from .st_network import TRUE, Control, NetworkCode, Use, Value, conjunction, disjunction
 
 _COMPARE = {"GT": ">", "GE": ">=", "EQ": "=", "LE": "<=", "LT": "<", "NE": "<>"}
@@ -126,18 +126,15 @@ class _Rung:
             free = next(pin for pin in callee.bool_inputs() if pin not in inputs)
             inputs[free] = self.expr(power, box.id)
         if not callee.is_fb and target is None and not box.en and callee.pou is None:
-            return Power(code.value(ast.Call(ast.Name(callee.name), _args(callee, inputs)), box.id, box.id))
+            return Power(code.value(ast.Call(ast.Name(callee.name), formal_args(callee, inputs)), box.id, box.id))
         if not callee.is_fb and target is None and not box.en:  # a user function: run where the box is
-            return Power(code.value(ast.Call(ast.Name(callee.name), _args(callee, inputs)), box.id, box.id,
+            return Power(code.value(ast.Call(ast.Name(callee.name), formal_args(callee, inputs)), box.id, box.id,
                                     effect=True))
         eno = scope.call(code, callee, instance, inputs, outputs, en, box.id, target, eno_hint=box.id)
         if box.en:
             return Power(eno) if eno is not None else Power(enable)
         if callee.is_fb:
             pin = callee.bool_outputs()[0]
-            return Power(code.value(ast.Member(instance, pin), box.id, box.id))
+            return Power(code.value(output_pin(callee, instance, pin), box.id, box.id))
         return Power(code.value(target, box.id, box.id))
 
-
-def _args(callee, inputs: dict[str, Any]) -> list[ast.Arg]:
-    return [ast.Arg(pin, inputs[pin]) for pin in sorted(inputs, key=callee.rank)]
