@@ -9,6 +9,10 @@ from ladderlab.export.plcopen_xml import LADDERLAB_DATA, PLCOPEN_NS
 from tests.support import external
 
 NS = {"p": PLCOPEN_NS}
+#: The external fixture folders with PLCopen files (../shared/external).
+FOLDERS = ("beremiz-examples", "openplc-examples", "rusty-cfc", "ironplc")
+#: The only import errors among them, the source's own fault (a FUNCTION without a return type).
+IMPORT_ERRORS = {"ironplc/integrations/vscode/tests/grammar/snap/plcopen-cdata.xml": ["PLCOPEN-POU"]}
 
 
 @functools.cache

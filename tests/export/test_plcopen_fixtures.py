@@ -24,9 +24,8 @@ from ladderlab.ir.lower_project import lower_project
 from ladderlab.model.project import Pou, Project, Task
 from ladderlab.st.project_text import source_to_project
 from ladderlab.storage.load import project_from_st
+from tests.export.plcopen_helpers import FOLDERS, IMPORT_ERRORS
 from tests.support import EXTERNAL, external
-
-FOLDERS = ("beremiz-examples", "openplc-examples", "rusty-cfc", "ironplc")
 
 VENDOR = "blocks or types of the vendor's runtime library (OpenPLC, Beremiz SVGHMI/LOGGER/RTC), not IEC"
 SFC_CALLERS = "calls the SFC/IL counters, which are not imported"
@@ -75,8 +74,6 @@ CHECK_FAILS = {
         {"ST-UNKNOWN-VAR", "ST-DECL", "MISSING-RETURN-TYPE"}, GRAMMAR),
     "ironplc/integrations/vscode/tests/grammar/snap/plcopen-pou.xml": ({"ST-DECL"}, GRAMMAR),
 }
-#: The only import errors: the source's own fault.
-IMPORT_ERRORS = {"ironplc/integrations/vscode/tests/grammar/snap/plcopen-cdata.xml": ["PLCOPEN-POU"]}  # no return type
 #: SFC and IL POUs, reported as unsupported (file -> POU names).
 UNSUPPORTED = {
     "beremiz-examples/exemples/first_steps/plc.xml": ["CounterSFC", "CounterIL"],

@@ -147,7 +147,9 @@ def test_a_bridge_is_refused_with_a_diagnostic_naming_its_elements():
     assert (problem.code, problem.severity, problem.pou) == ("PLCOPEN-LD-BRIDGE", "error", "Main")
     assert problem.message == (
         "the rung is not series-parallel (a bridge): coil c (localId 5), coil d (localId 6), contact a (localId 2), "
-        "contact b (localId 3), contact x (localId 4) cannot be written as series and parallel branches")
+        "contact b (localId 3), contact x (localId 4) cannot be written as series and parallel branches; the network "
+        "is left empty")
+    assert result.project.pous[0].body.networks[0].elements == []
 
 
 def test_openplc_timer_chain_with_en_and_a_coil_on_an_output():

@@ -9,7 +9,7 @@ scan; every external fixture is stable under import -> export -> import.
 from __future__ import annotations
 
 import pytest
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from ladderlab.engine.simulation import Simulation
@@ -18,7 +18,7 @@ from ladderlab.export.plcopen_import import import_plcopen
 from ladderlab.ir.lower_project import lower_project
 from ladderlab.model import Box, Coil, Contact, LdBody, LdNetwork, Parallel, Pou, Project, Return, Task
 from ladderlab.storage import load_project_path
-from tests.export.plcopen_helpers import strip_ladderlab, xsd_errors
+from tests.export.plcopen_helpers import FOLDERS, IMPORT_ERRORS, strip_ladderlab, xsd_errors
 from tests.export.plcopen_strategies import projects
 from tests.support import EXAMPLES, EXTERNAL
 
@@ -133,27 +133,36 @@ def ld_programs(draw) -> Project:
 def test_generated_ld_read_back_from_plain_plcopen_behaves_the_same(project, scans):
     """Random rungs of contacts, coils, parallels, timers and counters with contact chains on their inputs: the
     importer rebuilds them from the graph alone (new ids, networks split where the drawing is not connected),
-    and the rebuilt program gives the same trace of every output over the scans."""
+    and the rebuilt program gives the same trace of every output over the scans.
+
+    Not comparable: a network that is only a parallel of rungs joined by nothing but the rails and that holds a
+    return. PLCopen has no networks, so those rungs are separate networks for any reader (GR-03), and a return
+    then acts before the later rungs run instead of after the whole network (GR-05 c); docs/plcopen.md."""
+    assume(not any(len(n.elements) == 1 and isinstance(n.elements[0], Parallel) and _has_return(n.elements)
+                   for n in project.pous[0].body.networks))
     plain = import_plcopen(strip_ladderlab(export_plcopen(project)))
     assert [d.format() for d in plain.diagnostics] == []
     watch = [f"Main.{v}" for v in OUTPUTS + ["n", "t0.ET", "t1.ET"]]
     assert run(plain.project, scans, watch) == run(project, scans, watch)
 
 
+def _has_return(items: list) -> bool:
+    return any(isinstance(i, Return) or isinstance(i, Parallel) and any(_has_return(b) for b in i.branches)
+               for i in items)
+
+
 # ------------------------------------------------------------------ external fixtures
 
 
-FIXTURES = sorted(p.relative_to(EXTERNAL).as_posix() for folder in ("beremiz-examples", "openplc-examples",
-                                                                    "rusty-cfc", "ironplc")
+FIXTURES = sorted(p.relative_to(EXTERNAL).as_posix() for folder in FOLDERS
                   for p in (EXTERNAL / folder).rglob("*") if p.suffix in (".xml", ".cfc")) if EXTERNAL.is_dir() else []
 
 
 @pytest.mark.skipif(not FIXTURES, reason="../shared/external not present")
-@pytest.mark.parametrize("fixture", FIXTURES)
+@pytest.mark.parametrize("fixture", [f for f in FIXTURES if f not in IMPORT_ERRORS])  # those cannot be exported
 def test_fixture_import_export_import_is_stable_and_valid(fixture):
     first = import_plcopen((EXTERNAL / fixture).read_bytes())
-    if any(d.severity == "error" for d in first.diagnostics):
-        pytest.skip("the source itself is broken; covered by test_plcopen_fixtures")
+    assert not [d.format() for d in first.diagnostics if d.severity == "error"]
     data = export_plcopen(first.project)
     assert xsd_errors(data) == []
     second = import_plcopen(data)

@@ -39,7 +39,7 @@ from ..model.fbd import (
 from ..ir.fbd_order import SIMPLE_IN, SIMPLE_OUT
 from .plcopen_body import IdMaker, NetworkGroup
 from .plcopen_graph import Conn, Element, Graph, reaches
-from .plcopen_ld_import import _negate
+from .plcopen_ld_import import negate
 from .plcopen_xml import Reader, local
 
 EXECUTABLE = ("block", "outVariable", "inOutVariable", "jump", "return", "label")
@@ -176,7 +176,7 @@ class FbdImporter:
             if mods.edge or mods.storage:
                 self.error("edge/storage modifiers on an input variable have no FBD equivalent; ignored", element,
                            self.network_id, "warning")
-            self.add(element, InputNode(id=node_id, pos=pos, expr=_negate(expr) if mods.negated else expr))
+            self.add(element, InputNode(id=node_id, pos=pos, expr=negate(expr) if mods.negated else expr))
         elif tag in ("outVariable", "inOutVariable"):
             if tag == "inOutVariable" and not element.inputs.get(""):
                 if not self.consumers.get(element.local_id):

@@ -48,7 +48,8 @@ _POWER_CONSUMERS = ("contact", "coil", "jump", "return", "rightPowerRail")
 _CONTACT_MODE = {(False, None): "no", (True, None): "nc", (False, "rising"): "p", (False, "falling"): "n"}
 
 
-def _negate(text: str) -> str:
+def negate(text: str) -> str:
+    """``NOT x`` / ``NOT (a > b)``: an inverted operand (negated variables and pins)."""
     return f"NOT {text}" if _SIMPLE.match(text) else f"NOT ({text})"
 
 
@@ -118,7 +119,7 @@ class LdImporter:
         flow = [m for m in self.topological(group.members) if self.graph.elements[m].tag not in
                 ("leftPowerRail", "rightPowerRail")]
         for local_id in flow:
-            self.plan(self.graph.elements[local_id], net)
+            self.plan(self.graph.elements[local_id])
         for local_id in flow:
             self.place(self.graph.elements[local_id], net)
         for rail in (e for e in self.graph.elements.values() if e.tag == "rightPowerRail"):
@@ -126,7 +127,7 @@ class LdImporter:
                 if conn.ref in net.members and self.is_power(conn):
                     self.wire(self.source_node(conn, net, rail), T, net)
         self.dangling(net)
-        elements = self.reduce(net, group)
+        elements = self.reduce(net)
         return LdNetwork(id=network_id, label=group.label, comment=group.comment, elements=elements)
 
     def topological(self, members: list[int]) -> list[int]:
@@ -183,7 +184,7 @@ class LdImporter:
             writers = {c.ref for c in source.inputs.get("", []) if self.graph.elements[c.ref].tag == "block"}
             if reader is not None:
                 writers = {w for w in writers if not reaches(self.consumers, reader, w)}
-            return (_negate(text) if negated else text), writers
+            return (negate(text) if negated else text), writers
         if source.tag != "block" or self.is_power(conn) and not source.node.get("instanceName"):
             return None
         if conn.ref in self.inline:
@@ -197,7 +198,7 @@ class LdImporter:
                 return target.text(self.reader, "expression"), {conn.ref}
         return None
 
-    def plan(self, element: Element, net: _Net) -> None:
+    def plan(self, element: Element) -> None:
         if element.tag != "block":
             return
         type_name = element.node.get("typeName", "")
@@ -282,16 +283,16 @@ class LdImporter:
             if element.inputs[pin]:
                 text, more = self.text(element.inputs[pin][0], element.local_id)
                 mods = element.mods.get(pin)
-                args.append(f"{pin} := {_negate(text) if mods and mods.negated else text}")
+                args.append(f"{pin} := {negate(text) if mods and mods.negated else text}")
                 reads |= more
         self.inline[element.local_id] = (f"{type_name}({', '.join(args)})", reads)
 
     # ------------------------------------------------------------ graph building
 
-    def model(self, element: Element, item: LdElement, prefix_reads: set[int] = frozenset()) -> LdElement:
+    def model(self, element: Element, item: LdElement, reads: set[int] = frozenset()) -> LdElement:
         self.models[element.local_id] = item
         self.paths[id(item)] = (element.info.get("parallels") or "").split() if element.info is not None else []
-        self.reads[id(item)] |= set(prefix_reads)
+        self.reads[id(item)] |= set(reads)
         return item
 
     def take_id(self, element: Element, prefix: str) -> str:
@@ -401,7 +402,7 @@ class LdImporter:
                            element, network=self.network_id)
                 continue
             text, more = found
-            values[pin] = _negate(text) if mods and mods.negated else text
+            values[pin] = negate(text) if mods and mods.negated else text
             reads |= more
         item = Box(id=self.take_id(element, "box"), call=element.node.get("typeName", ""),
                    instance=element.node.get("instanceName") or None, inputs=values, outputs={}, en=plan.en)
@@ -497,7 +498,7 @@ class LdImporter:
 
     # ------------------------------------------------------------ reduction
 
-    def reduce(self, net: _Net, group: NetworkGroup) -> list[LdElement]:
+    def reduce(self, net: _Net) -> list[LdElement]:
         edges = net.edges
         for (local_id, pin), point in net.side_points.items():
             box = self.models[local_id]
@@ -507,10 +508,11 @@ class LdImporter:
                            "series list of their own", self.graph.elements[local_id], network=self.network_id)
                 box.inputs.pop(pin, None)
                 continue
-            box.inputs[pin] = self.tree(self.sp(side, S, point, local_id))
+            box.inputs[pin] = self.tree(self.sp(side, S, point, local_id, f"input {pin} is left unconnected"))
         if not edges:
             return []
-        return self.tree(self.sp(edges, S, T, None, ends=[end for _, end in sorted(net.ends)]))
+        return self.tree(self.sp(edges, S, T, None, "the network is left empty",
+                                 ends=[end for _, end in sorted(net.ends)]))
 
     def side_region(self, edges: list[Edge], point: int) -> tuple[list[Edge] | None, list[Edge]]:
         """The edges feeding only ``point`` (a box input's own contact chain) and the rest."""
@@ -530,14 +532,16 @@ class LdImporter:
             return None, edges
         return side, [e for e in edges if e.v not in feeding]
 
-    def sp(self, edges: list[Edge], source: int, sink: int, owner: int | None, ends: list[int] = ()) -> list:
+    def sp(self, edges: list[Edge], source: int, sink: int, owner: int | None, outcome: str,
+           ends: list[int] = ()) -> list:
+        """The series list of a rung (or of a box input's chain); a bridge is reported and gives nothing."""
         try:
             return reduce_graph(edges, source, sink, lambda item: self.keys[id(item)], ends)
         except NotSeriesParallel as err:
             names = ", ".join(sorted({self.name_of(item) for item in err.items}))
             where = self.graph.elements[owner] if owner is not None else None
             self.error(f"the rung is not series-parallel (a bridge): {names} cannot be written as series and "
-                       "parallel branches", where, network=self.network_id, code="PLCOPEN-LD-BRIDGE")
+                       f"parallel branches; {outcome}", where, network=self.network_id, code="PLCOPEN-LD-BRIDGE")
             return []
 
     def name_of(self, item: LdElement) -> str:
