@@ -117,3 +117,63 @@ def test_every_diagram_program_of_the_suite_exports_to_st_that_runs_identically(
             same_traces(recorded)
         else:
             as_st(recorded)  # function blocks and functions on their own: the export still checks
+
+
+# ------------------------------------------------------------------ richer LD rungs
+
+RICH = ("VAR i0, i1, i2, o0, o1, o2 : BOOL; c0, c1 : INT; e : TIME; t0, t1 : TON; k0 : CTU; END_VAR")
+BOOLS = ["i0", "i1", "i2", "o0", "o1", "o2"]
+
+
+@st.composite
+def rich_series(draw, depth: int = 0) -> list:
+    """A series list of contacts, compares, coils anywhere (they pass the power on), nested parallels and boxes
+    (TON, CTU with a series list on R, ADD with EN)."""
+    kinds = ["contact", "contact", "coil", "compare"] + (["parallel", "box"] if depth < 2 else [])
+    elements = []
+    for kind in draw(st.lists(st.sampled_from(kinds), min_size=1, max_size=4)):
+        if kind == "contact":
+            elements.append(("contact", draw(st.sampled_from(BOOLS)), draw(st.sampled_from(["no", "nc", "p", "n"]))))
+        elif kind == "coil":
+            elements.append(("coil", draw(st.sampled_from(BOOLS[3:])),
+                             draw(st.sampled_from(["normal", "negated", "set", "reset", "p", "n"]))))
+        elif kind == "compare":
+            elements.append(("compare", draw(st.sampled_from(["GT", "LE", "EQ", "NE"])),
+                             draw(st.sampled_from(["c0", "c1"])), draw(st.integers(0, 6))))
+        elif kind == "parallel":
+            elements.append(("parallel", draw(st.lists(rich_series(depth + 1), min_size=2, max_size=3))))
+        else:
+            elements.append(("box", draw(st.sampled_from(["TON", "CTU", "ADD"])), draw(rich_series(depth + 1))))
+    return elements
+
+
+def rich_elements(series: list, ids) -> list:
+    built = []
+    for item in series:
+        if item[0] == "contact":
+            built.append(ld.Contact(id=ids("k"), var=item[1], mode=item[2]))
+        elif item[0] == "coil":
+            built.append(ld.Coil(id=ids("q"), var=item[1], mode=item[2]))
+        elif item[0] == "compare":
+            built.append(ld.Compare(id=ids("cmp"), op=item[1], left=item[2], right=str(item[3])))
+        elif item[0] == "parallel":
+            built.append(ld.Parallel(id=ids("p"), branches=[rich_elements(b, ids) for b in item[1]]))
+        elif item[1] == "TON":
+            built.append(ld.Box(id=ids("ton"), call="TON", instance=f"t{ids.count % 2}", inputs={"PT": "T#30ms"},
+                                outputs={"ET": "e"} if ids.count % 3 == 0 else {}))
+        elif item[1] == "CTU":
+            built.append(ld.Box(id=ids("ctu"), call="CTU", instance="k0",
+                                inputs={"PV": "3", "R": rich_elements(item[2], ids)}, outputs={"CV": "c0"}))
+        else:
+            built.append(ld.Box(id=ids("add"), call="ADD", en=True, inputs={"IN1": "c1", "IN2": "1"},
+                                outputs={"OUT": "c1"}))
+    return built
+
+
+@given(st.lists(rich_series(), min_size=1, max_size=4), st.integers(0, 2 ** 16))
+def test_property_rich_ld_rungs_export_to_st_that_runs_identically(program, seed):
+    ids = generated._Ids()
+    networks = [ld.LdNetwork(id=f"n{index}", elements=rich_elements(series, ids))
+                for index, series in enumerate(program)]
+    pou = Pou(name="Main", kind="program", language="ld", declarations=RICH, body=ld.LdBody(networks=networks))
+    same_traces(project(pou), seed=seed)

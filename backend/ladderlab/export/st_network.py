@@ -152,7 +152,11 @@ def plan(code: NetworkCode, declarations: Declarations) -> Planned:
         if not isinstance(op, Value):
             continue
         found = users[id(op)]
-        if op.pinned or op.effect or op.fallible or not found:
+        if not found and not op.pinned and not op.effect and not op.fallible:  # unread: so are its parts, here
+            for part in uses_in(op.expr):
+                users[id(part)].remove(op)
+            continue
+        if op.pinned or op.effect or op.fallible:
             final[id(op)] = position[id(op)]
             continue
         if len(found) == 1 or trivial(op.expr):
@@ -177,14 +181,14 @@ def plan(code: NetworkCode, declarations: Declarations) -> Planned:
             if full and op.declare is not None:
                 declarations.items.append(op.declare)
             statements += [(op.element, resolve(s)) for s in chosen]
-        elif id(op) not in inline and (users[id(op)] or op.pinned or op.effect):
+        elif id(op) not in inline and (users[id(op)] or op.pinned or op.effect or op.fallible):
             expr = resolve(op.expr)
-            if users[id(op)]:
+            if op.effect and not users[id(op)]:  # a user function box whose result nothing reads
+                statements.append((op.element, ast.CallStmt(expr)))
+            else:  # read later, or evaluated here whether read or not (it may fault, as in the diagram)
                 name = declarations.declare(op.hint, op.type)
                 temps[id(op)] = ast.Name(name)
                 statements.append((op.element, ast.Assign(ast.Name(name), expr)))
-            else:  # computed for its effect only (a user function box whose result nothing reads)
-                statements.append((op.element, ast.CallStmt(expr)))
     conditions = [resolve(Use(c.cond)) if c.cond is not None else None for c in code.controls]
     return Planned(statements, conditions)
 
@@ -208,10 +212,13 @@ def substitute(node: Any, replace: Any) -> Any:
 
 
 def without_double_not(node: Any) -> Any:
-    """``NOT NOT x`` -> ``x`` (a negated pin fed by a negated value); NOT is its own inverse on BOOL and bits."""
+    """``NOT NOT x`` -> ``x`` (a negated pin fed by a negated value; NOT is its own inverse on BOOL and bits),
+    ``NOT TRUE`` -> ``FALSE`` (a negated coil on the left rail)."""
     if isinstance(node, ast.Unary) and node.op == "NOT" and isinstance(node.operand, ast.Unary) \
             and node.operand.op == "NOT":
         return without_double_not(node.operand.operand)
+    if isinstance(node, ast.Unary) and node.op == "NOT" and isinstance(node.operand, ast.BoolLit):
+        return ast.BoolLit(not node.operand.value)
     if isinstance(node, list):
         return [without_double_not(item) for item in node]
     if isinstance(node, tuple):
