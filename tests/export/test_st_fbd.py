@@ -69,3 +69,10 @@ def test_gr02_connector_and_continuation_carry_the_value_and_an_edge_output_is_a
     check(net("n1", [inp("ia", "a"), connector("k", "w"), continuation("cc", "w"), out("ox", "x", "p")],
               [("ia.OUT", "k.IN"), ("cc.OUT", "ox.IN")]),
           expected="(* Network 1 (n1) *)\nox_trig(CLK := a);\nx := ox_trig.Q;\n")
+
+
+def test_gr05_an_input_node_whose_variable_the_network_writes_is_read_once_where_it_stands():
+    """Even unused: the lowering stores it in a temporary at its place in the order."""
+    check(net("n1", [inp("ia", "n"), inp("unused", "n"), blk("add", "ADD"), inp("one", "1"), out("o", "n")],
+              [("ia.OUT", "add.IN1"), ("one.OUT", "add.IN2"), ("add.OUT", "o.IN")]),
+          expected="(* Network 1 (n1) *)\nia := n;\nn := ADD(IN1 := ia, IN2 := 1);\nunused := n;\n")

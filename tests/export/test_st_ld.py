@@ -126,3 +126,10 @@ def test_source_map_links_every_network_line_to_its_network_and_element():
     mapped = {line: (network, element) for line, network, element in result.source_map}
     assert [(lines[line - 1], mapped[line]) for line in sorted(mapped)] == [
         ("(* Network 1 (n1) *)", ("n1", None)), ("x := a;", ("n1", "q1")), ("y := a;", ("n1", "q2"))]
+
+
+def test_a_read_that_may_fault_is_evaluated_where_the_diagram_evaluates_it_even_if_nothing_uses_it():
+    """A non-constant index can stop the task (index_out_of_range): it is kept in place, never moved or dropped."""
+    check(rung("n1", contact("k1", "a"), coil("q", "x"), contact("k2", "arr[i]")),
+          declarations="VAR a, x : BOOL; arr : ARRAY [0..3] OF BOOL; i : INT; END_VAR",
+          expected="(* Network 1 (n1) *)\nx := a;\nk2 := arr[i];\n")
