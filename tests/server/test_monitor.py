@@ -384,3 +384,18 @@ def test_clients_per_simulation_and_paths_per_subscription_are_bounded(client: T
         wait_for(lambda: client.get(f"/api/simulations/{sim_id}").json()["clients"] == 0)
     finally:
         registry.close()
+
+
+def test_composite_and_nested_paths_are_read_through_their_containers(client: TestClient, motor_sim: str) -> None:
+    with client.websocket_connect(ws_url(motor_sim)) as ws:
+        recv(ws)
+        ws.send_json({"type": "write", "path": "Start", "value": True})
+        ws.send_json({"type": "single_cycle"})
+        first = subscribe(ws, ["Main.RunTimer", "Main.RunTimer.ET", "Main.Blink.Half.PT", "Motor", "GVL.StartCount"])
+        assert first["changed"] == {
+            "MAIN.RUNTIMER": {"IN": True, "PT": 5000, "Q": False, "ET": 0}, "MAIN.RUNTIMER.ET": 0,
+            "MAIN.BLINK.HALF.PT": 0, "MOTOR": True, "STARTCOUNT": 1}
+        ws.send_json({"type": "single_cycle"})
+        second, _ = recv_until(ws, of_type("values", scan=2))
+        assert second["changed"] == {"MAIN.RUNTIMER": {"IN": True, "PT": 5000, "Q": False, "ET": 10},
+                                     "MAIN.RUNTIMER.ET": 10}
