@@ -1,9 +1,9 @@
 """FBD body -> IR: one labelled block per network, nodes in the order fbd_order fixes (docs/diagrams.md).
 
 Every block is the ST call it stands for (diagram_calls); its outputs stay where
-the call leaves them - a function's result in a hidden slot kept between scans
-(EN FALSE keeps it, a feedback wire reads last scan's value), an FB's outputs
-in its instance - and consumers read them there. Pin flags add the inversion
+the call leaves them - a function's result in a temporary (in a slot kept between
+scans when the block has EN: EN FALSE keeps it), an FB's outputs in its instance -
+and consumers read them there. Pin flags add the inversion
 or edge detection in front of an input or behind an output. Output nodes
 write like LD coils (power.coil). Every block output pin is probed as
 ``<id>.<PIN>``; input, output, jump and return nodes as ``<id>``.

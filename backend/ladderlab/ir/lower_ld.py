@@ -185,54 +185,60 @@ class _Rung:
         return right if right is not None else self.power(box.id, FALSE)
 
     def _box(self, box: ld.Box, callee: Callee, instance: str | None, inputs: dict, power: Expr) -> Expr | None:
+        """The call, its output copies and probes; the box's right-side power (None: reported)."""
         at, origin = self.at(box.id), self.origin(box.id)
-        for pin in ("EN", "ENO"):
-            if pin in inputs or pin in {p.upper() for p in box.outputs}:
-                self.ops.report(at.on(pin), "LD-UNKNOWN-PIN", f"{pin} is the box's power flow: set en instead of "
-                                "connecting it")
-                return None
-        en = eno = None
-        if box.en:
-            en, eno = (power, t.BOOL), self.ops.temp()
-        else:
-            free = [pin for pin in callee.bool_inputs() if pin not in inputs]
-            if not free:
-                self.ops.report(at, "LD-BOX-POWER", f"{callee.name} has no free BOOL input for the power flow: "
-                                "set en to use EN")
-                return None
-            inputs[free[0]] = (power, t.BOOL)
         outputs = {pin.upper(): text for pin, text in box.outputs.items()}
-        result_text = outputs.pop("OUT", None) if not callee.is_fb else None
-        if not callee.is_fb and outputs:
-            for pin in outputs:
-                self.ops.report(at.on(pin), "LD-UNKNOWN-PIN", f"{callee.name} is a function: its only output is OUT")
+        if not self._pins_allowed(callee, inputs, outputs, at):
             return None
+        en, eno = ((power, t.BOOL), self.ops.temp()) if box.en else (None, None)
+        if not box.en and not self._feed_power(callee, inputs, power, at):
+            return None
+        result_text = outputs.pop("OUT", None) if not callee.is_fb else None
         node = check_call(self.ops, callee, instance, inputs, outputs, at, en, eno)
         if node is None:
             return None
         if callee.is_fb:
-            result, pins = None, {pin: self.ops.read(f"{instance}.{pin}", at.on(pin), f"output {pin}")[0]
-                                  for pin in callee.output_names()}
+            result = None
+            pins = {pin: self.ops.read(f"{instance}.{pin}", at.on(pin), f"output {pin}")[0]
+                    for pin in callee.output_names()}
         else:
             result = self._result(node, result_text, at, box.en)
             pins = {"OUT": result}
-        if result is None and not callee.is_fb:
-            return None
-        statements = lower_call(self.ops, callee, node, result, at, origin)
+        statements = lower_call(self.ops, callee, node, result, at, origin) \
+            if result is not None or callee.is_fb else None
         if statements is None:
             return None
         self.out += statements
         right = eno if eno is not None else self._bool_output(callee, node, pins, at)
         if right is None:
             return None
+        probes: list[Stmt] = [Probe(box.id, eno, origin)] if eno is not None else []
         if eno is None:
             right = self.power(box.id, right)
-            probes: list[Stmt] = []
-        else:
-            probes = [Probe(box.id, eno, origin)]
         probes += [Probe(f"{box.id}.{pin}", value, origin) for pin, value in pins.items() if value is not None]
         self.out += probes if en is None or power == TRUE else [If([(power, probes)], [], origin)]
         return right
+
+    def _pins_allowed(self, callee: Callee, inputs: dict, outputs: dict, at: At) -> bool:
+        """EN and ENO are the power flow, not operands; a function's only output is OUT."""
+        problems = [(pin, f"{pin} is the box's power flow: set en instead of connecting it")
+                    for pin in ("EN", "ENO") if pin in inputs or pin in outputs]
+        if not callee.is_fb:
+            problems += [(pin, f"{callee.name} is a function: its only output is OUT") for pin in outputs
+                         if pin not in ("OUT", "EN", "ENO")]
+        for pin, message in problems:
+            self.ops.report(at.on(pin), "LD-UNKNOWN-PIN", message)
+        return not problems
+
+    def _feed_power(self, callee: Callee, inputs: dict, power: Expr, at: At) -> bool:
+        """Without ``en`` the power enters the first BOOL input that has no operand (GR-27 b)."""
+        free = [pin for pin in callee.bool_inputs() if pin not in inputs]
+        if not free:
+            self.ops.report(at, "LD-BOX-POWER", f"{callee.name} has no free BOOL input for the power flow: set en "
+                            "to use EN")
+            return False
+        inputs[free[0]] = (power, t.BOOL)
+        return True
 
     def _result(self, node, text: str | None, at: At, en: bool) -> Var | None:
         """Where a function box's result goes: its OUT variable, else a slot kept between scans when the box
