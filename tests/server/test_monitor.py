@@ -399,3 +399,31 @@ def test_composite_and_nested_paths_are_read_through_their_containers(client: Te
         second, _ = recv_until(ws, of_type("values", scan=2))
         assert second["changed"] == {"MAIN.RUNTIMER": {"IN": True, "PT": 5000, "Q": False, "ET": 10},
                                      "MAIN.RUNTIMER.ET": 10}
+
+
+@pytest.mark.parametrize(("elements", "text"), [
+    ([{"pou_instance": "Main", "ids": ["start", "strat"]}],
+     "Main (MAIN) has no element 'strat' (elements: blink, blink.OUT, ctu, ctu.CV, ctu.Q, lamp_coil, motor, "
+     "motor_on, reset_count, running, running_on, seal, start, start_edge, start_or_motor, stop, ton, ton.ET, "
+     "ton.Q)"),
+    ([{"pou_instance": "Main.Blink", "ids": ["x"]}],
+     "Main.Blink (BLINKER) has no element 'x' (elements: none: it is not a ladder or FBD POU)"),
+    ([{"pou_instance": "Main.Lamp"}], "no POU instance 'Main.Lamp' - did you mean 'MAIN.BLINK'?"),
+    ([{"pou_instance": "Mian"}], "no POU instance 'Mian' - did you mean 'MAIN'?"),
+])
+def test_element_subscriptions_name_existing_instances_and_elements(client: TestClient, motor_sim: str,
+                                                                    elements: list, text: str) -> None:
+    with client.websocket_connect(ws_url(motor_sim)) as ws:
+        recv(ws)
+        ws.send_json({"type": "subscribe", "paths": [], "elements": elements})
+        error, _ = recv_until(ws, of_type("error"))
+        assert (error["code"], error["message"]) == ("bad_path", text)
+
+
+def test_fbd_elements_and_fb_instances_can_be_watched(client: TestClient, motor_sim: str) -> None:
+    client.post(f"/api/simulations/{motor_sim}/cycle")
+    with client.websocket_connect(ws_url(motor_sim)) as ws:
+        recv(ws)
+        first = subscribe(ws, [], elements=[{"pou_instance": "Scaling", "ids": ["add.OUT", "gt.OUT", "high"]},
+                                            {"pou_instance": "Main.Blink"}])
+        assert first["power"] == {"Scaling/add.OUT": 5, "Scaling/gt.OUT": False, "Scaling/high": False}

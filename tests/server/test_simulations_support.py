@@ -111,7 +111,8 @@ def of_type(kind: str, **fields: Any) -> Callable[[dict[str, Any]], bool]:
 def subscribe(ws: WebSocketTestSession, paths: list[str], interval_ms: int = 20, **extra: Any) -> dict[str, Any]:
     """Subscribe and return the first (full) values message."""
     ws.send_json({"type": "subscribe", "paths": paths, "interval_ms": interval_ms, **extra})
-    message, _ = recv_until(ws, of_type("values"))
+    message, _ = recv_until(ws, lambda m: m["type"] in ("values", "error"))
+    assert message["type"] == "values", message
     return message
 
 

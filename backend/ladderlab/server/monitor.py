@@ -243,8 +243,8 @@ class MonitorClient:
             raise CommandError("too_many", f"a subscription may hold {limits.max_paths} paths and "
                                            f"{limits.max_instances} POU instances, not {len(request.paths)} "
                                            f"and {len(request.elements)}")
-        instances = [e.pou_instance for e in request.elements]
-        self.watch = await asyncio.to_thread(self.runner.watch, self, request.paths, instances)
+        elements = [(e.pou_instance, e.ids) for e in request.elements]
+        self.watch = await asyncio.to_thread(self.runner.watch, self, request.paths, elements)
         self.elements = [(e.pou_instance, e.pou_instance.strip().upper(), e.ids) for e in request.elements]
         self.interval_s = request.interval_ms / 1000.0
         self.full, self.next_due = True, self.loop.time()

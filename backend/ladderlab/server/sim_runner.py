@@ -415,18 +415,22 @@ class SimRunner:
 
     # ------------------------------------------------------------------ watching
 
-    def watch(self, key: object, paths: list[str], instances: list[str]) -> Watch:
-        """Set ``key``'s subscription (replacing its previous one); the next frame carries its values."""
+    def watch(self, key: object, paths: list[str], elements: list[tuple[str, list[str] | None]]) -> Watch:
+        """Set ``key``'s subscription (replacing its previous one); the next frame carries its values.
+
+        ``elements``: (POU instance, element ids or None for all) whose probes to publish."""
         locations = {}
         for path in paths:
             location = self.location(path)
             locations.setdefault(location.path, location)
         canonical = []
-        for instance in instances:
-            try:
-                self.sim.probes(instance)
-            except KeyError as error:
-                raise CommandError("bad_path", str(error.args[0])) from None
+        for instance, ids in elements:
+            with self.lock:
+                try:
+                    self.sim.probes(instance)
+                except KeyError as error:
+                    raise CommandError("bad_path", str(error.args[0])) from None
+            self._check_elements(instance, ids or [])
             canonical.append(instance.strip().upper())
         watch = Watch(locations, tuple(dict.fromkeys(canonical)))
 
@@ -435,6 +439,25 @@ class SimRunner:
             self._rebuild_union()
         self._command(action)
         return watch
+
+    def _check_elements(self, instance: str, ids: list[str]) -> None:
+        """Every id must be a probed element (or pin, ``box.Q``) of the instance's POU."""
+        pou = self._pou_of(instance)
+        known = {p.element for p in self.sim.debugger.pause_points(pou) if p.kind == "element"}  # type: ignore[union-attr]
+        unknown = [element for element in ids if element not in known]
+        if unknown:
+            listed = ", ".join(sorted(known)[:30]) or "none: it is not a ladder or FBD POU"
+            raise CommandError("bad_path", f"{instance} ({pou}) has no element {unknown[0]!r} (elements: {listed})")
+
+    def _pou_of(self, instance: str) -> str:
+        name = instance.strip().upper()
+        pou = self._ctx.pous.get(name)
+        if pou is not None and pou.kind in ("program", "function"):
+            return pou.name
+        location = self.location(instance)
+        if isinstance(location.type, t.FbInstance):
+            return location.type.fb
+        raise CommandError("bad_path", f"{location.path} is not a POU instance")
 
     def unwatch(self, key: object) -> None:
         with self.lock:
