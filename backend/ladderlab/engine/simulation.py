@@ -30,7 +30,8 @@ from .codegen.faults import Fault, make_fault
 from .codegen.runtime import Watchdog
 from .compile import CompiledProgram, compile_program
 from .debug import Debugger, Halt
-from .paths import Location, Resolver, Roots, coerce_for, leaves, plain
+from ..st.symbols import did_you_mean
+from .paths import Location, Resolver, Roots, UnknownPath, coerce_for, leaves, plain
 from .tasks import Schedule, Task, task_table
 
 
@@ -317,9 +318,7 @@ class Simulation:
         if key not in known:
             sinks = [k for k, _, _ in self._probe_sinks()]
             if key not in {k.upper() for k in sinks}:
-                from ..st.symbols import did_you_mean
-
-                raise KeyError(f"no POU instance {instance!r}{did_you_mean(instance, sinks)}")
+                raise UnknownPath(f"no POU instance {instance!r}{did_you_mean(instance, sinks)}")
             return ProbeView({}, frozenset())
         name = known[key]
         return ProbeView(dict(self._probes.last.get(name, {})), frozenset(self._probes.current.get(name, {})))

@@ -22,6 +22,7 @@ from ..ir import nodes as ir
 from ..model.diagnostics import Diagnostic
 
 TASK_ERROR = "ENGINE-TASKS"
+_EPSILON_MS = 1e-6
 DEFAULT_INTERVAL_MS = 10
 
 
@@ -150,7 +151,7 @@ class Pacer:
             raise ValueError("speed must be positive")
         self.sim, self.speed, self.max_lag_ms, self.clock, self.idle_s = sim, speed, max_lag_ms, clock, idle_s
         self.overruns = 0
-        self._anchor: tuple[float, float] | None = None  # (wall seconds, virtual ms) in step
+        self._anchor: tuple[float, float] | None = (clock(), sim.time_ms)  # (wall s, virtual ms) in step; None: re-anchor
 
     def _virtual_now(self) -> float:
         if self._anchor is None:
@@ -163,7 +164,7 @@ class Pacer:
             self._anchor = None
             return self.idle_s
         now = self._virtual_now()
-        while self.sim.next_scan_time() <= now:
+        while self.sim.next_scan_time() <= now + _EPSILON_MS:  # float clocks: due within a nanosecond is due
             if now - self.sim.next_scan_time() > self.max_lag_ms:
                 self.overruns += 1
                 self._anchor = (self.clock(), self.sim.next_scan_time())
@@ -177,5 +178,6 @@ class Pacer:
     def run(self, seconds: float, sleep: Callable[[float], None] = time.sleep) -> None:
         """Poll for ``seconds`` of wall time (a blocking driver, e.g. for the CLI or a thread)."""
         end = self.clock() + seconds
-        while self.clock() < end:
-            sleep(min(self.poll(), max(0.0, end - self.clock())))
+        while (left := end - self.clock()) > _EPSILON_MS / 1000.0:  # a float clock may never land exactly on ``end``
+            sleep(min(self.poll(), left))
+        self.poll()  # the scans due at the very end

@@ -1,0 +1,199 @@
+"""The debug variant: probes (ON-09), breakpoints (ON-03), stepping (ON-04, ON-05); the fast variant has no hooks."""
+
+from __future__ import annotations
+
+import pytest
+
+from ladderlab.engine.compile import emit_python
+from ladderlab.engine.simulation import Simulation
+
+from .irbuild import (BOOL, INT, add, and_, assign, c, call, div, fb, fbcall, function, jump, network, not_, pou, probe,
+                      prog, slot, v, while_)
+
+A, B, X, Y = v("A", INT), v("B", INT), v("X", INT), v("Y", INT)
+
+
+def _st_program():
+    """MAIN (ST): line 1 A := A + 1; line 2 B := DOUBLE(A); line 3 X := X + 1. DOUBLE: line 1 and 2."""
+    double = function("DOUBLE", INT, [slot("N", INT, "VAR_INPUT"), slot("T", INT)],
+                      [assign(v("T", INT), add(v("N", INT), v("N", INT))), assign(v("DOUBLE", INT), v("T", INT))])
+    main = pou("MAIN", [slot("A", INT), slot("B", INT), slot("X", INT)],
+               [assign(A, add(A, c(1, INT))), assign(B, call("DOUBLE", A, type=INT, user=True)),
+                assign(X, add(X, c(1, INT)))])
+    return prog(main, double)
+
+
+def _ld_program():
+    """MAIN (LD): N1 coil OUT1 := IN1 AND NOT IN2; N2 jumps over N3 when SKIP; N3 counts; probes per element."""
+    in1, in2, out1, skip, n = v("IN1", BOOL), v("IN2", BOOL), v("OUT1", BOOL), v("SKIP", BOOL), v("N", INT)
+    flow = v("__E2", BOOL)
+    blocks = [
+        network("N1", [probe("E1", in1), assign(flow, and_(in1, not_(in2))), probe("E2", flow), assign(out1, flow),
+                       probe("E3", flow)]),
+        network("N2", [probe("E4", skip), jump("END", skip)]),
+        network("N3", [assign(n, add(n, c(1, INT))), probe("E5", c(True, BOOL)), probe("E5.OUT", n)]),
+        network("N4", [probe("E6", out1)], label="END"),
+    ]
+    slots = [slot("IN1", BOOL, initial=True), slot("IN2", BOOL), slot("OUT1", BOOL), slot("SKIP", BOOL),
+             slot("N", INT), slot("__E2", BOOL, hidden=True)]
+    return prog(pou("MAIN", slots, blocks))
+
+
+def test_the_fast_variant_has_no_probe_or_pause_code():
+    for program in (_st_program(), _ld_program()):
+        fast, debug = emit_python(program, "fast"), emit_python(program, "debug")
+        assert not any(word in fast for word in ("ll_halt", "ll_pr", "yield", "ll_probes", "E1"))
+        assert "if ll_halt[0]: yield (0, self)" in debug
+    assert "(yield from f_DOUBLE(self.v_A))" in emit_python(_st_program(), "debug")
+    assert "ll_pr['E1'] = self.v_IN1" in emit_python(_ld_program(), "debug")
+
+
+def test_probes_record_values_and_which_elements_ran_this_scan():
+    sim = Simulation(_ld_program(), variant="debug")
+    sim.cycle()
+    view = sim.probes("main")
+    assert view.values == {"E1": True, "E2": True, "E3": True, "E4": False, "E5": True, "E5.OUT": 1, "E6": True}
+    assert view.executed == set(view.values)
+    sim.write("MAIN.SKIP", True)
+    sim.write("MAIN.IN2", True)
+    sim.cycle()
+    view = sim.probes("MAIN")
+    assert view.executed == {"E1", "E2", "E3", "E4", "E6"}  # N3 was jumped over
+    assert view.values == {"E1": True, "E2": False, "E3": False, "E4": True, "E5": True, "E5.OUT": 1, "E6": False}
+
+
+def test_probes_of_fb_instances_and_functions():
+    q = v("Q", BOOL)
+    user = pou("BLINK", [slot("Q", BOOL, "VAR_OUTPUT")], [network("N1", [assign(q, not_(q)), probe("C1", q)])],
+               kind="function_block")
+    neg = function("ISNEG", BOOL, [slot("X", INT, "VAR_INPUT")],
+                   [network("N1", [assign(v("ISNEG", BOOL), call("LT", v("X", INT), c(0, INT), type=BOOL)),
+                                   probe("LT1", v("ISNEG", BOOL))])])
+    main = pou("MAIN", [slot("F1", fb("BLINK")), slot("F2", fb("BLINK")), slot("R", BOOL)],
+               [fbcall(v("F1", fb("BLINK"))), fbcall(v("F2", fb("BLINK"))), fbcall(v("F2", fb("BLINK"))),
+                assign(v("R", BOOL), call("ISNEG", c(-3, INT), type=BOOL, user=True))])
+    sim = Simulation(prog(main, user, neg), variant="debug")
+    sim.cycle()
+    assert sim.probes("MAIN.F1").values == {"C1": True} and sim.probes("MAIN.F2").values == {"C1": False}
+    assert sim.probes("isneg").values == {"LT1": True} and sim.probes("MAIN").values == {}
+    with pytest.raises(KeyError, match="no POU instance 'MAIN.F3' - did you mean 'MAIN.F2'"):
+        sim.probes("MAIN.F3")
+
+
+def test_breakpoint_on_an_st_line_halts_before_the_statement_and_allows_reading_and_writing():
+    sim = Simulation(_st_program(), variant="debug")
+    assert sim.set_breakpoint("MAIN", line=3) == [3]
+    assert sim.cycle(5) == 0
+    halt = sim.halted
+    assert (halt.reason, halt.point.kind, halt.origin.pou, halt.origin.line, halt.instance) == (
+        "breakpoint", "statement", "MAIN", 3, "MAIN")
+    assert (sim.read("MAIN.A"), sim.read("MAIN.B"), sim.read("MAIN.X")) == (1, 2, 0)
+    sim.write("MAIN.X", 10)  # at once while halted
+    assert sim.read("MAIN.X") == 10
+    with pytest.raises(RuntimeError, match="halted"):
+        sim.cycle()
+    assert sim.resume() is None and sim.halted is None and sim.read("MAIN.X") == 11 and sim.scan_count == 1
+    assert sim.cycle() == 0 and sim.halted.origin.line == 3 and sim.time_ms == 20
+    sim.clear_breakpoints()
+    assert sim.resume() is None and sim.cycle(2) == 2 and sim.read("MAIN.A") == 4
+
+
+def test_step_statement_goes_into_called_functions():
+    sim = Simulation(_st_program(), variant="debug")
+    sim.set_breakpoint("MAIN", line=2)
+    sim.cycle()
+    where = []
+    halt = sim.halted
+    while halt is not None:
+        where.append((halt.origin.pou, halt.origin.line, halt.reason))
+        halt = sim.step("statement")
+    assert where == [("MAIN", 2, "breakpoint"), ("DOUBLE", 1, "step"), ("DOUBLE", 2, "step"), ("MAIN", 3, "step")]
+    assert sim.scan_count == 1 and sim.read("MAIN.B") == 2
+
+
+def test_step_when_not_halted_starts_a_scan_and_step_cycle_finishes_it():
+    sim = Simulation(_st_program(), variant="debug")
+    halt = sim.step("statement")
+    assert (halt.origin.pou, halt.origin.line, sim.read("MAIN.A")) == ("MAIN", 1, 0)
+    assert sim.step("cycle") is None and sim.scan_count == 1 and sim.read("MAIN.X") == 1
+    assert sim.step("cycle") is None and sim.scan_count == 2  # ON-05: a single cycle from the stopped state
+
+
+def test_step_network_in_a_diagram_and_breakpoints_on_networks_and_elements():
+    sim = Simulation(_ld_program(), variant="debug")
+    sim.set_breakpoint("MAIN", network="N2")
+    sim.cycle()
+    assert (sim.halted.point.kind, sim.halted.origin.network) == ("network", "N2")
+    assert sim.step("network").origin.network == "N3"
+    assert sim.step("network").origin.network == "N4"
+    assert sim.step("network") is None
+    sim.clear_breakpoint("MAIN", network="N2")
+    sim.set_breakpoint("MAIN", element="E5.OUT")
+    sim.cycle()
+    assert (sim.halted.point.kind, sim.halted.point.element) == ("element", "E5.OUT")
+    assert sim.probes("MAIN").executed >= {"E1", "E5", "E5.OUT"} and "E6" not in sim.probes("MAIN").executed
+
+
+def test_halts_name_the_fb_instance():
+    n = v("N", INT)
+    user = pou("CNT", [slot("N", INT)], [assign(n, add(n, c(1, INT)))], kind="function_block")
+    main = pou("MAIN", [slot("C1", fb("CNT")), slot("C2", fb("CNT"))],
+               [fbcall(v("C1", fb("CNT"))), fbcall(v("C2", fb("CNT")))])
+    sim = Simulation(prog(main, user), variant="debug")
+    sim.set_breakpoint("CNT", line=1)
+    sim.cycle()
+    assert sim.halted.instance == "MAIN.C1"
+    assert sim.resume().instance == "MAIN.C2" and sim.read("MAIN.C1.N") == 1 and sim.read("MAIN.C2.N") == 0
+
+
+@pytest.mark.parametrize(("where", "message"), [
+    ({"line": 9}, "MAIN has no statement at line 9 (possible: 1, 2, 3)"),
+    ({"network": "N1"}, "MAIN has no network 'N1' (possible: none)"),
+    ({"line": 1, "network": "N1"}, "give exactly one of line, network, element"),
+])
+def test_breakpoint_errors(where, message):
+    sim = Simulation(_st_program(), variant="debug")
+    with pytest.raises(ValueError) as raised:
+        sim.set_breakpoint("MAIN", **where)
+    assert str(raised.value) == message
+
+
+def test_debugging_needs_the_debug_variant_and_a_halt():
+    fast = Simulation(_st_program())
+    with pytest.raises(RuntimeError, match="variant='debug'"):
+        fast.set_breakpoint("MAIN", line=1)
+    debug = Simulation(_st_program(), variant="debug")
+    with pytest.raises(RuntimeError, match="not halted"):
+        debug.resume()
+
+
+def test_reset_ends_a_halted_scan():
+    sim = Simulation(_st_program(), variant="debug")
+    sim.set_breakpoint("MAIN", line=2)
+    sim.cycle()
+    sim.reset(cold=True)
+    assert sim.halted is None and sim.read("MAIN.A") == 0
+    assert sim.cycle() == 0 and sim.read("MAIN.A") == 1  # the breakpoint stays
+
+
+class _Clock:
+    def __init__(self) -> None:
+        self.now = 0.0
+
+    def __call__(self) -> float:
+        self.now += 0.0001
+        return self.now
+
+
+def test_halted_time_does_not_count_against_the_watchdog_and_faults_work_in_debug():
+    i = v("I", INT)
+    main = pou("MAIN", [slot("I", INT), slot("Z", INT), slot("Q", INT)],
+               [assign(i, c(0, INT)), while_(call("LT", i, c(5000, INT), type=BOOL), [assign(i, add(i, c(1, INT)))]),
+                assign(v("Q", INT), div(i, v("Z", INT)))])
+    clock = _Clock()
+    sim = Simulation(prog(main), variant="debug", watchdog_s=0.5, wall_clock=clock)
+    sim.set_breakpoint("MAIN", line=2)
+    sim.cycle()
+    clock.now += 3600.0  # an hour at the breakpoint
+    assert sim.resume() is None
+    assert (sim.fault.code, sim.fault.origin.line, sim.fault.values) == ("division_by_zero", 4, {"Q": 0, "I": 5000, "Z": 0})
