@@ -3,6 +3,8 @@ single cycle, trace, several clients, runtime errors, origin check, deletion."""
 
 from __future__ import annotations
 
+import asyncio
+import json
 import time
 
 import pytest
@@ -427,3 +429,62 @@ def test_fbd_elements_and_fb_instances_can_be_watched(client: TestClient, motor_
         first = subscribe(ws, [], elements=[{"pou_instance": "Scaling", "ids": ["add.OUT", "gt.OUT", "high"]},
                                             {"pou_instance": "Main.Blink"}])
         assert first["power"] == {"Scaling/add.OUT": 5, "Scaling/gt.OUT": False, "Scaling/high": False}
+
+
+def test_an_oversized_message_gets_an_error(client: TestClient, workspace: Workspace) -> None:
+    registry = install(client, SimulationSettings(max_message_bytes=200))
+    try:
+        workspace.create(counter_project())
+        sim_id = client.post("/api/projects/counter/simulations").json()["id"]
+        with client.websocket_connect(ws_url(sim_id)) as ws:
+            recv(ws)
+            ws.send_text(json.dumps({"type": "subscribe", "paths": ["Main.Count"] * 20}))  # 32 + 20 * 14 characters
+            error, _ = recv_until(ws, of_type("error"))
+            assert error == {"type": "error", "code": "too_large",
+                             "message": "the message has 312 characters, more than the limit of 200"}
+            assert subscribe(ws, ["Main.Count"])["changed"] == {"MAIN.COUNT": 0}
+    finally:
+        registry.close()
+
+
+def test_rest_start_continues_a_halted_scan(client: TestClient, counter: str, registry: SimulationRegistry) -> None:
+    runner = entry(registry, counter).runner
+    runner.set_breakpoint("Main", line=3)
+    assert client.post(f"/api/simulations/{counter}/cycle").json()["state"] == "halted"
+    runner.clear_breakpoint()
+    assert client.post(f"/api/simulations/{counter}/start").json()["state"] == "running"
+    wait_for(lambda: runner.sim.scan_count >= 3)
+    assert runner.sim.read("Main.Result") == 100
+
+
+class _RecordingSocket:
+    def __init__(self) -> None:
+        self.sent: list[dict] = []
+
+    async def send_text(self, text: str) -> None:
+        self.sent.append(json.loads(text))
+
+
+def test_a_client_that_falls_behind_loses_old_log_entries_and_is_told(client: TestClient, counter: str,
+                                                                      registry: SimulationRegistry) -> None:
+    from ladderlab.model import monitor as m
+    from ladderlab.server.monitor import MonitorClient
+
+    settings = SimulationSettings(max_queued=5)
+
+    async def scenario() -> list[dict]:
+        socket = _RecordingSocket()
+        monitor = MonitorClient(socket, entry(registry, counter), settings)  # type: ignore[arg-type]
+        monitor._enqueue(m.Trace(type="trace", values={"X": [1]}, scans=[1], time_ms=[10.0]))
+        for n in range(8):
+            monitor._enqueue(m.Log(type="log", level="info", message=f"entry {n}"))
+            monitor._enqueue(m.Status(type="status", state="running" if n % 2 else "stopped"))
+        await monitor._drain()
+        return socket.sent
+
+    sent = asyncio.run(scenario())
+    assert [(s["type"], s.get("message") or s.get("state")) for s in sent] == [
+        ("log", "4 messages were dropped: this connection did not keep up"),
+        ("trace", None), ("log", "entry 4"), ("log", "entry 5"), ("log", "entry 6"), ("log", "entry 7"),
+        ("status", "running"),  # only the latest state
+    ]
