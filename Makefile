@@ -17,7 +17,7 @@ FRONTEND_DEPS := frontend/node_modules/.installed
 run: $(VENV)/.installed frontend
 	$(VENV)/bin/ladderlab serve --host $(HOST) --port $(PORT)
 
-test: $(VENV)/.installed chromium $(FRONTEND_DEPS)
+test: $(VENV)/.installed chromium $(FRONTEND_DEPS) frontend
 	cd frontend && npm run --silent check:types && npm test --silent
 	$(PY) -m pytest -q $(PYTEST_ARGS)
 

@@ -2,7 +2,7 @@
 // of open POUs with unsaved marks, the LD editor for LD POUs (online when a simulation runs), the
 // simulation toolbar, the bottom panels, Save (Ctrl+S) and the dialog for a save conflict (reload
 // theirs or overwrite deliberately).
-import { useCallback, useEffect, useMemo } from "react";
+import { useCallback, useEffect, useMemo, useState, type FormEvent } from "react";
 import type { Diagnostic, SymbolTable } from "../generated/api";
 import type { LdBody, Pou } from "../generated/project";
 import { LdEditor } from "../ld/editor/LdEditor";
@@ -13,6 +13,7 @@ import { SIMULATION_KEYS, SimulationBar } from "../online/SimulationBar";
 import { instanceOf, useLdOnline } from "../online/useLdOnline";
 import { BottomPanels } from "../panels/BottomPanels";
 import { focusOf, panelsStore, usePanels } from "../panels/store";
+import { StView } from "../stview/StView";
 import { pouOf, useWorkspace, workspaceStore } from "./store";
 
 const KINDS: { kind: Pou["kind"]; title: string }[] = [
@@ -28,6 +29,60 @@ export const formatTime = (iso: string | null | undefined): string => {
   return Number.isNaN(date.getTime()) ? iso : date.toLocaleString();
 };
 
+/** "New POU": name, kind and language; the POU joins the working copy (saved with the project). */
+function NewPou() {
+  const addPou = useWorkspace((s) => s.addPou);
+  const [open, setOpen] = useState(false);
+  const [name, setName] = useState("");
+  const [kind, setKind] = useState<Pou["kind"]>("program");
+  const [language, setLanguage] = useState<Pou["language"]>("ld");
+  const [error, setError] = useState<string | null>(null);
+  if (!open) {
+    return (
+      <button type="button" className="new-pou-button" onClick={() => setOpen(true)}>
+        New POU
+      </button>
+    );
+  }
+  const submit = (e: FormEvent) => {
+    e.preventDefault();
+    const problem = addPou(name, kind, language);
+    setError(problem);
+    if (!problem) {
+      setOpen(false);
+      setName("");
+    }
+  };
+  return (
+    <form className="new-pou" aria-label="New POU" onSubmit={submit}>
+      <input aria-label="POU name" autoFocus value={name} onChange={(e) => setName(e.target.value)} placeholder="name" spellCheck={false} />
+      <select aria-label="POU kind" value={kind} onChange={(e) => setKind(e.target.value as Pou["kind"])}>
+        {KINDS.map((k) => (
+          <option key={k.kind} value={k.kind}>
+            {k.title.replace(/s$/, "").toLowerCase()}
+          </option>
+        ))}
+      </select>
+      <select aria-label="POU language" value={language} onChange={(e) => setLanguage(e.target.value as Pou["language"])}>
+        {Object.entries(LANGUAGE).map(([value, label]) => (
+          <option key={value} value={value}>
+            {label}
+          </option>
+        ))}
+      </select>
+      <button type="submit">Create</button>
+      <button type="button" onClick={() => setOpen(false)}>
+        Cancel
+      </button>
+      {error ? (
+        <p className="new-pou-error" role="alert">
+          {error}
+        </p>
+      ) : null}
+    </form>
+  );
+}
+
 function ProjectTree() {
   const project = useWorkspace((s) => s.project);
   const changed = useWorkspace((s) => s.changed);
@@ -38,6 +93,7 @@ function ProjectTree() {
   const lines = (text: string | undefined) => (text ?? "").split("\n").filter((l) => l.trim()).length;
   return (
     <nav className="tree" aria-label="Project tree">
+      <NewPou />
       {KINDS.map(({ kind, title }) => {
         const group = pous.filter((p) => p.kind === kind);
         return (
@@ -149,14 +205,44 @@ function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
   );
 }
 
+type PouMode = "body" | "st";
+
 function PouView({ name }: { name: string }) {
   const pou = useWorkspace((s) => pouOf(s.project, name));
   const history = useWorkspace((s) => s.histories[name]);
-  if (!pou) return <p className="placeholder">{name} is no longer in this project.</p>;
-  if (pou.language !== "ld" || !history) {
-    return <p className="placeholder">The {LANGUAGE[pou.language]} editor is not built yet; {name} opens here once it is.</p>;
+  const project = useWorkspace((s) => s.name);
+  const unsaved = useWorkspace((s) => s.changed.includes(name));
+  const focus = usePanels((s) => (s.focus?.pou.toUpperCase() === name.toUpperCase() ? s.focus : null));
+  const [mode, setMode] = useState<PouMode>("body");
+  // A diagnostic clicked for this POU shows the part it is in.
+  useEffect(() => {
+    if (focus) setMode("body");
+  }, [focus]);
+  if (!pou || !project) return <p className="placeholder">{name} is no longer in this project.</p>;
+  const modes: { id: PouMode; label: string }[] = [
+    { id: "body", label: pou.language === "st" ? "Body" : "Diagram" },
+    ...(pou.language !== "st" ? [{ id: "st" as const, label: "View as ST" }] : []),
+  ];
+  let content;
+  if (mode === "st") {
+    content = <StView project={project} pou={name} unsaved={unsaved} onRevealNetwork={(network) => panelsStore.getState().reveal({ pou: name, network })} />;
+  } else if (pou.language === "ld" && history) {
+    content = <LdPouView pou={pou} history={history} />;
+  } else {
+    content = <p className="placeholder">The {LANGUAGE[pou.language]} editor is not built yet; {name} opens here once it is.</p>;
   }
-  return <LdPouView pou={pou} history={history} />;
+  return (
+    <div className="pou-view">
+      <div className="pou-modes" role="tablist" aria-label={`${name} views`}>
+        {modes.map((m) => (
+          <button key={m.id} type="button" role="tab" aria-selected={mode === m.id} onClick={() => setMode(m.id)}>
+            {m.label}
+          </button>
+        ))}
+      </div>
+      {content}
+    </div>
+  );
 }
 
 function ConflictDialog() {
@@ -276,7 +362,7 @@ export function WorkspaceView() {
       <ProjectTree />
       <div className="editor-area">
         <Tabs />
-        {active ? <PouView name={active} /> : <p className="placeholder">Open a POU from the project tree.</p>}
+        {active ? <PouView key={active} name={active} /> : <p className="placeholder">Open a POU from the project tree.</p>}
       </div>
       <BottomPanels onReveal={reveal} pathOfOperand={pathOfOperand} />
       <ConflictDialog />

@@ -38,6 +38,8 @@ export interface WorkspaceActions {
   closeTab(pou: string): void;
   setLdHistory(pou: string, history: History<LdBody>): void;
   declare(pou: string, declaration: VariableDeclaration): void;
+  /** Adds a new, empty POU to the working copy and opens it; an error message when the name is refused. */
+  addPou(name: string, kind: Pou["kind"], language: Pou["language"]): string | null;
   /** Saves the working copy; `overwrite` saves over the revision a conflict reported. */
   save(overwrite?: boolean): Promise<void>;
   /** Drops the working copy and loads the saved project. */
@@ -66,6 +68,7 @@ export const emptyWorkspace: WorkspaceData = {
   conflict: null,
 };
 
+const IDENTIFIER = /^[A-Za-z_][A-Za-z0-9_]{0,63}$/;
 const message = (err: unknown) => (err instanceof Error ? err.message : String(err));
 export const pouOf = (project: Project | null, name: string): Pou | undefined => project?.pous?.find((p) => p.name === name);
 const isLdBody = (body: Pou["body"]): body is LdBody => typeof body === "object" && body !== null && "networks" in body;
@@ -74,15 +77,17 @@ export const ldBodyOf = (pou: Pou): LdBody => (isLdBody(pou.body) ? pou.body : {
 export function createWorkspaceStore(api: ProjectApi = projectApi, storage: Storage = localStorage): StoreApi<WorkspaceState> {
   let openCall = 0;
   return createStore<WorkspaceState>()((set, get) => {
-    const replacePou = (pou: string, update: (p: Pou) => Pou) => {
+    const replacePous = (pou: string, update: (pous: Pou[]) => Pou[]) => {
       const { project, changed } = get();
       if (!project) return;
-      const next: Project = { ...project, pous: (project.pous ?? []).map((p) => (p.name === pou ? update(p) : p)) };
+      const next: Project = { ...project, pous: update(project.pous ?? []) };
       const nextChanged = changed.includes(pou) ? changed : [...changed, pou];
       set({ project: next, changed: nextChanged });
       const { revision, modified } = get();
       saveDraft({ base_revision: revision!, base_modified: modified!, saved_at: new Date().toISOString(), project: next, changed: nextChanged }, storage);
     };
+
+    const replacePou = (pou: string, update: (p: Pou) => Pou) => replacePous(pou, (pous) => pous.map((p) => (p.name === pou ? update(p) : p)));
 
     const loadSymbols = (pou: string) => {
       const name = get().name;
@@ -153,6 +158,23 @@ export function createWorkspaceStore(api: ProjectApi = projectApi, storage: Stor
         const table = get().symbols[pou] ?? { pou, symbols: [], globals: [], diagnostics: [] };
         const symbol: SymbolInfo = { name, type, var_class: "VAR", initial: null, address: null, comment: null, retain: false, constant: false };
         set({ symbols: { ...get().symbols, [pou]: { ...table, symbols: [...table.symbols, symbol] } } });
+      },
+
+      addPou(text, kind, language) {
+        const name = text.trim();
+        if (!IDENTIFIER.test(name)) return `${name || "An empty name"} is not an IEC identifier (letters, digits and _, not starting with a digit).`;
+        if (pouOf(get().project, name) || get().project?.pous?.some((p) => p.name.toUpperCase() === name.toUpperCase())) return `There is already a POU called ${name}.`;
+        const pou: Pou = {
+          name,
+          kind,
+          language,
+          declarations: kind === "function" ? "VAR_INPUT\nEND_VAR" : "VAR\nEND_VAR",
+          body: language === "st" ? "" : { networks: [] },
+          ...(kind === "function" ? { return_type: "BOOL" } : {}),
+        };
+        replacePous(name, (pous) => [...pous, pou]);
+        get().openPou(name);
+        return null;
       },
 
       async save(overwrite = false) {

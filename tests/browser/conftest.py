@@ -1,0 +1,94 @@
+"""A real ``ladderlab serve`` on a free port with a temporary workspace, and the system Chromium.
+
+Browser tests drive Debian's ``chromium`` through Playwright's ``executable_path`` (never a
+downloaded browser). They are skipped, with the reason, when chromium or Playwright is missing
+or the browser app has not been built (``make test`` builds it first).
+"""
+
+from __future__ import annotations
+
+import shutil
+import socket
+import subprocess
+import sys
+import time
+import urllib.request
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+
+from ladderlab.server.app import STATIC_DIR
+
+ARTIFACTS = Path(__file__).parent / "artifacts"
+
+
+def _free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def _wait_healthy(url: str, process: subprocess.Popen, timeout_s: float = 20) -> None:
+    deadline = time.monotonic() + timeout_s
+    while time.monotonic() < deadline:
+        if process.poll() is not None:
+            raise RuntimeError(f"ladderlab serve exited with {process.returncode}")
+        try:
+            with urllib.request.urlopen(f"{url}/api/health", timeout=1) as response:
+                if response.status == 200:
+                    return
+        except OSError:
+            time.sleep(0.1)
+    raise RuntimeError(f"ladderlab serve did not answer at {url} within {timeout_s} s")
+
+
+@pytest.fixture(scope="session")
+def chromium_path() -> str:
+    path = shutil.which("chromium") or shutil.which("chromium-browser")
+    if path is None:
+        pytest.skip("Debian's chromium is not installed (make test installs it)")
+    pytest.importorskip("playwright.sync_api", reason="playwright is not installed")
+    if not (STATIC_DIR / "index.html").is_file():
+        pytest.skip("the browser app is not built (make frontend)")
+    return path
+
+
+@pytest.fixture
+def server(tmp_path: Path, chromium_path: str) -> Iterator[str]:
+    """Base URL of a fresh server whose workspace is empty."""
+    port = _free_port()
+    log = (tmp_path / "server.log").open("w")
+    process = subprocess.Popen(
+        [sys.executable, "-c", "import sys; from ladderlab.cli import main; sys.exit(main())",
+         "serve", "--port", str(port), "--workspace", str(tmp_path / "workspace")],
+        stdout=log, stderr=subprocess.STDOUT,
+    )
+    url = f"http://127.0.0.1:{port}"
+    try:
+        _wait_healthy(url, process)
+        yield url
+    finally:
+        process.terminate()
+        try:
+            process.wait(timeout=10)
+        except subprocess.TimeoutExpired:
+            process.kill()
+        log.close()
+
+
+@pytest.fixture
+def page(server: str, chromium_path: str):
+    from playwright.sync_api import sync_playwright
+
+    ARTIFACTS.mkdir(exist_ok=True)
+    with sync_playwright() as playwright:
+        browser = playwright.chromium.launch(executable_path=chromium_path, args=["--no-sandbox"])
+        context = browser.new_context(viewport={"width": 1400, "height": 900})
+        page = context.new_page()
+        page.set_default_timeout(10_000)
+        try:
+            yield page
+        finally:
+            context.close()
+            browser.close()
