@@ -157,6 +157,29 @@ class ResetSimulation(BaseModel):
     cold: bool = False
 
 
+class SourceMapEntry(BaseModel):
+    """A line of exported ST (1-based) and the network / element it came from."""
+
+    line: int
+    network: str
+    element: str | None = None
+
+
+class StExport(BaseModel):
+    """``GET /api/projects/{name}/export/st``: the complete IEC text of a POU or the project, with its source map."""
+
+    text: str
+    source_map: list[SourceMapEntry] = Field(default_factory=list)
+    diagnostics: list[Diagnostic] = Field(default_factory=list)
+
+
+class ImportReport(BaseModel):
+    """``POST /api/import/plcopen``: the stored project and what the import had to say (warnings)."""
+
+    project: ProjectSummary
+    diagnostics: list[Diagnostic] = Field(default_factory=list)
+
+
 class ApiTypes(BaseModel):
     """Container so every API shape lands in one schema file (``api.schema.json``)."""
 
@@ -172,3 +195,5 @@ class ApiTypes(BaseModel):
     conflict_detail: ConflictDetail
     simulation_info: SimulationInfo
     reset_simulation: ResetSimulation
+    st_export: StExport
+    import_report: ImportReport

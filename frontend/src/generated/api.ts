@@ -9,6 +9,7 @@ export interface ApiTypes {
   conflict_detail: ConflictDetail;
   create_project: CreateProject;
   error_detail: ErrorDetail;
+  import_report: ImportReport;
   library_entry: LibraryEntry;
   project_document: ProjectDocument;
   project_summary: ProjectSummary;
@@ -16,6 +17,7 @@ export interface ApiTypes {
   reset_simulation: ResetSimulation;
   save_result: SaveResult;
   simulation_info: SimulationInfo;
+  st_export: StExport;
   symbol_table: SymbolTable;
 }
 /**
@@ -82,6 +84,28 @@ export interface CreateProject {
 export interface ErrorDetail {
   diagnostics?: Diagnostic[];
   message: string;
+}
+/**
+ * ``POST /api/import/plcopen``: the stored project and what the import had to say (warnings).
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "ImportReport".
+ */
+export interface ImportReport {
+  diagnostics?: Diagnostic[];
+  project: ProjectSummary;
+}
+/**
+ * One row of ``GET /api/projects``.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "ProjectSummary".
+ */
+export interface ProjectSummary {
+  modified: string;
+  name: string;
+  pou_count: number;
+  revision: string;
 }
 /**
  * One function or function block the box picker offers (EN/ENO are implicit on all of them).
@@ -452,18 +476,6 @@ export interface Task {
   programs?: string[];
 }
 /**
- * One row of ``GET /api/projects``.
- *
- * This interface was referenced by `ApiTypes`'s JSON-Schema
- * via the `definition` "ProjectSummary".
- */
-export interface ProjectSummary {
-  modified: string;
-  name: string;
-  pou_count: number;
-  revision: string;
-}
-/**
  * Body of ``POST /api/projects/{name}/rename``.
  *
  * This interface was referenced by `ApiTypes`'s JSON-Schema
@@ -540,6 +552,28 @@ export interface ScanTimes {
   last: number;
   max: number;
   min: number;
+}
+/**
+ * ``GET /api/projects/{name}/export/st``: the complete IEC text of a POU or the project, with its source map.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "StExport".
+ */
+export interface StExport {
+  diagnostics?: Diagnostic[];
+  source_map?: SourceMapEntry[];
+  text: string;
+}
+/**
+ * A line of exported ST (1-based) and the network / element it came from.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "SourceMapEntry".
+ */
+export interface SourceMapEntry {
+  element?: string | null;
+  line: number;
+  network: string;
 }
 /**
  * ``GET /api/projects/{name}/pous/{pou}/symbols``.
