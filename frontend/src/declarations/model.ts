@@ -7,6 +7,12 @@
 /** A block keyword with its qualifier, as the class column shows it: "VAR", "VAR_INPUT", "VAR CONSTANT", ... */
 export type VarClass = string;
 
+/** IEC elementary types and the standard FBs' type names are offered first by the type field. */
+export const ELEMENTARY_TYPES: readonly string[] = [
+  "BOOL", "SINT", "INT", "DINT", "LINT", "USINT", "UINT", "UDINT", "ULINT", "BYTE", "WORD", "DWORD", "LWORD",
+  "REAL", "LREAL", "TIME", "DATE", "TIME_OF_DAY", "DATE_AND_TIME", "STRING", "WSTRING", "CHAR", "WCHAR",
+];
+
 export const VAR_CLASSES: readonly VarClass[] = [
   "VAR",
   "VAR_INPUT",
@@ -157,7 +163,7 @@ export function printDeclarations(rows: readonly DeclRow[]): string {
   const out: string[] = [];
   const head = (r: DeclRow) => `${r.name}${r.address ? ` AT ${r.address}` : ""}`;
   const width = Math.max(0, ...rows.map((r) => head(r).length));
-  const lineOf = (r: DeclRow) => `${head(r).padEnd(width)} : ${r.type.trim() || "BOOL"}${r.initial.trim() ? ` := ${r.initial.trim()}` : ""};`;
+  const lineOf = (r: DeclRow) => `${head(r).padEnd(width)} : ${r.type.trim()}${r.initial.trim() ? ` := ${r.initial.trim()}` : ""};`;
   const codeWidth = Math.max(0, ...rows.map((r) => lineOf(r).length));
   rows.forEach((r, index) => {
     if (index === 0 || rows[index - 1]!.varClass !== r.varClass) {

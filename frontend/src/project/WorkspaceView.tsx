@@ -8,12 +8,14 @@ import type { LdBody, Pou } from "../generated/project";
 import { LdEditor } from "../ld/editor/LdEditor";
 import type { History } from "../ld/history";
 import { operandPath } from "../online/ldBinding";
-import { onlineStore } from "../online/store";
+import { onlineStore, useOnline } from "../online/store";
 import { SIMULATION_KEYS, SimulationBar } from "../online/SimulationBar";
 import { instanceOf, useLdOnline } from "../online/useLdOnline";
 import { BottomPanels } from "../panels/BottomPanels";
 import { focusOf, panelsStore, usePanels } from "../panels/store";
 import { StView } from "../stview/StView";
+import { DeclarationsEditor } from "../declarations/DeclarationsEditor";
+import { ELEMENTARY_TYPES, userTypeNames } from "../declarations/model";
 import { pouOf, useWorkspace, workspaceStore } from "./store";
 
 const KINDS: { kind: Pou["kind"]; title: string }[] = [
@@ -205,7 +207,30 @@ function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
   );
 }
 
-type PouMode = "body" | "st";
+type PouMode = "body" | "declarations" | "st";
+
+/** Declarations of one POU with the types to offer and the problems of its declaration text. */
+function PouDeclarations({ pou, readOnly, focus }: { pou: Pou; readOnly: string | null; focus: { line: number; seq: number } | null }) {
+  const setDeclarations = useWorkspace((s) => s.setDeclarations);
+  const library = useWorkspace((s) => s.library);
+  const userTypes = useWorkspace((s) => s.project?.types ?? "");
+  const table = useWorkspace((s) => s.symbols[pou.name]);
+  const checked = usePanels((s) => s.diagnostics) ?? NO_DIAGNOSTICS;
+  const file = `${pou.name}/declarations`.toUpperCase();
+  const diagnostics = useMemo(() => {
+    const all = [...(table?.diagnostics ?? []), ...checked].filter((d) => d.file?.toUpperCase() === file);
+    const seen = new Set<string>();
+    return all.filter((d) => {
+      const key = `${d.line}:${d.column}:${d.code}:${d.message}`;
+      return seen.has(key) ? false : (seen.add(key), true);
+    });
+  }, [table, checked, file]);
+  const types = useMemo(
+    () => [...new Set([...ELEMENTARY_TYPES, ...userTypeNames(userTypes), ...library.filter((e) => e.kind === "function_block").map((e) => e.name)])],
+    [userTypes, library],
+  );
+  return <DeclarationsEditor text={pou.declarations ?? ""} onChange={(text) => setDeclarations(pou.name, text)} diagnostics={diagnostics} types={types} focus={focus} readOnly={readOnly} />;
+}
 
 function PouView({ name }: { name: string }) {
   const pou = useWorkspace((s) => pouOf(s.project, name));
@@ -214,17 +239,22 @@ function PouView({ name }: { name: string }) {
   const unsaved = useWorkspace((s) => s.changed.includes(name));
   const focus = usePanels((s) => (s.focus?.pou.toUpperCase() === name.toUpperCase() ? s.focus : null));
   const [mode, setMode] = useState<PouMode>("body");
+  const phase = useOnline((s) => s.phase);
   // A diagnostic clicked for this POU shows the part it is in.
   useEffect(() => {
-    if (focus) setMode("body");
+    if (focus) setMode(focus.part === "declarations" ? "declarations" : "body");
   }, [focus]);
   if (!pou || !project) return <p className="placeholder">{name} is no longer in this project.</p>;
   const modes: { id: PouMode; label: string }[] = [
     { id: "body", label: pou.language === "st" ? "Body" : "Diagram" },
+    { id: "declarations", label: "Declarations" },
     ...(pou.language !== "st" ? [{ id: "st" as const, label: "View as ST" }] : []),
   ];
   let content;
-  if (mode === "st") {
+  if (mode === "declarations") {
+    const readOnly = phase === "offline" ? null : "Online: go offline to edit.";
+    content = <PouDeclarations pou={pou} readOnly={readOnly} focus={focus?.part === "declarations" && focus.line != null ? { line: focus.line, seq: focus.seq } : null} />;
+  } else if (mode === "st") {
     content = <StView project={project} pou={name} unsaved={unsaved} onRevealNetwork={(network) => panelsStore.getState().reveal({ pou: name, network })} />;
   } else if (pou.language === "ld" && history) {
     content = <LdPouView pou={pou} history={history} />;

@@ -38,6 +38,8 @@ export interface WorkspaceActions {
   closeTab(pou: string): void;
   setLdHistory(pou: string, history: History<LdBody>): void;
   declare(pou: string, declaration: VariableDeclaration): void;
+  /** Replaces the declaration text of a POU (the declarations table and text view). */
+  setDeclarations(pou: string, text: string): void;
   /** Adds a new, empty POU to the working copy and opens it; an error message when the name is refused. */
   addPou(name: string, kind: Pou["kind"], language: Pou["language"]): string | null;
   /** Saves the working copy; `overwrite` saves over the revision a conflict reported. */
@@ -158,6 +160,11 @@ export function createWorkspaceStore(api: ProjectApi = projectApi, storage: Stor
         const table = get().symbols[pou] ?? { pou, symbols: [], globals: [], diagnostics: [] };
         const symbol: SymbolInfo = { name, type, var_class: "VAR", initial: null, address: null, comment: null, retain: false, constant: false };
         set({ symbols: { ...get().symbols, [pou]: { ...table, symbols: [...table.symbols, symbol] } } });
+      },
+
+      setDeclarations(pou, text) {
+        if (pouOf(get().project, pou)?.declarations === text) return;
+        replacePou(pou, (p) => ({ ...p, declarations: text }));
       },
 
       addPou(text, kind, language) {
