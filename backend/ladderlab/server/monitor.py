@@ -65,7 +65,8 @@ async def monitor(websocket: WebSocket, sim_id: str) -> None:
     try:
         entry = registry.get(sim_id)
     except ApiError as error:
-        await websocket.send_text(m.Error(type="error", code="bad_path", message=error.detail.message).model_dump_json())
+        refusal = m.Error(type="error", code="bad_path", message=error.detail.message)
+        await websocket.send_text(refusal.model_dump_json())
         await websocket.close(code=CLOSE_NO_SIMULATION, reason="no such simulation")
         return
     if not registry.attach(entry):
@@ -284,8 +285,8 @@ class MonitorClient:
         while self.outbox or self.status is not None:
             if self.dropped:
                 count, self.dropped = self.dropped, 0
-                await self._send(m.Log(type="log", level="warning", message=f"{count} messages were dropped: this connection "
-                                                                 "did not keep up"))
+                await self._send(m.Log(type="log", level="warning",
+                                       message=f"{count} messages were dropped: this connection did not keep up"))
             if self.outbox:
                 await self._send(self.outbox.popleft())
             else:

@@ -201,8 +201,9 @@ class SimRunner:
                         delay = self._pacer.poll()
                     except Exception as error:  # noqa: BLE001 - a bug must not kill the thread silently
                         log.exception("simulation thread failed")
-                        self._running = False
-                        self._emit(Log(type="log", level="error", message=f"internal error, simulation stopped: {error!r}"))
+                        self._set_running(False)
+                        self._emit(Log(type="log", level="error",
+                                       message=f"internal error, simulation stopped: {error!r}"))
                     self._settle()
                 if not self._woken:
                     self._wake.wait(delay)
@@ -253,8 +254,8 @@ class SimRunner:
             self._emit(Status(type="status", state=state, at=status[1]))  # type: ignore[arg-type]
 
     def _fault_log(self, fault: Fault) -> Log:
-        return Log(type="log", level="error", message=fault.text(), at=at_origin(fault.origin, fault.pou, fault.instance),
-                   scan=fault.scan, time_ms=fault.time_ms)
+        return Log(type="log", level="error", message=fault.text(),
+                   at=at_origin(fault.origin, fault.pou, fault.instance), scan=fault.scan, time_ms=fault.time_ms)
 
     def _publish(self, now: float) -> None:
         self._last_publish = now
@@ -382,7 +383,8 @@ class SimRunner:
 
         def action() -> None:
             self._coerced(self.sim.force, path, value)
-            self._emit(Log(type="log", level="info", message=f"forced {location.path} := {_text(self.sim.read(path))}",
+            self._emit(Log(type="log", level="info",
+                           message=f"forced {location.path} := {_text(self.sim.read(path))}",
                            scan=self.sim.scan_count, time_ms=self.sim.time_ms))
         self._command(action)
 
@@ -443,7 +445,8 @@ class SimRunner:
     def _check_elements(self, instance: str, ids: list[str]) -> None:
         """Every id must be a probed element (or pin, ``box.Q``) of the instance's POU."""
         pou = self._pou_of(instance)
-        known = {p.element for p in self.sim.debugger.pause_points(pou) if p.kind == "element"}  # type: ignore[union-attr]
+        points = self.sim.debugger.pause_points(pou)  # type: ignore[union-attr]
+        known = {p.element for p in points if p.kind == "element"}
         unknown = [element for element in ids if element not in known]
         if unknown:
             listed = ", ".join(sorted(known)[:30]) or "none: it is not a ladder or FBD POU"
