@@ -5,7 +5,7 @@ contact's power flow into a hidden BOOL slot, a coil reading the last one,
 probes per element (dropped by the fast variant); every fourth network also
 has a TON, a CTU fed by the timer, an ADD and a compare. Targets (issue 4):
 <= 5 ms per scan and <= 3 s build (IR -> runnable) on the 2-core dev machine.
-Prints one line per figure.
+Prints one line per figure; wall and CPU time, as the CPU time is what a busy machine does not inflate.
 """
 
 from __future__ import annotations
@@ -68,18 +68,21 @@ def ld_program(networks: int) -> ir.Program:
 def main() -> None:
     networks = 10_000
     program = ld_program(networks)
-    start = time.perf_counter()
+    start, cpu = time.perf_counter(), time.process_time()
     compiled = compile_program(program, "fast")
     sim = Simulation(compiled)
-    build = time.perf_counter() - start
-    print(f"build {networks} LD networks (IR -> runnable, fast variant): {build:.2f} s (target <= 3 s)")
+    build, build_cpu = time.perf_counter() - start, time.process_time() - cpu
+    print(f"build {networks} LD networks (IR -> runnable, fast variant): {build:.2f} s wall, {build_cpu:.2f} s CPU "
+          f"(target <= 3 s)")
     sim.cycle(20)  # warm up the interpreter's specialisation
-    samples = []
+    samples, cpu_samples = [], []
     for _ in range(15):
-        before = time.perf_counter()
+        before, cpu = time.perf_counter(), time.process_time()
         sim.cycle(10)
         samples.append((time.perf_counter() - before) / 10 * 1e6)
-    print(f"scan {networks} LD networks, fast variant: {statistics.median(samples):.0f} us per scan (target <= 5000 us)")
+        cpu_samples.append((time.process_time() - cpu) / 10 * 1e6)
+    print(f"scan {networks} LD networks, fast variant: {statistics.median(samples):.0f} us per scan wall, "
+          f"{statistics.median(cpu_samples):.0f} us CPU (target <= 5000 us)")
     start = time.perf_counter()
     debug = Simulation(program, variant="debug")
     print(f"build {networks} LD networks, debug variant: {time.perf_counter() - start:.2f} s")

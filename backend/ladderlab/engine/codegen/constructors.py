@@ -29,11 +29,11 @@ def construct(ty: t.IrType, initial: object, module: ModuleContext) -> str:
         return _with(f"{module.struct_class(ty)}()", overrides)
     if isinstance(ty, t.FbInstance):
         return _instance(ty, initial, module)
-    if initial is None:
-        return literal(scalar_default(ty))
+    if not isinstance(ty, (t.Elementary, t.Subrange, t.Enum)):
+        raise CodegenError(f"unknown type {ty!r}")
     try:
-        return literal(store_value(initial, ty))
-    except ValueError as error:
+        return literal(scalar_default(ty) if initial is None else store_value(initial, ty))
+    except (ValueError, KeyError) as error:
         raise CodegenError(f"initial value: {error}") from None
 
 

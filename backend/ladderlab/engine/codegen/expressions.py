@@ -236,7 +236,12 @@ class Expressions:
         return std_pin_type(ty.fb, member)  # type: ignore[return-value]
 
     def scalar(self, ty: t.IrType, what: str) -> str:
-        name = runtime_name(ty)
+        """The runtime type name of a non-composite type; CodegenError for composites and unknown names."""
+        name = runtime_name(ty) if isinstance(ty, (t.Elementary, t.Subrange, t.Enum)) else None
         if name is None:
-            raise CodegenError(f"{what} on a value of type {describe(ty)}")
+            raise CodegenError(f"{what} on a value of type {describe(ty) if is_composite(ty) else repr(ty)}")
+        try:
+            values.resolve(name)
+        except ValueError as error:
+            raise CodegenError(str(error)) from None
         return name

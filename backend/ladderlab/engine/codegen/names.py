@@ -34,11 +34,12 @@ _ALNUM = re.compile(r"[A-Z0-9]")
 def escape(name: str) -> str:
     """``name`` upper-cased if it is a plain identifier, else the injective escape (starting with ``w``)."""
     upper = name.upper()
-    if upper and _PLAIN.match(upper) and upper.isascii():
+    if upper.isascii() and _PLAIN.match(upper):
         return upper
     return "w" + "".join(c if _ALNUM.match(c) and c.isascii() else f"_{ord(c):06X}" for c in upper)
 
 
+@lru_cache(maxsize=None)
 def slot(name: str) -> str:
     """Attribute / local name of a variable slot or structure field."""
     return "v_" + escape(name)

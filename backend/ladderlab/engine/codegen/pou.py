@@ -28,16 +28,14 @@ def _user_fb(module: ModuleContext, ty: t.IrType) -> bool:
     return isinstance(ty, t.FbInstance) and module.user_fb(ty.fb) is not None
 
 
-def _init_lines(module: ModuleContext, slot: ir.Slot, target: str, pou: str) -> list[str]:
-    """Lines (re)initialising one slot: ``target`` is its attribute source."""
+def _init_value(module: ModuleContext, slot: ir.Slot, pou: str) -> str | None:
+    """Source of a slot's fresh initial value (a reference cell for a VAR_IN_OUT); None after a diagnostic."""
     try:
         value = construct(slot.type, slot.initial, module)
     except CodegenError as error:
         module.diagnostics.append(diagnostic(f"{slot.name}: {error}", ir.Origin(pou)))
-        return []
-    if slot.var_class == "VAR_IN_OUT":
-        return [f"{target} = ll_ref({value})"]
-    return [f"{target} = {value}"]
+        return None
+    return f"ll_ref({value})" if slot.var_class == "VAR_IN_OUT" else value
 
 
 def emit_instance_class(module: ModuleContext, pou: ir.Pou, src: Source) -> None:
@@ -103,8 +101,8 @@ def emit_inits(module: ModuleContext, places: list, target, owner: str, src: Sou
             src.line(f"{target(place)}.ll_init(True)")
         src.line("else:")
         with src.indent():
-            for line in _init_lines(module, place.slot, target(place), owner) or ["pass"]:
-                src.line(line)
+            value = _init_value(module, place.slot, owner)
+            src.line(f"{target(place)} = {value}" if value is not None else "pass")
     _plain_inits(module, fresh, target, owner, src)
     if len(src.lines) == before:
         src.line("pass")
@@ -116,24 +114,21 @@ _CHAIN = 8  # targets per chained assignment
 def _plain_inits(module: ModuleContext, places: list, target, owner: str, src: Source) -> None:
     """Initialise slots; consecutive slots with one immutable literal value share a chained assignment."""
     chain: list[str] = []
-    value = ""
+    shared = ""
     for place in places:
-        lines = _init_lines(module, place.slot, target(place), owner)
-        left, right = lines[0].split(" = ", 1) if len(lines) == 1 else ("", "")
-        if right and place.slot.var_class != "VAR_IN_OUT" and _immutable(right):
-            if chain and (right != value or len(chain) == _CHAIN):
-                src.line(" = ".join(chain) + f" = {value}")
-                chain = []
-            chain.append(left)
-            value = right
+        value = _init_value(module, place.slot, owner)
+        if value is None:
             continue
-        if chain:
-            src.line(" = ".join(chain) + f" = {value}")
+        if chain and (value != shared or len(chain) == _CHAIN or not _immutable(value)):
+            src.line(" = ".join(chain) + f" = {shared}")
             chain = []
-        for line in lines:
-            src.line(line)
+        if _immutable(value):
+            chain.append(target(place))
+            shared = value
+        else:
+            src.line(f"{target(place)} = {value}")
     if chain:
-        src.line(" = ".join(chain) + f" = {value}")
+        src.line(" = ".join(chain) + f" = {shared}")
 
 
 def _immutable(value: str) -> bool:
@@ -162,8 +157,9 @@ def _emit_execute(module: ModuleContext, pou: ir.Pou, scope: Scope, src: Source)
                 if place.page and place.page not in scope.pages_used:
                     src.line(f"ll_p{place.page} = self.ll_p{place.page}")
                     scope.pages_used.add(place.page)
-                for line in _init_lines(module, slot, _target(place), pou.name):
-                    src.line(line)
+                value = _init_value(module, slot, pou.name)
+                if value is not None:
+                    src.line(f"{_target(place)} = {value}")
         if module.debug:
             src.line("ll_pr = self.ll_probes")
         src.extend(body)

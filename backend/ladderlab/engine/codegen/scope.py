@@ -35,6 +35,7 @@ class Scope:
         self.boxed: set[str] = set()
         self.pages_used: set[int] = set()
         self._temps = 0
+        self._roots: dict[tuple[str, str], tuple[str, t.IrType]] = {}
 
     def temp(self, prefix: str) -> str:
         self._temps += 1
@@ -61,6 +62,13 @@ class Scope:
 
     def root(self, var: ir.Var) -> tuple[str, t.IrType]:
         """Source reading (and assignable as) the root slot of ``var``, and the slot's type."""
+        key = (var.scope, var.name)
+        found = self._roots.get(key)
+        if found is None:  # (a page it needs is already in pages_used: the scope is the cache's lifetime)
+            found = self._roots[key] = self._root(var)
+        return found
+
+    def _root(self, var: ir.Var) -> tuple[str, t.IrType]:
         slot = self.slot(var)
         attr = names.slot(slot.name)
         if var.scope == "global":

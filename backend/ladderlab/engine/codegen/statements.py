@@ -18,10 +18,10 @@ from . import names
 from .context import CodegenError, diagnostic, std_fb_class, std_pin_type
 from .expressions import Expressions, literal
 from .mentions import walk
+from ..values import store_expr
 from .runtime import WATCHDOG_EVERY
 from .scope import Scope
 from .source import Source
-from ..values import store_expr
 from .typeinfo import describe, is_composite, runtime_name, store_code
 
 
@@ -84,14 +84,12 @@ class Statements:
             with self.src.at(self.module.origin(origin)):
                 self.pause("network" if origin.network is not None else "entry", origin)
         self.statements(block.statements)
-        if not block.statements and not self.module.debug:
-            self.src.line("pass")
 
     def statements(self, statements: list[ir.Stmt]) -> None:
         before = len(self.src.lines)
         for s in statements:
             self.statement(s)
-        if len(self.src.lines) == before or all(not l.strip() or l.strip().startswith("#") for l in self.src.lines[before:]):
+        if all(line.lstrip().startswith("#") for line in self.src.lines[before:]):  # nothing but comments, or nothing
             self.src.line("pass")
 
     def pause(self, kind: str, origin: ir.Origin, element: str | None = None) -> None:
@@ -106,15 +104,20 @@ class Statements:
             self._line = origin.line
             self.src.line(f"# line {origin.line}")
         oid = self.module.origin(origin, s)
-        mark = len(self.src.lines)
+        mark, saved = len(self.src.lines), self.src.origin
+        self.src.origin = oid  # (not Source.at: this runs once per statement of 10,000-network programs)
         try:
-            with self.src.at(oid):
-                if self.module.debug and origin.line is not None and not isinstance(s, ir.Probe):
-                    self.pause("statement", origin)
-                getattr(self, "_" + type(s).__name__.lower())(s, oid)
+            if self.module.debug and origin.line is not None and not isinstance(s, ir.Probe):
+                self.pause("statement", origin)
+            handler = self._HANDLERS.get(type(s))
+            if handler is None:
+                raise CodegenError(f"unknown statement {type(s).__name__}")
+            handler(self, s, oid)
         except CodegenError as error:
             del self.src.lines[mark:], self.src.line_origins[mark:]
             self._report(str(error), origin)
+        finally:
+            self.src.origin = saved
 
     def _report(self, message: str, origin: ir.Origin) -> None:
         self.module.diagnostics.append(diagnostic(message, origin))
@@ -239,11 +242,11 @@ class Statements:
         self.src.line(self.scope.return_statement())
 
     def _jump(self, s: ir.Jump, oid: int) -> None:
-        if self.segments is None or s.label.upper() not in (self.segments or {}):
+        if s.label.upper() not in (self.segments or {}):
             raise CodegenError(f"jump to unknown label {s.label}")
         if self.loops:
             raise CodegenError("a jump cannot leave a loop")
-        target = self.segments[s.label.upper()]
+        target = self.segments[s.label.upper()]  # type: ignore[index]
         if s.cond is not None:
             self.src.line(f"if {self.x.expr(s.cond)}:")
         with self.src.indent() if s.cond is not None else nullcontext():
@@ -348,3 +351,6 @@ class Statements:
 
         self._guarded(s.en, s.eno, emit)
 
+    _HANDLERS = {ir.Assign: _assign, ir.If: _if, ir.Case: _case, ir.For: _for, ir.While: _while,
+                 ir.Repeat: _repeat, ir.Exit: _exit, ir.Return: _return, ir.Jump: _jump, ir.Probe: _probe,
+                 ir.FbCall: _fbcall, ir.FnCall: _fncall}
