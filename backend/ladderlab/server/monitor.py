@@ -123,7 +123,11 @@ class MonitorClient:
             self.loop.call_soon_threadsafe(self._enqueue, message)
 
     def frame(self) -> None:
-        self.loop.call_soon_threadsafe(self._on_frame)
+        # Most clients are waiting for their interval, not for a frame: wake only those that are
+        # (no syscall per client per frame). A client that starts waiting just after this check
+        # sees the new frame itself (``_sleep`` looks again), as the frame is set before the call.
+        if self.waiting_frame:
+            self.loop.call_soon_threadsafe(self._on_frame)
 
     def closed(self) -> None:
         self.loop.call_soon_threadsafe(self._on_closed)
@@ -271,6 +275,8 @@ class MonitorClient:
         if self.outbox or self.status is not None or self.ending:
             return
         timeout: float | None = None
+        if self.waiting_frame and self.runner.frame.seq != self.sent_seq:
+            return
         if self.watch is not None and not self.waiting_frame:
             timeout = self.next_due - self.loop.time()
             if timeout <= 0:
