@@ -3,12 +3,15 @@
 from __future__ import annotations
 
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 from ladderlab.engine.simulation import Simulation
 from ladderlab.ir import nodes as ir
 from ladderlab.ir import types as t
 
-from .irbuild import (BOOL, DINT, INT, REAL, TIME, UDINT, USINT, add, array, assign, binop, c, call, case, eq,
+from .helpers import reference_wrap
+from .irbuild import (BOOL, T, DINT, INT, REAL, TIME, UDINT, USINT, add, array, assign, binop, c, call, case, eq,
                       exit_, fb, fbcall, fncall, for_, function, g, gt, if_, ix, jump, lt, m, mul, network, pou, prog,
                       repeat, ret, slot, struct, sub, trace, v, while_)
 
@@ -397,3 +400,20 @@ def test_subrange_stores_are_checked():
     assert trace(sim, ["MAIN.X"], 2) == [(40,), (80,)]
     sim.cycle()
     assert sim.fault.code == "subrange_violation" and sim.read("MAIN.X") == 80
+
+
+@given(st.integers(-128, 127), st.integers(-128, 127), st.integers(-128, 127).filter(bool))
+def test_for_loops_match_the_st70_model(start, end, step):
+    """ST-70/71 as a model: test before each iteration, end and step read once, afterwards last + step (wrapped)."""
+    sint = T["SINT"]
+    i, n, total = v("I", sint), v("N", DINT), v("TOTAL", DINT)
+    body = [for_(i, c(start, sint), c(end, sint),
+                  [assign(n, add(n, c(1, DINT))), assign(total, add(total, ir.Convert(i, sint, DINT)))],
+                  step=c(step, sint))]
+    program = prog(pou("MAIN", [slot("I", sint), slot("N", DINT), slot("TOTAL", DINT)], body))
+    visited, value = [], start
+    while (value <= end) if step > 0 else (value >= end):
+        visited.append(value)
+        value += step
+    after = reference_wrap(value, "SINT") if visited else start
+    assert run(program, ["MAIN.N", "MAIN.TOTAL", "MAIN.I"]) == [(len(visited), sum(visited), after)]

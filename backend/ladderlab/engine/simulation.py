@@ -148,6 +148,7 @@ class Simulation:
         for task in self._tasks:
             task.stopped = False
         self._initialise(warm=not cold)
+        self._apply_forces()
 
     # ------------------------------------------------------------------ running
 
