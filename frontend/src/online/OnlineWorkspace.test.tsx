@@ -1,0 +1,198 @@
+// The app with online mode, the bottom panels and the ST view, over a faked server and websocket.
+import { act, fireEvent, render, screen, waitFor, within } from "@testing-library/react";
+import { beforeEach, describe, expect, it, vi } from "vitest";
+import App from "../App";
+import type { Diagnostic, SymbolInfo } from "../generated/api";
+import { motorMain } from "../ld/fixtures";
+import { emptyPanels, panelsStore } from "../panels/store";
+import { emptyWorkspace, workspaceStore } from "../project/store";
+import { appStore, initialData } from "../store";
+import { offline, onlineStore } from "./store";
+
+const json = (body: unknown, status = 200) => new Response(JSON.stringify(body), { status, headers: { "Content-Type": "application/json" } });
+const sym = (name: string, type = "BOOL"): SymbolInfo => ({ name, type, var_class: "VAR", initial: null, address: null, comment: null, retain: false, constant: false });
+const project = {
+  name: "plant",
+  pous: [{ name: "Main", kind: "program", language: "ld", declarations: "VAR\n    Start : BOOL;\n    Stop : BOOL;\n    Motor : BOOL;\nEND_VAR", body: motorMain }],
+};
+const simulation = { id: "s1", project: "plant", revision: "r1", state: "stopped", scan_count: 0, time_ms: 0, real_time_ms: 0, scan_ms: { min: 0, avg: 0, max: 0, last: 0 }, overruns: 0, fault: null, clients: 0, created: "2024-05-01T10:00:00Z" };
+
+class FakeSocket {
+  static all: FakeSocket[] = [];
+  readyState = 0;
+  sent: Record<string, unknown>[] = [];
+  onopen: ((e: Event) => void) | null = null;
+  onmessage: ((e: MessageEvent) => void) | null = null;
+  onclose: ((e: CloseEvent) => void) | null = null;
+  closed = false;
+  constructor(readonly url: string) {
+    FakeSocket.all.push(this);
+  }
+  send(data: string) {
+    this.sent.push(JSON.parse(data) as Record<string, unknown>);
+  }
+  close() {
+    this.closed = true;
+  }
+  open() {
+    act(() => {
+      this.readyState = 1;
+      this.onopen?.(new Event("open"));
+    });
+  }
+  receive(msg: unknown) {
+    act(() => this.onmessage?.({ data: JSON.stringify(msg) } as MessageEvent));
+  }
+}
+
+function serve(routes: Record<string, (init?: RequestInit) => Response> = {}) {
+  const fetchMock = vi.fn(async (input: RequestInfo | URL, init?: RequestInit) => {
+    const url = String(input);
+    const key = `${init?.method ?? "GET"} ${url}`;
+    if (routes[key]) return routes[key]!(init);
+    if (url === "/api/health") return json({ status: "ok", version: "0.1.0" });
+    if (url === "/api/projects") return json([{ name: "plant", revision: "r1", modified: "2024-05-01T10:00:00Z", pou_count: 1 }]);
+    if (url === "/api/projects/plant") return json({ name: "plant", revision: "r1", modified: "2024-05-01T10:00:00Z", project });
+    if (url.startsWith("/api/library")) return json([]);
+    if (url.endsWith("/symbols")) return json({ pou: "Main", symbols: [sym("Start"), sym("Stop"), sym("Motor")], globals: [], diagnostics: [] });
+    if (key === "POST /api/projects/plant/simulations") return json(simulation, 201);
+    if (url.startsWith("/api/simulations/s1")) return init?.method === "DELETE" ? new Response(null, { status: 204 }) : json(simulation);
+    throw new Error(`unexpected fetch ${key}`);
+  });
+  vi.stubGlobal("fetch", fetchMock);
+  return fetchMock;
+}
+
+beforeEach(() => {
+  localStorage.clear();
+  FakeSocket.all = [];
+  vi.stubGlobal("WebSocket", FakeSocket);
+  appStore.setState(initialData);
+  workspaceStore.setState(emptyWorkspace);
+  onlineStore.setState({ ...offline, watch: [] });
+  panelsStore.setState(emptyPanels);
+});
+
+async function openMain() {
+  render(<App />);
+  fireEvent.click(await screen.findByRole("button", { name: /plant/ }));
+  const tree = await screen.findByRole("navigation", { name: "Project tree" });
+  fireEvent.click(within(tree).getByRole("button", { name: /Main/ }));
+  await waitFor(() => expect(workspaceStore.getState().symbols.Main).toBeDefined());
+  return screen.getByRole("application", { name: "Ladder diagram editor" });
+}
+
+const element = (editor: HTMLElement, id: string) => editor.querySelector(`[data-id="${id}"]`)!;
+
+describe("online LD in the app (issue 7 online mode)", () => {
+  it("compiles, subscribes the diagram, colours from the engine, toggles, watches by drag and goes offline", async () => {
+    const fetchMock = serve();
+    const editor = await openMain();
+    fireEvent.click(screen.getByRole("button", { name: "Compile & simulate" }));
+    await waitFor(() => expect(FakeSocket.all).toHaveLength(1));
+    const socket = FakeSocket.all[0]!;
+    expect(socket.url).toMatch(/\/api\/simulations\/s1\/ws$/);
+    socket.open();
+    const subscribe = socket.sent.find((m) => m.type === "subscribe")!;
+    expect(subscribe.paths).toEqual(expect.arrayContaining(["MAIN.START", "MAIN.STOP", "MAIN.MOTOR"]));
+    expect(subscribe.elements).toEqual([{ pou_instance: "MAIN", ids: expect.arrayContaining(["start", "seal", "stop", "motor"]) }]);
+
+    // Online: editing is off with a way back; the state is shown.
+    expect(screen.getByRole("button", { name: "Go offline to edit" })).toBeTruthy();
+    expect((screen.getByRole("button", { name: "Contact" }) as HTMLButtonElement).disabled).toBe(true);
+    socket.receive({ type: "status", state: "running" });
+    expect(screen.getByRole("status", { name: "Online state" }).textContent).toBe("Online · running");
+
+    socket.receive({
+      type: "values",
+      scan: 42,
+      time_ms: 420,
+      changed: { "MAIN.START": true, "MAIN.STOP": false, "MAIN.MOTOR": true },
+      forced: ["MAIN.STOP"],
+      power: { "MAIN/start": true, "MAIN/seal": true, "MAIN/stop": true, "MAIN/motor": true, "MAIN/ton": null },
+    });
+    expect(element(editor, "motor").getAttribute("class")).toContain("ld-on");
+    expect(element(editor, "ton").getAttribute("class")).toContain("ld-not-executed");
+    expect(element(editor, "stop").querySelector(".ld-forced")).not.toBeNull();
+    expect(screen.getByTestId("scan-count").textContent).toBe("42");
+    expect(screen.getByText("0:00:00.420")).toBeTruthy();
+
+    // Double-click toggles Start (TRUE now): a write of FALSE.
+    fireEvent.doubleClick(element(editor, "start"));
+    expect(socket.sent.at(-1)).toEqual({ type: "write", path: "MAIN.START", value: false });
+
+    // Drag Motor from the diagram onto the panels: it joins the watch list with its value.
+    fireEvent.mouseDown(element(editor, "motor").querySelector(".ld-hit")!);
+    fireEvent.mouseUp(screen.getByRole("region", { name: "Panels" }));
+    expect(screen.getByLabelText("Value of MAIN.MOTOR").textContent).toBe("TRUE");
+
+    // Write and force from the watch list.
+    fireEvent.change(screen.getByLabelText("New value for MAIN.MOTOR"), { target: { value: "false" } });
+    fireEvent.click(screen.getByRole("button", { name: "Force" }));
+    expect(socket.sent.at(-1)).toEqual({ type: "force", path: "MAIN.MOTOR", value: false });
+
+    socket.receive({ type: "log", level: "info", message: "forced MAIN.MOTOR := FALSE", scan: 43 });
+    fireEvent.click(screen.getByRole("tab", { name: "Online log (1)" }));
+    expect(screen.getByRole("list", { name: "Online log" }).textContent).toContain("forced MAIN.MOTOR := FALSE");
+
+    fireEvent.click(screen.getByRole("button", { name: "Go offline to edit" }));
+    await waitFor(() => expect(fetchMock.mock.calls.some(([url, init]) => url === "/api/simulations/s1" && init?.method === "DELETE")).toBe(true));
+    expect(socket.closed).toBe(true);
+    expect((screen.getByRole("button", { name: "Contact" }) as HTMLButtonElement).disabled).toBe(false);
+    expect(element(editor, "motor").getAttribute("class")).not.toContain("ld-on");
+  });
+
+  it("shows a refused compile's diagnostics in the Diagnostics panel", async () => {
+    const diagnostics: Diagnostic[] = [{ severity: "error", code: "ST-UNKNOWN-VAR", message: "unknown variable 'Lamp'", pou: "Main", network: "lamp", element: "lamp_coil" }];
+    serve({ "POST /api/projects/plant/simulations": () => json({ detail: { message: "project 'plant' does not compile", diagnostics } }, 422) });
+    await openMain();
+    fireEvent.click(screen.getByRole("button", { name: "Compile & simulate" }));
+    const list = await screen.findByRole("list", { name: "Diagnostics" });
+    expect(list.textContent).toContain("unknown variable 'Lamp'");
+    expect(screen.getByText("project 'plant' does not compile")).toBeTruthy();
+    expect(FakeSocket.all).toHaveLength(0);
+  });
+});
+
+describe("Check and the Diagnostics panel", () => {
+  it("lists the check's diagnostics and a click reveals the element, or the declaration row", async () => {
+    const diagnostics: Diagnostic[] = [
+      { severity: "warning", code: "LD-X", message: "coil without effect", pou: "Main", network: "lamp", element: "lamp_coil" },
+      { severity: "error", code: "ST-UNKNOWN-TYPE", message: "unknown type 'NOPE'", file: "Main/declarations", pou: "Main", line: 3, column: 12 },
+    ];
+    serve({ "POST /api/projects/plant/check": () => json({ diagnostics }) });
+    const editor = await openMain();
+    fireEvent.click(screen.getByRole("button", { name: "Check" }));
+    const list = await screen.findByRole("list", { name: "Diagnostics" });
+    const items = within(list).getAllByRole("button");
+    expect(items.map((b) => b.textContent)).toEqual(["errorMain, declarations, line 3:12unknown type 'NOPE'ST-UNKNOWN-TYPE", "warningMain, network lamp, element lamp_coilcoil without effectLD-X"]);
+    expect(element(editor, "lamp_coil").getAttribute("class")).toContain("ld-has-diagnostic");
+
+    fireEvent.click(items[1]!);
+    expect(element(editor, "lamp_coil").getAttribute("class")).toContain("ld-selected");
+
+    fireEvent.click(items[0]!);
+    const row = (screen.getByLabelText("Name of Stop") as HTMLInputElement).closest("tr")!;
+    expect(row.className).toContain("focused");
+    expect(within(row).getByRole("alert").textContent).toBe("unknown type 'NOPE'");
+  });
+});
+
+describe("View as ST", () => {
+  it("shows the export highlighted, links network blocks to the diagram and offers the download", async () => {
+    const text = "PROGRAM Main\nVAR\n    Start : BOOL;\nEND_VAR\n(* Network 1 (seal_in) *)\nMotor := (Start OR Motor) AND NOT Stop;\nEND_PROGRAM\n";
+    serve({ "GET /api/projects/plant/export/st?pou=Main": () => json({ text, source_map: [{ line: 5, network: "seal_in", element: null }, { line: 6, network: "seal_in", element: "motor" }] }) });
+    await openMain();
+    fireEvent.click(screen.getByRole("tab", { name: "View as ST" }));
+    const code = await screen.findByLabelText("Exported ST");
+    expect(code.textContent).toContain("Motor := (Start OR Motor) AND NOT Stop;");
+    expect(within(code).getAllByText("AND")[0]!.className).toBe("st-keyword");
+    const block = code.querySelector('[data-network="seal_in"]')!;
+    expect(block.textContent).toBe("5(* Network 1 (seal_in) *)6Motor := (Start OR Motor) AND NOT Stop;");
+    expect((screen.getByRole("button", { name: "Download Main.st" }) as HTMLButtonElement).disabled).toBe(false);
+
+    fireEvent.click(block);
+    const editor = screen.getByRole("application", { name: "Ladder diagram editor" });
+    expect(editor.querySelector('[data-network="seal_in"]')!.getAttribute("class")).toContain("ld-selected");
+  });
+});
