@@ -39,6 +39,7 @@ log = logging.getLogger(__name__)
 router = APIRouter(tags=["monitor"])
 
 CLIENT_MESSAGE: TypeAdapter[Any] = TypeAdapter(m.ClientMessage)
+_CLIENT_TYPES = ", ".join(sorted(CLIENT_MESSAGE.json_schema()["discriminator"]["mapping"]))
 CLOSE_NO_SIMULATION = 4404
 CLOSE_DELETED = 4410
 CLOSE_TRY_LATER = 1013
@@ -348,8 +349,7 @@ def describe_invalid(data: object, error: ValidationError) -> str:
     problems = []
     for err in error.errors()[:3]:
         if err["type"] == "union_tag_invalid":
-            expected = ", ".join(sorted(CLIENT_MESSAGE.json_schema()["discriminator"]["mapping"]))
-            problems.append(f"unknown message type {kind!r} (expected one of {expected})")
+            problems.append(f"unknown message type {kind!r} (expected one of {_CLIENT_TYPES})")
         elif err["type"] == "union_tag_not_found":
             problems.append("a message needs a 'type' field")
         elif err["type"] in ("model_attributes_type", "model_type", "dict_type") and not err["loc"]:
