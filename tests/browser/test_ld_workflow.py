@@ -4,7 +4,7 @@ Create a project, draw ``Motor := (Start OR Motor) AND NOT Stop`` with mouse and
 declare the variables through the editor's prompt, save, reload and find the rung unchanged,
 compile and run, toggle Start and see Motor energised in the diagram and the watch list, force
 Stop TRUE and see Motor drop, then find the statement in the exported ST. Screenshots of the
-editor offline and online are written to tests/browser/artifacts/.
+editor offline, online and with Stop forced are written to tests/browser/artifacts/.
 """
 
 from __future__ import annotations
@@ -130,6 +130,8 @@ def test_new_user_draws_saves_and_runs_the_motor_rung(page, server):
     watched.filter(has_text="TRUE").wait_for()
     assert ON.search(element(page, "contact", "Start").get_attribute("class"))
     assert int(page.get_by_test_id("scan-count").inner_text()) > 0
+    page.get_by_label("Scan statistics").filter(has_text=re.compile(r"last scan \d+\.\d{3} ms")).wait_for()
+    page.screenshot(path=str(ARTIFACTS / "ld-online.png"))
 
     # Force Stop TRUE: Motor drops and stays off; Stop carries the forced marker.
     stop = element(page, "contact", "Stop")
@@ -138,7 +140,7 @@ def test_new_user_draws_saves_and_runs_the_motor_rung(page, server):
     page.wait_for_function("() => document.querySelector('g.ld-coil')?.classList.contains('ld-off')")
     watched.filter(has_text="FALSE").wait_for()
     stop.locator("g.ld-operand.ld-forced").wait_for()
-    page.screenshot(path=str(ARTIFACTS / "ld-online.png"))
+    page.screenshot(path=str(ARTIFACTS / "ld-forced.png"))
 
     # The exported ST holds the rung as one statement.
     if not _served(f"{server}/api/projects/plant/export/st?pou=Main"):

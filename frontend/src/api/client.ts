@@ -1,5 +1,5 @@
 // Typed helpers for the LadderLab HTTP API (served under /api by the FastAPI backend).
-import type { CheckReport, ConflictDetail, LibraryEntry, ProjectDocument, ProjectSummary, SaveResult, SymbolTable } from "../generated/api";
+import type { CheckReport, ConflictDetail, LibraryEntry, ProjectDocument, ProjectSummary, SaveResult, StExport, SymbolTable } from "../generated/api";
 import type { Project } from "../generated/project";
 
 export type { ProjectSummary };
@@ -154,19 +154,7 @@ export function checkProject(name: string): Promise<CheckReport> {
   return requestJson<CheckReport>(`${projectPath(name)}/check`, { method: "POST" });
 }
 
-/** One network's lines in an exported POU (1-based line numbers). */
-export interface SourceMapEntry {
-  line: number;
-  network: string;
-  element?: string | null;
-}
-
-/** `GET /api/projects/{name}/export/st?pou=`: a POU as ST, with the lines each network became. */
-export interface StExport {
-  text: string;
-  source_map: SourceMapEntry[];
-}
-
+/** `GET /api/projects/{name}/export/st?pou=`: a saved POU as ST, with the lines each network became. */
 export function exportSt(project: string, pou: string): Promise<StExport> {
   return requestJson<StExport>(`${projectPath(project)}/export/st?pou=${encodeURIComponent(pou)}`);
 }

@@ -195,4 +195,16 @@ describe("View as ST", () => {
     const editor = screen.getByRole("application", { name: "Ladder diagram editor" });
     expect(editor.querySelector('[data-network="seal_in"]')!.getAttribute("class")).toContain("ld-selected");
   });
+
+  it("names the problems when the POU cannot be exported", async () => {
+    const diagnostics: Diagnostic[] = [{ code: "ST-UNKNOWN-VAR", message: "unknown variable 'Lamp'", pou: "Main", network: "lamp", element: "lamp_coil" }];
+    serve({ "GET /api/projects/plant/export/st?pou=Main": () => json({ detail: { message: "the project cannot be exported as ST until these errors are fixed", diagnostics } }, 422) });
+    await openMain();
+    fireEvent.click(screen.getByRole("tab", { name: "View as ST" }));
+    const alert = await screen.findByText(/The export failed/);
+    expect(alert.parentElement!.textContent).toBe(
+      "The export failed: the project cannot be exported as ST until these errors are fixedMain, network lamp, element lamp_coil: unknown variable 'Lamp'",
+    );
+    expect((screen.getByRole("button", { name: "Download Main.st" }) as HTMLButtonElement).disabled).toBe(true);
+  });
 });

@@ -2,7 +2,9 @@
 // each network form a block linked to its network (a click reveals it in the diagram), and the
 // text downloads as <POU>.st.
 import { useEffect, useMemo, useState } from "react";
-import { exportSt, type StExport } from "../api/client";
+import { ApiError, exportSt } from "../api/client";
+import type { Diagnostic, StExport } from "../generated/api";
+import { placeOf } from "../panels/DiagnosticsPanel";
 import { tokenize } from "./highlight";
 
 export interface StViewProps {
@@ -22,7 +24,7 @@ interface Block {
 }
 
 /** Consecutive lines grouped by the network the source map says they come from (null: declarations etc.). */
-export function blocksOf(text: string, sourceMap: StExport["source_map"]): Block[] {
+export function blocksOf(text: string, sourceMap: StExport["source_map"] = []): Block[] {
   const networkOf = new Map(sourceMap.map((e) => [e.line, e.network]));
   const blocks: Block[] = [];
   text.replace(/\n$/, "").split("\n").forEach((line, i) => {
@@ -45,14 +47,18 @@ function download(name: string, text: string) {
 
 export function StView({ project, pou, unsaved, onRevealNetwork, load = exportSt }: StViewProps) {
   const [result, setResult] = useState<StExport | null>(null);
-  const [error, setError] = useState<string | null>(null);
+  const [error, setError] = useState<{ message: string; diagnostics: Diagnostic[] } | null>(null);
   useEffect(() => {
     let live = true;
     setResult(null);
     setError(null);
     load(project, pou).then(
       (r) => live && setResult(r),
-      (err: unknown) => live && setError(err instanceof Error ? err.message : String(err)),
+      (err: unknown) => {
+        if (!live) return;
+        const detail = err instanceof ApiError ? (err.detail as { diagnostics?: Diagnostic[] } | undefined) : undefined;
+        setError({ message: err instanceof Error ? err.message : String(err), diagnostics: Array.isArray(detail?.diagnostics) ? detail.diagnostics : [] });
+      },
     );
     return () => {
       live = false;
@@ -71,9 +77,18 @@ export function StView({ project, pou, unsaved, onRevealNetwork, load = exportSt
         </button>
       </div>
       {error ? (
-        <p className="panel-empty" role="alert">
-          The export failed: {error}
-        </p>
+        <div className="panel-empty" role="alert">
+          <p>The export failed: {error.message}</p>
+          {error.diagnostics.length ? (
+            <ul>
+              {error.diagnostics.map((d, i) => (
+                <li key={i}>
+                  {placeOf(d)}: {d.message}
+                </li>
+              ))}
+            </ul>
+          ) : null}
+        </div>
       ) : !result ? (
         <p className="panel-empty">Exporting…</p>
       ) : (
