@@ -140,7 +140,7 @@ describe("online LD in the app (issue 7 online mode)", () => {
     expect(socket.closed).toBe(true);
     expect((screen.getByRole("button", { name: "Contact" }) as HTMLButtonElement).disabled).toBe(false);
     expect(element(editor, "motor").getAttribute("class")).not.toContain("ld-on");
-  });
+  }, 20_000); // a long user session in jsdom; slow when the machine is busy
 
   it("shows a refused compile's diagnostics in the Diagnostics panel", async () => {
     const diagnostics: Diagnostic[] = [{ severity: "error", code: "ST-UNKNOWN-VAR", message: "unknown variable 'Lamp'", pou: "Main", network: "lamp", element: "lamp_coil" }];

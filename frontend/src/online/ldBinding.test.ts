@@ -2,7 +2,7 @@ import { describe, expect, it } from "vitest";
 import type { SymbolInfo } from "../generated/api";
 import { bodyOf, c, net, par, q } from "../ld/fixtures";
 import type { LdElement } from "../ld/model";
-import { bindLd, ldOnlineView, operandPath, operandsOf } from "./ldBinding";
+import { bindLd, ldOnlineView, operandPath, operandsOf, watchPath } from "./ldBinding";
 import { applyMessage, emptyMonitor } from "./monitor";
 
 const sym = (name: string, type: string, var_class = "VAR"): SymbolInfo => ({ name, type, var_class, initial: null, address: null, comment: null, retain: false, constant: false });
@@ -60,5 +60,15 @@ describe("ldOnlineView", () => {
     expect(view.executed).toEqual({ c4: false, q2: false });
     expect(view.values).toEqual({ START: true, STOP: true, MOTOR: false, COUNT: 7 });
     expect([...view.forced!]).toEqual(["STOP"]);
+  });
+});
+
+describe("watchPath", () => {
+  it("keeps program paths, puts bare names under GVL as the server names globals", () => {
+    expect(watchPath(" Main.Motor ", ["Main"])).toBe("MAIN.MOTOR");
+    expect(watchPath("main.T1.Q", ["Main"])).toBe("MAIN.T1.Q");
+    expect(watchPath("Start", ["Main"])).toBe("GVL.START");
+    expect(watchPath("gvl.Start", ["Main"])).toBe("GVL.START");
+    expect(watchPath("Arr[2]", [])).toBe("GVL.ARR[2]");
   });
 });

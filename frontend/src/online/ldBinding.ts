@@ -45,6 +45,16 @@ export function operandPath(operand: string, instance: string, symbols: readonly
   return pathKey(`${global ? GLOBALS : instance}.${text}`);
 }
 
+/**
+ * A path typed into the watch list in the server's canonical form: `Main.Motor` stays under its
+ * program instance, a bare global `Start` becomes `GVL.START` (the server names globals so).
+ */
+export function watchPath(text: string, programs: readonly string[]): string {
+  const path = pathKey(text);
+  const head = path.split(/[.[]/, 1)[0]!;
+  return head === GLOBALS || programs.some((p) => p.toUpperCase() === head) ? path : `${GLOBALS}.${path}`;
+}
+
 export interface LdBinding {
   instance: string;
   /** Paths to subscribe, upper case, without repeats. */
