@@ -72,9 +72,11 @@ def test_start_paces_scans_against_the_wall_clock_and_stop_holds(client: TestCli
     assert started["state"] == "running"
     time.sleep(0.4)
     info = client.get(f"/api/simulations/{counter}").json()
-    # virtual time tracks real time: 10 ms scans, about 40 of them
-    assert abs(info["time_ms"] - info["real_time_ms"]) <= 40, info
-    assert 25 <= info["scan_count"] <= 50, info
+    # virtual time tracks real time: never ahead; behind by at most the pacer's lag, plus what it gave up
+    # when a busy machine held the scans back longer than that (an overrun, max 200 ms lag each)
+    behind = 100 + 250 * info["overruns"]
+    assert info["real_time_ms"] - behind <= info["time_ms"] <= info["real_time_ms"] + 10, info
+    assert info["scan_count"] == info["time_ms"] / 10 - started["time_ms"] / 10
     stopped = client.post(f"/api/simulations/{counter}/stop").json()
     assert stopped["state"] == "stopped"
     time.sleep(0.1)
