@@ -142,6 +142,27 @@ describe("online LD in the app (issue 7 online mode)", () => {
     expect(element(editor, "motor").getAttribute("class")).not.toContain("ld-on");
   }, 20_000); // a long user session in jsdom; slow when the machine is busy
 
+  it("runs the simulation commands from their keys and the toolbar", async () => {
+    serve();
+    await openMain();
+    fireEvent.keyDown(window, { key: "F8", altKey: true });
+    await waitFor(() => expect(FakeSocket.all).toHaveLength(1));
+    const socket = FakeSocket.all[0]!;
+    socket.open();
+    socket.receive({ type: "status", state: "stopped" });
+    fireEvent.keyDown(window, { key: "F8" });
+    fireEvent.keyDown(window, { key: "F5" });
+    fireEvent.keyDown(window, { key: "F5", shiftKey: true });
+    fireEvent.click(screen.getByRole("button", { name: "Run" }));
+    fireEvent.click(screen.getByRole("button", { name: "Single cycle" }));
+    expect(socket.sent.filter((m) => m.type !== "subscribe").map((m) => m.type)).toEqual(["single_cycle", "run", "stop", "run", "single_cycle"]);
+    socket.receive({ type: "status", state: "running" });
+    expect((screen.getByRole("button", { name: "Run" }) as HTMLButtonElement).disabled).toBe(true);
+    expect((screen.getByRole("button", { name: "Single cycle" }) as HTMLButtonElement).disabled).toBe(true);
+    fireEvent.keyDown(window, { key: "F8", ctrlKey: true });
+    await waitFor(() => expect(screen.getByRole("status", { name: "Online state" }).textContent).toBe("Offline"));
+  }, 20_000);
+
   it("shows a refused compile's diagnostics in the Diagnostics panel", async () => {
     const diagnostics: Diagnostic[] = [{ severity: "error", code: "ST-UNKNOWN-VAR", message: "unknown variable 'Lamp'", pou: "Main", network: "lamp", element: "lamp_coil" }];
     serve({ "POST /api/projects/plant/simulations": () => json({ detail: { message: "project 'plant' does not compile", diagnostics } }, 422) });

@@ -310,11 +310,11 @@ describe("read-only (online)", () => {
 });
 
 describe("shortcut help", () => {
-  it("lists every command with its keys", () => {
-    setup(motorMain);
+  it("lists every command with its keys, and the app's own keys", () => {
+    setup(motorMain, { extraShortcuts: [["F5", "Run"]] });
     fireEvent.click(screen.getByRole("button", { name: "Shortcuts" }));
     const rows = within(screen.getByRole("dialog", { name: "Keyboard shortcuts" })).getAllByRole("row").map((r) => r.textContent);
-    expect(rows).toEqual(expect.arrayContaining(["CContact", "Shift+CContact before", "PParallel branch", "Ctrl+ZUndo", "Ctrl+SSave the project", "Alt+ArrowUpMove network up"]));
+    expect(rows).toEqual(expect.arrayContaining(["CContact", "Shift+CContact before", "PParallel branch", "Ctrl+ZUndo", "Ctrl+SSave the project", "Alt+ArrowUpMove network up", "F5Run"]));
   });
 });
 
