@@ -70,8 +70,8 @@ def test_running_sends_at_the_interval_with_increasing_scans(client: TestClient,
         scans = [m["scan"] for m in messages]
         assert scans == sorted(set(scans))
         assert all(m["changed"]["MAIN.COUNT"] == m["scan"] for m in messages)  # Count counts scans
-        assert 0.2 <= elapsed <= 0.6, elapsed  # 6 messages at 50 ms
-        assert all(3 <= b - a <= 8 for a, b in zip(scans, scans[1:])), scans  # ~5 scans of 10 ms apart
+        assert 0.2 <= elapsed <= 1.0, elapsed  # 6 messages at 50 ms: never faster, a little slower when busy
+        assert all(3 <= b - a <= 15 for a, b in zip(scans, scans[1:])), scans  # ~5 scans of 10 ms apart
 
 
 def test_write_is_applied_once_before_the_next_scan(client: TestClient, counter: str) -> None:

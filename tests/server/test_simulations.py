@@ -90,7 +90,7 @@ def test_a_slower_task_runs_at_its_own_interval(client: TestClient, workspace: W
     client.post(f"/api/simulations/{sim_id}/start")
     time.sleep(0.5)
     info = client.post(f"/api/simulations/{sim_id}/stop").json()
-    assert 7 <= info["scan_count"] <= 11, info
+    assert 5 <= info["scan_count"] <= 11, info  # 10 at exactly 50 ms
     assert info["time_ms"] == 50.0 * info["scan_count"]
 
 
