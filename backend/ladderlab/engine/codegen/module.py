@@ -6,7 +6,6 @@ from dataclasses import dataclass
 
 from ...ir import nodes as ir
 from ...model.diagnostics import Diagnostic
-from . import names
 from .context import CodegenError, ModuleContext, PausePoint, diagnostic
 from .pou import emit_function, emit_inits, emit_instance_class, emit_struct
 from .scope import global_owner
@@ -88,4 +87,4 @@ def program_globals(module: ModuleContext) -> list[ir.Slot]:
     return [p.slot for p in module.globals.places.values()]  # type: ignore[union-attr]
 
 
-__all__ = ["Generated", "VARIANTS", "generate", "names"]
+__all__ = ["Generated", "VARIANTS", "generate"]

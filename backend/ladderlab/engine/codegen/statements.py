@@ -15,7 +15,7 @@ from contextlib import nullcontext
 from ...ir import nodes as ir
 from ...ir import types as t
 from . import names
-from .context import CodegenError, diagnostic, std_fb_class, std_pin_type
+from .context import CodegenError, diagnostic, std_fb_class
 from .expressions import Expressions, literal
 from .mentions import walk
 from ..values import store_expr
