@@ -9,6 +9,9 @@ import itertools
 
 import pytest
 
+from ladderlab.engine.simulation import Simulation
+from ladderlab.ir.lower_project import lower_project
+from ladderlab.model.project import Pou
 from tests.ir.diagram_support import (
     blk,
     box,
@@ -24,6 +27,7 @@ from tests.ir.diagram_support import (
     net,
     out,
     parallel,
+    project,
     ret,
     rung,
     simulate,
@@ -261,7 +265,6 @@ def test_lab27_fire_alarm_in_ld_fbd_and_st_agree():
         ("d12.OUT", "p3.IN1"), ("d13.OUT", "p3.IN2"), ("p1.OUT", "vote.IN1"), ("p2.OUT", "vote.IN2"),
         ("p3.OUT", "vote.IN3"), ("on1.OUT", "vote.IN4"), ("vote.OUT", "rs.S"), ("off1.OUT", "rs.R1"),
         ("rs.Q1", "alarm.IN")]))
-    from ladderlab.model.project import Pou
     st_version = Pou(name="Main", kind="program", language="st", declarations=decl + " VAR rs : RS; END_VAR",
                      body="lamp1 := d11 OR d12 OR d13;\n"
                           "rs(S := (d11 AND d12) OR (d11 AND d13) OR (d12 AND d13) OR on1, R1 := off1);\n"
@@ -273,3 +276,17 @@ def test_lab27_fire_alarm_in_ld_fbd_and_st_agree():
                 (False, True), (False, True), (True, True)]
     for pou in (ld_version, fbd_version, st_version):
         assert trace(simulate(pou), "Main", scans, ["lamp1", "alarm"]) == expected, pou.language
+
+
+def test_backward_jump_loops_within_one_scan_and_an_endless_one_trips_the_watchdog():
+    """Invariant 4: backward jumps are allowed; n counts to 5 in one scan. Jumping back forever is a fault."""
+    loop = ld_pou("Main", "VAR n : INT; forever : BOOL; END_VAR",
+                  rung("count", box("inc", "ADD", en=True, IN1="n", IN2="1", outputs={"OUT": "n"}), label="again"),
+                  rung("test", compare("lt", "LT", "n", "5"), jump("back", "again")),
+                  rung("stuck", contact("f", "forever"), jump("spin", "again")))
+    sim = simulate(loop)
+    assert trace(sim, "Main", [{"n": 0}], ["n"]) == [(5,)]
+    spinning = Simulation(lower_project(project(loop)).program, watchdog_s=0.05)
+    spinning.write("Main.forever", True)
+    spinning.cycle(1)
+    assert spinning.fault is not None and "watchdog" in spinning.fault.message.lower()

@@ -61,14 +61,6 @@ class NetworkGraph:
     #: (consumer id, pin) pairs wired to a continuation that leads nowhere (already reported)
     broken: set[tuple[str, str]] = field(default_factory=set)
 
-    def consumers(self) -> dict[str, list[tuple[str, str]]]:
-        """producer node id -> [(consumer id, pin)] in evaluation order of the consumers."""
-        out: dict[str, list[tuple[str, str]]] = {}
-        for node_id in self.order:
-            for pin, source in self.inputs.get(node_id, {}).items():
-                out.setdefault(source.node, []).append((node_id, pin))
-        return out
-
 
 def wire_text(wire: fbd.Wire) -> str:
     return f"{wire.from_.node}.{wire.from_.pin} -> {wire.to.node}.{wire.to.pin}"
