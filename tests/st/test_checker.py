@@ -183,3 +183,12 @@ def test_check_operand_for_ld_fbd_texts():
     assert [(d.code, d.pou, d.message) for d in diagnostics] == [
         ("ST-TYPE-MISMATCH", "Main", "operand 'r': expected BOOL, got REAL without a conversion such as REAL_TO_BOOL")]
     assert check_operand(result, "Main", "x +", None)[0] is None
+
+
+def test_enum_used_in_a_struct_is_not_ambiguous_and_typed_enum_literals_are_case_labels():
+    """ST-28/TYP-13: a bare enum value stays unambiguous when its type is also a struct field type;
+    ``TColor#blue`` is a constant CASE label."""
+    types = "TYPE TColor : (red, green, blue); TRec : STRUCT c : TColor; END_STRUCT; END_TYPE"
+    main = Pou(name="Main", kind="program", language="st", declarations="VAR x : TColor; r : TRec; END_VAR",
+               body="x := red; r.c := blue;\nCASE x OF TColor#blue: x := green; red: x := blue; END_CASE;")
+    assert check_project(Project(name="p", types=types, pous=[main])).diagnostics == []

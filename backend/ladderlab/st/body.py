@@ -49,10 +49,11 @@ class BodyChecker:
 
     def enum_values(self, name: str) -> list[EnumValue]:
         upper = name.upper()
-        found = []
+        found, seen = [], set()
         for typedef in self.result.types.values():
             for enum in _enums_in(typedef.type):
-                if upper in enum.values:
+                if upper in enum.values and id(enum) not in seen:  # a named enum also appears in structs using it
+                    seen.add(id(enum))
                     written, value = enum.values[upper]
                     found.append(EnumValue(enum, written, value))
         return found

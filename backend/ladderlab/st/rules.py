@@ -55,7 +55,10 @@ def constant_value(checker: Any, node: ast.Expr | None, depth: int = 0) -> int |
     if isinstance(node, (ast.IntLit, ast.RealLit)):
         return node.value
     if isinstance(node, ast.TypedLit):
-        return constant_value(checker, node.value, depth + 1) if not isinstance(node.value, ast.Name) else None
+        if isinstance(node.value, ast.Name):  # TColor#blue: the checker typed it as the enumeration
+            enum, upper = getattr(node, "ty", None), node.value.name.upper()
+            return enum.values[upper][1] if isinstance(enum, t.EnumType) and upper in enum.values else None
+        return constant_value(checker, node.value, depth + 1)
     if isinstance(node, ast.Unary) and node.op == "-":
         value = constant_value(checker, node.operand, depth + 1)
         return -value if value is not None else None
