@@ -13,7 +13,16 @@ const json = (body: unknown, status = 200) => new Response(JSON.stringify(body),
 const sym = (name: string, type = "BOOL"): SymbolInfo => ({ name, type, var_class: "VAR", initial: null, address: null, comment: null, retain: false, constant: false });
 const project = {
   name: "plant",
-  pous: [{ name: "Main", kind: "program", language: "ld", declarations: "VAR\n    Start : BOOL;\n    Stop : BOOL;\n    Motor : BOOL;\nEND_VAR", body: motorMain }],
+  pous: [
+    { name: "Main", kind: "program", language: "ld", declarations: "VAR\n    Start : BOOL;\n    Stop : BOOL;\n    Motor : BOOL;\nEND_VAR", body: motorMain },
+    {
+      name: "Pump",
+      kind: "function_block",
+      language: "ld",
+      declarations: "VAR_INPUT\n    Run : BOOL;\nEND_VAR\nVAR_OUTPUT\n    Out : BOOL;\nEND_VAR",
+      body: { networks: [{ id: "n1", elements: [{ type: "contact", id: "r1", var: "Run", mode: "no" }, { type: "coil", id: "q1", var: "Out", mode: "normal" }] }] },
+    },
+  ],
 };
 const simulation = { id: "s1", project: "plant", revision: "r1", state: "stopped", scan_count: 0, time_ms: 0, real_time_ms: 0, scan_ms: { min: 0, avg: 0, max: 0, last: 0 }, overruns: 0, fault: null, clients: 0, created: "2024-05-01T10:00:00Z" };
 
@@ -69,7 +78,7 @@ beforeEach(() => {
   vi.stubGlobal("WebSocket", FakeSocket);
   appStore.setState(initialData);
   workspaceStore.setState(emptyWorkspace);
-  onlineStore.setState({ ...offline, watch: [] });
+  onlineStore.setState({ ...offline, watch: [], instances: {} });
   panelsStore.setState(emptyPanels);
 });
 
@@ -161,6 +170,24 @@ describe("online LD in the app (issue 7 online mode)", () => {
     expect((screen.getByRole("button", { name: "Single cycle" }) as HTMLButtonElement).disabled).toBe(true);
     fireEvent.keyDown(window, { key: "F8", ctrlKey: true });
     await waitFor(() => expect(screen.getByRole("status", { name: "Online state" }).textContent).toBe("Offline"));
+  }, 20_000);
+
+  it("shows a function block's diagram for the instance the user names", async () => {
+    serve();
+    await openMain();
+    fireEvent.click(screen.getByRole("button", { name: "Compile & simulate" }));
+    await waitFor(() => expect(FakeSocket.all).toHaveLength(1));
+    const socket = FakeSocket.all[0]!;
+    socket.open();
+    fireEvent.click(within(screen.getByRole("navigation", { name: "Project tree" })).getByRole("button", { name: /Pump/ }));
+    expect(screen.getByText(/name the instance of Pump to show/)).toBeTruthy();
+    fireEvent.change(screen.getByLabelText("Instance of Pump"), { target: { value: "Main.P1" } });
+    fireEvent.click(screen.getByRole("button", { name: "Show" }));
+    expect(socket.sent.at(-1)).toMatchObject({ type: "subscribe", paths: ["MAIN.P1.OUT", "MAIN.P1.RUN"], elements: [{ pou_instance: "MAIN.P1", ids: ["q1", "r1"] }] });
+    socket.receive({ type: "values", scan: 3, time_ms: 30, changed: { "MAIN.P1.RUN": true, "MAIN.P1.OUT": true }, forced: [], power: { "MAIN.P1/r1": true, "MAIN.P1/q1": true } });
+    const editor = screen.getByRole("application", { name: "Ladder diagram editor" });
+    expect(element(editor, "q1").getAttribute("class")).toContain("ld-on");
+    expect(screen.getByText(/Online: the diagram shows the running simulation/)).toBeTruthy();
   }, 20_000);
 
   it("shows a refused compile's diagnostics in the Diagnostics panel", async () => {

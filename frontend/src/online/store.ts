@@ -39,6 +39,8 @@ export interface OnlineData {
   views: Record<string, Subscription>;
   /** Paths in the watch list, as the user typed them. */
   watch: string[];
+  /** The instance a function block's diagram shows online, by POU name (e.g. Blinker -> MAIN.BLINK). */
+  instances: Record<string, string>;
 }
 
 export interface OnlineActions {
@@ -57,11 +59,12 @@ export interface OnlineActions {
   subscribe(view: string, subscription: Subscription | null): void;
   addWatch(path: string): void;
   removeWatch(path: string): void;
+  setInstance(pou: string, instance: string): void;
 }
 
 export type OnlineState = OnlineData & OnlineActions;
 
-export const offline: Omit<OnlineData, "watch"> = {
+export const offline: Omit<OnlineData, "watch" | "instances"> = {
   phase: "offline",
   project: null,
   simulation: null,
@@ -177,6 +180,7 @@ export function createOnlineStore(api: SimulationApi = simulationApi, openSocket
     return {
       ...offline,
       watch: [],
+      instances: {},
 
       async compile(project) {
         if (get().simulation) await get().goOffline();
@@ -233,6 +237,10 @@ export function createOnlineStore(api: SimulationApi = simulationApi, openSocket
         if (!text || get().watch.some((p) => pathKey(p) === pathKey(text))) return;
         set({ watch: [...get().watch, text] });
         resubscribe();
+      },
+
+      setInstance(pou, instance) {
+        set({ instances: { ...get().instances, [pou]: pathKey(instance) } });
       },
 
       removeWatch(path) {

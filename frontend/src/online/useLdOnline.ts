@@ -11,8 +11,14 @@ import { bindLd, ldOnlineView, operandPath } from "./ldBinding";
 import { parseValue, pathKey } from "./monitor";
 import { onlineStore, useOnline } from "./store";
 
-/** The instance whose values an LD POU shows: a program is its own instance; FBs and functions have none here. */
-export const instanceOf = (pou: Pick<Pou, "kind" | "name">): string | null => (pou.kind === "program" ? pou.name.toUpperCase() : null);
+/**
+ * The instance whose values an LD POU shows: a program is its own instance; a function block shows
+ * the instance the user chose (its path, e.g. MAIN.BLINK); functions have none.
+ */
+export function instanceOf(pou: Pick<Pou, "kind" | "name">, chosen: Readonly<Record<string, string>> = {}): string | null {
+  if (pou.kind === "program") return pou.name.toUpperCase();
+  return pou.kind === "function_block" ? (chosen[pou.name] || null) : null;
+}
 
 export const GO_OFFLINE_TO_EDIT = "Online: the diagram shows the running simulation. Go offline to edit.";
 
@@ -26,8 +32,9 @@ export interface LdOnline {
 export function useLdOnline(pou: Pou, body: LdBody, symbols: readonly SymbolInfo[]): LdOnline {
   const phase = useOnline((s) => s.phase);
   const monitor = useOnline((s) => s.monitor);
+  const chosen = useOnline((s) => s.instances);
   const [visible, setVisible] = useState<ReadonlySet<string> | null>(null);
-  const instance = instanceOf(pou);
+  const instance = instanceOf(pou, chosen);
   const key = `ld:${pou.name}`;
   const live = phase !== "offline";
 
@@ -69,10 +76,12 @@ export function useLdOnline(pou: Pou, body: LdBody, symbols: readonly SymbolInfo
     };
   }, [live, instance, symbols]);
 
-  return {
-    online,
-    readOnly: live ? (instance ? GO_OFFLINE_TO_EDIT : `Online: live values are shown for programs; ${pou.name} is a ${pou.kind.replace("_", " ")}. Go offline to edit.`) : null,
-    actions,
-    onVisibleChange,
-  };
+  const readOnly = !live
+    ? null
+    : instance
+      ? GO_OFFLINE_TO_EDIT
+      : pou.kind === "function_block"
+        ? `Online: name the instance of ${pou.name} to show (e.g. MAIN.${pou.name.toUpperCase()}1). Go offline to edit.`
+        : `Online: a function has no instance to show. Go offline to edit.`;
+  return { online, readOnly, actions, onVisibleChange };
 }

@@ -173,6 +173,24 @@ const NO_DIAGNOSTICS: Diagnostic[] = [];
 /** The symbols of a POU and the globals, for autocomplete and online paths. */
 const symbolsOf = (table: SymbolTable | undefined) => (table ? [...table.symbols, ...table.globals] : []);
 
+/** Which instance of a function block the online diagram shows (a path such as MAIN.BLINK). */
+function InstancePicker({ pou }: { pou: string }) {
+  const current = useOnline((s) => s.instances[pou] ?? "");
+  const [text, setText] = useState(current);
+  return (
+    <form
+      className="instance-picker"
+      onSubmit={(e) => {
+        e.preventDefault();
+        onlineStore.getState().setInstance(pou, text);
+      }}
+    >
+      <input aria-label={`Instance of ${pou}`} value={text} onChange={(e) => setText(e.target.value)} placeholder="MAIN.Instance" spellCheck={false} />
+      <button type="submit">Show</button>
+    </form>
+  );
+}
+
 function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
   const name = pou.name;
   const library = useWorkspace((s) => s.library);
@@ -198,7 +216,16 @@ function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
       onDeclareVariable={(d) => declare(name, d)}
       online={live.online}
       readOnly={live.readOnly}
-      readOnlyAction={live.readOnly ? { label: "Go offline to edit", run: () => void onlineStore.getState().goOffline() } : undefined}
+      readOnlyActions={
+        live.readOnly ? (
+          <>
+            {pou.kind === "function_block" ? <InstancePicker pou={name} /> : null}
+            <button type="button" onClick={() => void onlineStore.getState().goOffline()}>
+              Go offline to edit
+            </button>
+          </>
+        ) : undefined
+      }
       onlineActions={live.actions}
       onVisibleChange={live.onVisibleChange}
       focus={focus}
@@ -332,7 +359,7 @@ export function WorkspaceView() {
     (operand: string) => {
       const ws = workspaceStore.getState();
       const pou = ws.active ? pouOf(project, ws.active) : undefined;
-      const instance = pou ? instanceOf(pou) : null;
+      const instance = pou ? instanceOf(pou, onlineStore.getState().instances) : null;
       return instance ? operandPath(operand, instance, symbolsOf(ws.symbols[pou!.name])) : null;
     },
     [project],

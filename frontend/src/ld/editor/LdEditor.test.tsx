@@ -372,7 +372,14 @@ describe("online commands (issue 7 online mode)", () => {
 
   it("offers no online items offline, and a Go offline button with the read-only reason", () => {
     const run = vi.fn();
-    const t = setup(motorMain, { readOnly: "Online", readOnlyAction: { label: "Go offline to edit", run } });
+    const t = setup(motorMain, {
+      readOnly: "Online",
+      readOnlyActions: (
+        <button type="button" onClick={run}>
+          Go offline to edit
+        </button>
+      ),
+    });
     fireEvent.contextMenu(t.hit("stop"));
     expect(within(screen.getByRole("menu")).queryByRole("menuitem", { name: "Force TRUE" })).toBeNull();
     fireEvent.click(screen.getByRole("button", { name: "Go offline to edit" }));

@@ -2,7 +2,7 @@
 // keyboard shortcuts, operand entry with autocomplete and the "declare variable" offer, the box
 // picker, drag to move, copy/paste through the system clipboard, and undo/redo. The undo history
 // is owned by the caller (one per open POU), so it survives switching tabs.
-import { useCallback, useEffect, useMemo, useRef, useState, type ClipboardEvent, type KeyboardEvent, type MouseEvent } from "react";
+import { useCallback, useEffect, useMemo, useRef, useState, type ClipboardEvent, type KeyboardEvent, type MouseEvent, type ReactNode } from "react";
 import type { Diagnostic, LibraryEntry, SymbolInfo } from "../../generated/api";
 import { parseClip, serializeClip, type Clip } from "../clipboard";
 import { canRedo, canUndo, record, redo, undo, type History } from "../history";
@@ -33,8 +33,8 @@ export interface LdEditorProps {
   online?: OnlineView;
   /** Editing is off (online); the reason is shown. */
   readOnly?: string | null;
-  /** A button next to the read-only reason (online: "Go offline to edit"). */
-  readOnlyAction?: { label: string; run(): void };
+  /** Controls next to the read-only reason (online: "Go offline to edit", the instance shown). */
+  readOnlyActions?: ReactNode;
   onDeclareVariable?(declaration: VariableDeclaration): void;
   /** Online commands on operands (double-click toggles a BOOL, the context menu writes and forces). */
   onlineActions?: LdOnlineActions;
@@ -132,7 +132,7 @@ export function LdEditor({
   diagnostics,
   online,
   readOnly = null,
-  readOnlyAction,
+  readOnlyActions,
   onDeclareVariable,
   onlineActions,
   onVisibleChange,
@@ -536,11 +536,7 @@ export function LdEditor({
       {readOnly ? (
         <div className="ld-banner" role="status">
           {readOnly}
-          {readOnlyAction ? (
-            <button type="button" onClick={readOnlyAction.run}>
-              {readOnlyAction.label}
-            </button>
-          ) : null}
+          {readOnlyActions}
         </div>
       ) : null}
       {message ? (
