@@ -1,4 +1,5 @@
-"""Scan-engine benchmark: build time and microseconds per scan of a 10,000-network LD-style program.
+"""Scan-engine benchmark: microseconds per scan of the ironplc-benchmarks programs, and build time,
+microseconds per scan and peak memory of a 10,000-network LD-style program.
 
 The program is IR built directly, the way the LD lowering emits a rung: every
 contact's power flow into a hidden BOOL slot, a coil reading the last one,
@@ -11,6 +12,7 @@ Prints one line per figure; wall and CPU time, as the CPU time is what a busy ma
 from __future__ import annotations
 
 import pathlib
+import resource
 import statistics
 import sys
 import time
@@ -18,10 +20,12 @@ import time
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path[:0] = [str(ROOT / "backend"), str(ROOT)]
 
+from ladderlab.build import build_project  # noqa: E402
 from ladderlab.engine.compile import compile_program  # noqa: E402
 from ladderlab.engine.simulation import Simulation  # noqa: E402
 from ladderlab.ir import nodes as ir  # noqa: E402
 from ladderlab.ir import types as t  # noqa: E402
+from ladderlab.st.project_text import source_to_project  # noqa: E402
 
 BOOL, INT, TIME = t.Elementary("BOOL"), t.Elementary("INT"), t.Elementary("TIME")
 
@@ -65,7 +69,27 @@ def ld_program(networks: int) -> ir.Program:
     return ir.Program({"MAIN": main}, [], [ir.TaskSpec("CYCLIC", 10, 0, ["MAIN"])])
 
 
+def ironplc_programs() -> None:
+    """Microseconds per scan of each ironplc-benchmarks program (../shared/external; skipped when absent)."""
+    folder = ROOT.parent / "shared" / "external" / "ironplc-benchmarks" / "programs"
+    if not folder.is_dir():
+        print(f"ironplc-benchmarks: {folder} not present, skipped")
+        return
+    for path in sorted(folder.glob("*.st")):
+        project, _ = source_to_project(path.read_text(encoding="utf-8"), path.stem)
+        build = build_project(project) if project is not None else None
+        if build is None or build.compiled is None:
+            print(f"scan ironplc-benchmarks/{path.name}: does not build (see tests/external/test_ironplc.py)")
+            continue
+        sim = build.simulation()
+        sim.cycle(100)
+        before = time.perf_counter()
+        sim.cycle(1000)
+        print(f"scan ironplc-benchmarks/{path.name}: {(time.perf_counter() - before) / 1000 * 1e6:.1f} us per scan")
+
+
 def main() -> None:
+    ironplc_programs()
     networks = 10_000
     program = ld_program(networks)
     start, cpu = time.perf_counter(), time.process_time()
@@ -90,6 +114,8 @@ def main() -> None:
     before = time.perf_counter()
     debug.cycle(20)
     print(f"scan {networks} LD networks, debug variant (probes on): {(time.perf_counter() - before) / 20 * 1e6:.0f} us per scan")
+    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+    print(f"peak memory of this benchmark: {peak:.0f} MB (target <= 300 MB)")
 
 
 if __name__ == "__main__":
