@@ -112,7 +112,7 @@ def rung(draw, ids: _Ids, depth: int, timers: list[str], dead: bool = True) -> l
         else:
             branches = draw(st.lists(rung(ids, depth - 1, timers, ends), min_size=2, max_size=3))
             items.append(Parallel(id=ids(), branches=branches))
-            if any(isinstance(b[-1], Return) for b in branches):
+            if _has_return([b[-1] for b in branches]):  # a return inside: nothing may follow
                 return items
     if dead and draw(st.integers(0, 9)) == 0:
         items.append(Return(id=ids()))

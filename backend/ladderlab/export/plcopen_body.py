@@ -187,6 +187,7 @@ class IdMaker:
     def __init__(self, reserved: set[str]):
         self.reserved = set(reserved)
         self.used: set[str] = set()
+        self._next: dict[str, int] = {}  # per prefix: no smaller number is free any more (ids are never released)
 
     def take(self, wanted: str | None, prefix: str) -> str:
         if wanted and wanted not in self.used:
@@ -195,9 +196,10 @@ class IdMaker:
         return self.fresh(prefix)
 
     def fresh(self, prefix: str) -> str:
-        n = 1
+        n = self._next.get(prefix, 1)
         while f"{prefix}{n}" in self.used or f"{prefix}{n}" in self.reserved:
             n += 1
+        self._next[prefix] = n + 1
         self.used.add(f"{prefix}{n}")
         return f"{prefix}{n}"
 

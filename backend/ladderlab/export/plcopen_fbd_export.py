@@ -46,27 +46,29 @@ def _ignore(*_args: object, **_kwargs: object) -> None:
 
 
 def _auto_positions(network: FbdNetwork) -> dict[str, Position]:
-    """Positions for nodes that have none: column by longest path from a source, rows in node order."""
-    feeds: dict[str, set[str]] = defaultdict(set)
-    for wire in network.wires:
-        feeds[wire.to.node].add(wire.from_.node)
-    depth: dict[str, int] = {}
+    """Positions for nodes that have none: column = longest wire path from a source, rows in node order.
 
-    def level(node: str, seen: frozenset[str]) -> int:
-        if node not in depth:
-            parents = [p for p in feeds[node] if p not in seen]
-            depth[node] = 1 + max((level(p, seen | {node}) for p in parents), default=-1)
-        return depth[node]
-
+    Columns are relaxed once per node (a wire cycle, allowed in FBD, cannot push them further).
+    """
+    ids = [n.id for n in network.nodes]
+    column = dict.fromkeys(ids, 0)
+    for _ in ids:
+        changed = False
+        for wire in network.wires:
+            if wire.from_.node in column and wire.to.node in column and \
+                    column[wire.to.node] < column[wire.from_.node] + 1 <= len(ids):
+                column[wire.to.node] = column[wire.from_.node] + 1
+                changed = True
+        if not changed:
+            break
     placed = [n.pos for n in network.nodes if n.pos is not None]
-    base_y = max((p.y for p in placed), default=-100.0) + 100.0 if placed else 0.0
+    base_y = max(p.y for p in placed) + 100.0 if placed else 0.0
     rows: dict[int, int] = defaultdict(int)
     out = {}
     for node in network.nodes:
         if node.pos is None:
-            column = level(node.id, frozenset())
-            out[node.id] = Position(x=column * 150.0, y=base_y + rows[column] * 80.0)
-            rows[column] += 1
+            out[node.id] = Position(x=column[node.id] * 150.0, y=base_y + rows[column[node.id]] * 80.0)
+            rows[column[node.id]] += 1
     return out
 
 

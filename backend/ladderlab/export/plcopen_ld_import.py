@@ -99,6 +99,10 @@ class LdImporter:
         self.box_of: dict[int, int] = {}  # id(model element) -> localId of the block it stands for
         self.paths: dict[int, list[str]] = {}  # id(model element) -> LadderLab's enclosing parallel ids
         self.keys: dict[int, tuple] = {}  # id(model element) -> drawing position, orders parallel branches
+        self.right_rail: dict[int, list[tuple[Element, Conn]]] = defaultdict(list)  # localId -> its rail connections
+        for rail in (e for e in graph.elements.values() if e.tag == "rightPowerRail"):
+            for conn in rail.inputs.get("", []):
+                self.right_rail[conn.ref].append((rail, conn))
 
     def body(self, groups: list[NetworkGroup]) -> LdBody:
         return LdBody(networks=[self.network(group) for group in groups])
@@ -122,9 +126,9 @@ class LdImporter:
             self.plan(self.graph.elements[local_id])
         for local_id in flow:
             self.place(self.graph.elements[local_id], net)
-        for rail in (e for e in self.graph.elements.values() if e.tag == "rightPowerRail"):
-            for conn in rail.inputs.get("", []):
-                if conn.ref in net.members and self.is_power(conn):
+        for member in group.members:
+            for rail, conn in self.right_rail.get(member, []):
+                if self.is_power(conn):
                     self.wire(self.source_node(conn, net, rail), T, net)
         self.dangling(net)
         elements = self.reduce(net)
