@@ -54,7 +54,8 @@ def same_traces(project: Project, scans: int = 200, seed: int = 0,
     for scan in range(scans):
         for path in writable:
             if rng.random() < 0.4:
-                value = rng.random() < 0.5 if _scalar(sims[0], path) == "BOOL" else rng.randint(-2, 12)
+                kind = _scalar(sims[0], path)
+                value = rng.random() < 0.5 if kind == "BOOL" else rng.randint(0 if kind.startswith("U") else -2, 12)
                 for sim in sims:
                     sim.write(path, value)
         rows = []
