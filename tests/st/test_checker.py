@@ -192,3 +192,16 @@ def test_enum_used_in_a_struct_is_not_ambiguous_and_typed_enum_literals_are_case
     main = Pou(name="Main", kind="program", language="st", declarations="VAR x : TColor; r : TRec; END_VAR",
                body="x := red; r.c := blue;\nCASE x OF TColor#blue: x := green; red: x := blue; END_CASE;")
     assert check_project(Project(name="p", types=types, pous=[main])).diagnostics == []
+
+
+@pytest.mark.parametrize("name, expected", [
+    ("a__b", ("error", "ST-NAME", "'a__b' is not a valid identifier: IEC identifiers may not contain two '_' in a row")),
+    ("__x", ("error", "ST-NAME", "'__x' is not a valid identifier: IEC identifiers may not contain two '_' in a row")),
+    ("x" * 65, ("error", "ST-NAME", f"'{'x' * 65}' is not a valid identifier: at most 64 characters")),
+    ("c_", ("warning", "ST-NAME", "'c_' ends with '_', which IEC 61131-3 edition 2 does not allow")),
+    ("x" * 64, None),
+])
+def test_lex13_lex15_identifier_rules_on_declarations(name, expected):
+    main = Pou(name="Main", kind="program", language="st", declarations=f"VAR {name} : INT; END_VAR", body="")
+    found = [(d.severity, d.code, d.message) for d in check_project(Project(name="p", pous=[main])).diagnostics]
+    assert found == ([expected] if expected else [])

@@ -11,6 +11,7 @@ from __future__ import annotations
 from typing import Any
 
 from ..model.diagnostics import Diagnostic
+from ..model.names import pou_name_problem
 from ..model.project import Project
 from . import ast, stdlib
 from . import types as t
@@ -106,6 +107,7 @@ class ProjectChecker:
                     report("ST-DUPLICATE", f"the type name '{decl.name}' is already in use", decl)
                     continue
                 self.type_decls[upper] = decl
+                check_identifier(decl.name, decl, report)
         for upper in self.type_decls:
             self._typedef(upper)
         checker = BodyChecker(self.result, None, report)
@@ -274,6 +276,8 @@ class ProjectChecker:
                 typedef = self.result.types.get(decl.type.name.upper())
                 init = typedef.init if typedef is not None else None
             for name in decl.names:
+                if name.name:
+                    check_identifier(name.name, name, report)
                 key = (name.name or name.address or "").upper()
                 if key in table:
                     report("ST-DUPLICATE", f"'{name.name or name.address}' is declared twice", name)
@@ -409,6 +413,16 @@ def _field_type(ty: Type, name: str) -> Type | None:
 def check_project(project: Project) -> CheckResult:
     """Parse and check every text of ``project``; see ``CheckResult`` for what is resolved."""
     return ProjectChecker(project).run()
+
+
+def check_identifier(name: str, node: Any, report: Reporter) -> None:
+    """LEX-13/LEX-15: no two '_' in a row, at most 64 characters; a trailing '_' only warns (IEC ed. 2 forbids it)."""
+    problem = pou_name_problem(name)
+    if problem:
+        report("ST-NAME", f"'{name}' is not a valid identifier: {problem}", node)
+    elif name.endswith("_"):
+        report("ST-NAME", f"'{name}' ends with '_', which IEC 61131-3 edition 2 does not allow", node,
+               severity="warning")
 
 
 def check_operand(result_or_scope: CheckResult | Project, pou_name: str, text: str,
