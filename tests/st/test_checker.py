@@ -205,3 +205,13 @@ def test_lex13_lex15_identifier_rules_on_declarations(name, expected):
     main = Pou(name="Main", kind="program", language="st", declarations=f"VAR {name} : INT; END_VAR", body="")
     found = [(d.severity, d.code, d.message) for d in check_project(Project(name="p", pous=[main])).diagnostics]
     assert found == ([expected] if expected else [])
+
+
+def test_fb_instance_initialised_before_its_fb_is_declared():
+    """VAR-13: ``f : Fb := (n := 4)`` checks the same whatever the order of the POUs."""
+    main = Pou(name="Main", kind="program", language="st", declarations="VAR f : Fb := (n := 4); END_VAR", body="f();")
+    fb = Pou(name="Fb", kind="function_block", language="st", declarations="VAR_INPUT n : INT; END_VAR", body="")
+    for pous in ([main, fb], [fb, main]):
+        assert check_project(Project(name="p", pous=pous)).diagnostics == []
+    bad = main.model_copy(update={"declarations": "VAR f : Fb := (m := 4); END_VAR"})
+    assert [d.code for d in check_project(Project(name="p", pous=[bad, fb])).diagnostics] == ["ST-UNKNOWN-MEMBER"]

@@ -70,6 +70,8 @@ class ProjectChecker:
         for pou in self.project.pous:
             self._declare_pou(pou, declarations[pou.name])
         for pou in self.project.pous:
+            self._check_initial_values(pou)
+        for pou in self.project.pous:
             info = self.result.pous.get(pou.name.upper())
             if info is not None and info.language == "st" and bodies.get(pou.name) is not None:
                 self._check_body(info, bodies[pou.name])
@@ -260,10 +262,19 @@ class ProjectChecker:
                 report("ST-DECL", f"{block.kind} is not allowed in a {info.kind.lower().replace('_', ' ')} (VAR-11)", block)
             self._declare_block(block, info.symbols, checker, info)
         for symbol in info.symbols.values():
-            if symbol.init is not None:
-                check_init(checker, symbol.type, symbol.init)
             if isinstance(symbol.type, t.FbType) and symbol.type.pou is not None:
                 info.calls.add(symbol.type.pou.name.upper())
+
+    def _check_initial_values(self, pou) -> None:
+        """After every POU is declared, so an FB instance may be initialised (``f : Fb := (n := 4)``) whatever
+        the order of the POUs."""
+        info = self.result.pous.get(pou.name.upper())
+        if info is None or info.name != pou.name:
+            return
+        checker = BodyChecker(self.result, info, self._reporter(f"{pou.name}/declarations", pou.name))
+        for symbol in info.symbols.values():
+            if symbol.init is not None:
+                check_init(checker, symbol.type, symbol.init)
 
     def _declare_block(self, block: ast.VarBlock, table: dict[str, Symbol], checker: BodyChecker,
                        pou: PouInfo | None) -> None:
