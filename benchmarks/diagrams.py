@@ -79,11 +79,11 @@ def project(language: str, networks: int) -> Project:
 
 
 def per_scan_us(sim: Simulation, scans: int) -> float:
+    for n in range(0, NETWORKS, 3):  # a third of the rungs conduct: their timers, counters and adders run
+        sim.write(f"Main.A{n}", True)
     sim.cycle(5)  # warm up the interpreter's specialisation
     samples = []
     for _ in range(scans):
-        for n in range(0, NETWORKS, 7):  # change inputs, so the rungs switch
-            sim.write(f"Main.A{n}", not sim.read(f"Main.A{n}"))
         before = time.perf_counter()
         sim.cycle(1)
         samples.append((time.perf_counter() - before) * 1e6)
