@@ -22,7 +22,7 @@ from tests.ir.diagram_support import (
     rung,
 )
 
-DECL = ("VAR a, b : BOOL; n : INT; t1 : TON; c1 : CTU; END_VAR VAR CONSTANT kc : BOOL := TRUE; END_VAR "
+DECL = ("VAR a, b : BOOL; n : INT; w : WORD; t1 : TON; c1 : CTU; END_VAR VAR CONSTANT kc : BOOL := TRUE; END_VAR "
         "VAR_INPUT inb : BOOL; END_VAR")
 WHERE = "POU Main, network n1, element"
 
@@ -113,6 +113,10 @@ CASES = {
     "jump feeding a box input": (
         rung("n1", box("x", "TON", instance="t1", PT=[jump("j", "L")])),
         f"{WHERE} j: error LD-CONTROL-POSITION: jump 'j' must be the last element of a branch that ends the rung"),
+    "coil on a bit of a variable": (
+        rung("n1", contact("c", "a"), coil("q", "w.3")),
+        f"{WHERE} q: error LD-BIT-TARGET: coil 'q' cannot write a single bit ('w.3') yet: write a BOOL variable and "
+        "copy it into the bit in ST"),
     "parallel with one branch": (
         rung("n1", parallel("p", [contact("c", "a")]), coil("q", "b")),
         f"{WHERE} p: error LD-PARALLEL: parallel 'p' has 1 branch(es); it needs at least two"),

@@ -233,6 +233,10 @@ class Operands:
         ty = self.checker(at).target(node)
         if ty is t.ERROR or any(d.severity == "error" for d in self.ctx.diagnostics[before:]):
             return None, t.ERROR
+        if isinstance(node, ast.Member) and node.name.isdigit():
+            self.report(at, f"{self.lang}-BIT-TARGET", f"{what} cannot write a single bit ('{text.strip()}') yet: "
+                        "write a BOOL variable and copy it into the bit in ST")
+            return None, t.ERROR
         return self.access(node, at), ty
 
     def bool_target(self, text: str, at: At, what: str) -> Var | None:
