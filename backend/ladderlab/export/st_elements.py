@@ -59,6 +59,14 @@ def formal_args(callee: Callee, inputs: dict[str, Any]) -> list[ast.Arg]:
     return [ast.Arg(spelled(callee, pin), inputs[pin]) for pin in sorted(inputs, key=callee.rank)]
 
 
+def function_call(callee: Callee, inputs: dict[str, Any]) -> Any:
+    """A function box's call: the formal call, except NOT, which ST has only as the operator (``NOT(IN := x)``
+    does not parse) and which never warns."""
+    if callee.std_function is not None and callee.name == "NOT":
+        return ast.Unary("NOT", next(iter(inputs.values())))
+    return ast.Call(ast.Name(callee.name), formal_args(callee, inputs))
+
+
 def output_pin(callee: Callee, instance: Any, pin: str) -> ast.Member:
     return ast.Member(instance, spelled(callee, pin))
 
@@ -138,15 +146,15 @@ class PouScope:
             body = [ast.CallStmt(ast.Call(name, args))]
             code.step(_guard(en, body), element, writes)
             return None
-        if en is None or callee.pou is not None or eno_hint is None:
-            code.step(_guard(en, [_result(target, ast.Call(name, args))]), element, writes)
+        if en is None or callee.pou is not None or eno_hint is None or callee.name == "NOT":
+            code.step(_guard(en, _result(target, function_call(callee, inputs))), element, writes)
             return None
         eno = self.declarations.names.fresh(f"{eno_hint}_ENO")
         flagged = _result(target, ast.Call(name, [*args, ast.Arg("ENO", ast.Name(eno), output=True)]))
-        full = [flagged] if en == TRUE else [ast.If([(en, [flagged])], [ast.Assign(ast.Name(eno), FALSE)])]
+        full = flagged if en == TRUE else [ast.If([(en, flagged)], [ast.Assign(ast.Name(eno), FALSE)])]
         eno_value = Value(ast.Name(eno), element, eno)
         code.step(full, element, writes | {eno.upper()} if writes is not None else None, optional=eno_value,
-                  without=_guard(en, [_result(target, ast.Call(name, args))]), declare=(eno, "BOOL", "VAR_TEMP"))
+                  without=_guard(en, _result(target, ast.Call(name, args))), declare=(eno, "BOOL", "VAR_TEMP"))
         code.ops.append(eno_value)
         return eno_value
 
@@ -158,9 +166,12 @@ def _edge(rising: bool, clock: Any, memory: ast.Name) -> Any:
 
 
 def _guard(en: Any, body: list[Any]) -> list[Any]:
-    return body if en is None or en == TRUE else [ast.If([(en, body)])]
+    return body if en is None or en == TRUE or not body else [ast.If([(en, body)])]
 
 
-def _result(target: Any, call: ast.Call) -> Any:
-    return ast.Assign(target, call) if target is not None else ast.CallStmt(call)
+def _result(target: Any, call: Any) -> list[Any]:
+    """``target := call``, or the call alone when its result is not used (nothing for NOT: no call to make)."""
+    if target is not None:
+        return [ast.Assign(target, call)]
+    return [ast.CallStmt(call)] if isinstance(call, ast.Call) else []
 

@@ -23,7 +23,7 @@ from ..ir.lower_fbd import _root_names  # the variable an output node writes, ex
 from ..model import fbd
 from ..st import ast
 from ..st.checker import check_operand
-from .st_elements import PouScope, callee_of, formal_args, operand, output_pin
+from .st_elements import PouScope, callee_of, function_call, operand, output_pin
 from .st_network import TRUE, Control, NetworkCode, Use, Value
 
 
@@ -154,7 +154,7 @@ class _Network:
             operands = [args[pin] for pin in sorted(args, key=callee.rank)]
             call = _operator(callee.name, operands, result_type) if callee.pou is None else None
             if call is None:
-                call = ast.Call(ast.Name(callee.name), formal_args(callee, args))
+                call = function_call(callee, args)
             pins["OUT"] = code.value(call, node.id, f"{node.id}_OUT", type=result_type, effect=callee.pou is not None)
         else:
             target = None

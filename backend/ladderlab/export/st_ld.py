@@ -18,7 +18,7 @@ from typing import Any
 from ..ir.diagram_checks import canonical_label
 from ..model import ld
 from ..st import ast
-from .st_elements import PouScope, callee_of, formal_args, operand, output_pin
+from .st_elements import PouScope, callee_of, function_call, operand, output_pin
 from .st_network import TRUE, Control, NetworkCode, Use, Value, conjunction, disjunction
 
 _COMPARE = {"GT": ">", "GE": ">=", "EQ": "=", "LE": "<=", "LT": "<", "NE": "<>"}
@@ -126,9 +126,9 @@ class _Rung:
             free = next(pin for pin in callee.bool_inputs() if pin not in inputs)
             inputs[free] = self.expr(power, box.id)
         if not callee.is_fb and target is None and not box.en and callee.pou is None:
-            return Power(code.value(ast.Call(ast.Name(callee.name), formal_args(callee, inputs)), box.id, box.id))
+            return Power(code.value(function_call(callee, inputs), box.id, box.id))
         if not callee.is_fb and target is None and not box.en:  # a user function: run where the box is
-            return Power(code.value(ast.Call(ast.Name(callee.name), formal_args(callee, inputs)), box.id, box.id,
+            return Power(code.value(function_call(callee, inputs), box.id, box.id,
                                     effect=True))
         eno = scope.call(code, callee, instance, inputs, outputs, en, box.id, target, eno_hint=box.id)
         if box.en:
