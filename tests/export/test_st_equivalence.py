@@ -17,7 +17,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 import tests.ir.test_diagram_equivalence as generated
-from ladderlab.model import fbd, ld
+from ladderlab.model import ld
 from ladderlab.model.project import Pou
 from ladderlab.storage.load import load_project_path
 from tests.export.st_support import as_st, same_traces

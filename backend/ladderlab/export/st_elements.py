@@ -18,7 +18,7 @@ from ..ir.diagram_calls import Callee
 from ..st import ast, stdlib
 from ..st.parser import parse_expression
 from ..st.symbols import CheckResult, PouInfo
-from .st_network import TRUE, Declarations, NetworkCode, Use, Value, root_name
+from .st_network import TRUE, Declarations, NetworkCode, Value, root_name
 
 FALSE = ast.BoolLit(False)
 

@@ -24,7 +24,7 @@ from ..model import fbd
 from ..st import ast
 from ..st.checker import check_operand
 from .st_elements import PouScope, callee_of, function_call, operand, output_pin
-from .st_network import TRUE, Control, NetworkCode, Use, Value
+from .st_network import Control, NetworkCode, Use, Value
 
 
 @dataclass(frozen=True)
