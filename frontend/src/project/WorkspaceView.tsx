@@ -17,6 +17,9 @@ import { StView } from "../stview/StView";
 import { DeclarationsEditor } from "../declarations/DeclarationsEditor";
 import { ELEMENTARY_TYPES, userTypeNames } from "../declarations/model";
 import { pouOf, useWorkspace, workspaceStore } from "./store";
+import { ExportMenu } from "../interchange/ExportMenu";
+import { ImportPlcopen } from "../interchange/ImportPlcopen";
+import { appStore } from "../store";
 
 const KINDS: { kind: Pou["kind"]; title: string }[] = [
   { kind: "program", title: "Programs" },
@@ -414,6 +417,8 @@ export function WorkspaceView() {
             Save failed: {saveError}
           </span>
         ) : null}
+        {name ? <ExportMenu project={name} pou={active} unsaved={changed.length > 0} /> : null}
+        <ImportPlcopen onStored={() => void appStore.getState().loadProjects()} onOpen={(imported) => appStore.getState().selectProject(imported)} />
       </div>
       <SimulationBar />
       <ProjectTree />

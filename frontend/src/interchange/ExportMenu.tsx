@@ -1,0 +1,58 @@
+// Export of the saved project: as PLCopen XML, as one ST file, and the active POU as ST. The
+// server exports the saved version, so unsaved changes are called out before the download.
+import { useState } from "react";
+import { interchangeApi, type InterchangeApi } from "./api";
+import { downloadText } from "./download";
+import { failure } from "./outcome";
+import { Problems, type Outcome } from "./Problems";
+
+export interface ExportMenuProps {
+  project: string;
+  /** The POU in the active tab, offered for a single-POU ST export. */
+  pou: string | null;
+  unsaved: boolean;
+  api?: InterchangeApi;
+  download?: typeof downloadText;
+}
+
+export function ExportMenu({ project, pou, unsaved, api = interchangeApi, download = downloadText }: ExportMenuProps) {
+  const [busy, setBusy] = useState(false);
+  const [outcome, setOutcome] = useState<Outcome | null>(null);
+  const run = async (what: string, fileName: string, get: () => Promise<{ text: string; type: string }>) => {
+    setBusy(true);
+    setOutcome(null);
+    try {
+      const { text, type } = await get();
+      download(fileName, text, type);
+    } catch (err) {
+      setOutcome(failure(what, err));
+    } finally {
+      setBusy(false);
+    }
+  };
+  const st = (p: Promise<{ text: string }>) => p.then((r) => ({ text: r.text, type: "text/plain;charset=utf-8" }));
+  return (
+    <div className="export-menu" role="group" aria-label="Export">
+      <span className="export-label">Export{unsaved ? " (saved version)" : ""}:</span>
+      <button type="button" disabled={busy} onClick={() => void run("PLCopen XML export", `${project}.xml`, () => api.exportPlcopen(project).then((text) => ({ text, type: "application/xml" })))}>
+        PLCopen XML
+      </button>
+      <button type="button" disabled={busy} onClick={() => void run("ST export", `${project}.st`, () => st(api.exportProjectSt(project)))}>
+        Project as ST
+      </button>
+      {pou ? (
+        <button type="button" disabled={busy} onClick={() => void run(`ST export of ${pou}`, `${pou}.st`, () => st(api.exportPouSt(project, pou)))}>
+          {pou} as ST
+        </button>
+      ) : null}
+      {outcome ? (
+        <div className="export-outcome">
+          <Problems outcome={outcome} />
+          <button type="button" className="link" onClick={() => setOutcome(null)}>
+            Dismiss
+          </button>
+        </div>
+      ) : null}
+    </div>
+  );
+}
