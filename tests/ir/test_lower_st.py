@@ -93,7 +93,7 @@ def test_if_elsif_else_st27():
     assert statements == [ir.If(
         [(ir.Binary("GE", code, const(100, INT), BOOL), [ir.Assign(result, const(2, INT), at(3, 21, 3, 32))]),
          (ir.Binary("GE", code, const(10, INT), BOOL), [ir.Assign(result, const(1, INT), at(4, 23, 4, 34))])],
-        [ir.Assign(result, const(0, INT), at(5, 6, 5, 17))], at(3, 1, 5, 17))]  # spans end at the last statement
+        [ir.Assign(result, const(0, INT), at(5, 6, 5, 17))], at(3, 1, 5, 25))]  # the span ends with END_IF
 
 
 def test_case_with_lists_ranges_constants_and_enums_st28():
@@ -109,11 +109,11 @@ def test_case_with_lists_ranges_constants_and_enums_st28():
             ([20, 77], [ir.Assign(r, const(1, INT), at(4, 9, 4, 15))]),
             ([(21, 55), 100], [ir.Assign(r, const(2, INT), at(5, 18, 5, 24))]),
             ([(-5, -1)], [ir.Assign(r, const(3, INT), at(6, 9, 6, 15))]),
-        ], [ir.Assign(r, const(4, INT), at(7, 6, 7, 12))], at(3, 1, 7, 12)),
+        ], [ir.Assign(r, const(4, INT), at(7, 6, 7, 12))], at(3, 1, 8, 9)),
         ir.Case(local("C", color), [
             ([0], [ir.Assign(r, const(0, INT), at(9, 16, 9, 22))]),
             ([6], [ir.Assign(r, const(6, INT), at(9, 30, 9, 36))]),
-        ], [], at(9, 1, 9, 36)),
+        ], [], at(9, 1, 9, 46)),
     ]
 
 
@@ -124,8 +124,8 @@ def test_for_loops_with_and_without_by_and_exit_st30():
         ir.For(I, const(1, INT), local("N", INT), const(2, INT), [
             ir.Assign(D, ir.Binary("ADD", D, const(1, DINT), DINT), at(3, 25, 3, 35)),
             ir.Exit(at(3, 37, 3, 41)),
-        ], at(3, 1, 3, 41)),
-        ir.For(D, const(10, DINT), const(1, DINT), const(-1, DINT), [], at(4, 1, 4, 28)),  # the empty statement is dropped
+        ], at(3, 1, 3, 50)),
+        ir.For(D, const(10, DINT), const(1, DINT), const(-1, DINT), [], at(4, 1, 4, 36)),  # the empty statement is dropped
     ]
 
 
@@ -140,10 +140,10 @@ def test_while_repeat_return_st32_st36():
                               "IF b THEN RETURN; END_IF;")
     assert statements == [
         ir.While(ir.Binary("LT", I, const(10, INT), BOOL),
-                 [ir.Assign(I, ir.Binary("ADD", I, const(1, INT), INT), at(3, 17, 3, 27))], at(3, 1, 3, 27)),
+                 [ir.Assign(I, ir.Binary("ADD", I, const(1, INT), INT), at(3, 17, 3, 27))], at(3, 1, 3, 38)),
         ir.Repeat([ir.Assign(I, ir.Binary("SUB", I, const(1, INT), INT), at(4, 8, 4, 18))],
-                  ir.Binary("LE", I, const(0, INT), BOOL), at(4, 1, 4, 32)),
-        ir.If([(B, [ir.Return(at(5, 11, 5, 17))])], [], at(5, 1, 5, 17)),
+                  ir.Binary("LE", I, const(0, INT), BOOL), at(4, 1, 4, 43)),
+        ir.If([(B, [ir.Return(at(5, 11, 5, 17))])], [], at(5, 1, 5, 25)),
     ]
 
 
@@ -194,7 +194,7 @@ END_FUNCTION_BLOCK""")
         ir.Assign(down_m, down, bare),
         ir.If([(ir.Binary("OR", up_e, down_e, BOOL), [ir.Assign(n, ir.Binary("ADD", n, const(1, INT), INT),
                                                                   at(4, 20, 4, 30, "EDGES"))])], [],
-              at(4, 1, 4, 30, "EDGES")),
+              at(4, 1, 4, 38, "EDGES")),
     ]
 
 

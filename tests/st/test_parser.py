@@ -357,3 +357,14 @@ def test_garbage_gives_diagnostics_not_exceptions(text):
     for parse in (parse_source, parse_pou, parse_declarations, parse_statements, parse_expression):
         result = parse(text)
         assert result.diagnostics and all(d.code == "ST-PARSE" and d.line for d in result.diagnostics)
+
+
+def test_compound_statement_spans_end_with_their_end_keyword():
+    """Spans of IF/CASE/FOR/WHILE/REPEAT cover their END_x (breakpoints and monitoring highlight the whole statement)."""
+    from ladderlab.st.parser import parse_statements
+
+    result = parse_statements("IF a THEN\n  b := 1;\nEND_IF;\nWHILE a DO\n x:=1;\nEND_WHILE;\n"
+                              "CASE x OF 1: y := 2; END_CASE;\nFOR i := 1 TO 2 DO END_FOR;\n"
+                              "REPEAT x := 1; UNTIL TRUE END_REPEAT;")
+    assert [(s.span.line, s.span.end_line, s.span.end_column) for s in result.ast] == [
+        (1, 3, 7), (4, 6, 10), (7, 7, 30), (8, 8, 27), (9, 9, 37)]

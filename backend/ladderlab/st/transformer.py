@@ -210,11 +210,12 @@ class AstBuilder(Transformer):
         return ast.CallStmt(c[0], span_of(c))
 
     def if_statement(self, c):
+        c, end = c[:-1], c[-1]  # the END_x keyword, kept so the span covers it
         else_part = c[-1]
         middle = c[2:-1]
         body = [x for x in middle if not isinstance(x, tuple)]
         branches = [(c[1], body)] + [x for x in middle if isinstance(x, tuple)]
-        return ast.If(branches, list(else_part) if else_part is not None else None, span_of(c))
+        return ast.If(branches, list(else_part) if else_part is not None else None, span_of([c, end]))
 
     def elsif_part(self, c):
         return (c[1], c[2:])
@@ -225,6 +226,7 @@ class AstBuilder(Transformer):
         return part
 
     def case_statement(self, c):
+        c, end = c[:-1], c[-1]  # the END_x keyword, kept so the span covers it
         else_part = c[-1]
         branches: list[ast.CaseBranch] = []
         for item in c[2:-1]:
@@ -236,7 +238,7 @@ class AstBuilder(Transformer):
                 branches[-1].body.append(item)
         for branch in branches:
             branch.span = span_of([branch.span, branch.body])
-        return ast.Case(c[1], branches, list(else_part) if else_part is not None else None, span_of(c))
+        return ast.Case(c[1], branches, list(else_part) if else_part is not None else None, span_of([c, end]))
 
     def case_labels(self, c):
         labels = _Labels(c)
@@ -247,14 +249,17 @@ class AstBuilder(Transformer):
         return ast.CaseRange(c[0], c[1], span_of(c))
 
     def for_statement(self, c):
+        c, end = c[:-1], c[-1]  # the END_x keyword, kept so the span covers it
         var = ast.Name(str(c[1]), span_of(c[1]))
-        return ast.For(var, c[2], c[3], c[4], c[5:], span_of(c))
+        return ast.For(var, c[2], c[3], c[4], c[5:], span_of([c, end]))
 
     def while_statement(self, c):
-        return ast.While(c[1], c[2:], span_of(c))
+        c, end = c[:-1], c[-1]  # the END_x keyword, kept so the span covers it
+        return ast.While(c[1], c[2:], span_of([c, end]))
 
     def repeat_statement(self, c):
-        return ast.Repeat(c[1:-1], c[-1], span_of(c))
+        c, end = c[:-1], c[-1]  # the END_x keyword, kept so the span covers it
+        return ast.Repeat(c[1:-1], c[-1], span_of([c, end]))
 
     def exit_statement(self, c):
         return ast.Exit(span_of(c))
