@@ -1,4 +1,6 @@
-import { fireEvent, render, screen, within } from "@testing-library/react";
+import { diagnosticCount } from "@codemirror/lint";
+import { EditorView } from "@codemirror/view";
+import { act, fireEvent, render, screen, waitFor, within } from "@testing-library/react";
 import { beforeEach, describe, expect, it, vi } from "vitest";
 import App from "../App";
 import { appStore, initialData } from "../store";
@@ -24,6 +26,7 @@ function serve(put: () => Response) {
     if (url === "/api/projects/plant" && init?.method === "PUT") return put();
     if (url === "/api/projects/plant") return json({ name: "plant", revision: "r1", modified: "2024-05-01T10:00:00Z", project });
     if (url.startsWith("/api/library")) return json([]);
+    if (url.endsWith("/check")) return json({ diagnostics: [{ code: "ST-E", message: "expected ';'", file: "Blinker/body", line: 1, column: 1, severity: "error" }] });
     if (url.endsWith("/symbols")) return json({ pou: "Main", symbols: [], globals: [], diagnostics: [] });
     throw new Error(`unexpected fetch ${url}`);
   });
@@ -96,10 +99,17 @@ describe("app shell", () => {
     expect(screen.queryByRole("alertdialog")).toBeNull();
   });
 
-  it("shows a placeholder for languages whose editor comes later", async () => {
-    serve(() => json({}));
+  it("opens an ST POU in the ST editor, underlines the saved check and marks edits unsaved (issue 9)", async () => {
+    const fetchMock = serve(() => json({}));
     const tree = await openPlant();
     fireEvent.click(within(tree).getByRole("button", { name: /Blinker/ }));
-    expect(screen.getByText(/The ST editor is not built yet/)).toBeTruthy();
+    const content = screen.getByLabelText("Blinker body");
+    const view = EditorView.findFromDOM(content)!;
+    await waitFor(() => expect(fetchMock.mock.calls.some(([url]) => String(url) === "/api/projects/plant/check")).toBe(true));
+    await waitFor(() => expect(diagnosticCount(view.state)).toBe(1));
+    act(() => view.dispatch({ changes: { from: 0, insert: "Q := TRUE;" } }));
+    expect(workspaceStore.getState().project?.pous?.find((p) => p.name === "Blinker")?.body).toBe("Q := TRUE;");
+    expect(workspaceStore.getState().changed).toEqual(["Blinker"]);
+    expect(screen.getByRole("tab", { name: /Blinker/ }).textContent).toContain("●");
   });
 });

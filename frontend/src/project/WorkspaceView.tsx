@@ -20,6 +20,9 @@ import { pouOf, useWorkspace, workspaceStore } from "./store";
 import { ExportMenu } from "../interchange/ExportMenu";
 import { ImportPlcopen } from "../interchange/ImportPlcopen";
 import { appStore } from "../store";
+import { StEditor } from "../st/StEditor";
+import { stCompletions } from "../st/completion";
+import { useSavedCheck } from "../st/useSavedCheck";
 
 const KINDS: { kind: Pou["kind"]; title: string }[] = [
   { kind: "program", title: "Programs" },
@@ -237,6 +240,28 @@ function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
   );
 }
 
+/** The body of an ST POU in the ST editor, with the saved project's check as underlines. */
+function StPouView({ pou, project, unsaved }: { pou: Pou; project: string; unsaved: boolean }) {
+  const setStBody = useWorkspace((s) => s.setStBody);
+  const library = useWorkspace((s) => s.library);
+  const revision = useWorkspace((s) => s.revision);
+  const table = useWorkspace((s) => s.symbols[pou.name]);
+  const phase = useOnline((s) => s.phase);
+  const diagnostics = useSavedCheck(project, revision, unsaved);
+  const completions = useMemo(() => stCompletions(symbolsOf(table), library), [table, library]);
+  return (
+    <StEditor
+      text={typeof pou.body === "string" ? pou.body : ""}
+      onChange={(text) => setStBody(pou.name, text)}
+      file={`${pou.name}/body`}
+      diagnostics={diagnostics}
+      completions={completions}
+      readOnly={phase === "offline" ? null : "Online: go offline to edit."}
+      label={`${pou.name} body`}
+    />
+  );
+}
+
 type PouMode = "body" | "declarations" | "st";
 
 /** Declarations of one POU with the types to offer and the problems of its declaration text. */
@@ -286,6 +311,8 @@ function PouView({ name }: { name: string }) {
     content = <PouDeclarations pou={pou} readOnly={readOnly} focus={focus?.part === "declarations" && focus.line != null ? { line: focus.line, seq: focus.seq } : null} />;
   } else if (mode === "st") {
     content = <StView project={project} pou={name} unsaved={unsaved} onRevealNetwork={(network) => panelsStore.getState().reveal({ pou: name, network })} />;
+  } else if (pou.language === "st") {
+    content = <StPouView pou={pou} project={project} unsaved={unsaved} />;
   } else if (pou.language === "ld" && history) {
     content = <LdPouView pou={pou} history={history} />;
   } else {

@@ -40,6 +40,8 @@ export interface WorkspaceActions {
   declare(pou: string, declaration: VariableDeclaration): void;
   /** Replaces the declaration text of a POU (the declarations table and text view). */
   setDeclarations(pou: string, text: string): void;
+  /** The new text of an ST POU's body (marks it unsaved and keeps a draft, like any edit). */
+  setStBody(pou: string, text: string): void;
   /** Adds a new, empty POU to the working copy and opens it; an error message when the name is refused. */
   addPou(name: string, kind: Pou["kind"], language: Pou["language"]): string | null;
   /** Saves the working copy; `overwrite` saves over the revision a conflict reported. */
@@ -165,6 +167,11 @@ export function createWorkspaceStore(api: ProjectApi = projectApi, storage: Stor
       setDeclarations(pou, text) {
         if (pouOf(get().project, pou)?.declarations === text) return;
         replacePou(pou, (p) => ({ ...p, declarations: text }));
+      },
+
+      setStBody(pou, text) {
+        if (pouOf(get().project, pou)?.body === text) return;
+        replacePou(pou, (p) => ({ ...p, body: text }));
       },
 
       addPou(text, kind, language) {

@@ -1,0 +1,71 @@
+import { forEachDiagnostic } from "@codemirror/lint";
+import { EditorView } from "@codemirror/view";
+import { act, render, renderHook } from "@testing-library/react";
+import { afterEach, describe, expect, it, vi } from "vitest";
+import type { CheckReport, Diagnostic } from "../generated/api";
+import { StEditor } from "./StEditor";
+import { CHECK_DELAY_MS, useSavedCheck } from "./useSavedCheck";
+
+const viewIn = (container: HTMLElement) => EditorView.findFromDOM(container.querySelector(".cm-editor") as HTMLElement)!;
+const marks = (view: EditorView) => {
+  const out: [number, number, string][] = [];
+  forEachDiagnostic(view.state, (d, from, to) => out.push([from, to, d.message]));
+  return out;
+};
+const unknownY: Diagnostic = { code: "ST-UNKNOWN-VAR", message: "unknown variable 'y'", file: "Main/body", line: 1, column: 6, end_line: 1, end_column: 7 };
+
+afterEach(() => vi.useRealTimers());
+
+describe("StEditor (issue 9: ST editor)", () => {
+  it("reports edits, takes text from outside and underlines the diagnostics of its text", () => {
+    const onChange = vi.fn();
+    const props = { onChange, file: "Main/body", completions: [], readOnly: null, label: "Main body" };
+    const { container, rerender } = render(<StEditor {...props} text="x := y;" diagnostics={[]} />);
+    const view = viewIn(container);
+    expect(view.state.doc.toString()).toBe("x := y;");
+    act(() => view.dispatch({ changes: { from: 0, insert: "  " } }));
+    expect(onChange).toHaveBeenLastCalledWith("  x := y;");
+    rerender(<StEditor {...props} text="a := y;" diagnostics={[unknownY, { ...unknownY, file: "Main/declarations" }]} />);
+    expect(view.state.doc.toString()).toBe("a := y;");
+    expect(marks(view)).toEqual([[5, 6, "ST-UNKNOWN-VAR: unknown variable 'y'"]]);
+    // An edit before the mark moves it with the text.
+    act(() => view.dispatch({ changes: { from: 0, insert: "z := 1;\n" } }));
+    expect(marks(view)).toEqual([[13, 14, "ST-UNKNOWN-VAR: unknown variable 'y'"]]);
+  });
+
+  it("is read-only while online, with the reason shown", () => {
+    const props = { text: "x := 1;", onChange: vi.fn(), file: "Main/body", diagnostics: [], completions: [], label: "Main body" };
+    const { container, rerender, getByText } = render(<StEditor {...props} readOnly="Online: go offline to edit." />);
+    expect(viewIn(container).state.readOnly).toBe(true);
+    getByText("Online: go offline to edit.");
+    rerender(<StEditor {...props} readOnly={null} />);
+    expect(viewIn(container).state.readOnly).toBe(false);
+  });
+});
+
+describe("useSavedCheck (issue 9: debounced diagnostics from POST /check)", () => {
+  it("checks the saved project after a pause, and not while the POU is unsaved", async () => {
+    vi.useFakeTimers();
+    const check = vi.fn(async (): Promise<CheckReport> => ({ diagnostics: [unknownY] }));
+    const { result, rerender } = renderHook(({ revision, unsaved }) => useSavedCheck("plant", revision, unsaved, check), { initialProps: { revision: "r1", unsaved: true } });
+    await act(async () => vi.advanceTimersByTime(CHECK_DELAY_MS * 2));
+    expect(check).not.toHaveBeenCalled();
+    rerender({ revision: "r2", unsaved: false });
+    await act(async () => vi.advanceTimersByTime(CHECK_DELAY_MS - 1));
+    expect(check).not.toHaveBeenCalled();
+    await act(async () => vi.advanceTimersByTime(1));
+    expect(check).toHaveBeenCalledWith("plant");
+    expect(result.current).toEqual([unknownY]);
+  });
+
+  it("drops a result that arrives after the text changed again", async () => {
+    vi.useFakeTimers();
+    let resolve: (r: CheckReport) => void = () => undefined;
+    const check = vi.fn(() => new Promise<CheckReport>((r) => (resolve = r)));
+    const { result, rerender } = renderHook(({ unsaved }) => useSavedCheck("plant", "r1", unsaved, check), { initialProps: { unsaved: false } });
+    await act(async () => vi.advanceTimersByTime(CHECK_DELAY_MS));
+    rerender({ unsaved: true });
+    await act(async () => resolve({ diagnostics: [unknownY] }));
+    expect(result.current).toEqual([]);
+  });
+});

@@ -1,0 +1,90 @@
+// A CodeMirror 6 editor for ST text (a POU body or its declarations): IEC ST highlighting, bracket
+// matching, autocomplete, backend diagnostics as lint underlines. The text is controlled: every
+// edit goes to onChange, and a new `text` from outside (reload, draft restore) replaces the doc.
+import { autocompletion, closeBrackets, closeBracketsKeymap, completionKeymap, type Completion } from "@codemirror/autocomplete";
+import { defaultKeymap, history, historyKeymap, indentWithTab } from "@codemirror/commands";
+import { bracketMatching, defaultHighlightStyle, indentOnInput, syntaxHighlighting } from "@codemirror/language";
+import { lintGutter, setDiagnostics } from "@codemirror/lint";
+import { Compartment, EditorState } from "@codemirror/state";
+import { EditorView, highlightActiveLine, keymap, lineNumbers } from "@codemirror/view";
+import { useEffect, useRef } from "react";
+import type { Diagnostic } from "../generated/api";
+import { stCompletionSource } from "./completion";
+import { stLanguage } from "./language";
+import { lintDiagnostics } from "./lint";
+
+export interface StEditorProps {
+  text: string;
+  onChange(text: string): void;
+  /** Which text the diagnostics must name in `file` (e.g. "Main/body"). */
+  file: string;
+  diagnostics: Diagnostic[];
+  completions: Completion[];
+  /** A reason the text cannot be edited now (online), or null. */
+  readOnly: string | null;
+  label: string;
+}
+
+export function StEditor({ text, onChange, file, diagnostics, completions, readOnly, label }: StEditorProps) {
+  const host = useRef<HTMLDivElement>(null);
+  const view = useRef<EditorView | null>(null);
+  const latest = useRef({ onChange, completions });
+  latest.current = { onChange, completions };
+  const editable = useRef(new Compartment());
+
+  useEffect(() => {
+    const v = new EditorView({
+      parent: host.current!,
+      state: EditorState.create({
+        doc: text,
+        extensions: [
+          lineNumbers(),
+          history(),
+          highlightActiveLine(),
+          indentOnInput(),
+          bracketMatching(),
+          closeBrackets(),
+          stLanguage,
+          syntaxHighlighting(defaultHighlightStyle),
+          autocompletion({ override: [stCompletionSource(() => latest.current.completions)] }),
+          lintGutter(),
+          keymap.of([...closeBracketsKeymap, ...defaultKeymap, ...historyKeymap, ...completionKeymap, indentWithTab]),
+          editable.current.of(EditorState.readOnly.of(readOnly !== null)),
+          EditorView.contentAttributes.of({ "aria-label": label }),
+          EditorView.theme({ "&": { height: "100%" }, ".cm-scroller": { overflow: "auto", fontFamily: "ui-monospace, monospace" } }),
+          EditorView.updateListener.of((u) => {
+            if (u.docChanged) latest.current.onChange(u.state.doc.toString());
+          }),
+        ],
+      }),
+    });
+    view.current = v;
+    return () => {
+      v.destroy();
+      view.current = null;
+    };
+    // The view is created once; later props arrive through the effects below.
+    // eslint-disable-next-line react-hooks/exhaustive-deps
+  }, []);
+
+  useEffect(() => {
+    const v = view.current;
+    if (v && v.state.doc.toString() !== text) v.dispatch({ changes: { from: 0, to: v.state.doc.length, insert: text } });
+  }, [text]);
+
+  useEffect(() => {
+    view.current?.dispatch({ effects: editable.current.reconfigure(EditorState.readOnly.of(readOnly !== null)) });
+  }, [readOnly]);
+
+  useEffect(() => {
+    const v = view.current;
+    if (v) v.dispatch(setDiagnostics(v.state, lintDiagnostics(diagnostics, file, v.state.doc)));
+  }, [diagnostics, file]);
+
+  return (
+    <div className="st-editor" style={{ display: "flex", flexDirection: "column", height: "100%", minHeight: 0 }}>
+      {readOnly ? <p className="st-editor-readonly">{readOnly}</p> : null}
+      <div ref={host} className="st-editor-host" style={{ height: "100%", minHeight: "12rem" }} />
+    </div>
+  );
+}

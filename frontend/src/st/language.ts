@@ -1,0 +1,80 @@
+// IEC 61131-3 Structured Text for CodeMirror 6 as a StreamLanguage (no Lezer grammar): comments
+// ((* *), /* */ and //, block comments span lines), pragmas ({...}), strings, typed and time
+// literals (16#FF, T#5s, INT#3), numbers, keywords, elementary/standard FB types, operators.
+// The token names are CodeMirror's standard tags, so the default highlight style colours them.
+import { StreamLanguage, type StreamParser, type StringStream } from "@codemirror/language";
+
+const words = (text: string) => new Set(text.split(/\s+/));
+
+export const ST_KEYWORDS = words(
+  "PROGRAM END_PROGRAM FUNCTION END_FUNCTION FUNCTION_BLOCK END_FUNCTION_BLOCK VAR VAR_INPUT VAR_OUTPUT VAR_IN_OUT " +
+    "VAR_TEMP VAR_GLOBAL VAR_EXTERNAL END_VAR CONSTANT RETAIN NON_RETAIN AT IF THEN ELSIF ELSE END_IF CASE OF END_CASE " +
+    "FOR TO BY DO END_FOR WHILE END_WHILE REPEAT UNTIL END_REPEAT EXIT CONTINUE RETURN AND OR XOR NOT MOD TYPE END_TYPE " +
+    "STRUCT END_STRUCT ARRAY REF_TO",
+);
+export const ST_TYPES = words(
+  "BOOL SINT INT DINT LINT USINT UINT UDINT ULINT BYTE WORD DWORD LWORD REAL LREAL TIME LTIME DATE TIME_OF_DAY TOD " +
+    "DATE_AND_TIME DT STRING WSTRING CHAR WCHAR TON TOF TP CTU CTD CTUD R_TRIG F_TRIG SR RS",
+);
+const ATOMS = words("TRUE FALSE");
+
+/** Inside a block comment or a pragma that continues on the next line. */
+export interface StState {
+  open: null | "paren" | "slash" | "pragma";
+}
+
+const CLOSER = { paren: "*)", slash: "*/", pragma: "}" } as const;
+
+/** Consumes up to and including `closer`; true when it was found on this line. */
+function skipTo(stream: StringStream, closer: string): boolean {
+  const rest = stream.string.slice(stream.pos);
+  const at = rest.indexOf(closer);
+  if (at < 0) {
+    stream.skipToEnd();
+    return false;
+  }
+  stream.pos += at + closer.length;
+  return true;
+}
+
+export const stParser: StreamParser<StState> = {
+  name: "iec-st",
+  startState: () => ({ open: null }),
+  copyState: (s) => ({ open: s.open }),
+  token(stream, state) {
+    if (state.open) {
+      const kind = state.open;
+      if (skipTo(stream, CLOSER[kind])) state.open = null;
+      return kind === "pragma" ? "meta" : "comment";
+    }
+    if (stream.eatSpace()) return null;
+    if (stream.match("//")) {
+      stream.skipToEnd();
+      return "lineComment";
+    }
+    for (const [opener, kind] of [["(*", "paren"], ["/*", "slash"], ["{", "pragma"]] as const) {
+      if (stream.match(opener)) {
+        if (!skipTo(stream, CLOSER[kind])) state.open = kind;
+        return kind === "pragma" ? "meta" : "comment";
+      }
+    }
+    if (stream.match(/^'(\$.|[^'$])*'?/) || stream.match(/^"(\$.|[^"$])*"?/)) return "string";
+    if (stream.match(/^([A-Za-z_]+|\d+)#[A-Za-z0-9_.:+\-#]+/)) return "number";
+    if (stream.match(/^\d[\d_]*(\.\d[\d_]*)?([eE][+-]?\d+)?/)) return "number";
+    const word = stream.match(/^[A-Za-z_][A-Za-z0-9_]*/) as RegExpMatchArray | null;
+    if (word) {
+      const upper = word[0].toUpperCase();
+      if (ATOMS.has(upper)) return "atom";
+      if (ST_KEYWORDS.has(upper)) return "keyword";
+      if (ST_TYPES.has(upper)) return "typeName";
+      return "variableName";
+    }
+    if (stream.match(/^(:=|=>|<=|>=|<>|\*\*|[-+*/=<>&^])/)) return "operator";
+    if (stream.match(/^[()[\]]/)) return "bracket";
+    stream.next();
+    return "punctuation";
+  },
+  languageData: { commentTokens: { line: "//", block: { open: "(*", close: "*)" } } },
+};
+
+export const stLanguage = StreamLanguage.define(stParser);
