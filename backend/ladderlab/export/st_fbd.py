@@ -19,7 +19,7 @@ from ..ir import nodes as ir
 from ..ir import types as irt
 from ..ir.diagram_checks import canonical_label
 from ..ir.fbd_order import analyse
-from ..ir.lower_fbd import _root_names  # the variable an output node writes, exactly as the lowering sees it
+from ..ir.lower_fbd import root_names  # the variable an output node writes, exactly as the lowering sees it
 from ..model import fbd
 from ..st import ast
 from ..st.checker import check_operand
@@ -50,7 +50,7 @@ class _Network:
         self.enables: dict[str, PinValue] = {}
         self.result_types = _result_types(lowered, network.id)
         self.written = {name for node in graph.nodes.values() if isinstance(node, fbd.OutputNode)
-                        for name in _root_names(node.var)}
+                        for name in root_names(node.var)}
         self.consumed = {(s.node, s.pin) for sources in graph.inputs.values() for s in sources.values()}
         for node_id in graph.order:
             node = graph.nodes[node_id]

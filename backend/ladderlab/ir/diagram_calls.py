@@ -19,7 +19,7 @@ from ..st import types as t
 from ..st.symbols import PouInfo, did_you_mean
 from .diagram_operands import At, Operands
 from .lower_expr import lower_en_eno, std_call, user_call
-from .lower_st import _fb_call  # the FB call of an ST statement; a box is lowered exactly the same way
+from .lower_st import lower_fb_call  # a box is lowered exactly like the FB call of an ST statement
 from .lower_types import LoweringError
 from .nodes import Expr, FnCall, If, Origin, Stmt, Var
 
@@ -205,7 +205,7 @@ def lower_call(ops: Operands, callee: Callee, node: ast.Call, result: Var | None
     output copies an ST call would have); None when the engine cannot run it (reported)."""
     try:
         if callee.is_fb:
-            return [_located(s, origin) for s in _fb_call(node, ops.ctx, origin)]
+            return [_located(s, origin) for s in lower_fb_call(node, ops.ctx, origin)]
         call = std_call(node, ops.ctx) if callee.std_function is not None else user_call(node, ops.ctx)
         en, eno, after = lower_en_eno(node, ops.ctx)
     except LoweringError as error:

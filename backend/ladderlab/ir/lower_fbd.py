@@ -61,7 +61,7 @@ class _Network:
         self.ops.new_network()
         self.graph = graph = analyse(self.network, self.ctx.report)
         self.written = {name for node in graph.nodes.values() if isinstance(node, fbd.OutputNode)
-                        for name in _root_names(node.var)}
+                        for name in root_names(node.var)}
         for node in graph.nodes.values():
             if isinstance(node, fbd.Block):
                 self.callees[node.id] = resolve_callee(self.ops, node.call, node.instance, self.at(node.id))
@@ -331,7 +331,7 @@ class _Network:
         self.out += [If([(condition, probes)], [], origin)] if condition != TRUE else probes
 
 
-def _root_names(text: str) -> set[str]:
+def root_names(text: str) -> set[str]:
     """The variable an output node's operand writes: the name it starts with (``x``, ``x.f``, ``a[i]``)."""
     match = _ROOT.match(text)
     return {match.group(1).upper()} if match else set()

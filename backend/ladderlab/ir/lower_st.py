@@ -124,7 +124,7 @@ def _call_statement(statement: ast.CallStmt, ctx: PouContext) -> list[Stmt]:
     if not isinstance(call, ast.Call):
         raise LoweringError(None)
     if isinstance(call.ref, Symbol):
-        return _fb_call(call, ctx, ctx.origin(statement))
+        return lower_fb_call(call, ctx, ctx.origin(statement))
     if not _is_function(call.ref):
         refuse_unsupported_call(call)
         raise LoweringError(None)
@@ -145,7 +145,7 @@ def _function_call(call: ast.Call, ctx: PouContext) -> Call:
     return std_call(call, ctx) if isinstance(call.ref, stdlib.StdFunction) else user_call(call, ctx)
 
 
-def _fb_call(call: ast.Call, ctx: PouContext, origin: Origin) -> list[Stmt]:
+def lower_fb_call(call: ast.Call, ctx: PouContext, origin: Origin) -> list[Stmt]:
     """``inst(IN := x, PT := T#5s, Q => y)``: inputs by name, ``=>`` outputs copied out after the call.
 
     An output that needs a conversion or is negated (``NOT Q => y``) becomes an
