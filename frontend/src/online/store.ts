@@ -60,6 +60,8 @@ export interface OnlineActions {
   addWatch(path: string): void;
   removeWatch(path: string): void;
   setInstance(pou: string, instance: string): void;
+  /** Sends any client message (breakpoints, continue, step); false and a log line when not connected. */
+  send(msg: ClientMessage): boolean;
 }
 
 export type OnlineState = OnlineData & OnlineActions;
@@ -242,6 +244,8 @@ export function createOnlineStore(api: SimulationApi = simulationApi, openSocket
       setInstance(pou, instance) {
         set({ instances: { ...get().instances, [pou]: pathKey(instance) } });
       },
+
+      send,
 
       removeWatch(path) {
         set({ watch: get().watch.filter((p) => pathKey(p) !== pathKey(path)) });

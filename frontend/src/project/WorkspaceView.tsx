@@ -4,7 +4,7 @@
 // theirs or overwrite deliberately).
 import { useCallback, useEffect, useMemo, useState, type FormEvent } from "react";
 import type { Diagnostic, SymbolTable } from "../generated/api";
-import type { LdBody, Pou } from "../generated/project";
+import type { LdBody, Pou, Project } from "../generated/project";
 import { LdEditor } from "../ld/editor/LdEditor";
 import type { History } from "../ld/history";
 import { operandPath } from "../online/ldBinding";
@@ -23,6 +23,7 @@ import { appStore } from "../store";
 import { StEditor } from "../st/StEditor";
 import { stCompletions } from "../st/completion";
 import { useSavedCheck } from "../st/useSavedCheck";
+import { DebugBar } from "../debug/DebugBar";
 
 const KINDS: { kind: Pou["kind"]; title: string }[] = [
   { kind: "program", title: "Programs" },
@@ -175,6 +176,9 @@ function Tabs() {
 }
 
 const NO_DIAGNOSTICS: Diagnostic[] = [];
+
+/** A POU by an IEC name in any case (the simulation reports halts with the compiled spelling). */
+const pouNamed = (project: Project | null, name: string) => project?.pous?.find((p) => p.name.toUpperCase() === name.toUpperCase());
 
 /** The symbols of a POU and the globals, for autocomplete and online paths. */
 const symbolsOf = (table: SymbolTable | undefined) => (table ? [...table.symbols, ...table.globals] : []);
@@ -395,6 +399,20 @@ export function WorkspaceView() {
     [project],
   );
 
+  /** A halt or a breakpoint shown in its editor: open the POU (matched case-insensitively), select the place. */
+  const revealPlace = useCallback((target: { pou: string; network?: string | null; element?: string | null }) => {
+    const pou = pouNamed(workspaceStore.getState().project, target.pou)?.name ?? target.pou;
+    workspaceStore.getState().openPou(pou);
+    panelsStore.getState().reveal({ ...target, pou, part: "body" });
+  }, []);
+  const networksOf = useCallback(
+    (pouName: string) => {
+      const body = pouNamed(project, pouName)?.body;
+      return body && typeof body === "object" ? (body.networks ?? []).map((n) => n.id) : [];
+    },
+    [project],
+  );
+
   // A different project: the old one's simulation and check results do not apply.
   useEffect(() => {
     void onlineStore.getState().goOffline();
@@ -450,6 +468,7 @@ export function WorkspaceView() {
       <SimulationBar />
       <ProjectTree />
       <div className="editor-area">
+        <DebugBar pou={active ? (pouOf(project, active) ?? null) : null} networksOf={networksOf} reveal={revealPlace} />
         <Tabs />
         {active ? <PouView key={active} name={active} /> : <p className="placeholder">Open a POU from the project tree.</p>}
       </div>

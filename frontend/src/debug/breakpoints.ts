@@ -1,0 +1,53 @@
+// Breakpoints as the monitor protocol names them (BreakpointSet: a POU and exactly one of network,
+// element or ST line) and the messages that set, clear and step. Pure, so the store and the panel
+// share one notion of "the same breakpoint".
+import type { BreakpointClear, BreakpointSet, Step } from "../generated/monitor";
+import type { At } from "../online/protocol";
+
+export type Breakpoint = { pou: string } & ({ network: string } | { element: string } | { line: number });
+
+export type StepGranularity = NonNullable<Step["granularity"]>;
+
+/** POU names compare case-insensitively (IEC identifiers); network and element ids exactly. */
+export function sameBreakpoint(a: Breakpoint, b: Breakpoint): boolean {
+  if (a.pou.toUpperCase() !== b.pou.toUpperCase()) return false;
+  if ("network" in a) return "network" in b && a.network === b.network;
+  if ("element" in a) return "element" in b && a.element === b.element;
+  return "line" in b && a.line === b.line;
+}
+
+export function setMessage(bp: Breakpoint): BreakpointSet {
+  return { type: "breakpoint_set", ...bp };
+}
+
+export function clearMessage(bp: Breakpoint): BreakpointClear {
+  return { type: "breakpoint_clear", ...bp };
+}
+
+/** The list with `bp` added, or removed if it was there, and the message that tells the server. */
+export function toggle(list: readonly Breakpoint[], bp: Breakpoint): { list: Breakpoint[]; message: BreakpointSet | BreakpointClear } {
+  return list.some((b) => sameBreakpoint(b, bp))
+    ? { list: list.filter((b) => !sameBreakpoint(b, bp)), message: clearMessage(bp) }
+    : { list: [...list, bp], message: setMessage(bp) };
+}
+
+/** "Main, network 2" with the network's 1-based position in the POU when it is known. */
+export function describeBreakpoint(bp: Breakpoint, networkIds: readonly string[] = []): string {
+  if ("network" in bp) {
+    const index = networkIds.indexOf(bp.network);
+    return `${bp.pou}, network ${index >= 0 ? index + 1 : bp.network}`;
+  }
+  return "element" in bp ? `${bp.pou}, element ${bp.element}` : `${bp.pou}, line ${bp.line}`;
+}
+
+/** Where a halt is, in words: POU (instance), network/element/line. */
+export function describeHalt(at: At, networkIds: readonly string[] = []): string {
+  const parts = [at.instance && at.instance.toUpperCase() !== at.pou.toUpperCase() ? `${at.pou} (${at.instance})` : at.pou];
+  if (at.network) {
+    const index = networkIds.indexOf(at.network);
+    parts.push(`network ${index >= 0 ? index + 1 : at.network}`);
+  }
+  if (at.element) parts.push(`element ${at.element}`);
+  if (at.line != null) parts.push(`line ${at.line}`);
+  return parts.join(", ");
+}
