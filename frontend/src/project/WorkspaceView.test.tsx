@@ -99,7 +99,7 @@ describe("app shell", () => {
     expect(screen.queryByRole("alertdialog")).toBeNull();
   });
 
-  it("opens an ST POU in the ST editor, underlines the saved check and marks edits unsaved (issue 9)", async () => {
+  it("opens an ST POU as text (declarations and body) in the ST editor, underlines the saved check and marks edits unsaved (issue 9)", async () => {
     const fetchMock = serve(() => json({}));
     const tree = await openPlant();
     fireEvent.click(within(tree).getByRole("button", { name: /Blinker/ }));
@@ -111,5 +111,8 @@ describe("app shell", () => {
     expect(workspaceStore.getState().project?.pous?.find((p) => p.name === "Blinker")?.body).toBe("Q := TRUE;");
     expect(workspaceStore.getState().changed).toEqual(["Blinker"]);
     expect(screen.getByRole("tab", { name: /Blinker/ }).textContent).toContain("●");
+    const declarations = EditorView.findFromDOM(screen.getByLabelText("Blinker declarations"))!;
+    act(() => declarations.dispatch({ changes: { from: 0, insert: "VAR Q : BOOL; END_VAR" } }));
+    expect(workspaceStore.getState().project?.pous?.find((p) => p.name === "Blinker")?.declarations).toBe("VAR Q : BOOL; END_VAR");
   });
 });

@@ -244,25 +244,45 @@ function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
   );
 }
 
-/** The body of an ST POU in the ST editor, with the saved project's check as underlines. */
+/**
+ * An ST POU as text: its declarations above its body, each in the ST editor, with the saved
+ * project's check as underlines.
+ */
 function StPouView({ pou, project, unsaved }: { pou: Pou; project: string; unsaved: boolean }) {
   const setStBody = useWorkspace((s) => s.setStBody);
+  const setDeclarations = useWorkspace((s) => s.setDeclarations);
   const library = useWorkspace((s) => s.library);
   const revision = useWorkspace((s) => s.revision);
   const table = useWorkspace((s) => s.symbols[pou.name]);
   const phase = useOnline((s) => s.phase);
   const diagnostics = useSavedCheck(project, revision, unsaved);
   const completions = useMemo(() => stCompletions(symbolsOf(table), library), [table, library]);
+  const readOnly = phase === "offline" ? null : "Online: go offline to edit.";
   return (
-    <StEditor
-      text={typeof pou.body === "string" ? pou.body : ""}
-      onChange={(text) => setStBody(pou.name, text)}
-      file={`${pou.name}/body`}
-      diagnostics={diagnostics}
-      completions={completions}
-      readOnly={phase === "offline" ? null : "Online: go offline to edit."}
-      label={`${pou.name} body`}
-    />
+    <div className="st-pou" style={{ display: "flex", flexDirection: "column", gap: "0.25rem", height: "100%", minHeight: 0 }}>
+      <div style={{ flex: "0 1 35%", minHeight: 0 }}>
+        <StEditor
+          text={pou.declarations ?? ""}
+          onChange={(text) => setDeclarations(pou.name, text)}
+          file={`${pou.name}/declarations`}
+          diagnostics={diagnostics}
+          completions={completions}
+          readOnly={readOnly}
+          label={`${pou.name} declarations`}
+        />
+      </div>
+      <div style={{ flex: "1 1 65%", minHeight: 0 }}>
+        <StEditor
+          text={typeof pou.body === "string" ? pou.body : ""}
+          onChange={(text) => setStBody(pou.name, text)}
+          file={`${pou.name}/body`}
+          diagnostics={diagnostics}
+          completions={completions}
+          readOnly={readOnly}
+          label={`${pou.name} body`}
+        />
+      </div>
+    </div>
   );
 }
 
