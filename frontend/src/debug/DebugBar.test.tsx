@@ -52,6 +52,15 @@ describe("DebugBar (issue 9: LD breakpoints and stepping while online)", () => {
     expect(screen.queryByText(/Halted at/)).toBeNull();
   });
 
+  it("offers Step statement when halted on an ST line", () => {
+    const send = vi.fn((_msg: ClientMessage) => true);
+    onlineStore.setState({ phase: "online", send, monitor: { ...emptyMonitor, state: "halted", at: { pou: "Calc", instance: "MAIN.C1", line: 4 } } });
+    render(<DebugBar pou={main} networksOf={networksOf} reveal={vi.fn()} />);
+    expect(screen.getByRole("status").textContent).toContain("Halted at Calc (MAIN.C1), line 4");
+    fireEvent.click(screen.getByRole("button", { name: "Step statement" }));
+    expect(send).toHaveBeenLastCalledWith({ type: "step", granularity: "statement" });
+  });
+
   it("is hidden offline without breakpoints", () => {
     const { container } = render(<DebugBar pou={main} networksOf={networksOf} reveal={vi.fn()} />);
     expect(container.innerHTML).toBe("");

@@ -1,6 +1,6 @@
 // Debugging while online: add a breakpoint on a network or element of the active LD POU, the list
 // of breakpoints (remove, clear all), and when the scan halts: where it halted (revealed in its
-// editor) with Continue / Step network / Step cycle.
+// editor) with Continue / Step (statement in ST) / Step network / Step cycle.
 import { useEffect, useState, type FormEvent } from "react";
 import type { LdBody, Pou } from "../generated/project";
 import { useOnline } from "../online/store";
@@ -49,6 +49,9 @@ export function DebugBar({ pou, networksOf, reveal }: DebugBarProps) {
         <div className="debug-halted" role="status">
           <span>Halted at {describeHalt(halted, networksOf(halted.pou))}</span>
           <button type="button" onClick={debug.resume}>Continue</button>
+          {halted.line != null ? (
+            <button type="button" onClick={() => debug.step("statement")}>Step statement</button>
+          ) : null}
           <button type="button" onClick={() => debug.step("network")}>Step network</button>
           <button type="button" onClick={() => debug.step("cycle")}>Step cycle</button>
         </div>

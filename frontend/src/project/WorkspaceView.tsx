@@ -24,6 +24,7 @@ import { StEditor } from "../st/StEditor";
 import { stCompletions } from "../st/completion";
 import { useSavedCheck } from "../st/useSavedCheck";
 import { DebugBar } from "../debug/DebugBar";
+import { debugStore, useDebug } from "../debug/store";
 
 const KINDS: { kind: Pou["kind"]; title: string }[] = [
   { kind: "program", title: "Programs" },
@@ -258,6 +259,16 @@ function StPouView({ pou, project, unsaved }: { pou: Pou; project: string; unsav
   const diagnostics = useSavedCheck(project, revision, unsaved);
   const completions = useMemo(() => stCompletions(symbolsOf(table), library), [table, library]);
   const readOnly = phase === "offline" ? null : "Online: go offline to edit.";
+  const allBreakpoints = useDebug((s) => s.breakpoints);
+  const upper = pou.name.toUpperCase();
+  const same = (name: string) => name.toUpperCase() === upper;
+  const lines = useMemo(() => allBreakpoints.flatMap((b) => ("line" in b && b.pou.toUpperCase() === upper ? [b.line] : [])), [allBreakpoints, upper]);
+  const at = useOnline((s) => (s.monitor.state === "halted" ? s.monitor.at : null));
+  const debug = {
+    breakpoints: lines,
+    halted: at && same(at.pou) && at.line != null ? at.line : null,
+    onToggle: (line: number) => debugStore.getState().toggle({ pou: pou.name, line }),
+  };
   return (
     <div className="st-pou" style={{ display: "flex", flexDirection: "column", gap: "0.25rem", height: "100%", minHeight: 0 }}>
       <div style={{ flex: "0 1 35%", minHeight: 0 }}>
@@ -280,6 +291,7 @@ function StPouView({ pou, project, unsaved }: { pou: Pou; project: string; unsav
           completions={completions}
           readOnly={readOnly}
           label={`${pou.name} body`}
+          debug={debug}
         />
       </div>
     </div>

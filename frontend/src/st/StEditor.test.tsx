@@ -1,6 +1,6 @@
 import { forEachDiagnostic } from "@codemirror/lint";
 import { EditorView } from "@codemirror/view";
-import { act, render, renderHook } from "@testing-library/react";
+import { act, fireEvent, render, renderHook } from "@testing-library/react";
 import { afterEach, describe, expect, it, vi } from "vitest";
 import type { CheckReport, Diagnostic } from "../generated/api";
 import { StEditor } from "./StEditor";
@@ -67,5 +67,27 @@ describe("useSavedCheck (issue 9: debounced diagnostics from POST /check)", () =
     rerender({ unsaved: true });
     await act(async () => resolve({ diagnostics: [unknownY] }));
     expect(result.current).toEqual([]);
+  });
+});
+
+describe("StEditor debugging marks (issue 9: ST line breakpoints, halted line)", () => {
+  it("toggles a breakpoint by a gutter click and shows the breakpoint and halted lines", () => {
+    const onToggle = vi.fn();
+    const props = { onChange: vi.fn(), file: "Main/body", diagnostics: [], completions: [], readOnly: null, label: "Main body", text: "a := 1;\nb := 2;\nc := 3;" };
+    const { container, rerender } = render(<StEditor {...props} debug={{ breakpoints: [], halted: null, onToggle }} />);
+    const view = viewIn(container);
+    const gutterEl = container.querySelector(".cm-breakpoint-gutter") as HTMLElement;
+    // The gutter finds the line from the click's height (jsdom lays lines out at their default height).
+    const lineHeight = view.defaultLineHeight;
+    fireEvent.mouseDown(gutterEl, { clientY: lineHeight * 1.5 });
+    expect(onToggle).toHaveBeenCalledWith(2);
+    rerender(<StEditor {...props} debug={{ breakpoints: [3, 2, 9], halted: 3, onToggle }} />);
+    const visibleDots = () => [...container.querySelectorAll(".cm-breakpoint-gutter .cm-gutterElement")].filter((e) => (e as HTMLElement).style.visibility !== "hidden" && e.querySelector(".cm-breakpoint"));
+    expect(visibleDots()).toHaveLength(2);
+    const halted = container.querySelectorAll(".cm-halted-line");
+    expect([...halted].map((l) => l.textContent)).toEqual(["c := 3;"]);
+    rerender(<StEditor {...props} debug={{ breakpoints: [], halted: null, onToggle }} />);
+    expect(visibleDots()).toHaveLength(0);
+    expect(container.querySelectorAll(".cm-halted-line")).toHaveLength(0);
   });
 });

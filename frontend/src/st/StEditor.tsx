@@ -9,6 +9,7 @@ import { Compartment, EditorState } from "@codemirror/state";
 import { EditorView, highlightActiveLine, keymap, lineNumbers } from "@codemirror/view";
 import { useEffect, useRef } from "react";
 import type { Diagnostic } from "../generated/api";
+import { setBreakpointLines, setHaltedLine, stDebugging } from "./breakpoints";
 import { stCompletionSource } from "./completion";
 import { stLanguage } from "./language";
 import { lintDiagnostics } from "./lint";
@@ -23,13 +24,15 @@ export interface StEditorProps {
   /** A reason the text cannot be edited now (online), or null. */
   readOnly: string | null;
   label: string;
+  /** Debugging (the body only): breakpoint lines, the halted line, and a gutter click. */
+  debug?: { breakpoints: readonly number[]; halted: number | null; onToggle(line: number): void };
 }
 
-export function StEditor({ text, onChange, file, diagnostics, completions, readOnly, label }: StEditorProps) {
+export function StEditor({ text, onChange, file, diagnostics, completions, readOnly, label, debug }: StEditorProps) {
   const host = useRef<HTMLDivElement>(null);
   const view = useRef<EditorView | null>(null);
-  const latest = useRef({ onChange, completions });
-  latest.current = { onChange, completions };
+  const latest = useRef({ onChange, completions, debug });
+  latest.current = { onChange, completions, debug };
   const editable = useRef(new Compartment());
 
   useEffect(() => {
@@ -48,6 +51,7 @@ export function StEditor({ text, onChange, file, diagnostics, completions, readO
           syntaxHighlighting(defaultHighlightStyle),
           autocompletion({ override: [stCompletionSource(() => latest.current.completions)] }),
           lintGutter(),
+          debug ? stDebugging((line) => latest.current.debug?.onToggle(line)) : [],
           keymap.of([...closeBracketsKeymap, ...defaultKeymap, ...historyKeymap, ...completionKeymap, indentWithTab]),
           editable.current.of(EditorState.readOnly.of(readOnly !== null)),
           EditorView.contentAttributes.of({ "aria-label": label }),
@@ -64,13 +68,18 @@ export function StEditor({ text, onChange, file, diagnostics, completions, readO
       view.current = null;
     };
     // The view is created once; later props arrive through the effects below.
-    // eslint-disable-next-line react-hooks/exhaustive-deps
   }, []);
 
   useEffect(() => {
     const v = view.current;
     if (v && v.state.doc.toString() !== text) v.dispatch({ changes: { from: 0, to: v.state.doc.length, insert: text } });
   }, [text]);
+
+  const breakpoints = debug?.breakpoints;
+  const halted = debug?.halted ?? null;
+  useEffect(() => {
+    if (breakpoints) view.current?.dispatch({ effects: [setBreakpointLines.of(breakpoints), setHaltedLine.of(halted)] });
+  }, [breakpoints, halted]);
 
   useEffect(() => {
     view.current?.dispatch({ effects: editable.current.reconfigure(EditorState.readOnly.of(readOnly !== null)) });

@@ -8,6 +8,7 @@ import type { Diagnostic, LibraryEntry, SymbolInfo } from "../generated/api";
 import { callTemplate, stCompletionSource, stCompletions } from "./completion";
 import { stParser, type StState } from "./language";
 import { lintDiagnostics } from "./lint";
+import { linesIn } from "./breakpoints";
 
 /** [text, style] tokens of each line, carrying the parser state across lines as CodeMirror does. */
 function tokens(text: string): [string, string | null][][] {
@@ -104,5 +105,11 @@ describe("diagnostics as lint underlines (issue 9: live diagnostics)", () => {
     expect(lintDiagnostics([diag({ file: "Main/declarations", line: 1, column: 1 }), diag({ file: null })], "Main/body", doc)).toEqual([]);
     expect(lintDiagnostics([diag({})], "Main/body", doc)).toEqual([{ from: 0, to: 7, severity: "error", message: "ST-E: bad" }]);
     expect(lintDiagnostics([diag({ line: 9, column: 40, end_line: 12, end_column: 3 })], "Main/body", doc)).toEqual([{ from: 19, to: 19, severity: "error", message: "ST-E: bad" }]);
+  });
+});
+
+describe("breakpoint lines (issue 9: ST line gutter)", () => {
+  it("keeps existing lines once, in order", () => {
+    expect(linesIn(Text.of(["a", "b", "c"]), [3, 1, 3, 0, 4, 2.5, 2])).toEqual([1, 2, 3]);
   });
 });
