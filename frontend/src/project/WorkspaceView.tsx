@@ -271,7 +271,7 @@ function StPouView({ pou, project, unsaved }: { pou: Pou; project: string; unsav
   };
   return (
     <div className="st-pou" style={{ display: "flex", flexDirection: "column", gap: "0.25rem", height: "100%", minHeight: 0 }}>
-      <div style={{ flex: "0 1 35%", minHeight: 0 }}>
+      <div style={{ flex: "0 0 35%", minHeight: "6rem", overflow: "hidden", borderBottom: "1px solid #ccc" }}>
         <StEditor
           text={pou.declarations ?? ""}
           onChange={(text) => setDeclarations(pou.name, text)}
@@ -282,7 +282,7 @@ function StPouView({ pou, project, unsaved }: { pou: Pou; project: string; unsav
           label={`${pou.name} declarations`}
         />
       </div>
-      <div style={{ flex: "1 1 65%", minHeight: 0 }}>
+      <div style={{ flex: "1 1 65%", minHeight: "10rem", overflow: "hidden" }}>
         <StEditor
           text={typeof pou.body === "string" ? pou.body : ""}
           onChange={(text) => setStBody(pou.name, text)}

@@ -93,7 +93,7 @@ export function StEditor({ text, onChange, file, diagnostics, completions, readO
   return (
     <div className="st-editor" style={{ display: "flex", flexDirection: "column", height: "100%", minHeight: 0 }}>
       {readOnly ? <p className="st-editor-readonly">{readOnly}</p> : null}
-      <div ref={host} className="st-editor-host" style={{ height: "100%", minHeight: "12rem" }} />
+      <div ref={host} className="st-editor-host" style={{ flex: "1 1 auto", minHeight: 0, overflow: "hidden" }} />
     </div>
   );
 }
