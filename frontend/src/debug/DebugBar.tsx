@@ -16,6 +16,9 @@ export interface DebugBarProps {
   reveal(target: { pou: string; network?: string | null; element?: string | null }): void;
 }
 
+/** One wrapping row (the bar sits above the tabs and should take little height). */
+const ROW = { display: "flex", flexWrap: "wrap", alignItems: "center", gap: "0.4rem", padding: "0.15rem 0.4rem" } as const;
+
 const ldNetworks = (pou: Pou | null): string[] =>
   pou?.language === "ld" && pou.body && typeof pou.body === "object" ? ((pou.body as LdBody).networks ?? []).map((n) => n.id) : [];
 
@@ -44,9 +47,9 @@ export function DebugBar({ pou, networksOf, reveal }: DebugBarProps) {
     setElement("");
   };
   return (
-    <div className="debug-bar" role="region" aria-label="Debugging">
+    <div className="debug-bar" role="region" aria-label="Debugging" style={ROW}>
       {halted ? (
-        <div className="debug-halted" role="status">
+        <div className="debug-halted" role="status" style={{ ...ROW, background: "#fff3b0", padding: "0 0.4rem" }}>
           <span>Halted at {describeHalt(halted, networksOf(halted.pou))}</span>
           <button type="button" onClick={debug.resume}>Continue</button>
           {halted.line != null ? (
@@ -70,7 +73,7 @@ export function DebugBar({ pou, networksOf, reveal }: DebugBarProps) {
           <button type="submit">Toggle breakpoint</button>
         </form>
       ) : null}
-      <ul className="debug-breakpoints" aria-label="Breakpoints">
+      <ul className="debug-breakpoints" aria-label="Breakpoints" style={{ ...ROW, listStyle: "none", margin: 0, padding: 0 }}>
         {breakpoints.map((bp) => {
           const text = describeBreakpoint(bp, networksOf(bp.pou));
           return (
