@@ -46,7 +46,7 @@ comments = st.none() | st.text(st.characters(codec="utf-8", exclude_categories=[
 labels = st.none() | st.sampled_from(["L1", "Again", "10"])
 
 
-class _Ids:
+class Ids:
     """Unique element ids within one drawn project (ids must be unique per POU)."""
 
     def __init__(self) -> None:
@@ -72,7 +72,7 @@ def _has_dead_branch(item) -> bool:
 
 
 @st.composite
-def ld_leaf(draw, ids: _Ids, depth: int):
+def ld_leaf(draw, ids: Ids, depth: int):
     kind = draw(st.sampled_from(["contact", "contact", "coil", "compare", "box"]))
     if kind == "contact":
         return Contact(id=ids(), var=draw(names), mode=draw(st.sampled_from(["no", "nc", "p", "n"])))
@@ -102,7 +102,7 @@ def ld_leaf(draw, ids: _Ids, depth: int):
 
 
 @st.composite
-def ld_series(draw, ids: _Ids, depth: int, dead: bool = True, min_size: int = 0):
+def ld_series(draw, ids: Ids, depth: int, dead: bool = True, min_size: int = 0):
     """A canonical series list; ``dead`` allows a jump/return at its end."""
     items = []
     for _ in range(draw(st.integers(min_size, 4))):
@@ -123,8 +123,8 @@ def ld_series(draw, ids: _Ids, depth: int, dead: bool = True, min_size: int = 0)
 
 
 @st.composite
-def ld_bodies(draw, ids: _Ids | None = None):
-    ids = ids or _Ids()
+def ld_bodies(draw, ids: Ids | None = None):
+    ids = ids or Ids()
     networks = []
     for _ in range(draw(st.integers(0, 3))):
         networks.append(LdNetwork(id=ids(), label=draw(labels), comment=draw(comments),
@@ -136,8 +136,8 @@ _coordinates = st.integers(-400, 900).map(float) | st.sampled_from([0.5, 12.25, 
 
 
 @st.composite
-def fbd_bodies(draw, ids: _Ids | None = None):
-    ids = ids or _Ids()
+def fbd_bodies(draw, ids: Ids | None = None):
+    ids = ids or Ids()
     networks = []
     for _ in range(draw(st.integers(0, 2))):
         nodes = []

@@ -19,7 +19,7 @@ from ladderlab.ir.lower_project import lower_project
 from ladderlab.model import Box, Coil, Contact, LdBody, LdNetwork, Parallel, Pou, Project, Return, Task
 from ladderlab.storage import load_project_path
 from tests.export.plcopen_helpers import FOLDERS, IMPORT_ERRORS, strip_ladderlab, xsd_errors
-from tests.export.plcopen_strategies import projects
+from tests.export.plcopen_strategies import Ids, projects
 from tests.support import EXAMPLES, EXTERNAL
 
 
@@ -81,17 +81,8 @@ DECLARATIONS = ("VAR\n    i0, i1, i2, i3 : BOOL;\n    q0, q1, q2 : BOOL;\n    t0
                 "    n : INT;\nEND_VAR")
 
 
-class _Ids:
-    def __init__(self) -> None:
-        self.n = 0
-
-    def __call__(self) -> str:
-        self.n += 1
-        return f"e{self.n}"
-
-
 @st.composite
-def rung(draw, ids: _Ids, depth: int, timers: list[str], dead: bool = True) -> list:
+def rung(draw, ids: Ids, depth: int, timers: list[str], dead: bool = True) -> list:
     """A rung in the shape the lowering accepts: a return ends a branch of the parallel that ends the rung."""
     items: list = []
     count = draw(st.integers(1, 3))
@@ -121,7 +112,7 @@ def rung(draw, ids: _Ids, depth: int, timers: list[str], dead: bool = True) -> l
 
 @st.composite
 def ld_programs(draw) -> Project:
-    ids, timers = _Ids(), ["t0", "t1"]
+    ids, timers = Ids(), ["t0", "t1"]
     networks = [LdNetwork(id=ids(), elements=draw(rung(ids, 2, timers))) for _ in range(draw(st.integers(1, 3)))]
     main = Pou(name="Main", kind="program", language="ld", declarations=DECLARATIONS, body=LdBody(networks=networks))
     return Project(name="p", pous=[main], tasks=[Task(name="t", interval="T#10ms", programs=["Main"])])
