@@ -2,7 +2,11 @@
 
 import os
 
+import pytest
 from hypothesis import settings
+
+# Detailed assertion messages from shared test helpers (registered here, before any suite imports them).
+pytest.register_assert_rewrite("tests.ir.helpers", "tests.ir.invariants")
 
 # Property tests are sized for the 2-core CI budget; LADDERLAB_HYPOTHESIS=thorough runs more examples.
 settings.register_profile("ci", max_examples=60, deadline=None)
