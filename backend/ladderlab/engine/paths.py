@@ -91,11 +91,24 @@ def tokens(text: str) -> list[tuple[str, str]]:
 
 
 class Resolver:
+    _CACHE_LIMIT = 10_000
+
     def __init__(self, context: ModuleContext) -> None:
         self.context = context
         self.programs = {n: p for n, p in context.pous.items() if p.kind == "program"}
+        self._cache: dict[str, Location] = {}
 
     def resolve(self, text: str) -> Location:
+        """The location a path names; resolved paths are remembered (locations walk from the live roots, so
+        they stay valid), so reading the same paths every scan does not parse them every scan."""
+        location = self._cache.get(text) if isinstance(text, str) else None
+        if location is None:
+            location = self._resolve(text)
+            if len(self._cache) < self._CACHE_LIMIT:
+                self._cache[text] = location
+        return location
+
+    def _resolve(self, text: str) -> Location:
         if not isinstance(text, str):
             raise ValueError(f"a variable path must be text, not {text!r}")
         toks = tokens(text)
@@ -308,3 +321,42 @@ def plain(context: ModuleContext, ty: t.IrType, value: object) -> object:
             result[place.slot.name] = plain(context, place.slot.type, getattr(owner, place.attr))
         return result
     return value
+
+
+class LocationReader:
+    """Reads many locations fast: each distinct container (a program instance, an array, a structure)
+    is reached once per read, then its members are indexed. Locations walk from the roots on every
+    read, so they stay valid across resets; so does this."""
+
+    def __init__(self, locations: dict[str, Location], roots: Roots, ctx: ModuleContext) -> None:
+        self.roots, self.ctx = roots, ctx
+        groups: dict[tuple, list[tuple[str, object, t.IrType | None]]] = {}  # members: (path, key, composite type)
+        self.single: list[tuple[str, Location]] = []  # ends in a VAR_IN_OUT reference: read on its own
+        for path, location in locations.items():
+            last = location.keys[-1]
+            if isinstance(last, (str, int)):
+                plain_type = None if location.elementary else location.type
+                groups.setdefault((location.root, location.keys[:-1]), []).append((path, last, plain_type))
+            else:
+                self.single.append((path, location))
+        self.groups = [(root, Location("", t.Elementary("BOOL"), root, parent) if parent else None, members)
+                       for (root, parent), members in groups.items()]
+
+    def read(self) -> dict[str, object]:
+        values: dict[str, object] = {}
+        for root, parent, members in self.groups:
+            try:
+                container = parent.get(self.roots) if parent is not None else self.roots.get(root)
+            except Exception:  # noqa: BLE001 - e.g. through an unbound VAR_IN_OUT reference: no value
+                values.update((path, None) for path, _, _ in members)
+                continue
+            for path, key, composite in members:
+                value = container[key]  # type: ignore[index]
+                values[path] = value if composite is None else plain(self.ctx, composite, value)
+        for path, location in self.single:
+            try:
+                value = location.get(self.roots)
+                values[path] = value if location.elementary else plain(self.ctx, location.type, value)
+            except Exception:  # noqa: BLE001
+                values[path] = None
+        return values

@@ -31,7 +31,7 @@ from .codegen.runtime import Watchdog
 from .compile import CompiledProgram, compile_program
 from .debug import Debugger, Halt
 from ..st.symbols import did_you_mean
-from .paths import Location, Resolver, Roots, UnknownPath, coerce_for, leaves, plain
+from .paths import Location, LocationReader, Resolver, Roots, UnknownPath, coerce_for, leaves, plain
 from .tasks import Schedule, Task, task_table
 
 
@@ -365,6 +365,14 @@ class Simulation:
 
     def location(self, path: str) -> Location:
         return self._resolver.resolve(path)
+
+    def value(self, location: Location) -> object:
+        """Raw current value at a resolved location: for callers that resolve paths once and read every scan."""
+        return location.get(self._roots)
+
+    def reader(self, locations: dict[str, Location]) -> LocationReader:
+        """A reader of many resolved locations at once (the online monitor's frames); valid across resets."""
+        return LocationReader(locations, self._roots, self._context)
 
     def read(self, path: str) -> object:
         """Current value (arrays as lists, structures and FB instances as dicts)."""

@@ -28,8 +28,7 @@ from typing import Callable, Protocol
 
 from ..engine.codegen.faults import Fault
 from ..engine.debug import Halt
-from ..engine.codegen.context import ModuleContext
-from ..engine.paths import Location, Roots, UnknownPath, plain
+from ..engine.paths import Location, UnknownPath
 from ..engine.simulation import ProbeView, Simulation
 from ..engine.tasks import Pacer
 from ..ir import nodes as ir
@@ -124,10 +123,9 @@ class SimRunner:
         self._overruns = 0  # pacer skips of finished runs
         self.after_scan: list[Callable[[Simulation], None]] = []  # called in the scan's thread, lock held
         self._ctx = sim.compiled.generated.context
-        self._roots = sim._roots  # noqa: SLF001 - Location.get needs the live roots; Simulation.read re-parses the path
         self._listeners: list[Listener] = []
         self._watches: dict[object, Watch] = {}
-        self._reader = _Reader({}, self._roots, self._ctx)
+        self._reader = sim.reader({})
         self._instances: tuple[str, ...] = ()
         self._traces: list[_Trace] = []
         self._running = False
@@ -470,7 +468,7 @@ class SimRunner:
 
     def _rebuild_union(self) -> None:
         union = {path: loc for watch in self._watches.values() for path, loc in watch.locations.items()}
-        self._reader = _Reader(union, self._roots, self._ctx)
+        self._reader = self.sim.reader(union)
         self._instances = tuple(dict.fromkeys(i for watch in self._watches.values() for i in watch.instances))
 
     # ------------------------------------------------------------------ traces
@@ -490,7 +488,7 @@ class SimRunner:
         def action() -> None:
             trace = _Trace(owner, locations, samples, trigger_location, started=trigger_location is None)
             if trigger_location is not None:
-                trace.previous = trigger_location.get(self._roots)
+                trace.previous = self.sim.value(trigger_location)
             self._traces = [t for t in self._traces if t.owner is not owner] + [trace]
         self._command(action)
 
@@ -498,12 +496,12 @@ class SimRunner:
         done = []
         for trace in self._traces:
             if not trace.started:
-                value = trace.trigger.get(self._roots)  # type: ignore[union-attr]
+                value = self.sim.value(trace.trigger)  # type: ignore[arg-type]
                 trace.started = bool(value) and not trace.previous
                 trace.previous = value
                 if not trace.started:
                     continue
-            trace.rows.append([location.get(self._roots) for location in trace.locations])
+            trace.rows.append([self.sim.value(location) for location in trace.locations])
             trace.scans.append(self.sim.scan_count)
             trace.times.append(self.sim.time_ms)
             if len(trace.rows) >= trace.samples:
@@ -514,45 +512,6 @@ class SimRunner:
             values = {loc.path: list(column) for loc, column in zip(trace.locations, columns)}
             self._emit(Trace.model_construct(type="trace", values=values, scans=trace.scans, time_ms=trace.times),
                        trace.owner)
-
-
-class _Reader:
-    """Reads many locations fast: each distinct container (a program instance, an array, a structure)
-    is reached once per read, then its members are indexed. Locations walk from the roots on every
-    read, so they stay valid across resets; so does this."""
-
-    def __init__(self, locations: dict[str, Location], roots: Roots, ctx: ModuleContext) -> None:
-        self.roots, self.ctx = roots, ctx
-        groups: dict[tuple, list[tuple[str, object, t.IrType | None]]] = {}  # members: (path, key, composite type)
-        self.single: list[tuple[str, Location]] = []  # ends in a VAR_IN_OUT reference: read on its own
-        for path, location in locations.items():
-            last = location.keys[-1]
-            if isinstance(last, (str, int)):
-                plain_type = None if location.elementary else location.type
-                groups.setdefault((location.root, location.keys[:-1]), []).append((path, last, plain_type))
-            else:
-                self.single.append((path, location))
-        self.groups = [(root, Location("", t.Elementary("BOOL"), root, parent) if parent else None, members)
-                       for (root, parent), members in groups.items()]
-
-    def read(self) -> dict[str, object]:
-        values: dict[str, object] = {}
-        for root, parent, members in self.groups:
-            try:
-                container = parent.get(self.roots) if parent is not None else self.roots.get(root)
-            except Exception:  # noqa: BLE001 - e.g. through an unbound VAR_IN_OUT reference: no value
-                values.update((path, None) for path, _, _ in members)
-                continue
-            for path, key, composite in members:
-                value = container[key]  # type: ignore[index]
-                values[path] = value if composite is None else plain(self.ctx, composite, value)
-        for path, location in self.single:
-            try:
-                value = location.get(self.roots)
-                values[path] = value if location.elementary else plain(self.ctx, location.type, value)
-            except Exception:  # noqa: BLE001
-                values[path] = None
-        return values
 
 
 def _text(value: object) -> str:
