@@ -7,8 +7,8 @@ import pytest
 from ladderlab.engine.compile import emit_python
 from ladderlab.engine.simulation import Simulation
 
-from .irbuild import (BOOL, INT, add, and_, assign, c, call, div, fb, fbcall, function, jump, network, not_, pou, probe,
-                      prog, slot, v, while_)
+from .irbuild import (BOOL, INT, add, and_, array, assign, c, call, div, fb, fbcall, function, if_, ix, jump, network, not_,
+                      pou, probe, prog, slot, v, while_)
 
 A, B, X, Y = v("A", INT), v("B", INT), v("X", INT), v("Y", INT)
 
@@ -46,6 +46,17 @@ def test_the_fast_variant_has_no_probe_or_pause_code():
         assert "if ll_halt[0]: yield (0, self)" in debug
     assert "(yield from f_DOUBLE(self.v_A))" in emit_python(_st_program(), "debug")
     assert "ll_pr['E1'] = self.v_IN1" in emit_python(_ld_program(), "debug")
+
+
+def test_the_fast_variant_drops_an_if_that_only_guards_probes_but_keeps_one_whose_test_can_fault():
+    """A box's EN-guarded probes leave nothing to run in the fast variant; an index in the test may fault, so it stays."""
+    en, i = v("EN", BOOL), v("I", INT)
+    main = pou("MAIN", [slot("EN", BOOL), slot("ARR", array(BOOL, (1, 2))), slot("I", INT), slot("N", INT)], [
+        network("N1", [if_((en, [probe("B1.OUT", v("N", INT))])), if_((v("ARR", BOOL, ix(i)), [probe("B2", en)]))])])
+    fast = emit_python(prog(main), "fast")
+    assert "if self.v_EN" not in fast
+    assert fast.count("if ") == 1 and "v_ARR" in fast
+    assert "ll_pr['B1.OUT']" in emit_python(prog(main), "debug")
 
 
 def test_probes_record_values_and_which_elements_ran_this_scan():

@@ -17,7 +17,7 @@ from ...ir import types as t
 from . import names
 from .context import CodegenError, diagnostic, std_fb_class
 from .expressions import Expressions, literal
-from .mentions import walk
+from .mentions import calls_in, expression_vars, walk
 from ..values import store_expr
 from .runtime import WATCHDOG_EVERY
 from .scope import Scope
@@ -135,6 +135,8 @@ class Statements:
             self.src.line(f"{code} = {self.x.stored(value, ty)}")
 
     def _if(self, s: ir.If, oid: int) -> None:
+        if not self.module.debug and _only_probes(s):
+            return  # e.g. the EN-guarded probes of a box: nothing left to run in the fast variant
         keyword = "if"
         for cond, body in s.branches:
             self.src.line(f"{keyword} {self.x.expr(cond)}:")
@@ -354,3 +356,17 @@ class Statements:
     _HANDLERS = {ir.Assign: _assign, ir.If: _if, ir.Case: _case, ir.For: _for, ir.While: _while,
                  ir.Repeat: _repeat, ir.Exit: _exit, ir.Return: _return, ir.Jump: _jump, ir.Probe: _probe,
                  ir.FbCall: _fbcall, ir.FnCall: _fncall}
+
+
+def _only_probes(s: ir.If) -> bool:
+    """True when an IF holds probes and nothing else, and testing its conditions cannot call or fault."""
+    bodies = [body for _, body in s.branches] + [s.orelse]
+    statements = list(walk([statement for body in bodies for statement in body]))
+    if not any(isinstance(x, ir.Probe) for x in statements):
+        return False
+    if not all(isinstance(x, (ir.Probe, ir.If)) for x in statements):
+        return False
+    conditions = [cond for x in [s, *statements] if isinstance(x, ir.If) for cond, _ in x.branches]
+    return all(not any(isinstance(sel, ir.Index) for var in expression_vars(c) for sel in var.path)
+               and next(calls_in(c), None) is None
+               for c in conditions)
