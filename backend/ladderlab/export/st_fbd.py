@@ -52,16 +52,7 @@ class _Network:
         self.written = {name for node in graph.nodes.values() if isinstance(node, fbd.OutputNode)
                         for name in root_names(node.var)}
         self.consumed = {(s.node, s.pin) for sources in graph.inputs.values() for s in sources.values()}
-        for node_id in graph.order:
-            node = graph.nodes[node_id]
-            if isinstance(node, fbd.InputNode):
-                self.input_node(node)
-            elif isinstance(node, fbd.Block):
-                self.block(node)
-            elif isinstance(node, fbd.OutputNode):
-                self.output_node(node)
-            else:
-                self.control(node)
+        graph.visit(self)
 
     # ------------------------------------------------------------ wires
     def read(self, value: PinValue) -> Any:

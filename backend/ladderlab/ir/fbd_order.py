@@ -25,6 +25,7 @@ from __future__ import annotations
 import heapq
 import math
 from dataclasses import dataclass, field
+from typing import Protocol
 
 from ..model import fbd
 from .diagram_checks import Report
@@ -60,6 +61,26 @@ class NetworkGraph:
     feedback: set[tuple[str, str]] = field(default_factory=set)
     #: (consumer id, pin) pairs wired to a continuation that leads nowhere (already reported)
     broken: set[tuple[str, str]] = field(default_factory=set)
+
+    def visit(self, visitor: "NodeVisitor") -> None:
+        """Hand every node to the visitor in evaluation order (the lowering and the ST export walk it alike)."""
+        for node_id in self.order:
+            node = self.nodes[node_id]
+            if isinstance(node, fbd.InputNode):
+                visitor.input_node(node)
+            elif isinstance(node, fbd.Block):
+                visitor.block(node)
+            elif isinstance(node, fbd.OutputNode):
+                visitor.output_node(node)
+            else:
+                visitor.control(node)
+
+
+class NodeVisitor(Protocol):
+    def input_node(self, node: fbd.InputNode) -> None: ...
+    def block(self, node: fbd.Block) -> None: ...
+    def output_node(self, node: fbd.OutputNode) -> None: ...
+    def control(self, node: fbd.FbdJump | fbd.FbdReturn) -> None: ...
 
 
 def wire_text(wire: fbd.Wire) -> str:

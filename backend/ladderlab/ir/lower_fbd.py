@@ -67,16 +67,7 @@ class _Network:
                 self.callees[node.id] = resolve_callee(self.ops, node.call, node.instance, self.at(node.id))
             elif isinstance(node, fbd.Connector):
                 self.connector_name(node)
-        for node_id in graph.order:
-            node = graph.nodes[node_id]
-            if isinstance(node, fbd.InputNode):
-                self.input_node(node)
-            elif isinstance(node, fbd.Block):
-                self.block(node)
-            elif isinstance(node, fbd.OutputNode):
-                self.output_node(node)
-            else:
-                self.control(node)
+        graph.visit(self)
         label = canonical_label(self.network.label) if self.network.label else None
         return Block(self.out, Origin(self.ctx.name, network=self.network.id),
                      label if label is not None and self.labels.get(label) == self.network.id else None)
