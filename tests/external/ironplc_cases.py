@@ -90,9 +90,9 @@ def _compare(actual, expected, case: dict, name: str) -> str | None:
         return None if actual == expected else f"{actual!r} != {expected!r}"
     if isinstance(expected, list) and isinstance(actual, list):
         return None if actual == expected else f"{actual!r} != {expected!r}"
-    return None if actual == expected and type(actual) is type(expected) or (
-        actual == expected and not isinstance(expected, bool) and not isinstance(actual, bool)) \
-        else f"{actual!r} != {expected!r}"
+    if isinstance(expected, bool) or isinstance(actual, bool):  # TRUE is not 1
+        return None if actual is expected else f"{actual!r} != {expected!r}"
+    return None if actual == expected else f"{actual!r} != {expected!r}"
 
 
 def _matcher(actual, spec: dict) -> str | None:
