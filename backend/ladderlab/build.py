@@ -11,7 +11,7 @@ from dataclasses import dataclass
 from .engine.compile import CompileError, CompiledProgram, compile_program
 from .engine.simulation import Simulation
 from .ir.lower_project import lower_project
-from .model import Diagnostic, Project, has_errors
+from .model import Diagnostic, Project
 
 
 @dataclass
@@ -31,7 +31,7 @@ def build_project(project: Project, variant: str = "fast") -> Build:
     """Check, lower and compile ``project`` (variant ``fast`` or ``debug``); never raises for project content."""
     lowered = lower_project(project)
     diagnostics = list(lowered.diagnostics)
-    if lowered.program is None or has_errors(diagnostics):
+    if lowered.program is None:  # the lowering withholds the program whenever a diagnostic is an error
         return Build(None, diagnostics)
     try:
         return Build(compile_program(lowered.program, variant), diagnostics)

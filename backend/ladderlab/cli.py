@@ -176,9 +176,6 @@ def _st_export(project, pou: str | None) -> bytes | None:
     from .export.st_export import export_pou_st
     from .export.st_project import export_project_st
 
-    if pou is not None and not any(p.name.upper() == pou.upper() for p in project.pous):
-        print(f"ladderlab export st: the project has no POU {pou!r}", file=sys.stderr)
-        return None
     result = export_pou_st(project, pou) if pou is not None else export_project_st(project)
     for diagnostic in result.diagnostics:
         print(diagnostic.format(), file=sys.stderr)
