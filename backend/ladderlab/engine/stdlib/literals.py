@@ -15,10 +15,10 @@ import math
 import re
 
 from ...st.elementary import ALIASES
+from ...st.literals import decode_date, decode_duration, decode_integer, decode_tod, encode_duration
 from ..values import MS_PER_DAY, f32, resolve
 
 _EPOCH = _dt.date(1970, 1, 1).toordinal()
-_UNITS = {"D": MS_PER_DAY, "H": 3_600_000, "M": 60_000, "S": 1000, "MS": 1}
 _PREFIXES = {  # category -> prefixes accepted besides the type's own name
     "time": {"T"},
     "tod": {"TOD"},
@@ -30,7 +30,6 @@ _PREFIX_RE = re.compile(r"([A-Z_]+)#(.*)\Z", re.S)
 _INT_RE = re.compile(r"(?:([+-]?)([0-9][0-9_]*)|(2|8|16)#([0-9A-F][0-9A-F_]*))\Z")
 _REAL_RE = re.compile(r"[+-]?[0-9][0-9_]*(?:\.[0-9][0-9_]*)?(?:E[+-]?[0-9]+)?\Z")
 _TIME_RE = re.compile(r"(-?)((?:[0-9][0-9_]*(?:\.[0-9]+)?(?:MS|D|H|M|S)_?)+)\Z")
-_TIME_PART = re.compile(r"([0-9][0-9_]*(?:\.[0-9]+)?)(MS|D|H|M|S)")
 _TOD_RE = re.compile(r"([0-9]{1,2}):([0-9]{1,2})(?::([0-9]{1,2})(?:\.([0-9]+))?)?\Z")
 _DATE_RE = re.compile(r"([0-9]{4})-([0-9]{1,2})-([0-9]{1,2})\Z")
 _DT_RE = re.compile(r"([0-9]{4}-[0-9]{1,2}-[0-9]{1,2})-(.+)\Z")
@@ -66,10 +65,10 @@ def _parse_int(text: str) -> int | None:
         return None
     sign, decimal, base, digits = match.groups()
     if decimal is not None:
-        value = int(decimal.replace("_", ""))
+        value = decode_integer(decimal)[0]
         return -value if sign == "-" else value
     try:
-        return int(digits.replace("_", ""), int(base))
+        return decode_integer(f"{base}#{digits}")[0]
     except ValueError:  # a digit beyond the base, e.g. 2#102
         return None
 
@@ -88,7 +87,7 @@ def _parse_time(text: str) -> int | None:
     match = _TIME_RE.match(text)
     if not match:
         return None
-    total = sum(float(n.replace("_", "")) * _UNITS[u] for n, u in _TIME_PART.findall(match.group(2)))
+    total = decode_duration("T#" + match.group(2))
     return -round(total) if match.group(1) else round(total)
 
 
@@ -96,10 +95,10 @@ def _parse_tod(text: str) -> int | None:
     match = _TOD_RE.match(text)
     if not match:
         return None
-    h, m, s, frac = match.groups()
+    h, m, s, _ = match.groups()
     if int(h) > 23 or int(m) > 59 or int(s or 0) > 59:
         return None
-    ms = ((int(h) * 60 + int(m)) * 60 + int(s or 0)) * 1000 + (round(float("0." + frac) * 1000) if frac else 0)
+    ms = decode_tod("TOD#" + text)
     return ms if ms < MS_PER_DAY else None
 
 
@@ -108,10 +107,10 @@ def _parse_date(text: str) -> int | None:
     if not match:
         return None
     try:
-        days = _dt.date(*map(int, match.groups())).toordinal() - _EPOCH
+        ms = decode_date("D#" + text)
     except ValueError:  # 2003-02-30
         return None
-    return days * MS_PER_DAY if days >= 0 else None
+    return ms if ms >= 0 else None
 
 
 def _parse_dt(text: str) -> int | None:
@@ -169,14 +168,7 @@ def format_real(x: float, single: bool) -> str:
 
 
 def format_time(ms: int) -> str:
-    if ms == 0:
-        return "T#0s"
-    parts, rest = [], abs(ms)
-    for unit, size in _UNITS.items():
-        count, rest = divmod(rest, size)
-        if count:
-            parts.append(f"{count}{unit.lower()}")
-    return "T#" + ("-" if ms < 0 else "") + "".join(parts)
+    return "T#" + encode_duration(ms)
 
 
 def _clock(ms: int) -> str:
