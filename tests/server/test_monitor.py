@@ -488,3 +488,34 @@ def test_a_client_that_falls_behind_loses_old_log_entries_and_is_told(client: Te
         ("trace", None), ("log", "entry 4"), ("log", "entry 5"), ("log", "entry 6"), ("log", "entry 7"),
         ("status", "running"),  # only the latest state
     ]
+
+
+def test_a_halt_publishes_the_values_of_the_halt_point_at_once(client: TestClient, workspace: Workspace) -> None:
+    """Issue 9 (debugging: values are those at the halt point). Periodic frames are off (publish_s
+    of a minute), so the halted scan's values can only come from the publication at the halt."""
+    registry = install(client, SimulationSettings(idle_timeout_s=60.0, reap_every_s=0.05, publish_s=60.0))
+    try:
+        workspace.create(counter_project())
+        sim_id = client.post("/api/projects/counter/simulations").json()["id"]
+        with client.websocket_connect(ws_url(sim_id)) as ws:
+            assert subscribe(ws, ["Main.Count", "Main.Flag"])["changed"] == {"MAIN.COUNT": 0, "MAIN.FLAG": False}
+            ws.send_json({"type": "breakpoint_set", "pou": "Main", "line": 3})
+            ws.send_json({"type": "run"})
+            status, _ = recv_until(ws, of_type("status", state="halted"))
+            assert status["at"]["line"] == 3
+            sim = entry(registry, sim_id).runner.sim
+            # lines 1 and 2 of the halted scan have run: Count and Flag already hold its values
+            values, _ = recv_until(ws, lambda m: m["type"] == "values" and "MAIN.FLAG" in m["changed"])
+            assert values["changed"] == {"MAIN.COUNT": sim.scan_count + 1, "MAIN.FLAG": (sim.scan_count + 1) % 2 == 1}
+            # Stop while halted: the scan stays halted (and says so); Continue ends it and no scan follows
+            ws.send_json({"type": "stop"})
+            log, _ = recv_until(ws, of_type("log"))
+            assert log["message"] == ("stopped: the scan stays halted; Continue or a step finishes it, "
+                                      "then no further scan runs")
+            scans = sim.scan_count
+            ws.send_json({"type": "continue"})
+            recv_until(ws, of_type("status", state="stopped"))
+            time.sleep(0.05)
+            assert sim.scan_count == scans + 1
+    finally:
+        registry.close()

@@ -242,11 +242,13 @@ class SimRunner:
             self._seen_faults = len(sim.faults)
             self._faulted = True
             self._set_running(False)
-        now = self.clock()
-        if publish or now - self._last_publish >= self.publish_s:
-            self._publish(now)
         state = self._state()
         status = (state, at_halt(sim.halted) if sim.halted is not None else None)
+        now = self.clock()
+        # A new state (above all a halt) is published with the values of that moment, so a client
+        # shows the values at the halt point at once, not those of the last periodic frame.
+        if publish or status != self._status or now - self._last_publish >= self.publish_s:
+            self._publish(now)
         if status != self._status:
             self._status = status
             self._emit(Status(type="status", state=state, at=status[1]))  # type: ignore[arg-type]
@@ -308,7 +310,13 @@ class SimRunner:
         self._command(action)
 
     def stop(self) -> None:
-        self._command(lambda: self._set_running(False))
+        def action() -> None:
+            if self._running and self.sim.halted is not None:  # the state stays "halted": say what Stop did
+                self._emit(Log(type="log", level="info", scan=self.sim.scan_count, time_ms=self.sim.time_ms,
+                               message="stopped: the scan stays halted; Continue or a step finishes it, "
+                                       "then no further scan runs"))
+            self._set_running(False)
+        self._command(action)
 
     def reset(self, cold: bool = False) -> None:
         """Warm or cold restart: stops, ends a halted scan, clears the faults (forces stay)."""
