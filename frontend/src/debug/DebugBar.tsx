@@ -1,35 +1,42 @@
-// Debugging while online: add a breakpoint on a network or element of the active LD POU, the list
-// of breakpoints (remove, clear all), and when the scan halts: where it halted (revealed in its
-// editor) with Continue / Step (statement in ST) / Step network / Step cycle.
-import { useEffect, useState, type FormEvent } from "react";
-import type { LdBody, Pou } from "../generated/project";
-import { useOnline } from "../online/store";
-import { describeBreakpoint, describeHalt, type Breakpoint } from "./breakpoints";
-import { useDebug } from "./store";
+// The halted scan: where it stands (revealed in its editor when it halts) and what to do next,
+// Continue / Step network / Step statement / Step cycle / Stop, also from F5, F10, F11 and
+// Shift+F5. Breakpoints are set in the editors and listed in the Breakpoints panel.
+import { useEffect } from "react";
+import { onlineStore, useOnline } from "../online/store";
+import { describeHalt } from "./breakpoints";
+import { debugStore, useDebug } from "./store";
+
+/** Keys of debugging, for the shortcut help (F5 runs when not halted, see SIMULATION_KEYS). */
+export const DEBUG_KEYS: [string, string][] = [
+  ["F9", "Toggle a breakpoint on the selected element or network"],
+  ["Click a network number", "Toggle a breakpoint on the network"],
+  ["Alt+click", "Toggle a breakpoint on an element"],
+  ["F5 (halted)", "Continue"],
+  ["F10", "Step to the next network"],
+  ["F11", "Step to the next statement"],
+];
+
+/** F5 continues a halted scan; F10/F11 step (from a stopped simulation: into the next scan). */
+export function debugKey(e: Pick<KeyboardEvent, "key" | "altKey" | "ctrlKey" | "metaKey" | "shiftKey">, halted: boolean): (() => void) | null {
+  if (e.altKey || e.ctrlKey || e.metaKey || e.shiftKey) return null;
+  const debug = debugStore.getState();
+  if (e.key === "F5" && halted) return debug.resume;
+  if (e.key === "F10") return () => debug.step("network");
+  if (e.key === "F11") return () => debug.step("statement");
+  return null;
+}
 
 export interface DebugBarProps {
-  /** The POU in the active tab (breakpoints are added to it). */
-  pou: Pou | null;
   /** Network ids of a POU in order (for "network 2"), empty when it has no diagram. */
   networksOf(pou: string): string[];
   /** Shows a location in its editor (opens the POU, selects the network or element). */
   reveal(target: { pou: string; network?: string | null; element?: string | null }): void;
 }
 
-/** One wrapping row (the bar sits above the tabs and should take little height). */
-const ROW = { display: "flex", flexWrap: "wrap", alignItems: "center", gap: "0.4rem", padding: "0.15rem 0.4rem" } as const;
-
-const ldNetworks = (pou: Pou | null): string[] =>
-  pou?.language === "ld" && pou.body && typeof pou.body === "object" ? ((pou.body as LdBody).networks ?? []).map((n) => n.id) : [];
-
-export function DebugBar({ pou, networksOf, reveal }: DebugBarProps) {
-  const phase = useOnline((s) => s.phase);
+export function DebugBar({ networksOf, reveal }: DebugBarProps) {
   const state = useOnline((s) => s.monitor.state);
   const at = useOnline((s) => s.monitor.at);
-  const breakpoints = useDebug((s) => s.breakpoints);
   const debug = useDebug((s) => s);
-  const [target, setTarget] = useState("");
-  const [element, setElement] = useState("");
   const halted = state === "halted" && at ? at : null;
 
   // A new halt shows its location in the editor.
@@ -37,62 +44,38 @@ export function DebugBar({ pou, networksOf, reveal }: DebugBarProps) {
     if (halted) reveal({ pou: halted.pou, network: halted.network, element: halted.element });
   }, [halted, reveal]);
 
-  if (phase === "offline" && breakpoints.length === 0) return null;
-  const networks = ldNetworks(pou);
-  const add = (e: FormEvent) => {
-    e.preventDefault();
-    if (!pou) return;
-    const bp: Breakpoint | null = element.trim() ? { pou: pou.name, element: element.trim() } : target ? { pou: pou.name, network: target } : null;
-    if (bp) debug.toggle(bp);
-    setElement("");
-  };
+  useEffect(() => {
+    const onKey = (e: KeyboardEvent) => {
+      const online = onlineStore.getState();
+      if (online.phase !== "online") return;
+      const run = debugKey(e, online.monitor.state === "halted");
+      if (!run) return;
+      e.preventDefault();
+      run();
+    };
+    window.addEventListener("keydown", onKey);
+    return () => window.removeEventListener("keydown", onKey);
+  }, []);
+
+  if (!halted) return null;
   return (
-    <div className="debug-bar" role="region" aria-label="Debugging" style={ROW}>
-      {halted ? (
-        <div className="debug-halted" role="status" style={{ ...ROW, background: "#fff3b0", padding: "0 0.4rem" }}>
-          <span>Halted at {describeHalt(halted, networksOf(halted.pou))}</span>
-          <button type="button" onClick={debug.resume}>Continue</button>
-          {halted.line != null ? (
-            <button type="button" onClick={() => debug.step("statement")}>Step statement</button>
-          ) : null}
-          <button type="button" onClick={() => debug.step("network")}>Step network</button>
-          <button type="button" onClick={() => debug.step("cycle")}>Step cycle</button>
-        </div>
-      ) : null}
-      {networks.length ? (
-        <form className="debug-add" aria-label="Toggle breakpoint" onSubmit={add}>
-          <select aria-label="Breakpoint network" value={target} onChange={(e) => setTarget(e.target.value)}>
-            <option value="">network…</option>
-            {networks.map((id, i) => (
-              <option key={id} value={id}>
-                {pou!.name} network {i + 1}
-              </option>
-            ))}
-          </select>
-          <input aria-label="Breakpoint element" value={element} onChange={(e) => setElement(e.target.value)} placeholder="or element id" spellCheck={false} />
-          <button type="submit">Toggle breakpoint</button>
-        </form>
-      ) : null}
-      <ul className="debug-breakpoints" aria-label="Breakpoints" style={{ ...ROW, listStyle: "none", margin: 0, padding: 0 }}>
-        {breakpoints.map((bp) => {
-          const text = describeBreakpoint(bp, networksOf(bp.pou));
-          return (
-            <li key={JSON.stringify(bp)}>
-              <button type="button" className="link" onClick={() => reveal({ pou: bp.pou, network: "network" in bp ? bp.network : null, element: "element" in bp ? bp.element : null })}>
-                {text}
-              </button>
-              <button type="button" aria-label={`Remove breakpoint ${text}`} onClick={() => debug.remove(bp)}>
-                ×
-              </button>
-            </li>
-          );
-        })}
-      </ul>
-      {breakpoints.length > 1 ? (
-        <button type="button" onClick={debug.clearAll}>
-          Remove all breakpoints
-        </button>
-      ) : null}
+    <div className="debug-bar debug-halted" role="region" aria-label="Debugging">
+      <span role="status">Halted at {describeHalt(halted, networksOf(halted.pou))}</span>
+      <button type="button" onClick={debug.resume} title="Continue (F5)">
+        Continue
+      </button>
+      <button type="button" onClick={() => debug.step("network")} title="Step to the next network (F10)">
+        Step network
+      </button>
+      <button type="button" onClick={() => debug.step("statement")} title="Step to the next statement (F11)">
+        Step statement
+      </button>
+      <button type="button" onClick={() => debug.step("cycle")} title="Run to the end of this scan">
+        Step cycle
+      </button>
+      <button type="button" onClick={onlineStore.getState().stop} title="Stop the simulation (Shift+F5)">
+        Stop
+      </button>
     </div>
   );
 }

@@ -16,12 +16,24 @@ export function sameBreakpoint(a: Breakpoint, b: Breakpoint): boolean {
   return "line" in b && a.line === b.line;
 }
 
+/** One string per breakpoint, equal exactly when `sameBreakpoint` holds (for sets and React keys). */
+export function breakpointKey(bp: Breakpoint): string {
+  const where = "network" in bp ? `network:${bp.network}` : "element" in bp ? `element:${bp.element}` : `line:${bp.line}`;
+  return `${bp.pou.toUpperCase()}|${where}`;
+}
+
+/** Only the location fields (callers may pass richer objects; the server refuses unknown fields). */
+function where(bp: Breakpoint): Breakpoint {
+  if ("network" in bp) return { pou: bp.pou, network: bp.network };
+  return "element" in bp ? { pou: bp.pou, element: bp.element } : { pou: bp.pou, line: bp.line };
+}
+
 export function setMessage(bp: Breakpoint): BreakpointSet {
-  return { type: "breakpoint_set", ...bp };
+  return { type: "breakpoint_set", ...where(bp) };
 }
 
 export function clearMessage(bp: Breakpoint): BreakpointClear {
-  return { type: "breakpoint_clear", ...bp };
+  return { type: "breakpoint_clear", ...where(bp) };
 }
 
 /** The list with `bp` added, or removed if it was there, and the message that tells the server. */

@@ -3,8 +3,8 @@ import fc from "fast-check";
 import { describe, expect, it, vi } from "vitest";
 import type { SimulationInfo } from "../generated/api";
 import { createOnlineStore, type SocketLike } from "../online/store";
-import { describeBreakpoint, describeHalt, sameBreakpoint, toggle, type Breakpoint } from "./breakpoints";
-import { createDebugStore } from "./store";
+import { breakpointKey, clearMessage, describeBreakpoint, describeHalt, sameBreakpoint, setMessage, toggle, type Breakpoint } from "./breakpoints";
+import { createDebugStore, isEnabled } from "./store";
 
 const arbBreakpoint: fc.Arbitrary<Breakpoint> = fc.oneof(
   fc.record({ pou: fc.constantFrom("Main", "MAIN", "Fb"), network: fc.constantFrom("n1", "n2") }),
@@ -31,6 +31,17 @@ describe("breakpoint list (issue 9: toggle a breakpoint on a network or element)
         expect(twice.some((b) => sameBreakpoint(b, bp))).toBe(list.some((b) => sameBreakpoint(b, bp)));
       }),
     );
+  });
+
+  it("keys are equal exactly when breakpoints are the same; messages carry only the location", () => {
+    fc.assert(
+      fc.property(arbBreakpoint, arbBreakpoint, (a, b) => {
+        expect(breakpointKey(a) === breakpointKey(b)).toBe(sameBreakpoint(a, b));
+      }),
+    );
+    const richer = { pou: "Main", network: "n1", label: "shown in a panel" } as Breakpoint;
+    expect(setMessage(richer)).toEqual({ type: "breakpoint_set", pou: "Main", network: "n1" });
+    expect(clearMessage({ pou: "Calc", line: 4 })).toEqual({ type: "breakpoint_clear", pou: "Calc", line: 4 });
   });
 
   it("describes breakpoints and halts with network positions", () => {
@@ -66,7 +77,75 @@ describe("debug store (issue 9: breakpoints, continue, step)", () => {
     ]);
   });
 
-  it("keeps breakpoints set offline and sends them all when a simulation connects", async () => {
+  it("disables (cleared in the simulation, still listed) and enables (sent again) a breakpoint", () => {
+    const send = vi.fn((_msg: ClientMessage) => true);
+    const store = createDebugStore(send);
+    const { toggle, setEnabled, remove, clearAll } = store.getState();
+    toggle({ pou: "Main", network: "n1" });
+    toggle({ pou: "Main", element: "q1" });
+    setEnabled({ pou: "MAIN", network: "n1" }, false);
+    setEnabled({ pou: "Main", network: "n1" }, false); // already disabled: nothing sent
+    expect(store.getState().breakpoints).toEqual([{ pou: "Main", network: "n1" }, { pou: "Main", element: "q1" }]);
+    expect(isEnabled(store.getState(), { pou: "Main", network: "n1" })).toBe(false);
+    expect(isEnabled(store.getState(), { pou: "Main", element: "q1" })).toBe(true);
+    setEnabled({ pou: "Main", network: "n1" }, true);
+    setEnabled({ pou: "Main", element: "q1" }, false);
+    remove({ pou: "Main", element: "q1" }); // disabled: the simulation does not have it
+    setEnabled({ pou: "Main", element: "q1" }, true); // no longer listed: nothing happens
+    setEnabled({ pou: "Main", network: "n1" }, false);
+    toggle({ pou: "Main", network: "n1" }); // removes the disabled one without a message
+    expect(store.getState()).toMatchObject({ breakpoints: [], disabled: [] });
+    toggle({ pou: "Main", line: 2 });
+    setEnabled({ pou: "Main", line: 2 }, false);
+    clearAll(); // only disabled ones: the simulation has none to clear
+    expect(send.mock.calls.map(([m]) => m)).toEqual([
+      { type: "breakpoint_set", pou: "Main", network: "n1" },
+      { type: "breakpoint_set", pou: "Main", element: "q1" },
+      { type: "breakpoint_clear", pou: "Main", network: "n1" },
+      { type: "breakpoint_set", pou: "Main", network: "n1" },
+      { type: "breakpoint_clear", pou: "Main", element: "q1" },
+      { type: "breakpoint_clear", pou: "Main", network: "n1" },
+      { type: "breakpoint_set", pou: "Main", line: 2 },
+      { type: "breakpoint_clear", pou: "Main", line: 2 },
+    ]);
+  });
+
+  it("the simulation holds exactly the enabled breakpoints after any sequence of operations", () => {
+    type Op = { kind: "toggle" | "remove" | "enable" | "disable"; bp: Breakpoint } | { kind: "clearAll" };
+    const arbOp: fc.Arbitrary<Op> = fc.oneof(
+      fc.record({ kind: fc.constantFrom("toggle" as const, "remove" as const, "enable" as const, "disable" as const), bp: arbBreakpoint }),
+      fc.constant({ kind: "clearAll" as const }),
+    );
+    fc.assert(
+      fc.property(fc.array(arbOp, { maxLength: 25 }), (ops) => {
+        const server = new Map<string, Breakpoint>(); // what the simulation holds, from the messages alone
+        const send = (msg: ClientMessage) => {
+          if (msg.type === "breakpoint_set") server.set(breakpointKey(msg as Breakpoint), msg as Breakpoint);
+          if (msg.type === "breakpoint_clear") {
+            if (msg.pou == null) server.clear();
+            else {
+              expect(server.has(breakpointKey(msg as Breakpoint))).toBe(true); // never clears what it does not have
+              server.delete(breakpointKey(msg as Breakpoint));
+            }
+          }
+          return true;
+        };
+        const store = createDebugStore(send);
+        for (const op of ops) {
+          const s = store.getState();
+          if (op.kind === "clearAll") s.clearAll();
+          else if (op.kind === "toggle") s.toggle(op.bp);
+          else if (op.kind === "remove") s.remove(op.bp);
+          else s.setEnabled(op.bp, op.kind === "enable");
+        }
+        const state = store.getState();
+        expect([...server.keys()].sort()).toEqual(state.breakpoints.filter((b) => isEnabled(state, b)).map(breakpointKey).sort());
+        expect(state.disabled.every((key) => state.breakpoints.some((b) => breakpointKey(b) === key))).toBe(true);
+      }),
+    );
+  });
+
+  it("keeps breakpoints set offline and sends the enabled ones on every new connection", async () => {
     const sockets: { sent: unknown[]; readyState: number; onopen: SocketLike["onopen"] }[] = [];
     const info = { id: "s1" } as SimulationInfo;
     const online = createOnlineStore(
@@ -80,15 +159,29 @@ describe("debug store (issue 9: breakpoints, continue, step)", () => {
     const debug = createDebugStore((msg) => online.getState().send(msg), online);
     debug.getState().toggle({ pou: "Main", network: "n2" });
     debug.getState().toggle({ pou: "Main", line: 3 });
-    expect(debug.getState().breakpoints).toHaveLength(2);
-    await online.getState().compile("demo");
-    const socket = sockets[0]!;
-    socket.readyState = 1;
-    socket.onopen?.call(socket as unknown as WebSocket, new Event("open"));
-    expect(socket.sent.filter((m) => (m as { type: string }).type.startsWith("breakpoint"))).toEqual([
+    debug.getState().toggle({ pou: "Fb", element: "q1" });
+    debug.getState().setEnabled({ pou: "Main", line: 3 }, false);
+    expect(debug.getState().breakpoints).toHaveLength(3);
+    const connect = async () => {
+      await online.getState().compile("demo");
+      const socket = sockets[sockets.length - 1]!;
+      socket.readyState = 1;
+      socket.onopen?.call(socket as unknown as WebSocket, new Event("open"));
+      return socket;
+    };
+    const breakpointMessages = (socket: { sent: unknown[] }) => socket.sent.filter((m) => (m as { type: string }).type.startsWith("breakpoint"));
+    const first = await connect();
+    expect(breakpointMessages(first)).toEqual([
       { type: "breakpoint_set", pou: "Main", network: "n2" },
-      { type: "breakpoint_set", pou: "Main", line: 3 },
+      { type: "breakpoint_set", pou: "Fb", element: "q1" },
     ]);
+    // A reconnect (a new simulation): the same enabled breakpoints again, the disabled one still listed and disabled.
+    const second = await connect();
+    expect(second).not.toBe(first);
+    expect(breakpointMessages(second)).toEqual(breakpointMessages(first));
+    expect(isEnabled(debug.getState(), { pou: "Main", line: 3 })).toBe(false);
+    debug.getState().setEnabled({ pou: "Main", line: 3 }, true);
+    expect(breakpointMessages(second).at(-1)).toEqual({ type: "breakpoint_set", pou: "Main", line: 3 });
     await online.getState().goOffline();
   });
 });

@@ -1,51 +1,85 @@
 // The breakpoints of the open project and the halted-scan commands (continue, step). Breakpoints
 // live in the browser and are sent to the simulation as they change; a new connection (compile,
-// reconnect) gets all of them again, since a new simulation starts with none.
+// reconnect) gets every enabled one again, since a new simulation starts with none. A disabled
+// breakpoint stays listed but is cleared in the simulation; enabling it sends it again.
 import { useStore } from "zustand";
 import { createStore, type StoreApi } from "zustand/vanilla";
 import type { ClientMessage } from "../online/protocol";
 import { onlineStore, type OnlineState } from "../online/store";
-import { clearMessage, sameBreakpoint, setMessage, toggle, type Breakpoint, type StepGranularity } from "./breakpoints";
+import { breakpointKey, clearMessage, sameBreakpoint, setMessage, toggle, type Breakpoint, type StepGranularity } from "./breakpoints";
 
 export interface DebugState {
+  /** Every breakpoint, enabled or not, in the order they were set. */
   breakpoints: Breakpoint[];
+  /** `breakpointKey`s of the disabled ones. */
+  disabled: string[];
+  /** Adds `bp` (enabled) or removes it when it is there. */
   toggle(bp: Breakpoint): void;
   remove(bp: Breakpoint): void;
   clearAll(): void;
+  /** Enables (sent to the simulation) or disables (cleared there, kept in the list) a listed breakpoint. */
+  setEnabled(bp: Breakpoint, enabled: boolean): void;
   resume(): void;
   step(granularity: StepGranularity): void;
 }
 
+/** Whether a listed breakpoint is enabled (one not listed counts as enabled: it has no state yet). */
+export const isEnabled = (state: { readonly disabled: readonly string[] }, bp: Breakpoint): boolean => !state.disabled.includes(breakpointKey(bp));
+
 /** `send` delivers a message to the simulation (false when not connected: the list still changes). */
 export function createDebugStore(send: (msg: ClientMessage) => boolean, online: StoreApi<OnlineState> | null = null): StoreApi<DebugState> {
-  const store = createStore<DebugState>()((set, get) => ({
-    breakpoints: [],
-    toggle(bp) {
-      const { list, message } = toggle(get().breakpoints, bp);
-      set({ breakpoints: list });
-      send(message);
-    },
-    remove(bp) {
-      const rest = get().breakpoints.filter((b) => !sameBreakpoint(b, bp));
-      if (rest.length === get().breakpoints.length) return;
-      set({ breakpoints: rest });
-      send(clearMessage(bp));
-    },
-    clearAll() {
-      const had = get().breakpoints.length > 0;
-      set({ breakpoints: [] });
-      if (had) send({ type: "breakpoint_clear" });
-    },
-    resume: () => void send({ type: "continue" }),
-    step: (granularity) => void send({ type: "step", granularity }),
-  }));
+  const store = createStore<DebugState>()((set, get) => {
+    const listed = (bp: Breakpoint) => get().breakpoints.find((b) => sameBreakpoint(b, bp));
+    const without = (bp: Breakpoint) => ({
+      breakpoints: get().breakpoints.filter((b) => !sameBreakpoint(b, bp)),
+      disabled: get().disabled.filter((key) => key !== breakpointKey(bp)),
+    });
+    return {
+      breakpoints: [],
+      disabled: [],
+      toggle(bp) {
+        const found = listed(bp);
+        if (found && !isEnabled(get(), found)) {
+          set(without(found)); // the simulation does not have it: nothing to clear
+          return;
+        }
+        const { list, message } = toggle(get().breakpoints, bp);
+        set({ breakpoints: list, disabled: without(bp).disabled });
+        send(message);
+      },
+      remove(bp) {
+        const found = listed(bp);
+        if (!found) return;
+        const enabled = isEnabled(get(), found);
+        set(without(found));
+        if (enabled) send(clearMessage(bp));
+      },
+      clearAll() {
+        const anyEnabled = get().breakpoints.some((b) => isEnabled(get(), b));
+        set({ breakpoints: [], disabled: [] });
+        if (anyEnabled) send({ type: "breakpoint_clear" });
+      },
+      setEnabled(bp, enabled) {
+        const found = listed(bp);
+        if (!found || isEnabled(get(), found) === enabled) return;
+        const key = breakpointKey(found);
+        set({ disabled: enabled ? get().disabled.filter((k) => k !== key) : [...get().disabled, key] });
+        send(enabled ? setMessage(found) : clearMessage(found));
+      },
+      resume: () => void send({ type: "continue" }),
+      step: (granularity) => void send({ type: "step", granularity }),
+    };
+  });
   online?.subscribe((state, previous) => {
-    if (state.phase === "online" && previous.phase !== "online") for (const bp of store.getState().breakpoints) send(setMessage(bp));
+    if (state.phase !== "online" || previous.phase === "online") return;
+    const debug = store.getState();
+    for (const bp of debug.breakpoints) if (isEnabled(debug, bp)) send(setMessage(bp));
   });
   return store;
 }
 
-export const debugStore = createDebugStore((msg) => onlineStore.getState().send(msg), onlineStore);
+/** Sends only while connected: offline changes are kept and sent when a simulation connects. */
+export const debugStore = createDebugStore((msg) => onlineStore.getState().phase === "online" && onlineStore.getState().send(msg), onlineStore);
 
 export function useDebug<T>(selector: (state: DebugState) => T): T {
   return useStore(debugStore, selector);

@@ -73,7 +73,7 @@ export function SimulationBar() {
       else if (e.key === "F8" && e.ctrlKey) run = o.goOffline;
       else if (e.key === "F8" && ready) run = o.singleCycle;
       else if (e.key === "F5" && e.shiftKey && ready) run = o.stop;
-      else if (e.key === "F5" && !e.shiftKey && ready) run = o.run;
+      else if (e.key === "F5" && !e.shiftKey && ready && o.monitor.state !== "halted") run = o.run; // halted: F5 continues (debug/DebugBar)
       if (!run) return;
       e.preventDefault();
       void run();
@@ -94,10 +94,10 @@ export function SimulationBar() {
       <button type="button" onClick={s.run} disabled={!online || running} title="Run (F5)">
         Run
       </button>
-      <button type="button" onClick={s.stop} disabled={!online || !running} title="Stop (Shift+F5)">
+      <button type="button" onClick={s.stop} disabled={!online || !(running || state === "halted")} title="Stop (Shift+F5)">
         Stop
       </button>
-      <button type="button" onClick={s.singleCycle} disabled={!online || running} title="Single cycle (F8)">
+      <button type="button" onClick={s.singleCycle} disabled={!online} title="Single cycle (F8): one scan, then stopped">
         Single cycle
       </button>
       <button type="button" onClick={() => void s.reset()} disabled={!online} title="Warm reset">

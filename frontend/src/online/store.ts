@@ -49,6 +49,7 @@ export interface OnlineActions {
   goOffline(): Promise<void>;
   run(): void;
   stop(): void;
+  /** Exactly one scan, then stopped (a running simulation is stopped first; halted: the rest of the scan). */
   singleCycle(): void;
   reset(cold?: boolean): Promise<void>;
   write(path: string, value: WriteValue): void;
@@ -209,7 +210,10 @@ export function createOnlineStore(api: SimulationApi = simulationApi, openSocket
 
       run: () => void send({ type: "run" }),
       stop: () => void send({ type: "stop" }),
-      singleCycle: () => void send({ type: "single_cycle" }),
+      singleCycle() {
+        if (get().monitor.state === "running" && !send({ type: "stop" })) return;
+        send({ type: "single_cycle" });
+      },
 
       async reset(cold = false) {
         const id = get().simulation;

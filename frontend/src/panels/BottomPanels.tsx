@@ -1,7 +1,9 @@
-// The panels under the editor: Diagnostics, Watch list and Online log, one shown at a time.
+// The panels under the editor: Diagnostics, Watch list, Online log and Breakpoints, one shown at a time.
+import { useDebug } from "../debug/store";
 import type { Diagnostic } from "../generated/api";
 import { draggedOperand } from "../ld/editor/dragOperand";
 import { onlineStore, useOnline } from "../online/store";
+import { BreakpointsPanel } from "./BreakpointsPanel";
 import { DiagnosticsPanel } from "./DiagnosticsPanel";
 import { LogPanel } from "./LogPanel";
 import { usePanels, type PanelId } from "./store";
@@ -19,10 +21,12 @@ export function BottomPanels({ onReveal, pathOfOperand }: BottomPanelsProps) {
   const problems = usePanels((s) => s.diagnostics?.length ?? 0);
   const watched = useOnline((s) => s.watch.length);
   const logged = useOnline((s) => s.monitor.log.length);
+  const breakpoints = useDebug((s) => s.breakpoints.length);
   const tabs: { id: PanelId; label: string }[] = [
     { id: "diagnostics", label: `Diagnostics (${problems})` },
     { id: "watch", label: `Watch list (${watched})` },
     { id: "log", label: `Online log (${logged})` },
+    { id: "breakpoints", label: `Breakpoints (${breakpoints})` },
   ];
   // A variable dragged from the diagram and released over the panels joins the watch list.
   const drop = () => {
@@ -42,7 +46,7 @@ export function BottomPanels({ onReveal, pathOfOperand }: BottomPanelsProps) {
         ))}
       </div>
       <div className="panel-body" role="tabpanel">
-        {panel === "diagnostics" ? <DiagnosticsPanel onReveal={onReveal} /> : panel === "watch" ? <WatchPanel /> : <LogPanel />}
+        {panel === "diagnostics" ? <DiagnosticsPanel onReveal={onReveal} /> : panel === "watch" ? <WatchPanel /> : panel === "breakpoints" ? <BreakpointsPanel /> : <LogPanel />}
       </div>
     </section>
   );

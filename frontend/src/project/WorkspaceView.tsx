@@ -23,7 +23,9 @@ import { appStore } from "../store";
 import { StEditor } from "../st/StEditor";
 import { stCompletions } from "../st/completion";
 import { useSavedCheck } from "../st/useSavedCheck";
-import { DebugBar } from "../debug/DebugBar";
+import { DEBUG_KEYS, DebugBar } from "../debug/DebugBar";
+import { useLdDebugging } from "../debug/ldDebugging";
+import { revealPlace } from "../debug/reveal";
 import { debugStore, useDebug } from "../debug/store";
 
 const KINDS: { kind: Pou["kind"]; title: string }[] = [
@@ -177,6 +179,8 @@ function Tabs() {
 }
 
 const NO_DIAGNOSTICS: Diagnostic[] = [];
+/** The app's keys in the editor's shortcut help. */
+const APP_KEYS = [...SIMULATION_KEYS, ...DEBUG_KEYS];
 
 /** A POU by an IEC name in any case (the simulation reports halts with the compiled spelling). */
 const pouNamed = (project: Project | null, name: string) => project?.pous?.find((p) => p.name.toUpperCase() === name.toUpperCase());
@@ -212,6 +216,7 @@ function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
   const focus = usePanels((s) => (s.focus?.pou.toUpperCase() === name.toUpperCase() ? s.focus : null));
   const symbols = useMemo(() => symbolsOf(table), [table]);
   const live = useLdOnline(pou, history.present, symbols);
+  const debugging = useLdDebugging(name, history.present);
   const diagnostics = useMemo(
     () => [...(table?.diagnostics ?? []), ...checked.filter((d) => d.pou?.toUpperCase() === name.toUpperCase())].filter((d) => d.network),
     [table, checked, name],
@@ -240,7 +245,8 @@ function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
       onlineActions={live.actions}
       onVisibleChange={live.onVisibleChange}
       focus={focus}
-      extraShortcuts={SIMULATION_KEYS}
+      extraShortcuts={APP_KEYS}
+      debugging={debugging}
     />
   );
 }
@@ -431,12 +437,6 @@ export function WorkspaceView() {
     [project],
   );
 
-  /** A halt or a breakpoint shown in its editor: open the POU (matched case-insensitively), select the place. */
-  const revealPlace = useCallback((target: { pou: string; network?: string | null; element?: string | null }) => {
-    const pou = pouNamed(workspaceStore.getState().project, target.pou)?.name ?? target.pou;
-    workspaceStore.getState().openPou(pou);
-    panelsStore.getState().reveal({ ...target, pou, part: "body" });
-  }, []);
   const networksOf = useCallback(
     (pouName: string) => {
       const body = pouNamed(project, pouName)?.body;
@@ -500,7 +500,7 @@ export function WorkspaceView() {
       <SimulationBar />
       <ProjectTree />
       <div className="editor-area">
-        <DebugBar pou={active ? (pouOf(project, active) ?? null) : null} networksOf={networksOf} reveal={revealPlace} />
+        <DebugBar networksOf={networksOf} reveal={revealPlace} />
         <Tabs />
         {active ? <PouView key={active} name={active} /> : <p className="placeholder">Open a POU from the project tree.</p>}
       </div>

@@ -4,10 +4,12 @@ import { available, COMMANDS, type Command, type CommandContext, type CommandGro
 
 const GROUP_ORDER: CommandGroup[] = ["insert", "mode", "edit", "clipboard", "network", "history"];
 
-/** An item that is not an editor command (online: write, force, watch). */
+/** An item that is not an editor command (breakpoints; online: write, force, watch). */
 export interface MenuItem {
   id: string;
   label: string;
+  /** Its shortcut, shown like a command's. */
+  keys?: string;
   run(): void;
 }
 
@@ -57,6 +59,7 @@ export function ContextMenu({ x, y, ctx, extra = [], onClose }: ContextMenuProps
               <li key={item.id} role="none">
                 <button type="button" role="menuitem" onClick={() => run({ run: item.run })}>
                   <span>{item.label}</span>
+                  {item.keys ? <kbd>{item.keys}</kbd> : null}
                 </button>
               </li>
             ))}

@@ -11,7 +11,7 @@ import { locate, networksOf, walk, type LdBody, type Place } from "../model";
 import * as ops from "../ops";
 import type { EditResult, OperandField } from "../ops";
 import { LdDiagram } from "../view/LdDiagram";
-import type { DiagramHandlers, OnlineView, Selection, Target } from "../view/types";
+import type { DebugMarks, DiagramHandlers, OnlineView, Selection, Target } from "../view/types";
 import { BoxPicker } from "./BoxPicker";
 import { available, COMMANDS, commandForKey, insert, selectedNetwork, type CommandContext, type CommandGroup } from "./commands";
 import { ContextMenu, type MenuItem } from "./ContextMenu";
@@ -44,6 +44,14 @@ export interface LdEditorProps {
   extraShortcuts?: readonly [string, string][];
   /** Select and reveal a network or element (a diagnostic was clicked); `seq` repeats a jump to the same place. */
   focus?: { network?: string | null; element?: string | null; seq: number } | null;
+  /** Breakpoints: drawn from `marks`; a network number click, Alt+click on an element, F9 or the context menu toggle them. */
+  debugging?: LdDebugging;
+}
+
+/** What the editor needs for breakpoints (the caller owns them: the debug store). */
+export interface LdDebugging {
+  marks: DebugMarks;
+  toggle(target: { network: string } | { element: string }): void;
 }
 
 /** What the diagram can ask of a running simulation, by operand text (the caller maps it to a path). */
@@ -138,6 +146,7 @@ export function LdEditor({
   onVisibleChange,
   focus,
   extraShortcuts = [],
+  debugging,
 }: LdEditorProps) {
   const body = history.present;
   const root = useRef<HTMLDivElement>(null);
@@ -359,6 +368,11 @@ export function LdEditor({
       root.current?.focus();
       setMenu(null);
       if (target.kind === "element") {
+        if (event.altKey && debugging) {
+          select({ kind: "elements", ids: [target.id] });
+          debugging.toggle({ element: target.id });
+          return;
+        }
         if (event.shiftKey && anchor) {
           select({ kind: "elements", ids: ops.rangeIds(body, anchor, target.id) }, anchor);
           return;
@@ -408,6 +422,14 @@ export function LdEditor({
       else select({ kind: "network", id: target.id });
       setMenu({ x: event.clientX - (box?.left ?? 0), y: event.clientY - (box?.top ?? 0) });
     },
+    onNetworkNumber: debugging && ((network) => debugging.toggle({ network })),
+  };
+
+  /** The breakpoint F9 and the context menu toggle: the selected element, else the selected network. */
+  const breakpointTarget = (): { network: string } | { element: string } | null => {
+    if (liveSelection?.kind === "elements") return { element: liveSelection.ids[0]! };
+    const network = selectedNetwork({ body, selection: liveSelection });
+    return network ? { network } : null;
   };
 
   const onKeyDown = (event: KeyboardEvent<HTMLDivElement>) => {
@@ -422,6 +444,12 @@ export function LdEditor({
       } else {
         select(navigate(body, layout, liveSelection, direction));
       }
+      return;
+    }
+    if (event.key === "F9" && debugging && !event.altKey && !event.ctrlKey && !event.metaKey && !event.shiftKey) {
+      event.preventDefault();
+      const target = breakpointTarget();
+      if (target) debugging.toggle(target);
       return;
     }
     if (event.key === "Escape") {
@@ -450,11 +478,17 @@ export function LdEditor({
     if (!readOnly) pasteText(event.clipboardData.getData("text/plain"));
   };
 
-  /** The online items of the context menu, for the selected element's variable. */
-  const onlineItems = (): MenuItem[] => {
+  /** The items of the context menu besides the editing commands: breakpoints, online commands on the selected element's variable. */
+  const extraItems = (): MenuItem[] => {
+    const target = debugging ? breakpointTarget() : null;
+    const breakpoint: MenuItem[] =
+      debugging && target
+        ? [{ id: "toggle-breakpoint", label: "element" in target ? "Toggle breakpoint on element" : "Toggle breakpoint on network", keys: "F9", run: () => debugging.toggle(target) }]
+        : [];
     const operand = onlineActions && liveSelection?.kind === "elements" ? variableOf(body, liveSelection.ids[0]!) : null;
-    if (!onlineActions || !operand) return [];
+    if (!onlineActions || !operand) return breakpoint;
     return [
+      ...breakpoint,
       { id: "online-write", label: `Write value of ${operand}…`, run: () => setValuePrompt({ operand, action: "write" }) },
       { id: "online-force-true", label: "Force TRUE", run: () => onlineActions.force(operand, true) },
       { id: "online-force-false", label: "Force FALSE", run: () => onlineActions.force(operand, false) },
@@ -569,9 +603,10 @@ export function LdEditor({
         reveal={reveal}
         overlay={editorOverlay}
         onVisibleChange={onVisibleChange}
+        debug={debugging?.marks}
       />
       {networksOf(body).length === 0 ? <p className="ld-empty-hint">This POU has no networks yet: press Ctrl+Enter or C to start a rung.</p> : null}
-      {menu ? <ContextMenu x={menu.x} y={menu.y} ctx={ctx} extra={onlineItems()} onClose={() => setMenu(null)} /> : null}
+      {menu ? <ContextMenu x={menu.x} y={menu.y} ctx={ctx} extra={extraItems()} onClose={() => setMenu(null)} /> : null}
       {valuePrompt && onlineActions ? (
         <ValuePrompt
           title={`${valuePrompt.action === "write" ? "Write" : "Force"} ${valuePrompt.operand}`}

@@ -6,7 +6,7 @@ import type { Diagnostic } from "../../generated/api";
 import type { LdLayout, NetworkLayout } from "../layout";
 import { locate, networkOfSeries, type LdBody } from "../model";
 import { NetworkView } from "./NetworkView";
-import type { DiagramHandlers, OnlineView, Selection } from "./types";
+import type { DebugMarks, DiagramHandlers, OnlineView, Selection } from "./types";
 
 export interface LdDiagramProps {
   body: LdBody;
@@ -24,6 +24,8 @@ export interface LdDiagramProps {
   overlay?: ReactNode;
   /** Told the ids of the networks rendered whenever they change (online mode subscribes to them). */
   onVisibleChange?(networks: readonly string[]): void;
+  /** Breakpoints and the halt; a new halt is scrolled into view. */
+  debug?: DebugMarks;
 }
 
 const OVERSCAN = 400;
@@ -64,7 +66,7 @@ function selectionNetwork(body: LdBody, selection: Selection | null): string | n
   return first ? (locate(body, first)?.network ?? null) : null;
 }
 
-export function LdDiagram({ body, layout, selection, diagnostics = NO_DIAGNOSTICS, online, dropping = false, handlers = NO_HANDLERS, reveal, fallbackHeight = 900, overlay, onVisibleChange }: LdDiagramProps) {
+export function LdDiagram({ body, layout, selection, diagnostics = NO_DIAGNOSTICS, online, dropping = false, handlers = NO_HANDLERS, reveal, fallbackHeight = 900, overlay, onVisibleChange, debug }: LdDiagramProps) {
   const scroller = useRef<HTMLDivElement>(null);
   const [viewport, setViewport] = useState({ top: 0, height: fallbackHeight });
 
@@ -79,15 +81,20 @@ export function LdDiagram({ body, layout, selection, diagnostics = NO_DIAGNOSTIC
     return () => observer.disconnect();
   }, [fallbackHeight]);
 
-  useEffect(() => {
+  /** Scrolls the least that brings network `id` into view. */
+  const scrollTo = (id: string | null | undefined) => {
     const el = scroller.current;
-    const target = reveal ? layout.networks.find((n) => n.network.id === reveal) : undefined;
+    const target = id ? layout.networks.find((n) => n.network.id === id) : undefined;
     if (!el || !target) return;
     const height = el.clientHeight || fallbackHeight;
     if (target.top < el.scrollTop) el.scrollTop = target.top;
     else if (target.top + target.height > el.scrollTop + height) el.scrollTop = Math.max(0, target.top + target.height - height);
     setViewport({ top: el.scrollTop, height });
-  }, [reveal, layout, fallbackHeight]);
+  };
+  useEffect(() => scrollTo(reveal), [reveal, layout, fallbackHeight]);
+  // A halt (or a step to another network) is shown wherever the user had scrolled.
+  const haltedNetwork = debug?.halted?.network;
+  useEffect(() => scrollTo(haltedNetwork), [haltedNetwork]);
 
   const byNetwork = useMemo(() => {
     const map = new Map<string, Diagnostic[]>();
@@ -114,6 +121,7 @@ export function LdDiagram({ body, layout, selection, diagnostics = NO_DIAGNOSTIC
               online={online}
               dropping={dropping}
               handlers={handlers}
+              debug={debug}
             />
           </div>
         ))}

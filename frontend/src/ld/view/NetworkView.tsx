@@ -6,7 +6,7 @@ import type { Diagnostic } from "../../generated/api";
 import type { LaidWire, NetworkLayout, PlacedElement } from "../layout";
 import { sameSeries, type Place } from "../model";
 import { SHAPES, fit } from "./shapes";
-import type { DiagramHandlers, OnlineView, Selection, Target } from "./types";
+import type { DebugMarks, DiagramHandlers, OnlineView, Selection, Target } from "./types";
 
 export interface NetworkViewProps {
   layout: NetworkLayout;
@@ -18,6 +18,7 @@ export interface NetworkViewProps {
   /** Show the insertion slots as drop targets (while dragging). */
   dropping: boolean;
   handlers: DiagramHandlers;
+  debug?: DebugMarks;
 }
 
 /** "ld-on"/"ld-off" from the engine's power flow, nothing when offline or unknown. */
@@ -35,15 +36,27 @@ function Wire({ wire, online }: { wire: LaidWire; online?: OnlineView }) {
   return <line className={`ld-${wire.kind}${powerClass(online, wire.power)}${dimmed}`} x1={wire.x1} y1={wire.y1} x2={wire.x2} y2={wire.y2} />;
 }
 
+/** A breakpoint: a red dot, hollow when disabled. */
+function BreakpointDot({ x, y, r, enabled, label }: { x: number; y: number; r: number; enabled: boolean; label: string }) {
+  return (
+    <circle className={`ld-breakpoint${enabled ? "" : " ld-breakpoint-disabled"}`} cx={x} cy={y} r={r} role="img" aria-label={`${label}${enabled ? "" : " (disabled)"}`}>
+      <title>{`${label}${enabled ? "" : " (disabled)"}`}</title>
+    </circle>
+  );
+}
+
 interface ElementProps {
   placed: PlacedElement;
   selected: boolean;
+  /** true/false: an enabled/disabled breakpoint on the element; undefined: none. */
+  breakpoint?: boolean;
+  halted: boolean;
   problems: readonly Diagnostic[];
   online?: OnlineView;
   handlers: DiagramHandlers;
 }
 
-function Element({ placed, selected, problems, online, handlers }: ElementProps) {
+function Element({ placed, selected, breakpoint, halted, problems, online, handlers }: ElementProps) {
   const type = placed.element.type ?? "contact";
   const target: Target = { kind: "element", id: placed.id };
   const mode = "mode" in placed.element ? ` ld-mode-${placed.element.mode}` : "";
@@ -53,6 +66,7 @@ function Element({ placed, selected, problems, online, handlers }: ElementProps)
     powerClass(online, placed.id).trim(),
     online?.executed?.[placed.id] === false ? "ld-not-executed" : "",
     problems.length ? "ld-has-diagnostic" : "",
+    halted ? "ld-halted" : "",
   ].filter(Boolean);
   const Shape = type === "parallel" ? null : SHAPES[type];
   return (
@@ -64,8 +78,10 @@ function Element({ placed, selected, problems, online, handlers }: ElementProps)
       onContextMenu={handlers.onContextMenu && ((e) => handlers.onContextMenu!(target, e))}
     >
       <rect className="ld-hit" x={placed.x} y={placed.y} width={placed.width} height={placed.height} />
+      {halted ? <rect className="ld-halt-frame" x={placed.x - 2} y={placed.y - 2} width={placed.width + 4} height={placed.height + 4} rx={4} /> : null}
       {Shape ? <Shape placed={placed} online={online} onOperand={handlers.onOperand} /> : null}
       {problems.length ? <Marker x={placed.x + placed.width - 6} y={placed.y + 8} problems={problems} /> : null}
+      {breakpoint !== undefined ? <BreakpointDot x={placed.x + 5} y={placed.y + 5} r={4} enabled={breakpoint} label={`Breakpoint on element ${placed.id}`} /> : null}
     </g>
   );
 }
@@ -84,7 +100,7 @@ function Marker({ x, y, problems }: { x: number; y: number; problems: readonly D
   );
 }
 
-function NetworkViewImpl({ layout, width, selection, diagnostics, online, dropping, handlers }: NetworkViewProps) {
+function NetworkViewImpl({ layout, width, selection, diagnostics, online, dropping, handlers, debug }: NetworkViewProps) {
   const { network } = layout;
   const networkTarget: Target = { kind: "network", id: network.id };
   const selectedIds = new Set(selection?.kind === "elements" ? selection.ids : []);
@@ -99,9 +115,12 @@ function NetworkViewImpl({ layout, width, selection, diagnostics, online, droppi
   const networkSelected = selection?.kind === "network";
   const executed = online?.executed?.[network.id] !== false;
   const onNetwork = (handler?: (t: Target, e: MouseEvent) => void) => handler && ((e: MouseEvent) => handler(networkTarget, e));
+  const breakpoint = debug?.networks?.[network.id];
+  const halted = debug?.halted?.network === network.id ? debug.halted : null;
+  const number = layout.index + 1;
   return (
     <svg
-      className={`ld-network${networkSelected ? " ld-selected" : ""}${executed ? "" : " ld-not-executed"}`}
+      className={`ld-network${networkSelected ? " ld-selected" : ""}${executed ? "" : " ld-not-executed"}${halted ? " ld-halted" : ""}`}
       data-network={network.id}
       width={width}
       height={layout.height}
@@ -110,9 +129,18 @@ function NetworkViewImpl({ layout, width, selection, diagnostics, online, droppi
     >
       <g className="ld-header" onMouseDown={onNetwork(handlers.onPointerDown)} onContextMenu={onNetwork(handlers.onContextMenu)} onDoubleClick={onNetwork(handlers.onDoubleClick)}>
         <rect className="ld-header-bg" x={0} y={0} width={width} height={layout.rungTop - 4} />
-        <text className="ld-number" x={6} y={16}>
-          {layout.index + 1}
-        </text>
+        <g
+          className={`ld-number-hit${handlers.onNetworkNumber ? " ld-clickable" : ""}`}
+          role={handlers.onNetworkNumber ? "button" : undefined}
+          aria-label={handlers.onNetworkNumber ? `Toggle breakpoint on network ${number}` : undefined}
+          onClick={handlers.onNetworkNumber && ((e) => handlers.onNetworkNumber!(network.id, e))}
+        >
+          <rect className="ld-number-bg" x={0} y={0} width={layout.leftRailX - 2} height={22} />
+          {breakpoint !== undefined ? <BreakpointDot x={8} y={12} r={5} enabled={breakpoint} label={`Breakpoint on network ${number}`} /> : null}
+          <text className="ld-number" x={layout.leftRailX - 4} y={16} textAnchor="end">
+            {number}
+          </text>
+        </g>
         {network.label ? (
           <text className="ld-label" x={layout.leftRailX} y={16}>
             {network.label}:
@@ -131,7 +159,16 @@ function NetworkViewImpl({ layout, width, selection, diagnostics, online, droppi
         <Wire key={i} wire={wire} online={online} />
       ))}
       {layout.elements.map((placed) => (
-        <Element key={placed.id} placed={placed} selected={selectedIds.has(placed.id)} problems={byElement.get(placed.id) ?? []} online={online} handlers={handlers} />
+        <Element
+          key={placed.id}
+          placed={placed}
+          selected={selectedIds.has(placed.id)}
+          breakpoint={debug?.elements?.[placed.id]}
+          halted={halted?.element === placed.id}
+          problems={byElement.get(placed.id) ?? []}
+          online={online}
+          handlers={handlers}
+        />
       ))}
       {layout.slots.map((slot) => {
         const selected = selection?.kind === "place" && samePlace(selection.place, slot.place);

@@ -21,6 +21,16 @@ export interface OnlineView {
   values?: Readonly<Record<string, string | number | boolean>>;
 }
 
+/**
+ * Debugging marks (issue 9): breakpoints on networks and elements by id (true enabled, false
+ * disabled, drawn hollow) and where a halted scan stands in this POU.
+ */
+export interface DebugMarks {
+  networks?: Readonly<Record<string, boolean>>;
+  elements?: Readonly<Record<string, boolean>>;
+  halted?: { network: string; element: string | null } | null;
+}
+
 /** Something the user can point at in the diagram. */
 export type Target = { kind: "element"; id: string } | { kind: "place"; place: Place } | { kind: "network"; id: string };
 
@@ -31,6 +41,8 @@ export interface DiagramHandlers {
   onOperand?(id: string, field: OperandField, event: MouseEvent): void;
   onDoubleClick?(target: Target, event: MouseEvent): void;
   onContextMenu?(target: Target, event: MouseEvent): void;
+  /** The network number was clicked (toggles a breakpoint on the network). */
+  onNetworkNumber?(network: string, event: MouseEvent): void;
 }
 
 export type DiagnosticsByElement = ReadonlyMap<string, Diagnostic[]>;

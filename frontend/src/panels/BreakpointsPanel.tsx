@@ -1,0 +1,108 @@
+// Every breakpoint of the project (LD/FBD networks and elements, ST lines, wherever they were set):
+// enable/disable, remove, remove all, and a click shows the place in its editor. The row where the
+// scan is halted is marked.
+import type { LdBody, Pou } from "../generated/project";
+import { breakpointKey, type Breakpoint } from "../debug/breakpoints";
+import { revealPlace } from "../debug/reveal";
+import { debugStore, isEnabled, useDebug } from "../debug/store";
+import { locate } from "../ld/model";
+import type { At } from "../online/protocol";
+import { useOnline } from "../online/store";
+import { useWorkspace } from "../project/store";
+
+/** The networks of a diagram body (LD or FBD), enough to number and name them. */
+type Networks = readonly { id: string; label?: string | null; comment?: string | null }[];
+
+/** What an LD element is, in a few words ("coil Motor", "TON RunTimer"); null for unknown ids. */
+function ldElementText(body: LdBody, id: string): string | null {
+  const e = locate(body, id)?.element;
+  if (!e) return null;
+  switch (e.type) {
+    case "contact":
+    case "coil":
+      return `${e.type} ${e.var}`;
+    case "compare":
+      return `${e.left} ${e.op} ${e.right}`;
+    case "box":
+      return [e.call, e.instance].filter(Boolean).join(" ");
+    case "jump":
+      return `jump to ${e.target}`;
+    default:
+      return e.type ?? "contact";
+  }
+}
+
+/** Where a breakpoint is, in words: "network 2 seal_in: comment", "element motor (coil Motor)", "line 3: Count := Count + 1;". */
+export function describePlace(bp: Breakpoint, pou: Pou | undefined, body: Pou["body"] | undefined): string {
+  const networks: Networks = body && typeof body === "object" ? (body.networks ?? []) : [];
+  if ("line" in bp) {
+    const text = typeof body === "string" ? body.split("\n")[bp.line - 1]?.trim() : undefined;
+    return text ? `line ${bp.line}: ${text}` : `line ${bp.line}`;
+  }
+  if ("network" in bp) {
+    const index = networks.findIndex((n) => n.id === bp.network);
+    if (index < 0) return `network ${bp.network} (not in the POU)`;
+    const n = networks[index]!;
+    const comment = n.comment?.split("\n")[0];
+    return [`network ${index + 1}`, n.label ? `${n.label}:` : null, comment].filter(Boolean).join(" ");
+  }
+  const what = pou?.language === "ld" && body && typeof body === "object" ? ldElementText(body as LdBody, bp.element) : null;
+  return what ? `element ${bp.element} (${what})` : `element ${bp.element}`;
+}
+
+/** Whether the scan halted at this breakpoint. */
+function hitBy(bp: Breakpoint, at: At | null): boolean {
+  if (!at || at.pou.toUpperCase() !== bp.pou.toUpperCase()) return false;
+  if ("network" in bp) return at.network === bp.network && !at.element;
+  return "element" in bp ? at.element === bp.element : at.line === bp.line;
+}
+
+function BreakpointRow({ bp, enabled, pou, body, hit }: { bp: Breakpoint; enabled: boolean; pou: Pou | undefined; body: Pou["body"] | undefined; hit: boolean }) {
+  const name = pou?.name ?? bp.pou;
+  const place = describePlace(bp, pou, body);
+  const label = `${name}, ${place}`;
+  const debug = debugStore.getState();
+  return (
+    <tr className={`breakpoint-row${enabled ? "" : " breakpoint-disabled"}${hit ? " breakpoint-hit" : ""}`} data-breakpoint={breakpointKey(bp)}>
+      <td>
+        <input type="checkbox" aria-label={`Enable breakpoint ${label}`} checked={enabled} onChange={(e) => debug.setEnabled(bp, e.target.checked)} />
+      </td>
+      <td>
+        <button type="button" className="link" title="Show in the editor" onClick={() => revealPlace({ pou: name, network: "network" in bp ? bp.network : null, element: "element" in bp ? bp.element : null, line: "line" in bp ? bp.line : null })}>
+          <span className="breakpoint-pou">{name}</span> {place}
+        </button>
+        {hit ? <span className="breakpoint-hit-mark"> ← halted here</span> : null}
+      </td>
+      <td>
+        <button type="button" aria-label={`Remove breakpoint ${label}`} onClick={() => debug.remove(bp)}>
+          ×
+        </button>
+      </td>
+    </tr>
+  );
+}
+
+export function BreakpointsPanel() {
+  const breakpoints = useDebug((s) => s.breakpoints);
+  const disabled = useDebug((s) => s.disabled);
+  const project = useWorkspace((s) => s.project);
+  const at = useOnline((s) => (s.monitor.state === "halted" ? s.monitor.at : null));
+  if (!breakpoints.length) {
+    return <p className="panel-empty">No breakpoints. Click a network number in a diagram, Alt+click an element (or select it and press F9), or click the gutter of an ST line.</p>;
+  }
+  return (
+    <div className="breakpoints-panel">
+      <button type="button" onClick={() => debugStore.getState().clearAll()}>
+        Remove all breakpoints
+      </button>
+      <table className="breakpoints-table" aria-label="Breakpoints">
+        <tbody>
+          {breakpoints.map((bp) => {
+            const pou = project?.pous?.find((p) => p.name.toUpperCase() === bp.pou.toUpperCase());
+            return <BreakpointRow key={breakpointKey(bp)} bp={bp} enabled={isEnabled({ disabled }, bp)} pou={pou} body={pou?.body} hit={hitBy(bp, at)} />;
+          })}
+        </tbody>
+      </table>
+    </div>
+  );
+}
