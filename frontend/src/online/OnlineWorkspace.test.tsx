@@ -167,7 +167,15 @@ describe("online LD in the app (issue 7 online mode)", () => {
     expect(socket.sent.filter((m) => m.type !== "subscribe").map((m) => m.type)).toEqual(["single_cycle", "run", "stop", "run", "single_cycle"]);
     socket.receive({ type: "status", state: "running" });
     expect((screen.getByRole("button", { name: "Run" }) as HTMLButtonElement).disabled).toBe(true);
-    expect((screen.getByRole("button", { name: "Single cycle" }) as HTMLButtonElement).disabled).toBe(true);
+    // Single cycle while running (issue 9): stop, then exactly one scan
+    fireEvent.click(screen.getByRole("button", { name: "Single cycle" }));
+    expect(socket.sent.slice(-2)).toEqual([{ type: "stop" }, { type: "single_cycle" }]);
+    // Halted: Stop is available, F5 continues instead of Run
+    socket.receive({ type: "status", state: "halted", at: { pou: "MAIN", instance: "MAIN", network: "n1" } });
+    expect((screen.getAllByRole("button", { name: "Stop" })[0] as HTMLButtonElement).disabled).toBe(false);
+    const before = socket.sent.length;
+    fireEvent.keyDown(window, { key: "F5" });
+    expect(socket.sent.slice(before)).toEqual([{ type: "continue" }]);
     fireEvent.keyDown(window, { key: "F8", ctrlKey: true });
     await waitFor(() => expect(screen.getByRole("status", { name: "Online state" }).textContent).toBe("Offline"));
   }, 20_000);
