@@ -130,6 +130,23 @@ def test_step_when_not_halted_starts_a_scan_and_step_cycle_finishes_it():
     assert sim.step("cycle") is None and sim.scan_count == 2  # ON-05: a single cycle from the stopped state
 
 
+def test_probes_of_a_halted_scan_show_its_values_for_what_already_ran():
+    """Issue 9: the diagram of a halted scan shows the values at the halt point."""
+    sim = Simulation(_ld_program(), variant="debug")
+    sim.cycle()
+    sim.write("MAIN.IN2", True)
+    sim.set_breakpoint("MAIN", network="N3")
+    sim.cycle()
+    view = sim.probes("MAIN")
+    assert view.executed == {"E1", "E2", "E3", "E4"}  # N1, N2 ran in this scan, N3 and N4 not yet
+    assert view.values == {"E1": True, "E2": False, "E3": False, "E4": False,  # this scan: IN2 now TRUE
+                           "E5": True, "E5.OUT": 1, "E6": True}  # the last scan's, not run yet
+    sim.clear_breakpoints()
+    sim.resume()
+    assert sim.probes("MAIN").values == {"E1": True, "E2": False, "E3": False, "E4": False, "E5": True,
+                                         "E5.OUT": 2, "E6": False}
+
+
 def test_step_network_in_a_diagram_and_breakpoints_on_networks_and_elements():
     sim = Simulation(_ld_program(), variant="debug")
     sim.set_breakpoint("MAIN", network="N2")

@@ -322,7 +322,10 @@ class Simulation:
                 raise UnknownPath(f"no POU instance {instance!r}{did_you_mean(instance, sinks)}")
             return ProbeView({}, frozenset())
         name = known[key]
-        return ProbeView(dict(self._probes.last.get(name, {})), frozenset(self._probes.current.get(name, {})))
+        current = self._probes.current.get(name, {})
+        # Halted mid-scan, what already ran shows this scan's values (the rest its last ones); after
+        # a scan ``current`` is already merged into ``last``.
+        return ProbeView({**self._probes.last.get(name, {}), **current}, frozenset(current))
 
     # ------------------------------------------------------------------ instances
 
