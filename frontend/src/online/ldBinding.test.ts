@@ -2,7 +2,7 @@ import { describe, expect, it } from "vitest";
 import type { SymbolInfo } from "../generated/api";
 import { bodyOf, c, net, par, q } from "../ld/fixtures";
 import type { LdElement } from "../ld/model";
-import { bindLd, ldOnlineView, operandPath, operandsOf, watchPath } from "./ldBinding";
+import { bindLd, ldOnlineView, operandPath, operandsOf } from "./ldBinding";
 import { applyMessage, emptyMonitor } from "./monitor";
 
 const sym = (name: string, type: string, var_class = "VAR"): SymbolInfo => ({ name, type, var_class, initial: null, address: null, comment: null, retain: false, constant: false });
@@ -15,7 +15,7 @@ describe("operand paths of the online LD", () => {
   it("puts the POU's own variables under the instance and leaves globals bare", () => {
     expect(operandPath("Start", "MAIN", SYMBOLS)).toBe("MAIN.START");
     expect(operandPath(" T1.Q ", "MAIN", SYMBOLS)).toBe("MAIN.T1.Q");
-    expect(operandPath("Alarm", "MAIN", SYMBOLS)).toBe("GVL.ALARM");
+    expect(operandPath("Alarm", "MAIN", SYMBOLS)).toBe("ALARM");
     expect(operandPath("arr[3]", "MAIN.FB1", SYMBOLS)).toBe("MAIN.FB1.ARR[3]");
   });
 
@@ -36,7 +36,7 @@ describe("bindLd", () => {
     expect(binding.paths.sort()).toEqual(["MAIN.MOTOR", "MAIN.START", "MAIN.STOP"]);
     expect(binding.elements).toEqual([{ pou_instance: "MAIN", ids: ["p1", "c1", "c2", "c3", "q1"] }]);
     const all = bindLd(motorRung, "MAIN", SYMBOLS);
-    expect(all.paths.sort()).toEqual(["GVL.ALARM", "MAIN.COUNT", "MAIN.MOTOR", "MAIN.START", "MAIN.STOP"]);
+    expect(all.paths.sort()).toEqual(["ALARM", "MAIN.COUNT", "MAIN.MOTOR", "MAIN.START", "MAIN.STOP"]);
   });
 
   it("subscribes nothing for networks out of view", () => {
@@ -60,15 +60,5 @@ describe("ldOnlineView", () => {
     expect(view.executed).toEqual({ c4: false, q2: false });
     expect(view.values).toEqual({ START: true, STOP: true, MOTOR: false, COUNT: 7 });
     expect([...view.forced!]).toEqual(["STOP"]);
-  });
-});
-
-describe("watchPath", () => {
-  it("keeps program paths, puts bare names under GVL as the server names globals", () => {
-    expect(watchPath(" Main.Motor ", ["Main"])).toBe("MAIN.MOTOR");
-    expect(watchPath("main.T1.Q", ["Main"])).toBe("MAIN.T1.Q");
-    expect(watchPath("Start", ["Main"])).toBe("GVL.START");
-    expect(watchPath("gvl.Start", ["Main"])).toBe("GVL.START");
-    expect(watchPath("Arr[2]", [])).toBe("GVL.ARR[2]");
   });
 });

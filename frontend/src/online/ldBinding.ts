@@ -10,8 +10,6 @@ import type { ElementSubscription } from "./protocol";
 /** A variable operand: names with member/index access (`T1.Q`, `A[3]`); literals and addresses are not. */
 const VARIABLE = /^[A-Za-z_][A-Za-z0-9_]*(\.[A-Za-z_][A-Za-z0-9_]*|\[\s*\d+\s*\])*$/;
 const LITERALS = new Set(["TRUE", "FALSE"]);
-/** The first path segment of globals (engine/paths.py GLOBALS_PREFIX). */
-const GLOBALS = "GVL";
 
 /** The variable operands one element shows (contact/coil variable, compare sides, box pins). */
 export function operandsOf(element: LdElement): string[] {
@@ -33,7 +31,7 @@ export function operandsOf(element: LdElement): string[] {
 
 /**
  * The canonical simulation path of an operand in POU instance `instance`, as the server names it
- * in its messages: the instance's own variable (`MAIN.START`) or a global (`GVL.ALARM`); null for
+ * in its messages: the instance's own variable (`MAIN.START`) or a global (`ALARM`); null for
  * literals and addresses.
  */
 export function operandPath(operand: string, instance: string, symbols: readonly SymbolInfo[]): string | null {
@@ -42,17 +40,7 @@ export function operandPath(operand: string, instance: string, symbols: readonly
   const head = text.split(/[.[]/, 1)[0]!.toUpperCase();
   const symbol = symbols.find((s) => s.name.toUpperCase() === head);
   const global = symbol?.var_class === "VAR_GLOBAL" || symbol?.var_class === "VAR_EXTERNAL";
-  return pathKey(`${global ? GLOBALS : instance}.${text}`);
-}
-
-/**
- * A path typed into the watch list in the server's canonical form: `Main.Motor` stays under its
- * program instance, a bare global `Start` becomes `GVL.START` (the server names globals so).
- */
-export function watchPath(text: string, programs: readonly string[]): string {
-  const path = pathKey(text);
-  const head = path.split(/[.[]/, 1)[0]!;
-  return head === GLOBALS || programs.some((p) => p.toUpperCase() === head) ? path : `${GLOBALS}.${path}`;
+  return pathKey(global ? text : `${instance}.${text}`);
 }
 
 export interface LdBinding {

@@ -42,7 +42,11 @@ export const emptyMonitor: MonitorState = {
   log: [],
 };
 
-export const pathKey = (path: string): string => path.trim().toUpperCase();
+/**
+ * A path as the server names it in its messages: upper case, and a global without the `GVL.`
+ * prefix a client may write (the server reports `GVL.Start` as `START`), so values are found.
+ */
+export const pathKey = (path: string): string => path.trim().toUpperCase().replace(/^GVL\s*\.\s*/, "");
 
 function appendLog(state: MonitorState, entry: Omit<LogEntry, "seq" | "scan">, scan?: number | null): MonitorState {
   const last = state.log[state.log.length - 1];

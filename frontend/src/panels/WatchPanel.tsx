@@ -1,9 +1,7 @@
 // The watch list: variables by path (typed, or dragged from a diagram) with their live values;
 // each row writes, forces and releases like the diagram's context menu.
 import { useState, type FormEvent } from "react";
-import { watchPath } from "../online/ldBinding";
 import { formatValue, parseValue, pathKey } from "../online/monitor";
-import { useWorkspace } from "../project/store";
 import { useOnline, onlineStore } from "../online/store";
 
 function WatchRow({ path }: { path: string }) {
@@ -48,13 +46,11 @@ function WatchRow({ path }: { path: string }) {
 
 export function WatchPanel() {
   const watch = useOnline((s) => s.watch);
-  const pous = useWorkspace((s) => s.project?.pous);
   const [text, setText] = useState("");
   const add = (e: FormEvent) => {
     e.preventDefault();
     if (!text.trim()) return;
-    const programs = (pous ?? []).filter((p) => p.kind === "program").map((p) => p.name);
-    onlineStore.getState().addWatch(watchPath(text, programs));
+    onlineStore.getState().addWatch(text);
     setText("");
   };
   return (
