@@ -28,7 +28,7 @@ describe("DebugBar (issue 9: stepping a halted scan)", () => {
     expect(screen.queryByRole("region", { name: "Debugging" })).toBeNull();
     halt({ pou: "MAIN", instance: "MAIN", network: "n2" });
     expect(screen.getByRole("status").textContent).toBe("Halted at MAIN, network 2");
-    expect(reveal).toHaveBeenLastCalledWith({ pou: "MAIN", network: "n2", element: undefined });
+    expect(reveal).toHaveBeenLastCalledWith({ pou: "MAIN", network: "n2", element: undefined, line: undefined });
     for (const name of ["Step network", "Step statement", "Step cycle", "Continue"]) fireEvent.click(screen.getByRole("button", { name }));
     expect(send.mock.calls.map(([m]) => m)).toEqual([
       { type: "step", granularity: "network" },
@@ -42,11 +42,13 @@ describe("DebugBar (issue 9: stepping a halted scan)", () => {
     expect(screen.queryByRole("region", { name: "Debugging" })).toBeNull();
   });
 
-  it("names the instance and line of a halt in an ST function block", () => {
+  it("names the instance and line of a halt in an ST function block and reveals the line", () => {
     onlineStore.setState({ phase: "online", send: vi.fn(() => true) });
-    render(<DebugBar networksOf={networksOf} reveal={vi.fn()} />);
+    const reveal = vi.fn();
+    render(<DebugBar networksOf={networksOf} reveal={reveal} />);
     halt({ pou: "Calc", instance: "MAIN.C1", line: 4 });
     expect(screen.getByRole("status").textContent).toBe("Halted at Calc (MAIN.C1), line 4");
+    expect(reveal).toHaveBeenLastCalledWith({ pou: "Calc", network: undefined, element: undefined, line: 4 });
   });
 
   it("F5 continues only when halted, F10 steps a network, F11 a statement; nothing offline", () => {

@@ -4,6 +4,7 @@
 import { useEffect } from "react";
 import { onlineStore, useOnline } from "../online/store";
 import { describeHalt } from "./breakpoints";
+import type { Place } from "./reveal";
 import { debugStore, useDebug } from "./store";
 
 /** Keys of debugging, for the shortcut help (F5 runs when not halted, see SIMULATION_KEYS). */
@@ -29,8 +30,8 @@ export function debugKey(e: Pick<KeyboardEvent, "key" | "altKey" | "ctrlKey" | "
 export interface DebugBarProps {
   /** Network ids of a POU in order (for "network 2"), empty when it has no diagram. */
   networksOf(pou: string): string[];
-  /** Shows a location in its editor (opens the POU, selects the network or element). */
-  reveal(target: { pou: string; network?: string | null; element?: string | null }): void;
+  /** Shows a location in its editor (opens the POU, selects the network or element, or the line). */
+  reveal(target: Place): void;
 }
 
 export function DebugBar({ networksOf, reveal }: DebugBarProps) {
@@ -41,7 +42,7 @@ export function DebugBar({ networksOf, reveal }: DebugBarProps) {
 
   // A new halt shows its location in the editor.
   useEffect(() => {
-    if (halted) reveal({ pou: halted.pou, network: halted.network, element: halted.element });
+    if (halted) reveal({ pou: halted.pou, network: halted.network, element: halted.element, line: halted.line });
   }, [halted, reveal]);
 
   useEffect(() => {
