@@ -5,6 +5,7 @@ import { beforeEach, describe, expect, it, vi } from "vitest";
 import App from "../App";
 import { appStore, initialData } from "../store";
 import { motorMain } from "../ld/fixtures";
+import { debugStore } from "../debug/store";
 import { emptyWorkspace, workspaceStore } from "./store";
 
 const json = (body: unknown, status = 200) => new Response(JSON.stringify(body), { status, headers: { "Content-Type": "application/json" } });
@@ -114,5 +115,20 @@ describe("app shell", () => {
     const declarations = EditorView.findFromDOM(screen.getByLabelText("Blinker declarations"))!;
     act(() => declarations.dispatch({ changes: { from: 0, insert: "VAR Q : BOOL; END_VAR" } }));
     expect(workspaceStore.getState().project?.pous?.find((p) => p.name === "Blinker")?.declarations).toBe("VAR Q : BOOL; END_VAR");
+  });
+
+  it("wires debugging into the app: a network number click lists the breakpoint in the Breakpoints panel; the shortcut help names the debug keys (issue 9)", async () => {
+    serve(() => json({}));
+    debugStore.setState({ breakpoints: [{ pou: "Other", line: 1 }], disabled: [] }); // another project's
+    const tree = await openPlant();
+    expect(debugStore.getState().breakpoints).toEqual([]); // opening a project starts without breakpoints
+    fireEvent.click(within(tree).getByRole("button", { name: /Main/ }));
+    fireEvent.click(screen.getByRole("button", { name: "Toggle breakpoint on network 3" }));
+    fireEvent.click(screen.getByRole("tab", { name: "Breakpoints (1)" }));
+    expect(screen.getByRole("table", { name: "Breakpoints" }).textContent).toContain("Main network 3 Count rising edges of Start");
+    fireEvent.click(screen.getByRole("button", { name: "Shortcuts" }));
+    const help = screen.getByRole("dialog", { name: "Keyboard shortcuts" }).textContent;
+    for (const text of ["F9Toggle a breakpoint", "F5 (halted)Continue", "F10Step to the next network", "F11Step to the next statement"]) expect(help).toContain(text);
+    debugStore.setState({ breakpoints: [], disabled: [] });
   });
 });

@@ -445,10 +445,11 @@ export function WorkspaceView() {
     [project],
   );
 
-  // A different project: the old one's simulation and check results do not apply.
+  // A different project: the old one's simulation, check results and breakpoints do not apply.
   useEffect(() => {
     void onlineStore.getState().goOffline();
     panelsStore.getState().clear();
+    debugStore.getState().clearAll();
   }, [name]);
 
   useEffect(() => {
