@@ -1,7 +1,8 @@
 // The LD editor: the diagram plus selection (mouse and arrow keys), toolbar, context menu,
 // keyboard shortcuts, operand entry with autocomplete and the "declare variable" offer, the box
-// picker, drag to move, copy/paste through the system clipboard, and undo/redo. The undo history
-// is owned by the caller (one per open POU), so it survives switching tabs.
+// picker, drag to move, copy/paste through the system clipboard, undo/redo, and breakpoints
+// (network number click, Alt+click, F9, context menu) when the caller supplies them. The undo
+// history is owned by the caller (one per open POU), so it survives switching tabs.
 import { useCallback, useEffect, useMemo, useRef, useState, type ClipboardEvent, type KeyboardEvent, type MouseEvent, type ReactNode } from "react";
 import type { Diagnostic, LibraryEntry, SymbolInfo } from "../../generated/api";
 import { parseClip, serializeClip, type Clip } from "../clipboard";

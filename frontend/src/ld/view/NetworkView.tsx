@@ -1,6 +1,6 @@
 // One network as its own SVG: header (number, label, comment), rails, wires, elements, insertion
-// slots and diagnostic markers. Memoised: the diagram re-renders only networks whose layout,
-// selection, diagnostics or online state changed.
+// slots, diagnostic markers, breakpoint dots and the halt highlight. Memoised: the diagram
+// re-renders only networks whose layout, selection, diagnostics, online or debug state changed.
 import { memo, type MouseEvent } from "react";
 import type { Diagnostic } from "../../generated/api";
 import type { LaidWire, NetworkLayout, PlacedElement } from "../layout";
