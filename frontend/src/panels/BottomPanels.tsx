@@ -1,7 +1,8 @@
-// The panels under the editor: Diagnostics, Watch list and Online log, one shown at a time.
+// The panels under the editor: Diagnostics, Watch list, Online log and Trace, one shown at a time.
 import type { Diagnostic } from "../generated/api";
 import { draggedOperand } from "../ld/editor/dragOperand";
 import { onlineStore, useOnline } from "../online/store";
+import { TracePanel } from "../trace/TracePanel";
 import { DiagnosticsPanel } from "./DiagnosticsPanel";
 import { LogPanel } from "./LogPanel";
 import { usePanels, type PanelId } from "./store";
@@ -23,7 +24,9 @@ export function BottomPanels({ onReveal, pathOfOperand }: BottomPanelsProps) {
     { id: "diagnostics", label: `Diagnostics (${problems})` },
     { id: "watch", label: `Watch list (${watched})` },
     { id: "log", label: `Online log (${logged})` },
+    { id: "trace", label: "Trace" },
   ];
+  const body = { diagnostics: <DiagnosticsPanel onReveal={onReveal} />, watch: <WatchPanel />, log: <LogPanel />, trace: <TracePanel /> };
   // A variable dragged from the diagram and released over the panels joins the watch list.
   const drop = () => {
     const operand = draggedOperand();
@@ -42,7 +45,7 @@ export function BottomPanels({ onReveal, pathOfOperand }: BottomPanelsProps) {
         ))}
       </div>
       <div className="panel-body" role="tabpanel">
-        {panel === "diagnostics" ? <DiagnosticsPanel onReveal={onReveal} /> : panel === "watch" ? <WatchPanel /> : <LogPanel />}
+        {body[panel]}
       </div>
     </section>
   );
