@@ -1,7 +1,7 @@
 // The Trace panel: pick up to 20 variables (typed with autocomplete from the programs' symbols, or
 // from the watch list), an optional trigger and the buffer size; Start records every scan, the
 // samples stream in and show as a chart (or a table), Export CSV saves them.
-import { useEffect, useMemo, useState, type FormEvent } from "react";
+import { lazy, Suspense, useEffect, useMemo, useState, type FormEvent } from "react";
 import { projectApi } from "../api/client";
 import { downloadText } from "../interchange/download";
 import { pathKey } from "../online/monitor";
@@ -11,9 +11,11 @@ import { traceCandidates } from "./candidates";
 import { formatSample, traceCsv, type Kind } from "./csv";
 import type { SampleRing } from "./ring";
 import { traceStore, useTrace, type TraceState } from "./store";
-import { TraceChart } from "./TraceChart";
 import "./trace.css";
 import { CONDITIONS, describeTrigger, isCrossing, triggerOf, type Condition } from "./trigger";
+
+// uPlot is loaded with the first chart (it reads the screen at import, and most sessions never trace).
+const TraceChart = lazy(() => import("./TraceChart").then((m) => ({ default: m.TraceChart })));
 
 /** The table shows at most this many samples (the newest); the chart and the CSV show them all. */
 export const TABLE_ROWS = 500;
@@ -235,7 +237,9 @@ export function TracePanel() {
         ) : null}
         {ring && ring.length && origin !== null ? (
           view === "chart" ? (
-            <TraceChart paths={recorded} kinds={kinds} ring={ring} version={state.version} origin={origin} laneView={state.laneView} />
+            <Suspense fallback={<p className="panel-empty">Loading the chart…</p>}>
+              <TraceChart paths={recorded} kinds={kinds} ring={ring} version={state.version} origin={origin} laneView={state.laneView} />
+            </Suspense>
           ) : (
             <SamplesTable paths={recorded} kinds={kinds} ring={ring} origin={origin} />
           )
