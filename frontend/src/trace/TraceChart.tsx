@@ -9,7 +9,7 @@ import type { Kind } from "./csv";
 import type { SampleRing } from "./ring";
 
 const COLORS = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22"];
-const HEIGHT = 220;
+const HEIGHT = 180;
 
 export interface TraceChartProps {
   paths: readonly string[];
@@ -35,6 +35,15 @@ function zoomX(u: uPlot, factor: number, at = 0.5): void {
   if (min == null || max == null) return;
   const center = min + (max - min) * at;
   u.setScale("x", { min: center - (center - min) * factor, max: center + (max - center) * factor });
+}
+
+/** Puts the visible x range on the chart's element (data-x-min, data-x-max), for tools and tests. */
+function showRange(u: uPlot): void {
+  const { min, max } = u.scales.x ?? {};
+  const host = u.root.parentElement;
+  if (!host || min == null || max == null) return;
+  host.dataset.xMin = String(min);
+  host.dataset.xMax = String(max);
 }
 
 function options(chart: ChartData, width: number, onUserZoom: () => void, onReset: () => void): uPlot.Options {
@@ -113,6 +122,7 @@ function options(chart: ChartData, width: number, onUserZoom: () => void, onRese
         },
       ],
       setSelect: [(u) => void (u.select.width > 0 && onUserZoom())],
+      setScale: [(u, key) => void (key === "x" && showRange(u))],
     },
   };
 }
