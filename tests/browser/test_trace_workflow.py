@@ -200,6 +200,7 @@ def test_the_beremiz_first_steps_example_imports_and_runs(page, server):
     # Import through the UI: the report names what was not converted, then the project opens.
     page.get_by_role("button", name="Import PLCopen XML…").click()
     page.get_by_label("PLCopen XML file").set_input_files(str(source))
+    page.get_by_label("New project name").fill("first_steps")  # the document's own name is "First Steps"
     page.get_by_role("button", name="Import", exact=True).click()
     form = page.get_by_role("form", name="Import PLCopen XML")
     form.get_by_text(re.compile(r"^Imported first_steps: 5 POUs, 2 warnings\.")).wait_for()
