@@ -156,19 +156,35 @@ def test_falling_and_level_crossing_triggers_start_at_the_scan_that_crosses(clie
         assert {c["id"] for c in chunks} == {3}
 
 
+def test_a_reset_ends_the_trace_with_the_samples_before_it(client: TestClient, counter: str) -> None:
+    with client.websocket_connect(ws_url(counter)) as ws:
+        connect(ws)
+        ws.send_json({"type": "trace_start", "paths": ["Main.Count"]})
+        cycles(ws, 2)
+        collect(ws, lambda m: len(m["scans"]) == 2)
+        assert client.post(f"/api/simulations/{counter}/reset").status_code == 200
+        merged, _ = collect(ws, done)
+        assert merged["scans"] == []  # nothing after the reset, and nothing lost before it
+        cycles(ws, 1)
+        ws.send_json({"type": "trace_stop"})
+        error, seen = recv_until(ws, of_type("error"))
+        assert error["message"] == "no trace is running: start one with trace_start"
+        assert not [m for m in seen if m["type"] == "trace_data"]
+
+
 def test_running_records_every_scan_without_gaps(client: TestClient, counter: str) -> None:
     with client.websocket_connect(ws_url(counter)) as ws:
         connect(ws)
         ws.send_json({"type": "trace_start", "paths": ["Main.Count"]})
         ws.send_json({"type": "run"})
-        merged, chunks = collect(ws, lambda m: len(m["scans"]) >= 30)
+        live, chunks = collect(ws, lambda m: len(m["scans"]) >= 30)
         ws.send_json({"type": "trace_stop"})
-        merged, _ = collect(ws, done)
+        rest, _ = collect(ws, done)
     assert len([c for c in chunks if c["scans"]]) >= 2  # streamed in several chunks, not at the end
-    scans = merged["scans"]
+    scans = live["scans"] + rest["scans"]
     assert scans == list(range(1, len(scans) + 1))  # every scan, in order (Count counts scans)
-    assert merged["values"]["MAIN.COUNT"] == scans
-    assert merged["time_ms"] == [10.0 * s for s in scans]
+    assert live["values"]["MAIN.COUNT"] + rest["values"]["MAIN.COUNT"] == scans
+    assert live["time_ms"] + rest["time_ms"] == [10.0 * s for s in scans]
 
 
 @pytest.mark.parametrize(("message", "code", "text"), [
