@@ -7,6 +7,8 @@ import time
 from typing import Any
 
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 from fastapi.testclient import TestClient
 from starlette.testclient import WebSocketTestSession
 
@@ -156,20 +158,16 @@ def test_falling_and_level_crossing_triggers_start_at_the_scan_that_crosses(clie
         assert {c["id"] for c in chunks} == {3}
 
 
-def test_a_reset_ends_the_trace_with_the_samples_before_it(client: TestClient, counter: str) -> None:
+def test_a_trace_goes_on_through_a_reset_which_keeps_scan_numbers_and_time(client: TestClient, counter: str) -> None:
     with client.websocket_connect(ws_url(counter)) as ws:
         connect(ws)
-        ws.send_json({"type": "trace_start", "paths": ["Main.Count"]})
+        ws.send_json({"type": "trace_start", "paths": ["Main.Count"], "samples": 4})
         cycles(ws, 2)
         collect(ws, lambda m: len(m["scans"]) == 2)
-        assert client.post(f"/api/simulations/{counter}/reset").status_code == 200
+        assert client.post(f"/api/simulations/{counter}/reset?cold=true").status_code == 200
+        cycles(ws, 2)
         merged, _ = collect(ws, done)
-        assert merged["scans"] == []  # nothing after the reset, and nothing lost before it
-        cycles(ws, 1)
-        ws.send_json({"type": "trace_stop"})
-        error, seen = recv_until(ws, of_type("error"))
-        assert error["message"] == "no trace is running: start one with trace_start"
-        assert not [m for m in seen if m["type"] == "trace_data"]
+    assert (merged["scans"], merged["time_ms"], merged["values"]) == ([3, 4], [30.0, 40.0], {"MAIN.COUNT": [1, 2]})
 
 
 def test_running_records_every_scan_without_gaps(client: TestClient, counter: str) -> None:
@@ -247,3 +245,42 @@ def test_samples_a_client_does_not_take_are_capped_and_counted_as_lost() -> None
     trigger = TraceTrigger(path="Main.Flag", condition="rising")
     book.start("client", 2, plan_trace(sim.location, ["Main.Count"], trigger), 3, sim)  # replaces the first
     assert book.take("client").state == "waiting"  # type: ignore[union-attr]
+
+
+@pytest.fixture(scope="module")
+def idle_sim():
+    """The counter program: Idle (INT := 7) and Trig (BOOL) are never written by it."""
+    return build_project(counter_project()).simulation()
+
+
+@given(condition=st.sampled_from(["rising", "falling", "cross_up", "cross_down"]),
+       values=st.lists(st.integers(-3, 9), max_size=12), level=st.integers(-2, 8))
+def test_recording_starts_at_the_first_scan_whose_value_passes_the_condition(idle_sim, condition: str,
+                                                                          values: list[int], level: int) -> None:
+    sim = idle_sim
+    sim.reset(cold=True)  # values as declared; scan numbers go on
+    base = sim.scan_count
+    crossing = condition.startswith("cross")
+    path = "Main.Idle" if crossing else "Main.Trig"
+    written = values if crossing else [v % 2 == 1 for v in values]  # odd: TRUE
+    trigger = TraceTrigger(path=path, condition=condition, level=level if crossing else None)
+    book = TraceBook()
+    book.start("client", 1, plan_trace(sim.location, [path], trigger), None, sim)
+    for value in written:
+        sim.write(path, value)
+        sim.cycle(1)
+        book.sample(sim)
+    # The definition, scan by scan: the previous value is the one before the scan (7 or FALSE at first).
+    previous = [7 if crossing else False] + written[:-1]
+    passes = {"rising": lambda a, b: b and not a, "falling": lambda a, b: a and not b,
+              "cross_up": lambda a, b: a < level <= b, "cross_down": lambda a, b: a > level >= b}[condition]
+    first = next((i for i, (a, b) in enumerate(zip(previous, written)) if passes(a, b)), None)
+    chunk = book.take("client")
+    assert chunk is not None
+    if first is None:
+        assert (chunk.state, chunk.scans, chunk.triggered) == ("waiting", [], None)
+    else:
+        assert chunk.state == "recording"
+        assert chunk.triggered is not None and chunk.triggered.scan == base + first + 1
+        assert chunk.scans == list(range(base + first + 1, base + len(written) + 1))
+        assert chunk.values[sim.location(path).path] == written[first:]

@@ -300,10 +300,9 @@ class SimRunner:
         self._command(lambda: self._set_running(False))
 
     def reset(self, cold: bool = False) -> None:
-        """Warm or cold restart: stops, ends a halted scan and the traces (time restarts), clears the faults."""
+        """Warm or cold restart: stops, ends a halted scan, clears the faults (forces stay)."""
         def action() -> None:
             self._set_running(False)
-            self.traces.end_all()
             self.sim.reset(cold=cold)
             self._faulted = False
             self._seen_faults = 0

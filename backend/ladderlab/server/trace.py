@@ -152,12 +152,6 @@ class TraceBook:
             recorder.state, recorder.unreported = "done", True
             return True
 
-    def end_all(self) -> None:
-        """End every trace (a reset restarts scans and time: later samples would not continue them)."""
-        with self._lock:
-            for recorder in self._traces.values():
-                recorder.state, recorder.unreported = "done", True
-
     def sample(self, sim: Simulation) -> None:
         """After every scan (runner's lock held): one sample per recording trace."""
         if not self._traces:

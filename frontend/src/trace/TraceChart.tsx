@@ -1,5 +1,5 @@
 // The trace as a uPlot time chart: drag to zoom (x), double click to reset, Shift+drag or the
-// buttons to pan, the wheel to zoom around the cursor; the legend shows the values under the
+// buttons to pan, Ctrl+wheel to zoom around the cursor; the legend shows the values under the
 // cursor. While the user has not zoomed, the chart follows new samples; a zoom holds still.
 import { useEffect, useRef, useState } from "react";
 import uPlot from "uplot";
@@ -69,6 +69,7 @@ function options(chart: ChartData, width: number, onUserZoom: () => void, onRese
     window.addEventListener("mousemove", move);
     window.addEventListener("mouseup", up);
     u.over.addEventListener("wheel", (e) => {
+      if (!e.ctrlKey && !e.metaKey) return; // the plain wheel scrolls the panel
       e.preventDefault();
       onUserZoom();
       zoomX(u, e.deltaY > 0 ? 1.25 : 0.8, e.offsetX / u.over.clientWidth);
@@ -183,7 +184,7 @@ export function TraceChart({ paths, kinds, ring, version, origin, laneView }: Tr
         <button type="button" onClick={act((u) => panX(u, -0.25))} title="Pan back in time (or Shift+drag)">
           ◀
         </button>
-        <button type="button" onClick={act((u) => zoomX(u, 0.5))} title="Zoom in (or drag over the chart, or the wheel)">
+        <button type="button" onClick={act((u) => zoomX(u, 0.5))} title="Zoom in (or drag over the chart, or Ctrl+wheel)">
           Zoom in
         </button>
         <button type="button" onClick={act((u) => zoomX(u, 2))}>
