@@ -1,5 +1,5 @@
 """The online websocket (issue 6, "Websocket"): subscribe, diffs, write, force, breakpoints, step,
-single cycle, trace, several clients, runtime errors, origin check, deletion."""
+single cycle, several clients, runtime errors, origin check, deletion."""
 
 from __future__ import annotations
 
@@ -94,8 +94,9 @@ def test_write_is_applied_once_before_the_next_scan(client: TestClient, counter:
     ({"type": "subscribe", "paths": ["Nope"]}, "bad_path", "unknown variable or program 'Nope'"),
     ({"type": "continue"}, "bad_state", "the simulation is not halted"),
     ({"type": "breakpoint_set", "pou": "Main", "line": 9}, "bad_path", "Main has no statement at line 9 (possible: 1, 2, 3)"),
-    ({"type": "trace_start", "paths": ["Main.Count"], "samples": 3, "trigger": "Main.Count"}, "bad_path",
-     "the trigger MAIN.COUNT is not a BOOL"),
+    ({"type": "trace_start", "paths": ["Main.Count"], "samples": 3, "trigger": {"path": "Main.Count"}}, "bad_path",
+     "the trigger MAIN.COUNT is not a BOOL: a rising edge needs a BOOL (use cross_up or cross_down with a level "
+     "for numbers)"),
 ])
 def test_bad_requests_get_an_error_naming_the_problem_and_change_nothing(client: TestClient, counter: str,
                                                                         registry: SimulationRegistry,
@@ -216,43 +217,6 @@ def test_every_element_of_an_instance_when_no_ids_are_given(client: TestClient, 
         first = subscribe(ws, [], elements=[{"pou_instance": "MAIN"}])
         assert {"MAIN/start", "MAIN/ton.ET", "MAIN/ctu.CV", "MAIN/lamp_coil"} <= set(first["power"])
         assert first["power"]["MAIN/ton.ET"] == 0
-
-
-def test_trace_records_one_sample_per_scan_and_sends_it_when_full(client: TestClient, counter: str) -> None:
-    with client.websocket_connect(ws_url(counter)) as ws:
-        recv(ws)
-        ws.send_json({"type": "trace_start", "paths": ["Main.Count", "Main.Flag"], "samples": 4})
-        for _ in range(5):
-            ws.send_json({"type": "single_cycle"})
-        trace, _ = recv_until(ws, of_type("trace"))
-        assert trace == {"type": "trace", "values": {"MAIN.COUNT": [1, 2, 3, 4], "MAIN.FLAG": [True, False, True, False]},
-                         "scans": [1, 2, 3, 4], "time_ms": [10.0, 20.0, 30.0, 40.0]}
-
-
-def test_a_trace_with_a_trigger_starts_at_the_rising_edge(client: TestClient, counter: str) -> None:
-    with client.websocket_connect(ws_url(counter)) as ws:
-        recv(ws)
-        ws.send_json({"type": "force", "path": "Main.Flag", "value": True})  # TRUE from the start: no edge
-        ws.send_json({"type": "trace_start", "paths": ["Main.Count"], "samples": 3, "trigger": "Main.Flag"})
-        for _ in range(3):
-            ws.send_json({"type": "single_cycle"})
-        ws.send_json({"type": "unforce", "path": "Main.Flag"})
-        for _ in range(5):
-            ws.send_json({"type": "single_cycle"})  # scan 4: FALSE, scan 5: TRUE (the edge)
-        trace, _ = recv_until(ws, of_type("trace"))
-        assert trace["values"] == {"MAIN.COUNT": [5, 6, 7]}
-        assert trace["scans"] == [5, 6, 7]
-
-
-def test_trace_limits_are_checked(client: TestClient, counter: str) -> None:
-    with client.websocket_connect(ws_url(counter)) as ws:
-        recv(ws)
-        ws.send_json({"type": "trace_start", "paths": ["Main.Count"] * 21, "samples": 10})
-        error, _ = recv_until(ws, of_type("error"))
-        assert error["code"] == "bad_message" and error["message"].startswith("trace_start.paths: List should have at most 20")
-        ws.send_json({"type": "trace_start", "paths": ["Main.Count"], "samples": 10_001})
-        error, _ = recv_until(ws, of_type("error"))
-        assert error["message"] == "trace_start.samples: Input should be less than or equal to 10000"
 
 
 def test_two_clients_have_their_own_subscriptions(client: TestClient, counter: str) -> None:
@@ -475,7 +439,7 @@ def test_a_client_that_falls_behind_loses_old_log_entries_and_is_told(client: Te
     async def scenario() -> list[dict]:
         socket = _RecordingSocket()
         monitor = MonitorClient(socket, entry(registry, counter), settings)  # type: ignore[arg-type]
-        monitor._enqueue(m.Trace(type="trace", values={"X": [1]}, scans=[1], time_ms=[10.0]))
+        monitor._enqueue(m.Error(type="error", code="bad_path", message="not a log"))
         for n in range(8):
             monitor._enqueue(m.Log(type="log", level="info", message=f"entry {n}"))
             monitor._enqueue(m.Status(type="status", state="running" if n % 2 else "stopped"))
@@ -485,7 +449,7 @@ def test_a_client_that_falls_behind_loses_old_log_entries_and_is_told(client: Te
     sent = asyncio.run(scenario())
     assert [(s["type"], s.get("message") or s.get("state")) for s in sent] == [
         ("log", "4 messages were dropped: this connection did not keep up"),
-        ("trace", None), ("log", "entry 4"), ("log", "entry 5"), ("log", "entry 6"), ("log", "entry 7"),
+        ("error", "not a log"), ("log", "entry 4"), ("log", "entry 5"), ("log", "entry 6"), ("log", "entry 7"),
         ("status", "running"),  # only the latest state
     ]
 

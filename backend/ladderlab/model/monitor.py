@@ -8,7 +8,7 @@ browser's types are generated from these models (``shared_schema/monitor.schema.
 Variable paths are IEC text (``MAIN.T1.ET``, ``GVL.START`` or ``START``,
 ``MAIN.ARR[2]``), matched ignoring case. The server names variables in their
 canonical spelling (upper-case names, as ``Simulation.location(path).path``)
-in ``values.changed``, ``values.forced`` and ``trace.values``.
+in ``values.changed``, ``values.forced`` and ``trace_data.values``.
 """
 
 from __future__ import annotations
@@ -145,19 +145,50 @@ class SingleCycle(_Request):
     type: Literal["single_cycle"]
 
 
+class TraceTrigger(_Request):
+    """When a trace starts recording: at the first scan that ends with ``path`` past the condition.
+
+    ``rising``/``falling``: a BOOL that was FALSE/TRUE at the end of the previous scan (or when the
+    trace started) and is TRUE/FALSE now. ``cross_up``/``cross_down``: a numeric variable that was
+    below/above ``level`` and is now at or above/at or below it. That scan is the first sample."""
+
+    path: str
+    condition: Literal["rising", "falling", "cross_up", "cross_down"] = "rising"
+    level: float | None = Field(default=None, description="The level of cross_up/cross_down (TIME in ms).")
+
+    @model_validator(mode="after")
+    def _level_for_crossings(self) -> TraceTrigger:
+        crossing = self.condition.startswith("cross")
+        if crossing and self.level is None:
+            raise ValueError(f"a {self.condition} trigger needs a level")
+        if not crossing and self.level is not None:
+            raise ValueError(f"a {self.condition} trigger has no level (it watches a BOOL)")
+        return self
+
+
 class TraceStart(_Request):
-    """Record ``paths`` once per scan; one ``trace`` message is sent when ``samples`` scans are recorded."""
+    """Record ``paths`` (BOOL and numeric) after every scan, streamed in ``trace_data`` chunks.
+
+    Recording starts at once, or at the scan that fires ``trigger``; it ends after ``samples``
+    samples, or (``samples`` null) at ``trace_stop``. A new trace of a client replaces its
+    running one; ``id`` is echoed in every chunk, so the client can ignore chunks of the old one."""
 
     type: Literal["trace_start"]
+    id: int = 0
     paths: list[str] = Field(min_length=1, max_length=MAX_TRACE_PATHS)
-    samples: int = Field(ge=1, le=MAX_TRACE_SAMPLES)
-    trigger: str | None = Field(default=None, description="A BOOL path: recording starts at the first scan "
-                                                          "that ends with it TRUE after a scan with it FALSE.")
+    samples: int | None = Field(default=None, ge=1, le=MAX_TRACE_SAMPLES)
+    trigger: TraceTrigger | None = None
+
+
+class TraceStop(_Request):
+    """End this client's trace: the next ``trace_data`` chunk holds the last samples and ``state`` done."""
+
+    type: Literal["trace_stop"]
 
 
 ClientMessage = Annotated[
     Union[Subscribe, Write, Force, Unforce, UnforceAll, BreakpointSet, BreakpointClear, Continue, Step, Run, Stop,
-          SingleCycle, TraceStart],
+          SingleCycle, TraceStart, TraceStop],
     Field(discriminator="type"),
 ]
 
@@ -202,15 +233,33 @@ class Status(BaseModel):
     at: At | None = None
 
 
-class Trace(BaseModel):
-    """A finished trace: one value per recorded scan for every traced path."""
+class TraceTriggered(BaseModel):
+    """The scan that fired a trace's trigger (its first sample)."""
+
+    scan: int
+    time_ms: float
+
+
+class TraceData(BaseModel):
+    """New samples of this client's trace since its previous chunk, sent at its monitor interval.
+
+    This replaces the single ``trace`` message sent once a trace was complete: a chart must update
+    while the trace records. A chunk is sent when there are new samples or the state changed (the
+    first one at once, naming the canonical paths). ``values`` holds one list per traced path, in
+    the order of ``trace_start`` (repeats removed), each as long as ``scans`` and ``time_ms``.
+    ``triggered`` is set in the chunk in which the trigger fired; ``lost`` counts samples dropped
+    because the client did not take them in time (more than 10,000 waiting)."""
 
     model_config = ConfigDict(ser_json_inf_nan="strings")
 
-    type: Literal["trace"]
-    values: dict[str, list[Value]]
+    type: Literal["trace_data"]
+    id: int
+    state: Literal["waiting", "recording", "done"] = Field(description="waiting: for the trigger.")
     scans: list[int]
     time_ms: list[float]
+    values: dict[str, list[Value]]
+    triggered: TraceTriggered | None = None
+    lost: int = 0
 
 
 class Log(BaseModel):
@@ -232,7 +281,7 @@ class Error(BaseModel):
     message: str
 
 
-ServerMessage = Annotated[Union[Values, Status, Trace, Log, Error], Field(discriminator="type")]
+ServerMessage = Annotated[Union[Values, Status, TraceData, Log, Error], Field(discriminator="type")]
 
 
 class MonitorProtocol(BaseModel):

@@ -9,7 +9,9 @@ is the only writer to the socket:
   frame and sends what changed since its own previous message. A client that reads
   slowly makes its sender wait in ``send``, so it gets fewer messages, each complete;
   the scan thread and the other clients never wait for it;
-* status, log, trace and error messages wait in a bounded queue; only the latest
+* a running trace's new samples are taken from the runner at the same interval
+  (``trace_data``), so they wait in the runner's trace book, never in the queue;
+* status, log and error messages wait in a bounded queue; only the latest
   status is kept, and when the queue is full the oldest log entries are dropped and
   the client is told how many.
 
@@ -116,10 +118,13 @@ class MonitorClient:
         self.last_power: dict[str, object] = {}
         self.last_forced: list[str] = []
         self.last_scan = -1
+        # trace: its chunks are taken at the values interval while one runs
+        self.tracing = False
+        self.trace_due = 0.0
 
     # ------------------------------------------------------------------ runner listener (any thread)
 
-    def event(self, message: m.Status | m.Log | m.Trace, target: object | None) -> None:
+    def event(self, message: m.Status | m.Log, target: object | None) -> None:
         if target is None or target is self:
             self.loop.call_soon_threadsafe(self._enqueue, message)
 
@@ -240,8 +245,14 @@ class MonitorClient:
                 await asyncio.to_thread(runner.stop)
             case m.SingleCycle():
                 await asyncio.to_thread(runner.single_cycle)
-            case m.TraceStart(paths=paths, samples=samples, trigger=trigger):
-                await asyncio.to_thread(runner.start_trace, self, paths, samples, trigger)
+            case m.TraceStart(paths=paths, samples=samples, trigger=trigger, id=trace_id):
+                await asyncio.to_thread(runner.start_trace, self, paths, samples, trigger, trace_id)
+                self.tracing, self.trace_due = True, self.loop.time()  # the first chunk at once
+                self.wake.set()
+            case m.TraceStop():
+                runner.stop_trace(self)
+                self.trace_due = self.loop.time()
+                self.wake.set()
 
     async def _subscribe(self, request: m.Subscribe) -> None:
         limits = self.settings
@@ -269,19 +280,22 @@ class MonitorClient:
                     return
                 if self.watch is not None and self.loop.time() >= self.next_due:
                     await self._send_values(self.runner.frame)
+                if self.tracing and self.loop.time() >= self.trace_due:
+                    await self._send_trace()
         except (WebSocketDisconnect, RuntimeError, OSError):
             return  # the client went away; the receive loop ends too
 
     async def _sleep(self) -> None:
         if self.outbox or self.status is not None or self.ending:
             return
-        timeout: float | None = None
         if self.waiting_frame and self.runner.frame.seq != self.sent_seq:
             return
-        if self.watch is not None and not self.waiting_frame:
-            timeout = self.next_due - self.loop.time()
-            if timeout <= 0:
-                return
+        dues = [self.next_due] if self.watch is not None and not self.waiting_frame else []
+        if self.tracing:
+            dues.append(self.trace_due)
+        timeout = min(dues) - self.loop.time() if dues else None
+        if timeout is not None and timeout <= 0:
+            return
         self.wake.clear()
         try:
             await asyncio.wait_for(self.wake.wait(), timeout)
@@ -313,6 +327,15 @@ class MonitorClient:
         if message is not None:
             await self._send(message)
         self.next_due = self.loop.time() + self.interval_s
+
+    async def _send_trace(self) -> None:
+        chunk = self.runner.trace_chunk(self)
+        if chunk is None:
+            self.tracing = self.runner.traces.active(self)  # replaced or dropped meanwhile: nothing more
+        else:
+            await self._send(chunk)
+            self.tracing = chunk.state != "done"
+        self.trace_due = self.loop.time() + self.interval_s
 
     def values_message(self, frame: Frame) -> m.Values | None:
         """What changed for this client since its last message (everything after a subscribe); None: nothing."""

@@ -13,9 +13,10 @@ POU instances, the forced paths) at most every ``publish_s`` seconds, and at onc
 after a command. Each websocket client diffs the latest frame against what it sent
 last, so the cost of a scan does not grow with the number of clients.
 
-Listeners hear about state changes, log entries (faults, forces), finished traces
-and new frames, from whichever thread made them: they must only hand them over
-(e.g. ``loop.call_soon_threadsafe``).
+Listeners hear about state changes, log entries (faults, forces) and new frames,
+from whichever thread made them: they must only hand them over (e.g.
+``loop.call_soon_threadsafe``). Traces are sampled after every scan into
+``self.traces`` (``trace.py``), which clients read in chunks without the lock.
 """
 
 from __future__ import annotations
@@ -23,7 +24,7 @@ from __future__ import annotations
 import logging
 import threading
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Callable, Protocol
 
 from ..engine.codegen.faults import Fault
@@ -33,7 +34,8 @@ from ..engine.simulation import ProbeView, Simulation
 from ..engine.tasks import Pacer
 from ..ir import nodes as ir
 from ..ir import types as t
-from ..model.monitor import At, Log, Status, Trace
+from ..model.monitor import At, Log, Status, TraceData, TraceTrigger
+from .trace import TraceBook, TraceRefused, plan_trace
 
 log = logging.getLogger(__name__)
 
@@ -73,7 +75,7 @@ class Watch:
 
 
 class Listener(Protocol):
-    def event(self, message: Status | Log | Trace, target: object | None) -> None:
+    def event(self, message: Status | Log, target: object | None) -> None:
         """A message for every client (``target`` None) or for the client that asked for it."""
 
     def frame(self) -> None:
@@ -81,19 +83,6 @@ class Listener(Protocol):
 
     def closed(self) -> None:
         """The simulation was deleted: nothing more will come."""
-
-
-@dataclass
-class _Trace:
-    owner: object
-    locations: list[Location]
-    samples: int
-    trigger: Location | None
-    previous: object = None  # the trigger's value after the previous scan
-    started: bool = False
-    rows: list[list[object]] = field(default_factory=list)
-    scans: list[int] = field(default_factory=list)
-    times: list[float] = field(default_factory=list)
 
 
 def at_halt(halt: Halt) -> At:
@@ -127,7 +116,7 @@ class SimRunner:
         self._watches: dict[object, Watch] = {}
         self._reader = sim.reader({})
         self._instances: tuple[str, ...] = ()
-        self._traces: list[_Trace] = []
+        self.traces = TraceBook()
         self._running = False
         self._faulted = False
         self._seen_faults = 0
@@ -154,7 +143,7 @@ class SimRunner:
             if listener in self._listeners:
                 self._listeners.remove(listener)
 
-    def _emit(self, message: Status | Log | Trace, target: object | None = None) -> None:
+    def _emit(self, message: Status | Log, target: object | None = None) -> None:
         for listener in list(self._listeners):
             listener.event(message, target)
 
@@ -233,7 +222,7 @@ class SimRunner:
         sim = self.sim
         if sim.scan_count != self._seen_scans:
             self._seen_scans = sim.scan_count
-            self._sample_traces()
+            self.traces.sample(sim)
             for hook in self.after_scan:
                 hook(sim)
         if len(sim.faults) > self._seen_faults:
@@ -472,7 +461,7 @@ class SimRunner:
         with self.lock:
             if self._watches.pop(key, None) is not None:
                 self._rebuild_union()
-            self._traces = [trace for trace in self._traces if trace.owner is not key]
+        self.traces.drop(key)
 
     def _rebuild_union(self) -> None:
         union = {path: loc for watch in self._watches.values() for path, loc in watch.locations.items()}
@@ -481,45 +470,22 @@ class SimRunner:
 
     # ------------------------------------------------------------------ traces
 
-    def start_trace(self, owner: object, paths: list[str], samples: int, trigger: str | None = None) -> None:
-        """Record ``paths`` after every scan; the ``Trace`` goes to ``owner`` when ``samples`` are recorded.
+    def start_trace(self, owner: object, paths: list[str], samples: int | None = None,
+                    trigger: TraceTrigger | None = None, trace_id: int = 0) -> None:
+        """Record ``paths`` after every scan for ``owner`` (replacing its running trace); see ``trace.py``."""
+        try:
+            plan = plan_trace(self.location, paths, trigger)
+        except TraceRefused as error:
+            raise CommandError("bad_path", str(error)) from None
+        self._command(lambda: self.traces.start(owner, trace_id, plan, samples, self.sim))
 
-        A new trace of the same owner replaces a running one."""
-        locations = [self.location(path) for path in paths]
-        for location in locations:
-            if not location.elementary:
-                raise CommandError("bad_path", f"{location.path} is not elementary: trace its elements")
-        trigger_location = self.location(trigger) if trigger is not None else None
-        if trigger_location is not None and getattr(trigger_location.type, "name", None) != "BOOL":
-            raise CommandError("bad_path", f"the trigger {trigger_location.path} is not a BOOL")
+    def stop_trace(self, owner: object) -> None:
+        if not self.traces.stop(owner):
+            raise CommandError("bad_state", "no trace is running: start one with trace_start")
 
-        def action() -> None:
-            trace = _Trace(owner, locations, samples, trigger_location, started=trigger_location is None)
-            if trigger_location is not None:
-                trace.previous = self.sim.value(trigger_location)
-            self._traces = [t for t in self._traces if t.owner is not owner] + [trace]
-        self._command(action)
-
-    def _sample_traces(self) -> None:
-        done = []
-        for trace in self._traces:
-            if not trace.started:
-                value = self.sim.value(trace.trigger)  # type: ignore[arg-type]
-                trace.started = bool(value) and not trace.previous
-                trace.previous = value
-                if not trace.started:
-                    continue
-            trace.rows.append([self.sim.value(location) for location in trace.locations])
-            trace.scans.append(self.sim.scan_count)
-            trace.times.append(self.sim.time_ms)
-            if len(trace.rows) >= trace.samples:
-                done.append(trace)
-        for trace in done:
-            self._traces.remove(trace)
-            columns = list(zip(*trace.rows))
-            values = {loc.path: list(column) for loc, column in zip(trace.locations, columns)}
-            self._emit(Trace.model_construct(type="trace", values=values, scans=trace.scans, time_ms=trace.times),
-                       trace.owner)
+    def trace_chunk(self, owner: object) -> TraceData | None:
+        """``owner``'s samples since its previous chunk (no runner lock: a scan may be running)."""
+        return self.traces.take(owner)
 
 
 def _text(value: object) -> str:

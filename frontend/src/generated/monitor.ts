@@ -18,8 +18,9 @@ export interface MonitorProtocol {
     | Run
     | Stop
     | SingleCycle
-    | TraceStart;
-  server: Values | Status | Trace | Log | Error;
+    | TraceStart
+    | TraceStop;
+  server: Values | Status | TraceData | Log | Error;
 }
 /**
  * Replace this client's subscription; the next ``values`` message is a full snapshot of it.
@@ -155,12 +156,17 @@ export interface SingleCycle {
   type: "single_cycle";
 }
 /**
- * Record ``paths`` once per scan; one ``trace`` message is sent when ``samples`` scans are recorded.
+ * Record ``paths`` (BOOL and numeric) after every scan, streamed in ``trace_data`` chunks.
+ *
+ * Recording starts at once, or at the scan that fires ``trigger``; it ends after ``samples``
+ * samples, or (``samples`` null) at ``trace_stop``. A new trace of a client replaces its
+ * running one; ``id`` is echoed in every chunk, so the client can ignore chunks of the old one.
  *
  * This interface was referenced by `MonitorProtocol`'s JSON-Schema
  * via the `definition` "TraceStart".
  */
 export interface TraceStart {
+  id?: number;
   /**
    * @minItems 1
    * @maxItems 20
@@ -339,12 +345,36 @@ export interface TraceStart {
         string,
         string
       ];
-  samples: number;
-  /**
-   * A BOOL path: recording starts at the first scan that ends with it TRUE after a scan with it FALSE.
-   */
-  trigger?: string | null;
+  samples?: number | null;
+  trigger?: TraceTrigger | null;
   type: "trace_start";
+}
+/**
+ * When a trace starts recording: at the first scan that ends with ``path`` past the condition.
+ *
+ * ``rising``/``falling``: a BOOL that was FALSE/TRUE at the end of the previous scan (or when the
+ * trace started) and is TRUE/FALSE now. ``cross_up``/``cross_down``: a numeric variable that was
+ * below/above ``level`` and is now at or above/at or below it. That scan is the first sample.
+ *
+ * This interface was referenced by `MonitorProtocol`'s JSON-Schema
+ * via the `definition` "TraceTrigger".
+ */
+export interface TraceTrigger {
+  condition?: "rising" | "falling" | "cross_up" | "cross_down";
+  /**
+   * The level of cross_up/cross_down (TIME in ms).
+   */
+  level?: number | null;
+  path: string;
+}
+/**
+ * End this client's trace: the next ``trace_data`` chunk holds the last samples and ``state`` done.
+ *
+ * This interface was referenced by `MonitorProtocol`'s JSON-Schema
+ * via the `definition` "TraceStop".
+ */
+export interface TraceStop {
+  type: "trace_stop";
 }
 /**
  * What changed in this client's subscription since the previous ``values`` message to it.
@@ -417,15 +447,29 @@ export interface At {
   pou: string;
 }
 /**
- * A finished trace: one value per recorded scan for every traced path.
+ * New samples of this client's trace since its previous chunk, sent at its monitor interval.
+ *
+ * This replaces the single ``trace`` message sent once a trace was complete: a chart must update
+ * while the trace records. A chunk is sent when there are new samples or the state changed (the
+ * first one at once, naming the canonical paths). ``values`` holds one list per traced path, in
+ * the order of ``trace_start`` (repeats removed), each as long as ``scans`` and ``time_ms``.
+ * ``triggered`` is set in the chunk in which the trigger fired; ``lost`` counts samples dropped
+ * because the client did not take them in time (more than 10,000 waiting).
  *
  * This interface was referenced by `MonitorProtocol`'s JSON-Schema
- * via the `definition` "Trace".
+ * via the `definition` "TraceData".
  */
-export interface Trace {
+export interface TraceData {
+  id: number;
+  lost?: number;
   scans: number[];
+  /**
+   * waiting: for the trigger.
+   */
+  state: "waiting" | "recording" | "done";
   time_ms: number[];
-  type: "trace";
+  triggered?: TraceTriggered | null;
+  type: "trace_data";
   values: {
     [k: string]: (
       | boolean
@@ -438,6 +482,16 @@ export interface Trace {
       | null
     )[];
   };
+}
+/**
+ * The scan that fired a trace's trigger (its first sample).
+ *
+ * This interface was referenced by `MonitorProtocol`'s JSON-Schema
+ * via the `definition` "TraceTriggered".
+ */
+export interface TraceTriggered {
+  scan: number;
+  time_ms: number;
 }
 /**
  * An entry of the online log: runtime errors, watchdog trips, forces set and released.

@@ -75,6 +75,8 @@ export function applyMessage(state: MonitorState, message: ServerMessage): Monit
       return appendLog(state, { level: message.level, message: message.message, at: message.at ?? null }, message.scan);
     case "error":
       return appendLog(state, { level: "error", message: `${message.code}: ${message.message}` });
+    case "trace_data":
+      return state; // the trace panel keeps its own samples (src/trace/store.ts)
   }
 }
 

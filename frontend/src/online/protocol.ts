@@ -1,14 +1,15 @@
 // The websocket monitor protocol of /api/simulations/{id}/ws, from the generated types
 // (src/generated/monitor.ts, from backend/ladderlab/model/monitor.py). Every message is a JSON
 // object whose `type` names it; this module names the parts the app uses and reads frames.
-import type { At, Error as ErrorMessage, Log, MonitorProtocol, Status, Values } from "../generated/monitor";
+import type { At, Error as ErrorMessage, Log, MonitorProtocol, Status, TraceData, Values } from "../generated/monitor";
 
 export type { At, ElementSubscription } from "../generated/monitor";
 export type { ErrorMessage };
 
 export type ClientMessage = MonitorProtocol["client"];
-/** The server messages the app folds into its state (finished traces are not shown yet). */
-export type ServerMessage = Values | Status | Log | ErrorMessage;
+/** The server messages the app handles (trace chunks go to the trace panel, src/trace/). */
+export type ServerMessage = Values | Status | Log | ErrorMessage | TraceData;
+export type TraceDataMessage = TraceData;
 export type ValuesMessage = Values;
 export type SimulationState = Status["state"];
 
@@ -45,6 +46,8 @@ export function parseServerMessage(text: string): ServerMessage | null {
       return typeof data.message === "string" ? (data as unknown as Log) : null;
     case "error":
       return typeof data.message === "string" ? (data as unknown as ErrorMessage) : null;
+    case "trace_data":
+      return typeof data.id === "number" && Array.isArray(data.scans) && isRecord(data.values) ? (data as unknown as TraceData) : null;
     default:
       return null;
   }

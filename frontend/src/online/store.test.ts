@@ -103,6 +103,22 @@ describe("online store", () => {
     expect(monitor.power).toEqual({ "MAIN/c1": true });
   });
 
+  it("hands every server message to listeners, trace chunks too, until they unsubscribe", async () => {
+    const { store, sockets } = setup();
+    const heard: string[] = [];
+    const unlisten = store.getState().listen((msg) => heard.push(msg.type));
+    await store.getState().compile("demo");
+    sockets[0]!.open();
+    const before = store.getState().monitor;
+    sockets[0]!.receive({ type: "trace_data", id: 1, state: "recording", scans: [1], time_ms: [10], values: { "MAIN.N": [1] }, triggered: null, lost: 0 });
+    expect(store.getState().monitor).toBe(before); // the trace panel keeps the samples, not the monitor
+    sockets[0]!.receive({ type: "status", state: "running" });
+    sockets[0]!.receive({ type: "nonsense" });
+    unlisten();
+    sockets[0]!.receive({ type: "status", state: "stopped" });
+    expect(heard).toEqual(["trace_data", "status"]);
+  });
+
   it("sends a new subscription only when the merged one changes", async () => {
     const { store, sockets } = setup();
     await store.getState().compile("demo");

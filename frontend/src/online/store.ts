@@ -8,7 +8,7 @@ import { ApiError } from "../api/client";
 import type { Diagnostic } from "../generated/api";
 import { monitorUrl, simulationApi, type SimulationApi } from "./api";
 import { applyMessage, emptyMonitor, keepSubscribed, logLocal, pathKey, powerKey, type MonitorState } from "./monitor";
-import { DEFAULT_INTERVAL_MS, parseServerMessage, type ClientMessage, type ElementSubscription, type WriteValue } from "./protocol";
+import { DEFAULT_INTERVAL_MS, parseServerMessage, type ClientMessage, type ElementSubscription, type ServerMessage, type WriteValue } from "./protocol";
 
 /** The part of WebSocket the store uses. */
 export type SocketLike = Pick<WebSocket, "readyState" | "send" | "close" | "onopen" | "onmessage" | "onclose">;
@@ -63,6 +63,8 @@ export interface OnlineActions {
   setInstance(pou: string, instance: string): void;
   /** Sends any client message (breakpoints, continue, step); false and a log line when not connected. */
   send(msg: ClientMessage): boolean;
+  /** Hears every server message after it is folded into `monitor` (e.g. trace chunks); returns the unsubscribe. */
+  listen(listener: (msg: ServerMessage) => void): () => void;
 }
 
 export type OnlineState = OnlineData & OnlineActions;
@@ -110,6 +112,7 @@ export function createOnlineStore(api: SimulationApi = simulationApi, openSocket
   let socket: SocketLike | null = null;
   let lastSent = "";
   let poll: ReturnType<typeof setInterval> | null = null;
+  const listeners = new Set<(msg: ServerMessage) => void>();
 
   return createStore<OnlineState>()((set, get) => {
     const send = (msg: ClientMessage): boolean => {
@@ -163,7 +166,9 @@ export function createOnlineStore(api: SimulationApi = simulationApi, openSocket
       s.onmessage = (event) => {
         if (socket !== s || typeof event.data !== "string") return;
         const msg = parseServerMessage(event.data);
-        if (msg) set({ monitor: applyMessage(get().monitor, msg) });
+        if (!msg) return;
+        set({ monitor: applyMessage(get().monitor, msg) });
+        for (const listener of listeners) listener(msg);
       };
       s.onclose = () => {
         if (socket !== s) return;
@@ -250,6 +255,11 @@ export function createOnlineStore(api: SimulationApi = simulationApi, openSocket
       },
 
       send,
+
+      listen(listener) {
+        listeners.add(listener);
+        return () => void listeners.delete(listener);
+      },
 
       removeWatch(path) {
         set({ watch: get().watch.filter((p) => pathKey(p) !== pathKey(path)) });

@@ -1,8 +1,9 @@
-// The panels under the editor: Diagnostics, Watch list, Online log and Breakpoints, one shown at a time.
+// The panels under the editor: Diagnostics, Watch list, Online log, Breakpoints and Trace, one shown at a time.
 import { useDebug } from "../debug/store";
 import type { Diagnostic } from "../generated/api";
 import { draggedOperand } from "../ld/editor/dragOperand";
 import { onlineStore, useOnline } from "../online/store";
+import { TracePanel } from "../trace/TracePanel";
 import { BreakpointsPanel } from "./BreakpointsPanel";
 import { DiagnosticsPanel } from "./DiagnosticsPanel";
 import { LogPanel } from "./LogPanel";
@@ -27,7 +28,9 @@ export function BottomPanels({ onReveal, pathOfOperand }: BottomPanelsProps) {
     { id: "watch", label: `Watch list (${watched})` },
     { id: "log", label: `Online log (${logged})` },
     { id: "breakpoints", label: `Breakpoints (${breakpoints})` },
+    { id: "trace", label: "Trace" },
   ];
+  const body = { diagnostics: <DiagnosticsPanel onReveal={onReveal} />, watch: <WatchPanel />, log: <LogPanel />, breakpoints: <BreakpointsPanel />, trace: <TracePanel /> };
   // A variable dragged from the diagram and released over the panels joins the watch list.
   const drop = () => {
     const operand = draggedOperand();
@@ -46,7 +49,7 @@ export function BottomPanels({ onReveal, pathOfOperand }: BottomPanelsProps) {
         ))}
       </div>
       <div className="panel-body" role="tabpanel">
-        {panel === "diagnostics" ? <DiagnosticsPanel onReveal={onReveal} /> : panel === "watch" ? <WatchPanel /> : panel === "breakpoints" ? <BreakpointsPanel /> : <LogPanel />}
+        {body[panel]}
       </div>
     </section>
   );

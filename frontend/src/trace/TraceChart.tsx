@@ -1,0 +1,203 @@
+// The trace as a uPlot time chart: drag to zoom (x), double click to reset, Shift+drag or the
+// buttons to pan, Ctrl+wheel to zoom around the cursor; the legend shows the values under the
+// cursor. While the user has not zoomed, the chart follows new samples; a zoom holds still.
+import { useEffect, useRef, useState } from "react";
+import uPlot from "uplot";
+import "uplot/dist/uPlot.min.css";
+import { chartData, legendValue, LANE, type ChartData } from "./chartData";
+import type { Kind } from "./csv";
+import type { SampleRing } from "./ring";
+
+const COLORS = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22"];
+const HEIGHT = 180;
+
+export interface TraceChartProps {
+  paths: readonly string[];
+  kinds: readonly (Kind | null)[];
+  ring: SampleRing;
+  /** Changes whenever the ring does. */
+  version: number;
+  origin: number;
+  laneView: boolean;
+}
+
+/** Moves the x range by `fraction` of its width (negative: back in time). */
+function panX(u: uPlot, fraction: number): void {
+  const { min, max } = u.scales.x ?? {};
+  if (min == null || max == null) return;
+  const d = (max - min) * fraction;
+  u.setScale("x", { min: min + d, max: max + d });
+}
+
+/** Zooms the x range by `factor` (< 1: in) keeping the value at `at` (0..1 of the width) in place. */
+function zoomX(u: uPlot, factor: number, at = 0.5): void {
+  const { min, max } = u.scales.x ?? {};
+  if (min == null || max == null) return;
+  const center = min + (max - min) * at;
+  u.setScale("x", { min: center - (center - min) * factor, max: center + (max - center) * factor });
+}
+
+/** Puts the visible x range on the chart's element (data-x-min, data-x-max), for tools and tests. */
+function showRange(u: uPlot): void {
+  const { min, max } = u.scales.x ?? {};
+  const host = u.root.parentElement;
+  if (!host || min == null || max == null) return;
+  host.dataset.xMin = String(min);
+  host.dataset.xMax = String(max);
+}
+
+function options(chart: ChartData, width: number, onUserZoom: () => void, onReset: () => void): uPlot.Options {
+  const numbers = chart.series.some((s) => s.scale === "y");
+  const steps = uPlot.paths.stepped!({ align: 1 });
+  const lanes = chart.series.filter((s) => s.scale === "lanes");
+  let start: { x: number; min: number; max: number } | null = null;
+  let panned: uPlot | null = null;
+  const move = (e: MouseEvent) => {
+    if (!start || !panned) return;
+    const d = ((e.clientX - start.x) / panned.over.clientWidth) * (start.max - start.min);
+    onUserZoom();
+    panned.setScale("x", { min: start.min - d, max: start.max - d });
+  };
+  const up = () => void (start = null);
+  const pan = (u: uPlot) => {
+    panned = u;
+    u.over.addEventListener("mousedown", (e) => {
+      const { min, max } = u.scales.x ?? {};
+      if (!e.shiftKey || min == null || max == null) return;
+      start = { x: e.clientX, min, max };
+    });
+    window.addEventListener("mousemove", move);
+    window.addEventListener("mouseup", up);
+    u.over.addEventListener("wheel", (e) => {
+      if (!e.ctrlKey && !e.metaKey) return; // the plain wheel scrolls the panel
+      e.preventDefault();
+      onUserZoom();
+      zoomX(u, e.deltaY > 0 ? 1.25 : 0.8, e.offsetX / u.over.clientWidth);
+    });
+    u.over.addEventListener("dblclick", onReset);
+  };
+  return {
+    width,
+    height: HEIGHT,
+    scales: {
+      x: { time: false },
+      y: { auto: true },
+      lanes: { auto: false, range: [-0.2, Math.max(1, lanes.length) * LANE - 0.2] },
+    },
+    axes: [
+      { label: "ms since the first sample", size: 40 },
+      { scale: "y", show: numbers },
+      {
+        scale: "lanes",
+        side: 1,
+        show: lanes.length > 0,
+        size: 90,
+        splits: () => lanes.map((s) => s.offset + 0.5),
+        values: (_u, splits) => splits.map((v) => lanes.find((s) => s.offset + 0.5 === v)?.path.split(".").slice(-2).join(".") ?? ""),
+        grid: { show: false },
+      },
+    ],
+    series: [
+      { label: "t (ms)" },
+      ...chart.series.map((plan, i): uPlot.Series => ({
+        label: plan.path,
+        scale: plan.scale,
+        stroke: COLORS[i % COLORS.length],
+        width: 1.5,
+        paths: plan.kind === "bool" ? steps : undefined,
+        value: (_u, v) => legendValue(plan, v),
+        points: { show: false },
+      })),
+    ],
+    cursor: {
+      drag: { x: true, y: false, setScale: true },
+      // Shift+drag pans: the selection must not start then.
+      bind: { mousedown: (_u, _t, handler) => (e) => (e.shiftKey ? null : handler(e)) },
+    },
+    hooks: {
+      ready: [pan],
+      destroy: [
+        () => {
+          window.removeEventListener("mousemove", move);
+          window.removeEventListener("mouseup", up);
+        },
+      ],
+      setSelect: [(u) => void (u.select.width > 0 && onUserZoom())],
+      setScale: [(u, key) => void (key === "x" && showRange(u))],
+    },
+  };
+}
+
+export function TraceChart({ paths, kinds, ring, version, origin, laneView }: TraceChartProps) {
+  const host = useRef<HTMLDivElement>(null);
+  const plot = useRef<uPlot | null>(null);
+  const zoomed = useRef(false);
+  const [width, setWidth] = useState(640);
+  const layout = JSON.stringify([paths, kinds, laneView]);
+
+  useEffect(() => {
+    const el = host.current;
+    if (!el || typeof ResizeObserver === "undefined") return;
+    const observer = new ResizeObserver(() => setWidth(Math.max(200, el.clientWidth)));
+    observer.observe(el);
+    return () => observer.disconnect();
+  }, []);
+
+  useEffect(() => {
+    if (!host.current) return;
+    zoomed.current = false;
+    const chart = chartData(paths, kinds, ring.columnsInOrder(), origin, laneView);
+    const u = new uPlot(options(chart, width, () => void (zoomed.current = true), () => void (zoomed.current = false)), chart.data as uPlot.AlignedData, host.current);
+    plot.current = u;
+    return () => {
+      u.destroy();
+      plot.current = null;
+    };
+    // Rebuilt only when the series change; new data and sizes go to the same chart below.
+  }, [layout, ring]);
+
+  useEffect(() => plot.current?.setSize({ width, height: HEIGHT }), [width]);
+
+  useEffect(() => {
+    const u = plot.current;
+    if (!u) return;
+    const chart = chartData(paths, kinds, ring.columnsInOrder(), origin, laneView);
+    u.setData(chart.data as uPlot.AlignedData, !zoomed.current);
+    // The ring changes in place: `version` says when.
+  }, [version, origin]);
+
+  const act = (action: (u: uPlot) => void) => () => {
+    const u = plot.current;
+    if (!u) return;
+    zoomed.current = true;
+    action(u);
+  };
+  const reset = () => {
+    const u = plot.current;
+    if (!u) return;
+    zoomed.current = false;
+    u.setData(u.data, true);
+  };
+  return (
+    <div className="trace-chart">
+      <div className="trace-chart-tools" role="toolbar" aria-label="Chart zoom and pan">
+        <button type="button" onClick={act((u) => panX(u, -0.25))} title="Pan back in time (or Shift+drag)">
+          ◀
+        </button>
+        <button type="button" onClick={act((u) => zoomX(u, 0.5))} title="Zoom in (or drag over the chart, or Ctrl+wheel)">
+          Zoom in
+        </button>
+        <button type="button" onClick={act((u) => zoomX(u, 2))}>
+          Zoom out
+        </button>
+        <button type="button" onClick={act((u) => panX(u, 0.25))} title="Pan forward in time (or Shift+drag)">
+          ▶
+        </button>
+        <button type="button" onClick={reset} title="Show every sample (or double click the chart)">
+          Reset zoom
+        </button>
+      </div>
+      <div ref={host} className="trace-plot" aria-label="Trace chart" role="img" />
+    </div>
+  );
+}
