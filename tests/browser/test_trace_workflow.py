@@ -5,9 +5,9 @@
    the samples table lies PT after the trigger (within one scan), the chart's legend shows the values
    under the cursor, and the exported CSV holds every sample scan by scan.
 2. Beremiz's ``first_steps`` (../shared/external, skipped when absent) imported through the UI. Its SFC
-   and IL counters are not imported (LadderLab has neither language), so compiling it is refused with
-   located diagnostics; with those two counters removed (through the REST API, as the FBD editor of
-   this branch cannot delete blocks yet) it compiles, runs, and its counters count in the watch list.
+   and IL counters become stand-ins with their interface and an empty body (LadderLab runs neither
+   language; the import report says so), so the project compiles and runs as imported: its ST, FBD and
+   LD counters count in the watch list while the stand-ins' outputs stay 0.
 
 Screenshots go to tests/browser/artifacts/ (trace-chart.png, trace-table.png, first-steps-*.png).
 """
@@ -172,23 +172,6 @@ def test_a_trace_of_a_ton_shows_q_rising_pt_after_its_input(page, server):
 FIRST_STEPS = ("beremiz-examples", "exemples", "first_steps", "plc.xml")
 
 
-def _without_sfc_and_il(project: dict) -> None:
-    """Removes the instances of the counters written in SFC and IL (not imported) from plc_prg."""
-    main = next(p for p in project["pous"] if p["name"] == "plc_prg")
-    dropped = {n["id"] for network in main["body"]["networks"] for n in network["nodes"]
-               if n.get("call") in ("CounterSFC", "CounterIL")}
-    for network in main["body"]["networks"]:
-        kinds = {n["id"]: n["type"] for n in network["nodes"]}
-        feeds = {w["from"]["node"] for w in network["wires"] if w["to"]["node"] in dropped}  # their Reset inputs
-        fed = {w["to"]["node"] for w in network["wires"] if w["from"]["node"] in dropped
-               and kinds[w["to"]["node"]] == "output"}  # Cnt3, Cnt4
-        gone = dropped | feeds | fed
-        network["nodes"] = [n for n in network["nodes"] if n["id"] not in gone]
-        network["wires"] = [w for w in network["wires"] if w["from"]["node"] not in gone and w["to"]["node"] not in gone]
-    main["declarations"] = "\n".join(line for line in main["declarations"].splitlines()
-                                     if not re.search(r":\s*Counter(SFC|IL)\s*;", line))
-
-
 def test_the_beremiz_first_steps_example_imports_and_runs(page, server):
     source = external(*FIRST_STEPS)
     page.goto(server)
@@ -203,26 +186,19 @@ def test_the_beremiz_first_steps_example_imports_and_runs(page, server):
     page.get_by_label("New project name").fill("first_steps")  # the document's own name is "First Steps"
     page.get_by_role("button", name="Import", exact=True).click()
     form = page.get_by_role("form", name="Import PLCopen XML")
-    form.get_by_text(re.compile(r"^Imported first_steps: 5 POUs, 2 warnings\.")).wait_for()
+    form.get_by_text(re.compile(r"^Imported first_steps: 7 POUs, 2 warnings\.")).wait_for()
     assert "CounterSFC is written in SFC" in form.inner_text() and "CounterIL is written in IL" in form.inner_text()
     page.screenshot(path=str(ARTIFACTS / "first-steps-import.png"))
     page.get_by_role("button", name="Open first_steps").click()
     page.get_by_role("heading", name="first_steps").wait_for()
     tree = page.get_by_role("navigation", name="Project tree")
-    for pou in ("plc_prg", "CounterST", "CounterFBD", "CounterLD", "AverageVal"):
+    for pou in ("plc_prg", "CounterST", "CounterFBD", "CounterLD", "CounterSFC", "CounterIL", "AverageVal"):
         tree.get_by_role("button", name=re.compile(f"^{pou}")).wait_for()
 
-    # As imported, plc_prg still uses the two missing counters: compiling is refused, located.
-    page.get_by_role("button", name="Compile & simulate").click()
-    diagnostics = page.get_by_role("region", name="Panels")
-    diagnostics.get_by_text("unknown type 'CounterSFC'").first.wait_for()
-    assert page.get_by_role("status", name="Online state").inner_text().startswith("Offline")
-
-    # Without them it compiles and runs: the ST, FBD and LD counters count every 100 ms scan.
-    _store(server, "first_steps", _without_sfc_and_il)
-    _open_project(page, server, "first_steps")
+    # As imported, it compiles and runs: the ST, FBD and LD counters count every 100 ms scan.
     _online(page)
     values = {path: _watch(page, path) for path in ("plc_prg.Cnt1", "plc_prg.Cnt2", "plc_prg.Cnt5")}
+    stand_in = _watch(page, "plc_prg.Cnt4")  # the IL counter's output
     first = {}
     for path, cell in values.items():
         cell.filter(has_text=re.compile(r"^[1-9]\d*$")).wait_for()
@@ -231,4 +207,5 @@ def test_the_beremiz_first_steps_example_imports_and_runs(page, server):
     while min(int(cell.inner_text()) - first[path] for path, cell in values.items()) < 3:
         assert time.monotonic() < deadline, "the counters did not advance"
         page.wait_for_timeout(100)
+    assert stand_in.inner_text() == "0"
     page.screenshot(path=str(ARTIFACTS / "first-steps-running.png"))

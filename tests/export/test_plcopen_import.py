@@ -9,7 +9,9 @@ from __future__ import annotations
 
 import pytest
 
+from ladderlab.engine.simulation import Simulation
 from ladderlab.export.plcopen_import import import_plcopen
+from ladderlab.ir.lower_project import lower_project
 from ladderlab.model import (
     Block,
     Box,
@@ -413,23 +415,48 @@ def test_types_globals_and_tasks_fill_the_project():
 
 
 def test_sfc_and_il_pous_actions_and_foreign_add_data_are_reported_not_dropped_silently():
-    pous = (pou_xml("Seq", "<step localId='1' name='Init' initialStep='true'>" + pos(0, 0) + "</step>",
-                    language="SFC", pou_type="functionBlock")
-            + pou_xml("Asm", "<xhtml:p>LD TRUE</xhtml:p>", language="IL")
+    pous = (pou_xml("Seq", "<step localId='1' name='Init' initialStep='true'>" + pos(0, 0) + "</step>"
+                    "<step localId='2' name='Run'>" + pos(0, 40) + "</step>", language="SFC", pou_type="functionBlock")
+            + pou_xml("Asm", "<xhtml:p>LD TRUE\n(* keep *)\nST x</xhtml:p>", language="IL")
             + '<pou name="Main" pouType="program"><actions><action name="Blink"><body><ST><xhtml:p>;</xhtml:p></ST>'
               '</body></action></actions><body><ST><xhtml:p>x := 1;</xhtml:p></ST></body>'
               '<addData><data name="http://vendor.example/pou" handleUnknown="preserve"><v/></data></addData></pou>')
     result = imported(project_xml(pous))
-    assert [p.name for p in result.project.pous] == ["Main"]
     assert [(d.code, d.pou, d.message) for d in result.diagnostics] == [
-        ("PLCOPEN-UNSUPPORTED", "Seq", "POU Seq is written in SFC, which LadderLab does not support; it was not "
-                                       "imported"),
-        ("PLCOPEN-UNSUPPORTED", "Asm", "POU Asm is written in IL, which LadderLab does not support; it was not "
-                                       "imported"),
+        ("PLCOPEN-UNSUPPORTED", "Seq", "POU Seq is written in SFC, which LadderLab does not support; it was imported "
+                                       "with its interface and a body that does nothing (the names of its steps are "
+                                       "kept as comments), so its callers build and run"),
+        ("PLCOPEN-UNSUPPORTED", "Asm", "POU Asm is written in IL, which LadderLab does not support; it was imported "
+                                       "with its interface and a body that does nothing (the IL text is kept as "
+                                       "comments), so its callers build and run"),
         ("PLCOPEN-UNSUPPORTED", "Main", "action 'Blink' of POU Main was not imported: LadderLab has no actions"),
         ("PLCOPEN-ADDDATA", None, "addData 'http://vendor.example/pou' (1 place) is another tool's data that "
                                   "LadderLab cannot carry; it was dropped")]
     assert all(d.severity == "warning" for d in result.diagnostics)
+    seq, asm, main = result.project.pous
+    assert (seq.name, seq.kind, seq.language, asm.name, asm.language, main.name) == (
+        "Seq", "function_block", "st", "Asm", "st", "Main")
+    assert seq.body == ("// Imported from SFC, which LadderLab cannot run: this body does nothing. The original SFC:\n"
+                        "// step Init (initial)\n// step Run")
+    assert asm.body == ("// Imported from IL, which LadderLab cannot run: this body does nothing. The original IL:\n"
+                        "// LD TRUE\n// (* keep *)\n// ST x")
+
+
+def test_a_caller_of_an_il_function_block_builds_and_runs_with_its_interface():
+    """The stand-in keeps the IL FB's interface: the ST caller builds, its own logic runs, the FB's output stays default."""
+    interface = ("<interface><inputVars><variable name='Go'><type><BOOL/></type></variable></inputVars>"
+                 "<outputVars><variable name='Out'><type><INT/></type></variable></outputVars></interface>")
+    counter = (f'<pou name="CounterIL" pouType="functionBlock">{interface}<body><IL><xhtml:p>LD Go\nST Out'
+               '</xhtml:p></IL></body></pou>')
+    main = ('<pou name="Main" pouType="program"><interface><localVars><variable name="c"><type><derived name="CounterIL"/>'
+            '</type></variable><variable name="n"><type><INT/></type></variable></localVars></interface>'
+            '<body><ST><xhtml:p>c(Go := TRUE); n := n + 1 + c.Out;</xhtml:p></ST></body></pou>')
+    project = imported(project_xml(counter + main)).project
+    result = lower_project(project)
+    assert [d for d in result.diagnostics if d.severity == "error"] == []
+    sim = Simulation(result.program)
+    sim.cycle(3)
+    assert (sim.read("Main.n"), sim.read("Main.c.Out")) == (3, 0)
 
 
 def test_a_single_pou_document_with_a_textual_declaration():

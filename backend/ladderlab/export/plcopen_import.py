@@ -193,8 +193,9 @@ class _Importer:
         tag = local(language) if language is not None else "ST"
         if tag in ("SFC", "IL"):
             r.report("PLCOPEN-UNSUPPORTED", f"POU {pou.name} is written in {tag}, which LadderLab does not support; "
-                     "it was not imported", language, severity="warning", pou=pou.name)
-            return None
+                     f"it was imported with its interface and a body that does nothing ({_KEPT[tag]} as comments), "
+                     "so its callers build and run", language, severity="warning", pou=pou.name)
+            return pou.model_copy(update={"body": unsupported_body(tag, language)})
         if tag == "ST":
             return pou.model_copy(update={"body": text_content(language)})
         graph = read_graph(language, r, pou.name, signatures)
@@ -304,3 +305,22 @@ def _return_type_elements(text: str) -> list[ET.Element] | None:
     holder = ET.Element("returnType")
     write_type(holder, spec)
     return [holder]
+
+
+#: What an unsupported body leaves in the comments of the POU standing in for it.
+_KEPT = {"IL": "the IL text is kept", "SFC": "the names of its steps are kept"}
+
+
+def unsupported_body(tag: str, language: ET.Element) -> str:
+    """The ST body standing in for an SFC or IL body: no statements, the original described in line comments.
+
+    The POU keeps its interface so that the programs calling it still build (the rest of an imported
+    project runs); the comment says, where the user opens the POU, that this body does nothing.
+    """
+    if tag == "IL":
+        original = text_content(language).strip().splitlines()
+    else:
+        original = [f"step {s.get('name', '')}{' (initial)' if s.get('initialStep') == 'true' else ''}"
+                    for s in language if local(s) == "step"]
+    lines = [f"// Imported from {tag}, which LadderLab cannot run: this body does nothing. The original {tag}:"]
+    return "\n".join(lines + [f"// {line}".rstrip() for line in original])
