@@ -116,10 +116,20 @@ export interface StOnlineView {
 
 const occurrenceAt = (view: StOnlineView | undefined, pos: number) => view?.occurrences.find((o) => o.from <= pos && pos <= o.to);
 
+/** Values as small tags after their variable; BOOLs in the LD editor's power colours. */
+const valueTheme = EditorView.baseTheme({
+  ".cm-st-value": { marginLeft: "2px", padding: "0 3px", borderRadius: "3px", fontSize: "85%", background: "#e8eefc", color: "#1d3f8f", border: "1px solid #b9c8ee" },
+  ".cm-st-value-true": { background: "#d9f5dc", color: "#14692a", borderColor: "#7fcf8f" },
+  ".cm-st-value-false": { background: "#eef0f3", color: "#555d6b", borderColor: "#c9ced6" },
+  ".cm-st-value-forced": { outline: "2px solid #d0312d" },
+  ".cm-st-value-tooltip": { padding: "2px 6px", fontFamily: "ui-monospace, monospace" },
+});
+
 /** The inline value widgets (fed by setInlineMarks), hover and the right-click menu on variables. */
 export function stInlineValues(online: () => StOnlineView | undefined): Extension {
   return [
     inlineField,
+    valueTheme,
     hoverTooltip((_view, pos) => {
       const o = occurrenceAt(online(), pos);
       if (!o) return null;
