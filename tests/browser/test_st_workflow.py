@@ -3,7 +3,8 @@
 Write a function block with a typo in a variable name, see the live diagnostic underline with its
 message before saving, fix it and see the underline go; save. Use the FB from a program (member
 completion offers the FB's output), run the simulation and watch the value inline in the body,
-hover for value and type, force a variable from the right-click menu and see the count stop.
+hover for value and type, halt at a line breakpoint and see the values of the halt, force a
+variable from the right-click menu and see the count stop.
 Screenshots are written to tests/browser/artifacts/.
 """
 
@@ -44,10 +45,29 @@ def inline_values(page, label: str) -> list[str]:
     return page.get_by_label(label).locator(".cm-st-value").all_inner_texts()
 
 
-def just_before(page, widget) -> tuple[float, float]:
-    """A point on the last character before an inline value widget (the variable it belongs to)."""
-    box = widget.bounding_box()
-    return box["x"] - 4, box["y"] + box["height"] / 2
+def char_at(page, label: str, line: int, column: int) -> tuple[float, float]:
+    """The centre of the character at 0-based ``line``/``column`` of an editor's text (inline values skipped)."""
+    box = page.evaluate(
+        """([label, line, column]) => {
+            const el = document.querySelectorAll(`[aria-label="${label}"] .cm-line`)[line];
+            const walker = document.createTreeWalker(el, NodeFilter.SHOW_TEXT,
+                { acceptNode: (n) => n.parentElement.closest('.cm-st-value') ? NodeFilter.FILTER_REJECT : NodeFilter.FILTER_ACCEPT });
+            for (let node = walker.nextNode(), left = column; node; node = walker.nextNode()) {
+                if (left < node.length) {
+                    const range = document.createRange();
+                    range.setStart(node, left);
+                    range.setEnd(node, left + 1);
+                    const r = range.getBoundingClientRect();
+                    return [r.x + r.width / 2, r.y + r.height / 2];
+                }
+                left -= node.length;
+            }
+            return null;
+        }""",
+        [label, line, column],
+    )
+    assert box is not None, (label, line, column)
+    return box[0], box[1]
 
 
 def test_new_user_writes_an_st_fb_fixes_a_typo_and_watches_it_run(page, server):
@@ -118,15 +138,41 @@ def test_new_user_writes_an_st_fb_fixes_a_typo_and_watches_it_run(page, server):
     page.screenshot(path=str(ARTIFACTS / "st-online.png"))
 
     # Hover on n: its value and type.
-    values = page.get_by_label("Main body").locator(".cm-st-value")
-    page.mouse.move(*just_before(page, values.nth(1)))
+    page.mouse.move(*char_at(page, "Main body", 1, 0))
     hover = page.locator(".cm-st-value-tooltip")
     hover.wait_for()
     assert re.fullmatch(r"n : INT = \d+", hover.inner_text())
 
+    # A breakpoint on line 2 (gutter click): the scan halts there, the line is highlighted, and the
+    # values are those of the halt: line 1 has counted c1 up, n still holds the previous scan's count.
+    page.mouse.move(0, 0)
+    line2 = page.get_by_label("Main body").locator(".cm-line").nth(1)
+    gutter = page.locator(".cm-breakpoint-gutter").last
+
+    def click_gutter_of_line2() -> None:  # measured each time: the debug bar's buttons move the editor
+        gutter_box, line_box = gutter.bounding_box(), line2.bounding_box()
+        page.mouse.click(gutter_box["x"] + gutter_box["width"] / 2, line_box["y"] + line_box["height"] / 2)
+
+    click_gutter_of_line2()
+    state.filter(has_text="Online · halted").wait_for()
+    assert page.locator(".cm-halted-line").all_inner_texts() == [line2.inner_text()]
+    count_value = n_value.replace("[1]", "[2]")
+    page.wait_for_function(f"() => ({count_value})() === ({n_value})() + 1")
+    halt_values = inline_values(page, "Main body")
+    page.wait_for_timeout(300)
+    assert inline_values(page, "Main body") == halt_values  # halted: nothing moves
+    page.screenshot(path=str(ARTIFACTS / "st-halted.png"))
+    dots = page.locator(".cm-breakpoint:visible")
+    assert dots.count() == 1
+    click_gutter_of_line2()
+    dots.first.wait_for(state="detached")
+    page.get_by_role("button", name="Continue").click()
+    state.filter(has_text="Online · running").wait_for()
+    assert page.locator(".cm-halted-line").count() == 0
+
     # Right click Run, force FALSE: the FB stops counting, Run shows as forced.
     page.mouse.move(0, 0)
-    page.mouse.click(*just_before(page, values.nth(0)), button="right")
+    page.mouse.click(*char_at(page, "Main body", 0, len("c1(Enable := R")), button="right")
     page.get_by_role("menuitem", name="Force FALSE").click()
     page.wait_for_function(
         """() => document.querySelectorAll('[aria-label="Main body"] .cm-st-value')[0].textContent === 'FALSE F'"""

@@ -243,10 +243,12 @@ class SimRunner:
             self._faulted = True
             self._set_running(False)
         now = self.clock()
-        if publish or now - self._last_publish >= self.publish_s:
-            self._publish(now)
         state = self._state()
         status = (state, at_halt(sim.halted) if sim.halted is not None else None)
+        # A halt (or any change of state) publishes at once: the thread then idles, and the values
+        # clients see must be those at the halt point, not of the last frame before it.
+        if publish or status != self._status or now - self._last_publish >= self.publish_s:
+            self._publish(now)
         if status != self._status:
             self._status = status
             self._emit(Status(type="status", state=state, at=status[1]))  # type: ignore[arg-type]
