@@ -6,7 +6,7 @@ import { StateField, type EditorState, type Extension } from "@codemirror/state"
 import { Decoration, EditorView, type DecorationSet } from "@codemirror/view";
 import { tokenize } from "./language";
 
-/** Opening keyword -> the keyword that closes it. */
+/** Opening keyword -> the keyword that closes it (the blocks a project's ST texts hold; all are ST_KEYWORDS). */
 const CLOSER: Readonly<Record<string, string>> = {
   IF: "END_IF",
   CASE: "END_CASE",
@@ -18,9 +18,7 @@ const CLOSER: Readonly<Record<string, string>> = {
   FUNCTION_BLOCK: "END_FUNCTION_BLOCK",
   TYPE: "END_TYPE",
   STRUCT: "END_STRUCT",
-  CONFIGURATION: "END_CONFIGURATION",
-  RESOURCE: "END_RESOURCE",
-  ...Object.fromEntries(["VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_TEMP", "VAR_GLOBAL", "VAR_EXTERNAL", "VAR_ACCESS", "VAR_CONFIG"].map((k) => [k, "END_VAR"])),
+  ...Object.fromEntries(["VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_TEMP", "VAR_GLOBAL", "VAR_EXTERNAL"].map((k) => [k, "END_VAR"])),
 };
 const CLOSERS = new Set(Object.values(CLOSER));
 
