@@ -1,5 +1,6 @@
 import { foldable } from "@codemirror/language";
 import { EditorState } from "@codemirror/state";
+import { EditorView } from "@codemirror/view";
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
 import { foldAt, partnerAt, scanBlocks, stBlocks, type Span } from "./blocks";
@@ -105,5 +106,17 @@ describe("folding (issue 9: folding of blocks and comments)", () => {
 
   it("gives nothing for a line with no block", () => {
     expect(foldAt(scanBlocks("x := 1;\ny := 2;"), state.doc, 0, 7)).toBeNull();
+  });
+});
+
+describe("END_* highlight in the editor", () => {
+  it("marks the keyword at the cursor and its partner, and a stray closer as not matching", () => {
+    const view = new EditorView({ parent: document.body, state: EditorState.create({ doc: "WHILE a DO\n  b := 1;\nEND_WHILE;\nEND_IF;", selection: { anchor: 2 }, extensions: [stLanguage, stBlocks] }) });
+    const marked = (cls: string) => [...view.dom.querySelectorAll(cls)].map((e) => e.textContent);
+    expect(marked(".cm-matchingBracket")).toEqual(["WHILE", "END_WHILE"]);
+    view.dispatch({ selection: { anchor: view.state.doc.length - 2 } });
+    expect(marked(".cm-matchingBracket")).toEqual([]);
+    expect(marked(".cm-nonmatchingBracket")).toEqual(["END_IF"]);
+    view.destroy();
   });
 });
