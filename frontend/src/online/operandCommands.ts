@@ -22,12 +22,19 @@ export function operandCommands(pathOf: (operand: string) => string | null): LdO
   };
 }
 
-/** The context menu items for `operand`; `prompt` asks for the value to write or force. */
-export function onlineOperandItems(operand: string, commands: LdOnlineActions, prompt: (action: "write" | "force") => void): MenuItem[] {
+/**
+ * The context menu items for `operand`; `prompt` asks for the value to write or force. `bool` false
+ * (the type is known and not BOOL) leaves out Force TRUE/FALSE.
+ */
+export function onlineOperandItems(operand: string, commands: LdOnlineActions, prompt: (action: "write" | "force") => void, bool = true): MenuItem[] {
   return [
     { id: "online-write", label: `Write value of ${operand}…`, run: () => prompt("write") },
-    { id: "online-force-true", label: "Force TRUE", run: () => commands.force(operand, true) },
-    { id: "online-force-false", label: "Force FALSE", run: () => commands.force(operand, false) },
+    ...(bool
+      ? [
+          { id: "online-force-true", label: "Force TRUE", run: () => commands.force(operand, true) },
+          { id: "online-force-false", label: "Force FALSE", run: () => commands.force(operand, false) },
+        ]
+      : []),
     { id: "online-force-value", label: "Force value…", run: () => prompt("force") },
     { id: "online-release", label: "Release force", run: () => commands.unforce(operand) },
     { id: "online-watch", label: "Add to watch list", run: () => commands.watch(operand) },

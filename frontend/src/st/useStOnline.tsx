@@ -60,7 +60,7 @@ export function useStOnline(pou: Pou, body: string, scope: Scope): StOnline {
           <ContextMenu
           x={menu.x}
           y={menu.y}
-          extra={onlineOperandItems(menu.occurrence.text, commands, (action) => setPrompt({ occurrence: menu.occurrence, action }))}
+          extra={onlineOperandItems(menu.occurrence.text, commands, (action) => setPrompt({ occurrence: menu.occurrence, action }), menu.occurrence.type.toUpperCase() === "BOOL")}
           onClose={() => setMenu(null)}
           />
         </div>
