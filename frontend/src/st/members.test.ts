@@ -4,7 +4,7 @@ import { describe, expect, it } from "vitest";
 import type { LibraryEntry, SymbolInfo } from "../generated/api";
 import { memberCompletions, stCompletionSource, stCompletions } from "./completion";
 import { membersOf, structTypes, typeOfChain, type Scope } from "./members";
-import { declaredSymbols, stScope } from "./scope";
+import { declaredSymbols, stScope, workingLibrary } from "./scope";
 
 const pin = (name: string, type: string) => ({ name, type });
 const TON: LibraryEntry = { name: "TON", kind: "function_block", source: "standard", comment: "on delay", extensible: false, inputs: [pin("IN", "BOOL"), pin("PT", "TIME")], in_outs: [], outputs: [pin("Q", "BOOL"), pin("ET", "TIME")], return_type: null };
@@ -93,5 +93,25 @@ describe("the working copy's declarations (issue 9: completion before a save)", 
     const table = { pou: "Main", symbols: [symbol("Saved", "INT")], globals: [symbol("Alarm", "BOOL", "VAR_GLOBAL")], diagnostics: [] };
     expect(stScope(table, "VAR\n    c : Counter;\nEND_VAR", "", []).symbols.map((s) => s.name)).toEqual(["c", "Alarm"]);
     expect(stScope(table, "VAR\n    c : Counter;", "", []).symbols.map((s) => s.name)).toEqual(["Saved", "Alarm"]);
+  });
+});
+
+describe("the working copy's function blocks (issue 9: user FB members before a save)", () => {
+  const fb = (name: string, declarations: string) => ({ name, kind: "function_block" as const, language: "st" as const, declarations, body: "" });
+
+  it("describes an unsaved or changed FB by its current declarations, keeping the saved entry when they do not read", () => {
+    const library = workingLibrary([TON, COUNTER], [
+      fb("Counter", "VAR_INPUT\n    Enable : BOOL;\n    Step : INT;\nEND_VAR\nVAR_OUTPUT\n    Count : INT;\nEND_VAR"),
+      fb("Valve", "VAR_IN_OUT\n    Pos : REAL;\nEND_VAR\nVAR\n    hidden : INT;\nEND_VAR"),
+      fb("Broken", "VAR\n    x : INT;"),
+      { name: "Main", kind: "program", language: "st", declarations: "VAR\n    c : Counter;\nEND_VAR", body: "" },
+    ]);
+    expect(library.map((e) => [e.name, e.source, [...e.inputs, ...e.in_outs, ...e.outputs].map((p) => p.name)])).toEqual([
+      ["TON", "standard", ["IN", "PT", "Q", "ET"]],
+      ["Counter", "user", ["Enable", "Step", "Count"]],
+      ["Valve", "user", ["Pos"]],
+    ]);
+    const members = memberCompletions(["c"], { symbols: [symbol("c", "counter")], library, structs: new Map() });
+    expect(members?.map((m) => m.label)).toEqual(["Enable", "Step", "Count"]);
   });
 });

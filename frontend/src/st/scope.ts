@@ -1,8 +1,10 @@
 // The names an ST POU's editor knows while the user types: the POU's own declarations from the
 // working copy when they read as a table (so a variable declared a moment ago completes and shows
-// online before a save), else the saved symbol table; the globals; the library; the STRUCT types.
+// online before a save), else the saved symbol table; the globals; the library, with the working
+// copy's function blocks in their current form; the STRUCT types.
 import { parseDeclarations } from "../declarations/model";
 import type { LibraryEntry, SymbolInfo, SymbolTable } from "../generated/api";
+import type { Pou } from "../generated/project";
 import { structTypes, type Scope } from "./members";
 
 /** The POU's own symbols from its declaration text, or null when the text does not read as a table. */
@@ -19,6 +21,22 @@ export function declaredSymbols(declarations: string): SymbolInfo[] | null {
     retain: /\bRETAIN\b/.test(r.varClass),
     constant: /\bCONSTANT\b/.test(r.varClass),
   }));
+}
+
+/**
+ * The library with each function block of the working copy described by its current declarations
+ * (an FB created or changed since the last save); an FB whose text does not read as a table keeps
+ * its saved entry.
+ */
+export function workingLibrary(library: readonly LibraryEntry[], pous: readonly Pou[]): LibraryEntry[] {
+  const working = pous.flatMap((pou): LibraryEntry[] => {
+    const symbols = pou.kind === "function_block" ? declaredSymbols(pou.declarations ?? "") : null;
+    if (!symbols) return [];
+    const pins = (varClass: string) => symbols.filter((s) => s.var_class === varClass).map((s) => ({ name: s.name, type: s.type }));
+    return [{ name: pou.name, kind: "function_block", source: "user", inputs: pins("VAR_INPUT"), outputs: pins("VAR_OUTPUT"), in_outs: pins("VAR_IN_OUT"), extensible: false, return_type: null, comment: null }];
+  });
+  const replaced = new Set(working.map((e) => e.name.toUpperCase()));
+  return [...library.filter((e) => !replaced.has(e.name.toUpperCase())), ...working];
 }
 
 export function stScope(table: SymbolTable | undefined, declarations: string, types: string, library: readonly LibraryEntry[]): Scope {
