@@ -155,7 +155,8 @@ def test_new_user_writes_an_st_fb_fixes_a_typo_and_watches_it_run(page, server):
 
     click_gutter_of_line2()
     state.filter(has_text="Online · halted").wait_for()
-    assert page.locator(".cm-halted-line").all_inner_texts() == [line2.inner_text()]
+    assert page.locator(".cm-halted-line").count() == 1
+    assert "cm-halted-line" in line2.get_attribute("class").split()
     count_value = n_value.replace("[1]", "[2]")
     page.wait_for_function(f"() => ({count_value})() === ({n_value})() + 1")
     halt_values = inline_values(page, "Main body")
