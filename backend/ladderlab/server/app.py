@@ -15,6 +15,7 @@ from fastapi.staticfiles import StaticFiles
 from .. import __version__
 from ..storage import Workspace
 from . import interchange, library, monitor, projects, simulations, symbols
+from . import live_check
 from .errors import install_error_handlers
 from .limits import BodySizeLimit, Limits
 
@@ -39,6 +40,7 @@ def create_app(workspace: Workspace, limits: Limits | None = None) -> FastAPI:
 
     for module in (projects, symbols, library, simulations, monitor, interchange):
         app.include_router(module.router)
+    app.include_router(live_check.router)
 
     if (STATIC_DIR / "index.html").is_file():
         app.mount("/", StaticFiles(directory=STATIC_DIR, html=True), name="app")

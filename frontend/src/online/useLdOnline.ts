@@ -8,7 +8,7 @@ import type { LdOnlineActions } from "../ld/editor/LdEditor";
 import type { LdBody } from "../ld/model";
 import type { OnlineView } from "../ld/view/types";
 import { bindLd, ldOnlineView, operandPath } from "./ldBinding";
-import { parseValue, pathKey } from "./monitor";
+import { operandCommands } from "./operandCommands";
 import { onlineStore, useOnline } from "./store";
 
 /**
@@ -48,33 +48,10 @@ export function useLdOnline(pou: Pou, body: LdBody, symbols: readonly SymbolInfo
   const onVisibleChange = useCallback((networks: readonly string[]) => setVisible(new Set(networks)), []);
   const online = useMemo(() => (live && binding ? ldOnlineView(monitor, binding) : undefined), [live, binding, monitor]);
 
-  const actions = useMemo((): LdOnlineActions | undefined => {
-    if (!live || !instance) return undefined;
-    const path = (operand: string) => operandPath(operand, instance, symbols);
-    const store = () => onlineStore.getState();
-    return {
-      toggle(operand) {
-        const p = path(operand);
-        if (p) store().write(p, store().monitor.values[pathKey(p)] !== true);
-      },
-      write(operand, text) {
-        const p = path(operand);
-        if (p) store().write(p, parseValue(text));
-      },
-      force(operand, value) {
-        const p = path(operand);
-        if (p) store().force(p, typeof value === "boolean" ? value : parseValue(value));
-      },
-      unforce(operand) {
-        const p = path(operand);
-        if (p) store().unforce(p);
-      },
-      watch(operand) {
-        const p = path(operand);
-        if (p) store().addWatch(p);
-      },
-    };
-  }, [live, instance, symbols]);
+  const actions = useMemo(
+    (): LdOnlineActions | undefined => (live && instance ? operandCommands((operand) => operandPath(operand, instance, symbols)) : undefined),
+    [live, instance, symbols],
+  );
 
   const readOnly = !live
     ? null

@@ -100,15 +100,18 @@ describe("app shell", () => {
     expect(screen.queryByRole("alertdialog")).toBeNull();
   });
 
-  it("opens an ST POU as text (declarations and body) in the ST editor, underlines the saved check and marks edits unsaved (issue 9)", async () => {
+  it("opens an ST POU as text (declarations and body) in the ST editor, underlines the live check of the unsaved text and marks edits unsaved (issue 9)", async () => {
     const fetchMock = serve(() => json({}));
     const tree = await openPlant();
     fireEvent.click(within(tree).getByRole("button", { name: /Blinker/ }));
     const content = screen.getByLabelText("Blinker body");
     const view = EditorView.findFromDOM(content)!;
-    await waitFor(() => expect(fetchMock.mock.calls.some(([url]) => String(url) === "/api/projects/plant/check")).toBe(true));
+    const checkedBodies = () =>
+      fetchMock.mock.calls.filter(([url]) => String(url) === "/api/check").map(([, init]) => (JSON.parse(String(init?.body)) as typeof project).pous[1]!.body);
+    await waitFor(() => expect(checkedBodies()).toEqual([""]));
     await waitFor(() => expect(diagnosticCount(view.state)).toBe(1));
     act(() => view.dispatch({ changes: { from: 0, insert: "Q := TRUE;" } }));
+    await waitFor(() => expect(checkedBodies()).toEqual(["", "Q := TRUE;"]));
     expect(workspaceStore.getState().project?.pous?.find((p) => p.name === "Blinker")?.body).toBe("Q := TRUE;");
     expect(workspaceStore.getState().changed).toEqual(["Blinker"]);
     expect(screen.getByRole("tab", { name: /Blinker/ }).textContent).toContain("●");

@@ -21,8 +21,9 @@ import { ExportMenu } from "../interchange/ExportMenu";
 import { ImportPlcopen } from "../interchange/ImportPlcopen";
 import { appStore } from "../store";
 import { StEditor } from "../st/StEditor";
-import { stCompletions } from "../st/completion";
-import { useSavedCheck } from "../st/useSavedCheck";
+import { StOnlineBar } from "../st/StOnlineBar";
+import { useStAssist } from "../st/useStAssist";
+import { useStOnline } from "../st/useStOnline";
 import { DEBUG_KEYS, DebugBar } from "../debug/DebugBar";
 import { useLdDebugging } from "../debug/ldDebugging";
 import { revealPlace } from "../debug/reveal";
@@ -252,18 +253,16 @@ function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
 }
 
 /**
- * An ST POU as text: its declarations above its body, each in the ST editor, with the saved
- * project's check as underlines.
+ * An ST POU as text: its declarations above its body, each in the ST editor, with the live check
+ * of the working copy as underlines; online, the body shows values inline.
  */
-function StPouView({ pou, project, unsaved }: { pou: Pou; project: string; unsaved: boolean }) {
+function StPouView({ pou }: { pou: Pou }) {
   const setStBody = useWorkspace((s) => s.setStBody);
   const setDeclarations = useWorkspace((s) => s.setDeclarations);
-  const library = useWorkspace((s) => s.library);
-  const revision = useWorkspace((s) => s.revision);
-  const table = useWorkspace((s) => s.symbols[pou.name]);
   const phase = useOnline((s) => s.phase);
-  const diagnostics = useSavedCheck(project, revision, unsaved);
-  const completions = useMemo(() => stCompletions(symbolsOf(table), library), [table, library]);
+  const body = typeof pou.body === "string" ? pou.body : "";
+  const { diagnostics, completions, scope } = useStAssist(pou);
+  const online = useStOnline(pou, body, scope);
   const readOnly = phase === "offline" ? null : "Online: go offline to edit.";
   const allBreakpoints = useDebug((s) => s.breakpoints);
   const upper = pou.name.toUpperCase();
@@ -288,9 +287,10 @@ function StPouView({ pou, project, unsaved }: { pou: Pou; project: string; unsav
           label={`${pou.name} declarations`}
         />
       </div>
+      <StOnlineBar online={online} instancePicker={pou.kind === "function_block" ? <InstancePicker pou={pou.name} /> : undefined} />
       <div style={{ flex: "1 1 65%", minHeight: "10rem", overflow: "hidden" }}>
         <StEditor
-          text={typeof pou.body === "string" ? pou.body : ""}
+          text={body}
           onChange={(text) => setStBody(pou.name, text)}
           file={`${pou.name}/body`}
           diagnostics={diagnostics}
@@ -298,8 +298,10 @@ function StPouView({ pou, project, unsaved }: { pou: Pou; project: string; unsav
           readOnly={readOnly}
           label={`${pou.name} body`}
           debug={debug}
+          online={online.view}
         />
       </div>
+      {online.overlay}
     </div>
   );
 }
@@ -354,7 +356,7 @@ function PouView({ name }: { name: string }) {
   } else if (mode === "st") {
     content = <StView project={project} pou={name} unsaved={unsaved} onRevealNetwork={(network) => panelsStore.getState().reveal({ pou: name, network })} />;
   } else if (pou.language === "st") {
-    content = <StPouView pou={pou} project={project} unsaved={unsaved} />;
+    content = <StPouView pou={pou} />;
   } else if (pou.language === "ld" && history) {
     content = <LdPouView pou={pou} history={history} />;
   } else {

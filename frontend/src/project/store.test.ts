@@ -105,6 +105,16 @@ describe("workspace store", () => {
     expect(loadDraft("demo", storage)).toBeNull();
   });
 
+  it("reloads the library after a save, so a new or changed function block is offered (issue 9)", async () => {
+    const counter = { name: "Counter", kind: "function_block" as const, source: "user" as const, inputs: [], outputs: [{ name: "Count", type: "INT" }], in_outs: [], extensible: false, return_type: null, comment: null };
+    const getLibrary = vi.fn<ProjectApi["getLibrary"]>().mockResolvedValueOnce([]).mockResolvedValueOnce([counter]);
+    const { store } = await opened(fakeApi({ getLibrary }));
+    editMain(store);
+    await store.getState().save();
+    await vi.waitFor(() => expect(store.getState().library).toEqual([counter]));
+    expect(getLibrary).toHaveBeenCalledTimes(2);
+  });
+
   it("reports a conflict, then overwrites with the current revision on request", async () => {
     const conflict = { message: "changed", base_revision: "r1", current_revision: "r7", current_modified: "2024-05-03T09:00:00Z" };
     const saveProject = vi.fn<ProjectApi["saveProject"]>().mockRejectedValueOnce(new SaveConflictError(conflict)).mockResolvedValueOnce({ revision: "r8", modified: "2024-05-03T10:00:00Z" });

@@ -104,6 +104,16 @@ export function createWorkspaceStore(api: ProjectApi = projectApi, storage: Stor
       );
     };
 
+    /** The library with the project's own functions and FBs (again after a save, which may add or change them). */
+    const loadLibrary = (name: string, call: number) => {
+      api.getLibrary(name).then(
+        (library) => {
+          if (call === openCall) set({ library });
+        },
+        () => undefined, // no library: the box picker is empty, boxes show their connected pins
+      );
+    };
+
     const load = async (name: string, useDraft: boolean) => {
       const call = ++openCall;
       set({ ...emptyWorkspace, status: "loading", name });
@@ -119,12 +129,7 @@ export function createWorkspaceStore(api: ProjectApi = projectApi, storage: Stor
           changed: draft?.changed ?? [],
           restoredAt: draft?.saved_at ?? null,
         });
-        api.getLibrary(name).then(
-          (library) => {
-            if (call === openCall) set({ library });
-          },
-          () => undefined, // no library: the box picker is empty, boxes show their connected pins
-        );
+        loadLibrary(name, call);
       } catch (err) {
         if (call === openCall) set({ status: "error", error: message(err) });
       }
@@ -200,6 +205,7 @@ export function createWorkspaceStore(api: ProjectApi = projectApi, storage: Stor
           removeDraft(name, storage);
           set({ saving: false, revision: result.revision, modified: result.modified, changed: [], restoredAt: null, conflict: null });
           for (const pou of get().tabs) loadSymbols(pou);
+          loadLibrary(name, openCall);
         } catch (err) {
           if (err instanceof SaveConflictError) set({ saving: false, conflict: err.conflict });
           else set({ saving: false, saveError: err instanceof ApiError ? err.message : message(err) });

@@ -1,16 +1,19 @@
 // A CodeMirror 6 editor for ST text (a POU body or its declarations): IEC ST highlighting, bracket
-// matching, autocomplete, backend diagnostics as lint underlines. The text is controlled: every
-// edit goes to onChange, and a new `text` from outside (reload, draft restore) replaces the doc.
-import { autocompletion, closeBrackets, closeBracketsKeymap, completionKeymap, type Completion } from "@codemirror/autocomplete";
+// and END_* matching, folding, autocomplete (members after `x.`), backend diagnostics as lint
+// underlines, and online the values of variables inline. The text is controlled: every edit goes
+// to onChange, and a new `text` from outside (reload, draft restore) replaces the doc.
+import { autocompletion, closeBrackets, closeBracketsKeymap, completionKeymap } from "@codemirror/autocomplete";
 import { defaultKeymap, history, historyKeymap, indentWithTab } from "@codemirror/commands";
-import { bracketMatching, defaultHighlightStyle, indentOnInput, syntaxHighlighting } from "@codemirror/language";
+import { bracketMatching, codeFolding, defaultHighlightStyle, foldGutter, foldKeymap, indentOnInput, syntaxHighlighting } from "@codemirror/language";
 import { lintGutter, setDiagnostics } from "@codemirror/lint";
 import { Compartment, EditorState } from "@codemirror/state";
 import { EditorView, highlightActiveLine, keymap, lineNumbers } from "@codemirror/view";
 import { useEffect, useRef } from "react";
 import type { Diagnostic } from "../generated/api";
+import { stBlocks } from "./blocks";
 import { setBreakpointLines, setHaltedLine, stDebugging } from "./breakpoints";
-import { stCompletionSource } from "./completion";
+import { stCompletionSource, type StCompletions } from "./completion";
+import { setInlineMarks, stInlineValues, type InlineMark, type StOnlineView } from "./inlineValues";
 import { stLanguage } from "./language";
 import { lintDiagnostics } from "./lint";
 
@@ -20,19 +23,23 @@ export interface StEditorProps {
   /** Which text the diagnostics must name in `file` (e.g. "Main/body"). */
   file: string;
   diagnostics: Diagnostic[];
-  completions: Completion[];
+  completions: StCompletions;
   /** A reason the text cannot be edited now (online), or null. */
   readOnly: string | null;
   label: string;
   /** Debugging (the body only): breakpoint lines, the halted line, and a gutter click. */
   debug?: { breakpoints: readonly number[]; halted: number | null; onToggle(line: number): void };
+  /** Online (the body only): values shown after their variables (none when hidden), hover and right-click. */
+  online?: StOnlineView & { marks: readonly InlineMark[] };
 }
 
-export function StEditor({ text, onChange, file, diagnostics, completions, readOnly, label, debug }: StEditorProps) {
+const NO_MARKS: readonly InlineMark[] = [];
+
+export function StEditor({ text, onChange, file, diagnostics, completions, readOnly, label, debug, online }: StEditorProps) {
   const host = useRef<HTMLDivElement>(null);
   const view = useRef<EditorView | null>(null);
-  const latest = useRef({ onChange, completions, debug });
-  latest.current = { onChange, completions, debug };
+  const latest = useRef({ onChange, completions, debug, online });
+  latest.current = { onChange, completions, debug, online };
   const editable = useRef(new Compartment());
 
   useEffect(() => {
@@ -48,11 +55,15 @@ export function StEditor({ text, onChange, file, diagnostics, completions, readO
           bracketMatching(),
           closeBrackets(),
           stLanguage,
+          stBlocks,
+          codeFolding(),
+          foldGutter(),
           syntaxHighlighting(defaultHighlightStyle),
           autocompletion({ override: [stCompletionSource(() => latest.current.completions)] }),
           lintGutter(),
           debug ? stDebugging((line) => latest.current.debug?.onToggle(line)) : [],
-          keymap.of([...closeBracketsKeymap, ...defaultKeymap, ...historyKeymap, ...completionKeymap, indentWithTab]),
+          stInlineValues(() => latest.current.online),
+          keymap.of([...closeBracketsKeymap, ...defaultKeymap, ...historyKeymap, ...foldKeymap, ...completionKeymap, indentWithTab]),
           editable.current.of(EditorState.readOnly.of(readOnly !== null)),
           EditorView.contentAttributes.of({ "aria-label": label }),
           EditorView.theme({ "&": { height: "100%" }, ".cm-scroller": { overflow: "auto", fontFamily: "ui-monospace, monospace" } }),
@@ -77,9 +88,21 @@ export function StEditor({ text, onChange, file, diagnostics, completions, readO
 
   const breakpoints = debug?.breakpoints;
   const halted = debug?.halted ?? null;
+  const debugging = debug !== undefined;
   useEffect(() => {
-    if (breakpoints) view.current?.dispatch({ effects: [setBreakpointLines.of(breakpoints), setHaltedLine.of(halted)] });
-  }, [breakpoints, halted]);
+    if (breakpoints) view.current?.dispatch({ effects: [setBreakpointLines.of(breakpoints)] });
+  }, [breakpoints]);
+  useEffect(() => {
+    const v = view.current;
+    if (!v || !debugging) return;
+    const line = halted !== null && halted >= 1 && halted <= v.state.doc.lines ? v.state.doc.line(halted) : null;
+    v.dispatch({ effects: [setHaltedLine.of(halted), ...(line ? [EditorView.scrollIntoView(line.from, { y: "center" })] : [])] });
+  }, [halted, debugging]);
+
+  const marks = online?.marks ?? NO_MARKS;
+  useEffect(() => {
+    view.current?.dispatch({ effects: setInlineMarks.of(marks) });
+  }, [marks]);
 
   useEffect(() => {
     view.current?.dispatch({ effects: editable.current.reconfigure(EditorState.readOnly.of(readOnly !== null)) });

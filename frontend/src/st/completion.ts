@@ -1,8 +1,10 @@
 // Autocomplete for ST: the POU's variables and the globals (from the symbols endpoint), standard
 // and user functions and FB types (from /api/library). Calls insert a formal-parameter template
 // (`TON1(IN := , PT := , Q => , ET => );`); an FB instance variable offers the call of its type.
+// After `inst.` or `s.` it offers the members of that variable's type (FB pins, struct fields).
 import type { Completion, CompletionContext, CompletionResult } from "@codemirror/autocomplete";
 import type { LibraryEntry, SymbolInfo } from "../generated/api";
+import { membersOf, typeOfChain, type Scope } from "./members";
 
 /** The formal call of `entry` by `callee` (a function name or an FB instance). */
 export function callTemplate(callee: string, entry: LibraryEntry): string {
@@ -36,11 +38,34 @@ export function stCompletions(symbols: SymbolInfo[], library: LibraryEntry[]): C
   return [...variables, ...functions, ...fbTypes];
 }
 
-/** A CodeMirror completion source over `options()` (read at each request, so it follows the symbols). */
-export function stCompletionSource(options: () => Completion[]) {
+/** The members offered after `chain.` (e.g. ["Timer"] -> IN, PT, Q, ET); null when the chain has no members. */
+export function memberCompletions(chain: readonly string[], scope: Scope): Completion[] | null {
+  const type = typeOfChain(chain, scope);
+  const members = type === null ? null : membersOf(type, scope);
+  // Boosted in declaration order, so the list reads like the FB's interface (inputs first), not alphabetically.
+  return (
+    members?.map((m, i) => ({ label: m.name, type: "property", detail: m.type, info: `${m.kind === "field" ? "field of" : m.kind + " of"} ${type}`, boost: -Math.min(i, 99) })) ?? null
+  );
+}
+
+/** What the editor completes from: the words of the POU and the members of a chain. */
+export interface StCompletions {
+  options: Completion[];
+  members(chain: readonly string[]): Completion[] | null;
+}
+
+/** A CodeMirror completion source over `completions()` (read at each request, so it follows the symbols). */
+export function stCompletionSource(completions: () => StCompletions) {
   return (context: CompletionContext): CompletionResult | null => {
+    const access = context.matchBefore(/[A-Za-z_][A-Za-z0-9_]*(\.[A-Za-z_][A-Za-z0-9_]*)*\.[A-Za-z0-9_]*/);
+    if (access) {
+      const parts = access.text.split(".");
+      const members = completions().members(parts.slice(0, -1));
+      if (!members) return null; // `x.` on something without members: nothing sensible to offer
+      return { from: context.pos - parts[parts.length - 1]!.length, options: members, validFor: /^[A-Za-z0-9_]*$/ };
+    }
     const word = context.matchBefore(/[A-Za-z_][A-Za-z0-9_]*/);
     if (!word && !context.explicit) return null;
-    return { from: word ? word.from : context.pos, options: options(), validFor: /^[A-Za-z0-9_]*$/ };
+    return { from: word ? word.from : context.pos, options: completions().options, validFor: /^[A-Za-z0-9_]*$/ };
   };
 }

@@ -2,7 +2,7 @@
 // ((* *), /* */ and //, block comments span lines), pragmas ({...}), strings, typed and time
 // literals (16#FF, T#5s, INT#3), numbers, keywords, elementary/standard FB types, operators.
 // The token names are CodeMirror's standard tags, so the default highlight style colours them.
-import { StreamLanguage, type StreamParser, type StringStream } from "@codemirror/language";
+import { StreamLanguage, StringStream, type StreamParser } from "@codemirror/language";
 
 const words = (text: string) => new Set(text.split(/\s+/));
 
@@ -78,3 +78,33 @@ export const stParser: StreamParser<StState> = {
 };
 
 export const stLanguage = StreamLanguage.define(stParser);
+
+/** One token of a text: document offsets, its style (null for spaces) and whether a block comment or pragma continues after it. */
+export interface Token {
+  from: number;
+  to: number;
+  style: string | null;
+  text: string;
+  continues: boolean;
+}
+
+/**
+ * Every token of `text`, line by line with the parser state carried over, as the editor's
+ * highlighter sees them; END_* matching, folding and inline values read the same tokens, so a
+ * keyword in a comment or a string is never taken for code.
+ */
+export function tokenize(text: string): Token[] {
+  const state = stParser.startState!(2);
+  const out: Token[] = [];
+  let offset = 0;
+  for (const line of text.split("\n")) {
+    const stream = new StringStream(line, 4, 2);
+    while (!stream.eol()) {
+      stream.start = stream.pos;
+      const style = stParser.token(stream, state);
+      out.push({ from: offset + stream.start, to: offset + stream.pos, style, text: stream.current(), continues: state.open !== null });
+    }
+    offset += line.length + 1;
+  }
+  return out;
+}

@@ -81,7 +81,7 @@ describe("ST autocomplete (issue 9: variables, standard functions with a formal 
   });
 
   it("completes the word before the cursor, and nothing after a space unless asked", () => {
-    const source = stCompletionSource(() => stCompletions([symbol("Start", "BOOL")], [TON]));
+    const source = stCompletionSource(() => ({ options: stCompletions([symbol("Start", "BOOL")], [TON]), members: () => null }));
     const at = (doc: string, explicit = false) => source(new CompletionContext(EditorState.create({ doc }), doc.length, explicit));
     expect(at("x := St")?.from).toBe(5);
     expect(at("x := St")?.options.map((o) => o.label)).toEqual(["Start", "TON"]);

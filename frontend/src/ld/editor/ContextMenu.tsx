@@ -16,7 +16,8 @@ export interface MenuItem {
 export interface ContextMenuProps {
   x: number;
   y: number;
-  ctx: CommandContext;
+  /** The editor's commands are offered for this context; without one, only `extra` (the ST editor's online menu). */
+  ctx?: CommandContext;
   /** Shown first, as their own group. */
   extra?: readonly MenuItem[];
   onClose(): void;
@@ -32,10 +33,10 @@ export function ContextMenu({ x, y, ctx, extra = [], onClose }: ContextMenuProps
     window.addEventListener("mousedown", close);
     return () => window.removeEventListener("mousedown", close);
   }, [onClose]);
-  const groups = GROUP_ORDER.map((group) => COMMANDS.filter((c) => c.group === group && available(c, ctx))).filter((g) => g.length);
+  const groups = ctx ? GROUP_ORDER.map((group) => COMMANDS.filter((c) => c.group === group && available(c, ctx))).filter((g) => g.length) : [];
   const run = (command: Pick<Command, "run">) => {
     onClose();
-    command.run(ctx);
+    command.run(ctx!);
   };
   return (
     <ul

@@ -21,6 +21,7 @@ import { extend, navigate, type Direction } from "./navigation";
 import { OperandEditor } from "./OperandEditor";
 import { setDraggedOperand } from "./dragOperand";
 import { ValuePrompt } from "./ValuePrompt";
+import { onlineOperandItems } from "../../online/operandCommands";
 import "../ld.css";
 
 export interface LdEditorProps {
@@ -488,15 +489,7 @@ export function LdEditor({
         : [];
     const operand = onlineActions && liveSelection?.kind === "elements" ? variableOf(body, liveSelection.ids[0]!) : null;
     if (!onlineActions || !operand) return breakpoint;
-    return [
-      ...breakpoint,
-      { id: "online-write", label: `Write value of ${operand}…`, run: () => setValuePrompt({ operand, action: "write" }) },
-      { id: "online-force-true", label: "Force TRUE", run: () => onlineActions.force(operand, true) },
-      { id: "online-force-false", label: "Force FALSE", run: () => onlineActions.force(operand, false) },
-      { id: "online-force-value", label: "Force value…", run: () => setValuePrompt({ operand, action: "force" }) },
-      { id: "online-release", label: "Release force", run: () => onlineActions.unforce(operand) },
-      { id: "online-watch", label: "Add to watch list", run: () => onlineActions.watch(operand) },
-    ];
+    return [...breakpoint, ...onlineOperandItems(operand, onlineActions, (action) => setValuePrompt({ operand, action }))];
   };
 
   const reveal = selectedNetwork({ body, selection: liveSelection }) ?? null;

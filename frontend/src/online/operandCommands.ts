@@ -1,0 +1,42 @@
+// The online commands on a variable, shared by the LD diagram and the ST editor: toggle, write,
+// force and release go to the online store as simulation paths, and one list of context menu items
+// (the editors render it with the LD context menu and ask for values with ValuePrompt).
+import type { LdOnlineActions } from "../ld/editor/LdEditor";
+import type { MenuItem } from "../ld/editor/ContextMenu";
+import { parseValue, pathKey } from "./monitor";
+import { onlineStore } from "./store";
+
+/** Commands by operand text; `pathOf` names its simulation path (null: nothing to do). */
+export function operandCommands(pathOf: (operand: string) => string | null): LdOnlineActions {
+  const store = () => onlineStore.getState();
+  const on = (operand: string, run: (path: string) => void) => {
+    const p = pathOf(operand);
+    if (p) run(p);
+  };
+  return {
+    toggle: (operand) => on(operand, (p) => store().write(p, store().monitor.values[pathKey(p)] !== true)),
+    write: (operand, text) => on(operand, (p) => store().write(p, parseValue(text))),
+    force: (operand, value) => on(operand, (p) => store().force(p, typeof value === "boolean" ? value : parseValue(value))),
+    unforce: (operand) => on(operand, (p) => store().unforce(p)),
+    watch: (operand) => on(operand, (p) => store().addWatch(p)),
+  };
+}
+
+/**
+ * The context menu items for `operand`; `prompt` asks for the value to write or force. `bool` false
+ * (the type is known and not BOOL) leaves out Force TRUE/FALSE.
+ */
+export function onlineOperandItems(operand: string, commands: LdOnlineActions, prompt: (action: "write" | "force") => void, bool = true): MenuItem[] {
+  return [
+    { id: "online-write", label: `Write value of ${operand}…`, run: () => prompt("write") },
+    ...(bool
+      ? [
+          { id: "online-force-true", label: "Force TRUE", run: () => commands.force(operand, true) },
+          { id: "online-force-false", label: "Force FALSE", run: () => commands.force(operand, false) },
+        ]
+      : []),
+    { id: "online-force-value", label: "Force value…", run: () => prompt("force") },
+    { id: "online-release", label: "Release force", run: () => commands.unforce(operand) },
+    { id: "online-watch", label: "Add to watch list", run: () => commands.watch(operand) },
+  ];
+}

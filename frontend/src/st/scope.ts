@@ -1,0 +1,45 @@
+// The names an ST POU's editor knows while the user types: the POU's own declarations from the
+// working copy when they read as a table (so a variable declared a moment ago completes and shows
+// online before a save), else the saved symbol table; the globals; the library, with the working
+// copy's function blocks in their current form; the STRUCT types.
+import { parseDeclarations } from "../declarations/model";
+import type { LibraryEntry, SymbolInfo, SymbolTable } from "../generated/api";
+import type { Pou } from "../generated/project";
+import { structTypes, type Scope } from "./members";
+
+/** The POU's own symbols from its declaration text, or null when the text does not read as a table. */
+export function declaredSymbols(declarations: string): SymbolInfo[] | null {
+  const parsed = parseDeclarations(declarations);
+  if (!parsed.ok) return null;
+  return parsed.rows.map((r) => ({
+    name: r.name,
+    var_class: r.varClass.split(" ")[0]!,
+    type: r.type,
+    initial: r.initial || null,
+    address: r.address || null,
+    comment: r.comment || null,
+    retain: /\bRETAIN\b/.test(r.varClass),
+    constant: /\bCONSTANT\b/.test(r.varClass),
+  }));
+}
+
+/**
+ * The library with each function block of the working copy described by its current declarations
+ * (an FB created or changed since the last save); an FB whose text does not read as a table keeps
+ * its saved entry.
+ */
+export function workingLibrary(library: readonly LibraryEntry[], pous: readonly Pou[]): LibraryEntry[] {
+  const working = pous.flatMap((pou): LibraryEntry[] => {
+    const symbols = pou.kind === "function_block" ? declaredSymbols(pou.declarations ?? "") : null;
+    if (!symbols) return [];
+    const pins = (varClass: string) => symbols.filter((s) => s.var_class === varClass).map((s) => ({ name: s.name, type: s.type }));
+    return [{ name: pou.name, kind: "function_block", source: "user", inputs: pins("VAR_INPUT"), outputs: pins("VAR_OUTPUT"), in_outs: pins("VAR_IN_OUT"), extensible: false, return_type: null, comment: null }];
+  });
+  const replaced = new Set(working.map((e) => e.name.toUpperCase()));
+  return [...library.filter((e) => !replaced.has(e.name.toUpperCase())), ...working];
+}
+
+export function stScope(table: SymbolTable | undefined, declarations: string, types: string, library: readonly LibraryEntry[]): Scope {
+  const own = declaredSymbols(declarations) ?? table?.symbols ?? [];
+  return { symbols: [...own, ...(table?.globals ?? [])], library, structs: structTypes(types) };
+}

@@ -1,0 +1,25 @@
+// What the ST editor of one POU needs from the workspace while the user types: live diagnostics
+// of the working copy, the completions (variables, functions, FB types, members) and the scope
+// that inline values resolve variables in.
+import { useMemo } from "react";
+import type { Diagnostic } from "../generated/api";
+import type { Pou } from "../generated/project";
+import { useWorkspace } from "../project/store";
+import { memberCompletions, stCompletions, type StCompletions } from "./completion";
+import type { Scope } from "./members";
+import { stScope, workingLibrary } from "./scope";
+import { useLiveCheck } from "./useLiveCheck";
+
+export function useStAssist(pou: Pou): { diagnostics: Diagnostic[]; completions: StCompletions; scope: Scope } {
+  const project = useWorkspace((s) => s.project);
+  const saved = useWorkspace((s) => s.library);
+  const table = useWorkspace((s) => s.symbols[pou.name]);
+  const types = project?.types ?? "";
+  const declarations = pou.declarations ?? "";
+  const pous = project?.pous;
+  const library = useMemo(() => workingLibrary(saved, pous ?? []), [saved, pous]);
+  const diagnostics = useLiveCheck(project);
+  const scope = useMemo(() => stScope(table, declarations, types, library), [table, declarations, types, library]);
+  const completions = useMemo((): StCompletions => ({ options: stCompletions([...scope.symbols], library), members: (chain) => memberCompletions(chain, scope) }), [scope, library]);
+  return { diagnostics, completions, scope };
+}

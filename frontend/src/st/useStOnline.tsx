@@ -1,0 +1,82 @@
+// Connects an ST body to online mode: subscribes the paths of its variable occurrences for the
+// POU's instance (the halted instance while a scan halts in this POU, so values are those of the
+// halt), turns the monitor's values into inline marks and hover text, and offers write / force /
+// release from a right click with the LD editor's menu and value prompt.
+import { useEffect, useMemo, useState, type ReactNode } from "react";
+import type { Pou } from "../generated/project";
+import { ContextMenu } from "../ld/editor/ContextMenu";
+import { ValuePrompt } from "../ld/editor/ValuePrompt";
+import { onlineOperandItems, operandCommands } from "../online/operandCommands";
+import { onlineStore, useOnline } from "../online/store";
+import { instanceOf } from "../online/useLdOnline";
+import { describe, inlineMarks, variableOccurrences, type InlineMark, type Occurrence, type StOnlineView } from "./inlineValues";
+import type { Scope } from "./members";
+
+export interface StOnline {
+  /** A simulation is open. */
+  live: boolean;
+  /** The instance shown, e.g. MAIN or MAIN.COUNTER1; null for a function or an FB with none chosen. */
+  instance: string | null;
+  showValues: boolean;
+  setShowValues(show: boolean): void;
+  view?: StOnlineView & { marks: readonly InlineMark[] };
+  /** The context menu and value prompt, when open. */
+  overlay: ReactNode;
+}
+
+export function useStOnline(pou: Pou, body: string, scope: Scope): StOnline {
+  const phase = useOnline((s) => s.phase);
+  const monitor = useOnline((s) => s.monitor);
+  const chosen = useOnline((s) => s.instances);
+  const [showValues, setShowValues] = useState(true);
+  const [menu, setMenu] = useState<{ occurrence: Occurrence; x: number; y: number } | null>(null);
+  const [prompt, setPrompt] = useState<{ occurrence: Occurrence; action: "write" | "force" } | null>(null);
+  const live = phase !== "offline";
+  const at = monitor.state === "halted" ? monitor.at : null;
+  const haltedHere = at?.instance && at.pou.toUpperCase() === pou.name.toUpperCase() ? at.instance.toUpperCase() : null;
+  const instance = haltedHere ?? instanceOf(pou, chosen);
+  const key = `st:${pou.name}`;
+
+  const occurrences = useMemo(() => (live && instance ? variableOccurrences(body, scope, instance) : []), [live, instance, body, scope]);
+  const paths = useMemo(() => [...new Set(occurrences.map((o) => o.path))], [occurrences]);
+  useEffect(() => {
+    onlineStore.getState().subscribe(key, live && paths.length ? { paths, elements: [] } : null);
+  }, [key, live, paths]);
+  useEffect(() => () => onlineStore.getState().subscribe(key, null), [key]);
+
+  const commands = useMemo(() => operandCommands((text) => occurrences.find((o) => o.text === text)?.path ?? null), [occurrences]);
+  const { values, forced } = monitor;
+  const marks = useMemo(() => (showValues ? inlineMarks(occurrences, values, forced) : []), [showValues, occurrences, values, forced]);
+  const view = useMemo(
+    () => (live && instance ? { occurrences, marks, describe: (o: Occurrence) => describe(o, values, forced), onMenu: (occurrence: Occurrence, x: number, y: number) => setMenu({ occurrence, x, y }) } : undefined),
+    [live, instance, occurrences, marks, values, forced],
+  );
+
+  const overlay = (
+    <>
+      {menu && view ? (
+        // The menu is placed at the click's viewport coordinates.
+        <div style={{ position: "fixed", left: 0, top: 0, zIndex: 30 }}>
+          <ContextMenu
+          x={menu.x}
+          y={menu.y}
+          extra={onlineOperandItems(menu.occurrence.text, commands, (action) => setPrompt({ occurrence: menu.occurrence, action }), menu.occurrence.type.toUpperCase() === "BOOL")}
+          onClose={() => setMenu(null)}
+          />
+        </div>
+      ) : null}
+      {prompt && view ? (
+        <ValuePrompt
+          title={`${prompt.action === "write" ? "Write" : "Force"} ${prompt.occurrence.text}`}
+          onSubmit={(text) => {
+            setPrompt(null);
+            if (prompt.action === "write") commands.write(prompt.occurrence.text, text);
+            else commands.force(prompt.occurrence.text, text);
+          }}
+          onCancel={() => setPrompt(null)}
+        />
+      ) : null}
+    </>
+  );
+  return { live, instance, showValues, setShowValues, view, overlay };
+}
