@@ -4,8 +4,8 @@ Create an FBD program and build ``result := (var1 + var2) - var3``: drag input, 
 output nodes from the palette onto the network, pick ADD and SUB in the block picker, declare
 the variables through the editor's offer, wire the pins with the mouse (a second wire into an
 occupied input is refused with the reason), save, compile and run, write var1..var3 from the
-input nodes' context menus and read the result on the wire into the output node. Screenshots go
-to tests/browser/artifacts/.
+input nodes' context menus, read the result on the wire into the output node, and halt at a
+breakpoint on the network and on the SUB block. Screenshots go to tests/browser/artifacts/.
 """
 
 from __future__ import annotations
@@ -122,3 +122,18 @@ def test_new_user_builds_and_runs_an_fbd_calculation(page, server):
     into_add = editor.locator('.react-flow__edge[data-id="in1.OUT->blk1.IN1"] .react-flow__edge-text')
     assert into_add.text_content() == "7"
     page.screenshot(path=str(ARTIFACTS / "fbd-online.png"))
+
+    # Breakpoints: on the network (its number), then on the SUB block (Alt+click); each halts the scan there.
+    editor.get_by_role("button", name="1", exact=True).click()
+    state.filter(has_text="halted").wait_for()
+    editor.locator('.fbd-network.fbd-network-halted[data-network="n1"]').wait_for()
+    editor.get_by_role("button", name="1", exact=True).click()
+    page.get_by_role("button", name="Continue").click()
+    state.filter(has_text="running").wait_for()
+    editor.locator('.fbd-node[data-node="blk2"]').click(modifiers=["Alt"])
+    editor.locator('.fbd-node[data-node="blk2"] .fbd-breakpoint').wait_for()
+    editor.locator('.fbd-node.fbd-halted[data-node="blk2"]').wait_for()
+    page.screenshot(path=str(ARTIFACTS / "fbd-halted.png"))
+    editor.locator('.fbd-node[data-node="blk2"]').click(modifiers=["Alt"])
+    page.get_by_role("button", name="Continue").click()
+    state.filter(has_text="running").wait_for()

@@ -9,6 +9,7 @@ import { useOnline } from "../online/store";
 import { usePanels } from "../panels/store";
 import { diagramDiagnostics, symbolsOf, useWorkspace } from "../project/store";
 import { FbdEditor, type FbdDebug } from "./editor/FbdEditor";
+import { nodeOfProbe } from "./online";
 import { useFbdOnline } from "./useFbdOnline";
 
 const NO_DIAGNOSTICS: Diagnostic[] = [];
@@ -25,7 +26,8 @@ export function FbdPouView({ pou, history, onlineActions }: { pou: Pou; history:
   const diagnostics = useMemo(() => diagramDiagnostics(table, checked, name), [table, checked, name]);
   const byName = useMemo(() => new Map(library.map((e) => [e.name.toUpperCase(), e])), [library]);
   const lookup = useCallback((call: string) => byName.get(call.toUpperCase()), [byName]);
-  const live = useFbdOnline(pou, history.present, lookup, symbols);
+  const body = history.present;
+  const live = useFbdOnline(pou, body, lookup, symbols);
 
   const breakpoints = useDebug((s) => s.breakpoints);
   const at = useOnline((s) => (s.monitor.state === "halted" ? s.monitor.at : null));
@@ -35,10 +37,10 @@ export function FbdPouView({ pou, history, onlineActions }: { pou: Pou; history:
     return {
       networks: new Set(mine.flatMap((b) => ("network" in b ? [b.network] : []))),
       elements: new Set(mine.flatMap((b) => ("element" in b ? [b.element] : []))),
-      halted: at && at.pou.toUpperCase() === upper ? { network: at.network, element: at.element } : null,
+      halted: at && at.pou.toUpperCase() === upper ? { network: at.network, element: at.element ? nodeOfProbe(body, at.element) : null } : null,
       toggle: (bp) => debugStore.getState().toggle({ pou: name, ...bp }),
     };
-  }, [breakpoints, at, upper, name]);
+  }, [breakpoints, at, upper, name, body]);
 
   return (
     <FbdEditor

@@ -6,7 +6,7 @@ import type { SymbolInfo } from "../generated/api";
 import { operandPath } from "../online/ldBinding";
 import { powerKey, type MonitorState } from "../online/monitor";
 import type { ElementSubscription, PowerState } from "../online/protocol";
-import { kindOf, networksOf, nodePins, nodesOf, wiresOf, type FbdBody, type FbdNetwork, type Lookup, type PinRef } from "./model";
+import { findNode, kindOf, networksOf, nodePins, nodesOf, wiresOf, type FbdBody, type FbdNetwork, type Lookup, type PinRef } from "./model";
 
 /** The variable operand of a node (an input's expression, an output's variable), if it has one. */
 export function operandOf(node: ReturnType<typeof nodesOf>[number]): string | null {
@@ -34,6 +34,13 @@ export function probeOf(network: FbdNetwork, ref: PinRef, seen = new Set<string>
     default:
       return null;
   }
+}
+
+/** The node a probe id belongs to (`blk2.OUT` -> `blk2`; a halt names the probe it stopped at). */
+export function nodeOfProbe(body: FbdBody, probe: string): string {
+  if (findNode(body, probe)) return probe;
+  const dot = probe.lastIndexOf(".");
+  return dot > 0 && findNode(body, probe.slice(0, dot)) ? probe.slice(0, dot) : probe;
 }
 
 export interface FbdBinding {
