@@ -56,6 +56,7 @@ export function FbdPouView({ pou, history, onlineActions }: { pou: Pou; history:
       onlineActions={live.actions}
       onDeclareVariable={(d) => declare(name, d)}
       debug={debug}
+      onVisibleChange={live.onVisibleChange}
       focus={focus}
     />
   );

@@ -1,7 +1,7 @@
 // Connects the FBD editor to online mode, as useLdOnline does for LD: subscribes the probes and
 // variables of the POU's instance, turns the monitor into the diagram's online view, and offers
 // the operand commands (write, force, release, watch) on simulation paths.
-import { useEffect, useMemo } from "react";
+import { useCallback, useEffect, useMemo, useState } from "react";
 import type { SymbolInfo } from "../generated/api";
 import type { Pou } from "../generated/project";
 import type { LdOnlineActions } from "../ld/editor/LdEditor";
@@ -14,6 +14,7 @@ export interface FbdOnline {
   online?: FbdOnlineView;
   readOnly: string | null;
   actions?: LdOnlineActions;
+  onVisibleChange(networks: readonly string[]): void;
 }
 
 export function useFbdOnline(pou: Pou, body: FbdBody, lookup: Lookup, symbols: readonly SymbolInfo[]): FbdOnline {
@@ -24,7 +25,9 @@ export function useFbdOnline(pou: Pou, body: FbdBody, lookup: Lookup, symbols: r
   const key = `fbd:${pou.name}`;
   const live = phase !== "offline";
 
-  const binding = useMemo(() => (instance ? bindFbd(body, instance, lookup, symbols) : null), [body, instance, lookup, symbols]);
+  const [visible, setVisible] = useState<ReadonlySet<string> | null>(null);
+  const onVisibleChange = useCallback((networks: readonly string[]) => setVisible(new Set(networks)), []);
+  const binding = useMemo(() => (instance ? bindFbd(body, instance, lookup, symbols, visible ?? undefined) : null), [body, instance, lookup, symbols, visible]);
   useEffect(() => {
     onlineStore.getState().subscribe(key, live && binding ? { paths: binding.paths, elements: binding.elements } : null);
   }, [key, live, binding]);
@@ -32,5 +35,5 @@ export function useFbdOnline(pou: Pou, body: FbdBody, lookup: Lookup, symbols: r
 
   const online = useMemo(() => (live && binding ? fbdOnlineView(monitor, binding) : undefined), [live, binding, monitor]);
   const actions = useMemo(() => (live && instance ? operandActions(instance, symbols) : undefined), [live, instance, symbols]);
-  return { online, readOnly: onlineReadOnly(pou, live, instance), actions };
+  return { online, readOnly: onlineReadOnly(pou, live, instance), actions, onVisibleChange };
 }

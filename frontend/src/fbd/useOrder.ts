@@ -10,15 +10,15 @@ export const ORDER_DEBOUNCE_MS = 250;
 export const fetchOrder = (network: FbdNetwork): Promise<FbdOrder> =>
   requestJson<FbdOrder>("/api/fbd/order", { method: "POST", headers: { "Content-Type": "application/json" }, body: JSON.stringify(network) });
 
-/** Network id -> node ids in execution order (missing until the server has answered). */
-export function useEvaluationOrder(body: FbdBody, fetcher: (network: FbdNetwork) => Promise<FbdOrder> = fetchOrder): ReadonlyMap<string, readonly string[]> {
+/** Network id -> node ids in execution order, for the networks in `only` (missing until the server has answered). */
+export function useEvaluationOrder(body: FbdBody, fetcher: (network: FbdNetwork) => Promise<FbdOrder> = fetchOrder, only?: ReadonlySet<string>): ReadonlyMap<string, readonly string[]> {
   const [orders, setOrders] = useState<ReadonlyMap<string, readonly string[]>>(new Map());
   // Content text -> its order, so undo and switching back cost no request.
   const cache = useRef(new Map<string, readonly string[]>());
   useEffect(() => {
     let cancelled = false;
     const timer = setTimeout(() => {
-      const networks = networksOf(body);
+      const networks = networksOf(body).filter((n) => !only || only.has(n.id));
       void Promise.all(
         networks.map(async (network): Promise<[string, readonly string[] | null]> => {
           const key = JSON.stringify(network);
@@ -40,6 +40,6 @@ export function useEvaluationOrder(body: FbdBody, fetcher: (network: FbdNetwork)
       cancelled = true;
       clearTimeout(timer);
     };
-  }, [body, fetcher]);
+  }, [body, fetcher, only]);
   return orders;
 }

@@ -51,6 +51,8 @@ export interface FbdEditorProps {
   onlineActions?: LdOnlineActions;
   debug?: FbdDebug;
   focus?: { network?: string | null; element?: string | null; seq: number } | null;
+  /** Told which networks are near the viewport, so online mode subscribes only to those. */
+  onVisibleChange?(networks: readonly string[]): void;
   /** POST /api/fbd/order (replaced in tests). */
   orderOf?(network: FbdNetwork): Promise<FbdOrder>;
 }
@@ -96,6 +98,7 @@ export function FbdEditor({
   debug,
   focus,
   orderOf = fetchOrder,
+  onVisibleChange,
 }: FbdEditorProps) {
   const body = history.present;
   const root = useRef<HTMLDivElement>(null);
@@ -112,7 +115,18 @@ export function FbdEditor({
   const byName = useMemo(() => new Map(library.map((e) => [e.name.toUpperCase(), e])), [library]);
   const lookup = useCallback((call: string) => byName.get(call.toUpperCase()), [byName]);
   const known = useMemo(() => symbolNames(symbols), [symbols]);
-  const orders = useEvaluationOrder(body, orderOf);
+  const [near, setNear] = useState<ReadonlySet<string>>(new Set());
+  const onNear = useCallback((network: string, isNear: boolean) => {
+    setNear((current) => {
+      if (current.has(network) === isNear) return current;
+      const next = new Set(current);
+      if (isNear) next.add(network);
+      else next.delete(network);
+      return next;
+    });
+  }, []);
+  useEffect(() => onVisibleChange?.([...near]), [near, onVisibleChange]);
+  const orders = useEvaluationOrder(body, orderOf, near);
   const networks = networksOf(body);
   const locked = readOnly !== null;
 
@@ -567,6 +581,7 @@ export function FbdEditor({
               onRefused={setMessage}
               onDropNew={(id, kind, pos) => paletteAdd(kind as PaletteKind, id, { x: Math.round(pos.x), y: Math.round(pos.y) })}
               onNodeContextMenu={nodeMenu}
+              onNear={onNear}
               onNodeClick={(_id, node, event) => {
                 if (event.altKey && debug) debug.toggle({ element: node.id });
               }}

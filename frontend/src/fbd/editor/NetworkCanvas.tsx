@@ -47,6 +47,8 @@ export interface NetworkCanvasProps {
   onDropNew(network: string, kind: string, pos: Position): void;
   onNodeContextMenu(network: string, node: FbdNode, event: MouseEvent): void;
   onNodeClick(network: string, node: FbdNode, event: MouseEvent): void;
+  /** Told when the network comes near the viewport or leaves it (only those are online and get order badges). */
+  onNear(network: string, near: boolean): void;
 }
 
 /** The canvas height that shows every node of the network at zoom 1. */
@@ -196,6 +198,9 @@ function useNearViewport(): [React.RefObject<HTMLDivElement | null>, boolean] {
 export function NetworkCanvas(props: NetworkCanvasProps) {
   const { network, index } = props;
   const [ref, near] = useNearViewport();
+  const { onNear } = props;
+  useEffect(() => onNear(network.id, near), [onNear, network.id, near]);
+  useEffect(() => () => onNear(network.id, false), [onNear, network.id]);
   const height = canvasHeight(network, props.fallback, props.height);
   const classes = ["fbd-network", props.networkSelected ? "fbd-network-selected" : "", props.halted ? "fbd-network-halted" : ""].filter(Boolean).join(" ");
   return (
