@@ -82,8 +82,13 @@ def test_new_user_builds_and_runs_an_fbd_calculation(page, server):
                      ("in3", ("blk2", "in:IN2")), ("blk2", ("out1", "in:IN"))):
         drag_to(page, handle(page, src, "out:OUT"), handle(page, *dst))
     assert editor.locator(".react-flow__edge").count() == 5
-    # A second wire into SUB.IN1 is refused, with the reason.
-    drag_to(page, handle(page, "in3", "out:OUT"), handle(page, "blk2", "in:IN1"))
+    # A second wire into SUB.IN1 is refused, with the reason: as a tooltip while dragging, then as a message.
+    handle(page, "in3", "out:OUT").hover()
+    page.mouse.down()
+    box = handle(page, "blk2", "in:IN1").bounding_box()
+    page.mouse.move(box["x"] + box["width"] / 2, box["y"] + box["height"] / 2, steps=8)
+    expect(editor.get_by_role("tooltip")).to_contain_text("Input IN1 of blk2 is already wired from blk1.OUT")
+    page.mouse.up()
     assert editor.get_by_role("alert").inner_text().startswith("Input IN1 of blk2 is already wired from blk1.OUT")
     assert editor.locator(".react-flow__edge").count() == 5
 

@@ -70,12 +70,15 @@ function Badges({ view }: { view: NodeView }) {
   );
 }
 
+/** Node kinds whose text names a variable (the others name labels and connectors: no variable suggestions). */
+const NAMES_VARIABLE = new Set(["input", "output", "block"]);
+
 function TextField({ node, text, placeholder, label }: { node: FbdNode; text: string; placeholder: string; label: string }) {
   const api = useFbdEditor();
   if (api.editing === node.id) {
     return (
       <div className="nodrag nopan nowheel fbd-text-editor">
-        <OperandEditor label={label} initial={text} suggestions={api.symbols} onCommit={(t) => api.commitEdit(node.id, t)} onCancel={api.cancelEdit} />
+        <OperandEditor label={label} initial={text} suggestions={NAMES_VARIABLE.has(kindOf(node)) ? api.symbols : []} onCommit={(t) => api.commitEdit(node.id, t)} onCancel={api.cancelEdit} />
       </div>
     );
   }

@@ -1,7 +1,7 @@
 // One FBD network: its header (number - click for a breakpoint -, label, comment, network-level
 // problems) and its own xyflow canvas (pan, zoom, handles, edges from the library). Canvases of
 // networks far outside the viewport are not mounted, so large POUs stay usable.
-import { Background, Controls, MarkerType, ReactFlow, ReactFlowProvider, useReactFlow, type Connection, type Edge, type EdgeChange, type NodeChange } from "@xyflow/react";
+import { Background, Controls, MarkerType, ReactFlow, ReactFlowProvider, useConnection, useReactFlow, ViewportPortal, type Connection, type Edge, type EdgeChange, type NodeChange } from "@xyflow/react";
 import { useEffect, useMemo, useRef, useState, type DragEvent, type MouseEvent, type ReactNode } from "react";
 import type { Diagnostic } from "../../generated/api";
 import { formatValue } from "../../online/monitor";
@@ -61,6 +61,22 @@ function wireClass(value: unknown): string {
   if (value === true) return "fbd-wire fbd-wire-on";
   if (value === false) return "fbd-wire fbd-wire-off";
   return "fbd-wire";
+}
+
+/** While a wire is dragged over a pin it may not connect to, the reason next to the pointer. */
+function ConnectionHint({ refusal }: { refusal(c: Connection): string | null }) {
+  const connection = useConnection();
+  if (!connection.inProgress || !connection.toHandle || connection.isValid !== false) return null;
+  const [from, to] = connection.fromHandle.type === "source" ? [connection.fromHandle, connection.toHandle] : [connection.toHandle, connection.fromHandle];
+  const why = refusal({ source: from.nodeId, sourceHandle: from.id ?? null, target: to.nodeId, targetHandle: to.id ?? null });
+  if (!why) return null;
+  return (
+    <ViewportPortal>
+      <div className="fbd-connection-hint" role="tooltip" style={{ transform: `translate(${connection.to.x + 14}px, ${connection.to.y + 14}px)` }}>
+        {why}
+      </div>
+    </ViewportPortal>
+  );
 }
 
 function Canvas(props: NetworkCanvasProps) {
@@ -176,6 +192,7 @@ function Canvas(props: NetworkCanvasProps) {
         proOptions={{ hideAttribution: true }}
       >
         <Background gap={20} size={1} />
+        <ConnectionHint refusal={(c) => props.refusal(network.id, c)} />
         <Controls showInteractive={false} position="bottom-right" />
       </ReactFlow>
     </div>
