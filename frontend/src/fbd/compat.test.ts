@@ -69,7 +69,7 @@ describe("refusal of a wire", () => {
     expect(refusal(net(), { from: { node: "f", pin: "OUT" }, to: { node: "and", pin: "IN1" } }, lookup, SYMBOLS)).toBeNull();
   });
 
-  it("refuses a second wire into an occupied input (no wired OR)", () => {
+  it("refuses a second wire into an occupied input (GR-30: no wired OR)", () => {
     expect(refusal(net(), { from: { node: "c", pin: "OUT" }, to: { node: "add", pin: "IN1" } }, lookup, SYMBOLS)).toBe(
       "Input IN1 of add is already wired from a.OUT: FBD has no wired OR (use an OR block), delete that wire first.",
     );

@@ -49,6 +49,9 @@ describe("FBD editor", () => {
     expect(nodesOf(t.current().networks![0]!).at(-1)).toMatchObject({ type: "input", id: "in1", expr: "speed" });
     expect(screen.getByRole("button", { name: "Declare speed" })).toBeTruthy();
     expect((screen.getByLabelText("Type of the new variable") as HTMLInputElement).value).toBe("BOOL");
+    // Double-clicking a node's text edits it again.
+    fireEvent.doubleClick(t.node("a").querySelector(".fbd-text")!);
+    expect(t.node("a").querySelector<HTMLInputElement>('input[aria-label="Input operand"]')!.value).toBe("var1");
   });
 
   it("adds an input to ADD and negates a pin from the context menus; Ctrl+Z undoes", () => {
@@ -65,7 +68,7 @@ describe("FBD editor", () => {
     expect((nodesOf(t.current().networks![0]!).find((n) => n.id === "add") as Block).pins).toBeUndefined();
   });
 
-  it("refuses to run a node before the block feeding it, with the reason", async () => {
+  it("refuses to run a node before the block feeding it, with the reason (GR-06 b, GR-31)", async () => {
     const t = setup(bodyOf(arithmetic()));
     await waitFor(() => expect(t.node("sub").querySelector(".fbd-order")).toBeTruthy());
     fireEvent.contextMenu(t.node("sub"));
@@ -73,13 +76,17 @@ describe("FBD editor", () => {
     expect(screen.getByRole("alert").textContent).toContain("add feeds sub: data flow makes add run first.");
   });
 
-  it("online: shows node values, dims skipped blocks and offers write/force", () => {
+  it("online (ON-06..09): shows node values, dims skipped blocks, toggles a BOOL on double-click, writes from the menu", () => {
     const write = vi.fn();
-    const t = setup(bodyOf(arithmetic()), {
+    const toggle = vi.fn();
+    const network = arithmetic();
+    const t = setup(bodyOf({ ...network, nodes: [...(network.nodes ?? []), { type: "input", id: "f", expr: "flag", pos: { x: 0, y: 200 } }] }), {
       readOnly: "Online",
-      online: { probes: { a: 7, "add.OUT": null, "sub.OUT": 3, r: 3 }, forced: new Set(["VAR1"]) },
-      onlineActions: { write, toggle: vi.fn(), force: vi.fn(), unforce: vi.fn(), watch: vi.fn() },
+      online: { probes: { a: 7, "add.OUT": null, "sub.OUT": 3, r: 3, f: true }, forced: new Set(["VAR1"]) },
+      onlineActions: { write, toggle, force: vi.fn(), unforce: vi.fn(), watch: vi.fn() },
     });
+    fireEvent.doubleClick(t.node("f").querySelector(".fbd-text")!);
+    expect(toggle).toHaveBeenCalledWith("flag");
     expect(screen.getByTestId("value-a").textContent).toBe("7");
     expect(t.node("add").classList.contains("fbd-skipped")).toBe(true);
     expect(t.node("sub").classList.contains("fbd-skipped")).toBe(false);

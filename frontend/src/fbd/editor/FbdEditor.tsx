@@ -382,6 +382,12 @@ export function FbdEditor({
       root.current?.focus();
     },
     pinMenu,
+    valueDoubleClick: (node) => {
+      const operand = operandOf(node);
+      if (!onlineActions || !operand) return;
+      if (typeof online?.probes[node.id] === "boolean") onlineActions.toggle(operand);
+      else setValuePrompt({ operand, action: "write" });
+    },
   };
 
   const onSelectChanges = useCallback((network: string, nodes: readonly { id: string; selected: boolean }[], edges: readonly { id: string; selected: boolean }[]) => {

@@ -83,7 +83,7 @@ function TextField({ node, text, placeholder, label }: { node: FbdNode; text: st
     );
   }
   return (
-    <span className={`fbd-text${text ? "" : " fbd-placeholder"}`} onDoubleClick={() => !api.readOnly && api.startEdit(node.id)}>
+    <span className={`fbd-text${text ? "" : " fbd-placeholder"}`} onDoubleClick={() => (api.online ? api.valueDoubleClick(node) : !api.readOnly && api.startEdit(node.id))}>
       {text || placeholder}
     </span>
   );

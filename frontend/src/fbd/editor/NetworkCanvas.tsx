@@ -185,6 +185,7 @@ function Canvas(props: NetworkCanvasProps) {
         selectionKeyCode={null}
         multiSelectionKeyCode="Shift"
         zoomOnScroll={false}
+        zoomOnDoubleClick={false}
         preventScrolling={false}
         zoomActivationKeyCode="Control"
         minZoom={0.25}

@@ -27,6 +27,8 @@ export interface FbdEditorApi {
   commitEdit(id: string, text: string): void;
   cancelEdit(): void;
   pinMenu(node: FbdNode, pin: string, side: "in" | "out", event: MouseEvent): void;
+  /** Online double-click on a variable node (ON-08): a BOOL toggles, any other value opens the write dialog. */
+  valueDoubleClick(node: FbdNode): void;
 }
 
 export const FbdEditorContext = createContext<FbdEditorApi | null>(null);
