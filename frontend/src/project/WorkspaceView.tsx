@@ -1,5 +1,5 @@
 // The open project: project tree (POUs by kind with their language, types, globals, tasks), tabs
-// of open POUs with unsaved marks, the LD editor for LD POUs (online when a simulation runs), the
+// of open POUs with unsaved marks, the LD and FBD editors (online when a simulation runs), the
 // simulation toolbar, the bottom panels, Save (Ctrl+S) and the dialog for a save conflict (reload
 // theirs or overwrite deliberately).
 import { useCallback, useEffect, useMemo, useState, type FormEvent } from "react";
@@ -181,7 +181,6 @@ const NO_DIAGNOSTICS: Diagnostic[] = [];
 
 /** A POU by an IEC name in any case (the simulation reports halts with the compiled spelling). */
 const pouNamed = (project: Project | null, name: string) => project?.pous?.find((p) => p.name.toUpperCase() === name.toUpperCase());
-
 
 /** Which instance of a function block the online diagram shows (a path such as MAIN.BLINK). */
 function InstancePicker({ pou }: { pou: string }) {
