@@ -100,4 +100,34 @@ describe("FBD editor", () => {
     expect(write).toHaveBeenCalledWith("var1", "42");
     expect(screen.queryByRole("menuitem", { name: "Delete" })).toBeNull();
   });
+
+  it("marks a diagnostic on its node and pin, and a network's own problem in its header", () => {
+    const at = { pou: "Main", network: "n1", file: null, line: null, column: null, end_line: null, end_column: null, severity: "error" as const };
+    const t = setup(bodyOf(arithmetic()), {
+      diagnostics: [
+        { ...at, element: "add", pin: "IN2", code: "ST-TYPE-MISMATCH", message: "IN2 expects ANY_NUM, got BOOL" },
+        { ...at, element: null, pin: null, code: "FBD-DUPLICATE-LABEL", message: "label L1 is used twice" },
+      ],
+    });
+    expect(t.node("add").classList.contains("fbd-error")).toBe(true);
+    const pin = t.node("add").querySelector('[data-pin="IN2"]')!;
+    expect(pin.classList.contains("fbd-pin-error")).toBe(true);
+    expect(pin.getAttribute("title")).toBe("ST-TYPE-MISMATCH: IN2 expects ANY_NUM, got BOOL");
+    expect(t.node("sub").classList.contains("fbd-error")).toBe(false);
+    expect(screen.getByRole("note").textContent).toBe("FBD-DUPLICATE-LABEL: label L1 is used twice");
+  });
+
+  it("cuts a node to the system clipboard and pastes it back, as the same node", () => {
+    const t = setup(bodyOf(arithmetic()));
+    fireEvent.contextMenu(t.node("add")); // selects it
+    const data = new Map<string, string>();
+    const cb = { setData: (type: string, text: string) => data.set(type, text), getData: (type: string) => data.get(type) ?? "" };
+    fireEvent.cut(t.editor, { clipboardData: cb });
+    expect(JSON.parse(data.get("text/plain")!)).toMatchObject({ format: "ladderlab/fbd-clip", nodes: [{ id: "add", call: "ADD" }] });
+    expect(nodesOf(t.current().networks![0]!).map((n) => n.id)).toEqual(["a", "b", "c", "sub", "r"]);
+    fireEvent.paste(t.editor, { clipboardData: cb });
+    expect(nodesOf(t.current().networks![0]!).map((n) => n.id)).toEqual(["a", "b", "c", "sub", "r", "add"]);
+    fireEvent.paste(t.editor, { clipboardData: { getData: () => "hello" } });
+    expect(screen.getByRole("alert").textContent).toContain("The clipboard holds no LadderLab FBD nodes.");
+  });
 });
