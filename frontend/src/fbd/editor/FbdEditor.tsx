@@ -581,7 +581,13 @@ export function FbdEditor({
               }}
               onToggleBreakpoint={(id) => debug?.toggle({ network: id })}
               onEditText={(id, field) => !locked && setNetworkText({ network: id, field })}
-              onMove={(_id, positions) => !locked && apply(ops.moveNodes(body, positions))}
+              onMove={(_id, positions) => {
+                const moved = [...positions].some(([id, p]) => {
+                  const old = findNode(body, id)?.node.pos;
+                  return !old || old.x !== p.x || old.y !== p.y;
+                });
+                if (moved && !locked) apply(ops.moveNodes(body, positions));
+              }}
               onConnect={onConnect}
               refusal={refusalOf}
               onRefused={setMessage}
