@@ -2,7 +2,7 @@
 
 Create an FBD program and build ``result := (var1 + var2) - var3``: drag input, block and
 output nodes from the palette onto the network, pick ADD and SUB in the block picker, declare
-the variables through the editor's offer, wire the pins with the mouse (a second wire into an
+the variables through the editor's offer, move a node by dragging it, wire the pins with the mouse (a second wire into an
 occupied input is refused with the reason), save, compile and run, write var1..var3 from the
 input nodes' context menus, read the result on the wire into the output node, and halt at a
 breakpoint on the network and on the SUB block. Screenshots go to tests/browser/artifacts/.
@@ -77,6 +77,15 @@ def test_new_user_builds_and_runs_an_fbd_calculation(page, server):
     assert [(k, v.split("\n")[-1].strip()) for k, v in nodes.items() if k.startswith(("in", "out"))] == [
         ("in1", "var1"), ("in2", "var2"), ("in3", "var3"), ("out1", "result")]
 
+    # Move the output node right by dragging it (its position is a layout hint in the model).
+    result_box = editor.locator('.fbd-node[data-node="out1"] .fbd-text').bounding_box()
+    page.mouse.move(result_box["x"] + 5, result_box["y"] + 5)
+    page.mouse.down()
+    page.mouse.move(result_box["x"] + 65, result_box["y"] + 5, steps=6)
+    page.mouse.up()
+    shift = editor.locator('.fbd-node[data-node="out1"] .fbd-text').bounding_box()["x"] - result_box["x"]
+    assert shift > 30
+
     # Wire with the mouse: output handles onto input handles.
     for src, dst in (("in1", ("blk1", "in:IN1")), ("in2", ("blk1", "in:IN2")), ("blk1", ("blk2", "in:IN1")),
                      ("in3", ("blk2", "in:IN2")), ("blk2", ("out1", "in:IN"))):
@@ -108,6 +117,7 @@ def test_new_user_builds_and_runs_an_fbd_calculation(page, server):
     assert wires == {("in1", "blk1", "IN1"), ("in2", "blk1", "IN2"), ("blk1", "blk2", "IN1"), ("in3", "blk2", "IN2"),
                      ("blk2", "out1", "IN")}
     assert [n.get("call") for n in network["nodes"] if n["type"] == "block"] == ["ADD", "SUB"]
+    assert [n["pos"]["x"] for n in network["nodes"] if n["id"] == "out1"] == [660 + shift]  # dropped at 660, zoom 1
 
     # Online: run, write var1..var3 from the input nodes, read result on the wire.
     page.get_by_role("button", name="Compile & simulate").click()
