@@ -180,6 +180,12 @@ class ImportReport(BaseModel):
     diagnostics: list[Diagnostic] = Field(default_factory=list)
 
 
+class FbdOrder(BaseModel):
+    """``POST /api/fbd/order``: the node ids of one FBD network in the order the scan runs them."""
+
+    order: list[str] = Field(description="Blocks, input, output, jump and return nodes; connectors have no place.")
+
+
 class ApiTypes(BaseModel):
     """Container so every API shape lands in one schema file (``api.schema.json``)."""
 
@@ -197,3 +203,4 @@ class ApiTypes(BaseModel):
     reset_simulation: ResetSimulation
     st_export: StExport
     import_report: ImportReport
+    fbd_order: FbdOrder

@@ -14,8 +14,7 @@ from fastapi.staticfiles import StaticFiles
 
 from .. import __version__
 from ..storage import Workspace
-from . import interchange, library, monitor, projects, simulations, symbols
-from . import live_check
+from . import fbd, interchange, library, live_check, monitor, projects, simulations, symbols
 from .errors import install_error_handlers
 from .limits import BodySizeLimit, Limits
 
@@ -38,9 +37,8 @@ def create_app(workspace: Workspace, limits: Limits | None = None) -> FastAPI:
     def health() -> dict[str, str]:
         return {"status": "ok", "version": __version__}
 
-    for module in (projects, symbols, library, simulations, monitor, interchange):
+    for module in (projects, symbols, library, simulations, monitor, interchange, fbd, live_check):
         app.include_router(module.router)
-    app.include_router(live_check.router)
 
     if (STATIC_DIR / "index.html").is_file():
         app.mount("/", StaticFiles(directory=STATIC_DIR, html=True), name="app")

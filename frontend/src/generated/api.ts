@@ -9,6 +9,7 @@ export interface ApiTypes {
   conflict_detail: ConflictDetail;
   create_project: CreateProject;
   error_detail: ErrorDetail;
+  fbd_order: FbdOrder;
   import_report: ImportReport;
   library_entry: LibraryEntry;
   project_document: ProjectDocument;
@@ -84,6 +85,18 @@ export interface CreateProject {
 export interface ErrorDetail {
   diagnostics?: Diagnostic[];
   message: string;
+}
+/**
+ * ``POST /api/fbd/order``: the node ids of one FBD network in the order the scan runs them.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "FbdOrder".
+ */
+export interface FbdOrder {
+  /**
+   * Blocks, input, output, jump and return nodes; connectors have no place.
+   */
+  order: string[];
 }
 /**
  * ``POST /api/import/plcopen``: the stored project and what the import had to say (warnings).

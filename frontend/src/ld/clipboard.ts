@@ -1,14 +1,13 @@
 // Clipboard contents for LD elements and networks: plain JSON text with a format tag, so copy and
 // paste work through the system clipboard between tabs, windows and POUs.
 import type { LdElement, LdNetwork } from "./model";
+import { parseTagged, serializeTagged } from "./taggedClip";
 
 const FORMAT = "ladderlab/ld-clip";
 
 export type Clip = { kind: "elements"; elements: LdElement[] } | { kind: "networks"; networks: LdNetwork[] };
 
-export function serializeClip(clip: Clip): string {
-  return JSON.stringify({ format: FORMAT, ...clip });
-}
+export const serializeClip = (clip: Clip): string => serializeTagged(FORMAT, clip);
 
 const ELEMENT_TYPES = new Set(["contact", "compare", "coil", "parallel", "box", "jump", "return"]);
 
@@ -34,15 +33,8 @@ function isNetwork(value: unknown): value is LdNetwork {
 
 /** The clip in `text`, or null when it is not one of ours (any other text, or a damaged clip). */
 export function parseClip(text: string): Clip | null {
-  let data: unknown;
-  try {
-    data = JSON.parse(text);
-  } catch {
-    return null;
-  }
-  if (!data || typeof data !== "object") return null;
-  const d = data as Record<string, unknown>;
-  if (d.format !== FORMAT) return null;
+  const d = parseTagged(FORMAT, text);
+  if (!d) return null;
   if (d.kind === "elements" && isSeries(d.elements)) return { kind: "elements", elements: d.elements };
   if (d.kind === "networks" && Array.isArray(d.networks) && d.networks.every(isNetwork)) {
     return { kind: "networks", networks: d.networks };

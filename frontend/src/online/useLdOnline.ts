@@ -48,17 +48,23 @@ export function useLdOnline(pou: Pou, body: LdBody, symbols: readonly SymbolInfo
   const onVisibleChange = useCallback((networks: readonly string[]) => setVisible(new Set(networks)), []);
   const online = useMemo(() => (live && binding ? ldOnlineView(monitor, binding) : undefined), [live, binding, monitor]);
 
-  const actions = useMemo(
-    (): LdOnlineActions | undefined => (live && instance ? operandCommands((operand) => operandPath(operand, instance, symbols)) : undefined),
-    [live, instance, symbols],
-  );
+  const actions = useMemo(() => (live && instance ? operandActions(instance, symbols) : undefined), [live, instance, symbols]);
+  const readOnly = onlineReadOnly(pou, live, instance);
+  return { online, readOnly, actions, onVisibleChange };
+}
 
-  const readOnly = !live
+/** The online commands on operand texts of a diagram showing `instance` (LD and FBD alike). */
+export function operandActions(instance: string, symbols: readonly SymbolInfo[]): LdOnlineActions {
+  return operandCommands((operand) => operandPath(operand, instance, symbols));
+}
+
+/** Why a diagram is read-only in online mode (null offline). */
+export function onlineReadOnly(pou: Pick<Pou, "kind" | "name">, live: boolean, instance: string | null): string | null {
+  return !live
     ? null
     : instance
       ? GO_OFFLINE_TO_EDIT
       : pou.kind === "function_block"
         ? `Online: name the instance of ${pou.name} to show (e.g. MAIN.${pou.name.toUpperCase()}1). Go offline to edit.`
         : `Online: a function has no instance to show. Go offline to edit.`;
-  return { online, readOnly, actions, onVisibleChange };
 }

@@ -1,9 +1,9 @@
 // The open project: project tree (POUs by kind with their language, types, globals, tasks), tabs
-// of open POUs with unsaved marks, the LD editor for LD POUs (online when a simulation runs), the
+// of open POUs with unsaved marks, the LD and FBD editors (online when a simulation runs), the
 // simulation toolbar, the bottom panels, Save (Ctrl+S) and the dialog for a save conflict (reload
 // theirs or overwrite deliberately).
 import { useCallback, useEffect, useMemo, useState, type FormEvent } from "react";
-import type { Diagnostic, SymbolTable } from "../generated/api";
+import type { Diagnostic } from "../generated/api";
 import type { LdBody, Pou, Project } from "../generated/project";
 import { LdEditor } from "../ld/editor/LdEditor";
 import type { History } from "../ld/history";
@@ -16,7 +16,8 @@ import { focusOf, panelsStore, usePanels } from "../panels/store";
 import { StView } from "../stview/StView";
 import { DeclarationsEditor } from "../declarations/DeclarationsEditor";
 import { ELEMENTARY_TYPES, userTypeNames } from "../declarations/model";
-import { pouOf, useWorkspace, workspaceStore } from "./store";
+import { diagramDiagnostics, pouOf, symbolsOf, useWorkspace, workspaceStore } from "./store";
+import { FbdPouView } from "../fbd/FbdPouView";
 import { ExportMenu } from "../interchange/ExportMenu";
 import { ImportPlcopen } from "../interchange/ImportPlcopen";
 import { appStore } from "../store";
@@ -186,9 +187,6 @@ const APP_KEYS = [...SIMULATION_KEYS, ...DEBUG_KEYS];
 /** A POU by an IEC name in any case (the simulation reports halts with the compiled spelling). */
 const pouNamed = (project: Project | null, name: string) => project?.pous?.find((p) => p.name.toUpperCase() === name.toUpperCase());
 
-/** The symbols of a POU and the globals, for autocomplete and online paths. */
-const symbolsOf = (table: SymbolTable | undefined) => (table ? [...table.symbols, ...table.globals] : []);
-
 /** Which instance of a function block the online diagram shows (a path such as MAIN.BLINK). */
 function InstancePicker({ pou }: { pou: string }) {
   const current = useOnline((s) => s.instances[pou] ?? "");
@@ -207,6 +205,18 @@ function InstancePicker({ pou }: { pou: string }) {
   );
 }
 
+/** Next to an online diagram's read-only notice: the FB instance shown, and going offline. */
+function OnlineActions({ pou }: { pou: Pou }) {
+  return (
+    <>
+      {pou.kind === "function_block" ? <InstancePicker pou={pou.name} /> : null}
+      <button type="button" onClick={() => void onlineStore.getState().goOffline()}>
+        Go offline to edit
+      </button>
+    </>
+  );
+}
+
 function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
   const name = pou.name;
   const library = useWorkspace((s) => s.library);
@@ -218,10 +228,7 @@ function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
   const symbols = useMemo(() => symbolsOf(table), [table]);
   const live = useLdOnline(pou, history.present, symbols);
   const debugging = useLdDebugging(name, history.present);
-  const diagnostics = useMemo(
-    () => [...(table?.diagnostics ?? []), ...checked.filter((d) => d.pou?.toUpperCase() === name.toUpperCase())].filter((d) => d.network),
-    [table, checked, name],
-  );
+  const diagnostics = useMemo(() => diagramDiagnostics(table, checked, name), [table, checked, name]);
   return (
     <LdEditor
       key={name}
@@ -233,16 +240,7 @@ function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
       onDeclareVariable={(d) => declare(name, d)}
       online={live.online}
       readOnly={live.readOnly}
-      readOnlyActions={
-        live.readOnly ? (
-          <>
-            {pou.kind === "function_block" ? <InstancePicker pou={name} /> : null}
-            <button type="button" onClick={() => void onlineStore.getState().goOffline()}>
-              Go offline to edit
-            </button>
-          </>
-        ) : undefined
-      }
+      readOnlyActions={live.readOnly ? <OnlineActions pou={pou} /> : undefined}
       onlineActions={live.actions}
       onVisibleChange={live.onVisibleChange}
       focus={focus}
@@ -334,6 +332,7 @@ function PouDeclarations({ pou, readOnly, focus }: { pou: Pou; readOnly: string 
 function PouView({ name }: { name: string }) {
   const pou = useWorkspace((s) => pouOf(s.project, name));
   const history = useWorkspace((s) => s.histories[name]);
+  const fbdHistory = useWorkspace((s) => s.fbdHistories[name]);
   const project = useWorkspace((s) => s.name);
   const unsaved = useWorkspace((s) => s.changed.includes(name));
   const focus = usePanels((s) => (s.focus?.pou.toUpperCase() === name.toUpperCase() ? s.focus : null));
@@ -359,6 +358,8 @@ function PouView({ name }: { name: string }) {
     content = <StPouView pou={pou} />;
   } else if (pou.language === "ld" && history) {
     content = <LdPouView pou={pou} history={history} />;
+  } else if (pou.language === "fbd" && fbdHistory) {
+    content = <FbdPouView pou={pou} history={fbdHistory} onlineActions={<OnlineActions pou={pou} />} />;
   } else {
     content = <p className="placeholder">The {LANGUAGE[pou.language]} editor is not built yet; {name} opens here once it is.</p>;
   }

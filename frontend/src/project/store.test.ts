@@ -5,6 +5,7 @@ import type { Project } from "../generated/project";
 import { motorMain } from "../ld/fixtures";
 import { record } from "../ld/history";
 import { deleteElements } from "../ld/ops";
+import { addNetwork } from "../fbd/ops";
 import { loadDraft, saveDraft } from "./drafts";
 import { createWorkspaceStore } from "./store";
 
@@ -77,6 +78,19 @@ describe("workspace store", () => {
     expect(api.getSymbols).toHaveBeenCalledWith("demo", "Main");
     store.getState().closeTab("Util");
     expect(store.getState()).toMatchObject({ tabs: ["Main"], active: "Main" });
+  });
+
+  it("keeps an undo history for a new FBD POU; its edits are unsaved changes", async () => {
+    const { store } = await opened();
+    expect(store.getState().addPou("Calc", "program", "fbd")).toBeNull();
+    const history = store.getState().fbdHistories.Calc!;
+    expect(history.present).toEqual({ networks: [] });
+    const next = addNetwork(history.present);
+    if (!next.ok) throw new Error(next.error);
+    store.getState().setFbdHistory("Calc", record(history, next.body));
+    expect(store.getState().project!.pous!.find((p) => p.name === "Calc")!.body).toEqual({ networks: [{ id: "n1", nodes: [], wires: [] }] });
+    expect(store.getState().changed).toEqual(["Calc"]);
+    expect(store.getState().fbdHistories.Calc!.past).toHaveLength(1);
   });
 
   it("marks edits unsaved and keeps them as a draft that a reload of the page restores", async () => {

@@ -3,8 +3,8 @@
 import { useStore } from "zustand";
 import { createStore, type StoreApi } from "zustand/vanilla";
 import { ApiError, projectApi, SaveConflictError, type ProjectApi } from "../api/client";
-import type { ConflictDetail, LibraryEntry, SymbolInfo, SymbolTable } from "../generated/api";
-import type { LdBody, Pou, Project } from "../generated/project";
+import type { ConflictDetail, Diagnostic, LibraryEntry, SymbolInfo, SymbolTable } from "../generated/api";
+import type { FbdBody, LdBody, Pou, Project } from "../generated/project";
 import { historyOf, type History } from "../ld/history";
 import type { VariableDeclaration } from "../ld/editor/declare";
 import { addDeclaration } from "./declarations";
@@ -25,6 +25,7 @@ export interface WorkspaceData {
   tabs: string[];
   active: string | null;
   histories: Record<string, History<LdBody>>;
+  fbdHistories: Record<string, History<FbdBody>>;
   library: LibraryEntry[];
   symbols: Record<string, SymbolTable>;
   saving: boolean;
@@ -37,6 +38,7 @@ export interface WorkspaceActions {
   openPou(pou: string): void;
   closeTab(pou: string): void;
   setLdHistory(pou: string, history: History<LdBody>): void;
+  setFbdHistory(pou: string, history: History<FbdBody>): void;
   declare(pou: string, declaration: VariableDeclaration): void;
   /** Replaces the declaration text of a POU (the declarations table and text view). */
   setDeclarations(pou: string, text: string): void;
@@ -65,6 +67,7 @@ export const emptyWorkspace: WorkspaceData = {
   tabs: [],
   active: null,
   histories: {},
+  fbdHistories: {},
   library: [],
   symbols: {},
   saving: false,
@@ -75,8 +78,16 @@ export const emptyWorkspace: WorkspaceData = {
 const IDENTIFIER = /^[A-Za-z_][A-Za-z0-9_]{0,63}$/;
 const message = (err: unknown) => (err instanceof Error ? err.message : String(err));
 export const pouOf = (project: Project | null, name: string): Pou | undefined => project?.pous?.find((p) => p.name === name);
-const isLdBody = (body: Pou["body"]): body is LdBody => typeof body === "object" && body !== null && "networks" in body;
-export const ldBodyOf = (pou: Pou): LdBody => (isLdBody(pou.body) ? pou.body : { networks: [] });
+const isDiagramBody = (body: Pou["body"]): body is LdBody | FbdBody => typeof body === "object" && body !== null && "networks" in body;
+export const ldBodyOf = (pou: Pou): LdBody => (isDiagramBody(pou.body) ? (pou.body as LdBody) : { networks: [] });
+export const fbdBodyOf = (pou: Pou): FbdBody => (isDiagramBody(pou.body) ? (pou.body as FbdBody) : { networks: [] });
+
+/** The symbols of a POU and the globals, for autocomplete and online paths. */
+export const symbolsOf = (table: SymbolTable | undefined): SymbolInfo[] => (table ? [...table.symbols, ...table.globals] : []);
+
+/** The problems a diagram editor marks: its POU's, located in a network (symbol table and last check). */
+export const diagramDiagnostics = (table: SymbolTable | undefined, checked: readonly Diagnostic[], pou: string): Diagnostic[] =>
+  [...(table?.diagnostics ?? []), ...checked.filter((d) => d.pou?.toUpperCase() === pou.toUpperCase())].filter((d) => d.network);
 
 export function createWorkspaceStore(api: ProjectApi = projectApi, storage: Storage = localStorage): StoreApi<WorkspaceState> {
   let openCall = 0;
@@ -146,6 +157,7 @@ export function createWorkspaceStore(api: ProjectApi = projectApi, storage: Stor
         if (!found) return;
         const patch: Partial<WorkspaceData> = { active: pou, tabs: tabs.includes(pou) ? tabs : [...tabs, pou] };
         if (found.language === "ld" && !histories[pou]) patch.histories = { ...histories, [pou]: historyOf(ldBodyOf(found)) };
+        if (found.language === "fbd" && !get().fbdHistories[pou]) patch.fbdHistories = { ...get().fbdHistories, [pou]: historyOf(fbdBodyOf(found)) };
         set(patch);
         if (!get().symbols[pou]) loadSymbols(pou);
       },
@@ -159,6 +171,11 @@ export function createWorkspaceStore(api: ProjectApi = projectApi, storage: Stor
 
       setLdHistory(pou, history) {
         set({ histories: { ...get().histories, [pou]: history } });
+        replacePou(pou, (p) => ({ ...p, body: history.present }));
+      },
+
+      setFbdHistory(pou, history) {
+        set({ fbdHistories: { ...get().fbdHistories, [pou]: history } });
         replacePou(pou, (p) => ({ ...p, body: history.present }));
       },
 

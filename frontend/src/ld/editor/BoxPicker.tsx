@@ -1,5 +1,6 @@
 // The box picker: a searchable list of every standard and user function and function block
-// (from /api/library), with the EN/ENO choice.
+// (from /api/library), with the EN/ENO choice. LD boxes and FBD blocks share it; they differ in the
+// dialog's name and in when EN/ENO is proposed.
 import { useMemo, useState } from "react";
 import type { LibraryEntry } from "../../generated/api";
 
@@ -7,6 +8,10 @@ export interface BoxPickerProps {
   library: readonly LibraryEntry[];
   onPick(entry: LibraryEntry, en: boolean): void;
   onCancel(): void;
+  /** The dialog's accessible name ("Insert box" in LD, "Insert block" in FBD). */
+  title?: string;
+  /** Whether EN/ENO starts ticked for an entry; LD ticks it when the rung's power needs it. */
+  defaultEn?(entry: LibraryEntry): boolean;
 }
 
 /** Entries whose name or comment contains the query; name matches first, then by name. */
@@ -24,16 +29,16 @@ export const needsEn = (entry: LibraryEntry): boolean => !entry.inputs.some((p) 
 const signature = (e: LibraryEntry) =>
   `(${e.inputs.map((p) => p.name).join(", ")})${e.kind === "function" && e.return_type ? ` : ${e.return_type}` : e.outputs.length ? ` → ${e.outputs.map((p) => p.name).join(", ")}` : ""}`;
 
-export function BoxPicker({ library, onPick, onCancel }: BoxPickerProps) {
+export function BoxPicker({ library, onPick, onCancel, title = "Insert box", defaultEn = needsEn }: BoxPickerProps) {
   const [query, setQuery] = useState("");
   const [active, setActive] = useState(0);
   const [en, setEn] = useState<boolean | null>(null);
   const hits = useMemo(() => searchLibrary(library, query), [library, query]);
   const chosen = hits[Math.min(active, hits.length - 1)];
-  const pick = (entry: LibraryEntry | undefined) => entry && onPick(entry, en ?? needsEn(entry));
+  const pick = (entry: LibraryEntry | undefined) => entry && onPick(entry, en ?? defaultEn(entry));
   return (
     <div className="ld-dialog-backdrop" onMouseDown={onCancel}>
-      <div className="ld-dialog ld-box-picker" role="dialog" aria-label="Insert box" onMouseDown={(e) => e.stopPropagation()}>
+      <div className="ld-dialog ld-box-picker" role="dialog" aria-label={title} onMouseDown={(e) => e.stopPropagation()}>
         <input
           aria-label="Search functions and function blocks"
           autoFocus
@@ -76,7 +81,7 @@ export function BoxPicker({ library, onPick, onCancel }: BoxPickerProps) {
           {hits.length === 0 ? <li className="ld-empty">No function or function block matches.</li> : null}
         </ul>
         <label className="ld-en-choice">
-          <input type="checkbox" checked={en ?? (chosen ? needsEn(chosen) : false)} onChange={(e) => setEn(e.target.checked)} /> EN/ENO
+          <input type="checkbox" checked={en ?? (chosen ? defaultEn(chosen) : false)} onChange={(e) => setEn(e.target.checked)} /> EN/ENO
         </label>
       </div>
     </div>

@@ -1,6 +1,6 @@
 // Right-click menu: the commands available for what was clicked, grouped like the toolbar.
 import { useEffect, useRef } from "react";
-import { available, COMMANDS, type Command, type CommandContext, type CommandGroup } from "./commands";
+import { available, COMMANDS, type CommandContext, type CommandGroup } from "./commands";
 
 const GROUP_ORDER: CommandGroup[] = ["insert", "mode", "edit", "clipboard", "network", "history"];
 
@@ -24,6 +24,13 @@ export interface ContextMenuProps {
 }
 
 export function ContextMenu({ x, y, ctx, extra = [], onClose }: ContextMenuProps) {
+  const groups = ctx ? GROUP_ORDER.map((group) => COMMANDS.filter((c) => c.group === group && available(c, ctx))).filter((g) => g.length) : [];
+  const items = groups.map((group) => group.map((c): MenuItem => ({ id: c.id, label: c.label, keys: c.keys, run: () => c.run(ctx!) })));
+  return <MenuList x={x} y={y} groups={extra.length ? [[...extra], ...items] : items} onClose={onClose} />;
+}
+
+/** A menu of grouped items at (x, y); closes on a click outside, Escape, or after running an item. */
+export function MenuList({ x, y, groups, onClose }: { x: number; y: number; groups: readonly (readonly MenuItem[])[]; onClose(): void }) {
   const menu = useRef<HTMLUListElement>(null);
   useEffect(() => {
     menu.current?.querySelector<HTMLButtonElement>("button")?.focus();
@@ -33,10 +40,9 @@ export function ContextMenu({ x, y, ctx, extra = [], onClose }: ContextMenuProps
     window.addEventListener("mousedown", close);
     return () => window.removeEventListener("mousedown", close);
   }, [onClose]);
-  const groups = ctx ? GROUP_ORDER.map((group) => COMMANDS.filter((c) => c.group === group && available(c, ctx))).filter((g) => g.length) : [];
-  const run = (command: Pick<Command, "run">) => {
+  const run = (item: MenuItem) => {
     onClose();
-    command.run(ctx!);
+    item.run();
   };
   return (
     <ul
@@ -53,28 +59,14 @@ export function ContextMenu({ x, y, ctx, extra = [], onClose }: ContextMenuProps
         if (e.key === "ArrowUp") items[(at - 1 + items.length) % items.length]?.focus();
       }}
     >
-      {extra.length ? (
-        <li role="none">
+      {groups.map((group, i) => (
+        <li key={group[0]?.id ?? i} role="none" className={i > 0 ? "ld-menu-group" : undefined}>
           <ul role="none">
-            {extra.map((item) => (
+            {group.map((item) => (
               <li key={item.id} role="none">
-                <button type="button" role="menuitem" onClick={() => run({ run: item.run })}>
+                <button type="button" role="menuitem" onClick={() => run(item)}>
                   <span>{item.label}</span>
                   {item.keys ? <kbd>{item.keys}</kbd> : null}
-                </button>
-              </li>
-            ))}
-          </ul>
-        </li>
-      ) : null}
-      {groups.map((group, i) => (
-        <li key={group[0]!.group} role="none" className={i > 0 || extra.length ? "ld-menu-group" : undefined}>
-          <ul role="none">
-            {group.map((command) => (
-              <li key={command.id} role="none">
-                <button type="button" role="menuitem" onClick={() => run(command)}>
-                  <span>{command.label}</span>
-                  {command.keys ? <kbd>{command.keys}</kbd> : null}
                 </button>
               </li>
             ))}

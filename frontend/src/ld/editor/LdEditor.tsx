@@ -662,7 +662,7 @@ function ShortcutHelp({ extra, onClose }: { extra: readonly [string, string][]; 
   );
 }
 
-function DeclareOffer({ offer, onDeclare, onDismiss }: { offer: VariableDeclaration; onDeclare(d: VariableDeclaration): void; onDismiss(): void }) {
+export function DeclareOffer({ offer, onDeclare, onDismiss }: { offer: VariableDeclaration; onDeclare(d: VariableDeclaration): void; onDismiss(): void }) {
   const [type, setType] = useState(offer.type);
   return (
     <div className="ld-declare" role="status">

@@ -34,7 +34,7 @@ const FAMILY_DEFAULT: Record<string, string> = {
   ANY_DURATION: "TIME",
 };
 
-const concrete = (type: string): string => FAMILY_DEFAULT[type.toUpperCase()] ?? type;
+export const concrete = (type: string): string => FAMILY_DEFAULT[type.toUpperCase()] ?? type;
 
 /** Names of `symbols`, upper case (IEC names ignore case). */
 export const symbolNames = (symbols: readonly SymbolInfo[]): Set<string> => new Set(symbols.map((s) => s.name.toUpperCase()));

@@ -1,0 +1,21 @@
+"""The FBD editor's execution-order badges: a stateless route over one network.
+
+The order is the lowering's own (``lower_fbd.evaluation_order``), so the numbers the editor
+shows are the order the scan runs the nodes in; problems of the network are left to the check.
+"""
+
+from __future__ import annotations
+
+from fastapi import APIRouter
+
+from ..ir.lower_fbd import evaluation_order
+from ..model.api import FbdOrder
+from ..model.fbd import FbdNetwork
+from .errors import responses
+
+router = APIRouter(prefix="/api/fbd", tags=["fbd"])
+
+
+@router.post("/order", response_model=FbdOrder, responses=responses(422))
+def network_order(network: FbdNetwork) -> FbdOrder:
+    return FbdOrder(order=evaluation_order(network))

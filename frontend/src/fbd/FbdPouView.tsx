@@ -1,0 +1,63 @@
+// An FBD POU in the workspace: the FBD editor with the project's library and symbols, the
+// check's diagnostics, online mode and the POU's breakpoints (debug/store.ts).
+import { useCallback, useMemo, type ReactNode } from "react";
+import type { Diagnostic } from "../generated/api";
+import type { FbdBody, Pou } from "../generated/project";
+import type { History } from "../ld/history";
+import { debugStore, useDebug } from "../debug/store";
+import { useOnline } from "../online/store";
+import { usePanels } from "../panels/store";
+import { diagramDiagnostics, symbolsOf, useWorkspace } from "../project/store";
+import { FbdEditor, type FbdDebug } from "./editor/FbdEditor";
+import { nodeOfProbe } from "./online";
+import { useFbdOnline } from "./useFbdOnline";
+
+const NO_DIAGNOSTICS: Diagnostic[] = [];
+
+export function FbdPouView({ pou, history, onlineActions }: { pou: Pou; history: History<FbdBody>; onlineActions: ReactNode }) {
+  const name = pou.name;
+  const library = useWorkspace((s) => s.library);
+  const table = useWorkspace((s) => s.symbols[name]);
+  const setHistory = useWorkspace((s) => s.setFbdHistory);
+  const declare = useWorkspace((s) => s.declare);
+  const checked = usePanels((s) => s.diagnostics) ?? NO_DIAGNOSTICS;
+  const focus = usePanels((s) => (s.focus?.pou.toUpperCase() === name.toUpperCase() ? s.focus : null));
+  const symbols = useMemo(() => symbolsOf(table), [table]);
+  const diagnostics = useMemo(() => diagramDiagnostics(table, checked, name), [table, checked, name]);
+  const byName = useMemo(() => new Map(library.map((e) => [e.name.toUpperCase(), e])), [library]);
+  const lookup = useCallback((call: string) => byName.get(call.toUpperCase()), [byName]);
+  const body = history.present;
+  const live = useFbdOnline(pou, body, lookup, symbols);
+
+  const breakpoints = useDebug((s) => s.breakpoints);
+  const at = useOnline((s) => (s.monitor.state === "halted" ? s.monitor.at : null));
+  const upper = name.toUpperCase();
+  const debug = useMemo((): FbdDebug => {
+    const mine = breakpoints.filter((b) => b.pou.toUpperCase() === upper);
+    return {
+      networks: new Set(mine.flatMap((b) => ("network" in b ? [b.network] : []))),
+      elements: new Set(mine.flatMap((b) => ("element" in b ? [b.element] : []))),
+      halted: at && at.pou.toUpperCase() === upper ? { network: at.network, element: at.element ? nodeOfProbe(body, at.element) : null } : null,
+      toggle: (bp) => debugStore.getState().toggle({ pou: name, ...bp }),
+    };
+  }, [breakpoints, at, upper, name, body]);
+
+  return (
+    <FbdEditor
+      key={name}
+      history={history}
+      onHistoryChange={(h) => setHistory(name, h)}
+      library={library}
+      symbols={symbols}
+      diagnostics={diagnostics}
+      online={live.online}
+      readOnly={live.readOnly}
+      readOnlyActions={live.readOnly ? onlineActions : undefined}
+      onlineActions={live.actions}
+      onDeclareVariable={(d) => declare(name, d)}
+      debug={debug}
+      onVisibleChange={live.onVisibleChange}
+      focus={focus}
+    />
+  );
+}

@@ -1,0 +1,632 @@
+// The FBD editor: networks listed top to bottom, each its own xyflow canvas; a palette (click to
+// add, or drag onto a network), the shared block picker, operand entry with autocomplete and the
+// declare offer, typed wiring that refuses incompatible pins with the reason, pin flags from the
+// pin's context menu, execution-order badges from the backend with "run earlier/later",
+// auto-arrange, undo/redo, copy/paste, diagnostics on nodes and pins, online values on wires,
+// write/force from the context menu, and breakpoints. The undo history is the caller's (one per POU).
+import "@xyflow/react/dist/style.css";
+import "../../ld/ld.css";
+import "./fbd.css";
+import type { Connection } from "@xyflow/react";
+import { useCallback, useEffect, useMemo, useRef, useState, type ClipboardEvent, type KeyboardEvent, type MouseEvent, type ReactNode } from "react";
+import type { Diagnostic, FbdOrder, LibraryEntry, SymbolInfo } from "../../generated/api";
+import { BoxPicker } from "../../ld/editor/BoxPicker";
+import { MenuList, type MenuItem } from "../../ld/editor/ContextMenu";
+import { concrete, instanceName, symbolNames, undeclared, type VariableDeclaration } from "../../ld/editor/declare";
+import { DeclareOffer, type LdOnlineActions } from "../../ld/editor/LdEditor";
+import { OperandEditor } from "../../ld/editor/OperandEditor";
+import { ValuePrompt } from "../../ld/editor/ValuePrompt";
+import { canRedo, canUndo, record, redo, undo, type History } from "../../ld/history";
+import { arrange } from "../arrange";
+import { clipOf, parseClip, pasteClip, serializeClip } from "../clipboard";
+import { outputType, refusal } from "../compat";
+import { findNode, kindOf, networksOf, nextInput, nodePins, nodesOf, wireKey, wiresOf, type Block, type FbdBody, type FbdNetwork, type FbdNode, type OutputMode, type Position } from "../model";
+import type { FbdOnlineView } from "../online";
+import { operandOf } from "../online";
+import * as ops from "../ops";
+import { moveInOrder } from "../order";
+import { fetchOrder, useEvaluationOrder } from "../useOrder";
+import { FbdEditorContext, type FbdEditorApi, type NodeView } from "./context";
+import { nodeHeight, pinOfHandle } from "./FbdNodeView";
+import { DRAG_FORMAT, NetworkCanvas, type NetworkSelection } from "./NetworkCanvas";
+
+/** Breakpoints and the halt, for this POU (debug/store.ts holds them). */
+export interface FbdDebug {
+  networks: ReadonlySet<string>;
+  elements: ReadonlySet<string>;
+  halted: { network?: string | null; element?: string | null } | null;
+  toggle(bp: { network: string } | { element: string }): void;
+}
+
+export interface FbdEditorProps {
+  history: History<FbdBody>;
+  onHistoryChange(history: History<FbdBody>): void;
+  library?: readonly LibraryEntry[];
+  symbols?: readonly SymbolInfo[];
+  diagnostics?: readonly Diagnostic[];
+  online?: FbdOnlineView;
+  readOnly?: string | null;
+  readOnlyActions?: ReactNode;
+  onDeclareVariable?(declaration: VariableDeclaration): void;
+  onlineActions?: LdOnlineActions;
+  debug?: FbdDebug;
+  focus?: { network?: string | null; element?: string | null; seq: number } | null;
+  /** Told which networks are near the viewport, so online mode subscribes only to those. */
+  onVisibleChange?(networks: readonly string[]): void;
+  /** POST /api/fbd/order (replaced in tests). */
+  orderOf?(network: FbdNetwork): Promise<FbdOrder>;
+}
+
+type Selection = NetworkSelection & { network: string };
+type PaletteKind = "input" | "output" | "block" | "jump" | "return" | "connector" | "continuation";
+
+const PALETTE: { kind: PaletteKind; label: string }[] = [
+  { kind: "input", label: "Input" },
+  { kind: "output", label: "Output" },
+  { kind: "block", label: "Block…" },
+  { kind: "jump", label: "Jump" },
+  { kind: "return", label: "Return" },
+  { kind: "connector", label: "Connector" },
+  { kind: "continuation", label: "Continuation" },
+];
+const COLUMN_OF: Record<PaletteKind, number> = { input: 20, continuation: 20, block: 240, output: 480, jump: 480, return: 480, connector: 480 };
+const WITH_TEXT = new Set(["input", "output", "jump", "connector", "continuation"]);
+const OUTPUT_MODES: { mode: OutputMode; label: string }[] = [
+  { mode: "normal", label: "Output: normal" },
+  { mode: "negated", label: "Output: negated" },
+  { mode: "set", label: "Output: set (S)" },
+  { mode: "reset", label: "Output: reset (R)" },
+];
+const NO_LIBRARY: readonly LibraryEntry[] = [];
+const NO_SYMBOLS: readonly SymbolInfo[] = [];
+const NO_DIAGNOSTICS: readonly Diagnostic[] = [];
+
+/** The last clip copied in this tab, for toolbar paste when the browser keeps the clipboard closed. */
+let lastClip: string | null = null;
+
+export function FbdEditor({
+  history,
+  onHistoryChange,
+  library = NO_LIBRARY,
+  symbols = NO_SYMBOLS,
+  diagnostics = NO_DIAGNOSTICS,
+  online,
+  readOnly = null,
+  readOnlyActions,
+  onDeclareVariable,
+  onlineActions,
+  debug,
+  focus,
+  orderOf = fetchOrder,
+  onVisibleChange,
+}: FbdEditorProps) {
+  const body = history.present;
+  const root = useRef<HTMLDivElement>(null);
+  const [selection, setSelection] = useState<Selection | null>(null);
+  const [networkSelected, setNetworkSelected] = useState<string | null>(null);
+  const [editing, setEditing] = useState<string | null>(null);
+  const [networkText, setNetworkText] = useState<{ network: string; field: "label" | "comment" } | null>(null);
+  const [picker, setPicker] = useState<{ network: string | null; pos: Position | null } | null>(null);
+  const [menu, setMenu] = useState<{ x: number; y: number; groups: MenuItem[][] } | null>(null);
+  const [message, setMessage] = useState<string | null>(null);
+  const [offer, setOffer] = useState<VariableDeclaration | null>(null);
+  const [valuePrompt, setValuePrompt] = useState<{ operand: string; action: "write" | "force" } | null>(null);
+
+  const byName = useMemo(() => new Map(library.map((e) => [e.name.toUpperCase(), e])), [library]);
+  const lookup = useCallback((call: string) => byName.get(call.toUpperCase()), [byName]);
+  const known = useMemo(() => symbolNames(symbols), [symbols]);
+  const [near, setNear] = useState<ReadonlySet<string>>(new Set());
+  const onNear = useCallback((network: string, isNear: boolean) => {
+    setNear((current) => {
+      if (current.has(network) === isNear) return current;
+      const next = new Set(current);
+      if (isNear) next.add(network);
+      else next.delete(network);
+      return next;
+    });
+  }, []);
+  useEffect(() => onVisibleChange?.([...near]), [near, onVisibleChange]);
+  const orders = useEvaluationOrder(body, orderOf, near);
+  const networks = networksOf(body);
+  const locked = readOnly !== null;
+
+  const heightOf = useCallback((network: FbdNetwork) => (node: FbdNode) => {
+    const pins = nodePins(node, network, lookup, symbols);
+    return nodeHeight(node, Math.max(pins.inputs.length, pins.outputs.length));
+  }, [lookup, symbols]);
+  // Nodes without a stored position (imported, hand-written) are drawn where auto-arrange would put them.
+  const fallbacks = useMemo(() => new Map(networks.map((n) => [n.id, nodesOf(n).every((node) => node.pos) ? new Map<string, Position>() : arrange(n, heightOf(n))])), [networks, heightOf]);
+
+  const byElement = useMemo(() => {
+    const map = new Map<string, Diagnostic[]>();
+    for (const d of diagnostics) if (d.element) map.set(d.element, [...(map.get(d.element) ?? []), d]);
+    return map;
+  }, [diagnostics]);
+
+  const apply = useCallback(
+    (result: ops.EditResult) => {
+      if (!result.ok) {
+        setMessage(result.error);
+        return false;
+      }
+      setMessage(null);
+      onHistoryChange(record(history, result.body));
+      const [first] = result.select;
+      const network = first && networksOf(result.body).find((n) => n.id === first || nodesOf(n).some((node) => node.id === first));
+      if (network && network.id === first) {
+        setSelection(null);
+        setNetworkSelected(network.id);
+      } else if (network) {
+        setSelection({ network: network.id, nodes: result.select, edges: [] });
+        setNetworkSelected(null);
+      }
+      return true;
+    },
+    [history, onHistoryChange],
+  );
+
+  /** The network new things go into: the selected one, else the last. */
+  const targetNetwork = (): string | null => selection?.network ?? networkSelected ?? networks[networks.length - 1]?.id ?? null;
+
+  /** A free spot in the column new nodes of `kind` go to: below what is there. */
+  const freeSpot = (network: FbdNetwork, kind: PaletteKind): Position => {
+    const x = COLUMN_OF[kind];
+    const below = nodesOf(network)
+      .filter((n) => n.pos && Math.abs(n.pos.x - x) < 150)
+      .map((n) => n.pos!.y + heightOf(network)(n) + 20);
+    return { x, y: Math.max(20, ...below) };
+  };
+
+  /** Adds a node (creating the first network when there is none); text nodes open their editor. */
+  const addNode = (spec: ops.NodeSpec, networkId: string | null, pos: Position | null) => {
+    let base = body;
+    let network = networkId;
+    if (!network) {
+      const created = ops.addNetwork(base);
+      if (!created.ok) return;
+      base = created.body;
+      network = created.select[0]!;
+    }
+    const net = networksOf(base).find((n) => n.id === network)!;
+    const result = ops.addNode(base, network, spec, pos ?? freeSpot(net, spec.type));
+    if (apply(result) && result.ok && WITH_TEXT.has(spec.type)) setEditing(result.select[0]!);
+    return result;
+  };
+
+  const paletteAdd = (kind: PaletteKind, network: string | null, pos: Position | null) => {
+    if (kind === "block") setPicker({ network, pos });
+    else addNode({ type: kind } as ops.NodeSpec, network, pos);
+  };
+
+  const pickBlock = (entry: LibraryEntry, en: boolean) => {
+    const at = picker;
+    setPicker(null);
+    root.current?.focus();
+    const used = new Set([...known, ...networks.flatMap((n) => nodesOf(n).flatMap((node) => (kindOf(node) === "block" && (node as Block).instance ? [(node as Block).instance!.toUpperCase()] : [])))]);
+    const instance = entry.kind === "function_block" ? instanceName(entry.name, used) : null;
+    const result = addNode({ type: "block", call: entry.name, instance, en }, at?.network ?? targetNetwork(), at?.pos ?? null);
+    if (result?.ok && instance && onDeclareVariable) setOffer({ name: instance, type: entry.name });
+  };
+
+  /** The type to offer for a new variable typed into node `id`. */
+  const guessType = (next: FbdBody, id: string): string => {
+    const at = findNode(next, id);
+    if (!at) return "BOOL";
+    const { network, node } = at;
+    if (kindOf(node) === "block") return (node as Block).call;
+    if (kindOf(node) === "output") {
+      if (((node as { mode?: OutputMode }).mode ?? "normal") !== "normal") return "BOOL";
+      const feed = wiresOf(network).find((w) => w.to.node === id);
+      const type = feed ? outputType(network, feed.from, lookup, symbols) : undefined;
+      return type ? concrete(type === "ANY_LITERAL_INT" ? "ANY_INT" : type) : "BOOL";
+    }
+    const use = wiresOf(network).find((w) => w.from.node === id);
+    const consumer = use && nodesOf(network).find((n) => n.id === use.to.node);
+    const pin = consumer && nodePins(consumer, network, lookup, symbols).inputs.find((p) => p.name.toUpperCase() === use.to.pin.toUpperCase());
+    return pin?.type ? concrete(pin.type) : "BOOL";
+  };
+
+  const commitEdit = (id: string, text: string) => {
+    setEditing(null);
+    root.current?.focus();
+    const at = findNode(body, id);
+    if (!at) return;
+    const result = ops.setNodeText(body, id, text);
+    if (!result.ok) return void setMessage(result.error);
+    const kind = kindOf(at.node);
+    const changed = JSON.stringify(findNode(result.body, id)?.node) !== JSON.stringify(at.node);
+    if (changed) apply(result);
+    const name = kind === "input" || kind === "output" || kind === "block" ? undeclared(text, known) : null;
+    setOffer(name && onDeclareVariable ? { name, type: guessType(result.body, id) } : null);
+  };
+
+  const selectedNodes = selection?.nodes ?? [];
+  const deleteSelection = () => {
+    if (locked) return;
+    if (selection && (selection.nodes.length || selection.edges.length)) {
+      const network = networks.find((n) => n.id === selection.network);
+      const cut = network ? wiresOf(network).filter((w) => selection.edges.includes(wireKey(w))) : [];
+      const withoutWires = cut.length ? ops.disconnect(body, selection.network, cut) : ({ ok: true, body, select: [] } as ops.EditResult);
+      if (withoutWires.ok) apply(ops.deleteNodes(withoutWires.body, selection.nodes));
+      setSelection(null);
+    } else if (networkSelected) apply(ops.deleteNetworks(body, [networkSelected]));
+  };
+
+  const copy = (cut: boolean, write: (text: string) => void) => {
+    const network = selection && networks.find((n) => n.id === selection.network);
+    if (!network || !selection?.nodes.length) return;
+    const text = serializeClip(clipOf(network, selection.nodes));
+    lastClip = text;
+    write(text);
+    if (cut && !locked) apply(ops.deleteNodes(body, selection.nodes));
+  };
+  const pasteText = (text: string | null) => {
+    const clip = text ? parseClip(text) : null;
+    const network = targetNetwork();
+    if (!clip) return void setMessage("The clipboard holds no LadderLab FBD nodes.");
+    if (!network) return void setMessage("Add a network to paste into.");
+    apply(pasteClip(body, network, clip));
+  };
+  const paste = () => {
+    const read = navigator.clipboard?.readText?.();
+    if (!read) pasteText(lastClip);
+    else read.then((text) => pasteText(parseClip(text) ? text : lastClip), () => pasteText(lastClip));
+  };
+
+  const reorder = (delta: -1 | 1) => {
+    const id = selectedNodes[0];
+    const network = selection?.network;
+    if (!id || !network) return;
+    apply(moveInOrder(body, network, orders.get(network) ?? [], id, delta));
+  };
+
+  const autoArrange = () => {
+    const network = targetNetwork();
+    const net = network && networks.find((n) => n.id === network);
+    if (net) apply(ops.arrangeNetwork(body, net.id, heightOf(net), orders.get(net.id) ?? null));
+  };
+
+  const addInput = (id: string) => apply(ops.addInput(body, id, lookup));
+
+  // ------------------------------------------------------------ menus
+  const openMenu = (event: MouseEvent, groups: MenuItem[][]) => {
+    event.preventDefault();
+    event.stopPropagation();
+    const box = root.current?.getBoundingClientRect();
+    setMenu({ x: event.clientX - (box?.left ?? 0), y: event.clientY - (box?.top ?? 0), groups: groups.filter((g) => g.length) });
+  };
+
+  const onlineItems = (operand: string | null): MenuItem[] => {
+    if (!onlineActions || !operand) return [];
+    return [
+      { id: "online-write", label: `Write value of ${operand}…`, run: () => setValuePrompt({ operand, action: "write" }) },
+      { id: "online-force-true", label: "Force TRUE", run: () => onlineActions.force(operand, true) },
+      { id: "online-force-false", label: "Force FALSE", run: () => onlineActions.force(operand, false) },
+      { id: "online-force-value", label: "Force value…", run: () => setValuePrompt({ operand, action: "force" }) },
+      { id: "online-release", label: "Release force", run: () => onlineActions.unforce(operand) },
+      { id: "online-watch", label: "Add to watch list", run: () => onlineActions.watch(operand) },
+    ];
+  };
+
+  const nodeMenu = (network: string, node: FbdNode, event: MouseEvent) => {
+    if (!selectedNodes.includes(node.id)) setSelection({ network, nodes: [node.id], edges: [] });
+    const kind = kindOf(node);
+    const net = networks.find((n) => n.id === network)!;
+    const edit: MenuItem[] = locked
+      ? []
+      : [
+          ...(WITH_TEXT.has(kind) || kind === "block" ? [{ id: "edit", label: kind === "block" ? "Edit instance" : "Edit text", run: () => setEditing(node.id) }] : []),
+          ...(kind === "block" && nextInput(node as Block, lookup((node as Block).call), wiresOf(net)) ? [{ id: "add-input", label: "Add input", run: () => addInput(node.id) }] : []),
+          ...(kind === "block" ? [{ id: "en", label: (node as Block).en ? "Remove EN/ENO" : "Add EN/ENO", run: () => apply(ops.toggleEn(body, node.id)) }] : []),
+          ...(kind === "output" ? OUTPUT_MODES.map(({ mode, label }) => ({ id: `mode-${mode}`, label, run: () => apply(ops.setOutputMode(body, node.id, mode)) })) : []),
+        ];
+    const order: MenuItem[] =
+      locked || !(kind === "block" || kind === "output")
+        ? []
+        : [
+            { id: "earlier", label: "Run earlier", keys: "Alt+ArrowUp", run: () => apply(moveInOrder(body, network, orders.get(network) ?? [], node.id, -1)) },
+            { id: "later", label: "Run later", keys: "Alt+ArrowDown", run: () => apply(moveInOrder(body, network, orders.get(network) ?? [], node.id, 1)) },
+          ];
+    const debugItems: MenuItem[] = debug ? [{ id: "breakpoint", label: debug.elements.has(node.id) ? "Remove breakpoint" : "Set breakpoint", keys: "Alt+click", run: () => debug.toggle({ element: node.id }) }] : [];
+    const clip: MenuItem[] = [
+      { id: "copy", label: "Copy", keys: "Ctrl+C", run: () => copy(false, (t) => void navigator.clipboard?.writeText(t).catch(() => undefined)) },
+      ...(locked ? [] : [{ id: "delete", label: "Delete", keys: "Delete", run: () => apply(ops.deleteNodes(body, selectedNodes.includes(node.id) ? selectedNodes : [node.id])) }]),
+    ];
+    openMenu(event, [onlineItems(operandOf(node)), edit, order, debugItems, clip]);
+  };
+
+  const pinMenu = (node: FbdNode, pin: string, side: "in" | "out", event: MouseEvent) => {
+    if (locked) return;
+    const at = findNode(body, node.id);
+    if (!at) return;
+    const flags = kindOf(node) === "block" ? ((node as Block).pins?.[pin] ?? {}) : null;
+    const flagItems: MenuItem[] = flags
+      ? [
+          { id: "negate", label: flags.negated ? `Remove negation of ${pin}` : `Negate ${pin}`, run: () => apply(ops.togglePinFlag(body, node.id, pin, "negated", side)) },
+          ...(side === "in"
+            ? (["rising", "falling"] as const).map((edge) => ({ id: edge, label: flags.edge === edge ? `Remove ${edge} edge` : `${edge === "rising" ? "Rising" : "Falling"} edge on ${pin}`, run: () => apply(ops.togglePinFlag(body, node.id, pin, edge, side)) }))
+            : []),
+        ]
+      : [];
+    const wired = ops.wiresAt(at.network, { node: node.id, pin }, side);
+    const wireItems: MenuItem[] = wired.length ? [{ id: "disconnect", label: `Disconnect ${pin}`, run: () => apply(ops.disconnect(body, at.network.id, wired)) }] : [];
+    openMenu(event, [flagItems, wireItems]);
+  };
+
+  // ------------------------------------------------------------ views
+  const view = useCallback(
+    (network: FbdNetwork, node: FbdNode): NodeView => {
+      const order = orders.get(network.id)?.indexOf(node.id);
+      return {
+        pins: nodePins(node, network, lookup, symbols),
+        order: order !== undefined && order >= 0 ? order + 1 : undefined,
+        diagnostics: byElement.get(node.id) ?? NO_DIAGNOSTICS,
+        breakpoint: debug?.elements.has(node.id) ?? false,
+        halted: debug?.halted?.element === node.id,
+        fb: kindOf(node) === "block" && lookup((node as Block).call)?.kind === "function_block",
+      };
+    },
+    [orders, lookup, symbols, byElement, debug],
+  );
+
+  const api: FbdEditorApi = {
+    readOnly: locked,
+    symbols,
+    online,
+    editing,
+    view,
+    startEdit: (id) => !locked && setEditing(id),
+    commitEdit,
+    cancelEdit: () => {
+      setEditing(null);
+      root.current?.focus();
+    },
+    pinMenu,
+    valueDoubleClick: (node) => {
+      const operand = operandOf(node);
+      if (!onlineActions || !operand) return;
+      if (typeof online?.probes[node.id] === "boolean") onlineActions.toggle(operand);
+      else setValuePrompt({ operand, action: "write" });
+    },
+  };
+
+  const onSelectChanges = useCallback((network: string, nodes: readonly { id: string; selected: boolean }[], edges: readonly { id: string; selected: boolean }[]) => {
+    setSelection((current) => {
+      const base = current?.network === network ? current : { network, nodes: [], edges: [] };
+      const nextNodes = new Set(base.nodes);
+      const nextEdges = new Set(base.edges);
+      for (const c of nodes) c.selected ? nextNodes.add(c.id) : nextNodes.delete(c.id);
+      for (const c of edges) c.selected ? nextEdges.add(c.id) : nextEdges.delete(c.id);
+      if (!nextNodes.size && !nextEdges.size) return current?.network === network ? null : current; // another network's canvas letting go
+      return { network, nodes: [...nextNodes], edges: [...nextEdges] };
+    });
+    if (nodes.some((c) => c.selected) || edges.some((c) => c.selected)) setNetworkSelected(null);
+  }, []);
+
+  const onConnect = (network: string, c: Connection) => {
+    if (locked) return;
+    apply(ops.connect(body, network, { from: { node: c.source, pin: pinOfHandle(c.sourceHandle) }, to: { node: c.target, pin: pinOfHandle(c.targetHandle) } }, lookup, symbols));
+  };
+  const refusalOf = (network: string, c: Connection) => {
+    const net = networks.find((n) => n.id === network);
+    return net ? refusal(net, { from: { node: c.source, pin: pinOfHandle(c.sourceHandle) }, to: { node: c.target, pin: pinOfHandle(c.targetHandle) } }, lookup, symbols) : null;
+  };
+
+  // A halt or a clicked diagnostic scrolls its network into view and selects the place.
+  const reveal = (network?: string | null, element?: string | null) => {
+    const net = element ? findNode(body, element)?.network.id : network;
+    if (!net) return;
+    root.current?.querySelector(`[data-network="${CSS.escape(net)}"]`)?.scrollIntoView?.({ block: "center" });
+    if (element) setSelection({ network: net, nodes: [element], edges: [] });
+    else setNetworkSelected(net);
+  };
+  const halted = debug?.halted;
+  useEffect(() => {
+    if (halted) reveal(halted.network, halted.element);
+    // Only a new halt place scrolls, not later edits.
+  }, [halted?.network, halted?.element]);
+  useEffect(() => {
+    if (focus) reveal(focus.network, focus.element);
+  }, [focus?.seq]);
+
+  const onKeyDown = (event: KeyboardEvent<HTMLDivElement>) => {
+    if (editing || picker || networkText || (event.target as HTMLElement).closest("input, textarea, .ld-context-menu")) return;
+    const ctrl = event.ctrlKey || event.metaKey;
+    const key = event.key.toLowerCase();
+    let handled = true;
+    if (event.key === "Delete" || event.key === "Backspace") deleteSelection();
+    else if (ctrl && key === "z" && !event.shiftKey) !locked && onHistoryChange(undo(history));
+    else if (ctrl && (key === "y" || (key === "z" && event.shiftKey))) !locked && onHistoryChange(redo(history));
+    else if (event.altKey && event.key === "ArrowUp") reorder(-1);
+    else if (event.altKey && event.key === "ArrowDown") reorder(1);
+    else if (event.key === "Escape") {
+      setSelection(null);
+      setNetworkSelected(null);
+      setMenu(null);
+    } else handled = false;
+    if (handled) event.preventDefault();
+  };
+  const onCopy = (event: ClipboardEvent<HTMLDivElement>, cut: boolean) => {
+    if ((event.target as HTMLElement).closest("input, textarea")) return;
+    event.preventDefault();
+    copy(cut, (text) => event.clipboardData.setData("text/plain", text));
+  };
+  const onPaste = (event: ClipboardEvent<HTMLDivElement>) => {
+    if ((event.target as HTMLElement).closest("input, textarea")) return;
+    event.preventDefault();
+    if (!locked) pasteText(event.clipboardData.getData("text/plain"));
+  };
+
+  const selectedBlock = selectedNodes.length === 1 ? findNode(body, selectedNodes[0]!)?.node : undefined;
+  const netIndex = networks.findIndex((n) => n.id === (networkSelected ?? selection?.network));
+  const tool = (label: string, run: () => void, enabled = !locked, title?: string) => (
+    <button type="button" disabled={!enabled} title={title ?? label} onMouseDown={(e) => e.preventDefault()} onClick={run}>
+      {label}
+    </button>
+  );
+
+  return (
+    <FbdEditorContext.Provider value={api}>
+      <div
+        className={`fbd-editor${locked ? " fbd-readonly" : ""}`}
+        ref={root}
+        tabIndex={0}
+        role="application"
+        aria-label="Function block diagram editor"
+        onKeyDown={onKeyDown}
+        onCopy={(e) => onCopy(e, false)}
+        onCut={(e) => onCopy(e, true)}
+        onPaste={onPaste}
+      >
+        <div className="ld-toolbar fbd-toolbar" role="toolbar" aria-label="FBD editing">
+          <div className="ld-toolbar-group fbd-palette" aria-label="Add (click, or drag onto a network)">
+            {PALETTE.map(({ kind, label }) => (
+              <button
+                key={kind}
+                type="button"
+                draggable={!locked}
+                disabled={locked}
+                title={`Add ${label.replace("…", "")} (or drag it onto a network)`}
+                onDragStart={(e) => {
+                  e.dataTransfer.setData(DRAG_FORMAT, kind);
+                  e.dataTransfer.effectAllowed = "copy";
+                }}
+                onClick={() => paletteAdd(kind, targetNetwork(), null)}
+              >
+                {label}
+              </button>
+            ))}
+          </div>
+          <div className="ld-toolbar-group">
+            {tool("Add input", () => selectedBlock && addInput(selectedBlock.id), !locked && !!selectedBlock && kindOf(selectedBlock) === "block" && !!nextInput(selectedBlock as Block, lookup((selectedBlock as Block).call), wiresOf(findNode(body, selectedBlock.id)!.network)))}
+            {tool("Run earlier", () => reorder(-1), !locked && !!selectedBlock, "Run earlier (Alt+ArrowUp)")}
+            {tool("Run later", () => reorder(1), !locked && !!selectedBlock, "Run later (Alt+ArrowDown)")}
+            {tool("Auto-arrange", autoArrange, !locked && networks.length > 0)}
+            {tool("Delete", deleteSelection, !locked && (!!selection || !!networkSelected), "Delete (Delete)")}
+          </div>
+          <div className="ld-toolbar-group">
+            {tool("Add network", () => apply(ops.addNetwork(body, netIndex < 0 ? networks.length : netIndex + 1)))}
+            {tool("Network up", () => apply(ops.moveNetwork(body, networks[netIndex]!.id, -1)), !locked && netIndex > 0)}
+            {tool("Network down", () => apply(ops.moveNetwork(body, networks[netIndex]!.id, 1)), !locked && netIndex >= 0 && netIndex < networks.length - 1)}
+            {tool("Label", () => setNetworkText({ network: networks[netIndex]!.id, field: "label" }), !locked && netIndex >= 0)}
+            {tool("Comment", () => setNetworkText({ network: networks[netIndex]!.id, field: "comment" }), !locked && netIndex >= 0)}
+          </div>
+          <div className="ld-toolbar-group">
+            {tool("Copy", () => copy(false, (t) => void navigator.clipboard?.writeText(t).catch(() => undefined)), selectedNodes.length > 0, "Copy (Ctrl+C)")}
+            {tool("Paste", paste, !locked, "Paste (Ctrl+V)")}
+            {tool("Undo", () => onHistoryChange(undo(history)), !locked && canUndo(history), "Undo (Ctrl+Z)")}
+            {tool("Redo", () => onHistoryChange(redo(history)), !locked && canRedo(history), "Redo (Ctrl+Y)")}
+          </div>
+        </div>
+        {readOnly ? (
+          <div className="ld-banner" role="status">
+            {readOnly}
+            {readOnlyActions}
+          </div>
+        ) : null}
+        {message ? (
+          <div className="ld-message" role="alert">
+            {message}
+            <button type="button" aria-label="Dismiss" onClick={() => setMessage(null)}>
+              ×
+            </button>
+          </div>
+        ) : null}
+        {offer ? (
+          <DeclareOffer
+            key={offer.name}
+            offer={offer}
+            onDeclare={(declaration) => {
+              setOffer(null);
+              onDeclareVariable?.(declaration);
+              root.current?.focus();
+            }}
+            onDismiss={() => setOffer(null)}
+          />
+        ) : null}
+        <div className="fbd-networks">
+          {networks.map((network, index) => (
+            <NetworkCanvas
+              key={network.id}
+              network={network}
+              index={index}
+              readOnly={locked}
+              selected={selection?.network === network.id ? selection : null}
+              networkSelected={networkSelected === network.id}
+              online={online}
+              problems={diagnostics.filter((d) => d.network === network.id && !d.element)}
+              breakpoint={debug?.networks.has(network.id) ?? false}
+              halted={halted?.network === network.id}
+              fallback={fallbacks.get(network.id)!}
+              height={heightOf(network)}
+              overlay={
+                networkText?.network === network.id ? (
+                  <OperandEditor
+                    key={networkText.field}
+                    label={networkText.field === "label" ? "Network label" : "Network comment"}
+                    initial={network[networkText.field] ?? ""}
+                    onCommit={(text) => {
+                      setNetworkText(null);
+                      root.current?.focus();
+                      if (text !== (network[networkText.field] ?? "")) apply(ops.setNetworkText(body, network.id, networkText.field, text));
+                    }}
+                    onCancel={() => setNetworkText(null)}
+                  />
+                ) : null
+              }
+              onSelectChanges={onSelectChanges}
+              onSelectNetwork={(id) => {
+                setNetworkSelected(id);
+                setSelection(null);
+              }}
+              onToggleBreakpoint={(id) => debug?.toggle({ network: id })}
+              onEditText={(id, field) => !locked && setNetworkText({ network: id, field })}
+              onMove={(_id, positions) => {
+                const moved = [...positions].some(([id, p]) => {
+                  const old = findNode(body, id)?.node.pos;
+                  return !old || old.x !== p.x || old.y !== p.y;
+                });
+                if (moved && !locked) apply(ops.moveNodes(body, positions));
+              }}
+              onConnect={onConnect}
+              refusal={refusalOf}
+              onRefused={setMessage}
+              onDropNew={(id, kind, pos) => paletteAdd(kind as PaletteKind, id, { x: Math.round(pos.x), y: Math.round(pos.y) })}
+              onNodeContextMenu={nodeMenu}
+              onNear={onNear}
+              onNodeClick={(_id, node, event) => {
+                if (event.altKey && debug) debug.toggle({ element: node.id });
+              }}
+            />
+          ))}
+        </div>
+        {networks.length === 0 ? <p className="ld-empty-hint">This POU has no networks yet: add a node from the palette, or "Add network".</p> : null}
+        {menu ? <MenuList x={menu.x} y={menu.y} groups={menu.groups} onClose={() => setMenu(null)} /> : null}
+        {valuePrompt && onlineActions ? (
+          <ValuePrompt
+            title={`${valuePrompt.action === "write" ? "Write" : "Force"} ${valuePrompt.operand}`}
+            onSubmit={(text) => {
+              setValuePrompt(null);
+              if (valuePrompt.action === "write") onlineActions.write(valuePrompt.operand, text);
+              else onlineActions.force(valuePrompt.operand, text);
+              root.current?.focus();
+            }}
+            onCancel={() => setValuePrompt(null)}
+          />
+        ) : null}
+        {picker ? (
+          <BoxPicker
+            library={library}
+            title="Insert block"
+            defaultEn={() => false}
+            onPick={pickBlock}
+            onCancel={() => {
+              setPicker(null);
+              root.current?.focus();
+            }}
+          />
+        ) : null}
+      </div>
+    </FbdEditorContext.Provider>
+  );
+}

@@ -1,0 +1,40 @@
+// What the node components need from the editor, shared through React context so xyflow's node
+// data holds only the model node (nodes re-render when the editor's state changes).
+import { createContext, useContext, type MouseEvent } from "react";
+import type { Diagnostic, SymbolInfo } from "../../generated/api";
+import type { FbdNetwork, FbdNode, NodePins } from "../model";
+import type { FbdOnlineView } from "../online";
+
+export interface NodeView {
+  pins: NodePins;
+  /** 1-based place in the execution order (undefined until known, and for connectors). */
+  order?: number;
+  diagnostics: readonly Diagnostic[];
+  breakpoint: boolean;
+  halted: boolean;
+  /** A function block: the instance name is shown (and edited) above it. */
+  fb: boolean;
+}
+
+export interface FbdEditorApi {
+  readOnly: boolean;
+  symbols: readonly SymbolInfo[];
+  online?: FbdOnlineView;
+  /** The node whose text is being edited. */
+  editing: string | null;
+  view(network: FbdNetwork, node: FbdNode): NodeView;
+  startEdit(id: string): void;
+  commitEdit(id: string, text: string): void;
+  cancelEdit(): void;
+  pinMenu(node: FbdNode, pin: string, side: "in" | "out", event: MouseEvent): void;
+  /** Online double-click on a variable node (ON-08): a BOOL toggles, any other value opens the write dialog. */
+  valueDoubleClick(node: FbdNode): void;
+}
+
+export const FbdEditorContext = createContext<FbdEditorApi | null>(null);
+
+export function useFbdEditor(): FbdEditorApi {
+  const api = useContext(FbdEditorContext);
+  if (!api) throw new Error("FBD nodes render inside the FBD editor");
+  return api;
+}

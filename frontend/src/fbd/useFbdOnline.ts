@@ -1,0 +1,39 @@
+// Connects the FBD editor to online mode, as useLdOnline does for LD: subscribes the probes and
+// variables of the POU's instance, turns the monitor into the diagram's online view, and offers
+// the operand commands (write, force, release, watch) on simulation paths.
+import { useCallback, useEffect, useMemo, useState } from "react";
+import type { SymbolInfo } from "../generated/api";
+import type { Pou } from "../generated/project";
+import type { LdOnlineActions } from "../ld/editor/LdEditor";
+import { onlineStore, useOnline } from "../online/store";
+import { instanceOf, onlineReadOnly, operandActions } from "../online/useLdOnline";
+import type { FbdBody, Lookup } from "./model";
+import { bindFbd, fbdOnlineView, type FbdOnlineView } from "./online";
+
+export interface FbdOnline {
+  online?: FbdOnlineView;
+  readOnly: string | null;
+  actions?: LdOnlineActions;
+  onVisibleChange(networks: readonly string[]): void;
+}
+
+export function useFbdOnline(pou: Pou, body: FbdBody, lookup: Lookup, symbols: readonly SymbolInfo[]): FbdOnline {
+  const phase = useOnline((s) => s.phase);
+  const monitor = useOnline((s) => s.monitor);
+  const chosen = useOnline((s) => s.instances);
+  const instance = instanceOf(pou, chosen);
+  const key = `fbd:${pou.name}`;
+  const live = phase !== "offline";
+
+  const [visible, setVisible] = useState<ReadonlySet<string> | null>(null);
+  const onVisibleChange = useCallback((networks: readonly string[]) => setVisible(new Set(networks)), []);
+  const binding = useMemo(() => (instance ? bindFbd(body, instance, lookup, symbols, visible ?? undefined) : null), [body, instance, lookup, symbols, visible]);
+  useEffect(() => {
+    onlineStore.getState().subscribe(key, live && binding ? { paths: binding.paths, elements: binding.elements } : null);
+  }, [key, live, binding]);
+  useEffect(() => () => onlineStore.getState().subscribe(key, null), [key]);
+
+  const online = useMemo(() => (live && binding ? fbdOnlineView(monitor, binding) : undefined), [live, binding, monitor]);
+  const actions = useMemo(() => (live && instance ? operandActions(instance, symbols) : undefined), [live, instance, symbols]);
+  return { online, readOnly: onlineReadOnly(pou, live, instance), actions, onVisibleChange };
+}
