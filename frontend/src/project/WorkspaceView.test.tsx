@@ -70,8 +70,11 @@ describe("app shell", () => {
     expect(screen.getByRole("tab", { name: /Main/ }).textContent).toContain("●");
     expect(screen.getByText("Unsaved changes in Main")).toBeTruthy();
     expect(localStorage.getItem("ladderlab:draft:plant")).toContain('"base_revision":"r1"');
+    const listings = () => fetchMock.mock.calls.filter(([url]) => String(url) === "/api/projects").length;
+    const listedBefore = listings();
     fireEvent.keyDown(window, { key: "s", ctrlKey: true });
     expect(await screen.findByText("All changes saved")).toBeTruthy();
+    await waitFor(() => expect(listings()).toBe(listedBefore + 1)); // the project list shows the new revision
     const put = fetchMock.mock.calls.find(([, init]) => init?.method === "PUT")!;
     expect(new Headers(put[1]!.headers).get("If-Match")).toBe('"r1"');
     expect(JSON.parse(String(put[1]!.body)).pous[0].body.networks[0].elements[0].id).toBe("start");

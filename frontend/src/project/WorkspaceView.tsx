@@ -421,6 +421,12 @@ export function WorkspaceView() {
   const save = useWorkspace((s) => s.save);
   const reload = useWorkspace((s) => s.reload);
   const project = useWorkspace((s) => s.project);
+  const revision = useWorkspace((s) => s.revision);
+
+  // A save changes the project's POU count, revision and time: the project list shows them.
+  useEffect(() => {
+    if (revision) void appStore.getState().loadProjects();
+  }, [revision]);
 
   const reveal = useCallback((d: Diagnostic) => {
     const target = focusOf(d);
