@@ -1,20 +1,9 @@
 // Test data for the FBD tests: library entries as GET /api/library lists them and a small
 // network builder (the `result := (var1 + var2) - var3` network of the browser test).
 import type { LibraryEntry, SymbolInfo } from "../generated/api";
+import { entry } from "../ld/fixtures";
 import type { FbdBody, FbdNetwork, Wire } from "./model";
 
-const entry = (name: string, kind: LibraryEntry["kind"], inputs: [string, string][], outputs: [string, string][], extra: Partial<LibraryEntry> = {}): LibraryEntry => ({
-  name,
-  kind,
-  source: "standard",
-  inputs: inputs.map(([n, type]) => ({ name: n, type })),
-  outputs: outputs.map(([n, type]) => ({ name: n, type })),
-  in_outs: [],
-  extensible: false,
-  return_type: null,
-  comment: null,
-  ...extra,
-});
 
 export const LIBRARY: LibraryEntry[] = [
   entry("TON", "function_block", [["IN", "BOOL"], ["PT", "TIME"]], [["Q", "BOOL"], ["ET", "TIME"]]),

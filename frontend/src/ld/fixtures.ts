@@ -6,7 +6,8 @@ import type { LdBody, LdElement, LdNetwork } from "./model";
 
 export const motorMain = main.body as LdBody;
 
-const entry = (name: string, kind: LibraryEntry["kind"], inputs: [string, string][], outputs: [string, string][], extra: Partial<LibraryEntry> = {}): LibraryEntry => ({
+/** A library entry as GET /api/library lists it (LD and FBD tests). */
+export const entry = (name: string, kind: LibraryEntry["kind"], inputs: [string, string][], outputs: [string, string][], extra: Partial<LibraryEntry> = {}): LibraryEntry => ({
   name,
   kind,
   source: "standard",

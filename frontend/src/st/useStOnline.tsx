@@ -5,7 +5,7 @@
 import { useEffect, useMemo, useState, type ReactNode } from "react";
 import type { Pou } from "../generated/project";
 import { ContextMenu } from "../ld/editor/ContextMenu";
-import { ValuePrompt } from "../ld/editor/ValuePrompt";
+import { OperandValuePrompt } from "../ld/editor/ValuePrompt";
 import { onlineOperandItems, operandCommands } from "../online/operandCommands";
 import { onlineStore, useOnline } from "../online/store";
 import { instanceOf } from "../online/useLdOnline";
@@ -65,17 +65,7 @@ export function useStOnline(pou: Pou, body: string, scope: Scope): StOnline {
           />
         </div>
       ) : null}
-      {prompt && view ? (
-        <ValuePrompt
-          title={`${prompt.action === "write" ? "Write" : "Force"} ${prompt.occurrence.text}`}
-          onSubmit={(text) => {
-            setPrompt(null);
-            if (prompt.action === "write") commands.write(prompt.occurrence.text, text);
-            else commands.force(prompt.occurrence.text, text);
-          }}
-          onCancel={() => setPrompt(null)}
-        />
-      ) : null}
+      {prompt && view ? <OperandValuePrompt request={{ operand: prompt.occurrence.text, action: prompt.action }} commands={commands} onDone={() => setPrompt(null)} /> : null}
     </>
   );
   return { live, instance, showValues, setShowValues, view, overlay };

@@ -13,9 +13,11 @@ import type { Diagnostic, FbdOrder, LibraryEntry, SymbolInfo } from "../../gener
 import { BoxPicker } from "../../ld/editor/BoxPicker";
 import { MenuList, type MenuItem } from "../../ld/editor/ContextMenu";
 import { concrete, instanceName, symbolNames, undeclared, type VariableDeclaration } from "../../ld/editor/declare";
-import { DeclareOffer, type LdOnlineActions } from "../../ld/editor/LdEditor";
+import { EditorNotices } from "../../ld/editor/EditorNotices";
+import type { LdOnlineActions } from "../../ld/editor/LdEditor";
 import { OperandEditor } from "../../ld/editor/OperandEditor";
-import { ValuePrompt } from "../../ld/editor/ValuePrompt";
+import { OperandValuePrompt, type ValueRequest } from "../../ld/editor/ValuePrompt";
+import { onlineOperandItems } from "../../online/operandCommands";
 import { canRedo, canUndo, record, redo, undo, type History } from "../../ld/history";
 import { arrange } from "../arrange";
 import { clipOf, parseClip, pasteClip, serializeClip } from "../clipboard";
@@ -110,7 +112,7 @@ export function FbdEditor({
   const [menu, setMenu] = useState<{ x: number; y: number; groups: MenuItem[][] } | null>(null);
   const [message, setMessage] = useState<string | null>(null);
   const [offer, setOffer] = useState<VariableDeclaration | null>(null);
-  const [valuePrompt, setValuePrompt] = useState<{ operand: string; action: "write" | "force" } | null>(null);
+  const [valuePrompt, setValuePrompt] = useState<ValueRequest | null>(null);
 
   const byName = useMemo(() => new Map(library.map((e) => [e.name.toUpperCase(), e])), [library]);
   const lookup = useCallback((call: string) => byName.get(call.toUpperCase()), [byName]);
@@ -298,14 +300,7 @@ export function FbdEditor({
 
   const onlineItems = (operand: string | null): MenuItem[] => {
     if (!onlineActions || !operand) return [];
-    return [
-      { id: "online-write", label: `Write value of ${operand}…`, run: () => setValuePrompt({ operand, action: "write" }) },
-      { id: "online-force-true", label: "Force TRUE", run: () => onlineActions.force(operand, true) },
-      { id: "online-force-false", label: "Force FALSE", run: () => onlineActions.force(operand, false) },
-      { id: "online-force-value", label: "Force value…", run: () => setValuePrompt({ operand, action: "force" }) },
-      { id: "online-release", label: "Release force", run: () => onlineActions.unforce(operand) },
-      { id: "online-watch", label: "Add to watch list", run: () => onlineActions.watch(operand) },
-    ];
+    return onlineOperandItems(operand, onlineActions, (action) => setValuePrompt({ operand, action }));
   };
 
   const nodeMenu = (network: string, node: FbdNode, event: MouseEvent) => {
@@ -518,32 +513,19 @@ export function FbdEditor({
             {tool("Redo", () => onHistoryChange(redo(history)), !locked && canRedo(history), "Redo (Ctrl+Y)")}
           </div>
         </div>
-        {readOnly ? (
-          <div className="ld-banner" role="status">
-            {readOnly}
-            {readOnlyActions}
-          </div>
-        ) : null}
-        {message ? (
-          <div className="ld-message" role="alert">
-            {message}
-            <button type="button" aria-label="Dismiss" onClick={() => setMessage(null)}>
-              ×
-            </button>
-          </div>
-        ) : null}
-        {offer ? (
-          <DeclareOffer
-            key={offer.name}
-            offer={offer}
-            onDeclare={(declaration) => {
-              setOffer(null);
-              onDeclareVariable?.(declaration);
-              root.current?.focus();
-            }}
-            onDismiss={() => setOffer(null)}
-          />
-        ) : null}
+        <EditorNotices
+          readOnly={readOnly}
+          readOnlyActions={readOnlyActions}
+          message={message}
+          onDismissMessage={() => setMessage(null)}
+          offer={offer}
+          onDeclare={(declaration) => {
+            setOffer(null);
+            onDeclareVariable?.(declaration);
+            root.current?.focus();
+          }}
+          onDismissOffer={() => setOffer(null)}
+        />
         <div className="fbd-networks">
           {networks.map((network, index) => (
             <NetworkCanvas
@@ -603,15 +585,13 @@ export function FbdEditor({
         {networks.length === 0 ? <p className="ld-empty-hint">This POU has no networks yet: add a node from the palette, or "Add network".</p> : null}
         {menu ? <MenuList x={menu.x} y={menu.y} groups={menu.groups} onClose={() => setMenu(null)} /> : null}
         {valuePrompt && onlineActions ? (
-          <ValuePrompt
-            title={`${valuePrompt.action === "write" ? "Write" : "Force"} ${valuePrompt.operand}`}
-            onSubmit={(text) => {
+          <OperandValuePrompt
+            request={valuePrompt}
+            commands={onlineActions}
+            onDone={() => {
               setValuePrompt(null);
-              if (valuePrompt.action === "write") onlineActions.write(valuePrompt.operand, text);
-              else onlineActions.force(valuePrompt.operand, text);
               root.current?.focus();
             }}
-            onCancel={() => setValuePrompt(null)}
           />
         ) : null}
         {picker ? (

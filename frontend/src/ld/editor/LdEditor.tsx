@@ -20,7 +20,8 @@ import { guessType, instanceName, symbolNames, undeclared, type VariableDeclarat
 import { extend, navigate, type Direction } from "./navigation";
 import { OperandEditor } from "./OperandEditor";
 import { setDraggedOperand } from "./dragOperand";
-import { ValuePrompt } from "./ValuePrompt";
+import { EditorNotices } from "./EditorNotices";
+import { OperandValuePrompt, type ValueRequest } from "./ValuePrompt";
 import { onlineOperandItems } from "../../online/operandCommands";
 import "../ld.css";
 
@@ -164,7 +165,7 @@ export function LdEditor({
   const drag = useRef<{ ids: string[]; x: number; y: number } | null>(null);
   /** An element whose operand editor opens once the edit that created it has been laid out. */
   const [pendingEdit, setPendingEdit] = useState<string | null>(null);
-  const [valuePrompt, setValuePrompt] = useState<{ operand: string; action: "write" | "force" } | null>(null);
+  const [valuePrompt, setValuePrompt] = useState<ValueRequest | null>(null);
 
   const byName = useMemo(() => new Map(library.map((e) => [e.name.toUpperCase(), e])), [library]);
   const lookup = useCallback((call: string) => byName.get(call.toUpperCase()), [byName]);
@@ -561,31 +562,19 @@ export function LdEditor({
         </button>
       </div>
       {help ? <ShortcutHelp extra={extraShortcuts} onClose={() => setHelp(false)} /> : null}
-      {readOnly ? (
-        <div className="ld-banner" role="status">
-          {readOnly}
-          {readOnlyActions}
-        </div>
-      ) : null}
-      {message ? (
-        <div className="ld-message" role="alert">
-          {message}
-          <button type="button" aria-label="Dismiss" onClick={() => setMessage(null)}>
-            ×
-          </button>
-        </div>
-      ) : null}
-      {offer ? (
-        <DeclareOffer
-          offer={offer}
-          onDeclare={(declaration) => {
-            setOffer(null);
-            onDeclareVariable?.(declaration);
-            root.current?.focus();
-          }}
-          onDismiss={() => setOffer(null)}
-        />
-      ) : null}
+      <EditorNotices
+        readOnly={readOnly}
+        readOnlyActions={readOnlyActions}
+        message={message}
+        onDismissMessage={() => setMessage(null)}
+        offer={offer}
+        onDeclare={(declaration) => {
+          setOffer(null);
+          onDeclareVariable?.(declaration);
+          root.current?.focus();
+        }}
+        onDismissOffer={() => setOffer(null)}
+      />
       <LdDiagram
         body={body}
         layout={layout}
@@ -602,15 +591,10 @@ export function LdEditor({
       {networksOf(body).length === 0 ? <p className="ld-empty-hint">This POU has no networks yet: press Ctrl+Enter or C to start a rung.</p> : null}
       {menu ? <ContextMenu x={menu.x} y={menu.y} ctx={ctx} extra={extraItems()} onClose={() => setMenu(null)} /> : null}
       {valuePrompt && onlineActions ? (
-        <ValuePrompt
-          title={`${valuePrompt.action === "write" ? "Write" : "Force"} ${valuePrompt.operand}`}
-          onSubmit={(text) => {
-            setValuePrompt(null);
-            if (valuePrompt.action === "write") onlineActions.write(valuePrompt.operand, text);
-            else onlineActions.force(valuePrompt.operand, text);
-            root.current?.focus();
-          }}
-          onCancel={() => {
+        <OperandValuePrompt
+          request={valuePrompt}
+          commands={onlineActions}
+          onDone={() => {
             setValuePrompt(null);
             root.current?.focus();
           }}
@@ -661,24 +645,3 @@ function ShortcutHelp({ extra, onClose }: { extra: readonly [string, string][]; 
     </div>
   );
 }
-
-export function DeclareOffer({ offer, onDeclare, onDismiss }: { offer: VariableDeclaration; onDeclare(d: VariableDeclaration): void; onDismiss(): void }) {
-  const [type, setType] = useState(offer.type);
-  return (
-    <div className="ld-declare" role="status">
-      <span>
-        <code>{offer.name}</code> is not declared.
-      </span>
-      <label>
-        Type <input aria-label="Type of the new variable" value={type} onChange={(e) => setType(e.target.value)} spellCheck={false} />
-      </label>
-      <button type="button" onClick={() => onDeclare({ name: offer.name, type: type.trim() || offer.type })}>
-        Declare {offer.name}
-      </button>
-      <button type="button" onClick={onDismiss}>
-        Not now
-      </button>
-    </div>
-  );
-}
-

@@ -1,6 +1,7 @@
 // A small dialog asking for a value to write or force (online mode); the text goes to the server
 // as typed (TRUE, 42, T#5s), which checks it against the variable's type.
 import { useState } from "react";
+import type { LdOnlineActions } from "./LdEditor";
 
 export interface ValuePromptProps {
   title: string;
@@ -39,5 +40,26 @@ export function ValuePrompt({ title, onSubmit, onCancel }: ValuePromptProps) {
         </div>
       </form>
     </div>
+  );
+}
+
+/** A pending "write value…" / "force value…" request on an operand, as the context menus make it. */
+export interface ValueRequest {
+  operand: string;
+  action: "write" | "force";
+}
+
+/** The prompt for `request`, sending the value through `commands`; `onDone` runs after OK or Cancel. */
+export function OperandValuePrompt({ request, commands, onDone }: { request: ValueRequest; commands: Pick<LdOnlineActions, "write" | "force">; onDone(): void }) {
+  return (
+    <ValuePrompt
+      title={`${request.action === "write" ? "Write" : "Force"} ${request.operand}`}
+      onSubmit={(text) => {
+        onDone();
+        if (request.action === "write") commands.write(request.operand, text);
+        else commands.force(request.operand, text);
+      }}
+      onCancel={onDone}
+    />
   );
 }
