@@ -39,13 +39,16 @@ def _ld_program():
     return prog(pou("MAIN", slots, blocks))
 
 
-def test_the_fast_variant_has_no_probe_or_pause_code():
+def test_the_fast_variant_has_no_probe_or_pause_code_and_the_monitor_variant_no_pause_code():
     for program in (_st_program(), _ld_program()):
-        fast, debug = emit_python(program, "fast"), emit_python(program, "debug")
-        assert not any(word in fast for word in ("ll_halt", "ll_pr", "yield", "ll_probes", "E1"))
+        fast, monitor, debug = (emit_python(program, variant) for variant in ("fast", "monitor", "debug"))
+        assert not any(word in fast for word in ("ll_halt", "ll_pr", "yield", "ll_px", "E1"))
+        assert not any(word in monitor for word in ("ll_halt", "yield"))
         assert "if ll_halt[0]: yield (0, self)" in debug
     assert "(yield from f_DOUBLE(self.v_A))" in emit_python(_st_program(), "debug")
-    assert "ll_pr['E1'] = self.v_IN1" in emit_python(_ld_program(), "debug")
+    for variant in ("monitor", "debug"):  # probe 0 of the group 0 that network N1 starts
+        lines = [line.strip() for line in emit_python(_ld_program(), variant).splitlines()]
+        assert lines[lines.index("ll_px[0] = ll_k") + 1] == "ll_pr[0] = self.v_IN1  # 'E1'"
 
 
 def test_the_fast_variant_drops_an_if_that_only_guards_probes_but_keeps_one_whose_test_can_fault():
@@ -56,7 +59,7 @@ def test_the_fast_variant_drops_an_if_that_only_guards_probes_but_keeps_one_whos
     fast = emit_python(prog(main), "fast")
     assert "if self.v_EN" not in fast
     assert fast.count("if ") == 1 and "v_ARR" in fast
-    assert "ll_pr['B1.OUT']" in emit_python(prog(main), "debug")
+    assert "ll_pr[0] = self.v_N  # 'B1.OUT'" in emit_python(prog(main), "monitor")
 
 
 def test_probes_record_values_and_which_elements_ran_this_scan():

@@ -4,7 +4,10 @@ Loops check the watchdog on their back-edge: a local countdown, so reading
 the clock costs one call every ``WATCHDOG_EVERY`` iterations. A POU whose
 blocks are jump targets runs them inside a dispatch loop (``ll_b`` is the
 segment to resume at; a jump sets it and ``continue``s, backward jumps check
-the watchdog). In the debug variant every pause point is
+the watchdog). A long body is split into chunk functions (chunks.py); a jump to
+another chunk returns its target segment. The monitor and debug variants record
+probes (``ll_pr[i] = value``, and ``ll_px[g] = ll_k`` once per straight run of
+code: context.ProbeTable). In the debug variant every pause point is
 ``if ll_halt[id]: yield (id, self)``; the debugger arms ``ll_halt``.
 """
 
@@ -15,6 +18,7 @@ from contextlib import nullcontext
 from ...ir import nodes as ir
 from ...ir import types as t
 from . import names
+from .chunks import ChunkPlan
 from .context import CodegenError, diagnostic, std_fb_class
 from .expressions import Expressions, literal
 from .mentions import calls_in, expression_vars, walk
@@ -26,53 +30,50 @@ from .typeinfo import describe, is_composite, runtime_name, store_code
 
 
 class Statements:
-    def __init__(self, scope: Scope, src: Source) -> None:
+    """Emits the statements of one chunk of a POU body (``plan``: its chunks and segments, chunks.py)."""
+
+    def __init__(self, scope: Scope, src: Source, plan: ChunkPlan, chunk: int = 0) -> None:
         self.scope = scope
         self.module = scope.module
         self.x = Expressions(scope)
         self.src = src
+        self.plan = plan
+        self.chunk = chunk
         self.loops = 0
-        self.segments: dict[str, int] | None = None  # label -> dispatch segment, when the POU jumps
-        self.segment = 0
+        self.segment = plan.first_segment[chunk]
         self.now = "ll_now" if scope.function else "now"
         self.me = "None" if scope.function else "self"
+        self.probes = self.module.probe_table(scope.pou.name) if self.module.probes else None
+        self.group: int | None = None  # the probe group of the straight run of code being emitted
+        self.probed = False  # a probe was emitted: the chunk loads ll_pr, ll_px, ll_k
         self._line: int | None = None
 
     # ------------------------------------------------------------------ blocks
 
-    def body(self, blocks: list[ir.Block]) -> None:
-        jumps = any(isinstance(s, ir.Jump) for b in blocks for s in walk(b.statements))
-        if not jumps:
+    def body(self) -> None:
+        """This chunk's blocks: in a dispatch loop over its segments when the POU jumps."""
+        blocks = self.plan.chunks[self.chunk]
+        if not self.plan.jumps:
             for block in blocks:
                 self.block(block)
             return
-        self.segments = self._segments(blocks)
-        self.src.line("ll_b = 0")
+        for block in self.plan.duplicates:
+            if block in blocks:
+                self._report(f"label {block.label} is used twice", block.origin)
+        if self.plan.inline:
+            self.src.line("ll_b = 0")
         self.src.line(f"ll_wj = {WATCHDOG_EVERY}")
         self.src.line("while True:")
         with self.src.indent():
-            segment = -1
-            for block in blocks:
-                if block.label is not None or segment < 0:
+            segment = self.segment - 1
+            for i, block in enumerate(blocks):
+                if block.label is not None or i == 0:
                     segment += 1
                     self.segment = segment
                     self.src.line(f"if ll_b <= {segment}:")
                 with self.src.indent():
                     self.block(block)
-            self.src.line("break")
-
-    def _segments(self, blocks: list[ir.Block]) -> dict[str, int]:
-        segments: dict[str, int] = {}
-        segment = -1
-        for block in blocks:
-            if block.label is not None or segment < 0:
-                segment += 1
-            if block.label is not None:
-                label = block.label.upper()
-                if label in segments:
-                    self._report(f"label {block.label} is used twice", block.origin)
-                segments[label] = segment
-        return segments
+            self.src.line("break" if self.plan.inline else f"return {self.plan.ends(self.chunk)}")
 
     def block(self, block: ir.Block) -> None:
         origin = block.origin
@@ -87,8 +88,11 @@ class Statements:
 
     def statements(self, statements: list[ir.Stmt]) -> None:
         before = len(self.src.lines)
+        self.group = None
         for s in statements:
             self.statement(s)
+            if not isinstance(s, _STRAIGHT):
+                self.group = None  # what follows may run without what came before (a jump, an IF)
         if all(line.lstrip().startswith("#") for line in self.src.lines[before:]):  # nothing but comments, or nothing
             self.src.line("pass")
 
@@ -135,7 +139,7 @@ class Statements:
             self.src.line(f"{code} = {self.x.stored(value, ty)}")
 
     def _if(self, s: ir.If, oid: int) -> None:
-        if not self.module.debug and _only_probes(s):
+        if not self.module.probes and _only_probes(s):
             return  # e.g. the EN-guarded probes of a box: nothing left to run in the fast variant
         keyword = "if"
         for cond, body in s.branches:
@@ -241,27 +245,41 @@ class Statements:
         self.src.line("break")
 
     def _return(self, s: ir.Return, oid: int) -> None:
-        self.src.line(self.scope.return_statement())
+        if self.plan.inline:
+            self.src.line(self.scope.return_statement())
+        else:  # out of a chunk function: tell execute to stop (chunks.py)
+            self.src.line("return -1" if self.plan.jumps else "return True")
 
     def _jump(self, s: ir.Jump, oid: int) -> None:
-        if s.label.upper() not in (self.segments or {}):
+        target = self.plan.segments.get(s.label.upper()) if self.plan.jumps else None
+        if target is None:
             raise CodegenError(f"jump to unknown label {s.label}")
         if self.loops:
             raise CodegenError("a jump cannot leave a loop")
-        target = self.segments[s.label.upper()]  # type: ignore[index]
         if s.cond is not None:
             self.src.line(f"if {self.x.expr(s.cond)}:")
         with self.src.indent() if s.cond is not None else nullcontext():
+            if self.plan.segment_chunk[target] != self.chunk:  # to another chunk: execute dispatches it
+                if target <= self.segment:  # a back-edge whose countdown would not survive the return
+                    self.src.line(f"ll_wd({oid})")
+                self.src.line(f"return {target}")
+                return
             if target <= self.segment:  # backward (or to its own segment): a loop back-edge
                 self._back_edge("ll_wj", oid)
             self.src.line(f"ll_b = {target}")
             self.src.line("continue")
 
     def _probe(self, s: ir.Probe, oid: int) -> None:
-        if not self.module.debug:
+        if self.probes is None:
             return
-        self.src.line(f"ll_pr[{s.element!r}] = {self.x.expr(s.value)}")
-        self.pause("element", s.origin, s.element)
+        self.probed = True
+        if self.group is None:
+            self.group = self.probes.new_group()
+            self.src.line(f"ll_px[{self.group}] = ll_k")
+        index = self.probes.probe(s.element, self.group)
+        self.src.line(f"ll_pr[{index}] = {self.x.expr(s.value)}  # {names.comment_text(s.element)}")
+        if self.module.debug:
+            self.pause("element", s.origin, s.element)
 
     # ------------------------------------------------------------------ calls
 
@@ -356,6 +374,10 @@ class Statements:
     _HANDLERS = {ir.Assign: _assign, ir.If: _if, ir.Case: _case, ir.For: _for, ir.While: _while,
                  ir.Repeat: _repeat, ir.Exit: _exit, ir.Return: _return, ir.Jump: _jump, ir.Probe: _probe,
                  ir.FbCall: _fbcall, ir.FnCall: _fncall}
+
+
+#: Statements after which the next one runs whenever this one did (faults aside): probes share a group.
+_STRAIGHT = (ir.Assign, ir.Probe, ir.FbCall, ir.FnCall)
 
 
 def _only_probes(s: ir.If) -> bool:
