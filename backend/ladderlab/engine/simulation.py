@@ -341,7 +341,12 @@ class Simulation:
             obj, pou_key = found
             values, stamps = obj.ll_pr, obj.ll_px  # type: ignore[attr-defined]
             pou = self._context.pous[pou_key]
-        table = self._context.probe_table(pou.name)
+        table = self._context.probes_of(pou.name)
+        if table.constants:
+            values = list(values)
+            for index, constant in table.constants.items():  # recorded by the group stamp alone
+                if values[index] is UNSET and any(stamps[g] >= 0 for g in table.groups[index]):
+                    values[index] = constant
         return ProbeView(
             {element: value for element, value in zip(table.elements, values) if value is not UNSET},
             frozenset(element for element, groups in zip(table.elements, table.groups)

@@ -12,6 +12,7 @@ from ...st import stdlib as catalogue
 from ..stdlib import STANDARD_FBS
 from . import names
 from .layout import Layout
+from .runtime import UNSET
 
 COMPILE_ERROR = "ENGINE-COMPILE"
 
@@ -53,9 +54,10 @@ class ProbeTable:
     elements: list[str] = field(default_factory=list)
     groups: list[list[int]] = field(default_factory=list)
     group_count: int = 0
+    constants: dict[int, object] = field(default_factory=dict)  # probes of constants: no store, the value is here
     _index: dict[str, int] = field(default_factory=dict)
 
-    def probe(self, element: str, group: int) -> int:
+    def probe(self, element: str, group: int, constant: object = UNSET) -> int:
         index = self._index.get(element)
         if index is None:
             index = self._index[element] = len(self.elements)
@@ -64,6 +66,8 @@ class ProbeTable:
         groups = self.groups[index]
         if not groups or groups[-1] != group:  # groups are numbered in emission order
             groups.append(group)
+        if constant is not UNSET:
+            self.constants[index] = constant
         return index
 
     def new_group(self) -> int:
@@ -104,7 +108,12 @@ class ModuleContext:
         return self.variant != "fast"
 
     def probe_table(self, pou: str) -> ProbeTable:
+        """The table to number ``pou``'s probes in (code generation)."""
         return self.probe_tables.setdefault(pou.upper(), ProbeTable())
+
+    def probes_of(self, pou: str) -> ProbeTable:
+        """``pou``'s probes (empty when it has none); changes nothing, so any thread may ask."""
+        return self.probe_tables.get(pou.upper()) or ProbeTable()
 
     def origin(self, origin: ir.Origin, statement: ir.Stmt | None = None) -> int:
         self.origins.append(origin)

@@ -23,7 +23,7 @@ from .context import CodegenError, diagnostic, std_fb_class
 from .expressions import Expressions, literal
 from .mentions import calls_in, expression_vars, walk
 from ..values import store_expr
-from .runtime import WATCHDOG_EVERY
+from .runtime import UNSET, WATCHDOG_EVERY
 from .scope import Scope
 from .source import Source
 from .typeinfo import describe, is_composite, runtime_name, store_code
@@ -46,6 +46,8 @@ class Statements:
         self.probes = self.module.probe_table(scope.pou.name) if self.module.probes else None
         self.group: int | None = None  # the probe group of the straight run of code being emitted
         self.probed = False  # a probe was emitted: the chunk loads ll_pr, ll_px, ll_k
+        self._following: ir.Probe | None = None  # the probe after the statement being emitted
+        self._fused = False  # the last assignment also recorded the probe after it
         self._line: int | None = None
 
     # ------------------------------------------------------------------ blocks
@@ -88,11 +90,20 @@ class Statements:
 
     def statements(self, statements: list[ir.Stmt]) -> None:
         before = len(self.src.lines)
-        self.group = None
-        for s in statements:
+        outer, self.group = self.group, None
+        fused = False
+        for i, s in enumerate(statements):
+            if fused:  # the previous statement recorded this probe
+                fused = False
+                continue
+            following = statements[i + 1] if i + 1 < len(statements) else None
+            self._following = following if self.probes is not None and isinstance(following, ir.Probe) else None
+            self._fused = False
             self.statement(s)
-            if not isinstance(s, _STRAIGHT):
-                self.group = None  # what follows may run without what came before (a jump, an IF)
+            fused = isinstance(s, (ir.Assign, ir.FnCall)) and self._fused
+            if not _straight(s):
+                self.group = None  # what follows may run without what came before
+        self.group = outer
         if all(line.lstrip().startswith("#") for line in self.src.lines[before:]):  # nothing but comments, or nothing
             self.src.line("pass")
 
@@ -127,16 +138,31 @@ class Statements:
         self.module.diagnostics.append(diagnostic(message, origin))
 
     def _assign(self, s: ir.Assign, oid: int) -> None:
-        self.store(s.target, s.value)
+        self.store(s.target, s.value, self._take_probe())
 
-    def store(self, target: ir.Var, value: ir.Expr) -> None:
+    def _take_probe(self) -> ir.Probe | None:
+        """The probe right after this statement, which it may record itself (see ``_set``)."""
+        probe, self._following, self._fused = self._following, None, False
+        return probe
+
+    def _set(self, code: str, value: str, probe: ir.Probe | None) -> None:
+        """``code = value``; a ``probe`` of the target or of the very variable stored is recorded in the same
+        statement (``ll_pr[i] = self.v_X = ...``: one load less per element in the monitor variant)."""
+        if probe is not None and isinstance(probe.value, ir.Var) and self.x.expr(probe.value) in (code, value):
+            self.src.line(f"{self._record(probe)} = {code} = {value}  # {names.comment_text(probe.element)}")
+            self._fused = True
+            self._paused(probe)
+        else:
+            self.src.line(f"{code} = {value}")
+
+    def store(self, target: ir.Var, value: ir.Expr, probe: ir.Probe | None = None) -> None:
         code, ty = self.x.access(target)
         if isinstance(ty, t.FbInstance):
             raise CodegenError("an FB instance cannot be assigned")
         if is_composite(ty):
             self.src.line(f"ll_assign({code}, {self.x.expr(value)})")
         else:
-            self.src.line(f"{code} = {self.x.stored(value, ty)}")
+            self._set(code, self.x.stored(value, ty), probe)
 
     def _if(self, s: ir.If, oid: int) -> None:
         if not self.module.probes and _only_probes(s):
@@ -272,12 +298,22 @@ class Statements:
     def _probe(self, s: ir.Probe, oid: int) -> None:
         if self.probes is None:
             return
+        if isinstance(s.value, ir.Const):  # the table holds the value: only the group stamp says it ran
+            value = self.x.const_value(s.value)
+            self.src.line(f"# {self._record(s, value)} is {literal(value)}  # {names.comment_text(s.element)}")
+        else:
+            self.src.line(f"{self._record(s)} = {self.x.expr(s.value)}  # {names.comment_text(s.element)}")
+        self._paused(s)
+
+    def _record(self, s: ir.Probe, constant: object = UNSET) -> str:
+        """Number the probe (opening a group, with its stamp line, when none is open); its store target."""
         self.probed = True
         if self.group is None:
-            self.group = self.probes.new_group()
+            self.group = self.probes.new_group()  # type: ignore[union-attr]
             self.src.line(f"ll_px[{self.group}] = ll_k")
-        index = self.probes.probe(s.element, self.group)
-        self.src.line(f"ll_pr[{index}] = {self.x.expr(s.value)}  # {names.comment_text(s.element)}")
+        return f"ll_pr[{self.probes.probe(s.element, self.group, constant)}]"  # type: ignore[union-attr]
+
+    def _paused(self, s: ir.Probe) -> None:
         if self.module.debug:
             self.pause("element", s.origin, s.element)
 
@@ -339,16 +375,18 @@ class Statements:
         else:
             self.src.line(f"{owner}.{attr} = {self.x.stored(value, pin_type)}")
 
-    def _copy_out(self, source: str, source_type: t.IrType, target: ir.Var, checked: bool = True) -> None:
+    def _copy_out(self, source: str, source_type: t.IrType, target: ir.Var, checked: bool = True,
+                  probe: ir.Probe | None = None) -> None:
         """Copy an FB output pin or a call result into ``target``; ``checked``: already stored in ``source_type``."""
         code, ty = self.x.access(target)
         if is_composite(ty):
             self.src.line(f"ll_assign({code}, {source})")
         else:
-            self.src.line(f"{code} = {store_code(source, source_type, ty, checked=checked)}")
+            self._set(code, store_code(source, source_type, ty, checked=checked), probe)
 
     def _fncall(self, s: ir.FnCall, oid: int) -> None:
         call = s.call
+        probe = self._take_probe() if s.en is None and s.eno is None else None
 
         def emit() -> None:
             if s.eno is not None and not call.user:
@@ -363,7 +401,7 @@ class Statements:
                 return
             result = self.x.expr(call)
             if s.target is not None:
-                self._copy_out(result, call.type, s.target, checked=call.user)
+                self._copy_out(result, call.type, s.target, checked=call.user, probe=probe)
             else:
                 self.src.line(result)
             if s.eno is not None:
@@ -376,8 +414,12 @@ class Statements:
                  ir.FbCall: _fbcall, ir.FnCall: _fncall}
 
 
-#: Statements after which the next one runs whenever this one did (faults aside): probes share a group.
-_STRAIGHT = (ir.Assign, ir.Probe, ir.FbCall, ir.FnCall)
+def _straight(s: ir.Stmt) -> bool:
+    """The next statement runs whenever this one did (faults aside), so probes around it share a group."""
+    if isinstance(s, (ir.Assign, ir.Probe, ir.FbCall, ir.FnCall)):
+        return True
+    return not isinstance(s, (ir.Jump, ir.Return, ir.Exit)) and not any(
+        isinstance(x, (ir.Jump, ir.Return, ir.Exit)) for x in walk([s]))
 
 
 def _only_probes(s: ir.If) -> bool:
