@@ -5,10 +5,10 @@ from __future__ import annotations
 import pytest
 
 from ladderlab.engine.compile import emit_python
-from ladderlab.engine.simulation import Simulation
+from ladderlab.engine.simulation import ProbeView, Simulation
 
-from .irbuild import (BOOL, INT, add, and_, array, assign, c, call, div, fb, fbcall, function, if_, ix, jump, network, not_,
-                      pou, probe, prog, slot, v, while_)
+from .irbuild import (BOOL, INT, TIME, add, and_, array, assign, c, call, div, fb, fbcall, function, if_, ix, jump, m,
+                      network, not_, pou, probe, prog, slot, v, while_)
 
 A, B, X, Y = v("A", INT), v("B", INT), v("X", INT), v("Y", INT)
 
@@ -211,3 +211,22 @@ def test_halted_time_does_not_count_against_the_watchdog_and_faults_work_in_debu
     clock.now += 3600.0  # an hour at the breakpoint
     assert sim.resume() is None
     assert (sim.fault.code, sim.fault.origin.line, sim.fault.values) == ("division_by_zero", 4, {"Q": 0, "I": 5000, "Z": 0})
+
+
+def test_the_monitor_variant_reads_probes_of_variables_nothing_writes_later_after_the_scan():
+    """codegen/deferred.py: IN1 and the TON's Q are read when asked; OUT1 is written after its first probe."""
+    in1, out1, t1 = v("IN1", BOOL), v("OUT1", BOOL), v("T1", fb("TON"))
+    main = pou("MAIN", [slot("IN1", BOOL), slot("OUT1", BOOL), slot("T1", fb("TON"))], [
+        network("N1", [probe("E1", in1), probe("E2", out1), assign(out1, in1),
+                       fbcall(t1, {"IN": in1, "PT": c(20, TIME)}), probe("E3", v("T1", BOOL, m("Q")))])])
+    monitor, debug = Simulation(prog(main), variant="monitor"), Simulation(prog(main), variant="debug")
+    lines = [line.strip() for line in monitor.compiled.source.splitlines()]
+    assert "# ll_pr[0] is read after the scan  # 'E1'" in lines and "ll_pr[1] = self.v_OUT1  # 'E2'" in lines
+    assert "# ll_pr[2] is read after the scan  # 'E3'" in lines
+    assert monitor.probes("MAIN") == debug.probes("MAIN") == (ProbeView({}, frozenset()))  # nothing ran yet
+    for value in (True, True, True, False):
+        for sim in (monitor, debug):
+            sim.write("MAIN.IN1", value)
+            sim.cycle()
+        assert monitor.probes("MAIN") == debug.probes("MAIN")
+    assert debug.probes("MAIN").values == {"E1": False, "E2": True, "E3": False}

@@ -31,6 +31,7 @@ from typing import Callable, Iterator
 from ..ir import nodes as ir
 from ..ir import types as t
 from .codegen import names
+from .codegen.context import ProbeTable
 from .codegen.faults import Fault, make_fault
 from .codegen.runtime import UNSET, Watchdog
 from .compile import CompiledProgram, compile_program
@@ -128,6 +129,9 @@ class Simulation:
             compiled = self._variants.get(variant) or compile_program(self.compiled.program, variant)
         if compiled.variant != variant or compiled.declarations != self.compiled.declarations:
             raise ValueError(f"that is not the {variant} variant of this simulation's program")
+        if self.variant == "monitor":  # the debug code stores every probe: start from complete lists
+            for obj, pou in self._instances_by_path().values():
+                self._read_deferred(obj, self.compiled.generated.context.probes_of(pou))
         self._variants[variant] = compiled
         compiled.install(self._ns)
         self.compiled = compiled
@@ -332,16 +336,17 @@ class Simulation:
         if pou is not None and pou.kind == "function":
             escaped = names.escape(pou.name)
             values, stamps = self._ns[f"ll_pr_{escaped}"], self._ns[f"ll_px_{escaped}"]
+            table = self.compiled.generated.context.probes_of(pou.name)
         else:
-            self._instance_paths()
-            found = self._instances.get(key)
+            found = self._instances_by_path().get(key)
             if found is None:
-                known = [*self._paths.values(), *(p.name for p in self._context.pous.values() if p.kind == "function")]  # type: ignore[union-attr]
+                known = [*self._instance_paths().values(),
+                         *(p.name for p in self._context.pous.values() if p.kind == "function")]
                 raise UnknownPath(f"no POU instance {instance!r}{did_you_mean(instance, known)}")
             obj, pou_key = found
+            table = self.compiled.generated.context.probes_of(pou_key)
+            self._read_deferred(obj, table)
             values, stamps = obj.ll_pr, obj.ll_px  # type: ignore[attr-defined]
-            pou = self._context.pous[pou_key]
-        table = self._context.probes_of(pou.name)
         if table.constants:
             values = list(values)
             for index, constant in table.constants.items():  # recorded by the group stamp alone
@@ -352,7 +357,22 @@ class Simulation:
             frozenset(element for element, groups in zip(table.elements, table.groups)
                       if any(stamps[g] == self._stamp for g in groups)))
 
+    def _read_deferred(self, obj: object, table: ProbeTable) -> None:
+        """Fill in the probes the monitor code reads after the scan (codegen/deferred.py); never-run ones stay unset."""
+        if not table.deferred or self.variant != "monitor":
+            return
+        obj.ll_read_probes()  # type: ignore[attr-defined]
+        values, stamps = obj.ll_pr, obj.ll_px  # type: ignore[attr-defined]
+        for index in table.deferred:
+            if all(stamps[g] < 0 for g in table.groups[index]):
+                values[index] = UNSET
+
     # ------------------------------------------------------------------ instances
+
+    def _instances_by_path(self) -> dict[str, tuple[object, str]]:
+        """Upper-case path -> (user POU instance, upper-case POU name), cached until reset."""
+        self._instance_paths()
+        return self._instances
 
     def _instance_paths(self) -> dict[int, str]:
         """id(user POU instance) -> path (``MAIN``, ``MAIN.FB1``, ``MAIN.ARR[2]``, ``GFB``), cached until reset."""

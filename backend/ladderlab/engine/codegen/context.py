@@ -55,6 +55,7 @@ class ProbeTable:
     groups: list[list[int]] = field(default_factory=list)
     group_count: int = 0
     constants: dict[int, object] = field(default_factory=dict)  # probes of constants: no store, the value is here
+    deferred: list[int] = field(default_factory=list)  # read after the scan by ll_read_probes (codegen/deferred.py)
     _index: dict[str, int] = field(default_factory=dict)
 
     def probe(self, element: str, group: int, constant: object = UNSET) -> int:

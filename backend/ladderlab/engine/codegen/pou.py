@@ -14,12 +14,14 @@ the debug variant they are generators.
 
 from __future__ import annotations
 
+import re
 from contextlib import nullcontext
 
 from ...ir import nodes as ir
 from ...ir import types as t
 from . import names
 from .constructors import construct
+from .deferred import deferred_probes
 from .context import CodegenError, ModuleContext, diagnostic
 from .mentions import calls_in, own_expressions, walk
 from .chunks import ChunkPlan
@@ -164,7 +166,8 @@ def _emit_execute(module: ModuleContext, pou: ir.Pou, scope: Scope, src: Source)
     """``ll_x_NAME(self, now)``: VAR_TEMP initialisation, then the body inline or its chunk functions in order."""
     cls, key = names.pou_class(pou.name), names.escape(pou.name)
     plan = chunk_plan(pou.blocks, chunked=True)
-    calls = []
+    deferred = frozenset(deferred_probes(pou)) if module.variant == "monitor" else frozenset()
+    calls, reads = [], []
     if not plan.inline:
         for number in range(len(plan.chunks)):
             chunk = f"ll_k{number}_{key}"
@@ -174,7 +177,7 @@ def _emit_execute(module: ModuleContext, pou: ir.Pou, scope: Scope, src: Source)
             if first.network is not None:
                 with src.indent():
                     src.line(f"# networks {names.comment_text(first.network)} .. {names.comment_text(last.network)}")
-            _emit_chunk(scope, plan, number, src)
+            reads.append(_emit_chunk(scope, plan, number, src, deferred))
             src.line()
             calls.append(chunk)
     src.piece()
@@ -190,7 +193,7 @@ def _emit_execute(module: ModuleContext, pou: ir.Pou, scope: Scope, src: Source)
                 if value is not None:
                     src.line(f"{_target(place)} = {value}")
         if plan.inline:
-            _emit_chunk(scope, plan, 0, src, prologue_depth=0)
+            reads.append(_emit_chunk(scope, plan, 0, src, deferred, prologue_depth=0))
         elif plan.jumps:
             _emit_dispatch(module, plan, calls, src)
         else:
@@ -202,15 +205,47 @@ def _emit_execute(module: ModuleContext, pou: ir.Pou, scope: Scope, src: Source)
             src.line("yield  # a generator even when no pause point is reached")
     src.line(f"{cls}.execute = ll_x_{key}")
     src.line()
+    if any(reads):
+        _emit_reader(cls, key, reads, src)
 
 
-def _emit_chunk(scope: Scope, plan: ChunkPlan, number: int, src: Source, prologue_depth: int = 1) -> None:
-    """The statements of one chunk, after loading the pages, references and probe lists they use."""
+def _emit_reader(cls: str, key: str, reads: list[list[str]], src: Source) -> None:
+    """``ll_read_probes(self)``: store the deferred probes' values (codegen/deferred.py), one part per chunk."""
+    parts = []
+    for number, lines in enumerate(reads):
+        if lines:
+            parts.append(f"ll_r{number}_{key}")
+            src.piece()
+            src.line(f"def {parts[-1]}(self, ll_pr):")
+            with src.indent():
+                for page in sorted({int(page) for line in lines for page in _PAGE.findall(line)}):
+                    src.line(f"ll_p{page} = self.ll_p{page}")
+                for line in lines:
+                    src.line(line)
+            src.line()
+    src.piece()
+    src.line(f"def ll_r_{key}(self):")
+    with src.indent():
+        src.line("# the probes read after the scan, when a monitor asks")
+        for part in parts:
+            src.line(f"{part}(self, self.ll_pr)")
+    src.line(f"{cls}.ll_read_probes = ll_r_{key}")
+    src.line()
+
+
+_PAGE = re.compile(r"\bll_p(\d+)\.")
+
+
+def _emit_chunk(scope: Scope, plan: ChunkPlan, number: int, src: Source, deferred: frozenset[int],
+                prologue_depth: int = 1) -> list[str]:
+    """The statements of one chunk, after loading the pages, references and probe lists they use.
+
+    Returns the lines reading its deferred probes."""
     module = scope.module
     body = Source()
     body.depth = src.depth + prologue_depth
     scope.pages_used = set()
-    statements = Statements(scope, body, plan, number)
+    statements = Statements(scope, body, plan, number, deferred)
     statements.body()
     with src.indent() if prologue_depth else nullcontext():
         for page in sorted(scope.pages_used):
@@ -224,6 +259,7 @@ def _emit_chunk(scope: Scope, plan: ChunkPlan, number: int, src: Source, prologu
         if module.debug and prologue_depth:
             src.line("return")
             src.line("yield  # a generator even when no pause point is reached")
+    return statements.reads
 
 
 def _emit_dispatch(module: ModuleContext, plan: ChunkPlan, calls: list[str], src: Source) -> None:

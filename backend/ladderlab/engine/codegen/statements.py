@@ -32,7 +32,8 @@ from .typeinfo import describe, is_composite, runtime_name, store_code
 class Statements:
     """Emits the statements of one chunk of a POU body (``plan``: its chunks and segments, chunks.py)."""
 
-    def __init__(self, scope: Scope, src: Source, plan: ChunkPlan, chunk: int = 0) -> None:
+    def __init__(self, scope: Scope, src: Source, plan: ChunkPlan, chunk: int = 0,
+                 deferred: frozenset[int] = frozenset()) -> None:
         self.scope = scope
         self.module = scope.module
         self.x = Expressions(scope)
@@ -48,6 +49,8 @@ class Statements:
         self.probed = False  # a probe was emitted: the chunk loads ll_pr, ll_px, ll_k
         self._following: ir.Probe | None = None  # the probe after the statement being emitted
         self._fused = False  # the last assignment also recorded the probe after it
+        self.deferred = deferred  # id() of the probes read after the scan (deferred.py)
+        self.reads: list[str] = []  # their ``ll_pr[i] = value`` lines, for the chunk's ll_read_probes part
         self._line: int | None = None
 
     # ------------------------------------------------------------------ blocks
@@ -148,8 +151,12 @@ class Statements:
     def _set(self, code: str, value: str, probe: ir.Probe | None) -> None:
         """``code = value``; a ``probe`` of the target or of the very variable stored is recorded in the same
         statement (``ll_pr[i] = self.v_X = ...``: one load less per element in the monitor variant)."""
-        if probe is not None and isinstance(probe.value, ir.Var) and self.x.expr(probe.value) in (code, value):
-            self.src.line(f"{self._record(probe)} = {code} = {value}  # {names.comment_text(probe.element)}")
+        if probe is not None and id(probe) in self.deferred:
+            self.src.line(f"{code} = {value}")
+            self._defer(probe)
+            self._fused = True
+        elif probe is not None and isinstance(probe.value, ir.Var) and self.x.expr(probe.value) in (code, value):
+            self.src.line(f"ll_pr[{self._record(probe)}] = {code} = {value}  # {names.comment_text(probe.element)}")
             self._fused = True
             self._paused(probe)
         else:
@@ -298,20 +305,28 @@ class Statements:
     def _probe(self, s: ir.Probe, oid: int) -> None:
         if self.probes is None:
             return
-        if isinstance(s.value, ir.Const):  # the table holds the value: only the group stamp says it ran
+        if id(s) in self.deferred:
+            self._defer(s)
+        elif isinstance(s.value, ir.Const):  # the table holds the value: only the group stamp says it ran
             value = self.x.const_value(s.value)
-            self.src.line(f"# {self._record(s, value)} is {literal(value)}  # {names.comment_text(s.element)}")
+            self.src.line(f"# ll_pr[{self._record(s, value)}] is {literal(value)}  # {names.comment_text(s.element)}")
         else:
-            self.src.line(f"{self._record(s)} = {self.x.expr(s.value)}  # {names.comment_text(s.element)}")
+            self.src.line(f"ll_pr[{self._record(s)}] = {self.x.expr(s.value)}  # {names.comment_text(s.element)}")
         self._paused(s)
 
-    def _record(self, s: ir.Probe, constant: object = UNSET) -> str:
-        """Number the probe (opening a group, with its stamp line, when none is open); its store target."""
+    def _record(self, s: ir.Probe, constant: object = UNSET) -> int:
+        """Number the probe (opening a group, with its stamp line, when none is open); its index in ``ll_pr``."""
         self.probed = True
         if self.group is None:
             self.group = self.probes.new_group()  # type: ignore[union-attr]
             self.src.line(f"ll_px[{self.group}] = ll_k")
-        return f"ll_pr[{self.probes.probe(s.element, self.group, constant)}]"  # type: ignore[union-attr]
+        return self.probes.probe(s.element, self.group, constant)  # type: ignore[union-attr]
+
+    def _defer(self, s: ir.Probe) -> None:
+        index = self._record(s)
+        self.probes.deferred.append(index)  # type: ignore[union-attr]
+        self.reads.append(f"ll_pr[{index}] = {self.x.expr(s.value)}  # {names.comment_text(s.element)}")
+        self.src.line(f"# ll_pr[{index}] is read after the scan  # {names.comment_text(s.element)}")
 
     def _paused(self, s: ir.Probe) -> None:
         if self.module.debug:
