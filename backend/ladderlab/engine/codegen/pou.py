@@ -184,10 +184,12 @@ def _emit_execute(module: ModuleContext, pou: ir.Pou, scope: Scope, src: Source)
     src.line(f"def ll_x_{key}(self, now):")
     with src.indent():
         src.line(f"# {cls}.execute")
+        loaded: set[int] = set()
         for slot in scope.slots.values():
             if slot.var_class == "VAR_TEMP":
                 place = scope.layout.get(slot.name)  # type: ignore[union-attr]
-                if place.page:
+                if place.page and place.page not in loaded:
+                    loaded.add(place.page)
                     src.line(f"ll_p{place.page} = self.ll_p{place.page}")
                 value = _init_value(module, slot, pou.name)
                 if value is not None:

@@ -63,7 +63,7 @@ class Statements:
                 self.block(block)
             return
         for block in self.plan.duplicates:
-            if block in blocks:
+            if any(block is mine for mine in blocks):
                 self._report(f"label {block.label} is used twice", block.origin)
         if self.plan.inline:
             self.src.line("ll_b = 0")
