@@ -27,6 +27,7 @@ CHUNK_STATEMENTS = 1500
 class ChunkPlan:
     chunks: list[list[ir.Block]]
     jumps: bool  # the POU jumps: blocks run in segments
+    straight: bool = False  # no jump and no RETURN: every block of a chunk runs whenever its first does
     segments: dict[str, int] = field(default_factory=dict)  # upper-case label -> segment
     duplicates: list[ir.Block] = field(default_factory=list)  # blocks repeating an earlier label
     first_segment: list[int] = field(default_factory=list)  # per chunk
@@ -45,18 +46,19 @@ class ChunkPlan:
 def plan(blocks: list[ir.Block], chunked: bool) -> ChunkPlan:
     """Chunks of ``blocks`` (one when not ``chunked``, e.g. a FUNCTION, whose variables are locals) and segments."""
     chunks: list[list[ir.Block]] = [[]]
-    size, jumps = 0, False
+    size, jumps, returns = 0, False, False
     for block in blocks:
         statements = 0
         for s in walk(block.statements):
             statements += 1
             jumps = jumps or isinstance(s, ir.Jump)
+            returns = returns or isinstance(s, ir.Return)
         if chunked and chunks[-1] and size + statements > CHUNK_STATEMENTS:
             chunks.append([])
             size = 0
         chunks[-1].append(block)
         size += statements
-    result = ChunkPlan(chunks, jumps)
+    result = ChunkPlan(chunks, jumps, not (jumps or returns))
     segment = -1
     for number, chunk in enumerate(chunks):
         for i, block in enumerate(chunk):

@@ -89,11 +89,15 @@ class Statements:
         if self.module.debug:
             with self.src.at(self.module.origin(origin)):
                 self.pause("network" if origin.network is not None else "entry", origin)
-        self.statements(block.statements)
+        self.statements(block.statements, own_group=not self.plan.straight)
 
-    def statements(self, statements: list[ir.Stmt]) -> None:
+    def statements(self, statements: list[ir.Stmt], own_group: bool = True) -> None:
+        """``own_group``: the probes here start a group of their own (else the blocks of a straight
+        chunk share one, so a scan stamps it once per chunk)."""
         before = len(self.src.lines)
-        outer, self.group = self.group, None
+        outer = self.group
+        if own_group:
+            self.group = None
         fused = False
         for i, s in enumerate(statements):
             if fused:  # the previous statement recorded this probe
@@ -106,7 +110,8 @@ class Statements:
             fused = isinstance(s, (ir.Assign, ir.FnCall)) and self._fused
             if not _straight(s):
                 self.group = None  # what follows may run without what came before
-        self.group = outer
+        if own_group:
+            self.group = outer
         if all(line.lstrip().startswith("#") for line in self.src.lines[before:]):  # nothing but comments, or nothing
             self.src.line("pass")
 
