@@ -10,6 +10,7 @@ import sys
 from pathlib import Path
 
 from .build import build_project
+from .engine.codegen import VARIANTS
 from .check import check_project
 from .model import has_errors
 from .model.schema import SCHEMA_MODELS, schema_of
@@ -65,7 +66,7 @@ def _parser() -> argparse.ArgumentParser:
     compile_ = sub.add_parser("compile", help="check and compile a project; optionally print the generated Python")
     compile_.add_argument("project", type=Path, help="project folder, project .json file or .st file")
     compile_.add_argument("--emit-python", action="store_true", help="print the generated Python module")
-    compile_.add_argument("--variant", choices=["fast", "debug"], default="fast")
+    compile_.add_argument("--variant", choices=list(VARIANTS), default="fast")
     compile_.set_defaults(func=_compile)
 
     export = sub.add_parser("export", help="export a project as PLCopen XML or IEC ST text")

@@ -5,10 +5,10 @@ from __future__ import annotations
 import pytest
 
 from ladderlab.engine.compile import emit_python
-from ladderlab.engine.simulation import Simulation
+from ladderlab.engine.simulation import ProbeView, Simulation
 
-from .irbuild import (BOOL, INT, add, and_, array, assign, c, call, div, fb, fbcall, function, if_, ix, jump, network, not_,
-                      pou, probe, prog, slot, v, while_)
+from .irbuild import (BOOL, INT, TIME, add, and_, array, assign, c, call, div, fb, fbcall, function, if_, ix, jump, m,
+                      network, not_, pou, probe, prog, slot, v, while_)
 
 A, B, X, Y = v("A", INT), v("B", INT), v("X", INT), v("Y", INT)
 
@@ -39,13 +39,16 @@ def _ld_program():
     return prog(pou("MAIN", slots, blocks))
 
 
-def test_the_fast_variant_has_no_probe_or_pause_code():
+def test_the_fast_variant_has_no_probe_or_pause_code_and_the_monitor_variant_no_pause_code():
     for program in (_st_program(), _ld_program()):
-        fast, debug = emit_python(program, "fast"), emit_python(program, "debug")
-        assert not any(word in fast for word in ("ll_halt", "ll_pr", "yield", "ll_probes", "E1"))
+        fast, monitor, debug = (emit_python(program, variant) for variant in ("fast", "monitor", "debug"))
+        assert not any(word in fast for word in ("ll_halt", "ll_pr", "yield", "ll_px", "E1"))
+        assert not any(word in monitor for word in ("ll_halt", "yield"))
         assert "if ll_halt[0]: yield (0, self)" in debug
     assert "(yield from f_DOUBLE(self.v_A))" in emit_python(_st_program(), "debug")
-    assert "ll_pr['E1'] = self.v_IN1" in emit_python(_ld_program(), "debug")
+    for variant in ("monitor", "debug"):  # probe 0 of the group 0 that network N1 starts
+        lines = [line.strip() for line in emit_python(_ld_program(), variant).splitlines()]
+        assert lines[lines.index("ll_px[0] = ll_k") + 1] == "ll_pr[0] = self.v_IN1  # 'E1'"
 
 
 def test_the_fast_variant_drops_an_if_that_only_guards_probes_but_keeps_one_whose_test_can_fault():
@@ -56,7 +59,7 @@ def test_the_fast_variant_drops_an_if_that_only_guards_probes_but_keeps_one_whos
     fast = emit_python(prog(main), "fast")
     assert "if self.v_EN" not in fast
     assert fast.count("if ") == 1 and "v_ARR" in fast
-    assert "ll_pr['B1.OUT']" in emit_python(prog(main), "debug")
+    assert "ll_pr[0] = self.v_N  # 'B1.OUT'" in emit_python(prog(main), "monitor")
 
 
 def test_probes_record_values_and_which_elements_ran_this_scan():
@@ -225,3 +228,22 @@ def test_halted_time_does_not_count_against_the_watchdog_and_faults_work_in_debu
     clock.now += 3600.0  # an hour at the breakpoint
     assert sim.resume() is None
     assert (sim.fault.code, sim.fault.origin.line, sim.fault.values) == ("division_by_zero", 4, {"Q": 0, "I": 5000, "Z": 0})
+
+
+def test_the_monitor_variant_reads_probes_of_variables_nothing_writes_later_after_the_scan():
+    """codegen/deferred.py: IN1 and the TON's Q are read when asked; OUT1 is written after its first probe."""
+    in1, out1, t1 = v("IN1", BOOL), v("OUT1", BOOL), v("T1", fb("TON"))
+    main = pou("MAIN", [slot("IN1", BOOL), slot("OUT1", BOOL), slot("T1", fb("TON"))], [
+        network("N1", [probe("E1", in1), probe("E2", out1), assign(out1, in1),
+                       fbcall(t1, {"IN": in1, "PT": c(20, TIME)}), probe("E3", v("T1", BOOL, m("Q")))])])
+    monitor, debug = Simulation(prog(main), variant="monitor"), Simulation(prog(main), variant="debug")
+    lines = [line.strip() for line in monitor.compiled.source.splitlines()]
+    assert "# ll_pr[0] is read after the scan  # 'E1'" in lines and "ll_pr[1] = self.v_OUT1  # 'E2'" in lines
+    assert "# ll_pr[2] is read after the scan  # 'E3'" in lines
+    assert monitor.probes("MAIN") == debug.probes("MAIN") == (ProbeView({}, frozenset()))  # nothing ran yet
+    for value in (True, True, True, False):
+        for sim in (monitor, debug):
+            sim.write("MAIN.IN1", value)
+            sim.cycle()
+        assert monitor.probes("MAIN") == debug.probes("MAIN")
+    assert debug.probes("MAIN").values == {"E1": False, "E2": True, "E3": False}

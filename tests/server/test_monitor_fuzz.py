@@ -66,7 +66,7 @@ def session() -> Iterator[tuple[TestClient, WebSocketTestSession, SimRunner]]:
 def state_of(runner: SimRunner) -> tuple:
     sim = runner.sim
     return (runner.state, sim.scan_count, sim.time_ms, sim.snapshot(), sim.forced,
-            frozenset(sim.debugger.breakpoints), sim.halted)
+            frozenset(sim.debugger.breakpoints if sim.debugger else ()), sim.halted, sim.variant)
 
 
 def assert_refused_without_effect(session: tuple, send: Any) -> dict[str, Any]:

@@ -4,8 +4,14 @@
     emit_python(program, variant="debug")                  # the source, for `ladderlab compile --emit-python`
 
 A ``CompiledProgram`` is immutable and may back any number of simulations: each
-one executes the code object in a fresh namespace, so instances, globals and
+one executes the code objects in a fresh namespace, so instances, globals and
 the scan clock are never shared.
+
+The module is compiled piece by piece (codegen.Source.breaks: classes, chunk
+functions, functions), so CPython's syntax tree exists for one piece at a time,
+never for a whole 10,000-network POU (that alone took ~270 MB). Each piece is
+compiled with its line numbers in the whole module, so tracebacks and fault
+locations name lines of ``source``.
 """
 
 from __future__ import annotations
@@ -41,7 +47,7 @@ class CompileError(ValueError):
 class CompiledProgram:
     program: ir.Program
     generated: Generated
-    code: CodeType
+    pieces: tuple[CodeType, ...]
     filename: str
 
     @property
@@ -52,14 +58,25 @@ class CompiledProgram:
     def variant(self) -> str:
         return self.generated.variant
 
+    @property
+    def declarations(self) -> str:
+        """The variant-independent part of the source (classes, globals, probe lists)."""
+        return self.generated.source[:self.generated.pieces[self.generated.code_from][1]]
+
     def namespace(self) -> dict[str, object]:
         """Execute the module in fresh globals: classes, functions and (uninitialised) globals objects."""
         ns = namespace()
-        ns.update(self.generated.bound)
-        if self.generated.variant == "debug":
-            ns["ll_halt"] = [False] * len(self.generated.pauses)
-        exec(self.code, ns)  # noqa: S102 - our own generated source, names validated (codegen.names)
+        for code in self.pieces[:self.generated.code_from]:
+            exec(code, ns)  # noqa: S102 - our own generated source, names validated (codegen.names)
+        self.install(ns)
         return ns
+
+    def install(self, ns: dict[str, object]) -> None:
+        """Put this variant's code into ``ns``, replacing another variant's (same declarations) between scans."""
+        ns.update(self.generated.bound)
+        ns["ll_halt"] = [False] * len(self.generated.pauses)
+        for code in self.pieces[self.generated.code_from:]:
+            exec(code, ns)  # noqa: S102
 
 
 @contextmanager
@@ -83,10 +100,11 @@ def compile_program(program: ir.Program, variant: str = "fast") -> CompiledProgr
             raise CompileError(diagnostics)
         filename = f"<ladderlab-{variant}-{next(_serial)}>"
         try:
-            code = compile(generated.source, filename, "exec")
+            pieces = tuple(compile("\n" * first + generated.source[start:end], filename, "exec")
+                           for first, start, end in generated.pieces)
         except (SyntaxError, RecursionError, MemoryError, ValueError) as error:  # e.g. nesting beyond CPython's limits
             raise CompileError([diagnostic(f"the generated code does not compile: {error}", None)]) from None
-    return CompiledProgram(program, generated, code, filename)
+    return CompiledProgram(program, generated, pieces, filename)
 
 
 def emit_python(program: ir.Program, variant: str = "fast") -> str:

@@ -9,6 +9,11 @@ applies forces again and records its wall time. A fault (PlcRuntimeError,
 watchdog, or any unexpected exception in generated code) stops its task until
 ``reset`` and is kept in ``faults``; the caller's process never sees it.
 
+Variants (docs/runtime.md): ``fast`` (no hooks), ``monitor`` (probes record the
+power flow of every LD/FBD element: ``probes(instance)``), ``debug`` (probes and
+pause points). ``use_variant`` switches between monitor and debug between scans,
+keeping every variable and FB instance: both variants have the same classes.
+
 Debug variant (``variant="debug"``): the scan is a generator that yields at
 armed pause points. ``cycle()`` then returns early with ``halted`` set; while
 halted ``read``/``write``/``force`` act at once, and ``resume()`` / ``step()``
@@ -20,14 +25,15 @@ one thread (see docs/runtime.md).
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Callable, Iterator
 
 from ..ir import nodes as ir
 from ..ir import types as t
 from .codegen import names
+from .codegen.context import ProbeTable
 from .codegen.faults import Fault, make_fault
-from .codegen.runtime import Watchdog
+from .codegen.runtime import UNSET, Watchdog
 from .compile import CompiledProgram, compile_program
 from .debug import Debugger, Halt
 from ..st.symbols import did_you_mean
@@ -65,12 +71,6 @@ class ProbeView:
     executed: frozenset[str]
 
 
-@dataclass
-class _Probes:
-    last: dict[str, dict[str, object]] = field(default_factory=dict)
-    current: dict[str, dict[str, object]] = field(default_factory=dict)
-
-
 class Simulation:
     def __init__(self, program: ir.Program | CompiledProgram, *, variant: str | None = None,
                  watchdog_s: float | dict[str, float] = 1.0, wall_clock: Callable[[], float] = time.perf_counter) -> None:
@@ -81,7 +81,7 @@ class Simulation:
         else:
             compiled = compile_program(program, variant or "fast")
         self.compiled = compiled
-        self.variant = compiled.variant
+        self._variants = {compiled.variant: compiled}
         self._context = compiled.generated.context
         self._ns = compiled.namespace()
         self._clock = wall_clock
@@ -92,7 +92,8 @@ class Simulation:
         self._resolver = Resolver(self._context)
         self.programs: dict[str, object] = {}
         self._roots = Roots(self.programs, self._ns)
-        self.debugger = Debugger(compiled.generated.pauses, self._ns["ll_halt"]) if self.variant == "debug" else None  # type: ignore[arg-type]
+        self.debugger: Debugger | None = None
+        self._stamp = 0  # counts scans started: the stamp probe groups record (ll_scan)
         self._writes: list[tuple[Location, object]] = []
         self._forces: dict[str, tuple[Location, object]] = {}
         self.faults: list[Fault] = []
@@ -103,9 +104,42 @@ class Simulation:
         self._busy = 0.0
         self._watchdog_left = 0.0
         self._paths: dict[int, str] | None = None
-        self._objects: dict[int, object] = {}
-        self._probes = _Probes()
+        self._instances: dict[str, tuple[object, str]] = {}  # upper-case path -> (instance, upper-case POU name)
+        self._attach_debugger()
         self._initialise(warm=False)
+
+    # ------------------------------------------------------------------ variants
+
+    @property
+    def variant(self) -> str:
+        return self.compiled.variant
+
+    def use_variant(self, variant: str, compiled: CompiledProgram | None = None) -> None:
+        """Switch between the monitor and the debug variant between scans; all state stays.
+
+        ``compiled`` is that variant of the same program (compiled now, once, when not given)."""
+        if variant == self.variant:
+            return
+        if {variant, self.variant} != {"monitor", "debug"}:
+            raise ValueError(f"a simulation switches between the monitor and the debug variant only, "
+                             f"not from {self.variant} to {variant}")
+        if self.halted is not None:
+            raise RuntimeError("the simulation is halted: resume(), step() or reset() first")
+        if compiled is None:
+            compiled = self._variants.get(variant) or compile_program(self.compiled.program, variant)
+        if compiled.variant != variant or compiled.declarations != self.compiled.declarations:
+            raise ValueError(f"that is not the {variant} variant of this simulation's program")
+        if self.variant == "monitor":  # the debug code stores every probe: start from complete lists
+            for obj, pou in self._instances_by_path().values():
+                self._read_deferred(obj, self.compiled.generated.context.probes_of(pou))
+        self._variants[variant] = compiled
+        compiled.install(self._ns)
+        self.compiled = compiled
+        self._attach_debugger()
+
+    def _attach_debugger(self) -> None:
+        self.debugger = (Debugger(self.compiled.generated.pauses, self._ns["ll_halt"])  # type: ignore[arg-type]
+                         if self.variant == "debug" else None)
 
     # ------------------------------------------------------------------ state
 
@@ -187,6 +221,8 @@ class Simulation:
         self._apply_writes()
         self._apply_forces()
         self._ns["ll_now"] = now
+        self._stamp += 1
+        self._ns["ll_scan"] = self._stamp
         if self.debugger is None:
             start = self._clock()
             for task in due:
@@ -199,7 +235,6 @@ class Simulation:
                         self._fault(task, error, now)
             self._finish((self._clock() - start) * 1000.0)
             return True
-        self._start_probes()
         self._scan, self._busy = self._debug_scan(now, due), 0.0
         return self._drive()
 
@@ -236,9 +271,6 @@ class Simulation:
         self._apply_forces()
         self.stats.add(elapsed_ms)
         self.scan_count += 1
-        if self.debugger is not None:
-            for key, current in self._probes.current.items():
-                self._probes.last.setdefault(key, {}).update(current)
 
     def _fault(self, task: Task, error: Exception, now: float) -> None:
         task.stopped = True
@@ -292,57 +324,71 @@ class Simulation:
 
     # ------------------------------------------------------------------ probes
 
-    def _probe_sinks(self) -> Iterator[tuple[str, object | None, str | None]]:
-        """(key, instance, function probe global) for every probe dictionary."""
-        for obj_id, path in self._instance_paths().items():
-            yield path, self._objects[obj_id], None
-        for name, pou in self._context.pous.items():
-            if pou.kind == "function":
-                yield name, None, f"{names.function(pou.name)}_probes"
-
-    def _start_probes(self) -> None:
-        current = {}
-        for key, obj, global_name in self._probe_sinks():
-            fresh: dict[str, object] = {}
-            if obj is not None:
-                obj.ll_probes = fresh  # type: ignore[attr-defined]
-            else:
-                self._ns[global_name] = fresh  # type: ignore[index]
-            current[key] = fresh
-        self._probes.current = current
-
     def probes(self, instance: str) -> ProbeView:
-        """Probe values of a POU instance (``MAIN``, ``MAIN.FB1``) or a FUNCTION (by name): debug variant only."""
-        self._debugging()
+        """Probe values of a POU instance (``MAIN``, ``MAIN.FB1``) or a FUNCTION (by name): monitor and debug variants.
+
+        ``values``: the last value each element computed (elements that never ran are left out);
+        ``executed``: the elements that ran in the last scan (while halted: so far in this scan)."""
+        if self.variant == "fast":
+            raise RuntimeError("probes need a simulation built with variant='monitor' or 'debug'")
         key = instance.strip().upper()
-        known = {k.upper(): k for k in self._probes.current} | {k.upper(): k for k in self._probes.last}
-        if key not in known:
-            sinks = [k for k, _, _ in self._probe_sinks()]
-            if key not in {k.upper() for k in sinks}:
-                raise UnknownPath(f"no POU instance {instance!r}{did_you_mean(instance, sinks)}")
-            return ProbeView({}, frozenset())
-        name = known[key]
-        current = self._probes.current.get(name, {})
-        # Halted mid-scan, what already ran shows this scan's values (the rest its last ones); after
-        # a scan ``current`` is already merged into ``last``.
-        return ProbeView({**self._probes.last.get(name, {}), **current}, frozenset(current))
+        pou = self._context.pous.get(key)
+        if pou is not None and pou.kind == "function":
+            escaped = names.escape(pou.name)
+            values, stamps = self._ns[f"ll_pr_{escaped}"], self._ns[f"ll_px_{escaped}"]
+            table = self.compiled.generated.context.probes_of(pou.name)
+        else:
+            found = self._instances_by_path().get(key)
+            if found is None:
+                known = [*self._instance_paths().values(),
+                         *(p.name for p in self._context.pous.values() if p.kind == "function")]
+                raise UnknownPath(f"no POU instance {instance!r}{did_you_mean(instance, known)}")
+            obj, pou_key = found
+            table = self.compiled.generated.context.probes_of(pou_key)
+            self._read_deferred(obj, table)
+            values, stamps = obj.ll_pr, obj.ll_px  # type: ignore[attr-defined]
+        if table.constants:
+            values = list(values)
+            for index, constant in table.constants.items():  # recorded by the group stamp alone
+                if values[index] is UNSET and any(stamps[g] >= 0 for g in table.groups[index]):
+                    values[index] = constant
+        return ProbeView(
+            {element: value for element, value in zip(table.elements, values) if value is not UNSET},
+            frozenset(element for element, groups in zip(table.elements, table.groups)
+                      if any(stamps[g] == self._stamp for g in groups)))
+
+    def _read_deferred(self, obj: object, table: ProbeTable) -> None:
+        """Fill in the probes the monitor code reads after the scan (codegen/deferred.py); never-run ones stay unset."""
+        if not table.deferred or self.variant != "monitor":
+            return
+        obj.ll_read_probes()  # type: ignore[attr-defined]
+        values, stamps = obj.ll_pr, obj.ll_px  # type: ignore[attr-defined]
+        for index in table.deferred:
+            if all(stamps[g] < 0 for g in table.groups[index]):
+                values[index] = UNSET
 
     # ------------------------------------------------------------------ instances
+
+    def _instances_by_path(self) -> dict[str, tuple[object, str]]:
+        """Upper-case path -> (user POU instance, upper-case POU name), cached until reset."""
+        self._instance_paths()
+        return self._instances
 
     def _instance_paths(self) -> dict[int, str]:
         """id(user POU instance) -> path (``MAIN``, ``MAIN.FB1``, ``MAIN.ARR[2]``, ``GFB``), cached until reset."""
         if self._paths is None:
-            self._paths, self._objects = {}, {}
+            self._paths, self._instances = {}, {}
             for key, obj in self.programs.items():
-                self._add_instance(key, obj, self._context.layouts[key])
+                self._add_instance(key, obj, key)
             for place in self._context.globals.places.values():  # type: ignore[union-attr]
                 value = getattr(self._roots.get(("global", "G" if not place.page else f"G{place.page}")), place.attr)
                 self._add_values(place.slot.name, place.slot.type, value)
         return self._paths
 
-    def _add_instance(self, path: str, obj: object, layout) -> None:
+    def _add_instance(self, path: str, obj: object, pou: str) -> None:
         self._paths[id(obj)] = path  # type: ignore[index]
-        self._objects[id(obj)] = obj
+        self._instances[path.upper()] = (obj, pou)
+        layout = self._context.layouts[pou]
         for place in layout.places.values():
             if place.slot.var_class == "VAR_IN_OUT":
                 continue
@@ -351,7 +397,7 @@ class Simulation:
 
     def _add_values(self, path: str, ty: t.IrType, value: object) -> None:
         if isinstance(ty, t.FbInstance) and self._context.user_fb(ty.fb) is not None:
-            self._add_instance(path, value, self._context.layouts[ty.fb.upper()])
+            self._add_instance(path, value, ty.fb.upper())
         elif isinstance(ty, t.Array) and isinstance(ty.element, (t.FbInstance, t.Array, t.Struct)):
             lo = ty.dims[0][0]
             inner = t.Array(ty.element, ty.dims[1:]) if len(ty.dims) > 1 else ty.element

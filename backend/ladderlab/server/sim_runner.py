@@ -13,6 +13,10 @@ POU instances, the forced paths) at most every ``publish_s`` seconds, and at onc
 after a command. Each websocket client diffs the latest frame against what it sent
 last, so the cost of a scan does not grow with the number of clients.
 
+The simulation runs the monitor variant (probes, no pause points) and switches to
+the debug variant only while a breakpoint is set or a scan is halted (a step),
+between scans, keeping all state (``Simulation.use_variant``; ``_fit_variant``).
+
 Listeners hear about state changes, log entries (faults, forces) and new frames,
 from whichever thread made them: they must only hand them over (e.g.
 ``loop.call_soon_threadsafe``). Traces are sampled after every scan into
@@ -28,6 +32,7 @@ from dataclasses import dataclass
 from typing import Callable, Protocol
 
 from ..engine.codegen.faults import Fault
+from ..engine.compile import CompileError
 from ..engine.debug import Halt
 from ..engine.paths import Location, UnknownPath
 from ..engine.simulation import ProbeView, Simulation
@@ -99,7 +104,7 @@ def at_origin(origin: ir.Origin | None, pou: str | None, instance: str | None) -
 
 
 class SimRunner:
-    """Runs ``sim`` (debug variant, for breakpoints and power flow) in its own thread."""
+    """Runs ``sim`` (monitor variant, debug while debugging; or any variant it was built with) in its own thread."""
 
     def __init__(self, sim: Simulation, *, speed: float = 1.0, publish_s: float = 0.02,
                  clock: Callable[[], float] = time.monotonic) -> None:
@@ -220,6 +225,7 @@ class SimRunner:
     def _settle(self, publish: bool = False) -> None:
         """Account for what the engine did since the last call (lock held): scans, faults, halts, state."""
         sim = self.sim
+        self._fit_variant()
         if sim.scan_count != self._seen_scans:
             self._seen_scans = sim.scan_count
             self.traces.sample(sim)
@@ -241,6 +247,23 @@ class SimRunner:
         if status != self._status:
             self._status = status
             self._emit(Status(type="status", state=state, at=status[1]))  # type: ignore[arg-type]
+
+    def _fit_variant(self) -> None:
+        """Debug code only while debugging: a breakpoint is set or a scan is halted; else the monitor code (lock held)."""
+        sim = self.sim
+        if sim.variant not in ("monitor", "debug"):
+            return
+        debugging = sim.halted is not None or (sim.debugger is not None and bool(sim.debugger.breakpoints))
+        if debugging != (sim.variant == "debug"):
+            sim.use_variant("debug" if debugging else "monitor")
+
+    def _needs_debug(self) -> None:
+        """Switch to the debug variant before a breakpoint or step command (compiled on first use; lock held)."""
+        if self.sim.variant == "monitor":
+            try:
+                self.sim.use_variant("debug")
+            except CompileError as error:
+                raise CommandError("bad_state", f"cannot debug this program: {error}") from None
 
     def _fault_log(self, fault: Fault) -> Log:
         return Log(type="log", level="error", message=fault.text(),
@@ -341,22 +364,23 @@ class SimRunner:
         def action() -> None:
             if self._faulted and self.sim.halted is None:
                 raise CommandError("bad_state", "the simulation stopped on a fault: reset it first")
+            self._needs_debug()
             self.sim.step(granularity)
         self._command(action)
 
     def set_breakpoint(self, pou: str, **where: object) -> None:
-        self._command(lambda: self._debug(self.sim.set_breakpoint, pou, **where))
+        self._command(lambda: self._debug("set_breakpoint", pou, **where))
 
     def clear_breakpoint(self, pou: str | None = None, **where: object) -> None:
         if pou is None:
-            self._command(self.sim.clear_breakpoints)
+            self._command(lambda: self.sim.debugger is not None and self.sim.clear_breakpoints())
         else:
-            self._command(lambda: self._debug(self.sim.clear_breakpoint, pou, **where))
+            self._command(lambda: self._debug("clear_breakpoint", pou, **where))
 
-    @staticmethod
-    def _debug(method: Callable[..., object], pou: str, **where: object) -> object:
+    def _debug(self, method: str, pou: str, **where: object) -> object:
+        self._needs_debug()
         try:
-            return method(pou, **where)
+            return getattr(self.sim, method)(pou, **where)
         except ValueError as error:
             raise CommandError("bad_path", str(error)) from None
 
@@ -440,8 +464,7 @@ class SimRunner:
     def _check_elements(self, instance: str, ids: list[str]) -> None:
         """Every id must be a probed element (or pin, ``box.Q``) of the instance's POU."""
         pou = self._pou_of(instance)
-        points = self.sim.debugger.pause_points(pou)  # type: ignore[union-attr]
-        known = {p.element for p in points if p.kind == "element"}
+        known = set(self._ctx.probes_of(pou).elements)
         unknown = [element for element in ids if element not in known]
         if unknown:
             listed = ", ".join(sorted(known)[:30]) or "none: it is not a ladder or FBD POU"

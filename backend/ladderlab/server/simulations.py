@@ -1,8 +1,8 @@
 """Simulation routes: compile a saved project into a live simulation, run, stop, reset, single cycle, delete.
 
-Simulations are built with the debug variant: the online LD/FBD views need per-element
-power flow (probes), and breakpoints need its pause points. It costs about twice the
-fast variant's scan time (docs/architecture.md, "Online mode").
+Simulations are built with the monitor variant: the online LD/FBD views need per-element
+power flow (probes). The runner switches to the debug variant (pause points) while
+breakpoints are set or a step runs (docs/architecture.md, "Online mode").
 """
 
 from __future__ import annotations
@@ -35,10 +35,10 @@ _DESCRIBED = responses(404, 409, 422)
 @router.post("/api/projects/{name}/simulations", status_code=status.HTTP_201_CREATED,
              response_model=SimulationInfo, responses=responses(404, 422, 429))
 def create_simulation(name: str, workspace: WorkspaceDep, registry: RegistryDep, response: Response) -> SimulationInfo:
-    """Compile the saved project (debug variant) into a stopped simulation."""
+    """Compile the saved project (monitor variant) into a stopped simulation."""
     registry.check_room()
     stored = workspace.load(name)
-    build = build_project(stored.project, variant="debug")
+    build = build_project(stored.project, variant="monitor")
     if build.compiled is None or has_errors(build.diagnostics):
         errors = [d for d in build.diagnostics if d.severity == "error"]
         raise ApiError(422, f"project {name!r} does not compile: {summarise(errors)}", build.diagnostics)

@@ -12,6 +12,7 @@ from ...st import stdlib as catalogue
 from ..stdlib import STANDARD_FBS
 from . import names
 from .layout import Layout
+from .runtime import UNSET
 
 COMPILE_ERROR = "ENGINE-COMPILE"
 
@@ -40,9 +41,45 @@ class PausePoint:
 
 
 @dataclass
+class ProbeTable:
+    """The probes of one POU, numbered at code generation.
+
+    Monitoring code stores element ``i``'s value in ``ll_pr[i]`` (a list per POU
+    instance, or per FUNCTION) and, once per straight run of code, the scan's stamp
+    in ``ll_px[g]``: element ``i`` executed in a scan when one of ``groups[i]`` holds
+    that scan's stamp. Numbering depends only on the IR, so the monitor and the
+    debug variant of a program share it (and switch between scans).
+    """
+
+    elements: list[str] = field(default_factory=list)
+    groups: list[list[int]] = field(default_factory=list)
+    group_count: int = 0
+    constants: dict[int, object] = field(default_factory=dict)  # probes of constants: no store, the value is here
+    deferred: list[int] = field(default_factory=list)  # read after the scan by ll_read_probes (codegen/deferred.py)
+    _index: dict[str, int] = field(default_factory=dict)
+
+    def probe(self, element: str, group: int, constant: object = UNSET) -> int:
+        index = self._index.get(element)
+        if index is None:
+            index = self._index[element] = len(self.elements)
+            self.elements.append(element)
+            self.groups.append([])
+        groups = self.groups[index]
+        if not groups or groups[-1] != group:  # groups are numbered in emission order
+            groups.append(group)
+        if constant is not UNSET:
+            self.constants[index] = constant
+        return index
+
+    def new_group(self) -> int:
+        self.group_count += 1
+        return self.group_count - 1
+
+
+@dataclass
 class ModuleContext:
     program: ir.Program
-    debug: bool
+    variant: str
     pous: dict[str, ir.Pou] = field(default_factory=dict)
     layouts: dict[str, Layout] = field(default_factory=dict)
     globals: Layout | None = None
@@ -52,6 +89,7 @@ class ModuleContext:
     #: The statement of each statement origin (its variables are read back for a fault report).
     origin_statements: dict[int, ir.Stmt] = field(default_factory=dict)
     pauses: list[PausePoint] = field(default_factory=list)
+    probe_tables: dict[str, ProbeTable] = field(default_factory=dict)  # upper-case POU name -> its probes
     diagnostics: list[Diagnostic] = field(default_factory=list)
     _bound_keys: dict[object, str] = field(default_factory=dict)
 
@@ -59,6 +97,24 @@ class ModuleContext:
         self.pous = {name.upper(): pou for name, pou in self.program.pous.items()}
         self.layouts = {name: Layout(pou.slots) for name, pou in self.pous.items() if pou.kind != "function"}
         self.globals = Layout(self.program.globals)
+
+    @property
+    def debug(self) -> bool:
+        """Generators with pause points (breakpoints, stepping)."""
+        return self.variant == "debug"
+
+    @property
+    def probes(self) -> bool:
+        """Probes record power flow: the monitor and the debug variant."""
+        return self.variant != "fast"
+
+    def probe_table(self, pou: str) -> ProbeTable:
+        """The table to number ``pou``'s probes in (code generation)."""
+        return self.probe_tables.setdefault(pou.upper(), ProbeTable())
+
+    def probes_of(self, pou: str) -> ProbeTable:
+        """``pou``'s probes (empty when it has none); changes nothing, so any thread may ask."""
+        return self.probe_tables.get(pou.upper()) or ProbeTable()
 
     def origin(self, origin: ir.Origin, statement: ir.Stmt | None = None) -> int:
         self.origins.append(origin)

@@ -65,10 +65,15 @@ class Expressions:
         raise CodegenError(f"unknown expression {type(e).__name__}")
 
     def const(self, c: ir.Const) -> str:
+        return literal(self.const_value(c))
+
+    @staticmethod
+    def const_value(c: ir.Const) -> object:
+        """The engine value of a constant, stored in its type."""
         if is_composite(c.type):
             raise CodegenError(f"a constant of type {describe(c.type)} is not supported")
         try:
-            return literal(store_value(c.value, c.type))
+            return store_value(c.value, c.type)
         except ValueError as error:
             raise CodegenError(f"constant: {error}") from None
 

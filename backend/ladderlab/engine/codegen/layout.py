@@ -34,15 +34,19 @@ class Layout:
             s.name.upper(): Place(s, names.slot(s.name), i // page_size) for i, s in enumerate(stored)
         }
         self.pages = max(1, -(-len(stored) // page_size))
-        self._attrs: list[list[str]] = [[] for _ in range(self.pages)]
+        self._places: list[list[Place]] = [[] for _ in range(self.pages)]
         for place in self.places.values():
-            self._attrs[place.page].append(place.attr)
+            self._places[place.page].append(place)
+        self._attrs = [[place.attr for place in places] for places in self._places]
 
     def get(self, name: str) -> Place | None:
         return self.places.get(name.upper())
 
     def page_attrs(self, page: int) -> list[str]:
         return self._attrs[page]
+
+    def page_places(self, page: int) -> list[Place]:
+        return self._places[page]
 
     def owner(self, instance: str, place: Place) -> str:
         """Source of the object holding ``place`` when the instance is ``instance``."""

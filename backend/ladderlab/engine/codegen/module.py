@@ -11,7 +11,8 @@ from .pou import emit_function, emit_inits, emit_instance_class, emit_struct
 from .scope import global_owner
 from .source import Source
 
-VARIANTS = ("fast", "debug")
+#: fast: no hooks; monitor: probes record power flow; debug: probes and pause points (generators).
+VARIANTS = ("fast", "monitor", "debug")
 
 
 @dataclass
@@ -20,6 +21,8 @@ class Generated:
 
     source: str
     variant: str
+    pieces: list[tuple[int, int, int]]  # compiled separately: (first line, 0-based; start, end in ``source``)
+    code_from: int  # pieces from this one on are the variant's code; those before, declarations
     line_origins: list[int | None]
     origins: list[ir.Origin]
     origin_statements: dict[int, ir.Stmt]
@@ -34,34 +37,61 @@ class Generated:
 
 
 def generate(program: ir.Program, variant: str = "fast") -> Generated:
+    """The module: declarations (classes, globals, probe lists), then the variant's code (execute, functions).
+
+    Declarations depend only on the IR and whether probes exist, so the monitor and
+    debug variants of one program have the same, and a simulation can exchange the code.
+    """
     if variant not in VARIANTS:
         raise ValueError(f"variant must be one of {', '.join(VARIANTS)}, not {variant!r}")
-    module = ModuleContext(program, debug=variant == "debug")
-    src = Source()
-    src.line(f"# LadderLab generated code, {variant} variant: one class per PROGRAM / FUNCTION_BLOCK,")
-    src.line("# one function per FUNCTION. IEC names appear as v_NAME (variables), P_NAME (POUs),")
-    src.line("# f_NAME (functions), S_NAME (structures); ll_* are engine helpers.")
-    src.line()
+    module = ModuleContext(program, variant)
+    decls, code = Source(), Source()
+    decls.line("# LadderLab generated code: one class per PROGRAM / FUNCTION_BLOCK, one function per FUNCTION.")
+    decls.line("# IEC names appear as v_NAME (variables), P_NAME (POUs), f_NAME (functions), S_NAME (structures);")
+    decls.line("# ll_* are engine helpers. Declarations first, then the code of the variant.")
+    decls.line()
+    code.line(f"# ---- {variant} variant: code")
+    code.line()
     for pou in module.pous.values():
         try:
             if pou.kind == "function":
-                emit_function(module, pou, src)
+                emit_function(module, pou, decls, code)
             else:
-                emit_instance_class(module, pou, src)
+                emit_instance_class(module, pou, decls, code)
         except CodegenError as error:
             module.diagnostics.append(diagnostic(str(error), ir.Origin(pou.name)))
-    _emit_globals(module, src)
+    decls.piece()
+    _emit_globals(module, decls)
     emitted: set[str] = set()
     while len(emitted) < len(module.structs):
         for struct, cls in list(module.structs.items()):
             if cls not in emitted:
                 emitted.add(cls)
-                emit_struct(module, struct, cls, src)
+                emit_struct(module, struct, cls, decls)
+    src = Source()
+    src.extend(decls)
+    src.piece()
+    code_line = len(src.lines)
+    src.extend(code)
     return Generated(
-        source=src.text(), variant=variant, line_origins=src.line_origins, origins=module.origins,
+        source=src.text(), variant=variant, pieces=_pieces(src),
+        code_from=sum(1 for first in {0, *src.breaks} if first < code_line),
+        line_origins=src.line_origins, origins=module.origins,
         origin_statements=module.origin_statements, pauses=module.pauses, bound=module.bound, context=module,
         diagnostics=module.diagnostics,
     )
+
+
+def _pieces(src: Source) -> list[tuple[int, int, int]]:
+    """(first line, start, end character in ``src.text()``) of each piece."""
+    starts = sorted({0, *(b for b in src.breaks if b < len(src.lines))})
+    first_lines, offsets, at = set(starts), [], 0
+    for number, line in enumerate(src.lines):
+        if number in first_lines:
+            offsets.append(at)
+        at += len(line) + 1
+    offsets.append(at)
+    return list(zip(starts, offsets, offsets[1:]))
 
 
 def _emit_globals(module: ModuleContext, src: Source) -> None:
@@ -69,16 +99,22 @@ def _emit_globals(module: ModuleContext, src: Source) -> None:
     assert layout is not None
     for slot in program_globals(module):
         module.visit_type(slot.type)
-    for page in range(layout.pages):
+    target = lambda p: f"{global_owner(p.page)}.{p.attr}"  # noqa: E731
+    for page in range(layout.pages):  # each page in its own compile piece
+        src.piece()
         src.line(f"class ll_Globals{page or ''}(ll_Addressable):")
         with src.indent():
             src.line("# VAR_GLOBAL" + (f", page {page}" if page else ""))
             src.line(f"__slots__ = {tuple(layout.page_attrs(page))!r}")
         src.line()
-    src.line("def ll_init_globals(warm):")
-    with src.indent():
-        emit_inits(module, list(layout.places.values()), lambda p: f"{global_owner(p.page)}.{p.attr}", "globals", src)
-    src.line()
+        src.line(f"def ll_init_globals{page or ''}(warm):")
+        with src.indent():
+            emit_inits(module, layout.page_places(page), target, "globals", src)
+            if not page:
+                for later in range(1, layout.pages):
+                    src.line(f"ll_init_globals{later}(warm)")
+        src.line()
+    src.piece()
     for page in range(layout.pages):
         src.line(f"{global_owner(page)} = ll_Globals{page or ''}()")
 

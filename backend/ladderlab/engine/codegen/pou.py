@@ -7,17 +7,25 @@ and ``execute(now)``: the same protocol as the standard FBs (set inputs,
 execute with the scan's clock, read outputs). VAR_TEMP slots are re-initialised
 at every call. A FUNCTION is a Python function of its inputs (then its
 VAR_IN_OUT references) returning its result; its variables are locals (VAR-43).
-In the debug variant ``execute`` and functions are generators.
+Classes are declarations, the same in the monitor and the debug variant;
+``execute`` (with its chunk functions) and functions are code, which differs: in
+the debug variant they are generators.
 """
 
 from __future__ import annotations
+
+import re
+from contextlib import nullcontext
 
 from ...ir import nodes as ir
 from ...ir import types as t
 from . import names
 from .constructors import construct
+from .deferred import deferred_probes
 from .context import CodegenError, ModuleContext, diagnostic
 from .mentions import calls_in, own_expressions, walk
+from .chunks import ChunkPlan
+from .chunks import plan as chunk_plan
 from .scope import Scope
 from .source import Source
 from .statements import Statements
@@ -38,35 +46,49 @@ def _init_value(module: ModuleContext, slot: ir.Slot, pou: str) -> str | None:
     return f"ll_ref({value})" if slot.var_class == "VAR_IN_OUT" else value
 
 
-def emit_instance_class(module: ModuleContext, pou: ir.Pou, src: Source) -> None:
+def emit_instance_class(module: ModuleContext, pou: ir.Pou, decls: Source, code: Source) -> None:
+    """The class (slots, ``__init__``, ``ll_init``) into ``decls``; ``execute`` and its chunks into ``code``.
+
+    ``execute`` is a function bound to the class afterwards (``P_X.execute = ll_x_X``), so a
+    simulation can switch between the monitor and the debug code of its instances between scans.
+    """
     cls = names.pou_class(pou.name)
     layout = module.layouts[pou.name.upper()]
     scope = Scope(module, pou)
     for slot in scope.slots.values():
         module.visit_type(slot.type)
-    for page in range(1, layout.pages):
-        src.line(f"class {cls}_page{page}(ll_Addressable):")
-        with src.indent():
-            src.line(f"__slots__ = {tuple(layout.page_attrs(page))!r}")
-        src.line()
-    src.line(f"class {cls}(ll_Addressable):")
-    with src.indent():
-        src.line(f"# {pou.kind.upper().replace('_', ' ')} {names.comment_text(pou.name)} ({pou.language.upper()})")
-        extra = [f"ll_p{page}" for page in range(1, layout.pages)] + (["ll_probes"] if module.debug else [])
-        src.line(f"__slots__ = {tuple(layout.page_attrs(0) + extra)!r}")
-        src.line()
-        src.line("def __init__(self):")
-        with src.indent():
+    _emit_execute(module, pou, scope, code)  # first: it numbers the probes the class allocates
+    key = names.escape(pou.name)
+    for page in range(1, layout.pages):  # each page in its own compile piece (a 10,000-network POU has 110)
+        decls.piece()
+        decls.line(f"class {cls}_page{page}(ll_Addressable):")
+        with decls.indent():
+            decls.line(f"__slots__ = {tuple(layout.page_attrs(page))!r}")
+        decls.line()
+        decls.line(f"def ll_i{page}_{key}(self, warm):")
+        with decls.indent():
+            decls.line(f"ll_p{page} = self.ll_p{page}")
+            emit_inits(module, layout.page_places(page), _target, pou.name, decls)
+        decls.line()
+    decls.piece()
+    decls.line(f"class {cls}(ll_Addressable):")
+    with decls.indent():
+        decls.line(f"# {pou.kind.upper().replace('_', ' ')} {names.comment_text(pou.name)} ({pou.language.upper()})")
+        extra = [f"ll_p{page}" for page in range(1, layout.pages)] + (["ll_pr", "ll_px"] if module.probes else [])
+        decls.line(f"__slots__ = {tuple(layout.page_attrs(0) + extra)!r}")
+        decls.line()
+        decls.line("def __init__(self):")
+        with decls.indent():
             for page in range(1, layout.pages):
-                src.line(f"self.ll_p{page} = {cls}_page{page}()")
-            if module.debug:
-                src.line("self.ll_probes = {}")
-            src.line("self.ll_init(False)")
-        src.line()
-        _emit_init(module, pou, scope, src)
-        src.line()
-        _emit_execute(module, pou, scope, src)
-    src.line()
+                decls.line(f"self.ll_p{page} = {cls}_page{page}()")
+            if module.probes:
+                table = module.probe_table(pou.name)
+                decls.line(f"self.ll_pr = [ll_unset] * {len(table.elements)}")
+                decls.line(f"self.ll_px = [-1] * {table.group_count}")
+            decls.line("self.ll_init(False)")
+        decls.line()
+        _emit_init(module, pou, scope, decls)
+    decls.line()
 
 
 def _emit_init(module: ModuleContext, pou: ir.Pou, scope: Scope, src: Source) -> None:
@@ -74,9 +96,9 @@ def _emit_init(module: ModuleContext, pou: ir.Pou, scope: Scope, src: Source) ->
     assert layout is not None
     src.line("def ll_init(self, warm):")
     with src.indent():
+        emit_inits(module, layout.page_places(0), _target, pou.name, src)
         for page in range(1, layout.pages):
-            src.line(f"ll_p{page} = self.ll_p{page}")
-        emit_inits(module, list(layout.places.values()), _target, pou.name, src)
+            src.line(f"ll_i{page}_{names.escape(pou.name)}(self, warm)")
 
 
 def emit_inits(module: ModuleContext, places: list, target, owner: str, src: Source) -> None:
@@ -141,31 +163,121 @@ def _target(place) -> str:
 
 
 def _emit_execute(module: ModuleContext, pou: ir.Pou, scope: Scope, src: Source) -> None:
-    body = Source()
-    body.depth = src.depth + 1
-    Statements(scope, body).body(pou.blocks)
-    src.line("def execute(self, now):")
+    """``ll_x_NAME(self, now)``: VAR_TEMP initialisation, then the body inline or its chunk functions in order."""
+    cls, key = names.pou_class(pou.name), names.escape(pou.name)
+    plan = chunk_plan(pou.blocks, chunked=True)
+    deferred = frozenset(deferred_probes(pou)) if module.variant == "monitor" else frozenset()
+    calls, reads = [], []
+    if not plan.inline:
+        for number in range(len(plan.chunks)):
+            chunk = f"ll_k{number}_{key}"
+            src.piece()
+            src.line(f"def {chunk}(self, now{', ll_b' if plan.jumps else ''}):")
+            first, last = plan.chunks[number][0].origin, plan.chunks[number][-1].origin
+            if first.network is not None:
+                with src.indent():
+                    src.line(f"# networks {names.comment_text(first.network)} .. {names.comment_text(last.network)}")
+            reads.append(_emit_chunk(scope, plan, number, src, deferred))
+            src.line()
+            calls.append(chunk)
+    src.piece()
+    src.line(f"def ll_x_{key}(self, now):")
     with src.indent():
+        src.line(f"# {cls}.execute")
+        loaded: set[int] = set()
+        for slot in scope.slots.values():
+            if slot.var_class == "VAR_TEMP":
+                place = scope.layout.get(slot.name)  # type: ignore[union-attr]
+                if place.page and place.page not in loaded:
+                    loaded.add(place.page)
+                    src.line(f"ll_p{place.page} = self.ll_p{place.page}")
+                value = _init_value(module, slot, pou.name)
+                if value is not None:
+                    src.line(f"{_target(place)} = {value}")
+        if plan.inline:
+            reads.append(_emit_chunk(scope, plan, 0, src, deferred, prologue_depth=0))
+        elif plan.jumps:
+            _emit_dispatch(module, plan, calls, src)
+        else:
+            for chunk in calls:
+                call = f"{chunk}(self, now)"
+                src.line(f"if (yield from {call}): return" if module.debug else f"if {call}: return")
+        if module.debug:
+            src.line("return")
+            src.line("yield  # a generator even when no pause point is reached")
+    src.line(f"{cls}.execute = ll_x_{key}")
+    src.line()
+    if any(reads):
+        _emit_reader(cls, key, reads, src)
+
+
+def _emit_reader(cls: str, key: str, reads: list[list[str]], src: Source) -> None:
+    """``ll_read_probes(self)``: store the deferred probes' values (codegen/deferred.py), one part per chunk."""
+    parts = []
+    for number, lines in enumerate(reads):
+        if lines:
+            parts.append(f"ll_r{number}_{key}")
+            src.piece()
+            src.line(f"def {parts[-1]}(self, ll_pr):")
+            with src.indent():
+                for page in sorted({int(page) for line in lines for page in _PAGE.findall(line)}):
+                    src.line(f"ll_p{page} = self.ll_p{page}")
+                for line in lines:
+                    src.line(line)
+            src.line()
+    src.piece()
+    src.line(f"def ll_r_{key}(self):")
+    with src.indent():
+        src.line("# the probes read after the scan, when a monitor asks")
+        for part in parts:
+            src.line(f"{part}(self, self.ll_pr)")
+    src.line(f"{cls}.ll_read_probes = ll_r_{key}")
+    src.line()
+
+
+_PAGE = re.compile(r"\bll_p(\d+)\.")
+
+
+def _emit_chunk(scope: Scope, plan: ChunkPlan, number: int, src: Source, deferred: frozenset[int],
+                prologue_depth: int = 1) -> list[str]:
+    """The statements of one chunk, after loading the pages, references and probe lists they use.
+
+    Returns the lines reading its deferred probes."""
+    module = scope.module
+    body = Source()
+    body.depth = src.depth + prologue_depth
+    scope.pages_used = set()
+    statements = Statements(scope, body, plan, number, deferred)
+    statements.body()
+    with src.indent() if prologue_depth else nullcontext():
         for page in sorted(scope.pages_used):
             src.line(f"ll_p{page} = self.ll_p{page}")
         for slot in scope.in_outs:
             src.line(f"r_{names.escape(slot.name)} = self.{_slot_attr(scope, slot)}")
             _unpack_reference(slot, src)
-        for slot in scope.slots.values():
-            if slot.var_class == "VAR_TEMP":
-                place = scope.layout.get(slot.name)  # type: ignore[union-attr]
-                if place.page and place.page not in scope.pages_used:
-                    src.line(f"ll_p{place.page} = self.ll_p{place.page}")
-                    scope.pages_used.add(place.page)
-                value = _init_value(module, slot, pou.name)
-                if value is not None:
-                    src.line(f"{_target(place)} = {value}")
-        if module.debug:
-            src.line("ll_pr = self.ll_probes")
+        if statements.probed:
+            src.line("ll_pr, ll_px, ll_k = self.ll_pr, self.ll_px, ll_scan")
         src.extend(body)
-        if module.debug:
+        if module.debug and prologue_depth:
             src.line("return")
             src.line("yield  # a generator even when no pause point is reached")
+    return statements.reads
+
+
+def _emit_dispatch(module: ModuleContext, plan: ChunkPlan, calls: list[str], src: Source) -> None:
+    """Run the chunk holding segment ``ll_b`` until one returns -1 (the end, or a RETURN)."""
+    src.line("ll_b = 0")
+    src.line("while ll_b >= 0:")
+    with src.indent():
+        for number, chunk in enumerate(calls):
+            call = f"{chunk}(self, now, ll_b)"
+            run = f"ll_b = yield from {call}" if module.debug else f"ll_b = {call}"
+            if number == len(calls) - 1:
+                src.line("else:")
+            else:
+                src.line(f"{'if' if number == 0 else 'elif'} ll_b < {plan.first_segment[number + 1]}:")
+            with src.indent():
+                src.line(run)
 
 
 def _slot_attr(scope: Scope, slot: ir.Slot) -> str:
@@ -199,23 +311,26 @@ def boxed_locals(pou: ir.Pou) -> set[str]:
     return found
 
 
-def emit_function(module: ModuleContext, pou: ir.Pou, src: Source) -> None:
+def emit_function(module: ModuleContext, pou: ir.Pou, decls: Source, code: Source) -> None:
+    """The function into ``code`` (never chunked: its variables are locals); its probe lists into ``decls``."""
     scope = Scope(module, pou)
     scope.boxed = boxed_locals(pou)
     scope.result_slot()  # raises when missing
     inputs = [s for s in pou.slots if s.var_class == "VAR_INPUT"]
     params = [names.slot(s.name) for s in inputs] + [f"r_{names.escape(s.name)}" for s in scope.in_outs]
     body = Source()
-    body.depth = src.depth + 1
-    Statements(scope, body).body(pou.blocks)
-    src.line(f"def {names.function(pou.name)}({', '.join(params)}):")
-    with src.indent():
-        src.line(f"# FUNCTION {names.comment_text(pou.name)} ({pou.language.upper()})")
+    body.depth = code.depth + 1
+    statements = Statements(scope, body, chunk_plan(pou.blocks, chunked=False))
+    statements.body()
+    code.piece()
+    code.line(f"def {names.function(pou.name)}({', '.join(params)}):")
+    with code.indent():
+        code.line(f"# FUNCTION {names.comment_text(pou.name)} ({pou.language.upper()})")
         for slot in scope.in_outs:
-            _unpack_reference(slot, src)
+            _unpack_reference(slot, code)
         for slot in inputs:
             if slot.name.upper() in scope.boxed:
-                src.line(f"{names.slot(slot.name)} = [{names.slot(slot.name)}]")
+                code.line(f"{names.slot(slot.name)} = [{names.slot(slot.name)}]")
         for slot in scope.slots.values():
             if slot.var_class in ("VAR_INPUT", "VAR_IN_OUT"):
                 continue
@@ -226,16 +341,20 @@ def emit_function(module: ModuleContext, pou: ir.Pou, src: Source) -> None:
                 module.diagnostics.append(diagnostic(f"{slot.name}: {error}", ir.Origin(pou.name)))
                 continue
             boxed = slot.name.upper() in scope.boxed
-            src.line(f"{names.slot(slot.name)} = {'[' + value + ']' if boxed else value}")
+            code.line(f"{names.slot(slot.name)} = {'[' + value + ']' if boxed else value}")
+        if statements.probed:
+            key = names.escape(pou.name)
+            code.line(f"ll_pr, ll_px, ll_k = ll_pr_{key}, ll_px_{key}, ll_scan")
+        code.extend(body)
+        code.line(scope.return_statement())
         if module.debug:
-            src.line(f"ll_pr = {names.function(pou.name)}_probes")
-        src.extend(body)
-        src.line(scope.return_statement())
-        if module.debug:
-            src.line("yield  # a generator even when no pause point is reached")
-    if module.debug:
-        src.line(f"{names.function(pou.name)}_probes = {{}}")
-    src.line()
+            code.line("yield  # a generator even when no pause point is reached")
+    code.line()
+    if module.probes:
+        table = module.probe_table(pou.name)
+        key = names.escape(pou.name)
+        decls.line(f"ll_pr_{key} = [ll_unset] * {len(table.elements)}  # probes of FUNCTION {names.comment_text(pou.name)}")
+        decls.line(f"ll_px_{key} = [-1] * {table.group_count}")
 
 
 def emit_struct(module: ModuleContext, struct: t.Struct, cls: str, src: Source) -> None:

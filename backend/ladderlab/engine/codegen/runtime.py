@@ -142,6 +142,19 @@ class Watchdog:
         return WATCHDOG_EVERY
 
 
+class _Unset:
+    """The value of a probe whose element has never executed."""
+
+    __slots__ = ()
+
+    def __repr__(self) -> str:
+        return "UNSET"
+
+
+#: ``ll_unset``: what a probe list holds for an element that has not executed yet.
+UNSET = _Unset()
+
+
 def _addressable_fbs() -> dict[str, type]:
     return {
         name: type(name, (Addressable, cls), {"__slots__": (), "__doc__": cls.__doc__})
@@ -169,6 +182,8 @@ def namespace() -> dict[str, object]:
         ll_Addressable=Addressable,
         ll_Structure=Structure,
         ll_now=0,
+        ll_scan=0,  # the stamp of the running scan, for probe groups (context.ProbeTable)
+        ll_unset=UNSET,
     )
     ns.update({names.std_fb(name): cls for name, cls in FB_CLASSES.items()})
     return ns

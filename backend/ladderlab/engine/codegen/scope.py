@@ -35,7 +35,7 @@ class Scope:
         self.boxed: set[str] = set()
         self.pages_used: set[int] = set()
         self._temps = 0
-        self._roots: dict[tuple[str, str], tuple[str, t.IrType]] = {}
+        self._roots: dict[tuple[str, str], tuple[str, t.IrType, int]] = {}
 
     def temp(self, prefix: str) -> str:
         self._temps += 1
@@ -64,9 +64,18 @@ class Scope:
         """Source reading (and assignable as) the root slot of ``var``, and the slot's type."""
         key = (var.scope, var.name)
         found = self._roots.get(key)
-        if found is None:  # (a page it needs is already in pages_used: the scope is the cache's lifetime)
-            found = self._roots[key] = self._root(var)
-        return found
+        if found is None:
+            found = self._roots[key] = (*self._root(var), self._page(var))
+        code, ty, page = found
+        if page:  # every chunk function loads the pages its own statements use
+            self.pages_used.add(page)
+        return code, ty
+
+    def _page(self, var: ir.Var) -> int:
+        """The page of a PROGRAM / FUNCTION_BLOCK slot that ``var``'s root lives on (0: ``self``, or not a slot)."""
+        if var.scope == "global" or self.function or self.slot(var).var_class == "VAR_IN_OUT":
+            return 0
+        return self.layout.get(var.name).page  # type: ignore[union-attr]
 
     def _root(self, var: ir.Var) -> tuple[str, t.IrType]:
         slot = self.slot(var)

@@ -3,6 +3,10 @@
 Every emitted line is tagged with the origin index that was current when it
 was written (the statement being generated), so a traceback line number in
 the generated module maps back to an ST line or an LD/FBD network/element.
+
+The module is compiled in pieces (``breaks``: the lines where a new piece
+starts, always between top-level statements), so CPython never holds the
+syntax tree of a whole 10,000-network program at once (engine/compile.py).
 """
 
 from __future__ import annotations
@@ -17,6 +21,12 @@ class Source:
         self.line_origins: list[int | None] = []  # index 0 is line 1
         self.depth = 0
         self.origin: int | None = None
+        self.breaks: list[int] = []  # 0-based line indices where a separately compiled piece starts
+
+    def piece(self) -> None:
+        """Start a new compile piece here (between top-level statements)."""
+        if self.lines and (not self.breaks or self.breaks[-1] != len(self.lines)):
+            self.breaks.append(len(self.lines))
 
     def line(self, text: str = "") -> None:
         self.lines.append("    " * self.depth + text if text else "")
@@ -48,6 +58,7 @@ class Source:
         return None
 
     def extend(self, other: "Source") -> None:
-        """Append the lines of ``other`` (written at its own depth) with their origins."""
+        """Append the lines of ``other`` (written at its own depth) with their origins and piece breaks."""
+        self.breaks.extend(len(self.lines) + b for b in other.breaks)
         self.lines.extend(other.lines)
         self.line_origins.extend(other.line_origins)

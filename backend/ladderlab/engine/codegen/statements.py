@@ -4,7 +4,10 @@ Loops check the watchdog on their back-edge: a local countdown, so reading
 the clock costs one call every ``WATCHDOG_EVERY`` iterations. A POU whose
 blocks are jump targets runs them inside a dispatch loop (``ll_b`` is the
 segment to resume at; a jump sets it and ``continue``s, backward jumps check
-the watchdog). In the debug variant every pause point is
+the watchdog). A long body is split into chunk functions (chunks.py); a jump to
+another chunk returns its target segment. The monitor and debug variants record
+probes (``ll_pr[i] = value``, and ``ll_px[g] = ll_k`` once per straight run of
+code: context.ProbeTable). In the debug variant every pause point is
 ``if ll_halt[id]: yield (id, self)``; the debugger arms ``ll_halt``.
 """
 
@@ -15,64 +18,67 @@ from contextlib import nullcontext
 from ...ir import nodes as ir
 from ...ir import types as t
 from . import names
+from .chunks import ChunkPlan
 from .context import CodegenError, diagnostic, std_fb_class
 from .expressions import Expressions, literal
 from .mentions import calls_in, expression_vars, walk
 from ..values import store_expr
-from .runtime import WATCHDOG_EVERY
+from .runtime import UNSET, WATCHDOG_EVERY
 from .scope import Scope
 from .source import Source
 from .typeinfo import describe, is_composite, runtime_name, store_code
 
 
 class Statements:
-    def __init__(self, scope: Scope, src: Source) -> None:
+    """Emits the statements of one chunk of a POU body (``plan``: its chunks and segments, chunks.py)."""
+
+    def __init__(self, scope: Scope, src: Source, plan: ChunkPlan, chunk: int = 0,
+                 deferred: frozenset[int] = frozenset()) -> None:
         self.scope = scope
         self.module = scope.module
         self.x = Expressions(scope)
         self.src = src
+        self.plan = plan
+        self.chunk = chunk
         self.loops = 0
-        self.segments: dict[str, int] | None = None  # label -> dispatch segment, when the POU jumps
-        self.segment = 0
+        self.segment = plan.first_segment[chunk]
         self.now = "ll_now" if scope.function else "now"
         self.me = "None" if scope.function else "self"
+        self.probes = self.module.probe_table(scope.pou.name) if self.module.probes else None
+        self.group: int | None = None  # the probe group of the straight run of code being emitted
+        self.probed = False  # a probe was emitted: the chunk loads ll_pr, ll_px, ll_k
+        self._following: ir.Probe | None = None  # the probe after the statement being emitted
+        self._fused = False  # the last assignment also recorded the probe after it
+        self.deferred = deferred  # id() of the probes read after the scan (deferred.py)
+        self.reads: list[str] = []  # their ``ll_pr[i] = value`` lines, for the chunk's ll_read_probes part
         self._line: int | None = None
 
     # ------------------------------------------------------------------ blocks
 
-    def body(self, blocks: list[ir.Block]) -> None:
-        jumps = any(isinstance(s, ir.Jump) for b in blocks for s in walk(b.statements))
-        if not jumps:
+    def body(self) -> None:
+        """This chunk's blocks: in a dispatch loop over its segments when the POU jumps."""
+        blocks = self.plan.chunks[self.chunk]
+        if not self.plan.jumps:
             for block in blocks:
                 self.block(block)
             return
-        self.segments = self._segments(blocks)
-        self.src.line("ll_b = 0")
+        for block in self.plan.duplicates:
+            if any(block is mine for mine in blocks):
+                self._report(f"label {block.label} is used twice", block.origin)
+        if self.plan.inline:
+            self.src.line("ll_b = 0")
         self.src.line(f"ll_wj = {WATCHDOG_EVERY}")
         self.src.line("while True:")
         with self.src.indent():
-            segment = -1
-            for block in blocks:
-                if block.label is not None or segment < 0:
+            segment = self.segment - 1
+            for i, block in enumerate(blocks):
+                if block.label is not None or i == 0:
                     segment += 1
                     self.segment = segment
                     self.src.line(f"if ll_b <= {segment}:")
                 with self.src.indent():
                     self.block(block)
-            self.src.line("break")
-
-    def _segments(self, blocks: list[ir.Block]) -> dict[str, int]:
-        segments: dict[str, int] = {}
-        segment = -1
-        for block in blocks:
-            if block.label is not None or segment < 0:
-                segment += 1
-            if block.label is not None:
-                label = block.label.upper()
-                if label in segments:
-                    self._report(f"label {block.label} is used twice", block.origin)
-                segments[label] = segment
-        return segments
+            self.src.line("break" if self.plan.inline else f"return {self.plan.ends(self.chunk)}")
 
     def block(self, block: ir.Block) -> None:
         origin = block.origin
@@ -83,12 +89,29 @@ class Statements:
         if self.module.debug:
             with self.src.at(self.module.origin(origin)):
                 self.pause("network" if origin.network is not None else "entry", origin)
-        self.statements(block.statements)
+        self.statements(block.statements, own_group=not self.plan.straight)
 
-    def statements(self, statements: list[ir.Stmt]) -> None:
+    def statements(self, statements: list[ir.Stmt], own_group: bool = True) -> None:
+        """``own_group``: the probes here start a group of their own (else the blocks of a straight
+        chunk share one, so a scan stamps it once per chunk)."""
         before = len(self.src.lines)
-        for s in statements:
+        outer = self.group
+        if own_group:
+            self.group = None
+        fused = False
+        for i, s in enumerate(statements):
+            if fused:  # the previous statement recorded this probe
+                fused = False
+                continue
+            following = statements[i + 1] if i + 1 < len(statements) else None
+            self._following = following if self.probes is not None and isinstance(following, ir.Probe) else None
+            self._fused = False
             self.statement(s)
+            fused = isinstance(s, (ir.Assign, ir.FnCall)) and self._fused
+            if not _straight(s):
+                self.group = None  # what follows may run without what came before
+        if own_group:
+            self.group = outer
         if all(line.lstrip().startswith("#") for line in self.src.lines[before:]):  # nothing but comments, or nothing
             self.src.line("pass")
 
@@ -123,19 +146,38 @@ class Statements:
         self.module.diagnostics.append(diagnostic(message, origin))
 
     def _assign(self, s: ir.Assign, oid: int) -> None:
-        self.store(s.target, s.value)
+        self.store(s.target, s.value, self._take_probe())
 
-    def store(self, target: ir.Var, value: ir.Expr) -> None:
+    def _take_probe(self) -> ir.Probe | None:
+        """The probe right after this statement, which it may record itself (see ``_set``)."""
+        probe, self._following, self._fused = self._following, None, False
+        return probe
+
+    def _set(self, code: str, value: str, probe: ir.Probe | None) -> None:
+        """``code = value``; a ``probe`` of the target or of the very variable stored is recorded in the same
+        statement (``ll_pr[i] = self.v_X = ...``: one load less per element in the monitor variant)."""
+        if probe is not None and id(probe) in self.deferred:
+            self.src.line(f"{code} = {value}")
+            self._defer(probe)
+            self._fused = True
+        elif probe is not None and isinstance(probe.value, ir.Var) and self.x.expr(probe.value) in (code, value):
+            self.src.line(f"ll_pr[{self._record(probe)}] = {code} = {value}  # {names.comment_text(probe.element)}")
+            self._fused = True
+            self._paused(probe)
+        else:
+            self.src.line(f"{code} = {value}")
+
+    def store(self, target: ir.Var, value: ir.Expr, probe: ir.Probe | None = None) -> None:
         code, ty = self.x.access(target)
         if isinstance(ty, t.FbInstance):
             raise CodegenError("an FB instance cannot be assigned")
         if is_composite(ty):
             self.src.line(f"ll_assign({code}, {self.x.expr(value)})")
         else:
-            self.src.line(f"{code} = {self.x.stored(value, ty)}")
+            self._set(code, self.x.stored(value, ty), probe)
 
     def _if(self, s: ir.If, oid: int) -> None:
-        if not self.module.debug and _only_probes(s):
+        if not self.module.probes and _only_probes(s):
             return  # e.g. the EN-guarded probes of a box: nothing left to run in the fast variant
         keyword = "if"
         for cond, body in s.branches:
@@ -241,27 +283,59 @@ class Statements:
         self.src.line("break")
 
     def _return(self, s: ir.Return, oid: int) -> None:
-        self.src.line(self.scope.return_statement())
+        if self.plan.inline:
+            self.src.line(self.scope.return_statement())
+        else:  # out of a chunk function: tell execute to stop (chunks.py)
+            self.src.line("return -1" if self.plan.jumps else "return True")
 
     def _jump(self, s: ir.Jump, oid: int) -> None:
-        if s.label.upper() not in (self.segments or {}):
+        target = self.plan.segments.get(s.label.upper()) if self.plan.jumps else None
+        if target is None:
             raise CodegenError(f"jump to unknown label {s.label}")
         if self.loops:
             raise CodegenError("a jump cannot leave a loop")
-        target = self.segments[s.label.upper()]  # type: ignore[index]
         if s.cond is not None:
             self.src.line(f"if {self.x.expr(s.cond)}:")
         with self.src.indent() if s.cond is not None else nullcontext():
+            if self.plan.segment_chunk[target] != self.chunk:  # to another chunk: execute dispatches it
+                if target <= self.segment:  # a back-edge whose countdown would not survive the return
+                    self.src.line(f"ll_wd({oid})")
+                self.src.line(f"return {target}")
+                return
             if target <= self.segment:  # backward (or to its own segment): a loop back-edge
                 self._back_edge("ll_wj", oid)
             self.src.line(f"ll_b = {target}")
             self.src.line("continue")
 
     def _probe(self, s: ir.Probe, oid: int) -> None:
-        if not self.module.debug:
+        if self.probes is None:
             return
-        self.src.line(f"ll_pr[{s.element!r}] = {self.x.expr(s.value)}")
-        self.pause("element", s.origin, s.element)
+        if id(s) in self.deferred:
+            self._defer(s)
+        elif isinstance(s.value, ir.Const):  # the table holds the value: only the group stamp says it ran
+            value = self.x.const_value(s.value)
+            self.src.line(f"# ll_pr[{self._record(s, value)}] is {literal(value)}  # {names.comment_text(s.element)}")
+        else:
+            self.src.line(f"ll_pr[{self._record(s)}] = {self.x.expr(s.value)}  # {names.comment_text(s.element)}")
+        self._paused(s)
+
+    def _record(self, s: ir.Probe, constant: object = UNSET) -> int:
+        """Number the probe (opening a group, with its stamp line, when none is open); its index in ``ll_pr``."""
+        self.probed = True
+        if self.group is None:
+            self.group = self.probes.new_group()  # type: ignore[union-attr]
+            self.src.line(f"ll_px[{self.group}] = ll_k")
+        return self.probes.probe(s.element, self.group, constant)  # type: ignore[union-attr]
+
+    def _defer(self, s: ir.Probe) -> None:
+        index = self._record(s)
+        self.probes.deferred.append(index)  # type: ignore[union-attr]
+        self.reads.append(f"ll_pr[{index}] = {self.x.expr(s.value)}  # {names.comment_text(s.element)}")
+        self.src.line(f"# ll_pr[{index}] is read after the scan  # {names.comment_text(s.element)}")
+
+    def _paused(self, s: ir.Probe) -> None:
+        if self.module.debug:
+            self.pause("element", s.origin, s.element)
 
     # ------------------------------------------------------------------ calls
 
@@ -321,16 +395,18 @@ class Statements:
         else:
             self.src.line(f"{owner}.{attr} = {self.x.stored(value, pin_type)}")
 
-    def _copy_out(self, source: str, source_type: t.IrType, target: ir.Var, checked: bool = True) -> None:
+    def _copy_out(self, source: str, source_type: t.IrType, target: ir.Var, checked: bool = True,
+                  probe: ir.Probe | None = None) -> None:
         """Copy an FB output pin or a call result into ``target``; ``checked``: already stored in ``source_type``."""
         code, ty = self.x.access(target)
         if is_composite(ty):
             self.src.line(f"ll_assign({code}, {source})")
         else:
-            self.src.line(f"{code} = {store_code(source, source_type, ty, checked=checked)}")
+            self._set(code, store_code(source, source_type, ty, checked=checked), probe)
 
     def _fncall(self, s: ir.FnCall, oid: int) -> None:
         call = s.call
+        probe = self._take_probe() if s.en is None and s.eno is None else None
 
         def emit() -> None:
             if s.eno is not None and not call.user:
@@ -345,7 +421,7 @@ class Statements:
                 return
             result = self.x.expr(call)
             if s.target is not None:
-                self._copy_out(result, call.type, s.target, checked=call.user)
+                self._copy_out(result, call.type, s.target, checked=call.user, probe=probe)
             else:
                 self.src.line(result)
             if s.eno is not None:
@@ -356,6 +432,14 @@ class Statements:
     _HANDLERS = {ir.Assign: _assign, ir.If: _if, ir.Case: _case, ir.For: _for, ir.While: _while,
                  ir.Repeat: _repeat, ir.Exit: _exit, ir.Return: _return, ir.Jump: _jump, ir.Probe: _probe,
                  ir.FbCall: _fbcall, ir.FnCall: _fncall}
+
+
+def _straight(s: ir.Stmt) -> bool:
+    """The next statement runs whenever this one did (faults aside), so probes around it share a group."""
+    if isinstance(s, (ir.Assign, ir.Probe, ir.FbCall, ir.FnCall)):
+        return True
+    return not isinstance(s, (ir.Jump, ir.Return, ir.Exit)) and not any(
+        isinstance(x, (ir.Jump, ir.Return, ir.Exit)) for x in walk([s]))
 
 
 def _only_probes(s: ir.If) -> bool:
