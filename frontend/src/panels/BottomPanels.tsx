@@ -7,7 +7,7 @@ import { TracePanel } from "../trace/TracePanel";
 import { BreakpointsPanel } from "./BreakpointsPanel";
 import { DiagnosticsPanel } from "./DiagnosticsPanel";
 import { LogPanel } from "./LogPanel";
-import { usePanels, type PanelId } from "./store";
+import { panelsStore, usePanels, type PanelId } from "./store";
 import { WatchPanel } from "./WatchPanel";
 
 export interface BottomPanelsProps {
@@ -41,6 +41,7 @@ export function BottomPanels({ onReveal, pathOfOperand }: BottomPanelsProps) {
   };
   return (
     <section className="bottom-panels" aria-label="Panels" onMouseUp={drop}>
+      <PanelResizer />
       <div className="panel-tabs" role="tablist">
         {tabs.map((t) => (
           <button key={t.id} type="button" role="tab" aria-selected={panel === t.id} onClick={() => show(t.id)}>
@@ -52,5 +53,46 @@ export function BottomPanels({ onReveal, pathOfOperand }: BottomPanelsProps) {
         {body[panel]}
       </div>
     </section>
+  );
+}
+
+/** Step of the keyboard resize (Arrow up/down on the separator). */
+const KEY_STEP_PX = 24;
+
+/**
+ * The top edge of the panels: dragging it up or down (or Arrow up/down when focused) gives the
+ * panels more or less of the height, e.g. for a trace chart.
+ */
+function PanelResizer() {
+  const height = usePanels((s) => s.height);
+  const current = (el: HTMLElement) => panelsStore.getState().height ?? el.parentElement!.getBoundingClientRect().height;
+  const setHeight = (px: number) => panelsStore.getState().setHeight(px, window.innerHeight);
+  return (
+    <div
+      className="panel-resizer"
+      role="separator"
+      aria-orientation="horizontal"
+      aria-label="Resize the panels"
+      aria-valuenow={height ?? undefined}
+      tabIndex={0}
+      onPointerDown={(e) => {
+        e.preventDefault();
+        const startY = e.clientY;
+        const startHeight = current(e.currentTarget);
+        const move = (ev: PointerEvent) => setHeight(startHeight + startY - ev.clientY);
+        const up = () => {
+          window.removeEventListener("pointermove", move);
+          window.removeEventListener("pointerup", up);
+        };
+        window.addEventListener("pointermove", move);
+        window.addEventListener("pointerup", up);
+      }}
+      onKeyDown={(e) => {
+        const step = e.key === "ArrowUp" ? KEY_STEP_PX : e.key === "ArrowDown" ? -KEY_STEP_PX : 0;
+        if (!step) return;
+        e.preventDefault();
+        setHeight(current(e.currentTarget) + step);
+      }}
+    />
   );
 }

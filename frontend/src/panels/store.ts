@@ -26,6 +26,8 @@ export interface PanelsData {
   checking: boolean;
   checkError: string | null;
   focus: Focus | null;
+  /** Height of the panels in px as the user dragged it (null: the layout's default). */
+  height: number | null;
 }
 
 export interface PanelsActions {
@@ -36,6 +38,9 @@ export interface PanelsActions {
   showDiagnostics(diagnostics: Diagnostic[]): void;
   /** Asks the editors to reveal where a diagnostic points. */
   reveal(target: Omit<Focus, "seq">): void;
+  /** Sets the panels' height, kept within PANEL_HEIGHT_LIMITS of the window's height. */
+  setHeight(px: number, windowHeight: number): void;
+  /** Forgets the project's diagnostics and focus (the panel height stays). */
   clear(): void;
 }
 
@@ -48,7 +53,13 @@ export function focusOf(d: Diagnostic): Omit<Focus, "seq"> | null {
   return { pou: d.pou, network: d.network ?? null, element: d.element ?? null, line: d.line ?? null, part };
 }
 
-export const emptyPanels: PanelsData = { panel: "diagnostics", diagnostics: null, checking: false, checkError: null, focus: null };
+export const emptyPanels: PanelsData = { panel: "diagnostics", diagnostics: null, checking: false, checkError: null, focus: null, height: null };
+
+/** The panels stay at least `min` px high and leave the editor at least `editor` px of the window. */
+export const PANEL_HEIGHT_LIMITS = { min: 80, editor: 160 };
+
+export const clampHeight = (px: number, windowHeight: number): number =>
+  Math.round(Math.max(PANEL_HEIGHT_LIMITS.min, Math.min(px, windowHeight - PANEL_HEIGHT_LIMITS.editor)));
 
 export function createPanelsStore(check: (project: string) => Promise<CheckReport> = checkProject): StoreApi<PanelsState> {
   let call = 0;
@@ -67,7 +78,8 @@ export function createPanelsStore(check: (project: string) => Promise<CheckRepor
     },
     showDiagnostics: (diagnostics) => set({ diagnostics, checkError: null, panel: "diagnostics" }),
     reveal: (target) => set({ focus: { ...target, seq: (get().focus?.seq ?? 0) + 1 } }),
-    clear: () => set(emptyPanels),
+    setHeight: (px, windowHeight) => set({ height: clampHeight(px, windowHeight) }),
+    clear: () => set({ ...emptyPanels, height: get().height }),
   }));
 }
 

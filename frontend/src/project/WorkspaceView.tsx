@@ -2,7 +2,7 @@
 // of open POUs with unsaved marks, the LD and FBD editors (online when a simulation runs), the
 // simulation toolbar, the bottom panels, Save (Ctrl+S) and the dialog for a save conflict (reload
 // theirs or overwrite deliberately).
-import { useCallback, useEffect, useMemo, useState, type FormEvent } from "react";
+import { useCallback, useEffect, useMemo, useState, type CSSProperties, type FormEvent } from "react";
 import type { Diagnostic } from "../generated/api";
 import type { LdBody, Pou, Project } from "../generated/project";
 import { LdEditor } from "../ld/editor/LdEditor";
@@ -422,6 +422,7 @@ export function WorkspaceView() {
   const reload = useWorkspace((s) => s.reload);
   const project = useWorkspace((s) => s.project);
   const revision = useWorkspace((s) => s.revision);
+  const panelsHeight = usePanels((s) => s.height);
 
   // A save changes the project's POU count, revision and time: the project list shows them.
   useEffect(() => {
@@ -482,7 +483,7 @@ export function WorkspaceView() {
     );
   }
   return (
-    <div className="workspace">
+    <div className="workspace" style={panelsHeight ? ({ "--panels-height": `${panelsHeight}px` } as CSSProperties) : undefined}>
       <div className="workspace-bar">
         <h2>{name}</h2>
         <span className={`save-state${changed.length ? " dirty" : ""}`} role="status">
