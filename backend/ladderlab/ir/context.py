@@ -43,6 +43,7 @@ class PouContext:
         self._taken: set[str] = set()
         self._counters: dict[str, int] = {}
         self._callees: dict[str, TypeLowering] = {}
+        self._vars: dict[Symbol, Var] = {}  # var_for's answers (IR nodes are immutable); none before edge_preamble
         # Statement-level state of the ST lowering: where calls with EN/ENO are lifted to (None: not allowed
         # here), and how many variable reads / user function calls the current statement evaluated so far.
         self.lifts: list[Stmt] | None = None
@@ -160,6 +161,12 @@ class PouContext:
 
         Inside a POU an R_EDGE/F_EDGE input reads as its detected edge (a hidden slot).
         """
+        var = self._vars.get(symbol)
+        if var is None:
+            var = self._vars[symbol] = self._var_for(symbol)
+        return var
+
+    def _var_for(self, symbol: Symbol) -> Var:
         if symbol.address is not None and symbol.name == symbol.address:
             raise unnamed_address(symbol.address)
         upper = symbol.name.upper()

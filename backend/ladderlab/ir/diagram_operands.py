@@ -13,7 +13,9 @@ hidden slots; ``wire_node`` gives them an AST name the checker resolves
 
 from __future__ import annotations
 
+import copy
 import dataclasses
+import functools
 import re
 from dataclasses import dataclass
 from typing import Any
@@ -66,6 +68,7 @@ class Operands:
         self.lang = lang
         self.wires: dict[str, Symbol] = {}
         self._reads: dict[tuple[str, str], tuple[Expr | None, t.Type, list[Diagnostic]]] = {}
+        self._parsed: dict[str, tuple[ast.Expr | None, list[Diagnostic]]] = {}  # by the parser, never annotated
         self._temps: dict[IrType, list[Var]] = {}
         self._used: dict[IrType, int] = {}
 
@@ -122,22 +125,24 @@ class Operands:
         quick = self._quick_parse(stripped)
         if quick is not None:
             return quick
-        parsed = parse_expression(text, pou=self.ctx.info.name)
-        sink += parsed.diagnostics
-        return parsed.ast if parsed.ok else None
+        if text not in self._parsed:
+            parsed = parse_expression(text, pou=self.ctx.info.name)
+            self._parsed[text] = (parsed.ast if parsed.ok else None, parsed.diagnostics)
+        node, diagnostics = self._parsed[text]
+        sink += diagnostics
+        return copy.deepcopy(node)  # the checker annotates it, and a box's pins are told apart by node identity
 
     def _quick_parse(self, text: str) -> ast.Expr | None:
         """The AST of the common operand shapes without the LALR parser - a declared variable, a member of
         one (``T1.Q``), a decimal integer - exactly as the parser builds them; None for anything else.
         (A generated 10,000-network diagram has some 60,000 operands.)"""
-        span = ast.Span(1, 1, 1, len(text) + 1)
         if _INTEGER.fullmatch(text):
-            return ast.IntLit(int(text), span=span)
+            return ast.IntLit(int(text), span=_one_line(len(text)))
         match = _ACCESS.fullmatch(text)
         if match is None or not self.declared(match.group(1)):
             return None
-        name = ast.Name(match.group(1), span=ast.Span(1, 1, 1, len(match.group(1)) + 1))
-        return ast.Member(name, match.group(2), span=span) if match.group(2) else name
+        name = ast.Name(match.group(1), span=_one_line(len(match.group(1))))
+        return ast.Member(name, match.group(2), span=_one_line(len(text))) if match.group(2) else name
 
     def declared(self, name: str) -> bool:
         """Is ``name`` a variable of this POU or a global? (A declared name is never a keyword, so the parser
@@ -267,6 +272,12 @@ class Operands:
         if any(d.severity == "error" for d in self.ctx.diagnostics[before:]):
             return None
         return self.lower(node, at)
+
+
+@functools.cache
+def _one_line(length: int) -> ast.Span:
+    """The span of an operand text of ``length`` characters on its one line (spans are immutable: shared)."""
+    return ast.Span(1, 1, 1, length + 1)
 
 
 _COMPARE = {"GT": ">", "GE": ">=", "EQ": "=", "LE": "<=", "LT": "<", "NE": "<>"}
