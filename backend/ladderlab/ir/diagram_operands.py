@@ -17,8 +17,7 @@ import copy
 import dataclasses
 import functools
 import re
-from dataclasses import dataclass
-from typing import Any
+from typing import Any, NamedTuple
 
 from ..model.diagnostics import Diagnostic
 from ..st import ast
@@ -37,9 +36,9 @@ _INTEGER = re.compile(r"[0-9]+")
 _ACCESS = re.compile(r"([A-Za-z_][A-Za-z0-9_]*)(?:\.([A-Za-z_][A-Za-z0-9_]*))?")
 
 
-@dataclass(frozen=True)
-class At:
-    """Where a diagnostic of a diagram goes: network, element and pin."""
+class At(NamedTuple):
+    """Where a diagnostic of a diagram goes: network, element and pin. (A tuple: made for every operand and
+    pin of a large diagram, it must be cheap.)"""
 
     network: str
     element: str | None = None

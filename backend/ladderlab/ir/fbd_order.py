@@ -25,7 +25,7 @@ from __future__ import annotations
 import heapq
 import math
 from dataclasses import dataclass, field
-from typing import Protocol
+from typing import NamedTuple, Protocol
 
 from ..model import fbd
 from .diagram_checks import Report
@@ -41,8 +41,7 @@ _KIND = {"block": "block", "input": "input node", "output": "output node", "jump
          "connector": "connector", "continuation": "continuation"}
 
 
-@dataclass(frozen=True)
-class Source:
+class Source(NamedTuple):
     """The output pin feeding an input, after following connectors; ``wire`` is the text naming the wire."""
 
     node: str

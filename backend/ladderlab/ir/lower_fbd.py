@@ -56,6 +56,7 @@ class _Network:
         self.callees: dict[str, tuple[Callee, str | None] | None] = {}
         self.written: set[str] = set()  # root variables the output nodes of this network write
         self.enables: dict[str, Expr] = {}  # block id -> its EN condition (blocks with EN)
+        self.origins: dict[str, Origin] = {}
 
     def lower(self) -> Block:
         self.ops.new_network()
@@ -77,7 +78,11 @@ class _Network:
         return At(self.network.id, node, pin)
 
     def origin(self, node: str) -> Origin:
-        return Origin(self.ctx.name, network=self.network.id, element=node)
+        """One (immutable) origin per node: every statement and probe of the node carries it."""
+        origin = self.origins.get(node)
+        if origin is None:
+            origin = self.origins[node] = Origin(self.ctx.name, network=self.network.id, element=node)
+        return origin
 
     def expr(self, value: PinValue, at: At, what: str, expected: t.Type | None = None) -> tuple[Expr | None, t.Type]:
         """A pin value as an IR expression and its type (operand texts are read and typed here)."""

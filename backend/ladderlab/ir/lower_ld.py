@@ -56,9 +56,10 @@ class _Rung:
         self.network = ""
         self.out: list[Stmt] = []
         self.control: list[Stmt] = []
+        self.origins: dict[str, Origin] = {}
 
     def lower(self, network: ld.LdNetwork) -> Block:
-        self.network, self.out, self.control = network.id, [], []
+        self.network, self.out, self.control, self.origins = network.id, [], [], {}
         self.ops.new_network()
         self.series(network.elements, TRUE, open_end=True)
         label = canonical_label(network.label) if network.label else None
@@ -67,7 +68,11 @@ class _Rung:
 
     # ------------------------------------------------------------ helpers
     def origin(self, element: str) -> Origin:
-        return Origin(self.ctx.name, network=self.network, element=element)
+        """One (immutable) origin per element: every statement and probe of the element carries it."""
+        origin = self.origins.get(element)
+        if origin is None:
+            origin = self.origins[element] = Origin(self.ctx.name, network=self.network, element=element)
+        return origin
 
     def at(self, element: str, pin: str | None = None) -> At:
         return At(self.network, element, pin)
