@@ -13,7 +13,6 @@ hidden slots; ``wire_node`` gives them an AST name the checker resolves
 
 from __future__ import annotations
 
-import copy
 import dataclasses
 import functools
 import re
@@ -68,6 +67,7 @@ class Operands:
         self.wires: dict[str, Symbol] = {}
         self._reads: dict[tuple[str, str], tuple[Expr | None, t.Type, list[Diagnostic]]] = {}
         self._parsed: dict[str, tuple[ast.Expr | None, list[Diagnostic]]] = {}  # by the parser, never annotated
+        self.callees: dict[str, Any] = {}  # upper-case name -> diagram_calls.Callee, resolved once per POU
         self._temps: dict[IrType, list[Var]] = {}
         self._used: dict[IrType, int] = {}
 
@@ -129,7 +129,7 @@ class Operands:
             self._parsed[text] = (parsed.ast if parsed.ok else None, parsed.diagnostics)
         node, diagnostics = self._parsed[text]
         sink += diagnostics
-        return copy.deepcopy(node)  # the checker annotates it, and a box's pins are told apart by node identity
+        return fresh_copy(node)
 
     def _quick_parse(self, text: str) -> ast.Expr | None:
         """The AST of the common operand shapes without the LALR parser - a declared variable, a member of
@@ -280,6 +280,16 @@ def _one_line(length: int) -> ast.Span:
 
 
 _COMPARE = {"GT": ">", "GE": ">=", "EQ": "=", "LE": "<=", "LT": "<", "NE": "<>"}
+
+
+def fresh_copy(node: Any) -> Any:
+    """A copy of a parsed expression tree: new nodes (the checker annotates them, and a box tells its pins apart
+    by node identity), the immutable leaves (spans, names, values) shared."""
+    if isinstance(node, list):
+        return [fresh_copy(item) for item in node]
+    if not dataclasses.is_dataclass(node) or isinstance(node, ast.Span):
+        return node
+    return type(node)(*(fresh_copy(getattr(node, field.name)) for field in dataclasses.fields(node)))
 
 
 def subnodes(node: Any):

@@ -42,11 +42,16 @@ _KIND = {"block": "block", "input": "input node", "output": "output node", "jump
 
 
 class Source(NamedTuple):
-    """The output pin feeding an input, after following connectors; ``wire`` is the text naming the wire."""
+    """The output pin feeding an input, after following connectors; ``via`` the wire that reaches the input."""
 
     node: str
     pin: str
-    wire: str
+    via: fbd.Wire
+
+    @property
+    def wire(self) -> str:
+        """The text naming the wire, for messages."""
+        return wire_text(self.via)
 
 
 @dataclass
@@ -179,7 +184,7 @@ def _follow(wire: fbd.Wire, nodes: dict[str, fbd.FbdNode], wires: dict[tuple[str
     """The block or input node output at the far end of ``wire``, through any connectors."""
     producer = nodes[wire.from_.node]
     if not isinstance(producer, fbd.Continuation):
-        return Source(producer.id, wire.from_.pin.upper(), wire_text(wire))
+        return Source(producer.id, wire.from_.pin.upper(), wire)
     connector = connectors.get(producer.name.upper())
     if connector is None or connector in seen or (connector, SIMPLE_IN) not in wires:
         if report is not None and connector in seen:
@@ -229,7 +234,7 @@ def _explicit_ranks(network: fbd.FbdNetwork, nodes: dict[str, fbd.FbdNode], repo
 def _data_flow_order(nodes: list[str], predecessors: dict[str, set[str]], key) -> list[str]:
     """Kahn's algorithm with a priority key; when only cycles remain, the best-keyed node of a source
     strongly connected component goes first (its incoming cycle wires become feedback)."""
-    component = _components(nodes, predecessors)
+    component: dict[str, int] | None = None  # computed only if a cycle is met
     waiting = {n: set(p) for n, p in predecessors.items()}
     successors: dict[str, list[str]] = {n: [] for n in nodes}
     for node, preds in predecessors.items():
@@ -241,6 +246,7 @@ def _data_flow_order(nodes: list[str], predecessors: dict[str, set[str]], key) -
     done: set[str] = set()
     while len(order) < len(nodes):
         if not ready:  # only cycles are left: start one that nothing outside it still feeds
+            component = component or _components(nodes, predecessors)
             blocked = {component[n] for n in nodes if n not in done
                        for p in waiting[n] if component[p] != component[n]}
             first = min((n for n in nodes if n not in done and component[n] not in blocked), key=key)

@@ -8,6 +8,7 @@ warning; anything else needs an explicit ``*_TO_*`` conversion.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -119,6 +120,7 @@ _UNSIGNED = ["USINT", "UINT", "UDINT", "ULINT"]
 _BITS = ["BYTE", "WORD", "DWORD", "LWORD"]
 
 
+@functools.lru_cache(maxsize=None)  # types are immutable; asked for every pin of every call checked
 def elementary(name: str) -> Type | None:
     canonical = canonical_type_name(name)
     if canonical in ("STRING", "WSTRING"):
