@@ -31,8 +31,7 @@ from .lower_types import LoweringError
 from .nodes import Const, Expr, Var
 from .types import BOOL, IrType
 
-_INTEGER = re.compile(r"[0-9]+")
-_ACCESS = re.compile(r"([A-Za-z_][A-Za-z0-9_]*)(?:\.([A-Za-z_][A-Za-z0-9_]*))?")
+_QUICK = re.compile(r"([0-9]+)|([A-Za-z_][A-Za-z0-9_]*)(?:\.([A-Za-z_][A-Za-z0-9_]*))?")  # integer | name[.member]
 
 
 class At(NamedTuple):
@@ -135,13 +134,16 @@ class Operands:
         """The AST of the common operand shapes without the LALR parser - a declared variable, a member of
         one (``T1.Q``), a decimal integer - exactly as the parser builds them; None for anything else.
         (A generated 10,000-network diagram has some 60,000 operands.)"""
-        if _INTEGER.fullmatch(text):
-            return ast.IntLit(int(text), span=_one_line(len(text)))
-        match = _ACCESS.fullmatch(text)
-        if match is None or not self.declared(match.group(1)):
+        match = _QUICK.fullmatch(text)
+        if match is None:
             return None
-        name = ast.Name(match.group(1), span=_one_line(len(match.group(1))))
-        return ast.Member(name, match.group(2), span=_one_line(len(text))) if match.group(2) else name
+        digits, root, member = match.groups()
+        if digits is not None:
+            return ast.IntLit(int(digits), span=_one_line(len(text)))
+        if not self.declared(root):
+            return None
+        name = ast.Name(root, span=_one_line(len(root)))
+        return ast.Member(name, member, span=_one_line(len(text))) if member is not None else name
 
     def declared(self, name: str) -> bool:
         """Is ``name`` a variable of this POU or a global? (A declared name is never a keyword, so the parser

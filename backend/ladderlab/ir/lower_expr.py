@@ -79,6 +79,8 @@ def lower_to(node: ast.Expr, ctx: PouContext, target: IrType) -> Expr:
 
 def convert(expr: Expr, target: IrType) -> Expr:
     source = expr.type  # type: ignore[union-attr]
+    if source is target:  # the common case: lowered types are mostly shared instances
+        return expr
     if isinstance(source, Elementary | Subrange) and isinstance(target, Elementary | Subrange) \
             and value_type(source) != value_type(target):
         return Convert(expr, value_type(source), value_type(target))

@@ -13,17 +13,20 @@ and the caller uses the parser, which also reports the diagnostics.
 
 from __future__ import annotations
 
+import bisect
 import re
 
 from . import ast
 
-# Tokens as the grammar's lexer sees them (its WS is [ \t\f\r\n]; IDENT is ASCII).
-_TOKEN = re.compile(r"[ \t\f\r]*(?:([A-Za-z_][A-Za-z0-9_]*)|([:;,]))")
-_BLANK = re.compile(r"[ \t\f\r]*")
+# The grammar's lexer: WS is [ \t\f\r\n], IDENT is ASCII.
+_WS = r"[ \t\f\r\n]*"
+_IDENT = r"[A-Za-z_][A-Za-z0-9_]*"
+_WORD = re.compile(rf"{_WS}({_IDENT})")
+_DECL = re.compile(rf"{_WS}({_IDENT}(?:{_WS},{_WS}{_IDENT})*){_WS}:{_WS}({_IDENT}){_WS};")
+_NAME = re.compile(_IDENT)
+_END = re.compile(rf"{_WS}$")
 _KINDS = {"VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_GLOBAL", "VAR_EXTERNAL", "VAR_TEMP"}
 _QUALIFIERS = {"CONSTANT", "RETAIN", "NON_RETAIN", "PERSISTENT"}
-
-Token = tuple[str, int, int]  # text, line, column (1-based, like lark's)
 
 
 def quick_declarations(text: str, keywords: frozenset[str]) -> list[ast.VarBlock] | None:
@@ -31,35 +34,17 @@ def quick_declarations(text: str, keywords: frozenset[str]) -> list[ast.VarBlock
 
     ``keywords``: every keyword of the grammar (upper case); none of them may stand where a name does.
     """
-    tokens = _tokens(text)
-    if tokens is None:
-        return None
-    return _Reader(tokens, keywords).blocks()
-
-
-def _tokens(text: str) -> list[Token] | None:
-    tokens: list[Token] = []
-    for number, line in enumerate(text.split("\n"), 1):
-        position, end = 0, len(line)
-        while position < end:
-            match = _TOKEN.match(line, position)
-            if match is None:
-                if _BLANK.match(line, position).end() != end:  # type: ignore[union-attr]
-                    return None  # a comment, a literal, an operator ...: the parser's job
-                break
-            start = match.start(1) if match.group(1) is not None else match.start(2)
-            tokens.append((match.group(1) or match.group(2), number, start + 1))
-            position = match.end()
-    return tokens
+    return _Reader(text, keywords).blocks()
 
 
 class _Reader:
-    def __init__(self, tokens: list[Token], keywords: frozenset[str]):
-        self.tokens, self.keywords, self.index = tokens, keywords, 0
+    def __init__(self, text: str, keywords: frozenset[str]):
+        self.text, self.keywords, self.position = text, keywords, 0
+        self.lines = [0] + [match.end() for match in re.finditer("\n", text)]  # offset where each line starts
 
     def blocks(self) -> list[ast.VarBlock] | None:
         blocks = []
-        while self.index < len(self.tokens):
+        while not _END.match(self.text, self.position):
             block = self.block()
             if block is None:
                 return None
@@ -67,60 +52,45 @@ class _Reader:
         return blocks
 
     def block(self) -> ast.VarBlock | None:
-        first = self.next()
-        kind = first[0].upper() if first else ""
-        if kind not in _KINDS:
+        kind = _WORD.match(self.text, self.position)
+        if kind is None or kind.group(1).upper() not in _KINDS:
             return None
+        self.position = kind.end()
         qualifiers = []
-        while (token := self.peek()) is not None and token[0].upper() in _QUALIFIERS:
-            qualifiers.append(token[0].upper())
-            self.index += 1
         decls = []
+        while (word := _WORD.match(self.text, self.position)) is not None and word.group(1).upper() in _QUALIFIERS:
+            qualifiers.append(word.group(1).upper())
+            self.position = word.end()
         while True:
-            token = self.peek()
-            if token is None:
+            if word is None:
                 return None
-            if token[0].upper() == "END_VAR":
-                self.index += 1
-                return ast.VarBlock(kind, qualifiers, decls, _span(first, token))
+            if word.group(1).upper() == "END_VAR":
+                self.position = word.end()
+                return ast.VarBlock(kind.group(1).upper(), qualifiers, decls, self.span(kind.start(1), word.end()))
             decl = self.decl()
             if decl is None:
                 return None
             decls.append(decl)
+            word = _WORD.match(self.text, self.position)
 
     def decl(self) -> ast.VarDecl | None:
+        match = _DECL.match(self.text, self.position)
+        if match is None:
+            return None
         names = []
-        while True:
-            name = self.name()
-            if name is None:
+        for name in _NAME.finditer(self.text, match.start(1), match.end(1)):
+            if name.group().upper() in self.keywords:
                 return None
-            names.append(ast.DeclName(name[0], None, _span(name, name)))
-            separator = self.next()
-            if separator is None or separator[0] not in ",:":
-                return None
-            if separator[0] == ":":
-                break
-        type_name = self.name()
-        if type_name is None or (end := self.next()) is None or end[0] != ";":
+            names.append(ast.DeclName(name.group(), None, self.span(name.start(), name.end())))
+        type_name = match.group(2)
+        if type_name.upper() in self.keywords:
             return None
-        spec = ast.NamedType(type_name[0], _span(type_name, type_name))
-        return ast.VarDecl(names, spec, None, None, ast.Span(names[0].span.line, names[0].span.column,
-                                                              spec.span.end_line, spec.span.end_column))
+        self.position = match.end()
+        spec = ast.NamedType(type_name, self.span(match.start(2), match.end(2)))
+        return ast.VarDecl(names, spec, None, None, self.span(match.start(1), match.end(2)))
 
-    def name(self) -> Token | None:
-        token = self.next()
-        if token is None or not (token[0][0].isalpha() or token[0][0] == "_") or token[0].upper() in self.keywords:
-            return None
-        return token
-
-    def next(self) -> Token | None:
-        token = self.peek()
-        self.index += token is not None
-        return token
-
-    def peek(self) -> Token | None:
-        return self.tokens[self.index] if self.index < len(self.tokens) else None
-
-
-def _span(first: Token, last: Token) -> ast.Span:
-    return ast.Span(first[1], first[2], last[1], last[2] + len(last[0]))
+    def span(self, start: int, end: int) -> ast.Span:
+        """Offsets -> 1-based line/column, the end column exclusive (lark's spans); a token is on one line."""
+        line = bisect.bisect_right(self.lines, start)
+        end_line = line if end - start < 2 else bisect.bisect_right(self.lines, end - 1)
+        return ast.Span(line, start - self.lines[line - 1] + 1, end_line, end - self.lines[end_line - 1] + 1)
