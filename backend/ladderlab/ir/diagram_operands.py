@@ -54,7 +54,7 @@ class _WireChecker(BodyChecker):
         self._wires = operands.wires
 
     def lookup(self, name: str) -> Symbol | None:
-        return self._wires.get(name.upper()) or super().lookup(name)
+        return self._wires.get(name.upper()) or BodyChecker.lookup(self, name)
 
 
 class Operands:

@@ -174,7 +174,7 @@ def _widens(source: Elementary, target: Elementary) -> bool:
 
 
 def same(a: Type, b: Type) -> bool:
-    if a is ERROR or b is ERROR:
+    if a is b or a is ERROR or b is ERROR:
         return True
     if isinstance(a, StringType) and isinstance(b, StringType):
         return a.wide == b.wide
