@@ -57,10 +57,14 @@ class _Network:
         self.written: set[str] = set()  # root variables the output nodes of this network write
         self.enables: dict[str, Expr] = {}  # block id -> its EN condition (blocks with EN)
         self.origins: dict[str, Origin] = {}
+        self.used_pins: dict[str, set[str]] = {}  # producer id -> its output pins that feed something
 
     def lower(self) -> Block:
         self.ops.new_network()
         self.graph = graph = analyse(self.network, self.ctx.report)
+        for sources in graph.inputs.values():  # once per network, not a scan of all wires per block
+            for source in sources.values():
+                self.used_pins.setdefault(source.node, set()).add(source.pin)
         self.written = {name for node in graph.nodes.values() if isinstance(node, fbd.OutputNode)
                         for name in root_names(node.var)}
         for node in graph.nodes.values():
@@ -249,7 +253,7 @@ class _Network:
         """Wires from the block and pin flags name pins it has; EN/ENO need ``en``; edges are for inputs.
         (Wires into unknown inputs are reported by the call check, with ST's messages.)"""
         outputs = callee.output_names() + (["ENO"] if node.en else [])
-        used = {s.pin for sources in self.graph.inputs.values() for s in sources.values() if s.node == node.id}
+        used = self.used_pins.get(node.id, set())
         wired = set(self.graph.inputs.get(node.id, {}))
         problems: list[tuple[str, str, str]] = []
         for pin in sorted(used - set(outputs) - {"ENO"}):
