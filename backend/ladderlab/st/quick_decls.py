@@ -87,7 +87,8 @@ class _Reader:
             return None
         self.position = match.end()
         spec = ast.NamedType(type_name, self.span(match.start(2), match.end(2)))
-        return ast.VarDecl(names, spec, None, None, self.span(match.start(1), match.end(2)))
+        first, last = names[0].span, spec.span
+        return ast.VarDecl(names, spec, None, None, ast.Span(first.line, first.column, last.end_line, last.end_column))
 
     def span(self, start: int, end: int) -> ast.Span:
         """Offsets -> 1-based line/column, the end column exclusive (lark's spans); a token is on one line."""
