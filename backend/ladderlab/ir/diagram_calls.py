@@ -60,6 +60,12 @@ class Callee:
             return [s.name.upper() for s in self.pou.parameters("VAR_OUTPUT")]
         return ["OUT"]
 
+    def output_type(self, pin: str) -> t.Type:
+        """The type of FB output ``pin`` (one of ``output_names``), as the checker types ``inst.PIN``."""
+        if self.std_fb is not None:
+            return t.elementary(next(p.type for p in self.std_fb.outputs if p.name == pin)) or t.ERROR
+        return self.pou.symbols[pin].type
+
     def rank(self, pin: str) -> tuple[int, int]:
         """Position of an input pin as the box draws it (top to bottom): declared order, then IN3, IN4 ..."""
         names = self._inputs
