@@ -199,10 +199,9 @@ def _follow(wire: fbd.Wire, nodes: dict[str, fbd.FbdNode], wires: dict[tuple[str
 
 def _order(graph: NetworkGraph, network: fbd.FbdNetwork, report: Report) -> list[str]:
     rank = _explicit_ranks(network, graph.nodes, report)
-
-    def key(node_id: str) -> tuple:
-        pos = graph.nodes[node_id].pos
-        return (rank.get(node_id, len(rank)), pos.y if pos else math.inf, pos.x if pos else math.inf, node_id)
+    keys = {node_id: (rank.get(node_id, len(rank)), node.pos.y if node.pos else math.inf,
+                      node.pos.x if node.pos else math.inf, node_id) for node_id, node in graph.nodes.items()}
+    key = keys.__getitem__  # the priority of a node among those the wiring leaves independent
 
     data_nodes = [n.id for n in graph.nodes.values() if isinstance(n, (fbd.Block, fbd.OutputNode))]
     predecessors = {n: {s.node for s in graph.inputs.get(n, {}).values()
@@ -312,7 +311,7 @@ def _place_inputs(graph: NetworkGraph, order: list[str], key) -> list[str]:
     placed = set(order)
     result: list[str] = []
     for node_id in order:
-        for source in sorted(graph.inputs.get(node_id, {}).values(), key=lambda s: key(s.node)):
+        for source in sorted(graph.inputs.get(node_id, {}).values(), key=lambda source: key(source.node)):
             if isinstance(graph.nodes[source.node], fbd.InputNode) and source.node not in placed:
                 placed.add(source.node)
                 result.append(source.node)
