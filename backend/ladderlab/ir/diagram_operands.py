@@ -209,7 +209,7 @@ class Operands:
         ty = checker.expr(node, expected)
         if expected is not None and ty is not t.ERROR:
             assignable_or_report(checker, expected, ty, node, f"operand '{text.strip()}'")
-        if any(d.severity == "error" for d in diagnostics) or ty in (t.ERROR, t.VOID):
+        if ty is t.ERROR or ty is t.VOID or any(d.severity == "error" for d in diagnostics):
             return None, t.ERROR, diagnostics
         lowered = self._lower_quietly(node, diagnostics, self.ctx.ir_type(expected) if expected is not None else None)
         return lowered, node.ty, diagnostics
