@@ -51,7 +51,8 @@ class PouContext:
         self._errors_found = False
         self._seen: set[tuple] = set()  # see _reported
         self._seen_upto = 0
-        self._vars: dict[Symbol, Var] = {}  # var_for's answers (IR nodes are immutable); none before edge_preamble
+        # var_for's answers (IR nodes are immutable); asked for by the bodies only, after edge_preamble set edges
+        self._vars: dict[Symbol, Var] = {}
         # Statement-level state of the ST lowering: where calls with EN/ENO are lifted to (None: not allowed
         # here), and how many variable reads / user function calls the current statement evaluated so far.
         self.lifts: list[Stmt] | None = None

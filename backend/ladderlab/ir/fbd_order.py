@@ -311,7 +311,7 @@ def _place_inputs(graph: NetworkGraph, order: list[str], key) -> list[str]:
     placed = set(order)
     result: list[str] = []
     for node_id in order:
-        for source in sorted(graph.inputs.get(node_id, {}).values(), key=lambda source: key(source.node)):
+        for source in sorted(graph.inputs.get(node_id, {}).values(), key=lambda s: key(s.node)):
             if isinstance(graph.nodes[source.node], fbd.InputNode) and source.node not in placed:
                 placed.add(source.node)
                 result.append(source.node)
