@@ -202,3 +202,26 @@ def test_property_any_ladder_lowers_or_reports_located_diagnostics(rungs, labels
     for diagnostic in result.diagnostics:
         assert diagnostic.pou == "Main" and diagnostic.network is not None, diagnostic
     assert (result.program is None) == any(d.severity == "error" for d in result.diagnostics)
+
+
+def test_a_text_on_several_pins_is_located_on_the_pin_at_fault():
+    """Operand texts the LALR parser reads are parsed once per POU; each pin still gets its own copy of the
+    tree, so a problem is reported on the pin it is in (here IN1, not G, though both read 'TRUE')."""
+    main = ld_pou("Main", DECL, rung("n1", box("s", "SEL", en=True, G="TRUE", IN0="T#1s", IN1="TRUE",
+                                              outputs={"OUT": "n"})))
+    assert errors(main) == ["POU Main, network n1, element s, pin IN1: error ST-TYPE-MISMATCH: SEL needs inputs of "
+                            "one type: got TIME and BOOL; convert one of them with a *_TO_* function"]
+
+
+def test_many_problems_are_reported_without_comparing_each_with_all_before(monkeypatch):
+    """A large diagram with a problem in every network: a new diagnostic is looked up, not compared with every
+    earlier one (that made 1,000 broken networks take 16 s); repeated ones are still reported once."""
+    from ladderlab.model.diagnostics import Diagnostic
+    comparisons = []
+    original = Diagnostic.__eq__
+    monkeypatch.setattr(Diagnostic, "__eq__", lambda self, other: comparisons.append(1) or original(self, other))
+    networks = [rung(f"n{i}", contact(f"c{i}", "Strat"), coil(f"q{i}", "a")) for i in range(300)]
+    found = errors(ld_pou("Main", DECL, *networks))
+    assert len(found) == 300 and found[299] == ("POU Main, network n299, element c299: error ST-UNKNOWN-VAR: unknown "
+                                                "variable 'Strat'")
+    assert len(comparisons) < 300

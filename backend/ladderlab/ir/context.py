@@ -24,6 +24,11 @@ from .types import IrType
 HIDDEN_PREFIX = "__"
 
 
+def _identity(diagnostic: Diagnostic) -> tuple:
+    """What makes two diagnostics equal (their fields), as a hashable key."""
+    return tuple(getattr(diagnostic, name) for name in Diagnostic.model_fields)
+
+
 class PouContext:
     """The per-POU lowering state: checked symbols, slots, hidden slots, diagnostics.
 
@@ -43,6 +48,11 @@ class PouContext:
         self._taken: set[str] = set()
         self._counters: dict[str, int] = {}
         self._callees: dict[str, TypeLowering] = {}
+        self._errors_found = False
+        self._seen: set[tuple] = set()  # see _reported
+        self._seen_upto = 0
+        # var_for's answers (IR nodes are immutable); asked for by the bodies only, after edge_preamble set edges
+        self._vars: dict[Symbol, Var] = {}
         # Statement-level state of the ST lowering: where calls with EN/ENO are lifted to (None: not allowed
         # here), and how many variable reads / user function calls the current statement evaluated so far.
         self.lifts: list[Stmt] | None = None
@@ -63,8 +73,18 @@ class PouContext:
             severity=severity, code=code, message=message, file=file, network=network, element=element, pin=pin,
             pou=self.info.name if self.info is not None and file != "types" else None, line=line, column=column,
             end_line=end_line, end_column=end_column)
-        if diagnostic not in self.diagnostics:
+        key = _identity(diagnostic)
+        if key not in self._reported():
             self.diagnostics.append(diagnostic)
+            self._seen.add(key)
+
+    def _reported(self) -> set[tuple]:
+        """The identities of the diagnostics in the (shared, append-only) list, brought up to date: one set lookup
+        per report, where comparing with the whole list made a diagram with thousands of problems quadratic."""
+        for diagnostic in self.diagnostics[self._seen_upto:]:
+            self._seen.add(_identity(diagnostic))
+        self._seen_upto = len(self.diagnostics)
+        return self._seen
 
     def report_at(self, code: str, message: str, node: Any, file: str | None = None) -> None:
         """Report at an ST AST node's span (``file`` defaults to this POU's body text)."""
@@ -92,9 +112,13 @@ class PouContext:
             self.report_at(error.code, error.message, error.node if error.node is not None else fallback, file)
 
     def _checker_found_errors(self) -> bool:
-        """Did checking report an error in this POU, or in the types or globals it may use?"""
-        mine = self.info.name if self.info is not None else None
-        return any(d.severity == "error" and d.pou in (mine, None) for d in self.checked.diagnostics + self.diagnostics)
+        """Did checking report an error in this POU, or in the types or globals it may use? (Once it has, it
+        stays so: the lists only grow.)"""
+        if not self._errors_found:
+            mine = self.info.name if self.info is not None else None
+            self._errors_found = any(d.severity == "error" and d.pou in (mine, None)
+                                     for d in self.checked.diagnostics + self.diagnostics)
+        return self._errors_found
 
     def checker_error_in(self, span: ast.Span) -> bool:
         """Did the checker report an error on the lines of ``span`` in this POU's ST body?"""
@@ -160,6 +184,12 @@ class PouContext:
 
         Inside a POU an R_EDGE/F_EDGE input reads as its detected edge (a hidden slot).
         """
+        var = self._vars.get(symbol)
+        if var is None:
+            var = self._vars[symbol] = self._var_for(symbol)
+        return var
+
+    def _var_for(self, symbol: Symbol) -> Var:
         if symbol.address is not None and symbol.name == symbol.address:
             raise unnamed_address(symbol.address)
         upper = symbol.name.upper()

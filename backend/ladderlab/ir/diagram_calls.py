@@ -12,6 +12,7 @@ instance of another type - is checked here first.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 from ..st import ast, stdlib
@@ -42,11 +43,15 @@ class Callee:
 
     def input_names(self) -> list[str]:
         """The declared inputs (VAR_IN_OUT included) in formal order; an extensible function's minimum."""
+        return list(self._inputs)
+
+    @functools.cached_property
+    def _inputs(self) -> tuple[str, ...]:  # asked for every pin of every box
         if self.std_function is not None:
-            return [p.name for p in self.std_function.inputs]
+            return tuple(p.name for p in self.std_function.inputs)
         if self.std_fb is not None:
-            return [p.name for p in self.std_fb.inputs]
-        return [s.name.upper() for s in self.pou.parameters("VAR_INPUT", "VAR_IN_OUT")]
+            return tuple(p.name for p in self.std_fb.inputs)
+        return tuple(s.name.upper() for s in self.pou.parameters("VAR_INPUT", "VAR_IN_OUT"))
 
     def output_names(self) -> list[str]:
         if self.std_fb is not None:
@@ -55,9 +60,15 @@ class Callee:
             return [s.name.upper() for s in self.pou.parameters("VAR_OUTPUT")]
         return ["OUT"]
 
+    def output_type(self, pin: str) -> t.Type:
+        """The type of FB output ``pin`` (one of ``output_names``), as the checker types ``inst.PIN``."""
+        if self.std_fb is not None:
+            return t.elementary(next(p.type for p in self.std_fb.outputs if p.name == pin)) or t.ERROR
+        return self.pou.symbols[pin].type
+
     def rank(self, pin: str) -> tuple[int, int]:
         """Position of an input pin as the box draws it (top to bottom): declared order, then IN3, IN4 ..."""
-        names = self.input_names()
+        names = self._inputs
         if pin in names:
             return 0, names.index(pin)
         digits = pin[len(pin.rstrip("0123456789")):]
@@ -66,7 +77,7 @@ class Callee:
     def is_input(self, pin: str) -> bool:
         if self.std_function is not None:
             return self.std_function.pin(pin) is not None
-        return pin in self.input_names()
+        return pin in self._inputs
 
     def bool_inputs(self) -> list[str]:
         """Inputs that can carry power flow: BOOL pins, and generic pins whose family admits BOOL (AND, OR ...)."""
@@ -106,22 +117,12 @@ def resolve_callee(ops: Operands, call: str, instance: str | None, at: At) -> tu
     """The callee of a box and its instance operand (FBs), or None (reported): unknown name, FB without
     an instance or with an instance of another type, function with an instance."""
     name = call.strip()
-    pou = ops.ctx.checked.pou(name)
-    if pou is not None and pou.kind == "PROGRAM":
-        ops.report(at, f"{ops.lang}-NOT-CALLABLE", f"{pou.name} is a program: programs are run by tasks, not "
-                   "called from a diagram")
-        return None
-    if pou is not None:
-        callee = Callee(pou.name, pou=pou)
-    elif stdlib.function(name) is not None:
-        callee = Callee(name.upper(), std_function=stdlib.function(name))
-    elif stdlib.function_block(name) is not None:
-        callee = Callee(name.upper(), std_fb=stdlib.function_block(name))
-    else:
-        known = [*ops.ctx.checked.pous, *stdlib.FUNCTIONS, *stdlib.FUNCTION_BLOCKS]
-        ops.report(at, f"{ops.lang}-UNKNOWN-CALL", f"unknown function or function block '{name}'"
-                   + did_you_mean(name, known))
-        return None
+    callee = ops.callees.get(name.upper())
+    if callee is None:
+        callee = _callee(ops, name, at)
+        if callee is None:
+            return None
+        ops.callees[name.upper()] = callee
     if not callee.is_fb:
         if instance:
             ops.report(at, f"{ops.lang}-INSTANCE", f"{callee.name} is a function: it has no instance (remove "
@@ -139,6 +140,24 @@ def resolve_callee(ops: Operands, call: str, instance: str | None, at: At) -> tu
         ops.report(at, f"{ops.lang}-INSTANCE-TYPE", f"'{instance.strip()}' is a {ty}, not a {callee.name} instance")
         return None
     return callee, instance.strip()
+
+
+def _callee(ops: Operands, name: str, at: At) -> Callee | None:
+    """What ``name`` calls, or None (reported): a program or an unknown name."""
+    pou = ops.ctx.checked.pou(name)
+    if pou is not None and pou.kind == "PROGRAM":
+        ops.report(at, f"{ops.lang}-NOT-CALLABLE", f"{pou.name} is a program: programs are run by tasks, not "
+                   "called from a diagram")
+        return None
+    if pou is not None:
+        return Callee(pou.name, pou=pou)
+    if stdlib.function(name) is not None:
+        return Callee(name.upper(), std_function=stdlib.function(name))
+    if stdlib.function_block(name) is not None:
+        return Callee(name.upper(), std_fb=stdlib.function_block(name))
+    known = [*ops.ctx.checked.pous, *stdlib.FUNCTIONS, *stdlib.FUNCTION_BLOCKS]
+    ops.report(at, f"{ops.lang}-UNKNOWN-CALL", f"unknown function or function block '{name}'" + did_you_mean(name, known))
+    return None
 
 
 def check_call(ops: Operands, callee: Callee, instance: str | None, inputs: dict[str, PinValue],

@@ -14,9 +14,9 @@ hidden slots; ``wire_node`` gives them an AST name the checker resolves
 from __future__ import annotations
 
 import dataclasses
+import functools
 import re
-from dataclasses import dataclass
-from typing import Any
+from typing import Any, NamedTuple
 
 from ..model.diagnostics import Diagnostic
 from ..st import ast
@@ -31,13 +31,12 @@ from .lower_types import LoweringError
 from .nodes import Const, Expr, Var
 from .types import BOOL, IrType
 
-_INTEGER = re.compile(r"[0-9]+")
-_ACCESS = re.compile(r"([A-Za-z_][A-Za-z0-9_]*)(?:\.([A-Za-z_][A-Za-z0-9_]*))?")
+_QUICK = re.compile(r"([0-9]+)|([A-Za-z_][A-Za-z0-9_]*)(?:\.([A-Za-z_][A-Za-z0-9_]*))?")  # integer | name[.member]
 
 
-@dataclass(frozen=True)
-class At:
-    """Where a diagnostic of a diagram goes: network, element and pin."""
+class At(NamedTuple):
+    """Where a diagnostic of a diagram goes: network, element and pin. (A tuple: made for every operand and
+    pin of a large diagram, it must be cheap.)"""
 
     network: str
     element: str | None = None
@@ -55,7 +54,7 @@ class _WireChecker(BodyChecker):
         self._wires = operands.wires
 
     def lookup(self, name: str) -> Symbol | None:
-        return self._wires.get(name.upper()) or super().lookup(name)
+        return self._wires.get(name.upper()) or BodyChecker.lookup(self, name)
 
 
 class Operands:
@@ -66,6 +65,8 @@ class Operands:
         self.lang = lang
         self.wires: dict[str, Symbol] = {}
         self._reads: dict[tuple[str, str], tuple[Expr | None, t.Type, list[Diagnostic]]] = {}
+        self._parsed: dict[str, tuple[ast.Expr | None, list[Diagnostic]]] = {}  # by the parser, never annotated
+        self.callees: dict[str, Any] = {}  # upper-case name -> diagram_calls.Callee, resolved once per POU
         self._temps: dict[IrType, list[Var]] = {}
         self._used: dict[IrType, int] = {}
 
@@ -122,22 +123,27 @@ class Operands:
         quick = self._quick_parse(stripped)
         if quick is not None:
             return quick
-        parsed = parse_expression(text, pou=self.ctx.info.name)
-        sink += parsed.diagnostics
-        return parsed.ast if parsed.ok else None
+        if text not in self._parsed:
+            parsed = parse_expression(text, pou=self.ctx.info.name)
+            self._parsed[text] = (parsed.ast if parsed.ok else None, parsed.diagnostics)
+        node, diagnostics = self._parsed[text]
+        sink += diagnostics
+        return fresh_copy(node)
 
     def _quick_parse(self, text: str) -> ast.Expr | None:
         """The AST of the common operand shapes without the LALR parser - a declared variable, a member of
         one (``T1.Q``), a decimal integer - exactly as the parser builds them; None for anything else.
         (A generated 10,000-network diagram has some 60,000 operands.)"""
-        span = ast.Span(1, 1, 1, len(text) + 1)
-        if _INTEGER.fullmatch(text):
-            return ast.IntLit(int(text), span=span)
-        match = _ACCESS.fullmatch(text)
-        if match is None or not self.declared(match.group(1)):
+        match = _QUICK.fullmatch(text)
+        if match is None:
             return None
-        name = ast.Name(match.group(1), span=ast.Span(1, 1, 1, len(match.group(1)) + 1))
-        return ast.Member(name, match.group(2), span=span) if match.group(2) else name
+        digits, root, member = match.groups()
+        if digits is not None:
+            return ast.IntLit(int(digits), span=_one_line(len(text)))
+        if not self.declared(root):
+            return None
+        name = ast.Name(root, span=_one_line(len(root)))
+        return ast.Member(name, member, span=_one_line(len(text))) if member is not None else name
 
     def declared(self, name: str) -> bool:
         """Is ``name`` a variable of this POU or a global? (A declared name is never a keyword, so the parser
@@ -203,7 +209,7 @@ class Operands:
         ty = checker.expr(node, expected)
         if expected is not None and ty is not t.ERROR:
             assignable_or_report(checker, expected, ty, node, f"operand '{text.strip()}'")
-        if any(d.severity == "error" for d in diagnostics) or ty in (t.ERROR, t.VOID):
+        if ty is t.ERROR or ty is t.VOID or any(d.severity == "error" for d in diagnostics):
             return None, t.ERROR, diagnostics
         lowered = self._lower_quietly(node, diagnostics, self.ctx.ir_type(expected) if expected is not None else None)
         return lowered, node.ty, diagnostics
@@ -269,7 +275,23 @@ class Operands:
         return self.lower(node, at)
 
 
+@functools.cache
+def _one_line(length: int) -> ast.Span:
+    """The span of an operand text of ``length`` characters on its one line (spans are immutable: shared)."""
+    return ast.Span(1, 1, 1, length + 1)
+
+
 _COMPARE = {"GT": ">", "GE": ">=", "EQ": "=", "LE": "<=", "LT": "<", "NE": "<>"}
+
+
+def fresh_copy(node: Any) -> Any:
+    """A copy of a parsed expression tree: new nodes (the checker annotates them, and a box tells its pins apart
+    by node identity), the immutable leaves (spans, names, values) shared."""
+    if isinstance(node, list):
+        return [fresh_copy(item) for item in node]
+    if not dataclasses.is_dataclass(node) or isinstance(node, ast.Span):
+        return node
+    return type(node)(*(fresh_copy(getattr(node, field.name)) for field in dataclasses.fields(node)))
 
 
 def subnodes(node: Any):

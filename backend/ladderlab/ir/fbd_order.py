@@ -25,7 +25,7 @@ from __future__ import annotations
 import heapq
 import math
 from dataclasses import dataclass, field
-from typing import Protocol
+from typing import NamedTuple, Protocol
 
 from ..model import fbd
 from .diagram_checks import Report
@@ -41,13 +41,17 @@ _KIND = {"block": "block", "input": "input node", "output": "output node", "jump
          "connector": "connector", "continuation": "continuation"}
 
 
-@dataclass(frozen=True)
-class Source:
-    """The output pin feeding an input, after following connectors; ``wire`` is the text naming the wire."""
+class Source(NamedTuple):
+    """The output pin feeding an input, after following connectors; ``via`` the wire that reaches the input."""
 
     node: str
     pin: str
-    wire: str
+    via: fbd.Wire
+
+    @property
+    def wire(self) -> str:
+        """The text naming the wire, for messages."""
+        return wire_text(self.via)
 
 
 @dataclass
@@ -180,7 +184,7 @@ def _follow(wire: fbd.Wire, nodes: dict[str, fbd.FbdNode], wires: dict[tuple[str
     """The block or input node output at the far end of ``wire``, through any connectors."""
     producer = nodes[wire.from_.node]
     if not isinstance(producer, fbd.Continuation):
-        return Source(producer.id, wire.from_.pin.upper(), wire_text(wire))
+        return Source(producer.id, wire.from_.pin.upper(), wire)
     connector = connectors.get(producer.name.upper())
     if connector is None or connector in seen or (connector, SIMPLE_IN) not in wires:
         if report is not None and connector in seen:
@@ -195,10 +199,9 @@ def _follow(wire: fbd.Wire, nodes: dict[str, fbd.FbdNode], wires: dict[tuple[str
 
 def _order(graph: NetworkGraph, network: fbd.FbdNetwork, report: Report) -> list[str]:
     rank = _explicit_ranks(network, graph.nodes, report)
-
-    def key(node_id: str) -> tuple:
-        pos = graph.nodes[node_id].pos
-        return (rank.get(node_id, len(rank)), pos.y if pos else math.inf, pos.x if pos else math.inf, node_id)
+    keys = {node_id: (rank.get(node_id, len(rank)), node.pos.y if node.pos else math.inf,
+                      node.pos.x if node.pos else math.inf, node_id) for node_id, node in graph.nodes.items()}
+    key = keys.__getitem__  # the priority of a node among those the wiring leaves independent
 
     data_nodes = [n.id for n in graph.nodes.values() if isinstance(n, (fbd.Block, fbd.OutputNode))]
     predecessors = {n: {s.node for s in graph.inputs.get(n, {}).values()
@@ -230,7 +233,7 @@ def _explicit_ranks(network: fbd.FbdNetwork, nodes: dict[str, fbd.FbdNode], repo
 def _data_flow_order(nodes: list[str], predecessors: dict[str, set[str]], key) -> list[str]:
     """Kahn's algorithm with a priority key; when only cycles remain, the best-keyed node of a source
     strongly connected component goes first (its incoming cycle wires become feedback)."""
-    component = _components(nodes, predecessors)
+    component: dict[str, int] | None = None  # computed only if a cycle is met
     waiting = {n: set(p) for n, p in predecessors.items()}
     successors: dict[str, list[str]] = {n: [] for n in nodes}
     for node, preds in predecessors.items():
@@ -242,6 +245,7 @@ def _data_flow_order(nodes: list[str], predecessors: dict[str, set[str]], key) -
     done: set[str] = set()
     while len(order) < len(nodes):
         if not ready:  # only cycles are left: start one that nothing outside it still feeds
+            component = component or _components(nodes, predecessors)
             blocked = {component[n] for n in nodes if n not in done
                        for p in waiting[n] if component[p] != component[n]}
             first = min((n for n in nodes if n not in done and component[n] not in blocked), key=key)

@@ -55,6 +55,8 @@ def _lower(node: ast.Expr, ctx: PouContext, expected: IrType | None) -> Expr:
     ty = node.ty
     if ty is None or ty is t.ERROR or ty is t.VOID:
         raise LoweringError(None)
+    if type(node) is ast.Name and type(node.ref) is Symbol:  # the commonest node by far: a declared variable
+        return lower_access(node, ctx)
     if isinstance(ty, (t.UntypedInt, t.UntypedReal)):
         return _untyped(node, ctx, expected)
     if isinstance(node, (ast.BoolLit, ast.StringLit, ast.TimeLit, ast.TypedLit)):
@@ -79,6 +81,8 @@ def lower_to(node: ast.Expr, ctx: PouContext, target: IrType) -> Expr:
 
 def convert(expr: Expr, target: IrType) -> Expr:
     source = expr.type  # type: ignore[union-attr]
+    if source is target:  # the common case: lowered types are mostly shared instances
+        return expr
     if isinstance(source, Elementary | Subrange) and isinstance(target, Elementary | Subrange) \
             and value_type(source) != value_type(target):
         return Convert(expr, value_type(source), value_type(target))

@@ -24,6 +24,7 @@ from .diagram_checks import canonical_label, check_jump_target, check_labels, ch
 from .diagram_operands import At, Operands
 from .fbd_order import NetworkGraph, Source, analyse
 from .lower_expr import convert
+from .lower_st import fb_output, fb_pins
 from .nodes import Assign, Binary, Block, Call, Convert, Expr, If, Jump, Origin, Probe, Return, Stmt, Unary, Var
 from .power import TRUE, coil, edge, not_
 from .types import BOOL
@@ -56,10 +57,15 @@ class _Network:
         self.callees: dict[str, tuple[Callee, str | None] | None] = {}
         self.written: set[str] = set()  # root variables the output nodes of this network write
         self.enables: dict[str, Expr] = {}  # block id -> its EN condition (blocks with EN)
+        self.origins: dict[str, Origin] = {}
+        self.used_pins: dict[str, set[str]] = {}  # producer id -> its output pins that feed something
 
     def lower(self) -> Block:
         self.ops.new_network()
         self.graph = graph = analyse(self.network, self.ctx.report)
+        for sources in graph.inputs.values():  # once per network, not a scan of all wires per block
+            for source in sources.values():
+                self.used_pins.setdefault(source.node, set()).add(source.pin)
         self.written = {name for node in graph.nodes.values() if isinstance(node, fbd.OutputNode)
                         for name in root_names(node.var)}
         for node in graph.nodes.values():
@@ -77,7 +83,11 @@ class _Network:
         return At(self.network.id, node, pin)
 
     def origin(self, node: str) -> Origin:
-        return Origin(self.ctx.name, network=self.network.id, element=node)
+        """One (immutable) origin per node: every statement and probe of the node carries it."""
+        origin = self.origins.get(node)
+        if origin is None:
+            origin = self.origins[node] = Origin(self.ctx.name, network=self.network.id, element=node)
+        return origin
 
     def expr(self, value: PinValue, at: At, what: str, expected: t.Type | None = None) -> tuple[Expr | None, t.Type]:
         """A pin value as an IR expression and its type (operand texts are read and typed here)."""
@@ -231,7 +241,7 @@ class _Network:
         if statements is None:
             return
         self.out += statements
-        self._outputs(node, callee, instance, call, result, eno, flags, en)
+        self._outputs(node, callee, instance, call, statements[0], result, eno, flags, en)
 
     def _result(self, node: fbd.Block, ty: t.Type) -> Var:
         """Where a function block's result goes: a slot kept between scans when the block has EN (with EN
@@ -244,7 +254,7 @@ class _Network:
         """Wires from the block and pin flags name pins it has; EN/ENO need ``en``; edges are for inputs.
         (Wires into unknown inputs are reported by the call check, with ST's messages.)"""
         outputs = callee.output_names() + (["ENO"] if node.en else [])
-        used = {s.pin for sources in self.graph.inputs.values() for s in sources.values() if s.node == node.id}
+        used = self.used_pins.get(node.id, set())
         wired = set(self.graph.inputs.get(node.id, {}))
         problems: list[tuple[str, str, str]] = []
         for pin in sorted(used - set(outputs) - {"ENO"}):
@@ -287,13 +297,19 @@ class _Network:
         self.out.append(Assign(slot, expr, self.origin(at.element)))
         return slot, t.BOOL
 
-    def _outputs(self, node: fbd.Block, callee: Callee, instance: str | None, call, result: Var | None,
+    def _outputs(self, node: fbd.Block, callee: Callee, instance: str | None, call, first: Stmt, result: Var | None,
                  eno: Var | None, flags: dict, en: PinValue | None) -> None:
-        """Record what each output pin carries (after its negation flag) and probe it."""
+        """Record what each output pin carries (after its negation flag) and probe it. An FB's outputs are
+        carried as their operand text (``inst.Q``: each consumer reads it in its own context); the probes read
+        them from the instance the FbCall (``first``) called."""
         at, origin = self.at(node.id), self.origin(node.id)
         pins: dict[str, PinValue] = {}
+        after_call: dict[str, tuple[Expr, t.Type]] = {}
         if callee.is_fb:
-            pins = {pin: f"{instance}.{pin}" for pin in callee.output_names()}
+            types = fb_pins(call.callee.ty, self.ctx)
+            for pin in callee.output_names():
+                pins[pin] = f"{instance}.{pin}"
+                after_call[pin] = fb_output(first.instance, pin, types[pin][0]), callee.output_type(pin)
         else:
             pins["OUT"] = (result, call.ty)
         if eno is not None:
@@ -301,7 +317,7 @@ class _Network:
         probes: list[Stmt] = []
         for pin, value in pins.items():
             flag = flags.get(pin)
-            expr, ty = self.expr(value, at.on(pin), f"output {pin} of '{node.id}'")
+            expr, ty = after_call.get(pin) or self.expr(value, at.on(pin), f"output {pin} of '{node.id}'")
             if expr is None:
                 continue
             if flag is not None and flag.negated:

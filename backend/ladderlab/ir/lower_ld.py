@@ -20,6 +20,7 @@ from .context import PouContext
 from .diagram_calls import Callee, check_call, lower_call, resolve_callee
 from .diagram_checks import canonical_label, check_jump_target, check_labels, check_unique_ids, check_unique_networks
 from .diagram_operands import At, Operands
+from .lower_st import fb_output, fb_pins
 from .nodes import Assign, Block, Expr, If, Jump, Origin, Probe, Return, Stmt, Var
 from .power import FALSE, TRUE, and_, coil, edge, not_, or_
 from .types import BOOL
@@ -56,9 +57,10 @@ class _Rung:
         self.network = ""
         self.out: list[Stmt] = []
         self.control: list[Stmt] = []
+        self.origins: dict[str, Origin] = {}
 
     def lower(self, network: ld.LdNetwork) -> Block:
-        self.network, self.out, self.control = network.id, [], []
+        self.network, self.out, self.control, self.origins = network.id, [], [], {}
         self.ops.new_network()
         self.series(network.elements, TRUE, open_end=True)
         label = canonical_label(network.label) if network.label else None
@@ -67,7 +69,11 @@ class _Rung:
 
     # ------------------------------------------------------------ helpers
     def origin(self, element: str) -> Origin:
-        return Origin(self.ctx.name, network=self.network, element=element)
+        """One (immutable) origin per element: every statement and probe of the element carries it."""
+        origin = self.origins.get(element)
+        if origin is None:
+            origin = self.origins[element] = Origin(self.ctx.name, network=self.network, element=element)
+        return origin
 
     def at(self, element: str, pin: str | None = None) -> At:
         return At(self.network, element, pin)
@@ -197,18 +203,17 @@ class _Rung:
         node = check_call(self.ops, callee, instance, inputs, outputs, at, en, eno)
         if node is None:
             return None
-        if callee.is_fb:
-            result = None
-            pins = {pin: self.ops.read(f"{instance}.{pin}", at.on(pin), f"output {pin}")[0]
-                    for pin in callee.output_names()}
-        else:
-            result = self._result(node, result_text, at, box.en)
-            pins = {"OUT": result}
+        result = None if callee.is_fb else self._result(node, result_text, at, box.en)
         statements = lower_call(self.ops, callee, node, result, at, origin) \
             if result is not None or callee.is_fb else None
         if statements is None:
             return None
         self.out += statements
+        if callee.is_fb:  # the outputs, read from the instance the FbCall (first statement) called
+            types = fb_pins(node.callee.ty, self.ctx)
+            pins = {pin: fb_output(statements[0].instance, pin, types[pin][0]) for pin in callee.output_names()}
+        else:
+            pins = {"OUT": result}
         right = eno if eno is not None else self._bool_output(callee, node, pins, at)
         if right is None:
             return None

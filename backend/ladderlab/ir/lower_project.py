@@ -15,6 +15,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 
+from ..collector import collector_paused
 from ..model.diagnostics import Diagnostic, has_errors
 from ..model.project import Pou as ModelPou
 from ..model.project import Project
@@ -50,6 +51,11 @@ class LoweringResult:
 
 def lower_project(project: Project, checked: CheckResult | None = None) -> LoweringResult:
     """Check (unless ``checked`` is given) and lower ``project``; never raises for any project content."""
+    with collector_paused():  # see ladderlab.collector: the cyclic GC is most of the cost of a large build
+        return _lower_project(project, checked)
+
+
+def _lower_project(project: Project, checked: CheckResult | None) -> LoweringResult:
     if checked is None:
         checked = check_project(project)
     diagnostics = validate_project(project) + list(checked.diagnostics)

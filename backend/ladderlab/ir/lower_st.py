@@ -155,7 +155,7 @@ def lower_fb_call(call: ast.Call, ctx: PouContext, origin: Origin) -> list[Stmt]
     if not isinstance(fb, t.FbType):
         raise LoweringError(None)
     instance = lower_access(call.callee, ctx)
-    pins = _pins(fb, ctx)
+    pins = fb_pins(fb, ctx)
     order = [name for name, (_, kind) in pins.items() if kind != "VAR_OUTPUT"]
     inputs: list[tuple[str, Expr]] = []
     outputs: list[tuple[str, Var]] = []
@@ -175,7 +175,7 @@ def lower_fb_call(call: ast.Call, ctx: PouContext, origin: Origin) -> list[Stmt]
             if not arg.negated and value_type(target.type) == value_type(pin_type):
                 outputs.append((name, target))
                 continue
-            pin: Expr = Var(instance.scope, instance.name, pin_type, (*instance.path, Member(name)))
+            pin: Expr = fb_output(instance, name, pin_type)
             if arg.negated:
                 pin = Unary("NOT", pin, pin_type)
             copies.append(Assign(target, convert(pin, target.type), ctx.origin(arg)))
@@ -186,7 +186,12 @@ def lower_fb_call(call: ast.Call, ctx: PouContext, origin: Origin) -> list[Stmt]
     return [FbCall(instance, inputs, outputs, origin, en, eno), *copies, *after]
 
 
-def _pins(fb: t.FbType, ctx: PouContext) -> dict[str, tuple[IrType, str]]:
+def fb_output(instance: Var, name: str, ty: IrType) -> Var:
+    """Output pin ``name`` (upper case) of an FB instance, as read after its call."""
+    return Var(instance.scope, instance.name, ty, (*instance.path, Member(name)))
+
+
+def fb_pins(fb: t.FbType, ctx: PouContext) -> dict[str, tuple[IrType, str]]:
     """Pin name -> (IR type, VAR_INPUT / VAR_IN_OUT / VAR_OUTPUT) of a standard or user FB, inputs first."""
     if fb.std is not None:
         return {**{p.name: (ctx.ir_type(t.elementary(p.type)), "VAR_INPUT") for p in fb.std.inputs},

@@ -17,6 +17,7 @@ Tuples keep the frozen IR types (``StructField.initial``) hashable.
 
 from __future__ import annotations
 
+import functools
 import math
 from typing import Any
 
@@ -76,6 +77,12 @@ class TypeLowering:
     # ------------------------------------------------------------ types
     def type_of(self, ty: t.Type | None, spec: ast.TypeSpec | None = None) -> IrType:
         """The IR type of a checker type; ``spec`` (the declaration's type specification) restores subranges."""
+        if type(ty) is t.Elementary and (spec is None or type(spec) is ast.NamedType
+                                         and (not self.types or spec.name.upper() not in self.types)):
+            return _elementary(ty.name)  # most variables: no TYPE to follow (a shortcut of _type_of)
+        return self._type_of(ty, spec)
+
+    def _type_of(self, ty: t.Type | None, spec: ast.TypeSpec | None) -> IrType:
         spec = self._spec_body(spec)
         if isinstance(ty, t.Elementary):
             if isinstance(spec, ast.SubrangeType):
@@ -255,6 +262,11 @@ class TypeLowering:
         initial = None if symbol.var_class == "VAR_IN_OUT" else self.initial(symbol.type, symbol.type_spec, symbol.init)
         return Slot(symbol.name.upper(), symbol.var_class, self.type_of(symbol.type, symbol.type_spec),  # type: ignore[arg-type]
                     initial, symbol.retain, symbol.constant, symbol.address)
+
+
+@functools.cache
+def _elementary(name: str) -> Elementary:
+    return Elementary(name)
 
 
 def engine_value(raw: object, target: IrType) -> object:

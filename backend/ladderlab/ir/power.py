@@ -17,11 +17,16 @@ FALSE = Const(False, BOOL)
 
 def and_(left: Expr, right: Expr) -> Expr:
     """``left AND right``; the left rail (constant TRUE) drops out."""
-    if left == TRUE:
+    if _is_true(left):
         return right
-    if right == TRUE:
+    if _is_true(right):
         return left
     return Binary("AND", left, right, BOOL)
+
+
+def _is_true(value: Expr) -> bool:
+    """The constant TRUE? (Only a constant can be: other nodes are not compared field by field.)"""
+    return value is TRUE or type(value) is Const and value == TRUE
 
 
 def or_(values: list[Expr]) -> Expr:

@@ -12,11 +12,12 @@ Names are kept as written (IEC names are case-insensitive: compare with
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any, Union
+from typing import Any, NamedTuple, Union
 
 
-@dataclass(frozen=True, slots=True)
-class Span:
+class Span(NamedTuple):
+    """1-based line/column of a node's first character and just after its last (a tuple: every node has one)."""
+
     line: int = 0
     column: int = 0
     end_line: int = 0

@@ -8,6 +8,7 @@ or the FB instance Symbol). Reports through ``report`` and never raises.
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import Any
 from . import ast, stdlib
 from . import types as t
 from .calls import check_call
@@ -71,38 +72,16 @@ class BodyChecker:
         return ty
 
     def _expr(self, node: ast.Expr, expected: Type | None) -> Type:
-        if isinstance(node, ast.IntLit):
-            return t.UntypedInt(node.value)
-        if isinstance(node, ast.RealLit):
-            return t.UntypedReal()
-        if isinstance(node, ast.BoolLit):
-            return t.BOOL
-        if isinstance(node, ast.StringLit):
-            return t.StringType(node.wide)
-        if isinstance(node, ast.TimeLit):
-            return t.Elementary(node.kind)
-        if isinstance(node, ast.TypedLit):
-            return self._typed_literal(node)
-        if isinstance(node, ast.Name):
-            return self._name(node, expected)
-        if isinstance(node, ast.DirectAddr):
-            return self._direct(node)
-        if isinstance(node, ast.Member):
-            return self._member(node)
-        if isinstance(node, ast.Index):
-            return self._index(node)
-        if isinstance(node, ast.Deref):
-            base = self.expr(node.base)
-            if isinstance(base, t.PointerType):
-                return base.target
-            if base is not ERROR:
-                self.report("ST-TYPE-MISMATCH", f"'^' needs a pointer, not {base}", node)
-            return ERROR
-        if isinstance(node, ast.Call):
-            return self.call(node, statement=False)
-        if isinstance(node, ast.Unary):
-            return self._unary(node)
-        return self._binary(node)
+        check = _EXPRESSION_CHECKS.get(type(node))
+        return check(self, node, expected) if check is not None else self._binary(node)
+
+    def _deref(self, node: ast.Deref) -> Type:
+        base = self.expr(node.base)
+        if isinstance(base, t.PointerType):
+            return base.target
+        if base is not ERROR:
+            self.report("ST-TYPE-MISMATCH", f"'^' needs a pointer, not {base}", node)
+        return ERROR
 
     def _typed_literal(self, node: ast.TypedLit) -> Type:
         target = t.elementary(node.type_name)
@@ -395,6 +374,26 @@ class BodyChecker:
         self.loop(stmt.body)
         if symbol is not None:
             self.loop_vars.pop()
+
+
+# How each kind of expression node is typed (a table: expressions are typed by the hundred thousand in large
+# diagrams); methods are looked up on the checker, so subclasses may override them.
+_EXPRESSION_CHECKS: dict[type, Callable[[BodyChecker, Any, Type | None], Type]] = {
+    ast.IntLit: lambda checker, node, expected: t.UntypedInt(node.value),
+    ast.RealLit: lambda checker, node, expected: t.UntypedReal(),
+    ast.BoolLit: lambda checker, node, expected: t.BOOL,
+    ast.StringLit: lambda checker, node, expected: t.StringType(node.wide),
+    ast.TimeLit: lambda checker, node, expected: t.Elementary(node.kind),
+    ast.TypedLit: lambda checker, node, expected: checker._typed_literal(node),
+    ast.Name: lambda checker, node, expected: checker._name(node, expected),
+    ast.DirectAddr: lambda checker, node, expected: checker._direct(node),
+    ast.Member: lambda checker, node, expected: checker._member(node),
+    ast.Index: lambda checker, node, expected: checker._index(node),
+    ast.Deref: lambda checker, node, expected: checker._deref(node),
+    ast.Call: lambda checker, node, expected: checker.call(node, statement=False),
+    ast.Unary: lambda checker, node, expected: checker._unary(node),
+    ast.Binary: lambda checker, node, expected: checker._binary(node),
+}
 
 
 def _is_output(node: ast.Member) -> bool:

@@ -7,6 +7,7 @@ inputs share one type), POU-32 (only programs call programs), ST-57.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from typing import Any
 
@@ -100,13 +101,20 @@ def _instance_call(checker: Any, node: ast.Call, ty: Type, statement: bool) -> T
                        "called inside an expression: call it as a statement and read its outputs (e.g. inst.Q)", node)
         return ERROR
     if ty.std is not None:
-        inputs = [Param(p.name, t.elementary(p.type) or ERROR) for p in ty.std.inputs]
-        outputs = [Param(p.name, t.elementary(p.type) or ERROR) for p in ty.std.outputs]
+        inputs, outputs = _std_fb_params(ty.std.name)
     else:
         inputs = [Param(s.name, s.type, s.var_class == "VAR_IN_OUT") for s in ty.pou.parameters("VAR_INPUT", "VAR_IN_OUT")]
         outputs = [Param(s.name, s.type) for s in ty.pou.parameters("VAR_OUTPUT")]
     check_arguments(checker, node, ty.name, inputs, outputs, function=False)
     return VOID
+
+
+@functools.cache
+def _std_fb_params(name: str) -> tuple[list[Param], list[Param]]:
+    """A standard FB's inputs and outputs as parameters (the catalogue is fixed; read-only lists)."""
+    std = stdlib.function_block(name)
+    return ([Param(p.name, t.elementary(p.type) or ERROR) for p in std.inputs],
+            [Param(p.name, t.elementary(p.type) or ERROR) for p in std.outputs])
 
 
 def check_arguments(checker: Any, node: ast.Call, callee: str, inputs: list[Param], outputs: list[Param],

@@ -8,6 +8,7 @@ warning; anything else needs an explicit ``*_TO_*`` conversion.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -119,6 +120,7 @@ _UNSIGNED = ["USINT", "UINT", "UDINT", "ULINT"]
 _BITS = ["BYTE", "WORD", "DWORD", "LWORD"]
 
 
+@functools.lru_cache(maxsize=None)  # types are immutable; asked for every pin of every call checked
 def elementary(name: str) -> Type | None:
     canonical = canonical_type_name(name)
     if canonical in ("STRING", "WSTRING"):
@@ -172,7 +174,7 @@ def _widens(source: Elementary, target: Elementary) -> bool:
 
 
 def same(a: Type, b: Type) -> bool:
-    if a is ERROR or b is ERROR:
+    if a is b or a is ERROR or b is ERROR:
         return True
     if isinstance(a, StringType) and isinstance(b, StringType):
         return a.wide == b.wide
