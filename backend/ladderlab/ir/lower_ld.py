@@ -11,8 +11,6 @@ all see one value. Jumps and returns act after the whole network is evaluated
 
 from __future__ import annotations
 
-from collections.abc import Iterator
-
 from ..model import ld
 from ..model.project import Pou as ModelPou
 from ..st import types as t
@@ -30,23 +28,10 @@ def lower_ld_body(pou: ModelPou, ctx: PouContext) -> list[Block]:
     """The networks of an LD POU as IR blocks; problems are reported on ``ctx`` with network and element."""
     body: ld.LdBody = pou.body  # type: ignore[assignment]
     check_unique_networks(body.networks, ctx.report, "LD")
-    check_unique_ids(((n.id, e.id) for n in body.networks for e in walk(n.elements)), ctx.report, "LD")
+    check_unique_ids(((n.id, e.id) for n in body.networks for e in ld.walk(n.elements)), ctx.report, "LD")
     labels = check_labels(body.networks, ctx.report, "LD")
     rung = _Rung(ctx, Operands(ctx, "LD"), labels)
     return [rung.lower(network) for network in body.networks]
-
-
-def walk(elements: list[ld.LdElement]) -> Iterator[ld.LdElement]:
-    """Every element of a series list, nested ones (parallel branches, box inputs) included, left to right."""
-    for element in elements:
-        yield element
-        if isinstance(element, ld.Parallel):
-            for branch in element.branches:
-                yield from walk(branch)
-        elif isinstance(element, ld.Box):
-            for value in element.inputs.values():
-                if isinstance(value, list):
-                    yield from walk(value)
 
 
 class _Rung:

@@ -113,3 +113,7 @@ class FbdBody(BaseModel):
     model_config = ConfigDict(extra="forbid")
 
     networks: list[FbdNetwork] = Field(default_factory=list)
+
+    def calls(self) -> set[str]:
+        """The names (upper case) of the functions and FB types the blocks call: the body's edges of the call graph."""
+        return {node.call.upper() for n in self.networks for node in n.nodes if isinstance(node, Block)}

@@ -7,6 +7,7 @@ every edit reflows cleanly and the files diff well in git.
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from typing import Annotated, Literal, Union
 
 from pydantic import BaseModel, ConfigDict, Field
@@ -89,3 +90,20 @@ class LdBody(BaseModel):
     model_config = ConfigDict(extra="forbid")
 
     networks: list[LdNetwork] = Field(default_factory=list)
+
+    def calls(self) -> set[str]:
+        """The names (upper case) of the functions and FB types the boxes call: the body's edges of the call graph."""
+        return {e.call.upper() for n in self.networks for e in walk(n.elements) if isinstance(e, Box)}
+
+
+def walk(elements: list[LdElement]) -> Iterator[LdElement]:
+    """Every element of a series list, nested ones (parallel branches, box inputs) included, left to right."""
+    for element in elements:
+        yield element
+        if isinstance(element, Parallel):
+            for branch in element.branches:
+                yield from walk(branch)
+        elif isinstance(element, Box):
+            for value in element.inputs.values():
+                if isinstance(value, list):
+                    yield from walk(value)

@@ -97,7 +97,9 @@ class ProjectChecker:
             if stdlib.function(upper) or stdlib.function_block(upper):
                 where("ST-DUPLICATE", f"'{pou.name}' is a standard function or function block name and cannot be "
                       "redefined", None)
-            self.result.pous[upper] = PouInfo(pou.name, _KIND[pou.kind], pou.language, None)
+            info = self.result.pous[upper] = PouInfo(pou.name, _KIND[pou.kind], pou.language, None)
+            if not isinstance(pou.body, str):  # LD boxes and FBD blocks: edges of the call graph (POU-02)
+                info.calls |= pou.body.calls()
 
     def _register_types(self, blocks: list[ast.TypeBlock]) -> None:
         report = self._reporter("types", None)
