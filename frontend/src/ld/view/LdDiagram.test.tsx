@@ -2,7 +2,7 @@ import { fireEvent, render } from "@testing-library/react";
 import { describe, expect, it, vi } from "vitest";
 import { bodyOf, c, library, motorMain, net, par, q } from "../fixtures";
 import { layoutBody } from "../layout";
-import type { LdBody } from "../model";
+import type { LdBody, LdElement } from "../model";
 import { LdDiagram, type LdDiagramProps } from "./LdDiagram";
 
 function draw(body: LdBody, props: Partial<LdDiagramProps> = {}) {
@@ -97,6 +97,15 @@ describe("LdDiagram rendering", () => {
     expect(one('[data-id="stop"] .ld-forced-mark').textContent).toBe("F");
     expect(one('[data-id="ctu"] [data-field="output:CV"] .ld-value').textContent).toBe("42");
     expect(all('[data-id="start"] .ld-value')).toEqual([]); // BOOL values show as colour, not as a label
+  });
+
+  it("marks an empty required operand (a function input) as missing, an empty optional one (FB input, output) as muted", () => {
+    const add: LdElement = { type: "box", id: "add", call: "ADD", en: true, inputs: { IN1: "X" }, outputs: {} };
+    const { one } = draw(bodyOf(net("n", c("go"), add), ...(motorMain.networks ?? [])));
+    expect(one('[data-id="add"] [data-field="input:IN2"]').classList.contains("ld-operand-empty")).toBe(true);
+    expect(one('[data-id="add"] [data-field="output:OUT"]').classList.contains("ld-operand-unset")).toBe(true);
+    const et = one('[data-id="ton"] [data-field="output:ET"]');
+    expect([et.classList.contains("ld-operand-unset"), et.classList.contains("ld-operand-empty"), et.textContent]).toEqual([true, false, "???"]);
   });
 
   it("reports clicks on elements, operands, places and headers", () => {

@@ -25,17 +25,19 @@ interface OperandProps {
   anchor?: "start" | "middle" | "end";
   online?: OnlineView;
   onOperand?: (id: string, field: OperandField, event: MouseEvent) => void;
+  /** May stay empty (an FB input, an output pin): its "???" is muted instead of marked as missing. */
+  optional?: boolean;
 }
 
 /** An operand text: click to edit; shows "???" when empty, a forced marker and a non-BOOL value. */
-export function Operand({ id, field, text, x, y, width, anchor = "middle", online, onOperand }: OperandProps) {
+export function Operand({ id, field, text, x, y, width, anchor = "middle", online, onOperand, optional = false }: OperandProps) {
   const key = text.toUpperCase();
   const forced = online?.forced?.has(key) ?? false;
   const value = online?.values?.[key];
   const shown = text ? fit(text, width) : "???";
   const valueX = anchor === "end" ? x - textWidth(shown) - 4 : anchor === "middle" ? x + textWidth(shown) / 2 + 4 : x + textWidth(shown) + 4;
   return (
-    <g className={`ld-operand${text ? "" : " ld-operand-empty"}${forced ? " ld-forced" : ""}`} data-field={field.kind === "input" || field.kind === "output" ? `${field.kind}:${field.pin}` : field.kind}>
+    <g className={`ld-operand${text ? "" : optional ? " ld-operand-unset" : " ld-operand-empty"}${forced ? " ld-forced" : ""}`} data-field={field.kind === "input" || field.kind === "output" ? `${field.kind}:${field.pin}` : field.kind}>
       <text
         x={x}
         y={y}
@@ -162,7 +164,7 @@ export function ReturnShape({ placed: p }: ShapeProps) {
   );
 }
 
-function Pin({ pin, boxId, online, onOperand }: { pin: PlacedPin; boxId: string; online?: OnlineView; onOperand?: OperandProps["onOperand"] }) {
+function Pin({ pin, boxId, instanced, online, onOperand }: { pin: PlacedPin; boxId: string; instanced: boolean; online?: OnlineView; onOperand?: OperandProps["onOperand"] }) {
   const inside = pin.side === "in" ? pin.x + 4 : pin.x - 4;
   const outside = pin.side === "in" ? pin.x - 10 : pin.x + 10;
   const field: OperandField = { kind: pin.side === "in" ? "input" : "output", pin: pin.name };
@@ -174,7 +176,7 @@ function Pin({ pin, boxId, online, onOperand }: { pin: PlacedPin; boxId: string;
         {pin.name}
       </text>
       {!pin.power && !Array.isArray(pin.value) && pin.name ? (
-        <Operand id={boxId} field={field} text={text} x={outside} y={pin.y - 3} width={200} anchor={pin.side === "in" ? "end" : "start"} online={online} onOperand={onOperand} />
+        <Operand id={boxId} field={field} text={text} x={outside} y={pin.y - 3} width={200} anchor={pin.side === "in" ? "end" : "start"} online={online} onOperand={onOperand} optional={pin.side === "out" || instanced} />
       ) : null}
     </g>
   );
@@ -193,7 +195,7 @@ export function BoxShape({ placed: p, online, onOperand }: ShapeProps) {
       {p.instanced ? (
         <Operand id={p.id} field={{ kind: "instance" }} text={p.element.instance ?? ""} x={cx} y={b.y - 5} width={b.width} online={online} onOperand={onOperand} />
       ) : null}
-      {p.pins?.map((pin) => <Pin key={`${pin.side}:${pin.name}`} pin={pin} boxId={p.id} online={online} onOperand={onOperand} />)}
+      {p.pins?.map((pin) => <Pin key={`${pin.side}:${pin.name}`} pin={pin} boxId={p.id} instanced={!!p.instanced} online={online} onOperand={onOperand} />)}
     </>
   );
 }
