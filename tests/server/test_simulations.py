@@ -6,7 +6,7 @@ import time
 
 from fastapi.testclient import TestClient
 
-from ladderlab.model import Project
+from ladderlab.model import Pou, Project
 from ladderlab.server.sim_registry import SimulationRegistry, SimulationSettings
 from ladderlab.storage import Workspace
 
@@ -23,7 +23,20 @@ def test_create_compiles_the_saved_project_into_a_stopped_simulation(client: Tes
     assert (info["state"], info["scan_count"], info["time_ms"], info["real_time_ms"]) == ("stopped", 0, 0.0, 0.0)
     assert info["scan_ms"] == {"min": 0.0, "avg": 0.0, "max": 0.0, "last": 0.0}
     assert (info["fault"], info["clients"], info["overruns"]) == (None, 0, 0)
+    assert info["instances"] == {"MAIN": ["MAIN"]}
     assert [s["id"] for s in client.get("/api/simulations").json()] == [counter]
+
+
+def test_the_info_lists_the_instances_of_every_function_block_for_the_online_views(
+        client: TestClient, workspace: Workspace, registry: SimulationRegistry) -> None:
+    """The instance picker of an FB's online view offers these (nested and arrays of instances included)."""
+    fb = Pou(name="Pulse", kind="function_block", language="st", declarations="VAR_INPUT x : BOOL; END_VAR", body="")
+    outer = Pou(name="Pair", kind="function_block", language="st", declarations="VAR a, b : Pulse; END_VAR", body="")
+    main = st_program("Main", "VAR\n    p : Pulse;\n    q : ARRAY[1..2] OF Pulse;\n    two : Pair;\nEND_VAR", "p(x := TRUE);")
+    workspace.create(Project(name="fbs", pous=[fb, outer, main]))
+    info = client.post("/api/projects/fbs/simulations").json()
+    assert info["instances"] == {"MAIN": ["MAIN"], "PAIR": ["MAIN.TWO"],
+                                 "PULSE": ["MAIN.P", "MAIN.Q[1]", "MAIN.Q[2]", "MAIN.TWO.A", "MAIN.TWO.B"]}
 
 
 def test_create_answers_201_with_the_location(client: TestClient, workspace: Workspace,

@@ -369,6 +369,15 @@ class Simulation:
 
     # ------------------------------------------------------------------ instances
 
+    def instances(self) -> dict[str, list[str]]:
+        """Instance paths of every program and function block, by POU name (upper case): ``{"BLINKER": ["MAIN.BLINK"]}``.
+
+        The online views show one instance of a POU at a time; this lists the ones to choose from."""
+        found: dict[str, list[str]] = {}
+        for path, (_obj, pou) in self._instances_by_path().items():
+            found.setdefault(pou, []).append(path)
+        return found
+
     def _instances_by_path(self) -> dict[str, tuple[object, str]]:
         """Upper-case path -> (user POU instance, upper-case POU name), cached until reset."""
         self._instance_paths()

@@ -147,6 +147,10 @@ class SimulationInfo(BaseModel):
     fault: Diagnostic | None = Field(description="The fault that stopped it, located; null when none.")
     clients: int = Field(description="Websocket clients watching it.")
     created: datetime
+    instances: dict[str, list[str]] = Field(
+        default_factory=dict,
+        description="Instance paths of every program and function block by POU name (upper case), e.g. "
+                    "{\"BLINKER\": [\"MAIN.BLINK\"]}: the instances an online view can show.")
 
 
 class ResetSimulation(BaseModel):

@@ -111,5 +111,5 @@ def simulation_info(entry: SimulationEntry) -> SimulationInfo:
             scan_count=sim.scan_count, time_ms=sim.time_ms, real_time_ms=runner.real_time_ms(),
             scan_ms=ScanTimes(min=stats.min_ms, avg=stats.avg_ms, max=stats.max_ms, last=stats.last_ms),
             overruns=runner.overruns, fault=fault.diagnostic() if fault is not None else None,
-            clients=entry.clients, created=modified_at(entry.created),
+            clients=entry.clients, created=modified_at(entry.created), instances=sim.instances(),
         )

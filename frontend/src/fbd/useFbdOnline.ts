@@ -6,7 +6,7 @@ import type { SymbolInfo } from "../generated/api";
 import type { Pou } from "../generated/project";
 import type { LdOnlineActions } from "../ld/editor/LdEditor";
 import { onlineStore, useOnline } from "../online/store";
-import { instanceOf, onlineReadOnly, operandActions } from "../online/useLdOnline";
+import { useShownInstance, onlineReadOnly, operandActions } from "../online/useLdOnline";
 import type { FbdBody, Lookup } from "./model";
 import { bindFbd, fbdOnlineView, type FbdOnlineView } from "./online";
 
@@ -20,8 +20,7 @@ export interface FbdOnline {
 export function useFbdOnline(pou: Pou, body: FbdBody, lookup: Lookup, symbols: readonly SymbolInfo[]): FbdOnline {
   const phase = useOnline((s) => s.phase);
   const monitor = useOnline((s) => s.monitor);
-  const chosen = useOnline((s) => s.instances);
-  const instance = instanceOf(pou, chosen);
+  const instance = useShownInstance(pou);
   const key = `fbd:${pou.name}`;
   const live = phase !== "offline";
 

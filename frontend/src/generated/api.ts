@@ -534,6 +534,12 @@ export interface SimulationInfo {
   fault: Diagnostic | null;
   id: string;
   /**
+   * Instance paths of every program and function block by POU name (upper case), e.g. {"BLINKER": ["MAIN.BLINK"]}: the instances an online view can show.
+   */
+  instances?: {
+    [k: string]: string[];
+  };
+  /**
    * Times the scans fell behind the wall clock and skipped ahead.
    */
   overruns: number;

@@ -33,6 +33,8 @@ export interface OnlineData {
   error: string | null;
   /** Why the last compile was refused. */
   compileDiagnostics: Diagnostic[];
+  /** The simulation's instance paths of every program and function block, by POU name in upper case. */
+  instanceChoices: Record<string, string[]>;
   monitor: MonitorState;
   lastScanMs: number | null;
   /** What each view wants to see, by view key. */
@@ -75,6 +77,7 @@ export const offline: Omit<OnlineData, "watch" | "instances"> = {
   simulation: null,
   error: null,
   compileDiagnostics: [],
+  instanceChoices: {},
   monitor: emptyMonitor,
   lastScanMs: null,
   views: {},
@@ -199,7 +202,7 @@ export function createOnlineStore(api: SimulationApi = simulationApi, openSocket
             void api.deleteSimulation(info.id).catch(() => undefined); // went offline meanwhile
             return;
           }
-          set({ phase: "connecting", simulation: info.id, monitor: emptyMonitor });
+          set({ phase: "connecting", simulation: info.id, monitor: emptyMonitor, instanceChoices: info.instances ?? {} });
           connect(info.id);
         } catch (err) {
           set({ ...offline, error: message(err), compileDiagnostics: compileDiagnosticsOf(err) });

@@ -12,12 +12,26 @@ import { operandCommands } from "./operandCommands";
 import { onlineStore, useOnline } from "./store";
 
 /**
- * The instance whose values an LD POU shows: a program is its own instance; a function block shows
- * the instance the user chose (its path, e.g. MAIN.BLINK); functions have none.
+ * The instance whose values a POU's online view shows: a program is its own instance; a function
+ * block shows the instance the user chose (its path, e.g. MAIN.BLINK), else its only instance in
+ * the simulation (`choices`, by upper-case POU name); functions have none.
  */
-export function instanceOf(pou: Pick<Pou, "kind" | "name">, chosen: Readonly<Record<string, string>> = {}): string | null {
+export function instanceOf(
+  pou: Pick<Pou, "kind" | "name">,
+  chosen: Readonly<Record<string, string>> = {},
+  choices: Readonly<Record<string, readonly string[]>> = {},
+): string | null {
   if (pou.kind === "program") return pou.name.toUpperCase();
-  return pou.kind === "function_block" ? (chosen[pou.name] || null) : null;
+  if (pou.kind !== "function_block") return null;
+  const only = choices[pou.name.toUpperCase()];
+  return chosen[pou.name] || (only?.length === 1 ? only[0]! : null);
+}
+
+/** `instanceOf` with the online store's choices, for the LD, FBD and ST online hooks. */
+export function useShownInstance(pou: Pick<Pou, "kind" | "name">): string | null {
+  const chosen = useOnline((s) => s.instances);
+  const choices = useOnline((s) => s.instanceChoices);
+  return instanceOf(pou, chosen, choices);
 }
 
 export const GO_OFFLINE_TO_EDIT = "Online: the diagram shows the running simulation. Go offline to edit.";
@@ -32,9 +46,8 @@ export interface LdOnline {
 export function useLdOnline(pou: Pou, body: LdBody, symbols: readonly SymbolInfo[]): LdOnline {
   const phase = useOnline((s) => s.phase);
   const monitor = useOnline((s) => s.monitor);
-  const chosen = useOnline((s) => s.instances);
   const [visible, setVisible] = useState<ReadonlySet<string> | null>(null);
-  const instance = instanceOf(pou, chosen);
+  const instance = useShownInstance(pou);
   const key = `ld:${pou.name}`;
   const live = phase !== "offline";
 

@@ -187,10 +187,12 @@ const APP_KEYS = [...SIMULATION_KEYS, ...DEBUG_KEYS];
 /** A POU by an IEC name in any case (the simulation reports halts with the compiled spelling). */
 const pouNamed = (project: Project | null, name: string) => project?.pous?.find((p) => p.name.toUpperCase() === name.toUpperCase());
 
-/** Which instance of a function block the online diagram shows (a path such as MAIN.BLINK). */
+/** Which instance of a function block the online view shows (a path such as MAIN.BLINK), typed or picked from the simulation's. */
 function InstancePicker({ pou }: { pou: string }) {
   const current = useOnline((s) => s.instances[pou] ?? "");
+  const choices = useOnline((s) => s.instanceChoices[pou.toUpperCase()]);
   const [text, setText] = useState(current);
+  const listId = `instances-of-${pou}`;
   return (
     <form
       className="instance-picker"
@@ -199,7 +201,8 @@ function InstancePicker({ pou }: { pou: string }) {
         onlineStore.getState().setInstance(pou, text);
       }}
     >
-      <input aria-label={`Instance of ${pou}`} value={text} onChange={(e) => setText(e.target.value)} placeholder="MAIN.Instance" spellCheck={false} />
+      <input aria-label={`Instance of ${pou}`} list={listId} value={text} onChange={(e) => setText(e.target.value)} placeholder={choices?.[0] ?? "MAIN.Instance"} spellCheck={false} />
+      <datalist id={listId}>{choices?.map((path) => <option key={path} value={path} />)}</datalist>
       <button type="submit">Show</button>
     </form>
   );
@@ -441,7 +444,8 @@ export function WorkspaceView() {
     (operand: string) => {
       const ws = workspaceStore.getState();
       const pou = ws.active ? pouOf(project, ws.active) : undefined;
-      const instance = pou ? instanceOf(pou, onlineStore.getState().instances) : null;
+      const online = onlineStore.getState();
+      const instance = pou ? instanceOf(pou, online.instances, online.instanceChoices) : null;
       return instance ? operandPath(operand, instance, symbolsOf(ws.symbols[pou!.name])) : null;
     },
     [project],

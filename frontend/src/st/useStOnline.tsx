@@ -8,7 +8,7 @@ import { ContextMenu } from "../ld/editor/ContextMenu";
 import { OperandValuePrompt } from "../ld/editor/ValuePrompt";
 import { onlineOperandItems, operandCommands } from "../online/operandCommands";
 import { onlineStore, useOnline } from "../online/store";
-import { instanceOf } from "../online/useLdOnline";
+import { useShownInstance } from "../online/useLdOnline";
 import { describe, inlineMarks, variableOccurrences, type InlineMark, type Occurrence, type StOnlineView } from "./inlineValues";
 import type { Scope } from "./members";
 
@@ -27,14 +27,14 @@ export interface StOnline {
 export function useStOnline(pou: Pou, body: string, scope: Scope): StOnline {
   const phase = useOnline((s) => s.phase);
   const monitor = useOnline((s) => s.monitor);
-  const chosen = useOnline((s) => s.instances);
   const [showValues, setShowValues] = useState(true);
   const [menu, setMenu] = useState<{ occurrence: Occurrence; x: number; y: number } | null>(null);
   const [prompt, setPrompt] = useState<{ occurrence: Occurrence; action: "write" | "force" } | null>(null);
   const live = phase !== "offline";
   const at = monitor.state === "halted" ? monitor.at : null;
   const haltedHere = at?.instance && at.pou.toUpperCase() === pou.name.toUpperCase() ? at.instance.toUpperCase() : null;
-  const instance = haltedHere ?? instanceOf(pou, chosen);
+  const shown = useShownInstance(pou);
+  const instance = haltedHere ?? shown;
   const key = `st:${pou.name}`;
 
   const occurrences = useMemo(() => (live && instance ? variableOccurrences(body, scope, instance) : []), [live, instance, body, scope]);
