@@ -12,6 +12,8 @@ import { FbdNodeView, type FbdFlowNode } from "./FbdNodeView";
 export const DRAG_FORMAT = "application/x-ladderlab-fbd";
 const NODE_TYPES = { fbd: FbdNodeView };
 const MIN_HEIGHT = 170;
+/** Room above and left of the diagram, so badges above a node at y = 0 (order, breakpoint) stay in view. */
+const ORIGIN = { x: 12, y: 16, zoom: 1 };
 const MAX_HEIGHT = 560;
 
 export interface NetworkSelection {
@@ -188,6 +190,7 @@ function Canvas(props: NetworkCanvasProps) {
         zoomOnDoubleClick={false}
         preventScrolling={false}
         zoomActivationKeyCode="Control"
+        defaultViewport={ORIGIN}
         minZoom={0.25}
         maxZoom={2}
         proOptions={{ hideAttribution: true }}
