@@ -118,7 +118,8 @@ def test_new_user_builds_and_runs_an_fbd_calculation(page, server):
     assert wires == {("in1", "blk1", "IN1"), ("in2", "blk1", "IN2"), ("blk1", "blk2", "IN1"), ("in3", "blk2", "IN2"),
                      ("blk2", "out1", "IN")}
     assert [n.get("call") for n in network["nodes"] if n["type"] == "block"] == ["ADD", "SUB"]
-    assert [n["pos"]["x"] for n in network["nodes"] if n["id"] == "out1"] == [660 + shift]  # dropped at 660, zoom 1
+    # dropped 660 px into the canvas, whose origin is 12 px in (NetworkCanvas ORIGIN), at zoom 1
+    assert [n["pos"]["x"] for n in network["nodes"] if n["id"] == "out1"] == [660 - 12 + shift]
 
     # Online: run, write var1..var3 from the input nodes, read result on the wire.
     page.get_by_role("button", name="Compile & simulate").click()
