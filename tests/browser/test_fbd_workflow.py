@@ -17,6 +17,7 @@ import pytest
 from playwright.sync_api import expect
 
 from .conftest import ARTIFACTS
+from .steps import new_pou, new_project
 
 pytestmark = pytest.mark.browser
 
@@ -47,15 +48,8 @@ def name_and_declare(page, label: str, name: str, declare_as: str | None) -> Non
 
 
 def test_new_user_builds_and_runs_an_fbd_calculation(page, server):
-    page.goto(server)
-    page.get_by_role("button", name="New project").click()
-    page.get_by_label("Project name").press_sequentially("calc")
-    page.keyboard.press("Enter")
-    page.get_by_role("heading", name="calc").wait_for()
-    page.get_by_role("button", name="New POU").click()
-    page.get_by_label("POU name").press_sequentially("Main")
-    page.get_by_label("POU language").select_option("fbd")
-    page.keyboard.press("Enter")
+    new_project(page, server, "calc")
+    new_pou(page, "Main", language="fbd")
     editor = page.get_by_role("application", name="Function block diagram editor")
     editor.get_by_role("button", name="Add network").click()
     canvas = editor.locator(".fbd-network .react-flow__pane").first

@@ -17,6 +17,7 @@ import urllib.request
 import pytest
 
 from .conftest import ARTIFACTS
+from .steps import new_pou, new_project
 
 pytestmark = pytest.mark.browser
 
@@ -53,16 +54,9 @@ def declare_offered(page, name: str) -> None:
 
 
 def test_new_user_draws_saves_and_runs_the_motor_rung(page, server):
-    page.goto(server)
-
     # A new project with one LD program.
-    page.get_by_role("button", name="New project").click()
-    page.get_by_label("Project name").press_sequentially("plant")
-    page.keyboard.press("Enter")
-    page.get_by_role("heading", name="plant").wait_for()
-    page.get_by_role("button", name="New POU").click()
-    page.get_by_label("POU name").press_sequentially("Main")
-    page.keyboard.press("Enter")
+    new_project(page, server, "plant")
+    new_pou(page, "Main")
     editor = page.get_by_role("application", name="Ladder diagram editor")
     editor.click(position={"x": 400, "y": 300})
 

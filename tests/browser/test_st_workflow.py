@@ -17,6 +17,7 @@ import urllib.request
 import pytest
 
 from .conftest import ARTIFACTS
+from .steps import new_pou, new_project
 
 pytestmark = pytest.mark.browser
 
@@ -26,11 +27,7 @@ MAIN_DECLARATIONS = "VAR\n    c1 : Counter;\n    Run : BOOL := TRUE;\n    n : IN
 
 
 def new_st_pou(page, name: str, kind: str) -> None:
-    page.get_by_role("button", name="New POU").click()
-    page.get_by_label("POU name").press_sequentially(name)
-    page.get_by_label("POU kind").select_option(kind)
-    page.get_by_label("POU language").select_option("st")
-    page.get_by_role("button", name="Create").click()
+    new_pou(page, name, language="st", kind=kind)
     page.get_by_label(f"{name} body").wait_for()
 
 
@@ -71,11 +68,7 @@ def char_at(page, label: str, line: int, column: int) -> tuple[float, float]:
 
 
 def test_new_user_writes_an_st_fb_fixes_a_typo_and_watches_it_run(page, server):
-    page.goto(server)
-    page.get_by_role("button", name="New project").click()
-    page.get_by_label("Project name").press_sequentially("lab")
-    page.keyboard.press("Enter")
-    page.get_by_role("heading", name="lab").wait_for()
+    new_project(page, server, "lab")
 
     # The FB with a typo: the live check underlines it while the text is unsaved.
     new_st_pou(page, "Counter", "function_block")

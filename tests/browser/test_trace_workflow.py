@@ -26,6 +26,7 @@ import pytest
 from tests.support import external
 
 from .conftest import ARTIFACTS
+from .steps import new_project
 
 pytestmark = pytest.mark.browser
 
@@ -174,11 +175,7 @@ FIRST_STEPS = ("beremiz-examples", "exemples", "first_steps", "plc.xml")
 
 def test_the_beremiz_first_steps_example_imports_and_runs(page, server):
     source = external(*FIRST_STEPS)
-    page.goto(server)
-    page.get_by_role("button", name="New project").click()
-    page.get_by_label("Project name").press_sequentially("scratch")
-    page.keyboard.press("Enter")
-    page.get_by_role("heading", name="scratch").wait_for()
+    new_project(page, server, "scratch")
 
     # Import through the UI: the report names what was not converted, then the project opens.
     page.get_by_role("button", name="Import PLCopen XML…").click()
