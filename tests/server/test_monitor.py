@@ -11,9 +11,11 @@ import pytest
 from fastapi.testclient import TestClient
 from starlette.websockets import WebSocketDisconnect
 
+from ladderlab.model import Project
 from ladderlab.server.sim_registry import SimulationRegistry, SimulationSettings
 from ladderlab.storage import Workspace
 
+from .helpers import st_program
 from .test_simulations_support import (
     counter, counter_project, entry, install, motor_sim, of_type, recv, recv_until, registry, subscribe, wait_for,
 )
@@ -32,8 +34,34 @@ def test_connecting_reports_the_state_then_a_full_snapshot_of_the_subscription(c
         assert recv(ws) == {"type": "status", "state": "stopped", "at": None}
         first = subscribe(ws, ["Main.Count", "main.flag", "MAIN.Idle"])
         assert first == {"type": "values", "scan": 1, "time_ms": 10.0, "forced": [], "power": {},
-                         "changed": {"MAIN.COUNT": 1, "MAIN.FLAG": True, "MAIN.IDLE": 7}}
+                         "changed": {"MAIN.COUNT": 1, "MAIN.FLAG": True, "MAIN.IDLE": 7},
+                         "types": {"MAIN.COUNT": INT, "MAIN.FLAG": {"name": "BOOL", "names": None}, "MAIN.IDLE": INT}}
         assert entry(counter_registry(client), counter).clients == 1
+
+
+INT = {"name": "INT", "names": None}
+
+
+def test_the_snapshot_names_each_type_so_times_dates_and_enumerations_show_as_iec_text(
+        client: TestClient, workspace: Workspace, registry: SimulationRegistry) -> None:
+    """TIME/DATE values travel as ms and enumerations as ints; the first message says how to show them."""
+    types = "TYPE\n    Mode : (IDLE, RUN := 5, FAULT);\n    Pct : INT (0..100);\nEND_TYPE"
+    program = st_program("Main", "VAR\n    t : TIME := T#1m2s;\n    d : DATE := D#2024-05-01;\n    m : Mode := RUN;\n"
+                                 "    p : Pct := 50;\n    a : ARRAY[1..2] OF INT;\n    tm : TON;\nEND_VAR", "")
+    workspace.create(Project(name="typed", types=types, pous=[program]))
+    sim_id = client.post("/api/projects/typed/simulations").json()["id"]
+    with client.websocket_connect(ws_url(sim_id)) as ws:
+        recv(ws)
+        first = subscribe(ws, ["Main.t", "Main.d", "Main.m", "Main.p", "Main.a", "Main.tm"])
+        assert first["changed"] == {"MAIN.T": 62000, "MAIN.D": 1714521600000, "MAIN.M": 5, "MAIN.P": 50,
+                                    "MAIN.A": [0, 0], "MAIN.TM": {"IN": False, "PT": 0, "Q": False, "ET": 0}}
+        assert first["types"] == {
+            "MAIN.T": {"name": "TIME", "names": None}, "MAIN.D": {"name": "DATE", "names": None},
+            "MAIN.M": {"name": "MODE", "names": {"0": "IDLE", "5": "RUN", "6": "FAULT"}}, "MAIN.P": INT,
+            "MAIN.A": {"name": "ARRAY", "names": None}, "MAIN.TM": {"name": "TON", "names": None}}
+        ws.send_json({"type": "single_cycle"})
+        later, _ = recv_until(ws, of_type("values", scan=1))
+        assert later["types"] == {}  # only the snapshot after a subscribe carries them
 
 
 def counter_registry(client: TestClient) -> SimulationRegistry:

@@ -207,6 +207,14 @@ class At(BaseModel):
     column: int | None = None
 
 
+class DisplayType(BaseModel):
+    """What a client needs to show a value as IEC text: TIME and dates arrive as ms, enumerations as ints."""
+
+    name: str = Field(description="The IEC elementary type (TIME, DATE, WORD...; a subrange's base type), "
+                                  "or the name of the enumeration, structure or FB type.")
+    names: dict[str, str] | None = Field(default=None, description="An enumeration's value names by value.")
+
+
 class Values(BaseModel):
     """What changed in this client's subscription since the previous ``values`` message to it.
 
@@ -223,6 +231,9 @@ class Values(BaseModel):
     changed: dict[str, Value]
     forced: list[str] = Field(description="Every forced variable (canonical paths), whether subscribed or not.")
     power: dict[str, Value]
+    types: dict[str, DisplayType] = Field(
+        default_factory=dict,
+        description="The type of every subscribed path, in the first message after a subscribe (paths as in changed).")
 
 
 class Status(BaseModel):

@@ -31,6 +31,7 @@ from fastapi import APIRouter, WebSocket
 from pydantic import BaseModel, TypeAdapter, ValidationError
 from starlette.websockets import WebSocketDisconnect
 
+from ..ir import types as t
 from ..model import monitor as m
 from .errors import ApiError
 from .sim_registry import SimulationEntry, SimulationSettings, registry_of
@@ -357,9 +358,22 @@ class MonitorClient:
         forced = list(frame.forced)
         if not (full or changed or power or forced != self.last_forced or frame.scan != self.last_scan):
             return None
+        types = {path: display_type(loc.type) for path, loc in self.watch.locations.items()} \
+            if full and self.watch is not None else {}
         self.full, self.last_forced, self.last_scan = False, forced, frame.scan
         return m.Values.model_construct(type="values", scan=frame.scan, time_ms=frame.time_ms, changed=changed,
-                                        forced=forced, power=power)
+                                        forced=forced, power=power, types=types)
+
+
+def display_type(ty: t.IrType) -> m.DisplayType:
+    """How a client shows a value of ``ty`` (IR types name themselves differently by kind)."""
+    if isinstance(ty, t.Subrange):
+        ty = ty.base
+    if isinstance(ty, t.Enum):
+        return m.DisplayType(name=ty.name, names={str(value): name for name, value in ty.values})
+    if isinstance(ty, t.Array):
+        return m.DisplayType(name="ARRAY")
+    return m.DisplayType(name=ty.fb if isinstance(ty, t.FbInstance) else ty.name)
 
 
 def _where(request: m.BreakpointSet | m.BreakpointClear) -> dict[str, object]:

@@ -417,6 +417,30 @@ export interface Values {
   scan: number;
   time_ms: number;
   type: "values";
+  /**
+   * The type of every subscribed path, in the first message after a subscribe (paths as in changed).
+   */
+  types?: {
+    [k: string]: DisplayType;
+  };
+}
+/**
+ * What a client needs to show a value as IEC text: TIME and dates arrive as ms, enumerations as ints.
+ *
+ * This interface was referenced by `MonitorProtocol`'s JSON-Schema
+ * via the `definition` "DisplayType".
+ */
+export interface DisplayType {
+  /**
+   * The IEC elementary type (TIME, DATE, WORD...; a subrange's base type), or the name of the enumeration, structure or FB type.
+   */
+  name: string;
+  /**
+   * An enumeration's value names by value.
+   */
+  names?: {
+    [k: string]: string;
+  } | null;
 }
 /**
  * The simulation's state: sent on connecting and whenever it changes. ``faulted`` is a stop by a fault.

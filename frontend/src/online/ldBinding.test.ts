@@ -58,7 +58,7 @@ describe("ldOnlineView", () => {
     const view = ldOnlineView(monitor, binding);
     expect(view.power).toEqual({ p1: true, c1: true, c2: false, c3: false, q1: false });
     expect(view.executed).toEqual({ c4: false, q2: false });
-    expect(view.values).toEqual({ START: true, STOP: true, MOTOR: false, COUNT: 7 });
+    expect(view.values).toEqual({ START: true, STOP: true, MOTOR: false, COUNT: "7" }); // non-BOOL values as IEC text
     expect([...view.forced!]).toEqual(["STOP"]);
   });
 });

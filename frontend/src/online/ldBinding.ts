@@ -4,7 +4,7 @@
 import type { SymbolInfo } from "../generated/api";
 import { walk, type LdBody, type LdElement } from "../ld/model";
 import type { OnlineView } from "../ld/view/types";
-import { pathKey, powerKey, type MonitorState } from "./monitor";
+import { formatValue, pathKey, powerKey, type MonitorState } from "./monitor";
 import type { ElementSubscription } from "./protocol";
 
 /** A variable operand: names with member/index access (`T1.Q`, `A[3]`); literals and addresses are not. */
@@ -82,7 +82,8 @@ export function ldOnlineView(monitor: MonitorState, binding: LdBinding): OnlineV
   const forced = new Set<string>();
   for (const [operand, path] of binding.pathOf) {
     const value = monitor.values[path];
-    if (typeof value === "boolean" || typeof value === "number" || typeof value === "string") values[operand] = value;
+    if (typeof value === "boolean") values[operand] = value;
+    else if (typeof value === "number" || typeof value === "string") values[operand] = formatValue(value, monitor.types[path]);
     if (monitor.forced.has(path)) forced.add(operand);
   }
   return { power, executed, values, forced };

@@ -1,6 +1,7 @@
 // What the browser knows about a running simulation, folded from the server's monitor messages.
 // Pure functions only (the store and the views call them), so the handling of every message kind
 // is unit-tested without a socket. Paths are compared in upper case, as IEC names ignore case.
+import type { DisplayType } from "../generated/monitor";
 import type { PowerState, ServerMessage, SimulationState, Value, Where, WriteValue } from "./protocol";
 
 export interface LogEntry {
@@ -21,6 +22,8 @@ export interface MonitorState {
   at: Where | null;
   /** Latest value of every subscribed path, keyed by the upper-case path. */
   values: Readonly<Record<string, Value>>;
+  /** How to show each subscribed path's value (from the snapshot after a subscribe), same keys. */
+  types: Readonly<Record<string, DisplayType>>;
   /** Upper-case paths forced now. */
   forced: ReadonlySet<string>;
   /** Engine power by "<instance>/<element id>"; null = not executed in the last scan. */
@@ -37,6 +40,7 @@ export const emptyMonitor: MonitorState = {
   state: null,
   at: null,
   values: {},
+  types: {},
   forced: new Set(),
   power: {},
   log: [],
@@ -60,11 +64,14 @@ export function applyMessage(state: MonitorState, message: ServerMessage): Monit
     case "values": {
       const values = { ...state.values };
       for (const [path, value] of Object.entries(message.changed ?? {})) values[pathKey(path)] = value;
+      const types = { ...state.types };
+      for (const [path, type] of Object.entries(message.types ?? {})) types[pathKey(path)] = type;
       return {
         ...state,
         scan: message.scan,
         timeMs: message.time_ms,
         values,
+        types,
         forced: new Set(message.forced.map(pathKey)),
         power: { ...state.power, ...message.power },
       };
@@ -102,14 +109,59 @@ export function keepSubscribed(state: MonitorState, paths: readonly string[], po
 /** The key of an element's power in `values.power`. */
 export const powerKey = (instance: string, id: string): string => `${instance}/${id}`;
 
-/** Text of a value for labels and the watch list (TRUE/FALSE like IEC). */
-export function formatValue(value: Value | undefined): string {
+/**
+ * Text of a value for labels, the watch list and inline values, as IEC writes it: TRUE/FALSE, TIME
+ * and dates as literals (the server sends ms), an enumeration's value by name. `type` is the
+ * server's DisplayType or a declared type name; without one a number shows as it is.
+ */
+export function formatValue(value: Value | undefined, type?: DisplayType | string): string {
   if (value === undefined) return "…";
   if (value === null) return "—";
   if (typeof value === "boolean") return value ? "TRUE" : "FALSE";
   if (typeof value === "object") return JSON.stringify(value);
-  return String(value);
+  if (typeof value !== "number" || type === undefined) return String(value);
+  const name = (typeof type === "string" ? type : type.name).toUpperCase();
+  const named = typeof type === "string" ? undefined : type.names?.[String(value)];
+  if (named !== undefined) return named;
+  return TIME_LITERALS[name]?.(value) ?? String(value);
 }
+
+const pad = (n: number, width = 2) => String(n).padStart(width, "0");
+
+/** `T#1h2m3s500ms`: the non-zero units, largest first (`T#0ms` for zero; a minus sign after `T#`). */
+export function timeLiteral(ms: number): string {
+  const units: [string, number][] = [["d", 86_400_000], ["h", 3_600_000], ["m", 60_000], ["s", 1000], ["ms", 1]];
+  let rest = Math.abs(ms);
+  let text = "";
+  for (const [unit, size] of units) {
+    const count = unit === "ms" ? Math.round(rest * 1000) / 1000 : Math.floor(rest / size);
+    if (count) text += `${count}${unit}`;
+    rest -= unit === "ms" ? rest : count * size;
+  }
+  return `T#${ms < 0 ? "-" : ""}${text || "0ms"}`;
+}
+
+/** Time of day after midnight, with milliseconds when there are any. */
+function clock(ms: number): string {
+  const day = new Date(ms);
+  const millis = day.getUTCMilliseconds();
+  return `${pad(day.getUTCHours())}:${pad(day.getUTCMinutes())}:${pad(day.getUTCSeconds())}${millis ? `.${pad(millis, 3)}` : ""}`;
+}
+
+const dateOf = (ms: number) => {
+  const day = new Date(ms);
+  return `${day.getUTCFullYear()}-${pad(day.getUTCMonth() + 1)}-${pad(day.getUTCDate())}`;
+};
+
+/** TIME and the date types, from the server's ms (dates since 1970-01-01 UTC), as IEC literals. */
+const TIME_LITERALS: Record<string, (ms: number) => string> = {
+  TIME: timeLiteral,
+  DATE: (ms) => `D#${dateOf(ms)}`,
+  TIME_OF_DAY: (ms) => `TOD#${clock(ms)}`,
+  TOD: (ms) => `TOD#${clock(ms)}`,
+  DATE_AND_TIME: (ms) => `DT#${dateOf(ms)}-${clock(ms)}`,
+  DT: (ms) => `DT#${dateOf(ms)}-${clock(ms)}`,
+};
 
 /**
  * The JSON value to send for text the user typed: TRUE/FALSE become booleans and plain numbers

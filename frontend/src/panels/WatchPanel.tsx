@@ -6,6 +6,7 @@ import { useOnline, onlineStore } from "../online/store";
 
 function WatchRow({ path }: { path: string }) {
   const value = useOnline((s) => s.monitor.values[pathKey(path)]);
+  const type = useOnline((s) => s.monitor.types[pathKey(path)]);
   const forced = useOnline((s) => s.monitor.forced.has(pathKey(path)));
   const online = useOnline((s) => s.phase === "online");
   const [text, setText] = useState("");
@@ -20,7 +21,7 @@ function WatchRow({ path }: { path: string }) {
     <tr className={forced ? "watch-forced" : undefined} data-path={pathKey(path)}>
       <td className="watch-path">{path}</td>
       <td className={`watch-value${value === true ? " watch-true" : ""}`} aria-label={`Value of ${path}`}>
-        {online ? formatValue(value) : "—"}
+        {online ? formatValue(value, type) : "—"}
         {forced ? <span className="watch-forced-mark" title="forced"> F</span> : null}
       </td>
       <td>

@@ -62,7 +62,7 @@ describe("inline value marks", () => {
   });
 
   it("describes an occurrence with type, value and force on hover", () => {
-    expect(describeOccurrence(occurrences[3]!, { "MAIN.T1.ET": 250 }, new Set(["MAIN.T1.ET"]))).toBe("T1.ET : TIME = 250 (forced)");
+    expect(describeOccurrence(occurrences[3]!, { "MAIN.T1.ET": 250 }, new Set(["MAIN.T1.ET"]))).toBe("T1.ET : TIME = T#250ms (forced)");
     expect(describeOccurrence(occurrences[0]!, {}, new Set())).toBe("Start : BOOL = …");
   });
 });

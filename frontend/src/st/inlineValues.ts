@@ -64,13 +64,13 @@ export function inlineMarks(occurrences: readonly Occurrence[], values: Readonly
   return occurrences.flatMap((o) => {
     const value = values[o.path];
     if (value === undefined) return [];
-    return [{ pos: o.to, text: formatValue(value), bool: typeof value === "boolean" ? value : null, forced: forced.has(o.path) }];
+    return [{ pos: o.to, text: formatValue(value, o.type), bool: typeof value === "boolean" ? value : null, forced: forced.has(o.path) }];
   });
 }
 
 /** What hover says about an occurrence: access, type, value and whether it is forced. */
 export function describe(o: Occurrence, values: Readonly<Record<string, Value>>, forced: ReadonlySet<string>): string {
-  return `${o.text} : ${o.type} = ${formatValue(values[o.path])}${forced.has(o.path) ? " (forced)" : ""}`;
+  return `${o.text} : ${o.type} = ${formatValue(values[o.path], o.type)}${forced.has(o.path) ? " (forced)" : ""}`;
 }
 
 class ValueWidget extends WidgetType {

@@ -156,7 +156,7 @@ export function FbdNodeView({ data, selected }: NodeProps<FbdFlowNode>) {
       {input ? <Handle type="target" position={Position.Left} id={handleId("in", input.name)} className="fbd-handle" /> : null}
       {mode ? <span className="fbd-mode" aria-label={`mode ${(node as { mode?: OutputMode }).mode}`}>{mode}</span> : null}
       {text}
-      {value !== undefined ? <span className="fbd-value" data-testid={`value-${node.id}`}>{formatValue(value)}</span> : null}
+      {value !== undefined ? <span className="fbd-value" data-testid={`value-${node.id}`}>{formatValue(value, (output ?? input)?.type)}</span> : null}
       {output ? <Handle type="source" position={Position.Right} id={handleId("out", output.name)} className="fbd-handle" /> : null}
     </div>
   );
