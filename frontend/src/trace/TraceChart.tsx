@@ -4,12 +4,16 @@
 import { useEffect, useRef, useState } from "react";
 import uPlot from "uplot";
 import "uplot/dist/uPlot.min.css";
+import { usePanels } from "../panels/store";
 import { chartData, legendValue, LANE, type ChartData } from "./chartData";
 import type { Kind } from "./csv";
 import type { SampleRing } from "./ring";
 
 const COLORS = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22"];
+/** The plot's height at least; a taller bottom panel (dragged up) gives it the rest, less PANEL_CHROME. */
 const HEIGHT = 180;
+/** What the panel's tabs, the chart's buttons and its legend take of the panel's height. */
+const PANEL_CHROME = 120;
 
 export interface TraceChartProps {
   paths: readonly string[];
@@ -46,7 +50,7 @@ function showRange(u: uPlot): void {
   host.dataset.xMax = String(max);
 }
 
-function options(chart: ChartData, width: number, onUserZoom: () => void, onReset: () => void): uPlot.Options {
+function options(chart: ChartData, width: number, height: number, onUserZoom: () => void, onReset: () => void): uPlot.Options {
   const numbers = chart.series.some((s) => s.scale === "y");
   const steps = uPlot.paths.stepped!({ align: 1 });
   const lanes = chart.series.filter((s) => s.scale === "lanes");
@@ -78,7 +82,7 @@ function options(chart: ChartData, width: number, onUserZoom: () => void, onRese
   };
   return {
     width,
-    height: HEIGHT,
+    height,
     scales: {
       x: { time: false },
       y: { auto: true },
@@ -133,6 +137,8 @@ export function TraceChart({ paths, kinds, ring, version, origin, laneView }: Tr
   const plot = useRef<uPlot | null>(null);
   const zoomed = useRef(false);
   const [width, setWidth] = useState(640);
+  const panelHeight = usePanels((s) => s.height);
+  const height = Math.max(HEIGHT, (panelHeight ?? 0) - PANEL_CHROME);
   const layout = JSON.stringify([paths, kinds, laneView]);
 
   useEffect(() => {
@@ -147,7 +153,7 @@ export function TraceChart({ paths, kinds, ring, version, origin, laneView }: Tr
     if (!host.current) return;
     zoomed.current = false;
     const chart = chartData(paths, kinds, ring.columnsInOrder(), origin, laneView);
-    const u = new uPlot(options(chart, width, () => void (zoomed.current = true), () => void (zoomed.current = false)), chart.data as uPlot.AlignedData, host.current);
+    const u = new uPlot(options(chart, width, height, () => void (zoomed.current = true), () => void (zoomed.current = false)), chart.data as uPlot.AlignedData, host.current);
     plot.current = u;
     return () => {
       u.destroy();
@@ -156,7 +162,7 @@ export function TraceChart({ paths, kinds, ring, version, origin, laneView }: Tr
     // Rebuilt only when the series change; new data and sizes go to the same chart below.
   }, [layout, ring]);
 
-  useEffect(() => plot.current?.setSize({ width, height: HEIGHT }), [width]);
+  useEffect(() => plot.current?.setSize({ width, height }), [width, height]);
 
   useEffect(() => {
     const u = plot.current;
