@@ -226,25 +226,39 @@ def _follow(wire: fbd.Wire, nodes: dict[str, fbd.FbdNode], wires: dict[tuple[str
 
 
 def _order(graph: NetworkGraph, network: fbd.FbdNetwork, report: Report) -> list[str]:
-    rank = _explicit_ranks(network, graph.nodes, report)
+    nodes, inputs = graph.nodes, graph.inputs
+    rank = _explicit_ranks(network, nodes, report)
     keys = {node_id: (rank.get(node_id, len(rank)), node.pos.y if node.pos else math.inf,
-                      node.pos.x if node.pos else math.inf, node_id) for node_id, node in graph.nodes.items()}
+                      node.pos.x if node.pos else math.inf, node_id) for node_id, node in nodes.items()}
     key = keys.__getitem__  # the priority of a node among those the wiring leaves independent
 
-    data_nodes = [n.id for n in graph.nodes.values() if n.type == "block" or n.type == "output"]
-    predecessors = {n: {s.node for s in graph.inputs.get(n, {}).values()
-                        if graph.nodes[s.node].type == "block"} for n in data_nodes}
-    scheduled = _data_flow_order(data_nodes, predecessors, key)
+    predecessors: dict[str, set[str]] = {}  # blocks and output nodes (in node order) -> the blocks feeding them
+    fed = {s.node for sources in inputs.values() for s in sources.values()}
+    unused: list[str] = []  # input nodes that feed nothing
+    control: list[str] = []
+    for node in nodes.values():
+        kind = node.type
+        if kind == "block" or kind == "output":
+            predecessors[node.id] = {s.node for s in inputs.get(node.id, _NONE).values()
+                                     if nodes[s.node].type == "block"}
+        elif kind == "input":
+            if node.id not in fed:
+                unused.append(node.id)
+        elif kind in CONTROL:
+            control.append(node.id)
+    scheduled = _data_flow_order(list(predecessors), predecessors, key)
     done: set[str] = set()
     for node_id in scheduled:
-        for pin, source in graph.inputs.get(node_id, {}).items():
-            if source.node in predecessors[node_id] and source.node not in done:
-                graph.feedback.add((node_id, pin))
+        preds = predecessors[node_id]
+        if preds:
+            for pin, source in inputs[node_id].items():
+                if source.node in preds and source.node not in done:
+                    graph.feedback.add((node_id, pin))
         done.add(node_id)
-    unused = {s.node for sources in graph.inputs.values() for s in sources.values()}
-    unused = [n.id for n in graph.nodes.values() if n.type == "input" and n.id not in unused]
-    control = [n.id for n in graph.nodes.values() if n.type in CONTROL]
     return _place_inputs(graph, scheduled + sorted(unused, key=key) + sorted(control, key=key), key)
+
+
+_NONE: dict[str, Source] = {}  # no inputs (read only)
 
 
 def _explicit_ranks(network: fbd.FbdNetwork, nodes: dict[str, fbd.FbdNode], report: Report) -> dict[str, int]:
@@ -336,12 +350,17 @@ def _components(nodes: list[str], predecessors: dict[str, set[str]]) -> dict[str
 
 def _place_inputs(graph: NetworkGraph, order: list[str], key) -> list[str]:
     """Put each input node just before its first consumer (unused ones stay where ``order`` has them)."""
+    nodes = graph.nodes
     placed = set(order)
     result: list[str] = []
     for node_id in order:
-        for source in sorted(graph.inputs.get(node_id, {}).values(), key=lambda s: key(s.node)):
-            if graph.nodes[source.node].type == "input" and source.node not in placed:
-                placed.add(source.node)
-                result.append(source.node)
+        sources = [s.node for s in graph.inputs.get(node_id, _NONE).values()
+                   if s.node not in placed and nodes[s.node].type == "input"]
+        if len(sources) > 1:
+            sources.sort(key=key)
+        for source in sources:
+            if source not in placed:  # one input node may feed several pins of this node
+                placed.add(source)
+                result.append(source)
         result.append(node_id)
     return result

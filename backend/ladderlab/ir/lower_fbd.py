@@ -66,12 +66,12 @@ class _Network:
         for sources in graph.inputs.values():  # once per network, not a scan of all wires per block
             for source in sources.values():
                 self.used_pins.setdefault(source.node, set()).add(source.pin)
-        self.written = {name for node in graph.nodes.values() if isinstance(node, fbd.OutputNode)
+        self.written = {name for node in graph.nodes.values() if node.type == "output"
                         for name in root_names(node.var)}
         for node in graph.nodes.values():
-            if isinstance(node, fbd.Block):
+            if node.type == "block":
                 self.callees[node.id] = resolve_callee(self.ops, node.call, node.instance, self.at(node.id))
-            elif isinstance(node, fbd.Connector):
+            elif node.type == "connector":
                 self.connector_name(node)
         graph.visit(self)
         label = canonical_label(self.network.label) if self.network.label else None
@@ -255,6 +255,8 @@ class _Network:
         (Wires into unknown inputs are reported by the call check, with ST's messages.)"""
         outputs = callee.output_names() + (["ENO"] if node.en else [])
         used = self.used_pins.get(node.id, set())
+        if not flags and (node.en or "EN" not in self.graph.inputs.get(node.id, {})) and used.issubset(outputs):
+            return True  # the common case: no flags, every wire from a real output (no problem below applies)
         wired = set(self.graph.inputs.get(node.id, {}))
         problems: list[tuple[str, str, str]] = []
         for pin in sorted(used - set(outputs) - {"ENO"}):
@@ -361,4 +363,5 @@ def variables(expr: Expr):
 
 
 def _flags(node: fbd.FbdNode) -> dict[str, fbd.PinFlags]:
-    return {pin.upper(): flag for pin, flag in (getattr(node, "pins", None) or {}).items()}
+    pins = getattr(node, "pins", None)
+    return {pin.upper(): flag for pin, flag in pins.items()} if pins else {}
