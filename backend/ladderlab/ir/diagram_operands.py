@@ -66,6 +66,7 @@ class Operands:
         self.wires: dict[str, Symbol] = {}
         self._reads: dict[tuple[str, str], tuple[Expr | None, t.Type, list[Diagnostic]]] = {}
         self._parsed: dict[str, tuple[ast.Expr | None, list[Diagnostic]]] = {}  # by the parser, never annotated
+        self._shapes: dict[str, tuple | None] = {}  # stripped operand text -> its quick shape (see _quick_parse)
         self.callees: dict[str, Any] = {}  # upper-case name -> diagram_calls.Callee, resolved once per POU
         self._temps: dict[IrType, list[Var]] = {}
         self._used: dict[IrType, int] = {}
@@ -133,17 +134,29 @@ class Operands:
     def _quick_parse(self, text: str) -> ast.Expr | None:
         """The AST of the common operand shapes without the LALR parser - a declared variable, a member of
         one (``T1.Q``), a decimal integer - exactly as the parser builds them; None for anything else.
-        (A generated 10,000-network diagram has some 60,000 operands.)"""
+        (A generated 10,000-network diagram has some 60,000 operands, most read twice: an FBD input node's
+        text by the node and by its consumer's call; the shape is recognised once, the nodes are new.)"""
+        if text in self._shapes:
+            shape = self._shapes[text]
+        else:
+            shape = self._shapes[text] = self._quick_shape(text)
+        if shape is None:
+            return None
+        digits, root, member = shape
+        if digits is not None:
+            return ast.IntLit(digits, span=_one_line(len(text)))
+        name = ast.Name(root, span=_one_line(len(root)))
+        return ast.Member(name, member, span=_one_line(len(text))) if member is not None else name
+
+    def _quick_shape(self, text: str) -> tuple[int | None, str | None, str | None] | None:
+        """(integer, root name, member) of a quick operand text; None when the parser must read it."""
         match = _QUICK.fullmatch(text)
         if match is None:
             return None
         digits, root, member = match.groups()
         if digits is not None:
-            return ast.IntLit(int(digits), span=_one_line(len(text)))
-        if not self.declared(root):
-            return None
-        name = ast.Name(root, span=_one_line(len(root)))
-        return ast.Member(name, member, span=_one_line(len(text))) if member is not None else name
+            return int(digits), None, None
+        return (None, root, member) if self.declared(root) else None
 
     def declared(self, name: str) -> bool:
         """Is ``name`` a variable of this POU or a global? (A declared name is never a keyword, so the parser

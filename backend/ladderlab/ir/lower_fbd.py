@@ -25,7 +25,8 @@ from .diagram_operands import At, Operands
 from .fbd_order import NetworkGraph, Source, analyse
 from .lower_expr import convert
 from .lower_st import fb_output, fb_pins
-from .nodes import Assign, Binary, Block, Call, Convert, Expr, If, Jump, Origin, Probe, Return, Stmt, Unary, Var
+from .nodes import (Assign, Binary, Block, Call, Convert, Expr, If, Jump, Origin, Probe, Return, Stmt, Unary, Var,
+                    diagram_origin)
 from .power import TRUE, coil, edge, not_
 from .types import BOOL
 
@@ -75,7 +76,7 @@ class _Network:
                 self.connector_name(node)
         graph.visit(self)
         label = canonical_label(self.network.label) if self.network.label else None
-        return Block(self.out, Origin(self.ctx.name, network=self.network.id),
+        return Block(self.out, diagram_origin(self.ctx.name, self.network.id),
                      label if label is not None and self.labels.get(label) == self.network.id else None)
 
     # ------------------------------------------------------------ helpers
@@ -86,7 +87,7 @@ class _Network:
         """One (immutable) origin per node: every statement and probe of the node carries it."""
         origin = self.origins.get(node)
         if origin is None:
-            origin = self.origins[node] = Origin(self.ctx.name, network=self.network.id, element=node)
+            origin = self.origins[node] = diagram_origin(self.ctx.name, self.network.id, node)
         return origin
 
     def expr(self, value: PinValue, at: At, what: str, expected: t.Type | None = None) -> tuple[Expr | None, t.Type]:
@@ -217,16 +218,19 @@ class _Network:
         callee, instance = resolved
         at, origin = self.at(node.id), self.origin(node.id)
         flags = _flags(node)
-        if not self._pins_known(node, callee, flags) or any(n == node.id for n, _ in self.graph.broken):
+        broken = self.graph.broken
+        if not self._pins_known(node, callee, flags) or broken and any(n == node.id for n, _ in broken):
             return
         inputs: dict[str, PinValue] = {}
         for pin in self.graph.inputs.get(node.id, {}):
             value = self.source(node.id, pin)
             if value is None:
                 return  # its producer failed or the loop has no initial value: reported there
-            value = self.flagged(value, flags.get(pin), at.on(pin))
-            if value is None:
-                return
+            flag = flags.get(pin)
+            if flag is not None:
+                value = self.flagged(value, flag, at.on(pin))
+                if value is None:
+                    return
             inputs[pin] = value
         en = inputs.pop("EN", None)
         if node.en and en is None:
@@ -274,10 +278,10 @@ class _Network:
             self.ops.report(self.at(node.id, pin), code, message)
         return not problems
 
-    def flagged(self, value: PinValue, flags: fbd.PinFlags | None, at: At) -> PinValue | None:
+    def flagged(self, value: PinValue, flags: fbd.PinFlags, at: At) -> PinValue | None:
         """An input with its pin flags applied: inversion first, then edge detection (an R_TRIG/F_TRIG in
         front of the pin)."""
-        if flags is None or not flags.negated and flags.edge is None:
+        if not flags.negated and flags.edge is None:
             return value
         flag = "negated" if flags.edge is None else f"{flags.edge} edge"
         what = f"the {flag} input {at.pin} of '{at.element}'"
