@@ -145,7 +145,7 @@ class _Network:
         if value is None:
             return
         origin = self.origin(node.id)
-        if self.written & set(variables(value)):
+        if not self.written.isdisjoint(variables(value)):
             slot = self.ops.temp(self.ctx.ir_type(t.concrete(ty)))
             self.out.append(Assign(slot, value, origin))
             self.values[(node.id, "OUT")], value = (slot, ty), slot
