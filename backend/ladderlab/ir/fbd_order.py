@@ -112,7 +112,8 @@ def analyse(network: fbd.FbdNetwork, report: Report) -> NetworkGraph:
 def _wires_by_input(network: fbd.FbdNetwork, nodes: dict[str, fbd.FbdNode],
                     report: Report) -> dict[tuple[str, str], fbd.Wire]:
     """Valid wires by their (consumer, PIN) end; a second wire into one input is a wired OR (GR-30)."""
-    by_input: dict[tuple[str, str], list[fbd.Wire]] = {}
+    result: dict[tuple[str, str], fbd.Wire] = {}  # the first wire into each input
+    more: dict[tuple[str, str], list[fbd.Wire]] = {}  # the further ones (wired ORs, rare)
     for wire in network.wires:
         source, target = wire.from_, wire.to
         pin = target.pin.upper()
@@ -120,18 +121,16 @@ def _wires_by_input(network: fbd.FbdNetwork, nodes: dict[str, fbd.FbdNode],
                 _plain_end(nodes.get(target.node), pin, CONSUMERS, SIMPLE_IN) or \
                 _valid_end(wire, source, nodes, PRODUCERS, SIMPLE_OUT, "output", network.id, report) and \
                 _valid_end(wire, target, nodes, CONSUMERS, SIMPLE_IN, "input", network.id, report):
-            group = by_input.get((target.node, pin))
-            if group is None:
-                by_input[(target.node, pin)] = [wire]
+            key = (target.node, pin)
+            if key not in result:
+                result[key] = wire
             else:
-                group.append(wire)
-    result: dict[tuple[str, str], fbd.Wire] = {}
-    for (node, pin), group in by_input.items():
-        if len(group) > 1:
-            names = " and ".join(f"from {w.from_.node}.{w.from_.pin}" for w in group)
-            report("FBD-WIRED-OR", f"input {pin} of '{node}' has {len(group)} wires ({names}): FBD has no wired OR, "
-                   "use an OR block", network=network.id, element=node, pin=pin)
-        result[(node, pin)] = group[0]
+                more.setdefault(key, []).append(wire)
+    for node, pin in [key for key in result if key in more] if more else []:  # in the order of their first wires
+        group = [result[(node, pin)], *more[(node, pin)]]
+        names = " and ".join(f"from {w.from_.node}.{w.from_.pin}" for w in group)
+        report("FBD-WIRED-OR", f"input {pin} of '{node}' has {len(group)} wires ({names}): FBD has no wired OR, "
+               "use an OR block", network=network.id, element=node, pin=pin)
     return result
 
 

@@ -309,23 +309,21 @@ class _Network:
         carried as their operand text (``inst.Q``: each consumer reads it in its own context); the probes read
         them from the instance the FbCall (``first``) called."""
         at, origin = self.at(node.id), self.origin(node.id)
-        pins: dict[str, PinValue] = {}
-        after_call: dict[str, tuple[Expr, t.Type]] = {}
+        pins: dict[str, PinValue] = {}  # what the consumers read
+        probed: dict[str, tuple[Expr, t.Type]] = {}  # what the probes read
         if callee.is_fb:
             types = fb_pins(call.callee.ty, self.ctx)
             for pin in callee.output_names():
                 pins[pin] = f"{instance}.{pin}"
-                after_call[pin] = fb_output(first.instance, pin, types[pin][0]), callee.output_type(pin)
+                probed[pin] = fb_output(first.instance, pin, types[pin][0]), callee.output_type(pin)
         else:
-            pins["OUT"] = (result, call.ty)
+            pins["OUT"] = probed["OUT"] = (result, call.ty)
         if eno is not None:
-            pins["ENO"] = (eno, t.BOOL)
+            pins["ENO"] = probed["ENO"] = (eno, t.BOOL)
         probes: list[Stmt] = []
         for pin, value in pins.items():
             flag = flags.get(pin)
-            expr, ty = after_call.get(pin) or self.expr(value, at.on(pin), f"output {pin} of '{node.id}'")
-            if expr is None:
-                continue
+            expr, ty = probed[pin]
             if flag is not None and flag.negated:
                 if not t.same(ty, t.BOOL):
                     self.ops.report(at.on(pin), "FBD-NOT-BOOL", f"output {pin} of '{node.id}' is negated, but "
