@@ -134,7 +134,7 @@ def _wires_by_input(network: fbd.FbdNetwork, nodes: dict[str, fbd.FbdNode],
     return result
 
 
-def _plain_end(node: fbd.FbdNode | None, pin: str, kinds: tuple, simple_pin: str) -> bool:
+def _plain_end(node: fbd.FbdNode | None, pin: str, kinds: frozenset, simple_pin: str) -> bool:
     """``_valid_end`` without its reports, for the common case of a valid end (checked for every wire)."""
     kind = node.type if node is not None else None
     return kind == "block" or kind in kinds and (pin == simple_pin or pin.upper() == simple_pin)

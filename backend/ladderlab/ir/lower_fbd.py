@@ -259,7 +259,8 @@ class _Network:
         (Wires into unknown inputs are reported by the call check, with ST's messages.)"""
         outputs = callee.output_names() + (["ENO"] if node.en else [])
         used = self.used_pins.get(node.id, set())
-        if not flags and (node.en or "EN" not in self.graph.inputs.get(node.id, {})) and used.issubset(outputs):
+        into = self.graph.inputs.get(node.id, {})
+        if not flags and (node.en or "EN" not in into and "ENO" not in into) and used.issubset(outputs):
             return True  # the common case: no flags, every wire from a real output (no problem below applies)
         wired = set(self.graph.inputs.get(node.id, {}))
         problems: list[tuple[str, str, str]] = []
@@ -365,5 +366,4 @@ def variables(expr: Expr):
 
 
 def _flags(node: fbd.FbdNode) -> dict[str, fbd.PinFlags]:
-    pins = getattr(node, "pins", None)
-    return {pin.upper(): flag for pin, flag in pins.items()} if pins else {}
+    return {pin.upper(): flag for pin, flag in (getattr(node, "pins", None) or {}).items()}
