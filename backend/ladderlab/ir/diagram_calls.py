@@ -214,7 +214,7 @@ def check_call(ops: Operands, callee: Callee, instance: str | None, inputs: dict
         checker.call(node, statement=True)
     else:
         checker.expr(node)  # types the call node (its result type)
-    if any(d.severity == "error" for d in ops.ctx.diagnostics[before:]) or node.ty is t.ERROR:
+    if ops.errors_since(before) or node.ty is t.ERROR:
         return None
     return node
 

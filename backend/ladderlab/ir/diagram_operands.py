@@ -92,6 +92,12 @@ class Operands:
     def report(self, at: At, code: str, message: str, severity: str = "error") -> None:
         self.ctx.report(code, message, network=at.network, element=at.element, pin=at.pin, severity=severity)
 
+    def errors_since(self, before: int) -> bool:
+        """Was an error reported since the POU had ``before`` diagnostics? (Asked after every check: mostly
+        nothing was reported, and then nothing is scanned.)"""
+        diagnostics = self.ctx.diagnostics
+        return len(diagnostics) > before and any(d.severity == "error" for d in diagnostics[before:])
+
     def _relocate(self, diagnostic: Diagnostic, at: At) -> None:
         """An operand's diagnostic, moved from the operand text to the element and pin."""
         code, severity = diagnostic.code, diagnostic.severity
@@ -222,7 +228,7 @@ class Operands:
         ty = checker.expr(node, expected)
         if expected is not None and ty is not t.ERROR:
             assignable_or_report(checker, expected, ty, node, f"operand '{text.strip()}'")
-        if ty is t.ERROR or ty is t.VOID or any(d.severity == "error" for d in diagnostics):
+        if ty is t.ERROR or ty is t.VOID or diagnostics and any(d.severity == "error" for d in diagnostics):
             return None, t.ERROR, diagnostics
         lowered = self._lower_quietly(node, diagnostics, self.ctx.ir_type(expected) if expected is not None else None)
         return lowered, node.ty, diagnostics
@@ -250,7 +256,7 @@ class Operands:
             return None, t.ERROR
         before = len(self.ctx.diagnostics)
         ty = self.checker(at).target(node)
-        if ty is t.ERROR or any(d.severity == "error" for d in self.ctx.diagnostics[before:]):
+        if ty is t.ERROR or self.errors_since(before):
             return None, t.ERROR
         if isinstance(node, ast.Member) and node.name.isdigit():
             self.report(at, f"{self.lang}-BIT-TARGET", f"{what} cannot write a single bit ('{text.strip()}') yet: "
@@ -283,7 +289,7 @@ class Operands:
         node = ast.Binary(_COMPARE[op], nodes[0], nodes[1])
         before = len(self.ctx.diagnostics)
         self.checker(at, {"left": nodes[0], "right": nodes[1]}).expr(node)
-        if any(d.severity == "error" for d in self.ctx.diagnostics[before:]):
+        if self.errors_since(before):
             return None
         return self.lower(node, at)
 
