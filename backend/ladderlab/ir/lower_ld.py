@@ -40,10 +40,11 @@ def walk(elements: list[ld.LdElement]) -> Iterator[ld.LdElement]:
     """Every element of a series list, nested ones (parallel branches, box inputs) included, left to right."""
     for element in elements:
         yield element
-        if isinstance(element, ld.Parallel):
+        kind = element.type  # (the tag, not isinstance: the pydantic classes check through ABCMeta)
+        if kind == "parallel":
             for branch in element.branches:
                 yield from walk(branch)
-        elif isinstance(element, ld.Box):
+        elif kind == "box":
             for value in element.inputs.values():
                 if isinstance(value, list):
                     yield from walk(value)
@@ -97,7 +98,7 @@ class _Rung:
         """
         for index, element in enumerate(elements):
             last = index == len(elements) - 1
-            if isinstance(element, (ld.Jump, ld.Return)):
+            if element.type == "jump" or element.type == "return":
                 self.control_element(element, power, last and open_end)
                 if last:
                     return None
@@ -106,15 +107,16 @@ class _Rung:
         return power
 
     def element(self, element: ld.LdElement, power: Expr, open_end: bool) -> Expr:
-        if isinstance(element, ld.Contact):
+        kind = element.type  # (the tag, not isinstance: the pydantic classes check through ABCMeta)
+        if kind == "contact":
             return self.contact(element, power)
-        if isinstance(element, ld.Compare):
+        if kind == "compare":
             at = self.at(element.id)
             condition = self.ops.compare(element.op, element.left, element.right, at)
             return self.power(element.id, and_(power, condition if condition is not None else FALSE))
-        if isinstance(element, ld.Coil):
+        if kind == "coil":
             return self.coil(element, power)
-        if isinstance(element, ld.Parallel):
+        if kind == "parallel":
             return self.parallel(element, power, open_end)
         return self.box(element, power)
 
