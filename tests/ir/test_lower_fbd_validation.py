@@ -78,6 +78,9 @@ CASES = {
     "ENO without en": (
         net("n1", [blk("x", "TON", "t1"), out("o", "a")], [("x.ENO", "o.IN")]),
         f"{WHERE} x, pin ENO: error FBD-UNKNOWN-PIN: 'x' has no ENO: set en to use EN and ENO"),
+    "a wire into ENO without en": (
+        net("n1", [inp("i", "a"), blk("x", "TON", "t1")], [("i.OUT", "x.ENO")]),
+        f"{WHERE} x, pin ENO: error FBD-UNKNOWN-PIN: 'x' has no ENO: set en to use EN and ENO"),
     "type mismatch on a pin": (
         net("n1", [inp("i", "n"), blk("x", "TON", "t1")], [("i.OUT", "x.PT")]),
         f"{WHERE} x, pin PT: error ST-TYPE-MISMATCH: input PT of TON: expected TIME, got INT without a conversion "

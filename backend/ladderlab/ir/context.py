@@ -53,6 +53,8 @@ class PouContext:
         self._seen_upto = 0
         # var_for's answers (IR nodes are immutable); asked for by the bodies only, after edge_preamble set edges
         self._vars: dict[Symbol, Var] = {}
+        self.fb_pins: dict[tuple[str, bool], dict] = {}  # lower_st.fb_pins' answers, by FB type name and std-ness
+        self.signatures: dict[tuple, tuple] = {}  # lower_expr's standard function call signatures (see _signature)
         # Statement-level state of the ST lowering: where calls with EN/ENO are lifted to (None: not allowed
         # here), and how many variable reads / user function calls the current statement evaluated so far.
         self.lifts: list[Stmt] | None = None

@@ -37,8 +37,8 @@ class Callee:
     std_fb: stdlib.StdFunctionBlock | None = None
     pou: PouInfo | None = None
 
-    @property
-    def is_fb(self) -> bool:
+    @functools.cached_property
+    def is_fb(self) -> bool:  # asked several times for every box
         return self.std_fb is not None or self.pou is not None and self.pou.kind == "FUNCTION_BLOCK"
 
     def input_names(self) -> list[str]:
@@ -101,7 +101,19 @@ class Callee:
 
     def missing(self, connected: set[str]) -> list[str]:
         """Inputs that must be connected but are not: every input of a standard function (extension pins
-        without gaps: IN3 needs IN2 ...), and every VAR_IN_OUT."""
+        without gaps: IN3 needs IN2 ...), and every VAR_IN_OUT. Answered once per set of connected pins
+        (the boxes of one type are mostly wired alike)."""
+        key = frozenset(connected)
+        missing = self._memo.get(key)
+        if missing is None:
+            missing = self._memo[key] = self._missing(connected)
+        return list(missing)
+
+    @functools.cached_property
+    def _memo(self) -> dict[frozenset[str], list[str]]:
+        return {}
+
+    def _missing(self, connected: set[str]) -> list[str]:
         if self.std_function is None:
             return [pin for pin in self.in_outs() if pin not in connected]
         needed = self.input_names()
@@ -176,12 +188,12 @@ def check_call(ops: Operands, callee: Callee, instance: str | None, inputs: dict
     pins: dict[str, ast.Arg] = {}
     failed = bool(missing or wired_in_outs)
     if en is not None:
-        node = _node(ops, en, at.on("EN"), f"input EN of {callee.name}")
+        node = _node(ops, en, at, "EN", callee)
         failed |= node is None
         if node is not None:
             args.append(_arg(ast.Arg("EN", node), "EN", pins))
     for pin in sorted(inputs, key=callee.rank):
-        node = _node(ops, inputs[pin], at.on(pin), f"input {pin} of {callee.name}")
+        node = _node(ops, inputs[pin], at, pin, callee)
         failed |= node is None
         if node is not None:
             args.append(_arg(ast.Arg(pin, node), pin, pins))
@@ -202,14 +214,14 @@ def check_call(ops: Operands, callee: Callee, instance: str | None, inputs: dict
         checker.call(node, statement=True)
     else:
         checker.expr(node)  # types the call node (its result type)
-    if any(d.severity == "error" for d in ops.ctx.diagnostics[before:]) or node.ty is t.ERROR:
+    if ops.errors_since(before) or node.ty is t.ERROR:
         return None
     return node
 
 
-def _node(ops: Operands, value: PinValue, at: At, what: str) -> ast.Expr | None:
+def _node(ops: Operands, value: PinValue, at: At, pin: str, callee: Callee) -> ast.Expr | None:
     if isinstance(value, str):
-        return ops.parse(value, at, what)
+        return ops.parse(value, at.on(pin), f"input {pin} of {callee.name}")
     return ops.wire_node(*value) if isinstance(value, tuple) else value
 
 

@@ -66,6 +66,7 @@ class Operands:
         self.wires: dict[str, Symbol] = {}
         self._reads: dict[tuple[str, str], tuple[Expr | None, t.Type, list[Diagnostic]]] = {}
         self._parsed: dict[str, tuple[ast.Expr | None, list[Diagnostic]]] = {}  # by the parser, never annotated
+        self._shapes: dict[str, tuple | None] = {}  # stripped operand text -> its quick shape (see _quick_parse)
         self.callees: dict[str, Any] = {}  # upper-case name -> diagram_calls.Callee, resolved once per POU
         self._temps: dict[IrType, list[Var]] = {}
         self._used: dict[IrType, int] = {}
@@ -90,6 +91,12 @@ class Operands:
     # ------------------------------------------------------------ diagnostics
     def report(self, at: At, code: str, message: str, severity: str = "error") -> None:
         self.ctx.report(code, message, network=at.network, element=at.element, pin=at.pin, severity=severity)
+
+    def errors_since(self, before: int) -> bool:
+        """Was an error reported since the POU had ``before`` diagnostics? (Asked after every check: mostly
+        nothing was reported, and then nothing is scanned.)"""
+        diagnostics = self.ctx.diagnostics
+        return len(diagnostics) > before and any(d.severity == "error" for d in diagnostics[before:])
 
     def _relocate(self, diagnostic: Diagnostic, at: At) -> None:
         """An operand's diagnostic, moved from the operand text to the element and pin."""
@@ -133,17 +140,29 @@ class Operands:
     def _quick_parse(self, text: str) -> ast.Expr | None:
         """The AST of the common operand shapes without the LALR parser - a declared variable, a member of
         one (``T1.Q``), a decimal integer - exactly as the parser builds them; None for anything else.
-        (A generated 10,000-network diagram has some 60,000 operands.)"""
+        (A generated 10,000-network diagram has some 60,000 operands, most read twice: an FBD input node's
+        text by the node and by its consumer's call; the shape is recognised once, the nodes are new.)"""
+        if text in self._shapes:
+            shape = self._shapes[text]
+        else:
+            shape = self._shapes[text] = self._quick_shape(text)
+        if shape is None:
+            return None
+        digits, root, member = shape
+        if digits is not None:
+            return ast.IntLit(digits, span=_one_line(len(text)))
+        name = ast.Name(root, span=_one_line(len(root)))
+        return ast.Member(name, member, span=_one_line(len(text))) if member is not None else name
+
+    def _quick_shape(self, text: str) -> tuple[int | None, str | None, str | None] | None:
+        """(integer, root name, member) of a quick operand text; None when the parser must read it."""
         match = _QUICK.fullmatch(text)
         if match is None:
             return None
         digits, root, member = match.groups()
         if digits is not None:
-            return ast.IntLit(int(digits), span=_one_line(len(text)))
-        if not self.declared(root):
-            return None
-        name = ast.Name(root, span=_one_line(len(root)))
-        return ast.Member(name, member, span=_one_line(len(text))) if member is not None else name
+            return int(digits), None, None
+        return (None, root, member) if self.declared(root) else None
 
     def declared(self, name: str) -> bool:
         """Is ``name`` a variable of this POU or a global? (A declared name is never a keyword, so the parser
@@ -209,7 +228,7 @@ class Operands:
         ty = checker.expr(node, expected)
         if expected is not None and ty is not t.ERROR:
             assignable_or_report(checker, expected, ty, node, f"operand '{text.strip()}'")
-        if ty is t.ERROR or ty is t.VOID or any(d.severity == "error" for d in diagnostics):
+        if ty is t.ERROR or ty is t.VOID or diagnostics and any(d.severity == "error" for d in diagnostics):
             return None, t.ERROR, diagnostics
         lowered = self._lower_quietly(node, diagnostics, self.ctx.ir_type(expected) if expected is not None else None)
         return lowered, node.ty, diagnostics
@@ -237,7 +256,7 @@ class Operands:
             return None, t.ERROR
         before = len(self.ctx.diagnostics)
         ty = self.checker(at).target(node)
-        if ty is t.ERROR or any(d.severity == "error" for d in self.ctx.diagnostics[before:]):
+        if ty is t.ERROR or self.errors_since(before):
             return None, t.ERROR
         if isinstance(node, ast.Member) and node.name.isdigit():
             self.report(at, f"{self.lang}-BIT-TARGET", f"{what} cannot write a single bit ('{text.strip()}') yet: "
@@ -270,7 +289,7 @@ class Operands:
         node = ast.Binary(_COMPARE[op], nodes[0], nodes[1])
         before = len(self.ctx.diagnostics)
         self.checker(at, {"left": nodes[0], "right": nodes[1]}).expr(node)
-        if any(d.severity == "error" for d in self.ctx.diagnostics[before:]):
+        if self.errors_since(before):
             return None
         return self.lower(node, at)
 

@@ -30,9 +30,11 @@ from typing import NamedTuple, Protocol
 from ..model import fbd
 from .diagram_checks import Report
 
-PRODUCERS = (fbd.Block, fbd.InputNode, fbd.Continuation)  # nodes with an output pin
-CONSUMERS = (fbd.Block, fbd.OutputNode, fbd.FbdJump, fbd.FbdReturn, fbd.Connector)  # nodes with an input pin
-CONTROL = (fbd.FbdJump, fbd.FbdReturn)
+# Node kinds by their ``type`` tag: comparing tags is several times cheaper than isinstance on the pydantic
+# (ABC) node classes, and the structure of a large diagram asks it some 100 times per network.
+PRODUCERS = frozenset({"block", "input", "continuation"})  # nodes with an output pin
+CONSUMERS = frozenset({"block", "output", "jump", "return", "connector"})  # nodes with an input pin
+CONTROL = frozenset({"jump", "return"})
 # The one pin of the simple nodes, as the editor draws them.
 SIMPLE_OUT = "OUT"
 SIMPLE_IN = "IN"
@@ -70,11 +72,12 @@ class NetworkGraph:
         """Hand every node to the visitor in evaluation order (the lowering and the ST export walk it alike)."""
         for node_id in self.order:
             node = self.nodes[node_id]
-            if isinstance(node, fbd.InputNode):
+            kind = node.type
+            if kind == "input":
                 visitor.input_node(node)
-            elif isinstance(node, fbd.Block):
+            elif kind == "block":
                 visitor.block(node)
-            elif isinstance(node, fbd.OutputNode):
+            elif kind == "output":
                 visitor.output_node(node)
             else:
                 visitor.control(node)
@@ -94,11 +97,13 @@ def wire_text(wire: fbd.Wire) -> str:
 def analyse(network: fbd.FbdNetwork, report: Report) -> NetworkGraph:
     """Resolve the wires of ``network`` and fix its evaluation order, reporting structural errors."""
     nodes: dict[str, fbd.FbdNode] = {}
+    named = False  # any connector or continuation? (most networks have none)
     for node in network.nodes:
         nodes.setdefault(node.id, node)  # a repeated id is reported for the whole POU (check_unique_ids)
+        named = named or node.type in ("connector", "continuation")
     graph = NetworkGraph(nodes)
     wires = _wires_by_input(network, nodes, report)
-    connectors = _connectors(network, nodes, report)
+    connectors = _connectors(network, nodes, report) if named else {}
     _resolve(graph, network, wires, connectors, report)
     graph.order = _order(graph, network, report)
     return graph
@@ -107,33 +112,46 @@ def analyse(network: fbd.FbdNetwork, report: Report) -> NetworkGraph:
 def _wires_by_input(network: fbd.FbdNetwork, nodes: dict[str, fbd.FbdNode],
                     report: Report) -> dict[tuple[str, str], fbd.Wire]:
     """Valid wires by their (consumer, PIN) end; a second wire into one input is a wired OR (GR-30)."""
-    by_input: dict[tuple[str, str], list[fbd.Wire]] = {}
+    result: dict[tuple[str, str], fbd.Wire] = {}  # the first wire into each input
+    more: dict[tuple[str, str], list[fbd.Wire]] = {}  # the further ones (wired ORs, rare)
     for wire in network.wires:
-        if _valid_end(wire, wire.from_, nodes, PRODUCERS, SIMPLE_OUT, "output", network.id, report) and \
-                _valid_end(wire, wire.to, nodes, CONSUMERS, SIMPLE_IN, "input", network.id, report):
-            by_input.setdefault((wire.to.node, wire.to.pin.upper()), []).append(wire)
-    result: dict[tuple[str, str], fbd.Wire] = {}
-    for (node, pin), group in by_input.items():
-        if len(group) > 1:
-            names = " and ".join(f"from {w.from_.node}.{w.from_.pin}" for w in group)
-            report("FBD-WIRED-OR", f"input {pin} of '{node}' has {len(group)} wires ({names}): FBD has no wired OR, "
-                   "use an OR block", network=network.id, element=node, pin=pin)
-        result[(node, pin)] = group[0]
+        source, target = wire.from_, wire.to
+        pin = target.pin.upper()
+        if _plain_end(nodes.get(source.node), source.pin, PRODUCERS, SIMPLE_OUT) and \
+                _plain_end(nodes.get(target.node), pin, CONSUMERS, SIMPLE_IN) or \
+                _valid_end(wire, source, nodes, PRODUCERS, SIMPLE_OUT, "output", network.id, report) and \
+                _valid_end(wire, target, nodes, CONSUMERS, SIMPLE_IN, "input", network.id, report):
+            key = (target.node, pin)
+            if key not in result:
+                result[key] = wire
+            else:
+                more.setdefault(key, []).append(wire)
+    for node, pin in [key for key in result if key in more] if more else []:  # in the order of their first wires
+        group = [result[(node, pin)], *more[(node, pin)]]
+        names = " and ".join(f"from {w.from_.node}.{w.from_.pin}" for w in group)
+        report("FBD-WIRED-OR", f"input {pin} of '{node}' has {len(group)} wires ({names}): FBD has no wired OR, "
+               "use an OR block", network=network.id, element=node, pin=pin)
     return result
 
 
-def _valid_end(wire: fbd.Wire, end: fbd.PinRef, nodes: dict[str, fbd.FbdNode], kinds: tuple, simple_pin: str,
+def _plain_end(node: fbd.FbdNode | None, pin: str, kinds: frozenset, simple_pin: str) -> bool:
+    """``_valid_end`` without its reports, for the common case of a valid end (checked for every wire)."""
+    kind = node.type if node is not None else None
+    return kind == "block" or kind in kinds and (pin == simple_pin or pin.upper() == simple_pin)
+
+
+def _valid_end(wire: fbd.Wire, end: fbd.PinRef, nodes: dict[str, fbd.FbdNode], kinds: frozenset, simple_pin: str,
                side: str, network: str, report: Report) -> bool:
     node = nodes.get(end.node)
     if node is None:
         report("FBD-BAD-WIRE", f"wire {wire_text(wire)}: there is no node '{end.node}' in this network",
                network=network, element=end.node, pin=end.pin.upper())
         return False
-    if not isinstance(node, kinds):
+    if node.type not in kinds:
         report("FBD-BAD-WIRE", f"wire {wire_text(wire)}: a {_KIND[node.type]} has no {side} pin",
                network=network, element=node.id, pin=end.pin.upper())
         return False
-    if not isinstance(node, fbd.Block) and end.pin.upper() != simple_pin:
+    if node.type != "block" and end.pin.upper() != simple_pin:
         report("FBD-BAD-WIRE", f"wire {wire_text(wire)}: the {side} pin of a {_KIND[node.type]} is {simple_pin}",
                network=network, element=node.id, pin=end.pin.upper())
         return False
@@ -161,21 +179,30 @@ def _connectors(network: fbd.FbdNetwork, nodes: dict[str, fbd.FbdNode], report: 
 def _resolve(graph: NetworkGraph, network: fbd.FbdNetwork, wires: dict[tuple[str, str], fbd.Wire],
              connectors: dict[str, str], report: Report) -> None:
     """Fill ``graph.inputs`` with every consumer pin's real source; report outputs and connectors left unwired."""
+    nodes, inputs = graph.nodes, graph.inputs
     for (node_id, pin), wire in wires.items():
-        if isinstance(graph.nodes[node_id], fbd.Connector):
+        if nodes[node_id].type == "connector":
             continue
-        source = _follow(wire, graph.nodes, wires, connectors, set())
+        producer = nodes[wire.from_.node]
+        if producer.type == "continuation":
+            source = _follow(wire, nodes, wires, connectors, set())
+        else:  # the common case, as _follow would answer it
+            source = Source(producer.id, wire.from_.pin.upper(), wire)
         if source is None:
             graph.broken.add((node_id, pin))
+        elif node_id in inputs:
+            inputs[node_id][pin] = source
         else:
-            graph.inputs.setdefault(node_id, {})[pin] = source
-    for node in graph.nodes.values():
-        if isinstance(node, (fbd.OutputNode, fbd.Connector)) and (node.id, SIMPLE_IN) not in wires:
+            inputs[node_id] = {pin: source}
+    for node in nodes.values():
+        if node.type != "output" and node.type != "connector":
+            continue
+        if (node.id, SIMPLE_IN) not in wires:
             what = f"output node '{node.id}' ({node.var})" if isinstance(node, fbd.OutputNode) \
                 else f"connector '{node.name}'"
             report("FBD-DANGLING", f"{what} has no input wire", network=network.id, element=node.id, pin=SIMPLE_IN)
         elif isinstance(node, fbd.Connector):
-            _follow(wires[(node.id, SIMPLE_IN)], graph.nodes, wires, connectors, set(), report, network.id)
+            _follow(wires[(node.id, SIMPLE_IN)], nodes, wires, connectors, set(), report, network.id)
 
 
 def _follow(wire: fbd.Wire, nodes: dict[str, fbd.FbdNode], wires: dict[tuple[str, str], fbd.Wire],
@@ -198,25 +225,39 @@ def _follow(wire: fbd.Wire, nodes: dict[str, fbd.FbdNode], wires: dict[tuple[str
 
 
 def _order(graph: NetworkGraph, network: fbd.FbdNetwork, report: Report) -> list[str]:
-    rank = _explicit_ranks(network, graph.nodes, report)
+    nodes, inputs = graph.nodes, graph.inputs
+    rank = _explicit_ranks(network, nodes, report)
     keys = {node_id: (rank.get(node_id, len(rank)), node.pos.y if node.pos else math.inf,
-                      node.pos.x if node.pos else math.inf, node_id) for node_id, node in graph.nodes.items()}
+                      node.pos.x if node.pos else math.inf, node_id) for node_id, node in nodes.items()}
     key = keys.__getitem__  # the priority of a node among those the wiring leaves independent
 
-    data_nodes = [n.id for n in graph.nodes.values() if isinstance(n, (fbd.Block, fbd.OutputNode))]
-    predecessors = {n: {s.node for s in graph.inputs.get(n, {}).values()
-                        if isinstance(graph.nodes[s.node], fbd.Block)} for n in data_nodes}
-    scheduled = _data_flow_order(data_nodes, predecessors, key)
+    predecessors: dict[str, set[str]] = {}  # blocks and output nodes (in node order) -> the blocks feeding them
+    fed = {s.node for sources in inputs.values() for s in sources.values()}
+    unused: list[str] = []  # input nodes that feed nothing
+    control: list[str] = []
+    for node in nodes.values():
+        kind = node.type
+        if kind == "block" or kind == "output":
+            predecessors[node.id] = {s.node for s in inputs.get(node.id, _NONE).values()
+                                     if nodes[s.node].type == "block"}
+        elif kind == "input":
+            if node.id not in fed:
+                unused.append(node.id)
+        elif kind in CONTROL:
+            control.append(node.id)
+    scheduled = _data_flow_order(list(predecessors), predecessors, key)
     done: set[str] = set()
     for node_id in scheduled:
-        for pin, source in graph.inputs.get(node_id, {}).items():
-            if source.node in predecessors[node_id] and source.node not in done:
-                graph.feedback.add((node_id, pin))
+        preds = predecessors[node_id]
+        if preds:
+            for pin, source in inputs[node_id].items():
+                if source.node in preds and source.node not in done:
+                    graph.feedback.add((node_id, pin))
         done.add(node_id)
-    unused = {s.node for sources in graph.inputs.values() for s in sources.values()}
-    unused = [n.id for n in graph.nodes.values() if isinstance(n, fbd.InputNode) and n.id not in unused]
-    control = [n.id for n in graph.nodes.values() if isinstance(n, CONTROL)]
     return _place_inputs(graph, scheduled + sorted(unused, key=key) + sorted(control, key=key), key)
+
+
+_NONE: dict[str, Source] = {}  # no inputs (read only)
 
 
 def _explicit_ranks(network: fbd.FbdNetwork, nodes: dict[str, fbd.FbdNode], report: Report) -> dict[str, int]:
@@ -308,12 +349,17 @@ def _components(nodes: list[str], predecessors: dict[str, set[str]]) -> dict[str
 
 def _place_inputs(graph: NetworkGraph, order: list[str], key) -> list[str]:
     """Put each input node just before its first consumer (unused ones stay where ``order`` has them)."""
+    nodes = graph.nodes
     placed = set(order)
     result: list[str] = []
     for node_id in order:
-        for source in sorted(graph.inputs.get(node_id, {}).values(), key=lambda s: key(s.node)):
-            if isinstance(graph.nodes[source.node], fbd.InputNode) and source.node not in placed:
-                placed.add(source.node)
-                result.append(source.node)
+        sources = [s.node for s in graph.inputs.get(node_id, _NONE).values()
+                   if s.node not in placed and nodes[s.node].type == "input"]
+        if len(sources) > 1:
+            sources.sort(key=key)
+        for source in sources:
+            if source not in placed:  # one input node may feed several pins of this node
+                placed.add(source)
+                result.append(source)
         result.append(node_id)
     return result

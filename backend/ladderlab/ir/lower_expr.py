@@ -379,9 +379,33 @@ def std_call(node: ast.Call, ctx: PouContext) -> Call:
         if index is None:
             raise LoweringError(None)
         bound[index] = arg
+    types, result = _signature(function, node, bound, ctx)
+    args = tuple(lower_to(bound[index].value, ctx, target) if index in bound else Const(ir_default(target), target)
+                 for index, target in enumerate(types))
+    return Call(function.name, args, types, result)  # (a call statement's node has no .ty)
+
+
+def _signature(function: stdlib.StdFunction, node: ast.Call, bound: dict[int, ast.Arg],
+               ctx: PouContext) -> tuple[tuple[IrType, ...], IrType]:
+    """The IR types of a standard function call's inputs (by position, omitted ones included) and of its
+    result. They follow from the function, the bound positions, the argument types and the call's type
+    alone, so they are worked out once per POU for each such combination (a large diagram has thousands
+    of alike boxes)."""
+    key = (function.name, node.ty, *((index, bound[index].value.ty) for index in sorted(bound)))
+    try:
+        signature = ctx.signatures.get(key)
+    except TypeError:  # a type that cannot be a key: work it out every time
+        return _work_out_signature(function, node, bound, ctx)
+    if signature is None:
+        signature = ctx.signatures[key] = _work_out_signature(function, node, bound, ctx)
+    return signature
+
+
+def _work_out_signature(function: stdlib.StdFunction, node: ast.Call, bound: dict[int, ast.Arg],
+                        ctx: PouContext) -> tuple[tuple[IrType, ...], IrType]:
     count = max(len(function.inputs), max(bound, default=-1) + 1)
     generic = _generic_type(function, node, bound, ctx)
-    args, types = [], []
+    types = []
     for index in range(count):
         pin = function.pin(function.input_name(index))  # type: ignore[arg-type]
         arg = bound.get(index)
@@ -391,10 +415,9 @@ def std_call(node: ast.Call, ctx: PouContext) -> Call:
             target = ctx.ir_type(t.concrete(arg.value.ty)) if arg is not None else Elementary("INT")
         else:
             target = ctx.ir_type(t.elementary(pin.type))
-        args.append(lower_to(arg.value, ctx, target) if arg is not None else Const(ir_default(target), target))
         types.append(target)
     result = generic if function.result == stdlib.T else ctx.ir_type(t.elementary(function.result))
-    return Call(function.name, tuple(args), tuple(types), result)  # (a call statement's node has no .ty)
+    return tuple(types), result
 
 
 def _position(function: stdlib.StdFunction, name: str) -> int | None:

@@ -25,7 +25,8 @@ from .diagram_operands import At, Operands
 from .fbd_order import NetworkGraph, Source, analyse
 from .lower_expr import convert
 from .lower_st import fb_output, fb_pins
-from .nodes import Assign, Binary, Block, Call, Convert, Expr, If, Jump, Origin, Probe, Return, Stmt, Unary, Var
+from .nodes import (Assign, Binary, Block, Call, Convert, Expr, If, Jump, Origin, Probe, Return, Stmt, Unary, Var,
+                    diagram_origin)
 from .power import TRUE, coil, edge, not_
 from .types import BOOL
 
@@ -66,16 +67,16 @@ class _Network:
         for sources in graph.inputs.values():  # once per network, not a scan of all wires per block
             for source in sources.values():
                 self.used_pins.setdefault(source.node, set()).add(source.pin)
-        self.written = {name for node in graph.nodes.values() if isinstance(node, fbd.OutputNode)
+        self.written = {name for node in graph.nodes.values() if node.type == "output"
                         for name in root_names(node.var)}
         for node in graph.nodes.values():
-            if isinstance(node, fbd.Block):
+            if node.type == "block":
                 self.callees[node.id] = resolve_callee(self.ops, node.call, node.instance, self.at(node.id))
-            elif isinstance(node, fbd.Connector):
+            elif node.type == "connector":
                 self.connector_name(node)
         graph.visit(self)
         label = canonical_label(self.network.label) if self.network.label else None
-        return Block(self.out, Origin(self.ctx.name, network=self.network.id),
+        return Block(self.out, diagram_origin(self.ctx.name, self.network.id),
                      label if label is not None and self.labels.get(label) == self.network.id else None)
 
     # ------------------------------------------------------------ helpers
@@ -86,7 +87,7 @@ class _Network:
         """One (immutable) origin per node: every statement and probe of the node carries it."""
         origin = self.origins.get(node)
         if origin is None:
-            origin = self.origins[node] = Origin(self.ctx.name, network=self.network.id, element=node)
+            origin = self.origins[node] = diagram_origin(self.ctx.name, self.network.id, node)
         return origin
 
     def expr(self, value: PinValue, at: At, what: str, expected: t.Type | None = None) -> tuple[Expr | None, t.Type]:
@@ -144,7 +145,7 @@ class _Network:
         if value is None:
             return
         origin = self.origin(node.id)
-        if self.written & set(variables(value)):
+        if not self.written.isdisjoint(variables(value)):
             slot = self.ops.temp(self.ctx.ir_type(t.concrete(ty)))
             self.out.append(Assign(slot, value, origin))
             self.values[(node.id, "OUT")], value = (slot, ty), slot
@@ -217,16 +218,19 @@ class _Network:
         callee, instance = resolved
         at, origin = self.at(node.id), self.origin(node.id)
         flags = _flags(node)
-        if not self._pins_known(node, callee, flags) or any(n == node.id for n, _ in self.graph.broken):
+        broken = self.graph.broken
+        if not self._pins_known(node, callee, flags) or broken and any(n == node.id for n, _ in broken):
             return
         inputs: dict[str, PinValue] = {}
         for pin in self.graph.inputs.get(node.id, {}):
             value = self.source(node.id, pin)
             if value is None:
                 return  # its producer failed or the loop has no initial value: reported there
-            value = self.flagged(value, flags.get(pin), at.on(pin))
-            if value is None:
-                return
+            flag = flags.get(pin)
+            if flag is not None:
+                value = self.flagged(value, flag, at.on(pin))
+                if value is None:
+                    return
             inputs[pin] = value
         en = inputs.pop("EN", None)
         if node.en and en is None:
@@ -255,6 +259,9 @@ class _Network:
         (Wires into unknown inputs are reported by the call check, with ST's messages.)"""
         outputs = callee.output_names() + (["ENO"] if node.en else [])
         used = self.used_pins.get(node.id, set())
+        into = self.graph.inputs.get(node.id, {})
+        if not flags and (node.en or "EN" not in into and "ENO" not in into) and used.issubset(outputs):
+            return True  # the common case: no flags, every wire from a real output (no problem below applies)
         wired = set(self.graph.inputs.get(node.id, {}))
         problems: list[tuple[str, str, str]] = []
         for pin in sorted(used - set(outputs) - {"ENO"}):
@@ -272,10 +279,10 @@ class _Network:
             self.ops.report(self.at(node.id, pin), code, message)
         return not problems
 
-    def flagged(self, value: PinValue, flags: fbd.PinFlags | None, at: At) -> PinValue | None:
+    def flagged(self, value: PinValue, flags: fbd.PinFlags, at: At) -> PinValue | None:
         """An input with its pin flags applied: inversion first, then edge detection (an R_TRIG/F_TRIG in
         front of the pin)."""
-        if flags is None or not flags.negated and flags.edge is None:
+        if not flags.negated and flags.edge is None:
             return value
         flag = "negated" if flags.edge is None else f"{flags.edge} edge"
         what = f"the {flag} input {at.pin} of '{at.element}'"
@@ -303,23 +310,21 @@ class _Network:
         carried as their operand text (``inst.Q``: each consumer reads it in its own context); the probes read
         them from the instance the FbCall (``first``) called."""
         at, origin = self.at(node.id), self.origin(node.id)
-        pins: dict[str, PinValue] = {}
-        after_call: dict[str, tuple[Expr, t.Type]] = {}
+        pins: dict[str, PinValue] = {}  # what the consumers read
+        probed: dict[str, tuple[Expr, t.Type]] = {}  # what the probes read
         if callee.is_fb:
             types = fb_pins(call.callee.ty, self.ctx)
             for pin in callee.output_names():
                 pins[pin] = f"{instance}.{pin}"
-                after_call[pin] = fb_output(first.instance, pin, types[pin][0]), callee.output_type(pin)
+                probed[pin] = fb_output(first.instance, pin, types[pin][0]), callee.output_type(pin)
         else:
-            pins["OUT"] = (result, call.ty)
+            pins["OUT"] = probed["OUT"] = (result, call.ty)
         if eno is not None:
-            pins["ENO"] = (eno, t.BOOL)
+            pins["ENO"] = probed["ENO"] = (eno, t.BOOL)
         probes: list[Stmt] = []
         for pin, value in pins.items():
             flag = flags.get(pin)
-            expr, ty = after_call.get(pin) or self.expr(value, at.on(pin), f"output {pin} of '{node.id}'")
-            if expr is None:
-                continue
+            expr, ty = probed[pin]
             if flag is not None and flag.negated:
                 if not t.same(ty, t.BOOL):
                     self.ops.report(at.on(pin), "FBD-NOT-BOOL", f"output {pin} of '{node.id}' is negated, but "

@@ -19,7 +19,7 @@ from .diagram_calls import Callee, check_call, lower_call, resolve_callee
 from .diagram_checks import canonical_label, check_jump_target, check_labels, check_unique_ids, check_unique_networks
 from .diagram_operands import At, Operands
 from .lower_st import fb_output, fb_pins
-from .nodes import Assign, Block, Expr, If, Jump, Origin, Probe, Return, Stmt, Var
+from .nodes import Assign, Block, Expr, If, Jump, Origin, Probe, Return, Stmt, Var, diagram_origin
 from .power import FALSE, TRUE, and_, coil, edge, not_, or_
 from .types import BOOL
 
@@ -49,7 +49,7 @@ class _Rung:
         self.ops.new_network()
         self.series(network.elements, TRUE, open_end=True)
         label = canonical_label(network.label) if network.label else None
-        return Block(self.out + self.control, Origin(self.ctx.name, network=network.id),
+        return Block(self.out + self.control, diagram_origin(self.ctx.name, network.id),
                      label if label is not None and self.labels.get(label) == network.id else None)
 
     # ------------------------------------------------------------ helpers
@@ -57,7 +57,7 @@ class _Rung:
         """One (immutable) origin per element: every statement and probe of the element carries it."""
         origin = self.origins.get(element)
         if origin is None:
-            origin = self.origins[element] = Origin(self.ctx.name, network=self.network, element=element)
+            origin = self.origins[element] = diagram_origin(self.ctx.name, self.network, element)
         return origin
 
     def at(self, element: str, pin: str | None = None) -> At:
@@ -82,7 +82,7 @@ class _Rung:
         """
         for index, element in enumerate(elements):
             last = index == len(elements) - 1
-            if isinstance(element, (ld.Jump, ld.Return)):
+            if element.type == "jump" or element.type == "return":
                 self.control_element(element, power, last and open_end)
                 if last:
                     return None
@@ -91,15 +91,16 @@ class _Rung:
         return power
 
     def element(self, element: ld.LdElement, power: Expr, open_end: bool) -> Expr:
-        if isinstance(element, ld.Contact):
+        kind = element.type  # (the tag, not isinstance: the pydantic classes check through ABCMeta)
+        if kind == "contact":
             return self.contact(element, power)
-        if isinstance(element, ld.Compare):
+        if kind == "compare":
             at = self.at(element.id)
             condition = self.ops.compare(element.op, element.left, element.right, at)
             return self.power(element.id, and_(power, condition if condition is not None else FALSE))
-        if isinstance(element, ld.Coil):
+        if kind == "coil":
             return self.coil(element, power)
-        if isinstance(element, ld.Parallel):
+        if kind == "parallel":
             return self.parallel(element, power, open_end)
         return self.box(element, power)
 

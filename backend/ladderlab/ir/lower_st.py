@@ -192,7 +192,16 @@ def fb_output(instance: Var, name: str, ty: IrType) -> Var:
 
 
 def fb_pins(fb: t.FbType, ctx: PouContext) -> dict[str, tuple[IrType, str]]:
-    """Pin name -> (IR type, VAR_INPUT / VAR_IN_OUT / VAR_OUTPUT) of a standard or user FB, inputs first."""
+    """Pin name -> (IR type, VAR_INPUT / VAR_IN_OUT / VAR_OUTPUT) of a standard or user FB, inputs first.
+    Built once per FB type and POU (asked for at every call; callers only read it)."""
+    key = (fb.name.upper(), fb.std is not None)
+    pins = ctx.fb_pins.get(key)
+    if pins is None:
+        pins = ctx.fb_pins[key] = _fb_pins(fb, ctx)
+    return pins
+
+
+def _fb_pins(fb: t.FbType, ctx: PouContext) -> dict[str, tuple[IrType, str]]:
     if fb.std is not None:
         return {**{p.name: (ctx.ir_type(t.elementary(p.type)), "VAR_INPUT") for p in fb.std.inputs},
                 **{p.name: (ctx.ir_type(t.elementary(p.type)), "VAR_OUTPUT") for p in fb.std.outputs}}

@@ -100,10 +100,11 @@ def walk(elements: list[LdElement]) -> Iterator[LdElement]:
     """Every element of a series list, nested ones (parallel branches, box inputs) included, left to right."""
     for element in elements:
         yield element
-        if isinstance(element, Parallel):
-            for branch in element.branches:
+        kind = element.type  # (the tag, not isinstance: the pydantic classes check through ABCMeta)
+        if kind == "parallel":
+            for branch in element.branches:  # type: ignore[union-attr]
                 yield from walk(branch)
-        elif isinstance(element, Box):
-            for value in element.inputs.values():
+        elif kind == "box":
+            for value in element.inputs.values():  # type: ignore[union-attr]
                 if isinstance(value, list):
                     yield from walk(value)

@@ -77,18 +77,28 @@ class _Reader:
         match = _DECL.match(self.text, self.position)
         if match is None:
             return None
+        span = self.span_on_line(match.start(), match.end()) or self.span
         names = []
         for name in _NAME.finditer(self.text, match.start(1), match.end(1)):
             if name.group().upper() in self.keywords:
                 return None
-            names.append(ast.DeclName(name.group(), None, self.span(name.start(), name.end())))
+            names.append(ast.DeclName(name.group(), None, span(name.start(), name.end())))
         type_name = match.group(2)
         if type_name.upper() in self.keywords:
             return None
         self.position = match.end()
-        spec = ast.NamedType(type_name, self.span(match.start(2), match.end(2)))
+        spec = ast.NamedType(type_name, span(match.start(2), match.end(2)))
         first, last = names[0].span, spec.span
         return ast.VarDecl(names, spec, None, None, ast.Span(first.line, first.column, last.end_line, last.end_column))
+
+    def span_on_line(self, start: int, end: int):
+        """``span`` for the tokens between offsets ``start`` and ``end`` when no line break separates them (one
+        line search for a whole declaration instead of two per token); None otherwise."""
+        line = bisect.bisect_right(self.lines, start)
+        if line < len(self.lines) and self.lines[line] <= end - 1:
+            return None
+        offset = self.lines[line - 1] - 1
+        return lambda first, last: ast.Span(line, first - offset, line, last - offset)
 
     def span(self, start: int, end: int) -> ast.Span:
         """Offsets -> 1-based line/column, the end column exclusive (lark's spans); a token is on one line."""
