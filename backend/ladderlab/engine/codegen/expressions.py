@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 import re
+from functools import lru_cache
 
 from ...ir import nodes as ir
 from ...ir import types as t
@@ -50,19 +51,10 @@ class Expressions:
     # ------------------------------------------------------------------ dispatch
 
     def expr(self, e: ir.Expr) -> str:
-        if isinstance(e, ir.Const):
-            return self.const(e)
-        if isinstance(e, ir.Var):
-            return self.var(e)
-        if isinstance(e, ir.Binary):
-            return self.binary(e)
-        if isinstance(e, ir.Unary):
-            return self.unary(e)
-        if isinstance(e, ir.Call):
-            return self.call(e)
-        if isinstance(e, ir.Convert):
-            return self.convert(e)
-        raise CodegenError(f"unknown expression {type(e).__name__}")
+        handler = _HANDLERS.get(type(e))
+        if handler is None:
+            raise CodegenError(f"unknown expression {type(e).__name__}")
+        return handler(self, e)
 
     def const(self, c: ir.Const) -> str:
         return literal(self.const_value(c))
@@ -169,7 +161,7 @@ class Expressions:
     # ------------------------------------------------------------------ variables
 
     def var(self, v: ir.Var) -> str:
-        return self.access(v)[0]
+        return self.access(v)[0] if v.path else self.scope.root(v)[0]
 
     def access(self, v: ir.Var) -> tuple[str, t.IrType]:
         """Source of the variable ``v`` (readable and assignable) and its declared type."""
@@ -242,11 +234,30 @@ class Expressions:
 
     def scalar(self, ty: t.IrType, what: str) -> str:
         """The runtime type name of a non-composite type; CodegenError for composites and unknown names."""
-        name = runtime_name(ty) if isinstance(ty, (t.Elementary, t.Subrange, t.Enum)) else None
-        if name is None:
+        name = _scalar_name(ty)
+        if name is not None:
+            return name
+        if not isinstance(ty, (t.Elementary, t.Subrange, t.Enum)):
             raise CodegenError(f"{what} on a value of type {describe(ty) if is_composite(ty) else repr(ty)}")
         try:
-            values.resolve(name)
+            values.resolve(runtime_name(ty))  # type: ignore[arg-type]
         except ValueError as error:
             raise CodegenError(str(error)) from None
-        return name
+        raise AssertionError(f"{ty!r} resolves but has no runtime name")
+
+
+_HANDLERS = {ir.Const: Expressions.const, ir.Var: Expressions.var, ir.Binary: Expressions.binary,
+             ir.Unary: Expressions.unary, ir.Call: Expressions.call, ir.Convert: Expressions.convert}
+
+
+@lru_cache(maxsize=None)
+def _scalar_name(ty: t.IrType) -> str | None:
+    """``Expressions.scalar`` of a valid type, once per type (it is asked for every operand)."""
+    name = runtime_name(ty) if isinstance(ty, (t.Elementary, t.Subrange, t.Enum)) else None
+    if name is None:
+        return None
+    try:
+        values.resolve(name)
+    except ValueError:
+        return None
+    return name
