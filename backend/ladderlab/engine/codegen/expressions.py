@@ -28,6 +28,11 @@ _ATOM = re.compile(r"(?:[A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z_][A-Za-z0-9_]*)*|\d+)
 _COMPARISONS = frozenset({"EQ", "NE", "LT", "LE", "GT", "GE"})
 
 
+def _atom(code: str) -> bool:
+    """A name, attribute or non-negative number (needs no parentheses); most expressions fail the first test."""
+    return " " not in code and "(" not in code and _ATOM.match(code) is not None
+
+
 def literal(value: object) -> str:
     """Python source for a stored constant: ``repr``, with non-finite floats by name, negatives in parentheses."""
     if isinstance(value, bool) or isinstance(value, str):
@@ -90,7 +95,7 @@ class Expressions:
         if c.user:
             return self.user_call(c)
         args = [self.expr(a) for a in c.args]
-        types = tuple(self.scalar(ty, c.function) for ty in c.arg_types)
+        types = tuple([self.scalar(ty, c.function) for ty in c.arg_types])
         return self.standard(c.function, args, types, runtime_name(c.type))
 
     def convert(self, c: ir.Convert) -> str:
@@ -113,12 +118,9 @@ class Expressions:
         except (ValueError, TypeError) as error:
             raise CodegenError(f"{name}({', '.join(types)}): {error}") from None
         if built.template is not None:
-            template = built.template
-            for i, arg in enumerate(args):
-                if _ATOM.match(arg):  # a name, attribute or non-negative number needs no parentheses
-                    template = template.replace(f"({{{i}}})", f"{{{i}}}")
+            template = _unparenthesised(built.template, tuple([_atom(arg) for arg in args]))
             text = template.format(*args)
-            return text if _ATOM.match(text) or template == "({0})" else f"({text})"
+            return text if template == "({0})" or _atom(text) else f"({text})"
         fn = self.module.bind(("fast", name.upper(), types, result), f"fn_{names.escape(name)}", lambda: built.fast)
         return f"{fn}({', '.join(args)})"
 
@@ -261,3 +263,13 @@ def _scalar_name(ty: t.IrType) -> str | None:
     except ValueError:
         return None
     return name
+
+
+@lru_cache(maxsize=None)
+def _unparenthesised(template: str, atoms: tuple[bool, ...]) -> str:
+    """``template`` without the parentheses around the arguments that are atoms (a name, an attribute or
+    a non-negative number needs none); once per template and pattern, not per call."""
+    for i, atom in enumerate(atoms):
+        if atom:
+            template = template.replace(f"({{{i}}})", f"{{{i}}}")
+    return template

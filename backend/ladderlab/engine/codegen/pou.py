@@ -134,34 +134,32 @@ def emit_inits(module: ModuleContext, places: list, target, owner: str, src: Sou
 def _plain_inits(module: ModuleContext, places: list, target, owner: str, src: Source) -> None:
     """Initialise slots; consecutive slots of one object with one immutable literal value share one ``ll_fill``
     (a 10,000-network POU has runs of a dozen FALSE slots: one call compiles much faster than the assignments)."""
-    run: list = []
-    shared = ""
+    run: list[str] = []  # attributes of ``holder``
+    holder = shared = ""
     for place in places:
         value = _init_value(module, place.slot, owner)
         if value is None:
             continue
-        if run and (value != shared or not _immutable(value) or _holder(target, place) != _holder(target, run[0])):
-            _fill(run, shared, target, src)
+        code = target(place)
+        mine, _, attr = code.rpartition(".")  # the object (``self``, ``ll_p2``, ``G``) and the attribute
+        immutable = _immutable(value)
+        if run and (not immutable or value != shared or mine != holder):
+            _fill(holder, run, shared, src)
             run = []
-        if _immutable(value):
-            run.append(place)
-            shared = value
+        if immutable:
+            run.append(attr)
+            holder, shared = mine, value
         else:
-            src.line(f"{target(place)} = {value}")
+            src.line(f"{code} = {value}")
     if run:
-        _fill(run, shared, target, src)
+        _fill(holder, run, shared, src)
 
 
-def _holder(target, place) -> str:
-    """The object ``target(place)`` is an attribute of (``self``, ``ll_p2``, ``G``)."""
-    return target(place).rpartition(".")[0]
-
-
-def _fill(run: list, value: str, target, src: Source) -> None:
-    if len(run) == 1:
-        src.line(f"{target(run[0])} = {value}")
+def _fill(holder: str, attrs: list[str], value: str, src: Source) -> None:
+    if len(attrs) == 1:
+        src.line(f"{holder}.{attrs[0]} = {value}")
     else:
-        src.line(f"ll_fill({_holder(target, run[0])}, {' '.join(p.attr for p in run)!r}, {value})")
+        src.line(f"ll_fill({holder}, {' '.join(attrs)!r}, {value})")
 
 
 def _immutable(value: str) -> bool:
