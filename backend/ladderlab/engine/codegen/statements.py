@@ -101,6 +101,8 @@ class Statements:
             self.group = None
         fused = False
         probes = self.probes is not None
+        if not probes:  # the fast variant records none: more than half the statements of an LD/FBD body
+            statements = [s for s in statements if type(s) is not ir.Probe]
         for i, s in enumerate(statements):
             if fused:  # the previous statement recorded this probe
                 fused = False
@@ -129,8 +131,6 @@ class Statements:
         if origin.line is not None and origin.line != self._line and origin.network is None:
             self._line = origin.line
             self.src.line(f"# line {origin.line}")
-        if self.probes is None and type(s) is ir.Probe:
-            return  # the fast variant records no probes (more than half the statements of an LD/FBD body)
         oid = self.module.origin(origin, s)
         mark, saved = len(self.src.lines), self.src.origin
         self.src.origin = oid  # (not Source.at: this runs once per statement of 10,000-network programs)
@@ -312,9 +312,7 @@ class Statements:
             self.src.line(f"ll_b = {target}")
             self.src.line("continue")
 
-    def _probe(self, s: ir.Probe, oid: int) -> None:
-        if self.probes is None:
-            return
+    def _probe(self, s: ir.Probe, oid: int) -> None:  # (the fast variant never gets here: see ``statements``)
         if id(s) in self.deferred:
             self._defer(s)
         elif isinstance(s.value, ir.Const):  # the table holds the value: only the group stamp says it ran
