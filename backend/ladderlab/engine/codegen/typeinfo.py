@@ -85,7 +85,7 @@ def store_code(code: str, source: t.IrType, target: t.IrType, *, checked: bool =
     already stored in that very subrange (a variable or pin of the type):
     arithmetic typed as a subrange computes in the base type and may leave it.
     """
-    if source == target and (checked or not isinstance(target, t.Subrange)):
+    if (source is target or source == target) and (checked or not isinstance(target, t.Subrange)):
         return code  # the common case, first
     if isinstance(target, t.Subrange):
         if checked and source == target:
