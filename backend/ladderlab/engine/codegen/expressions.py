@@ -237,15 +237,9 @@ class Expressions:
     def scalar(self, ty: t.IrType, what: str) -> str:
         """The runtime type name of a non-composite type; CodegenError for composites and unknown names."""
         name = _scalar_name(ty)
-        if name is not None:
-            return name
-        if not isinstance(ty, (t.Elementary, t.Subrange, t.Enum)):
+        if name is None:
             raise CodegenError(f"{what} on a value of type {describe(ty) if is_composite(ty) else repr(ty)}")
-        try:
-            values.resolve(runtime_name(ty))  # type: ignore[arg-type]
-        except ValueError as error:
-            raise CodegenError(str(error)) from None
-        raise AssertionError(f"{ty!r} resolves but has no runtime name")
+        return name
 
 
 _HANDLERS = {ir.Const: Expressions.const, ir.Var: Expressions.var, ir.Binary: Expressions.binary,
@@ -254,14 +248,14 @@ _HANDLERS = {ir.Const: Expressions.const, ir.Var: Expressions.var, ir.Binary: Ex
 
 @lru_cache(maxsize=None)
 def _scalar_name(ty: t.IrType) -> str | None:
-    """``Expressions.scalar`` of a valid type, once per type (it is asked for every operand)."""
+    """The runtime name of a non-composite type (None for others; CodegenError for an unknown one), worked
+    out once per type: ``Expressions.scalar`` is asked for every operand."""
     name = runtime_name(ty) if isinstance(ty, (t.Elementary, t.Subrange, t.Enum)) else None
-    if name is None:
-        return None
-    try:
-        values.resolve(name)
-    except ValueError:
-        return None
+    if name is not None:
+        try:
+            values.resolve(name)
+        except ValueError as error:
+            raise CodegenError(str(error)) from None
     return name
 
 
