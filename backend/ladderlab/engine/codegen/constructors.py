@@ -43,7 +43,7 @@ def construct(ty: t.IrType, initial: object, module: ModuleContext) -> str:
 _CACHED = (type(None), bool, int, str)
 
 
-@lru_cache(maxsize=None)
+@lru_cache(maxsize=4096)  # bounded: a long-running server compiles many projects
 def _scalar(ty: t.Elementary | t.Subrange | t.Enum, kind: type, initial: object) -> str:
     """The literal of a scalar's initial value, once per distinct (type, value): a program of 10,000
     networks has 40,000 slots with a handful of initial values. ``kind`` keeps True and 1 apart."""

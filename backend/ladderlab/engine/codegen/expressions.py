@@ -246,7 +246,7 @@ _HANDLERS = {ir.Const: Expressions.const, ir.Var: Expressions.var, ir.Binary: Ex
              ir.Unary: Expressions.unary, ir.Call: Expressions.call, ir.Convert: Expressions.convert}
 
 
-@lru_cache(maxsize=None)
+@lru_cache(maxsize=1024)  # bounded: a long-running server compiles many projects
 def _scalar_name(ty: t.IrType) -> str | None:
     """The runtime name of a non-composite type (None for others; CodegenError for an unknown one), worked
     out once per type: ``Expressions.scalar`` is asked for every operand."""
