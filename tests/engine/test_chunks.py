@@ -8,13 +8,15 @@ shrink ``CHUNK_STATEMENTS`` so small programs get many chunks.
 from __future__ import annotations
 
 from contextlib import contextmanager
+from types import FunctionType
 from typing import Iterator
 
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from ladderlab.engine.codegen import chunks
-from ladderlab.engine.compile import compile_program
+from ladderlab.engine.compile import _compile_piece, compile_program
 from ladderlab.engine.simulation import Simulation
 
 from .irbuild import BOOL, INT, add, assign, c, div, if_, jump, lt, network, pou, probe, prog, ret, slot, v
@@ -119,6 +121,28 @@ def test_a_fault_in_a_later_chunk_names_its_network_and_values():
     sim.cycle()
     fault = sim.fault  # located through the line numbers each piece keeps from the whole module
     assert (fault.code, fault.origin.network, fault.values) == ("division_by_zero", "N4", {"Z": 0, "X": 5})
+
+
+def test_every_compiled_function_starts_at_its_def_line_in_the_source():
+    """Each piece is compiled on its own and renumbered (compile._from_line), nested code objects included."""
+    with chunk_size(2):
+        compiled = compile_program(_counting(6, {3: [assign(v("Z", INT), c(1, INT))]}))
+    assert len(compiled.pieces) > 4
+    lines = compiled.source.splitlines()
+    namespace = compiled.namespace()
+    functions = [f for f in namespace.values() if isinstance(f, FunctionType)]
+    functions += [f for cls in namespace.values() if isinstance(cls, type) for f in vars(cls).values()
+                  if isinstance(f, FunctionType)]
+    functions = [f for f in functions if f.__code__.co_filename == compiled.filename]  # not the runtime's
+    assert {f.__name__ for f in functions} >= {"ll_k0_MAIN", "ll_k2_MAIN", "ll_x_MAIN", "ll_init", "__init__"}
+    for f in functions:
+        assert lines[f.__code__.co_firstlineno - 1].lstrip().startswith(f"def {f.__name__}("), f.__name__
+
+
+def test_a_syntax_error_in_a_piece_names_the_line_of_the_module():
+    with pytest.raises(SyntaxError) as raised:
+        _compile_piece("x = 1\ny = (\n", 40, "<generated>")
+    assert raised.value.lineno == 42
 
 
 def test_breakpoints_and_network_steps_cross_chunks_in_order():

@@ -51,8 +51,11 @@ def plan(blocks: list[ir.Block], chunked: bool) -> ChunkPlan:
         statements = 0
         for s in walk(block.statements):
             statements += 1
-            jumps = jumps or isinstance(s, ir.Jump)
-            returns = returns or isinstance(s, ir.Return)
+            kind = type(s)
+            if kind is ir.Jump:
+                jumps = True
+            elif kind is ir.Return:
+                returns = True
         if chunked and chunks[-1] and size + statements > CHUNK_STATEMENTS:
             chunks.append([])
             size = 0

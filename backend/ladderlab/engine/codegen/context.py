@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import lru_cache
 from typing import Callable
 
 from ...ir import nodes as ir
@@ -165,6 +166,7 @@ def std_fb_class(fb: str) -> type | None:
     return STANDARD_FBS.get(fb.upper())
 
 
+@lru_cache(maxsize=1024)  # bounded: FB names come from user text
 def std_pin_type(fb: str, pin: str) -> t.IrType | None:
     """Type of a pin (or named memory, e.g. the M of R_TRIG) of a standard FB; None when it has no such pin."""
     cls = std_fb_class(fb)

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 import re
+from functools import lru_cache
 
 from ...ir import nodes as ir
 from ...ir import types as t
@@ -25,6 +26,11 @@ _OPERATOR_FUNCTIONS = {op: op for op in ("ADD", "SUB", "MUL", "DIV", "MOD", "EXP
                                          "EQ", "NE", "LT", "LE", "GT", "GE")}
 _ATOM = re.compile(r"(?:[A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z_][A-Za-z0-9_]*)*|\d+)\Z")
 _COMPARISONS = frozenset({"EQ", "NE", "LT", "LE", "GT", "GE"})
+
+
+def _atom(code: str) -> bool:
+    """A name, attribute or non-negative number (needs no parentheses); most expressions fail the first test."""
+    return " " not in code and "(" not in code and _ATOM.match(code) is not None
 
 
 def literal(value: object) -> str:
@@ -50,19 +56,10 @@ class Expressions:
     # ------------------------------------------------------------------ dispatch
 
     def expr(self, e: ir.Expr) -> str:
-        if isinstance(e, ir.Const):
-            return self.const(e)
-        if isinstance(e, ir.Var):
-            return self.var(e)
-        if isinstance(e, ir.Binary):
-            return self.binary(e)
-        if isinstance(e, ir.Unary):
-            return self.unary(e)
-        if isinstance(e, ir.Call):
-            return self.call(e)
-        if isinstance(e, ir.Convert):
-            return self.convert(e)
-        raise CodegenError(f"unknown expression {type(e).__name__}")
+        handler = _HANDLERS.get(type(e))
+        if handler is None:
+            raise CodegenError(f"unknown expression {type(e).__name__}")
+        return handler(self, e)
 
     def const(self, c: ir.Const) -> str:
         return literal(self.const_value(c))
@@ -98,7 +95,7 @@ class Expressions:
         if c.user:
             return self.user_call(c)
         args = [self.expr(a) for a in c.args]
-        types = tuple(self.scalar(ty, c.function) for ty in c.arg_types)
+        types = tuple([self.scalar(ty, c.function) for ty in c.arg_types])
         return self.standard(c.function, args, types, runtime_name(c.type))
 
     def convert(self, c: ir.Convert) -> str:
@@ -121,12 +118,9 @@ class Expressions:
         except (ValueError, TypeError) as error:
             raise CodegenError(f"{name}({', '.join(types)}): {error}") from None
         if built.template is not None:
-            template = built.template
-            for i, arg in enumerate(args):
-                if _ATOM.match(arg):  # a name, attribute or non-negative number needs no parentheses
-                    template = template.replace(f"({{{i}}})", f"{{{i}}}")
+            template = _unparenthesised(built.template, tuple([_atom(arg) for arg in args]))
             text = template.format(*args)
-            return text if _ATOM.match(text) or template == "({0})" else f"({text})"
+            return text if template == "({0})" or _atom(text) else f"({text})"
         fn = self.module.bind(("fast", name.upper(), types, result), f"fn_{names.escape(name)}", lambda: built.fast)
         return f"{fn}({', '.join(args)})"
 
@@ -169,7 +163,7 @@ class Expressions:
     # ------------------------------------------------------------------ variables
 
     def var(self, v: ir.Var) -> str:
-        return self.access(v)[0]
+        return self.access(v)[0] if v.path else self.scope.root(v)[0]
 
     def access(self, v: ir.Var) -> tuple[str, t.IrType]:
         """Source of the variable ``v`` (readable and assignable) and its declared type."""
@@ -242,11 +236,34 @@ class Expressions:
 
     def scalar(self, ty: t.IrType, what: str) -> str:
         """The runtime type name of a non-composite type; CodegenError for composites and unknown names."""
-        name = runtime_name(ty) if isinstance(ty, (t.Elementary, t.Subrange, t.Enum)) else None
+        name = _scalar_name(ty)
         if name is None:
             raise CodegenError(f"{what} on a value of type {describe(ty) if is_composite(ty) else repr(ty)}")
+        return name
+
+
+_HANDLERS = {ir.Const: Expressions.const, ir.Var: Expressions.var, ir.Binary: Expressions.binary,
+             ir.Unary: Expressions.unary, ir.Call: Expressions.call, ir.Convert: Expressions.convert}
+
+
+@lru_cache(maxsize=1024)  # bounded: a long-running server compiles many projects
+def _scalar_name(ty: t.IrType) -> str | None:
+    """The runtime name of a non-composite type (None for others; CodegenError for an unknown one), worked
+    out once per type: ``Expressions.scalar`` is asked for every operand."""
+    name = runtime_name(ty) if isinstance(ty, (t.Elementary, t.Subrange, t.Enum)) else None
+    if name is not None:
         try:
             values.resolve(name)
         except ValueError as error:
             raise CodegenError(str(error)) from None
-        return name
+    return name
+
+
+@lru_cache(maxsize=None)
+def _unparenthesised(template: str, atoms: tuple[bool, ...]) -> str:
+    """``template`` without the parentheses around the arguments that are atoms (a name, an attribute or
+    a non-negative number needs none); once per template and pattern, not per call."""
+    for i, atom in enumerate(atoms):
+        if atom:
+            template = template.replace(f"({{{i}}})", f"{{{i}}}")
+    return template

@@ -93,8 +93,12 @@ def nested(s: ir.Stmt) -> Iterator[list[ir.Stmt]]:
         yield s.body
 
 
+_LEAVES = (ir.Assign, ir.Probe, ir.FbCall, ir.FnCall, ir.Exit, ir.Return, ir.Jump)  # no nested statements
+
+
 def walk(statements: list[ir.Stmt]) -> Iterator[ir.Stmt]:
     for s in statements:
         yield s
-        for body in nested(s):
-            yield from walk(body)
+        if not isinstance(s, _LEAVES):
+            for body in nested(s):
+                yield from walk(body)

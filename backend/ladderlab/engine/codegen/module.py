@@ -7,6 +7,7 @@ from dataclasses import dataclass
 from ...ir import nodes as ir
 from ...model.diagnostics import Diagnostic
 from .context import CodegenError, ModuleContext, PausePoint, diagnostic
+from .layout import slots_source
 from .pou import emit_function, emit_inits, emit_instance_class, emit_struct
 from .scope import global_owner
 from .source import Source
@@ -105,7 +106,7 @@ def _emit_globals(module: ModuleContext, src: Source) -> None:
         src.line(f"class ll_Globals{page or ''}(ll_Addressable):")
         with src.indent():
             src.line("# VAR_GLOBAL" + (f", page {page}" if page else ""))
-            src.line(f"__slots__ = {tuple(layout.page_attrs(page))!r}")
+            src.line(f"__slots__ = {slots_source(layout.page_attrs(page))}")
         src.line()
         src.line(f"def ll_init_globals{page or ''}(warm):")
         with src.indent():

@@ -34,7 +34,7 @@ _ALNUM = re.compile(r"[A-Z0-9]")
 def escape(name: str) -> str:
     """``name`` upper-cased if it is a plain identifier, else the injective escape (starting with ``w``)."""
     upper = name.upper()
-    if upper.isascii() and _PLAIN.match(upper):
+    if upper.isascii() and (upper.isidentifier() or _PLAIN.match(upper)):  # (an ASCII identifier is plain)
         return upper
     return "w" + "".join(c if _ALNUM.match(c) and c.isascii() else f"_{ord(c):06X}" for c in upper)
 

@@ -26,6 +26,7 @@ from .context import CodegenError, ModuleContext, diagnostic
 from .mentions import calls_in, own_expressions, walk
 from .chunks import ChunkPlan
 from .chunks import plan as chunk_plan
+from .layout import slots_source
 from .scope import Scope
 from .source import Source
 from .statements import Statements
@@ -63,7 +64,7 @@ def emit_instance_class(module: ModuleContext, pou: ir.Pou, decls: Source, code:
         decls.piece()
         decls.line(f"class {cls}_page{page}(ll_Addressable):")
         with decls.indent():
-            decls.line(f"__slots__ = {tuple(layout.page_attrs(page))!r}")
+            decls.line(f"__slots__ = {slots_source(layout.page_attrs(page))}")
         decls.line()
         decls.line(f"def ll_i{page}_{key}(self, warm):")
         with decls.indent():
@@ -75,7 +76,7 @@ def emit_instance_class(module: ModuleContext, pou: ir.Pou, decls: Source, code:
     with decls.indent():
         decls.line(f"# {pou.kind.upper().replace('_', ' ')} {names.comment_text(pou.name)} ({pou.language.upper()})")
         extra = [f"ll_p{page}" for page in range(1, layout.pages)] + (["ll_pr", "ll_px"] if module.probes else [])
-        decls.line(f"__slots__ = {tuple(layout.page_attrs(0) + extra)!r}")
+        decls.line(f"__slots__ = {slots_source(layout.page_attrs(0) + extra)}")
         decls.line()
         decls.line("def __init__(self):")
         with decls.indent():
@@ -130,27 +131,35 @@ def emit_inits(module: ModuleContext, places: list, target, owner: str, src: Sou
         src.line("pass")
 
 
-_CHAIN = 8  # targets per chained assignment
-
-
 def _plain_inits(module: ModuleContext, places: list, target, owner: str, src: Source) -> None:
-    """Initialise slots; consecutive slots with one immutable literal value share a chained assignment."""
-    chain: list[str] = []
-    shared = ""
+    """Initialise slots; consecutive slots of one object with one immutable literal value share one ``ll_fill``
+    (a 10,000-network POU has runs of a dozen FALSE slots: one call compiles much faster than the assignments)."""
+    run: list[str] = []  # attributes of ``holder``
+    holder = shared = ""
     for place in places:
         value = _init_value(module, place.slot, owner)
         if value is None:
             continue
-        if chain and (value != shared or len(chain) == _CHAIN or not _immutable(value)):
-            src.line(" = ".join(chain) + f" = {shared}")
-            chain = []
-        if _immutable(value):
-            chain.append(target(place))
-            shared = value
+        code = target(place)
+        mine, _, attr = code.rpartition(".")  # the object (``self``, ``ll_p2``, ``G``) and the attribute
+        immutable = _immutable(value)
+        if run and (not immutable or value != shared or mine != holder):
+            _fill(holder, run, shared, src)
+            run = []
+        if immutable:
+            run.append(attr)
+            holder, shared = mine, value
         else:
-            src.line(f"{target(place)} = {value}")
-    if chain:
-        src.line(" = ".join(chain) + f" = {shared}")
+            src.line(f"{code} = {value}")
+    if run:
+        _fill(holder, run, shared, src)
+
+
+def _fill(holder: str, attrs: list[str], value: str, src: Source) -> None:
+    if len(attrs) == 1:
+        src.line(f"{holder}.{attrs[0]} = {value}")
+    else:
+        src.line(f"ll_fill({holder}, {' '.join(attrs)!r}, {value})")
 
 
 def _immutable(value: str) -> bool:

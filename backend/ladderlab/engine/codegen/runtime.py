@@ -94,6 +94,12 @@ def with_values(obj, **attributes):
     return obj
 
 
+def fill(obj: object, attributes: str, value: object) -> None:
+    """Set each of the space-separated ``attributes`` of ``obj`` to ``value`` (initialising runs of slots)."""
+    for name in attributes.split():
+        setattr(obj, name, value)
+
+
 def for_range(start: int, end: int, step: int) -> range:
     """The values a FOR loop visits (ST-70): computed up front, so a counter at its type's limit cannot wrap forever."""
     if step > 0:
@@ -175,6 +181,7 @@ def namespace() -> dict[str, object]:
         ll_copy=deep_copy,
         ll_assign=assign_into,
         ll_with=with_values,
+        ll_fill=fill,
         ll_for_range=for_range,
         ll_ref=dummy_reference,
         ll_inf=math.inf,

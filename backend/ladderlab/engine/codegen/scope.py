@@ -24,6 +24,11 @@ def global_owner(page: int) -> str:
     return "G" if page == 0 else f"G{page}"
 
 
+def _page_owner(page: int) -> str:
+    """What a method's code reads a slot on ``page`` through: ``self``, or the page loaded at entry."""
+    return f"ll_p{page}" if page else "self"
+
+
 class Scope:
     def __init__(self, module: ModuleContext, pou: ir.Pou) -> None:
         self.module = module
@@ -55,42 +60,37 @@ class Scope:
     def _owner(self, var: ir.Var) -> str:
         """``self`` or the local holding the page of a method's slot (loaded at entry)."""
         place = self.layout.get(var.name)  # type: ignore[union-attr]
-        if not place.page:  # type: ignore[union-attr]
-            return "self"
-        self.pages_used.add(place.page)  # type: ignore[union-attr]
-        return f"ll_p{place.page}"  # type: ignore[union-attr]
+        if place.page:  # type: ignore[union-attr]
+            self.pages_used.add(place.page)  # type: ignore[union-attr]
+        return _page_owner(place.page)  # type: ignore[union-attr]
 
     def root(self, var: ir.Var) -> tuple[str, t.IrType]:
         """Source reading (and assignable as) the root slot of ``var``, and the slot's type."""
         key = (var.scope, var.name)
         found = self._roots.get(key)
         if found is None:
-            found = self._roots[key] = (*self._root(var), self._page(var))
+            found = self._roots[key] = self._root(var)
         code, ty, page = found
         if page:  # every chunk function loads the pages its own statements use
             self.pages_used.add(page)
         return code, ty
 
-    def _page(self, var: ir.Var) -> int:
-        """The page of a PROGRAM / FUNCTION_BLOCK slot that ``var``'s root lives on (0: ``self``, or not a slot)."""
-        if var.scope == "global" or self.function or self.slot(var).var_class == "VAR_IN_OUT":
-            return 0
-        return self.layout.get(var.name).page  # type: ignore[union-attr]
-
-    def _root(self, var: ir.Var) -> tuple[str, t.IrType]:
+    def _root(self, var: ir.Var) -> tuple[str, t.IrType, int]:
+        """``root``'s source and type, and the page its slot lives on (0: ``self``, a local or a global)."""
         slot = self.slot(var)
         attr = names.slot(slot.name)
         if var.scope == "global":
             place = self.module.globals.get(var.name)  # type: ignore[union-attr]
-            return f"{global_owner(place.page)}.{attr}", slot.type  # type: ignore[union-attr]
+            return f"{global_owner(place.page)}.{attr}", slot.type, 0  # type: ignore[union-attr]
         if slot.var_class == "VAR_IN_OUT":
             if is_composite(slot.type):
-                return attr, slot.type
+                return attr, slot.type, 0
             key = names.escape(slot.name)
-            return f"ll_c_{key}[ll_k_{key}]", slot.type
+            return f"ll_c_{key}[ll_k_{key}]", slot.type, 0
         if self.function:
-            return (f"{attr}[0]" if slot.name.upper() in self.boxed else attr), slot.type
-        return f"{self._owner(var)}.{attr}", slot.type
+            return (f"{attr}[0]" if slot.name.upper() in self.boxed else attr), slot.type, 0
+        place = self.layout.get(var.name)  # type: ignore[union-attr]
+        return f"{_page_owner(place.page)}.{place.attr}", slot.type, place.page  # type: ignore[union-attr]
 
     def root_ref(self, var: ir.Var) -> str:
         """Source of a ``(container, key)`` reference to the whole root slot of ``var``."""

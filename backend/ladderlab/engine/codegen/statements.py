@@ -44,6 +44,7 @@ class Statements:
         self.segment = plan.first_segment[chunk]
         self.now = "ll_now" if scope.function else "now"
         self.me = "None" if scope.function else "self"
+        self.debug = self.module.debug
         self.probes = self.module.probe_table(scope.pou.name) if self.module.probes else None
         self.group: int | None = None  # the probe group of the straight run of code being emitted
         self.probed = False  # a probe was emitted: the chunk loads ll_pr, ll_px, ll_k
@@ -99,16 +100,20 @@ class Statements:
         if own_group:
             self.group = None
         fused = False
+        probes = self.probes is not None
+        if not probes:  # the fast variant records none: more than half the statements of an LD/FBD body
+            statements = [s for s in statements if type(s) is not ir.Probe]
         for i, s in enumerate(statements):
             if fused:  # the previous statement recorded this probe
                 fused = False
                 continue
-            following = statements[i + 1] if i + 1 < len(statements) else None
-            self._following = following if self.probes is not None and isinstance(following, ir.Probe) else None
+            if probes:
+                following = statements[i + 1] if i + 1 < len(statements) else None
+                self._following = following if isinstance(following, ir.Probe) else None
             self._fused = False
             self.statement(s)
-            fused = isinstance(s, (ir.Assign, ir.FnCall)) and self._fused
-            if not _straight(s):
+            fused = self._fused and isinstance(s, (ir.Assign, ir.FnCall))
+            if not isinstance(s, _STRAIGHT) and not _straight(s):
                 self.group = None  # what follows may run without what came before
         if own_group:
             self.group = outer
@@ -130,7 +135,7 @@ class Statements:
         mark, saved = len(self.src.lines), self.src.origin
         self.src.origin = oid  # (not Source.at: this runs once per statement of 10,000-network programs)
         try:
-            if self.module.debug and origin.line is not None and not isinstance(s, ir.Probe):
+            if self.debug and origin.line is not None and not isinstance(s, ir.Probe):
                 self.pause("statement", origin)
             handler = self._HANDLERS.get(type(s))
             if handler is None:
@@ -307,9 +312,7 @@ class Statements:
             self.src.line(f"ll_b = {target}")
             self.src.line("continue")
 
-    def _probe(self, s: ir.Probe, oid: int) -> None:
-        if self.probes is None:
-            return
+    def _probe(self, s: ir.Probe, oid: int) -> None:  # (the fast variant never gets here: see ``statements``)
         if id(s) in self.deferred:
             self._defer(s)
         elif isinstance(s.value, ir.Const):  # the table holds the value: only the group stamp says it ran
@@ -434,9 +437,12 @@ class Statements:
                  ir.FbCall: _fbcall, ir.FnCall: _fncall}
 
 
+_STRAIGHT = (ir.Assign, ir.Probe, ir.FbCall, ir.FnCall)  # statements that never skip what follows
+
+
 def _straight(s: ir.Stmt) -> bool:
     """The next statement runs whenever this one did (faults aside), so probes around it share a group."""
-    if isinstance(s, (ir.Assign, ir.Probe, ir.FbCall, ir.FnCall)):
+    if isinstance(s, _STRAIGHT):
         return True
     return not isinstance(s, (ir.Jump, ir.Return, ir.Exit)) and not any(
         isinstance(x, (ir.Jump, ir.Return, ir.Exit)) for x in walk([s]))

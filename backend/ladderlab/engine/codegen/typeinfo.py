@@ -72,7 +72,7 @@ def store_value(value: object, ty: t.IrType) -> object:
 
 def same_storage(a: t.IrType, b: t.IrType) -> bool:
     """A value of type ``a`` needs no conversion to be stored in ``b`` (subrange checks aside)."""
-    if a == b:
+    if a is b or a == b:
         return True
     ra, rb = runtime_name(a), runtime_name(b)
     return ra is not None and ra == rb
@@ -85,6 +85,8 @@ def store_code(code: str, source: t.IrType, target: t.IrType, *, checked: bool =
     already stored in that very subrange (a variable or pin of the type):
     arithmetic typed as a subrange computes in the base type and may leave it.
     """
+    if (source is target or source == target) and (checked or not isinstance(target, t.Subrange)):
+        return code  # the common case, first
     if isinstance(target, t.Subrange):
         if checked and source == target:
             return code
