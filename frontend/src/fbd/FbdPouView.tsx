@@ -1,29 +1,20 @@
 // An FBD POU in the workspace: the FBD editor with the project's library and symbols, the
 // check's diagnostics, online mode and the POU's breakpoints (debug/store.ts).
 import { useCallback, useMemo, type ReactNode } from "react";
-import type { Diagnostic } from "../generated/api";
 import type { FbdBody, Pou } from "../generated/project";
 import type { History } from "../ld/history";
 import { debugStore, useDebug } from "../debug/store";
 import { useOnline } from "../online/store";
-import { usePanels } from "../panels/store";
-import { diagramDiagnostics, symbolsOf, useWorkspace } from "../project/store";
+import { useWorkspace } from "../project/store";
+import { useDiagramPou } from "../project/useDiagramPou";
 import { FbdEditor, type FbdDebug } from "./editor/FbdEditor";
 import { nodeOfProbe } from "./online";
 import { useFbdOnline } from "./useFbdOnline";
 
-const NO_DIAGNOSTICS: Diagnostic[] = [];
-
 export function FbdPouView({ pou, history, onlineActions }: { pou: Pou; history: History<FbdBody>; onlineActions: ReactNode }) {
   const name = pou.name;
-  const library = useWorkspace((s) => s.library);
-  const table = useWorkspace((s) => s.symbols[name]);
   const setHistory = useWorkspace((s) => s.setFbdHistory);
-  const declare = useWorkspace((s) => s.declare);
-  const checked = usePanels((s) => s.diagnostics) ?? NO_DIAGNOSTICS;
-  const focus = usePanels((s) => (s.focus?.pou.toUpperCase() === name.toUpperCase() ? s.focus : null));
-  const symbols = useMemo(() => symbolsOf(table), [table]);
-  const diagnostics = useMemo(() => diagramDiagnostics(table, checked, name), [table, checked, name]);
+  const { library, symbols, diagnostics, focus, declare } = useDiagramPou(name);
   const byName = useMemo(() => new Map(library.map((e) => [e.name.toUpperCase(), e])), [library]);
   const lookup = useCallback((call: string) => byName.get(call.toUpperCase()), [byName]);
   const body = history.present;
@@ -54,7 +45,7 @@ export function FbdPouView({ pou, history, onlineActions }: { pou: Pou; history:
       readOnly={live.readOnly}
       readOnlyActions={live.readOnly ? onlineActions : undefined}
       onlineActions={live.actions}
-      onDeclareVariable={(d) => declare(name, d)}
+      onDeclareVariable={declare}
       debug={debug}
       onVisibleChange={live.onVisibleChange}
       focus={focus}

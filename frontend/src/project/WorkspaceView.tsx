@@ -16,7 +16,8 @@ import { focusOf, panelsStore, usePanels } from "../panels/store";
 import { StView } from "../stview/StView";
 import { DeclarationsEditor } from "../declarations/DeclarationsEditor";
 import { ELEMENTARY_TYPES, userTypeNames } from "../declarations/model";
-import { diagramDiagnostics, pouOf, symbolsOf, useWorkspace, workspaceStore } from "./store";
+import { pouOf, symbolsOf, useWorkspace, workspaceStore } from "./store";
+import { useDiagramPou } from "./useDiagramPou";
 import { FbdPouView } from "../fbd/FbdPouView";
 import { ExportMenu } from "../interchange/ExportMenu";
 import { ImportPlcopen } from "../interchange/ImportPlcopen";
@@ -222,16 +223,10 @@ function OnlineActions({ pou }: { pou: Pou }) {
 
 function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
   const name = pou.name;
-  const library = useWorkspace((s) => s.library);
-  const table = useWorkspace((s) => s.symbols[name]);
   const setLdHistory = useWorkspace((s) => s.setLdHistory);
-  const declare = useWorkspace((s) => s.declare);
-  const checked = usePanels((s) => s.diagnostics) ?? NO_DIAGNOSTICS;
-  const focus = usePanels((s) => (s.focus?.pou.toUpperCase() === name.toUpperCase() ? s.focus : null));
-  const symbols = useMemo(() => symbolsOf(table), [table]);
+  const { library, symbols, diagnostics, focus, declare } = useDiagramPou(name);
   const live = useLdOnline(pou, history.present, symbols);
   const debugging = useLdDebugging(name, history.present);
-  const diagnostics = useMemo(() => diagramDiagnostics(table, checked, name), [table, checked, name]);
   return (
     <LdEditor
       key={name}
@@ -240,7 +235,7 @@ function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
       library={library}
       symbols={symbols}
       diagnostics={diagnostics}
-      onDeclareVariable={(d) => declare(name, d)}
+      onDeclareVariable={declare}
       online={live.online}
       readOnly={live.readOnly}
       readOnlyActions={live.readOnly ? <OnlineActions pou={pou} /> : undefined}

@@ -1,0 +1,29 @@
+// What an LD or FBD POU's editor takes from the workspace and the panels: the library, the POU's
+// symbols, its diagnostics (symbols table and the last Check, those naming a network), the place a
+// clicked diagnostic asks to reveal, and declaring a variable typed but not declared.
+import { useMemo } from "react";
+import type { Diagnostic, LibraryEntry, SymbolInfo } from "../generated/api";
+import type { VariableDeclaration } from "../ld/editor/declare";
+import { usePanels, type Focus } from "../panels/store";
+import { diagramDiagnostics, symbolsOf, useWorkspace } from "./store";
+
+const NO_DIAGNOSTICS: Diagnostic[] = [];
+
+export interface DiagramPou {
+  library: LibraryEntry[];
+  symbols: SymbolInfo[];
+  diagnostics: Diagnostic[];
+  focus: Focus | null;
+  declare(declaration: VariableDeclaration): void;
+}
+
+export function useDiagramPou(name: string): DiagramPou {
+  const library = useWorkspace((s) => s.library);
+  const table = useWorkspace((s) => s.symbols[name]);
+  const declareIn = useWorkspace((s) => s.declare);
+  const checked = usePanels((s) => s.diagnostics) ?? NO_DIAGNOSTICS;
+  const focus = usePanels((s) => (s.focus?.pou.toUpperCase() === name.toUpperCase() ? s.focus : null));
+  const symbols = useMemo(() => symbolsOf(table), [table]);
+  const diagnostics = useMemo(() => diagramDiagnostics(table, checked, name), [table, checked, name]);
+  return { library, symbols, diagnostics, focus, declare: (declaration) => declareIn(name, declaration) };
+}
