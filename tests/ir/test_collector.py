@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import gc
+import threading
 import weakref
 
 from ladderlab.collector import collector_paused
@@ -36,3 +37,23 @@ def test_a_cycle_built_during_the_pause_is_still_collected() -> None:
     del a, b
     gc.collect()
     assert alive() is None
+
+
+def test_overlapping_pauses_in_two_threads_keep_the_collector_off_until_the_last_ends() -> None:
+    """The server builds in worker threads: a build ending must not switch the collector on under another
+    one, and no interleaving may leave it off."""
+    entered, leave = threading.Event(), threading.Event()
+
+    def other_build() -> None:
+        with collector_paused():
+            entered.set()
+            leave.wait(5)
+
+    worker = threading.Thread(target=other_build)
+    with collector_paused():
+        worker.start()
+        assert entered.wait(5)
+    assert not gc.isenabled()  # this build ended, the other one still runs
+    leave.set()
+    worker.join(5)
+    assert gc.isenabled()
