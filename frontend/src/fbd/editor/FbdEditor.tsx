@@ -8,7 +8,7 @@ import "@xyflow/react/dist/style.css";
 import "../../ld/ld.css";
 import "./fbd.css";
 import type { Connection } from "@xyflow/react";
-import { useCallback, useEffect, useMemo, useRef, useState, type ClipboardEvent, type KeyboardEvent, type MouseEvent, type ReactNode } from "react";
+import { useCallback, useEffect, useMemo, useRef, useState, type KeyboardEvent, type MouseEvent, type ReactNode } from "react";
 import type { Diagnostic, FbdOrder, LibraryEntry, SymbolInfo } from "../../generated/api";
 import { BoxPicker } from "../../ld/editor/BoxPicker";
 import { MenuList, type MenuItem } from "../../ld/editor/ContextMenu";
@@ -16,6 +16,7 @@ import { concrete, instanceName, symbolNames, undeclared, type VariableDeclarati
 import { EditorNotices } from "../../ld/editor/EditorNotices";
 import type { LdOnlineActions } from "../../ld/editor/LdEditor";
 import { OperandEditor } from "../../ld/editor/OperandEditor";
+import { clipboardActions, type LastClip } from "../../ld/editor/systemClipboard";
 import { OperandValuePrompt, type ValueRequest } from "../../ld/editor/ValuePrompt";
 import { onlineOperandItems } from "../../online/operandCommands";
 import { canRedo, canUndo, record, redo, undo, type History } from "../../ld/history";
@@ -84,7 +85,7 @@ const NO_SYMBOLS: readonly SymbolInfo[] = [];
 const NO_DIAGNOSTICS: readonly Diagnostic[] = [];
 
 /** The last clip copied in this tab, for toolbar paste when the browser keeps the clipboard closed. */
-let lastClip: string | null = null;
+const lastClip: LastClip = { text: null };
 
 export function FbdEditor({
   history,
@@ -254,13 +255,12 @@ export function FbdEditor({
     } else if (networkSelected) apply(ops.deleteNetworks(body, [networkSelected]));
   };
 
-  const copy = (cut: boolean, write: (text: string) => void) => {
+  const take = (cut: boolean): string | null => {
     const network = selection && networks.find((n) => n.id === selection.network);
-    if (!network || !selection?.nodes.length) return;
+    if (!network || !selection?.nodes.length) return null;
     const text = serializeClip(clipOf(network, selection.nodes));
-    lastClip = text;
-    write(text);
     if (cut && !locked) apply(ops.deleteNodes(body, selection.nodes));
+    return text;
   };
   const pasteText = (text: string | null) => {
     const clip = text ? parseClip(text) : null;
@@ -269,11 +269,7 @@ export function FbdEditor({
     if (!network) return void setMessage("Add a network to paste into.");
     apply(pasteClip(body, network, clip));
   };
-  const paste = () => {
-    const read = navigator.clipboard?.readText?.();
-    if (!read) pasteText(lastClip);
-    else read.then((text) => pasteText(parseClip(text) ? text : lastClip), () => pasteText(lastClip));
-  };
+  const clipboard = clipboardActions({ take, paste: pasteText, isClip: (text) => parseClip(text) !== null, locked }, lastClip);
 
   const reorder = (delta: -1 | 1) => {
     const id = selectedNodes[0];
@@ -324,7 +320,7 @@ export function FbdEditor({
           ];
     const debugItems: MenuItem[] = debug ? [{ id: "breakpoint", label: debug.elements.has(node.id) ? "Remove breakpoint" : "Set breakpoint", keys: "Alt+click", run: () => debug.toggle({ element: node.id }) }] : [];
     const clip: MenuItem[] = [
-      { id: "copy", label: "Copy", keys: "Ctrl+C", run: () => copy(false, (t) => void navigator.clipboard?.writeText(t).catch(() => undefined)) },
+      { id: "copy", label: "Copy", keys: "Ctrl+C", run: () => clipboard.copy(false) },
       ...(locked ? [] : [{ id: "delete", label: "Delete", keys: "Delete", run: () => apply(ops.deleteNodes(body, selectedNodes.includes(node.id) ? selectedNodes : [node.id])) }]),
     ];
     openMenu(event, [onlineItems(operandOf(node)), edit, order, debugItems, clip]);
@@ -441,16 +437,6 @@ export function FbdEditor({
     } else handled = false;
     if (handled) event.preventDefault();
   };
-  const onCopy = (event: ClipboardEvent<HTMLDivElement>, cut: boolean) => {
-    if ((event.target as HTMLElement).closest("input, textarea")) return;
-    event.preventDefault();
-    copy(cut, (text) => event.clipboardData.setData("text/plain", text));
-  };
-  const onPaste = (event: ClipboardEvent<HTMLDivElement>) => {
-    if ((event.target as HTMLElement).closest("input, textarea")) return;
-    event.preventDefault();
-    if (!locked) pasteText(event.clipboardData.getData("text/plain"));
-  };
 
   const selectedBlock = selectedNodes.length === 1 ? findNode(body, selectedNodes[0]!)?.node : undefined;
   const netIndex = networks.findIndex((n) => n.id === (networkSelected ?? selection?.network));
@@ -469,9 +455,9 @@ export function FbdEditor({
         role="application"
         aria-label="Function block diagram editor"
         onKeyDown={onKeyDown}
-        onCopy={(e) => onCopy(e, false)}
-        onCut={(e) => onCopy(e, true)}
-        onPaste={onPaste}
+        onCopy={(e) => clipboard.onCopy(e, false)}
+        onCut={(e) => clipboard.onCopy(e, true)}
+        onPaste={clipboard.onPaste}
       >
         <div className="ld-toolbar fbd-toolbar" role="toolbar" aria-label="FBD editing">
           <div className="ld-toolbar-group fbd-palette" aria-label="Add (click, or drag onto a network)">
@@ -507,8 +493,8 @@ export function FbdEditor({
             {tool("Comment", () => setNetworkText({ network: networks[netIndex]!.id, field: "comment" }), !locked && netIndex >= 0)}
           </div>
           <div className="ld-toolbar-group">
-            {tool("Copy", () => copy(false, (t) => void navigator.clipboard?.writeText(t).catch(() => undefined)), selectedNodes.length > 0, "Copy (Ctrl+C)")}
-            {tool("Paste", paste, !locked, "Paste (Ctrl+V)")}
+            {tool("Copy", () => clipboard.copy(false), selectedNodes.length > 0, "Copy (Ctrl+C)")}
+            {tool("Paste", clipboard.paste, !locked, "Paste (Ctrl+V)")}
             {tool("Undo", () => onHistoryChange(undo(history)), !locked && canUndo(history), "Undo (Ctrl+Z)")}
             {tool("Redo", () => onHistoryChange(redo(history)), !locked && canRedo(history), "Redo (Ctrl+Y)")}
           </div>

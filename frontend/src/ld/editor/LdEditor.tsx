@@ -3,7 +3,7 @@
 // picker, drag to move, copy/paste through the system clipboard, undo/redo, and breakpoints
 // (network number click, Alt+click, F9, context menu) when the caller supplies them. The undo
 // history is owned by the caller (one per open POU), so it survives switching tabs.
-import { useCallback, useEffect, useMemo, useRef, useState, type ClipboardEvent, type KeyboardEvent, type MouseEvent, type ReactNode } from "react";
+import { useCallback, useEffect, useMemo, useRef, useState, type KeyboardEvent, type MouseEvent, type ReactNode } from "react";
 import type { Diagnostic, LibraryEntry, SymbolInfo } from "../../generated/api";
 import { parseClip, serializeClip, type Clip } from "../clipboard";
 import { canRedo, canUndo, record, redo, undo, type History } from "../history";
@@ -21,6 +21,7 @@ import { extend, navigate, type Direction } from "./navigation";
 import { OperandEditor } from "./OperandEditor";
 import { setDraggedOperand } from "./dragOperand";
 import { EditorNotices } from "./EditorNotices";
+import { clipboardActions, type LastClip } from "./systemClipboard";
 import { OperandValuePrompt, type ValueRequest } from "./ValuePrompt";
 import { onlineOperandItems } from "../../online/operandCommands";
 import "../ld.css";
@@ -83,7 +84,7 @@ const NO_SYMBOLS: readonly SymbolInfo[] = [];
 const ARROWS: Record<string, Direction> = { ArrowLeft: "left", ArrowRight: "right", ArrowUp: "up", ArrowDown: "down" };
 
 /** The last clip copied in this tab, for toolbar paste when the browser keeps the clipboard closed. */
-let lastClip: string | null = null;
+const lastClip: LastClip = { text: null };
 
 /** The operand Enter edits: the variable, a compare's left side, a box's instance or first free input, a jump's target. */
 function mainField(body: LdBody, id: string, library: (call: string) => LibraryEntry | undefined): OperandField | undefined {
@@ -293,16 +294,15 @@ export function LdEditor({
     apply(ops.pasteElements(body, place, clip.elements));
   };
 
-  const copy = (cut: boolean, write: (text: string) => void) => {
+  const take = (cut: boolean): string | null => {
     const clip = clipOfSelection();
-    if (!clip) return;
-    const text = serializeClip(clip);
-    lastClip = text;
-    write(text);
+    if (!clip) return null;
     if (cut && !readOnly) {
       apply(liveSelection?.kind === "network" ? ops.deleteNetworks(body, [liveSelection.id]) : ops.deleteElements(body, clip.kind === "elements" ? clip.elements.map((e) => e.id) : []));
     }
+    return serializeClip(clip);
   };
+  const clipboard = clipboardActions({ take, paste: pasteText, isClip: (text) => parseClip(text) !== null, locked: readOnly !== null }, lastClip);
 
   const ctx: CommandContext = {
     body,
@@ -326,12 +326,8 @@ export function LdEditor({
     },
     openBoxPicker: () => setPicker(true),
     editNetwork,
-    copy: (cut) => copy(cut, (text) => void navigator.clipboard?.writeText(text).catch(() => undefined)),
-    paste: () => {
-      const read = navigator.clipboard?.readText?.();
-      if (!read) pasteText(lastClip);
-      else read.then((text) => pasteText(parseClip(text) ? text : lastClip), () => pasteText(lastClip));
-    },
+    copy: clipboard.copy,
+    paste: clipboard.paste,
   };
 
   const pickBox = (entry: LibraryEntry, en: boolean) => {
@@ -469,18 +465,6 @@ export function LdEditor({
     }
   };
 
-  const onCopy = (event: ClipboardEvent<HTMLDivElement>, cut: boolean) => {
-    if ((event.target as HTMLElement).closest("input, textarea")) return;
-    event.preventDefault();
-    copy(cut, (text) => event.clipboardData.setData("text/plain", text));
-  };
-
-  const onPaste = (event: ClipboardEvent<HTMLDivElement>) => {
-    if ((event.target as HTMLElement).closest("input, textarea")) return;
-    event.preventDefault();
-    if (!readOnly) pasteText(event.clipboardData.getData("text/plain"));
-  };
-
   /** The items of the context menu besides the editing commands: breakpoints, online commands on the selected element's variable. */
   const extraItems = (): MenuItem[] => {
     const target = debugging ? breakpointTarget() : null;
@@ -537,9 +521,9 @@ export function LdEditor({
       role="application"
       aria-label="Ladder diagram editor"
       onKeyDown={onKeyDown}
-      onCopy={(e) => onCopy(e, false)}
-      onCut={(e) => onCopy(e, true)}
-      onPaste={onPaste}
+      onCopy={(e) => clipboard.onCopy(e, false)}
+      onCut={(e) => clipboard.onCopy(e, true)}
+      onPaste={clipboard.onPaste}
       onMouseDown={(e) => {
         if (e.target === e.currentTarget || (e.target as HTMLElement).classList.contains("ld-canvas")) select(null);
       }}
