@@ -1,6 +1,10 @@
-"""What a new user does first in every browser scenario: create a project, add a POU (through the UI)."""
+"""What the browser scenarios do first: create a project and add a POU through the UI, or store a whole
+project through the REST API."""
 
 from __future__ import annotations
+
+import json
+import urllib.request
 
 
 def new_project(page, server: str, name: str) -> None:
@@ -19,3 +23,21 @@ def new_pou(page, name: str, *, language: str = "ld", kind: str = "program") -> 
     page.get_by_label("POU kind").select_option(kind)
     page.get_by_label("POU language").select_option(language)
     page.get_by_role("button", name="Create").click()
+
+
+def store_project(server: str, project: dict) -> None:
+    """Creates project ``project["name"]`` through the REST API and saves ``project`` (a whole model) into it."""
+    name = project["name"]
+    _request("POST", f"{server}/api/projects", {"name": name})
+    revision = _request("GET", f"{server}/api/projects/{name}")["revision"]
+    _request("PUT", f"{server}/api/projects/{name}", project, revision)
+
+
+def _request(method: str, url: str, body: dict | None = None, revision: str | None = None) -> dict:
+    headers = {"Content-Type": "application/json"}
+    if revision is not None:
+        headers["If-Match"] = f'"{revision}"'
+    data = json.dumps(body).encode() if body is not None else None
+    with urllib.request.urlopen(urllib.request.Request(url, data=data, method=method, headers=headers),
+                                timeout=30) as response:
+        return json.load(response)

@@ -10,7 +10,7 @@ import time
 
 import pytest
 
-from .test_ld_large import _post, _put
+from .steps import store_project
 
 pytestmark = pytest.mark.browser
 
@@ -40,13 +40,7 @@ def _big_project() -> dict:
 
 
 def test_a_1000_network_fbd_pou_opens_and_mounts_only_what_is_near_view(page, server):
-    import json
-    import urllib.request
-
-    _post(f"{server}/api/projects", {"name": "bigfbd"})
-    with urllib.request.urlopen(f"{server}/api/projects/bigfbd", timeout=10) as response:
-        revision = json.load(response)["revision"]
-    _put(f"{server}/api/projects/bigfbd", _big_project(), revision)
+    store_project(server, _big_project())
     orders: list[str] = []
     page.on("request", lambda r: orders.append(r.url) if r.url.endswith("/api/fbd/order") else None)
 

@@ -6,28 +6,16 @@ assertions fail on a busy machine.
 
 from __future__ import annotations
 
-import json
 import re
 import time
-import urllib.request
 
 import pytest
+
+from .steps import store_project
 
 pytestmark = pytest.mark.browser
 
 NETWORKS = 1000
-
-
-def _post(url: str, body: dict) -> None:
-    request = urllib.request.Request(url, data=json.dumps(body).encode(), method="POST",
-                                     headers={"Content-Type": "application/json"})
-    urllib.request.urlopen(request, timeout=10).close()
-
-
-def _put(url: str, body: dict, revision: str) -> None:
-    request = urllib.request.Request(url, data=json.dumps(body).encode(), method="PUT",
-                                     headers={"Content-Type": "application/json", "If-Match": revision})
-    urllib.request.urlopen(request, timeout=30).close()
 
 
 def _big_project() -> dict:
@@ -44,10 +32,7 @@ def _big_project() -> dict:
 
 
 def test_a_1000_network_pou_opens_and_renders_only_what_is_in_view(page, server):
-    _post(f"{server}/api/projects", {"name": "big"})
-    with urllib.request.urlopen(f"{server}/api/projects/big", timeout=10) as response:
-        revision = json.load(response)["revision"]
-    _put(f"{server}/api/projects/big", _big_project(), revision)
+    store_project(server, _big_project())
 
     page.goto(server)
     page.get_by_role("navigation", name="Projects").get_by_role("button", name=re.compile("^big")).click()

@@ -16,17 +16,15 @@ from __future__ import annotations
 
 import csv
 import io
-import json
 import re
 import time
-import urllib.request
 
 import pytest
 
 from tests.support import external
 
 from .conftest import ARTIFACTS
-from .steps import new_project
+from .steps import new_project, store_project
 
 pytestmark = pytest.mark.browser
 
@@ -43,24 +41,6 @@ END_VAR"""
 TIMER_BODY = f"""Timer(IN := Go, PT := T#{PT_MS}ms);
 Q := Timer.Q;
 ET := Timer.ET;"""
-
-
-def _request(method: str, url: str, body: dict | None = None, revision: str | None = None) -> dict:
-    headers = {"Content-Type": "application/json"}
-    if revision is not None:
-        headers["If-Match"] = f'"{revision}"'
-    data = json.dumps(body).encode() if body is not None else None
-    with urllib.request.urlopen(urllib.request.Request(url, data=data, method=method, headers=headers),
-                                timeout=20) as response:
-        return json.load(response)
-
-
-def _store(server: str, name: str, change) -> None:
-    """Read project ``name``, apply ``change`` to its model, save it with the revision read."""
-    document = _request("GET", f"{server}/api/projects/{name}")
-    project = document["project"]
-    change(project)
-    _request("PUT", f"{server}/api/projects/{name}", project, document["revision"])
 
 
 def _online(page) -> None:
@@ -84,13 +64,9 @@ def _open_project(page, server: str, name: str) -> None:
 
 
 def test_a_trace_of_a_ton_shows_q_rising_pt_after_its_input(page, server):
-    _request("POST", f"{server}/api/projects", {"name": "timer"})
-
-    def timer_program(project: dict) -> None:
-        project["pous"] = [{"name": "Main", "kind": "program", "language": "st",
-                            "declarations": TIMER_DECLARATIONS, "body": TIMER_BODY}]
-        project["tasks"] = [{"name": "Fast", "interval": f"T#{SCAN_MS}ms", "programs": ["Main"]}]
-    _store(server, "timer", timer_program)
+    store_project(server, {"name": "timer", "pous": [{"name": "Main", "kind": "program", "language": "st",
+                                                      "declarations": TIMER_DECLARATIONS, "body": TIMER_BODY}],
+                           "tasks": [{"name": "Fast", "interval": f"T#{SCAN_MS}ms", "programs": ["Main"]}]})
     _open_project(page, server, "timer")
     _online(page)
 
