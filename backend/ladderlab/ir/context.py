@@ -80,6 +80,12 @@ class PouContext:
             self.diagnostics.append(diagnostic)
             self._seen.add(key)
 
+    def retract(self, count: int) -> None:
+        """Drop the diagnostics reported after the first ``count`` (what checking a box call template's placeholder
+        version reported: its messages name placeholders, not the user's operands)."""
+        del self.diagnostics[count:]
+        self._seen, self._seen_upto = set(), 0
+
     def _reported(self) -> set[tuple]:
         """The identities of the diagnostics in the (shared, append-only) list, brought up to date: one set lookup
         per report, where comparing with the whole list made a diagram with thousands of problems quadratic."""

@@ -14,11 +14,13 @@ from __future__ import annotations
 
 import functools
 from dataclasses import dataclass
+from typing import NamedTuple
 
 from ..st import ast, stdlib
 from ..st import types as t
 from ..st.symbols import PouInfo, did_you_mean
 from .diagram_operands import At, Operands
+from .diagram_shapes import Leaf, Shape, Template
 from .lower_expr import lower_en_eno, std_call, user_call
 from .lower_st import lower_fb_call  # a box is lowered exactly like the FB call of an ST statement
 from .lower_types import LoweringError
@@ -172,11 +174,59 @@ def _callee(ops: Operands, name: str, at: At) -> Callee | None:
     return None
 
 
+class CheckedCall(NamedTuple):
+    """A box call the checker accepted: its type (a function's result), the FB type it calls, and what
+    ``lower_call`` lowers - the checked ST call, or the template of its shape and the box's own values."""
+
+    ty: t.Type
+    fb: t.FbType | None
+    node: ast.Call | None
+    template: Template | None = None
+    leaves: dict[str, Leaf] | None = None
+
+
 def check_call(ops: Operands, callee: Callee, instance: str | None, inputs: dict[str, PinValue],
                outputs: dict[str, str], at: At, en: PinValue | None = None,
-               eno: Var | None = None) -> ast.Call | None:
+               eno: Var | None = None) -> CheckedCall | None:
     """The box as a checked ST call (None when reported). ``inputs``/``outputs`` map upper-case pin names
-    to what feeds them / the variable they write (FB outputs)."""
+    to what feeds them / the variable they write (FB outputs). The first box of a shape that checks without
+    a word also gives that shape its template (diagram_shapes); later boxes of the shape use it."""
+    shape = ops.shapes.shape(callee.name, instance, inputs, outputs, en, eno)
+    if shape is not None:
+        template = ops.shapes.templates.get(shape.key)
+        if template is not None:
+            return CheckedCall(template.ty, template.fb, None, template, shape.leaves)
+    before = len(ops.ctx.diagnostics)
+    target = ops.parse(instance, at, "the instance") if instance is not None else ast.Name(callee.name)
+    node = _check(ops, callee, target, inputs, outputs, at, en, eno)
+    if node is None:
+        return None
+    if shape is not None and shape.key not in ops.shapes.templates and len(ops.ctx.diagnostics) == before:
+        _learn(ops, callee, shape, inputs, at, en)
+    return CheckedCall(node.ty, _fb(callee, node), node)
+
+
+def _fb(callee: Callee, node: ast.Call) -> t.FbType | None:
+    return node.callee.ty if callee.is_fb else None  # type: ignore[return-value]
+
+
+def _learn(ops: Operands, callee: Callee, shape: Shape, inputs: dict[str, PinValue], at: At,
+           en: PinValue | None) -> None:
+    """Check and lower the shape's call with placeholders; it becomes the template unless anything was reported."""
+    holders = ops.shapes.placeholders(shape, inputs, en)
+    template = None
+    with ops.muted() as reported:
+        node = _check(ops, callee, holders.instance or ast.Name(callee.name), holders.inputs, {}, at, holders.en,
+                      holders.eno)
+        statements = _lower(ops, callee, node, holders.result, at, Origin(ops.ctx.name)) if node else None
+        if statements is not None and Template.covers(statements):
+            template = Template(node.ty, _fb(callee, node), statements, holders.names)
+    ops.shapes.templates[shape.key] = None if reported else template
+
+
+def _check(ops: Operands, callee: Callee, target: ast.Expr | None, inputs: dict[str, PinValue],
+           outputs: dict[str, str], at: At, en: PinValue | None, eno: Var | None) -> ast.Call | None:
+    """Check the box as the ST call of ``target`` (the instance or the function's name; None: reported)."""
     missing = callee.missing(set(inputs))
     for pin in missing:
         ops.report(at.on(pin), f"{ops.lang}-MISSING-PIN", f"input {pin} of {callee.name} is not connected")
@@ -204,9 +254,8 @@ def check_call(ops: Operands, callee: Callee, instance: str | None, inputs: dict
             args.append(_arg(ast.Arg(pin, node, output=True), pin, pins))
     if eno is not None:
         args.append(ast.Arg("ENO", ops.wire_node(eno, t.BOOL), output=True))
-    if failed:
+    if failed or target is None:
         return None
-    target = ops.parse(instance, at, "the instance") if instance is not None else ast.Name(callee.name)
     node = ast.Call(target, args)
     before = len(ops.ctx.diagnostics)
     checker = ops.checker(at, pins)
@@ -230,10 +279,17 @@ def _arg(arg: ast.Arg, pin: str, pins: dict[str, ast.Arg]) -> ast.Arg:
     return arg
 
 
-def lower_call(ops: Operands, callee: Callee, node: ast.Call, result: Var | None, at: At,
+def lower_call(ops: Operands, callee: Callee, call: CheckedCall, result: Var | None, at: At,
                origin: Origin) -> list[Stmt] | None:
     """The statements of a checked box call: one ``FnCall`` writing ``result``, or the ``FbCall`` (and the
     output copies an ST call would have); None when the engine cannot run it (reported)."""
+    if call.template is not None:
+        return call.template.bind(call.leaves, result, origin)
+    return _lower(ops, callee, call.node, result, at, origin)
+
+
+def _lower(ops: Operands, callee: Callee, node: ast.Call, result: Var | None, at: At,
+           origin: Origin) -> list[Stmt] | None:
     try:
         if callee.is_fb:
             return [_located(s, origin) for s in lower_fb_call(node, ops.ctx, origin)]

@@ -13,9 +13,11 @@ hidden slots; ``wire_node`` gives them an AST name the checker resolves
 
 from __future__ import annotations
 
+import contextlib
 import dataclasses
 import functools
 import re
+from collections.abc import Iterator
 from typing import Any, NamedTuple
 
 from ..model.diagnostics import Diagnostic
@@ -26,6 +28,7 @@ from ..st.parser import parse_expression
 from ..st.rules import assignable_or_report
 from ..st.symbols import Symbol
 from .context import HIDDEN_PREFIX, PouContext
+from .diagram_shapes import CallShapes
 from .lower_expr import lower_access, lower_expr, lower_to
 from .lower_types import LoweringError
 from .nodes import Const, Expr, Var
@@ -68,8 +71,10 @@ class Operands:
         self._parsed: dict[str, tuple[ast.Expr | None, list[Diagnostic]]] = {}  # by the parser, never annotated
         self._shapes: dict[str, tuple | None] = {}  # stripped operand text -> its quick shape (see _quick_parse)
         self.callees: dict[str, Any] = {}  # upper-case name -> diagram_calls.Callee, resolved once per POU
+        self.shapes = CallShapes(self)  # box call templates (diagram_calls)
         self._temps: dict[IrType, list[Var]] = {}
         self._used: dict[IrType, int] = {}
+        self._muted: list[str] | None = None
 
     # ------------------------------------------------------------ temporaries
     def new_network(self) -> None:
@@ -90,7 +95,24 @@ class Operands:
 
     # ------------------------------------------------------------ diagnostics
     def report(self, at: At, code: str, message: str, severity: str = "error") -> None:
+        if self._muted is not None:
+            self._muted.append(code)
+            return
         self.ctx.report(code, message, network=at.network, element=at.element, pin=at.pin, severity=severity)
+
+    @contextlib.contextmanager
+    def muted(self) -> Iterator[list[str]]:
+        """Collect the codes of what is reported meanwhile instead of reporting it (a call template's placeholder
+        check); what the ST lowering reports to the POU directly is taken back and counts too."""
+        sink: list[str] = []
+        before, self._muted = len(self.ctx.diagnostics), sink
+        try:
+            yield sink
+        finally:
+            self._muted = None
+            if len(self.ctx.diagnostics) != before:
+                sink += [d.code for d in self.ctx.diagnostics[before:]]
+                self.ctx.retract(before)
 
     def errors_since(self, before: int) -> bool:
         """Was an error reported since the POU had ``before`` diagnostics? (Asked after every check: mostly
@@ -142,10 +164,7 @@ class Operands:
         one (``T1.Q``), a decimal integer - exactly as the parser builds them; None for anything else.
         (A generated 10,000-network diagram has some 60,000 operands, most read twice: an FBD input node's
         text by the node and by its consumer's call; the shape is recognised once, the nodes are new.)"""
-        if text in self._shapes:
-            shape = self._shapes[text]
-        else:
-            shape = self._shapes[text] = self._quick_shape(text)
+        shape = self._shape(text)
         if shape is None:
             return None
         digits, root, member = shape
@@ -153,6 +172,13 @@ class Operands:
             return ast.IntLit(digits, span=_one_line(len(text)))
         name = ast.Name(root, span=_one_line(len(root)))
         return ast.Member(name, member, span=_one_line(len(text))) if member is not None else name
+
+    def _shape(self, text: str) -> tuple[int | None, str | None, str | None] | None:
+        """The quick shape of a stripped operand text, recognised once per text."""
+        if text in self._shapes:
+            return self._shapes[text]
+        shape = self._shapes[text] = self._quick_shape(text)
+        return shape
 
     def _quick_shape(self, text: str) -> tuple[int | None, str | None, str | None] | None:
         """(integer, root name, member) of a quick operand text; None when the parser must read it."""
@@ -164,11 +190,24 @@ class Operands:
             return int(digits), None, None
         return (None, root, member) if self.declared(root) else None
 
+    def named_variable(self, text: str) -> tuple[Symbol, str | None] | None:
+        """The declared variable an operand text names (``x``) and the member it selects (``t1.Q``), or None for
+        any other text (an index, an expression, a literal)."""
+        shape = self._shape(text.strip())
+        if shape is None or shape[1] is None:
+            return None
+        symbol = self._symbol(shape[1])
+        return (symbol, shape[2]) if symbol is not None else None
+
     def declared(self, name: str) -> bool:
         """Is ``name`` a variable of this POU or a global? (A declared name is never a keyword, so the parser
         reads it as a name.)"""
+        return self._symbol(name) is not None
+
+    def _symbol(self, name: str) -> Symbol | None:
+        """A POU variable or else a global by name, as the checker looks names up."""
         upper = name.upper()
-        return upper in self.ctx.info.symbols or upper in self.ctx.checked.globals
+        return self.ctx.info.symbols.get(upper) or self.ctx.checked.globals.get(upper)
 
     def lower(self, node: ast.Expr, at: At, expected: IrType | None = None) -> Expr | None:
         """``lower_expr`` with its errors reported at ``at`` (None then)."""
@@ -214,6 +253,17 @@ class Operands:
         for diagnostic in diagnostics:
             self._relocate(diagnostic, at)
         return value, ty
+
+    def clean_read(self, text: str) -> tuple[Expr, t.Type] | None:
+        """A read operand's IR and type when reading it reports nothing (nothing is reported here), else None."""
+        entry = self._reads.get((text, ""))
+        if entry is None:
+            entry = self._read(text, "", None)
+            if entry[2]:
+                return None  # not kept: its messages would name no element
+            self._reads[(text, "")] = entry
+        value, ty, diagnostics = entry
+        return None if diagnostics or value is None else (value, ty)
 
     def _read(self, text: str, what: str, expected: t.Type | None) -> tuple[Expr | None, t.Type, list[Diagnostic]]:
         """``st.checker.check_operand``'s steps (type, then assignability to ``expected``) on the quick parse."""

@@ -313,7 +313,7 @@ class _Network:
         pins: dict[str, PinValue] = {}  # what the consumers read
         probed: dict[str, tuple[Expr, t.Type]] = {}  # what the probes read
         if callee.is_fb:
-            types = fb_pins(call.callee.ty, self.ctx)
+            types = fb_pins(call.fb, self.ctx)
             for pin in callee.output_names():
                 pins[pin] = f"{instance}.{pin}"
                 probed[pin] = fb_output(first.instance, pin, types[pin][0]), callee.output_type(pin)

@@ -186,21 +186,21 @@ class _Rung:
         if not box.en and not self._feed_power(callee, inputs, power, at):
             return None
         result_text = outputs.pop("OUT", None) if not callee.is_fb else None
-        node = check_call(self.ops, callee, instance, inputs, outputs, at, en, eno)
-        if node is None:
+        call = check_call(self.ops, callee, instance, inputs, outputs, at, en, eno)
+        if call is None:
             return None
-        result = None if callee.is_fb else self._result(node, result_text, at, box.en)
-        statements = lower_call(self.ops, callee, node, result, at, origin) \
+        result = None if callee.is_fb else self._result(callee, call.ty, result_text, at, box.en)
+        statements = lower_call(self.ops, callee, call, result, at, origin) \
             if result is not None or callee.is_fb else None
         if statements is None:
             return None
         self.out += statements
         if callee.is_fb:  # the outputs, read from the instance the FbCall (first statement) called
-            types = fb_pins(node.callee.ty, self.ctx)
+            types = fb_pins(call.fb, self.ctx)
             pins = {pin: fb_output(statements[0].instance, pin, types[pin][0]) for pin in callee.output_names()}
         else:
             pins = {"OUT": result}
-        right = eno if eno is not None else self._bool_output(callee, node, pins, at)
+        right = eno if eno is not None else self._bool_output(callee, call.ty, pins, at)
         if right is None:
             return None
         probes: list[Stmt] = [Probe(box.id, eno, origin)] if eno is not None else []
@@ -231,21 +231,21 @@ class _Rung:
         inputs[free[0]] = (power, t.BOOL)
         return True
 
-    def _result(self, node, text: str | None, at: At, en: bool) -> Var | None:
-        """Where a function box's result goes: its OUT variable, else a slot kept between scans when the box
-        has EN (with EN FALSE it keeps its value), else a temporary."""
+    def _result(self, callee: Callee, ty: t.Type, text: str | None, at: At, en: bool) -> Var | None:
+        """Where a function box's result (of type ``ty``) goes: its OUT variable, else a slot kept between scans
+        when the box has EN (with EN FALSE it keeps its value), else a temporary."""
         if text is not None:
-            return self.ops.value_target(text, at.on("OUT"), f"output OUT of {node.callee.name}", node.ty)
+            return self.ops.value_target(text, at.on("OUT"), f"output OUT of {callee.name}", ty)
         if en:
-            return self.ctx.hidden(f"{at.element}_OUT", self.ctx.ir_type(node.ty))
-        return self.ops.temp(self.ctx.ir_type(node.ty))
+            return self.ctx.hidden(f"{at.element}_OUT", self.ctx.ir_type(ty))
+        return self.ops.temp(self.ctx.ir_type(ty))
 
-    def _bool_output(self, callee: Callee, node, pins: dict[str, Expr | None], at: At) -> Expr | None:
+    def _bool_output(self, callee: Callee, ty: t.Type, pins: dict[str, Expr | None], at: At) -> Expr | None:
         if callee.is_fb:
             names = callee.bool_outputs()
             if names and pins.get(names[0]) is not None:
                 return pins[names[0]]
-        elif t.same(node.ty, t.BOOL):
+        elif t.same(ty, t.BOOL):
             return pins["OUT"]
         if not callee.is_fb or not callee.bool_outputs():
             self.ops.report(at, "LD-BOX-POWER", f"{callee.name} has no BOOL output to pass the power flow on: set en "

@@ -1,0 +1,231 @@
+"""Box calls of one shape checked and lowered once per POU, then bound for every alike box.
+
+A large diagram has thousands of boxes that differ only in the variables wired to
+them: ``TON`` with instance ``T17``, input ``C17`` and ``PT := T#5s``. The ST checker's
+verdict on such a call and the IR the ST lowering builds depend on those variables
+only through their types. So ``diagram_calls`` checks and lowers the first box of a
+*shape* - the callee, each pin's kind of value and its type, the exact text of every
+other operand (literals, expressions) - a second time with placeholder variables in
+place of the box's own, keeps that IR as the shape's template, and binds every later
+alike box's variables into a copy of it. The rules stay the ST checker's and the ST
+lowering's; this module only decides when two calls are alike and substitutes.
+
+A *leaf* (a value the template generalises): a wire or power-flow slot; a declared
+variable, not CONSTANT, of an elementary type other than STRING, optionally under
+``NOT`` (a negated FBD input pin); the FB instance, named by a plain name. A call gets
+no template when the box writes variables through its pins (``Q => y``: the checker's
+verdict on a written variable depends on more than its type), when any other value is
+not a text, or when checking and lowering its placeholder version reported anything.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any, NamedTuple
+
+from ..st import ast
+from ..st import types as t
+from .nodes import Binary, Call, Convert, Expr, FbCall, FnCall, Index, Origin, Stmt, Unary, Var
+from .types import BOOL
+
+if TYPE_CHECKING:
+    from .diagram_operands import Operands
+
+PLACEHOLDER = "__#"  # hidden slots are "__" and letters, digits, "_": a placeholder's name is never one's
+_COMPOSITE = (Unary, Binary, Call, Convert, Index)  # IR expressions with expressions inside
+RESULT = "=>"  # the function result's entry among the pins of a template's placeholders (never a pin name)
+
+
+class Leaf(NamedTuple):
+    """One generalised value of a call: its part of the shape key, the box's own IR value, its ST type."""
+
+    key: tuple
+    value: Expr
+    ty: t.Type
+
+
+class Shape(NamedTuple):
+    """A call's shape key and the box's own values of its leaves, by pin (``""``: the FB instance)."""
+
+    key: tuple
+    leaves: dict[str, Leaf]
+
+
+class Placeholders(NamedTuple):
+    """What the template's call is checked and lowered with: the box's values with placeholders for its leaves."""
+
+    names: dict[str, str]  # pin ("" the instance, RESULT the function result) -> placeholder name
+    inputs: dict[str, Any]
+    instance: ast.Expr | None
+    en: Any
+    eno: Var | None
+    result: Var
+
+
+class Template:
+    """A shape's call as checked (its type, the FB type it calls) and lowered with placeholders: one ``FnCall``
+    or ``FbCall`` (the calls templates cover need no statements around them)."""
+
+    def __init__(self, ty: t.Type, fb: t.FbType | None, statements: list[Stmt], names: dict[str, str]):
+        self.ty, self.fb, self._names = ty, fb, names
+        placeholders = frozenset(names.values())
+        self._statements = [_statement_binder(statement, placeholders) for statement in statements]
+
+    @staticmethod
+    def covers(statements: list[Stmt]) -> bool:
+        return all(type(statement) in (FnCall, FbCall) for statement in statements)
+
+    def bind(self, leaves: dict[str, Leaf], result: Var | None, origin: Origin) -> list[Stmt]:
+        """The template's statements with one box's values, result and origin."""
+        bindings: dict[str, Expr] = {self._names[pin]: leaf.value for pin, leaf in leaves.items()}
+        if result is not None:
+            bindings[self._names[RESULT]] = result
+        return [bind(bindings, origin) for bind in self._statements]
+
+
+class CallShapes:
+    """The call templates of one diagram POU by shape key (None: that shape has none)."""
+
+    def __init__(self, ops: Operands):
+        self.ops = ops
+        self.templates: dict[tuple, Template | None] = {}
+        self._count = 0
+
+    def shape(self, callee: str, instance: str | None, inputs: dict[str, Any], outputs: dict[str, str],
+              en: Any, eno: Var | None) -> Shape | None:
+        """The shape of a box call, or None when templates do not cover it."""
+        if outputs:
+            return None
+        leaves: dict[str, Leaf] = {}
+        parts: list[Any] = [callee, eno is not None]
+        if instance is not None:
+            leaf = self._variable(instance, fb=True)
+            if leaf is None:
+                return None
+            leaves[""] = leaf
+            parts.append(leaf.key)
+        if eno is not None:
+            leaves["ENO"] = Leaf(("eno",), eno, t.BOOL)
+        pins = sorted(inputs.items()) if en is None else [("EN", en), *sorted(inputs.items())]
+        for pin, value in pins:
+            part = self._part(pin, value, leaves)
+            if part is None:
+                return None
+            parts.append((pin, part))
+        key = tuple(parts)
+        try:
+            hash(key)
+        except TypeError:  # a type that cannot be a key
+            return None
+        return Shape(key, leaves)
+
+    def placeholders(self, shape: Shape, inputs: dict[str, Any], en: Any) -> Placeholders:
+        names = {pin: self._name() for pin in (*shape.leaves, RESULT)}
+        values = {pin: self._placeholder(names[pin], leaf) for pin, leaf in shape.leaves.items()}
+        instance, eno_wire = values.pop("", None), values.pop("ENO", None)
+        return Placeholders(
+            names, {pin: values.get(pin, value) for pin, value in inputs.items()},
+            self.ops.wire_node(*instance) if instance is not None else None, values.get("EN", en),
+            eno_wire[0] if eno_wire is not None else None,
+            Var("local", names[RESULT], BOOL))  # the result is only ever a target: its type is never read
+
+    # ------------------------------------------------------------ leaves
+    def _part(self, pin: str, value: Any, leaves: dict[str, Leaf]) -> tuple | None:
+        """The shape key of one input; a leaf's value goes to ``leaves``."""
+        if isinstance(value, str):
+            leaf = self._variable(value, fb=False)
+            if leaf is None:
+                return ("text", value)
+        elif isinstance(value, tuple):
+            expr, ty = value
+            if not isinstance(expr, Var):
+                return ("const", expr.value, ty)
+            leaf = Leaf(("wire", ty, expr.type), expr, ty)
+        elif isinstance(value, ast.Unary) and value.op == "NOT" and type(value.operand) is ast.Name:
+            inner = self._variable(value.operand.name, fb=False)
+            if inner is None:
+                return None
+            leaf = Leaf(("NOT", *inner.key), inner.value, inner.ty)
+        else:
+            return None
+        leaves[pin] = leaf
+        return leaf.key
+
+    def _variable(self, text: str, fb: bool) -> Leaf | None:
+        """A named variable as a leaf, or None: an FB instance when ``fb``, else an elementary variable or an
+        elementary output of an FB instance (``t1.Q``: the key names the FB type and the pin)."""
+        named = self.ops.named_variable(text)
+        if named is None or named[0].constant:
+            return None
+        symbol, member = named
+        if fb and (member is not None or not isinstance(symbol.type, t.FbType)):
+            return None
+        if not fb and (type(symbol.type) is not t.Elementary if member is None else not isinstance(symbol.type, t.FbType)):
+            return None
+        read = self.ops.clean_read(text)
+        if read is None or not fb and type(read[1]) is not t.Elementary:
+            return None
+        value, ty = read
+        if fb:
+            return Leaf(("fb", ty.name.upper(), ty.std is not None), value, ty)  # type: ignore[attr-defined]
+        if member is None:
+            return Leaf(("var", ty, value.type), value, ty)
+        return Leaf(("pin", symbol.type.name.upper(), symbol.type.std is not None, member.upper(), ty, value.type),
+                    value, ty)
+
+    def _name(self) -> str:
+        self._count += 1
+        return f"{PLACEHOLDER}{self._count}"
+
+    def _placeholder(self, name: str, leaf: Leaf) -> Any:
+        """A leaf's value in the template's call: a wire (for the checker, a name of the leaf's type), under NOT
+        when the leaf is negated (typed as the checker types it, for EN, which standard calls leave untyped)."""
+        wire = (Var("local", name, leaf.value.type), leaf.ty)
+        if leaf.key[0] != "NOT":
+            return wire
+        negated = ast.Unary("NOT", self.ops.wire_node(*wire))
+        negated.ty = leaf.ty
+        return negated
+
+
+def _binder(node: Any, names: frozenset[str]) -> Callable[[dict[str, Expr]], Any] | None:
+    """How to copy template IR ``node`` with its placeholders (``names``) bound; None when it holds none and is
+    shared as it is (IR expressions are immutable). Only the nodes on a path to a placeholder are copied."""
+    if type(node) is Var:
+        if node.name not in names:
+            return None
+        if not node.path:
+            return lambda bindings: bindings[node.name]
+        return lambda bindings: _select(bindings[node.name], node)
+    if type(node) in (list, tuple):
+        items = [_binder(item, names) for item in node]
+        if not any(items):
+            return None
+        kind = type(node)
+        return lambda bindings: kind(item if bind is None else bind(bindings) for item, bind in zip(node, items))
+    if not isinstance(node, _COMPOSITE):
+        return None
+    fields = {name: bind for name, value in vars(node).items() if (bind := _binder(value, names)) is not None}
+    return (lambda bindings: _copy(node, {name: bind(bindings) for name, bind in fields.items()})) if fields else None
+
+
+def _statement_binder(statement: Stmt, names: frozenset[str]) -> Callable[[dict[str, Expr], Origin], Stmt]:
+    """How to copy a (flat) template statement with its placeholders bound, at a box's origin."""
+    fields = {name: bind for name, value in vars(statement).items()
+              if name != "origin" and (bind := _binder(value, names)) is not None}
+    return lambda bindings, origin: _copy(statement, {"origin": origin,
+                                                       **{name: bind(bindings) for name, bind in fields.items()}})
+
+
+def _select(value: Expr, placeholder: Var) -> Var:
+    """A member of a bound FB instance: the placeholder's selectors below the instance's own path."""
+    assert isinstance(value, Var)
+    return Var(value.scope, value.name, placeholder.type, (*value.path, *placeholder.path))
+
+
+def _copy(node: Any, changes: dict[str, Any]) -> Any:
+    """A copy of an IR dataclass with ``changes`` (without the frozen dataclasses' per-field setattr calls)."""
+    copy = object.__new__(type(node))
+    copy.__dict__.update(vars(node))
+    copy.__dict__.update(changes)
+    return copy
