@@ -77,7 +77,7 @@ class _Reader:
         match = _DECL.match(self.text, self.position)
         if match is None:
             return None
-        span = self.span_on_line(match.start(), match.end()) or self.span
+        span = self.span_on_line(match.start(1), match.end()) or self.span
         names = []
         for name in _NAME.finditer(self.text, match.start(1), match.end(1)):
             if name.group().upper() in self.keywords:
