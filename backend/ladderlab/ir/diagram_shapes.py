@@ -26,7 +26,7 @@ from typing import TYPE_CHECKING, Any, NamedTuple
 from ..st import ast
 from ..st import types as t
 from .nodes import Binary, Call, Convert, Expr, FbCall, FnCall, Index, Origin, Stmt, Unary, Var
-from .types import BOOL
+from .types import BOOL, Elementary, IrType
 
 if TYPE_CHECKING:
     from .diagram_operands import Operands
@@ -140,7 +140,7 @@ class CallShapes:
             expr, ty = value
             if not isinstance(expr, Var):
                 return ("const", expr.value, ty)
-            leaf = Leaf(("wire", ty, expr.type), expr, ty)
+            leaf = Leaf(("wire", *_types(ty, expr.type)), expr, ty)
         elif isinstance(value, ast.Unary) and value.op == "NOT" and type(value.operand) is ast.Name:
             inner = self._variable(value.operand.name, fb=False)
             if inner is None:
@@ -169,9 +169,9 @@ class CallShapes:
         if fb:
             return Leaf(("fb", ty.name.upper(), ty.std is not None), value, ty)  # type: ignore[attr-defined]
         if member is None:
-            return Leaf(("var", ty, value.type), value, ty)
-        return Leaf(("pin", symbol.type.name.upper(), symbol.type.std is not None, member.upper(), ty, value.type),
-                    value, ty)
+            return Leaf(("var", *_types(ty, value.type)), value, ty)
+        return Leaf(("pin", symbol.type.name.upper(), symbol.type.std is not None, member.upper(),
+                     *_types(ty, value.type)), value, ty)
 
     def _name(self) -> str:
         self._count += 1
@@ -186,6 +186,14 @@ class CallShapes:
         negated = ast.Unary("NOT", self.ops.wire_node(*wire))
         negated.ty = leaf.ty
         return negated
+
+
+def _types(st_type: t.Type, ir_type: IrType) -> tuple:
+    """A value's ST and IR type as part of a shape key: elementary ones by name (strings hash once; the type
+    dataclasses hash field by field, and shape keys are hashed for every box)."""
+    if type(st_type) is t.Elementary and type(ir_type) is Elementary:
+        return st_type.name, ir_type.name, ir_type.length
+    return st_type, ir_type
 
 
 def _binder(node: Any, names: frozenset[str]) -> Callable[[dict[str, Expr]], Any] | None:
