@@ -28,9 +28,12 @@ from functools import lru_cache
 
 _PLAIN = re.compile(r"[A-Z0-9_]+\Z")
 _ALNUM = re.compile(r"[A-Z0-9]")
+# Names are asked for by the hundred thousand when a large program is compiled; a long-running server compiles
+# many programs, so the caches keep the most recent names only (a 10,000-network POU has some 40,000 slots).
+_NAMES_KEPT = 1 << 16
 
 
-@lru_cache(maxsize=None)
+@lru_cache(maxsize=_NAMES_KEPT)
 def escape(name: str) -> str:
     """``name`` upper-cased if it is a plain identifier, else the injective escape (starting with ``w``)."""
     upper = name.upper()
@@ -39,7 +42,7 @@ def escape(name: str) -> str:
     return "w" + "".join(c if _ALNUM.match(c) and c.isascii() else f"_{ord(c):06X}" for c in upper)
 
 
-@lru_cache(maxsize=None)
+@lru_cache(maxsize=_NAMES_KEPT)
 def slot(name: str) -> str:
     """Attribute / local name of a variable slot or structure field."""
     return "v_" + escape(name)
