@@ -146,6 +146,17 @@ def test_declaration_rules():
     ]
 
 
+def test_a_global_cannot_take_a_program_name():
+    """ST-08: a program instance and a global variable both name an instance of the resource (a watch-list path
+    ``Pump`` could mean either); a global named like a function block type is not an instance and stays legal."""
+    pump = Pou(name="Pump", kind="program", language="st", declarations="VAR n : INT; END_VAR", body="n := n + 1;")
+    project = Project(name="p", types=TYPES, globals="VAR_GLOBAL x : INT;\n  PUMP : BOOL; Motor : INT; END_VAR",
+                      pous=[pump, FB, FUN])
+    assert [(d.file, d.line, d.column, d.code, d.message) for d in check_project(project).diagnostics] == [
+        ("globals", 2, 3, "ST-DUPLICATE", "'PUMP' is the name of the program Pump: a global variable and a program "
+         "instance cannot share a name")]
+
+
 def test_diagnostics_point_into_the_right_text():
     result = check("x := 1;\n  y := nope;", declarations=MAIN_DECLS.replace("w : WORD;", "w : WORDS;"))
     assert [(d.file, d.pou, d.line, d.column) for d in result.diagnostics] == [

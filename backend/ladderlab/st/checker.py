@@ -242,7 +242,13 @@ class ProjectChecker:
                 report("ST-DECL", f"only VAR_GLOBAL blocks belong in the global variables, not {block.kind}", block)
             self._declare_block(block, self.result.globals, checker, None)
         for key, symbol in self.result.globals.items():
-            if key not in before and symbol.init is not None:
+            if key in before:
+                continue
+            program = self.result.pous.get(key)
+            if program is not None and program.kind == "PROGRAM":  # ST-08: both name an instance of the resource
+                report("ST-DUPLICATE", f"'{symbol.name}' is the name of the program {program.name}: a global variable "
+                       "and a program instance cannot share a name", symbol)
+            if symbol.init is not None:
                 check_init(checker, symbol.type, symbol.init)
 
     def _declare_pou(self, pou, blocks: list[ast.VarBlock]) -> None:
