@@ -3,8 +3,9 @@
 to the next network, continue).
 
 The server seeds its empty workspace with the motor example (Main: seal-in, run timer, start
-counter, lamp). The user clicks network number 2 to set a breakpoint, watches Motor and
-StartCount, runs and sees the scan halt at network 2 (highlighted), presses Start while halted,
+counter, lamp). The user clicks network number 2 to set a breakpoint (still there after a page
+reload), watches Motor and StartCount, runs and sees the scan halt at network 2 (highlighted), presses
+Start while halted,
 steps network by network (the highlight moves; StartCount is counted mid-scan, at the halt),
 continues into the next scan's halt where Motor is already on, disables the breakpoint in the
 Breakpoints panel so the scan runs free, removes it, and finally a Single cycle from stopped
@@ -42,11 +43,15 @@ def settled_scan_count(page) -> int:
         previous = current
 
 
-def test_breakpoint_halt_step_continue_disable_and_single_cycle(page, server):
-    page.goto(server)
+def open_main(page) -> None:
     page.get_by_role("navigation", name="Projects").get_by_role("button", name=re.compile("^motor")).click()
     page.get_by_role("navigation", name="Project tree").get_by_role("button", name=re.compile("^Main")).click()
     page.locator("svg.ld-network").nth(3).wait_for()
+
+
+def test_breakpoint_halt_step_continue_disable_and_single_cycle(page, server):
+    page.goto(server)
+    open_main(page)
 
     # A breakpoint on network 2: click its number; a red dot appears there and the panel lists it.
     page.get_by_role("button", name="Toggle breakpoint on network 2").click()
@@ -55,6 +60,13 @@ def test_breakpoint_halt_step_continue_disable_and_single_cycle(page, server):
     panels = page.get_by_role("region", name="Panels")
     panels.get_by_role("tab", name="Breakpoints (1)").click()
     row = panels.locator("tr.breakpoint-row")
+    assert row.inner_text().strip().startswith("Main network 2 MotorRunning after 5 s of Motor")
+
+    # The breakpoint survives a page reload: the project opened again shows it on network 2 and in the panel.
+    page.reload()
+    open_main(page)
+    network2.get_by_role("img", name="Breakpoint on network 2").wait_for()
+    panels.get_by_role("tab", name="Breakpoints (1)").click()
     assert row.inner_text().strip().startswith("Main network 2 MotorRunning after 5 s of Motor")
 
     # Watch Motor and StartCount.

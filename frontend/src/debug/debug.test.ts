@@ -4,7 +4,7 @@ import { describe, expect, it, vi } from "vitest";
 import type { SimulationInfo } from "../generated/api";
 import { createOnlineStore, type SocketLike } from "../online/store";
 import { breakpointKey, clearMessage, describeBreakpoint, describeHalt, sameBreakpoint, setMessage, toggle, type Breakpoint } from "./breakpoints";
-import { createDebugStore, isEnabled } from "./store";
+import { createDebugStore, isEnabled, loadBreakpoints } from "./store";
 
 const arbBreakpoint: fc.Arbitrary<Breakpoint> = fc.oneof(
   fc.record({ pou: fc.constantFrom("Main", "MAIN", "Fb"), network: fc.constantFrom("n1", "n2") }),
@@ -183,5 +183,66 @@ describe("debug store (issue 9: breakpoints, continue, step)", () => {
     debug.getState().setEnabled({ pou: "Main", line: 3 }, true);
     expect(breakpointMessages(second).at(-1)).toEqual({ type: "breakpoint_set", pou: "Main", line: 3 });
     await online.getState().goOffline();
+  });
+});
+
+describe("breakpoints survive a page reload (kept per project in localStorage)", () => {
+  const storage = () => {
+    const items = new Map<string, string>();
+    return {
+      getItem: (key: string) => items.get(key) ?? null,
+      setItem: (key: string, value: string) => void items.set(key, value),
+      removeItem: (key: string) => void items.delete(key),
+      items,
+    } as unknown as Storage & { items: Map<string, string> };
+  };
+
+  it("a reloaded page gets each project's breakpoints back, enabled and disabled as they were", () => {
+    const kept = storage();
+    const before = createDebugStore(() => false, null, kept).getState();
+    before.open("motor");
+    before.toggle({ pou: "Main", network: "run_timer" });
+    before.toggle({ pou: "Main", line: 4 });
+    before.setEnabled({ pou: "Main", line: 4 }, false);
+    before.open("tank");
+    before.toggle({ pou: "Fill", element: "valve" });
+
+    const reloaded = createDebugStore(() => false, null, kept);
+    expect(reloaded.getState().breakpoints).toEqual([]);
+    reloaded.getState().open("motor");
+    expect(reloaded.getState().breakpoints).toEqual([{ pou: "Main", network: "run_timer" }, { pou: "Main", line: 4 }]);
+    expect(isEnabled(reloaded.getState(), { pou: "Main", line: 4 })).toBe(false);
+    reloaded.getState().open("tank");
+    expect(reloaded.getState().breakpoints).toEqual([{ pou: "Fill", element: "valve" }]);
+    reloaded.getState().clearAll();
+    expect(kept.items.has("ladderlab:breakpoints:tank")).toBe(false);
+    reloaded.getState().open(null); // no project: none shown, the kept ones stay
+    expect(reloaded.getState().breakpoints).toEqual([]);
+    expect(kept.items.has("ladderlab:breakpoints:motor")).toBe(true);
+  });
+
+  it("switching projects clears the open simulation's breakpoints; restored ones are sent when it connects", () => {
+    const kept = storage();
+    const sent: ClientMessage[] = [];
+    const debug = createDebugStore((msg) => sent.push(msg) > 0, null, kept).getState();
+    debug.open("motor");
+    debug.toggle({ pou: "Main", network: "n1" });
+    debug.open("tank");
+    expect(sent).toEqual([{ type: "breakpoint_set", pou: "Main", network: "n1" }, { type: "breakpoint_clear" }]);
+    debug.open("motor");
+    expect(sent).toHaveLength(2); // tank had none enabled: nothing to clear
+  });
+
+  it("an unreadable or foreign entry gives no breakpoints instead of an error", () => {
+    const kept = storage();
+    for (const text of ["{not json", "[1, 2]", JSON.stringify({ breakpoints: [{ pou: 3 }, { pou: "Main" }, { pou: "Main", line: 2.5 },
+      { pou: "Main", line: 2, note: "x" }, { pou: "MAIN", line: 2 }], disabled: ["MAIN|line:2", "MAIN|line:9", 7] })]) {
+      kept.setItem("ladderlab:breakpoints:p", text);
+      const debug = createDebugStore(() => false, null, kept).getState();
+      debug.open("p");
+      const { breakpoints, disabled } = loadBreakpoints("p", kept);
+      expect(breakpoints).toEqual(text.startsWith("{\"") ? [{ pou: "Main", line: 2 }] : []);
+      expect(disabled).toEqual(text.startsWith("{\"") ? ["MAIN|line:2"] : []);
+    }
   });
 });

@@ -125,16 +125,18 @@ describe("app shell", () => {
 
   it("wires debugging into the app: a network number click lists the breakpoint in the Breakpoints panel; the shortcut help names the debug keys (issue 9)", async () => {
     serve(() => json({}));
-    debugStore.setState({ breakpoints: [{ pou: "Other", line: 1 }], disabled: [] }); // another project's
+    debugStore.getState().open("other");
+    debugStore.getState().toggle({ pou: "Other", line: 1 }); // another project's
     const tree = await openPlant();
-    expect(debugStore.getState().breakpoints).toEqual([]); // opening a project starts without breakpoints
+    expect(debugStore.getState().breakpoints).toEqual([]); // the project opened shows its own breakpoints: none yet
     fireEvent.click(within(tree).getByRole("button", { name: /Main/ }));
     fireEvent.click(screen.getByRole("button", { name: "Toggle breakpoint on network 3" }));
     fireEvent.click(screen.getByRole("tab", { name: "Breakpoints (1)" }));
     expect(screen.getByRole("table", { name: "Breakpoints" }).textContent).toContain("Main network 3 Count rising edges of Start");
+    expect(JSON.parse(localStorage.getItem("ladderlab:breakpoints:plant")!).breakpoints).toEqual([{ pou: "Main", network: "count_starts" }]);
     fireEvent.click(screen.getByRole("button", { name: "Shortcuts" }));
     const help = screen.getByRole("dialog", { name: "Keyboard shortcuts" }).textContent;
     for (const text of ["F9Toggle a breakpoint", "F5 (halted)Continue", "F10Step to the next network", "F11Step to the next statement"]) expect(help).toContain(text);
-    debugStore.setState({ breakpoints: [], disabled: [] });
+    debugStore.getState().open(null);
   });
 });

@@ -454,11 +454,11 @@ export function WorkspaceView() {
     [project],
   );
 
-  // A different project: the old one's simulation, check results and breakpoints do not apply.
+  // A different project: the old one's simulation and check results do not apply; its own breakpoints do.
   useEffect(() => {
     void onlineStore.getState().goOffline();
     panelsStore.getState().clear();
-    debugStore.getState().clearAll();
+    debugStore.getState().open(name);
   }, [name]);
 
   useEffect(() => {
