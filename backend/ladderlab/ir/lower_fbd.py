@@ -260,8 +260,9 @@ class _Network:
         outputs = callee.output_names() + (["ENO"] if node.en else [])
         used = self.used_pins.get(node.id, set())
         into = self.graph.inputs.get(node.id, {})
-        if not flags and (node.en or "EN" not in into and "ENO" not in into) and used.issubset(outputs):
-            return True  # the common case: no flags, every wire from a real output (no problem below applies)
+        if (node.en or "EN" not in into and "ENO" not in into) and used.issubset(outputs) \
+                and all(pin not in outputs and callee.is_input(pin) for pin in flags):
+            return True  # the common case: every wire from a real output, flags on inputs only (nothing below applies)
         wired = set(self.graph.inputs.get(node.id, {}))
         problems: list[tuple[str, str, str]] = []
         for pin in sorted(used - set(outputs) - {"ENO"}):
@@ -289,6 +290,9 @@ class _Network:
         expr = self.bool_value(value, at, what)
         if expr is None:
             return None
+        if flags.edge is None and isinstance(value, str):  # the call reads NOT <operand>
+            node = self.ops.parse(value, at, what)
+            return ast.Unary("NOT", node) if node is not None else None
         if flags.negated:
             expr = not_(expr)
         if flags.edge is not None:
@@ -297,9 +301,6 @@ class _Network:
             slot = self.ops.temp()
             self.out += [Assign(slot, expr, self.origin(at.element)), remember]
             return slot, t.BOOL
-        if isinstance(value, str):
-            node = self.ops.parse(value, at, what)
-            return ast.Unary("NOT", node) if node is not None else None
         slot = self.ops.temp()
         self.out.append(Assign(slot, expr, self.origin(at.element)))
         return slot, t.BOOL
