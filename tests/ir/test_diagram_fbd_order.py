@@ -5,7 +5,7 @@ from __future__ import annotations
 from hypothesis import given
 from hypothesis import strategies as st
 
-from ladderlab.ir.fbd_order import analyse
+from ladderlab.ir.fbd_order import Analyses, analyse
 from tests.ir.diagram_support import blk, connector, continuation, fjump, fret, inp, net, out
 
 
@@ -155,3 +155,55 @@ def test_property_order_is_complete_and_every_non_feedback_wire_runs_forward(net
         for pin, source in sources.items():
             forward = position[source.node] < position[consumer]
             assert forward != ((consumer, pin) in graph.feedback)
+
+
+@st.composite
+def alike_networks(draw):
+    """Two networks drawn alike (node kinds, wiring, positions, order list) whose ids are drawn apart: random
+    blocks, input, output, jump nodes and a connector/continuation pair, wires to missing nodes and wired ORs
+    now and then, so some structures report problems."""
+    kinds = draw(st.lists(st.sampled_from(["block", "block", "input", "output", "jump", "pair"]), min_size=1,
+                          max_size=7))
+
+    def drawn(prefix: str) -> tuple[list, list, list | None]:
+        nodes, producers, consumers = [], [], []
+        for i, kind in enumerate(kinds):
+            name, place = f"{prefix}{i}", {"x": float(i % 3), "y": float(i // 3)}
+            if kind == "block":
+                nodes.append(blk(name, "AND", **place))
+                producers.append(f"{name}.OUT")
+                consumers += [f"{name}.IN1", f"{name}.IN2"]
+            elif kind == "input":
+                nodes.append(inp(name, "x", **place))
+                producers.append(f"{name}.OUT")
+            elif kind == "output":
+                nodes.append(out(name, "y", **place))
+                consumers.append(f"{name}.IN")
+            elif kind == "jump":
+                nodes.append(fjump(name, "L1"))
+                consumers.append(f"{name}.IN")
+            else:
+                nodes += [connector(f"{name}c", "C"), continuation(f"{name}k", "C")]
+                producers.append(f"{name}k.OUT")
+                consumers.append(f"{name}c.IN")
+        return nodes, producers, consumers
+
+    first = drawn("a")
+    choices = draw(st.lists(st.tuples(st.integers(0, 20), st.integers(0, 20)), max_size=10))
+    ranks = draw(st.lists(st.integers(0, len(first[0]) - 1), unique=True, max_size=3))
+    prefixes = draw(st.sampled_from(["b", "zz", "a_"]))
+
+    def network(nodes, producers, consumers):
+        wires = [(producers[p % len(producers)] if producers and p < 18 else "ghost.OUT",
+                  consumers[c % len(consumers)]) for p, c in choices if consumers]
+        return net("n", nodes, wires, order=[nodes[r].id for r in ranks] or None)
+    return network(*first), network(*drawn(prefixes))
+
+
+@given(alike_networks())
+def test_property_networks_drawn_alike_get_the_graph_and_diagnostics_of_their_own_analysis(pair):
+    analyses = Analyses()
+    for network in (*pair, *pair):
+        shared, own = Collect(), Collect()
+        assert analyses.analyse(network, shared) == analyse(network, own)
+        assert shared.messages == own.messages

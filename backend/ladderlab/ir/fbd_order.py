@@ -226,10 +226,7 @@ def _follow(wire: fbd.Wire, nodes: dict[str, fbd.FbdNode], wires: dict[tuple[str
 
 def _order(graph: NetworkGraph, network: fbd.FbdNetwork, report: Report) -> list[str]:
     nodes, inputs = graph.nodes, graph.inputs
-    rank = _explicit_ranks(network, nodes, report)
-    keys = {node_id: (rank.get(node_id, len(rank)), node.pos.y if node.pos else math.inf,
-                      node.pos.x if node.pos else math.inf, node_id) for node_id, node in nodes.items()}
-    key = keys.__getitem__  # the priority of a node among those the wiring leaves independent
+    key = _priorities(network, nodes, report).__getitem__  # a node's priority among those the wiring leaves independent
 
     predecessors: dict[str, set[str]] = {}  # blocks and output nodes (in node order) -> the blocks feeding them
     fed = {s.node for sources in inputs.values() for s in sources.values()}
@@ -258,6 +255,14 @@ def _order(graph: NetworkGraph, network: fbd.FbdNetwork, report: Report) -> list
 
 
 _NONE: dict[str, Source] = {}  # no inputs (read only)
+
+
+def _priorities(network: fbd.FbdNetwork, nodes: dict[str, fbd.FbdNode], report: Report) -> dict[str, tuple]:
+    """Node id -> its priority key: rank in the ``order`` list, then position (top to bottom, left to right),
+    then id."""
+    rank = _explicit_ranks(network, nodes, report)
+    return {node_id: (rank.get(node_id, len(rank)), node.pos.y if node.pos else math.inf,
+                      node.pos.x if node.pos else math.inf, node_id) for node_id, node in nodes.items()}
 
 
 def _explicit_ranks(network: fbd.FbdNetwork, nodes: dict[str, fbd.FbdNode], report: Report) -> dict[str, int]:
@@ -363,3 +368,89 @@ def _place_inputs(graph: NetworkGraph, order: list[str], key) -> list[str]:
                 result.append(source)
         result.append(node_id)
     return result
+
+
+# --------------------------------------------------------------------------- networks drawn alike
+
+
+class Analyses:
+    """``analyse`` for the networks of one POU, once per structure. Networks drawn alike - the same kinds of
+    nodes (connectors with the same names) in the same order, wired alike, ranked alike by order list and
+    position - have the same graph but for node ids and wire objects, which are put in (a hand-drawn program
+    repeats its rungs; a generated 10,000-network one has two structures). A structure whose analysis
+    reported anything is analysed again for every network, so each gets its own diagnostics."""
+
+    def __init__(self) -> None:
+        self._known: dict[tuple, _Pattern | None] = {}
+
+    def analyse(self, network: fbd.FbdNetwork, report: Report) -> NetworkGraph:
+        structure = _structure(network)
+        if structure is None:
+            return analyse(network, report)
+        key, ids = structure
+        pattern = self._known.get(key, _UNKNOWN)
+        if isinstance(pattern, _Pattern):
+            return pattern.graph(network, ids)
+        reported: list[bool] = []
+
+        def counting(*args, **kwargs) -> None:
+            reported.append(True)
+            report(*args, **kwargs)
+        graph = analyse(network, counting)
+        if pattern is _UNKNOWN:
+            self._known[key] = None if reported else _Pattern.of(graph, network, ids)
+        return graph
+
+
+_UNKNOWN = object()
+
+
+def _structure(network: fbd.FbdNetwork) -> tuple[tuple, list[str]] | None:
+    """A network's structure key and its node ids in node order; None when the ids repeat or the ``order``
+    list names an unknown node (the key would miss what that reports)."""
+    nodes = network.nodes
+    ids = [node.id for node in nodes]
+    index = {node_id: i for i, node_id in enumerate(ids)}
+    if len(index) != len(ids) or network.order and any(node_id not in index for node_id in network.order):
+        return None
+    kinds = tuple(node.type if node.type not in ("connector", "continuation") else (node.type, node.name.upper())
+                  for node in nodes)
+    wires = tuple((index.get(wire.from_.node, -1), wire.from_.pin.upper(), index.get(wire.to.node, -1),
+                   wire.to.pin.upper()) for wire in network.wires)
+    priority = _priorities(network, dict(zip(ids, nodes)), _unreported)
+    ranking = tuple(sorted(range(len(ids)), key=lambda i: priority[ids[i]]))
+    return (kinds, wires, ranking), ids
+
+
+def _unreported(*_args, **_kwargs) -> None:
+    """For a structure key: what the analysis reports, it reports itself."""
+
+
+class _Pattern(NamedTuple):
+    """A network's graph with node positions (in node order) for its ids and wire positions for its wires."""
+
+    inputs: tuple[tuple[int, tuple[tuple[str, int, str, int], ...]], ...]
+    order: tuple[int, ...]
+    feedback: tuple[tuple[int, str], ...]
+    broken: tuple[tuple[int, str], ...]
+
+    @staticmethod
+    def of(graph: NetworkGraph, network: fbd.FbdNetwork, ids: list[str]) -> _Pattern:
+        index = {node_id: i for i, node_id in enumerate(ids)}
+        wire_at = {id(wire): k for k, wire in enumerate(network.wires)}
+        return _Pattern(
+            tuple((index[node], tuple((pin, index[s.node], s.pin, wire_at[id(s.via)]) for pin, s in pins.items()))
+                  for node, pins in graph.inputs.items()),
+            tuple(index[node] for node in graph.order),
+            tuple((index[node], pin) for node, pin in graph.feedback),
+            tuple((index[node], pin) for node, pin in graph.broken))
+
+    def graph(self, network: fbd.FbdNetwork, ids: list[str]) -> NetworkGraph:
+        wires = network.wires
+        return NetworkGraph(
+            dict(zip(ids, network.nodes)),
+            {ids[i]: {pin: Source(ids[j], source_pin, wires[k]) for pin, j, source_pin, k in pins}
+             for i, pins in self.inputs},
+            [ids[i] for i in self.order],
+            {(ids[i], pin) for i, pin in self.feedback},
+            {(ids[i], pin) for i, pin in self.broken})

@@ -22,7 +22,7 @@ from .context import PouContext
 from .diagram_calls import Callee, PinValue, check_call, lower_call, resolve_callee
 from .diagram_checks import canonical_label, check_jump_target, check_labels, check_unique_ids, check_unique_networks
 from .diagram_operands import At, Operands
-from .fbd_order import NetworkGraph, Source, analyse
+from .fbd_order import Analyses, NetworkGraph, Source, analyse
 from .lower_expr import convert
 from .lower_st import fb_output, fb_pins
 from .nodes import (Assign, Binary, Block, Call, Convert, Expr, If, Jump, Origin, Probe, Return, Stmt, Unary, Var,
@@ -40,7 +40,8 @@ def lower_fbd_body(pou: ModelPou, ctx: PouContext) -> list[Block]:
     check_unique_ids(((n.id, node.id) for n in body.networks for node in n.nodes), ctx.report, "FBD")
     labels = check_labels(body.networks, ctx.report, "FBD")
     ops = Operands(ctx, "FBD")
-    return [_Network(ctx, ops, labels, network).lower() for network in body.networks]
+    analyses = Analyses()
+    return [_Network(ctx, ops, labels, network).lower(analyses) for network in body.networks]
 
 
 def evaluation_order(network: fbd.FbdNetwork) -> list[str]:
@@ -61,9 +62,9 @@ class _Network:
         self.origins: dict[str, Origin] = {}
         self.used_pins: dict[str, set[str]] = {}  # producer id -> its output pins that feed something
 
-    def lower(self) -> Block:
+    def lower(self, analyses: Analyses) -> Block:
         self.ops.new_network()
-        self.graph = graph = analyse(self.network, self.ctx.report)
+        self.graph = graph = analyses.analyse(self.network, self.ctx.report)
         for sources in graph.inputs.values():  # once per network, not a scan of all wires per block
             for source in sources.values():
                 self.used_pins.setdefault(source.node, set()).add(source.pin)
