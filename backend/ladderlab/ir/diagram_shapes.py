@@ -11,11 +11,13 @@ alike box's variables into a copy of it. The rules stay the ST checker's and the
 lowering's; this module only decides when two calls are alike and substitutes.
 
 A *leaf* (a value the template generalises): a wire or power-flow slot; a declared
-variable, not CONSTANT, of an elementary type other than STRING, optionally under
+variable, not CONSTANT, of an elementary type other than STRING, or an elementary output
+of an FB instance (``T17.Q``: the key names the FB type and the pin), optionally under
 ``NOT`` (a negated FBD input pin); the FB instance, named by a plain name. A call gets
 no template when the box writes variables through its pins (``Q => y``: the checker's
 verdict on a written variable depends on more than its type), when any other value is
-not a text, or when checking and lowering its placeholder version reported anything.
+neither a text nor a constant, or when checking and lowering its placeholder version
+reported anything.
 """
 
 from __future__ import annotations
@@ -120,6 +122,7 @@ class CallShapes:
         return Shape(key, leaves)
 
     def placeholders(self, shape: Shape, inputs: dict[str, Any], en: Any) -> Placeholders:
+        """The call of ``shape`` with fresh placeholder variables for its leaves (``inputs``/``en``: a box's own)."""
         names = {pin: self._name() for pin in (*shape.leaves, RESULT)}
         values = {pin: self._placeholder(names[pin], leaf) for pin, leaf in shape.leaves.items()}
         instance, eno_wire = values.pop("", None), values.pop("ENO", None)
