@@ -257,14 +257,12 @@ class Operands:
 
     def clean_read(self, text: str) -> tuple[Expr, t.Type] | None:
         """A read operand's IR and type when reading it reports nothing (nothing is reported here), else None."""
-        entry = self._reads.get((text, ""))
-        if entry is None:
-            entry = self._read(text, "", None)
-            if entry[2]:
-                return None  # not kept: its messages would name no element
-            self._reads[(text, "")] = entry
+        entry = self._reads.get((text, "")) or self._read(text, "", None)
         value, ty, diagnostics = entry
-        return None if diagnostics or value is None else (value, ty)
+        if diagnostics or value is None:
+            return None  # (not kept when read here: its messages would name no element)
+        self._reads.setdefault((text, ""), entry)
+        return value, ty
 
     def _read(self, text: str, what: str, expected: t.Type | None) -> tuple[Expr | None, t.Type, list[Diagnostic]]:
         """``st.checker.check_operand``'s steps (type, then assignability to ``expected``) on the quick parse."""

@@ -161,20 +161,24 @@ class CallShapes:
         if named is None or named[0].constant:
             return None
         symbol, member = named
-        if fb and (member is not None or not isinstance(symbol.type, t.FbType)):
-            return None
-        if not fb and (type(symbol.type) is not t.Elementary if member is None else not isinstance(symbol.type, t.FbType)):
+        instance = isinstance(symbol.type, t.FbType)
+        if fb:
+            wanted = member is None and instance
+        else:
+            wanted = instance if member is not None else type(symbol.type) is t.Elementary
+        if not wanted:
             return None
         read = self.ops.clean_read(text)
-        if read is None or not fb and type(read[1]) is not t.Elementary:
+        if read is None:
             return None
         value, ty = read
         if fb:
-            return Leaf(("fb", ty.name.upper(), ty.std is not None), value, ty)  # type: ignore[attr-defined]
+            return Leaf(_fb_key(ty), value, ty)
+        if type(ty) is not t.Elementary:
+            return None
         if member is None:
             return Leaf(("var", *_types(ty, value.type)), value, ty)
-        return Leaf(("pin", symbol.type.name.upper(), symbol.type.std is not None, member.upper(),
-                     *_types(ty, value.type)), value, ty)
+        return Leaf(("pin", *_fb_key(symbol.type), member.upper(), *_types(ty, value.type)), value, ty)
 
     def _name(self) -> str:
         self._count += 1
@@ -189,6 +193,11 @@ class CallShapes:
         negated = ast.Unary("NOT", self.ops.wire_node(*wire))
         negated.ty = leaf.ty
         return negated
+
+
+def _fb_key(ty: t.FbType) -> tuple:
+    """An FB type as part of a shape key: a standard and a user FB may share a name."""
+    return "fb", ty.name.upper(), ty.std is not None
 
 
 def _types(st_type: t.Type, ir_type: IrType) -> tuple:
