@@ -42,7 +42,7 @@ def serve() -> tuple[str, object, object]:
 
     from ladderlab.model import Pou, Project, Task
     from ladderlab.server.app import create_app
-    from ladderlab.server.sim_registry import SimulationRegistry
+    from ladderlab.simulation.registry import SimulationRegistry
     from ladderlab.storage import Workspace
 
     workspace = Workspace(pathlib.Path(tempfile.mkdtemp()) / "workspace")

@@ -26,11 +26,11 @@ import time
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path[:0] = [str(ROOT / "backend"), str(ROOT)]
 
-from ladderlab.build import build_project  # noqa: E402
 from ladderlab.engine.compile import compile_program  # noqa: E402
 from ladderlab.engine.simulation import Simulation  # noqa: E402
 from ladderlab.ir import nodes as ir  # noqa: E402
 from ladderlab.ir import types as t  # noqa: E402
+from ladderlab.simulation.build import build_project  # noqa: E402
 from ladderlab.st.project_text import source_to_project  # noqa: E402
 
 BOOL, INT, TIME = t.Elementary("BOOL"), t.Elementary("INT"), t.Elementary("TIME")

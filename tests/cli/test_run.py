@@ -10,7 +10,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from ladderlab.cli import main
-from ladderlab.runner import SetAction, parse_duration, parse_set
+from ladderlab.cli.run import SetAction, parse_duration, parse_set
 from tests.support import EXAMPLES
 
 TIMER = """PROGRAM Main

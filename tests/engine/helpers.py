@@ -5,7 +5,7 @@ from __future__ import annotations
 import datetime as dt
 import struct
 
-from ladderlab.st.elementary import ELEMENTARY
+from ladderlab.iec.elementary import ELEMENTARY
 
 DAY = 86_400_000
 INT_TYPES = [n for n, t in ELEMENTARY.items() if t.category == "int"]

@@ -13,9 +13,9 @@ from __future__ import annotations
 
 from dataclasses import fields, is_dataclass
 
+from ladderlab.iec.elementary import ELEMENTARY
 from ladderlab.ir import nodes as ir
 from ladderlab.ir import types as t
-from ladderlab.st.elementary import ELEMENTARY
 
 T = {name: t.Elementary(name) for name in ELEMENTARY}
 BOOL, SINT, INT, DINT, LINT = T["BOOL"], T["SINT"], T["INT"], T["DINT"], T["LINT"]

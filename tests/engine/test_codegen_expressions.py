@@ -17,13 +17,40 @@ from hypothesis import strategies as st
 from ladderlab.engine.compile import emit_python
 from ladderlab.engine.simulation import Simulation
 from ladderlab.engine.stdlib import converter, make_function
-from ladderlab.engine.values import f32
+from ladderlab.iec.values import f32
 from ladderlab.ir import nodes as ir
 from ladderlab.ir import types as t
 
 from .helpers import INT_TYPES, int_range, is_float32, reference_wrap
-from .irbuild import (BOOL, DINT, INT, LREAL, REAL, SINT, STRING, T, TIME, UDINT, USINT, add, assign, binop, c, call,
-                      conv, for_, mul, neg, not_, pou, prog, slot, string, sub, v)
+from .irbuild import (
+    BOOL,
+    DINT,
+    INT,
+    LREAL,
+    REAL,
+    SINT,
+    STRING,
+    TIME,
+    UDINT,
+    USINT,
+    T,
+    add,
+    assign,
+    binop,
+    c,
+    call,
+    conv,
+    for_,
+    mul,
+    neg,
+    not_,
+    pou,
+    prog,
+    slot,
+    string,
+    sub,
+    v,
+)
 
 
 def one_scan(slots, statements, paths):

@@ -11,9 +11,48 @@ from ladderlab.ir import nodes as ir
 from ladderlab.ir import types as t
 
 from .helpers import reference_wrap
-from .irbuild import (BOOL, DINT, INT, REAL, TIME, T, UDINT, USINT, add, array, assign, binop, c, call, case, eq,
-                      exit_, fb, fbcall, fncall, for_, function, g, gt, if_, ix, jump, lt, m, mul, network, pou, prog,
-                      repeat, ret, slot, struct, trace, v, while_)
+from .irbuild import (
+    BOOL,
+    DINT,
+    INT,
+    REAL,
+    TIME,
+    UDINT,
+    USINT,
+    T,
+    add,
+    array,
+    assign,
+    binop,
+    c,
+    call,
+    case,
+    eq,
+    exit_,
+    fb,
+    fbcall,
+    fncall,
+    for_,
+    function,
+    g,
+    gt,
+    if_,
+    ix,
+    jump,
+    lt,
+    m,
+    mul,
+    network,
+    pou,
+    prog,
+    repeat,
+    ret,
+    slot,
+    struct,
+    trace,
+    v,
+    while_,
+)
 
 
 def run(program: ir.Program, paths: list[str], scans: int = 1) -> list[tuple]:

@@ -10,8 +10,8 @@ from hypothesis import strategies as st
 
 from ladderlab.engine.errors import INVALID_ARGUMENT, NOT_A_NUMBER, OVERFLOW, TRUNCATED
 from ladderlab.engine.stdlib import STANDARD_FUNCTIONS, convert, converter, make_function
-from ladderlab.engine.values import default_value, resolve
-from ladderlab.st.elementary import ALIASES, ELEMENTARY
+from ladderlab.iec.elementary import ALIASES, ELEMENTARY
+from ladderlab.iec.values import default_value, resolve
 
 from .helpers import BIT_TYPES, DAY, INT_TYPES, date_ms, int_range, ms, reference_wrap
 

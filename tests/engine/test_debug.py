@@ -7,8 +7,33 @@ import pytest
 from ladderlab.engine.compile import emit_python
 from ladderlab.engine.simulation import ProbeView, Simulation
 
-from .irbuild import (BOOL, INT, TIME, add, and_, array, assign, c, call, div, fb, fbcall, function, if_, ix, jump, m,
-                      network, not_, pou, probe, prog, slot, v, while_)
+from .irbuild import (
+    BOOL,
+    INT,
+    TIME,
+    add,
+    and_,
+    array,
+    assign,
+    c,
+    call,
+    div,
+    fb,
+    fbcall,
+    function,
+    if_,
+    ix,
+    jump,
+    m,
+    network,
+    not_,
+    pou,
+    probe,
+    prog,
+    slot,
+    v,
+    while_,
+)
 
 A, B, X, Y = v("A", INT), v("B", INT), v("X", INT), v("Y", INT)
 

@@ -7,8 +7,26 @@ from ladderlab.engine.simulation import Simulation
 from ladderlab.ir import nodes as ir
 from ladderlab.ir import types as t
 
-from .irbuild import (INT, STRING, add, array, assign, c, call, div, fb, fbcall, for_, function, ix, network, pou,
-                      prog, slot, v)
+from .irbuild import (
+    INT,
+    STRING,
+    add,
+    array,
+    assign,
+    c,
+    call,
+    div,
+    fb,
+    fbcall,
+    for_,
+    function,
+    ix,
+    network,
+    pou,
+    prog,
+    slot,
+    v,
+)
 
 
 def _faulted(program, scans=1):

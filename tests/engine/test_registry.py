@@ -156,7 +156,7 @@ def test_result_type_defaults(name, types, args, expected):
 
 
 def test_runtime_has_every_catalogued_function_with_the_same_arity():
-    from ladderlab.st.stdlib import FUNCTIONS
+    from ladderlab.iec.stdlib import FUNCTIONS
 
     assert set(FUNCTIONS) <= set(STANDARD_FUNCTIONS)
     for name, entry in FUNCTIONS.items():
@@ -166,7 +166,7 @@ def test_runtime_has_every_catalogued_function_with_the_same_arity():
 
 def test_runtime_fbs_have_the_catalogued_pins():
     from ladderlab.engine.stdlib import STANDARD_FBS
-    from ladderlab.st.stdlib import FUNCTION_BLOCKS
+    from ladderlab.iec.stdlib import FUNCTION_BLOCKS
 
     for name, entry in FUNCTION_BLOCKS.items():
         cls = STANDARD_FBS[name]

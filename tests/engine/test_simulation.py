@@ -9,8 +9,28 @@ from ladderlab.engine.paths import UnknownPath
 from ladderlab.engine.simulation import Simulation
 from ladderlab.ir import types as t
 
-from .irbuild import (BOOL, DINT, INT, REAL, STRING, TIME, add, array, assign, c, fb, fbcall, g, pou, prog,
-                      slot, string, struct, trace, v)
+from .irbuild import (
+    BOOL,
+    DINT,
+    INT,
+    REAL,
+    STRING,
+    TIME,
+    add,
+    array,
+    assign,
+    c,
+    fb,
+    fbcall,
+    g,
+    pou,
+    prog,
+    slot,
+    string,
+    struct,
+    trace,
+    v,
+)
 
 POINT = struct("POINT", ("X", INT), ("NAME", string(8), "p"))
 COLOR = t.Enum("COLOR", (("RED", 0), ("GREEN", 1), ("BLUE", 5)))

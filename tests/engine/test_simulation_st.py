@@ -6,8 +6,8 @@ These complement the IR-built tests with origins as the lowering produces them
 
 from __future__ import annotations
 
-from ladderlab.build import build_project
 from ladderlab.engine.simulation import Simulation
+from ladderlab.simulation.build import build_project
 from ladderlab.st.project_text import source_to_project
 
 

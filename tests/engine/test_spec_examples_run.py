@@ -13,9 +13,9 @@ import pathlib
 
 import pytest
 
-from ladderlab.build import build_project
 from ladderlab.engine.simulation import Simulation
 from ladderlab.model import Pou, Project
+from ladderlab.simulation.build import build_project
 from ladderlab.st.project_text import source_to_project
 
 DATA = json.loads((pathlib.Path(__file__).parents[1] / "st" / "data" / "spec_examples.json").read_text("utf-8"))

@@ -8,7 +8,8 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from ladderlab.engine.values import (
+from ladderlab.iec.elementary import DEFAULT_STRING_LENGTH
+from ladderlab.iec.values import (
     DT_MAX,
     FLT_MAX,
     INLINE_NAMES,
@@ -23,7 +24,6 @@ from ladderlab.engine.values import (
     wrap_expr,
     wrap_fn,
 )
-from ladderlab.st.elementary import DEFAULT_STRING_LENGTH
 
 from .helpers import BIT_TYPES, DAY, INT_TYPES, date_ms, int_range, is_float32, ms, reference_wrap
 

@@ -6,8 +6,26 @@ import time
 
 from ladderlab.engine.simulation import Simulation
 
-from .irbuild import (BOOL, INT, add, assign, c, call, function, gt, jump, lt, network, pou, prog, repeat, slot, task, v,
-                      while_)
+from .irbuild import (
+    BOOL,
+    INT,
+    add,
+    assign,
+    c,
+    call,
+    function,
+    gt,
+    jump,
+    lt,
+    network,
+    pou,
+    prog,
+    repeat,
+    slot,
+    task,
+    v,
+    while_,
+)
 
 
 class _Ticks:

@@ -11,8 +11,8 @@ from __future__ import annotations
 import math
 import struct
 
-from ladderlab.build import build_project
 from ladderlab.engine.simulation import Simulation
+from ladderlab.simulation.build import build_project
 from ladderlab.st.project_text import source_to_project
 
 _SECONDS = ("DATE", "DT", "DATE_AND_TIME", "LDATE", "LDT")

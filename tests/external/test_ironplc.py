@@ -9,7 +9,7 @@ from __future__ import annotations
 import collections
 import json
 
-from ladderlab.build import build_project
+from ladderlab.simulation.build import build_project
 from ladderlab.st.project_text import source_to_project
 from tests.external.ironplc_cases import _compare, run_case
 from tests.support import PASS_RATES, external

@@ -5,8 +5,27 @@ from __future__ import annotations
 from hypothesis import strategies as st
 
 from ladderlab.model import (
-    Block, Box, Coil, Compare, Contact, FbdBody, FbdNetwork, InputNode, Jump, LdBody, LdNetwork,
-    OutputNode, Parallel, PinFlags, PinRef, Pou, Position, Project, Return, Task, Wire,
+    Block,
+    Box,
+    Coil,
+    Compare,
+    Contact,
+    FbdBody,
+    FbdNetwork,
+    InputNode,
+    Jump,
+    LdBody,
+    LdNetwork,
+    OutputNode,
+    Parallel,
+    PinFlags,
+    PinRef,
+    Position,
+    Pou,
+    Project,
+    Return,
+    Task,
+    Wire,
 )
 
 identifiers = st.from_regex(r"[A-Z][a-z0-9]{0,6}(_[a-z0-9]{1,4})?", fullmatch=True)

@@ -13,9 +13,14 @@ from hypothesis import example, given
 
 from ladderlab.model import Pou, Project
 from ladderlab.storage import (
-    AlreadyExistsError, ConflictError, InvalidNameError, ProjectLoadError, Workspace, load_project_path,
+    AlreadyExistsError,
+    ConflictError,
+    InvalidNameError,
+    ProjectLoadError,
+    Workspace,
+    atomic,
+    load_project_path,
 )
-from ladderlab.storage import atomic
 from tests.support import EXAMPLES
 
 from .strategies import projects

@@ -17,7 +17,7 @@ from ladderlab.ir import diagram_shapes
 from ladderlab.ir.context import PouContext
 from ladderlab.ir.diagram_operands import At, Operands
 from ladderlab.ir.lower_project import lower_project
-from ladderlab.model import fbd, ld
+from ladderlab.model import fbd
 from ladderlab.model.project import Pou
 from ladderlab.st.checker import check_project
 from tests.ir.diagram_support import blk, box, contact, fbd_pou, inp, ld_pou, net, out, project, rung

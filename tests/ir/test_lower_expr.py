@@ -5,15 +5,31 @@ from __future__ import annotations
 from hypothesis import given
 from hypothesis import strategies as st
 
-from ladderlab.engine.values import f32
+from ladderlab.iec.values import f32
 from ladderlab.ir import nodes as ir
+from ladderlab.ir.context import PouContext
+from ladderlab.ir.lower_expr import lower_expr
 from ladderlab.ir.types import Elementary, Enum, Subrange
 from ladderlab.st.checker import check_operand, check_project
 from ladderlab.st.project_text import source_to_project
-from ladderlab.ir.context import PouContext
-from ladderlab.ir.lower_expr import lower_expr
 from tests.ir.helpers import (
-    BOOL, BYTE, DATE, DINT, DT, INT, LREAL, REAL, SINT, STRING, TIME, TOD, WORD, const, errors, local, program_body,
+    BOOL,
+    BYTE,
+    DATE,
+    DINT,
+    DT,
+    INT,
+    LREAL,
+    REAL,
+    SINT,
+    STRING,
+    TIME,
+    TOD,
+    WORD,
+    const,
+    errors,
+    local,
+    program_body,
 )
 
 DECLS = " ".join("""i : INT; j : INT; si : SINT; d : DINT; r : REAL; lr : LREAL; b : BOOL; w : WORD; bt : BYTE;

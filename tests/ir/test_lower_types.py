@@ -6,11 +6,11 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from ladderlab.engine.values import f32
+from ladderlab.iec.elementary import ELEMENTARY
+from ladderlab.iec.values import f32
 from ladderlab.ir.lower_types import LoweringError, ir_type
 from ladderlab.ir.types import Array, Elementary, Enum, FbInstance, Struct, StructField, Subrange
 from ladderlab.st import types as t
-from ladderlab.st.elementary import ELEMENTARY
 from tests.engine.helpers import date_ms, ms
 from tests.ir.helpers import BOOL, DINT, INT, REAL, STRING, TIME, errors, lower_ok
 

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from fastapi.testclient import TestClient
 
-from ladderlab.server.sim_registry import SimulationSettings
+from ladderlab.simulation.registry import SimulationSettings
 from ladderlab.storage import Workspace
 
 from .test_simulations_support import counter_project, entry, install, of_type, recv_until, subscribe, wait_for

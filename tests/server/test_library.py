@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from fastapi.testclient import TestClient
 
-from ladderlab.st import stdlib
+from ladderlab.iec import stdlib
 
 from .helpers import detail
 

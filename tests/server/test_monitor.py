@@ -12,12 +12,22 @@ from fastapi.testclient import TestClient
 from starlette.websockets import WebSocketDisconnect
 
 from ladderlab.model import Project
-from ladderlab.server.sim_registry import SimulationRegistry, SimulationSettings
+from ladderlab.simulation.registry import SimulationRegistry, SimulationSettings
 from ladderlab.storage import Workspace
 
 from .helpers import st_program
 from .test_simulations_support import (
-    counter, counter_project, entry, install, motor_sim, of_type, recv, recv_until, registry, subscribe, wait_for,
+    counter,
+    counter_project,
+    entry,
+    install,
+    motor_sim,
+    of_type,
+    recv,
+    recv_until,
+    registry,
+    subscribe,
+    wait_for,
 )
 
 __all__ = ["counter", "motor_sim", "registry"]  # fixtures used below

@@ -18,7 +18,7 @@ from starlette.testclient import WebSocketTestSession
 
 from ladderlab.server.app import create_app
 from ladderlab.server.monitor import CLIENT_MESSAGE
-from ladderlab.server.sim_runner import SimRunner
+from ladderlab.simulation.runner import SimRunner
 from ladderlab.storage import Workspace
 
 from .test_simulations_support import counter_project, install, recv

@@ -24,7 +24,7 @@ from websockets.sync.client import connect
 
 from ladderlab.model import Project, Task
 from ladderlab.server.app import create_app
-from ladderlab.server.sim_registry import SimulationRegistry
+from ladderlab.simulation.registry import SimulationRegistry
 from ladderlab.storage import Workspace
 
 from .helpers import st_program

@@ -9,8 +9,8 @@ from __future__ import annotations
 
 from fastapi.testclient import TestClient
 
-from ladderlab.build import build_project
-from ladderlab.server.sim_registry import SimulationRegistry
+from ladderlab.simulation.build import build_project
+from ladderlab.simulation.registry import SimulationRegistry
 from ladderlab.storage import Workspace
 
 from .test_simulations_support import entry, motor_sim, of_type, recv, recv_until, registry, subscribe, wait_for

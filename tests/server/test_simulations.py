@@ -7,7 +7,7 @@ import time
 from fastapi.testclient import TestClient
 
 from ladderlab.model import Pou, Project
-from ladderlab.server.sim_registry import SimulationRegistry, SimulationSettings
+from ladderlab.simulation.registry import SimulationRegistry, SimulationSettings
 from ladderlab.storage import Workspace
 
 from .helpers import detail, st_program

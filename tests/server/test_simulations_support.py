@@ -18,7 +18,7 @@ from fastapi.testclient import TestClient
 from starlette.testclient import WebSocketTestSession
 
 from ladderlab.model import Project, Task
-from ladderlab.server.sim_registry import SimulationEntry, SimulationRegistry, SimulationSettings
+from ladderlab.simulation.registry import SimulationEntry, SimulationRegistry, SimulationSettings
 from ladderlab.storage import Workspace
 
 from .helpers import st_program

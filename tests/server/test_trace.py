@@ -7,16 +7,16 @@ import time
 from typing import Any
 
 import pytest
+from fastapi.testclient import TestClient
 from hypothesis import given
 from hypothesis import strategies as st
-from fastapi.testclient import TestClient
 from starlette.testclient import WebSocketTestSession
 
-from ladderlab.build import build_project
 from ladderlab.model import Project, Task
 from ladderlab.model.monitor import MAX_TRACE_SAMPLES, TraceTrigger
-from ladderlab.server.sim_registry import SimulationRegistry
-from ladderlab.server.trace import TraceBook, plan_trace
+from ladderlab.simulation.build import build_project
+from ladderlab.simulation.registry import SimulationRegistry
+from ladderlab.simulation.trace import TraceBook, plan_trace
 from ladderlab.storage import Workspace
 
 from .helpers import st_program

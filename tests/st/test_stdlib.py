@@ -1,6 +1,6 @@
 """The standard function / FB catalogue: IEC pin names, generic families, extensibility (FUN-xx, SFB-xx)."""
 
-from ladderlab.st import stdlib
+from ladderlab.iec import stdlib
 
 
 def test_sfb01_fb_pins_are_the_iec_names():

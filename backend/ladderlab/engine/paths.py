@@ -14,10 +14,10 @@ import re
 from dataclasses import dataclass
 from typing import Iterator
 
+from ..iec import values
+from ..iec.spelling import did_you_mean
 from ..ir import nodes as ir
 from ..ir import types as t
-from ..st.symbols import did_you_mean
-from . import values
 from .codegen import names
 from .codegen.context import ModuleContext, std_fb_class, std_pin_type
 from .codegen.scope import global_owner

@@ -28,6 +28,7 @@ import time
 from dataclasses import dataclass
 from typing import Callable, Iterator
 
+from ..iec.spelling import did_you_mean
 from ..ir import nodes as ir
 from ..ir import types as t
 from .codegen import names
@@ -36,7 +37,6 @@ from .codegen.faults import Fault, make_fault
 from .codegen.runtime import UNSET, Watchdog
 from .compile import CompiledProgram, compile_program
 from .debug import Debugger, Halt
-from ..st.symbols import did_you_mean
 from .paths import Location, LocationReader, Resolver, Roots, UnknownPath, coerce_for, leaves, plain
 from .tasks import Schedule, Task, task_table
 

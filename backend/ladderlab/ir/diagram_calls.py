@@ -16,9 +16,11 @@ import functools
 from dataclasses import dataclass
 from typing import NamedTuple
 
-from ..st import ast, stdlib
+from ..iec import stdlib
+from ..iec.spelling import did_you_mean
+from ..st import ast
 from ..st import types as t
-from ..st.symbols import PouInfo, did_you_mean
+from ..st.symbols import PouInfo
 from .diagram_operands import At, Operands
 from .diagram_shapes import Leaf, Shape, Template
 from .lower_expr import lower_en_eno, std_call, user_call

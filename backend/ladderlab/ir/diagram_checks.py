@@ -12,7 +12,7 @@ import re
 from collections.abc import Iterable
 from typing import Protocol
 
-from ..st.symbols import did_you_mean
+from ..iec.spelling import did_you_mean
 
 _LABEL = re.compile(r"^([A-Za-z_][A-Za-z0-9_]*|[0-9]+)$")
 

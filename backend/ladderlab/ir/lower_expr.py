@@ -19,10 +19,11 @@ Decisions (docs/ir.md, "Lowering of ST and whole projects"):
 
 from __future__ import annotations
 
-from ..engine.stdlib.timefuncs import OPERATOR_OVERLOADS
-from ..st import ast, stdlib
+from ..iec import stdlib
+from ..iec.elementary import DEFAULT_STRING_LENGTH, GENERIC
+from ..iec.stdlib import OPERATOR_OVERLOADS
+from ..st import ast
 from ..st import types as t
-from ..st.elementary import DEFAULT_STRING_LENGTH, GENERIC
 from ..st.rules import EnumValue, constant_value
 from ..st.symbols import PouInfo, Symbol
 from .context import PouContext

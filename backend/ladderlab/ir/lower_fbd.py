@@ -13,11 +13,11 @@ from __future__ import annotations
 
 import re
 
+from ..iec.spelling import did_you_mean
 from ..model import fbd
 from ..model.project import Pou as ModelPou
 from ..st import ast
 from ..st import types as t
-from ..st.symbols import did_you_mean
 from .context import PouContext
 from .diagram_calls import Callee, PinValue, check_call, lower_call, resolve_callee
 from .diagram_checks import canonical_label, check_jump_target, check_labels, check_unique_ids, check_unique_networks
@@ -25,8 +25,23 @@ from .diagram_operands import At, Operands
 from .fbd_order import Analyses, NetworkGraph, Source, analyse
 from .lower_expr import convert
 from .lower_st import fb_output, fb_pins
-from .nodes import (Assign, Binary, Block, Call, Convert, Expr, If, Jump, Origin, Probe, Return, Stmt, Unary, Var,
-                    diagram_origin)
+from .nodes import (
+    Assign,
+    Binary,
+    Block,
+    Call,
+    Convert,
+    Expr,
+    If,
+    Jump,
+    Origin,
+    Probe,
+    Return,
+    Stmt,
+    Unary,
+    Var,
+    diagram_origin,
+)
 from .power import TRUE, coil, edge, not_
 from .types import BOOL
 

@@ -2,7 +2,7 @@
 
 Bodies are lowered by language through ``LOWER_BODY`` (ST here; the LD and FBD
 lowerings register themselves). The diagnostics are the project's whole check
-(``validate_project`` + the ST checker, as ``ladderlab.check``) plus the
+(``validate_project`` + the ST checker, as ``ladderlab.simulation.check``) plus the
 lowering's own; ``program`` is None as soon as any of them is an error.
 
 Tasks: ``project.tasks`` as given; a project without tasks runs every PROGRAM,
@@ -16,13 +16,13 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from ..collector import collector_paused
+from ..iec.literals import decode_duration
 from ..model.diagnostics import Diagnostic, has_errors
 from ..model.project import Pou as ModelPou
 from ..model.project import Project
 from ..model.validate import validate_project
-from ..st.checker import check_project
 from ..st import types as st_types
-from ..st.literals import decode_duration
+from ..st.checker import check_project
 from ..st.symbols import CheckResult, PouInfo, Symbol
 from .context import PouContext
 from .lower_fbd import lower_fbd_body

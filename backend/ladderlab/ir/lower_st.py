@@ -10,8 +10,9 @@ UNTIL conditions) they are refused with ``IR-EN-CALL``.
 
 from __future__ import annotations
 
+from ..iec import stdlib
 from ..model.project import Pou as ModelPou
-from ..st import ast, stdlib
+from ..st import ast
 from ..st import types as t
 from ..st.symbols import PouInfo, Symbol
 from .context import PouContext

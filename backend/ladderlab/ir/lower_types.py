@@ -21,7 +21,7 @@ import functools
 import math
 from typing import Any
 
-from ..engine.values import default_value, f32, store_fn
+from ..iec.values import default_value, f32, store_fn
 from ..st import ast
 from ..st import types as t
 from ..st.body import BodyChecker

@@ -9,7 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Union
 
-from ..st.elementary import DEFAULT_STRING_LENGTH, ELEMENTARY, ElementaryType
+from ..iec.elementary import DEFAULT_STRING_LENGTH, ELEMENTARY, ElementaryType
 
 
 @dataclass(frozen=True)

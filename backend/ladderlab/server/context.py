@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
+import threading
 from datetime import datetime, timezone
 from typing import Annotated
 
-from fastapi import Depends, Request
+from fastapi import Depends, FastAPI, Request
 
+from ..simulation.registry import SimulationRegistry
 from ..storage import Workspace
 
 
@@ -15,6 +17,21 @@ def _workspace(request: Request) -> Workspace:
 
 
 WorkspaceDep = Annotated[Workspace, Depends(_workspace)]
+
+
+def registry_of(app: FastAPI) -> SimulationRegistry:
+    """The app's registry (``app.state.simulations``), created with default settings on first use."""
+    state = app.state
+    registry = getattr(state, "simulations", None)
+    if registry is None:
+        with _CREATE_LOCK:
+            registry = getattr(state, "simulations", None)
+            if registry is None:
+                registry = state.simulations = SimulationRegistry()
+    return registry
+
+
+_CREATE_LOCK = threading.Lock()
 
 
 def modified_at(timestamp: float) -> datetime:

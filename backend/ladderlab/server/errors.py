@@ -20,6 +20,7 @@ from starlette.exceptions import HTTPException
 
 from ..model import Diagnostic
 from ..model.api import ConflictDetail, ErrorDetail
+from ..simulation.registry import RegistryFull, UnknownSimulation
 from ..storage import (
     AlreadyExistsError,
     ConflictError,
@@ -76,6 +77,8 @@ _STORAGE_STATUS: list[tuple[type[StorageError], int]] = [
 
 def install_error_handlers(app: FastAPI) -> None:
     app.add_exception_handler(ApiError, _api_error)
+    app.add_exception_handler(RegistryFull, _simulation_error)
+    app.add_exception_handler(UnknownSimulation, _simulation_error)
     app.add_exception_handler(ConflictError, _conflict)
     app.add_exception_handler(StorageError, _storage_error)
     app.add_exception_handler(RequestValidationError, _request_invalid)
@@ -91,6 +94,11 @@ def _json(status: int, detail: BaseModel, headers: dict[str, str] | None = None)
 async def _api_error(request: Request, exc: Exception) -> JSONResponse:
     assert isinstance(exc, ApiError)
     return _json(exc.status, exc.detail)
+
+
+async def _simulation_error(request: Request, exc: Exception) -> JSONResponse:
+    status = 429 if isinstance(exc, RegistryFull) else 404
+    return _json(status, ErrorDetail(message=str(exc)))
 
 
 async def _conflict(request: Request, exc: Exception) -> JSONResponse:

@@ -10,10 +10,10 @@ from typing import Annotated
 
 from fastapi import APIRouter, Query, Request, Response, status
 
-from ..export.plcopen_export import PlcopenExportError, export_plcopen
-from ..export.plcopen_import import import_plcopen
-from ..export.st_export import export_pou_st
-from ..export.st_project import export_project_st
+from ..interchange.plcopen.exporter import PlcopenExportError, export_plcopen
+from ..interchange.plcopen.importer import import_plcopen
+from ..interchange.st.export import export_pou_st
+from ..interchange.st.project import export_project_st
 from ..model import has_errors
 from ..model.api import ImportReport, ProjectSummary, SourceMapEntry, StExport
 from ..storage.names import check_project_name

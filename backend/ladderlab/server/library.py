@@ -10,9 +10,9 @@ from functools import cache
 
 from fastapi import APIRouter, Query
 
+from ..iec import stdlib
 from ..model import Project
 from ..model.api import LibraryEntry, Pin
-from ..st import stdlib
 from ..st.checker import check_project as check_st
 from ..st.printer import print_type
 from ..st.symbols import Symbol

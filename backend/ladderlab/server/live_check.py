@@ -10,9 +10,9 @@ from __future__ import annotations
 
 from fastapi import APIRouter
 
-from ..check import check_project
 from ..model import Project
 from ..model.api import CheckReport
+from ..simulation.check import check_project
 from .errors import responses
 from .limits import LimitsDep, check_project_size
 

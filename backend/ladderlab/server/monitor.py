@@ -33,9 +33,9 @@ from starlette.websockets import WebSocketDisconnect
 
 from ..ir import types as t
 from ..model import monitor as m
-from .errors import ApiError
-from .sim_registry import SimulationEntry, SimulationSettings, registry_of
-from .sim_runner import CommandError, Frame, SimRunner, Watch
+from ..simulation.registry import SimulationEntry, SimulationSettings, UnknownSimulation
+from ..simulation.runner import CommandError, Frame, SimRunner, Watch
+from .context import registry_of
 
 log = logging.getLogger(__name__)
 
@@ -68,8 +68,8 @@ async def monitor(websocket: WebSocket, sim_id: str) -> None:
     await websocket.accept()
     try:
         entry = registry.get(sim_id)
-    except ApiError as error:
-        refusal = m.Error(type="error", code="bad_path", message=error.detail.message)
+    except UnknownSimulation as error:
+        refusal = m.Error(type="error", code="bad_path", message=str(error))
         await websocket.send_text(refusal.model_dump_json())
         await websocket.close(code=CLOSE_NO_SIMULATION, reason="no such simulation")
         return

@@ -11,11 +11,11 @@ from typing import Annotated
 
 from fastapi import APIRouter, Header, Response, status
 
-from ..check import check_project
 from ..examples import EXAMPLES_DIR
 from ..model import Diagnostic, Pou, Project
 from ..model.api import CheckReport, CreateProject, ProjectDocument, ProjectSummary, RenameProject, SaveResult
 from ..model.validate import validate_project
+from ..simulation.check import check_project
 from ..storage import ConflictError, NotFoundError, Workspace
 from ..storage.names import check_project_name
 from ..storage.project_folder import PROJECT_FILE, read_project_folder

@@ -11,13 +11,13 @@ from typing import Annotated
 
 from fastapi import APIRouter, Body, Depends, Request, Response, status
 
-from ..build import build_project
 from ..model import has_errors
 from ..model.api import ResetSimulation, ScanTimes, SimulationInfo
-from .context import WorkspaceDep, modified_at
+from ..simulation.build import build_project
+from ..simulation.registry import SimulationEntry, SimulationRegistry
+from ..simulation.runner import CommandError, SimRunner
+from .context import WorkspaceDep, modified_at, registry_of
 from .errors import ApiError, responses, summarise
-from .sim_registry import SimulationEntry, SimulationRegistry, registry_of
-from .sim_runner import CommandError, SimRunner
 
 router = APIRouter(tags=["simulations"])
 

@@ -9,12 +9,15 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from typing import Any
-from . import ast, stdlib
+
+from ..iec import stdlib
+from ..iec.spelling import did_you_mean
+from . import ast
 from . import types as t
 from .calls import check_call
 from .cases import check_case
 from .rules import EnumValue, assignable_or_report, constant_value, root_name
-from .symbols import CheckResult, PouInfo, Symbol, did_you_mean
+from .symbols import CheckResult, PouInfo, Symbol
 from .types import ERROR, Type
 
 Report = Callable[..., None]  # report(code, message, node, severity="error")

@@ -11,11 +11,13 @@ import functools
 from dataclasses import dataclass
 from typing import Any
 
-from . import ast, stdlib
+from ..iec import stdlib
+from ..iec.spelling import did_you_mean
+from . import ast
 from . import types as t
 from .printer import print_expression
 from .rules import assignable_or_report, root_name
-from .symbols import PouInfo, Symbol, did_you_mean
+from .symbols import PouInfo, Symbol
 from .types import ERROR, VOID, Type
 
 _SYSTEM = {"ADR", "REF", "SIZEOF"}

@@ -10,15 +10,17 @@ from __future__ import annotations
 
 from typing import Any
 
+from ..iec import stdlib
+from ..iec.spelling import did_you_mean
 from ..model.diagnostics import Diagnostic
 from ..model.names import pou_name_problem
 from ..model.project import Project
-from . import ast, stdlib
+from . import ast
 from . import types as t
 from .body import BodyChecker
 from .parser import parse_declarations, parse_expression, parse_source, parse_statements
 from .rules import assignable_or_report, constant_value
-from .symbols import CheckResult, PouInfo, Symbol, TypeDef, did_you_mean
+from .symbols import CheckResult, PouInfo, Symbol, TypeDef
 from .types import ERROR, Type
 
 _KIND = {"program": "PROGRAM", "function_block": "FUNCTION_BLOCK", "function": "FUNCTION"}

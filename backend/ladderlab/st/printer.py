@@ -7,8 +7,8 @@ exporter prints through this module.
 
 from __future__ import annotations
 
+from ..iec.literals import encode_string, encode_time_literal
 from . import ast
-from .literals import encode_string, encode_time_literal
 
 INDENT = "    "
 

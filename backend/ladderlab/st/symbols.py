@@ -2,9 +2,7 @@
 
 from __future__ import annotations
 
-import difflib
 from dataclasses import dataclass, field
-from typing import Any
 
 from ..model.diagnostics import Diagnostic
 from . import ast
@@ -77,10 +75,3 @@ class CheckResult:
 
     def pou(self, name: str) -> PouInfo | None:
         return self.pous.get(name.upper())
-
-
-def did_you_mean(name: str, candidates: Any) -> str:
-    """`` - did you mean 'Start'?`` for the closest candidate (case-insensitive), or ''."""
-    by_upper = {c.upper(): c for c in candidates}
-    match = difflib.get_close_matches(name.upper(), list(by_upper), n=1, cutoff=0.6)
-    return f" - did you mean '{by_upper[match[0]]}'?" if match else ""

@@ -12,8 +12,8 @@ from typing import Any
 
 from lark import Token, Transformer
 
+from ..iec.literals import decode_integer, decode_real, decode_string, decode_time_literal
 from . import ast
-from .literals import decode_integer, decode_real, decode_string, decode_time_literal
 
 
 class StSyntaxError(Exception):

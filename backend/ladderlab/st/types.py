@@ -12,7 +12,7 @@ import functools
 from dataclasses import dataclass, field
 from typing import Any
 
-from .elementary import ELEMENTARY, GENERIC, ElementaryType, canonical_type_name
+from ..iec.elementary import ELEMENTARY, GENERIC, ElementaryType, canonical_type_name
 
 
 class Type:

@@ -1,7 +1,7 @@
 // Which wires the editor accepts: an output may feed an input when some type the output can carry
 // is the input's type or widens to it losslessly (st/types.py `assignable`: SINT -> INT -> DINT,
 // USINT -> UINT, unsigned -> wider signed, BYTE -> WORD, REAL -> LREAL). Generic families
-// (ANY_NUM, ANY_BIT, ...) stand for their members (st/elementary.py GENERIC). Types the editor
+// (ANY_NUM, ANY_BIT, ...) stand for their members (iec/elementary.py GENERIC). Types the editor
 // cannot resolve (user types, arrays, unknown variables) are accepted: the backend's check has
 // the last word, the editor only refuses what can never type-check.
 import type { SymbolInfo } from "../generated/api";

@@ -1,6 +1,6 @@
 // The trace panel (zustand): the variables to trace (at most 20), the trigger, the buffer size,
 // and the trace being recorded. The server samples every scan and streams `trace_data` chunks
-// (backend/ladderlab/server/trace.py); this store appends them to its ring buffer, which keeps the
+// (backend/ladderlab/simulation/trace.py); this store appends them to its ring buffer, which keeps the
 // newest `capacity` samples. The ring is mutated in place: `version` counts the changes, so views
 // re-render on it. Sending and hearing the monitor socket are injected so tests drive the store.
 import { useStore } from "zustand";

@@ -1,6 +1,6 @@
 // The trace trigger as the panel edits it (a path, a condition, a level typed as text) and the
 // `trigger` of `trace_start` it becomes. The server evaluates the trigger after every scan
-// (backend/ladderlab/server/trace.py); here the form is checked so a mistake is named at once.
+// (backend/ladderlab/simulation/trace.py); here the form is checked so a mistake is named at once.
 import type { TraceTrigger } from "../generated/monitor";
 
 export type Condition = NonNullable<TraceTrigger["condition"]>;

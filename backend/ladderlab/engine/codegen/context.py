@@ -6,10 +6,10 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 from typing import Callable
 
+from ...iec import stdlib as catalogue
 from ...ir import nodes as ir
 from ...ir import types as t
 from ...model.diagnostics import Diagnostic
-from ...st import stdlib as catalogue
 from ..stdlib import STANDARD_FBS
 from . import names
 from .layout import Layout

@@ -13,9 +13,9 @@ import math
 import re
 from functools import lru_cache
 
+from ...iec import values
 from ...ir import nodes as ir
 from ...ir import types as t
-from .. import values
 from ..stdlib import specialised
 from . import names
 from .context import CodegenError, std_fb_class, std_pin_type

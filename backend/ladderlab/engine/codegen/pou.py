@@ -20,13 +20,13 @@ from contextlib import nullcontext
 from ...ir import nodes as ir
 from ...ir import types as t
 from . import names
-from .constructors import construct
-from .deferred import deferred_probes
-from .context import CodegenError, ModuleContext, diagnostic
-from .mentions import calls_in, own_expressions, walk
 from .chunks import ChunkPlan
 from .chunks import plan as chunk_plan
+from .constructors import construct
+from .context import CodegenError, ModuleContext, diagnostic
+from .deferred import deferred_probes
 from .layout import slots_source
+from .mentions import calls_in, own_expressions, walk
 from .scope import Scope
 from .source import Source
 from .statements import Statements

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 from contextlib import nullcontext
 
+from ...iec.values import store_expr
 from ...ir import nodes as ir
 from ...ir import types as t
 from . import names
@@ -22,7 +23,6 @@ from .chunks import ChunkPlan
 from .context import CodegenError, diagnostic, std_fb_class
 from .expressions import Expressions, literal
 from .mentions import calls_in, expression_vars, walk
-from ..values import store_expr
 from .runtime import UNSET, WATCHDOG_EVERY
 from .scope import Scope
 from .source import Source

@@ -8,8 +8,8 @@ when the target is a subrange (checked on every store).
 
 from __future__ import annotations
 
+from ...iec import values
 from ...ir import types as t
-from .. import values
 
 COMPOSITE = (t.Array, t.Struct, t.FbInstance)
 

@@ -20,13 +20,14 @@ from dataclasses import dataclass
 from functools import lru_cache
 from typing import Callable
 
+from ...iec.stdlib import OPERATOR_OVERLOADS
 from ..errors import PlcRuntimeError, PlcWarning
 from . import functions as f
 from .build import HELPERS, Impl, Specialised, specialise
 from .conversions import conversion_function, conversion_names, convert, converter
 from .fbs import STANDARD_FBS, FunctionBlock, pins
 from .strings import concat, find_position, length, positional
-from .timefuncs import OPERATOR_OVERLOADS, TIME_FUNCTIONS
+from .timefuncs import TIME_FUNCTIONS
 
 Implement = Callable[[tuple[str, ...], "str | None"], Impl]
 

@@ -25,8 +25,8 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 from typing import Callable, Mapping
 
+from ...iec.values import INLINE_NAMES, resolve, store_expr
 from ..errors import DOMAIN, INVALID_ARGUMENT, OVERFLOW, TRUNCATED, PlcWarning
-from ..values import INLINE_NAMES, resolve, store_expr
 
 #: Globals available to every Impl expression and inline template (module helpers register here).
 HELPERS: dict[str, object] = dict(INLINE_NAMES)

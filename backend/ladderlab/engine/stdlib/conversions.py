@@ -19,12 +19,12 @@ from __future__ import annotations
 from functools import lru_cache
 from typing import Callable
 
-from ...st.elementary import ALIASES, ELEMENTARY
+from ...iec.elementary import ALIASES, ELEMENTARY
+from ...iec.value_text import format_value, parse
+from ...iec.values import MS_PER_DAY, TypeRef, default_value, resolve, value_range
 from ..errors import NOT_A_NUMBER, PlcWarning
-from ..values import MS_PER_DAY, TypeRef, default_value, resolve, value_range
 from .build import HELPERS, Impl, finite_args, specialise
 from .functions import reject
-from .literals import format_value, parse
 
 
 def floor_day(ms: int) -> int:

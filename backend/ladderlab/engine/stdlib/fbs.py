@@ -23,8 +23,8 @@ Decisions where implementations differ, each pinned by a test:
 
 from __future__ import annotations
 
-from ..values import resolve
-from ...st.stdlib import TYPED_COUNTER_TYPES
+from ...iec.stdlib import TYPED_COUNTER_TYPES
+from ...iec.values import resolve
 
 
 class FunctionBlock:

@@ -10,8 +10,8 @@ from __future__ import annotations
 
 import math
 
+from ...iec.values import resolve
 from ..errors import division_by_zero, index_out_of_range
-from ..values import resolve
 from .build import HELPERS, Impl, finite_args
 
 _INF, _NAN = math.inf, math.nan

@@ -13,8 +13,8 @@ zero like integer DIV (FUN-31). Dividing by zero is a fault.
 
 from __future__ import annotations
 
+from ...iec.values import value_range
 from ..errors import division_by_zero
-from ..values import value_range
 from .build import HELPERS, Impl, finite_args
 from .functions import categories, reject, round_half_even
 
@@ -47,18 +47,6 @@ _FIXED: dict[str, tuple[tuple[str, ...], str, str, str | None]] = {
     "CONCAT_DATE_TOD": (("date", "tod"), "a0 + a1", "DATE_AND_TIME", None),
 }
 
-# (operator, argument categories) -> the function behind + - * / on time operands (FUN-85, ST-21)
-OPERATOR_OVERLOADS: dict[tuple[str, tuple[str, ...]], str] = {
-    (name[:3], cats): name for name, (cats, *_) in _FIXED.items() if name[:3] in ("ADD", "SUB")
-}
-OPERATOR_OVERLOADS.update(
-    {
-        ("MUL", ("time", "int")): "MUL_TIME",
-        ("MUL", ("time", "real")): "MUL_TIME",
-        ("DIV", ("time", "int")): "DIV_TIME",
-        ("DIV", ("time", "real")): "DIV_TIME",
-    }
-)
 
 
 def fixed(name: str):

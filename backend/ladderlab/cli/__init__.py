@@ -1,0 +1,238 @@
+"""The ``ladderlab`` command line: serve, check, run, compile, export, import, schema."""
+
+from __future__ import annotations
+
+import argparse
+import ipaddress
+import json
+import os
+import sys
+from pathlib import Path
+
+from ..engine.codegen import VARIANTS
+from ..model import has_errors
+from ..model.schema import SCHEMA_MODELS, schema_of
+from ..simulation.build import build_project
+from ..simulation.check import check_project
+from ..storage import StorageError, load_project_path
+from ..storage.atomic import write_atomic
+from .run import jsonl_line, parse_duration, parse_set, run_scans, table_lines
+
+EXIT_OK, EXIT_ERRORS, EXIT_USAGE, EXIT_RUNTIME = 0, 1, 2, 3
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = _parser().parse_args(argv)
+    try:
+        return args.func(args)
+    except StorageError as err:
+        for diagnostic in err.diagnostics:
+            print(diagnostic.format(), file=sys.stderr)
+        return EXIT_USAGE
+
+
+def _parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="ladderlab", description="IEC 61131-3 LD/FBD/ST editor and simulator")
+    sub = parser.add_subparsers(dest="command", required=True)
+
+    serve = sub.add_parser("serve", help="start the web app and API server")
+    serve.add_argument("--host", default="127.0.0.1")
+    serve.add_argument("--port", type=int, default=8000)
+    serve.add_argument("--workspace", type=Path, default=None,
+                       help="project folder (default: $LADDERLAB_WORKSPACE or ./workspace)")
+    serve.add_argument("--allow-remote", action="store_true",
+                       help="required to bind to an address other than loopback")
+    serve.set_defaults(func=_serve)
+
+    check = sub.add_parser("check", help="load and check a project, print diagnostics")
+    check.add_argument("project", type=Path, help="project folder, project .json file or .st file")
+    check.add_argument("--format", choices=["text", "json"], default="text")
+    check.set_defaults(func=_check)
+
+    run = sub.add_parser("run", help="run a project on the virtual clock and print watched values per scan")
+    run.add_argument("project", type=Path, help="project folder, project .json file or .st file")
+    length = run.add_mutually_exclusive_group()
+    length.add_argument("--cycles", type=int, default=None, metavar="N", help="number of scans (default 1)")
+    length.add_argument("--for", dest="for_", default=None, metavar="DURATION",
+                        help="run every scan due within this virtual time, e.g. 2s or T#500ms")
+    run.add_argument("--set", dest="sets", action="append", default=[], metavar="PATH=VALUE[@SCAN]",
+                     help="write VALUE (IEC literal) to PATH before scan SCAN (default 0); repeatable")
+    run.add_argument("--watch", action="append", default=[], metavar="PATH",
+                     help="print this variable after every scan (MAIN.x, GVL.y, y, MAIN.T1.Q, MAIN.a[3]); "
+                          "default: every variable")
+    run.add_argument("--format", choices=["table", "jsonl"], default="table")
+    run.set_defaults(func=_run)
+
+    compile_ = sub.add_parser("compile", help="check and compile a project; optionally print the generated Python")
+    compile_.add_argument("project", type=Path, help="project folder, project .json file or .st file")
+    compile_.add_argument("--emit-python", action="store_true", help="print the generated Python module")
+    compile_.add_argument("--variant", choices=list(VARIANTS), default="fast")
+    compile_.set_defaults(func=_compile)
+
+    export = sub.add_parser("export", help="export a project as PLCopen XML or IEC ST text")
+    export.add_argument("format", choices=["plcopen", "st"])
+    export.add_argument("project", type=Path, help="project folder, project .json file or .st file")
+    export.add_argument("--pou", default=None, help="st: only this POU (default: the whole project)")
+    export.add_argument("-o", "--output", type=Path, default=None, help="file to write (default: standard output)")
+    export.set_defaults(func=_export)
+
+    import_ = sub.add_parser("import", help="import a PLCopen XML project into a workspace")
+    import_.add_argument("format", choices=["plcopen"])
+    import_.add_argument("file", type=Path)
+    import_.add_argument("--into", type=Path, default=None,
+                         help="workspace folder (default: $LADDERLAB_WORKSPACE or ./workspace)")
+    import_.add_argument("--name", default=None, help="project name (default: the document's, else the file name)")
+    import_.set_defaults(func=_import)
+
+    schema = sub.add_parser("schema", help="print the JSON Schema of the project model")
+    schema.add_argument("--name", choices=sorted(SCHEMA_MODELS), default="project.schema.json")
+    schema.set_defaults(func=_schema)
+    return parser
+
+
+def _check(args: argparse.Namespace) -> int:
+    project = load_project_path(args.project)
+    diagnostics = check_project(project)
+    if args.format == "json":
+        print(json.dumps([d.model_dump(exclude_none=True) for d in diagnostics], indent=2))
+    else:
+        for diagnostic in diagnostics:
+            print(diagnostic.format())
+        errors = sum(d.severity == "error" for d in diagnostics)
+        print(f"{project.name}: {len(project.pous)} POUs, {errors} errors, {len(diagnostics) - errors} warnings")
+    return EXIT_ERRORS if has_errors(diagnostics) else EXIT_OK
+
+
+def _build(args: argparse.Namespace, variant: str = "fast"):
+    """Load and build the project; prints the diagnostics and returns None when it has errors."""
+    project = load_project_path(args.project)
+    build = build_project(project, variant)
+    for diagnostic in build.diagnostics:
+        print(diagnostic.format(), file=sys.stderr)
+    return build if build.compiled is not None else None
+
+
+def _run(args: argparse.Namespace) -> int:
+    try:
+        sets = [parse_set(text) for text in args.sets]
+        for_ms = parse_duration(args.for_) if args.for_ is not None else None
+    except ValueError as error:
+        print(f"ladderlab run: {error}", file=sys.stderr)
+        return EXIT_USAGE
+    build = _build(args)
+    if build is None:
+        return EXIT_ERRORS
+    sim = build.simulation()
+    watch = args.watch or list(sim.snapshot())
+    cycles = args.cycles if args.cycles is not None or for_ms is not None else 1
+    rows = run_scans(sim, watch=watch, sets=sets, cycles=cycles, for_ms=for_ms)
+    try:
+        lines = (jsonl_line(row) for row in rows) if args.format == "jsonl" else table_lines(rows, watch)
+        for line in lines:
+            print(line)
+    except (KeyError, ValueError) as error:  # unknown path, value that does not fit its variable
+        print(f"ladderlab run: {error.args[0] if error.args else error}", file=sys.stderr)
+        return EXIT_USAGE
+    if sim.fault is not None:
+        print(sim.fault.diagnostic().format(), file=sys.stderr)
+        return EXIT_RUNTIME
+    return EXIT_OK
+
+
+def _compile(args: argparse.Namespace) -> int:
+    build = _build(args, args.variant)
+    if build is None:
+        return EXIT_ERRORS
+    if args.emit_python:
+        print(build.compiled.source)
+    return EXIT_OK
+
+
+def _export(args: argparse.Namespace) -> int:
+    from ..interchange.plcopen.exporter import PlcopenExportError, export_plcopen
+
+    project = load_project_path(args.project)
+    if args.format == "plcopen":
+        if args.pou is not None:
+            print("ladderlab export plcopen: --pou applies to st only", file=sys.stderr)
+            return EXIT_USAGE
+        try:
+            data = export_plcopen(project)
+        except PlcopenExportError as error:
+            for diagnostic in error.diagnostics:
+                print(diagnostic.format(), file=sys.stderr)
+            return EXIT_ERRORS
+    else:
+        data = _st_export(project, args.pou)
+        if data is None:
+            return EXIT_ERRORS
+    if args.output is None:
+        sys.stdout.write(data.decode("utf-8"))
+    else:
+        write_atomic(args.output, data)
+    return EXIT_OK
+
+
+def _st_export(project, pou: str | None) -> bytes | None:
+    from ..interchange.st.export import export_pou_st
+    from ..interchange.st.project import export_project_st
+
+    result = export_pou_st(project, pou) if pou is not None else export_project_st(project)
+    for diagnostic in result.diagnostics:
+        print(diagnostic.format(), file=sys.stderr)
+    return None if has_errors(result.diagnostics) else result.text.encode("utf-8")
+
+
+def _import(args: argparse.Namespace) -> int:
+    from ..interchange.plcopen.importer import import_plcopen
+    from ..storage import Workspace
+
+    if not args.file.is_file():
+        print(f"{args.file}: error BAD-PATH: no such file", file=sys.stderr)
+        return EXIT_USAGE
+    result = import_plcopen(args.file.read_bytes(), name=args.name, file=args.file.name)
+    for diagnostic in result.diagnostics:
+        print(diagnostic.format(), file=sys.stderr)
+    if result.project is None or has_errors(result.diagnostics):
+        return EXIT_ERRORS
+    workspace = Workspace(args.into or Path(os.environ.get("LADDERLAB_WORKSPACE", "workspace")))
+    workspace.create(result.project)
+    print(f"imported {result.project.name!r} ({len(result.project.pous)} POUs) into {workspace.root}")
+    return EXIT_OK
+
+
+def _schema(args: argparse.Namespace) -> int:
+    print(json.dumps(schema_of(SCHEMA_MODELS[args.name]), indent=2, sort_keys=True))
+    return EXIT_OK
+
+
+def _is_loopback(host: str) -> bool:
+    if host == "localhost":
+        return True
+    try:
+        return ipaddress.ip_address(host).is_loopback
+    except ValueError:
+        return False
+
+
+def _serve(args: argparse.Namespace) -> int:
+    import uvicorn
+
+    from ..examples import seed_workspace
+    from ..server.app import create_app
+    from ..storage import Workspace
+
+    if not _is_loopback(args.host):
+        if not args.allow_remote:
+            print(f"refusing to bind to {args.host}: pass --allow-remote to serve other machines", file=sys.stderr)
+            return EXIT_USAGE
+        print(f"WARNING: serving on {args.host}; anyone who can reach it can edit and run projects",
+              file=sys.stderr)
+    workspace = Workspace(args.workspace or Path(os.environ.get("LADDERLAB_WORKSPACE", "workspace")))
+    seeded = seed_workspace(workspace)
+    if seeded:
+        print(f"workspace was empty: added the example project {seeded!r}")
+    print(f"LadderLab on http://{args.host}:{args.port}/ (workspace {workspace.root})")
+    uvicorn.run(create_app(workspace), host=args.host, port=args.port, log_level="warning")
+    return EXIT_OK
+

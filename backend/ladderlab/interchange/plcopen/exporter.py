@@ -1,0 +1,156 @@
+"""Project -> PLCopen XML (TC6 v2.01) document.
+
+Sections: ``types/dataTypes`` from the project's TYPE blocks, ``types/pous`` with
+each POU's typed interface (declarations parsed by the ST parser) and body (ST
+text in ``<ST><xhtml:p>``, LD and FBD graphs from ``plcopen_ld_export`` and
+``plcopen_fbd_export``), and ``instances/configurations`` with the project's
+global variables and tasks (one configuration ``config`` with one resource
+``resource``; a task's programs are ``pouInstance``s named after the program, the
+IR's instance naming).
+
+The original declaration, type and global texts also travel verbatim in
+LadderLab's addData, so LadderLab reads its own files back to the same text
+(comments and layout included) as long as the typed XML still says the same.
+"""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+from datetime import UTC, datetime
+
+from ... import __version__
+from ...model.diagnostics import Diagnostic
+from ...model.fbd import FbdBody
+from ...model.ld import LdBody
+from ...model.project import Pou, Project
+from ...st import ast
+from ...st.parser import parse_declarations, parse_source
+from .blocks import Signatures
+from .body import NETWORK_GAP, Counter, write_network_list
+from .fbd_export import FbdExporter
+from .ld_export import LdExporter
+from .vars import parse_type_text, write_data_type, write_type, write_var_list
+from .xml_io import formatted_text, ladderlab_data, q, sub, to_bytes
+
+POU_TYPE = {"program": "program", "function_block": "functionBlock", "function": "function"}
+CONFIGURATION = "config"
+RESOURCE = "resource"
+
+
+class PlcopenExportError(Exception):
+    """The project cannot be written as PLCopen XML (e.g. declarations that do not parse); see ``diagnostics``."""
+
+    def __init__(self, diagnostics: list[Diagnostic]):
+        super().__init__("; ".join(d.format() for d in diagnostics))
+        self.diagnostics = diagnostics
+
+
+def export_plcopen(project: Project, *, now: datetime | None = None) -> bytes:
+    """The project as a UTF-8 PLCopen XML document; raises ``PlcopenExportError`` with located diagnostics."""
+    return _Exporter(project).document(now or datetime.now(UTC))
+
+
+class _Exporter:
+    def __init__(self, project: Project):
+        self.project = project
+        self.signatures = Signatures(project.pous)
+        self.problems: list[Diagnostic] = []
+
+    def document(self, now: datetime) -> bytes:
+        stamp = now.replace(microsecond=0, tzinfo=None).isoformat()
+        root = ET.Element(q("project"))
+        sub(root, "fileHeader", {"companyName": "LadderLab", "productName": "LadderLab",
+                                 "productVersion": __version__, "creationDateTime": stamp})
+        content = sub(root, "contentHeader", {"name": self.project.name, "modificationDateTime": stamp})
+        coordinates = sub(content, "coordinateInfo")
+        for language in ("fbd", "ld", "sfc"):
+            sub(sub(coordinates, language), "scaling", {"x": 1, "y": 1})
+        types = sub(root, "types")
+        data_types = sub(types, "dataTypes")
+        for decl in self.type_decls():
+            write_data_type(data_types, decl)
+        pous = sub(types, "pous")
+        for pou in self.project.pous:
+            self.pou(pous, pou)
+        self.instances(sub(root, "instances"))
+        ladderlab_data(root, {"format": self.project.format},
+                       {"types": self.project.types, "globals": self.project.globals})
+        if self.problems:
+            raise PlcopenExportError(self.problems)
+        return to_bytes(root)
+
+    # ------------------------------------------------------------ texts
+
+    def type_decls(self) -> list[ast.TypeDecl]:
+        parsed = parse_source(self.project.types, file="types.st")
+        self.problems += [d for d in parsed.diagnostics if d.severity == "error"]
+        items = parsed.ast.items if parsed.ast is not None else []
+        return [decl for item in items if isinstance(item, ast.TypeBlock) for decl in item.decls]
+
+    def var_blocks(self, text: str, pou: str | None, file: str | None = None) -> list[ast.VarBlock]:
+        parsed = parse_declarations(text, pou=pou, file=file)
+        self.problems += [d for d in parsed.diagnostics if d.severity == "error"]
+        return parsed.ast or []
+
+    # ------------------------------------------------------------ POUs
+
+    def pou(self, parent: ET.Element, pou: Pou) -> None:
+        node = sub(parent, "pou", {"name": pou.name, "pouType": POU_TYPE[pou.kind]})
+        interface = sub(node, "interface")
+        if pou.kind == "function":
+            spec = parse_type_text(pou.return_type or "")
+            if spec is None:
+                self.problems.append(Diagnostic(code="PLCOPEN-EXPORT", pou=pou.name,
+                                                message=f"the return type '{pou.return_type}' is not a type"))
+            else:
+                write_type(sub(interface, "returnType"), spec)
+        for block in self.var_blocks(pou.declarations, pou.name):
+            write_var_list(interface, block)
+        ladderlab_data(interface, {"returnType": pou.return_type}, {"declarations": pou.declarations})
+        body = sub(node, "body")
+        if isinstance(pou.body, LdBody):
+            self.ld_body(body, pou)
+        elif isinstance(pou.body, FbdBody):
+            self.fbd_body(body, pou)
+        else:
+            formatted_text(body, "ST", pou.body)
+
+    def ld_body(self, body: ET.Element, pou: Pou) -> None:
+        exporter = LdExporter(sub(body, "LD"), self.signatures, Counter())
+        top, listing = 0.0, []
+        for network in pou.body.networks:
+            listing.append((network.id, top, None))
+            top = exporter.network(network, top) + NETWORK_GAP
+        write_network_list(body, listing)
+
+    def fbd_body(self, body: ET.Element, pou: Pou) -> None:
+        exporter = FbdExporter(sub(body, "FBD"), self.signatures, Counter(), pou.name)
+        top, listing = 0.0, []
+        for network in pou.body.networks:
+            offset, bottom = exporter.network(network, top)
+            listing.append((network.id, offset, network.order))
+            top = bottom + NETWORK_GAP
+        self.problems += exporter.problems
+        write_network_list(body, listing)
+
+    # ------------------------------------------------------------ configuration
+
+    def instances(self, parent: ET.Element) -> None:
+        configurations = sub(parent, "configurations")
+        globals_ = self.var_blocks(self.project.globals, None, "globals.st")
+        if not globals_ and not self.project.tasks:
+            return
+        configuration = sub(configurations, "configuration", {"name": CONFIGURATION})
+        if self.project.tasks:
+            resource = sub(configuration, "resource", {"name": RESOURCE})
+            for i, task in enumerate(self.project.tasks):
+                if not 0 <= task.priority <= 65535:
+                    self.problems.append(Diagnostic(code="PLCOPEN-EXPORT", json_path=f"$.tasks[{i}].priority",
+                                                    message=f"task {task.name}: PLCopen priorities are 0..65535, "
+                                                            f"not {task.priority}"))
+                node = sub(resource, "task", {"name": task.name, "interval": task.interval,
+                                              "priority": task.priority})
+                for program in task.programs:
+                    sub(node, "pouInstance", {"name": program, "typeName": program})
+        for block in globals_:
+            write_var_list(configuration, block)

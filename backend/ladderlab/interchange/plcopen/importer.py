@@ -1,0 +1,326 @@
+"""PLCopen XML (TC6 v2.01, and the near-identical 2.00) -> Project, with located diagnostics.
+
+Reads a whole ``<project>`` or a single ``<pou>`` document (RuSTy's CFC files).
+Declarations become ST text printed from the typed XML (``plcopen_vars``), ST
+bodies stay text, LD and FBD bodies go through ``plcopen_ld_import`` and
+``plcopen_fbd_import``; data types, global variables (of every configuration and
+resource) and tasks fill the project's TYPE text, VAR_GLOBAL text and task list.
+
+Never raises on bad input: hostile or malformed XML (``xml_safety``) gives
+``project=None`` and an error; everything else is imported as far as it goes.
+SFC and IL POUs, actions, transitions and other tools' addData have no place in
+the project and are reported as warnings; Bachmann/RuSTy's textual declarations
+and negated jumps/returns are understood and kept.
+"""
+
+from __future__ import annotations
+
+import re
+import xml.etree.ElementTree as ET
+from collections import Counter as Tally
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+from ...model.diagnostics import Diagnostic
+from ...model.project import Pou, Project, Task
+from ...st import ast
+from ...st.parser import parse_declarations, parse_source
+from ...st.printer import print_declarations, print_source, print_type
+from .blocks import Signatures
+from .body import (
+    IdMaker,
+    attach_headers,
+    claimed_ids,
+    group_by_ladderlab,
+    read_network_list,
+)
+from .fbd_import import FbdImporter, fbd_groups
+from .graph import read_graph, resolve_continuations
+from .ld_import import LdImporter, ld_groups
+from .vars import KIND_BY_LIST, VarReader, parse_type_text, write_data_type, write_type, write_var_list
+from .xml_io import (
+    LADDERLAB_DATA,
+    PLCOPEN_NAMESPACES,
+    Reader,
+    canonical,
+    foreign_data,
+    info,
+    info_text,
+    local,
+    namespace,
+    text_content,
+)
+from .xml_safety import XmlInputError, parse_untrusted_xml
+
+KIND = {"program": "program", "functionBlock": "function_block", "function": "function"}
+_HEADER = re.compile(r"^(PROGRAM|FUNCTION_BLOCK|FUNCTION)\s", re.IGNORECASE)
+BACHMANN = "www.bachmann.at/plc/plcopenxml"
+_UNDERSTOOD = {(BACHMANN, "textDeclaration"), (BACHMANN, "negated")}
+
+
+@dataclass
+class ImportResult:
+    """The imported project (None when the document could not be read at all) and every diagnostic."""
+
+    project: Project | None
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+
+
+def import_plcopen(data: bytes, *, name: str | None = None, file: str | None = None) -> ImportResult:
+    """Read a PLCopen XML document; ``name`` overrides the project name, ``file`` locates the diagnostics."""
+    try:
+        parsed = parse_untrusted_xml(data, file=file)
+    except XmlInputError as err:
+        return ImportResult(None, [err.diagnostic])
+    reader = Reader(parsed, file=file)
+    root = parsed.root
+    if namespace(root) not in PLCOPEN_NAMESPACES or local(root) not in ("project", "pou"):
+        reader.report("PLCOPEN-NOT-PLCOPEN", f"the root element is <{local(root)}> in namespace "
+                      f"'{namespace(root) or 'none'}'; a PLCopen TC6 document has <project> (or <pou>) in "
+                      f"'{PLCOPEN_NAMESPACES[0]}'", root)
+        return ImportResult(None, reader.diagnostics)
+    if namespace(root) != PLCOPEN_NAMESPACES[0]:
+        reader.report("PLCOPEN-VERSION", f"the document uses '{namespace(root)}'; it is read as TC6 v2.01", root,
+                      severity="warning")
+    project = _Importer(reader, name).project(root)
+    return ImportResult(project, reader.diagnostics)
+
+
+class _Importer:
+    def __init__(self, reader: Reader, name: str | None):
+        self.reader = reader
+        self.name = name
+        self.foreign: Tally[str] = Tally()
+
+    def project(self, root: ET.Element) -> Project:
+        r = self.reader
+        if local(root) == "pou":
+            pou_nodes, header = [root], None
+        else:
+            pou_nodes, header = r.children(r.path(root, "types", "pous"), "pou"), r.child(root, "contentHeader")
+        ours = info(root, r)
+        name = self.name or (header.get("name") if header is not None else None) or "imported"
+        interfaces = [self.interface(node) for node in pou_nodes]
+        signatures = Signatures([p for p in interfaces if p is not None])
+        pous = [self.pou(node, p, signatures) for node, p in zip(pou_nodes, interfaces) if p is not None]
+        self.collect_foreign(root)
+        types = self.types(r.path(root, "types", "dataTypes"), info_text(ours, "types"))
+        configurations = r.children(r.path(root, "instances", "configurations"), "configuration")
+        globals_ = self.globals(configurations, info_text(ours, "globals"))
+        tasks = self.tasks(configurations)
+        for data_name, count in sorted(self.foreign.items()):
+            r.report("PLCOPEN-ADDDATA", f"addData '{data_name}' ({count} place{'s' if count > 1 else ''}) is "
+                     "another tool's data that LadderLab cannot carry; it was dropped", root, severity="warning")
+        return Project(name=name, types=types, globals=globals_, pous=[p for p in pous if p is not None], tasks=tasks)
+
+    # ------------------------------------------------------------ addData bookkeeping
+
+    def note_foreign(self, entries: list[ET.Element]) -> None:
+        for data in entries:
+            kinds = {(data.get("name", ""), local(c)) for c in data if isinstance(c.tag, str)}
+            if not kinds or not kinds <= _UNDERSTOOD:
+                self.foreign[data.get("name", "")] += 1
+
+    def collect_foreign(self, root: ET.Element) -> None:
+        """Count other tools' addData entries anywhere in the document (those not understood are reported)."""
+        for element in root.iter():
+            if isinstance(element.tag, str) and local(element) == "addData" and namespace(element) == self.reader.ns:
+                self.note_foreign([d for d in self.reader.children(element, "data") if d.get("name") != LADDERLAB_DATA])
+
+    # ------------------------------------------------------------ POUs
+
+    def interface(self, node: ET.Element) -> Pou | None:
+        """The POU with its declarations (body still empty): enough for block signatures."""
+        r = self.reader
+        name, pou_type = node.get("name", ""), node.get("pouType", "")
+        if pou_type not in KIND:
+            r.report("PLCOPEN-POU", f"POU '{name}' has pouType '{pou_type}'; expected program, functionBlock or "
+                     "function", node, pou=name)
+            return None
+        interface = r.child(node, "interface")
+        reader = VarReader(r, name)
+        ours = info(interface, r)
+        lists = [c for c in r.elements(interface) if local(c) in KIND_BY_LIST]
+        blocks = [reader.var_block(c) for c in lists]
+        declarations = print_declarations(blocks).rstrip()
+        carried = info_text(ours, "declarations")
+        if carried is not None and self.same(lists, carried, _declaration_elements):
+            declarations = carried
+        return_type = None
+        if KIND[pou_type] == "function":
+            holder = r.child(interface, "returnType")
+            return_type = print_type(reader.type(holder)) if holder is not None else None
+            wanted = ours.get("returnType") if ours is not None else None
+            if wanted and holder is not None and self.same([holder], wanted, _return_type_elements):
+                return_type = wanted
+        if not any(r.children(c, "variable") for c in lists):
+            declarations, return_type = self.text_declaration(interface, declarations, return_type)
+        if KIND[pou_type] == "function" and return_type is None:
+            r.report("PLCOPEN-POU", f"function '{name}' has no return type", node, pou=name)
+        return Pou(name=name, kind=KIND[pou_type], language="st", return_type=return_type, declarations=declarations)
+
+    def text_declaration(self, interface: ET.Element | None, declarations: str,
+                         return_type: str | None) -> tuple[str, str | None]:
+        """Bachmann/RuSTy keep the interface as ST text in addData; use it when the typed lists are empty.
+
+        The text starts with the POU header (``FUNCTION main : DINT``), which gives a function's return type.
+        """
+        for data in foreign_data(interface, self.reader):
+            holder = next((c for c in data if local(c) == "textDeclaration"), None)
+            content = next((c for c in holder if local(c) == "content"), None) if holder is not None else None
+            if data.get("name") != BACHMANN or content is None:
+                continue
+            lines = [line.strip() for line in (content.text or "").strip().splitlines()]
+            if lines and _HEADER.match(lines[0]):
+                header, lines = lines[0], lines[1:]
+                if return_type is None and ":" in header:
+                    return_type = header.split(":", 1)[1].strip().rstrip(";").strip()
+            return "\n".join(lines).strip(), return_type
+        return declarations, return_type
+
+    def pou(self, node: ET.Element, pou: Pou, signatures: Signatures) -> Pou | None:
+        r = self.reader
+        for tag in ("actions", "transitions"):
+            for item in r.children(r.child(node, tag), tag[:-1]):
+                r.report("PLCOPEN-UNSUPPORTED", f"{tag[:-1]} '{item.get('name', '')}' of POU {pou.name} was not "
+                         f"imported: LadderLab has no {tag}", item, severity="warning", pou=pou.name)
+        bodies = r.children(node, "body")
+        if len(bodies) > 1:
+            r.report("PLCOPEN-POU", f"POU {pou.name} has {len(bodies)} bodies; only the first is imported",
+                     bodies[1], severity="warning", pou=pou.name)
+        body = bodies[0] if bodies else None
+        language = next(r.elements(body), None)
+        tag = local(language) if language is not None else "ST"
+        if tag in ("SFC", "IL"):
+            r.report("PLCOPEN-UNSUPPORTED", f"POU {pou.name} is written in {tag}, which LadderLab does not support; "
+                     f"it was imported with its interface and a body that does nothing ({_KEPT[tag]} as comments), "
+                     "so its callers build and run", language, severity="warning", pou=pou.name)
+            return pou.model_copy(update={"body": unsupported_body(tag, language)})
+        if tag == "ST":
+            return pou.model_copy(update={"body": text_content(language)})
+        graph = read_graph(language, r, pou.name, signatures)
+        listing = read_network_list(body, r)
+        ids = IdMaker(claimed_ids(graph, listing))
+        groups = group_by_ladderlab(graph, r, listing)
+        if tag == "LD":
+            resolve_continuations(graph, r, pou.name)
+            groups = groups or attach_headers(ld_groups(graph), graph, r)
+            ld = LdImporter(graph, r, pou.name, signatures, ids).body(groups)
+            return Pou(name=pou.name, kind=pou.kind, language="ld", return_type=pou.return_type,
+                       declarations=pou.declarations, body=ld)
+        relative, orders = groups is not None, {}
+        if groups is None:
+            groups, orders = fbd_groups(graph, r)
+            attach_headers(groups, graph, r, labels=False)
+        fbd = FbdImporter(graph, r, pou.name, ids).body(groups, orders, relative=relative)
+        return Pou(name=pou.name, kind=pou.kind, language="fbd", return_type=pou.return_type,
+                   declarations=pou.declarations, body=fbd)
+
+    # ------------------------------------------------------------ project texts
+
+    @staticmethod
+    def same(actual: list[ET.Element], carried: str, regenerate: Callable[[str], list[ET.Element] | None]) -> bool:
+        """Does the carried text still say what the typed XML says (no other tool changed it)?"""
+        expected = regenerate(carried)
+        return expected is not None and [canonical(e) for e in expected] == [canonical(e) for e in actual]
+
+    def types(self, data_types: ET.Element | None, carried: str | None) -> str:
+        elements = self.reader.children(data_types, "dataType")
+        if carried is not None and self.same(elements, carried, _type_elements):
+            return carried
+        reader = VarReader(self.reader)
+        decls = [reader.data_type(e) for e in elements]
+        return print_source(ast.Source([ast.TypeBlock(decls)])).rstrip() if decls else ""
+
+    def globals(self, configurations: list[ET.Element], carried: str | None) -> str:
+        r = self.reader
+        lists = [g for c in configurations for holder in [c, *r.children(c, "resource")]
+                 for g in r.children(holder, "globalVars")]
+        if carried is not None and self.same(lists, carried, _declaration_elements):
+            return carried
+        reader = VarReader(r)
+        return print_declarations([reader.var_block(g, "VAR_GLOBAL") for g in lists]).rstrip()
+
+    def tasks(self, configurations: list[ET.Element]) -> list[Task]:
+        r = self.reader
+        if len(configurations) > 1:
+            r.report("PLCOPEN-CONFIG", f"{len(configurations)} configurations are merged into the project's one "
+                     "task list", configurations[1], severity="warning")
+        tasks = []
+        for resource in (res for c in configurations for res in r.children(c, "resource")):
+            for task in r.children(resource, "task"):
+                tasks.append(self.task(task))
+            for instance in r.children(resource, "pouInstance"):
+                r.report("PLCOPEN-CONFIG", f"program instance '{instance.get('name', '')}' is not assigned to a "
+                         "task; LadderLab runs programs from tasks only, so it was not imported", instance,
+                         severity="warning")
+        return tasks
+
+    def task(self, node: ET.Element) -> Task:
+        r = self.reader
+        name = node.get("name", "")
+        interval = node.get("interval")
+        if not interval:
+            r.report("PLCOPEN-CONFIG", f"task {name} has no interval (an event task); it is imported as a cyclic "
+                     "task of T#10ms", node, severity="warning")
+            interval = "T#10ms"
+        try:
+            priority = int(node.get("priority", "0"))
+        except ValueError:
+            r.report("PLCOPEN-CONFIG", f"task {name}: priority '{node.get('priority')}' is not a number; 0 is used",
+                     node, severity="warning")
+            priority = 0
+        programs = [i.get("typeName", "") for i in r.children(node, "pouInstance")]
+        return Task(name=name, interval=interval, priority=priority, programs=programs)
+
+
+# ---------------------------------------------------------------- regenerating typed XML from carried texts
+
+
+def _declaration_elements(text: str) -> list[ET.Element] | None:
+    parsed = parse_declarations(text)
+    if parsed.ast is None or not parsed.ok:
+        return None
+    holder = ET.Element("interface")
+    for block in parsed.ast:
+        write_var_list(holder, block)
+    return list(holder)
+
+
+def _type_elements(text: str) -> list[ET.Element] | None:
+    parsed = parse_source(text)
+    if parsed.ast is None or not parsed.ok or any(not isinstance(i, ast.TypeBlock) for i in parsed.ast.items):
+        return None
+    holder = ET.Element("dataTypes")
+    for item in parsed.ast.items:
+        for decl in item.decls:
+            write_data_type(holder, decl)
+    return list(holder)
+
+
+def _return_type_elements(text: str) -> list[ET.Element] | None:
+    spec = parse_type_text(text)
+    if spec is None:
+        return None
+    holder = ET.Element("returnType")
+    write_type(holder, spec)
+    return [holder]
+
+
+#: What an unsupported body leaves in the comments of the POU standing in for it.
+_KEPT = {"IL": "the IL text is kept", "SFC": "the names of its steps are kept"}
+
+
+def unsupported_body(tag: str, language: ET.Element) -> str:
+    """The ST body standing in for an SFC or IL body: no statements, the original described in line comments.
+
+    The POU keeps its interface so that the programs calling it still build (the rest of an imported
+    project runs); the comment says, where the user opens the POU, that this body does nothing.
+    """
+    if tag == "IL":
+        original = text_content(language).strip().splitlines()
+    else:
+        original = [f"step {s.get('name', '')}{' (initial)' if s.get('initialStep') == 'true' else ''}"
+                    for s in language if local(s) == "step"]
+    lines = [f"// Imported from {tag}, which LadderLab cannot run: this body does nothing. The original {tag}:"]
+    return "\n".join(lines + [f"// {line}".rstrip() for line in original])

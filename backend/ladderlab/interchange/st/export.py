@@ -1,0 +1,123 @@
+"""ST export of a POU: the complete IEC text of an LD/FBD POU that behaves like the diagram (issue 8).
+
+``export_pou_st(project, name)`` returns the POU's text, a source map (text line
+-> network and element) and diagnostics. ST POUs export as their text
+unchanged. A diagram POU is exported only when it lowers without errors (the
+export follows what the engine runs, docs/diagrams.md); the text is the user's
+declarations, the variables the export adds (temporaries, edge triggers, ENO
+flags) in their own VAR blocks, and one statement group per network. The result
+is checked by the project's own ST checker before it is returned.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from ...ir.diagram_checks import canonical_label
+from ...ir.lower_project import lower_pou
+from ...model import Diagnostic, Pou, Project, has_errors
+from ...st.checker import check_project
+from ...st.symbols import CheckResult
+from ...storage.st_text import compose_pou_text
+from .body import Network, body_lines, comment
+from .elements import PouScope
+from .fbd import fbd_network
+from .ld import ld_network
+from .names import Names
+from .network import Declarations, plan
+
+SourceMap = list[tuple[int, str, str | None]]
+
+
+@dataclass
+class StExport:
+    """``text``: complete IEC text ("" when the diagnostics hold an error); ``source_map``: (1-based line of
+    ``text``, network id, element id or None) for every line that comes from a network."""
+
+    text: str
+    source_map: SourceMap = field(default_factory=list)
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+
+
+def export_pou_st(project: Project, pou_name: str) -> StExport:
+    pou = project.pou(pou_name)
+    if pou is None:
+        return StExport("", [], [Diagnostic(code="EXPORT-UNKNOWN-POU", message=f"the project has no POU '{pou_name}'")])
+    if pou.language == "st":
+        return StExport(compose_pou_text(pou))
+    checked = check_project(project)
+    exported = st_pou(project, pou, checked)
+    if has_errors(exported.diagnostics):
+        return StExport("", [], exported.diagnostics)
+    problems = verify(project, exported.pou)
+    if problems:
+        return StExport("", [], exported.diagnostics + problems)
+    text = compose_pou_text(exported.pou)
+    offset = text.count("\n", 0, text.index(exported.pou.body)) if exported.pou.body else 0
+    source_map = [(offset + line, network, element) for line, network, element in exported.source_map]
+    return StExport(text, source_map, exported.diagnostics)
+
+
+@dataclass
+class ExportedPou:
+    """A diagram POU as an ST ``Pou`` (body lines numbered from 1 in ``source_map``)."""
+
+    pou: Pou | None
+    source_map: SourceMap
+    diagnostics: list[Diagnostic]
+
+
+def st_pou(project: Project, pou: Pou, checked: CheckResult) -> ExportedPou:
+    """The ST version of the diagram POU ``pou``, or diagnostics saying why it cannot be exported."""
+    info = checked.pou(pou.name)
+    diagnostics: list[Diagnostic] = [d for d in checked.diagnostics
+                                     if d.pou is None or d.pou.upper() == pou.name.upper()]
+    if info is None or has_errors(diagnostics):
+        return ExportedPou(None, [], _refused(pou, diagnostics))
+    lowered = lower_pou(pou, info, checked, diagnostics)
+    if has_errors(diagnostics):
+        return ExportedPou(None, [], _refused(pou, diagnostics))
+    declarations = Declarations(Names.for_pou(checked, pou.name))
+    scope = PouScope(checked, info, declarations)
+    networks: list[Network] = []
+    for index, network in enumerate(pou.body.networks):
+        code = ld_network(scope, network) if pou.language == "ld" else fbd_network(scope, network, lowered)
+        title = f"Network {index + 1} ({network.id})" + (f", label {network.label.strip()}" if network.label else "")
+        lines = [title] + [line.strip() for line in (network.comment or "").splitlines() if line.strip()]
+        controls = [(c.label, c.element) for c in code.controls]
+        networks.append(Network(network.id, lines, plan(code, declarations), controls))
+    labels = {canonical_label(n.label): index for index, n in enumerate(pou.body.networks) if n.label}
+    lines = body_lines(networks, labels, declarations)
+    body = "\n".join(line.text for line in lines)
+    source_map = [(number, line.network, line.element) for number, line in enumerate(lines, 1)
+                  if line.network is not None]
+    return ExportedPou(Pou(name=pou.name, kind=pou.kind, language="st", return_type=pou.return_type,
+                           declarations=_declarations(pou.declarations, declarations), body=body),
+                       source_map, [d for d in diagnostics if d.severity != "error"])
+
+
+def _declarations(user: str, declarations: Declarations) -> str:
+    """The user's declarations as typed, then the export's variables (persistent ones, then temporaries)."""
+    blocks = [user] if user.strip() else []
+    for var_class in ("VAR", "VAR_TEMP"):
+        items = [(name, type_text) for name, type_text, kind in declarations.items if kind == var_class]
+        if items:
+            lines = [f"{var_class} {comment('generated by the ST export')}"]
+            lines += [f"    {name} : {type_text};" for name, type_text in items]
+            blocks.append("\n".join(lines + ["END_VAR"]))
+    return "\n".join(blocks)
+
+
+def _refused(pou: Pou, diagnostics: list[Diagnostic]) -> list[Diagnostic]:
+    return diagnostics + [Diagnostic(code="EXPORT-INVALID", pou=pou.name, message=f"{pou.name} has errors: fix them "
+                                     "before exporting it as ST")]
+
+
+def verify(project: Project, exported: Pou) -> list[Diagnostic]:
+    """The exported POU in place of the diagram must check without errors; else say so (never silently)."""
+    replaced = project.model_copy(update={"pous": [exported if p.name == exported.name else p
+                                                   for p in project.pous]})
+    problems = [d for d in check_project(replaced).diagnostics
+                if d.severity == "error" and (d.pou or "").upper() == exported.name.upper()]
+    return [Diagnostic(code="EXPORT-INTERNAL", pou=exported.name, severity="error",
+                       message=f"the exported ST of {exported.name} does not check: {d.format()}") for d in problems]
