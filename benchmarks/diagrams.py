@@ -42,17 +42,23 @@ def declarations(networks: int) -> str:
 
 
 def ld_network(n: int) -> ld.LdNetwork:
-    elements: list = [ld.Contact(id=f"a{n}", var=f"A{n}"), ld.Contact(id=f"b{n}", var=f"B{n}", mode="nc"),
-                      ld.Coil(id=f"c{n}", var=f"C{n}")]
+    elements: list = [
+        ld.Contact(id=f"a{n}", var=f"A{n}"),
+        ld.Contact(id=f"b{n}", var=f"B{n}", mode="nc"),
+        ld.Coil(id=f"c{n}", var=f"C{n}"),
+    ]
     if n % 4:
         return ld.LdNetwork(id=f"n{n}", elements=elements)
-    timers = [ld.Contact(id=f"tc{n}", var=f"C{n}"),
-              ld.Box(id=f"t{n}", call="TON", instance=f"T{n}", inputs={"PT": "T#100ms"}),
-              ld.Box(id=f"k{n}", call="CTU", instance=f"K{n}", inputs={"PV": "5"}),
-              ld.Coil(id=f"y{n}", var=f"Y{n}")]
+    timers = [
+        ld.Contact(id=f"tc{n}", var=f"C{n}"),
+        ld.Box(id=f"t{n}", call="TON", instance=f"T{n}", inputs={"PT": "T#100ms"}),
+        ld.Box(id=f"k{n}", call="CTU", instance=f"K{n}", inputs={"PV": "5"}),
+        ld.Coil(id=f"y{n}", var=f"Y{n}"),
+    ]
     add = [ld.Box(id=f"x{n}", call="ADD", en=True, inputs={"IN1": f"X{n}", "IN2": "1"}, outputs={"OUT": f"X{n}"})]
-    return ld.LdNetwork(id=f"n{n}", elements=[*elements[:2], ld.Parallel(
-        id=f"p{n}", branches=[[elements[2]], timers, add])])
+    return ld.LdNetwork(
+        id=f"n{n}", elements=[*elements[:2], ld.Parallel(id=f"p{n}", branches=[[elements[2]], timers, add])]
+    )
 
 
 def fbd_network(n: int) -> fbd.FbdNetwork:
@@ -60,26 +66,45 @@ def fbd_network(n: int) -> fbd.FbdNetwork:
         (x, p), (y, q) = a.split("."), b.split(".")
         return fbd.Wire.model_validate({"from": {"node": x, "pin": p}, "to": {"node": y, "pin": q}})
 
-    nodes: list = [fbd.InputNode(id=f"a{n}", expr=f"A{n}"), fbd.InputNode(id=f"b{n}", expr=f"B{n}"),
-                   fbd.Block(id=f"g{n}", call="AND", pins={"IN2": fbd.PinFlags(negated=True)}),
-                   fbd.OutputNode(id=f"c{n}", var=f"C{n}")]
+    nodes: list = [
+        fbd.InputNode(id=f"a{n}", expr=f"A{n}"),
+        fbd.InputNode(id=f"b{n}", expr=f"B{n}"),
+        fbd.Block(id=f"g{n}", call="AND", pins={"IN2": fbd.PinFlags(negated=True)}),
+        fbd.OutputNode(id=f"c{n}", var=f"C{n}"),
+    ]
     wires = [wire(f"a{n}.OUT", f"g{n}.IN1"), wire(f"b{n}.OUT", f"g{n}.IN2"), wire(f"g{n}.OUT", f"c{n}.IN")]
     if n % 4 == 0:
-        nodes += [fbd.InputNode(id=f"pt{n}", expr="T#100ms"), fbd.Block(id=f"t{n}", call="TON", instance=f"T{n}"),
-                  fbd.InputNode(id=f"pv{n}", expr="5"), fbd.Block(id=f"k{n}", call="CTU", instance=f"K{n}"),
-                  fbd.OutputNode(id=f"y{n}", var=f"Y{n}"), fbd.InputNode(id=f"x{n}", expr=f"X{n}"),
-                  fbd.InputNode(id=f"one{n}", expr="1"), fbd.Block(id=f"add{n}", call="ADD", en=True),
-                  fbd.OutputNode(id=f"xo{n}", var=f"X{n}")]
-        wires += [wire(f"g{n}.OUT", f"t{n}.IN"), wire(f"pt{n}.OUT", f"t{n}.PT"), wire(f"t{n}.Q", f"k{n}.CU"),
-                  wire(f"pv{n}.OUT", f"k{n}.PV"), wire(f"k{n}.Q", f"y{n}.IN"), wire(f"g{n}.OUT", f"add{n}.EN"),
-                  wire(f"x{n}.OUT", f"add{n}.IN1"), wire(f"one{n}.OUT", f"add{n}.IN2"),
-                  wire(f"add{n}.OUT", f"xo{n}.IN")]
+        nodes += [
+            fbd.InputNode(id=f"pt{n}", expr="T#100ms"),
+            fbd.Block(id=f"t{n}", call="TON", instance=f"T{n}"),
+            fbd.InputNode(id=f"pv{n}", expr="5"),
+            fbd.Block(id=f"k{n}", call="CTU", instance=f"K{n}"),
+            fbd.OutputNode(id=f"y{n}", var=f"Y{n}"),
+            fbd.InputNode(id=f"x{n}", expr=f"X{n}"),
+            fbd.InputNode(id=f"one{n}", expr="1"),
+            fbd.Block(id=f"add{n}", call="ADD", en=True),
+            fbd.OutputNode(id=f"xo{n}", var=f"X{n}"),
+        ]
+        wires += [
+            wire(f"g{n}.OUT", f"t{n}.IN"),
+            wire(f"pt{n}.OUT", f"t{n}.PT"),
+            wire(f"t{n}.Q", f"k{n}.CU"),
+            wire(f"pv{n}.OUT", f"k{n}.PV"),
+            wire(f"k{n}.Q", f"y{n}.IN"),
+            wire(f"g{n}.OUT", f"add{n}.EN"),
+            wire(f"x{n}.OUT", f"add{n}.IN1"),
+            wire(f"one{n}.OUT", f"add{n}.IN2"),
+            wire(f"add{n}.OUT", f"xo{n}.IN"),
+        ]
     return fbd.FbdNetwork(id=f"n{n}", nodes=nodes, wires=wires)
 
 
 def project(language: str, networks: int) -> Project:
-    body = ld.LdBody(networks=[ld_network(n) for n in range(networks)]) if language == "ld" else \
-        fbd.FbdBody(networks=[fbd_network(n) for n in range(networks)])
+    body = (
+        ld.LdBody(networks=[ld_network(n) for n in range(networks)])
+        if language == "ld"
+        else fbd.FbdBody(networks=[fbd_network(n) for n in range(networks)])
+    )
     pou = Pou(name="Main", kind="program", language=language, declarations=declarations(networks), body=body)
     return Project(name="bench", pous=[pou], tasks=[Task(name="main", interval="T#10ms", programs=["Main"])])
 
@@ -115,13 +140,16 @@ def main() -> None:
     for language in ("ld", "fbd"):
         builds = []
         for _ in range(arguments.runs):
-            run = subprocess.run([sys.executable, __file__, "--language", language], check=True, capture_output=True,
-                                 text=True)
+            run = subprocess.run(
+                [sys.executable, __file__, "--language", language], check=True, capture_output=True, text=True
+            )
             print(run.stdout, end="")
             builds += [float(found) for found in re.findall(r"lowering \+ compile ([0-9.]+) s CPU", run.stdout)]
         builds.sort()
-        print(f"{language.upper()} lowering + compile over {len(builds)} fresh processes: best {builds[0]:.2f} s, "
-              f"median {statistics.median(builds):.2f} s, worst {builds[-1]:.2f} s CPU (target <= 3 s)")
+        print(
+            f"{language.upper()} lowering + compile over {len(builds)} fresh processes: best {builds[0]:.2f} s, "
+            f"median {statistics.median(builds):.2f} s, worst {builds[-1]:.2f} s CPU (target <= 3 s)"
+        )
 
 
 def measure(language: str) -> None:
@@ -136,18 +164,24 @@ def measure(language: str) -> None:
     compiled = compile_program(result.program, "fast")
     build, build_cpu = time.perf_counter() - start, time.process_time() - cpu
     # CPU time: the machine is shared, wall time includes waiting for a core
-    print(f"{language.upper()} {NETWORKS} networks: lowering {lowered_cpu:.2f} s CPU, compile "
-          f"{build_cpu - lowered_cpu:.2f} s CPU, lowering + compile {build_cpu:.2f} s CPU / {build:.2f} s wall "
-          "(target <= 3 s)")
+    print(
+        f"{language.upper()} {NETWORKS} networks: lowering {lowered_cpu:.2f} s CPU, compile "
+        f"{build_cpu - lowered_cpu:.2f} s CPU, lowering + compile {build_cpu:.2f} s CPU / {build:.2f} s wall "
+        "(target <= 3 s)"
+    )
     name = language.upper()
     times = per_scan_us({"fast": Simulation(compiled), "monitor": Simulation(result.program, variant="monitor")}, 15)
     (off, off_cpu), (on, on_cpu) = times["fast"], times["monitor"]
     debug, debug_cpu = per_scan_us({"debug": Simulation(result.program, variant="debug")}, 10)["debug"]
     print(f"{name} scan, monitoring off (fast variant): {off:.0f} us wall, {off_cpu:.0f} us CPU (target <= 5000 us)")
-    print(f"{name} scan, monitoring on (monitor variant): {on:.0f} us wall, {on_cpu:.0f} us CPU = "
-          f"{on_cpu / off_cpu:.2f}x off in CPU time, {on / off:.2f}x in wall time (target <= 2x)")
-    print(f"{name} scan, debug variant (probes and pause points): {debug:.0f} us wall, {debug_cpu:.0f} us CPU = "
-          f"{debug_cpu / off_cpu:.2f}x off")
+    print(
+        f"{name} scan, monitoring on (monitor variant): {on:.0f} us wall, {on_cpu:.0f} us CPU = "
+        f"{on_cpu / off_cpu:.2f}x off in CPU time, {on / off:.2f}x in wall time (target <= 2x)"
+    )
+    print(
+        f"{name} scan, debug variant (probes and pause points): {debug:.0f} us wall, {debug_cpu:.0f} us CPU = "
+        f"{debug_cpu / off_cpu:.2f}x off"
+    )
 
 
 if __name__ == "__main__":

@@ -48,9 +48,13 @@ def serve() -> tuple[str, object, object]:
     workspace = Workspace(pathlib.Path(tempfile.mkdtemp()) / "workspace")
     body = f"FOR i := 1 TO {VARIABLES} DO\n    V[i] := V[i] + 1;\nEND_FOR;"
     declarations = f"VAR\n    V : ARRAY[1..{VARIABLES}] OF DINT;\n    i : INT;\nEND_VAR"
-    workspace.create(Project(name="bench", pous=[Pou(name="Main", kind="program", language="st",
-                                                     declarations=declarations, body=body)],
-                             tasks=[Task(name="T", interval="T#10ms", programs=["Main"])]))
+    workspace.create(
+        Project(
+            name="bench",
+            pous=[Pou(name="Main", kind="program", language="st", declarations=declarations, body=body)],
+            tasks=[Task(name="T", interval="T#10ms", programs=["Main"])],
+        )
+    )
     app = create_app(workspace)
     registry = app.state.simulations = SimulationRegistry()
     listener = socket.socket()
@@ -76,8 +80,11 @@ def run(address: str, sim_id: str, runner, clients: int, paths: int, seconds: fl
     runner.after_scan.append(lambda sim: stamps.__setitem__(sim.scan_count, time.time()))
     child = None
     if clients:
-        child = subprocess.Popen([sys.executable, __file__, "--client", address, sim_id, str(clients), str(paths),
-                                  str(seconds + 2)], stdout=subprocess.PIPE, text=True)
+        child = subprocess.Popen(
+            [sys.executable, __file__, "--client", address, sim_id, str(clients), str(paths), str(seconds + 2)],
+            stdout=subprocess.PIPE,
+            text=True,
+        )
         assert child.stdout is not None
         assert child.stdout.readline().strip() == "subscribed"
         time.sleep(1.0)  # let the first (full) snapshots go out
@@ -94,15 +101,25 @@ def run(address: str, sim_id: str, runner, clients: int, paths: int, seconds: fl
                 latencies.append((received - stamps[scan]) * 1000.0)
     runner.after_scan.clear()
     scans = after["scan_count"] - before["scan_count"]
-    mean_scan = ((after["scan_ms"]["avg"] * after["scan_count"] - before["scan_ms"]["avg"] * before["scan_count"])
-                 / scans if scans else 0.0)
-    result = {"scans_per_s": scans / wall, "mean_scan_ms": mean_scan,
-              "overruns": after["overruns"] - before["overruns"], "cpu_percent": 100.0 * cpu / wall}
+    mean_scan = (
+        (after["scan_ms"]["avg"] * after["scan_count"] - before["scan_ms"]["avg"] * before["scan_count"]) / scans
+        if scans
+        else 0.0
+    )
+    result = {
+        "scans_per_s": scans / wall,
+        "mean_scan_ms": mean_scan,
+        "overruns": after["overruns"] - before["overruns"],
+        "cpu_percent": 100.0 * cpu / wall,
+    }
     if latencies:
         latencies.sort()
-        result |= {"messages": len(latencies), "latency_p50_ms": statistics.median(latencies),
-                   "latency_p99_ms": latencies[min(len(latencies) - 1, int(0.99 * len(latencies)))],
-                   "latency_max_ms": latencies[-1]}
+        result |= {
+            "messages": len(latencies),
+            "latency_p50_ms": statistics.median(latencies),
+            "latency_p99_ms": latencies[min(len(latencies) - 1, int(0.99 * len(latencies)))],
+            "latency_max_ms": latencies[-1],
+        }
     return result
 
 
@@ -140,8 +157,9 @@ async def clients_main(address: str, sim_id: str, clients: int, paths: int, seco
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seconds", type=float, default=5.0)
-    parser.add_argument("--client", nargs=5, metavar=("ADDRESS", "SIM", "CLIENTS", "PATHS", "SECONDS"),
-                        help=argparse.SUPPRESS)
+    parser.add_argument(
+        "--client", nargs=5, metavar=("ADDRESS", "SIM", "CLIENTS", "PATHS", "SECONDS"), help=argparse.SUPPRESS
+    )
     args = parser.parse_args()
     if args.client:
         address, sim_id, clients, paths, seconds = args.client
@@ -152,17 +170,26 @@ def main() -> None:
     runner = registry.get(sim_id).runner  # type: ignore[attr-defined]
     request(address, "POST", f"/api/simulations/{sim_id}/start")
     time.sleep(0.5)
-    print(f"monitor: {VARIABLES} variables changing every scan, 10 ms task, clients at {INTERVAL_MS} ms, "
-          f"{args.seconds:g} s per run")
-    for label, clients, paths in (("no clients", 0, 0), ("10 clients x 1000 paths", 10, 1000),
-                                  ("100 clients x 100 paths", 100, 100)):
+    print(
+        f"monitor: {VARIABLES} variables changing every scan, 10 ms task, clients at {INTERVAL_MS} ms, "
+        f"{args.seconds:g} s per run"
+    )
+    for label, clients, paths in (
+        ("no clients", 0, 0),
+        ("10 clients x 1000 paths", 10, 1000),
+        ("100 clients x 100 paths", 100, 100),
+    ):
         r = run(address, sim_id, runner, clients, paths, args.seconds)
-        print(f"{label}: scan rate {r['scans_per_s']:.1f}/s (target 100), mean scan {r['mean_scan_ms']:.2f} ms, "
-              f"overruns {r['overruns']}")
+        print(
+            f"{label}: scan rate {r['scans_per_s']:.1f}/s (target 100), mean scan {r['mean_scan_ms']:.2f} ms, "
+            f"overruns {r['overruns']}"
+        )
         print(f"{label}: server CPU {r['cpu_percent']:.0f}% of one core")
         if "messages" in r:
-            print(f"{label}: latency scan -> client p50 {r['latency_p50_ms']:.1f} ms, p99 {r['latency_p99_ms']:.1f} ms "
-                  f"(target <= 100), max {r['latency_max_ms']:.1f} ms over {r['messages']} messages")
+            print(
+                f"{label}: latency scan -> client p50 {r['latency_p50_ms']:.1f} ms, p99 {r['latency_p99_ms']:.1f} ms "
+                f"(target <= 100), max {r['latency_max_ms']:.1f} ms over {r['messages']} messages"
+            )
     registry.close()  # type: ignore[attr-defined]
     server.should_exit = True  # type: ignore[attr-defined]
 

@@ -50,23 +50,39 @@ def ld_program(networks: int) -> ir.Program:
             return ir.Origin("MAIN", network=net, element=element)
 
         a, b, coil, h1, h2 = (f"A{n}", f"B{n}", f"C{n}", f"E{n}_1", f"E{n}_2")
-        slots += [ir.Slot(a, "VAR", BOOL), ir.Slot(b, "VAR", BOOL, n % 3 == 0), ir.Slot(coil, "VAR", BOOL),
-                  ir.Slot(h1, "VAR", BOOL, hidden=True), ir.Slot(h2, "VAR", BOOL, hidden=True)]
+        slots += [
+            ir.Slot(a, "VAR", BOOL),
+            ir.Slot(b, "VAR", BOOL, n % 3 == 0),
+            ir.Slot(coil, "VAR", BOOL),
+            ir.Slot(h1, "VAR", BOOL, hidden=True),
+            ir.Slot(h2, "VAR", BOOL, hidden=True),
+        ]
         va, vb, vc, v1, v2 = (_var(x, BOOL) for x in (a, b, coil, h1, h2))
         statements: list[ir.Stmt] = [
-            ir.Assign(v1, va, at("E1")), ir.Probe("E1", v1, at("E1")),
-            ir.Assign(v2, ir.Binary("AND", v1, ir.Unary("NOT", vb, BOOL), BOOL), at("E2")), ir.Probe("E2", v2, at("E2")),
-            ir.Assign(vc, v2, at("E3")), ir.Probe("E3", v2, at("E3")),
+            ir.Assign(v1, va, at("E1")),
+            ir.Probe("E1", v1, at("E1")),
+            ir.Assign(v2, ir.Binary("AND", v1, ir.Unary("NOT", vb, BOOL), BOOL), at("E2")),
+            ir.Probe("E2", v2, at("E2")),
+            ir.Assign(vc, v2, at("E3")),
+            ir.Probe("E3", v2, at("E3")),
         ]
         if n % 4 == 0:
             ton, ctu, x, y = f"T{n}", f"CNT{n}", f"X{n}", f"Y{n}"
-            slots += [ir.Slot(ton, "VAR", t.FbInstance("TON")), ir.Slot(ctu, "VAR", t.FbInstance("CTU")),
-                      ir.Slot(x, "VAR", INT), ir.Slot(y, "VAR", BOOL)]
+            slots += [
+                ir.Slot(ton, "VAR", t.FbInstance("TON")),
+                ir.Slot(ctu, "VAR", t.FbInstance("CTU")),
+                ir.Slot(x, "VAR", INT),
+                ir.Slot(y, "VAR", BOOL),
+            ]
             vx = _var(x, INT)
             statements += [
                 ir.FbCall(_var(ton, t.FbInstance("TON")), [("IN", vc), ("PT", ir.Const(100, TIME))], [], at("E4")),
-                ir.FbCall(_var(ctu, t.FbInstance("CTU")),
-                          [("CU", _var(ton, BOOL, ir.Member("Q"))), ("PV", ir.Const(5, INT))], [], at("E5")),
+                ir.FbCall(
+                    _var(ctu, t.FbInstance("CTU")),
+                    [("CU", _var(ton, BOOL, ir.Member("Q"))), ("PV", ir.Const(5, INT))],
+                    [],
+                    at("E5"),
+                ),
                 ir.Assign(vx, ir.Binary("ADD", vx, ir.Const(1, INT), INT), at("E6")),
                 ir.Assign(_var(y, BOOL), ir.Binary("GT", vx, ir.Const(100, INT), BOOL), at("E7")),
             ]
@@ -108,8 +124,10 @@ def variant_part(variant: str) -> None:
     sim = Simulation(compile_program(program, variant))
     build, build_cpu = time.perf_counter() - start, time.process_time() - cpu
     target = " (target <= 3 s)" if variant == "fast" else ""
-    print(f"build {NETWORKS} LD networks (IR -> runnable, {variant} variant): {build:.2f} s wall, "
-          f"{build_cpu:.2f} s CPU{target}")
+    print(
+        f"build {NETWORKS} LD networks (IR -> runnable, {variant} variant): {build:.2f} s wall, "
+        f"{build_cpu:.2f} s CPU{target}"
+    )
     sim.cycle(20)  # warm up the interpreter's specialisation
     samples, cpu_samples = [], []
     for _ in range(15):
@@ -118,12 +136,18 @@ def variant_part(variant: str) -> None:
         samples.append((time.perf_counter() - before) / 4 * 1e6)
         cpu_samples.append((time.process_time() - cpu) / 4 * 1e6)
     target = " (target <= 5000 us)" if variant == "fast" else ""
-    print(f"scan {NETWORKS} LD networks, {variant} variant: {statistics.median(samples):.0f} us per scan wall, "
-          f"{statistics.median(cpu_samples):.0f} us CPU{target}")
+    print(
+        f"scan {NETWORKS} LD networks, {variant} variant: {statistics.median(samples):.0f} us per scan wall, "
+        f"{statistics.median(cpu_samples):.0f} us CPU{target}"
+    )
 
 
-PARTS = {"ironplc": ironplc_programs, "fast": lambda: variant_part("fast"),
-         "monitor": lambda: variant_part("monitor"), "debug": lambda: variant_part("debug")}
+PARTS = {
+    "ironplc": ironplc_programs,
+    "fast": lambda: variant_part("fast"),
+    "monitor": lambda: variant_part("monitor"),
+    "debug": lambda: variant_part("debug"),
+}
 
 
 def main() -> None:
@@ -136,13 +160,16 @@ def main() -> None:
         return
     peaks = {}
     for name in PARTS:
-        out = subprocess.run([sys.executable, __file__, "--part", name], check=True, capture_output=True,
-                             text=True).stdout.splitlines()
+        out = subprocess.run(
+            [sys.executable, __file__, "--part", name], check=True, capture_output=True, text=True
+        ).stdout.splitlines()
         print("\n".join(line for line in out if not line.startswith("PEAK ")), flush=True)
         peaks[name] = float(next(line for line in out if line.startswith("PEAK ")).split()[1])
     shown = ", ".join(f"{name} {mb:.0f} MB" for name, mb in peaks.items())
-    print(f"peak memory (ru_maxrss of a fresh process per part): {shown}; largest {max(peaks.values()):.0f} MB "
-          "(target <= 300 MB)")
+    print(
+        f"peak memory (ru_maxrss of a fresh process per part): {shown}; largest {max(peaks.values()):.0f} MB "
+        "(target <= 300 MB)"
+    )
 
 
 if __name__ == "__main__":

@@ -19,5 +19,6 @@ def external(*parts: str) -> pathlib.Path:
         pytest.skip(f"{path} not present (../shared/external is optional)")
     return path
 
+
 #: External-corpus pass rates (name -> (passed, total)), printed at the end of the run by tests/conftest.py.
 PASS_RATES: dict[str, tuple[int, int]] = {}

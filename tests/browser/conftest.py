@@ -60,9 +60,18 @@ def server(tmp_path: Path, chromium_path: str) -> Iterator[str]:
     port = _free_port()
     log = (tmp_path / "server.log").open("w")
     process = subprocess.Popen(
-        [sys.executable, "-c", "import sys; from ladderlab.cli import main; sys.exit(main())",
-         "serve", "--port", str(port), "--workspace", str(tmp_path / "workspace")],
-        stdout=log, stderr=subprocess.STDOUT,
+        [
+            sys.executable,
+            "-c",
+            "import sys; from ladderlab.cli import main; sys.exit(main())",
+            "serve",
+            "--port",
+            str(port),
+            "--workspace",
+            str(tmp_path / "workspace"),
+        ],
+        stdout=log,
+        stderr=subprocess.STDOUT,
     )
     url = f"http://127.0.0.1:{port}"
     try:

@@ -38,6 +38,7 @@ def _request(method: str, url: str, body: dict | None = None, revision: str | No
     if revision is not None:
         headers["If-Match"] = f'"{revision}"'
     data = json.dumps(body).encode() if body is not None else None
-    with urllib.request.urlopen(urllib.request.Request(url, data=data, method=method, headers=headers),
-                                timeout=30) as response:
+    with urllib.request.urlopen(
+        urllib.request.Request(url, data=data, method=method, headers=headers), timeout=30
+    ) as response:
         return json.load(response)

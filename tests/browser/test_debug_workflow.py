@@ -106,8 +106,9 @@ def test_breakpoint_halt_step_continue_disable_and_single_cycle(page, server):
 
     # Continue (F5): the next scan halts at the breakpoint again; network 1 has run, Motor is on.
     page.keyboard.press("F5")
-    page.wait_for_function("n => Number(document.querySelector('[data-testid=scan-count]').textContent) === n",
-                           arg=halted_scan + 1)
+    page.wait_for_function(
+        "n => Number(document.querySelector('[data-testid=scan-count]').textContent) === n", arg=halted_scan + 1
+    )
     debug.get_by_text("Halted at MAIN, network 2").wait_for()
     motor.filter(has_text="TRUE").wait_for()
     page.wait_for_function("() => document.querySelector('g.ld-coil[data-id=motor]')?.classList.contains('ld-on')")
@@ -119,8 +120,9 @@ def test_breakpoint_halt_step_continue_disable_and_single_cycle(page, server):
     debug.get_by_role("button", name="Continue").click()
     state.filter(has_text="Online · running").wait_for()
     running_from = scan_count(page)
-    page.wait_for_function("n => Number(document.querySelector('[data-testid=scan-count]').textContent) > n + 5",
-                           arg=running_from)
+    page.wait_for_function(
+        "n => Number(document.querySelector('[data-testid=scan-count]').textContent) > n + 5", arg=running_from
+    )
     assert debug.count() == 0
     page.screenshot(path=str(ARTIFACTS / "debug-disabled.png"))
     panels.get_by_role("button", name=re.compile("^Remove breakpoint Main, network 2")).click()
@@ -132,8 +134,9 @@ def test_breakpoint_halt_step_continue_disable_and_single_cycle(page, server):
     state.filter(has_text="Online · stopped").wait_for()
     before = settled_scan_count(page)
     page.get_by_role("button", name="Single cycle").click()
-    page.wait_for_function("n => Number(document.querySelector('[data-testid=scan-count]').textContent) === n",
-                           arg=before + 1)
+    page.wait_for_function(
+        "n => Number(document.querySelector('[data-testid=scan-count]').textContent) === n", arg=before + 1
+    )
     time.sleep(0.3)  # nothing else runs: the counter stays
     assert scan_count(page) == before + 1
     assert state.inner_text().endswith("stopped")

@@ -33,9 +33,15 @@ def _big_project() -> dict:
                 {"from": {"node": f"and{i}", "pin": "OUT"}, "to": {"node": f"q{i}", "pin": "IN"}},
             ],
         }
+
     declarations = "VAR\n" + "".join(f"  a{i}, b{i}, q{i} : BOOL;\n" for i in range(10)) + "END_VAR"
-    main = {"name": "Main", "kind": "program", "language": "fbd", "declarations": declarations,
-            "body": {"networks": [network(i) for i in range(NETWORKS)]}}
+    main = {
+        "name": "Main",
+        "kind": "program",
+        "language": "fbd",
+        "declarations": declarations,
+        "body": {"networks": [network(i) for i in range(NETWORKS)]},
+    }
     return {"name": "bigfbd", "pous": [main]}
 
 
@@ -55,8 +61,10 @@ def test_a_1000_network_fbd_pou_opens_and_mounts_only_what_is_near_view(page, se
     page.locator('.fbd-node[data-node="and0"] .fbd-order').wait_for()
     badges = time.perf_counter() - start
     mounted = page.locator(".react-flow").count()
-    print(f"1,000-network FBD POU opened in {opened * 1000:.0f} ms, order badges after {badges * 1000:.0f} ms; {mounted} canvases mounted, "
-          f"{len(orders)} order requests")
+    print(
+        f"1,000-network FBD POU opened in {opened * 1000:.0f} ms, order badges after {badges * 1000:.0f} ms; {mounted} canvases mounted, "
+        f"{len(orders)} order requests"
+    )
     assert page.locator(".fbd-network").count() == NETWORKS
     assert 0 < mounted < 30, mounted
     assert 0 < len(orders) < 30, len(orders)

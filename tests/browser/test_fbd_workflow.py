@@ -36,7 +36,9 @@ def drag_to(page, source, target) -> None:
 
 
 def drop_from_palette(page, label: str, canvas, x: int, y: int) -> None:
-    page.get_by_role("toolbar", name="FBD editing").get_by_role("button", name=label, exact=True).drag_to(canvas, target_position={"x": x, "y": y})
+    page.get_by_role("toolbar", name="FBD editing").get_by_role("button", name=label, exact=True).drag_to(
+        canvas, target_position={"x": x, "y": y}
+    )
 
 
 def name_and_declare(page, label: str, name: str, declare_as: str | None) -> None:
@@ -69,7 +71,11 @@ def test_new_user_builds_and_runs_an_fbd_calculation(page, server):
     name_and_declare(page, "Output variable", "result", "INT")
     nodes = {n.get_attribute("data-node"): n.inner_text() for n in editor.locator(".fbd-node").all()}
     assert [(k, v.split("\n")[-1].strip()) for k, v in nodes.items() if k.startswith(("in", "out"))] == [
-        ("in1", "var1"), ("in2", "var2"), ("in3", "var3"), ("out1", "result")]
+        ("in1", "var1"),
+        ("in2", "var2"),
+        ("in3", "var3"),
+        ("out1", "result"),
+    ]
 
     # Move the output node right by dragging it (its position is a layout hint in the model).
     result_box = editor.locator('.fbd-node[data-node="out1"] .fbd-text').bounding_box()
@@ -81,8 +87,13 @@ def test_new_user_builds_and_runs_an_fbd_calculation(page, server):
     assert shift > 30
 
     # Wire with the mouse: output handles onto input handles.
-    for src, dst in (("in1", ("blk1", "in:IN1")), ("in2", ("blk1", "in:IN2")), ("blk1", ("blk2", "in:IN1")),
-                     ("in3", ("blk2", "in:IN2")), ("blk2", ("out1", "in:IN"))):
+    for src, dst in (
+        ("in1", ("blk1", "in:IN1")),
+        ("in2", ("blk1", "in:IN2")),
+        ("blk1", ("blk2", "in:IN1")),
+        ("in3", ("blk2", "in:IN2")),
+        ("blk2", ("out1", "in:IN")),
+    ):
         drag_to(page, handle(page, src, "out:OUT"), handle(page, *dst))
     assert editor.locator(".react-flow__edge").count() == 5
     # A second wire into SUB.IN1 is refused, with the reason: as a tooltip while dragging, then as a message.
@@ -109,8 +120,13 @@ def test_new_user_builds_and_runs_an_fbd_calculation(page, server):
         main = json.load(response)["project"]["pous"][0]
     network = main["body"]["networks"][0]
     wires = {(w["from"]["node"], w["to"]["node"], w["to"]["pin"]) for w in network["wires"]}
-    assert wires == {("in1", "blk1", "IN1"), ("in2", "blk1", "IN2"), ("blk1", "blk2", "IN1"), ("in3", "blk2", "IN2"),
-                     ("blk2", "out1", "IN")}
+    assert wires == {
+        ("in1", "blk1", "IN1"),
+        ("in2", "blk1", "IN2"),
+        ("blk1", "blk2", "IN1"),
+        ("in3", "blk2", "IN2"),
+        ("blk2", "out1", "IN"),
+    }
     assert [n.get("call") for n in network["nodes"] if n["type"] == "block"] == ["ADD", "SUB"]
     # dropped 660 px into the canvas, whose origin is 12 px in (NetworkCanvas ORIGIN), at zoom 1
     assert [n["pos"]["x"] for n in network["nodes"] if n["id"] == "out1"] == [660 - 12 + shift]

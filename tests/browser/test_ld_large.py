@@ -19,15 +19,32 @@ NETWORKS = 1000
 
 
 def _big_project() -> dict:
-    networks = [{"id": f"n{i}", "elements": [
-        {"type": "contact", "id": f"c{i}", "var": f"a{i % 10}"},
-        {"type": "parallel", "id": f"p{i}", "branches": [
-            [{"type": "contact", "id": f"d{i}", "var": f"b{i % 10}", "mode": "nc"}],
-            [{"type": "contact", "id": f"e{i}", "var": f"q{i % 10}"}]]},
-        {"type": "coil", "id": f"q{i}", "var": f"q{i % 10}"}]} for i in range(NETWORKS)]
+    networks = [
+        {
+            "id": f"n{i}",
+            "elements": [
+                {"type": "contact", "id": f"c{i}", "var": f"a{i % 10}"},
+                {
+                    "type": "parallel",
+                    "id": f"p{i}",
+                    "branches": [
+                        [{"type": "contact", "id": f"d{i}", "var": f"b{i % 10}", "mode": "nc"}],
+                        [{"type": "contact", "id": f"e{i}", "var": f"q{i % 10}"}],
+                    ],
+                },
+                {"type": "coil", "id": f"q{i}", "var": f"q{i % 10}"},
+            ],
+        }
+        for i in range(NETWORKS)
+    ]
     declarations = "VAR\n" + "".join(f"  a{i}, b{i}, q{i} : BOOL;\n" for i in range(10)) + "END_VAR"
-    main = {"name": "Main", "kind": "program", "language": "ld", "declarations": declarations,
-            "body": {"networks": networks}}
+    main = {
+        "name": "Main",
+        "kind": "program",
+        "language": "ld",
+        "declarations": declarations,
+        "body": {"networks": networks},
+    }
     return {"name": "big", "pous": [main]}
 
 

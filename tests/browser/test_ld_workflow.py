@@ -27,17 +27,22 @@ OFF = re.compile(r"\bld-off\b")
 
 def element(page, kind: str, operand: str):
     """The diagram element of ``kind`` (contact/coil) whose operand reads ``operand``."""
-    return page.locator(f"g.ld-element.ld-{kind}").filter(has=page.locator("g.ld-operand > text", has_text=re.compile(f"^{operand}$")))
+    return page.locator(f"g.ld-element.ld-{kind}").filter(
+        has=page.locator("g.ld-operand > text", has_text=re.compile(f"^{operand}$"))
+    )
 
 
 def rung(page) -> list[tuple[str, str]]:
     """What the diagram shows, in drawing order: each element's kind and mode with its operand."""
-    return [tuple(item) for item in page.eval_on_selector_all(
-        "g.ld-element",
-        """els => els.map(e => [
+    return [
+        tuple(item)
+        for item in page.eval_on_selector_all(
+            "g.ld-element",
+            """els => els.map(e => [
             [...e.classList].filter(c => c.startsWith('ld-') && !['ld-element', 'ld-selected'].includes(c)).join(' '),
             e.querySelector(':scope > g.ld-operand > text')?.textContent ?? ''])""",
-    )]
+        )
+    ]
 
 
 def _served(url: str) -> bool:

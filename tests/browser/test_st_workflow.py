@@ -105,7 +105,9 @@ def test_new_user_writes_an_st_fb_fixes_a_typo_and_watches_it_run(page, server):
     options.first.wait_for()
     assert options.all_inner_texts() == ["Enable", "Count"]
     page.keyboard.type("Co")
-    page.wait_for_function("() => document.querySelectorAll('.cm-tooltip-autocomplete .cm-completionLabel').length === 1")
+    page.wait_for_function(
+        "() => document.querySelectorAll('.cm-tooltip-autocomplete .cm-completionLabel').length === 1"
+    )
     assert options.all_inner_texts() == ["Count"]
     page.keyboard.press("Enter")
     page.keyboard.type(";")

@@ -64,9 +64,22 @@ def _open_project(page, server: str, name: str) -> None:
 
 
 def test_a_trace_of_a_ton_shows_q_rising_pt_after_its_input(page, server):
-    store_project(server, {"name": "timer", "pous": [{"name": "Main", "kind": "program", "language": "st",
-                                                      "declarations": TIMER_DECLARATIONS, "body": TIMER_BODY}],
-                           "tasks": [{"name": "Fast", "interval": f"T#{SCAN_MS}ms", "programs": ["Main"]}]})
+    store_project(
+        server,
+        {
+            "name": "timer",
+            "pous": [
+                {
+                    "name": "Main",
+                    "kind": "program",
+                    "language": "st",
+                    "declarations": TIMER_DECLARATIONS,
+                    "body": TIMER_BODY,
+                }
+            ],
+            "tasks": [{"name": "Fast", "interval": f"T#{SCAN_MS}ms", "programs": ["Main"]}],
+        },
+    )
     _open_project(page, server, "timer")
     _online(page)
 
@@ -75,7 +88,8 @@ def test_a_trace_of_a_ton_shows_q_rising_pt_after_its_input(page, server):
     offered = page.locator("#trace-candidates option")
     page.wait_for_function("() => document.querySelectorAll('#trace-candidates option').length >= 6")
     assert {"Main.Go", "Main.Q", "Main.ET", "Main.Timer.Q", "Main.Timer.ET"} <= set(
-        offered.evaluate_all("options => options.map(o => o.value)"))
+        offered.evaluate_all("options => options.map(o => o.value)")
+    )
     for path in ("Main.Q", "Main.ET"):
         page.get_by_label("Variable to trace").fill(path)
         page.keyboard.press("Enter")
@@ -123,8 +137,10 @@ def test_a_trace_of_a_ton_shows_q_rising_pt_after_its_input(page, server):
     page.get_by_label("Table").check()
     rows = page.get_by_role("table", name="Trace samples").locator("tbody tr")
     assert rows.count() == SAMPLES
-    table = [row.split("\t") for row in rows.evaluate_all(
-        "rows => rows.map(r => [...r.children].map(c => c.textContent).join('\\t'))")]
+    table = [
+        row.split("\t")
+        for row in rows.evaluate_all("rows => rows.map(r => [...r.children].map(c => c.textContent).join('\\t'))")
+    ]
     edge = next(row for row in table if row[2] == "TRUE")
     assert abs(float(edge[0]) - PT_MS) <= SCAN_MS, edge
     assert table[0][:3] == ["0", table[0][1], "FALSE"] and table[0][3] == "0"  # the trigger's scan: ET starts

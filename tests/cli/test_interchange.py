@@ -37,7 +37,7 @@ def test_import_reports_hostile_xml_with_its_file(tmp_path: Path, capsys) -> Non
 
 def test_export_plcopen_to_stdout(capsys) -> None:
     assert main(["export", "plcopen", str(EXAMPLES / "motor")]) == 0
-    assert "<pou name=\"Main\"" in capsys.readouterr().out
+    assert '<pou name="Main"' in capsys.readouterr().out
 
 
 def test_export_st_of_one_pou_and_of_the_whole_project(tmp_path: Path, capsys) -> None:
@@ -51,9 +51,29 @@ def test_export_st_of_one_pou_and_of_the_whole_project(tmp_path: Path, capsys) -
     runs = []
     for project in (EXAMPLES / "motor", out):
         capsys.readouterr()
-        assert main(["run", str(project), "--cycles", "520", "--set", "Start=TRUE", "--set", "Start=FALSE@3",
-                     "--watch", "Motor", "--watch", "Main.MotorRunning", "--watch", "StartCount",
-                     "--format", "jsonl"]) == 0
+        assert (
+            main(
+                [
+                    "run",
+                    str(project),
+                    "--cycles",
+                    "520",
+                    "--set",
+                    "Start=TRUE",
+                    "--set",
+                    "Start=FALSE@3",
+                    "--watch",
+                    "Motor",
+                    "--watch",
+                    "Main.MotorRunning",
+                    "--watch",
+                    "StartCount",
+                    "--format",
+                    "jsonl",
+                ]
+            )
+            == 0
+        )
         runs.append(capsys.readouterr().out)
     assert runs[0] == runs[1]
     assert '"Main.MotorRunning": true' in runs[0]  # 5 s of Motor reached within the run

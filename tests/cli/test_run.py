@@ -37,8 +37,23 @@ def run(capsys, tmp_path: Path, source: str, *args: str) -> tuple[int, str, str]
 
 
 def test_jsonl_reports_every_scan_with_virtual_time_and_the_paths_as_given(capsys, tmp_path):
-    code, out, _ = run(capsys, tmp_path, TIMER, "--cycles", "5", "--set", "Main.start=TRUE@1",
-                       "--watch", "Main.lamp", "--watch", "main.T1.et", "--watch", "Main.n", "--format", "jsonl")
+    code, out, _ = run(
+        capsys,
+        tmp_path,
+        TIMER,
+        "--cycles",
+        "5",
+        "--set",
+        "Main.start=TRUE@1",
+        "--watch",
+        "Main.lamp",
+        "--watch",
+        "main.T1.et",
+        "--watch",
+        "Main.n",
+        "--format",
+        "jsonl",
+    )
     assert code == 0
     rows = [json.loads(line) for line in out.splitlines()]
     assert rows == [
@@ -51,28 +66,52 @@ def test_jsonl_reports_every_scan_with_virtual_time_and_the_paths_as_given(capsy
 
 
 def test_for_runs_every_scan_due_within_the_duration_and_strings_print_as_strings(capsys, tmp_path):
-    code, out, _ = run(capsys, tmp_path, TIMER, "--for", "T#30ms", "--set", "Main.label='on'",
-                       "--watch", "Main.label", "--format", "jsonl")
+    code, out, _ = run(
+        capsys,
+        tmp_path,
+        TIMER,
+        "--for",
+        "T#30ms",
+        "--set",
+        "Main.label='on'",
+        "--watch",
+        "Main.label",
+        "--format",
+        "jsonl",
+    )
     assert code == 0
     assert [json.loads(line) for line in out.splitlines()] == [
-        {"scan": 0, "time_ms": 10, "Main.label": "on"}, {"scan": 1, "time_ms": 20, "Main.label": "on"},
-        {"scan": 2, "time_ms": 30, "Main.label": "on"}]
+        {"scan": 0, "time_ms": 10, "Main.label": "on"},
+        {"scan": 1, "time_ms": 20, "Main.label": "on"},
+        {"scan": 2, "time_ms": 30, "Main.label": "on"},
+    ]
 
 
 def test_table_format_has_a_header_and_aligned_rows(capsys, tmp_path):
     code, out, _ = run(capsys, tmp_path, TIMER, "--cycles", "2", "--watch", "Main.n", "--watch", "Main.lamp")
     assert code == 0
-    assert out.splitlines() == ["scan  time_ms  Main.n  Main.lamp",
-                                "0     10       32767   false",
-                                "1     20       -32768  false"]
+    assert out.splitlines() == [
+        "scan  time_ms  Main.n  Main.lamp",
+        "0     10       32767   false",
+        "1     20       -32768  false",
+    ]
 
 
 def test_without_watch_every_variable_is_reported(capsys, tmp_path):
     code, out, _ = run(capsys, tmp_path, TIMER, "--format", "jsonl")
     assert code == 0
-    assert json.loads(out) == {"scan": 0, "time_ms": 10, "MAIN.START": False, "MAIN.T1.IN": False,
-                               "MAIN.T1.PT": 30, "MAIN.T1.Q": False, "MAIN.T1.ET": 0, "MAIN.N": 32767,
-                               "MAIN.LAMP": False, "MAIN.LABEL": "x"}
+    assert json.loads(out) == {
+        "scan": 0,
+        "time_ms": 10,
+        "MAIN.START": False,
+        "MAIN.T1.IN": False,
+        "MAIN.T1.PT": 30,
+        "MAIN.T1.Q": False,
+        "MAIN.T1.ET": 0,
+        "MAIN.N": 32767,
+        "MAIN.LAMP": False,
+        "MAIN.LABEL": "x",
+    }
 
 
 def test_runtime_error_stops_with_exit_3_and_the_location(capsys, tmp_path):
@@ -89,12 +128,15 @@ def test_compile_errors_exit_1_with_located_diagnostics(capsys, tmp_path):
     assert "Main/body:3:6" in err and "unknown variable 'y'" in err
 
 
-@pytest.mark.parametrize("args, message", [
-    (["--watch", "Main.nope"], "nope"),
-    (["--set", "Main.n=40000"], "40000 is out of range for INT"),
-    (["--set", "Main.n"], "expected PATH=VALUE"),
-    (["--for", "soon"], "expected a duration"),
-])
+@pytest.mark.parametrize(
+    "args, message",
+    [
+        (["--watch", "Main.nope"], "nope"),
+        (["--set", "Main.n=40000"], "40000 is out of range for INT"),
+        (["--set", "Main.n"], "expected PATH=VALUE"),
+        (["--for", "soon"], "expected a duration"),
+    ],
+)
 def test_bad_paths_values_and_options_are_usage_errors(capsys, tmp_path, args, message):
     code, _, err = run(capsys, tmp_path, TIMER, *args)
     assert code == 2
@@ -102,8 +144,20 @@ def test_bad_paths_values_and_options_are_usage_errors(capsys, tmp_path, args, m
 
 
 def test_example_project_runs(capsys):
-    code = main(["run", str(EXAMPLES / "motor"), "--cycles", "3", "--set", "Start=TRUE", "--watch", "Motor",
-                 "--format", "jsonl"])
+    code = main(
+        [
+            "run",
+            str(EXAMPLES / "motor"),
+            "--cycles",
+            "3",
+            "--set",
+            "Start=TRUE",
+            "--watch",
+            "Motor",
+            "--format",
+            "jsonl",
+        ]
+    )
     out, _ = capsys.readouterr()
     assert code == 0
     assert [json.loads(line)["Motor"] for line in out.splitlines()] == [True, True, True]
@@ -118,9 +172,11 @@ def test_compile_emits_the_generated_python(capsys, tmp_path):
     assert "class P_MAIN" in source and "# line 10" in source
 
 
-@given(path=st.from_regex(r"[A-Za-z_][A-Za-z0-9_.\[\]]{0,20}", fullmatch=True),
-       value=st.text(min_size=1, max_size=12).filter(lambda v: v.strip() == v and "=" not in v and "@" not in v),
-       scan=st.integers(0, 10_000))
+@given(
+    path=st.from_regex(r"[A-Za-z_][A-Za-z0-9_.\[\]]{0,20}", fullmatch=True),
+    value=st.text(min_size=1, max_size=12).filter(lambda v: v.strip() == v and "=" not in v and "@" not in v),
+    scan=st.integers(0, 10_000),
+)
 def test_parse_set_round_trips(path, value, scan):
     assert parse_set(f"{path}={value}@{scan}") == SetAction(path, value, scan)
     assert parse_set(f"{path}={value}") == SetAction(path, value, 0)
@@ -128,4 +184,9 @@ def test_parse_set_round_trips(path, value, scan):
 
 def test_parse_duration_forms():
     assert [parse_duration(t) for t in ("2s", "T#2s", "500ms", "1m30s", "time#1h")] == [
-        2000, 2000, 500, 90_000, 3_600_000]
+        2000,
+        2000,
+        500,
+        90_000,
+        3_600_000,
+    ]

@@ -45,6 +45,7 @@ def fb(name: str) -> t.FbInstance:
 
 # ------------------------------------------------------------------ expressions
 
+
 def c(value: object, ty: t.IrType) -> ir.Const:
     return ir.Const(value, ty)
 
@@ -72,17 +73,48 @@ def binop(op: str, left: ir.Expr, right: ir.Expr) -> ir.Binary:
     return ir.Binary(op, left, right, BOOL if op in _COMPARISONS else left.type)  # type: ignore[arg-type]
 
 
-def add(a, b): return binop("ADD", a, b)
-def sub(a, b): return binop("SUB", a, b)
-def mul(a, b): return binop("MUL", a, b)
-def div(a, b): return binop("DIV", a, b)
-def and_(a, b): return binop("AND", a, b)
-def or_(a, b): return binop("OR", a, b)
-def gt(a, b): return binop("GT", a, b)
-def ge(a, b): return binop("GE", a, b)
-def lt(a, b): return binop("LT", a, b)
-def eq(a, b): return binop("EQ", a, b)
-def ne(a, b): return binop("NE", a, b)
+def add(a, b):
+    return binop("ADD", a, b)
+
+
+def sub(a, b):
+    return binop("SUB", a, b)
+
+
+def mul(a, b):
+    return binop("MUL", a, b)
+
+
+def div(a, b):
+    return binop("DIV", a, b)
+
+
+def and_(a, b):
+    return binop("AND", a, b)
+
+
+def or_(a, b):
+    return binop("OR", a, b)
+
+
+def gt(a, b):
+    return binop("GT", a, b)
+
+
+def ge(a, b):
+    return binop("GE", a, b)
+
+
+def lt(a, b):
+    return binop("LT", a, b)
+
+
+def eq(a, b):
+    return binop("EQ", a, b)
+
+
+def ne(a, b):
+    return binop("NE", a, b)
 
 
 def not_(a: ir.Expr) -> ir.Unary:
@@ -93,8 +125,9 @@ def neg(a: ir.Expr) -> ir.Unary:
     return ir.Unary("NEG", a, a.type)
 
 
-def call(function: str, *args: ir.Expr, type: t.IrType | None = None, user: bool = False,
-         in_outs: tuple[ir.Var, ...] = ()) -> ir.Call:
+def call(
+    function: str, *args: ir.Expr, type: t.IrType | None = None, user: bool = False, in_outs: tuple[ir.Var, ...] = ()
+) -> ir.Call:
     return ir.Call(function, tuple(args), tuple(a.type for a in args), type or args[0].type, user, tuple(in_outs))
 
 
@@ -104,7 +137,10 @@ def conv(e: ir.Expr, to: t.IrType) -> ir.Convert:
 
 # ------------------------------------------------------------------ statements
 
-def at(line: int | None = None, *, network: str | None = None, element: str | None = None, column: int = 1) -> ir.Origin:
+
+def at(
+    line: int | None = None, *, network: str | None = None, element: str | None = None, column: int = 1
+) -> ir.Origin:
     return ir.Origin(_PENDING, line=line, column=column if line is not None else None, network=network, element=element)
 
 
@@ -140,13 +176,26 @@ def ret() -> ir.Return:
     return ir.Return(at())
 
 
-def fbcall(instance: ir.Var, inputs: dict | None = None, outputs: dict | None = None, *,
-           en: ir.Expr | None = None, eno: ir.Var | None = None, origin: ir.Origin | None = None) -> ir.FbCall:
+def fbcall(
+    instance: ir.Var,
+    inputs: dict | None = None,
+    outputs: dict | None = None,
+    *,
+    en: ir.Expr | None = None,
+    eno: ir.Var | None = None,
+    origin: ir.Origin | None = None,
+) -> ir.FbCall:
     return ir.FbCall(instance, list((inputs or {}).items()), list((outputs or {}).items()), origin or at(), en, eno)
 
 
-def fncall(c_: ir.Call, target: ir.Var | None = None, *, en: ir.Expr | None = None, eno: ir.Var | None = None,
-           origin: ir.Origin | None = None) -> ir.FnCall:
+def fncall(
+    c_: ir.Call,
+    target: ir.Var | None = None,
+    *,
+    en: ir.Expr | None = None,
+    eno: ir.Var | None = None,
+    origin: ir.Origin | None = None,
+) -> ir.FnCall:
     return ir.FnCall(c_, target, origin or at(), en, eno)
 
 
@@ -160,8 +209,16 @@ def probe(element: str, value: ir.Expr) -> ir.Probe:
 
 # ------------------------------------------------------------------ POUs and programs
 
-def slot(name: str, ty: t.IrType, var_class: str = "VAR", initial: object = None, *, retain: bool = False,
-         hidden: bool = False) -> ir.Slot:
+
+def slot(
+    name: str,
+    ty: t.IrType,
+    var_class: str = "VAR",
+    initial: object = None,
+    *,
+    retain: bool = False,
+    hidden: bool = False,
+) -> ir.Slot:
     return ir.Slot(name, var_class, ty, initial, retain=retain, hidden=hidden)  # type: ignore[arg-type]
 
 
@@ -173,8 +230,15 @@ def network(name: str, statements: list, label: str | None = None) -> ir.Block:
     return ir.Block(list(statements), ir.Origin(_PENDING, network=name), label)
 
 
-def pou(name: str, slots: list[ir.Slot], body: list, *, kind: str = "program", return_type: t.IrType | None = None,
-        language: str | None = None) -> ir.Pou:
+def pou(
+    name: str,
+    slots: list[ir.Slot],
+    body: list,
+    *,
+    kind: str = "program",
+    return_type: t.IrType | None = None,
+    language: str | None = None,
+) -> ir.Pou:
     """A POU; ``body`` is a list of statements (one ST block) or of network Blocks."""
     blocks = body if body and isinstance(body[0], ir.Block) else [ir.Block(list(body), ir.Origin(_PENDING, line=1))]
     line = 0
@@ -195,8 +259,9 @@ def pou(name: str, slots: list[ir.Slot], body: list, *, kind: str = "program", r
 def _fill(origin: ir.Origin, pou_name: str, line: int | None) -> ir.Origin:
     if origin.pou != _PENDING:
         return origin
-    return ir.Origin(pou_name, line=line, column=1 if line is not None else None, network=origin.network,
-                     element=origin.element)
+    return ir.Origin(
+        pou_name, line=line, column=1 if line is not None else None, network=origin.network, element=origin.element
+    )
 
 
 def _statements(statements: list):

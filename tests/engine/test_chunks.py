@@ -35,11 +35,20 @@ def chunk_size(size: int) -> Iterator[None]:
 
 
 # A block: (label or None, what ends it: None | ("jump", target block, input bit or None) | ("return", bit))
-blocks_strategy = st.integers(2, 9).flatmap(lambda n: st.lists(
-    st.tuples(st.booleans(),
-              st.one_of(st.none(), st.tuples(st.just("jump"), st.integers(0, n - 1), st.one_of(st.none(), st.integers(0, 2))),
-                        st.tuples(st.just("return"), st.integers(0, 2)))),
-    min_size=n, max_size=n))
+blocks_strategy = st.integers(2, 9).flatmap(
+    lambda n: st.lists(
+        st.tuples(
+            st.booleans(),
+            st.one_of(
+                st.none(),
+                st.tuples(st.just("jump"), st.integers(0, n - 1), st.one_of(st.none(), st.integers(0, 2))),
+                st.tuples(st.just("return"), st.integers(0, 2)),
+            ),
+        ),
+        min_size=n,
+        max_size=n,
+    )
+)
 
 
 def _program(spec):
@@ -72,8 +81,7 @@ def _trace(program, variant: str, inputs: list[int]) -> list[tuple]:
         sim.cycle()
         assert sim.fault is None, sim.fault
         names = sorted(k for k in sim.snapshot() if k.startswith("MAIN.X"))
-        rows.append((tuple(sim.read(n) for n in names),
-                     sim.probes("MAIN") if variant != "fast" else None))
+        rows.append((tuple(sim.read(n) for n in names), sim.probes("MAIN") if variant != "fast" else None))
     return rows
 
 
@@ -131,8 +139,13 @@ def test_every_compiled_function_starts_at_its_def_line_in_the_source():
     lines = compiled.source.splitlines()
     namespace = compiled.namespace()
     functions = [f for f in namespace.values() if isinstance(f, FunctionType)]
-    functions += [f for cls in namespace.values() if isinstance(cls, type) for f in vars(cls).values()
-                  if isinstance(f, FunctionType)]
+    functions += [
+        f
+        for cls in namespace.values()
+        if isinstance(cls, type)
+        for f in vars(cls).values()
+        if isinstance(f, FunctionType)
+    ]
     functions = [f for f in functions if f.__code__.co_filename == compiled.filename]  # not the runtime's
     assert {f.__name__ for f in functions} >= {"ll_k0_MAIN", "ll_k2_MAIN", "ll_x_MAIN", "ll_init", "__init__"}
     for f in functions:

@@ -66,8 +66,15 @@ def test_integer_store_wraps_at_every_width(name):
     ty = T[name]
     lo, hi = int_range(name)
     up, down = v("UP", ty), v("DOWN", ty)
-    sim = Simulation(prog(pou("MAIN", [slot("UP", ty, initial=hi - 1), slot("DOWN", ty, initial=lo + 1)],
-                              [assign(up, add(up, c(1, ty))), assign(down, sub(down, c(1, ty)))])))
+    sim = Simulation(
+        prog(
+            pou(
+                "MAIN",
+                [slot("UP", ty, initial=hi - 1), slot("DOWN", ty, initial=lo + 1)],
+                [assign(up, add(up, c(1, ty))), assign(down, sub(down, c(1, ty)))],
+            )
+        )
+    )
     seen = []
     for _ in range(3):
         sim.cycle()
@@ -94,10 +101,14 @@ def test_negation_wraps(name):
 def test_real_results_are_rounded_to_float32_and_equal_the_literal_st43():
     """ST-43: 11.2 stored in a REAL equals the REAL literal 11.2; REAL arithmetic rounds every result."""
     r, s, same = v("R", REAL), v("S", REAL), v("SAME", BOOL)
-    body = [assign(r, c(11.2, REAL)), assign(s, mul(c(0.1, REAL), c(3.0, REAL))),
-            assign(same, binop("EQ", r, c(11.2, REAL)))]
-    value, product, equal = one_scan([slot("R", REAL), slot("S", REAL), slot("SAME", BOOL)], body,
-                                     ["MAIN.R", "MAIN.S", "MAIN.SAME"])
+    body = [
+        assign(r, c(11.2, REAL)),
+        assign(s, mul(c(0.1, REAL), c(3.0, REAL))),
+        assign(same, binop("EQ", r, c(11.2, REAL))),
+    ]
+    value, product, equal = one_scan(
+        [slot("R", REAL), slot("S", REAL), slot("SAME", BOOL)], body, ["MAIN.R", "MAIN.S", "MAIN.SAME"]
+    )
     assert value == f32(11.2) != 11.2 and equal is True
     assert product == f32(f32(0.1) * 3.0) and is_float32(product)
 
@@ -109,29 +120,32 @@ def test_lreal_keeps_double_precision():
 
 def test_real_overflow_is_infinity_and_nan_is_kept():
     big, nan = v("BIG", REAL), v("NAN", REAL)
-    body = [assign(big, mul(c(3e38, REAL), c(10.0, REAL))),
-            assign(nan, call("SQRT", c(-1.0, REAL)))]
+    body = [assign(big, mul(c(3e38, REAL), c(10.0, REAL))), assign(nan, call("SQRT", c(-1.0, REAL)))]
     value, not_a_number = one_scan([slot("BIG", REAL), slot("NAN", REAL)], body, ["MAIN.BIG", "MAIN.NAN"])
     assert value == math.inf and math.isnan(not_a_number)
 
 
-@pytest.mark.parametrize(("function", "source", "value", "target", "expected"), [
-    ("REAL_TO_INT", REAL, 2.5, INT, 2),           # FUN-11: ties to even
-    ("REAL_TO_INT", REAL, 3.5, INT, 4),
-    ("REAL_TO_INT", REAL, -1.6, INT, -2),
-    ("INT_TO_SINT", INT, 200, SINT, -56),          # narrowing wraps
-    ("DINT_TO_USINT", DINT, -1, USINT, 255),
-    ("INT_TO_REAL", INT, 8, REAL, 8.0),            # ST-08
-    ("INT_TO_BOOL", INT, 7, BOOL, True),
-    ("TIME_TO_DINT", TIME, 1500, DINT, 1500),
-    ("INT_TO_STRING", INT, -25, STRING, "-25"),
-    ("STRING_TO_INT", STRING, "123", INT, 123),
-    ("TRUNC", REAL, -4.7, DINT, -4),
-])
+@pytest.mark.parametrize(
+    ("function", "source", "value", "target", "expected"),
+    [
+        ("REAL_TO_INT", REAL, 2.5, INT, 2),  # FUN-11: ties to even
+        ("REAL_TO_INT", REAL, 3.5, INT, 4),
+        ("REAL_TO_INT", REAL, -1.6, INT, -2),
+        ("INT_TO_SINT", INT, 200, SINT, -56),  # narrowing wraps
+        ("DINT_TO_USINT", DINT, -1, USINT, 255),
+        ("INT_TO_REAL", INT, 8, REAL, 8.0),  # ST-08
+        ("INT_TO_BOOL", INT, 7, BOOL, True),
+        ("TIME_TO_DINT", TIME, 1500, DINT, 1500),
+        ("INT_TO_STRING", INT, -25, STRING, "-25"),
+        ("STRING_TO_INT", STRING, "123", INT, 123),
+        ("TRUNC", REAL, -4.7, DINT, -4),
+    ],
+)
 def test_conversion_calls(function, source, value, target, expected):
     x, y = v("X", source), v("Y", target)
-    out = one_scan([slot("X", source, initial=value), slot("Y", target)], [assign(y, call(function, x, type=target))],
-                   ["MAIN.Y"])
+    out = one_scan(
+        [slot("X", source, initial=value), slot("Y", target)], [assign(y, call(function, x, type=target))], ["MAIN.Y"]
+    )
     assert out == [expected]
 
 
@@ -139,8 +153,11 @@ def test_implicit_widening_convert_and_subrange_store_check():
     """A Convert node (implicit widening) keeps the value; storing into a subrange checks the range."""
     sub_t = t.Subrange(INT, 0, 100)
     small, wide, pct = v("SMALL", SINT), v("WIDE", DINT), v("PCT", sub_t)
-    out = one_scan([slot("SMALL", SINT, initial=-100), slot("WIDE", DINT), slot("PCT", sub_t)],
-                   [assign(wide, conv(small, DINT)), assign(pct, c(42, sub_t))], ["MAIN.WIDE", "MAIN.PCT"])
+    out = one_scan(
+        [slot("SMALL", SINT, initial=-100), slot("WIDE", DINT), slot("PCT", sub_t)],
+        [assign(wide, conv(small, DINT)), assign(pct, c(42, sub_t))],
+        ["MAIN.WIDE", "MAIN.PCT"],
+    )
     assert out == [-100, 42]
 
 
@@ -153,23 +170,28 @@ def test_string_store_cuts_to_declared_length_typ04():
 def test_boolean_operators_evaluate_every_operand_and_give_bools():
     a, b, x, y, z = (v(n, BOOL) for n in "ABXYZ")
     body = [assign(x, binop("AND", a, not_(b))), assign(y, binop("XOR", a, b)), assign(z, binop("OR", b, b))]
-    assert one_scan([slot("A", BOOL, initial=True), slot("B", BOOL), *(slot(n, BOOL) for n in "XYZ")], body,
-                    ["MAIN.X", "MAIN.Y", "MAIN.Z"]) == [True, True, False]
+    assert one_scan(
+        [slot("A", BOOL, initial=True), slot("B", BOOL), *(slot(n, BOOL) for n in "XYZ")],
+        body,
+        ["MAIN.X", "MAIN.Y", "MAIN.Z"],
+    ) == [True, True, False]
 
 
 def test_bit_string_not_and_shift():
     w, n, s = v("W", T["WORD"]), v("N", T["WORD"]), v("S", T["WORD"])
     body = [assign(n, not_(w)), assign(s, call("SHL", w, c(4, INT)))]
-    assert one_scan([slot("W", T["WORD"], initial=0x0FF0), slot("N", T["WORD"]), slot("S", T["WORD"])], body,
-                    ["MAIN.N", "MAIN.S"]) == [0xF00F, 0xFF00]
+    assert one_scan(
+        [slot("W", T["WORD"], initial=0x0FF0), slot("N", T["WORD"]), slot("S", T["WORD"])], body, ["MAIN.N", "MAIN.S"]
+    ) == [0xF00F, 0xFF00]
 
 
 def test_constants_are_stored_in_their_type_and_emitted_with_repr():
     """A constant out of its type's range is wrapped at compile time; strings appear via repr only."""
     x, s = v("X", USINT), v("S", STRING)
     text = "'); import os #\n\\"
-    program = prog(pou("MAIN", [slot("X", USINT), slot("S", STRING)],
-                       [assign(x, c(300, USINT)), assign(s, c(text, STRING))]))
+    program = prog(
+        pou("MAIN", [slot("X", USINT), slot("S", STRING)], [assign(x, c(300, USINT)), assign(s, c(text, STRING))])
+    )
     source = emit_python(program)
     assert repr(text) in source and "import os #\n" not in source
     sim = Simulation(program)
@@ -178,6 +200,7 @@ def test_constants_are_stored_in_their_type_and_emitted_with_repr():
 
 
 # ------------------------------------------------------------------ property: random integer expressions
+
 
 @st.composite
 def _tree(draw, name: str, depth: int):

@@ -117,9 +117,7 @@ def test_lossy_conversions_warn_in_the_checked_form(name, arg, expected, code):
     assert value == expected and warning.code == code
 
 
-@pytest.mark.parametrize(
-    "name, arg", [("TRUNC", math.nan), ("TRUNC", -math.inf)]
-)
+@pytest.mark.parametrize("name, arg", [("TRUNC", math.nan), ("TRUNC", -math.inf)])
 def test_trunc_of_non_finite_is_zero_with_a_warning(name, arg):
     assert make_function(name, ["LREAL"], "DINT", checked=True)(arg)[0] == 0
     assert make_function(name, ["LREAL"], "DINT", checked=True)(arg)[1].code == INVALID_ARGUMENT

@@ -40,11 +40,17 @@ A, B, X, Y = v("A", INT), v("B", INT), v("X", INT), v("Y", INT)
 
 def _st_program():
     """MAIN (ST): line 1 A := A + 1; line 2 B := DOUBLE(A); line 3 X := X + 1. DOUBLE: line 1 and 2."""
-    double = function("DOUBLE", INT, [slot("N", INT, "VAR_INPUT"), slot("T", INT)],
-                      [assign(v("T", INT), add(v("N", INT), v("N", INT))), assign(v("DOUBLE", INT), v("T", INT))])
-    main = pou("MAIN", [slot("A", INT), slot("B", INT), slot("X", INT)],
-               [assign(A, add(A, c(1, INT))), assign(B, call("DOUBLE", A, type=INT, user=True)),
-                assign(X, add(X, c(1, INT)))])
+    double = function(
+        "DOUBLE",
+        INT,
+        [slot("N", INT, "VAR_INPUT"), slot("T", INT)],
+        [assign(v("T", INT), add(v("N", INT), v("N", INT))), assign(v("DOUBLE", INT), v("T", INT))],
+    )
+    main = pou(
+        "MAIN",
+        [slot("A", INT), slot("B", INT), slot("X", INT)],
+        [assign(A, add(A, c(1, INT))), assign(B, call("DOUBLE", A, type=INT, user=True)), assign(X, add(X, c(1, INT)))],
+    )
     return prog(main, double)
 
 
@@ -53,14 +59,28 @@ def _ld_program():
     in1, in2, out1, skip, n = v("IN1", BOOL), v("IN2", BOOL), v("OUT1", BOOL), v("SKIP", BOOL), v("N", INT)
     flow = v("__E2", BOOL)
     blocks = [
-        network("N1", [probe("E1", in1), assign(flow, and_(in1, not_(in2))), probe("E2", flow), assign(out1, flow),
-                       probe("E3", flow)]),
+        network(
+            "N1",
+            [
+                probe("E1", in1),
+                assign(flow, and_(in1, not_(in2))),
+                probe("E2", flow),
+                assign(out1, flow),
+                probe("E3", flow),
+            ],
+        ),
         network("N2", [probe("E4", skip), jump("END", skip)]),
         network("N3", [assign(n, add(n, c(1, INT))), probe("E5", c(True, BOOL)), probe("E5.OUT", n)]),
         network("N4", [probe("E6", out1)], label="END"),
     ]
-    slots = [slot("IN1", BOOL, initial=True), slot("IN2", BOOL), slot("OUT1", BOOL), slot("SKIP", BOOL),
-             slot("N", INT), slot("__E2", BOOL, hidden=True)]
+    slots = [
+        slot("IN1", BOOL, initial=True),
+        slot("IN2", BOOL),
+        slot("OUT1", BOOL),
+        slot("SKIP", BOOL),
+        slot("N", INT),
+        slot("__E2", BOOL, hidden=True),
+    ]
     return prog(pou("MAIN", slots, blocks))
 
 
@@ -79,8 +99,11 @@ def test_the_fast_variant_has_no_probe_or_pause_code_and_the_monitor_variant_no_
 def test_the_fast_variant_drops_an_if_that_only_guards_probes_but_keeps_one_whose_test_can_fault():
     """A box's EN-guarded probes leave nothing to run in the fast variant; an index in the test may fault, so it stays."""
     en, i = v("EN", BOOL), v("I", INT)
-    main = pou("MAIN", [slot("EN", BOOL), slot("ARR", array(BOOL, (1, 2))), slot("I", INT), slot("N", INT)], [
-        network("N1", [if_((en, [probe("B1.OUT", v("N", INT))])), if_((v("ARR", BOOL, ix(i)), [probe("B2", en)]))])])
+    main = pou(
+        "MAIN",
+        [slot("EN", BOOL), slot("ARR", array(BOOL, (1, 2))), slot("I", INT), slot("N", INT)],
+        [network("N1", [if_((en, [probe("B1.OUT", v("N", INT))])), if_((v("ARR", BOOL, ix(i)), [probe("B2", en)]))])],
+    )
     fast = emit_python(prog(main), "fast")
     assert "if self.v_EN" not in fast
     assert fast.count("if ") == 1 and "v_ARR" in fast
@@ -103,14 +126,36 @@ def test_probes_record_values_and_which_elements_ran_this_scan():
 
 def test_probes_of_fb_instances_and_functions():
     q = v("Q", BOOL)
-    user = pou("BLINK", [slot("Q", BOOL, "VAR_OUTPUT")], [network("N1", [assign(q, not_(q)), probe("C1", q)])],
-               kind="function_block")
-    neg = function("ISNEG", BOOL, [slot("X", INT, "VAR_INPUT")],
-                   [network("N1", [assign(v("ISNEG", BOOL), call("LT", v("X", INT), c(0, INT), type=BOOL)),
-                                   probe("LT1", v("ISNEG", BOOL))])])
-    main = pou("MAIN", [slot("F1", fb("BLINK")), slot("F2", fb("BLINK")), slot("R", BOOL)],
-               [fbcall(v("F1", fb("BLINK"))), fbcall(v("F2", fb("BLINK"))), fbcall(v("F2", fb("BLINK"))),
-                assign(v("R", BOOL), call("ISNEG", c(-3, INT), type=BOOL, user=True))])
+    user = pou(
+        "BLINK",
+        [slot("Q", BOOL, "VAR_OUTPUT")],
+        [network("N1", [assign(q, not_(q)), probe("C1", q)])],
+        kind="function_block",
+    )
+    neg = function(
+        "ISNEG",
+        BOOL,
+        [slot("X", INT, "VAR_INPUT")],
+        [
+            network(
+                "N1",
+                [
+                    assign(v("ISNEG", BOOL), call("LT", v("X", INT), c(0, INT), type=BOOL)),
+                    probe("LT1", v("ISNEG", BOOL)),
+                ],
+            )
+        ],
+    )
+    main = pou(
+        "MAIN",
+        [slot("F1", fb("BLINK")), slot("F2", fb("BLINK")), slot("R", BOOL)],
+        [
+            fbcall(v("F1", fb("BLINK"))),
+            fbcall(v("F2", fb("BLINK"))),
+            fbcall(v("F2", fb("BLINK"))),
+            assign(v("R", BOOL), call("ISNEG", c(-3, INT), type=BOOL, user=True)),
+        ],
+    )
     sim = Simulation(prog(main, user, neg), variant="debug")
     sim.cycle()
     assert sim.probes("MAIN.F1").values == {"C1": True} and sim.probes("MAIN.F2").values == {"C1": False}
@@ -125,7 +170,12 @@ def test_breakpoint_on_an_st_line_halts_before_the_statement_and_allows_reading_
     assert sim.cycle(5) == 0
     halt = sim.halted
     assert (halt.reason, halt.point.kind, halt.origin.pou, halt.origin.line, halt.instance) == (
-        "breakpoint", "statement", "MAIN", 3, "MAIN")
+        "breakpoint",
+        "statement",
+        "MAIN",
+        3,
+        "MAIN",
+    )
     assert (sim.read("MAIN.A"), sim.read("MAIN.B"), sim.read("MAIN.X")) == (1, 2, 0)
     sim.write("MAIN.X", 10)  # at once while halted
     assert sim.read("MAIN.X") == 10
@@ -167,12 +217,26 @@ def test_probes_of_a_halted_scan_show_its_values_for_what_already_ran():
     sim.cycle()
     view = sim.probes("MAIN")
     assert view.executed == {"E1", "E2", "E3", "E4"}  # N1, N2 ran in this scan, N3 and N4 not yet
-    assert view.values == {"E1": True, "E2": False, "E3": False, "E4": False,  # this scan: IN2 now TRUE
-                           "E5": True, "E5.OUT": 1, "E6": True}  # the last scan's, not run yet
+    assert view.values == {
+        "E1": True,
+        "E2": False,
+        "E3": False,
+        "E4": False,  # this scan: IN2 now TRUE
+        "E5": True,
+        "E5.OUT": 1,
+        "E6": True,
+    }  # the last scan's, not run yet
     sim.clear_breakpoints()
     sim.resume()
-    assert sim.probes("MAIN").values == {"E1": True, "E2": False, "E3": False, "E4": False, "E5": True,
-                                         "E5.OUT": 2, "E6": False}
+    assert sim.probes("MAIN").values == {
+        "E1": True,
+        "E2": False,
+        "E3": False,
+        "E4": False,
+        "E5": True,
+        "E5.OUT": 2,
+        "E6": False,
+    }
 
 
 def test_step_network_in_a_diagram_and_breakpoints_on_networks_and_elements():
@@ -193,8 +257,9 @@ def test_step_network_in_a_diagram_and_breakpoints_on_networks_and_elements():
 def test_halts_name_the_fb_instance():
     n = v("N", INT)
     user = pou("CNT", [slot("N", INT)], [assign(n, add(n, c(1, INT)))], kind="function_block")
-    main = pou("MAIN", [slot("C1", fb("CNT")), slot("C2", fb("CNT"))],
-               [fbcall(v("C1", fb("CNT"))), fbcall(v("C2", fb("CNT")))])
+    main = pou(
+        "MAIN", [slot("C1", fb("CNT")), slot("C2", fb("CNT"))], [fbcall(v("C1", fb("CNT"))), fbcall(v("C2", fb("CNT")))]
+    )
     sim = Simulation(prog(main, user), variant="debug")
     sim.set_breakpoint("CNT", line=1)
     sim.cycle()
@@ -202,11 +267,14 @@ def test_halts_name_the_fb_instance():
     assert sim.resume().instance == "MAIN.C2" and sim.read("MAIN.C1.N") == 1 and sim.read("MAIN.C2.N") == 0
 
 
-@pytest.mark.parametrize(("where", "message"), [
-    ({"line": 9}, "MAIN has no statement at line 9 (possible: 1, 2, 3)"),
-    ({"network": "N1"}, "MAIN has no network 'N1' (possible: none)"),
-    ({"line": 1, "network": "N1"}, "give exactly one of line, network, element"),
-])
+@pytest.mark.parametrize(
+    ("where", "message"),
+    [
+        ({"line": 9}, "MAIN has no statement at line 9 (possible: 1, 2, 3)"),
+        ({"network": "N1"}, "MAIN has no network 'N1' (possible: none)"),
+        ({"line": 1, "network": "N1"}, "give exactly one of line, network, element"),
+    ],
+)
 def test_breakpoint_errors(where, message):
     sim = Simulation(_st_program(), variant="debug")
     with pytest.raises(ValueError) as raised:
@@ -243,24 +311,47 @@ class _Clock:
 
 def test_halted_time_does_not_count_against_the_watchdog_and_faults_work_in_debug():
     i = v("I", INT)
-    main = pou("MAIN", [slot("I", INT), slot("Z", INT), slot("Q", INT)],
-               [assign(i, c(0, INT)), while_(call("LT", i, c(5000, INT), type=BOOL), [assign(i, add(i, c(1, INT)))]),
-                assign(v("Q", INT), div(i, v("Z", INT)))])
+    main = pou(
+        "MAIN",
+        [slot("I", INT), slot("Z", INT), slot("Q", INT)],
+        [
+            assign(i, c(0, INT)),
+            while_(call("LT", i, c(5000, INT), type=BOOL), [assign(i, add(i, c(1, INT)))]),
+            assign(v("Q", INT), div(i, v("Z", INT))),
+        ],
+    )
     clock = _Clock()
     sim = Simulation(prog(main), variant="debug", watchdog_s=0.5, wall_clock=clock)
     sim.set_breakpoint("MAIN", line=2)
     sim.cycle()
     clock.now += 3600.0  # an hour at the breakpoint
     assert sim.resume() is None
-    assert (sim.fault.code, sim.fault.origin.line, sim.fault.values) == ("division_by_zero", 4, {"Q": 0, "I": 5000, "Z": 0})
+    assert (sim.fault.code, sim.fault.origin.line, sim.fault.values) == (
+        "division_by_zero",
+        4,
+        {"Q": 0, "I": 5000, "Z": 0},
+    )
 
 
 def test_the_monitor_variant_reads_probes_of_variables_nothing_writes_later_after_the_scan():
     """codegen/deferred.py: IN1 and the TON's Q are read when asked; OUT1 is written after its first probe."""
     in1, out1, t1 = v("IN1", BOOL), v("OUT1", BOOL), v("T1", fb("TON"))
-    main = pou("MAIN", [slot("IN1", BOOL), slot("OUT1", BOOL), slot("T1", fb("TON"))], [
-        network("N1", [probe("E1", in1), probe("E2", out1), assign(out1, in1),
-                       fbcall(t1, {"IN": in1, "PT": c(20, TIME)}), probe("E3", v("T1", BOOL, m("Q")))])])
+    main = pou(
+        "MAIN",
+        [slot("IN1", BOOL), slot("OUT1", BOOL), slot("T1", fb("TON"))],
+        [
+            network(
+                "N1",
+                [
+                    probe("E1", in1),
+                    probe("E2", out1),
+                    assign(out1, in1),
+                    fbcall(t1, {"IN": in1, "PT": c(20, TIME)}),
+                    probe("E3", v("T1", BOOL, m("Q"))),
+                ],
+            )
+        ],
+    )
     monitor, debug = Simulation(prog(main), variant="monitor"), Simulation(prog(main), variant="debug")
     lines = [line.strip() for line in monitor.compiled.source.splitlines()]
     assert "# ll_pr[0] is read after the scan  # 'E1'" in lines and "ll_pr[1] = self.v_OUT1  # 'E2'" in lines

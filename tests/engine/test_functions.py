@@ -220,7 +220,13 @@ def test_real_division_by_zero_is_ieee_with_a_warning_FUN_31(a, b, expected):
 
 @pytest.mark.parametrize(
     "base, exponent, expected",
-    [(-8.0, 1 / 3, math.nan), (0.0, -1, math.inf), (-0.0, -1, -math.inf), (10.0, 400, math.inf), (-10.0, 401, -math.inf)],
+    [
+        (-8.0, 1 / 3, math.nan),
+        (0.0, -1, math.inf),
+        (-0.0, -1, -math.inf),
+        (10.0, 400, math.inf),
+        (-10.0, 401, -math.inf),
+    ],
 )
 def test_expt_special_cases_never_raise_FUN_33(base, exponent, expected):
     value, warning = checked("EXPT", ["LREAL", "LREAL"], "LREAL", base, exponent)
@@ -232,7 +238,7 @@ def test_expt_special_cases_never_raise_FUN_33(base, exponent, expected):
 def test_overflow_warning_only_in_checked_form_FUN_90(type_name):
     lo, hi = int_range(type_name)
     assert call("ADD", [type_name] * 2, type_name, hi, 1) == lo
-    assert checked("SUB", [type_name] * 2, type_name, lo, 1) [1].code == OVERFLOW
+    assert checked("SUB", [type_name] * 2, type_name, lo, 1)[1].code == OVERFLOW
     assert checked("ADD", [type_name] * 2, type_name, hi, 0) == (hi, None)
 
 
@@ -399,7 +405,13 @@ def test_comparison_vectors_FUN_71(name, args, expected):
 
 @pytest.mark.parametrize(
     "type_name, small, big",
-    [("INT", 3, 5), ("REAL", 3.0, 5.0), ("TIME", 3000, 5000), ("STRING", "abc", "abd"), ("TOD", ms(h=10, m=30), ms(h=10, m=45))],
+    [
+        ("INT", 3, 5),
+        ("REAL", 3.0, 5.0),
+        ("TIME", 3000, 5000),
+        ("STRING", "abc", "abd"),
+        ("TOD", ms(h=10, m=30), ms(h=10, m=45)),
+    ],
 )
 def test_comparisons_on_every_kind_APB_04(type_name, small, big):
     results = {name: call(name, [type_name] * 2, "BOOL", small, big) for name in ("LT", "LE", "GE", "GT", "NE", "EQ")}

@@ -28,7 +28,17 @@ def test_every_function_of_the_issue_is_registered(name):
 
 
 @pytest.mark.parametrize(
-    "name, extensible", [("ADD", True), ("MUL", True), ("AND", True), ("GT", True), ("MUX", True), ("CONCAT", True), ("NE", False), ("SUB", False)]
+    "name, extensible",
+    [
+        ("ADD", True),
+        ("MUL", True),
+        ("AND", True),
+        ("GT", True),
+        ("MUX", True),
+        ("CONCAT", True),
+        ("NE", False),
+        ("SUB", False),
+    ],
 )
 def test_extensibility_FUN_03(name, extensible):
     assert STANDARD_FUNCTIONS[name].extensible is extensible

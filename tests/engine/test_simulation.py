@@ -40,17 +40,38 @@ PCT = t.Subrange(INT, 0, 100)
 def _program():
     """MAIN counts up, copies IN to OUT every scan and runs a TON; globals: a RETAIN and a plain counter."""
     cnt, out, inp = v("COUNT", INT), v("OUT", INT), v("IN", INT)
-    main = pou("MAIN", [
-        slot("COUNT", INT), slot("IN", INT), slot("OUT", INT), slot("T1", fb("TON")),
-        slot("ARR", array(INT, (1, 3)), initial=(1, 2, 3)), slot("GRID", array(BOOL, (0, 1), (0, 1))),
-        slot("P", POINT), slot("COLOR", COLOR), slot("PCT", PCT), slot("R", REAL), slot("D", TIME),
-        slot("S", STRING), slot("HIDDEN", INT, hidden=True)], [
-        assign(cnt, add(cnt, c(1, INT))), assign(out, inp),
-        fbcall(v("T1", fb("TON")), {"IN": c(True, BOOL), "PT": c(25, TIME)}),
-        assign(g("WARM", DINT), add(g("WARM", DINT), c(1, DINT))),
-        assign(g("COLD", DINT), add(g("COLD", DINT), c(1, DINT)))])
-    return prog(main, globals=[slot("WARM", DINT, "VAR_GLOBAL", initial=100, retain=True),
-                               slot("COLD", DINT, "VAR_GLOBAL", initial=100)])
+    main = pou(
+        "MAIN",
+        [
+            slot("COUNT", INT),
+            slot("IN", INT),
+            slot("OUT", INT),
+            slot("T1", fb("TON")),
+            slot("ARR", array(INT, (1, 3)), initial=(1, 2, 3)),
+            slot("GRID", array(BOOL, (0, 1), (0, 1))),
+            slot("P", POINT),
+            slot("COLOR", COLOR),
+            slot("PCT", PCT),
+            slot("R", REAL),
+            slot("D", TIME),
+            slot("S", STRING),
+            slot("HIDDEN", INT, hidden=True),
+        ],
+        [
+            assign(cnt, add(cnt, c(1, INT))),
+            assign(out, inp),
+            fbcall(v("T1", fb("TON")), {"IN": c(True, BOOL), "PT": c(25, TIME)}),
+            assign(g("WARM", DINT), add(g("WARM", DINT), c(1, DINT))),
+            assign(g("COLD", DINT), add(g("COLD", DINT), c(1, DINT))),
+        ],
+    )
+    return prog(
+        main,
+        globals=[
+            slot("WARM", DINT, "VAR_GLOBAL", initial=100, retain=True),
+            slot("COLD", DINT, "VAR_GLOBAL", initial=100),
+        ],
+    )
 
 
 @pytest.fixture
@@ -69,20 +90,23 @@ def test_paths_are_case_insensitive_and_reach_members_elements_and_globals(sim):
     assert sim.read("MAIN.T1")["PT"] == 25
 
 
-@pytest.mark.parametrize(("path", "error", "message"), [
-    ("MAIN.CONUT", UnknownPath, "MAIN has no variable 'CONUT' - did you mean 'COUNT'?"),
-    ("MIAN.COUNT", UnknownPath, "unknown variable or program 'MIAN' - did you mean 'MAIN'?"),
-    ("GVL.WRAM", UnknownPath, "unknown global variable 'WRAM' - did you mean 'WARM'?"),
-    ("MAIN.T1.QQ", UnknownPath, "MAIN.T1 (TON) has no pin 'QQ' - did you mean 'Q'?"),
-    ("MAIN.P.Y", UnknownPath, "MAIN.P (POINT) has no field 'Y'"),
-    ("MAIN.ARR[4]", ValueError, "index 4 of MAIN.ARR is outside 1..3"),
-    ("MAIN.ARR[1, 1]", ValueError, "MAIN.ARR has 1 dimension(s), not 2"),
-    ("MAIN.COUNT.X", ValueError, "MAIN.COUNT is an INT: it has no member 'X'"),
-    ("MAIN.COUNT[1]", ValueError, "MAIN.COUNT is an INT: it cannot be indexed"),
-    ("MAIN.ARR[x]", ValueError, "'MAIN.ARR[x]': array indices must be integers"),
-    ("MAIN..COUNT", ValueError, "'MAIN..COUNT': expected '.name' after MAIN"),
-    ("MAIN.COUNT;", ValueError, "'MAIN.COUNT;' is not a variable path (unexpected ';')"),
-])
+@pytest.mark.parametrize(
+    ("path", "error", "message"),
+    [
+        ("MAIN.CONUT", UnknownPath, "MAIN has no variable 'CONUT' - did you mean 'COUNT'?"),
+        ("MIAN.COUNT", UnknownPath, "unknown variable or program 'MIAN' - did you mean 'MAIN'?"),
+        ("GVL.WRAM", UnknownPath, "unknown global variable 'WRAM' - did you mean 'WARM'?"),
+        ("MAIN.T1.QQ", UnknownPath, "MAIN.T1 (TON) has no pin 'QQ' - did you mean 'Q'?"),
+        ("MAIN.P.Y", UnknownPath, "MAIN.P (POINT) has no field 'Y'"),
+        ("MAIN.ARR[4]", ValueError, "index 4 of MAIN.ARR is outside 1..3"),
+        ("MAIN.ARR[1, 1]", ValueError, "MAIN.ARR has 1 dimension(s), not 2"),
+        ("MAIN.COUNT.X", ValueError, "MAIN.COUNT is an INT: it has no member 'X'"),
+        ("MAIN.COUNT[1]", ValueError, "MAIN.COUNT is an INT: it cannot be indexed"),
+        ("MAIN.ARR[x]", ValueError, "'MAIN.ARR[x]': array indices must be integers"),
+        ("MAIN..COUNT", ValueError, "'MAIN..COUNT': expected '.name' after MAIN"),
+        ("MAIN.COUNT;", ValueError, "'MAIN.COUNT;' is not a variable path (unexpected ';')"),
+    ],
+)
 def test_bad_paths_are_refused_with_a_message(sim, path, error, message):
     with pytest.raises(error) as raised:
         sim.read(path)
@@ -108,11 +132,22 @@ def test_force_holds_the_value_even_against_the_program_on07(sim):
     assert trace(sim, ["MAIN.OUT"], 1) == [(3,)] and sim.forced == {}
 
 
-@pytest.mark.parametrize(("path", "value", "stored"), [
-    ("MAIN.R", "1.5", 1.5), ("MAIN.R", 2, 2.0), ("MAIN.D", "T#1m30s", 90_000), ("MAIN.S", "hello", "hello"),
-    ("MAIN.COLOR", "BLUE", 5), ("MAIN.COLOR", "color#green", 1), ("MAIN.COLOR", 5, 5), ("MAIN.PCT", 100, 100),
-    ("MAIN.T1.PT", "T#2s", 2000), ("MAIN.GRID[0, 1]", "TRUE", True), ("MAIN.P.X", -3, -3),
-])
+@pytest.mark.parametrize(
+    ("path", "value", "stored"),
+    [
+        ("MAIN.R", "1.5", 1.5),
+        ("MAIN.R", 2, 2.0),
+        ("MAIN.D", "T#1m30s", 90_000),
+        ("MAIN.S", "hello", "hello"),
+        ("MAIN.COLOR", "BLUE", 5),
+        ("MAIN.COLOR", "color#green", 1),
+        ("MAIN.COLOR", 5, 5),
+        ("MAIN.PCT", 100, 100),
+        ("MAIN.T1.PT", "T#2s", 2000),
+        ("MAIN.GRID[0, 1]", "TRUE", True),
+        ("MAIN.P.X", -3, -3),
+    ],
+)
 def test_forces_and_writes_accept_python_values_and_iec_literals(sim, path, value, stored):
     sim.force(path, value)  # applied at once as well
     assert sim.read(path) == stored
@@ -120,15 +155,18 @@ def test_forces_and_writes_accept_python_values_and_iec_literals(sim, path, valu
     sim.write(path, value)
 
 
-@pytest.mark.parametrize(("path", "value", "message"), [
-    ("MAIN.COUNT", 40000, "MAIN.COUNT: 40000 is out of range for INT (-32768..32767)"),
-    ("MAIN.COUNT", "abc", "MAIN.COUNT: 'abc' is not an INT"),
-    ("MAIN.PCT", 101, "MAIN.PCT: 101 is outside the subrange 0..100"),
-    ("MAIN.COLOR", "PINK", "MAIN.COLOR: 'PINK' is not a value of COLOR (RED, GREEN, BLUE)"),
-    ("MAIN.COLOR", 2, "MAIN.COLOR: 2 is not a value of COLOR (RED, GREEN, BLUE)"),
-    ("MAIN.ARR", [1, 2, 3], "MAIN.ARR is an ARRAY [1..3] OF INT: write its elements one by one"),
-    ("MAIN.T1", 1, "MAIN.T1 is a TON: write its elements one by one"),
-])
+@pytest.mark.parametrize(
+    ("path", "value", "message"),
+    [
+        ("MAIN.COUNT", 40000, "MAIN.COUNT: 40000 is out of range for INT (-32768..32767)"),
+        ("MAIN.COUNT", "abc", "MAIN.COUNT: 'abc' is not an INT"),
+        ("MAIN.PCT", 101, "MAIN.PCT: 101 is outside the subrange 0..100"),
+        ("MAIN.COLOR", "PINK", "MAIN.COLOR: 'PINK' is not a value of COLOR (RED, GREEN, BLUE)"),
+        ("MAIN.COLOR", 2, "MAIN.COLOR: 2 is not a value of COLOR (RED, GREEN, BLUE)"),
+        ("MAIN.ARR", [1, 2, 3], "MAIN.ARR is an ARRAY [1..3] OF INT: write its elements one by one"),
+        ("MAIN.T1", 1, "MAIN.T1 is a TON: write its elements one by one"),
+    ],
+)
 def test_bad_values_are_refused_naming_the_path(sim, path, value, message):
     with pytest.raises(ValueError) as raised:
         sim.write(path, value)
@@ -149,8 +187,12 @@ def test_warm_reset_keeps_retain_cold_reset_reinitialises_var82(sim):
 
 def test_retain_survives_warm_reset_inside_user_fb_instances():
     keep, lose = v("KEEP", INT), v("LOSE", INT)
-    user = pou("KEEPER", [slot("KEEP", INT, retain=True), slot("LOSE", INT)],
-               [assign(keep, add(keep, c(1, INT))), assign(lose, add(lose, c(1, INT)))], kind="function_block")
+    user = pou(
+        "KEEPER",
+        [slot("KEEP", INT, retain=True), slot("LOSE", INT)],
+        [assign(keep, add(keep, c(1, INT))), assign(lose, add(lose, c(1, INT)))],
+        kind="function_block",
+    )
     main = pou("MAIN", [slot("K", fb("KEEPER"))], [fbcall(v("K", fb("KEEPER")))])
     sim = Simulation(prog(main, user))
     sim.cycle(4)
@@ -166,11 +208,33 @@ def test_snapshot_lists_every_elementary_variable(sim):
     assert snap["MAIN.COUNT"] == 1 and snap["MAIN.ARR[3]"] == 3 and snap["MAIN.GRID[1, 1]"] is False
     assert snap["MAIN.P.NAME"] == "p" and snap["MAIN.T1.ET"] == 0 and snap["WARM"] == 101
     assert "MAIN.HIDDEN" not in snap and sim.read("MAIN.HIDDEN") == 0
-    assert sorted(snap) == sorted([
-        "MAIN.COUNT", "MAIN.IN", "MAIN.OUT", "MAIN.T1.IN", "MAIN.T1.PT", "MAIN.T1.Q", "MAIN.T1.ET",
-        "MAIN.ARR[1]", "MAIN.ARR[2]", "MAIN.ARR[3]", "MAIN.GRID[0, 0]", "MAIN.GRID[0, 1]", "MAIN.GRID[1, 0]",
-        "MAIN.GRID[1, 1]", "MAIN.P.X", "MAIN.P.NAME", "MAIN.COLOR", "MAIN.PCT", "MAIN.R", "MAIN.D", "MAIN.S",
-        "WARM", "COLD"])
+    assert sorted(snap) == sorted(
+        [
+            "MAIN.COUNT",
+            "MAIN.IN",
+            "MAIN.OUT",
+            "MAIN.T1.IN",
+            "MAIN.T1.PT",
+            "MAIN.T1.Q",
+            "MAIN.T1.ET",
+            "MAIN.ARR[1]",
+            "MAIN.ARR[2]",
+            "MAIN.ARR[3]",
+            "MAIN.GRID[0, 0]",
+            "MAIN.GRID[0, 1]",
+            "MAIN.GRID[1, 0]",
+            "MAIN.GRID[1, 1]",
+            "MAIN.P.X",
+            "MAIN.P.NAME",
+            "MAIN.COLOR",
+            "MAIN.PCT",
+            "MAIN.R",
+            "MAIN.D",
+            "MAIN.S",
+            "WARM",
+            "COLD",
+        ]
+    )
 
 
 def test_time_and_scan_statistics(sim):
@@ -193,8 +257,11 @@ def test_simulations_of_one_compiled_program_share_nothing():
 
 
 def test_compile_errors_are_located_diagnostics():
-    bad = pou("MAIN", [slot("X", INT)], [assign(v("X", INT), v("NOPE", INT)), fbcall(v("X", INT)),
-                                          assign(v("X", INT), c(1, INT))])
+    bad = pou(
+        "MAIN",
+        [slot("X", INT)],
+        [assign(v("X", INT), v("NOPE", INT)), fbcall(v("X", INT)), assign(v("X", INT), c(1, INT))],
+    )
     with pytest.raises(CompileError) as raised:
         Simulation(prog(bad))
     messages = [(d.line, d.message) for d in raised.value.diagnostics]

@@ -89,7 +89,11 @@ END_PROGRAM
 """)
     sim.cycle()
     assert (sim.read("MAIN.P"), sim.read("MAIN.ARR"), sim.read("MAIN.R"), sim.read("MAIN.OK")) == (
-        {"A": 2, "B": 1}, [20, 10], -1, False)
+        {"A": 2, "B": 1},
+        [20, 10],
+        -1,
+        False,
+    )
     sim.write("MAIN.EN", True)
     sim.cycle()
     assert (sim.read("MAIN.P.A"), sim.read("MAIN.R"), sim.read("MAIN.OK")) == (1, 0, True)
@@ -123,21 +127,29 @@ END_PROGRAM
     sim.cycle(2)
     fault = sim.fault
     assert (fault.code, fault.origin.line, fault.origin.column, fault.values) == (
-        "division_by_zero", 6, 5, {"Q": 0, "A": 3, "B": 0})
-    looping = simulation("""
+        "division_by_zero",
+        6,
+        5,
+        {"Q": 0, "A": 3, "B": 0},
+    )
+    looping = simulation(
+        """
 PROGRAM Main
 VAR x : INT; END_VAR
 x := 1;
 WHILE TRUE DO END_WHILE;
 END_PROGRAM
-""", watchdog_s=0.1)
+""",
+        watchdog_s=0.1,
+    )
     looping.cycle()
     assert (looping.fault.kind, looping.fault.pou, looping.fault.origin.line) == ("watchdog", "MAIN", 5)
     assert looping.read("MAIN.X") == 1
 
 
 def test_breakpoints_on_st_lines_from_source():
-    sim = simulation("""
+    sim = simulation(
+        """
 PROGRAM Main
 VAR i : INT; total : INT; END_VAR
 total := 0;
@@ -145,7 +157,9 @@ FOR i := 1 TO 3 DO
     total := total + i;
 END_FOR;
 END_PROGRAM
-""", variant="debug")
+""",
+        variant="debug",
+    )
     sim.set_breakpoint("Main", line=6)
     sim.cycle()
     seen = []

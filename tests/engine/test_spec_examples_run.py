@@ -43,10 +43,17 @@ def _harness(project: Project, calls: list[dict], instances: set[str]) -> Pou:
     returns = {p.name.upper(): p.return_type for p in project.pous if p.kind == "function"}
     decls = [f"r{i} : {returns[call['function'].upper()]};" for i, call in enumerate(calls)]
     decls += [f"i_{fb} : {fb};" for fb in sorted(instances)]
-    body = [f"r{i} := {call['function']}({', '.join(f'{k} := {_literal(v)}' for k, v in call['args'].items())});"
-            for i, call in enumerate(calls)]
-    return Pou(name=HARNESS, kind="program", language="st", declarations="VAR\n" + "\n".join(decls) + "\nEND_VAR",
-               body="\n".join(body))
+    body = [
+        f"r{i} := {call['function']}({', '.join(f'{k} := {_literal(v)}' for k, v in call['args'].items())});"
+        for i, call in enumerate(calls)
+    ]
+    return Pou(
+        name=HARNESS,
+        kind="program",
+        language="st",
+        declarations="VAR\n" + "\n".join(decls) + "\nEND_VAR",
+        body="\n".join(body),
+    )
 
 
 def _path(sim: Simulation, project: Project, name: str) -> str:
@@ -105,8 +112,10 @@ def test_example_runs_with_the_stated_results(example_id):
     _run_expectations(example, example["expect"])
 
 
-@pytest.mark.parametrize("example_id, index", [(k, i) for k, e in EXAMPLES.items()
-                                               for i, _ in enumerate(e.get("expect", {}).get("cases", []))])
+@pytest.mark.parametrize(
+    "example_id, index",
+    [(k, i) for k, e in EXAMPLES.items() for i, _ in enumerate(e.get("expect", {}).get("cases", []))],
+)
 def test_example_input_cases(example_id, index):
     case = EXAMPLES[example_id]["expect"]["cases"][index]
     _run_expectations(EXAMPLES[example_id], case, case.get("set"))

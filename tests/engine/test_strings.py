@@ -102,11 +102,7 @@ def test_delete_undoes_insert(a, b, data):
 def test_replace_is_left_plus_new_plus_rest(a, b, data):
     p = data.draw(st.integers(1, len(a) + 1))
     n = data.draw(st.integers(0, len(a) + 2))
-    expected = (
-        call("LEFT", [S, "INT"], a, p - 1)
-        + b
-        + call("RIGHT", [S, "INT"], a, max(len(a) - (p - 1) - n, 0))
-    )
+    expected = call("LEFT", [S, "INT"], a, p - 1) + b + call("RIGHT", [S, "INT"], a, max(len(a) - (p - 1) - n, 0))
     assert call("REPLACE", [S, S, "INT", "INT"], a, b, n, p, result="STRING[255]") == expected
 
 
@@ -120,7 +116,9 @@ def test_find_gives_a_position_where_mid_matches(a, b):
         assert b not in a
 
 
-@pytest.mark.parametrize("name, types", [("LEN", ["INT"]), ("LEFT", [S, "REAL"]), ("CONCAT", [S, "INT"]), ("FIND", [S])])
+@pytest.mark.parametrize(
+    "name, types", [("LEN", ["INT"]), ("LEFT", [S, "REAL"]), ("CONCAT", [S, "INT"]), ("FIND", [S])]
+)
 def test_wrong_types_are_rejected(name, types):
     with pytest.raises(TypeError):
         make_function(name, types, S)

@@ -16,14 +16,21 @@ ORDER = g("ORDER", DINT)
 def _marker(name: str, mark: int):
     """A program counting its runs and appending its mark to the global ORDER (ORDER := ORDER * 10 + mark)."""
     runs = v("RUNS", INT)
-    return pou(name, [slot("RUNS", INT)], [assign(runs, add(runs, c(1, INT))),
-                                            assign(ORDER, add(mul(ORDER, c(10, DINT)), c(mark, DINT)))])
+    return pou(
+        name,
+        [slot("RUNS", INT)],
+        [assign(runs, add(runs, c(1, INT))), assign(ORDER, add(mul(ORDER, c(10, DINT)), c(mark, DINT)))],
+    )
 
 
 def _two_tasks(**kwargs):
-    program = prog(_marker("FASTP", 1), _marker("SLOWP", 2), _marker("ALSO", 3),
-                   globals=[slot("ORDER", DINT, "VAR_GLOBAL")],
-                   tasks=[task("FAST", 10, 5, "FASTP", "ALSO"), task("SLOW", 25, 1, "SLOWP")])
+    program = prog(
+        _marker("FASTP", 1),
+        _marker("SLOWP", 2),
+        _marker("ALSO", 3),
+        globals=[slot("ORDER", DINT, "VAR_GLOBAL")],
+        tasks=[task("FAST", 10, 5, "FASTP", "ALSO"), task("SLOW", 25, 1, "SLOWP")],
+    )
     return Simulation(program, **kwargs)
 
 
@@ -35,8 +42,16 @@ def test_two_intervals_run_on_the_virtual_clock_in_priority_order():
         sim.write("ORDER", 0)
         sim.cycle()
         rows.append((sim.time_ms, sim.read("ORDER"), sim.read("FASTP.RUNS"), sim.read("SLOWP.RUNS")))
-    assert rows == [(10, 13, 1, 0), (20, 13, 2, 0), (25, 2, 2, 1), (30, 13, 3, 1), (40, 13, 4, 1),
-                    (50, 213, 5, 2), (60, 13, 6, 2), (70, 13, 7, 2)]
+    assert rows == [
+        (10, 13, 1, 0),
+        (20, 13, 2, 0),
+        (25, 2, 2, 1),
+        (30, 13, 3, 1),
+        (40, 13, 4, 1),
+        (50, 213, 5, 2),
+        (60, 13, 6, 2),
+        (70, 13, 7, 2),
+    ]
 
 
 def test_run_for_and_scan_at_follow_the_due_times():
@@ -57,23 +72,39 @@ def test_without_a_task_configuration_every_program_runs_every_10_ms():
 
 
 def test_programs_not_in_any_task_do_not_run_but_can_be_read():
-    sim = Simulation(prog(_marker("A", 1), _marker("IDLE", 2), globals=[slot("ORDER", DINT, "VAR_GLOBAL")],
-                          tasks=[task("T", 10, 0, "A")]))
+    sim = Simulation(
+        prog(
+            _marker("A", 1),
+            _marker("IDLE", 2),
+            globals=[slot("ORDER", DINT, "VAR_GLOBAL")],
+            tasks=[task("T", 10, 0, "A")],
+        )
+    )
     sim.cycle(3)
     assert (sim.read("A.RUNS"), sim.read("IDLE.RUNS")) == (3, 0)
 
 
-@pytest.mark.parametrize(("tasks", "message"), [
-    ([task("T1", 10, 0, "A"), task("T2", 20, 0, "A")], "program A is listed in tasks T1 and T2: an instance runs in one task only"),
-    ([task("T1", 10, 0, "A", "A")], "program A is listed twice in this task: an instance runs in one task only"),
-    ([task("T1", 10, 0, "NOPE")], "task T1: unknown program NOPE"),
-    ([task("T1", 10, 0, "FB")], "task T1: FB is a function block, not a program"),
-    ([task("T1", 0, 0, "A")], "task T1: the interval must be a positive time, not 0 ms"),
-    ([task("T1", 10, 0, "A"), task("t1", 10, 0)], "task t1 is declared twice"),
-])
+@pytest.mark.parametrize(
+    ("tasks", "message"),
+    [
+        (
+            [task("T1", 10, 0, "A"), task("T2", 20, 0, "A")],
+            "program A is listed in tasks T1 and T2: an instance runs in one task only",
+        ),
+        ([task("T1", 10, 0, "A", "A")], "program A is listed twice in this task: an instance runs in one task only"),
+        ([task("T1", 10, 0, "NOPE")], "task T1: unknown program NOPE"),
+        ([task("T1", 10, 0, "FB")], "task T1: FB is a function block, not a program"),
+        ([task("T1", 0, 0, "A")], "task T1: the interval must be a positive time, not 0 ms"),
+        ([task("T1", 10, 0, "A"), task("t1", 10, 0)], "task t1 is declared twice"),
+    ],
+)
 def test_task_configuration_errors_at_build_time(tasks, message):
-    program = prog(_marker("A", 1), pou("FB", [], [], kind="function_block"),
-                   globals=[slot("ORDER", DINT, "VAR_GLOBAL")], tasks=tasks)
+    program = prog(
+        _marker("A", 1),
+        pou("FB", [], [], kind="function_block"),
+        globals=[slot("ORDER", DINT, "VAR_GLOBAL")],
+        tasks=tasks,
+    )
     with pytest.raises(CompileError) as raised:
         Simulation(program)
     assert [d.message for d in raised.value.diagnostics] == [message]
@@ -83,8 +114,12 @@ def test_task_configuration_errors_at_build_time(tasks, message):
 def test_a_fault_stops_its_task_only_until_reset():
     zero = v("ZERO", INT)
     bad = pou("BAD", [slot("ZERO", INT), slot("X", INT)], [assign(v("X", INT), div(c(1, INT), zero))])
-    program = prog(_marker("GOOD", 1), bad, globals=[slot("ORDER", DINT, "VAR_GLOBAL")],
-                   tasks=[task("T1", 10, 0, "BAD"), task("T2", 10, 1, "GOOD")])
+    program = prog(
+        _marker("GOOD", 1),
+        bad,
+        globals=[slot("ORDER", DINT, "VAR_GLOBAL")],
+        tasks=[task("T1", 10, 0, "BAD"), task("T2", 10, 1, "GOOD")],
+    )
     sim = Simulation(program)
     sim.cycle(3)
     assert sim.read("GOOD.RUNS") == 3 and len(sim.faults) == 1 and sim.fault.task == "T1"

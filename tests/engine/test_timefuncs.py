@@ -99,7 +99,9 @@ def test_time_overflow_is_reported_FUN_87(name, types, args, expected):
     assert value == expected and warning.code == OVERFLOW
 
 
-@pytest.mark.parametrize("name, types, args", [("DIV_TIME", ["TIME", "INT"], (1000, 0)), ("DIV_TIME", ["TIME", "REAL"], (1000, 0.0))])
+@pytest.mark.parametrize(
+    "name, types, args", [("DIV_TIME", ["TIME", "INT"], (1000, 0)), ("DIV_TIME", ["TIME", "REAL"], (1000, 0.0))]
+)
 def test_dividing_a_time_by_zero_is_a_fault(name, types, args):
     with pytest.raises(PlcRuntimeError) as caught:
         call(name, types, *args)
@@ -127,7 +129,9 @@ def test_concat_and_split_of_date_and_time_round_trip(day, tod):
     assert make_function("DT_TO_TOD", ["DT"])(moment) == tod
 
 
-@pytest.mark.parametrize("name, types", [("ADD_TIME", ["TIME", "INT"]), ("ADD_TOD_TIME", ["TIME", "TOD"]), ("MUL_TIME", ["TIME", "TIME"])])
+@pytest.mark.parametrize(
+    "name, types", [("ADD_TIME", ["TIME", "INT"]), ("ADD_TOD_TIME", ["TIME", "TOD"]), ("MUL_TIME", ["TIME", "TIME"])]
+)
 def test_time_functions_check_argument_types(name, types):
     with pytest.raises(TypeError):
         make_function(name, types)

@@ -154,7 +154,12 @@ def test_default_values_TYP_05(type_name, expected):
 
 @pytest.mark.parametrize(
     "type_name, expected",
-    [("tod", ("TIME_OF_DAY", 0)), ("DT", ("DATE_AND_TIME", 0)), ("string[20]", ("STRING", 20)), ("STRING", ("STRING", 80))],
+    [
+        ("tod", ("TIME_OF_DAY", 0)),
+        ("DT", ("DATE_AND_TIME", 0)),
+        ("string[20]", ("STRING", 20)),
+        ("STRING", ("STRING", 80)),
+    ],
 )
 def test_resolve_aliases_and_string_lengths_TYP_01(type_name, expected):
     ref = resolve(type_name)

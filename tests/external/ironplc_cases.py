@@ -79,12 +79,17 @@ def _compare(actual, expected, case: dict, name: str) -> str | None:
         expected = expected * 1000
     if isinstance(expected, dict) and "op" in expected:
         return _matcher(actual, expected)
-    if isinstance(expected, float) or (isinstance(actual, float) and isinstance(expected, int)
-                                       and not isinstance(expected, bool)):
+    if isinstance(expected, float) or (
+        isinstance(actual, float) and isinstance(expected, int) and not isinstance(expected, bool)
+    ):
         if not isinstance(actual, (int, float)) or isinstance(actual, bool):
             return f"{actual!r} != {expected!r}"
         if "tolerance" in case:
-            return None if abs(actual - expected) < case["tolerance"] else f"{actual!r} != {expected!r} ± {case['tolerance']}"
+            return (
+                None
+                if abs(actual - expected) < case["tolerance"]
+                else f"{actual!r} != {expected!r} ± {case['tolerance']}"
+            )
         if case.get("float_compare") == "f32":
             expected = struct.unpack("f", struct.pack("f", expected))[0]
         return None if actual == expected else f"{actual!r} != {expected!r}"

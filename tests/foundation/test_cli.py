@@ -34,8 +34,10 @@ def test_check_broken_copy_names_file_and_json_path(tmp_path: Path) -> None:
     path.write_text(json.dumps(data))
     result = ladderlab("check", str(folder))
     assert result.returncode != 0
-    assert "pous/Main.ld.json, $.body.networks[0].elements[1].mode: error BAD-FILE: " \
-           "expected 'no', 'nc', 'p' or 'n', got 'sideways'" in result.stderr
+    assert (
+        "pous/Main.ld.json, $.body.networks[0].elements[1].mode: error BAD-FILE: "
+        "expected 'no', 'nc', 'p' or 'n', got 'sideways'" in result.stderr
+    )
 
 
 def test_check_reports_model_errors_with_nonzero_exit(tmp_path: Path) -> None:
@@ -45,8 +47,10 @@ def test_check_reports_model_errors_with_nonzero_exit(tmp_path: Path) -> None:
     path.write_text(project.model_dump_json())
     result = ladderlab("check", str(path))
     assert result.returncode == 1
-    assert ("$.tasks[0].programs[2], POU Blinker: error NOT-A-PROGRAM: task MainTask can only run programs; "
-            "Blinker is a function block") in result.stdout
+    assert (
+        "$.tasks[0].programs[2], POU Blinker: error NOT-A-PROGRAM: task MainTask can only run programs; "
+        "Blinker is a function block"
+    ) in result.stdout
 
 
 def test_check_accepts_st_file(tmp_path: Path) -> None:
@@ -101,16 +105,20 @@ def test_check_reports_st_diagnostics_with_location(tmp_path: Path) -> None:
 
 def test_st_file_configuration_becomes_tasks(tmp_path: Path) -> None:
     path = tmp_path / "plant.st"
-    path.write_text("PROGRAM Fast\nVAR n : INT; END_VAR\nn := n + 1;\nEND_PROGRAM\n"
-                    "PROGRAM Slow\nVAR n : INT; END_VAR\nn := n + 1;\nEND_PROGRAM\n"
-                    "CONFIGURATION Plant\n  RESOURCE Cpu ON PLC\n"
-                    "    TASK T1 (INTERVAL := T#5ms, PRIORITY := 1);\n"
-                    "    TASK T2 (INTERVAL := T#20ms, PRIORITY := 2);\n"
-                    "    PROGRAM fast_inst WITH T1 : Fast;\n    PROGRAM slow_inst WITH T2 : Slow;\n"
-                    "  END_RESOURCE\nEND_CONFIGURATION\n")
+    path.write_text(
+        "PROGRAM Fast\nVAR n : INT; END_VAR\nn := n + 1;\nEND_PROGRAM\n"
+        "PROGRAM Slow\nVAR n : INT; END_VAR\nn := n + 1;\nEND_PROGRAM\n"
+        "CONFIGURATION Plant\n  RESOURCE Cpu ON PLC\n"
+        "    TASK T1 (INTERVAL := T#5ms, PRIORITY := 1);\n"
+        "    TASK T2 (INTERVAL := T#20ms, PRIORITY := 2);\n"
+        "    PROGRAM fast_inst WITH T1 : Fast;\n    PROGRAM slow_inst WITH T2 : Slow;\n"
+        "  END_RESOURCE\nEND_CONFIGURATION\n"
+    )
     project = load_project_path(path)
     assert [(t.name, t.interval, t.priority, t.programs) for t in project.tasks] == [
-        ("T1", "T#5ms", 1, ["Fast"]), ("T2", "T#20ms", 2, ["Slow"])]
+        ("T1", "T#5ms", 1, ["Fast"]),
+        ("T2", "T#20ms", 2, ["Slow"]),
+    ]
 
 
 def test_st_file_syntax_error_is_located_in_the_file(tmp_path: Path) -> None:

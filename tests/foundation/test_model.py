@@ -28,8 +28,9 @@ def test_wire_uses_from_in_json() -> None:
 
 
 def test_body_is_parsed_by_language() -> None:
-    pou = Pou.model_validate({"name": "M", "kind": "program", "language": "ld",
-                              "body": {"networks": [{"id": "n1", "elements": []}]}})
+    pou = Pou.model_validate(
+        {"name": "M", "kind": "program", "language": "ld", "body": {"networks": [{"id": "n1", "elements": []}]}}
+    )
     assert isinstance(pou.body, LdBody)
     with pytest.raises(ValidationError, match="ST POU's body must be a string"):
         Pou.model_validate({"name": "M", "kind": "program", "language": "st", "body": {"networks": []}})

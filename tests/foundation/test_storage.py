@@ -27,8 +27,11 @@ from .strategies import projects
 
 
 def snapshot(folder: Path) -> dict[str, tuple[bytes, int]]:
-    return {str(p.relative_to(folder)): (p.read_bytes(), p.stat().st_mtime_ns)
-            for p in sorted(folder.rglob("*")) if p.is_file()}
+    return {
+        str(p.relative_to(folder)): (p.read_bytes(), p.stat().st_mtime_ns)
+        for p in sorted(folder.rglob("*"))
+        if p.is_file()
+    }
 
 
 @pytest.fixture
@@ -164,6 +167,7 @@ def test_pou_names_are_iec_identifiers(ws: Workspace, name: str) -> None:
 
 # --- malformed folders: each names the file, the JSON path and what was expected ---------------
 
+
 def broken_copy(tmp_path: Path) -> Path:
     folder = tmp_path / "motor"
     shutil.copytree(EXAMPLES / "motor", folder)
@@ -190,33 +194,41 @@ def test_bad_json_names_file_line_and_column(tmp_path: Path) -> None:
 
 def test_unknown_element_type_names_json_path(tmp_path: Path) -> None:
     folder = broken_copy(tmp_path)
-    edit_json(folder / "pous" / "Main.ld.json",
-              lambda d: d["body"]["networks"][1]["elements"][0].update(type="contcat"))
+    edit_json(
+        folder / "pous" / "Main.ld.json", lambda d: d["body"]["networks"][1]["elements"][0].update(type="contcat")
+    )
     message = load_error(folder)
-    assert message.startswith("pous/Main.ld.json, $.body.networks[1].elements[0]: error BAD-FILE: "
-                              "unknown type 'contcat': expected one of 'contact', 'compare'")
+    assert message.startswith(
+        "pous/Main.ld.json, $.body.networks[1].elements[0]: error BAD-FILE: "
+        "unknown type 'contcat': expected one of 'contact', 'compare'"
+    )
 
 
 def test_missing_field_names_json_path(tmp_path: Path) -> None:
     folder = broken_copy(tmp_path)
-    edit_json(folder / "pous" / "Main.ld.json",
-              lambda d: d["body"]["networks"][0]["elements"][0]["branches"][1][0].pop("var"))
-    assert load_error(folder) == ("pous/Main.ld.json, $.body.networks[0].elements[0].branches[1][0].var: "
-                                  "error BAD-FILE: missing required field 'var'")
+    edit_json(
+        folder / "pous" / "Main.ld.json", lambda d: d["body"]["networks"][0]["elements"][0]["branches"][1][0].pop("var")
+    )
+    assert load_error(folder) == (
+        "pous/Main.ld.json, $.body.networks[0].elements[0].branches[1][0].var: "
+        "error BAD-FILE: missing required field 'var'"
+    )
 
 
 def test_wrong_field_type_in_fbd(tmp_path: Path) -> None:
     folder = broken_copy(tmp_path)
     edit_json(folder / "pous" / "Scaling.fbd.json", lambda d: d["body"]["networks"][0]["wires"][2]["to"].pop("pin"))
-    assert load_error(folder) == ("pous/Scaling.fbd.json, $.body.networks[0].wires[2].to.pin: "
-                                  "error BAD-FILE: missing required field 'pin'")
+    assert load_error(folder) == (
+        "pous/Scaling.fbd.json, $.body.networks[0].wires[2].to.pin: error BAD-FILE: missing required field 'pin'"
+    )
 
 
 def test_bad_task_in_project_json(tmp_path: Path) -> None:
     folder = broken_copy(tmp_path)
     edit_json(folder / "project.json", lambda d: d["tasks"][0].update(priority="high"))
-    assert load_error(folder).startswith("project.json, $.tasks[0].priority: error BAD-FILE: "
-                                         "Input should be a valid integer")
+    assert load_error(folder).startswith(
+        "project.json, $.tasks[0].priority: error BAD-FILE: Input should be a valid integer"
+    )
 
 
 def test_missing_pou_file(tmp_path: Path) -> None:
@@ -229,8 +241,9 @@ def test_st_pou_without_end(tmp_path: Path) -> None:
     folder = broken_copy(tmp_path)
     path = folder / "pous" / "Blinker.st"
     path.write_text(path.read_text().replace("END_FUNCTION_BLOCK", ""))
-    assert load_error(folder) == ("pous/Blinker.st:1:1, POU Blinker: error BAD-FILE: "
-                                  "FUNCTION_BLOCK without END_FUNCTION_BLOCK")
+    assert load_error(folder) == (
+        "pous/Blinker.st:1:1, POU Blinker: error BAD-FILE: FUNCTION_BLOCK without END_FUNCTION_BLOCK"
+    )
 
 
 def test_pou_file_declaring_another_name(tmp_path: Path) -> None:

@@ -41,8 +41,9 @@ def strip_ladderlab(data: bytes) -> bytes:
     return ET.tostring(root)
 
 
-def project_xml(pous: str, *, instances: str = "<instances><configurations/></instances>",
-                data_types: str = "") -> bytes:
+def project_xml(
+    pous: str, *, instances: str = "<instances><configurations/></instances>", data_types: str = ""
+) -> bytes:
     """A minimal TC6 2.01 project around ``<pou>`` elements."""
     return f"""<?xml version="1.0" encoding="utf-8"?>
 <project xmlns="{PLCOPEN_NS}" xmlns:xhtml="http://www.w3.org/1999/xhtml">
@@ -55,8 +56,10 @@ def project_xml(pous: str, *, instances: str = "<instances><configurations/></in
 
 
 def pou_xml(name: str, body: str, *, language: str, interface: str = "", pou_type: str = "program") -> str:
-    return (f'<pou name="{name}" pouType="{pou_type}"><interface>{interface}</interface>'
-            f"<body><{language}>{body}</{language}></body></pou>")
+    return (
+        f'<pou name="{name}" pouType="{pou_type}"><interface>{interface}</interface>'
+        f"<body><{language}>{body}</{language}></body></pou>"
+    )
 
 
 def ld_project(body: str, declarations: str = "") -> bytes:

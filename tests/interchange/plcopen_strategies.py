@@ -77,15 +77,25 @@ def ld_leaf(draw, ids: Ids, depth: int):
     if kind == "contact":
         return Contact(id=ids(), var=draw(names), mode=draw(st.sampled_from(["no", "nc", "p", "n"])))
     if kind == "coil":
-        return Coil(id=ids(), var=draw(names), mode=draw(st.sampled_from(
-            ["normal", "negated", "set", "reset", "p", "n"])))
+        return Coil(
+            id=ids(), var=draw(names), mode=draw(st.sampled_from(["normal", "negated", "set", "reset", "p", "n"]))
+        )
     if kind == "compare":
-        return Compare(id=ids(), op=draw(st.sampled_from(["GT", "GE", "EQ", "LE", "LT", "NE"])),
-                       left=draw(operands), right=draw(operands))
+        return Compare(
+            id=ids(),
+            op=draw(st.sampled_from(["GT", "GE", "EQ", "LE", "LT", "NE"])),
+            left=draw(operands),
+            right=draw(operands),
+        )
     call = draw(st.sampled_from(["TON", "CTU", "ADD"]))
     if call == "ADD":  # no BOOL input: power always enters EN
-        return Box(id=ids(), call="ADD", en=True, inputs={"IN1": draw(operands), "IN2": draw(operands)},
-                   outputs=draw(st.sampled_from([{}, {"OUT": "x"}])))
+        return Box(
+            id=ids(),
+            call="ADD",
+            en=True,
+            inputs={"IN1": draw(operands), "IN2": draw(operands)},
+            outputs=draw(st.sampled_from([{}, {"OUT": "x"}])),
+        )
     en = draw(st.booleans())
     side = draw(ld_series(ids, depth - 1, dead=False)) if depth > 0 and draw(st.booleans()) else None
     if call == "TON":
@@ -117,8 +127,9 @@ def ld_series(draw, ids: Ids, depth: int, dead: bool = True, min_size: int = 0):
         else:
             items.append(draw(ld_leaf(ids, depth)))
     if dead and draw(st.integers(0, 4)) == 0:
-        items.append(Jump(id=ids(), target=draw(st.sampled_from(["L1", "Again"]))) if draw(st.booleans())
-                     else Return(id=ids()))
+        items.append(
+            Jump(id=ids(), target=draw(st.sampled_from(["L1", "Again"]))) if draw(st.booleans()) else Return(id=ids())
+        )
     return items
 
 
@@ -127,8 +138,9 @@ def ld_bodies(draw, ids: Ids | None = None):
     ids = ids or Ids()
     networks = []
     for _ in range(draw(st.integers(0, 3))):
-        networks.append(LdNetwork(id=ids(), label=draw(labels), comment=draw(comments),
-                                  elements=draw(ld_series(ids, 2))))
+        networks.append(
+            LdNetwork(id=ids(), label=draw(labels), comment=draw(comments), elements=draw(ld_series(ids, 2)))
+        )
     return LdBody(networks=networks)
 
 
@@ -146,15 +158,29 @@ def fbd_bodies(draw, ids: Ids | None = None):
             kind = draw(st.sampled_from(["block", "block", "input", "output", "jump", "return", "conn", "cont"]))
             if kind == "block":
                 flags = st.builds(PinFlags, negated=st.booleans(), edge=st.sampled_from([None, "rising", "falling"]))
-                nodes.append(Block(id=ids(), pos=pos, call=draw(st.sampled_from(["ADD", "TON", "AND", "Vendor"])),
-                                   instance=draw(st.none() | names), en=draw(st.booleans()),
-                                   pins=draw(st.none() | st.dictionaries(st.sampled_from(["IN1", "IN", "Q", "PT"]),
-                                                                         flags, max_size=2))))
+                nodes.append(
+                    Block(
+                        id=ids(),
+                        pos=pos,
+                        call=draw(st.sampled_from(["ADD", "TON", "AND", "Vendor"])),
+                        instance=draw(st.none() | names),
+                        en=draw(st.booleans()),
+                        pins=draw(
+                            st.none() | st.dictionaries(st.sampled_from(["IN1", "IN", "Q", "PT"]), flags, max_size=2)
+                        ),
+                    )
+                )
             elif kind == "input":
                 nodes.append(InputNode(id=ids(), pos=pos, expr=draw(operands)))
             elif kind == "output":
-                nodes.append(OutputNode(id=ids(), pos=pos, var=draw(names), mode=draw(st.sampled_from(
-                    ["normal", "negated", "set", "reset", "p", "n"]))))
+                nodes.append(
+                    OutputNode(
+                        id=ids(),
+                        pos=pos,
+                        var=draw(names),
+                        mode=draw(st.sampled_from(["normal", "negated", "set", "reset", "p", "n"])),
+                    )
+                )
             elif kind == "jump":
                 nodes.append(FbdJump(id=ids(), pos=pos, target="L1"))
             elif kind == "return":
@@ -168,16 +194,23 @@ def fbd_bodies(draw, ids: Ids | None = None):
         if sources and sinks:
             for _ in range(draw(st.integers(0, 4))):
                 source, sink = draw(st.sampled_from(sources)), draw(st.sampled_from(sinks))
-                from_pin = draw(st.sampled_from(["OUT", "Q", *(["ENO"] if getattr(source, "en", False) else [])])) \
-                    if isinstance(source, Block) else "OUT"
-                to_pin = draw(st.sampled_from(["IN1", "IN2", "IN", *(["EN"] if getattr(sink, "en", False) else [])])) \
-                    if isinstance(sink, Block) else "IN"
+                from_pin = (
+                    draw(st.sampled_from(["OUT", "Q", *(["ENO"] if getattr(source, "en", False) else [])]))
+                    if isinstance(source, Block)
+                    else "OUT"
+                )
+                to_pin = (
+                    draw(st.sampled_from(["IN1", "IN2", "IN", *(["EN"] if getattr(sink, "en", False) else [])]))
+                    if isinstance(sink, Block)
+                    else "IN"
+                )
                 wire = Wire(from_=PinRef(node=source.id, pin=from_pin), to=PinRef(node=sink.id, pin=to_pin))
                 if wire not in wires:
                     wires.append(wire)
         order = draw(st.none() | st.permutations([n.id for n in nodes]).map(lambda ids_: ids_[:3] or None))
-        networks.append(FbdNetwork(id=ids(), label=draw(labels), comment=draw(comments), nodes=nodes, wires=wires,
-                                   order=order))
+        networks.append(
+            FbdNetwork(id=ids(), label=draw(labels), comment=draw(comments), nodes=nodes, wires=wires, order=order)
+        )
     return FbdBody(networks=networks)
 
 
@@ -192,11 +225,17 @@ DECLARATIONS = [
     "VAR_TEMP\n    tmp : REAL;\nEND_VAR",
     "VAR_EXTERNAL\n    g : INT;\nEND_VAR\nVAR\n    t1 AT %QX0.1 : BOOL;\n    c : (Red, Green := 5);\nEND_VAR",
 ]
-TYPES = ["", "TYPE\n    Color : (Red, Green, Blue) := Green;\nEND_TYPE",
-         "TYPE\n    Point : STRUCT\n        x : INT;\n        y : INT := 2;\n    END_STRUCT;\n    Small : INT (0..9);"
-         "\n    Row : ARRAY [0..7] OF BYTE;\nEND_TYPE"]
-GLOBALS = ["", "VAR_GLOBAL\n    g : INT;\nEND_VAR", "VAR_GLOBAL CONSTANT\n    Max : INT := 5;\nEND_VAR\n"
-           "VAR_GLOBAL\n    Start AT %IX0.0 : BOOL;  (* button *)\nEND_VAR"]
+TYPES = [
+    "",
+    "TYPE\n    Color : (Red, Green, Blue) := Green;\nEND_TYPE",
+    "TYPE\n    Point : STRUCT\n        x : INT;\n        y : INT := 2;\n    END_STRUCT;\n    Small : INT (0..9);"
+    "\n    Row : ARRAY [0..7] OF BYTE;\nEND_TYPE",
+]
+GLOBALS = [
+    "",
+    "VAR_GLOBAL\n    g : INT;\nEND_VAR",
+    "VAR_GLOBAL CONSTANT\n    Max : INT := 5;\nEND_VAR\nVAR_GLOBAL\n    Start AT %IX0.0 : BOOL;  (* button *)\nEND_VAR",
+]
 ST_BODIES = ["", "x := x + 1;", "\n\n  IF a THEN\r\n    q := b;\r\n  END_IF;", "s := 'END_PROGRAM <&>';\n\nx := 2;"]
 
 
@@ -205,9 +244,14 @@ def pous(draw, name: str):
     language = draw(st.sampled_from(["st", "ld", "fbd"]))
     kind = draw(st.sampled_from(["program", "function_block", "function"]))
     body = {"st": st.sampled_from(ST_BODIES), "ld": ld_bodies(), "fbd": fbd_bodies()}[language]
-    return Pou(name=name, kind=kind, language=language,
-               return_type=draw(st.sampled_from(["INT", "BOOL", "STRING[10]", "TIME_OF_DAY"])) if kind == "function"
-               else None, declarations=draw(st.sampled_from(DECLARATIONS)), body=draw(body))
+    return Pou(
+        name=name,
+        kind=kind,
+        language=language,
+        return_type=draw(st.sampled_from(["INT", "BOOL", "STRING[10]", "TIME_OF_DAY"])) if kind == "function" else None,
+        declarations=draw(st.sampled_from(DECLARATIONS)),
+        body=draw(body),
+    )
 
 
 @st.composite
@@ -215,9 +259,19 @@ def projects(draw):
     pou_names = draw(st.lists(st.sampled_from(["Main", "Helper", "Fb1", "Calc"]), unique=True, max_size=3))
     pou_list = [draw(pous(name)) for name in pou_names]
     programs = [p.name for p in pou_list if p.kind == "program"]
-    tasks = [Task(name=f"T{i}", interval=draw(st.sampled_from(["T#10ms", "T#1s", "T#100ms"])),
-                  priority=draw(st.integers(0, 10)), programs=draw(st.lists(st.sampled_from(programs), max_size=2,
-                                                                            unique=True)) if programs else [])
-             for i in range(draw(st.integers(0, 2)))]
-    return Project(name=draw(st.sampled_from(["demo", "plant 1", "x"])), types=draw(st.sampled_from(TYPES)),
-                   globals=draw(st.sampled_from(GLOBALS)), pous=pou_list, tasks=tasks)
+    tasks = [
+        Task(
+            name=f"T{i}",
+            interval=draw(st.sampled_from(["T#10ms", "T#1s", "T#100ms"])),
+            priority=draw(st.integers(0, 10)),
+            programs=draw(st.lists(st.sampled_from(programs), max_size=2, unique=True)) if programs else [],
+        )
+        for i in range(draw(st.integers(0, 2)))
+    ]
+    return Project(
+        name=draw(st.sampled_from(["demo", "plant 1", "x"])),
+        types=draw(st.sampled_from(TYPES)),
+        globals=draw(st.sampled_from(GLOBALS)),
+        pous=pou_list,
+        tasks=tasks,
+    )

@@ -39,8 +39,9 @@ def as_st(project: Project) -> Project:
     return replaced
 
 
-def same_traces(project: Project, scans: int = 200, seed: int = 0,
-                other: Project | None = None) -> list[dict[str, object]]:
+def same_traces(
+    project: Project, scans: int = 200, seed: int = 0, other: Project | None = None
+) -> list[dict[str, object]]:
     """Run ``project`` and ``other`` (default: its ST export) ``scans`` scans with the same random writes; the
     traces must agree. Returns the trace (snapshots of the common variables), so callers can check it too."""
     builds = [build_project(project), build_project(other if other is not None else as_st(project))]
@@ -65,11 +66,11 @@ def same_traces(project: Project, scans: int = 200, seed: int = 0,
             rows.append({path: snapshot[path] for path in common})
         faults = [sim.fault for sim in sims]
         if faults != [None, None]:  # an endless jump loop: the watchdog stops both, in the same scan
-            assert None not in faults and faults[0].code == faults[1].code and faults[0].scan == faults[1].scan, \
-                faults
+            assert None not in faults and faults[0].code == faults[1].code and faults[0].scan == faults[1].scan, faults
             break
-        assert rows[1] == rows[0], f"scan {scan}: " + str({p: (rows[0][p], rows[1][p]) for p in common
-                                                             if rows[0][p] != rows[1][p]})
+        assert rows[1] == rows[0], f"scan {scan}: " + str(
+            {p: (rows[0][p], rows[1][p]) for p in common if rows[0][p] != rows[1][p]}
+        )
         trace.append(rows[0])
     return trace
 

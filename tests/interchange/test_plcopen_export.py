@@ -51,8 +51,9 @@ def export(*pous: Pou, **project) -> ET.Element:
 
 
 def ld(*networks: LdNetwork, declarations: str = "") -> Pou:
-    return Pou(name="Main", kind="program", language="ld", declarations=declarations,
-               body=LdBody(networks=list(networks)))
+    return Pou(
+        name="Main", kind="program", language="ld", declarations=declarations, body=LdBody(networks=list(networks))
+    )
 
 
 def body(root: ET.Element, language: str = "LD") -> ET.Element:
@@ -67,8 +68,10 @@ def sources(root: ET.Element, element: ET.Element, pin: str | None = None) -> li
     """(tag of the source element, formalParameter) of every connection into ``element`` (or its ``pin``)."""
     holder = element if pin is None else element.find(f".//p:variable[@formalParameter='{pin}']", NS)
     elements = by_id(root)
-    return [(elements[c.get("refLocalId")].tag.split("}")[1], c.get("formalParameter"))
-            for c in holder.find("p:connectionPointIn", NS).findall("p:connection", NS)]
+    return [
+        (elements[c.get("refLocalId")].tag.split("}")[1], c.get("formalParameter"))
+        for c in holder.find("p:connectionPointIn", NS).findall("p:connection", NS)
+    ]
 
 
 def only(root: ET.Element, tag: str) -> ET.Element:
@@ -95,8 +98,10 @@ def test_document_header_names_the_project_and_the_time():
     assert root.find("p:contentHeader", NS).get("name") == "plant 1"
 
 
-@pytest.mark.parametrize("mode, negated, edge", [("no", "false", None), ("nc", "true", None),
-                                                 ("p", "false", "rising"), ("n", "false", "falling")])
+@pytest.mark.parametrize(
+    "mode, negated, edge",
+    [("no", "false", None), ("nc", "true", None), ("p", "false", "rising"), ("n", "false", "falling")],
+)
 def test_contact_modes(mode, negated, edge):
     """GR-15..18: normally open/closed and transition contacts are PLCopen's negated/edge attributes."""
     root = export(ld(LdNetwork(id="n", elements=[Contact(id="c", var="%IX0.1", mode=mode)])))
@@ -107,9 +112,17 @@ def test_contact_modes(mode, negated, edge):
     assert sources(root, only(root, "rightPowerRail")) == [("contact", None)]
 
 
-@pytest.mark.parametrize("mode, attrs", [
-    ("normal", {}), ("negated", {"negated": "true"}), ("set", {"storage": "set"}), ("reset", {"storage": "reset"}),
-    ("p", {"edge": "rising"}), ("n", {"edge": "falling"})])
+@pytest.mark.parametrize(
+    "mode, attrs",
+    [
+        ("normal", {}),
+        ("negated", {"negated": "true"}),
+        ("set", {"storage": "set"}),
+        ("reset", {"storage": "reset"}),
+        ("p", {"edge": "rising"}),
+        ("n", {"edge": "falling"}),
+    ],
+)
 def test_coil_modes(mode, attrs):
     """GR-20..25: negated, set, reset and transition coils."""
     root = export(ld(LdNetwork(id="n", elements=[Contact(id="c", var="a"), Coil(id="q", var="Out", mode=mode)])))
@@ -120,9 +133,18 @@ def test_coil_modes(mode, attrs):
 
 def test_parallel_branches_are_several_connections_on_one_input():
     """The wired OR: Motor := (Start OR Motor) AND NOT Stop - the Stop contact lists both branch ends."""
-    root = export(ld(LdNetwork(id="n", elements=[
-        Parallel(id="p", branches=[[Contact(id="a", var="Start")], [Contact(id="b", var="Motor")]]),
-        Contact(id="s", var="Stop", mode="nc"), Coil(id="m", var="Motor")])))
+    root = export(
+        ld(
+            LdNetwork(
+                id="n",
+                elements=[
+                    Parallel(id="p", branches=[[Contact(id="a", var="Start")], [Contact(id="b", var="Motor")]]),
+                    Contact(id="s", var="Stop", mode="nc"),
+                    Coil(id="m", var="Motor"),
+                ],
+            )
+        )
+    )
     contacts = body(root).findall("p:contact", NS)
     assert [c.find("p:variable", NS).text for c in contacts] == ["Start", "Motor", "Stop"]
     assert [sources(root, c) for c in contacts] == [[("leftPowerRail", None)]] * 2 + [[("contact", None)] * 2]
@@ -131,26 +153,46 @@ def test_parallel_branches_are_several_connections_on_one_input():
 
 
 def test_compare_contact_is_a_comparison_block_with_en_on_the_rung_and_out_continuing_it():
-    root = export(ld(LdNetwork(id="n", elements=[Contact(id="c", var="run"),
-                                                   Compare(id="k", op="GE", left="Level", right="100"),
-                                                   Coil(id="q", var="Full")])))
+    root = export(
+        ld(
+            LdNetwork(
+                id="n",
+                elements=[
+                    Contact(id="c", var="run"),
+                    Compare(id="k", op="GE", left="Level", right="100"),
+                    Coil(id="q", var="Full"),
+                ],
+            )
+        )
+    )
     block = only(root, "block")
     assert block.get("typeName") == "GE" and block.get("instanceName") is None
     assert [v.get("formalParameter") for v in block.findall("p:inputVariables/p:variable", NS)] == ["EN", "IN1", "IN2"]
     assert sources(root, block, "EN") == [("contact", None)]
     elements = by_id(root)
-    operands = [elements[c.get("refLocalId")].find("p:expression", NS).text
-                for pin in ("IN1", "IN2")
-                for c in block.findall(f".//p:variable[@formalParameter='{pin}']//p:connection", NS)]
+    operands = [
+        elements[c.get("refLocalId")].find("p:expression", NS).text
+        for pin in ("IN1", "IN2")
+        for c in block.findall(f".//p:variable[@formalParameter='{pin}']//p:connection", NS)
+    ]
     assert operands == ["Level", "100"]
     assert sources(root, only(root, "coil")) == [("block", "OUT")]
 
 
 def test_box_without_en_takes_power_on_its_first_bool_input_and_passes_it_from_its_first_bool_output():
     """TON: power enters IN and leaves from Q; PT is an inVariable; ET writes an outVariable."""
-    root = export(ld(LdNetwork(id="n", elements=[
-        Contact(id="c", var="go"), Box(id="t", call="TON", instance="T1", inputs={"PT": "T#5s"},
-                                       outputs={"ET": "Elapsed"}), Coil(id="q", var="Done")])))
+    root = export(
+        ld(
+            LdNetwork(
+                id="n",
+                elements=[
+                    Contact(id="c", var="go"),
+                    Box(id="t", call="TON", instance="T1", inputs={"PT": "T#5s"}, outputs={"ET": "Elapsed"}),
+                    Coil(id="q", var="Done"),
+                ],
+            )
+        )
+    )
     block = only(root, "block")
     assert (block.get("typeName"), block.get("instanceName")) == ("TON", "T1")
     assert [v.get("formalParameter") for v in block.findall("p:inputVariables/p:variable", NS)] == ["IN", "PT"]
@@ -162,23 +204,43 @@ def test_box_without_en_takes_power_on_its_first_bool_input_and_passes_it_from_i
 
 
 def test_box_with_en_uses_en_and_eno():
-    root = export(ld(LdNetwork(id="n", elements=[
-        Contact(id="c", var="go"), Box(id="a", call="ADD", en=True, inputs={"IN1": "x", "IN2": "1"},
-                                       outputs={"OUT": "x"}), Coil(id="q", var="ok")])))
+    root = export(
+        ld(
+            LdNetwork(
+                id="n",
+                elements=[
+                    Contact(id="c", var="go"),
+                    Box(id="a", call="ADD", en=True, inputs={"IN1": "x", "IN2": "1"}, outputs={"OUT": "x"}),
+                    Coil(id="q", var="ok"),
+                ],
+            )
+        )
+    )
     block = only(root, "block")
-    assert [v.get("formalParameter") for v in block.findall("p:inputVariables/p:variable", NS)] == [
-        "EN", "IN1", "IN2"]
+    assert [v.get("formalParameter") for v in block.findall("p:inputVariables/p:variable", NS)] == ["EN", "IN1", "IN2"]
     assert [v.get("formalParameter") for v in block.findall("p:outputVariables/p:variable", NS)] == ["ENO", "OUT"]
     assert sources(root, block, "EN") == [("contact", None)] and sources(root, only(root, "coil")) == [("block", "ENO")]
 
 
 def test_series_list_on_a_box_input_is_a_contact_chain_from_the_left_rail():
     """CTU: power enters CU; R is fed by its own contacts from the rail (the model's series-list input)."""
-    root = export(ld(LdNetwork(id="n", elements=[
-        Contact(id="c", var="pulse", mode="p"),
-        Box(id="k", call="CTU", instance="C1", inputs={"R": [Contact(id="r1", var="reset"),
-                                                              Contact(id="r2", var="enable")], "PV": "10"}),
-        Coil(id="q", var="full")])))
+    root = export(
+        ld(
+            LdNetwork(
+                id="n",
+                elements=[
+                    Contact(id="c", var="pulse", mode="p"),
+                    Box(
+                        id="k",
+                        call="CTU",
+                        instance="C1",
+                        inputs={"R": [Contact(id="r1", var="reset"), Contact(id="r2", var="enable")], "PV": "10"},
+                    ),
+                    Coil(id="q", var="full"),
+                ],
+            )
+        )
+    )
     block = only(root, "block")
     contacts = {c.find("p:variable", NS).text: c for c in body(root).findall("p:contact", NS)}
     assert sources(root, block, "CU") == [("contact", None)]
@@ -189,10 +251,13 @@ def test_series_list_on_a_box_input_is_a_contact_chain_from_the_left_rail():
 
 
 def test_jump_label_and_return():
-    root = export(ld(
-        LdNetwork(id="a", elements=[Contact(id="c", var="skip"), Jump(id="j", target="Done")]),
-        LdNetwork(id="b", elements=[Contact(id="d", var="stop"), Return(id="r")]),
-        LdNetwork(id="z", label="Done", comment="the end", elements=[Coil(id="q", var="x")])))
+    root = export(
+        ld(
+            LdNetwork(id="a", elements=[Contact(id="c", var="skip"), Jump(id="j", target="Done")]),
+            LdNetwork(id="b", elements=[Contact(id="d", var="stop"), Return(id="r")]),
+            LdNetwork(id="z", label="Done", comment="the end", elements=[Coil(id="q", var="x")]),
+        )
+    )
     assert only(root, "jump").get("label") == "Done"
     assert sources(root, only(root, "jump")) == [("contact", None)]
     assert sources(root, only(root, "return")) == [("contact", None)]
@@ -204,37 +269,70 @@ def test_jump_label_and_return():
 
 def test_execution_order_follows_evaluation_order():
     """Left to right, branches top to bottom, a box's input chains before the box."""
-    root = export(ld(LdNetwork(id="n", elements=[
-        Parallel(id="p", branches=[[Contact(id="a", var="a")], [Contact(id="b", var="b")]]),
-        Box(id="k", call="CTU", instance="C1", inputs={"R": [Contact(id="r", var="r")], "PV": "3"}),
-        Coil(id="q", var="q")])))
-    executed = sorted((int(e.get("executionOrderId")), e.find("p:variable", NS).text if e.find("p:variable", NS)
-                       is not None else e.get("typeName")) for e in body(root) if e.get("executionOrderId"))
+    root = export(
+        ld(
+            LdNetwork(
+                id="n",
+                elements=[
+                    Parallel(id="p", branches=[[Contact(id="a", var="a")], [Contact(id="b", var="b")]]),
+                    Box(id="k", call="CTU", instance="C1", inputs={"R": [Contact(id="r", var="r")], "PV": "3"}),
+                    Coil(id="q", var="q"),
+                ],
+            )
+        )
+    )
+    executed = sorted(
+        (
+            int(e.get("executionOrderId")),
+            e.find("p:variable", NS).text if e.find("p:variable", NS) is not None else e.get("typeName"),
+        )
+        for e in body(root)
+        if e.get("executionOrderId")
+    )
     assert [name for _, name in executed] == ["a", "b", "r", "CTU", "q"]
 
 
 def test_elements_are_drawn_inside_their_networks_band():
-    root = export(ld(
-        LdNetwork(id="one", elements=[Parallel(id="p", branches=[[Contact(id="a", var="a")],
-                                                                   [Contact(id="b", var="b")]]),
-                                      Coil(id="q", var="q")]),
-        LdNetwork(id="two", elements=[Contact(id="c", var="c"), Coil(id="r", var="r")])))
-    ys = {e.find("p:variable", NS).text: float(e.find("p:position", NS).get("y"))
-          for e in body(root) if e.find("p:variable", NS) is not None}
-    xs = {e.find("p:variable", NS).text: float(e.find("p:position", NS).get("x"))
-          for e in body(root) if e.find("p:variable", NS) is not None}
+    root = export(
+        ld(
+            LdNetwork(
+                id="one",
+                elements=[
+                    Parallel(id="p", branches=[[Contact(id="a", var="a")], [Contact(id="b", var="b")]]),
+                    Coil(id="q", var="q"),
+                ],
+            ),
+            LdNetwork(id="two", elements=[Contact(id="c", var="c"), Coil(id="r", var="r")]),
+        )
+    )
+    ys = {
+        e.find("p:variable", NS).text: float(e.find("p:position", NS).get("y"))
+        for e in body(root)
+        if e.find("p:variable", NS) is not None
+    }
+    xs = {
+        e.find("p:variable", NS).text: float(e.find("p:position", NS).get("x"))
+        for e in body(root)
+        if e.find("p:variable", NS) is not None
+    }
     assert ys["a"] < ys["b"] < ys["c"] and ys["a"] == ys["q"] and xs["a"] == xs["b"] < xs["q"]
 
 
 def test_fbd_nodes_and_wires_map_one_to_one():
-    network = FbdNetwork(id="n", nodes=[
-        InputNode(id="x", expr="Speed", pos=Position(x=10, y=20)),
-        Block(id="g", call="GT", pos=Position(x=120.5, y=20), pins={"IN1": PinFlags(negated=True)}),
-        InputNode(id="lim", expr="50", pos=Position(x=10, y=60)),
-        OutputNode(id="o", var="Fast", mode="set", pos=Position(x=250, y=20))],
-        wires=[Wire(from_=PinRef(node="x", pin="OUT"), to=PinRef(node="g", pin="IN1")),
-               Wire(from_=PinRef(node="lim", pin="OUT"), to=PinRef(node="g", pin="IN2")),
-               Wire(from_=PinRef(node="g", pin="OUT"), to=PinRef(node="o", pin="IN"))])
+    network = FbdNetwork(
+        id="n",
+        nodes=[
+            InputNode(id="x", expr="Speed", pos=Position(x=10, y=20)),
+            Block(id="g", call="GT", pos=Position(x=120.5, y=20), pins={"IN1": PinFlags(negated=True)}),
+            InputNode(id="lim", expr="50", pos=Position(x=10, y=60)),
+            OutputNode(id="o", var="Fast", mode="set", pos=Position(x=250, y=20)),
+        ],
+        wires=[
+            Wire(from_=PinRef(node="x", pin="OUT"), to=PinRef(node="g", pin="IN1")),
+            Wire(from_=PinRef(node="lim", pin="OUT"), to=PinRef(node="g", pin="IN2")),
+            Wire(from_=PinRef(node="g", pin="OUT"), to=PinRef(node="o", pin="IN")),
+        ],
+    )
     root = export(Pou(name="Main", kind="program", language="fbd", body=FbdBody(networks=[network])))
     fbd = body(root, "FBD")
     assert [e.tag.split("}")[1] for e in fbd] == ["inVariable", "block", "inVariable", "outVariable"]
@@ -243,14 +341,20 @@ def test_fbd_nodes_and_wires_map_one_to_one():
     assert block.find(".//p:variable[@formalParameter='IN1']", NS).get("negated") == "true"
     assert fbd.find("p:outVariable", NS).get("storage") == "set"
     elements = {e.get("localId"): e for e in fbd}
-    conns = [(elements[c.get("refLocalId")].find("p:expression", NS).text, pin)
-             for pin in ("IN1", "IN2") for c in block.findall(f".//p:variable[@formalParameter='{pin}']//"
-                                                                "p:connection", NS)]
+    conns = [
+        (elements[c.get("refLocalId")].find("p:expression", NS).text, pin)
+        for pin in ("IN1", "IN2")
+        for c in block.findall(f".//p:variable[@formalParameter='{pin}']//p:connection", NS)
+    ]
     assert conns == [("Speed", "IN1"), ("50", "IN2")]
     out_conn = fbd.find("p:outVariable/p:connectionPointIn/p:connection", NS)
     assert (out_conn.get("refLocalId"), out_conn.get("formalParameter")) == (block.get("localId"), "OUT")
-    orders = {e.find("p:expression", NS).text if e.find("p:expression", NS) is not None else e.get("typeName"):
-              int(e.get("executionOrderId")) for e in fbd}
+    orders = {
+        e.find("p:expression", NS).text if e.find("p:expression", NS) is not None else e.get("typeName"): int(
+            e.get("executionOrderId")
+        )
+        for e in fbd
+    }
     assert orders["GT"] < orders["Fast"]
 
 
@@ -258,15 +362,26 @@ def test_st_body_types_globals_and_tasks_go_in_their_sections():
     project = dict(
         types="TYPE\n    Mode : (Off, Auto := 5);\nEND_TYPE",
         globals="VAR_GLOBAL CONSTANT\n    Limit : INT := 10;\nEND_VAR",
-        tasks=[Task(name="Fast", interval="T#5ms", priority=2, programs=["Main"])])
-    root = export(Pou(name="Main", kind="program", language="st", declarations="VAR_INPUT\n    a : BOOL;\nEND_VAR",
-                        body="x := a < b;\r\ny := 1;"), **project)
+        tasks=[Task(name="Fast", interval="T#5ms", priority=2, programs=["Main"])],
+    )
+    root = export(
+        Pou(
+            name="Main",
+            kind="program",
+            language="st",
+            declarations="VAR_INPUT\n    a : BOOL;\nEND_VAR",
+            body="x := a < b;\r\ny := 1;",
+        ),
+        **project,
+    )
     st = root.find("p:types/p:pous/p:pou/p:body/p:ST", NS)
     assert st.find(f"{XHTML}p").text == "x := a < b;\r\ny := 1;"
     (data_type,) = root.findall("p:types/p:dataTypes/p:dataType", NS)
     assert data_type.get("name") == "Mode"
-    assert [(v.get("name"), v.get("value")) for v in data_type.findall(".//p:value", NS)] == [("Off", None),
-                                                                                              ("Auto", "5")]
+    assert [(v.get("name"), v.get("value")) for v in data_type.findall(".//p:value", NS)] == [
+        ("Off", None),
+        ("Auto", "5"),
+    ]
     config = root.find("p:instances/p:configurations/p:configuration", NS)
     (globals_,) = config.findall("p:globalVars", NS)
     assert globals_.get("constant") == "true"
@@ -298,9 +413,13 @@ def test_a_priority_plcopen_cannot_hold_is_an_export_error():
 
 
 def test_a_wire_to_a_missing_node_is_an_export_error_not_dropped():
-    network = FbdNetwork(id="n", nodes=[OutputNode(id="o", var="q")],
-                         wires=[Wire(from_=PinRef(node="ghost", pin="OUT"), to=PinRef(node="o", pin="IN"))])
+    network = FbdNetwork(
+        id="n",
+        nodes=[OutputNode(id="o", var="q")],
+        wires=[Wire(from_=PinRef(node="ghost", pin="OUT"), to=PinRef(node="o", pin="IN"))],
+    )
     with pytest.raises(PlcopenExportError) as caught:
-        export_plcopen(Project(name="t", pous=[Pou(name="M", kind="program", language="fbd",
-                                                   body=FbdBody(networks=[network]))]))
+        export_plcopen(
+            Project(name="t", pous=[Pou(name="M", kind="program", language="fbd", body=FbdBody(networks=[network]))])
+        )
     assert caught.value.diagnostics[0].message == "a wire names the node 'ghost', which this network does not have"

@@ -39,7 +39,9 @@ GRAMMAR = "a syntax-highlighting sample, not a valid program"
 CHECK_FAILS = {
     "beremiz-examples/exemples/svghmi_traffic_light/plc.xml": ({"ST-UNKNOWN-TYPE"}, VENDOR),
     "beremiz-examples/tests/projects/iec61131_lang_test/plc.xml": (
-        {"ST-UNKNOWN-TYPE", "ST-UNKNOWN-VAR", "FBD-UNKNOWN-CALL"}, VENDOR),
+        {"ST-UNKNOWN-TYPE", "ST-UNKNOWN-VAR", "FBD-UNKNOWN-CALL"},
+        VENDOR,
+    ),
     "openplc-examples/examples/Arduino_7_Segments/plc.xml": ({"ST-EXTERNAL"}, OUTSIDE_GLOBALS),
     "openplc-examples/examples/Arduino_Cloud/plc.xml": ({"LD-UNKNOWN-CALL", "ST-UNKNOWN-TYPE"}, VENDOR),
     "openplc-examples/examples/Arduino_LCD_Screen/plc.xml": ({"ST-EXTERNAL"}, OUTSIDE_GLOBALS),
@@ -53,8 +55,10 @@ CHECK_FAILS = {
     "rusty-cfc/tests/integration/data/cfc/chained_calls.cfc": ({"FBD-UNKNOWN-CALL"}, OTHER_FILE),
     "rusty-cfc/tests/integration/data/cfc/chained_calls_galore.cfc": ({"FBD-UNKNOWN-CALL"}, OTHER_FILE),
     "rusty-cfc/tests/integration/data/cfc/conditional_return.cfc": ({"FBD-INPUT-WRITE"}, RUSTY_INPUTS),
-    "rusty-cfc/tests/integration/data/cfc/conditional_return_block.cfc": ({"FBD-INPUT-WRITE", "FBD-UNKNOWN-CALL"},
-                                                                         f"{RUSTY_INPUTS}; {OTHER_FILE}"),
+    "rusty-cfc/tests/integration/data/cfc/conditional_return_block.cfc": (
+        {"FBD-INPUT-WRITE", "FBD-UNKNOWN-CALL"},
+        f"{RUSTY_INPUTS}; {OTHER_FILE}",
+    ),
     "rusty-cfc/tests/integration/data/cfc/conditional_return_negated.cfc": ({"FBD-INPUT-WRITE"}, RUSTY_INPUTS),
     "rusty-cfc/tests/integration/data/cfc/conditional_return_simple.cfc": ({"FBD-INPUT-WRITE"}, RUSTY_INPUTS),
     "rusty-cfc/tests/integration/data/cfc/connection_block_source_multi_sink.cfc": ({"FBD-UNKNOWN-CALL"}, OTHER_FILE),
@@ -62,13 +66,17 @@ CHECK_FAILS = {
     "rusty-cfc/tests/integration/data/cfc/duplicate_label.cfc": ({"FBD-DUPLICATE-LABEL"}, BROKEN),
     "rusty-cfc/tests/integration/data/cfc/early_return.cfc": ({"FBD-INPUT-WRITE"}, RUSTY_INPUTS),
     "rusty-cfc/tests/integration/data/cfc/early_return_negated.cfc": ({"FBD-INPUT-WRITE"}, RUSTY_INPUTS),
-    "rusty-cfc/tests/integration/data/cfc/function_block_call_main.cfc": ({"ST-UNKNOWN-TYPE", "FBD-UNKNOWN-CALL"},
-                                                                         OTHER_FILE),
+    "rusty-cfc/tests/integration/data/cfc/function_block_call_main.cfc": (
+        {"ST-UNKNOWN-TYPE", "FBD-UNKNOWN-CALL"},
+        OTHER_FILE,
+    ),
     "rusty-cfc/tests/integration/data/cfc/jump_missing_label.cfc": ({"FBD-UNKNOWN-LABEL"}, BROKEN),
     "rusty-cfc/tests/integration/data/cfc/jump_no_label.cfc": ({"FBD-UNKNOWN-LABEL"}, BROKEN),
     "rusty-cfc/tests/integration/data/cfc/my_add.cfc": ({"FBD-UNKNOWN-CALL"}, OTHER_FILE),
     "ironplc/integrations/vscode/tests/grammar/snap/plcopen-cdata.xml": (
-        {"ST-UNKNOWN-VAR", "ST-DECL", "MISSING-RETURN-TYPE"}, GRAMMAR),
+        {"ST-UNKNOWN-VAR", "ST-DECL", "MISSING-RETURN-TYPE"},
+        GRAMMAR,
+    ),
     "ironplc/integrations/vscode/tests/grammar/snap/plcopen-pou.xml": ({"ST-DECL"}, GRAMMAR),
 }
 #: SFC and IL POUs, reported as unsupported (file -> POU names).
@@ -118,9 +126,11 @@ def test_every_fixture_imports_ld_fbd_and_st_without_errors_and_reports_sfc_and_
         skipped = [d.pou for d in result.diagnostics if d.code == "PLCOPEN-UNSUPPORTED" and "written in" in d.message]
         if skipped:
             unsupported[path] = skipped
-    SUMMARY.lines.append(f"{len(fixtures)} files imported: {languages['ld']} LD, {languages['fbd']} FBD and "
-                         f"{languages['st']} ST POUs; {sum(map(len, unsupported.values()))} SFC/IL POUs reported "
-                         f"unsupported; import errors in {len(errors)} file(s), all in the source")
+    SUMMARY.lines.append(
+        f"{len(fixtures)} files imported: {languages['ld']} LD, {languages['fbd']} FBD and "
+        f"{languages['st']} ST POUs; {sum(map(len, unsupported.values()))} SFC/IL POUs reported "
+        f"unsupported; import errors in {len(errors)} file(s), all in the source"
+    )
     assert errors == IMPORT_ERRORS
     assert unsupported == UNSUPPORTED
     assert len(fixtures) >= 51 and languages["ld"] >= 12 and languages["fbd"] >= 36 and languages["st"] >= 12
@@ -132,9 +142,11 @@ def test_imported_projects_pass_the_project_check_unless_the_source_is_not_stand
         codes = {d.code for d in check_project(result.project) if d.severity == "error"}
         if codes:
             failing[path] = codes
-    SUMMARY.lines.append(f"check_project: {len(fixtures) - len(failing)} imported projects pass, {len(failing)} fail "
-                         f"for reasons in the source ({len({r for _, r in CHECK_FAILS.values()})} kinds, listed in "
-                         "test_plcopen_fixtures.py)")
+    SUMMARY.lines.append(
+        f"check_project: {len(fixtures) - len(failing)} imported projects pass, {len(failing)} fail "
+        f"for reasons in the source ({len({r for _, r in CHECK_FAILS.values()})} kinds, listed in "
+        "test_plcopen_fixtures.py)"
+    )
     assert failing == {path: codes for path, (codes, _) in CHECK_FAILS.items()}
 
 
@@ -143,12 +155,16 @@ def test_first_steps_counters_in_ld_fbd_and_st_agree_scan_for_scan(fixtures):
     project = fixtures["beremiz-examples/exemples/first_steps/plc.xml"].project
     counters = [p for p in project.pous if p.name in ("CounterST", "CounterFBD", "CounterLD")]
     assert [p.language for p in counters] == ["st", "fbd", "ld"]
-    check = Pou(name="Check", kind="program", language="st",
-                declarations="VAR\n    Reset : BOOL;\n    st : CounterST;\n    fbd : CounterFBD;\n    ld : CounterLD;"
-                             "\nEND_VAR",
-                body="st(Reset := Reset);\nfbd(Reset := Reset);\nld(Reset := Reset);")
-    program = project.model_copy(update={"pous": [*counters, check],
-                                         "tasks": [Task(name="t", interval="T#100ms", programs=["Check"])]})
+    check = Pou(
+        name="Check",
+        kind="program",
+        language="st",
+        declarations="VAR\n    Reset : BOOL;\n    st : CounterST;\n    fbd : CounterFBD;\n    ld : CounterLD;\nEND_VAR",
+        body="st(Reset := Reset);\nfbd(Reset := Reset);\nld(Reset := Reset);",
+    )
+    program = project.model_copy(
+        update={"pous": [*counters, check], "tasks": [Task(name="t", interval="T#100ms", programs=["Check"])]}
+    )
     result = lower_project(program)
     assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
     sim = Simulation(result.program)
@@ -176,8 +192,9 @@ def test_first_steps_runs_as_imported_with_stand_ins_for_its_sfc_and_il_counters
 def test_openplc_blink_in_ld_behaves_like_its_st_twin(fixtures):
     """Blink/plc.xml (LD, TON -> TOF) and Blink/blink.st over 200 scans of 20 ms: the same square wave."""
     ld = fixtures["openplc-examples/examples/Blink/plc.xml"].project
-    st = project_from_st(external("openplc-examples", "examples", "Blink", "blink.st").read_text(), name="blink",
-                         file="blink.st")
+    st = project_from_st(
+        external("openplc-examples", "examples", "Blink", "blink.st").read_text(), name="blink", file="blink.st"
+    )
     traces = []
     for project, path in ((ld, "Blink.blink_led"), (st, "program0.LED_PIN")):
         assert [t.interval for t in project.tasks] == ["T#20ms"]
@@ -213,8 +230,13 @@ def test_rusty_cfc_fixtures_give_the_results_rusty_states(case):
             pous += project.pous
         else:
             pous += import_plcopen(path.read_bytes()).project.pous
-    wrapper = Pou(name="Wrap", kind="program", language="st", declarations="VAR\n    result : DINT;\nEND_VAR",
-                  body="result := main();")
+    wrapper = Pou(
+        name="Wrap",
+        kind="program",
+        language="st",
+        declarations="VAR\n    result : DINT;\nEND_VAR",
+        body="result := main();",
+    )
     result = lower_project(Project(name="rusty", pous=[*pous, wrapper], tasks=[Task(name="t", programs=["Wrap"])]))
     assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
     sim = Simulation(result.program)
@@ -222,9 +244,14 @@ def test_rusty_cfc_fixtures_give_the_results_rusty_states(case):
     assert sim.read("Wrap.result") == case["main_returns"]
 
 
-@pytest.mark.parametrize("fixture, codes", [("duplicate_label.cfc", ["FBD-DUPLICATE-LABEL"]),
-                                            ("jump_missing_label.cfc", ["FBD-UNKNOWN-LABEL"]),
-                                            ("multi_labels.cfc", [])])
+@pytest.mark.parametrize(
+    "fixture, codes",
+    [
+        ("duplicate_label.cfc", ["FBD-DUPLICATE-LABEL"]),
+        ("jump_missing_label.cfc", ["FBD-UNKNOWN-LABEL"]),
+        ("multi_labels.cfc", []),
+    ],
+)
 def test_rusty_label_validation_cases_give_the_stated_diagnostics(fixture, codes):
     data = external("rusty-cfc", "tests", "integration", "data", "cfc", fixture).read_bytes()
     project = import_plcopen(data).project

@@ -59,8 +59,10 @@ def _refused(data: bytes) -> tuple[str, str, int | None]:
 def test_billion_laughs_is_refused_at_the_first_entity_declaration():
     code, message, line = _refused(BILLION_LAUGHS)
     assert (code, line) == ("XML-ENTITY", 3)
-    assert message == ("the document declares the entity 'lol'; entity declarations are refused (they allow "
-                       "entity-expansion and external-entity attacks)")
+    assert message == (
+        "the document declares the entity 'lol'; entity declarations are refused (they allow "
+        "entity-expansion and external-entity attacks)"
+    )
 
 
 @pytest.mark.parametrize("document, name", [(EXTERNAL_ENTITY, "secret"), (PARAMETER_ENTITY, "remote")])
@@ -73,8 +75,10 @@ def test_external_entities_are_refused_before_anything_is_read(document, name):
 def test_an_external_dtd_is_refused_not_fetched():
     code, message, line = _refused(EXTERNAL_DTD)
     assert (code, line) == ("XML-EXTERNAL", 2)
-    assert message == ("the document type declaration names the external DTD "
-                       "'http://attacker.invalid/plcopen.dtd'; external DTDs are never fetched")
+    assert message == (
+        "the document type declaration names the external DTD "
+        "'http://attacker.invalid/plcopen.dtd'; external DTDs are never fetched"
+    )
 
 
 def test_a_plain_doctype_without_entities_is_harmless():
@@ -90,8 +94,9 @@ def test_oversize_documents_are_refused_before_parsing(monkeypatch):
     monkeypatch.setattr(xml_safety, "DefusedXMLParser", parser_must_not_run)
     code, message, line = _refused(b"<" * (MAX_XML_BYTES + 1))
     assert code == "XML-TOO-LARGE" and line is None
-    assert message == (f"the document is {MAX_XML_BYTES + 1:,} bytes; documents over {MAX_XML_BYTES:,} bytes are "
-                       "refused unread")
+    assert message == (
+        f"the document is {MAX_XML_BYTES + 1:,} bytes; documents over {MAX_XML_BYTES:,} bytes are refused unread"
+    )
 
 
 def test_the_limit_is_a_parameter_of_the_safe_parser():
@@ -103,7 +108,10 @@ def test_the_limit_is_a_parameter_of_the_safe_parser():
 
 def test_malformed_xml_is_located():
     assert _refused(b'<project xmlns="http://www.plcopen.org/xml/tc6_0201">\n  <types>\n</project>') == (
-        "XML-SYNTAX", "not well-formed XML: mismatched tag", 3)
+        "XML-SYNTAX",
+        "not well-formed XML: mismatched tag",
+        3,
+    )
 
 
 def test_parsed_elements_know_their_source_line():
@@ -111,10 +119,13 @@ def test_parsed_elements_know_their_source_line():
     assert [(e.tag, parsed.line(e)) for e in parsed.root.iter()] == [("a", 1), ("b", 2), ("c", 4), ("d", 4)]
 
 
-@pytest.mark.parametrize("data, found", [
-    (b"<html><body/></html>", "the root element is <html> in namespace 'none'"),
-    (b'<project xmlns="urn:other"/>', "the root element is <project> in namespace 'urn:other'"),
-])
+@pytest.mark.parametrize(
+    "data, found",
+    [
+        (b"<html><body/></html>", "the root element is <html> in namespace 'none'"),
+        (b'<project xmlns="urn:other"/>', "the root element is <project> in namespace 'urn:other'"),
+    ],
+)
 def test_documents_that_are_not_plcopen_are_refused(data, found):
     code, message, line = _refused(data)
     assert code == "PLCOPEN-NOT-PLCOPEN" and line == 1

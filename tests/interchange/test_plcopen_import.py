@@ -44,34 +44,53 @@ def rail(local_id: int = 1) -> str:
 
 
 def contact(local_id: int, var: str, *refs: str, x: float, y: float, attrs: str = "") -> str:
-    return (f'<contact localId="{local_id}" {attrs}>{pos(x, y)}{cin(*refs)}<connectionPointOut/>'
-            f"<variable>{var}</variable></contact>")
+    return (
+        f'<contact localId="{local_id}" {attrs}>{pos(x, y)}{cin(*refs)}<connectionPointOut/>'
+        f"<variable>{var}</variable></contact>"
+    )
 
 
 def coil(local_id: int, var: str, *refs: str, x: float, y: float, attrs: str = "") -> str:
-    return (f'<coil localId="{local_id}" {attrs}>{pos(x, y)}{cin(*refs)}<connectionPointOut/>'
-            f"<variable>{var}</variable></coil>")
+    return (
+        f'<coil localId="{local_id}" {attrs}>{pos(x, y)}{cin(*refs)}<connectionPointOut/>'
+        f"<variable>{var}</variable></coil>"
+    )
 
 
 def in_var(local_id: int, expr: str, x: float, y: float, attrs: str = "") -> str:
-    return (f'<inVariable localId="{local_id}" {attrs}>{pos(x, y)}<connectionPointOut/>'
-            f"<expression>{expr}</expression></inVariable>")
+    return (
+        f'<inVariable localId="{local_id}" {attrs}>{pos(x, y)}<connectionPointOut/>'
+        f"<expression>{expr}</expression></inVariable>"
+    )
 
 
 def out_var(local_id: int, expr: str, *refs: str, x: float, y: float, attrs: str = "") -> str:
-    return (f'<outVariable localId="{local_id}" {attrs}>{pos(x, y)}{cin(*refs)}'
-            f"<expression>{expr}</expression></outVariable>")
+    return (
+        f'<outVariable localId="{local_id}" {attrs}>{pos(x, y)}{cin(*refs)}'
+        f"<expression>{expr}</expression></outVariable>"
+    )
 
 
-def block(local_id: int, type_name: str, inputs: dict[str, tuple[str, ...]], outputs: list[str], *, x: float,
-          y: float, instance: str | None = None, order: int | None = None) -> str:
+def block(
+    local_id: int,
+    type_name: str,
+    inputs: dict[str, tuple[str, ...]],
+    outputs: list[str],
+    *,
+    x: float,
+    y: float,
+    instance: str | None = None,
+    order: int | None = None,
+) -> str:
     head = f'<block localId="{local_id}" typeName="{type_name}"'
     head += f' instanceName="{instance}"' if instance else ""
     head += f' executionOrderId="{order}"' if order is not None else ""
     ins = "".join(f'<variable formalParameter="{pin}">{cin(*refs)}</variable>' for pin, refs in inputs.items())
     outs = "".join(f'<variable formalParameter="{pin}"><connectionPointOut/></variable>' for pin in outputs)
-    return (f"{head}>{pos(x, y)}<inputVariables>{ins}</inputVariables><inOutVariables/>"
-            f"<outputVariables>{outs}</outputVariables></block>")
+    return (
+        f"{head}>{pos(x, y)}<inputVariables>{ins}</inputVariables><inOutVariables/>"
+        f"<outputVariables>{outs}</outputVariables></block>"
+    )
 
 
 def imported(data: bytes):
@@ -126,31 +145,48 @@ def shape(items: list) -> list:
 
 def test_several_connections_on_one_input_are_a_parallel():
     """The wired OR of GR-14: (Start OR Motor) AND NOT Stop -> Motor."""
-    data = ld_project(rail() + contact(2, "Start", "1", x=50, y=10) + contact(3, "Motor", "1", x=50, y=50)
-                      + contact(4, "Stop", "2", "3", x=120, y=10, attrs='negated="true"')
-                      + coil(5, "Motor", "4", x=200, y=10))
-    assert shape(elements(data)) == [("OR", [[("contact", "Start", "no")], [("contact", "Motor", "no")]]),
-                                     ("contact", "Stop", "nc"), ("coil", "Motor", "normal")]
+    data = ld_project(
+        rail()
+        + contact(2, "Start", "1", x=50, y=10)
+        + contact(3, "Motor", "1", x=50, y=50)
+        + contact(4, "Stop", "2", "3", x=120, y=10, attrs='negated="true"')
+        + coil(5, "Motor", "4", x=200, y=10)
+    )
+    assert shape(elements(data)) == [
+        ("OR", [[("contact", "Start", "no")], [("contact", "Motor", "no")]]),
+        ("contact", "Stop", "nc"),
+        ("coil", "Motor", "normal"),
+    ]
 
 
 def test_branches_are_ordered_top_to_bottom_whatever_the_document_order():
-    data = ld_project(rail() + contact(3, "Lower", "1", x=50, y=90) + contact(2, "Upper", "1", x=50, y=10)
-                      + coil(4, "q", "2", "3", x=200, y=10))
+    data = ld_project(
+        rail()
+        + contact(3, "Lower", "1", x=50, y=90)
+        + contact(2, "Upper", "1", x=50, y=10)
+        + coil(4, "q", "2", "3", x=200, y=10)
+    )
     assert shape(elements(data))[0] == ("OR", [[("contact", "Upper", "no")], [("contact", "Lower", "no")]])
 
 
 def test_a_bridge_is_refused_with_a_diagnostic_naming_its_elements():
     """a feeds x and d, b feeds c, and x also feeds c: the rung is not series-parallel."""
-    data = ld_project(rail() + contact(2, "a", "1", x=50, y=10) + contact(3, "b", "1", x=50, y=50)
-                      + contact(4, "x", "2", x=120, y=30) + coil(5, "c", "3", "4", x=200, y=50)
-                      + coil(6, "d", "2", x=200, y=10))
+    data = ld_project(
+        rail()
+        + contact(2, "a", "1", x=50, y=10)
+        + contact(3, "b", "1", x=50, y=50)
+        + contact(4, "x", "2", x=120, y=30)
+        + coil(5, "c", "3", "4", x=200, y=50)
+        + coil(6, "d", "2", x=200, y=10)
+    )
     result = imported(data)
     (problem,) = result.diagnostics
     assert (problem.code, problem.severity, problem.pou) == ("PLCOPEN-LD-BRIDGE", "error", "Main")
     assert problem.message == (
         "the rung is not series-parallel (a bridge): coil c (localId 5), coil d (localId 6), contact a (localId 2), "
         "contact b (localId 3), contact x (localId 4) cannot be written as series and parallel branches; the network "
-        "is left empty")
+        "is left empty"
+    )
     assert result.project.pous[0].body.networks[0].elements == []
 
 
@@ -158,92 +194,160 @@ def test_openplc_timer_chain_with_en_and_a_coil_on_an_output():
     """OpenPLC's Blink: TON/TOF with EN on the rung, IN fed by a contact and by TON0.Q, the coil on TOF0.Q.
     The coil reads TOF0.Q through a contact placed after the boxes (a branch of the rung below them)."""
     data = ld_project(
-        rail() + block(3, "TON", {"EN": ("1",), "IN": ("5",), "PT": ("7",)}, ["ENO", "Q", "ET"], x=350, y=130,
-                       instance="TON0")
-        + block(4, "TOF", {"EN": ("3.ENO",), "IN": ("3.Q",), "PT": ("8",)}, ["ENO", "Q", "ET"], x=640, y=130,
-                instance="TOF0")
-        + contact(5, "blink_led", "1", x=180, y=200, attrs='negated="true"') + coil(6, "blink_led", "4.Q", x=820, y=200)
-        + in_var(7, "T#500ms", 240, 230) + in_var(8, "T#500ms", 520, 230)
-        + '<rightPowerRail localId="2">' + pos(990, 110) + cin("4.ENO") + cin("6") + "</rightPowerRail>")
-    assert shape(elements(data)) == [("OR", [
-        [("TON", "TON0", True, {"IN": [("contact", "blink_led", "nc")], "PT": "T#500ms"}, {}),
-         ("TOF", "TOF0", True, {"IN": "TON0.Q", "PT": "T#500ms"}, {})],
-        [("contact", "TOF0.Q", "no"), ("coil", "blink_led", "normal")]])]
+        rail()
+        + block(3, "TON", {"EN": ("1",), "IN": ("5",), "PT": ("7",)}, ["ENO", "Q", "ET"], x=350, y=130, instance="TON0")
+        + block(
+            4,
+            "TOF",
+            {"EN": ("3.ENO",), "IN": ("3.Q",), "PT": ("8",)},
+            ["ENO", "Q", "ET"],
+            x=640,
+            y=130,
+            instance="TOF0",
+        )
+        + contact(5, "blink_led", "1", x=180, y=200, attrs='negated="true"')
+        + coil(6, "blink_led", "4.Q", x=820, y=200)
+        + in_var(7, "T#500ms", 240, 230)
+        + in_var(8, "T#500ms", 520, 230)
+        + '<rightPowerRail localId="2">'
+        + pos(990, 110)
+        + cin("4.ENO")
+        + cin("6")
+        + "</rightPowerRail>"
+    )
+    assert shape(elements(data)) == [
+        (
+            "OR",
+            [
+                [
+                    ("TON", "TON0", True, {"IN": [("contact", "blink_led", "nc")], "PT": "T#500ms"}, {}),
+                    ("TOF", "TOF0", True, {"IN": "TON0.Q", "PT": "T#500ms"}, {}),
+                ],
+                [("contact", "TOF0.Q", "no"), ("coil", "blink_led", "normal")],
+            ],
+        )
+    ]
 
 
 def test_a_comparison_block_whose_out_drives_the_rung_is_a_compare_contact():
-    data = ld_project(rail() + in_var(2, "socket_id", 10, 60) + in_var(3, "0", 10, 90)
-                      + block(4, "LT", {"EN": ("1",), "IN1": ("2",), "IN2": ("3",)}, ["ENO", "OUT"], x=100, y=30)
-                      + coil(5, "connected", "4.OUT", x=200, y=30, attrs='storage="reset"'))
+    data = ld_project(
+        rail()
+        + in_var(2, "socket_id", 10, 60)
+        + in_var(3, "0", 10, 90)
+        + block(4, "LT", {"EN": ("1",), "IN1": ("2",), "IN2": ("3",)}, ["ENO", "OUT"], x=100, y=30)
+        + coil(5, "connected", "4.OUT", x=200, y=30, attrs='storage="reset"')
+    )
     assert shape(elements(data)) == [("LT", "socket_id", "0"), ("coil", "connected", "reset")]
 
 
 def test_a_function_feeding_only_another_blocks_input_is_written_inline():
-    data = ld_project(rail() + in_var(2, "minute_count", 10, 60)
-                      + block(3, "INT_TO_DINT", {"IN": ("2",)}, ["OUT"], x=60, y=60)
-                      + block(4, "ADD", {"EN": ("1",), "IN1": ("3.OUT",), "IN2": ("5",)}, ["ENO", "OUT"], x=150, y=30)
-                      + in_var(5, "1", 100, 100) + out_var(6, "total", "4.OUT", x=250, y=60))
-    assert shape(elements(data)) == [("ADD", None, True, {"IN1": "INT_TO_DINT(IN := minute_count)", "IN2": "1"},
-                                      {"OUT": "total"})]
+    data = ld_project(
+        rail()
+        + in_var(2, "minute_count", 10, 60)
+        + block(3, "INT_TO_DINT", {"IN": ("2",)}, ["OUT"], x=60, y=60)
+        + block(4, "ADD", {"EN": ("1",), "IN1": ("3.OUT",), "IN2": ("5",)}, ["ENO", "OUT"], x=150, y=30)
+        + in_var(5, "1", 100, 100)
+        + out_var(6, "total", "4.OUT", x=250, y=60)
+    )
+    assert shape(elements(data)) == [
+        ("ADD", None, True, {"IN1": "INT_TO_DINT(IN := minute_count)", "IN2": "1"}, {"OUT": "total"})
+    ]
 
 
 def test_a_counter_takes_power_on_cu_and_its_reset_from_its_own_contacts():
-    data = ld_project(rail() + contact(2, "pulse", "1", x=50, y=10, attrs='edge="rising"')
-                      + contact(3, "clear", "1", x=50, y=50)
-                      + block(4, "CTU", {"CU": ("2",), "R": ("3",), "PV": ("5",)}, ["Q", "CV"], x=150, y=10,
-                              instance="C1")
-                      + in_var(5, "10", 100, 90) + coil(6, "full", "4.Q", x=250, y=10)
-                      + out_var(7, "count", "4.CV", x=250, y=50))
-    assert shape(elements(data)) == [("contact", "pulse", "p"),
-                                     ("CTU", "C1", False, {"R": [("contact", "clear", "no")], "PV": "10"},
-                                      {"CV": "count"}),
-                                     ("coil", "full", "normal")]
+    data = ld_project(
+        rail()
+        + contact(2, "pulse", "1", x=50, y=10, attrs='edge="rising"')
+        + contact(3, "clear", "1", x=50, y=50)
+        + block(4, "CTU", {"CU": ("2",), "R": ("3",), "PV": ("5",)}, ["Q", "CV"], x=150, y=10, instance="C1")
+        + in_var(5, "10", 100, 90)
+        + coil(6, "full", "4.Q", x=250, y=10)
+        + out_var(7, "count", "4.CV", x=250, y=50)
+    )
+    assert shape(elements(data)) == [
+        ("contact", "pulse", "p"),
+        ("CTU", "C1", False, {"R": [("contact", "clear", "no")], "PV": "10"}, {"CV": "count"}),
+        ("coil", "full", "normal"),
+    ]
 
 
 def test_a_vendor_block_runs_unconditionally_with_its_power_input_as_a_contact_chain():
     """MQTT_CONNECT is unknown: its CONNECT pin keeps the contacts feeding it, SUCCESS drives the coil."""
-    data = ld_project(rail() + contact(2, "connected", "1", x=50, y=10, attrs='negated="true"')
-                      + block(3, "MQTT_CONNECT", {"CONNECT": ("2",), "PORT": ("4",)}, ["SUCCESS"], x=150, y=10,
-                              instance="M0")
-                      + in_var(4, "1883", 100, 50) + coil(5, "connected", "3.SUCCESS", x=250, y=10))
-    assert shape(elements(data)) == [("OR", [
-        [("MQTT_CONNECT", "M0", True, {"CONNECT": [("contact", "connected", "nc")], "PORT": "1883"}, {})],
-        [("contact", "M0.SUCCESS", "no"), ("coil", "connected", "normal")]])]
+    data = ld_project(
+        rail()
+        + contact(2, "connected", "1", x=50, y=10, attrs='negated="true"')
+        + block(3, "MQTT_CONNECT", {"CONNECT": ("2",), "PORT": ("4",)}, ["SUCCESS"], x=150, y=10, instance="M0")
+        + in_var(4, "1883", 100, 50)
+        + coil(5, "connected", "3.SUCCESS", x=250, y=10)
+    )
+    assert shape(elements(data)) == [
+        (
+            "OR",
+            [
+                [("MQTT_CONNECT", "M0", True, {"CONNECT": [("contact", "connected", "nc")], "PORT": "1883"}, {})],
+                [("contact", "M0.SUCCESS", "no"), ("coil", "connected", "normal")],
+            ],
+        )
+    ]
 
 
 def test_variables_in_a_rung_become_contacts_coils_or_a_move():
     """A variable feeding the power flow is a contact; an outVariable fed by power a coil; value to variable a MOVE."""
-    data = ld_project(in_var(2, "ready", 0, 10, attrs='negated="true"') + coil(3, "lamp", "2", x=100, y=10)
-                      + rail(6) + contact(7, "on", "6", x=50, y=40) + out_var(8, "busy", "7", x=100, y=40)
-                      + in_var(4, "Setpoint", 0, 80) + out_var(5, "Target", "4", x=100, y=80))
+    data = ld_project(
+        in_var(2, "ready", 0, 10, attrs='negated="true"')
+        + coil(3, "lamp", "2", x=100, y=10)
+        + rail(6)
+        + contact(7, "on", "6", x=50, y=40)
+        + out_var(8, "busy", "7", x=100, y=40)
+        + in_var(4, "Setpoint", 0, 80)
+        + out_var(5, "Target", "4", x=100, y=80)
+    )
     result = imported(data)
     assert [d.format() for d in result.diagnostics] == []
     networks = result.project.pous[0].body.networks
     assert [shape(n.elements) for n in networks] == [
         [("contact", "ready", "nc"), ("coil", "lamp", "normal")],
         [("contact", "on", "no"), ("coil", "busy", "normal")],
-        [("MOVE", None, True, {"IN": "Setpoint"}, {"OUT": "Target"})]]
+        [("MOVE", None, True, {"IN": "Setpoint"}, {"OUT": "Target"})],
+    ]
 
 
 def test_connected_parts_are_networks_top_to_bottom_with_labels_and_comments():
-    data = ld_project(rail() + '<comment localId="9" height="20" width="100">' + pos(0, 90)
-                      + "<content><xhtml:p>second rung</xhtml:p></content></comment>"
-                      + '<label localId="8" label="Again">' + pos(0, 95) + "</label>"
-                      + contact(4, "b", "1", x=50, y=100) + coil(5, "q2", "4", x=150, y=100)
-                      + contact(2, "a", "1", x=50, y=10) + coil(3, "q1", "2", x=150, y=10))
+    data = ld_project(
+        rail()
+        + '<comment localId="9" height="20" width="100">'
+        + pos(0, 90)
+        + "<content><xhtml:p>second rung</xhtml:p></content></comment>"
+        + '<label localId="8" label="Again">'
+        + pos(0, 95)
+        + "</label>"
+        + contact(4, "b", "1", x=50, y=100)
+        + coil(5, "q2", "4", x=150, y=100)
+        + contact(2, "a", "1", x=50, y=10)
+        + coil(3, "q1", "2", x=150, y=10)
+    )
     result = imported(data)
     networks = result.project.pous[0].body.networks
     assert [(n.id, n.label, n.comment, shape(n.elements)) for n in networks] == [
         ("network1", None, None, [("contact", "a", "no"), ("coil", "q1", "normal")]),
-        ("network2", "Again", "second rung", [("contact", "b", "no"), ("coil", "q2", "normal")])]
+        ("network2", "Again", "second rung", [("contact", "b", "no"), ("coil", "q2", "normal")]),
+    ]
     assert [[e.id for e in n.elements] for n in networks] == [["contact1", "coil1"], ["contact2", "coil2"]]
 
 
 def test_connector_and_continuation_join_a_rung():
-    data = ld_project(rail() + contact(2, "a", "1", x=50, y=10)
-                      + '<connector localId="3" name="c1">' + pos(100, 10) + cin("2") + "</connector>"
-                      + '<continuation localId="4" name="c1">' + pos(0, 60) + "<connectionPointOut/></continuation>"
-                      + coil(5, "q", "4", x=150, y=60))
+    data = ld_project(
+        rail()
+        + contact(2, "a", "1", x=50, y=10)
+        + '<connector localId="3" name="c1">'
+        + pos(100, 10)
+        + cin("2")
+        + "</connector>"
+        + '<continuation localId="4" name="c1">'
+        + pos(0, 60)
+        + "<connectionPointOut/></continuation>"
+        + coil(5, "q", "4", x=150, y=60)
+    )
     assert shape(elements(data)) == [("contact", "a", "no"), ("coil", "q", "normal")]
 
 
@@ -251,18 +355,27 @@ def test_an_element_without_power_input_is_reported():
     result = imported(ld_project(coil(2, "q", x=10, y=10)))
     (problem,) = result.diagnostics
     assert (problem.code, problem.element, problem.message) == (
-        "PLCOPEN-LD", "localId 2", "this element has no power input; it is read as fed from the left rail")
+        "PLCOPEN-LD",
+        "localId 2",
+        "this element has no power input; it is read as fed from the left rail",
+    )
 
 
 # ------------------------------------------------------------------ FBD
 
 
-COUNTER_FBD = (in_var(1, "Reset", 0, 0) + in_var(2, "ResetCounterValue", 0, 40) + in_var(3, "1", 0, 80)
-               + block(4, "SEL", {"G": ("1",), "IN0": ("5.OUT",), "IN1": ("2",)}, ["OUT"], x=200, y=0)
-               + block(5, "ADD", {"IN1": ("3",), "IN2": ("6",)}, ["OUT"], x=100, y=60)
-               + '<inOutVariable localId="6">' + pos(150, 120) + cin("4.OUT") + "<connectionPointOut/>"
-               "<expression>Cnt</expression></inOutVariable>"
-               + out_var(7, "OUT", "6", x=300, y=120))
+COUNTER_FBD = (
+    in_var(1, "Reset", 0, 0)
+    + in_var(2, "ResetCounterValue", 0, 40)
+    + in_var(3, "1", 0, 80)
+    + block(4, "SEL", {"G": ("1",), "IN0": ("5.OUT",), "IN1": ("2",)}, ["OUT"], x=200, y=0)
+    + block(5, "ADD", {"IN1": ("3",), "IN2": ("6",)}, ["OUT"], x=100, y=60)
+    + '<inOutVariable localId="6">'
+    + pos(150, 120)
+    + cin("4.OUT")
+    + "<connectionPointOut/>"
+    "<expression>Cnt</expression></inOutVariable>" + out_var(7, "OUT", "6", x=300, y=120)
+)
 
 
 def test_in_out_variable_feedback_reads_the_variable_and_other_readers_the_new_value():
@@ -273,16 +386,32 @@ def test_in_out_variable_feedback_reads_the_variable_and_other_readers_the_new_v
     assert [d.format() for d in result.diagnostics] == []
     (network,) = result.project.pous[0].body.networks
     assert wires(network) == {
-        ("in:Reset", "OUT", "SEL", "G"), ("ADD", "OUT", "SEL", "IN0"), ("in:ResetCounterValue", "OUT", "SEL", "IN1"),
-        ("in:1", "OUT", "ADD", "IN1"), ("in:Cnt", "OUT", "ADD", "IN2"),
-        ("SEL", "OUT", "out:Cnt", "IN"), ("SEL", "OUT", "out:OUT", "IN")}
+        ("in:Reset", "OUT", "SEL", "G"),
+        ("ADD", "OUT", "SEL", "IN0"),
+        ("in:ResetCounterValue", "OUT", "SEL", "IN1"),
+        ("in:1", "OUT", "ADD", "IN1"),
+        ("in:Cnt", "OUT", "ADD", "IN2"),
+        ("SEL", "OUT", "out:Cnt", "IN"),
+        ("SEL", "OUT", "out:OUT", "IN"),
+    }
 
 
-CFC_JUMP = (in_var(1, "TRUE", 0, 0) + out_var(2, "x", "1", x=100, y=0, attrs='executionOrderId="0"')
-            + in_var(3, "x", 0, 40) + '<jump localId="4" label="lbl" executionOrderId="1">' + pos(100, 40) + cin("3")
-            + "</jump>" + in_var(5, "2", 0, 80) + out_var(6, "a", "5", x=100, y=80, attrs='executionOrderId="2"')
-            + '<label localId="7" label="lbl" executionOrderId="3">' + pos(300, 0) + "</label>"
-            + in_var(8, "a + 3", 300, 40) + out_var(9, "a", "8", x=400, y=40, attrs='executionOrderId="4"'))
+CFC_JUMP = (
+    in_var(1, "TRUE", 0, 0)
+    + out_var(2, "x", "1", x=100, y=0, attrs='executionOrderId="0"')
+    + in_var(3, "x", 0, 40)
+    + '<jump localId="4" label="lbl" executionOrderId="1">'
+    + pos(100, 40)
+    + cin("3")
+    + "</jump>"
+    + in_var(5, "2", 0, 80)
+    + out_var(6, "a", "5", x=100, y=80, attrs='executionOrderId="2"')
+    + '<label localId="7" label="lbl" executionOrderId="3">'
+    + pos(300, 0)
+    + "</label>"
+    + in_var(8, "a + 3", 300, 40)
+    + out_var(9, "a", "8", x=400, y=40, attrs='executionOrderId="4"')
+)
 
 
 def test_cfc_execution_order_cuts_networks_at_labels_and_after_jumps():
@@ -291,16 +420,26 @@ def test_cfc_execution_order_cuts_networks_at_labels_and_after_jumps():
     networks = result.project.pous[0].body.networks
     names = [{n.id: name(n) for n in network.nodes} for network in networks]
     assert [(n.label, [names[i][node] for node in n.order]) for i, n in enumerate(networks)] == [
-        (None, ["out:x", "jump:lbl"]), (None, ["out:a"]), ("lbl", ["out:a"])]
+        (None, ["out:x", "jump:lbl"]),
+        (None, ["out:a"]),
+        ("lbl", ["out:a"]),
+    ]
     assert [wires(n) for n in networks] == [
-        {("in:TRUE", "OUT", "out:x", "IN"), ("in:x", "OUT", "jump:lbl", "IN")}, {("in:2", "OUT", "out:a", "IN")},
-        {("in:a + 3", "OUT", "out:a", "IN")}]
+        {("in:TRUE", "OUT", "out:x", "IN"), ("in:x", "OUT", "jump:lbl", "IN")},
+        {("in:2", "OUT", "out:a", "IN")},
+        {("in:a + 3", "OUT", "out:a", "IN")},
+    ]
 
 
 def test_a_return_negated_in_bachmann_add_data_gets_a_not_block():
-    data = fbd_project(in_var(1, "val = 5", 0, 0) + '<return localId="2" executionOrderId="0">' + pos(100, 0)
-                       + cin("1") + '<addData><data name="www.bachmann.at/plc/plcopenxml" '
-                       'handleUnknown="implementation"><negated value="true"/></data></addData></return>')
+    data = fbd_project(
+        in_var(1, "val = 5", 0, 0)
+        + '<return localId="2" executionOrderId="0">'
+        + pos(100, 0)
+        + cin("1")
+        + '<addData><data name="www.bachmann.at/plc/plcopenxml" '
+        'handleUnknown="implementation"><negated value="true"/></data></addData></return>'
+    )
     result = imported(data)
     assert [d.format() for d in result.diagnostics] == []
     (network,) = result.project.pous[0].body.networks
@@ -309,26 +448,44 @@ def test_a_return_negated_in_bachmann_add_data_gets_a_not_block():
 
 def test_rusty_pin_names_become_the_projects():
     """A function's result pin named after the function is OUT; unnamed SEL pins take SEL's names."""
-    data = fbd_project(in_var(1, "a > b", 0, 0) + in_var(2, "a", 0, 30) + in_var(3, "b", 0, 60)
-                       + block(4, "SEL", {"": ("1",)}, [""], x=100, y=0).replace(
-                           "</inputVariables>", f'<variable formalParameter="">{cin("2")}</variable>'
-                           f'<variable formalParameter="">{cin("3")}</variable></inputVariables>')
-                       + block(5, "myAdd", {"a": ("4",), "b": ("3",)}, ["myAdd"], x=200, y=0)
-                       + out_var(6, "y", "5.myAdd", x=300, y=0))
+    data = fbd_project(
+        in_var(1, "a > b", 0, 0)
+        + in_var(2, "a", 0, 30)
+        + in_var(3, "b", 0, 60)
+        + block(4, "SEL", {"": ("1",)}, [""], x=100, y=0).replace(
+            "</inputVariables>",
+            f'<variable formalParameter="">{cin("2")}</variable>'
+            f'<variable formalParameter="">{cin("3")}</variable></inputVariables>',
+        )
+        + block(5, "myAdd", {"a": ("4",), "b": ("3",)}, ["myAdd"], x=200, y=0)
+        + out_var(6, "y", "5.myAdd", x=300, y=0)
+    )
     (network,) = imported(data).project.pous[0].body.networks
     names = {n.id: name(n) for n in network.nodes}
     assert {(names[w.from_.node], w.from_.pin, names[w.to.node], w.to.pin) for w in network.wires} == {
-        ("in:a > b", "OUT", "SEL", "G"), ("in:a", "OUT", "SEL", "IN0"), ("in:b", "OUT", "SEL", "IN1"),
-        ("SEL", "OUT", "myAdd", "a"), ("in:b", "OUT", "myAdd", "b"), ("myAdd", "OUT", "out:y", "IN")}
+        ("in:a > b", "OUT", "SEL", "G"),
+        ("in:a", "OUT", "SEL", "IN0"),
+        ("in:b", "OUT", "SEL", "IN1"),
+        ("SEL", "OUT", "myAdd", "a"),
+        ("in:b", "OUT", "myAdd", "b"),
+        ("myAdd", "OUT", "out:y", "IN"),
+    }
 
 
 def test_a_wire_between_networks_is_reported():
-    data = fbd_project(in_var(1, "x", 0, 0) + '<label localId="2" label="L">' + pos(0, 50) + "</label>"
-                       + out_var(3, "y", "4", x=100, y=100) + block(4, "NOT", {"IN": ("1",)}, ["OUT"], x=50, y=100)
-                       + out_var(5, "z", "4", x=100, y=10))
+    data = fbd_project(
+        in_var(1, "x", 0, 0)
+        + '<label localId="2" label="L">'
+        + pos(0, 50)
+        + "</label>"
+        + out_var(3, "y", "4", x=100, y=100)
+        + block(4, "NOT", {"IN": ("1",)}, ["OUT"], x=50, y=100)
+        + out_var(5, "z", "4", x=100, y=10)
+    )
     problems = [(d.code, d.message) for d in imported(data).diagnostics]
-    assert problems == [("PLCOPEN-FBD", "the connection from block 4 crosses into another network; use a "
-                                        "connector and continuation")]
+    assert problems == [
+        ("PLCOPEN-FBD", "the connection from block 4 crosses into another network; use a connector and continuation")
+    ]
 
 
 # ------------------------------------------------------------------ POUs, declarations, sections
@@ -359,8 +516,11 @@ INTERFACE = """
 
 
 def test_declarations_are_printed_as_st_from_the_typed_lists():
-    result = imported(project_xml(pou_xml("F", "<xhtml:p>F := Mode#Off;</xhtml:p>", language="ST",
-                                          interface=INTERFACE, pou_type="function")))
+    result = imported(
+        project_xml(
+            pou_xml("F", "<xhtml:p>F := Mode#Off;</xhtml:p>", language="ST", interface=INTERFACE, pou_type="function")
+        )
+    )
     assert [d.format() for d in result.diagnostics] == []
     (pou,) = result.project.pous
     assert (pou.kind, pou.language, pou.return_type, pou.body) == ("function", "st", "Mode", "F := Mode#Off;")
@@ -379,16 +539,19 @@ def test_declarations_are_printed_as_st_from_the_typed_lists():
         "END_VAR\n"
         "VAR_EXTERNAL\n"
         "    g : LREAL;\n"
-        "END_VAR")
+        "END_VAR"
+    )
 
 
 def test_types_globals_and_tasks_fill_the_project():
-    types = ('<dataType name="Point"><baseType><struct><variable name="x"><type><INT/></type></variable>'
-             '<variable name="y"><type><INT/></type><initialValue><simpleValue value="2"/></initialValue>'
-             '</variable></struct></baseType></dataType>'
-             '<dataType name="Level"><baseType><subrangeUnsigned><range lower="0" upper="9"/><baseType><USINT/>'
-             '</baseType></subrangeUnsigned></baseType><initialValue><simpleValue value="3"/></initialValue>'
-             '</dataType>')
+    types = (
+        '<dataType name="Point"><baseType><struct><variable name="x"><type><INT/></type></variable>'
+        '<variable name="y"><type><INT/></type><initialValue><simpleValue value="2"/></initialValue>'
+        "</variable></struct></baseType></dataType>"
+        '<dataType name="Level"><baseType><subrangeUnsigned><range lower="0" upper="9"/><baseType><USINT/>'
+        '</baseType></subrangeUnsigned></baseType><initialValue><simpleValue value="3"/></initialValue>'
+        "</dataType>"
+    )
     instances = """<instances><configurations><configuration name="C">
       <resource name="R">
         <task name="Fast" priority="3" interval="T#5ms"><pouInstance name="i1" typeName="Main"/></task>
@@ -399,58 +562,107 @@ def test_types_globals_and_tasks_fill_the_project():
       <globalVars constant="true"><variable name="Max"><type><INT/></type><initialValue><simpleValue value="5"/>
       </initialValue></variable></globalVars>
     </configuration></configurations></instances>"""
-    result = imported(project_xml(pou_xml("Main", "<xhtml:p></xhtml:p>", language="ST"), instances=instances,
-                                  data_types=types))
+    result = imported(
+        project_xml(pou_xml("Main", "<xhtml:p></xhtml:p>", language="ST"), instances=instances, data_types=types)
+    )
     project = result.project
-    assert project.types == ("TYPE\n    Point : STRUCT\n        x : INT;\n        y : INT := 2;\n    END_STRUCT;\n"
-                             "    Level : USINT (0..9) := 3;\nEND_TYPE")
+    assert project.types == (
+        "TYPE\n    Point : STRUCT\n        x : INT;\n        y : INT := 2;\n    END_STRUCT;\n"
+        "    Level : USINT (0..9) := 3;\nEND_TYPE"
+    )
     assert project.globals == ("VAR_GLOBAL CONSTANT\n    Max : INT := 5;\nEND_VAR\nVAR_GLOBAL\n    rg : BOOL;\nEND_VAR")
-    assert project.tasks == [Task(name="Fast", interval="T#5ms", priority=3, programs=["Main"]),
-                             Task(name="OnEvent", interval="T#10ms", priority=1, programs=[])]
+    assert project.tasks == [
+        Task(name="Fast", interval="T#5ms", priority=3, programs=["Main"]),
+        Task(name="OnEvent", interval="T#10ms", priority=1, programs=[]),
+    ]
     assert [(d.code, d.severity, d.message) for d in result.diagnostics] == [
-        ("PLCOPEN-CONFIG", "warning", "task OnEvent has no interval (an event task); it is imported as a cyclic "
-                                      "task of T#10ms"),
-        ("PLCOPEN-CONFIG", "warning", "program instance 'loose' is not assigned to a task; LadderLab runs programs "
-                                      "from tasks only, so it was not imported")]
+        (
+            "PLCOPEN-CONFIG",
+            "warning",
+            "task OnEvent has no interval (an event task); it is imported as a cyclic task of T#10ms",
+        ),
+        (
+            "PLCOPEN-CONFIG",
+            "warning",
+            "program instance 'loose' is not assigned to a task; LadderLab runs programs "
+            "from tasks only, so it was not imported",
+        ),
+    ]
 
 
 def test_sfc_and_il_pous_actions_and_foreign_add_data_are_reported_not_dropped_silently():
-    pous = (pou_xml("Seq", "<step localId='1' name='Init' initialStep='true'>" + pos(0, 0) + "</step>"
-                    "<step localId='2' name='Run'>" + pos(0, 40) + "</step>", language="SFC", pou_type="functionBlock")
-            + pou_xml("Asm", "<xhtml:p>LD TRUE\n(* keep *)\nST x</xhtml:p>", language="IL")
-            + '<pou name="Main" pouType="program"><actions><action name="Blink"><body><ST><xhtml:p>;</xhtml:p></ST>'
-              '</body></action></actions><body><ST><xhtml:p>x := 1;</xhtml:p></ST></body>'
-              '<addData><data name="http://vendor.example/pou" handleUnknown="preserve"><v/></data></addData></pou>')
+    pous = (
+        pou_xml(
+            "Seq",
+            "<step localId='1' name='Init' initialStep='true'>" + pos(0, 0) + "</step>"
+            "<step localId='2' name='Run'>" + pos(0, 40) + "</step>",
+            language="SFC",
+            pou_type="functionBlock",
+        )
+        + pou_xml("Asm", "<xhtml:p>LD TRUE\n(* keep *)\nST x</xhtml:p>", language="IL")
+        + '<pou name="Main" pouType="program"><actions><action name="Blink"><body><ST><xhtml:p>;</xhtml:p></ST>'
+        "</body></action></actions><body><ST><xhtml:p>x := 1;</xhtml:p></ST></body>"
+        '<addData><data name="http://vendor.example/pou" handleUnknown="preserve"><v/></data></addData></pou>'
+    )
     result = imported(project_xml(pous))
     assert [(d.code, d.pou, d.message) for d in result.diagnostics] == [
-        ("PLCOPEN-UNSUPPORTED", "Seq", "POU Seq is written in SFC, which LadderLab does not support; it was imported "
-                                       "with its interface and a body that does nothing (the names of its steps are "
-                                       "kept as comments), so its callers build and run"),
-        ("PLCOPEN-UNSUPPORTED", "Asm", "POU Asm is written in IL, which LadderLab does not support; it was imported "
-                                       "with its interface and a body that does nothing (the IL text is kept as "
-                                       "comments), so its callers build and run"),
+        (
+            "PLCOPEN-UNSUPPORTED",
+            "Seq",
+            "POU Seq is written in SFC, which LadderLab does not support; it was imported "
+            "with its interface and a body that does nothing (the names of its steps are "
+            "kept as comments), so its callers build and run",
+        ),
+        (
+            "PLCOPEN-UNSUPPORTED",
+            "Asm",
+            "POU Asm is written in IL, which LadderLab does not support; it was imported "
+            "with its interface and a body that does nothing (the IL text is kept as "
+            "comments), so its callers build and run",
+        ),
         ("PLCOPEN-UNSUPPORTED", "Main", "action 'Blink' of POU Main was not imported: LadderLab has no actions"),
-        ("PLCOPEN-ADDDATA", None, "addData 'http://vendor.example/pou' (1 place) is another tool's data that "
-                                  "LadderLab cannot carry; it was dropped")]
+        (
+            "PLCOPEN-ADDDATA",
+            None,
+            "addData 'http://vendor.example/pou' (1 place) is another tool's data that "
+            "LadderLab cannot carry; it was dropped",
+        ),
+    ]
     assert all(d.severity == "warning" for d in result.diagnostics)
     seq, asm, main = result.project.pous
     assert (seq.name, seq.kind, seq.language, asm.name, asm.language, main.name) == (
-        "Seq", "function_block", "st", "Asm", "st", "Main")
-    assert seq.body == ("// Imported from SFC, which LadderLab cannot run: this body does nothing. The original SFC:\n"
-                        "// step Init (initial)\n// step Run")
-    assert asm.body == ("// Imported from IL, which LadderLab cannot run: this body does nothing. The original IL:\n"
-                        "// LD TRUE\n// (* keep *)\n// ST x")
+        "Seq",
+        "function_block",
+        "st",
+        "Asm",
+        "st",
+        "Main",
+    )
+    assert seq.body == (
+        "// Imported from SFC, which LadderLab cannot run: this body does nothing. The original SFC:\n"
+        "// step Init (initial)\n// step Run"
+    )
+    assert asm.body == (
+        "// Imported from IL, which LadderLab cannot run: this body does nothing. The original IL:\n"
+        "// LD TRUE\n// (* keep *)\n// ST x"
+    )
 
 
 def test_a_caller_of_an_il_function_block_builds_and_runs_with_its_interface():
     """The stand-in keeps the IL FB's interface: the ST caller builds, its own logic runs, the FB's output stays default."""
-    interface = ("<interface><inputVars><variable name='Go'><type><BOOL/></type></variable></inputVars>"
-                 "<outputVars><variable name='Out'><type><INT/></type></variable></outputVars></interface>")
-    counter = (f'<pou name="CounterIL" pouType="functionBlock">{interface}<body><IL><xhtml:p>LD Go\nST Out'
-               '</xhtml:p></IL></body></pou>')
-    main = ('<pou name="Main" pouType="program"><interface><localVars><variable name="c"><type><derived name="CounterIL"/>'
-            '</type></variable><variable name="n"><type><INT/></type></variable></localVars></interface>'
-            '<body><ST><xhtml:p>c(Go := TRUE); n := n + 1 + c.Out;</xhtml:p></ST></body></pou>')
+    interface = (
+        "<interface><inputVars><variable name='Go'><type><BOOL/></type></variable></inputVars>"
+        "<outputVars><variable name='Out'><type><INT/></type></variable></outputVars></interface>"
+    )
+    counter = (
+        f'<pou name="CounterIL" pouType="functionBlock">{interface}<body><IL><xhtml:p>LD Go\nST Out'
+        "</xhtml:p></IL></body></pou>"
+    )
+    main = (
+        '<pou name="Main" pouType="program"><interface><localVars><variable name="c"><type><derived name="CounterIL"/>'
+        '</type></variable><variable name="n"><type><INT/></type></variable></localVars></interface>'
+        "<body><ST><xhtml:p>c(Go := TRUE); n := n + 1 + c.Out;</xhtml:p></ST></body></pou>"
+    )
     project = imported(project_xml(counter + main)).project
     result = lower_project(project)
     assert [d for d in result.diagnostics if d.severity == "error"] == []
@@ -474,7 +686,11 @@ END_VAR
     assert result.diagnostics == []
     (pou,) = result.project.pous
     assert (result.project.name, pou.name, pou.return_type, pou.declarations) == (
-        "cfc", "main", "DINT", "VAR\nx: BOOL := FALSE;\nEND_VAR")
+        "cfc",
+        "main",
+        "DINT",
+        "VAR\nx: BOOL := FALSE;\nEND_VAR",
+    )
 
 
 def test_tc6_2_00_documents_are_read_as_2_01():
@@ -492,13 +708,19 @@ def test_the_project_is_named_after_the_content_header_unless_told(name, expecte
 
 
 def test_fbd_pin_modifiers_and_output_modes():
-    data = fbd_project(in_var(1, "a", 0, 0, attrs='negated="true"')
-                       + block(2, "AND", {"IN1": ("1",), "IN2": ("1",)}, ["OUT"], x=100, y=0).replace(
-                           '<variable formalParameter="IN2">', '<variable formalParameter="IN2" edge="rising">')
-                       + out_var(3, "q", "2.OUT", x=200, y=0, attrs='storage="reset"'))
+    data = fbd_project(
+        in_var(1, "a", 0, 0, attrs='negated="true"')
+        + block(2, "AND", {"IN1": ("1",), "IN2": ("1",)}, ["OUT"], x=100, y=0).replace(
+            '<variable formalParameter="IN2">', '<variable formalParameter="IN2" edge="rising">'
+        )
+        + out_var(3, "q", "2.OUT", x=200, y=0, attrs='storage="reset"')
+    )
     (network,) = imported(data).project.pous[0].body.networks
     nodes = {name(n): n for n in network.nodes}
     assert list(nodes) == ["AND", "out:q", "in:NOT a"] and nodes["out:q"].mode == "reset"
     assert nodes["AND"].pins == {"IN2": PinFlags(negated=False, edge="rising")}
-    assert wires(network) == {("in:NOT a", "OUT", "AND", "IN1"), ("in:NOT a", "OUT", "AND", "IN2"),
-                              ("AND", "OUT", "out:q", "IN")}
+    assert wires(network) == {
+        ("in:NOT a", "OUT", "AND", "IN1"),
+        ("in:NOT a", "OUT", "AND", "IN2"),
+        ("AND", "OUT", "out:q", "IN"),
+    }

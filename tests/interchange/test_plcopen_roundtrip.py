@@ -69,16 +69,26 @@ def test_motor_example_read_back_from_plain_plcopen_runs_the_same():
     motor = load_project_path(EXAMPLES / "motor")
     plain = import_plcopen(strip_ladderlab(export_plcopen(motor))).project
     assert plain.pous[0].body != motor.pous[0].body  # the ids are new
-    pattern = [{"Start": True}, {}, {"Start": False}, *[{}] * 520, {"Stop": True}, {"Stop": False},
-               {"Start": True, "ResetCount": True}, {"Start": False}, *[{}] * 30]
+    pattern = [
+        {"Start": True},
+        {},
+        {"Start": False},
+        *[{}] * 520,
+        {"Stop": True},
+        {"Stop": False},
+        {"Start": True, "ResetCount": True},
+        {"Start": False},
+        *[{}] * 30,
+    ]
     watch = ["Motor", "StartCount", "Speed", "Main.MotorRunning", "Main.Lamp", "Scaling.HighSpeed"]
     assert run(plain, pattern, watch) == run(motor, pattern, watch)
 
 
 INPUTS = ["i0", "i1", "i2", "i3"]
 OUTPUTS = ["q0", "q1", "q2"]
-DECLARATIONS = ("VAR\n    i0, i1, i2, i3 : BOOL;\n    q0, q1, q2 : BOOL;\n    t0, t1 : TON;\n    c0 : CTU;\n"
-                "    n : INT;\nEND_VAR")
+DECLARATIONS = (
+    "VAR\n    i0, i1, i2, i3 : BOOL;\n    q0, q1, q2 : BOOL;\n    t0, t1 : TON;\n    c0 : CTU;\n    n : INT;\nEND_VAR"
+)
 
 
 @st.composite
@@ -90,11 +100,21 @@ def rung(draw, ids: Ids, depth: int, timers: list[str], dead: bool = True) -> li
         ends = dead and position == count - 1  # only the last element's branches may end in a return
         choice = draw(st.integers(0, 9))
         if choice < 5:
-            items.append(Contact(id=ids(), var=draw(st.sampled_from(INPUTS + OUTPUTS)),
-                                 mode=draw(st.sampled_from(["no", "nc", "p", "n"]))))
+            items.append(
+                Contact(
+                    id=ids(),
+                    var=draw(st.sampled_from(INPUTS + OUTPUTS)),
+                    mode=draw(st.sampled_from(["no", "nc", "p", "n"])),
+                )
+            )
         elif choice < 7 or depth == 0:
-            items.append(Coil(id=ids(), var=draw(st.sampled_from(OUTPUTS)),
-                              mode=draw(st.sampled_from(["normal", "negated", "set", "reset", "p", "n"]))))
+            items.append(
+                Coil(
+                    id=ids(),
+                    var=draw(st.sampled_from(OUTPUTS)),
+                    mode=draw(st.sampled_from(["normal", "negated", "set", "reset", "p", "n"])),
+                )
+            )
         elif choice == 7 and timers:
             items.append(Box(id=ids(), call="TON", instance=timers.pop(), inputs={"PT": "T#30ms"}))
         elif choice == 8:
@@ -119,8 +139,10 @@ def ld_programs(draw) -> Project:
 
 
 @settings(max_examples=40)
-@given(ld_programs(), st.lists(st.fixed_dictionaries({f"Main.{i}": st.booleans() for i in INPUTS}), min_size=12,
-                               max_size=12))
+@given(
+    ld_programs(),
+    st.lists(st.fixed_dictionaries({f"Main.{i}": st.booleans() for i in INPUTS}), min_size=12, max_size=12),
+)
 def test_generated_ld_read_back_from_plain_plcopen_behaves_the_same(project, scans):
     """Random rungs of contacts, coils, parallels, timers and counters with contact chains on their inputs: the
     importer rebuilds them from the graph alone (new ids, networks split where the drawing is not connected),
@@ -129,8 +151,12 @@ def test_generated_ld_read_back_from_plain_plcopen_behaves_the_same(project, sca
     Not comparable: a network that is only a parallel of rungs joined by nothing but the rails and that holds a
     return. PLCopen has no networks, so those rungs are separate networks for any reader (GR-03), and a return
     then acts before the later rungs run instead of after the whole network (GR-05 c); docs/plcopen.md."""
-    assume(not any(len(n.elements) == 1 and isinstance(n.elements[0], Parallel) and _has_return(n.elements)
-                   for n in project.pous[0].body.networks))
+    assume(
+        not any(
+            len(n.elements) == 1 and isinstance(n.elements[0], Parallel) and _has_return(n.elements)
+            for n in project.pous[0].body.networks
+        )
+    )
     plain = import_plcopen(strip_ladderlab(export_plcopen(project)))
     assert [d.format() for d in plain.diagnostics] == []
     watch = [f"Main.{v}" for v in OUTPUTS + ["n", "t0.ET", "t1.ET"]]
@@ -138,15 +164,24 @@ def test_generated_ld_read_back_from_plain_plcopen_behaves_the_same(project, sca
 
 
 def _has_return(items: list) -> bool:
-    return any(isinstance(i, Return) or isinstance(i, Parallel) and any(_has_return(b) for b in i.branches)
-               for i in items)
+    return any(
+        isinstance(i, Return) or isinstance(i, Parallel) and any(_has_return(b) for b in i.branches) for i in items
+    )
 
 
 # ------------------------------------------------------------------ external fixtures
 
 
-FIXTURES = sorted(p.relative_to(EXTERNAL).as_posix() for folder in FOLDERS
-                  for p in (EXTERNAL / folder).rglob("*") if p.suffix in (".xml", ".cfc")) if EXTERNAL.is_dir() else []
+FIXTURES = (
+    sorted(
+        p.relative_to(EXTERNAL).as_posix()
+        for folder in FOLDERS
+        for p in (EXTERNAL / folder).rglob("*")
+        if p.suffix in (".xml", ".cfc")
+    )
+    if EXTERNAL.is_dir()
+    else []
+)
 
 
 @pytest.mark.skipif(not FIXTURES, reason="../shared/external not present")

@@ -114,8 +114,15 @@ def test_a_bridge_is_refused_naming_every_element_of_it():
 def test_a_dead_branch_fed_from_two_points_is_refused():
     """A jump ORing two points that also go on separately cannot hang off one point of the rung."""
     p, q, j = 10, 11, 12
-    edges = [Edge(S, p, ["a"]), Edge(S, q, ["b"]), Edge(p, T, ["c1"]), Edge(q, T, ["c2"]),
-             Edge(p, 13), Edge(q, 13), Edge(13, j, ["J1"])]
+    edges = [
+        Edge(S, p, ["a"]),
+        Edge(S, q, ["b"]),
+        Edge(p, T, ["c1"]),
+        Edge(q, T, ["c2"]),
+        Edge(p, 13),
+        Edge(q, 13),
+        Edge(13, j, ["J1"]),
+    ]
     with pytest.raises(NotSeriesParallel) as caught:
         reduce_graph(edges, S, T, str, [j])
     assert "J1" in caught.value.items
@@ -155,8 +162,9 @@ def series(draw, depth: int, counter: list[int], dead: bool = True):
 
 def _dead(items: list) -> bool:
     last = items[-1] if items else None
-    return isinstance(last, str) and last.startswith("J") or isinstance(last, Par) and all(
-        _dead(b) for b in last.branches)
+    return (
+        isinstance(last, str) and last.startswith("J") or isinstance(last, Par) and all(_dead(b) for b in last.branches)
+    )
 
 
 @given(st.builds(list).flatmap(lambda counter: series(3, [0])), st.randoms())

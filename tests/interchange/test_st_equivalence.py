@@ -39,8 +39,11 @@ def with_controls(pou: Pou, choices: list) -> Pou:
             continue
         element = f"ctl{index}"
         if pou.language == "ld":
-            network.elements.append(ld.Return(id=element) if choice == "return" else
-                                    ld.Jump(id=element, target=f"L{index + 1 + choice % ahead}"))
+            network.elements.append(
+                ld.Return(id=element)
+                if choice == "return"
+                else ld.Jump(id=element, target=f"L{index + 1 + choice % ahead}")
+            )
             continue
         source = next(w.from_ for w in network.wires if w.to.node.startswith("out"))
         network.nodes.append(fret(element) if choice == "return" else fjump(element, f"L{index + 1 + choice % ahead}"))
@@ -48,7 +51,7 @@ def with_controls(pou: Pou, choices: list) -> Pou:
     return pou
 
 
-@given(st.lists(generated.rungs, min_size=1, max_size=4), controls, st.integers(0, 2 ** 16))
+@given(st.lists(generated.rungs, min_size=1, max_size=4), controls, st.integers(0, 2**16))
 def test_property_exported_ld_and_fbd_run_like_the_diagrams(program, choices, seed):
     for pou in (generated.ld_program(program), generated.fbd_program(program)):
         same_traces(project(with_controls(pou, choices)), seed=seed)
@@ -61,8 +64,14 @@ def test_motor_example_exports_and_runs_like_the_diagrams():
 
 # ------------------------------------------------------------------ every diagram program of the suite
 
-DIAGRAM_TESTS = ["test_diagram_examples", "test_diagram_mixed", "test_diagram_probes",
-                 "test_diagram_plcopen_examples", "test_lower_ld", "test_lower_fbd"]
+DIAGRAM_TESTS = [
+    "test_diagram_examples",
+    "test_diagram_mixed",
+    "test_diagram_probes",
+    "test_diagram_plcopen_examples",
+    "test_lower_ld",
+    "test_lower_fbd",
+]
 
 
 def _test_functions() -> list[tuple[str, str]]:
@@ -100,7 +109,9 @@ def _recorded_projects(module_name: str, test_name: str, monkeypatch) -> list:
             built = project(*pous, globals=globals)
             recorded.setdefault(built.model_dump_json(), built)
             return result
+
         return record
+
     for helper in ("simulate", "lower_ok"):
         if hasattr(module, helper):
             monkeypatch.setattr(module, helper, recorder(getattr(module, helper)))
@@ -121,7 +132,7 @@ def test_every_diagram_program_of_the_suite_exports_to_st_that_runs_identically(
 
 # ------------------------------------------------------------------ richer LD rungs
 
-RICH = ("VAR i0, i1, i2, o0, o1, o2 : BOOL; c0, c1 : INT; e : TIME; t0, t1 : TON; k0 : CTU; END_VAR")
+RICH = "VAR i0, i1, i2, o0, o1, o2 : BOOL; c0, c1 : INT; e : TIME; t0, t1 : TON; k0 : CTU; END_VAR"
 BOOLS = ["i0", "i1", "i2", "o0", "o1", "o2"]
 
 
@@ -135,11 +146,22 @@ def rich_series(draw, depth: int = 0) -> list:
         if kind == "contact":
             elements.append(("contact", draw(st.sampled_from(BOOLS)), draw(st.sampled_from(["no", "nc", "p", "n"]))))
         elif kind == "coil":
-            elements.append(("coil", draw(st.sampled_from(BOOLS[3:])),
-                             draw(st.sampled_from(["normal", "negated", "set", "reset", "p", "n"]))))
+            elements.append(
+                (
+                    "coil",
+                    draw(st.sampled_from(BOOLS[3:])),
+                    draw(st.sampled_from(["normal", "negated", "set", "reset", "p", "n"])),
+                )
+            )
         elif kind == "compare":
-            elements.append(("compare", draw(st.sampled_from(["GT", "LE", "EQ", "NE"])),
-                             draw(st.sampled_from(["c0", "c1"])), draw(st.integers(0, 6))))
+            elements.append(
+                (
+                    "compare",
+                    draw(st.sampled_from(["GT", "LE", "EQ", "NE"])),
+                    draw(st.sampled_from(["c0", "c1"])),
+                    draw(st.integers(0, 6)),
+                )
+            )
         elif kind == "parallel":
             elements.append(("parallel", draw(st.lists(rich_series(depth + 1), min_size=2, max_size=3))))
         else:
@@ -159,21 +181,37 @@ def rich_elements(series: list, ids) -> list:
         elif item[0] == "parallel":
             built.append(ld.Parallel(id=ids("p"), branches=[rich_elements(b, ids) for b in item[1]]))
         elif item[1] == "TON":
-            built.append(ld.Box(id=ids("ton"), call="TON", instance=f"t{ids.count % 2}", inputs={"PT": "T#30ms"},
-                                outputs={"ET": "e"} if ids.count % 3 == 0 else {}))
+            built.append(
+                ld.Box(
+                    id=ids("ton"),
+                    call="TON",
+                    instance=f"t{ids.count % 2}",
+                    inputs={"PT": "T#30ms"},
+                    outputs={"ET": "e"} if ids.count % 3 == 0 else {},
+                )
+            )
         elif item[1] == "CTU":
-            built.append(ld.Box(id=ids("ctu"), call="CTU", instance="k0",
-                                inputs={"PV": "3", "R": rich_elements(item[2], ids)}, outputs={"CV": "c0"}))
+            built.append(
+                ld.Box(
+                    id=ids("ctu"),
+                    call="CTU",
+                    instance="k0",
+                    inputs={"PV": "3", "R": rich_elements(item[2], ids)},
+                    outputs={"CV": "c0"},
+                )
+            )
         else:
-            built.append(ld.Box(id=ids("add"), call="ADD", en=True, inputs={"IN1": "c1", "IN2": "1"},
-                                outputs={"OUT": "c1"}))
+            built.append(
+                ld.Box(id=ids("add"), call="ADD", en=True, inputs={"IN1": "c1", "IN2": "1"}, outputs={"OUT": "c1"})
+            )
     return built
 
 
-@given(st.lists(rich_series(), min_size=1, max_size=4), st.integers(0, 2 ** 16))
+@given(st.lists(rich_series(), min_size=1, max_size=4), st.integers(0, 2**16))
 def test_property_rich_ld_rungs_export_to_st_that_runs_identically(program, seed):
     ids = generated._Ids()
-    networks = [ld.LdNetwork(id=f"n{index}", elements=rich_elements(series, ids))
-                for index, series in enumerate(program)]
+    networks = [
+        ld.LdNetwork(id=f"n{index}", elements=rich_elements(series, ids)) for index, series in enumerate(program)
+    ]
     pou = Pou(name="Main", kind="program", language="ld", declarations=RICH, body=ld.LdBody(networks=networks))
     same_traces(project(pou), seed=seed)

@@ -17,62 +17,120 @@ def check(*networks, expected: str, declarations: str = DECL) -> str:
 
 
 def test_gr29_bool_blocks_are_operators_and_a_result_with_two_consumers_is_a_temporary():
-    check(net("n1", [inp("ia", "a"), inp("ib", "b"), blk("and", "AND", IN2={"negated": True}), out("ox", "x"),
-                     out("oy", "y", "set")],
-              [("ia.OUT", "and.IN1"), ("ib.OUT", "and.IN2"), ("and.OUT", "ox.IN"), ("and.OUT", "oy.IN")]),
-          expected="(* Network 1 (n1) *)\nand_OUT := a AND NOT b;\nx := and_OUT;\nIF and_OUT THEN\n    y := TRUE;\n"
-                   "END_IF;\n")
+    check(
+        net(
+            "n1",
+            [
+                inp("ia", "a"),
+                inp("ib", "b"),
+                blk("and", "AND", IN2={"negated": True}),
+                out("ox", "x"),
+                out("oy", "y", "set"),
+            ],
+            [("ia.OUT", "and.IN1"), ("ib.OUT", "and.IN2"), ("and.OUT", "ox.IN"), ("and.OUT", "oy.IN")],
+        ),
+        expected="(* Network 1 (n1) *)\nand_OUT := a AND NOT b;\nx := and_OUT;\nIF and_OUT THEN\n    y := TRUE;\n"
+        "END_IF;\n",
+    )
 
 
 def test_fb_block_is_a_formal_call_its_outputs_are_read_from_the_instance_and_an_edge_pin_is_an_r_trig():
-    check(net("n1", [inp("ia", "a"), inp("pt", "T#50ms"), blk("t", "TON", "t1", IN={"edge": "rising"}),
-                     out("ox", "x"), out("oe", "e")],
-              [("ia.OUT", "t.IN"), ("pt.OUT", "t.PT"), ("t.Q", "ox.IN"), ("t.ET", "oe.IN")]),
-          expected="(* Network 1 (n1) *)\nt_IN_trig(CLK := a);\nt1(IN := t_IN_trig.Q, PT := T#50ms);\n"
-                   "e := t1.ET;\nx := t1.Q;\n")
+    check(
+        net(
+            "n1",
+            [
+                inp("ia", "a"),
+                inp("pt", "T#50ms"),
+                blk("t", "TON", "t1", IN={"edge": "rising"}),
+                out("ox", "x"),
+                out("oe", "e"),
+            ],
+            [("ia.OUT", "t.IN"), ("pt.OUT", "t.PT"), ("t.Q", "ox.IN"), ("t.ET", "oe.IN")],
+        ),
+        expected="(* Network 1 (n1) *)\nt_IN_trig(CLK := a);\nt1(IN := t_IN_trig.Q, PT := T#50ms);\n"
+        "e := t1.ET;\nx := t1.Q;\n",
+    )
 
 
 def test_lab01_block_with_en_runs_under_if_its_outputs_are_written_only_then_and_eno_is_tracked():
     """The input node reading n is kept in a temporary (n is written in the network: GR-05, read once); ENO
     is the call's own (a standard function's warning clears it)."""
-    check(net("n1", [inp("g", "go"), inp("ia", "n"), inp("one", "1"), blk("add", "ADD", en=True), out("on", "n"),
-                     out("ok", "ok")],
-              [("g.OUT", "add.EN"), ("ia.OUT", "add.IN1"), ("one.OUT", "add.IN2"), ("add.OUT", "on.IN"),
-               ("add.ENO", "ok.IN")]),
-          expected="(* Network 1 (n1) *)\nia := n;\nadd_EN := go;\nIF add_EN THEN\n"
-                   "    add_OUT := ADD(IN1 := ia, IN2 := 1, ENO => add_ENO);\nELSE\n    add_ENO := FALSE;\nEND_IF;\n"
-                   "ok := add_ENO;\nIF add_EN THEN\n    n := add_OUT;\nEND_IF;\n")
+    check(
+        net(
+            "n1",
+            [
+                inp("g", "go"),
+                inp("ia", "n"),
+                inp("one", "1"),
+                blk("add", "ADD", en=True),
+                out("on", "n"),
+                out("ok", "ok"),
+            ],
+            [
+                ("g.OUT", "add.EN"),
+                ("ia.OUT", "add.IN1"),
+                ("one.OUT", "add.IN2"),
+                ("add.OUT", "on.IN"),
+                ("add.ENO", "ok.IN"),
+            ],
+        ),
+        expected="(* Network 1 (n1) *)\nia := n;\nadd_EN := go;\nIF add_EN THEN\n"
+        "    add_OUT := ADD(IN1 := ia, IN2 := 1, ENO => add_ENO);\nELSE\n    add_ENO := FALSE;\nEND_IF;\n"
+        "ok := add_ENO;\nIF add_EN THEN\n    n := add_OUT;\nEND_IF;\n",
+    )
 
 
 def test_gr06_feedback_from_a_function_reads_the_variable_its_result_goes_to():
-    check(net("n1", [inp("one", "1"), blk("add", "ADD", x=0, y=0), out("on", "n")],
-              [("add.OUT", "add.IN1"), ("one.OUT", "add.IN2"), ("add.OUT", "on.IN")]),
-          expected="(* Network 1 (n1) *)\nn := ADD(IN1 := n, IN2 := 1);\n")
+    check(
+        net(
+            "n1",
+            [inp("one", "1"), blk("add", "ADD", x=0, y=0), out("on", "n")],
+            [("add.OUT", "add.IN1"), ("one.OUT", "add.IN2"), ("add.OUT", "on.IN")],
+        ),
+        expected="(* Network 1 (n1) *)\nn := ADD(IN1 := n, IN2 := 1);\n",
+    )
 
 
 def test_gr06_feedback_from_an_fb_output_reads_the_instance_before_the_call():
-    check(net("n1", [inp("pt", "T#30ms"), blk("t", "TON", "t1", IN={"negated": True}), out("ox", "x")],
-              [("t.Q", "t.IN"), ("pt.OUT", "t.PT"), ("t.Q", "ox.IN")]),
-          expected="(* Network 1 (n1) *)\nt1(IN := NOT t1.Q, PT := T#30ms);\nx := t1.Q;\n")
+    check(
+        net(
+            "n1",
+            [inp("pt", "T#30ms"), blk("t", "TON", "t1", IN={"negated": True}), out("ox", "x")],
+            [("t.Q", "t.IN"), ("pt.OUT", "t.PT"), ("t.Q", "ox.IN")],
+        ),
+        expected="(* Network 1 (n1) *)\nt1(IN := NOT t1.Q, PT := T#30ms);\nx := t1.Q;\n",
+    )
 
 
 def test_fbd_jump_and_return():
-    check(net("n1", [inp("ia", "a"), fjump("j", "L")], [("ia.OUT", "j.IN")]),
-          net("n2", [inp("ib", "b"), out("ox", "x")], [("ib.OUT", "ox.IN")]),
-          net("n3", [inp("ic", "c"), fret("r")], [("ic.OUT", "r.IN")], label="L"),
-          net("n4", [inp("ib4", "b"), out("oy", "y")], [("ib4.OUT", "oy.IN")]),
-          expected="(* Network 1 (n1) *)\nIF NOT a THEN\n    (* Network 2 (n2) *)\n    x := b;\nEND_IF;\n"
-                   "(* Network 3 (n3), label L *)\nIF c THEN\n    RETURN;\nEND_IF;\n(* Network 4 (n4) *)\ny := b;\n")
+    check(
+        net("n1", [inp("ia", "a"), fjump("j", "L")], [("ia.OUT", "j.IN")]),
+        net("n2", [inp("ib", "b"), out("ox", "x")], [("ib.OUT", "ox.IN")]),
+        net("n3", [inp("ic", "c"), fret("r")], [("ic.OUT", "r.IN")], label="L"),
+        net("n4", [inp("ib4", "b"), out("oy", "y")], [("ib4.OUT", "oy.IN")]),
+        expected="(* Network 1 (n1) *)\nIF NOT a THEN\n    (* Network 2 (n2) *)\n    x := b;\nEND_IF;\n"
+        "(* Network 3 (n3), label L *)\nIF c THEN\n    RETURN;\nEND_IF;\n(* Network 4 (n4) *)\ny := b;\n",
+    )
 
 
 def test_gr02_connector_and_continuation_carry_the_value_and_an_edge_output_is_an_r_trig():
-    check(net("n1", [inp("ia", "a"), connector("k", "w"), continuation("cc", "w"), out("ox", "x", "p")],
-              [("ia.OUT", "k.IN"), ("cc.OUT", "ox.IN")]),
-          expected="(* Network 1 (n1) *)\nox_trig(CLK := a);\nx := ox_trig.Q;\n")
+    check(
+        net(
+            "n1",
+            [inp("ia", "a"), connector("k", "w"), continuation("cc", "w"), out("ox", "x", "p")],
+            [("ia.OUT", "k.IN"), ("cc.OUT", "ox.IN")],
+        ),
+        expected="(* Network 1 (n1) *)\nox_trig(CLK := a);\nx := ox_trig.Q;\n",
+    )
 
 
 def test_gr05_an_input_node_whose_variable_the_network_writes_is_read_once_where_it_stands():
     """Even unused: the lowering stores it in a temporary at its place in the order."""
-    check(net("n1", [inp("ia", "n"), inp("unused", "n"), blk("add", "ADD"), inp("one", "1"), out("o", "n")],
-              [("ia.OUT", "add.IN1"), ("one.OUT", "add.IN2"), ("add.OUT", "o.IN")]),
-          expected="(* Network 1 (n1) *)\nia := n;\nn := ADD(IN1 := ia, IN2 := 1);\nunused := n;\n")
+    check(
+        net(
+            "n1",
+            [inp("ia", "n"), inp("unused", "n"), blk("add", "ADD"), inp("one", "1"), out("o", "n")],
+            [("ia.OUT", "add.IN1"), ("one.OUT", "add.IN2"), ("add.OUT", "o.IN")],
+        ),
+        expected="(* Network 1 (n1) *)\nia := n;\nn := ADD(IN1 := ia, IN2 := 1);\nunused := n;\n",
+    )

@@ -45,8 +45,9 @@ class _Builder:
     def connect(self, source: str, target: str) -> None:
         self.wires.append(wire(source, target))
 
-    def block(self, call: str, instance: str | None, inputs: dict[str, str], outputs: dict[str, str],
-              flags: bool = True) -> str:
+    def block(
+        self, call: str, instance: str | None, inputs: dict[str, str], outputs: dict[str, str], flags: bool = True
+    ) -> str:
         name = self.id(call.lower())
         en = self.draw(st.booleans()) and self.draw(st.booleans())
         pins = {}
@@ -71,14 +72,15 @@ class _Builder:
         if kind == "bool":
             call = draw(st.sampled_from(["AND", "OR", "XOR", "NOT"]))
             count = 1 if call == "NOT" else draw(st.integers(2, 3))
-            self.block(call, None, {f"IN{n + 1}" if call != "NOT" else "IN": "BOOL" for n in range(count)},
-                       {"OUT": "BOOL"})
+            self.block(
+                call, None, {f"IN{n + 1}" if call != "NOT" else "IN": "BOOL" for n in range(count)}, {"OUT": "BOOL"}
+            )
         elif kind == "int":
-            self.block(draw(st.sampled_from(["ADD", "SUB", "MUL", "MAX"])), None, {"IN1": "INT", "IN2": "INT"},
-                       {"OUT": "INT"})
+            self.block(
+                draw(st.sampled_from(["ADD", "SUB", "MUL", "MAX"])), None, {"IN1": "INT", "IN2": "INT"}, {"OUT": "INT"}
+            )
         elif kind == "compare":
-            self.block(draw(st.sampled_from(["GT", "LT", "EQ"])), None, {"IN1": "INT", "IN2": "INT"},
-                       {"OUT": "BOOL"})
+            self.block(draw(st.sampled_from(["GT", "LT", "EQ"])), None, {"IN1": "INT", "IN2": "INT"}, {"OUT": "BOOL"})
         elif kind == "select":
             self.block("SEL", None, {"G": "BOOL", "IN0": "INT", "IN1": "INT"}, {"OUT": "INT"})
         elif kind == "timer":
@@ -86,8 +88,12 @@ class _Builder:
             self.add(inp(f"{name}pt", "T#20ms"))
             self.connect(f"{name}pt.OUT", f"{name}.PT")
         elif kind == "counter":
-            self.block("CTU", draw(st.sampled_from(["k0", "k1"])), {"CU": "BOOL", "R": "BOOL", "PV": "INT"},
-                       {"Q": "BOOL", "CV": "INT"})
+            self.block(
+                "CTU",
+                draw(st.sampled_from(["k0", "k1"])),
+                {"CU": "BOOL", "R": "BOOL", "PV": "INT"},
+                {"Q": "BOOL", "CV": "INT"},
+            )
         elif kind == "accumulate":  # GR-06: c := c + x through the feedback wire and the output variable
             name, target = self.id("acc"), draw(st.sampled_from(INT_VARS))
             self.add(fbd.Block(id=name, call="ADD"))
@@ -97,8 +103,14 @@ class _Builder:
             self.connect(f"{name}.OUT", f"{name}o.IN")
         else:  # a TON that restarts itself: IN is its own Q, negated, from the previous scan
             name = self.id("osc")
-            self.add(fbd.Block(id=name, call="TON", instance=draw(st.sampled_from(["t0", "t1"])),
-                               pins={"IN": fbd.PinFlags(negated=True)}))
+            self.add(
+                fbd.Block(
+                    id=name,
+                    call="TON",
+                    instance=draw(st.sampled_from(["t0", "t1"])),
+                    pins={"IN": fbd.PinFlags(negated=True)},
+                )
+            )
             self.add(inp(f"{name}pt", "T#30ms"))
             self.connect(f"{name}.Q", f"{name}.IN")
             self.connect(f"{name}pt.OUT", f"{name}.PT")
@@ -133,6 +145,6 @@ def programs(draw) -> Pou:
     return Pou(name="Main", kind="program", language="fbd", declarations=DECLARATIONS, body=body)
 
 
-@given(programs(), st.integers(0, 2 ** 16))
+@given(programs(), st.integers(0, 2**16))
 def test_property_generated_fbd_networks_export_to_st_that_runs_identically(pou, seed):
     same_traces(project(pou), seed=seed)

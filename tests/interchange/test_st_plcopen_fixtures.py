@@ -16,16 +16,24 @@ from tests.support import EXTERNAL, external
 def _fixtures() -> list[str]:
     if not EXTERNAL.is_dir():
         return []
-    return sorted(p.relative_to(EXTERNAL).as_posix() for folder in FOLDERS if (EXTERNAL / folder).is_dir()
-                  for p in (EXTERNAL / folder).rglob("*") if p.suffix in (".xml", ".cfc"))
+    return sorted(
+        p.relative_to(EXTERNAL).as_posix()
+        for folder in FOLDERS
+        if (EXTERNAL / folder).is_dir()
+        for p in (EXTERNAL / folder).rglob("*")
+        if p.suffix in (".xml", ".cfc")
+    )
 
 
 def _project(path: str):
     return import_plcopen(external(path).read_bytes(), file=path).project
 
 
-BUILDING = [path for path in _fixtures() if build_project(_project(path)).compiled is not None
-            and any(pou.language != "st" for pou in _project(path).pous)]
+BUILDING = [
+    path
+    for path in _fixtures()
+    if build_project(_project(path)).compiled is not None and any(pou.language != "st" for pou in _project(path).pous)
+]
 
 
 def test_enough_fixtures_build_to_make_the_comparison_worth_it():

@@ -30,12 +30,21 @@ def test_motor_project_file_has_every_part_and_runs_like_the_project():
     assert text.startswith("VAR_GLOBAL\n    Start AT %IX0.0 : BOOL;")
     units = ("VAR_GLOBAL", "PROGRAM ", "FUNCTION_BLOCK ", "END_PROGRAM", "END_FUNCTION_BLOCK", "CONFIGURATION")
     assert [line for line in text.splitlines() if line.startswith(units)] == [
-        "VAR_GLOBAL", "PROGRAM Main", "END_PROGRAM", "FUNCTION_BLOCK Blinker", "END_FUNCTION_BLOCK",
-        "PROGRAM Scaling", "END_PROGRAM", "CONFIGURATION motor_config"]
-    assert text.endswith("CONFIGURATION motor_config\n    RESOURCE main_resource ON PLC\n"
-                         "        TASK MainTask(INTERVAL := T#10ms, PRIORITY := 1);\n"
-                         "        PROGRAM Main WITH MainTask : Main;\n        PROGRAM Scaling WITH MainTask : Scaling;\n"
-                         "    END_RESOURCE\nEND_CONFIGURATION\n")
+        "VAR_GLOBAL",
+        "PROGRAM Main",
+        "END_PROGRAM",
+        "FUNCTION_BLOCK Blinker",
+        "END_FUNCTION_BLOCK",
+        "PROGRAM Scaling",
+        "END_PROGRAM",
+        "CONFIGURATION motor_config",
+    ]
+    assert text.endswith(
+        "CONFIGURATION motor_config\n    RESOURCE main_resource ON PLC\n"
+        "        TASK MainTask(INTERVAL := T#10ms, PRIORITY := 1);\n"
+        "        PROGRAM Main WITH MainTask : Main;\n        PROGRAM Scaling WITH MainTask : Scaling;\n"
+        "    END_RESOURCE\nEND_CONFIGURATION\n"
+    )
     read = read_back(project)
     assert read.tasks == project.tasks
     same_traces(project, other=read)
@@ -45,21 +54,28 @@ def test_project_source_map_names_pou_and_network():
     project = load_project_path("examples/motor")
     result = export_project_st(project)
     lines = result.text.splitlines()
-    assert [(lines[line - 1], network, element) for line, network, element in result.source_map
-            if element == "motor"] == [("Motor := (Start OR Motor) AND NOT Stop;", "Main/seal_in", "motor")]
+    assert [
+        (lines[line - 1], network, element) for line, network, element in result.source_map if element == "motor"
+    ] == [("Motor := (Start OR Motor) AND NOT Stop;", "Main/seal_in", "motor")]
 
 
 def test_types_are_kept_and_a_project_without_tasks_gets_the_default_task_explicitly():
     """ir/lower_project.py: without tasks every PROGRAM runs in one 10 ms task; the file says so, and names
     that a user already took are not reused for the configuration."""
     main = ld_pou("Main", "VAR a : BOOL; c : TColor; END_VAR", rung("n", contact("k", "a"), coil("q", "t_config")))
-    project = Project(name="t", types="TYPE TColor : (red, green); END_TYPE", globals="VAR_GLOBAL t_config : BOOL; "
-                      "END_VAR", pous=[main])
+    project = Project(
+        name="t",
+        types="TYPE TColor : (red, green); END_TYPE",
+        globals="VAR_GLOBAL t_config : BOOL; END_VAR",
+        pous=[main],
+    )
     text = export_project_st(project).text
     assert text.startswith("TYPE TColor : (red, green); END_TYPE\n\nVAR_GLOBAL t_config : BOOL; END_VAR\n\n")
-    assert text.endswith("CONFIGURATION t_config_2\n    RESOURCE main_resource ON PLC\n"
-                         "        TASK DEFAULT(INTERVAL := T#10ms, PRIORITY := 0);\n"
-                         "        PROGRAM Main WITH DEFAULT : Main;\n    END_RESOURCE\nEND_CONFIGURATION\n")
+    assert text.endswith(
+        "CONFIGURATION t_config_2\n    RESOURCE main_resource ON PLC\n"
+        "        TASK DEFAULT(INTERVAL := T#10ms, PRIORITY := 0);\n"
+        "        PROGRAM Main WITH DEFAULT : Main;\n    END_RESOURCE\nEND_CONFIGURATION\n"
+    )
     same_traces(project, other=read_back(project))
 
 
@@ -68,15 +84,24 @@ def test_a_pou_with_errors_is_refused_with_its_diagnostics():
     result = export_project_st(Project(name="t", pous=[broken]))
     assert result.text == ""
     assert [d.code for d in result.diagnostics] == ["ST-UNKNOWN-VAR", "EXPORT-INVALID"]
-    assert (result.diagnostics[0].pou, result.diagnostics[0].network, result.diagnostics[0].element) == \
-        ("Main", "n", "k")
+    assert (result.diagnostics[0].pou, result.diagnostics[0].network, result.diagnostics[0].element) == (
+        "Main",
+        "n",
+        "k",
+    )
 
 
-@given(st.lists(generated.rungs, min_size=1, max_size=3), st.lists(generated.rungs, min_size=1, max_size=3),
-       st.integers(0, 2 ** 16))
+@given(
+    st.lists(generated.rungs, min_size=1, max_size=3),
+    st.lists(generated.rungs, min_size=1, max_size=3),
+    st.integers(0, 2**16),
+)
 def test_property_a_two_program_project_reads_back_and_runs_identically(ld_rungs, fbd_rungs, seed):
     fbd_main = generated.fbd_program(fbd_rungs)
     fbd_main = Pou(**{**fbd_main.model_dump(), "name": "Second"})
-    project = Project(name="p", pous=[generated.ld_program(ld_rungs), fbd_main],
-                      tasks=[Task(name="fast", interval="T#10ms", priority=1, programs=["Main", "Second"])])
+    project = Project(
+        name="p",
+        pous=[generated.ld_program(ld_rungs), fbd_main],
+        tasks=[Task(name="fast", interval="T#10ms", priority=1, programs=["Main", "Second"])],
+    )
     same_traces(project, scans=100, seed=seed, other=read_back(project))

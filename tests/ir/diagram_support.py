@@ -30,8 +30,9 @@ def parallel(id: str, *branches: list) -> ld.Parallel:
     return ld.Parallel(id=id, branches=list(branches))
 
 
-def box(id: str, call: str, instance: str | None = None, en: bool = False, outputs: dict | None = None,
-        **inputs) -> ld.Box:
+def box(
+    id: str, call: str, instance: str | None = None, en: bool = False, outputs: dict | None = None, **inputs
+) -> ld.Box:
     return ld.Box(id=id, call=call, instance=instance, en=en, inputs=inputs, outputs=outputs or {})
 
 
@@ -62,8 +63,15 @@ def out(id: str, var: str, mode: str = "normal", x: float | None = None, y: floa
     return fbd.OutputNode(id=id, var=var, mode=mode, pos=_pos(x, y))
 
 
-def blk(id: str, call: str, instance: str | None = None, en: bool = False, x: float | None = None,
-        y: float | None = None, **pins: dict) -> fbd.Block:
+def blk(
+    id: str,
+    call: str,
+    instance: str | None = None,
+    en: bool = False,
+    x: float | None = None,
+    y: float | None = None,
+    **pins: dict,
+) -> fbd.Block:
     flags = {pin: fbd.PinFlags(**value) for pin, value in pins.items()} or None
     return fbd.Block(id=id, call=call, instance=instance, en=en, pins=flags, pos=_pos(x, y))
 
@@ -90,14 +98,16 @@ def wire(source: str, target: str) -> fbd.Wire:
     return fbd.Wire.model_validate({"from": {"node": a, "pin": p}, "to": {"node": b, "pin": q}})
 
 
-def net(id: str, nodes: list, wires: list[tuple[str, str]], label: str | None = None,
-        order: list[str] | None = None) -> fbd.FbdNetwork:
+def net(
+    id: str, nodes: list, wires: list[tuple[str, str]], label: str | None = None, order: list[str] | None = None
+) -> fbd.FbdNetwork:
     return fbd.FbdNetwork(id=id, label=label, nodes=nodes, wires=[wire(a, b) for a, b in wires], order=order)
 
 
 def fbd_pou(name: str, declarations: str, *networks: fbd.FbdNetwork, kind: str = "program") -> Pou:
-    return Pou(name=name, kind=kind, language="fbd", declarations=declarations,
-               body=fbd.FbdBody(networks=list(networks)))
+    return Pou(
+        name=name, kind=kind, language="fbd", declarations=declarations, body=fbd.FbdBody(networks=list(networks))
+    )
 
 
 def _pos(x: float | None, y: float | None) -> fbd.Position | None:
@@ -227,6 +237,7 @@ def probes(program: ir.Program, pou: str) -> list[str]:
             elif isinstance(s, ir.If):
                 for _, body in s.branches:
                     visit(body)
+
     for block in program.pous[pou.upper()].blocks:
         visit(block.statements)
     return found

@@ -37,8 +37,9 @@ def oscat():
 def test_oscat_lowers_without_exceptions_and_only_pointers_are_unsupported(oscat):
     project, result = oscat
     lowering = collections.Counter((d.code, d.message) for d in result.diagnostics if d.code.startswith("IR-"))
-    assert set(lowering) == {("IR-UNSUPPORTED",
-                              "pointers (POINTER TO, REF_TO, ADR, REF, ^) are not supported by the engine yet")}
+    assert set(lowering) == {
+        ("IR-UNSUPPORTED", "pointers (POINTER TO, REF_TO, ADR, REF, ^) are not supported by the engine yet")
+    }
     pointer_pous = {d.pou for d in result.diagnostics if d.code == "IR-UNSUPPORTED"}
     assert 60 <= len(pointer_pous) <= 90  # 74: OSCAT's array, buffer and string helpers take POINTER TO ...
 

@@ -21,7 +21,7 @@ from tests.ir.diagram_support import blk, coil, contact, fbd_pou, inp, ld_pou, o
 INPUTS = [f"i{n}" for n in range(4)]
 OUTPUTS = [f"o{n}" for n in range(4)]
 COUNTERS = ["c0", "c1"]
-DECLARATIONS = (f"VAR {', '.join(INPUTS + OUTPUTS)} : BOOL; {', '.join(COUNTERS)} : INT; END_VAR")
+DECLARATIONS = f"VAR {', '.join(INPUTS + OUTPUTS)} : BOOL; {', '.join(COUNTERS)} : INT; END_VAR"
 SCANS = 200
 
 
@@ -45,13 +45,23 @@ class Rung:
 
 
 leaves = st.builds(Leaf, st.sampled_from(INPUTS + OUTPUTS), st.sampled_from(["no", "nc", "p", "n"]))
-trees = st.recursive(leaves, lambda inner: st.builds(Gate, st.sampled_from(["series", "parallel"]),
-                                                     st.lists(inner, min_size=2, max_size=3).map(tuple)),
-                     max_leaves=6)
-rungs = st.builds(Rung, trees,
-                  st.lists(st.tuples(st.sampled_from(["normal", "negated", "set", "reset", "p", "n"]),
-                                     st.sampled_from(OUTPUTS)), min_size=1, max_size=3).map(tuple),
-                  st.sampled_from([None, *COUNTERS]))
+trees = st.recursive(
+    leaves,
+    lambda inner: st.builds(
+        Gate, st.sampled_from(["series", "parallel"]), st.lists(inner, min_size=2, max_size=3).map(tuple)
+    ),
+    max_leaves=6,
+)
+rungs = st.builds(
+    Rung,
+    trees,
+    st.lists(
+        st.tuples(st.sampled_from(["normal", "negated", "set", "reset", "p", "n"]), st.sampled_from(OUTPUTS)),
+        min_size=1,
+        max_size=3,
+    ).map(tuple),
+    st.sampled_from([None, *COUNTERS]),
+)
 
 
 # ------------------------------------------------------------------ LD
@@ -82,8 +92,15 @@ def ld_program(program: list[Rung]) -> Pou:
         elements = ld_series(rung.condition, ids)
         elements += coils if len(coils) == 1 or index % 2 else [parallel(ids("p"), *[[c] for c in coils])]
         if rung.counter:
-            elements.append(ld.Box(id=ids("add"), call="ADD", en=True, inputs={"IN1": rung.counter, "IN2": "1"},
-                                   outputs={"OUT": rung.counter}))
+            elements.append(
+                ld.Box(
+                    id=ids("add"),
+                    call="ADD",
+                    en=True,
+                    inputs={"IN1": rung.counter, "IN2": "1"},
+                    outputs={"OUT": rung.counter},
+                )
+            )
         networks.append(ld.LdNetwork(id=f"n{index}", elements=elements))
     return ld_pou("Main", DECLARATIONS, *networks)
 
@@ -102,8 +119,12 @@ class _Net:
         if isinstance(node, Leaf):
             name = self.ids("in")
             self.nodes.append(inp(name, node.var, *self.place()))
-            flags = {"no": None, "nc": fbd.PinFlags(negated=True), "p": fbd.PinFlags(edge="rising"),
-                     "n": fbd.PinFlags(edge="falling")}[node.mode]
+            flags = {
+                "no": None,
+                "nc": fbd.PinFlags(negated=True),
+                "p": fbd.PinFlags(edge="rising"),
+                "n": fbd.PinFlags(edge="falling"),
+            }[node.mode]
             return f"{name}.OUT", flags
         name = self.ids("g")
         pins = {}
@@ -152,10 +173,18 @@ def fbd_program(program: list[Rung]) -> Pou:
             network.connect(root, f"{name}.IN")
         if rung.counter:
             add, value, one, result = ids("add"), ids("cnt"), ids("one"), ids("res")
-            network.nodes += [blk(add, "ADD", None, True, *network.place()), inp(value, rung.counter),
-                              inp(one, "1"), out(result, rung.counter, "normal", *network.place())]
-            for pin, target in ((root, f"{add}.EN"), (f"{value}.OUT", f"{add}.IN1"), (f"{one}.OUT", f"{add}.IN2"),
-                                (f"{add}.OUT", f"{result}.IN")):
+            network.nodes += [
+                blk(add, "ADD", None, True, *network.place()),
+                inp(value, rung.counter),
+                inp(one, "1"),
+                out(result, rung.counter, "normal", *network.place()),
+            ]
+            for pin, target in (
+                (root, f"{add}.EN"),
+                (f"{value}.OUT", f"{add}.IN1"),
+                (f"{one}.OUT", f"{add}.IN2"),
+                (f"{add}.OUT", f"{result}.IN"),
+            ):
                 network.connect(pin, target)
         networks.append(fbd.FbdNetwork(id=f"n{index}", nodes=network.nodes, wires=network.wires))
     return fbd_pou("Main", DECLARATIONS, *networks)
@@ -176,18 +205,24 @@ def st_program(program: list[Rung]) -> Pou:
 
     def expression(node) -> str:
         if isinstance(node, Leaf):
-            return {"no": node.var, "nc": f"NOT {node.var}", "p": None, "n": None}[node.mode] or \
-                edge("R_TRIG" if node.mode == "p" else "F_TRIG", node.var)
+            return {"no": node.var, "nc": f"NOT {node.var}", "p": None, "n": None}[node.mode] or edge(
+                "R_TRIG" if node.mode == "p" else "F_TRIG", node.var
+            )
         joined = f" {'AND' if node.kind == 'series' else 'OR'} ".join(expression(c) for c in node.children)
         return f"({joined})"
 
     for index, rung in enumerate(program):
         lines.append(f"r{index} := {expression(rung.condition)};")
         for mode, var in rung.coils:
-            lines.append({"normal": f"{var} := r{index};", "negated": f"{var} := NOT r{index};",
-                          "set": f"IF r{index} THEN {var} := TRUE; END_IF;",
-                          "reset": f"IF r{index} THEN {var} := FALSE; END_IF;"}.get(mode)
-                         or f"{var} := {edge('R_TRIG' if mode == 'p' else 'F_TRIG', f'r{index}')};")
+            lines.append(
+                {
+                    "normal": f"{var} := r{index};",
+                    "negated": f"{var} := NOT r{index};",
+                    "set": f"IF r{index} THEN {var} := TRUE; END_IF;",
+                    "reset": f"IF r{index} THEN {var} := FALSE; END_IF;",
+                }.get(mode)
+                or f"{var} := {edge('R_TRIG' if mode == 'p' else 'F_TRIG', f'r{index}')};"
+            )
         if rung.counter:
             lines.append(f"IF r{index} THEN {rung.counter} := {rung.counter} + 1; END_IF;")
     rungs_decl = f"VAR {', '.join(f'r{i}' for i in range(len(program)))} : BOOL; END_VAR"
@@ -198,11 +233,15 @@ def st_program(program: list[Rung]) -> Pou:
 # ------------------------------------------------------------------ the property
 
 
-@given(st.lists(rungs, min_size=1, max_size=4),
-       st.lists(st.integers(0, 2 ** len(INPUTS) - 1), min_size=SCANS, max_size=SCANS))
+@given(
+    st.lists(rungs, min_size=1, max_size=4),
+    st.lists(st.integers(0, 2 ** len(INPUTS) - 1), min_size=SCANS, max_size=SCANS),
+)
 def test_property_ld_fbd_and_st_traces_are_identical(program, masks):
     scans = [{name: bool(mask >> bit & 1) for bit, name in enumerate(INPUTS)} for mask in masks]
-    traces = [trace(simulate(pou), "Main", scans, OUTPUTS + COUNTERS)
-              for pou in (st_program(program), ld_program(program), fbd_program(program))]
+    traces = [
+        trace(simulate(pou), "Main", scans, OUTPUTS + COUNTERS)
+        for pou in (st_program(program), ld_program(program), fbd_program(program))
+    ]
     assert traces[1] == traces[0], "LD differs from ST"
     assert traces[2] == traces[0], "FBD differs from ST"

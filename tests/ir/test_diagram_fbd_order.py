@@ -26,15 +26,28 @@ def order(network) -> list[str]:
 
 def test_gr05_data_flow_beats_position():
     """A block runs after everything feeding it, even when drawn above and left of its source."""
-    network = net("n", [inp("a", "x", 0, 100), blk("late", "NOT", x=0, y=0), blk("early", "NOT", x=50, y=100),
-                        out("o", "y", x=100, y=0)],
-                  [("a.OUT", "early.IN"), ("early.OUT", "late.IN"), ("late.OUT", "o.IN")])
+    network = net(
+        "n",
+        [
+            inp("a", "x", 0, 100),
+            blk("late", "NOT", x=0, y=0),
+            blk("early", "NOT", x=50, y=100),
+            out("o", "y", x=100, y=0),
+        ],
+        [("a.OUT", "early.IN"), ("early.OUT", "late.IN"), ("late.OUT", "o.IN")],
+    )
     assert order(network) == ["a", "early", "late", "o"]
 
 
 def test_independent_nodes_by_position_top_to_bottom_then_left_to_right():
-    nodes = [inp("i1", "a"), inp("i2", "b"), inp("i3", "c"),
-             blk("low", "NOT", x=0, y=50), blk("right", "NOT", x=80, y=10), blk("left", "NOT", x=10, y=10)]
+    nodes = [
+        inp("i1", "a"),
+        inp("i2", "b"),
+        inp("i3", "c"),
+        blk("low", "NOT", x=0, y=50),
+        blk("right", "NOT", x=80, y=10),
+        blk("left", "NOT", x=10, y=10),
+    ]
     wires = [("i1.OUT", "low.IN"), ("i2.OUT", "right.IN"), ("i3.OUT", "left.IN")]
     assert order(net("n", nodes, wires)) == ["i3", "left", "i2", "right", "i1", "low"]
 
@@ -53,9 +66,17 @@ def test_order_list_cannot_break_data_flow():
 
 def test_input_nodes_are_read_just_before_their_first_consumer_and_controls_run_last():
     """GR-05 c: a jump or return acts only when every other node of the network is evaluated."""
-    nodes = [fjump("j", "L"), inp("c", "go", 0, 0), inp("v", "x", 0, 0), blk("n1", "NOT", x=0, y=10),
-             blk("n2", "NOT", x=0, y=20), inp("w", "y", 0, 0), out("o", "z", x=0, y=30), inp("unused", "q", 0, 5),
-             fret("r")]
+    nodes = [
+        fjump("j", "L"),
+        inp("c", "go", 0, 0),
+        inp("v", "x", 0, 0),
+        blk("n1", "NOT", x=0, y=10),
+        blk("n2", "NOT", x=0, y=20),
+        inp("w", "y", 0, 0),
+        out("o", "z", x=0, y=30),
+        inp("unused", "q", 0, 5),
+        fret("r"),
+    ]
     wires = [("c.OUT", "j.IN"), ("v.OUT", "n1.IN"), ("w.OUT", "n2.IN"), ("n2.OUT", "o.IN")]
     assert order(net("n", nodes, wires)) == ["v", "n1", "w", "n2", "o", "unused", "c", "j", "r"]
 
@@ -64,14 +85,19 @@ def test_gr30_wired_or_names_both_wires():
     report = Collect()
     network = net("n", [inp("a", "x"), inp("b", "y"), out("o", "z")], [("a.OUT", "o.IN"), ("b.OUT", "o.IN")])
     analyse(network, report)
-    assert report.messages == ["FBD-WIRED-OR o.IN: input IN of 'o' has 2 wires (from a.OUT and from b.OUT): FBD has "
-                               "no wired OR, use an OR block"]
+    assert report.messages == [
+        "FBD-WIRED-OR o.IN: input IN of 'o' has 2 wires (from a.OUT and from b.OUT): FBD has "
+        "no wired OR, use an OR block"
+    ]
 
 
 def test_bad_wire_ends_are_reported():
     report = Collect()
-    network = net("n", [inp("a", "x"), out("o", "z"), blk("b", "NOT")],
-                  [("a.Q", "b.IN"), ("ghost.OUT", "b.IN"), ("o.OUT", "b.IN"), ("b.OUT", "a.IN"), ("b.OUT", "o.X")])
+    network = net(
+        "n",
+        [inp("a", "x"), out("o", "z"), blk("b", "NOT")],
+        [("a.Q", "b.IN"), ("ghost.OUT", "b.IN"), ("o.OUT", "b.IN"), ("b.OUT", "a.IN"), ("b.OUT", "o.X")],
+    )
     analyse(network, report)
     assert report.messages == [
         "FBD-BAD-WIRE a.Q: wire a.Q -> b.IN: the output pin of a input node is OUT",
@@ -84,18 +110,36 @@ def test_bad_wire_ends_are_reported():
 
 
 def test_connectors_carry_a_wire_to_its_continuations():
-    network = net("n", [blk("a", "NOT", x=0, y=0), connector("k", "Mid"), continuation("c", "MID"),
-                        blk("b", "NOT", x=0, y=-10), inp("i", "x")],
-                  [("i.OUT", "a.IN"), ("a.OUT", "k.IN"), ("c.OUT", "b.IN")])
+    network = net(
+        "n",
+        [
+            blk("a", "NOT", x=0, y=0),
+            connector("k", "Mid"),
+            continuation("c", "MID"),
+            blk("b", "NOT", x=0, y=-10),
+            inp("i", "x"),
+        ],
+        [("i.OUT", "a.IN"), ("a.OUT", "k.IN"), ("c.OUT", "b.IN")],
+    )
     graph = analyse(network, Collect())
     assert graph.inputs["b"]["IN"].node == "a" and graph.order == ["i", "a", "b"]
 
 
 def test_gr02_connector_errors():
     report = Collect()
-    network = net("n", [connector("k1", "X"), connector("k2", "x"), continuation("c1", "nowhere"),
-                        connector("k3", "loop"), continuation("c3", "loop"), out("o1", "a"), out("o2", "b")],
-                  [("c1.OUT", "o1.IN"), ("c3.OUT", "k3.IN"), ("c3.OUT", "o2.IN")])
+    network = net(
+        "n",
+        [
+            connector("k1", "X"),
+            connector("k2", "x"),
+            continuation("c1", "nowhere"),
+            connector("k3", "loop"),
+            continuation("c3", "loop"),
+            out("o1", "a"),
+            out("o2", "b"),
+        ],
+        [("c1.OUT", "o1.IN"), ("c3.OUT", "k3.IN"), ("c3.OUT", "o2.IN")],
+    )
     graph = analyse(network, report)
     assert report.messages == [
         "FBD-CONNECTOR k2.None: connector 'x' is also defined by 'k1'",
@@ -117,8 +161,7 @@ def test_gr06_cycle_is_broken_at_its_first_node_by_position_or_explicit_order():
 
 
 def test_self_loop_is_feedback():
-    graph = analyse(net("n", [blk("c", "ADD"), inp("one", "1")], [("c.OUT", "c.IN1"), ("one.OUT", "c.IN2")]),
-                    Collect())
+    graph = analyse(net("n", [blk("c", "ADD"), inp("one", "1")], [("c.OUT", "c.IN1"), ("one.OUT", "c.IN2")]), Collect())
     assert graph.order == ["one", "c"] and graph.feedback == {("c", "IN1")}
 
 
@@ -162,8 +205,9 @@ def alike_networks(draw):
     """Two networks drawn alike (node kinds, wiring, positions, order list) whose ids are drawn apart: random
     blocks, input, output, jump nodes and a connector/continuation pair, wires to missing nodes and wired ORs
     now and then, so some structures report problems."""
-    kinds = draw(st.lists(st.sampled_from(["block", "block", "input", "output", "jump", "pair"]), min_size=1,
-                          max_size=7))
+    kinds = draw(
+        st.lists(st.sampled_from(["block", "block", "input", "output", "jump", "pair"]), min_size=1, max_size=7)
+    )
 
     def drawn(prefix: str) -> tuple[list, list, list | None]:
         nodes, producers, consumers = [], [], []
@@ -194,9 +238,13 @@ def alike_networks(draw):
     prefixes = draw(st.sampled_from(["b", "zz", "a_"]))
 
     def network(nodes, producers, consumers):
-        wires = [(producers[p % len(producers)] if producers and p < 18 else "ghost.OUT",
-                  consumers[c % len(consumers)]) for p, c in choices if consumers]
+        wires = [
+            (producers[p % len(producers)] if producers and p < 18 else "ghost.OUT", consumers[c % len(consumers)])
+            for p, c in choices
+            if consumers
+        ]
         return net("n", nodes, wires, order=[nodes[r].id for r in ranks] or None)
+
     return network(*first), network(*drawn(prefixes))
 
 

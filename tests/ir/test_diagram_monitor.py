@@ -35,8 +35,12 @@ def _boxes(pou) -> dict[str, str]:
     """Element id that runs exactly when an ADD box counts -> its counter (LD: the box, FBD: the result node)."""
     if isinstance(pou.body, ld.LdBody):
         return {e.id: e.inputs["IN1"] for n in pou.body.networks for e in n.elements if isinstance(e, ld.Box)}
-    return {node.id: node.var for n in pou.body.networks for node in n.nodes
-            if isinstance(node, fbd.OutputNode) and node.id.startswith("res")}
+    return {
+        node.id: node.var
+        for n in pou.body.networks
+        for node in n.nodes
+        if isinstance(node, fbd.OutputNode) and node.id.startswith("res")
+    }
 
 
 def _unguarded(pou) -> set[str]:
@@ -52,6 +56,7 @@ def _unguarded(pou) -> set[str]:
                         visit(branch)
                 elif not isinstance(element, ld.Box):
                     found.add(element.id)
+
         for network in pou.body.networks:
             visit(network.elements)
         return found
@@ -69,9 +74,12 @@ def _unguarded(pou) -> set[str]:
 
 
 @settings(max_examples=25)
-@given(st.lists(rungs, min_size=1, max_size=4),
-       st.lists(st.integers(0, 2 ** len(INPUTS) - 1), min_size=SCANS, max_size=SCANS),
-       st.sampled_from(["ld", "fbd"]), st.integers(1, 4))
+@given(
+    st.lists(rungs, min_size=1, max_size=4),
+    st.lists(st.integers(0, 2 ** len(INPUTS) - 1), min_size=SCANS, max_size=SCANS),
+    st.sampled_from(["ld", "fbd"]),
+    st.integers(1, 4),
+)
 def test_property_monitor_and_debug_variants_record_the_same_power_flow(program, masks, language, every):
     pou = (ld_program if language == "ld" else fbd_program)(program)
     lowered = _program(pou)
@@ -94,5 +102,8 @@ def test_property_monitor_and_debug_variants_record_the_same_power_flow(program,
             ran = sum(1 for box, c in boxes.items() if c == counter and box in view.executed)
             assert monitor.read(f"Main.{counter}") == before + ran, (scan, counter)
         outputs = [f"Main.{name}" for name in OUTPUTS + COUNTERS]
-        assert [debug.read(p) for p in outputs] == [monitor.read(p) for p in outputs] == \
-            [switching.read(p) for p in outputs]
+        assert (
+            [debug.read(p) for p in outputs]
+            == [monitor.read(p) for p in outputs]
+            == [switching.read(p) for p in outputs]
+        )

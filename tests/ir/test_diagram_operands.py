@@ -28,19 +28,40 @@ VAR_EXTERNAL g : BOOL; gk : BOOL; END_VAR"""
 READ = ["i", "e", "o", "io", "x", "y", "z", "n", "t.Q", "a[1]", "at_x", "k", "g", "gk", "gi", "nosuch", "TRUE", "t"]
 WRITTEN = ["x", "y", "z", "o", "i", "e", "io", "k", "g", "gk", "gi", "n", "t.Q", "a[0]", "at_x", "nosuch"]
 
-rungs = st.lists(st.tuples(st.sampled_from(READ), st.sampled_from(["no", "nc", "p", "n"]), st.sampled_from(WRITTEN),
-                           st.sampled_from(["normal", "negated", "set", "reset", "p", "n"])), min_size=1, max_size=8)
+rungs = st.lists(
+    st.tuples(
+        st.sampled_from(READ),
+        st.sampled_from(["no", "nc", "p", "n"]),
+        st.sampled_from(WRITTEN),
+        st.sampled_from(["normal", "negated", "set", "reset", "p", "n"]),
+    ),
+    min_size=1,
+    max_size=8,
+)
 
 
 def ld_program(drawn: list, kind: str) -> Pou:
-    return ld_pou("Main", DECLARATIONS, *(rung(f"n{n}", contact(f"c{n}", read, mode), coil(f"q{n}", written, coil_mode))
-                                         for n, (read, mode, written, coil_mode) in enumerate(drawn)), kind=kind)
+    return ld_pou(
+        "Main",
+        DECLARATIONS,
+        *(
+            rung(f"n{n}", contact(f"c{n}", read, mode), coil(f"q{n}", written, coil_mode))
+            for n, (read, mode, written, coil_mode) in enumerate(drawn)
+        ),
+        kind=kind,
+    )
 
 
 def fbd_program(drawn: list, kind: str) -> Pou:
-    return fbd_pou("Main", DECLARATIONS, *(
-        net(f"n{n}", [inp(f"v{n}", read), out(f"o{n}", written, coil_mode)], [(f"v{n}.OUT", f"o{n}.IN")])
-        for n, (read, _, written, coil_mode) in enumerate(drawn)), kind=kind)
+    return fbd_pou(
+        "Main",
+        DECLARATIONS,
+        *(
+            net(f"n{n}", [inp(f"v{n}", read), out(f"o{n}", written, coil_mode)], [(f"v{n}.OUT", f"o{n}.IN")])
+            for n, (read, _, written, coil_mode) in enumerate(drawn)
+        ),
+        kind=kind,
+    )
 
 
 def lowered(pou: Pou) -> tuple[str, list[str]]:
@@ -59,12 +80,22 @@ def test_property_short_ways_answer_as_the_checker_does(drawn, language, kind):
 
 def test_a_written_kind_is_remembered_only_when_nothing_was_reported():
     """Coils on a CONSTANT and on an input are reported at every one, also after clean coils of BOOL locals."""
-    pou = ld_program([("x", "no", "y", "normal"), ("x", "no", "z", "normal"), ("x", "no", "k", "normal"),
-                      ("x", "no", "k", "set"), ("x", "no", "i", "normal"), ("x", "no", "e", "reset")], "function_block")
+    pou = ld_program(
+        [
+            ("x", "no", "y", "normal"),
+            ("x", "no", "z", "normal"),
+            ("x", "no", "k", "normal"),
+            ("x", "no", "k", "set"),
+            ("x", "no", "i", "normal"),
+            ("x", "no", "e", "reset"),
+        ],
+        "function_block",
+    )
     assert [d.format() for d in lower_project(project(pou, globals=GLOBALS)).diagnostics] == [
         "POU Main, network n2, element q2: error ST-CONST-WRITE: 'k' is a CONSTANT and cannot be assigned",
         "POU Main, network n3, element q3: error ST-CONST-WRITE: 'k' is a CONSTANT and cannot be assigned",
         "POU Main, network n4, element q4: error LD-INPUT-WRITE: 'i' is an input of Main: assigning it overwrites "
         "the caller's value",
         "POU Main, network n5, element q5: error LD-INPUT-WRITE: 'e' is an input of Main: assigning it overwrites "
-        "the caller's value"]
+        "the caller's value",
+    ]

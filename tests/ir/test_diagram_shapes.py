@@ -27,10 +27,21 @@ DECLARATIONS = """VAR
     tn0, tn1 : TON; cu0 : CTU; u0, u1 : MyFb;
 END_VAR
 VAR CONSTANT kc : INT := 3; END_VAR"""
-MY_FB = Pou(name="MyFb", kind="function_block", language="st",
-            declarations="VAR_INPUT a : INT; b : BOOL; END_VAR VAR_OUTPUT q : INT; END_VAR", body="q := a;")
-TWICE = Pou(name="Twice", kind="function", return_type="INT", language="st",
-            declarations="VAR_INPUT x : INT; END_VAR", body="Twice := x * 2;")
+MY_FB = Pou(
+    name="MyFb",
+    kind="function_block",
+    language="st",
+    declarations="VAR_INPUT a : INT; b : BOOL; END_VAR VAR_OUTPUT q : INT; END_VAR",
+    body="q := a;",
+)
+TWICE = Pou(
+    name="Twice",
+    kind="function",
+    return_type="INT",
+    language="st",
+    declarations="VAR_INPUT x : INT; END_VAR",
+    body="Twice := x * 2;",
+)
 
 # callee -> its pins and the operands that suit each (another operand is drawn now and then)
 CALLEES = {
@@ -70,8 +81,13 @@ def boxes(draw):
 def ld_program(drawn: list) -> Pou:
     networks = []
     for n, (call, instance, en, _, pins) in enumerate(drawn):
-        networks.append(rung(f"n{n}", contact(f"c{n}", "b0"),
-                             box(f"x{n}", call, instance, en, **{pin: operand for pin, operand, _ in pins})))
+        networks.append(
+            rung(
+                f"n{n}",
+                contact(f"c{n}", "b0"),
+                box(f"x{n}", call, instance, en, **{pin: operand for pin, operand, _ in pins}),
+            )
+        )
     return ld_pou("Main", DECLARATIONS, *networks)
 
 
@@ -120,11 +136,17 @@ def test_alike_boxes_are_bound_from_one_template(monkeypatch):
     def spy(self, leaves, result, origin):
         bound.append(origin.element)
         return original(self, leaves, result, origin)
+
     monkeypatch.setattr(diagram_shapes.Template, "bind", spy)
-    ld_main = ld_program([("TON", "tn0", False, "", [("PT", "T#1s", False)]),
-                          ("TON", "tn1", False, "", [("PT", "T#1s", False)])])
-    fbd_main = fbd_program([("AND", None, False, "", [("IN1", "b0", False), ("IN2", "b1", True)]),
-                            ("AND", None, False, "", [("IN1", "b1", False), ("IN2", "b0", True)])])
+    ld_main = ld_program(
+        [("TON", "tn0", False, "", [("PT", "T#1s", False)]), ("TON", "tn1", False, "", [("PT", "T#1s", False)])]
+    )
+    fbd_main = fbd_program(
+        [
+            ("AND", None, False, "", [("IN1", "b0", False), ("IN2", "b1", True)]),
+            ("AND", None, False, "", [("IN1", "b1", False), ("IN2", "b0", True)]),
+        ]
+    )
     for pou in (ld_main, fbd_main):
         assert lowered(pou) == without_templates(monkeypatch, pou)
     assert bound == ["x1", "x1"]
@@ -133,14 +155,20 @@ def test_alike_boxes_are_bound_from_one_template(monkeypatch):
 def test_boxes_of_other_shapes_get_their_own_check():
     """An INT where the first box had a TIME variable, and a CONSTANT, are not the first box's shape: each is
     checked in full and reported at its own box."""
-    pou = ld_program([("TON", "tn0", False, "", [("PT", "t0", False)]),
-                      ("TON", "tn1", False, "", [("PT", "i0", False)]),
-                      ("TON", "tn1", False, "", [("PT", "kc", False)]),
-                      ("TON", "tn1", False, "", [("PT", "t0", False)])])
+    pou = ld_program(
+        [
+            ("TON", "tn0", False, "", [("PT", "t0", False)]),
+            ("TON", "tn1", False, "", [("PT", "i0", False)]),
+            ("TON", "tn1", False, "", [("PT", "kc", False)]),
+            ("TON", "tn1", False, "", [("PT", "t0", False)]),
+        ]
+    )
     diagnostics = [d.format() for d in lower_project(project(pou, MY_FB, TWICE)).diagnostics]
     assert diagnostics == [
         f"POU Main, network n{n}, element x{n}, pin PT: error ST-TYPE-MISMATCH: input PT of TON: expected TIME, got "
-        "INT without a conversion such as INT_TO_TIME" for n in (1, 2)]
+        "INT without a conversion such as INT_TO_TIME"
+        for n in (1, 2)
+    ]
 
 
 def test_what_a_muted_check_reports_is_taken_back():

@@ -24,33 +24,44 @@ def run_program(declarations: str, body: str, inputs: dict[str, object] | None =
 
 
 def test_for_doubles_and_leaves_the_counter_past_the_end_st75():
-    sim = run_program("Var1 : INT; Counter : INT; Erg : INT;",
-                      "Var1 := 1; FOR Counter := 1 TO 5 BY 1 DO Var1 := Var1 * 2; END_FOR; Erg := Var1;")
+    sim = run_program(
+        "Var1 : INT; Counter : INT; Erg : INT;",
+        "Var1 := 1; FOR Counter := 1 TO 5 BY 1 DO Var1 := Var1 * 2; END_FOR; Erg := Var1;",
+    )
     assert (sim.read("P.Erg"), sim.read("P.Counter")) == (32, 6)
 
 
 @pytest.mark.parametrize("hit, expected", [(7, (7, 7)), (8, (101, 101)), (None, (101, 101))])
 def test_for_by_two_with_exit_st75(hit, expected):
-    sim = run_program("ARR : ARRAY [1..101] OF INT; I : INT; J : INT;",
-                      "J := 101; FOR I := 1 TO 100 BY 2 DO IF ARR[I] = 70 THEN J := I; EXIT; END_IF; END_FOR;",
-                      {f"ARR[{hit}]": 70} if hit else {})
+    sim = run_program(
+        "ARR : ARRAY [1..101] OF INT; I : INT; J : INT;",
+        "J := 101; FOR I := 1 TO 100 BY 2 DO IF ARR[I] = 70 THEN J := I; EXIT; END_IF; END_FOR;",
+        {f"ARR[{hit}]": 70} if hit else {},
+    )
     assert (sim.read("P.J"), sim.read("P.I")) == expected
 
 
 @pytest.mark.parametrize("flag, total", [(0, 15), (1, 6)])
 def test_exit_leaves_the_innermost_loop_st80(flag, total):
-    sim = run_program("SUM : INT; I : INT; J : INT; FLAG : INT;",
-                      "SUM := 0; FOR I := 1 TO 3 DO FOR J := 1 TO 2 DO IF FLAG = 1 THEN EXIT; END_IF; "
-                      "SUM := SUM + J; END_FOR; SUM := SUM + I; END_FOR;", {"FLAG": flag})
+    sim = run_program(
+        "SUM : INT; I : INT; J : INT; FLAG : INT;",
+        "SUM := 0; FOR I := 1 TO 3 DO FOR J := 1 TO 2 DO IF FLAG = 1 THEN EXIT; END_IF; "
+        "SUM := SUM + J; END_FOR; SUM := SUM + I; END_FOR;",
+        {"FLAG": flag},
+    )
     assert sim.read("P.SUM") == total
 
 
-@pytest.mark.parametrize("code, result", [(10, 0), (20, 1), (77, 1), (21, 2), (55, 2), (56, 4), (100, 3), (0, 4),
-                                          (19, 4)])
+@pytest.mark.parametrize(
+    "code, result", [(10, 0), (20, 1), (77, 1), (21, 2), (55, 2), (56, 4), (100, 3), (0, 4), (19, 4)]
+)
 def test_case_lists_and_ranges_st29(code, result):
-    sim = run_program("code : INT; result : INT;",
-                      "CASE code OF 10: result := 0; 20, 77: result := 1; 21..55: result := 2; 100: result := 3; "
-                      "ELSE result := 4; END_CASE;", {"code": code})
+    sim = run_program(
+        "code : INT; result : INT;",
+        "CASE code OF 10: result := 0; 20, 77: result := 1; 21..55: result := 2; 100: result := 3; "
+        "ELSE result := 4; END_CASE;",
+        {"code": code},
+    )
     assert sim.read("P.result") == result
 
 
@@ -96,8 +107,15 @@ VAR c : Count; x : BOOL; pass : BOOL; END_VAR
 IF pass THEN c(clk := x); ELSE c(); END_IF;
 END_PROGRAM""")
     counts = []
-    for x, passed in [(True, True), (True, True), (True, False), (False, False), (True, False), (False, True),
-                      (True, True)]:
+    for x, passed in [
+        (True, True),
+        (True, True),
+        (True, False),
+        (False, False),
+        (True, False),
+        (False, True),
+        (True, True),
+    ]:
         sim.write("P.x", x)
         sim.write("P.pass", passed)
         sim.cycle()
@@ -125,19 +143,31 @@ END_PROGRAM""")
 
 def test_lifted_call_with_en_false_is_skipped():
     body = "y := 100 + ADD(EN := go, IN1 := x, IN2 := 1, ENO => ok);"
-    assert [run_program("go : BOOL; ok : BOOL; x : INT; y : INT;", body, {"go": go, "x": 5}).read(v)
-            for go in (True, False) for v in ("P.y", "P.ok")] == [106, True, 100, False]  # the temporary starts at 0
+    assert [
+        run_program("go : BOOL; ok : BOOL; x : INT; y : INT;", body, {"go": go, "x": 5}).read(v)
+        for go in (True, False)
+        for v in ("P.y", "P.ok")
+    ] == [106, True, 100, False]  # the temporary starts at 0
 
 
 def test_bit_access_reads_and_writes_integers_and_bit_strings():
-    sim = run_program("i : INT; w : WORD; b15 : BOOL; b0 : BOOL;",
-                      "i := -1; i.15 := FALSE; w.3 := TRUE; b15 := w.3; b0 := i.0;")
+    sim = run_program(
+        "i : INT; w : WORD; b15 : BOOL; b0 : BOOL;", "i := -1; i.15 := FALSE; w.3 := TRUE; b15 := w.3; b0 := i.0;"
+    )
     assert [sim.read(f"P.{v}") for v in ("i", "w", "b15", "b0")] == [32767, 8, True, True]
 
 
 def test_initial_values_of_arrays_structs_and_aliases_read_back():
-    sim = run_program("a : ARRAY [1..2, 1..3] OF INT := [1, 2, 3, 4]; p : TPoint := (y := 2.5); h : THome;",
-                      "", extra="TYPE TPoint : STRUCT x : REAL := 1.0; y : REAL; END_STRUCT; THome : REAL := 20.0; "
-                                "END_TYPE")
-    assert [sim.read(p) for p in ("P.a[1, 3]", "P.a[2, 1]", "P.a[2, 3]", "P.p.x", "P.p.y", "P.h")] == \
-        [3, 4, 0, 1.0, 2.5, 20.0]
+    sim = run_program(
+        "a : ARRAY [1..2, 1..3] OF INT := [1, 2, 3, 4]; p : TPoint := (y := 2.5); h : THome;",
+        "",
+        extra="TYPE TPoint : STRUCT x : REAL := 1.0; y : REAL; END_STRUCT; THome : REAL := 20.0; END_TYPE",
+    )
+    assert [sim.read(p) for p in ("P.a[1, 3]", "P.a[2, 1]", "P.a[2, 3]", "P.p.x", "P.p.y", "P.h")] == [
+        3,
+        4,
+        0,
+        1.0,
+        2.5,
+        20.0,
+    ]

@@ -32,13 +32,22 @@ from tests.ir.helpers import (
     program_body,
 )
 
-DECLS = " ".join("""i : INT; j : INT; si : SINT; d : DINT; r : REAL; lr : LREAL; b : BOOL; w : WORD; bt : BYTE;
+DECLS = " ".join(
+    """i : INT; j : INT; si : SINT; d : DINT; r : REAL; lr : LREAL; b : BOOL; w : WORD; bt : BYTE;
 t : TIME; tod1 : TOD; dt1 : DT; day : DATE; s : STRING[10]; s2 : STRING; arr : ARRAY [1..3] OF INT;
-t1 : TON; pc : INT (0..100); c : TColor;""".split())  # one line: bodies start on line 3
+t1 : TON; pc : INT (0..100); c : TColor;""".split()
+)  # one line: bodies start on line 3
 TYPES = "TYPE TColor : (red, green := 5, blue); END_TYPE"
 
-I, J, D, R, B, W, S = (local("I", INT), local("J", INT), local("D", DINT), local("R", REAL), local("B", BOOL),
-                       local("W", WORD), local("S", Elementary("STRING", 10)))
+I, J, D, R, B, W, S = (
+    local("I", INT),
+    local("J", INT),
+    local("D", DINT),
+    local("R", REAL),
+    local("B", BOOL),
+    local("W", WORD),
+    local("S", Elementary("STRING", 10)),
+)
 
 
 def value(expression: str, target: str = "i", decls: str = DECLS, extra: str = TYPES) -> ir.Expr:
@@ -51,7 +60,8 @@ def value(expression: str, target: str = "i", decls: str = DECLS, extra: str = T
 def test_operators_on_one_type():
     assert value("i + j * 2") == ir.Binary("ADD", I, ir.Binary("MUL", J, const(2, INT), INT), INT)
     assert value("NOT b AND i > 3", "b") == ir.Binary(
-        "AND", ir.Unary("NOT", B, BOOL), ir.Binary("GT", I, const(3, INT), BOOL), BOOL)
+        "AND", ir.Unary("NOT", B, BOOL), ir.Binary("GT", I, const(3, INT), BOOL), BOOL
+    )
     assert value("-i") == ir.Unary("NEG", I, INT)
     assert value("i MOD 7 <> 0", "b") == ir.Binary("NE", ir.Binary("MOD", I, const(7, INT), INT), const(0, INT), BOOL)
 
@@ -94,8 +104,9 @@ def test_names_enums_members_and_indices():
 def test_bit_access_reads_a_mask_test():
     assert value("w.3", "b") == ir.Binary("NE", ir.Binary("AND", W, const(8, WORD), WORD), const(0, WORD), BOOL)
     as_word = ir.Call("INT_TO_WORD", (I,), (INT,), WORD)  # AND works on bit strings: same width, same bits
-    assert value("i.15", "b") == ir.Binary("NE", ir.Binary("AND", as_word, const(0x8000, WORD), WORD),
-                                           const(0, WORD), BOOL)
+    assert value("i.15", "b") == ir.Binary(
+        "NE", ir.Binary("AND", as_word, const(0x8000, WORD), WORD), const(0, WORD), BOOL
+    )
 
 
 def test_time_operators_become_fun85_functions():
@@ -112,8 +123,9 @@ def test_time_operators_become_fun85_functions():
 
 
 def test_string_plus_and_power():
-    assert value("s + 'ab'", "s") == ir.Call("CONCAT", (S, const("ab", STRING)), (Elementary("STRING", 10),) * 2,
-                                             Elementary("STRING", 10))
+    assert value("s + 'ab'", "s") == ir.Call(
+        "CONCAT", (S, const("ab", STRING)), (Elementary("STRING", 10),) * 2, Elementary("STRING", 10)
+    )
     assert value("r ** 2", "r") == ir.Binary("EXPT", R, const(2.0, REAL), REAL)
     assert value("r ** i", "r") == ir.Call("EXPT", (R, I), (REAL, INT), REAL)
     assert value("2 ** 3", "lr") == ir.Binary("EXPT", const(2.0, LREAL), const(3.0, LREAL), LREAL)  # FUN-33
@@ -139,14 +151,16 @@ def test_non_generic_pins_keep_their_own_types():
     assert value("SHL(w, d)", "w") == ir.Call("SHL", (W, D), (WORD, DINT), WORD)
     assert value("LEFT(s, 2)", "s") == ir.Call("LEFT", (S, const(2, INT)), (STRING, INT), STRING)
     assert value("LEN(s)") == ir.Call("LEN", (S,), (STRING,), INT)
-    assert value("MUL_TIME(t, 1.5)", "t") == ir.Call("MUL_TIME", (local("T", TIME), const(1.5, LREAL)),
-                                                      (TIME, LREAL), TIME)
+    assert value("MUL_TIME(t, 1.5)", "t") == ir.Call(
+        "MUL_TIME", (local("T", TIME), const(1.5, LREAL)), (TIME, LREAL), TIME
+    )
 
 
 def test_conversions_are_calls_and_move_is_its_operand():
     assert value("REAL_TO_INT(r)") == ir.Call("REAL_TO_INT", (R,), (REAL,), INT)
-    assert value("INT_TO_REAL(si)", "r") == ir.Call("INT_TO_REAL", (ir.Convert(local("SI", SINT), SINT, INT),),
-                                                    (INT,), REAL)
+    assert value("INT_TO_REAL(si)", "r") == ir.Call(
+        "INT_TO_REAL", (ir.Convert(local("SI", SINT), SINT, INT),), (INT,), REAL
+    )
     assert value("TRUNC(r)", "d") == ir.Call("TRUNC", (R,), (REAL,), DINT)
     assert value("MOVE(j)") == J
 
@@ -164,26 +178,34 @@ def test_user_function_arguments_in_input_order_with_initial_values_and_in_outs(
     assert value("Scale(acc := d, x := r)", "r", extra=TYPES + "\n" + FUNCTIONS) == call
     assert value("Scale(r, 2.0, 0, d)", "r", extra=TYPES + "\n" + FUNCTIONS) == call
     assert value("Scale(n := i, x := 1, acc := d)", "r", extra=TYPES + "\n" + FUNCTIONS) == ir.Call(
-        "SCALE", (const(1.0, REAL), const(2.0, REAL), I), (REAL, REAL, INT), REAL, True, (D,))
+        "SCALE", (const(1.0, REAL), const(2.0, REAL), I), (REAL, REAL, INT), REAL, True, (D,)
+    )
 
 
 def test_call_with_en_is_lifted_into_a_fncall_before_the_statement():
     first, second = program_body(DECLS, "i := j + ADD(EN := b, IN1 := i, IN2 := 1);", TYPES)
     temp = local("__ADD_RESULT", INT)
-    assert first == ir.FnCall(ir.Call("ADD", (I, const(1, INT)), (INT, INT), INT), temp,
-                              ir.Origin("P", 3, 10, 3, 42), B)
+    assert first == ir.FnCall(
+        ir.Call("ADD", (I, const(1, INT)), (INT, INT), INT), temp, ir.Origin("P", 3, 10, 3, 42), B
+    )
     assert second == ir.Assign(I, ir.Binary("ADD", J, temp, INT), ir.Origin("P", 3, 1, 3, 42))
 
 
 def test_call_with_en_that_cannot_keep_its_order_is_refused():
     body = "WHILE i < LIMIT(EN := b, MN := 0, IN := i, MX := 5) DO i := i + 1; END_WHILE;"
     text = f"PROGRAM P\nVAR {DECLS} END_VAR\n{body}\nEND_PROGRAM\n{TYPES}"
-    assert errors(text) == ["P/body:3:11, POU P: error IR-EN-CALL: a call with EN or ENO cannot be evaluated here in "
-                            "the right order: assign its result to a variable in a statement of its own first"]
-    user = f"PROGRAM P\nVAR {DECLS} END_VAR\nr := r + Scale(EN := b, x := r, acc := d);\nEND_PROGRAM\n{TYPES}\n{FUNCTIONS}"
-    assert errors(user) == ["P/body:3:10, POU P: error IR-EN-CALL: a call with EN or ENO cannot be evaluated after "
-                            "the values this statement computes before it in the right order: assign its result to a "
-                            "variable in a statement of its own first"]
+    assert errors(text) == [
+        "P/body:3:11, POU P: error IR-EN-CALL: a call with EN or ENO cannot be evaluated here in "
+        "the right order: assign its result to a variable in a statement of its own first"
+    ]
+    user = (
+        f"PROGRAM P\nVAR {DECLS} END_VAR\nr := r + Scale(EN := b, x := r, acc := d);\nEND_PROGRAM\n{TYPES}\n{FUNCTIONS}"
+    )
+    assert errors(user) == [
+        "P/body:3:10, POU P: error IR-EN-CALL: a call with EN or ENO cannot be evaluated after "
+        "the values this statement computes before it in the right order: assign its result to a "
+        "variable in a statement of its own first"
+    ]
 
 
 def test_unsupported_expressions_are_located_errors():
@@ -202,8 +224,9 @@ def test_sizeof_is_a_constant_in_bytes():
     assert value("SIZEOF(arr)", "d") == const(6, DINT)
     assert value("SIZEOF(LREAL)", "d") == const(8, DINT)
     assert value("SIZEOF(s) + SIZEOF(b)", "d") == ir.Binary("ADD", const(11, DINT), const(1, DINT), DINT)
-    assert value("SIZEOF(TPair)", "d", extra=TYPES + "\nTYPE TPair : STRUCT a : INT; c : TColor; END_STRUCT; END_TYPE") \
-        == const(6, DINT)
+    assert value(
+        "SIZEOF(TPair)", "d", extra=TYPES + "\nTYPE TPair : STRUCT a : INT; c : TColor; END_STRUCT; END_TYPE"
+    ) == const(6, DINT)
 
 
 def test_operand_of_a_diagram_lowers_through_check_operand():
@@ -224,8 +247,15 @@ def test_operand_of_a_diagram_lowers_through_check_operand():
 _INT_OPERANDS = st.sampled_from(["i", "j", "si", "d", "pc", "arr[2]", "5", "-3", "16#7F"])
 
 
-@given(st.recursive(_INT_OPERANDS, lambda inner: st.builds(
-    lambda op, a, b: f"({a} {op} {b})", st.sampled_from(["+", "-", "*", "/", "MOD"]), inner, inner), max_leaves=8))
+@given(
+    st.recursive(
+        _INT_OPERANDS,
+        lambda inner: st.builds(
+            lambda op, a, b: f"({a} {op} {b})", st.sampled_from(["+", "-", "*", "/", "MOD"]), inner, inner
+        ),
+        max_leaves=8,
+    )
+)
 def test_integer_expressions_lower_to_one_operand_type(expression):
     """Any mix of SINT/INT/DINT/subrange operands: every Binary's operands are of one type (checked by
     ``lower_ok``'s invariant checker), and the value is widened to the DINT target."""

@@ -22,105 +22,140 @@ from tests.ir.diagram_support import (
     wire,
 )
 
-DECL = ("VAR a, b : BOOL; n, m : INT; t1 : TON; c1 : CTU; END_VAR VAR CONSTANT kc : BOOL := TRUE; END_VAR "
-        "VAR_INPUT inb : BOOL; END_VAR")
+DECL = (
+    "VAR a, b : BOOL; n, m : INT; t1 : TON; c1 : CTU; END_VAR VAR CONSTANT kc : BOOL := TRUE; END_VAR "
+    "VAR_INPUT inb : BOOL; END_VAR"
+)
 WHERE = "POU Main, network n1, element"
 
 CASES = {
     "unknown variable": (
         net("n1", [inp("i", "Strat"), out("o", "a")], [("i.OUT", "o.IN")]),
-        f"{WHERE} i: error ST-UNKNOWN-VAR: unknown variable 'Strat'"),
+        f"{WHERE} i: error ST-UNKNOWN-VAR: unknown variable 'Strat'",
+    ),
     "write to a CONSTANT": (
         net("n1", [inp("i", "b"), out("o", "kc")], [("i.OUT", "o.IN")]),
-        f"{WHERE} o: error ST-CONST-WRITE: 'kc' is a CONSTANT and cannot be assigned"),
+        f"{WHERE} o: error ST-CONST-WRITE: 'kc' is a CONSTANT and cannot be assigned",
+    ),
     "write to an input": (
         net("n1", [inp("i", "b"), out("o", "inb", "set")], [("i.OUT", "o.IN")]),
-        f"{WHERE} o: error FBD-INPUT-WRITE: 'inb' is an input of Main: assigning it overwrites the caller's value"),
+        f"{WHERE} o: error FBD-INPUT-WRITE: 'inb' is an input of Main: assigning it overwrites the caller's value",
+    ),
     "set output on a non-BOOL variable": (
         net("n1", [inp("i", "b"), out("o", "n", "set")], [("i.OUT", "o.IN")]),
-        f"{WHERE} o: error FBD-NOT-BOOL: output node 'o' needs a BOOL variable; 'n' is INT"),
+        f"{WHERE} o: error FBD-NOT-BOOL: output node 'o' needs a BOOL variable; 'n' is INT",
+    ),
     "set output fed a non-BOOL value": (
         net("n1", [inp("i", "n"), out("o", "a", "set")], [("i.OUT", "o.IN")]),
-        f"{WHERE} o, pin IN: error FBD-NOT-BOOL: output node 'o' needs a BOOL value, got INT"),
+        f"{WHERE} o, pin IN: error FBD-NOT-BOOL: output node 'o' needs a BOOL value, got INT",
+    ),
     "type mismatch into an output node": (
-        net("n1", [inp("i", "n"), blk("g", "ADD"), out("o", "a")],
-            [("i.OUT", "g.IN1"), ("i.OUT", "g.IN2"), ("g.OUT", "o.IN")]),
+        net(
+            "n1",
+            [inp("i", "n"), blk("g", "ADD"), out("o", "a")],
+            [("i.OUT", "g.IN1"), ("i.OUT", "g.IN2"), ("g.OUT", "o.IN")],
+        ),
         f"{WHERE} o, pin IN: error ST-TYPE-MISMATCH: output node 'o': expected BOOL, got INT without a conversion "
-        "such as INT_TO_BOOL"),
+        "such as INT_TO_BOOL",
+    ),
     "unknown function": (
         net("n1", [blk("x", "ADDD")], []),
-        f"{WHERE} x: error FBD-UNKNOWN-CALL: unknown function or function block 'ADDD' - did you mean 'ADD'?"),
+        f"{WHERE} x: error FBD-UNKNOWN-CALL: unknown function or function block 'ADDD' - did you mean 'ADD'?",
+    ),
     "FB without an instance": (
         net("n1", [blk("x", "TON")], []),
         f"{WHERE} x: error FBD-NO-INSTANCE: the function block TON needs an instance: declare one (e.g. inst : "
-        "TON;) and name it in the box"),
+        "TON;) and name it in the box",
+    ),
     "instance of another FB type": (
         net("n1", [blk("x", "TON", "c1")], []),
-        f"{WHERE} x: error FBD-INSTANCE-TYPE: 'c1' is a CTU, not a TON instance"),
+        f"{WHERE} x: error FBD-INSTANCE-TYPE: 'c1' is a CTU, not a TON instance",
+    ),
     "dangling function input": (
         net("n1", [inp("i", "n"), blk("x", "ADD"), out("o", "m")], [("i.OUT", "x.IN1"), ("x.OUT", "o.IN")]),
-        f"{WHERE} x, pin IN2: error FBD-MISSING-PIN: input IN2 of ADD is not connected"),
+        f"{WHERE} x, pin IN2: error FBD-MISSING-PIN: input IN2 of ADD is not connected",
+    ),
     "dangling output node": (
         net("n1", [out("o", "a")], []),
-        f"{WHERE} o, pin IN: error FBD-DANGLING: output node 'o' (a) has no input wire"),
+        f"{WHERE} o, pin IN: error FBD-DANGLING: output node 'o' (a) has no input wire",
+    ),
     "dangling EN": (
         net("n1", [blk("x", "TON", "t1", en=True)], []),
-        f"{WHERE} x, pin EN: error FBD-MISSING-PIN: input EN of 'x' is not connected"),
+        f"{WHERE} x, pin EN: error FBD-MISSING-PIN: input EN of 'x' is not connected",
+    ),
     "unknown input pin": (
         net("n1", [inp("i", "n"), blk("x", "TON", "t1")], [("i.OUT", "x.XX")]),
-        f"{WHERE} x, pin XX: error ST-CALL-ARGS: TON has no parameter 'XX'"),
+        f"{WHERE} x, pin XX: error ST-CALL-ARGS: TON has no parameter 'XX'",
+    ),
     "unknown output pin": (
         net("n1", [blk("x", "TON", "t1"), out("o", "a")], [("x.QQ", "o.IN")]),
-        f"{WHERE} x, pin QQ: error FBD-UNKNOWN-PIN: TON has no output 'QQ' - did you mean 'Q'?"),
+        f"{WHERE} x, pin QQ: error FBD-UNKNOWN-PIN: TON has no output 'QQ' - did you mean 'Q'?",
+    ),
     "EN without en": (
         net("n1", [inp("i", "a"), blk("x", "TON", "t1")], [("i.OUT", "x.EN")]),
-        f"{WHERE} x, pin EN: error FBD-UNKNOWN-PIN: 'x' has no EN: set en to use EN and ENO"),
+        f"{WHERE} x, pin EN: error FBD-UNKNOWN-PIN: 'x' has no EN: set en to use EN and ENO",
+    ),
     "ENO without en": (
         net("n1", [blk("x", "TON", "t1"), out("o", "a")], [("x.ENO", "o.IN")]),
-        f"{WHERE} x, pin ENO: error FBD-UNKNOWN-PIN: 'x' has no ENO: set en to use EN and ENO"),
+        f"{WHERE} x, pin ENO: error FBD-UNKNOWN-PIN: 'x' has no ENO: set en to use EN and ENO",
+    ),
     "a wire into ENO without en": (
         net("n1", [inp("i", "a"), blk("x", "TON", "t1")], [("i.OUT", "x.ENO")]),
-        f"{WHERE} x, pin ENO: error FBD-UNKNOWN-PIN: 'x' has no ENO: set en to use EN and ENO"),
+        f"{WHERE} x, pin ENO: error FBD-UNKNOWN-PIN: 'x' has no ENO: set en to use EN and ENO",
+    ),
     "type mismatch on a pin": (
         net("n1", [inp("i", "n"), blk("x", "TON", "t1")], [("i.OUT", "x.PT")]),
         f"{WHERE} x, pin PT: error ST-TYPE-MISMATCH: input PT of TON: expected TIME, got INT without a conversion "
-        "such as INT_TO_TIME"),
+        "such as INT_TO_TIME",
+    ),
     "negated pin that is not BOOL": (
         net("n1", [inp("i", "n"), blk("x", "TON", "t1", PT={"negated": True})], [("i.OUT", "x.PT")]),
-        f"{WHERE} x, pin PT: error FBD-NOT-BOOL: the negated input PT of 'x' needs a BOOL value, got INT"),
+        f"{WHERE} x, pin PT: error FBD-NOT-BOOL: the negated input PT of 'x' needs a BOOL value, got INT",
+    ),
     "edge flag on an output": (
         net("n1", [blk("x", "TON", "t1", Q={"edge": "rising"})], []),
-        f"{WHERE} x, pin Q: error FBD-PIN-FLAG: output Q of 'x' cannot have an edge flag: edge detection is for "
-        "inputs"),
+        f"{WHERE} x, pin Q: error FBD-PIN-FLAG: output Q of 'x' cannot have an edge flag: edge detection is for inputs",
+    ),
     "flags for a pin the block lacks": (
         net("n1", [blk("x", "TON", "t1", ZZ={"negated": True})], []),
-        f"{WHERE} x, pin ZZ: error FBD-UNKNOWN-PIN: TON has no pin 'ZZ' for the flags"),
+        f"{WHERE} x, pin ZZ: error FBD-UNKNOWN-PIN: TON has no pin 'ZZ' for the flags",
+    ),
     "cycle without a feedback value": (
         net("n1", [inp("one", "1"), blk("c", "ADD")], [("c.OUT", "c.IN1"), ("one.OUT", "c.IN2")]),
         f"{WHERE} c, pin IN1: error FBD-FEEDBACK: the wire c.OUT -> c.IN1 closes a loop: it carries c.OUT of the "
         "previous scan, and a function's result has none before its first call; also connect c.OUT to an output "
-        "variable, whose declared initial value then starts the loop"),
+        "variable, whose declared initial value then starts the loop",
+    ),
     "wired OR": (
         net("n1", [inp("i", "a"), inp("k", "b"), out("o", "a")], [("i.OUT", "o.IN"), ("k.OUT", "o.IN")]),
         f"{WHERE} o, pin IN: error FBD-WIRED-OR: input IN of 'o' has 2 wires (from i.OUT and from k.OUT): FBD has "
-        "no wired OR, use an OR block"),
+        "no wired OR, use an OR block",
+    ),
     "unknown jump target": (
         net("n1", [inp("i", "a"), fjump("j", "nowhere")], [("i.OUT", "j.IN")]),
-        f"{WHERE} j: error FBD-UNKNOWN-LABEL: jump to 'nowhere', but no network of this POU has that label"),
+        f"{WHERE} j: error FBD-UNKNOWN-LABEL: jump to 'nowhere', but no network of this POU has that label",
+    ),
     "jump on a non-BOOL value": (
         net("n1", [inp("i", "n"), fjump("j", "L")], [("i.OUT", "j.IN")]),
-        f"{WHERE} j, pin IN: error FBD-NOT-BOOL: jump 'j' needs a BOOL value, got INT"),
+        f"{WHERE} j, pin IN: error FBD-NOT-BOOL: jump 'j' needs a BOOL value, got INT",
+    ),
     "unknown order entry": (
         net("n1", [], [], order=["ghost"]),
-        f"{WHERE} ghost: error FBD-ORDER: the order list names 'ghost', which is not a node of this network"),
+        f"{WHERE} ghost: error FBD-ORDER: the order list names 'ghost', which is not a node of this network",
+    ),
     "connector named like a variable": (
-        net("n1", [inp("i", "a"), connector("k", "B"), continuation("c", "b"), out("o", "a")],
-            [("i.OUT", "k.IN"), ("c.OUT", "o.IN")]),
-        f"{WHERE} k: error FBD-CONNECTOR: connector 'B' has the name of a variable of this POU"),
+        net(
+            "n1",
+            [inp("i", "a"), connector("k", "B"), continuation("c", "b"), out("o", "a")],
+            [("i.OUT", "k.IN"), ("c.OUT", "o.IN")],
+        ),
+        f"{WHERE} k: error FBD-CONNECTOR: connector 'B' has the name of a variable of this POU",
+    ),
     "duplicate node id": (
         net("n1", [inp("i", "a"), out("i", "b")], []),
         f"{WHERE} i: error FBD-DUPLICATE-ID: element id 'i' is also used in network n1: element ids must be unique "
-        "in the POU"),
+        "in the POU",
+    ),
 }
 
 
@@ -132,11 +167,19 @@ def test_validation_diagnostic(name):
 
 def test_in_out_needs_a_variable():
     swap = fbd_pou("Bump", "VAR_IN_OUT x : INT; END_VAR", kind="function_block")
-    main = fbd_pou("Main", "VAR n : INT; u : Bump; END_VAR", net("n1", [
-        inp("i", "n"), blk("add", "ADD"), blk("b", "Bump", "u")], [("i.OUT", "add.IN1"), ("i.OUT", "add.IN2"),
-                                                                  ("add.OUT", "b.X")]))
-    assert errors(swap, main) == ["POU Main, network n1, element b, pin X: error FBD-IN-OUT: in-out X of Bump needs a "
-                                  "variable, not a computed value"]
+    main = fbd_pou(
+        "Main",
+        "VAR n : INT; u : Bump; END_VAR",
+        net(
+            "n1",
+            [inp("i", "n"), blk("add", "ADD"), blk("b", "Bump", "u")],
+            [("i.OUT", "add.IN1"), ("i.OUT", "add.IN2"), ("add.OUT", "b.X")],
+        ),
+    )
+    assert errors(swap, main) == [
+        "POU Main, network n1, element b, pin X: error FBD-IN-OUT: in-out X of Bump needs a "
+        "variable, not a computed value"
+    ]
 
 
 # ------------------------------------------------------------------ never an exception
@@ -156,24 +199,44 @@ def _networks(draw, index: int):
         elif kind == "output":
             nodes.append(out(node_id, draw(_exprs), draw(st.sampled_from(["normal", "set", "n"]))))
         elif kind == "block":
-            flags = draw(st.dictionaries(_pins, st.fixed_dictionaries(
-                {"negated": st.booleans(), "edge": st.sampled_from([None, "rising"])}), max_size=2))
-            nodes.append(blk(node_id, draw(st.sampled_from(["ADD", "AND", "TON", "CTU", "NOT", "Nope"])),
-                             draw(st.sampled_from([None, "t1", "c1"])), draw(st.booleans()), **flags))
+            flags = draw(
+                st.dictionaries(
+                    _pins,
+                    st.fixed_dictionaries({"negated": st.booleans(), "edge": st.sampled_from([None, "rising"])}),
+                    max_size=2,
+                )
+            )
+            nodes.append(
+                blk(
+                    node_id,
+                    draw(st.sampled_from(["ADD", "AND", "TON", "CTU", "NOT", "Nope"])),
+                    draw(st.sampled_from([None, "t1", "c1"])),
+                    draw(st.booleans()),
+                    **flags,
+                )
+            )
         elif kind in ("connector", "continuation"):
             node_type = fbd.Connector if kind == "connector" else fbd.Continuation
             nodes.append(node_type(id=node_id, name=draw(st.sampled_from(["k", "K", "j"]))))
         else:
-            nodes.append(fjump(node_id, draw(st.sampled_from(["L", "x"]))) if kind == "jump"
-                         else fbd.FbdReturn(id=node_id))
+            nodes.append(
+                fjump(node_id, draw(st.sampled_from(["L", "x"]))) if kind == "jump" else fbd.FbdReturn(id=node_id)
+            )
     wires = draw(st.lists(st.tuples(_ids, _pins, _ids, _pins), max_size=8))
-    return fbd.FbdNetwork(id=f"n{index}", label=draw(st.sampled_from([None, "L"])), nodes=nodes,
-                          wires=[wire(f"{a}.{p}", f"{b}.{q}") for a, p, b, q in wires],
-                          order=draw(st.one_of(st.none(), st.lists(_ids, max_size=3))))
+    return fbd.FbdNetwork(
+        id=f"n{index}",
+        label=draw(st.sampled_from([None, "L"])),
+        nodes=nodes,
+        wires=[wire(f"{a}.{p}", f"{b}.{q}") for a, p, b, q in wires],
+        order=draw(st.one_of(st.none(), st.lists(_ids, max_size=3))),
+    )
 
 
-@given(st.lists(st.integers(0, 0), min_size=1, max_size=3).flatmap(
-    lambda items: st.tuples(*[_networks(i) for i in range(len(items))])))
+@given(
+    st.lists(st.integers(0, 0), min_size=1, max_size=3).flatmap(
+        lambda items: st.tuples(*[_networks(i) for i in range(len(items))])
+    )
+)
 def test_property_any_fbd_lowers_or_reports_located_diagnostics(networks):
     result = lower_project(project(fbd_pou("Main", DECL, *networks)))
     for diagnostic in result.diagnostics:

@@ -22,121 +22,156 @@ from tests.ir.diagram_support import (
     rung,
 )
 
-DECL = ("VAR a, b : BOOL; n : INT; w : WORD; t1 : TON; c1 : CTU; END_VAR VAR CONSTANT kc : BOOL := TRUE; END_VAR "
-        "VAR_INPUT inb : BOOL; END_VAR")
+DECL = (
+    "VAR a, b : BOOL; n : INT; w : WORD; t1 : TON; c1 : CTU; END_VAR VAR CONSTANT kc : BOOL := TRUE; END_VAR "
+    "VAR_INPUT inb : BOOL; END_VAR"
+)
 WHERE = "POU Main, network n1, element"
 
 CASES = {
     "unknown variable": (
         rung("n1", contact("c", "Strat"), coil("q", "a")),
-        f"{WHERE} c: error ST-UNKNOWN-VAR: unknown variable 'Strat'"),
+        f"{WHERE} c: error ST-UNKNOWN-VAR: unknown variable 'Strat'",
+    ),
     "contact on a non-BOOL variable": (
         rung("n1", contact("c", "n"), coil("q", "a")),
-        f"{WHERE} c: error LD-NOT-BOOL: contact 'c' needs a BOOL variable; 'n' is INT"),
+        f"{WHERE} c: error LD-NOT-BOOL: contact 'c' needs a BOOL variable; 'n' is INT",
+    ),
     "coil on a non-BOOL variable": (
         rung("n1", contact("c", "a"), coil("q", "n")),
-        f"{WHERE} q: error LD-NOT-BOOL: coil 'q' needs a BOOL variable; 'n' is INT"),
+        f"{WHERE} q: error LD-NOT-BOOL: coil 'q' needs a BOOL variable; 'n' is INT",
+    ),
     "write to a CONSTANT": (
         rung("n1", contact("c", "a"), coil("q", "kc")),
-        f"{WHERE} q: error ST-CONST-WRITE: 'kc' is a CONSTANT and cannot be assigned"),
+        f"{WHERE} q: error ST-CONST-WRITE: 'kc' is a CONSTANT and cannot be assigned",
+    ),
     "write to an input": (
         rung("n1", contact("c", "a"), coil("q", "inb")),
-        f"{WHERE} q: error LD-INPUT-WRITE: 'inb' is an input of Main: assigning it overwrites the caller's value"),
+        f"{WHERE} q: error LD-INPUT-WRITE: 'inb' is an input of Main: assigning it overwrites the caller's value",
+    ),
     "unknown function": (
         rung("n1", box("x", "TOM", en=True)),
-        f"{WHERE} x: error LD-UNKNOWN-CALL: unknown function or function block 'TOM' - did you mean 'TON'?"),
+        f"{WHERE} x: error LD-UNKNOWN-CALL: unknown function or function block 'TOM' - did you mean 'TON'?",
+    ),
     "FB without an instance": (
         rung("n1", box("x", "TON", PT="T#1s")),
         f"{WHERE} x: error LD-NO-INSTANCE: the function block TON needs an instance: declare one "
-        "(e.g. inst : TON;) and name it in the box"),
+        "(e.g. inst : TON;) and name it in the box",
+    ),
     "instance of another FB type": (
         rung("n1", box("x", "TON", instance="c1", PT="T#1s")),
-        f"{WHERE} x: error LD-INSTANCE-TYPE: 'c1' is a CTU, not a TON instance"),
+        f"{WHERE} x: error LD-INSTANCE-TYPE: 'c1' is a CTU, not a TON instance",
+    ),
     "instance that is no FB": (
         rung("n1", box("x", "TON", instance="a", PT="T#1s")),
-        f"{WHERE} x: error LD-INSTANCE-TYPE: 'a' is a BOOL, not a TON instance"),
+        f"{WHERE} x: error LD-INSTANCE-TYPE: 'a' is a BOOL, not a TON instance",
+    ),
     "function with an instance": (
         rung("n1", box("x", "ADD", instance="t1", en=True, IN1="1", IN2="2")),
-        f"{WHERE} x: error LD-INSTANCE: ADD is a function: it has no instance (remove 't1')"),
+        f"{WHERE} x: error LD-INSTANCE: ADD is a function: it has no instance (remove 't1')",
+    ),
     "missing pin": (
         rung("n1", box("x", "ADD", en=True, IN1="n", outputs={"OUT": "n"})),
-        f"{WHERE} x, pin IN2: error LD-MISSING-PIN: input IN2 of ADD is not connected"),
+        f"{WHERE} x, pin IN2: error LD-MISSING-PIN: input IN2 of ADD is not connected",
+    ),
     "gap in extensible inputs": (
         rung("n1", box("x", "ADD", en=True, IN1="n", IN2="n", IN4="n", outputs={"OUT": "n"})),
-        f"{WHERE} x, pin IN3: error LD-MISSING-PIN: input IN3 of ADD is not connected"),
+        f"{WHERE} x, pin IN3: error LD-MISSING-PIN: input IN3 of ADD is not connected",
+    ),
     "unknown input pin": (
         rung("n1", box("x", "TON", instance="t1", PX="T#1s")),
-        f"{WHERE} x, pin PX: error ST-CALL-ARGS: TON has no parameter 'PX'"),
+        f"{WHERE} x, pin PX: error ST-CALL-ARGS: TON has no parameter 'PX'",
+    ),
     "unknown output pin": (
         rung("n1", box("x", "TON", instance="t1", outputs={"QQ": "a"})),
-        f"{WHERE} x, pin QQ: error ST-CALL-ARGS: TON has no parameter 'QQ' - did you mean 'Q'?"),
+        f"{WHERE} x, pin QQ: error ST-CALL-ARGS: TON has no parameter 'QQ' - did you mean 'Q'?",
+    ),
     "function output other than OUT": (
         rung("n1", box("x", "ADD", en=True, IN1="n", IN2="1", outputs={"Q": "n"})),
-        f"{WHERE} x, pin Q: error LD-UNKNOWN-PIN: ADD is a function: its only output is OUT"),
+        f"{WHERE} x, pin Q: error LD-UNKNOWN-PIN: ADD is a function: its only output is OUT",
+    ),
     "EN connected as an operand": (
         rung("n1", box("x", "ADD", en=True, EN="a", IN1="n", IN2="1")),
-        f"{WHERE} x, pin EN: error LD-UNKNOWN-PIN: EN is the box's power flow: set en instead of connecting it"),
+        f"{WHERE} x, pin EN: error LD-UNKNOWN-PIN: EN is the box's power flow: set en instead of connecting it",
+    ),
     "type mismatch on an input pin": (
         rung("n1", box("x", "TON", instance="t1", PT="5")),
-        f"{WHERE} x, pin PT: error ST-TYPE-MISMATCH: input PT of TON: expected TIME, got ANY_INT literal"),
+        f"{WHERE} x, pin PT: error ST-TYPE-MISMATCH: input PT of TON: expected TIME, got ANY_INT literal",
+    ),
     "type mismatch between generic inputs": (
         rung("n1", box("x", "ADD", en=True, IN1="n", IN2="1.5", outputs={"OUT": "n"})),
         f"{WHERE} x, pin IN2: error ST-TYPE-MISMATCH: ADD needs inputs of one type: got INT and ANY_REAL literal; "
-        "convert one of them with a *_TO_* function"),
+        "convert one of them with a *_TO_* function",
+    ),
     "type mismatch on an output pin": (
         rung("n1", box("x", "TON", instance="t1", outputs={"ET": "n"})),
         f"{WHERE} x, pin ET: error ST-TYPE-MISMATCH: output ET is TIME and cannot be stored in INT without a "
-        "conversion such as TIME_TO_INT"),
+        "conversion such as TIME_TO_INT",
+    ),
     "type mismatch on a function result": (
         rung("n1", box("x", "GT", en=True, IN1="n", IN2="1", outputs={"OUT": "n"})),
         f"{WHERE} x, pin OUT: error ST-TYPE-MISMATCH: output OUT of GT ('n'): expected INT, got BOOL without a "
-        "conversion such as BOOL_TO_INT"),
+        "conversion such as BOOL_TO_INT",
+    ),
     "box without a BOOL input": (
         rung("n1", box("x", "ADD", IN1="n", IN2="1")),
-        f"{WHERE} x: error LD-BOX-POWER: ADD has no free BOOL input for the power flow: set en to use EN"),
+        f"{WHERE} x: error LD-BOX-POWER: ADD has no free BOOL input for the power flow: set en to use EN",
+    ),
     "box without a BOOL output": (
         rung("n1", box("x", "SEL", IN0="n", IN1="1")),
-        f"{WHERE} x: error LD-BOX-POWER: SEL has no BOOL output to pass the power flow on: set en to use ENO"),
+        f"{WHERE} x: error LD-BOX-POWER: SEL has no BOOL output to pass the power flow on: set en to use ENO",
+    ),
     "program called from a box": (
         rung("n1", box("x", "Other")),
-        f"{WHERE} x: error LD-NOT-CALLABLE: Other is a program: programs are run by tasks, not called from a "
-        "diagram"),
+        f"{WHERE} x: error LD-NOT-CALLABLE: Other is a program: programs are run by tasks, not called from a diagram",
+    ),
     "unknown jump target": (
         rung("n1", contact("c", "a"), jump("j", "nowhere")),
-        f"{WHERE} j: error LD-UNKNOWN-LABEL: jump to 'nowhere', but no network of this POU has that label"),
+        f"{WHERE} j: error LD-UNKNOWN-LABEL: jump to 'nowhere', but no network of this POU has that label",
+    ),
     "jump not at the end of its branch": (
         rung("n1", jump("j", "L"), coil("q", "a")),
-        f"{WHERE} j: error LD-CONTROL-POSITION: jump 'j' must be the last element of a branch that ends the rung"),
+        f"{WHERE} j: error LD-CONTROL-POSITION: jump 'j' must be the last element of a branch that ends the rung",
+    ),
     "return in a branch that does not end the rung": (
         rung("n1", parallel("p", [contact("c", "a"), ret("r")], [contact("d", "b")]), coil("q", "a")),
-        f"{WHERE} r: error LD-CONTROL-POSITION: return 'r' must be the last element of a branch that ends the rung"),
+        f"{WHERE} r: error LD-CONTROL-POSITION: return 'r' must be the last element of a branch that ends the rung",
+    ),
     "jump feeding a box input": (
         rung("n1", box("x", "TON", instance="t1", PT=[jump("j", "L")])),
-        f"{WHERE} j: error LD-CONTROL-POSITION: jump 'j' must be the last element of a branch that ends the rung"),
+        f"{WHERE} j: error LD-CONTROL-POSITION: jump 'j' must be the last element of a branch that ends the rung",
+    ),
     "coil on a bit of a variable": (
         rung("n1", contact("c", "a"), coil("q", "w.3")),
         f"{WHERE} q: error LD-BIT-TARGET: coil 'q' cannot write a single bit ('w.3') yet: write a BOOL variable and "
-        "copy it into the bit in ST"),
+        "copy it into the bit in ST",
+    ),
     "parallel with one branch": (
         rung("n1", parallel("p", [contact("c", "a")]), coil("q", "b")),
-        f"{WHERE} p: error LD-PARALLEL: parallel 'p' has 1 branch(es); it needs at least two"),
+        f"{WHERE} p: error LD-PARALLEL: parallel 'p' has 1 branch(es); it needs at least two",
+    ),
     "duplicate element id": (
         rung("n1", contact("c", "a"), coil("c", "b")),
         f"{WHERE} c: error LD-DUPLICATE-ID: element id 'c' is also used in network n1: element ids must be unique "
-        "in the POU"),
+        "in the POU",
+    ),
     "empty operand": (
         rung("n1", contact("c", " "), coil("q", "b")),
-        f"{WHERE} c: error LD-MISSING-OPERAND: contact 'c' has no operand"),
+        f"{WHERE} c: error LD-MISSING-OPERAND: contact 'c' has no operand",
+    ),
     "operand syntax error": (
         rung("n1", contact("c", "a +"), coil("q", "b")),
-        f"{WHERE} c: error ST-PARSE: expected an expression, found end of text"),
+        f"{WHERE} c: error ST-PARSE: expected an expression, found end of text",
+    ),
     "compare contact operand types": (
         rung("n1", compare("c", "GT", "n", "a"), coil("q", "b")),
         f"{WHERE} c: error ST-TYPE-MISMATCH: '>' needs operands of the same type: INT and BOOL; convert one of them "
-        "(e.g. BOOL_TO_INT)"),
+        "(e.g. BOOL_TO_INT)",
+    ),
     "compare contact unknown operand": (
         rung("n1", compare("c", "LT", "n", "zz"), coil("q", "b")),
-        f"{WHERE} c, pin right: error ST-UNKNOWN-VAR: unknown variable 'zz'"),
+        f"{WHERE} c, pin right: error ST-UNKNOWN-VAR: unknown variable 'zz'",
+    ),
 }
 
 
@@ -148,8 +183,9 @@ def test_validation_diagnostic(name):
 
 
 def test_duplicate_and_malformed_labels():
-    main = ld_pou("Main", "", rung("n1", label="Next"), rung("n2", label="next"), rung("n3", label="1x"),
-                  rung("n3", label="10"))
+    main = ld_pou(
+        "Main", "", rung("n1", label="Next"), rung("n2", label="next"), rung("n3", label="1x"), rung("n3", label="10")
+    )
     assert errors(main) == [
         "POU Main, network n3: error LD-DUPLICATE-ID: network id 'n3' is used twice in this POU",
         "POU Main, network n2: error LD-DUPLICATE-LABEL: label 'next' is already used by network n1",
@@ -158,10 +194,18 @@ def test_duplicate_and_malformed_labels():
 
 
 def test_jump_target_suggestion_and_integer_labels():
-    main = ld_pou("Main", "", rung("n1", jump("j1", "Nxet")), rung("n2", jump("j2", "10")),
-                  rung("n3", label="Next"), rung("n4", label="10"))
-    assert errors(main) == ["POU Main, network n1, element j1: error LD-UNKNOWN-LABEL: jump to 'Nxet', but no network "
-                            "of this POU has that label - did you mean 'NEXT'?"]
+    main = ld_pou(
+        "Main",
+        "",
+        rung("n1", jump("j1", "Nxet")),
+        rung("n2", jump("j2", "10")),
+        rung("n3", label="Next"),
+        rung("n4", label="10"),
+    )
+    assert errors(main) == [
+        "POU Main, network n1, element j1: error LD-UNKNOWN-LABEL: jump to 'Nxet', but no network "
+        "of this POU has that label - did you mean 'NEXT'?"
+    ]
 
 
 # ------------------------------------------------------------------ never an exception
@@ -184,18 +228,26 @@ def _elements(depth: int):
     return st.one_of(
         leaf,
         st.builds(lambda i, bs: parallel(i, *bs), _ids, st.lists(series, max_size=3)),
-        st.builds(lambda i, c, inst, en, inputs, outputs: ld.Box(id=i, call=c, instance=inst, en=en, inputs=inputs,
-                                                                 outputs=outputs),
-                  _ids, st.sampled_from(["TON", "ADD", "SEL", "CTU", "Other", "NOPE", "AND"]),
-                  st.sampled_from([None, "t1", "c1", "a"]), st.booleans(),
-                  st.dictionaries(st.sampled_from(["IN", "PT", "IN1", "IN2", "G", "CU", "EN", "X"]),
-                                  st.one_of(_names, series), max_size=3),
-                  st.dictionaries(st.sampled_from(["Q", "ET", "OUT", "ENO", "CV"]), _names, max_size=2)),
+        st.builds(
+            lambda i, c, inst, en, inputs, outputs: ld.Box(
+                id=i, call=c, instance=inst, en=en, inputs=inputs, outputs=outputs
+            ),
+            _ids,
+            st.sampled_from(["TON", "ADD", "SEL", "CTU", "Other", "NOPE", "AND"]),
+            st.sampled_from([None, "t1", "c1", "a"]),
+            st.booleans(),
+            st.dictionaries(
+                st.sampled_from(["IN", "PT", "IN1", "IN2", "G", "CU", "EN", "X"]), st.one_of(_names, series), max_size=3
+            ),
+            st.dictionaries(st.sampled_from(["Q", "ET", "OUT", "ENO", "CV"]), _names, max_size=2),
+        ),
     )
 
 
-@given(st.lists(st.lists(_elements(2), max_size=4), min_size=1, max_size=3),
-       st.lists(st.sampled_from([None, "L", "M", "l", "2"]), min_size=3, max_size=3))
+@given(
+    st.lists(st.lists(_elements(2), max_size=4), min_size=1, max_size=3),
+    st.lists(st.sampled_from([None, "L", "M", "l", "2"]), min_size=3, max_size=3),
+)
 def test_property_any_ladder_lowers_or_reports_located_diagnostics(rungs, labels):
     networks = [ld.LdNetwork(id=f"n{i}", label=labels[i], elements=elements) for i, elements in enumerate(rungs)]
     result = lower_project(project(ld_pou("Main", DECL, *networks), ld_pou("Other", "")))
@@ -207,21 +259,26 @@ def test_property_any_ladder_lowers_or_reports_located_diagnostics(rungs, labels
 def test_a_text_on_several_pins_is_located_on_the_pin_at_fault():
     """Operand texts the LALR parser reads are parsed once per POU; each pin still gets its own copy of the
     tree, so a problem is reported on the pin it is in (here IN1, not G, though both read 'TRUE')."""
-    main = ld_pou("Main", DECL, rung("n1", box("s", "SEL", en=True, G="TRUE", IN0="T#1s", IN1="TRUE",
-                                              outputs={"OUT": "n"})))
-    assert errors(main) == ["POU Main, network n1, element s, pin IN1: error ST-TYPE-MISMATCH: SEL needs inputs of "
-                            "one type: got TIME and BOOL; convert one of them with a *_TO_* function"]
+    main = ld_pou(
+        "Main", DECL, rung("n1", box("s", "SEL", en=True, G="TRUE", IN0="T#1s", IN1="TRUE", outputs={"OUT": "n"}))
+    )
+    assert errors(main) == [
+        "POU Main, network n1, element s, pin IN1: error ST-TYPE-MISMATCH: SEL needs inputs of "
+        "one type: got TIME and BOOL; convert one of them with a *_TO_* function"
+    ]
 
 
 def test_many_problems_are_reported_without_comparing_each_with_all_before(monkeypatch):
     """A large diagram with a problem in every network: a new diagnostic is looked up, not compared with every
     earlier one (that made 1,000 broken networks take 16 s); repeated ones are still reported once."""
     from ladderlab.model.diagnostics import Diagnostic
+
     comparisons = []
     original = Diagnostic.__eq__
     monkeypatch.setattr(Diagnostic, "__eq__", lambda self, other: comparisons.append(1) or original(self, other))
     networks = [rung(f"n{i}", contact(f"c{i}", "Strat"), coil(f"q{i}", "a")) for i in range(300)]
     found = errors(ld_pou("Main", DECL, *networks))
-    assert len(found) == 300 and found[299] == ("POU Main, network n299, element c299: error ST-UNKNOWN-VAR: unknown "
-                                                "variable 'Strat'")
+    assert len(found) == 300 and found[299] == (
+        "POU Main, network n299, element c299: error ST-UNKNOWN-VAR: unknown variable 'Strat'"
+    )
     assert len(comparisons) < 300

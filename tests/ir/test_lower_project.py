@@ -27,10 +27,15 @@ VAR_GLOBAL CONSTANT Gain : REAL := 1.5; END_VAR""")
 
 
 def test_pous_by_upper_case_name_with_kind_language_and_return_type():
-    program = lower_ok("FUNCTION_BLOCK MyFb\n;\nEND_FUNCTION_BLOCK\nFUNCTION Get : INT\nGet := 1;\nEND_FUNCTION\n"
-                       "PROGRAM Main\nEND_PROGRAM\n")
+    program = lower_ok(
+        "FUNCTION_BLOCK MyFb\n;\nEND_FUNCTION_BLOCK\nFUNCTION Get : INT\nGet := 1;\nEND_FUNCTION\n"
+        "PROGRAM Main\nEND_PROGRAM\n"
+    )
     assert {n: (p.kind, p.language, p.return_type) for n, p in program.pous.items()} == {
-        "MYFB": ("function_block", "st", None), "GET": ("function", "st", INT), "MAIN": ("program", "st", None)}
+        "MYFB": ("function_block", "st", None),
+        "GET": ("function", "st", INT),
+        "MAIN": ("program", "st", None),
+    }
     assert program.pous["MAIN"].blocks == [ir.Block([], ir.Origin("MAIN"))]  # an empty body is an empty block
 
 
@@ -39,27 +44,37 @@ def _project(pous: list[Pou], tasks: list[Task] | None = None, **texts) -> Proje
 
 
 def test_tasks_from_the_project_with_intervals_in_ms():
-    project = _project([Pou(name="Fast", kind="program", language="st"), Pou(name="Slow", kind="program",
-                                                                             language="st")],
-                       [Task(name="t_fast", interval="T#5ms", priority=1, programs=["fast"]),
-                        Task(name="T_slow", interval="T#1s200ms", priority=2, programs=["Slow", "Fast"])])
+    project = _project(
+        [Pou(name="Fast", kind="program", language="st"), Pou(name="Slow", kind="program", language="st")],
+        [
+            Task(name="t_fast", interval="T#5ms", priority=1, programs=["fast"]),
+            Task(name="T_slow", interval="T#1s200ms", priority=2, programs=["Slow", "Fast"]),
+        ],
+    )
     result = lower_project(project)
     assert result.diagnostics == []
-    assert result.program.tasks == [ir.TaskSpec("T_FAST", 5, 1, ["FAST"]), ir.TaskSpec("T_SLOW", 1200, 2,
-                                                                                          ["SLOW", "FAST"])]
+    assert result.program.tasks == [
+        ir.TaskSpec("T_FAST", 5, 1, ["FAST"]),
+        ir.TaskSpec("T_SLOW", 1200, 2, ["SLOW", "FAST"]),
+    ]
 
 
 def test_without_tasks_every_program_runs_in_the_default_10ms_task():
-    project = _project([Pou(name="B", kind="program", language="st"), Pou(name="Fb", kind="function_block",
-                                                                          language="st"),
-                        Pou(name="A", kind="program", language="st")])
+    project = _project(
+        [
+            Pou(name="B", kind="program", language="st"),
+            Pou(name="Fb", kind="function_block", language="st"),
+            Pou(name="A", kind="program", language="st"),
+        ]
+    )
     assert lower_project(project).program.tasks == [ir.TaskSpec(DEFAULT_TASK, 10, 0, ["B", "A"])]
     assert lower_project(_project([Pou(name="Fb", kind="function_block", language="st")])).program.tasks == []
 
 
 def test_a_task_naming_an_unknown_program_makes_no_program():
-    project = _project([Pou(name="Main", kind="program", language="st")],
-                       [Task(name="T", interval="T#10ms", programs=["Nope"])])
+    project = _project(
+        [Pou(name="Main", kind="program", language="st")], [Task(name="T", interval="T#10ms", programs=["Nope"])]
+    )
     result = lower_project(project)
     assert result.program is None
     assert [d.code for d in result.diagnostics] == ["UNKNOWN-PROGRAM"]
@@ -76,10 +91,14 @@ def test_checker_errors_give_no_program_but_all_diagnostics():
 
 def test_unnamed_direct_variables_are_unsupported():
     text = "VAR_GLOBAL AT %QX0.1 : BOOL; END_VAR\nPROGRAM P\nVAR AT %IX1.0 : BOOL; END_VAR\nEND_PROGRAM\n"
-    message = "directly represented variable {0} has no name: declare it as 'name AT {0} : type' (unnamed ones are " \
-              "not supported yet)"
-    assert errors(text) == [f"globals:1:15: error IR-UNSUPPORTED: the {message.format('%QX0.1')}",
-                            f"P/declarations:3:8, POU P: error IR-UNSUPPORTED: the {message.format('%IX1.0')}"]
+    message = (
+        "directly represented variable {0} has no name: declare it as 'name AT {0} : type' (unnamed ones are "
+        "not supported yet)"
+    )
+    assert errors(text) == [
+        f"globals:1:15: error IR-UNSUPPORTED: the {message.format('%QX0.1')}",
+        f"P/declarations:3:8, POU P: error IR-UNSUPPORTED: the {message.format('%IX1.0')}",
+    ]
 
 
 def test_body_lowering_is_chosen_by_language_through_lower_body(monkeypatch):
@@ -105,11 +124,14 @@ def test_body_lowering_is_chosen_by_language_through_lower_body(monkeypatch):
 
 def test_edge_preamble_of_a_diagram_pou_is_a_block_of_its_own(monkeypatch):
     monkeypatch.setitem(LOWER_BODY, "fbd", lambda pou, ctx: [ir.Block([], ir.Origin(ctx.name, network="n1"), "N1")])
-    project = _project([Pou(name="Fb", kind="function_block", language="fbd",
-                            declarations="VAR_INPUT go : BOOL R_EDGE; END_VAR")])
+    project = _project(
+        [Pou(name="Fb", kind="function_block", language="fbd", declarations="VAR_INPUT go : BOOL R_EDGE; END_VAR")]
+    )
     blocks = lower_project(project).program.pous["FB"].blocks
-    assert [(b.label, len(b.statements), b.origin) for b in blocks] == [(None, 2, ir.Origin("FB")),
-                                                                         ("N1", 0, ir.Origin("FB", network="n1"))]
+    assert [(b.label, len(b.statements), b.origin) for b in blocks] == [
+        (None, 2, ir.Origin("FB")),
+        ("N1", 0, ir.Origin("FB", network="n1")),
+    ]
 
 
 def test_a_language_without_lowering_is_reported(monkeypatch):

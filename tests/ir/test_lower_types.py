@@ -45,7 +45,8 @@ def test_ir_type_refuses_pointers_and_open_arrays_and_errors():
 
 
 def test_slot_types_of_every_kind():
-    declared = slots("""
+    declared = slots(
+        """
         a : ARRAY [1..2, 0..3] OF INT;
         e : TColor;
         s : TPoint;
@@ -54,8 +55,10 @@ def test_slot_types_of_every_kind():
         f : TON;
         c : CTU_DINT;
         w : STRING[12];
-    """, """TYPE TColor : (red, green := 5, blue); TPercent : INT (0..100);
-    TPoint : STRUCT x : REAL := 1.5; p : TPercent := 7; END_STRUCT; END_TYPE""")
+    """,
+        """TYPE TColor : (red, green := 5, blue); TPercent : INT (0..100);
+    TPoint : STRUCT x : REAL := 1.5; p : TPercent := 7; END_STRUCT; END_TYPE""",
+    )
     assert declared["A"].type == Array(INT, ((1, 2), (0, 3)))
     assert declared["E"].type == Enum("TCOLOR", (("RED", 0), ("GREEN", 5), ("BLUE", 6)))
     percent = Subrange(INT, 0, 100)
@@ -87,26 +90,29 @@ def test_defaults_of_enum_subrange_array_struct_fb():
 # ---------------------------------------------------------------- declared initial values
 
 
-@pytest.mark.parametrize("declaration, expected", [
-    ("INT := -32768", -32768),
-    ("SINT := -5", -5),
-    ("BYTE := 16#FF", 255),
-    ("WORD := 2#1010", 10),
-    ("DINT := INT#-9", -9),
-    ("BOOL := 1", True),
-    ("BOOL := BOOL#0", False),
-    ("REAL := 0.1", f32(0.1)),
-    ("REAL := 3", 3.0),
-    ("LREAL := -1.5E3", -1500.0),
-    ("TIME := T#1h30m", ms(h=1, m=30)),
-    ("TIME := T#-250ms", -250),
-    ("TIME := T#1.5ms", 2),  # milliseconds are whole: rounded, ties to even
-    ("TOD := TOD#12:30:15.5", ms(h=12, m=30, s=15.5)),
-    ("DATE := D#2003-06-21", date_ms("2003-06-21")),
-    ("DT := DT#2003-06-21-11:38:52.35", date_ms("2003-06-21 11:38:52.350")),
-    ("STRING[3] := 'abcdef'", "abc"),
-    ("STRING := 'it$'s $N'", "it's \n"),
-])
+@pytest.mark.parametrize(
+    "declaration, expected",
+    [
+        ("INT := -32768", -32768),
+        ("SINT := -5", -5),
+        ("BYTE := 16#FF", 255),
+        ("WORD := 2#1010", 10),
+        ("DINT := INT#-9", -9),
+        ("BOOL := 1", True),
+        ("BOOL := BOOL#0", False),
+        ("REAL := 0.1", f32(0.1)),
+        ("REAL := 3", 3.0),
+        ("LREAL := -1.5E3", -1500.0),
+        ("TIME := T#1h30m", ms(h=1, m=30)),
+        ("TIME := T#-250ms", -250),
+        ("TIME := T#1.5ms", 2),  # milliseconds are whole: rounded, ties to even
+        ("TOD := TOD#12:30:15.5", ms(h=12, m=30, s=15.5)),
+        ("DATE := D#2003-06-21", date_ms("2003-06-21")),
+        ("DT := DT#2003-06-21-11:38:52.35", date_ms("2003-06-21 11:38:52.350")),
+        ("STRING[3] := 'abcdef'", "abc"),
+        ("STRING := 'it$'s $N'", "it's \n"),
+    ],
+)
 def test_elementary_initial_values_are_engine_values(declaration, expected):
     value = initial(declaration)
     assert value == expected and type(value) is type(expected)
@@ -144,14 +150,18 @@ def test_enum_initial_values_by_name_and_typed_literal():
 
 def test_fb_instance_initial_values_are_pin_overrides():
     assert initial("TON := (PT := T#2s)") == (("PT", 2000),)
-    program = lower_ok("FUNCTION_BLOCK Fb\nVAR_INPUT period : TIME := T#1s; n : INT; END_VAR\n;\nEND_FUNCTION_BLOCK\n"
-                       "PROGRAM P\nVAR x : Fb := (n := 4, Period := T#5s); END_VAR\nEND_PROGRAM\n")
+    program = lower_ok(
+        "FUNCTION_BLOCK Fb\nVAR_INPUT period : TIME := T#1s; n : INT; END_VAR\n;\nEND_FUNCTION_BLOCK\n"
+        "PROGRAM P\nVAR x : Fb := (n := 4, Period := T#5s); END_VAR\nEND_PROGRAM\n"
+    )
     assert program.pous["P"].slots[0].initial == (("N", 4), ("PERIOD", 5000))
 
 
 def test_constants_in_initial_values():
-    declared = slots("n : INT := LIMIT_VALUE * 2; m : INT := -LIMIT_VALUE; a : ARRAY [1..2] OF INT := [2(LIMIT_VALUE)];",
-                     "VAR_GLOBAL CONSTANT LIMIT_VALUE : INT := 21; END_VAR")
+    declared = slots(
+        "n : INT := LIMIT_VALUE * 2; m : INT := -LIMIT_VALUE; a : ARRAY [1..2] OF INT := [2(LIMIT_VALUE)];",
+        "VAR_GLOBAL CONSTANT LIMIT_VALUE : INT := 21; END_VAR",
+    )
     assert (declared["N"].initial, declared["M"].initial, declared["A"].initial) == (42, -21, (21, 21))
 
 
@@ -169,22 +179,31 @@ VAR led AT %QX0.1 : BOOL; END_VAR
 END_FUNCTION_BLOCK
 VAR_GLOBAL g : INT; END_VAR""")
     found = [(s.name, s.var_class, s.initial, s.retain, s.constant, s.address) for s in program.pous["FB"].slots]
-    assert found == [("I", "VAR_INPUT", 0, False, False, None), ("O", "VAR_OUTPUT", False, False, False, None),
-                     ("IO", "VAR_IN_OUT", None, False, False, None), ("R", "VAR", 3, True, False, None),
-                     ("C", "VAR", 4, False, True, None), ("TMP", "VAR_TEMP", 0, False, False, None),
-                     ("LED", "VAR", False, False, False, "%QX0.1")]
+    assert found == [
+        ("I", "VAR_INPUT", 0, False, False, None),
+        ("O", "VAR_OUTPUT", False, False, False, None),
+        ("IO", "VAR_IN_OUT", None, False, False, None),
+        ("R", "VAR", 3, True, False, None),
+        ("C", "VAR", 4, False, True, None),
+        ("TMP", "VAR_TEMP", 0, False, False, None),
+        ("LED", "VAR", False, False, False, "%QX0.1"),
+    ]
 
 
 def test_non_constant_initial_value_is_a_located_error():
     text = "PROGRAM P\nVAR\n  a : INT;\n  b : INT := a;\nEND_VAR\nEND_PROGRAM\n"
-    assert errors(text) == ["P/declarations:4:14, POU P: error IR-INIT: an initial value must be a constant "
-                            "(a literal, a CONSTANT or an enumeration value)"]
+    assert errors(text) == [
+        "P/declarations:4:14, POU P: error IR-INIT: an initial value must be a constant "
+        "(a literal, a CONSTANT or an enumeration value)"
+    ]
 
 
 def test_pointer_declaration_is_a_located_unsupported_error():
     text = "PROGRAM P\nVAR\n  p : POINTER TO INT;\nEND_VAR\nEND_PROGRAM\n"
-    assert errors(text) == ["P/declarations:3:3, POU P: error IR-UNSUPPORTED: pointers (POINTER TO, REF_TO, ADR, REF, "
-                            "^) are not supported by the engine yet"]
+    assert errors(text) == [
+        "P/declarations:3:3, POU P: error IR-UNSUPPORTED: pointers (POINTER TO, REF_TO, ADR, REF, "
+        "^) are not supported by the engine yet"
+    ]
 
 
 @given(st.integers(-32768, 32767), st.integers(1, 5), st.integers(0, 3))

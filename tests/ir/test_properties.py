@@ -22,8 +22,10 @@ END_VAR"""
 
 @given(st.lists(_statements(2), min_size=1, max_size=4))
 def test_lowering_random_bodies_never_raises(body):
-    project = Project(name="p", pous=[Pou(name="Main", kind="program", language="st", declarations=DECLARATIONS,
-                                         body=print_statements(body))])
+    project = Project(
+        name="p",
+        pous=[Pou(name="Main", kind="program", language="st", declarations=DECLARATIONS, body=print_statements(body))],
+    )
     result = lower_project(project)
     assert [d.format() for d in result.diagnostics if d.code == "IR-INTERNAL"] == []
     if result.program is not None:

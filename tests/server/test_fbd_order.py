@@ -21,11 +21,19 @@ def network(order: list[str] | None = None) -> dict:
             {"type": "input", "id": "a", "expr": "var1", "pos": {"x": 0, "y": 0}},
             {"type": "input", "id": "b", "expr": "var2", "pos": {"x": 0, "y": 40}},
             {"type": "input", "id": "c", "expr": "var3", "pos": {"x": 0, "y": 80}},
-            block("sub", "SUB", 0), block("add", "ADD", 100), block("mv", "MOVE", 50),
+            block("sub", "SUB", 0),
+            block("add", "ADD", 100),
+            block("mv", "MOVE", 50),
             {"type": "output", "id": "r", "var": "result", "pos": {"x": 400, "y": 0}},
         ],
-        "wires": [wire("a", "add", "IN1"), wire("b", "add", "IN2"), wire("add", "sub", "IN1"), wire("c", "sub", "IN2"),
-                  wire("sub", "r", "IN"), wire("c", "mv", "IN")],
+        "wires": [
+            wire("a", "add", "IN1"),
+            wire("b", "add", "IN2"),
+            wire("add", "sub", "IN1"),
+            wire("c", "sub", "IN2"),
+            wire("sub", "r", "IN"),
+            wire("c", "mv", "IN"),
+        ],
         "order": order,
     }
 

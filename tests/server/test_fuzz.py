@@ -24,11 +24,19 @@ json_values = st.recursive(
     max_leaves=20,
 )
 # Objects shaped like the models, so fuzzing reaches past the first "expected an object".
-model_like = st.fixed_dictionaries({}, optional={
-    "name": json_values | st.just("fuzz"), "kind": json_values | st.sampled_from(["program", "function"]),
-    "language": json_values | st.sampled_from(["st", "ld", "fbd"]), "pous": json_values, "body": json_values,
-    "tasks": json_values, "declarations": json_values, "format": json_values,
-})
+model_like = st.fixed_dictionaries(
+    {},
+    optional={
+        "name": json_values | st.just("fuzz"),
+        "kind": json_values | st.sampled_from(["program", "function"]),
+        "language": json_values | st.sampled_from(["st", "ld", "fbd"]),
+        "pous": json_values,
+        "body": json_values,
+        "tasks": json_values,
+        "declarations": json_values,
+        "format": json_values,
+    },
+)
 names = st.text(max_size=70) | st.sampled_from(["..", ".", "motor", "a/b", "../x", "CON", "fuzz", " lead"])
 
 
@@ -55,9 +63,13 @@ def test_random_project_names_never_fail_the_server(client: TestClient, name: st
         assert project_name_problem(name) is None
         assert client.get(url).json()["name"] == name
         assert client.delete(url).status_code == 204
-    for response in (client.get(url), client.post(f"{url}/check"), client.get(f"{url}/pous/Main/symbols"),
-                     client.get("/api/library", params={"project": name}),
-                     client.post("/api/projects/fuzz/rename", json={"new_name": name}, headers={"If-Match": "0"})):
+    for response in (
+        client.get(url),
+        client.post(f"{url}/check"),
+        client.get(f"{url}/pous/Main/symbols"),
+        client.get("/api/library", params={"project": name}),
+        client.post("/api/projects/fuzz/rename", json={"new_name": name}, headers={"If-Match": "0"}),
+    ):
         assert_answered(response)
     assert client.get("/api/projects/fuzz").status_code == 200
 
@@ -89,8 +101,11 @@ def test_any_valid_project_saves_reads_back_and_checks(client: TestClient, proje
         assert {d["code"] for d in saved.json()["detail"]["diagnostics"]} <= {"BAD-NAME", "DUPLICATE-POU"}
         return
     assert client.get("/api/projects/fuzz").json()["project"] == project.model_dump(mode="json")
-    pou_saved = client.put(f"/api/projects/fuzz/pous/{extra.name}", json=extra.model_dump(mode="json"),
-                           headers={"If-Match": saved.json()["revision"]})
+    pou_saved = client.put(
+        f"/api/projects/fuzz/pous/{extra.name}",
+        json=extra.model_dump(mode="json"),
+        headers={"If-Match": saved.json()["revision"]},
+    )
     assert_answered(pou_saved)
     assert client.post("/api/projects/fuzz/check").status_code == 200
     assert client.get("/api/library", params={"project": "fuzz"}).status_code == 200

@@ -24,9 +24,14 @@ def test_standard_library_has_ton_with_its_pins(client: TestClient) -> None:
     """SFB-16..18: TON(IN : BOOL, PT : TIME) => Q : BOOL, ET : TIME."""
     library = entries_by_name(client, "/api/library")
     assert library["TON"] == {
-        "name": "TON", "kind": "function_block", "source": "standard",
-        "inputs": pins(("IN", "BOOL"), ("PT", "TIME")), "outputs": pins(("Q", "BOOL"), ("ET", "TIME")),
-        "in_outs": [], "extensible": False, "return_type": None,
+        "name": "TON",
+        "kind": "function_block",
+        "source": "standard",
+        "inputs": pins(("IN", "BOOL"), ("PT", "TIME")),
+        "outputs": pins(("Q", "BOOL"), ("ET", "TIME")),
+        "in_outs": [],
+        "extensible": False,
+        "return_type": None,
         "comment": "on-delay timer: Q TRUE once IN has been TRUE for PT",
     }
 
@@ -41,36 +46,62 @@ def test_generic_functions_show_their_family_as_result(client: TestClient) -> No
     """FUN-02/FUN-03: ADD is extensible over ANY_NUM and returns that type; GT returns BOOL."""
     library = entries_by_name(client, "/api/library")
     assert library["ADD"] == {
-        "name": "ADD", "kind": "function", "source": "standard",
-        "inputs": pins(("IN1", "ANY_NUM"), ("IN2", "ANY_NUM")), "outputs": [], "in_outs": [],
-        "extensible": True, "return_type": "ANY_NUM", "comment": "sum IN1 + IN2 + ... (operator +)",
+        "name": "ADD",
+        "kind": "function",
+        "source": "standard",
+        "inputs": pins(("IN1", "ANY_NUM"), ("IN2", "ANY_NUM")),
+        "outputs": [],
+        "in_outs": [],
+        "extensible": True,
+        "return_type": "ANY_NUM",
+        "comment": "sum IN1 + IN2 + ... (operator +)",
     }
-    assert (library["GT"]["return_type"], library["SEL"]["return_type"], library["INT_TO_REAL"]["return_type"]) == \
-        ("BOOL", "ANY", "REAL")
+    assert (library["GT"]["return_type"], library["SEL"]["return_type"], library["INT_TO_REAL"]["return_type"]) == (
+        "BOOL",
+        "ANY",
+        "REAL",
+    )
     assert library["SEL"]["inputs"] == pins(("G", "BOOL"), ("IN0", "ANY"), ("IN1", "ANY"))
 
 
 def test_library_with_project_adds_the_user_fb(client: TestClient, motor: str) -> None:
     rows = client.get("/api/library", params={"project": "motor"}).json()
     assert rows[-1] == {
-        "name": "Blinker", "kind": "function_block", "source": "user",
-        "inputs": pins(("Enable", "BOOL"), ("Period", "TIME")), "outputs": pins(("Out", "BOOL")),
-        "in_outs": [], "extensible": False, "return_type": None, "comment": None,
+        "name": "Blinker",
+        "kind": "function_block",
+        "source": "user",
+        "inputs": pins(("Enable", "BOOL"), ("Period", "TIME")),
+        "outputs": pins(("Out", "BOOL")),
+        "in_outs": [],
+        "extensible": False,
+        "return_type": None,
+        "comment": None,
     }
     assert [r["name"] for r in rows if r["source"] == "user"] == ["Blinker"]  # programs are not boxes
 
 
 def test_user_function_with_in_out_and_return_type(client: TestClient, motor: str) -> None:
-    function = {"name": "Scale", "kind": "function", "language": "st", "return_type": "REAL",
-                "declarations": "VAR_INPUT\n    raw : INT;\n    span : ARRAY[0..1] OF REAL;\nEND_VAR\n"
-                                "VAR_IN_OUT\n    count : DINT;\nEND_VAR",
-                "body": "Scale := INT_TO_REAL(raw);"}
+    function = {
+        "name": "Scale",
+        "kind": "function",
+        "language": "st",
+        "return_type": "REAL",
+        "declarations": "VAR_INPUT\n    raw : INT;\n    span : ARRAY[0..1] OF REAL;\nEND_VAR\n"
+        "VAR_IN_OUT\n    count : DINT;\nEND_VAR",
+        "body": "Scale := INT_TO_REAL(raw);",
+    }
     assert client.put("/api/projects/motor/pous/Scale", json=function, headers={"If-Match": motor}).status_code == 200
     library = entries_by_name(client, "/api/library?project=motor")
     assert library["Scale"] == {
-        "name": "Scale", "kind": "function", "source": "user",
-        "inputs": pins(("raw", "INT"), ("span", "ARRAY [0..1] OF REAL")), "outputs": [],
-        "in_outs": pins(("count", "DINT")), "extensible": False, "return_type": "REAL", "comment": None,
+        "name": "Scale",
+        "kind": "function",
+        "source": "user",
+        "inputs": pins(("raw", "INT"), ("span", "ARRAY [0..1] OF REAL")),
+        "outputs": [],
+        "in_outs": pins(("count", "DINT")),
+        "extensible": False,
+        "return_type": "REAL",
+        "comment": None,
     }
 
 

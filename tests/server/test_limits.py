@@ -19,8 +19,9 @@ def test_oversized_body_is_413(client: TestClient, workspace: Workspace, motor: 
     """The default limit is 5 MB; the body is refused from its Content-Length, before it is read."""
     before = folder_bytes(workspace.root / "motor")
     payload = b'{"name": "motor", "globals": "' + b"x" * (5 * 1024 * 1024) + b'"}'
-    response = client.put("/api/projects/motor", content=payload,
-                          headers={"If-Match": motor, "Content-Type": "application/json"})
+    response = client.put(
+        "/api/projects/motor", content=payload, headers={"If-Match": motor, "Content-Type": "application/json"}
+    )
     assert response.status_code == 413
     assert detail(response)["message"] == "the request body is larger than the limit of 5.0 MB"
     assert folder_bytes(workspace.root / "motor") == before
@@ -47,12 +48,20 @@ def test_body_at_the_limit_is_accepted(workspace: Workspace) -> None:
     assert client.post("/api/projects", content=body, headers={"Content-Type": "application/json"}).status_code == 201
 
 
-@pytest.mark.parametrize("path", [
-    "/api/projects/..", "/api/projects/%2E%2E", "/api/projects/.locks", "/api/projects/%2e%2e%2fetc",
-    "/api/projects/..%2F..%2Fetc", "/api/projects/a%00b",
-])
-def test_traversal_names_never_reach_outside_the_workspace(client: TestClient, workspace: Workspace,
-                                                           tmp_path: Path, path: str) -> None:
+@pytest.mark.parametrize(
+    "path",
+    [
+        "/api/projects/..",
+        "/api/projects/%2E%2E",
+        "/api/projects/.locks",
+        "/api/projects/%2e%2e%2fetc",
+        "/api/projects/..%2F..%2Fetc",
+        "/api/projects/a%00b",
+    ],
+)
+def test_traversal_names_never_reach_outside_the_workspace(
+    client: TestClient, workspace: Workspace, tmp_path: Path, path: str
+) -> None:
     (tmp_path / "secret").mkdir()
     (tmp_path / "secret" / "project.json").write_text('{"name": "secret", "format": "ladderlab/1"}')
     for method in ("GET", "DELETE"):
@@ -69,8 +78,7 @@ def test_traversal_pou_names_are_refused(client: TestClient, workspace: Workspac
     pou = {"name": "../../evil", "kind": "program", "language": "st"}
     response = client.put("/api/projects/motor/pous/..%2F..%2Fevil", json=pou, headers={"If-Match": motor})
     assert response.status_code in (404, 405, 422)  # 405: normalised to /evil, the browser app's mount
-    response = client.put("/api/projects/motor", headers={"If-Match": motor},
-                          json={"name": "motor", "pous": [pou]})
+    response = client.put("/api/projects/motor", headers={"If-Match": motor}, json={"name": "motor", "pous": [pou]})
     assert response.status_code == 422
     assert [d["code"] for d in detail(response)["diagnostics"]] == ["BAD-NAME"]
     assert not any(p.name == "evil.st" for p in workspace.root.parent.rglob("*"))
@@ -85,8 +93,14 @@ def test_unknown_routes_and_methods_answer_json(client: TestClient) -> None:
 
 def test_openapi_documents_the_routes(client: TestClient) -> None:
     paths = client.get("/openapi.json").json()["paths"]
-    assert {"/api/projects", "/api/projects/{name}", "/api/projects/{name}/pous/{pou}",
-            "/api/projects/{name}/rename", "/api/projects/{name}/check",
-            "/api/projects/{name}/pous/{pou}/symbols", "/api/library"} <= set(paths)
+    assert {
+        "/api/projects",
+        "/api/projects/{name}",
+        "/api/projects/{name}/pous/{pou}",
+        "/api/projects/{name}/rename",
+        "/api/projects/{name}/check",
+        "/api/projects/{name}/pous/{pou}/symbols",
+        "/api/library",
+    } <= set(paths)
     assert set(paths["/api/projects/{name}"]["put"]["responses"]) == {"200", "404", "409", "413", "422", "428"}
     assert client.get("/docs").status_code == 200

@@ -30,11 +30,25 @@ def test_a_typo_in_an_unsaved_body_is_located_and_nothing_is_stored(client: Test
     body = "IF Enable THEN\n    Count := Cuont + 1;\nEND_IF;"
     response = client.post("/api/check", json=project(counter_fb(body)))
     assert response.status_code == 200
-    assert response.json() == {"diagnostics": [{
-        "severity": "error", "code": "ST-UNKNOWN-VAR", "message": "unknown variable 'Cuont' - did you mean 'Count'?",
-        "file": "Counter/body", "json_path": None, "pou": "Counter", "network": None, "element": None, "pin": None,
-        "line": 2, "column": 14, "end_line": 2, "end_column": 19,
-    }]}
+    assert response.json() == {
+        "diagnostics": [
+            {
+                "severity": "error",
+                "code": "ST-UNKNOWN-VAR",
+                "message": "unknown variable 'Cuont' - did you mean 'Count'?",
+                "file": "Counter/body",
+                "json_path": None,
+                "pou": "Counter",
+                "network": None,
+                "element": None,
+                "pin": None,
+                "line": 2,
+                "column": 14,
+                "end_line": 2,
+                "end_column": 19,
+            }
+        ]
+    }
     assert (folder_bytes(workspace.root) if workspace.root.exists() else {}) == before
 
 
@@ -45,8 +59,10 @@ def test_the_fixed_body_is_clean(client: TestClient) -> None:
 
 def test_declaration_and_syntax_errors_are_located_in_their_text(client: TestClient) -> None:
     pou = st_program("Main", "VAR\n    x : INTT;\nEND_VAR", "x := (1 + ;")
-    found = [(d["code"], d["message"], d["file"], d["line"], d["column"], d["end_column"])
-             for d in client.post("/api/check", json=project(pou)).json()["diagnostics"]]
+    found = [
+        (d["code"], d["message"], d["file"], d["line"], d["column"], d["end_column"])
+        for d in client.post("/api/check", json=project(pou)).json()["diagnostics"]
+    ]
     assert found == [
         ("ST-PARSE", "expected an expression, found ';'", "Main/body", 1, 11, 12),
         ("ST-UNKNOWN-TYPE", "unknown type 'INTT' - did you mean 'INT'?", "Main/declarations", 2, 9, 13),
@@ -61,7 +77,9 @@ def test_model_problems_are_reported_with_their_json_path(client: TestClient) ->
 
 
 def test_bad_bodies_get_a_located_422(client: TestClient) -> None:
-    response = client.post("/api/check", content=b'{"name": "draft", "pous": [}', headers={"Content-Type": "application/json"})
+    response = client.post(
+        "/api/check", content=b'{"name": "draft", "pous": [}', headers={"Content-Type": "application/json"}
+    )
     assert response.status_code == 422
     [problem] = detail(response)["diagnostics"]
     assert (problem["code"], problem["line"], problem["column"]) == ("BAD-JSON", 1, 28)
@@ -73,7 +91,9 @@ def test_bad_bodies_get_a_located_422(client: TestClient) -> None:
 
     response = client.post("/api/check", json={"pous": []})
     assert response.status_code == 422
-    assert [(d["json_path"], d["message"]) for d in detail(response)["diagnostics"]] == [("$.name", "missing required field 'name'")]
+    assert [(d["json_path"], d["message"]) for d in detail(response)["diagnostics"]] == [
+        ("$.name", "missing required field 'name'")
+    ]
 
 
 def test_a_project_over_the_size_limit_is_refused(tmp_path: Path) -> None:
@@ -83,8 +103,18 @@ def test_a_project_over_the_size_limit_is_refused(tmp_path: Path) -> None:
     assert "more than the limit" in detail(response)["message"]
 
 
-_STATEMENTS = st.sampled_from(["Count := Count + 1;", "Count := Cuont;", "IF Enable THEN", "END_IF;", "Count := ;",
-                               "Enable := NOT Enable;", "x := 1;", "(* note *)"])
+_STATEMENTS = st.sampled_from(
+    [
+        "Count := Count + 1;",
+        "Count := Cuont;",
+        "IF Enable THEN",
+        "END_IF;",
+        "Count := ;",
+        "Enable := NOT Enable;",
+        "x := 1;",
+        "(* note *)",
+    ]
+)
 
 
 @settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])

@@ -37,15 +37,22 @@ def ws_url(sim_id: str) -> str:
     return f"/api/simulations/{sim_id}/ws"
 
 
-def test_connecting_reports_the_state_then_a_full_snapshot_of_the_subscription(client: TestClient,
-                                                                             counter: str) -> None:
+def test_connecting_reports_the_state_then_a_full_snapshot_of_the_subscription(
+    client: TestClient, counter: str
+) -> None:
     client.post(f"/api/simulations/{counter}/cycle")
     with client.websocket_connect(ws_url(counter)) as ws:
         assert recv(ws) == {"type": "status", "state": "stopped", "at": None}
         first = subscribe(ws, ["Main.Count", "main.flag", "MAIN.Idle"])
-        assert first == {"type": "values", "scan": 1, "time_ms": 10.0, "forced": [], "power": {},
-                         "changed": {"MAIN.COUNT": 1, "MAIN.FLAG": True, "MAIN.IDLE": 7},
-                         "types": {"MAIN.COUNT": INT, "MAIN.FLAG": {"name": "BOOL", "names": None}, "MAIN.IDLE": INT}}
+        assert first == {
+            "type": "values",
+            "scan": 1,
+            "time_ms": 10.0,
+            "forced": [],
+            "power": {},
+            "changed": {"MAIN.COUNT": 1, "MAIN.FLAG": True, "MAIN.IDLE": 7},
+            "types": {"MAIN.COUNT": INT, "MAIN.FLAG": {"name": "BOOL", "names": None}, "MAIN.IDLE": INT},
+        }
         assert entry(counter_registry(client), counter).clients == 1
 
 
@@ -53,22 +60,37 @@ INT = {"name": "INT", "names": None}
 
 
 def test_the_snapshot_names_each_type_so_times_dates_and_enumerations_show_as_iec_text(
-        client: TestClient, workspace: Workspace, registry: SimulationRegistry) -> None:
+    client: TestClient, workspace: Workspace, registry: SimulationRegistry
+) -> None:
     """TIME/DATE values travel as ms and enumerations as ints; the first message says how to show them."""
     types = "TYPE\n    Mode : (IDLE, RUN := 5, FAULT);\n    Pct : INT (0..100);\nEND_TYPE"
-    program = st_program("Main", "VAR\n    t : TIME := T#1m2s;\n    d : DATE := D#2024-05-01;\n    m : Mode := RUN;\n"
-                                 "    p : Pct := 50;\n    a : ARRAY[1..2] OF INT;\n    tm : TON;\nEND_VAR", "")
+    program = st_program(
+        "Main",
+        "VAR\n    t : TIME := T#1m2s;\n    d : DATE := D#2024-05-01;\n    m : Mode := RUN;\n"
+        "    p : Pct := 50;\n    a : ARRAY[1..2] OF INT;\n    tm : TON;\nEND_VAR",
+        "",
+    )
     workspace.create(Project(name="typed", types=types, pous=[program]))
     sim_id = client.post("/api/projects/typed/simulations").json()["id"]
     with client.websocket_connect(ws_url(sim_id)) as ws:
         recv(ws)
         first = subscribe(ws, ["Main.t", "Main.d", "Main.m", "Main.p", "Main.a", "Main.tm"])
-        assert first["changed"] == {"MAIN.T": 62000, "MAIN.D": 1714521600000, "MAIN.M": 5, "MAIN.P": 50,
-                                    "MAIN.A": [0, 0], "MAIN.TM": {"IN": False, "PT": 0, "Q": False, "ET": 0}}
+        assert first["changed"] == {
+            "MAIN.T": 62000,
+            "MAIN.D": 1714521600000,
+            "MAIN.M": 5,
+            "MAIN.P": 50,
+            "MAIN.A": [0, 0],
+            "MAIN.TM": {"IN": False, "PT": 0, "Q": False, "ET": 0},
+        }
         assert first["types"] == {
-            "MAIN.T": {"name": "TIME", "names": None}, "MAIN.D": {"name": "DATE", "names": None},
-            "MAIN.M": {"name": "MODE", "names": {"0": "IDLE", "5": "RUN", "6": "FAULT"}}, "MAIN.P": INT,
-            "MAIN.A": {"name": "ARRAY", "names": None}, "MAIN.TM": {"name": "TON", "names": None}}
+            "MAIN.T": {"name": "TIME", "names": None},
+            "MAIN.D": {"name": "DATE", "names": None},
+            "MAIN.M": {"name": "MODE", "names": {"0": "IDLE", "5": "RUN", "6": "FAULT"}},
+            "MAIN.P": INT,
+            "MAIN.A": {"name": "ARRAY", "names": None},
+            "MAIN.TM": {"name": "TON", "names": None},
+        }
         ws.send_json({"type": "single_cycle"})
         later, _ = recv_until(ws, of_type("values", scan=1))
         assert later["types"] == {}  # only the snapshot after a subscribe carries them
@@ -78,8 +100,7 @@ def counter_registry(client: TestClient) -> SimulationRegistry:
     return client.app.state.simulations  # type: ignore[attr-defined]
 
 
-def test_values_carry_only_what_changed_since_the_last_message_to_this_client(client: TestClient,
-                                                                              counter: str) -> None:
+def test_values_carry_only_what_changed_since_the_last_message_to_this_client(client: TestClient, counter: str) -> None:
     with client.websocket_connect(ws_url(counter)) as ws:
         subscribe(ws, ["Main.Count", "Main.Flag", "Main.Idle"])
         ws.send_json({"type": "single_cycle"})
@@ -122,23 +143,44 @@ def test_write_is_applied_once_before_the_next_scan(client: TestClient, counter:
         assert message["changed"] == {"MAIN.COUNT": 101, "MAIN.IDLE": 255}
 
 
-@pytest.mark.parametrize(("message", "code", "text"), [
-    ({"type": "write", "path": "Main.Count", "value": "abc"}, "bad_value", "MAIN.COUNT: 'abc' is not an INT"),
-    ({"type": "write", "path": "Main.Count", "value": 40000}, "bad_value",
-     "MAIN.COUNT: 40000 is out of range for INT (-32768..32767)"),
-    ({"type": "force", "path": "Main.Flag", "value": 2}, "bad_value", "MAIN.FLAG: 2 is not a BOOL (TRUE, FALSE, 1 or 0)"),
-    ({"type": "write", "path": "Main.Cuont", "value": 1}, "bad_path", "MAIN has no variable 'Cuont' - did you mean 'COUNT'?"),
-    ({"type": "unforce", "path": "Main.Count"}, "bad_path", "MAIN.COUNT is not forced"),
-    ({"type": "subscribe", "paths": ["Nope"]}, "bad_path", "unknown variable or program 'Nope'"),
-    ({"type": "continue"}, "bad_state", "the simulation is not halted"),
-    ({"type": "breakpoint_set", "pou": "Main", "line": 9}, "bad_path", "Main has no statement at line 9 (possible: 1, 2, 3)"),
-    ({"type": "trace_start", "paths": ["Main.Count"], "samples": 3, "trigger": {"path": "Main.Count"}}, "bad_path",
-     "the trigger MAIN.COUNT is not a BOOL: a rising edge needs a BOOL (use cross_up or cross_down with a level "
-     "for numbers)"),
-])
-def test_bad_requests_get_an_error_naming_the_problem_and_change_nothing(client: TestClient, counter: str,
-                                                                        registry: SimulationRegistry,
-                                                                        message: dict, code: str, text: str) -> None:
+@pytest.mark.parametrize(
+    ("message", "code", "text"),
+    [
+        ({"type": "write", "path": "Main.Count", "value": "abc"}, "bad_value", "MAIN.COUNT: 'abc' is not an INT"),
+        (
+            {"type": "write", "path": "Main.Count", "value": 40000},
+            "bad_value",
+            "MAIN.COUNT: 40000 is out of range for INT (-32768..32767)",
+        ),
+        (
+            {"type": "force", "path": "Main.Flag", "value": 2},
+            "bad_value",
+            "MAIN.FLAG: 2 is not a BOOL (TRUE, FALSE, 1 or 0)",
+        ),
+        (
+            {"type": "write", "path": "Main.Cuont", "value": 1},
+            "bad_path",
+            "MAIN has no variable 'Cuont' - did you mean 'COUNT'?",
+        ),
+        ({"type": "unforce", "path": "Main.Count"}, "bad_path", "MAIN.COUNT is not forced"),
+        ({"type": "subscribe", "paths": ["Nope"]}, "bad_path", "unknown variable or program 'Nope'"),
+        ({"type": "continue"}, "bad_state", "the simulation is not halted"),
+        (
+            {"type": "breakpoint_set", "pou": "Main", "line": 9},
+            "bad_path",
+            "Main has no statement at line 9 (possible: 1, 2, 3)",
+        ),
+        (
+            {"type": "trace_start", "paths": ["Main.Count"], "samples": 3, "trigger": {"path": "Main.Count"}},
+            "bad_path",
+            "the trigger MAIN.COUNT is not a BOOL: a rising edge needs a BOOL (use cross_up or cross_down with a level "
+            "for numbers)",
+        ),
+    ],
+)
+def test_bad_requests_get_an_error_naming_the_problem_and_change_nothing(
+    client: TestClient, counter: str, registry: SimulationRegistry, message: dict, code: str, text: str
+) -> None:
     sim = entry(registry, counter).runner.sim
     before = sim.snapshot()
     with client.websocket_connect(ws_url(counter)) as ws:
@@ -174,15 +216,22 @@ def test_force_holds_a_value_the_program_writes_until_released(client: TestClien
         log, _ = recv_until(ws, of_type("log", message="released all forces (2)"))
 
 
-def test_a_line_breakpoint_halts_the_running_scan_there(client: TestClient, counter: str,
-                                                       registry: SimulationRegistry) -> None:
+def test_a_line_breakpoint_halts_the_running_scan_there(
+    client: TestClient, counter: str, registry: SimulationRegistry
+) -> None:
     with client.websocket_connect(ws_url(counter)) as ws:
         subscribe(ws, ["Main.Count", "Main.Flag"])
         ws.send_json({"type": "breakpoint_set", "pou": "Main", "line": 2})
         ws.send_json({"type": "run"})
         status, _ = recv_until(ws, of_type("status", state="halted"))
-        assert status["at"] == {"pou": "MAIN", "instance": "MAIN", "network": None, "element": None,
-                                "line": 2, "column": 1}
+        assert status["at"] == {
+            "pou": "MAIN",
+            "instance": "MAIN",
+            "network": None,
+            "element": None,
+            "line": 2,
+            "column": 1,
+        }
         sim = entry(registry, counter).runner.sim
         scan = sim.scan_count
         count = sim.read("Main.Count")
@@ -203,8 +252,9 @@ def test_a_line_breakpoint_halts_the_running_scan_there(client: TestClient, coun
         recv_until(ws, lambda m: m["type"] == "values" and m["changed"].get("MAIN.COUNT", 0) > 1001)
 
 
-def test_step_from_a_stopped_simulation_and_single_cycle_finish_the_scan(client: TestClient, counter: str,
-                                                                         registry: SimulationRegistry) -> None:
+def test_step_from_a_stopped_simulation_and_single_cycle_finish_the_scan(
+    client: TestClient, counter: str, registry: SimulationRegistry
+) -> None:
     with client.websocket_connect(ws_url(counter)) as ws:
         recv(ws)
         ws.send_json({"type": "step", "granularity": "statement"})
@@ -222,17 +272,30 @@ def test_step_from_a_stopped_simulation_and_single_cycle_finish_the_scan(client:
 def test_element_breakpoints_and_power_flow_in_ladder(client: TestClient, motor_sim: str) -> None:
     with client.websocket_connect(ws_url(motor_sim)) as ws:
         recv(ws)
-        first = subscribe(ws, ["Start", "Motor"],
-                          elements=[{"pou_instance": "Main", "ids": ["start", "seal", "stop", "motor", "ton"]}])
+        first = subscribe(
+            ws,
+            ["Start", "Motor"],
+            elements=[{"pou_instance": "Main", "ids": ["start", "seal", "stop", "motor", "ton"]}],
+        )
         # nothing ran yet: every element reports "not executed"
-        assert first["power"] == {"Main/start": None, "Main/seal": None, "Main/stop": None, "Main/motor": None,
-                                  "Main/ton": None}
+        assert first["power"] == {
+            "Main/start": None,
+            "Main/seal": None,
+            "Main/stop": None,
+            "Main/motor": None,
+            "Main/ton": None,
+        }
         ws.send_json({"type": "write", "path": "Start", "value": True})
         ws.send_json({"type": "single_cycle"})
         values, _ = recv_until(ws, of_type("values", scan=1))
         assert values["changed"] == {"START": True, "MOTOR": True}
-        assert values["power"] == {"Main/start": True, "Main/seal": False, "Main/stop": True, "Main/motor": True,
-                                   "Main/ton": False}
+        assert values["power"] == {
+            "Main/start": True,
+            "Main/seal": False,
+            "Main/stop": True,
+            "Main/motor": True,
+            "Main/ton": False,
+        }
         ws.send_json({"type": "breakpoint_set", "pou": "Main", "element": "motor"})
         ws.send_json({"type": "single_cycle"})
         status, _ = recv_until(ws, of_type("status", state="halted"))
@@ -260,8 +323,10 @@ def test_every_element_of_an_instance_when_no_ids_are_given(client: TestClient, 
 def test_two_clients_have_their_own_subscriptions(client: TestClient, counter: str) -> None:
     with client.websocket_connect(ws_url(counter)) as a, client.websocket_connect(ws_url(counter)) as b:
         assert subscribe(a, ["Main.Count"])["changed"] == {"MAIN.COUNT": 0}
-        assert subscribe(b, ["Main.Flag", "Main.Idle"], interval_ms=40)["changed"] == {"MAIN.FLAG": False,
-                                                                                      "MAIN.IDLE": 7}
+        assert subscribe(b, ["Main.Flag", "Main.Idle"], interval_ms=40)["changed"] == {
+            "MAIN.FLAG": False,
+            "MAIN.IDLE": 7,
+        }
         a.send_json({"type": "single_cycle"})
         va, _ = recv_until(a, of_type("values", scan=1))
         vb, _ = recv_until(b, of_type("values", scan=1))
@@ -285,7 +350,8 @@ def test_forces_and_state_changes_reach_every_client(client: TestClient, counter
 
 
 def test_a_runtime_error_is_logged_with_its_location_and_the_server_keeps_serving(
-        client: TestClient, counter: str) -> None:
+    client: TestClient, counter: str
+) -> None:
     with client.websocket_connect(ws_url(counter)) as ws:
         subscribe(ws, ["Main.Count"])
         ws.send_json({"type": "run"})
@@ -294,8 +360,14 @@ def test_a_runtime_error_is_logged_with_its_location_and_the_server_keeps_servin
         log, _ = recv_until(ws, of_type("log"))
         assert log["level"] == "error"
         assert log["message"].startswith("division by zero: 100 / 0 at POU MAIN, line 3 column 1 (instance MAIN)")
-        assert log["at"] == {"pou": "MAIN", "instance": "MAIN", "network": None, "element": None, "line": 3,
-                             "column": 1}
+        assert log["at"] == {
+            "pou": "MAIN",
+            "instance": "MAIN",
+            "network": None,
+            "element": None,
+            "line": 3,
+            "column": 1,
+        }
         recv_until(ws, of_type("status", state="faulted"))
         assert client.get("/api/health").status_code == 200
         ws.send_json({"type": "run"})
@@ -330,8 +402,7 @@ def test_a_watchdog_trip_is_logged(client: TestClient, workspace: Workspace) -> 
         registry.close()
 
 
-def test_a_foreign_origin_is_refused_and_the_served_or_listed_ones_accepted(client: TestClient,
-                                                                             counter: str) -> None:
+def test_a_foreign_origin_is_refused_and_the_served_or_listed_ones_accepted(client: TestClient, counter: str) -> None:
     with pytest.raises(WebSocketDisconnect) as refused:
         with client.websocket_connect(ws_url(counter), headers={"Origin": "http://evil.example"}):
             pass
@@ -367,8 +438,9 @@ def test_deleting_the_simulation_tells_and_closes_its_clients(client: TestClient
         assert closed.value.code == 4410
 
 
-def test_clients_per_simulation_and_paths_per_subscription_are_bounded(client: TestClient,
-                                                                       workspace: Workspace) -> None:
+def test_clients_per_simulation_and_paths_per_subscription_are_bounded(
+    client: TestClient, workspace: Workspace
+) -> None:
     registry = install(client, SimulationSettings(max_clients=1, max_paths=2))
     try:
         workspace.create(counter_project())
@@ -377,8 +449,11 @@ def test_clients_per_simulation_and_paths_per_subscription_are_bounded(client: T
             recv(first)
             first.send_json({"type": "subscribe", "paths": ["Main.Count", "Main.Flag", "Main.Idle"]})
             error, _ = recv_until(first, of_type("error"))
-            assert error == {"type": "error", "code": "too_many",
-                             "message": "a subscription may hold 2 paths and 32 POU instances, not 3 and 0"}
+            assert error == {
+                "type": "error",
+                "code": "too_many",
+                "message": "a subscription may hold 2 paths and 32 POU instances, not 3 and 0",
+            }
             with client.websocket_connect(ws_url(sim_id)) as second:
                 assert recv(second)["code"] == "too_many"
                 with pytest.raises(WebSocketDisconnect) as closed:
@@ -397,26 +472,40 @@ def test_composite_and_nested_paths_are_read_through_their_containers(client: Te
         ws.send_json({"type": "single_cycle"})
         first = subscribe(ws, ["Main.RunTimer", "Main.RunTimer.ET", "Main.Blink.Half.PT", "Motor", "GVL.StartCount"])
         assert first["changed"] == {
-            "MAIN.RUNTIMER": {"IN": True, "PT": 5000, "Q": False, "ET": 0}, "MAIN.RUNTIMER.ET": 0,
-            "MAIN.BLINK.HALF.PT": 0, "MOTOR": True, "STARTCOUNT": 1}
+            "MAIN.RUNTIMER": {"IN": True, "PT": 5000, "Q": False, "ET": 0},
+            "MAIN.RUNTIMER.ET": 0,
+            "MAIN.BLINK.HALF.PT": 0,
+            "MOTOR": True,
+            "STARTCOUNT": 1,
+        }
         ws.send_json({"type": "single_cycle"})
         second, _ = recv_until(ws, of_type("values", scan=2))
-        assert second["changed"] == {"MAIN.RUNTIMER": {"IN": True, "PT": 5000, "Q": False, "ET": 10},
-                                     "MAIN.RUNTIMER.ET": 10}
+        assert second["changed"] == {
+            "MAIN.RUNTIMER": {"IN": True, "PT": 5000, "Q": False, "ET": 10},
+            "MAIN.RUNTIMER.ET": 10,
+        }
 
 
-@pytest.mark.parametrize(("elements", "text"), [
-    ([{"pou_instance": "Main", "ids": ["start", "strat"]}],
-     "Main (MAIN) has no element 'strat' (elements: blink, blink.OUT, ctu, ctu.CV, ctu.Q, lamp_coil, motor, "
-     "motor_on, reset_count, running, running_on, seal, start, start_edge, start_or_motor, stop, ton, ton.ET, "
-     "ton.Q)"),
-    ([{"pou_instance": "Main.Blink", "ids": ["x"]}],
-     "Main.Blink (BLINKER) has no element 'x' (elements: none: it is not a ladder or FBD POU)"),
-    ([{"pou_instance": "Main.Lamp"}], "no POU instance 'Main.Lamp' - did you mean 'MAIN.BLINK'?"),
-    ([{"pou_instance": "Mian"}], "no POU instance 'Mian' - did you mean 'MAIN'?"),
-])
-def test_element_subscriptions_name_existing_instances_and_elements(client: TestClient, motor_sim: str,
-                                                                    elements: list, text: str) -> None:
+@pytest.mark.parametrize(
+    ("elements", "text"),
+    [
+        (
+            [{"pou_instance": "Main", "ids": ["start", "strat"]}],
+            "Main (MAIN) has no element 'strat' (elements: blink, blink.OUT, ctu, ctu.CV, ctu.Q, lamp_coil, motor, "
+            "motor_on, reset_count, running, running_on, seal, start, start_edge, start_or_motor, stop, ton, ton.ET, "
+            "ton.Q)",
+        ),
+        (
+            [{"pou_instance": "Main.Blink", "ids": ["x"]}],
+            "Main.Blink (BLINKER) has no element 'x' (elements: none: it is not a ladder or FBD POU)",
+        ),
+        ([{"pou_instance": "Main.Lamp"}], "no POU instance 'Main.Lamp' - did you mean 'MAIN.BLINK'?"),
+        ([{"pou_instance": "Mian"}], "no POU instance 'Mian' - did you mean 'MAIN'?"),
+    ],
+)
+def test_element_subscriptions_name_existing_instances_and_elements(
+    client: TestClient, motor_sim: str, elements: list, text: str
+) -> None:
     with client.websocket_connect(ws_url(motor_sim)) as ws:
         recv(ws)
         ws.send_json({"type": "subscribe", "paths": [], "elements": elements})
@@ -428,8 +517,14 @@ def test_fbd_elements_and_fb_instances_can_be_watched(client: TestClient, motor_
     client.post(f"/api/simulations/{motor_sim}/cycle")
     with client.websocket_connect(ws_url(motor_sim)) as ws:
         recv(ws)
-        first = subscribe(ws, [], elements=[{"pou_instance": "Scaling", "ids": ["add.OUT", "gt.OUT", "high"]},
-                                            {"pou_instance": "Main.Blink"}])
+        first = subscribe(
+            ws,
+            [],
+            elements=[
+                {"pou_instance": "Scaling", "ids": ["add.OUT", "gt.OUT", "high"]},
+                {"pou_instance": "Main.Blink"},
+            ],
+        )
         assert first["power"] == {"Scaling/add.OUT": 5, "Scaling/gt.OUT": False, "Scaling/high": False}
 
 
@@ -442,8 +537,11 @@ def test_an_oversized_message_gets_an_error(client: TestClient, workspace: Works
             recv(ws)
             ws.send_text(json.dumps({"type": "subscribe", "paths": ["Main.Count"] * 20}))  # 32 + 20 * 14 characters
             error, _ = recv_until(ws, of_type("error"))
-            assert error == {"type": "error", "code": "too_large",
-                             "message": "the message has 312 characters, more than the limit of 200"}
+            assert error == {
+                "type": "error",
+                "code": "too_large",
+                "message": "the message has 312 characters, more than the limit of 200",
+            }
             assert subscribe(ws, ["Main.Count"])["changed"] == {"MAIN.COUNT": 0}
     finally:
         registry.close()
@@ -467,8 +565,9 @@ class _RecordingSocket:
         self.sent.append(json.loads(text))
 
 
-def test_a_client_that_falls_behind_loses_old_log_entries_and_is_told(client: TestClient, counter: str,
-                                                                      registry: SimulationRegistry) -> None:
+def test_a_client_that_falls_behind_loses_old_log_entries_and_is_told(
+    client: TestClient, counter: str, registry: SimulationRegistry
+) -> None:
     from ladderlab.model import monitor as m
     from ladderlab.server.monitor import MonitorClient
 
@@ -487,7 +586,11 @@ def test_a_client_that_falls_behind_loses_old_log_entries_and_is_told(client: Te
     sent = asyncio.run(scenario())
     assert [(s["type"], s.get("message") or s.get("state")) for s in sent] == [
         ("log", "4 messages were dropped: this connection did not keep up"),
-        ("error", "not a log"), ("log", "entry 4"), ("log", "entry 5"), ("log", "entry 6"), ("log", "entry 7"),
+        ("error", "not a log"),
+        ("log", "entry 4"),
+        ("log", "entry 5"),
+        ("log", "entry 6"),
+        ("log", "entry 7"),
         ("status", "running"),  # only the latest state
     ]
 
@@ -512,8 +615,9 @@ def test_a_halt_publishes_the_values_of_the_halt_point_at_once(client: TestClien
             # Stop while halted: the scan stays halted (and says so); Continue ends it and no scan follows
             ws.send_json({"type": "stop"})
             log, _ = recv_until(ws, of_type("log"))
-            assert log["message"] == ("stopped: the scan stays halted; Continue or a step finishes it, "
-                                      "then no further scan runs")
+            assert log["message"] == (
+                "stopped: the scan stays halted; Continue or a step finishes it, then no further scan runs"
+            )
             scans = sim.scan_count
             ws.send_json({"type": "continue"})
             recv_until(ws, of_type("status", state="stopped"))

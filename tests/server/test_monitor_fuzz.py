@@ -23,19 +23,56 @@ from ladderlab.storage import Workspace
 
 from .test_simulations_support import counter_project, install, recv
 
-TYPES = ["subscribe", "write", "force", "unforce", "unforce_all", "breakpoint_set", "breakpoint_clear", "continue",
-         "step", "run", "stop", "single_cycle", "trace_start", "values", "status", "", "Subscribe", "RUN"]
-FIELDS = ["paths", "elements", "interval_ms", "path", "value", "pou", "network", "element", "line", "granularity",
-          "samples", "trigger", "pou_instance", "ids", "extra"]
+TYPES = [
+    "subscribe",
+    "write",
+    "force",
+    "unforce",
+    "unforce_all",
+    "breakpoint_set",
+    "breakpoint_clear",
+    "continue",
+    "step",
+    "run",
+    "stop",
+    "single_cycle",
+    "trace_start",
+    "values",
+    "status",
+    "",
+    "Subscribe",
+    "RUN",
+]
+FIELDS = [
+    "paths",
+    "elements",
+    "interval_ms",
+    "path",
+    "value",
+    "pou",
+    "network",
+    "element",
+    "line",
+    "granularity",
+    "samples",
+    "trigger",
+    "pou_instance",
+    "ids",
+    "extra",
+]
 
 scalars = st.none() | st.booleans() | st.integers() | st.floats(allow_nan=False) | st.text(max_size=12)
-json_values = st.recursive(scalars, lambda inner: st.lists(inner, max_size=3)
-                           | st.dictionaries(st.text(max_size=8), inner, max_size=3), max_leaves=12)
+json_values = st.recursive(
+    scalars,
+    lambda inner: st.lists(inner, max_size=3) | st.dictionaries(st.text(max_size=8), inner, max_size=3),
+    max_leaves=12,
+)
 message_like = st.builds(
     lambda kind, fields: {**({"type": kind} if kind is not None else {}), **fields},
     st.none() | st.sampled_from(TYPES) | json_values,
-    st.dictionaries(st.sampled_from(FIELDS), json_values | st.sampled_from(["Main.Count", "Main", "MAIN.FLAG"]),
-                    max_size=4),
+    st.dictionaries(
+        st.sampled_from(FIELDS), json_values | st.sampled_from(["Main.Count", "Main", "MAIN.FLAG"]), max_size=4
+    ),
 )
 
 
@@ -65,8 +102,16 @@ def session() -> Iterator[tuple[TestClient, WebSocketTestSession, SimRunner]]:
 
 def state_of(runner: SimRunner) -> tuple:
     sim = runner.sim
-    return (runner.state, sim.scan_count, sim.time_ms, sim.snapshot(), sim.forced,
-            frozenset(sim.debugger.breakpoints if sim.debugger else ()), sim.halted, sim.variant)
+    return (
+        runner.state,
+        sim.scan_count,
+        sim.time_ms,
+        sim.snapshot(),
+        sim.forced,
+        frozenset(sim.debugger.breakpoints if sim.debugger else ()),
+        sim.halted,
+        sim.variant,
+    )
 
 
 def assert_refused_without_effect(session: tuple, send: Any) -> dict[str, Any]:
@@ -100,8 +145,11 @@ def test_text_that_is_not_json_gets_an_error(session: tuple, text: str) -> None:
 @given(blob=st.binary(max_size=40))
 def test_binary_frames_get_an_error(session: tuple, blob: bytes) -> None:
     reply = assert_refused_without_effect(session, lambda ws: ws.send_bytes(blob))
-    assert reply == {"type": "error", "code": "bad_message",
-                     "message": "binary frames are not understood: send JSON text"}
+    assert reply == {
+        "type": "error",
+        "code": "bad_message",
+        "message": "binary frames are not understood: send JSON text",
+    }
 
 
 def test_the_connection_and_the_server_still_work_afterwards(session: tuple) -> None:

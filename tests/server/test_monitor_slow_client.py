@@ -34,10 +34,17 @@ from .test_simulations_support import FAST
 #: in the server, where it is bounded, not in megabytes of kernel memory the test cannot see.
 SOCKET_BUFFER = 32 * 1024
 SIZE = 2000  # DINTs that all change every scan: a values message to the slow client is ~40 kB
-BIG = Project(name="big", pous=[st_program(
-    "Main", f"VAR\n    Big : ARRAY[1..{SIZE}] OF DINT;\n    i : INT;\n    Count : DINT;\nEND_VAR",
-    f"Count := Count + 1;\nFOR i := 1 TO {SIZE} DO\n    Big[i] := Big[i] + 1;\nEND_FOR;")],
-    tasks=[Task(name="T", interval="T#10ms", programs=["Main"])])
+BIG = Project(
+    name="big",
+    pous=[
+        st_program(
+            "Main",
+            f"VAR\n    Big : ARRAY[1..{SIZE}] OF DINT;\n    i : INT;\n    Count : DINT;\nEND_VAR",
+            f"Count := Count + 1;\nFOR i := 1 TO {SIZE} DO\n    Big[i] := Big[i] + 1;\nEND_FOR;",
+        )
+    ],
+    tasks=[Task(name="T", interval="T#10ms", programs=["Main"])],
+)
 
 
 @pytest.fixture
@@ -72,9 +79,10 @@ class RawClient:
         self.sock.settimeout(5)
         self.sock.connect((host, int(port)))
         key = base64.b64encode(os.urandom(16)).decode()
-        self.sock.sendall(f"GET {path} HTTP/1.1\r\nHost: {address}\r\nUpgrade: websocket\r\n"
-                          f"Connection: Upgrade\r\nSec-WebSocket-Key: {key}\r\nSec-WebSocket-Version: 13\r\n\r\n"
-                          .encode())
+        self.sock.sendall(
+            f"GET {path} HTTP/1.1\r\nHost: {address}\r\nUpgrade: websocket\r\n"
+            f"Connection: Upgrade\r\nSec-WebSocket-Key: {key}\r\nSec-WebSocket-Version: 13\r\n\r\n".encode()
+        )
         response = b""
         while b"\r\n\r\n" not in response:
             response += self.sock.recv(1)
@@ -107,7 +115,8 @@ class RawClient:
 
 
 def test_a_client_that_never_reads_slows_neither_the_scan_nor_another_client(
-        live: tuple[str, SimulationRegistry], workspace: Workspace) -> None:
+    live: tuple[str, SimulationRegistry], workspace: Workspace
+) -> None:
     address, registry = live
     workspace.create(BIG)
     http = httpx.Client(base_url=f"http://{address}")
@@ -115,8 +124,11 @@ def test_a_client_that_never_reads_slows_neither_the_scan_nor_another_client(
     path = f"/api/simulations/{sim_id}/ws"
     slow = RawClient(address, path)
     with connect(f"ws://{address}{path}") as fast, contextlib.closing(slow):
-        slow.send(json.dumps({"type": "subscribe", "paths": [f"Main.Big[{i}]" for i in range(1, SIZE + 1)],
-                              "interval_ms": 20}))
+        slow.send(
+            json.dumps(
+                {"type": "subscribe", "paths": [f"Main.Big[{i}]" for i in range(1, SIZE + 1)], "interval_ms": 20}
+            )
+        )
         fast.send(json.dumps({"type": "subscribe", "paths": ["Main.Count"], "interval_ms": 50}))
         assert json.loads(fast.recv(timeout=5))["type"] == "status"
         assert http.post(f"/api/simulations/{sim_id}/start").json()["state"] == "running"

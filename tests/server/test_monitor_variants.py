@@ -23,7 +23,8 @@ def _state(sim) -> tuple:
 
 
 def test_a_breakpoint_switches_to_debug_code_and_clearing_it_back_without_losing_state(
-        client: TestClient, motor_sim: str, registry: SimulationRegistry, workspace: Workspace) -> None:
+    client: TestClient, motor_sim: str, registry: SimulationRegistry, workspace: Workspace
+) -> None:
     runner = entry(registry, motor_sim).runner
     reference = build_project(workspace.load("motor").project, "monitor").simulation()
     reference.write("Start", True)

@@ -25,6 +25,7 @@ def motor_example(name: str = "motor") -> Project:
 
 # ----------------------------------------------------------------- create
 
+
 def test_create_empty_project(client: TestClient) -> None:
     response = client.post("/api/projects", json={"name": "demo"})
     assert response.status_code == 201
@@ -76,8 +77,9 @@ def test_create_refused_when_the_workspace_is_full(workspace: Workspace) -> None
     assert [client.post("/api/projects", json={"name": n}).status_code for n in "ab"] == [201, 201]
     response = client.post("/api/projects", json={"name": "c"})
     assert response.status_code == 429
-    assert detail(response)["message"] == ("the workspace already holds 2 projects, the most this server allows; "
-                                           "delete one first")
+    assert detail(response)["message"] == (
+        "the workspace already holds 2 projects, the most this server allows; delete one first"
+    )
     assert [row["name"] for row in client.get("/api/projects").json()] == ["a", "b"]
 
 
@@ -89,6 +91,7 @@ def test_create_body_with_unknown_field_is_422(client: TestClient) -> None:
 
 
 # ----------------------------------------------------------------- read
+
 
 def test_get_project_with_etag(client: TestClient, motor: str) -> None:
     response = client.get("/api/projects/motor")
@@ -107,22 +110,31 @@ def test_get_missing_project_is_404(client: TestClient) -> None:
     assert detail(response)["message"] == "project 'nope' does not exist"
 
 
-def test_project_that_fails_to_load_is_422_with_located_diagnostics(client: TestClient, workspace: Workspace,
-                                                                     motor: str) -> None:
+def test_project_that_fails_to_load_is_422_with_located_diagnostics(
+    client: TestClient, workspace: Workspace, motor: str
+) -> None:
     (workspace.root / "motor" / "pous" / "Main.ld.json").write_text('{\n  "name": "Main",\n  "kind": \n}\n')
-    for response in (client.get("/api/projects/motor"), client.post("/api/projects/motor/check"),
-                     client.get("/api/projects/motor/pous/Main/symbols"), client.get("/api/library?project=motor")):
+    for response in (
+        client.get("/api/projects/motor"),
+        client.post("/api/projects/motor/check"),
+        client.get("/api/projects/motor/pous/Main/symbols"),
+        client.get("/api/library?project=motor"),
+    ):
         assert response.status_code == 422
         assert detail(response)["message"] == "project 'motor' cannot be loaded: 1 problem in its files"
         [diagnostic] = detail(response)["diagnostics"]
-        assert (diagnostic["code"], diagnostic["file"], diagnostic["line"], diagnostic["column"]) == \
-            ("BAD-JSON", "pous/Main.ld.json", 4, 1)
+        assert (diagnostic["code"], diagnostic["file"], diagnostic["line"], diagnostic["column"]) == (
+            "BAD-JSON",
+            "pous/Main.ld.json",
+            4,
+            1,
+        )
 
 
 # ----------------------------------------------------------------- save the whole project
 
-def test_save_without_if_match_is_428_and_changes_nothing(client: TestClient, workspace: Workspace,
-                                                          motor: str) -> None:
+
+def test_save_without_if_match_is_428_and_changes_nothing(client: TestClient, workspace: Workspace, motor: str) -> None:
     before = folder_bytes(workspace.root / "motor")
     changed = motor_example().model_copy(update={"globals": "VAR_GLOBAL\n    g : INT;\nEND_VAR"})
     response = client.put("/api/projects/motor", json=changed.model_dump(mode="json"))
@@ -134,15 +146,19 @@ def test_save_without_if_match_is_428_and_changes_nothing(client: TestClient, wo
 @pytest.mark.parametrize("header", ['"{}"', "{}", 'W/"{}"', ' "{}" '])
 def test_save_returns_the_new_revision(client: TestClient, motor: str, header: str) -> None:
     changed = motor_example().model_copy(update={"globals": "VAR_GLOBAL\n    g : INT;\nEND_VAR"})
-    response = client.put("/api/projects/motor", json=changed.model_dump(mode="json"),
-                          headers={"If-Match": header.format(motor)})
+    response = client.put(
+        "/api/projects/motor", json=changed.model_dump(mode="json"), headers={"If-Match": header.format(motor)}
+    )
     assert response.status_code == 200, response.text
     revision = revision_of(changed)
     assert response.json()["revision"] == revision != motor
     assert response.headers["ETag"] == f'"{revision}"'
     stored = client.get("/api/projects/motor").json()
-    assert (stored["revision"], stored["modified"], stored["project"]) == \
-        (revision, response.json()["modified"], changed.model_dump(mode="json"))
+    assert (stored["revision"], stored["modified"], stored["project"]) == (
+        revision,
+        response.json()["modified"],
+        changed.model_dump(mode="json"),
+    )
 
 
 def test_save_based_on_an_old_revision_is_409_with_both_revisions(client: TestClient, motor: str) -> None:
@@ -154,8 +170,10 @@ def test_save_based_on_an_old_revision_is_409_with_both_revisions(client: TestCl
     assert response.status_code == 409
     current = ok.json()["revision"]
     assert response.json()["detail"] == {
-        "message": (f"project 'motor' was changed by someone else: this save is based on revision {motor}, "
-                    f"the saved project is now at revision {current}"),
+        "message": (
+            f"project 'motor' was changed by someone else: this save is based on revision {motor}, "
+            f"the saved project is now at revision {current}"
+        ),
         "base_revision": motor,
         "current_revision": current,
         "current_modified": ok.json()["modified"],
@@ -167,15 +185,18 @@ def test_concurrent_saves_from_one_revision_give_exactly_one_409(client: TestCli
     """Two tabs save different changes at the same moment from the same revision: one wins, one gets 409."""
     for round_ in range(4):
         base = client.get("/api/projects/motor").json()["revision"]
-        bodies = [motor_example().model_copy(update={"globals": f"VAR_GLOBAL\n    g{round_}_{i} : INT;\nEND_VAR"})
-                  for i in range(2)]
+        bodies = [
+            motor_example().model_copy(update={"globals": f"VAR_GLOBAL\n    g{round_}_{i} : INT;\nEND_VAR"})
+            for i in range(2)
+        ]
         barrier = threading.Barrier(2)
         statuses: list[int] = [0, 0]
 
         def save(i: int) -> None:
             barrier.wait()
-            statuses[i] = client.put("/api/projects/motor", json=bodies[i].model_dump(mode="json"),
-                                     headers={"If-Match": base}).status_code
+            statuses[i] = client.put(
+                "/api/projects/motor", json=bodies[i].model_dump(mode="json"), headers={"If-Match": base}
+            ).status_code
 
         threads = [threading.Thread(target=save, args=(i,)) for i in range(2)]
         for thread in threads:
@@ -187,8 +208,9 @@ def test_concurrent_saves_from_one_revision_give_exactly_one_409(client: TestCli
         assert client.get("/api/projects/motor").json()["project"] == winner.model_dump(mode="json")
 
 
-def test_invalid_model_is_422_with_json_path_and_files_stay_intact(client: TestClient, workspace: Workspace,
-                                                                   motor: str) -> None:
+def test_invalid_model_is_422_with_json_path_and_files_stay_intact(
+    client: TestClient, workspace: Workspace, motor: str
+) -> None:
     before = folder_bytes(workspace.root / "motor")
     data = motor_example().model_dump(mode="json")
     data["pous"][0]["body"]["networks"][1]["elements"][1] = {"type": "relay", "id": "r1"}
@@ -196,15 +218,17 @@ def test_invalid_model_is_422_with_json_path_and_files_stay_intact(client: TestC
     response = client.put("/api/projects/motor", json=data, headers={"If-Match": motor})
     assert response.status_code == 422
     found = [(d["code"], d["json_path"]) for d in detail(response)["diagnostics"]]
-    assert found == [("BAD-REQUEST", "$.pous[0].body.networks[1].elements[1]"),
-                     ("BAD-REQUEST", "$.tasks[0].priority")]
+    assert found == [("BAD-REQUEST", "$.pous[0].body.networks[1].elements[1]"), ("BAD-REQUEST", "$.tasks[0].priority")]
     assert detail(response)["diagnostics"][0]["message"].startswith("unknown type 'relay': expected one of")
     assert folder_bytes(workspace.root / "motor") == before
 
 
 def test_malformed_json_is_422_with_line_and_column(client: TestClient, motor: str) -> None:
-    response = client.put("/api/projects/motor", content=b'{\n  "name": "motor",\n  "pous": [,]\n}',
-                          headers={"If-Match": motor, "Content-Type": "application/json"})
+    response = client.put(
+        "/api/projects/motor",
+        content=b'{\n  "name": "motor",\n  "pous": [,]\n}',
+        headers={"If-Match": motor, "Content-Type": "application/json"},
+    )
     assert response.status_code == 422
     [diagnostic] = detail(response)["diagnostics"]
     assert (diagnostic["code"], diagnostic["line"], diagnostic["column"]) == ("BAD-JSON", 3, 12)
@@ -212,8 +236,9 @@ def test_malformed_json_is_422_with_line_and_column(client: TestClient, motor: s
 
 
 def test_save_with_another_name_in_the_body_is_422(client: TestClient, motor: str) -> None:
-    response = client.put("/api/projects/motor", json=motor_example("other").model_dump(mode="json"),
-                          headers={"If-Match": motor})
+    response = client.put(
+        "/api/projects/motor", json=motor_example("other").model_dump(mode="json"), headers={"If-Match": motor}
+    )
     assert response.status_code == 422
     assert [d["json_path"] for d in detail(response)["diagnostics"]] == ["$.name"]
     assert client.get("/api/projects/other").status_code == 404
@@ -239,7 +264,10 @@ def test_save_of_a_project_over_the_size_limit_is_413(workspace: Workspace) -> N
     assert response.status_code == 413
     size = sum(len(text.encode()) for text in project_files(project).values())
     assert size > 4800
-    assert detail(response)["message"] == f"project 'big' would take {size} bytes on disk, more than the limit of 4000 bytes"
+    assert (
+        detail(response)["message"]
+        == f"project 'big' would take {size} bytes on disk, more than the limit of 4000 bytes"
+    )
     assert folder_bytes(workspace.root / "big") == before
 
 
@@ -249,8 +277,9 @@ def test_save_of_a_missing_project_is_404(client: TestClient) -> None:
     assert detail(response)["message"] == "project 'ghost' does not exist"
 
 
-def test_io_error_is_a_json_500_and_loses_nothing(client: TestClient, workspace: Workspace, motor: str,
-                                                  monkeypatch: pytest.MonkeyPatch) -> None:
+def test_io_error_is_a_json_500_and_loses_nothing(
+    client: TestClient, workspace: Workspace, motor: str, monkeypatch: pytest.MonkeyPatch
+) -> None:
     before = folder_bytes(workspace.root / "motor")
 
     def disk_full(path, data):  # noqa: ANN001 - same signature as storage.atomic.write_atomic
@@ -260,8 +289,9 @@ def test_io_error_is_a_json_500_and_loses_nothing(client: TestClient, workspace:
     changed = motor_example().model_copy(update={"globals": ""})
     response = client.put("/api/projects/motor", json=changed.model_dump(mode="json"), headers={"If-Match": motor})
     assert response.status_code == 500
-    assert detail(response)["message"] == ("the workspace could not be read or written: No space left on device. "
-                                           "Reload the project to see what is stored.")
+    assert detail(response)["message"] == (
+        "the workspace could not be read or written: No space left on device. Reload the project to see what is stored."
+    )
     assert folder_bytes(workspace.root / "motor") == before
     assert client.get("/api/projects/motor").json()["revision"] == motor
 
@@ -280,10 +310,12 @@ def test_unexpected_error_is_a_json_500(workspace: Workspace, monkeypatch: pytes
 
 # ----------------------------------------------------------------- save and delete one POU
 
+
 def test_save_pou_replaces_it_in_place(client: TestClient, motor: str) -> None:
     blinker = motor_example().pou("Blinker").model_copy(update={"body": "Out := Enable;"})
-    response = client.put("/api/projects/motor/pous/Blinker", json=blinker.model_dump(mode="json"),
-                          headers={"If-Match": motor})
+    response = client.put(
+        "/api/projects/motor/pous/Blinker", json=blinker.model_dump(mode="json"), headers={"If-Match": motor}
+    )
     assert response.status_code == 200, response.text
     expected = motor_example()
     expected.pous[1] = blinker
@@ -336,6 +368,7 @@ def test_delete_pou(client: TestClient, workspace: Workspace, motor: str) -> Non
 
 # ----------------------------------------------------------------- rename and delete
 
+
 def test_rename_project(client: TestClient, workspace: Workspace, motor: str) -> None:
     response = client.post("/api/projects/motor/rename", json={"new_name": "plant 2"})
     assert response.status_code == 200
@@ -372,16 +405,29 @@ def test_delete_project(client: TestClient, motor: str) -> None:
 
 # ----------------------------------------------------------------- check
 
+
 def test_check_reports_a_located_st_error(client: TestClient, motor: str) -> None:
     program = st_program("Prog", "VAR\n    Start : BOOL;\n    x : BOOL;\nEND_VAR", "x := Start;\nx := Strat;")
     client.put("/api/projects/motor/pous/Prog", json=program, headers={"If-Match": motor})
     response = client.post("/api/projects/motor/check")
     assert response.status_code == 200
-    assert response.json()["diagnostics"] == [{
-        "severity": "error", "code": "ST-UNKNOWN-VAR", "message": "unknown variable 'Strat' - did you mean 'Start'?",
-        "file": "Prog/body", "json_path": None, "pou": "Prog", "network": None, "element": None, "pin": None,
-        "line": 2, "column": 6, "end_line": 2, "end_column": 11,
-    }]
+    assert response.json()["diagnostics"] == [
+        {
+            "severity": "error",
+            "code": "ST-UNKNOWN-VAR",
+            "message": "unknown variable 'Strat' - did you mean 'Start'?",
+            "file": "Prog/body",
+            "json_path": None,
+            "pou": "Prog",
+            "network": None,
+            "element": None,
+            "pin": None,
+            "line": 2,
+            "column": 6,
+            "end_line": 2,
+            "end_column": 11,
+        }
+    ]
 
 
 def test_check_includes_model_validation(client: TestClient, motor: str) -> None:
@@ -390,8 +436,11 @@ def test_check_includes_model_validation(client: TestClient, motor: str) -> None
     saved = client.put("/api/projects/motor", json=project.model_dump(mode="json"), headers={"If-Match": motor})
     assert saved.status_code == 200
     [diagnostic] = client.post("/api/projects/motor/check").json()["diagnostics"]
-    assert (diagnostic["code"], diagnostic["json_path"], diagnostic["pou"]) == \
-        ("NOT-A-PROGRAM", "$.tasks[0].programs[2]", "Blinker")
+    assert (diagnostic["code"], diagnostic["json_path"], diagnostic["pou"]) == (
+        "NOT-A-PROGRAM",
+        "$.tasks[0].programs[2]",
+        "Blinker",
+    )
 
 
 def test_check_of_the_example_is_clean(client: TestClient, motor: str) -> None:

@@ -28,27 +28,35 @@ def test_create_compiles_the_saved_project_into_a_stopped_simulation(client: Tes
 
 
 def test_the_info_lists_the_instances_of_every_function_block_for_the_online_views(
-        client: TestClient, workspace: Workspace, registry: SimulationRegistry) -> None:
+    client: TestClient, workspace: Workspace, registry: SimulationRegistry
+) -> None:
     """The instance picker of an FB's online view offers these (nested and arrays of instances included)."""
     fb = Pou(name="Pulse", kind="function_block", language="st", declarations="VAR_INPUT x : BOOL; END_VAR", body="")
     outer = Pou(name="Pair", kind="function_block", language="st", declarations="VAR a, b : Pulse; END_VAR", body="")
-    main = st_program("Main", "VAR\n    p : Pulse;\n    q : ARRAY[1..2] OF Pulse;\n    two : Pair;\nEND_VAR", "p(x := TRUE);")
+    main = st_program(
+        "Main", "VAR\n    p : Pulse;\n    q : ARRAY[1..2] OF Pulse;\n    two : Pair;\nEND_VAR", "p(x := TRUE);"
+    )
     workspace.create(Project(name="fbs", pous=[fb, outer, main]))
     info = client.post("/api/projects/fbs/simulations").json()
-    assert info["instances"] == {"MAIN": ["MAIN"], "PAIR": ["MAIN.TWO"],
-                                 "PULSE": ["MAIN.P", "MAIN.Q[1]", "MAIN.Q[2]", "MAIN.TWO.A", "MAIN.TWO.B"]}
+    assert info["instances"] == {
+        "MAIN": ["MAIN"],
+        "PAIR": ["MAIN.TWO"],
+        "PULSE": ["MAIN.P", "MAIN.Q[1]", "MAIN.Q[2]", "MAIN.TWO.A", "MAIN.TWO.B"],
+    }
 
 
-def test_create_answers_201_with_the_location(client: TestClient, workspace: Workspace,
-                                              registry: SimulationRegistry) -> None:
+def test_create_answers_201_with_the_location(
+    client: TestClient, workspace: Workspace, registry: SimulationRegistry
+) -> None:
     workspace.create(counter_project("c2"))
     response = client.post("/api/projects/c2/simulations")
     assert response.status_code == 201
     assert response.headers["Location"] == f"/api/simulations/{response.json()['id']}"
 
 
-def test_a_project_with_errors_is_a_422_with_located_diagnostics(client: TestClient, workspace: Workspace,
-                                                                 registry: SimulationRegistry) -> None:
+def test_a_project_with_errors_is_a_422_with_located_diagnostics(
+    client: TestClient, workspace: Workspace, registry: SimulationRegistry
+) -> None:
     program = st_program("Main", "VAR\n    x : INT;\nEND_VAR", "x := 1;\nx := y + 1;")
     workspace.create(Project(name="broken", pous=[program]))
     response = client.post("/api/projects/broken/simulations")
@@ -63,16 +71,22 @@ def test_a_project_with_errors_is_a_422_with_located_diagnostics(client: TestCli
 
 def test_unknown_project_and_unknown_simulation_are_404(client: TestClient, registry: SimulationRegistry) -> None:
     assert client.post("/api/projects/nope/simulations").status_code == 404
-    for method, url in (("GET", "/api/simulations/abc"), ("POST", "/api/simulations/abc/start"),
-                        ("POST", "/api/simulations/abc/stop"), ("POST", "/api/simulations/abc/reset"),
-                        ("POST", "/api/simulations/abc/cycle"), ("DELETE", "/api/simulations/abc")):
+    for method, url in (
+        ("GET", "/api/simulations/abc"),
+        ("POST", "/api/simulations/abc/start"),
+        ("POST", "/api/simulations/abc/stop"),
+        ("POST", "/api/simulations/abc/reset"),
+        ("POST", "/api/simulations/abc/cycle"),
+        ("DELETE", "/api/simulations/abc"),
+    ):
         response = client.request(method, url)
         assert response.status_code == 404, (method, url)
         assert detail(response)["message"].startswith("no simulation 'abc'")
 
 
-def test_single_cycles_advance_one_scan_of_the_task_each(client: TestClient, counter: str,
-                                                         registry: SimulationRegistry) -> None:
+def test_single_cycles_advance_one_scan_of_the_task_each(
+    client: TestClient, counter: str, registry: SimulationRegistry
+) -> None:
     for scan in (1, 2, 3):
         info = client.post(f"/api/simulations/{counter}/cycle").json()
         assert (info["state"], info["scan_count"], info["time_ms"]) == ("stopped", scan, 10.0 * scan)
@@ -96,8 +110,9 @@ def test_start_paces_scans_against_the_wall_clock_and_stop_holds(client: TestCli
     assert client.get(f"/api/simulations/{counter}").json()["scan_count"] == stopped["scan_count"]
 
 
-def test_a_slower_task_runs_at_its_own_interval(client: TestClient, workspace: Workspace,
-                                                registry: SimulationRegistry) -> None:
+def test_a_slower_task_runs_at_its_own_interval(
+    client: TestClient, workspace: Workspace, registry: SimulationRegistry
+) -> None:
     workspace.create(counter_project("slow", interval="T#50ms"))
     sim_id = client.post("/api/projects/slow/simulations").json()["id"]
     client.post(f"/api/simulations/{sim_id}/start")
@@ -114,8 +129,9 @@ def test_single_cycle_while_running_is_a_409(client: TestClient, counter: str) -
     assert detail(response)["message"] == "the simulation is running: stop it before a single cycle"
 
 
-def test_reset_warm_keeps_retain_and_cold_clears_it(client: TestClient, counter: str,
-                                                    registry: SimulationRegistry) -> None:
+def test_reset_warm_keeps_retain_and_cold_clears_it(
+    client: TestClient, counter: str, registry: SimulationRegistry
+) -> None:
     sim = entry(registry, counter).runner.sim
     client.post(f"/api/simulations/{counter}/cycle")
     client.post(f"/api/simulations/{counter}/cycle")
@@ -137,8 +153,9 @@ def test_reset_with_a_bad_body_is_a_422(client: TestClient, counter: str) -> Non
     assert client.post(f"/api/simulations/{counter}/reset", json={"hot": True}).status_code == 422
 
 
-def test_a_runtime_fault_stops_the_simulation_with_its_location(client: TestClient, counter: str,
-                                                                registry: SimulationRegistry) -> None:
+def test_a_runtime_fault_stops_the_simulation_with_its_location(
+    client: TestClient, counter: str, registry: SimulationRegistry
+) -> None:
     runner = entry(registry, counter).runner
     runner.write("Main.Divisor", 0)
     info = client.post(f"/api/simulations/{counter}/cycle").json()
@@ -176,8 +193,7 @@ def test_the_number_of_simulations_is_bounded_with_a_429(client: TestClient, wor
         registry.close()
 
 
-def test_an_unused_simulation_ends_after_the_idle_time_even_running(client: TestClient,
-                                                                    workspace: Workspace) -> None:
+def test_an_unused_simulation_ends_after_the_idle_time_even_running(client: TestClient, workspace: Workspace) -> None:
     registry = install(client, SimulationSettings(idle_timeout_s=0.2, reap_every_s=0.02))
     try:
         workspace.create(counter_project())

@@ -43,8 +43,11 @@ FAST = SimulationSettings(idle_timeout_s=60.0, reap_every_s=0.05, publish_s=0.01
 
 
 def counter_project(name: str = "counter", interval: str = "T#10ms") -> Project:
-    return Project(name=name, pous=[st_program("Main", COUNTER_DECLARATIONS, COUNTER_BODY)],
-                   tasks=[Task(name="Fast", interval=interval, programs=["Main"])])
+    return Project(
+        name=name,
+        pous=[st_program("Main", COUNTER_DECLARATIONS, COUNTER_BODY)],
+        tasks=[Task(name="Fast", interval=interval, programs=["Main"])],
+    )
 
 
 def install(client: TestClient, settings: SimulationSettings = FAST) -> SimulationRegistry:
@@ -83,6 +86,7 @@ def entry(registry: SimulationRegistry, sim_id: str) -> SimulationEntry:
 
 def recv(ws: WebSocketTestSession, timeout: float = 3.0) -> dict[str, Any]:
     """The next message from the server, or a failure after ``timeout`` seconds."""
+
     async def receive() -> Any:
         with anyio.fail_after(timeout):
             return await ws._send_rx.receive()  # noqa: SLF001 - the test session's queue, with a timeout
@@ -92,8 +96,9 @@ def recv(ws: WebSocketTestSession, timeout: float = 3.0) -> dict[str, Any]:
     return json.loads(message["text"])
 
 
-def recv_until(ws: WebSocketTestSession, predicate: Callable[[dict[str, Any]], bool],
-               timeout: float = 3.0) -> tuple[dict[str, Any], list[dict[str, Any]]]:
+def recv_until(
+    ws: WebSocketTestSession, predicate: Callable[[dict[str, Any]], bool], timeout: float = 3.0
+) -> tuple[dict[str, Any], list[dict[str, Any]]]:
     """Read until a message satisfies ``predicate``; returns it and every message read before it."""
     end = time.monotonic() + timeout
     seen: list[dict[str, Any]] = []

@@ -7,10 +7,27 @@ from fastapi.testclient import TestClient
 from .helpers import detail, st_program
 
 
-def symbol(name: str, var_class: str, type_: str, *, initial: str | None = None, address: str | None = None,
-           comment: str | None = None, retain: bool = False, constant: bool = False) -> dict:
-    return {"name": name, "var_class": var_class, "type": type_, "initial": initial, "address": address,
-            "comment": comment, "retain": retain, "constant": constant}
+def symbol(
+    name: str,
+    var_class: str,
+    type_: str,
+    *,
+    initial: str | None = None,
+    address: str | None = None,
+    comment: str | None = None,
+    retain: bool = False,
+    constant: bool = False,
+) -> dict:
+    return {
+        "name": name,
+        "var_class": var_class,
+        "type": type_,
+        "initial": initial,
+        "address": address,
+        "comment": comment,
+        "retain": retain,
+        "constant": constant,
+    }
 
 
 MOTOR_GLOBALS = [
@@ -53,9 +70,11 @@ def test_symbols_of_the_example_blinker_with_initial_values(client: TestClient, 
 
 def test_symbols_while_the_body_has_errors(client: TestClient, motor: str) -> None:
     """The variable table must stay usable while the user is mid-edit in the body."""
-    declarations = ("VAR\n    x : INT := 5;  (* five *)\n    arr : ARRAY[1..3] OF INT := [1, 2, 3];\n"
-                    "    s : STRING[20];\n    AT %QW2 : INT;\nEND_VAR\nVAR RETAIN\n    r : REAL := 2.5;\nEND_VAR\n"
-                    "VAR CONSTANT\n    K : INT := 3;\nEND_VAR")
+    declarations = (
+        "VAR\n    x : INT := 5;  (* five *)\n    arr : ARRAY[1..3] OF INT := [1, 2, 3];\n"
+        "    s : STRING[20];\n    AT %QW2 : INT;\nEND_VAR\nVAR RETAIN\n    r : REAL := 2.5;\nEND_VAR\n"
+        "VAR CONSTANT\n    K : INT := 3;\nEND_VAR"
+    )
     program = st_program("Prog", declarations, "x := x +;")
     assert client.put("/api/projects/motor/pous/Prog", json=program, headers={"If-Match": motor}).status_code == 200
     body = client.get("/api/projects/motor/pous/Prog/symbols").json()
@@ -68,8 +87,9 @@ def test_symbols_while_the_body_has_errors(client: TestClient, motor: str) -> No
         symbol("K", "VAR", "INT", initial="3", constant=True),
     ]
     assert body["globals"] == MOTOR_GLOBALS
-    assert [(d["code"], d["file"], d["line"], d["column"]) for d in body["diagnostics"]] == \
-        [("ST-PARSE", "Prog/body", 1, 9)]
+    assert [(d["code"], d["file"], d["line"], d["column"]) for d in body["diagnostics"]] == [
+        ("ST-PARSE", "Prog/body", 1, 9)
+    ]
 
 
 def test_symbol_diagnostics_cover_the_pou_and_the_globals_only(client: TestClient, motor: str) -> None:
@@ -81,8 +101,10 @@ def test_symbol_diagnostics_cover_the_pou_and_the_globals_only(client: TestClien
     assert [(d["code"], d["file"]) for d in body["diagnostics"]] == [("ST-UNKNOWN-TYPE", "globals")]
     assert body["globals"][-1] == symbol("bad", "VAR_GLOBAL", "NoSuchType")
     other = client.get("/api/projects/motor/pous/Other/symbols").json()
-    assert [(d["code"], d["file"]) for d in other["diagnostics"]] == \
-        [("ST-UNKNOWN-TYPE", "globals"), ("ST-UNKNOWN-TYPE", "Other/declarations")]
+    assert [(d["code"], d["file"]) for d in other["diagnostics"]] == [
+        ("ST-UNKNOWN-TYPE", "globals"),
+        ("ST-UNKNOWN-TYPE", "Other/declarations"),
+    ]
 
 
 def test_symbols_of_unknown_pou_or_project_is_404(client: TestClient, motor: str) -> None:

@@ -41,8 +41,13 @@ ET := Timer.ET;"""
 
 @pytest.fixture
 def timer(client: TestClient, workspace: Workspace, registry: SimulationRegistry) -> str:
-    workspace.create(Project(name="timer", pous=[st_program("Main", TIMER_DECLARATIONS, TIMER_BODY)],
-                             tasks=[Task(name="Fast", interval="T#10ms", programs=["Main"])]))
+    workspace.create(
+        Project(
+            name="timer",
+            pous=[st_program("Main", TIMER_DECLARATIONS, TIMER_BODY)],
+            tasks=[Task(name="Fast", interval="T#10ms", programs=["Main"])],
+        )
+    )
     response = client.post("/api/projects/timer/simulations")
     assert response.status_code == 201, response.text
     return response.json()["id"]
@@ -89,8 +94,16 @@ def test_samples_stream_while_recording_and_trace_stop_ends_it(client: TestClien
         connect(ws)
         ws.send_json({"type": "trace_start", "id": 7, "paths": ["main.count", "Main.Flag", "MAIN.COUNT"]})
         first, _ = recv_until(ws, of_type("trace_data"))
-        assert first == {"type": "trace_data", "id": 7, "state": "recording", "scans": [], "time_ms": [],
-                         "values": {"MAIN.COUNT": [], "MAIN.FLAG": []}, "triggered": None, "lost": 0}
+        assert first == {
+            "type": "trace_data",
+            "id": 7,
+            "state": "recording",
+            "scans": [],
+            "time_ms": [],
+            "values": {"MAIN.COUNT": [], "MAIN.FLAG": []},
+            "triggered": None,
+            "lost": 0,
+        }
         cycles(ws, 3)
         merged, _ = collect(ws, lambda m: len(m["scans"]) >= 3)  # before the trace ends: it is live
         assert merged["values"] == {"MAIN.COUNT": [1, 2, 3], "MAIN.FLAG": [True, False, True]}
@@ -110,8 +123,14 @@ def test_samples_stream_while_recording_and_trace_stop_ends_it(client: TestClien
 def test_a_ton_q_rises_at_exactly_pt_in_the_trace_of_a_rising_edge_trigger(client: TestClient, timer: str) -> None:
     with client.websocket_connect(ws_url(timer)) as ws:
         connect(ws)
-        ws.send_json({"type": "trace_start", "paths": ["Main.Q", "Main.ET", "Main.Go"], "samples": 8,
-                      "trigger": {"path": "Main.Go", "condition": "rising"}})
+        ws.send_json(
+            {
+                "type": "trace_start",
+                "paths": ["Main.Q", "Main.ET", "Main.Go"],
+                "samples": 8,
+                "trigger": {"path": "Main.Go", "condition": "rising"},
+            }
+        )
         waiting, _ = recv_until(ws, of_type("trace_data"))
         assert waiting["state"] == "waiting" and waiting["scans"] == []
         cycles(ws, 2)  # Go FALSE: nothing recorded
@@ -132,16 +151,32 @@ def test_a_ton_q_rises_at_exactly_pt_in_the_trace_of_a_rising_edge_trigger(clien
 def test_falling_and_level_crossing_triggers_start_at_the_scan_that_crosses(client: TestClient, counter: str) -> None:
     with client.websocket_connect(ws_url(counter)) as ws:
         connect(ws)
-        ws.send_json({"type": "trace_start", "paths": ["Main.Count"], "samples": 2,
-                      "trigger": {"path": "Main.Count", "condition": "cross_up", "level": 4.5}})
+        ws.send_json(
+            {
+                "type": "trace_start",
+                "paths": ["Main.Count"],
+                "samples": 2,
+                "trigger": {"path": "Main.Count", "condition": "cross_up", "level": 4.5},
+            }
+        )
         cycles(ws, 7)
         merged, _ = collect(ws, done)
         assert (merged["triggered"], merged["scans"], merged["values"]) == (
-            {"scan": 5, "time_ms": 50.0}, [5, 6], {"MAIN.COUNT": [5, 6]})
+            {"scan": 5, "time_ms": 50.0},
+            [5, 6],
+            {"MAIN.COUNT": [5, 6]},
+        )
 
         # Count is 7: exactly at the level counts as crossed (from above).
-        ws.send_json({"type": "trace_start", "id": 2, "paths": ["Main.Count"], "samples": 1,
-                      "trigger": {"path": "Main.Count", "condition": "cross_down", "level": 3}})
+        ws.send_json(
+            {
+                "type": "trace_start",
+                "id": 2,
+                "paths": ["Main.Count"],
+                "samples": 1,
+                "trigger": {"path": "Main.Count", "condition": "cross_down", "level": 3},
+            }
+        )
         cycles(ws, 1)
         ws.send_json({"type": "write", "path": "Main.Count", "value": 2})  # 8 -> 3 in the next scan
         cycles(ws, 2)
@@ -149,8 +184,15 @@ def test_falling_and_level_crossing_triggers_start_at_the_scan_that_crosses(clie
         assert (merged["triggered"], merged["values"]) == ({"scan": 9, "time_ms": 90.0}, {"MAIN.COUNT": [3]})
 
         # Scan 10 left Flag FALSE (it toggles every scan): it rises at scan 11 and falls at scan 12.
-        ws.send_json({"type": "trace_start", "id": 3, "paths": ["Main.Flag", "Main.Count"], "samples": 3,
-                      "trigger": {"path": "Main.Flag", "condition": "falling"}})
+        ws.send_json(
+            {
+                "type": "trace_start",
+                "id": 3,
+                "paths": ["Main.Flag", "Main.Count"],
+                "samples": 3,
+                "trigger": {"path": "Main.Flag", "condition": "falling"},
+            }
+        )
         cycles(ws, 4)
         merged, chunks = collect(ws, done)
         assert merged["triggered"] == {"scan": 12, "time_ms": 120.0}
@@ -185,32 +227,63 @@ def test_running_records_every_scan_without_gaps(client: TestClient, counter: st
     assert live["time_ms"] + rest["time_ms"] == [10.0 * s for s in scans]
 
 
-@pytest.mark.parametrize(("message", "code", "text"), [
-    ({"type": "trace_start", "paths": ["Main.Q"] * 21}, "bad_message",
-     "trace_start.paths: List should have at most 20 items after validation, not 21"),
-    ({"type": "trace_start", "paths": ["Main.Q"], "samples": 10_001}, "bad_message",
-     "trace_start.samples: Input should be less than or equal to 10000"),
-    ({"type": "trace_start", "paths": []}, "bad_message",
-     "trace_start.paths: List should have at least 1 item after validation, not 0"),
-    ({"type": "trace_start", "paths": ["Main.Q"], "trigger": {"path": "Main.ET", "condition": "cross_up"}},
-     "bad_message", "trace_start.trigger: Value error, a cross_up trigger needs a level"),
-    ({"type": "trace_start", "paths": ["Main.Q"], "trigger": {"path": "Main.Go", "level": 1}},
-     "bad_message", "trace_start.trigger: Value error, a rising trigger has no level (it watches a BOOL)"),
-    ({"type": "trace_start", "paths": ["Main.Name"]}, "bad_path",
-     "MAIN.NAME is not a BOOL or numeric variable: a trace records BOOL and numeric variables (trace the "
-     "elements of arrays and structures)"),
-    ({"type": "trace_start", "paths": ["Main.Numbers"]}, "bad_path",
-     "MAIN.NUMBERS is not a BOOL or numeric variable: a trace records BOOL and numeric variables (trace the "
-     "elements of arrays and structures)"),
-    ({"type": "trace_start", "paths": ["Main.Qq"]}, "bad_path", "MAIN has no variable 'Qq' - did you mean 'Q'?"),
-    ({"type": "trace_start", "paths": ["Main.Q"], "trigger": {"path": "Main.Go", "condition": "cross_down",
-                                                              "level": 1}},
-     "bad_path", "the trigger MAIN.GO is not numeric: cross_down compares a number with a level (use rising or "
-                 "falling for a BOOL)"),
-    ({"type": "trace_stop"}, "bad_state", "no trace is running: start one with trace_start"),
-])
-def test_bad_trace_requests_are_refused_with_a_clear_error(client: TestClient, timer: str, message: dict,
-                                                           code: str, text: str) -> None:
+@pytest.mark.parametrize(
+    ("message", "code", "text"),
+    [
+        (
+            {"type": "trace_start", "paths": ["Main.Q"] * 21},
+            "bad_message",
+            "trace_start.paths: List should have at most 20 items after validation, not 21",
+        ),
+        (
+            {"type": "trace_start", "paths": ["Main.Q"], "samples": 10_001},
+            "bad_message",
+            "trace_start.samples: Input should be less than or equal to 10000",
+        ),
+        (
+            {"type": "trace_start", "paths": []},
+            "bad_message",
+            "trace_start.paths: List should have at least 1 item after validation, not 0",
+        ),
+        (
+            {"type": "trace_start", "paths": ["Main.Q"], "trigger": {"path": "Main.ET", "condition": "cross_up"}},
+            "bad_message",
+            "trace_start.trigger: Value error, a cross_up trigger needs a level",
+        ),
+        (
+            {"type": "trace_start", "paths": ["Main.Q"], "trigger": {"path": "Main.Go", "level": 1}},
+            "bad_message",
+            "trace_start.trigger: Value error, a rising trigger has no level (it watches a BOOL)",
+        ),
+        (
+            {"type": "trace_start", "paths": ["Main.Name"]},
+            "bad_path",
+            "MAIN.NAME is not a BOOL or numeric variable: a trace records BOOL and numeric variables (trace the "
+            "elements of arrays and structures)",
+        ),
+        (
+            {"type": "trace_start", "paths": ["Main.Numbers"]},
+            "bad_path",
+            "MAIN.NUMBERS is not a BOOL or numeric variable: a trace records BOOL and numeric variables (trace the "
+            "elements of arrays and structures)",
+        ),
+        ({"type": "trace_start", "paths": ["Main.Qq"]}, "bad_path", "MAIN has no variable 'Qq' - did you mean 'Q'?"),
+        (
+            {
+                "type": "trace_start",
+                "paths": ["Main.Q"],
+                "trigger": {"path": "Main.Go", "condition": "cross_down", "level": 1},
+            },
+            "bad_path",
+            "the trigger MAIN.GO is not numeric: cross_down compares a number with a level (use rising or "
+            "falling for a BOOL)",
+        ),
+        ({"type": "trace_stop"}, "bad_state", "no trace is running: start one with trace_start"),
+    ],
+)
+def test_bad_trace_requests_are_refused_with_a_clear_error(
+    client: TestClient, timer: str, message: dict, code: str, text: str
+) -> None:
     with client.websocket_connect(ws_url(timer)) as ws:
         connect(ws)
         ws.send_json(message)
@@ -226,8 +299,13 @@ def test_twenty_paths_are_accepted_including_array_elements_and_times(client: Te
         ws.send_json({"type": "trace_start", "paths": paths, "samples": 1})
         cycles(ws, 1)
         merged, _ = collect(ws, done)
-    assert merged["values"] == {"MAIN.NUMBERS[1]": [0], "MAIN.NUMBERS[3]": [0], "MAIN.LEVEL": [1.5],
-                                "MAIN.ET": [0], "MAIN.NUMBERS[2]": [0]}
+    assert merged["values"] == {
+        "MAIN.NUMBERS[1]": [0],
+        "MAIN.NUMBERS[3]": [0],
+        "MAIN.LEVEL": [1.5],
+        "MAIN.ET": [0],
+        "MAIN.NUMBERS[2]": [0],
+    }
 
 
 def test_samples_a_client_does_not_take_are_capped_and_counted_as_lost() -> None:
@@ -253,10 +331,14 @@ def idle_sim():
     return build_project(counter_project()).simulation()
 
 
-@given(condition=st.sampled_from(["rising", "falling", "cross_up", "cross_down"]),
-       values=st.lists(st.integers(-3, 9), max_size=12), level=st.integers(-2, 8))
-def test_recording_starts_at_the_first_scan_whose_value_passes_the_condition(idle_sim, condition: str,
-                                                                          values: list[int], level: int) -> None:
+@given(
+    condition=st.sampled_from(["rising", "falling", "cross_up", "cross_down"]),
+    values=st.lists(st.integers(-3, 9), max_size=12),
+    level=st.integers(-2, 8),
+)
+def test_recording_starts_at_the_first_scan_whose_value_passes_the_condition(
+    idle_sim, condition: str, values: list[int], level: int
+) -> None:
     sim = idle_sim
     sim.reset(cold=True)  # values as declared; scan numbers go on
     base = sim.scan_count
@@ -272,8 +354,12 @@ def test_recording_starts_at_the_first_scan_whose_value_passes_the_condition(idl
         book.sample(sim)
     # The definition, scan by scan: the previous value is the one before the scan (7 or FALSE at first).
     previous = [7 if crossing else False] + written[:-1]
-    passes = {"rising": lambda a, b: b and not a, "falling": lambda a, b: a and not b,
-              "cross_up": lambda a, b: a < level <= b, "cross_down": lambda a, b: a > level >= b}[condition]
+    passes = {
+        "rising": lambda a, b: b and not a,
+        "falling": lambda a, b: a and not b,
+        "cross_up": lambda a, b: a < level <= b,
+        "cross_down": lambda a, b: a > level >= b,
+    }[condition]
     first = next((i for i, (a, b) in enumerate(zip(previous, written)) if passes(a, b)), None)
     chunk = book.take("client")
     assert chunk is not None

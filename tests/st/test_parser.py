@@ -31,16 +31,25 @@ N, I, B = ast.Name, ast.IntLit, ast.Binary
 # ---------------------------------------------------------------- literals (LEX-2x, LEX-3x, LEX-4x, LEX-5x)
 
 
-@pytest.mark.parametrize("text, value, base", [
-    ("14", 14, 10), ("12_548_756", 12548756, 10), ("2#10110111", 183, 2), ("8#127", 87, 8),
-    ("16#FF", 255, 16), ("16#ffff_FFFF", 0xFFFFFFFF, 16), ("0852", 852, 10),
-])
+@pytest.mark.parametrize(
+    "text, value, base",
+    [
+        ("14", 14, 10),
+        ("12_548_756", 12548756, 10),
+        ("2#10110111", 183, 2),
+        ("8#127", 87, 8),
+        ("16#FF", 255, 16),
+        ("16#ffff_FFFF", 0xFFFFFFFF, 16),
+        ("0852", 852, 10),
+    ],
+)
 def test_lex23_integer_literals(text, value, base):
     assert expr(text) == I(value, base)
 
 
-@pytest.mark.parametrize("text, value", [("-18.0", -18.0), ("0.123_4", 0.1234), ("4.47E6", 4.47e6), ("652E-2", 6.52),
-                                         ("1.5e3", 1500.0)])
+@pytest.mark.parametrize(
+    "text, value", [("-18.0", -18.0), ("0.123_4", 0.1234), ("4.47E6", 4.47e6), ("652E-2", 6.52), ("1.5e3", 1500.0)]
+)
 def test_lex23_real_literals(text, value):
     node = expr(text)
     if value < 0:
@@ -49,11 +58,18 @@ def test_lex23_real_literals(text, value):
         assert node == ast.RealLit(value)
 
 
-@pytest.mark.parametrize("text, type_name, value", [
-    ("INT#-9", "INT", I(-9)), ("USINT#8#127", "USINT", I(87, 8)), ("BYTE#16#FF", "BYTE", I(255, 16)),
-    ("REAL#2.0", "REAL", ast.RealLit(2.0)), ("BOOL#0", "BOOL", I(0)), ("BOOL#TRUE", "BOOL", ast.BoolLit(True)),
-    ("TColor#red", "TColor", N("red")),
-])
+@pytest.mark.parametrize(
+    "text, type_name, value",
+    [
+        ("INT#-9", "INT", I(-9)),
+        ("USINT#8#127", "USINT", I(87, 8)),
+        ("BYTE#16#FF", "BYTE", I(255, 16)),
+        ("REAL#2.0", "REAL", ast.RealLit(2.0)),
+        ("BOOL#0", "BOOL", I(0)),
+        ("BOOL#TRUE", "BOOL", ast.BoolLit(True)),
+        ("TColor#red", "TColor", N("red")),
+    ],
+)
 def test_lex20_typed_literals(text, type_name, value):
     assert expr(text) == ast.TypedLit(type_name, value)
 
@@ -63,11 +79,18 @@ def test_lex25_booleans_any_case(text, value):
     assert expr(text) == ast.BoolLit(value)
 
 
-@pytest.mark.parametrize("text, value", [
-    ("''", ""), ("'temperature'", "temperature"), ("'Character $'A$''", "Character 'A'"),
-    ("' End of text $0D$0A'", " End of text \r\n"), ("' Price is 12$$'", " Price is 12$"),
-    ("'$01$02$10'", "\x01\x02\x10"), ("'$L$l$N$P$R$T'", "\n\n\n\f\r\t"),
-])
+@pytest.mark.parametrize(
+    "text, value",
+    [
+        ("''", ""),
+        ("'temperature'", "temperature"),
+        ("'Character $'A$''", "Character 'A'"),
+        ("' End of text $0D$0A'", " End of text \r\n"),
+        ("' Price is 12$$'", " Price is 12$"),
+        ("'$01$02$10'", "\x01\x02\x10"),
+        ("'$L$l$N$P$R$T'", "\n\n\n\f\r\t"),
+    ],
+)
 def test_lex33_string_escapes(text, value):
     assert expr(text) == ast.StringLit(value)
 
@@ -76,21 +99,38 @@ def test_lex35_double_quoted_wstring():
     assert expr('"a$"b$0041"') == ast.StringLit('a"bA', wide=True)
 
 
-@pytest.mark.parametrize("text, ms", [
-    ("T#24ms", 24), ("t#6m1s", 361_000), ("t#8.3s", 8300), ("t#7h_24m_5s", 26_645_000), ("TIME#416ms", 416),
-    ("TIME#12h20m33s", 44_433_000), ("T#3d", 259_200_000), ("T#0s", 0), ("T#-14ms", -14), ("T#25h_15m", 90_900_000),
-    ("TIME#12:00:00", 43_200_000),
-])
+@pytest.mark.parametrize(
+    "text, ms",
+    [
+        ("T#24ms", 24),
+        ("t#6m1s", 361_000),
+        ("t#8.3s", 8300),
+        ("t#7h_24m_5s", 26_645_000),
+        ("TIME#416ms", 416),
+        ("TIME#12h20m33s", 44_433_000),
+        ("T#3d", 259_200_000),
+        ("T#0s", 0),
+        ("T#-14ms", -14),
+        ("T#25h_15m", 90_900_000),
+        ("TIME#12:00:00", 43_200_000),
+    ],
+)
 def test_lex43_durations(text, ms):
     assert expr(text) == ast.TimeLit("TIME", ms)
 
 
-@pytest.mark.parametrize("text, kind, ms", [
-    ("D#1970-01-02", "DATE", 86_400_000), ("DATE#2003-06-21", "DATE", 1_056_153_600_000),
-    ("TOD#06:32:15.08", "TIME_OF_DAY", 23_535_080), ("TIME_OF_DAY#11:38:52.35", "TIME_OF_DAY", 41_932_350),
-    ("DT#2003-06-21-11:38:52.35", "DATE_AND_TIME", 1_056_195_532_350),
-    ("DATE_AND_TIME#1970-01-01-00:00:00", "DATE_AND_TIME", 0), ("DT#1969-07-21-03:56:00", "DATE_AND_TIME", -14_155_440_000),
-])
+@pytest.mark.parametrize(
+    "text, kind, ms",
+    [
+        ("D#1970-01-02", "DATE", 86_400_000),
+        ("DATE#2003-06-21", "DATE", 1_056_153_600_000),
+        ("TOD#06:32:15.08", "TIME_OF_DAY", 23_535_080),
+        ("TIME_OF_DAY#11:38:52.35", "TIME_OF_DAY", 41_932_350),
+        ("DT#2003-06-21-11:38:52.35", "DATE_AND_TIME", 1_056_195_532_350),
+        ("DATE_AND_TIME#1970-01-01-00:00:00", "DATE_AND_TIME", 0),
+        ("DT#1969-07-21-03:56:00", "DATE_AND_TIME", -14_155_440_000),
+    ],
+)
 def test_lex52_dates_and_times_of_day(text, kind, ms):
     assert expr(text) == ast.TimeLit(kind, ms)
 
@@ -106,22 +146,28 @@ def test_lex34_bad_string_escape_is_a_located_error():
 # ---------------------------------------------------------------- expressions and precedence (ST-02, ST-03, ST-33)
 
 
-@pytest.mark.parametrize("text, shape", [
-    ("A - B - C", B("-", B("-", N("A"), N("B")), N("C"))),
-    ("A ** B ** C", B("**", B("**", N("A"), N("B")), N("C"))),
-    ("-x ** 2.0", ast.Unary("-", B("**", N("x"), ast.RealLit(2.0)))),
-    ("2 ** -1", B("**", I(2), ast.Unary("-", I(1)))),
-    ("a > b AND c < d", B("AND", B(">", N("a"), N("b")), B("<", N("c"), N("d")))),
-    ("a < b = c < d", B("=", B("<", N("a"), N("b")), B("<", N("c"), N("d")))),
-    ("A OR B AND C", B("OR", N("A"), B("AND", N("B"), N("C")))),
-    ("A XOR B AND C", B("XOR", N("A"), B("AND", N("B"), N("C")))),
-    ("A OR B XOR C", B("OR", N("A"), B("XOR", N("B"), N("C")))),
-    ("NOT A AND B", B("AND", ast.Unary("NOT", N("A")), N("B"))),
-    ("A & B", B("AND", N("A"), N("B"))),
-    ("A + B - C * ABS(D)", B("-", B("+", N("A"), N("B")), B("*", N("C"), ast.Call(N("ABS"), [ast.Arg(None, N("D"))])))),
-    ("(A + B - C) * D", B("*", B("-", B("+", N("A"), N("B")), N("C")), N("D"))),
-    ("a MOD b / c", B("/", B("MOD", N("a"), N("b")), N("c"))),
-])
+@pytest.mark.parametrize(
+    "text, shape",
+    [
+        ("A - B - C", B("-", B("-", N("A"), N("B")), N("C"))),
+        ("A ** B ** C", B("**", B("**", N("A"), N("B")), N("C"))),
+        ("-x ** 2.0", ast.Unary("-", B("**", N("x"), ast.RealLit(2.0)))),
+        ("2 ** -1", B("**", I(2), ast.Unary("-", I(1)))),
+        ("a > b AND c < d", B("AND", B(">", N("a"), N("b")), B("<", N("c"), N("d")))),
+        ("a < b = c < d", B("=", B("<", N("a"), N("b")), B("<", N("c"), N("d")))),
+        ("A OR B AND C", B("OR", N("A"), B("AND", N("B"), N("C")))),
+        ("A XOR B AND C", B("XOR", N("A"), B("AND", N("B"), N("C")))),
+        ("A OR B XOR C", B("OR", N("A"), B("XOR", N("B"), N("C")))),
+        ("NOT A AND B", B("AND", ast.Unary("NOT", N("A")), N("B"))),
+        ("A & B", B("AND", N("A"), N("B"))),
+        (
+            "A + B - C * ABS(D)",
+            B("-", B("+", N("A"), N("B")), B("*", N("C"), ast.Call(N("ABS"), [ast.Arg(None, N("D"))]))),
+        ),
+        ("(A + B - C) * D", B("*", B("-", B("+", N("A"), N("B")), N("C")), N("D"))),
+        ("a MOD b / c", B("/", B("MOD", N("a"), N("b")), N("c"))),
+    ],
+)
 def test_st03_precedence_and_associativity(text, shape):
     assert expr(text) == shape
 
@@ -137,9 +183,15 @@ def test_st10_operands_access_paths():
 
 def test_st58_formal_positional_and_output_arguments():
     call = expr("LIMIT(MN := 0, IN := x, MX => y, NOT Q => z)")
-    assert call == ast.Call(N("LIMIT"), [
-        ast.Arg("MN", I(0)), ast.Arg("IN", N("x")), ast.Arg("MX", N("y"), output=True),
-        ast.Arg("Q", N("z"), output=True, negated=True)])
+    assert call == ast.Call(
+        N("LIMIT"),
+        [
+            ast.Arg("MN", I(0)),
+            ast.Arg("IN", N("x")),
+            ast.Arg("MX", N("y"), output=True),
+            ast.Arg("Q", N("z"), output=True, negated=True),
+        ],
+    )
     assert expr("f()") == ast.Call(N("f"), [])
 
 
@@ -164,7 +216,18 @@ def test_st11_statement_table():
         EXIT; RETURN; ;;
     """)
     assert [type(s).__name__ for s in body] == [
-        "Assign", "CallStmt", "If", "Case", "For", "While", "Repeat", "Exit", "Return", "Empty", "Empty"]
+        "Assign",
+        "CallStmt",
+        "If",
+        "Case",
+        "For",
+        "While",
+        "Repeat",
+        "Exit",
+        "Return",
+        "Empty",
+        "Empty",
+    ]
     assert body[4] == ast.For(N("i"), I(0), I(10), I(2), [ast.Assign(N("j"), B("+", N("j"), N("i")))])
 
 
@@ -172,7 +235,8 @@ def test_st27_if_elsif_else_shape():
     [node] = stmts("IF c < 10 THEN r := 0; ELSIF c < 100 THEN r := 1; ELSE r := 2; END_IF;")
     assert node == ast.If(
         [(B("<", N("c"), I(10)), [ast.Assign(N("r"), I(0))]), (B("<", N("c"), I(100)), [ast.Assign(N("r"), I(1))])],
-        [ast.Assign(N("r"), I(2))])
+        [ast.Assign(N("r"), I(2))],
+    )
     [no_else] = stmts("IF c THEN END_IF;")
     assert no_else.else_body is None
 
@@ -186,9 +250,11 @@ def test_st28_case_lists_ranges_enum_labels_and_multi_statement_branches():
     ELSE r := 4;
     END_CASE;""")
     assert [b.labels for b in node.branches] == [
-        [I(10)], [I(20), I(77)],
+        [I(10)],
+        [I(20), I(77)],
         [ast.CaseRange(I(21), I(55)), ast.CaseRange(ast.Unary("-", I(5)), ast.Unary("-", I(1)))],
-        [N("red"), ast.TypedLit("TColor", N("blue"))]]
+        [N("red"), ast.TypedLit("TColor", N("blue"))],
+    ]
     assert len(node.branches[1].body) == 2
     assert node.else_body == [ast.Assign(N("r"), I(4))]
 
@@ -209,7 +275,9 @@ def test_lex02_keywords_are_case_insensitive():
 
 def test_comments_pragmas_and_line_comments_are_ignored():
     assert stmts("a := (* x *) 1; // rest\n{pragma} b := 2; /* c */") == [
-        ast.Assign(N("a"), I(1)), ast.Assign(N("b"), I(2))]
+        ast.Assign(N("a"), I(1)),
+        ast.Assign(N("b"), I(2)),
+    ]
 
 
 def test_st04_nested_comments_only_with_the_option():
@@ -224,17 +292,27 @@ def test_st04_nested_comments_only_with_the_option():
 def test_var01_names_addresses_edges_and_initial_values():
     d = decl("sb1 AT %X0.0, sb2 AT %X0.1 : BOOL;")
     assert d.names == [ast.DeclName("sb1", "%X0.0"), ast.DeclName("sb2", "%X0.1")]
-    assert decl("AT %MB121 : USINT := 242;") == ast.VarDecl([ast.DeclName(None, "%MB121")], ast.NamedType("USINT"), I(242))
+    assert decl("AT %MB121 : USINT := 242;") == ast.VarDecl(
+        [ast.DeclName(None, "%MB121")], ast.NamedType("USINT"), I(242)
+    )
     assert decl("start : BOOL R_EDGE;").edge == "R_EDGE"
 
 
 def test_var_block_kinds_and_qualifiers():
-    blocks = parse_declarations("VAR_GLOBAL RETAIN a : INT; END_VAR VAR CONSTANT PI : REAL := 3.14; END_VAR "
-                                "VAR_INPUT x : INT; END_VAR VAR_OUTPUT y : INT; END_VAR VAR_IN_OUT z : INT; END_VAR "
-                                "VAR_EXTERNAL g : INT; END_VAR VAR_TEMP t : INT; END_VAR").ast
+    blocks = parse_declarations(
+        "VAR_GLOBAL RETAIN a : INT; END_VAR VAR CONSTANT PI : REAL := 3.14; END_VAR "
+        "VAR_INPUT x : INT; END_VAR VAR_OUTPUT y : INT; END_VAR VAR_IN_OUT z : INT; END_VAR "
+        "VAR_EXTERNAL g : INT; END_VAR VAR_TEMP t : INT; END_VAR"
+    ).ast
     assert [(b.kind, b.qualifiers) for b in blocks] == [
-        ("VAR_GLOBAL", ["RETAIN"]), ("VAR", ["CONSTANT"]), ("VAR_INPUT", []), ("VAR_OUTPUT", []),
-        ("VAR_IN_OUT", []), ("VAR_EXTERNAL", []), ("VAR_TEMP", [])]
+        ("VAR_GLOBAL", ["RETAIN"]),
+        ("VAR", ["CONSTANT"]),
+        ("VAR_INPUT", []),
+        ("VAR_OUTPUT", []),
+        ("VAR_IN_OUT", []),
+        ("VAR_EXTERNAL", []),
+        ("VAR_TEMP", []),
+    ]
 
 
 def test_declaration_comment_is_attached():
@@ -250,8 +328,9 @@ def test_typ20_arrays_with_repeat_initialisers():
 
 def test_typ33_nested_struct_initialiser():
     d = decl("p : TMeasure := (lim := (low := 10, high := 100.0), failure := false);")
-    assert d.init == ast.StructInit([
-        ("lim", ast.StructInit([("low", I(10)), ("high", ast.RealLit(100.0))])), ("failure", ast.BoolLit(False))])
+    assert d.init == ast.StructInit(
+        [("lim", ast.StructInit([("low", I(10)), ("high", ast.RealLit(100.0))])), ("failure", ast.BoolLit(False))]
+    )
 
 
 def test_type_block_alias_subrange_enum_struct_pointer_string():
@@ -268,8 +347,9 @@ def test_type_block_alias_subrange_enum_struct_pointer_string():
     types = {d.name: d for d in source.ast.items[0].decls}
     assert types["TRoomTemp"] == ast.TypeDecl("TRoomTemp", ast.NamedType("REAL"), ast.RealLit(20.0))
     assert types["TSmall"].type == ast.SubrangeType("INT", I(1), I(100))
-    assert types["TPumpMode"].type == ast.EnumType([ast.EnumValue("off"), ast.EnumValue("run", I(5)),
-                                                   ast.EnumValue("fault")])
+    assert types["TPumpMode"].type == ast.EnumType(
+        [ast.EnumValue("off"), ast.EnumValue("run", I(5)), ast.EnumValue("fault")]
+    )
     assert types["TRec"].type.members[1].type == ast.SizedType("STRING", I(10))
     assert types["TPtr"].type == ast.PointerType("REF_TO", ast.NamedType("INT"))
     assert types["TOld"].type.kind == "POINTER TO"
@@ -341,9 +421,14 @@ def test_incomplete_expression_and_unterminated_comment():
 
 
 def test_one_error_per_pou_and_good_pous_survive():
-    result = parse_source("PROGRAM A\nx := ;\nEND_PROGRAM\nPROGRAM B\ny := 1 1;\nEND_PROGRAM\n"
-                          "PROGRAM C\nz := 1;\nEND_PROGRAM\n", file="lib.st")
-    assert [(d.pou, d.line, d.column, d.file) for d in result.diagnostics] == [("A", 2, 6, "lib.st"), ("B", 5, 8, "lib.st")]
+    result = parse_source(
+        "PROGRAM A\nx := ;\nEND_PROGRAM\nPROGRAM B\ny := 1 1;\nEND_PROGRAM\nPROGRAM C\nz := 1;\nEND_PROGRAM\n",
+        file="lib.st",
+    )
+    assert [(d.pou, d.line, d.column, d.file) for d in result.diagnostics] == [
+        ("A", 2, 6, "lib.st"),
+        ("B", 5, 8, "lib.st"),
+    ]
     assert [p.name for p in result.ast.pous] == ["C"]
 
 
@@ -363,8 +448,15 @@ def test_compound_statement_spans_end_with_their_end_keyword():
     """Spans of IF/CASE/FOR/WHILE/REPEAT cover their END_x (breakpoints and monitoring highlight the whole statement)."""
     from ladderlab.st.parser import parse_statements
 
-    result = parse_statements("IF a THEN\n  b := 1;\nEND_IF;\nWHILE a DO\n x:=1;\nEND_WHILE;\n"
-                              "CASE x OF 1: y := 2; END_CASE;\nFOR i := 1 TO 2 DO END_FOR;\n"
-                              "REPEAT x := 1; UNTIL TRUE END_REPEAT;")
+    result = parse_statements(
+        "IF a THEN\n  b := 1;\nEND_IF;\nWHILE a DO\n x:=1;\nEND_WHILE;\n"
+        "CASE x OF 1: y := 2; END_CASE;\nFOR i := 1 TO 2 DO END_FOR;\n"
+        "REPEAT x := 1; UNTIL TRUE END_REPEAT;"
+    )
     assert [(s.span.line, s.span.end_line, s.span.end_column) for s in result.ast] == [
-        (1, 3, 7), (4, 6, 10), (7, 7, 30), (8, 8, 27), (9, 9, 37)]
+        (1, 3, 7),
+        (4, 6, 10),
+        (7, 7, 30),
+        (8, 8, 27),
+        (9, 9, 37),
+    ]

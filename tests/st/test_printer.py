@@ -8,22 +8,62 @@ from ladderlab.st.parser import parse_expression, parse_source
 from ladderlab.st.printer import print_expression, print_source
 
 
-@pytest.mark.parametrize("text", [
-    "A + B - C * ABS(D)", "(A + B - C) * ABS(D)", "A - (B - C)", "A ** B ** C", "A ** (B ** C)", "-2 ** 2",
-    "(-2) ** 2", "2 ** -1", "NOT (A AND B)", "NOT A AND B", "(A OR B) AND C", "a < b = c < d",
-    "T1.Q", "arr[i, j + 1].f^", "f(IN1 := 1, IN2 := x)", "t(IN := s, Q => q, NOT ET => e)", "INT#-9",
-    "16#FF", "2#101", "8#17", "T#1h30m", "T#-500ms", "TOD#06:32:15.080", "D#2003-06-21",
-    "DT#2003-06-21-11:38:52.350", "'it$'s $$5$N'", '"wide $"x$"" ', "%IX0.1",
-])
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A + B - C * ABS(D)",
+        "(A + B - C) * ABS(D)",
+        "A - (B - C)",
+        "A ** B ** C",
+        "A ** (B ** C)",
+        "-2 ** 2",
+        "(-2) ** 2",
+        "2 ** -1",
+        "NOT (A AND B)",
+        "NOT A AND B",
+        "(A OR B) AND C",
+        "a < b = c < d",
+        "T1.Q",
+        "arr[i, j + 1].f^",
+        "f(IN1 := 1, IN2 := x)",
+        "t(IN := s, Q => q, NOT ET => e)",
+        "INT#-9",
+        "16#FF",
+        "2#101",
+        "8#17",
+        "T#1h30m",
+        "T#-500ms",
+        "TOD#06:32:15.080",
+        "D#2003-06-21",
+        "DT#2003-06-21-11:38:52.350",
+        "'it$'s $$5$N'",
+        '"wide $"x$"" ',
+        "%IX0.1",
+    ],
+)
 def test_expressions_print_canonically(text):
     printed = print_expression(parse_expression(text).ast)
     assert printed == text.strip()
 
 
-@pytest.mark.parametrize("text, canonical", [
-    ("((a))", "a"), ("(A ** B) ** C", "A ** B ** C"), ("-(2 ** 2)", "-2 ** 2"), ("a < b = (c < d)", "a < b = c < d"), ("a & b", "a AND b"), ("not a", "NOT a"), ("t#7h_24m_5s", "T#7h24m5s"), ("12_548_756", "12548756"),
-    ("TIME#0.5s", "T#500ms"), ("+x", "x"), ("16#ff", "16#FF"), ("4.47E6", "4470000.0"), ("TOD#10:30:00.0", "TOD#10:30:00"),
-])
+@pytest.mark.parametrize(
+    "text, canonical",
+    [
+        ("((a))", "a"),
+        ("(A ** B) ** C", "A ** B ** C"),
+        ("-(2 ** 2)", "-2 ** 2"),
+        ("a < b = (c < d)", "a < b = c < d"),
+        ("a & b", "a AND b"),
+        ("not a", "NOT a"),
+        ("t#7h_24m_5s", "T#7h24m5s"),
+        ("12_548_756", "12548756"),
+        ("TIME#0.5s", "T#500ms"),
+        ("+x", "x"),
+        ("16#ff", "16#FF"),
+        ("4.47E6", "4470000.0"),
+        ("TOD#10:30:00.0", "TOD#10:30:00"),
+    ],
+)
 def test_equivalent_spellings_normalise(text, canonical):
     assert print_expression(parse_expression(text).ast) == canonical
 

@@ -17,7 +17,7 @@ literals = st.one_of(
     st.builds(ast.RealLit, st.floats(0, 1e30, allow_nan=False, allow_infinity=False)),
     st.builds(ast.BoolLit, st.booleans()),
     st.builds(ast.StringLit, st.text(alphabet="ab $'\"\n\t\rzé", max_size=8), st.booleans()),
-    st.builds(ast.TimeLit, st.just("TIME"), st.integers(-10**9, 10**9)),
+    st.builds(ast.TimeLit, st.just("TIME"), st.integers(-(10**9), 10**9)),
     st.builds(ast.TimeLit, st.just("DATE"), st.integers(-3000, 30000).map(lambda d: d * 86_400_000)),
     st.builds(ast.TimeLit, st.just("TIME_OF_DAY"), st.integers(0, 86_399_999)),
     st.builds(ast.TimeLit, st.just("DATE_AND_TIME"), st.integers(0, 2 * 10**12)),
@@ -28,6 +28,7 @@ names = st.builds(ast.Name, NAMES)
 
 def _accesses(expressions):
     """Variable access paths over ``expressions`` (the grammar only allows them as bases of . [] ^ ())."""
+
     def extend(base):
         return st.one_of(
             st.builds(ast.Member, base, NAMES),
@@ -35,14 +36,18 @@ def _accesses(expressions):
             st.builds(ast.Deref, base),
             st.builds(ast.Call, base, _args(expressions)),
         )
+
     return st.recursive(names, extend, max_leaves=4)
 
 
 def _args(expressions):
-    formal = st.lists(st.one_of(
-        st.builds(ast.Arg, NAMES, expressions),
-        st.builds(lambda n, v, neg: ast.Arg(n, v, output=True, negated=neg), NAMES, names, st.booleans())),
-        max_size=3)
+    formal = st.lists(
+        st.one_of(
+            st.builds(ast.Arg, NAMES, expressions),
+            st.builds(lambda n, v, neg: ast.Arg(n, v, output=True, negated=neg), NAMES, names, st.booleans()),
+        ),
+        max_size=3,
+    )
     positional = st.lists(st.builds(ast.Arg, st.none(), expressions), max_size=3)
     return st.one_of(formal, positional)
 
@@ -62,18 +67,30 @@ def _statements(depth: int):
     simple = st.one_of(
         st.builds(ast.Assign, _accesses(expressions), expressions),
         st.builds(ast.CallStmt, st.builds(ast.Call, names, _args(expressions))),
-        st.builds(ast.Exit), st.builds(ast.Return), st.builds(ast.Empty),
+        st.builds(ast.Exit),
+        st.builds(ast.Return),
+        st.builds(ast.Empty),
     )
     if depth == 0:
         return simple
     body = st.lists(_statements(depth - 1), max_size=3)
-    labels = st.lists(st.one_of(st.builds(ast.IntLit, st.integers(0, 99)), names,
-                                st.builds(ast.CaseRange, st.builds(ast.IntLit, st.integers(0, 9)),
-                                          st.builds(ast.IntLit, st.integers(10, 99)))), min_size=1, max_size=3)
+    labels = st.lists(
+        st.one_of(
+            st.builds(ast.IntLit, st.integers(0, 99)),
+            names,
+            st.builds(
+                ast.CaseRange, st.builds(ast.IntLit, st.integers(0, 9)), st.builds(ast.IntLit, st.integers(10, 99))
+            ),
+        ),
+        min_size=1,
+        max_size=3,
+    )
     return st.one_of(
         simple,
         st.builds(ast.If, st.lists(st.tuples(expressions, body), min_size=1, max_size=3), st.none() | body),
-        st.builds(ast.Case, expressions, st.lists(st.builds(ast.CaseBranch, labels, body), max_size=3), st.none() | body),
+        st.builds(
+            ast.Case, expressions, st.lists(st.builds(ast.CaseBranch, labels, body), max_size=3), st.none() | body
+        ),
         st.builds(ast.For, names, expressions, expressions, st.none() | expressions, body),
         st.builds(ast.While, expressions, body),
         st.builds(ast.Repeat, body, expressions),
@@ -84,17 +101,38 @@ statements = st.lists(_statements(2), max_size=4)
 type_specs = st.one_of(
     st.builds(ast.NamedType, st.sampled_from(["INT", "BOOL", "TON", "TColor"])),
     st.builds(ast.SizedType, st.just("STRING"), st.builds(ast.IntLit, st.integers(1, 255))),
-    st.builds(ast.ArrayType, st.lists(st.tuples(st.builds(ast.IntLit, st.integers(0, 5)),
-                                                st.builds(ast.IntLit, st.integers(5, 9))), min_size=1, max_size=3),
-              st.builds(ast.NamedType, st.just("REAL"))),
+    st.builds(
+        ast.ArrayType,
+        st.lists(
+            st.tuples(st.builds(ast.IntLit, st.integers(0, 5)), st.builds(ast.IntLit, st.integers(5, 9))),
+            min_size=1,
+            max_size=3,
+        ),
+        st.builds(ast.NamedType, st.just("REAL")),
+    ),
     st.builds(ast.PointerType, st.sampled_from(["REF_TO", "POINTER TO"]), st.builds(ast.NamedType, st.just("INT"))),
 )
-var_decls = st.builds(ast.VarDecl, st.lists(st.builds(ast.DeclName, NAMES), min_size=1, max_size=2), type_specs,
-                      st.none() | expressions, st.sampled_from([None, "R_EDGE"]))
-var_blocks = st.builds(ast.VarBlock, st.sampled_from(["VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_TEMP"]),
-                       st.sampled_from([[], ["CONSTANT"], ["RETAIN"]]), st.lists(var_decls, max_size=3))
-pous = st.builds(ast.Pou, st.sampled_from(["PROGRAM", "FUNCTION_BLOCK"]), NAMES, st.none(),
-                 st.lists(var_blocks, max_size=2), statements)
+var_decls = st.builds(
+    ast.VarDecl,
+    st.lists(st.builds(ast.DeclName, NAMES), min_size=1, max_size=2),
+    type_specs,
+    st.none() | expressions,
+    st.sampled_from([None, "R_EDGE"]),
+)
+var_blocks = st.builds(
+    ast.VarBlock,
+    st.sampled_from(["VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_TEMP"]),
+    st.sampled_from([[], ["CONSTANT"], ["RETAIN"]]),
+    st.lists(var_decls, max_size=3),
+)
+pous = st.builds(
+    ast.Pou,
+    st.sampled_from(["PROGRAM", "FUNCTION_BLOCK"]),
+    NAMES,
+    st.none(),
+    st.lists(var_blocks, max_size=2),
+    statements,
+)
 
 
 @given(expressions)
@@ -137,13 +175,20 @@ END_FUNCTION_BLOCK
 """
 
 
-@given(st.lists(st.tuples(st.integers(0, len(VALID)), st.integers(0, 6),
-                          st.sampled_from(["", ";", "(", ")", "END_IF", "'", "(*", ":=", "x", "\n", "[", "."])),
-                max_size=4))
+@given(
+    st.lists(
+        st.tuples(
+            st.integers(0, len(VALID)),
+            st.integers(0, 6),
+            st.sampled_from(["", ";", "(", ")", "END_IF", "'", "(*", ":=", "x", "\n", "[", "."]),
+        ),
+        max_size=4,
+    )
+)
 def test_mutated_sources_give_diagnostics_never_exceptions(edits):
     text = VALID
     for position, length, insert in edits:
-        text = text[:position] + insert + text[position + length:]
+        text = text[:position] + insert + text[position + length :]
     result = parse_source(text)
     assert result.ast is not None or result.diagnostics
     assert all(d.line is not None for d in result.diagnostics)

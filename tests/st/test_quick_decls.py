@@ -22,8 +22,24 @@ KINDS = st.sampled_from(["VAR", "var_input", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_GL
 BLANK = st.sampled_from([" ", "  ", "\t", "\n", "\r\n", "\n\n    ", " \f "])
 GAP = st.one_of(st.just(""), BLANK)
 # Pieces only the parser reads: the quick reader must decline every text containing one.
-OTHER = st.sampled_from(["(* note *)", "// note", ":= TRUE", "AT %IX0.0", "R_EDGE", "[80]", "IF", "END_IF",
-                         "{pragma}", ";", ":", "1", "'s'", "ON"])
+OTHER = st.sampled_from(
+    [
+        "(* note *)",
+        "// note",
+        ":= TRUE",
+        "AT %IX0.0",
+        "R_EDGE",
+        "[80]",
+        "IF",
+        "END_IF",
+        "{pragma}",
+        ";",
+        ":",
+        "1",
+        "'s'",
+        "ON",
+    ]
+)
 
 
 @st.composite
@@ -80,8 +96,15 @@ def test_plain_blocks_are_read_without_the_parser():
 
 
 def test_anything_else_goes_to_the_parser_with_its_diagnostics():
-    for text in ["VAR a : BOOL := TRUE; END_VAR", "VAR a : BOOL; (* x *) END_VAR", "VAR a : BOOL END_VAR",
-                 "VAR if : BOOL; END_VAR", "VAR a : STRING[10]; END_VAR", "VAR a : BOOL;", "a : BOOL;"]:
+    for text in [
+        "VAR a : BOOL := TRUE; END_VAR",
+        "VAR a : BOOL; (* x *) END_VAR",
+        "VAR a : BOOL END_VAR",
+        "VAR if : BOOL; END_VAR",
+        "VAR a : STRING[10]; END_VAR",
+        "VAR a : BOOL;",
+        "a : BOOL;",
+    ]:
         assert quick_declarations(text, _keywords()) is None, text
     result = parse_declarations("VAR\n  a : BOOL\n  b : INT;\nEND_VAR")
     assert [(d.code, d.line) for d in result.diagnostics] == [("ST-PARSE", 2)]  # the missing ";"

@@ -32,8 +32,10 @@ def test_example_parses_and_checks_without_errors(example_id):
 
 @pytest.mark.parametrize("example_id", [k for k, v in EXAMPLES.items() if v["check"] == "errors"])
 def test_example_as_printed_gives_the_stated_error(example_id):
-    found = [{"code": d.code, "line": d.line, "column": d.column, "message": d.message}
-             for d in _diagnostics(EXAMPLES[example_id])]
+    found = [
+        {"code": d.code, "line": d.line, "column": d.column, "message": d.message}
+        for d in _diagnostics(EXAMPLES[example_id])
+    ]
     assert found == EXAMPLES[example_id]["diagnostics"]
 
 

@@ -4,13 +4,22 @@ from ladderlab.iec import stdlib
 
 
 def test_sfb01_fb_pins_are_the_iec_names():
-    pins = {name: ([p.name for p in fb.inputs], [p.name for p in fb.outputs])
-            for name, fb in stdlib.FUNCTION_BLOCKS.items() if name.count("_") == 0 or name.endswith("TRIG")}
+    pins = {
+        name: ([p.name for p in fb.inputs], [p.name for p in fb.outputs])
+        for name, fb in stdlib.FUNCTION_BLOCKS.items()
+        if name.count("_") == 0 or name.endswith("TRIG")
+    }
     assert pins == {
-        "SR": (["S1", "R"], ["Q1"]), "RS": (["S", "R1"], ["Q1"]), "R_TRIG": (["CLK"], ["Q"]),
-        "F_TRIG": (["CLK"], ["Q"]), "CTU": (["CU", "R", "PV"], ["Q", "CV"]), "CTD": (["CD", "LD", "PV"], ["Q", "CV"]),
-        "CTUD": (["CU", "CD", "R", "LD", "PV"], ["QU", "QD", "CV"]), "TP": (["IN", "PT"], ["Q", "ET"]),
-        "TON": (["IN", "PT"], ["Q", "ET"]), "TOF": (["IN", "PT"], ["Q", "ET"]),
+        "SR": (["S1", "R"], ["Q1"]),
+        "RS": (["S", "R1"], ["Q1"]),
+        "R_TRIG": (["CLK"], ["Q"]),
+        "F_TRIG": (["CLK"], ["Q"]),
+        "CTU": (["CU", "R", "PV"], ["Q", "CV"]),
+        "CTD": (["CD", "LD", "PV"], ["Q", "CV"]),
+        "CTUD": (["CU", "CD", "R", "LD", "PV"], ["QU", "QD", "CV"]),
+        "TP": (["IN", "PT"], ["Q", "ET"]),
+        "TON": (["IN", "PT"], ["Q", "ET"]),
+        "TOF": (["IN", "PT"], ["Q", "ET"]),
     }
     assert stdlib.function_block("ctu").inputs[0].edge == "R_EDGE"
 
@@ -20,7 +29,12 @@ def test_st23_typed_counters_have_their_cv_type_and_match_the_runtime():
 
     ctd = stdlib.function_block("CTD_DINT")
     assert [(p.name, p.type) for p in ctd.inputs + ctd.outputs] == [
-        ("CD", "BOOL"), ("LD", "BOOL"), ("PV", "DINT"), ("Q", "BOOL"), ("CV", "DINT")]
+        ("CD", "BOOL"),
+        ("LD", "BOOL"),
+        ("PV", "DINT"),
+        ("Q", "BOOL"),
+        ("CV", "DINT"),
+    ]
     assert set(stdlib.FUNCTION_BLOCKS) == set(STANDARD_FBS)
 
 
@@ -44,7 +58,10 @@ def test_fun03_extensible_inputs_are_numbered_on():
 
 def test_fun05_formal_names_and_families():
     assert [(p.name, p.type, p.generic) for p in stdlib.function("LIMIT").inputs] == [
-        ("MN", "ANY", True), ("IN", "ANY", True), ("MX", "ANY", True)]
+        ("MN", "ANY", True),
+        ("IN", "ANY", True),
+        ("MX", "ANY", True),
+    ]
     assert [(p.name, p.type) for p in stdlib.function("SHL").inputs] == [("IN", "ANY_BIT"), ("N", "ANY_INT")]
     assert stdlib.function("EXPT").inputs[1].generic is False
     assert stdlib.function("MULTIME").result == stdlib.function("MUL_TIME").result == "TIME"

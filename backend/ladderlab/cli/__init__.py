@@ -38,10 +38,10 @@ def _parser() -> argparse.ArgumentParser:
     serve = sub.add_parser("serve", help="start the web app and API server")
     serve.add_argument("--host", default="127.0.0.1")
     serve.add_argument("--port", type=int, default=8000)
-    serve.add_argument("--workspace", type=Path, default=None,
-                       help="project folder (default: $LADDERLAB_WORKSPACE or ./workspace)")
-    serve.add_argument("--allow-remote", action="store_true",
-                       help="required to bind to an address other than loopback")
+    serve.add_argument(
+        "--workspace", type=Path, default=None, help="project folder (default: $LADDERLAB_WORKSPACE or ./workspace)"
+    )
+    serve.add_argument("--allow-remote", action="store_true", help="required to bind to an address other than loopback")
     serve.set_defaults(func=_serve)
 
     check = sub.add_parser("check", help="load and check a project, print diagnostics")
@@ -53,13 +53,28 @@ def _parser() -> argparse.ArgumentParser:
     run.add_argument("project", type=Path, help="project folder, project .json file or .st file")
     length = run.add_mutually_exclusive_group()
     length.add_argument("--cycles", type=int, default=None, metavar="N", help="number of scans (default 1)")
-    length.add_argument("--for", dest="for_", default=None, metavar="DURATION",
-                        help="run every scan due within this virtual time, e.g. 2s or T#500ms")
-    run.add_argument("--set", dest="sets", action="append", default=[], metavar="PATH=VALUE[@SCAN]",
-                     help="write VALUE (IEC literal) to PATH before scan SCAN (default 0); repeatable")
-    run.add_argument("--watch", action="append", default=[], metavar="PATH",
-                     help="print this variable after every scan (MAIN.x, GVL.y, y, MAIN.T1.Q, MAIN.a[3]); "
-                          "default: every variable")
+    length.add_argument(
+        "--for",
+        dest="for_",
+        default=None,
+        metavar="DURATION",
+        help="run every scan due within this virtual time, e.g. 2s or T#500ms",
+    )
+    run.add_argument(
+        "--set",
+        dest="sets",
+        action="append",
+        default=[],
+        metavar="PATH=VALUE[@SCAN]",
+        help="write VALUE (IEC literal) to PATH before scan SCAN (default 0); repeatable",
+    )
+    run.add_argument(
+        "--watch",
+        action="append",
+        default=[],
+        metavar="PATH",
+        help="print this variable after every scan (MAIN.x, GVL.y, y, MAIN.T1.Q, MAIN.a[3]); default: every variable",
+    )
     run.add_argument("--format", choices=["table", "jsonl"], default="table")
     run.set_defaults(func=_run)
 
@@ -79,8 +94,9 @@ def _parser() -> argparse.ArgumentParser:
     import_ = sub.add_parser("import", help="import a PLCopen XML project into a workspace")
     import_.add_argument("format", choices=["plcopen"])
     import_.add_argument("file", type=Path)
-    import_.add_argument("--into", type=Path, default=None,
-                         help="workspace folder (default: $LADDERLAB_WORKSPACE or ./workspace)")
+    import_.add_argument(
+        "--into", type=Path, default=None, help="workspace folder (default: $LADDERLAB_WORKSPACE or ./workspace)"
+    )
     import_.add_argument("--name", default=None, help="project name (default: the document's, else the file name)")
     import_.set_defaults(func=_import)
 
@@ -226,8 +242,7 @@ def _serve(args: argparse.Namespace) -> int:
         if not args.allow_remote:
             print(f"refusing to bind to {args.host}: pass --allow-remote to serve other machines", file=sys.stderr)
             return EXIT_USAGE
-        print(f"WARNING: serving on {args.host}; anyone who can reach it can edit and run projects",
-              file=sys.stderr)
+        print(f"WARNING: serving on {args.host}; anyone who can reach it can edit and run projects", file=sys.stderr)
     workspace = Workspace(args.workspace or Path(os.environ.get("LADDERLAB_WORKSPACE", "workspace")))
     seeded = seed_workspace(workspace)
     if seeded:
@@ -235,4 +250,3 @@ def _serve(args: argparse.Namespace) -> int:
     print(f"LadderLab on http://{args.host}:{args.port}/ (workspace {workspace.root})")
     uvicorn.run(create_app(workspace), host=args.host, port=args.port, log_level="warning")
     return EXIT_OK
-

@@ -57,8 +57,9 @@ class Row:
     values: dict[str, object]
 
 
-def run_scans(sim: Simulation, *, watch: list[str], sets: list[SetAction], cycles: int | None = None,
-              for_ms: float | None = None) -> Iterator[Row]:
+def run_scans(
+    sim: Simulation, *, watch: list[str], sets: list[SetAction], cycles: int | None = None, for_ms: float | None = None
+) -> Iterator[Row]:
     """Yield a Row after every scan; stops early after a scan that faulted (``sim.fault`` says why).
 
     ``cycles`` scans, or every scan due within ``for_ms`` of virtual time. Paths are
@@ -100,8 +101,9 @@ def json_value(value: object) -> object:
 
 
 def jsonl_line(row: Row) -> str:
-    return json.dumps({"scan": row.scan, "time_ms": _number(row.time_ms),
-                       **{path: json_value(v) for path, v in row.values.items()}})
+    return json.dumps(
+        {"scan": row.scan, "time_ms": _number(row.time_ms), **{path: json_value(v) for path, v in row.values.items()}}
+    )
 
 
 def table_lines(rows: Iterator[Row], watch: list[str]) -> Iterator[str]:
@@ -109,8 +111,7 @@ def table_lines(rows: Iterator[Row], watch: list[str]) -> Iterator[str]:
     header = ["scan", "time_ms", *watch]
     widths: list[int] | None = None
     for row in rows:
-        cells = [str(row.scan), str(_number(row.time_ms)),
-                 *(json.dumps(json_value(row.values[p])) for p in watch)]
+        cells = [str(row.scan), str(_number(row.time_ms)), *(json.dumps(json_value(row.values[p])) for p in watch)]
         if widths is None:
             widths = [max(len(h), len(c)) for h, c in zip(header, cells)]
             yield "  ".join(h.ljust(w) for h, w in zip(header, widths)).rstrip()

@@ -59,12 +59,12 @@ class CompiledProgram:
     @property
     def declarations(self) -> str:
         """The variant-independent part of the source (classes, globals, probe lists)."""
-        return self.generated.source[:self.generated.pieces[self.generated.code_from][1]]
+        return self.generated.source[: self.generated.pieces[self.generated.code_from][1]]
 
     def namespace(self) -> dict[str, object]:
         """Execute the module in fresh globals: classes, functions and (uninitialised) globals objects."""
         ns = namespace()
-        for code in self.pieces[:self.generated.code_from]:
+        for code in self.pieces[: self.generated.code_from]:
             exec(code, ns)  # noqa: S102 - our own generated source, names validated (codegen.names)
         self.install(ns)
         return ns
@@ -73,7 +73,7 @@ class CompiledProgram:
         """Put this variant's code into ``ns``, replacing another variant's (same declarations) between scans."""
         ns.update(self.generated.bound)
         ns["ll_halt"] = [False] * len(self.generated.pauses)
-        for code in self.pieces[self.generated.code_from:]:
+        for code in self.pieces[self.generated.code_from :]:
             exec(code, ns)  # noqa: S102
 
 
@@ -86,8 +86,9 @@ def compile_program(program: ir.Program, variant: str = "fast") -> CompiledProgr
             raise CompileError(diagnostics)
         filename = f"<ladderlab-{variant}-{next(_serial)}>"
         try:
-            pieces = tuple(_compile_piece(generated.source[start:end], first, filename)
-                           for first, start, end in generated.pieces)
+            pieces = tuple(
+                _compile_piece(generated.source[start:end], first, filename) for first, start, end in generated.pieces
+            )
         except (SyntaxError, RecursionError, MemoryError, ValueError) as error:  # e.g. nesting beyond CPython's limits
             raise CompileError([diagnostic(f"the generated code does not compile: {error}", None)]) from None
     return CompiledProgram(program, generated, pieces, filename)

@@ -46,8 +46,9 @@ class Debugger:
     def pause_points(self, pou: str | None = None) -> list[PausePoint]:
         return [p for p in self.points if pou is None or p.origin.pou.upper() == pou.upper()]
 
-    def find(self, pou: str, *, line: int | None = None, network: str | None = None,
-             element: str | None = None) -> list[int]:
+    def find(
+        self, pou: str, *, line: int | None = None, network: str | None = None, element: str | None = None
+    ) -> list[int]:
         """Pause points of a breakpoint on an ST line, an LD/FBD network or an element (exactly one given)."""
         if sum(x is not None for x in (line, network, element)) != 1:
             raise ValueError("give exactly one of line, network, element")
@@ -57,7 +58,10 @@ class Debugger:
             raise ValueError(f"no POU {pou!r} with pause points (known: {', '.join(known) or 'none'})")
         if line is not None:
             found = [p.id for p in points if p.kind == "statement" and p.origin.line == line]
-            what, options = f"statement at line {line}", sorted({p.origin.line for p in points if p.kind == "statement"})
+            what, options = (
+                f"statement at line {line}",
+                sorted({p.origin.line for p in points if p.kind == "statement"}),
+            )
         elif network is not None:
             found = [p.id for p in points if p.kind == "network" and p.origin.network == network]
             what, options = f"network {network!r}", sorted({p.origin.network for p in points if p.kind == "network"})

@@ -183,7 +183,9 @@ class Resolver:
                 layout = self.context.layouts[user.name.upper()]
                 inner = layout.get(member)
                 if inner is None:
-                    raise UnknownPath(f"{path} ({ty.fb}) has no variable {member!r}{did_you_mean(member, _visible(layout))}")
+                    raise UnknownPath(
+                        f"{path} ({ty.fb}) has no variable {member!r}{did_you_mean(member, _visible(layout))}"
+                    )
                 step = (inner.attr,) if inner.page == 0 else (f"ll_p{inner.page}", inner.attr)
                 deref = (_DEREF,) if inner.slot.var_class == "VAR_IN_OUT" else ()
                 return f"{path}.{inner.slot.name}", inner.slot.type, (*keys, *step, *deref)
@@ -209,7 +211,7 @@ class Resolver:
             if not lo <= index <= hi:
                 raise ValueError(f"index {index} of {path} is outside {lo}..{hi}")
             keys = (*keys, index - lo)
-        rest = ty.dims[len(indices):]
+        rest = ty.dims[len(indices) :]
         return f"{path}[{', '.join(map(str, indices))}]", (t.Array(ty.element, rest) if rest else ty.element), keys
 
 
@@ -339,8 +341,10 @@ class LocationReader:
                 groups.setdefault((location.root, location.keys[:-1]), []).append((path, last, plain_type))
             else:
                 self.single.append((path, location))
-        self.groups = [(root, Location("", t.Elementary("BOOL"), root, parent) if parent else None, members)
-                       for (root, parent), members in groups.items()]
+        self.groups = [
+            (root, Location("", t.Elementary("BOOL"), root, parent) if parent else None, members)
+            for (root, parent), members in groups.items()
+        ]
 
     def read(self) -> dict[str, object]:
         values: dict[str, object] = {}

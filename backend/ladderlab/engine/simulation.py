@@ -72,8 +72,14 @@ class ProbeView:
 
 
 class Simulation:
-    def __init__(self, program: ir.Program | CompiledProgram, *, variant: str | None = None,
-                 watchdog_s: float | dict[str, float] = 1.0, wall_clock: Callable[[], float] = time.perf_counter) -> None:
+    def __init__(
+        self,
+        program: ir.Program | CompiledProgram,
+        *,
+        variant: str | None = None,
+        watchdog_s: float | dict[str, float] = 1.0,
+        wall_clock: Callable[[], float] = time.perf_counter,
+    ) -> None:
         if isinstance(program, CompiledProgram):
             if variant is not None and variant != program.variant:
                 raise ValueError(f"the program was compiled as the {program.variant} variant, not {variant}")
@@ -121,8 +127,10 @@ class Simulation:
         if variant == self.variant:
             return
         if {variant, self.variant} != {"monitor", "debug"}:
-            raise ValueError(f"a simulation switches between the monitor and the debug variant only, "
-                             f"not from {self.variant} to {variant}")
+            raise ValueError(
+                f"a simulation switches between the monitor and the debug variant only, "
+                f"not from {self.variant} to {variant}"
+            )
         if self.halted is not None:
             raise RuntimeError("the simulation is halted: resume(), step() or reset() first")
         if compiled is None:
@@ -138,8 +146,11 @@ class Simulation:
         self._attach_debugger()
 
     def _attach_debugger(self) -> None:
-        self.debugger = (Debugger(self.compiled.generated.pauses, self._ns["ll_halt"])  # type: ignore[arg-type]
-                         if self.variant == "debug" else None)
+        self.debugger = (
+            Debugger(self.compiled.generated.pauses, self._ns["ll_halt"])  # type: ignore[arg-type]
+            if self.variant == "debug"
+            else None
+        )
 
     # ------------------------------------------------------------------ state
 
@@ -262,8 +273,9 @@ class Simulation:
         self._busy += self._clock() - start
         self._watchdog_left = self._watchdog.pause()
         point = self.compiled.generated.pauses[pid]
-        self.halted = Halt(point, self._instance_path(instance) if instance is not None else None,
-                           self.debugger.reason(pid))  # type: ignore[union-attr]
+        self.halted = Halt(
+            point, self._instance_path(instance) if instance is not None else None, self.debugger.reason(pid)
+        )  # type: ignore[union-attr]
         self.debugger.arm(None)  # type: ignore[union-attr]
         return False
 
@@ -274,8 +286,18 @@ class Simulation:
 
     def _fault(self, task: Task, error: Exception, now: float) -> None:
         task.stopped = True
-        self.faults.append(make_fault(error, self.compiled.generated, self.compiled.filename, self._ns, task=task.name,
-                                      time_ms=now, scan=self.scan_count, instance_path=self._instance_path))
+        self.faults.append(
+            make_fault(
+                error,
+                self.compiled.generated,
+                self.compiled.filename,
+                self._ns,
+                task=task.name,
+                time_ms=now,
+                scan=self.scan_count,
+                instance_path=self._instance_path,
+            )
+        )
 
     # ------------------------------------------------------------------ debugging
 
@@ -310,13 +332,15 @@ class Simulation:
         self._drive()
         return self.halted
 
-    def set_breakpoint(self, pou: str, *, line: int | None = None, network: str | None = None,
-                       element: str | None = None) -> list[int]:
+    def set_breakpoint(
+        self, pou: str, *, line: int | None = None, network: str | None = None, element: str | None = None
+    ) -> list[int]:
         """Halt before an ST statement (line), an LD/FBD network, or at an element; returns the pause point ids."""
         return self._debugging().add_breakpoint(pou, line=line, network=network, element=element)
 
-    def clear_breakpoint(self, pou: str, *, line: int | None = None, network: str | None = None,
-                         element: str | None = None) -> None:
+    def clear_breakpoint(
+        self, pou: str, *, line: int | None = None, network: str | None = None, element: str | None = None
+    ) -> None:
         self._debugging().remove_breakpoint(pou, line=line, network=network, element=element)
 
     def clear_breakpoints(self) -> None:
@@ -340,8 +364,10 @@ class Simulation:
         else:
             found = self._instances_by_path().get(key)
             if found is None:
-                known = [*self._instance_paths().values(),
-                         *(p.name for p in self._context.pous.values() if p.kind == "function")]
+                known = [
+                    *self._instance_paths().values(),
+                    *(p.name for p in self._context.pous.values() if p.kind == "function"),
+                ]
                 raise UnknownPath(f"no POU instance {instance!r}{did_you_mean(instance, known)}")
             obj, pou_key = found
             table = self.compiled.generated.context.probes_of(pou_key)
@@ -354,8 +380,12 @@ class Simulation:
                     values[index] = constant
         return ProbeView(
             {element: value for element, value in zip(table.elements, values) if value is not UNSET},
-            frozenset(element for element, groups in zip(table.elements, table.groups)
-                      if any(stamps[g] == self._stamp for g in groups)))
+            frozenset(
+                element
+                for element, groups in zip(table.elements, table.groups)
+                if any(stamps[g] == self._stamp for g in groups)
+            ),
+        )
 
     def _read_deferred(self, obj: object, table: ProbeTable) -> None:
         """Fill in the probes the monitor code reads after the scan (codegen/deferred.py); never-run ones stay unset."""

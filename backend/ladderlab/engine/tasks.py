@@ -55,13 +55,19 @@ def validate_tasks(program: ir.Program) -> list[Diagnostic]:
         if task.name.upper() in names:
             diagnostics.append(_error(f"task {task.name} is declared twice"))
         names.add(task.name.upper())
-        if not (isinstance(task.interval_ms, (int, float)) and task.interval_ms > 0 and math.isfinite(task.interval_ms)):
-            diagnostics.append(_error(f"task {task.name}: the interval must be a positive time, not {task.interval_ms!r} ms"))
+        if not (
+            isinstance(task.interval_ms, (int, float)) and task.interval_ms > 0 and math.isfinite(task.interval_ms)
+        ):
+            diagnostics.append(
+                _error(f"task {task.name}: the interval must be a positive time, not {task.interval_ms!r} ms")
+            )
         for name in task.programs:
             key = name.upper()
             if key not in programs:
                 kind = program.pous.get(name) or next((p for n, p in program.pous.items() if n.upper() == key), None)
-                what = f"{name} is a {kind.kind.replace('_', ' ')}, not a program" if kind else f"unknown program {name}"
+                what = (
+                    f"{name} is a {kind.kind.replace('_', ' ')}, not a program" if kind else f"unknown program {name}"
+                )
                 diagnostics.append(_error(f"task {task.name}: {what}", name))
             elif key in owner:
                 where = "twice in this task" if owner[key] == task.name else f"in tasks {owner[key]} and {task.name}"
@@ -83,8 +89,17 @@ def task_table(program: ir.Program, watchdog_s: float | dict[str, float] = 1.0) 
         limit = limits.get(spec.name.upper(), default)
         if not limit > 0:
             raise ValueError(f"watchdog of task {spec.name} must be positive, not {limit!r}")
-        tasks.append(Task(spec.name, spec.interval_ms, spec.priority, [p.upper() for p in spec.programs], order,
-                          limit, next_due=spec.interval_ms))
+        tasks.append(
+            Task(
+                spec.name,
+                spec.interval_ms,
+                spec.priority,
+                [p.upper() for p in spec.programs],
+                order,
+                limit,
+                next_due=spec.interval_ms,
+            )
+        )
     return tasks
 
 
@@ -145,13 +160,23 @@ class Pacer:
     is halted at a breakpoint nothing runs; afterwards time resumes from there.
     """
 
-    def __init__(self, sim: Scanner, *, speed: float = 1.0, max_lag_ms: float = 200.0,
-                 clock: Callable[[], float] = time.monotonic, idle_s: float = 0.05) -> None:
+    def __init__(
+        self,
+        sim: Scanner,
+        *,
+        speed: float = 1.0,
+        max_lag_ms: float = 200.0,
+        clock: Callable[[], float] = time.monotonic,
+        idle_s: float = 0.05,
+    ) -> None:
         if not speed > 0:
             raise ValueError("speed must be positive")
         self.sim, self.speed, self.max_lag_ms, self.clock, self.idle_s = sim, speed, max_lag_ms, clock, idle_s
         self.overruns = 0
-        self._anchor: tuple[float, float] | None = (clock(), sim.time_ms)  # (wall s, virtual ms) in step; None: re-anchor
+        self._anchor: tuple[float, float] | None = (
+            clock(),
+            sim.time_ms,
+        )  # (wall s, virtual ms) in step; None: re-anchor
 
     def _virtual_now(self) -> float:
         if self._anchor is None:

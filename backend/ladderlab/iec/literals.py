@@ -31,6 +31,7 @@ def decode_real(text: str) -> float:
 
 def decode_string(text: str) -> str:
     """Body of a quoted literal with its ``$`` escapes resolved (the lexer only admits valid ones)."""
+
     def one(match: re.Match[str]) -> str:
         code = match.group(1)
         return chr(int(code, 16)) if len(code) > 1 else _ESCAPES[code.upper()]

@@ -47,7 +47,7 @@ class StdFunction:
             return None
         last = self.inputs[-1].name
         stem = last.rstrip("0123456789")
-        return f"{stem}{int(last[len(stem):]) + position - len(self.inputs) + 1}"
+        return f"{stem}{int(last[len(stem) :]) + position - len(self.inputs) + 1}"
 
     def pin(self, name: str) -> Pin | None:
         upper = name.upper()
@@ -56,7 +56,7 @@ class StdFunction:
                 return pin
         last = self.inputs[-1]
         stem = last.name.rstrip("0123456789")
-        if self.extensible and upper.startswith(stem) and upper[len(stem):].isdigit():
+        if self.extensible and upper.startswith(stem) and upper[len(stem) :].isdigit():
             return Pin(upper, last.type, last.generic)
         return None
 
@@ -82,18 +82,33 @@ def _fn(name, inputs, result, group, description, spec, extensible=False) -> Std
 def _conversions() -> list[StdFunction]:
     spellings = [*ELEMENTARY, *ALIASES]
     rows = [
-        _fn(f"{a}_TO_{b}", [Pin("IN", canonical_type_name(a))], canonical_type_name(b), "conversion",
-            f"convert {a} to {b}", "FUN-10")
-        for a in spellings for b in spellings if canonical_type_name(a) != canonical_type_name(b)
+        _fn(
+            f"{a}_TO_{b}",
+            [Pin("IN", canonical_type_name(a))],
+            canonical_type_name(b),
+            "conversion",
+            f"convert {a} to {b}",
+            "FUN-10",
+        )
+        for a in spellings
+        for b in spellings
+        if canonical_type_name(a) != canonical_type_name(b)
     ]
     rows.append(_fn("TRUNC", [Pin("IN", "ANY_REAL")], "DINT", "conversion", "truncate toward zero", "FUN-11"))
     return rows
 
 
 _MATH = {
-    "SQRT": "square root", "LN": "natural logarithm", "LOG": "base-10 logarithm", "EXP": "natural exponential",
-    "SIN": "sine (radians)", "COS": "cosine (radians)", "TAN": "tangent (radians)", "ASIN": "arc sine",
-    "ACOS": "arc cosine", "ATAN": "arc tangent",
+    "SQRT": "square root",
+    "LN": "natural logarithm",
+    "LOG": "base-10 logarithm",
+    "EXP": "natural exponential",
+    "SIN": "sine (radians)",
+    "COS": "cosine (radians)",
+    "TAN": "tangent (radians)",
+    "ASIN": "arc sine",
+    "ACOS": "arc cosine",
+    "ATAN": "arc tangent",
 }
 
 
@@ -134,19 +149,44 @@ def _bits() -> list[StdFunction]:
 def _selection_and_comparison() -> list[StdFunction]:
     two_any = [_g("IN1", "ANY"), _g("IN2", "ANY")]
     rows = [
-        _fn("SEL", [Pin("G", "BOOL"), _g("IN0", "ANY"), _g("IN1", "ANY")], T, "selection",
-            "IN0 when G is FALSE, IN1 when G is TRUE", "FUN-60"),
+        _fn(
+            "SEL",
+            [Pin("G", "BOOL"), _g("IN0", "ANY"), _g("IN1", "ANY")],
+            T,
+            "selection",
+            "IN0 when G is FALSE, IN1 when G is TRUE",
+            "FUN-60",
+        ),
         _fn("MAX", two_any, T, "selection", "largest input", "FUN-60", extensible=True),
         _fn("MIN", two_any, T, "selection", "smallest input", "FUN-60", extensible=True),
-        _fn("LIMIT", [_g("MN", "ANY"), _g("IN", "ANY"), _g("MX", "ANY")], T, "selection",
-            "IN clamped to MN..MX", "FUN-60"),
-        _fn("MUX", [Pin("K", "ANY_INT"), _g("IN0", "ANY"), _g("IN1", "ANY")], T, "selection",
-            "the input numbered K (IN0, IN1, ...)", "FUN-61", extensible=True),
+        _fn(
+            "LIMIT",
+            [_g("MN", "ANY"), _g("IN", "ANY"), _g("MX", "ANY")],
+            T,
+            "selection",
+            "IN clamped to MN..MX",
+            "FUN-60",
+        ),
+        _fn(
+            "MUX",
+            [Pin("K", "ANY_INT"), _g("IN0", "ANY"), _g("IN1", "ANY")],
+            T,
+            "selection",
+            "the input numbered K (IN0, IN1, ...)",
+            "FUN-61",
+            extensible=True,
+        ),
     ]
-    compare = {"GT": "decreasing: IN1 > IN2 > ...", "GE": "non-increasing: IN1 >= IN2 >= ...",
-               "EQ": "all equal: IN1 = IN2 = ...", "LE": "non-decreasing: IN1 <= IN2 <= ...",
-               "LT": "increasing: IN1 < IN2 < ..."}
-    rows += [_fn(name, two_any, "BOOL", "comparison", text, "FUN-70", extensible=True) for name, text in compare.items()]
+    compare = {
+        "GT": "decreasing: IN1 > IN2 > ...",
+        "GE": "non-increasing: IN1 >= IN2 >= ...",
+        "EQ": "all equal: IN1 = IN2 = ...",
+        "LE": "non-decreasing: IN1 <= IN2 <= ...",
+        "LT": "increasing: IN1 < IN2 < ...",
+    }
+    rows += [
+        _fn(name, two_any, "BOOL", "comparison", text, "FUN-70", extensible=True) for name, text in compare.items()
+    ]
     rows.append(_fn("NE", two_any, "BOOL", "comparison", "not equal: IN1 <> IN2", "FUN-70"))
     return rows
 
@@ -157,17 +197,47 @@ def _strings() -> list[StdFunction]:
         _fn("LEN", [Pin("IN", s)], "INT", "string", "length of IN", "FUN-80"),
         _fn("LEFT", [Pin("IN", s), Pin("L", n)], s, "string", "the leftmost L characters of IN", "FUN-81"),
         _fn("RIGHT", [Pin("IN", s), Pin("L", n)], s, "string", "the rightmost L characters of IN", "FUN-81"),
-        _fn("MID", [Pin("IN", s), Pin("L", n), Pin("P", n)], s, "string",
-            "L characters of IN from position P (1-based)", "FUN-81"),
+        _fn(
+            "MID",
+            [Pin("IN", s), Pin("L", n), Pin("P", n)],
+            s,
+            "string",
+            "L characters of IN from position P (1-based)",
+            "FUN-81",
+        ),
         _fn("CONCAT", [Pin("IN1", s), Pin("IN2", s)], s, "string", "IN1, IN2, ... joined", "FUN-80", extensible=True),
-        _fn("INSERT", [Pin("IN1", s), Pin("IN2", s), Pin("P", n)], s, "string",
-            "IN2 inserted into IN1 after position P", "FUN-81"),
-        _fn("DELETE", [Pin("IN", s), Pin("L", n), Pin("P", n)], s, "string",
-            "IN without the L characters from position P", "FUN-81"),
-        _fn("REPLACE", [Pin("IN1", s), Pin("IN2", s), Pin("L", n), Pin("P", n)], s, "string",
-            "IN1 with L characters from position P replaced by IN2", "FUN-81"),
-        _fn("FIND", [Pin("IN1", s), Pin("IN2", s)], "INT", "string",
-            "position of IN2 in IN1 (1-based, 0 if absent)", "FUN-81"),
+        _fn(
+            "INSERT",
+            [Pin("IN1", s), Pin("IN2", s), Pin("P", n)],
+            s,
+            "string",
+            "IN2 inserted into IN1 after position P",
+            "FUN-81",
+        ),
+        _fn(
+            "DELETE",
+            [Pin("IN", s), Pin("L", n), Pin("P", n)],
+            s,
+            "string",
+            "IN without the L characters from position P",
+            "FUN-81",
+        ),
+        _fn(
+            "REPLACE",
+            [Pin("IN1", s), Pin("IN2", s), Pin("L", n), Pin("P", n)],
+            s,
+            "string",
+            "IN1 with L characters from position P replaced by IN2",
+            "FUN-81",
+        ),
+        _fn(
+            "FIND",
+            [Pin("IN1", s), Pin("IN2", s)],
+            "INT",
+            "string",
+            "position of IN2 in IN1 (1-based, 0 if absent)",
+            "FUN-81",
+        ),
     ]
 
 
@@ -187,12 +257,28 @@ def _date_and_time() -> list[StdFunction]:
         ("SUB_DT_DT", dt, dt, "TIME", "duration between two dates and times"),
         ("CONCAT_DATE_TOD", "DATE", tod, dt, "a date and a time of day joined"),
     ]
-    rows = [_fn(name, [Pin("IN1", a), Pin("IN2", b)], result, "date and time", text, "FUN-85")
-            for name, a, b, result, text in table]
-    rows += [_fn("MULTIME", [Pin("IN1", "TIME"), Pin("IN2", "ANY_NUM")], "TIME", "date and time",
-                 "duration times a number (= MUL_TIME)", "FUN-85"),
-             _fn("DIVTIME", [Pin("IN1", "TIME"), Pin("IN2", "ANY_NUM")], "TIME", "date and time",
-                 "duration divided by a number (= DIV_TIME)", "FUN-85")]
+    rows = [
+        _fn(name, [Pin("IN1", a), Pin("IN2", b)], result, "date and time", text, "FUN-85")
+        for name, a, b, result, text in table
+    ]
+    rows += [
+        _fn(
+            "MULTIME",
+            [Pin("IN1", "TIME"), Pin("IN2", "ANY_NUM")],
+            "TIME",
+            "date and time",
+            "duration times a number (= MUL_TIME)",
+            "FUN-85",
+        ),
+        _fn(
+            "DIVTIME",
+            [Pin("IN1", "TIME"), Pin("IN2", "ANY_NUM")],
+            "TIME",
+            "date and time",
+            "duration divided by a number (= DIV_TIME)",
+            "FUN-85",
+        ),
+    ]
     return rows
 
 
@@ -203,13 +289,27 @@ TYPED_COUNTER_TYPES = ("INT", "DINT", "LINT", "UDINT", "ULINT")
 def _counters(suffix: str, i: str) -> list[StdFunctionBlock]:
     b = "BOOL"
     return [
-        StdFunctionBlock(f"CTU{suffix}", (Pin("CU", b, edge="R_EDGE"), Pin("R", b), Pin("PV", i)),
-                         (Pin("Q", b), Pin("CV", i)), "up counter: Q when CV >= PV", "SFB-13"),
-        StdFunctionBlock(f"CTD{suffix}", (Pin("CD", b, edge="R_EDGE"), Pin("LD", b), Pin("PV", i)),
-                         (Pin("Q", b), Pin("CV", i)), "down counter: Q when CV <= 0", "SFB-14"),
-        StdFunctionBlock(f"CTUD{suffix}", (Pin("CU", b, edge="R_EDGE"), Pin("CD", b, edge="R_EDGE"), Pin("R", b),
-                                           Pin("LD", b), Pin("PV", i)),
-                         (Pin("QU", b), Pin("QD", b), Pin("CV", i)), "up/down counter", "SFB-15"),
+        StdFunctionBlock(
+            f"CTU{suffix}",
+            (Pin("CU", b, edge="R_EDGE"), Pin("R", b), Pin("PV", i)),
+            (Pin("Q", b), Pin("CV", i)),
+            "up counter: Q when CV >= PV",
+            "SFB-13",
+        ),
+        StdFunctionBlock(
+            f"CTD{suffix}",
+            (Pin("CD", b, edge="R_EDGE"), Pin("LD", b), Pin("PV", i)),
+            (Pin("Q", b), Pin("CV", i)),
+            "down counter: Q when CV <= 0",
+            "SFB-14",
+        ),
+        StdFunctionBlock(
+            f"CTUD{suffix}",
+            (Pin("CU", b, edge="R_EDGE"), Pin("CD", b, edge="R_EDGE"), Pin("R", b), Pin("LD", b), Pin("PV", i)),
+            (Pin("QU", b), Pin("QD", b), Pin("CV", i)),
+            "up/down counter",
+            "SFB-15",
+        ),
     ]
 
 
@@ -234,8 +334,8 @@ def _function_blocks() -> list[StdFunctionBlock]:
 
 #: Every standard function by upper-case name.
 FUNCTIONS: dict[str, StdFunction] = {
-    f.name: f for f in (*_conversions(), *_numeric(), *_bits(), *_selection_and_comparison(), *_strings(),
-                        *_date_and_time())
+    f.name: f
+    for f in (*_conversions(), *_numeric(), *_bits(), *_selection_and_comparison(), *_strings(), *_date_and_time())
 }
 #: Every standard function block by upper-case name.
 FUNCTION_BLOCKS: dict[str, StdFunctionBlock] = {fb.name: fb for fb in _function_blocks()}

@@ -62,19 +62,40 @@ class PouContext:
         self.calls = 0
 
     # ------------------------------------------------------------ diagnostics
-    def report(self, code: str, message: str, *, network: str | None = None, element: str | None = None,
-               pin: str | None = None, line: int | None = None, column: int | None = None,
-               end_line: int | None = None, end_column: int | None = None, file: str | None = None,
-               severity: str = "error") -> None:
+    def report(
+        self,
+        code: str,
+        message: str,
+        *,
+        network: str | None = None,
+        element: str | None = None,
+        pin: str | None = None,
+        line: int | None = None,
+        column: int | None = None,
+        end_line: int | None = None,
+        end_column: int | None = None,
+        file: str | None = None,
+        severity: str = "error",
+    ) -> None:
         """Append a located diagnostic for this POU (``file`` e.g. ``"Main/body"`` for ST line/column).
 
         A diagnostic already in the list is not added again (a bad TYPE initial value
         is met wherever the type is used).
         """
         diagnostic = Diagnostic(
-            severity=severity, code=code, message=message, file=file, network=network, element=element, pin=pin,
-            pou=self.info.name if self.info is not None and file != "types" else None, line=line, column=column,
-            end_line=end_line, end_column=end_column)
+            severity=severity,
+            code=code,
+            message=message,
+            file=file,
+            network=network,
+            element=element,
+            pin=pin,
+            pou=self.info.name if self.info is not None and file != "types" else None,
+            line=line,
+            column=column,
+            end_line=end_line,
+            end_column=end_column,
+        )
         key = _identity(diagnostic)
         if key not in self._reported():
             self.diagnostics.append(diagnostic)
@@ -89,7 +110,7 @@ class PouContext:
     def _reported(self) -> set[tuple]:
         """The identities of the diagnostics in the (shared, append-only) list, brought up to date: one set lookup
         per report, where comparing with the whole list made a diagram with thousands of problems quadratic."""
-        for diagnostic in self.diagnostics[self._seen_upto:]:
+        for diagnostic in self.diagnostics[self._seen_upto :]:
             self._seen.add(_identity(diagnostic))
         self._seen_upto = len(self.diagnostics)
         return self._seen
@@ -99,8 +120,15 @@ class PouContext:
         span = getattr(node, "span", None) or ast.NO_SPAN
         if file is None and self.info is not None:
             file = f"{self.info.name}/body"
-        self.report(code, message, file=file, line=span.line or None, column=span.column or None,
-                    end_line=span.end_line or None, end_column=span.end_column or None)
+        self.report(
+            code,
+            message,
+            file=file,
+            line=span.line or None,
+            column=span.column or None,
+            end_line=span.end_line or None,
+            end_column=span.end_column or None,
+        )
 
     def report_error(self, error: LoweringError, fallback: Any = None, file: str | None = None, **where: Any) -> None:
         """Report a ``LoweringError`` (silent when the checker already reported its cause).
@@ -110,8 +138,12 @@ class PouContext:
         """
         if error.message is None:
             if not self._checker_found_errors():  # nothing explains the failure: never drop code silently
-                self.report_at("IR-INTERNAL", "this could not be lowered (an internal error of LadderLab: please "
-                               "report it)", error.node if error.node is not None else fallback, file)
+                self.report_at(
+                    "IR-INTERNAL",
+                    "this could not be lowered (an internal error of LadderLab: please report it)",
+                    error.node if error.node is not None else fallback,
+                    file,
+                )
             return
         file = error.file or file
         if where:
@@ -124,34 +156,42 @@ class PouContext:
         stays so: the lists only grow.)"""
         if not self._errors_found:
             mine = self.info.name if self.info is not None else None
-            self._errors_found = any(d.severity == "error" and d.pou in (mine, None)
-                                     for d in self.checked.diagnostics + self.diagnostics)
+            self._errors_found = any(
+                d.severity == "error" and d.pou in (mine, None) for d in self.checked.diagnostics + self.diagnostics
+            )
         return self._errors_found
 
     def checker_error_in(self, span: ast.Span) -> bool:
         """Did the checker report an error on the lines of ``span`` in this POU's ST body?"""
         file = f"{self.info.name}/body" if self.info is not None else None
-        return any(d.severity == "error" and d.file == file and d.line is not None
-                   and span.line <= d.line <= span.end_line for d in self.checked.diagnostics)
+        return any(
+            d.severity == "error" and d.file == file and d.line is not None and span.line <= d.line <= span.end_line
+            for d in self.checked.diagnostics
+        )
 
     def check_en_eno(self, node: ast.Expr, function: str, output: bool) -> None:
         """Type an EN value / ENO target the checker left untyped (it skips them in standard function calls).
 
         Reports like the checker: ST-TYPE-MISMATCH, ST-UNKNOWN-VAR, ST-NOT-LVALUE ...
         """
-        checker = BodyChecker(self.checked, self.info, lambda code, message, at, severity="error": self.report_at(
-            code, message, at) if severity == "error" else None)
+        checker = BodyChecker(
+            self.checked,
+            self.info,
+            lambda code, message, at, severity="error": (
+                self.report_at(code, message, at) if severity == "error" else None
+            ),
+        )
         if not output:
             assignable_or_report(checker, t.BOOL, checker.expr(node, t.BOOL), node, f"input EN of {function}")
         elif t.assignable(checker.target(node), t.BOOL) == "error":
-            checker.report("ST-TYPE-MISMATCH", f"output ENO of {function} is BOOL and cannot be stored in {node.ty}",
-                           node)
+            checker.report(
+                "ST-TYPE-MISMATCH", f"output ENO of {function} is BOOL and cannot be stored in {node.ty}", node
+            )
 
     def origin(self, node: Any) -> Origin:
         """An ST statement's origin: this POU and the node's span (body-relative, 1-based)."""
         span = getattr(node, "span", None) or ast.NO_SPAN
-        return Origin(self.name, span.line or None, span.column or None, span.end_line or None,
-                      span.end_column or None)
+        return Origin(self.name, span.line or None, span.column or None, span.end_line or None, span.end_column or None)
 
     # ------------------------------------------------------------ types and slots
     def ir_type(self, ty: t.Type) -> IrType:
@@ -213,4 +253,3 @@ class PouContext:
         if self.info is None or self.info.return_type is None:
             raise LoweringError(None)
         return Var("local", self.name, self.types.type_of(self.info.return_type))
-

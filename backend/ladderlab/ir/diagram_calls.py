@@ -75,7 +75,7 @@ class Callee:
         names = self._inputs
         if pin in names:
             return 0, names.index(pin)
-        digits = pin[len(pin.rstrip("0123456789")):]
+        digits = pin[len(pin.rstrip("0123456789")) :]
         return 1, int(digits) if digits else 0
 
     def is_input(self, pin: str) -> bool:
@@ -86,8 +86,11 @@ class Callee:
     def bool_inputs(self) -> list[str]:
         """Inputs that can carry power flow: BOOL pins, and generic pins whose family admits BOOL (AND, OR ...)."""
         if self.std_function is not None:
-            return [p.name for p in self.std_function.inputs
-                    if p.type == "BOOL" or p.generic and t.in_family(t.BOOL, p.type)]
+            return [
+                p.name
+                for p in self.std_function.inputs
+                if p.type == "BOOL" or p.generic and t.in_family(t.BOOL, p.type)
+            ]
         if self.std_fb is not None:
             return [p.name for p in self.std_fb.inputs if p.type == "BOOL"]
         return [s.name.upper() for s in self.pou.parameters("VAR_INPUT") if t.same(s.type, t.BOOL)]
@@ -125,7 +128,7 @@ class Callee:
         if extra and self.std_function.extensible:
             last = self.std_function.inputs[-1].name
             stem = last.rstrip("0123456789")
-            needed += [f"{stem}{n}" for n in range(int(last[len(stem):]) + 1, max(extra))]
+            needed += [f"{stem}{n}" for n in range(int(last[len(stem) :]) + 1, max(extra))]
         return [pin for pin in needed if pin not in connected]
 
 
@@ -141,13 +144,18 @@ def resolve_callee(ops: Operands, call: str, instance: str | None, at: At) -> tu
         ops.callees[name.upper()] = callee
     if not callee.is_fb:
         if instance:
-            ops.report(at, f"{ops.lang}-INSTANCE", f"{callee.name} is a function: it has no instance (remove "
-                       f"'{instance}')")
+            ops.report(
+                at, f"{ops.lang}-INSTANCE", f"{callee.name} is a function: it has no instance (remove '{instance}')"
+            )
             return None
         return callee, None
     if not instance or not instance.strip():
-        ops.report(at, f"{ops.lang}-NO-INSTANCE", f"the function block {callee.name} needs an instance: declare "
-                   f"one (e.g. inst : {callee.name};) and name it in the box")
+        ops.report(
+            at,
+            f"{ops.lang}-NO-INSTANCE",
+            f"the function block {callee.name} needs an instance: declare "
+            f"one (e.g. inst : {callee.name};) and name it in the box",
+        )
         return None
     value, ty = ops.read(instance, at, f"the instance of {callee.name}")
     if value is None:
@@ -162,8 +170,11 @@ def _callee(ops: Operands, name: str, at: At) -> Callee | None:
     """What ``name`` calls, or None (reported): a program or an unknown name."""
     pou = ops.ctx.checked.pou(name)
     if pou is not None and pou.kind == "PROGRAM":
-        ops.report(at, f"{ops.lang}-NOT-CALLABLE", f"{pou.name} is a program: programs are run by tasks, not "
-                   "called from a diagram")
+        ops.report(
+            at,
+            f"{ops.lang}-NOT-CALLABLE",
+            f"{pou.name} is a program: programs are run by tasks, not called from a diagram",
+        )
         return None
     if pou is not None:
         return Callee(pou.name, pou=pou)
@@ -172,7 +183,9 @@ def _callee(ops: Operands, name: str, at: At) -> Callee | None:
     if stdlib.function_block(name) is not None:
         return Callee(name.upper(), std_fb=stdlib.function_block(name))
     known = [*ops.ctx.checked.pous, *stdlib.FUNCTIONS, *stdlib.FUNCTION_BLOCKS]
-    ops.report(at, f"{ops.lang}-UNKNOWN-CALL", f"unknown function or function block '{name}'" + did_you_mean(name, known))
+    ops.report(
+        at, f"{ops.lang}-UNKNOWN-CALL", f"unknown function or function block '{name}'" + did_you_mean(name, known)
+    )
     return None
 
 
@@ -187,9 +200,16 @@ class CheckedCall(NamedTuple):
     leaves: dict[str, Leaf] | None = None
 
 
-def check_call(ops: Operands, callee: Callee, instance: str | None, inputs: dict[str, PinValue],
-               outputs: dict[str, str], at: At, en: PinValue | None = None,
-               eno: Var | None = None) -> CheckedCall | None:
+def check_call(
+    ops: Operands,
+    callee: Callee,
+    instance: str | None,
+    inputs: dict[str, PinValue],
+    outputs: dict[str, str],
+    at: At,
+    en: PinValue | None = None,
+    eno: Var | None = None,
+) -> CheckedCall | None:
     """The box as a checked ST call (None when reported). ``inputs``/``outputs`` map upper-case pin names
     to what feeds them / the variable they write (FB outputs). The first box of a shape that checks without
     a word also gives that shape its template (diagram_shapes); later boxes of the shape use it."""
@@ -212,30 +232,41 @@ def _fb(callee: Callee, node: ast.Call) -> t.FbType | None:
     return node.callee.ty if callee.is_fb else None  # type: ignore[return-value]
 
 
-def _learn(ops: Operands, callee: Callee, shape: Shape, inputs: dict[str, PinValue], at: At,
-           en: PinValue | None) -> None:
+def _learn(
+    ops: Operands, callee: Callee, shape: Shape, inputs: dict[str, PinValue], at: At, en: PinValue | None
+) -> None:
     """Check and lower the shape's call with placeholders; it becomes the template unless anything was reported."""
     holders = ops.shapes.placeholders(shape, inputs, en)
     template = None
     with ops.muted() as reported:
-        node = _check(ops, callee, holders.instance or ast.Name(callee.name), holders.inputs, {}, at, holders.en,
-                      holders.eno)
+        node = _check(
+            ops, callee, holders.instance or ast.Name(callee.name), holders.inputs, {}, at, holders.en, holders.eno
+        )
         statements = _lower(ops, callee, node, holders.result, at, Origin(ops.ctx.name)) if node else None
         if statements is not None and Template.covers(statements):
             template = Template(node.ty, _fb(callee, node), statements, holders.names)
     ops.shapes.templates[shape.key] = None if reported else template
 
 
-def _check(ops: Operands, callee: Callee, target: ast.Expr | None, inputs: dict[str, PinValue],
-           outputs: dict[str, str], at: At, en: PinValue | None, eno: Var | None) -> ast.Call | None:
+def _check(
+    ops: Operands,
+    callee: Callee,
+    target: ast.Expr | None,
+    inputs: dict[str, PinValue],
+    outputs: dict[str, str],
+    at: At,
+    en: PinValue | None,
+    eno: Var | None,
+) -> ast.Call | None:
     """Check the box as the ST call of ``target`` (the instance or the function's name; None: reported)."""
     missing = callee.missing(set(inputs))
     for pin in missing:
         ops.report(at.on(pin), f"{ops.lang}-MISSING-PIN", f"input {pin} of {callee.name} is not connected")
     wired_in_outs = [pin for pin in callee.in_outs() if pin in inputs and not isinstance(inputs[pin], str)]
     for pin in wired_in_outs:  # VAR-51: an in-out is passed by reference, so it needs a variable
-        ops.report(at.on(pin), f"{ops.lang}-IN-OUT", f"in-out {pin} of {callee.name} needs a variable, not a "
-                   "computed value")
+        ops.report(
+            at.on(pin), f"{ops.lang}-IN-OUT", f"in-out {pin} of {callee.name} needs a variable, not a computed value"
+        )
     args: list[ast.Arg] = []
     pins: dict[str, ast.Arg] = {}
     failed = bool(missing or wired_in_outs)
@@ -281,8 +312,9 @@ def _arg(arg: ast.Arg, pin: str, pins: dict[str, ast.Arg]) -> ast.Arg:
     return arg
 
 
-def lower_call(ops: Operands, callee: Callee, call: CheckedCall, result: Var | None, at: At,
-               origin: Origin) -> list[Stmt] | None:
+def lower_call(
+    ops: Operands, callee: Callee, call: CheckedCall, result: Var | None, at: At, origin: Origin
+) -> list[Stmt] | None:
     """The statements of a checked box call: one ``FnCall`` writing ``result``, or the ``FbCall`` (and the
     output copies an ST call would have); None when the engine cannot run it (reported)."""
     if call.template is not None:
@@ -290,8 +322,9 @@ def lower_call(ops: Operands, callee: Callee, call: CheckedCall, result: Var | N
     return _lower(ops, callee, call.node, result, at, origin)
 
 
-def _lower(ops: Operands, callee: Callee, node: ast.Call, result: Var | None, at: At,
-           origin: Origin) -> list[Stmt] | None:
+def _lower(
+    ops: Operands, callee: Callee, node: ast.Call, result: Var | None, at: At, origin: Origin
+) -> list[Stmt] | None:
     try:
         if callee.is_fb:
             return [_located(s, origin) for s in lower_fb_call(node, ops.ctx, origin)]

@@ -20,8 +20,16 @@ _LABEL = re.compile(r"^([A-Za-z_][A-Za-z0-9_]*|[0-9]+)$")
 class Report(Protocol):
     """``report(code, message, network=..., element=..., pin=..., severity=...)``: ``PouContext.report``'s shape."""
 
-    def __call__(self, code: str, message: str, *, network: str | None = None, element: str | None = None,
-                 pin: str | None = None, severity: str = "error") -> None: ...
+    def __call__(
+        self,
+        code: str,
+        message: str,
+        *,
+        network: str | None = None,
+        element: str | None = None,
+        pin: str | None = None,
+        severity: str = "error",
+    ) -> None: ...
 
 
 def canonical_label(label: str) -> str:
@@ -37,26 +45,37 @@ def check_labels(networks: Iterable[object], report: Report, lang: str) -> dict[
         if label is None:
             continue
         if not _LABEL.match(label.strip()):
-            report(f"{lang}-BAD-LABEL", f"network label '{label}' must be an identifier or an unsigned integer",
-                   network=network.id)
+            report(
+                f"{lang}-BAD-LABEL",
+                f"network label '{label}' must be an identifier or an unsigned integer",
+                network=network.id,
+            )
             continue
         key = canonical_label(label)
         if key in labels:
-            report(f"{lang}-DUPLICATE-LABEL", f"label '{label}' is already used by network {labels[key]}",
-                   network=network.id)
+            report(
+                f"{lang}-DUPLICATE-LABEL",
+                f"label '{label}' is already used by network {labels[key]}",
+                network=network.id,
+            )
             continue
         labels[key] = network.id
     return labels
 
 
-def check_jump_target(target: str, labels: dict[str, str], report: Report, lang: str, *,
-                      network: str, element: str) -> str | None:
+def check_jump_target(
+    target: str, labels: dict[str, str], report: Report, lang: str, *, network: str, element: str
+) -> str | None:
     """The canonical label a jump goes to, or None (reported) when no network of the POU has it."""
     key = canonical_label(target)
     if key in labels:
         return key
-    report(f"{lang}-UNKNOWN-LABEL", f"jump to '{target}', but no network of this POU has that label"
-           + did_you_mean(target, labels), network=network, element=element)
+    report(
+        f"{lang}-UNKNOWN-LABEL",
+        f"jump to '{target}', but no network of this POU has that label" + did_you_mean(target, labels),
+        network=network,
+        element=element,
+    )
     return None
 
 
@@ -65,8 +84,13 @@ def check_unique_ids(elements: Iterable[tuple[str, str]], report: Report, lang: 
     seen: dict[str, str] = {}
     for network, element in elements:
         if element in seen:
-            report(f"{lang}-DUPLICATE-ID", f"element id '{element}' is also used in network {seen[element]}: "
-                   "element ids must be unique in the POU", network=network, element=element)
+            report(
+                f"{lang}-DUPLICATE-ID",
+                f"element id '{element}' is also used in network {seen[element]}: "
+                "element ids must be unique in the POU",
+                network=network,
+                element=element,
+            )
         else:
             seen[element] = network
 

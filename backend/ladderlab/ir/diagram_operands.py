@@ -131,9 +131,11 @@ class Operands:
     def checker(self, at: At, pins: dict[str, Any] | None = None) -> BodyChecker:
         """A checker reporting at ``at``; ``pins`` maps pin names to the AST (argument) each pin gets, so a
         problem found inside one is reported on that pin."""
+
         def report(code: str, message: str, node: Any, severity: str = "error") -> None:
             pin = next((pin for pin, root in (pins or {}).items() if any(n is node for n in subnodes(root))), at.pin)
             self._relocate(Diagnostic(code=code, message=message, severity=severity), at.on(pin))
+
         return _WireChecker(self, report)
 
     # ------------------------------------------------------------ parsing and lowering
@@ -277,6 +279,7 @@ class Operands:
 
         def report(code: str, message: str, _node: Any, severity: str = "error") -> None:
             diagnostics.append(Diagnostic(code=code, message=message, severity=severity))
+
         checker = _WireChecker(self, report)
         ty = checker.expr(node, expected)
         if expected is not None and ty is not t.ERROR:
@@ -338,8 +341,12 @@ class Operands:
         if ty is t.ERROR or self.errors_since(before):
             return None, t.ERROR
         if isinstance(node, ast.Member) and node.name.isdigit():
-            self.report(at, f"{self.lang}-BIT-TARGET", f"{what} cannot write a single bit ('{text.strip()}') yet: "
-                        "write a BOOL variable and copy it into the bit in ST")
+            self.report(
+                at,
+                f"{self.lang}-BIT-TARGET",
+                f"{what} cannot write a single bit ('{text.strip()}') yet: "
+                "write a BOOL variable and copy it into the bit in ST",
+            )
             return None, t.ERROR
         if kind is not None and len(self.ctx.diagnostics) == before:
             self._clean_targets.add(kind)
@@ -363,8 +370,10 @@ class Operands:
 
     def compare(self, op: str, left: str, right: str, at: At) -> Expr | None:
         """A compare contact's condition, typed by the ST rules of ``left <op> right`` (GR-19)."""
-        nodes = [self.parse(left, at.on("left"), "the compare contact"),
-                 self.parse(right, at.on("right"), "the compare contact")]
+        nodes = [
+            self.parse(left, at.on("left"), "the compare contact"),
+            self.parse(right, at.on("right"), "the compare contact"),
+        ]
         if None in nodes:
             return None
         node = ast.Binary(_COMPARE[op], nodes[0], nodes[1])

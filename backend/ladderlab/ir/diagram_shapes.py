@@ -93,8 +93,15 @@ class CallShapes:
         self.templates: dict[tuple, Template | None] = {}
         self._count = 0
 
-    def shape(self, callee: str, instance: str | None, inputs: dict[str, Any], outputs: dict[str, str],
-              en: Any, eno: Var | None) -> Shape | None:
+    def shape(
+        self,
+        callee: str,
+        instance: str | None,
+        inputs: dict[str, Any],
+        outputs: dict[str, str],
+        en: Any,
+        eno: Var | None,
+    ) -> Shape | None:
         """The shape of a box call, or None when templates do not cover it."""
         if outputs:
             return None
@@ -127,10 +134,13 @@ class CallShapes:
         values = {pin: self._placeholder(names[pin], leaf) for pin, leaf in shape.leaves.items()}
         instance, eno_wire = values.pop("", None), values.pop("ENO", None)
         return Placeholders(
-            names, {pin: values.get(pin, value) for pin, value in inputs.items()},
-            self.ops.wire_node(*instance) if instance is not None else None, values.get("EN", en),
+            names,
+            {pin: values.get(pin, value) for pin, value in inputs.items()},
+            self.ops.wire_node(*instance) if instance is not None else None,
+            values.get("EN", en),
             eno_wire[0] if eno_wire is not None else None,
-            Var("local", names[RESULT], BOOL))  # the result is only ever a target: its type is never read
+            Var("local", names[RESULT], BOOL),
+        )  # the result is only ever a target: its type is never read
 
     # ------------------------------------------------------------ leaves
     def _part(self, pin: str, value: Any, leaves: dict[str, Leaf]) -> tuple | None:
@@ -231,10 +241,14 @@ def _binder(node: Any, names: frozenset[str]) -> Callable[[dict[str, Expr]], Any
 
 def _statement_binder(statement: Stmt, names: frozenset[str]) -> Callable[[dict[str, Expr], Origin], Stmt]:
     """How to copy a (flat) template statement with its placeholders bound, at a box's origin."""
-    fields = {name: bind for name, value in vars(statement).items()
-              if name != "origin" and (bind := _binder(value, names)) is not None}
-    return lambda bindings, origin: _copy(statement, {"origin": origin,
-                                                       **{name: bind(bindings) for name, bind in fields.items()}})
+    fields = {
+        name: bind
+        for name, value in vars(statement).items()
+        if name != "origin" and (bind := _binder(value, names)) is not None
+    }
+    return lambda bindings, origin: _copy(
+        statement, {"origin": origin, **{name: bind(bindings) for name, bind in fields.items()}}
+    )
 
 
 def _select(value: Expr, placeholder: Var) -> Var:

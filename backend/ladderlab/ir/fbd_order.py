@@ -39,8 +39,15 @@ CONTROL = frozenset({"jump", "return"})
 SIMPLE_OUT = "OUT"
 SIMPLE_IN = "IN"
 
-_KIND = {"block": "block", "input": "input node", "output": "output node", "jump": "jump", "return": "return",
-         "connector": "connector", "continuation": "continuation"}
+_KIND = {
+    "block": "block",
+    "input": "input node",
+    "output": "output node",
+    "jump": "jump",
+    "return": "return",
+    "connector": "connector",
+    "continuation": "continuation",
+}
 
 
 class Source(NamedTuple):
@@ -109,18 +116,21 @@ def analyse(network: fbd.FbdNetwork, report: Report) -> NetworkGraph:
     return graph
 
 
-def _wires_by_input(network: fbd.FbdNetwork, nodes: dict[str, fbd.FbdNode],
-                    report: Report) -> dict[tuple[str, str], fbd.Wire]:
+def _wires_by_input(
+    network: fbd.FbdNetwork, nodes: dict[str, fbd.FbdNode], report: Report
+) -> dict[tuple[str, str], fbd.Wire]:
     """Valid wires by their (consumer, PIN) end; a second wire into one input is a wired OR (GR-30)."""
     result: dict[tuple[str, str], fbd.Wire] = {}  # the first wire into each input
     more: dict[tuple[str, str], list[fbd.Wire]] = {}  # the further ones (wired ORs, rare)
     for wire in network.wires:
         source, target = wire.from_, wire.to
         pin = target.pin.upper()
-        if _plain_end(nodes.get(source.node), source.pin, PRODUCERS, SIMPLE_OUT) and \
-                _plain_end(nodes.get(target.node), pin, CONSUMERS, SIMPLE_IN) or \
-                _valid_end(wire, source, nodes, PRODUCERS, SIMPLE_OUT, "output", network.id, report) and \
-                _valid_end(wire, target, nodes, CONSUMERS, SIMPLE_IN, "input", network.id, report):
+        if (
+            _plain_end(nodes.get(source.node), source.pin, PRODUCERS, SIMPLE_OUT)
+            and _plain_end(nodes.get(target.node), pin, CONSUMERS, SIMPLE_IN)
+            or _valid_end(wire, source, nodes, PRODUCERS, SIMPLE_OUT, "output", network.id, report)
+            and _valid_end(wire, target, nodes, CONSUMERS, SIMPLE_IN, "input", network.id, report)
+        ):
             key = (target.node, pin)
             if key not in result:
                 result[key] = wire
@@ -129,8 +139,13 @@ def _wires_by_input(network: fbd.FbdNetwork, nodes: dict[str, fbd.FbdNode],
     for node, pin in [key for key in result if key in more] if more else []:  # in the order of their first wires
         group = [result[(node, pin)], *more[(node, pin)]]
         names = " and ".join(f"from {w.from_.node}.{w.from_.pin}" for w in group)
-        report("FBD-WIRED-OR", f"input {pin} of '{node}' has {len(group)} wires ({names}): FBD has no wired OR, "
-               "use an OR block", network=network.id, element=node, pin=pin)
+        report(
+            "FBD-WIRED-OR",
+            f"input {pin} of '{node}' has {len(group)} wires ({names}): FBD has no wired OR, use an OR block",
+            network=network.id,
+            element=node,
+            pin=pin,
+        )
     return result
 
 
@@ -140,20 +155,43 @@ def _plain_end(node: fbd.FbdNode | None, pin: str, kinds: frozenset, simple_pin:
     return kind == "block" or kind in kinds and (pin == simple_pin or pin.upper() == simple_pin)
 
 
-def _valid_end(wire: fbd.Wire, end: fbd.PinRef, nodes: dict[str, fbd.FbdNode], kinds: frozenset, simple_pin: str,
-               side: str, network: str, report: Report) -> bool:
+def _valid_end(
+    wire: fbd.Wire,
+    end: fbd.PinRef,
+    nodes: dict[str, fbd.FbdNode],
+    kinds: frozenset,
+    simple_pin: str,
+    side: str,
+    network: str,
+    report: Report,
+) -> bool:
     node = nodes.get(end.node)
     if node is None:
-        report("FBD-BAD-WIRE", f"wire {wire_text(wire)}: there is no node '{end.node}' in this network",
-               network=network, element=end.node, pin=end.pin.upper())
+        report(
+            "FBD-BAD-WIRE",
+            f"wire {wire_text(wire)}: there is no node '{end.node}' in this network",
+            network=network,
+            element=end.node,
+            pin=end.pin.upper(),
+        )
         return False
     if node.type not in kinds:
-        report("FBD-BAD-WIRE", f"wire {wire_text(wire)}: a {_KIND[node.type]} has no {side} pin",
-               network=network, element=node.id, pin=end.pin.upper())
+        report(
+            "FBD-BAD-WIRE",
+            f"wire {wire_text(wire)}: a {_KIND[node.type]} has no {side} pin",
+            network=network,
+            element=node.id,
+            pin=end.pin.upper(),
+        )
         return False
     if node.type != "block" and end.pin.upper() != simple_pin:
-        report("FBD-BAD-WIRE", f"wire {wire_text(wire)}: the {side} pin of a {_KIND[node.type]} is {simple_pin}",
-               network=network, element=node.id, pin=end.pin.upper())
+        report(
+            "FBD-BAD-WIRE",
+            f"wire {wire_text(wire)}: the {side} pin of a {_KIND[node.type]} is {simple_pin}",
+            network=network,
+            element=node.id,
+            pin=end.pin.upper(),
+        )
         return False
     return True
 
@@ -165,19 +203,32 @@ def _connectors(network: fbd.FbdNetwork, nodes: dict[str, fbd.FbdNode], report: 
         if isinstance(node, fbd.Connector):
             key = node.name.upper()
             if key in connectors:
-                report("FBD-CONNECTOR", f"connector '{node.name}' is also defined by '{connectors[key]}'",
-                       network=network.id, element=node.id)
+                report(
+                    "FBD-CONNECTOR",
+                    f"connector '{node.name}' is also defined by '{connectors[key]}'",
+                    network=network.id,
+                    element=node.id,
+                )
             else:
                 connectors[key] = node.id
     for node in nodes.values():
         if isinstance(node, fbd.Continuation) and node.name.upper() not in connectors:
-            report("FBD-CONNECTOR", f"continuation '{node.id}' continues '{node.name}', but this network has no "
-                   f"connector '{node.name}'", network=network.id, element=node.id)
+            report(
+                "FBD-CONNECTOR",
+                f"continuation '{node.id}' continues '{node.name}', but this network has no connector '{node.name}'",
+                network=network.id,
+                element=node.id,
+            )
     return connectors
 
 
-def _resolve(graph: NetworkGraph, network: fbd.FbdNetwork, wires: dict[tuple[str, str], fbd.Wire],
-             connectors: dict[str, str], report: Report) -> None:
+def _resolve(
+    graph: NetworkGraph,
+    network: fbd.FbdNetwork,
+    wires: dict[tuple[str, str], fbd.Wire],
+    connectors: dict[str, str],
+    report: Report,
+) -> None:
     """Fill ``graph.inputs`` with every consumer pin's real source; report outputs and connectors left unwired."""
     nodes, inputs = graph.nodes, graph.inputs
     for (node_id, pin), wire in wires.items():
@@ -198,16 +249,25 @@ def _resolve(graph: NetworkGraph, network: fbd.FbdNetwork, wires: dict[tuple[str
         if node.type != "output" and node.type != "connector":
             continue
         if (node.id, SIMPLE_IN) not in wires:
-            what = f"output node '{node.id}' ({node.var})" if isinstance(node, fbd.OutputNode) \
+            what = (
+                f"output node '{node.id}' ({node.var})"
+                if isinstance(node, fbd.OutputNode)
                 else f"connector '{node.name}'"
+            )
             report("FBD-DANGLING", f"{what} has no input wire", network=network.id, element=node.id, pin=SIMPLE_IN)
         elif isinstance(node, fbd.Connector):
             _follow(wires[(node.id, SIMPLE_IN)], nodes, wires, connectors, set(), report, network.id)
 
 
-def _follow(wire: fbd.Wire, nodes: dict[str, fbd.FbdNode], wires: dict[tuple[str, str], fbd.Wire],
-            connectors: dict[str, str], seen: set[str], report: Report | None = None,
-            network: str = "") -> Source | None:
+def _follow(
+    wire: fbd.Wire,
+    nodes: dict[str, fbd.FbdNode],
+    wires: dict[tuple[str, str], fbd.Wire],
+    connectors: dict[str, str],
+    seen: set[str],
+    report: Report | None = None,
+    network: str = "",
+) -> Source | None:
     """The block or input node output at the far end of ``wire``, through any connectors."""
     producer = nodes[wire.from_.node]
     if not isinstance(producer, fbd.Continuation):
@@ -215,8 +275,12 @@ def _follow(wire: fbd.Wire, nodes: dict[str, fbd.FbdNode], wires: dict[tuple[str
     connector = connectors.get(producer.name.upper())
     if connector is None or connector in seen or (connector, SIMPLE_IN) not in wires:
         if report is not None and connector in seen:
-            report("FBD-CONNECTOR", f"connector '{producer.name}' is fed only through its own continuations",
-                   network=network, element=connector)
+            report(
+                "FBD-CONNECTOR",
+                f"connector '{producer.name}' is fed only through its own continuations",
+                network=network,
+                element=connector,
+            )
         return None
     return _follow(wires[(connector, SIMPLE_IN)], nodes, wires, connectors, seen | {connector}, report, network)
 
@@ -235,8 +299,9 @@ def _order(graph: NetworkGraph, network: fbd.FbdNetwork, report: Report) -> list
     for node in nodes.values():
         kind = node.type
         if kind == "block" or kind == "output":
-            predecessors[node.id] = {s.node for s in inputs.get(node.id, _NONE).values()
-                                     if nodes[s.node].type == "block"}
+            predecessors[node.id] = {
+                s.node for s in inputs.get(node.id, _NONE).values() if nodes[s.node].type == "block"
+            }
         elif kind == "input":
             if node.id not in fed:
                 unused.append(node.id)
@@ -261,16 +326,27 @@ def _priorities(network: fbd.FbdNetwork, nodes: dict[str, fbd.FbdNode], report: 
     """Node id -> its priority key: rank in the ``order`` list, then position (top to bottom, left to right),
     then id."""
     rank = _explicit_ranks(network, nodes, report)
-    return {node_id: (rank.get(node_id, len(rank)), node.pos.y if node.pos else math.inf,
-                      node.pos.x if node.pos else math.inf, node_id) for node_id, node in nodes.items()}
+    return {
+        node_id: (
+            rank.get(node_id, len(rank)),
+            node.pos.y if node.pos else math.inf,
+            node.pos.x if node.pos else math.inf,
+            node_id,
+        )
+        for node_id, node in nodes.items()
+    }
 
 
 def _explicit_ranks(network: fbd.FbdNetwork, nodes: dict[str, fbd.FbdNode], report: Report) -> dict[str, int]:
     ranks: dict[str, int] = {}
     for node_id in network.order or []:
         if node_id not in nodes:
-            report("FBD-ORDER", f"the order list names '{node_id}', which is not a node of this network",
-                   network=network.id, element=node_id)
+            report(
+                "FBD-ORDER",
+                f"the order list names '{node_id}', which is not a node of this network",
+                network=network.id,
+                element=node_id,
+            )
         else:
             ranks.setdefault(node_id, len(ranks))
     return ranks
@@ -292,8 +368,7 @@ def _data_flow_order(nodes: list[str], predecessors: dict[str, set[str]], key) -
     while len(order) < len(nodes):
         if not ready:  # only cycles are left: start one that nothing outside it still feeds
             component = component or _components(nodes, predecessors)
-            blocked = {component[n] for n in nodes if n not in done
-                       for p in waiting[n] if component[p] != component[n]}
+            blocked = {component[n] for n in nodes if n not in done for p in waiting[n] if component[p] != component[n]}
             first = min((n for n in nodes if n not in done and component[n] not in blocked), key=key)
             heapq.heappush(ready, (key(first), first))
         _, node = heapq.heappop(ready)
@@ -358,8 +433,11 @@ def _place_inputs(graph: NetworkGraph, order: list[str], key) -> list[str]:
     placed = set(order)
     result: list[str] = []
     for node_id in order:
-        sources = [s.node for s in graph.inputs.get(node_id, _NONE).values()
-                   if s.node not in placed and nodes[s.node].type == "input"]
+        sources = [
+            s.node
+            for s in graph.inputs.get(node_id, _NONE).values()
+            if s.node not in placed and nodes[s.node].type == "input"
+        ]
         if len(sources) > 1:
             sources.sort(key=key)
         for source in sources:
@@ -396,6 +474,7 @@ class Analyses:
         def counting(*args, **kwargs) -> None:
             reported.append(True)
             report(*args, **kwargs)
+
         graph = analyse(network, counting)
         if pattern is _UNKNOWN:
             self._known[key] = None if reported else _Pattern.of(graph, network, ids)
@@ -413,10 +492,14 @@ def _structure(network: fbd.FbdNetwork) -> tuple[tuple, list[str]] | None:
     index = {node_id: i for i, node_id in enumerate(ids)}
     if len(index) != len(ids) or network.order and any(node_id not in index for node_id in network.order):
         return None
-    kinds = tuple(node.type if node.type not in ("connector", "continuation") else (node.type, node.name.upper())
-                  for node in nodes)
-    wires = tuple((index.get(wire.from_.node, -1), wire.from_.pin.upper(), index.get(wire.to.node, -1),
-                   wire.to.pin.upper()) for wire in network.wires)
+    kinds = tuple(
+        node.type if node.type not in ("connector", "continuation") else (node.type, node.name.upper())
+        for node in nodes
+    )
+    wires = tuple(
+        (index.get(wire.from_.node, -1), wire.from_.pin.upper(), index.get(wire.to.node, -1), wire.to.pin.upper())
+        for wire in network.wires
+    )
     priority = _priorities(network, dict(zip(ids, nodes)), _unreported)
     ranking = tuple(sorted(range(len(ids)), key=lambda i: priority[ids[i]]))
     return (kinds, wires, ranking), ids
@@ -439,18 +522,24 @@ class _Pattern(NamedTuple):
         index = {node_id: i for i, node_id in enumerate(ids)}
         wire_at = {id(wire): k for k, wire in enumerate(network.wires)}
         return _Pattern(
-            tuple((index[node], tuple((pin, index[s.node], s.pin, wire_at[id(s.via)]) for pin, s in pins.items()))
-                  for node, pins in graph.inputs.items()),
+            tuple(
+                (index[node], tuple((pin, index[s.node], s.pin, wire_at[id(s.via)]) for pin, s in pins.items()))
+                for node, pins in graph.inputs.items()
+            ),
             tuple(index[node] for node in graph.order),
             tuple((index[node], pin) for node, pin in graph.feedback),
-            tuple((index[node], pin) for node, pin in graph.broken))
+            tuple((index[node], pin) for node, pin in graph.broken),
+        )
 
     def graph(self, network: fbd.FbdNetwork, ids: list[str]) -> NetworkGraph:
         wires = network.wires
         return NetworkGraph(
             dict(zip(ids, network.nodes)),
-            {ids[i]: {pin: Source(ids[j], source_pin, wires[k]) for pin, j, source_pin, k in pins}
-             for i, pins in self.inputs},
+            {
+                ids[i]: {pin: Source(ids[j], source_pin, wires[k]) for pin, j, source_pin, k in pins}
+                for i, pins in self.inputs
+            },
             [ids[i] for i in self.order],
             {(ids[i], pin) for i, pin in self.feedback},
-            {(ids[i], pin) for i, pin in self.broken})
+            {(ids[i], pin) for i, pin in self.broken},
+        )

@@ -31,8 +31,23 @@ from .lower_types import POINTERS_UNSUPPORTED, LoweringError, byte_size, engine_
 from .nodes import Assign, Binary, Call, Const, Convert, Expr, FnCall, Index, Member, Unary, Var
 from .types import BOOL, Array, Elementary, FbInstance, IrType, Struct, Subrange
 
-_OPERATORS = {"+": "ADD", "-": "SUB", "*": "MUL", "/": "DIV", "MOD": "MOD", "**": "EXPT", "AND": "AND",
-              "OR": "OR", "XOR": "XOR", "=": "EQ", "<>": "NE", "<": "LT", ">": "GT", "<=": "LE", ">=": "GE"}
+_OPERATORS = {
+    "+": "ADD",
+    "-": "SUB",
+    "*": "MUL",
+    "/": "DIV",
+    "MOD": "MOD",
+    "**": "EXPT",
+    "AND": "AND",
+    "OR": "OR",
+    "XOR": "XOR",
+    "=": "EQ",
+    "<>": "NE",
+    "<": "LT",
+    ">": "GT",
+    "<=": "LE",
+    ">=": "GE",
+}
 _LITERAL_TARGETS = ("bool", "int", "bits", "real")  # what an untyped literal may become (types.assignable)
 _TIME_CATEGORIES = {"time", "tod", "dt", "date"}
 
@@ -84,8 +99,11 @@ def convert(expr: Expr, target: IrType) -> Expr:
     source = expr.type  # type: ignore[union-attr]
     if source is target:  # the common case: lowered types are mostly shared instances
         return expr
-    if isinstance(source, Elementary | Subrange) and isinstance(target, Elementary | Subrange) \
-            and value_type(source) != value_type(target):
+    if (
+        isinstance(source, Elementary | Subrange)
+        and isinstance(target, Elementary | Subrange)
+        and value_type(source) != value_type(target)
+    ):
         return Convert(expr, value_type(source), value_type(target))
     return expr
 
@@ -112,8 +130,9 @@ def _untyped(node: ast.Expr, ctx: PouContext, expected: IrType | None) -> Expr:
         if isinstance(node, ast.Unary):
             return Unary("NOT" if node.op == "NOT" else "NEG", lower_to(node.operand, ctx, target), target)
         if isinstance(node, ast.Binary):
-            return Binary(_OPERATORS[node.op], lower_to(node.left, ctx, target), lower_to(node.right, ctx, target),
-                          target)
+            return Binary(
+                _OPERATORS[node.op], lower_to(node.left, ctx, target), lower_to(node.right, ctx, target), target
+            )
         raise LoweringError(None)
     return Const(engine_value(value, target), target)
 
@@ -162,8 +181,9 @@ def lower_access(node: ast.Expr, ctx: PouContext) -> Var:
         raise LoweringError(POINTERS_UNSUPPORTED, node)
     if isinstance(node, ast.Member):
         raise LoweringError("a bit of a variable (x.3) can be read or assigned, but not passed by reference", node)
-    raise LoweringError("only a variable, array element or field can be used here: assign this value to a variable "
-                        "first", node)
+    raise LoweringError(
+        "only a variable, array element or field can be used here: assign this value to a variable first", node
+    )
 
 
 def _member_type(node: ast.Member, base: IrType, ctx: PouContext) -> IrType:
@@ -270,8 +290,9 @@ def _power(node: ast.Binary, ctx: PouContext) -> Expr:
     return _function("EXPT", [node.left, node.right], ctx, result, (result, exponent))
 
 
-def _function(name: str, operands: list[ast.Expr], ctx: PouContext, result: IrType,
-              arg_types: tuple[IrType, ...] | None = None) -> Call:
+def _function(
+    name: str, operands: list[ast.Expr], ctx: PouContext, result: IrType, arg_types: tuple[IrType, ...] | None = None
+) -> Call:
     types = arg_types or (result,) * len(operands)
     args = tuple(lower_to(operand, ctx, ty) for operand, ty in zip(operands, types))
     return Call(name, args, tuple(types), result)
@@ -284,8 +305,9 @@ def refuse_unsupported_call(node: ast.Call) -> None:
     """Program calls and ADR/REF cannot be lowered yet: raise the located error."""
     ref = node.ref
     if isinstance(ref, PouInfo) and ref.kind == "PROGRAM":
-        raise LoweringError(f"calling the program {ref.name} from ST is not supported by the engine yet: run it "
-                            "from a task", node)
+        raise LoweringError(
+            f"calling the program {ref.name} from ST is not supported by the engine yet: run it from a task", node
+        )
     if ref is None and isinstance(node.callee, ast.Name) and node.callee.name.upper() in ("ADR", "REF"):
         raise LoweringError(POINTERS_UNSUPPORTED, node)
 
@@ -316,8 +338,9 @@ def _sizeof(node: ast.Call, ctx: PouContext, target: IrType) -> Const:
     if argument.ty is None and isinstance(argument, ast.Name):  # a type name (the checker does not type it)
         named = t.elementary(argument.name)
         typedef = ctx.checked.types.get(argument.name.upper())
-        ty = ctx.types.type_of(named if named is not None else typedef.type if typedef else None,
-                               ast.NamedType(argument.name))
+        ty = ctx.types.type_of(
+            named if named is not None else typedef.type if typedef else None, ast.NamedType(argument.name)
+        )
     else:
         ty = lower_expr(argument, ctx).type  # type: ignore[union-attr]
     return Const(engine_value(byte_size(ty), target), target)
@@ -359,11 +382,20 @@ def _lift(node: ast.Call, call: Call, before: tuple[int, int], ctx: PouContext) 
     what this call reads, so then the call cannot move ahead of them.
     """
     reads, calls = before
-    where = "here" if ctx.lifts is None else "after the values this statement computes before it" \
-        if calls or (call.user and reads) else None
+    where = (
+        "here"
+        if ctx.lifts is None
+        else "after the values this statement computes before it"
+        if calls or (call.user and reads)
+        else None
+    )
     if where is not None:
-        raise LoweringError(f"a call with EN or ENO cannot be evaluated {where} in the right order: assign its "
-                            "result to a variable in a statement of its own first", node, code="IR-EN-CALL")
+        raise LoweringError(
+            f"a call with EN or ENO cannot be evaluated {where} in the right order: assign its "
+            "result to a variable in a statement of its own first",
+            node,
+            code="IR-EN-CALL",
+        )
     en_expr, eno_var, after = lower_en_eno(node, ctx)
     result = ctx.hidden(f"{call.function}_RESULT", call.type)
     ctx.lifts.append(FnCall(call, result, ctx.origin(node), en_expr, eno_var))
@@ -381,13 +413,16 @@ def std_call(node: ast.Call, ctx: PouContext) -> Call:
             raise LoweringError(None)
         bound[index] = arg
     types, result = _signature(function, node, bound, ctx)
-    args = tuple(lower_to(bound[index].value, ctx, target) if index in bound else Const(ir_default(target), target)
-                 for index, target in enumerate(types))
+    args = tuple(
+        lower_to(bound[index].value, ctx, target) if index in bound else Const(ir_default(target), target)
+        for index, target in enumerate(types)
+    )
     return Call(function.name, args, types, result)  # (a call statement's node has no .ty)
 
 
-def _signature(function: stdlib.StdFunction, node: ast.Call, bound: dict[int, ast.Arg],
-               ctx: PouContext) -> tuple[tuple[IrType, ...], IrType]:
+def _signature(
+    function: stdlib.StdFunction, node: ast.Call, bound: dict[int, ast.Arg], ctx: PouContext
+) -> tuple[tuple[IrType, ...], IrType]:
     """The IR types of a standard function call's inputs (by position, omitted ones included) and of its
     result. They follow from the function, the bound positions, the argument types and the call's type
     alone, so they are worked out once per POU for each such combination (a large diagram has thousands
@@ -402,8 +437,9 @@ def _signature(function: stdlib.StdFunction, node: ast.Call, bound: dict[int, as
     return signature
 
 
-def _work_out_signature(function: stdlib.StdFunction, node: ast.Call, bound: dict[int, ast.Arg],
-                        ctx: PouContext) -> tuple[tuple[IrType, ...], IrType]:
+def _work_out_signature(
+    function: stdlib.StdFunction, node: ast.Call, bound: dict[int, ast.Arg], ctx: PouContext
+) -> tuple[tuple[IrType, ...], IrType]:
     count = max(len(function.inputs), max(bound, default=-1) + 1)
     generic = _generic_type(function, node, bound, ctx)
     types = []
@@ -430,11 +466,10 @@ def _position(function: stdlib.StdFunction, name: str) -> int | None:
         return None
     last = function.inputs[-1].name
     stem = last.rstrip("0123456789")
-    return len(function.inputs) - 1 + int(upper[len(stem):]) - int(last[len(stem):])
+    return len(function.inputs) - 1 + int(upper[len(stem) :]) - int(last[len(stem) :])
 
 
-def _generic_type(function: stdlib.StdFunction, node: ast.Call, bound: dict[int, ast.Arg],
-                  ctx: PouContext) -> IrType:
+def _generic_type(function: stdlib.StdFunction, node: ast.Call, bound: dict[int, ast.Arg], ctx: PouContext) -> IrType:
     """The type T the generic inputs share, combined as the checker does (st/calls.py, FUN-02)."""
     shared: t.Type | None = None
     for index in sorted(bound):

@@ -83,8 +83,7 @@ class _Network:
         for sources in graph.inputs.values():  # once per network, not a scan of all wires per block
             for source in sources.values():
                 self.used_pins.setdefault(source.node, set()).add(source.pin)
-        self.written = {name for node in graph.nodes.values() if node.type == "output"
-                        for name in root_names(node.var)}
+        self.written = {name for node in graph.nodes.values() if node.type == "output" for name in root_names(node.var)}
         for node in graph.nodes.values():
             if node.type == "block":
                 self.callees[node.id] = resolve_callee(self.ops, node.call, node.instance, self.at(node.id))
@@ -92,8 +91,11 @@ class _Network:
                 self.connector_name(node)
         graph.visit(self)
         label = canonical_label(self.network.label) if self.network.label else None
-        return Block(self.out, diagram_origin(self.ctx.name, self.network.id),
-                     label if label is not None and self.labels.get(label) == self.network.id else None)
+        return Block(
+            self.out,
+            diagram_origin(self.ctx.name, self.network.id),
+            label if label is not None and self.labels.get(label) == self.network.id else None,
+        )
 
     # ------------------------------------------------------------ helpers
     def at(self, node: str, pin: str | None = None) -> At:
@@ -136,13 +138,21 @@ class _Network:
             return f"NOT {text}" if flags is not None and flags.negated else text
         for consumer, sources in self.graph.inputs.items():
             target, fed = self.graph.nodes[consumer], sources.get("IN")
-            if isinstance(target, fbd.OutputNode) and target.mode == "normal" and fed is not None \
-                    and (fed.node, fed.pin) == (source.node, source.pin):
+            if (
+                isinstance(target, fbd.OutputNode)
+                and target.mode == "normal"
+                and fed is not None
+                and (fed.node, fed.pin) == (source.node, source.pin)
+            ):
                 return target.var
-        self.ops.report(self.at(node, pin), "FBD-FEEDBACK", f"the wire {source.wire} closes a loop: it carries "
-                        f"{source.node}.{source.pin} of the previous scan, and a function's result has none before its "
-                        f"first call; also connect {source.node}.{source.pin} to an output variable, whose declared "
-                        "initial value then starts the loop")
+        self.ops.report(
+            self.at(node, pin),
+            "FBD-FEEDBACK",
+            f"the wire {source.wire} closes a loop: it carries "
+            f"{source.node}.{source.pin} of the previous scan, and a function's result has none before its "
+            f"first call; also connect {source.node}.{source.pin} to an output variable, whose declared "
+            "initial value then starts the loop",
+        )
         return None
 
     def connector_name(self, node: fbd.Connector) -> None:
@@ -150,8 +160,9 @@ class _Network:
         upper = node.name.upper()
         clash = "a label" if upper in self.labels else "a variable" if self.ops.declared(node.name) else None
         if clash:
-            self.ops.report(self.at(node.id), "FBD-CONNECTOR", f"connector '{node.name}' has the name of {clash} "
-                            "of this POU")
+            self.ops.report(
+                self.at(node.id), "FBD-CONNECTOR", f"connector '{node.name}' has the name of {clash} of this POU"
+            )
 
     # ------------------------------------------------------------ nodes
     def input_node(self, node: fbd.InputNode) -> None:
@@ -212,8 +223,9 @@ class _Network:
             return
         self.out.append(Probe(node.id, condition, origin))
         if isinstance(node, fbd.FbdJump):
-            label = check_jump_target(node.target, self.labels, self.ctx.report, "FBD", network=self.network.id,
-                                      element=node.id)
+            label = check_jump_target(
+                node.target, self.labels, self.ctx.report, "FBD", network=self.network.id, element=node.id
+            )
             if label is not None:
                 self.out.append(Jump(label, None if condition == TRUE else condition, origin))
         else:
@@ -276,20 +288,30 @@ class _Network:
         outputs = callee.output_names() + (["ENO"] if node.en else [])
         used = self.used_pins.get(node.id, set())
         into = self.graph.inputs.get(node.id, {})
-        if (node.en or "EN" not in into and "ENO" not in into) and used.issubset(outputs) \
-                and all(pin not in outputs and callee.is_input(pin) for pin in flags):
+        if (
+            (node.en or "EN" not in into and "ENO" not in into)
+            and used.issubset(outputs)
+            and all(pin not in outputs and callee.is_input(pin) for pin in flags)
+        ):
             return True  # the common case: every wire from a real output, flags on inputs only (nothing below applies)
         wired = set(self.graph.inputs.get(node.id, {}))
         problems: list[tuple[str, str, str]] = []
         for pin in sorted(used - set(outputs) - {"ENO"}):
-            problems.append((pin, "FBD-UNKNOWN-PIN", f"{callee.name} has no output '{pin}'" + did_you_mean(pin, outputs)))
+            problems.append(
+                (pin, "FBD-UNKNOWN-PIN", f"{callee.name} has no output '{pin}'" + did_you_mean(pin, outputs))
+            )
         for pin in ("EN", "ENO"):
             if not node.en and pin in wired | used | set(flags):
                 problems.append((pin, "FBD-UNKNOWN-PIN", f"'{node.id}' has no {pin}: set en to use EN and ENO"))
         for pin, flag in sorted(flags.items()):
             if pin in outputs and flag.edge is not None:
-                problems.append((pin, "FBD-PIN-FLAG", f"output {pin} of '{node.id}' cannot have an edge flag: "
-                                 "edge detection is for inputs"))
+                problems.append(
+                    (
+                        pin,
+                        "FBD-PIN-FLAG",
+                        f"output {pin} of '{node.id}' cannot have an edge flag: edge detection is for inputs",
+                    )
+                )
             elif pin not in outputs and not callee.is_input(pin) and pin not in ("EN", "ENO"):
                 problems.append((pin, "FBD-UNKNOWN-PIN", f"{callee.name} has no pin '{pin}' for the flags"))
         for pin, code, message in problems:
@@ -321,8 +343,18 @@ class _Network:
         self.out.append(Assign(slot, expr, self.origin(at.element)))
         return slot, t.BOOL
 
-    def _outputs(self, node: fbd.Block, callee: Callee, instance: str | None, call, first: Stmt, result: Var | None,
-                 eno: Var | None, flags: dict, en: PinValue | None) -> None:
+    def _outputs(
+        self,
+        node: fbd.Block,
+        callee: Callee,
+        instance: str | None,
+        call,
+        first: Stmt,
+        result: Var | None,
+        eno: Var | None,
+        flags: dict,
+        en: PinValue | None,
+    ) -> None:
         """Record what each output pin carries (after its negation flag) and probe it. An FB's outputs are
         carried as their operand text (``inst.Q``: each consumer reads it in its own context); the probes read
         them from the instance the FbCall (``first``) called."""
@@ -344,8 +376,9 @@ class _Network:
             expr, ty = probed[pin]
             if flag is not None and flag.negated:
                 if not t.same(ty, t.BOOL):
-                    self.ops.report(at.on(pin), "FBD-NOT-BOOL", f"output {pin} of '{node.id}' is negated, but "
-                                    f"it is {ty}, not BOOL")
+                    self.ops.report(
+                        at.on(pin), "FBD-NOT-BOOL", f"output {pin} of '{node.id}' is negated, but it is {ty}, not BOOL"
+                    )
                     continue
                 negated = self.ops.temp()
                 self.out.append(Assign(negated, not_(expr), origin))

@@ -49,8 +49,11 @@ class _Rung:
         self.ops.new_network()
         self.series(network.elements, TRUE, open_end=True)
         label = canonical_label(network.label) if network.label else None
-        return Block(self.out + self.control, diagram_origin(self.ctx.name, network.id),
-                     label if label is not None and self.labels.get(label) == network.id else None)
+        return Block(
+            self.out + self.control,
+            diagram_origin(self.ctx.name, network.id),
+            label if label is not None and self.labels.get(label) == network.id else None,
+        )
 
     # ------------------------------------------------------------ helpers
     def origin(self, element: str) -> Origin:
@@ -128,10 +131,12 @@ class _Rung:
         """GR-14: every branch from the same left power, top to bottom; the right side ORs the branches
         that reach it (a branch ending in a jump or return does not)."""
         if len(element.branches) < 2:
-            self.ops.report(self.at(element.id), "LD-PARALLEL", f"parallel '{element.id}' has "
-                            f"{len(element.branches)} branch(es); it needs at least two")
-        reaching = [out for branch in element.branches
-                    if (out := self.series(branch, power, open_end)) is not None]
+            self.ops.report(
+                self.at(element.id),
+                "LD-PARALLEL",
+                f"parallel '{element.id}' has {len(element.branches)} branch(es); it needs at least two",
+            )
+        reaching = [out for branch in element.branches if (out := self.series(branch, power, open_end)) is not None]
         return self.power(element.id, or_(reaching))
 
     def control_element(self, element: ld.Jump | ld.Return, power: Expr, at_end: bool) -> None:
@@ -140,12 +145,16 @@ class _Rung:
         self.out.append(Probe(element.id, power, origin))
         kind = "jump" if isinstance(element, ld.Jump) else "return"
         if not at_end:
-            self.ops.report(self.at(element.id), "LD-CONTROL-POSITION", f"{kind} '{element.id}' must be the last "
-                            "element of a branch that ends the rung")
+            self.ops.report(
+                self.at(element.id),
+                "LD-CONTROL-POSITION",
+                f"{kind} '{element.id}' must be the last element of a branch that ends the rung",
+            )
             return
         if isinstance(element, ld.Jump):
-            label = check_jump_target(element.target, self.labels, self.ctx.report, "LD", network=self.network,
-                                      element=element.id)
+            label = check_jump_target(
+                element.target, self.labels, self.ctx.report, "LD", network=self.network, element=element.id
+            )
             if label is not None:
                 self.control.append(Jump(label, None if power == TRUE else power, origin))
         elif power == TRUE:
@@ -190,8 +199,9 @@ class _Rung:
         if call is None:
             return None
         result = None if callee.is_fb else self._result(callee, call.ty, result_text, at, box.en)
-        statements = lower_call(self.ops, callee, call, result, at, origin) \
-            if result is not None or callee.is_fb else None
+        statements = (
+            lower_call(self.ops, callee, call, result, at, origin) if result is not None or callee.is_fb else None
+        )
         if statements is None:
             return None
         self.out += statements
@@ -212,11 +222,17 @@ class _Rung:
 
     def _pins_allowed(self, callee: Callee, inputs: dict, outputs: dict, at: At) -> bool:
         """EN and ENO are the power flow, not operands; a function's only output is OUT."""
-        problems = [(pin, f"{pin} is the box's power flow: set en instead of connecting it")
-                    for pin in ("EN", "ENO") if pin in inputs or pin in outputs]
+        problems = [
+            (pin, f"{pin} is the box's power flow: set en instead of connecting it")
+            for pin in ("EN", "ENO")
+            if pin in inputs or pin in outputs
+        ]
         if not callee.is_fb:
-            problems += [(pin, f"{callee.name} is a function: its only output is OUT") for pin in outputs
-                         if pin not in ("OUT", "EN", "ENO")]
+            problems += [
+                (pin, f"{callee.name} is a function: its only output is OUT")
+                for pin in outputs
+                if pin not in ("OUT", "EN", "ENO")
+            ]
         for pin, message in problems:
             self.ops.report(at.on(pin), "LD-UNKNOWN-PIN", message)
         return not problems
@@ -225,8 +241,9 @@ class _Rung:
         """Without ``en`` the power enters the first BOOL input that has no operand (GR-27 b)."""
         free = [pin for pin in callee.bool_inputs() if pin not in inputs]
         if not free:
-            self.ops.report(at, "LD-BOX-POWER", f"{callee.name} has no free BOOL input for the power flow: set en "
-                            "to use EN")
+            self.ops.report(
+                at, "LD-BOX-POWER", f"{callee.name} has no free BOOL input for the power flow: set en to use EN"
+            )
             return False
         inputs[free[0]] = (power, t.BOOL)
         return True
@@ -248,6 +265,7 @@ class _Rung:
         elif t.same(ty, t.BOOL):
             return pins["OUT"]
         if not callee.is_fb or not callee.bool_outputs():
-            self.ops.report(at, "LD-BOX-POWER", f"{callee.name} has no BOOL output to pass the power flow on: set en "
-                            "to use ENO")
+            self.ops.report(
+                at, "LD-BOX-POWER", f"{callee.name} has no BOOL output to pass the power flow on: set en to use ENO"
+            )
         return None

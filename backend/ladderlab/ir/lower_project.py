@@ -34,7 +34,10 @@ from .types import BOOL
 
 #: Body lowering per ``Pou.language``; the LD and FBD lowerings add "ld" and "fbd".
 LOWER_BODY: dict[str, Callable[[ModelPou, PouContext], list[Block]]] = {
-    "st": lower_st_body, "ld": lower_ld_body, "fbd": lower_fbd_body}
+    "st": lower_st_body,
+    "ld": lower_ld_body,
+    "fbd": lower_fbd_body,
+}
 
 #: The task of a project without a task configuration: every PROGRAM once per scan, every 10 ms.
 DEFAULT_TASK = "DEFAULT"
@@ -153,6 +156,12 @@ def lower_tasks(project: Project, pous: dict[str, Pou]) -> list[TaskSpec]:
             interval = round(decode_duration(task.interval.replace(" ", "")))
         except (ValueError, IndexError):  # validate_project reported BAD-INTERVAL
             continue
-        tasks.append(TaskSpec(task.name.upper(), interval, task.priority,
-                              [name.upper() for name in task.programs if name.upper() in pous]))
+        tasks.append(
+            TaskSpec(
+                task.name.upper(),
+                interval,
+                task.priority,
+                [name.upper() for name in task.programs if name.upper() in pous],
+            )
+        )
     return tasks

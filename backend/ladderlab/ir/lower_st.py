@@ -63,8 +63,9 @@ def lower_st_body(pou: ModelPou, ctx: PouContext) -> list[Block]:
     origin = Origin(ctx.name)
     if body:
         first, last = body[0].span, body[-1].span
-        origin = Origin(ctx.name, first.line or None, first.column or None, last.end_line or None,
-                        last.end_column or None)
+        origin = Origin(
+            ctx.name, first.line or None, first.column or None, last.end_line or None, last.end_column or None
+        )
     return [Block(lower_statements(body, ctx), origin)]
 
 
@@ -204,11 +205,15 @@ def fb_pins(fb: t.FbType, ctx: PouContext) -> dict[str, tuple[IrType, str]]:
 
 def _fb_pins(fb: t.FbType, ctx: PouContext) -> dict[str, tuple[IrType, str]]:
     if fb.std is not None:
-        return {**{p.name: (ctx.ir_type(t.elementary(p.type)), "VAR_INPUT") for p in fb.std.inputs},
-                **{p.name: (ctx.ir_type(t.elementary(p.type)), "VAR_OUTPUT") for p in fb.std.outputs}}
+        return {
+            **{p.name: (ctx.ir_type(t.elementary(p.type)), "VAR_INPUT") for p in fb.std.inputs},
+            **{p.name: (ctx.ir_type(t.elementary(p.type)), "VAR_OUTPUT") for p in fb.std.outputs},
+        }
     callee = ctx.types_for(fb.pou.name)
-    return {s.name.upper(): (callee.type_of(s.type, s.type_spec), s.var_class)
-            for s in fb.pou.parameters("VAR_INPUT", "VAR_IN_OUT", "VAR_OUTPUT")}
+    return {
+        s.name.upper(): (callee.type_of(s.type, s.type_spec), s.var_class)
+        for s in fb.pou.parameters("VAR_INPUT", "VAR_IN_OUT", "VAR_OUTPUT")
+    }
 
 
 # ---------------------------------------------------------------- control flow
@@ -278,6 +283,14 @@ def _empty(statement: ast.Empty, ctx: PouContext) -> list[Stmt]:
 
 
 _LOWER = {
-    ast.Assign: _assign, ast.CallStmt: _call_statement, ast.If: _if, ast.Case: _case, ast.For: _for,
-    ast.While: _while, ast.Repeat: _repeat, ast.Exit: _exit, ast.Return: _return, ast.Empty: _empty,
+    ast.Assign: _assign,
+    ast.CallStmt: _call_statement,
+    ast.If: _if,
+    ast.Case: _case,
+    ast.For: _for,
+    ast.While: _while,
+    ast.Repeat: _repeat,
+    ast.Exit: _exit,
+    ast.Return: _return,
+    ast.Empty: _empty,
 }

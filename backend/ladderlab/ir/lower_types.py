@@ -50,8 +50,11 @@ POINTERS_UNSUPPORTED = "pointers (POINTER TO, REF_TO, ADR, REF, ^) are not suppo
 
 def unnamed_address(address: str, node: Any = None) -> LoweringError:
     """``%IX0.0`` used or declared without a name: the engine keeps variables by name."""
-    return LoweringError(f"the directly represented variable {address} has no name: declare it as "
-                         f"'name AT {address} : type' (unnamed ones are not supported yet)", node)
+    return LoweringError(
+        f"the directly represented variable {address} has no name: declare it as "
+        f"'name AT {address} : type' (unnamed ones are not supported yet)",
+        node,
+    )
 
 
 def _in_types_text(error: LoweringError) -> LoweringError:
@@ -77,8 +80,9 @@ class TypeLowering:
     # ------------------------------------------------------------ types
     def type_of(self, ty: t.Type | None, spec: ast.TypeSpec | None = None) -> IrType:
         """The IR type of a checker type; ``spec`` (the declaration's type specification) restores subranges."""
-        if type(ty) is t.Elementary and (spec is None or type(spec) is ast.NamedType
-                                         and (not self.types or spec.name.upper() not in self.types)):
+        if type(ty) is t.Elementary and (
+            spec is None or type(spec) is ast.NamedType and (not self.types or spec.name.upper() not in self.types)
+        ):
             return _elementary(ty.name)  # most variables: no TYPE to follow (a shortcut of _type_of)
         return self._type_of(ty, spec)
 
@@ -224,8 +228,11 @@ class TypeLowering:
             raise LoweringError(None)
         raw = self.raw_constant(node)
         if raw is None:
-            raise LoweringError("an initial value must be a constant (a literal, a CONSTANT or an enumeration "
-                                "value)", node, code="IR-INIT")
+            raise LoweringError(
+                "an initial value must be a constant (a literal, a CONSTANT or an enumeration value)",
+                node,
+                code="IR-INIT",
+            )
         return engine_value(raw, target)
 
     def raw_constant(self, node: Any, depth: int = 0) -> object:
@@ -260,8 +267,15 @@ class TypeLowering:
     def slot(self, symbol: Symbol) -> Slot:
         """The slot of a declared variable; VAR_IN_OUT slots are references and have no initial value."""
         initial = None if symbol.var_class == "VAR_IN_OUT" else self.initial(symbol.type, symbol.type_spec, symbol.init)
-        return Slot(symbol.name.upper(), symbol.var_class, self.type_of(symbol.type, symbol.type_spec),  # type: ignore[arg-type]
-                    initial, symbol.retain, symbol.constant, symbol.address)
+        return Slot(
+            symbol.name.upper(),
+            symbol.var_class,
+            self.type_of(symbol.type, symbol.type_spec),  # type: ignore[arg-type]
+            initial,
+            symbol.retain,
+            symbol.constant,
+            symbol.address,
+        )
 
 
 @functools.cache
@@ -279,7 +293,7 @@ def engine_value(raw: object, target: IrType) -> object:
     if category == "bool":
         return bool(raw)
     if category == "string":
-        return str(raw)[:target.max_length]
+        return str(raw)[: target.max_length]
     if category == "real":
         return f32(float(raw)) if target.name == "REAL" else float(raw)  # type: ignore[arg-type]
     if isinstance(raw, float):  # fractional milliseconds (T#1.5ms) or a REAL constant folded for an integer
@@ -326,7 +340,7 @@ def _nest(values: list[object], dims: tuple[tuple[int, int], ...]) -> tuple:
         return tuple(values)
     low, high = dims[0]
     step = len(values) // (high - low + 1)
-    return tuple(_nest(values[i:i + step], dims[1:]) for i in range(0, len(values), step))
+    return tuple(_nest(values[i : i + step], dims[1:]) for i in range(0, len(values), step))
 
 
 def _size(array: Array) -> int:

@@ -35,8 +35,9 @@ def diagram_origin(pou: str, network: str, element: str | None = None) -> Origin
     ``object.__setattr__`` calls: a 10,000-network diagram makes one per element (1.4 -> 0.4 us each).
     (tests/ir/test_nodes.py checks it equals the constructor's object.)"""
     origin = object.__new__(Origin)
-    origin.__dict__.update(pou=pou, line=None, column=None, end_line=None, end_column=None, network=network,
-                           element=element)
+    origin.__dict__.update(
+        pou=pou, line=None, column=None, end_line=None, end_column=None, network=network, element=element
+    )
     return origin
 
 
@@ -90,8 +91,7 @@ class Unary:
 class Binary:
     """Arithmetic, comparison or boolean operator on operands of one type (after conversions)."""
 
-    op: Literal["ADD", "SUB", "MUL", "DIV", "MOD", "EXPT", "AND", "OR", "XOR",
-                "EQ", "NE", "LT", "LE", "GT", "GE"]
+    op: Literal["ADD", "SUB", "MUL", "DIV", "MOD", "EXPT", "AND", "OR", "XOR", "EQ", "NE", "LT", "LE", "GT", "GE"]
     left: Expr
     right: Expr
     type: IrType

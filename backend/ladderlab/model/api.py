@@ -69,8 +69,9 @@ class SymbolInfo(BaseModel):
     name: str
     var_class: str = Field(description="VAR, VAR_INPUT, VAR_OUTPUT, VAR_IN_OUT, VAR_EXTERNAL, VAR_TEMP or VAR_GLOBAL.")
     type: str = Field(description="The type as declared, e.g. 'TON' or 'ARRAY[1..10] OF INT'.")
-    initial: str | None = Field(description="Declared initial value (or the user type's), as ST text; "
-                                            "null means the type's default.")
+    initial: str | None = Field(
+        description="Declared initial value (or the user type's), as ST text; null means the type's default."
+    )
     address: str | None = Field(description="Direct address of an AT declaration, e.g. '%IX0.0'.")
     comment: str | None
     retain: bool
@@ -83,7 +84,9 @@ class SymbolTable(BaseModel):
     pou: str
     symbols: list[SymbolInfo] = Field(description="The POU's own declarations, in declaration order.")
     globals: list[SymbolInfo]
-    diagnostics: list[Diagnostic] = Field(description="Problems of this POU, the global declarations and the user types.")
+    diagnostics: list[Diagnostic] = Field(
+        description="Problems of this POU, the global declarations and the user types."
+    )
 
 
 class Pin(BaseModel):
@@ -150,7 +153,8 @@ class SimulationInfo(BaseModel):
     instances: dict[str, list[str]] = Field(
         default_factory=dict,
         description="Instance paths of every program and function block by POU name (upper case), e.g. "
-                    "{\"BLINKER\": [\"MAIN.BLINK\"]}: the instances an online view can show.")
+        '{"BLINKER": ["MAIN.BLINK"]}: the instances an online view can show.',
+    )
 
 
 class ResetSimulation(BaseModel):

@@ -42,8 +42,10 @@ class ElementSubscription(BaseModel):
     model_config = ConfigDict(extra="forbid")
 
     pou_instance: str = Field(description="Instance path, e.g. 'MAIN' or 'MAIN.Blink'; a FUNCTION by its name.")
-    ids: list[str] | None = Field(default=None, description="Element ids (as in the POU's JSON, pins as "
-                                                            "'box.Q'); null: every element of the instance.")
+    ids: list[str] | None = Field(
+        default=None,
+        description="Element ids (as in the POU's JSON, pins as 'box.Q'); null: every element of the instance.",
+    )
 
 
 class Subscribe(_Request):
@@ -187,8 +189,22 @@ class TraceStop(_Request):
 
 
 ClientMessage = Annotated[
-    Union[Subscribe, Write, Force, Unforce, UnforceAll, BreakpointSet, BreakpointClear, Continue, Step, Run, Stop,
-          SingleCycle, TraceStart, TraceStop],
+    Union[
+        Subscribe,
+        Write,
+        Force,
+        Unforce,
+        UnforceAll,
+        BreakpointSet,
+        BreakpointClear,
+        Continue,
+        Step,
+        Run,
+        Stop,
+        SingleCycle,
+        TraceStart,
+        TraceStop,
+    ],
     Field(discriminator="type"),
 ]
 
@@ -210,8 +226,10 @@ class At(BaseModel):
 class DisplayType(BaseModel):
     """What a client needs to show a value as IEC text: TIME and dates arrive as ms, enumerations as ints."""
 
-    name: str = Field(description="The IEC elementary type (TIME, DATE, WORD...; a subrange's base type), "
-                                  "or the name of the enumeration, structure or FB type.")
+    name: str = Field(
+        description="The IEC elementary type (TIME, DATE, WORD...; a subrange's base type), "
+        "or the name of the enumeration, structure or FB type."
+    )
     names: dict[str, str] | None = Field(default=None, description="An enumeration's value names by value.")
 
 
@@ -233,7 +251,8 @@ class Values(BaseModel):
     power: dict[str, Value]
     types: dict[str, DisplayType] = Field(
         default_factory=dict,
-        description="The type of every subscribed path, in the first message after a subscribe (paths as in changed).")
+        description="The type of every subscribed path, in the first message after a subscribe (paths as in changed).",
+    )
 
 
 class Status(BaseModel):

@@ -25,6 +25,8 @@ def project_name_problem(name: str) -> str | None:
     if not name or len(name) > MAX_NAME_LENGTH:
         return f"use 1 to {MAX_NAME_LENGTH} characters"
     if not PROJECT_NAME.match(name) or name.endswith((".", " ")):
-        return ("use letters, digits, spaces, '_', '-' and '.', start with a letter or digit, "
-                "and do not end with '.' or a space")
+        return (
+            "use letters, digits, spaces, '_', '-' and '.', start with a letter or digit, "
+            "and do not end with '.' or a space"
+        )
     return None

@@ -13,8 +13,11 @@ from .monitor import MonitorProtocol
 from .project import Project
 
 #: File name in shared_schema/ -> model. Later parts add theirs (e.g. the monitor protocol).
-SCHEMA_MODELS: dict[str, type[BaseModel]] = {"project.schema.json": Project, "api.schema.json": ApiTypes,
-                                              "monitor.schema.json": MonitorProtocol}
+SCHEMA_MODELS: dict[str, type[BaseModel]] = {
+    "project.schema.json": Project,
+    "api.schema.json": ApiTypes,
+    "monitor.schema.json": MonitorProtocol,
+}
 
 
 def schema_of(model: type[BaseModel]) -> dict[str, Any]:
@@ -26,8 +29,7 @@ def schema_of(model: type[BaseModel]) -> dict[str, Any]:
 def schema_texts() -> dict[str, str]:
     """File name -> the exact text that belongs in shared_schema/."""
     return {
-        name: json.dumps(schema_of(model), indent=2, sort_keys=True) + "\n"
-        for name, model in SCHEMA_MODELS.items()
+        name: json.dumps(schema_of(model), indent=2, sort_keys=True) + "\n" for name, model in SCHEMA_MODELS.items()
     }
 
 

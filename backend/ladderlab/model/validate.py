@@ -20,16 +20,26 @@ def validate_project(project: Project) -> list[Diagnostic]:
             out.append(Diagnostic(code="BAD-NAME", pou=pou.name, message=f"invalid POU name: {problem}"))
         key = pou.name.upper()
         if key in seen:
-            out.append(Diagnostic(code="DUPLICATE-POU", pou=pou.name,
-                                  message=f"POU {pou.name!r} is declared twice (names ignore case: {seen[key]!r})"))
+            out.append(
+                Diagnostic(
+                    code="DUPLICATE-POU",
+                    pou=pou.name,
+                    message=f"POU {pou.name!r} is declared twice (names ignore case: {seen[key]!r})",
+                )
+            )
         seen.setdefault(key, pou.name)
         if pou.kind == "function" and not pou.return_type:
-            out.append(Diagnostic(code="MISSING-RETURN-TYPE", pou=pou.name,
-                                  message=f"function {pou.name} needs a return type"))
+            out.append(
+                Diagnostic(code="MISSING-RETURN-TYPE", pou=pou.name, message=f"function {pou.name} needs a return type")
+            )
         if pou.kind != "function" and pou.return_type:
-            out.append(Diagnostic(code="UNEXPECTED-RETURN-TYPE", pou=pou.name,
-                                  message=f"only functions have a return type; {pou.name} is a "
-                                          f"{pou.kind.replace('_', ' ')}"))
+            out.append(
+                Diagnostic(
+                    code="UNEXPECTED-RETURN-TYPE",
+                    pou=pou.name,
+                    message=f"only functions have a return type; {pou.name} is a {pou.kind.replace('_', ' ')}",
+                )
+            )
     out.extend(_validate_tasks(project))
     return out
 
@@ -40,19 +50,35 @@ def _validate_tasks(project: Project) -> list[Diagnostic]:
     for i, task in enumerate(project.tasks):
         where = f"$.tasks[{i}]"
         if task.name.upper() in names:
-            out.append(Diagnostic(code="DUPLICATE-TASK", json_path=where, message=f"task {task.name!r} is declared twice"))
+            out.append(
+                Diagnostic(code="DUPLICATE-TASK", json_path=where, message=f"task {task.name!r} is declared twice")
+            )
         names.add(task.name.upper())
         if not _TIME_LITERAL.match(task.interval.replace(" ", "")):
-            out.append(Diagnostic(code="BAD-INTERVAL", json_path=f"{where}.interval",
-                                  message=f"task {task.name}: interval {task.interval!r} is not a TIME "
-                                          f"literal such as T#10ms"))
+            out.append(
+                Diagnostic(
+                    code="BAD-INTERVAL",
+                    json_path=f"{where}.interval",
+                    message=f"task {task.name}: interval {task.interval!r} is not a TIME literal such as T#10ms",
+                )
+            )
         for j, program in enumerate(task.programs):
             pou = project.pou(program)
             if pou is None:
-                out.append(Diagnostic(code="UNKNOWN-PROGRAM", json_path=f"{where}.programs[{j}]",
-                                      message=f"task {task.name} runs {program!r}, which is not a POU of this project"))
+                out.append(
+                    Diagnostic(
+                        code="UNKNOWN-PROGRAM",
+                        json_path=f"{where}.programs[{j}]",
+                        message=f"task {task.name} runs {program!r}, which is not a POU of this project",
+                    )
+                )
             elif pou.kind != "program":
-                out.append(Diagnostic(code="NOT-A-PROGRAM", json_path=f"{where}.programs[{j}]", pou=pou.name,
-                                      message=f"task {task.name} can only run programs; {pou.name} is a "
-                                              f"{pou.kind.replace('_', ' ')}"))
+                out.append(
+                    Diagnostic(
+                        code="NOT-A-PROGRAM",
+                        json_path=f"{where}.programs[{j}]",
+                        pou=pou.name,
+                        message=f"task {task.name} can only run programs; {pou.name} is a {pou.kind.replace('_', ' ')}",
+                    )
+                )
     return out

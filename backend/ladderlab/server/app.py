@@ -43,6 +43,7 @@ def create_app(workspace: Workspace, limits: Limits | None = None) -> FastAPI:
     if (STATIC_DIR / "index.html").is_file():
         app.mount("/", StaticFiles(directory=STATIC_DIR, html=True), name="app")
     else:
+
         @app.get("/", response_class=HTMLResponse)
         def placeholder() -> str:
             return _PLACEHOLDER

@@ -54,8 +54,13 @@ class ConflictResponse(BaseModel):
 
 def responses(*codes: int) -> dict[int | str, dict[str, Any]]:
     """OpenAPI documentation of a route's error statuses (a 409 is either shape)."""
-    return {code: {"model": ErrorResponse | ConflictResponse if code == 409 else ErrorResponse,
-                   "description": _DESCRIPTIONS[code]} for code in codes}
+    return {
+        code: {
+            "model": ErrorResponse | ConflictResponse if code == 409 else ErrorResponse,
+            "description": _DESCRIPTIONS[code],
+        }
+        for code in codes
+    }
 
 
 _DESCRIPTIONS = {
@@ -111,8 +116,12 @@ async def _conflict(request: Request, exc: Exception) -> JSONResponse:
             current_modified = modified_at(request.app.state.workspace.load(name).modified)
         except (StorageError, OSError):
             current_modified = None  # deleted or broken meanwhile: the revisions still say what happened
-    detail = ConflictDetail(message=exc.diagnostics[0].message, base_revision=exc.base_revision,
-                            current_revision=exc.current_revision, current_modified=current_modified)
+    detail = ConflictDetail(
+        message=exc.diagnostics[0].message,
+        base_revision=exc.base_revision,
+        current_revision=exc.current_revision,
+        current_modified=current_modified,
+    )
     return _json(409, detail)
 
 
@@ -173,8 +182,12 @@ async def _os_error(request: Request, exc: Exception) -> JSONResponse:
     assert isinstance(exc, OSError)
     log.exception("workspace I/O error on %s %s", request.method, request.url.path)
     reason = exc.strerror or str(exc) or type(exc).__name__
-    return _json(500, ErrorDetail(message=f"the workspace could not be read or written: {reason}. "
-                                          "Reload the project to see what is stored."))
+    return _json(
+        500,
+        ErrorDetail(
+            message=f"the workspace could not be read or written: {reason}. Reload the project to see what is stored."
+        ),
+    )
 
 
 async def _internal_error(request: Request, exc: Exception) -> JSONResponse:

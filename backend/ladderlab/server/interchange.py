@@ -25,8 +25,11 @@ router = APIRouter(tags=["interchange"])
 
 
 @router.get("/api/projects/{name}/export/st", response_model=StExport, responses=responses(404, 422))
-def export_st(name: str, workspace: WorkspaceDep,
-              pou: Annotated[str | None, Query(description="one POU; default: the whole project")] = None) -> StExport:
+def export_st(
+    name: str,
+    workspace: WorkspaceDep,
+    pou: Annotated[str | None, Query(description="one POU; default: the whole project")] = None,
+) -> StExport:
     """The saved project (or one POU) as IEC ST that runs identically; each exported line maps to its network."""
     project = workspace.load(name).project
     if pou is not None and project.pou(pou) is None:
@@ -34,8 +37,13 @@ def export_st(name: str, workspace: WorkspaceDep,
     result = export_pou_st(project, pou) if pou is not None else export_project_st(project)
     if has_errors(result.diagnostics):
         raise ApiError(422, "the project cannot be exported as ST until these errors are fixed", result.diagnostics)
-    return StExport(text=result.text, diagnostics=result.diagnostics, source_map=[
-        SourceMapEntry(line=line, network=network, element=element) for line, network, element in result.source_map])
+    return StExport(
+        text=result.text,
+        diagnostics=result.diagnostics,
+        source_map=[
+            SourceMapEntry(line=line, network=network, element=element) for line, network, element in result.source_map
+        ],
+    )
 
 
 @router.get("/api/projects/{name}/export/plcopen", response_class=Response, responses=responses(404, 422))
@@ -46,15 +54,24 @@ def export_xml(name: str, workspace: WorkspaceDep) -> Response:
         data = export_plcopen(project)
     except PlcopenExportError as error:
         raise ApiError(422, "the project cannot be exported as PLCopen XML", error.diagnostics) from None
-    return Response(data, media_type="application/xml",
-                    headers={"Content-Disposition": f'attachment; filename="{name}.xml"'})
+    return Response(
+        data, media_type="application/xml", headers={"Content-Disposition": f'attachment; filename="{name}.xml"'}
+    )
 
 
-@router.post("/api/import/plcopen", status_code=status.HTTP_201_CREATED, response_model=ImportReport,
-             responses=responses(409, 413, 422, 429))
-async def import_xml(request: Request, workspace: WorkspaceDep, limits: LimitsDep, response: Response,
-                     name: Annotated[str | None, Query(description="project name (default: the document's)")] = None,
-                     ) -> ImportReport:
+@router.post(
+    "/api/import/plcopen",
+    status_code=status.HTTP_201_CREATED,
+    response_model=ImportReport,
+    responses=responses(409, 413, 422, 429),
+)
+async def import_xml(
+    request: Request,
+    workspace: WorkspaceDep,
+    limits: LimitsDep,
+    response: Response,
+    name: Annotated[str | None, Query(description="project name (default: the document's)")] = None,
+) -> ImportReport:
     """Store a PLCopen XML document (the request body) as a new project; warnings come back with it."""
     if name is not None:
         check_project_name(name)
@@ -69,5 +86,9 @@ async def import_xml(request: Request, workspace: WorkspaceDep, limits: LimitsDe
     stored = workspace.load(project.name)
     response.headers.update(etag(revision))
     response.headers["Location"] = f"/api/projects/{project.name}"
-    return ImportReport(diagnostics=result.diagnostics, project=ProjectSummary(
-        name=project.name, revision=revision, modified=modified_at(stored.modified), pou_count=len(project.pous)))
+    return ImportReport(
+        diagnostics=result.diagnostics,
+        project=ProjectSummary(
+            name=project.name, revision=revision, modified=modified_at(stored.modified), pou_count=len(project.pous)
+        ),
+    )

@@ -43,15 +43,31 @@ def _result_type(fn: stdlib.StdFunction) -> str:
 def standard_entries() -> tuple[LibraryEntry, ...]:
     """Standard function blocks, then standard functions, in catalogue order (built once per process)."""
     blocks = [
-        LibraryEntry(name=fb.name, kind="function_block", source="standard", inputs=[_std_pin(p) for p in fb.inputs],
-                     outputs=[_std_pin(p) for p in fb.outputs], in_outs=[], extensible=False, return_type=None,
-                     comment=fb.description)
+        LibraryEntry(
+            name=fb.name,
+            kind="function_block",
+            source="standard",
+            inputs=[_std_pin(p) for p in fb.inputs],
+            outputs=[_std_pin(p) for p in fb.outputs],
+            in_outs=[],
+            extensible=False,
+            return_type=None,
+            comment=fb.description,
+        )
         for fb in stdlib.FUNCTION_BLOCKS.values()
     ]
     functions = [
-        LibraryEntry(name=fn.name, kind="function", source="standard", inputs=[_std_pin(p) for p in fn.inputs],
-                     outputs=[], in_outs=[], extensible=fn.extensible, return_type=_result_type(fn),
-                     comment=fn.description)
+        LibraryEntry(
+            name=fn.name,
+            kind="function",
+            source="standard",
+            inputs=[_std_pin(p) for p in fn.inputs],
+            outputs=[],
+            in_outs=[],
+            extensible=fn.extensible,
+            return_type=_result_type(fn),
+            comment=fn.description,
+        )
         for fn in stdlib.FUNCTIONS.values()
     ]
     return (*blocks, *functions)
@@ -66,20 +82,27 @@ def user_entries(project: Project) -> list[LibraryEntry]:
         kind = _USER_KINDS.get(info.kind)
         if kind is None:
             continue
-        entries.append(LibraryEntry(
-            name=info.name, kind=kind, source="user",
-            inputs=[_user_pin(s) for s in info.parameters("VAR_INPUT")],
-            outputs=[_user_pin(s) for s in info.parameters("VAR_OUTPUT")],
-            in_outs=[_user_pin(s) for s in info.parameters("VAR_IN_OUT")],
-            extensible=False, return_type=by_name[info.name.upper()].return_type, comment=None,
-        ))
+        entries.append(
+            LibraryEntry(
+                name=info.name,
+                kind=kind,
+                source="user",
+                inputs=[_user_pin(s) for s in info.parameters("VAR_INPUT")],
+                outputs=[_user_pin(s) for s in info.parameters("VAR_OUTPUT")],
+                in_outs=[_user_pin(s) for s in info.parameters("VAR_IN_OUT")],
+                extensible=False,
+                return_type=by_name[info.name.upper()].return_type,
+                comment=None,
+            )
+        )
     return entries
 
 
 @router.get("", response_model=list[LibraryEntry], responses=responses(404, 422))
-def get_library(workspace: WorkspaceDep,
-                project: str | None = Query(default=None, description="Add this project's functions and FBs.")
-                ) -> list[LibraryEntry]:
+def get_library(
+    workspace: WorkspaceDep,
+    project: str | None = Query(default=None, description="Add this project's functions and FBs."),
+) -> list[LibraryEntry]:
     entries = list(standard_entries())
     if project is not None:
         entries += user_entries(workspace.load(project).project)

@@ -81,13 +81,17 @@ def check_project_size(project: Project, limits: Limits) -> None:
     """Refuse a project whose stored files would exceed the project size limit."""
     size = sum(len(text.encode("utf-8")) for text in project_files(project).values())
     if size > limits.max_project_bytes:
-        raise ApiError(413, f"project {project.name!r} would take {describe_size(size)} on disk, more than the "
-                            f"limit of {describe_size(limits.max_project_bytes)}")
+        raise ApiError(
+            413,
+            f"project {project.name!r} would take {describe_size(size)} on disk, more than the "
+            f"limit of {describe_size(limits.max_project_bytes)}",
+        )
 
 
 def check_room_for_project(workspace: Workspace, limits: Limits) -> None:
     """Refuse to create a project when the workspace already holds the maximum number."""
     count = len(workspace.list())
     if count >= limits.max_projects:
-        raise ApiError(429, f"the workspace already holds {count} projects, the most this server allows; "
-                            "delete one first")
+        raise ApiError(
+            429, f"the workspace already holds {count} projects, the most this server allows; delete one first"
+        )

@@ -193,8 +193,10 @@ class MonitorClient:
                 self.error("bad_message", "binary frames are not understood: send JSON text")
                 continue
             if len(text) > self.settings.max_message_bytes:
-                self.error("too_large", f"the message has {len(text)} characters, more than the limit of "
-                                        f"{self.settings.max_message_bytes}")
+                self.error(
+                    "too_large",
+                    f"the message has {len(text)} characters, more than the limit of {self.settings.max_message_bytes}",
+                )
                 continue
             await self.handle(text)
 
@@ -258,9 +260,12 @@ class MonitorClient:
     async def _subscribe(self, request: m.Subscribe) -> None:
         limits = self.settings
         if len(request.paths) > limits.max_paths or len(request.elements) > limits.max_instances:
-            raise CommandError("too_many", f"a subscription may hold {limits.max_paths} paths and "
-                                           f"{limits.max_instances} POU instances, not {len(request.paths)} "
-                                           f"and {len(request.elements)}")
+            raise CommandError(
+                "too_many",
+                f"a subscription may hold {limits.max_paths} paths and "
+                f"{limits.max_instances} POU instances, not {len(request.paths)} "
+                f"and {len(request.elements)}",
+            )
         elements = [(e.pou_instance, e.ids) for e in request.elements]
         self.watch = await asyncio.to_thread(self.runner.watch, self, request.paths, elements)
         self.elements = [(e.pou_instance, e.pou_instance.strip().upper(), e.ids) for e in request.elements]
@@ -307,8 +312,13 @@ class MonitorClient:
         while self.outbox or self.status is not None:
             if self.dropped:
                 count, self.dropped = self.dropped, 0
-                await self._send(m.Log(type="log", level="warning",
-                                       message=f"{count} messages were dropped: this connection did not keep up"))
+                await self._send(
+                    m.Log(
+                        type="log",
+                        level="warning",
+                        message=f"{count} messages were dropped: this connection did not keep up",
+                    )
+                )
             if self.outbox:
                 await self._send(self.outbox.popleft())
             else:
@@ -358,11 +368,21 @@ class MonitorClient:
         forced = list(frame.forced)
         if not (full or changed or power or forced != self.last_forced or frame.scan != self.last_scan):
             return None
-        types = {path: display_type(loc.type) for path, loc in self.watch.locations.items()} \
-            if full and self.watch is not None else {}
+        types = (
+            {path: display_type(loc.type) for path, loc in self.watch.locations.items()}
+            if full and self.watch is not None
+            else {}
+        )
         self.full, self.last_forced, self.last_scan = False, forced, frame.scan
-        return m.Values.model_construct(type="values", scan=frame.scan, time_ms=frame.time_ms, changed=changed,
-                                        forced=forced, power=power, types=types)
+        return m.Values.model_construct(
+            type="values",
+            scan=frame.scan,
+            time_ms=frame.time_ms,
+            changed=changed,
+            forced=forced,
+            power=power,
+            types=types,
+        )
 
 
 def display_type(ty: t.IrType) -> m.DisplayType:

@@ -34,16 +34,19 @@ _UNSTORABLE = {"BAD-NAME", "DUPLICATE-POU"}
 @router.get("", response_model=list[ProjectSummary])
 def list_projects(workspace: WorkspaceDep) -> list[ProjectSummary]:
     return [
-        ProjectSummary(name=info.name, revision=info.revision, pou_count=info.pou_count,
-                       modified=modified_at(info.modified))
+        ProjectSummary(
+            name=info.name, revision=info.revision, pou_count=info.pou_count, modified=modified_at(info.modified)
+        )
         for info in workspace.list()
     ]
 
 
-@router.post("", status_code=status.HTTP_201_CREATED, response_model=ProjectSummary,
-             responses=responses(409, 413, 422, 429))
-def create_project(body: CreateProject, workspace: WorkspaceDep, limits: LimitsDep,
-                   response: Response) -> ProjectSummary:
+@router.post(
+    "", status_code=status.HTTP_201_CREATED, response_model=ProjectSummary, responses=responses(409, 413, 422, 429)
+)
+def create_project(
+    body: CreateProject, workspace: WorkspaceDep, limits: LimitsDep, response: Response
+) -> ProjectSummary:
     """An empty project, or a copy of a shipped example under the new name."""
     check_project_name(body.name)
     check_room_for_project(workspace, limits)
@@ -52,13 +55,15 @@ def create_project(body: CreateProject, workspace: WorkspaceDep, limits: LimitsD
     stored = workspace.load(body.name)
     response.headers.update(etag(revision))
     response.headers["Location"] = f"/api/projects/{body.name}"
-    return ProjectSummary(name=body.name, revision=revision, modified=modified_at(stored.modified),
-                          pou_count=len(project.pous))
+    return ProjectSummary(
+        name=body.name, revision=revision, modified=modified_at(stored.modified), pou_count=len(project.pous)
+    )
 
 
 def _example(example: str, name: str) -> Project:
-    available = sorted(d.name for d in EXAMPLES_DIR.iterdir() if (d / PROJECT_FILE).is_file()) \
-        if EXAMPLES_DIR.is_dir() else []
+    available = (
+        sorted(d.name for d in EXAMPLES_DIR.iterdir() if (d / PROJECT_FILE).is_file()) if EXAMPLES_DIR.is_dir() else []
+    )
     if example not in available:
         raise ApiError(422, f"unknown example {example!r}; available: {', '.join(available) or 'none'}")
     return read_project_folder(EXAMPLES_DIR / example).model_copy(update={"name": name})
@@ -68,30 +73,50 @@ def _example(example: str, name: str) -> Project:
 def get_project(name: str, workspace: WorkspaceDep, response: Response) -> ProjectDocument:
     stored = workspace.load(name)
     response.headers.update(etag(stored.revision))
-    return ProjectDocument(name=name, revision=stored.revision, modified=modified_at(stored.modified),
-                           project=stored.project)
+    return ProjectDocument(
+        name=name, revision=stored.revision, modified=modified_at(stored.modified), project=stored.project
+    )
 
 
 @router.put("/{name}", response_model=SaveResult, responses=responses(404, 409, 413, 422, 428))
-def save_project(name: str, project: Project, workspace: WorkspaceDep, limits: LimitsDep,
-                 response: Response, if_match: IfMatch = None) -> SaveResult:
+def save_project(
+    name: str,
+    project: Project,
+    workspace: WorkspaceDep,
+    limits: LimitsDep,
+    response: Response,
+    if_match: IfMatch = None,
+) -> SaveResult:
     """Replace the whole project; its ``name`` must be the URL's (renaming has its own route)."""
     base = _required(if_match)
     if project.name != name:
-        raise ApiError(422, f"the project in the body is called {project.name!r} but the URL names {name!r}; "
-                            "use POST /api/projects/{name}/rename to rename",
-                       [Diagnostic(code="BAD-REQUEST", json_path="$.name", message="does not match the URL")])
+        raise ApiError(
+            422,
+            f"the project in the body is called {project.name!r} but the URL names {name!r}; "
+            "use POST /api/projects/{name}/rename to rename",
+            [Diagnostic(code="BAD-REQUEST", json_path="$.name", message="does not match the URL")],
+        )
     return _save(workspace, limits, project, base, response)
 
 
 @router.put("/{name}/pous/{pou}", response_model=SaveResult, responses=responses(404, 409, 413, 422, 428))
-def save_pou(name: str, pou: str, body: Pou, workspace: WorkspaceDep, limits: LimitsDep,
-             response: Response, if_match: IfMatch = None) -> SaveResult:
+def save_pou(
+    name: str,
+    pou: str,
+    body: Pou,
+    workspace: WorkspaceDep,
+    limits: LimitsDep,
+    response: Response,
+    if_match: IfMatch = None,
+) -> SaveResult:
     """Replace one POU (matched ignoring case, as IEC names are), or add it at the end when it is new."""
     base = _required(if_match)
     if body.name != pou:
-        raise ApiError(422, f"the POU in the body is called {body.name!r} but the URL names {pou!r}",
-                       [Diagnostic(code="BAD-REQUEST", json_path="$.name", message="does not match the URL")])
+        raise ApiError(
+            422,
+            f"the POU in the body is called {body.name!r} but the URL names {pou!r}",
+            [Diagnostic(code="BAD-REQUEST", json_path="$.name", message="does not match the URL")],
+        )
     project = _at_revision(workspace, name, base)
     pous = list(project.pous)
     index = next((i for i, p in enumerate(pous) if p.name.upper() == pou.upper()), None)
@@ -103,8 +128,9 @@ def save_pou(name: str, pou: str, body: Pou, workspace: WorkspaceDep, limits: Li
 
 
 @router.delete("/{name}/pous/{pou}", response_model=SaveResult, responses=responses(404, 409, 422, 428))
-def delete_pou(name: str, pou: str, workspace: WorkspaceDep, limits: LimitsDep, response: Response,
-               if_match: IfMatch = None) -> SaveResult:
+def delete_pou(
+    name: str, pou: str, workspace: WorkspaceDep, limits: LimitsDep, response: Response, if_match: IfMatch = None
+) -> SaveResult:
     base = _required(if_match)
     project = _at_revision(workspace, name, base)
     if project.pou(pou) is None:
@@ -114,19 +140,22 @@ def delete_pou(name: str, pou: str, workspace: WorkspaceDep, limits: LimitsDep, 
 
 
 @router.post("/{name}/rename", response_model=ProjectSummary, responses=responses(404, 409, 422))
-def rename_project(name: str, body: RenameProject, workspace: WorkspaceDep, response: Response,
-                   if_match: IfMatch = None) -> ProjectSummary:
+def rename_project(
+    name: str, body: RenameProject, workspace: WorkspaceDep, response: Response, if_match: IfMatch = None
+) -> ProjectSummary:
     """Rename the project's folder and its ``name``; ``If-Match`` is optional here."""
     base = revision_from_header(if_match) if if_match is not None else None
     revision = workspace.rename(name, body.new_name, base)
     stored = workspace.load(body.new_name)
     response.headers.update(etag(revision))
-    return ProjectSummary(name=body.new_name, revision=revision, modified=modified_at(stored.modified),
-                          pou_count=len(stored.project.pous))
+    return ProjectSummary(
+        name=body.new_name, revision=revision, modified=modified_at(stored.modified), pou_count=len(stored.project.pous)
+    )
 
 
-@router.delete("/{name}", status_code=status.HTTP_204_NO_CONTENT, response_class=Response,
-               responses=responses(404, 409, 422))
+@router.delete(
+    "/{name}", status_code=status.HTTP_204_NO_CONTENT, response_class=Response, responses=responses(404, 409, 422)
+)
 def delete_project(name: str, workspace: WorkspaceDep, if_match: IfMatch = None) -> Response:
     """Delete the project folder; with ``If-Match`` only if nobody saved since that revision."""
     workspace.delete(name, revision_from_header(if_match) if if_match is not None else None)
@@ -141,8 +170,11 @@ def check(name: str, workspace: WorkspaceDep) -> CheckReport:
 
 def _required(if_match: str | None) -> str:
     if if_match is None or not if_match.strip():
-        raise ApiError(428, "this change needs an If-Match header with the revision it is based on "
-                            "(the ETag of GET /api/projects/{name})")
+        raise ApiError(
+            428,
+            "this change needs an If-Match header with the revision it is based on "
+            "(the ETag of GET /api/projects/{name})",
+        )
     return revision_from_header(if_match)
 
 

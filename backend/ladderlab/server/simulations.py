@@ -22,7 +22,6 @@ from .errors import ApiError, responses, summarise
 router = APIRouter(tags=["simulations"])
 
 
-
 def _registry(request: Request) -> SimulationRegistry:
     return registry_of(request.app)
 
@@ -32,8 +31,12 @@ RegistryDep = Annotated[SimulationRegistry, Depends(_registry)]
 _DESCRIBED = responses(404, 409, 422)
 
 
-@router.post("/api/projects/{name}/simulations", status_code=status.HTTP_201_CREATED,
-             response_model=SimulationInfo, responses=responses(404, 422, 429))
+@router.post(
+    "/api/projects/{name}/simulations",
+    status_code=status.HTTP_201_CREATED,
+    response_model=SimulationInfo,
+    responses=responses(404, 422, 429),
+)
 def create_simulation(name: str, workspace: WorkspaceDep, registry: RegistryDep, response: Response) -> SimulationInfo:
     """Compile the saved project (monitor variant) into a stopped simulation."""
     registry.check_room()
@@ -71,8 +74,7 @@ def stop(sim_id: str, registry: RegistryDep) -> SimulationInfo:
 
 
 @router.post("/api/simulations/{sim_id}/reset", response_model=SimulationInfo, responses=_DESCRIBED)
-def reset(sim_id: str, registry: RegistryDep,
-          body: Annotated[ResetSimulation | None, Body()] = None) -> SimulationInfo:
+def reset(sim_id: str, registry: RegistryDep, body: Annotated[ResetSimulation | None, Body()] = None) -> SimulationInfo:
     """Stop and restart warm (RETAIN variables keep their values) or cold; clears faults; forces stay."""
     cold = body.cold if body is not None else False
     return _command(registry.get(sim_id), lambda runner: runner.reset(cold=cold))
@@ -84,8 +86,12 @@ def single_cycle(sim_id: str, registry: RegistryDep) -> SimulationInfo:
     return _command(registry.get(sim_id), lambda runner: runner.single_cycle())
 
 
-@router.delete("/api/simulations/{sim_id}", status_code=status.HTTP_204_NO_CONTENT, response_class=Response,
-               responses=responses(404))
+@router.delete(
+    "/api/simulations/{sim_id}",
+    status_code=status.HTTP_204_NO_CONTENT,
+    response_class=Response,
+    responses=responses(404),
+)
 def delete_simulation(sim_id: str, registry: RegistryDep) -> Response:
     """End the simulation; its websocket clients are told and disconnected."""
     registry.delete(sim_id)
@@ -107,9 +113,17 @@ def simulation_info(entry: SimulationEntry) -> SimulationInfo:
         stats = sim.stats
         fault = sim.fault
         return SimulationInfo(
-            id=entry.id, project=entry.project, revision=entry.revision, state=runner.state,  # type: ignore[arg-type]
-            scan_count=sim.scan_count, time_ms=sim.time_ms, real_time_ms=runner.real_time_ms(),
+            id=entry.id,
+            project=entry.project,
+            revision=entry.revision,
+            state=runner.state,  # type: ignore[arg-type]
+            scan_count=sim.scan_count,
+            time_ms=sim.time_ms,
+            real_time_ms=runner.real_time_ms(),
             scan_ms=ScanTimes(min=stats.min_ms, avg=stats.avg_ms, max=stats.max_ms, last=stats.last_ms),
-            overruns=runner.overruns, fault=fault.diagnostic() if fault is not None else None,
-            clients=entry.clients, created=modified_at(entry.created), instances=sim.instances(),
+            overruns=runner.overruns,
+            fault=fault.diagnostic() if fault is not None else None,
+            clients=entry.clients,
+            created=modified_at(entry.created),
+            instances=sim.instances(),
         )

@@ -26,9 +26,14 @@ _SHARED_TEXTS = {"types", "globals"}
 def symbol_info(symbol: Symbol) -> SymbolInfo:
     """One symbol with its type and initial value as ST text (as declared, not the resolved internals)."""
     return SymbolInfo(
-        name=symbol.name, var_class=symbol.var_class, type=print_type(symbol.type_spec),
+        name=symbol.name,
+        var_class=symbol.var_class,
+        type=print_type(symbol.type_spec),
         initial=print_initializer(symbol.init) if symbol.init is not None else None,
-        address=symbol.address, comment=symbol.comment, retain=symbol.retain, constant=symbol.constant,
+        address=symbol.address,
+        comment=symbol.comment,
+        retain=symbol.retain,
+        constant=symbol.constant,
     )
 
 
@@ -40,10 +45,15 @@ def symbol_table(project: Project, pou_name: str) -> SymbolTable:
     result = check_st(project)
     key = pou.name.upper()
     info = result.pous[key]  # the checker registers every POU (the first one, like project.pou, on duplicates)
-    diagnostics = [d for d in result.diagnostics
-                   if (d.pou is not None and d.pou.upper() == key) or d.file in _SHARED_TEXTS]
-    return SymbolTable(pou=pou.name, symbols=[symbol_info(s) for s in info.symbols.values()],
-                       globals=[symbol_info(s) for s in result.globals.values()], diagnostics=diagnostics)
+    diagnostics = [
+        d for d in result.diagnostics if (d.pou is not None and d.pou.upper() == key) or d.file in _SHARED_TEXTS
+    ]
+    return SymbolTable(
+        pou=pou.name,
+        symbols=[symbol_info(s) for s in info.symbols.values()],
+        globals=[symbol_info(s) for s in result.globals.values()],
+        diagnostics=diagnostics,
+    )
 
 
 @router.get("/{name}/pous/{pou}/symbols", response_model=SymbolTable, responses=responses(404, 422))

@@ -69,8 +69,9 @@ class SimulationRegistry:
 
     def _check_room(self) -> None:
         if len(self._entries) >= self.settings.max_simulations:
-            raise RegistryFull(f"the server already runs {len(self._entries)} simulations, the most it allows; "
-                                "delete one first")
+            raise RegistryFull(
+                f"the server already runs {len(self._entries)} simulations, the most it allows; delete one first"
+            )
 
     def add(self, project: str, revision: str, runner: SimRunner) -> SimulationEntry:
         with self._lock:
@@ -92,8 +93,10 @@ class SimulationRegistry:
         with self._lock:
             entry = self._entries.get(sim_id)
             if entry is None:
-                raise UnknownSimulation(f"no simulation {sim_id!r} (it may have been deleted or ended after "
-                                    f"{self.settings.idle_timeout_s:g} s without use)")
+                raise UnknownSimulation(
+                    f"no simulation {sim_id!r} (it may have been deleted or ended after "
+                    f"{self.settings.idle_timeout_s:g} s without use)"
+                )
             entry.last_active = time.monotonic()
             return entry
 
@@ -134,8 +137,11 @@ class SimulationRegistry:
         while not self._stop.wait(self.settings.reap_every_s):
             now = time.monotonic()
             with self._lock:
-                idle = [e for e in self._entries.values()
-                        if e.clients == 0 and now - e.last_active > self.settings.idle_timeout_s]
+                idle = [
+                    e
+                    for e in self._entries.values()
+                    if e.clients == 0 and now - e.last_active > self.settings.idle_timeout_s
+                ]
                 for entry in idle:
                     del self._entries[entry.id]
             for entry in idle:

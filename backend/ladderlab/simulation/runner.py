@@ -92,22 +92,40 @@ class Listener(Protocol):
 
 def at_halt(halt: Halt) -> At:
     origin = halt.origin
-    return At(pou=origin.pou, instance=halt.instance, network=origin.network,
-              element=halt.point.element or origin.element, line=origin.line, column=origin.column)
+    return At(
+        pou=origin.pou,
+        instance=halt.instance,
+        network=origin.network,
+        element=halt.point.element or origin.element,
+        line=origin.line,
+        column=origin.column,
+    )
 
 
 def at_origin(origin: ir.Origin | None, pou: str | None, instance: str | None) -> At | None:
     if origin is None:
         return At(pou=pou, instance=instance) if pou else None
-    return At(pou=origin.pou, instance=instance, network=origin.network, element=origin.element,
-              line=origin.line, column=origin.column)
+    return At(
+        pou=origin.pou,
+        instance=instance,
+        network=origin.network,
+        element=origin.element,
+        line=origin.line,
+        column=origin.column,
+    )
 
 
 class SimRunner:
     """Runs ``sim`` (monitor variant, debug while debugging; or any variant it was built with) in its own thread."""
 
-    def __init__(self, sim: Simulation, *, speed: float = 1.0, publish_s: float = 0.02,
-                 clock: Callable[[], float] = time.monotonic) -> None:
+    def __init__(
+        self,
+        sim: Simulation,
+        *,
+        speed: float = 1.0,
+        publish_s: float = 0.02,
+        clock: Callable[[], float] = time.monotonic,
+    ) -> None:
         self.sim = sim
         self.lock = threading.RLock()
         self.speed = speed
@@ -194,8 +212,9 @@ class SimRunner:
                     except Exception as error:  # noqa: BLE001 - a bug must not kill the thread silently
                         log.exception("simulation thread failed")
                         self._set_running(False)
-                        self._emit(Log(type="log", level="error",
-                                       message=f"internal error, simulation stopped: {error!r}"))
+                        self._emit(
+                            Log(type="log", level="error", message=f"internal error, simulation stopped: {error!r}")
+                        )
                     self._settle()
                 if not self._woken:
                     self._wake.wait(delay)
@@ -232,7 +251,7 @@ class SimRunner:
             for hook in self.after_scan:
                 hook(sim)
         if len(sim.faults) > self._seen_faults:
-            for fault in sim.faults[self._seen_faults:]:
+            for fault in sim.faults[self._seen_faults :]:
                 self._emit(self._fault_log(fault))
             self._seen_faults = len(sim.faults)
             self._faulted = True
@@ -266,8 +285,14 @@ class SimRunner:
                 raise CommandError("bad_state", f"cannot debug this program: {error}") from None
 
     def _fault_log(self, fault: Fault) -> Log:
-        return Log(type="log", level="error", message=fault.text(),
-                   at=at_origin(fault.origin, fault.pou, fault.instance), scan=fault.scan, time_ms=fault.time_ms)
+        return Log(
+            type="log",
+            level="error",
+            message=fault.text(),
+            at=at_origin(fault.origin, fault.pou, fault.instance),
+            scan=fault.scan,
+            time_ms=fault.time_ms,
+        )
 
     def _publish(self, now: float) -> None:
         self._last_publish = now
@@ -278,8 +303,9 @@ class SimRunner:
                 probes[instance] = self.sim.probes(instance)
             except KeyError:
                 probes[instance] = ProbeView({}, frozenset())
-        self.frame = Frame(self.frame.seq + 1, self.sim.scan_count, self.sim.time_ms, values, probes,
-                           tuple(self.sim.forced))
+        self.frame = Frame(
+            self.frame.seq + 1, self.sim.scan_count, self.sim.time_ms, values, probes, tuple(self.sim.forced)
+        )
         for listener in list(self._listeners):
             listener.frame()
 
@@ -319,28 +345,40 @@ class SimRunner:
             self._set_running(True)
             if self.sim.halted is not None:
                 self.sim.resume()
+
         self._command(action)
 
     def stop(self) -> None:
         def action() -> None:
             if self._running and self.sim.halted is not None:  # the state stays "halted": say what Stop did
-                self._emit(Log(type="log", level="info", scan=self.sim.scan_count, time_ms=self.sim.time_ms,
-                               message="stopped: the scan stays halted; Continue or a step finishes it, "
-                                       "then no further scan runs"))
+                self._emit(
+                    Log(
+                        type="log",
+                        level="info",
+                        scan=self.sim.scan_count,
+                        time_ms=self.sim.time_ms,
+                        message="stopped: the scan stays halted; Continue or a step finishes it, "
+                        "then no further scan runs",
+                    )
+                )
             self._set_running(False)
+
         self._command(action)
 
     def reset(self, cold: bool = False) -> None:
         """Warm or cold restart: stops, ends a halted scan, clears the faults (forces stay)."""
+
         def action() -> None:
             self._set_running(False)
             self.sim.reset(cold=cold)
             self._faulted = False
             self._seen_faults = 0
+
         self._command(action)
 
     def single_cycle(self) -> None:
         """One scan of a stopped simulation; when halted, the rest of the current scan."""
+
         def action() -> None:
             if self.sim.halted is not None:
                 self.sim.resume()
@@ -350,6 +388,7 @@ class SimRunner:
             if self._faulted:
                 raise CommandError("bad_state", "the simulation stopped on a fault: reset it first")
             self.sim.cycle(1)
+
         self._command(action)
 
     def resume(self) -> None:
@@ -357,15 +396,18 @@ class SimRunner:
             if self.sim.halted is None:
                 raise CommandError("bad_state", "the simulation is not halted")
             self.sim.resume()
+
         self._command(action)
 
     def step(self, granularity: str) -> None:
         """Halted: continue to the next pause point of this granularity. Else halt in the next scan."""
+
         def action() -> None:
             if self._faulted and self.sim.halted is None:
                 raise CommandError("bad_state", "the simulation stopped on a fault: reset it first")
             self._needs_debug()
             self.sim.step(granularity)
+
         self._command(action)
 
     def set_breakpoint(self, pou: str, **where: object) -> None:
@@ -402,9 +444,16 @@ class SimRunner:
 
         def action() -> None:
             self._coerced(self.sim.force, path, value)
-            self._emit(Log(type="log", level="info",
-                           message=f"forced {location.path} := {_text(self.sim.read(path))}",
-                           scan=self.sim.scan_count, time_ms=self.sim.time_ms))
+            self._emit(
+                Log(
+                    type="log",
+                    level="info",
+                    message=f"forced {location.path} := {_text(self.sim.read(path))}",
+                    scan=self.sim.scan_count,
+                    time_ms=self.sim.time_ms,
+                )
+            )
+
         self._command(action)
 
     def unforce(self, path: str) -> None:
@@ -414,8 +463,16 @@ class SimRunner:
             if location.path not in self.sim.forced:
                 raise CommandError("bad_path", f"{location.path} is not forced")
             self.sim.unforce(path)
-            self._emit(Log(type="log", level="info", message=f"released the force on {location.path}",
-                           scan=self.sim.scan_count, time_ms=self.sim.time_ms))
+            self._emit(
+                Log(
+                    type="log",
+                    level="info",
+                    message=f"released the force on {location.path}",
+                    scan=self.sim.scan_count,
+                    time_ms=self.sim.time_ms,
+                )
+            )
+
         self._command(action)
 
     def unforce_all(self) -> None:
@@ -423,8 +480,16 @@ class SimRunner:
             count = len(self.sim.forced)
             self.sim.unforce_all()
             if count:
-                self._emit(Log(type="log", level="info", message=f"released all forces ({count})",
-                               scan=self.sim.scan_count, time_ms=self.sim.time_ms))
+                self._emit(
+                    Log(
+                        type="log",
+                        level="info",
+                        message=f"released all forces ({count})",
+                        scan=self.sim.scan_count,
+                        time_ms=self.sim.time_ms,
+                    )
+                )
+
         self._command(action)
 
     @staticmethod
@@ -458,6 +523,7 @@ class SimRunner:
         def action() -> None:
             self._watches[key] = watch
             self._rebuild_union()
+
         self._command(action)
         return watch
 
@@ -493,8 +559,14 @@ class SimRunner:
 
     # ------------------------------------------------------------------ traces
 
-    def start_trace(self, owner: object, paths: list[str], samples: int | None = None,
-                    trigger: TraceTrigger | None = None, trace_id: int = 0) -> None:
+    def start_trace(
+        self,
+        owner: object,
+        paths: list[str],
+        samples: int | None = None,
+        trigger: TraceTrigger | None = None,
+        trace_id: int = 0,
+    ) -> None:
         """Record ``paths`` after every scan for ``owner`` (replacing its running trace); see ``trace.py``."""
         try:
             plan = plan_trace(self.location, paths, trigger)

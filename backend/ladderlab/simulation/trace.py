@@ -25,7 +25,7 @@ class TraceRefused(ValueError):
 
 
 def kind_of(location: Location) -> str | None:
-    """"bool" or "number" for what a trace can record (ints, bit strings, reals, times, dates,
+    """ "bool" or "number" for what a trace can record (ints, bit strings, reals, times, dates,
     enumerations, subranges); None for STRINGs and composite variables."""
     ty = location.type
     if isinstance(ty, (t.Enum, t.Subrange)):
@@ -62,19 +62,25 @@ def plan_trace(resolve: Callable[[str], Location], paths: list[str], trigger: Tr
     for path in paths:
         location = resolve(path)
         if kind_of(location) is None:
-            raise TraceRefused(f"{location.path} is not a BOOL or numeric variable: a trace records BOOL and "
-                               f"numeric variables (trace the elements of arrays and structures)")
+            raise TraceRefused(
+                f"{location.path} is not a BOOL or numeric variable: a trace records BOOL and "
+                f"numeric variables (trace the elements of arrays and structures)"
+            )
         locations.setdefault(location.path, location)
     if trigger is None:
         return TracePlan(tuple(locations.values()))
     where = resolve(trigger.path)
     kind = kind_of(where)
     if trigger.condition in ("rising", "falling") and kind != "bool":
-        raise TraceRefused(f"the trigger {where.path} is not a BOOL: a {trigger.condition} edge needs a BOOL "
-                           f"(use cross_up or cross_down with a level for numbers)")
+        raise TraceRefused(
+            f"the trigger {where.path} is not a BOOL: a {trigger.condition} edge needs a BOOL "
+            f"(use cross_up or cross_down with a level for numbers)"
+        )
     if trigger.condition.startswith("cross") and kind != "number":
-        raise TraceRefused(f"the trigger {where.path} is not numeric: {trigger.condition} compares a number "
-                           f"with a level (use rising or falling for a BOOL)")
+        raise TraceRefused(
+            f"the trigger {where.path} is not numeric: {trigger.condition} compares a number "
+            f"with a level (use rising or falling for a BOOL)"
+        )
     return TracePlan(tuple(locations.values()), where, trigger.condition, trigger.level)
 
 
@@ -120,8 +126,16 @@ class _Recorder:
         if not self.scans and not self.unreported:
             return None
         values = {location.path: column for location, column in zip(self.plan.locations, self.columns)}
-        data = TraceData.model_construct(type="trace_data", id=self.id, state=self.state, scans=self.scans,
-                                         time_ms=self.times, values=values, triggered=self.triggered, lost=self.lost)
+        data = TraceData.model_construct(
+            type="trace_data",
+            id=self.id,
+            state=self.state,
+            scans=self.scans,
+            time_ms=self.times,
+            values=values,
+            triggered=self.triggered,
+            lost=self.lost,
+        )
         self.scans, self.times = [], []
         self.columns = [[] for _ in self.plan.locations]
         self.triggered, self.lost, self.unreported = None, 0, False
@@ -138,8 +152,14 @@ class TraceBook:
     def start(self, owner: object, trace_id: int, plan: TracePlan, samples: int | None, sim: Simulation) -> None:
         """Start (or replace) ``owner``'s trace; call with the runner's lock held (reads the trigger)."""
         previous = sim.value(plan.trigger) if plan.trigger is not None else None
-        recorder = _Recorder(trace_id, plan, samples, previous, state="waiting" if plan.trigger else "recording",
-                             columns=[[] for _ in plan.locations])
+        recorder = _Recorder(
+            trace_id,
+            plan,
+            samples,
+            previous,
+            state="waiting" if plan.trigger else "recording",
+            columns=[[] for _ in plan.locations],
+        )
         with self._lock:
             self._traces[owner] = recorder
 

@@ -179,8 +179,9 @@ class Binary:
     ty: Any = _annotation()
 
 
-Expr = Union[IntLit, RealLit, BoolLit, StringLit, TimeLit, TypedLit, Name, DirectAddr, Member, Index, Deref, Call,
-             Unary, Binary]
+Expr = Union[
+    IntLit, RealLit, BoolLit, StringLit, TimeLit, TypedLit, Name, DirectAddr, Member, Index, Deref, Call, Unary, Binary
+]
 LITERALS = (IntLit, RealLit, BoolLit, StringLit, TimeLit, TypedLit)
 
 # ---------------------------------------------------------------- statements

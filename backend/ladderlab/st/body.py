@@ -27,9 +27,14 @@ _COMPARISON = {"=", "<>", "<", ">", "<=", ">="}
 _LOGIC = {"AND", "OR", "XOR"}
 # TIME and date arithmetic (ST-21, ST-22, FUN-85): (op, left category, right category) -> result type name
 _TIME_RULES = {
-    ("+", "time", "time"): "TIME", ("-", "time", "time"): "TIME",
-    ("+", "tod", "time"): "TIME_OF_DAY", ("-", "tod", "time"): "TIME_OF_DAY", ("-", "tod", "tod"): "TIME",
-    ("+", "dt", "time"): "DATE_AND_TIME", ("-", "dt", "time"): "DATE_AND_TIME", ("-", "dt", "dt"): "TIME",
+    ("+", "time", "time"): "TIME",
+    ("-", "time", "time"): "TIME",
+    ("+", "tod", "time"): "TIME_OF_DAY",
+    ("-", "tod", "time"): "TIME_OF_DAY",
+    ("-", "tod", "tod"): "TIME",
+    ("+", "dt", "time"): "DATE_AND_TIME",
+    ("-", "dt", "time"): "DATE_AND_TIME",
+    ("-", "dt", "dt"): "TIME",
     ("-", "date", "date"): "TIME",
 }
 _DIRECT_DEFAULTS = {"X": "BOOL", "B": "BYTE", "W": "INT", "D": "REAL", "L": "LWORD"}  # S002 Table 10.1 (ST-13)
@@ -93,13 +98,19 @@ class BodyChecker:
             if typedef is not None and isinstance(typedef.type, t.EnumType) and isinstance(node.value, ast.Name):
                 if node.value.name.upper() in typedef.type.values:
                     return typedef.type
-                self.report("ST-UNKNOWN-VAR", f"'{node.value.name}' is not a value of {typedef.name}"
-                            + did_you_mean(node.value.name, [v[0] for v in typedef.type.values.values()]), node)
+                self.report(
+                    "ST-UNKNOWN-VAR",
+                    f"'{node.value.name}' is not a value of {typedef.name}"
+                    + did_you_mean(node.value.name, [v[0] for v in typedef.type.values.values()]),
+                    node,
+                )
                 return ERROR
             self.report("ST-UNKNOWN-TYPE", f"unknown type '{node.type_name}' in typed literal", node)
             return ERROR
         value = self.expr(node.value)
-        if assignable_or_report(self, target, value, node, f"{node.type_name}# literal") and isinstance(node.value, ast.IntLit):
+        if assignable_or_report(self, target, value, node, f"{node.type_name}# literal") and isinstance(
+            node.value, ast.IntLit
+        ):
             if not t.literal_fits(target, node.value.value):
                 self.report("ST-RANGE", f"{node.value.value} is out of range for {target}", node)
         return target
@@ -122,8 +133,9 @@ class BodyChecker:
             names = ", ".join(f"{v.type.name}#{v.name}" for v in values)
             self.report("ST-AMBIGUOUS", f"'{node.name}' is a value of several enumerations: write {names}", node)
             return ERROR
-        self.report("ST-UNKNOWN-VAR", f"unknown variable '{node.name}'" + did_you_mean(node.name, self._visible_names()),
-                    node)
+        self.report(
+            "ST-UNKNOWN-VAR", f"unknown variable '{node.name}'" + did_you_mean(node.name, self._visible_names()), node
+        )
         return ERROR
 
     def _direct(self, node: ast.DirectAddr) -> Type:
@@ -143,8 +155,12 @@ class BodyChecker:
         if isinstance(base, t.StructType):
             if upper in base.fields:
                 return base.fields[upper][1]
-            self.report("ST-UNKNOWN-MEMBER", f"{base.name} has no field '{node.name}'"
-                        + did_you_mean(node.name, [f[0] for f in base.fields.values()]), node)
+            self.report(
+                "ST-UNKNOWN-MEMBER",
+                f"{base.name} has no field '{node.name}'"
+                + did_you_mean(node.name, [f[0] for f in base.fields.values()]),
+                node,
+            )
             return ERROR
         if isinstance(base, t.FbType):
             return self._fb_member(node, base)
@@ -163,18 +179,26 @@ class BodyChecker:
             if upper in ("EN", "ENO"):
                 return t.BOOL
             pins = [p.name for p in (*base.std.inputs, *base.std.outputs)]
-            self.report("ST-UNKNOWN-MEMBER", f"{base.name} has no pin '{node.name}'" + did_you_mean(node.name, pins), node)
+            self.report(
+                "ST-UNKNOWN-MEMBER", f"{base.name} has no pin '{node.name}'" + did_you_mean(node.name, pins), node
+            )
             return ERROR
         symbol = base.pou.symbols.get(upper)
         if symbol is None:
             pins = [s.name for s in base.pou.parameters()]
-            self.report("ST-UNKNOWN-MEMBER", f"{base.name} has no input or output '{node.name}'"
-                        + did_you_mean(node.name, pins), node)
+            self.report(
+                "ST-UNKNOWN-MEMBER",
+                f"{base.name} has no input or output '{node.name}'" + did_you_mean(node.name, pins),
+                node,
+            )
             return ERROR
         node.ref = symbol
         if symbol.var_class not in ("VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT"):
-            self.report("ST-NOT-ACCESSIBLE", f"'{node.name}' is internal to {base.name}: only its inputs and outputs "
-                        "can be used from outside", node)
+            self.report(
+                "ST-NOT-ACCESSIBLE",
+                f"'{node.name}' is internal to {base.name}: only its inputs and outputs can be used from outside",
+                node,
+            )
         return symbol.type
 
     def _index(self, node: ast.Index) -> Type:
@@ -240,12 +264,20 @@ class BodyChecker:
             return left  # FUN-82 (Mosaic): '+' concatenates
         combined, verdict = t.common(left, right)
         if verdict == "error":
-            self.report("ST-TYPE-MISMATCH", f"'{op}' needs operands of the same type: {left} and {right}; "
-                        f"convert one of them (e.g. {_hint(left, right)})", node)
+            self.report(
+                "ST-TYPE-MISMATCH",
+                f"'{op}' needs operands of the same type: {left} and {right}; "
+                f"convert one of them (e.g. {_hint(left, right)})",
+                node,
+            )
             return ERROR
         if verdict == "widen":
-            self.report("ST-IMPLICIT-CONV", f"{left} and {right} are mixed in '{op}': the narrower one is converted "
-                        "implicitly", node, severity="warning")
+            self.report(
+                "ST-IMPLICIT-CONV",
+                f"{left} and {right} are mixed in '{op}': the narrower one is converted implicitly",
+                node,
+                severity="warning",
+            )
         return self._operator_result(node, combined)
 
     def _operator_result(self, node: ast.Binary, combined: Type) -> Type:
@@ -275,8 +307,11 @@ class BodyChecker:
         if isinstance(left, t.UntypedInt):
             left = t.UntypedReal()  # FUN-33: an untyped integer base is promoted
         if not t.in_family(left, "ANY_REAL"):
-            self.report("ST-TYPE-MISMATCH", f"the base of '**' must be REAL or LREAL, not {left}; convert it "
-                        f"(e.g. {left}_TO_REAL)", node.left)
+            self.report(
+                "ST-TYPE-MISMATCH",
+                f"the base of '**' must be REAL or LREAL, not {left}; convert it (e.g. {left}_TO_REAL)",
+                node.left,
+            )
             return ERROR
         if not t.in_family(right, "ANY_NUM"):
             self.report("ST-TYPE-MISMATCH", f"the exponent of '**' must be a number, not {right}", node.right)
@@ -299,8 +334,9 @@ class BodyChecker:
                 self.call(stmt.call, statement=True)
             else:
                 self.expr(stmt.call)
-                self.report("ST-NO-EFFECT", "this statement does nothing: expected an assignment ':=' or a call '(...)'",
-                            stmt)
+                self.report(
+                    "ST-NO-EFFECT", "this statement does nothing: expected an assignment ':=' or a call '(...)'", stmt
+                )
         elif isinstance(stmt, ast.If):
             for cond, body in stmt.branches:
                 self.condition(cond, "IF")
@@ -338,8 +374,9 @@ class BodyChecker:
         """Type an assignment target and check it may be written (ST-20, POU-23, VAR-21, ST-73)."""
         if not isinstance(node, (ast.Name, ast.Member, ast.Index, ast.Deref, ast.DirectAddr)):
             self.expr(node)
-            self.report("ST-NOT-LVALUE", "only a variable, array element, field or pointer target can be assigned",
-                        node)
+            self.report(
+                "ST-NOT-LVALUE", "only a variable, array element, field or pointer target can be assigned", node
+            )
             return ERROR
         ty = self.expr(node)
         root = root_name(node)
@@ -350,16 +387,26 @@ class BodyChecker:
             if symbol.constant:
                 self.report("ST-CONST-WRITE", f"'{symbol.name}' is a CONSTANT and cannot be assigned", node)
             if symbol in self.loop_vars and node is root:
-                self.report("ST-LOOP-VAR", f"'{symbol.name}' is the FOR loop variable: it must not be changed inside "
-                            "the loop", node)
+                self.report(
+                    "ST-LOOP-VAR",
+                    f"'{symbol.name}' is the FOR loop variable: it must not be changed inside the loop",
+                    node,
+                )
             if symbol.var_class == "VAR_INPUT" and node is root and self.pou is not None:
-                self.report("ST-INPUT-WRITE", f"'{symbol.name}' is an input of {self.pou.name}: assigning it "
-                            "overwrites the caller's value", node, severity="warning")
+                self.report(
+                    "ST-INPUT-WRITE",
+                    f"'{symbol.name}' is an input of {self.pou.name}: assigning it overwrites the caller's value",
+                    node,
+                    severity="warning",
+                )
         elif root is not None and isinstance(root.ref, EnumValue):
             self.report("ST-NOT-LVALUE", f"'{root.name}' is an enumeration value and cannot be assigned", node)
         if isinstance(node, ast.Member) and isinstance(node.base.ty, t.FbType) and _is_output(node):
-            self.report("ST-READONLY", f"'{node.name}' is an output of {node.base.ty.name}: it can be read but not "
-                        "assigned from outside", node)
+            self.report(
+                "ST-READONLY",
+                f"'{node.name}' is an output of {node.base.ty.name}: it can be read but not assigned from outside",
+                node,
+            )
         return ty
 
     def for_loop(self, stmt: ast.For) -> None:
@@ -415,5 +462,8 @@ def _enums_in(ty: Type):
 
 
 def _hint(left: Type, right: Type) -> str:
-    return f"{right.name}_TO_{left.name}" if isinstance(left, t.Elementary) and isinstance(right, t.Elementary) \
+    return (
+        f"{right.name}_TO_{left.name}"
+        if isinstance(left, t.Elementary) and isinstance(right, t.Elementary)
         else "a *_TO_* conversion"
+    )

@@ -51,8 +51,11 @@ def check_call(checker: Any, node: ast.Call, statement: bool) -> Type:
         return _std_call(checker, node, function)
     if stdlib.function_block(upper) is not None:
         _args_untyped(checker, node)
-        checker.report("ST-NOT-CALLABLE", f"{callee.name} is a function block type: declare an instance "
-                       f"(e.g. t1 : {upper};) and call the instance", callee)
+        checker.report(
+            "ST-NOT-CALLABLE",
+            f"{callee.name} is a function block type: declare an instance (e.g. t1 : {upper};) and call the instance",
+            callee,
+        )
         return ERROR
     _args_untyped(checker, node)
     known = [*checker.result.pous, *stdlib.FUNCTIONS]
@@ -72,13 +75,19 @@ def _pou_call(checker: Any, node: ast.Call, pou: PouInfo, statement: bool) -> Ty
         checker.pou.calls.add(pou.name.upper())
     if pou.kind == "FUNCTION_BLOCK":
         _args_untyped(checker, node)
-        checker.report("ST-NOT-CALLABLE", f"{pou.name} is a function block type: declare an instance "
-                       f"(e.g. inst : {pou.name};) and call the instance", node.callee)
+        checker.report(
+            "ST-NOT-CALLABLE",
+            f"{pou.name} is a function block type: declare an instance (e.g. inst : {pou.name};) and call the instance",
+            node.callee,
+        )
         return ERROR
     if pou.kind == "PROGRAM":
         if checker.pou is not None and checker.pou.kind != "PROGRAM":
-            checker.report("ST-NOT-CALLABLE", f"a {checker.pou.kind.lower().replace('_', ' ')} cannot call the "
-                           f"program {pou.name}", node.callee)
+            checker.report(
+                "ST-NOT-CALLABLE",
+                f"a {checker.pou.kind.lower().replace('_', ' ')} cannot call the program {pou.name}",
+                node.callee,
+            )
         if not statement:
             checker.report("ST-NOT-CALLABLE", f"the program {pou.name} has no value: call it as a statement", node)
     inputs = [Param(s.name, s.type, s.var_class == "VAR_IN_OUT") for s in pou.parameters("VAR_INPUT", "VAR_IN_OUT")]
@@ -93,19 +102,28 @@ def _instance_call(checker: Any, node: ast.Call, ty: Type, statement: bool) -> T
         return ERROR
     if not isinstance(ty, t.FbType):
         _args_untyped(checker, node)
-        checker.report("ST-NOT-CALLABLE", f"'{print_expression(node.callee)}' is a {ty}, not a function or function block "
-                       "instance", node.callee)
+        checker.report(
+            "ST-NOT-CALLABLE",
+            f"'{print_expression(node.callee)}' is a {ty}, not a function or function block instance",
+            node.callee,
+        )
         return ERROR
     node.ref = root_name(node.callee).ref if root_name(node.callee) is not None else None
     if not statement:
         _args_untyped(checker, node)
-        checker.report("ST-NOT-CALLABLE", f"the function block instance '{print_expression(node.callee)}' cannot be "
-                       "called inside an expression: call it as a statement and read its outputs (e.g. inst.Q)", node)
+        checker.report(
+            "ST-NOT-CALLABLE",
+            f"the function block instance '{print_expression(node.callee)}' cannot be "
+            "called inside an expression: call it as a statement and read its outputs (e.g. inst.Q)",
+            node,
+        )
         return ERROR
     if ty.std is not None:
         inputs, outputs = _std_fb_params(ty.std.name)
     else:
-        inputs = [Param(s.name, s.type, s.var_class == "VAR_IN_OUT") for s in ty.pou.parameters("VAR_INPUT", "VAR_IN_OUT")]
+        inputs = [
+            Param(s.name, s.type, s.var_class == "VAR_IN_OUT") for s in ty.pou.parameters("VAR_INPUT", "VAR_IN_OUT")
+        ]
         outputs = [Param(s.name, s.type) for s in ty.pou.parameters("VAR_OUTPUT")]
     check_arguments(checker, node, ty.name, inputs, outputs, function=False)
     return VOID
@@ -115,19 +133,23 @@ def _instance_call(checker: Any, node: ast.Call, ty: Type, statement: bool) -> T
 def _std_fb_params(name: str) -> tuple[list[Param], list[Param]]:
     """A standard FB's inputs and outputs as parameters (the catalogue is fixed; read-only lists)."""
     std = stdlib.function_block(name)
-    return ([Param(p.name, t.elementary(p.type) or ERROR) for p in std.inputs],
-            [Param(p.name, t.elementary(p.type) or ERROR) for p in std.outputs])
+    return (
+        [Param(p.name, t.elementary(p.type) or ERROR) for p in std.inputs],
+        [Param(p.name, t.elementary(p.type) or ERROR) for p in std.outputs],
+    )
 
 
-def check_arguments(checker: Any, node: ast.Call, callee: str, inputs: list[Param], outputs: list[Param],
-                    *, function: bool) -> None:
+def check_arguments(
+    checker: Any, node: ast.Call, callee: str, inputs: list[Param], outputs: list[Param], *, function: bool
+) -> None:
     """Formal or positional arguments against the callee's parameters (POU-13..15, ST-25, ST-55)."""
     formal = [a for a in node.args if a.name is not None]
     positional = [a for a in node.args if a.name is None]
     if formal and positional:
         _args_untyped(checker, node)
-        checker.report("ST-CALL-ARGS", f"do not mix formal (name := value) and positional arguments in a call to "
-                       f"{callee}", node)
+        checker.report(
+            "ST-CALL-ARGS", f"do not mix formal (name := value) and positional arguments in a call to {callee}", node
+        )
         return
     if positional and (len(positional) > len(inputs) or function and len(positional) < len(inputs)):
         _args_untyped(checker, node)
@@ -153,8 +175,9 @@ def check_arguments(checker: Any, node: ast.Call, callee: str, inputs: list[Para
     if function and not positional:
         missing = [p.name for p in inputs if p.in_out and p.name.upper() not in seen]
         if missing:
-            checker.report("ST-CALL-ARGS", f"missing in-out parameter(s) {', '.join(missing)} in the call to {callee}",
-                           node)
+            checker.report(
+                "ST-CALL-ARGS", f"missing in-out parameter(s) {', '.join(missing)} in the call to {callee}", node
+            )
 
 
 def _misplaced(checker: Any, arg: ast.Arg, callee: str, inputs: dict, outputs: dict) -> None:
@@ -180,27 +203,44 @@ def _in_out(checker: Any, arg: ast.Arg, param: Param, callee: str) -> None:
     value = checker.expr(arg.value, param.type)
     root = root_name(arg.value)
     if not isinstance(arg.value, _WRITABLE):
-        checker.report("ST-NOT-LVALUE", f"in-out parameter {param.name} of {callee} needs a variable, not an "
-                       "expression or literal", arg.value)
+        checker.report(
+            "ST-NOT-LVALUE",
+            f"in-out parameter {param.name} of {callee} needs a variable, not an expression or literal",
+            arg.value,
+        )
     elif root is not None and isinstance(root.ref, Symbol) and root.ref.constant:
-        checker.report("ST-CONST-WRITE", f"the CONSTANT '{root.ref.name}' cannot be passed as in-out parameter "
-                       f"{param.name}", arg.value)
+        checker.report(
+            "ST-CONST-WRITE",
+            f"the CONSTANT '{root.ref.name}' cannot be passed as in-out parameter {param.name}",
+            arg.value,
+        )
     elif not t.same(param.type, value) and not _open_array(param.type, value):
-        checker.report("ST-TYPE-MISMATCH", f"in-out parameter {param.name} of {callee} needs a {param.type}, "
-                       f"got {value}", arg.value)
+        checker.report(
+            "ST-TYPE-MISMATCH",
+            f"in-out parameter {param.name} of {callee} needs a {param.type}, got {value}",
+            arg.value,
+        )
 
 
 def _open_array(param: Type, value: Type) -> bool:
     """``ARRAY [*] OF T`` in-out parameters take any array of T."""
-    return isinstance(param, t.ArrayType) and None in param.dims and isinstance(value, t.ArrayType) \
+    return (
+        isinstance(param, t.ArrayType)
+        and None in param.dims
+        and isinstance(value, t.ArrayType)
         and t.same(param.element, value.element)
+    )
 
 
 def _output(checker: Any, arg: ast.Arg, param: Param) -> None:
     target = checker.target(arg.value)
     if t.assignable(target, param.type) == "error":
-        checker.report("ST-TYPE-MISMATCH", f"output {param.name} is {param.type} and cannot be stored in {target}"
-                       + t.conversion_hint(target, param.type), arg.value)
+        checker.report(
+            "ST-TYPE-MISMATCH",
+            f"output {param.name} is {param.type} and cannot be stored in {target}"
+            + t.conversion_hint(target, param.type),
+            arg.value,
+        )
 
 
 def _std_call(checker: Any, node: ast.Call, function: stdlib.StdFunction) -> Type:
@@ -224,8 +264,9 @@ def _std_call(checker: Any, node: ast.Call, function: stdlib.StdFunction) -> Typ
         if pin is None or arg.output:
             checker.expr(arg.value)
             names = [p.name for p in function.inputs]
-            checker.report("ST-CALL-ARGS", f"{function.name} has no input '{arg.name}'" + did_you_mean(arg.name, names),
-                           arg)
+            checker.report(
+                "ST-CALL-ARGS", f"{function.name} has no input '{arg.name}'" + did_you_mean(arg.name, names), arg
+            )
         else:
             bound.append((arg, pin))
     generic = _generic_type(checker, node, function, bound)
@@ -247,16 +288,25 @@ def _generic_type(checker: Any, node: ast.Call, function: stdlib.StdFunction, bo
                 continue
             combined, verdict = t.common(shared, value)
             if verdict == "error":
-                checker.report("ST-TYPE-MISMATCH", f"{function.name} needs inputs of one type: got {shared} and {value}; "
-                               "convert one of them with a *_TO_* function", arg.value)
+                checker.report(
+                    "ST-TYPE-MISMATCH",
+                    f"{function.name} needs inputs of one type: got {shared} and {value}; "
+                    "convert one of them with a *_TO_* function",
+                    arg.value,
+                )
                 return ERROR
             if verdict == "widen":
-                checker.report("ST-IMPLICIT-CONV", f"{function.name} mixes {shared} and {value}: the narrower one is "
-                               "converted implicitly", arg.value, severity="warning")
+                checker.report(
+                    "ST-IMPLICIT-CONV",
+                    f"{function.name} mixes {shared} and {value}: the narrower one is converted implicitly",
+                    arg.value,
+                    severity="warning",
+                )
             shared = combined
         elif not t.in_family(value, pin.type) and t.assignable(t.elementary(pin.type) or t.ERROR, value) == "error":
-            checker.report("ST-TYPE-MISMATCH", f"input {pin.name} of {function.name} must be {pin.type}, not {value}",
-                           arg.value)
+            checker.report(
+                "ST-TYPE-MISMATCH", f"input {pin.name} of {function.name} must be {pin.type}, not {value}", arg.value
+            )
     generic_pins = [p for p in function.inputs if p.generic]
     if shared is None:
         return ERROR if generic_pins and function.result == stdlib.T else t.VOID

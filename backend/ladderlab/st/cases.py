@@ -14,8 +14,9 @@ from .types import ERROR
 def check_case(checker: Any, stmt: ast.Case) -> None:
     selector = checker.expr(stmt.selector)
     if selector is not ERROR and not (t.in_family(selector, "ANY_INT") or isinstance(selector, t.EnumType)):
-        checker.report("ST-TYPE-MISMATCH", f"the CASE selector must be an integer or an enumeration, not {selector}",
-                       stmt.selector)
+        checker.report(
+            "ST-TYPE-MISMATCH", f"the CASE selector must be an integer or an enumeration, not {selector}", stmt.selector
+        )
         selector = ERROR
     covered: list[tuple[int | float, int | float, ast.Expr | ast.CaseRange]] = []
     for branch in stmt.branches:
@@ -25,8 +26,12 @@ def check_case(checker: Any, stmt: ast.Case) -> None:
                 continue
             for low, high, other in covered:
                 if bounds[0] <= high and low <= bounds[1]:
-                    checker.report("ST-CASE-OVERLAP", f"CASE label {_text(label)} overlaps {_text(other)}: only the "
-                                   "first matching branch runs", label, severity="warning")
+                    checker.report(
+                        "ST-CASE-OVERLAP",
+                        f"CASE label {_text(label)} overlaps {_text(other)}: only the first matching branch runs",
+                        label,
+                        severity="warning",
+                    )
                     break
             covered.append((*bounds, label))
         checker.statements(branch.body)

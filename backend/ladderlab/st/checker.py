@@ -41,10 +41,19 @@ class Reporter:
 
     def __call__(self, code: str, message: str, node: Any, severity: str = "error") -> None:
         span = getattr(node, "span", None) or ast.NO_SPAN
-        self.sink.append(Diagnostic(
-            severity=severity, code=code, message=message, file=self.file, pou=self.pou,
-            line=span.line or None, column=span.column or None,
-            end_line=span.end_line or None, end_column=span.end_column or None))
+        self.sink.append(
+            Diagnostic(
+                severity=severity,
+                code=code,
+                message=message,
+                file=self.file,
+                pou=self.pou,
+                line=span.line or None,
+                column=span.column or None,
+                end_line=span.end_line or None,
+                end_column=span.end_column or None,
+            )
+        )
 
 
 class ProjectChecker:
@@ -60,8 +69,9 @@ class ProjectChecker:
         globals_ = self._parse(parse_declarations, self.project.globals, "globals", None) or []
         declarations, bodies = {}, {}
         for pou in self.project.pous:
-            declarations[pou.name] = self._parse(parse_declarations, pou.declarations, f"{pou.name}/declarations",
-                                                 pou.name) or []
+            declarations[pou.name] = (
+                self._parse(parse_declarations, pou.declarations, f"{pou.name}/declarations", pou.name) or []
+            )
             if pou.language == "st":
                 bodies[pou.name] = self._parse(parse_statements, pou.body, f"{pou.name}/body", pou.name)
         self._register_pous()
@@ -97,8 +107,11 @@ class ProjectChecker:
                 where("ST-DUPLICATE", f"there is already a POU called '{pou.name}'", None)
                 continue
             if stdlib.function(upper) or stdlib.function_block(upper):
-                where("ST-DUPLICATE", f"'{pou.name}' is a standard function or function block name and cannot be "
-                      "redefined", None)
+                where(
+                    "ST-DUPLICATE",
+                    f"'{pou.name}' is a standard function or function block name and cannot be redefined",
+                    None,
+                )
             info = self.result.pous[upper] = PouInfo(pou.name, _KIND[pou.kind], pou.language, None)
             if not isinstance(pou.body, str):  # LD boxes and FBD blocks: edges of the call graph (POU-02)
                 info.calls |= pou.body.calls()
@@ -108,8 +121,12 @@ class ProjectChecker:
         for block in blocks:
             for decl in block.decls:
                 upper = decl.name.upper()
-                if upper in self.type_decls or t.elementary(upper) or upper in self.result.pous \
-                        or stdlib.function_block(upper):
+                if (
+                    upper in self.type_decls
+                    or t.elementary(upper)
+                    or upper in self.result.pous
+                    or stdlib.function_block(upper)
+                ):
                     report("ST-DUPLICATE", f"the type name '{decl.name}' is already in use", decl)
                     continue
                 self.type_decls[upper] = decl
@@ -196,8 +213,13 @@ class ProjectChecker:
         if upper.startswith("ANY"):
             report("ST-UNKNOWN-TYPE", f"'{spec.name}' is a generic type: it is only used by standard functions", spec)
             return ERROR
-        known = [*(d.name for d in self.type_decls.values()), *t.ELEMENTARY, "STRING", *stdlib.FUNCTION_BLOCKS,
-                 *(p.name for p in self.result.pous.values() if p.kind != "FUNCTION")]
+        known = [
+            *(d.name for d in self.type_decls.values()),
+            *t.ELEMENTARY,
+            "STRING",
+            *stdlib.FUNCTION_BLOCKS,
+            *(p.name for p in self.result.pous.values() if p.kind != "FUNCTION"),
+        ]
         report("ST-UNKNOWN-TYPE", f"unknown type '{spec.name}'" + did_you_mean(spec.name, known), spec)
         return ERROR
 
@@ -248,8 +270,12 @@ class ProjectChecker:
                 continue
             program = self.result.pous.get(key)
             if program is not None and program.kind == "PROGRAM":  # ST-08: both name an instance of the resource
-                report("ST-DUPLICATE", f"'{symbol.name}' is the name of the program {program.name}: a global variable "
-                       "and a program instance cannot share a name", symbol)
+                report(
+                    "ST-DUPLICATE",
+                    f"'{symbol.name}' is the name of the program {program.name}: a global variable "
+                    "and a program instance cannot share a name",
+                    symbol,
+                )
             if symbol.init is not None:
                 check_init(checker, symbol.type, symbol.init)
 
@@ -269,7 +295,9 @@ class ProjectChecker:
             report("ST-DECL", f"the function {pou.name} needs a return type", None)
         for block in blocks:
             if block.kind not in _ALLOWED[info.kind]:
-                report("ST-DECL", f"{block.kind} is not allowed in a {info.kind.lower().replace('_', ' ')} (VAR-11)", block)
+                report(
+                    "ST-DECL", f"{block.kind} is not allowed in a {info.kind.lower().replace('_', ' ')} (VAR-11)", block
+                )
             self._declare_block(block, info.symbols, checker, info)
         for symbol in info.symbols.values():
             if isinstance(symbol.type, t.FbType) and symbol.type.pou is not None:
@@ -286,8 +314,9 @@ class ProjectChecker:
             if symbol.init is not None:
                 check_init(checker, symbol.type, symbol.init)
 
-    def _declare_block(self, block: ast.VarBlock, table: dict[str, Symbol], checker: BodyChecker,
-                       pou: PouInfo | None) -> None:
+    def _declare_block(
+        self, block: ast.VarBlock, table: dict[str, Symbol], checker: BodyChecker, pou: PouInfo | None
+    ) -> None:
         report = checker.report
         for decl in block.decls:
             ty = self.resolve(decl.type, checker)
@@ -303,17 +332,29 @@ class ProjectChecker:
                 if key in table:
                     report("ST-DUPLICATE", f"'{name.name or name.address}' is declared twice", name)
                     continue
-                symbol = Symbol(name.name or name.address, block.kind, ty, decl.type, init, name.address,
-                                block.constant, block.retain, decl.edge, decl.comment, name.span,
-                                pou.name if pou else None)
+                symbol = Symbol(
+                    name.name or name.address,
+                    block.kind,
+                    ty,
+                    decl.type,
+                    init,
+                    name.address,
+                    block.constant,
+                    block.retain,
+                    decl.edge,
+                    decl.comment,
+                    name.span,
+                    pou.name if pou else None,
+                )
                 table[key] = symbol
                 if block.kind == "VAR_EXTERNAL" and pou is not None:
                     self._check_external(symbol, report, name)
 
     def _check_decl(self, block, decl: ast.VarDecl, ty: Type, pou: PouInfo | None, report) -> None:
         if decl.edge and (block.kind != "VAR_INPUT" or not t.same(ty, t.BOOL) or pou is None or pou.kind == "FUNCTION"):
-            report("ST-DECL", f"{decl.edge} is only allowed on BOOL inputs of function blocks and programs (VAR-22)",
-                   decl)
+            report(
+                "ST-DECL", f"{decl.edge} is only allowed on BOOL inputs of function blocks and programs (VAR-22)", decl
+            )
         if decl.init is not None and block.kind in ("VAR_EXTERNAL", "VAR_IN_OUT"):
             report("ST-DECL", f"a {block.kind} variable cannot have an initial value (VAR-83)", decl.init)
         if isinstance(ty, t.FbType) and pou is not None and pou.kind == "FUNCTION":
@@ -324,10 +365,16 @@ class ProjectChecker:
     def _check_external(self, symbol: Symbol, report, node) -> None:
         target = self.result.globals.get(symbol.name.upper())
         if target is None:
-            report("ST-EXTERNAL", f"VAR_EXTERNAL '{symbol.name}' does not match any global variable"
-                   + did_you_mean(symbol.name, [g.name for g in self.result.globals.values()]), node)
+            report(
+                "ST-EXTERNAL",
+                f"VAR_EXTERNAL '{symbol.name}' does not match any global variable"
+                + did_you_mean(symbol.name, [g.name for g in self.result.globals.values()]),
+                node,
+            )
         elif not t.same(target.type, symbol.type):
-            report("ST-EXTERNAL", f"VAR_EXTERNAL '{symbol.name}' is {symbol.type} but the global is {target.type}", node)
+            report(
+                "ST-EXTERNAL", f"VAR_EXTERNAL '{symbol.name}' is {symbol.type} but the global is {target.type}", node
+            )
         else:
             symbol.constant = symbol.constant or target.constant
 
@@ -338,8 +385,12 @@ class ProjectChecker:
         checker.statements(body)
         info.body = body
         if info.kind == "FUNCTION" and not checker.result_assigned and info.return_type not in (None, ERROR):
-            report("ST-NO-RESULT", f"the function {info.name} never assigns its result: it returns the default "
-                   "value of its type", None, severity="warning")
+            report(
+                "ST-NO-RESULT",
+                f"the function {info.name} never assigns its result: it returns the default value of its type",
+                None,
+                severity="warning",
+            )
 
     def _check_recursion(self) -> None:
         """POU-02: a POU must not call or instantiate itself, directly or through others."""
@@ -352,13 +403,14 @@ class ProjectChecker:
                 if callee not in self.result.pous:
                     continue
                 if state.get(callee) == 1:
-                    cycle = path[path.index(callee):] + [callee] if callee in path else [name, callee]
+                    cycle = path[path.index(callee) :] + [callee] if callee in path else [name, callee]
                     if callee not in reported:
                         reported.add(callee)
                         names = " -> ".join(self.result.pous[c].name for c in cycle)
                         pou = self.result.pous[callee]
                         self._reporter(f"{pou.name}/body", pou.name)(
-                            "ST-RECURSION", f"recursive call {names}: POUs must not call themselves", None)
+                            "ST-RECURSION", f"recursive call {names}: POUs must not call themselves", None
+                        )
                 elif callee not in state:
                     visit(callee, path + [callee])
             state[name] = 2
@@ -378,8 +430,15 @@ def _parse_types(text: str, *, file: str, pou: None = None):
     if result.ast is not None:
         stray = [item for item in result.ast.items if not isinstance(item, ast.TypeBlock)]
         for item in stray:
-            result.diagnostics.append(Diagnostic(code="ST-DECL", message="only TYPE ... END_TYPE blocks belong here",
-                                                 file=file, line=item.span.line, column=item.span.column))
+            result.diagnostics.append(
+                Diagnostic(
+                    code="ST-DECL",
+                    message="only TYPE ... END_TYPE blocks belong here",
+                    file=file,
+                    line=item.span.line,
+                    column=item.span.column,
+                )
+            )
         result.ast = [item for item in result.ast.items if isinstance(item, ast.TypeBlock)]
     return result
 
@@ -442,12 +501,14 @@ def check_identifier(name: str, node: Any, report: Reporter) -> None:
     if problem:
         report("ST-NAME", f"'{name}' is not a valid identifier: {problem}", node)
     elif name.endswith("_"):
-        report("ST-NAME", f"'{name}' ends with '_', which IEC 61131-3 edition 2 does not allow", node,
-               severity="warning")
+        report(
+            "ST-NAME", f"'{name}' ends with '_', which IEC 61131-3 edition 2 does not allow", node, severity="warning"
+        )
 
 
-def check_operand(result_or_scope: CheckResult | Project, pou_name: str, text: str,
-                  expected_type: Type | str | None = None) -> tuple[ast.Expr | None, list[Diagnostic]]:
+def check_operand(
+    result_or_scope: CheckResult | Project, pou_name: str, text: str, expected_type: Type | str | None = None
+) -> tuple[ast.Expr | None, list[Diagnostic]]:
     """Resolve an LD/FBD operand (``T1.Q``, ``arr[i]``, ``T#5s``) in the scope of ``pou_name``.
 
     Returns the typed expression (None when it does not parse) and its diagnostics;

@@ -32,7 +32,7 @@ def blank_nested_comments(text: str) -> str:
         end = _comment_end(text, position)
         if end is None:
             break
-        pieces += [text[copied:match.start()], _blank(text[match.start():end])]
+        pieces += [text[copied : match.start()], _blank(text[match.start() : end])]
         copied = position = end
     pieces.append(text[copied:])
     return "".join(pieces)

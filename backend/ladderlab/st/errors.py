@@ -17,21 +17,86 @@ from lark.parsers.lalr_analysis import Shift
 from . import ast
 
 _FRIENDLY = {
-    "IDENT": "a name", "INTEGER": "a number", "BASED_INTEGER": "a number", "REAL_NUMBER": "a number",
-    "STRING": "a string", "WSTRING": "a string", "DURATION": "a TIME literal", "DATE_LITERAL": "a DATE literal",
-    "TOD_LITERAL": "a TIME_OF_DAY literal", "DT_LITERAL": "a DATE_AND_TIME literal", "TYPE_PREFIX": "a typed literal",
-    "DIRECT": "an address such as %IX0.0", "$END": "end of text", "EXPRESSION": "an expression",
+    "IDENT": "a name",
+    "INTEGER": "a number",
+    "BASED_INTEGER": "a number",
+    "REAL_NUMBER": "a number",
+    "STRING": "a string",
+    "WSTRING": "a string",
+    "DURATION": "a TIME literal",
+    "DATE_LITERAL": "a DATE literal",
+    "TOD_LITERAL": "a TIME_OF_DAY literal",
+    "DT_LITERAL": "a DATE_AND_TIME literal",
+    "TYPE_PREFIX": "a typed literal",
+    "DIRECT": "an address such as %IX0.0",
+    "$END": "end of text",
+    "EXPRESSION": "an expression",
 }
 _PUNCTUATION = {
-    "SEMI": ";", "COLON": ":", "COMMA": ",", "DOT": ".", "LPAR": "(", "RPAR": ")", "LSQB": "[", "RSQB": "]",
-    "STAR": "*", "SLASH": "/", "POW": "**", "PLUS": "+", "MINUS": "-", "AMP": "&", "EQ": "=", "NE": "<>",
-    "LT": "<", "GT": ">", "LE": "<=", "GE": ">=", "CARET": "^",
+    "SEMI": ";",
+    "COLON": ":",
+    "COMMA": ",",
+    "DOT": ".",
+    "LPAR": "(",
+    "RPAR": ")",
+    "LSQB": "[",
+    "RSQB": "]",
+    "STAR": "*",
+    "SLASH": "/",
+    "POW": "**",
+    "PLUS": "+",
+    "MINUS": "-",
+    "AMP": "&",
+    "EQ": "=",
+    "NE": "<>",
+    "LT": "<",
+    "GT": ">",
+    "LE": "<=",
+    "GE": ">=",
+    "CARET": "^",
 }
-_OPERATORS = {"STAR", "SLASH", "POW", "PLUS", "MINUS", "AMP", "EQ", "NE", "LT", "GT", "LE", "GE", "CARET", "DOT",
-              "LSQB", "LPAR", "OR", "XOR", "AND", "MOD"}
-_EXPRESSION_START = {"IDENT", "INTEGER", "BASED_INTEGER", "REAL_NUMBER", "STRING", "WSTRING", "DURATION",
-                     "DATE_LITERAL", "TOD_LITERAL", "DT_LITERAL", "TYPE_PREFIX", "DIRECT", "TRUE", "FALSE", "NOT",
-                     "MINUS", "PLUS", "LPAR"}
+_OPERATORS = {
+    "STAR",
+    "SLASH",
+    "POW",
+    "PLUS",
+    "MINUS",
+    "AMP",
+    "EQ",
+    "NE",
+    "LT",
+    "GT",
+    "LE",
+    "GE",
+    "CARET",
+    "DOT",
+    "LSQB",
+    "LPAR",
+    "OR",
+    "XOR",
+    "AND",
+    "MOD",
+}
+_EXPRESSION_START = {
+    "IDENT",
+    "INTEGER",
+    "BASED_INTEGER",
+    "REAL_NUMBER",
+    "STRING",
+    "WSTRING",
+    "DURATION",
+    "DATE_LITERAL",
+    "TOD_LITERAL",
+    "DT_LITERAL",
+    "TYPE_PREFIX",
+    "DIRECT",
+    "TRUE",
+    "FALSE",
+    "NOT",
+    "MINUS",
+    "PLUS",
+    "LPAR",
+}
 _MAX_ALTERNATIVES = 4
 
 
@@ -45,16 +110,27 @@ def describe_unexpected(error: UnexpectedInput, terminal_text: dict[str, str]) -
     previous = last_token(error.interactive_parser.parser_state.value_stack) if error.interactive_parser else None
     if "SEMI" in expected and previous is not None and previous.type.lstrip("_").startswith("END_"):
         return f"expected ';' after {str(previous).upper()}", ast.Span(
-            previous.end_line, previous.end_column, previous.end_line, previous.end_column + 1)
-    if "SEMI" in expected and previous is not None and token.type != "$END" and previous.end_line < token.line \
-            and would_accept(error.interactive_parser.parser_state, ["SEMI", token.type]):
+            previous.end_line, previous.end_column, previous.end_line, previous.end_column + 1
+        )
+    if (
+        "SEMI" in expected
+        and previous is not None
+        and token.type != "$END"
+        and previous.end_line < token.line
+        and would_accept(error.interactive_parser.parser_state, ["SEMI", token.type])
+    ):
         context = _context(error)
         message = "expected ';' after " + context if context else "expected ';' at the end of the line"
         return message, ast.Span(previous.end_line, previous.end_column, previous.end_line, previous.end_column + 1)
-    if token.type == "STAR" and previous is not None and previous.type == "LPAR" and \
-            (previous.end_line, previous.end_column) == (token.line, token.column):
+    if (
+        token.type == "STAR"
+        and previous is not None
+        and previous.type == "LPAR"
+        and (previous.end_line, previous.end_column) == (token.line, token.column)
+    ):
         return "unterminated comment: '(*' without a matching '*)'", ast.Span(
-            previous.line, previous.column, token.end_line, token.end_column)
+            previous.line, previous.column, token.end_line, token.end_column
+        )
     found = "end of text" if token.type == "$END" else f"'{token}'"
     closers = {e for e in expected if e.lstrip("_").startswith("END_")}
     if closers and token.type.lstrip("_").startswith("END_"):  # e.g. END_PROGRAM closing a FUNCTION
@@ -99,7 +175,7 @@ def _alternatives(expected: set[str], terminal_text: dict[str, str]) -> str:
         words.remove("';'")
         words.insert(0, "';'")
     if len(words) > _MAX_ALTERNATIVES:
-        words = words[:_MAX_ALTERNATIVES - 1] + ["..."]
+        words = words[: _MAX_ALTERNATIVES - 1] + ["..."]
     return " or ".join(words) if len(words) < 3 else ", ".join(words[:-1]) + " or " + words[-1]
 
 
@@ -121,8 +197,9 @@ def last_token(stack: list[Any]) -> Token | None:
             return item
         span = getattr(item, "span", None)
         if span is not None and span.line:
-            return Token("NODE", "", line=span.line, column=span.column, end_line=span.end_line,
-                         end_column=span.end_column)
+            return Token(
+                "NODE", "", line=span.line, column=span.column, end_line=span.end_line, end_column=span.end_column
+            )
         if isinstance(item, list) and item:
             found = last_token(item)
             if found is not None:
@@ -144,6 +221,6 @@ def would_accept(state: Any, token_types: list[str]) -> bool:
                 stack.append(argument)
                 break
             if argument.expansion:
-                del stack[-len(argument.expansion):]
+                del stack[-len(argument.expansion) :]
             stack.append(table[stack[-1]][argument.origin.name][1])
     return True

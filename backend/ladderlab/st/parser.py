@@ -47,8 +47,22 @@ class ParseResult:
 _KEYWORD_RE = re.compile(r'^_?[A-Z_]+: "([A-Z_]+)"i$', re.MULTILINE)
 # Keywords that only mean something in one spot (after a type, in a RESOURCE): real libraries use them as names.
 # The operator words are also the standard functions AND(...), MOD(...), so they may stand where a name does.
-_SOFT_KEYWORDS = {"ON", "WITH", "TASK", "RESOURCE", "R_EDGE", "F_EDGE", "NON_RETAIN", "PERSISTENT", "POINTER",
-                  "AND", "OR", "XOR", "NOT", "MOD"}
+_SOFT_KEYWORDS = {
+    "ON",
+    "WITH",
+    "TASK",
+    "RESOURCE",
+    "R_EDGE",
+    "F_EDGE",
+    "NON_RETAIN",
+    "PERSISTENT",
+    "POINTER",
+    "AND",
+    "OR",
+    "XOR",
+    "NOT",
+    "MOD",
+}
 
 
 @functools.cache
@@ -102,8 +116,9 @@ def parse_pou(text: str, *, file: str | None = None, nested_comments: bool = Fal
     return _finish(_run(_prepare(text, nested_comments), "start_pou", file), text)
 
 
-def parse_declarations(text: str, *, file: str | None = None, nested_comments: bool = False,
-                       pou: str | None = None) -> ParseResult:
+def parse_declarations(
+    text: str, *, file: str | None = None, nested_comments: bool = False, pou: str | None = None
+) -> ParseResult:
     """A sequence of VAR...END_VAR blocks (the model's ``declarations`` / ``globals`` text): ``list[VarBlock]``.
 
     Plain ``name, name : Type;`` blocks are read without the LALR parser (``quick_decls``), with the same result.
@@ -113,14 +128,16 @@ def parse_declarations(text: str, *, file: str | None = None, nested_comments: b
     return _finish(ParseResult(quick) if quick is not None else _run(prepared, "start_decls", file, pou=pou), text)
 
 
-def parse_statements(text: str, *, file: str | None = None, nested_comments: bool = False,
-                     pou: str | None = None) -> ParseResult:
+def parse_statements(
+    text: str, *, file: str | None = None, nested_comments: bool = False, pou: str | None = None
+) -> ParseResult:
     """A statement list (an ST POU body): ``list[Stmt]``."""
     return _finish(_run(_prepare(text, nested_comments), "start_stmts", file, pou=pou), text)
 
 
-def parse_expression(text: str, *, file: str | None = None, nested_comments: bool = False,
-                     pou: str | None = None) -> ParseResult:
+def parse_expression(
+    text: str, *, file: str | None = None, nested_comments: bool = False, pou: str | None = None
+) -> ParseResult:
     """One operand or expression, e.g. an LD contact's ``T1.Q`` or a pin's ``arr[i] + 1``."""
     return _finish(_run(_prepare(text, nested_comments), "start_expr", file, pou=pou), text)
 
@@ -161,10 +178,20 @@ def _run(text: str, start: str, file: str | None, pou: str | None = None) -> Par
     return ParseResult(tree, diagnostics)
 
 
-def _diagnostic(message: str, span: ast.Span, file: str | None, pou: str | None,
-                severity: str = "error", code: str = "ST-PARSE") -> Diagnostic:
-    return Diagnostic(severity=severity, code=code, message=message, file=file, pou=pou, line=span.line,
-                      column=span.column, end_line=span.end_line, end_column=span.end_column)
+def _diagnostic(
+    message: str, span: ast.Span, file: str | None, pou: str | None, severity: str = "error", code: str = "ST-PARSE"
+) -> Diagnostic:
+    return Diagnostic(
+        severity=severity,
+        code=code,
+        message=message,
+        file=file,
+        pou=pou,
+        line=span.line,
+        column=span.column,
+        end_line=span.end_line,
+        end_column=span.end_column,
+    )
 
 
 class _Reporter:
@@ -202,7 +229,9 @@ class _Reporter:
             return False
         at_end = error.token.type == "$END"
         # ST-40 wants the ';' after END_x; ST-65 tolerates it missing on the last statement of a body.
-        lenient = previous.type.lstrip("_") in _END_KEYWORDS and (at_end or error.token.type.lstrip("_").startswith("END_"))
+        lenient = previous.type.lstrip("_") in _END_KEYWORDS and (
+            at_end or error.token.type.lstrip("_").startswith("END_")
+        )
         if not lenient and (at_end or previous.end_line >= error.token.line):
             return False
         if not at_end and not would_accept(parser.parser_state, ["SEMI", error.token.type]):
@@ -256,4 +285,3 @@ def split_units(text: str) -> list[Unit]:
             pou = name.group(1) if name else None
         units.append(Unit(text[offset:end], line, column, pou))
     return units
-

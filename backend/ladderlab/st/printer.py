@@ -13,8 +13,23 @@ from . import ast
 INDENT = "    "
 
 # Binding strength, loosest first (ST-02): OR < XOR < AND < = <> < comparisons < + - < * / MOD < unary < **.
-_PRECEDENCE = {"OR": 1, "XOR": 2, "AND": 3, "=": 4, "<>": 4, "<": 5, ">": 5, "<=": 5, ">=": 5,
-               "+": 6, "-": 6, "*": 7, "/": 7, "MOD": 7, "**": 9}
+_PRECEDENCE = {
+    "OR": 1,
+    "XOR": 2,
+    "AND": 3,
+    "=": 4,
+    "<>": 4,
+    "<": 5,
+    ">": 5,
+    "<=": 5,
+    ">=": 5,
+    "+": 6,
+    "-": 6,
+    "*": 7,
+    "/": 7,
+    "MOD": 7,
+    "**": 9,
+}
 _UNARY = 8
 _PRIMARY = 10
 
@@ -182,8 +197,11 @@ def print_type(spec: ast.TypeSpec, level: int = 0) -> str:
     if isinstance(spec, ast.PointerType):
         return f"{spec.kind} {print_type(spec.target, level)}"
     if isinstance(spec, ast.EnumType):
-        return "(" + ", ".join(v.name + (f" := {_expr(v.value, 0)}" if v.value is not None else "")
-                               for v in spec.values) + ")"
+        return (
+            "("
+            + ", ".join(v.name + (f" := {_expr(v.value, 0)}" if v.value is not None else "") for v in spec.values)
+            + ")"
+        )
     if isinstance(spec, ast.StructType):
         members = "".join(_var_decl(m, level + 1) for m in spec.members)
         return f"STRUCT\n{members}{INDENT * level}END_STRUCT"
@@ -218,8 +236,9 @@ def _var_decl(decl: ast.VarDecl, level: int) -> str:
         text += " := " + print_initializer(decl.init)
     text += ";"
     if decl.comment:
-        text += f" (* {decl.comment} *)" if "*)" not in decl.comment and "(*" not in decl.comment \
-            else f" // {decl.comment}"
+        text += (
+            f" (* {decl.comment} *)" if "*)" not in decl.comment and "(*" not in decl.comment else f" // {decl.comment}"
+        )
     return text + "\n"
 
 

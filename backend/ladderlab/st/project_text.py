@@ -30,11 +30,12 @@ class _Text:
         return self.starts[line - 1] + column - 1
 
     def between(self, start: tuple[int, int], end: tuple[int, int]) -> str:
-        return self.text[self.offset(*start):self.offset(*end)]
+        return self.text[self.offset(*start) : self.offset(*end)]
 
 
-def source_to_project(text: str, name: str = "imported", *,
-                      nested_comments: bool = False) -> tuple[Project | None, list[Diagnostic]]:
+def source_to_project(
+    text: str, name: str = "imported", *, nested_comments: bool = False
+) -> tuple[Project | None, list[Diagnostic]]:
     parsed = parse_source(text, nested_comments=nested_comments)
     if parsed.ast is None:
         return None, parsed.diagnostics
@@ -58,8 +59,9 @@ def _pou(pou: ast.Pou, source: _Text) -> Pou:
     end = (pou.span.end_line, pou.span.end_column - len(f"END_{pou.kind}"))
     if pou.var_blocks:
         first, last = pou.var_blocks[0].span, pou.var_blocks[-1].span
-        declarations = _keep_lines(source.between((first.line, first.column), (last.end_line, last.end_column)),
-                                   (first.line, first.column))
+        declarations = _keep_lines(
+            source.between((first.line, first.column), (last.end_line, last.end_column)), (first.line, first.column)
+        )
         body_start = (last.end_line, last.end_column)
     else:
         declarations = ""
@@ -68,8 +70,14 @@ def _pou(pou: ast.Pou, source: _Text) -> Pou:
     return_type = None
     if pou.return_type is not None:
         return_type = pou.return_type.name if isinstance(pou.return_type, ast.NamedType) else None
-    return Pou(name=pou.name, kind=_KIND[pou.kind], language="st", return_type=return_type,
-               declarations=declarations, body=_keep_lines(body, body_start))
+    return Pou(
+        name=pou.name,
+        kind=_KIND[pou.kind],
+        language="st",
+        return_type=return_type,
+        declarations=declarations,
+        body=_keep_lines(body, body_start),
+    )
 
 
 def _keep_lines(body: str, start: tuple[int, int]) -> str:
@@ -86,7 +94,12 @@ def _tasks(config: ast.Configuration) -> list[Task]:
         # A task without INTERVAL is free-running (CFG-04, Mosaic process P0): the model's default cycle.
         interval = {"interval": print_expression(props["INTERVAL"])} if "INTERVAL" in props else {}
         priority = props.get("PRIORITY")
-        tasks.append(Task(name=task.name, **interval,
-                          priority=priority.value if isinstance(priority, ast.IntLit) else 0,
-                          programs=[p.type_name for p in programs if (p.task or "").upper() == task.name.upper()]))
+        tasks.append(
+            Task(
+                name=task.name,
+                **interval,
+                priority=priority.value if isinstance(priority, ast.IntLit) else 0,
+                programs=[p.type_name for p in programs if (p.task or "").upper() == task.name.upper()],
+            )
+        )
     return tasks

@@ -34,8 +34,9 @@ def assignable_or_report(checker: Any, target: Type, value: Type, node, what: st
         checker.report("ST-IMPLICIT-CONV", f"{value} is converted implicitly to {target}", node, severity="warning")
         return True
     if isinstance(value, t.UntypedInt) and isinstance(target, t.Elementary) and target.category in ("int", "bits"):
-        checker.report("ST-RANGE", f"{value.value} is out of range for {target} ({target.info.min}..{target.info.max})",
-                       node)
+        checker.report(
+            "ST-RANGE", f"{value.value} is out of range for {target} ({target.info.min}..{target.info.max})", node
+        )
         return False
     hint = t.conversion_hint(target, value)
     if what == "assign":

@@ -155,7 +155,7 @@ class AstBuilder(Transformer):
 
     def var_decl(self, c):
         names = [x for x in c if isinstance(x, ast.DeclName)]
-        rest = c[len(names):]
+        rest = c[len(names) :]
         type_spec = rest[0]
         edge = next((t.type for t in rest[1:] if isinstance(t, Token) and t.type in ("R_EDGE", "F_EDGE")), None)
         init = rest[-1] if len(rest) > 1 and not isinstance(rest[-1], Token) else None
@@ -198,8 +198,12 @@ class AstBuilder(Transformer):
     def program_config(self, c):
         retain, name, task, type_name, args = c[1], c[2], c[3], c[4], c[5]
         return ast.ProgramConfig(
-            str(name), str(task) if task is not None else None, str(type_name), args or [],
-            retain.type if retain is not None else None, span_of(c),
+            str(name),
+            str(task) if task is not None else None,
+            str(type_name),
+            args or [],
+            retain.type if retain is not None else None,
+            span_of(c),
         )
 
     # ------------------------------------------------------------ statements

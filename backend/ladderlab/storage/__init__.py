@@ -12,6 +12,14 @@ from .load import load_project_path
 from .workspace import ProjectInfo, StoredProject, Workspace
 
 __all__ = [
-    "AlreadyExistsError", "ConflictError", "InvalidNameError", "NotFoundError", "ProjectInfo",
-    "ProjectLoadError", "StorageError", "StoredProject", "Workspace", "load_project_path",
+    "AlreadyExistsError",
+    "ConflictError",
+    "InvalidNameError",
+    "NotFoundError",
+    "ProjectInfo",
+    "ProjectLoadError",
+    "StorageError",
+    "StoredProject",
+    "Workspace",
+    "load_project_path",
 ]

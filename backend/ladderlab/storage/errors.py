@@ -42,11 +42,17 @@ class ConflictError(StorageError):
     def __init__(self, name: str, base_revision: str | None, current_revision: str) -> None:
         self.base_revision = base_revision
         self.current_revision = current_revision
-        super().__init__([Diagnostic(
-            code="CONFLICT",
-            message=(f"project {name!r} was changed by someone else: this save is based on revision "
-                     f"{base_revision}, the saved project is now at revision {current_revision}"),
-        )])
+        super().__init__(
+            [
+                Diagnostic(
+                    code="CONFLICT",
+                    message=(
+                        f"project {name!r} was changed by someone else: this save is based on revision "
+                        f"{base_revision}, the saved project is now at revision {current_revision}"
+                    ),
+                )
+            ]
+        )
 
 
 def json_path(data: Any, loc: tuple[int | str, ...]) -> str:

@@ -33,8 +33,17 @@ def _load_json_project(path: Path) -> Project:
     try:
         data = json.loads(path.read_text(encoding="utf-8"))
     except json.JSONDecodeError as err:
-        raise ProjectLoadError([Diagnostic(code="BAD-JSON", file=path.name, line=err.lineno,
-                                           column=err.colno, message=f"invalid JSON: {err.msg}")]) from err
+        raise ProjectLoadError(
+            [
+                Diagnostic(
+                    code="BAD-JSON",
+                    file=path.name,
+                    line=err.lineno,
+                    column=err.colno,
+                    message=f"invalid JSON: {err.msg}",
+                )
+            ]
+        ) from err
     try:
         return Project.model_validate(data)
     except ValidationError as err:

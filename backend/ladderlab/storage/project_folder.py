@@ -45,12 +45,14 @@ def _text_file(text: str) -> str:
 def project_files(project: Project) -> dict[str, str]:
     """Relative path -> content of every file the project is stored as."""
     files = {
-        PROJECT_FILE: dump_json({
-            "format": project.format,
-            "name": project.name,
-            "pous": [p.name for p in project.pous],
-            "tasks": [t.model_dump(mode="json") for t in project.tasks],
-        }),
+        PROJECT_FILE: dump_json(
+            {
+                "format": project.format,
+                "name": project.name,
+                "pous": [p.name for p in project.pous],
+                "tasks": [t.model_dump(mode="json") for t in project.tasks],
+            }
+        ),
         TYPES_FILE: _text_file(project.types),
         GLOBALS_FILE: _text_file(project.globals),
     }
@@ -80,12 +82,21 @@ def read_project_folder(folder: Path) -> Project:
     if meta is None:
         raise ProjectLoadError(problems)
     if not isinstance(meta, dict):
-        raise ProjectLoadError([Diagnostic(code="BAD-FILE", file=PROJECT_FILE, json_path="$",
-                                           message="expected an object with name, format, pous and tasks")])
+        raise ProjectLoadError(
+            [
+                Diagnostic(
+                    code="BAD-FILE",
+                    file=PROJECT_FILE,
+                    json_path="$",
+                    message="expected an object with name, format, pous and tasks",
+                )
+            ]
+        )
     order = meta.get("pous", [])
     if not isinstance(order, list) or not all(isinstance(n, str) for n in order):
-        problems.append(Diagnostic(code="BAD-FILE", file=PROJECT_FILE, json_path="$.pous",
-                                   message="expected a list of POU names"))
+        problems.append(
+            Diagnostic(code="BAD-FILE", file=PROJECT_FILE, json_path="$.pous", message="expected a list of POU names")
+        )
         order = []
     pous = [pou for pou in (_read_pou(folder, name, problems) for name in _pou_names(folder, order)) if pou]
     data = {
@@ -135,9 +146,11 @@ def pou_paths(folder: Path, name: str) -> list[Path]:
 def _read_pou(folder: Path, name: str, problems: list[Diagnostic]) -> Pou | None:
     paths = pou_paths(folder, name)
     if len(paths) != 1:
-        message = (f"POU {name!r} is listed in project.json but has no file pous/{name}.st, "
-                   f".ld.json or .fbd.json") if not paths else (
-            f"POU {name!r} has several files: {', '.join(p.name for p in paths)}; keep one")
+        message = (
+            (f"POU {name!r} is listed in project.json but has no file pous/{name}.st, .ld.json or .fbd.json")
+            if not paths
+            else (f"POU {name!r} has several files: {', '.join(p.name for p in paths)}; keep one")
+        )
         problems.append(Diagnostic(code="BAD-FILE", file=f"{POUS_DIR}/{name}", pou=name, message=message))
         return None
     path = paths[0]
@@ -151,11 +164,18 @@ def _read_pou(folder: Path, name: str, problems: list[Diagnostic]) -> Pou | None
         except ValidationError as err:
             problems.extend(validation_diagnostics(err, data, rel))
             return None
-        expected_language = path.name[len(name) + 1:].split(".")[0]
+        expected_language = path.name[len(name) + 1 :].split(".")[0]
         if pou.language != expected_language:
-            problems.append(Diagnostic(code="BAD-FILE", file=rel, json_path="$.language", pou=name,
-                                       message=f"expected language {expected_language!r} for a "
-                                               f"{path.name.split('.', 1)[1]} file, got {pou.language!r}"))
+            problems.append(
+                Diagnostic(
+                    code="BAD-FILE",
+                    file=rel,
+                    json_path="$.language",
+                    pou=name,
+                    message=f"expected language {expected_language!r} for a "
+                    f"{path.name.split('.', 1)[1]} file, got {pou.language!r}",
+                )
+            )
             return None
     else:
         try:
@@ -164,12 +184,19 @@ def _read_pou(folder: Path, name: str, problems: list[Diagnostic]) -> Pou | None
             problems.append(Diagnostic(code="BAD-FILE", file=rel, pou=name, message=f"not UTF-8 text: {err.reason}"))
             return None
         except StTextError as err:
-            problems.append(Diagnostic(code="BAD-FILE", file=rel, pou=name, line=err.line,
-                                       column=err.column, message=err.reason))
+            problems.append(
+                Diagnostic(code="BAD-FILE", file=rel, pou=name, line=err.line, column=err.column, message=err.reason)
+            )
             return None
     if pou.name != name:
-        problems.append(Diagnostic(code="BAD-FILE", file=rel, pou=name,
-                                   message=f"the file is named for POU {name!r} but declares {pou.name!r}"))
+        problems.append(
+            Diagnostic(
+                code="BAD-FILE",
+                file=rel,
+                pou=name,
+                message=f"the file is named for POU {name!r} but declares {pou.name!r}",
+            )
+        )
         return None
     return pou
 
@@ -195,7 +222,7 @@ def _read_json(path: Path, rel: str, problems: list[Diagnostic]) -> Any:
     try:
         return json.loads(text)
     except json.JSONDecodeError as err:
-        problems.append(Diagnostic(code="BAD-JSON", file=rel, line=err.lineno, column=err.colno,
-                                   message=f"invalid JSON: {err.msg}"))
+        problems.append(
+            Diagnostic(code="BAD-JSON", file=rel, line=err.lineno, column=err.colno, message=f"invalid JSON: {err.msg}")
+        )
         return None
-

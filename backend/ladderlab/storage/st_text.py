@@ -27,8 +27,15 @@ POU_KEYWORDS = {"PROGRAM": "program", "FUNCTION_BLOCK": "function_block", "FUNCT
 POU_END = {"program": "END_PROGRAM", "function_block": "END_FUNCTION_BLOCK", "function": "END_FUNCTION"}
 POU_HEADER = {kind: keyword for keyword, kind in POU_KEYWORDS.items()}
 VAR_SECTIONS = {
-    "VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_EXTERNAL", "VAR_TEMP", "VAR_GLOBAL",
-    "VAR_ACCESS", "VAR_CONFIG",
+    "VAR",
+    "VAR_INPUT",
+    "VAR_OUTPUT",
+    "VAR_IN_OUT",
+    "VAR_EXTERNAL",
+    "VAR_TEMP",
+    "VAR_GLOBAL",
+    "VAR_ACCESS",
+    "VAR_CONFIG",
 }
 
 
@@ -51,11 +58,7 @@ class Word:
 
 def _words(text: str) -> list[Word]:
     """Identifier/keyword tokens outside comments, strings and pragmas."""
-    return [
-        Word(m.group("word").upper(), m.start(), m.end())
-        for m in _TOKEN.finditer(text)
-        if m.lastgroup == "word"
-    ]
+    return [Word(m.group("word").upper(), m.start(), m.end()) for m in _TOKEN.finditer(text) if m.lastgroup == "word"]
 
 
 def _line_end(text: str, offset: int) -> int:
@@ -84,23 +87,22 @@ def split_source(text: str) -> StFile:
         w = words[i]
         if w.upper == "TYPE":
             j = _find(words, i + 1, {"END_TYPE"}, text, w.start, "TYPE without END_TYPE")
-            types.append(text[w.start:words[j].end])
+            types.append(text[w.start : words[j].end])
             i = j + 1
         elif w.upper == "VAR_GLOBAL":
             j = _find(words, i + 1, {"END_VAR"}, text, w.start, "VAR_GLOBAL without END_VAR")
-            globals_.append(text[w.start:words[j].end])
+            globals_.append(text[w.start : words[j].end])
             i = j + 1
         elif w.upper in POU_KEYWORDS:
             kind = POU_KEYWORDS[w.upper]
             j = _find(words, i + 1, {POU_END[kind]}, text, w.start, f"{w.upper} without {POU_END[kind]}")
-            pous.append(_split_pou(text, words[i:j + 1]))
+            pous.append(_split_pou(text, words[i : j + 1]))
             i = j + 1
         elif w.upper == "CONFIGURATION":
-            j = _find(words, i + 1, {"END_CONFIGURATION"}, text, w.start,
-                      "CONFIGURATION without END_CONFIGURATION")
+            j = _find(words, i + 1, {"END_CONFIGURATION"}, text, w.start, "CONFIGURATION without END_CONFIGURATION")
             i = j + 1
         else:
-            raise StTextError(f"unexpected '{text[w.start:w.end]}' outside any POU or TYPE block", text, w.start)
+            raise StTextError(f"unexpected '{text[w.start : w.end]}' outside any POU or TYPE block", text, w.start)
     return StFile("\n\n".join(types), "\n\n".join(globals_), pous)
 
 
@@ -125,11 +127,11 @@ def _split_pou(text: str, words: list[Word]) -> Pou:
     kind = POU_KEYWORDS[head.upper]
     if len(words) < 3:
         raise StTextError(f"{head.upper} needs a name", text, head.start)
-    name = text[words[1].start:words[1].end]
+    name = text[words[1].start : words[1].end]
     header_end = _line_end(text, words[1].end)
     return_type = None
     if kind == "function":
-        after_name = text[words[1].end:header_end]
+        after_name = text[words[1].end : header_end]
         if ":" not in after_name:
             raise StTextError(f"FUNCTION {name} needs a return type ': TYPE' on its first line", text, head.start)
         return_type = after_name.split(":", 1)[1].strip()
@@ -145,9 +147,8 @@ def _split_pou(text: str, words: list[Word]) -> Pou:
     footer_start = text.rfind("\n", 0, end.start) + 1
     declarations = text[inner_start:decl_end] if decl_end > inner_start else ""
     body_start = min(decl_end + 1, footer_start) if declarations else inner_start
-    body = text[body_start:max(footer_start - 1, body_start)]
-    return Pou(name=name, kind=kind, language="st", return_type=return_type,
-               declarations=declarations, body=body)
+    body = text[body_start : max(footer_start - 1, body_start)]
+    return Pou(name=name, kind=kind, language="st", return_type=return_type, declarations=declarations, body=body)
 
 
 def compose_pou_text(pou: Pou) -> str:

@@ -25,8 +25,11 @@ def construct(ty: t.IrType, initial: object, module: ModuleContext) -> str:
         return _array(ty, initial, module)
     if isinstance(ty, t.Struct):
         values = _sequence(initial, ty.name, len(ty.fields))
-        overrides = {names.slot(f.name): construct(f.type, value, module)
-                     for f, value in zip(ty.fields, values) if value is not None and value != f.initial}
+        overrides = {
+            names.slot(f.name): construct(f.type, value, module)
+            for f, value in zip(ty.fields, values)
+            if value is not None and value != f.initial
+        }
         return _with(f"{module.struct_class(ty)}()", overrides)
     if isinstance(ty, t.FbInstance):
         return _instance(ty, initial, module)
@@ -115,7 +118,7 @@ def _nested(sizes: list[int], ctors: list[str], composite: bool) -> str:
     if len(sizes) == 1:
         return _row(ctors, composite)
     inner = math.prod(sizes[1:])
-    parts = [_nested(sizes[1:], ctors[i * inner:(i + 1) * inner], composite) for i in range(sizes[0])]
+    parts = [_nested(sizes[1:], ctors[i * inner : (i + 1) * inner], composite) for i in range(sizes[0])]
     if all(p == parts[0] for p in parts):
         return f"[{parts[0]} for _ in range({sizes[0]})]"
     return "[" + ", ".join(parts) + "]"

@@ -26,8 +26,15 @@ def diagnostic(message: str, origin: ir.Origin | None, code: str = COMPILE_ERROR
     if origin is None:
         return Diagnostic(code=code, message=message)
     return Diagnostic(
-        code=code, message=message, pou=origin.pou, line=origin.line, column=origin.column,
-        end_line=origin.end_line, end_column=origin.end_column, network=origin.network, element=origin.element,
+        code=code,
+        message=message,
+        pou=origin.pou,
+        line=origin.line,
+        column=origin.column,
+        end_line=origin.end_line,
+        end_column=origin.end_column,
+        network=origin.network,
+        element=origin.element,
     )
 
 

@@ -38,8 +38,12 @@ def deferred_probes(pou: ir.Pou) -> set[int]:
 
 
 def _own_variable(e: ir.Expr, classes: dict[str, str]) -> bool:
-    return (isinstance(e, ir.Var) and e.scope == "local" and classes.get(e.name.upper()) in _STORED
-            and all(isinstance(selector, ir.Member) for selector in e.path))
+    return (
+        isinstance(e, ir.Var)
+        and e.scope == "local"
+        and classes.get(e.name.upper()) in _STORED
+        and all(isinstance(selector, ir.Member) for selector in e.path)
+    )
 
 
 def _writes(s: ir.Stmt) -> set[str]:

@@ -22,8 +22,9 @@ from .context import CodegenError, std_fb_class, std_pin_type
 from .scope import Scope
 from .typeinfo import describe, is_composite, runtime_name, store_code, store_value
 
-_OPERATOR_FUNCTIONS = {op: op for op in ("ADD", "SUB", "MUL", "DIV", "MOD", "EXPT", "AND", "OR", "XOR",
-                                         "EQ", "NE", "LT", "LE", "GT", "GE")}
+_OPERATOR_FUNCTIONS = {
+    op: op for op in ("ADD", "SUB", "MUL", "DIV", "MOD", "EXPT", "AND", "OR", "XOR", "EQ", "NE", "LT", "LE", "GT", "GE")
+}
 _ATOM = re.compile(r"(?:[A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z_][A-Za-z0-9_]*)*|\d+)\Z")
 _COMPARISONS = frozenset({"EQ", "NE", "LT", "LE", "GT", "GE"})
 
@@ -130,8 +131,9 @@ class Expressions:
             built = specialised(name, types, result)
         except (ValueError, TypeError) as error:
             raise CodegenError(f"{name}({', '.join(types)}): {error}") from None
-        return self.module.bind(("checked", name.upper(), types, result), f"fn_{names.escape(name)}_eno",
-                                lambda: built.checked)
+        return self.module.bind(
+            ("checked", name.upper(), types, result), f"fn_{names.escape(name)}_eno", lambda: built.checked
+        )
 
     def user_call(self, c: ir.Call) -> str:
         callee = self.module.pous.get(c.function.upper())
@@ -142,7 +144,8 @@ class Expressions:
         if len(c.args) != len(inputs) or len(c.in_outs) != len(in_outs):
             raise CodegenError(
                 f"{callee.name} takes {len(inputs)} inputs and {len(in_outs)} in-outs, "
-                f"the call passes {len(c.args)} and {len(c.in_outs)}")
+                f"the call passes {len(c.args)} and {len(c.in_outs)}"
+            )
         args = [self.value_for(a, slot.type) for a, slot in zip(c.args, inputs)]
         args += [self.ref(v) for v in c.in_outs]
         call = f"{names.function(callee.name)}({', '.join(args)})"
@@ -197,7 +200,7 @@ class Expressions:
                 raise CodegenError(f"{len(selector.indices)} indices for an array of {len(ty.dims)} dimensions")
             for index, (lo, hi) in zip(selector.indices, ty.dims):
                 code = f"{code}[{self.index(index, lo, hi)}]"
-            rest = ty.dims[len(selector.indices):]
+            rest = ty.dims[len(selector.indices) :]
             return code, (t.Array(ty.element, rest) if rest else ty.element)
         owner, attr = self.member_parts(code, ty, selector.name)
         return f"{owner}.{attr}", self.member_type(ty, selector.name)
@@ -221,7 +224,9 @@ class Expressions:
                     raise CodegenError(f"{user.name} has no variable {member}")
                 return self.module.layouts[user.name.upper()].owner(code, place), place.attr
             if std_pin_type(ty.fb, member) is None:
-                raise CodegenError(f"{ty.fb} has no pin {member}" if std_fb_class(ty.fb) else f"unknown function block {ty.fb}")
+                raise CodegenError(
+                    f"{ty.fb} has no pin {member}" if std_fb_class(ty.fb) else f"unknown function block {ty.fb}"
+                )
             return code, member.upper()
         raise CodegenError(f"a {describe(ty)} has no members")
 
@@ -242,8 +247,14 @@ class Expressions:
         return name
 
 
-_HANDLERS = {ir.Const: Expressions.const, ir.Var: Expressions.var, ir.Binary: Expressions.binary,
-             ir.Unary: Expressions.unary, ir.Call: Expressions.call, ir.Convert: Expressions.convert}
+_HANDLERS = {
+    ir.Const: Expressions.const,
+    ir.Var: Expressions.var,
+    ir.Binary: Expressions.binary,
+    ir.Unary: Expressions.unary,
+    ir.Call: Expressions.call,
+    ir.Convert: Expressions.convert,
+}
 
 
 @lru_cache(maxsize=1024)  # bounded: a long-running server compiles many projects

@@ -67,22 +67,49 @@ class Fault:
 
     def text(self) -> str:
         shown = "; ".join(f"{k} = {v!r}" for k, v in self.values.items())
-        return (f"{self.message} at {self.where()}"
-                + (f" (instance {self.instance})" if self.instance else "")
-                + f", task {self.task}, scan {self.scan}, t = {self.time_ms:g} ms"
-                + (f"; {shown}" if shown else ""))
+        return (
+            f"{self.message} at {self.where()}"
+            + (f" (instance {self.instance})" if self.instance else "")
+            + f", task {self.task}, scan {self.scan}, t = {self.time_ms:g} ms"
+            + (f"; {shown}" if shown else "")
+        )
 
     def diagnostic(self) -> Diagnostic:
         o = self.origin or ir.Origin(self.pou or "")
-        return Diagnostic(code=RUNTIME_FAULT, message=self.text(), pou=self.pou, line=o.line, column=o.column,
-                          end_line=o.end_line, end_column=o.end_column, network=o.network, element=o.element)
+        return Diagnostic(
+            code=RUNTIME_FAULT,
+            message=self.text(),
+            pou=self.pou,
+            line=o.line,
+            column=o.column,
+            end_line=o.end_line,
+            end_column=o.end_column,
+            network=o.network,
+            element=o.element,
+        )
 
 
-def make_fault(error: BaseException, generated: Generated, filename: str, ns: dict, *, task: str,
-               time_ms: float, scan: int, instance_path: Callable[[object], str | None]) -> Fault:
+def make_fault(
+    error: BaseException,
+    generated: Generated,
+    filename: str,
+    ns: dict,
+    *,
+    task: str,
+    time_ms: float,
+    scan: int,
+    instance_path: Callable[[object], str | None],
+) -> Fault:
     frame, lineno = _deepest_generated_frame(error, filename)
-    oid = error.origin if isinstance(error, WatchdogTimeout) else (
-        generated.line_origins[lineno - 1] if frame is not None and 0 < lineno <= len(generated.line_origins) else None)
+    oid = (
+        error.origin
+        if isinstance(error, WatchdogTimeout)
+        else (
+            generated.line_origins[lineno - 1]
+            if frame is not None and 0 < lineno <= len(generated.line_origins)
+            else None
+        )
+    )
     origin = generated.origins[oid] if oid is not None else None
     if isinstance(error, PlcRuntimeError):
         kind = "watchdog" if error.code == WATCHDOG else "runtime_error"
@@ -154,7 +181,7 @@ class _FrameReader:
                     if not lo <= i <= hi:
                         raise IndexError(i)
                     value = value[i - lo]  # type: ignore[index]
-                rest = ty.dims[len(selector.indices):]
+                rest = ty.dims[len(selector.indices) :]
                 ty = t.Array(ty.element, rest) if rest else ty.element
             else:
                 value, ty = self.member(value, ty, selector.name)

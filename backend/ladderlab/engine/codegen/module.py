@@ -75,10 +75,16 @@ def generate(program: ir.Program, variant: str = "fast") -> Generated:
     code_line = len(src.lines)
     src.extend(code)
     return Generated(
-        source=src.text(), variant=variant, pieces=_pieces(src),
+        source=src.text(),
+        variant=variant,
+        pieces=_pieces(src),
         code_from=sum(1 for first in {0, *src.breaks} if first < code_line),
-        line_origins=src.line_origins, origins=module.origins,
-        origin_statements=module.origin_statements, pauses=module.pauses, bound=module.bound, context=module,
+        line_origins=src.line_origins,
+        origins=module.origins,
+        origin_statements=module.origin_statements,
+        pauses=module.pauses,
+        bound=module.bound,
+        context=module,
         diagnostics=module.diagnostics,
     )
 

@@ -247,8 +247,9 @@ def _emit_reader(cls: str, key: str, reads: list[list[str]], src: Source) -> Non
 _PAGE = re.compile(r"\bll_p(\d+)\.")
 
 
-def _emit_chunk(scope: Scope, plan: ChunkPlan, number: int, src: Source, deferred: frozenset[int],
-                prologue_depth: int = 1) -> list[str]:
+def _emit_chunk(
+    scope: Scope, plan: ChunkPlan, number: int, src: Source, deferred: frozenset[int], prologue_depth: int = 1
+) -> list[str]:
     """The statements of one chunk, after loading the pages, references and probe lists they use.
 
     Returns the lines reading its deferred probes."""
@@ -362,7 +363,9 @@ def emit_function(module: ModuleContext, pou: ir.Pou, decls: Source, code: Sourc
     if module.probes:
         table = module.probe_table(pou.name)
         key = names.escape(pou.name)
-        decls.line(f"ll_pr_{key} = [ll_unset] * {len(table.elements)}  # probes of FUNCTION {names.comment_text(pou.name)}")
+        decls.line(
+            f"ll_pr_{key} = [ll_unset] * {len(table.elements)}  # probes of FUNCTION {names.comment_text(pou.name)}"
+        )
         decls.line(f"ll_px_{key} = [-1] * {table.group_count}")
 
 

@@ -32,8 +32,9 @@ from .typeinfo import describe, is_composite, runtime_name, store_code
 class Statements:
     """Emits the statements of one chunk of a POU body (``plan``: its chunks and segments, chunks.py)."""
 
-    def __init__(self, scope: Scope, src: Source, plan: ChunkPlan, chunk: int = 0,
-                 deferred: frozenset[int] = frozenset()) -> None:
+    def __init__(
+        self, scope: Scope, src: Source, plan: ChunkPlan, chunk: int = 0, deferred: frozenset[int] = frozenset()
+    ) -> None:
         self.scope = scope
         self.module = scope.module
         self.x = Expressions(scope)
@@ -84,8 +85,10 @@ class Statements:
     def block(self, block: ir.Block) -> None:
         origin = block.origin
         if origin.network is not None:
-            self.src.line(f"# network {names.comment_text(origin.network)}"
-                          + (f" label {names.comment_text(block.label)}" if block.label else ""))
+            self.src.line(
+                f"# network {names.comment_text(origin.network)}"
+                + (f" label {names.comment_text(block.label)}" if block.label else "")
+            )
             self._line = None
         if self.module.debug:
             with self.src.at(self.module.origin(origin)):
@@ -203,8 +206,11 @@ class Statements:
             tests = []
             singles = [label for label in labels if isinstance(label, int)]
             if singles:
-                tests.append(f"{selector} == {literal(singles[0])}" if len(singles) == 1
-                             else f"{selector} in ({', '.join(map(literal, singles))})")
+                tests.append(
+                    f"{selector} == {literal(singles[0])}"
+                    if len(singles) == 1
+                    else f"{selector} in ({', '.join(map(literal, singles))})"
+                )
             for label in labels:
                 if isinstance(label, tuple):
                     lo, hi = label
@@ -398,8 +404,9 @@ class Statements:
         else:
             self.src.line(f"{owner}.{attr} = {self.x.stored(value, pin_type)}")
 
-    def _copy_out(self, source: str, source_type: t.IrType, target: ir.Var, checked: bool = True,
-                  probe: ir.Probe | None = None) -> None:
+    def _copy_out(
+        self, source: str, source_type: t.IrType, target: ir.Var, checked: bool = True, probe: ir.Probe | None = None
+    ) -> None:
         """Copy an FB output pin or a call result into ``target``; ``checked``: already stored in ``source_type``."""
         code, ty = self.x.access(target)
         if is_composite(ty):
@@ -432,9 +439,20 @@ class Statements:
 
         self._guarded(s.en, s.eno, emit)
 
-    _HANDLERS = {ir.Assign: _assign, ir.If: _if, ir.Case: _case, ir.For: _for, ir.While: _while,
-                 ir.Repeat: _repeat, ir.Exit: _exit, ir.Return: _return, ir.Jump: _jump, ir.Probe: _probe,
-                 ir.FbCall: _fbcall, ir.FnCall: _fncall}
+    _HANDLERS = {
+        ir.Assign: _assign,
+        ir.If: _if,
+        ir.Case: _case,
+        ir.For: _for,
+        ir.While: _while,
+        ir.Repeat: _repeat,
+        ir.Exit: _exit,
+        ir.Return: _return,
+        ir.Jump: _jump,
+        ir.Probe: _probe,
+        ir.FbCall: _fbcall,
+        ir.FnCall: _fncall,
+    }
 
 
 _STRAIGHT = (ir.Assign, ir.Probe, ir.FbCall, ir.FnCall)  # statements that never skip what follows
@@ -445,7 +463,8 @@ def _straight(s: ir.Stmt) -> bool:
     if isinstance(s, _STRAIGHT):
         return True
     return not isinstance(s, (ir.Jump, ir.Return, ir.Exit)) and not any(
-        isinstance(x, (ir.Jump, ir.Return, ir.Exit)) for x in walk([s]))
+        isinstance(x, (ir.Jump, ir.Return, ir.Exit)) for x in walk([s])
+    )
 
 
 def _only_probes(s: ir.If) -> bool:
@@ -457,6 +476,8 @@ def _only_probes(s: ir.If) -> bool:
     if not all(isinstance(x, (ir.Probe, ir.If)) for x in statements):
         return False
     conditions = [cond for x in [s, *statements] if isinstance(x, ir.If) for cond, _ in x.branches]
-    return all(not any(isinstance(sel, ir.Index) for var in expression_vars(c) for sel in var.path)
-               and next(calls_in(c), None) is None
-               for c in conditions)
+    return all(
+        not any(isinstance(sel, ir.Index) for var in expression_vars(c) for sel in var.path)
+        and next(calls_in(c), None) is None
+        for c in conditions
+    )

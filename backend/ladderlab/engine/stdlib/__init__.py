@@ -107,7 +107,10 @@ def _table() -> dict[str, StandardFunction]:
         for name, inputs in (("LEFT", 2), ("RIGHT", 2), ("MID", 3), ("INSERT", 3), ("DELETE", 3), ("REPLACE", 4))
     ]
     rows += [(name, 2, False, implement, "FUN-85") for name, implement in TIME_FUNCTIONS.items()]
-    rows += [("MULTIME", 2, False, TIME_FUNCTIONS["MUL_TIME"], "FUN-85"), ("DIVTIME", 2, False, TIME_FUNCTIONS["DIV_TIME"], "FUN-85")]
+    rows += [
+        ("MULTIME", 2, False, TIME_FUNCTIONS["MUL_TIME"], "FUN-85"),
+        ("DIVTIME", 2, False, TIME_FUNCTIONS["DIV_TIME"], "FUN-85"),
+    ]
     rows += [(name, 1, False, conversion_function(*pair), "FUN-10") for name, pair in conversion_names().items()]
     return {name: StandardFunction(name, inputs, ext, implement, spec) for name, inputs, ext, implement, spec in rows}
 
@@ -126,7 +129,9 @@ def specialised(name: str, arg_types: tuple[str, ...], result_type: str | None =
     if function is None:
         raise ValueError(f"{name} is not a standard function")
     if not function.accepts(len(arg_types)):
-        raise TypeError(f"{function.name} takes {function.inputs}{'+' if function.extensible else ''} inputs, not {len(arg_types)}")
+        raise TypeError(
+            f"{function.name} takes {function.inputs}{'+' if function.extensible else ''} inputs, not {len(arg_types)}"
+        )
     return specialise(function.name, function.implement(tuple(arg_types), result_type), len(arg_types))
 
 

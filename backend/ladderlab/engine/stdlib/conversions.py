@@ -100,9 +100,7 @@ def conversion_function(src: str, dst: str):
 def conversion_names() -> dict[str, tuple[str, str]]:
     """Every SRC_TO_DST name with long and short spellings (FUN-10: DT_TO_TOD = DATE_AND_TIME_TO_TIME_OF_DAY)."""
     spellings = [*ELEMENTARY, *ALIASES]
-    return {
-        f"{a}_TO_{b}": (a, b) for a in spellings for b in spellings if resolve(a).name != resolve(b).name
-    }
+    return {f"{a}_TO_{b}": (a, b) for a in spellings for b in spellings if resolve(a).name != resolve(b).name}
 
 
 @lru_cache(maxsize=None)

@@ -48,7 +48,6 @@ _FIXED: dict[str, tuple[tuple[str, ...], str, str, str | None]] = {
 }
 
 
-
 def fixed(name: str):
     cats, exact, result, store = _FIXED[name]
 

@@ -72,13 +72,19 @@ class Signature:
 
 def _std_function(fn: stdlib.StdFunction) -> Signature:
     generic_bool = any(pin.generic and "BOOL" in GENERIC.get(pin.type, ()) for pin in fn.inputs)
-    return Signature("function", tuple((p.name, p.type) for p in fn.inputs), ((RESULT_PIN, fn.result),),
-                     extensible=fn.extensible, generic_bool=generic_bool)
+    return Signature(
+        "function",
+        tuple((p.name, p.type) for p in fn.inputs),
+        ((RESULT_PIN, fn.result),),
+        extensible=fn.extensible,
+        generic_bool=generic_bool,
+    )
 
 
 def _std_block(fb: stdlib.StdFunctionBlock) -> Signature:
-    return Signature("function_block", tuple((p.name, p.type) for p in fb.inputs),
-                     tuple((p.name, p.type) for p in fb.outputs))
+    return Signature(
+        "function_block", tuple((p.name, p.type) for p in fb.inputs), tuple((p.name, p.type) for p in fb.outputs)
+    )
 
 
 def _type_name(spec: ast.TypeSpec) -> str:

@@ -48,8 +48,15 @@ class Counter:
         return self.order
 
 
-def write_header(parent: ET.Element, counter: Counter, network_id: str, label: str | None, comment: str | None,
-                 top: float, width: float) -> float:
+def write_header(
+    parent: ET.Element,
+    counter: Counter,
+    network_id: str,
+    label: str | None,
+    comment: str | None,
+    top: float,
+    width: float,
+) -> float:
     """Comment and label elements of a network; returns the y where its elements start."""
     if comment is not None:
         node = sub(parent, "comment", {"localId": counter.next_local(), "height": COMMENT_H - 10, "width": width})
@@ -133,8 +140,10 @@ def group_by_ladderlab(graph: Graph, reader: Reader, listing: NetworkList | None
     """Networks as LadderLab wrote them, when every element still names a listed network; else None."""
     if listing is None:
         return None
-    groups = {network_id: NetworkGroup(network_id, top=listing.tops[network_id], order=listing.orders[network_id])
-              for network_id in listing.ids}
+    groups = {
+        network_id: NetworkGroup(network_id, top=listing.tops[network_id], order=listing.orders[network_id])
+        for network_id in listing.ids
+    }
     for local_id in graph.order:
         element = graph.elements[local_id]
         group = groups.get(element.network or "")
@@ -149,9 +158,11 @@ def group_by_ladderlab(graph: Graph, reader: Reader, listing: NetworkList | None
     return list(groups.values())
 
 
-def attach_headers(groups: list[NetworkGroup], graph: Graph, reader: Reader, *,
-                   labels: bool = True) -> list[NetworkGroup]:
+def attach_headers(
+    groups: list[NetworkGroup], graph: Graph, reader: Reader, *, labels: bool = True
+) -> list[NetworkGroup]:
     """Labels (unless placed already) and comments of a foreign drawing go to the first network at or below them."""
+
     def top(group: NetworkGroup) -> float:
         return min((graph.elements[m].y for m in group.members), default=group.top)
 

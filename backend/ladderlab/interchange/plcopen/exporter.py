@@ -59,8 +59,16 @@ class _Exporter:
     def document(self, now: datetime) -> bytes:
         stamp = now.replace(microsecond=0, tzinfo=None).isoformat()
         root = ET.Element(q("project"))
-        sub(root, "fileHeader", {"companyName": "LadderLab", "productName": "LadderLab",
-                                 "productVersion": __version__, "creationDateTime": stamp})
+        sub(
+            root,
+            "fileHeader",
+            {
+                "companyName": "LadderLab",
+                "productName": "LadderLab",
+                "productVersion": __version__,
+                "creationDateTime": stamp,
+            },
+        )
         content = sub(root, "contentHeader", {"name": self.project.name, "modificationDateTime": stamp})
         coordinates = sub(content, "coordinateInfo")
         for language in ("fbd", "ld", "sfc"):
@@ -73,8 +81,9 @@ class _Exporter:
         for pou in self.project.pous:
             self.pou(pous, pou)
         self.instances(sub(root, "instances"))
-        ladderlab_data(root, {"format": self.project.format},
-                       {"types": self.project.types, "globals": self.project.globals})
+        ladderlab_data(
+            root, {"format": self.project.format}, {"types": self.project.types, "globals": self.project.globals}
+        )
         if self.problems:
             raise PlcopenExportError(self.problems)
         return to_bytes(root)
@@ -100,8 +109,13 @@ class _Exporter:
         if pou.kind == "function":
             spec = parse_type_text(pou.return_type or "")
             if spec is None:
-                self.problems.append(Diagnostic(code="PLCOPEN-EXPORT", pou=pou.name,
-                                                message=f"the return type '{pou.return_type}' is not a type"))
+                self.problems.append(
+                    Diagnostic(
+                        code="PLCOPEN-EXPORT",
+                        pou=pou.name,
+                        message=f"the return type '{pou.return_type}' is not a type",
+                    )
+                )
             else:
                 write_type(sub(interface, "returnType"), spec)
         for block in self.var_blocks(pou.declarations, pou.name):
@@ -145,11 +159,14 @@ class _Exporter:
             resource = sub(configuration, "resource", {"name": RESOURCE})
             for i, task in enumerate(self.project.tasks):
                 if not 0 <= task.priority <= 65535:
-                    self.problems.append(Diagnostic(code="PLCOPEN-EXPORT", json_path=f"$.tasks[{i}].priority",
-                                                    message=f"task {task.name}: PLCopen priorities are 0..65535, "
-                                                            f"not {task.priority}"))
-                node = sub(resource, "task", {"name": task.name, "interval": task.interval,
-                                              "priority": task.priority})
+                    self.problems.append(
+                        Diagnostic(
+                            code="PLCOPEN-EXPORT",
+                            json_path=f"$.tasks[{i}].priority",
+                            message=f"task {task.name}: PLCopen priorities are 0..65535, not {task.priority}",
+                        )
+                    )
+                node = sub(resource, "task", {"name": task.name, "interval": task.interval, "priority": task.priority})
                 for program in task.programs:
                     sub(node, "pouInstance", {"name": program, "typeName": program})
         for block in globals_:

@@ -55,8 +55,11 @@ def _auto_positions(network: FbdNetwork) -> dict[str, Position]:
     for _ in ids:
         changed = False
         for wire in network.wires:
-            if wire.from_.node in column and wire.to.node in column and \
-                    column[wire.to.node] < column[wire.from_.node] + 1 <= len(ids):
+            if (
+                wire.from_.node in column
+                and wire.to.node in column
+                and column[wire.to.node] < column[wire.from_.node] + 1 <= len(ids)
+            ):
                 column[wire.to.node] = column[wire.from_.node] + 1
                 changed = True
         if not changed:
@@ -89,8 +92,9 @@ class FbdExporter:
         """
         positions = {n.id: n.pos for n in network.nodes if n.pos is not None} | _auto_positions(network)
         xs = [p.x for p in positions.values()] or [0.0]
-        top = write_header(self.parent, self.counter, network.id, network.label, network.comment, top,
-                           max(xs) - min(xs) + 2 * NODE_W)
+        top = write_header(
+            self.parent, self.counter, network.id, network.label, network.comment, top, max(xs) - min(xs) + 2 * NODE_W
+        )
         min_y = min([0.0, *(p.y for p in positions.values())])
         offset = Decimal(repr(float(top))) - Decimal(repr(min_y))
         nodes = {n.id: n for n in network.nodes}
@@ -101,9 +105,14 @@ class FbdExporter:
         for wire in network.wires:
             if wire.from_.node not in nodes or wire.to.node not in nodes:
                 missing = wire.from_.node if wire.from_.node not in nodes else wire.to.node
-                self.problems.append(Diagnostic(code="PLCOPEN-EXPORT", pou=self.pou, network=network.id,
-                                                message=f"a wire names the node '{missing}', which this network "
-                                                        "does not have"))
+                self.problems.append(
+                    Diagnostic(
+                        code="PLCOPEN-EXPORT",
+                        pou=self.pou,
+                        network=network.id,
+                        message=f"a wire names the node '{missing}', which this network does not have",
+                    )
+                )
                 continue
             incoming[(wire.to.node, wire.to.pin)].append(wire)
         bottom = top
@@ -112,10 +121,15 @@ class FbdExporter:
             y_exact = Decimal(repr(pos.y)) + offset
             height = self.node(node, local_ids, order.get(node.id), incoming, pos.x, y_exact, positions, nodes)
             y = float(y_exact)
-            ladderlab_data(self.parent[-1], {"id": node.id, "network": network.id,
-                                             "pos": "auto" if node.pos is None else None,
-                                             "pins": " ".join(node.pins) if isinstance(node, Block)
-                                             and node.pins is not None else None})
+            ladderlab_data(
+                self.parent[-1],
+                {
+                    "id": node.id,
+                    "network": network.id,
+                    "pos": "auto" if node.pos is None else None,
+                    "pins": " ".join(node.pins) if isinstance(node, Block) and node.pins is not None else None,
+                },
+            )
             bottom = max(bottom, y + height)
         return offset, bottom
 
@@ -140,9 +154,17 @@ class FbdExporter:
             outputs = ["ENO", *outputs]
         return inputs, in_outs, outputs
 
-    def node(self, node: FbdNode, local_ids: dict[str, int], order: int | None,
-             incoming: dict[tuple[str, str], list], x: float, y_exact: Decimal,
-             positions: dict[str, Position], nodes: dict[str, FbdNode]) -> float:
+    def node(
+        self,
+        node: FbdNode,
+        local_ids: dict[str, int],
+        order: int | None,
+        incoming: dict[tuple[str, str], list],
+        x: float,
+        y_exact: Decimal,
+        positions: dict[str, Position],
+        nodes: dict[str, FbdNode],
+    ) -> float:
         """Append the element for ``node`` at (x, y_exact); returns its height."""
         local_id = local_ids[node.id]
         y = float(y_exact)
@@ -170,17 +192,32 @@ class FbdExporter:
             inputs, in_outs, outputs = self.block_pins(node, wired_in, wired_out)
             rows = max(len(inputs), len(outputs)) + len(in_outs)
             height = PIN_STEP * rows + 30
-            element = sub(self.parent, "block", {"localId": local_id, "width": NODE_W, "height": height,
-                                                 "typeName": node.call, "instanceName": node.instance,
-                                                 "executionOrderId": order})
+            element = sub(
+                self.parent,
+                "block",
+                {
+                    "localId": local_id,
+                    "width": NODE_W,
+                    "height": height,
+                    "typeName": node.call,
+                    "instanceName": node.instance,
+                    "executionOrderId": order,
+                },
+            )
             position(element, "position", x, y_exact)
             flags = node.pins or {}
 
             def pin(parent: ET.Element, name: str) -> ET.Element:
                 flag = flags.get(name)
-                return sub(parent, "variable", {"formalParameter": name,
-                                                "negated": True if flag and flag.negated else None,
-                                                "edge": flag.edge if flag else None})
+                return sub(
+                    parent,
+                    "variable",
+                    {
+                        "formalParameter": name,
+                        "negated": True if flag and flag.negated else None,
+                        "edge": flag.edge if flag else None,
+                    },
+                )
 
             holder_in = sub(element, "inputVariables")
             for row, name in enumerate(inputs):
@@ -196,21 +233,32 @@ class FbdExporter:
                 position(sub(variable, "connectionPointOut"), "relPosition", NODE_W, 30 + PIN_STEP * row)
             holder_out = sub(element, "outputVariables")
             for row, name in enumerate(outputs):
-                position(sub(pin(holder_out, name), "connectionPointOut"), "relPosition", NODE_W,
-                         30 + PIN_STEP * row)
+                position(sub(pin(holder_out, name), "connectionPointOut"), "relPosition", NODE_W, 30 + PIN_STEP * row)
             return height
         if isinstance(node, InputNode):
-            element = sub(self.parent, "inVariable", {"localId": local_id, "height": 20, "width": NODE_W,
-                                                      "executionOrderId": order})
+            element = sub(
+                self.parent,
+                "inVariable",
+                {"localId": local_id, "height": 20, "width": NODE_W, "executionOrderId": order},
+            )
             position(element, "position", x, y_exact)
             position(sub(element, "connectionPointOut"), "relPosition", NODE_W, 10)
             sub(element, "expression").text = node.expr
             return 20
         if isinstance(node, OutputNode):
-            element = sub(self.parent, "outVariable", {
-                "localId": local_id, "height": 20, "width": NODE_W, "executionOrderId": order,
-                "negated": True if node.mode == "negated" else None, "edge": _EDGE.get(node.mode),
-                "storage": _STORAGE.get(node.mode)})
+            element = sub(
+                self.parent,
+                "outVariable",
+                {
+                    "localId": local_id,
+                    "height": 20,
+                    "width": NODE_W,
+                    "executionOrderId": order,
+                    "negated": True if node.mode == "negated" else None,
+                    "edge": _EDGE.get(node.mode),
+                    "storage": _STORAGE.get(node.mode),
+                },
+            )
             position(element, "position", x, y_exact)
             single_input(element)
             sub(element, "expression").text = node.var
@@ -240,4 +288,3 @@ def _unique(names) -> list[str]:
         if name not in out:
             out.append(name)
     return out
-

@@ -43,8 +43,16 @@ from .ld_import import negate
 from .xml_io import Reader, local
 
 EXECUTABLE = ("block", "outVariable", "inOutVariable", "jump", "return", "label")
-_PREFIX = {"block": "block", "inVariable": "input", "outVariable": "output", "jump": "jump", "return": "ret",
-           "connector": "connector", "continuation": "continuation", "inOutVariable": "output"}
+_PREFIX = {
+    "block": "block",
+    "inVariable": "input",
+    "outVariable": "output",
+    "jump": "jump",
+    "return": "ret",
+    "connector": "connector",
+    "continuation": "continuation",
+    "inOutVariable": "output",
+}
 _BACHMANN = "www.bachmann.at/plc/plcopenxml"
 
 
@@ -52,8 +60,9 @@ def fbd_groups(graph: Graph, reader: Reader) -> tuple[list[NetworkGroup], dict[i
     """Networks of a foreign FBD drawing and, in CFC style, each network's execution order (localIds)."""
     executable = [graph.elements[m] for m in graph.order if graph.elements[m].tag in EXECUTABLE]
     consumers = graph.consumers()
-    connected = [e for e in executable if e.tag == "label" or consumers.get(e.local_id)
-                 or any(e.inputs.values())]  # RuSTy leaves stray unordered elements that it ignores
+    connected = [
+        e for e in executable if e.tag == "label" or consumers.get(e.local_id) or any(e.inputs.values())
+    ]  # RuSTy leaves stray unordered elements that it ignores
     orders = [e.order for e in connected]
     cfc = bool(connected) and None not in orders and len(set(orders)) == len(orders)
     groups: list[NetworkGroup] = [NetworkGroup()]
@@ -83,8 +92,11 @@ def _attach_values(graph: Graph, groups: list[NetworkGroup]) -> None:
     """inVariables and continuations join their first reader's network; connectors their writer's."""
     where = {m: i for i, g in enumerate(groups) for m in g.members}
     consumers = graph.consumers()
-    pending = [graph.elements[m] for m in graph.order if m not in where
-               and graph.elements[m].tag not in EXECUTABLE + ("comment", "error")]
+    pending = [
+        graph.elements[m]
+        for m in graph.order
+        if m not in where and graph.elements[m].tag not in EXECUTABLE + ("comment", "error")
+    ]
     for _ in range(len(pending) + 1):
         left = []
         for element in pending:
@@ -115,8 +127,15 @@ class FbdImporter:
         self.consumers = graph.consumers()
 
     def error(self, message: str, element: Element, network: str, severity: str = "error") -> None:
-        self.reader.report("PLCOPEN-FBD", message, element.node, severity=severity, pou=self.pou, network=network,
-                           item=f"localId {element.local_id}")
+        self.reader.report(
+            "PLCOPEN-FBD",
+            message,
+            element.node,
+            severity=severity,
+            pou=self.pou,
+            network=network,
+            item=f"localId {element.local_id}",
+        )
 
     def body(self, groups: list[NetworkGroup], orders: dict[int, list[int]], *, relative: bool) -> FbdBody:
         return FbdBody(networks=[self.network(g, orders.get(id(g)), relative) for g in groups])
@@ -141,8 +160,14 @@ class FbdImporter:
             order_ids = group.order
         else:
             order_ids = [self.nodes[m].id for m in order or [] if m in self.nodes] or None
-        return FbdNetwork(id=network_id, label=group.label, comment=group.comment, nodes=self.node_list,
-                          wires=self.wires, order=order_ids)
+        return FbdNetwork(
+            id=network_id,
+            label=group.label,
+            comment=group.comment,
+            nodes=self.node_list,
+            wires=self.wires,
+            order=order_ids,
+        )
 
     # ------------------------------------------------------------ nodes
 
@@ -168,25 +193,44 @@ class FbdImporter:
         pos = self.position(element)
         mods = element.mods.get("")
         if tag == "block":
-            self.add(element, Block(id=node_id, pos=pos, call=element.node.get("typeName", ""),
-                                    instance=element.node.get("instanceName") or None,
-                                    en=any(p.upper() == "EN" for p in element.in_pins), pins=self.pin_flags(element)))
+            self.add(
+                element,
+                Block(
+                    id=node_id,
+                    pos=pos,
+                    call=element.node.get("typeName", ""),
+                    instance=element.node.get("instanceName") or None,
+                    en=any(p.upper() == "EN" for p in element.in_pins),
+                    pins=self.pin_flags(element),
+                ),
+            )
         elif tag == "inVariable":
             expr = element.text(self.reader, "expression")
             if mods.edge or mods.storage:
-                self.error("edge/storage modifiers on an input variable have no FBD equivalent; ignored", element,
-                           self.network_id, "warning")
+                self.error(
+                    "edge/storage modifiers on an input variable have no FBD equivalent; ignored",
+                    element,
+                    self.network_id,
+                    "warning",
+                )
             self.add(element, InputNode(id=node_id, pos=pos, expr=negate(expr) if mods.negated else expr))
         elif tag in ("outVariable", "inOutVariable"):
             if tag == "inOutVariable" and not element.inputs.get(""):
                 if not self.consumers.get(element.local_id):
-                    self.error(f"inOutVariable '{element.text(self.reader, 'expression')}' is connected to nothing;"
-                               " ignored", element, self.network_id, "warning")
+                    self.error(
+                        f"inOutVariable '{element.text(self.reader, 'expression')}' is connected to nothing; ignored",
+                        element,
+                        self.network_id,
+                        "warning",
+                    )
                     return
                 self.add(element, InputNode(id=node_id, pos=pos, expr=element.text(self.reader, "expression")))
                 return
-            mode = mods.storage or ({"rising": "p", "falling": "n"}.get(mods.edge or "")) or (
-                "negated" if mods.negated else "normal")
+            mode = (
+                mods.storage
+                or ({"rising": "p", "falling": "n"}.get(mods.edge or ""))
+                or ("negated" if mods.negated else "normal")
+            )
             self.add(element, OutputNode(id=node_id, pos=pos, var=element.text(self.reader, "expression"), mode=mode))
         elif tag == "jump":
             self.add(element, FbdJump(id=node_id, pos=pos, target=element.node.get("label", "")))
@@ -204,8 +248,12 @@ class FbdImporter:
         flags = {}
         for pin, mods in element.mods.items():
             if mods.storage:
-                self.error(f"pin {pin} has a set/reset modifier, which a block pin cannot hold; ignored", element,
-                           self.network_id, "warning")
+                self.error(
+                    f"pin {pin} has a set/reset modifier, which a block pin cannot hold; ignored",
+                    element,
+                    self.network_id,
+                    "warning",
+                )
             if listed is not None or mods.negated or mods.edge:
                 flags[pin] = PinFlags(negated=mods.negated, edge=mods.edge)
         if listed is not None:
@@ -232,8 +280,12 @@ class FbdImporter:
     def source(self, conn: Conn, consumer: Element, members: set[int]) -> PinRef | None:
         element = self.graph.elements[conn.ref]
         if conn.ref not in members:
-            self.error(f"the connection from {element.tag} {element.local_id} crosses into another network; "
-                       "use a connector and continuation", consumer, self.network_id)
+            self.error(
+                f"the connection from {element.tag} {element.local_id} crosses into another network; "
+                "use a connector and continuation",
+                consumer,
+                self.network_id,
+            )
             return None
         if element.tag == "inOutVariable" and element.inputs.get(""):
             return self.in_out_source(element, consumer, members)
@@ -248,8 +300,9 @@ class FbdImporter:
         if not reaches(self.consumers, consumer.local_id, writer.ref):
             return self.source(writer, consumer, members)
         if element.local_id not in self.feedback_inputs:
-            node = InputNode(id=self.ids.fresh("input"), pos=self.position(element),
-                             expr=element.text(self.reader, "expression"))
+            node = InputNode(
+                id=self.ids.fresh("input"), pos=self.position(element), expr=element.text(self.reader, "expression")
+            )
             self.feedback_inputs[element.local_id] = node
             self.add(None, node)
         return PinRef(node=self.feedback_inputs[element.local_id].id, pin=SIMPLE_OUT)
@@ -264,6 +317,5 @@ class FbdImporter:
     def not_block(self, element: Element, target: FbdNode) -> FbdNode:
         block = Block(id=self.ids.fresh("block"), pos=self.position(element), call="NOT")
         self.add(None, block)
-        self.wires.append(Wire(from_=PinRef(node=block.id, pin="OUT"), to=PinRef(node=target.id,
-                                                                               pin=SIMPLE_IN)))
+        self.wires.append(Wire(from_=PinRef(node=block.id, pin="OUT"), to=PinRef(node=target.id, pin=SIMPLE_IN)))
         return block

@@ -114,8 +114,11 @@ def _number(text: str | None, default: float = 0.0) -> float:
 def _mods(node: ET.Element, prefix: str = "") -> PinMods:
     edge = node.get(f"edge{prefix}")
     storage = node.get(f"storage{prefix}")
-    return PinMods(node.get(f"negated{prefix}") in ("true", "1"), edge if edge in ("rising", "falling") else None,
-                   storage if storage in ("set", "reset") else None)
+    return PinMods(
+        node.get(f"negated{prefix}") in ("true", "1"),
+        edge if edge in ("rising", "falling") else None,
+        storage if storage in ("set", "reset") else None,
+    )
 
 
 def read_graph(container: ET.Element, reader: Reader, pou: str, signatures: Signatures) -> Graph:
@@ -132,16 +135,24 @@ def read_graph(container: ET.Element, reader: Reader, pou: str, signatures: Sign
             reader.report("PLCOPEN-GRAPH", f"<{tag}> has no usable localId; it is ignored", node, pou=pou)
             continue
         if local_id in graph.elements:
-            reader.report("PLCOPEN-GRAPH", f"localId {local_id} is used twice; the second <{tag}> is ignored",
-                          node, pou=pou)
+            reader.report(
+                "PLCOPEN-GRAPH", f"localId {local_id} is used twice; the second <{tag}> is ignored", node, pou=pou
+            )
             continue
         pos = reader.child(node, "position")
         order = node.get("executionOrderId")
         y_text = pos.get("y", "0") if pos is not None else "0"
         extra = info(node, reader)
-        element = Element(local_id, tag, node, _number(pos.get("x") if pos is not None else None), _number(y_text),
-                          int(order) if order is not None and order.strip().isdigit() else None,
-                          y_text=y_text, info=extra)
+        element = Element(
+            local_id,
+            tag,
+            node,
+            _number(pos.get("x") if pos is not None else None),
+            _number(y_text),
+            int(order) if order is not None and order.strip().isdigit() else None,
+            y_text=y_text,
+            info=extra,
+        )
         _read_pins(element, reader, signatures)
         graph.elements[local_id] = element
         graph.order.append(local_id)
@@ -177,14 +188,16 @@ def _read_pins(element: Element, reader: Reader, signatures: Signatures) -> None
             element.inputs[pin] = _connections(reader.child(variable, "connectionPointIn"), reader)
             element.mods[pin] = _mods(variable)
         for position, variable in enumerate(reader.children(reader.child(node, "outputVariables"), "variable")):
-            pin = variable.get("formalParameter") or _positional([n for n, _ in sig.outputs] if sig else [],
-                                                                 position, "OUT")
+            pin = variable.get("formalParameter") or _positional(
+                [n for n, _ in sig.outputs] if sig else [], position, "OUT"
+            )
             pin = _result_pin(node, pin)
             element.out_pins.append(pin)
             element.mods.setdefault(pin, _mods(variable))
     elif element.tag == "rightPowerRail":
-        element.inputs[""] = [c for holder in reader.children(node, "connectionPointIn")
-                              for c in _connections(holder, reader)]
+        element.inputs[""] = [
+            c for holder in reader.children(node, "connectionPointIn") for c in _connections(holder, reader)
+        ]
     elif element.tag in SINGLE_IN:
         element.inputs[""] = _connections(reader.child(node, "connectionPointIn"), reader)
         element.mods[""] = _mods(node, "In" if element.tag == "inOutVariable" else "")
@@ -211,13 +224,20 @@ def _resolve(graph: Graph, reader: Reader, pou: str) -> None:
             for conn in conns:
                 source = graph.elements.get(conn.ref)
                 if source is None:
-                    reader.report("PLCOPEN-GRAPH", f"<{element.tag}> localId {element.local_id} is connected to "
-                                  f"localId {conn.ref}, which does not exist; the connection is ignored",
-                                  element.node, pou=pou)
+                    reader.report(
+                        "PLCOPEN-GRAPH",
+                        f"<{element.tag}> localId {element.local_id} is connected to "
+                        f"localId {conn.ref}, which does not exist; the connection is ignored",
+                        element.node,
+                        pou=pou,
+                    )
                     continue
                 if source.tag == "block":
-                    param = _result_pin(source.node, conn.param) if conn.param else next(
-                        (p for p in source.out_pins if p.upper() != "ENO"), None)
+                    param = (
+                        _result_pin(source.node, conn.param)
+                        if conn.param
+                        else next((p for p in source.out_pins if p.upper() != "ENO"), None)
+                    )
                     conn = Conn(conn.ref, param, conn.index)
                 else:
                     conn = Conn(conn.ref, None, conn.index)
@@ -235,8 +255,12 @@ def resolve_continuations(graph: Graph, reader: Reader, pou: str) -> None:
             return [conn]
         connector = connectors.get(source.node.get("name", "").upper())
         if connector is None or source.local_id in seen:
-            reader.report("PLCOPEN-GRAPH", f"continuation '{source.node.get('name', '')}' has no connector of "
-                          "that name", source.node, pou=pou)
+            reader.report(
+                "PLCOPEN-GRAPH",
+                f"continuation '{source.node.get('name', '')}' has no connector of that name",
+                source.node,
+                pou=pou,
+            )
             return []
         return [c for inner in connector.inputs.get("", []) for c in sources(inner, seen | {source.local_id})]
 

@@ -75,13 +75,21 @@ def import_plcopen(data: bytes, *, name: str | None = None, file: str | None = N
     reader = Reader(parsed, file=file)
     root = parsed.root
     if namespace(root) not in PLCOPEN_NAMESPACES or local(root) not in ("project", "pou"):
-        reader.report("PLCOPEN-NOT-PLCOPEN", f"the root element is <{local(root)}> in namespace "
-                      f"'{namespace(root) or 'none'}'; a PLCopen TC6 document has <project> (or <pou>) in "
-                      f"'{PLCOPEN_NAMESPACES[0]}'", root)
+        reader.report(
+            "PLCOPEN-NOT-PLCOPEN",
+            f"the root element is <{local(root)}> in namespace "
+            f"'{namespace(root) or 'none'}'; a PLCopen TC6 document has <project> (or <pou>) in "
+            f"'{PLCOPEN_NAMESPACES[0]}'",
+            root,
+        )
         return ImportResult(None, reader.diagnostics)
     if namespace(root) != PLCOPEN_NAMESPACES[0]:
-        reader.report("PLCOPEN-VERSION", f"the document uses '{namespace(root)}'; it is read as TC6 v2.01", root,
-                      severity="warning")
+        reader.report(
+            "PLCOPEN-VERSION",
+            f"the document uses '{namespace(root)}'; it is read as TC6 v2.01",
+            root,
+            severity="warning",
+        )
     project = _Importer(reader, name).project(root)
     return ImportResult(project, reader.diagnostics)
 
@@ -109,8 +117,13 @@ class _Importer:
         globals_ = self.globals(configurations, info_text(ours, "globals"))
         tasks = self.tasks(configurations)
         for data_name, count in sorted(self.foreign.items()):
-            r.report("PLCOPEN-ADDDATA", f"addData '{data_name}' ({count} place{'s' if count > 1 else ''}) is "
-                     "another tool's data that LadderLab cannot carry; it was dropped", root, severity="warning")
+            r.report(
+                "PLCOPEN-ADDDATA",
+                f"addData '{data_name}' ({count} place{'s' if count > 1 else ''}) is "
+                "another tool's data that LadderLab cannot carry; it was dropped",
+                root,
+                severity="warning",
+            )
         return Project(name=name, types=types, globals=globals_, pous=[p for p in pous if p is not None], tasks=tasks)
 
     # ------------------------------------------------------------ addData bookkeeping
@@ -134,8 +147,12 @@ class _Importer:
         r = self.reader
         name, pou_type = node.get("name", ""), node.get("pouType", "")
         if pou_type not in KIND:
-            r.report("PLCOPEN-POU", f"POU '{name}' has pouType '{pou_type}'; expected program, functionBlock or "
-                     "function", node, pou=name)
+            r.report(
+                "PLCOPEN-POU",
+                f"POU '{name}' has pouType '{pou_type}'; expected program, functionBlock or function",
+                node,
+                pou=name,
+            )
             return None
         interface = r.child(node, "interface")
         reader = VarReader(r, name)
@@ -159,8 +176,9 @@ class _Importer:
             r.report("PLCOPEN-POU", f"function '{name}' has no return type", node, pou=name)
         return Pou(name=name, kind=KIND[pou_type], language="st", return_type=return_type, declarations=declarations)
 
-    def text_declaration(self, interface: ET.Element | None, declarations: str,
-                         return_type: str | None) -> tuple[str, str | None]:
+    def text_declaration(
+        self, interface: ET.Element | None, declarations: str, return_type: str | None
+    ) -> tuple[str, str | None]:
         """Bachmann/RuSTy keep the interface as ST text in addData; use it when the typed lists are empty.
 
         The text starts with the POU header (``FUNCTION main : DINT``), which gives a function's return type.
@@ -182,19 +200,35 @@ class _Importer:
         r = self.reader
         for tag in ("actions", "transitions"):
             for item in r.children(r.child(node, tag), tag[:-1]):
-                r.report("PLCOPEN-UNSUPPORTED", f"{tag[:-1]} '{item.get('name', '')}' of POU {pou.name} was not "
-                         f"imported: LadderLab has no {tag}", item, severity="warning", pou=pou.name)
+                r.report(
+                    "PLCOPEN-UNSUPPORTED",
+                    f"{tag[:-1]} '{item.get('name', '')}' of POU {pou.name} was not imported: LadderLab has no {tag}",
+                    item,
+                    severity="warning",
+                    pou=pou.name,
+                )
         bodies = r.children(node, "body")
         if len(bodies) > 1:
-            r.report("PLCOPEN-POU", f"POU {pou.name} has {len(bodies)} bodies; only the first is imported",
-                     bodies[1], severity="warning", pou=pou.name)
+            r.report(
+                "PLCOPEN-POU",
+                f"POU {pou.name} has {len(bodies)} bodies; only the first is imported",
+                bodies[1],
+                severity="warning",
+                pou=pou.name,
+            )
         body = bodies[0] if bodies else None
         language = next(r.elements(body), None)
         tag = local(language) if language is not None else "ST"
         if tag in ("SFC", "IL"):
-            r.report("PLCOPEN-UNSUPPORTED", f"POU {pou.name} is written in {tag}, which LadderLab does not support; "
-                     f"it was imported with its interface and a body that does nothing ({_KEPT[tag]} as comments), "
-                     "so its callers build and run", language, severity="warning", pou=pou.name)
+            r.report(
+                "PLCOPEN-UNSUPPORTED",
+                f"POU {pou.name} is written in {tag}, which LadderLab does not support; "
+                f"it was imported with its interface and a body that does nothing ({_KEPT[tag]} as comments), "
+                "so its callers build and run",
+                language,
+                severity="warning",
+                pou=pou.name,
+            )
             return pou.model_copy(update={"body": unsupported_body(tag, language)})
         if tag == "ST":
             return pou.model_copy(update={"body": text_content(language)})
@@ -206,15 +240,27 @@ class _Importer:
             resolve_continuations(graph, r, pou.name)
             groups = groups or attach_headers(ld_groups(graph), graph, r)
             ld = LdImporter(graph, r, pou.name, signatures, ids).body(groups)
-            return Pou(name=pou.name, kind=pou.kind, language="ld", return_type=pou.return_type,
-                       declarations=pou.declarations, body=ld)
+            return Pou(
+                name=pou.name,
+                kind=pou.kind,
+                language="ld",
+                return_type=pou.return_type,
+                declarations=pou.declarations,
+                body=ld,
+            )
         relative, orders = groups is not None, {}
         if groups is None:
             groups, orders = fbd_groups(graph, r)
             attach_headers(groups, graph, r, labels=False)
         fbd = FbdImporter(graph, r, pou.name, ids).body(groups, orders, relative=relative)
-        return Pou(name=pou.name, kind=pou.kind, language="fbd", return_type=pou.return_type,
-                   declarations=pou.declarations, body=fbd)
+        return Pou(
+            name=pou.name,
+            kind=pou.kind,
+            language="fbd",
+            return_type=pou.return_type,
+            declarations=pou.declarations,
+            body=fbd,
+        )
 
     # ------------------------------------------------------------ project texts
 
@@ -234,8 +280,12 @@ class _Importer:
 
     def globals(self, configurations: list[ET.Element], carried: str | None) -> str:
         r = self.reader
-        lists = [g for c in configurations for holder in [c, *r.children(c, "resource")]
-                 for g in r.children(holder, "globalVars")]
+        lists = [
+            g
+            for c in configurations
+            for holder in [c, *r.children(c, "resource")]
+            for g in r.children(holder, "globalVars")
+        ]
         if carried is not None and self.same(lists, carried, _declaration_elements):
             return carried
         reader = VarReader(r)
@@ -244,16 +294,24 @@ class _Importer:
     def tasks(self, configurations: list[ET.Element]) -> list[Task]:
         r = self.reader
         if len(configurations) > 1:
-            r.report("PLCOPEN-CONFIG", f"{len(configurations)} configurations are merged into the project's one "
-                     "task list", configurations[1], severity="warning")
+            r.report(
+                "PLCOPEN-CONFIG",
+                f"{len(configurations)} configurations are merged into the project's one task list",
+                configurations[1],
+                severity="warning",
+            )
         tasks = []
         for resource in (res for c in configurations for res in r.children(c, "resource")):
             for task in r.children(resource, "task"):
                 tasks.append(self.task(task))
             for instance in r.children(resource, "pouInstance"):
-                r.report("PLCOPEN-CONFIG", f"program instance '{instance.get('name', '')}' is not assigned to a "
-                         "task; LadderLab runs programs from tasks only, so it was not imported", instance,
-                         severity="warning")
+                r.report(
+                    "PLCOPEN-CONFIG",
+                    f"program instance '{instance.get('name', '')}' is not assigned to a "
+                    "task; LadderLab runs programs from tasks only, so it was not imported",
+                    instance,
+                    severity="warning",
+                )
         return tasks
 
     def task(self, node: ET.Element) -> Task:
@@ -261,14 +319,22 @@ class _Importer:
         name = node.get("name", "")
         interval = node.get("interval")
         if not interval:
-            r.report("PLCOPEN-CONFIG", f"task {name} has no interval (an event task); it is imported as a cyclic "
-                     "task of T#10ms", node, severity="warning")
+            r.report(
+                "PLCOPEN-CONFIG",
+                f"task {name} has no interval (an event task); it is imported as a cyclic task of T#10ms",
+                node,
+                severity="warning",
+            )
             interval = "T#10ms"
         try:
             priority = int(node.get("priority", "0"))
         except ValueError:
-            r.report("PLCOPEN-CONFIG", f"task {name}: priority '{node.get('priority')}' is not a number; 0 is used",
-                     node, severity="warning")
+            r.report(
+                "PLCOPEN-CONFIG",
+                f"task {name}: priority '{node.get('priority')}' is not a number; 0 is used",
+                node,
+                severity="warning",
+            )
             priority = 0
         programs = [i.get("typeName", "") for i in r.children(node, "pouInstance")]
         return Task(name=name, interval=interval, priority=priority, programs=programs)
@@ -320,7 +386,10 @@ def unsupported_body(tag: str, language: ET.Element) -> str:
     if tag == "IL":
         original = text_content(language).strip().splitlines()
     else:
-        original = [f"step {s.get('name', '')}{' (initial)' if s.get('initialStep') == 'true' else ''}"
-                    for s in language if local(s) == "step"]
+        original = [
+            f"step {s.get('name', '')}{' (initial)' if s.get('initialStep') == 'true' else ''}"
+            for s in language
+            if local(s) == "step"
+        ]
     lines = [f"// Imported from {tag}, which LadderLab cannot run: this body does nothing. The original {tag}:"]
     return "\n".join(lines + [f"// {line}".rstrip() for line in original])

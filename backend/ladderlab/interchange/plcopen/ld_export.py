@@ -102,13 +102,15 @@ class LdExporter:
             return top
         self.layout, self.top = layout, top
         height = max(layout.height, 1) * CELL_H
-        self.left = sub(self.parent, "leftPowerRail", {"localId": self.counter.next_local(), "height": height,
-                                                        "width": 10})
+        self.left = sub(
+            self.parent, "leftPowerRail", {"localId": self.counter.next_local(), "height": height, "width": 10}
+        )
         position(self.left, "position", RAIL_X, top)
         self.left_points: set[float] = set()
         end = self.series(network.elements, [RAIL], [])
-        right = sub(self.parent, "rightPowerRail", {"localId": self.counter.next_local(), "height": height,
-                                                     "width": 10})
+        right = sub(
+            self.parent, "rightPowerRail", {"localId": self.counter.next_local(), "height": height, "width": 10}
+        )
         right_x = x_of(layout.width) + RAIL_X
         position(right, "position", right_x, top)
         for src in end:
@@ -151,8 +153,12 @@ class LdExporter:
 
     def contact_or_coil(self, item: Contact | Coil, point: list[Src], path: list[str], x: float, y: float) -> Src:
         local_id = self.counter.next_local()
-        attrs: dict[str, object] = {"localId": local_id, "height": 20, "width": 30,
-                                    "executionOrderId": self.counter.next_order()}
+        attrs: dict[str, object] = {
+            "localId": local_id,
+            "height": 20,
+            "width": 30,
+            "executionOrderId": self.counter.next_order(),
+        }
         if isinstance(item, Contact):
             tag, attrs["negated"], attrs["edge"] = "contact", item.mode == "nc", _CONTACT_EDGE.get(item.mode)
         else:
@@ -178,11 +184,22 @@ class LdExporter:
 
     def compare(self, item: Compare, point: list[Src], path: list[str], col: int, row: int) -> Src:
         x, y = x_of(col + 1) + 20, y_of(self.top, row)
-        operands = [self.in_variable(text, x_of(col) + 10, y_of(self.top, row + 1 + i) + 10)
-                    for i, text in enumerate((item.left, item.right))]
+        operands = [
+            self.in_variable(text, x_of(col) + 10, y_of(self.top, row + 1 + i) + 10)
+            for i, text in enumerate((item.left, item.right))
+        ]
         local_id = self.counter.next_local()
-        node = sub(self.parent, "block", {"localId": local_id, "width": 60, "height": 3 * CELL_H,
-                                          "typeName": item.op, "executionOrderId": self.counter.next_order()})
+        node = sub(
+            self.parent,
+            "block",
+            {
+                "localId": local_id,
+                "width": 60,
+                "height": 3 * CELL_H,
+                "typeName": item.op,
+                "executionOrderId": self.counter.next_order(),
+            },
+        )
         position(node, "position", x, y)
         inputs = sub(node, "inputVariables")
         for i, (pin, source) in enumerate((("EN", point), ("IN1", [operands[0]]), ("IN2", [operands[1]]))):
@@ -191,8 +208,12 @@ class LdExporter:
         sub(node, "inOutVariables")
         outputs = sub(node, "outputVariables")
         for i, pin in enumerate(("ENO", "OUT")):
-            position(sub(sub(outputs, "variable", {"formalParameter": pin}), "connectionPointOut"),
-                     "relPosition", 60, 20 + CELL_H * i)
+            position(
+                sub(sub(outputs, "variable", {"formalParameter": pin}), "connectionPointOut"),
+                "relPosition",
+                60,
+                20 + CELL_H * i,
+            )
         ladderlab_data(node, self.ids(item, path))
         return Src(local_id, "OUT", x + 60, y + 20 + CELL_H)
 
@@ -211,8 +232,14 @@ class LdExporter:
                 at = self.pin_row(pins, pin, inputs=True)
                 sources[pin] = [self.in_variable(value, x_of(col - 1) + 10, y + at * CELL_H + 10)]
         local_id = self.counter.next_local()
-        attrs = {"localId": local_id, "width": 60, "height": pins.rows * CELL_H, "typeName": item.call,
-                 "instanceName": item.instance, "executionOrderId": self.counter.next_order()}
+        attrs = {
+            "localId": local_id,
+            "width": 60,
+            "height": pins.rows * CELL_H,
+            "typeName": item.call,
+            "instanceName": item.instance,
+            "executionOrderId": self.counter.next_order(),
+        }
         node = sub(self.parent, "block", attrs)
         position(node, "position", x, y)
         inputs = sub(node, "inputVariables")
@@ -224,19 +251,25 @@ class LdExporter:
         for pin in pins.in_outs:
             at = self.pin_row(pins, pin, inputs=True)
             variable = sub(in_outs, "variable", {"formalParameter": pin})
-            self.connect(self.connection_in(variable, 0, 20 + at * CELL_H), sources.get(pin, []), x,
-                         y + 20 + at * CELL_H)
+            self.connect(
+                self.connection_in(variable, 0, 20 + at * CELL_H), sources.get(pin, []), x, y + 20 + at * CELL_H
+            )
             position(sub(variable, "connectionPointOut"), "relPosition", 60, 20 + at * CELL_H)
         outputs = sub(node, "outputVariables")
         for pin in pins.outputs:
             at = self.pin_row(pins, pin, inputs=False)
-            position(sub(sub(outputs, "variable", {"formalParameter": pin}), "connectionPointOut"),
-                     "relPosition", 60, 20 + at * CELL_H)
+            position(
+                sub(sub(outputs, "variable", {"formalParameter": pin}), "connectionPointOut"),
+                "relPosition",
+                60,
+                20 + at * CELL_H,
+            )
         ladderlab_data(node, self.ids(item, path))
         for pin, var in item.outputs.items():
             at = self.pin_row(pins, pin, inputs=False)
-            self.out_variable(var, Src(local_id, pin, x + 60, y + 20 + at * CELL_H), x_of(col + 1) + 20,
-                              y + at * CELL_H + 10)
+            self.out_variable(
+                var, Src(local_id, pin, x + 60, y + 20 + at * CELL_H), x_of(col + 1) + 20, y + at * CELL_H + 10
+            )
         if pins.power_out is None:
             return []
         at = self.pin_row(pins, pins.power_out, inputs=False)
@@ -259,8 +292,16 @@ class LdExporter:
         return Src(local_id, None, x + 80, y + 10)
 
     def out_variable(self, text: str, source: Src, x: float, y: float) -> None:
-        node = sub(self.parent, "outVariable", {"localId": self.counter.next_local(), "height": 20, "width": 80,
-                                                "executionOrderId": self.counter.next_order()})
+        node = sub(
+            self.parent,
+            "outVariable",
+            {
+                "localId": self.counter.next_local(),
+                "height": 20,
+                "width": 80,
+                "executionOrderId": self.counter.next_order(),
+            },
+        )
         position(node, "position", x, y)
         self.connect(self.connection_in(node, 0, 10), [source], x, y + 10)
         sub(node, "expression").text = text
@@ -289,4 +330,3 @@ class LdExporter:
                 start = (src.x, src.y)
             position(connection, "position", x, y)
             position(connection, "position", *start)
-

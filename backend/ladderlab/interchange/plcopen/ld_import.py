@@ -109,10 +109,24 @@ class LdImporter:
 
     # ------------------------------------------------------------ reporting
 
-    def error(self, message: str, element: Element | None, *, network: str | None, severity: str = "error",
-              code: str = "PLCOPEN-LD") -> None:
-        self.reader.report(code, message, element.node if element else None, severity=severity, pou=self.pou,
-                           network=network, item=f"localId {element.local_id}" if element else None)
+    def error(
+        self,
+        message: str,
+        element: Element | None,
+        *,
+        network: str | None,
+        severity: str = "error",
+        code: str = "PLCOPEN-LD",
+    ) -> None:
+        self.reader.report(
+            code,
+            message,
+            element.node if element else None,
+            severity=severity,
+            pou=self.pou,
+            network=network,
+            item=f"localId {element.local_id}" if element else None,
+        )
 
     # ------------------------------------------------------------ network
 
@@ -120,8 +134,11 @@ class LdImporter:
         network_id = self.ids.take(group.id, "network")
         self.network_id = network_id
         net = _Net(set(group.members))
-        flow = [m for m in self.topological(group.members) if self.graph.elements[m].tag not in
-                ("leftPowerRail", "rightPowerRail")]
+        flow = [
+            m
+            for m in self.topological(group.members)
+            if self.graph.elements[m].tag not in ("leftPowerRail", "rightPowerRail")
+        ]
         for local_id in flow:
             self.plan(self.graph.elements[local_id])
         for local_id in flow:
@@ -158,8 +175,11 @@ class LdImporter:
             ready.sort(key=lambda m: self.graph.elements[m].key)
         if len(out) < len(members):
             stuck = sorted(set(members) - set(out))
-            self.error(f"the elements with localIds {stuck} form a loop; LD networks cannot have feedback",
-                       self.graph.elements[stuck[0]], network=self.network_id)
+            self.error(
+                f"the elements with localIds {stuck} form a loop; LD networks cannot have feedback",
+                self.graph.elements[stuck[0]],
+                network=self.network_id,
+            )
             out += stuck
         return out
 
@@ -173,7 +193,8 @@ class LdImporter:
         if plan is None or source.tag != "block":
             return False
         return (plan.role == "compare" and conn.param == RESULT_PIN) or (
-            plan.role == "box" and plan.power_out is not None and conn.param == plan.power_out)
+            plan.role == "box" and plan.power_out is not None and conn.param == plan.power_out
+        )
 
     def text(self, conn: Conn, reader: int | None = None) -> tuple[str, set[int]] | None:
         """The operand text of a value source and the blocks it reads, or None for a power source.
@@ -213,19 +234,31 @@ class LdImporter:
         wired_en = bool(en_pin and inputs.get(en_pin))
         values = [p for p in element.in_pins if p.upper() != "EN"]
         eno_pin = next((p for p in element.out_pins if p.upper() == "ENO"), None)
-        eno_free = all(self.graph.elements[c].tag == "rightPowerRail"
-                       for c, _, conn in self.consumers.get(element.local_id, []) if conn.param == eno_pin)
-        if (type_name.upper() in COMPARE_OPS and not instance and [p.upper() for p in values] == ["IN1", "IN2"]
-                and all(len(inputs[p]) == 1 and self.text(inputs[p][0]) is not None for p in values)
-                and all(self.is_power(c) for c in inputs.get(en_pin or "", []))
-                and eno_free and self.used_outputs(element) == {RESULT_PIN}):
+        eno_free = all(
+            self.graph.elements[c].tag == "rightPowerRail"
+            for c, _, conn in self.consumers.get(element.local_id, [])
+            if conn.param == eno_pin
+        )
+        if (
+            type_name.upper() in COMPARE_OPS
+            and not instance
+            and [p.upper() for p in values] == ["IN1", "IN2"]
+            and all(len(inputs[p]) == 1 and self.text(inputs[p][0]) is not None for p in values)
+            and all(self.is_power(c) for c in inputs.get(en_pin or "", []))
+            and eno_free
+            and self.used_outputs(element) == {RESULT_PIN}
+        ):
             self.plans[element.local_id] = _Plan("compare", "EN", RESULT_PIN)
             return
-        if (not instance and (sig is None or sig.kind == "function") and eno_free
-                and all(self.graph.elements[c.ref].tag == "leftPowerRail" for c in inputs.get(en_pin or "", []))
-                and self.feeds_only_blocks(element)
-                and all(self.text(c) is not None for p in values for c in inputs[p])
-                and all(len(inputs[p]) <= 1 for p in values)):
+        if (
+            not instance
+            and (sig is None or sig.kind == "function")
+            and eno_free
+            and all(self.graph.elements[c.ref].tag == "leftPowerRail" for c in inputs.get(en_pin or "", []))
+            and self.feeds_only_blocks(element)
+            and all(self.text(c) is not None for p in values for c in inputs[p])
+            and all(len(inputs[p]) <= 1 for p in values)
+        ):
             self.inline_call(element, type_name, values)
             self.plans[element.local_id] = _Plan("inline")
             return
@@ -234,8 +267,9 @@ class LdImporter:
             # Without EN the power flow passes through the box only from a BOOL input to a BOOL output. An
             # unknown FB (a vendor block) has neither as far as the export could name them again: it runs
             # unconditionally (EN from the rail, as an unwired EN means) with every input as drawn.
-            power_in = self.power_input(values, inputs, sig.bool_inputs() if sig is not None else
-                                        values[:1] if not instance else [])
+            power_in = self.power_input(
+                values, inputs, sig.bool_inputs() if sig is not None else values[:1] if not instance else []
+            )
             power_out = self.power_output(element, sig)
             if power_in is not None and power_out is not None:
                 plan = _Plan("box", power_in=power_in, power_out=power_out)
@@ -246,8 +280,9 @@ class LdImporter:
     def power_output(self, element: Element, sig) -> str | None:
         """The output the power flow leaves by: the first that is BOOL, or of a generic type and driving contacts
         or coils (the lowering accepts a function's generic result when its operands make it BOOL)."""
-        wanted = sig.power_out(False) if sig is not None else next(
-            (p for p in element.out_pins if p.upper() != "ENO"), None)
+        wanted = (
+            sig.power_out(False) if sig is not None else next((p for p in element.out_pins if p.upper() != "ENO"), None)
+        )
         pin = next((p for p in element.out_pins if wanted and p.upper() == wanted.upper()), wanted)
         declared = dict(sig.outputs).get(wanted) if sig is not None else None
         if pin is not None and (canonical_type_name(declared or "") == "BOOL" or self.feeds_power(element, pin)):
@@ -256,8 +291,10 @@ class LdImporter:
 
     def feeds_power(self, element: Element, pin: str) -> bool:
         """Does a pin of uncertain type (generic OUT of SEL, a vendor block's output) drive contacts or coils?"""
-        return any(conn.param == pin and (self.graph.elements[c].tag in _POWER_CONSUMERS or target_pin.upper() == "EN")
-                   for c, target_pin, conn in self.consumers.get(element.local_id, []))
+        return any(
+            conn.param == pin and (self.graph.elements[c].tag in _POWER_CONSUMERS or target_pin.upper() == "EN")
+            for c, target_pin, conn in self.consumers.get(element.local_id, [])
+        )
 
     def power_input(self, values: list[str], inputs: dict[str, list[Conn]], bool_inputs: list[str]) -> str | None:
         """The input the power flow enters, read the way the lowering picks it: the first BOOL input that gets
@@ -272,14 +309,23 @@ class LdImporter:
         return None
 
     def used_outputs(self, element: Element) -> set[str | None]:
-        return {conn.param for _, _, conn in self.consumers.get(element.local_id, [])
-                if conn.param is None or conn.param.upper() != "ENO"}
+        return {
+            conn.param
+            for _, _, conn in self.consumers.get(element.local_id, [])
+            if conn.param is None or conn.param.upper() != "ENO"
+        }
 
     def feeds_only_blocks(self, element: Element) -> bool:
-        used = [(self.graph.elements[c], pin) for c, pin, conn in self.consumers.get(element.local_id, [])
-                if conn.param is None or conn.param.upper() != "ENO"]
-        return bool(used) and len(self.used_outputs(element)) == 1 and all(
-            target.tag == "block" and pin.upper() != "EN" for target, pin in used)
+        used = [
+            (self.graph.elements[c], pin)
+            for c, pin, conn in self.consumers.get(element.local_id, [])
+            if conn.param is None or conn.param.upper() != "ENO"
+        ]
+        return (
+            bool(used)
+            and len(self.used_outputs(element)) == 1
+            and all(target.tag == "block" and pin.upper() != "EN" for target, pin in used)
+        )
 
     def inline_call(self, element: Element, type_name: str, values: list[str]) -> None:
         args, reads = [], set()
@@ -310,14 +356,19 @@ class LdImporter:
             if tag == "contact":
                 mode = _CONTACT_MODE.get((mods.negated, mods.edge))
                 if mode is None:
-                    self.error("a negated edge contact has no LD equivalent; read as a plain edge contact",
-                               element, network=self.network_id, severity="warning")
+                    self.error(
+                        "a negated edge contact has no LD equivalent; read as a plain edge contact",
+                        element,
+                        network=self.network_id,
+                        severity="warning",
+                    )
                     mode = "p" if mods.edge == "rising" else "n"
                 item = Contact(id=self.take_id(element, "contact"), var=var, mode=mode)
             else:
                 item = Coil(id=self.take_id(element, "coil"), var=var, mode=self.coil_mode(element))
-            self.power_edge(element, net, element.inputs.get("", []), self.model(element, item),
-                            (element.local_id, None))
+            self.power_edge(
+                element, net, element.inputs.get("", []), self.model(element, item), (element.local_id, None)
+            )
         elif tag in ("jump", "return"):
             if tag == "jump":
                 item = Jump(id=self.take_id(element, "jump"), target=element.node.get("label", ""))
@@ -330,8 +381,12 @@ class LdImporter:
             self.block(element, net)
         elif tag == "inVariable":
             if not self.consumers.get(element.local_id):
-                self.error(f"inVariable '{element.text(self.reader, 'expression')}' is connected to nothing; "
-                           "ignored", element, network=self.network_id, severity="warning")
+                self.error(
+                    f"inVariable '{element.text(self.reader, 'expression')}' is connected to nothing; ignored",
+                    element,
+                    network=self.network_id,
+                    severity="warning",
+                )
         else:
             self.error(f"<{tag}> is not an LD element this project can hold", element, network=self.network_id)
 
@@ -349,8 +404,12 @@ class LdImporter:
         var = element.text(self.reader, "expression")
         if not conns:
             if element.tag == "outVariable":
-                self.error(f"outVariable '{var}' is connected to nothing; ignored", element, network=self.network_id,
-                           severity="warning")
+                self.error(
+                    f"outVariable '{var}' is connected to nothing; ignored",
+                    element,
+                    network=self.network_id,
+                    severity="warning",
+                )
             return
         plan = self.plans.get(conns[0].ref)
         if len(conns) == 1 and plan is not None and plan.role == "box":
@@ -380,11 +439,18 @@ class LdImporter:
         inputs = element.inputs
         if plan.role == "compare":
             (left, reads_l), (right, reads_r) = (self.text(inputs[pin][0], element.local_id) for pin in ("IN1", "IN2"))
-            item = Compare(id=self.take_id(element, "compare"), op=element.node.get("typeName").upper(),
-                           left=left, right=right)
+            item = Compare(
+                id=self.take_id(element, "compare"), op=element.node.get("typeName").upper(), left=left, right=right
+            )
             en = inputs.get(next((p for p in element.in_pins if p.upper() == "EN"), ""), [])
-            self.power_edge(element, net, en, self.model(element, item, reads_l | reads_r),
-                            (element.local_id, RESULT_PIN), from_rail=not en)
+            self.power_edge(
+                element,
+                net,
+                en,
+                self.model(element, item, reads_l | reads_r),
+                (element.local_id, RESULT_PIN),
+                from_rail=not en,
+            )
             return
         values: dict[str, str | list] = {}
         reads: set[int] = set()
@@ -394,26 +460,45 @@ class LdImporter:
                 continue
             mods = element.mods.get(pin)
             if mods and mods.edge and not self.edge_pin(element, pin, mods.edge):
-                self.error(f"pin {pin} has an edge modifier, which an LD box cannot hold; it is ignored", element,
-                           network=self.network_id, severity="warning")
+                self.error(
+                    f"pin {pin} has an edge modifier, which an LD box cannot hold; it is ignored",
+                    element,
+                    network=self.network_id,
+                    severity="warning",
+                )
             if all(self.is_power(c) for c in conns):
                 net.side_points[(element.local_id, pin)] = self.point(conns, net, element)
                 values[pin] = []
                 continue
             found = self.text(conns[0], element.local_id) if len(conns) == 1 else None
             if found is None:
-                self.error(f"input {pin} is fed by something that is neither a value nor the power flow",
-                           element, network=self.network_id)
+                self.error(
+                    f"input {pin} is fed by something that is neither a value nor the power flow",
+                    element,
+                    network=self.network_id,
+                )
                 continue
             text, more = found
             values[pin] = negate(text) if mods and mods.negated else text
             reads |= more
-        item = Box(id=self.take_id(element, "box"), call=element.node.get("typeName", ""),
-                   instance=element.node.get("instanceName") or None, inputs=values, outputs={}, en=plan.en)
+        item = Box(
+            id=self.take_id(element, "box"),
+            call=element.node.get("typeName", ""),
+            instance=element.node.get("instanceName") or None,
+            inputs=values,
+            outputs={},
+            en=plan.en,
+        )
         self.box_of[id(item)] = element.local_id
         conns = [] if plan.virtual_en else inputs.get(plan.power_in, [])
-        self.power_edge(element, net, conns, self.model(element, item, reads), (element.local_id, plan.power_out),
-                        from_rail=plan.virtual_en)
+        self.power_edge(
+            element,
+            net,
+            conns,
+            self.model(element, item, reads),
+            (element.local_id, plan.power_out),
+            from_rail=plan.virtual_en,
+        )
 
     def edge_pin(self, element: Element, pin: str, edge: str) -> bool:
         """A rising modifier on a pin that is R_EDGE already (CTU.CU) changes nothing."""
@@ -421,14 +506,26 @@ class LdImporter:
         declared = next((p.edge for p in block.inputs if p.name == pin.upper()), None) if block else None
         return edge == "rising" and declared == "R_EDGE"
 
-    def power_edge(self, element: Element, net: _Net, conns: list[Conn], item: LdElement,
-                   out: tuple[int, str | None] | None, *, sink: int | None = None, from_rail: bool = False) -> None:
+    def power_edge(
+        self,
+        element: Element,
+        net: _Net,
+        conns: list[Conn],
+        item: LdElement,
+        out: tuple[int, str | None] | None,
+        *,
+        sink: int | None = None,
+        from_rail: bool = False,
+    ) -> None:
         """The element as an edge from the point feeding it to its output point (or to ``sink``)."""
         if from_rail:
             start = S
         elif not conns:
-            self.error("this element has no power input; it is read as fed from the left rail", element,
-                       network=self.network_id)
+            self.error(
+                "this element has no power input; it is read as fed from the left rail",
+                element,
+                network=self.network_id,
+            )
             start = S
         else:
             start = self.point(conns, net, element)
@@ -460,8 +557,9 @@ class LdImporter:
         if key not in net.virtual:
             found = self.text(conn, consumer.local_id)
             if found is None:
-                self.error(f"{source.tag} {source.local_id} cannot feed the power flow", consumer,
-                           network=self.network_id)
+                self.error(
+                    f"{source.tag} {source.local_id} cannot feed the power flow", consumer, network=self.network_id
+                )
                 found = ("FALSE", set())
             text, reads = found
             mods = source.mods.get("")
@@ -508,15 +606,20 @@ class LdImporter:
             box = self.models[local_id]
             side, edges = self.side_region(edges, point)
             if side is None:
-                self.error(f"input {pin} is fed by contacts that also feed other elements; LD boxes take a "
-                           "series list of their own", self.graph.elements[local_id], network=self.network_id)
+                self.error(
+                    f"input {pin} is fed by contacts that also feed other elements; LD boxes take a "
+                    "series list of their own",
+                    self.graph.elements[local_id],
+                    network=self.network_id,
+                )
                 box.inputs.pop(pin, None)
                 continue
             box.inputs[pin] = self.tree(self.sp(side, S, point, local_id, f"input {pin} is left unconnected"))
         if not edges:
             return []
-        return self.tree(self.sp(edges, S, T, None, "the network is left empty",
-                                 ends=[end for _, end in sorted(net.ends)]))
+        return self.tree(
+            self.sp(edges, S, T, None, "the network is left empty", ends=[end for _, end in sorted(net.ends)])
+        )
 
     def side_region(self, edges: list[Edge], point: int) -> tuple[list[Edge] | None, list[Edge]]:
         """The edges feeding only ``point`` (a box input's own contact chain) and the rest."""
@@ -536,16 +639,22 @@ class LdImporter:
             return None, edges
         return side, [e for e in edges if e.v not in feeding]
 
-    def sp(self, edges: list[Edge], source: int, sink: int, owner: int | None, outcome: str,
-           ends: list[int] = ()) -> list:
+    def sp(
+        self, edges: list[Edge], source: int, sink: int, owner: int | None, outcome: str, ends: list[int] = ()
+    ) -> list:
         """The series list of a rung (or of a box input's chain); a bridge is reported and gives nothing."""
         try:
             return reduce_graph(edges, source, sink, lambda item: self.keys[id(item)], ends)
         except NotSeriesParallel as err:
             names = ", ".join(sorted({self.name_of(item) for item in err.items}))
             where = self.graph.elements[owner] if owner is not None else None
-            self.error(f"the rung is not series-parallel (a bridge): {names} cannot be written as series and "
-                       f"parallel branches; {outcome}", where, network=self.network_id, code="PLCOPEN-LD-BRIDGE")
+            self.error(
+                f"the rung is not series-parallel (a bridge): {names} cannot be written as series and "
+                f"parallel branches; {outcome}",
+                where,
+                network=self.network_id,
+                code="PLCOPEN-LD-BRIDGE",
+            )
             return []
 
     def name_of(self, item: LdElement) -> str:
@@ -568,8 +677,11 @@ class LdImporter:
 
     def parallel_id(self, branches: list[list[LdElement]], depth: int) -> str:
         """The id LadderLab wrote for this parallel when all its elements agree on it (``parallels`` paths)."""
-        wanted = {path[depth] if len(path) > depth else None
-                  for item in _leaves(branches, sides=False) for path in [self.paths.get(id(item), [])]}
+        wanted = {
+            path[depth] if len(path) > depth else None
+            for item in _leaves(branches, sides=False)
+            for path in [self.paths.get(id(item), [])]
+        }
         return self.ids.take(wanted.pop() if len(wanted) == 1 else None, "par")
 
     def order_branches(self, branches: list[list[LdElement]]) -> list[list[LdElement]]:
@@ -577,8 +689,7 @@ class LdImporter:
         reads = [set().union(*(self.reads.get(id(i), set()) for i in _leaves([b]))) for b in branches]
         order, left = [], list(range(len(branches)))
         while left:
-            pick = next((i for i in left if not reads[i] & set().union(*(writes[j] for j in left if j != i))),
-                        left[0])
+            pick = next((i for i in left if not reads[i] & set().union(*(writes[j] for j in left if j != i))), left[0])
             order.append(pick)
             left.remove(pick)
         return [branches[i] for i in order]
@@ -598,8 +709,11 @@ def _leaves(branches: list[list[LdElement]], *, sides: bool = True):
 
 def ld_groups(graph: Graph) -> list[NetworkGroup]:
     """Networks of a foreign LD drawing: its connected parts (rails do not connect them), top to bottom."""
-    flow = [m for m in graph.order
-            if graph.elements[m].tag not in ("leftPowerRail", "rightPowerRail", "label", "comment", "error")]
+    flow = [
+        m
+        for m in graph.order
+        if graph.elements[m].tag not in ("leftPowerRail", "rightPowerRail", "label", "comment", "error")
+    ]
     parent = {m: m for m in flow}
 
     def find(m: int) -> int:

@@ -205,8 +205,9 @@ class _Reducer:
         return changed
 
     @staticmethod
-    def merge_series(graph: dict[int, Edge], counter: list[int], source: int, sink: int,
-                     marks: dict[int, list[list[Any]]]) -> bool:
+    def merge_series(
+        graph: dict[int, Edge], counter: list[int], source: int, sink: int, marks: dict[int, list[list[Any]]]
+    ) -> bool:
         """Merge one maximal chain of points with one edge in and one out; a marked point leaves its mark."""
         ins: dict[int, list[int]] = defaultdict(list)
         outs: dict[int, list[int]] = defaultdict(list)
@@ -244,7 +245,7 @@ class _Reducer:
         out: list[Any] = []
         for i, item in enumerate(items):
             if isinstance(item, _Mark):
-                return out + self.parallel([*(self.resolve(b) for b in item.branches), self.resolve(items[i + 1:])])
+                return out + self.parallel([*(self.resolve(b) for b in item.branches), self.resolve(items[i + 1 :])])
             if isinstance(item, Par):
                 out += self.parallel([self.resolve(b) for b in item.branches])
             else:

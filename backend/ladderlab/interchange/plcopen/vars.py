@@ -19,16 +19,52 @@ from ...st.printer import print_expression
 from .xml_io import Reader, formatted_text, info, ladderlab_data, local, sub, text_content
 
 #: Elementary types the XSD names directly (TIME_OF_DAY and DATE_AND_TIME are spelled TOD and DT there).
-XSD_ELEMENTARY = ("BOOL", "BYTE", "WORD", "DWORD", "LWORD", "SINT", "INT", "DINT", "LINT", "USINT", "UINT", "UDINT",
-                  "ULINT", "REAL", "LREAL", "TIME", "DATE", "DT", "TOD")
+XSD_ELEMENTARY = (
+    "BOOL",
+    "BYTE",
+    "WORD",
+    "DWORD",
+    "LWORD",
+    "SINT",
+    "INT",
+    "DINT",
+    "LINT",
+    "USINT",
+    "UINT",
+    "UDINT",
+    "ULINT",
+    "REAL",
+    "LREAL",
+    "TIME",
+    "DATE",
+    "DT",
+    "TOD",
+)
 _XSD_SPELLING = {"TIME_OF_DAY": "TOD", "DATE_AND_TIME": "DT"}
-_GENERIC = ("ANY", "ANY_DERIVED", "ANY_ELEMENTARY", "ANY_MAGNITUDE", "ANY_NUM", "ANY_REAL", "ANY_INT", "ANY_BIT",
-            "ANY_STRING", "ANY_DATE")
+_GENERIC = (
+    "ANY",
+    "ANY_DERIVED",
+    "ANY_ELEMENTARY",
+    "ANY_MAGNITUDE",
+    "ANY_NUM",
+    "ANY_REAL",
+    "ANY_INT",
+    "ANY_BIT",
+    "ANY_STRING",
+    "ANY_DATE",
+)
 
 #: VAR block keyword <-> interface list element.
-LIST_BY_KIND = {"VAR": "localVars", "VAR_TEMP": "tempVars", "VAR_INPUT": "inputVars", "VAR_OUTPUT": "outputVars",
-                "VAR_IN_OUT": "inOutVars", "VAR_EXTERNAL": "externalVars", "VAR_GLOBAL": "globalVars",
-                "VAR_ACCESS": "accessVars"}
+LIST_BY_KIND = {
+    "VAR": "localVars",
+    "VAR_TEMP": "tempVars",
+    "VAR_INPUT": "inputVars",
+    "VAR_OUTPUT": "outputVars",
+    "VAR_IN_OUT": "inOutVars",
+    "VAR_EXTERNAL": "externalVars",
+    "VAR_GLOBAL": "globalVars",
+    "VAR_ACCESS": "accessVars",
+}
 KIND_BY_LIST = {v: k for k, v in LIST_BY_KIND.items()}
 #: VAR block qualifier <-> varList boolean attribute.
 _QUALIFIERS = {"CONSTANT": "constant", "RETAIN": "retain", "NON_RETAIN": "nonretain", "PERSISTENT": "persistent"}
@@ -66,8 +102,11 @@ def write_type(parent: ET.Element, spec: ast.TypeSpec) -> None:
     elif isinstance(spec, ast.EnumType):
         values = sub(sub(parent, "enum"), "values")
         for value in spec.values:
-            sub(values, "value", {"name": value.name,
-                                  "value": None if value.value is None else print_expression(value.value)})
+            sub(
+                values,
+                "value",
+                {"name": value.name, "value": None if value.value is None else print_expression(value.value)},
+            )
     elif isinstance(spec, ast.StructType):
         node = sub(parent, "struct")
         for decl in spec.members:
@@ -185,9 +224,10 @@ class VarReader:
         if tag == "pointer":
             return ast.PointerType("REF_TO", self.type(self.reader.child(choice, "baseType")))
         if tag == "enum":
-            values = [ast.EnumValue(v.get("name", ""),
-                                    self.expression(v.get("value"), v) if v.get("value") else None)
-                      for v in self.reader.children(self.reader.child(choice, "values"), "value")]
+            values = [
+                ast.EnumValue(v.get("name", ""), self.expression(v.get("value"), v) if v.get("value") else None)
+                for v in self.reader.children(self.reader.child(choice, "values"), "value")
+            ]
             return ast.EnumType(values)
         if tag == "struct":
             return ast.StructType(self.declarations(choice))
@@ -224,9 +264,12 @@ class VarReader:
             name = variable.get("name") or None
             address = variable.get("address") or None
             extra = info(variable, self.reader)
-            decl = ast.VarDecl([ast.DeclName(name, address)], self.type(self.reader.child(variable, "type")),
-                               self.value(self.reader.child(variable, "initialValue")),
-                               extra.get("edge") if extra is not None else None)
+            decl = ast.VarDecl(
+                [ast.DeclName(name, address)],
+                self.type(self.reader.child(variable, "type")),
+                self.value(self.reader.child(variable, "initialValue")),
+                extra.get("edge") if extra is not None else None,
+            )
             comment = text_content(self.reader.child(variable, "documentation")).strip()
             decl.comment = comment or None
             decls.append(decl)
@@ -237,5 +280,8 @@ class VarReader:
         return ast.VarBlock(kind or KIND_BY_LIST[local(var_list)], qualifiers, self.declarations(var_list))
 
     def data_type(self, element: ET.Element) -> ast.TypeDecl:
-        return ast.TypeDecl(element.get("name", ""), self.type(self.reader.child(element, "baseType")),
-                            self.value(self.reader.child(element, "initialValue")))
+        return ast.TypeDecl(
+            element.get("name", ""),
+            self.type(self.reader.child(element, "baseType")),
+            self.value(self.reader.child(element, "initialValue")),
+        )

@@ -69,13 +69,15 @@ def formatted_text(parent: ET.Element, tag: str, text: str) -> ET.Element:
     return holder
 
 
-def ladderlab_data(element: ET.Element, attrib: dict[str, object] | None = None,
-                   texts: dict[str, str] | None = None) -> ET.Element:
+def ladderlab_data(
+    element: ET.Element, attrib: dict[str, object] | None = None, texts: dict[str, str] | None = None
+) -> ET.Element:
     """Append ``<addData>`` with LadderLab's ``<ll:info attr...>`` (and ``<ll:name>text</ll:name>`` children)."""
     add = sub(element, "addData")
     data = sub(add, "data", {"name": LADDERLAB_DATA, "handleUnknown": "discard"})
-    info = ET.SubElement(data, f"{{{LADDERLAB_NS}}}info",
-                         {k: _attr(v) for k, v in (attrib or {}).items() if v is not None})
+    info = ET.SubElement(
+        data, f"{{{LADDERLAB_NS}}}info", {k: _attr(v) for k, v in (attrib or {}).items() if v is not None}
+    )
     for name, text in (texts or {}).items():
         ET.SubElement(info, f"{{{LADDERLAB_NS}}}{name}").text = text
     return add
@@ -135,10 +137,29 @@ class Reader:
     def line(self, element: ET.Element | None) -> int | None:
         return None if element is None else self.parsed.line(element)
 
-    def report(self, code: str, message: str, element: ET.Element | None = None, *, severity: str = "error",
-               pou: str | None = None, network: str | None = None, item: str | None = None) -> None:
-        self.diagnostics.append(Diagnostic(severity=severity, code=code, message=message, file=self.file,
-                                           line=self.line(element), pou=pou, network=network, element=item))
+    def report(
+        self,
+        code: str,
+        message: str,
+        element: ET.Element | None = None,
+        *,
+        severity: str = "error",
+        pou: str | None = None,
+        network: str | None = None,
+        item: str | None = None,
+    ) -> None:
+        self.diagnostics.append(
+            Diagnostic(
+                severity=severity,
+                code=code,
+                message=message,
+                file=self.file,
+                line=self.line(element),
+                pou=pou,
+                network=network,
+                element=item,
+            )
+        )
 
 
 def text_content(element: ET.Element | None) -> str:
@@ -180,5 +201,9 @@ def canonical(element: ET.Element) -> tuple:
 
     Compares an element LadderLab would write (unqualified tags) with one read from a file (qualified tags).
     """
-    return (local(element), tuple(sorted(element.attrib.items())), (element.text or "").strip(),
-            tuple(canonical(c) for c in element if isinstance(c.tag, str)))
+    return (
+        local(element),
+        tuple(sorted(element.attrib.items())),
+        (element.text or "").strip(),
+        tuple(canonical(c) for c in element if isinstance(c.tag, str)),
+    )

@@ -59,9 +59,13 @@ class _LineRecorder(ET.TreeBuilder):
 def parse_untrusted_xml(data: bytes, *, file: str | None = None, max_bytes: int = MAX_XML_BYTES) -> ParsedXml:
     """Parse ``data`` safely; raises ``XmlInputError`` for oversize, hostile or malformed documents."""
     if len(data) > max_bytes:
-        raise XmlInputError(Diagnostic(
-            code="XML-TOO-LARGE", file=file,
-            message=f"the document is {len(data):,} bytes; documents over {max_bytes:,} bytes are refused unread"))
+        raise XmlInputError(
+            Diagnostic(
+                code="XML-TOO-LARGE",
+                file=file,
+                message=f"the document is {len(data):,} bytes; documents over {max_bytes:,} bytes are refused unread",
+            )
+        )
     builder = _LineRecorder()
     parser = DefusedXMLParser(target=builder, forbid_dtd=False, forbid_entities=True, forbid_external=True)
     builder.expat = parser.parser
@@ -70,21 +74,46 @@ def parse_untrusted_xml(data: bytes, *, file: str | None = None, max_bytes: int 
         parser.feed(data)
         root = parser.close()
     except EntitiesForbidden as err:
-        raise XmlInputError(_refusal(
-            "XML-ENTITY", f"the document declares the entity '{err.name}'; entity declarations are refused "
-            "(they allow entity-expansion and external-entity attacks)", builder, file)) from err
+        raise XmlInputError(
+            _refusal(
+                "XML-ENTITY",
+                f"the document declares the entity '{err.name}'; entity declarations are refused "
+                "(they allow entity-expansion and external-entity attacks)",
+                builder,
+                file,
+            )
+        ) from err
     except ExternalReferenceForbidden as err:
-        raise XmlInputError(_refusal(
-            "XML-EXTERNAL", f"the document refers to the external resource '{err.sysid}'; external "
-            "entities and DTDs are never fetched", builder, file)) from err
+        raise XmlInputError(
+            _refusal(
+                "XML-EXTERNAL",
+                f"the document refers to the external resource '{err.sysid}'; external "
+                "entities and DTDs are never fetched",
+                builder,
+                file,
+            )
+        ) from err
     except DTDForbidden as err:
-        raise XmlInputError(_refusal(
-            "XML-EXTERNAL", f"the document type declaration names the external DTD '{err.sysid or err.pubid}'; "
-            "external DTDs are never fetched", builder, file)) from err
+        raise XmlInputError(
+            _refusal(
+                "XML-EXTERNAL",
+                f"the document type declaration names the external DTD '{err.sysid or err.pubid}'; "
+                "external DTDs are never fetched",
+                builder,
+                file,
+            )
+        ) from err
     except ET.ParseError as err:
         line, column = err.position
-        raise XmlInputError(Diagnostic(code="XML-SYNTAX", file=file, line=line, column=column + 1,
-                                       message=f"not well-formed XML: {_reason(err)}")) from err
+        raise XmlInputError(
+            Diagnostic(
+                code="XML-SYNTAX",
+                file=file,
+                line=line,
+                column=column + 1,
+                message=f"not well-formed XML: {_reason(err)}",
+            )
+        ) from err
     return ParsedXml(root, builder.lines)
 
 

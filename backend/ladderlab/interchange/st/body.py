@@ -49,8 +49,12 @@ def body_lines(networks: list[Network], labels: dict[str, int], declarations: De
 
 
 def _jumps(networks: list[Network], labels: dict[str, int]) -> list[tuple[int, int]]:
-    return [(index, labels[label]) for index, network in enumerate(networks)
-            for label, _ in network.controls if label is not None]
+    return [
+        (index, labels[label])
+        for index, network in enumerate(networks)
+        for label, _ in network.controls
+        if label is not None
+    ]
 
 
 def _structured(networks: list[Network], labels: dict[str, int]) -> bool:
@@ -73,8 +77,7 @@ def _printed(statements: list[Any], level: int, network: str, element: str | Non
     return [Line(text, network, element) for text in print_statements(statements, level).splitlines()]
 
 
-def _structured_lines(networks: list[Network], labels: dict[str, int], start: int, stop: int,
-                      level: int) -> list[Line]:
+def _structured_lines(networks: list[Network], labels: dict[str, int], start: int, stop: int, level: int) -> list[Line]:
     """Networks ``start`` .. ``stop - 1``; a forward jump wraps the networks it skips in ``IF NOT cond``."""
     lines: list[Line] = []
     index = start
@@ -93,9 +96,17 @@ def _structured_lines(networks: list[Network], labels: dict[str, int], start: in
         if target == index:
             continue  # to the next network: nothing is skipped
         if condition is None:  # always taken: the networks in between never run
-            lines += [Line(INDENT * level + comment(f"Networks {', '.join(n.id for n in networks[index:target])} "
-                                                   f"never run: the jump in network {network.id} always skips them"),
-                           network.id, element)]
+            lines += [
+                Line(
+                    INDENT * level
+                    + comment(
+                        f"Networks {', '.join(n.id for n in networks[index:target])} "
+                        f"never run: the jump in network {network.id} always skips them"
+                    ),
+                    network.id,
+                    element,
+                )
+            ]
         else:
             lines += _printed_header(ast.Unary("NOT", condition), level, network.id, element)
             lines += _structured_lines(networks, labels, index, target, level + 1)

@@ -111,13 +111,17 @@ class PouScope:
             statements = [write] if power == TRUE else [ast.If([(power, [write])])]
         elif not self.is_function:
             trigger = self.declarations.declare(f"{element}_trig", "R_TRIG" if mode == "p" else "F_TRIG", "VAR")
-            statements = [ast.CallStmt(ast.Call(ast.Name(trigger), [ast.Arg("CLK", power)])),
-                          ast.Assign(target, ast.Member(ast.Name(trigger), "Q"))]
+            statements = [
+                ast.CallStmt(ast.Call(ast.Name(trigger), [ast.Arg("CLK", power)])),
+                ast.Assign(target, ast.Member(ast.Name(trigger), "Q")),
+            ]
             writes.add(trigger.upper())
         else:
             memory = self.declarations.declare(f"{element}_mem", "BOOL", "VAR")
-            statements = [ast.Assign(target, _edge(mode == "p", power, ast.Name(memory))),
-                          ast.Assign(ast.Name(memory), power)]
+            statements = [
+                ast.Assign(target, _edge(mode == "p", power, ast.Name(memory))),
+                ast.Assign(ast.Name(memory), power),
+            ]
             writes.add(memory.upper())
         if guard is not None and guard != TRUE:
             statements = [ast.If([(guard, statements)])]
@@ -131,9 +135,18 @@ class PouScope:
         names = [root_name(t) for t in targets] + ([root_name(instance)] if instance is not None else [])
         return frozenset(n for n in names if n is not None)
 
-    def call(self, code: NetworkCode, callee: Callee, instance: Any, inputs: dict[str, Any],
-             outputs: dict[str, Any], en: Any, element: str, target: Any = None,
-             eno_hint: str | None = None) -> Value | None:
+    def call(
+        self,
+        code: NetworkCode,
+        callee: Callee,
+        instance: Any,
+        inputs: dict[str, Any],
+        outputs: dict[str, Any],
+        en: Any,
+        element: str,
+        target: Any = None,
+        eno_hint: str | None = None,
+    ) -> Value | None:
         """Emit a box: ``inputs``/``outputs`` by upper-case pin, ``en`` the EN value or None (no EN).
 
         A function's result goes to ``target`` (None: discarded). Returns the box's ENO as a value when it can
@@ -154,16 +167,25 @@ class PouScope:
         flagged = _result(target, ast.Call(name, [*args, ast.Arg("ENO", ast.Name(eno), output=True)]))
         full = flagged if en == TRUE else [ast.If([(en, flagged)], [ast.Assign(ast.Name(eno), FALSE)])]
         eno_value = Value(ast.Name(eno), element, eno)
-        code.step(full, element, writes | {eno.upper()} if writes is not None else None, optional=eno_value,
-                  without=_guard(en, _result(target, ast.Call(name, args))), declare=(eno, "BOOL", "VAR_TEMP"))
+        code.step(
+            full,
+            element,
+            writes | {eno.upper()} if writes is not None else None,
+            optional=eno_value,
+            without=_guard(en, _result(target, ast.Call(name, args))),
+            declare=(eno, "BOOL", "VAR_TEMP"),
+        )
         code.ops.append(eno_value)
         return eno_value
 
 
 def _edge(rising: bool, clock: Any, memory: ast.Name) -> Any:
     """``clock AND NOT m`` (rising) / ``m AND NOT clock`` (falling): ir/power.py's edge on a BOOL memory."""
-    return ast.Binary("AND", clock, ast.Unary("NOT", memory)) if rising else \
-        ast.Binary("AND", memory, ast.Unary("NOT", clock))
+    return (
+        ast.Binary("AND", clock, ast.Unary("NOT", memory))
+        if rising
+        else ast.Binary("AND", memory, ast.Unary("NOT", clock))
+    )
 
 
 def _guard(en: Any, body: list[Any]) -> list[Any]:
@@ -175,4 +197,3 @@ def _result(target: Any, call: Any) -> list[Any]:
     if target is not None:
         return [ast.Assign(target, call)]
     return [ast.CallStmt(call)] if isinstance(call, ast.Call) else []
-

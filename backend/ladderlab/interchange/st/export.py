@@ -70,8 +70,9 @@ class ExportedPou:
 def st_pou(project: Project, pou: Pou, checked: CheckResult) -> ExportedPou:
     """The ST version of the diagram POU ``pou``, or diagnostics saying why it cannot be exported."""
     info = checked.pou(pou.name)
-    diagnostics: list[Diagnostic] = [d for d in checked.diagnostics
-                                     if d.pou is None or d.pou.upper() == pou.name.upper()]
+    diagnostics: list[Diagnostic] = [
+        d for d in checked.diagnostics if d.pou is None or d.pou.upper() == pou.name.upper()
+    ]
     if info is None or has_errors(diagnostics):
         return ExportedPou(None, [], _refused(pou, diagnostics))
     lowered = lower_pou(pou, info, checked, diagnostics)
@@ -89,11 +90,21 @@ def st_pou(project: Project, pou: Pou, checked: CheckResult) -> ExportedPou:
     labels = {canonical_label(n.label): index for index, n in enumerate(pou.body.networks) if n.label}
     lines = body_lines(networks, labels, declarations)
     body = "\n".join(line.text for line in lines)
-    source_map = [(number, line.network, line.element) for number, line in enumerate(lines, 1)
-                  if line.network is not None]
-    return ExportedPou(Pou(name=pou.name, kind=pou.kind, language="st", return_type=pou.return_type,
-                           declarations=_declarations(pou.declarations, declarations), body=body),
-                       source_map, [d for d in diagnostics if d.severity != "error"])
+    source_map = [
+        (number, line.network, line.element) for number, line in enumerate(lines, 1) if line.network is not None
+    ]
+    return ExportedPou(
+        Pou(
+            name=pou.name,
+            kind=pou.kind,
+            language="st",
+            return_type=pou.return_type,
+            declarations=_declarations(pou.declarations, declarations),
+            body=body,
+        ),
+        source_map,
+        [d for d in diagnostics if d.severity != "error"],
+    )
 
 
 def _declarations(user: str, declarations: Declarations) -> str:
@@ -109,15 +120,27 @@ def _declarations(user: str, declarations: Declarations) -> str:
 
 
 def _refused(pou: Pou, diagnostics: list[Diagnostic]) -> list[Diagnostic]:
-    return diagnostics + [Diagnostic(code="EXPORT-INVALID", pou=pou.name, message=f"{pou.name} has errors: fix them "
-                                     "before exporting it as ST")]
+    return diagnostics + [
+        Diagnostic(
+            code="EXPORT-INVALID", pou=pou.name, message=f"{pou.name} has errors: fix them before exporting it as ST"
+        )
+    ]
 
 
 def verify(project: Project, exported: Pou) -> list[Diagnostic]:
     """The exported POU in place of the diagram must check without errors; else say so (never silently)."""
-    replaced = project.model_copy(update={"pous": [exported if p.name == exported.name else p
-                                                   for p in project.pous]})
-    problems = [d for d in check_project(replaced).diagnostics
-                if d.severity == "error" and (d.pou or "").upper() == exported.name.upper()]
-    return [Diagnostic(code="EXPORT-INTERNAL", pou=exported.name, severity="error",
-                       message=f"the exported ST of {exported.name} does not check: {d.format()}") for d in problems]
+    replaced = project.model_copy(update={"pous": [exported if p.name == exported.name else p for p in project.pous]})
+    problems = [
+        d
+        for d in check_project(replaced).diagnostics
+        if d.severity == "error" and (d.pou or "").upper() == exported.name.upper()
+    ]
+    return [
+        Diagnostic(
+            code="EXPORT-INTERNAL",
+            pou=exported.name,
+            severity="error",
+            message=f"the exported ST of {exported.name} does not check: {d.format()}",
+        )
+        for d in problems
+    ]

@@ -49,8 +49,9 @@ class _Network:
         self.values: dict[tuple[str, str], PinValue] = {}
         self.enables: dict[str, PinValue] = {}
         self.result_types = _result_types(lowered, network.id)
-        self.written = {name for node in graph.nodes.values() if isinstance(node, fbd.OutputNode)
-                        for name in root_names(node.var)}
+        self.written = {
+            name for node in graph.nodes.values() if isinstance(node, fbd.OutputNode) for name in root_names(node.var)
+        }
         self.consumed = {(s.node, s.pin) for sources in graph.inputs.values() for s in sources.values()}
         graph.visit(self)
 
@@ -75,8 +76,12 @@ class _Network:
             return Text(ast.Unary("NOT", pin) if flags is not None and flags.negated else pin)
         for consumer, sources in self.graph.inputs.items():
             target, fed = self.graph.nodes[consumer], sources.get("IN")
-            if isinstance(target, fbd.OutputNode) and target.mode == "normal" and fed is not None \
-                    and (fed.node, fed.pin) == (source.node, source.pin):
+            if (
+                isinstance(target, fbd.OutputNode)
+                and target.mode == "normal"
+                and fed is not None
+                and (fed.node, fed.pin) == (source.node, source.pin)
+            ):
                 return Text(operand(target.var))
         raise ValueError(f"feedback from {source.node}.{source.pin} without a variable")  # refused by the lowering
 
@@ -91,8 +96,7 @@ class _Network:
         expr = operand(node.expr)
         if self.written & set(_variables(expr)):
             checked, _ = check_operand(self.scope.checked, self.scope.info.name, node.expr)
-            self.values[(node.id, "OUT")] = self.code.value(expr, node.id, node.id, type=str(checked.ty),
-                                                            pinned=True)
+            self.values[(node.id, "OUT")] = self.code.value(expr, node.id, node.id, type=str(checked.ty), pinned=True)
         else:
             self.values[(node.id, "OUT")] = Text(expr)
 
@@ -152,8 +156,17 @@ class _Network:
             if (node.id, "OUT") in self.consumed:
                 target = ast.Name(scope.declarations.declare(f"{node.id}_OUT", self.result_type(node, callee), "VAR"))
                 pins["OUT"] = Text(target)
-            eno = scope.call(code, callee, None, args, {}, guard, node.id, target,
-                             eno_hint=node.id if (node.id, "ENO") in self.consumed else None)
+            eno = scope.call(
+                code,
+                callee,
+                None,
+                args,
+                {},
+                guard,
+                node.id,
+                target,
+                eno_hint=node.id if (node.id, "ENO") in self.consumed else None,
+            )
             pins["ENO"] = eno if eno is not None else en
         if en is not None:
             self.enables[node.id] = en
@@ -218,6 +231,7 @@ def _result_types(lowered: ir.Pou, network: str) -> dict[str, irt.IrType]:
             elif isinstance(s, ir.If):
                 for _, body in s.branches:
                     visit(body)
+
     for block in lowered.blocks:
         if block.origin.network == network:
             visit(block.statements)

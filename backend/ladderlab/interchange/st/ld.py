@@ -96,8 +96,8 @@ class _Rung:
         reaching = [out for branch in element.branches if (out := self.series(branch, power)) is not None]
         if not reaching:
             return Power(self.code.value(ast.BoolLit(False), element.id, element.id))
-        if all(out.base is power.base and out.terms[:len(power.terms)] == power.terms for out in reaching):
-            extras = [out.terms[len(power.terms):] for out in reaching]
+        if all(out.base is power.base and out.terms[: len(power.terms)] == power.terms for out in reaching):
+            extras = [out.terms[len(power.terms) :] for out in reaching]
             if any(not extra for extra in extras):  # power OR (power AND x) = power
                 return power
             branches = disjunction([conjunction([Use(term) for term in extra]) for extra in extras])
@@ -113,8 +113,9 @@ class _Rung:
         inputs: dict[str, Any] = {}
         for pin in sorted(box.inputs, key=lambda p: callee.rank(p.upper())):
             value = box.inputs[pin]
-            inputs[pin.upper()] = self.expr(self.series(value, Power()), box.id) if isinstance(value, list) \
-                else operand(value)
+            inputs[pin.upper()] = (
+                self.expr(self.series(value, Power()), box.id) if isinstance(value, list) else operand(value)
+            )
         outputs = {pin.upper(): operand(text) for pin, text in box.outputs.items()}
         target = outputs.pop("OUT", None) if not callee.is_fb else None
         instance = operand(box.instance) if callee.is_fb else None
@@ -128,8 +129,7 @@ class _Rung:
         if not callee.is_fb and target is None and not box.en and callee.pou is None:
             return Power(code.value(function_call(callee, inputs), box.id, box.id))
         if not callee.is_fb and target is None and not box.en:  # a user function: run where the box is
-            return Power(code.value(function_call(callee, inputs), box.id, box.id,
-                                    effect=True))
+            return Power(code.value(function_call(callee, inputs), box.id, box.id, effect=True))
         eno = scope.call(code, callee, instance, inputs, outputs, en, box.id, target, eno_hint=box.id)
         if box.en:
             return Power(eno) if eno is not None else Power(enable)
@@ -137,4 +137,3 @@ class _Rung:
             pin = callee.bool_outputs()[0]
             return Power(code.value(output_pin(callee, instance, pin), box.id, box.id))
         return Power(code.value(target, box.id, box.id))
-

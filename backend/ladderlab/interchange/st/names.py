@@ -27,7 +27,7 @@ def identifier(hint: str) -> str:
     text = _NOT_IDENTIFIER.sub("_", hint).strip("_") or "x"
     if text[0].isdigit():
         text = "n" + text
-    return text[:MAX_NAME_LENGTH - 8].rstrip("_")
+    return text[: MAX_NAME_LENGTH - 8].rstrip("_")
 
 
 @lru_cache(maxsize=4096)

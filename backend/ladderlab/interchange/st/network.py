@@ -107,8 +107,7 @@ class NetworkCode:
         self.ops.append(value)
         return value
 
-    def step(self, statements: list[Any], element: str | None, writes: frozenset[str] | None,
-             **optional: Any) -> Step:
+    def step(self, statements: list[Any], element: str | None, writes: frozenset[str] | None, **optional: Any) -> Step:
         step = Step(statements, element, writes, **optional)
         self.ops.append(step)
         return step
@@ -133,8 +132,11 @@ def plan(code: NetworkCode, declarations: Declarations) -> Planned:
     for control in code.controls:
         if control.cond is not None:
             users[id(control.cond)].append(control)
-    effects = [(position[id(op)], op.writes if isinstance(op, Step) else None) for op in code.ops
-               if isinstance(op, Step) or op.effect]
+    effects = [
+        (position[id(op)], op.writes if isinstance(op, Step) else None)
+        for op in code.ops
+        if isinstance(op, Step) or op.effect
+    ]
     final: dict[int, int] = {}  # value -> where its expression is finally evaluated
     inline: set[int] = set()
 
@@ -171,7 +173,8 @@ def plan(code: NetworkCode, declarations: Declarations) -> Planned:
 
     def resolve(node: Any) -> Any:
         return without_double_not(
-            substitute(node, lambda value: temps[id(value)] if id(value) in temps else resolve(value.expr)))
+            substitute(node, lambda value: temps[id(value)] if id(value) in temps else resolve(value.expr))
+        )
 
     statements: list[tuple[str | None, ast.Stmt]] = []
     for op in code.ops:
@@ -205,8 +208,11 @@ def substitute(node: Any, replace: Any) -> Any:
     if isinstance(node, tuple):
         return tuple(substitute(item, replace) for item in node)
     if dataclasses.is_dataclass(node) and not isinstance(node, (ast.Span, Value)):
-        changes = {f.name: substitute(getattr(node, f.name), replace) for f in dataclasses.fields(node)
-                   if f.name not in ("span", "ty", "ref")}
+        changes = {
+            f.name: substitute(getattr(node, f.name), replace)
+            for f in dataclasses.fields(node)
+            if f.name not in ("span", "ty", "ref")
+        }
         return dataclasses.replace(node, **changes)
     return node
 
@@ -214,8 +220,12 @@ def substitute(node: Any, replace: Any) -> Any:
 def without_double_not(node: Any) -> Any:
     """``NOT NOT x`` -> ``x`` (a negated pin fed by a negated value; NOT is its own inverse on BOOL and bits),
     ``NOT TRUE`` -> ``FALSE`` (a negated coil on the left rail)."""
-    if isinstance(node, ast.Unary) and node.op == "NOT" and isinstance(node.operand, ast.Unary) \
-            and node.operand.op == "NOT":
+    if (
+        isinstance(node, ast.Unary)
+        and node.op == "NOT"
+        and isinstance(node.operand, ast.Unary)
+        and node.operand.op == "NOT"
+    ):
         return without_double_not(node.operand.operand)
     if isinstance(node, ast.Unary) and node.op == "NOT" and isinstance(node.operand, ast.BoolLit):
         return ast.BoolLit(not node.operand.value)
@@ -224,8 +234,11 @@ def without_double_not(node: Any) -> Any:
     if isinstance(node, tuple):
         return tuple(without_double_not(item) for item in node)
     if dataclasses.is_dataclass(node) and not isinstance(node, (ast.Span, Value, Use)):
-        changes = {f.name: without_double_not(getattr(node, f.name)) for f in dataclasses.fields(node)
-                   if f.name not in ("span", "ty", "ref")}
+        changes = {
+            f.name: without_double_not(getattr(node, f.name))
+            for f in dataclasses.fields(node)
+            if f.name not in ("span", "ty", "ref")
+        }
         return dataclasses.replace(node, **changes)
     return node
 

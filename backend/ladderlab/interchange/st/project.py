@@ -42,8 +42,10 @@ def export_project_st(project: Project) -> StExport:
         text = compose_pou_text(exported.pou).rstrip("\n")
         first = sum(part.count("\n") + 2 for part in parts)  # parts are joined by a blank line
         body_start = text.count("\n", 0, text.index(exported.pou.body)) if exported.pou.body else 0
-        source_map += [(first + body_start + line, f"{pou.name}/{network}", element)
-                       for line, network, element in exported.source_map]
+        source_map += [
+            (first + body_start + line, f"{pou.name}/{network}", element)
+            for line, network, element in exported.source_map
+        ]
         parts.append(text)
     parts.append(configuration(project, Names.for_pou(checked, "")))
     if has_errors(diagnostics):
@@ -58,19 +60,33 @@ def verify_text(text: str, name: str) -> list[Diagnostic]:
     read, diagnostics = source_to_project(text, name)
     if read is not None:
         diagnostics = diagnostics + check_project(read).diagnostics
-    return [Diagnostic(code="EXPORT-INTERNAL", severity="error", pou=d.pou,
-                       message=f"the exported ST does not check: {d.format()}") for d in diagnostics
-            if d.severity == "error"]
+    return [
+        Diagnostic(
+            code="EXPORT-INTERNAL", severity="error", pou=d.pou, message=f"the exported ST does not check: {d.format()}"
+        )
+        for d in diagnostics
+        if d.severity == "error"
+    ]
 
 
 def configuration(project: Project, names: Names) -> str:
     """``CONFIGURATION`` with one resource holding the project's tasks and the programs they run."""
-    tasks = project.tasks or [Task(name=DEFAULT_TASK, interval=f"T#{DEFAULT_INTERVAL_MS}ms", priority=0,
-                                   programs=[p.name for p in project.pous if p.kind == "program"])]
-    lines = [f"CONFIGURATION {names.fresh(f'{project.name}_config')}",
-             f"{INDENT}RESOURCE {names.fresh('main_resource')} ON PLC"]
-    lines += [f"{INDENT * 2}TASK {task.name}(INTERVAL := {task.interval}, PRIORITY := {task.priority});"
-              for task in tasks]
-    lines += [f"{INDENT * 2}PROGRAM {program} WITH {task.name} : {program};" for task in tasks
-              for program in task.programs]
+    tasks = project.tasks or [
+        Task(
+            name=DEFAULT_TASK,
+            interval=f"T#{DEFAULT_INTERVAL_MS}ms",
+            priority=0,
+            programs=[p.name for p in project.pous if p.kind == "program"],
+        )
+    ]
+    lines = [
+        f"CONFIGURATION {names.fresh(f'{project.name}_config')}",
+        f"{INDENT}RESOURCE {names.fresh('main_resource')} ON PLC",
+    ]
+    lines += [
+        f"{INDENT * 2}TASK {task.name}(INTERVAL := {task.interval}, PRIORITY := {task.priority});" for task in tasks
+    ]
+    lines += [
+        f"{INDENT * 2}PROGRAM {program} WITH {task.name} : {program};" for task in tasks for program in task.programs
+    ]
     return "\n".join(lines + [f"{INDENT}END_RESOURCE", "END_CONFIGURATION"])
