@@ -10,16 +10,22 @@ PORT   ?= 8000
 SUDO   := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 PYTEST_ARGS ?=
 
-.PHONY: run test test-slow bench schema frontend chromium clean
+.PHONY: run test lint test-slow bench schema frontend chromium clean
 
 FRONTEND_DEPS := frontend/node_modules/.installed
 
 run: $(VENV)/.installed frontend
 	$(VENV)/bin/ladderlab serve --host $(HOST) --port $(PORT)
 
-test: $(VENV)/.installed chromium $(FRONTEND_DEPS) frontend
+test: $(VENV)/.installed chromium $(FRONTEND_DEPS) frontend lint
 	cd frontend && npm run --silent check:types && npm test --silent
 	$(PY) -m pytest -q $(PYTEST_ARGS)
+
+# Lint, format and layer checks (docs/architecture.md); `ruff format .` fixes the format.
+lint: $(VENV)/.installed
+	$(VENV)/bin/ruff check .
+	$(VENV)/bin/ruff format --check .
+	$(VENV)/bin/lint-imports
 
 test-slow: $(VENV)/.installed chromium
 	LADDERLAB_HYPOTHESIS=thorough $(PY) -m pytest -q -m "slow or not slow" $(PYTEST_ARGS)

@@ -159,7 +159,7 @@ def measure(language: str) -> None:
     model = project(language, NETWORKS)
     start, cpu = time.perf_counter(), time.process_time()
     result = lower_project(model)  # as build_project: the ST check of the declarations, then the networks
-    lowered, lowered_cpu = time.perf_counter() - start, time.process_time() - cpu
+    _lowered, lowered_cpu = time.perf_counter() - start, time.process_time() - cpu
     assert result.program is not None, [d.format() for d in result.diagnostics[:5]]
     compiled = compile_program(result.program, "fast")
     build, build_cpu = time.perf_counter() - start, time.process_time() - cpu

@@ -74,7 +74,7 @@ def request(address: str, method: str, path: str) -> dict:
     return response.json() if response.content else {}
 
 
-def run(address: str, sim_id: str, runner, clients: int, paths: int, seconds: float) -> dict[str, float]:  # noqa: ANN001
+def run(address: str, sim_id: str, runner, clients: int, paths: int, seconds: float) -> dict[str, float]:
     """Measure ``seconds`` of running with ``clients`` websocket clients (0: none)."""
     stamps: dict[int, float] = {}
     runner.after_scan.append(lambda sim: stamps.__setitem__(sim.scan_count, time.time()))

@@ -18,6 +18,7 @@ import csv
 import io
 import re
 import time
+from pathlib import Path
 
 import pytest
 
@@ -150,7 +151,7 @@ def test_a_trace_of_a_ton_shows_q_rising_pt_after_its_input(page, server):
     with page.expect_download() as download:
         page.get_by_role("button", name="Export CSV").click()
     assert download.value.suggested_filename == "trace-timer.csv"
-    text = open(download.value.path(), encoding="utf-8").read()
+    text = Path(download.value.path()).read_text(encoding="utf-8")
     records = list(csv.reader(io.StringIO(text)))
     assert records[0] == ["time_ms", "scan", "MAIN.Q", "MAIN.ET"]
     body = records[1:]

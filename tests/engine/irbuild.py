@@ -280,7 +280,7 @@ def function(name: str, return_type: t.IrType, slots: list[ir.Slot], body: list)
     return pou(name, slots, body, kind="function", return_type=return_type)
 
 
-def prog(*pous: ir.Pou, globals: list[ir.Slot] = (), tasks: list[ir.TaskSpec] = ()) -> ir.Program:  # noqa: A002
+def prog(*pous: ir.Pou, globals: list[ir.Slot] = (), tasks: list[ir.TaskSpec] = ()) -> ir.Program:
     return ir.Program({p.name: p for p in pous}, list(globals), list(tasks))
 
 

@@ -7,9 +7,9 @@ shrink ``CHUNK_STATEMENTS`` so small programs get many chunks.
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from contextlib import contextmanager
 from types import FunctionType
-from typing import Iterator
 
 import pytest
 from hypothesis import given, settings

@@ -506,7 +506,7 @@ def test_var_in_out_cascades_and_boxes_function_locals():
 def test_var_in_out_array_whole_ex20():
     """EX-20 / VAR-53: Suma2(buffer, 10) sums through the reference (55) and writes through it."""
     buf = array(INT, (1, 10))
-    vec, length, i, total = v("VECTOR", buf), v("LENGTH", INT), v("I", INT), v("SUMA2", INT)
+    _vec, length, i, total = v("VECTOR", buf), v("LENGTH", INT), v("I", INT), v("SUMA2", INT)
     suma2 = function(
         "SUMA2",
         INT,

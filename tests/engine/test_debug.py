@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import re
+
 import pytest
 
 from ladderlab.engine.compile import emit_python
@@ -160,7 +162,7 @@ def test_probes_of_fb_instances_and_functions():
     sim.cycle()
     assert sim.probes("MAIN.F1").values == {"C1": True} and sim.probes("MAIN.F2").values == {"C1": False}
     assert sim.probes("isneg").values == {"LT1": True} and sim.probes("MAIN").values == {}
-    with pytest.raises(KeyError, match="no POU instance 'MAIN.F3' - did you mean 'MAIN.F2'"):
+    with pytest.raises(KeyError, match=re.escape("no POU instance 'MAIN.F3' - did you mean 'MAIN.F2'")):
         sim.probes("MAIN.F3")
 
 

@@ -25,4 +25,4 @@ def test_check_subrange():
     assert check_subrange(5, 0, 5) == 5
     with pytest.raises(PlcRuntimeError) as caught:
         check_subrange(6, 0, 5)
-    assert caught.value.code == SUBRANGE and "6 is outside the subrange 0..5" == caught.value.message
+    assert caught.value.code == SUBRANGE and caught.value.message == "6 is outside the subrange 0..5"

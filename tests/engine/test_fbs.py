@@ -96,8 +96,8 @@ def test_edge_detectors_pulse_exactly_on_changes(clocks):
         rising.CLK = falling.CLK = clk
         rising.execute(0)
         falling.execute(0)
-        assert rising.Q == (clk and not previous)
-        assert falling.Q == (previous and not clk)
+        assert (clk and not previous) == rising.Q
+        assert (previous and not clk) == falling.Q
         previous = clk
 
 
@@ -326,7 +326,7 @@ def test_ton_matches_its_definition_at_any_clock(start, steps):
         fb.IN = value
         fb.execute(now)
         elapsed = 0 if rose is None else now - rose
-        assert (fb.Q, fb.ET) == (rose is not None and elapsed >= 500, min(elapsed, 500))
+        assert (rose is not None and elapsed >= 500, min(elapsed, 500)) == (fb.Q, fb.ET)
 
 
 # --- instances: cold state, pins, registry ------------------------------------------------------------

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import itertools
 import math
 import struct
 from fractions import Fraction
@@ -422,7 +423,7 @@ def test_comparisons_on_every_kind_APB_04(type_name, small, big):
 
 @given(st.lists(st.integers(-5, 5), min_size=2, max_size=6))
 def test_extensible_comparison_is_pairwise_and_FUN_70(values):
-    pairs = list(zip(values, values[1:]))
+    pairs = list(itertools.pairwise(values))
     n = len(values)
     assert call("GT", ["INT"] * n, "BOOL", *values) == all(a > b for a, b in pairs)
     assert call("LE", ["INT"] * n, "BOOL", *values) == all(a <= b for a, b in pairs)

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import json
 from collections import Counter
+from typing import ClassVar
 
 import pytest
 
@@ -91,7 +92,7 @@ UNSUPPORTED = {
 class _Summary:
     """Prints the fixture counts at the end of the run (pytest_terminal_summary of a runtime plugin)."""
 
-    lines: list[str] = []
+    lines: ClassVar[list[str]] = []
 
     def pytest_terminal_summary(self, terminalreporter) -> None:
         if self.lines:

@@ -165,7 +165,7 @@ def test_generated_ld_read_back_from_plain_plcopen_behaves_the_same(project, sca
 
 def _has_return(items: list) -> bool:
     return any(
-        isinstance(i, Return) or isinstance(i, Parallel) and any(_has_return(b) for b in i.branches) for i in items
+        isinstance(i, Return) or (isinstance(i, Parallel) and any(_has_return(b) for b in i.branches)) for i in items
     )
 
 

@@ -162,8 +162,8 @@ def series(draw, depth: int, counter: list[int], dead: bool = True):
 
 def _dead(items: list) -> bool:
     last = items[-1] if items else None
-    return (
-        isinstance(last, str) and last.startswith("J") or isinstance(last, Par) and all(_dead(b) for b in last.branches)
+    return (isinstance(last, str) and last.startswith("J")) or (
+        isinstance(last, Par) and all(_dead(b) for b in last.branches)
     )
 
 

@@ -35,7 +35,7 @@ def with_controls(pou: Pou, choices: list) -> Pou:
         network.label = f"L{index}"
         choice = choices[index]
         ahead = len(networks) - index - 1
-        if choice is None or choice != "return" and ahead == 0:
+        if choice is None or (choice != "return" and ahead == 0):
             continue
         element = f"ctl{index}"
         if pou.language == "ld":

@@ -133,7 +133,7 @@ class _Checker:
         elif isinstance(s, ir.Case):
             self.expr(s.selector)
             for labels, body in s.branches:
-                assert all(isinstance(x, int) or isinstance(x, tuple) and len(x) == 2 for x in labels), s
+                assert all(isinstance(x, int) or (isinstance(x, tuple) and len(x) == 2) for x in labels), s
                 self.stmts(body)
             self.stmts(s.orelse)
         elif isinstance(s, ir.For):

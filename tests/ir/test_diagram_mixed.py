@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import itertools
 from pathlib import Path
 
 from ladderlab.engine.simulation import Simulation
@@ -154,7 +155,7 @@ def test_motor_example_start_stop_seal_in_timer_counter_and_st_blinker():
         step()
         lamp.append(sim.read("Main.Lamp"))
     switches = [i for i in range(1, len(lamp)) if lamp[i] != lamp[i - 1]]
-    assert [b - a for a, b in zip(switches, switches[1:])] == [26] * (len(switches) - 1) and len(switches) >= 2
+    assert [b - a for a, b in itertools.pairwise(switches)] == [26] * (len(switches) - 1) and len(switches) >= 2
     step(**{"Stop": True})
     assert sim.read("Motor") is False
     step(**{"Stop": False})

@@ -48,7 +48,7 @@ def client() -> Iterator[TestClient]:
         yield app_client
 
 
-def assert_answered(response) -> None:  # noqa: ANN001 - an httpx Response
+def assert_answered(response) -> None:
     assert response.status_code < 500, response.text
     if response.status_code >= 400:
         assert response.json()["detail"]["message"]
@@ -91,7 +91,7 @@ def test_random_payloads_never_fail_the_server(client: TestClient, payload: obje
 
 
 @given(project=projects(), extra=pous())
-def test_any_valid_project_saves_reads_back_and_checks(client: TestClient, project: Project, extra) -> None:  # noqa: ANN001
+def test_any_valid_project_saves_reads_back_and_checks(client: TestClient, project: Project, extra) -> None:
     """A saved project comes back equal and every analysis route answers for every POU."""
     project = project.model_copy(update={"name": "fuzz"})
     revision = client.get("/api/projects/fuzz").json()["revision"]

@@ -4,6 +4,7 @@ single cycle, several clients, runtime errors, origin check, deletion."""
 from __future__ import annotations
 
 import asyncio
+import itertools
 import json
 import time
 
@@ -130,7 +131,7 @@ def test_running_sends_at_the_interval_with_increasing_scans(client: TestClient,
         assert scans == sorted(set(scans))
         assert all(m["changed"]["MAIN.COUNT"] == m["scan"] for m in messages)  # Count counts scans
         assert 0.2 <= elapsed <= 1.0, elapsed  # 6 messages at 50 ms: never faster, a little slower when busy
-        assert all(3 <= b - a <= 15 for a, b in zip(scans, scans[1:])), scans  # ~5 scans of 10 ms apart
+        assert all(3 <= b - a <= 15 for a, b in itertools.pairwise(scans)), scans  # ~5 scans of 10 ms apart
 
 
 def test_write_is_applied_once_before_the_next_scan(client: TestClient, counter: str) -> None:

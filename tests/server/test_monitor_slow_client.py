@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import base64
 import contextlib
+import itertools
 import json
 import os
 import socket
@@ -143,7 +144,7 @@ def test_a_client_that_never_reads_slows_neither_the_scan_nor_another_client(
         info = http.get(f"/api/simulations/{sim_id}").json()
 
         # the other client keeps receiving at its interval, each message newer than the last
-        gaps = [b - a for a, b in zip(arrivals, arrivals[1:])]
+        gaps = [b - a for a, b in itertools.pairwise(arrivals)]
         assert len(arrivals) >= 35, len(arrivals)  # 50 at exactly 50 ms
         assert 0.04 <= statistics.median(gaps) <= 0.075, gaps
         assert max(gaps) < 0.3, gaps

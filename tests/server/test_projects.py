@@ -192,7 +192,7 @@ def test_concurrent_saves_from_one_revision_give_exactly_one_409(client: TestCli
         barrier = threading.Barrier(2)
         statuses: list[int] = [0, 0]
 
-        def save(i: int) -> None:
+        def save(i: int, barrier=barrier, statuses=statuses, bodies=bodies, base=base) -> None:
             barrier.wait()
             statuses[i] = client.put(
                 "/api/projects/motor", json=bodies[i].model_dump(mode="json"), headers={"If-Match": base}
@@ -282,7 +282,7 @@ def test_io_error_is_a_json_500_and_loses_nothing(
 ) -> None:
     before = folder_bytes(workspace.root / "motor")
 
-    def disk_full(path, data):  # noqa: ANN001 - same signature as storage.atomic.write_atomic
+    def disk_full(path, data):
         raise OSError(28, "No space left on device")
 
     monkeypatch.setattr("ladderlab.storage.workspace.write_atomic", disk_full)
@@ -297,7 +297,7 @@ def test_io_error_is_a_json_500_and_loses_nothing(
 
 
 def test_unexpected_error_is_a_json_500(workspace: Workspace, monkeypatch: pytest.MonkeyPatch) -> None:
-    def broken(project):  # noqa: ANN001
+    def broken(project):
         raise RuntimeError("checker exploded")
 
     monkeypatch.setattr("ladderlab.server.projects.check_project", broken)

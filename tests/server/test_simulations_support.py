@@ -89,7 +89,7 @@ def recv(ws: WebSocketTestSession, timeout: float = 3.0) -> dict[str, Any]:
 
     async def receive() -> Any:
         with anyio.fail_after(timeout):
-            return await ws._send_rx.receive()  # noqa: SLF001 - the test session's queue, with a timeout
+            return await ws._send_rx.receive()
 
     message = ws.portal.call(receive)
     assert message["type"] == "websocket.send", message

@@ -293,7 +293,7 @@ def test_bad_trace_requests_are_refused_with_a_clear_error(
 
 
 def test_twenty_paths_are_accepted_including_array_elements_and_times(client: TestClient, timer: str) -> None:
-    paths = ["Main.Numbers[1]", "Main.Numbers[3]", "Main.Level", "Main.ET"] + [f"Main.Numbers[2]"] * 16
+    paths = ["Main.Numbers[1]", "Main.Numbers[3]", "Main.Level", "Main.ET"] + ["Main.Numbers[2]"] * 16
     with client.websocket_connect(ws_url(timer)) as ws:
         connect(ws)
         ws.send_json({"type": "trace_start", "paths": paths, "samples": 1})

@@ -65,7 +65,7 @@ class CompiledProgram:
         """Execute the module in fresh globals: classes, functions and (uninitialised) globals objects."""
         ns = namespace()
         for code in self.pieces[: self.generated.code_from]:
-            exec(code, ns)  # noqa: S102 - our own generated source, names validated (codegen.names)
+            exec(code, ns)
         self.install(ns)
         return ns
 
@@ -74,7 +74,7 @@ class CompiledProgram:
         ns.update(self.generated.bound)
         ns["ll_halt"] = [False] * len(self.generated.pauses)
         for code in self.pieces[self.generated.code_from :]:
-            exec(code, ns)  # noqa: S102
+            exec(code, ns)
 
 
 def compile_program(program: ir.Program, variant: str = "fast") -> CompiledProgram:

@@ -11,8 +11,8 @@ indices raise ValueError. ``snapshot`` lists every elementary variable.
 from __future__ import annotations
 
 import re
+from collections.abc import Iterator
 from dataclasses import dataclass
-from typing import Iterator
 
 from ..iec import values
 from ..iec.spelling import did_you_mean
@@ -46,7 +46,7 @@ class Location:
     def elementary(self) -> bool:
         return not is_composite(self.type)
 
-    def _container(self, roots: "Roots") -> tuple[object, object]:
+    def _container(self, roots: Roots) -> tuple[object, object]:
         obj = roots.get(self.root)
         keys = list(self.keys)
         last = keys.pop()
@@ -56,11 +56,11 @@ class Location:
             return obj  # type: ignore[return-value]  # the reference itself is (container, key)
         return obj, last
 
-    def get(self, roots: "Roots") -> object:
+    def get(self, roots: Roots) -> object:
         container, key = self._container(roots)
         return container[key]  # type: ignore[index]
 
-    def set(self, roots: "Roots", value: object) -> None:
+    def set(self, roots: Roots, value: object) -> None:
         container, key = self._container(roots)
         container[key] = value  # type: ignore[index]
 
@@ -293,7 +293,7 @@ def _value_leaves(context, path, ty, value) -> Iterator[tuple[str, object]]:
 
 def _array_leaves(context, path, ty: t.Array, value, prefix: list[int]) -> Iterator[tuple[str, object]]:
     depth = len(prefix)
-    lo, hi = ty.dims[depth]
+    lo, _hi = ty.dims[depth]
     for offset, item in enumerate(value):
         indices = [*prefix, lo + offset]
         if depth + 1 < len(ty.dims):
@@ -351,7 +351,7 @@ class LocationReader:
         for root, parent, members in self.groups:
             try:
                 container = parent.get(self.roots) if parent is not None else self.roots.get(root)
-            except Exception:  # noqa: BLE001 - e.g. through an unbound VAR_IN_OUT reference: no value
+            except Exception:
                 values.update((path, None) for path, _, _ in members)
                 continue
             for path, key, composite in members:
@@ -361,6 +361,6 @@ class LocationReader:
             try:
                 value = location.get(self.roots)
                 values[path] = value if location.elementary else plain(self.ctx, location.type, value)
-            except Exception:  # noqa: BLE001
+            except Exception:
                 values[path] = None
         return values

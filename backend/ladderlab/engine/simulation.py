@@ -25,8 +25,8 @@ one thread (see docs/runtime.md).
 from __future__ import annotations
 
 import time
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
-from typing import Callable, Iterator
 
 from ..iec.spelling import did_you_mean
 from ..ir import nodes as ir
@@ -242,7 +242,7 @@ class Simulation:
                     try:
                         for name in task.programs:
                             self.programs[name].execute(now)  # type: ignore[attr-defined]
-                    except Exception as error:  # noqa: BLE001 - any failure of generated code is a fault
+                    except Exception as error:
                         self._fault(task, error, now)
             self._finish((self._clock() - start) * 1000.0)
             return True
@@ -257,7 +257,7 @@ class Simulation:
             try:
                 for name in task.programs:
                     yield from self.programs[name].execute(now)  # type: ignore[attr-defined]
-            except Exception as error:  # noqa: BLE001
+            except Exception as error:
                 self._fault(task, error, now)
 
     def _drive(self) -> bool:
@@ -400,7 +400,8 @@ class Simulation:
     # ------------------------------------------------------------------ instances
 
     def instances(self) -> dict[str, list[str]]:
-        """Instance paths of every program and function block, by POU name (upper case): ``{"BLINKER": ["MAIN.BLINK"]}``.
+        """Instance paths of every program and function block, by POU name (upper case):
+        ``{"BLINKER": ["MAIN.BLINK"]}``.
 
         The online views show one instance of a POU at a time; this lists the ones to choose from."""
         found: dict[str, list[str]] = {}

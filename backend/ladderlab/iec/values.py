@@ -22,8 +22,9 @@ import math
 import re
 import struct
 import sys
-from functools import lru_cache
-from typing import Callable, NamedTuple
+from collections.abc import Callable
+from functools import cache
+from typing import NamedTuple
 
 from .elementary import (
     DEFAULT_STRING_LENGTH,
@@ -76,7 +77,7 @@ class TypeRef(NamedTuple):
 _STRING_N = re.compile(r"STRING\s*[\[(]\s*(\d+)\s*[\])]\Z")
 
 
-@lru_cache(maxsize=None)
+@cache
 def resolve(type_name: str) -> TypeRef:
     """``INT``, ``tod``, ``STRING``, ``STRING[20]`` -> TypeRef; ValueError for anything else."""
     text = type_name.strip().upper()
@@ -134,18 +135,18 @@ def store_expr(expr: str, type_name: str) -> str:
     return expr  # BOOL and LREAL values are already what Python computes
 
 
-@lru_cache(maxsize=None)
+@cache
 def store_fn(type_name: str) -> Callable[[object], object]:
     """A one-argument callable applying ``store_expr`` (e.g. for assignments)."""
     if resolve(type_name).name == "REAL":
         return f32
-    return eval(f"lambda x: {store_expr('x', type_name)}", dict(INLINE_NAMES))  # noqa: S307 - our own source
+    return eval(f"lambda x: {store_expr('x', type_name)}", dict(INLINE_NAMES))
 
 
-@lru_cache(maxsize=None)
+@cache
 def wrap_fn(type_name: str) -> Callable[[int], int]:
     """Fast wrapper to the width of an int, bit-string or TIME type (e.g. ``wrap_fn("INT")(32768) == -32768``)."""
-    return eval(f"lambda x: {wrap_expr('x', type_name)}")  # noqa: S307 - our own source
+    return eval(f"lambda x: {wrap_expr('x', type_name)}")
 
 
 def wrap(value: int, type_name: str) -> int:
@@ -198,9 +199,8 @@ def _raw(value: object, ref: TypeRef) -> int | float:
             return int(value)
     elif isinstance(value, int):
         return value
-    elif isinstance(value, float) and math.isfinite(value):
-        if ref.category == "real" or value.is_integer():
-            return value if ref.category == "real" else int(value)
+    elif isinstance(value, float) and math.isfinite(value) and (ref.category == "real" or value.is_integer()):
+        return value if ref.category == "real" else int(value)
     raise ValueError(f"{value!r} is not {article(ref.name)}")
 
 

@@ -43,7 +43,7 @@ class Callee:
 
     @functools.cached_property
     def is_fb(self) -> bool:  # asked several times for every box
-        return self.std_fb is not None or self.pou is not None and self.pou.kind == "FUNCTION_BLOCK"
+        return self.std_fb is not None or (self.pou is not None and self.pou.kind == "FUNCTION_BLOCK")
 
     def input_names(self) -> list[str]:
         """The declared inputs (VAR_IN_OUT included) in formal order; an extensible function's minimum."""
@@ -89,7 +89,7 @@ class Callee:
             return [
                 p.name
                 for p in self.std_function.inputs
-                if p.type == "BOOL" or p.generic and t.in_family(t.BOOL, p.type)
+                if p.type == "BOOL" or (p.generic and t.in_family(t.BOOL, p.type))
             ]
         if self.std_fb is not None:
             return [p.name for p in self.std_fb.inputs if p.type == "BOOL"]

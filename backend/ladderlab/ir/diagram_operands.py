@@ -284,7 +284,7 @@ class Operands:
         ty = checker.expr(node, expected)
         if expected is not None and ty is not t.ERROR:
             assignable_or_report(checker, expected, ty, node, f"operand '{text.strip()}'")
-        if ty is t.ERROR or ty is t.VOID or diagnostics and any(d.severity == "error" for d in diagnostics):
+        if ty is t.ERROR or ty is t.VOID or (diagnostics and any(d.severity == "error" for d in diagnostics)):
             return None, t.ERROR, diagnostics
         lowered = self._lower_quietly(node, diagnostics, self.ctx.ir_type(expected) if expected is not None else None)
         return lowered, node.ty, diagnostics

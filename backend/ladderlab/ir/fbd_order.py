@@ -75,7 +75,7 @@ class NetworkGraph:
     #: (consumer id, pin) pairs wired to a continuation that leads nowhere (already reported)
     broken: set[tuple[str, str]] = field(default_factory=set)
 
-    def visit(self, visitor: "NodeVisitor") -> None:
+    def visit(self, visitor: NodeVisitor) -> None:
         """Hand every node to the visitor in evaluation order (the lowering and the ST export walk it alike)."""
         for node_id in self.order:
             node = self.nodes[node_id]
@@ -128,7 +128,8 @@ def _wires_by_input(
         if (
             _plain_end(nodes.get(source.node), source.pin, PRODUCERS, SIMPLE_OUT)
             and _plain_end(nodes.get(target.node), pin, CONSUMERS, SIMPLE_IN)
-            or _valid_end(wire, source, nodes, PRODUCERS, SIMPLE_OUT, "output", network.id, report)
+        ) or (
+            _valid_end(wire, source, nodes, PRODUCERS, SIMPLE_OUT, "output", network.id, report)
             and _valid_end(wire, target, nodes, CONSUMERS, SIMPLE_IN, "input", network.id, report)
         ):
             key = (target.node, pin)
@@ -152,7 +153,7 @@ def _wires_by_input(
 def _plain_end(node: fbd.FbdNode | None, pin: str, kinds: frozenset, simple_pin: str) -> bool:
     """``_valid_end`` without its reports, for the common case of a valid end (checked for every wire)."""
     kind = node.type if node is not None else None
-    return kind == "block" or kind in kinds and (pin == simple_pin or pin.upper() == simple_pin)
+    return kind == "block" or (kind in kinds and (pin == simple_pin or pin.upper() == simple_pin))
 
 
 def _valid_end(
@@ -490,7 +491,7 @@ def _structure(network: fbd.FbdNetwork) -> tuple[tuple, list[str]] | None:
     nodes = network.nodes
     ids = [node.id for node in nodes]
     index = {node_id: i for i, node_id in enumerate(ids)}
-    if len(index) != len(ids) or network.order and any(node_id not in index for node_id in network.order):
+    if len(index) != len(ids) or (network.order and any(node_id not in index for node_id in network.order)):
         return None
     kinds = tuple(
         node.type if node.type not in ("connector", "continuation") else (node.type, node.name.upper())

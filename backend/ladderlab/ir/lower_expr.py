@@ -140,9 +140,12 @@ def _untyped(node: ast.Expr, ctx: PouContext, expected: IrType | None) -> Expr:
 def _literal_target(ty: t.Type, ctx: PouContext, expected: IrType | None) -> IrType:
     """The expected type when an untyped literal may take it (a subrange's base: the store checks the range)."""
     base = value_type(expected) if expected is not None else None
-    if isinstance(base, Elementary) and base.info.category in _LITERAL_TARGETS:
-        if isinstance(ty, t.UntypedInt) or base.info.category == "real":
-            return base
+    if (
+        isinstance(base, Elementary)
+        and base.info.category in _LITERAL_TARGETS
+        and (isinstance(ty, t.UntypedInt) or base.info.category == "real")
+    ):
+        return base
     return ctx.ir_type(t.concrete(ty))
 
 

@@ -197,7 +197,7 @@ class _Network:
             if target is None:
                 return
             expr, ty = self.expr(value, at, what, target_type)
-            if expr is None or not isinstance(value, str) and not self.ops.assignable(target_type, ty, at, what):
+            if expr is None or (not isinstance(value, str) and not self.ops.assignable(target_type, ty, at, what)):
                 return
             expr = convert(expr, target.type)
         else:
@@ -216,7 +216,7 @@ class _Network:
         origin = self.origin(node.id)
         wired = "IN" in self.graph.inputs.get(node.id, {})
         value = self.source(node.id, "IN")
-        if (node.id, "IN") in self.graph.broken or wired and value is None:
+        if (node.id, "IN") in self.graph.broken or (wired and value is None):
             return  # reported where the wire breaks or the value fails
         condition = self.bool_value(value, self.at(node.id, "IN"), f"{node.type} '{node.id}'") if wired else TRUE
         if condition is None:
@@ -247,7 +247,7 @@ class _Network:
         at, origin = self.at(node.id), self.origin(node.id)
         flags = _flags(node)
         broken = self.graph.broken
-        if not self._pins_known(node, callee, flags) or broken and any(n == node.id for n, _ in broken):
+        if not self._pins_known(node, callee, flags) or (broken and any(n == node.id for n, _ in broken)):
             return
         inputs: dict[str, PinValue] = {}
         for pin in self.graph.inputs.get(node.id, {}):
@@ -289,7 +289,7 @@ class _Network:
         used = self.used_pins.get(node.id, set())
         into = self.graph.inputs.get(node.id, {})
         if (
-            (node.en or "EN" not in into and "ENO" not in into)
+            (node.en or ("EN" not in into and "ENO" not in into))
             and used.issubset(outputs)
             and all(pin not in outputs and callee.is_input(pin) for pin in flags)
         ):

@@ -136,7 +136,7 @@ def _call_statement(statement: ast.CallStmt, ctx: PouContext) -> list[Stmt]:
 
 
 def _is_function(ref: object) -> bool:
-    return isinstance(ref, stdlib.StdFunction) or isinstance(ref, PouInfo) and ref.kind == "FUNCTION"
+    return isinstance(ref, stdlib.StdFunction) or (isinstance(ref, PouInfo) and ref.kind == "FUNCTION")
 
 
 def _has_en_eno(call: ast.Call) -> bool:

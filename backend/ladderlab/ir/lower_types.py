@@ -81,7 +81,7 @@ class TypeLowering:
     def type_of(self, ty: t.Type | None, spec: ast.TypeSpec | None = None) -> IrType:
         """The IR type of a checker type; ``spec`` (the declaration's type specification) restores subranges."""
         if type(ty) is t.Elementary and (
-            spec is None or type(spec) is ast.NamedType and (not self.types or spec.name.upper() not in self.types)
+            spec is None or (type(spec) is ast.NamedType and (not self.types or spec.name.upper() not in self.types))
         ):
             return _elementary(ty.name)  # most variables: no TYPE to follow (a shortcut of _type_of)
         return self._type_of(ty, spec)

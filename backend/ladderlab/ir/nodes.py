@@ -10,7 +10,7 @@ See docs/ir.md for the invariants.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Literal, Union
+from typing import Literal
 
 from .types import IrType
 
@@ -60,7 +60,7 @@ class Member:
     name: str
 
 
-Selector = Union[Index, Member]
+Selector = Index | Member
 Scope = Literal["local", "global"]
 
 
@@ -116,7 +116,7 @@ class Convert:
     type: IrType
 
 
-Expr = Union[Const, Var, Unary, Binary, Call, Convert]
+Expr = Const | Var | Unary | Binary | Call | Convert
 
 # --------------------------------------------------------------------------- statements
 
@@ -135,7 +135,7 @@ class If:
     origin: Origin
 
 
-CaseLabel = Union[int, tuple[int, int]]
+CaseLabel = int | tuple[int, int]
 
 
 @dataclass
@@ -238,7 +238,7 @@ class Block:
     label: str | None = None
 
 
-Stmt = Union[Assign, If, Case, For, While, Repeat, Exit, Return, FbCall, FnCall, Jump, Probe]
+Stmt = Assign | If | Case | For | While | Repeat | Exit | Return | FbCall | FnCall | Jump | Probe
 
 # --------------------------------------------------------------------------- POUs
 

@@ -26,7 +26,7 @@ def and_(left: Expr, right: Expr) -> Expr:
 
 def _is_true(value: Expr) -> bool:
     """The constant TRUE? (Only a constant can be: other nodes are not compared field by field.)"""
-    return value is TRUE or type(value) is Const and value == TRUE
+    return value is TRUE or (type(value) is Const and value == TRUE)
 
 
 def or_(values: list[Expr]) -> Expr:

@@ -7,7 +7,6 @@ syntax, so LD and FBD lowering produce the same types.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Union
 
 from ..iec.elementary import DEFAULT_STRING_LENGTH, ELEMENTARY, ElementaryType
 
@@ -71,6 +70,6 @@ class FbInstance:
     fb: str
 
 
-IrType = Union[Elementary, Subrange, Enum, Array, Struct, FbInstance]
+IrType = Elementary | Subrange | Enum | Array | Struct | FbInstance
 
 BOOL = Elementary("BOOL")

@@ -6,7 +6,7 @@ optional ``order`` list where the wiring leaves it open).
 
 from __future__ import annotations
 
-from typing import Annotated, Literal, Union
+from typing import Annotated, Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 
@@ -75,7 +75,7 @@ class Continuation(_Node):
 
 
 FbdNode = Annotated[
-    Union[Block, InputNode, OutputNode, FbdJump, FbdReturn, Connector, Continuation],
+    Block | InputNode | OutputNode | FbdJump | FbdReturn | Connector | Continuation,
     Field(discriminator="type"),
 ]
 

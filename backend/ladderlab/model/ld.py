@@ -8,7 +8,7 @@ every edit reflows cleanly and the files diff well in git.
 from __future__ import annotations
 
 from collections.abc import Iterator
-from typing import Annotated, Literal, Union
+from typing import Annotated, Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 
@@ -69,7 +69,7 @@ class Return(_Element):
 
 
 LdElement = Annotated[
-    Union[Contact, Compare, Coil, Parallel, Box, Jump, Return],
+    Contact | Compare | Coil | Parallel | Box | Jump | Return,
     Field(discriminator="type"),
 ]
 

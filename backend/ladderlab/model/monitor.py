@@ -13,7 +13,7 @@ in ``values.changed``, ``values.forced`` and ``trace_data.values``.
 
 from __future__ import annotations
 
-from typing import Annotated, Any, Literal, Union
+from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
@@ -189,22 +189,20 @@ class TraceStop(_Request):
 
 
 ClientMessage = Annotated[
-    Union[
-        Subscribe,
-        Write,
-        Force,
-        Unforce,
-        UnforceAll,
-        BreakpointSet,
-        BreakpointClear,
-        Continue,
-        Step,
-        Run,
-        Stop,
-        SingleCycle,
-        TraceStart,
-        TraceStop,
-    ],
+    Subscribe
+    | Write
+    | Force
+    | Unforce
+    | UnforceAll
+    | BreakpointSet
+    | BreakpointClear
+    | Continue
+    | Step
+    | Run
+    | Stop
+    | SingleCycle
+    | TraceStart
+    | TraceStop,
     Field(discriminator="type"),
 ]
 
@@ -311,7 +309,7 @@ class Error(BaseModel):
     message: str
 
 
-ServerMessage = Annotated[Union[Values, Status, TraceData, Log, Error], Field(discriminator="type")]
+ServerMessage = Annotated[Values | Status | TraceData | Log | Error, Field(discriminator="type")]
 
 
 class MonitorProtocol(BaseModel):

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import threading
-from datetime import datetime, timezone
+from datetime import UTC, datetime
 from typing import Annotated
 
 from fastapi import Depends, FastAPI, Request
@@ -36,7 +36,7 @@ _CREATE_LOCK = threading.Lock()
 
 def modified_at(timestamp: float) -> datetime:
     """A file time as an aware UTC datetime (JSON: ISO 8601 with offset, unambiguous in any browser)."""
-    return datetime.fromtimestamp(timestamp, tz=timezone.utc)
+    return datetime.fromtimestamp(timestamp, tz=UTC)
 
 
 def etag(revision: str) -> dict[str, str]:

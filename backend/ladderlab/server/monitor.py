@@ -21,6 +21,7 @@ Bad input never closes the connection: it gets an ``error`` message.
 from __future__ import annotations
 
 import asyncio
+import contextlib
 import json
 import logging
 import math
@@ -88,7 +89,7 @@ def _same(a: object, b: object) -> bool:
     """Equal values, NaN equal to NaN (a NaN that stays NaN has not changed)."""
     if a is b:
         return True
-    if type(a) is not type(b):  # noqa: E721 - TRUE and 1 are different values to show
+    if type(a) is not type(b):
         return False
     if a == b:
         return True
@@ -217,7 +218,7 @@ class MonitorClient:
             await self._dispatch(request)
         except CommandError as error:
             self.error(error.code, error.message)
-        except Exception as error:  # noqa: BLE001 - a bug answers this client; the others carry on
+        except Exception as error:
             log.exception("monitor request %s failed", type(request).__name__)
             self.error("bad_state", f"internal error: {type(error).__name__}: {error}")
 
@@ -303,10 +304,8 @@ class MonitorClient:
         if timeout is not None and timeout <= 0:
             return
         self.wake.clear()
-        try:
+        with contextlib.suppress(TimeoutError):
             await asyncio.wait_for(self.wake.wait(), timeout)
-        except TimeoutError:
-            pass
 
     async def _drain(self) -> None:
         while self.outbox or self.status is not None:

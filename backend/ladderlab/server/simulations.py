@@ -98,7 +98,7 @@ def delete_simulation(sim_id: str, registry: RegistryDep) -> Response:
     return Response(status_code=status.HTTP_204_NO_CONTENT)
 
 
-def _command(entry: SimulationEntry, action) -> SimulationInfo:  # noqa: ANN001 - Callable[[SimRunner], None]
+def _command(entry: SimulationEntry, action) -> SimulationInfo:
     try:
         action(entry.runner)
     except CommandError as error:

@@ -28,7 +28,9 @@ class Build:
 
 
 def build_project(project: Project, variant: str = "fast") -> Build:
-    """Check, lower and compile ``project`` (variant ``fast``, ``monitor`` or ``debug``); never raises for project content."""
+    """Check, lower and compile ``project`` (variant ``fast``, ``monitor`` or ``debug``).
+
+    Never raises for project content: problems are diagnostics."""
     lowered = lower_project(project)
     diagnostics = list(lowered.diagnostics)
     if lowered.program is None:  # the lowering withholds the program whenever a diagnostic is an error

@@ -28,8 +28,9 @@ from __future__ import annotations
 import logging
 import threading
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable, Protocol
+from typing import Protocol
 
 from ..engine.codegen.faults import Fault
 from ..engine.compile import CompileError
@@ -209,7 +210,7 @@ class SimRunner:
                 if self._running and self._pacer is not None:  # halted: the pacer idles and re-anchors after
                     try:
                         delay = self._pacer.poll()
-                    except Exception as error:  # noqa: BLE001 - a bug must not kill the thread silently
+                    except Exception as error:
                         log.exception("simulation thread failed")
                         self._set_running(False)
                         self._emit(
@@ -268,7 +269,9 @@ class SimRunner:
             self._emit(Status(type="status", state=state, at=status[1]))  # type: ignore[arg-type]
 
     def _fit_variant(self) -> None:
-        """Debug code only while debugging: a breakpoint is set or a scan is halted; else the monitor code (lock held)."""
+        """Debug code only while debugging: a breakpoint is set or a scan is halted; else the monitor code.
+
+        Called with the lock held."""
         sim = self.sim
         if sim.variant not in ("monitor", "debug"):
             return
@@ -597,7 +600,7 @@ class _Scans:
 
     @property
     def halted(self) -> bool:
-        return self.sim.halted is not None or not self.runner._running  # noqa: SLF001 - the runner's own helper
+        return self.sim.halted is not None or not self.runner._running
 
     @property
     def time_ms(self) -> float:
@@ -608,5 +611,5 @@ class _Scans:
 
     def cycle(self, n: int = 1) -> int:
         done = self.sim.cycle(n)
-        self.runner._settle()  # noqa: SLF001
+        self.runner._settle()
         return done

@@ -12,7 +12,7 @@ Names are kept as written (IEC names are case-insensitive: compare with
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any, NamedTuple, Union
+from typing import Any, NamedTuple
 
 
 class Span(NamedTuple):
@@ -179,9 +179,22 @@ class Binary:
     ty: Any = _annotation()
 
 
-Expr = Union[
-    IntLit, RealLit, BoolLit, StringLit, TimeLit, TypedLit, Name, DirectAddr, Member, Index, Deref, Call, Unary, Binary
-]
+Expr = (
+    IntLit
+    | RealLit
+    | BoolLit
+    | StringLit
+    | TimeLit
+    | TypedLit
+    | Name
+    | DirectAddr
+    | Member
+    | Index
+    | Deref
+    | Call
+    | Unary
+    | Binary
+)
 LITERALS = (IntLit, RealLit, BoolLit, StringLit, TimeLit, TypedLit)
 
 # ---------------------------------------------------------------- statements
@@ -270,7 +283,7 @@ class Empty:
     span: Span = _span()
 
 
-Stmt = Union[Assign, CallStmt, If, Case, For, While, Repeat, Exit, Return, Empty]
+Stmt = Assign | CallStmt | If | Case | For | While | Repeat | Exit | Return | Empty
 
 # ---------------------------------------------------------------- types and declarations
 
@@ -331,7 +344,7 @@ class StructType:
     span: Span = _span()
 
 
-TypeSpec = Union[NamedType, SizedType, SubrangeType, ArrayType, PointerType, EnumType, StructType]
+TypeSpec = NamedType | SizedType | SubrangeType | ArrayType | PointerType | EnumType | StructType
 
 
 @dataclass(slots=True)
@@ -355,7 +368,7 @@ class StructInit:
     span: Span = _span()
 
 
-Init = Union[Expr, ArrayInit, StructInit]
+Init = Expr | ArrayInit | StructInit
 
 
 @dataclass(slots=True)

@@ -108,11 +108,12 @@ class BodyChecker:
             self.report("ST-UNKNOWN-TYPE", f"unknown type '{node.type_name}' in typed literal", node)
             return ERROR
         value = self.expr(node.value)
-        if assignable_or_report(self, target, value, node, f"{node.type_name}# literal") and isinstance(
-            node.value, ast.IntLit
+        if (
+            assignable_or_report(self, target, value, node, f"{node.type_name}# literal")
+            and isinstance(node.value, ast.IntLit)
+            and not t.literal_fits(target, node.value.value)
         ):
-            if not t.literal_fits(target, node.value.value):
-                self.report("ST-RANGE", f"{node.value.value} is out of range for {target}", node)
+            self.report("ST-RANGE", f"{node.value.value} is out of range for {target}", node)
         return target
 
     def _name(self, node: ast.Name, expected: Type | None) -> Type:
@@ -284,7 +285,7 @@ class BodyChecker:
         op = node.op
         if op in _COMPARISON:
             if isinstance(combined, t.EnumType) and op not in ("=", "<>"):
-                self.report("ST-TYPE-MISMATCH", f"enumeration values can only be compared with = and <>", node)
+                self.report("ST-TYPE-MISMATCH", "enumeration values can only be compared with = and <>", node)
             elif isinstance(combined, (t.ArrayType, t.StructType, t.FbType)):
                 self.report("ST-TYPE-MISMATCH", f"cannot compare values of type {combined}", node)
             return t.BOOL

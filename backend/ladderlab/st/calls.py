@@ -151,7 +151,7 @@ def check_arguments(
             "ST-CALL-ARGS", f"do not mix formal (name := value) and positional arguments in a call to {callee}", node
         )
         return
-    if positional and (len(positional) > len(inputs) or function and len(positional) < len(inputs)):
+    if positional and (len(positional) > len(inputs) or (function and len(positional) < len(inputs))):
         _args_untyped(checker, node)
         checker.report("ST-CALL-ARGS", f"{callee} takes {len(inputs)} input(s), got {len(positional)}", node)
         return
@@ -249,7 +249,7 @@ def _std_call(checker: Any, node: ast.Call, function: stdlib.StdFunction) -> Typ
     if formal and positional:
         checker.report("ST-CALL-ARGS", f"do not mix formal and positional arguments in a call to {function.name}", node)
     minimum = len(function.inputs)
-    if positional and (len(positional) < minimum or not function.extensible and len(positional) > minimum):
+    if positional and (len(positional) < minimum or (not function.extensible and len(positional) > minimum)):
         expected = f"at least {minimum}" if function.extensible else str(minimum)
         checker.report("ST-CALL-ARGS", f"{function.name} takes {expected} input(s), got {len(positional)}", node)
     bound: list[tuple[ast.Arg, stdlib.Pin]] = []

@@ -165,7 +165,8 @@ def _statement(stmt: ast.Stmt, level: int) -> str:
     if isinstance(stmt, ast.While):
         return f"{pad}WHILE {_expr(stmt.cond, 0)} DO\n{print_statements(stmt.body, level + 1)}{pad}END_WHILE;\n"
     if isinstance(stmt, ast.Repeat):
-        return f"{pad}REPEAT\n{print_statements(stmt.body, level + 1)}{pad}UNTIL {_expr(stmt.until, 0)}\n{pad}END_REPEAT;\n"
+        body = print_statements(stmt.body, level + 1)
+        return f"{pad}REPEAT\n{body}{pad}UNTIL {_expr(stmt.until, 0)}\n{pad}END_REPEAT;\n"
     if isinstance(stmt, ast.Exit):
         return f"{pad}EXIT;\n"
     if isinstance(stmt, ast.Return):

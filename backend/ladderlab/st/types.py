@@ -120,7 +120,7 @@ _UNSIGNED = ["USINT", "UINT", "UDINT", "ULINT"]
 _BITS = ["BYTE", "WORD", "DWORD", "LWORD"]
 
 
-@functools.lru_cache(maxsize=None)  # types are immutable; asked for every pin of every call checked
+@functools.cache  # types are immutable; asked for every pin of every call checked
 def elementary(name: str) -> Type | None:
     canonical = canonical_type_name(name)
     if canonical in ("STRING", "WSTRING"):
@@ -179,7 +179,7 @@ def same(a: Type, b: Type) -> bool:
     if isinstance(a, StringType) and isinstance(b, StringType):
         return a.wide == b.wide
     if isinstance(a, PointerType) and isinstance(b, PointerType):
-        return same(a.target, b.target) or isinstance(a.target, Elementary) and a.target.name == "BYTE"
+        return same(a.target, b.target) or (isinstance(a.target, Elementary) and a.target.name == "BYTE")
     return a == b if not isinstance(a, (StructType, EnumType, FbType)) else a is b
 
 

@@ -62,7 +62,7 @@ class Workspace:
                 continue
             try:
                 stored = self.load(child.name)
-            except Exception:  # noqa: BLE001 - a broken project must not hide the others
+            except Exception:
                 continue
             infos.append(ProjectInfo(child.name, stored.revision, stored.modified, len(stored.project.pous)))
         return infos

@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from functools import lru_cache
-from typing import Callable
 
 from ...iec import stdlib as catalogue
 from ...ir import nodes as ir
@@ -40,7 +40,8 @@ def diagnostic(message: str, origin: ir.Origin | None, code: str = COMPILE_ERROR
 
 @dataclass(frozen=True)
 class PausePoint:
-    """Where the debug variant may halt: before a network (``network``), an ST statement (``statement``) or at an element's probe (``element``)."""
+    """Where the debug variant may halt: before a network (``network``), an ST statement (``statement``)
+    or at an element's probe (``element``)."""
 
     id: int
     kind: str

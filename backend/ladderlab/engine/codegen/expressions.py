@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 import re
-from functools import lru_cache
+from functools import cache, lru_cache
 
 from ...iec import values
 from ...ir import nodes as ir
@@ -36,7 +36,7 @@ def _atom(code: str) -> bool:
 
 def literal(value: object) -> str:
     """Python source for a stored constant: ``repr``, with non-finite floats by name, negatives in parentheses."""
-    if isinstance(value, bool) or isinstance(value, str):
+    if isinstance(value, (bool, str)):
         return repr(value)
     if isinstance(value, float):
         if math.isnan(value):
@@ -270,7 +270,7 @@ def _scalar_name(ty: t.IrType) -> str | None:
     return name
 
 
-@lru_cache(maxsize=None)
+@cache
 def _unparenthesised(template: str, atoms: tuple[bool, ...]) -> str:
     """``template`` without the parentheses around the arguments that are atoms (a name, an attribute or
     a non-negative number needs none); once per template and pattern, not per call."""

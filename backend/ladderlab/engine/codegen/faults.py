@@ -9,9 +9,9 @@ that frame (the instance, the function's locals, the globals).
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from types import FrameType
-from typing import Callable
 
 from ...ir import nodes as ir
 from ...ir import types as t
@@ -124,7 +124,7 @@ def make_fault(
         for var in statement_vars(statement) if statement is not None else ():
             try:
                 value = reader.read(var)
-            except Exception:  # noqa: BLE001 - best effort: e.g. the very index that is out of range
+            except Exception:
                 continue
             if not isinstance(value, (list, tuple)) and not hasattr(value, "__slots__"):
                 values[var_text(var)] = value

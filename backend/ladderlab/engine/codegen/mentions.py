@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Iterable, Iterator
+from collections.abc import Iterable, Iterator
 
 from ...ir import nodes as ir
 
@@ -81,11 +81,7 @@ def statement_vars(s: ir.Stmt) -> list[ir.Var]:
 
 def nested(s: ir.Stmt) -> Iterator[list[ir.Stmt]]:
     """The statement lists directly inside ``s``."""
-    if isinstance(s, ir.If):
-        for _, body in s.branches:
-            yield body
-        yield s.orelse
-    elif isinstance(s, ir.Case):
+    if isinstance(s, (ir.If, ir.Case)):
         for _, body in s.branches:
             yield body
         yield s.orelse

@@ -130,4 +130,4 @@ def program_globals(module: ModuleContext) -> list[ir.Slot]:
     return [p.slot for p in module.globals.places.values()]  # type: ignore[union-attr]
 
 
-__all__ = ["Generated", "VARIANTS", "generate"]
+__all__ = ["VARIANTS", "Generated", "generate"]

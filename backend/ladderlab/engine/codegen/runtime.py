@@ -17,7 +17,7 @@ into one stays valid.
 from __future__ import annotations
 
 import math
-from typing import Callable
+from collections.abc import Callable
 
 from ..errors import WATCHDOG, PlcRuntimeError, check_index, check_subrange, for_step_zero
 from ..stdlib import INLINE_NAMES, STANDARD_FBS
@@ -45,13 +45,13 @@ class Structure(Addressable):
     __slots__ = ()
     ll_fields: tuple[str, ...] = ()
 
-    def ll_copy(self) -> "Structure":
+    def ll_copy(self) -> Structure:
         new = self.__class__.__new__(self.__class__)
         for name in self.ll_fields:
             setattr(new, name, deep_copy(getattr(self, name)))
         return new
 
-    def ll_assign(self, source: "Structure") -> None:
+    def ll_assign(self, source: Structure) -> None:
         for name in self.ll_fields:
             mine = getattr(self, name)
             if is_composite_value(mine):

@@ -11,8 +11,8 @@ syntax tree of a whole 10,000-network program at once (engine/compile.py).
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from contextlib import contextmanager
-from typing import Iterator
 
 
 class Source:
@@ -57,7 +57,7 @@ class Source:
             return self.line_origins[lineno - 1]
         return None
 
-    def extend(self, other: "Source") -> None:
+    def extend(self, other: Source) -> None:
         """Append the lines of ``other`` (written at its own depth) with their origins and piece breaks."""
         self.breaks.extend(len(self.lines) + b for b in other.breaks)
         self.lines.extend(other.lines)

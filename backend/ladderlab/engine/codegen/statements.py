@@ -13,7 +13,9 @@ code: context.ProbeTable). In the debug variant every pause point is
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from contextlib import nullcontext
+from typing import ClassVar
 
 from ...iec.values import store_expr
 from ...ir import nodes as ir
@@ -439,7 +441,7 @@ class Statements:
 
         self._guarded(s.en, s.eno, emit)
 
-    _HANDLERS = {
+    _HANDLERS: ClassVar[dict[type, Callable[..., None]]] = {
         ir.Assign: _assign,
         ir.If: _if,
         ir.Case: _case,

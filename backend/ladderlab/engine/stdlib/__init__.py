@@ -16,9 +16,9 @@ docs/runtime.md.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
-from functools import lru_cache
-from typing import Callable
+from functools import cache
 
 from ...iec.stdlib import OPERATOR_OVERLOADS
 from ..errors import PlcRuntimeError, PlcWarning
@@ -122,7 +122,7 @@ STANDARD_FUNCTIONS: dict[str, StandardFunction] = _table()
 INLINE_NAMES: dict[str, object] = HELPERS
 
 
-@lru_cache(maxsize=None)
+@cache
 def specialised(name: str, arg_types: tuple[str, ...], result_type: str | None = None) -> Specialised:
     """Fast callable, checked callable and inline template for one call signature (cached)."""
     function = STANDARD_FUNCTIONS.get(name.upper())

@@ -21,9 +21,9 @@ from __future__ import annotations
 import ast
 import builtins
 import math
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from functools import lru_cache
-from typing import Callable, Mapping
+from functools import cache
 
 from ...iec.values import INLINE_NAMES, resolve, store_expr
 from ..errors import DOMAIN, INVALID_ARGUMENT, OVERFLOW, TRUNCATED, PlcWarning
@@ -67,7 +67,7 @@ def params(arity: int) -> list[str]:
 
 def compile_expr(expr: str, arity: int, names: Mapping[str, object] = {}) -> Callable:
     """``lambda a0, .., a{arity-1}: expr`` with the helpers as globals."""
-    return eval(f"lambda {', '.join(params(arity))}: {expr}", {**HELPERS, **names})  # noqa: S307 - own source
+    return eval(f"lambda {', '.join(params(arity))}: {expr}", {**HELPERS, **names})
 
 
 @dataclass(frozen=True)
@@ -162,7 +162,7 @@ def call_text(name: str, args: tuple) -> str:
 _UNSAFE = (ast.IfExp, ast.BoolOp, ast.Lambda, ast.NamedExpr, ast.comprehension)
 
 
-@lru_cache(maxsize=None)
+@cache
 def inline_template(body: str, arity: int) -> str | None:
     """``body`` with parameter i replaced by ``({i})``, or None when inlining could change what is evaluated."""
     tree = ast.parse(body, mode="eval")

@@ -16,8 +16,8 @@
 
 from __future__ import annotations
 
-from functools import lru_cache
-from typing import Callable
+from collections.abc import Callable
+from functools import cache
 
 from ...iec.elementary import ALIASES, ELEMENTARY
 from ...iec.value_text import format_value, parse
@@ -103,7 +103,7 @@ def conversion_names() -> dict[str, tuple[str, str]]:
     return {f"{a}_TO_{b}": (a, b) for a in spellings for b in spellings if resolve(a).name != resolve(b).name}
 
 
-@lru_cache(maxsize=None)
+@cache
 def converter(src: str, dst: str, checked: bool = False) -> Callable:
     """A specialised one-argument converter; ``checked`` returns (value, None | PlcWarning)."""
     built = specialise(f"{resolve(src).name}_TO_{resolve(dst).name}", conversion(src, dst), 1)

@@ -48,7 +48,7 @@ def pins(fb: FunctionBlock) -> dict[str, object]:
 class SR(FunctionBlock):
     """Set-dominant bistable: Q1 := S1 OR (NOT R AND Q1) (SFB-10)."""
 
-    __slots__ = ("S1", "R", "Q1")
+    __slots__ = ("Q1", "R", "S1")
     INPUTS, OUTPUTS = ("S1", "R"), ("Q1",)
 
     def __init__(self) -> None:
@@ -61,7 +61,7 @@ class SR(FunctionBlock):
 class RS(FunctionBlock):
     """Reset-dominant bistable: Q1 := NOT R1 AND (S OR Q1) (SFB-10)."""
 
-    __slots__ = ("S", "R1", "Q1")
+    __slots__ = ("Q1", "R1", "S")
     INPUTS, OUTPUTS = ("S", "R1"), ("Q1",)
 
     def __init__(self) -> None:
@@ -74,7 +74,7 @@ class RS(FunctionBlock):
 class R_TRIG(FunctionBlock):
     """Rising edge: Q := CLK AND NOT M; M := CLK (SFB-11)."""
 
-    __slots__ = ("CLK", "Q", "M")
+    __slots__ = ("CLK", "M", "Q")
     INPUTS, OUTPUTS, MEMORY = ("CLK",), ("Q",), ("M",)
 
     def __init__(self) -> None:
@@ -89,7 +89,7 @@ class R_TRIG(FunctionBlock):
 class F_TRIG(FunctionBlock):
     """Falling edge: Q := M AND NOT CLK; M := CLK, M starting FALSE (SFB-12 [REC])."""
 
-    __slots__ = ("CLK", "Q", "M")
+    __slots__ = ("CLK", "M", "Q")
     INPUTS, OUTPUTS, MEMORY = ("CLK",), ("Q",), ("M",)
 
     def __init__(self) -> None:
@@ -104,7 +104,7 @@ class F_TRIG(FunctionBlock):
 class _Counter(FunctionBlock):
     """Common state of the counters: the type of PV/CV sets the counting limits."""
 
-    __slots__ = ("PV", "CV", "_type", "_min", "_max")
+    __slots__ = ("CV", "PV", "_max", "_min", "_type")
     CV_TYPE = "INT"
 
     def __init__(self, cv_type: str | None = None) -> None:
@@ -121,7 +121,7 @@ class _Counter(FunctionBlock):
 class CTU(_Counter):
     """Up counter (SFB-13): IF R THEN CV := 0 ELSIF CU(edge) AND CV < max THEN CV := CV + 1; Q := CV >= PV."""
 
-    __slots__ = ("CU", "R", "Q", "_cu")
+    __slots__ = ("CU", "Q", "R", "_cu")
     INPUTS, OUTPUTS, MEMORY = ("CU", "R", "PV"), ("Q", "CV"), ()
 
     def __init__(self, cv_type: str | None = None) -> None:
@@ -132,7 +132,7 @@ class CTU(_Counter):
         cu = self.CU
         if self.R:
             self.CV = 0
-        elif cu and not self._cu and self.CV < self._max:
+        elif cu and not self._cu and self._max > self.CV:
             self.CV += 1
         self._cu = cu
         self.Q = self.CV >= self.PV
@@ -152,7 +152,7 @@ class CTD(_Counter):
         cd = self.CD
         if self.LD:
             self.CV = self.PV
-        elif cd and not self._cd and self.CV > self._min:
+        elif cd and not self._cd and self._min < self.CV:
             self.CV -= 1
         self._cd = cd
         self.Q = self.CV <= 0
@@ -161,7 +161,7 @@ class CTD(_Counter):
 class CTUD(_Counter):
     """Up/down counter (SFB-15): R over LD over counting; edges of CU and CD in one call cancel."""
 
-    __slots__ = ("CU", "CD", "R", "LD", "QU", "QD", "_cu", "_cd")
+    __slots__ = ("CD", "CU", "LD", "QD", "QU", "R", "_cd", "_cu")
     INPUTS, OUTPUTS, MEMORY = ("CU", "CD", "R", "LD", "PV"), ("QU", "QD", "CV"), ()
 
     def __init__(self, cv_type: str | None = None) -> None:
@@ -177,9 +177,9 @@ class CTUD(_Counter):
         elif self.LD:
             self.CV = self.PV
         elif up and not down:
-            if self.CV < self._max:
+            if self._max > self.CV:
                 self.CV += 1
-        elif down and not up and self.CV > self._min:
+        elif down and not up and self._min < self.CV:
             self.CV -= 1
         self.QU = self.CV >= self.PV
         self.QD = self.CV <= 0
@@ -188,7 +188,7 @@ class CTUD(_Counter):
 class _Timer(FunctionBlock):
     """IN, PT, Q, ET plus the start time of the running interval."""
 
-    __slots__ = ("IN", "PT", "Q", "ET", "_start", "_running")
+    __slots__ = ("ET", "IN", "PT", "Q", "_running", "_start")
     INPUTS, OUTPUTS = ("IN", "PT"), ("Q", "ET")
 
     def __init__(self) -> None:

@@ -103,7 +103,7 @@ def _attach_values(graph: Graph, groups: list[NetworkGroup]) -> None:
             linked = [c for c, _, _ in consumers.get(element.local_id, []) if c in where]
             linked += [c.ref for conns in element.inputs.values() for c in conns if c.ref in where]
             if linked:
-                target = min((where[c] for c in linked))
+                target = min(where[c] for c in linked)
                 groups[target].members.append(element.local_id)
                 where[element.local_id] = target
             else:

@@ -210,7 +210,7 @@ class LdImporter:
             if reader is not None:
                 writers = {w for w in writers if not reaches(self.consumers, reader, w)}
             return (negate(text) if negated else text), writers
-        if source.tag != "block" or self.is_power(conn) and not source.node.get("instanceName"):
+        if source.tag != "block" or (self.is_power(conn) and not source.node.get("instanceName")):
             return None
         if conn.ref in self.inline:
             return self.inline[conn.ref]

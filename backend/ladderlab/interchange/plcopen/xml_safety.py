@@ -49,7 +49,7 @@ class _LineRecorder(ET.TreeBuilder):
         self.expat = None
         self.lines: dict[int, int] = {}
 
-    def start(self, tag, attrs):  # noqa: ANN001 - TreeBuilder's signature
+    def start(self, tag, attrs):
         element = super().start(tag, attrs)
         if self.expat is not None:
             self.lines[id(element)] = self.expat.CurrentLineNumber

@@ -116,7 +116,7 @@ class _Network:
 
     def flagged(self, value: PinValue, flags: fbd.PinFlags | None, node: str, pin: str) -> PinValue:
         """An input with its pin flags: inversion first, then edge detection."""
-        if flags is None or not flags.negated and flags.edge is None:
+        if flags is None or (not flags.negated and flags.edge is None):
             return value
         expr = self.read(value)
         if flags.negated:
