@@ -21,11 +21,12 @@ test: $(VENV)/.installed chromium $(FRONTEND_DEPS) frontend lint
 	cd frontend && npm run --silent check:types && npm test --silent
 	$(PY) -m pytest -q $(PYTEST_ARGS)
 
-# Lint, format and layer checks (docs/architecture.md); `ruff format .` fixes the format.
-lint: $(VENV)/.installed
+# Lint, format and layer checks (docs/architecture.md); `ruff format .` and `npm run format` (frontend) fix the format.
+lint: $(VENV)/.installed $(FRONTEND_DEPS)
 	$(VENV)/bin/ruff check .
 	$(VENV)/bin/ruff format --check .
 	$(VENV)/bin/lint-imports
+	cd frontend && npm run --silent format:check
 
 test-slow: $(VENV)/.installed chromium
 	LADDERLAB_HYPOTHESIS=thorough $(PY) -m pytest -q -m "slow or not slow" $(PYTEST_ARGS)

@@ -52,9 +52,7 @@ function simplify(node, keepTitle) {
     if (key === "discriminator") continue;
     if (SCHEMA_MAPS.includes(key) && value && typeof value === "object") {
       const isDefs = key === "$defs" || key === "definitions";
-      out[key] = Object.fromEntries(
-        Object.entries(value).map(([name, sub]) => [name, simplify(sub, isDefs)]),
-      );
+      out[key] = Object.fromEntries(Object.entries(value).map(([name, sub]) => [name, simplify(sub, isDefs)]));
     } else if (SCHEMA_SINGLE.includes(key) || SCHEMA_LISTS.includes(key)) {
       out[key] = simplify(value, false);
     } else {

@@ -77,7 +77,14 @@ function NewProject() {
   };
   return (
     <form className="new-project" onSubmit={(e) => void submit(e)} aria-label="New project">
-      <input aria-label="Project name" autoFocus value={name} onChange={(e) => setName(e.target.value)} placeholder="project name" spellCheck={false} />
+      <input
+        aria-label="Project name"
+        autoFocus
+        value={name}
+        onChange={(e) => setName(e.target.value)}
+        placeholder="project name"
+        spellCheck={false}
+      />
       <button type="submit" disabled={busy}>
         Create
       </button>
@@ -141,7 +148,11 @@ function MainArea() {
   useEffect(() => {
     if (selected) void open(selected);
   }, [selected, open]);
-  return <main className="main">{selected ? <WorkspaceView /> : <p className="placeholder">Select a project to open it.</p>}</main>;
+  return (
+    <main className="main">
+      {selected ? <WorkspaceView /> : <p className="placeholder">Select a project to open it.</p>}
+    </main>
+  );
 }
 
 export default function App() {

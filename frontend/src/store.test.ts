@@ -9,7 +9,12 @@ function fakeApi(overrides: Partial<Api> = {}): Api {
   return {
     getHealth: vi.fn(async (): Promise<Health> => ({ status: "ok", version: "0.1.0" })),
     listProjects: vi.fn(async () => [demo, alpha]),
-    createProject: vi.fn(async (name: string) => ({ name, revision: "r0", modified: "2024-03-01T00:00:00Z", pou_count: 0 })),
+    createProject: vi.fn(async (name: string) => ({
+      name,
+      revision: "r0",
+      modified: "2024-03-01T00:00:00Z",
+      pou_count: 0,
+    })),
     ...overrides,
   };
 }

@@ -1,5 +1,16 @@
 import { describe, expect, it, vi } from "vitest";
-import { ApiError, errorFromResponse, getHealth, getLibrary, getProject, getSymbols, listProjects, requestJson, saveProject, SaveConflictError } from "./client";
+import {
+  ApiError,
+  errorFromResponse,
+  getHealth,
+  getLibrary,
+  getProject,
+  getSymbols,
+  listProjects,
+  requestJson,
+  saveProject,
+  SaveConflictError,
+} from "./client";
 
 function jsonResponse(body: unknown, status = 200, statusText = ""): Response {
   return new Response(JSON.stringify(body), {
@@ -31,9 +42,7 @@ describe("errorFromResponse", () => {
       { loc: ["body", "name"], msg: "String should have at least 1 character", type: "string_too_short" },
     ];
     const err = await errorFromResponse(jsonResponse({ detail }, 422, "Unprocessable Entity"));
-    expect(err.message).toBe(
-      "body.pous.0.name: Field required; body.name: String should have at least 1 character",
-    );
+    expect(err.message).toBe("body.pous.0.name: Field required; body.name: String should have at least 1 character");
     expect(err.status).toBe(422);
     expect(err.detail).toEqual(detail);
   });
@@ -99,7 +108,12 @@ describe("endpoints", () => {
   });
 
   it("getProject escapes the project name and returns the document", async () => {
-    const doc = { name: "a b/c", revision: "r1", modified: "2024-01-01T00:00:00Z", project: { name: "a b/c", pous: [] } };
+    const doc = {
+      name: "a b/c",
+      revision: "r1",
+      modified: "2024-01-01T00:00:00Z",
+      project: { name: "a b/c", pous: [] },
+    };
     const fetchMock = stubFetch(async () => jsonResponse(doc));
     await expect(getProject("a b/c")).resolves.toEqual(doc);
     expect(fetchMock.mock.calls[0]![0]).toBe("/api/projects/a%20b%2Fc");
@@ -107,7 +121,10 @@ describe("endpoints", () => {
 
   it("saveProject sends the revision in If-Match and the project as JSON", async () => {
     const fetchMock = stubFetch(async () => jsonResponse({ revision: "r2", modified: "2024-01-02T00:00:00Z" }));
-    await expect(saveProject("demo", "r1", { name: "demo" })).resolves.toEqual({ revision: "r2", modified: "2024-01-02T00:00:00Z" });
+    await expect(saveProject("demo", "r1", { name: "demo" })).resolves.toEqual({
+      revision: "r2",
+      modified: "2024-01-02T00:00:00Z",
+    });
     const [url, init] = fetchMock.mock.calls[0]!;
     expect(url).toBe("/api/projects/demo");
     expect(init?.method).toBe("PUT");
@@ -116,7 +133,12 @@ describe("endpoints", () => {
   });
 
   it("saveProject turns a 409 into a SaveConflictError with both revisions", async () => {
-    const detail = { message: "changed since r1", base_revision: "r1", current_revision: "r9", current_modified: "2024-03-01T08:00:00Z" };
+    const detail = {
+      message: "changed since r1",
+      base_revision: "r1",
+      current_revision: "r9",
+      current_modified: "2024-03-01T08:00:00Z",
+    };
     stubFetch(async () => jsonResponse({ detail }, 409, "Conflict"));
     const err = await saveProject("demo", "r1", { name: "demo" }).catch((e: unknown) => e);
     expect(err).toBeInstanceOf(SaveConflictError);
@@ -133,6 +155,9 @@ describe("endpoints", () => {
     const fetchMock = stubFetch(async () => jsonResponse([]));
     await getLibrary("my proj");
     await getSymbols("demo", "Main");
-    expect(fetchMock.mock.calls.map((c) => c[0])).toEqual(["/api/library?project=my%20proj", "/api/projects/demo/pous/Main/symbols"]);
+    expect(fetchMock.mock.calls.map((c) => c[0])).toEqual([
+      "/api/library?project=my%20proj",
+      "/api/projects/demo/pous/Main/symbols",
+    ]);
   });
 });

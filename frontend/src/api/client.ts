@@ -1,5 +1,14 @@
 // Typed helpers for the LadderLab HTTP API (served under /api by the FastAPI backend).
-import type { CheckReport, ConflictDetail, LibraryEntry, ProjectDocument, ProjectSummary, SaveResult, StExport, SymbolTable } from "../generated/api";
+import type {
+  CheckReport,
+  ConflictDetail,
+  LibraryEntry,
+  ProjectDocument,
+  ProjectSummary,
+  SaveResult,
+  StExport,
+  SymbolTable,
+} from "../generated/api";
 import type { Project } from "../generated/project";
 
 export type { ProjectSummary };
@@ -125,7 +134,8 @@ export async function saveProject(name: string, revision: string, project: Proje
       body: JSON.stringify(project),
     });
   } catch (err) {
-    if (err instanceof ApiError && err.status === 409 && isConflict(err.detail)) throw new SaveConflictError(err.detail);
+    if (err instanceof ApiError && err.status === 409 && isConflict(err.detail))
+      throw new SaveConflictError(err.detail);
     throw err;
   }
 }

@@ -29,7 +29,8 @@ describe("DebugBar (issue 9: stepping a halted scan)", () => {
     halt({ pou: "MAIN", instance: "MAIN", network: "n2" });
     expect(screen.getByRole("status").textContent).toBe("Halted at MAIN, network 2");
     expect(reveal).toHaveBeenLastCalledWith({ pou: "MAIN", network: "n2", element: undefined, line: undefined });
-    for (const name of ["Step network", "Step statement", "Step cycle", "Continue"]) fireEvent.click(screen.getByRole("button", { name }));
+    for (const name of ["Step network", "Step statement", "Step cycle", "Continue"])
+      fireEvent.click(screen.getByRole("button", { name }));
     expect(send.mock.calls.map(([m]) => m)).toEqual([
       { type: "step", granularity: "network" },
       { type: "step", granularity: "statement" },

@@ -18,7 +18,10 @@ export const DEBUG_KEYS: [string, string][] = [
 ];
 
 /** F5 continues a halted scan; F10/F11 step (from a stopped simulation: into the next scan). */
-export function debugKey(e: Pick<KeyboardEvent, "key" | "altKey" | "ctrlKey" | "metaKey" | "shiftKey">, halted: boolean): (() => void) | null {
+export function debugKey(
+  e: Pick<KeyboardEvent, "key" | "altKey" | "ctrlKey" | "metaKey" | "shiftKey">,
+  halted: boolean,
+): (() => void) | null {
   if (e.altKey || e.ctrlKey || e.metaKey || e.shiftKey) return null;
   const debug = debugStore.getState();
   if (e.key === "F5" && halted) return debug.resume;

@@ -18,7 +18,8 @@ export function sameBreakpoint(a: Breakpoint, b: Breakpoint): boolean {
 
 /** One string per breakpoint, equal exactly when `sameBreakpoint` holds (for sets and React keys). */
 export function breakpointKey(bp: Breakpoint): string {
-  const where = "network" in bp ? `network:${bp.network}` : "element" in bp ? `element:${bp.element}` : `line:${bp.line}`;
+  const where =
+    "network" in bp ? `network:${bp.network}` : "element" in bp ? `element:${bp.element}` : `line:${bp.line}`;
   return `${bp.pou.toUpperCase()}|${where}`;
 }
 
@@ -37,7 +38,10 @@ export function clearMessage(bp: Breakpoint): BreakpointClear {
 }
 
 /** The list with `bp` added, or removed if it was there, and the message that tells the server. */
-export function toggle(list: readonly Breakpoint[], bp: Breakpoint): { list: Breakpoint[]; message: BreakpointSet | BreakpointClear } {
+export function toggle(
+  list: readonly Breakpoint[],
+  bp: Breakpoint,
+): { list: Breakpoint[]; message: BreakpointSet | BreakpointClear } {
   return list.some((b) => sameBreakpoint(b, bp))
     ? { list: list.filter((b) => !sameBreakpoint(b, bp)), message: clearMessage(bp) }
     : { list: [...list, bp], message: setMessage(bp) };
@@ -54,7 +58,9 @@ export function describeBreakpoint(bp: Breakpoint, networkIds: readonly string[]
 
 /** Where a halt is, in words: POU (instance), network/element/line. */
 export function describeHalt(at: At, networkIds: readonly string[] = []): string {
-  const parts = [at.instance && at.instance.toUpperCase() !== at.pou.toUpperCase() ? `${at.pou} (${at.instance})` : at.pou];
+  const parts = [
+    at.instance && at.instance.toUpperCase() !== at.pou.toUpperCase() ? `${at.pou} (${at.instance})` : at.pou,
+  ];
   if (at.network) {
     const index = networkIds.indexOf(at.network);
     parts.push(`network ${index >= 0 ? index + 1 : at.network}`);

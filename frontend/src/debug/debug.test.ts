@@ -3,7 +3,16 @@ import fc from "fast-check";
 import { describe, expect, it, vi } from "vitest";
 import type { SimulationInfo } from "../generated/api";
 import { createOnlineStore, type SocketLike } from "../online/store";
-import { breakpointKey, clearMessage, describeBreakpoint, describeHalt, sameBreakpoint, setMessage, toggle, type Breakpoint } from "./breakpoints";
+import {
+  breakpointKey,
+  clearMessage,
+  describeBreakpoint,
+  describeHalt,
+  sameBreakpoint,
+  setMessage,
+  toggle,
+  type Breakpoint,
+} from "./breakpoints";
 import { createDebugStore, isEnabled, loadBreakpoints } from "./store";
 
 const arbBreakpoint: fc.Arbitrary<Breakpoint> = fc.oneof(
@@ -15,7 +24,10 @@ const arbBreakpoint: fc.Arbitrary<Breakpoint> = fc.oneof(
 describe("breakpoint list (issue 9: toggle a breakpoint on a network or element)", () => {
   it("toggles: set when absent, clear when present, with the matching protocol message", () => {
     const first = toggle([], { pou: "Main", network: "n2" });
-    expect(first).toEqual({ list: [{ pou: "Main", network: "n2" }], message: { type: "breakpoint_set", pou: "Main", network: "n2" } });
+    expect(first).toEqual({
+      list: [{ pou: "Main", network: "n2" }],
+      message: { type: "breakpoint_set", pou: "Main", network: "n2" },
+    });
     const second = toggle(first.list, { pou: "MAIN", network: "n2" });
     expect(second).toEqual({ list: [], message: { type: "breakpoint_clear", pou: "MAIN", network: "n2" } });
     expect(toggle(first.list, { pou: "Main", element: "n2" }).message.type).toBe("breakpoint_set");
@@ -25,7 +37,8 @@ describe("breakpoint list (issue 9: toggle a breakpoint on a network or element)
     fc.assert(
       fc.property(fc.array(arbBreakpoint, { maxLength: 12 }), arbBreakpoint, (steps, bp) => {
         const list = steps.reduce<Breakpoint[]>((acc, b) => toggle(acc, b).list, []);
-        for (let i = 0; i < list.length; i++) for (let j = i + 1; j < list.length; j++) expect(sameBreakpoint(list[i]!, list[j]!)).toBe(false);
+        for (let i = 0; i < list.length; i++)
+          for (let j = i + 1; j < list.length; j++) expect(sameBreakpoint(list[i]!, list[j]!)).toBe(false);
         const twice = toggle(toggle(list, bp).list, bp).list;
         expect(twice.filter((b) => !sameBreakpoint(b, bp))).toEqual(list.filter((b) => !sameBreakpoint(b, bp)));
         expect(twice.some((b) => sameBreakpoint(b, bp))).toBe(list.some((b) => sameBreakpoint(b, bp)));
@@ -48,7 +61,9 @@ describe("breakpoint list (issue 9: toggle a breakpoint on a network or element)
     expect(describeBreakpoint({ pou: "Main", network: "n7" }, ["n3", "n7"])).toBe("Main, network 2");
     expect(describeBreakpoint({ pou: "Main", network: "zz" }, ["n3"])).toBe("Main, network zz");
     expect(describeBreakpoint({ pou: "Main", element: "c1" })).toBe("Main, element c1");
-    expect(describeHalt({ pou: "Blink", instance: "MAIN.B1", network: "n3", element: "c2" }, ["n3"])).toBe("Blink (MAIN.B1), network 1, element c2");
+    expect(describeHalt({ pou: "Blink", instance: "MAIN.B1", network: "n3", element: "c2" }, ["n3"])).toBe(
+      "Blink (MAIN.B1), network 1, element c2",
+    );
     expect(describeHalt({ pou: "Main", instance: "MAIN", line: 4 })).toBe("Main, line 4");
   });
 });
@@ -85,7 +100,10 @@ describe("debug store (issue 9: breakpoints, continue, step)", () => {
     toggle({ pou: "Main", element: "q1" });
     setEnabled({ pou: "MAIN", network: "n1" }, false);
     setEnabled({ pou: "Main", network: "n1" }, false); // already disabled: nothing sent
-    expect(store.getState().breakpoints).toEqual([{ pou: "Main", network: "n1" }, { pou: "Main", element: "q1" }]);
+    expect(store.getState().breakpoints).toEqual([
+      { pou: "Main", network: "n1" },
+      { pou: "Main", element: "q1" },
+    ]);
     expect(isEnabled(store.getState(), { pou: "Main", network: "n1" })).toBe(false);
     expect(isEnabled(store.getState(), { pou: "Main", element: "q1" })).toBe(true);
     setEnabled({ pou: "Main", network: "n1" }, true);
@@ -113,7 +131,10 @@ describe("debug store (issue 9: breakpoints, continue, step)", () => {
   it("the simulation holds exactly the enabled breakpoints after any sequence of operations", () => {
     type Op = { kind: "toggle" | "remove" | "enable" | "disable"; bp: Breakpoint } | { kind: "clearAll" };
     const arbOp: fc.Arbitrary<Op> = fc.oneof(
-      fc.record({ kind: fc.constantFrom("toggle" as const, "remove" as const, "enable" as const, "disable" as const), bp: arbBreakpoint }),
+      fc.record({
+        kind: fc.constantFrom("toggle" as const, "remove" as const, "enable" as const, "disable" as const),
+        bp: arbBreakpoint,
+      }),
       fc.constant({ kind: "clearAll" as const }),
     );
     fc.assert(
@@ -139,7 +160,12 @@ describe("debug store (issue 9: breakpoints, continue, step)", () => {
           else s.setEnabled(op.bp, op.kind === "enable");
         }
         const state = store.getState();
-        expect([...server.keys()].sort()).toEqual(state.breakpoints.filter((b) => isEnabled(state, b)).map(breakpointKey).sort());
+        expect([...server.keys()].sort()).toEqual(
+          state.breakpoints
+            .filter((b) => isEnabled(state, b))
+            .map(breakpointKey)
+            .sort(),
+        );
         expect(state.disabled.every((key) => state.breakpoints.some((b) => breakpointKey(b) === key))).toBe(true);
       }),
     );
@@ -149,9 +175,22 @@ describe("debug store (issue 9: breakpoints, continue, step)", () => {
     const sockets: { sent: unknown[]; readyState: number; onopen: SocketLike["onopen"] }[] = [];
     const info = { id: "s1" } as SimulationInfo;
     const online = createOnlineStore(
-      { createSimulation: async () => info, getSimulation: async () => info, resetSimulation: async () => info, deleteSimulation: async () => undefined },
+      {
+        createSimulation: async () => info,
+        getSimulation: async () => info,
+        resetSimulation: async () => info,
+        deleteSimulation: async () => undefined,
+      },
       () => {
-        const s = { sent: [] as unknown[], readyState: 0, onopen: null, onmessage: null, onclose: null, send: (d: string) => s.sent.push(JSON.parse(d)), close: () => undefined };
+        const s = {
+          sent: [] as unknown[],
+          readyState: 0,
+          onopen: null,
+          onmessage: null,
+          onclose: null,
+          send: (d: string) => s.sent.push(JSON.parse(d)),
+          close: () => undefined,
+        };
         sockets.push(s);
         return s as unknown as SocketLike;
       },
@@ -169,7 +208,8 @@ describe("debug store (issue 9: breakpoints, continue, step)", () => {
       socket.onopen?.call(socket as unknown as WebSocket, new Event("open"));
       return socket;
     };
-    const breakpointMessages = (socket: { sent: unknown[] }) => socket.sent.filter((m) => (m as { type: string }).type.startsWith("breakpoint"));
+    const breakpointMessages = (socket: { sent: unknown[] }) =>
+      socket.sent.filter((m) => (m as { type: string }).type.startsWith("breakpoint"));
     const first = await connect();
     expect(breakpointMessages(first)).toEqual([
       { type: "breakpoint_set", pou: "Main", network: "n2" },
@@ -210,7 +250,10 @@ describe("breakpoints survive a page reload (kept per project in localStorage)",
     const reloaded = createDebugStore(() => false, null, kept);
     expect(reloaded.getState().breakpoints).toEqual([]);
     reloaded.getState().open("motor");
-    expect(reloaded.getState().breakpoints).toEqual([{ pou: "Main", network: "run_timer" }, { pou: "Main", line: 4 }]);
+    expect(reloaded.getState().breakpoints).toEqual([
+      { pou: "Main", network: "run_timer" },
+      { pou: "Main", line: 4 },
+    ]);
     expect(isEnabled(reloaded.getState(), { pou: "Main", line: 4 })).toBe(false);
     reloaded.getState().open("tank");
     expect(reloaded.getState().breakpoints).toEqual([{ pou: "Fill", element: "valve" }]);
@@ -235,14 +278,26 @@ describe("breakpoints survive a page reload (kept per project in localStorage)",
 
   it("an unreadable or foreign entry gives no breakpoints instead of an error", () => {
     const kept = storage();
-    for (const text of ["{not json", "[1, 2]", JSON.stringify({ breakpoints: [{ pou: 3 }, { pou: "Main" }, { pou: "Main", line: 2.5 },
-      { pou: "Main", line: 2, note: "x" }, { pou: "MAIN", line: 2 }], disabled: ["MAIN|line:2", "MAIN|line:9", 7] })]) {
+    for (const text of [
+      "{not json",
+      "[1, 2]",
+      JSON.stringify({
+        breakpoints: [
+          { pou: 3 },
+          { pou: "Main" },
+          { pou: "Main", line: 2.5 },
+          { pou: "Main", line: 2, note: "x" },
+          { pou: "MAIN", line: 2 },
+        ],
+        disabled: ["MAIN|line:2", "MAIN|line:9", 7],
+      }),
+    ]) {
       kept.setItem("ladderlab:breakpoints:p", text);
       const debug = createDebugStore(() => false, null, kept).getState();
       debug.open("p");
       const { breakpoints, disabled } = loadBreakpoints("p", kept);
-      expect(breakpoints).toEqual(text.startsWith("{\"") ? [{ pou: "Main", line: 2 }] : []);
-      expect(disabled).toEqual(text.startsWith("{\"") ? ["MAIN|line:2"] : []);
+      expect(breakpoints).toEqual(text.startsWith('{"') ? [{ pou: "Main", line: 2 }] : []);
+      expect(disabled).toEqual(text.startsWith('{"') ? ["MAIN|line:2"] : []);
     }
   });
 });

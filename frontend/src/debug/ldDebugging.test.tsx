@@ -32,7 +32,10 @@ function setup(body: LdBody = motorMain) {
   }
   const view = render(<Host />);
   const network = (n: number) => view.container.querySelectorAll("svg.ld-network")[n - 1]!;
-  const dots = () => [...view.container.querySelectorAll(".ld-breakpoint")].map((d) => `${d.getAttribute("aria-label")}${d.classList.contains("ld-breakpoint-disabled") ? " hollow" : ""}`);
+  const dots = () =>
+    [...view.container.querySelectorAll(".ld-breakpoint")].map(
+      (d) => `${d.getAttribute("aria-label")}${d.classList.contains("ld-breakpoint-disabled") ? " hollow" : ""}`,
+    );
   const hit = (id: string) => view.container.querySelector(`[data-id="${id}"] .ld-hit`)!;
   const editor = screen.getByRole("application", { name: "Ladder diagram editor" });
   return { ...view, network, dots, hit, editor };
@@ -46,7 +49,9 @@ describe("breakpoints in the LD diagram (issue 9)", () => {
     fireEvent.click(screen.getByRole("button", { name: "Toggle breakpoint on network 2" }));
     expect(debugStore.getState().breakpoints).toEqual([{ pou: "Main", network: "run_timer" }]);
     expect(t.dots()).toEqual(["Breakpoint on network 2"]);
-    expect(within(t.network(2) as HTMLElement).getAllByRole("img", { name: "Breakpoint on network 2" })).toHaveLength(1);
+    expect(within(t.network(2) as HTMLElement).getAllByRole("img", { name: "Breakpoint on network 2" })).toHaveLength(
+      1,
+    );
     act(() => debugStore.getState().setEnabled({ pou: "Main", network: "run_timer" }, false));
     expect(t.dots()).toEqual(["Breakpoint on network 2 (disabled) hollow"]);
     fireEvent.click(screen.getByRole("button", { name: "Toggle breakpoint on network 2" }));
@@ -80,11 +85,26 @@ describe("breakpoints in the LD diagram (issue 9)", () => {
 
   it("highlights the network (and element) where the scan halted, and moves with a step", () => {
     const t = setup();
-    const halted = () => [...t.container.querySelectorAll(".ld-network.ld-halted, .ld-element.ld-halted")].map((e) => e.getAttribute("data-network") ?? e.getAttribute("data-id"));
+    const halted = () =>
+      [...t.container.querySelectorAll(".ld-network.ld-halted, .ld-element.ld-halted")].map(
+        (e) => e.getAttribute("data-network") ?? e.getAttribute("data-id"),
+      );
     expect(halted()).toEqual([]);
-    act(() => onlineStore.setState({ monitor: { ...emptyMonitor, state: "halted", at: { pou: "MAIN", instance: "MAIN", network: "count_starts" } } }));
+    act(() =>
+      onlineStore.setState({
+        monitor: { ...emptyMonitor, state: "halted", at: { pou: "MAIN", instance: "MAIN", network: "count_starts" } },
+      }),
+    );
     expect(halted()).toEqual(["count_starts"]);
-    act(() => onlineStore.setState({ monitor: { ...emptyMonitor, state: "halted", at: { pou: "MAIN", instance: "MAIN", network: "seal_in", element: "motor" } } }));
+    act(() =>
+      onlineStore.setState({
+        monitor: {
+          ...emptyMonitor,
+          state: "halted",
+          at: { pou: "MAIN", instance: "MAIN", network: "seal_in", element: "motor" },
+        },
+      }),
+    );
     expect(halted()).toEqual(["seal_in", "motor"]);
     act(() => onlineStore.setState({ monitor: { ...emptyMonitor, state: "running", at: null } }));
     expect(halted()).toEqual([]);
@@ -96,11 +116,22 @@ describe("ldDebugMarks", () => {
     const marks = ldDebugMarks(
       "Main",
       motorMain,
-      [{ pou: "MAIN", network: "lamp" }, { pou: "Main", element: "ton" }, { pou: "Other", network: "lamp" }, { pou: "Main", line: 3 }],
+      [
+        { pou: "MAIN", network: "lamp" },
+        { pou: "Main", element: "ton" },
+        { pou: "Other", network: "lamp" },
+        { pou: "Main", line: 3 },
+      ],
       ["MAIN|element:ton"],
       { pou: "main", instance: "MAIN", element: "running" },
     );
-    expect(marks).toEqual({ networks: { lamp: true }, elements: { ton: false }, halted: { network: "run_timer", element: "running" } });
-    expect(ldDebugMarks("Main", motorMain, [], [], { pou: "Blinker", instance: "MAIN.BLINK", line: 2 }).halted).toBeNull();
+    expect(marks).toEqual({
+      networks: { lamp: true },
+      elements: { ton: false },
+      halted: { network: "run_timer", element: "running" },
+    });
+    expect(
+      ldDebugMarks("Main", motorMain, [], [], { pou: "Blinker", instance: "MAIN.BLINK", line: 2 }).halted,
+    ).toBeNull();
   });
 });

@@ -12,7 +12,13 @@ import { debugStore, isEnabled, useDebug } from "./store";
 const samePou = (a: string, b: string) => a.toUpperCase() === b.toUpperCase();
 
 /** The marks of POU `pou`: its network and element breakpoints (enabled or not) and where `halted` stands in it. */
-export function ldDebugMarks(pou: string, body: LdBody, breakpoints: readonly Breakpoint[], disabled: readonly string[], halted: At | null): DebugMarks {
+export function ldDebugMarks(
+  pou: string,
+  body: LdBody,
+  breakpoints: readonly Breakpoint[],
+  disabled: readonly string[],
+  halted: At | null,
+): DebugMarks {
   const networks: Record<string, boolean> = {};
   const elements: Record<string, boolean> = {};
   for (const bp of breakpoints) {
@@ -21,7 +27,10 @@ export function ldDebugMarks(pou: string, body: LdBody, breakpoints: readonly Br
     else if ("element" in bp) elements[bp.element] = isEnabled({ disabled }, bp);
   }
   const element = halted?.element ?? null;
-  const network = halted && samePou(halted.pou, pou) ? (halted.network ?? (element ? locate(body, element)?.network : undefined)) : undefined;
+  const network =
+    halted && samePou(halted.pou, pou)
+      ? (halted.network ?? (element ? locate(body, element)?.network : undefined))
+      : undefined;
   return { networks, elements, halted: network ? { network, element } : null };
 }
 

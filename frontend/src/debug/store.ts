@@ -7,7 +7,15 @@ import { useStore } from "zustand";
 import { createStore, type StoreApi } from "zustand/vanilla";
 import type { ClientMessage } from "../online/protocol";
 import { onlineStore, type OnlineState } from "../online/store";
-import { breakpointKey, clearMessage, sameBreakpoint, setMessage, toggle, type Breakpoint, type StepGranularity } from "./breakpoints";
+import {
+  breakpointKey,
+  clearMessage,
+  sameBreakpoint,
+  setMessage,
+  toggle,
+  type Breakpoint,
+  type StepGranularity,
+} from "./breakpoints";
 
 export interface DebugState {
   /** The project the breakpoints belong to (null: none open yet). */
@@ -30,7 +38,8 @@ export interface DebugState {
 }
 
 /** Whether a listed breakpoint is enabled (one not listed counts as enabled: it has no state yet). */
-export const isEnabled = (state: { readonly disabled: readonly string[] }, bp: Breakpoint): boolean => !state.disabled.includes(breakpointKey(bp));
+export const isEnabled = (state: { readonly disabled: readonly string[] }, bp: Breakpoint): boolean =>
+  !state.disabled.includes(breakpointKey(bp));
 
 const storageKey = (project: string) => `ladderlab:breakpoints:${project}`;
 
@@ -47,7 +56,10 @@ function asBreakpoint(value: unknown): Breakpoint | null {
 /** `project`'s kept breakpoints; nothing (not an error) when none were kept or the entry is unreadable. */
 export function loadBreakpoints(project: string, storage: Storage): Pick<DebugState, "breakpoints" | "disabled"> {
   try {
-    const kept = JSON.parse(storage.getItem(storageKey(project)) ?? "null") as { breakpoints?: unknown; disabled?: unknown } | null;
+    const kept = JSON.parse(storage.getItem(storageKey(project)) ?? "null") as {
+      breakpoints?: unknown;
+      disabled?: unknown;
+    } | null;
     const breakpoints: Breakpoint[] = [];
     const keys = new Set<string>();
     for (const bp of Array.isArray(kept?.breakpoints) ? kept.breakpoints.map(asBreakpoint) : []) {
@@ -56,7 +68,9 @@ export function loadBreakpoints(project: string, storage: Storage): Pick<DebugSt
         breakpoints.push(bp);
       }
     }
-    const disabled = Array.isArray(kept?.disabled) ? kept.disabled.filter((k): k is string => typeof k === "string" && keys.has(k)) : [];
+    const disabled = Array.isArray(kept?.disabled)
+      ? kept.disabled.filter((k): k is string => typeof k === "string" && keys.has(k))
+      : [];
     return { breakpoints, disabled };
   } catch {
     return { breakpoints: [], disabled: [] };
@@ -66,7 +80,11 @@ export function loadBreakpoints(project: string, storage: Storage): Pick<DebugSt
 function keepBreakpoints(project: string, state: Pick<DebugState, "breakpoints" | "disabled">, storage: Storage): void {
   try {
     if (state.breakpoints.length === 0) storage.removeItem(storageKey(project));
-    else storage.setItem(storageKey(project), JSON.stringify({ breakpoints: state.breakpoints, disabled: state.disabled }));
+    else
+      storage.setItem(
+        storageKey(project),
+        JSON.stringify({ breakpoints: state.breakpoints, disabled: state.disabled }),
+      );
   } catch {
     // storage full or refused: the breakpoints still work until the page is reloaded
   }
@@ -74,8 +92,11 @@ function keepBreakpoints(project: string, state: Pick<DebugState, "breakpoints" 
 
 /** `send` delivers a message to the simulation (false when not connected: the list still changes);
  * `storage` keeps each project's breakpoints across page reloads. */
-export function createDebugStore(send: (msg: ClientMessage) => boolean, online: StoreApi<OnlineState> | null = null,
-  storage: Storage | null = null): StoreApi<DebugState> {
+export function createDebugStore(
+  send: (msg: ClientMessage) => boolean,
+  online: StoreApi<OnlineState> | null = null,
+  storage: Storage | null = null,
+): StoreApi<DebugState> {
   const store = createStore<DebugState>()((set, get) => {
     const listed = (bp: Breakpoint) => get().breakpoints.find((b) => sameBreakpoint(b, bp));
     const without = (bp: Breakpoint) => ({
@@ -88,7 +109,10 @@ export function createDebugStore(send: (msg: ClientMessage) => boolean, online: 
       disabled: [],
       open(project) {
         if (get().breakpoints.some((b) => isEnabled(get(), b))) send({ type: "breakpoint_clear" });
-        set({ project, ...(storage && project !== null ? loadBreakpoints(project, storage) : { breakpoints: [], disabled: [] }) });
+        set({
+          project,
+          ...(storage && project !== null ? loadBreakpoints(project, storage) : { breakpoints: [], disabled: [] }),
+        });
       },
       toggle(bp) {
         const found = listed(bp);
@@ -125,7 +149,8 @@ export function createDebugStore(send: (msg: ClientMessage) => boolean, online: 
   });
   store.subscribe((state, previous) => {
     const changed = state.breakpoints !== previous.breakpoints || state.disabled !== previous.disabled;
-    if (storage && state.project !== null && state.project === previous.project && changed) keepBreakpoints(state.project, state, storage);
+    if (storage && state.project !== null && state.project === previous.project && changed)
+      keepBreakpoints(state.project, state, storage);
   });
   online?.subscribe((state, previous) => {
     if (state.phase !== "online" || previous.phase === "online") return;
@@ -136,8 +161,11 @@ export function createDebugStore(send: (msg: ClientMessage) => boolean, online: 
 }
 
 /** Sends only while connected: offline changes are kept and sent when a simulation connects. */
-export const debugStore = createDebugStore((msg) => onlineStore.getState().phase === "online" && onlineStore.getState().send(msg), onlineStore,
-  localStorage);
+export const debugStore = createDebugStore(
+  (msg) => onlineStore.getState().phase === "online" && onlineStore.getState().send(msg),
+  onlineStore,
+  localStorage,
+);
 
 export function useDebug<T>(selector: (state: DebugState) => T): T {
   return useStore(debugStore, selector);

@@ -27,7 +27,9 @@ describe("declarations table and text (issue 7 Declarations)", () => {
     expect(t.cell("Initial value of Count").value).toBe("5");
     fireEvent.change(t.cell("Type of Count"), { target: { value: "DINT" } });
     fireEvent.change(t.cell("Address of Start"), { target: { value: "%IX0.0" } });
-    expect(t.text()).toBe("VAR\n    Start AT %IX0.0 : BOOL;         (* push button *)\n    Count           : DINT := 5;\nEND_VAR");
+    expect(t.text()).toBe(
+      "VAR\n    Start AT %IX0.0 : BOOL;         (* push button *)\n    Count           : DINT := 5;\nEND_VAR",
+    );
     expect(t.cell("Type of Count").getAttribute("list")).toBeTruthy();
   });
 
@@ -52,7 +54,9 @@ describe("declarations table and text (issue 7 Declarations)", () => {
     expect(screen.getByLabelText("Class of Level")).toHaveProperty("value", "VAR_INPUT");
     fireEvent.change(t.cell("Name of Level"), { target: { value: "Height" } });
     fireEvent.click(screen.getByRole("tab", { name: "Text" }));
-    expect((screen.getByRole("textbox", { name: "Declarations text" }) as HTMLTextAreaElement).value).toBe("VAR_INPUT\n    Height : REAL;\nEND_VAR");
+    expect((screen.getByRole("textbox", { name: "Declarations text" }) as HTMLTextAreaElement).value).toBe(
+      "VAR_INPUT\n    Height : REAL;\nEND_VAR",
+    );
   });
 
   it("keeps a half-typed row while the user types", () => {

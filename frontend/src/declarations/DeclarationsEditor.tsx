@@ -23,9 +23,24 @@ export interface DeclarationsEditorProps {
 
 type Mode = "table" | "text";
 const COLUMNS = ["name", "varClass", "type", "initial", "address", "comment"] as const;
-const HEADINGS: Record<(typeof COLUMNS)[number], string> = { name: "Name", varClass: "Class", type: "Type", initial: "Initial value", address: "Address", comment: "Comment" };
+const HEADINGS: Record<(typeof COLUMNS)[number], string> = {
+  name: "Name",
+  varClass: "Class",
+  type: "Type",
+  initial: "Initial value",
+  address: "Address",
+  comment: "Comment",
+};
 
-export function DeclarationsEditor({ text, onChange, diagnostics = [], types, focus = null, readOnly = null, newClass = "VAR" }: DeclarationsEditorProps) {
+export function DeclarationsEditor({
+  text,
+  onChange,
+  diagnostics = [],
+  types,
+  focus = null,
+  readOnly = null,
+  newClass = "VAR",
+}: DeclarationsEditorProps) {
   const focusLine = focus?.line ?? null;
   const [mode, setMode] = useState<Mode>("table");
   const parsed = useMemo(() => parseDeclarations(text), [text]);
@@ -46,7 +61,8 @@ export function DeclarationsEditor({ text, onChange, diagnostics = [], types, fo
     printed.current = out;
     onChange(out);
   };
-  const setCell = (index: number, column: (typeof COLUMNS)[number], value: string) => update(rows.map((r, i) => (i === index ? { ...r, [column]: value } : r)));
+  const setCell = (index: number, column: (typeof COLUMNS)[number], value: string) =>
+    update(rows.map((r, i) => (i === index ? { ...r, [column]: value } : r)));
   const move = (index: number, by: number) => {
     const next = [...rows];
     const [r] = next.splice(index, 1);
@@ -63,7 +79,9 @@ export function DeclarationsEditor({ text, onChange, diagnostics = [], types, fo
   useEffect(() => {
     if (focusLine == null) return;
     setMode(parsed.ok && lines.includes(focusLine) ? "table" : "text");
-    requestAnimationFrame(() => tableRef.current?.querySelector(`[data-line="${focusLine}"]`)?.scrollIntoView?.({ block: "nearest" }));
+    requestAnimationFrame(() =>
+      tableRef.current?.querySelector(`[data-line="${focusLine}"]`)?.scrollIntoView?.({ block: "nearest" }),
+    );
   }, [focus?.seq]);
 
   return (
@@ -77,17 +95,41 @@ export function DeclarationsEditor({ text, onChange, diagnostics = [], types, fo
           ))}
         </div>
         {mode === "table" ? (
-          <button type="button" disabled={!editable} onClick={() => update([...rows, { name: freeName(rows), varClass: rows[rows.length - 1]?.varClass ?? newClass, type: "BOOL", initial: "", address: "", comment: "" }])}>
+          <button
+            type="button"
+            disabled={!editable}
+            onClick={() =>
+              update([
+                ...rows,
+                {
+                  name: freeName(rows),
+                  varClass: rows[rows.length - 1]?.varClass ?? newClass,
+                  type: "BOOL",
+                  initial: "",
+                  address: "",
+                  comment: "",
+                },
+              ])
+            }
+          >
             Add variable
           </button>
         ) : null}
         {readOnly ? <span className="declarations-note">{readOnly}</span> : null}
       </div>
       {mode === "text" ? (
-        <textarea className="declarations-text" aria-label="Declarations text" value={text} readOnly={!!readOnly} spellCheck={false} onChange={(e) => onChange(e.target.value)} />
+        <textarea
+          className="declarations-text"
+          aria-label="Declarations text"
+          value={text}
+          readOnly={!!readOnly}
+          spellCheck={false}
+          onChange={(e) => onChange(e.target.value)}
+        />
       ) : !tabular && !parsed.ok ? (
         <p className="panel-empty" role="status">
-          The table cannot show this text without losing part of it ({parsed.error}, line {parsed.line}); edit it in the Text view.
+          The table cannot show this text without losing part of it ({parsed.error}, line {parsed.line}); edit it in the
+          Text view.
         </p>
       ) : (
         <table className="declarations-table" aria-label="Declarations">
@@ -103,11 +145,24 @@ export function DeclarationsEditor({ text, onChange, diagnostics = [], types, fo
             {rows.map((r, i) => {
               const problems = problemsOf(i);
               return (
-                <tr key={i} data-line={lines[i]} className={[problems.length ? "has-problem" : "", focusLine != null && lines[i] === focusLine ? "focused" : ""].join(" ").trim() || undefined}>
+                <tr
+                  key={i}
+                  data-line={lines[i]}
+                  className={
+                    [problems.length ? "has-problem" : "", focusLine != null && lines[i] === focusLine ? "focused" : ""]
+                      .join(" ")
+                      .trim() || undefined
+                  }
+                >
                   {COLUMNS.map((c) => (
                     <td key={c}>
                       {c === "varClass" ? (
-                        <select aria-label={`Class of ${r.name}`} value={r.varClass} disabled={!editable} onChange={(e) => setCell(i, c, e.target.value)}>
+                        <select
+                          aria-label={`Class of ${r.name}`}
+                          value={r.varClass}
+                          disabled={!editable}
+                          onChange={(e) => setCell(i, c, e.target.value)}
+                        >
                           {[...new Set([r.varClass, ...VAR_CLASSES])].map((v) => (
                             <option key={v}>{v}</option>
                           ))}
@@ -132,13 +187,28 @@ export function DeclarationsEditor({ text, onChange, diagnostics = [], types, fo
                     </td>
                   ))}
                   <td className="row-actions">
-                    <button type="button" aria-label={`Move ${r.name} up`} disabled={!editable || i === 0} onClick={() => move(i, -1)}>
+                    <button
+                      type="button"
+                      aria-label={`Move ${r.name} up`}
+                      disabled={!editable || i === 0}
+                      onClick={() => move(i, -1)}
+                    >
                       ↑
                     </button>
-                    <button type="button" aria-label={`Move ${r.name} down`} disabled={!editable || i === rows.length - 1} onClick={() => move(i, 1)}>
+                    <button
+                      type="button"
+                      aria-label={`Move ${r.name} down`}
+                      disabled={!editable || i === rows.length - 1}
+                      onClick={() => move(i, 1)}
+                    >
                       ↓
                     </button>
-                    <button type="button" aria-label={`Remove ${r.name}`} disabled={!editable} onClick={() => update(rows.filter((_, k) => k !== i))}>
+                    <button
+                      type="button"
+                      aria-label={`Remove ${r.name}`}
+                      disabled={!editable}
+                      onClick={() => update(rows.filter((_, k) => k !== i))}
+                    >
                       ×
                     </button>
                   </td>

@@ -3,7 +3,15 @@ import { describe, expect, it } from "vitest";
 import main from "../../../examples/motor/pous/Main.ld.json";
 import { freeName, parseDeclarations, printDeclarations, userTypeNames, VAR_CLASSES, type DeclRow } from "./model";
 
-const row = (name: string, type: string, extra: Partial<DeclRow> = {}): DeclRow => ({ name, varClass: "VAR", type, initial: "", address: "", comment: "", ...extra });
+const row = (name: string, type: string, extra: Partial<DeclRow> = {}): DeclRow => ({
+  name,
+  varClass: "VAR",
+  type,
+  initial: "",
+  address: "",
+  comment: "",
+  ...extra,
+});
 const rowsOf = (text: string) => {
   const r = parseDeclarations(text);
   if (!r.ok) throw new Error(`${r.line}: ${r.error}`);
@@ -44,10 +52,18 @@ describe("declarations as table rows", () => {
   });
 
   it("says where the table cannot follow the text (and keeps it read-only)", () => {
-    expect(parseDeclarations("VAR\n  (* heading *)\n  x : INT;\nEND_VAR")).toEqual({ ok: false, error: "a comment between declarations", line: 2 });
+    expect(parseDeclarations("VAR\n  (* heading *)\n  x : INT;\nEND_VAR")).toEqual({
+      ok: false,
+      error: "a comment between declarations",
+      line: 2,
+    });
     expect(parseDeclarations("VAR\n  x : INT;\n")).toEqual({ ok: false, error: "VAR has no END_VAR", line: 3 });
     expect(parseDeclarations("VAR\n  x INT;\nEND_VAR")).toMatchObject({ ok: false, line: 2 });
-    expect(parseDeclarations("x : INT;")).toEqual({ ok: false, error: "text outside a VAR ... END_VAR block", line: 1 });
+    expect(parseDeclarations("x : INT;")).toEqual({
+      ok: false,
+      error: "text outside a VAR ... END_VAR block",
+      line: 1,
+    });
   });
 
   it("prints rows as aligned blocks, one per run of a class", () => {
@@ -94,7 +110,8 @@ describe("helpers of the table", () => {
   });
 
   it("lists the user types of the TYPE text, not their members", () => {
-    const types = "TYPE\n  Mode : (Off, Auto, Manual);\n  Recipe : STRUCT\n    Speed : INT;\n  END_STRUCT;\n  Level : INT (0..100);\nEND_TYPE";
+    const types =
+      "TYPE\n  Mode : (Off, Auto, Manual);\n  Recipe : STRUCT\n    Speed : INT;\n  END_STRUCT;\n  Level : INT (0..100);\nEND_TYPE";
     expect(userTypeNames(types)).toEqual(["Mode", "Recipe", "Level"]);
   });
 });

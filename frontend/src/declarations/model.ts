@@ -9,8 +9,29 @@ export type VarClass = string;
 
 /** IEC elementary types and the standard FBs' type names are offered first by the type field. */
 export const ELEMENTARY_TYPES: readonly string[] = [
-  "BOOL", "SINT", "INT", "DINT", "LINT", "USINT", "UINT", "UDINT", "ULINT", "BYTE", "WORD", "DWORD", "LWORD",
-  "REAL", "LREAL", "TIME", "DATE", "TIME_OF_DAY", "DATE_AND_TIME", "STRING", "WSTRING", "CHAR", "WCHAR",
+  "BOOL",
+  "SINT",
+  "INT",
+  "DINT",
+  "LINT",
+  "USINT",
+  "UINT",
+  "UDINT",
+  "ULINT",
+  "BYTE",
+  "WORD",
+  "DWORD",
+  "LWORD",
+  "REAL",
+  "LREAL",
+  "TIME",
+  "DATE",
+  "TIME_OF_DAY",
+  "DATE_AND_TIME",
+  "STRING",
+  "WSTRING",
+  "CHAR",
+  "WCHAR",
 ];
 
 export const VAR_CLASSES: readonly VarClass[] = [
@@ -153,7 +174,8 @@ export function parseDeclarations(text: string): ParseResult {
         note = c.body;
         i = c.end;
       } else i -= spaces;
-      for (const name of names) rows.push({ name, varClass, type, initial, address, comment: note, line: lineAt(start) });
+      for (const name of names)
+        rows.push({ name, varClass, type, initial, address, comment: note, line: lineAt(start) });
     }
   }
 }
@@ -163,7 +185,8 @@ export function printDeclarations(rows: readonly DeclRow[]): string {
   const out: string[] = [];
   const head = (r: DeclRow) => `${r.name}${r.address ? ` AT ${r.address}` : ""}`;
   const width = Math.max(0, ...rows.map((r) => head(r).length));
-  const lineOf = (r: DeclRow) => `${head(r).padEnd(width)} : ${r.type.trim()}${r.initial.trim() ? ` := ${r.initial.trim()}` : ""};`;
+  const lineOf = (r: DeclRow) =>
+    `${head(r).padEnd(width)} : ${r.type.trim()}${r.initial.trim() ? ` := ${r.initial.trim()}` : ""};`;
   const codeWidth = Math.max(0, ...rows.map((r) => lineOf(r).length));
   rows.forEach((r, index) => {
     if (index === 0 || rows[index - 1]!.varClass !== r.varClass) {
@@ -171,7 +194,9 @@ export function printDeclarations(rows: readonly DeclRow[]): string {
       out.push(r.varClass);
     }
     const code = lineOf(r);
-    out.push(`    ${r.comment.trim() ? `${code.padEnd(codeWidth)}    (* ${r.comment.trim().replace(/\*\)/g, "* )")} *)` : code}`);
+    out.push(
+      `    ${r.comment.trim() ? `${code.padEnd(codeWidth)}    (* ${r.comment.trim().replace(/\*\)/g, "* )")} *)` : code}`,
+    );
   });
   if (rows.length) out.push("END_VAR");
   return out.join("\n");

@@ -11,7 +11,15 @@ import { FbdEditor, type FbdDebug } from "./editor/FbdEditor";
 import { nodeOfProbe } from "./online";
 import { useFbdOnline } from "./useFbdOnline";
 
-export function FbdPouView({ pou, history, onlineActions }: { pou: Pou; history: History<FbdBody>; onlineActions: ReactNode }) {
+export function FbdPouView({
+  pou,
+  history,
+  onlineActions,
+}: {
+  pou: Pou;
+  history: History<FbdBody>;
+  onlineActions: ReactNode;
+}) {
   const name = pou.name;
   const setHistory = useWorkspace((s) => s.setFbdHistory);
   const { library, symbols, diagnostics, focus, declare } = useDiagramPou(name);
@@ -28,7 +36,10 @@ export function FbdPouView({ pou, history, onlineActions }: { pou: Pou; history:
     return {
       networks: new Set(mine.flatMap((b) => ("network" in b ? [b.network] : []))),
       elements: new Set(mine.flatMap((b) => ("element" in b ? [b.element] : []))),
-      halted: at && at.pou.toUpperCase() === upper ? { network: at.network, element: at.element ? nodeOfProbe(body, at.element) : null } : null,
+      halted:
+        at && at.pou.toUpperCase() === upper
+          ? { network: at.network, element: at.element ? nodeOfProbe(body, at.element) : null }
+          : null,
       toggle: (bp) => debugStore.getState().toggle({ pou: name, ...bp }),
     };
   }, [breakpoints, at, upper, name, body]);

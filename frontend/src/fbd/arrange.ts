@@ -28,7 +28,9 @@ function layers(network: FbdNetwork): Map<string, number> {
   for (const n of nodesOf(network)) visit(n.id);
   // Sources (inputs, continuations) sit just left of their nearest consumer, not all in column 0.
   const consumers = new Map<string, number[]>();
-  for (const w of wiresOf(network)) if (layer.has(w.to.node)) consumers.set(w.from.node, [...(consumers.get(w.from.node) ?? []), layer.get(w.to.node)!]);
+  for (const w of wiresOf(network))
+    if (layer.has(w.to.node))
+      consumers.set(w.from.node, [...(consumers.get(w.from.node) ?? []), layer.get(w.to.node)!]);
   for (const n of nodesOf(network)) {
     const uses = consumers.get(n.id);
     if ((preds.get(n.id) ?? []).length === 0 && uses?.length) layer.set(n.id, Math.max(0, Math.min(...uses) - 1));
@@ -53,7 +55,12 @@ export function arrange(network: FbdNetwork, height: (node: FbdNode) => number):
       if (placed.length) return placed.reduce((a, b) => a + b, 0) / placed.length;
       return node.pos?.y ?? 0;
     };
-    const keyed = column.map((node, i) => ({ node, key: anchor(node), i, control: kindOf(node) === "jump" || kindOf(node) === "return" }));
+    const keyed = column.map((node, i) => ({
+      node,
+      key: anchor(node),
+      i,
+      control: kindOf(node) === "jump" || kindOf(node) === "return",
+    }));
     keyed.sort((a, b) => Number(a.control) - Number(b.control) || a.key - b.key || a.i - b.i);
     let y = MARGIN;
     for (const { node } of keyed) {

@@ -34,7 +34,9 @@ describe("type compatibility", () => {
   });
 
   it("a family feeds a concrete type exactly when one member is it or widens to it", () => {
-    fc.assert(fc.property(family, elementary, (f, t) => compatible(f, t) === FAMILIES[f]!.some((m) => m === t || widens(m, t))));
+    fc.assert(
+      fc.property(family, elementary, (f, t) => compatible(f, t) === FAMILIES[f]!.some((m) => m === t || widens(m, t))),
+    );
   });
 
   it("widening is a strict order: irreflexive, antisymmetric, transitive", () => {
@@ -48,7 +50,13 @@ describe("type compatibility", () => {
   });
 
   it("accepts what it cannot resolve: user types, arrays, unknown pins", () => {
-    fc.assert(fc.property(fc.constantFrom("MyStruct", "ARRAY[1..3] OF INT", "STRING[20]", undefined), elementary, (u, t) => compatible(u, t) && compatible(t, u)));
+    fc.assert(
+      fc.property(
+        fc.constantFrom("MyStruct", "ARRAY[1..3] OF INT", "STRING[20]", undefined),
+        elementary,
+        (u, t) => compatible(u, t) && compatible(t, u),
+      ),
+    );
     expect(typeSet("MyStruct")).toBeNull();
   });
 });
@@ -56,17 +64,28 @@ describe("type compatibility", () => {
 describe("refusal of a wire", () => {
   const net = (): FbdNetwork => ({
     ...arithmetic(),
-    nodes: [...(arithmetic().nodes ?? []), { type: "block", id: "and", call: "AND" }, { type: "input", id: "f", expr: "flag" }, { type: "output", id: "o", var: "flag" }],
+    nodes: [
+      ...(arithmetic().nodes ?? []),
+      { type: "block", id: "and", call: "AND" },
+      { type: "input", id: "f", expr: "flag" },
+      { type: "output", id: "o", var: "flag" },
+    ],
   });
 
   it("names the types when an INT output would feed a BOOL input", () => {
-    expect(refusal(net(), { from: { node: "a", pin: "OUT" }, to: { node: "o", pin: "IN" } }, lookup, SYMBOLS)).toBe("An INT output (a.OUT) cannot feed a BOOL input (o.IN).");
+    expect(refusal(net(), { from: { node: "a", pin: "OUT" }, to: { node: "o", pin: "IN" } }, lookup, SYMBOLS)).toBe(
+      "An INT output (a.OUT) cannot feed a BOOL input (o.IN).",
+    );
   });
 
   it("follows a generic result back to its inputs: ADD of two INTs is an INT", () => {
     expect(outputType(net(), { node: "add", pin: "OUT" }, lookup, SYMBOLS)).toBe("INT");
-    expect(refusal(net(), { from: { node: "sub", pin: "OUT" }, to: { node: "and", pin: "IN1" } }, lookup, SYMBOLS)).toBe("An INT output (sub.OUT) cannot feed an ANY_BIT input (and.IN1).");
-    expect(refusal(net(), { from: { node: "f", pin: "OUT" }, to: { node: "and", pin: "IN1" } }, lookup, SYMBOLS)).toBeNull();
+    expect(
+      refusal(net(), { from: { node: "sub", pin: "OUT" }, to: { node: "and", pin: "IN1" } }, lookup, SYMBOLS),
+    ).toBe("An INT output (sub.OUT) cannot feed an ANY_BIT input (and.IN1).");
+    expect(
+      refusal(net(), { from: { node: "f", pin: "OUT" }, to: { node: "and", pin: "IN1" } }, lookup, SYMBOLS),
+    ).toBeNull();
   });
 
   it("refuses a second wire into an occupied input (GR-30: no wired OR)", () => {
@@ -78,10 +97,17 @@ describe("refusal of a wire", () => {
   it("follows a continuation to what feeds its connector", () => {
     const n: FbdNetwork = {
       id: "n",
-      nodes: [{ type: "input", id: "a", expr: "var1" }, { type: "connector", id: "k", name: "x" }, { type: "continuation", id: "k2", name: "X" }, { type: "output", id: "o", var: "flag" }],
+      nodes: [
+        { type: "input", id: "a", expr: "var1" },
+        { type: "connector", id: "k", name: "x" },
+        { type: "continuation", id: "k2", name: "X" },
+        { type: "output", id: "o", var: "flag" },
+      ],
       wires: [wire("a", "OUT", "k", "IN")],
     };
     expect(outputType(n, { node: "k2", pin: "OUT" }, lookup, SYMBOLS)).toBe("INT");
-    expect(refusal(n, { from: { node: "k2", pin: "OUT" }, to: { node: "o", pin: "IN" } }, lookup, SYMBOLS)).toMatch(/cannot feed a BOOL input/);
+    expect(refusal(n, { from: { node: "k2", pin: "OUT" }, to: { node: "o", pin: "IN" } }, lookup, SYMBOLS)).toMatch(
+      /cannot feed a BOOL input/,
+    );
   });
 });

@@ -65,14 +65,22 @@ export function compatible(source: string | undefined, target: string | undefine
  * The type an output pin really carries: a generic function result takes the concrete type of the
  * wired inputs of its family (ADD fed two INTs gives INT), followed back through the wiring.
  */
-export function outputType(network: FbdNetwork, ref: PinRef, lookup: Lookup, symbols: readonly SymbolInfo[], seen: Set<string> = new Set()): string | undefined {
+export function outputType(
+  network: FbdNetwork,
+  ref: PinRef,
+  lookup: Lookup,
+  symbols: readonly SymbolInfo[],
+  seen: Set<string> = new Set(),
+): string | undefined {
   const node = nodesOf(network).find((n) => n.id === ref.node);
   if (!node || seen.has(node.id)) return undefined;
   seen.add(node.id);
   const kind = kindOf(node);
   if (kind === "continuation") {
     const name = (node as { name: string }).name.toUpperCase();
-    const connector = nodesOf(network).find((n) => kindOf(n) === "connector" && (n as { name: string }).name.toUpperCase() === name);
+    const connector = nodesOf(network).find(
+      (n) => kindOf(n) === "connector" && (n as { name: string }).name.toUpperCase() === name,
+    );
     const feed = connector && wiresOf(network).find((w) => w.to.node === connector.id);
     return feed ? outputType(network, feed.from, lookup, symbols, seen) : undefined;
   }
@@ -82,7 +90,9 @@ export function outputType(network: FbdNetwork, ref: PinRef, lookup: Lookup, sym
   const family = declared.toUpperCase();
   for (const input of pins.inputs) {
     if (input.type?.toUpperCase() !== family) continue;
-    const feed = wiresOf(network).find((w) => w.to.node === node.id && w.to.pin.toUpperCase() === input.name.toUpperCase());
+    const feed = wiresOf(network).find(
+      (w) => w.to.node === node.id && w.to.pin.toUpperCase() === input.name.toUpperCase(),
+    );
     const fed = feed && outputType(network, feed.from, lookup, symbols, seen);
     const set = typeSet(fed);
     if (fed && set && set.length === 1) return set[0];
@@ -93,17 +103,26 @@ export function outputType(network: FbdNetwork, ref: PinRef, lookup: Lookup, sym
 export type Connection = { from: PinRef; to: PinRef };
 
 /** Why the editor refuses the wire `c` (null: it is accepted). */
-export function refusal(network: FbdNetwork, c: Connection, lookup: Lookup, symbols: readonly SymbolInfo[]): string | null {
+export function refusal(
+  network: FbdNetwork,
+  c: Connection,
+  lookup: Lookup,
+  symbols: readonly SymbolInfo[],
+): string | null {
   if (c.from.node === c.to.node) return "A wire cannot connect a node to itself.";
   const target = nodesOf(network).find((n) => n.id === c.to.node);
   const source = nodesOf(network).find((n) => n.id === c.from.node);
   if (!target || !source) return "Both ends of a wire must be nodes of this network.";
-  const occupied = wiresOf(network).find((w) => w.to.node === c.to.node && w.to.pin.toUpperCase() === c.to.pin.toUpperCase());
+  const occupied = wiresOf(network).find(
+    (w) => w.to.node === c.to.node && w.to.pin.toUpperCase() === c.to.pin.toUpperCase(),
+  );
   if (occupied) {
     return `Input ${c.to.pin} of ${c.to.node} is already wired from ${occupied.from.node}.${occupied.from.pin}: FBD has no wired OR (use an OR block), delete that wire first.`;
   }
   const from = outputType(network, c.from, lookup, symbols);
-  const to = nodePins(target, network, lookup, symbols).inputs.find((p) => p.name.toUpperCase() === c.to.pin.toUpperCase())?.type;
+  const to = nodePins(target, network, lookup, symbols).inputs.find(
+    (p) => p.name.toUpperCase() === c.to.pin.toUpperCase(),
+  )?.type;
   if (!compatible(from, to)) {
     const sentence = `${article(describeType(from!))} output (${c.from.node}.${c.from.pin}) cannot feed ${article(to!)} input (${c.to.node}.${c.to.pin}).`;
     return sentence[0]!.toUpperCase() + sentence.slice(1);
@@ -112,4 +131,5 @@ export function refusal(network: FbdNetwork, c: Connection, lookup: Lookup, symb
 }
 
 /** "an INT", "a BOOL", "an integer literal": the article by the first sound of the type name. */
-const article = (type: string): string => (type.startsWith("an ") ? type : /^[AEIOU]/i.test(type) ? `an ${type}` : `a ${type}`);
+const article = (type: string): string =>
+  type.startsWith("an ") ? type : /^[AEIOU]/i.test(type) ? `an ${type}` : `a ${type}`;

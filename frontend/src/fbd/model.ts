@@ -5,7 +5,20 @@ import type { LibraryEntry, SymbolInfo } from "../generated/api";
 import type { Block, FbdBody, FbdNetwork, PinRef, Wire } from "../generated/project";
 import { RESULT_PIN } from "../ld/pins";
 
-export type { Block, Connector, Continuation, FbdBody, FbdJump, FbdNetwork, FbdReturn, InputNode, OutputNode, PinRef, Position, Wire } from "../generated/project";
+export type {
+  Block,
+  Connector,
+  Continuation,
+  FbdBody,
+  FbdJump,
+  FbdNetwork,
+  FbdReturn,
+  InputNode,
+  OutputNode,
+  PinRef,
+  Position,
+  Wire,
+} from "../generated/project";
 
 export type FbdNode = NonNullable<FbdNetwork["nodes"]>[number];
 export type NodeKind = NonNullable<FbdNode["type"]>;
@@ -27,7 +40,8 @@ export function findNode(body: FbdBody, id: string): { network: FbdNetwork; node
   return undefined;
 }
 
-export const samePin = (a: PinRef, b: PinRef): boolean => a.node === b.node && a.pin.toUpperCase() === b.pin.toUpperCase();
+export const samePin = (a: PinRef, b: PinRef): boolean =>
+  a.node === b.node && a.pin.toUpperCase() === b.pin.toUpperCase();
 export const wireKey = (w: Wire): string => `${w.from.node}.${w.from.pin}->${w.to.node}.${w.to.pin}`;
 
 /** A pin as drawn: its name and declared type (a generic family such as ANY_NUM; undefined when unknown). */
@@ -85,7 +99,11 @@ export function operandType(text: string, symbols: readonly SymbolInfo[]): strin
   const t = text.trim().toUpperCase();
   if (t === "TRUE" || t === "FALSE") return "BOOL";
   const typed = /^([A-Z_]+)#/.exec(t);
-  if (typed && !["T", "TIME", "D", "DATE", "TOD", "TIME_OF_DAY", "DT", "DATE_AND_TIME", "LT", "LTIME"].includes(typed[1]!)) return typed[1];
+  if (
+    typed &&
+    !["T", "TIME", "D", "DATE", "TOD", "TIME_OF_DAY", "DT", "DATE_AND_TIME", "LT", "LTIME"].includes(typed[1]!)
+  )
+    return typed[1];
   if (/^(T|TIME)#/.test(t)) return "TIME";
   if (/^[+-]?\d[\d_]*$/.test(t) || /^(2|8|16)#[0-9A-F_]+$/.test(t)) return "ANY_LITERAL_INT";
   if (/^[+-]?\d[\d_]*\.\d[\d_]*(E[+-]?\d+)?$/.test(t)) return "ANY_REAL";
@@ -104,17 +122,36 @@ export function nodePins(node: FbdNode, network: FbdNetwork, lookup: Lookup, sym
       if (!entry) {
         // An unknown block keeps the pins its wires name, so nothing drawn disappears.
         const wires = wiresOf(network);
-        const names = (side: "from" | "to") => [...new Set(wires.filter((w) => w[side].node === block.id).map((w) => w[side].pin.toUpperCase()))];
-        return { inputs: [...en, ...names("to").filter((p) => p !== "EN").map((name) => ({ name }))], outputs: [...eno, ...names("from").filter((p) => p !== "ENO").map((name) => ({ name }))] };
+        const names = (side: "from" | "to") => [
+          ...new Set(wires.filter((w) => w[side].node === block.id).map((w) => w[side].pin.toUpperCase())),
+        ];
+        return {
+          inputs: [
+            ...en,
+            ...names("to")
+              .filter((p) => p !== "EN")
+              .map((name) => ({ name })),
+          ],
+          outputs: [
+            ...eno,
+            ...names("from")
+              .filter((p) => p !== "ENO")
+              .map((name) => ({ name })),
+          ],
+        };
       }
-      const result = entry.kind === "function" && entry.return_type ? [{ name: RESULT_PIN, type: entry.return_type }] : [];
+      const result =
+        entry.kind === "function" && entry.return_type ? [{ name: RESULT_PIN, type: entry.return_type }] : [];
       return {
         inputs: [...en, ...extensionInputs(block, entry, wiresOf(network)), ...entry.in_outs],
         outputs: [...eno, ...result, ...entry.outputs],
       };
     }
     case "input":
-      return { inputs: [], outputs: [{ name: SIMPLE_OUT, type: operandType((node as { expr: string }).expr, symbols) }] };
+      return {
+        inputs: [],
+        outputs: [{ name: SIMPLE_OUT, type: operandType((node as { expr: string }).expr, symbols) }],
+      };
     case "output": {
       const out = node as { var: string; mode?: OutputMode };
       const type = (out.mode ?? "normal") === "normal" ? symbolType(out.var, symbols) : "BOOL";

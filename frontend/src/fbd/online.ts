@@ -6,12 +6,24 @@ import type { SymbolInfo } from "../generated/api";
 import { operandPath } from "../online/ldBinding";
 import { powerKey, type MonitorState } from "../online/monitor";
 import type { ElementSubscription, PowerState } from "../online/protocol";
-import { findNode, kindOf, networksOf, nodePins, nodesOf, wiresOf, type FbdBody, type FbdNetwork, type Lookup, type PinRef } from "./model";
+import {
+  findNode,
+  kindOf,
+  networksOf,
+  nodePins,
+  nodesOf,
+  wiresOf,
+  type FbdBody,
+  type FbdNetwork,
+  type Lookup,
+  type PinRef,
+} from "./model";
 
 /** The variable operand of a node (an input's expression, an output's variable), if it has one. */
 export function operandOf(node: ReturnType<typeof nodesOf>[number]): string | null {
   const kind = kindOf(node);
-  const text = kind === "input" ? (node as { expr: string }).expr : kind === "output" ? (node as { var: string }).var : "";
+  const text =
+    kind === "input" ? (node as { expr: string }).expr : kind === "output" ? (node as { var: string }).var : "";
   return text.trim() || null;
 }
 
@@ -27,7 +39,9 @@ export function probeOf(network: FbdNetwork, ref: PinRef, seen = new Set<string>
       return node.id;
     case "continuation": {
       const name = (node as { name: string }).name.toUpperCase();
-      const connector = nodesOf(network).find((n) => kindOf(n) === "connector" && (n as { name: string }).name.toUpperCase() === name);
+      const connector = nodesOf(network).find(
+        (n) => kindOf(n) === "connector" && (n as { name: string }).name.toUpperCase() === name,
+      );
       const feed = connector && wiresOf(network).find((w) => w.to.node === connector.id);
       return feed ? probeOf(network, feed.from, seen) : null;
     }
@@ -52,10 +66,17 @@ export interface FbdBinding {
 }
 
 /** The probe ids of one node: its output pins (blocks) or the node itself. */
-function probesOfNode(node: ReturnType<typeof nodesOf>[number], network: FbdNetwork, lookup: Lookup, symbols: readonly SymbolInfo[]): string[] {
+function probesOfNode(
+  node: ReturnType<typeof nodesOf>[number],
+  network: FbdNetwork,
+  lookup: Lookup,
+  symbols: readonly SymbolInfo[],
+): string[] {
   switch (kindOf(node)) {
     case "block":
-      return lookup((node as { call: string }).call) ? nodePins(node, network, lookup, symbols).outputs.map((p) => `${node.id}.${p.name.toUpperCase()}`) : [];
+      return lookup((node as { call: string }).call)
+        ? nodePins(node, network, lookup, symbols).outputs.map((p) => `${node.id}.${p.name.toUpperCase()}`)
+        : [];
     case "input":
     case "output":
     case "jump":
@@ -67,7 +88,13 @@ function probesOfNode(node: ReturnType<typeof nodesOf>[number], network: FbdNetw
 }
 
 /** What to subscribe for `networks` (all when undefined) of an FBD body shown for `instance`. */
-export function bindFbd(body: FbdBody, instance: string, lookup: Lookup, symbols: readonly SymbolInfo[], networks?: ReadonlySet<string>): FbdBinding {
+export function bindFbd(
+  body: FbdBody,
+  instance: string,
+  lookup: Lookup,
+  symbols: readonly SymbolInfo[],
+  networks?: ReadonlySet<string>,
+): FbdBinding {
   const pathOf = new Map<string, string>();
   const ids: string[] = [];
   for (const network of networksOf(body)) {
@@ -79,7 +106,12 @@ export function bindFbd(body: FbdBody, instance: string, lookup: Lookup, symbols
       if (operand && path) pathOf.set(operand.toUpperCase(), path);
     }
   }
-  return { instance, paths: [...new Set(pathOf.values())], elements: ids.length ? [{ pou_instance: instance, ids }] : [], pathOf };
+  return {
+    instance,
+    paths: [...new Set(pathOf.values())],
+    elements: ids.length ? [{ pou_instance: instance, ids }] : [],
+    pathOf,
+  };
 }
 
 /** What the FBD diagram shows online: probe values by id (null: not executed), forced operands. */

@@ -29,7 +29,10 @@ describe("nodes and networks", () => {
       { type: "block", id: "blk1", pos: { x: 10, y: 20 }, call: "ADD" },
       { type: "input", id: "in1", pos: { x: 0, y: 0 }, expr: "var1" },
     ]);
-    expect(ops.addNode(body, "nope", { type: "return" }, { x: 0, y: 0 })).toEqual({ ok: false, error: "There is no network nope." });
+    expect(ops.addNode(body, "nope", { type: "return" }, { x: 0, y: 0 })).toEqual({
+      ok: false,
+      error: "There is no network nope.",
+    });
   });
 
   it("deleting a node removes its wires and its place in the order list", () => {
@@ -50,8 +53,12 @@ describe("nodes and networks", () => {
     expect(node(body, "r")).toMatchObject({ mode: "set" });
     expect(net(body).label).toBe("Start");
     expect(ops.setOutputMode(body, "add", "set")).toEqual({ ok: false, error: "Only output nodes have a mode." });
-    const withEn = ok(ops.addNode(ok(ops.toggleEn(body, "add")), "n1", { type: "input", expr: "flag" }, { x: 0, y: 0 }));
-    const wired = ok(ops.connect(withEn, "n1", { from: { node: "in1", pin: "OUT" }, to: { node: "add", pin: "EN" } }, lookup, SYMBOLS));
+    const withEn = ok(
+      ops.addNode(ok(ops.toggleEn(body, "add")), "n1", { type: "input", expr: "flag" }, { x: 0, y: 0 }),
+    );
+    const wired = ok(
+      ops.connect(withEn, "n1", { from: { node: "in1", pin: "OUT" }, to: { node: "add", pin: "EN" } }, lookup, SYMBOLS),
+    );
     expect(wiresOf(net(wired))).toHaveLength(6);
     const off = ok(ops.toggleEn(wired, "add"));
     expect((node(off, "add") as Block).en).toBe(false);
@@ -63,14 +70,36 @@ describe("wires", () => {
   it("connects compatible pins and refuses the rest with the reason", () => {
     const body = ok(ops.deleteNodes(bodyOf(arithmetic()), ["r"]));
     const withOut = ok(ops.addNode(body, "n1", { type: "output", var: "flag" }, { x: 0, y: 0 }));
-    expect(ops.connect(withOut, "n1", { from: { node: "sub", pin: "OUT" }, to: { node: "out1", pin: "IN" } }, lookup, SYMBOLS)).toEqual({
+    expect(
+      ops.connect(
+        withOut,
+        "n1",
+        { from: { node: "sub", pin: "OUT" }, to: { node: "out1", pin: "IN" } },
+        lookup,
+        SYMBOLS,
+      ),
+    ).toEqual({
       ok: false,
       error: "An INT output (sub.OUT) cannot feed a BOOL input (out1.IN).",
     });
-    const result = ops.connect(body, "n1", { from: { node: "sub", pin: "OUT" }, to: { node: "add", pin: "IN1" } }, lookup, SYMBOLS);
+    const result = ops.connect(
+      body,
+      "n1",
+      { from: { node: "sub", pin: "OUT" }, to: { node: "add", pin: "IN1" } },
+      lookup,
+      SYMBOLS,
+    );
     expect(result.ok).toBe(false);
     const withResult = ok(ops.addNode(body, "n1", { type: "output", var: "big" }, { x: 0, y: 0 }));
-    const connected = ok(ops.connect(withResult, "n1", { from: { node: "sub", pin: "OUT" }, to: { node: "out1", pin: "IN" } }, lookup, SYMBOLS));
+    const connected = ok(
+      ops.connect(
+        withResult,
+        "n1",
+        { from: { node: "sub", pin: "OUT" }, to: { node: "out1", pin: "IN" } },
+        lookup,
+        SYMBOLS,
+      ),
+    );
     expect(wiresOf(net(connected)).at(-1)).toEqual(wire("sub", "OUT", "out1", "IN")); // INT widens to DINT
     const cut = ok(ops.disconnect(connected, "n1", [wire("sub", "OUT", "out1", "IN")]));
     expect(wiresOf(net(cut))).toEqual(wiresOf(net(withResult)));
@@ -83,10 +112,19 @@ describe("pins", () => {
     body = ok(ops.addInput(body, "add", lookup));
     body = ok(ops.addInput(body, "add", lookup));
     const pins = nodePins(node(body, "add")!, net(body), lookup, SYMBOLS);
-    expect(pins.inputs.map((p) => `${p.name}:${p.type}`)).toEqual(["IN1:ANY_NUM", "IN2:ANY_NUM", "IN3:ANY_NUM", "IN4:ANY_NUM"]);
+    expect(pins.inputs.map((p) => `${p.name}:${p.type}`)).toEqual([
+      "IN1:ANY_NUM",
+      "IN2:ANY_NUM",
+      "IN3:ANY_NUM",
+      "IN4:ANY_NUM",
+    ]);
     expect(ops.addInput(body, "sub", lookup)).toEqual({ ok: false, error: "SUB takes a fixed number of inputs." });
     const mux = ok(ops.addNode(body, "n1", { type: "block", call: "MUX" }, { x: 0, y: 0 }));
-    expect(nodePins(node(ok(ops.addInput(mux, "blk1", lookup)), "blk1")!, net(mux), lookup, SYMBOLS).inputs.map((p) => p.name)).toEqual(["K", "IN0", "IN1", "IN2"]);
+    expect(
+      nodePins(node(ok(ops.addInput(mux, "blk1", lookup)), "blk1")!, net(mux), lookup, SYMBOLS).inputs.map(
+        (p) => p.name,
+      ),
+    ).toEqual(["K", "IN0", "IN1", "IN2"]);
   });
 
   it("toggles negation bubbles and exclusive edge markers; no edges on outputs", () => {
@@ -96,16 +134,26 @@ describe("pins", () => {
     expect((node(body, "add") as Block).pins).toEqual({ IN1: { negated: true, edge: "rising" } });
     body = ok(ops.togglePinFlag(body, "add", "IN1", "falling", "in"));
     expect((node(body, "add") as Block).pins).toEqual({ IN1: { negated: true, edge: "falling" } });
-    body = ok(ops.togglePinFlag(ok(ops.togglePinFlag(body, "add", "IN1", "falling", "in")), "add", "IN1", "negated", "in"));
+    body = ok(
+      ops.togglePinFlag(ok(ops.togglePinFlag(body, "add", "IN1", "falling", "in")), "add", "IN1", "negated", "in"),
+    );
     expect((node(body, "add") as Block).pins).toEqual({ IN1: { negated: false } });
-    expect(ops.togglePinFlag(body, "add", "OUT", "rising", "out")).toEqual({ ok: false, error: "Edge detection applies to inputs only." });
+    expect(ops.togglePinFlag(body, "add", "OUT", "rising", "out")).toEqual({
+      ok: false,
+      error: "Edge detection applies to inputs only.",
+    });
     expect(ops.togglePinFlag(body, "a", "OUT", "negated", "out").ok).toBe(false);
   });
 });
 
 describe("execution order", () => {
   // The backend's order for the arithmetic network plus an independent MOVE-like output.
-  const body = (): FbdBody => bodyOf({ ...arithmetic(), nodes: [...(arithmetic().nodes ?? []), { type: "output", id: "r2", var: "big" }], wires: [...(arithmetic().wires ?? []), wire("c", "OUT", "r2", "IN")] });
+  const body = (): FbdBody =>
+    bodyOf({
+      ...arithmetic(),
+      nodes: [...(arithmetic().nodes ?? []), { type: "output", id: "r2", var: "big" }],
+      wires: [...(arithmetic().wires ?? []), wire("c", "OUT", "r2", "IN")],
+    });
   const order = ["a", "b", "add", "c", "sub", "r", "r2"];
 
   it("moves an independent node earlier and stores the order list", () => {
@@ -114,7 +162,10 @@ describe("execution order", () => {
   });
 
   it("refuses when data flow forbids it", () => {
-    expect(moveInOrder(body(), "n1", order, "sub", -1)).toEqual({ ok: false, error: "add feeds sub: data flow makes add run first." });
+    expect(moveInOrder(body(), "n1", order, "sub", -1)).toEqual({
+      ok: false,
+      error: "add feeds sub: data flow makes add run first.",
+    });
     expect(moveInOrder(body(), "n1", order, "add", -1)).toEqual({ ok: false, error: "add already runs first." });
     expect(moveInOrder(body(), "n1", order, "a", 1).ok).toBe(false);
   });
@@ -133,9 +184,9 @@ describe("auto-arrange", () => {
   });
 
   it("every wire of an acyclic network runs left to right, and no two nodes of a column overlap", () => {
-    const dag = fc.integer({ min: 1, max: 12 }).chain((n) =>
-      fc.tuple(fc.constant(n), fc.array(fc.tuple(fc.nat(n - 1), fc.nat(n - 1)), { maxLength: 25 })),
-    );
+    const dag = fc
+      .integer({ min: 1, max: 12 })
+      .chain((n) => fc.tuple(fc.constant(n), fc.array(fc.tuple(fc.nat(n - 1), fc.nat(n - 1)), { maxLength: 25 })));
     fc.assert(
       fc.property(dag, ([n, edges]) => {
         const network: FbdNetwork = {
@@ -146,7 +197,8 @@ describe("auto-arrange", () => {
         const pos = arrange(network, () => 50);
         for (const w of wiresOf(network)) expect(pos.get(w.from.node)!.x).toBeLessThan(pos.get(w.to.node)!.x);
         const all = [...pos.values()];
-        for (const p of all) for (const q of all) if (p !== q && p.x === q.x) expect(Math.abs(p.y - q.y)).toBeGreaterThanOrEqual(50);
+        for (const p of all)
+          for (const q of all) if (p !== q && p.x === q.x) expect(Math.abs(p.y - q.y)).toBeGreaterThanOrEqual(50);
       }),
     );
   });

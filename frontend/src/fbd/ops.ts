@@ -4,9 +4,27 @@ import type { SymbolInfo } from "../generated/api";
 import { freshId } from "../ld/ids";
 import { arranged } from "./arrange";
 import { refusal, type Connection } from "./compat";
-import { findNode, kindOf, networksOf, nextInput, nodesOf, samePin, wiresOf, type Block, type FbdBody, type FbdNetwork, type FbdNode, type Lookup, type OutputMode, type PinRef, type Position, type Wire } from "./model";
+import {
+  findNode,
+  kindOf,
+  networksOf,
+  nextInput,
+  nodesOf,
+  samePin,
+  wiresOf,
+  type Block,
+  type FbdBody,
+  type FbdNetwork,
+  type FbdNode,
+  type Lookup,
+  type OutputMode,
+  type PinRef,
+  type Position,
+  type Wire,
+} from "./model";
 
-export type EditResult = { ok: true; body: FbdBody; /** node or network ids to select */ select: string[] } | { ok: false; error: string };
+export type EditResult =
+  { ok: true; body: FbdBody; /** node or network ids to select */ select: string[] } | { ok: false; error: string };
 
 const fail = (error: string): EditResult => ({ ok: false, error });
 const done = (body: FbdBody, select: string[]): EditResult => ({ ok: true, body, select });
@@ -36,7 +54,10 @@ function updateNetwork(body: FbdBody, id: string, update: (n: FbdNetwork) => Fbd
 function updateNode(body: FbdBody, id: string, update: (n: FbdNode) => FbdNode): FbdBody | null {
   const at = findNode(body, id);
   if (!at) return null;
-  return updateNetwork(body, at.network.id, (n) => ({ ...n, nodes: nodesOf(n).map((node) => (node.id === id ? update(node) : node)) }));
+  return updateNetwork(body, at.network.id, (n) => ({
+    ...n,
+    nodes: nodesOf(n).map((node) => (node.id === id ? update(node) : node)),
+  }));
 }
 
 // ------------------------------------------------------------------ networks
@@ -56,14 +77,18 @@ export function moveNetwork(body: FbdBody, id: string, delta: -1 | 1): EditResul
   const networks = [...networksOf(body)];
   const at = networks.findIndex((n) => n.id === id);
   const to = at + delta;
-  if (at < 0 || to < 0 || to >= networks.length) return fail(delta < 0 ? "This is the first network." : "This is the last network.");
+  if (at < 0 || to < 0 || to >= networks.length)
+    return fail(delta < 0 ? "This is the first network." : "This is the last network.");
   [networks[at], networks[to]] = [networks[to]!, networks[at]!];
   return done({ ...body, networks }, [id]);
 }
 
 export function setNetworkText(body: FbdBody, id: string, field: "label" | "comment", text: string): EditResult {
   const value = text.trim() ? (field === "label" ? text.trim() : text) : null;
-  return done(updateNetwork(body, id, (n) => ({ ...n, [field]: value })), [id]);
+  return done(
+    updateNetwork(body, id, (n) => ({ ...n, [field]: value })),
+    [id],
+  );
 }
 
 // ------------------------------------------------------------------ nodes
@@ -80,11 +105,24 @@ export type NodeSpec =
 function nodeOf(spec: NodeSpec, id: string, pos: Position): FbdNode {
   switch (spec.type) {
     case "block":
-      return { type: "block", id, pos, call: spec.call, ...(spec.instance ? { instance: spec.instance } : {}), ...(spec.en ? { en: true } : {}) };
+      return {
+        type: "block",
+        id,
+        pos,
+        call: spec.call,
+        ...(spec.instance ? { instance: spec.instance } : {}),
+        ...(spec.en ? { en: true } : {}),
+      };
     case "input":
       return { type: "input", id, pos, expr: spec.expr ?? "" };
     case "output":
-      return { type: "output", id, pos, var: spec.var ?? "", ...(spec.mode && spec.mode !== "normal" ? { mode: spec.mode } : {}) };
+      return {
+        type: "output",
+        id,
+        pos,
+        var: spec.var ?? "",
+        ...(spec.mode && spec.mode !== "normal" ? { mode: spec.mode } : {}),
+      };
     case "jump":
       return { type: "jump", id, pos, target: spec.target ?? "" };
     case "return":
@@ -98,7 +136,10 @@ function nodeOf(spec: NodeSpec, id: string, pos: Position): FbdNode {
 export function addNode(body: FbdBody, network: string, spec: NodeSpec, pos: Position): EditResult {
   if (!networksOf(body).some((n) => n.id === network)) return fail(`There is no network ${network}.`);
   const id = freshId(PREFIX[spec.type], usedIds(body));
-  return done(updateNetwork(body, network, (n) => ({ ...n, nodes: [...nodesOf(n), nodeOf(spec, id, pos)] })), [id]);
+  return done(
+    updateNetwork(body, network, (n) => ({ ...n, nodes: [...nodesOf(n), nodeOf(spec, id, pos)] })),
+    [id],
+  );
 }
 
 /** Removes nodes, their wires and their places in the order list. */
@@ -120,7 +161,12 @@ export function deleteNodes(body: FbdBody, ids: readonly string[]): EditResult {
 /** New positions (layout hints) for nodes, e.g. after a drag. */
 export function moveNodes(body: FbdBody, positions: ReadonlyMap<string, Position>): EditResult {
   const networks = networksOf(body).map((n) =>
-    nodesOf(n).some((node) => positions.has(node.id)) ? { ...n, nodes: nodesOf(n).map((node) => (positions.has(node.id) ? { ...node, pos: positions.get(node.id)! } : node)) } : n,
+    nodesOf(n).some((node) => positions.has(node.id))
+      ? {
+          ...n,
+          nodes: nodesOf(n).map((node) => (positions.has(node.id) ? { ...node, pos: positions.get(node.id)! } : node)),
+        }
+      : n,
   );
   return done({ ...body, networks }, [...positions.keys()]);
 }
@@ -151,7 +197,10 @@ export function setNodeText(body: FbdBody, id: string, text: string): EditResult
 export function setOutputMode(body: FbdBody, id: string, mode: OutputMode): EditResult {
   const at = findNode(body, id);
   if (!at || kindOf(at.node) !== "output") return fail("Only output nodes have a mode.");
-  return done(updateNode(body, id, (n) => ({ ...n, mode }))!, [id]);
+  return done(
+    updateNode(body, id, (n) => ({ ...n, mode }))!,
+    [id],
+  );
 }
 
 /** EN/ENO on a block; switching them off drops the wires on EN and ENO. */
@@ -162,7 +211,13 @@ export function toggleEn(body: FbdBody, id: string): EditResult {
   const next = updateNetwork(body, at.network.id, (n) => ({
     ...n,
     nodes: nodesOf(n).map((node) => (node.id === id ? { ...node, en: on } : node)),
-    wires: on ? wiresOf(n) : wiresOf(n).filter((w) => !(w.to.node === id && w.to.pin.toUpperCase() === "EN") && !(w.from.node === id && w.from.pin.toUpperCase() === "ENO")),
+    wires: on
+      ? wiresOf(n)
+      : wiresOf(n).filter(
+          (w) =>
+            !(w.to.node === id && w.to.pin.toUpperCase() === "EN") &&
+            !(w.from.node === id && w.from.pin.toUpperCase() === "ENO"),
+        ),
   }));
   return done(next, [id]);
 }
@@ -174,7 +229,10 @@ export function addInput(body: FbdBody, id: string, lookup: Lookup): EditResult 
   const block = at.node as Block;
   const pin = nextInput(block, lookup(block.call), wiresOf(at.network));
   if (!pin) return fail(`${block.call} takes a fixed number of inputs.`);
-  return done(updateNode(body, id, (n) => ({ ...n, pins: { ...(n as Block).pins, [pin]: { negated: false } } }))!, [id]);
+  return done(
+    updateNode(body, id, (n) => ({ ...n, pins: { ...(n as Block).pins, [pin]: { negated: false } } }))!,
+    [id],
+  );
 }
 
 export type PinFlag = "negated" | "rising" | "falling";
@@ -189,26 +247,44 @@ export function togglePinFlag(body: FbdBody, id: string, pin: string, flag: PinF
   if (flag !== "negated" && side === "out") return fail("Edge detection applies to inputs only.");
   const block = at.node as Block;
   const current = block.pins?.[pin] ?? {};
-  const next = flag === "negated" ? { ...current, negated: !current.negated } : { ...current, edge: current.edge === flag ? null : flag };
+  const next =
+    flag === "negated"
+      ? { ...current, negated: !current.negated }
+      : { ...current, edge: current.edge === flag ? null : flag };
   const flags = { ...block.pins, [pin]: { negated: next.negated ?? false, ...(next.edge ? { edge: next.edge } : {}) } };
-  return done(updateNode(body, id, (n) => ({ ...n, pins: flags }))!, [id]);
+  return done(
+    updateNode(body, id, (n) => ({ ...n, pins: flags }))!,
+    [id],
+  );
 }
 
 // ------------------------------------------------------------------ wires
 
 /** Adds a wire when the editor accepts it (type-compatible, into a free input). */
-export function connect(body: FbdBody, network: string, c: Connection, lookup: Lookup, symbols: readonly SymbolInfo[]): EditResult {
+export function connect(
+  body: FbdBody,
+  network: string,
+  c: Connection,
+  lookup: Lookup,
+  symbols: readonly SymbolInfo[],
+): EditResult {
   const net = networksOf(body).find((n) => n.id === network);
   if (!net) return fail(`There is no network ${network}.`);
   const why = refusal(net, c, lookup, symbols);
   if (why) return fail(why);
   const wire: Wire = { from: { ...c.from }, to: { ...c.to } };
-  return done(updateNetwork(body, network, (n) => ({ ...n, wires: [...wiresOf(n), wire] })), [c.to.node]);
+  return done(
+    updateNetwork(body, network, (n) => ({ ...n, wires: [...wiresOf(n), wire] })),
+    [c.to.node],
+  );
 }
 
 export function disconnect(body: FbdBody, network: string, wires: readonly Wire[]): EditResult {
   const gone = (w: Wire) => wires.some((x) => samePin(x.from, w.from) && samePin(x.to, w.to));
-  return done(updateNetwork(body, network, (n) => ({ ...n, wires: wiresOf(n).filter((w) => !gone(w)) })), []);
+  return done(
+    updateNetwork(body, network, (n) => ({ ...n, wires: wiresOf(n).filter((w) => !gone(w)) })),
+    [],
+  );
 }
 
 /** The wires ending at (`side` "in") or starting from (`side` "out") one pin. */
@@ -220,11 +296,21 @@ export function wiresAt(network: FbdNetwork, ref: PinRef, side: "in" | "out"): W
  * Auto-arrange one network. `order` is the evaluation order the backend reported: it is stored as
  * the network's order list (blocks and outputs), so moving nodes cannot change what runs first.
  */
-export function arrangeNetwork(body: FbdBody, network: string, height: (node: FbdNode) => number, order: readonly string[] | null): EditResult {
+export function arrangeNetwork(
+  body: FbdBody,
+  network: string,
+  height: (node: FbdNode) => number,
+  order: readonly string[] | null,
+): EditResult {
   const net = networksOf(body).find((n) => n.id === network);
   if (!net) return fail(`There is no network ${network}.`);
   const laid = arranged(net, height);
-  const kept = order?.filter((id) => nodesOf(net).some((n) => n.id === id && (kindOf(n) === "block" || kindOf(n) === "output")));
+  const kept = order?.filter((id) =>
+    nodesOf(net).some((n) => n.id === id && (kindOf(n) === "block" || kindOf(n) === "output")),
+  );
   const next = kept?.length ? { ...laid, order: kept } : laid;
-  return done(updateNetwork(body, network, () => next), [network]);
+  return done(
+    updateNetwork(body, network, () => next),
+    [network],
+  );
 }

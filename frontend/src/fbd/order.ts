@@ -17,7 +17,9 @@ function producer(network: FbdNetwork, ref: PinRef, seen = new Set<string>()): s
   if (seen.has(node.id)) return undefined;
   seen.add(node.id);
   const name = (node as { name: string }).name.toUpperCase();
-  const connector = nodesOf(network).find((n) => kindOf(n) === "connector" && (n as { name: string }).name.toUpperCase() === name);
+  const connector = nodesOf(network).find(
+    (n) => kindOf(n) === "connector" && (n as { name: string }).name.toUpperCase() === name,
+  );
   const feed = connector && wiresOf(network).find((w) => w.to.node === connector.id);
   return feed ? producer(network, feed.from, seen) : undefined;
 }
@@ -31,17 +33,30 @@ export function feeds(network: FbdNetwork, a: string, b: string): boolean {
  * Moves `id` one place earlier (-1) or later (+1) among the blocks and output nodes of `order`
  * (the evaluation order the backend reported) and stores the result as the network's order list.
  */
-export function moveInOrder(body: FbdBody, networkId: string, order: readonly string[], id: string, delta: -1 | 1): EditResult {
+export function moveInOrder(
+  body: FbdBody,
+  networkId: string,
+  order: readonly string[],
+  id: string,
+  delta: -1 | 1,
+): EditResult {
   const network = networksOf(body).find((n) => n.id === networkId);
   if (!network) return { ok: false, error: `There is no network ${networkId}.` };
-  if (!ordered(network, id)) return { ok: false, error: "Only blocks and output nodes have an order to change: inputs run just before their first consumer, jumps and returns last." };
+  if (!ordered(network, id))
+    return {
+      ok: false,
+      error:
+        "Only blocks and output nodes have an order to change: inputs run just before their first consumer, jumps and returns last.",
+    };
   const sequence = order.filter((n) => ordered(network, n));
   const at = sequence.indexOf(id);
   if (at < 0) return { ok: false, error: "The execution order is not known yet; try again in a moment." };
   const other = sequence[at + delta];
-  if (other === undefined) return { ok: false, error: delta < 0 ? `${id} already runs first.` : `${id} already runs last.` };
+  if (other === undefined)
+    return { ok: false, error: delta < 0 ? `${id} already runs first.` : `${id} already runs last.` };
   const [first, second] = delta < 0 ? [other, id] : [id, other];
-  if (feeds(network, first, second)) return { ok: false, error: `${first} feeds ${second}: data flow makes ${first} run first.` };
+  if (feeds(network, first, second))
+    return { ok: false, error: `${first} feeds ${second}: data flow makes ${first} run first.` };
   const next = [...sequence];
   [next[at], next[at + delta]] = [next[at + delta]!, next[at]!];
   const networks = networksOf(body).map((n) => (n.id === networkId ? { ...n, order: next } : n));

@@ -26,13 +26,24 @@ export function useFbdOnline(pou: Pou, body: FbdBody, lookup: Lookup, symbols: r
 
   const [visible, setVisible] = useState<ReadonlySet<string> | null>(null);
   const onVisibleChange = useCallback((networks: readonly string[]) => setVisible(new Set(networks)), []);
-  const binding = useMemo(() => (instance ? bindFbd(body, instance, lookup, symbols, visible ?? undefined) : null), [body, instance, lookup, symbols, visible]);
+  const binding = useMemo(
+    () => (instance ? bindFbd(body, instance, lookup, symbols, visible ?? undefined) : null),
+    [body, instance, lookup, symbols, visible],
+  );
   useEffect(() => {
-    onlineStore.getState().subscribe(key, live && binding ? { paths: binding.paths, elements: binding.elements } : null);
+    onlineStore
+      .getState()
+      .subscribe(key, live && binding ? { paths: binding.paths, elements: binding.elements } : null);
   }, [key, live, binding]);
   useEffect(() => () => onlineStore.getState().subscribe(key, null), [key]);
 
-  const online = useMemo(() => (live && binding ? fbdOnlineView(monitor, binding) : undefined), [live, binding, monitor]);
-  const actions = useMemo(() => (live && instance ? operandActions(instance, symbols) : undefined), [live, instance, symbols]);
+  const online = useMemo(
+    () => (live && binding ? fbdOnlineView(monitor, binding) : undefined),
+    [live, binding, monitor],
+  );
+  const actions = useMemo(
+    () => (live && instance ? operandActions(instance, symbols) : undefined),
+    [live, instance, symbols],
+  );
   return { online, readOnly: onlineReadOnly(pou, live, instance), actions, onVisibleChange };
 }

@@ -8,10 +8,18 @@ import { networksOf, type FbdBody, type FbdNetwork } from "./model";
 export const ORDER_DEBOUNCE_MS = 250;
 
 export const fetchOrder = (network: FbdNetwork): Promise<FbdOrder> =>
-  requestJson<FbdOrder>("/api/fbd/order", { method: "POST", headers: { "Content-Type": "application/json" }, body: JSON.stringify(network) });
+  requestJson<FbdOrder>("/api/fbd/order", {
+    method: "POST",
+    headers: { "Content-Type": "application/json" },
+    body: JSON.stringify(network),
+  });
 
 /** Network id -> node ids in execution order, for the networks in `only` (missing until the server has answered). */
-export function useEvaluationOrder(body: FbdBody, fetcher: (network: FbdNetwork) => Promise<FbdOrder> = fetchOrder, only?: ReadonlySet<string>): ReadonlyMap<string, readonly string[]> {
+export function useEvaluationOrder(
+  body: FbdBody,
+  fetcher: (network: FbdNetwork) => Promise<FbdOrder> = fetchOrder,
+  only?: ReadonlySet<string>,
+): ReadonlyMap<string, readonly string[]> {
   const [orders, setOrders] = useState<ReadonlyMap<string, readonly string[]>>(new Map());
   // Content text -> its order, so undo and switching back cost no request.
   const cache = useRef(new Map<string, readonly string[]>());

@@ -34,14 +34,30 @@ export function ExportMenu({ project, pou, unsaved, api = interchangeApi, downlo
   return (
     <div className="export-menu" role="group" aria-label="Export">
       <span className="export-label">Export{unsaved ? " (saved version)" : ""}:</span>
-      <button type="button" disabled={busy} onClick={() => void run("PLCopen XML export", `${project}.xml`, () => api.exportPlcopen(project).then((text) => ({ text, type: "application/xml" })))}>
+      <button
+        type="button"
+        disabled={busy}
+        onClick={() =>
+          void run("PLCopen XML export", `${project}.xml`, () =>
+            api.exportPlcopen(project).then((text) => ({ text, type: "application/xml" })),
+          )
+        }
+      >
         PLCopen XML
       </button>
-      <button type="button" disabled={busy} onClick={() => void run("ST export", `${project}.st`, () => st(api.exportProjectSt(project)))}>
+      <button
+        type="button"
+        disabled={busy}
+        onClick={() => void run("ST export", `${project}.st`, () => st(api.exportProjectSt(project)))}
+      >
         Project as ST
       </button>
       {pou ? (
-        <button type="button" disabled={busy} onClick={() => void run(`ST export of ${pou}`, `${pou}.st`, () => st(api.exportPouSt(project, pou)))}>
+        <button
+          type="button"
+          disabled={busy}
+          onClick={() => void run(`ST export of ${pou}`, `${pou}.st`, () => st(api.exportPouSt(project, pou)))}
+        >
           {pou} as ST
         </button>
       ) : null}

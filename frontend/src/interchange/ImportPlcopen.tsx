@@ -64,8 +64,19 @@ export function ImportPlcopen({ onStored, onOpen, api = interchangeApi }: Import
   };
   return (
     <form className="import-plcopen" aria-label="Import PLCopen XML" onSubmit={(e) => void submit(e)}>
-      <input type="file" aria-label="PLCopen XML file" accept=".xml,application/xml,text/xml" onChange={(e) => setFile(e.target.files?.[0] ?? null)} />
-      <input aria-label="New project name" value={name} onChange={(e) => setName(e.target.value)} placeholder="name (default: the document's)" spellCheck={false} />
+      <input
+        type="file"
+        aria-label="PLCopen XML file"
+        accept=".xml,application/xml,text/xml"
+        onChange={(e) => setFile(e.target.files?.[0] ?? null)}
+      />
+      <input
+        aria-label="New project name"
+        value={name}
+        onChange={(e) => setName(e.target.value)}
+        placeholder="name (default: the document's)"
+        spellCheck={false}
+      />
       <button type="submit" disabled={busy || !file}>
         {busy ? "Importing…" : "Import"}
       </button>

@@ -11,7 +11,10 @@ export interface Outcome {
 
 export function Problems({ outcome }: { outcome: Outcome }) {
   return (
-    <div className={outcome.failed ? "interchange-error" : "interchange-report"} role={outcome.failed ? "alert" : "status"}>
+    <div
+      className={outcome.failed ? "interchange-error" : "interchange-report"}
+      role={outcome.failed ? "alert" : "status"}
+    >
       <p>{outcome.message}</p>
       {outcome.diagnostics.length ? (
         <ul>

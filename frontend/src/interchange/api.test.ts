@@ -2,13 +2,16 @@ import { afterEach, describe, expect, it, vi } from "vitest";
 import { ApiError } from "../api/client";
 import { exportPlcopen, exportProjectSt, importPlcopen } from "./api";
 
-const json = (body: unknown, status = 200) => new Response(JSON.stringify(body), { status, headers: { "Content-Type": "application/json" } });
+const json = (body: unknown, status = 200) =>
+  new Response(JSON.stringify(body), { status, headers: { "Content-Type": "application/json" } });
 
 afterEach(() => vi.unstubAllGlobals());
 
 describe("interchange REST calls (issue 9: interchange in the UI)", () => {
   it("posts the raw XML with the project name in the query", async () => {
-    const fetchMock = vi.fn(async () => json({ project: { name: "plant 2", revision: "r", modified: "m", pou_count: 1 }, diagnostics: [] }, 201));
+    const fetchMock = vi.fn(async () =>
+      json({ project: { name: "plant 2", revision: "r", modified: "m", pou_count: 1 }, diagnostics: [] }, 201),
+    );
     vi.stubGlobal("fetch", fetchMock);
     const report = await importPlcopen("<project/>", " plant 2 ");
     expect(report.project.name).toBe("plant 2");
@@ -20,7 +23,9 @@ describe("interchange REST calls (issue 9: interchange in the UI)", () => {
   });
 
   it("leaves the name out when none is given, so the document's name is used", async () => {
-    const fetchMock = vi.fn(async () => json({ project: { name: "doc", revision: "r", modified: "m", pou_count: 0 } }, 201));
+    const fetchMock = vi.fn(async () =>
+      json({ project: { name: "doc", revision: "r", modified: "m", pou_count: 0 } }, 201),
+    );
     vi.stubGlobal("fetch", fetchMock);
     await importPlcopen("<project/>", "  ");
     expect((fetchMock.mock.calls[0] as unknown as [string])[0]).toBe("/api/import/plcopen");
@@ -28,7 +33,10 @@ describe("interchange REST calls (issue 9: interchange in the UI)", () => {
 
   it("turns a refused import into an ApiError carrying the diagnostics", async () => {
     const diagnostics = [{ code: "XML-1", message: "not well-formed", line: 3, column: 1, severity: "error" }];
-    vi.stubGlobal("fetch", vi.fn(async () => json({ detail: { message: "the document cannot be imported", diagnostics } }, 422)));
+    vi.stubGlobal(
+      "fetch",
+      vi.fn(async () => json({ detail: { message: "the document cannot be imported", diagnostics } }, 422)),
+    );
     const err = await importPlcopen("<x").catch((e: unknown) => e);
     expect(err).toBeInstanceOf(ApiError);
     expect((err as ApiError).status).toBe(422);
@@ -38,21 +46,34 @@ describe("interchange REST calls (issue 9: interchange in the UI)", () => {
 
   it("fetches the PLCopen export as text and the project ST export as JSON", async () => {
     const fetchMock = vi.fn(async (input: RequestInfo | URL) =>
-      String(input).endsWith("/plcopen") ? new Response("<project name='a b'/>", { status: 200 }) : json({ text: "PROGRAM Main\nEND_PROGRAM\n" }),
+      String(input).endsWith("/plcopen")
+        ? new Response("<project name='a b'/>", { status: 200 })
+        : json({ text: "PROGRAM Main\nEND_PROGRAM\n" }),
     );
     vi.stubGlobal("fetch", fetchMock);
     expect(await exportPlcopen("a b")).toBe("<project name='a b'/>");
     expect((await exportProjectSt("a b")).text).toBe("PROGRAM Main\nEND_PROGRAM\n");
-    expect(fetchMock.mock.calls.map((c) => String(c[0]))).toEqual(["/api/projects/a%20b/export/plcopen", "/api/projects/a%20b/export/st"]);
+    expect(fetchMock.mock.calls.map((c) => String(c[0]))).toEqual([
+      "/api/projects/a%20b/export/plcopen",
+      "/api/projects/a%20b/export/st",
+    ]);
   });
 
   it("reports a refused XML export with the server's message", async () => {
-    vi.stubGlobal("fetch", vi.fn(async () => json({ detail: { message: "the project cannot be exported as PLCopen XML", diagnostics: [] } }, 422)));
+    vi.stubGlobal(
+      "fetch",
+      vi.fn(async () =>
+        json({ detail: { message: "the project cannot be exported as PLCopen XML", diagnostics: [] } }, 422),
+      ),
+    );
     await expect(exportPlcopen("p")).rejects.toThrow("the project cannot be exported as PLCopen XML");
   });
 
   it("reports an unreachable server as status 0", async () => {
-    vi.stubGlobal("fetch", vi.fn(async () => Promise.reject(new TypeError("Failed to fetch"))));
+    vi.stubGlobal(
+      "fetch",
+      vi.fn(async () => Promise.reject(new TypeError("Failed to fetch"))),
+    );
     const err = (await exportPlcopen("p").catch((e: unknown) => e)) as ApiError;
     expect(err.status).toBe(0);
     expect(err.message).toBe("Cannot reach the LadderLab server (Failed to fetch)");

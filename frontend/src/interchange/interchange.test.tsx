@@ -8,16 +8,26 @@ import { ImportPlcopen, importSummary } from "./ImportPlcopen";
 
 function fakeApi(overrides: Partial<InterchangeApi> = {}): InterchangeApi {
   return {
-    exportProjectSt: vi.fn(async (): Promise<StExport> => ({ text: "PROGRAM Main\nEND_PROGRAM\nFUNCTION_BLOCK Fb\nEND_FUNCTION_BLOCK\n" })),
-    exportPouSt: vi.fn(async (_p: string, pou: string): Promise<StExport> => ({ text: `PROGRAM ${pou}\nEND_PROGRAM\n` })),
+    exportProjectSt: vi.fn(async (): Promise<StExport> => ({
+      text: "PROGRAM Main\nEND_PROGRAM\nFUNCTION_BLOCK Fb\nEND_FUNCTION_BLOCK\n",
+    })),
+    exportPouSt: vi.fn(async (_p: string, pou: string): Promise<StExport> => ({
+      text: `PROGRAM ${pou}\nEND_PROGRAM\n`,
+    })),
     exportPlcopen: vi.fn(async () => "<project/>"),
-    importPlcopen: vi.fn(async (): Promise<ImportReport> => ({ project: { name: "first_steps", revision: "r1", modified: "m", pou_count: 3 }, diagnostics: [] })),
+    importPlcopen: vi.fn(async (): Promise<ImportReport> => ({
+      project: { name: "first_steps", revision: "r1", modified: "m", pou_count: 3 },
+      diagnostics: [],
+    })),
     ...overrides,
   };
 }
 
 const refused = (message: string) =>
-  new ApiError(message, 422, { message, diagnostics: [{ code: "LD-7", message: "coil without operand", pou: "Main", network: "2", severity: "error" }] });
+  new ApiError(message, 422, {
+    message,
+    diagnostics: [{ code: "LD-7", message: "coil without operand", pou: "Main", network: "2", severity: "error" }],
+  });
 
 describe("ExportMenu (issue 9: export project as PLCopen XML / ST, one POU as ST)", () => {
   it("downloads each export under its file name", async () => {
@@ -29,7 +39,11 @@ describe("ExportMenu (issue 9: export project as PLCopen XML / ST, one POU as ST
     expect(download).toHaveBeenLastCalledWith("plant.xml", "<project/>", "application/xml");
     fireEvent.click(screen.getByRole("button", { name: "Project as ST" }));
     await waitFor(() => expect(download).toHaveBeenCalledTimes(2));
-    expect(download).toHaveBeenLastCalledWith("plant.st", "PROGRAM Main\nEND_PROGRAM\nFUNCTION_BLOCK Fb\nEND_FUNCTION_BLOCK\n", "text/plain;charset=utf-8");
+    expect(download).toHaveBeenLastCalledWith(
+      "plant.st",
+      "PROGRAM Main\nEND_PROGRAM\nFUNCTION_BLOCK Fb\nEND_FUNCTION_BLOCK\n",
+      "text/plain;charset=utf-8",
+    );
     fireEvent.click(screen.getByRole("button", { name: "Main as ST" }));
     await waitFor(() => expect(download).toHaveBeenCalledTimes(3));
     expect(download).toHaveBeenLastCalledWith("Main.st", "PROGRAM Main\nEND_PROGRAM\n", "text/plain;charset=utf-8");
@@ -44,7 +58,17 @@ describe("ExportMenu (issue 9: export project as PLCopen XML / ST, one POU as ST
 
   it("lists the diagnostics that block an export and downloads nothing", async () => {
     const download = vi.fn();
-    render(<ExportMenu project="plant" pou="Main" unsaved={false} api={fakeApi({ exportPlcopen: vi.fn(async () => Promise.reject(refused("the project cannot be exported as PLCopen XML"))) })} download={download} />);
+    render(
+      <ExportMenu
+        project="plant"
+        pou="Main"
+        unsaved={false}
+        api={fakeApi({
+          exportPlcopen: vi.fn(async () => Promise.reject(refused("the project cannot be exported as PLCopen XML"))),
+        })}
+        download={download}
+      />,
+    );
     fireEvent.click(screen.getByRole("button", { name: "PLCopen XML" }));
     const alert = await screen.findByRole("alert");
     expect(alert.textContent).toContain("PLCopen XML export failed: the project cannot be exported as PLCopen XML");
@@ -64,7 +88,12 @@ describe("ImportPlcopen (issue 9: import a PLCopen XML file into a new project)"
 
   it("posts the file's text with the chosen name, reports the warnings and opens the project", async () => {
     const warning = { code: "XML-20", message: "action block dropped", pou: "plc_prg", severity: "warning" as const };
-    const api = fakeApi({ importPlcopen: vi.fn(async () => ({ project: { name: "steps", revision: "r1", modified: "m", pou_count: 1 }, diagnostics: [warning] })) });
+    const api = fakeApi({
+      importPlcopen: vi.fn(async () => ({
+        project: { name: "steps", revision: "r1", modified: "m", pou_count: 1 },
+        diagnostics: [warning],
+      })),
+    });
     const onStored = vi.fn();
     const onOpen = vi.fn();
     render(<ImportPlcopen api={api} onStored={onStored} onOpen={onOpen} />);
@@ -82,10 +111,18 @@ describe("ImportPlcopen (issue 9: import a PLCopen XML file into a new project)"
 
   it("shows why a document was refused and stores nothing", async () => {
     const onStored = vi.fn();
-    render(<ImportPlcopen api={fakeApi({ importPlcopen: vi.fn(async () => Promise.reject(refused("the document cannot be imported"))) })} onStored={onStored} onOpen={vi.fn()} />);
+    render(
+      <ImportPlcopen
+        api={fakeApi({ importPlcopen: vi.fn(async () => Promise.reject(refused("the document cannot be imported"))) })}
+        onStored={onStored}
+        onOpen={vi.fn()}
+      />,
+    );
     pick("<broken");
     fireEvent.click(screen.getByRole("button", { name: "Import" }));
-    expect((await screen.findByRole("alert")).textContent).toContain("The import failed: the document cannot be imported");
+    expect((await screen.findByRole("alert")).textContent).toContain(
+      "The import failed: the document cannot be imported",
+    );
     expect(onStored).not.toHaveBeenCalled();
     expect(screen.queryByRole("button", { name: /^Open / })).toBeNull();
   });
@@ -98,7 +135,10 @@ describe("ImportPlcopen (issue 9: import a PLCopen XML file into a new project)"
 
   it("summarises counts with singular and plural", () => {
     const summary = (pou_count: number, warnings: number) =>
-      importSummary({ project: { name: "p", revision: "r", modified: "m", pou_count }, diagnostics: Array.from({ length: warnings }, () => ({ code: "W", message: "w" })) });
+      importSummary({
+        project: { name: "p", revision: "r", modified: "m", pou_count },
+        diagnostics: Array.from({ length: warnings }, () => ({ code: "W", message: "w" })),
+      });
     expect(summary(0, 0)).toBe("Imported p: 0 POUs, no warnings.");
     expect(summary(1, 2)).toBe("Imported p: 1 POU, 2 warnings.");
   });

@@ -5,5 +5,9 @@ import type { Outcome } from "./Problems";
 
 export function failure(what: string, err: unknown): Outcome {
   const message = err instanceof Error ? err.message : String(err);
-  return { message: `${what} failed: ${message}`, diagnostics: err instanceof ApiError ? diagnosticsOf(err.detail) : [], failed: true };
+  return {
+    message: `${what} failed: ${message}`,
+    diagnostics: err instanceof ApiError ? diagnosticsOf(err.detail) : [],
+    failed: true,
+  };
 }

@@ -55,7 +55,13 @@ describe("series layout (GR-11, GR-13)", () => {
   it("gives an empty network one slot on a short rung", () => {
     const [n] = layoutBody(bodyOf(net("n1"))).networks;
     expect(n!.elements).toEqual([]);
-    expect(n!.slots).toEqual([{ place: { series: { kind: "network", network: "n1" }, index: 0 }, x: leftRail + METRICS.emptySeries / 2, y: n!.rungTop + line }]);
+    expect(n!.slots).toEqual([
+      {
+        place: { series: { kind: "network", network: "n1" }, index: 0 },
+        x: leftRail + METRICS.emptySeries / 2,
+        y: n!.rungTop + line,
+      },
+    ]);
     expect(n!.height).toBe(n!.rungTop + rowHeight + METRICS.networkPad);
   });
 });
@@ -86,7 +92,11 @@ describe("parallel layout (GR-14)", () => {
     expect(inner.x + inner.width).toBeLessThanOrEqual(outer.x + outer.width);
     expect(e.y).toBe(inner.y + inner.height + branchGap);
     expect(outer.height).toBe(3 * rowHeight + 2 * branchGap);
-    expect(n!.slots.filter((s) => s.place.series.kind === "branch").map((s) => s.place.series)).toContainEqual({ kind: "branch", parallel: "inner", branch: 1 });
+    expect(n!.slots.filter((s) => s.place.series.kind === "branch").map((s) => s.place.series)).toContainEqual({
+      kind: "branch",
+      parallel: "inner",
+      branch: 1,
+    });
   });
 });
 
@@ -124,9 +134,25 @@ describe("box layout (GR-27)", () => {
   });
 
   it("shows EN/ENO first when enabled and the function result pin", () => {
-    const body = bodyOf(net("n1", { type: "box", id: "add", call: "ADD", en: true, inputs: { IN1: "A", IN2: "B", IN3: "C" }, outputs: { OUT: "Sum" } }));
+    const body = bodyOf(
+      net("n1", {
+        type: "box",
+        id: "add",
+        call: "ADD",
+        en: true,
+        inputs: { IN1: "A", IN2: "B", IN3: "C" },
+        outputs: { OUT: "Sum" },
+      }),
+    );
     const [n] = layoutBody(body, { library }).networks;
-    expect(el(n!, "add").pins!.map((p) => `${p.side}:${p.name}`)).toEqual(["in:EN", "in:IN1", "in:IN2", "in:IN3", "out:ENO", "out:OUT"]);
+    expect(el(n!, "add").pins!.map((p) => `${p.side}:${p.name}`)).toEqual([
+      "in:EN",
+      "in:IN1",
+      "in:IN2",
+      "in:IN3",
+      "out:ENO",
+      "out:OUT",
+    ]);
   });
 
   it("shows only connected pins and an unnamed power pin for an unknown block", () => {

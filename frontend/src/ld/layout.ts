@@ -195,7 +195,18 @@ function layoutSeries(
 
 function leaf(element: LdElement, ref: SeriesRef, index: number, ctx: Ctx, width: number): Block {
   const { rowHeight: height, line } = METRICS;
-  const placed: PlacedElement = { id: element.id, element, network: ctx.network, series: ref, index, x: 0, y: 0, width, height, lineY: line };
+  const placed: PlacedElement = {
+    id: element.id,
+    element,
+    network: ctx.network,
+    series: ref,
+    index,
+    x: 0,
+    y: 0,
+    width,
+    height,
+    lineY: line,
+  };
   return { width, height, lineOffset: line, elements: [placed], wires: [], slots: [] };
 }
 
@@ -207,7 +218,17 @@ function layoutElement(element: LdElement, ref: SeriesRef, index: number, inPowe
     case "box":
       return layoutBox(element, ref, index, inPower, ctx);
     case "compare":
-      return leaf(element, ref, index, ctx, clamp(Math.max(textWidth(element.left), textWidth(element.right)) + 24, METRICS.compareWidth, METRICS.maxElement));
+      return leaf(
+        element,
+        ref,
+        index,
+        ctx,
+        clamp(
+          Math.max(textWidth(element.left), textWidth(element.right)) + 24,
+          METRICS.compareWidth,
+          METRICS.maxElement,
+        ),
+      );
     case "jump":
       return leaf(element, ref, index, ctx, operandWidth(`>> ${element.target}`));
     case "return":
@@ -220,18 +241,19 @@ function layoutElement(element: LdElement, ref: SeriesRef, index: number, inPowe
   return leaf(element, ref, index, ctx, METRICS.minElement);
 }
 
-function layoutParallel(
-  element: Parallel,
-  ref: SeriesRef,
-  index: number,
-  inPower: PowerSource,
-  ctx: Ctx,
-): Block {
+function layoutParallel(element: Parallel, ref: SeriesRef, index: number, inPower: PowerSource, ctx: Ctx): Block {
   const branches = element.branches.map((series, branch) =>
     layoutSeries(series, { kind: "branch", parallel: element.id, branch }, inPower, ctx),
   );
   const width = Math.max(...branches.map((b) => b.width));
-  const out: Block = { width, height: 0, lineOffset: branches[0]?.lineOffset ?? METRICS.line, elements: [], wires: [], slots: [] };
+  const out: Block = {
+    width,
+    height: 0,
+    lineOffset: branches[0]?.lineOffset ?? METRICS.line,
+    elements: [],
+    wires: [],
+    slots: [],
+  };
   let top = 0;
   const lines: number[] = [];
   branches.forEach((block, i) => {
@@ -253,19 +275,22 @@ function layoutParallel(
   out.wires.push({ x1: 0, y1: first, x2: 0, y2: last, power: inPower, kind: "branch" });
   out.wires.push({ x1: width, y1: first, x2: width, y2: last, power: element.id, kind: "branch" });
   const self: PlacedElement = {
-    id: element.id, element, network: ctx.network, series: ref, index, x: 0, y: 0, width, height: out.height, lineY: first,
+    id: element.id,
+    element,
+    network: ctx.network,
+    series: ref,
+    index,
+    x: 0,
+    y: 0,
+    width,
+    height: out.height,
+    lineY: first,
   };
   out.elements.unshift(self);
   return out;
 }
 
-function layoutBox(
-  element: Box,
-  ref: SeriesRef,
-  index: number,
-  inPower: PowerSource,
-  ctx: Ctx,
-): Block {
+function layoutBox(element: Box, ref: SeriesRef, index: number, inPower: PowerSource, ctx: Ctx): Block {
   const { boxTop, boxHead, pinRow, stub } = METRICS;
   const entry = ctx.library(element.call);
   const pins = boxPins(element, entry);
@@ -278,17 +303,32 @@ function layoutBox(
   });
   const leftWidth = Math.max(
     24,
-    ...inputRows.map((r) => (r.block ? r.block.width + stub : typeof r.pin.value === "string" ? textWidth(r.pin.value) + 12 : 0)),
+    ...inputRows.map((r) =>
+      r.block ? r.block.width + stub : typeof r.pin.value === "string" ? textWidth(r.pin.value) + 12 : 0,
+    ),
   );
-  const rightWidth = Math.max(24, ...pins.outputs.map((p) => (typeof p.value === "string" ? textWidth(p.value) + 12 : 0)));
+  const rightWidth = Math.max(
+    24,
+    ...pins.outputs.map((p) => (typeof p.value === "string" ? textWidth(p.value) + 12 : 0)),
+  );
   const rows = Math.max(pins.inputs.length, pins.outputs.length);
   let bodyWidth = Math.max(METRICS.minBoxBody, textWidth(element.call) + 20, textWidth(element.instance ?? "") + 8);
   for (let i = 0; i < rows; i += 1) {
-    bodyWidth = Math.max(bodyWidth, textWidth(pins.inputs[i]?.name ?? "") + textWidth(pins.outputs[i]?.name ?? "") + 24);
+    bodyWidth = Math.max(
+      bodyWidth,
+      textWidth(pins.inputs[i]?.name ?? "") + textWidth(pins.outputs[i]?.name ?? "") + 24,
+    );
   }
   const bodyX = leftWidth;
   const rowsTop = boxTop + boxHead;
-  const out: Block = { width: leftWidth + bodyWidth + rightWidth, height: 0, lineOffset: rowsTop + inputRows[0]!.line, elements: [], wires: [], slots: [] };
+  const out: Block = {
+    width: leftWidth + bodyWidth + rightWidth,
+    height: 0,
+    lineOffset: rowsTop + inputRows[0]!.line,
+    elements: [],
+    wires: [],
+    slots: [],
+  };
   const placedPins: PlacedPin[] = [];
   let top = rowsTop;
   for (const row of inputRows) {
@@ -312,7 +352,14 @@ function layoutBox(
   const bodyBottom = Math.max(top, rowsTop + row0.height + (pins.outputs.length - 1) * pinRow) + 4;
   out.height = bodyBottom + 4;
   out.wires.push({ x1: 0, y1: out.lineOffset, x2: bodyX, y2: out.lineOffset, power: inPower, kind: "wire" });
-  out.wires.push({ x1: bodyX + bodyWidth, y1: out.lineOffset, x2: out.width, y2: out.lineOffset, power: element.id, kind: "wire" });
+  out.wires.push({
+    x1: bodyX + bodyWidth,
+    y1: out.lineOffset,
+    x2: out.width,
+    y2: out.lineOffset,
+    power: element.id,
+    kind: "wire",
+  });
   out.elements.unshift({
     id: element.id,
     element,
@@ -376,7 +423,10 @@ type Laid = ReturnType<typeof layoutNetwork>;
  * they touch (model.ts keeps the others' identity), so reflowing a 1,000-network POU after an edit
  * recomputes one network.
  */
-const cache = new WeakMap<LdNetwork, { rightRailX: number; library: Ctx["library"]; laid: Laid; placed?: NetworkLayout }>();
+const cache = new WeakMap<
+  LdNetwork,
+  { rightRailX: number; library: Ctx["library"]; laid: Laid; placed?: NetworkLayout }
+>();
 
 function cachedNetwork(network: LdNetwork, rightRailX: number, library: Ctx["library"]): Laid {
   const hit = cache.get(network);
@@ -387,7 +437,13 @@ function cachedNetwork(network: LdNetwork, rightRailX: number, library: Ctx["lib
 }
 
 /** The network's layout at its place in the diagram, the same object while nothing changed. */
-function placedNetwork(network: LdNetwork, rightRailX: number, library: Ctx["library"], index: number, top: number): NetworkLayout {
+function placedNetwork(
+  network: LdNetwork,
+  rightRailX: number,
+  library: Ctx["library"],
+  index: number,
+  top: number,
+): NetworkLayout {
   const { layout } = cachedNetwork(network, rightRailX, library);
   const entry = cache.get(network)!;
   if (entry.placed?.index !== index || entry.placed.top !== top) entry.placed = { ...layout, index, top };

@@ -51,7 +51,10 @@ export function sameSeries(a: SeriesRef, b: SeriesRef): boolean {
 /** The series lists nested directly in an element, with their refs (branches, then box pins). */
 export function childSeries(element: LdElement): { ref: SeriesRef; series: Series }[] {
   if (element.type === "parallel") {
-    return element.branches.map((series, branch) => ({ ref: { kind: "branch", parallel: element.id, branch }, series }));
+    return element.branches.map((series, branch) => ({
+      ref: { kind: "branch", parallel: element.id, branch },
+      series,
+    }));
   }
   if (element.type === "box") {
     return Object.entries(boxInputs(element))
@@ -115,7 +118,8 @@ export function updateSeries(body: LdBody, ref: SeriesRef, update: (series: Seri
     if (element.type === "parallel") {
       let changed = false;
       const branches = element.branches.map((branch, i) => {
-        const next = ref.kind === "branch" && ref.parallel === element.id && ref.branch === i ? update(branch) : mapSeries(branch);
+        const next =
+          ref.kind === "branch" && ref.parallel === element.id && ref.branch === i ? update(branch) : mapSeries(branch);
         if (next !== branch) changed = true;
         return next;
       });
@@ -126,7 +130,8 @@ export function updateSeries(body: LdBody, ref: SeriesRef, update: (series: Seri
       const inputs = Object.fromEntries(
         Object.entries(boxInputs(element)).map(([pin, value]) => {
           if (!Array.isArray(value)) return [pin, value];
-          const next = ref.kind === "pin" && ref.box === element.id && ref.pin === pin ? update(value) : mapSeries(value);
+          const next =
+            ref.kind === "pin" && ref.box === element.id && ref.pin === pin ? update(value) : mapSeries(value);
           if (next !== value) changed = true;
           return [pin, next];
         }),

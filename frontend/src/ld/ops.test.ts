@@ -76,7 +76,13 @@ describe("insert (issue 7: insert contact before/after, coil, compare, jump, ret
   });
 
   it("puts a coil asked for among the inputs at the end of the rung, before a jump", () => {
-    const r = ok(insertNear(bodyOf(net("n1", c("a"), c("b"), { type: "jump", id: "j", target: "L" })), { element: "a", side: "after" }, coil("set", "Q")));
+    const r = ok(
+      insertNear(
+        bodyOf(net("n1", c("a"), c("b"), { type: "jump", id: "j", target: "L" })),
+        { element: "a", side: "after" },
+        coil("set", "Q"),
+      ),
+    );
     expect(show(rung(r.body))).toBe("A B (Q) >>L");
     const inPin = ok(insertNear(motorMain, { element: "reset_count", side: "after" }, coil("normal", "Z")));
     expect(show(rung(inPin.body, 2))).toBe("Start/p <CTU> (Z)");
@@ -101,7 +107,10 @@ describe("insert (issue 7: insert contact before/after, coil, compare, jump, ret
   });
 
   it("names a missing anchor instead of throwing", () => {
-    expect(insertNear(seal(), { element: "ghost", side: "after" }, contact())).toEqual({ ok: false, error: "no element ghost" });
+    expect(insertNear(seal(), { element: "ghost", side: "after" }, contact())).toEqual({
+      ok: false,
+      error: "no element ghost",
+    });
     expect(insertNear(seal(), { network: "ghost" }, contact())).toEqual({ ok: false, error: "no network ghost" });
   });
 });
@@ -176,11 +185,18 @@ describe("modes and operands (GR-15..GR-25)", () => {
     body = ok(setOperand(body, "ton", { kind: "output", pin: "ET" }, "Elapsed")).body;
     body = ok(setOperand(body, "ton", { kind: "instance" }, "")).body;
     const ton = locate(body, "ton")!.element;
-    expect(ton.type === "box" && [ton.inputs, ton.outputs, ton.instance]).toEqual([{ PT: "T#2s" }, { ET: "Elapsed" }, null]);
+    expect(ton.type === "box" && [ton.inputs, ton.outputs, ton.instance]).toEqual([
+      { PT: "T#2s" },
+      { ET: "Elapsed" },
+      null,
+    ]);
     body = ok(setOperand(body, "ton", { kind: "input", pin: "PT" }, "")).body;
     const bare = locate(body, "ton")!.element;
     expect(bare.type === "box" && bare.inputs).toEqual({});
-    expect(setOperand(body, "start", { kind: "target" }, "L")).toEqual({ ok: false, error: "a contact has no target operand" });
+    expect(setOperand(body, "start", { kind: "target" }, "L")).toEqual({
+      ok: false,
+      error: "a contact has no target operand",
+    });
   });
 
   it("toggles EN/ENO and feeds a pin from the rail", () => {
@@ -207,7 +223,10 @@ describe("move (drag an element to another place)", () => {
 
   it("refuses to move a parallel into itself or a contact behind a coil", () => {
     const inside = { series: { kind: "branch", parallel: "start_or_motor", branch: 0 } as const, index: 0 };
-    expect(moveElements(motorMain, ["start_or_motor"], inside)).toEqual({ ok: false, error: "cannot move an element into itself" });
+    expect(moveElements(motorMain, ["start_or_motor"], inside)).toEqual({
+      ok: false,
+      error: "cannot move an element into itself",
+    });
     expect(moveElements(seal(), ["a"], { series: { kind: "network", network: "n1" }, index: 3 }).ok).toBe(false);
   });
 });
@@ -231,7 +250,10 @@ describe("networks", () => {
   it("keeps labels unique identifiers or numbers (GR-03)", () => {
     let body = ok(setNetworkLabel(motorMain, "seal_in", "Start1")).body;
     expect(setNetworkLabel(body, "lamp", "start1")).toEqual({ ok: false, error: "label start1 is used twice" });
-    expect(setNetworkLabel(body, "lamp", "1x")).toEqual({ ok: false, error: 'label "1x" is not an identifier or number' });
+    expect(setNetworkLabel(body, "lamp", "1x")).toEqual({
+      ok: false,
+      error: 'label "1x" is not an identifier or number',
+    });
     body = ok(setNetworkLabel(body, "lamp", "20")).body;
     const dup = ok(duplicateNetwork(body, "seal_in"));
     expect(networksOf(dup.body)[1]!.label).toBeNull();
@@ -250,7 +272,9 @@ describe("copy and paste (clipboard JSON)", () => {
     const r = ok(pasteElements(motorMain, { series: { kind: "network", network: "lamp" }, index: 0 }, clip.elements));
     expect(show(rung(r.body, 3))).toBe("[Start|Motor] MotorRunning <Blinker> (Lamp)");
     expect(r.select).toEqual(["par1"]);
-    const other = ok(pasteElements(bodyOf(net("x")), { series: { kind: "network", network: "x" }, index: 0 }, clip.elements));
+    const other = ok(
+      pasteElements(bodyOf(net("x")), { series: { kind: "network", network: "x" }, index: 0 }, clip.elements),
+    );
     expect(ids(other.body)).toEqual(["start_or_motor", "start", "seal"]);
   });
 
@@ -264,7 +288,9 @@ describe("copy and paste (clipboard JSON)", () => {
 
   it("ignores foreign or damaged clipboard text", () => {
     expect(parseClip("Motor")).toBeNull();
-    expect(parseClip('{"format":"ladderlab/ld-clip","kind":"elements","elements":[{"id":"x","type":"lamp"}]}')).toBeNull();
+    expect(
+      parseClip('{"format":"ladderlab/ld-clip","kind":"elements","elements":[{"id":"x","type":"lamp"}]}'),
+    ).toBeNull();
     expect(parseClip('{"format":"other","kind":"elements","elements":[]}')).toBeNull();
   });
 });
@@ -282,7 +308,9 @@ const anyOf = (body: LdBody, type: LdElement["type"], pick: number) => {
 };
 const anySlot = (body: LdBody, pick: number) => {
   const slots = layoutBody(body).networks.flatMap((n) => n.slots);
-  return slots.length ? slots[pick % slots.length]!.place : { series: { kind: "network" as const, network: "none" }, index: 0 };
+  return slots.length
+    ? slots[pick % slots.length]!.place
+    : { series: { kind: "network" as const, network: "none" }, index: 0 };
 };
 const anyNetwork = (body: LdBody, pick: number) => {
   const ns = networksOf(body);
@@ -293,7 +321,8 @@ const subtree = (e: LdElement) => ids({ networks: [{ id: "_", elements: [e] }] }
 
 type Step = { op: number; a: number; b: number; c: number };
 const OPS: ((body: LdBody, s: Step) => EditResult)[] = [
-  (body, s) => insertNear(body, { element: anyId(body, s.a), side: s.b % 2 ? "after" : "before" }, specs[s.c % specs.length]!),
+  (body, s) =>
+    insertNear(body, { element: anyId(body, s.a), side: s.b % 2 ? "after" : "before" }, specs[s.c % specs.length]!),
   (body, s) => insertNear(body, { network: anyNetwork(body, s.a) }, specs[s.c % specs.length]!),
   (body, s) => insertAt(body, anySlot(body, s.a), specs[s.c % specs.length]!),
   (body, s) => wrapInParallel(body, rangeIds(body, anyId(body, s.a), anyId(body, s.b))),
@@ -304,7 +333,12 @@ const OPS: ((body: LdBody, s: Step) => EditResult)[] = [
   (body, s) => toggleEn(body, anyOf(body, "box", s.a)),
   (body, s) => feedPinFromRail(body, anyOf(body, "box", s.a), "PT"),
   (body, s) => moveElements(body, rangeIds(body, anyId(body, s.a), anyId(body, s.b)), anySlot(body, s.c)),
-  (body, s) => pasteElements(body, anySlot(body, s.c), rangeIds(body, anyId(body, s.a), anyId(body, s.b)).map((id) => locate(body, id)!.element)),
+  (body, s) =>
+    pasteElements(
+      body,
+      anySlot(body, s.c),
+      rangeIds(body, anyId(body, s.a), anyId(body, s.b)).map((id) => locate(body, id)!.element),
+    ),
   (body, s) => addNetwork(body, s.a % 5),
   (body, s) => deleteNetworks(body, [anyNetwork(body, s.a)]),
   (body, s) => moveNetwork(body, anyNetwork(body, s.a), s.b % 5),
@@ -379,7 +413,9 @@ describe("properties", () => {
         const where = locate(wrapped.body, id)!;
         expect(where.series.kind).toBe("branch");
         const back = ok(deleteElements(wrapped.body, wrapped.select));
-        expect(show(networksOf(back.body).flatMap((n) => n.elements!))).toBe(show(networksOf(body).flatMap((n) => n.elements!)));
+        expect(show(networksOf(back.body).flatMap((n) => n.elements!))).toBe(
+          show(networksOf(body).flatMap((n) => n.elements!)),
+        );
       }),
     );
   });
@@ -409,7 +445,11 @@ describe("properties", () => {
         fc.pre(id !== "none");
         const r = moveElements(body, [id], anySlot(body, slot));
         if (!r.ok) return;
-        const leaves = (b: LdBody) => [...walk(b)].filter((l) => l.element.type !== "parallel").map((l) => l.element.id).sort();
+        const leaves = (b: LdBody) =>
+          [...walk(b)]
+            .filter((l) => l.element.type !== "parallel")
+            .map((l) => l.element.id)
+            .sort();
         expect(leaves(r.body)).toEqual(leaves(body));
       }),
     );

@@ -32,8 +32,7 @@ import { isOutput, isValidLabel, ldProblems } from "./validate";
 export type ElementSpec = LdElement extends infer E ? (E extends LdElement ? Omit<E, "id"> : never) : never;
 
 export type EditResult =
-  | { ok: true; body: LdBody; /** ids to select after the edit */ select: string[] }
-  | { ok: false; error: string };
+  { ok: true; body: LdBody; /** ids to select after the edit */ select: string[] } | { ok: false; error: string };
 
 /** Which text of an element an operand edit changes. */
 export type OperandField =
@@ -45,7 +44,11 @@ export type OperandField =
   | { kind: "input"; pin: string }
   | { kind: "output"; pin: string };
 
-export const contact = (mode: ContactMode = "no", variable = ""): ElementSpec => ({ type: "contact", mode, var: variable });
+export const contact = (mode: ContactMode = "no", variable = ""): ElementSpec => ({
+  type: "contact",
+  mode,
+  var: variable,
+});
 export const coil = (mode: CoilMode = "normal", variable = ""): ElementSpec => ({ type: "coil", mode, var: variable });
 export const compare = (op: CompareOp = "GT"): ElementSpec => ({ type: "compare", op, left: "", right: "" });
 export const jump = (target = ""): ElementSpec => ({ type: "jump", target });
@@ -280,8 +283,15 @@ function neighbourAfterDelete(body: LdBody, next: LdBody, first: Location): stri
   let at: Location | undefined = first;
   while (at) {
     const series = seriesOf(body, at.series);
-    candidates.push(...series.slice(at.index + 1).map((e) => e.id), ...series.slice(0, at.index).reverse().map((e) => e.id));
-    const owner: string | undefined = at.series.kind === "branch" ? at.series.parallel : at.series.kind === "pin" ? at.series.box : undefined;
+    candidates.push(
+      ...series.slice(at.index + 1).map((e) => e.id),
+      ...series
+        .slice(0, at.index)
+        .reverse()
+        .map((e) => e.id),
+    );
+    const owner: string | undefined =
+      at.series.kind === "branch" ? at.series.parallel : at.series.kind === "pin" ? at.series.box : undefined;
     at = owner === undefined ? undefined : locate(body, owner);
     if (at) candidates.push(...[...walk({ networks: [{ id: "", elements: [at.element] }] })].map((l) => l.element.id));
   }
@@ -293,10 +303,16 @@ export function setMode(body: LdBody, id: string, mode: ContactMode | CoilMode):
   const where = locate(body, id);
   const e = where?.element;
   if (e?.type === "contact" && (CONTACT_MODES as readonly string[]).includes(mode)) {
-    return finish(updateElement(body, id, () => ({ ...e, mode: mode as ContactMode })), [id]);
+    return finish(
+      updateElement(body, id, () => ({ ...e, mode: mode as ContactMode })),
+      [id],
+    );
   }
   if (e?.type === "coil" && (COIL_MODES as readonly string[]).includes(mode)) {
-    return finish(updateElement(body, id, () => ({ ...e, mode: mode as CoilMode })), [id]);
+    return finish(
+      updateElement(body, id, () => ({ ...e, mode: mode as CoilMode })),
+      [id],
+    );
   }
   return fail(e ? `a ${e.type} has no mode ${mode}` : `no element ${id}`);
 }
@@ -322,7 +338,10 @@ const nextOp = (op: CompareOp): CompareOp => OPS[(OPS.indexOf(op) + 1) % OPS.len
 export function setCompareOp(body: LdBody, id: string, op: CompareOp): EditResult {
   const e = locate(body, id)?.element;
   if (e?.type !== "compare") return fail("not a compare contact");
-  return finish(updateElement(body, id, () => ({ ...e, op })), [id]);
+  return finish(
+    updateElement(body, id, () => ({ ...e, op })),
+    [id],
+  );
 }
 
 /** Sets an operand text. An empty box pin text disconnects the pin (the key is removed). */
@@ -345,14 +364,20 @@ export function setOperand(body: LdBody, id: string, field: OperandField, text: 
   }
   if (!next) return fail(`a ${e.type} has no ${field.kind} operand`);
   const replaced = next;
-  return finish(updateElement(body, id, () => replaced), [id]);
+  return finish(
+    updateElement(body, id, () => replaced),
+    [id],
+  );
 }
 
 /** Shows or hides a box's EN/ENO pins. */
 export function toggleEn(body: LdBody, id: string): EditResult {
   const e = locate(body, id)?.element;
   if (e?.type !== "box") return fail("only boxes have EN/ENO");
-  return finish(updateElement(body, id, () => ({ ...e, en: !(e.en ?? false) })), [id]);
+  return finish(
+    updateElement(body, id, () => ({ ...e, en: !(e.en ?? false) })),
+    [id],
+  );
 }
 
 /** Feeds a box input from the left rail through a new series holding one contact. */
@@ -360,7 +385,10 @@ export function feedPinFromRail(body: LdBody, boxId: string, pin: string): EditR
   const e = locate(body, boxId)?.element;
   if (e?.type !== "box") return fail("not a box");
   const added = withId(contact(), usedIds(body));
-  return finish(updateElement(body, boxId, () => ({ ...e, inputs: { ...boxInputs(e), [pin]: [added] } })), [added.id]);
+  return finish(
+    updateElement(body, boxId, () => ({ ...e, inputs: { ...boxInputs(e), [pin]: [added] } })),
+    [added.id],
+  );
 }
 
 /**
@@ -391,7 +419,10 @@ export function pasteElements(body: LdBody, place: Place, elements: LdElement[])
   if (problem) return fail(problem);
   const used = usedIds(body);
   const copies = elements.map((e) => withFreshIds(e, used));
-  return finish(spliceAt(body, place, copies), copies.map((e) => e.id));
+  return finish(
+    spliceAt(body, place, copies),
+    copies.map((e) => e.id),
+  );
 }
 
 // ---- networks ----
@@ -441,7 +472,10 @@ export function pasteNetworks(body: LdBody, index: number, copies: LdNetwork[]):
     return { ...n, id, label, elements: elementsOf(n).map((e) => withFreshIds(e, used)) };
   });
   const at = Math.max(0, Math.min(index, networks.length));
-  return finish({ ...body, networks: [...networks.slice(0, at), ...fresh, ...networks.slice(at)] }, fresh.map((n) => n.id));
+  return finish(
+    { ...body, networks: [...networks.slice(0, at), ...fresh, ...networks.slice(at)] },
+    fresh.map((n) => n.id),
+  );
 }
 
 export function duplicateNetwork(body: LdBody, id: string): EditResult {
@@ -454,7 +488,8 @@ export function duplicateNetwork(body: LdBody, id: string): EditResult {
 /** Sets or clears (null or blank) a network label; labels are unique identifiers or numbers. */
 export function setNetworkLabel(body: LdBody, id: string, label: string | null): EditResult {
   const value = label?.trim() || null;
-  if (value !== null && !isValidLabel(value)) return fail(`label ${JSON.stringify(value)} is not an identifier or number`);
+  if (value !== null && !isValidLabel(value))
+    return fail(`label ${JSON.stringify(value)} is not an identifier or number`);
   return setNetworkField(body, id, { label: value });
 }
 
@@ -464,5 +499,8 @@ export function setNetworkComment(body: LdBody, id: string, comment: string | nu
 
 function setNetworkField(body: LdBody, id: string, patch: Partial<LdNetwork>): EditResult {
   if (!networksOf(body).some((n) => n.id === id)) return fail(`no network ${id}`);
-  return finish(mapNetworks(body, (n) => (n.id === id ? { ...n, ...patch } : n)), [id]);
+  return finish(
+    mapNetworks(body, (n) => (n.id === id ? { ...n, ...patch } : n)),
+    [id],
+  );
 }

@@ -26,9 +26,10 @@ export interface BoxPins {
 const isBool = (pin: Pin) => pin.type.toUpperCase() === "BOOL";
 
 function arrange(pins: Pin[], en: boolean, enName: string, values: Record<string, string | Series>): BoxPin[] {
-  const power = en ? { name: enName, type: "BOOL" } : pins.find(isBool) ?? { name: "", type: undefined };
+  const power = en ? { name: enName, type: "BOOL" } : (pins.find(isBool) ?? { name: "", type: undefined });
   const rows: BoxPin[] = [{ name: power.name, type: power.type, power: true, value: values[power.name] }];
-  for (const pin of pins) if (pin !== power) rows.push({ name: pin.name, type: pin.type, power: false, value: values[pin.name] });
+  for (const pin of pins)
+    if (pin !== power) rows.push({ name: pin.name, type: pin.type, power: false, value: values[pin.name] });
   const listed = new Set(rows.map((r) => r.name));
   for (const [name, value] of Object.entries(values)) {
     if (!listed.has(name)) rows.push({ name, power: false, value });

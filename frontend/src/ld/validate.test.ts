@@ -10,7 +10,13 @@ describe("ldProblems", () => {
 
   it("reports duplicate ids, bad and duplicate labels (GR-03)", () => {
     const labelled = (id: string, label: string): LdNetwork => ({ ...net(id, c(`${id}c`)), label });
-    const body = bodyOf(net("n1", c("a"), c("a")), labelled("n2", "Go"), labelled("n3", "GO"), labelled("n4", "1x"), net("n1"));
+    const body = bodyOf(
+      net("n1", c("a"), c("a")),
+      labelled("n2", "Go"),
+      labelled("n3", "GO"),
+      labelled("n4", "1x"),
+      net("n1"),
+    );
     expect(ldProblems(body)).toEqual([
       { network: "n1", element: "a", message: "duplicate element id a" },
       { network: "n3", message: "label GO is used twice" },

@@ -40,7 +40,8 @@ export function ldProblems(body: LdBody): LdProblem[] {
       else if (elementIds.has(element.id)) report(`duplicate element id ${element.id}`);
       elementIds.add(element.id);
       const output = isOutput(element);
-      if (feedsPin && output) report(`a box input cannot hold a ${element.type === "parallel" ? "coil" : element.type}`);
+      if (feedsPin && output)
+        report(`a box input cannot hold a ${element.type === "parallel" ? "coil" : element.type}`);
       if (afterOutput && !output) report(`${element.type} after a coil: coils come last`);
       if ((element.type === "jump" || element.type === "return") && index !== series.length - 1) {
         report(`${element.type} must be the last element of its branch`);
@@ -56,17 +57,22 @@ export function ldProblems(body: LdBody): LdProblem[] {
           if (Array.isArray(value) && value.length === 0) report(`input ${pin} is fed by an empty series`);
         }
       }
-      for (const child of childSeries(element)) checkSeries(network, child.series, feedsPin || child.ref.kind === "pin");
+      for (const child of childSeries(element))
+        checkSeries(network, child.series, feedsPin || child.ref.kind === "pin");
     });
   };
 
   for (const network of networksOf(body)) {
     if (!network.id) problems.push({ network: "", message: "network without an id" });
-    else if (networkIds.has(network.id)) problems.push({ network: network.id, message: `duplicate network id ${network.id}` });
+    else if (networkIds.has(network.id))
+      problems.push({ network: network.id, message: `duplicate network id ${network.id}` });
     networkIds.add(network.id);
     if (network.label != null) {
       if (!LABEL.test(network.label)) {
-        problems.push({ network: network.id, message: `label ${JSON.stringify(network.label)} is not an identifier or number` });
+        problems.push({
+          network: network.id,
+          message: `label ${JSON.stringify(network.label)} is not an identifier or number`,
+        });
       } else if (labels.has(network.label.toUpperCase())) {
         problems.push({ network: network.id, message: `label ${network.label} is used twice` });
       }

@@ -9,22 +9,61 @@ import { emptyWorkspace, workspaceStore } from "../project/store";
 import { appStore, initialData } from "../store";
 import { offline, onlineStore } from "./store";
 
-const json = (body: unknown, status = 200) => new Response(JSON.stringify(body), { status, headers: { "Content-Type": "application/json" } });
-const sym = (name: string, type = "BOOL"): SymbolInfo => ({ name, type, var_class: "VAR", initial: null, address: null, comment: null, retain: false, constant: false });
+const json = (body: unknown, status = 200) =>
+  new Response(JSON.stringify(body), { status, headers: { "Content-Type": "application/json" } });
+const sym = (name: string, type = "BOOL"): SymbolInfo => ({
+  name,
+  type,
+  var_class: "VAR",
+  initial: null,
+  address: null,
+  comment: null,
+  retain: false,
+  constant: false,
+});
 const project = {
   name: "plant",
   pous: [
-    { name: "Main", kind: "program", language: "ld", declarations: "VAR\n    Start : BOOL;\n    Stop : BOOL;\n    Motor : BOOL;\nEND_VAR", body: motorMain },
+    {
+      name: "Main",
+      kind: "program",
+      language: "ld",
+      declarations: "VAR\n    Start : BOOL;\n    Stop : BOOL;\n    Motor : BOOL;\nEND_VAR",
+      body: motorMain,
+    },
     {
       name: "Pump",
       kind: "function_block",
       language: "ld",
       declarations: "VAR_INPUT\n    Run : BOOL;\nEND_VAR\nVAR_OUTPUT\n    Out : BOOL;\nEND_VAR",
-      body: { networks: [{ id: "n1", elements: [{ type: "contact", id: "r1", var: "Run", mode: "no" }, { type: "coil", id: "q1", var: "Out", mode: "normal" }] }] },
+      body: {
+        networks: [
+          {
+            id: "n1",
+            elements: [
+              { type: "contact", id: "r1", var: "Run", mode: "no" },
+              { type: "coil", id: "q1", var: "Out", mode: "normal" },
+            ],
+          },
+        ],
+      },
     },
   ],
 };
-const simulation = { id: "s1", project: "plant", revision: "r1", state: "stopped", scan_count: 0, time_ms: 0, real_time_ms: 0, scan_ms: { min: 0, avg: 0, max: 0, last: 0 }, overruns: 0, fault: null, clients: 0, created: "2024-05-01T10:00:00Z" };
+const simulation = {
+  id: "s1",
+  project: "plant",
+  revision: "r1",
+  state: "stopped",
+  scan_count: 0,
+  time_ms: 0,
+  real_time_ms: 0,
+  scan_ms: { min: 0, avg: 0, max: 0, last: 0 },
+  overruns: 0,
+  fault: null,
+  clients: 0,
+  created: "2024-05-01T10:00:00Z",
+};
 
 class FakeSocket {
   static all: FakeSocket[] = [];
@@ -60,12 +99,16 @@ function serve(routes: Record<string, (init?: RequestInit) => Response> = {}) {
     const key = `${init?.method ?? "GET"} ${url}`;
     if (routes[key]) return routes[key]!(init);
     if (url === "/api/health") return json({ status: "ok", version: "0.1.0" });
-    if (url === "/api/projects") return json([{ name: "plant", revision: "r1", modified: "2024-05-01T10:00:00Z", pou_count: 1 }]);
-    if (url === "/api/projects/plant") return json({ name: "plant", revision: "r1", modified: "2024-05-01T10:00:00Z", project });
+    if (url === "/api/projects")
+      return json([{ name: "plant", revision: "r1", modified: "2024-05-01T10:00:00Z", pou_count: 1 }]);
+    if (url === "/api/projects/plant")
+      return json({ name: "plant", revision: "r1", modified: "2024-05-01T10:00:00Z", project });
     if (url.startsWith("/api/library")) return json([]);
-    if (url.endsWith("/symbols")) return json({ pou: "Main", symbols: [sym("Start"), sym("Stop"), sym("Motor")], globals: [], diagnostics: [] });
+    if (url.endsWith("/symbols"))
+      return json({ pou: "Main", symbols: [sym("Start"), sym("Stop"), sym("Motor")], globals: [], diagnostics: [] });
     if (key === "POST /api/projects/plant/simulations") return json(simulation, 201);
-    if (url.startsWith("/api/simulations/s1")) return init?.method === "DELETE" ? new Response(null, { status: 204 }) : json(simulation);
+    if (url.startsWith("/api/simulations/s1"))
+      return init?.method === "DELETE" ? new Response(null, { status: 204 }) : json(simulation);
     throw new Error(`unexpected fetch ${key}`);
   });
   vi.stubGlobal("fetch", fetchMock);
@@ -104,7 +147,9 @@ describe("online LD in the app (issue 7 online mode)", () => {
     socket.open();
     const subscribe = socket.sent.find((m) => m.type === "subscribe")!;
     expect(subscribe.paths).toEqual(expect.arrayContaining(["MAIN.START", "MAIN.STOP", "MAIN.MOTOR"]));
-    expect(subscribe.elements).toEqual([{ pou_instance: "MAIN", ids: expect.arrayContaining(["start", "seal", "stop", "motor"]) }]);
+    expect(subscribe.elements).toEqual([
+      { pou_instance: "MAIN", ids: expect.arrayContaining(["start", "seal", "stop", "motor"]) },
+    ]);
 
     // Online: editing is off with a way back; the state is shown.
     expect(screen.getByRole("button", { name: "Go offline to edit" })).toBeTruthy();
@@ -145,7 +190,11 @@ describe("online LD in the app (issue 7 online mode)", () => {
     expect(screen.getByRole("list", { name: "Online log" }).textContent).toContain("forced MAIN.MOTOR := FALSE");
 
     fireEvent.click(screen.getByRole("button", { name: "Go offline to edit" }));
-    await waitFor(() => expect(fetchMock.mock.calls.some(([url, init]) => url === "/api/simulations/s1" && init?.method === "DELETE")).toBe(true));
+    await waitFor(() =>
+      expect(
+        fetchMock.mock.calls.some(([url, init]) => url === "/api/simulations/s1" && init?.method === "DELETE"),
+      ).toBe(true),
+    );
     expect(socket.closed).toBe(true);
     expect((screen.getByRole("button", { name: "Contact" }) as HTMLButtonElement).disabled).toBe(false);
     expect(element(editor, "motor").getAttribute("class")).not.toContain("ld-on");
@@ -164,7 +213,13 @@ describe("online LD in the app (issue 7 online mode)", () => {
     fireEvent.keyDown(window, { key: "F5", shiftKey: true });
     fireEvent.click(screen.getByRole("button", { name: "Run" }));
     fireEvent.click(screen.getByRole("button", { name: "Single cycle" }));
-    expect(socket.sent.filter((m) => m.type !== "subscribe").map((m) => m.type)).toEqual(["single_cycle", "run", "stop", "run", "single_cycle"]);
+    expect(socket.sent.filter((m) => m.type !== "subscribe").map((m) => m.type)).toEqual([
+      "single_cycle",
+      "run",
+      "stop",
+      "run",
+      "single_cycle",
+    ]);
     socket.receive({ type: "status", state: "running" });
     expect((screen.getByRole("button", { name: "Run" }) as HTMLButtonElement).disabled).toBe(true);
     // Single cycle while running (issue 9): stop, then exactly one scan
@@ -187,20 +242,45 @@ describe("online LD in the app (issue 7 online mode)", () => {
     await waitFor(() => expect(FakeSocket.all).toHaveLength(1));
     const socket = FakeSocket.all[0]!;
     socket.open();
-    fireEvent.click(within(screen.getByRole("navigation", { name: "Project tree" })).getByRole("button", { name: /Pump/ }));
+    fireEvent.click(
+      within(screen.getByRole("navigation", { name: "Project tree" })).getByRole("button", { name: /Pump/ }),
+    );
     expect(screen.getByText(/name the instance of Pump to show/)).toBeTruthy();
     fireEvent.change(screen.getByLabelText("Instance of Pump"), { target: { value: "Main.P1" } });
     fireEvent.click(screen.getByRole("button", { name: "Show" }));
-    expect(socket.sent.at(-1)).toMatchObject({ type: "subscribe", paths: ["MAIN.P1.OUT", "MAIN.P1.RUN"], elements: [{ pou_instance: "MAIN.P1", ids: ["q1", "r1"] }] });
-    socket.receive({ type: "values", scan: 3, time_ms: 30, changed: { "MAIN.P1.RUN": true, "MAIN.P1.OUT": true }, forced: [], power: { "MAIN.P1/r1": true, "MAIN.P1/q1": true } });
+    expect(socket.sent.at(-1)).toMatchObject({
+      type: "subscribe",
+      paths: ["MAIN.P1.OUT", "MAIN.P1.RUN"],
+      elements: [{ pou_instance: "MAIN.P1", ids: ["q1", "r1"] }],
+    });
+    socket.receive({
+      type: "values",
+      scan: 3,
+      time_ms: 30,
+      changed: { "MAIN.P1.RUN": true, "MAIN.P1.OUT": true },
+      forced: [],
+      power: { "MAIN.P1/r1": true, "MAIN.P1/q1": true },
+    });
     const editor = screen.getByRole("application", { name: "Ladder diagram editor" });
     expect(element(editor, "q1").getAttribute("class")).toContain("ld-on");
     expect(screen.getByText(/Online: the diagram shows the running simulation/)).toBeTruthy();
   }, 20_000);
 
   it("shows a refused compile's diagnostics in the Diagnostics panel", async () => {
-    const diagnostics: Diagnostic[] = [{ severity: "error", code: "ST-UNKNOWN-VAR", message: "unknown variable 'Lamp'", pou: "Main", network: "lamp", element: "lamp_coil" }];
-    serve({ "POST /api/projects/plant/simulations": () => json({ detail: { message: "project 'plant' does not compile", diagnostics } }, 422) });
+    const diagnostics: Diagnostic[] = [
+      {
+        severity: "error",
+        code: "ST-UNKNOWN-VAR",
+        message: "unknown variable 'Lamp'",
+        pou: "Main",
+        network: "lamp",
+        element: "lamp_coil",
+      },
+    ];
+    serve({
+      "POST /api/projects/plant/simulations": () =>
+        json({ detail: { message: "project 'plant' does not compile", diagnostics } }, 422),
+    });
     await openMain();
     fireEvent.click(screen.getByRole("button", { name: "Compile & simulate" }));
     const list = await screen.findByRole("list", { name: "Diagnostics" });
@@ -213,15 +293,33 @@ describe("online LD in the app (issue 7 online mode)", () => {
 describe("Check and the Diagnostics panel", () => {
   it("lists the check's diagnostics and a click reveals the element, or the declaration row", async () => {
     const diagnostics: Diagnostic[] = [
-      { severity: "warning", code: "LD-X", message: "coil without effect", pou: "Main", network: "lamp", element: "lamp_coil" },
-      { severity: "error", code: "ST-UNKNOWN-TYPE", message: "unknown type 'NOPE'", file: "Main/declarations", pou: "Main", line: 3, column: 12 },
+      {
+        severity: "warning",
+        code: "LD-X",
+        message: "coil without effect",
+        pou: "Main",
+        network: "lamp",
+        element: "lamp_coil",
+      },
+      {
+        severity: "error",
+        code: "ST-UNKNOWN-TYPE",
+        message: "unknown type 'NOPE'",
+        file: "Main/declarations",
+        pou: "Main",
+        line: 3,
+        column: 12,
+      },
     ];
     serve({ "POST /api/projects/plant/check": () => json({ diagnostics }) });
     const editor = await openMain();
     fireEvent.click(screen.getByRole("button", { name: "Check" }));
     const list = await screen.findByRole("list", { name: "Diagnostics" });
     const items = within(list).getAllByRole("button");
-    expect(items.map((b) => b.textContent)).toEqual(["errorMain, declarations, line 3:12unknown type 'NOPE'ST-UNKNOWN-TYPE", "warningMain, network lamp, element lamp_coilcoil without effectLD-X"]);
+    expect(items.map((b) => b.textContent)).toEqual([
+      "errorMain, declarations, line 3:12unknown type 'NOPE'ST-UNKNOWN-TYPE",
+      "warningMain, network lamp, element lamp_coilcoil without effectLD-X",
+    ]);
     expect(element(editor, "lamp_coil").getAttribute("class")).toContain("ld-has-diagnostic");
 
     fireEvent.click(items[1]!);
@@ -236,8 +334,18 @@ describe("Check and the Diagnostics panel", () => {
 
 describe("View as ST", () => {
   it("shows the export highlighted, links network blocks to the diagram and offers the download", async () => {
-    const text = "PROGRAM Main\nVAR\n    Start : BOOL;\nEND_VAR\n(* Network 1 (seal_in) *)\nMotor := (Start OR Motor) AND NOT Stop;\nEND_PROGRAM\n";
-    serve({ "GET /api/projects/plant/export/st?pou=Main": () => json({ text, source_map: [{ line: 5, network: "seal_in", element: null }, { line: 6, network: "seal_in", element: "motor" }] }) });
+    const text =
+      "PROGRAM Main\nVAR\n    Start : BOOL;\nEND_VAR\n(* Network 1 (seal_in) *)\nMotor := (Start OR Motor) AND NOT Stop;\nEND_PROGRAM\n";
+    serve({
+      "GET /api/projects/plant/export/st?pou=Main": () =>
+        json({
+          text,
+          source_map: [
+            { line: 5, network: "seal_in", element: null },
+            { line: 6, network: "seal_in", element: "motor" },
+          ],
+        }),
+    });
     await openMain();
     fireEvent.click(screen.getByRole("tab", { name: "View as ST" }));
     const code = await screen.findByLabelText("Exported ST");
@@ -253,8 +361,22 @@ describe("View as ST", () => {
   });
 
   it("names the problems when the POU cannot be exported", async () => {
-    const diagnostics: Diagnostic[] = [{ code: "ST-UNKNOWN-VAR", message: "unknown variable 'Lamp'", pou: "Main", network: "lamp", element: "lamp_coil" }];
-    serve({ "GET /api/projects/plant/export/st?pou=Main": () => json({ detail: { message: "the project cannot be exported as ST until these errors are fixed", diagnostics } }, 422) });
+    const diagnostics: Diagnostic[] = [
+      {
+        code: "ST-UNKNOWN-VAR",
+        message: "unknown variable 'Lamp'",
+        pou: "Main",
+        network: "lamp",
+        element: "lamp_coil",
+      },
+    ];
+    serve({
+      "GET /api/projects/plant/export/st?pou=Main": () =>
+        json(
+          { detail: { message: "the project cannot be exported as ST until these errors are fixed", diagnostics } },
+          422,
+        ),
+    });
     await openMain();
     fireEvent.click(screen.getByRole("tab", { name: "View as ST" }));
     const alert = await screen.findByText(/The export failed/);

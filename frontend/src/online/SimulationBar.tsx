@@ -82,28 +82,55 @@ export function SimulationBar() {
     return () => window.removeEventListener("keydown", onKey);
   }, []);
 
-  const label = phase === "online" ? `Online · ${state ?? "…"}` : phase === "offline" ? "Offline" : phase === "compiling" ? "Compiling…" : "Connecting…";
+  const label =
+    phase === "online"
+      ? `Online · ${state ?? "…"}`
+      : phase === "offline"
+        ? "Offline"
+        : phase === "compiling"
+          ? "Compiling…"
+          : "Connecting…";
   return (
     <div className={`simulation-bar phase-${phase}${running ? " running" : ""}`} role="toolbar" aria-label="Simulation">
       <button type="button" onClick={() => void checkSaved()} disabled={checking} title="Check (F7)">
         Check
       </button>
-      <button type="button" onClick={() => void compileSaved()} disabled={phase === "compiling" || phase === "connecting"} title="Compile & simulate (Alt+F8)">
+      <button
+        type="button"
+        onClick={() => void compileSaved()}
+        disabled={phase === "compiling" || phase === "connecting"}
+        title="Compile & simulate (Alt+F8)"
+      >
         Compile &amp; simulate
       </button>
       <button type="button" onClick={s.run} disabled={!online || running} title="Run (F5)">
         Run
       </button>
-      <button type="button" onClick={s.stop} disabled={!online || !(running || state === "halted")} title="Stop (Shift+F5)">
+      <button
+        type="button"
+        onClick={s.stop}
+        disabled={!online || !(running || state === "halted")}
+        title="Stop (Shift+F5)"
+      >
         Stop
       </button>
-      <button type="button" onClick={s.singleCycle} disabled={!online} title="Single cycle (F8): one scan, then stopped">
+      <button
+        type="button"
+        onClick={s.singleCycle}
+        disabled={!online}
+        title="Single cycle (F8): one scan, then stopped"
+      >
         Single cycle
       </button>
       <button type="button" onClick={() => void s.reset()} disabled={!online} title="Warm reset">
         Reset
       </button>
-      <button type="button" onClick={() => void s.goOffline()} disabled={phase === "offline"} title="Go offline (Ctrl+F8)">
+      <button
+        type="button"
+        onClick={() => void s.goOffline()}
+        disabled={phase === "offline"}
+        title="Go offline (Ctrl+F8)"
+      >
         Go offline
       </button>
       <span className="online-state" role="status" aria-label="Online state">

@@ -5,11 +5,30 @@ import type { LdElement } from "../ld/model";
 import { bindLd, ldOnlineView, operandPath, operandsOf } from "./ldBinding";
 import { applyMessage, emptyMonitor } from "./monitor";
 
-const sym = (name: string, type: string, var_class = "VAR"): SymbolInfo => ({ name, type, var_class, initial: null, address: null, comment: null, retain: false, constant: false });
-const SYMBOLS = [sym("Start", "BOOL"), sym("Stop", "BOOL"), sym("Motor", "BOOL"), sym("T1", "TON"), sym("Count", "INT"), sym("Alarm", "BOOL", "VAR_GLOBAL")];
+const sym = (name: string, type: string, var_class = "VAR"): SymbolInfo => ({
+  name,
+  type,
+  var_class,
+  initial: null,
+  address: null,
+  comment: null,
+  retain: false,
+  constant: false,
+});
+const SYMBOLS = [
+  sym("Start", "BOOL"),
+  sym("Stop", "BOOL"),
+  sym("Motor", "BOOL"),
+  sym("T1", "TON"),
+  sym("Count", "INT"),
+  sym("Alarm", "BOOL", "VAR_GLOBAL"),
+];
 
 // Motor := (Start OR Motor) AND NOT Stop
-const motorRung = bodyOf(net("n1", par("p1", [c("c1", "Start")], [c("c2", "Motor")]), c("c3", "Stop", "nc"), q("q1", "Motor")), net("n2", c("c4", "Alarm"), q("q2", "Count")));
+const motorRung = bodyOf(
+  net("n1", par("p1", [c("c1", "Start")], [c("c2", "Motor")]), c("c3", "Stop", "nc"), q("q1", "Motor")),
+  net("n2", c("c4", "Alarm"), q("q2", "Count")),
+);
 
 describe("operand paths of the online LD", () => {
   it("puts the POU's own variables under the instance and leaves globals bare", () => {
@@ -20,11 +39,19 @@ describe("operand paths of the online LD", () => {
   });
 
   it("has no path for literals, addresses and empty operands", () => {
-    for (const text of ["TRUE", "false", "5", "T#1s", "%IX0.0", "", "A + B"]) expect(operandPath(text, "MAIN", SYMBOLS)).toBeNull();
+    for (const text of ["TRUE", "false", "5", "T#1s", "%IX0.0", "", "A + B"])
+      expect(operandPath(text, "MAIN", SYMBOLS)).toBeNull();
   });
 
   it("lists every operand an element shows", () => {
-    const box: LdElement = { type: "box", id: "b1", call: "TON", instance: "T1", inputs: { IN: [c("c5", "Start")], PT: "T#5s" }, outputs: { ET: "Elapsed" } };
+    const box: LdElement = {
+      type: "box",
+      id: "b1",
+      call: "TON",
+      instance: "T1",
+      inputs: { IN: [c("c5", "Start")], PT: "T#5s" },
+      outputs: { ET: "Elapsed" },
+    };
     expect(operandsOf(box)).toEqual(["T#5s", "Elapsed"]);
     expect(operandsOf({ type: "compare", id: "k", op: "GT", left: "Count", right: "10" })).toEqual(["Count", "10"]);
   });
@@ -53,7 +80,16 @@ describe("ldOnlineView", () => {
       time_ms: 40,
       changed: { "MAIN.START": true, "MAIN.STOP": true, "MAIN.MOTOR": false, "MAIN.COUNT": 7 },
       forced: ["MAIN.STOP"],
-      power: { "MAIN/p1": true, "MAIN/c1": true, "MAIN/c2": false, "MAIN/c3": false, "MAIN/q1": false, "MAIN/c4": null, "MAIN/q2": null, "OTHER/c1": false },
+      power: {
+        "MAIN/p1": true,
+        "MAIN/c1": true,
+        "MAIN/c2": false,
+        "MAIN/c3": false,
+        "MAIN/q1": false,
+        "MAIN/c4": null,
+        "MAIN/q2": null,
+        "OTHER/c1": false,
+      },
     });
     const view = ldOnlineView(monitor, binding);
     expect(view.power).toEqual({ p1: true, c1: true, c2: false, c3: false, q1: false });

@@ -53,7 +53,12 @@ export interface LdBinding {
 }
 
 /** What to subscribe for `networks` (ids; all when undefined) of an LD body shown for `instance`. */
-export function bindLd(body: LdBody, instance: string, symbols: readonly SymbolInfo[], networks?: ReadonlySet<string>): LdBinding {
+export function bindLd(
+  body: LdBody,
+  instance: string,
+  symbols: readonly SymbolInfo[],
+  networks?: ReadonlySet<string>,
+): LdBinding {
   const pathOf = new Map<string, string>();
   const ids: string[] = [];
   for (const { network, element } of walk(body)) {
@@ -64,7 +69,12 @@ export function bindLd(body: LdBody, instance: string, symbols: readonly SymbolI
       if (path) pathOf.set(operand.trim().toUpperCase(), path);
     }
   }
-  return { instance, paths: [...new Set(pathOf.values())], elements: ids.length ? [{ pou_instance: instance, ids }] : [], pathOf };
+  return {
+    instance,
+    paths: [...new Set(pathOf.values())],
+    elements: ids.length ? [{ pou_instance: instance, ids }] : [],
+    pathOf,
+  };
 }
 
 /** The diagram's online view of a binding: power and dimming by element id, values and forces by operand. */
@@ -83,7 +93,8 @@ export function ldOnlineView(monitor: MonitorState, binding: LdBinding): OnlineV
   for (const [operand, path] of binding.pathOf) {
     const value = monitor.values[path];
     if (typeof value === "boolean") values[operand] = value;
-    else if (typeof value === "number" || typeof value === "string") values[operand] = formatValue(value, monitor.types[path]);
+    else if (typeof value === "number" || typeof value === "string")
+      values[operand] = formatValue(value, monitor.types[path]);
     if (monitor.forced.has(path)) forced.add(operand);
   }
   return { power, executed, values, forced };

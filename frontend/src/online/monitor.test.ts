@@ -1,9 +1,21 @@
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
-import { applyMessage, emptyMonitor, formatValue, keepSubscribed, LOG_LIMIT, parseValue, type MonitorState } from "./monitor";
+import {
+  applyMessage,
+  emptyMonitor,
+  formatValue,
+  keepSubscribed,
+  LOG_LIMIT,
+  parseValue,
+  type MonitorState,
+} from "./monitor";
 import { parseServerMessage, type ServerMessage, type ValuesMessage } from "./protocol";
 
-const values = (scan: number, changed: Record<string, boolean | number | string>, extra: Partial<ValuesMessage> = {}): ValuesMessage => ({
+const values = (
+  scan: number,
+  changed: Record<string, boolean | number | string>,
+  extra: Partial<ValuesMessage> = {},
+): ValuesMessage => ({
   type: "values",
   scan,
   time_ms: scan * 10,
@@ -18,7 +30,11 @@ const fold = (messages: ServerMessage[], start: MonitorState = emptyMonitor) => 
 describe("monitor message handling (issue 6 websocket messages)", () => {
   it("takes the first values message as a snapshot and later ones as diffs", () => {
     const s = fold([
-      values(1, { "MAIN.START": false, "main.motor": false, "MAIN.COUNT": 0 }, { power: { c1: false, q1: false }, forced: [] }),
+      values(
+        1,
+        { "MAIN.START": false, "main.motor": false, "MAIN.COUNT": 0 },
+        { power: { c1: false, q1: false }, forced: [] },
+      ),
       values(2, { "MAIN.START": true }, { power: { c1: true } }),
     ]);
     expect(s.scan).toBe(2);
@@ -65,7 +81,11 @@ describe("monitor message handling (issue 6 websocket messages)", () => {
   });
 
   it("bounds the log to the newest entries", () => {
-    const messages: ServerMessage[] = Array.from({ length: LOG_LIMIT + 5 }, (_, i) => ({ type: "log", level: "info", message: `m${i}` }));
+    const messages: ServerMessage[] = Array.from({ length: LOG_LIMIT + 5 }, (_, i) => ({
+      type: "log",
+      level: "info",
+      message: `m${i}`,
+    }));
     const s = fold(messages);
     expect(s.log).toHaveLength(LOG_LIMIT);
     expect(s.log[0]!.message).toBe("m5");
@@ -86,7 +106,8 @@ describe("monitor message handling (issue 6 websocket messages)", () => {
       fc.property(fc.array(diff, { maxLength: 12 }), (diffs) => {
         const s = fold(diffs.map((d, i) => values(i + 1, d)));
         const expected: Record<string, unknown> = {};
-        for (const d of diffs) for (const [p, v] of Object.entries(d)) expected[p.toUpperCase().replace(/^GVL\./, "")] = v; // GVL.C is C
+        for (const d of diffs)
+          for (const [p, v] of Object.entries(d)) expected[p.toUpperCase().replace(/^GVL\./, "")] = v; // GVL.C is C
         expect(s.values).toEqual(expected);
         expect(s.scan).toBe(diffs.length);
       }),
@@ -96,7 +117,12 @@ describe("monitor message handling (issue 6 websocket messages)", () => {
 
 describe("parseServerMessage", () => {
   it("reads the known message types and ignores anything else", () => {
-    expect(parseServerMessage('{"type":"values","scan":3,"time_ms":30,"changed":{}}')).toEqual({ type: "values", scan: 3, time_ms: 30, changed: {} });
+    expect(parseServerMessage('{"type":"values","scan":3,"time_ms":30,"changed":{}}')).toEqual({
+      type: "values",
+      scan: 3,
+      time_ms: 30,
+      changed: {},
+    });
     expect(parseServerMessage('{"type":"status","state":"running"}')).toEqual({ type: "status", state: "running" });
     expect(parseServerMessage('{"type":"trace","MAIN.A":[1]}')).toBeNull();
     expect(parseServerMessage('{"type":"values"}')).toBeNull();
@@ -149,8 +175,23 @@ describe("values typed by the user", () => {
   });
 
   it("keeps the types of the snapshot after a subscribe for the later diffs", () => {
-    const snapshot: ValuesMessage = { type: "values", scan: 1, time_ms: 10, changed: { "Main.T": 5 }, forced: [], power: {}, types: { "Main.T": { name: "TIME" } } };
-    const diff: ValuesMessage = { type: "values", scan: 2, time_ms: 20, changed: { "MAIN.T": 15 }, forced: [], power: {} };
+    const snapshot: ValuesMessage = {
+      type: "values",
+      scan: 1,
+      time_ms: 10,
+      changed: { "Main.T": 5 },
+      forced: [],
+      power: {},
+      types: { "Main.T": { name: "TIME" } },
+    };
+    const diff: ValuesMessage = {
+      type: "values",
+      scan: 2,
+      time_ms: 20,
+      changed: { "MAIN.T": 15 },
+      forced: [],
+      power: {},
+    };
     const state = applyMessage(applyMessage(emptyMonitor, snapshot), diff);
     expect(formatValue(state.values["MAIN.T"], state.types["MAIN.T"])).toBe("T#15ms");
   });

@@ -50,7 +50,11 @@ export const emptyMonitor: MonitorState = {
  * A path as the server names it in its messages: upper case, and a global without the `GVL.`
  * prefix a client may write (the server reports `GVL.Start` as `START`), so values are found.
  */
-export const pathKey = (path: string): string => path.trim().toUpperCase().replace(/^GVL\s*\.\s*/, "");
+export const pathKey = (path: string): string =>
+  path
+    .trim()
+    .toUpperCase()
+    .replace(/^GVL\s*\.\s*/, "");
 
 function appendLog(state: MonitorState, entry: Omit<LogEntry, "seq" | "scan">, scan?: number | null): MonitorState {
   const last = state.log[state.log.length - 1];
@@ -96,7 +100,11 @@ export function logLocal(state: MonitorState, level: "info" | "warning" | "error
  * Whether a subscription change can keep the old values: a new subscription's first message is a
  * full snapshot, but values of paths no longer subscribed must not linger as if they were live.
  */
-export function keepSubscribed(state: MonitorState, paths: readonly string[], powerKeys: readonly string[]): MonitorState {
+export function keepSubscribed(
+  state: MonitorState,
+  paths: readonly string[],
+  powerKeys: readonly string[],
+): MonitorState {
   const wanted = new Set(paths.map(pathKey));
   const ids = new Set(powerKeys);
   return {
@@ -130,7 +138,13 @@ const pad = (n: number, width = 2) => String(n).padStart(width, "0");
 
 /** `T#1h2m3s500ms`: the non-zero units, largest first (`T#0ms` for zero; a minus sign after `T#`). */
 export function timeLiteral(ms: number): string {
-  const units: [string, number][] = [["d", 86_400_000], ["h", 3_600_000], ["m", 60_000], ["s", 1000], ["ms", 1]];
+  const units: [string, number][] = [
+    ["d", 86_400_000],
+    ["h", 3_600_000],
+    ["m", 60_000],
+    ["s", 1000],
+    ["ms", 1],
+  ];
   let rest = Math.abs(ms);
   let text = "";
   for (const [unit, size] of units) {

@@ -16,7 +16,8 @@ export function operandCommands(pathOf: (operand: string) => string | null): LdO
   return {
     toggle: (operand) => on(operand, (p) => store().write(p, store().monitor.values[pathKey(p)] !== true)),
     write: (operand, text) => on(operand, (p) => store().write(p, parseValue(text))),
-    force: (operand, value) => on(operand, (p) => store().force(p, typeof value === "boolean" ? value : parseValue(value))),
+    force: (operand, value) =>
+      on(operand, (p) => store().force(p, typeof value === "boolean" ? value : parseValue(value))),
     unforce: (operand) => on(operand, (p) => store().unforce(p)),
     watch: (operand) => on(operand, (p) => store().addWatch(p)),
   };
@@ -26,7 +27,12 @@ export function operandCommands(pathOf: (operand: string) => string | null): LdO
  * The context menu items for `operand`; `prompt` asks for the value to write or force. `bool` false
  * (the type is known and not BOOL) leaves out Force TRUE/FALSE.
  */
-export function onlineOperandItems(operand: string, commands: LdOnlineActions, prompt: (action: "write" | "force") => void, bool = true): MenuItem[] {
+export function onlineOperandItems(
+  operand: string,
+  commands: LdOnlineActions,
+  prompt: (action: "write" | "force") => void,
+  bool = true,
+): MenuItem[] {
   return [
     { id: "online-write", label: `Write value of ${operand}…`, run: () => prompt("write") },
     ...(bool

@@ -47,7 +47,9 @@ export function parseServerMessage(text: string): ServerMessage | null {
     case "error":
       return typeof data.message === "string" ? (data as unknown as ErrorMessage) : null;
     case "trace_data":
-      return typeof data.id === "number" && Array.isArray(data.scans) && isRecord(data.values) ? (data as unknown as TraceData) : null;
+      return typeof data.id === "number" && Array.isArray(data.scans) && isRecord(data.values)
+        ? (data as unknown as TraceData)
+        : null;
     default:
       return null;
   }

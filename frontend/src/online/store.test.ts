@@ -85,7 +85,12 @@ describe("online store", () => {
     sockets[0]!.open();
     expect(store.getState().phase).toBe("online");
     expect(sockets[0]!.sent).toEqual([
-      { type: "subscribe", paths: ["MAIN.COUNT", "MAIN.MOTOR", "MAIN.START"], elements: [{ pou_instance: "MAIN", ids: ["c1", "q1"] }], interval_ms: 100 },
+      {
+        type: "subscribe",
+        paths: ["MAIN.COUNT", "MAIN.MOTOR", "MAIN.START"],
+        elements: [{ pou_instance: "MAIN", ids: ["c1", "q1"] }],
+        interval_ms: 100,
+      },
     ]);
   });
 
@@ -95,7 +100,14 @@ describe("online store", () => {
     await store.getState().compile("demo");
     sockets[0]!.open();
     sockets[0]!.receive({ type: "status", state: "running" });
-    sockets[0]!.receive({ type: "values", scan: 12, time_ms: 120, changed: { "MAIN.START": true }, forced: [], power: { "MAIN/c1": true } });
+    sockets[0]!.receive({
+      type: "values",
+      scan: 12,
+      time_ms: 120,
+      changed: { "MAIN.START": true },
+      forced: [],
+      power: { "MAIN/c1": true },
+    });
     const { monitor } = store.getState();
     expect(monitor.state).toBe("running");
     expect(monitor.scan).toBe(12);
@@ -110,7 +122,16 @@ describe("online store", () => {
     await store.getState().compile("demo");
     sockets[0]!.open();
     const before = store.getState().monitor;
-    sockets[0]!.receive({ type: "trace_data", id: 1, state: "recording", scans: [1], time_ms: [10], values: { "MAIN.N": [1] }, triggered: null, lost: 0 });
+    sockets[0]!.receive({
+      type: "trace_data",
+      id: 1,
+      state: "recording",
+      scans: [1],
+      time_ms: [10],
+      values: { "MAIN.N": [1] },
+      triggered: null,
+      lost: 0,
+    });
     expect(store.getState().monitor).toBe(before); // the trace panel keeps the samples, not the monitor
     sockets[0]!.receive({ type: "status", state: "running" });
     sockets[0]!.receive({ type: "nonsense" });
@@ -128,7 +149,10 @@ describe("online store", () => {
     store.getState().addWatch("main.motor"); // already subscribed by view a
     expect(sockets[0]!.sent.filter((m) => (m as { type: string }).type === "subscribe")).toHaveLength(2);
     store.getState().subscribe("a", null);
-    expect(sockets[0]!.sent.at(-1)).toMatchObject({ paths: ["MAIN.MOTOR", "MAIN.START"], elements: [{ pou_instance: "MAIN", ids: ["q1"] }] });
+    expect(sockets[0]!.sent.at(-1)).toMatchObject({
+      paths: ["MAIN.MOTOR", "MAIN.START"],
+      elements: [{ pou_instance: "MAIN", ids: ["q1"] }],
+    });
   });
 
   it("sends write, force, unforce and the run commands", async () => {
@@ -161,14 +185,23 @@ describe("online store", () => {
   });
 
   it("keeps the compile diagnostics of a refused project", async () => {
-    const diagnostics = [{ code: "ST-UNDECLARED", message: "Motor is not declared", pou: "Main", network: "n1", element: "q1" }];
+    const diagnostics = [
+      { code: "ST-UNDECLARED", message: "Motor is not declared", pou: "Main", network: "n1", element: "q1" },
+    ];
     const { store, sockets } = setup({
       createSimulation: vi.fn(async () => {
-        throw new ApiError("the project does not compile", 422, { message: "the project does not compile", diagnostics });
+        throw new ApiError("the project does not compile", 422, {
+          message: "the project does not compile",
+          diagnostics,
+        });
       }),
     });
     await store.getState().compile("demo");
-    expect(store.getState()).toMatchObject({ phase: "offline", error: "the project does not compile", compileDiagnostics: diagnostics });
+    expect(store.getState()).toMatchObject({
+      phase: "offline",
+      error: "the project does not compile",
+      compileDiagnostics: diagnostics,
+    });
     expect(sockets).toHaveLength(0);
   });
 
@@ -181,7 +214,12 @@ describe("online store", () => {
     await store.getState().goOffline();
     expect(sockets[0]!.closed).toBe(true);
     expect(api.deleteSimulation).toHaveBeenCalledWith("s1");
-    expect(store.getState()).toMatchObject({ phase: "offline", simulation: null, watch: ["MAIN.COUNT"], views: { "ld:Main": MOTOR } });
+    expect(store.getState()).toMatchObject({
+      phase: "offline",
+      simulation: null,
+      watch: ["MAIN.COUNT"],
+      views: { "ld:Main": MOTOR },
+    });
   });
 
   it("reports a lost connection and goes offline", async () => {
@@ -211,8 +249,20 @@ describe("mergeSubscriptions", () => {
   it("joins paths ignoring case and element ids per instance; null ids (all elements) win", () => {
     expect(
       mergeSubscriptions([
-        { paths: ["a", "B"], elements: [{ pou_instance: "MAIN", ids: ["x"] }, { pou_instance: "MAIN.FB1", ids: null }] },
-        { paths: ["A"], elements: [{ pou_instance: "main", ids: ["y", "x"] }, { pou_instance: "MAIN.FB1", ids: ["z"] }] },
+        {
+          paths: ["a", "B"],
+          elements: [
+            { pou_instance: "MAIN", ids: ["x"] },
+            { pou_instance: "MAIN.FB1", ids: null },
+          ],
+        },
+        {
+          paths: ["A"],
+          elements: [
+            { pou_instance: "main", ids: ["y", "x"] },
+            { pou_instance: "MAIN.FB1", ids: ["z"] },
+          ],
+        },
       ]),
     ).toEqual({
       paths: ["A", "B"],

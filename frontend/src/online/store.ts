@@ -8,7 +8,14 @@ import { ApiError } from "../api/client";
 import type { Diagnostic } from "../generated/api";
 import { monitorUrl, simulationApi, type SimulationApi } from "./api";
 import { applyMessage, emptyMonitor, keepSubscribed, logLocal, pathKey, powerKey, type MonitorState } from "./monitor";
-import { DEFAULT_INTERVAL_MS, parseServerMessage, type ClientMessage, type ElementSubscription, type ServerMessage, type WriteValue } from "./protocol";
+import {
+  DEFAULT_INTERVAL_MS,
+  parseServerMessage,
+  type ClientMessage,
+  type ElementSubscription,
+  type ServerMessage,
+  type WriteValue,
+} from "./protocol";
 
 /** The part of WebSocket the store uses. */
 export type SocketLike = Pick<WebSocket, "readyState" | "send" | "close" | "onopen" | "onmessage" | "onclose">;
@@ -111,7 +118,11 @@ const compileDiagnosticsOf = (err: unknown): Diagnostic[] => {
 
 const defaultSocket: OpenSocket = (url) => new WebSocket(url);
 
-export function createOnlineStore(api: SimulationApi = simulationApi, openSocket: OpenSocket = defaultSocket, url: (id: string) => string = monitorUrl): StoreApi<OnlineState> {
+export function createOnlineStore(
+  api: SimulationApi = simulationApi,
+  openSocket: OpenSocket = defaultSocket,
+  url: (id: string) => string = monitorUrl,
+): StoreApi<OnlineState> {
   let socket: SocketLike | null = null;
   let lastSent = "";
   let poll: ReturnType<typeof setInterval> | null = null;
@@ -176,7 +187,11 @@ export function createOnlineStore(api: SimulationApi = simulationApi, openSocket
       s.onclose = () => {
         if (socket !== s) return;
         disconnect();
-        set({ ...offline, error: "The connection to the simulation was lost.", monitor: logLocal(get().monitor, "error", "connection to the simulation lost") });
+        set({
+          ...offline,
+          error: "The connection to the simulation was lost.",
+          monitor: logLocal(get().monitor, "error", "connection to the simulation lost"),
+        });
       };
       poll = setInterval(() => {
         api.getSimulation(id).then(
@@ -202,7 +217,12 @@ export function createOnlineStore(api: SimulationApi = simulationApi, openSocket
             void api.deleteSimulation(info.id).catch(() => undefined); // went offline meanwhile
             return;
           }
-          set({ phase: "connecting", simulation: info.id, monitor: emptyMonitor, instanceChoices: info.instances ?? {} });
+          set({
+            phase: "connecting",
+            simulation: info.id,
+            monitor: emptyMonitor,
+            instanceChoices: info.instances ?? {},
+          });
           connect(info.id);
         } catch (err) {
           set({ ...offline, error: message(err), compileDiagnostics: compileDiagnosticsOf(err) });

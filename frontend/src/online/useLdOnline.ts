@@ -51,17 +51,28 @@ export function useLdOnline(pou: Pou, body: LdBody, symbols: readonly SymbolInfo
   const key = `ld:${pou.name}`;
   const live = phase !== "offline";
 
-  const binding = useMemo(() => (instance ? bindLd(body, instance, symbols, visible ?? undefined) : null), [body, instance, symbols, visible]);
+  const binding = useMemo(
+    () => (instance ? bindLd(body, instance, symbols, visible ?? undefined) : null),
+    [body, instance, symbols, visible],
+  );
 
   useEffect(() => {
-    onlineStore.getState().subscribe(key, live && binding ? { paths: binding.paths, elements: binding.elements } : null);
+    onlineStore
+      .getState()
+      .subscribe(key, live && binding ? { paths: binding.paths, elements: binding.elements } : null);
   }, [key, live, binding]);
   useEffect(() => () => onlineStore.getState().subscribe(key, null), [key]);
 
   const onVisibleChange = useCallback((networks: readonly string[]) => setVisible(new Set(networks)), []);
-  const online = useMemo(() => (live && binding ? ldOnlineView(monitor, binding) : undefined), [live, binding, monitor]);
+  const online = useMemo(
+    () => (live && binding ? ldOnlineView(monitor, binding) : undefined),
+    [live, binding, monitor],
+  );
 
-  const actions = useMemo(() => (live && instance ? operandActions(instance, symbols) : undefined), [live, instance, symbols]);
+  const actions = useMemo(
+    () => (live && instance ? operandActions(instance, symbols) : undefined),
+    [live, instance, symbols],
+  );
   const readOnly = onlineReadOnly(pou, live, instance);
   return { online, readOnly, actions, onVisibleChange };
 }

@@ -30,7 +30,13 @@ export function BottomPanels({ onReveal, pathOfOperand }: BottomPanelsProps) {
     { id: "breakpoints", label: `Breakpoints (${breakpoints})` },
     { id: "trace", label: "Trace" },
   ];
-  const body = { diagnostics: <DiagnosticsPanel onReveal={onReveal} />, watch: <WatchPanel />, log: <LogPanel />, breakpoints: <BreakpointsPanel />, trace: <TracePanel /> };
+  const body = {
+    diagnostics: <DiagnosticsPanel onReveal={onReveal} />,
+    watch: <WatchPanel />,
+    log: <LogPanel />,
+    breakpoints: <BreakpointsPanel />,
+    trace: <TracePanel />,
+  };
   // A variable dragged from the diagram and released over the panels joins the watch list.
   const drop = () => {
     const operand = draggedOperand();
@@ -65,7 +71,8 @@ const KEY_STEP_PX = 24;
  */
 function PanelResizer() {
   const height = usePanels((s) => s.height);
-  const current = (el: HTMLElement) => panelsStore.getState().height ?? el.parentElement!.getBoundingClientRect().height;
+  const current = (el: HTMLElement) =>
+    panelsStore.getState().height ?? el.parentElement!.getBoundingClientRect().height;
   const setHeight = (px: number) => panelsStore.getState().setHeight(px, window.innerHeight);
   return (
     <div

@@ -15,7 +15,13 @@ const project: Project = {
   name: "motor",
   pous: [
     { name: "Main", kind: "program", language: "ld", declarations: "", body: motorMain },
-    { name: "Blinker", kind: "function_block", language: "st", declarations: "", body: "Count := Count + 1;\n  Q := Count > 10;" },
+    {
+      name: "Blinker",
+      kind: "function_block",
+      language: "st",
+      declarations: "",
+      body: "Count := Count + 1;\n  Q := Count > 10;",
+    },
   ],
 };
 const noSymbols = { symbols: [], globals: [], diagnostics: [] } as unknown as SymbolTable;
@@ -25,7 +31,12 @@ let send = vi.fn((_msg: ClientMessage) => true);
 beforeEach(() => {
   send = vi.fn((_msg: ClientMessage) => true);
   onlineStore.setState({ phase: "online", send });
-  workspaceStore.setState({ ...emptyWorkspace, name: "motor", project, symbols: { Main: noSymbols, Blinker: noSymbols } });
+  workspaceStore.setState({
+    ...emptyWorkspace,
+    name: "motor",
+    project,
+    symbols: { Main: noSymbols, Blinker: noSymbols },
+  });
   const { toggle, setEnabled } = debugStore.getState();
   toggle({ pou: "MAIN", network: "count_starts" });
   toggle({ pou: "Main", element: "motor" });
@@ -53,7 +64,9 @@ describe("Breakpoints panel (issue 9: every breakpoint of the project, enable/di
     ]);
     const checks = screen.getAllByRole("checkbox") as HTMLInputElement[];
     expect(checks.map((c) => c.checked)).toEqual([true, false, true]);
-    expect(describePlace({ pou: "Main", network: "gone" }, project.pous![0], motorMain)).toBe("network gone (not in the POU)");
+    expect(describePlace({ pou: "Main", network: "gone" }, project.pous![0], motorMain)).toBe(
+      "network gone (not in the POU)",
+    );
   });
 
   it("disables and enables (the simulation is told), removes one and all", () => {
@@ -62,7 +75,11 @@ describe("Breakpoints panel (issue 9: every breakpoint of the project, enable/di
     fireEvent.click(screen.getByRole("checkbox", { name: "Enable breakpoint Main, element motor (coil Motor)" }));
     expect(rows()).toHaveLength(3); // a disabled breakpoint stays listed
     expect(rows()[2]!.className).toContain("breakpoint-disabled");
-    fireEvent.click(screen.getByRole("button", { name: "Remove breakpoint Main, network 3 Count rising edges of Start; Stop with a full count resets" }));
+    fireEvent.click(
+      screen.getByRole("button", {
+        name: "Remove breakpoint Main, network 3 Count rising edges of Start; Stop with a full count resets",
+      }),
+    );
     expect(rows()).toHaveLength(2);
     fireEvent.click(screen.getByRole("button", { name: "Remove all breakpoints" }));
     expect(screen.getByText(/No breakpoints\./)).toBeTruthy();
@@ -78,11 +95,21 @@ describe("Breakpoints panel (issue 9: every breakpoint of the project, enable/di
     render(<BreakpointsPanel />);
     fireEvent.click(screen.getByRole("button", { name: /^Main network 3/ }));
     expect(workspaceStore.getState().active).toBe("Main");
-    expect(panelsStore.getState().focus).toMatchObject({ pou: "Main", network: "count_starts", element: null, line: null, part: "body" });
+    expect(panelsStore.getState().focus).toMatchObject({
+      pou: "Main",
+      network: "count_starts",
+      element: null,
+      line: null,
+      part: "body",
+    });
     fireEvent.click(screen.getByRole("button", { name: "Blinker line 2: Q := Count > 10;" }));
     expect(workspaceStore.getState().active).toBe("Blinker");
     expect(panelsStore.getState().focus).toMatchObject({ pou: "Blinker", line: 2 });
-    act(() => onlineStore.setState({ monitor: { ...emptyMonitor, state: "halted", at: { pou: "MAIN", instance: "MAIN", network: "count_starts" } } }));
+    act(() =>
+      onlineStore.setState({
+        monitor: { ...emptyMonitor, state: "halted", at: { pou: "MAIN", instance: "MAIN", network: "count_starts" } },
+      }),
+    );
     expect(rows().map((r) => r.className.includes("breakpoint-hit"))).toEqual([true, false, false]);
     expect(rows()[0]!.textContent).toContain("halted here");
   });

@@ -46,7 +46,8 @@ export function describePlace(bp: Breakpoint, pou: Pou | undefined, body: Pou["b
     const comment = n.comment?.split("\n")[0];
     return [`network ${index + 1}`, n.label ? `${n.label}:` : null, comment].filter(Boolean).join(" ");
   }
-  const what = pou?.language === "ld" && body && typeof body === "object" ? ldElementText(body as LdBody, bp.element) : null;
+  const what =
+    pou?.language === "ld" && body && typeof body === "object" ? ldElementText(body as LdBody, bp.element) : null;
   return what ? `element ${bp.element} (${what})` : `element ${bp.element}`;
 }
 
@@ -57,18 +58,50 @@ function hitBy(bp: Breakpoint, at: At | null): boolean {
   return "element" in bp ? at.element === bp.element : at.line === bp.line;
 }
 
-function BreakpointRow({ bp, enabled, pou, body, hit }: { bp: Breakpoint; enabled: boolean; pou: Pou | undefined; body: Pou["body"] | undefined; hit: boolean }) {
+function BreakpointRow({
+  bp,
+  enabled,
+  pou,
+  body,
+  hit,
+}: {
+  bp: Breakpoint;
+  enabled: boolean;
+  pou: Pou | undefined;
+  body: Pou["body"] | undefined;
+  hit: boolean;
+}) {
   const name = pou?.name ?? bp.pou;
   const place = describePlace(bp, pou, body);
   const label = `${name}, ${place}`;
   const debug = debugStore.getState();
   return (
-    <tr className={`breakpoint-row${enabled ? "" : " breakpoint-disabled"}${hit ? " breakpoint-hit" : ""}`} data-breakpoint={breakpointKey(bp)}>
+    <tr
+      className={`breakpoint-row${enabled ? "" : " breakpoint-disabled"}${hit ? " breakpoint-hit" : ""}`}
+      data-breakpoint={breakpointKey(bp)}
+    >
       <td>
-        <input type="checkbox" aria-label={`Enable breakpoint ${label}`} checked={enabled} onChange={(e) => debug.setEnabled(bp, e.target.checked)} />
+        <input
+          type="checkbox"
+          aria-label={`Enable breakpoint ${label}`}
+          checked={enabled}
+          onChange={(e) => debug.setEnabled(bp, e.target.checked)}
+        />
       </td>
       <td>
-        <button type="button" className="link" title="Show in the editor" onClick={() => revealPlace({ pou: name, network: "network" in bp ? bp.network : null, element: "element" in bp ? bp.element : null, line: "line" in bp ? bp.line : null })}>
+        <button
+          type="button"
+          className="link"
+          title="Show in the editor"
+          onClick={() =>
+            revealPlace({
+              pou: name,
+              network: "network" in bp ? bp.network : null,
+              element: "element" in bp ? bp.element : null,
+              line: "line" in bp ? bp.line : null,
+            })
+          }
+        >
           <span className="breakpoint-pou">{name}</span> {place}
         </button>
         {hit ? <span className="breakpoint-hit-mark"> ← halted here</span> : null}
@@ -88,7 +121,12 @@ export function BreakpointsPanel() {
   const project = useWorkspace((s) => s.project);
   const at = useOnline((s) => (s.monitor.state === "halted" ? s.monitor.at : null));
   if (!breakpoints.length) {
-    return <p className="panel-empty">No breakpoints. Click a network number in a diagram, Alt+click an element (or select it and press F9), or click the gutter of an ST line.</p>;
+    return (
+      <p className="panel-empty">
+        No breakpoints. Click a network number in a diagram, Alt+click an element (or select it and press F9), or click
+        the gutter of an ST line.
+      </p>
+    );
   }
   return (
     <div className="breakpoints-panel">
@@ -99,7 +137,16 @@ export function BreakpointsPanel() {
         <tbody>
           {breakpoints.map((bp) => {
             const pou = project?.pous?.find((p) => p.name.toUpperCase() === bp.pou.toUpperCase());
-            return <BreakpointRow key={breakpointKey(bp)} bp={bp} enabled={isEnabled({ disabled }, bp)} pou={pou} body={pou?.body} hit={hitBy(bp, at)} />;
+            return (
+              <BreakpointRow
+                key={breakpointKey(bp)}
+                bp={bp}
+                enabled={isEnabled({ disabled }, bp)}
+                pou={pou}
+                body={pou?.body}
+                hit={hitBy(bp, at)}
+              />
+            );
           })}
         </tbody>
       </table>

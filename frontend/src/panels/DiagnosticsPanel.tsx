@@ -29,7 +29,8 @@ export function DiagnosticsPanel({ onReveal }: { onReveal(d: Diagnostic): void }
       </p>
     );
   }
-  if (diagnostics === null) return <p className="panel-empty">Press Check to list the problems of the saved project.</p>;
+  if (diagnostics === null)
+    return <p className="panel-empty">Press Check to list the problems of the saved project.</p>;
   if (!diagnostics.length) return <p className="panel-empty">No problems found.</p>;
   const sorted = [...diagnostics].sort((a, b) => RANK[a.severity ?? "error"] - RANK[b.severity ?? "error"]);
   return (
@@ -38,7 +39,12 @@ export function DiagnosticsPanel({ onReveal }: { onReveal(d: Diagnostic): void }
         const target = focusOf(d);
         return (
           <li key={i}>
-            <button type="button" className={`diagnostic diagnostic-${d.severity ?? "error"}`} disabled={!target} onClick={() => onReveal(d)}>
+            <button
+              type="button"
+              className={`diagnostic diagnostic-${d.severity ?? "error"}`}
+              disabled={!target}
+              onClick={() => onReveal(d)}
+            >
               <span className="diagnostic-severity">{d.severity ?? "error"}</span>
               <span className="diagnostic-place">{placeOf(d)}</span>
               <span className="diagnostic-message">{d.message}</span>

@@ -15,7 +15,18 @@ export function LogPanel() {
           <span className="log-scan">#{entry.scan}</span>
           <span className="log-level">{entry.level}</span>
           <span className="log-message">{entry.message}</span>
-          {entry.at ? <span className="log-at">{[entry.at.pou, entry.at.network, entry.at.element, entry.at.line != null ? `line ${entry.at.line}` : null].filter(Boolean).join(", ")}</span> : null}
+          {entry.at ? (
+            <span className="log-at">
+              {[
+                entry.at.pou,
+                entry.at.network,
+                entry.at.element,
+                entry.at.line != null ? `line ${entry.at.line}` : null,
+              ]
+                .filter(Boolean)
+                .join(", ")}
+            </span>
+          ) : null}
         </li>
       ))}
     </ol>

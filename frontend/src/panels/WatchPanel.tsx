@@ -22,11 +22,22 @@ function WatchRow({ path }: { path: string }) {
       <td className="watch-path">{path}</td>
       <td className={`watch-value${value === true ? " watch-true" : ""}`} aria-label={`Value of ${path}`}>
         {online ? formatValue(value, type) : "—"}
-        {forced ? <span className="watch-forced-mark" title="forced"> F</span> : null}
+        {forced ? (
+          <span className="watch-forced-mark" title="forced">
+            {" "}
+            F
+          </span>
+        ) : null}
       </td>
       <td>
         <form className="watch-edit" onSubmit={(e) => submit(e, "write")}>
-          <input aria-label={`New value for ${path}`} value={text} onChange={(e) => setText(e.target.value)} disabled={!online} spellCheck={false} />
+          <input
+            aria-label={`New value for ${path}`}
+            value={text}
+            onChange={(e) => setText(e.target.value)}
+            disabled={!online}
+            spellCheck={false}
+          />
           <button type="submit" disabled={!online || !text.trim()}>
             Write
           </button>
@@ -57,7 +68,13 @@ export function WatchPanel() {
   return (
     <div className="watch">
       <form className="watch-add" onSubmit={add}>
-        <input aria-label="Variable path to watch" placeholder="MAIN.Motor (or drag a variable here)" value={text} onChange={(e) => setText(e.target.value)} spellCheck={false} />
+        <input
+          aria-label="Variable path to watch"
+          placeholder="MAIN.Motor (or drag a variable here)"
+          value={text}
+          onChange={(e) => setText(e.target.value)}
+          spellCheck={false}
+        />
         <button type="submit" disabled={!text.trim()}>
           Add
         </button>

@@ -53,7 +53,14 @@ export function focusOf(d: Diagnostic): Omit<Focus, "seq"> | null {
   return { pou: d.pou, network: d.network ?? null, element: d.element ?? null, line: d.line ?? null, part };
 }
 
-export const emptyPanels: PanelsData = { panel: "diagnostics", diagnostics: null, checking: false, checkError: null, focus: null, height: null };
+export const emptyPanels: PanelsData = {
+  panel: "diagnostics",
+  diagnostics: null,
+  checking: false,
+  checkError: null,
+  focus: null,
+  height: null,
+};
 
 /** The panels stay at least `min` px high and leave the editor at least `editor` px of the window. */
 export const PANEL_HEIGHT_LIMITS = { min: 80, editor: 160 };
@@ -61,7 +68,9 @@ export const PANEL_HEIGHT_LIMITS = { min: 80, editor: 160 };
 export const clampHeight = (px: number, windowHeight: number): number =>
   Math.round(Math.max(PANEL_HEIGHT_LIMITS.min, Math.min(px, windowHeight - PANEL_HEIGHT_LIMITS.editor)));
 
-export function createPanelsStore(check: (project: string) => Promise<CheckReport> = checkProject): StoreApi<PanelsState> {
+export function createPanelsStore(
+  check: (project: string) => Promise<CheckReport> = checkProject,
+): StoreApi<PanelsState> {
   let call = 0;
   return createStore<PanelsState>()((set, get) => ({
     ...emptyPanels,

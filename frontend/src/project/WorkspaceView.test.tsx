@@ -8,7 +8,8 @@ import { motorMain } from "../ld/fixtures";
 import { debugStore } from "../debug/store";
 import { emptyWorkspace, workspaceStore } from "./store";
 
-const json = (body: unknown, status = 200) => new Response(JSON.stringify(body), { status, headers: { "Content-Type": "application/json" } });
+const json = (body: unknown, status = 200) =>
+  new Response(JSON.stringify(body), { status, headers: { "Content-Type": "application/json" } });
 const project = {
   name: "plant",
   pous: [
@@ -23,11 +24,18 @@ function serve(put: () => Response) {
   const fetchMock = vi.fn(async (input: RequestInfo | URL, init?: RequestInit) => {
     const url = String(input);
     if (url === "/api/health") return json({ status: "ok", version: "0.1.0" });
-    if (url === "/api/projects") return json([{ name: "plant", revision: "r1", modified: "2024-05-01T10:00:00Z", pou_count: 2 }]);
+    if (url === "/api/projects")
+      return json([{ name: "plant", revision: "r1", modified: "2024-05-01T10:00:00Z", pou_count: 2 }]);
     if (url === "/api/projects/plant" && init?.method === "PUT") return put();
-    if (url === "/api/projects/plant") return json({ name: "plant", revision: "r1", modified: "2024-05-01T10:00:00Z", project });
+    if (url === "/api/projects/plant")
+      return json({ name: "plant", revision: "r1", modified: "2024-05-01T10:00:00Z", project });
     if (url.startsWith("/api/library")) return json([]);
-    if (url.endsWith("/check")) return json({ diagnostics: [{ code: "ST-E", message: "expected ';'", file: "Blinker/body", line: 1, column: 1, severity: "error" }] });
+    if (url.endsWith("/check"))
+      return json({
+        diagnostics: [
+          { code: "ST-E", message: "expected ';'", file: "Blinker/body", line: 1, column: 1, severity: "error" },
+        ],
+      });
     if (url.endsWith("/symbols")) return json({ pou: "Main", symbols: [], globals: [], diagnostics: [] });
     throw new Error(`unexpected fetch ${url}`);
   });
@@ -51,7 +59,9 @@ describe("app shell", () => {
   it("shows the project tree by kind with languages, globals and tasks", async () => {
     serve(() => json({}));
     const tree = await openPlant();
-    const headings = within(tree).getAllByRole("heading").map((h) => h.textContent);
+    const headings = within(tree)
+      .getAllByRole("heading")
+      .map((h) => h.textContent);
     expect(headings).toEqual(["Programs", "Function blocks", "Functions", "Types", "Global variables", "Tasks"]);
     expect(within(tree).getByRole("button", { name: /Main/ }).textContent).toBe("MainLD");
     expect(within(tree).getByRole("button", { name: /Blinker/ }).textContent).toBe("BlinkerST");
@@ -86,7 +96,17 @@ describe("app shell", () => {
     serve(() => {
       puts += 1;
       return puts === 1
-        ? json({ detail: { message: "saved by someone else", base_revision: "r1", current_revision: "r5", current_modified: "2024-05-03T09:30:00Z" } }, 409)
+        ? json(
+            {
+              detail: {
+                message: "saved by someone else",
+                base_revision: "r1",
+                current_revision: "r5",
+                current_modified: "2024-05-03T09:30:00Z",
+              },
+            },
+            409,
+          )
         : json({ revision: "r6", modified: "2024-05-03T10:00:00Z" });
     });
     const tree = await openPlant();
@@ -110,7 +130,9 @@ describe("app shell", () => {
     const content = screen.getByLabelText("Blinker body");
     const view = EditorView.findFromDOM(content)!;
     const checkedBodies = () =>
-      fetchMock.mock.calls.filter(([url]) => String(url) === "/api/check").map(([, init]) => (JSON.parse(String(init?.body)) as typeof project).pous[1]!.body);
+      fetchMock.mock.calls
+        .filter(([url]) => String(url) === "/api/check")
+        .map(([, init]) => (JSON.parse(String(init?.body)) as typeof project).pous[1]!.body);
     await waitFor(() => expect(checkedBodies()).toEqual([""]));
     await waitFor(() => expect(diagnosticCount(view.state)).toBe(1));
     act(() => view.dispatch({ changes: { from: 0, insert: "Q := TRUE;" } }));
@@ -120,7 +142,9 @@ describe("app shell", () => {
     expect(screen.getByRole("tab", { name: /Blinker/ }).textContent).toContain("●");
     const declarations = EditorView.findFromDOM(screen.getByLabelText("Blinker declarations"))!;
     act(() => declarations.dispatch({ changes: { from: 0, insert: "VAR Q : BOOL; END_VAR" } }));
-    expect(workspaceStore.getState().project?.pous?.find((p) => p.name === "Blinker")?.declarations).toBe("VAR Q : BOOL; END_VAR");
+    expect(workspaceStore.getState().project?.pous?.find((p) => p.name === "Blinker")?.declarations).toBe(
+      "VAR Q : BOOL; END_VAR",
+    );
   });
 
   it("wires debugging into the app: a network number click lists the breakpoint in the Breakpoints panel; the shortcut help names the debug keys (issue 9)", async () => {
@@ -132,11 +156,21 @@ describe("app shell", () => {
     fireEvent.click(within(tree).getByRole("button", { name: /Main/ }));
     fireEvent.click(screen.getByRole("button", { name: "Toggle breakpoint on network 3" }));
     fireEvent.click(screen.getByRole("tab", { name: "Breakpoints (1)" }));
-    expect(screen.getByRole("table", { name: "Breakpoints" }).textContent).toContain("Main network 3 Count rising edges of Start");
-    expect(JSON.parse(localStorage.getItem("ladderlab:breakpoints:plant")!).breakpoints).toEqual([{ pou: "Main", network: "count_starts" }]);
+    expect(screen.getByRole("table", { name: "Breakpoints" }).textContent).toContain(
+      "Main network 3 Count rising edges of Start",
+    );
+    expect(JSON.parse(localStorage.getItem("ladderlab:breakpoints:plant")!).breakpoints).toEqual([
+      { pou: "Main", network: "count_starts" },
+    ]);
     fireEvent.click(screen.getByRole("button", { name: "Shortcuts" }));
     const help = screen.getByRole("dialog", { name: "Keyboard shortcuts" }).textContent;
-    for (const text of ["F9Toggle a breakpoint", "F5 (halted)Continue", "F10Step to the next network", "F11Step to the next statement"]) expect(help).toContain(text);
+    for (const text of [
+      "F9Toggle a breakpoint",
+      "F5 (halted)Continue",
+      "F10Step to the next network",
+      "F11Step to the next statement",
+    ])
+      expect(help).toContain(text);
     debugStore.getState().open(null);
   });
 });

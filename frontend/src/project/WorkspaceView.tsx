@@ -70,7 +70,14 @@ function NewPou() {
   };
   return (
     <form className="new-pou" aria-label="New POU" onSubmit={submit}>
-      <input aria-label="POU name" autoFocus value={name} onChange={(e) => setName(e.target.value)} placeholder="name" spellCheck={false} />
+      <input
+        aria-label="POU name"
+        autoFocus
+        value={name}
+        onChange={(e) => setName(e.target.value)}
+        placeholder="name"
+        spellCheck={false}
+      />
       <select aria-label="POU kind" value={kind} onChange={(e) => setKind(e.target.value as Pou["kind"])}>
         {KINDS.map((k) => (
           <option key={k.kind} value={k.kind}>
@@ -78,7 +85,11 @@ function NewPou() {
           </option>
         ))}
       </select>
-      <select aria-label="POU language" value={language} onChange={(e) => setLanguage(e.target.value as Pou["language"])}>
+      <select
+        aria-label="POU language"
+        value={language}
+        onChange={(e) => setLanguage(e.target.value as Pou["language"])}
+      >
         {Object.entries(LANGUAGE).map(([value, label]) => (
           <option key={value} value={value}>
             {label}
@@ -118,10 +129,19 @@ function ProjectTree() {
               <ul>
                 {group.map((p) => (
                   <li key={p.name}>
-                    <button type="button" className="tree-item" aria-current={active === p.name ? "true" : undefined} onClick={() => openPou(p.name)}>
+                    <button
+                      type="button"
+                      className="tree-item"
+                      aria-current={active === p.name ? "true" : undefined}
+                      onClick={() => openPou(p.name)}
+                    >
                       <span className="tree-name">{p.name}</span>
                       <span className={`lang lang-${p.language}`}>{LANGUAGE[p.language]}</span>
-                      {changed.includes(p.name) ? <span className="unsaved" aria-label="unsaved changes">●</span> : null}
+                      {changed.includes(p.name) ? (
+                        <span className="unsaved" aria-label="unsaved changes">
+                          ●
+                        </span>
+                      ) : null}
                     </button>
                   </li>
                 ))}
@@ -134,11 +154,15 @@ function ProjectTree() {
       })}
       <section>
         <h3>Types</h3>
-        <p className="tree-empty">{lines(project.types) ? `${lines(project.types)} lines of TYPE declarations` : "none"}</p>
+        <p className="tree-empty">
+          {lines(project.types) ? `${lines(project.types)} lines of TYPE declarations` : "none"}
+        </p>
       </section>
       <section>
         <h3>Global variables</h3>
-        <p className="tree-empty">{lines(project.globals) ? `${lines(project.globals)} lines of VAR_GLOBAL declarations` : "none"}</p>
+        <p className="tree-empty">
+          {lines(project.globals) ? `${lines(project.globals)} lines of VAR_GLOBAL declarations` : "none"}
+        </p>
       </section>
       <section>
         <h3>Tasks</h3>
@@ -146,7 +170,10 @@ function ProjectTree() {
           <ul>
             {project.tasks.map((t) => (
               <li key={t.name} className="tree-task">
-                {t.name} <span className="tree-meta">{t.interval ?? ""} · {(t.programs ?? []).join(", ") || "no programs"}</span>
+                {t.name}{" "}
+                <span className="tree-meta">
+                  {t.interval ?? ""} · {(t.programs ?? []).join(", ") || "no programs"}
+                </span>
               </li>
             ))}
           </ul>
@@ -170,7 +197,12 @@ function Tabs() {
         <div key={pou} className="tab" role="presentation">
           <button type="button" role="tab" aria-selected={pou === active} onClick={() => openPou(pou)}>
             {pou}
-            {changed.includes(pou) ? <span className="unsaved" aria-label="unsaved changes"> ●</span> : null}
+            {changed.includes(pou) ? (
+              <span className="unsaved" aria-label="unsaved changes">
+                {" "}
+                ●
+              </span>
+            ) : null}
           </button>
           <button type="button" className="tab-close" aria-label={`Close ${pou}`} onClick={() => closeTab(pou)}>
             ×
@@ -186,7 +218,8 @@ const NO_DIAGNOSTICS: Diagnostic[] = [];
 const APP_KEYS = [...SIMULATION_KEYS, ...DEBUG_KEYS];
 
 /** A POU by an IEC name in any case (the simulation reports halts with the compiled spelling). */
-const pouNamed = (project: Project | null, name: string) => project?.pous?.find((p) => p.name.toUpperCase() === name.toUpperCase());
+const pouNamed = (project: Project | null, name: string) =>
+  project?.pous?.find((p) => p.name.toUpperCase() === name.toUpperCase());
 
 /** Which instance of a function block the online view shows (a path such as MAIN.BLINK), typed or picked from the simulation's. */
 function InstancePicker({ pou }: { pou: string }) {
@@ -202,8 +235,19 @@ function InstancePicker({ pou }: { pou: string }) {
         onlineStore.getState().setInstance(pou, text);
       }}
     >
-      <input aria-label={`Instance of ${pou}`} list={listId} value={text} onChange={(e) => setText(e.target.value)} placeholder={choices?.[0] ?? "MAIN.Instance"} spellCheck={false} />
-      <datalist id={listId}>{choices?.map((path) => <option key={path} value={path} />)}</datalist>
+      <input
+        aria-label={`Instance of ${pou}`}
+        list={listId}
+        value={text}
+        onChange={(e) => setText(e.target.value)}
+        placeholder={choices?.[0] ?? "MAIN.Instance"}
+        spellCheck={false}
+      />
+      <datalist id={listId}>
+        {choices?.map((path) => (
+          <option key={path} value={path} />
+        ))}
+      </datalist>
       <button type="submit">Show</button>
     </form>
   );
@@ -263,7 +307,10 @@ function StPouView({ pou }: { pou: Pou }) {
   const allBreakpoints = useDebug((s) => s.breakpoints);
   const upper = pou.name.toUpperCase();
   const same = (name: string) => name.toUpperCase() === upper;
-  const lines = useMemo(() => allBreakpoints.flatMap((b) => ("line" in b && b.pou.toUpperCase() === upper ? [b.line] : [])), [allBreakpoints, upper]);
+  const lines = useMemo(
+    () => allBreakpoints.flatMap((b) => ("line" in b && b.pou.toUpperCase() === upper ? [b.line] : [])),
+    [allBreakpoints, upper],
+  );
   const at = useOnline((s) => (s.monitor.state === "halted" ? s.monitor.at : null));
   const debug = {
     breakpoints: lines,
@@ -271,7 +318,10 @@ function StPouView({ pou }: { pou: Pou }) {
     onToggle: (line: number) => debugStore.getState().toggle({ pou: pou.name, line }),
   };
   return (
-    <div className="st-pou" style={{ display: "flex", flexDirection: "column", gap: "0.25rem", height: "100%", minHeight: 0 }}>
+    <div
+      className="st-pou"
+      style={{ display: "flex", flexDirection: "column", gap: "0.25rem", height: "100%", minHeight: 0 }}
+    >
       <div style={{ flex: "0 0 35%", minHeight: "6rem", overflow: "hidden", borderBottom: "1px solid #ccc" }}>
         <StEditor
           text={pou.declarations ?? ""}
@@ -283,7 +333,10 @@ function StPouView({ pou }: { pou: Pou }) {
           label={`${pou.name} declarations`}
         />
       </div>
-      <StOnlineBar online={online} instancePicker={pou.kind === "function_block" ? <InstancePicker pou={pou.name} /> : undefined} />
+      <StOnlineBar
+        online={online}
+        instancePicker={pou.kind === "function_block" ? <InstancePicker pou={pou.name} /> : undefined}
+      />
       <div style={{ flex: "1 1 65%", minHeight: "10rem", overflow: "hidden" }}>
         <StEditor
           text={body}
@@ -305,7 +358,15 @@ function StPouView({ pou }: { pou: Pou }) {
 type PouMode = "body" | "declarations" | "st";
 
 /** Declarations of one POU with the types to offer and the problems of its declaration text. */
-function PouDeclarations({ pou, readOnly, focus }: { pou: Pou; readOnly: string | null; focus: { line: number; seq: number } | null }) {
+function PouDeclarations({
+  pou,
+  readOnly,
+  focus,
+}: {
+  pou: Pou;
+  readOnly: string | null;
+  focus: { line: number; seq: number } | null;
+}) {
   const setDeclarations = useWorkspace((s) => s.setDeclarations);
   const library = useWorkspace((s) => s.library);
   const userTypes = useWorkspace((s) => s.project?.types ?? "");
@@ -321,10 +382,25 @@ function PouDeclarations({ pou, readOnly, focus }: { pou: Pou; readOnly: string 
     });
   }, [table, checked, file]);
   const types = useMemo(
-    () => [...new Set([...ELEMENTARY_TYPES, ...userTypeNames(userTypes), ...library.filter((e) => e.kind === "function_block").map((e) => e.name)])],
+    () => [
+      ...new Set([
+        ...ELEMENTARY_TYPES,
+        ...userTypeNames(userTypes),
+        ...library.filter((e) => e.kind === "function_block").map((e) => e.name),
+      ]),
+    ],
     [userTypes, library],
   );
-  return <DeclarationsEditor text={pou.declarations ?? ""} onChange={(text) => setDeclarations(pou.name, text)} diagnostics={diagnostics} types={types} focus={focus} readOnly={readOnly} />;
+  return (
+    <DeclarationsEditor
+      text={pou.declarations ?? ""}
+      onChange={(text) => setDeclarations(pou.name, text)}
+      diagnostics={diagnostics}
+      types={types}
+      focus={focus}
+      readOnly={readOnly}
+    />
+  );
 }
 
 function PouView({ name }: { name: string }) {
@@ -349,9 +425,22 @@ function PouView({ name }: { name: string }) {
   let content;
   if (mode === "declarations") {
     const readOnly = phase === "offline" ? null : "Online: go offline to edit.";
-    content = <PouDeclarations pou={pou} readOnly={readOnly} focus={focus?.part === "declarations" && focus.line != null ? { line: focus.line, seq: focus.seq } : null} />;
+    content = (
+      <PouDeclarations
+        pou={pou}
+        readOnly={readOnly}
+        focus={focus?.part === "declarations" && focus.line != null ? { line: focus.line, seq: focus.seq } : null}
+      />
+    );
   } else if (mode === "st") {
-    content = <StView project={project} pou={name} unsaved={unsaved} onRevealNetwork={(network) => panelsStore.getState().reveal({ pou: name, network })} />;
+    content = (
+      <StView
+        project={project}
+        pou={name}
+        unsaved={unsaved}
+        onRevealNetwork={(network) => panelsStore.getState().reveal({ pou: name, network })}
+      />
+    );
   } else if (pou.language === "st") {
     content = <StPouView pou={pou} />;
   } else if (pou.language === "ld" && history) {
@@ -359,7 +448,11 @@ function PouView({ name }: { name: string }) {
   } else if (pou.language === "fbd" && fbdHistory) {
     content = <FbdPouView pou={pou} history={fbdHistory} onlineActions={<OnlineActions pou={pou} />} />;
   } else {
-    content = <p className="placeholder">The {LANGUAGE[pou.language]} editor is not built yet; {name} opens here once it is.</p>;
+    content = (
+      <p className="placeholder">
+        The {LANGUAGE[pou.language]} editor is not built yet; {name} opens here once it is.
+      </p>
+    );
   }
   return (
     <div className="pou-view">
@@ -482,13 +575,21 @@ export function WorkspaceView() {
     );
   }
   return (
-    <div className="workspace" style={panelsHeight ? ({ "--panels-height": `${panelsHeight}px` } as CSSProperties) : undefined}>
+    <div
+      className="workspace"
+      style={panelsHeight ? ({ "--panels-height": `${panelsHeight}px` } as CSSProperties) : undefined}
+    >
       <div className="workspace-bar">
         <h2>{name}</h2>
         <span className={`save-state${changed.length ? " dirty" : ""}`} role="status">
           {saving ? "Saving…" : changed.length ? `Unsaved changes in ${changed.join(", ")}` : "All changes saved"}
         </span>
-        <button type="button" onClick={() => void save()} disabled={saving || changed.length === 0} title="Save (Ctrl+S)">
+        <button
+          type="button"
+          onClick={() => void save()}
+          disabled={saving || changed.length === 0}
+          title="Save (Ctrl+S)"
+        >
           Save
         </button>
         {restoredAt ? (
@@ -505,18 +606,24 @@ export function WorkspaceView() {
           </span>
         ) : null}
         {name ? <ExportMenu project={name} pou={active} unsaved={changed.length > 0} /> : null}
-        <ImportPlcopen onStored={() => void appStore.getState().loadProjects()} onOpen={(imported) => appStore.getState().selectProject(imported)} />
+        <ImportPlcopen
+          onStored={() => void appStore.getState().loadProjects()}
+          onOpen={(imported) => appStore.getState().selectProject(imported)}
+        />
       </div>
       <SimulationBar />
       <ProjectTree />
       <div className="editor-area">
         <DebugBar networksOf={networksOf} reveal={revealPlace} />
         <Tabs />
-        {active ? <PouView key={active} name={active} /> : <p className="placeholder">Open a POU from the project tree.</p>}
+        {active ? (
+          <PouView key={active} name={active} />
+        ) : (
+          <p className="placeholder">Open a POU from the project tree.</p>
+        )}
       </div>
       <BottomPanels onReveal={reveal} pathOfOperand={pathOfOperand} />
       <ConflictDialog />
     </div>
   );
 }
-

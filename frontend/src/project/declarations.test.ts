@@ -4,11 +4,15 @@ import { addDeclaration } from "./declarations";
 describe("addDeclaration", () => {
   it("adds to the first plain VAR block with its indentation", () => {
     const text = "VAR_INPUT\n  Go : BOOL;\nEND_VAR\nVAR\n\tT1 : TON;  (* timer *)\nEND_VAR";
-    expect(addDeclaration(text, "Pump", "BOOL")).toBe("VAR_INPUT\n  Go : BOOL;\nEND_VAR\nVAR\n\tT1 : TON;  (* timer *)\n\tPump : BOOL;\nEND_VAR");
+    expect(addDeclaration(text, "Pump", "BOOL")).toBe(
+      "VAR_INPUT\n  Go : BOOL;\nEND_VAR\nVAR\n\tT1 : TON;  (* timer *)\n\tPump : BOOL;\nEND_VAR",
+    );
   });
 
   it("appends a VAR block when there is none, or to an empty text", () => {
-    expect(addDeclaration("VAR_INPUT\n  Go : BOOL;\nEND_VAR\n\n", "X", "INT")).toBe("VAR_INPUT\n  Go : BOOL;\nEND_VAR\nVAR\n    X : INT;\nEND_VAR");
+    expect(addDeclaration("VAR_INPUT\n  Go : BOOL;\nEND_VAR\n\n", "X", "INT")).toBe(
+      "VAR_INPUT\n  Go : BOOL;\nEND_VAR\nVAR\n    X : INT;\nEND_VAR",
+    );
     expect(addDeclaration("", "X", "INT")).toBe("VAR\n    X : INT;\nEND_VAR");
   });
 

@@ -88,7 +88,9 @@ describe("workspace store", () => {
     const next = addNetwork(history.present);
     if (!next.ok) throw new Error(next.error);
     store.getState().setFbdHistory("Calc", record(history, next.body));
-    expect(store.getState().project!.pous!.find((p) => p.name === "Calc")!.body).toEqual({ networks: [{ id: "n1", nodes: [], wires: [] }] });
+    expect(store.getState().project!.pous!.find((p) => p.name === "Calc")!.body).toEqual({
+      networks: [{ id: "n1", nodes: [], wires: [] }],
+    });
     expect(store.getState().changed).toEqual(["Calc"]);
     expect(store.getState().fbdHistories.Calc!.past).toHaveLength(1);
   });
@@ -115,12 +117,27 @@ describe("workspace store", () => {
     editMain(store);
     await store.getState().save();
     expect(api.saveProject).toHaveBeenCalledWith("demo", "r1", store.getState().project);
-    expect(store.getState()).toMatchObject({ revision: "r2", modified: "2024-05-02T10:00:00Z", changed: [], saving: false });
+    expect(store.getState()).toMatchObject({
+      revision: "r2",
+      modified: "2024-05-02T10:00:00Z",
+      changed: [],
+      saving: false,
+    });
     expect(loadDraft("demo", storage)).toBeNull();
   });
 
   it("reloads the library after a save, so a new or changed function block is offered (issue 9)", async () => {
-    const counter = { name: "Counter", kind: "function_block" as const, source: "user" as const, inputs: [], outputs: [{ name: "Count", type: "INT" }], in_outs: [], extensible: false, return_type: null, comment: null };
+    const counter = {
+      name: "Counter",
+      kind: "function_block" as const,
+      source: "user" as const,
+      inputs: [],
+      outputs: [{ name: "Count", type: "INT" }],
+      in_outs: [],
+      extensible: false,
+      return_type: null,
+      comment: null,
+    };
     const getLibrary = vi.fn<ProjectApi["getLibrary"]>().mockResolvedValueOnce([]).mockResolvedValueOnce([counter]);
     const { store } = await opened(fakeApi({ getLibrary }));
     editMain(store);
@@ -130,8 +147,16 @@ describe("workspace store", () => {
   });
 
   it("reports a conflict, then overwrites with the current revision on request", async () => {
-    const conflict = { message: "changed", base_revision: "r1", current_revision: "r7", current_modified: "2024-05-03T09:00:00Z" };
-    const saveProject = vi.fn<ProjectApi["saveProject"]>().mockRejectedValueOnce(new SaveConflictError(conflict)).mockResolvedValueOnce({ revision: "r8", modified: "2024-05-03T10:00:00Z" });
+    const conflict = {
+      message: "changed",
+      base_revision: "r1",
+      current_revision: "r7",
+      current_modified: "2024-05-03T09:00:00Z",
+    };
+    const saveProject = vi
+      .fn<ProjectApi["saveProject"]>()
+      .mockRejectedValueOnce(new SaveConflictError(conflict))
+      .mockResolvedValueOnce({ revision: "r8", modified: "2024-05-03T10:00:00Z" });
     const { store } = await opened(fakeApi({ saveProject }));
     editMain(store);
     await store.getState().save();
@@ -162,7 +187,10 @@ describe("workspace store", () => {
   });
 
   it("shows a failed open and a failed save", async () => {
-    const failing = createWorkspaceStore(fakeApi({ getProject: async () => Promise.reject(new Error("project 'demo' not found")) }), new MemoryStorage());
+    const failing = createWorkspaceStore(
+      fakeApi({ getProject: async () => Promise.reject(new Error("project 'demo' not found")) }),
+      new MemoryStorage(),
+    );
     await failing.getState().open("demo");
     expect(failing.getState()).toMatchObject({ status: "error", error: "project 'demo' not found" });
     const { store } = await opened(fakeApi({ saveProject: async () => Promise.reject(new Error("disk full")) }));
@@ -173,7 +201,10 @@ describe("workspace store", () => {
 
   it("ignores a draft stored for another project or damaged", () => {
     const storage = new MemoryStorage();
-    saveDraft({ base_revision: "r1", base_modified: "", saved_at: "", project: { name: "other" }, changed: [] }, storage);
+    saveDraft(
+      { base_revision: "r1", base_modified: "", saved_at: "", project: { name: "other" }, changed: [] },
+      storage,
+    );
     storage.setItem("ladderlab:draft:demo", "{not json");
     expect(loadDraft("demo", storage)).toBeNull();
     expect(loadDraft("other", storage)?.base_revision).toBe("r1");

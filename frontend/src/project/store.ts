@@ -77,19 +77,31 @@ export const emptyWorkspace: WorkspaceData = {
 
 const IDENTIFIER = /^[A-Za-z_][A-Za-z0-9_]{0,63}$/;
 const message = (err: unknown) => (err instanceof Error ? err.message : String(err));
-export const pouOf = (project: Project | null, name: string): Pou | undefined => project?.pous?.find((p) => p.name === name);
-const isDiagramBody = (body: Pou["body"]): body is LdBody | FbdBody => typeof body === "object" && body !== null && "networks" in body;
+export const pouOf = (project: Project | null, name: string): Pou | undefined =>
+  project?.pous?.find((p) => p.name === name);
+const isDiagramBody = (body: Pou["body"]): body is LdBody | FbdBody =>
+  typeof body === "object" && body !== null && "networks" in body;
 export const ldBodyOf = (pou: Pou): LdBody => (isDiagramBody(pou.body) ? (pou.body as LdBody) : { networks: [] });
 export const fbdBodyOf = (pou: Pou): FbdBody => (isDiagramBody(pou.body) ? (pou.body as FbdBody) : { networks: [] });
 
 /** The symbols of a POU and the globals, for autocomplete and online paths. */
-export const symbolsOf = (table: SymbolTable | undefined): SymbolInfo[] => (table ? [...table.symbols, ...table.globals] : []);
+export const symbolsOf = (table: SymbolTable | undefined): SymbolInfo[] =>
+  table ? [...table.symbols, ...table.globals] : [];
 
 /** The problems a diagram editor marks: its POU's, located in a network (symbol table and last check). */
-export const diagramDiagnostics = (table: SymbolTable | undefined, checked: readonly Diagnostic[], pou: string): Diagnostic[] =>
-  [...(table?.diagnostics ?? []), ...checked.filter((d) => d.pou?.toUpperCase() === pou.toUpperCase())].filter((d) => d.network);
+export const diagramDiagnostics = (
+  table: SymbolTable | undefined,
+  checked: readonly Diagnostic[],
+  pou: string,
+): Diagnostic[] =>
+  [...(table?.diagnostics ?? []), ...checked.filter((d) => d.pou?.toUpperCase() === pou.toUpperCase())].filter(
+    (d) => d.network,
+  );
 
-export function createWorkspaceStore(api: ProjectApi = projectApi, storage: Storage = localStorage): StoreApi<WorkspaceState> {
+export function createWorkspaceStore(
+  api: ProjectApi = projectApi,
+  storage: Storage = localStorage,
+): StoreApi<WorkspaceState> {
   let openCall = 0;
   return createStore<WorkspaceState>()((set, get) => {
     const replacePous = (pou: string, update: (pous: Pou[]) => Pou[]) => {
@@ -99,10 +111,20 @@ export function createWorkspaceStore(api: ProjectApi = projectApi, storage: Stor
       const nextChanged = changed.includes(pou) ? changed : [...changed, pou];
       set({ project: next, changed: nextChanged });
       const { revision, modified } = get();
-      saveDraft({ base_revision: revision!, base_modified: modified!, saved_at: new Date().toISOString(), project: next, changed: nextChanged }, storage);
+      saveDraft(
+        {
+          base_revision: revision!,
+          base_modified: modified!,
+          saved_at: new Date().toISOString(),
+          project: next,
+          changed: nextChanged,
+        },
+        storage,
+      );
     };
 
-    const replacePou = (pou: string, update: (p: Pou) => Pou) => replacePous(pou, (pous) => pous.map((p) => (p.name === pou ? update(p) : p)));
+    const replacePou = (pou: string, update: (p: Pou) => Pou) =>
+      replacePous(pou, (pous) => pous.map((p) => (p.name === pou ? update(p) : p)));
 
     const loadSymbols = (pou: string) => {
       const name = get().name;
@@ -156,8 +178,10 @@ export function createWorkspaceStore(api: ProjectApi = projectApi, storage: Stor
         const found = pouOf(project, pou);
         if (!found) return;
         const patch: Partial<WorkspaceData> = { active: pou, tabs: tabs.includes(pou) ? tabs : [...tabs, pou] };
-        if (found.language === "ld" && !histories[pou]) patch.histories = { ...histories, [pou]: historyOf(ldBodyOf(found)) };
-        if (found.language === "fbd" && !get().fbdHistories[pou]) patch.fbdHistories = { ...get().fbdHistories, [pou]: historyOf(fbdBodyOf(found)) };
+        if (found.language === "ld" && !histories[pou])
+          patch.histories = { ...histories, [pou]: historyOf(ldBodyOf(found)) };
+        if (found.language === "fbd" && !get().fbdHistories[pou])
+          patch.fbdHistories = { ...get().fbdHistories, [pou]: historyOf(fbdBodyOf(found)) };
         set(patch);
         if (!get().symbols[pou]) loadSymbols(pou);
       },
@@ -182,7 +206,16 @@ export function createWorkspaceStore(api: ProjectApi = projectApi, storage: Stor
       declare(pou, { name, type }) {
         replacePou(pou, (p) => ({ ...p, declarations: addDeclaration(p.declarations ?? "", name, type) }));
         const table = get().symbols[pou] ?? { pou, symbols: [], globals: [], diagnostics: [] };
-        const symbol: SymbolInfo = { name, type, var_class: "VAR", initial: null, address: null, comment: null, retain: false, constant: false };
+        const symbol: SymbolInfo = {
+          name,
+          type,
+          var_class: "VAR",
+          initial: null,
+          address: null,
+          comment: null,
+          retain: false,
+          constant: false,
+        };
         set({ symbols: { ...get().symbols, [pou]: { ...table, symbols: [...table.symbols, symbol] } } });
       },
 
@@ -198,8 +231,10 @@ export function createWorkspaceStore(api: ProjectApi = projectApi, storage: Stor
 
       addPou(text, kind, language) {
         const name = text.trim();
-        if (!IDENTIFIER.test(name)) return `${name || "An empty name"} is not an IEC identifier (letters, digits and _, not starting with a digit).`;
-        if (pouOf(get().project, name) || get().project?.pous?.some((p) => p.name.toUpperCase() === name.toUpperCase())) return `There is already a POU called ${name}.`;
+        if (!IDENTIFIER.test(name))
+          return `${name || "An empty name"} is not an IEC identifier (letters, digits and _, not starting with a digit).`;
+        if (pouOf(get().project, name) || get().project?.pous?.some((p) => p.name.toUpperCase() === name.toUpperCase()))
+          return `There is already a POU called ${name}.`;
         const pou: Pou = {
           name,
           kind,
@@ -218,9 +253,20 @@ export function createWorkspaceStore(api: ProjectApi = projectApi, storage: Stor
         if (!name || !project || !revision) return;
         set({ saving: true, saveError: null });
         try {
-          const result = await api.saveProject(name, overwrite && conflict ? conflict.current_revision : revision, project);
+          const result = await api.saveProject(
+            name,
+            overwrite && conflict ? conflict.current_revision : revision,
+            project,
+          );
           removeDraft(name, storage);
-          set({ saving: false, revision: result.revision, modified: result.modified, changed: [], restoredAt: null, conflict: null });
+          set({
+            saving: false,
+            revision: result.revision,
+            modified: result.modified,
+            changed: [],
+            restoredAt: null,
+            conflict: null,
+          });
           for (const pou of get().tabs) loadSymbols(pou);
           loadLibrary(name, openCall);
         } catch (err) {

@@ -7,13 +7,22 @@ import type { Project } from "../generated/project";
 import { StEditor } from "./StEditor";
 import { CHECK_DELAY_MS, useLiveCheck } from "./useLiveCheck";
 
-const viewIn = (container: HTMLElement) => EditorView.findFromDOM(container.querySelector(".cm-editor") as HTMLElement)!;
+const viewIn = (container: HTMLElement) =>
+  EditorView.findFromDOM(container.querySelector(".cm-editor") as HTMLElement)!;
 const marks = (view: EditorView) => {
   const out: [number, number, string][] = [];
   forEachDiagnostic(view.state, (d, from, to) => out.push([from, to, d.message]));
   return out;
 };
-const unknownY: Diagnostic = { code: "ST-UNKNOWN-VAR", message: "unknown variable 'y'", file: "Main/body", line: 1, column: 6, end_line: 1, end_column: 7 };
+const unknownY: Diagnostic = {
+  code: "ST-UNKNOWN-VAR",
+  message: "unknown variable 'y'",
+  file: "Main/body",
+  line: 1,
+  column: 6,
+  end_line: 1,
+  end_column: 7,
+};
 
 const NO_COMPLETIONS = { options: [], members: () => null };
 
@@ -28,7 +37,9 @@ describe("StEditor (issue 9: ST editor)", () => {
     expect(view.state.doc.toString()).toBe("x := y;");
     act(() => view.dispatch({ changes: { from: 0, insert: "  " } }));
     expect(onChange).toHaveBeenLastCalledWith("  x := y;");
-    rerender(<StEditor {...props} text="a := y;" diagnostics={[unknownY, { ...unknownY, file: "Main/declarations" }]} />);
+    rerender(
+      <StEditor {...props} text="a := y;" diagnostics={[unknownY, { ...unknownY, file: "Main/declarations" }]} />,
+    );
     expect(view.state.doc.toString()).toBe("a := y;");
     expect(marks(view)).toEqual([[5, 6, "ST-UNKNOWN-VAR: unknown variable 'y'"]]);
     // An edit before the mark moves it with the text.
@@ -37,7 +48,14 @@ describe("StEditor (issue 9: ST editor)", () => {
   });
 
   it("is read-only while online, with the reason shown", () => {
-    const props = { text: "x := 1;", onChange: vi.fn(), file: "Main/body", diagnostics: [], completions: NO_COMPLETIONS, label: "Main body" };
+    const props = {
+      text: "x := 1;",
+      onChange: vi.fn(),
+      file: "Main/body",
+      diagnostics: [],
+      completions: NO_COMPLETIONS,
+      label: "Main body",
+    };
     const { container, rerender, getByText } = render(<StEditor {...props} readOnly="Online: go offline to edit." />);
     expect(viewIn(container).state.readOnly).toBe(true);
     getByText("Online: go offline to edit.");
@@ -47,12 +65,17 @@ describe("StEditor (issue 9: ST editor)", () => {
 });
 
 describe("useLiveCheck (issue 9: live diagnostics of the unsaved text, debounced)", () => {
-  const copy = (body: string): Project => ({ name: "plant", pous: [{ name: "Main", kind: "program", language: "st", declarations: "VAR\nEND_VAR", body }] });
+  const copy = (body: string): Project => ({
+    name: "plant",
+    pous: [{ name: "Main", kind: "program", language: "st", declarations: "VAR\nEND_VAR", body }],
+  });
 
   it("checks the working copy once the user pauses, not at every keystroke", async () => {
     vi.useFakeTimers();
     const check = vi.fn(async (): Promise<CheckReport> => ({ diagnostics: [unknownY] }));
-    const { result, rerender } = renderHook(({ project }) => useLiveCheck(project, check), { initialProps: { project: copy("x := ") } });
+    const { result, rerender } = renderHook(({ project }) => useLiveCheck(project, check), {
+      initialProps: { project: copy("x := ") },
+    });
     await act(async () => vi.advanceTimersByTime(CHECK_DELAY_MS - 1));
     const typed = copy("x := y;");
     rerender({ project: typed });
@@ -68,7 +91,9 @@ describe("useLiveCheck (issue 9: live diagnostics of the unsaved text, debounced
     vi.useFakeTimers();
     const pending: ((r: CheckReport) => void)[] = [];
     const check = vi.fn(() => new Promise<CheckReport>((r) => pending.push(r)));
-    const { result, rerender } = renderHook(({ project }) => useLiveCheck(project, check), { initialProps: { project: copy("x := y;") } });
+    const { result, rerender } = renderHook(({ project }) => useLiveCheck(project, check), {
+      initialProps: { project: copy("x := y;") },
+    });
     await act(async () => vi.advanceTimersByTime(CHECK_DELAY_MS));
     rerender({ project: copy("x := 1;") });
     await act(async () => vi.advanceTimersByTime(CHECK_DELAY_MS));
@@ -82,7 +107,9 @@ describe("useLiveCheck (issue 9: live diagnostics of the unsaved text, debounced
     vi.useFakeTimers();
     let resolve: (r: CheckReport) => void = () => undefined;
     const check = vi.fn(() => new Promise<CheckReport>((r) => (resolve = r)));
-    const { result, rerender } = renderHook(({ project }) => useLiveCheck(project, check), { initialProps: { project: copy("x := y;") } });
+    const { result, rerender } = renderHook(({ project }) => useLiveCheck(project, check), {
+      initialProps: { project: copy("x := y;") },
+    });
     await act(async () => vi.advanceTimersByTime(CHECK_DELAY_MS));
     rerender({ project: copy("x := yy;") });
     await act(async () => resolve({ diagnostics: [unknownY] }));
@@ -93,7 +120,15 @@ describe("useLiveCheck (issue 9: live diagnostics of the unsaved text, debounced
 describe("StEditor debugging marks (issue 9: ST line breakpoints, halted line)", () => {
   it("toggles a breakpoint by a gutter click and shows the breakpoint and halted lines", () => {
     const onToggle = vi.fn();
-    const props = { onChange: vi.fn(), file: "Main/body", diagnostics: [], completions: NO_COMPLETIONS, readOnly: null, label: "Main body", text: "a := 1;\nb := 2;\nc := 3;" };
+    const props = {
+      onChange: vi.fn(),
+      file: "Main/body",
+      diagnostics: [],
+      completions: NO_COMPLETIONS,
+      readOnly: null,
+      label: "Main body",
+      text: "a := 1;\nb := 2;\nc := 3;",
+    };
     const { container, rerender } = render(<StEditor {...props} debug={{ breakpoints: [], halted: null, onToggle }} />);
     const view = viewIn(container);
     const gutterEl = container.querySelector(".cm-breakpoint-gutter") as HTMLElement;
@@ -102,7 +137,10 @@ describe("StEditor debugging marks (issue 9: ST line breakpoints, halted line)",
     fireEvent.mouseDown(gutterEl, { clientY: lineHeight * 1.5 });
     expect(onToggle).toHaveBeenCalledWith(2);
     rerender(<StEditor {...props} debug={{ breakpoints: [3, 2, 9], halted: 3, onToggle }} />);
-    const visibleDots = () => [...container.querySelectorAll(".cm-breakpoint-gutter .cm-gutterElement")].filter((e) => (e as HTMLElement).style.visibility !== "hidden" && e.querySelector(".cm-breakpoint"));
+    const visibleDots = () =>
+      [...container.querySelectorAll(".cm-breakpoint-gutter .cm-gutterElement")].filter(
+        (e) => (e as HTMLElement).style.visibility !== "hidden" && e.querySelector(".cm-breakpoint"),
+      );
     expect(visibleDots()).toHaveLength(2);
     const halted = container.querySelectorAll(".cm-halted-line");
     expect([...halted].map((l) => l.textContent)).toEqual(["c := 3;"]);

@@ -4,7 +4,15 @@
 // to onChange, and a new `text` from outside (reload, draft restore) replaces the doc.
 import { autocompletion, closeBrackets, closeBracketsKeymap, completionKeymap } from "@codemirror/autocomplete";
 import { defaultKeymap, history, historyKeymap, indentWithTab } from "@codemirror/commands";
-import { bracketMatching, codeFolding, defaultHighlightStyle, foldGutter, foldKeymap, indentOnInput, syntaxHighlighting } from "@codemirror/language";
+import {
+  bracketMatching,
+  codeFolding,
+  defaultHighlightStyle,
+  foldGutter,
+  foldKeymap,
+  indentOnInput,
+  syntaxHighlighting,
+} from "@codemirror/language";
 import { lintGutter, setDiagnostics } from "@codemirror/lint";
 import { Compartment, EditorState } from "@codemirror/state";
 import { EditorView, highlightActiveLine, keymap, lineNumbers } from "@codemirror/view";
@@ -35,7 +43,17 @@ export interface StEditorProps {
 
 const NO_MARKS: readonly InlineMark[] = [];
 
-export function StEditor({ text, onChange, file, diagnostics, completions, readOnly, label, debug, online }: StEditorProps) {
+export function StEditor({
+  text,
+  onChange,
+  file,
+  diagnostics,
+  completions,
+  readOnly,
+  label,
+  debug,
+  online,
+}: StEditorProps) {
   const host = useRef<HTMLDivElement>(null);
   const view = useRef<EditorView | null>(null);
   const latest = useRef({ onChange, completions, debug, online });
@@ -63,10 +81,20 @@ export function StEditor({ text, onChange, file, diagnostics, completions, readO
           lintGutter(),
           debug ? stDebugging((line) => latest.current.debug?.onToggle(line)) : [],
           stInlineValues(() => latest.current.online),
-          keymap.of([...closeBracketsKeymap, ...defaultKeymap, ...historyKeymap, ...foldKeymap, ...completionKeymap, indentWithTab]),
+          keymap.of([
+            ...closeBracketsKeymap,
+            ...defaultKeymap,
+            ...historyKeymap,
+            ...foldKeymap,
+            ...completionKeymap,
+            indentWithTab,
+          ]),
           editable.current.of(EditorState.readOnly.of(readOnly !== null)),
           EditorView.contentAttributes.of({ "aria-label": label }),
-          EditorView.theme({ "&": { height: "100%" }, ".cm-scroller": { overflow: "auto", fontFamily: "ui-monospace, monospace" } }),
+          EditorView.theme({
+            "&": { height: "100%" },
+            ".cm-scroller": { overflow: "auto", fontFamily: "ui-monospace, monospace" },
+          }),
           EditorView.updateListener.of((u) => {
             if (u.docChanged) latest.current.onChange(u.state.doc.toString());
           }),
@@ -83,7 +111,8 @@ export function StEditor({ text, onChange, file, diagnostics, completions, readO
 
   useEffect(() => {
     const v = view.current;
-    if (v && v.state.doc.toString() !== text) v.dispatch({ changes: { from: 0, to: v.state.doc.length, insert: text } });
+    if (v && v.state.doc.toString() !== text)
+      v.dispatch({ changes: { from: 0, to: v.state.doc.length, insert: text } });
   }, [text]);
 
   const breakpoints = debug?.breakpoints;
@@ -96,7 +125,9 @@ export function StEditor({ text, onChange, file, diagnostics, completions, readO
     const v = view.current;
     if (!v || !debugging) return;
     const line = halted !== null && halted >= 1 && halted <= v.state.doc.lines ? v.state.doc.line(halted) : null;
-    v.dispatch({ effects: [setHaltedLine.of(halted), ...(line ? [EditorView.scrollIntoView(line.from, { y: "center" })] : [])] });
+    v.dispatch({
+      effects: [setHaltedLine.of(halted), ...(line ? [EditorView.scrollIntoView(line.from, { y: "center" })] : [])],
+    });
   }, [halted, debugging]);
 
   const marks = online?.marks ?? NO_MARKS;

@@ -6,11 +6,19 @@ import type { StOnline } from "./useStOnline";
 export function StOnlineBar({ online, instancePicker }: { online: StOnline; instancePicker?: ReactNode }) {
   if (!online.live) return null;
   return (
-    <div className="st-online-bar" style={{ display: "flex", gap: "0.75rem", alignItems: "center", padding: "0.15rem 0.25rem" }}>
+    <div
+      className="st-online-bar"
+      style={{ display: "flex", gap: "0.75rem", alignItems: "center", padding: "0.15rem 0.25rem" }}
+    >
       <label>
-        <input type="checkbox" checked={online.showValues} onChange={(e) => online.setShowValues(e.target.checked)} /> Show values inline
+        <input type="checkbox" checked={online.showValues} onChange={(e) => online.setShowValues(e.target.checked)} />{" "}
+        Show values inline
       </label>
-      {online.instance ? <span className="st-online-instance">Instance {online.instance}</span> : <span>No instance shown.</span>}
+      {online.instance ? (
+        <span className="st-online-instance">Instance {online.instance}</span>
+      ) : (
+        <span>No instance shown.</span>
+      )}
       {instancePicker}
     </div>
   );

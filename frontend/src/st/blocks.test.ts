@@ -7,7 +7,8 @@ import { foldAt, partnerAt, scanBlocks, stBlocks, type Span } from "./blocks";
 import { stLanguage } from "./language";
 
 const words = (text: string, spans: readonly Span[]) => spans.map((s) => text.slice(s.from, s.to));
-const pairWords = (text: string) => scanBlocks(text).pairs.map((p) => `${text.slice(p.open.from, p.open.to)}/${text.slice(p.close.from, p.close.to)}`);
+const pairWords = (text: string) =>
+  scanBlocks(text).pairs.map((p) => `${text.slice(p.open.from, p.open.to)}/${text.slice(p.close.from, p.close.to)}`);
 
 const FB = `FUNCTION_BLOCK Counter
 VAR_INPUT
@@ -33,7 +34,13 @@ END_FUNCTION_BLOCK`;
 describe("END_* matching (issue 9: bracket/END_* matching)", () => {
   it("pairs every block keyword with its END_, ignoring comments and strings", () => {
     expect(pairWords(FB)).toEqual([
-      "VAR_INPUT/END_VAR", "VAR/END_VAR", "WHILE/END_WHILE", "CASE/END_CASE", "FOR/END_FOR", "REPEAT/END_REPEAT", "IF/END_IF",
+      "VAR_INPUT/END_VAR",
+      "VAR/END_VAR",
+      "WHILE/END_WHILE",
+      "CASE/END_CASE",
+      "FOR/END_FOR",
+      "REPEAT/END_REPEAT",
+      "IF/END_IF",
       "FUNCTION_BLOCK/END_FUNCTION_BLOCK",
     ]);
     expect(scanBlocks(FB).unmatched).toEqual([]);
@@ -51,7 +58,8 @@ describe("END_* matching (issue 9: bracket/END_* matching)", () => {
   it("finds the partner of the keyword the cursor touches", () => {
     const text = "IF a THEN\n  b := 1;\nEND_IF;";
     const blocks = scanBlocks(text);
-    for (const pos of [0, 1, 2]) expect(partnerAt(blocks, pos)).toEqual({ at: { from: 0, to: 2 }, partner: { from: 20, to: 26 } });
+    for (const pos of [0, 1, 2])
+      expect(partnerAt(blocks, pos)).toEqual({ at: { from: 0, to: 2 }, partner: { from: 20, to: 26 } });
     expect(partnerAt(blocks, 23)).toEqual({ at: { from: 20, to: 26 }, partner: { from: 0, to: 2 } });
     expect(partnerAt(blocks, 5)).toBeNull();
     expect(partnerAt(scanBlocks("END_IF"), 3)).toEqual({ at: { from: 0, to: 6 }, partner: null });
@@ -62,9 +70,18 @@ describe("END_* matching (issue 9: bracket/END_* matching)", () => {
       tree: fc.oneof(
         { depthSize: "small" },
         fc.constant("x := 1;"),
-        fc.tuple(fc.constantFrom("IF c THEN|END_IF;", "WHILE c DO|END_WHILE;", "FOR i := 1 TO 2 DO|END_FOR;", "CASE i OF 1:|END_CASE;", "REPEAT|UNTIL c END_REPEAT;"), fc.array(tie("tree"), { maxLength: 3 })).map(
-          ([frame, inner]) => frame.replace("|", `\n${inner.join("\n")}\n`),
-        ),
+        fc
+          .tuple(
+            fc.constantFrom(
+              "IF c THEN|END_IF;",
+              "WHILE c DO|END_WHILE;",
+              "FOR i := 1 TO 2 DO|END_FOR;",
+              "CASE i OF 1:|END_CASE;",
+              "REPEAT|UNTIL c END_REPEAT;",
+            ),
+            fc.array(tie("tree"), { maxLength: 3 }),
+          )
+          .map(([frame, inner]) => frame.replace("|", `\n${inner.join("\n")}\n`)),
       ),
     })).tree;
     fc.assert(
@@ -79,7 +96,9 @@ describe("END_* matching (issue 9: bracket/END_* matching)", () => {
           // Properly nested: the text between a pair has as many openers of its kind as closers.
           const inner = text.slice(open.to, close.from);
           const kind = text.slice(open.from, open.to);
-          expect((inner.match(new RegExp(`\\bEND_${kind}\\b`, "g")) ?? []).length).toBe((inner.match(new RegExp(`(?<!END_)\\b${kind}\\b`, "g")) ?? []).length);
+          expect((inner.match(new RegExp(`\\bEND_${kind}\\b`, "g")) ?? []).length).toBe(
+            (inner.match(new RegExp(`(?<!END_)\\b${kind}\\b`, "g")) ?? []).length,
+          );
         }
       }),
     );
@@ -95,7 +114,12 @@ describe("folding (issue 9: folding of blocks and comments)", () => {
   };
 
   it("folds a block to the line before its END_, and a comment after its first line", () => {
-    expect(foldOfLine(9)).toBe(FB.split("\n").slice(9, 16).map((l) => `\n${l}`).join(""));
+    expect(foldOfLine(9)).toBe(
+      FB.split("\n")
+        .slice(9, 16)
+        .map((l) => `\n${l}`)
+        .join(""),
+    );
     expect(foldOfLine(10)).toBe("\n        CASE i OF\n            1: WHILE FALSE DO END_WHILE;\n        END_CASE;");
     expect(foldOfLine(2)).toBe("\n    Enable : BOOL; (* END_VAR in a comment *)");
     expect(foldOfLine(18)).toBe("\n   over two lines *)");
@@ -111,7 +135,14 @@ describe("folding (issue 9: folding of blocks and comments)", () => {
 
 describe("END_* highlight in the editor", () => {
   it("marks the keyword at the cursor and its partner, and a stray closer as not matching", () => {
-    const view = new EditorView({ parent: document.body, state: EditorState.create({ doc: "WHILE a DO\n  b := 1;\nEND_WHILE;\nEND_IF;", selection: { anchor: 2 }, extensions: [stLanguage, stBlocks] }) });
+    const view = new EditorView({
+      parent: document.body,
+      state: EditorState.create({
+        doc: "WHILE a DO\n  b := 1;\nEND_WHILE;\nEND_IF;",
+        selection: { anchor: 2 },
+        extensions: [stLanguage, stBlocks],
+      }),
+    });
     const marked = (cls: string) => [...view.dom.querySelectorAll(cls)].map((e) => e.textContent);
     expect(marked(".cm-matchingBracket")).toEqual(["WHILE", "END_WHILE"]);
     view.dispatch({ selection: { anchor: view.state.doc.length - 2 } });

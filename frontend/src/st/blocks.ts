@@ -18,7 +18,12 @@ const CLOSER: Readonly<Record<string, string>> = {
   FUNCTION_BLOCK: "END_FUNCTION_BLOCK",
   TYPE: "END_TYPE",
   STRUCT: "END_STRUCT",
-  ...Object.fromEntries(["VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_TEMP", "VAR_GLOBAL", "VAR_EXTERNAL"].map((k) => [k, "END_VAR"])),
+  ...Object.fromEntries(
+    ["VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_TEMP", "VAR_GLOBAL", "VAR_EXTERNAL"].map((k) => [
+      k,
+      "END_VAR",
+    ]),
+  ),
 };
 const CLOSERS = new Set(Object.values(CLOSER));
 

@@ -35,7 +35,13 @@ const haltedLine = StateField.define<DecorationSet>({
     for (const e of tr.effects) {
       if (!e.is(setHaltedLine)) continue;
       const [line] = e.value == null ? [] : linesIn(tr.state.doc, [e.value]);
-      next = line ? Decoration.set([Decoration.line({ class: "cm-halted-line", attributes: { style: "background: #fff3b0" } }).range(tr.state.doc.line(line).from)]) : Decoration.none;
+      next = line
+        ? Decoration.set([
+            Decoration.line({ class: "cm-halted-line", attributes: { style: "background: #fff3b0" } }).range(
+              tr.state.doc.line(line).from,
+            ),
+          ])
+        : Decoration.none;
     }
     return next;
   },
@@ -49,7 +55,10 @@ export function stDebugging(onToggle: (line: number) => void): Extension {
     haltedLine,
     gutter({
       class: "cm-breakpoint-gutter",
-      markers: (view) => RangeSet.of(linesIn(view.state.doc, view.state.field(breakpointLines)).map((l) => DOT.range(view.state.doc.line(l).from))),
+      markers: (view) =>
+        RangeSet.of(
+          linesIn(view.state.doc, view.state.field(breakpointLines)).map((l) => DOT.range(view.state.doc.line(l).from)),
+        ),
       initialSpacer: () => DOT,
       domEventHandlers: {
         mousedown(view, block) {

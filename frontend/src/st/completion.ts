@@ -18,7 +18,8 @@ export function callTemplate(callee: string, entry: LibraryEntry): string {
 }
 
 const signature = (entry: LibraryEntry) =>
-  `(${[...entry.inputs, ...entry.in_outs].map((p) => `${p.name}: ${p.type}`).join(", ")})` + (entry.return_type ? ` : ${entry.return_type}` : "");
+  `(${[...entry.inputs, ...entry.in_outs].map((p) => `${p.name}: ${p.type}`).join(", ")})` +
+  (entry.return_type ? ` : ${entry.return_type}` : "");
 
 /** Every completion for a POU, variables first; names are matched case-insensitively by CodeMirror. */
 export function stCompletions(symbols: SymbolInfo[], library: LibraryEntry[]): Completion[] {
@@ -26,12 +27,29 @@ export function stCompletions(symbols: SymbolInfo[], library: LibraryEntry[]): C
   const variables = symbols.map((s): Completion => {
     const fb = byName.get(s.type.toUpperCase());
     return fb?.kind === "function_block"
-      ? { label: s.name, type: "variable", detail: s.type, apply: callTemplate(s.name, fb), info: `${s.var_class} ${s.name} : ${s.type} (inserts the call)` }
-      : { label: s.name, type: "variable", detail: s.type, info: `${s.var_class} ${s.name} : ${s.type}${s.comment ? ` - ${s.comment}` : ""}` };
+      ? {
+          label: s.name,
+          type: "variable",
+          detail: s.type,
+          apply: callTemplate(s.name, fb),
+          info: `${s.var_class} ${s.name} : ${s.type} (inserts the call)`,
+        }
+      : {
+          label: s.name,
+          type: "variable",
+          detail: s.type,
+          info: `${s.var_class} ${s.name} : ${s.type}${s.comment ? ` - ${s.comment}` : ""}`,
+        };
   });
   const functions = library
     .filter((e) => e.kind === "function")
-    .map((e): Completion => ({ label: e.name, type: "function", detail: signature(e), apply: callTemplate(e.name, e), info: e.comment ?? undefined }));
+    .map((e): Completion => ({
+      label: e.name,
+      type: "function",
+      detail: signature(e),
+      apply: callTemplate(e.name, e),
+      info: e.comment ?? undefined,
+    }));
   const fbTypes = library
     .filter((e) => e.kind === "function_block")
     .map((e): Completion => ({ label: e.name, type: "class", detail: "function block", info: e.comment ?? undefined }));
@@ -44,7 +62,13 @@ export function memberCompletions(chain: readonly string[], scope: Scope): Compl
   const members = type === null ? null : membersOf(type, scope);
   // Boosted in declaration order, so the list reads like the FB's interface (inputs first), not alphabetically.
   return (
-    members?.map((m, i) => ({ label: m.name, type: "property", detail: m.type, info: `${m.kind === "field" ? "field of" : m.kind + " of"} ${type}`, boost: -Math.min(i, 99) })) ?? null
+    members?.map((m, i) => ({
+      label: m.name,
+      type: "property",
+      detail: m.type,
+      info: `${m.kind === "field" ? "field of" : m.kind + " of"} ${type}`,
+      boost: -Math.min(i, 99),
+    })) ?? null
   );
 }
 

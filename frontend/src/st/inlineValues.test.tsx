@@ -7,10 +7,36 @@ import { structTypes, type Scope } from "./members";
 import { StEditor } from "./StEditor";
 
 const pin = (name: string, type: string) => ({ name, type });
-const TON: LibraryEntry = { name: "TON", kind: "function_block", source: "standard", comment: null, extensible: false, inputs: [pin("IN", "BOOL"), pin("PT", "TIME")], in_outs: [], outputs: [pin("Q", "BOOL"), pin("ET", "TIME")], return_type: null };
-const symbol = (name: string, type: string, var_class = "VAR"): SymbolInfo => ({ name, type, var_class, initial: null, address: null, comment: null, retain: false, constant: false });
+const TON: LibraryEntry = {
+  name: "TON",
+  kind: "function_block",
+  source: "standard",
+  comment: null,
+  extensible: false,
+  inputs: [pin("IN", "BOOL"), pin("PT", "TIME")],
+  in_outs: [],
+  outputs: [pin("Q", "BOOL"), pin("ET", "TIME")],
+  return_type: null,
+};
+const symbol = (name: string, type: string, var_class = "VAR"): SymbolInfo => ({
+  name,
+  type,
+  var_class,
+  initial: null,
+  address: null,
+  comment: null,
+  retain: false,
+  constant: false,
+});
 const scope: Scope = {
-  symbols: [symbol("Start", "BOOL"), symbol("Count", "INT"), symbol("T1", "TON"), symbol("p", "Point"), symbol("arr", "ARRAY[1..3] OF INT"), symbol("Alarm", "BOOL", "VAR_GLOBAL")],
+  symbols: [
+    symbol("Start", "BOOL"),
+    symbol("Count", "INT"),
+    symbol("T1", "TON"),
+    symbol("p", "Point"),
+    symbol("arr", "ARRAY[1..3] OF INT"),
+    symbol("Alarm", "BOOL", "VAR_GLOBAL"),
+  ],
   library: [TON],
   structs: structTypes("TYPE Point : STRUCT x : INT; END_STRUCT; END_TYPE"),
 };
@@ -27,7 +53,10 @@ const at = (o: Occurrence) => `${o.text}@${o.from}-${o.to} ${o.path} ${o.type}`;
 describe("variable occurrences (issue 9: ST online values inline)", () => {
   it("finds each variable with a value, as a path of the instance; skips FBs, arrays, formal names, comments and strings", () => {
     const found = variableOccurrences(BODY, scope, "MAIN");
-    const offset = (needle: string, nth = 0) => BODY.split(needle).slice(0, nth + 1).join(needle).length;
+    const offset = (needle: string, nth = 0) =>
+      BODY.split(needle)
+        .slice(0, nth + 1)
+        .join(needle).length;
     expect(found.map(at)).toEqual([
       `Start@${offset("Start", 1)}-${offset("Start", 1) + 5} MAIN.START BOOL`,
       `T1.Q@${offset("T1.Q")}-${offset("T1.Q") + 4} MAIN.T1.Q BOOL`,
@@ -41,7 +70,10 @@ describe("variable occurrences (issue 9: ST online values inline)", () => {
   });
 
   it("names paths of the chosen FB instance", () => {
-    expect(variableOccurrences("Count := Count + 1;", scope, "MAIN.COUNTER1").map((o) => o.path)).toEqual(["MAIN.COUNTER1.COUNT", "MAIN.COUNTER1.COUNT"]);
+    expect(variableOccurrences("Count := Count + 1;", scope, "MAIN.COUNTER1").map((o) => o.path)).toEqual([
+      "MAIN.COUNTER1.COUNT",
+      "MAIN.COUNTER1.COUNT",
+    ]);
   });
 });
 
@@ -62,7 +94,9 @@ describe("inline value marks", () => {
   });
 
   it("describes an occurrence with type, value and force on hover", () => {
-    expect(describeOccurrence(occurrences[3]!, { "MAIN.T1.ET": 250 }, new Set(["MAIN.T1.ET"]))).toBe("T1.ET : TIME = T#250ms (forced)");
+    expect(describeOccurrence(occurrences[3]!, { "MAIN.T1.ET": 250 }, new Set(["MAIN.T1.ET"]))).toBe(
+      "T1.ET : TIME = T#250ms (forced)",
+    );
     expect(describeOccurrence(occurrences[0]!, {}, new Set())).toBe("Start : BOOL = …");
   });
 });
@@ -72,8 +106,21 @@ describe("StEditor online (issue 9: values inline, right-click commands)", () =>
     const text = "Count := Count + 1;";
     const occurrences = variableOccurrences(text, scope, "MAIN");
     const onMenu = vi.fn();
-    const online = (values: Record<string, number>) => ({ occurrences, marks: inlineMarks(occurrences, values, new Set<string>()), describe: () => "", onMenu });
-    const props = { text, onChange: vi.fn(), file: "Main/body", diagnostics: [], completions: { options: [], members: () => null }, readOnly: "Online", label: "Main body" };
+    const online = (values: Record<string, number>) => ({
+      occurrences,
+      marks: inlineMarks(occurrences, values, new Set<string>()),
+      describe: () => "",
+      onMenu,
+    });
+    const props = {
+      text,
+      onChange: vi.fn(),
+      file: "Main/body",
+      diagnostics: [],
+      completions: { options: [], members: () => null },
+      readOnly: "Online",
+      label: "Main body",
+    };
     const { container, rerender } = render(<StEditor {...props} online={online({ "MAIN.COUNT": 7 })} />);
     const shown = () => [...container.querySelectorAll(".cm-st-value")].map((e) => e.textContent);
     expect(shown()).toEqual(["7", "7"]);

@@ -22,7 +22,8 @@ export interface Occurrence {
 }
 
 /** A type whose variables have one value to show (not an FB, a struct, an array or a reference). */
-const hasValue = (type: string, scope: Scope) => membersOf(type, scope) === null && !/^\s*(ARRAY|REF_TO|POINTER)\b/i.test(type);
+const hasValue = (type: string, scope: Scope) =>
+  membersOf(type, scope) === null && !/^\s*(ARRAY|REF_TO|POINTER)\b/i.test(type);
 
 /** Every variable occurrence in `text` with a value, as paths of POU instance `instance`. */
 export function variableOccurrences(text: string, scope: Scope, instance: string): Occurrence[] {
@@ -44,7 +45,8 @@ export function variableOccurrences(text: string, scope: Scope, instance: string
     const formal = depth > 0 && chain.length === 1 && (next === ":=" || next === "=>");
     const type = formal ? null : typeOfChain(chain, scope);
     const path = type !== null && hasValue(type, scope) ? operandPath(chain.join("."), instance, scope.symbols) : null;
-    if (path && type) out.push({ from: t.from, to: tokens[end]!.to, text: text.slice(t.from, tokens[end]!.to), path, type });
+    if (path && type)
+      out.push({ from: t.from, to: tokens[end]!.to, text: text.slice(t.from, tokens[end]!.to), path, type });
     i = end;
   }
   return out;
@@ -60,11 +62,22 @@ export interface InlineMark {
 }
 
 /** The values to show: one per occurrence whose path has a value in the monitor. */
-export function inlineMarks(occurrences: readonly Occurrence[], values: Readonly<Record<string, Value>>, forced: ReadonlySet<string>): InlineMark[] {
+export function inlineMarks(
+  occurrences: readonly Occurrence[],
+  values: Readonly<Record<string, Value>>,
+  forced: ReadonlySet<string>,
+): InlineMark[] {
   return occurrences.flatMap((o) => {
     const value = values[o.path];
     if (value === undefined) return [];
-    return [{ pos: o.to, text: formatValue(value, o.type), bool: typeof value === "boolean" ? value : null, forced: forced.has(o.path) }];
+    return [
+      {
+        pos: o.to,
+        text: formatValue(value, o.type),
+        bool: typeof value === "boolean" ? value : null,
+        forced: forced.has(o.path),
+      },
+    ];
   });
 }
 
@@ -114,11 +127,20 @@ export interface StOnlineView {
   onMenu(o: Occurrence, x: number, y: number): void;
 }
 
-const occurrenceAt = (view: StOnlineView | undefined, pos: number) => view?.occurrences.find((o) => o.from <= pos && pos <= o.to);
+const occurrenceAt = (view: StOnlineView | undefined, pos: number) =>
+  view?.occurrences.find((o) => o.from <= pos && pos <= o.to);
 
 /** Values as small tags after their variable; BOOLs in the LD editor's power colours. */
 const valueTheme = EditorView.baseTheme({
-  ".cm-st-value": { marginLeft: "2px", padding: "0 3px", borderRadius: "3px", fontSize: "85%", background: "#e8eefc", color: "#1d3f8f", border: "1px solid #b9c8ee" },
+  ".cm-st-value": {
+    marginLeft: "2px",
+    padding: "0 3px",
+    borderRadius: "3px",
+    fontSize: "85%",
+    background: "#e8eefc",
+    color: "#1d3f8f",
+    border: "1px solid #b9c8ee",
+  },
   ".cm-st-value-true": { background: "#d9f5dc", color: "#14692a", borderColor: "#7fcf8f" },
   ".cm-st-value-false": { background: "#eef0f3", color: "#555d6b", borderColor: "#c9ced6" },
   ".cm-st-value-forced": { outline: "2px solid #d0312d" },

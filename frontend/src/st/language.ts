@@ -52,7 +52,11 @@ export const stParser: StreamParser<StState> = {
       stream.skipToEnd();
       return "lineComment";
     }
-    for (const [opener, kind] of [["(*", "paren"], ["/*", "slash"], ["{", "pragma"]] as const) {
+    for (const [opener, kind] of [
+      ["(*", "paren"],
+      ["/*", "slash"],
+      ["{", "pragma"],
+    ] as const) {
       if (stream.match(opener)) {
         if (!skipTo(stream, CLOSER[kind])) state.open = kind;
         return kind === "pragma" ? "meta" : "comment";
@@ -102,7 +106,13 @@ export function tokenize(text: string): Token[] {
     while (!stream.eol()) {
       stream.start = stream.pos;
       const style = stParser.token(stream, state);
-      out.push({ from: offset + stream.start, to: offset + stream.pos, style, text: stream.current(), continues: state.open !== null });
+      out.push({
+        from: offset + stream.start,
+        to: offset + stream.pos,
+        style,
+        text: stream.current(),
+        continues: state.open !== null,
+      });
     }
     offset += line.length + 1;
   }

@@ -7,10 +7,49 @@ import { membersOf, structTypes, typeOfChain, type Scope } from "./members";
 import { declaredSymbols, stScope, workingLibrary } from "./scope";
 
 const pin = (name: string, type: string) => ({ name, type });
-const TON: LibraryEntry = { name: "TON", kind: "function_block", source: "standard", comment: "on delay", extensible: false, inputs: [pin("IN", "BOOL"), pin("PT", "TIME")], in_outs: [], outputs: [pin("Q", "BOOL"), pin("ET", "TIME")], return_type: null };
-const COUNTER: LibraryEntry = { name: "Counter", kind: "function_block", source: "user", comment: null, extensible: false, inputs: [pin("Enable", "BOOL")], in_outs: [pin("Total", "DINT")], outputs: [pin("Count", "INT")], return_type: null };
-const ABS: LibraryEntry = { name: "ABS", kind: "function", source: "standard", comment: null, extensible: false, inputs: [pin("IN", "ANY_NUM")], in_outs: [], outputs: [], return_type: "ANY_NUM" };
-const symbol = (name: string, type: string, var_class = "VAR"): SymbolInfo => ({ name, type, var_class, initial: null, address: null, comment: null, retain: false, constant: false });
+const TON: LibraryEntry = {
+  name: "TON",
+  kind: "function_block",
+  source: "standard",
+  comment: "on delay",
+  extensible: false,
+  inputs: [pin("IN", "BOOL"), pin("PT", "TIME")],
+  in_outs: [],
+  outputs: [pin("Q", "BOOL"), pin("ET", "TIME")],
+  return_type: null,
+};
+const COUNTER: LibraryEntry = {
+  name: "Counter",
+  kind: "function_block",
+  source: "user",
+  comment: null,
+  extensible: false,
+  inputs: [pin("Enable", "BOOL")],
+  in_outs: [pin("Total", "DINT")],
+  outputs: [pin("Count", "INT")],
+  return_type: null,
+};
+const ABS: LibraryEntry = {
+  name: "ABS",
+  kind: "function",
+  source: "standard",
+  comment: null,
+  extensible: false,
+  inputs: [pin("IN", "ANY_NUM")],
+  in_outs: [],
+  outputs: [],
+  return_type: "ANY_NUM",
+};
+const symbol = (name: string, type: string, var_class = "VAR"): SymbolInfo => ({
+  name,
+  type,
+  var_class,
+  initial: null,
+  address: null,
+  comment: null,
+  retain: false,
+  constant: false,
+});
 
 const TYPES = `TYPE
     Point : STRUCT
@@ -23,7 +62,14 @@ const TYPES = `TYPE
 END_TYPE`;
 
 const scope: Scope = {
-  symbols: [symbol("Start", "BOOL"), symbol("Delay", "TON"), symbol("C1", "Counter"), symbol("p", "Point"), symbol("ln", "Line"), symbol("Alarm", "BOOL", "VAR_GLOBAL")],
+  symbols: [
+    symbol("Start", "BOOL"),
+    symbol("Delay", "TON"),
+    symbol("C1", "Counter"),
+    symbol("p", "Point"),
+    symbol("ln", "Line"),
+    symbol("Alarm", "BOOL", "VAR_GLOBAL"),
+  ],
   library: [TON, COUNTER, ABS],
   structs: structTypes(TYPES),
 };
@@ -39,7 +85,12 @@ describe("STRUCT types from the TYPE text", () => {
 
 describe("member resolution", () => {
   it("gives FB pins (inputs, in-outs, outputs) and struct fields; nothing for elementary types", () => {
-    expect(membersOf("ton", scope)?.map((m) => `${m.kind} ${m.name}`)).toEqual(["VAR_INPUT IN", "VAR_INPUT PT", "VAR_OUTPUT Q", "VAR_OUTPUT ET"]);
+    expect(membersOf("ton", scope)?.map((m) => `${m.kind} ${m.name}`)).toEqual([
+      "VAR_INPUT IN",
+      "VAR_INPUT PT",
+      "VAR_OUTPUT Q",
+      "VAR_OUTPUT ET",
+    ]);
     expect(membersOf("Counter", scope)?.map((m) => m.name)).toEqual(["Enable", "Total", "Count"]);
     expect(membersOf("INT", scope)).toBeNull();
     expect(membersOf("ABS", scope)).toBeNull();
@@ -55,14 +106,20 @@ describe("member resolution", () => {
 });
 
 describe("member autocomplete (issue 9: FB instance members, struct fields)", () => {
-  const source = stCompletionSource(() => ({ options: stCompletions([...scope.symbols], [...scope.library]), members: (chain) => memberCompletions(chain, scope) }));
+  const source = stCompletionSource(() => ({
+    options: stCompletions([...scope.symbols], [...scope.library]),
+    members: (chain) => memberCompletions(chain, scope),
+  }));
   const at = (doc: string) => source(new CompletionContext(EditorState.create({ doc }), doc.length, false));
 
   it("offers the pins of a standard FB instance after `inst.`", () => {
     const result = at("x := Delay.");
     expect(result?.from).toBe(11);
     expect(result?.options.map((o) => [o.label, o.detail, o.info])).toEqual([
-      ["IN", "BOOL", "VAR_INPUT of TON"], ["PT", "TIME", "VAR_INPUT of TON"], ["Q", "BOOL", "VAR_OUTPUT of TON"], ["ET", "TIME", "VAR_OUTPUT of TON"],
+      ["IN", "BOOL", "VAR_INPUT of TON"],
+      ["PT", "TIME", "VAR_INPUT of TON"],
+      ["Q", "BOOL", "VAR_OUTPUT of TON"],
+      ["ET", "TIME", "VAR_OUTPUT of TON"],
     ]);
   });
 
@@ -73,40 +130,91 @@ describe("member autocomplete (issue 9: FB instance members, struct fields)", ()
   });
 
   it("offers struct fields, also down a chain", () => {
-    expect(at("p.")?.options.map((o) => `${o.label}:${o.detail}`)).toEqual(["x:INT", "y:INT", "label:STRING", "timer:TON"]);
+    expect(at("p.")?.options.map((o) => `${o.label}:${o.detail}`)).toEqual([
+      "x:INT",
+      "y:INT",
+      "label:STRING",
+      "timer:TON",
+    ]);
     expect(at("ln.b.timer.")?.options.map((o) => o.label)).toEqual(["IN", "PT", "Q", "ET"]);
   });
 
   it("offers nothing after the dot of a name without members, and words elsewhere", () => {
     expect(at("Start.")).toBeNull();
     expect(at("x := 1.")).toBeNull();
-    expect(at("x := Sta")?.options.map((o) => o.label)).toEqual(["Start", "Delay", "C1", "p", "ln", "Alarm", "ABS", "TON", "Counter"]);
+    expect(at("x := Sta")?.options.map((o) => o.label)).toEqual([
+      "Start",
+      "Delay",
+      "C1",
+      "p",
+      "ln",
+      "Alarm",
+      "ABS",
+      "TON",
+      "Counter",
+    ]);
   });
 });
 
 describe("the working copy's declarations (issue 9: completion before a save)", () => {
   it("reads declarations typed but not saved, and falls back to the saved table when they do not read as a table", () => {
-    expect(declaredSymbols("VAR_INPUT\n    Enable : BOOL;\nEND_VAR\nVAR CONSTANT\n    Limit : INT := 5;\nEND_VAR")).toEqual([
-      { name: "Enable", var_class: "VAR_INPUT", type: "BOOL", initial: null, address: null, comment: null, retain: false, constant: false },
-      { name: "Limit", var_class: "VAR", type: "INT", initial: "5", address: null, comment: null, retain: false, constant: true },
+    expect(
+      declaredSymbols("VAR_INPUT\n    Enable : BOOL;\nEND_VAR\nVAR CONSTANT\n    Limit : INT := 5;\nEND_VAR"),
+    ).toEqual([
+      {
+        name: "Enable",
+        var_class: "VAR_INPUT",
+        type: "BOOL",
+        initial: null,
+        address: null,
+        comment: null,
+        retain: false,
+        constant: false,
+      },
+      {
+        name: "Limit",
+        var_class: "VAR",
+        type: "INT",
+        initial: "5",
+        address: null,
+        comment: null,
+        retain: false,
+        constant: true,
+      },
     ]);
-    const table = { pou: "Main", symbols: [symbol("Saved", "INT")], globals: [symbol("Alarm", "BOOL", "VAR_GLOBAL")], diagnostics: [] };
+    const table = {
+      pou: "Main",
+      symbols: [symbol("Saved", "INT")],
+      globals: [symbol("Alarm", "BOOL", "VAR_GLOBAL")],
+      diagnostics: [],
+    };
     expect(stScope(table, "VAR\n    c : Counter;\nEND_VAR", "", []).symbols.map((s) => s.name)).toEqual(["c", "Alarm"]);
     expect(stScope(table, "VAR\n    c : Counter;", "", []).symbols.map((s) => s.name)).toEqual(["Saved", "Alarm"]);
   });
 });
 
 describe("the working copy's function blocks (issue 9: user FB members before a save)", () => {
-  const fb = (name: string, declarations: string) => ({ name, kind: "function_block" as const, language: "st" as const, declarations, body: "" });
+  const fb = (name: string, declarations: string) => ({
+    name,
+    kind: "function_block" as const,
+    language: "st" as const,
+    declarations,
+    body: "",
+  });
 
   it("describes an unsaved or changed FB by its current declarations, keeping the saved entry when they do not read", () => {
-    const library = workingLibrary([TON, COUNTER], [
-      fb("Counter", "VAR_INPUT\n    Enable : BOOL;\n    Step : INT;\nEND_VAR\nVAR_OUTPUT\n    Count : INT;\nEND_VAR"),
-      fb("Valve", "VAR_IN_OUT\n    Pos : REAL;\nEND_VAR\nVAR\n    hidden : INT;\nEND_VAR"),
-      fb("Broken", "VAR\n    x : INT;"),
-      { name: "Main", kind: "program", language: "st", declarations: "VAR\n    c : Counter;\nEND_VAR", body: "" },
-    ]);
-    expect(library.map((e) => [e.name, e.source, [...e.inputs, ...e.in_outs, ...e.outputs].map((p) => p.name)])).toEqual([
+    const library = workingLibrary(
+      [TON, COUNTER],
+      [
+        fb("Counter", "VAR_INPUT\n    Enable : BOOL;\n    Step : INT;\nEND_VAR\nVAR_OUTPUT\n    Count : INT;\nEND_VAR"),
+        fb("Valve", "VAR_IN_OUT\n    Pos : REAL;\nEND_VAR\nVAR\n    hidden : INT;\nEND_VAR"),
+        fb("Broken", "VAR\n    x : INT;"),
+        { name: "Main", kind: "program", language: "st", declarations: "VAR\n    c : Counter;\nEND_VAR", body: "" },
+      ],
+    );
+    expect(
+      library.map((e) => [e.name, e.source, [...e.inputs, ...e.in_outs, ...e.outputs].map((p) => p.name)]),
+    ).toEqual([
       ["TON", "standard", ["IN", "PT", "Q", "ET"]],
       ["Counter", "user", ["Enable", "Step", "Count"]],
       ["Valve", "user", ["Pos"]],

@@ -20,7 +20,9 @@ export type StructTypes = ReadonlyMap<string, readonly Member[]>;
  * comments are skipped. A field's type is its text up to `;` or `:=`; nested STRUCTs are not read.
  */
 export function structTypes(text: string): StructTypes {
-  const tokens = tokenize(text).filter((t) => t.style !== null && t.style !== "comment" && t.style !== "lineComment" && t.style !== "meta");
+  const tokens = tokenize(text).filter(
+    (t) => t.style !== null && t.style !== "comment" && t.style !== "lineComment" && t.style !== "meta",
+  );
   const upper = (i: number) => tokens[i]?.text.toUpperCase();
   const types = new Map<string, Member[]>();
   for (let i = 2; i < tokens.length; i++) {
@@ -30,10 +32,17 @@ export function structTypes(text: string): StructTypes {
     let j = i + 1;
     for (; j < tokens.length && upper(j) !== "END_STRUCT"; j++) {
       const t = tokens[j]!;
-      if (t.style === "variableName" || (t.style === "typeName" && names.length === 0 && tokens[j + 1]?.text === ":")) names.push(t.text);
+      if (t.style === "variableName" || (t.style === "typeName" && names.length === 0 && tokens[j + 1]?.text === ":"))
+        names.push(t.text);
       else if (t.text === ":" && names.length) {
         const start = j + 1;
-        while (j + 1 < tokens.length && tokens[j + 1]!.text !== ";" && tokens[j + 1]!.text !== ":=" && upper(j + 1) !== "END_STRUCT") j++;
+        while (
+          j + 1 < tokens.length &&
+          tokens[j + 1]!.text !== ";" &&
+          tokens[j + 1]!.text !== ":=" &&
+          upper(j + 1) !== "END_STRUCT"
+        )
+          j++;
         const type = text.slice(tokens[start]?.from ?? 0, tokens[j]!.to).trim();
         for (const name of names) fields.push({ name, type, kind: "field" });
         names = [];

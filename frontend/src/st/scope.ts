@@ -32,14 +32,32 @@ export function workingLibrary(library: readonly LibraryEntry[], pous: readonly 
   const working = pous.flatMap((pou): LibraryEntry[] => {
     const symbols = pou.kind === "function_block" ? declaredSymbols(pou.declarations ?? "") : null;
     if (!symbols) return [];
-    const pins = (varClass: string) => symbols.filter((s) => s.var_class === varClass).map((s) => ({ name: s.name, type: s.type }));
-    return [{ name: pou.name, kind: "function_block", source: "user", inputs: pins("VAR_INPUT"), outputs: pins("VAR_OUTPUT"), in_outs: pins("VAR_IN_OUT"), extensible: false, return_type: null, comment: null }];
+    const pins = (varClass: string) =>
+      symbols.filter((s) => s.var_class === varClass).map((s) => ({ name: s.name, type: s.type }));
+    return [
+      {
+        name: pou.name,
+        kind: "function_block",
+        source: "user",
+        inputs: pins("VAR_INPUT"),
+        outputs: pins("VAR_OUTPUT"),
+        in_outs: pins("VAR_IN_OUT"),
+        extensible: false,
+        return_type: null,
+        comment: null,
+      },
+    ];
   });
   const replaced = new Set(working.map((e) => e.name.toUpperCase()));
   return [...library.filter((e) => !replaced.has(e.name.toUpperCase())), ...working];
 }
 
-export function stScope(table: SymbolTable | undefined, declarations: string, types: string, library: readonly LibraryEntry[]): Scope {
+export function stScope(
+  table: SymbolTable | undefined,
+  declarations: string,
+  types: string,
+  library: readonly LibraryEntry[],
+): Scope {
   const own = declaredSymbols(declarations) ?? table?.symbols ?? [];
   return { symbols: [...own, ...(table?.globals ?? [])], library, structs: structTypes(types) };
 }

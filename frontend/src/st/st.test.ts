@@ -24,31 +24,97 @@ function tokens(text: string): [string, string | null][][] {
     return out;
   });
 }
-const styled = (text: string) => tokens(text).flat().filter(([, s]) => s !== null);
+const styled = (text: string) =>
+  tokens(text)
+    .flat()
+    .filter(([, s]) => s !== null);
 
 const pin = (name: string, type: string) => ({ name, type });
-const TON: LibraryEntry = { name: "TON", kind: "function_block", source: "standard", comment: "on delay", extensible: false, inputs: [pin("IN", "BOOL"), pin("PT", "TIME")], in_outs: [], outputs: [pin("Q", "BOOL"), pin("ET", "TIME")], return_type: null };
-const LIMIT: LibraryEntry = { name: "LIMIT", kind: "function", source: "standard", comment: null, extensible: false, inputs: [pin("MN", "ANY_ELEMENTARY"), pin("IN", "ANY_ELEMENTARY"), pin("MX", "ANY_ELEMENTARY")], in_outs: [], outputs: [], return_type: "ANY_ELEMENTARY" };
-const symbol = (name: string, type: string): SymbolInfo => ({ name, type, var_class: "VAR", initial: null, address: null, comment: null, retain: false, constant: false });
+const TON: LibraryEntry = {
+  name: "TON",
+  kind: "function_block",
+  source: "standard",
+  comment: "on delay",
+  extensible: false,
+  inputs: [pin("IN", "BOOL"), pin("PT", "TIME")],
+  in_outs: [],
+  outputs: [pin("Q", "BOOL"), pin("ET", "TIME")],
+  return_type: null,
+};
+const LIMIT: LibraryEntry = {
+  name: "LIMIT",
+  kind: "function",
+  source: "standard",
+  comment: null,
+  extensible: false,
+  inputs: [pin("MN", "ANY_ELEMENTARY"), pin("IN", "ANY_ELEMENTARY"), pin("MX", "ANY_ELEMENTARY")],
+  in_outs: [],
+  outputs: [],
+  return_type: "ANY_ELEMENTARY",
+};
+const symbol = (name: string, type: string): SymbolInfo => ({
+  name,
+  type,
+  var_class: "VAR",
+  initial: null,
+  address: null,
+  comment: null,
+  retain: false,
+  constant: false,
+});
 
 describe("ST highlighting (issue 9: keywords, types, literals, comments, pragmas)", () => {
   it("classifies each kind of token", () => {
     expect(styled("IF Start AND NOT x THEN y := T#5s; END_IF // done")).toEqual([
-      ["IF", "keyword"], ["Start", "variableName"], ["AND", "keyword"], ["NOT", "keyword"], ["x", "variableName"], ["THEN", "keyword"],
-      ["y", "variableName"], [":=", "operator"], ["T#5s", "number"], [";", "punctuation"], ["END_IF", "keyword"], ["// done", "lineComment"],
+      ["IF", "keyword"],
+      ["Start", "variableName"],
+      ["AND", "keyword"],
+      ["NOT", "keyword"],
+      ["x", "variableName"],
+      ["THEN", "keyword"],
+      ["y", "variableName"],
+      [":=", "operator"],
+      ["T#5s", "number"],
+      [";", "punctuation"],
+      ["END_IF", "keyword"],
+      ["// done", "lineComment"],
     ]);
-    expect(styled("v : INT := 16#FF; s : STRING := 'it$'s'; r : REAL := 1.5E3; b : BOOL := TRUE;").filter(([, s]) => s !== "punctuation" && s !== "operator")).toEqual([
-      ["v", "variableName"], ["INT", "typeName"], ["16#FF", "number"], ["s", "variableName"], ["STRING", "typeName"], ["'it$'s'", "string"],
-      ["r", "variableName"], ["REAL", "typeName"], ["1.5E3", "number"], ["b", "variableName"], ["BOOL", "typeName"], ["TRUE", "atom"],
+    expect(
+      styled("v : INT := 16#FF; s : STRING := 'it$'s'; r : REAL := 1.5E3; b : BOOL := TRUE;").filter(
+        ([, s]) => s !== "punctuation" && s !== "operator",
+      ),
+    ).toEqual([
+      ["v", "variableName"],
+      ["INT", "typeName"],
+      ["16#FF", "number"],
+      ["s", "variableName"],
+      ["STRING", "typeName"],
+      ["'it$'s'", "string"],
+      ["r", "variableName"],
+      ["REAL", "typeName"],
+      ["1.5E3", "number"],
+      ["b", "variableName"],
+      ["BOOL", "typeName"],
+      ["TRUE", "atom"],
     ]);
   });
 
   it("continues block comments and pragmas over lines", () => {
     expect(tokens("(* one\ntwo *) x\n{attribute 'a'\n} y /* c */")).toEqual([
       [["(* one", "comment"]],
-      [["two *)", "comment"], [" ", null], ["x", "variableName"]],
+      [
+        ["two *)", "comment"],
+        [" ", null],
+        ["x", "variableName"],
+      ],
       [["{attribute 'a'", "meta"]],
-      [["}", "meta"], [" ", null], ["y", "variableName"], [" ", null], ["/* c */", "comment"]],
+      [
+        ["}", "meta"],
+        [" ", null],
+        ["y", "variableName"],
+        [" ", null],
+        ["/* c */", "comment"],
+      ],
     ]);
   });
 
@@ -75,14 +141,23 @@ describe("ST autocomplete (issue 9: variables, standard functions with a formal 
     expect(options.map((o) => [o.label, o.type, o.detail, o.apply ?? null])).toEqual([
       ["Start", "variable", "BOOL", null],
       ["TON1", "variable", "ton", "TON1(IN := , PT := , Q => , ET => );"],
-      ["LIMIT", "function", "(MN: ANY_ELEMENTARY, IN: ANY_ELEMENTARY, MX: ANY_ELEMENTARY) : ANY_ELEMENTARY", "LIMIT(MN := , IN := , MX := )"],
+      [
+        "LIMIT",
+        "function",
+        "(MN: ANY_ELEMENTARY, IN: ANY_ELEMENTARY, MX: ANY_ELEMENTARY) : ANY_ELEMENTARY",
+        "LIMIT(MN := , IN := , MX := )",
+      ],
       ["TON", "class", "function block", null],
     ]);
   });
 
   it("completes the word before the cursor, and nothing after a space unless asked", () => {
-    const source = stCompletionSource(() => ({ options: stCompletions([symbol("Start", "BOOL")], [TON]), members: () => null }));
-    const at = (doc: string, explicit = false) => source(new CompletionContext(EditorState.create({ doc }), doc.length, explicit));
+    const source = stCompletionSource(() => ({
+      options: stCompletions([symbol("Start", "BOOL")], [TON]),
+      members: () => null,
+    }));
+    const at = (doc: string, explicit = false) =>
+      source(new CompletionContext(EditorState.create({ doc }), doc.length, explicit));
     expect(at("x := St")?.from).toBe(5);
     expect(at("x := St")?.options.map((o) => o.label)).toEqual(["Start", "TON"]);
     expect(at("x := ")).toBeNull();
@@ -95,16 +170,41 @@ describe("diagnostics as lint underlines (issue 9: live diagnostics)", () => {
   const diag = (d: Partial<Diagnostic>): Diagnostic => ({ code: "ST-E", message: "bad", file: "Main/body", ...d });
 
   it("maps 1-based line/column with an exclusive end column to document offsets", () => {
-    expect(lintDiagnostics([diag({ line: 1, column: 6, end_line: 1, end_column: 7, message: "unknown variable 'y'", code: "ST-UNKNOWN-VAR" })], "MAIN/body", doc)).toEqual([
-      { from: 5, to: 6, severity: "error", message: "ST-UNKNOWN-VAR: unknown variable 'y'" },
+    expect(
+      lintDiagnostics(
+        [
+          diag({
+            line: 1,
+            column: 6,
+            end_line: 1,
+            end_column: 7,
+            message: "unknown variable 'y'",
+            code: "ST-UNKNOWN-VAR",
+          }),
+        ],
+        "MAIN/body",
+        doc,
+      ),
+    ).toEqual([{ from: 5, to: 6, severity: "error", message: "ST-UNKNOWN-VAR: unknown variable 'y'" }]);
+    expect(lintDiagnostics([diag({ line: 2, column: 11, severity: "warning" })], "Main/body", doc)).toEqual([
+      { from: 18, to: 19, severity: "warning", message: "ST-E: bad" },
     ]);
-    expect(lintDiagnostics([diag({ line: 2, column: 11, severity: "warning" })], "Main/body", doc)).toEqual([{ from: 18, to: 19, severity: "warning", message: "ST-E: bad" }]);
   });
 
   it("keeps only the editor's text, marks unlocated ones on line 1 and clamps stale positions", () => {
-    expect(lintDiagnostics([diag({ file: "Main/declarations", line: 1, column: 1 }), diag({ file: null })], "Main/body", doc)).toEqual([]);
-    expect(lintDiagnostics([diag({})], "Main/body", doc)).toEqual([{ from: 0, to: 7, severity: "error", message: "ST-E: bad" }]);
-    expect(lintDiagnostics([diag({ line: 9, column: 40, end_line: 12, end_column: 3 })], "Main/body", doc)).toEqual([{ from: 19, to: 19, severity: "error", message: "ST-E: bad" }]);
+    expect(
+      lintDiagnostics(
+        [diag({ file: "Main/declarations", line: 1, column: 1 }), diag({ file: null })],
+        "Main/body",
+        doc,
+      ),
+    ).toEqual([]);
+    expect(lintDiagnostics([diag({})], "Main/body", doc)).toEqual([
+      { from: 0, to: 7, severity: "error", message: "ST-E: bad" },
+    ]);
+    expect(lintDiagnostics([diag({ line: 9, column: 40, end_line: 12, end_column: 3 })], "Main/body", doc)).toEqual([
+      { from: 19, to: 19, severity: "error", message: "ST-E: bad" },
+    ]);
   });
 });
 

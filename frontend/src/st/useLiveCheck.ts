@@ -11,10 +11,17 @@ export const CHECK_DELAY_MS = 500;
 
 /** `POST /api/check`: every diagnostic of a project as sent, nothing stored. */
 export function checkUnsaved(project: Project): Promise<CheckReport> {
-  return requestJson<CheckReport>("/api/check", { method: "POST", headers: { "Content-Type": "application/json" }, body: JSON.stringify(project) });
+  return requestJson<CheckReport>("/api/check", {
+    method: "POST",
+    headers: { "Content-Type": "application/json" },
+    body: JSON.stringify(project),
+  });
 }
 
-export function useLiveCheck(project: Project | null, check: (project: Project) => Promise<CheckReport> = checkUnsaved): Diagnostic[] {
+export function useLiveCheck(
+  project: Project | null,
+  check: (project: Project) => Promise<CheckReport> = checkUnsaved,
+): Diagnostic[] {
   const [diagnostics, setDiagnostics] = useState<Diagnostic[]>([]);
   useEffect(() => {
     if (!project) return;

@@ -20,6 +20,12 @@ export function useStAssist(pou: Pou): { diagnostics: Diagnostic[]; completions:
   const library = useMemo(() => workingLibrary(saved, pous ?? []), [saved, pous]);
   const diagnostics = useLiveCheck(project);
   const scope = useMemo(() => stScope(table, declarations, types, library), [table, declarations, types, library]);
-  const completions = useMemo((): StCompletions => ({ options: stCompletions([...scope.symbols], library), members: (chain) => memberCompletions(chain, scope) }), [scope, library]);
+  const completions = useMemo(
+    (): StCompletions => ({
+      options: stCompletions([...scope.symbols], library),
+      members: (chain) => memberCompletions(chain, scope),
+    }),
+    [scope, library],
+  );
   return { diagnostics, completions, scope };
 }

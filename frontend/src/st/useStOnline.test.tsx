@@ -7,10 +7,23 @@ import { offline, onlineStore } from "../online/store";
 import { structTypes, type Scope } from "./members";
 import { useStOnline } from "./useStOnline";
 
-const sym = (name: string, type: string, var_class = "VAR"): SymbolInfo => ({ name, type, var_class, initial: null, address: null, comment: null, retain: false, constant: false });
+const sym = (name: string, type: string, var_class = "VAR"): SymbolInfo => ({
+  name,
+  type,
+  var_class,
+  initial: null,
+  address: null,
+  comment: null,
+  retain: false,
+  constant: false,
+});
 const counter: Pou = { name: "Counter", kind: "function_block", language: "st", declarations: "", body: "" };
 const BODY = "IF Enable THEN\n    Count := Count + 1;\nEND_IF;";
-const scope: Scope = { symbols: [sym("Enable", "BOOL", "VAR_INPUT"), sym("Count", "INT", "VAR_OUTPUT")], library: [] as LibraryEntry[], structs: structTypes("") };
+const scope: Scope = {
+  symbols: [sym("Enable", "BOOL", "VAR_INPUT"), sym("Count", "INT", "VAR_OUTPUT")],
+  library: [] as LibraryEntry[],
+  structs: structTypes(""),
+};
 const paths = () => onlineStore.getState().views["st:Counter"]?.paths ?? null;
 
 afterEach(() => onlineStore.setState({ ...offline, instances: {} }));
@@ -23,17 +36,31 @@ describe("useStOnline (issue 9: ST online values, values of the halt)", () => {
     act(() => onlineStore.setState({ phase: "online", instances: { Counter: "MAIN.C1" } }));
     expect(result.current.instance).toBe("MAIN.C1");
     expect(paths()).toEqual(["MAIN.C1.ENABLE", "MAIN.C1.COUNT"]);
-    act(() => onlineStore.setState({ monitor: { ...emptyMonitor, state: "halted", at: { pou: "COUNTER", instance: "MAIN.C2", line: 2 } } }));
+    act(() =>
+      onlineStore.setState({
+        monitor: { ...emptyMonitor, state: "halted", at: { pou: "COUNTER", instance: "MAIN.C2", line: 2 } },
+      }),
+    );
     expect(result.current.instance).toBe("MAIN.C2");
     expect(paths()).toEqual(["MAIN.C2.ENABLE", "MAIN.C2.COUNT"]);
-    act(() => onlineStore.setState({ monitor: { ...emptyMonitor, state: "halted", at: { pou: "MAIN", instance: "MAIN", line: 1 } } }));
+    act(() =>
+      onlineStore.setState({
+        monitor: { ...emptyMonitor, state: "halted", at: { pou: "MAIN", instance: "MAIN", line: 1 } },
+      }),
+    );
     expect(result.current.instance).toBe("MAIN.C1");
     unmount();
     expect(paths()).toBeNull();
   });
 
   it("marks the monitor's values, hides them when toggled off, and writes from the menu", () => {
-    act(() => onlineStore.setState({ phase: "online", instances: { Counter: "MAIN.C1" }, monitor: { ...emptyMonitor, values: { "MAIN.C1.COUNT": 3, "MAIN.C1.ENABLE": true } } }));
+    act(() =>
+      onlineStore.setState({
+        phase: "online",
+        instances: { Counter: "MAIN.C1" },
+        monitor: { ...emptyMonitor, values: { "MAIN.C1.COUNT": 3, "MAIN.C1.ENABLE": true } },
+      }),
+    );
     const write = vi.fn();
     onlineStore.setState({ write }); // the store's own write needs a socket; this one records the call
     const { result } = renderHook(() => useStOnline(counter, BODY, scope));
@@ -46,7 +73,12 @@ describe("useStOnline (issue 9: ST online values, values of the halt)", () => {
     const count = result.current.view!.occurrences[1]!;
     act(() => result.current.view!.onMenu(count, 10, 10));
     const { rerender } = render(<>{result.current.overlay}</>);
-    expect(screen.getAllByRole("menuitem").map((m) => m.textContent)).toEqual(["Write value of Count…", "Force value…", "Release force", "Add to watch list"]);
+    expect(screen.getAllByRole("menuitem").map((m) => m.textContent)).toEqual([
+      "Write value of Count…",
+      "Force value…",
+      "Release force",
+      "Add to watch list",
+    ]);
     fireEvent.click(screen.getByRole("menuitem", { name: "Write value of Count…" }));
     rerender(<>{result.current.overlay}</>);
     fireEvent.change(screen.getByLabelText("Value"), { target: { value: "42" } });

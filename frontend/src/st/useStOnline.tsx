@@ -9,7 +9,14 @@ import { OperandValuePrompt } from "../ld/editor/ValuePrompt";
 import { onlineOperandItems, operandCommands } from "../online/operandCommands";
 import { onlineStore, useOnline } from "../online/store";
 import { useShownInstance } from "../online/useLdOnline";
-import { describe, inlineMarks, variableOccurrences, type InlineMark, type Occurrence, type StOnlineView } from "./inlineValues";
+import {
+  describe,
+  inlineMarks,
+  variableOccurrences,
+  type InlineMark,
+  type Occurrence,
+  type StOnlineView,
+} from "./inlineValues";
 import type { Scope } from "./members";
 
 export interface StOnline {
@@ -37,18 +44,35 @@ export function useStOnline(pou: Pou, body: string, scope: Scope): StOnline {
   const instance = haltedHere ?? shown;
   const key = `st:${pou.name}`;
 
-  const occurrences = useMemo(() => (live && instance ? variableOccurrences(body, scope, instance) : []), [live, instance, body, scope]);
+  const occurrences = useMemo(
+    () => (live && instance ? variableOccurrences(body, scope, instance) : []),
+    [live, instance, body, scope],
+  );
   const paths = useMemo(() => [...new Set(occurrences.map((o) => o.path))], [occurrences]);
   useEffect(() => {
     onlineStore.getState().subscribe(key, live && paths.length ? { paths, elements: [] } : null);
   }, [key, live, paths]);
   useEffect(() => () => onlineStore.getState().subscribe(key, null), [key]);
 
-  const commands = useMemo(() => operandCommands((text) => occurrences.find((o) => o.text === text)?.path ?? null), [occurrences]);
+  const commands = useMemo(
+    () => operandCommands((text) => occurrences.find((o) => o.text === text)?.path ?? null),
+    [occurrences],
+  );
   const { values, forced } = monitor;
-  const marks = useMemo(() => (showValues ? inlineMarks(occurrences, values, forced) : []), [showValues, occurrences, values, forced]);
+  const marks = useMemo(
+    () => (showValues ? inlineMarks(occurrences, values, forced) : []),
+    [showValues, occurrences, values, forced],
+  );
   const view = useMemo(
-    () => (live && instance ? { occurrences, marks, describe: (o: Occurrence) => describe(o, values, forced), onMenu: (occurrence: Occurrence, x: number, y: number) => setMenu({ occurrence, x, y }) } : undefined),
+    () =>
+      live && instance
+        ? {
+            occurrences,
+            marks,
+            describe: (o: Occurrence) => describe(o, values, forced),
+            onMenu: (occurrence: Occurrence, x: number, y: number) => setMenu({ occurrence, x, y }),
+          }
+        : undefined,
     [live, instance, occurrences, marks, values, forced],
   );
 
@@ -58,14 +82,25 @@ export function useStOnline(pou: Pou, body: string, scope: Scope): StOnline {
         // The menu is placed at the click's viewport coordinates.
         <div style={{ position: "fixed", left: 0, top: 0, zIndex: 30 }}>
           <ContextMenu
-          x={menu.x}
-          y={menu.y}
-          extra={onlineOperandItems(menu.occurrence.text, commands, (action) => setPrompt({ occurrence: menu.occurrence, action }), menu.occurrence.type.toUpperCase() === "BOOL")}
-          onClose={() => setMenu(null)}
+            x={menu.x}
+            y={menu.y}
+            extra={onlineOperandItems(
+              menu.occurrence.text,
+              commands,
+              (action) => setPrompt({ occurrence: menu.occurrence, action }),
+              menu.occurrence.type.toUpperCase() === "BOOL",
+            )}
+            onClose={() => setMenu(null)}
           />
         </div>
       ) : null}
-      {prompt && view ? <OperandValuePrompt request={{ operand: prompt.occurrence.text, action: prompt.action }} commands={commands} onDone={() => setPrompt(null)} /> : null}
+      {prompt && view ? (
+        <OperandValuePrompt
+          request={{ operand: prompt.occurrence.text, action: prompt.action }}
+          commands={commands}
+          onDone={() => setPrompt(null)}
+        />
+      ) : null}
     </>
   );
   return { live, instance, showValues, setShowValues, view, overlay };

@@ -27,12 +27,15 @@ interface Block {
 export function blocksOf(text: string, sourceMap: StExport["source_map"] = []): Block[] {
   const networkOf = new Map(sourceMap.map((e) => [e.line, e.network]));
   const blocks: Block[] = [];
-  text.replace(/\n$/, "").split("\n").forEach((line, i) => {
-    const network = networkOf.get(i + 1) ?? null;
-    const last = blocks[blocks.length - 1];
-    if (last && last.network === network) last.lines.push(line);
-    else blocks.push({ network, start: i + 1, lines: [line] });
-  });
+  text
+    .replace(/\n$/, "")
+    .split("\n")
+    .forEach((line, i) => {
+      const network = networkOf.get(i + 1) ?? null;
+      const last = blocks[blocks.length - 1];
+      if (last && last.network === network) last.lines.push(line);
+      else blocks.push({ network, start: i + 1, lines: [line] });
+    });
   return blocks;
 }
 
@@ -57,7 +60,10 @@ export function StView({ project, pou, unsaved, onRevealNetwork, load = exportSt
       (err: unknown) => {
         if (!live) return;
         const detail = err instanceof ApiError ? (err.detail as { diagnostics?: Diagnostic[] } | undefined) : undefined;
-        setError({ message: err instanceof Error ? err.message : String(err), diagnostics: Array.isArray(detail?.diagnostics) ? detail.diagnostics : [] });
+        setError({
+          message: err instanceof Error ? err.message : String(err),
+          diagnostics: Array.isArray(detail?.diagnostics) ? detail.diagnostics : [],
+        });
       },
     );
     return () => {

@@ -46,9 +46,18 @@ describe("ST highlighting of the exported text", () => {
 
   it("always joins back to the line it was given (property)", () => {
     fc.assert(
-      fc.property(fc.string({ unit: fc.constantFrom("a", "Z", "_", "1", "#", "'", '"', "(", "*", ")", "/", " ", ":", "=", ";", "$", ".") }), (line) => {
-        expect(tokenize(line).map((t) => t.text).join("")).toBe(line);
-      }),
+      fc.property(
+        fc.string({
+          unit: fc.constantFrom("a", "Z", "_", "1", "#", "'", '"', "(", "*", ")", "/", " ", ":", "=", ";", "$", "."),
+        }),
+        (line) => {
+          expect(
+            tokenize(line)
+              .map((t) => t.text)
+              .join(""),
+          ).toBe(line);
+        },
+      ),
     );
   });
 });

@@ -48,7 +48,10 @@ export function tokenize(line: string): Token[] {
       if (m && m[0].length) {
         flush();
         const upper = m[0].toUpperCase();
-        out.push({ kind: kind === "name" ? (KEYWORDS.has(upper) ? "keyword" : TYPES.has(upper) ? "type" : "name") : kind, text: m[0] });
+        out.push({
+          kind: kind === "name" ? (KEYWORDS.has(upper) ? "keyword" : TYPES.has(upper) ? "type" : "name") : kind,
+          text: m[0],
+        });
         i += m[0].length;
         matched = true;
         break;

@@ -9,7 +9,18 @@ import { chartData, legendValue, LANE, type ChartData } from "./chartData";
 import type { Kind } from "./csv";
 import type { SampleRing } from "./ring";
 
-const COLORS = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22"];
+const COLORS = [
+  "#1f77b4",
+  "#d62728",
+  "#2ca02c",
+  "#9467bd",
+  "#ff7f0e",
+  "#17becf",
+  "#8c564b",
+  "#e377c2",
+  "#7f7f7f",
+  "#bcbd22",
+];
 /** The plot's height at least; a taller bottom panel (dragged up) gives it the rest, less PANEL_CHROME. */
 const HEIGHT = 180;
 /** What the panel's tabs, the chart's buttons and its legend take of the panel's height. */
@@ -50,7 +61,13 @@ function showRange(u: uPlot): void {
   host.dataset.xMax = String(max);
 }
 
-function options(chart: ChartData, width: number, height: number, onUserZoom: () => void, onReset: () => void): uPlot.Options {
+function options(
+  chart: ChartData,
+  width: number,
+  height: number,
+  onUserZoom: () => void,
+  onReset: () => void,
+): uPlot.Options {
   const numbers = chart.series.some((s) => s.scale === "y");
   const steps = uPlot.paths.stepped!({ align: 1 });
   const lanes = chart.series.filter((s) => s.scale === "lanes");
@@ -97,7 +114,15 @@ function options(chart: ChartData, width: number, height: number, onUserZoom: ()
         show: lanes.length > 0,
         size: 90,
         splits: () => lanes.map((s) => s.offset + 0.5),
-        values: (_u, splits) => splits.map((v) => lanes.find((s) => s.offset + 0.5 === v)?.path.split(".").slice(-2).join(".") ?? ""),
+        values: (_u, splits) =>
+          splits.map(
+            (v) =>
+              lanes
+                .find((s) => s.offset + 0.5 === v)
+                ?.path.split(".")
+                .slice(-2)
+                .join(".") ?? "",
+          ),
         grid: { show: false },
       },
     ],
@@ -153,7 +178,17 @@ export function TraceChart({ paths, kinds, ring, version, origin, laneView }: Tr
     if (!host.current) return;
     zoomed.current = false;
     const chart = chartData(paths, kinds, ring.columnsInOrder(), origin, laneView);
-    const u = new uPlot(options(chart, width, height, () => void (zoomed.current = true), () => void (zoomed.current = false)), chart.data as uPlot.AlignedData, host.current);
+    const u = new uPlot(
+      options(
+        chart,
+        width,
+        height,
+        () => void (zoomed.current = true),
+        () => void (zoomed.current = false),
+      ),
+      chart.data as uPlot.AlignedData,
+      host.current,
+    );
     plot.current = u;
     return () => {
       u.destroy();
@@ -190,7 +225,11 @@ export function TraceChart({ paths, kinds, ring, version, origin, laneView }: Tr
         <button type="button" onClick={act((u) => panX(u, -0.25))} title="Pan back in time (or Shift+drag)">
           ◀
         </button>
-        <button type="button" onClick={act((u) => zoomX(u, 0.5))} title="Zoom in (or drag over the chart, or Ctrl+wheel)">
+        <button
+          type="button"
+          onClick={act((u) => zoomX(u, 0.5))}
+          title="Zoom in (or drag over the chart, or Ctrl+wheel)"
+        >
           Zoom in
         </button>
         <button type="button" onClick={act((u) => zoomX(u, 2))}>

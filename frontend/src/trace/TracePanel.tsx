@@ -39,7 +39,9 @@ function useCandidates(): string[] {
   return candidates;
 }
 
-export function statusText(s: Pick<TraceState, "phase" | "ring" | "recorded" | "triggered" | "trigger" | "lost" | "capacity">): string {
+export function statusText(
+  s: Pick<TraceState, "phase" | "ring" | "recorded" | "triggered" | "trigger" | "lost" | "capacity">,
+): string {
   const count = s.ring?.length ?? 0;
   const lost = s.lost ? ` · ${s.lost} samples lost (the connection was too slow)` : "";
   const trigger = triggerOf(s.trigger);
@@ -57,7 +59,17 @@ export function statusText(s: Pick<TraceState, "phase" | "ring" | "recorded" | "
   }
 }
 
-function SamplesTable({ paths, kinds, ring, origin }: { paths: string[]; kinds: (Kind | null)[]; ring: SampleRing; origin: number }) {
+function SamplesTable({
+  paths,
+  kinds,
+  ring,
+  origin,
+}: {
+  paths: string[];
+  kinds: (Kind | null)[];
+  ring: SampleRing;
+  origin: number;
+}) {
   const [changesOnly, setChangesOnly] = useState(false);
   useTrace((s) => s.version); // re-render with every chunk
   const rows: number[] = [];
@@ -73,9 +85,14 @@ function SamplesTable({ paths, kinds, ring, origin }: { paths: string[]; kinds: 
   return (
     <div className="trace-table-wrap">
       <label className="trace-inline">
-        <input type="checkbox" checked={changesOnly} onChange={(e) => setChangesOnly(e.target.checked)} /> Only samples where a value changed
+        <input type="checkbox" checked={changesOnly} onChange={(e) => setChangesOnly(e.target.checked)} /> Only samples
+        where a value changed
       </label>
-      {rows.length > shown.length ? <p className="panel-empty">The newest {shown.length} of {rows.length} samples; Export CSV has them all.</p> : null}
+      {rows.length > shown.length ? (
+        <p className="panel-empty">
+          The newest {shown.length} of {rows.length} samples; Export CSV has them all.
+        </p>
+      ) : null}
       <table className="trace-table" aria-label="Trace samples">
         <thead>
           <tr>
@@ -133,7 +150,15 @@ function TraceSetup({ candidates }: { candidates: string[] }) {
         ))}
       </datalist>
       <form className="trace-add" onSubmit={submit}>
-        <input aria-label="Variable to trace" list="trace-candidates" placeholder="MAIN.Motor" value={text} onChange={(e) => setText(e.target.value)} spellCheck={false} disabled={busy} />
+        <input
+          aria-label="Variable to trace"
+          list="trace-candidates"
+          placeholder="MAIN.Motor"
+          value={text}
+          onChange={(e) => setText(e.target.value)}
+          spellCheck={false}
+          disabled={busy}
+        />
         <button type="submit" disabled={busy || !text.trim()}>
           Add
         </button>
@@ -165,23 +190,56 @@ function TraceSetup({ candidates }: { candidates: string[] }) {
       ) : null}
       <fieldset className="trace-trigger" disabled={busy}>
         <legend>Trigger (optional)</legend>
-        <input aria-label="Trigger variable" list="trace-candidates" placeholder="none: start at once" value={trigger.path} onChange={(e) => t.setTrigger({ path: e.target.value })} spellCheck={false} />
-        <select aria-label="Trigger condition" value={trigger.condition} onChange={(e) => t.setTrigger({ condition: e.target.value as Condition })}>
+        <input
+          aria-label="Trigger variable"
+          list="trace-candidates"
+          placeholder="none: start at once"
+          value={trigger.path}
+          onChange={(e) => t.setTrigger({ path: e.target.value })}
+          spellCheck={false}
+        />
+        <select
+          aria-label="Trigger condition"
+          value={trigger.condition}
+          onChange={(e) => t.setTrigger({ condition: e.target.value as Condition })}
+        >
           {CONDITIONS.map((c) => (
             <option key={c.value} value={c.value}>
               {c.label}
             </option>
           ))}
         </select>
-        {isCrossing(trigger.condition) ? <input aria-label="Trigger level" placeholder="level" value={trigger.level} onChange={(e) => t.setTrigger({ level: e.target.value })} size={8} /> : null}
+        {isCrossing(trigger.condition) ? (
+          <input
+            aria-label="Trigger level"
+            placeholder="level"
+            value={trigger.level}
+            onChange={(e) => t.setTrigger({ level: e.target.value })}
+            size={8}
+          />
+        ) : null}
       </fieldset>
       <div className="trace-buffer">
         <label>
           Samples{" "}
-          <input aria-label="Samples to keep" type="number" min={1} max={10000} value={capacity} disabled={busy} onChange={(e) => t.setCapacity(Number(e.target.value))} />
+          <input
+            aria-label="Samples to keep"
+            type="number"
+            min={1}
+            max={10000}
+            value={capacity}
+            disabled={busy}
+            onChange={(e) => t.setCapacity(Number(e.target.value))}
+          />
         </label>
         <label className="trace-inline">
-          <input type="checkbox" checked={stopWhenFull} disabled={busy} onChange={(e) => t.setStopWhenFull(e.target.checked)} /> Stop when full
+          <input
+            type="checkbox"
+            checked={stopWhenFull}
+            disabled={busy}
+            onChange={(e) => t.setStopWhenFull(e.target.checked)}
+          />{" "}
+          Stop when full
         </label>
       </div>
     </div>
@@ -197,7 +255,15 @@ export function TracePanel() {
   const { ring, recorded, kinds, origin } = state;
   const exportCsv = () => {
     if (!ring) return;
-    downloadText(`trace-${project ?? "project"}.csv`, traceCsv(recorded, kinds.map((k) => k ?? "number"), ring.columnsInOrder()), "text/csv;charset=utf-8");
+    downloadText(
+      `trace-${project ?? "project"}.csv`,
+      traceCsv(
+        recorded,
+        kinds.map((k) => k ?? "number"),
+        ring.columnsInOrder(),
+      ),
+      "text/csv;charset=utf-8",
+    );
   };
   return (
     <div className="trace">
@@ -219,12 +285,14 @@ export function TracePanel() {
           <div role="radiogroup" aria-label="Trace view" className="trace-view">
             {(["chart", "table"] as const).map((v) => (
               <label key={v}>
-                <input type="radio" name="trace-view" checked={view === v} onChange={() => setView(v)} /> {v === "chart" ? "Chart" : "Table"}
+                <input type="radio" name="trace-view" checked={view === v} onChange={() => setView(v)} />{" "}
+                {v === "chart" ? "Chart" : "Table"}
               </label>
             ))}
           </div>
           <label className="trace-inline">
-            <input type="checkbox" checked={state.laneView} onChange={(e) => state.setLaneView(e.target.checked)} /> BOOL lanes
+            <input type="checkbox" checked={state.laneView} onChange={(e) => state.setLaneView(e.target.checked)} />{" "}
+            BOOL lanes
           </label>
           <span role="status" aria-label="Trace state" className="trace-status">
             {statusText(state)}
@@ -238,13 +306,24 @@ export function TracePanel() {
         {ring && ring.length && origin !== null ? (
           view === "chart" ? (
             <Suspense fallback={<p className="panel-empty">Loading the chart…</p>}>
-              <TraceChart paths={recorded} kinds={kinds} ring={ring} version={state.version} origin={origin} laneView={state.laneView} />
+              <TraceChart
+                paths={recorded}
+                kinds={kinds}
+                ring={ring}
+                version={state.version}
+                origin={origin}
+                laneView={state.laneView}
+              />
             </Suspense>
           ) : (
             <SamplesTable paths={recorded} kinds={kinds} ring={ring} origin={origin} />
           )
         ) : (
-          <p className="panel-empty">{state.phase === "idle" ? "Add variables, go online and start a trace: every scan is recorded." : "No samples yet."}</p>
+          <p className="panel-empty">
+            {state.phase === "idle"
+              ? "Add variables, go online and start a trace: every scan is recorded."
+              : "No samples yet."}
+          </p>
         )}
       </div>
     </div>

@@ -2,7 +2,16 @@ import { describe, expect, it } from "vitest";
 import type { LibraryEntry, SymbolInfo, SymbolTable } from "../generated/api";
 import { traceCandidates } from "./candidates";
 
-const symbol = (name: string, type: string, var_class = "VAR"): SymbolInfo => ({ name, type, var_class, address: null, comment: null, constant: false, initial: null, retain: false });
+const symbol = (name: string, type: string, var_class = "VAR"): SymbolInfo => ({
+  name,
+  type,
+  var_class,
+  address: null,
+  comment: null,
+  constant: false,
+  initial: null,
+  retain: false,
+});
 const ton: LibraryEntry = {
   name: "TON",
   kind: "function_block",
@@ -11,8 +20,14 @@ const ton: LibraryEntry = {
   extensible: false,
   return_type: null,
   in_outs: [],
-  inputs: [{ name: "IN", type: "BOOL" }, { name: "PT", type: "TIME" }],
-  outputs: [{ name: "Q", type: "BOOL" }, { name: "ET", type: "TIME" }],
+  inputs: [
+    { name: "IN", type: "BOOL" },
+    { name: "PT", type: "TIME" },
+  ],
+  outputs: [
+    { name: "Q", type: "BOOL" },
+    { name: "ET", type: "TIME" },
+  ],
 };
 
 describe("traceCandidates", () => {
@@ -20,10 +35,26 @@ describe("traceCandidates", () => {
     const main: SymbolTable = {
       pou: "Main",
       diagnostics: [],
-      symbols: [symbol("Go", "BOOL"), symbol("Timer", "TON"), symbol("Name", "STRING[20]"), symbol("Grid", "ARRAY[1..3] OF INT"), symbol("Speed", "lreal"), symbol("Start", "BOOL", "VAR_EXTERNAL")],
+      symbols: [
+        symbol("Go", "BOOL"),
+        symbol("Timer", "TON"),
+        symbol("Name", "STRING[20]"),
+        symbol("Grid", "ARRAY[1..3] OF INT"),
+        symbol("Speed", "lreal"),
+        symbol("Start", "BOOL", "VAR_EXTERNAL"),
+      ],
       globals: [symbol("Start", "BOOL", "VAR_GLOBAL"), symbol("Label", "STRING", "VAR_GLOBAL")],
     };
     const other: SymbolTable = { pou: "Aux", diagnostics: [], symbols: [symbol("N", "DINT")], globals: main.globals };
-    expect(traceCandidates([main, other], [ton])).toEqual(["Main.Go", "Main.Timer.IN", "Main.Timer.PT", "Main.Timer.Q", "Main.Timer.ET", "Main.Speed", "Aux.N", "Start"]);
+    expect(traceCandidates([main, other], [ton])).toEqual([
+      "Main.Go",
+      "Main.Timer.IN",
+      "Main.Timer.PT",
+      "Main.Timer.Q",
+      "Main.Timer.ET",
+      "Main.Speed",
+      "Aux.N",
+      "Start",
+    ]);
   });
 });

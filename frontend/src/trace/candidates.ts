@@ -4,8 +4,27 @@
 import type { LibraryEntry, SymbolInfo, SymbolTable } from "../generated/api";
 
 const TRACEABLE = new Set([
-  "BOOL", "SINT", "INT", "DINT", "LINT", "USINT", "UINT", "UDINT", "ULINT", "BYTE", "WORD", "DWORD", "LWORD",
-  "REAL", "LREAL", "TIME", "DATE", "TIME_OF_DAY", "TOD", "DATE_AND_TIME", "DT",
+  "BOOL",
+  "SINT",
+  "INT",
+  "DINT",
+  "LINT",
+  "USINT",
+  "UINT",
+  "UDINT",
+  "ULINT",
+  "BYTE",
+  "WORD",
+  "DWORD",
+  "LWORD",
+  "REAL",
+  "LREAL",
+  "TIME",
+  "DATE",
+  "TIME_OF_DAY",
+  "TOD",
+  "DATE_AND_TIME",
+  "DT",
 ]);
 
 export const traceable = (type: string): boolean => TRACEABLE.has(type.trim().toUpperCase());
@@ -14,7 +33,9 @@ function members(prefix: string, symbol: SymbolInfo, blocks: ReadonlyMap<string,
   if (traceable(symbol.type)) return [`${prefix}${symbol.name}`];
   const block = blocks.get(symbol.type.trim().toUpperCase());
   if (!block) return [];
-  return [...block.inputs, ...block.outputs].filter((pin) => traceable(pin.type)).map((pin) => `${prefix}${symbol.name}.${pin.name}`);
+  return [...block.inputs, ...block.outputs]
+    .filter((pin) => traceable(pin.type))
+    .map((pin) => `${prefix}${symbol.name}.${pin.name}`);
 }
 
 /** Candidate paths, programs first in the order given, then globals; no repeats. */
@@ -27,6 +48,7 @@ export function traceCandidates(programs: readonly SymbolTable[], library: reado
       for (const path of members(`${table.pou}.`, symbol, blocks)) out.add(path);
     }
   }
-  for (const table of programs) for (const symbol of table.globals) for (const path of members("", symbol, blocks)) out.add(path);
+  for (const table of programs)
+    for (const symbol of table.globals) for (const path of members("", symbol, blocks)) out.add(path);
   return [...out];
 }

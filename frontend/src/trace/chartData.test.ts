@@ -18,18 +18,31 @@ describe("chartData", () => {
       { path: "MAIN.B", kind: "bool", scale: "lanes", offset: LANE },
     ]);
     expect(chart.lanes).toBe(2);
-    expect(chart.data).toEqual([[0, 10], [0, 1], [5, null], [1 + LANE, LANE]]);
+    expect(chart.data).toEqual([
+      [0, 10],
+      [0, 1],
+      [5, null],
+      [1 + LANE, LANE],
+    ]);
   });
 
   it("draws BOOLs as 0/1 on the y scale without the lane view", () => {
     const chart = chartData(["MAIN.A", "MAIN.N", "MAIN.B"], ["bool", "number", null], ring(), 0, false);
-    expect(chart.series.map((s) => [s.scale, s.offset, s.kind])).toEqual([["y", 0, "bool"], ["y", 0, "number"], ["y", 0, "number"]]);
+    expect(chart.series.map((s) => [s.scale, s.offset, s.kind])).toEqual([
+      ["y", 0, "bool"],
+      ["y", 0, "number"],
+      ["y", 0, "number"],
+    ]);
     expect(chart.data[3]).toEqual([1, 0]);
   });
 
   it("shows the value under the cursor without the lane offset", () => {
     const lane = { path: "MAIN.B", kind: "bool" as const, scale: "lanes" as const, offset: LANE };
-    expect([legendValue(lane, 1 + LANE), legendValue(lane, LANE), legendValue(lane, null)]).toEqual(["TRUE", "FALSE", "—"]);
+    expect([legendValue(lane, 1 + LANE), legendValue(lane, LANE), legendValue(lane, null)]).toEqual([
+      "TRUE",
+      "FALSE",
+      "—",
+    ]);
     expect(legendValue({ path: "MAIN.N", kind: "number", scale: "y", offset: 0 }, 12.5)).toBe("12.5");
   });
 });

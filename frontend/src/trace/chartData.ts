@@ -23,7 +23,13 @@ export interface ChartData {
   lanes: number;
 }
 
-export function chartData(paths: readonly string[], kinds: readonly (Kind | null)[], columns: SampleColumns, originMs: number, laneView: boolean): ChartData {
+export function chartData(
+  paths: readonly string[],
+  kinds: readonly (Kind | null)[],
+  columns: SampleColumns,
+  originMs: number,
+  laneView: boolean,
+): ChartData {
   let lanes = 0;
   const series = paths.map((path, c): SeriesPlan => {
     const kind = kinds[c] ?? "number";
@@ -31,7 +37,9 @@ export function chartData(paths: readonly string[], kinds: readonly (Kind | null
     return { path, kind, scale: "y", offset: 0 };
   });
   const x = Array.from(columns.times, (t) => t - originMs);
-  const ys = columns.values.map((column, c) => Array.from(column, (v) => (Number.isFinite(v) ? v + series[c]!.offset : null)));
+  const ys = columns.values.map((column, c) =>
+    Array.from(column, (v) => (Number.isFinite(v) ? v + series[c]!.offset : null)),
+  );
   return { data: [x, ...ys], series, lanes };
 }
 

@@ -10,7 +10,10 @@ describe("traceCsv", () => {
     ring.push(9, 90, [1, 20, Infinity]);
     ring.push(10, 100, [1, 20, -0.25]); // scan 7 falls out of the buffer
     expect(traceCsv(["MAIN.Q", "MAIN.ET", "MAIN.LEVEL"], ["bool", "number", "number"], ring.columnsInOrder())).toBe(
-      "time_ms,scan,MAIN.Q,MAIN.ET,MAIN.LEVEL\n" + "80,8,FALSE,10,NaN\n" + "90,9,TRUE,20,Infinity\n" + "100,10,TRUE,20,-0.25\n",
+      "time_ms,scan,MAIN.Q,MAIN.ET,MAIN.LEVEL\n" +
+        "80,8,FALSE,10,NaN\n" +
+        "90,9,TRUE,20,Infinity\n" +
+        "100,10,TRUE,20,-0.25\n",
     );
   });
 
@@ -18,6 +21,8 @@ describe("traceCsv", () => {
     expect(csvField("MAIN.GRID[1,2]")).toBe('"MAIN.GRID[1,2]"');
     expect(csvField('say "hi"')).toBe('"say ""hi"""');
     expect(csvField("MAIN.X")).toBe("MAIN.X");
-    expect(traceCsv(["MAIN.GRID[1,2]"], ["number"], new SampleRing(1, 1).columnsInOrder())).toBe('time_ms,scan,"MAIN.GRID[1,2]"\n');
+    expect(traceCsv(["MAIN.GRID[1,2]"], ["number"], new SampleRing(1, 1).columnsInOrder())).toBe(
+      'time_ms,scan,"MAIN.GRID[1,2]"\n',
+    );
   });
 });

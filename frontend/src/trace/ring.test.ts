@@ -17,7 +17,10 @@ describe("SampleRing", () => {
     const columns = ring.columnsInOrder();
     expect(Array.from(columns.scans)).toEqual([3, 4, 5]);
     expect(Array.from(columns.times)).toEqual([30, 40, 50]);
-    expect(columns.values.map((c) => Array.from(c))).toEqual([[1, 0, 1], [300, 400, 500]]);
+    expect(columns.values.map((c) => Array.from(c))).toEqual([
+      [1, 0, 1],
+      [300, 400, 500],
+    ]);
     expect(ring.sample(0)).toEqual({ scan: 3, timeMs: 30, values: [1, 300] });
     expect(ring.sample(2)).toEqual({ scan: 5, timeMs: 50, values: [1, 500] });
     expect(() => ring.sample(3)).toThrow("no sample 3 (holding 3)");
@@ -45,6 +48,15 @@ describe("SampleRing", () => {
   });
 
   it("stores BOOLs as 1/0 and the server's non-finite REALs as numbers", () => {
-    expect([true, false, 42, -1.5, "NaN", "Infinity", "-Infinity", null].map(sampleNumber)).toEqual([1, 0, 42, -1.5, NaN, Infinity, -Infinity, NaN]);
+    expect([true, false, 42, -1.5, "NaN", "Infinity", "-Infinity", null].map(sampleNumber)).toEqual([
+      1,
+      0,
+      42,
+      -1.5,
+      NaN,
+      Infinity,
+      -Infinity,
+      NaN,
+    ]);
   });
 });

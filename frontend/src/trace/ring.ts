@@ -34,7 +34,8 @@ export class SampleRing {
   total = 0;
 
   constructor(capacity: number, width: number) {
-    if (!Number.isInteger(capacity) || capacity < 1 || capacity > MAX_SAMPLES) throw new RangeError(`capacity must be 1..${MAX_SAMPLES}, not ${capacity}`);
+    if (!Number.isInteger(capacity) || capacity < 1 || capacity > MAX_SAMPLES)
+      throw new RangeError(`capacity must be 1..${MAX_SAMPLES}, not ${capacity}`);
     this.capacity = capacity;
     this.width = width;
     this.scans = new Float64Array(capacity);

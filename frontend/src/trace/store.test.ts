@@ -10,7 +10,17 @@ function setup(connected = true) {
   return { store, sent, s: () => store.getState() };
 }
 
-const chunk = (fields: Partial<TraceData>): TraceData => ({ type: "trace_data", id: 1, state: "recording", scans: [], time_ms: [], values: {}, triggered: null, lost: 0, ...fields });
+const chunk = (fields: Partial<TraceData>): TraceData => ({
+  type: "trace_data",
+  id: 1,
+  state: "recording",
+  scans: [],
+  time_ms: [],
+  values: {},
+  triggered: null,
+  lost: 0,
+  ...fields,
+});
 
 describe("trace store", () => {
   it("takes at most 20 distinct paths and says why it refuses one", () => {
@@ -32,19 +42,37 @@ describe("trace store", () => {
     s().setTrigger({ path: "Main.Go", condition: "rising" });
     s().setCapacity(3);
     s().start();
-    expect(sent).toEqual([{ type: "trace_start", id: 1, paths: ["Main.Q", "Main.ET"], samples: 3, trigger: { path: "Main.Go", condition: "rising" } }]);
+    expect(sent).toEqual([
+      {
+        type: "trace_start",
+        id: 1,
+        paths: ["Main.Q", "Main.ET"],
+        samples: 3,
+        trigger: { path: "Main.Go", condition: "rising" },
+      },
+    ]);
     expect(s().phase).toBe("starting");
 
     s().receive(chunk({ state: "waiting", values: { "MAIN.Q": [], "MAIN.ET": [] } }));
     expect([s().phase, s().recorded, s().ring?.length]).toEqual(["waiting", ["MAIN.Q", "MAIN.ET"], 0]);
     s().receive(chunk({ id: 0, scans: [99], time_ms: [990], values: { "MAIN.Q": [true], "MAIN.ET": [1] } })); // an older trace's
-    s().receive(chunk({ scans: [3, 4], time_ms: [30, 40], values: { "MAIN.Q": [false, false], "MAIN.ET": [0, 10] }, triggered: { scan: 3, time_ms: 30 } }));
+    s().receive(
+      chunk({
+        scans: [3, 4],
+        time_ms: [30, 40],
+        values: { "MAIN.Q": [false, false], "MAIN.ET": [0, 10] },
+        triggered: { scan: 3, time_ms: 30 },
+      }),
+    );
     s().receive(chunk({ state: "done", scans: [5], time_ms: [50], values: { "MAIN.Q": [true], "MAIN.ET": [20] } }));
     expect(s().phase).toBe("done");
     expect([s().triggered, s().origin, s().kinds]).toEqual([{ scan: 3, time_ms: 30 }, 30, ["bool", "number"]]);
     const columns = s().ring!.columnsInOrder();
     expect(Array.from(columns.scans)).toEqual([3, 4, 5]);
-    expect(columns.values.map((c) => Array.from(c))).toEqual([[0, 0, 1], [0, 10, 20]]);
+    expect(columns.values.map((c) => Array.from(c))).toEqual([
+      [0, 0, 1],
+      [0, 10, 20],
+    ]);
     s().receive(chunk({ scans: [6], time_ms: [60], values: { "MAIN.Q": [true], "MAIN.ET": [30] } })); // after done: ignored
     expect(s().ring!.length).toBe(3);
   });
@@ -57,7 +85,12 @@ describe("trace store", () => {
     s().start();
     expect(sent[0]).toMatchObject({ samples: null, trigger: null });
     s().receive(chunk({ scans: [1, 2, 3], time_ms: [10, 20, 30], values: { "MAIN.N": [1, 2, 3] }, lost: 4 }));
-    expect([Array.from(s().ring!.columnsInOrder().scans), s().ring!.total, s().lost, s().origin]).toEqual([[2, 3], 3, 4, 10]);
+    expect([Array.from(s().ring!.columnsInOrder().scans), s().ring!.total, s().lost, s().origin]).toEqual([
+      [2, 3],
+      3,
+      4,
+      10,
+    ]);
     s().stop();
     expect(sent[1]).toEqual({ type: "trace_stop" });
     expect(s().phase).toBe("recording"); // until the server's last chunk
@@ -85,13 +118,20 @@ describe("trace store", () => {
     const offline = setup(false);
     offline.s().addPath("Main.N");
     offline.s().start();
-    expect([offline.s().phase, offline.s().error]).toEqual(["idle", "go online (Compile & simulate) to record a trace"]);
+    expect([offline.s().phase, offline.s().error]).toEqual([
+      "idle",
+      "go online (Compile & simulate) to record a trace",
+    ]);
   });
 
   it("ends a trace in progress when the simulation changes, keeping its samples", () => {
     let listener: ((msg: ServerMessage) => void) | null = null;
     const sent: ClientMessage[] = [];
-    const online = createStore<{ simulation: string | null; send(msg: ClientMessage): boolean; listen(l: (msg: ServerMessage) => void): () => void }>()(() => ({
+    const online = createStore<{
+      simulation: string | null;
+      send(msg: ClientMessage): boolean;
+      listen(l: (msg: ServerMessage) => void): () => void;
+    }>()(() => ({
       simulation: "s1",
       send: (msg) => (sent.push(msg), true),
       listen: (l) => ((listener = l), () => undefined),
@@ -102,6 +142,10 @@ describe("trace store", () => {
     listener!(chunk({ scans: [1], time_ms: [10], values: { "MAIN.N": [5] } }));
     expect(trace.getState().ring!.length).toBe(1);
     online.setState({ simulation: null });
-    expect([trace.getState().phase, trace.getState().error, trace.getState().ring!.length]).toEqual(["done", "the simulation went offline: the trace ended", 1]);
+    expect([trace.getState().phase, trace.getState().error, trace.getState().ring!.length]).toEqual([
+      "done",
+      "the simulation went offline: the trace ended",
+      1,
+    ]);
   });
 });

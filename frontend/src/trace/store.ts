@@ -90,7 +90,8 @@ export const initialTrace: TraceStateData = {
   version: 0,
 };
 
-const kindOf = (value: unknown): Kind | null => (typeof value === "boolean" ? "bool" : value === null || value === undefined ? null : "number");
+const kindOf = (value: unknown): Kind | null =>
+  typeof value === "boolean" ? "bool" : value === null || value === undefined ? null : "number";
 
 const active = (phase: TracePhase): boolean => phase === "starting" || phase === "waiting" || phase === "recording";
 
@@ -103,7 +104,8 @@ export function createTraceStore(deps: TraceDeps): StoreApi<TraceState> {
       if (!text) return "type a variable path, e.g. MAIN.Motor";
       const { paths } = get();
       if (paths.some((p) => pathKey(p) === pathKey(text))) return `${text} is traced already`;
-      if (paths.length >= MAX_PATHS) return `a trace records at most ${MAX_PATHS} variables: remove one before adding ${text}`;
+      if (paths.length >= MAX_PATHS)
+        return `a trace records at most ${MAX_PATHS} variables: remove one before adding ${text}`;
       set({ paths: [...paths, text], error: null });
       return null;
     },
@@ -120,9 +122,26 @@ export function createTraceStore(deps: TraceDeps): StoreApi<TraceState> {
       const trigger = triggerOf(get().trigger);
       if (!trigger.ok) return set({ error: trigger.error });
       const id = get().id + 1;
-      const sent = deps.send({ type: "trace_start", id, paths: paths as TraceStart["paths"], samples: stopWhenFull ? capacity : null, trigger: trigger.trigger });
+      const sent = deps.send({
+        type: "trace_start",
+        id,
+        paths: paths as TraceStart["paths"],
+        samples: stopWhenFull ? capacity : null,
+        trigger: trigger.trigger,
+      });
       if (!sent) return set({ error: "go online (Compile & simulate) to record a trace" });
-      set({ phase: "starting", id, recorded: [], kinds: [], ring: null, triggered: null, origin: null, lost: 0, error: null, version: get().version + 1 });
+      set({
+        phase: "starting",
+        id,
+        recorded: [],
+        kinds: [],
+        ring: null,
+        triggered: null,
+        origin: null,
+        lost: 0,
+        error: null,
+        version: get().version + 1,
+      });
     },
 
     stop() {
@@ -142,7 +161,12 @@ export function createTraceStore(deps: TraceDeps): StoreApi<TraceState> {
       const ring = state.ring ?? new SampleRing(state.capacity, recorded.length);
       const columns = recorded.map((p) => msg.values[p] ?? []);
       const kinds = recorded.map((_, c) => state.kinds[c] ?? kindOf(columns[c]!.find((v) => v !== null)));
-      for (let i = 0; i < msg.scans.length; i++) ring.push(msg.scans[i]!, msg.time_ms[i]!, columns.map((column) => sampleNumber(column[i])));
+      for (let i = 0; i < msg.scans.length; i++)
+        ring.push(
+          msg.scans[i]!,
+          msg.time_ms[i]!,
+          columns.map((column) => sampleNumber(column[i])),
+        );
       set({
         phase: msg.state,
         recorded,
@@ -156,15 +180,25 @@ export function createTraceStore(deps: TraceDeps): StoreApi<TraceState> {
     },
 
     disconnected() {
-      if (active(get().phase)) set({ phase: get().phase === "starting" ? "idle" : "done", error: "the simulation went offline: the trace ended" });
+      if (active(get().phase))
+        set({
+          phase: get().phase === "starting" ? "idle" : "done",
+          error: "the simulation went offline: the trace ended",
+        });
     },
   }));
 }
 
 /** Connects a trace store to the online store: messages in, sending out, the end of a simulation. */
 export interface OnlineLike {
-  getState(): { send(msg: ClientMessage): boolean; listen(listener: (msg: ServerMessage) => void): () => void; simulation: string | null };
-  subscribe(listener: (state: { simulation: string | null }, previous: { simulation: string | null }) => void): () => void;
+  getState(): {
+    send(msg: ClientMessage): boolean;
+    listen(listener: (msg: ServerMessage) => void): () => void;
+    simulation: string | null;
+  };
+  subscribe(
+    listener: (state: { simulation: string | null }, previous: { simulation: string | null }) => void,
+  ): () => void;
 }
 
 export function traceStoreFor(online: OnlineLike): StoreApi<TraceState> {

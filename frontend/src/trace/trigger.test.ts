@@ -8,13 +8,25 @@ describe("triggerOf", () => {
   });
 
   it("sends edges without a level and crossings with the level as a number", () => {
-    expect(triggerOf({ path: " Main.Go ", condition: "falling", level: "3" })).toEqual({ ok: true, trigger: { path: "Main.Go", condition: "falling" } });
-    expect(triggerOf({ path: "Main.T", condition: "cross_down", level: " -2.5 " })).toEqual({ ok: true, trigger: { path: "Main.T", condition: "cross_down", level: -2.5 } });
+    expect(triggerOf({ path: " Main.Go ", condition: "falling", level: "3" })).toEqual({
+      ok: true,
+      trigger: { path: "Main.Go", condition: "falling" },
+    });
+    expect(triggerOf({ path: "Main.T", condition: "cross_down", level: " -2.5 " })).toEqual({
+      ok: true,
+      trigger: { path: "Main.T", condition: "cross_down", level: -2.5 },
+    });
   });
 
   it("names a missing or malformed level", () => {
-    expect(triggerOf({ path: "Main.T", condition: "cross_up", level: "" })).toEqual({ ok: false, error: "a level crossing needs a level" });
-    expect(triggerOf({ path: "Main.T", condition: "cross_up", level: "T#5s" })).toEqual({ ok: false, error: "the trigger level must be a number, not 'T#5s'" });
+    expect(triggerOf({ path: "Main.T", condition: "cross_up", level: "" })).toEqual({
+      ok: false,
+      error: "a level crossing needs a level",
+    });
+    expect(triggerOf({ path: "Main.T", condition: "cross_up", level: "T#5s" })).toEqual({
+      ok: false,
+      error: "the trigger level must be a number, not 'T#5s'",
+    });
   });
 
   it("describes what the trace waits for", () => {

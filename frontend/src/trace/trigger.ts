@@ -33,7 +33,11 @@ export function triggerOf(form: TriggerForm): TriggerResult {
   if (!isCrossing(form.condition)) return { ok: true, trigger: { path, condition: form.condition } };
   const text = form.level.trim();
   const level = text === "" ? NaN : Number(text);
-  if (!Number.isFinite(level)) return { ok: false, error: text ? `the trigger level must be a number, not '${text}'` : "a level crossing needs a level" };
+  if (!Number.isFinite(level))
+    return {
+      ok: false,
+      error: text ? `the trigger level must be a number, not '${text}'` : "a level crossing needs a level",
+    };
   return { ok: true, trigger: { path, condition: form.condition, level } };
 }
 

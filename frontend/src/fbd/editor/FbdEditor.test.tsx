@@ -23,7 +23,17 @@ function setup(body: FbdBody, props: Partial<FbdEditorProps> = {}) {
   function Host() {
     const [history, setHistory] = useState(latest);
     latest = history;
-    return <FbdEditor history={history} onHistoryChange={setHistory} library={LIBRARY} symbols={SYMBOLS} orderOf={orderOf} onDeclareVariable={() => undefined} {...props} />;
+    return (
+      <FbdEditor
+        history={history}
+        onHistoryChange={setHistory}
+        library={LIBRARY}
+        symbols={SYMBOLS}
+        orderOf={orderOf}
+        onDeclareVariable={() => undefined}
+        {...props}
+      />
+    );
   }
   const view = render(<Host />);
   const editor = screen.getByRole("application", { name: "Function block diagram editor" });
@@ -61,7 +71,10 @@ describe("FBD editor", () => {
     expect(t.node("add").querySelector('[data-pin="IN3"]')).toBeTruthy();
     fireEvent.contextMenu(t.node("add").querySelector('[data-pin="IN2"]')!);
     fireEvent.click(screen.getByRole("menuitem", { name: "Negate IN2" }));
-    expect((nodesOf(t.current().networks![0]!).find((n) => n.id === "add") as Block).pins).toEqual({ IN3: { negated: false }, IN2: { negated: true } });
+    expect((nodesOf(t.current().networks![0]!).find((n) => n.id === "add") as Block).pins).toEqual({
+      IN3: { negated: false },
+      IN2: { negated: true },
+    });
     expect(t.node("add").querySelector('[data-pin="IN2"] .fbd-bubble')).toBeTruthy();
     fireEvent.keyDown(t.editor, { key: "z", ctrlKey: true });
     fireEvent.keyDown(t.editor, { key: "z", ctrlKey: true });
@@ -80,11 +93,17 @@ describe("FBD editor", () => {
     const write = vi.fn();
     const toggle = vi.fn();
     const network = arithmetic();
-    const t = setup(bodyOf({ ...network, nodes: [...(network.nodes ?? []), { type: "input", id: "f", expr: "flag", pos: { x: 0, y: 200 } }] }), {
-      readOnly: "Online",
-      online: { probes: { a: 7, "add.OUT": null, "sub.OUT": 3, r: 3, f: true }, forced: new Set(["VAR1"]) },
-      onlineActions: { write, toggle, force: vi.fn(), unforce: vi.fn(), watch: vi.fn() },
-    });
+    const t = setup(
+      bodyOf({
+        ...network,
+        nodes: [...(network.nodes ?? []), { type: "input", id: "f", expr: "flag", pos: { x: 0, y: 200 } }],
+      }),
+      {
+        readOnly: "Online",
+        online: { probes: { a: 7, "add.OUT": null, "sub.OUT": 3, r: 3, f: true }, forced: new Set(["VAR1"]) },
+        onlineActions: { write, toggle, force: vi.fn(), unforce: vi.fn(), watch: vi.fn() },
+      },
+    );
     fireEvent.doubleClick(t.node("f").querySelector(".fbd-text")!);
     expect(toggle).toHaveBeenCalledWith("flag");
     expect(screen.getByTestId("value-a").textContent).toBe("7");
@@ -102,7 +121,16 @@ describe("FBD editor", () => {
   });
 
   it("marks a diagnostic on its node and pin, and a network's own problem in its header", () => {
-    const at = { pou: "Main", network: "n1", file: null, line: null, column: null, end_line: null, end_column: null, severity: "error" as const };
+    const at = {
+      pou: "Main",
+      network: "n1",
+      file: null,
+      line: null,
+      column: null,
+      end_line: null,
+      end_column: null,
+      severity: "error" as const,
+    };
     const t = setup(bodyOf(arithmetic()), {
       diagnostics: [
         { ...at, element: "add", pin: "IN2", code: "ST-TYPE-MISMATCH", message: "IN2 expects ANY_NUM, got BOOL" },
@@ -121,9 +149,15 @@ describe("FBD editor", () => {
     const t = setup(bodyOf(arithmetic()));
     fireEvent.contextMenu(t.node("add")); // selects it
     const data = new Map<string, string>();
-    const cb = { setData: (type: string, text: string) => data.set(type, text), getData: (type: string) => data.get(type) ?? "" };
+    const cb = {
+      setData: (type: string, text: string) => data.set(type, text),
+      getData: (type: string) => data.get(type) ?? "",
+    };
     fireEvent.cut(t.editor, { clipboardData: cb });
-    expect(JSON.parse(data.get("text/plain")!)).toMatchObject({ format: "ladderlab/fbd-clip", nodes: [{ id: "add", call: "ADD" }] });
+    expect(JSON.parse(data.get("text/plain")!)).toMatchObject({
+      format: "ladderlab/fbd-clip",
+      nodes: [{ id: "add", call: "ADD" }],
+    });
     expect(nodesOf(t.current().networks![0]!).map((n) => n.id)).toEqual(["a", "b", "c", "sub", "r"]);
     fireEvent.paste(t.editor, { clipboardData: cb });
     expect(nodesOf(t.current().networks![0]!).map((n) => n.id)).toEqual(["a", "b", "c", "sub", "r", "add"]);

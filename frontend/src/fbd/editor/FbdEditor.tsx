@@ -8,7 +8,16 @@ import "@xyflow/react/dist/style.css";
 import "../../ld/ld.css";
 import "./fbd.css";
 import type { Connection } from "@xyflow/react";
-import { useCallback, useEffect, useMemo, useRef, useState, type KeyboardEvent, type MouseEvent, type ReactNode } from "react";
+import {
+  useCallback,
+  useEffect,
+  useMemo,
+  useRef,
+  useState,
+  type KeyboardEvent,
+  type MouseEvent,
+  type ReactNode,
+} from "react";
 import type { Diagnostic, FbdOrder, LibraryEntry, SymbolInfo } from "../../generated/api";
 import { BoxPicker } from "../../ld/editor/BoxPicker";
 import { MenuList, type MenuItem } from "../../ld/editor/ContextMenu";
@@ -23,7 +32,22 @@ import { canRedo, canUndo, record, redo, undo, type History } from "../../ld/his
 import { arrange } from "../arrange";
 import { clipOf, parseClip, pasteClip, serializeClip } from "../clipboard";
 import { outputType, refusal } from "../compat";
-import { findNode, kindOf, networksOf, nextInput, nodePins, nodesOf, wireKey, wiresOf, type Block, type FbdBody, type FbdNetwork, type FbdNode, type OutputMode, type Position } from "../model";
+import {
+  findNode,
+  kindOf,
+  networksOf,
+  nextInput,
+  nodePins,
+  nodesOf,
+  wireKey,
+  wiresOf,
+  type Block,
+  type FbdBody,
+  type FbdNetwork,
+  type FbdNode,
+  type OutputMode,
+  type Position,
+} from "../model";
 import type { FbdOnlineView } from "../online";
 import { operandOf } from "../online";
 import * as ops from "../ops";
@@ -72,7 +96,15 @@ const PALETTE: { kind: PaletteKind; label: string }[] = [
   { kind: "connector", label: "Connector" },
   { kind: "continuation", label: "Continuation" },
 ];
-const COLUMN_OF: Record<PaletteKind, number> = { input: 20, continuation: 20, block: 240, output: 480, jump: 480, return: 480, connector: 480 };
+const COLUMN_OF: Record<PaletteKind, number> = {
+  input: 20,
+  continuation: 20,
+  block: 240,
+  output: 480,
+  jump: 480,
+  return: 480,
+  connector: 480,
+};
 const WITH_TEXT = new Set(["input", "output", "jump", "connector", "continuation"]);
 const OUTPUT_MODES: { mode: OutputMode; label: string }[] = [
   { mode: "normal", label: "Output: normal" },
@@ -133,12 +165,24 @@ export function FbdEditor({
   const networks = networksOf(body);
   const locked = readOnly !== null;
 
-  const heightOf = useCallback((network: FbdNetwork) => (node: FbdNode) => {
-    const pins = nodePins(node, network, lookup, symbols);
-    return nodeHeight(node, Math.max(pins.inputs.length, pins.outputs.length));
-  }, [lookup, symbols]);
+  const heightOf = useCallback(
+    (network: FbdNetwork) => (node: FbdNode) => {
+      const pins = nodePins(node, network, lookup, symbols);
+      return nodeHeight(node, Math.max(pins.inputs.length, pins.outputs.length));
+    },
+    [lookup, symbols],
+  );
   // Nodes without a stored position (imported, hand-written) are drawn where auto-arrange would put them.
-  const fallbacks = useMemo(() => new Map(networks.map((n) => [n.id, nodesOf(n).every((node) => node.pos) ? new Map<string, Position>() : arrange(n, heightOf(n))])), [networks, heightOf]);
+  const fallbacks = useMemo(
+    () =>
+      new Map(
+        networks.map((n) => [
+          n.id,
+          nodesOf(n).every((node) => node.pos) ? new Map<string, Position>() : arrange(n, heightOf(n)),
+        ]),
+      ),
+    [networks, heightOf],
+  );
 
   const byElement = useMemo(() => {
     const map = new Map<string, Diagnostic[]>();
@@ -155,7 +199,8 @@ export function FbdEditor({
       setMessage(null);
       onHistoryChange(record(history, result.body));
       const [first] = result.select;
-      const network = first && networksOf(result.body).find((n) => n.id === first || nodesOf(n).some((node) => node.id === first));
+      const network =
+        first && networksOf(result.body).find((n) => n.id === first || nodesOf(n).some((node) => node.id === first));
       if (network && network.id === first) {
         setSelection(null);
         setNetworkSelected(network.id);
@@ -169,7 +214,8 @@ export function FbdEditor({
   );
 
   /** The network new things go into: the selected one, else the last. */
-  const targetNetwork = (): string | null => selection?.network ?? networkSelected ?? networks[networks.length - 1]?.id ?? null;
+  const targetNetwork = (): string | null =>
+    selection?.network ?? networkSelected ?? networks[networks.length - 1]?.id ?? null;
 
   /** A free spot in the column new nodes of `kind` go to: below what is there. */
   const freeSpot = (network: FbdNetwork, kind: PaletteKind): Position => {
@@ -205,9 +251,20 @@ export function FbdEditor({
     const at = picker;
     setPicker(null);
     root.current?.focus();
-    const used = new Set([...known, ...networks.flatMap((n) => nodesOf(n).flatMap((node) => (kindOf(node) === "block" && (node as Block).instance ? [(node as Block).instance!.toUpperCase()] : [])))]);
+    const used = new Set([
+      ...known,
+      ...networks.flatMap((n) =>
+        nodesOf(n).flatMap((node) =>
+          kindOf(node) === "block" && (node as Block).instance ? [(node as Block).instance!.toUpperCase()] : [],
+        ),
+      ),
+    ]);
     const instance = entry.kind === "function_block" ? instanceName(entry.name, used) : null;
-    const result = addNode({ type: "block", call: entry.name, instance, en }, at?.network ?? targetNetwork(), at?.pos ?? null);
+    const result = addNode(
+      { type: "block", call: entry.name, instance, en },
+      at?.network ?? targetNetwork(),
+      at?.pos ?? null,
+    );
     if (result?.ok && instance && onDeclareVariable) setOffer({ name: instance, type: entry.name });
   };
 
@@ -225,7 +282,11 @@ export function FbdEditor({
     }
     const use = wiresOf(network).find((w) => w.from.node === id);
     const consumer = use && nodesOf(network).find((n) => n.id === use.to.node);
-    const pin = consumer && nodePins(consumer, network, lookup, symbols).inputs.find((p) => p.name.toUpperCase() === use.to.pin.toUpperCase());
+    const pin =
+      consumer &&
+      nodePins(consumer, network, lookup, symbols).inputs.find(
+        (p) => p.name.toUpperCase() === use.to.pin.toUpperCase(),
+      );
     return pin?.type ? concrete(pin.type) : "BOOL";
   };
 
@@ -249,7 +310,9 @@ export function FbdEditor({
     if (selection && (selection.nodes.length || selection.edges.length)) {
       const network = networks.find((n) => n.id === selection.network);
       const cut = network ? wiresOf(network).filter((w) => selection.edges.includes(wireKey(w))) : [];
-      const withoutWires = cut.length ? ops.disconnect(body, selection.network, cut) : ({ ok: true, body, select: [] } as ops.EditResult);
+      const withoutWires = cut.length
+        ? ops.disconnect(body, selection.network, cut)
+        : ({ ok: true, body, select: [] } as ops.EditResult);
       if (withoutWires.ok) apply(ops.deleteNodes(withoutWires.body, selection.nodes));
       setSelection(null);
     } else if (networkSelected) apply(ops.deleteNetworks(body, [networkSelected]));
@@ -269,7 +332,10 @@ export function FbdEditor({
     if (!network) return void setMessage("Add a network to paste into.");
     apply(pasteClip(body, network, clip));
   };
-  const clipboard = clipboardActions({ take, paste: pasteText, isClip: (text) => parseClip(text) !== null, locked }, lastClip);
+  const clipboard = clipboardActions(
+    { take, paste: pasteText, isClip: (text) => parseClip(text) !== null, locked },
+    lastClip,
+  );
 
   const reorder = (delta: -1 | 1) => {
     const id = selectedNodes[0];
@@ -291,7 +357,11 @@ export function FbdEditor({
     event.preventDefault();
     event.stopPropagation();
     const box = root.current?.getBoundingClientRect();
-    setMenu({ x: event.clientX - (box?.left ?? 0), y: event.clientY - (box?.top ?? 0), groups: groups.filter((g) => g.length) });
+    setMenu({
+      x: event.clientX - (box?.left ?? 0),
+      y: event.clientY - (box?.top ?? 0),
+      groups: groups.filter((g) => g.length),
+    });
   };
 
   const onlineItems = (operand: string | null): MenuItem[] => {
@@ -306,22 +376,68 @@ export function FbdEditor({
     const edit: MenuItem[] = locked
       ? []
       : [
-          ...(WITH_TEXT.has(kind) || kind === "block" ? [{ id: "edit", label: kind === "block" ? "Edit instance" : "Edit text", run: () => setEditing(node.id) }] : []),
-          ...(kind === "block" && nextInput(node as Block, lookup((node as Block).call), wiresOf(net)) ? [{ id: "add-input", label: "Add input", run: () => addInput(node.id) }] : []),
-          ...(kind === "block" ? [{ id: "en", label: (node as Block).en ? "Remove EN/ENO" : "Add EN/ENO", run: () => apply(ops.toggleEn(body, node.id)) }] : []),
-          ...(kind === "output" ? OUTPUT_MODES.map(({ mode, label }) => ({ id: `mode-${mode}`, label, run: () => apply(ops.setOutputMode(body, node.id, mode)) })) : []),
+          ...(WITH_TEXT.has(kind) || kind === "block"
+            ? [{ id: "edit", label: kind === "block" ? "Edit instance" : "Edit text", run: () => setEditing(node.id) }]
+            : []),
+          ...(kind === "block" && nextInput(node as Block, lookup((node as Block).call), wiresOf(net))
+            ? [{ id: "add-input", label: "Add input", run: () => addInput(node.id) }]
+            : []),
+          ...(kind === "block"
+            ? [
+                {
+                  id: "en",
+                  label: (node as Block).en ? "Remove EN/ENO" : "Add EN/ENO",
+                  run: () => apply(ops.toggleEn(body, node.id)),
+                },
+              ]
+            : []),
+          ...(kind === "output"
+            ? OUTPUT_MODES.map(({ mode, label }) => ({
+                id: `mode-${mode}`,
+                label,
+                run: () => apply(ops.setOutputMode(body, node.id, mode)),
+              }))
+            : []),
         ];
     const order: MenuItem[] =
       locked || !(kind === "block" || kind === "output")
         ? []
         : [
-            { id: "earlier", label: "Run earlier", keys: "Alt+ArrowUp", run: () => apply(moveInOrder(body, network, orders.get(network) ?? [], node.id, -1)) },
-            { id: "later", label: "Run later", keys: "Alt+ArrowDown", run: () => apply(moveInOrder(body, network, orders.get(network) ?? [], node.id, 1)) },
+            {
+              id: "earlier",
+              label: "Run earlier",
+              keys: "Alt+ArrowUp",
+              run: () => apply(moveInOrder(body, network, orders.get(network) ?? [], node.id, -1)),
+            },
+            {
+              id: "later",
+              label: "Run later",
+              keys: "Alt+ArrowDown",
+              run: () => apply(moveInOrder(body, network, orders.get(network) ?? [], node.id, 1)),
+            },
           ];
-    const debugItems: MenuItem[] = debug ? [{ id: "breakpoint", label: debug.elements.has(node.id) ? "Remove breakpoint" : "Set breakpoint", keys: "Alt+click", run: () => debug.toggle({ element: node.id }) }] : [];
+    const debugItems: MenuItem[] = debug
+      ? [
+          {
+            id: "breakpoint",
+            label: debug.elements.has(node.id) ? "Remove breakpoint" : "Set breakpoint",
+            keys: "Alt+click",
+            run: () => debug.toggle({ element: node.id }),
+          },
+        ]
+      : [];
     const clip: MenuItem[] = [
       { id: "copy", label: "Copy", keys: "Ctrl+C", run: () => clipboard.copy(false) },
-      ...(locked ? [] : [{ id: "delete", label: "Delete", keys: "Delete", run: () => apply(ops.deleteNodes(body, selectedNodes.includes(node.id) ? selectedNodes : [node.id])) }]),
+      ...(locked
+        ? []
+        : [
+            {
+              id: "delete",
+              label: "Delete",
+              keys: "Delete",
+              run: () => apply(ops.deleteNodes(body, selectedNodes.includes(node.id) ? selectedNodes : [node.id])),
+            },
+          ]),
     ];
     openMenu(event, [onlineItems(operandOf(node)), edit, order, debugItems, clip]);
   };
@@ -333,14 +449,27 @@ export function FbdEditor({
     const flags = kindOf(node) === "block" ? ((node as Block).pins?.[pin] ?? {}) : null;
     const flagItems: MenuItem[] = flags
       ? [
-          { id: "negate", label: flags.negated ? `Remove negation of ${pin}` : `Negate ${pin}`, run: () => apply(ops.togglePinFlag(body, node.id, pin, "negated", side)) },
+          {
+            id: "negate",
+            label: flags.negated ? `Remove negation of ${pin}` : `Negate ${pin}`,
+            run: () => apply(ops.togglePinFlag(body, node.id, pin, "negated", side)),
+          },
           ...(side === "in"
-            ? (["rising", "falling"] as const).map((edge) => ({ id: edge, label: flags.edge === edge ? `Remove ${edge} edge` : `${edge === "rising" ? "Rising" : "Falling"} edge on ${pin}`, run: () => apply(ops.togglePinFlag(body, node.id, pin, edge, side)) }))
+            ? (["rising", "falling"] as const).map((edge) => ({
+                id: edge,
+                label:
+                  flags.edge === edge
+                    ? `Remove ${edge} edge`
+                    : `${edge === "rising" ? "Rising" : "Falling"} edge on ${pin}`,
+                run: () => apply(ops.togglePinFlag(body, node.id, pin, edge, side)),
+              }))
             : []),
         ]
       : [];
     const wired = ops.wiresAt(at.network, { node: node.id, pin }, side);
-    const wireItems: MenuItem[] = wired.length ? [{ id: "disconnect", label: `Disconnect ${pin}`, run: () => apply(ops.disconnect(body, at.network.id, wired)) }] : [];
+    const wireItems: MenuItem[] = wired.length
+      ? [{ id: "disconnect", label: `Disconnect ${pin}`, run: () => apply(ops.disconnect(body, at.network.id, wired)) }]
+      : [];
     openMenu(event, [flagItems, wireItems]);
   };
 
@@ -381,26 +510,54 @@ export function FbdEditor({
     },
   };
 
-  const onSelectChanges = useCallback((network: string, nodes: readonly { id: string; selected: boolean }[], edges: readonly { id: string; selected: boolean }[]) => {
-    setSelection((current) => {
-      const base = current?.network === network ? current : { network, nodes: [], edges: [] };
-      const nextNodes = new Set(base.nodes);
-      const nextEdges = new Set(base.edges);
-      for (const c of nodes) c.selected ? nextNodes.add(c.id) : nextNodes.delete(c.id);
-      for (const c of edges) c.selected ? nextEdges.add(c.id) : nextEdges.delete(c.id);
-      if (!nextNodes.size && !nextEdges.size) return current?.network === network ? null : current; // another network's canvas letting go
-      return { network, nodes: [...nextNodes], edges: [...nextEdges] };
-    });
-    if (nodes.some((c) => c.selected) || edges.some((c) => c.selected)) setNetworkSelected(null);
-  }, []);
+  const onSelectChanges = useCallback(
+    (
+      network: string,
+      nodes: readonly { id: string; selected: boolean }[],
+      edges: readonly { id: string; selected: boolean }[],
+    ) => {
+      setSelection((current) => {
+        const base = current?.network === network ? current : { network, nodes: [], edges: [] };
+        const nextNodes = new Set(base.nodes);
+        const nextEdges = new Set(base.edges);
+        for (const c of nodes) c.selected ? nextNodes.add(c.id) : nextNodes.delete(c.id);
+        for (const c of edges) c.selected ? nextEdges.add(c.id) : nextEdges.delete(c.id);
+        if (!nextNodes.size && !nextEdges.size) return current?.network === network ? null : current; // another network's canvas letting go
+        return { network, nodes: [...nextNodes], edges: [...nextEdges] };
+      });
+      if (nodes.some((c) => c.selected) || edges.some((c) => c.selected)) setNetworkSelected(null);
+    },
+    [],
+  );
 
   const onConnect = (network: string, c: Connection) => {
     if (locked) return;
-    apply(ops.connect(body, network, { from: { node: c.source, pin: pinOfHandle(c.sourceHandle) }, to: { node: c.target, pin: pinOfHandle(c.targetHandle) } }, lookup, symbols));
+    apply(
+      ops.connect(
+        body,
+        network,
+        {
+          from: { node: c.source, pin: pinOfHandle(c.sourceHandle) },
+          to: { node: c.target, pin: pinOfHandle(c.targetHandle) },
+        },
+        lookup,
+        symbols,
+      ),
+    );
   };
   const refusalOf = (network: string, c: Connection) => {
     const net = networks.find((n) => n.id === network);
-    return net ? refusal(net, { from: { node: c.source, pin: pinOfHandle(c.sourceHandle) }, to: { node: c.target, pin: pinOfHandle(c.targetHandle) } }, lookup, symbols) : null;
+    return net
+      ? refusal(
+          net,
+          {
+            from: { node: c.source, pin: pinOfHandle(c.sourceHandle) },
+            to: { node: c.target, pin: pinOfHandle(c.targetHandle) },
+          },
+          lookup,
+          symbols,
+        )
+      : null;
   };
 
   // A halt or a clicked diagnostic scrolls its network into view and selects the place.
@@ -421,7 +578,8 @@ export function FbdEditor({
   }, [focus?.seq]);
 
   const onKeyDown = (event: KeyboardEvent<HTMLDivElement>) => {
-    if (editing || picker || networkText || (event.target as HTMLElement).closest("input, textarea, .ld-context-menu")) return;
+    if (editing || picker || networkText || (event.target as HTMLElement).closest("input, textarea, .ld-context-menu"))
+      return;
     const ctrl = event.ctrlKey || event.metaKey;
     const key = event.key.toLowerCase();
     let handled = true;
@@ -441,7 +599,13 @@ export function FbdEditor({
   const selectedBlock = selectedNodes.length === 1 ? findNode(body, selectedNodes[0]!)?.node : undefined;
   const netIndex = networks.findIndex((n) => n.id === (networkSelected ?? selection?.network));
   const tool = (label: string, run: () => void, enabled = !locked, title?: string) => (
-    <button type="button" disabled={!enabled} title={title ?? label} onMouseDown={(e) => e.preventDefault()} onClick={run}>
+    <button
+      type="button"
+      disabled={!enabled}
+      title={title ?? label}
+      onMouseDown={(e) => e.preventDefault()}
+      onClick={run}
+    >
       {label}
     </button>
   );
@@ -479,7 +643,18 @@ export function FbdEditor({
             ))}
           </div>
           <div className="ld-toolbar-group">
-            {tool("Add input", () => selectedBlock && addInput(selectedBlock.id), !locked && !!selectedBlock && kindOf(selectedBlock) === "block" && !!nextInput(selectedBlock as Block, lookup((selectedBlock as Block).call), wiresOf(findNode(body, selectedBlock.id)!.network)))}
+            {tool(
+              "Add input",
+              () => selectedBlock && addInput(selectedBlock.id),
+              !locked &&
+                !!selectedBlock &&
+                kindOf(selectedBlock) === "block" &&
+                !!nextInput(
+                  selectedBlock as Block,
+                  lookup((selectedBlock as Block).call),
+                  wiresOf(findNode(body, selectedBlock.id)!.network),
+                ),
+            )}
             {tool("Run earlier", () => reorder(-1), !locked && !!selectedBlock, "Run earlier (Alt+ArrowUp)")}
             {tool("Run later", () => reorder(1), !locked && !!selectedBlock, "Run later (Alt+ArrowDown)")}
             {tool("Auto-arrange", autoArrange, !locked && networks.length > 0)}
@@ -487,10 +662,26 @@ export function FbdEditor({
           </div>
           <div className="ld-toolbar-group">
             {tool("Add network", () => apply(ops.addNetwork(body, netIndex < 0 ? networks.length : netIndex + 1)))}
-            {tool("Network up", () => apply(ops.moveNetwork(body, networks[netIndex]!.id, -1)), !locked && netIndex > 0)}
-            {tool("Network down", () => apply(ops.moveNetwork(body, networks[netIndex]!.id, 1)), !locked && netIndex >= 0 && netIndex < networks.length - 1)}
-            {tool("Label", () => setNetworkText({ network: networks[netIndex]!.id, field: "label" }), !locked && netIndex >= 0)}
-            {tool("Comment", () => setNetworkText({ network: networks[netIndex]!.id, field: "comment" }), !locked && netIndex >= 0)}
+            {tool(
+              "Network up",
+              () => apply(ops.moveNetwork(body, networks[netIndex]!.id, -1)),
+              !locked && netIndex > 0,
+            )}
+            {tool(
+              "Network down",
+              () => apply(ops.moveNetwork(body, networks[netIndex]!.id, 1)),
+              !locked && netIndex >= 0 && netIndex < networks.length - 1,
+            )}
+            {tool(
+              "Label",
+              () => setNetworkText({ network: networks[netIndex]!.id, field: "label" }),
+              !locked && netIndex >= 0,
+            )}
+            {tool(
+              "Comment",
+              () => setNetworkText({ network: networks[netIndex]!.id, field: "comment" }),
+              !locked && netIndex >= 0,
+            )}
           </div>
           <div className="ld-toolbar-group">
             {tool("Copy", () => clipboard.copy(false), selectedNodes.length > 0, "Copy (Ctrl+C)")}
@@ -536,7 +727,8 @@ export function FbdEditor({
                     onCommit={(text) => {
                       setNetworkText(null);
                       root.current?.focus();
-                      if (text !== (network[networkText.field] ?? "")) apply(ops.setNetworkText(body, network.id, networkText.field, text));
+                      if (text !== (network[networkText.field] ?? ""))
+                        apply(ops.setNetworkText(body, network.id, networkText.field, text));
                     }}
                     onCancel={() => setNetworkText(null)}
                   />
@@ -559,7 +751,9 @@ export function FbdEditor({
               onConnect={onConnect}
               refusal={refusalOf}
               onRefused={setMessage}
-              onDropNew={(id, kind, pos) => paletteAdd(kind as PaletteKind, id, { x: Math.round(pos.x), y: Math.round(pos.y) })}
+              onDropNew={(id, kind, pos) =>
+                paletteAdd(kind as PaletteKind, id, { x: Math.round(pos.x), y: Math.round(pos.y) })
+              }
               onNodeContextMenu={nodeMenu}
               onNear={onNear}
               onNodeClick={(_id, node, event) => {
@@ -568,7 +762,9 @@ export function FbdEditor({
             />
           ))}
         </div>
-        {networks.length === 0 ? <p className="ld-empty-hint">This POU has no networks yet: add a node from the palette, or "Add network".</p> : null}
+        {networks.length === 0 ? (
+          <p className="ld-empty-hint">This POU has no networks yet: add a node from the palette, or "Add network".</p>
+        ) : null}
         {menu ? <MenuList x={menu.x} y={menu.y} groups={menu.groups} onClose={() => setMenu(null)} /> : null}
         {valuePrompt && onlineActions ? (
           <OperandValuePrompt

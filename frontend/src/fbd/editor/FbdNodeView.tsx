@@ -18,7 +18,8 @@ export const pinOfHandle = (handle: string | null | undefined): string => (handl
 export const PIN_ROW = 22;
 const HEADER = 24;
 /** The drawn height of a node (auto-arrange stacks nodes by it). */
-export const nodeHeight = (node: FbdNode, rows: number): number => (kindOf(node) === "block" ? HEADER + Math.max(1, rows) * PIN_ROW + 8 : 34);
+export const nodeHeight = (node: FbdNode, rows: number): number =>
+  kindOf(node) === "block" ? HEADER + Math.max(1, rows) * PIN_ROW + 8 : 34;
 
 const MODE_MARK: Record<OutputMode, string> = { normal: "", negated: "/", set: "S", reset: "R", p: "P", n: "N" };
 
@@ -42,9 +43,18 @@ function PinRow({ node, input, output, view }: { node: FbdNode; input?: PinDef; 
         title={titleOf(view, pin.name) ?? `${pin.name}${pin.type ? ` : ${pin.type}` : ""}`}
         onContextMenu={(e) => api.pinMenu(node, pin.name, dir, e)}
       >
-        <Handle type={dir === "in" ? "target" : "source"} position={dir === "in" ? Position.Left : Position.Right} id={handleId(dir, pin.name)} className="fbd-handle" />
+        <Handle
+          type={dir === "in" ? "target" : "source"}
+          position={dir === "in" ? Position.Left : Position.Right}
+          id={handleId(dir, pin.name)}
+          className="fbd-handle"
+        />
         {f.negated ? <span className="fbd-bubble" aria-label="negated" /> : null}
-        {f.edge ? <span className="fbd-edge-mark" aria-label={`${f.edge} edge`}>{f.edge === "rising" ? ">" : "<"}</span> : null}
+        {f.edge ? (
+          <span className="fbd-edge-mark" aria-label={`${f.edge} edge`}>
+            {f.edge === "rising" ? ">" : "<"}
+          </span>
+        ) : null}
         <span className="fbd-pin-name">{pin.name}</span>
       </span>
     );
@@ -73,17 +83,36 @@ function Badges({ view }: { view: NodeView }) {
 /** Node kinds whose text names a variable (the others name labels and connectors: no variable suggestions). */
 const NAMES_VARIABLE = new Set(["input", "output", "block"]);
 
-function TextField({ node, text, placeholder, label }: { node: FbdNode; text: string; placeholder: string; label: string }) {
+function TextField({
+  node,
+  text,
+  placeholder,
+  label,
+}: {
+  node: FbdNode;
+  text: string;
+  placeholder: string;
+  label: string;
+}) {
   const api = useFbdEditor();
   if (api.editing === node.id) {
     return (
       <div className="nodrag nopan nowheel fbd-text-editor">
-        <OperandEditor label={label} initial={text} suggestions={NAMES_VARIABLE.has(kindOf(node)) ? api.symbols : []} onCommit={(t) => api.commitEdit(node.id, t)} onCancel={api.cancelEdit} />
+        <OperandEditor
+          label={label}
+          initial={text}
+          suggestions={NAMES_VARIABLE.has(kindOf(node)) ? api.symbols : []}
+          onCommit={(t) => api.commitEdit(node.id, t)}
+          onCancel={api.cancelEdit}
+        />
       </div>
     );
   }
   return (
-    <span className={`fbd-text${text ? "" : " fbd-placeholder"}`} onDoubleClick={() => (api.online ? api.valueDoubleClick(node) : !api.readOnly && api.startEdit(node.id))}>
+    <span
+      className={`fbd-text${text ? "" : " fbd-placeholder"}`}
+      onDoubleClick={() => (api.online ? api.valueDoubleClick(node) : !api.readOnly && api.startEdit(node.id))}
+    >
       {text || placeholder}
     </span>
   );
@@ -134,30 +163,59 @@ export function FbdNodeView({ data, selected }: NodeProps<FbdFlowNode>) {
   const text = (() => {
     switch (kind) {
       case "input":
-        return <TextField node={node} text={(node as { expr: string }).expr} placeholder="variable or constant" label="Input operand" />;
+        return (
+          <TextField
+            node={node}
+            text={(node as { expr: string }).expr}
+            placeholder="variable or constant"
+            label="Input operand"
+          />
+        );
       case "output":
-        return <TextField node={node} text={(node as { var: string }).var} placeholder="variable" label="Output variable" />;
+        return (
+          <TextField node={node} text={(node as { var: string }).var} placeholder="variable" label="Output variable" />
+        );
       case "jump":
         return (
           <>
-            <span className="fbd-keyword">JMP</span> <TextField node={node} text={(node as { target: string }).target} placeholder="label" label="Jump target" />
+            <span className="fbd-keyword">JMP</span>{" "}
+            <TextField node={node} text={(node as { target: string }).target} placeholder="label" label="Jump target" />
           </>
         );
       case "return":
         return <span className="fbd-keyword">RETURN</span>;
       default:
-        return <TextField node={node} text={(node as { name: string }).name} placeholder="name" label={kind === "connector" ? "Connector name" : "Continuation name"} />;
+        return (
+          <TextField
+            node={node}
+            text={(node as { name: string }).name}
+            placeholder="name"
+            label={kind === "connector" ? "Connector name" : "Continuation name"}
+          />
+        );
     }
   })();
   const mode = kind === "output" ? MODE_MARK[(node as { mode?: OutputMode }).mode ?? "normal"] : "";
   return (
     <div {...common}>
       <Badges view={view} />
-      {input ? <Handle type="target" position={Position.Left} id={handleId("in", input.name)} className="fbd-handle" /> : null}
-      {mode ? <span className="fbd-mode" aria-label={`mode ${(node as { mode?: OutputMode }).mode}`}>{mode}</span> : null}
+      {input ? (
+        <Handle type="target" position={Position.Left} id={handleId("in", input.name)} className="fbd-handle" />
+      ) : null}
+      {mode ? (
+        <span className="fbd-mode" aria-label={`mode ${(node as { mode?: OutputMode }).mode}`}>
+          {mode}
+        </span>
+      ) : null}
       {text}
-      {value !== undefined ? <span className="fbd-value" data-testid={`value-${node.id}`}>{formatValue(value, (output ?? input)?.type)}</span> : null}
-      {output ? <Handle type="source" position={Position.Right} id={handleId("out", output.name)} className="fbd-handle" /> : null}
+      {value !== undefined ? (
+        <span className="fbd-value" data-testid={`value-${node.id}`}>
+          {formatValue(value, (output ?? input)?.type)}
+        </span>
+      ) : null}
+      {output ? (
+        <Handle type="source" position={Position.Right} id={handleId("out", output.name)} className="fbd-handle" />
+      ) : null}
     </div>
   );
 }

@@ -1,7 +1,20 @@
 // One FBD network: its header (number - click for a breakpoint -, label, comment, network-level
 // problems) and its own xyflow canvas (pan, zoom, handles, edges from the library). Canvases of
 // networks far outside the viewport are not mounted, so large POUs stay usable.
-import { Background, Controls, MarkerType, ReactFlow, ReactFlowProvider, useConnection, useReactFlow, ViewportPortal, type Connection, type Edge, type EdgeChange, type NodeChange } from "@xyflow/react";
+import {
+  Background,
+  Controls,
+  MarkerType,
+  ReactFlow,
+  ReactFlowProvider,
+  useConnection,
+  useReactFlow,
+  ViewportPortal,
+  type Connection,
+  type Edge,
+  type EdgeChange,
+  type NodeChange,
+} from "@xyflow/react";
 import { useEffect, useMemo, useRef, useState, type DragEvent, type MouseEvent, type ReactNode } from "react";
 import type { Diagnostic } from "../../generated/api";
 import { formatValue } from "../../online/monitor";
@@ -38,7 +51,11 @@ export interface NetworkCanvasProps {
   fallback: ReadonlyMap<string, Position>;
   height: (node: FbdNode) => number;
   overlay?: ReactNode;
-  onSelectChanges(network: string, nodes: readonly { id: string; selected: boolean }[], edges: readonly { id: string; selected: boolean }[]): void;
+  onSelectChanges(
+    network: string,
+    nodes: readonly { id: string; selected: boolean }[],
+    edges: readonly { id: string; selected: boolean }[],
+  ): void;
   onSelectNetwork(network: string): void;
   onToggleBreakpoint(network: string): void;
   onEditText(network: string, field: "label" | "comment"): void;
@@ -55,7 +72,11 @@ export interface NetworkCanvasProps {
 }
 
 /** The canvas height that shows every node of the network at zoom 1. */
-function canvasHeight(network: FbdNetwork, fallback: ReadonlyMap<string, Position>, height: (node: FbdNode) => number): number {
+function canvasHeight(
+  network: FbdNetwork,
+  fallback: ReadonlyMap<string, Position>,
+  height: (node: FbdNode) => number,
+): number {
   const bottom = Math.max(0, ...nodesOf(network).map((n) => (n.pos ?? fallback.get(n.id) ?? { y: 0 }).y + height(n)));
   return Math.min(MAX_HEIGHT, Math.max(MIN_HEIGHT, bottom + 50));
 }
@@ -70,12 +91,24 @@ function wireClass(value: unknown): string {
 function ConnectionHint({ refusal }: { refusal(c: Connection): string | null }) {
   const connection = useConnection();
   if (!connection.inProgress || !connection.toHandle || connection.isValid !== false) return null;
-  const [from, to] = connection.fromHandle.type === "source" ? [connection.fromHandle, connection.toHandle] : [connection.toHandle, connection.fromHandle];
-  const why = refusal({ source: from.nodeId, sourceHandle: from.id ?? null, target: to.nodeId, targetHandle: to.id ?? null });
+  const [from, to] =
+    connection.fromHandle.type === "source"
+      ? [connection.fromHandle, connection.toHandle]
+      : [connection.toHandle, connection.fromHandle];
+  const why = refusal({
+    source: from.nodeId,
+    sourceHandle: from.id ?? null,
+    target: to.nodeId,
+    targetHandle: to.id ?? null,
+  });
   if (!why) return null;
   return (
     <ViewportPortal>
-      <div className="fbd-connection-hint" role="tooltip" style={{ transform: `translate(${connection.to.x + 14}px, ${connection.to.y + 14}px)` }}>
+      <div
+        className="fbd-connection-hint"
+        role="tooltip"
+        style={{ transform: `translate(${connection.to.x + 14}px, ${connection.to.y + 14}px)` }}
+      >
         {why}
       </div>
     </ViewportPortal>
@@ -112,7 +145,9 @@ function Canvas(props: NetworkCanvasProps) {
         const probe = online ? probeOf(network, w.from) : null;
         const value = probe ? online?.probes[probe] : undefined;
         const source = online && value !== undefined ? nodesOf(network).find((n) => n.id === w.from.node) : undefined;
-        const type = source ? editor.view(network, source).pins.outputs.find((p) => p.name === w.from.pin)?.type : undefined;
+        const type = source
+          ? editor.view(network, source).pins.outputs.find((p) => p.name === w.from.pin)?.type
+          : undefined;
         return {
           id,
           source: w.from.node,
@@ -159,7 +194,12 @@ function Canvas(props: NetworkCanvasProps) {
     props.onDropNew(network.id, kind, flow.screenToFlowPosition({ x: event.clientX, y: event.clientY }));
   };
 
-  const asConnection = (c: Connection | Edge): Connection => ({ source: c.source, target: c.target, sourceHandle: c.sourceHandle ?? null, targetHandle: c.targetHandle ?? null });
+  const asConnection = (c: Connection | Edge): Connection => ({
+    source: c.source,
+    target: c.target,
+    sourceHandle: c.sourceHandle ?? null,
+    targetHandle: c.targetHandle ?? null,
+  });
   return (
     <div
       className="fbd-canvas"
@@ -174,13 +214,26 @@ function Canvas(props: NetworkCanvasProps) {
         nodeTypes={NODE_TYPES}
         onNodesChange={onNodesChange}
         onEdgesChange={onEdgesChange}
-        onNodeDragStop={(_e, _node, dragged) => props.onMove(network.id, new Map(dragged.map((n) => [n.id, { x: Math.round(n.position.x), y: Math.round(n.position.y) }])))}
+        onNodeDragStop={(_e, _node, dragged) =>
+          props.onMove(
+            network.id,
+            new Map(dragged.map((n) => [n.id, { x: Math.round(n.position.x), y: Math.round(n.position.y) }])),
+          )
+        }
         onConnect={(c) => props.onConnect(network.id, c)}
         isValidConnection={(c) => props.refusal(network.id, asConnection(c)) === null}
         onConnectEnd={(_e, state) => {
           if (state.isValid !== false || !state.fromHandle || !state.toHandle) return;
-          const [from, to] = state.fromHandle.type === "source" ? [state.fromHandle, state.toHandle] : [state.toHandle, state.fromHandle];
-          const why = props.refusal(network.id, { source: from.nodeId, sourceHandle: from.id ?? null, target: to.nodeId, targetHandle: to.id ?? null });
+          const [from, to] =
+            state.fromHandle.type === "source"
+              ? [state.fromHandle, state.toHandle]
+              : [state.toHandle, state.fromHandle];
+          const why = props.refusal(network.id, {
+            source: from.nodeId,
+            sourceHandle: from.id ?? null,
+            target: to.nodeId,
+            targetHandle: to.id ?? null,
+          });
           if (why) props.onRefused(why);
         }}
         onNodeContextMenu={(e, n) => props.onNodeContextMenu(network.id, n.data.node, e)}
@@ -213,7 +266,9 @@ function useNearViewport(): [React.RefObject<HTMLDivElement | null>, boolean] {
   const [near, setNear] = useState(typeof IntersectionObserver === "undefined");
   useEffect(() => {
     if (typeof IntersectionObserver === "undefined" || !ref.current) return;
-    const observer = new IntersectionObserver(([entry]) => setNear(entry?.isIntersecting ?? true), { rootMargin: "400px 0px" });
+    const observer = new IntersectionObserver(([entry]) => setNear(entry?.isIntersecting ?? true), {
+      rootMargin: "400px 0px",
+    });
     observer.observe(ref.current);
     return () => observer.disconnect();
   }, []);
@@ -227,7 +282,13 @@ export function NetworkCanvas(props: NetworkCanvasProps) {
   useEffect(() => onNear(network.id, near), [onNear, network.id, near]);
   useEffect(() => () => onNear(network.id, false), [onNear, network.id]);
   const height = canvasHeight(network, props.fallback, props.height);
-  const classes = ["fbd-network", props.networkSelected ? "fbd-network-selected" : "", props.halted ? "fbd-network-halted" : ""].filter(Boolean).join(" ");
+  const classes = [
+    "fbd-network",
+    props.networkSelected ? "fbd-network-selected" : "",
+    props.halted ? "fbd-network-halted" : "",
+  ]
+    .filter(Boolean)
+    .join(" ");
   return (
     <section className={classes} ref={ref} data-network={network.id} aria-label={`Network ${index + 1}`}>
       <header className="fbd-network-header" onMouseDown={() => props.onSelectNetwork(network.id)}>

@@ -38,7 +38,12 @@ export function BoxPicker({ library, onPick, onCancel, title = "Insert box", def
   const pick = (entry: LibraryEntry | undefined) => entry && onPick(entry, en ?? defaultEn(entry));
   return (
     <div className="ld-dialog-backdrop" onMouseDown={onCancel}>
-      <div className="ld-dialog ld-box-picker" role="dialog" aria-label={title} onMouseDown={(e) => e.stopPropagation()}>
+      <div
+        className="ld-dialog ld-box-picker"
+        role="dialog"
+        aria-label={title}
+        onMouseDown={(e) => e.stopPropagation()}
+      >
         <input
           aria-label="Search functions and function blocks"
           autoFocus
@@ -81,7 +86,12 @@ export function BoxPicker({ library, onPick, onCancel, title = "Insert box", def
           {hits.length === 0 ? <li className="ld-empty">No function or function block matches.</li> : null}
         </ul>
         <label className="ld-en-choice">
-          <input type="checkbox" checked={en ?? (chosen ? defaultEn(chosen) : false)} onChange={(e) => setEn(e.target.checked)} /> EN/ENO
+          <input
+            type="checkbox"
+            checked={en ?? (chosen ? defaultEn(chosen) : false)}
+            onChange={(e) => setEn(e.target.checked)}
+          />{" "}
+          EN/ENO
         </label>
       </div>
     </div>

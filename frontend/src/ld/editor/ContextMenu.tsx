@@ -24,13 +24,27 @@ export interface ContextMenuProps {
 }
 
 export function ContextMenu({ x, y, ctx, extra = [], onClose }: ContextMenuProps) {
-  const groups = ctx ? GROUP_ORDER.map((group) => COMMANDS.filter((c) => c.group === group && available(c, ctx))).filter((g) => g.length) : [];
-  const items = groups.map((group) => group.map((c): MenuItem => ({ id: c.id, label: c.label, keys: c.keys, run: () => c.run(ctx!) })));
+  const groups = ctx
+    ? GROUP_ORDER.map((group) => COMMANDS.filter((c) => c.group === group && available(c, ctx))).filter((g) => g.length)
+    : [];
+  const items = groups.map((group) =>
+    group.map((c): MenuItem => ({ id: c.id, label: c.label, keys: c.keys, run: () => c.run(ctx!) })),
+  );
   return <MenuList x={x} y={y} groups={extra.length ? [[...extra], ...items] : items} onClose={onClose} />;
 }
 
 /** A menu of grouped items at (x, y); closes on a click outside, Escape, or after running an item. */
-export function MenuList({ x, y, groups, onClose }: { x: number; y: number; groups: readonly (readonly MenuItem[])[]; onClose(): void }) {
+export function MenuList({
+  x,
+  y,
+  groups,
+  onClose,
+}: {
+  x: number;
+  y: number;
+  groups: readonly (readonly MenuItem[])[];
+  onClose(): void;
+}) {
   const menu = useRef<HTMLUListElement>(null);
   useEffect(() => {
     menu.current?.querySelector<HTMLButtonElement>("button")?.focus();

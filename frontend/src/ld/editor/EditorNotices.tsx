@@ -13,7 +13,15 @@ export interface EditorNoticesProps {
   onDismissOffer(): void;
 }
 
-export function EditorNotices({ readOnly, readOnlyActions, message, onDismissMessage, offer, onDeclare, onDismissOffer }: EditorNoticesProps) {
+export function EditorNotices({
+  readOnly,
+  readOnlyActions,
+  message,
+  onDismissMessage,
+  offer,
+  onDeclare,
+  onDismissOffer,
+}: EditorNoticesProps) {
   return (
     <>
       {readOnly ? (
@@ -35,7 +43,15 @@ export function EditorNotices({ readOnly, readOnlyActions, message, onDismissMes
   );
 }
 
-export function DeclareOffer({ offer, onDeclare, onDismiss }: { offer: VariableDeclaration; onDeclare(d: VariableDeclaration): void; onDismiss(): void }) {
+export function DeclareOffer({
+  offer,
+  onDeclare,
+  onDismiss,
+}: {
+  offer: VariableDeclaration;
+  onDeclare(d: VariableDeclaration): void;
+  onDismiss(): void;
+}) {
   const [type, setType] = useState(offer.type);
   return (
     <div className="ld-declare" role="status">
@@ -43,7 +59,13 @@ export function DeclareOffer({ offer, onDeclare, onDismiss }: { offer: VariableD
         <code>{offer.name}</code> is not declared.
       </span>
       <label>
-        Type <input aria-label="Type of the new variable" value={type} onChange={(e) => setType(e.target.value)} spellCheck={false} />
+        Type{" "}
+        <input
+          aria-label="Type of the new variable"
+          value={type}
+          onChange={(e) => setType(e.target.value)}
+          spellCheck={false}
+        />
       </label>
       <button type="button" onClick={() => onDeclare({ name: offer.name, type: type.trim() || offer.type })}>
         Declare {offer.name}
@@ -54,4 +76,3 @@ export function DeclareOffer({ offer, onDeclare, onDismiss }: { offer: VariableD
     </div>
   );
 }
-

@@ -7,7 +7,16 @@ import { historyOf, type History } from "../history";
 import { locate, networksOf, type LdBody, type LdElement } from "../model";
 import { LdEditor, type LdEditorProps } from "./LdEditor";
 
-const sym = (name: string, type = "BOOL"): SymbolInfo => ({ name, type, var_class: "VAR", initial: null, address: null, comment: null, retain: false, constant: false });
+const sym = (name: string, type = "BOOL"): SymbolInfo => ({
+  name,
+  type,
+  var_class: "VAR",
+  initial: null,
+  address: null,
+  comment: null,
+  retain: false,
+  constant: false,
+});
 const SYMBOLS = [sym("Start"), sym("Stop"), sym("Motor"), sym("MotorRunning"), sym("Level", "INT")];
 
 /** Renders the editor with its history in state, like a tab of the app; `current()` is the live body. */
@@ -26,10 +35,12 @@ function setup(body: LdBody, props: Partial<LdEditorProps> = {}) {
     if (!found) throw new Error(`element ${id} is not drawn`);
     return found;
   };
-  const selected = () => [...view.container.querySelectorAll(".ld-element.ld-selected")].map((e) => e.getAttribute("data-id"));
+  const selected = () =>
+    [...view.container.querySelectorAll(".ld-element.ld-selected")].map((e) => e.getAttribute("data-id"));
   return { ...view, editor, key, hit, selected, current: () => latest.present, history: () => latest };
 }
-const show = (e: LdElement | undefined) => (e?.type === "contact" ? `${e.var}:${e.mode}` : e?.type === "coil" ? `(${e.var}):${e.mode}` : e?.type);
+const show = (e: LdElement | undefined) =>
+  e?.type === "contact" ? `${e.var}:${e.mode}` : e?.type === "coil" ? `(${e.var}):${e.mode}` : e?.type;
 const rung = (body: LdBody, n = 0) => networksOf(body)[n]!.elements!.map(show);
 
 describe("selection and keyboard navigation", () => {
@@ -55,7 +66,10 @@ describe("selection and keyboard navigation", () => {
     expect(t.selected()).toEqual(["a", "b"]);
     t.key("p");
     const [parallel] = networksOf(t.current())[0]!.elements!;
-    expect(parallel?.type === "parallel" && parallel.branches.map((b) => b.map(show))).toEqual([["A:no", "B:no"], [":no"]]);
+    expect(parallel?.type === "parallel" && parallel.branches.map((b) => b.map(show))).toEqual([
+      ["A:no", "B:no"],
+      [":no"],
+    ]);
   });
 });
 
@@ -198,9 +212,17 @@ describe("box picker", () => {
     const dialog = screen.getByRole("dialog", { name: "Insert box" });
     const search = within(dialog).getByRole("textbox", { name: "Search functions and function blocks" });
     fireEvent.change(search, { target: { value: "counter" } });
-    expect(within(dialog).getAllByRole("option").map((o) => o.querySelector(".ld-entry-name")?.textContent)).toEqual(["CTU"]);
+    expect(
+      within(dialog)
+        .getAllByRole("option")
+        .map((o) => o.querySelector(".ld-entry-name")?.textContent),
+    ).toEqual(["CTU"]);
     fireEvent.change(search, { target: { value: "t" } });
-    expect(within(dialog).getAllByRole("option").map((o) => o.querySelector(".ld-entry-name")?.textContent)).toEqual(["TON", "CTU", "GT"]);
+    expect(
+      within(dialog)
+        .getAllByRole("option")
+        .map((o) => o.querySelector(".ld-entry-name")?.textContent),
+    ).toEqual(["TON", "CTU", "GT"]);
     fireEvent.keyDown(search, { key: "Enter" });
     const [, box] = networksOf(t.current())[0]!.elements!;
     expect(box).toMatchObject({ type: "box", call: "TON", instance: "TON_1", en: false });
@@ -216,7 +238,12 @@ describe("box picker", () => {
     fireEvent.change(within(dialog).getByRole("textbox"), { target: { value: "ADD" } });
     expect((within(dialog).getByRole("checkbox", { name: "EN/ENO" }) as HTMLInputElement).checked).toBe(true);
     fireEvent.mouseDown(within(dialog).getByRole("option"));
-    expect(networksOf(t.current())[0]!.elements![1]).toMatchObject({ type: "box", call: "ADD", instance: null, en: true });
+    expect(networksOf(t.current())[0]!.elements![1]).toMatchObject({
+      type: "box",
+      call: "ADD",
+      instance: null,
+      en: true,
+    });
   });
 });
 
@@ -225,8 +252,21 @@ describe("context menu", () => {
     const t = setup(motorMain);
     fireEvent.contextMenu(t.hit("stop"));
     const menu = screen.getByRole("menu");
-    const items = within(menu).getAllByRole("menuitem").map((b) => b.querySelector("span")?.textContent);
-    expect(items).toEqual(expect.arrayContaining(["Contact", "Coil", "Parallel branch", "Normally open", "Falling edge (N)", "Delete", "Copy", "New network below"]));
+    const items = within(menu)
+      .getAllByRole("menuitem")
+      .map((b) => b.querySelector("span")?.textContent);
+    expect(items).toEqual(
+      expect.arrayContaining([
+        "Contact",
+        "Coil",
+        "Parallel branch",
+        "Normally open",
+        "Falling edge (N)",
+        "Delete",
+        "Copy",
+        "New network below",
+      ]),
+    );
     expect(items).not.toContain("EN/ENO");
     expect(items).not.toContain("Set coil (S)");
     fireEvent.click(within(menu).getByRole("menuitem", { name: /Normally open/ }));
@@ -258,7 +298,11 @@ describe("drag to move", () => {
 describe("copy and paste", () => {
   const clipboard = () => {
     const data = new Map<string, string>();
-    return { setData: (type: string, value: string) => data.set(type, value), getData: (type: string) => data.get(type) ?? "", data };
+    return {
+      setData: (type: string, value: string) => data.set(type, value),
+      getData: (type: string) => data.get(type) ?? "",
+      data,
+    };
   };
 
   it("copies elements as JSON and pastes them into another editor (another tab)", () => {
@@ -313,8 +357,20 @@ describe("shortcut help", () => {
   it("lists every command with its keys, and the app's own keys", () => {
     setup(motorMain, { extraShortcuts: [["F5", "Run"]] });
     fireEvent.click(screen.getByRole("button", { name: "Shortcuts" }));
-    const rows = within(screen.getByRole("dialog", { name: "Keyboard shortcuts" })).getAllByRole("row").map((r) => r.textContent);
-    expect(rows).toEqual(expect.arrayContaining(["CContact", "Shift+CContact before", "PParallel branch", "Ctrl+ZUndo", "Ctrl+SSave the project", "Alt+ArrowUpMove network up", "F5Run"]));
+    const rows = within(screen.getByRole("dialog", { name: "Keyboard shortcuts" }))
+      .getAllByRole("row")
+      .map((r) => r.textContent);
+    expect(rows).toEqual(
+      expect.arrayContaining([
+        "CContact",
+        "Shift+CContact before",
+        "PParallel branch",
+        "Ctrl+ZUndo",
+        "Ctrl+SSave the project",
+        "Alt+ArrowUpMove network up",
+        "F5Run",
+      ]),
+    );
   });
 });
 
@@ -353,7 +409,10 @@ describe("online commands (issue 7 online mode)", () => {
     fireEvent.click(menuItem("Force FALSE"));
     fireEvent.click(menuItem("Release force"));
     fireEvent.click(menuItem("Add to watch list"));
-    expect(onlineActions.force.mock.calls).toEqual([["Stop", true], ["Stop", false]]);
+    expect(onlineActions.force.mock.calls).toEqual([
+      ["Stop", true],
+      ["Stop", false],
+    ]);
     expect(onlineActions.unforce.mock.calls).toEqual([["Stop"]]);
     expect(onlineActions.watch.mock.calls).toEqual([["Stop"]]);
 
@@ -390,7 +449,9 @@ describe("online commands (issue 7 online mode)", () => {
     const onVisibleChange = vi.fn();
     const t = setup(motorMain, { onVisibleChange });
     expect(onVisibleChange).toHaveBeenLastCalledWith(networksOf(motorMain).map((n) => n.id));
-    t.rerender(<LdEditor history={historyOf(motorMain)} onHistoryChange={() => undefined} focus={{ element: "stop", seq: 1 }} />);
+    t.rerender(
+      <LdEditor history={historyOf(motorMain)} onHistoryChange={() => undefined} focus={{ element: "stop", seq: 1 }} />,
+    );
     expect(t.selected()).toEqual(["stop"]);
   });
 });

@@ -3,7 +3,16 @@
 // picker, drag to move, copy/paste through the system clipboard, undo/redo, and breakpoints
 // (network number click, Alt+click, F9, context menu) when the caller supplies them. The undo
 // history is owned by the caller (one per open POU), so it survives switching tabs.
-import { useCallback, useEffect, useMemo, useRef, useState, type KeyboardEvent, type MouseEvent, type ReactNode } from "react";
+import {
+  useCallback,
+  useEffect,
+  useMemo,
+  useRef,
+  useState,
+  type KeyboardEvent,
+  type MouseEvent,
+  type ReactNode,
+} from "react";
 import type { Diagnostic, LibraryEntry, SymbolInfo } from "../../generated/api";
 import { parseClip, serializeClip, type Clip } from "../clipboard";
 import { canRedo, canUndo, record, redo, undo, type History } from "../history";
@@ -14,7 +23,15 @@ import type { EditResult, OperandField } from "../ops";
 import { LdDiagram } from "../view/LdDiagram";
 import type { DebugMarks, DiagramHandlers, OnlineView, Selection, Target } from "../view/types";
 import { BoxPicker } from "./BoxPicker";
-import { available, COMMANDS, commandForKey, insert, selectedNetwork, type CommandContext, type CommandGroup } from "./commands";
+import {
+  available,
+  COMMANDS,
+  commandForKey,
+  insert,
+  selectedNetwork,
+  type CommandContext,
+  type CommandGroup,
+} from "./commands";
 import { ContextMenu, type MenuItem } from "./ContextMenu";
 import { guessType, instanceName, symbolNames, undeclared, type VariableDeclaration } from "./declare";
 import { extend, navigate, type Direction } from "./navigation";
@@ -74,7 +91,10 @@ type Editing =
 const TOOLBAR: { group: CommandGroup; ids: string[] }[] = [
   { group: "insert", ids: ["contact", "contact-nc", "coil", "compare", "box", "parallel", "jump", "return"] },
   { group: "edit", ids: ["cycle-mode", "toggle-en", "delete"] },
-  { group: "network", ids: ["network-add", "network-duplicate", "network-up", "network-down", "network-label", "network-comment"] },
+  {
+    group: "network",
+    ids: ["network-add", "network-duplicate", "network-up", "network-down", "network-label", "network-comment"],
+  },
   { group: "clipboard", ids: ["copy", "cut", "paste"] },
   { group: "history", ids: ["undo", "redo"] },
 ];
@@ -87,7 +107,11 @@ const ARROWS: Record<string, Direction> = { ArrowLeft: "left", ArrowRight: "righ
 const lastClip: LastClip = { text: null };
 
 /** The operand Enter edits: the variable, a compare's left side, a box's instance or first free input, a jump's target. */
-function mainField(body: LdBody, id: string, library: (call: string) => LibraryEntry | undefined): OperandField | undefined {
+function mainField(
+  body: LdBody,
+  id: string,
+  library: (call: string) => LibraryEntry | undefined,
+): OperandField | undefined {
   const e = locate(body, id)?.element;
   switch (e?.type) {
     case "contact":
@@ -129,12 +153,23 @@ function operandText(body: LdBody, id: string, field: OperandField): string {
 /** The variable an element is about, for online commands and dragging to the watch list. */
 function variableOf(body: LdBody, id: string): string | null {
   const e = locate(body, id)?.element;
-  const text = e?.type === "contact" || e?.type === "coil" ? e.var : e?.type === "compare" ? e.left : e?.type === "box" ? (e.instance ?? "") : "";
+  const text =
+    e?.type === "contact" || e?.type === "coil"
+      ? e.var
+      : e?.type === "compare"
+        ? e.left
+        : e?.type === "box"
+          ? (e.instance ?? "")
+          : "";
   return text.trim() || null;
 }
 
 const fieldLabel = (field: OperandField) =>
-  field.kind === "input" || field.kind === "output" ? `Pin ${field.pin}` : { var: "Variable", left: "Left operand", right: "Right operand", instance: "Instance", target: "Jump target" }[field.kind];
+  field.kind === "input" || field.kind === "output"
+    ? `Pin ${field.pin}`
+    : { var: "Variable", left: "Left operand", right: "Right operand", instance: "Instance", target: "Jump target" }[
+        field.kind
+      ];
 
 export function LdEditor({
   history,
@@ -192,7 +227,8 @@ export function LdEditor({
   useEffect(() => {
     if (!focus) return;
     if (focus.element && locate(body, focus.element)) select({ kind: "elements", ids: [focus.element] });
-    else if (focus.network && networksOf(body).some((n) => n.id === focus.network)) select({ kind: "network", id: focus.network });
+    else if (focus.network && networksOf(body).some((n) => n.id === focus.network))
+      select({ kind: "network", id: focus.network });
     root.current?.focus();
     // Only a new focus request moves the selection, not later edits of the body.
   }, [focus?.seq]);
@@ -223,7 +259,9 @@ export function LdEditor({
       if (!n || !placed) return;
       let { x, y } = { x: placed.x, y: n.top + placed.y };
       if (field.kind === "input" || field.kind === "output") {
-        const pin = placed.pins?.find((p) => p.name === field.pin && p.side === (field.kind === "input" ? "in" : "out"));
+        const pin = placed.pins?.find(
+          (p) => p.name === field.pin && p.side === (field.kind === "input" ? "in" : "out"),
+        );
         if (pin) ({ x, y } = { x: field.kind === "input" ? pin.x - 150 : pin.x + 4, y: n.top + pin.y - 22 });
       } else if (field.kind === "right") y = n.top + placed.y + 36;
       setEditing({ kind: "operand", id, field, x: Math.max(0, x), y });
@@ -286,7 +324,8 @@ export function LdEditor({
     else if (liveSelection?.kind === "elements") {
       const at = locate(body, liveSelection.ids[liveSelection.ids.length - 1]!);
       if (at) place = { series: at.series, index: at.index + 1 };
-    } else if (liveSelection?.kind === "network") place = { series: { kind: "network", network: liveSelection.id }, index: 0 };
+    } else if (liveSelection?.kind === "network")
+      place = { series: { kind: "network", network: liveSelection.id }, index: 0 };
     if (!place) {
       setMessage("Select where to paste: an element, a wire or a network.");
       return;
@@ -298,11 +337,18 @@ export function LdEditor({
     const clip = clipOfSelection();
     if (!clip) return null;
     if (cut && !readOnly) {
-      apply(liveSelection?.kind === "network" ? ops.deleteNetworks(body, [liveSelection.id]) : ops.deleteElements(body, clip.kind === "elements" ? clip.elements.map((e) => e.id) : []));
+      apply(
+        liveSelection?.kind === "network"
+          ? ops.deleteNetworks(body, [liveSelection.id])
+          : ops.deleteElements(body, clip.kind === "elements" ? clip.elements.map((e) => e.id) : []),
+      );
     }
     return serializeClip(clip);
   };
-  const clipboard = clipboardActions({ take, paste: pasteText, isClip: (text) => parseClip(text) !== null, locked: readOnly !== null }, lastClip);
+  const clipboard = clipboardActions(
+    { take, paste: pasteText, isClip: (text) => parseClip(text) !== null, locked: readOnly !== null },
+    lastClip,
+  );
 
   const ctx: CommandContext = {
     body,
@@ -333,7 +379,12 @@ export function LdEditor({
   const pickBox = (entry: LibraryEntry, en: boolean) => {
     setPicker(false);
     root.current?.focus();
-    const used = new Set([...known, ...[...walk(body)].flatMap((l) => (l.element.type === "box" && l.element.instance ? [l.element.instance.toUpperCase()] : []))]);
+    const used = new Set([
+      ...known,
+      ...[...walk(body)].flatMap((l) =>
+        l.element.type === "box" && l.element.instance ? [l.element.instance.toUpperCase()] : [],
+      ),
+    ]);
     const instance = entry.kind === "function_block" ? instanceName(entry.name, used) : null;
     const result = insert(ctx, ops.box(entry.name, instance, en), "after");
     apply(result);
@@ -416,7 +467,8 @@ export function LdEditor({
       event.preventDefault();
       const box = root.current?.getBoundingClientRect();
       if (target.kind === "element") {
-        if (!(liveSelection?.kind === "elements" && liveSelection.ids.includes(target.id))) select({ kind: "elements", ids: [target.id] });
+        if (!(liveSelection?.kind === "elements" && liveSelection.ids.includes(target.id)))
+          select({ kind: "elements", ids: [target.id] });
       } else if (target.kind === "place") select({ kind: "place", place: target.place });
       else select({ kind: "network", id: target.id });
       setMenu({ x: event.clientX - (box?.left ?? 0), y: event.clientY - (box?.top ?? 0) });
@@ -470,11 +522,22 @@ export function LdEditor({
     const target = debugging ? breakpointTarget() : null;
     const breakpoint: MenuItem[] =
       debugging && target
-        ? [{ id: "toggle-breakpoint", label: "element" in target ? "Toggle breakpoint on element" : "Toggle breakpoint on network", keys: "F9", run: () => debugging.toggle(target) }]
+        ? [
+            {
+              id: "toggle-breakpoint",
+              label: "element" in target ? "Toggle breakpoint on element" : "Toggle breakpoint on network",
+              keys: "F9",
+              run: () => debugging.toggle(target),
+            },
+          ]
         : [];
-    const operand = onlineActions && liveSelection?.kind === "elements" ? variableOf(body, liveSelection.ids[0]!) : null;
+    const operand =
+      onlineActions && liveSelection?.kind === "elements" ? variableOf(body, liveSelection.ids[0]!) : null;
     if (!onlineActions || !operand) return breakpoint;
-    return [...breakpoint, ...onlineOperandItems(operand, onlineActions, (action) => setValuePrompt({ operand, action }))];
+    return [
+      ...breakpoint,
+      ...onlineOperandItems(operand, onlineActions, (action) => setValuePrompt({ operand, action })),
+    ];
   };
 
   const reveal = selectedNetwork({ body, selection: liveSelection }) ?? null;
@@ -496,14 +559,22 @@ export function LdEditor({
       <OperandEditor
         key={`${editing.id}:${editing.field}`}
         label={editing.field === "label" ? "Network label" : "Network comment"}
-        initial={(editing.field === "label" ? networksOf(body).find((n) => n.id === editing.id)?.label : networksOf(body).find((n) => n.id === editing.id)?.comment) ?? ""}
+        initial={
+          (editing.field === "label"
+            ? networksOf(body).find((n) => n.id === editing.id)?.label
+            : networksOf(body).find((n) => n.id === editing.id)?.comment) ?? ""
+        }
         style={{ left: editing.x, top: editing.y }}
         onCommit={(text) => {
           setEditing(null);
           root.current?.focus();
           const current = networksOf(body).find((n) => n.id === editing.id);
           if (((editing.field === "label" ? current?.label : current?.comment) ?? "") === text) return;
-          apply(editing.field === "label" ? ops.setNetworkLabel(body, editing.id, text) : ops.setNetworkComment(body, editing.id, text));
+          apply(
+            editing.field === "label"
+              ? ops.setNetworkLabel(body, editing.id, text)
+              : ops.setNetworkComment(body, editing.id, text),
+          );
         }}
         onCancel={() => {
           setEditing(null);
@@ -534,7 +605,14 @@ export function LdEditor({
             {ids.map((id) => {
               const command = COMMANDS.find((c) => c.id === id)!;
               return (
-                <button key={id} type="button" disabled={!available(command, ctx)} title={command.keys ? `${command.label} (${command.keys})` : command.label} onMouseDown={(e) => e.preventDefault()} onClick={() => command.run(ctx)}>
+                <button
+                  key={id}
+                  type="button"
+                  disabled={!available(command, ctx)}
+                  title={command.keys ? `${command.label} (${command.keys})` : command.label}
+                  onMouseDown={(e) => e.preventDefault()}
+                  onClick={() => command.run(ctx)}
+                >
                   {command.label}
                 </button>
               );
@@ -572,7 +650,9 @@ export function LdEditor({
         onVisibleChange={onVisibleChange}
         debug={debugging?.marks}
       />
-      {networksOf(body).length === 0 ? <p className="ld-empty-hint">This POU has no networks yet: press Ctrl+Enter or C to start a rung.</p> : null}
+      {networksOf(body).length === 0 ? (
+        <p className="ld-empty-hint">This POU has no networks yet: press Ctrl+Enter or C to start a rung.</p>
+      ) : null}
       {menu ? <ContextMenu x={menu.x} y={menu.y} ctx={ctx} extra={extraItems()} onClose={() => setMenu(null)} /> : null}
       {valuePrompt && onlineActions ? (
         <OperandValuePrompt
@@ -608,7 +688,11 @@ const OTHER_KEYS: [string, string][] = [
 ];
 
 function ShortcutHelp({ extra, onClose }: { extra: readonly [string, string][]; onClose(): void }) {
-  const rows: [string, string][] = [...COMMANDS.filter((c) => c.keys).map((c): [string, string] => [c.keys!, c.label]), ...OTHER_KEYS, ...extra];
+  const rows: [string, string][] = [
+    ...COMMANDS.filter((c) => c.keys).map((c): [string, string] => [c.keys!, c.label]),
+    ...OTHER_KEYS,
+    ...extra,
+  ];
   return (
     <div className="ld-help" role="dialog" aria-label="Keyboard shortcuts">
       <table>

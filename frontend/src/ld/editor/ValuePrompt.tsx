@@ -28,7 +28,15 @@ export function ValuePrompt({ title, onSubmit, onCancel }: ValuePromptProps) {
       >
         <h2>{title}</h2>
         <label>
-          Value <input aria-label="Value" autoFocus value={text} onChange={(e) => setText(e.target.value)} spellCheck={false} placeholder="TRUE, 42, T#5s" />
+          Value{" "}
+          <input
+            aria-label="Value"
+            autoFocus
+            value={text}
+            onChange={(e) => setText(e.target.value)}
+            spellCheck={false}
+            placeholder="TRUE, 42, T#5s"
+          />
         </label>
         <div className="dialog-buttons">
           <button type="submit" disabled={!text.trim()}>
@@ -50,7 +58,15 @@ export interface ValueRequest {
 }
 
 /** The prompt for `request`, sending the value through `commands`; `onDone` runs after OK or Cancel. */
-export function OperandValuePrompt({ request, commands, onDone }: { request: ValueRequest; commands: Pick<LdOnlineActions, "write" | "force">; onDone(): void }) {
+export function OperandValuePrompt({
+  request,
+  commands,
+  onDone,
+}: {
+  request: ValueRequest;
+  commands: Pick<LdOnlineActions, "write" | "force">;
+  onDone(): void;
+}) {
   return (
     <ValuePrompt
       title={`${request.action === "write" ? "Write" : "Force"} ${request.operand}`}

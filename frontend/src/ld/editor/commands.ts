@@ -76,7 +76,11 @@ export function selectedNetwork(ctx: Pick<CommandContext, "body" | "selection">)
 }
 
 /** Inserts next to the selection (a place, elements or a network); an empty POU gets a network first. */
-export function insert(ctx: Pick<CommandContext, "body" | "selection">, spec: ElementSpec, side: "before" | "after"): EditResult {
+export function insert(
+  ctx: Pick<CommandContext, "body" | "selection">,
+  spec: ElementSpec,
+  side: "before" | "after",
+): EditResult {
   const s = ctx.selection;
   if (!s && networksOf(ctx.body).length === 0) {
     const added = ops.addNetwork(ctx.body, 0);
@@ -89,7 +93,13 @@ export function insert(ctx: Pick<CommandContext, "body" | "selection">, spec: El
   return ops.insertNear(ctx.body, { element: anchor, side }, spec);
 }
 
-const insertCommand = (id: string, label: string, keys: string, spec: () => ElementSpec, side: "before" | "after" = "after"): Command => ({
+const insertCommand = (
+  id: string,
+  label: string,
+  keys: string,
+  spec: () => ElementSpec,
+  side: "before" | "after" = "after",
+): Command => ({
   id,
   label,
   group: "insert",
@@ -99,8 +109,20 @@ const insertCommand = (id: string, label: string, keys: string, spec: () => Elem
   run: (ctx) => ctx.apply(insert(ctx, spec(), side), "edit"),
 });
 
-const CONTACT_LABELS: Record<ContactMode, string> = { no: "Normally open", nc: "Normally closed", p: "Rising edge (P)", n: "Falling edge (N)" };
-const COIL_LABELS: Record<CoilMode, string> = { normal: "Coil", negated: "Negated coil", set: "Set coil (S)", reset: "Reset coil (R)", p: "Rising edge coil (P)", n: "Falling edge coil (N)" };
+const CONTACT_LABELS: Record<ContactMode, string> = {
+  no: "Normally open",
+  nc: "Normally closed",
+  p: "Rising edge (P)",
+  n: "Falling edge (N)",
+};
+const COIL_LABELS: Record<CoilMode, string> = {
+  normal: "Coil",
+  negated: "Negated coil",
+  set: "Set coil (S)",
+  reset: "Reset coil (R)",
+  p: "Rising edge coil (P)",
+  n: "Falling edge coil (N)",
+};
 
 const modeCommands: Command[] = [
   ...(Object.keys(CONTACT_LABELS) as ContactMode[]).map((mode, i): Command => ({
@@ -202,7 +224,9 @@ export const COMMANDS: Command[] = [
     enabled: (ctx) => ctx.selection?.kind === "elements" || ctx.selection?.kind === "network",
     run: (ctx) => {
       const s = ctx.selection!;
-      ctx.apply(s.kind === "network" ? ops.deleteNetworks(ctx.body, [s.id]) : ops.deleteElements(ctx.body, selectedIds(s)));
+      ctx.apply(
+        s.kind === "network" ? ops.deleteNetworks(ctx.body, [s.id]) : ops.deleteElements(ctx.body, selectedIds(s)),
+      );
     },
   },
   ...modeCommands,
@@ -332,7 +356,8 @@ export const COMMANDS: Command[] = [
 ];
 
 /** Whether a command may run now (edits are off while read-only). */
-export const available = (command: Command, ctx: CommandContext): boolean => (!command.edits || !ctx.readOnly) && command.enabled(ctx);
+export const available = (command: Command, ctx: CommandContext): boolean =>
+  (!command.edits || !ctx.readOnly) && command.enabled(ctx);
 
 /** The command a key press means in this context, if any. */
 export function commandForKey(event: KeyPress, ctx: CommandContext): Command | undefined {

@@ -37,7 +37,8 @@ const FAMILY_DEFAULT: Record<string, string> = {
 export const concrete = (type: string): string => FAMILY_DEFAULT[type.toUpperCase()] ?? type;
 
 /** Names of `symbols`, upper case (IEC names ignore case). */
-export const symbolNames = (symbols: readonly SymbolInfo[]): Set<string> => new Set(symbols.map((s) => s.name.toUpperCase()));
+export const symbolNames = (symbols: readonly SymbolInfo[]): Set<string> =>
+  new Set(symbols.map((s) => s.name.toUpperCase()));
 
 /** The operand when it is a plain identifier no symbol declares (literals, paths, addresses are not offered). */
 export function undeclared(text: string, known: ReadonlySet<string>): string | null {
@@ -70,7 +71,9 @@ export function guessType(
       if (!entry || (field.kind !== "input" && field.kind !== "output")) return null;
       if (field.kind === "output" && field.pin === RESULT_PIN && entry.return_type) return concrete(entry.return_type);
       const pins = field.kind === "input" ? [...entry.inputs, ...entry.in_outs] : entry.outputs;
-      const pin = pins.find((p) => p.name === field.pin) ?? (entry.extensible && field.kind === "input" ? entry.inputs[entry.inputs.length - 1] : undefined);
+      const pin =
+        pins.find((p) => p.name === field.pin) ??
+        (entry.extensible && field.kind === "input" ? entry.inputs[entry.inputs.length - 1] : undefined);
       return pin ? concrete(pin.type) : null;
     }
     default:

@@ -17,7 +17,8 @@ function walkKeys(body: LdBody, from: Selection | null, keys: Direction[]): (Sel
   }
   return out;
 }
-const idsOf = (list: (Selection | null)[]) => list.map((s) => (s?.kind === "elements" ? s.ids[0] : s?.kind === "network" ? `#${s.id}` : null));
+const idsOf = (list: (Selection | null)[]) =>
+  list.map((s) => (s?.kind === "elements" ? s.ids[0] : s?.kind === "network" ? `#${s.id}` : null));
 
 describe("arrow keys", () => {
   it("starts at the first element of the first rung", () => {
@@ -25,15 +26,30 @@ describe("arrow keys", () => {
   });
 
   it("moves right through a parallel's first branch and out after it", () => {
-    expect(idsOf(walkKeys(motorMain, el("start_or_motor"), ["right", "right", "right", "right"]))).toEqual(["start", "stop", "motor", "motor"]);
+    expect(idsOf(walkKeys(motorMain, el("start_or_motor"), ["right", "right", "right", "right"]))).toEqual([
+      "start",
+      "stop",
+      "motor",
+      "motor",
+    ]);
   });
 
   it("moves left to the end of a parallel's first branch, out to the parallel, then to the network", () => {
-    expect(idsOf(walkKeys(motorMain, el("stop"), ["left", "left", "left", "left"]))).toEqual(["start", "start_or_motor", "#seal_in", "#seal_in"]);
+    expect(idsOf(walkKeys(motorMain, el("stop"), ["left", "left", "left", "left"]))).toEqual([
+      "start",
+      "start_or_motor",
+      "#seal_in",
+      "#seal_in",
+    ]);
   });
 
   it("moves down to the lower branch and on to the nearest element of the next network", () => {
-    expect(idsOf(walkKeys(motorMain, el("start"), ["down", "down", "up", "up"]))).toEqual(["seal", "motor_on", "seal", "start"]);
+    expect(idsOf(walkKeys(motorMain, el("start"), ["down", "down", "up", "up"]))).toEqual([
+      "seal",
+      "motor_on",
+      "seal",
+      "start",
+    ]);
   });
 
   it("goes from a box input series to the box and into the next network's rung", () => {
@@ -42,7 +58,10 @@ describe("arrow keys", () => {
   });
 
   it("steps from a network header into its rung, and between headers", () => {
-    expect(idsOf(walkKeys(motorMain, { kind: "network", id: "run_timer" }, ["down", "right"]))).toEqual(["#count_starts", "start_edge"]);
+    expect(idsOf(walkKeys(motorMain, { kind: "network", id: "run_timer" }, ["down", "right"]))).toEqual([
+      "#count_starts",
+      "start_edge",
+    ]);
     const empty = bodyOf(net("a", c("x")), net("b"));
     expect(idsOf(walkKeys(empty, el("x"), ["down", "right", "up"]))).toEqual(["#b", "#b", "#a"]);
   });

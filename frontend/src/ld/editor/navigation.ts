@@ -7,7 +7,8 @@ import type { Selection } from "../view/types";
 
 export type Direction = "left" | "right" | "up" | "down";
 
-const owner = (ref: SeriesRef): string | undefined => (ref.kind === "branch" ? ref.parallel : ref.kind === "pin" ? ref.box : undefined);
+const owner = (ref: SeriesRef): string | undefined =>
+  ref.kind === "branch" ? ref.parallel : ref.kind === "pin" ? ref.box : undefined;
 
 /** The element right of `id`: first of a parallel's first branch, the next one, or after the parallel it ends. */
 function rightOf(body: LdBody, at: Location): string | undefined {
@@ -37,7 +38,9 @@ function leftOf(body: LdBody, at: Location): string | undefined {
 
 function placedById(layout: LdLayout): Map<string, { placed: PlacedElement; top: number; index: number }> {
   const map = new Map<string, { placed: PlacedElement; top: number; index: number }>();
-  layout.networks.forEach((n, index) => n.elements.forEach((placed) => map.set(placed.id, { placed, top: n.top, index })));
+  layout.networks.forEach((n, index) =>
+    n.elements.forEach((placed) => map.set(placed.id, { placed, top: n.top, index })),
+  );
   return map;
 }
 
@@ -54,20 +57,33 @@ function nearestIn(layout: LdLayout, index: number, x: number, fromBelow: boolea
   return { kind: "elements", ids: [best.id] };
 }
 
-function vertical(layout: LdLayout, from: { placed: PlacedElement; index: number }, down: boolean): Selection | undefined {
+function vertical(
+  layout: LdLayout,
+  from: { placed: PlacedElement; index: number },
+  down: boolean,
+): Selection | undefined {
   const cx = from.placed.x + from.placed.width / 2;
   const n = layout.networks[from.index]!;
-  const rows = n.elements.filter((e) => e.element.type !== "parallel" && (down ? e.lineY > from.placed.lineY : e.lineY < from.placed.lineY));
+  const rows = n.elements.filter(
+    (e) => e.element.type !== "parallel" && (down ? e.lineY > from.placed.lineY : e.lineY < from.placed.lineY),
+  );
   if (rows.length) {
     const row = down ? Math.min(...rows.map((e) => e.lineY)) : Math.max(...rows.map((e) => e.lineY));
-    const best = rows.filter((e) => e.lineY === row).reduce((a, b) => (Math.abs(a.x + a.width / 2 - cx) <= Math.abs(b.x + b.width / 2 - cx) ? a : b));
+    const best = rows
+      .filter((e) => e.lineY === row)
+      .reduce((a, b) => (Math.abs(a.x + a.width / 2 - cx) <= Math.abs(b.x + b.width / 2 - cx) ? a : b));
     return { kind: "elements", ids: [best.id] };
   }
   return nearestIn(layout, from.index + (down ? 1 : -1), cx, !down);
 }
 
 /** The selection after an arrow key, or the same selection when there is nowhere to go. */
-export function navigate(body: LdBody, layout: LdLayout, selection: Selection | null, direction: Direction): Selection | null {
+export function navigate(
+  body: LdBody,
+  layout: LdLayout,
+  selection: Selection | null,
+  direction: Direction,
+): Selection | null {
   const networks = networksOf(body);
   if (!selection) {
     const first = networks[0];

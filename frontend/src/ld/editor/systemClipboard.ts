@@ -19,7 +19,8 @@ export interface LastClip {
   text: string | null;
 }
 
-const inField = (event: ClipboardEvent<HTMLElement>) => (event.target as HTMLElement).closest("input, textarea") !== null;
+const inField = (event: ClipboardEvent<HTMLElement>) =>
+  (event.target as HTMLElement).closest("input, textarea") !== null;
 
 export function clipboardActions(editor: DiagramClipboard, last: LastClip) {
   const copyWith = (cut: boolean, write: (text: string) => void) => {
@@ -48,7 +49,11 @@ export function clipboardActions(editor: DiagramClipboard, last: LastClip) {
     paste() {
       const read = navigator.clipboard?.readText?.();
       if (!read) editor.paste(last.text);
-      else read.then((text) => editor.paste(editor.isClip(text) ? text : last.text), () => editor.paste(last.text));
+      else
+        read.then(
+          (text) => editor.paste(editor.isClip(text) ? text : last.text),
+          () => editor.paste(last.text),
+        );
     },
   };
 }

@@ -32,7 +32,10 @@ describe("LdDiagram rendering", () => {
     expect(all(".ld-branch")).toHaveLength(2);
     expect(one('[data-id="stop"]').classList.contains("ld-mode-nc")).toBe(true);
     expect(one('[data-id="start_edge"] .ld-mark').textContent).toBe("P");
-    expect(texts(all('[data-id="start_or_motor"] ~ [data-id] .ld-operand text')).slice(0, 2)).toEqual(["Start", "Motor"]);
+    expect(texts(all('[data-id="start_or_motor"] ~ [data-id] .ld-operand text')).slice(0, 2)).toEqual([
+      "Start",
+      "Motor",
+    ]);
     const ton = one('[data-id="ton"]');
     expect(ton.querySelector(".ld-title")?.textContent).toBe("TON");
     expect(ton.querySelector('[data-field="instance"]')?.textContent).toBe("RunTimer");
@@ -45,7 +48,10 @@ describe("LdDiagram rendering", () => {
 
   it("draws coil modes, compare contacts, jumps, returns and network labels", () => {
     const body = bodyOf(
-      { ...net("n1", { type: "compare", id: "cmp", op: "GE", left: "Level", right: "100" }, q("s", "Alarm", "set")), label: "Check" },
+      {
+        ...net("n1", { type: "compare", id: "cmp", op: "GE", left: "Level", right: "100" }, q("s", "Alarm", "set")),
+        label: "Check",
+      },
       net("n2", c("a"), { type: "jump", id: "j", target: "Check" }),
       net("n3", { type: "return", id: "r" }),
     );
@@ -72,10 +78,23 @@ describe("LdDiagram rendering", () => {
   });
 
   it("highlights the selected elements, place or network", () => {
-    expect(draw(motorMain, { selection: { kind: "elements", ids: ["stop", "motor"] } }).all(".ld-selected").map((e) => e.getAttribute("data-id"))).toEqual(["stop", "motor"]);
-    const place = draw(motorMain, { selection: { kind: "place", place: { series: { kind: "branch", parallel: "start_or_motor", branch: 1 }, index: 1 } } });
+    expect(
+      draw(motorMain, { selection: { kind: "elements", ids: ["stop", "motor"] } })
+        .all(".ld-selected")
+        .map((e) => e.getAttribute("data-id")),
+    ).toEqual(["stop", "motor"]);
+    const place = draw(motorMain, {
+      selection: {
+        kind: "place",
+        place: { series: { kind: "branch", parallel: "start_or_motor", branch: 1 }, index: 1 },
+      },
+    });
     expect(place.all(".ld-slot.ld-selected")).toHaveLength(1);
-    expect(draw(motorMain, { selection: { kind: "network", id: "lamp" } }).all("svg.ld-selected").map((e) => e.getAttribute("data-network"))).toEqual(["lamp"]);
+    expect(
+      draw(motorMain, { selection: { kind: "network", id: "lamp" } })
+        .all("svg.ld-selected")
+        .map((e) => e.getAttribute("data-network")),
+    ).toEqual(["lamp"]);
   });
 
   it("colours power flow, dims elements not executed, marks forced variables and shows values", () => {
@@ -105,7 +124,11 @@ describe("LdDiagram rendering", () => {
     expect(one('[data-id="add"] [data-field="input:IN2"]').classList.contains("ld-operand-empty")).toBe(true);
     expect(one('[data-id="add"] [data-field="output:OUT"]').classList.contains("ld-operand-unset")).toBe(true);
     const et = one('[data-id="ton"] [data-field="output:ET"]');
-    expect([et.classList.contains("ld-operand-unset"), et.classList.contains("ld-operand-empty"), et.textContent]).toEqual([true, false, "???"]);
+    expect([
+      et.classList.contains("ld-operand-unset"),
+      et.classList.contains("ld-operand-empty"),
+      et.textContent,
+    ]).toEqual([true, false, "???"]);
   });
 
   it("reports clicks on elements, operands, places and headers", () => {
@@ -123,7 +146,11 @@ describe("LdDiagram rendering", () => {
 });
 
 describe("virtualisation", () => {
-  const big = bodyOf(...Array.from({ length: 1000 }, (_, i) => net(`n${i}`, par(`p${i}`, [c(`a${i}`)], [c(`b${i}`)]), c(`d${i}`), q(`m${i}`))));
+  const big = bodyOf(
+    ...Array.from({ length: 1000 }, (_, i) =>
+      net(`n${i}`, par(`p${i}`, [c(`a${i}`)], [c(`b${i}`)]), c(`d${i}`), q(`m${i}`)),
+    ),
+  );
 
   // The 1 s target is the browser's; jsdom with the other test files in parallel gets twice that.
   it("opens a 1,000-network POU quickly, rendering only what is in view", () => {
@@ -146,7 +173,15 @@ describe("virtualisation", () => {
     const ids = all("svg.ld-network").map((e) => e.getAttribute("data-network"));
     expect(ids).toContain("n500");
     expect(ids).not.toContain("n0");
-    rerender(<LdDiagram body={big} layout={layout} selection={{ kind: "network", id: "n900" }} reveal="n900" fallbackHeight={800} />);
+    rerender(
+      <LdDiagram
+        body={big}
+        layout={layout}
+        selection={{ kind: "network", id: "n900" }}
+        reveal="n900"
+        fallbackHeight={800}
+      />,
+    );
     expect(all("svg.ld-network").map((e) => e.getAttribute("data-network"))).toContain("n900");
     expect(container.querySelector('[data-network="n900"]')?.classList.contains("ld-selected")).toBe(true);
   });

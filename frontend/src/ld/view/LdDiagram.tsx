@@ -66,7 +66,20 @@ function selectionNetwork(body: LdBody, selection: Selection | null): string | n
   return first ? (locate(body, first)?.network ?? null) : null;
 }
 
-export function LdDiagram({ body, layout, selection, diagnostics = NO_DIAGNOSTICS, online, dropping = false, handlers = NO_HANDLERS, reveal, fallbackHeight = 900, overlay, onVisibleChange, debug }: LdDiagramProps) {
+export function LdDiagram({
+  body,
+  layout,
+  selection,
+  diagnostics = NO_DIAGNOSTICS,
+  online,
+  dropping = false,
+  handlers = NO_HANDLERS,
+  reveal,
+  fallbackHeight = 900,
+  overlay,
+  onVisibleChange,
+  debug,
+}: LdDiagramProps) {
   const scroller = useRef<HTMLDivElement>(null);
   const [viewport, setViewport] = useState({ top: 0, height: fallbackHeight });
 
@@ -88,7 +101,8 @@ export function LdDiagram({ body, layout, selection, diagnostics = NO_DIAGNOSTIC
     if (!el || !target) return;
     const height = el.clientHeight || fallbackHeight;
     if (target.top < el.scrollTop) el.scrollTop = target.top;
-    else if (target.top + target.height > el.scrollTop + height) el.scrollTop = Math.max(0, target.top + target.height - height);
+    else if (target.top + target.height > el.scrollTop + height)
+      el.scrollTop = Math.max(0, target.top + target.height - height);
     setViewport({ top: el.scrollTop, height });
   };
   useEffect(() => scrollTo(reveal), [reveal, layout, fallbackHeight]);
@@ -109,7 +123,13 @@ export function LdDiagram({ body, layout, selection, diagnostics = NO_DIAGNOSTIC
     onVisibleChange?.(shownKey ? shownKey.split("\n") : []);
   }, [shownKey, onVisibleChange]);
   return (
-    <div className="ld-scroller" ref={scroller} onScroll={(e) => setViewport({ top: e.currentTarget.scrollTop, height: e.currentTarget.clientHeight || fallbackHeight })}>
+    <div
+      className="ld-scroller"
+      ref={scroller}
+      onScroll={(e) =>
+        setViewport({ top: e.currentTarget.scrollTop, height: e.currentTarget.clientHeight || fallbackHeight })
+      }
+    >
       <div className="ld-canvas" style={{ height: layout.height, width: layout.width }}>
         {shown.map((n) => (
           <div key={n.network.id} className="ld-network-slot" style={{ top: n.top, height: n.height }}>

@@ -33,13 +33,40 @@ const samePlace = (a: Place, b: Place) => a.index === b.index && sameSeries(a.se
 
 function Wire({ wire, online }: { wire: LaidWire; online?: OnlineView }) {
   const dimmed = wire.power !== null && online?.executed?.[wire.power] === false ? " ld-not-executed" : "";
-  return <line className={`ld-${wire.kind}${powerClass(online, wire.power)}${dimmed}`} x1={wire.x1} y1={wire.y1} x2={wire.x2} y2={wire.y2} />;
+  return (
+    <line
+      className={`ld-${wire.kind}${powerClass(online, wire.power)}${dimmed}`}
+      x1={wire.x1}
+      y1={wire.y1}
+      x2={wire.x2}
+      y2={wire.y2}
+    />
+  );
 }
 
 /** A breakpoint: a red dot, hollow when disabled. */
-function BreakpointDot({ x, y, r, enabled, label }: { x: number; y: number; r: number; enabled: boolean; label: string }) {
+function BreakpointDot({
+  x,
+  y,
+  r,
+  enabled,
+  label,
+}: {
+  x: number;
+  y: number;
+  r: number;
+  enabled: boolean;
+  label: string;
+}) {
   return (
-    <circle className={`ld-breakpoint${enabled ? "" : " ld-breakpoint-disabled"}`} cx={x} cy={y} r={r} role="img" aria-label={`${label}${enabled ? "" : " (disabled)"}`}>
+    <circle
+      className={`ld-breakpoint${enabled ? "" : " ld-breakpoint-disabled"}`}
+      cx={x}
+      cy={y}
+      r={r}
+      role="img"
+      aria-label={`${label}${enabled ? "" : " (disabled)"}`}
+    >
       <title>{`${label}${enabled ? "" : " (disabled)"}`}</title>
     </circle>
   );
@@ -78,10 +105,27 @@ function Element({ placed, selected, breakpoint, halted, problems, online, handl
       onContextMenu={handlers.onContextMenu && ((e) => handlers.onContextMenu!(target, e))}
     >
       <rect className="ld-hit" x={placed.x} y={placed.y} width={placed.width} height={placed.height} />
-      {halted ? <rect className="ld-halt-frame" x={placed.x - 2} y={placed.y - 2} width={placed.width + 4} height={placed.height + 4} rx={4} /> : null}
+      {halted ? (
+        <rect
+          className="ld-halt-frame"
+          x={placed.x - 2}
+          y={placed.y - 2}
+          width={placed.width + 4}
+          height={placed.height + 4}
+          rx={4}
+        />
+      ) : null}
       {Shape ? <Shape placed={placed} online={online} onOperand={handlers.onOperand} /> : null}
       {problems.length ? <Marker x={placed.x + placed.width - 6} y={placed.y + 8} problems={problems} /> : null}
-      {breakpoint !== undefined ? <BreakpointDot x={placed.x + 5} y={placed.y + 5} r={4} enabled={breakpoint} label={`Breakpoint on element ${placed.id}`} /> : null}
+      {breakpoint !== undefined ? (
+        <BreakpointDot
+          x={placed.x + 5}
+          y={placed.y + 5}
+          r={4}
+          enabled={breakpoint}
+          label={`Breakpoint on element ${placed.id}`}
+        />
+      ) : null}
     </g>
   );
 }
@@ -100,7 +144,16 @@ function Marker({ x, y, problems }: { x: number; y: number; problems: readonly D
   );
 }
 
-function NetworkViewImpl({ layout, width, selection, diagnostics, online, dropping, handlers, debug }: NetworkViewProps) {
+function NetworkViewImpl({
+  layout,
+  width,
+  selection,
+  diagnostics,
+  online,
+  dropping,
+  handlers,
+  debug,
+}: NetworkViewProps) {
   const { network } = layout;
   const networkTarget: Target = { kind: "network", id: network.id };
   const selectedIds = new Set(selection?.kind === "elements" ? selection.ids : []);
@@ -114,7 +167,8 @@ function NetworkViewImpl({ layout, width, selection, diagnostics, online, droppi
   for (const [id, list] of byElement) if (!known.has(id)) own.push(...list);
   const networkSelected = selection?.kind === "network";
   const executed = online?.executed?.[network.id] !== false;
-  const onNetwork = (handler?: (t: Target, e: MouseEvent) => void) => handler && ((e: MouseEvent) => handler(networkTarget, e));
+  const onNetwork = (handler?: (t: Target, e: MouseEvent) => void) =>
+    handler && ((e: MouseEvent) => handler(networkTarget, e));
   const breakpoint = debug?.networks?.[network.id];
   const halted = debug?.halted?.network === network.id ? debug.halted : null;
   const number = layout.index + 1;
@@ -127,7 +181,12 @@ function NetworkViewImpl({ layout, width, selection, diagnostics, online, droppi
       role="group"
       aria-label={`Network ${layout.index + 1}${network.label ? ` ${network.label}` : ""}`}
     >
-      <g className="ld-header" onMouseDown={onNetwork(handlers.onPointerDown)} onContextMenu={onNetwork(handlers.onContextMenu)} onDoubleClick={onNetwork(handlers.onDoubleClick)}>
+      <g
+        className="ld-header"
+        onMouseDown={onNetwork(handlers.onPointerDown)}
+        onContextMenu={onNetwork(handlers.onContextMenu)}
+        onDoubleClick={onNetwork(handlers.onDoubleClick)}
+      >
         <rect className="ld-header-bg" x={0} y={0} width={width} height={layout.rungTop - 4} />
         <g
           className={`ld-number-hit${handlers.onNetworkNumber ? " ld-clickable" : ""}`}
@@ -136,7 +195,9 @@ function NetworkViewImpl({ layout, width, selection, diagnostics, online, droppi
           onClick={handlers.onNetworkNumber && ((e) => handlers.onNetworkNumber!(network.id, e))}
         >
           <rect className="ld-number-bg" x={0} y={0} width={layout.leftRailX - 2} height={22} />
-          {breakpoint !== undefined ? <BreakpointDot x={8} y={12} r={5} enabled={breakpoint} label={`Breakpoint on network ${number}`} /> : null}
+          {breakpoint !== undefined ? (
+            <BreakpointDot x={8} y={12} r={5} enabled={breakpoint} label={`Breakpoint on network ${number}`} />
+          ) : null}
           <text className="ld-number" x={layout.leftRailX - 4} y={16} textAnchor="end">
             {number}
           </text>
@@ -153,8 +214,20 @@ function NetworkViewImpl({ layout, width, selection, diagnostics, online, droppi
         ) : null}
         {own.length ? <Marker x={layout.rightRailX - 10} y={12} problems={own} /> : null}
       </g>
-      <line className={`ld-rail${online?.power ? " ld-on" : ""}`} x1={layout.leftRailX} y1={layout.rungTop - 2} x2={layout.leftRailX} y2={layout.rungBottom + 2} />
-      <line className="ld-rail ld-rail-right" x1={layout.rightRailX} y1={layout.rungTop - 2} x2={layout.rightRailX} y2={layout.rungBottom + 2} />
+      <line
+        className={`ld-rail${online?.power ? " ld-on" : ""}`}
+        x1={layout.leftRailX}
+        y1={layout.rungTop - 2}
+        x2={layout.leftRailX}
+        y2={layout.rungBottom + 2}
+      />
+      <line
+        className="ld-rail ld-rail-right"
+        x1={layout.rightRailX}
+        y1={layout.rungTop - 2}
+        x2={layout.rightRailX}
+        y2={layout.rungBottom + 2}
+      />
       {layout.wires.map((wire, i) => (
         <Wire key={i} wire={wire} online={online} />
       ))}

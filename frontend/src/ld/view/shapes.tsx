@@ -30,25 +30,44 @@ interface OperandProps {
 }
 
 /** An operand text: click to edit; shows "???" when empty, a forced marker and a non-BOOL value. */
-export function Operand({ id, field, text, x, y, width, anchor = "middle", online, onOperand, optional = false }: OperandProps) {
+export function Operand({
+  id,
+  field,
+  text,
+  x,
+  y,
+  width,
+  anchor = "middle",
+  online,
+  onOperand,
+  optional = false,
+}: OperandProps) {
   const key = text.toUpperCase();
   const forced = online?.forced?.has(key) ?? false;
   const value = online?.values?.[key];
   const shown = text ? fit(text, width) : "???";
-  const valueX = anchor === "end" ? x - textWidth(shown) - 4 : anchor === "middle" ? x + textWidth(shown) / 2 + 4 : x + textWidth(shown) + 4;
+  const valueX =
+    anchor === "end"
+      ? x - textWidth(shown) - 4
+      : anchor === "middle"
+        ? x + textWidth(shown) / 2 + 4
+        : x + textWidth(shown) + 4;
   return (
-    <g className={`ld-operand${text ? "" : optional ? " ld-operand-unset" : " ld-operand-empty"}${forced ? " ld-forced" : ""}`} data-field={field.kind === "input" || field.kind === "output" ? `${field.kind}:${field.pin}` : field.kind}>
-      <text
-        x={x}
-        y={y}
-        textAnchor={anchor}
-        onClick={onOperand ? (event) => onOperand(id, field, event) : undefined}
-      >
+    <g
+      className={`ld-operand${text ? "" : optional ? " ld-operand-unset" : " ld-operand-empty"}${forced ? " ld-forced" : ""}`}
+      data-field={field.kind === "input" || field.kind === "output" ? `${field.kind}:${field.pin}` : field.kind}
+    >
+      <text x={x} y={y} textAnchor={anchor} onClick={onOperand ? (event) => onOperand(id, field, event) : undefined}>
         {text && shown !== text ? <title>{text}</title> : null}
         {shown}
       </text>
       {forced ? (
-        <text className="ld-forced-mark" x={anchor === "end" ? x + 4 : x - (anchor === "middle" ? textWidth(shown) / 2 : 0) - 4} y={y} textAnchor="end">
+        <text
+          className="ld-forced-mark"
+          x={anchor === "end" ? x + 4 : x - (anchor === "middle" ? textWidth(shown) / 2 : 0) - 4}
+          y={y}
+          textAnchor="end"
+        >
           F
         </text>
       ) : null}
@@ -87,13 +106,24 @@ export function ContactShape({ placed: p, online, onOperand }: ShapeProps) {
       {leads(p, 8)}
       <line className="ld-symbol" x1={cx - 8} y1={p.lineY - 12} x2={cx - 8} y2={p.lineY + 12} />
       <line className="ld-symbol" x1={cx + 8} y1={p.lineY - 12} x2={cx + 8} y2={p.lineY + 12} />
-      {mode === "nc" ? <line className="ld-symbol ld-mark" x1={cx - 6} y1={p.lineY + 10} x2={cx + 6} y2={p.lineY - 10} /> : null}
+      {mode === "nc" ? (
+        <line className="ld-symbol ld-mark" x1={cx - 6} y1={p.lineY + 10} x2={cx + 6} y2={p.lineY - 10} />
+      ) : null}
       {mode === "p" || mode === "n" ? (
         <text className="ld-mark" x={cx} y={p.lineY + 4} textAnchor="middle">
           {CONTACT_MARK[mode]}
         </text>
       ) : null}
-      <Operand id={p.id} field={{ kind: "var" }} text={p.element.var} x={cx} y={p.lineY - 18} width={p.width} online={online} onOperand={onOperand} />
+      <Operand
+        id={p.id}
+        field={{ kind: "var" }}
+        text={p.element.var}
+        x={cx}
+        y={p.lineY - 18}
+        width={p.width}
+        online={online}
+        onOperand={onOperand}
+      />
     </>
   );
 }
@@ -114,7 +144,16 @@ export function CoilShape({ placed: p, online, onOperand }: ShapeProps) {
           {COIL_MARK[mode]}
         </text>
       ) : null}
-      <Operand id={p.id} field={{ kind: "var" }} text={p.element.var} x={cx} y={y - 18} width={p.width} online={online} onOperand={onOperand} />
+      <Operand
+        id={p.id}
+        field={{ kind: "var" }}
+        text={p.element.var}
+        x={cx}
+        y={y - 18}
+        width={p.width}
+        online={online}
+        onOperand={onOperand}
+      />
     </>
   );
 }
@@ -132,8 +171,26 @@ export function CompareShape({ placed: p, online, onOperand }: ShapeProps) {
       <text className="ld-title" x={cx} y={p.y + 20} textAnchor="middle">
         {p.element.op}
       </text>
-      <Operand id={p.id} field={{ kind: "left" }} text={p.element.left} x={cx} y={p.y + 36} width={width - 4} online={online} onOperand={onOperand} />
-      <Operand id={p.id} field={{ kind: "right" }} text={p.element.right} x={cx} y={p.y + 50} width={width - 4} online={online} onOperand={onOperand} />
+      <Operand
+        id={p.id}
+        field={{ kind: "left" }}
+        text={p.element.left}
+        x={cx}
+        y={p.y + 36}
+        width={width - 4}
+        online={online}
+        onOperand={onOperand}
+      />
+      <Operand
+        id={p.id}
+        field={{ kind: "right" }}
+        text={p.element.right}
+        x={cx}
+        y={p.y + 50}
+        width={width - 4}
+        online={online}
+        onOperand={onOperand}
+      />
     </>
   );
 }
@@ -145,8 +202,21 @@ export function JumpShape({ placed: p, onOperand }: ShapeProps) {
   return (
     <>
       <line className="ld-lead" x1={p.x} y1={y} x2={tip} y2={y} />
-      <path className="ld-symbol ld-arrow" d={`M ${tip - 12} ${y - 6} L ${tip - 6} ${y} L ${tip - 12} ${y + 6} M ${tip - 6} ${y - 6} L ${tip} ${y} L ${tip - 6} ${y + 6}`} fill="none" />
-      <Operand id={p.id} field={{ kind: "target" }} text={p.element.target} x={tip + 4} y={y + 4} width={p.width - 30} anchor="start" onOperand={onOperand} />
+      <path
+        className="ld-symbol ld-arrow"
+        d={`M ${tip - 12} ${y - 6} L ${tip - 6} ${y} L ${tip - 12} ${y + 6} M ${tip - 6} ${y - 6} L ${tip} ${y} L ${tip - 6} ${y + 6}`}
+        fill="none"
+      />
+      <Operand
+        id={p.id}
+        field={{ kind: "target" }}
+        text={p.element.target}
+        x={tip + 4}
+        y={y + 4}
+        width={p.width - 30}
+        anchor="start"
+        onOperand={onOperand}
+      />
     </>
   );
 }
@@ -164,19 +234,44 @@ export function ReturnShape({ placed: p }: ShapeProps) {
   );
 }
 
-function Pin({ pin, boxId, instanced, online, onOperand }: { pin: PlacedPin; boxId: string; instanced: boolean; online?: OnlineView; onOperand?: OperandProps["onOperand"] }) {
+function Pin({
+  pin,
+  boxId,
+  instanced,
+  online,
+  onOperand,
+}: {
+  pin: PlacedPin;
+  boxId: string;
+  instanced: boolean;
+  online?: OnlineView;
+  onOperand?: OperandProps["onOperand"];
+}) {
   const inside = pin.side === "in" ? pin.x + 4 : pin.x - 4;
   const outside = pin.side === "in" ? pin.x - 10 : pin.x + 10;
   const field: OperandField = { kind: pin.side === "in" ? "input" : "output", pin: pin.name };
   const text = typeof pin.value === "string" ? pin.value : "";
   return (
     <g className={`ld-pin ld-pin-${pin.side}${pin.power ? " ld-pin-power" : ""}`} data-pin={pin.name}>
-      {!pin.power ? <line className="ld-lead" x1={pin.x} y1={pin.y} x2={pin.side === "in" ? pin.x - 8 : pin.x + 8} y2={pin.y} /> : null}
+      {!pin.power ? (
+        <line className="ld-lead" x1={pin.x} y1={pin.y} x2={pin.side === "in" ? pin.x - 8 : pin.x + 8} y2={pin.y} />
+      ) : null}
       <text className="ld-pin-name" x={inside} y={pin.y + 4} textAnchor={pin.side === "in" ? "start" : "end"}>
         {pin.name}
       </text>
       {!pin.power && !Array.isArray(pin.value) && pin.name ? (
-        <Operand id={boxId} field={field} text={text} x={outside} y={pin.y - 3} width={200} anchor={pin.side === "in" ? "end" : "start"} online={online} onOperand={onOperand} optional={pin.side === "out" || instanced} />
+        <Operand
+          id={boxId}
+          field={field}
+          text={text}
+          x={outside}
+          y={pin.y - 3}
+          width={200}
+          anchor={pin.side === "in" ? "end" : "start"}
+          online={online}
+          onOperand={onOperand}
+          optional={pin.side === "out" || instanced}
+        />
       ) : null}
     </g>
   );
@@ -193,9 +288,27 @@ export function BoxShape({ placed: p, online, onOperand }: ShapeProps) {
         {p.element.call}
       </text>
       {p.instanced ? (
-        <Operand id={p.id} field={{ kind: "instance" }} text={p.element.instance ?? ""} x={cx} y={b.y - 5} width={b.width} online={online} onOperand={onOperand} />
+        <Operand
+          id={p.id}
+          field={{ kind: "instance" }}
+          text={p.element.instance ?? ""}
+          x={cx}
+          y={b.y - 5}
+          width={b.width}
+          online={online}
+          onOperand={onOperand}
+        />
       ) : null}
-      {p.pins?.map((pin) => <Pin key={`${pin.side}:${pin.name}`} pin={pin} boxId={p.id} instanced={!!p.instanced} online={online} onOperand={onOperand} />)}
+      {p.pins?.map((pin) => (
+        <Pin
+          key={`${pin.side}:${pin.name}`}
+          pin={pin}
+          boxId={p.id}
+          instanced={!!p.instanced}
+          online={online}
+          onOperand={onOperand}
+        />
+      ))}
     </>
   );
 }

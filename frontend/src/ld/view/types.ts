@@ -5,9 +5,7 @@ import type { Place } from "../model";
 import type { OperandField } from "../ops";
 
 export type Selection =
-  | { kind: "elements"; ids: string[] }
-  | { kind: "place"; place: Place }
-  | { kind: "network"; id: string };
+  { kind: "elements"; ids: string[] } | { kind: "place"; place: Place } | { kind: "network"; id: string };
 
 /**
  * Online colouring hooks (issue 7 online mode; no server connection yet). `power` is the engine's
@@ -32,7 +30,8 @@ export interface DebugMarks {
 }
 
 /** Something the user can point at in the diagram. */
-export type Target = { kind: "element"; id: string } | { kind: "place"; place: Place } | { kind: "network"; id: string };
+export type Target =
+  { kind: "element"; id: string } | { kind: "place"; place: Place } | { kind: "network"; id: string };
 
 export interface DiagramHandlers {
   onPointerDown?(target: Target, event: MouseEvent): void;
