@@ -290,10 +290,16 @@ class TraceData(BaseModel):
     lost: int = 0
 
 
+#: What an online log entry is about, so the log can be filtered (seed ON-15).
+LogKind = Literal["state", "write", "force", "release", "breakpoint", "watchdog", "fault", "system"]
+
+
 class Log(BaseModel):
-    """An entry of the online log: runtime errors, watchdog trips, forces set and released."""
+    """An entry of the online log (ON-15): run/stop, writes, forces set and released, breakpoint hits,
+    watchdog trips, runtime errors, and notes of the server (``system``: dropped messages, deletion)."""
 
     type: Literal["log"]
+    kind: LogKind = "system"
     level: Literal["info", "warning", "error"]
     message: str
     at: At | None = None

@@ -290,6 +290,7 @@ class SimRunner:
     def _fault_log(self, fault: Fault) -> Log:
         return Log(
             type="log",
+            kind="watchdog" if fault.kind == "watchdog" else "fault",
             level="error",
             message=fault.text(),
             at=at_origin(fault.origin, fault.pou, fault.instance),
@@ -357,6 +358,7 @@ class SimRunner:
                 self._emit(
                     Log(
                         type="log",
+                        kind="state",
                         level="info",
                         scan=self.sim.scan_count,
                         time_ms=self.sim.time_ms,
@@ -450,6 +452,7 @@ class SimRunner:
             self._emit(
                 Log(
                     type="log",
+                    kind="force",
                     level="info",
                     message=f"forced {location.path} := {_text(self.sim.read(path))}",
                     scan=self.sim.scan_count,
@@ -469,6 +472,7 @@ class SimRunner:
             self._emit(
                 Log(
                     type="log",
+                    kind="release",
                     level="info",
                     message=f"released the force on {location.path}",
                     scan=self.sim.scan_count,
@@ -486,6 +490,7 @@ class SimRunner:
                 self._emit(
                     Log(
                         type="log",
+                        kind="release",
                         level="info",
                         message=f"released all forces ({count})",
                         scan=self.sim.scan_count,

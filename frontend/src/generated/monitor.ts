@@ -518,13 +518,15 @@ export interface TraceTriggered {
   time_ms: number;
 }
 /**
- * An entry of the online log: runtime errors, watchdog trips, forces set and released.
+ * An entry of the online log (ON-15): run/stop, writes, forces set and released, breakpoint hits,
+ * watchdog trips, runtime errors, and notes of the server (``system``: dropped messages, deletion).
  *
  * This interface was referenced by `MonitorProtocol`'s JSON-Schema
  * via the `definition` "Log".
  */
 export interface Log {
   at?: At | null;
+  kind?: "state" | "write" | "force" | "release" | "breakpoint" | "watchdog" | "fault" | "system";
   level: "info" | "warning" | "error";
   message: string;
   scan?: number | null;
