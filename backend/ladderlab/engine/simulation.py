@@ -38,7 +38,7 @@ from .codegen.runtime import UNSET, Watchdog
 from .compile import CompiledProgram, compile_program
 from .debug import Debugger, Halt
 from .paths import Location, LocationReader, Resolver, Roots, UnknownPath, coerce_for, leaves, plain
-from .tasks import Schedule, Task, task_table
+from .tasks import DEFAULT_WATCHDOG_S, Schedule, Task, task_table
 
 
 @dataclass
@@ -77,8 +77,9 @@ class Simulation:
         program: ir.Program | CompiledProgram,
         *,
         variant: str | None = None,
-        watchdog_s: float | dict[str, float] = 1.0,
+        watchdog_s: float | dict[str, float] = DEFAULT_WATCHDOG_S,
         wall_clock: Callable[[], float] = time.perf_counter,
+        watchdog_clock: Callable[[], float] = time.thread_time,
     ) -> None:
         if isinstance(program, CompiledProgram):
             if variant is not None and variant != program.variant:
@@ -91,7 +92,7 @@ class Simulation:
         self._context = compiled.generated.context
         self._ns = compiled.namespace()
         self._clock = wall_clock
-        self._watchdog = Watchdog(wall_clock)
+        self._watchdog = Watchdog(watchdog_clock, self._ns["ll_wb"])  # type: ignore[arg-type]
         self._ns["ll_wd"] = self._watchdog.check
         self._tasks: list[Task] = task_table(compiled.program, watchdog_s)
         self._schedule = Schedule(self._tasks)

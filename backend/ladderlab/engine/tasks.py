@@ -25,6 +25,8 @@ from ..model.diagnostics import Diagnostic
 TASK_ERROR = "ENGINE-TASKS"
 _EPSILON_MS = 1e-6
 DEFAULT_INTERVAL_MS = 10
+#: A task's time budget per scan unless configured (CODESYS's default watchdog time).
+DEFAULT_WATCHDOG_S = 0.1
 
 
 @dataclass
@@ -34,7 +36,7 @@ class Task:
     priority: int
     programs: list[str]
     order: int
-    watchdog_s: float = 1.0
+    watchdog_s: float = DEFAULT_WATCHDOG_S
     next_due: float = 0.0
     stopped: bool = False  # after a fault, until reset
 
@@ -78,13 +80,13 @@ def validate_tasks(program: ir.Program) -> list[Diagnostic]:
     return diagnostics
 
 
-def task_table(program: ir.Program, watchdog_s: float | dict[str, float] = 1.0) -> list[Task]:
+def task_table(program: ir.Program, watchdog_s: float | dict[str, float] = DEFAULT_WATCHDOG_S) -> list[Task]:
     """The tasks to schedule (validated program): the configured ones, else one 10 ms task with every PROGRAM."""
     specs = program.tasks or [
         ir.TaskSpec("DEFAULT", DEFAULT_INTERVAL_MS, 0, [n for n, p in program.pous.items() if p.kind == "program"])
     ]
     limits = {k.upper(): v for k, v in watchdog_s.items()} if isinstance(watchdog_s, dict) else {}
-    default = 1.0 if isinstance(watchdog_s, dict) else watchdog_s
+    default = DEFAULT_WATCHDOG_S if isinstance(watchdog_s, dict) else watchdog_s
     tasks = []
     for order, spec in enumerate(specs):
         limit = limits.get(spec.name.upper(), default)
