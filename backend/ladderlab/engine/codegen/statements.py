@@ -364,6 +364,8 @@ class Statements:
     def _defer(self, s: ir.Probe) -> None:
         index = self._record(s)
         self.probes.deferred.append(index)  # type: ignore[union-attr]
+        var: ir.Var = s.value  # type: ignore[assignment]  # deferred.py: a variable of the program, members only
+        self.probes.deferred_paths[index] = ".".join([var.name, *(m.name for m in var.path)])  # type: ignore
         self.reads.append(f"ll_pr[{index}] = {self.x.expr(s.value)}  # {names.comment_text(s.element)}")
         self.src.line(f"# ll_pr[{index}] is read after the scan  # {names.comment_text(s.element)}")
 
