@@ -245,3 +245,24 @@ def test_the_default_budget_is_100_ms_of_the_scans_own_time():
     sim.cycle()
     assert sim.fault.kind == "watchdog" and sim.fault.message == "watchdog: scan exceeded 0.1 s"
     assert 0.1 <= time.thread_time() - start < 1.0
+
+
+def test_a_task_of_the_project_sets_its_own_budget():
+    """Task.watchdog_ms (CODESYS: the task's watchdog time) overrides the default for that task only."""
+    from ladderlab.model import Project, Task
+    from ladderlab.simulation.build import build_project
+
+    loop = "n := 0;\nWHILE n < 30000 DO n := n + 1; END_WHILE;"
+    pous = [
+        {"name": name, "kind": "program", "language": "st", "declarations": "VAR n : INT; END_VAR", "body": loop}
+        for name in ("Tight", "Loose")
+    ]
+    tasks = [
+        Task(name="Strict", programs=["Tight"], watchdog_ms=2),
+        Task(name="Relaxed", programs=["Loose"]),  # the default given below: 30 s
+    ]
+    build = build_project(Project(name="w", pous=pous, tasks=tasks))
+    sim = build.simulation(watchdog_s=30.0, watchdog_clock=_Ticks())  # 1 ms per clock reading
+    sim.cycle()
+    assert [f.task for f in sim.faults] == ["STRICT"] and sim.read("Loose.n") == 30000
+    assert sim.faults[0].message == "watchdog: scan exceeded 0.002 s"
