@@ -161,6 +161,8 @@ class Pacer:
     slower than real time, or the driver stalled) the pacer skips ahead instead
     of racing to catch up, and counts it in ``overruns``. While the simulation
     is halted at a breakpoint nothing runs; afterwards time resumes from there.
+    ``interrupted`` (asked after every scan) makes ``poll`` return at once, keeping
+    the schedule: the driver has something to do between two scans.
     """
 
     def __init__(
@@ -171,10 +173,12 @@ class Pacer:
         max_lag_ms: float = 200.0,
         clock: Callable[[], float] = time.monotonic,
         idle_s: float = 0.05,
+        interrupted: Callable[[], bool] = lambda: False,
     ) -> None:
         if not speed > 0:
             raise ValueError("speed must be positive")
         self.sim, self.speed, self.max_lag_ms, self.clock, self.idle_s = sim, speed, max_lag_ms, clock, idle_s
+        self.interrupted = interrupted
         self.overruns = 0
         self._anchor: tuple[float, float] | None = (
             clock(),
@@ -201,6 +205,8 @@ class Pacer:
             if self.sim.halted:
                 self._anchor = None
                 return self.idle_s
+            if self.interrupted():
+                return 0.0
         return max(0.0, (self.sim.next_scan_time() - now) / 1000.0 / self.speed)
 
     def run(self, seconds: float, sleep: Callable[[float], None] = time.sleep) -> None:
