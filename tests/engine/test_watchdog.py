@@ -266,3 +266,19 @@ def test_a_task_of_the_project_sets_its_own_budget():
     sim.cycle()
     assert [f.task for f in sim.faults] == ["STRICT"] and sim.read("Loose.n") == 30000
     assert sim.faults[0].message == "watchdog: scan exceeded 0.002 s"
+
+
+def test_a_memory_error_in_a_scan_is_an_out_of_memory_fault_at_its_statement():
+    """A simulation's process runs under an address-space limit (simulation/worker.py): running out is a located
+    runtime fault like any other, not an internal error."""
+    from ladderlab.engine.codegen.faults import make_fault
+
+    compiled = Simulation(prog(pou("MAIN", [slot("X", INT)], [assign(v("X", INT), c(1, INT))]))).compiled
+    fault = make_fault(
+        MemoryError(), compiled.generated, compiled.filename, {}, task="T", time_ms=10, scan=0, instance_path=str
+    )
+    assert (fault.kind, fault.code, fault.message) == (
+        "runtime_error",
+        "out_of_memory",
+        "out of memory: the scan needs more memory than allowed",
+    )
