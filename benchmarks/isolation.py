@@ -42,19 +42,9 @@ import httpx  # noqa: E402
 from ladderlab.model import Pou, Project, Task  # noqa: E402
 from ladderlab.simulation.build import build_project  # noqa: E402
 from ladderlab.storage import Workspace  # noqa: E402
+from tests.support import NESTED_LOOPS, NESTED_LOOPS_DECLARATIONS  # noqa: E402
 
 HEAVY_SCAN_MS = 13.0
-NESTED = """IF Go THEN
-    FOR a := 1 TO 255 DO
-        FOR b := 1 TO 255 DO
-            FOR c := 1 TO 255 DO
-                FOR d := 1 TO 255 DO
-                    n := n + 1;
-                END_FOR;
-            END_FOR;
-        END_FOR;
-    END_FOR;
-END_IF;"""
 
 
 def program(name: str, declarations: str, body: str, interval: str = "T#10ms", watchdog_ms: int | None = None):
@@ -82,7 +72,7 @@ def projects(iterations: int) -> list[Project]:
     return [
         program("light", "VAR\n    n : DINT;\nEND_VAR", "n := n + 1;", interval="T#13ms"),
         heavy(iterations),
-        program("loops", "VAR\n    Go : BOOL;\n    a, b, c, d : INT;\n    n : DINT;\nEND_VAR", NESTED),
+        program("loops", NESTED_LOOPS_DECLARATIONS, NESTED_LOOPS),
         program("busy", "VAR\n    n : DINT;\nEND_VAR", "WHILE TRUE DO n := n + 1; END_WHILE;", watchdog_ms=60_000),
     ]
 

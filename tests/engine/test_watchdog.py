@@ -7,6 +7,7 @@ import time
 import pytest
 
 from ladderlab.engine.simulation import Simulation
+from tests.support import NESTED_LOOPS, NESTED_LOOPS_DECLARATIONS
 
 from .irbuild import (
     BOOL,
@@ -30,6 +31,7 @@ from .irbuild import (
     v,
     while_,
 )
+from .test_simulation_st import simulation
 
 
 class _Ticks:
@@ -126,33 +128,8 @@ def test_watchdog_limit_per_task_and_long_finite_loops_pass():
 # ------------------------------------------------------------------ one budget per scan (issue 18, item 4)
 
 
-def _st(text: str, variant: str = "fast", **options) -> Simulation:
-    from ladderlab.simulation.build import build_project
-    from ladderlab.st.project_text import source_to_project
-
-    project, diagnostics = source_to_project(text, "test")
-    assert project is not None, diagnostics
-    build = build_project(project, variant)
-    assert build.compiled is not None, [d.message for d in build.diagnostics]
-    return build.simulation(**options)
-
-
-NESTED = """
-PROGRAM Main
-VAR a, b, c, d : INT; n : DINT; Go : BOOL; END_VAR
-IF Go THEN
-    FOR a := 1 TO 255 DO
-        FOR b := 1 TO 255 DO
-            FOR c := 1 TO 255 DO
-                FOR d := 1 TO 255 DO
-                    n := n + 1;
-                END_FOR;
-            END_FOR;
-        END_FOR;
-    END_FOR;
-END_IF;
-END_PROGRAM
-"""
+NESTED = f"PROGRAM Main\n{NESTED_LOOPS_DECLARATIONS}\n{NESTED_LOOPS}\nEND_PROGRAM\n"
+INNERMOST_LOOP_LINE = NESTED.splitlines().index("                FOR d := 1 TO 255 DO") + 1
 
 
 def test_nested_loops_of_fewer_iterations_than_the_check_interval_count_on_one_budget():
@@ -160,12 +137,12 @@ def test_nested_loops_of_fewer_iterations_than_the_check_interval_count_on_one_b
     so a count that restarted at each loop entry never read the clock. Now every back-edge of the scan
     counts: the clock is read every 256 of them and the task faults at the innermost loop."""
     ticks = _Ticks()
-    sim = _st(NESTED, watchdog_s=0.05, watchdog_clock=ticks)
+    sim = simulation(NESTED, watchdog_s=0.05, watchdog_clock=ticks)
     sim.cycle()  # Go is FALSE: no loop runs, no fault
     assert sim.fault is None
     sim.write("Main.Go", True)
     sim.cycle()
-    assert (sim.fault.kind, sim.fault.pou, sim.fault.origin.line) == ("watchdog", "MAIN", 8)
+    assert (sim.fault.kind, sim.fault.pou, sim.fault.origin.line) == ("watchdog", "MAIN", INNERMOST_LOOP_LINE)
     # 50 readings of 1 ms: the deadline passed after about 50 x 256 innermost iterations
     assert 49 * 255 <= sim.read("Main.n") <= 51 * 256
     assert ticks.readings < 60
@@ -196,7 +173,7 @@ VAR i : INT; n : DINT; inner : L2; END_VAR
 FOR i := 1 TO 255 DO inner(n := n); END_FOR;
 END_PROGRAM
 """
-    sim = _st(text, variant, watchdog_s=0.05, watchdog_clock=_Ticks())
+    sim = simulation(text, variant=variant, watchdog_s=0.05, watchdog_clock=_Ticks())
     sim.cycle()
     assert (sim.fault.kind, sim.fault.pou) == ("watchdog", "L4")
     assert sim.read("Main.n") < 70 * 256
@@ -213,7 +190,7 @@ END_FOR;
 END_PROGRAM
 """
     ticks = _Ticks()
-    sim = _st(text, watchdog_s=10.0, watchdog_clock=ticks)
+    sim = simulation(text, watchdog_s=10.0, watchdog_clock=ticks)
     sim.cycle(3)
     assert sim.fault is None and sim.read("Main.n") == 3 * 255_000
     assert 3 * 990 <= ticks.readings <= 3 * 1010  # one reading per 256 back-edges (and one per task arm)
@@ -239,7 +216,7 @@ def test_the_default_budget_is_100_ms_of_the_scans_own_time():
     from ladderlab.engine.tasks import DEFAULT_WATCHDOG_S
 
     assert DEFAULT_WATCHDOG_S == 0.1
-    sim = _st(NESTED)
+    sim = simulation(NESTED)
     sim.write("Main.Go", True)
     start = time.thread_time()
     sim.cycle()

@@ -20,6 +20,7 @@ from fastapi.testclient import TestClient
 from ladderlab.model import Project, Task
 from ladderlab.simulation.registry import SimulationRegistry, SimulationSettings
 from ladderlab.storage import Workspace
+from tests.support import NESTED_LOOPS, NESTED_LOOPS_DECLARATIONS
 
 from .helpers import detail, st_program
 from .test_simulations_support import (
@@ -37,18 +38,6 @@ from .test_simulations_support import (
 )
 
 __all__ = ["counter", "registry"]  # fixtures used below
-
-NESTED_LOOPS = """IF Go THEN
-    FOR a := 1 TO 255 DO
-        FOR b := 1 TO 255 DO
-            FOR c := 1 TO 255 DO
-                FOR d := 1 TO 255 DO
-                    n := n + 1;
-                END_FOR;
-            END_FOR;
-        END_FOR;
-    END_FOR;
-END_IF;"""
 
 
 def ws_url(sim_id: str) -> str:
@@ -91,8 +80,8 @@ def test_four_nested_loops_of_255_trip_the_default_watchdog(
 ) -> None:
     """Issue 18, item 4: 4e9 iterations per scan ran with no fault, and the simulation could not be stopped."""
     assert registry.settings.watchdog_s == 0.1 == SimulationSettings().watchdog_s
-    declarations = "VAR\n    Go : BOOL;\n    a, b, c, d : INT;\n    n : DINT;\nEND_VAR"
-    sim_id = simulate(client, workspace, Project(name="loops", pous=[st_program("Main", declarations, NESTED_LOOPS)]))
+    program = st_program("Main", NESTED_LOOPS_DECLARATIONS, NESTED_LOOPS)
+    sim_id = simulate(client, workspace, Project(name="loops", pous=[program]))
     with client.websocket_connect(ws_url(sim_id)) as ws:
         recv(ws)
         ws.send_json({"type": "write", "path": "Main.Go", "value": True})
@@ -255,17 +244,23 @@ def test_checks_run_in_build_processes(client: TestClient, registry: SimulationR
 ORPHANS = SimulationSettings(orphan_grace_s=0.4, reap_every_s=0.05, publish_s=0.01, idle_timeout_s=60.0)
 
 
-@pytest.mark.parametrize("settings_registry", [ORPHANS], indirect=True)
-def test_a_simulation_whose_last_client_left_is_stopped_after_the_grace_period(
-    client: TestClient, workspace: Workspace, settings_registry: SimulationRegistry
-) -> None:
-    """Issue 17, item 7: a page reload leaves the simulation running; nobody came back within 0.4 s."""
+def run_and_leave(client: TestClient, workspace: Workspace) -> str:
+    """A counter simulation that its only client started and left (a page reload): its id."""
     workspace.create(counter_project())
     sim_id = client.post("/api/projects/counter/simulations").json()["id"]
     with client.websocket_connect(ws_url(sim_id)) as ws:
         recv(ws)
         ws.send_json({"type": "run"})
         recv_until(ws, of_type("status", state="running"))
+    return sim_id
+
+
+@pytest.mark.parametrize("settings_registry", [ORPHANS], indirect=True)
+def test_a_simulation_whose_last_client_left_is_stopped_after_the_grace_period(
+    client: TestClient, workspace: Workspace, settings_registry: SimulationRegistry
+) -> None:
+    """Issue 17, item 7: a page reload leaves the simulation running; nobody came back within 0.4 s."""
+    sim_id = run_and_leave(client, workspace)
     left = time.monotonic()
     wait_for(lambda: client.get(f"/api/simulations/{sim_id}").json()["state"] == "stopped", timeout=5)
     assert time.monotonic() - left >= 0.4
@@ -281,17 +276,12 @@ def test_a_simulation_whose_last_client_left_is_stopped_after_the_grace_period(
 def test_a_reload_within_the_grace_period_reattaches_to_the_running_simulation(
     client: TestClient, workspace: Workspace, settings_registry: SimulationRegistry
 ) -> None:
-    workspace.create(counter_project())
-    sim_id = client.post("/api/projects/counter/simulations").json()["id"]
-    with client.websocket_connect(ws_url(sim_id)) as ws:
-        recv(ws)
-        ws.send_json({"type": "run"})
-        recv_until(ws, of_type("status", state="running"))
+    sim_id = run_and_leave(client, workspace)
     with client.websocket_connect(ws_url(sim_id)) as ws:  # the reload: same id, at once
         assert recv(ws) == {"type": "status", "state": "running", "at": None}
         first = subscribe(ws, ["Main.Count"])
         time.sleep(0.8)  # twice the grace period, attached
-        later, _ = recv_until(ws, lambda m: m["type"] == "values" and m["scan"] > first["scan"] + 20)
+        recv_until(ws, lambda m: m["type"] == "values" and m["scan"] > first["scan"] + 20)
         assert client.get(f"/api/simulations/{sim_id}").json()["state"] == "running"
 
 
