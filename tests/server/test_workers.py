@@ -9,7 +9,9 @@ benchmarks/isolation.py.
 
 from __future__ import annotations
 
+import multiprocessing
 import os
+import pickle
 import signal
 import time
 from collections.abc import Iterator
@@ -19,6 +21,7 @@ from fastapi.testclient import TestClient
 
 from ladderlab.model import Project, Task
 from ladderlab.simulation.registry import SimulationRegistry, SimulationSettings
+from ladderlab.simulation.supervisor import receive
 from ladderlab.storage import Workspace
 from tests.support import NESTED_LOOPS, NESTED_LOOPS_DECLARATIONS
 
@@ -337,3 +340,26 @@ def test_the_default_settings() -> None:
         30.0,
     )
     assert (settings.log_entries, settings.answer_s) == (10_000, 0.05)
+
+
+def test_the_server_reads_plain_data_only_from_a_worker(
+    client: TestClient, counter: str, registry: SimulationRegistry
+) -> None:
+    """A worker runs a user's program: a message naming a class or function (the way pickle runs code) is
+    refused, its process ended and the simulation faulted; plain data round-trips."""
+    sent, received = multiprocessing.Pipe()
+    message = {"type": "frame", "values": {"MAIN.X": [1, 2.5, None, "s", True]}, "power": {"MAIN": {"c1": False}}}
+    sent.send(message)
+    assert receive(received) == message
+    sent.send({"type": "log", "entry": os.system})
+    with pytest.raises(pickle.UnpicklingError, match=r"plain data only, not posix\.system"):
+        receive(received)
+    handle = entry(registry, counter).handle
+    process = handle.process
+    handle.lost("sent what the server refuses (a test)")
+    wait_for(lambda: process.exitcode is not None)
+    info = client.get(f"/api/simulations/{counter}").json()
+    assert info["state"] == "faulted"
+    assert info["fault"]["message"] == (
+        "the simulation's process sent what the server refuses (a test): reset the simulation to start it again"
+    )

@@ -11,13 +11,14 @@ grows without bound.
 
 from __future__ import annotations
 
+import pickle
 import threading
 from dataclasses import dataclass
 from multiprocessing.connection import Connection
 from multiprocessing.process import BaseProcess
 
 from ..model import Diagnostic, Project
-from .supervisor import kill, start_process
+from .supervisor import kill, receive, start_process
 from .worker import serve_builds
 
 BUILD_LIMIT = "BUILD-LIMIT"
@@ -60,8 +61,8 @@ class BuildPool:
                     f"the check did not finish within {self.timeout_s:g} s (the server's build_timeout_s "
                     "setting): the project is too large, or nested too deeply, to check"
                 )
-            answer = worker.connection.recv()
-        except (EOFError, OSError):
+            answer = receive(worker.connection)
+        except (EOFError, OSError, pickle.UnpicklingError):
             self._discard(worker)
             raise BuildError("the check ended unexpectedly (its process stopped; e.g. it ran out of memory)") from None
         except BaseException:

@@ -193,24 +193,26 @@ class SimulationHandle:
             failure = BuildFailed(message.get("message", "the project does not build"), diagnostics)
             _answer(self._ready, error=failure)  # type: ignore[arg-type]
 
-    def lost(self) -> None:
-        """The process ended (the supervisor's thread): a crash, unless the simulation was being closed."""
-        code = self._process.exitcode if self._process is not None else None
-        if self._process is not None and code is None:
-            self._process.join(0.5)
-            code = self._process.exitcode
+    def lost(self, reason: str | None = None) -> None:
+        """The process ended, or broke the protocol (``reason``; the supervisor's thread): a crash, unless the
+        simulation was being closed."""
+        process, connection = self._process, self._connection
+        if reason is not None and process is not None:  # still running: end it, and do not hear of it again
+            if connection is not None:
+                self.hub.forget(connection)
+            kill(process)
+        code = process.exitcode if process is not None else None
+        if process is not None and code is None:
+            process.join(0.5)
+            code = process.exitcode
+        why = reason or f"ended unexpectedly (exit code {code}; e.g. it ran out of memory)"
         with self._lock:
             building = self._ready if not self._alive and not self._closed else None
         if building is not None and not building.done():
             self._end_process()
-            failure = BuildFailed(f"the build ended unexpectedly (exit code {code}; e.g. it ran out of memory)")
-            _answer(building, error=failure)
+            _answer(building, error=BuildFailed(f"the build {why}"))
             return
-        self._fail(
-            f"the simulation's process ended unexpectedly (exit code {code}; e.g. its memory ran out): "
-            "reset the simulation to start it again",
-            kind="fault",
-        )
+        self._fail(f"the simulation's process {why}: reset the simulation to start it again", kind="fault")
 
     def supervise(self, now: float) -> None:
         """End a process that builds too long, is silent for ``grace_s``, or leaves a command unanswered."""

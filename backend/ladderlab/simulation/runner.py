@@ -157,7 +157,6 @@ class SimRunner:
         self._ctx = sim.compiled.generated.context
         self._cv = threading.Condition()
         self._commands: deque[tuple[str, dict, Reply]] = deque()
-        self._closed = False
         self._running = False
         self._faulted = False
         self._seen_faults = 0
@@ -185,33 +184,19 @@ class SimRunner:
     def submit(self, op: str, args: dict[str, Any], reply: Reply) -> None:
         """Run the command ``op`` between two scans; ``reply`` gets its result (on the engine thread)."""
         with self._cv:
-            if not self._closed:
-                self._commands.append((op, args, reply))
-                self._cv.notify()
-                return
-        reply(None, CommandError("bad_state", "the simulation has been deleted"))
-
-    def close(self) -> None:
-        """End ``serve`` after the command or scan under way; commands not run yet are refused."""
-        with self._cv:
-            self._closed = True
+            self._commands.append((op, args, reply))
             self._cv.notify()
 
     # ------------------------------------------------------------------ the engine thread
 
     def serve(self) -> None:
-        """Scan and run commands until ``close``."""
+        """Scan and run commands, for the life of the process (it ends when the server goes or ends it)."""
         self._settle(publish=True)
         while True:
             with self._cv:
-                if not self._commands and not self._closed:
+                if not self._commands:
                     self._cv.wait(self._delay if self._running else None)
                 commands, self._commands = self._commands, deque()
-                closed = self._closed
-            if closed:
-                for _, _, reply in commands:
-                    reply(None, CommandError("bad_state", "the simulation has been deleted"))
-                break
             for op, args, reply in commands:
                 self._execute(op, args, reply)
             if self._running and self._pacer is not None:  # halted: the pacer idles and re-anchors after
@@ -222,7 +207,6 @@ class SimRunner:
                     self._set_running(False)
                     self._log("system", "error", f"internal error, simulation stopped: {error!r}")
                 self._settle()
-        self._set_running(False)
 
     def _execute(self, op: str, args: dict[str, Any], reply: Reply) -> None:
         handler = self._OPS.get(op)

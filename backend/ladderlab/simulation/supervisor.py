@@ -8,16 +8,19 @@ and event loop) into the child. The fork server is started once, in the backgrou
 
 ``WorkerHub`` owns one thread that waits on every worker's connection at once
 (``multiprocessing.connection.wait``): it hands each message to that worker's ``Peer``, tells the
-peer when its process is gone (end of file), and asks every peer about ten times a second whether
-its process still answers (``Peer.supervise``): a peer that decides it does not kills its process
-(``kill``), which the hub then reports as lost.
+peer when its process is gone (end of file, or a message that is not plain data), and asks every
+peer about ten times a second whether its process still answers (``Peer.supervise``): a peer that
+decides it does not kills its process (``kill``), which the hub then reports as lost. Messages
+from workers are read with ``receive``: plain data only, never objects.
 """
 
 from __future__ import annotations
 
 import contextlib
+import io
 import logging
 import multiprocessing
+import pickle
 import threading
 import time
 from collections.abc import Callable
@@ -31,6 +34,23 @@ log = logging.getLogger(__name__)
 
 PRELOAD = "ladderlab.simulation.preload"
 SUPERVISE_EVERY_S = 0.1
+MAX_MESSAGE_BYTES = 512 * 1024 * 1024  # a worker that sends more is treated as lost
+
+
+class _PlainData(pickle.Unpickler):
+    """Unpickles dicts, lists, tuples, strings, numbers, booleans and None only.
+
+    A worker process runs a user's program: a message from it may name no class or function (the way pickle
+    runs code), so even a worker that was made to run arbitrary code cannot reach into the server this way."""
+
+    def find_class(self, module: str, name: str) -> Any:
+        raise pickle.UnpicklingError(f"a worker's message may hold plain data only, not {module}.{name}")
+
+
+def receive(connection: Connection) -> Any:
+    """The next message from a worker (plain data; see ``_PlainData``)."""
+    return _PlainData(io.BytesIO(connection.recv_bytes(MAX_MESSAGE_BYTES))).load()
+
 
 _context_lock = threading.Lock()
 _context: BaseContext | None = None
@@ -103,8 +123,9 @@ class Peer(Protocol):
 
     def receive(self, message: dict[str, Any]) -> None: ...
 
-    def lost(self) -> None:
-        """The connection ended: the process is gone (crashed, killed or exited)."""
+    def lost(self, reason: str | None = None) -> None:
+        """The connection ended: the process is gone (crashed, killed or exited); or ``reason``: it broke the
+        protocol (its process is to be ended)."""
 
     def supervise(self, now: float) -> None:
         """Called about every 0.1 s: kill the process if it no longer answers."""
@@ -168,11 +189,12 @@ class WorkerHub:
         if peer is None:
             return
         try:
-            message = connection.recv()
-        except (EOFError, OSError):
+            message = receive(connection)
+        except (EOFError, OSError, pickle.UnpicklingError) as error:
             with self._lock:
                 self._peers.pop(connection, None)
-            self._guarded(peer.lost)
+            broken = None if isinstance(error, EOFError) else f"its process sent what the server refuses ({error})"
+            self._guarded(peer.lost, broken)
             return
         self._guarded(peer.receive, message)
 

@@ -97,7 +97,6 @@ def run_simulation(connection: Connection, spec: dict[str, Any]) -> None:
     link.send({"type": "ready", "info": runner.info(), "instances": sim.instances()})
     threading.Thread(target=_receive, args=(link, runner, spec["beat_s"]), name="ladderlab-link", daemon=True).start()
     runner.serve()
-    os._exit(0)
 
 
 def _receive(link: Link, runner: SimRunner, beat_s: float) -> None:
@@ -110,9 +109,6 @@ def _receive(link: Link, runner: SimRunner, beat_s: float) -> None:
         except (OSError, EOFError):
             os._exit(0)
         if request is not None:
-            if request["op"] == "close":
-                runner.close()
-                return
             runner.submit(request["op"], request["args"], _replier(link, runner, request["id"]))
         if time.monotonic() - link.last_sent >= beat_s:
             link.send({"type": "beat"})
