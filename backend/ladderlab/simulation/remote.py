@@ -160,9 +160,8 @@ class SimulationHandle:
         with self._lock:
             process, connection = self._process, self._connection
             self._alive = False
-        if connection is not None:
+        if connection is not None:  # closed when the hub lets go of it (never under the hub's wait)
             self.hub.forget(connection)
-            connection.close()
         if process is not None:
             kill(process)
 
