@@ -115,6 +115,34 @@ def load() -> str:
     return f"load average {os.getloadavg()[0]:.1f}"
 
 
+def descendants(pid: int) -> list[int]:
+    """Every process below ``pid`` (the fork server and the simulations' and builds' processes)."""
+    children: dict[int, list[int]] = {}
+    for stat in pathlib.Path("/proc").glob("[0-9]*/stat"):
+        try:
+            fields = stat.read_text().rsplit(")", 1)[1].split()
+        except OSError:
+            continue
+        children.setdefault(int(fields[1]), []).append(int(stat.parent.name))
+    found, todo = [], [pid]
+    while todo:
+        for child in children.get(todo.pop(), []):
+            found.append(child)
+            todo.append(child)
+    return found
+
+
+def cpu_seconds(pids: list[int]) -> float:
+    total = 0.0
+    for pid in pids:
+        try:
+            fields = pathlib.Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+        except OSError:
+            continue
+        total += (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+    return total
+
+
 def spread(values: list[float], unit: str = "ms") -> str:
     values = sorted(values)
     p99 = values[min(len(values) - 1, int(0.99 * len(values)))]
@@ -140,18 +168,21 @@ def create_latency(workspace: pathlib.Path) -> None:
         server.close()
 
 
-def rates(server: Server, ids: list[str], seconds: float) -> tuple[list[float], list[float], list[int]]:
-    """Each simulation's scans per second over ``seconds``, /api/health latencies meanwhile, faults."""
+def rates(server: Server, ids: list[str], seconds: float) -> tuple[list[float], list[float], list[int], float]:
+    """Each simulation's scans per second over ``seconds``, /api/health latencies meanwhile, faults, and the
+    CPU the server's worker processes got (in cores)."""
+    workers = descendants(server.process.pid)
     before = [server.http.get(f"/api/simulations/{i}").json()["scan_count"] for i in ids]
-    start, health = time.monotonic(), []
+    start, health, cpu = time.monotonic(), [], cpu_seconds(workers)
     while time.monotonic() - start < seconds:
         health.append(server.timed("GET", "/api/health")[1])
         time.sleep(0.1)
     elapsed = time.monotonic() - start
+    cores = (cpu_seconds(workers) - cpu) / elapsed
     infos = [server.http.get(f"/api/simulations/{i}").json() for i in ids]
     per_sim = [(info["scan_count"] - b) / elapsed for info, b in zip(infos, before)]
     faults = [1 if info["fault"] is not None else 0 for info in infos]
-    return per_sim, health, faults
+    return per_sim, health, faults, cores
 
 
 def sixteen(workspace: pathlib.Path, seconds: float) -> None:
@@ -162,7 +193,7 @@ def sixteen(workspace: pathlib.Path, seconds: float) -> None:
             if project == "heavy":
                 server.http.post(f"/api/simulations/{ids[0]}/start")
                 time.sleep(1.0)
-                alone, _, _ = rates(server, ids[:1], seconds)
+                alone, _, _, _ = rates(server, ids[:1], seconds)
                 server.http.post(f"/api/simulations/{ids[0]}/stop")
                 scan_ms = server.http.get(f"/api/simulations/{ids[0]}").json()["scan_ms"]["avg"]
                 print(
@@ -173,12 +204,13 @@ def sixteen(workspace: pathlib.Path, seconds: float) -> None:
             for sim_id in ids:
                 server.http.post(f"/api/simulations/{sim_id}/start")
             time.sleep(1.0)
-            per_sim, health, faults = rates(server, ids, seconds)
+            per_sim, health, faults, cores = rates(server, ids, seconds)
             print(
                 f"16 simulations, {label}: scans/s each min {min(per_sim):.1f}, "
                 f"median {statistics.median(per_sim):.1f}, max {max(per_sim):.1f}, total {sum(per_sim):.0f}/s "
                 f"(target {target:.1f} each: "
                 f"{'the task rate' if project == 'light' else 'what 2 cores allow'}); faults {sum(faults)}; "
+                f"the simulations' processes got {cores:.2f} cores; "
                 f"/api/health {spread(health)}; {load()}"
             )
             for sim_id in ids:
