@@ -9,6 +9,7 @@ benchmarks/isolation.py.
 
 from __future__ import annotations
 
+import math
 import multiprocessing
 import os
 import pickle
@@ -18,9 +19,12 @@ from collections.abc import Iterator
 
 import pytest
 from fastapi.testclient import TestClient
+from hypothesis import given
+from hypothesis import strategies as st
 
 from ladderlab.model import Project, Task
 from ladderlab.simulation.registry import SimulationRegistry, SimulationSettings
+from ladderlab.simulation.runner import changes
 from ladderlab.simulation.supervisor import receive
 from ladderlab.storage import Workspace
 from tests.support import NESTED_LOOPS, NESTED_LOOPS_DECLARATIONS
@@ -363,3 +367,22 @@ def test_the_server_reads_plain_data_only_from_a_worker(
     assert info["fault"]["message"] == (
         "the simulation's process sent what the server refuses (a test): reset the simulation to start it again"
     )
+
+
+values = st.none() | st.booleans() | st.integers(-2, 2) | st.floats(allow_infinity=True) | st.sampled_from(["a", ""])
+
+
+@given(sent=st.dictionaries(st.sampled_from("abcd"), values), current=st.dictionaries(st.sampled_from("abcd"), values))
+def test_frames_and_values_messages_carry_exactly_the_values_that_changed(sent: dict, current: dict) -> None:
+    """A value is unchanged when it is equal and of the same type (TRUE is not 1, 1 is not 1.0), or NaN before and
+    after; everything else (and every new key) is a change."""
+
+    def unchanged(key: str) -> bool:
+        if key not in sent:
+            return False
+        old, new = sent[key], current[key]
+        if type(old) is not type(new):
+            return False
+        return old == new or (isinstance(new, float) and math.isnan(new) and math.isnan(old))
+
+    assert changes(sent, current) == {key: value for key, value in current.items() if not unchanged(key)}

@@ -37,7 +37,7 @@ from starlette.websockets import WebSocketDisconnect
 from ..model import monitor as m
 from ..simulation.registry import SimulationEntry, SimulationSettings, UnknownSimulation
 from ..simulation.remote import Frame, SimulationHandle, Watch
-from ..simulation.runner import CommandError, same
+from ..simulation.runner import CommandError, changes
 from .context import registry_of
 
 log = logging.getLogger(__name__)
@@ -49,7 +49,6 @@ _CLIENT_TYPES = ", ".join(sorted(CLIENT_MESSAGE.json_schema()["discriminator"]["
 CLOSE_NO_SIMULATION = 4404
 CLOSE_DELETED = 4410
 CLOSE_TRY_LATER = 1013
-_MISSING = object()
 _KEYS = itertools.count(1)  # a client's key in its simulation (watches, traces)
 
 
@@ -335,21 +334,18 @@ class MonitorClient:
 
     def values_message(self, frame: Frame) -> m.Values | None:
         """What changed for this client since its last message (everything after a subscribe); None: nothing."""
-        full, changed, power = self.full, {}, {}
-        last = self.last_values
-        for path in self.watch.paths if self.watch is not None else ():
-            value = frame.values.get(path)
-            if full or not same(last.get(path, _MISSING), value):
-                changed[path] = last[path] = value
-        for label, instance, ids in self.elements:
-            states = frame.power.get(instance)
-            if states is None:
-                continue
-            for element in ids if ids is not None else sorted(states):
-                state = states.get(element)
-                key = f"{label}/{element}"
-                if full or not same(self.last_power.get(key, _MISSING), state):
-                    power[key] = self.last_power[key] = state
+        full = self.full
+        values = {path: frame.values.get(path) for path in (self.watch.paths if self.watch is not None else ())}
+        states = {
+            f"{label}/{element}": shown.get(element)
+            for label, instance, ids in self.elements
+            if (shown := frame.power.get(instance)) is not None
+            for element in (ids if ids is not None else sorted(shown))
+        }
+        changed = values if full else changes(self.last_values, values)
+        power = states if full else changes(self.last_power, states)
+        self.last_values.update(changed)
+        self.last_power.update(power)
         forced = list(frame.forced)
         if not (full or changed or power or forced != self.last_forced or frame.scan != self.last_scan):
             return None

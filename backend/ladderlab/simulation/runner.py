@@ -29,7 +29,6 @@ breakpoint is set or a scan is halted (a step), between scans, keeping all state
 from __future__ import annotations
 
 import logging
-import math
 import threading
 import time
 from collections import deque
@@ -76,15 +75,18 @@ class Sink(Protocol):
 Reply = Callable[[object, CommandError | None], None]
 
 
-def same(a: object, b: object) -> bool:
-    """Equal values, NaN equal to NaN (a NaN that stays NaN has not changed)."""
-    if a is b:
-        return True
-    if type(a) is not type(b):
-        return False
-    if a == b:
-        return True
-    return isinstance(a, float) and math.isnan(a) and math.isnan(b)  # type: ignore[arg-type]
+def changes(sent: dict[str, object], current: dict[str, object]) -> dict[str, object]:
+    """The entries of ``current`` that are new or differ from ``sent``: another value, another type (TRUE is
+    not 1), but a NaN that stays NaN has not changed. Runs for every watched value of every frame."""
+    changed = {}
+    for key, value in current.items():
+        old = sent.get(key, _MISSING)
+        if value == old and type(value) is type(old):
+            continue
+        if value != value and type(old) is float and old != old:  # NaN stays NaN
+            continue
+        changed[key] = value
+    return changed
 
 
 def at_halt(halt: Halt) -> At:
@@ -332,9 +334,8 @@ class SimRunner:
             changed = values
             self._sent_values = dict(values)
         else:
-            sent = self._sent_values
-            changed = {path: value for path, value in values.items() if not same(sent.get(path, _MISSING), value)}
-            sent.update(changed)
+            changed = changes(self._sent_values, values)
+            self._sent_values.update(changed)
         power: dict[str, dict[str, object]] = {}
         for instance, (every, ids) in self._union.items():
             states = self._states(instance, every, ids)
@@ -343,7 +344,7 @@ class SimRunner:
                 power[instance] = states
                 continue
             sent = self._sent_power.setdefault(instance, {})
-            diff = {e: state for e, state in states.items() if not same(sent.get(e, _MISSING), state)}
+            diff = changes(sent, states)
             if diff:
                 sent.update(diff)
                 power[instance] = diff
