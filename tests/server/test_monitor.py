@@ -51,6 +51,7 @@ def test_connecting_reports_the_state_then_a_full_snapshot_of_the_subscription(
             "scan": 1,
             "time_ms": 10.0,
             "forced": [],
+            "injected": {},
             "power": {},
             "changed": {"MAIN.COUNT": 1, "MAIN.FLAG": True, "MAIN.IDLE": 7},
             "types": {"MAIN.COUNT": INT, "MAIN.FLAG": {"name": "BOOL", "names": None}, "MAIN.IDLE": INT},

@@ -14,11 +14,14 @@ from ..model import has_errors
 from ..model.schema import SCHEMA_MODELS, schema_of
 from ..simulation.build import build_project
 from ..simulation.check import check_project
+from ..simulation.conditions import BadCondition, parse_condition
 from ..storage import StorageError, load_project_path
 from ..storage.atomic import write_atomic
-from .run import jsonl_line, parse_duration, parse_set, run_scans, table_lines
+from .run import jsonl_line, parse_duration, parse_events, parse_fault, parse_set, run_scans, table_lines
 
-EXIT_OK, EXIT_ERRORS, EXIT_USAGE, EXIT_RUNTIME = 0, 1, 2, 3
+EXIT_OK, EXIT_ERRORS, EXIT_USAGE, EXIT_RUNTIME, EXIT_NOT_REACHED = 0, 1, 2, 3, 4
+#: How many scans ``--until`` runs at most when neither --cycles nor --for says.
+UNTIL_LIMIT = 1_000_000
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -75,6 +78,30 @@ def _parser() -> argparse.ArgumentParser:
         metavar="PATH",
         help="print this variable after every scan (MAIN.x, GVL.y, y, MAIN.T1.Q, MAIN.a[3]); default: every variable",
     )
+    run.add_argument(
+        "--events",
+        type=Path,
+        default=None,
+        metavar="FILE",
+        help="replay input events (JSON lines with the scan each applies before, as a simulation's "
+        "'Download inputs' gives them: panel presses, writes, forces, faults, resets)",
+    )
+    run.add_argument(
+        "--fault",
+        dest="faults",
+        action="append",
+        default=[],
+        metavar="PATH=MODE[@SCAN]",
+        help="inject a fault into a signal before scan SCAN: stuck_true, stuck_false, open, noisy, stuck:VALUE",
+    )
+    run.add_argument("--seed", type=int, default=0, help="the seed of --fault ...=noisy (default 0)")
+    run.add_argument(
+        "--until",
+        default=None,
+        metavar="CONDITION",
+        help="stop after the first scan where CONDITION holds (Motor, NOT Alarm, Tank.Level >= 80); "
+        f"exit {EXIT_NOT_REACHED} when it never did within --cycles/--for (default: {UNTIL_LIMIT:,} scans)",
+    )
     run.add_argument("--format", choices=["table", "jsonl"], default="table")
     run.set_defaults(func=_run)
 
@@ -89,6 +116,11 @@ def _parser() -> argparse.ArgumentParser:
     export.add_argument("project", type=Path, help="project folder, project .json file or .st file")
     export.add_argument("--pou", default=None, help="st: only this POU (default: the whole project)")
     export.add_argument("-o", "--output", type=Path, default=None, help="file to write (default: standard output)")
+    export.add_argument(
+        "--with-plants",
+        action="store_true",
+        help="keep the project's plants (as programs run by a task PLANTS); by default only the control program",
+    )
     export.set_defaults(func=_export)
 
     import_ = sub.add_parser("import", help="import a PLCopen XML project into a workspace")
@@ -132,16 +164,27 @@ def _run(args: argparse.Namespace) -> int:
     try:
         sets = [parse_set(text) for text in args.sets]
         for_ms = parse_duration(args.for_) if args.for_ is not None else None
-    except ValueError as error:
+        events = [parse_fault(text, args.seed) for text in args.faults]
+        if args.events is not None:
+            events += parse_events(_read_events(args.events), str(args.events))
+    except (ValueError, OSError) as error:
         print(f"ladderlab run: {error}", file=sys.stderr)
         return EXIT_USAGE
     build = _build(args)
     if build is None:
         return EXIT_ERRORS
     sim = build.simulation()
+    until = None
+    if args.until is not None:
+        try:
+            until = parse_condition(args.until, sim)
+        except BadCondition as error:
+            print(f"ladderlab run: --until {error}", file=sys.stderr)
+            return EXIT_USAGE
     watch = args.watch or list(sim.snapshot())
-    cycles = args.cycles if args.cycles is not None or for_ms is not None else 1
-    rows = run_scans(sim, watch=watch, sets=sets, cycles=cycles, for_ms=for_ms)
+    limited = args.cycles is not None or for_ms is not None
+    cycles = args.cycles if limited else (UNTIL_LIMIT if until is not None else 1)
+    rows = run_scans(sim, watch=watch, sets=sets, events=events, cycles=cycles, for_ms=for_ms, until=until)
     try:
         lines = (jsonl_line(row) for row in rows) if args.format == "jsonl" else table_lines(rows, watch)
         for line in lines:
@@ -152,7 +195,19 @@ def _run(args: argparse.Namespace) -> int:
     if sim.fault is not None:
         print(sim.fault.diagnostic().format(), file=sys.stderr)
         return EXIT_RUNTIME
+    if until is not None and not until.holds(sim):
+        print(f"ladderlab run: {until.text} did not hold within {sim.scan_count} scans", file=sys.stderr)
+        return EXIT_NOT_REACHED
     return EXIT_OK
+
+
+def _read_events(path: Path) -> str:
+    try:
+        return path.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise ValueError(f"--events {path}: no such file") from None
+    except UnicodeDecodeError as error:
+        raise ValueError(f"--events {path}: not UTF-8 text ({error.reason})") from None
 
 
 def _compile(args: argparse.Namespace) -> int:
@@ -165,9 +220,12 @@ def _compile(args: argparse.Namespace) -> int:
 
 
 def _export(args: argparse.Namespace) -> int:
+    from ..interchange.plants import for_export
     from ..interchange.plcopen.exporter import PlcopenExportError, export_plcopen
 
     project = load_project_path(args.project)
+    if args.pou is None:
+        project = for_export(project, args.with_plants)
     if args.format == "plcopen":
         if args.pou is not None:
             print("ladderlab export plcopen: --pou applies to st only", file=sys.stderr)

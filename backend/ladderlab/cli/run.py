@@ -1,7 +1,10 @@
-"""``ladderlab run``: scan a project on the virtual clock, apply ``--set``s, report watched values per scan.
+"""``ladderlab run``: scan a project on the virtual clock, apply inputs, report watched values per scan.
 
-Kept apart from the CLI's argument parsing so the rules (what ``PATH=VALUE@SCAN``
-means, when a scan counts as inside ``--for``, how values print) are testable alone.
+Inputs come as ``--set`` writes, ``--fault`` injections and ``--events`` files (one input event per
+line, as the server's ``GET /api/simulations/{id}/inputs`` gives them: a panel session replays
+here scan for scan). Every one goes through ``Simulation.submit`` before the scan it names.
+Kept apart from the CLI's argument parsing so the rules (what ``PATH=VALUE@SCAN`` means, when a
+scan counts as inside ``--for``, how values print) are testable alone.
 """
 
 from __future__ import annotations
@@ -12,9 +15,11 @@ import re
 from collections.abc import Iterator
 from dataclasses import dataclass
 
+from ..engine.inputs import FAULT_MODES, InputEvent, InputRefused
 from ..engine.simulation import Simulation
 from ..iec.literals import decode_duration, decode_string
 from ..ir.types import Elementary
+from ..simulation.conditions import Condition
 
 _DURATION = re.compile(r"(?:T|TIME)?#?((?:\d+(?:\.\d+)?(?:d|h|ms|m|s|us|ns)_?)+)", re.IGNORECASE)
 
@@ -40,6 +45,66 @@ def parse_set(text: str) -> SetAction:
     return SetAction(path.strip(), value.strip(), scan)
 
 
+@dataclass(frozen=True)
+class Scheduled:
+    """An input event to submit just before scan number ``scan``."""
+
+    scan: int
+    event: InputEvent
+
+
+def parse_events(text: str, name: str) -> list[Scheduled]:
+    """The events of a JSON-lines file (blank lines skipped); ValueError naming the file and line."""
+    found = []
+    for number, line in enumerate(text.splitlines(), 1):
+        if not line.strip():
+            continue
+        where = f"{name}:{number}"
+        try:
+            data = json.loads(line)
+        except ValueError as error:
+            raise ValueError(f"{where}: not JSON: {error}") from None
+        if not isinstance(data, dict):
+            raise ValueError(f"{where}: an event is a JSON object such as {EVENT_EXAMPLE}")
+        scan = data.get("scan")
+        if not isinstance(scan, int) or isinstance(scan, bool) or scan < 0:
+            raise ValueError(f"{where}: scan must be the number of the scan it applies before (0 for the first)")
+        if data.get("phase", "start") != "start":
+            raise ValueError(
+                f"{where}: this event was applied while scan {scan} was halted at a breakpoint; "
+                "ladderlab run replays events at the start of scans only"
+            )
+        try:
+            found.append(Scheduled(scan, InputEvent.from_json(data)))
+        except (InputRefused, TypeError) as error:
+            raise ValueError(f"{where}: {error}") from None
+    return sorted(found, key=lambda scheduled: scheduled.scan)
+
+
+EVENT_EXAMPLE = '{"scan": 3, "kind": "panel", "path": "Start", "value": true}'
+
+
+def parse_fault(text: str, seed: int) -> Scheduled:
+    """``PATH=MODE[@SCAN]`` (stuck_true, stuck_false, open, noisy; ``stuck:VALUE``); a noisy one gets ``seed``."""
+    path, sep, rest = text.partition("=")
+    head, at, tail = rest.rpartition("@")
+    mode, scan = (head, int(tail)) if at and tail.strip().isdigit() else (rest, 0)
+    mode, _, value = mode.strip().partition(":")
+    if not sep or not path.strip() or mode not in FAULT_MODES or (mode == "stuck") != bool(value):
+        raise ValueError(
+            f"--fault {text!r}: expected PATH=MODE[@SCAN] with MODE one of stuck_true, stuck_false, open, noisy, "
+            "or stuck:VALUE"
+        )
+    event = InputEvent(
+        "fault",
+        path.strip(),
+        value.strip() or None,
+        mode=mode,
+        seed=seed if mode == "noisy" else None,  # type: ignore[arg-type]
+    )
+    return Scheduled(scan, event)
+
+
 def parse_duration(text: str) -> float:
     """``2s``, ``1m30s``, ``500ms``, ``T#2s`` -> milliseconds."""
     match = _DURATION.fullmatch(text.strip())
@@ -58,24 +123,34 @@ class Row:
 
 
 def run_scans(
-    sim: Simulation, *, watch: list[str], sets: list[SetAction], cycles: int | None = None, for_ms: float | None = None
+    sim: Simulation,
+    *,
+    watch: list[str],
+    sets: list[SetAction] = (),  # type: ignore[assignment]
+    events: list[Scheduled] = (),  # type: ignore[assignment]
+    cycles: int | None = None,
+    for_ms: float | None = None,
+    until: Condition | None = None,
 ) -> Iterator[Row]:
-    """Yield a Row after every scan; stops early after a scan that faulted (``sim.fault`` says why).
+    """Yield a Row after every scan; stops early after a scan that faulted (``sim.fault`` says why) or after
+    which ``until`` holds.
 
-    ``cycles`` scans, or every scan due within ``for_ms`` of virtual time. Paths are
-    resolved before the first scan, so a typo fails before anything runs.
+    ``cycles`` scans, or every scan due within ``for_ms`` of virtual time. The inputs of a scan (``sets``
+    first, then ``events`` in file order) are submitted just before it. Paths are resolved before the
+    first scan, so a typo fails before anything runs.
     """
     for path in watch:
         sim.location(path)
-    pending = sorted(sets, key=lambda s: s.scan)
+    writes = [Scheduled(s.scan, InputEvent("write", s.path, _typed_text(sim, s), source="cli")) for s in sets]
+    pending = sorted(writes, key=lambda s: s.scan) + list(events)
+    pending.sort(key=lambda s: s.scan)
     scan = 0
     while (scan < cycles) if cycles is not None else (sim.next_scan_time() <= (for_ms or 0.0)):
         while pending and pending[0].scan <= scan:
-            action = pending.pop(0)
-            sim.write(action.path, _typed_text(sim, action))
+            sim.submit(pending.pop(0).event)
         sim.cycle(1)
         yield Row(scan, sim.time_ms, {path: sim.read(path) for path in watch})
-        if sim.fault is not None:
+        if sim.fault is not None or (until is not None and until.holds(sim)):
             return
         scan += 1
 

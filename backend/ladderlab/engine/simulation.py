@@ -4,8 +4,12 @@
     sim.cycle(3); sim.read("MAIN.T1.ET"); sim.write("MAIN.START", True); sim.force("GVL.LAMP", "TRUE")
     sim.run_for(1000); sim.scan_at(12.5); sim.snapshot(); sim.reset(cold=True); sim.fault
 
-A scan applies pending writes, then forces, runs every task due (docs: tasks.py),
-applies forces again and records its wall time. A fault (PlcRuntimeError,
+Everything from outside the program enters through ``submit`` (``inputs.py``: writes, forces,
+releases, panel events, injected faults, resets), applied at the start of the next scan and
+reported to ``on_input`` with the scan number. A scan applies those inputs, then forces and
+injected faults, runs the plant task (plants: the models of the process, tasks.py), applies
+injected faults and forces again where the plants' signals cross into the program, runs every
+control task due, applies forces again and records its wall time. A fault (PlcRuntimeError,
 watchdog, or any unexpected exception in generated code) stops its task until
 ``reset`` and is kept in ``faults``; the caller's process never sees it.
 
@@ -26,7 +30,7 @@ from __future__ import annotations
 
 import time
 from collections.abc import Callable, Iterable, Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from ..iec.spelling import did_you_mean
 from ..ir import nodes as ir
@@ -37,6 +41,7 @@ from .codegen.faults import Fault, make_fault
 from .codegen.runtime import UNSET, Watchdog
 from .compile import CompiledProgram, compile_program
 from .debug import Debugger, Halt
+from .inputs import AppliedInput, Injection, InputEvent, InputRefused, immediate, injection
 from .paths import Location, LocationReader, Resolver, Roots, UnknownPath, coerce_for, leaves, plain
 from .tasks import DEFAULT_WATCHDOG_S, Schedule, Task, task_table
 
@@ -101,8 +106,13 @@ class Simulation:
         self._roots = Roots(self.programs, self._ns)
         self.debugger: Debugger | None = None
         self._stamp = 0  # counts scans started: the stamp probe groups record (ll_scan)
-        self._writes: list[tuple[Location, object]] = []
+        self._pending: list[tuple[InputEvent, Location | None, object]] = []  # waiting for the next scan start
         self._forces: dict[str, tuple[Location, object]] = {}
+        self._injections: dict[str, tuple[Location, Injection]] = {}
+        #: Hears every input as it is applied (the online log, a recording); see inputs.py.
+        self.on_input: Callable[[AppliedInput], None] | None = None
+        self._halts = 0  # halts of the scan under way so far
+        self._halt_pid: int | None = None
         self.faults: list[Fault] = []
         self.stats = ScanStats()
         self.scan_count = 0
@@ -185,9 +195,15 @@ class Simulation:
         return list(self._tasks)
 
     def reset(self, cold: bool = False) -> None:
-        """Warm (RETAIN variables keep their values) or cold restart; clears faults, ends a halted scan."""
+        """Warm (RETAIN variables keep their values) or cold restart; clears faults, ends a halted scan.
+
+        Forces, injected faults and inputs waiting for the next scan stay."""
+        self.submit(InputEvent("reset", cold=cold))
+
+    def _reset(self, cold: bool) -> None:
         if self._scan is not None:
             self._scan.close()  # type: ignore[attr-defined]
+            self.scan_count += 1  # the abandoned scan keeps its number: the next scan has the next one
         self._scan, self.halted = None, None
         if self.debugger is not None:
             self.debugger.arm(None)
@@ -231,28 +247,43 @@ class Simulation:
             raise RuntimeError("the simulation is halted: resume(), step() or reset() first")
 
     def _scan_now(self, now: float, due: list[Task]) -> bool:
-        self._apply_writes()
-        self._apply_forces()
+        self._halts = 0
+        self._apply_inputs()
+        self._cross()
         self._ns["ll_now"] = now
         self._stamp += 1
         self._ns["ll_scan"] = self._stamp
+        plants = [task for task in due if task.plant]
+        control = [task for task in due if not task.plant] if plants else due
         if self.debugger is None:
             start = self._clock()
-            for task in due:
-                if not task.stopped:
-                    self._watchdog.arm(task.watchdog_s)
-                    try:
-                        for name in task.programs:
-                            self.programs[name].execute(now)  # type: ignore[attr-defined]
-                    except Exception as error:
-                        self._fault(task, error, now)
+            self._run_tasks(plants, now)
+            if plants:
+                self._cross()
+            self._run_tasks(control, now)
             self._finish((self._clock() - start) * 1000.0)
             return True
-        self._scan, self._busy = self._debug_scan(now, due), 0.0
+        self._scan, self._busy = self._debug_scan(now, plants, control), 0.0
         return self._drive()
 
-    def _debug_scan(self, now: float, due: list[Task]) -> Iterator:
-        for task in due:
+    def _run_tasks(self, tasks: list[Task], now: float) -> None:
+        for task in tasks:
+            if not task.stopped:
+                self._watchdog.arm(task.watchdog_s)
+                try:
+                    for name in task.programs:
+                        self.programs[name].execute(now)  # type: ignore[attr-defined]
+                except Exception as error:
+                    self._fault(task, error, now)
+
+    def _debug_scan(self, now: float, plants: list[Task], control: list[Task]) -> Iterator:
+        yield from self._debug_tasks(plants, now)
+        if plants:
+            self._cross()
+        yield from self._debug_tasks(control, now)
+
+    def _debug_tasks(self, tasks: list[Task], now: float) -> Iterator:
+        for task in tasks:
             if task.stopped:
                 continue
             self._watchdog.arm(task.watchdog_s)
@@ -274,6 +305,8 @@ class Simulation:
             return True
         self._busy += self._clock() - start
         self._watchdog_left = self._watchdog.pause()
+        self._halts += 1
+        self._halt_pid = pid
         point = self.compiled.generated.pauses[pid]
         self.halted = Halt(
             point, self._instance_path(instance) if instance is not None else None, self.debugger.reason(pid)
@@ -495,34 +528,120 @@ class Simulation:
 
     def write(self, path: str, value: object) -> None:
         """Write once, before the next scan (at once while halted); the program may overwrite it."""
-        location = self._resolver.resolve(path)
-        coerced = coerce_for(location, value)
-        if self.halted is not None:
-            location.set(self._roots, coerced)
-        else:
-            self._writes.append((location, coerced))
+        self.submit(InputEvent("write", path, value))  # type: ignore[arg-type]
 
     def force(self, path: str, value: object) -> None:
-        """Hold a variable at ``value``: set now and before and after every scan, until ``unforce``."""
-        location = self._resolver.resolve(path)
-        coerced = coerce_for(location, value)
-        self._forces[location.path] = (location, coerced)
-        location.set(self._roots, coerced)
+        """Hold a variable at ``value`` before and after every scan (from the next, at once while halted),
+        until ``unforce``."""
+        self.submit(InputEvent("force", path, value))  # type: ignore[arg-type]
 
     def unforce(self, path: str) -> None:
-        self._forces.pop(self._resolver.resolve(path).path, None)
+        self.submit(InputEvent("release", path))
 
     def unforce_all(self) -> None:
-        self._forces.clear()
+        self.submit(InputEvent("release_all"))
 
     @property
     def forced(self) -> dict[str, object]:
-        return {path: value for path, (_, value) in self._forces.items()}
+        """Forced variables by canonical path (a force waiting for the next scan counts already)."""
+        forced = {path: value for path, (_, value) in self._forces.items()}
+        for event, location, prepared in self._pending:
+            if event.kind == "force":
+                forced[location.path] = prepared  # type: ignore[union-attr]
+            elif event.kind == "release":
+                forced.pop(location.path, None)  # type: ignore[union-attr]
+            elif event.kind == "release_all":
+                forced.clear()
+        return forced
 
-    def _apply_writes(self) -> None:
-        writes, self._writes = self._writes, []
-        for location, value in writes:
-            location.set(self._roots, value)
+    @property
+    def injected(self) -> dict[str, str]:
+        """Variables with an injected fault, by canonical path: the fault's mode."""
+        return {path: injected.event.mode for path, (_, injected) in self._injections.items()}  # type: ignore[misc]
+
+    @property
+    def pending(self) -> list[InputEvent]:
+        """Inputs waiting for the start of the next scan, in the order they will apply."""
+        return [event for event, _, _ in self._pending]
+
+    # ------------------------------------------------------------------ inputs (inputs.py)
+
+    def submit(self, event: InputEvent) -> None:
+        """Give the simulation an input: applied at the start of the next scan, or at once (a reset; a user's
+        write, force or release while a scan is halted). Checked now: raises InputRefused, UnknownPath or
+        ValueError (a value that does not fit its variable) and nothing happens."""
+        event.check()
+        location = self._resolver.resolve(event.path) if event.path else None
+        event, prepared = self._prepare(event, location)
+        if immediate(event, halted=self.halted is not None):
+            self._apply(event, location, prepared, halted=self.halted is not None)
+        else:
+            self._pending.append((event, location, prepared))
+
+    def _prepare(self, event: InputEvent, location: Location | None) -> tuple[InputEvent, object]:
+        """What applying the event needs: the value for its variable, or the fault to hold there. A ``stuck``
+        fault without a value gets the variable's value now, so the event alone says what it holds."""
+        if event.kind in ("write", "force", "panel"):
+            return event, coerce_for(location, event.value)  # type: ignore[arg-type]
+        if event.kind != "fault":
+            return event, None
+        assert location is not None
+        if not location.elementary:
+            raise InputRefused(f"{location.path}: faults act on one BOOL or numeric signal at a time")
+        if event.mode == "stuck" and event.value is None:
+            event = replace(event, value=location.get(self._roots))  # type: ignore[arg-type]
+        try:
+            return event, injection(event, location.type, lambda value: coerce_for(location, value))
+        except InputRefused as error:
+            raise InputRefused(f"{location.path}: {error}") from None
+
+    def _apply_inputs(self) -> None:
+        """The inputs waiting for this scan, in order; a second panel event on a variable waits a scan more."""
+        pending, self._pending = self._pending, []
+        panel: set[str] = set()  # variables a panel event was applied to at this scan start
+        waiting: set[str] = set()  # variables with an event that waits: later events on them wait too
+        for event, location, prepared in pending:
+            key = location.path if location is not None else None
+            if key is not None and (key in waiting or (event.kind == "panel" and key in panel)):
+                waiting.add(key)
+                self._pending.append((event, location, prepared))
+                continue
+            self._apply(event, location, prepared, halted=False)
+            if event.kind == "panel":
+                panel.add(key)  # type: ignore[arg-type]
+
+    def _apply(self, event: InputEvent, location: Location | None, prepared: object, halted: bool) -> None:
+        kind = event.kind
+        if kind in ("write", "panel"):
+            location.set(self._roots, prepared)  # type: ignore[union-attr]
+        elif kind == "force":
+            self._forces[location.path] = (location, prepared)  # type: ignore[union-attr]
+            location.set(self._roots, prepared)  # type: ignore[union-attr]
+        elif kind == "release":
+            self._forces.pop(location.path, None)  # type: ignore[union-attr]
+        elif kind == "release_all":
+            self._forces.clear()
+        elif kind == "fault":
+            self._injections[location.path] = (location, prepared)  # type: ignore[union-attr,assignment]
+        elif kind == "clear_fault":
+            if location is None:
+                self._injections.clear()
+            else:
+                self._injections.pop(location.path, None)
+        scan = self.scan_count
+        applied = (
+            AppliedInput(event, scan, "halt", self._halt_pid, self._halts) if halted else AppliedInput(event, scan)
+        )
+        if kind == "reset":
+            self._reset(event.cold)
+        if self.on_input is not None:
+            self.on_input(applied)
+
+    def _cross(self) -> None:
+        """Where signals cross between the plants and the program: injected faults, then forces (a force wins)."""
+        for location, injected in self._injections.values():
+            location.set(self._roots, injected.value(location.get(self._roots)))
+        self._apply_forces()
 
     def _apply_forces(self) -> None:
         for location, value in self._forces.values():

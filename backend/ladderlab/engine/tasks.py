@@ -6,6 +6,10 @@ runs every task due then, in priority order (lower number first, CFG-05; equal
 priorities in declaration order), each task's programs in the order listed
 (CFG-06). With no task configured every PROGRAM runs in one 10 ms task.
 
+The plant task (``Task.plant``: the project's plants, the models of the process) is due in
+every scan and runs before the control tasks of that scan, on the same clock; scans come when
+control tasks are due (with no control task, every plant task interval).
+
 ``Pacer`` runs those scans in real time for browser sessions: it keeps virtual
 time in step with the wall clock (times a speed factor); a driver thread
 calls ``poll()`` and sleeps for the delay it returns.
@@ -21,6 +25,7 @@ from typing import Protocol
 
 from ..ir import nodes as ir
 from ..model.diagnostics import Diagnostic
+from ..model.validate import PLANT_TASK
 
 TASK_ERROR = "ENGINE-TASKS"
 _EPSILON_MS = 1e-6
@@ -39,6 +44,7 @@ class Task:
     watchdog_s: float = DEFAULT_WATCHDOG_S
     next_due: float = 0.0
     stopped: bool = False  # after a fault, until reset
+    plant: bool = False  # the plant task: runs first in every scan
 
     def sort_key(self) -> tuple[int, int]:
         return self.priority, self.order
@@ -72,6 +78,13 @@ def validate_tasks(program: ir.Program) -> list[Diagnostic]:
                     f"{name} is a {kind.kind.replace('_', ' ')}, not a program" if kind else f"unknown program {name}"
                 )
                 diagnostics.append(_error(f"task {task.name}: {what}", name))
+            elif programs[key].plant != task.plant:
+                what = (
+                    f"{name} is a plant: plants run in the plant task, before the control tasks of every scan"
+                    if programs[key].plant
+                    else f"the plant task runs plants only; {name} is a program"
+                )
+                diagnostics.append(_error(f"task {task.name}: {what}", name))
             elif key in owner:
                 where = "twice in this task" if owner[key] == task.name else f"in tasks {owner[key]} and {task.name}"
                 diagnostics.append(_error(f"program {name} is listed {where}: an instance runs in one task only", name))
@@ -80,11 +93,19 @@ def validate_tasks(program: ir.Program) -> list[Diagnostic]:
     return diagnostics
 
 
+def default_tasks(pous: dict[str, ir.Pou]) -> list[ir.TaskSpec]:
+    """Without a task configuration: every program in one 10 ms task, and the plants in the plant task."""
+    programs = [name for name, pou in pous.items() if pou.kind == "program" and not pou.plant]
+    plants = [name for name, pou in pous.items() if pou.kind == "program" and pou.plant]
+    specs = [ir.TaskSpec("DEFAULT", DEFAULT_INTERVAL_MS, 0, programs)] if programs or not plants else []
+    if plants:
+        specs.append(ir.TaskSpec(PLANT_TASK, DEFAULT_INTERVAL_MS, 0, plants, plant=True))
+    return specs
+
+
 def task_table(program: ir.Program, watchdog_s: float | dict[str, float] = DEFAULT_WATCHDOG_S) -> list[Task]:
     """The tasks to schedule (validated program): the configured ones, else one 10 ms task with every PROGRAM."""
-    specs = program.tasks or [
-        ir.TaskSpec("DEFAULT", DEFAULT_INTERVAL_MS, 0, [n for n, p in program.pous.items() if p.kind == "program"])
-    ]
+    specs = program.tasks or default_tasks(program.pous)
     limits = {k.upper(): v for k, v in watchdog_s.items()} if isinstance(watchdog_s, dict) else {}
     default = DEFAULT_WATCHDOG_S if isinstance(watchdog_s, dict) else watchdog_s
     tasks = []
@@ -101,6 +122,7 @@ def task_table(program: ir.Program, watchdog_s: float | dict[str, float] = DEFAU
                 order,
                 limit,
                 next_due=spec.interval_ms,
+                plant=spec.plant,
             )
         )
     return tasks
@@ -115,17 +137,21 @@ class Schedule:
     _ordered: list[Task] = field(default_factory=list)
 
     def __post_init__(self) -> None:
-        self._ordered = sorted(self.tasks, key=Task.sort_key)
+        self._ordered = sorted(self.tasks, key=lambda task: (not task.plant, *task.sort_key()))
+        control = [task for task in self.tasks if not task.plant]
+        self._clocks = control or self.tasks  # the tasks whose due times make the scans
+        self._plants_every_scan = bool(control)
 
     def next_time(self) -> float:
-        return min(task.next_due for task in self.tasks)
+        return min(task.next_due for task in self._clocks)
 
     def advance(self) -> tuple[float, list[Task]]:
-        """Move the clock to the next due time; the tasks due then, in priority order."""
+        """Move the clock to the next due time; the tasks due then, plants first, then in priority order."""
         now = self.next_time()
-        due = [task for task in self._ordered if task.next_due == now]
+        every = self._plants_every_scan
+        due = [task for task in self._ordered if task.next_due == now or (task.plant and every)]
         for task in due:
-            task.next_due += task.interval_ms
+            task.next_due = now + task.interval_ms if task.plant else task.next_due + task.interval_ms
         self.time_ms = now
         return now, due
 
@@ -184,6 +210,12 @@ class Pacer:
             clock(),
             sim.time_ms,
         )  # (wall s, virtual ms) in step; None: re-anchor
+
+    def set_speed(self, speed: float) -> None:
+        """Pace at ``speed`` from now on (time so far keeps its pace: the pacer re-anchors)."""
+        if not speed > 0:
+            raise ValueError("speed must be positive")
+        self.speed, self._anchor = speed, None
 
     def _virtual_now(self) -> float:
         if self._anchor is None:

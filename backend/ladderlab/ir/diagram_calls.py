@@ -169,6 +169,14 @@ def resolve_callee(ops: Operands, call: str, instance: str | None, at: At) -> tu
 def _callee(ops: Operands, name: str, at: At) -> Callee | None:
     """What ``name`` calls, or None (reported): a program or an unknown name."""
     pou = ops.ctx.checked.pou(name)
+    if pou is not None and pou.plant:
+        ops.report(
+            at,
+            f"{ops.lang}-PLANT",
+            f"{pou.name} is a plant: it models the process and runs in the plant task before every scan; "
+            "control code cannot call it",
+        )
+        return None
     if pou is not None and pou.kind == "PROGRAM":
         ops.report(
             at,

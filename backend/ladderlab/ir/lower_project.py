@@ -20,7 +20,7 @@ from ..iec.literals import decode_duration
 from ..model.diagnostics import Diagnostic, has_errors
 from ..model.project import Pou as ModelPou
 from ..model.project import Project
-from ..model.validate import validate_project
+from ..model.validate import PLANT_TASK, validate_project
 from ..st import types as st_types
 from ..st.checker import check_project
 from ..st.symbols import CheckResult, PouInfo, Symbol
@@ -105,7 +105,8 @@ def lower_pou(pou: ModelPou, info: PouInfo, checked: CheckResult, diagnostics: l
             blocks[0].statements[:0] = preamble
         else:
             blocks.insert(0, Block(preamble, Origin(ctx.name)))
-    return Pou(ctx.name, _KIND[info.kind], ctx.slots, blocks, return_type, pou.language)  # type: ignore[arg-type]
+    kind = _KIND[info.kind]
+    return Pou(ctx.name, kind, ctx.slots, blocks, return_type, pou.language, pou.kind == "plant")  # type: ignore[arg-type]
 
 
 def _slot(symbol: Symbol, ctx: PouContext, file: str) -> Slot | None:
@@ -146,10 +147,13 @@ def edge_preamble(ctx: PouContext) -> list[Stmt]:
 
 
 def lower_tasks(project: Project, pous: dict[str, Pou]) -> list[TaskSpec]:
-    """``project.tasks`` with intervals in ms; without tasks, ``DEFAULT_TASK`` runs every PROGRAM."""
+    """``project.tasks`` with intervals in ms (without tasks, ``DEFAULT_TASK`` runs every PROGRAM), and the
+    plant task running the plants (engine/tasks.py: first in every scan)."""
+    plants = [name for name, pou in pous.items() if pou.plant]
+    plant_task = [TaskSpec(PLANT_TASK, DEFAULT_INTERVAL_MS, 0, plants, plant=True)] if plants else []
     if not project.tasks:
-        programs = [name for name, pou in pous.items() if pou.kind == "program"]
-        return [TaskSpec(DEFAULT_TASK, DEFAULT_INTERVAL_MS, 0, programs)] if programs else []
+        programs = [name for name, pou in pous.items() if pou.kind == "program" and not pou.plant]
+        return ([TaskSpec(DEFAULT_TASK, DEFAULT_INTERVAL_MS, 0, programs)] if programs else []) + plant_task
     tasks = []
     for task in project.tasks:
         try:
@@ -164,4 +168,4 @@ def lower_tasks(project: Project, pous: dict[str, Pou]) -> list[TaskSpec]:
                 [name.upper() for name in task.programs if name.upper() in pous],
             )
         )
-    return tasks
+    return tasks + plant_task

@@ -268,14 +268,19 @@ class Pou:
     blocks: list[Block]
     return_type: IrType | None = None
     language: Literal["st", "ld", "fbd"] = "st"
+    plant: bool = False  # a program that models the process: run by the plant task, never called
 
 
 @dataclass
 class TaskSpec:
+    """A task: its programs run every ``interval_ms`` in ``priority`` order. The plant task (``plant``) runs
+    the plants first in every scan, whichever control tasks are due (engine/tasks.py)."""
+
     name: str
     interval_ms: int
     priority: int
     programs: list[str]
+    plant: bool = False
 
 
 @dataclass

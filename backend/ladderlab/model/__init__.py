@@ -20,6 +20,7 @@ from .fbd import (
     Position,
     Wire,
 )
+from .hmi import Panel
 from .ld import Box, Coil, Compare, Contact, Jump, LdBody, LdElement, LdNetwork, Parallel, Return
 from .project import PROJECT_FORMAT, Pou, Project, Task
 
@@ -44,6 +45,7 @@ __all__ = [
     "LdElement",
     "LdNetwork",
     "OutputNode",
+    "Panel",
     "Parallel",
     "PinFlags",
     "PinRef",

@@ -155,6 +155,9 @@ class SimulationInfo(BaseModel):
         description="Instance paths of every program and function block by POU name (upper case), e.g. "
         '{"BLINKER": ["MAIN.BLINK"]}: the instances an online view can show.',
     )
+    speed: float = Field(default=1.0, description="The time scale: scans are paced at this times real time.")
+    pending_inputs: int = Field(default=0, description="Input events waiting for the start of the next scan.")
+    until: str | None = Field(default=None, description="What a run until waits for (a condition or a time).")
 
 
 class ResetSimulation(BaseModel):

@@ -27,6 +27,9 @@ MIN_INTERVAL_MS = 20
 MAX_INTERVAL_MS = 1000
 MAX_TRACE_PATHS = 20
 MAX_TRACE_SAMPLES = 10_000
+#: The time scale of a running simulation, times real time (the virtual clock is the same at any scale).
+MIN_SPEED = 0.1
+MAX_SPEED = 100.0
 
 
 class _Request(BaseModel):
@@ -147,6 +150,63 @@ class SingleCycle(_Request):
     type: Literal["single_cycle"]
 
 
+class PanelInput(_Request):
+    """A panel widget's action (a press, a release, a new value): written to ``path`` at the start of the next
+    scan, as a recorded input event; queued while the simulation is stopped or halted. At most one panel
+    event per variable applies at a scan start, so a click shorter than a scan still lasts one scan."""
+
+    type: Literal["panel"]
+    path: str
+    value: WriteValue
+    panel: str | None = Field(default=None, max_length=64, description="The panel's name (for the log).")
+    widget: str | None = Field(default=None, max_length=64, description="The widget's id (for the log).")
+
+
+class Inject(_Request):
+    """Inject a fault into a signal between plant and program, from the next scan on (a recorded input event):
+    ``stuck_true``/``stuck_false`` (BOOL), ``stuck`` (a number held at ``value``, default its value now),
+    ``open`` (an open circuit reads FALSE or 0), ``noisy`` (a BOOL flips with probability ``rate``, default 0.1;
+    a number strays by up to ``amplitude``, default 1.0; from a generator seeded by ``seed``, chosen by the
+    server when not given, so the noise is the same on replay)."""
+
+    type: Literal["inject"]
+    path: str
+    mode: Literal["stuck_true", "stuck_false", "stuck", "open", "noisy"]
+    value: WriteValue | None = None
+    amplitude: float | None = Field(default=None, ge=0)
+    rate: float | None = Field(default=None, ge=0, le=1)
+    seed: int | None = Field(default=None, ge=0, le=2**31 - 1)
+
+
+class InjectClear(_Request):
+    """Remove the fault injected into ``path`` (every injected fault when no path), from the next scan on."""
+
+    type: Literal["inject_clear"]
+    path: str | None = None
+
+
+class Speed(_Request):
+    """Pace the scans at ``scale`` times real time (0.1 to 100); the virtual clock and every value are the same."""
+
+    type: Literal["speed"]
+    scale: float = Field(ge=MIN_SPEED, le=MAX_SPEED)
+
+
+class RunUntil(_Request):
+    """Run until ``condition`` holds after a scan (``Motor``, ``NOT Alarm``, ``Tank.Level >= 80``, ``T1.ET > T#2s``)
+    or until every scan due by virtual ``time_ms`` has run; then stop. Exactly one of them."""
+
+    type: Literal["run_until"]
+    condition: str | None = Field(default=None, max_length=400)
+    time_ms: float | None = Field(default=None, gt=0)
+
+    @model_validator(mode="after")
+    def _one(self) -> RunUntil:
+        if (self.condition is None) == (self.time_ms is None):
+            raise ValueError("give a condition or a time_ms (one of them)")
+        return self
+
+
 class TraceTrigger(_Request):
     """When a trace starts recording: at the first scan that ends with ``path`` past the condition.
 
@@ -202,7 +262,12 @@ ClientMessage = Annotated[
     | Stop
     | SingleCycle
     | TraceStart
-    | TraceStop,
+    | TraceStop
+    | PanelInput
+    | Inject
+    | InjectClear
+    | Speed
+    | RunUntil,
     Field(discriminator="type"),
 ]
 
@@ -246,6 +311,9 @@ class Values(BaseModel):
     time_ms: float
     changed: dict[str, Value]
     forced: list[str] = Field(description="Every forced variable (canonical paths), whether subscribed or not.")
+    injected: dict[str, str] = Field(
+        default_factory=dict, description="Every variable with an injected fault (canonical paths): the fault's mode."
+    )
     power: dict[str, Value]
     types: dict[str, DisplayType] = Field(
         default_factory=dict,
@@ -291,12 +359,13 @@ class TraceData(BaseModel):
 
 
 #: What an online log entry is about, so the log can be filtered (seed ON-15).
-LogKind = Literal["state", "write", "force", "release", "breakpoint", "watchdog", "fault", "system"]
+LogKind = Literal["state", "write", "force", "release", "panel", "inject", "breakpoint", "watchdog", "fault", "system"]
 
 
 class Log(BaseModel):
-    """An entry of the online log (ON-15): run/stop, writes, forces set and released, breakpoint hits,
-    watchdog trips, runtime errors, and notes of the server (``system``: dropped messages, deletion)."""
+    """An entry of the online log (ON-15): run/stop, writes, forces set and released, panel events and injected
+    faults (``panel``, ``inject``: at the scan they applied), breakpoint hits, watchdog trips, runtime errors,
+    and notes of the server (``system``: dropped messages, deletion)."""
 
     type: Literal["log"]
     kind: LogKind = "system"

@@ -7,11 +7,14 @@ from typing import Any, Literal
 from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validator, model_validator
 
 from .fbd import FbdBody
+from .hmi import Panel
 from .ld import LdBody
 
 PROJECT_FORMAT = "ladderlab/1"
 
-PouKind = Literal["program", "function_block", "function"]
+#: ``plant``: a program that models the process (reads the control program's outputs, writes its inputs); it
+#: runs in the plant task before the control tasks of every scan and cannot be called from control code.
+PouKind = Literal["program", "function_block", "function", "plant"]
 Language = Literal["st", "ld", "fbd"]
 
 BODY_TYPE_BY_LANGUAGE: dict[str, type] = {"st": str, "ld": LdBody, "fbd": FbdBody}
@@ -87,8 +90,26 @@ class Project(BaseModel):
     globals: str = Field(default="", description="ST text of VAR_GLOBAL ... END_VAR blocks.")
     pous: list[Pou] = Field(default_factory=list)
     tasks: list[Task] = Field(default_factory=list)
+    panels: list[Panel] = Field(default_factory=list, description="Operator panels (hmi/<name>.json), in order.")
+    exercise: str = Field(
+        default="", description="Markdown: the statement of the exercise this project is (stored as EXERCISE.md)."
+    )
 
-    _normalise_texts = field_validator("types", "globals", mode="before")(_strip_trailing_whitespace)
+    _normalise_texts = field_validator("types", "globals", "exercise", mode="before")(_strip_trailing_whitespace)
+
+    @field_validator("panels")
+    @classmethod
+    def _unique_panels(cls, panels: list[Panel]) -> list[Panel]:
+        seen: set[str] = set()
+        for panel in panels:
+            if panel.name.upper() in seen:
+                raise ValueError(f"two panels are called {panel.name!r} (names ignore case: they are file names)")
+            seen.add(panel.name.upper())
+        return panels
+
+    def panel(self, name: str) -> Panel | None:
+        key = name.upper()
+        return next((p for p in self.panels if p.name.upper() == key), None)
 
     def pou(self, name: str) -> Pou | None:
         """The POU called ``name`` (IEC names are case-insensitive)."""

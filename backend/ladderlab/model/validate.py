@@ -8,6 +8,8 @@ from .diagnostics import Diagnostic
 from .names import pou_name_problem
 from .project import Project
 
+#: The task that runs the plants (engine/tasks.py uses the same name).
+PLANT_TASK = "PLANTS"
 _TIME_LITERAL = re.compile(r"^(T|TIME)#-?(\d+(\.\d+)?(d|h|ms|m|s|us|ns)_?)+$", re.IGNORECASE)
 
 
@@ -54,6 +56,14 @@ def _validate_tasks(project: Project) -> list[Diagnostic]:
                 Diagnostic(code="DUPLICATE-TASK", json_path=where, message=f"task {task.name!r} is declared twice")
             )
         names.add(task.name.upper())
+        if task.name.upper() == PLANT_TASK:
+            out.append(
+                Diagnostic(
+                    code="RESERVED-TASK",
+                    json_path=f"{where}.name",
+                    message=f"the task name {PLANT_TASK} is reserved for the plant task; choose another name",
+                )
+            )
         if not _TIME_LITERAL.match(task.interval.replace(" ", "")):
             out.append(
                 Diagnostic(
@@ -73,12 +83,17 @@ def _validate_tasks(project: Project) -> list[Diagnostic]:
                     )
                 )
             elif pou.kind != "program":
+                why = (
+                    "a plant: plants run in the plant task, before the control tasks of every scan"
+                    if pou.kind == "plant"
+                    else f"a {pou.kind.replace('_', ' ')}"
+                )
                 out.append(
                     Diagnostic(
                         code="NOT-A-PROGRAM",
                         json_path=f"{where}.programs[{j}]",
                         pou=pou.name,
-                        message=f"task {task.name} can only run programs; {pou.name} is a {pou.kind.replace('_', ' ')}",
+                        message=f"task {task.name} can only run programs; {pou.name} is {why}",
                     )
                 )
     return out

@@ -10,6 +10,7 @@ from typing import Annotated
 
 from fastapi import APIRouter, Query, Request, Response, status
 
+from ..interchange.plants import for_export
 from ..interchange.plcopen.exporter import PlcopenExportError, export_plcopen
 from ..interchange.plcopen.importer import import_plcopen
 from ..interchange.st.export import export_pou_st
@@ -29,12 +30,14 @@ def export_st(
     name: str,
     workspace: WorkspaceDep,
     pou: Annotated[str | None, Query(description="one POU; default: the whole project")] = None,
+    with_plants: Annotated[bool, Query(description="the whole project: keep its plants (as programs)")] = False,
 ) -> StExport:
-    """The saved project (or one POU) as IEC ST that runs identically; each exported line maps to its network."""
+    """The saved project (or one POU) as IEC ST that runs identically; each exported line maps to its network.
+    The whole project's control program leaves the plants out unless ``with_plants``."""
     project = workspace.load(name).project
     if pou is not None and project.pou(pou) is None:
         raise ApiError(404, f"project {name!r} has no POU {pou!r}")
-    result = export_pou_st(project, pou) if pou is not None else export_project_st(project)
+    result = export_pou_st(project, pou) if pou is not None else export_project_st(for_export(project, with_plants))
     if has_errors(result.diagnostics):
         raise ApiError(422, "the project cannot be exported as ST until these errors are fixed", result.diagnostics)
     return StExport(
@@ -47,11 +50,15 @@ def export_st(
 
 
 @router.get("/api/projects/{name}/export/plcopen", response_class=Response, responses=responses(404, 422))
-def export_xml(name: str, workspace: WorkspaceDep) -> Response:
-    """The saved project as a PLCopen TC6 v2.01 document, as a download."""
+def export_xml(
+    name: str,
+    workspace: WorkspaceDep,
+    with_plants: Annotated[bool, Query(description="keep the project's plants (as programs)")] = False,
+) -> Response:
+    """The saved project as a PLCopen TC6 v2.01 document, as a download (its plants only ``with_plants``)."""
     project = workspace.load(name).project
     try:
-        data = export_plcopen(project)
+        data = export_plcopen(for_export(project, with_plants))
     except PlcopenExportError as error:
         raise ApiError(422, "the project cannot be exported as PLCopen XML", error.diagnostics) from None
     return Response(

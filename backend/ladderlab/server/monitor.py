@@ -111,6 +111,7 @@ class MonitorClient:
         self.last_values: dict[str, object] = {}
         self.last_power: dict[str, object] = {}
         self.last_forced: list[str] = []
+        self.last_injected: dict[str, str] = {}
         self.last_scan = -1
         # trace: its chunks are taken at the values interval while one runs
         self.tracing = False
@@ -347,8 +348,11 @@ class MonitorClient:
         self.last_values.update(changed)
         self.last_power.update(power)
         forced = list(frame.forced)
-        if not (full or changed or power or forced != self.last_forced or frame.scan != self.last_scan):
+        injected = frame.injected
+        news = forced != self.last_forced or injected != self.last_injected
+        if not (full or changed or power or news or frame.scan != self.last_scan):
             return None
+        self.last_injected = injected
         types = dict(self.watch.paths) if full and self.watch is not None else {}
         self.full, self.last_forced, self.last_scan = False, forced, frame.scan
         return m.Values.model_construct(
@@ -357,6 +361,7 @@ class MonitorClient:
             time_ms=frame.time_ms,
             changed=changed,
             forced=forced,
+            injected=injected,
             power=power,
             types=types,
         )

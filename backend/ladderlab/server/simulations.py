@@ -9,6 +9,7 @@ most ``answer_s``, so they answer at once whatever the program does.
 
 from __future__ import annotations
 
+import json
 from typing import Annotated, Any
 
 from fastapi import APIRouter, Body, Depends, Request, Response, status
@@ -106,6 +107,27 @@ def single_cycle(sim_id: str, registry: RegistryDep) -> SimulationInfo:
     return _command(registry.get(sim_id), "single_cycle")
 
 
+@router.get(
+    "/api/simulations/{sim_id}/inputs",
+    response_class=Response,
+    responses={**responses(404, 409), 200: {"content": {"application/x-ndjson": {}}}},
+)
+def inputs(sim_id: str, registry: RegistryDep) -> Response:
+    """The input events the simulation applied (writes, forces, releases, panel events, injected faults, resets),
+    oldest first, one JSON object per line with the scan each applied in: ``ladderlab run --events`` replays them,
+    so a panel session reproduces on the command line. The last 100,000 are kept."""
+    entry = registry.get(sim_id)
+    try:
+        answer = entry.handle.inputs()
+    except CommandError as error:
+        raise ApiError(409, error.message) from None
+    text = "".join(json.dumps(line) + "\n" for line in answer["inputs"])
+    headers = {"Content-Disposition": f'attachment; filename="{entry.project}-inputs.jsonl"'}
+    if answer["dropped"]:
+        headers["X-Dropped-Inputs"] = str(answer["dropped"])
+    return Response(text, media_type="application/x-ndjson", headers=headers)
+
+
 @router.delete(
     "/api/simulations/{sim_id}",
     status_code=status.HTTP_204_NO_CONTENT,
@@ -145,4 +167,7 @@ def simulation_info(entry: SimulationEntry, info: dict[str, Any] | None = None) 
         clients=entry.clients,
         created=modified_at(entry.created),
         instances=handle.instances,
+        speed=info.get("speed", 1.0),
+        pending_inputs=info.get("pending_inputs", 0),
+        until=info.get("until"),
     )

@@ -60,9 +60,10 @@ class Frame:
     values: dict[str, object]  # canonical path -> value: the union of every client's watch
     power: dict[str, dict[str, object]]  # canonical instance -> element -> state (None: did not run)
     forced: tuple[str, ...]
+    injected: dict[str, str]  # canonical path -> mode of the fault injected there
 
 
-EMPTY_FRAME = Frame(0, 0, 0.0, 0.0, {}, {}, ())
+EMPTY_FRAME = Frame(0, 0, 0.0, 0.0, {}, {}, (), {})
 
 
 @dataclass(frozen=True)
@@ -327,8 +328,9 @@ class SimulationHandle:
                     for instance, states in message["power"].items():
                         power[instance] = {**power.get(instance, {}), **states}
             forced = tuple(message["forced"]) if message["forced"] is not None else old.forced
+            injected = message["injected"] if message.get("injected") is not None else old.injected
             self.frame = Frame(
-                message["seq"], message["scan"], message["time_ms"], message["wall"], values, power, forced
+                message["seq"], message["scan"], message["time_ms"], message["wall"], values, power, forced, injected
             )
             self.info = message["info"]
             listeners = list(self._listeners)
@@ -429,6 +431,10 @@ class SimulationHandle:
     async def start_trace(self, key: int, **request: Any) -> None:
         self.traces.open(key)
         await self.acall("trace_start", owner=key, **request)
+
+    def inputs(self) -> dict[str, Any]:
+        """The input events the simulation applied (``SimRunner.inputs``), as ``--events`` lines."""
+        return self.call("inputs", timeout=self.settings.build_timeout_s)
 
     def inspect(self, paths: list[str] = (), probes: list[str] = ()) -> dict[str, Any]:  # type: ignore[assignment]
         """The simulation's whole state (tests, diagnosis): see ``SimRunner.inspect``."""

@@ -11,7 +11,8 @@ What the runner has to say goes to a ``Sink``:
 
 * ``status``: the state (running, stopped, halted with where, faulted) whenever it changes;
 * ``log``: entries of the online log (ON-15): run/stop/reset/single cycle, writes, forces,
-  releases, breakpoint hits, watchdog trips and runtime errors, with kind, scan and virtual time;
+  releases, panel events and injected faults (as they apply, with their scan), breakpoint hits,
+  watchdog trips and runtime errors, with kind, scan and virtual time;
 * ``frame``: after scans at most every ``publish_s``, and at once after a command or a change of
   state (so a halt shows the values of the halt point): what changed since the previous frame in
   the values and element states that some client watches, the forced paths, the trace samples
@@ -21,6 +22,11 @@ What the runner has to say goes to a ``Sink``:
 Every message is plain data (dicts, lists, strings, numbers), so it can cross a process
 boundary or a network (docs/architecture.md, "Online mode").
 
+Every input goes to the engine as an ``InputEvent`` (``engine/inputs.py``); the runner keeps the
+last ``journal_size`` applied ones (``inputs``: the lines ``ladderlab run --events`` replays).
+Time runs at ``speed`` times real time (0.1 to 100; the virtual clock is the same at any speed),
+and ``run_until`` runs until a condition holds after a scan (``conditions.py``) or a virtual time.
+
 The simulation runs the monitor variant and switches to the debug variant only while a
 breakpoint is set or a scan is halted (a step), between scans, keeping all state
 (``Simulation.use_variant``; ``_fit_variant``).
@@ -29,6 +35,7 @@ breakpoint is set or a scan is halted (a step), between scans, keeping all state
 from __future__ import annotations
 
 import logging
+import random
 import threading
 import time
 from collections import deque
@@ -39,12 +46,14 @@ from typing import Any, ClassVar, Protocol
 from ..engine.codegen.faults import Fault
 from ..engine.compile import CompileError
 from ..engine.debug import Halt
+from ..engine.inputs import AppliedInput, InputEvent, InputRefused
 from ..engine.paths import Location, UnknownPath
 from ..engine.simulation import Simulation
 from ..engine.tasks import Pacer
 from ..ir import nodes as ir
 from ..ir import types as t
-from ..model.monitor import At, DisplayType, Log, TraceTrigger
+from ..model.monitor import MAX_SPEED, MIN_SPEED, At, DisplayType, Log, TraceTrigger
+from .conditions import BadCondition, Condition, parse_condition
 from .trace import TraceBook, TraceRefused, plan_trace
 
 log = logging.getLogger(__name__)
@@ -149,6 +158,7 @@ class SimRunner:
         speed: float = 1.0,
         publish_s: float = 0.02,
         clock: Callable[[], float] = time.monotonic,
+        journal_size: int = 100_000,
     ) -> None:
         self.sim = sim
         self.sink = sink
@@ -179,7 +189,14 @@ class SimRunner:
         self._sent_values: dict[str, object] = {}
         self._sent_power: dict[str, dict[str, object]] = {}
         self._sent_forced: list[str] | None = None
+        self._sent_injected: dict[str, str] | None = None
         self._seq = 0
+        # inputs: the journal of applied ones; run until
+        self.journal: deque[AppliedInput] = deque(maxlen=journal_size)
+        self.journal_dropped = 0
+        sim.on_input = self._applied
+        self._until: Condition | None = None
+        self._until_ms: float | None = None
 
     # ------------------------------------------------------------------ other threads
 
@@ -251,6 +268,9 @@ class SimRunner:
             "overruns": self._overruns + (self._pacer.overruns if self._pacer is not None else 0),
             "fault": self._fault_report[1],
             "variant": sim.variant,
+            "speed": self.speed,
+            "pending_inputs": len(sim.pending),
+            "until": self._until_text(),
         }
 
     def _settle(self, publish: bool = False) -> None:
@@ -298,13 +318,13 @@ class SimRunner:
             except CompileError as error:
                 raise CommandError("bad_state", f"cannot debug this program: {error}") from None
 
-    def _log(self, kind: str, level: str, message: str, at: dict | None = None) -> None:
+    def _log(self, kind: str, level: str, message: str, at: dict | None = None, scan: int | None = None) -> None:
         entry = Log(
             type="log",
             kind=kind,  # type: ignore[arg-type]
             level=level,  # type: ignore[arg-type]
             message=message,
-            scan=self.sim.scan_count,
+            scan=self.sim.scan_count if scan is None else scan,
             time_ms=self.sim.time_ms,
         )
         data = entry.model_dump()
@@ -351,6 +371,9 @@ class SimRunner:
         forced = list(sim.forced)
         new_forced = full or forced != self._sent_forced
         self._sent_forced = forced
+        injected = sim.injected
+        new_injected = full or injected != self._sent_injected
+        self._sent_injected = injected
         self._full = False
         self._seq += 1
         self.sink.frame(
@@ -363,6 +386,7 @@ class SimRunner:
                 "values": changed,
                 "power": power,
                 "forced": forced if new_forced else None,
+                "injected": injected if new_injected else None,
                 "traces": self.traces.take_all(),
                 "info": self.info(),
             }
@@ -378,6 +402,8 @@ class SimRunner:
 
     def _set_running(self, running: bool) -> None:
         now = self.clock()
+        if not running:
+            self._until, self._until_ms = None, None
         if running and not self._running:
             self._run_since = now
             self._pacer = Pacer(
@@ -495,6 +521,100 @@ class SimRunner:
         if count:
             self._log("release", "info", f"released all forces ({count})")
 
+    # ------------------------------------------------------------------ panels, injected faults, time
+
+    def _submit(self, event: InputEvent) -> None:
+        try:
+            self.sim.submit(event)
+        except (UnknownPath, InputRefused) as error:
+            raise CommandError("bad_path" if isinstance(error, UnknownPath) else "bad_value", str(error)) from None
+        except ValueError as error:
+            raise CommandError("bad_value", str(error)) from None
+
+    def panel(self, path: str, value: object, panel: str | None = None, widget: str | None = None) -> None:
+        """A panel widget's action (press, release, a new value): applied at the start of the next scan."""
+        source = f"panel {panel or '?'}/{widget}" if widget else (f"panel {panel}" if panel else "panel")
+        self._submit(InputEvent("panel", path, value, source=source))  # type: ignore[arg-type]
+
+    def inject(
+        self,
+        path: str,
+        mode: str,
+        value: object = None,
+        amplitude: float | None = None,
+        rate: float | None = None,
+        seed: int | None = None,
+    ) -> None:
+        """Inject a fault into a signal from the next scan on; a noisy fault without a seed gets one (recorded)."""
+        if mode == "noisy" and seed is None:
+            seed = random.SystemRandom().randrange(1 << 31)
+        event = InputEvent("fault", path, value, mode=mode, amplitude=amplitude, rate=rate, seed=seed)  # type: ignore[arg-type]
+        self._submit(event)
+
+    def inject_clear(self, path: str | None = None) -> None:
+        """Remove the fault from a signal (every fault: no path) from the next scan on."""
+        if path is not None and self._location(path).path not in self.sim.injected:
+            raise CommandError("bad_path", f"{self._location(path).path} has no injected fault")
+        self._submit(InputEvent("clear_fault", path))
+
+    def _applied(self, applied: AppliedInput) -> None:
+        """Every input the engine applies: kept in the journal; panel events and faults logged with their scan."""
+        if len(self.journal) == self.journal.maxlen:
+            self.journal_dropped += 1
+        self.journal.append(applied)
+        event = applied.event
+        if event.kind == "panel":
+            self._log("panel", "info", f"{event.source}: {event.path} := {_written(event.value)}", scan=applied.scan)
+        elif event.kind == "fault":
+            self._log("inject", "warning", f"fault injected: {_fault_text(event)}", scan=applied.scan)
+        elif event.kind == "clear_fault":
+            what = f"the fault on {event.path}" if event.path else "every injected fault"
+            self._log("inject", "info", f"removed {what}", scan=applied.scan)
+
+    def inputs(self) -> dict[str, Any]:
+        """The applied inputs kept (oldest first, as ``--events`` lines) and how many older ones were dropped."""
+        return {"inputs": [applied.to_json() for applied in self.journal], "dropped": self.journal_dropped}
+
+    def set_speed(self, scale: float) -> None:
+        """Pace the scans at ``scale`` times real time; the virtual clock and every value stay the same."""
+        if not MIN_SPEED <= scale <= MAX_SPEED:
+            raise CommandError(
+                "bad_value", f"the time scale goes from {MIN_SPEED:g}x to {MAX_SPEED:g}x, not {scale:g}x"
+            )
+        self.speed = scale
+        if self._pacer is not None:
+            self._pacer.set_speed(scale)
+        self._log("state", "info", f"time scale {scale:g}x real time")
+
+    def run_until(self, condition: str | None = None, time_ms: float | None = None) -> None:
+        """Run until ``condition`` holds after a scan, or until every scan due by virtual ``time_ms`` has run."""
+        if (condition is None) == (time_ms is None):
+            raise CommandError("bad_value", "run until needs a condition or a virtual time (one of them)")
+        until = None
+        if condition is not None:
+            try:
+                until = parse_condition(condition, self.sim)
+            except BadCondition as error:
+                raise CommandError("bad_value", str(error)) from None
+        elif not time_ms > self.sim.time_ms:  # type: ignore[operator]
+            raise CommandError("bad_value", f"virtual time is already {self.sim.time_ms:g} ms, past {time_ms:g} ms")
+        self.start()
+        self._until, self._until_ms = until, time_ms
+        self._log("state", "info", f"run until {self._until_text()}")
+
+    def _until_text(self) -> str | None:
+        if self._until is not None:
+            return self._until.text
+        return f"{self._until_ms:g} ms" if self._until_ms is not None else None
+
+    def _reached(self) -> str | None:
+        """Why a run until ends after this scan (None: it goes on)."""
+        if self._until is not None and self._until.holds(self.sim):
+            return f"{self._until.text} holds"
+        if self._until_ms is not None and self.sim.next_scan_time() > self._until_ms:
+            return f"virtual time {self._until_ms:g} ms reached"
+        return None
+
     def inspect(self, paths: list[str] = (), probes: list[str] = ()) -> dict[str, Any]:  # type: ignore[assignment]
         """The whole state, for tests and diagnosis: every variable, forces, breakpoints, the halt, the variant."""
         sim = self.sim
@@ -502,6 +622,8 @@ class SimRunner:
             **self.info(),
             "snapshot": sim.snapshot(),
             "forced": sim.forced,
+            "injected": sim.injected,
+            "pending": [event.to_json() for event in sim.pending],
             "breakpoints": sorted(sim.debugger.breakpoints) if sim.debugger is not None else [],
             "halted": at_halt(sim.halted).model_dump() if sim.halted is not None else None,
             "values": {path: self._read(path) for path in paths},
@@ -617,6 +739,12 @@ class SimRunner:
         "trace_start": start_trace,
         "trace_stop": stop_trace,
         "inspect": inspect,
+        "panel": panel,
+        "inject": inject,
+        "inject_clear": inject_clear,
+        "inputs": inputs,
+        "speed": set_speed,
+        "run_until": run_until,
     }
 
 
@@ -630,6 +758,19 @@ def _coerced(method: Callable[[str, object], None], path: str, value: object) ->
 def _written(value: object) -> str:
     """A written value as the user gave it (IEC literal text as typed, JSON values as IEC literals)."""
     return value if isinstance(value, str) else value_text(value)
+
+
+def _fault_text(event: InputEvent) -> str:
+    """An injected fault as the log says it: ``LEVELHIGH stuck FALSE``, ``LEVEL noisy (seed 7)``."""
+    mode = {"stuck_true": "stuck TRUE", "stuck_false": "stuck FALSE", "open": "open circuit"}.get(event.mode or "")
+    if mode is None and event.mode == "stuck":
+        mode = f"stuck at {_written(event.value)}"
+    if mode is None:
+        extra = [f"seed {event.seed}"]
+        extra += [f"amplitude {event.amplitude:g}"] if event.amplitude is not None else []
+        extra += [f"rate {event.rate:g}"] if event.rate is not None else []
+        mode = f"noisy ({', '.join(extra)})"
+    return f"{event.path} {mode}"
 
 
 def _where(at: At | None) -> str:
@@ -665,5 +806,10 @@ class _Scans:
 
     def cycle(self, n: int = 1) -> int:
         done = self.sim.cycle(n)
-        self.runner._settle()
+        runner = self.runner
+        reached = runner._reached() if done and (runner._until or runner._until_ms is not None) else None
+        if reached is not None:
+            runner._log("state", "info", f"run until: {reached} after scan {self.sim.scan_count - 1}: stopped")
+            runner._set_running(False)
+        runner._settle()
         return done

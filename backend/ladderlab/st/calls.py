@@ -81,6 +81,15 @@ def _pou_call(checker: Any, node: ast.Call, pou: PouInfo, statement: bool) -> Ty
             node.callee,
         )
         return ERROR
+    if pou.plant:
+        _args_untyped(checker, node)
+        checker.report(
+            "ST-PLANT",
+            f"{pou.name} is a plant: it models the process and runs in the plant task before every scan; "
+            "control code cannot call it (read and write the signals it shares instead)",
+            node.callee,
+        )
+        return ERROR
     if pou.kind == "PROGRAM":
         if checker.pou is not None and checker.pou.kind != "PROGRAM":
             checker.report(

@@ -23,7 +23,7 @@ from .rules import assignable_or_report, constant_value
 from .symbols import CheckResult, PouInfo, Symbol, TypeDef
 from .types import ERROR, Type
 
-_KIND = {"program": "PROGRAM", "function_block": "FUNCTION_BLOCK", "function": "FUNCTION"}
+_KIND = {"program": "PROGRAM", "function_block": "FUNCTION_BLOCK", "function": "FUNCTION", "plant": "PROGRAM"}
 # Table 3.11 (VAR-11): which variable classes each POU kind may declare.
 _ALLOWED = {
     "PROGRAM": {"VAR", "VAR_TEMP", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_EXTERNAL"},
@@ -113,6 +113,7 @@ class ProjectChecker:
                     None,
                 )
             info = self.result.pous[upper] = PouInfo(pou.name, _KIND[pou.kind], pou.language, None)
+            info.plant = pou.kind == "plant"
             if not isinstance(pou.body, str):  # LD boxes and FBD blocks: edges of the call graph (POU-02)
                 info.calls |= pou.body.calls()
 
@@ -357,6 +358,13 @@ class ProjectChecker:
             )
         if decl.init is not None and block.kind in ("VAR_EXTERNAL", "VAR_IN_OUT"):
             report("ST-DECL", f"a {block.kind} variable cannot have an initial value (VAR-83)", decl.init)
+        if isinstance(ty, t.FbType) and ty.pou is not None and ty.pou.plant:
+            report(
+                "ST-PLANT",
+                f"{ty.pou.name} is a plant: it runs in the plant task before every scan and cannot be "
+                "declared as a variable",
+                decl,
+            )
         if isinstance(ty, t.FbType) and pou is not None and pou.kind == "FUNCTION":
             report("ST-DECL", f"a function has no memory, so it cannot contain the instance of {ty.name} (ST-57)", decl)
         if block.constant and decl.init is None and block.kind != "VAR_EXTERNAL":

@@ -56,6 +56,7 @@ class PouInfo:
     symbols: dict[str, Symbol] = field(default_factory=dict)
     body: list[ast.Stmt] | None = None
     calls: set[str] = field(default_factory=set)
+    plant: bool = False  # a PROGRAM that models the process: run by the plant task, never called
 
     def parameters(self, *classes: str) -> list[Symbol]:
         wanted = classes or PARAMETER_CLASSES

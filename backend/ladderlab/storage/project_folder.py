@@ -6,9 +6,12 @@ Layout::
     types.st            TYPE ... END_TYPE blocks
     globals.st          VAR_GLOBAL ... END_VAR blocks
     pous/<name>.st      ST POUs as complete IEC text (PROGRAM ... END_PROGRAM)
+    pous/<name>.plant.st ST plants (a PROGRAM in IEC text; the file name makes it a plant)
     pous/<name>.ld.json / pous/<name>.fbd.json   graphical POUs
     pous/<name>.st.json ST POUs whose text cannot be split back exactly (e.g. a VAR block
                         without END_VAR while the user is still typing); never loses a character
+    hmi/<name>.json     operator panels (project.json lists their order)
+    EXERCISE.md         the statement of the exercise, when the project is one
 
 JSON is pretty-printed with sorted keys so an unchanged POU gives an unchanged file.
 """
@@ -22,7 +25,7 @@ from typing import Any
 
 from pydantic import ValidationError
 
-from ..model import Diagnostic, Pou, Project
+from ..model import Diagnostic, Panel, Pou, Project
 from .errors import ProjectLoadError, validation_diagnostics
 from .st_text import StTextError, compose_pou_text, parse_pou_text, round_trips
 
@@ -30,7 +33,9 @@ PROJECT_FILE = "project.json"
 TYPES_FILE = "types.st"
 GLOBALS_FILE = "globals.st"
 POUS_DIR = "pous"
-POU_SUFFIXES = (".st", ".st.json", ".ld.json", ".fbd.json")
+POU_SUFFIXES = (".st", ".plant.st", ".st.json", ".ld.json", ".fbd.json")
+HMI_DIR = "hmi"
+EXERCISE_FILE = "EXERCISE.md"
 
 
 def dump_json(data: Any) -> str:
@@ -44,27 +49,33 @@ def _text_file(text: str) -> str:
 
 def project_files(project: Project) -> dict[str, str]:
     """Relative path -> content of every file the project is stored as."""
+    meta = {
+        "format": project.format,
+        "name": project.name,
+        "pous": [p.name for p in project.pous],
+        "tasks": [t.model_dump(mode="json", exclude_none=True) for t in project.tasks],
+    }
+    if project.panels:
+        meta["panels"] = [p.name for p in project.panels]
     files = {
-        PROJECT_FILE: dump_json(
-            {
-                "format": project.format,
-                "name": project.name,
-                "pous": [p.name for p in project.pous],
-                "tasks": [t.model_dump(mode="json", exclude_none=True) for t in project.tasks],
-            }
-        ),
+        PROJECT_FILE: dump_json(meta),
         TYPES_FILE: _text_file(project.types),
         GLOBALS_FILE: _text_file(project.globals),
     }
     for pou in project.pous:
         files.update([pou_file(pou)])
+    for panel in project.panels:
+        files[f"{HMI_DIR}/{panel.name}.json"] = dump_json(panel.model_dump(mode="json", exclude_defaults=True))
+    if project.exercise:
+        files[EXERCISE_FILE] = _text_file(project.exercise)
     return files
 
 
 def pou_file(pou: Pou) -> tuple[str, str]:
     """The stored path and content of one POU."""
     if pou.language == "st" and round_trips(pou):
-        return f"{POUS_DIR}/{pou.name}.st", compose_pou_text(pou)
+        suffix = ".plant.st" if pou.kind == "plant" else ".st"
+        return f"{POUS_DIR}/{pou.name}{suffix}", compose_pou_text(pou)
     data = pou.model_dump(mode="json", by_alias=True, exclude_none=True)
     return f"{POUS_DIR}/{pou.name}.{pou.language}.json", dump_json(data)
 
@@ -99,12 +110,14 @@ def read_project_folder(folder: Path) -> Project:
         )
         order = []
     pous = [pou for pou in (_read_pou(folder, name, problems) for name in _pou_names(folder, order)) if pou]
+    panels = _read_panels(folder, meta.get("panels", []), problems)
     data = {
         "name": meta.get("name"),
         "format": meta.get("format"),
         "tasks": meta.get("tasks", []),
         "types": _read_text(folder / TYPES_FILE),
         "globals": _read_text(folder / GLOBALS_FILE),
+        "exercise": _read_text(folder / EXERCISE_FILE),
     }
     project = None
     try:
@@ -115,7 +128,45 @@ def read_project_folder(folder: Path) -> Project:
         raise ProjectLoadError(problems)
     assert project is not None
     project.pous = pous
+    project.panels = panels
     return project
+
+
+def _read_panels(folder: Path, order: object, problems: list[Diagnostic]) -> list[Panel]:
+    """The panels in project.json order, then any other ``hmi/*.json`` (added by hand), sorted."""
+    if not isinstance(order, list) or not all(isinstance(n, str) for n in order):
+        problems.append(
+            Diagnostic(
+                code="BAD-FILE", file=PROJECT_FILE, json_path="$.panels", message="expected a list of panel names"
+            )
+        )
+        order = []
+    hmi = folder / HMI_DIR
+    found = sorted(p.name[: -len(".json")] for p in hmi.iterdir() if p.name.endswith(".json")) if hmi.is_dir() else []
+    names = list(dict.fromkeys([*order, *(n for n in found if n not in order)]))
+    panels = []
+    for name in names:
+        rel = f"{HMI_DIR}/{name}.json"
+        data = _read_json(folder / rel, rel, problems)
+        if data is None:
+            continue
+        try:
+            panel = Panel.model_validate(data)
+        except ValidationError as err:
+            problems.extend(validation_diagnostics(err, data, rel))
+            continue
+        if panel.name != name:
+            problems.append(
+                Diagnostic(
+                    code="BAD-FILE",
+                    file=rel,
+                    json_path="$.name",
+                    message=f"the file is named for panel {name!r} but holds {panel.name!r}",
+                )
+            )
+            continue
+        panels.append(panel)
+    return panels
 
 
 def _pou_names(folder: Path, order: list[str]) -> list[str]:
@@ -179,7 +230,7 @@ def _read_pou(folder: Path, name: str, problems: list[Diagnostic]) -> Pou | None
             return None
     else:
         try:
-            pou = parse_pou_text(_read_exact(path))
+            pou = parse_pou_text(_read_exact(path), plant=path.name.endswith(".plant.st"))
         except UnicodeDecodeError as err:
             problems.append(Diagnostic(code="BAD-FILE", file=rel, pou=name, message=f"not UTF-8 text: {err.reason}"))
             return None

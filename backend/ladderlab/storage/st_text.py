@@ -24,8 +24,13 @@ _TOKEN = re.compile(
 )
 
 POU_KEYWORDS = {"PROGRAM": "program", "FUNCTION_BLOCK": "function_block", "FUNCTION": "function"}
-POU_END = {"program": "END_PROGRAM", "function_block": "END_FUNCTION_BLOCK", "function": "END_FUNCTION"}
-POU_HEADER = {kind: keyword for keyword, kind in POU_KEYWORDS.items()}
+POU_END = {
+    "program": "END_PROGRAM",
+    "function_block": "END_FUNCTION_BLOCK",
+    "function": "END_FUNCTION",
+    "plant": "END_PROGRAM",  # a plant is a PROGRAM in IEC text; its file name says it is a plant
+}
+POU_HEADER = {**{kind: keyword for keyword, kind in POU_KEYWORDS.items()}, "plant": "PROGRAM"}
 VAR_SECTIONS = {
     "VAR",
     "VAR_INPUT",
@@ -113,12 +118,21 @@ def _find(words: list[Word], start: int, targets: set[str], text: str, at: int, 
     raise StTextError(message, text, at)
 
 
-def parse_pou_text(text: str) -> Pou:
-    """Read one ``pous/<name>.st`` file: exactly one POU, nothing around it but comments."""
+def parse_pou_text(text: str, plant: bool = False) -> Pou:
+    """Read one ``pous/<name>.st`` file: exactly one POU, nothing around it but comments.
+
+    ``plant``: a ``pous/<name>.plant.st`` file, whose POU must be a PROGRAM (it becomes a plant)."""
     parsed = split_source(text)
     if len(parsed.pous) != 1 or parsed.types or parsed.globals:
         raise StTextError("a POU file must hold exactly one PROGRAM, FUNCTION_BLOCK or FUNCTION", text, 0)
-    return parsed.pous[0]
+    pou = parsed.pous[0]
+    if not plant:
+        return pou
+    if pou.kind != "program":
+        raise StTextError(
+            f"a .plant.st file holds a plant, written as a PROGRAM, not a {POU_HEADER[pou.kind]}", text, 0
+        )
+    return pou.model_copy(update={"kind": "plant"})
 
 
 def _split_pou(text: str, words: list[Word]) -> Pou:
@@ -168,6 +182,6 @@ def compose_pou_text(pou: Pou) -> str:
 def round_trips(pou: Pou) -> bool:
     """Whether ``pou`` survives compose -> parse unchanged (else storage keeps it as JSON)."""
     try:
-        return parse_pou_text(compose_pou_text(pou)) == pou
+        return parse_pou_text(compose_pou_text(pou), plant=pou.kind == "plant") == pou
     except StTextError:
         return False

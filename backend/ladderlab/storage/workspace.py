@@ -15,7 +15,16 @@ from ..model import Project
 from .atomic import fsync_dir, write_atomic
 from .errors import AlreadyExistsError, ConflictError, NotFoundError
 from .names import check_pou_name, check_project_name
-from .project_folder import POU_SUFFIXES, POUS_DIR, PROJECT_FILE, project_files, read_project_folder, revision_of
+from .project_folder import (
+    EXERCISE_FILE,
+    HMI_DIR,
+    POU_SUFFIXES,
+    POUS_DIR,
+    PROJECT_FILE,
+    project_files,
+    read_project_folder,
+    revision_of,
+)
 
 LOCKS_DIR = ".locks"
 
@@ -121,13 +130,15 @@ class Workspace:
             data = content.encode("utf-8")
             if not path.is_file() or path.read_bytes() != data:
                 write_atomic(path, data)
-        pous_dir = folder / POUS_DIR
-        if pous_dir.is_dir():
-            for path in pous_dir.iterdir():
-                rel = f"{POUS_DIR}/{path.name}"
-                if path.name.endswith(POU_SUFFIXES) and rel not in files:
-                    path.unlink()
-            fsync_dir(pous_dir)
+        for subfolder, suffixes in ((POUS_DIR, POU_SUFFIXES), (HMI_DIR, (".json",))):
+            found = folder / subfolder
+            if found.is_dir():
+                for path in found.iterdir():
+                    if path.name.endswith(suffixes) and f"{subfolder}/{path.name}" not in files:
+                        path.unlink()
+                fsync_dir(found)
+        if EXERCISE_FILE not in files and (folder / EXERCISE_FILE).is_file():
+            (folder / EXERCISE_FILE).unlink()
         return revision_of(project)
 
     @contextmanager

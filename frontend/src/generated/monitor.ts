@@ -19,7 +19,12 @@ export interface MonitorProtocol {
     | Stop
     | SingleCycle
     | TraceStart
-    | TraceStop;
+    | TraceStop
+    | PanelInput
+    | Inject
+    | InjectClear
+    | Speed
+    | RunUntil;
   server: Values | Status | TraceData | Log | Error;
 }
 /**
@@ -377,6 +382,78 @@ export interface TraceStop {
   type: "trace_stop";
 }
 /**
+ * A panel widget's action (a press, a release, a new value): written to ``path`` at the start of the next
+ * scan, as a recorded input event; queued while the simulation is stopped or halted. At most one panel
+ * event per variable applies at a scan start, so a click shorter than a scan still lasts one scan.
+ *
+ * This interface was referenced by `MonitorProtocol`'s JSON-Schema
+ * via the `definition` "PanelInput".
+ */
+export interface PanelInput {
+  /**
+   * The panel's name (for the log).
+   */
+  panel?: string | null;
+  path: string;
+  type: "panel";
+  value: boolean | number | string;
+  /**
+   * The widget's id (for the log).
+   */
+  widget?: string | null;
+}
+/**
+ * Inject a fault into a signal between plant and program, from the next scan on (a recorded input event):
+ * ``stuck_true``/``stuck_false`` (BOOL), ``stuck`` (a number held at ``value``, default its value now),
+ * ``open`` (an open circuit reads FALSE or 0), ``noisy`` (a BOOL flips with probability ``rate``, default 0.1;
+ * a number strays by up to ``amplitude``, default 1.0; from a generator seeded by ``seed``, chosen by the
+ * server when not given, so the noise is the same on replay).
+ *
+ * This interface was referenced by `MonitorProtocol`'s JSON-Schema
+ * via the `definition` "Inject".
+ */
+export interface Inject {
+  amplitude?: number | null;
+  mode: "stuck_true" | "stuck_false" | "stuck" | "open" | "noisy";
+  path: string;
+  rate?: number | null;
+  seed?: number | null;
+  type: "inject";
+  value?: boolean | number | string | null;
+}
+/**
+ * Remove the fault injected into ``path`` (every injected fault when no path), from the next scan on.
+ *
+ * This interface was referenced by `MonitorProtocol`'s JSON-Schema
+ * via the `definition` "InjectClear".
+ */
+export interface InjectClear {
+  path?: string | null;
+  type: "inject_clear";
+}
+/**
+ * Pace the scans at ``scale`` times real time (0.1 to 100); the virtual clock and every value are the same.
+ *
+ * This interface was referenced by `MonitorProtocol`'s JSON-Schema
+ * via the `definition` "Speed".
+ */
+export interface Speed {
+  scale: number;
+  type: "speed";
+}
+/**
+ * Run until ``condition`` holds after a scan (``Motor``, ``NOT Alarm``, ``Tank.Level >= 80``, ``T1.ET > T#2s``)
+ * or until every scan due by virtual ``time_ms`` has run; then stop. Exactly one of them.
+ *
+ * This interface was referenced by `MonitorProtocol`'s JSON-Schema
+ * via the `definition` "RunUntil".
+ */
+export interface RunUntil {
+  condition?: string | null;
+  time_ms?: number | null;
+  type: "run_until";
+}
+/**
  * What changed in this client's subscription since the previous ``values`` message to it.
  *
  * The first message after a ``subscribe`` holds every subscribed value. ``power`` is keyed
@@ -403,6 +480,12 @@ export interface Values {
    * Every forced variable (canonical paths), whether subscribed or not.
    */
   forced: string[];
+  /**
+   * Every variable with an injected fault (canonical paths): the fault's mode.
+   */
+  injected?: {
+    [k: string]: string;
+  };
   power: {
     [k: string]:
       | boolean
@@ -518,15 +601,26 @@ export interface TraceTriggered {
   time_ms: number;
 }
 /**
- * An entry of the online log (ON-15): run/stop, writes, forces set and released, breakpoint hits,
- * watchdog trips, runtime errors, and notes of the server (``system``: dropped messages, deletion).
+ * An entry of the online log (ON-15): run/stop, writes, forces set and released, panel events and injected
+ * faults (``panel``, ``inject``: at the scan they applied), breakpoint hits, watchdog trips, runtime errors,
+ * and notes of the server (``system``: dropped messages, deletion).
  *
  * This interface was referenced by `MonitorProtocol`'s JSON-Schema
  * via the `definition` "Log".
  */
 export interface Log {
   at?: At | null;
-  kind?: "state" | "write" | "force" | "release" | "breakpoint" | "watchdog" | "fault" | "system";
+  kind?:
+    | "state"
+    | "write"
+    | "force"
+    | "release"
+    | "panel"
+    | "inject"
+    | "breakpoint"
+    | "watchdog"
+    | "fault"
+    | "system";
   level: "info" | "warning" | "error";
   message: string;
   scan?: number | null;

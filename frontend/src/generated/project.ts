@@ -2,18 +2,577 @@
  * Do not edit: change the pydantic models, run `make schema`, then `npm run gen:types`. */
 
 export interface Project {
+  /**
+   * Markdown: the statement of the exercise this project is (stored as EXERCISE.md).
+   */
+  exercise?: string;
   format?: "ladderlab/1";
   /**
    * ST text of VAR_GLOBAL ... END_VAR blocks.
    */
   globals?: string;
   name: string;
+  /**
+   * Operator panels (hmi/<name>.json), in order.
+   */
+  panels?: Panel[];
   pous?: Pou[];
   tasks?: Task[];
   /**
    * ST text of TYPE ... END_TYPE blocks.
    */
   types?: string;
+}
+/**
+ * One operator panel: ``hmi/<name>.json``.
+ *
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "Panel".
+ */
+export interface Panel {
+  /**
+   * A colour, #rrggbb.
+   */
+  background?: string;
+  /**
+   * The editor's snap in pixels; 0 places freely.
+   */
+  grid?: number;
+  height?: number;
+  /**
+   * The file name (hmi/<name>.json).
+   */
+  name: string;
+  title?: string;
+  /**
+   * @maxItems 500
+   */
+  widgets?: (
+    | PushButton
+    | ToggleSwitch
+    | SelectorSwitch
+    | EmergencyStop
+    | Lamp
+    | Multistate
+    | NumericDisplay
+    | NumericInput
+    | Slider
+    | Bar
+    | SevenSegment
+    | Label
+    | Trend
+    | Symbol
+  )[];
+  width?: number;
+}
+/**
+ * Momentary: the variable is TRUE while the button is held (FALSE while held when ``nc``).
+ *
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "PushButton".
+ */
+export interface PushButton {
+  bind: string;
+  /**
+   * A colour, #rrggbb.
+   */
+  color?: string;
+  h: number;
+  /**
+   * Unique within the panel: the widget's name in the log and in tests.
+   */
+  id: string;
+  /**
+   * The caption shown with the widget.
+   */
+  label?: string;
+  move_x?: Motion | null;
+  move_y?: Motion | null;
+  /**
+   * Normally closed: TRUE while not pressed.
+   */
+  nc?: boolean;
+  type: "push_button";
+  /**
+   * A BOOL: the widget is shown only while it is TRUE.
+   */
+  visible?: string | null;
+  w: number;
+  x: number;
+  y: number;
+}
+/**
+ * A move by a variable's value: ``min`` leaves the widget where it is placed, ``max`` moves it by ``distance``
+ * pixels (negative: left or up), values in between in proportion, values outside held at the ends.
+ *
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "Motion".
+ */
+export interface Motion {
+  distance: number;
+  max?: number;
+  min?: number;
+  path: string;
+}
+/**
+ * Two positions that stay: each click writes the other BOOL value.
+ *
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "ToggleSwitch".
+ */
+export interface ToggleSwitch {
+  bind: string;
+  h: number;
+  /**
+   * Unique within the panel: the widget's name in the log and in tests.
+   */
+  id: string;
+  /**
+   * The caption shown with the widget.
+   */
+  label?: string;
+  move_x?: Motion | null;
+  move_y?: Motion | null;
+  type: "toggle_switch";
+  /**
+   * A BOOL: the widget is shown only while it is TRUE.
+   */
+  visible?: string | null;
+  w: number;
+  x: number;
+  y: number;
+}
+/**
+ * A rotary selector of two or three positions; turning it writes the position's value.
+ *
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "SelectorSwitch".
+ */
+export interface SelectorSwitch {
+  bind: string;
+  h: number;
+  /**
+   * Unique within the panel: the widget's name in the log and in tests.
+   */
+  id: string;
+  /**
+   * The caption shown with the widget.
+   */
+  label?: string;
+  move_x?: Motion | null;
+  move_y?: Motion | null;
+  /**
+   * @minItems 2
+   * @maxItems 3
+   */
+  positions: [Position, Position] | [Position, Position, Position];
+  type: "selector_switch";
+  /**
+   * A BOOL: the widget is shown only while it is TRUE.
+   */
+  visible?: string | null;
+  w: number;
+  x: number;
+  y: number;
+}
+/**
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "ladderlab__model__hmi__Position".
+ */
+export interface Position {
+  label: string;
+  value: boolean | number | string;
+}
+/**
+ * A latching mushroom button: pressed it stays pressed until released by a second click (a turn to release).
+ * Normally closed by default, as safety circuits are: the variable is TRUE while the button is not pressed.
+ *
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "EmergencyStop".
+ */
+export interface EmergencyStop {
+  bind: string;
+  h: number;
+  /**
+   * Unique within the panel: the widget's name in the log and in tests.
+   */
+  id: string;
+  /**
+   * The caption shown with the widget.
+   */
+  label?: string;
+  move_x?: Motion | null;
+  move_y?: Motion | null;
+  nc?: boolean;
+  type: "emergency_stop";
+  /**
+   * A BOOL: the widget is shown only while it is TRUE.
+   */
+  visible?: string | null;
+  w: number;
+  x: number;
+  y: number;
+}
+/**
+ * An indicator: ``on_color`` while the BOOL is TRUE (blinking when ``blink``), ``off_color`` while FALSE.
+ *
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "Lamp".
+ */
+export interface Lamp {
+  bind: string;
+  blink?: boolean;
+  /**
+   * Half a blink period.
+   */
+  blink_ms?: number;
+  h: number;
+  /**
+   * Unique within the panel: the widget's name in the log and in tests.
+   */
+  id: string;
+  /**
+   * The caption shown with the widget.
+   */
+  label?: string;
+  move_x?: Motion | null;
+  move_y?: Motion | null;
+  /**
+   * A colour, #rrggbb.
+   */
+  off_color?: string;
+  /**
+   * A colour, #rrggbb.
+   */
+  on_color?: string;
+  type: "lamp";
+  /**
+   * A BOOL: the widget is shown only while it is TRUE.
+   */
+  visible?: string | null;
+  w: number;
+  x: number;
+  y: number;
+}
+/**
+ * A value shown as the text and colour of the first state whose value it equals (else ``default_text``).
+ *
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "Multistate".
+ */
+export interface Multistate {
+  bind: string;
+  default_text?: string;
+  h: number;
+  /**
+   * Unique within the panel: the widget's name in the log and in tests.
+   */
+  id: string;
+  /**
+   * The caption shown with the widget.
+   */
+  label?: string;
+  move_x?: Motion | null;
+  move_y?: Motion | null;
+  /**
+   * @minItems 1
+   * @maxItems 32
+   */
+  states: [State, ...State[]];
+  type: "multistate";
+  /**
+   * A BOOL: the widget is shown only while it is TRUE.
+   */
+  visible?: string | null;
+  w: number;
+  x: number;
+  y: number;
+}
+/**
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "State".
+ */
+export interface State {
+  /**
+   * A colour, #rrggbb.
+   */
+  color?: string;
+  text: string;
+  value: boolean | number | string;
+}
+/**
+ * A value as text: numbers with ``decimals`` (None: as they come) and ``unit``; TIME and dates as IEC
+ * literals (T#1s500ms), enumerations by name.
+ *
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "NumericDisplay".
+ */
+export interface NumericDisplay {
+  bind: string;
+  decimals?: number | null;
+  h: number;
+  /**
+   * Unique within the panel: the widget's name in the log and in tests.
+   */
+  id: string;
+  /**
+   * The caption shown with the widget.
+   */
+  label?: string;
+  move_x?: Motion | null;
+  move_y?: Motion | null;
+  type: "numeric_display";
+  unit?: string;
+  /**
+   * A BOOL: the widget is shown only while it is TRUE.
+   */
+  visible?: string | null;
+  w: number;
+  x: number;
+  y: number;
+}
+/**
+ * A field that writes the number (or IEC literal: T#2s) typed into it, on Enter.
+ *
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "NumericInput".
+ */
+export interface NumericInput {
+  bind: string;
+  h: number;
+  /**
+   * Unique within the panel: the widget's name in the log and in tests.
+   */
+  id: string;
+  /**
+   * The caption shown with the widget.
+   */
+  label?: string;
+  max?: number | null;
+  min?: number | null;
+  move_x?: Motion | null;
+  move_y?: Motion | null;
+  type: "numeric_input";
+  /**
+   * A BOOL: the widget is shown only while it is TRUE.
+   */
+  visible?: string | null;
+  w: number;
+  x: number;
+  y: number;
+}
+/**
+ * Writes its value while dragged (each change a panel input event).
+ *
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "Slider".
+ */
+export interface Slider {
+  bind: string;
+  h: number;
+  /**
+   * Unique within the panel: the widget's name in the log and in tests.
+   */
+  id: string;
+  /**
+   * The caption shown with the widget.
+   */
+  label?: string;
+  max?: number;
+  min?: number;
+  move_x?: Motion | null;
+  move_y?: Motion | null;
+  step?: number;
+  type: "slider";
+  vertical?: boolean;
+  /**
+   * A BOOL: the widget is shown only while it is TRUE.
+   */
+  visible?: string | null;
+  w: number;
+  x: number;
+  y: number;
+}
+/**
+ * A level between ``min`` and ``max``, as a bar or a tank; red past an alarm limit.
+ *
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "Bar".
+ */
+export interface Bar {
+  bind: string;
+  /**
+   * A colour, #rrggbb.
+   */
+  color?: string;
+  h: number;
+  high_alarm?: number | null;
+  /**
+   * Unique within the panel: the widget's name in the log and in tests.
+   */
+  id: string;
+  /**
+   * The caption shown with the widget.
+   */
+  label?: string;
+  low_alarm?: number | null;
+  max?: number;
+  min?: number;
+  move_x?: Motion | null;
+  move_y?: Motion | null;
+  /**
+   * Drawn as a tank with liquid, else as a bar.
+   */
+  tank?: boolean;
+  type: "bar";
+  vertical?: boolean;
+  /**
+   * A BOOL: the widget is shown only while it is TRUE.
+   */
+  visible?: string | null;
+  w: number;
+  x: number;
+  y: number;
+}
+/**
+ * An integer on ``digits`` seven-segment digits (a minus sign takes one).
+ *
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "SevenSegment".
+ */
+export interface SevenSegment {
+  bind: string;
+  /**
+   * A colour, #rrggbb.
+   */
+  color?: string;
+  digits?: number;
+  h: number;
+  /**
+   * Unique within the panel: the widget's name in the log and in tests.
+   */
+  id: string;
+  /**
+   * The caption shown with the widget.
+   */
+  label?: string;
+  move_x?: Motion | null;
+  move_y?: Motion | null;
+  type: "seven_segment";
+  /**
+   * A BOOL: the widget is shown only while it is TRUE.
+   */
+  visible?: string | null;
+  w: number;
+  x: number;
+  y: number;
+}
+/**
+ * Text on the panel.
+ *
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "Label".
+ */
+export interface Label {
+  bold?: boolean;
+  /**
+   * A colour, #rrggbb.
+   */
+  color?: string;
+  h: number;
+  /**
+   * Unique within the panel: the widget's name in the log and in tests.
+   */
+  id: string;
+  /**
+   * The caption shown with the widget.
+   */
+  label?: string;
+  move_x?: Motion | null;
+  move_y?: Motion | null;
+  size?: number;
+  text: string;
+  type: "label";
+  /**
+   * A BOOL: the widget is shown only while it is TRUE.
+   */
+  visible?: string | null;
+  w: number;
+  x: number;
+  y: number;
+}
+/**
+ * The last ``span_s`` seconds of up to four BOOL or numeric variables, one line each.
+ *
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "Trend".
+ */
+export interface Trend {
+  h: number;
+  /**
+   * Unique within the panel: the widget's name in the log and in tests.
+   */
+  id: string;
+  /**
+   * The caption shown with the widget.
+   */
+  label?: string;
+  max?: number | null;
+  min?: number | null;
+  move_x?: Motion | null;
+  move_y?: Motion | null;
+  /**
+   * @minItems 1
+   * @maxItems 4
+   */
+  paths: [string] | [string, string] | [string, string, string] | [string, string, string, string];
+  span_s?: number;
+  type: "trend";
+  /**
+   * A BOOL: the widget is shown only while it is TRUE.
+   */
+  visible?: string | null;
+  w: number;
+  x: number;
+  y: number;
+}
+/**
+ * A plant symbol whose look shows the bound variable: a BOOL runs or stops it (a motor turns, a valve opens,
+ * a heater glows, a conveyor's belt moves, a siren sounds); a number sets a cylinder's stroke from ``min`` to
+ * ``max``. ``fault``: a BOOL that draws it red.
+ *
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "Symbol".
+ */
+export interface Symbol {
+  bind?: string | null;
+  /**
+   * A colour, #rrggbb.
+   */
+  color?: string;
+  fault?: string | null;
+  h: number;
+  /**
+   * Unique within the panel: the widget's name in the log and in tests.
+   */
+  id: string;
+  /**
+   * The caption shown with the widget.
+   */
+  label?: string;
+  max?: number;
+  min?: number;
+  move_x?: Motion | null;
+  move_y?: Motion | null;
+  shape: "motor" | "pump" | "fan" | "valve" | "heater" | "conveyor" | "cylinder" | "box" | "siren";
+  type: "symbol";
+  /**
+   * A BOOL: the widget is shown only while it is TRUE.
+   */
+  visible?: string | null;
+  w: number;
+  x: number;
+  y: number;
 }
 /**
  * A program organisation unit. ``body`` is ST text, an ``LdBody`` or an ``FbdBody`` per ``language``.
@@ -27,7 +586,7 @@ export interface Pou {
    * ST text of the VAR...END_VAR blocks, as typed.
    */
   declarations?: string;
-  kind: "program" | "function_block" | "function";
+  kind: "program" | "function_block" | "function" | "plant";
   language: "st" | "ld" | "fbd";
   name: string;
   /**
@@ -199,7 +758,7 @@ export interface Block {
   pins?: {
     [k: string]: PinFlags;
   } | null;
-  pos?: Position | null;
+  pos?: Position1 | null;
   type?: "block";
 }
 /**
@@ -214,9 +773,9 @@ export interface PinFlags {
  * Finite coordinates only: NaN/inf would not survive the JSON project files.
  *
  * This interface was referenced by `Project`'s JSON-Schema
- * via the `definition` "Position".
+ * via the `definition` "ladderlab__model__fbd__Position".
  */
-export interface Position {
+export interface Position1 {
   x: number;
   y: number;
 }
@@ -230,7 +789,7 @@ export interface InputNode {
    */
   expr: string;
   id: string;
-  pos?: Position | null;
+  pos?: Position1 | null;
   type?: "input";
 }
 /**
@@ -240,7 +799,7 @@ export interface InputNode {
 export interface OutputNode {
   id: string;
   mode?: "normal" | "negated" | "set" | "reset" | "p" | "n";
-  pos?: Position | null;
+  pos?: Position1 | null;
   type?: "output";
   var: string;
 }
@@ -250,7 +809,7 @@ export interface OutputNode {
  */
 export interface FbdJump {
   id: string;
-  pos?: Position | null;
+  pos?: Position1 | null;
   target: string;
   type?: "jump";
 }
@@ -260,7 +819,7 @@ export interface FbdJump {
  */
 export interface FbdReturn {
   id: string;
-  pos?: Position | null;
+  pos?: Position1 | null;
   type?: "return";
 }
 /**
@@ -270,7 +829,7 @@ export interface FbdReturn {
 export interface Connector {
   id: string;
   name: string;
-  pos?: Position | null;
+  pos?: Position1 | null;
   type?: "connector";
 }
 /**
@@ -280,7 +839,7 @@ export interface Connector {
 export interface Continuation {
   id: string;
   name: string;
-  pos?: Position | null;
+  pos?: Position1 | null;
   type?: "continuation";
 }
 /**
