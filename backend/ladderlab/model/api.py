@@ -31,6 +31,22 @@ class CreateProject(BaseModel):
 
     name: str
     example: str | None = Field(default=None, description="Name of a shipped example to copy, e.g. 'motor'.")
+    start: Literal["solution", "exercise"] = Field(
+        default="solution",
+        description="An example that is an exercise: 'exercise' starts from the student's files (the control "
+        "POUs to write, declarations only); 'solution' copies the reference solution.",
+    )
+
+
+class ExampleInfo(BaseModel):
+    """``GET /api/examples``: a shipped example project ("New from example")."""
+
+    name: str
+    title: str
+    summary: str = ""
+    exercise: bool = Field(description="It is an exercise: it can start from the student's files.")
+    plants: list[str] = Field(default_factory=list, description="Its plants (the processes it models).")
+    panels: list[str] = Field(default_factory=list)
 
 
 class RenameProject(BaseModel):
@@ -215,3 +231,4 @@ class ApiTypes(BaseModel):
     st_export: StExport
     import_report: ImportReport
     fbd_order: FbdOrder
+    example_info: ExampleInfo

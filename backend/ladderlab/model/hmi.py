@@ -201,13 +201,16 @@ class Trend(_Widget):
     max: float | None = None
 
 
-SymbolShape = Literal["motor", "pump", "fan", "valve", "heater", "conveyor", "cylinder", "box", "siren"]
+SymbolShape = Literal[
+    "motor", "pump", "fan", "valve", "heater", "conveyor", "cylinder", "box", "siren", "person", "car", "door", "wall"
+]
 
 
 class Symbol(_Widget):
-    """A plant symbol whose look shows the bound variable: a BOOL runs or stops it (a motor turns, a valve opens,
-    a heater glows, a conveyor's belt moves, a siren sounds); a number sets a cylinder's stroke from ``min`` to
-    ``max``. ``fault``: a BOOL that draws it red."""
+    """A plant symbol whose look shows the bound variable: a BOOL runs or stops it (a motor, pump or fan turns, a
+    valve opens, a heater glows, a conveyor's belt moves, a siren sounds); a number sets a cylinder's stroke or a
+    door's opening from ``min`` (retracted, closed) to ``max``. ``box``, ``person``, ``car`` and ``wall`` are drawn
+    as they are (animate them with ``visible`` and ``move_x``/``move_y``). ``fault``: a BOOL that draws it red."""
 
     type: Literal["symbol"]
     shape: SymbolShape

@@ -52,6 +52,7 @@ def create_app(workspace: Workspace, limits: Limits | None = None) -> FastAPI:
 
     for module in (projects, symbols, library, simulations, monitor, interchange, fbd, live_check):
         app.include_router(module.router)
+    app.include_router(projects.examples_router)
 
     if (STATIC_DIR / "index.html").is_file():
         app.mount("/", StaticFiles(directory=STATIC_DIR, html=True), name="app")

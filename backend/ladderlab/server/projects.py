@@ -11,13 +11,20 @@ from typing import Annotated
 
 from fastapi import APIRouter, Header, Request, Response, status
 
-from ..examples import EXAMPLES_DIR
+from ..examples import UnknownExample, example_project, list_examples
 from ..model import Diagnostic, Pou, Project
-from ..model.api import CheckReport, CreateProject, ProjectDocument, ProjectSummary, RenameProject, SaveResult
+from ..model.api import (
+    CheckReport,
+    CreateProject,
+    ExampleInfo,
+    ProjectDocument,
+    ProjectSummary,
+    RenameProject,
+    SaveResult,
+)
 from ..model.validate import validate_project
 from ..storage import ConflictError, NotFoundError, Workspace
 from ..storage.names import check_project_name
-from ..storage.project_folder import PROJECT_FILE, read_project_folder
 from .context import WorkspaceDep, etag, modified_at, revision_from_header
 from .errors import ApiError, responses
 from .limits import Limits, LimitsDep, check_project_size, check_room_for_project
@@ -50,7 +57,7 @@ def create_project(
     """An empty project, or a copy of a shipped example under the new name."""
     check_project_name(body.name)
     check_room_for_project(workspace, limits)
-    project = _example(body.example, body.name) if body.example else Project(name=body.name)
+    project = _example(body.example, body.name, body.start) if body.example else Project(name=body.name)
     revision = workspace.create(project)
     stored = workspace.load(body.name)
     response.headers.update(etag(revision))
@@ -60,13 +67,20 @@ def create_project(
     )
 
 
-def _example(example: str, name: str) -> Project:
-    available = (
-        sorted(d.name for d in EXAMPLES_DIR.iterdir() if (d / PROJECT_FILE).is_file()) if EXAMPLES_DIR.is_dir() else []
-    )
-    if example not in available:
-        raise ApiError(422, f"unknown example {example!r}; available: {', '.join(available) or 'none'}")
-    return read_project_folder(EXAMPLES_DIR / example).model_copy(update={"name": name})
+def _example(example: str, name: str, start: str) -> Project:
+    try:
+        return example_project(example, name, start)
+    except UnknownExample as error:
+        raise ApiError(422, str(error)) from None
+
+
+examples_router = APIRouter(prefix="/api/examples", tags=["projects"])
+
+
+@examples_router.get("", response_model=list[ExampleInfo])
+def examples() -> list[ExampleInfo]:
+    """The shipped examples ("New from example"): the lab bench's exercises first, each with its plants and panels."""
+    return [ExampleInfo(**vars(example)) for example in list_examples()]
 
 
 @router.get("/{name}", response_model=ProjectDocument, responses=responses(404, 422))

@@ -190,6 +190,17 @@ def _pou_name_of(filename: str) -> str | None:
     return None
 
 
+def read_pou_file(path: Path) -> Pou:
+    """One POU file alone (e.g. an exercise's starting file); ProjectLoadError naming the file."""
+    problems: list[Diagnostic] = []
+    name = _pou_name_of(path.name)
+    pou = _read_pou(path.parent.parent, name, problems) if name else None
+    if pou is None:
+        message = f"{path.name} is not a POU file (.st, .plant.st, .ld.json, .fbd.json, .st.json)"
+        raise ProjectLoadError(problems or [Diagnostic(code="BAD-FILE", file=path.name, message=message)])
+    return pou
+
+
 def pou_paths(folder: Path, name: str) -> list[Path]:
     return [p for p in (folder / POUS_DIR / f"{name}{s}" for s in POU_SUFFIXES) if p.is_file()]
 

@@ -9,6 +9,7 @@ export interface ApiTypes {
   conflict_detail: ConflictDetail;
   create_project: CreateProject;
   error_detail: ErrorDetail;
+  example_info: ExampleInfo;
   fbd_order: FbdOrder;
   import_report: ImportReport;
   library_entry: LibraryEntry;
@@ -75,6 +76,10 @@ export interface CreateProject {
    */
   example?: string | null;
   name: string;
+  /**
+   * An example that is an exercise: 'exercise' starts from the student's files (the control POUs to write, declarations only); 'solution' copies the reference solution.
+   */
+  start?: "solution" | "exercise";
 }
 /**
  * The ``detail`` of every error response except save conflicts.
@@ -85,6 +90,26 @@ export interface CreateProject {
 export interface ErrorDetail {
   diagnostics?: Diagnostic[];
   message: string;
+}
+/**
+ * ``GET /api/examples``: a shipped example project ("New from example").
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "ExampleInfo".
+ */
+export interface ExampleInfo {
+  /**
+   * It is an exercise: it can start from the student's files.
+   */
+  exercise: boolean;
+  name: string;
+  panels?: string[];
+  /**
+   * Its plants (the processes it models).
+   */
+  plants?: string[];
+  summary?: string;
+  title: string;
 }
 /**
  * ``POST /api/fbd/order``: the node ids of one FBD network in the order the scan runs them.
@@ -708,9 +733,10 @@ export interface Trend {
   y: number;
 }
 /**
- * A plant symbol whose look shows the bound variable: a BOOL runs or stops it (a motor turns, a valve opens,
- * a heater glows, a conveyor's belt moves, a siren sounds); a number sets a cylinder's stroke from ``min`` to
- * ``max``. ``fault``: a BOOL that draws it red.
+ * A plant symbol whose look shows the bound variable: a BOOL runs or stops it (a motor, pump or fan turns, a
+ * valve opens, a heater glows, a conveyor's belt moves, a siren sounds); a number sets a cylinder's stroke or a
+ * door's opening from ``min`` (retracted, closed) to ``max``. ``box``, ``person``, ``car`` and ``wall`` are drawn
+ * as they are (animate them with ``visible`` and ``move_x``/``move_y``). ``fault``: a BOOL that draws it red.
  *
  * This interface was referenced by `ApiTypes`'s JSON-Schema
  * via the `definition` "Symbol".
@@ -735,7 +761,20 @@ export interface Symbol {
   min?: number;
   move_x?: Motion | null;
   move_y?: Motion | null;
-  shape: "motor" | "pump" | "fan" | "valve" | "heater" | "conveyor" | "cylinder" | "box" | "siren";
+  shape:
+    | "motor"
+    | "pump"
+    | "fan"
+    | "valve"
+    | "heater"
+    | "conveyor"
+    | "cylinder"
+    | "box"
+    | "siren"
+    | "person"
+    | "car"
+    | "door"
+    | "wall";
   type: "symbol";
   /**
    * A BOOL: the widget is shown only while it is TRUE.

@@ -537,9 +537,10 @@ export interface Trend {
   y: number;
 }
 /**
- * A plant symbol whose look shows the bound variable: a BOOL runs or stops it (a motor turns, a valve opens,
- * a heater glows, a conveyor's belt moves, a siren sounds); a number sets a cylinder's stroke from ``min`` to
- * ``max``. ``fault``: a BOOL that draws it red.
+ * A plant symbol whose look shows the bound variable: a BOOL runs or stops it (a motor, pump or fan turns, a
+ * valve opens, a heater glows, a conveyor's belt moves, a siren sounds); a number sets a cylinder's stroke or a
+ * door's opening from ``min`` (retracted, closed) to ``max``. ``box``, ``person``, ``car`` and ``wall`` are drawn
+ * as they are (animate them with ``visible`` and ``move_x``/``move_y``). ``fault``: a BOOL that draws it red.
  *
  * This interface was referenced by `Project`'s JSON-Schema
  * via the `definition` "Symbol".
@@ -564,7 +565,20 @@ export interface Symbol {
   min?: number;
   move_x?: Motion | null;
   move_y?: Motion | null;
-  shape: "motor" | "pump" | "fan" | "valve" | "heater" | "conveyor" | "cylinder" | "box" | "siren";
+  shape:
+    | "motor"
+    | "pump"
+    | "fan"
+    | "valve"
+    | "heater"
+    | "conveyor"
+    | "cylinder"
+    | "box"
+    | "siren"
+    | "person"
+    | "car"
+    | "door"
+    | "wall";
   type: "symbol";
   /**
    * A BOOL: the widget is shown only while it is TRUE.
