@@ -3,6 +3,7 @@ import type { ProjectSummary } from "./api/client";
 import { useAppStore } from "./store";
 import { useWorkspace } from "./project/store";
 import { WorkspaceView } from "./project/WorkspaceView";
+import { NewFromExample } from "./hmi/NewFromExample";
 
 const HEALTH_POLL_MS = 15_000;
 
@@ -137,6 +138,7 @@ function ProjectList() {
         </button>
       </div>
       <NewProject />
+      <NewFromExample />
       {content}
     </nav>
   );

@@ -76,7 +76,7 @@ class ToggleSwitch(_Widget):
     bind: Binding
 
 
-class Position(BaseModel):
+class SwitchPosition(BaseModel):
     model_config = ConfigDict(extra="forbid")
 
     label: str = Field(max_length=40)
@@ -88,7 +88,7 @@ class SelectorSwitch(_Widget):
 
     type: Literal["selector_switch"]
     bind: Binding
-    positions: list[Position] = Field(min_length=2, max_length=3)
+    positions: list[SwitchPosition] = Field(min_length=2, max_length=3)
 
 
 class EmergencyStop(_Widget):
@@ -111,7 +111,7 @@ class Lamp(_Widget):
     blink_ms: int = Field(default=500, ge=100, le=5000, description="Half a blink period.")
 
 
-class State(BaseModel):
+class IndicatorState(BaseModel):
     model_config = ConfigDict(extra="forbid")
 
     value: Literal_
@@ -124,7 +124,7 @@ class Multistate(_Widget):
 
     type: Literal["multistate"]
     bind: Binding
-    states: list[State] = Field(min_length=1, max_length=32)
+    states: list[IndicatorState] = Field(min_length=1, max_length=32)
     default_text: str = Field(default="?", max_length=60)
 
 
@@ -206,7 +206,7 @@ SymbolShape = Literal[
 ]
 
 
-class Symbol(_Widget):
+class PlantSymbol(_Widget):
     """A plant symbol whose look shows the bound variable: a BOOL runs or stops it (a motor, pump or fan turns, a
     valve opens, a heater glows, a conveyor's belt moves, a siren sounds); a number sets a cylinder's stroke or a
     door's opening from ``min`` (retracted, closed) to ``max``. ``box``, ``person``, ``car`` and ``wall`` are drawn
@@ -235,7 +235,7 @@ Widget = Annotated[
     | SevenSegment
     | Label
     | Trend
-    | Symbol,
+    | PlantSymbol,
     Field(discriminator="type"),
 ]
 
@@ -265,18 +265,3 @@ class Panel(BaseModel):
                 raise ValueError(f"two widgets are called {widget.id!r}: widget ids must be unique in a panel")
             seen.add(widget.id)
         return widgets
-
-    def bindings(self) -> list[str]:
-        """Every variable the panel reads, in widget order, without repeats."""
-        found: dict[str, None] = {}
-        for widget in self.widgets:
-            for name in ("bind", "visible", "fault"):
-                path = getattr(widget, name, None)
-                if path:
-                    found[path] = None
-            for motion in (widget.move_x, widget.move_y):
-                if motion is not None:
-                    found[motion.path] = None
-            for path in getattr(widget, "paths", ()):
-                found[path] = None
-        return list(found)

@@ -257,7 +257,7 @@ export interface Panel {
     | SevenSegment
     | Label
     | Trend
-    | Symbol
+    | PlantSymbol
   )[];
   width?: number;
 }
@@ -361,7 +361,7 @@ export interface SelectorSwitch {
    * @minItems 2
    * @maxItems 3
    */
-  positions: [Position, Position] | [Position, Position, Position];
+  positions: [SwitchPosition, SwitchPosition] | [SwitchPosition, SwitchPosition, SwitchPosition];
   type: "selector_switch";
   /**
    * A BOOL: the widget is shown only while it is TRUE.
@@ -373,9 +373,9 @@ export interface SelectorSwitch {
 }
 /**
  * This interface was referenced by `ApiTypes`'s JSON-Schema
- * via the `definition` "ladderlab__model__hmi__Position".
+ * via the `definition` "SwitchPosition".
  */
-export interface Position {
+export interface SwitchPosition {
   label: string;
   value: boolean | number | string;
 }
@@ -474,7 +474,7 @@ export interface Multistate {
    * @minItems 1
    * @maxItems 32
    */
-  states: [State, ...State[]];
+  states: [IndicatorState, ...IndicatorState[]];
   type: "multistate";
   /**
    * A BOOL: the widget is shown only while it is TRUE.
@@ -486,9 +486,9 @@ export interface Multistate {
 }
 /**
  * This interface was referenced by `ApiTypes`'s JSON-Schema
- * via the `definition` "State".
+ * via the `definition` "IndicatorState".
  */
-export interface State {
+export interface IndicatorState {
   /**
    * A colour, #rrggbb.
    */
@@ -739,9 +739,9 @@ export interface Trend {
  * as they are (animate them with ``visible`` and ``move_x``/``move_y``). ``fault``: a BOOL that draws it red.
  *
  * This interface was referenced by `ApiTypes`'s JSON-Schema
- * via the `definition` "Symbol".
+ * via the `definition` "PlantSymbol".
  */
-export interface Symbol {
+export interface PlantSymbol {
   bind?: string | null;
   /**
    * A colour, #rrggbb.
@@ -968,7 +968,7 @@ export interface Block {
   pins?: {
     [k: string]: PinFlags;
   } | null;
-  pos?: Position1 | null;
+  pos?: Position | null;
   type?: "block";
 }
 /**
@@ -983,9 +983,9 @@ export interface PinFlags {
  * Finite coordinates only: NaN/inf would not survive the JSON project files.
  *
  * This interface was referenced by `ApiTypes`'s JSON-Schema
- * via the `definition` "ladderlab__model__fbd__Position".
+ * via the `definition` "Position".
  */
-export interface Position1 {
+export interface Position {
   x: number;
   y: number;
 }
@@ -999,7 +999,7 @@ export interface InputNode {
    */
   expr: string;
   id: string;
-  pos?: Position1 | null;
+  pos?: Position | null;
   type?: "input";
 }
 /**
@@ -1009,7 +1009,7 @@ export interface InputNode {
 export interface OutputNode {
   id: string;
   mode?: "normal" | "negated" | "set" | "reset" | "p" | "n";
-  pos?: Position1 | null;
+  pos?: Position | null;
   type?: "output";
   var: string;
 }
@@ -1019,7 +1019,7 @@ export interface OutputNode {
  */
 export interface FbdJump {
   id: string;
-  pos?: Position1 | null;
+  pos?: Position | null;
   target: string;
   type?: "jump";
 }
@@ -1029,7 +1029,7 @@ export interface FbdJump {
  */
 export interface FbdReturn {
   id: string;
-  pos?: Position1 | null;
+  pos?: Position | null;
   type?: "return";
 }
 /**
@@ -1039,7 +1039,7 @@ export interface FbdReturn {
 export interface Connector {
   id: string;
   name: string;
-  pos?: Position1 | null;
+  pos?: Position | null;
   type?: "connector";
 }
 /**
@@ -1049,7 +1049,7 @@ export interface Connector {
 export interface Continuation {
   id: string;
   name: string;
-  pos?: Position1 | null;
+  pos?: Position | null;
   type?: "continuation";
 }
 /**

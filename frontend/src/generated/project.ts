@@ -61,7 +61,7 @@ export interface Panel {
     | SevenSegment
     | Label
     | Trend
-    | Symbol
+    | PlantSymbol
   )[];
   width?: number;
 }
@@ -165,7 +165,7 @@ export interface SelectorSwitch {
    * @minItems 2
    * @maxItems 3
    */
-  positions: [Position, Position] | [Position, Position, Position];
+  positions: [SwitchPosition, SwitchPosition] | [SwitchPosition, SwitchPosition, SwitchPosition];
   type: "selector_switch";
   /**
    * A BOOL: the widget is shown only while it is TRUE.
@@ -177,9 +177,9 @@ export interface SelectorSwitch {
 }
 /**
  * This interface was referenced by `Project`'s JSON-Schema
- * via the `definition` "ladderlab__model__hmi__Position".
+ * via the `definition` "SwitchPosition".
  */
-export interface Position {
+export interface SwitchPosition {
   label: string;
   value: boolean | number | string;
 }
@@ -278,7 +278,7 @@ export interface Multistate {
    * @minItems 1
    * @maxItems 32
    */
-  states: [State, ...State[]];
+  states: [IndicatorState, ...IndicatorState[]];
   type: "multistate";
   /**
    * A BOOL: the widget is shown only while it is TRUE.
@@ -290,9 +290,9 @@ export interface Multistate {
 }
 /**
  * This interface was referenced by `Project`'s JSON-Schema
- * via the `definition` "State".
+ * via the `definition` "IndicatorState".
  */
-export interface State {
+export interface IndicatorState {
   /**
    * A colour, #rrggbb.
    */
@@ -543,9 +543,9 @@ export interface Trend {
  * as they are (animate them with ``visible`` and ``move_x``/``move_y``). ``fault``: a BOOL that draws it red.
  *
  * This interface was referenced by `Project`'s JSON-Schema
- * via the `definition` "Symbol".
+ * via the `definition` "PlantSymbol".
  */
-export interface Symbol {
+export interface PlantSymbol {
   bind?: string | null;
   /**
    * A colour, #rrggbb.
@@ -772,7 +772,7 @@ export interface Block {
   pins?: {
     [k: string]: PinFlags;
   } | null;
-  pos?: Position1 | null;
+  pos?: Position | null;
   type?: "block";
 }
 /**
@@ -787,9 +787,9 @@ export interface PinFlags {
  * Finite coordinates only: NaN/inf would not survive the JSON project files.
  *
  * This interface was referenced by `Project`'s JSON-Schema
- * via the `definition` "ladderlab__model__fbd__Position".
+ * via the `definition` "Position".
  */
-export interface Position1 {
+export interface Position {
   x: number;
   y: number;
 }
@@ -803,7 +803,7 @@ export interface InputNode {
    */
   expr: string;
   id: string;
-  pos?: Position1 | null;
+  pos?: Position | null;
   type?: "input";
 }
 /**
@@ -813,7 +813,7 @@ export interface InputNode {
 export interface OutputNode {
   id: string;
   mode?: "normal" | "negated" | "set" | "reset" | "p" | "n";
-  pos?: Position1 | null;
+  pos?: Position | null;
   type?: "output";
   var: string;
 }
@@ -823,7 +823,7 @@ export interface OutputNode {
  */
 export interface FbdJump {
   id: string;
-  pos?: Position1 | null;
+  pos?: Position | null;
   target: string;
   type?: "jump";
 }
@@ -833,7 +833,7 @@ export interface FbdJump {
  */
 export interface FbdReturn {
   id: string;
-  pos?: Position1 | null;
+  pos?: Position | null;
   type?: "return";
 }
 /**
@@ -843,7 +843,7 @@ export interface FbdReturn {
 export interface Connector {
   id: string;
   name: string;
-  pos?: Position1 | null;
+  pos?: Position | null;
   type?: "connector";
 }
 /**
@@ -853,7 +853,7 @@ export interface Connector {
 export interface Continuation {
   id: string;
   name: string;
-  pos?: Position1 | null;
+  pos?: Position | null;
   type?: "continuation";
 }
 /**

@@ -26,6 +26,8 @@ export interface MonitorState {
   types: Readonly<Record<string, DisplayType>>;
   /** Upper-case paths forced now. */
   forced: ReadonlySet<string>;
+  /** Upper-case paths with an injected fault: its mode (stuck_true, open, noisy...). */
+  injected: Readonly<Record<string, string>>;
   /** Engine power by "<instance>/<element id>"; null = not executed in the last scan. */
   power: Readonly<Record<string, PowerState>>;
   log: readonly LogEntry[];
@@ -42,6 +44,7 @@ export const emptyMonitor: MonitorState = {
   values: {},
   types: {},
   forced: new Set(),
+  injected: {},
   power: {},
   log: [],
 };
@@ -77,6 +80,7 @@ export function applyMessage(state: MonitorState, message: ServerMessage): Monit
         values,
         types,
         forced: new Set(message.forced.map(pathKey)),
+        injected: Object.fromEntries(Object.entries(message.injected ?? {}).map(([p, mode]) => [pathKey(p), mode])),
         power: { ...state.power, ...message.power },
       };
     }

@@ -30,11 +30,13 @@ import { DEBUG_KEYS, DebugBar } from "../debug/DebugBar";
 import { useLdDebugging } from "../debug/ldDebugging";
 import { revealPlace } from "../debug/reveal";
 import { debugStore, useDebug } from "../debug/store";
+import { isShellTab, PanelsTree, ShellTab, tabLabel } from "../hmi/shell";
 
 const KINDS: { kind: Pou["kind"]; title: string }[] = [
   { kind: "program", title: "Programs" },
   { kind: "function_block", title: "Function blocks" },
   { kind: "function", title: "Functions" },
+  { kind: "plant", title: "Plants" },
 ];
 const LANGUAGE = { st: "ST", ld: "LD", fbd: "FBD" } as const;
 
@@ -152,6 +154,7 @@ function ProjectTree() {
           </section>
         );
       })}
+      <PanelsTree />
       <section>
         <h3>Types</h3>
         <p className="tree-empty">
@@ -195,8 +198,13 @@ function Tabs() {
     <div className="tabs" role="tablist" aria-label="Open POUs">
       {tabs.map((pou) => (
         <div key={pou} className="tab" role="presentation">
-          <button type="button" role="tab" aria-selected={pou === active} onClick={() => openPou(pou)}>
-            {pou}
+          <button
+            type="button"
+            role="tab"
+            aria-selected={pou === active}
+            onClick={() => (isShellTab(pou) ? workspaceStore.getState().openTab(pou) : openPou(pou))}
+          >
+            {tabLabel(pou)}
             {changed.includes(pou) ? (
               <span className="unsaved" aria-label="unsaved changes">
                 {" "}
@@ -605,7 +613,9 @@ export function WorkspaceView() {
             Save failed: {saveError}
           </span>
         ) : null}
-        {name ? <ExportMenu project={name} pou={active} unsaved={changed.length > 0} /> : null}
+        {name ? (
+          <ExportMenu project={name} pou={isShellTab(active) ? null : active} unsaved={changed.length > 0} />
+        ) : null}
         <ImportPlcopen
           onStored={() => void appStore.getState().loadProjects()}
           onOpen={(imported) => appStore.getState().selectProject(imported)}
@@ -616,7 +626,9 @@ export function WorkspaceView() {
       <div className="editor-area">
         <DebugBar networksOf={networksOf} reveal={revealPlace} />
         <Tabs />
-        {active ? (
+        {active && isShellTab(active) ? (
+          <ShellTab tab={active} />
+        ) : active ? (
           <PouView key={active} name={active} />
         ) : (
           <p className="placeholder">Open a POU from the project tree.</p>

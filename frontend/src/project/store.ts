@@ -44,6 +44,10 @@ export interface WorkspaceActions {
   setDeclarations(pou: string, text: string): void;
   /** The new text of an ST POU's body (marks it unsaved and keeps a draft, like any edit). */
   setStBody(pou: string, text: string): void;
+  /** Replaces the rest of the project (panels, the exercise): `key` names the change in `changed`. */
+  setProjectPart(key: string, update: (project: Project) => Project): void;
+  /** Opens a tab that is no POU (a panel, the exercise: keys of src/hmi/shell.tsx). */
+  openTab(key: string): void;
   /** Adds a new, empty POU to the working copy and opens it; an error message when the name is refused. */
   addPou(name: string, kind: Pou["kind"], language: Pou["language"]): string | null;
   /** Saves the working copy; `overwrite` saves over the revision a conflict reported. */
@@ -104,11 +108,14 @@ export function createWorkspaceStore(
 ): StoreApi<WorkspaceState> {
   let openCall = 0;
   return createStore<WorkspaceState>()((set, get) => {
-    const replacePous = (pou: string, update: (pous: Pou[]) => Pou[]) => {
+    const replacePous = (pou: string, update: (pous: Pou[]) => Pou[]) =>
+      replaceProject(pou, (project) => ({ ...project, pous: update(project.pous ?? []) }));
+
+    const replaceProject = (key: string, update: (project: Project) => Project) => {
       const { project, changed } = get();
       if (!project) return;
-      const next: Project = { ...project, pous: update(project.pous ?? []) };
-      const nextChanged = changed.includes(pou) ? changed : [...changed, pou];
+      const next = update(project);
+      const nextChanged = changed.includes(key) ? changed : [...changed, key];
       set({ project: next, changed: nextChanged });
       const { revision, modified } = get();
       saveDraft(
@@ -184,6 +191,13 @@ export function createWorkspaceStore(
           patch.fbdHistories = { ...get().fbdHistories, [pou]: historyOf(fbdBodyOf(found)) };
         set(patch);
         if (!get().symbols[pou]) loadSymbols(pou);
+      },
+
+      setProjectPart: replaceProject,
+
+      openTab(key) {
+        const { tabs } = get();
+        set({ active: key, tabs: tabs.includes(key) ? tabs : [...tabs, key] });
       },
 
       closeTab(pou) {
@@ -267,7 +281,7 @@ export function createWorkspaceStore(
             restoredAt: null,
             conflict: null,
           });
-          for (const pou of get().tabs) loadSymbols(pou);
+          for (const pou of get().tabs) if (pouOf(get().project, pou)) loadSymbols(pou);
           loadLibrary(name, openCall);
         } catch (err) {
           if (err instanceof SaveConflictError) set({ saving: false, conflict: err.conflict });
@@ -280,7 +294,7 @@ export function createWorkspaceStore(
         if (!name) return;
         removeDraft(name, storage);
         await load(name, false);
-        for (const pou of tabs) get().openPou(pou);
+        for (const tab of tabs) (pouOf(get().project, tab) ? get().openPou : get().openTab)(tab);
         if (active && get().tabs.includes(active)) set({ active });
       },
 
