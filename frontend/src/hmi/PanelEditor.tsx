@@ -12,9 +12,11 @@ import {
   deleteWidgets,
   distributeWidgets,
   duplicateWidgets,
+  freeSpot,
   makeWidget,
   moveWidgets,
   PALETTE,
+  paletteEntry,
   resizeWidget,
   widgetsOf,
   type Alignment,
@@ -59,8 +61,9 @@ export function PanelEditor({ name }: { name: string }) {
   };
 
   const add = (type: WidgetType, x?: number, y?: number) => {
-    const step = widgetsOf(panel).length * 10;
-    const widget = makeWidget(panel, type, x ?? 20 + (step % 200), y ?? 20 + (step % 200));
+    const entry = paletteEntry(type);
+    const spot = x === undefined || y === undefined ? freeSpot(panel, entry.w, entry.h) : { x, y };
+    const widget = makeWidget(panel, type, spot.x, spot.y);
     commit(addWidget(panel, widget));
     setSelected([widget.id]);
   };

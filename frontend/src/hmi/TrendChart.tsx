@@ -3,6 +3,7 @@
 import { useEffect, useRef } from "react";
 import uPlot from "uplot";
 import "uplot/dist/uPlot.min.css";
+import { appendSample } from "./trend";
 
 const COLORS = ["#1e88e5", "#e53935", "#43a047", "#8e24aa"];
 
@@ -15,22 +16,6 @@ export interface TrendChartProps {
   height: number;
   min: number | null;
   max: number | null;
-}
-
-/** Samples kept: times in seconds, then one column per path. */
-export function appendSample(
-  columns: (number | null)[][],
-  timeMs: number,
-  values: readonly (number | null)[],
-  spanMs: number,
-): (number | null)[][] {
-  const times = columns[0] ?? [];
-  const last = times[times.length - 1];
-  if (last != null && timeMs / 1000 <= last) return columns; // the same (or an older) scan: nothing new
-  const start = timeMs / 1000 - spanMs / 1000;
-  const keep = times.findIndex((t) => t != null && t >= start);
-  const from = keep < 0 ? times.length : keep;
-  return [[...times.slice(from), timeMs / 1000], ...values.map((v, i) => [...(columns[i + 1] ?? []).slice(from), v])];
 }
 
 export function TrendChart({ paths, values, timeMs, spanMs, width, height, min, max }: TrendChartProps) {

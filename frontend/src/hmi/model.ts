@@ -129,6 +129,21 @@ export function makeWidget(panel: Panel, type: WidgetType, x: number, y: number)
   } as Widget;
 }
 
+/** The first place (left to right, top to bottom, on the grid) where a w x h widget overlaps no other one. */
+export function freeSpot(panel: Panel, w: number, h: number): { x: number; y: number } {
+  const step = Math.max(panel.grid || DEFAULT_GRID, 10);
+  const width = panel.width ?? 800;
+  const height = panel.height ?? 480;
+  const gap = step;
+  const clear = (x: number, y: number) =>
+    widgetsOf(panel).every(
+      (o) => x + w + gap <= o.x || o.x + o.w + gap <= x || y + h + gap <= o.y || o.y + o.h + gap <= y,
+    );
+  for (let y = step; y + h <= height; y += step)
+    for (let x = step; x + w <= width; x += step) if (clear(x, y)) return { x, y };
+  return { x: 0, y: 0 };
+}
+
 export const addWidget = (panel: Panel, widget: Widget): Panel => ({
   ...panel,
   widgets: [...widgetsOf(panel), widget],

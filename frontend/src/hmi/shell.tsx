@@ -2,6 +2,7 @@
 // that are no POU (a panel: editor and online view; the exercise statement). Tab keys start with
 // PANEL_TAB or are EXERCISE_TAB, which no POU name can be.
 import { useEffect, useMemo, useState, type FormEvent } from "react";
+import type { Panel } from "../generated/project";
 import { onlineStore, useOnline } from "../online/store";
 import { useWorkspace, workspaceStore } from "../project/store";
 import { ExerciseView } from "./ExerciseView";
@@ -18,10 +19,11 @@ export const tabLabel = (key: string): string =>
   key === EXERCISE_TAB ? "Exercise" : key.startsWith(PANEL_TAB) ? `${key.slice(PANEL_TAB.length)} (panel)` : key;
 
 const NAME = /^[A-Za-z_][A-Za-z0-9_]{0,63}$/;
+const NO_PANELS: Panel[] = [];
 
 /** The project tree's Panels section, and the exercise statement. */
 export function PanelsTree() {
-  const panels = useWorkspace((s) => s.project?.panels ?? []);
+  const panels = useWorkspace((s) => s.project?.panels ?? NO_PANELS);
   const exercise = useWorkspace((s) => s.project?.exercise ?? "");
   const active = useWorkspace((s) => s.active);
   const changed = useWorkspace((s) => s.changed);
