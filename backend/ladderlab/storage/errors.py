@@ -6,6 +6,7 @@ from typing import Any
 
 from pydantic import ValidationError
 
+from .. import limits
 from ..model import Diagnostic
 
 
@@ -19,6 +20,21 @@ class StorageError(Exception):
 
 class ProjectLoadError(StorageError):
     """A project file or folder does not parse; nothing was changed."""
+
+
+class StorageFullError(StorageError):
+    """The disk (or the user's quota) is full: the save was not made and the stored project is unchanged."""
+
+    def __init__(self, name: str, reason: str) -> None:
+        super().__init__(
+            [
+                Diagnostic(
+                    code="DISK-FULL",
+                    message=f"project {name!r} was not saved: {reason}. The stored project is unchanged; "
+                    "free some disk space and save again",
+                )
+            ]
+        )
 
 
 class InvalidNameError(StorageError):
@@ -107,3 +123,15 @@ def expectation(err: dict[str, Any]) -> str:
     if "input" in err and not isinstance(err["input"], (dict, list)):
         message += f" (got {err['input']!r})"
     return message
+
+
+def too_deep_json(text: str | bytes, file: str | None) -> Diagnostic:
+    """The located refusal of a JSON document nested deeper than the limit (json.loads would recurse out)."""
+    where = limits.json_too_deep(text) or (None, None)
+    return Diagnostic(
+        code="TOO-DEEP",
+        file=file,
+        line=where[0],
+        column=where[1],
+        message=limits.JSON_DEPTH.message("the JSON nests deeper"),
+    )
