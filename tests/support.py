@@ -22,3 +22,18 @@ def external(*parts: str) -> pathlib.Path:
 
 #: External-corpus pass rates (name -> (passed, total)), printed at the end of the run by tests/conftest.py.
 PASS_RATES: dict[str, tuple[int, int]] = {}
+
+
+def api_client(app, **options):
+    """A TestClient that talks to ``app`` as the browser app does: at http://localhost, sending JSON.
+
+    The server answers only the names it is served under and takes state-changing requests only as
+    JSON (server/security.py); tests of those rules build their requests themselves. Websockets go
+    to ws://localhost too (starlette's TestClient would name ``testserver``)."""
+    from fastapi.testclient import TestClient
+
+    class LocalClient(TestClient):
+        def websocket_connect(self, url: str, *args, **kwargs):
+            return super().websocket_connect(f"ws://localhost{url}" if url.startswith("/") else url, *args, **kwargs)
+
+    return LocalClient(app, base_url="http://localhost", headers={"Content-Type": "application/json"}, **options)

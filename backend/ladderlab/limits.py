@@ -10,7 +10,6 @@ docs/security.md lists them all.
 from __future__ import annotations
 
 import os
-import re
 from dataclasses import dataclass
 
 
@@ -29,9 +28,17 @@ class Limit:
         return int(raw) if raw.isdigit() and int(raw) > 0 else self.default
 
     def message(self, found: str) -> str:
-        """``found`` (what the input has) followed by the limit and how to raise it."""
+        """``found`` (what the input has, e.g. "ARRAY[0..9999999] OF INT has 10,000,000 elements"), then the
+        limit and the setting that raises it."""
         return (
             f"{found}, more than the limit of {self.value:,} {self.unit} for {self.what} "
+            f"(the setting {self.setting} raises it)"
+        )
+
+    def too_deep(self, subject: str) -> str:
+        """For nesting limits: ``subject`` (e.g. "this expression") nests deeper than allowed."""
+        return (
+            f"{subject} nests deeper than the limit of {self.value:,} {self.unit} for {self.what} "
             f"(the setting {self.setting} raises it)"
         )
 
@@ -55,30 +62,3 @@ ALL = (
     DIAGRAM_DEPTH,
     JSON_DEPTH,
 )
-
-_JSON_TOKEN = re.compile(rb'"(?:[^"\\]|\\.)*"|[\[\]{}]', re.DOTALL)
-
-
-def json_too_deep(data: bytes | str, limit: int | None = None) -> tuple[int, int] | None:
-    """Where a JSON text first nests deeper than ``limit`` (default: JSON_DEPTH): (line, column), 1-based.
-
-    None when it does not. Strings are skipped, so brackets inside them do not count; the text need
-    not be valid JSON (its parser reports syntax errors). Runs before ``json.loads``, whose recursion
-    would otherwise end in a RecursionError."""
-    raw = data.encode("utf-8", "surrogatepass") if isinstance(data, str) else data
-    limit = JSON_DEPTH.value if limit is None else limit
-    if raw.count(b"[") + raw.count(b"{") <= limit:  # the common case: not even that many brackets
-        return None
-    depth = 0
-    for match in _JSON_TOKEN.finditer(raw):
-        token = match.group()
-        if token in (b"[", b"{"):
-            depth += 1
-            if depth > limit:
-                offset = match.start()
-                line = raw.count(b"\n", 0, offset) + 1
-                column = len(raw[raw.rfind(b"\n", 0, offset) + 1 : offset].decode("utf-8", "replace")) + 1
-                return line, column
-        elif token in (b"]", b"}"):
-            depth -= 1
-    return None

@@ -9,6 +9,7 @@ from fastapi.testclient import TestClient
 
 from ladderlab.server.app import create_app
 from ladderlab.storage import Workspace
+from tests.support import api_client
 
 
 @pytest.fixture
@@ -18,7 +19,7 @@ def workspace(tmp_path: Path) -> Workspace:
 
 @pytest.fixture
 def client(workspace: Workspace) -> TestClient:
-    return TestClient(create_app(workspace))
+    return api_client(create_app(workspace))
 
 
 @pytest.fixture

@@ -17,6 +17,7 @@ from ladderlab.model.names import project_name_problem
 from ladderlab.server.app import create_app
 from ladderlab.storage import Workspace
 from tests.foundation.strategies import pous, projects
+from tests.support import api_client
 
 json_values = st.recursive(
     st.none() | st.booleans() | st.integers() | st.floats(allow_nan=False, allow_infinity=False) | st.text(max_size=20),
@@ -43,7 +44,7 @@ names = st.text(max_size=70) | st.sampled_from(["..", ".", "motor", "a/b", "../x
 @pytest.fixture(scope="module")
 def client() -> Iterator[TestClient]:
     with tempfile.TemporaryDirectory() as root:
-        app_client = TestClient(create_app(Workspace(Path(root))))
+        app_client = api_client(create_app(Workspace(Path(root))))
         assert app_client.post("/api/projects", json={"name": "fuzz", "example": "motor"}).status_code == 201
         yield app_client
 

@@ -11,6 +11,7 @@ from fastapi.testclient import TestClient
 from ladderlab.server.app import create_app
 from ladderlab.server.limits import Limits
 from ladderlab.storage import Workspace
+from tests.support import api_client
 
 from .helpers import detail, folder_bytes
 
@@ -28,7 +29,7 @@ def test_oversized_body_is_413(client: TestClient, workspace: Workspace, motor: 
 
 
 def test_streamed_body_without_length_is_cut_at_the_limit(workspace: Workspace) -> None:
-    client = TestClient(create_app(workspace, Limits(max_body_bytes=1000)))
+    client = api_client(create_app(workspace, Limits(max_body_bytes=1000)))
 
     def chunks() -> Iterator[bytes]:
         yield b'{"name": "x", "example": "'
@@ -44,7 +45,7 @@ def test_streamed_body_without_length_is_cut_at_the_limit(workspace: Workspace) 
 
 def test_body_at_the_limit_is_accepted(workspace: Workspace) -> None:
     body = b'{"name": "ok"}'
-    client = TestClient(create_app(workspace, Limits(max_body_bytes=len(body))))
+    client = api_client(create_app(workspace, Limits(max_body_bytes=len(body))))
     assert client.post("/api/projects", content=body, headers={"Content-Type": "application/json"}).status_code == 201
 
 

@@ -20,6 +20,7 @@ from ladderlab.server.app import create_app
 from ladderlab.server.monitor import CLIENT_MESSAGE
 from ladderlab.simulation.runner import SimRunner
 from ladderlab.storage import Workspace
+from tests.support import api_client
 
 from .test_simulations_support import counter_project, install, recv
 
@@ -89,7 +90,7 @@ def session() -> Iterator[tuple[TestClient, WebSocketTestSession, SimRunner]]:
     with tempfile.TemporaryDirectory() as root:
         workspace = Workspace(Path(root))
         workspace.create(counter_project())
-        client = TestClient(create_app(workspace))
+        client = api_client(create_app(workspace))
         registry = install(client)
         sim_id = client.post("/api/projects/counter/simulations").json()["id"]
         client.post(f"/api/simulations/{sim_id}/cycle")

@@ -15,7 +15,7 @@ from ladderlab.server.app import create_app
 from ladderlab.server.limits import Limits
 from ladderlab.storage import Workspace, journal, load_project_path
 from ladderlab.storage.project_folder import project_files, revision_of
-from tests.support import EXAMPLES
+from tests.support import EXAMPLES, api_client
 
 from .helpers import detail, folder_bytes, st_program
 
@@ -74,7 +74,7 @@ def test_create_from_unknown_example_is_422(client: TestClient) -> None:
 
 
 def test_create_refused_when_the_workspace_is_full(workspace: Workspace) -> None:
-    client = TestClient(create_app(workspace, Limits(max_projects=2)))
+    client = api_client(create_app(workspace, Limits(max_projects=2)))
     assert [client.post("/api/projects", json={"name": n}).status_code for n in "ab"] == [201, 201]
     response = client.post("/api/projects", json={"name": "c"})
     assert response.status_code == 429
@@ -269,7 +269,7 @@ def test_save_with_two_pous_of_one_name_is_refused(client: TestClient, workspace
 
 
 def test_save_of_a_project_over_the_size_limit_is_413(workspace: Workspace) -> None:
-    client = TestClient(create_app(workspace, Limits(max_project_bytes=4000)))
+    client = api_client(create_app(workspace, Limits(max_project_bytes=4000)))
     revision = client.post("/api/projects", json={"name": "big"}).json()["revision"]
     before = folder_bytes(workspace.root / "big")
     project = Project(name="big", pous=[st_program("P", body="x := 1;\n" * 600)])
@@ -343,7 +343,7 @@ def test_unexpected_error_is_a_json_500(workspace: Workspace, monkeypatch: pytes
         raise RuntimeError("checker exploded")
 
     monkeypatch.setattr("ladderlab.server.projects.check_project", broken)
-    client = TestClient(create_app(workspace), raise_server_exceptions=False)
+    client = api_client(create_app(workspace), raise_server_exceptions=False)
     client.post("/api/projects", json={"name": "p"})
     response = client.post("/api/projects/p/check")
     assert response.status_code == 500

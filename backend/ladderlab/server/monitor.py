@@ -37,6 +37,7 @@ from ..model import monitor as m
 from ..simulation.registry import SimulationEntry, SimulationSettings, UnknownSimulation
 from ..simulation.runner import CommandError, Frame, SimRunner, Watch
 from .context import registry_of
+from .security import websocket_origin_allowed
 
 log = logging.getLogger(__name__)
 
@@ -50,20 +51,10 @@ CLOSE_TRY_LATER = 1013
 _MISSING = object()
 
 
-def origin_allowed(websocket: WebSocket, settings: SimulationSettings) -> bool:
-    """Browsers send ``Origin`` on every websocket upgrade: it must be the origin this server is served
-    from (same host and port) or listed in the settings. Clients that send none are not browsers."""
-    origin = websocket.headers.get("origin")
-    if origin is None:
-        return True
-    host = websocket.headers.get("host", "")
-    return origin in (f"http://{host}", f"https://{host}") or origin in settings.allowed_origins
-
-
 @router.websocket("/api/simulations/{sim_id}/ws")
 async def monitor(websocket: WebSocket, sim_id: str) -> None:
     registry = registry_of(websocket.app)
-    if not origin_allowed(websocket, registry.settings):
+    if not websocket_origin_allowed(websocket):
         await websocket.close(code=1008, reason="origin not allowed")  # before accept: HTTP 403
         return
     await websocket.accept()

@@ -6,7 +6,7 @@ from typing import Any
 
 from pydantic import ValidationError
 
-from .. import limits
+from ..json_guard import json_problem
 from ..model import Diagnostic
 
 
@@ -125,13 +125,10 @@ def expectation(err: dict[str, Any]) -> str:
     return message
 
 
-def too_deep_json(text: str | bytes, file: str | None) -> Diagnostic:
-    """The located refusal of a JSON document nested deeper than the limit (json.loads would recurse out)."""
-    where = limits.json_too_deep(text) or (None, None)
-    return Diagnostic(
-        code="TOO-DEEP",
-        file=file,
-        line=where[0],
-        column=where[1],
-        message=limits.JSON_DEPTH.message("the JSON nests deeper"),
-    )
+def json_text_problem(text: str | bytes, file: str | None) -> Diagnostic | None:
+    """The located refusal of JSON text nested too deeply or holding a lone surrogate (json_guard.py)."""
+    problem = json_problem(text)
+    if problem is None:
+        return None
+    message, line, column = problem
+    return Diagnostic(code="BAD-JSON", file=file, line=line, column=column, message=message)

@@ -9,11 +9,10 @@ from pathlib import Path
 from filelock import FileLock
 from pydantic import ValidationError
 
-from .. import limits
 from ..model import Diagnostic, Project
 from ..st.project_text import source_to_project
 from . import journal
-from .errors import ProjectLoadError, too_deep_json, validation_diagnostics
+from .errors import ProjectLoadError, json_text_problem, validation_diagnostics
 from .project_folder import PROJECT_FILE, is_project_file, read_project_folder
 from .workspace import LOCKS_DIR
 
@@ -48,8 +47,9 @@ def _finish_interrupted_save(folder: Path) -> None:
 
 def _load_json_project(path: Path) -> Project:
     text = path.read_text(encoding="utf-8")
-    if limits.json_too_deep(text):
-        raise ProjectLoadError([too_deep_json(text, path.name)])
+    refused = json_text_problem(text, path.name)
+    if refused is not None:
+        raise ProjectLoadError([refused])
     try:
         data = json.loads(text)
     except json.JSONDecodeError as err:

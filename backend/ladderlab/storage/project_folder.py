@@ -23,9 +23,8 @@ from typing import Any
 
 from pydantic import ValidationError
 
-from .. import limits
 from ..model import Diagnostic, Pou, Project
-from .errors import ProjectLoadError, too_deep_json, validation_diagnostics
+from .errors import ProjectLoadError, json_text_problem, validation_diagnostics
 from .st_text import StTextError, compose_pou_text, parse_pou_text, round_trips
 
 PROJECT_FILE = "project.json"
@@ -272,8 +271,9 @@ def _read_json(path: Path, rel: str, problems: list[Diagnostic]) -> Any:
     except UnicodeDecodeError as err:
         problems.append(Diagnostic(code="BAD-FILE", file=rel, message=f"not UTF-8 text: {err.reason}"))
         return None
-    if limits.json_too_deep(text):
-        problems.append(too_deep_json(text, rel))
+    refused = json_text_problem(text, rel)
+    if refused is not None:
+        problems.append(refused)
         return None
     try:
         return json.loads(text)
