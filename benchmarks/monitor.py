@@ -69,7 +69,8 @@ def serve() -> tuple[str, object, object]:
 def request(address: str, method: str, path: str) -> dict:
     import httpx
 
-    response = httpx.request(method, f"http://{address}{path}", timeout=30)
+    headers = {"Content-Type": "application/json"}  # what the server takes for a state-changing request
+    response = httpx.request(method, f"http://{address}{path}", timeout=30, headers=headers)
     response.raise_for_status()
     return response.json() if response.content else {}
 
