@@ -62,6 +62,9 @@ class Statements:
     def body(self) -> None:
         """This chunk's blocks: in a dispatch loop over its segments when the POU jumps."""
         blocks = self.plan.chunks[self.chunk]
+        if not blocks:  # an empty body (a new LD/FBD POU has no network yet)
+            self.src.line("pass")
+            return
         if not self.plan.jumps:
             for block in blocks:
                 self.block(block)
