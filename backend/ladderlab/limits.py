@@ -51,6 +51,7 @@ EXPRESSION_DEPTH = Limit("the nesting of one expression", "levels", 1_000, "LADD
 STATEMENT_DEPTH = Limit("the nesting of statements", "levels", 200, "LADDERLAB_MAX_STATEMENT_DEPTH")
 DIAGRAM_DEPTH = Limit("the nesting of LD branches", "levels", 50, "LADDERLAB_MAX_DIAGRAM_DEPTH")
 JSON_DEPTH = Limit("the nesting of one JSON document", "levels", 400, "LADDERLAB_MAX_JSON_DEPTH")
+XML_DEPTH = Limit("the nesting of one XML document", "levels", 200, "LADDERLAB_MAX_XML_DEPTH")
 
 ALL = (
     ARRAY_ELEMENTS,
@@ -61,4 +62,5 @@ ALL = (
     STATEMENT_DEPTH,
     DIAGRAM_DEPTH,
     JSON_DEPTH,
+    XML_DEPTH,
 )

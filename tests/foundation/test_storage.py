@@ -149,7 +149,9 @@ def test_rename_and_delete(ws: Workspace, motor: Project) -> None:
     assert ws.list() == []
 
 
-@pytest.mark.parametrize("name", ["../evil", "..", ".", "/etc", "a/b", "a\\b", ".hidden", "", "x" * 65, "trailing."])
+@pytest.mark.parametrize(
+    "name", ["../evil", "..", ".", "/etc", "a/b", "a\\b", ".hidden", "", "x" * 65, "trailing.", "motor\n", "a\nb"]
+)
 def test_project_names_cannot_escape_the_workspace(ws: Workspace, name: str) -> None:
     with pytest.raises(InvalidNameError):
         ws.create(Project(name=name))
@@ -158,7 +160,7 @@ def test_project_names_cannot_escape_the_workspace(ws: Workspace, name: str) -> 
     assert list(ws.root.parent.iterdir()) == [ws.root]
 
 
-@pytest.mark.parametrize("name", ["../../x", "a/b", "1abc", "a__b", "", "x y"])
+@pytest.mark.parametrize("name", ["../../x", "a/b", "1abc", "a__b", "", "x y", "Main\n", "Main\r\n"])
 def test_pou_names_are_iec_identifiers(ws: Workspace, name: str) -> None:
     with pytest.raises(InvalidNameError):
         ws.create(Project(name="p", pous=[Pou(name=name, kind="program", language="st", body="")]))

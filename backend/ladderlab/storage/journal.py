@@ -28,7 +28,7 @@ from .atomic import fsync_dir
 JOURNAL = ".ladderlab-save"
 COMMIT = "COMMIT"
 #: Temporary files of ``write_atomic`` (``.<name>.<random>.tmp``) a crash may have left behind.
-_STALE_TEMP = re.compile(r"^\..+\.tmp$")
+_STALE_TEMP = re.compile(r"^\..+\.tmp\Z")
 #: errno values that mean "no room on the disk" (507 for the server).
 NO_SPACE = frozenset({errno.ENOSPC, getattr(errno, "EDQUOT", errno.ENOSPC), errno.EFBIG})
 
