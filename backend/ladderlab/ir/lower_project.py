@@ -16,6 +16,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from ..collector import collector_paused
+from ..deep import deep_call
 from ..iec.literals import decode_duration
 from ..model.diagnostics import Diagnostic, has_errors
 from ..model.project import Pou as ModelPou
@@ -55,7 +56,7 @@ class LoweringResult:
 def lower_project(project: Project, checked: CheckResult | None = None) -> LoweringResult:
     """Check (unless ``checked`` is given) and lower ``project``; never raises for any project content."""
     with collector_paused():  # see ladderlab.collector: the cyclic GC is most of the cost of a large build
-        return _lower_project(project, checked)
+        return deep_call(_lower_project, project, checked)  # recursion per nesting level: ladderlab.deep
 
 
 def _lower_project(project: Project, checked: CheckResult | None) -> LoweringResult:

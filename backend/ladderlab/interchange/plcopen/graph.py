@@ -11,7 +11,6 @@ reported and dropped.
 from __future__ import annotations
 
 import math
-
 import xml.etree.ElementTree as ET
 from collections import defaultdict
 from dataclasses import dataclass, field

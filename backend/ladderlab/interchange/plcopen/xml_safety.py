@@ -119,9 +119,7 @@ def parse_untrusted_xml(data: bytes, *, file: str | None = None, max_bytes: int 
             )
         ) from err
     except TooDeep as err:
-        raise XmlInputError(
-            _refusal("XML-TOO-DEEP", limits.XML_DEPTH.too_deep("the document"), builder, file)
-        ) from err
+        raise XmlInputError(_refusal("XML-TOO-DEEP", limits.XML_DEPTH.too_deep("the document"), builder, file)) from err
     except (ValueError, LookupError) as err:  # expat: an encoding it cannot read (UTF-7, UTF-16 declared in ASCII...)
         raise XmlInputError(
             Diagnostic(
