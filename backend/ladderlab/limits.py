@@ -21,11 +21,13 @@ class Limit:
     unit: str
     default: int
     setting: str
+    ceiling: int | None = None  # what the setting cannot raise it beyond (a bound of a library below us)
 
     @property
     def value(self) -> int:
         raw = os.environ.get(self.setting, "").strip().replace("_", "")
-        return int(raw) if raw.isdigit() and int(raw) > 0 else self.default
+        value = int(raw) if raw.isdigit() and int(raw) > 0 else self.default
+        return min(value, self.ceiling) if self.ceiling is not None else value
 
     def message(self, found: str) -> str:
         """``found`` (what the input has, e.g. "ARRAY[0..9999999] OF INT has 10,000,000 elements"), then the
@@ -49,7 +51,8 @@ DATA_ELEMENTS = Limit("the data of one program", "elements", 4_000_000, "LADDERL
 SOURCE_BYTES = Limit("the source text of one project", "bytes", 4 * 1024 * 1024, "LADDERLAB_MAX_SOURCE_BYTES")
 EXPRESSION_DEPTH = Limit("the nesting of one expression", "levels", 1_000, "LADDERLAB_MAX_EXPRESSION_DEPTH")
 STATEMENT_DEPTH = Limit("the nesting of statements", "levels", 200, "LADDERLAB_MAX_STATEMENT_DEPTH")
-DIAGRAM_DEPTH = Limit("the nesting of LD branches", "levels", 50, "LADDERLAB_MAX_DIAGRAM_DEPTH")
+# pydantic's serializer stops at ~255 levels of JSON, three per LD branch level: 80 stays below it
+DIAGRAM_DEPTH = Limit("the nesting of LD branches", "levels", 50, "LADDERLAB_MAX_DIAGRAM_DEPTH", ceiling=80)
 JSON_DEPTH = Limit("the nesting of one JSON document", "levels", 400, "LADDERLAB_MAX_JSON_DEPTH")
 XML_DEPTH = Limit("the nesting of one XML document", "levels", 200, "LADDERLAB_MAX_XML_DEPTH")
 
