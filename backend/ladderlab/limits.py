@@ -47,8 +47,9 @@ class Limit:
 
 ARRAY_ELEMENTS = Limit("one array", "elements", 1_000_000, "LADDERLAB_MAX_ARRAY_ELEMENTS")
 STRING_LENGTH = Limit("one STRING", "characters", 255, "LADDERLAB_MAX_STRING_LENGTH")
-DATA_ELEMENTS = Limit("the data of one program", "elements", 4_000_000, "LADDERLAB_MAX_DATA_ELEMENTS")
-SOURCE_BYTES = Limit("the source text of one project", "bytes", 4 * 1024 * 1024, "LADDERLAB_MAX_SOURCE_BYTES")
+DATA_ELEMENTS = Limit("the data of one program", "values", 4_000_000, "LADDERLAB_MAX_DATA_VALUES")
+# a build takes ~800 MB and ~30 s per MB of ST text (docs/security.md)
+SOURCE_BYTES = Limit("the ST text of one project", "characters", 1024 * 1024, "LADDERLAB_MAX_SOURCE_CHARACTERS")
 EXPRESSION_DEPTH = Limit("the nesting of one expression", "levels", 1_000, "LADDERLAB_MAX_EXPRESSION_DEPTH")
 STATEMENT_DEPTH = Limit("the nesting of statements", "levels", 200, "LADDERLAB_MAX_STATEMENT_DEPTH")
 # pydantic's serializer stops at ~255 levels of JSON, three per LD branch level: 80 stays below it

@@ -214,3 +214,79 @@ def test_nesting_beyond_the_documented_limits_is_a_located_error(monkeypatch: py
     [error] = [d for d in build_project(expression, "fast").diagnostics if d.severity == "error"]
     assert (error.code, error.line) == ("ST-TOO-DEEP", 1)
     assert error.message.startswith("this expression nests deeper than the limit of 1,000 levels")
+
+
+# ----------------------------------------------------------------- size limits (issue 18 item 5)
+
+
+def errors_of(project: Project) -> list[tuple[str, str | None, int | None, str]]:
+    build = build_project(project, "fast")
+    assert build.compiled is None
+    return [(d.code, d.pou, d.line, d.message) for d in build.diagnostics if d.severity == "error"]
+
+
+def test_arrays_and_strings_beyond_the_limits_are_located_errors_not_memory_errors() -> None:
+    """ARRAY[0..1000000000] OF BOOL gave MemoryError in /api/check; STRING[1000000000] checked clean, then 500."""
+    declarations = (
+        "VAR\n  big : ARRAY[0..1000000000] OF BOOL;\n  s : STRING[1000000000];\n"
+        "  grid : ARRAY[0..9] OF ARRAY[0..200000] OF INT;\n  fine : ARRAY[1..1000000] OF BOOL;\nEND_VAR"
+    )
+    project = Project(name="p", pous=[st("Main", declarations, "")])
+    suffix = " (the setting {} raises it)"
+    assert errors_of(project) == [
+        (
+            "LIMIT-SIZE",
+            "Main",
+            2,
+            "the array has 1,000,000,001 elements, more than the limit of 1,000,000 elements for one array"
+            + suffix.format("LADDERLAB_MAX_ARRAY_ELEMENTS"),
+        ),
+        (
+            "LIMIT-SIZE",
+            "Main",
+            3,
+            "STRING[1000000000] holds 1,000,000,000 characters, more than the limit of 255 characters for one STRING"
+            + suffix.format("LADDERLAB_MAX_STRING_LENGTH"),
+        ),
+        (
+            "LIMIT-SIZE",
+            "Main",
+            4,
+            "the array has 2,000,010 elements, more than the limit of 1,000,000 elements for one array"
+            + suffix.format("LADDERLAB_MAX_ARRAY_ELEMENTS"),
+        ),
+    ]
+
+
+def test_the_settings_raise_the_size_limits(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setenv("LADDERLAB_MAX_STRING_LENGTH", "1000")
+    project = Project(name="p", pous=[st("Main", "VAR s : STRING[1000]; n : INT; END_VAR", "s := 'x'; n := LEN(s);")])
+    assert run(project, "fast", 1, "Main.n") == [1]
+
+
+def test_the_data_of_a_program_is_bounded_with_its_largest_variable_named() -> None:
+    holder = st("Holder", "VAR a : ARRAY[1..1000] OF LREAL; END_VAR", "", "function_block")
+    main = st("Main", "VAR many : ARRAY[1..900] OF Holder; more : ARRAY[1..900000] OF INT; END_VAR", "")
+    other = st("Other", "VAR x, y : ARRAY[1..999999] OF DINT; END_VAR", "")
+    fits = Project(name="p", pous=[holder, main, other])
+    assert build_project(fits, "fast").compiled is not None  # 900 * 1,001 + 900,000 + 2 * 999,999 = 3,800,898
+    project = fits.model_copy(update={"globals": "VAR_GLOBAL g : ARRAY[1..500000] OF BOOL; END_VAR"})
+    [(code, pou, line, message)] = errors_of(project)
+    assert (code, pou, line) == ("LIMIT-SIZE", "OTHER", None)
+    assert message == (
+        "the variables of this program hold 4,300,898 values (the largest, OTHER.X, 999,999), more than the "
+        "limit of 4,000,000 values for the data of one program (the setting LADDERLAB_MAX_DATA_VALUES raises it)"
+    )
+
+
+def test_st_text_beyond_the_limit_is_refused_before_it_is_parsed(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A 4 MB source peaked at 2.7 GB online: the text is measured first."""
+    body = "x := x + 1;\n" * 100_000  # 1,200,000 characters, less the final newline the model strips
+    project = Project(name="p", pous=[st("Main", "VAR x : DINT; END_VAR", body)])
+    [(code, pou, _, message)] = errors_of(project)  # + 21 characters of declarations
+    assert (code, pou) == ("LIMIT-SIZE", "Main")
+    assert message == (
+        "the project's ST text has 1,200,020 characters (the largest POU, Main, has 1,200,020), more than the "
+        "limit of 1,048,576 characters for the ST text of one project (the setting LADDERLAB_MAX_SOURCE_CHARACTERS "
+        "raises it)"
+    )
