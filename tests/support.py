@@ -37,3 +37,18 @@ def api_client(app, **options):
             return super().websocket_connect(f"ws://localhost{url}" if url.startswith("/") else url, *args, **kwargs)
 
     return LocalClient(app, base_url="http://localhost", headers={"Content-Type": "application/json"}, **options)
+
+
+def fuzz_settings(fast: int = 40):
+    """Hypothesis settings of a fuzzer (issue 18, fuzzing as a habit): a few dozen cases in ``make test``,
+    10,000 per surface in ``make test-slow`` (LADDERLAB_HYPOTHESIS=thorough)."""
+    import os
+
+    from hypothesis import HealthCheck, settings
+
+    thorough = os.environ.get("LADDERLAB_HYPOTHESIS") == "thorough"
+    return settings(
+        max_examples=10_000 if thorough else fast,
+        deadline=None,
+        suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much, HealthCheck.data_too_large],
+    )

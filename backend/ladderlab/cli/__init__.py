@@ -18,7 +18,7 @@ from ..storage import StorageError, load_project_path
 from ..storage.atomic import write_atomic
 from .run import jsonl_line, parse_duration, parse_set, run_scans, table_lines
 
-EXIT_OK, EXIT_ERRORS, EXIT_USAGE, EXIT_RUNTIME = 0, 1, 2, 3
+EXIT_OK, EXIT_ERRORS, EXIT_USAGE, EXIT_RUNTIME, EXIT_INTERNAL = 0, 1, 2, 3, 70
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -29,6 +29,16 @@ def main(argv: list[str] | None = None) -> int:
         for diagnostic in err.diagnostics:
             print(diagnostic.format(), file=sys.stderr)
         return EXIT_USAGE
+    except OSError as err:  # a file that cannot be read or written: the user's to fix, not a bug
+        print(f"ladderlab: {err.filename or ''}{': ' if err.filename else ''}{err.strerror or err}", file=sys.stderr)
+        return EXIT_USAGE
+    except KeyboardInterrupt:
+        return 130
+    except Exception as err:  # a bug: one line, not a traceback (LADDERLAB_TRACEBACK=1 shows it)
+        if os.environ.get("LADDERLAB_TRACEBACK"):
+            raise
+        print(f"ladderlab: internal error: {type(err).__name__}: {err} (please report it)", file=sys.stderr)
+        return EXIT_INTERNAL
 
 
 def _parser() -> argparse.ArgumentParser:
