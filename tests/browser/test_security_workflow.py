@@ -16,6 +16,7 @@ import pytest
 from tests.live_server import LiveServer
 
 from .conftest import ARTIFACTS
+from .steps import save_and_run
 
 pytestmark = pytest.mark.browser
 
@@ -76,13 +77,7 @@ def test_sign_in_with_a_password_then_work_online(page, errors: Errors, tmp_path
             page.get_by_label(label).click()
             page.keyboard.press("Control+a")
             page.keyboard.insert_text(text)
-        page.keyboard.press("Control+s")
-        page.get_by_text("All changes saved").wait_for()
-        page.get_by_role("button", name="Compile & simulate").click()
-        state = page.get_by_role("status", name="Online state")
-        state.filter(has_text="Online · stopped").wait_for()
-        page.get_by_role("button", name="Run", exact=True).click()
-        state.filter(has_text="Online · running").wait_for()
+        save_and_run(page)
         n_value = """() => Number(document.querySelectorAll('[aria-label="Main body"] .cm-st-value')[0]?.textContent)"""
         page.wait_for_function(f"() => ({n_value})() > 5")  # values arrive over the websocket
         page.screenshot(path=str(ARTIFACTS / "remote-online.png"))
