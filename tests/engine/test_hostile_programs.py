@@ -290,3 +290,13 @@ def test_st_text_beyond_the_limit_is_refused_before_it_is_parsed(monkeypatch: py
         "limit of 1,048,576 characters for the ST text of one project (the setting LADDERLAB_MAX_SOURCE_CHARACTERS "
         "raises it)"
     )
+
+
+@pytest.mark.parametrize("variant", ["fast", "debug"])
+def test_nesting_right_at_the_limits_builds_on_the_stack_sized_for_them(variant: str) -> None:
+    """The stack of ladderlab/deep.py is sized for the documented limits: 200 nested statements around an
+    expression whose sum and calls reach 1,000 levels must build and run (no RecursionError, no crash)."""
+    expression = "ABS(" * 400 + "1" + ")" * 400 + " + " + " + ".join(["1"] * 199)  # 800 + 199 + 1 levels
+    body = "IF b THEN\n" * 199 + "FOR i := 1 TO 1 DO\n" + f"x := {expression};\n" + "END_FOR;\n" + "END_IF;\n" * 199
+    project = Project(name="p", pous=[st("Main", "VAR x : DINT; i : INT; b : BOOL := TRUE; END_VAR", body)])
+    assert run(project, variant, 1, "Main.x") == [200]
