@@ -181,3 +181,12 @@ def test_random_files_and_options_never_print_a_traceback(tmp_path_factory, comm
     except SystemExit as stop:  # argparse refusing an option: its usage message, exit 2
         code = stop.code
     assert code in (0, 1, 2, 3), code
+
+
+def test_a_file_that_is_not_utf8_is_a_message_with_exit_2(capsys, tmp_path: Path) -> None:
+    """(Found by the fuzzer: a lone surrogate written to a .st file is no UTF-8.)"""
+    path = tmp_path / "bad.st"
+    path.write_bytes(b"PROGRAM Main\nVAR x : INT; END_VAR\n\xed\xb3\xbf\nEND_PROGRAM\n")  # 13 + 21 bytes, then it
+    code, _, err = cli(capsys, "check", str(path))
+    assert code == 2
+    assert err == "ladderlab: the input is not UTF-8 text: invalid continuation byte at byte 34; save it as UTF-8\n"

@@ -29,6 +29,12 @@ def main(argv: list[str] | None = None) -> int:
         for diagnostic in err.diagnostics:
             print(diagnostic.format(), file=sys.stderr)
         return EXIT_USAGE
+    except UnicodeDecodeError as err:  # a file in another encoding (its own located message where it is read)
+        print(
+            f"ladderlab: the input is not UTF-8 text: {err.reason} at byte {err.start}; save it as UTF-8",
+            file=sys.stderr,
+        )
+        return EXIT_USAGE
     except OSError as err:  # a file that cannot be read or written: the user's to fix, not a bug
         print(f"ladderlab: {err.filename or ''}{': ' if err.filename else ''}{err.strerror or err}", file=sys.stderr)
         return EXIT_USAGE
