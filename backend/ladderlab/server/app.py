@@ -6,6 +6,9 @@ This module only assembles the app; routes live in one module per resource
 
 from __future__ import annotations
 
+import asyncio
+from collections.abc import AsyncIterator
+from contextlib import asynccontextmanager
 from pathlib import Path
 
 from fastapi import FastAPI
@@ -15,6 +18,7 @@ from fastapi.staticfiles import StaticFiles
 from .. import __version__
 from ..storage import Workspace
 from . import auth, fbd, interchange, library, live_check, monitor, projects, simulations, symbols
+from .context import registry_of
 from .errors import install_error_handlers
 from .limits import BodySizeLimit, JsonGuard, Limits, WebsocketLimit
 from .security import Security, SecurityMiddleware
@@ -27,9 +31,18 @@ _PLACEHOLDER = """<!doctype html>
 """
 
 
+@asynccontextmanager
+async def _lifespan(app: FastAPI) -> AsyncIterator[None]:
+    await asyncio.to_thread(registry_of(app).warm)  # the first simulation opens fast (docs/architecture.md)
+    yield
+    registry = getattr(app.state, "simulations", None)
+    if registry is not None:  # end the simulations' and builds' processes with the server
+        registry.close()
+
+
 def create_app(workspace: Workspace, limits: Limits | None = None, security: Security | None = None) -> FastAPI:
     """The app over ``workspace``; ``security`` says how it is reached (default: this machine only, no sign-in)."""
-    app = FastAPI(title="LadderLab", version=__version__)
+    app = FastAPI(title="LadderLab", version=__version__, lifespan=_lifespan)
     app.state.workspace = workspace
     app.state.limits = limits or Limits()
     app.state.security = security or Security()
@@ -41,7 +54,7 @@ def create_app(workspace: Workspace, limits: Limits | None = None, security: Sec
     app.add_middleware(SecurityMiddleware, security=app.state.security)
 
     @app.get("/api/health")
-    def health() -> dict[str, str]:
+    async def health() -> dict[str, str]:  # on the event loop: answers whatever the worker threads are doing
         return {"status": "ok", "version": __version__}
 
     for module in (projects, symbols, library, simulations, monitor, interchange, fbd, live_check, auth):

@@ -1,10 +1,14 @@
 """IR statements and blocks -> Python statements.
 
-Loops check the watchdog on their back-edge: a local countdown, so reading
-the clock costs one call every ``WATCHDOG_EVERY`` iterations. A POU whose
-blocks are jump targets runs them inside a dispatch loop (``ll_b`` is the
-segment to resume at; a jump sets it and ``continue``s, backward jumps check
-the watchdog). A long body is split into chunk functions (chunks.py); a jump to
+Loops check the watchdog on their back-edge, counting down one budget per scan:
+the task's countdown lives in ``ll_wb[0]``; the outermost loop of a function
+copies it into the local ``ll_w`` on entry (nested loops count on that same
+local: an inner loop does not start a fresh count) and stores it back when it
+ends or returns, so loops in called POUs draw on the same budget. The clock is
+read when the countdown runs out, every ``WATCHDOG_EVERY`` back-edges
+(``ll_wd``). A POU whose blocks are jump targets runs them inside a dispatch
+loop (``ll_b`` is the segment to resume at; a jump sets it and ``continue``s,
+backward jumps are back-edges of that loop). A long body is split into chunk functions (chunks.py); a jump to
 another chunk returns its target segment. The monitor and debug variants record
 probes (``ll_pr[i] = value``, and ``ll_px[g] = ll_k`` once per straight run of
 code: context.ProbeTable). In the debug variant every pause point is
@@ -13,8 +17,8 @@ code: context.ProbeTable). In the debug variant every pause point is
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from contextlib import nullcontext
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager, nullcontext
 from typing import ClassVar
 
 from ...iec.values import store_expr
@@ -25,7 +29,7 @@ from .chunks import ChunkPlan
 from .context import CodegenError, diagnostic, std_fb_class
 from .expressions import Expressions, literal
 from .mentions import calls_in, expression_vars, walk
-from .runtime import UNSET, WATCHDOG_EVERY
+from .runtime import UNSET
 from .scope import Scope
 from .source import Source
 from .typeinfo import describe, is_composite, runtime_name, store_code
@@ -61,6 +65,7 @@ class Statements:
         self.deferred = deferred  # id() of the probes read after the scan (deferred.py)
         self.reads: list[str] = []  # their ``ll_pr[i] = value`` lines, for the chunk's ll_read_probes part
         self._line: int | None = None
+        self.counting = False  # ``ll_w`` holds the watchdog countdown (inside a loop or the jump dispatch loop)
 
     # ------------------------------------------------------------------ blocks
 
@@ -79,7 +84,8 @@ class Statements:
                 self._report(f"label {block.label} is used twice", block.origin)
         if self.plan.inline:
             self.src.line("ll_b = 0")
-        self.src.line(f"ll_wj = {WATCHDOG_EVERY}")
+        self.src.line("ll_w = ll_wb[0]")
+        self.counting = True
         self.src.line("while True:")
         with self.src.indent():
             segment = self.segment - 1
@@ -90,7 +96,9 @@ class Statements:
                     self.src.line(f"if ll_b <= {segment}:")
                 with self.src.indent():
                     self.block(block)
+            self._store_countdown()
             self.src.line("break" if self.plan.inline else f"return {self.plan.ends(self.chunk)}")
+        self.counting = False
 
     def block(self, block: ir.Block) -> None:
         origin = block.origin
@@ -286,14 +294,26 @@ class Statements:
             branches.append((("False", Source()), []))
         self._chain(branches, s.orelse)
 
-    def _countdown(self, oid: int) -> str:
-        counter = self.scope.temp("w")
-        self.src.line(f"{counter} = {WATCHDOG_EVERY}")
-        return counter
+    @contextmanager
+    def _counted(self) -> Iterator[None]:
+        """Around a loop: the outermost one of the function takes the task's countdown and gives it back."""
+        if self.counting:
+            yield
+            return
+        self.src.line("ll_w = ll_wb[0]")
+        self.counting = True
+        try:
+            yield
+        finally:
+            self.counting = False
+        self._store_countdown()
 
-    def _back_edge(self, counter: str, oid: int) -> None:
-        self.src.line(f"{counter} -= 1")
-        self.src.line(f"if not {counter}: {counter} = ll_wd({oid})")
+    def _store_countdown(self) -> None:
+        self.src.line("ll_wb[0] = ll_w")
+
+    def _back_edge(self, oid: int) -> None:
+        self.src.line("ll_w -= 1")
+        self.src.line(f"if not ll_w: ll_w = ll_wd({oid})")
 
     def _loop_body(self, body: list[ir.Stmt]) -> None:
         self.loops += 1
@@ -312,14 +332,14 @@ class Statements:
         name = self.scope.temp("o")
         body = Source()
         body.depth, body.origin = self.outlines.depth + 1, self.src.origin
-        saved = self.src, self.blocks, self.outlined, self.loops
-        self.src, self.blocks, self.outlined = body, 0, True
+        saved = self.src, self.blocks, self.outlined, self.counting
+        # its loops take the watchdog countdown from ll_wb[0] and give it back, as a called POU's do
+        self.src, self.blocks, self.outlined, self.counting = body, 0, True, False
         exits = self.loops > 0
         try:
             self.statements(statements)
         finally:
-            self.src, self.blocks, self.outlined, outer_loops = saved
-        self.loops = outer_loops
+            self.src, self.blocks, self.outlined, self.counting = saved
         self.outlines.line(f"def {name}():")
         with self.outlines.indent():
             if self.scope.function:
@@ -332,7 +352,11 @@ class Statements:
             if self.debug:
                 self.outlines.line("yield  # a generator even when no pause point is reached")
         signal = self.scope.temp("s")
+        if self.counting:
+            self._store_countdown()
         self.src.line(f"{signal} = yield from {name}()" if self.debug else f"{signal} = {name}()")
+        if self.counting:
+            self.src.line("ll_w = ll_wb[0]")
         kinds = {type(x) for x in walk(statements)}
         if exits and ir.Exit in kinds:
             self.src.line(f"if {signal} == 1: break")
@@ -351,14 +375,14 @@ class Statements:
             self.src.line(f"{values} = range({var}, {stop}, {step})")
         else:
             self.src.line(f"{values} = ll_for_range({var}, {end}, {step})")
-        counter = self._countdown(oid)
-        self.src.line(f"for {var} in {values}:")
-        with self.src.indent():
-            self._back_edge(counter, oid)
-            self._loop_body(s.body)
-        self.src.line("else:")  # normal end: the first value that failed the test (ST-71), stored like any value
-        with self.src.indent():
-            self.src.line(f"if {values}: {var} = {self._next(values, ty)}")
+        with self._counted():
+            self.src.line(f"for {var} in {values}:")
+            with self.src.indent():
+                self._back_edge(oid)
+                self._loop_body(s.body)
+            self.src.line("else:")  # normal end: the first value that failed the test (ST-71), stored like any value
+            with self.src.indent():
+                self.src.line(f"if {values}: {var} = {self._next(values, ty)}")
 
     def _next(self, values: str, ty: t.IrType) -> str:
         """The value after the last one of the range, stored in the FOR variable's type."""
@@ -368,33 +392,33 @@ class Statements:
         return stored
 
     def _while(self, s: ir.While, oid: int) -> None:
-        counter = self._countdown(oid)
         condition, before = self._condition(s.cond)
-        if not before.lines:
-            self.src.line(f"while {condition}:")
+        with self._counted():
+            if not before.lines:
+                self.src.line(f"while {condition}:")
+                with self.src.indent():
+                    self._back_edge(oid)
+                    self._loop_body(s.body)
+                return
+            self.src.line("while True:")  # the condition's parts are computed before each test
             with self.src.indent():
-                self._back_edge(counter, oid)
-                self._loop_body(s.body)
-            return
-        self.src.line("while True:")  # the condition's parts are computed before each test
-        with self.src.indent():
-            self._back_edge(counter, oid)
-            self._place(before)
-            self.src.line(f"if not {condition}:")
-            with self.src.indent():
-                self.src.line("break")
-            self._loop_body(s.body)
-
-    def _repeat(self, s: ir.Repeat, oid: int) -> None:
-        counter = self._countdown(oid)
-        self.src.line("while True:")
-        with self.src.indent():
-            self._back_edge(counter, oid)
-            self._loop_body(s.body)
-            with self.src.at(oid):
-                self.src.line(f"if {self.x.expr(s.until)}:")
+                self._back_edge(oid)
+                self._place(before)
+                self.src.line(f"if not {condition}:")
                 with self.src.indent():
                     self.src.line("break")
+                self._loop_body(s.body)
+
+    def _repeat(self, s: ir.Repeat, oid: int) -> None:
+        with self._counted():
+            self.src.line("while True:")
+            with self.src.indent():
+                self._back_edge(oid)
+                self._loop_body(s.body)
+                with self.src.at(oid):
+                    self.src.line(f"if {self.x.expr(s.until)}:")
+                    with self.src.indent():
+                        self.src.line("break")
 
     def _exit(self, s: ir.Exit, oid: int) -> None:
         if not self.loops:
@@ -402,6 +426,8 @@ class Statements:
         self.src.line("return 1" if self.outlined and not self.blocks else "break")
 
     def _return(self, s: ir.Return, oid: int) -> None:
+        if self.counting:
+            self._store_countdown()
         self.src.line(self._return_text())
 
     def _return_text(self) -> str:
@@ -421,12 +447,13 @@ class Statements:
             self.src.line(f"if {self.x.expr(s.cond)}:")
         with self.src.indent() if s.cond is not None else nullcontext():
             if self.plan.segment_chunk[target] != self.chunk:  # to another chunk: execute dispatches it
-                if target <= self.segment:  # a back-edge whose countdown would not survive the return
-                    self.src.line(f"ll_wd({oid})")
+                if target <= self.segment:  # a back-edge of the dispatch
+                    self._back_edge(oid)
+                self._store_countdown()
                 self.src.line(f"return {target}")
                 return
             if target <= self.segment:  # backward (or to its own segment): a loop back-edge
-                self._back_edge("ll_wj", oid)
+                self._back_edge(oid)
             self.src.line(f"ll_b = {target}")
             self.src.line("continue")
 
@@ -451,6 +478,8 @@ class Statements:
     def _defer(self, s: ir.Probe) -> None:
         index = self._record(s)
         self.probes.deferred.append(index)  # type: ignore[union-attr]
+        var: ir.Var = s.value  # type: ignore[assignment]  # deferred.py: a variable of the program, members only
+        self.probes.deferred_paths[index] = ".".join([var.name, *(m.name for m in var.path)])  # type: ignore
         saved, self.x.sink = self.x.sink, None  # read after the scan, in another function: no lines before it
         try:
             self.reads.append(f"ll_pr[{index}] = {self.x.expr(s.value)}  # {names.comment_text(s.element)}")
