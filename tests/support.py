@@ -53,6 +53,7 @@ def fuzz_settings(fast: int = 40):
         suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much, HealthCheck.data_too_large],
     )
 
+
 #: Issue 18's runaway scan: four nested FOR 1 TO 255 (4e9 iterations) once ``Go`` is TRUE (a PROGRAM's declarations
 #: and body; the innermost loop, whose back-edge the watchdog sees first, is on line 5 of the body).
 NESTED_LOOPS_DECLARATIONS = "VAR\n    Go : BOOL;\n    a, b, c, d : INT;\n    n : DINT;\nEND_VAR"
