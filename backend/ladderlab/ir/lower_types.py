@@ -108,12 +108,12 @@ class TypeLowering:
             if any(low > high for low, high in ty.dims):  # type: ignore[misc]
                 raise LoweringError(None)  # the checker reported the empty range
             element_spec = spec.element if isinstance(spec, ast.ArrayType) else None
-            count = _size(Array(Elementary("BOOL"), tuple(ty.dims)))  # type: ignore[arg-type]
+            count = _size(Array(Elementary("BOOL"), tuple(ty.dims)))  # type: ignore[arg-type]  # no open dims here
             if count > limits.ARRAY_ELEMENTS.value:  # before anything is allocated for it
                 raise LoweringError(
                     limits.ARRAY_ELEMENTS.message(f"the array has {count:,} elements"), code="LIMIT-SIZE"
                 )
-            array = Array(self.type_of(ty.element, element_spec), tuple(ty.dims))  # type: ignore[arg-type]
+            array = Array(self.type_of(ty.element, element_spec), tuple(ty.dims))  # type: ignore[arg-type]  # as above
             count = scalar_count(array)
             if count > limits.ARRAY_ELEMENTS.value:  # an array of arrays or structures
                 raise LoweringError(

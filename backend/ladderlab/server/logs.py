@@ -37,7 +37,8 @@ class RepeatFilter(logging.Filter):
             if len(self._seen) > 10_000:  # kinds are few; a flood of distinct messages must not grow this
                 self._seen = {kind: (now, 0)}
         if dropped:
-            record.msg = f"{record.msg} (and {dropped} more like it in the last {int(now - last)} s)"  # type: ignore[operator]
+            # (``last`` is set whenever ``dropped`` is)
+            record.msg = f"{record.msg} (and {dropped} more like it in the last {int(now - last)} s)"  # type: ignore[operator]  # see above
         return True
 
 

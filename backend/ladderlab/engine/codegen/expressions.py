@@ -101,7 +101,7 @@ class Expressions:
             self.depth -= 1
         if self.linear and not isinstance(e, ir.Const):  # variables too: a later call may change them
             temp = self.scope.temp("e")
-            self.sink.line(f"{temp} = {code}")  # type: ignore[union-attr]
+            self.sink.line(f"{temp} = {code}")  # type: ignore[union-attr]  # expr() sets it before linear mode
             return temp
         return code
 
