@@ -27,7 +27,7 @@ from .quick_decls import quick_declarations
 from .transformer import AstBuilder, StSyntaxError
 
 GRAMMAR = pathlib.Path(__file__).with_name("iec61131.lark")
-_STARTS = ["start_source", "start_pou", "start_decls", "start_stmts", "start_expr"]
+_STARTS = ["start_source", "start_pou", "start_decls", "start_stmts", "start_expr", "start_tests"]
 _MAX_ERRORS_PER_UNIT = 25
 _END_KEYWORDS = {"END_IF", "END_CASE", "END_FOR", "END_WHILE", "END_REPEAT"}
 
@@ -63,6 +63,10 @@ _SOFT_KEYWORDS = {
     "NOT",
     "MOD",
 }
+# Keywords of test files only (start_tests): names like ``test`` or ``setup`` stay free in programs.
+TEST_KEYWORDS = frozenset(
+    {"TEST", "END_TEST", "SETUP", "END_SETUP", "TEARDOWN", "END_TEARDOWN", "MOCK", "MOCK_FUNCTION", "RETURNS"}
+)
 
 
 @functools.cache
@@ -73,7 +77,7 @@ def _keywords() -> frozenset[str]:
 
 @functools.cache
 def _parser() -> Lark:
-    reserved = _keywords() - {"TRUE", "FALSE"} - _SOFT_KEYWORDS
+    reserved = _keywords() - {"TRUE", "FALSE"} - _SOFT_KEYWORDS - TEST_KEYWORDS
     return Lark(
         GRAMMAR.read_text(encoding="utf-8"),
         parser="lalr",
@@ -140,6 +144,11 @@ def parse_expression(
 ) -> ParseResult:
     """One operand or expression, e.g. an LD contact's ``T1.Q`` or a pin's ``arr[i] + 1``."""
     return _finish(_run(_prepare(text, nested_comments), "start_expr", file, pou=pou), text)
+
+
+def parse_tests(text: str, *, file: str | None = None, nested_comments: bool = False) -> ParseResult:
+    """A test file (``tests/<name>.st``): SETUP, TEARDOWN and TEST blocks (``ast.TestFile``, docs/testing.md)."""
+    return _finish(_run(_prepare(text, nested_comments), "start_tests", file), text)
 
 
 def _name_pous(result: ParseResult) -> None:

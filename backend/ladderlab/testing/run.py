@@ -1,0 +1,161 @@
+"""Run the tests of one test file, each in a fresh simulation of the same compiled program.
+
+    prepared = prepare(project, "tests/motor.st", text)     # check, lower, compile once (diagnostics if not)
+    for result in run_tests(prepared, Options()):            # one TestResult per TEST, in file order
+        ...
+
+A test is one call of its POU's instance (attached to the simulation as ``TEST__<n>``, its program links
+bound to the configuration's instances) and, after it whatever its outcome, one call in the TEARDOWN
+phase. Its first failure ends it (``host.TestFailure``); a runtime error of its own code or of the
+configuration, the watchdog, the scan budget and running out of memory end it with their reason.
+"""
+
+from __future__ import annotations
+
+import fnmatch
+import time
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+
+from ..engine.compile import CompileError, CompiledProgram, compile_program
+from ..engine.simulation import Simulation
+from ..engine.state import SimState, capture
+from ..ir.lower_tests import LoweredTest, Site, lower_test_file
+from ..model.diagnostics import Diagnostic
+from ..model.project import Project
+from .coverage import Coverage
+from .host import Failure, Host, TestFailure
+
+DEFAULT_SCAN_BUDGET = 1_000_000
+
+
+@dataclass(frozen=True)
+class Options:
+    scan_budget: int = DEFAULT_SCAN_BUDGET
+    watchdog_s: float = 1.0  # each task's watchdog, as online
+    test_limit_s: float = 60.0  # wall time a test's own code may run between two verbs
+    coverage: bool = False
+    keep_state: bool = False  # capture the simulation's state when a test fails (to open it online)
+
+
+@dataclass
+class TestResult:
+    file: str
+    name: str
+    line: int
+    outcome: str  # passed | failed
+    failure: Failure | None = None
+    duration_s: float = 0.0
+    scans: int = 0
+    state: SimState | None = None
+
+
+@dataclass
+class Prepared:
+    """A test file checked, lowered and compiled with its project (``compiled`` None: see diagnostics)."""
+
+    file: str
+    tests: list[LoweredTest]
+    sites: list[Site]
+    hosts: list[str]
+    compiled: CompiledProgram | None
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+
+
+def prepare(project: Project, file: str, text: str, *, variant: str = "fast") -> Prepared:
+    lowered = lower_test_file(project, text, file)
+    if lowered.program is None:
+        return Prepared(file, [], [], [], None, lowered.diagnostics)
+    try:
+        compiled = compile_program(lowered.program, variant)
+    except CompileError as error:
+        return Prepared(file, [], [], [], None, lowered.diagnostics + error.diagnostics)
+    return Prepared(file, lowered.tests, lowered.sites, lowered.hosts, compiled, lowered.diagnostics)
+
+
+def selected(prepared: Prepared, pattern: str | None) -> list[LoweredTest]:
+    """The tests whose name matches ``pattern`` (a glob, or a part of the name; case-insensitive)."""
+    if not pattern:
+        return list(prepared.tests)
+    wanted = pattern.lower()
+    glob = any(c in wanted for c in "*?[")
+    return [
+        test
+        for test in prepared.tests
+        if (fnmatch.fnmatchcase(test.name.lower(), wanted) if glob else wanted in test.name.lower())
+    ]
+
+
+def run_tests(
+    prepared: Prepared,
+    options: Options,
+    tests: list[LoweredTest] | None = None,
+    coverage: Coverage | None = None,
+) -> Iterator[TestResult]:
+    for test in prepared.tests if tests is None else tests:
+        yield run_test(prepared, test, options, coverage)
+
+
+def run_test(prepared: Prepared, test: LoweredTest, options: Options, coverage: Coverage | None = None) -> TestResult:
+    assert prepared.compiled is not None
+    started = time.perf_counter()
+    sim = Simulation(prepared.compiled, watchdog_s=options.watchdog_s)
+    collect = (lambda: coverage.collect(sim)) if coverage is not None else None
+    host = Host(sim, prepared.sites, options.scan_budget, on_scans=collect)
+    for name in prepared.hosts:
+        sim.replace_function(name, host.dispatch)
+    instance = sim.attach(test.pou, test.pou, test.links)
+    failure = _phase(sim, instance, test, options)
+    state = capture(sim) if failure is not None and options.keep_state else None
+    host.teardown = True
+    failure = _phase(sim, instance, test, options) if failure is None else failure_after_teardown(
+        failure, _phase(sim, instance, test, options)
+    )
+    if collect is not None:
+        collect()
+    return TestResult(
+        prepared.file,
+        test.name,
+        test.line,
+        "failed" if failure else "passed",
+        failure,
+        time.perf_counter() - started,
+        sim.scan_count,
+        state,
+    )
+
+
+def failure_after_teardown(failure: Failure, teardown: Failure | None) -> Failure:
+    """The test's own failure is the one reported; a TEARDOWN that fails too is mentioned after it."""
+    if teardown is None:
+        return failure
+    return Failure(
+        f"{failure.message}\n(and the TEARDOWN failed: {teardown.message})",
+        failure.line,
+        failure.column,
+        failure.verb,
+        failure.actual,
+        failure.expected,
+        failure.note,
+        failure.kind,
+    )
+
+
+def _phase(sim: Simulation, instance: object, test: LoweredTest, options: Options) -> Failure | None:
+    try:
+        fault = sim.call(instance, limit_s=options.test_limit_s, passthrough=(TestFailure, MemoryError))
+    except TestFailure as failure:
+        return failure.failure
+    except MemoryError:
+        return Failure("out of memory: the test used more memory than its process may", kind="memory")
+    if fault is None:
+        return None
+    origin = fault.origin
+    line = origin.line if origin is not None and origin.pou == test.pou else None
+    where = f"line {line}" if line is not None else fault.where()
+    values = "; ".join(f"{k} = {v!r}" for k, v in fault.values.items())
+    kind = "watchdog" if fault.kind == "watchdog" else "fault"
+    message = f"{fault.message} at {where}" + (f"; {values}" if values else "")
+    if fault.kind == "watchdog":
+        message = f"the test's code ran longer than {options.test_limit_s:g} s without a verb ({where})"
+    return Failure(message, line, origin.column if line is not None and origin else None, kind=kind)
