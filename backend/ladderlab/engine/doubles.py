@@ -31,7 +31,7 @@ class Mocks:
         if mocked is None:
             calls = self.calls
 
-            def execute(self, now):  # noqa: ARG001 - the protocol of every instance class
+            def execute(self, now):
                 calls[id(self)] += 1
 
             mocked = self._classes[cls] = type(cls.__name__, (cls,), {"__slots__": (), "execute": execute})

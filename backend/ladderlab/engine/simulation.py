@@ -33,14 +33,14 @@ from ..ir import nodes as ir
 from ..ir import types as t
 from .codegen import names
 from .codegen.context import ProbeTable
-from .codegen.scope import global_owner
 from .codegen.faults import Fault, make_fault
 from .codegen.runtime import UNSET, Watchdog
+from .codegen.scope import global_owner
 from .compile import CompiledProgram, compile_program
 from .debug import Debugger, Halt
 from .doubles import Mocks
-from .state import SimState, data_of, restore_into
 from .paths import Location, LocationReader, Resolver, Roots, UnknownPath, coerce_for, leaves, plain
+from .state import SimState, data_of, restore_into
 from .tasks import Schedule, Task, task_table
 
 
@@ -329,9 +329,7 @@ class Simulation:
         self._paths = None
         return obj
 
-    def call(
-        self, obj: object, *, limit_s: float, passthrough: tuple[type[BaseException], ...] = ()
-    ) -> Fault | None:
+    def call(self, obj: object, *, limit_s: float, passthrough: tuple[type[BaseException], ...] = ()) -> Fault | None:
         """Run one call of an (attached) instance now, outside any scan, under a watchdog of ``limit_s``: a
         test's body. Scans it runs (``cycle`` from a function it calls) keep their own task watchdogs. A runtime
         error becomes the returned Fault; exceptions of the ``passthrough`` types reach the caller."""

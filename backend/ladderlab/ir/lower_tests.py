@@ -44,7 +44,7 @@ from .nodes import (
     Var,
     While,
 )
-from .types import BOOL, IrType, Elementary
+from .types import BOOL, Elementary, IrType
 
 DINT = Elementary("DINT")
 LINT = Elementary("LINT")
@@ -109,9 +109,7 @@ def lower_test_file(project: Project, text: str, file: str) -> TestProgram:
     diagnostics += tests.diagnostics + builder.diagnostics
     if lowered.program is None or has_errors(diagnostics):
         return TestProgram(None, diagnostics=diagnostics)
-    program = Program(
-        {**lowered.program.pous, **pous, **builder.stubs}, lowered.program.globals, lowered.program.tasks
-    )
+    program = Program({**lowered.program.pous, **pous, **builder.stubs}, lowered.program.globals, lowered.program.tasks)
     return TestProgram(program, builder.tests, builder.sites, list(builder.stubs), diagnostics)
 
 

@@ -46,7 +46,14 @@ VERBS: dict[str, tuple[int, int]] = {
     "MOCK_VERIFY_CALL_COUNT": (2, 2),
 }
 #: The comparison each ASSERT_x checks, as the ST operator.
-COMPARISONS = {"ASSERT_EQ": "=", "ASSERT_NEQ": "<>", "ASSERT_GT": ">", "ASSERT_LT": "<", "ASSERT_GE": ">=", "ASSERT_LE": "<="}
+COMPARISONS = {
+    "ASSERT_EQ": "=",
+    "ASSERT_NEQ": "<>",
+    "ASSERT_GT": ">",
+    "ASSERT_LT": "<",
+    "ASSERT_GE": ">=",
+    "ASSERT_LE": "<=",
+}
 #: Verbs that run the configuration's scans or restart it.
 SCAN_VERBS = frozenset({"RUN_SCANS", "RUN_FOR", "RUN_UNTIL", "WARM_START", "COLD_START"})
 #: The name of a TEST's POU: ``__`` cannot appear in an IEC identifier (LEX-13), so it names no user POU.

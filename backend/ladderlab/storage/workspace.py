@@ -14,8 +14,17 @@ from pathlib import Path
 from ..model import Project
 from .atomic import fsync_dir, write_atomic
 from .errors import AlreadyExistsError, ConflictError, NotFoundError
-from .names import check_pou_name, check_project_name
-from .project_folder import POU_SUFFIXES, POUS_DIR, PROJECT_FILE, project_files, read_project_folder, revision_of
+from .names import check_pou_name, check_project_name, check_test_file_name
+from .project_folder import (
+    POU_SUFFIXES,
+    POUS_DIR,
+    PROJECT_FILE,
+    TEST_SUFFIX,
+    TESTS_DIR,
+    project_files,
+    read_project_folder,
+    revision_of,
+)
 
 LOCKS_DIR = ".locks"
 
@@ -114,6 +123,8 @@ class Workspace:
         """Write every changed file atomically, then drop POU files the project no longer has."""
         for pou in project.pous:
             check_pou_name(pou.name)
+        for test in project.tests:
+            check_test_file_name(test.name)
         folder = self.folder(project.name)
         files = project_files(project)
         for rel, content in files.items():
@@ -128,6 +139,12 @@ class Workspace:
                 if path.name.endswith(POU_SUFFIXES) and rel not in files:
                     path.unlink()
             fsync_dir(pous_dir)
+        tests_dir = folder / TESTS_DIR  # test files the project no longer has; tests/hidden/ stays as it is
+        if tests_dir.is_dir():
+            for path in tests_dir.iterdir():
+                if path.is_file() and path.name.endswith(TEST_SUFFIX) and f"{TESTS_DIR}/{path.name}" not in files:
+                    path.unlink()
+            fsync_dir(tests_dir)
         return revision_of(project)
 
     @contextmanager

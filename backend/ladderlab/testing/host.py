@@ -54,15 +54,17 @@ class TestFailure(Exception):
 class Host:
     """Carries out the verbs of one test in ``sim``; ``scan_budget`` bounds the scans it may run."""
 
-    def __init__(self, sim: Simulation, sites: list[Site], scan_budget: int, on_scans=None) -> None:
+    def __init__(self, sim: Simulation, sites: list[Site], scan_budget: int, collect=None) -> None:
         self.sim, self.sites, self.scan_budget = sim, sites, scan_budget
         self.teardown = False
-        self.on_scans = on_scans  # called after the scans of each verb (coverage)
+        self.collect = collect  # coverage: called after every scan and before every verb
         self._faults = 0
         methods = {verb: getattr(self, "_" + verb.lower()) for verb in {s.verb for s in sites}}
         self._handlers = [methods[site.verb] for site in sites]
 
     def dispatch(self, site: int, *args: object) -> object:
+        if self.collect is not None:
+            self.collect()
         return self._handlers[site](self.sites[site], *args)
 
     # ------------------------------------------------------------ failing
@@ -135,7 +137,12 @@ class Host:
         if count < 0:
             self.fail(site, f"RUN_SCANS needs a count of zero or more, not {count}", kind="error")
         self._budget(site, count)
-        self.sim.cycle(count)
+        if self.collect is None:
+            self.sim.cycle(count)
+        else:
+            for _ in range(count):
+                self.sim.cycle(1)
+                self.collect()
         self._scanned(site)
         return True
 
@@ -144,8 +151,7 @@ class Host:
         while self.sim.next_scan_time() <= end:
             self._budget(site, 1)
             self.sim.cycle(1)
-            self._check_faults(site)
-        self._scanned(site)
+            self._scanned(site)
         return True
 
     def _run_until(self, site: Site, *args) -> object:
@@ -184,8 +190,8 @@ class Host:
             )
 
     def _scanned(self, site: Site) -> None:
-        if self.on_scans is not None:
-            self.on_scans()
+        if self.collect is not None:
+            self.collect()
         self._check_faults(site)
 
     def _check_faults(self, site: Site) -> None:

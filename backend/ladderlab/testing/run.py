@@ -17,13 +17,13 @@ import time
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 
-from ..engine.compile import CompileError, CompiledProgram, compile_program
+from ..engine.compile import CompiledProgram, CompileError, compile_program
 from ..engine.simulation import Simulation
 from ..engine.state import SimState, capture
 from ..ir.lower_tests import LoweredTest, Site, lower_test_file
 from ..model.diagnostics import Diagnostic
 from ..model.project import Project
-from .coverage import Coverage
+from .coverage import Coverage, instrument
 from .host import Failure, Host, TestFailure
 
 DEFAULT_SCAN_BUDGET = 1_000_000
@@ -62,12 +62,16 @@ class Prepared:
     diagnostics: list[Diagnostic] = field(default_factory=list)
 
 
-def prepare(project: Project, file: str, text: str, *, variant: str = "fast") -> Prepared:
+def prepare(project: Project, file: str, text: str, *, coverage: bool = False) -> Prepared:
+    """Check, lower and compile ``project`` with one test file; with ``coverage`` the monitor variant with
+    line probes in the ST POUs (coverage.instrument)."""
     lowered = lower_test_file(project, text, file)
     if lowered.program is None:
         return Prepared(file, [], [], [], None, lowered.diagnostics)
+    if coverage:
+        instrument(lowered.program)
     try:
-        compiled = compile_program(lowered.program, variant)
+        compiled = compile_program(lowered.program, "monitor" if coverage else "fast")
     except CompileError as error:
         return Prepared(file, [], [], [], None, lowered.diagnostics + error.diagnostics)
     return Prepared(file, lowered.tests, lowered.sites, lowered.hosts, compiled, lowered.diagnostics)
@@ -101,15 +105,17 @@ def run_test(prepared: Prepared, test: LoweredTest, options: Options, coverage: 
     started = time.perf_counter()
     sim = Simulation(prepared.compiled, watchdog_s=options.watchdog_s)
     collect = (lambda: coverage.collect(sim)) if coverage is not None else None
-    host = Host(sim, prepared.sites, options.scan_budget, on_scans=collect)
+    host = Host(sim, prepared.sites, options.scan_budget, collect)
     for name in prepared.hosts:
         sim.replace_function(name, host.dispatch)
     instance = sim.attach(test.pou, test.pou, test.links)
     failure = _phase(sim, instance, test, options)
     state = capture(sim) if failure is not None and options.keep_state else None
     host.teardown = True
-    failure = _phase(sim, instance, test, options) if failure is None else failure_after_teardown(
-        failure, _phase(sim, instance, test, options)
+    failure = (
+        _phase(sim, instance, test, options)
+        if failure is None
+        else failure_after_teardown(failure, _phase(sim, instance, test, options))
     )
     if collect is not None:
         collect()
