@@ -103,32 +103,35 @@ def run_tests(
 def run_test(prepared: Prepared, test: LoweredTest, options: Options, coverage: Coverage | None = None) -> TestResult:
     assert prepared.compiled is not None
     started = time.perf_counter()
-    sim = Simulation(prepared.compiled, watchdog_s=options.watchdog_s)
+    result = TestResult(prepared.file, test.name, test.line, "passed")
+    try:
+        _run(prepared, test, options, coverage, result)
+    except MemoryError:
+        result.failure = Failure(_OUT_OF_MEMORY, kind="memory")
+    result.outcome = "failed" if result.failure is not None else "passed"
+    result.duration_s = time.perf_counter() - started
+    return result
+
+
+_OUT_OF_MEMORY = "out of memory: the test needed more memory than its process may use (--memory-limit)"
+
+
+def _run(prepared: Prepared, test: LoweredTest, options: Options, coverage: Coverage | None, result: TestResult):
+    sim = Simulation(prepared.compiled, watchdog_s=options.watchdog_s)  # type: ignore[arg-type]
     collect = (lambda: coverage.collect(sim)) if coverage is not None else None
     host = Host(sim, prepared.sites, options.scan_budget, collect)
     for name in prepared.hosts:
         sim.replace_function(name, host.dispatch)
     instance = sim.attach(test.pou, test.pou, test.links)
     failure = _phase(sim, instance, test, options)
-    state = capture(sim) if failure is not None and options.keep_state else None
+    if failure is not None and options.keep_state:
+        result.state = capture(sim)
     host.teardown = True
-    failure = (
-        _phase(sim, instance, test, options)
-        if failure is None
-        else failure_after_teardown(failure, _phase(sim, instance, test, options))
-    )
+    teardown = _phase(sim, instance, test, options)
+    result.failure = teardown if failure is None else failure_after_teardown(failure, teardown)
+    result.scans = sim.scan_count
     if collect is not None:
         collect()
-    return TestResult(
-        prepared.file,
-        test.name,
-        test.line,
-        "failed" if failure else "passed",
-        failure,
-        time.perf_counter() - started,
-        sim.scan_count,
-        state,
-    )
 
 
 def failure_after_teardown(failure: Failure, teardown: Failure | None) -> Failure:
@@ -153,7 +156,7 @@ def _phase(sim: Simulation, instance: object, test: LoweredTest, options: Option
     except TestFailure as failure:
         return failure.failure
     except MemoryError:
-        return Failure("out of memory: the test used more memory than its process may", kind="memory")
+        return Failure(_OUT_OF_MEMORY, kind="memory")
     if fault is None:
         return None
     origin = fault.origin
