@@ -27,7 +27,12 @@ from .quick_decls import quick_declarations
 from .transformer import AstBuilder, StSyntaxError
 
 GRAMMAR = pathlib.Path(__file__).with_name("iec61131.lark")
-_STARTS = ["start_source", "start_pou", "start_decls", "start_stmts", "start_expr", "start_tests"]
+_STARTS = ["start_source", "start_pou", "start_decls", "start_stmts", "start_expr"]
+# Test files get a parser of their own from the same grammar: built from start_tests alone, its tables are
+# the only ones where the test keywords (END_TEST, MOCK ...) may follow a statement. (One LALR table for
+# all starts would merge them into the lookaheads of statements everywhere: ``x := 1; mock := 2;`` in a
+# program would then read ``mock`` as the keyword.)
+_TEST_STARTS = ["start_tests"]
 _MAX_ERRORS_PER_UNIT = 25
 _END_KEYWORDS = {"END_IF", "END_CASE", "END_FOR", "END_WHILE", "END_REPEAT"}
 
@@ -76,13 +81,13 @@ def _keywords() -> frozenset[str]:
 
 
 @functools.cache
-def _parser() -> Lark:
+def _parser(tests: bool = False) -> Lark:
     reserved = _keywords() - {"TRUE", "FALSE"} - _SOFT_KEYWORDS - TEST_KEYWORDS
     return Lark(
         GRAMMAR.read_text(encoding="utf-8"),
         parser="lalr",
         lexer="contextual",
-        start=_STARTS,
+        start=_TEST_STARTS if tests else _STARTS,
         transformer=AstBuilder(reserved),
         maybe_placeholders=True,
         cache=False,
@@ -173,7 +178,7 @@ def _run(text: str, start: str, file: str | None, pou: str | None = None) -> Par
     diagnostics: list[Diagnostic] = []
     report = _Reporter(diagnostics, file, pou)
     try:
-        tree = _parser().parse(text, start=start, on_error=report.recover)
+        tree = _parser(start in _TEST_STARTS).parse(text, start=start, on_error=report.recover)
     except UnexpectedInput as error:
         if not report.seen(error):
             report.add(error)

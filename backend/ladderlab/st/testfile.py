@@ -160,21 +160,35 @@ class TestChecker(BodyChecker):
 
     def _verb_compare(self, use: VerbUse, node: ast.Call) -> None:
         actual, expected = use.args[:2]
-        use.compare = ast.Binary(COMPARISONS[use.verb], actual, expected, node.span)
-        self.expr(use.compare)
-        if actual.ty is not ERROR and not _elementary(actual.ty):
+        if not _elementary(self.expr(actual)):
             self.report("TEST-VERB", f"{use.verb} compares elementary values, not {actual.ty}", actual)
+            self.expr(expected)
+        else:
+            use.compare = ast.Binary(COMPARISONS[use.verb], actual, expected, node.span)
+            self._as_verb(use, lambda: self.expr(use.compare))
         self._message(use, 2)
 
     def _verb_near(self, use: VerbUse, node: ast.Call) -> None:
         actual, expected, tolerance = use.args[:3]
         use.compare = ast.Binary("-", actual, expected, node.span)
-        ty = self.expr(use.compare)
-        if ty is not ERROR and not t.in_family(ty, "ANY_NUM"):
-            self.report("TEST-VERB", f"ASSERT_NEAR compares numbers, not {ty}", actual)
-        else:
+        ty = self._as_verb(use, lambda: self.expr(use.compare))
+        if ty is not ERROR:
             assignable_or_report(self, ty, self.expr(tolerance, ty), tolerance, "ASSERT_NEAR tolerance")
         self._message(use, 3)
+
+    def _as_verb(self, use: VerbUse, check):
+        """Check the expression an assertion stands for, its problems told with the verb's name, not the
+        operator's the user never wrote ('=' needs ... -> ASSERT_EQ needs ...)."""
+        report, operator = self.report, f"'{use.compare.op}' "  # type: ignore[union-attr]
+
+        def renamed(code: str, message: str, at, severity: str = "error") -> None:
+            report(code, message.replace(operator, use.verb + " ", 1), at, severity)
+
+        self.report = renamed
+        try:
+            return check()
+        finally:
+            self.report = report
 
     def _verb_condition(self, use: VerbUse, node: ast.Call) -> None:
         self.condition(use.args[0], use.verb)
