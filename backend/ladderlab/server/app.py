@@ -14,7 +14,7 @@ from fastapi.staticfiles import StaticFiles
 
 from .. import __version__
 from ..storage import Workspace
-from . import fbd, interchange, library, live_check, monitor, projects, simulations, symbols
+from . import fbd, interchange, library, live_check, monitor, projects, simulations, symbols, tests
 from .errors import install_error_handlers
 from .limits import BodySizeLimit, Limits
 
@@ -37,7 +37,7 @@ def create_app(workspace: Workspace, limits: Limits | None = None) -> FastAPI:
     def health() -> dict[str, str]:
         return {"status": "ok", "version": __version__}
 
-    for module in (projects, symbols, library, simulations, monitor, interchange, fbd, live_check):
+    for module in (projects, symbols, library, simulations, monitor, interchange, fbd, live_check, tests):
         app.include_router(module.router)
 
     if (STATIC_DIR / "index.html").is_file():

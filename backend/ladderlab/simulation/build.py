@@ -10,6 +10,7 @@ from dataclasses import dataclass
 
 from ..engine.compile import CompiledProgram, CompileError, compile_program
 from ..engine.simulation import Simulation
+from ..engine.state import SimState
 from ..ir.lower_project import lower_project
 from ..model import Diagnostic, Project
 
@@ -39,3 +40,10 @@ def build_project(project: Project, variant: str = "fast") -> Build:
         return Build(compile_program(lowered.program, variant), diagnostics)
     except CompileError as error:
         return Build(None, diagnostics + error.diagnostics)
+
+
+def simulation_from_state(compiled: CompiledProgram, state: SimState, **options) -> Simulation:
+    """A simulation of ``compiled`` as it stood when ``state`` was captured (a failed test opened online)."""
+    sim = Simulation(compiled, **options)
+    sim.restore(state)
+    return sim

@@ -62,16 +62,16 @@ class Prepared:
     diagnostics: list[Diagnostic] = field(default_factory=list)
 
 
-def prepare(project: Project, file: str, text: str, *, coverage: bool = False) -> Prepared:
+def prepare(project: Project, file: str, text: str, *, coverage: bool = False, monitor: bool = False) -> Prepared:
     """Check, lower and compile ``project`` with one test file; with ``coverage`` the monitor variant with
-    line probes in the ST POUs (coverage.instrument)."""
+    line probes in the ST POUs (coverage.instrument), with ``monitor`` the monitor variant (to go online)."""
     lowered = lower_test_file(project, text, file)
     if lowered.program is None:
         return Prepared(file, [], [], [], None, lowered.diagnostics)
     if coverage:
         instrument(lowered.program)
     try:
-        compiled = compile_program(lowered.program, "monitor" if coverage else "fast")
+        compiled = compile_program(lowered.program, "monitor" if coverage or monitor else "fast")
     except CompileError as error:
         return Prepared(file, [], [], [], None, lowered.diagnostics + error.diagnostics)
     return Prepared(file, lowered.tests, lowered.sites, lowered.hosts, compiled, lowered.diagnostics)
@@ -168,3 +168,17 @@ def _phase(sim: Simulation, instance: object, test: LoweredTest, options: Option
     if fault.kind == "watchdog":
         message = f"the test's code ran longer than {options.test_limit_s:g} s without a verb ({where})"
     return Failure(message, line, origin.column if line is not None and origin else None, kind=kind)
+
+
+def failure_state(project: Project, file: str, text: str, name: str) -> tuple[CompiledProgram, TestResult]:
+    """Run the test ``name`` again (the virtual clock makes it repeat exactly) in the monitor variant and
+    return its program and its result with the state the simulation had when it failed (to open online).
+    LookupError: no such test or the file does not compile; ValueError: the test passes."""
+    prepared = prepare(project, file, text, monitor=True)
+    test = next((t for t in prepared.tests if t.name == name), None)
+    if prepared.compiled is None or test is None:
+        raise LookupError(f"{file} has no test {name!r}" if prepared.compiled else f"{file} does not compile")
+    result = run_test(prepared, test, Options(keep_state=True))
+    if result.state is None:
+        raise ValueError(f"the test {name!r} passes: there is no failure to open")
+    return prepared.compiled, result

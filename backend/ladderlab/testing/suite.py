@@ -88,10 +88,15 @@ def run_suite(
     jobs: int | None = None,
     progress: Callable[[TestResult], None] | None = None,
     memory_limit_mb: int | None = None,
+    prepared_files: Callable[[list[Prepared]], None] | None = None,
 ) -> SuiteOutcome:
+    """Run the tests of ``files`` matching ``pattern``; ``prepared_files`` hears of the compiled files (their
+    tests or diagnostics) before any runs, ``progress`` of each result as it comes."""
     started = time.perf_counter()
     coverage = Coverage() if options.coverage else None
     prepared = [prepare(project, f.path, f.text, coverage=options.coverage) for f in files]
+    if prepared_files is not None:
+        prepared_files(prepared)
     outcomes = [FileOutcome(p.file, p.diagnostics) for p in prepared]
     work = [(i, selected(p, pattern)) for i, p in enumerate(prepared) if p.compiled is not None]
     for index, tests in work:

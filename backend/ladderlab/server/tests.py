@@ -1,0 +1,155 @@
+"""Unit tests from the browser (docs/testing.md): list, check, run with streamed progress, open a failure.
+
+Every route takes the working copy (like ``POST /api/check``), so the Tests panel runs what the user
+sees, saved or not. ``/run`` answers a stream of JSON lines (``TestEvent``): one per test file (its
+tests, or the diagnostics that keep it from compiling), one per test result as it finishes, then the
+summary (and the coverage when asked for). The tests run in a worker thread; the event loop only
+forwards the lines. ``/open`` runs a failing test again and opens the simulation as it stood at the
+failure, as an online simulation of the project with the test's instance (``TEST__<n>``) in it.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import threading
+from collections.abc import AsyncIterator
+
+from fastapi import APIRouter, Request
+from fastapi.responses import StreamingResponse
+
+from ..model import Project
+from ..model.api import (
+    SimulationInfo,
+    TestCaseInfo,
+    TestCheckRequest,
+    TestEvent,
+    TestFileInfo,
+    TestListing,
+    TestOpenRequest,
+    TestResultInfo,
+    TestRunRequest,
+    TestSummary,
+)
+from ..simulation.build import simulation_from_state
+from ..simulation.runner import SimRunner
+from ..st.parser import parse_tests
+from ..storage.project_folder import revision_of
+from ..testing.report import result_json
+from ..testing.run import Options, Prepared, TestResult, failure_state, prepare
+from ..testing.suite import SuiteFile, run_suite, suite_files
+from .context import registry_of
+from .errors import ApiError, responses
+from .limits import LimitsDep, check_project_size
+from .simulations import simulation_info
+
+router = APIRouter(prefix="/api/tests", tags=["tests"])
+
+
+@router.post("/list", response_model=TestListing, responses=responses(413, 422))
+def list_tests(project: Project, limits: LimitsDep) -> TestListing:
+    """The test files of the working copy and the tests in each (parsed only: nothing runs)."""
+    check_project_size(project, limits)
+    files = []
+    for file in suite_files(project):
+        parsed = parse_tests(file.text, file=file.path)
+        tests = [TestCaseInfo(name=t.name, line=t.span.line) for t in parsed.ast.tests] if parsed.ast else []
+        files.append(TestFileInfo(file=file.path, tests=tests, diagnostics=parsed.diagnostics))
+    return TestListing(files=files)
+
+
+@router.post("/check", response_model=TestFileInfo, responses=responses(404, 413, 422))
+def check_tests(body: TestCheckRequest, limits: LimitsDep) -> TestFileInfo:
+    """Every diagnostic of one test file with the working copy: the ST editor's live diagnostics."""
+    check_project_size(body.project, limits)
+    file = _file(body.project, body.file)
+    return _file_info(prepare(body.project, file.path, file.text))
+
+
+@router.post("/run", responses=responses(404, 413, 422))
+async def run_tests(body: TestRunRequest, limits: LimitsDep) -> StreamingResponse:
+    """Run every test, one file's or one test; answers a stream of ``TestEvent`` JSON lines."""
+    check_project_size(body.project, limits)
+    files = [_file(body.project, body.file)] if body.file is not None else suite_files(body.project)
+    pattern = _exact(body.test) if body.test is not None else None
+    return StreamingResponse(_stream(body.project, files, pattern, body.coverage), media_type="application/x-ndjson")
+
+
+@router.post("/open", response_model=SimulationInfo, status_code=201, responses=responses(404, 409, 413, 422, 429))
+def open_failure(body: TestOpenRequest, request: Request, limits: LimitsDep) -> SimulationInfo:
+    """Run the failing test again and open its last state as a (stopped) online simulation."""
+    check_project_size(body.project, limits)
+    registry = registry_of(request.app)
+    registry.check_room()
+    file = _file(body.project, body.file)
+    try:
+        compiled, result = failure_state(body.project, file.path, file.text, body.test)
+    except LookupError as error:
+        raise ApiError(404, str(error)) from None
+    except ValueError as error:
+        raise ApiError(409, str(error)) from None
+    sim = simulation_from_state(compiled, result.state, watchdog_s=registry.settings.watchdog_s)  # type: ignore[arg-type]
+    entry = registry.add(
+        body.project.name, revision_of(body.project), SimRunner(sim, publish_s=registry.settings.publish_s)
+    )
+    return simulation_info(entry)
+
+
+def _file(project: Project, path: str) -> SuiteFile:
+    found = next((f for f in suite_files(project) if f.path == path), None)
+    if found is None:
+        raise ApiError(404, f"project {project.name!r} has no test file {path!r}")
+    return found
+
+
+def _exact(name: str) -> str:
+    """A filter pattern matching exactly one name (glob characters escaped)."""
+    return "".join(f"[{c}]" if c in "*?[" else c for c in name.lower())
+
+
+def _file_info(prepared: Prepared) -> TestFileInfo:
+    return TestFileInfo(
+        file=prepared.file,
+        tests=[TestCaseInfo(name=t.name, line=t.line) for t in prepared.tests],
+        diagnostics=prepared.diagnostics,
+    )
+
+
+async def _stream(project: Project, files: list[SuiteFile], pattern: str | None, coverage: bool) -> AsyncIterator[str]:
+    loop = asyncio.get_running_loop()
+    queue: asyncio.Queue[str | None] = asyncio.Queue()
+
+    def emit(event: TestEvent) -> None:
+        line = event.model_dump_json(exclude_none=True) + "\n"
+        loop.call_soon_threadsafe(queue.put_nowait, line)
+
+    def work() -> None:
+        try:
+            outcome = run_suite(
+                project,
+                files,
+                Options(coverage=coverage),
+                pattern=pattern,
+                jobs=1,
+                prepared_files=lambda prepared: [emit(TestEvent(type="file", file=_file_info(p))) for p in prepared],
+                progress=lambda result: emit(TestEvent(type="result", result=_result(result))),
+            )
+            names = {p.name.upper(): p.name for p in project.pous}
+            summary = TestSummary(
+                passed=outcome.count("passed"),
+                failed=outcome.count("failed"),
+                skipped=outcome.count("skipped"),
+                files_with_errors=sum(1 for f in outcome.files if not f.ok),
+                seconds=round(outcome.seconds, 3),
+            )
+            report = outcome.coverage.report(names) if outcome.coverage is not None else None
+            emit(TestEvent(type="done", summary=summary, coverage=report))  # type: ignore[arg-type]
+        finally:
+            loop.call_soon_threadsafe(queue.put_nowait, None)
+
+    threading.Thread(target=work, name="tests", daemon=True).start()
+    while (line := await queue.get()) is not None:
+        yield line
+
+
+def _result(result: TestResult) -> TestResultInfo:
+    return TestResultInfo.model_validate(result_json(result))
