@@ -46,9 +46,9 @@ from .xml_io import (
     foreign_data,
     info,
     info_text,
-    test_texts,
     local,
     namespace,
+    test_texts,
     text_content,
 )
 from .xml_safety import XmlInputError, parse_untrusted_xml
