@@ -62,7 +62,15 @@ describe("app shell", () => {
     const headings = within(tree)
       .getAllByRole("heading")
       .map((h) => h.textContent);
-    expect(headings).toEqual(["Programs", "Function blocks", "Functions", "Types", "Global variables", "Tasks"]);
+    expect(headings).toEqual([
+      "Programs",
+      "Function blocks",
+      "Functions",
+      "Types",
+      "Global variables",
+      "Tasks",
+      "Tests",
+    ]);
     expect(within(tree).getByRole("button", { name: /Main/ }).textContent).toBe("MainLD");
     expect(within(tree).getByRole("button", { name: /Blinker/ }).textContent).toBe("BlinkerST");
     expect(within(tree).getByText(/Fast/).textContent).toContain("T#10ms · Main");
