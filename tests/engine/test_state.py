@@ -43,6 +43,8 @@ def test_a_restored_state_continues_like_the_original(pattern, before, after):
     copy.restore(state)
     assert copy.snapshot() == original.snapshot()
     assert (copy.time_ms, copy.scan_count, copy.forced) == (original.time_ms, original.scan_count, original.forced)
+    for instance in ("MAIN", "MAIN.BLINK", "SCALING"):  # the power flow of the last scan, as the online view shows it
+        assert copy.probes(instance) == original.probes(instance)
     for step in range(before, before + after):
         for sim in (original, copy):
             _inputs(sim, step, pattern)

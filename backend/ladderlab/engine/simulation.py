@@ -591,6 +591,7 @@ class Simulation:
             self.time_ms,
             self._ns["ll_now"],  # type: ignore[arg-type]
             self.scan_count,
+            self._stamp,
             tuple((task.next_due, task.stopped) for task in self._tasks),
             {name: data_of(obj) for name, obj in self.programs.items()},  # type: ignore[misc]
             {page: data_of(self._ns[page]) for page in pages},  # type: ignore[misc]
@@ -616,6 +617,8 @@ class Simulation:
             task.next_due, task.stopped = due, stopped
         self._ns["ll_now"] = state.now
         self.scan_count = state.scan_count
+        self._stamp = state.stamp
+        self._ns["ll_scan"] = state.stamp
         self._forces.clear()
         for path, value in state.forces.items():
             self.force(path, value)

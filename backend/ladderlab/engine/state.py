@@ -45,6 +45,7 @@ class SimState:
     time_ms: float
     now: float
     scan_count: int
+    stamp: int  # scans started: the probes' record of what ran in the last scan refers to it
     tasks: tuple[tuple[float, bool], ...]  # each task's next due time and stopped flag
     instances: dict[str, object]  # program or attached instance name -> its slots
     globals: dict[str, object]  # global page -> its slots

@@ -753,7 +753,9 @@ export function WorkspaceView() {
             Save failed: {saveError}
           </span>
         ) : null}
-        {name ? <ExportMenu project={name} pou={active} unsaved={changed.length > 0} /> : null}
+        {name ? (
+          <ExportMenu project={name} pou={active && !isTestPath(active) ? active : null} unsaved={changed.length > 0} />
+        ) : null}
         <ImportPlcopen
           onStored={() => void appStore.getState().loadProjects()}
           onOpen={(imported) => appStore.getState().selectProject(imported)}

@@ -97,6 +97,7 @@ export function TestsPanel() {
   const summary = useTests((s) => s.summary);
   const error = useTests((s) => s.error);
   const coverage = useTests((s) => s.coverage);
+  const withCoverage = useTests((s) => s.withCoverage);
   const tests = project?.tests;
   // The list follows the working copy's test files (names and tests, parsed by the server).
   useEffect(() => {
@@ -119,9 +120,14 @@ export function TestsPanel() {
         <button type="button" disabled={running !== null || !files.length} onClick={() => run()}>
           Run all
         </button>
-        <button type="button" disabled={running !== null || !files.length} onClick={() => run({ coverage: true })}>
-          Run all with coverage
-        </button>
+        <label>
+          <input
+            type="checkbox"
+            checked={withCoverage}
+            onChange={(e) => testsStore.getState().setWithCoverage(e.target.checked)}
+          />{" "}
+          with coverage
+        </label>
         {coverage ? (
           <button type="button" onClick={() => testsStore.getState().clearCoverage()}>
             Hide coverage

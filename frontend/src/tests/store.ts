@@ -19,17 +19,21 @@ export interface TestsData {
   summary: TestSummary | null;
   /** Per POU name: what the last coverage run never executed or energised (null: no coverage shown). */
   coverage: Record<string, CoverageInfo> | null;
+  /** Runs collect coverage (the toolbar's checkbox). */
+  withCoverage: boolean;
   error: string | null;
 }
 
 export interface TestsActions {
   /** Lists the test files and tests of the working copy (nothing runs). */
   refresh(project: Project): Promise<void>;
-  /** Runs every test, a file's (`file`) or one (`file` and `test`); with `coverage`, tints what never ran. */
+  /** Runs every test, a file's (`file`) or one (`file` and `test`); with coverage (the request's, else the
+   * checkbox's), tints what never ran. */
   run(project: Project, request?: RunRequest): Promise<void>;
   /** Opens the simulation as it stood when the test failed, online (the simulation bar shows it). */
   openFailure(project: Project, file: string, test: string): Promise<void>;
   clearCoverage(): void;
+  setWithCoverage(on: boolean): void;
   clear(): void;
 }
 
@@ -41,6 +45,7 @@ export const emptyTests: TestsData = {
   running: null,
   summary: null,
   coverage: null,
+  withCoverage: false,
   error: null,
 };
 
@@ -60,7 +65,8 @@ export function createTestsStore(api: TestsApi = testsApi): StoreApi<TestsState>
       }
     },
 
-    async run(project, request = {}) {
+    async run(project, asked = {}) {
+      const request = { coverage: get().withCoverage, ...asked };
       const mine = ++runs;
       const current = () => mine === runs;
       set({ running: { done: 0, total: null }, error: null, summary: null, coverage: null });
@@ -99,7 +105,8 @@ export function createTestsStore(api: TestsApi = testsApi): StoreApi<TestsState>
     },
 
     clearCoverage: () => set({ coverage: null }),
-    clear: () => set({ ...emptyTests }),
+    setWithCoverage: (on) => set({ withCoverage: on }),
+    clear: () => set({ ...emptyTests, withCoverage: get().withCoverage }),
   }));
 }
 
