@@ -59,13 +59,16 @@ class Host:
         self.teardown = False
         self.collect = collect  # coverage: called after every scan and before every verb
         self._faults = 0
-        methods = {verb: getattr(self, "_" + verb.lower()) for verb in {s.verb for s in sites}}
-        self._handlers = [methods[site.verb] for site in sites]
+        self._methods: dict[str, object] = {}
 
     def dispatch(self, site: int, *args: object) -> object:
         if self.collect is not None:
             self.collect()
-        return self._handlers[site](self.sites[site], *args)
+        where = self.sites[site]
+        method = self._methods.get(where.verb)
+        if method is None:
+            method = self._methods[where.verb] = getattr(self, "_" + where.verb.lower())
+        return method(where, *args)  # type: ignore[operator]
 
     # ------------------------------------------------------------ failing
     def fail(self, site: Site, message: str, kind: str = "assertion", **values: object) -> None:

@@ -4,8 +4,9 @@
     outcome = run_suite(project, files, Options(), pattern="seal*", jobs=2, progress=print)
     outcome.exit_code                                     # 0 all passed, 1 a test failed, 2 a file has errors
 
-Each worker process checks and compiles a file once for the tests it is given (a file with many tests is
-split into chunks, so one big file also uses every core); results come back in file and test order.
+Each worker process checks and compiles a file once for the tests it is given (a file is split into parts
+only when there are fewer files than workers, so one big file also uses every core); results come back in
+file and test order.
 Workers may be given a memory limit (``RLIMIT_AS``): a test that needs more fails with "out of memory".
 """
 
@@ -13,9 +14,10 @@ from __future__ import annotations
 
 import multiprocessing
 import os
+import re
 import time
 from collections.abc import Callable
-from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
+from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -27,7 +29,8 @@ from .run import Options, Prepared, TestResult, prepare, run_test, selected
 
 #: Fewer tests than this run in the calling process: starting workers costs more than it saves.
 PARALLEL_FROM = 40
-CHUNK = 25
+#: How many tests a file has, near enough to choose between one process and several (no parse: it is slow).
+_TEST_KEYWORD = re.compile(r"^\s*TEST\s+'", re.IGNORECASE | re.MULTILINE)
 
 
 @dataclass(frozen=True)
@@ -90,62 +93,76 @@ def run_suite(
     memory_limit_mb: int | None = None,
     prepared_files: Callable[[list[Prepared]], None] | None = None,
 ) -> SuiteOutcome:
-    """Run the tests of ``files`` matching ``pattern``; ``prepared_files`` hears of the compiled files (their
-    tests or diagnostics) before any runs, ``progress`` of each result as it comes."""
+    """Run the tests of ``files`` matching ``pattern``; ``progress`` hears of each result as it comes. With
+    ``jobs`` > 1 and at least ``PARALLEL_FROM`` tests, worker processes run them; otherwise this process does,
+    and ``prepared_files`` hears of the compiled files (their tests or diagnostics) before any test runs."""
     started = time.perf_counter()
+    jobs = jobs or os.cpu_count() or 1
+    if jobs > 1 and sum(len(_TEST_KEYWORD.findall(f.text)) for f in files) >= PARALLEL_FROM:
+        outcomes, coverage = _run_parallel(project, files, options, pattern, jobs, progress, memory_limit_mb)
+        return SuiteOutcome(outcomes, time.perf_counter() - started, coverage)
     coverage = Coverage() if options.coverage else None
     prepared = [prepare(project, f.path, f.text, coverage=options.coverage) for f in files]
     if prepared_files is not None:
         prepared_files(prepared)
     outcomes = [FileOutcome(p.file, p.diagnostics) for p in prepared]
-    work = [(i, selected(p, pattern)) for i, p in enumerate(prepared) if p.compiled is not None]
-    for index, tests in work:
-        outcomes[index].skipped = len(prepared[index].tests) - len(tests)
-    total = sum(len(tests) for _, tests in work)
-    jobs = jobs or os.cpu_count() or 1
-    if total < PARALLEL_FROM or jobs < 2:
-        for index, tests in work:
-            for test in tests:
-                result = run_test(prepared[index], test, options, coverage)
-                outcomes[index].results.append(result)
-                if progress is not None:
-                    progress(result)
-    else:
-        _run_parallel(project, files, work, outcomes, options, jobs, progress, coverage, memory_limit_mb)
+    for index, file in enumerate(prepared):
+        tests = selected(file, pattern) if file.compiled is not None else []
+        outcomes[index].skipped = len(file.tests) - len(tests)
+        for test in tests:
+            result = run_test(file, test, options, coverage)
+            outcomes[index].results.append(result)
+            if progress is not None:
+                progress(result)
     return SuiteOutcome(outcomes, time.perf_counter() - started, coverage)
 
 
-def _run_parallel(project, files, work, outcomes, options, jobs, progress, coverage, memory_limit_mb) -> None:
-    chunks = [
-        (index, [t.pou for t in tests[start : start + CHUNK]])
-        for index, tests in work
-        for start in range(0, len(tests), CHUNK)
-    ]
-    slots: dict[tuple[int, int], list[TestResult]] = {}
+@dataclass
+class _Part:
+    """What a worker sends back for one part of one file."""
+
+    file: int
+    part: int
+    diagnostics: list[Diagnostic]
+    skipped: int
+    results: list[TestResult]
+    coverage: Coverage | None
+
+
+def _run_parallel(project, files, options, pattern, jobs, progress, memory_limit_mb):
+    """Each file once per worker that runs it: a file is split into parts only when there are fewer files
+    than workers (so one big file still uses every core); part ``k`` of ``n`` runs the tests ``k::n``."""
+    parts = max(1, -(-jobs // len(files)))
+    work = [(index, part, parts) for index in range(len(files)) for part in range(parts)]
+    outcomes = [FileOutcome(f.path) for f in files]
+    coverage = Coverage() if options.coverage else None
+    done: dict[tuple[int, int], _Part] = {}
     context = multiprocessing.get_context("spawn")  # the server calls this from threads: never fork them
     with ProcessPoolExecutor(
-        max_workers=min(jobs, len(chunks)),
+        max_workers=min(jobs, len(work)),
         mp_context=context,
         initializer=_worker_start,
         initargs=(project, files, memory_limit_mb),
     ) as pool:
-        pending: dict[Future, tuple[int, int]] = {
-            pool.submit(_run_chunk, index, pous, options): (index, number)
-            for number, (index, pous) in enumerate(chunks)
-        }
+        pending = {pool.submit(_run_part, index, part, parts, options, pattern) for index, part, parts in work}
         while pending:
-            done, _ = wait(pending, return_when=FIRST_COMPLETED)
-            for future in done:
-                key = pending.pop(future)
-                results, chunk_coverage = future.result()
-                slots[key] = results
-                if coverage is not None and chunk_coverage is not None:
-                    coverage.merge(chunk_coverage)
+            finished, pending = wait(pending, return_when=FIRST_COMPLETED)
+            for future in finished:
+                part: _Part = future.result()
+                done[(part.file, part.part)] = part
+                if coverage is not None and part.coverage is not None:
+                    coverage.merge(part.coverage)
                 if progress is not None:
-                    for result in results:
+                    for result in part.results:
                         progress(result)
-    for index, number in sorted(slots):
-        outcomes[index].results.extend(slots[(index, number)])
+    for (index, number), part in sorted(done.items()):
+        outcome = outcomes[index]
+        if number == 0:
+            outcome.diagnostics, outcome.skipped = part.diagnostics, part.skipped
+        outcome.results.extend(part.results)
+    for outcome in outcomes:  # parts ran tests k::n: back to file order
+        outcome.results.sort(key=lambda r: r.line)
+    return outcomes, coverage
 
 
 _worker: dict[str, object] = {}
@@ -160,12 +177,14 @@ def _worker_start(project: Project, files: list[SuiteFile], memory_limit_mb: int
     _worker.update(project=project, files=files, prepared={})
 
 
-def _run_chunk(index: int, pous: list[str], options: Options) -> tuple[list[TestResult], Coverage | None]:
+def _run_part(index: int, part: int, parts: int, options: Options, pattern: str | None) -> _Part:
     cache: dict[int, Prepared] = _worker["prepared"]  # type: ignore[assignment]
     if index not in cache:
         file: SuiteFile = _worker["files"][index]  # type: ignore[index]
         cache[index] = prepare(_worker["project"], file.path, file.text, coverage=options.coverage)  # type: ignore[arg-type]
     prepared = cache[index]
     coverage = Coverage() if options.coverage else None
-    tests = {t.pou: t for t in prepared.tests}
-    return [run_test(prepared, tests[pou], options, coverage) for pou in pous], coverage
+    tests = selected(prepared, pattern) if prepared.compiled is not None else []
+    mine = tests[part::parts]
+    results = [run_test(prepared, test, options, coverage) for test in mine]
+    return _Part(index, part, prepared.diagnostics, len(prepared.tests) - len(tests), results, coverage)
