@@ -104,8 +104,7 @@ def test_junit_and_jsonl_reports(motor, tmp_path, capsys):
 
 
 def test_coverage_names_what_the_tests_never_executed_or_energised(motor, tmp_path, capsys):
-    for test in (motor / "tests").iterdir():
-        test.unlink()
+    (motor / "tests" / "motor.st").unlink()
     (motor / "tests" / "only.st").write_text(FAILING.split("TEST 'fails'")[0])
     target = tmp_path / "coverage.json"
     assert main(["test", str(motor), "--coverage", "--coverage-json", str(target)]) == 0
@@ -135,20 +134,23 @@ def test_coverage_names_what_the_tests_never_executed_or_energised(motor, tmp_pa
 
 def test_grading_runs_hidden_tests_and_saves_keep_them(motor, tmp_path, capsys):
     hidden = motor / "tests" / "hidden"
-    hidden.mkdir()
-    (hidden / "grading.st").write_text(FAILING)
+    (hidden / "extra.st").write_text(FAILING)
     workspace = Workspace(tmp_path)
     stored = workspace.load("motor")
     assert [t.name for t in stored.project.tests] == ["motor"]  # the hidden file is not in the model
     workspace.save(stored.project, stored.revision)
-    assert (hidden / "grading.st").read_text() == FAILING
+    assert (hidden / "extra.st").read_text() == FAILING
     assert main(["test", str(motor), "--grade"]) == 0
     report = json.loads(capsys.readouterr().out)
     assert report == {
         "exercise": "motor",
-        "passed": 7,
-        "total": 8,
-        "files": {"tests/motor.st": {"passed": 6, "total": 6}, "tests/hidden/grading.st": {"passed": 1, "total": 2}},
+        "passed": 9,
+        "total": 10,
+        "files": {
+            "tests/motor.st": {"passed": 6, "total": 6},
+            "tests/hidden/extra.st": {"passed": 1, "total": 2},
+            "tests/hidden/grading.st": {"passed": 2, "total": 2},
+        },
     }
 
 
