@@ -154,15 +154,18 @@ def test_grading_runs_hidden_tests_and_saves_keep_them(motor, tmp_path, capsys):
     }
 
 
-def test_many_tests_run_in_worker_processes_with_the_same_results(motor):
+def test_many_tests_run_in_worker_processes_with_the_same_results_and_a_memory_limit(motor):
     tests = "".join(
         f"TEST 'n{i}'\n  Start := TRUE;\n  RUN_SCANS({i % 3});\n  ASSERT_EQ(Motor, {'TRUE' if i % 3 else 'FALSE'});\n"
         f"  ASSERT_EQ(Main.StartCounter.CV, {1 if i % 3 else 0} + {i % 2});\nEND_TEST\n"
         for i in range(60)
     )
+    hog = "TEST 'hog'\n  VAR big : ARRAY[1..200000000] OF LINT; END_VAR\n  ASSERT_EQ(big[1], 0);\nEND_TEST\n"
     (motor / "tests" / "many.st").write_text(tests)
+    (motor / "tests" / "hog.st").write_text(hog)
     result = subprocess.run(
-        [sys.executable, "-m", "ladderlab.cli", "test", str(motor), "--jobs", "2", "--format", "jsonl"],
+        [sys.executable, "-m", "ladderlab.cli", "test", str(motor), "--jobs", "2", "--format", "jsonl"]
+        + ["--memory-limit", "700"],
         capture_output=True,
         text=True,
         timeout=300,
@@ -173,5 +176,13 @@ def test_many_tests_run_in_worker_processes_with_the_same_results(motor):
     failed = sorted(line["name"] for line in lines if line.get("outcome") == "failed")
     # CV counts one start for any test that scanned (i % 3 > 0), never i % 2 more: odd i fail
     assert failed == sorted(f"n{i}" for i in range(60) if i % 2)
-    assert result.returncode == 1
-    assert load_project_path(motor).tests[1].name == "motor"
+    hog = next(line for line in lines if line.get("file") == "tests/hog.st")
+    assert [(d["code"], d["message"]) for d in hog["diagnostics"]] == [
+        (
+            "TEST-MEMORY",
+            "out of memory while checking and compiling this test file with the project: its variables need more "
+            "memory than the process may use (--memory-limit)",
+        )
+    ]
+    assert result.returncode == 2
+    assert load_project_path(motor).tests[2].name == "motor"

@@ -64,14 +64,26 @@ class Prepared:
 
 def prepare(project: Project, file: str, text: str, *, coverage: bool = False, monitor: bool = False) -> Prepared:
     """Check, lower and compile ``project`` with one test file; with ``coverage`` the monitor variant with
-    line probes in the ST POUs (coverage.instrument), with ``monitor`` the monitor variant (to go online)."""
+    line probes in the ST POUs (coverage.instrument), with ``monitor`` the monitor variant (to go online).
+    Running out of memory (a worker process's --memory-limit) is a diagnostic of the file."""
+    try:
+        return _prepare(project, file, text, coverage or monitor, coverage)
+    except MemoryError:
+        message = (
+            "out of memory while checking and compiling this test file with the project: its variables need more "
+            "memory than the process may use (--memory-limit)"
+        )
+        return Prepared(file, [], [], [], None, [Diagnostic(code="TEST-MEMORY", file=file, message=message)])
+
+
+def _prepare(project: Project, file: str, text: str, monitor: bool, coverage: bool) -> Prepared:
     lowered = lower_test_file(project, text, file)
     if lowered.program is None:
         return Prepared(file, [], [], [], None, lowered.diagnostics)
     if coverage:
         instrument(lowered.program)
     try:
-        compiled = compile_program(lowered.program, "monitor" if coverage or monitor else "fast")
+        compiled = compile_program(lowered.program, "monitor" if monitor else "fast")
     except CompileError as error:
         return Prepared(file, [], [], [], None, lowered.diagnostics + error.diagnostics)
     return Prepared(file, lowered.tests, lowered.sites, lowered.hosts, compiled, lowered.diagnostics)

@@ -144,11 +144,14 @@ def _run_parallel(project, files, options, pattern, jobs, progress, memory_limit
         initializer=_worker_start,
         initargs=(project, files, memory_limit_mb),
     ) as pool:
-        pending = {pool.submit(_run_part, index, part, parts, options, pattern) for index, part, parts in work}
+        units = {
+            pool.submit(_run_part, index, part, parts, options, pattern): (index, part) for index, part, parts in work
+        }
+        pending = set(units)
         while pending:
             finished, pending = wait(pending, return_when=FIRST_COMPLETED)
             for future in finished:
-                part: _Part = future.result()
+                part = _result(future, *units[future], files)
                 done[(part.file, part.part)] = part
                 if coverage is not None and part.coverage is not None:
                     coverage.merge(part.coverage)
@@ -163,6 +166,18 @@ def _run_parallel(project, files, options, pattern, jobs, progress, memory_limit
     for outcome in outcomes:  # parts ran tests k::n: back to file order
         outcome.results.sort(key=lambda r: r.line)
     return outcomes, coverage
+
+
+def _result(future, index: int, number: int, files: list[SuiteFile]) -> _Part:
+    """A part's outcome; a worker process that died (killed, out of memory outside a test) says so for its file."""
+    try:
+        return future.result()
+    except Exception as error:  # BrokenProcessPool and whatever a worker could not report itself
+        reason = f"{type(error).__name__}: {error}" if str(error) else type(error).__name__
+        message = f"the worker process running this file stopped ({reason}); its tests did not run"
+        return _Part(
+            index, number, [Diagnostic(code="TEST-WORKER", file=files[index].path, message=message)], 0, [], None
+        )
 
 
 _worker: dict[str, object] = {}
