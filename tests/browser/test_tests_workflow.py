@@ -2,7 +2,8 @@
 stream in: 6 passed), a new test file is written in the ST editor (a typo is underlined live, then
 fixed), run on its own: its failing assertion shows both values, a click on its location puts the
 editor's cursor on that line, and the failure opens online with the values the simulation had when it
-failed. A run with coverage tints the LD elements never energised and the ST lines never executed.
+failed. A run with coverage tints the LD elements and FBD blocks never energised and the ST lines never
+executed.
 Fails on any page error or console error. Screenshots go to tests/browser/artifacts/.
 """
 
@@ -118,6 +119,11 @@ def test_run_tests_see_a_failure_jump_to_it_open_it_online_and_see_coverage(page
     )
     assert "ld-coverage" not in (page.locator("g[data-id=motor]").get_attribute("class") or "")
     page.screenshot(path=str(ARTIFACTS / "tests-coverage-ld.png"))
+    # Scaling (FBD): Speed = 1 * 10 + 5 never exceeded 50, so the comparison's output never energised HighSpeed.
+    tree.get_by_role("button", name=re.compile("^Scaling")).click()
+    page.wait_for_function(
+        "() => document.querySelector('[data-node=high]')?.classList.contains('fbd-coverage-never-energised')"
+    )
     tree.get_by_role("button", name=re.compile("^Blinker")).click()
     body = page.get_by_label("Blinker body")
     body.wait_for()
