@@ -3,7 +3,7 @@
 // simulation runs, tinted by the tests' coverage), the ST editor of test files, the simulation
 // toolbar, the bottom panels, Save (Ctrl+S) and the dialog for a save conflict (reload theirs or
 // overwrite deliberately).
-import { useCallback, useEffect, useMemo, useState, type CSSProperties, type FormEvent } from "react";
+import { useCallback, useEffect, useMemo, useState, type CSSProperties, type FormEvent, type ReactNode } from "react";
 import type { Diagnostic } from "../generated/api";
 import type { LdBody, Pou, Project, TestFile } from "../generated/project";
 import { LdEditor } from "../ld/editor/LdEditor";
@@ -48,24 +48,34 @@ export const formatTime = (iso: string | null | undefined): string => {
   return Number.isNaN(date.getTime()) ? iso : date.toLocaleString();
 };
 
-/** "New POU": name, kind and language; the POU joins the working copy (saved with the project). */
-function NewPou() {
-  const addPou = useWorkspace((s) => s.addPou);
+/**
+ * A "New ..." button that opens a small form: a name (and `fields`); `create` adds the item to the working
+ * copy and returns the reason it refused the name, or null (the form closes).
+ */
+function NewItemForm({
+  title,
+  nameLabel,
+  create,
+  children,
+}: {
+  title: string;
+  nameLabel: string;
+  create(name: string): string | null;
+  children?: ReactNode;
+}) {
   const [open, setOpen] = useState(false);
   const [name, setName] = useState("");
-  const [kind, setKind] = useState<Pou["kind"]>("program");
-  const [language, setLanguage] = useState<Pou["language"]>("ld");
   const [error, setError] = useState<string | null>(null);
   if (!open) {
     return (
       <button type="button" className="new-pou-button" onClick={() => setOpen(true)}>
-        New POU
+        {title}
       </button>
     );
   }
   const submit = (e: FormEvent) => {
     e.preventDefault();
-    const problem = addPou(name, kind, language);
+    const problem = create(name);
     setError(problem);
     if (!problem) {
       setOpen(false);
@@ -73,15 +83,36 @@ function NewPou() {
     }
   };
   return (
-    <form className="new-pou" aria-label="New POU" onSubmit={submit}>
+    <form className="new-pou" aria-label={title} onSubmit={submit}>
       <input
-        aria-label="POU name"
+        aria-label={nameLabel}
         autoFocus
         value={name}
         onChange={(e) => setName(e.target.value)}
         placeholder="name"
         spellCheck={false}
       />
+      {children}
+      <button type="submit">Create</button>
+      <button type="button" onClick={() => setOpen(false)}>
+        Cancel
+      </button>
+      {error ? (
+        <p className="new-pou-error" role="alert">
+          {error}
+        </p>
+      ) : null}
+    </form>
+  );
+}
+
+/** "New POU": name, kind and language; the POU joins the working copy (saved with the project). */
+function NewPou() {
+  const addPou = useWorkspace((s) => s.addPou);
+  const [kind, setKind] = useState<Pou["kind"]>("program");
+  const [language, setLanguage] = useState<Pou["language"]>("ld");
+  return (
+    <NewItemForm title="New POU" nameLabel="POU name" create={(name) => addPou(name, kind, language)}>
       <select aria-label="POU kind" value={kind} onChange={(e) => setKind(e.target.value as Pou["kind"])}>
         {KINDS.map((k) => (
           <option key={k.kind} value={k.kind}>
@@ -100,62 +131,14 @@ function NewPou() {
           </option>
         ))}
       </select>
-      <button type="submit">Create</button>
-      <button type="button" onClick={() => setOpen(false)}>
-        Cancel
-      </button>
-      {error ? (
-        <p className="new-pou-error" role="alert">
-          {error}
-        </p>
-      ) : null}
-    </form>
+    </NewItemForm>
   );
 }
 
 /** "New test file": a name; the file joins the working copy with a first test and opens. */
 function NewTestFile() {
   const addTestFile = useWorkspace((s) => s.addTestFile);
-  const [open, setOpen] = useState(false);
-  const [name, setName] = useState("");
-  const [error, setError] = useState<string | null>(null);
-  if (!open) {
-    return (
-      <button type="button" className="new-pou-button" onClick={() => setOpen(true)}>
-        New test file
-      </button>
-    );
-  }
-  const submit = (e: FormEvent) => {
-    e.preventDefault();
-    const problem = addTestFile(name);
-    setError(problem);
-    if (!problem) {
-      setOpen(false);
-      setName("");
-    }
-  };
-  return (
-    <form className="new-pou" aria-label="New test file" onSubmit={submit}>
-      <input
-        aria-label="Test file name"
-        autoFocus
-        value={name}
-        onChange={(e) => setName(e.target.value)}
-        placeholder="name"
-        spellCheck={false}
-      />
-      <button type="submit">Create</button>
-      <button type="button" onClick={() => setOpen(false)}>
-        Cancel
-      </button>
-      {error ? (
-        <p className="new-pou-error" role="alert">
-          {error}
-        </p>
-      ) : null}
-    </form>
-  );
+  return <NewItemForm title="New test file" nameLabel="Test file name" create={addTestFile} />;
 }
 
 const NO_TESTS: readonly TestFile[] = [];
