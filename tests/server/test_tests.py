@@ -81,10 +81,11 @@ def test_run_streams_each_file_then_each_result_then_the_summary(client: TestCli
 
 
 def test_run_one_test_or_all_with_coverage(client: TestClient, motor: str) -> None:
-    body = {"project": _project(client), "file": "tests/extra.st", "test": "runs"}
+    project = _project(client, FAILING + "TEST 'runs [twice]'\n  ASSERT(TRUE);\nEND_TEST\n")
+    body = {"project": project, "file": "tests/extra.st", "test": "runs"}
     one = _events(client.post("/api/tests/run", json=body))
-    assert [e["result"]["name"] for e in one if e["type"] == "result"] == ["runs"]
-    assert one[-1]["summary"]["skipped"] == 1
+    assert [e["result"]["name"] for e in one if e["type"] == "result"] == ["runs"]  # that name exactly
+    assert one[-1]["summary"]["skipped"] == 2
     every = _events(client.post("/api/tests/run", json={"project": _project(client), "coverage": True}))
     assert sum(e["type"] == "result" for e in every) == 8
     coverage = every[-1]["coverage"]

@@ -70,8 +70,7 @@ async def run_tests(body: TestRunRequest, limits: LimitsDep) -> StreamingRespons
     """Run every test, one file's or one test; answers a stream of ``TestEvent`` JSON lines."""
     check_project_size(body.project, limits)
     files = [_file(body.project, body.file)] if body.file is not None else suite_files(body.project)
-    pattern = _exact(body.test) if body.test is not None else None
-    return StreamingResponse(_stream(body.project, files, pattern, body.coverage), media_type="application/x-ndjson")
+    return StreamingResponse(_stream(body.project, files, body.test, body.coverage), media_type="application/x-ndjson")
 
 
 @router.post("/open", response_model=SimulationInfo, status_code=201, responses=responses(404, 409, 413, 422, 429))
@@ -101,11 +100,6 @@ def _file(project: Project, path: str) -> SuiteFile:
     return found
 
 
-def _exact(name: str) -> str:
-    """A filter pattern matching exactly one name (glob characters escaped)."""
-    return "".join(f"[{c}]" if c in "*?[" else c for c in name.lower())
-
-
 def _file_info(prepared: Prepared) -> TestFileInfo:
     return TestFileInfo(
         file=prepared.file,
@@ -114,7 +108,7 @@ def _file_info(prepared: Prepared) -> TestFileInfo:
     )
 
 
-async def _stream(project: Project, files: list[SuiteFile], pattern: str | None, coverage: bool) -> AsyncIterator[str]:
+async def _stream(project: Project, files: list[SuiteFile], test: str | None, coverage: bool) -> AsyncIterator[str]:
     loop = asyncio.get_running_loop()
     queue: asyncio.Queue[str | None] = asyncio.Queue()
 
@@ -128,7 +122,7 @@ async def _stream(project: Project, files: list[SuiteFile], pattern: str | None,
                 project,
                 files,
                 Options(coverage=coverage),
-                pattern=pattern,
+                name=test,
                 jobs=1,
                 prepared_files=lambda prepared: [emit(TestEvent(type="file", file=_file_info(p))) for p in prepared],
                 progress=lambda result: emit(TestEvent(type="result", result=_result(result))),

@@ -15,7 +15,7 @@ from __future__ import annotations
 import fnmatch
 import time
 from collections.abc import Iterator
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from ..engine.compile import CompiledProgram, CompileError, compile_program
 from ..engine.simulation import Simulation
@@ -89,8 +89,11 @@ def _prepare(project: Project, file: str, text: str, monitor: bool, coverage: bo
     return Prepared(file, lowered.tests, lowered.sites, lowered.hosts, compiled, lowered.diagnostics)
 
 
-def selected(prepared: Prepared, pattern: str | None) -> list[LoweredTest]:
-    """The tests whose name matches ``pattern`` (a glob, or a part of the name; case-insensitive)."""
+def selected(prepared: Prepared, pattern: str | None, name: str | None = None) -> list[LoweredTest]:
+    """The tests whose name matches ``pattern`` (a glob, or a part of the name; case-insensitive), or the one
+    called exactly ``name``."""
+    if name is not None:
+        return [test for test in prepared.tests if test.name == name]
     if not pattern:
         return list(prepared.tests)
     wanted = pattern.lower()
@@ -150,16 +153,7 @@ def failure_after_teardown(failure: Failure, teardown: Failure | None) -> Failur
     """The test's own failure is the one reported; a TEARDOWN that fails too is mentioned after it."""
     if teardown is None:
         return failure
-    return Failure(
-        f"{failure.message}\n(and the TEARDOWN failed: {teardown.message})",
-        failure.line,
-        failure.column,
-        failure.verb,
-        failure.actual,
-        failure.expected,
-        failure.note,
-        failure.kind,
-    )
+    return replace(failure, message=f"{failure.message}\n(and the TEARDOWN failed: {teardown.message})")
 
 
 def _phase(sim: Simulation, instance: object, test: LoweredTest, options: Options) -> Failure | None:

@@ -92,14 +92,16 @@ def run_suite(
     progress: Callable[[TestResult], None] | None = None,
     memory_limit_mb: int | None = None,
     prepared_files: Callable[[list[Prepared]], None] | None = None,
+    name: str | None = None,
 ) -> SuiteOutcome:
-    """Run the tests of ``files`` matching ``pattern``; ``progress`` hears of each result as it comes. With
+    """Run the tests of ``files`` matching ``pattern`` (or the one called ``name``); ``progress`` hears of each
+    result as it comes. With
     ``jobs`` > 1 and at least ``PARALLEL_FROM`` tests, worker processes run them; otherwise this process does,
     and ``prepared_files`` hears of the compiled files (their tests or diagnostics) before any test runs."""
     started = time.perf_counter()
     jobs = jobs or os.cpu_count() or 1
     if jobs > 1 and sum(len(_TEST_KEYWORD.findall(f.text)) for f in files) >= PARALLEL_FROM:
-        outcomes, coverage = _run_parallel(project, files, options, pattern, jobs, progress, memory_limit_mb)
+        outcomes, coverage = _run_parallel(project, files, options, (pattern, name), jobs, progress, memory_limit_mb)
         return SuiteOutcome(outcomes, time.perf_counter() - started, coverage)
     coverage = Coverage() if options.coverage else None
     prepared = [prepare(project, f.path, f.text, coverage=options.coverage) for f in files]
@@ -107,7 +109,7 @@ def run_suite(
         prepared_files(prepared)
     outcomes = [FileOutcome(p.file, p.diagnostics) for p in prepared]
     for index, file in enumerate(prepared):
-        tests = selected(file, pattern) if file.compiled is not None else []
+        tests = selected(file, pattern, name) if file.compiled is not None else []
         outcomes[index].skipped = len(file.tests) - len(tests)
         for test in tests:
             result = run_test(file, test, options, coverage)
@@ -129,7 +131,7 @@ class _Part:
     coverage: Coverage | None
 
 
-def _run_parallel(project, files, options, pattern, jobs, progress, memory_limit_mb):
+def _run_parallel(project, files, options, choice, jobs, progress, memory_limit_mb):
     """Each file once per worker that runs it: a file is split into parts only when there are fewer files
     than workers (so one big file still uses every core); part ``k`` of ``n`` runs the tests ``k::n``."""
     parts = max(1, -(-jobs // len(files)))
@@ -145,7 +147,7 @@ def _run_parallel(project, files, options, pattern, jobs, progress, memory_limit
         initargs=(project, files, memory_limit_mb),
     ) as pool:
         units = {
-            pool.submit(_run_part, index, part, parts, options, pattern): (index, part) for index, part, parts in work
+            pool.submit(_run_part, index, part, parts, options, choice): (index, part) for index, part, parts in work
         }
         pending = set(units)
         while pending:
@@ -192,14 +194,14 @@ def _worker_start(project: Project, files: list[SuiteFile], memory_limit_mb: int
     _worker.update(project=project, files=files, prepared={})
 
 
-def _run_part(index: int, part: int, parts: int, options: Options, pattern: str | None) -> _Part:
+def _run_part(index: int, part: int, parts: int, options: Options, choice: tuple[str | None, str | None]) -> _Part:
     cache: dict[int, Prepared] = _worker["prepared"]  # type: ignore[assignment]
     if index not in cache:
         file: SuiteFile = _worker["files"][index]  # type: ignore[index]
         cache[index] = prepare(_worker["project"], file.path, file.text, coverage=options.coverage)  # type: ignore[arg-type]
     prepared = cache[index]
     coverage = Coverage() if options.coverage else None
-    tests = selected(prepared, pattern) if prepared.compiled is not None else []
+    tests = selected(prepared, *choice) if prepared.compiled is not None else []
     mine = tests[part::parts]
     results = [run_test(prepared, test, options, coverage) for test in mine]
     return _Part(index, part, prepared.diagnostics, len(prepared.tests) - len(tests), results, coverage)

@@ -7,6 +7,7 @@ import type { Diagnostic, TestFailureInfo, TestResultInfo } from "../generated/a
 import type { Project } from "../generated/project";
 import { panelsStore } from "../panels/store";
 import { useWorkspace, workspaceStore } from "../project/store";
+import { CHECK_DELAY_MS } from "../st/useLiveCheck";
 import { resultKey, testsStore, useTests } from "./store";
 
 /** Opens a test file in the editor at a line. */
@@ -99,9 +100,11 @@ export function TestsPanel() {
   const coverage = useTests((s) => s.coverage);
   const withCoverage = useTests((s) => s.withCoverage);
   const tests = project?.tests;
-  // The list follows the working copy's test files (names and tests, parsed by the server).
+  // The list follows the working copy's test files (names and tests, parsed by the server), once typing pauses.
   useEffect(() => {
-    if (project) void testsStore.getState().refresh(project);
+    if (!project) return;
+    const timer = setTimeout(() => void testsStore.getState().refresh(project), CHECK_DELAY_MS);
+    return () => clearTimeout(timer);
     // Only a change of the test files themselves asks again.
     // eslint-disable-next-line react-hooks/exhaustive-deps
   }, [tests]);
