@@ -3,9 +3,12 @@
 Every route takes the working copy (like ``POST /api/check``), so the Tests panel runs what the user
 sees, saved or not. ``/run`` answers a stream of JSON lines (``TestEvent``): one per test file (its
 tests, or the diagnostics that keep it from compiling), one per test result as it finishes, then the
-summary (and the coverage when asked for). The tests run in a worker thread; the event loop only
-forwards the lines. ``/open`` runs a failing test again and opens the simulation as it stood at the
-failure, as an online simulation of the project with the test's instance (``TEST__<n>``) in it.
+summary (and the coverage when asked for). The tests run in worker processes, each test a unit of its
+own (no test runs in the server's process); a thread forwards the results to the event loop. ``/open``
+has a new simulation's process run the failing test again (``testing/online.py``) and serve the
+simulation as it stood at the failure: the project with the test's instance (``TEST__<n>``) in it.
+``/list`` only parses; ``/check`` checks and compiles one file in the server's process (for the editor's
+live diagnostics: there is no build process for test files yet).
 """
 
 from __future__ import annotations
@@ -17,6 +20,7 @@ from collections.abc import AsyncIterator
 from fastapi import APIRouter, Request
 from fastapi.responses import StreamingResponse
 
+from ..ir.lower_tests import LoweredTest
 from ..model import Project
 from ..model.api import (
     SimulationInfo,
@@ -30,13 +34,13 @@ from ..model.api import (
     TestRunRequest,
     TestSummary,
 )
-from ..simulation.build import simulation_from_state
-from ..simulation.runner import SimRunner
+from ..simulation.remote import BuildFailed, Maker
 from ..st.parser import parse_tests
 from ..storage.project_folder import revision_of
+from ..testing.online import failed_test_simulation
 from ..testing.report import result_json
-from ..testing.run import Options, Prepared, TestResult, failure_state, prepare
-from ..testing.suite import SuiteFile, run_suite, suite_files
+from ..testing.run import Options, Prepared, TestResult, prepare
+from ..testing.suite import FileOutcome, SuiteFile, run_suite, suite_files
 from .context import registry_of
 from .errors import ApiError, responses
 from .limits import LimitsDep, check_project_size
@@ -62,7 +66,8 @@ def check_tests(body: TestCheckRequest, limits: LimitsDep) -> TestFileInfo:
     """Every diagnostic of one test file with the working copy: the ST editor's live diagnostics."""
     check_project_size(body.project, limits)
     file = _file(body.project, body.file)
-    return _file_info(prepare(body.project, file.path, file.text))
+    prepared = prepare(body.project, file.path, file.text)
+    return _file_info(prepared, prepared.tests)
 
 
 @router.post("/run", responses=responses(404, 413, 422))
@@ -75,21 +80,16 @@ async def run_tests(body: TestRunRequest, limits: LimitsDep) -> StreamingRespons
 
 @router.post("/open", response_model=SimulationInfo, status_code=201, responses=responses(404, 409, 413, 422, 429))
 def open_failure(body: TestOpenRequest, request: Request, limits: LimitsDep) -> SimulationInfo:
-    """Run the failing test again and open its last state as a (stopped) online simulation."""
+    """Run the failing test again in a new simulation's process and open its last state there (stopped)."""
     check_project_size(body.project, limits)
     registry = registry_of(request.app)
     registry.check_room()
     file = _file(body.project, body.file)
+    args = {"project_json": body.project.model_dump_json(), "file": file.path, "text": file.text, "test": body.test}
     try:
-        compiled, result = failure_state(body.project, file.path, file.text, body.test)
-    except LookupError as error:
-        raise ApiError(404, str(error)) from None
-    except ValueError as error:
-        raise ApiError(409, str(error)) from None
-    sim = simulation_from_state(compiled, result.state, watchdog_s=registry.settings.watchdog_s)  # type: ignore[arg-type]
-    entry = registry.add(
-        body.project.name, revision_of(body.project), SimRunner(sim, publish_s=registry.settings.publish_s)
-    )
+        entry = registry.create(body.project, revision_of(body.project), Maker(failed_test_simulation, args))
+    except BuildFailed as refused:
+        raise ApiError(409, refused.message or "the failure cannot be opened", refused.diagnostics) from None
     return simulation_info(entry)
 
 
@@ -100,11 +100,11 @@ def _file(project: Project, path: str) -> SuiteFile:
     return found
 
 
-def _file_info(prepared: Prepared) -> TestFileInfo:
+def _file_info(outcome: FileOutcome | Prepared, tests: list[LoweredTest]) -> TestFileInfo:
     return TestFileInfo(
-        file=prepared.file,
-        tests=[TestCaseInfo(name=t.name, line=t.line) for t in prepared.tests],
-        diagnostics=prepared.diagnostics,
+        file=outcome.path if isinstance(outcome, FileOutcome) else outcome.file,
+        tests=[TestCaseInfo(name=t.name, line=t.line) for t in tests],
+        diagnostics=outcome.diagnostics,
     )
 
 
@@ -123,8 +123,8 @@ async def _stream(project: Project, files: list[SuiteFile], test: str | None, co
                 files,
                 Options(coverage=coverage),
                 name=test,
-                jobs=1,
-                prepared_files=lambda prepared: [emit(TestEvent(type="file", file=_file_info(p))) for p in prepared],
+                processes=True,
+                file_ready=lambda outcome, tests: emit(TestEvent(type="file", file=_file_info(outcome, tests))),
                 progress=lambda result: emit(TestEvent(type="result", result=_result(result))),
             )
             names = {p.name.upper(): p.name for p in project.pous}

@@ -20,9 +20,11 @@ from dataclasses import dataclass, field, replace
 from ..engine.compile import CompiledProgram, CompileError, compile_program
 from ..engine.simulation import Simulation
 from ..engine.state import SimState, capture
+from ..engine.tasks import DEFAULT_WATCHDOG_S
 from ..ir.lower_tests import LoweredTest, Site, lower_test_file
 from ..model.diagnostics import Diagnostic
 from ..model.project import Project
+from ..simulation.build import Build, task_watchdogs
 from .coverage import Coverage, instrument
 from .host import Failure, Host, TestFailure
 
@@ -32,7 +34,7 @@ DEFAULT_SCAN_BUDGET = 1_000_000
 @dataclass(frozen=True)
 class Options:
     scan_budget: int = DEFAULT_SCAN_BUDGET
-    watchdog_s: float = 1.0  # each task's watchdog, as online
+    watchdog_s: float = DEFAULT_WATCHDOG_S  # the watchdog of tasks that set none, as online
     test_limit_s: float = 60.0  # wall time a test's own code may run between two verbs
     coverage: bool = False
     keep_state: bool = False  # capture the simulation's state when a test fails (to open it online)
@@ -60,6 +62,7 @@ class Prepared:
     hosts: list[str]
     compiled: CompiledProgram | None
     diagnostics: list[Diagnostic] = field(default_factory=list)
+    watchdogs: dict[str, float] = field(default_factory=dict)  # the tasks' own budgets (Build.watchdogs)
 
 
 def prepare(project: Project, file: str, text: str, *, coverage: bool = False, monitor: bool = False) -> Prepared:
@@ -86,7 +89,9 @@ def _prepare(project: Project, file: str, text: str, monitor: bool, coverage: bo
         compiled = compile_program(lowered.program, "monitor" if monitor else "fast")
     except CompileError as error:
         return Prepared(file, [], [], [], None, lowered.diagnostics + error.diagnostics)
-    return Prepared(file, lowered.tests, lowered.sites, lowered.hosts, compiled, lowered.diagnostics)
+    return Prepared(
+        file, lowered.tests, lowered.sites, lowered.hosts, compiled, lowered.diagnostics, task_watchdogs(project)
+    )
 
 
 def selected(prepared: Prepared, pattern: str | None, name: str | None = None) -> list[LoweredTest]:
@@ -132,7 +137,7 @@ _OUT_OF_MEMORY = "out of memory: the test needed more memory than its process ma
 
 
 def _run(prepared: Prepared, test: LoweredTest, options: Options, coverage: Coverage | None, result: TestResult):
-    sim = Simulation(prepared.compiled, watchdog_s=options.watchdog_s)  # type: ignore[arg-type]
+    sim = Build(prepared.compiled, [], prepared.watchdogs).simulation(watchdog_s=options.watchdog_s)
     collect = (lambda: coverage.collect(sim)) if coverage is not None else None
     host = Host(sim, prepared.sites, options.scan_budget, collect)
     for name in prepared.hosts:
@@ -176,7 +181,7 @@ def _phase(sim: Simulation, instance: object, test: LoweredTest, options: Option
     return Failure(message, line, origin.column if line is not None and origin else None, kind=kind)
 
 
-def failure_state(project: Project, file: str, text: str, name: str) -> tuple[CompiledProgram, TestResult]:
+def failure_state(project: Project, file: str, text: str, name: str) -> tuple[Prepared, TestResult]:
     """Run the test ``name`` again (the virtual clock makes it repeat exactly) in the monitor variant and
     return its program and its result with the state the simulation had when it failed (to open online).
     LookupError: no such test or the file does not compile; ValueError: the test passes."""
@@ -187,4 +192,4 @@ def failure_state(project: Project, file: str, text: str, name: str) -> tuple[Co
     result = run_test(prepared, test, Options(keep_state=True))
     if result.state is None:
         raise ValueError(f"the test {name!r} passes: there is no failure to open")
-    return prepared.compiled, result
+    return prepared, result

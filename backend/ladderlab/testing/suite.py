@@ -21,6 +21,7 @@ from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from ..ir.lower_tests import LoweredTest
 from ..model.diagnostics import Diagnostic, has_errors
 from ..model.project import Project
 from ..storage.project_folder import HIDDEN_TESTS_DIR, hidden_tests, test_path
@@ -91,26 +92,30 @@ def run_suite(
     jobs: int | None = None,
     progress: Callable[[TestResult], None] | None = None,
     memory_limit_mb: int | None = None,
-    prepared_files: Callable[[list[Prepared]], None] | None = None,
+    file_ready: Callable[[FileOutcome, list[LoweredTest]], None] | None = None,
     name: str | None = None,
+    processes: bool = False,
 ) -> SuiteOutcome:
-    """Run the tests of ``files`` matching ``pattern`` (or the one called ``name``); ``progress`` hears of each
-    result as it comes. With
-    ``jobs`` > 1 and at least ``PARALLEL_FROM`` tests, worker processes run them; otherwise this process does,
-    and ``prepared_files`` hears of the compiled files (their tests or diagnostics) before any test runs."""
+    """Run the tests of ``files`` matching ``pattern`` (or the one called ``name``). ``file_ready`` hears of each
+    file once it is compiled (its diagnostics and tests), ``progress`` of each result as it comes. Worker
+    processes run the tests when ``processes`` is set (the server: no test runs in its process; each test is a
+    unit of its own, so results still come one by one), or with ``jobs`` > 1 and ``PARALLEL_FROM`` tests or more."""
     started = time.perf_counter()
     jobs = jobs or os.cpu_count() or 1
-    if jobs > 1 and sum(len(_TEST_KEYWORD.findall(f.text)) for f in files) >= PARALLEL_FROM:
-        outcomes, coverage = _run_parallel(project, files, options, (pattern, name), jobs, progress, memory_limit_mb)
+    counts = [len(_TEST_KEYWORD.findall(f.text)) for f in files]
+    if files and (processes or (jobs > 1 and sum(counts) >= PARALLEL_FROM)):
+        parts = [max(1, count) if processes and name is None else max(1, -(-jobs // len(files))) for count in counts]
+        run = _Parallel(project, files, options, (pattern, name), progress, file_ready)
+        outcomes, coverage = run.run(parts, jobs, memory_limit_mb)
         return SuiteOutcome(outcomes, time.perf_counter() - started, coverage)
     coverage = Coverage() if options.coverage else None
     prepared = [prepare(project, f.path, f.text, coverage=options.coverage) for f in files]
-    if prepared_files is not None:
-        prepared_files(prepared)
     outcomes = [FileOutcome(p.file, p.diagnostics) for p in prepared]
     for index, file in enumerate(prepared):
         tests = selected(file, pattern, name) if file.compiled is not None else []
         outcomes[index].skipped = len(file.tests) - len(tests)
+        if file_ready is not None:
+            file_ready(outcomes[index], file.tests)
         for test in tests:
             result = run_test(file, test, options, coverage)
             outcomes[index].results.append(result)
@@ -126,48 +131,58 @@ class _Part:
     file: int
     part: int
     diagnostics: list[Diagnostic]
+    tests: list[LoweredTest]
     skipped: int
     results: list[TestResult]
     coverage: Coverage | None
 
 
-def _run_parallel(project, files, options, choice, jobs, progress, memory_limit_mb):
-    """Each file once per worker that runs it: a file is split into parts only when there are fewer files
-    than workers (so one big file still uses every core); part ``k`` of ``n`` runs the tests ``k::n``."""
-    parts = max(1, -(-jobs // len(files)))
-    work = [(index, part, parts) for index in range(len(files)) for part in range(parts)]
-    outcomes = [FileOutcome(f.path) for f in files]
-    coverage = Coverage() if options.coverage else None
-    done: dict[tuple[int, int], _Part] = {}
-    context = multiprocessing.get_context("spawn")  # the server calls this from threads: never fork them
-    with ProcessPoolExecutor(
-        max_workers=min(jobs, len(work)),
-        mp_context=context,
-        initializer=_worker_start,
-        initargs=(project, files, memory_limit_mb),
-    ) as pool:
-        units = {
-            pool.submit(_run_part, index, part, parts, options, choice): (index, part) for index, part, parts in work
-        }
-        pending = set(units)
-        while pending:
-            finished, pending = wait(pending, return_when=FIRST_COMPLETED)
-            for future in finished:
-                part = _result(future, *units[future], files)
-                done[(part.file, part.part)] = part
-                if coverage is not None and part.coverage is not None:
-                    coverage.merge(part.coverage)
-                if progress is not None:
-                    for result in part.results:
-                        progress(result)
-    for (index, number), part in sorted(done.items()):
-        outcome = outcomes[index]
-        if number == 0:
+class _Parallel:
+    """Worker processes: each runs parts of files, preparing a file once for all the parts it gets. Part ``k`` of
+    ``n`` runs the tests ``k::n`` (a file has several parts when there are fewer files than workers, so one big
+    file still uses every core, or one per test when results must come one by one)."""
+
+    def __init__(self, project, files, options, choice, progress, file_ready) -> None:
+        self.project, self.files, self.options, self.choice = project, files, options, choice
+        self.progress, self.file_ready = progress, file_ready
+
+    def run(self, parts: list[int], jobs: int, memory_limit_mb: int | None):
+        files = self.files
+        work = [(index, part, parts[index]) for index in range(len(files)) for part in range(parts[index])]
+        outcomes = [FileOutcome(f.path) for f in files]
+        coverage = Coverage() if self.options.coverage else None
+        done: dict[tuple[int, int], _Part] = {}
+        context = multiprocessing.get_context("spawn")  # the server calls this from threads: never fork them
+        with ProcessPoolExecutor(
+            max_workers=min(jobs, len(work)),
+            mp_context=context,
+            initializer=_worker_start,
+            initargs=(self.project, files, memory_limit_mb),
+        ) as pool:
+            units = {pool.submit(_run_part, i, k, n, self.options, self.choice): (i, k) for i, k, n in work}
+            pending = set(units)
+            while pending:
+                finished, pending = wait(pending, return_when=FIRST_COMPLETED)
+                for future in finished:
+                    part = _result(future, *units[future], files)
+                    self._arrived(part, outcomes[part.file], done)
+                    if coverage is not None and part.coverage is not None:
+                        coverage.merge(part.coverage)
+        for outcome in outcomes:  # parts ran tests k::n: back to file order
+            outcome.results.sort(key=lambda r: r.line)
+        return outcomes, coverage
+
+    def _arrived(self, part: _Part, outcome: FileOutcome, done: dict) -> None:
+        first = not any(key[0] == part.file for key in done)
+        done[(part.file, part.part)] = part
+        if first:
             outcome.diagnostics, outcome.skipped = part.diagnostics, part.skipped
+            if self.file_ready is not None:
+                self.file_ready(outcome, part.tests)
         outcome.results.extend(part.results)
-    for outcome in outcomes:  # parts ran tests k::n: back to file order
-        outcome.results.sort(key=lambda r: r.line)
-    return outcomes, coverage
+        if self.progress is not None:
+            for result in part.results:
+                self.progress(result)
 
 
 def _result(future, index: int, number: int, files: list[SuiteFile]) -> _Part:
@@ -177,9 +192,8 @@ def _result(future, index: int, number: int, files: list[SuiteFile]) -> _Part:
     except Exception as error:  # BrokenProcessPool and whatever a worker could not report itself
         reason = f"{type(error).__name__}: {error}" if str(error) else type(error).__name__
         message = f"the worker process running this file stopped ({reason}); its tests did not run"
-        return _Part(
-            index, number, [Diagnostic(code="TEST-WORKER", file=files[index].path, message=message)], 0, [], None
-        )
+        diagnostics = [Diagnostic(code="TEST-WORKER", file=files[index].path, message=message)]
+        return _Part(index, number, diagnostics, [], 0, [], None)
 
 
 _worker: dict[str, object] = {}
@@ -204,4 +218,4 @@ def _run_part(index: int, part: int, parts: int, options: Options, choice: tuple
     tests = selected(prepared, *choice) if prepared.compiled is not None else []
     mine = tests[part::parts]
     results = [run_test(prepared, test, options, coverage) for test in mine]
-    return _Part(index, part, prepared.diagnostics, len(prepared.tests) - len(tests), results, coverage)
+    return _Part(index, part, prepared.diagnostics, prepared.tests, len(prepared.tests) - len(tests), results, coverage)

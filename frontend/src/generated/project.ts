@@ -320,6 +320,10 @@ export interface Task {
    * Program names, run in list order.
    */
   programs?: string[];
+  /**
+   * The task's time budget per scan in ms (its scan's own running time); longer is a watchdog fault. Null: the default of 100 ms (CODESYS's).
+   */
+  watchdog_ms?: number | null;
 }
 /**
  * A file of unit tests, ``tests/<name>.st`` in the project folder (docs/testing.md).
