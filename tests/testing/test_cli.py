@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import os
 import shutil
 import subprocess
 import sys
@@ -169,6 +170,7 @@ def test_many_tests_run_in_worker_processes_with_the_same_results_and_a_memory_l
         capture_output=True,
         text=True,
         timeout=300,
+        env={**os.environ, "LADDERLAB_MAX_ARRAY_ELEMENTS": "300000000"},  # the memory limit is what refuses it
     )
     lines = [json.loads(line) for line in result.stdout.splitlines()]
     names = [line["name"] for line in lines if line.get("file") == "tests/many.st"]

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import hashlib
 import json
+import os
 from pathlib import Path
 from typing import Any
 
@@ -27,7 +28,7 @@ from pydantic import ValidationError
 
 from ..model import Diagnostic, Pou, Project, TestFile
 from ..model.names import test_file_name_problem
-from .errors import ProjectLoadError, validation_diagnostics
+from .errors import ProjectLoadError, json_text_problem, validation_diagnostics
 from .st_text import StTextError, compose_pou_text, parse_pou_text, round_trips
 
 PROJECT_FILE = "project.json"
@@ -88,10 +89,34 @@ def revision_of(project: Project) -> str:
     return hashlib.sha256(canonical.encode()).hexdigest()[:16]
 
 
+def is_project_file(rel: str) -> bool:
+    """Whether ``rel`` (``/``-separated) names a file a project folder may hold: saves write and delete only these."""
+    if rel in (PROJECT_FILE, TYPES_FILE, GLOBALS_FILE):
+        return True
+    folder, _, name = rel.partition("/")
+    if folder == TESTS_DIR:  # tests/<name>.st; never tests/hidden/ (a teacher's files, not the model's)
+        return name.endswith(TEST_SUFFIX) and test_file_name_problem(name[: -len(TEST_SUFFIX)]) is None
+    return (
+        folder == POUS_DIR
+        and name.endswith(POU_SUFFIXES)
+        and not name.startswith(".")
+        and "/" not in name
+        and "\\" not in name
+        and name not in (".", "..")
+    )
+
+
 def read_project_folder(folder: Path) -> Project:
-    """Load a project folder; raises ProjectLoadError naming every bad file and JSON path."""
+    """Load a project folder; raises ProjectLoadError naming every bad file and JSON path.
+
+    A symbolic link that leads out of the folder is refused (a project someone sent must not make
+    LadderLab show or overwrite files elsewhere); links within the folder are followed."""
     problems: list[Diagnostic] = []
-    meta = _read_json(folder / PROJECT_FILE, PROJECT_FILE, problems)
+    if not _inside(folder, folder / POUS_DIR):
+        raise ProjectLoadError([_outside(POUS_DIR)])
+    meta = _read_json(folder / PROJECT_FILE, PROJECT_FILE, problems) if _inside(folder, folder / PROJECT_FILE) else None
+    if meta is None and not problems:
+        problems.append(_outside(PROJECT_FILE))
     if meta is None:
         raise ProjectLoadError(problems)
     if not isinstance(meta, dict):
@@ -116,8 +141,8 @@ def read_project_folder(folder: Path) -> Project:
         "name": meta.get("name"),
         "format": meta.get("format"),
         "tasks": meta.get("tasks", []),
-        "types": _read_text(folder / TYPES_FILE),
-        "globals": _read_text(folder / GLOBALS_FILE),
+        "types": _read_text(folder, TYPES_FILE, problems),
+        "globals": _read_text(folder, GLOBALS_FILE, problems),
     }
     project = None
     try:
@@ -168,7 +193,7 @@ def _pou_names(folder: Path, order: list[str]) -> list[str]:
     known = {n.upper() for n in names}
     pous_dir = folder / POUS_DIR
     if pous_dir.is_dir():
-        for path in sorted(pous_dir.iterdir()):
+        for path in sorted(pous_dir.iterdir(), key=lambda p: p.name):
             name = _pou_name_of(path.name)
             if name and name.upper() not in known:
                 names.append(name)
@@ -199,6 +224,9 @@ def _read_pou(folder: Path, name: str, problems: list[Diagnostic]) -> Pou | None
         return None
     path = paths[0]
     rel = f"{POUS_DIR}/{path.name}"
+    if not _inside(folder, path):
+        problems.append(_outside(rel, name))
+        return None
     if path.name.endswith(".json"):
         data = _read_json(path, rel, problems)
         if data is None:
@@ -245,8 +273,34 @@ def _read_pou(folder: Path, name: str, problems: list[Diagnostic]) -> Pou | None
     return pou
 
 
-def _read_text(path: Path) -> str:
-    return _read_exact(path) if path.is_file() else ""
+def _read_text(folder: Path, rel: str, problems: list[Diagnostic]) -> str:
+    path = folder / rel
+    if not path.is_file():
+        return ""
+    if not _inside(folder, path):
+        problems.append(_outside(rel))
+        return ""
+    try:
+        return _read_exact(path)
+    except UnicodeDecodeError as err:
+        problems.append(Diagnostic(code="BAD-FILE", file=rel, message=f"not UTF-8 text: {err.reason}"))
+        return ""
+
+
+def _inside(folder: Path, path: Path) -> bool:
+    """Whether ``path`` (following links) stays inside ``folder``; a path that does not exist does."""
+    if not os.path.lexists(path):
+        return True
+    return path.resolve().is_relative_to(folder.resolve())
+
+
+def _outside(rel: str, pou: str | None = None) -> Diagnostic:
+    return Diagnostic(
+        code="BAD-FILE",
+        file=rel,
+        pou=pou,
+        message="is a symbolic link that leads out of the project folder; LadderLab does not follow it",
+    )
 
 
 def _read_exact(path: Path) -> str:
@@ -262,6 +316,10 @@ def _read_json(path: Path, rel: str, problems: list[Diagnostic]) -> Any:
         return None
     except UnicodeDecodeError as err:
         problems.append(Diagnostic(code="BAD-FILE", file=rel, message=f"not UTF-8 text: {err.reason}"))
+        return None
+    refused = json_text_problem(text, rel)
+    if refused is not None:
+        problems.append(refused)
         return None
     try:
         return json.loads(text)
