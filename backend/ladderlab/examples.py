@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import json
 import os
-import shutil
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -95,5 +94,5 @@ def seed_workspace(workspace: Workspace) -> str | None:
     source = EXAMPLES_DIR / DEFAULT_EXAMPLE
     if workspace.list() or not source.is_dir():
         return None
-    shutil.copytree(source, workspace.folder(DEFAULT_EXAMPLE))
+    workspace.create(read_project_folder(source).model_copy(update={"name": DEFAULT_EXAMPLE}))
     return DEFAULT_EXAMPLE

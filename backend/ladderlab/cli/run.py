@@ -12,7 +12,7 @@ from __future__ import annotations
 import json
 import math
 import re
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 
 from ..engine.inputs import FAULT_MODES, InputEvent, InputRefused
@@ -100,7 +100,7 @@ def parse_fault(text: str, seed: int) -> Scheduled:
         path.strip(),
         value.strip() or None,
         mode=mode,
-        seed=seed if mode == "noisy" else None,  # type: ignore[arg-type]
+        seed=seed if mode == "noisy" else None,
     )
     return Scheduled(scan, event)
 
@@ -126,8 +126,8 @@ def run_scans(
     sim: Simulation,
     *,
     watch: list[str],
-    sets: list[SetAction] = (),  # type: ignore[assignment]
-    events: list[Scheduled] = (),  # type: ignore[assignment]
+    sets: Sequence[SetAction] = (),
+    events: Sequence[Scheduled] = (),
     cycles: int | None = None,
     for_ms: float | None = None,
     until: Condition | None = None,

@@ -27,16 +27,16 @@ from __future__ import annotations
 
 import math
 import random
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
-from typing import Literal
+from typing import Any, Literal, cast, get_args
 
 from ..ir import types as t
 
 InputKind = Literal["write", "force", "release", "release_all", "panel", "fault", "clear_fault", "reset"]
-INPUT_KINDS: tuple[str, ...] = InputKind.__args__  # type: ignore[attr-defined]
+INPUT_KINDS: tuple[str, ...] = get_args(InputKind)
 FaultMode = Literal["stuck_true", "stuck_false", "stuck", "open", "noisy"]
-FAULT_MODES: tuple[str, ...] = FaultMode.__args__  # type: ignore[attr-defined]
+FAULT_MODES: tuple[str, ...] = get_args(FaultMode)
 
 #: A BOOL with a ``noisy`` fault flips with this probability per crossing unless the event says.
 DEFAULT_FLIP_RATE = 0.1
@@ -60,9 +60,9 @@ class InputEvent:
 
     kind: InputKind
     path: str | None = None
-    value: bool | int | float | str | None = None
+    value: object = None  # a JSON scalar or IEC literal text (checked against the variable when submitted)
     source: str | None = None
-    mode: FaultMode | None = None
+    mode: str | None = None  # a FaultMode (checked by ``check``)
     amplitude: float | None = None
     rate: float | None = None
     seed: int | None = None
@@ -90,7 +90,7 @@ class InputEvent:
         if kind not in INPUT_KINDS:
             raise InputRefused(f"kind must be one of {', '.join(INPUT_KINDS)}, not {kind!r}")
         fields = {name: data[name] for name in known if name in data}
-        event = cls(**fields)  # type: ignore[arg-type]
+        event = cls(**cast(dict[str, Any], fields))
         event.check()
         return event
 
@@ -145,17 +145,26 @@ class Injection:
     frozen: object = None  # the value ``stuck`` holds
     rng: random.Random = field(default_factory=random.Random)
     clean: object = None  # the signal as its writer last left it
-    last: object = field(default_factory=object)  # what this fault left there at the previous crossing
+    last: tuple[object, ...] = ()  # (what this fault left there at the previous crossing,), () before the first
 
     def value(self, current: object) -> object:
         """What is read where the signal crosses, given the variable's value now; a noisy fault draws once
         (seeded). Noise strays around the signal as its writer (the plant, a panel) last wrote it: a variable
         that still holds what the fault left at the previous crossing has not been written since."""
-        unwritten = current == self.last and type(current) is type(self.last)
+        unwritten = bool(self.last) and current == self.last[0] and type(current) is type(self.last[0])
         signal = self.clean if unwritten else current
         self.clean = signal
-        self.last = self._faulted(signal)
-        return self.last
+        self.last = (self._faulted(signal),)
+        return self.last[0]
+
+    def state(self) -> tuple[object, object, tuple[object, ...]]:
+        """What the fault carries from scan to scan (its generator, the signal, its last value): plain data."""
+        return self.rng.getstate(), self.clean, self.last
+
+    def set_state(self, state: tuple[object, object, tuple[object, ...]]) -> None:
+        rng, self.clean, last = state
+        self.rng.setstate(_tuples(rng))
+        self.last = tuple(cast(Iterable[object], last))
 
     def _faulted(self, signal: object) -> object:
         mode, kind = self.event.mode, _kind(self.type)
@@ -172,7 +181,8 @@ class Injection:
             rate = self.event.rate if self.event.rate is not None else DEFAULT_FLIP_RATE
             return (not signal) if draw < rate else signal
         amplitude = self.event.amplitude if self.event.amplitude is not None else DEFAULT_AMPLITUDE
-        noisy = signal + (2.0 * draw - 1.0) * amplitude  # type: ignore[operator]
+        assert isinstance(signal, (int, float))  # a number: ``injection`` refuses faults on other types
+        noisy = signal + (2.0 * draw - 1.0) * amplitude
         return self.coerce(_within(noisy if kind == "real" else math.floor(noisy + 0.5), self.type))
 
 
@@ -187,6 +197,11 @@ def injection(event: InputEvent, ty: t.IrType, coerce: Callable[[object], object
         raise InputRefused("hold a BOOL with stuck_true or stuck_false")
     frozen = coerce(event.value) if event.mode == "stuck" else None
     return Injection(event, ty, coerce, frozen, random.Random(event.seed))
+
+
+def _tuples(value: object) -> object:
+    """A generator state back from plain data (lists, as JSON or a copy may make of its tuples)."""
+    return tuple(_tuples(v) for v in value) if isinstance(value, (list, tuple)) else value
 
 
 def _kind(ty: t.IrType) -> str | None:
@@ -207,8 +222,9 @@ def _within(number: float, ty: t.IrType) -> float:
     """``number`` held within the range of ``ty`` (a subrange's, an integer type's; REALs as they are)."""
     if isinstance(ty, t.Subrange):
         return max(ty.low, min(ty.high, number))
-    info = ty.info  # type: ignore[union-attr]
-    if info.min is None:
+    assert isinstance(ty, t.Elementary)  # ``_kind`` let only elementary types and subranges through
+    info = ty.info
+    if info.min is None or info.max is None:
         return number
     return max(info.min, min(info.max, number))
 

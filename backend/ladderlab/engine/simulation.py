@@ -39,10 +39,13 @@ from .codegen import names
 from .codegen.context import ProbeTable
 from .codegen.faults import Fault, make_fault
 from .codegen.runtime import UNSET, Watchdog
+from .codegen.scope import global_owner
 from .compile import CompiledProgram, compile_program
 from .debug import Debugger, Halt
+from .doubles import Mocks
 from .inputs import AppliedInput, Injection, InputEvent, InputRefused, immediate, injection
 from .paths import Location, LocationReader, Resolver, Roots, UnknownPath, coerce_for, leaves, plain
+from .state import SimState, data_of, restore_into
 from .tasks import DEFAULT_WATCHDOG_S, Schedule, Task, task_table
 
 
@@ -122,6 +125,9 @@ class Simulation:
         self._watchdog_left = 0.0
         self._paths: dict[int, str] | None = None
         self._instances: dict[str, tuple[object, str]] = {}  # upper-case path -> (instance, upper-case POU name)
+        self._attached: dict[str, str] = {}  # instances outside the tasks (attach): name -> POU, upper case
+        self._links: dict[str, dict[str, str]] = {}  # their VAR_IN_OUT links to program instances
+        self.mocks = Mocks()
         self._deferred_locations: dict[tuple[str, int], Location] = {}  # (program, probe number) -> its variable
         self._attach_debugger()
         self._initialise(warm=False)
@@ -256,12 +262,14 @@ class Simulation:
         plants = [task for task in due if task.plant]
         control = [task for task in due if not task.plant] if plants else due
         if self.debugger is None:
+            outer = self._watchdog.deadline, self._watchdog.limit_s  # a scan run from a test's body (call)
             start = self._clock()
             self._run_tasks(plants, now)
             if plants:
                 self._cross()
             self._run_tasks(control, now)
             self._finish((self._clock() - start) * 1000.0)
+            self._watchdog.deadline, self._watchdog.limit_s = outer
             return True
         self._scan, self._busy = self._debug_scan(now, plants, control), 0.0
         return self._drive()
@@ -333,6 +341,75 @@ class Simulation:
                 instance_path=self._instance_path,
             )
         )
+
+    # ------------------------------------------------------------------ outside the task configuration (tests)
+
+    def attach(self, name: str, pou: str, links: dict[str, str] | None = None) -> object:
+        """A new instance of the PROGRAM or FUNCTION_BLOCK ``pou`` that no task runs, reachable by path as
+        ``name`` (read, write, force, probes, snapshot, state) until a reset; returns it.
+
+        ``links`` binds VAR_IN_OUT slots of the instance to program instances of the configuration (slot ->
+        program name), so its code reads and writes them (a test's ``Main.Start := TRUE``)."""
+        key, pou_key = name.upper(), pou.upper()
+        obj = self._ns[names.pou_class(self._context.pous[pou_key].name)]()  # type: ignore[operator]
+        layout = self._context.layouts[pou_key]
+        for slot, program in (links or {}).items():
+            place = layout.get(slot)
+            owner = obj if place.page == 0 else getattr(obj, f"ll_p{place.page}")
+            setattr(owner, place.attr, (self.programs, program.upper()))
+        self.programs[key] = obj
+        self._attached[key] = pou_key
+        self._links[key] = dict(links or {})
+        self._resolver.attach(key, pou_key)
+        self._paths = None
+        return obj
+
+    def call(self, obj: object, *, limit_s: float, passthrough: tuple[type[BaseException], ...] = ()) -> Fault | None:
+        """Run one call of an (attached) instance now, outside any scan, under a watchdog of ``limit_s``: a
+        test's body. Scans it runs (``cycle`` from a function it calls) keep their own task watchdogs. A runtime
+        error becomes the returned Fault; exceptions of the ``passthrough`` types reach the caller."""
+        self._not_halted()
+        now = self._ns["ll_now"]
+        self._watchdog.arm(limit_s)
+        try:
+            obj.execute(now)  # type: ignore[attr-defined]
+        except passthrough:
+            raise
+        except Exception as error:
+            return make_fault(
+                error,
+                self.compiled.generated,
+                self.compiled.filename,
+                self._ns,
+                task="",
+                time_ms=now,  # type: ignore[arg-type]
+                scan=self.scan_count,
+                instance_path=self._instance_path,
+            )
+        finally:
+            self._watchdog.deadline = float("inf")
+        return None
+
+    def advance_clock(self, ms: float) -> None:
+        """Move the virtual clock ``ms`` forward without a scan: FB calls outside scans see the new time, and
+        each task is next due at its first interval after it (ADVANCE_TIME)."""
+        if not ms >= 0:
+            raise ValueError(f"the clock only moves forward, not by {ms} ms")
+        now = max(self.time_ms, self._ns["ll_now"]) + ms  # type: ignore[type-var, operator]
+        self._schedule.skip_to(now)
+        self._ns["ll_now"] = now
+
+    def replace_function(self, name: str, function: Callable[..., object]) -> None:
+        """Every later call of the user FUNCTION ``name`` calls ``function`` with its arguments (fast and
+        monitor variants: inputs, then VAR_IN_OUT references as (container, key))."""
+        pou = self._context.pous.get(name.upper())
+        if pou is None or pou.kind != "function":
+            raise UnknownPath(f"no user FUNCTION {name!r}")
+        self._ns[names.function(pou.name)] = function
+
+    def mock(self, obj: object) -> None:
+        """From now on calls of this FB instance are counted and its body does not run (MOCK)."""
+        self.mocks.mock(obj)
 
     # ------------------------------------------------------------------ debugging
 
@@ -477,7 +554,7 @@ class Simulation:
         if self._paths is None:
             self._paths, self._instances = {}, {}
             for key, obj in self.programs.items():
-                self._add_instance(key, obj, key)
+                self._add_instance(key, obj, self._attached.get(key, key))
             for place in self._context.globals.places.values():  # type: ignore[union-attr]
                 value = getattr(self._roots.get(("global", "G" if not place.page else f"G{place.page}")), place.attr)
                 self._add_values(place.slot.name, place.slot.type, value)
@@ -528,12 +605,12 @@ class Simulation:
 
     def write(self, path: str, value: object) -> None:
         """Write once, before the next scan (at once while halted); the program may overwrite it."""
-        self.submit(InputEvent("write", path, value))  # type: ignore[arg-type]
+        self.submit(InputEvent("write", path, value))
 
     def force(self, path: str, value: object) -> None:
         """Hold a variable at ``value`` before and after every scan (from the next, at once while halted),
         until ``unforce``."""
-        self.submit(InputEvent("force", path, value))  # type: ignore[arg-type]
+        self.submit(InputEvent("force", path, value))
 
     def unforce(self, path: str) -> None:
         self.submit(InputEvent("release", path))
@@ -546,10 +623,10 @@ class Simulation:
         """Forced variables by canonical path (a force waiting for the next scan counts already)."""
         forced = {path: value for path, (_, value) in self._forces.items()}
         for event, location, prepared in self._pending:
-            if event.kind == "force":
-                forced[location.path] = prepared  # type: ignore[union-attr]
-            elif event.kind == "release":
-                forced.pop(location.path, None)  # type: ignore[union-attr]
+            if event.kind == "force" and location is not None:
+                forced[location.path] = prepared
+            elif event.kind == "release" and location is not None:
+                forced.pop(location.path, None)
             elif event.kind == "release_all":
                 forced.clear()
         return forced
@@ -557,7 +634,7 @@ class Simulation:
     @property
     def injected(self) -> dict[str, str]:
         """Variables with an injected fault, by canonical path: the fault's mode."""
-        return {path: injected.event.mode for path, (_, injected) in self._injections.items()}  # type: ignore[misc]
+        return {path: injected.event.mode or "" for path, (_, injected) in self._injections.items()}
 
     @property
     def pending(self) -> list[InputEvent]:
@@ -582,14 +659,15 @@ class Simulation:
         """What applying the event needs: the value for its variable, or the fault to hold there. A ``stuck``
         fault without a value gets the variable's value now, so the event alone says what it holds."""
         if event.kind in ("write", "force", "panel"):
-            return event, coerce_for(location, event.value)  # type: ignore[arg-type]
+            assert location is not None  # ``check`` made sure these kinds name a variable
+            return event, coerce_for(location, event.value)
         if event.kind != "fault":
             return event, None
         assert location is not None
         if not location.elementary:
             raise InputRefused(f"{location.path}: faults act on one BOOL or numeric signal at a time")
         if event.mode == "stuck" and event.value is None:
-            event = replace(event, value=location.get(self._roots))  # type: ignore[arg-type]
+            event = replace(event, value=location.get(self._roots))
         try:
             return event, injection(event, location.type, lambda value: coerce_for(location, value))
         except InputRefused as error:
@@ -607,22 +685,22 @@ class Simulation:
                 self._pending.append((event, location, prepared))
                 continue
             self._apply(event, location, prepared, halted=False)
-            if event.kind == "panel":
-                panel.add(key)  # type: ignore[arg-type]
+            if event.kind == "panel" and key is not None:
+                panel.add(key)
 
     def _apply(self, event: InputEvent, location: Location | None, prepared: object, halted: bool) -> None:
         kind = event.kind
-        if kind in ("write", "panel"):
-            location.set(self._roots, prepared)  # type: ignore[union-attr]
-        elif kind == "force":
-            self._forces[location.path] = (location, prepared)  # type: ignore[union-attr]
-            location.set(self._roots, prepared)  # type: ignore[union-attr]
-        elif kind == "release":
-            self._forces.pop(location.path, None)  # type: ignore[union-attr]
+        if kind in ("write", "panel") and location is not None:
+            location.set(self._roots, prepared)
+        elif kind == "force" and location is not None:
+            self._forces[location.path] = (location, prepared)
+            location.set(self._roots, prepared)
+        elif kind == "release" and location is not None:
+            self._forces.pop(location.path, None)
         elif kind == "release_all":
             self._forces.clear()
-        elif kind == "fault":
-            self._injections[location.path] = (location, prepared)  # type: ignore[union-attr,assignment]
+        elif kind == "fault" and location is not None and isinstance(prepared, Injection):
+            self._injections[location.path] = (location, prepared)
         elif kind == "clear_fault":
             if location is None:
                 self._injections.clear()
@@ -646,6 +724,66 @@ class Simulation:
     def _apply_forces(self) -> None:
         for location, value in self._forces.values():
             location.set(self._roots, value)
+
+    # ------------------------------------------------------------------ state (engine/state.py)
+
+    def state(self) -> SimState:
+        """The whole state between scans as plain data (not while halted)."""
+        self._not_halted()
+        pages = sorted({global_owner(p.page) for p in self._context.globals.places.values()})  # type: ignore[union-attr]
+        return SimState(
+            self.compiled.declarations,
+            self.time_ms,
+            self._ns["ll_now"],  # type: ignore[arg-type]
+            self.scan_count,
+            self._stamp,
+            tuple((task.next_due, task.stopped) for task in self._tasks),
+            {name: data_of(obj) for name, obj in self.programs.items()},  # type: ignore[misc]
+            {page: data_of(self._ns[page]) for page in pages},  # type: ignore[misc]
+            {path: value for path, (_, value) in self._forces.items()},
+            {name: (pou, dict(self._links.get(name, {}))) for name, pou in self._attached.items()},
+            {path: (fault.event.to_json(), fault.state()) for path, (_, fault) in self._injections.items()},
+            tuple(event.to_json() for event, _, _ in self._pending),
+        )
+
+    def restore(self, state: SimState) -> None:
+        """Make this simulation's state ``state`` (captured from a simulation of the same program): variables,
+        instances, probes, clock, tasks, forces, injected faults, waiting inputs, attached instances. Faults
+        are cleared, a halted scan ended. A restore is no input: ``on_input`` hears nothing of it."""
+        if state.declarations != self.compiled.declarations:
+            raise ValueError("that state was captured from another program")
+        self._reset(cold=True)
+        for name, (pou, links) in state.attached.items():
+            if name not in self.programs:
+                self.attach(name, pou, links)
+        for name, data in state.instances.items():
+            restore_into(self.programs[name], data)  # type: ignore[arg-type]
+        for page, data in state.globals.items():
+            restore_into(self._ns[page], data)  # type: ignore[arg-type]
+        self._schedule.time_ms = state.time_ms
+        for task, (due, stopped) in zip(self._tasks, state.tasks):
+            task.next_due, task.stopped = due, stopped
+        self._ns["ll_now"] = state.now
+        self.scan_count = state.scan_count
+        self._stamp = state.stamp
+        self._ns["ll_scan"] = state.stamp
+        self._forces.clear()
+        for path, value in state.forces.items():
+            location = self._resolver.resolve(path)
+            self._forces[location.path] = (location, coerce_for(location, value))
+        self._apply_forces()
+        self._injections.clear()
+        for path, (data, carried) in state.injections.items():
+            location = self._resolver.resolve(path)
+            _, fault = self._prepare(InputEvent.from_json(data), location)
+            assert isinstance(fault, Injection)  # the event of a fault prepares an injection
+            fault.set_state(carried)  # type: ignore[arg-type]  # the plain data Injection.state() gave
+            self._injections[location.path] = (location, fault)
+        self._pending = []
+        for data in state.pending:
+            event = InputEvent.from_json(data)
+            location = self._resolver.resolve(event.path) if event.path else None
+            self._pending.append((event, location, self._prepare(event, location)[1]))
 
     def snapshot(self) -> dict[str, object]:
         """Every elementary variable of every program instance and every global: path -> value."""

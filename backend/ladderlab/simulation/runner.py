@@ -534,7 +534,7 @@ class SimRunner:
     def panel(self, path: str, value: object, panel: str | None = None, widget: str | None = None) -> None:
         """A panel widget's action (press, release, a new value): applied at the start of the next scan."""
         source = f"panel {panel or '?'}/{widget}" if widget else (f"panel {panel}" if panel else "panel")
-        self._submit(InputEvent("panel", path, value, source=source))  # type: ignore[arg-type]
+        self._submit(InputEvent("panel", path, value, source=source))
 
     def inject(
         self,
@@ -548,7 +548,7 @@ class SimRunner:
         """Inject a fault into a signal from the next scan on; a noisy fault without a seed gets one (recorded)."""
         if mode == "noisy" and seed is None:
             seed = random.SystemRandom().randrange(1 << 31)
-        event = InputEvent("fault", path, value, mode=mode, amplitude=amplitude, rate=rate, seed=seed)  # type: ignore[arg-type]
+        event = InputEvent("fault", path, value, mode=mode, amplitude=amplitude, rate=rate, seed=seed)
         self._submit(event)
 
     def inject_clear(self, path: str | None = None) -> None:
@@ -596,7 +596,7 @@ class SimRunner:
                 until = parse_condition(condition, self.sim)
             except BadCondition as error:
                 raise CommandError("bad_value", str(error)) from None
-        elif not time_ms > self.sim.time_ms:  # type: ignore[operator]
+        elif time_ms is not None and not time_ms > self.sim.time_ms:
             raise CommandError("bad_value", f"virtual time is already {self.sim.time_ms:g} ms, past {time_ms:g} ms")
         self.start()
         self._until, self._until_ms = until, time_ms

@@ -5,7 +5,7 @@
 import { useStore } from "zustand";
 import { createStore, type StoreApi } from "zustand/vanilla";
 import { ApiError } from "../api/client";
-import type { Diagnostic } from "../generated/api";
+import type { Diagnostic, SimulationInfo } from "../generated/api";
 import { monitorUrl, simulationApi, type SimulationApi } from "./api";
 import { applyMessage, emptyMonitor, keepSubscribed, logLocal, pathKey, powerKey, type MonitorState } from "./monitor";
 import {
@@ -53,8 +53,11 @@ export interface OnlineData {
 }
 
 export interface OnlineActions {
-  /** Compiles the saved project and connects; an open simulation is closed first. */
-  compile(project: string): Promise<void>;
+  /**
+   * Compiles the saved project and connects; an open simulation is closed first. `create` makes the
+   * simulation another way (the Tests panel: a failed test's last state).
+   */
+  compile(project: string, create?: () => Promise<SimulationInfo>): Promise<void>;
   goOffline(): Promise<void>;
   run(): void;
   stop(): void;
@@ -208,11 +211,11 @@ export function createOnlineStore(
       watch: [],
       instances: {},
 
-      async compile(project) {
+      async compile(project, create = () => api.createSimulation(project)) {
         if (get().simulation) await get().goOffline();
         set({ phase: "compiling", project, error: null, compileDiagnostics: [] });
         try {
-          const info = await api.createSimulation(project);
+          const info = await create();
           if (get().phase !== "compiling") {
             void api.deleteSimulation(info.id).catch(() => undefined); // went offline meanwhile
             return;
