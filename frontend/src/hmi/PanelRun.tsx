@@ -22,6 +22,9 @@ export interface PanelLink {
   send(msg: ClientMessage): boolean;
 }
 
+/** How often a panel takes values: the fastest the server sends, its publish rate (20 ms). */
+export const PANEL_INTERVAL_MS = 20;
+
 /** The time scales offered (the server takes 0.1 to 100). */
 export const SPEEDS = [0.1, 0.2, 0.5, 1, 2, 5, 10, 20, 50, 100];
 

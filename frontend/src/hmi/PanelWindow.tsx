@@ -7,9 +7,9 @@ import type { ProjectDocument, SimulationInfo } from "../generated/api";
 import type { Panel } from "../generated/project";
 import { monitorUrl } from "../online/api";
 import { applyMessage, emptyMonitor, type MonitorState } from "../online/monitor";
-import { DEFAULT_INTERVAL_MS, parseServerMessage, type ClientMessage } from "../online/protocol";
+import { parseServerMessage, type ClientMessage } from "../online/protocol";
 import { bindingsOf } from "./model";
-import { PanelRun } from "./PanelRun";
+import { PANEL_INTERVAL_MS, PanelRun } from "./PanelRun";
 
 /** The panel a window was opened for, from its address; null when it is the app's address. */
 export function panelTarget(search: string): { project: string; panel: string; simulation: string | null } | null {
@@ -36,7 +36,7 @@ function useConnection(simulation: string | null, paths: string[]) {
           type: "subscribe",
           paths: key ? key.split("\n") : [],
           elements: [],
-          interval_ms: DEFAULT_INTERVAL_MS,
+          interval_ms: PANEL_INTERVAL_MS,
         }),
       );
     };

@@ -9,7 +9,7 @@ import { ExerciseView } from "./ExerciseView";
 import { panelChange, withPanel } from "./history";
 import { bindingsOf, newPanel } from "./model";
 import { PanelEditor } from "./PanelEditor";
-import { PanelRun, type PanelLink } from "./PanelRun";
+import { PANEL_INTERVAL_MS, PanelRun, type PanelLink } from "./PanelRun";
 
 export const PANEL_TAB = "hmi:";
 export const EXERCISE_TAB = "exercise";
@@ -120,7 +120,7 @@ function useAppLink(paths: string[], view: string): PanelLink {
   const key = paths.join("\n");
   useEffect(() => {
     const store = onlineStore.getState();
-    store.subscribe(view, { paths: key ? key.split("\n") : [], elements: [] });
+    store.subscribe(view, { paths: key ? key.split("\n") : [], elements: [], interval_ms: PANEL_INTERVAL_MS });
     return () => onlineStore.getState().subscribe(view, null);
   }, [key, view]);
   return { monitor, online: phase === "online", simulation, send: (msg) => onlineStore.getState().send(msg) };

@@ -272,4 +272,10 @@ describe("mergeSubscriptions", () => {
       ],
     });
   });
+
+  it("takes the shortest interval a view asks for (a panel's 20 ms), none when no view asks", () => {
+    const view = (interval_ms?: number) => ({ paths: [], elements: [], ...(interval_ms ? { interval_ms } : {}) });
+    expect(mergeSubscriptions([view(), view(20), view(100)]).interval_ms).toBe(20);
+    expect(mergeSubscriptions([view(), view()])).not.toHaveProperty("interval_ms");
+  });
 });

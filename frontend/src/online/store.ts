@@ -29,6 +29,8 @@ export const STATS_POLL_MS = 1000;
 export interface Subscription {
   paths: string[];
   elements: ElementSubscription[];
+  /** How often the view wants values (ms; default DEFAULT_INTERVAL_MS): the subscription takes the shortest. */
+  interval_ms?: number;
 }
 
 export type Phase = "offline" | "compiling" | "connecting" | "online";
@@ -97,7 +99,8 @@ export const offline: Omit<OnlineData, "watch" | "instances"> = {
 export function mergeSubscriptions(views: Iterable<Subscription>): Subscription {
   const paths = new Set<string>();
   const byInstance = new Map<string, Set<string> | null>();
-  for (const view of views) {
+  const all = [...views];
+  for (const view of all) {
     for (const p of view.paths) paths.add(pathKey(p));
     for (const { pou_instance, ids = null } of view.elements) {
       const key = pou_instance.toUpperCase();
@@ -106,7 +109,9 @@ export function mergeSubscriptions(views: Iterable<Subscription>): Subscription 
       else byInstance.set(key, new Set([...(known ?? []), ...ids]));
     }
   }
+  const intervals = all.map((v) => v.interval_ms).filter((ms): ms is number => ms !== undefined);
   return {
+    ...(intervals.length ? { interval_ms: Math.min(...intervals) } : {}),
     paths: [...paths].sort(),
     elements: [...byInstance].map(([pou_instance, ids]) => ({ pou_instance, ids: ids ? [...ids].sort() : null })),
   };
@@ -152,7 +157,8 @@ export function createOnlineStore(
       lastSent = text;
       const powerKeys = merged.elements.flatMap((e) => (e.ids ?? []).map((id) => powerKey(e.pou_instance, id)));
       set({ monitor: keepSubscribed(get().monitor, merged.paths, powerKeys) });
-      send({ type: "subscribe", paths: merged.paths, elements: merged.elements, interval_ms: DEFAULT_INTERVAL_MS });
+      const interval_ms = merged.interval_ms ?? DEFAULT_INTERVAL_MS;
+      send({ type: "subscribe", paths: merged.paths, elements: merged.elements, interval_ms });
     };
 
     const stopPolling = () => {
