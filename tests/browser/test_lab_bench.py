@@ -241,7 +241,9 @@ def test_batch_mixer_makes_a_good_batch_and_stops_on_the_emergency_stop(page, se
     expect_text(page, "step", "heat", timeout=8000)
     expect_on(page, "heater")
     expect_on(page, "mixer")
-    page.screenshot(path=str(ARTIFACTS / "lab-bench-mixer.png"))
+    expect_text(page, "step", "mix", timeout=8000)
+    page.set_viewport_size({"width": 1400, "height": 1080})  # the whole panel above the bottom panels
+    page.screenshot(path=str(ARTIFACTS / "lab-bench-mixer.png"))  # docs/lab-bench.png, the README's
     expect_on(page, "done", timeout=15_000)
     expect_text(page, "good", "1")
     assert text_of(page, "bad") == "0"
