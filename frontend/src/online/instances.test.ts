@@ -4,8 +4,9 @@ import { instanceOf } from "./useLdOnline";
 describe("which instance an online view shows", () => {
   const choices = { MAIN: ["MAIN"], BLINKER: ["MAIN.BLINK"], PULSE: ["MAIN.P1", "MAIN.P2"] };
 
-  it("shows a program itself and a function nothing", () => {
+  it("shows a program (and a plant) itself and a function nothing", () => {
     expect(instanceOf({ kind: "program", name: "Main" }, {}, choices)).toBe("MAIN");
+    expect(instanceOf({ kind: "plant", name: "Tank" }, {}, choices)).toBe("TANK");
     expect(instanceOf({ kind: "function", name: "Scale" }, {}, choices)).toBeNull();
   });
 

@@ -21,7 +21,7 @@ export function instanceOf(
   chosen: Readonly<Record<string, string>> = {},
   choices: Readonly<Record<string, readonly string[]>> = {},
 ): string | null {
-  if (pou.kind === "program") return pou.name.toUpperCase();
+  if (pou.kind === "program" || pou.kind === "plant") return pou.name.toUpperCase(); // a plant: a program too
   if (pou.kind !== "function_block") return null;
   const only = choices[pou.name.toUpperCase()];
   return chosen[pou.name] || (only?.length === 1 ? only[0]! : null);

@@ -26,7 +26,10 @@ function useCandidates(): string[] {
   const pous = useWorkspace((s) => s.project?.pous);
   const library = useWorkspace((s) => s.library);
   const [candidates, setCandidates] = useState<string[]>([]);
-  const programs = useMemo(() => (pous ?? []).filter((p) => p.kind === "program").map((p) => p.name), [pous]);
+  const programs = useMemo(
+    () => (pous ?? []).filter((p) => p.kind === "program" || p.kind === "plant").map((p) => p.name),
+    [pous],
+  );
   useEffect(() => {
     if (!project || !programs.length) return setCandidates([]);
     let current = true;
