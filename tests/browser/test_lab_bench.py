@@ -108,6 +108,12 @@ def test_fire_alarm_confirms_two_sensors_and_ignores_burnt_toast(page, server):
     assert lamp(page, "siren").get_attribute("data-on") == "false"  # the vote must hold 2 s
     expect_on(page, "siren", timeout=5000)
     expect_on(page, "alarm")
+    # the plant (LD) is monitored like a program: its coils of room 2 are energised in its diagram
+    tree = page.get_by_role("navigation", name="Project tree")
+    tree.get_by_role("button", name=re.compile("^Smoke")).click()
+    coil = page.locator("g.ld-element.ld-coil").filter(has=page.locator("g.ld-operand > text", has_text="d21"))
+    expect(coil).to_have_class(re.compile(r"\bld-on\b"))
+    page.get_by_role("tab", name="Building (panel)").click()
     widget(page, "fire2").get_by_role("switch").click()
     expect_on(page, "lamp2", False)
     expect_on(page, "siren")  # latched
