@@ -3,6 +3,7 @@ import type { ProjectSummary } from "./api/client";
 import { useAppStore } from "./store";
 import { useWorkspace } from "./project/store";
 import { WorkspaceView } from "./project/WorkspaceView";
+import { ViewBoundary } from "./project/ViewBoundary";
 
 const HEALTH_POLL_MS = 15_000;
 
@@ -150,7 +151,13 @@ function MainArea() {
   }, [selected, open]);
   return (
     <main className="main">
-      {selected ? <WorkspaceView /> : <p className="placeholder">Select a project to open it.</p>}
+      {selected ? (
+        <ViewBoundary key={selected} name={`The project ${selected}`}>
+          <WorkspaceView />
+        </ViewBoundary>
+      ) : (
+        <p className="placeholder">Select a project to open it.</p>
+      )}
     </main>
   );
 }
@@ -170,13 +177,17 @@ export default function App() {
   }, [checkHealth]);
 
   return (
-    <div className="app">
-      <header className="header">
-        <h1>LadderLab</h1>
-        <HealthIndicator />
-      </header>
-      <ProjectList />
-      <MainArea />
-    </div>
+    <ViewBoundary name="LadderLab">
+      <div className="app">
+        <header className="header">
+          <h1>LadderLab</h1>
+          <HealthIndicator />
+        </header>
+        <ViewBoundary name="The project list" gridArea="sidebar">
+          <ProjectList />
+        </ViewBoundary>
+        <MainArea />
+      </div>
+    </ViewBoundary>
   );
 }

@@ -7,6 +7,7 @@ or the browser app has not been built (``make test`` builds it first).
 
 from __future__ import annotations
 
+import re
 import shutil
 import socket
 import subprocess
@@ -86,8 +87,31 @@ def server(tmp_path: Path, chromium_path: str) -> Iterator[str]:
         log.close()
 
 
+class BrowserErrors:
+    """Page errors (uncaught exceptions) and console errors of one test's page; the test fails on any,
+    except those it expects by calling ``allow`` (e.g. the error a test provokes on purpose)."""
+
+    def __init__(self) -> None:
+        self.seen: list[str] = []
+        self.allowed: list[re.Pattern[str]] = []
+
+    def allow(self, pattern: str) -> None:
+        self.allowed.append(re.compile(pattern, re.S))
+
+    def record(self, text: str) -> None:
+        self.seen.append(text)
+
+    def unexpected(self) -> list[str]:
+        return [text for text in self.seen if not any(p.search(text) for p in self.allowed)]
+
+
 @pytest.fixture
-def page(server: str, chromium_path: str):
+def browser_errors() -> BrowserErrors:
+    return BrowserErrors()
+
+
+@pytest.fixture
+def page(server: str, chromium_path: str, browser_errors: BrowserErrors):
     from playwright.sync_api import sync_playwright
 
     ARTIFACTS.mkdir(exist_ok=True)
@@ -96,8 +120,17 @@ def page(server: str, chromium_path: str):
         context = browser.new_context(viewport={"width": 1400, "height": 900})
         page = context.new_page()
         page.set_default_timeout(10_000)
+        page.on("pageerror", lambda error: browser_errors.record(f"page error: {error}"))
+        page.on(
+            "console",
+            lambda message: (
+                browser_errors.record(f"console error: {message.text}") if message.type == "error" else None
+            ),
+        )
         try:
             yield page
         finally:
             context.close()
             browser.close()
+        unexpected = browser_errors.unexpected()
+        assert not unexpected, "the page reported errors:\n" + "\n".join(unexpected)

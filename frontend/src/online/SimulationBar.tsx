@@ -6,6 +6,7 @@ import { useEffect } from "react";
 import { panelsStore, usePanels } from "../panels/store";
 import { workspaceStore } from "../project/store";
 import { onlineStore, useOnline } from "./store";
+import { formatClock } from "./values";
 
 /** Keys of the simulation commands, for the shortcut help. */
 export const SIMULATION_KEYS: [string, string][] = [
@@ -39,16 +40,6 @@ export async function compileSaved(): Promise<void> {
   await onlineStore.getState().compile(name);
   const { compileDiagnostics } = onlineStore.getState();
   if (compileDiagnostics.length) panelsStore.getState().showDiagnostics(compileDiagnostics);
-}
-
-/** Virtual time as h:mm:ss.mmm (the simulation's clock starts at 0). */
-export function formatClock(ms: number): string {
-  const total = Math.max(0, Math.round(ms));
-  const h = Math.floor(total / 3_600_000);
-  const m = Math.floor(total / 60_000) % 60;
-  const s = Math.floor(total / 1000) % 60;
-  const rest = total % 1000;
-  return `${h}:${String(m).padStart(2, "0")}:${String(s).padStart(2, "0")}.${String(rest).padStart(3, "0")}`;
 }
 
 export function SimulationBar() {

@@ -4,7 +4,8 @@
 import type { SymbolInfo } from "../generated/api";
 import { walk, type LdBody, type LdElement } from "../ld/model";
 import type { OnlineView } from "../ld/view/types";
-import { formatValue, pathKey, powerKey, type MonitorState } from "./monitor";
+import { pathKey, powerKey, type MonitorState } from "./monitor";
+import { formatValue } from "./values";
 import type { ElementSubscription } from "./protocol";
 
 /** A variable operand: names with member/index access (`T1.Q`, `A[3]`); literals and addresses are not. */

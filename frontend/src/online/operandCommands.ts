@@ -3,7 +3,8 @@
 // (the editors render it with the LD context menu and ask for values with ValuePrompt).
 import type { LdOnlineActions } from "../ld/editor/LdEditor";
 import type { MenuItem } from "../ld/editor/ContextMenu";
-import { parseValue, pathKey } from "./monitor";
+import { pathKey } from "./monitor";
+import { parseValue } from "./values";
 import { onlineStore } from "./store";
 
 /** Commands by operand text; `pathOf` names its simulation path (null: nothing to do). */

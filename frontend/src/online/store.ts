@@ -7,7 +7,16 @@ import { createStore, type StoreApi } from "zustand/vanilla";
 import { ApiError } from "../api/client";
 import type { Diagnostic } from "../generated/api";
 import { monitorUrl, simulationApi, type SimulationApi } from "./api";
-import { applyMessage, emptyMonitor, keepSubscribed, logLocal, pathKey, powerKey, type MonitorState } from "./monitor";
+import {
+  applyMessage,
+  connectionOpened,
+  emptyMonitor,
+  keepSubscribed,
+  logLocal,
+  pathKey,
+  powerKey,
+  type MonitorState,
+} from "./monitor";
 import {
   DEFAULT_INTERVAL_MS,
   parseServerMessage,
@@ -25,6 +34,8 @@ export type OpenSocket = (url: string) => SocketLike;
 const OPEN = 1;
 /** How often the toolbar's scan statistics are refreshed from GET /api/simulations/{id}. */
 export const STATS_POLL_MS = 1000;
+/** Waits before each attempt to reconnect to a simulation whose connection dropped (then: offline). */
+export const RECONNECT_DELAYS_MS = [200, 500, 1000, 2000, 4000];
 
 export interface Subscription {
   paths: string[];
@@ -50,11 +61,23 @@ export interface OnlineData {
   watch: string[];
   /** The instance a function block's diagram shows online, by POU name (e.g. Blinker -> MAIN.BLINK). */
   instances: Record<string, string>;
+  /** Counts the connections opened to the simulation (a reconnect ends what the server kept per client). */
+  connection: number;
+  /**
+   * Prepared values (CODESYS): double-clicking a value prepares one; F7 forces them all, Ctrl+F7
+   * writes them. Keyed by upper-case path; the value as it will be sent.
+   */
+  prepared: Readonly<Record<string, WriteValue>>;
 }
 
 export interface OnlineActions {
   /** Compiles the saved project and connects; an open simulation is closed first. */
   compile(project: string): Promise<void>;
+  /**
+   * Connects to simulation `id` of `project` if it still runs on the server (after a page reload);
+   * false when it is gone or belongs to another project.
+   */
+  attach(project: string, id: string): Promise<boolean>;
   goOffline(): Promise<void>;
   run(): void;
   stop(): void;
@@ -65,6 +88,10 @@ export interface OnlineActions {
   force(path: string, value: WriteValue): void;
   unforce(path: string): void;
   unforceAll(): void;
+  /** Prepares `value` for `path` (null: drops its prepared value). */
+  prepare(path: string, value: WriteValue | null): void;
+  /** Forces (F7) or writes (Ctrl+F7) every prepared value, then forgets them. */
+  applyPrepared(action: "force" | "write"): void;
   /** Sets (or with null removes) the subscription of one view. */
   subscribe(view: string, subscription: Subscription | null): void;
   addWatch(path: string): void;
@@ -78,7 +105,8 @@ export interface OnlineActions {
 
 export type OnlineState = OnlineData & OnlineActions;
 
-export const offline: Omit<OnlineData, "watch" | "instances"> = {
+/** What going offline resets; the views, the watch list and the chosen instances stay. */
+export const offline: Omit<OnlineData, "views" | "watch" | "instances" | "connection"> = {
   phase: "offline",
   project: null,
   simulation: null,
@@ -87,7 +115,7 @@ export const offline: Omit<OnlineData, "watch" | "instances"> = {
   instanceChoices: {},
   monitor: emptyMonitor,
   lastScanMs: null,
-  views: {},
+  prepared: {},
 };
 
 /** The union of every view's subscription: paths without repeats, element ids merged per instance. */
@@ -110,6 +138,7 @@ export function mergeSubscriptions(views: Iterable<Subscription>): Subscription 
 }
 
 const message = (err: unknown) => (err instanceof Error ? err.message : String(err));
+const GONE = "The simulation is gone (stopped on the server); compile & simulate to start a new one.";
 
 const compileDiagnosticsOf = (err: unknown): Diagnostic[] => {
   const detail = err instanceof ApiError ? (err.detail as { diagnostics?: unknown } | undefined) : undefined;
@@ -169,12 +198,45 @@ export function createOnlineStore(
       }
     };
 
-    const connect = (id: string) => {
+    let retry: ReturnType<typeof setTimeout> | null = null;
+    const stopRetrying = () => {
+      if (retry !== null) clearTimeout(retry);
+      retry = null;
+    };
+
+    /** After a dropped connection: the simulation may still run (a server hiccup), so try again. */
+    const reconnect = (id: string, attempt: number) => {
+      if (attempt >= RECONNECT_DELAYS_MS.length) {
+        set({ ...offline, error: "The connection to the simulation was lost." });
+        return;
+      }
+      retry = setTimeout(() => {
+        retry = null;
+        api.getSimulation(id).then(
+          () => {
+            if (get().simulation === id && get().phase === "connecting") connect(id, attempt + 1);
+          },
+          (err) => {
+            if (get().simulation !== id || get().phase !== "connecting") return;
+            if (err instanceof ApiError && err.status === 404)
+              set({ ...offline, monitor: logLocal(get().monitor, "error", "the simulation is gone"), error: GONE });
+            else reconnect(id, attempt + 1);
+          },
+        );
+      }, RECONNECT_DELAYS_MS[attempt]);
+    };
+
+    const connect = (id: string, attempt = 0) => {
       const s = openSocket(url(id));
       socket = s;
       s.onopen = () => {
         if (socket !== s) return;
-        set({ phase: "online" });
+        set({
+          phase: "online",
+          error: null,
+          connection: get().connection + 1,
+          monitor: connectionOpened(get().monitor),
+        });
         resubscribe(true);
       };
       s.onmessage = (event) => {
@@ -187,11 +249,13 @@ export function createOnlineStore(
       s.onclose = () => {
         if (socket !== s) return;
         disconnect();
+        const opened = get().phase === "online";
         set({
-          ...offline,
-          error: "The connection to the simulation was lost.",
-          monitor: logLocal(get().monitor, "error", "connection to the simulation lost"),
+          phase: "connecting",
+          error: "The connection to the simulation was lost; reconnecting…",
+          monitor: opened ? logLocal(get().monitor, "error", "connection to the simulation lost") : get().monitor,
         });
+        reconnect(id, opened ? 0 : attempt);
       };
       poll = setInterval(() => {
         api.getSimulation(id).then(
@@ -205,8 +269,10 @@ export function createOnlineStore(
 
     return {
       ...offline,
+      views: {},
       watch: [],
       instances: {},
+      connection: 0,
 
       async compile(project) {
         if (get().simulation) await get().goOffline();
@@ -229,10 +295,31 @@ export function createOnlineStore(
         }
       },
 
+      async attach(project, id) {
+        if (get().simulation) return get().simulation === id;
+        try {
+          const info = await api.getSimulation(id);
+          if (info.project !== project || get().simulation || get().phase !== "offline") return false;
+          set({
+            phase: "connecting",
+            project,
+            simulation: id,
+            error: null,
+            monitor: emptyMonitor,
+            instanceChoices: info.instances ?? {},
+          });
+          connect(id);
+          return true;
+        } catch {
+          return false;
+        }
+      },
+
       async goOffline() {
         const id = get().simulation;
+        stopRetrying();
         disconnect();
-        set({ ...offline, views: get().views });
+        set({ ...offline });
         if (id) await api.deleteSimulation(id).catch(() => undefined);
       },
 
@@ -257,6 +344,23 @@ export function createOnlineStore(
       force: (path, value) => void send({ type: "force", path, value }),
       unforce: (path) => void send({ type: "unforce", path }),
       unforceAll: () => void send({ type: "unforce_all" }),
+
+      prepare(path, value) {
+        const next = { ...get().prepared };
+        if (value === null) delete next[pathKey(path)];
+        else next[pathKey(path)] = value;
+        set({ prepared: next });
+      },
+
+      applyPrepared(action) {
+        const prepared = Object.entries(get().prepared);
+        if (!prepared.length) {
+          set({ monitor: logLocal(get().monitor, "info", `no prepared values to ${action}`) });
+          return;
+        }
+        for (const [path, value] of prepared) if (!send({ type: action, path, value })) return;
+        set({ prepared: {} });
+      },
 
       subscribe(view, subscription) {
         const next = { ...get().views };

@@ -1,7 +1,8 @@
 // The watch list: variables by path (typed, or dragged from a diagram) with their live values;
 // each row writes, forces and releases like the diagram's context menu.
 import { useState, type FormEvent } from "react";
-import { formatValue, parseValue, pathKey } from "../online/monitor";
+import { pathKey } from "../online/monitor";
+import { formatValue, parseValue } from "../online/values";
 import { useOnline, onlineStore } from "../online/store";
 
 function WatchRow({ path }: { path: string }) {

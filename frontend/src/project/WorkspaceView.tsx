@@ -30,6 +30,7 @@ import { DEBUG_KEYS, DebugBar } from "../debug/DebugBar";
 import { useLdDebugging } from "../debug/ldDebugging";
 import { revealPlace } from "../debug/reveal";
 import { debugStore, useDebug } from "../debug/store";
+import { ViewBoundary } from "./ViewBoundary";
 
 const KINDS: { kind: Pou["kind"]; title: string }[] = [
   { kind: "program", title: "Programs" },
@@ -454,6 +455,12 @@ function PouView({ name }: { name: string }) {
       </p>
     );
   }
+  const area =
+    mode === "declarations"
+      ? `The declarations of ${name}`
+      : mode === "st"
+        ? `The ST view of ${name}`
+        : `The ${LANGUAGE[pou.language]} editor of ${name}`;
   return (
     <div className="pou-view">
       <div className="pou-modes" role="tablist" aria-label={`${name} views`}>
@@ -463,7 +470,9 @@ function PouView({ name }: { name: string }) {
           </button>
         ))}
       </div>
-      {content}
+      <ViewBoundary key={mode} name={area} onReload={() => workspaceStore.getState().refreshPou(name)}>
+        {content}
+      </ViewBoundary>
     </div>
   );
 }
@@ -611,19 +620,31 @@ export function WorkspaceView() {
           onOpen={(imported) => appStore.getState().selectProject(imported)}
         />
       </div>
-      <SimulationBar />
-      <ProjectTree />
+      <ViewBoundary name="The simulation toolbar" gridArea="sim">
+        <SimulationBar />
+      </ViewBoundary>
+      <ViewBoundary name="The project tree" gridArea="tree">
+        <ProjectTree />
+      </ViewBoundary>
       <div className="editor-area">
-        <DebugBar networksOf={networksOf} reveal={revealPlace} />
-        <Tabs />
+        <ViewBoundary name="The debugging bar">
+          <DebugBar networksOf={networksOf} reveal={revealPlace} />
+        </ViewBoundary>
+        <ViewBoundary name="The tabs">
+          <Tabs />
+        </ViewBoundary>
         {active ? (
           <PouView key={active} name={active} />
         ) : (
           <p className="placeholder">Open a POU from the project tree.</p>
         )}
       </div>
-      <BottomPanels onReveal={reveal} pathOfOperand={pathOfOperand} />
-      <ConflictDialog />
+      <ViewBoundary name="The panels" gridArea="panels">
+        <BottomPanels onReveal={reveal} pathOfOperand={pathOfOperand} />
+      </ViewBoundary>
+      <ViewBoundary name="The save conflict dialog">
+        <ConflictDialog />
+      </ViewBoundary>
     </div>
   );
 }

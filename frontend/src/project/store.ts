@@ -51,6 +51,8 @@ export interface WorkspaceActions {
   /** Drops the working copy and loads the saved project. */
   reload(): Promise<void>;
   dismissConflict(): void;
+  /** Fetches a POU's symbols and the library again (a view of it is reloaded after a failure). */
+  refreshPou(pou: string): void;
 }
 
 export type WorkspaceState = WorkspaceData & WorkspaceActions;
@@ -285,6 +287,13 @@ export function createWorkspaceStore(
       },
 
       dismissConflict: () => set({ conflict: null }),
+
+      refreshPou(pou) {
+        const { name } = get();
+        if (!name) return;
+        loadSymbols(pou);
+        loadLibrary(name, openCall);
+      },
     };
   });
 }

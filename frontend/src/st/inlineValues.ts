@@ -6,7 +6,7 @@
 import { StateEffect, StateField, type Extension } from "@codemirror/state";
 import { Decoration, EditorView, hoverTooltip, WidgetType, type DecorationSet } from "@codemirror/view";
 import { operandPath } from "../online/ldBinding";
-import { formatValue } from "../online/monitor";
+import { formatValue } from "../online/values";
 import type { Value } from "../online/protocol";
 import { tokenize } from "./language";
 import { membersOf, typeOfChain, type Scope } from "./members";

@@ -197,7 +197,9 @@ export function TraceChart({ paths, kinds, ring, version, origin, laneView }: Tr
     // Rebuilt only when the series change; new data and sizes go to the same chart below.
   }, [layout, ring]);
 
-  useEffect(() => plot.current?.setSize({ width, height }), [width, height]);
+  useEffect(() => {
+    plot.current?.setSize({ width, height });
+  }, [width, height]);
 
   useEffect(() => {
     const u = plot.current;

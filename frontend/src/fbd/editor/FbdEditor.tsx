@@ -160,7 +160,9 @@ export function FbdEditor({
       return next;
     });
   }, []);
-  useEffect(() => onVisibleChange?.([...near]), [near, onVisibleChange]);
+  useEffect(() => {
+    onVisibleChange?.([...near]);
+  }, [near, onVisibleChange]);
   const orders = useEvaluationOrder(body, orderOf, near);
   const networks = networksOf(body);
   const locked = readOnly !== null;

@@ -4,7 +4,7 @@
 import { Handle, Position, type Node, type NodeProps } from "@xyflow/react";
 import type { Block, FbdNetwork, FbdNode, OutputMode, PinDef } from "../model";
 import { kindOf } from "../model";
-import { formatValue } from "../../online/monitor";
+import { formatValue } from "../../online/values";
 import { OperandEditor } from "../../ld/editor/OperandEditor";
 import { executed, operandOf } from "../online";
 import { useFbdEditor, type NodeView } from "./context";

@@ -17,7 +17,7 @@ import {
 } from "@xyflow/react";
 import { useEffect, useMemo, useRef, useState, type DragEvent, type MouseEvent, type ReactNode } from "react";
 import type { Diagnostic } from "../../generated/api";
-import { formatValue } from "../../online/monitor";
+import { formatValue } from "../../online/values";
 import { nodesOf, wireKey, wiresOf, type FbdNetwork, type FbdNode, type Position } from "../model";
 import { probeOf, type FbdOnlineView } from "../online";
 import { useFbdEditor } from "./context";
@@ -279,7 +279,9 @@ export function NetworkCanvas(props: NetworkCanvasProps) {
   const { network, index } = props;
   const [ref, near] = useNearViewport();
   const { onNear } = props;
-  useEffect(() => onNear(network.id, near), [onNear, network.id, near]);
+  useEffect(() => {
+    onNear(network.id, near);
+  }, [onNear, network.id, near]);
   useEffect(() => () => onNear(network.id, false), [onNear, network.id]);
   const height = canvasHeight(network, props.fallback, props.height);
   const classes = [
