@@ -200,7 +200,7 @@ describe("online LD in the app (issue 7 online mode)", () => {
     expect(element(editor, "motor").getAttribute("class")).not.toContain("ld-on");
   }, 20_000); // a long user session in jsdom; slow when the machine is busy
 
-  it("runs the simulation commands from their keys and the toolbar", async () => {
+  it("runs the simulation commands from their keys (CODESYS's, exact modifiers only) and the toolbar", async () => {
     serve();
     await openMain();
     fireEvent.keyDown(window, { key: "F8", altKey: true });
@@ -208,9 +208,11 @@ describe("online LD in the app (issue 7 online mode)", () => {
     const socket = FakeSocket.all[0]!;
     socket.open();
     socket.receive({ type: "status", state: "stopped" });
-    fireEvent.keyDown(window, { key: "F8" });
+    fireEvent.keyDown(window, { key: "F5", ctrlKey: true });
     fireEvent.keyDown(window, { key: "F5" });
     fireEvent.keyDown(window, { key: "F5", shiftKey: true });
+    fireEvent.keyDown(window, { key: "F8" }); // not bound: nothing
+    fireEvent.keyDown(window, { key: "F8", altKey: true, ctrlKey: true }); // not bound either
     fireEvent.click(screen.getByRole("button", { name: "Run" }));
     fireEvent.click(screen.getByRole("button", { name: "Single cycle" }));
     expect(socket.sent.filter((m) => m.type !== "subscribe").map((m) => m.type)).toEqual([

@@ -92,6 +92,7 @@ export interface OnlineActions {
   prepare(path: string, value: WriteValue | null): void;
   /** Forces (F7) or writes (Ctrl+F7) every prepared value, then forgets them. */
   applyPrepared(action: "force" | "write"): void;
+  clearPrepared(): void;
   /** Sets (or with null removes) the subscription of one view. */
   subscribe(view: string, subscription: Subscription | null): void;
   addWatch(path: string): void;
@@ -323,11 +324,12 @@ export function createOnlineStore(
         if (id) await api.deleteSimulation(id).catch(() => undefined);
       },
 
-      run: () => void send({ type: "run" }),
-      stop: () => void send({ type: "stop" }),
+      // Commands go through the state's `send`, so a test may stand in for the socket there.
+      run: () => void get().send({ type: "run" }),
+      stop: () => void get().send({ type: "stop" }),
       singleCycle() {
-        if (get().monitor.state === "running" && !send({ type: "stop" })) return;
-        send({ type: "single_cycle" });
+        if (get().monitor.state === "running" && !get().send({ type: "stop" })) return;
+        get().send({ type: "single_cycle" });
       },
 
       async reset(cold = false) {
@@ -340,10 +342,10 @@ export function createOnlineStore(
         }
       },
 
-      write: (path, value) => void send({ type: "write", path, value }),
-      force: (path, value) => void send({ type: "force", path, value }),
-      unforce: (path) => void send({ type: "unforce", path }),
-      unforceAll: () => void send({ type: "unforce_all" }),
+      write: (path, value) => void get().send({ type: "write", path, value }),
+      force: (path, value) => void get().send({ type: "force", path, value }),
+      unforce: (path) => void get().send({ type: "unforce", path }),
+      unforceAll: () => void get().send({ type: "unforce_all" }),
 
       prepare(path, value) {
         const next = { ...get().prepared };
@@ -358,9 +360,11 @@ export function createOnlineStore(
           set({ monitor: logLocal(get().monitor, "info", `no prepared values to ${action}`) });
           return;
         }
-        for (const [path, value] of prepared) if (!send({ type: action, path, value })) return;
+        for (const [path, value] of prepared) if (!get().send({ type: action, path, value })) return;
         set({ prepared: {} });
       },
+
+      clearPrepared: () => set({ prepared: {} }),
 
       subscribe(view, subscription) {
         const next = { ...get().views };

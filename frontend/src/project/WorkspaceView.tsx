@@ -9,7 +9,7 @@ import { LdEditor } from "../ld/editor/LdEditor";
 import type { History } from "../ld/history";
 import { operandPath } from "../online/ldBinding";
 import { onlineStore, useOnline } from "../online/store";
-import { SIMULATION_KEYS, SimulationBar } from "../online/SimulationBar";
+import { SimulationBar } from "../online/SimulationBar";
 import { instanceOf, useLdOnline } from "../online/useLdOnline";
 import { BottomPanels } from "../panels/BottomPanels";
 import { focusOf, panelsStore, usePanels } from "../panels/store";
@@ -26,11 +26,13 @@ import { StEditor } from "../st/StEditor";
 import { StOnlineBar } from "../st/StOnlineBar";
 import { useStAssist } from "../st/useStAssist";
 import { useStOnline } from "../st/useStOnline";
-import { DEBUG_KEYS, DebugBar } from "../debug/DebugBar";
+import { DebugBar } from "../debug/DebugBar";
 import { useLdDebugging } from "../debug/ldDebugging";
 import { revealPlace } from "../debug/reveal";
 import { debugStore, useDebug } from "../debug/store";
 import { ViewBoundary } from "./ViewBoundary";
+import { useAppKeys } from "./useAppKeys";
+import { ShortcutHelp } from "../keys/ShortcutHelp";
 
 const KINDS: { kind: Pou["kind"]; title: string }[] = [
   { kind: "program", title: "Programs" },
@@ -215,8 +217,6 @@ function Tabs() {
 }
 
 const NO_DIAGNOSTICS: Diagnostic[] = [];
-/** The app's keys in the editor's shortcut help. */
-const APP_KEYS = [...SIMULATION_KEYS, ...DEBUG_KEYS];
 
 /** A POU by an IEC name in any case (the simulation reports halts with the compiled spelling). */
 const pouNamed = (project: Project | null, name: string) =>
@@ -287,7 +287,6 @@ function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
       onlineActions={live.actions}
       onVisibleChange={live.onVisibleChange}
       focus={focus}
-      extraShortcuts={APP_KEYS}
       debugging={debugging}
     />
   );
@@ -523,6 +522,7 @@ export function WorkspaceView() {
   const project = useWorkspace((s) => s.project);
   const revision = useWorkspace((s) => s.revision);
   const panelsHeight = usePanels((s) => s.height);
+  const [help, setHelp] = useState(false);
 
   // A save changes the project's POU count, revision and time: the project list shows them.
   useEffect(() => {
@@ -563,16 +563,7 @@ export function WorkspaceView() {
     debugStore.getState().open(name);
   }, [name]);
 
-  useEffect(() => {
-    const onKey = (e: KeyboardEvent) => {
-      if ((e.ctrlKey || e.metaKey) && e.key.toLowerCase() === "s") {
-        e.preventDefault();
-        void workspaceStore.getState().save();
-      }
-    };
-    window.addEventListener("keydown", onKey);
-    return () => window.removeEventListener("keydown", onKey);
-  }, []);
+  useAppKeys();
 
   if (status === "loading" || status === "idle") return <p className="placeholder">Opening {name}…</p>;
   if (status === "error") {
@@ -615,6 +606,10 @@ export function WorkspaceView() {
           </span>
         ) : null}
         {name ? <ExportMenu project={name} pou={active} unsaved={changed.length > 0} /> : null}
+        <button type="button" aria-expanded={help} onClick={() => setHelp((h) => !h)}>
+          Keyboard shortcuts
+        </button>
+        {help ? <ShortcutHelp scopes={["app", "ld", "fbd", "st"]} onClose={() => setHelp(false)} /> : null}
         <ImportPlcopen
           onStored={() => void appStore.getState().loadProjects()}
           onOpen={(imported) => appStore.getState().selectProject(imported)}

@@ -3,7 +3,7 @@
 // underlines, and online the values of variables inline. The text is controlled: every edit goes
 // to onChange, and a new `text` from outside (reload, draft restore) replaces the doc.
 import { autocompletion, closeBrackets, closeBracketsKeymap, completionKeymap } from "@codemirror/autocomplete";
-import { defaultKeymap, history, historyKeymap, indentWithTab } from "@codemirror/commands";
+import { defaultKeymap, history, historyKeymap } from "@codemirror/commands";
 import {
   bracketMatching,
   codeFolding,
@@ -23,6 +23,7 @@ import { setBreakpointLines, setHaltedLine, stDebugging } from "./breakpoints";
 import { stCompletionSource, type StCompletions } from "./completion";
 import { setInlineMarks, stInlineValues, type InlineMark, type StOnlineView } from "./inlineValues";
 import { stLanguage } from "./language";
+import { stKeys } from "./keys";
 import { lintDiagnostics } from "./lint";
 
 export interface StEditorProps {
@@ -82,12 +83,12 @@ export function StEditor({
           debug ? stDebugging((line) => latest.current.debug?.onToggle(line)) : [],
           stInlineValues(() => latest.current.online),
           keymap.of([
+            ...stKeys(debug ? (line) => latest.current.debug?.onToggle(line) : null),
             ...closeBracketsKeymap,
             ...defaultKeymap,
             ...historyKeymap,
             ...foldKeymap,
             ...completionKeymap,
-            indentWithTab,
           ]),
           editable.current.of(EditorState.readOnly.of(readOnly !== null)),
           EditorView.contentAttributes.of({ "aria-label": label }),

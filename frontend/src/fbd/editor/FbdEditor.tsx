@@ -56,6 +56,11 @@ import { fetchOrder, useEvaluationOrder } from "../useOrder";
 import { FbdEditorContext, type FbdEditorApi, type NodeView } from "./context";
 import { nodeHeight, pinOfHandle } from "./FbdNodeView";
 import { DRAG_FORMAT, NetworkCanvas, type NetworkSelection } from "./NetworkCanvas";
+import { dispatchKey, keysOf, type CommandOf } from "../../keys/keymap";
+import { ShortcutHelp } from "../../keys/ShortcutHelp";
+
+/** A toolbar tooltip: the action and its key from the keymap. */
+const keyed = (label: string, command: CommandOf<"fbd">) => `${label} (${keysOf("fbd", command)})`;
 
 /** Breakpoints and the halt, for this POU (debug/store.ts holds them). */
 export interface FbdDebug {
@@ -146,6 +151,7 @@ export function FbdEditor({
   const [message, setMessage] = useState<string | null>(null);
   const [offer, setOffer] = useState<VariableDeclaration | null>(null);
   const [valuePrompt, setValuePrompt] = useState<ValueRequest | null>(null);
+  const [help, setHelp] = useState(false);
 
   const byName = useMemo(() => new Map(library.map((e) => [e.name.toUpperCase(), e])), [library]);
   const lookup = useCallback((call: string) => byName.get(call.toUpperCase()), [byName]);
@@ -579,23 +585,36 @@ export function FbdEditor({
     if (focus) reveal(focus.network, focus.element);
   }, [focus?.seq]);
 
-  const onKeyDown = (event: KeyboardEvent<HTMLDivElement>) => {
-    if (editing || picker || networkText || (event.target as HTMLElement).closest("input, textarea, .ld-context-menu"))
-      return;
-    const ctrl = event.ctrlKey || event.metaKey;
-    const key = event.key.toLowerCase();
-    let handled = true;
-    if (event.key === "Delete" || event.key === "Backspace") deleteSelection();
-    else if (ctrl && key === "z" && !event.shiftKey) !locked && onHistoryChange(undo(history));
-    else if (ctrl && (key === "y" || (key === "z" && event.shiftKey))) !locked && onHistoryChange(redo(history));
-    else if (event.altKey && event.key === "ArrowUp") reorder(-1);
-    else if (event.altKey && event.key === "ArrowDown") reorder(1);
-    else if (event.key === "Escape") {
+  /** What each FBD key does (src/keys/keymap.ts, scope "fbd"); false when it does not apply now. */
+  const keyActions: Record<CommandOf<"fbd">, () => boolean> = {
+    delete: () => (deleteSelection(), true),
+    // Copy, cut and paste arrive as clipboard events (below), which reach the system clipboard.
+    copy: () => false,
+    cut: () => false,
+    paste: () => false,
+    undo: () => !locked && (onHistoryChange(undo(history)), true),
+    redo: () => !locked && (onHistoryChange(redo(history)), true),
+    "run-earlier": () => (reorder(-1), true),
+    "run-later": () => (reorder(1), true),
+    "clear-selection": () => {
       setSelection(null);
       setNetworkSelected(null);
       setMenu(null);
-    } else handled = false;
-    if (handled) event.preventDefault();
+      return true;
+    },
+    "toggle-breakpoint": () => {
+      const element = selectedNodes.length === 1 ? selectedNodes[0] : undefined;
+      const network = networkSelected ?? selection?.network;
+      if (!debug || (!element && !network)) return false;
+      debug.toggle(element ? { element } : { network: network! });
+      return true;
+    },
+  };
+
+  const onKeyDown = (event: KeyboardEvent<HTMLDivElement>) => {
+    if (editing || picker || networkText || (event.target as HTMLElement).closest("input, textarea, .ld-context-menu"))
+      return;
+    dispatchKey("fbd", event, keyActions);
   };
 
   const selectedBlock = selectedNodes.length === 1 ? findNode(body, selectedNodes[0]!)?.node : undefined;
@@ -657,10 +676,10 @@ export function FbdEditor({
                   wiresOf(findNode(body, selectedBlock.id)!.network),
                 ),
             )}
-            {tool("Run earlier", () => reorder(-1), !locked && !!selectedBlock, "Run earlier (Alt+ArrowUp)")}
-            {tool("Run later", () => reorder(1), !locked && !!selectedBlock, "Run later (Alt+ArrowDown)")}
+            {tool("Run earlier", () => reorder(-1), !locked && !!selectedBlock, keyed("Run earlier", "run-earlier"))}
+            {tool("Run later", () => reorder(1), !locked && !!selectedBlock, keyed("Run later", "run-later"))}
             {tool("Auto-arrange", autoArrange, !locked && networks.length > 0)}
-            {tool("Delete", deleteSelection, !locked && (!!selection || !!networkSelected), "Delete (Delete)")}
+            {tool("Delete", deleteSelection, !locked && (!!selection || !!networkSelected), keyed("Delete", "delete"))}
           </div>
           <div className="ld-toolbar-group">
             {tool("Add network", () => apply(ops.addNetwork(body, netIndex < 0 ? networks.length : netIndex + 1)))}
@@ -686,12 +705,16 @@ export function FbdEditor({
             )}
           </div>
           <div className="ld-toolbar-group">
-            {tool("Copy", () => clipboard.copy(false), selectedNodes.length > 0, "Copy (Ctrl+C)")}
-            {tool("Paste", clipboard.paste, !locked, "Paste (Ctrl+V)")}
-            {tool("Undo", () => onHistoryChange(undo(history)), !locked && canUndo(history), "Undo (Ctrl+Z)")}
-            {tool("Redo", () => onHistoryChange(redo(history)), !locked && canRedo(history), "Redo (Ctrl+Y)")}
+            {tool("Copy", () => clipboard.copy(false), selectedNodes.length > 0, keyed("Copy", "copy"))}
+            {tool("Paste", clipboard.paste, !locked, keyed("Paste", "paste"))}
+            {tool("Undo", () => onHistoryChange(undo(history)), !locked && canUndo(history), keyed("Undo", "undo"))}
+            {tool("Redo", () => onHistoryChange(redo(history)), !locked && canRedo(history), keyed("Redo", "redo"))}
           </div>
+          <button type="button" className="ld-help-button" aria-expanded={help} onClick={() => setHelp((h) => !h)}>
+            Shortcuts
+          </button>
         </div>
+        {help ? <ShortcutHelp scopes={["fbd", "app"]} onClose={() => setHelp(false)} /> : null}
         <EditorNotices
           readOnly={readOnly}
           readOnlyActions={readOnlyActions}

@@ -354,23 +354,38 @@ describe("read-only (online)", () => {
 });
 
 describe("shortcut help", () => {
-  it("lists every command with its keys, and the app's own keys", () => {
-    setup(motorMain, { extraShortcuts: [["F5", "Run"]] });
+  it("lists the keymap: every LD key with what it does, and the app's own keys", () => {
+    setup(motorMain);
     fireEvent.click(screen.getByRole("button", { name: "Shortcuts" }));
-    const rows = within(screen.getByRole("dialog", { name: "Keyboard shortcuts" }))
-      .getAllByRole("row")
-      .map((r) => r.textContent);
-    expect(rows).toEqual(
+    const help = screen.getByRole("dialog", { name: "Keyboard shortcuts" });
+    const rows = (section: string) =>
+      within(within(help).getByRole("region", { name: section }))
+        .getAllByRole("row")
+        .map((r) => r.textContent);
+    expect(rows("LD editor")).toEqual(
       expect.arrayContaining([
-        "CContact",
-        "Shift+CContact before",
-        "PParallel branch",
+        "CInsert a contact after the selection",
+        "Shift+CInsert a contact before the selection",
+        "PPut the selection in a parallel branch",
         "Ctrl+ZUndo",
-        "Ctrl+SSave the project",
-        "Alt+ArrowUpMove network up",
-        "F5Run",
+        "Alt+ArrowUpMove the network up",
+        "F9Toggle a breakpoint on the selected element or network",
+        "Alt+clickToggle a breakpoint on an element",
       ]),
     );
+    expect(rows("Everywhere")).toEqual(
+      expect.arrayContaining([
+        "Ctrl+SSave the project",
+        "F5Run; continue a halted scan",
+        "F7Force the prepared values",
+      ]),
+    );
+  });
+
+  it("shows each toolbar command's key from the keymap in its tooltip", () => {
+    setup(motorMain);
+    expect(screen.getByRole("button", { name: "Contact" }).getAttribute("title")).toBe("Contact (C)");
+    expect(screen.getByRole("button", { name: "Redo" }).getAttribute("title")).toBe("Redo (Ctrl+Y / Ctrl+Shift+Z)");
   });
 });
 

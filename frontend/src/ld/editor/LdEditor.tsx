@@ -25,8 +25,8 @@ import type { DebugMarks, DiagramHandlers, OnlineView, Selection, Target } from 
 import { BoxPicker } from "./BoxPicker";
 import {
   available,
+  commandKeys,
   COMMANDS,
-  commandForKey,
   insert,
   selectedNetwork,
   type CommandContext,
@@ -41,6 +41,8 @@ import { EditorNotices } from "./EditorNotices";
 import { clipboardActions, type LastClip } from "./systemClipboard";
 import { OperandValuePrompt, type ValueRequest } from "./ValuePrompt";
 import { onlineOperandItems } from "../../online/operandCommands";
+import { commandsFor } from "../../keys/keymap";
+import { ShortcutHelp } from "../../keys/ShortcutHelp";
 import "../ld.css";
 
 export interface LdEditorProps {
@@ -61,8 +63,6 @@ export interface LdEditorProps {
   onlineActions?: LdOnlineActions;
   /** Told which networks are rendered, so online mode subscribes only to those. */
   onVisibleChange?(networks: readonly string[]): void;
-  /** More rows for the shortcut help (the app's own keys, e.g. the simulation commands). */
-  extraShortcuts?: readonly [string, string][];
   /** Select and reveal a network or element (a diagnostic was clicked); `seq` repeats a jump to the same place. */
   focus?: { network?: string | null; element?: string | null; seq: number } | null;
   /** Breakpoints: drawn from `marks`; a network number click, Alt+click on an element, F9 or the context menu toggle them. */
@@ -98,6 +98,11 @@ const TOOLBAR: { group: CommandGroup; ids: string[] }[] = [
   { group: "clipboard", ids: ["copy", "cut", "paste"] },
   { group: "history", ids: ["undo", "redo"] },
 ];
+
+/** The keys of the LD scope that are not editing commands (COMMANDS): selection and breakpoints. */
+export const LD_EDITOR_KEYS = ["move-selection", "extend-selection", "clear-selection", "toggle-breakpoint"] as const;
+type LdEditorKey = (typeof LD_EDITOR_KEYS)[number];
+const CLIPBOARD_COMMANDS: ReadonlySet<string> = new Set(["copy", "cut", "paste"]);
 
 const NO_LIBRARY: readonly LibraryEntry[] = [];
 const NO_SYMBOLS: readonly SymbolInfo[] = [];
@@ -184,7 +189,6 @@ export function LdEditor({
   onlineActions,
   onVisibleChange,
   focus,
-  extraShortcuts = [],
   debugging,
 }: LdEditorProps) {
   const body = history.present;
@@ -483,37 +487,43 @@ export function LdEditor({
     return network ? { network } : null;
   };
 
-  const onKeyDown = (event: KeyboardEvent<HTMLDivElement>) => {
-    if (editing || picker || (event.target as HTMLElement).closest("input, textarea, .ld-context-menu")) return;
-    const direction = ARROWS[event.key];
-    if (direction && !event.altKey && !event.ctrlKey && !event.metaKey) {
-      event.preventDefault();
+  /** The editor's keys besides its commands (src/keys/keymap.ts, scope "ld"); each says whether it acted. */
+  const keyActions = (event: KeyboardEvent<HTMLDivElement>): Record<LdEditorKey, () => boolean> => ({
+    "move-selection": () => {
+      select(navigate(body, layout, liveSelection, ARROWS[event.key]!));
+      return true;
+    },
+    "extend-selection": () => {
       const focus = liveSelection?.kind === "elements" ? liveSelection.ids[liveSelection.ids.length - 1] : undefined;
-      if (event.shiftKey && anchor && focus && (direction === "left" || direction === "right")) {
-        const next = extend(body, anchor, focus, direction);
-        select({ kind: "elements", ids: ops.rangeIds(body, anchor, next) }, anchor);
-      } else {
-        select(navigate(body, layout, liveSelection, direction));
-      }
-      return;
-    }
-    if (event.key === "F9" && debugging && !event.altKey && !event.ctrlKey && !event.metaKey && !event.shiftKey) {
-      event.preventDefault();
-      const target = breakpointTarget();
-      if (target) debugging.toggle(target);
-      return;
-    }
-    if (event.key === "Escape") {
+      if (!anchor || !focus) return false;
+      const next = extend(body, anchor, focus, ARROWS[event.key] as "left" | "right");
+      select({ kind: "elements", ids: ops.rangeIds(body, anchor, next) }, anchor);
+      return true;
+    },
+    "clear-selection": () => {
       setMenu(null);
       select(null);
-      return;
-    }
-    // Copy, cut and paste arrive as clipboard events (below), which reach the system clipboard.
-    if ((event.ctrlKey || event.metaKey) && ["c", "x", "v"].includes(event.key.toLowerCase())) return;
-    const command = commandForKey(event, ctx);
-    if (command) {
-      event.preventDefault();
-      command.run(ctx);
+      return true;
+    },
+    "toggle-breakpoint": () => {
+      const target = debugging ? breakpointTarget() : null;
+      if (target) debugging!.toggle(target);
+      return debugging !== undefined;
+    },
+  });
+
+  const onKeyDown = (event: KeyboardEvent<HTMLDivElement>) => {
+    if (editing || picker || (event.target as HTMLElement).closest("input, textarea, .ld-context-menu")) return;
+    const actions = keyActions(event);
+    for (const id of commandsFor("ld", event)) {
+      // Copy, cut and paste arrive as clipboard events (below), which reach the system clipboard.
+      if (CLIPBOARD_COMMANDS.has(id)) return;
+      const command = id in actions ? null : COMMANDS.find((c) => c.id === id);
+      const done = command ? available(command, ctx) && (command.run(ctx), true) : actions[id as LdEditorKey]();
+      if (done) {
+        event.preventDefault();
+        return;
+      }
     }
   };
 
@@ -609,7 +619,7 @@ export function LdEditor({
                   key={id}
                   type="button"
                   disabled={!available(command, ctx)}
-                  title={command.keys ? `${command.label} (${command.keys})` : command.label}
+                  title={commandKeys(command) ? `${command.label} (${commandKeys(command)})` : command.label}
                   onMouseDown={(e) => e.preventDefault()}
                   onClick={() => command.run(ctx)}
                 >
@@ -623,7 +633,7 @@ export function LdEditor({
           Shortcuts
         </button>
       </div>
-      {help ? <ShortcutHelp extra={extraShortcuts} onClose={() => setHelp(false)} /> : null}
+      {help ? <ShortcutHelp scopes={["ld", "app"]} onClose={() => setHelp(false)} /> : null}
       <EditorNotices
         readOnly={readOnly}
         readOnlyActions={readOnlyActions}
@@ -674,42 +684,6 @@ export function LdEditor({
           }}
         />
       ) : null}
-    </div>
-  );
-}
-
-/** Keys that are not commands: selection and saving. */
-const OTHER_KEYS: [string, string][] = [
-  ["Arrow keys", "Move the selection through the rung and between networks"],
-  ["Shift+Arrow left/right", "Extend the selection along a branch"],
-  ["Shift+click", "Select a run of elements"],
-  ["Escape", "Clear the selection"],
-  ["Ctrl+S", "Save the project"],
-];
-
-function ShortcutHelp({ extra, onClose }: { extra: readonly [string, string][]; onClose(): void }) {
-  const rows: [string, string][] = [
-    ...COMMANDS.filter((c) => c.keys).map((c): [string, string] => [c.keys!, c.label]),
-    ...OTHER_KEYS,
-    ...extra,
-  ];
-  return (
-    <div className="ld-help" role="dialog" aria-label="Keyboard shortcuts">
-      <table>
-        <tbody>
-          {rows.map(([keys, label]) => (
-            <tr key={`${keys}:${label}`}>
-              <td>
-                <kbd>{keys}</kbd>
-              </td>
-              <td>{label}</td>
-            </tr>
-          ))}
-        </tbody>
-      </table>
-      <button type="button" onClick={onClose}>
-        Close
-      </button>
     </div>
   );
 }
