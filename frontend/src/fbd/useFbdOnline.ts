@@ -20,6 +20,7 @@ export interface FbdOnline {
 export function useFbdOnline(pou: Pou, body: FbdBody, lookup: Lookup, symbols: readonly SymbolInfo[]): FbdOnline {
   const phase = useOnline((s) => s.phase);
   const monitor = useOnline((s) => s.monitor);
+  const prepared = useOnline((s) => s.prepared);
   const instance = useShownInstance(pou);
   const key = `fbd:${pou.name}`;
   const live = phase !== "offline";
@@ -38,8 +39,8 @@ export function useFbdOnline(pou: Pou, body: FbdBody, lookup: Lookup, symbols: r
   useEffect(() => () => onlineStore.getState().subscribe(key, null), [key]);
 
   const online = useMemo(
-    () => (live && binding ? fbdOnlineView(monitor, binding) : undefined),
-    [live, binding, monitor],
+    () => (live && binding ? fbdOnlineView(monitor, binding, prepared) : undefined),
+    [live, binding, monitor, prepared],
   );
   const actions = useMemo(
     () => (live && instance ? operandActions(instance, symbols) : undefined),

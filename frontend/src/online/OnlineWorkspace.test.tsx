@@ -137,7 +137,7 @@ async function openMain() {
 const element = (editor: HTMLElement, id: string) => editor.querySelector(`[data-id="${id}"]`)!;
 
 describe("online LD in the app (issue 7 online mode)", () => {
-  it("compiles, subscribes the diagram, colours from the engine, toggles, watches by drag and goes offline", async () => {
+  it("compiles, subscribes the diagram, colours from the engine, prepares and writes, watches by drag and goes offline", async () => {
     const fetchMock = serve();
     const editor = await openMain();
     fireEvent.click(screen.getByRole("button", { name: "Compile & simulate" }));
@@ -171,9 +171,13 @@ describe("online LD in the app (issue 7 online mode)", () => {
     expect(screen.getByTestId("scan-count").textContent).toBe("42");
     expect(screen.getByText("0:00:00.420")).toBeTruthy();
 
-    // Double-click toggles Start (TRUE now): a write of FALSE.
+    // Double-click prepares FALSE for Start (TRUE now), shown as <FALSE>; Ctrl+F7 writes it (CODESYS).
     fireEvent.doubleClick(element(editor, "start"));
+    expect(element(editor, "start").querySelector(".ld-prepared")!.textContent).toBe("<FALSE>");
+    expect(screen.getByRole("group", { name: "Prepared values" }).textContent).toContain("1 prepared");
+    fireEvent.keyDown(window, { key: "F7", ctrlKey: true });
     expect(socket.sent.at(-1)).toEqual({ type: "write", path: "MAIN.START", value: false });
+    expect(element(editor, "start").querySelector(".ld-prepared")).toBeNull();
 
     // Drag Motor from the diagram onto the panels: it joins the watch list with its value.
     fireEvent.mouseDown(element(editor, "motor").querySelector(".ld-hit")!);

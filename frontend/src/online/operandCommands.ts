@@ -1,10 +1,15 @@
-// The online commands on a variable, shared by the LD diagram and the ST editor: toggle, write,
+// The online commands on a variable, shared by the LD and FBD diagrams and the ST editor: prepare
+// (CODESYS's double-click: a BOOL toggles its prepared value, other types ask for one), write,
 // force and release go to the online store as simulation paths, and one list of context menu items
 // (the editors render it with the LD context menu and ask for values with ValuePrompt).
 import type { LdOnlineActions } from "../ld/editor/LdEditor";
 import type { MenuItem } from "../ld/editor/ContextMenu";
 import { pathKey } from "./monitor";
 import { parseValue } from "./values";
+import type { Value } from "./protocol";
+
+const isBool = (value: Value | undefined, type: string | undefined) =>
+  typeof value === "boolean" || type?.toUpperCase() === "BOOL";
 import { onlineStore } from "./store";
 
 /** Commands by operand text; `pathOf` names its simulation path (null: nothing to do). */
@@ -15,7 +20,17 @@ export function operandCommands(pathOf: (operand: string) => string | null): LdO
     if (p) run(p);
   };
   return {
-    toggle: (operand) => on(operand, (p) => store().write(p, store().monitor.values[pathKey(p)] !== true)),
+    prepare(operand, text) {
+      const p = pathOf(operand);
+      if (!p) return true; // nothing to prepare (a literal): done
+      const key = pathKey(p);
+      const { monitor, prepared } = store();
+      if (text !== undefined) store().prepare(p, parseValue(text));
+      else if (isBool(monitor.values[key], monitor.types[key]?.name))
+        store().prepare(p, !(prepared[key] ?? monitor.values[key]));
+      else return false;
+      return true;
+    },
     write: (operand, text) => on(operand, (p) => store().write(p, parseValue(text))),
     force: (operand, value) =>
       on(operand, (p) => store().force(p, typeof value === "boolean" ? value : parseValue(value))),

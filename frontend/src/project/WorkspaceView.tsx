@@ -270,7 +270,7 @@ function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
   const name = pou.name;
   const setLdHistory = useWorkspace((s) => s.setLdHistory);
   const { library, symbols, diagnostics, focus, declare } = useDiagramPou(name);
-  const live = useLdOnline(pou, history.present, symbols);
+  const live = useLdOnline(pou, history.present, symbols, library);
   const debugging = useLdDebugging(name, history.present);
   return (
     <LdEditor

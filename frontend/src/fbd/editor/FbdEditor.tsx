@@ -497,6 +497,28 @@ export function FbdEditor({
     [orders, lookup, symbols, byElement, debug],
   );
 
+  /** Prepares a value for `operand` (CODESYS double-click): a BOOL toggles, others ask for the value. */
+  const prepare = (operand: string | null) => {
+    if (onlineActions && operand && !onlineActions.prepare(operand)) setValuePrompt({ operand, action: "prepare" });
+  };
+  /** The variable behind a block pin: the FB instance's pin, or the input node wired to it. */
+  const pinOperand = (block: Block, side: "in" | "out", pin: string): string | null => {
+    const entry = lookup(block.call);
+    const declared = entry
+      ? [...entry.inputs, ...entry.in_outs, ...entry.outputs].some((p) => p.name.toUpperCase() === pin.toUpperCase())
+      : false;
+    if (entry?.kind === "function_block" && block.instance?.trim() && declared)
+      return `${block.instance.trim()}.${pin}`;
+    const network = findNode(body, block.id)?.network;
+    const wire =
+      side === "in"
+        ? network &&
+          wiresOf(network).find((w) => w.to.node === block.id && w.to.pin.toUpperCase() === pin.toUpperCase())
+        : undefined;
+    const source = wire && network ? nodesOf(network).find((n) => n.id === wire.from.node) : undefined;
+    return source && kindOf(source) === "input" ? operandOf(source) : null;
+  };
+
   const api: FbdEditorApi = {
     readOnly: locked,
     symbols,
@@ -510,12 +532,8 @@ export function FbdEditor({
       root.current?.focus();
     },
     pinMenu,
-    valueDoubleClick: (node) => {
-      const operand = operandOf(node);
-      if (!onlineActions || !operand) return;
-      if (typeof online?.probes[node.id] === "boolean") onlineActions.toggle(operand);
-      else setValuePrompt({ operand, action: "write" });
-    },
+    valueDoubleClick: (node) => prepare(operandOf(node)),
+    pinDoubleClick: (node, side, pin) => prepare(pinOperand(node as Block, side, pin)),
   };
 
   const onSelectChanges = useCallback(

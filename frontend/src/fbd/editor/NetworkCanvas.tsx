@@ -17,10 +17,8 @@ import {
 } from "@xyflow/react";
 import { useEffect, useMemo, useRef, useState, type DragEvent, type MouseEvent, type ReactNode } from "react";
 import type { Diagnostic } from "../../generated/api";
-import { formatValue } from "../../online/values";
 import { nodesOf, wireKey, wiresOf, type FbdNetwork, type FbdNode, type Position } from "../model";
 import { probeOf, type FbdOnlineView } from "../online";
-import { useFbdEditor } from "./context";
 import { FbdNodeView, type FbdFlowNode } from "./FbdNodeView";
 
 export const DRAG_FORMAT = "application/x-ladderlab-fbd";
@@ -137,17 +135,13 @@ function Canvas(props: NetworkCanvasProps) {
       return built.map((n) => ({ ...n, measured: old.get(n.id)?.measured }));
     });
   }, [built]);
-  const editor = useFbdEditor();
   const edges = useMemo(
     (): Edge[] =>
       wiresOf(network).map((w) => {
         const id = wireKey(w);
         const probe = online ? probeOf(network, w.from) : null;
         const value = probe ? online?.probes[probe] : undefined;
-        const source = online && value !== undefined ? nodesOf(network).find((n) => n.id === w.from.node) : undefined;
-        const type = source
-          ? editor.view(network, source).pins.outputs.find((p) => p.name === w.from.pin)?.type
-          : undefined;
+        // The value shows at the pins (FbdNodeView), the wire its BOOL state by colour.
         return {
           id,
           source: w.from.node,
@@ -156,12 +150,10 @@ function Canvas(props: NetworkCanvasProps) {
           targetHandle: `in:${w.to.pin}`,
           selected: selected?.edges.includes(id) ?? false,
           className: wireClass(value),
-          label: online && value !== undefined ? formatValue(value, type) : undefined,
-          labelClassName: "fbd-wire-label",
           markerEnd: { type: MarkerType.ArrowClosed, width: 12, height: 12 },
         };
       }),
-    [network, selected, online, editor],
+    [network, selected, online],
   );
 
   const onNodesChange = (changes: NodeChange<FbdFlowNode>[]) => {

@@ -1,4 +1,4 @@
-import { fireEvent, render, screen, within } from "@testing-library/react";
+import { act, fireEvent, render, screen, within } from "@testing-library/react";
 import { useState } from "react";
 import { describe, expect, it, vi } from "vitest";
 import type { SymbolInfo } from "../../generated/api";
@@ -401,16 +401,47 @@ describe("history depth", () => {
 });
 
 describe("online commands (issue 7 online mode)", () => {
-  const actions = () => ({ toggle: vi.fn(), write: vi.fn(), force: vi.fn(), unforce: vi.fn(), watch: vi.fn() });
+  // prepare: a BOOL's prepared value toggles (true); any other variable needs a value asked for (false)
+  const actions = () => ({
+    prepare: vi.fn((operand: string) => !operand.endsWith(".CV")),
+    write: vi.fn(),
+    force: vi.fn(),
+    unforce: vi.fn(),
+    watch: vi.fn(),
+  });
 
-  it("toggles a BOOL operand on double-click instead of editing it", () => {
+  it("prepares a value on double-click instead of editing: a BOOL toggles, others ask for it (CODESYS)", () => {
     const onlineActions = actions();
     const t = setup(motorMain, { readOnly: "Go offline to edit", onlineActions });
     fireEvent.doubleClick(t.hit("start"));
     fireEvent.doubleClick(t.hit("motor"));
-    expect(onlineActions.toggle.mock.calls).toEqual([["Start"], ["Motor"]]);
+    expect(onlineActions.prepare.mock.calls).toEqual([["Start"], ["Motor"]]);
     expect(screen.queryByRole("combobox")).toBeNull();
+    expect(screen.queryByRole("dialog")).toBeNull();
     expect(t.current()).toBe(motorMain);
+  });
+
+  it("prepares a box pin's value: the FB instance's pin (asking for a non-BOOL's value)", () => {
+    const onlineActions = actions();
+    const online = {
+      pins: {
+        ton: { "in:PT": { text: "T#5s", bool: null, forced: false, prepared: null } },
+        ctu: { "out:CV": { text: "3", bool: null, forced: false, prepared: null } },
+      },
+    };
+    const t = setup(motorMain, { readOnly: "Go offline to edit", onlineActions, online });
+    fireEvent.doubleClick(t.editor.querySelector('[data-id="ton"] [data-pin-value="in:PT"] text')!);
+    expect(onlineActions.prepare).toHaveBeenLastCalledWith("RunTimer.PT");
+    fireEvent.doubleClick(t.editor.querySelector('[data-id="ctu"] [data-pin-value="out:CV"] text')!);
+    expect(onlineActions.prepare).toHaveBeenLastCalledWith("StartCounter.CV");
+    fireEvent.change(
+      within(screen.getByRole("dialog", { name: "Prepare a value for StartCounter.CV" })).getByLabelText("Value"),
+      {
+        target: { value: "5" },
+      },
+    );
+    act(() => void fireEvent.submit(screen.getByRole("dialog", { name: "Prepare a value for StartCounter.CV" })));
+    expect(onlineActions.prepare).toHaveBeenLastCalledWith("StartCounter.CV", "5");
   });
 
   it("writes, forces, releases and watches the clicked element's variable from the context menu", () => {

@@ -59,7 +59,7 @@ export interface LdEditorProps {
   /** Controls next to the read-only reason (online: "Go offline to edit", the instance shown). */
   readOnlyActions?: ReactNode;
   onDeclareVariable?(declaration: VariableDeclaration): void;
-  /** Online commands on operands (double-click toggles a BOOL, the context menu writes and forces). */
+  /** Online commands on operands (double-click prepares a value, the context menu writes and forces). */
   onlineActions?: LdOnlineActions;
   /** Told which networks are rendered, so online mode subscribes only to those. */
   onVisibleChange?(networks: readonly string[]): void;
@@ -77,7 +77,11 @@ export interface LdDebugging {
 
 /** What the diagram can ask of a running simulation, by operand text (the caller maps it to a path). */
 export interface LdOnlineActions {
-  toggle(operand: string): void;
+  /**
+   * Prepares a value (double-click, CODESYS): `text` when given, else a BOOL's prepared value toggles;
+   * false when the variable is not a BOOL and a value must be asked for.
+   */
+  prepare(operand: string, text?: string): boolean;
   write(operand: string, text: string): void;
   force(operand: string, value: boolean | string): void;
   unforce(operand: string): void;
@@ -169,6 +173,29 @@ function variableOf(body: LdBody, id: string): string | null {
   return text.trim() || null;
 }
 
+/**
+ * The variable a double-click online prepares a value for: a contact's or coil's, a compare's left
+ * side, or at a box pin's value (`pin`: its key, `in:PT`) the FB instance's pin or the pin's variable.
+ */
+export function valueOperand(
+  body: LdBody,
+  id: string,
+  pin: string | null,
+  library: (call: string) => LibraryEntry | undefined,
+): string | null {
+  const e = locate(body, id)?.element;
+  if (e?.type !== "box" || !pin) return variableOf(body, id);
+  const [side, name] = pin.split(":") as ["in" | "out", string];
+  const entry = library(e.call);
+  const declared = entry
+    ? [...entry.inputs, ...entry.in_outs, ...entry.outputs].some((p) => p.name.toUpperCase() === name)
+    : false;
+  if (entry?.kind === "function_block" && e.instance?.trim() && declared) return `${e.instance.trim()}.${name}`;
+  const pins = side === "in" ? (e.inputs ?? {}) : (e.outputs ?? {});
+  const operand = Object.entries(pins).find(([n]) => n.toUpperCase() === name)?.[1];
+  return typeof operand === "string" && operand.trim() ? operand.trim() : null;
+}
+
 const fieldLabel = (field: OperandField) =>
   field.kind === "input" || field.kind === "output"
     ? `Pin ${field.pin}`
@@ -209,7 +236,8 @@ export function LdEditor({
 
   const byName = useMemo(() => new Map(library.map((e) => [e.name.toUpperCase(), e])), [library]);
   const lookup = useCallback((call: string) => byName.get(call.toUpperCase()), [byName]);
-  const layout = useMemo(() => layoutBody(body, { library: lookup }), [body, lookup]);
+  const values = online !== undefined;
+  const layout = useMemo(() => layoutBody(body, { library: lookup, values }), [body, lookup, values]);
   const known = useMemo(() => symbolNames(symbols), [symbols]);
 
   // A selection naming elements an undo removed is dropped rather than left dangling.
@@ -452,10 +480,11 @@ export function LdEditor({
       select({ kind: "elements", ids: [id] });
       editField(id, field);
     },
-    onDoubleClick: (target) => {
+    onDoubleClick: (target, event) => {
       if (onlineActions && target.kind === "element") {
-        const e = locate(body, target.id)?.element;
-        if ((e?.type === "contact" || e?.type === "coil") && e.var.trim()) onlineActions.toggle(e.var.trim());
+        const pin = (event.target as Element).closest?.("[data-pin-value]")?.getAttribute("data-pin-value");
+        const operand = valueOperand(body, target.id, pin ?? null, lookup);
+        if (operand && !onlineActions.prepare(operand)) setValuePrompt({ operand, action: "prepare" });
         return;
       }
       if (readOnly) return;
