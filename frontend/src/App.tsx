@@ -1,6 +1,7 @@
 import { useEffect, useState, type FormEvent } from "react";
 import type { ProjectSummary } from "./api/client";
-import { useAppStore } from "./store";
+import { appStore, useAppStore } from "./store";
+import { lastProject, rememberProject } from "./project/session";
 import { useWorkspace } from "./project/store";
 import { WorkspaceView } from "./project/WorkspaceView";
 import { ViewBoundary } from "./project/ViewBoundary";
@@ -165,10 +166,23 @@ function MainArea() {
 export default function App() {
   const loadProjects = useAppStore((s) => s.loadProjects);
   const checkHealth = useAppStore((s) => s.checkHealth);
+  const selected = useAppStore((s) => s.selectedProject);
+  const listed = useAppStore((s) => s.projectsStatus === "ready");
 
   useEffect(() => {
     void loadProjects();
   }, [loadProjects]);
+
+  // After a reload the project open last opens again (project/session.ts keeps the rest of the session).
+  useEffect(() => {
+    if (listed && appStore.getState().selectedProject === null) {
+      const last = lastProject(localStorage);
+      if (last) appStore.getState().selectProject(last);
+    }
+  }, [listed]);
+  useEffect(() => {
+    if (selected) rememberProject(selected, localStorage);
+  }, [selected]);
 
   useEffect(() => {
     void checkHealth();

@@ -59,6 +59,8 @@ export interface OnlineData {
   views: Record<string, Subscription>;
   /** Paths in the watch list, as the user typed them. */
   watch: string[];
+  /** Upper-case paths of the watch list's expanded rows (FB instances, structures, arrays). */
+  watchExpanded: string[];
   /** The instance a function block's diagram shows online, by POU name (e.g. Blinker -> MAIN.BLINK). */
   instances: Record<string, string>;
   /** Counts the connections opened to the simulation (a reconnect ends what the server kept per client). */
@@ -97,6 +99,10 @@ export interface OnlineActions {
   subscribe(view: string, subscription: Subscription | null): void;
   addWatch(path: string): void;
   removeWatch(path: string): void;
+  /** Opens or closes a row of the watch list's tree. */
+  toggleWatchExpanded(path: string): void;
+  /** The watch list of a project opened again (kept in localStorage); the rows it had expanded. */
+  restoreWatch(watch: readonly string[], expanded: readonly string[]): void;
   setInstance(pou: string, instance: string): void;
   /** Sends any client message (breakpoints, continue, step); false and a log line when not connected. */
   send(msg: ClientMessage): boolean;
@@ -107,7 +113,7 @@ export interface OnlineActions {
 export type OnlineState = OnlineData & OnlineActions;
 
 /** What going offline resets; the views, the watch list and the chosen instances stay. */
-export const offline: Omit<OnlineData, "views" | "watch" | "instances" | "connection"> = {
+export const offline: Omit<OnlineData, "views" | "watch" | "watchExpanded" | "instances" | "connection"> = {
   phase: "offline",
   project: null,
   simulation: null,
@@ -272,6 +278,7 @@ export function createOnlineStore(
       ...offline,
       views: {},
       watch: [],
+      watchExpanded: [],
       instances: {},
       connection: 0,
 
@@ -393,7 +400,24 @@ export function createOnlineStore(
       },
 
       removeWatch(path) {
-        set({ watch: get().watch.filter((p) => pathKey(p) !== pathKey(path)) });
+        const key = pathKey(path);
+        set({
+          watch: get().watch.filter((p) => pathKey(p) !== key),
+          watchExpanded: get().watchExpanded.filter(
+            (p) => p !== key && !p.startsWith(`${key}.`) && !p.startsWith(`${key}[`),
+          ),
+        });
+        resubscribe();
+      },
+
+      toggleWatchExpanded(path) {
+        const key = pathKey(path);
+        const open = get().watchExpanded;
+        set({ watchExpanded: open.includes(key) ? open.filter((p) => p !== key) : [...open, key] });
+      },
+
+      restoreWatch(watch, expanded) {
+        set({ watch: [...watch], watchExpanded: expanded.map(pathKey) });
         resubscribe();
       },
     };

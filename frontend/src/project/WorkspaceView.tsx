@@ -33,6 +33,12 @@ import { debugStore, useDebug } from "../debug/store";
 import { ViewBoundary } from "./ViewBoundary";
 import { useAppKeys } from "./useAppKeys";
 import { ShortcutHelp } from "../keys/ShortcutHelp";
+import { VariablesView } from "./VariablesView";
+import { keepSession, restoreSession, type SessionStores } from "./session";
+import { traceStore } from "../trace/store";
+
+/** The stores a project's session (project/session.ts) is kept from. */
+const SESSION_STORES: SessionStores = { workspace: workspaceStore, online: onlineStore, trace: traceStore };
 
 const KINDS: { kind: Pou["kind"]; title: string }[] = [
   { kind: "program", title: "Programs" },
@@ -355,7 +361,7 @@ function StPouView({ pou }: { pou: Pou }) {
   );
 }
 
-type PouMode = "body" | "declarations" | "st";
+type PouMode = "body" | "declarations" | "variables" | "st";
 
 /** Declarations of one POU with the types to offer and the problems of its declaration text. */
 function PouDeclarations({
@@ -420,6 +426,7 @@ function PouView({ name }: { name: string }) {
   const modes: { id: PouMode; label: string }[] = [
     { id: "body", label: pou.language === "st" ? "Body" : "Diagram" },
     { id: "declarations", label: "Declarations" },
+    { id: "variables", label: "Variables" },
     ...(pou.language !== "st" ? [{ id: "st" as const, label: "View as ST" }] : []),
   ];
   let content;
@@ -432,6 +439,8 @@ function PouView({ name }: { name: string }) {
         focus={focus?.part === "declarations" && focus.line != null ? { line: focus.line, seq: focus.seq } : null}
       />
     );
+  } else if (mode === "variables") {
+    content = <VariablesView pou={pou} instancePicker={<InstancePicker pou={pou.name} />} />;
   } else if (mode === "st") {
     content = (
       <StView
@@ -457,9 +466,11 @@ function PouView({ name }: { name: string }) {
   const area =
     mode === "declarations"
       ? `The declarations of ${name}`
-      : mode === "st"
-        ? `The ST view of ${name}`
-        : `The ${LANGUAGE[pou.language]} editor of ${name}`;
+      : mode === "variables"
+        ? `The variables of ${name}`
+        : mode === "st"
+          ? `The ST view of ${name}`
+          : `The ${LANGUAGE[pou.language]} editor of ${name}`;
   return (
     <div className="pou-view">
       <div className="pou-modes" role="tablist" aria-label={`${name} views`}>
@@ -562,6 +573,22 @@ export function WorkspaceView() {
     panelsStore.getState().clear();
     debugStore.getState().open(name);
   }, [name]);
+
+  // Once it has loaded, the project's session comes back (watch list, trace setup, tabs, its running
+  // simulation) and is kept from then on.
+  const ready = status === "ready";
+  useEffect(() => {
+    if (!ready || !name) return;
+    let kept: (() => void) | null = null;
+    let current = true;
+    void restoreSession(name, SESSION_STORES, localStorage).finally(() => {
+      if (current) kept = keepSession(name, SESSION_STORES, localStorage);
+    });
+    return () => {
+      current = false;
+      kept?.();
+    };
+  }, [name, ready]);
 
   useAppKeys();
 
