@@ -418,10 +418,12 @@ function PouView({ name }: { name: string }) {
   const focus = usePanels((s) => (s.focus?.pou.toUpperCase() === name.toUpperCase() ? s.focus : null));
   const [mode, setMode] = useState<PouMode>("body");
   const phase = useOnline((s) => s.phase);
-  // A diagnostic clicked for this POU shows the part it is in.
-  useEffect(() => {
+  // A diagnostic clicked for this POU shows the part it is in (as the request arrives, while rendering).
+  const [focusSeen, setFocusSeen] = useState(focus);
+  if (focus !== focusSeen) {
+    setFocusSeen(focus);
     if (focus) setMode(focus.part === "declarations" ? "declarations" : "body");
-  }, [focus]);
+  }
   if (!pou || !project) return <p className="placeholder">{name} is no longer in this project.</p>;
   const modes: { id: PouMode; label: string }[] = [
     { id: "body", label: pou.language === "st" ? "Body" : "Diagram" },

@@ -16,7 +16,7 @@ import {
 import { lintGutter, setDiagnostics } from "@codemirror/lint";
 import { Compartment, EditorState } from "@codemirror/state";
 import { EditorView, highlightActiveLine, keymap, lineNumbers } from "@codemirror/view";
-import { useEffect, useRef } from "react";
+import { useEffect, useLayoutEffect, useRef } from "react";
 import type { Diagnostic } from "../generated/api";
 import { stBlocks } from "./blocks";
 import { setBreakpointLines, setHaltedLine, stDebugging } from "./breakpoints";
@@ -57,11 +57,17 @@ export function StEditor({
 }: StEditorProps) {
   const host = useRef<HTMLDivElement>(null);
   const view = useRef<EditorView | null>(null);
+  // What the editor's callbacks read: the props of the last render (kept after rendering, not during it).
   const latest = useRef({ onChange, completions, debug, online });
-  latest.current = { onChange, completions, debug, online };
+  useLayoutEffect(() => {
+    latest.current = { onChange, completions, debug, online };
+  });
   const editable = useRef(new Compartment());
+  /** The props the view is created with; later ones arrive through the effects below. */
+  const initial = useRef({ text, debugging: debug !== undefined, readOnly, label });
 
   useEffect(() => {
+    const { text, debugging, readOnly, label } = initial.current;
     const v = new EditorView({
       parent: host.current!,
       state: EditorState.create({
@@ -80,10 +86,10 @@ export function StEditor({
           syntaxHighlighting(defaultHighlightStyle),
           autocompletion({ override: [stCompletionSource(() => latest.current.completions)] }),
           lintGutter(),
-          debug ? stDebugging((line) => latest.current.debug?.onToggle(line)) : [],
+          debugging ? stDebugging((line) => latest.current.debug?.onToggle(line)) : [],
           stInlineValues(() => latest.current.online),
           keymap.of([
-            ...stKeys(debug ? (line) => latest.current.debug?.onToggle(line) : null),
+            ...stKeys(debugging ? (line) => latest.current.debug?.onToggle(line) : null),
             ...closeBracketsKeymap,
             ...defaultKeymap,
             ...historyKeymap,
@@ -107,7 +113,6 @@ export function StEditor({
       v.destroy();
       view.current = null;
     };
-    // The view is created once; later props arrive through the effects below.
   }, []);
 
   useEffect(() => {

@@ -546,8 +546,14 @@ export function FbdEditor({
         const base = current?.network === network ? current : { network, nodes: [], edges: [] };
         const nextNodes = new Set(base.nodes);
         const nextEdges = new Set(base.edges);
-        for (const c of nodes) c.selected ? nextNodes.add(c.id) : nextNodes.delete(c.id);
-        for (const c of edges) c.selected ? nextEdges.add(c.id) : nextEdges.delete(c.id);
+        for (const c of nodes) {
+          if (c.selected) nextNodes.add(c.id);
+          else nextNodes.delete(c.id);
+        }
+        for (const c of edges) {
+          if (c.selected) nextEdges.add(c.id);
+          else nextEdges.delete(c.id);
+        }
         if (!nextNodes.size && !nextEdges.size) return current?.network === network ? null : current; // another network's canvas letting go
         return { network, nodes: [...nextNodes], edges: [...nextEdges] };
       });
@@ -586,22 +592,32 @@ export function FbdEditor({
       : null;
   };
 
-  // A halt or a clicked diagnostic scrolls its network into view and selects the place.
-  const reveal = (network?: string | null, element?: string | null) => {
-    const net = element ? findNode(body, element)?.network.id : network;
-    if (!net) return;
-    root.current?.querySelector(`[data-network="${CSS.escape(net)}"]`)?.scrollIntoView?.({ block: "center" });
-    if (element) setSelection({ network: net, nodes: [element], edges: [] });
-    else setNetworkSelected(net);
-  };
+  // A new halt place or a clicked diagnostic selects the place (while rendering, as the request
+  // arrives: later edits do not move the selection) and scrolls its network into view.
   const halted = debug?.halted;
+  const haltKey = halted ? `${halted.network ?? ""}:${halted.element ?? ""}` : null;
+  const focusSeq = focus?.seq ?? null;
+  const [revealed, setRevealed] = useState<{ halt: string | null; focus: number | null; network: string | null }>({
+    halt: null,
+    focus: null,
+    network: null,
+  });
+  if (haltKey !== revealed.halt || focusSeq !== revealed.focus) {
+    const place = haltKey !== revealed.halt && halted ? halted : focusSeq !== revealed.focus ? focus : null;
+    const network = place
+      ? ((place.element ? findNode(body, place.element)?.network.id : place.network) ?? null)
+      : null;
+    if (place && network) {
+      if (place.element) setSelection({ network, nodes: [place.element], edges: [] });
+      else setNetworkSelected(network);
+    }
+    setRevealed({ halt: haltKey, focus: focusSeq, network });
+  }
   useEffect(() => {
-    if (halted) reveal(halted.network, halted.element);
-    // Only a new halt place scrolls, not later edits.
-  }, [halted?.network, halted?.element]);
-  useEffect(() => {
-    if (focus) reveal(focus.network, focus.element);
-  }, [focus?.seq]);
+    const network = revealed.network;
+    if (network)
+      root.current?.querySelector(`[data-network="${CSS.escape(network)}"]`)?.scrollIntoView?.({ block: "center" });
+  }, [revealed]);
 
   /** What each FBD key does (src/keys/keymap.ts, scope "fbd"); false when it does not apply now. */
   const keyActions: Record<CommandOf<"fbd">, () => boolean> = {

@@ -127,14 +127,15 @@ function Canvas(props: NetworkCanvasProps) {
       })),
     [network, selected, fallback],
   );
-  // xyflow measures nodes once they are drawn; the sizes stay on our copies across model edits.
+  // xyflow measures nodes once they are drawn; the sizes stay on our copies across model edits
+  // (taken over while rendering the new model, not in an effect after it).
   const [nodes, setNodes] = useState(built);
-  useEffect(() => {
-    setNodes((previous) => {
-      const old = new Map(previous.map((n) => [n.id, n]));
-      return built.map((n) => ({ ...n, measured: old.get(n.id)?.measured }));
-    });
-  }, [built]);
+  const [builtSeen, setBuiltSeen] = useState(built);
+  if (built !== builtSeen) {
+    setBuiltSeen(built);
+    const old = new Map(nodes.map((n) => [n.id, n]));
+    setNodes(built.map((n) => ({ ...n, measured: old.get(n.id)?.measured })));
+  }
   const edges = useMemo(
     (): Edge[] =>
       wiresOf(network).map((w) => {

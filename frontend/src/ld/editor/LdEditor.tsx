@@ -256,14 +256,18 @@ export function LdEditor({
     setAnchor(newAnchor !== undefined ? newAnchor : next?.kind === "elements" ? next.ids[0]! : null);
   }, []);
 
-  useEffect(() => {
-    if (!focus) return;
+  // Only a new focus request moves the selection (while rendering, as it arrives), not later edits of the body.
+  const focusSeq = focus?.seq ?? null;
+  const [focusSeen, setFocusSeen] = useState<number | null>(null);
+  if (focus && focusSeq !== focusSeen) {
+    setFocusSeen(focusSeq);
     if (focus.element && locate(body, focus.element)) select({ kind: "elements", ids: [focus.element] });
     else if (focus.network && networksOf(body).some((n) => n.id === focus.network))
       select({ kind: "network", id: focus.network });
-    root.current?.focus();
-    // Only a new focus request moves the selection, not later edits of the body.
-  }, [focus?.seq]);
+  }
+  useEffect(() => {
+    if (focusSeq !== null) root.current?.focus();
+  }, [focusSeq]);
 
   const apply = useCallback(
     (result: EditResult, then?: "edit") => {
@@ -301,12 +305,12 @@ export function LdEditor({
     [layout],
   );
 
-  useEffect(() => {
-    if (!pendingEdit) return;
+  // The new element is laid out in this render: its operand editor opens now.
+  if (pendingEdit && locate(body, pendingEdit)) {
     setPendingEdit(null);
     const field = mainField(body, pendingEdit, lookup);
     if (field) editField(pendingEdit, field);
-  }, [pendingEdit, body, lookup, editField]);
+  }
 
   const commitOperand = (id: string, field: OperandField, text: string) => {
     setEditing(null);
