@@ -124,7 +124,9 @@ def page(server: str, chromium_path: str, browser_errors: BrowserErrors):
         page.on(
             "console",
             lambda message: (
-                browser_errors.record(f"console error: {message.text}") if message.type == "error" else None
+                browser_errors.record(f"console error: {message.text} ({message.location.get('url')})")
+                if message.type == "error"
+                else None
             ),
         )
         try:

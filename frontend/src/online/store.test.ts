@@ -52,6 +52,7 @@ function setup(overrides: Partial<SimulationApi> = {}) {
   const api: SimulationApi = {
     createSimulation: vi.fn(async () => info(0, 0)),
     getSimulation: vi.fn(async () => info(3, 0.4)),
+    listSimulations: vi.fn(async () => [info(3, 0.4)]),
     resetSimulation: vi.fn(async () => info(0, 0)),
     deleteSimulation: vi.fn(async () => undefined),
     ...overrides,
@@ -231,7 +232,7 @@ describe("online store", () => {
     expect(store.getState()).toMatchObject({ phase: "connecting", simulation: "s1" });
     expect(store.getState().monitor.log.at(-1)?.message).toBe("connection to the simulation lost");
     await vi.advanceTimersByTimeAsync(RECONNECT_DELAYS_MS[0]!);
-    expect(api.getSimulation).toHaveBeenCalledWith("s1");
+    expect(api.listSimulations).toHaveBeenCalled();
     expect(sockets).toHaveLength(2);
     sockets[1]!.open();
     expect(store.getState()).toMatchObject({ phase: "online", error: null, connection: 2 });
@@ -239,11 +240,7 @@ describe("online store", () => {
   });
 
   it("goes offline when the dropped simulation is gone from the server", async () => {
-    const { store, sockets } = setup({
-      getSimulation: vi.fn(async () => {
-        throw new ApiError("no simulation s1", 404);
-      }),
-    });
+    const { store, sockets } = setup({ listSimulations: vi.fn(async () => []) });
     await store.getState().compile("demo");
     sockets[0]!.open();
     sockets[0]!.drop();
@@ -260,7 +257,7 @@ describe("online store", () => {
     sockets[0]!.drop();
     for (let i = 0; i < RECONNECT_DELAYS_MS.length; i++) {
       await vi.advanceTimersByTimeAsync(RECONNECT_DELAYS_MS[i]!);
-      sockets.at(-1)!.drop(); // the server answers GET but the websocket does not open
+      sockets.at(-1)!.drop(); // the server lists it but the websocket does not open
     }
     expect(store.getState()).toMatchObject({ phase: "offline", error: "The connection to the simulation was lost." });
   });
@@ -270,7 +267,7 @@ describe("online store", () => {
     expect(await store.getState().attach("other", "s1")).toBe(false); // s1 runs project demo
     expect(sockets).toHaveLength(0);
     expect(await store.getState().attach("demo", "s1")).toBe(true);
-    expect(api.getSimulation).toHaveBeenCalledWith("s1");
+    expect(api.listSimulations).toHaveBeenCalled();
     expect(store.getState()).toMatchObject({ phase: "connecting", project: "demo", simulation: "s1" });
     sockets[0]!.open();
     expect(store.getState().phase).toBe("online");
@@ -278,11 +275,7 @@ describe("online store", () => {
   });
 
   it("attaches to nothing when the simulation is gone", async () => {
-    const { store, sockets } = setup({
-      getSimulation: vi.fn(async () => {
-        throw new ApiError("no simulation s1", 404);
-      }),
-    });
+    const { store, sockets } = setup({ listSimulations: vi.fn(async () => [{ ...info(1, 0), id: "s2" }]) });
     expect(await store.getState().attach("demo", "s1")).toBe(false);
     expect(store.getState().phase).toBe("offline");
     expect(sockets).toHaveLength(0);

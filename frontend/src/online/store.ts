@@ -219,15 +219,14 @@ export function createOnlineStore(
       }
       retry = setTimeout(() => {
         retry = null;
-        api.getSimulation(id).then(
-          () => {
-            if (get().simulation === id && get().phase === "connecting") connect(id, attempt + 1);
-          },
-          (err) => {
+        api.listSimulations().then(
+          (running) => {
             if (get().simulation !== id || get().phase !== "connecting") return;
-            if (err instanceof ApiError && err.status === 404)
-              set({ ...offline, monitor: logLocal(get().monitor, "error", "the simulation is gone"), error: GONE });
-            else reconnect(id, attempt + 1);
+            if (running.some((s) => s.id === id)) connect(id, attempt + 1);
+            else set({ ...offline, monitor: logLocal(get().monitor, "error", "the simulation is gone"), error: GONE });
+          },
+          () => {
+            if (get().simulation === id && get().phase === "connecting") reconnect(id, attempt + 1);
           },
         );
       }, RECONNECT_DELAYS_MS[attempt]);
@@ -306,8 +305,8 @@ export function createOnlineStore(
       async attach(project, id) {
         if (get().simulation) return get().simulation === id;
         try {
-          const info = await api.getSimulation(id);
-          if (info.project !== project || get().simulation || get().phase !== "offline") return false;
+          const info = (await api.listSimulations()).find((s) => s.id === id);
+          if (!info || info.project !== project || get().simulation || get().phase !== "offline") return false;
           set({
             phase: "connecting",
             project,

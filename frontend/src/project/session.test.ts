@@ -29,10 +29,8 @@ function stores(running: string[] = []) {
   };
   const sims: SimulationApi = {
     createSimulation: vi.fn(async () => simulation("s9")),
-    getSimulation: vi.fn(async (id: string) => {
-      if (!running.includes(id)) throw new Error(`no simulation ${id}`);
-      return simulation(id);
-    }),
+    getSimulation: vi.fn(async (id: string) => simulation(id)),
+    listSimulations: vi.fn(async () => running.map((id) => simulation(id))),
     resetSimulation: vi.fn(),
     deleteSimulation: vi.fn(async () => undefined),
   };

@@ -255,15 +255,28 @@ export function LdEditor({
     setSelection(next);
     setAnchor(newAnchor !== undefined ? newAnchor : next?.kind === "elements" ? next.ids[0]! : null);
   }, []);
+  /**
+   * The network to scroll into view: where the keyboard, an edit or a focus request moved the
+   * selection. A click does not scroll (the diagram would move under the pointer between the two
+   * clicks of a double-click).
+   */
+  const [reveal, setReveal] = useState<string | null>(null);
+  const selectAndReveal = useCallback(
+    (next: Selection | null, of: LdBody, newAnchor?: string | null) => {
+      select(next, newAnchor);
+      setReveal(selectedNetwork({ body: of, selection: next }) ?? null);
+    },
+    [select],
+  );
 
   // Only a new focus request moves the selection (while rendering, as it arrives), not later edits of the body.
   const focusSeq = focus?.seq ?? null;
   const [focusSeen, setFocusSeen] = useState<number | null>(null);
   if (focus && focusSeq !== focusSeen) {
     setFocusSeen(focusSeq);
-    if (focus.element && locate(body, focus.element)) select({ kind: "elements", ids: [focus.element] });
+    if (focus.element && locate(body, focus.element)) selectAndReveal({ kind: "elements", ids: [focus.element] }, body);
     else if (focus.network && networksOf(body).some((n) => n.id === focus.network))
-      select({ kind: "network", id: focus.network });
+      selectAndReveal({ kind: "network", id: focus.network }, body);
   }
   useEffect(() => {
     if (focusSeq !== null) root.current?.focus();
@@ -281,10 +294,10 @@ export function LdEditor({
       const networkIds = new Set(networksOf(result.body).map((n) => n.id));
       const [first] = result.select;
       if (first === undefined) select(null);
-      else if (networkIds.has(first)) select({ kind: "network", id: first });
-      else select({ kind: "elements", ids: result.select });
+      else if (networkIds.has(first)) selectAndReveal({ kind: "network", id: first }, result.body);
+      else selectAndReveal({ kind: "elements", ids: result.select }, result.body);
     },
-    [history, onHistoryChange, select],
+    [history, onHistoryChange, select, selectAndReveal],
   );
 
   /** Opens the operand editor over `field` of element `id`. */
@@ -523,14 +536,14 @@ export function LdEditor({
   /** The editor's keys besides its commands (src/keys/keymap.ts, scope "ld"); each says whether it acted. */
   const keyActions = (event: KeyboardEvent<HTMLDivElement>): Record<LdEditorKey, () => boolean> => ({
     "move-selection": () => {
-      select(navigate(body, layout, liveSelection, ARROWS[event.key]!));
+      selectAndReveal(navigate(body, layout, liveSelection, ARROWS[event.key]!), body);
       return true;
     },
     "extend-selection": () => {
       const focus = liveSelection?.kind === "elements" ? liveSelection.ids[liveSelection.ids.length - 1] : undefined;
       if (!anchor || !focus) return false;
       const next = extend(body, anchor, focus, ARROWS[event.key] as "left" | "right");
-      select({ kind: "elements", ids: ops.rangeIds(body, anchor, next) }, anchor);
+      selectAndReveal({ kind: "elements", ids: ops.rangeIds(body, anchor, next) }, body, anchor);
       return true;
     },
     "clear-selection": () => {
@@ -583,7 +596,6 @@ export function LdEditor({
     ];
   };
 
-  const reveal = selectedNetwork({ body, selection: liveSelection }) ?? null;
   const editorOverlay = editing ? (
     editing.kind === "operand" ? (
       <OperandEditor
