@@ -27,6 +27,7 @@ lint: $(VENV)/.installed $(FRONTEND_DEPS)
 	$(VENV)/bin/ruff check .
 	$(VENV)/bin/ruff format --check .
 	$(VENV)/bin/lint-imports
+	$(VENV)/bin/mypy
 	cd frontend && npm run --silent format:check
 	cd frontend && npm run lint -- --max-warnings 0
 

@@ -25,6 +25,8 @@ from ..model.diagnostics import Diagnostic
 TASK_ERROR = "ENGINE-TASKS"
 _EPSILON_MS = 1e-6
 DEFAULT_INTERVAL_MS = 10
+#: A task's time budget per scan unless configured (CODESYS's default watchdog time).
+DEFAULT_WATCHDOG_S = 0.1
 
 
 @dataclass
@@ -34,7 +36,7 @@ class Task:
     priority: int
     programs: list[str]
     order: int
-    watchdog_s: float = 1.0
+    watchdog_s: float = DEFAULT_WATCHDOG_S
     next_due: float = 0.0
     stopped: bool = False  # after a fault, until reset
 
@@ -78,13 +80,13 @@ def validate_tasks(program: ir.Program) -> list[Diagnostic]:
     return diagnostics
 
 
-def task_table(program: ir.Program, watchdog_s: float | dict[str, float] = 1.0) -> list[Task]:
+def task_table(program: ir.Program, watchdog_s: float | dict[str, float] = DEFAULT_WATCHDOG_S) -> list[Task]:
     """The tasks to schedule (validated program): the configured ones, else one 10 ms task with every PROGRAM."""
     specs = program.tasks or [
         ir.TaskSpec("DEFAULT", DEFAULT_INTERVAL_MS, 0, [n for n, p in program.pous.items() if p.kind == "program"])
     ]
     limits = {k.upper(): v for k, v in watchdog_s.items()} if isinstance(watchdog_s, dict) else {}
-    default = 1.0 if isinstance(watchdog_s, dict) else watchdog_s
+    default = DEFAULT_WATCHDOG_S if isinstance(watchdog_s, dict) else watchdog_s
     tasks = []
     for order, spec in enumerate(specs):
         limit = limits.get(spec.name.upper(), default)
@@ -159,6 +161,8 @@ class Pacer:
     slower than real time, or the driver stalled) the pacer skips ahead instead
     of racing to catch up, and counts it in ``overruns``. While the simulation
     is halted at a breakpoint nothing runs; afterwards time resumes from there.
+    ``interrupted`` (asked after every scan) makes ``poll`` return at once, keeping
+    the schedule: the driver has something to do between two scans.
     """
 
     def __init__(
@@ -169,10 +173,12 @@ class Pacer:
         max_lag_ms: float = 200.0,
         clock: Callable[[], float] = time.monotonic,
         idle_s: float = 0.05,
+        interrupted: Callable[[], bool] = lambda: False,
     ) -> None:
         if not speed > 0:
             raise ValueError("speed must be positive")
         self.sim, self.speed, self.max_lag_ms, self.clock, self.idle_s = sim, speed, max_lag_ms, clock, idle_s
+        self.interrupted = interrupted
         self.overruns = 0
         self._anchor: tuple[float, float] | None = (
             clock(),
@@ -199,6 +205,8 @@ class Pacer:
             if self.sim.halted:
                 self._anchor = None
                 return self.idle_s
+            if self.interrupted():
+                return 0.0
         return max(0.0, (self.sim.next_scan_time() - now) / 1000.0 / self.speed)
 
     def run(self, seconds: float, sleep: Callable[[float], None] = time.sleep) -> None:

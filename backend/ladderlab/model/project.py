@@ -69,6 +69,13 @@ class Task(BaseModel):
     interval: str = Field(default="T#10ms", description="IEC TIME literal, e.g. T#10ms.")
     priority: int = 0
     programs: list[str] = Field(default_factory=list, description="Program names, run in list order.")
+    watchdog_ms: int | None = Field(
+        default=None,
+        ge=1,
+        le=60_000,
+        description="The task's time budget per scan in ms (its scan's own running time); longer is a watchdog "
+        "fault. Null: the default of 100 ms (CODESYS's).",
+    )
 
 
 class Project(BaseModel):

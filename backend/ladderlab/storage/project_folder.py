@@ -50,7 +50,7 @@ def project_files(project: Project) -> dict[str, str]:
                 "format": project.format,
                 "name": project.name,
                 "pous": [p.name for p in project.pous],
-                "tasks": [t.model_dump(mode="json") for t in project.tasks],
+                "tasks": [t.model_dump(mode="json", exclude_none=True) for t in project.tasks],
             }
         ),
         TYPES_FILE: _text_file(project.types),

@@ -488,6 +488,10 @@ export interface Task {
    * Program names, run in list order.
    */
   programs?: string[];
+  /**
+   * The task's time budget per scan in ms (its scan's own running time); longer is a watchdog fault. Null: the default of 100 ms (CODESYS's).
+   */
+  watchdog_ms?: number | null;
 }
 /**
  * Body of ``POST /api/projects/{name}/rename``.

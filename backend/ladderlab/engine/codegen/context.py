@@ -65,7 +65,14 @@ class ProbeTable:
     group_count: int = 0
     constants: dict[int, object] = field(default_factory=dict)  # probes of constants: no store, the value is here
     deferred: list[int] = field(default_factory=list)  # read after the scan by ll_read_probes (codegen/deferred.py)
+    #: The variable each deferred probe reads, as a path below the program instance (``T1.Q``), so a monitor
+    #: can read a few of them without ``ll_read_probes`` reading them all.
+    deferred_paths: dict[int, str] = field(default_factory=dict)
     _index: dict[str, int] = field(default_factory=dict)
+
+    def index(self, element: str) -> int | None:
+        """The probe number of ``element`` (None: not probed)."""
+        return self._index.get(element)
 
     def probe(self, element: str, group: int, constant: object = UNSET) -> int:
         index = self._index.get(element)
