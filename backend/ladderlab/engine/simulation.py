@@ -25,8 +25,9 @@ one thread (see docs/runtime.md).
 from __future__ import annotations
 
 import time
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Callable, Generator, Iterable, Iterator
 from dataclasses import dataclass
+from typing import cast
 
 from ..iec.spelling import did_you_mean
 from ..ir import nodes as ir
@@ -336,11 +337,12 @@ class Simulation:
     def _call_frames(self) -> tuple[object, ...]:
         """The POU calls the halted scan is suspended in, outermost first: its generators (``yield from``
         chains one per call), without the chunk functions that hold parts of one POU's body."""
-        frames, frame = [], self._scan
+        frames: list[object] = []
+        frame = cast("Generator[object, None, None] | None", self._scan)  # the debug scan is a generator
         while frame is not None:
-            if not names.is_chunk_function(frame.gi_code.co_name):  # type: ignore[attr-defined]
+            if not names.is_chunk_function(frame.gi_code.co_name):
                 frames.append(frame)
-            frame = frame.gi_yieldfrom  # type: ignore[attr-defined]
+            frame = frame.gi_yieldfrom
         return tuple(frames)
 
     def _continue(self, granularity: str | None) -> Halt | None:

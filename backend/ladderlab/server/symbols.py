@@ -168,7 +168,8 @@ def _member_type(ty: t.Type, member: str) -> t.Type:
         return ty.fields[upper][1]
     if isinstance(ty, t.FbType) and ty.pou is not None:
         return ty.pou.symbols[upper].type
-    pin = next(p for p in (*ty.std.inputs, *ty.std.outputs) if p.name == upper)  # type: ignore[union-attr]
+    assert isinstance(ty, t.FbType) and ty.std is not None  # _walk found the member among the pins
+    pin = next(p for p in (*ty.std.inputs, *ty.std.outputs) if p.name == upper)
     return t.elementary(pin.type) or t.ERROR
 
 
