@@ -119,7 +119,8 @@ def page(server: str, chromium_path: str, browser_errors: BrowserErrors):
         browser = playwright.chromium.launch(executable_path=chromium_path, args=["--no-sandbox"])
         context = browser.new_context(viewport={"width": 1400, "height": 900})
         page = context.new_page()
-        page.set_default_timeout(10_000)
+        # Generous: the simulation runs in its own process and the shared 2-core machine is often busy.
+        page.set_default_timeout(20_000)
         page.on("pageerror", lambda error: browser_errors.record(f"page error: {error}"))
         page.on(
             "console",

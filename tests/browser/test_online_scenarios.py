@@ -127,6 +127,7 @@ def test_write_prepared_values_with_ctrl_f7_and_in_place(page, server):
     in the watch list is written in place."""
     open_main_online(page, server)
     element(page, "start").locator(".ld-hit").dblclick()
+    element(page, "start").locator(".ld-prepared").filter(has_text="<TRUE>").wait_for()
     page.keyboard.press("Control+F7")
     page.wait_for_function("() => document.querySelector('g.ld-coil[data-id=motor]')?.classList.contains('ld-on')")
     badge(page, "motor").filter(has_text="TRUE").wait_for()
@@ -149,6 +150,7 @@ def test_values_on_every_pin_and_the_instance_tree(page, server):
     watch list" on the box gives a tree of readable members; the Variables view lists Main's instance."""
     open_main_online(page, server)
     element(page, "start").locator(".ld-hit").dblclick()
+    element(page, "start").locator(".ld-prepared").filter(has_text="<TRUE>").wait_for()
     page.keyboard.press("Control+F7")
     pin_value(page, "ton", "in:IN").filter(has_text="TRUE").wait_for()
     assert pin_value(page, "ton", "in:PT").get_attribute("data-value") == "T#5s"

@@ -12,8 +12,14 @@ const isBool = (value: Value | undefined, type: string | undefined) =>
   typeof value === "boolean" || type?.toUpperCase() === "BOOL";
 import { onlineStore } from "./store";
 
-/** Commands by operand text; `pathOf` names its simulation path (null: nothing to do). */
-export function operandCommands(pathOf: (operand: string) => string | null): LdOnlineActions {
+/**
+ * Commands by operand text; `pathOf` names its simulation path (null: nothing to do), `declared` its
+ * declared type when known (so a BOOL toggles its prepared value before its first value arrives).
+ */
+export function operandCommands(
+  pathOf: (operand: string) => string | null,
+  declared: (operand: string) => string | undefined = () => undefined,
+): LdOnlineActions {
   const store = () => onlineStore.getState();
   const on = (operand: string, run: (path: string) => void) => {
     const p = pathOf(operand);
@@ -26,7 +32,7 @@ export function operandCommands(pathOf: (operand: string) => string | null): LdO
       const key = pathKey(p);
       const { monitor, prepared } = store();
       if (text !== undefined) store().prepare(p, parseValue(text));
-      else if (isBool(monitor.values[key], monitor.types[key]?.name))
+      else if (isBool(monitor.values[key], monitor.types[key]?.name ?? declared(operand)))
         store().prepare(p, !(prepared[key] ?? monitor.values[key]));
       else return false;
       return true;

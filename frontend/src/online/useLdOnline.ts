@@ -94,7 +94,10 @@ export function useLibraryLookup(library: readonly LibraryEntry[]): (call: strin
 
 /** The online commands on operand texts of a diagram showing `instance` (LD and FBD alike). */
 export function operandActions(instance: string, symbols: readonly SymbolInfo[]): LdOnlineActions {
-  return operandCommands((operand) => operandPath(operand, instance, symbols));
+  return operandCommands(
+    (operand) => operandPath(operand, instance, symbols),
+    (operand) => symbols.find((s) => s.name.toUpperCase() === operand.trim().toUpperCase())?.type,
+  );
 }
 
 /** Why a diagram is read-only in online mode (null offline). */

@@ -60,10 +60,13 @@ export function useStOnline(pou: Pou, body: string, scope: Scope): StOnline {
   // An element `a[i]` acts on the element `i` names when the command runs.
   const commands = useMemo(
     () =>
-      operandCommands((text) => {
-        const o = occurrences.find((c) => c.text === text);
-        return o ? concretePath(o, onlineStore.getState().monitor.values) : null;
-      }),
+      operandCommands(
+        (text) => {
+          const o = occurrences.find((c) => c.text === text);
+          return o ? concretePath(o, onlineStore.getState().monitor.values) : null;
+        },
+        (text) => occurrences.find((c) => c.text === text)?.type,
+      ),
     [occurrences],
   );
   const marks = useMemo(
