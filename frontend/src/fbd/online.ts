@@ -7,9 +7,16 @@
 import type { SymbolInfo } from "../generated/api";
 import { operandPath } from "../online/ldBinding";
 import { powerKey, type MonitorState } from "../online/monitor";
-import { bindBoxPins, pinPaths, pinValues, type PinBinding, type PinSource } from "../online/pinValues";
-import type { ElementSubscription, PowerState } from "../online/protocol";
-import { shownPath, type Prepared, type ValueShown } from "../online/shown";
+import {
+  bindBoxPins,
+  diagramBinding,
+  diagramValues,
+  type DiagramBinding,
+  type PinBinding,
+  type PinSource,
+} from "../online/pinValues";
+import type { PowerState } from "../online/protocol";
+import type { Prepared, ValueShown } from "../online/shown";
 import {
   findNode,
   kindOf,
@@ -61,15 +68,8 @@ export function nodeOfProbe(body: FbdBody, probe: string): string {
   return dot > 0 && findNode(body, probe.slice(0, dot)) ? probe.slice(0, dot) : probe;
 }
 
-export interface FbdBinding {
-  instance: string;
-  paths: string[];
-  elements: ElementSubscription[];
-  /** Upper-case operand text -> its path. */
-  pathOf: ReadonlyMap<string, string>;
-  /** Block id -> where each of its pins gets its value. */
-  pins: ReadonlyMap<string, readonly PinBinding[]>;
-}
+/** What an FBD view subscribes and how the values map back onto its nodes and blocks. */
+export type FbdBinding = DiagramBinding;
 
 /** A block's pins online: its FB instance's, or what the wires feed a function's inputs and its output probes. */
 function bindBlock(
@@ -131,7 +131,6 @@ export function bindFbd(
 ): FbdBinding {
   const pathOf = new Map<string, string>();
   const pins = new Map<string, PinBinding[]>();
-  const paths = new Set<string>();
   const ids: string[] = [];
   const path = (operand: string) => operandPath(operand, instance, symbols);
   for (const network of networksOf(body)) {
@@ -141,21 +140,10 @@ export function bindFbd(
       const operand = operandOf(node);
       const p = operand ? path(operand) : null;
       if (operand && p) pathOf.set(operand.toUpperCase(), p);
-      if (kindOf(node) === "block") {
-        const bound = bindBlock(node, network, lookup, symbols, path);
-        pins.set(node.id, bound);
-        for (const q of pinPaths(bound)) paths.add(q);
-      }
+      if (kindOf(node) === "block") pins.set(node.id, bindBlock(node, network, lookup, symbols, path));
     }
   }
-  for (const p of pathOf.values()) paths.add(p);
-  return {
-    instance,
-    paths: [...paths],
-    elements: ids.length ? [{ pou_instance: instance, ids }] : [],
-    pathOf,
-    pins,
-  };
+  return diagramBinding(instance, ids, pathOf, pins);
 }
 
 /**
@@ -178,14 +166,7 @@ export function fbdOnlineView(monitor: MonitorState, binding: FbdBinding, prepar
       if (state !== undefined) probes[id] = state;
     }
   }
-  const operands: Record<string, ValueShown> = {};
-  for (const [operand, path] of binding.pathOf) {
-    const shown = shownPath(monitor, path, prepared);
-    if (shown) operands[operand] = shown;
-  }
-  const pins: Record<string, Record<string, ValueShown>> = {};
-  for (const [block, bound] of binding.pins) pins[block] = pinValues(bound, monitor, binding.instance, prepared);
-  return { probes, operands, pins };
+  return { probes, ...diagramValues(monitor, binding, prepared) };
 }
 
 /** Whether a block ran in the last scan: any of its probes holds a value (none known: assume it did). */

@@ -6,9 +6,16 @@ import { walk, type Box, type LdBody, type LdElement } from "../ld/model";
 import { boxPins } from "../ld/pins";
 import type { OnlineView } from "../ld/view/types";
 import { pathKey, powerKey, type MonitorState } from "./monitor";
-import { bindBoxPins, pinPaths, pinProbes, pinValues, type PinBinding, type PinSource } from "./pinValues";
-import type { ElementSubscription } from "./protocol";
-import { shownPath, type Prepared, type ValueShown } from "./shown";
+import {
+  bindBoxPins,
+  diagramBinding,
+  diagramValues,
+  pinProbes,
+  type DiagramBinding,
+  type PinBinding,
+  type PinSource,
+} from "./pinValues";
+import type { Prepared } from "./shown";
 
 /** A variable operand: names with member/index access (`T1.Q`, `A[3]`); literals and addresses are not. */
 const VARIABLE = /^[A-Za-z_][A-Za-z0-9_]*(\.[A-Za-z_][A-Za-z0-9_]*|\[\s*\d+\s*\])*$/;
@@ -46,16 +53,8 @@ export function operandPath(operand: string, instance: string, symbols: readonly
   return pathKey(global ? text : `${instance}.${text}`);
 }
 
-export interface LdBinding {
-  instance: string;
-  /** Paths to subscribe, upper case, without repeats. */
-  paths: string[];
-  elements: ElementSubscription[];
-  /** Upper-case operand text -> its path. */
-  pathOf: ReadonlyMap<string, string>;
-  /** Box id -> where each of its pins gets its value. */
-  pins: ReadonlyMap<string, readonly PinBinding[]>;
-}
+/** What an LD view subscribes and how the values map back onto its operands and boxes. */
+export type LdBinding = DiagramBinding;
 
 /**
  * A box's pins online: an FB instance's from the instance, a function's outputs from their probes
@@ -89,7 +88,6 @@ export function bindLd(
   const pathOf = new Map<string, string>();
   const pins = new Map<string, PinBinding[]>();
   const ids: string[] = [];
-  const paths = new Set<string>();
   const path = (operand: string) => operandPath(operand, instance, symbols);
   for (const { network, element } of walk(body)) {
     if (networks && !networks.has(network)) continue;
@@ -101,18 +99,10 @@ export function bindLd(
     if (element.type === "box") {
       const bound = bindBox(element, library(element.call), path);
       pins.set(element.id, bound);
-      for (const p of pinPaths(bound)) paths.add(p);
       for (const probe of pinProbes(bound)) if (probe !== element.id) ids.push(probe);
     }
   }
-  for (const p of pathOf.values()) paths.add(p);
-  return {
-    instance,
-    paths: [...paths],
-    elements: ids.length ? [{ pou_instance: instance, ids }] : [],
-    pathOf,
-    pins,
-  };
+  return diagramBinding(instance, ids, pathOf, pins);
 }
 
 /** The diagram's online view of a binding: power and dimming by element id, values by operand and box pin. */
@@ -126,12 +116,5 @@ export function ldOnlineView(monitor: MonitorState, binding: LdBinding, prepared
       else if (typeof state === "boolean") power[id] = state;
     }
   }
-  const operands: Record<string, ValueShown> = {};
-  for (const [operand, path] of binding.pathOf) {
-    const shown = shownPath(monitor, path, prepared);
-    if (shown) operands[operand] = shown;
-  }
-  const pins: Record<string, Record<string, ValueShown>> = {};
-  for (const [box, bound] of binding.pins) pins[box] = pinValues(bound, monitor, binding.instance, prepared);
-  return { power, executed, operands, pins };
+  return { power, executed, ...diagramValues(monitor, binding, prepared) };
 }

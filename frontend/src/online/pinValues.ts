@@ -6,6 +6,7 @@
 // or for a generic pin (ANY_NUM...) the type of the inputs declared alike (ADD of REALs gives a REAL).
 import type { LibraryEntry } from "../generated/api";
 import { powerKey, type MonitorState } from "./monitor";
+import type { ElementSubscription } from "./protocol";
 import { preparedText, shownOf, shownPath, type Prepared, type ValueShown } from "./shown";
 
 /** Where one pin's value comes from online. */
@@ -109,4 +110,49 @@ export function pinValues(
     if (value) shown[pinKey(pin.side, pin.name)] = value;
   }
   return shown;
+}
+
+/** What a diagram (LD or FBD) subscribes for the networks it shows, and how the values map back. */
+export interface DiagramBinding {
+  instance: string;
+  /** Paths to subscribe, upper case, without repeats. */
+  paths: string[];
+  elements: ElementSubscription[];
+  /** Upper-case operand text -> its path. */
+  pathOf: ReadonlyMap<string, string>;
+  /** Box or block id -> where each of its pins gets its value. */
+  pins: ReadonlyMap<string, readonly PinBinding[]>;
+}
+
+/** The binding of what a diagram's networks in view name: element/probe ids, operands, box pins. */
+export function diagramBinding(
+  instance: string,
+  ids: readonly string[],
+  pathOf: ReadonlyMap<string, string>,
+  pins: ReadonlyMap<string, readonly PinBinding[]>,
+): DiagramBinding {
+  const paths = new Set([...pathOf.values(), ...[...pins.values()].flatMap(pinPaths)]);
+  return {
+    instance,
+    paths: [...paths],
+    elements: ids.length ? [{ pou_instance: instance, ids: [...ids] }] : [],
+    pathOf,
+    pins,
+  };
+}
+
+/** The values a diagram shows now: each operand's variable (by upper-case text) and every box pin (by box id). */
+export function diagramValues(
+  monitor: MonitorState,
+  binding: DiagramBinding,
+  prepared: Prepared = {},
+): { operands: Record<string, ValueShown>; pins: Record<string, Record<string, ValueShown>> } {
+  const operands: Record<string, ValueShown> = {};
+  for (const [operand, path] of binding.pathOf) {
+    const shown = shownPath(monitor, path, prepared);
+    if (shown) operands[operand] = shown;
+  }
+  const pins: Record<string, Record<string, ValueShown>> = {};
+  for (const [box, bound] of binding.pins) pins[box] = pinValues(bound, monitor, binding.instance, prepared);
+  return { operands, pins };
 }
