@@ -105,13 +105,21 @@ class BrowserErrors:
         return [text for text in self.seen if not any(p.search(text) for p in self.allowed)]
 
 
+@pytest.hookimpl(wrapper=True)
+def pytest_runtest_makereport(item, call):
+    """Keeps each phase's report on the test item, so the page fixture knows whether the test failed."""
+    report = yield
+    setattr(item, f"report_{report.when}", report)
+    return report
+
+
 @pytest.fixture
 def browser_errors() -> BrowserErrors:
     return BrowserErrors()
 
 
 @pytest.fixture
-def page(server: str, chromium_path: str, browser_errors: BrowserErrors):
+def page(server: str, chromium_path: str, browser_errors: BrowserErrors, request: pytest.FixtureRequest):
     from playwright.sync_api import sync_playwright
 
     ARTIFACTS.mkdir(exist_ok=True)
@@ -133,6 +141,9 @@ def page(server: str, chromium_path: str, browser_errors: BrowserErrors):
         try:
             yield page
         finally:
+            failed = getattr(request.node, "report_call", None)
+            if failed is not None and failed.failed:  # what the page showed when the test failed
+                page.screenshot(path=str(ARTIFACTS / f"{request.node.name}-failed.png"))
             context.close()
             browser.close()
         unexpected = browser_errors.unexpected()

@@ -49,10 +49,12 @@ def simulations(server: str) -> list[dict]:
 
 
 def open_main_online(page, server: str) -> None:
+    """Main online and running, its values shown (as a user sees them before acting on them)."""
     page.goto(server)
     open_pou(page, "motor", "Main")
     element(page, "motor").wait_for()
     go_online(page)
+    badge(page, "start").wait_for()
 
 
 def test_log_force_release_and_tab_switches_never_blank_the_page(page, server):

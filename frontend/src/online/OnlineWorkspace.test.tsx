@@ -254,11 +254,14 @@ describe("online LD in the app (issue 7 online mode)", () => {
     expect(screen.getByText(/name the instance of Pump to show/)).toBeTruthy();
     fireEvent.change(screen.getByLabelText("Instance of Pump"), { target: { value: "Main.P1" } });
     fireEvent.click(screen.getByRole("button", { name: "Show" }));
-    expect(socket.sent.at(-1)).toMatchObject({
-      type: "subscribe",
-      paths: ["MAIN.P1.OUT", "MAIN.P1.RUN"],
-      elements: [{ pou_instance: "MAIN.P1", ids: ["q1", "r1"] }],
-    });
+    // once Pump's symbols have arrived (its operands are then known as its own variables)
+    await waitFor(() =>
+      expect(socket.sent.at(-1)).toMatchObject({
+        type: "subscribe",
+        paths: ["MAIN.P1.OUT", "MAIN.P1.RUN"],
+        elements: [{ pou_instance: "MAIN.P1", ids: ["q1", "r1"] }],
+      }),
+    );
     socket.receive({
       type: "values",
       scan: 3,

@@ -19,9 +19,11 @@ describe("preparing a value (CODESYS double-click)", () => {
     expect(onlineStore.getState().prepared).toEqual({ "MAIN.START": false });
   });
 
-  it("knows a declared BOOL before its first value arrives", () => {
+  it("knows a declared BOOL before its first value arrives, or one the diagram says is a BOOL", () => {
     expect(commands.prepare("Start")).toBe(true);
     expect(onlineStore.getState().prepared).toEqual({ "MAIN.START": true });
+    expect(commands.prepare("Lamp", undefined, "BOOL")).toBe(true); // a coil's variable
+    expect(onlineStore.getState().prepared).toEqual({ "MAIN.START": true, "MAIN.LAMP": true });
   });
 
   it("asks for any other type's value, and prepares what was typed as the server reads it", () => {

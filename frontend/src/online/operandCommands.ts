@@ -26,13 +26,13 @@ export function operandCommands(
     if (p) run(p);
   };
   return {
-    prepare(operand, text) {
+    prepare(operand, text, type) {
       const p = pathOf(operand);
       if (!p) return true; // nothing to prepare (a literal): done
       const key = pathKey(p);
       const { monitor, prepared } = store();
       if (text !== undefined) store().prepare(p, parseValue(text));
-      else if (isBool(monitor.values[key], monitor.types[key]?.name ?? declared(operand)))
+      else if (isBool(monitor.values[key], monitor.types[key]?.name ?? type ?? declared(operand)))
         store().prepare(p, !(prepared[key] ?? monitor.values[key]));
       else return false;
       return true;

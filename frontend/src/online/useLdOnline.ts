@@ -43,10 +43,14 @@ export interface LdOnline {
   onVisibleChange(networks: readonly string[]): void;
 }
 
+/**
+ * `symbols` null: the POU's symbol table has not arrived, so its operands cannot be told apart as
+ * its own variables or globals yet; nothing is bound (no wrong paths) until it has.
+ */
 export function useLdOnline(
   pou: Pou,
   body: LdBody,
-  symbols: readonly SymbolInfo[],
+  symbols: readonly SymbolInfo[] | null,
   library: readonly LibraryEntry[],
 ): LdOnline {
   const phase = useOnline((s) => s.phase);
@@ -59,7 +63,7 @@ export function useLdOnline(
   const lookup = useLibraryLookup(library);
 
   const binding = useMemo(
-    () => (instance ? bindLd(body, instance, symbols, lookup, visible ?? undefined) : null),
+    () => (instance && symbols ? bindLd(body, instance, symbols, lookup, visible ?? undefined) : null),
     [body, instance, symbols, lookup, visible],
   );
 
@@ -77,7 +81,7 @@ export function useLdOnline(
   );
 
   const actions = useMemo(
-    () => (live && instance ? operandActions(instance, symbols) : undefined),
+    () => (live && instance && symbols ? operandActions(instance, symbols) : undefined),
     [live, instance, symbols],
   );
   const readOnly = onlineReadOnly(pou, live, instance);

@@ -33,6 +33,7 @@ import { debugStore, useDebug } from "../debug/store";
 import { ViewBoundary } from "./ViewBoundary";
 import { useAppKeys } from "./useAppKeys";
 import { ShortcutHelp } from "../keys/ShortcutHelp";
+import { keysOf } from "../keys/keymap";
 import { VariablesView } from "./VariablesView";
 import { keepSession, restoreSession, type SessionStores } from "./session";
 import { traceStore } from "../trace/store";
@@ -275,8 +276,8 @@ function OnlineActions({ pou }: { pou: Pou }) {
 function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
   const name = pou.name;
   const setLdHistory = useWorkspace((s) => s.setLdHistory);
-  const { library, symbols, diagnostics, focus, declare } = useDiagramPou(name);
-  const live = useLdOnline(pou, history.present, symbols, library);
+  const { library, symbols, symbolsLoaded, diagnostics, focus, declare } = useDiagramPou(name);
+  const live = useLdOnline(pou, history.present, symbolsLoaded ? symbols : null, library);
   const debugging = useLdDebugging(name, history.present);
   return (
     <LdEditor
@@ -617,7 +618,7 @@ export function WorkspaceView() {
           type="button"
           onClick={() => void save()}
           disabled={saving || changed.length === 0}
-          title="Save (Ctrl+S)"
+          title={`Save (${keysOf("app", "save")})`}
         >
           Save
         </button>

@@ -109,10 +109,10 @@ describe("FBD editor", () => {
       },
     );
     fireEvent.doubleClick(t.node("f").querySelector(".fbd-text")!);
-    expect(prepare).toHaveBeenCalledWith("flag");
+    expect(prepare).toHaveBeenCalledWith("flag", undefined, undefined);
     expect(screen.queryByRole("dialog")).toBeNull();
     fireEvent.doubleClick(screen.getByTestId("value-a"));
-    expect(prepare).toHaveBeenLastCalledWith("var1");
+    expect(prepare).toHaveBeenLastCalledWith("var1", undefined, undefined);
     act(() => {
       fireEvent.submit(screen.getByRole("dialog", { name: "Prepare a value for var1" }));
     }); // an empty value is not submitted

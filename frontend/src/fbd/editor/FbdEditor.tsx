@@ -414,13 +414,13 @@ export function FbdEditor({
             {
               id: "earlier",
               label: "Run earlier",
-              keys: "Alt+ArrowUp",
+              keys: keysOf("fbd", "run-earlier"),
               run: () => apply(moveInOrder(body, network, orders.get(network) ?? [], node.id, -1)),
             },
             {
               id: "later",
               label: "Run later",
-              keys: "Alt+ArrowDown",
+              keys: keysOf("fbd", "run-later"),
               run: () => apply(moveInOrder(body, network, orders.get(network) ?? [], node.id, 1)),
             },
           ];
@@ -429,20 +429,20 @@ export function FbdEditor({
           {
             id: "breakpoint",
             label: debug.elements.has(node.id) ? "Remove breakpoint" : "Set breakpoint",
-            keys: "Alt+click",
+            keys: keysOf("fbd", "toggle-breakpoint"),
             run: () => debug.toggle({ element: node.id }),
           },
         ]
       : [];
     const clip: MenuItem[] = [
-      { id: "copy", label: "Copy", keys: "Ctrl+C", run: () => clipboard.copy(false) },
+      { id: "copy", label: "Copy", keys: keysOf("fbd", "copy"), run: () => clipboard.copy(false) },
       ...(locked
         ? []
         : [
             {
               id: "delete",
               label: "Delete",
-              keys: "Delete",
+              keys: keysOf("fbd", "delete"),
               run: () => apply(ops.deleteNodes(body, selectedNodes.includes(node.id) ? selectedNodes : [node.id])),
             },
           ]),
@@ -498,8 +498,9 @@ export function FbdEditor({
   );
 
   /** Prepares a value for `operand` (CODESYS double-click): a BOOL toggles, others ask for the value. */
-  const prepare = (operand: string | null) => {
-    if (onlineActions && operand && !onlineActions.prepare(operand)) setValuePrompt({ operand, action: "prepare" });
+  const prepare = (operand: string | null, type?: string) => {
+    if (onlineActions && operand && !onlineActions.prepare(operand, undefined, type))
+      setValuePrompt({ operand, action: "prepare" });
   };
   /** The variable behind a block pin: the FB instance's pin, or the input node wired to it. */
   const pinOperand = (block: Block, side: "in" | "out", pin: string): string | null => {
@@ -533,7 +534,12 @@ export function FbdEditor({
     },
     pinMenu,
     valueDoubleClick: (node) => prepare(operandOf(node)),
-    pinDoubleClick: (node, side, pin) => prepare(pinOperand(node as Block, side, pin)),
+    pinDoubleClick: (node, side, pin) => {
+      const network = findNode(body, node.id)?.network;
+      const pins = network ? nodePins(node, network, lookup, symbols) : null;
+      const type = (side === "in" ? pins?.inputs : pins?.outputs)?.find((p) => p.name === pin)?.type;
+      prepare(pinOperand(node as Block, side, pin), type);
+    },
   };
 
   const onSelectChanges = useCallback(

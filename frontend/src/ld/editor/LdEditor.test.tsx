@@ -415,7 +415,11 @@ describe("online commands (issue 7 online mode)", () => {
     const t = setup(motorMain, { readOnly: "Go offline to edit", onlineActions });
     fireEvent.doubleClick(t.hit("start"));
     fireEvent.doubleClick(t.hit("motor"));
-    expect(onlineActions.prepare.mock.calls).toEqual([["Start"], ["Motor"]]);
+    // a contact's and a coil's variable is a BOOL: the editor says so, for before its first value arrives
+    expect(onlineActions.prepare.mock.calls).toEqual([
+      ["Start", undefined, "BOOL"],
+      ["Motor", undefined, "BOOL"],
+    ]);
     expect(screen.queryByRole("combobox")).toBeNull();
     expect(screen.queryByRole("dialog")).toBeNull();
     expect(t.current()).toBe(motorMain);
@@ -431,9 +435,9 @@ describe("online commands (issue 7 online mode)", () => {
     };
     const t = setup(motorMain, { readOnly: "Go offline to edit", onlineActions, online });
     fireEvent.doubleClick(t.editor.querySelector('[data-id="ton"] [data-pin-value="in:PT"] text')!);
-    expect(onlineActions.prepare).toHaveBeenLastCalledWith("RunTimer.PT");
+    expect(onlineActions.prepare).toHaveBeenLastCalledWith("RunTimer.PT", undefined, "TIME");
     fireEvent.doubleClick(t.editor.querySelector('[data-id="ctu"] [data-pin-value="out:CV"] text')!);
-    expect(onlineActions.prepare).toHaveBeenLastCalledWith("StartCounter.CV");
+    expect(onlineActions.prepare).toHaveBeenLastCalledWith("StartCounter.CV", undefined, "INT");
     fireEvent.change(
       within(screen.getByRole("dialog", { name: "Prepare a value for StartCounter.CV" })).getByLabelText("Value"),
       {

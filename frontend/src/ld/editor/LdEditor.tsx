@@ -41,7 +41,7 @@ import { EditorNotices } from "./EditorNotices";
 import { clipboardActions, type LastClip } from "./systemClipboard";
 import { OperandValuePrompt, type ValueRequest } from "./ValuePrompt";
 import { onlineOperandItems } from "../../online/operandCommands";
-import { commandsFor } from "../../keys/keymap";
+import { commandsFor, keysOf } from "../../keys/keymap";
 import { ShortcutHelp } from "../../keys/ShortcutHelp";
 import "../ld.css";
 
@@ -79,9 +79,10 @@ export interface LdDebugging {
 export interface LdOnlineActions {
   /**
    * Prepares a value (double-click, CODESYS): `text` when given, else a BOOL's prepared value toggles;
-   * false when the variable is not a BOOL and a value must be asked for.
+   * false when the variable is not a BOOL and a value must be asked for. `type`: what the diagram
+   * knows of it (a contact's variable is a BOOL), for before its first value arrives.
    */
-  prepare(operand: string, text?: string): boolean;
+  prepare(operand: string, text?: string, type?: string): boolean;
   write(operand: string, text: string): void;
   force(operand: string, value: boolean | string): void;
   unforce(operand: string): void;
@@ -174,26 +175,31 @@ function variableOf(body: LdBody, id: string): string | null {
 }
 
 /**
- * The variable a double-click online prepares a value for: a contact's or coil's, a compare's left
- * side, or at a box pin's value (`pin`: its key, `in:PT`) the FB instance's pin or the pin's variable.
+ * The variable a double-click online prepares a value for, with its type when the diagram knows it:
+ * a contact's or coil's (a BOOL), a compare's left side, or at a box pin's value (`pin`: its key,
+ * `in:PT`) the FB instance's pin or the pin's variable (the pin's declared type).
  */
 export function valueOperand(
   body: LdBody,
   id: string,
   pin: string | null,
   library: (call: string) => LibraryEntry | undefined,
-): string | null {
+): { operand: string; type?: string } | null {
   const e = locate(body, id)?.element;
-  if (e?.type !== "box" || !pin) return variableOf(body, id);
+  if (e?.type !== "box" || !pin) {
+    const operand = variableOf(body, id);
+    return operand ? { operand, type: e?.type === "contact" || e?.type === "coil" ? "BOOL" : undefined } : null;
+  }
   const [side, name] = pin.split(":") as ["in" | "out", string];
   const entry = library(e.call);
   const declared = entry
-    ? [...entry.inputs, ...entry.in_outs, ...entry.outputs].some((p) => p.name.toUpperCase() === name)
-    : false;
-  if (entry?.kind === "function_block" && e.instance?.trim() && declared) return `${e.instance.trim()}.${name}`;
+    ? [...entry.inputs, ...entry.in_outs, ...entry.outputs].find((p) => p.name.toUpperCase() === name)
+    : undefined;
+  if (entry?.kind === "function_block" && e.instance?.trim() && declared)
+    return { operand: `${e.instance.trim()}.${name}`, type: declared.type };
   const pins = side === "in" ? (e.inputs ?? {}) : (e.outputs ?? {});
   const operand = Object.entries(pins).find(([n]) => n.toUpperCase() === name)?.[1];
-  return typeof operand === "string" && operand.trim() ? operand.trim() : null;
+  return typeof operand === "string" && operand.trim() ? { operand: operand.trim(), type: declared?.type } : null;
 }
 
 const fieldLabel = (field: OperandField) =>
@@ -500,8 +506,9 @@ export function LdEditor({
     onDoubleClick: (target, event) => {
       if (onlineActions && target.kind === "element") {
         const pin = (event.target as Element).closest?.("[data-pin-value]")?.getAttribute("data-pin-value");
-        const operand = valueOperand(body, target.id, pin ?? null, lookup);
-        if (operand && !onlineActions.prepare(operand)) setValuePrompt({ operand, action: "prepare" });
+        const value = valueOperand(body, target.id, pin ?? null, lookup);
+        if (value && !onlineActions.prepare(value.operand, undefined, value.type))
+          setValuePrompt({ operand: value.operand, action: "prepare" });
         return;
       }
       if (readOnly) return;
@@ -582,7 +589,7 @@ export function LdEditor({
             {
               id: "toggle-breakpoint",
               label: "element" in target ? "Toggle breakpoint on element" : "Toggle breakpoint on network",
-              keys: "F9",
+              keys: keysOf("ld", "toggle-breakpoint"),
               run: () => debugging.toggle(target),
             },
           ]
