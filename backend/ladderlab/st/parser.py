@@ -23,11 +23,17 @@ from ..model.diagnostics import Diagnostic
 from . import ast
 from .comments import attach_comments, blank_nested_comments
 from .errors import describe_unexpected, last_token, would_accept
+from .nesting import too_deep
 from .quick_decls import quick_declarations
 from .transformer import AstBuilder, StSyntaxError
 
 GRAMMAR = pathlib.Path(__file__).with_name("iec61131.lark")
 _STARTS = ["start_source", "start_pou", "start_decls", "start_stmts", "start_expr"]
+# Test files get a parser of their own from the same grammar: built from start_tests alone, its tables are
+# the only ones where the test keywords (END_TEST, MOCK ...) may follow a statement. (One LALR table for
+# all starts would merge them into the lookaheads of statements everywhere: ``x := 1; mock := 2;`` in a
+# program would then read ``mock`` as the keyword.)
+_TEST_STARTS = ["start_tests"]
 _MAX_ERRORS_PER_UNIT = 25
 _END_KEYWORDS = {"END_IF", "END_CASE", "END_FOR", "END_WHILE", "END_REPEAT"}
 
@@ -63,6 +69,10 @@ _SOFT_KEYWORDS = {
     "NOT",
     "MOD",
 }
+# Keywords of test files only (start_tests): names like ``test`` or ``setup`` stay free in programs.
+TEST_KEYWORDS = frozenset(
+    {"TEST", "END_TEST", "SETUP", "END_SETUP", "TEARDOWN", "END_TEARDOWN", "MOCK", "MOCK_FUNCTION", "RETURNS"}
+)
 
 
 @functools.cache
@@ -72,13 +82,13 @@ def _keywords() -> frozenset[str]:
 
 
 @functools.cache
-def _parser() -> Lark:
-    reserved = _keywords() - {"TRUE", "FALSE"} - _SOFT_KEYWORDS
+def _parser(tests: bool = False) -> Lark:
+    reserved = _keywords() - {"TRUE", "FALSE"} - _SOFT_KEYWORDS - TEST_KEYWORDS
     return Lark(
         GRAMMAR.read_text(encoding="utf-8"),
         parser="lalr",
         lexer="contextual",
-        start=_STARTS,
+        start=_TEST_STARTS if tests else _STARTS,
         transformer=AstBuilder(reserved),
         maybe_placeholders=True,
         cache=False,
@@ -97,7 +107,7 @@ def parse_source(text: str, *, file: str | None = None, nested_comments: bool = 
     result = _run(prepared, "start_source", file)
     if result.ast is not None:
         _name_pous(result)
-        return _finish(result, text)
+        return _finish(result, text, file)
     items: list[Any] = []
     diagnostics: list[Diagnostic] = []
     for unit in split_units(prepared):
@@ -108,12 +118,12 @@ def parse_source(text: str, *, file: str | None = None, nested_comments: bool = 
             items += part.ast.items
     if not diagnostics:  # the split hid the problem (e.g. text outside any unit): keep the whole-file report
         diagnostics = result.diagnostics
-    return _finish(ParseResult(ast.Source(items, ast.NO_SPAN), diagnostics), text)
+    return _finish(ParseResult(ast.Source(items, ast.NO_SPAN), diagnostics), text, file)
 
 
 def parse_pou(text: str, *, file: str | None = None, nested_comments: bool = False) -> ParseResult:
     """Exactly one PROGRAM, FUNCTION_BLOCK or FUNCTION."""
-    return _finish(_run(_prepare(text, nested_comments), "start_pou", file), text)
+    return _finish(_run(_prepare(text, nested_comments), "start_pou", file), text, file)
 
 
 def parse_declarations(
@@ -125,21 +135,27 @@ def parse_declarations(
     """
     prepared = _prepare(text, nested_comments)
     quick = quick_declarations(prepared, _keywords())
-    return _finish(ParseResult(quick) if quick is not None else _run(prepared, "start_decls", file, pou=pou), text)
+    parsed = ParseResult(quick) if quick is not None else _run(prepared, "start_decls", file, pou=pou)
+    return _finish(parsed, text, file, pou)
 
 
 def parse_statements(
     text: str, *, file: str | None = None, nested_comments: bool = False, pou: str | None = None
 ) -> ParseResult:
     """A statement list (an ST POU body): ``list[Stmt]``."""
-    return _finish(_run(_prepare(text, nested_comments), "start_stmts", file, pou=pou), text)
+    return _finish(_run(_prepare(text, nested_comments), "start_stmts", file, pou=pou), text, file, pou)
 
 
 def parse_expression(
     text: str, *, file: str | None = None, nested_comments: bool = False, pou: str | None = None
 ) -> ParseResult:
     """One operand or expression, e.g. an LD contact's ``T1.Q`` or a pin's ``arr[i] + 1``."""
-    return _finish(_run(_prepare(text, nested_comments), "start_expr", file, pou=pou), text)
+    return _finish(_run(_prepare(text, nested_comments), "start_expr", file, pou=pou), text, file, pou)
+
+
+def parse_tests(text: str, *, file: str | None = None, nested_comments: bool = False) -> ParseResult:
+    """A test file (``tests/<name>.st``): SETUP, TEARDOWN and TEST blocks (``ast.TestFile``, docs/testing.md)."""
+    return _finish(_run(_prepare(text, nested_comments), "start_tests", file), text)
 
 
 def _name_pous(result: ParseResult) -> None:
@@ -154,17 +170,26 @@ def _prepare(text: str, nested_comments: bool) -> str:
     return blank_nested_comments(text) if nested_comments else text
 
 
-def _finish(result: ParseResult, original: str) -> ParseResult:
+def _finish(result: ParseResult, original: str, file: str | None = None, pou: str | None = None) -> ParseResult:
+    if result.ast is not None and len(original) >= _NESTING_NEEDS:
+        deep = too_deep(result.ast)
+        if deep is not None:  # nothing after the parser may meet nesting beyond the limits (st/nesting.py)
+            message, span = deep
+            result.diagnostics.append(_diagnostic(message, span, file, pou, code="ST-TOO-DEEP"))
+            result.ast = None
     if result.ast is not None:
         attach_comments(result.ast, original)
     return result
+
+
+_NESTING_NEEDS = 100  # characters: a shorter text cannot nest anywhere near the limits
 
 
 def _run(text: str, start: str, file: str | None, pou: str | None = None) -> ParseResult:
     diagnostics: list[Diagnostic] = []
     report = _Reporter(diagnostics, file, pou)
     try:
-        tree = _parser().parse(text, start=start, on_error=report.recover)
+        tree = _parser(start in _TEST_STARTS).parse(text, start=start, on_error=report.recover)
     except UnexpectedInput as error:
         if not report.seen(error):
             report.add(error)

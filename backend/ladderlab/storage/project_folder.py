@@ -9,6 +9,9 @@ Layout::
     pous/<name>.ld.json / pous/<name>.fbd.json   graphical POUs
     pous/<name>.st.json ST POUs whose text cannot be split back exactly (e.g. a VAR block
                         without END_VAR while the user is still typing); never loses a character
+    tests/<name>.st     unit test files (docs/testing.md), as typed
+    tests/hidden/       a teacher's hidden test files: not part of the model, kept as they are by saves,
+                        read by ``hidden_tests`` for ``ladderlab test --grade``
 
 JSON is pretty-printed with sorted keys so an unchanged POU gives an unchanged file.
 """
@@ -17,13 +20,15 @@ from __future__ import annotations
 
 import hashlib
 import json
+import os
 from pathlib import Path
 from typing import Any
 
 from pydantic import ValidationError
 
-from ..model import Diagnostic, Pou, Project
-from .errors import ProjectLoadError, validation_diagnostics
+from ..model import Diagnostic, Pou, Project, TestFile
+from ..model.names import test_file_name_problem
+from .errors import ProjectLoadError, json_text_problem, validation_diagnostics
 from .st_text import StTextError, compose_pou_text, parse_pou_text, round_trips
 
 PROJECT_FILE = "project.json"
@@ -31,6 +36,9 @@ TYPES_FILE = "types.st"
 GLOBALS_FILE = "globals.st"
 POUS_DIR = "pous"
 POU_SUFFIXES = (".st", ".st.json", ".ld.json", ".fbd.json")
+TESTS_DIR = "tests"
+HIDDEN_TESTS_DIR = "tests/hidden"
+TEST_SUFFIX = ".st"
 
 
 def dump_json(data: Any) -> str:
@@ -58,7 +66,13 @@ def project_files(project: Project) -> dict[str, str]:
     }
     for pou in project.pous:
         files.update([pou_file(pou)])
+    for test in project.tests:
+        files[test_path(test.name)] = _text_file(test.text)
     return files
+
+
+def test_path(name: str) -> str:
+    return f"{TESTS_DIR}/{name}{TEST_SUFFIX}"
 
 
 def pou_file(pou: Pou) -> tuple[str, str]:
@@ -75,10 +89,34 @@ def revision_of(project: Project) -> str:
     return hashlib.sha256(canonical.encode()).hexdigest()[:16]
 
 
+def is_project_file(rel: str) -> bool:
+    """Whether ``rel`` (``/``-separated) names a file a project folder may hold: saves write and delete only these."""
+    if rel in (PROJECT_FILE, TYPES_FILE, GLOBALS_FILE):
+        return True
+    folder, _, name = rel.partition("/")
+    if folder == TESTS_DIR:  # tests/<name>.st; never tests/hidden/ (a teacher's files, not the model's)
+        return name.endswith(TEST_SUFFIX) and test_file_name_problem(name[: -len(TEST_SUFFIX)]) is None
+    return (
+        folder == POUS_DIR
+        and name.endswith(POU_SUFFIXES)
+        and not name.startswith(".")
+        and "/" not in name
+        and "\\" not in name
+        and name not in (".", "..")
+    )
+
+
 def read_project_folder(folder: Path) -> Project:
-    """Load a project folder; raises ProjectLoadError naming every bad file and JSON path."""
+    """Load a project folder; raises ProjectLoadError naming every bad file and JSON path.
+
+    A symbolic link that leads out of the folder is refused (a project someone sent must not make
+    LadderLab show or overwrite files elsewhere); links within the folder are followed."""
     problems: list[Diagnostic] = []
-    meta = _read_json(folder / PROJECT_FILE, PROJECT_FILE, problems)
+    if not _inside(folder, folder / POUS_DIR):
+        raise ProjectLoadError([_outside(POUS_DIR)])
+    meta = _read_json(folder / PROJECT_FILE, PROJECT_FILE, problems) if _inside(folder, folder / PROJECT_FILE) else None
+    if meta is None and not problems:
+        problems.append(_outside(PROJECT_FILE))
     if meta is None:
         raise ProjectLoadError(problems)
     if not isinstance(meta, dict):
@@ -103,8 +141,8 @@ def read_project_folder(folder: Path) -> Project:
         "name": meta.get("name"),
         "format": meta.get("format"),
         "tasks": meta.get("tasks", []),
-        "types": _read_text(folder / TYPES_FILE),
-        "globals": _read_text(folder / GLOBALS_FILE),
+        "types": _read_text(folder, TYPES_FILE, problems),
+        "globals": _read_text(folder, GLOBALS_FILE, problems),
     }
     project = None
     try:
@@ -115,7 +153,38 @@ def read_project_folder(folder: Path) -> Project:
         raise ProjectLoadError(problems)
     assert project is not None
     project.pous = pous
+    project.tests = read_tests(folder / TESTS_DIR, TESTS_DIR, problems)
+    if problems:
+        raise ProjectLoadError(problems)
     return project
+
+
+def read_tests(folder: Path, rel_dir: str, problems: list[Diagnostic] | None = None) -> list[TestFile]:
+    """The test files of one folder (``tests`` or ``tests/hidden``), by name; unreadable ones are problems."""
+    found: list[TestFile] = []
+    if not folder.is_dir():
+        return found
+    for path in sorted(folder.iterdir()):
+        if not path.is_file() or not path.name.endswith(TEST_SUFFIX) or path.name.startswith("."):
+            continue
+        name = path.name[: -len(TEST_SUFFIX)]
+        rel = f"{rel_dir}/{path.name}"
+        problem = test_file_name_problem(name)
+        try:
+            text = _read_exact(path)
+        except UnicodeDecodeError as err:
+            problem = f"not UTF-8 text: {err.reason}"
+        if problem:
+            if problems is not None:
+                problems.append(Diagnostic(code="BAD-FILE", file=rel, message=f"cannot read this test file: {problem}"))
+            continue
+        found.append(TestFile(name=name, text=text))
+    return found
+
+
+def hidden_tests(folder: Path) -> list[TestFile]:
+    """A teacher's hidden test files of a project folder (``tests/hidden/<name>.st``)."""
+    return read_tests(folder / HIDDEN_TESTS_DIR, HIDDEN_TESTS_DIR)
 
 
 def _pou_names(folder: Path, order: list[str]) -> list[str]:
@@ -124,7 +193,7 @@ def _pou_names(folder: Path, order: list[str]) -> list[str]:
     known = {n.upper() for n in names}
     pous_dir = folder / POUS_DIR
     if pous_dir.is_dir():
-        for path in sorted(pous_dir.iterdir()):
+        for path in sorted(pous_dir.iterdir(), key=lambda p: p.name):
             name = _pou_name_of(path.name)
             if name and name.upper() not in known:
                 names.append(name)
@@ -155,6 +224,9 @@ def _read_pou(folder: Path, name: str, problems: list[Diagnostic]) -> Pou | None
         return None
     path = paths[0]
     rel = f"{POUS_DIR}/{path.name}"
+    if not _inside(folder, path):
+        problems.append(_outside(rel, name))
+        return None
     if path.name.endswith(".json"):
         data = _read_json(path, rel, problems)
         if data is None:
@@ -201,8 +273,34 @@ def _read_pou(folder: Path, name: str, problems: list[Diagnostic]) -> Pou | None
     return pou
 
 
-def _read_text(path: Path) -> str:
-    return _read_exact(path) if path.is_file() else ""
+def _read_text(folder: Path, rel: str, problems: list[Diagnostic]) -> str:
+    path = folder / rel
+    if not path.is_file():
+        return ""
+    if not _inside(folder, path):
+        problems.append(_outside(rel))
+        return ""
+    try:
+        return _read_exact(path)
+    except UnicodeDecodeError as err:
+        problems.append(Diagnostic(code="BAD-FILE", file=rel, message=f"not UTF-8 text: {err.reason}"))
+        return ""
+
+
+def _inside(folder: Path, path: Path) -> bool:
+    """Whether ``path`` (following links) stays inside ``folder``; a path that does not exist does."""
+    if not os.path.lexists(path):
+        return True
+    return path.resolve().is_relative_to(folder.resolve())
+
+
+def _outside(rel: str, pou: str | None = None) -> Diagnostic:
+    return Diagnostic(
+        code="BAD-FILE",
+        file=rel,
+        pou=pou,
+        message="is a symbolic link that leads out of the project folder; LadderLab does not follow it",
+    )
 
 
 def _read_exact(path: Path) -> str:
@@ -218,6 +316,10 @@ def _read_json(path: Path, rel: str, problems: list[Diagnostic]) -> Any:
         return None
     except UnicodeDecodeError as err:
         problems.append(Diagnostic(code="BAD-FILE", file=rel, message=f"not UTF-8 text: {err.reason}"))
+        return None
+    refused = json_text_problem(text, rel)
+    if refused is not None:
+        problems.append(refused)
         return None
     try:
         return json.loads(text)

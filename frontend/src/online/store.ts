@@ -5,7 +5,7 @@
 import { useStore } from "zustand";
 import { createStore, type StoreApi } from "zustand/vanilla";
 import { ApiError } from "../api/client";
-import type { Diagnostic } from "../generated/api";
+import type { Diagnostic, SimulationInfo } from "../generated/api";
 import { monitorUrl, simulationApi, type SimulationApi } from "./api";
 import {
   applyMessage,
@@ -73,8 +73,11 @@ export interface OnlineData {
 }
 
 export interface OnlineActions {
-  /** Compiles the saved project and connects; an open simulation is closed first. */
-  compile(project: string): Promise<void>;
+  /**
+   * Compiles the saved project and connects; an open simulation is closed first. `create` makes the
+   * simulation another way (the Tests panel: a failed test's last state).
+   */
+  compile(project: string, create?: () => Promise<SimulationInfo>): Promise<void>;
   /**
    * Connects to simulation `id` of `project` if it still runs on the server (after a page reload);
    * false when it is gone or belongs to another project.
@@ -281,11 +284,11 @@ export function createOnlineStore(
       instances: {},
       connection: 0,
 
-      async compile(project) {
+      async compile(project, create = () => api.createSimulation(project)) {
         if (get().simulation) await get().goOffline();
         set({ phase: "compiling", project, error: null, compileDiagnostics: [] });
         try {
-          const info = await api.createSimulation(project);
+          const info = await create();
           if (get().phase !== "compiling") {
             void api.deleteSimulation(info.id).catch(() => undefined); // went offline meanwhile
             return;

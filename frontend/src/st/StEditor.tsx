@@ -21,6 +21,7 @@ import type { Diagnostic } from "../generated/api";
 import { stBlocks } from "./blocks";
 import { setBreakpointLines, setHaltedLine, stDebugging } from "./breakpoints";
 import { stCompletionSource, type StCompletions } from "./completion";
+import { setCoverageLines, stCoverage } from "./coverage";
 import { setInlineMarks, stInlineValues, type InlineMark, type StOnlineView } from "./inlineValues";
 import { stLanguage } from "./language";
 import { stKeys } from "./keys";
@@ -40,9 +41,14 @@ export interface StEditorProps {
   debug?: { breakpoints: readonly number[]; halted: number | null; onToggle(line: number): void };
   /** Online (the body only): values shown after their variables (none when hidden), hover and right-click. */
   online?: StOnlineView & { marks: readonly InlineMark[] };
+  /** Lines the last test run with coverage never executed (tinted). */
+  coverage?: readonly number[];
+  /** A line to show and put the cursor on (a test failure or diagnostic was clicked); `seq` repeats a jump. */
+  focusLine?: { line: number; seq: number } | null;
 }
 
 const NO_MARKS: readonly InlineMark[] = [];
+const NO_LINES: readonly number[] = [];
 
 export function StEditor({
   text,
@@ -54,6 +60,8 @@ export function StEditor({
   label,
   debug,
   online,
+  coverage = NO_LINES,
+  focusLine,
 }: StEditorProps) {
   const host = useRef<HTMLDivElement>(null);
   const view = useRef<EditorView | null>(null);
@@ -88,6 +96,7 @@ export function StEditor({
           lintGutter(),
           debugging ? stDebugging((line) => latest.current.debug?.onToggle(line)) : [],
           stInlineValues(() => latest.current.online),
+          stCoverage,
           keymap.of([
             ...stKeys(debugging ? (line) => latest.current.debug?.onToggle(line) : null),
             ...closeBracketsKeymap,
@@ -140,6 +149,21 @@ export function StEditor({
   useEffect(() => {
     view.current?.dispatch({ effects: setInlineMarks.of(marks) });
   }, [marks]);
+
+  useEffect(() => {
+    view.current?.dispatch({ effects: setCoverageLines.of(coverage) });
+  }, [coverage]);
+
+  const focusSeq = focusLine?.seq;
+  useEffect(() => {
+    const v = view.current;
+    if (!v || !focusLine || focusLine.line < 1 || focusLine.line > v.state.doc.lines) return;
+    const at = v.state.doc.line(focusLine.line).from;
+    v.dispatch({ selection: { anchor: at }, effects: EditorView.scrollIntoView(at, { y: "center" }) });
+    v.focus();
+    // Only a new request moves the cursor (seq), not a re-render with the same one.
+    // eslint-disable-next-line react-hooks/exhaustive-deps
+  }, [focusSeq]);
 
   useEffect(() => {
     view.current?.dispatch({ effects: editable.current.reconfigure(EditorState.readOnly.of(readOnly !== null)) });

@@ -68,6 +68,8 @@ export interface FbdDebug {
   elements: ReadonlySet<string>;
   halted: { network?: string | null; element?: string | null } | null;
   toggle(bp: { network: string } | { element: string }): void;
+  /** Nodes the last test run with coverage never executed or never energised (tinted). */
+  coverage?: ReadonlyMap<string, "never-executed" | "never-energised">;
 }
 
 export interface FbdEditorProps {
@@ -492,6 +494,7 @@ export function FbdEditor({
         breakpoint: debug?.elements.has(node.id) ?? false,
         halted: debug?.halted?.element === node.id,
         fb: kindOf(node) === "block" && lookup((node as Block).call)?.kind === "function_block",
+        coverage: debug?.coverage?.get(node.id),
       };
     },
     [orders, lookup, symbols, byElement, debug],

@@ -160,6 +160,7 @@ export function FbdNodeView({ data, selected }: NodeProps<FbdFlowNode>) {
     view.diagnostics.length ? "fbd-error" : "",
     view.halted ? "fbd-halted" : "",
     forced ? "fbd-forced" : "",
+    view.coverage ? `fbd-coverage-${view.coverage}` : "",
   ].filter(Boolean);
   const common = { className: classes.join(" "), "data-node": node.id, title: titleOf(view) };
 

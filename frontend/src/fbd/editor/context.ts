@@ -14,6 +14,8 @@ export interface NodeView {
   halted: boolean;
   /** A function block: the instance name is shown (and edited) above it. */
   fb: boolean;
+  /** The last test run with coverage never executed or never energised it. */
+  coverage?: "never-executed" | "never-energised";
 }
 
 export interface FbdEditorApi {

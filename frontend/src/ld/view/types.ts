@@ -30,6 +30,8 @@ export interface DebugMarks {
   networks?: Readonly<Record<string, boolean>>;
   elements?: Readonly<Record<string, boolean>>;
   halted?: { network: string; element: string | null } | null;
+  /** Elements the last test run with coverage never executed or never energised (tinted). */
+  coverage?: ReadonlyMap<string, "never-executed" | "never-energised">;
 }
 
 /** Something the user can point at in the diagram. */
