@@ -29,8 +29,9 @@ one thread (see docs/runtime.md).
 from __future__ import annotations
 
 import time
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Callable, Generator, Iterable, Iterator
 from dataclasses import dataclass, replace
+from typing import cast
 
 from ..iec.spelling import did_you_mean
 from ..ir import nodes as ir
@@ -41,7 +42,7 @@ from .codegen.faults import Fault, make_fault
 from .codegen.runtime import UNSET, Watchdog
 from .codegen.scope import global_owner
 from .compile import CompiledProgram, compile_program
-from .debug import Debugger, Halt
+from .debug import STEP_ENDS, Debugger, Halt
 from .doubles import Mocks
 from .inputs import AppliedInput, Injection, InputEvent, InputRefused, immediate, injection
 from .paths import Location, LocationReader, Resolver, Roots, UnknownPath, coerce_for, leaves, plain
@@ -426,16 +427,33 @@ class Simulation:
         return self._continue(None)
 
     def step(self, granularity: str = "statement") -> Halt | None:
-        """Run to the next pause point of this granularity (statement | network | cycle).
+        """Run to the next pause point of this granularity: statement (into calls) | over | out | network | cycle.
 
-        Halted: continue the current scan. Not halted: start the next scan and
-        stop at its first such point. Returns the new halt (None: the scan ended)."""
+        Halted: continue the current scan (``over`` passes over the calls the halted POU makes,
+        ``out`` runs until its caller goes on; a breakpoint on the way halts first). Not halted:
+        start the next scan and stop at its first such point. Returns the new halt (None: the scan ended)."""
         debugger = self._debugging()
         debugger.arm(granularity)
         if self.halted is None:
             self.cycle(1)
             return self.halted
-        return self._continue(granularity)
+        ends = STEP_ENDS.get(granularity)
+        start = self._call_frames()
+        halt = self._continue(granularity)
+        while halt is not None and ends is not None and halt.reason == "step" and not ends(self._call_frames(), start):
+            halt = self._continue(granularity)
+        return halt
+
+    def _call_frames(self) -> tuple[object, ...]:
+        """The POU calls the halted scan is suspended in, outermost first: its generators (``yield from``
+        chains one per call), without the chunk functions that hold parts of one POU's body."""
+        frames: list[object] = []
+        frame = cast("Generator[object, None, None] | None", self._scan)  # the debug scan is a generator
+        while frame is not None:
+            if not names.is_chunk_function(frame.gi_code.co_name):
+                frames.append(frame)
+            frame = frame.gi_yieldfrom
+        return tuple(frames)
 
     def _continue(self, granularity: str | None) -> Halt | None:
         self.debugger.arm(granularity)  # type: ignore[union-attr]

@@ -4,7 +4,8 @@
 // editor's undo history is a list of values) and turns variable values into what widgets show.
 import type { DisplayType } from "../generated/monitor";
 import type { IndicatorState as State, Motion, Panel } from "../generated/project";
-import { formatValue, pathKey } from "../online/monitor";
+import { pathKey } from "../online/monitor";
+import { formatValue, parseValue } from "../online/values";
 import type { Value, WriteValue } from "../online/protocol";
 
 export type Widget = NonNullable<Panel["widgets"]>[number];
@@ -332,13 +333,8 @@ export function sevenSegmentText(value: Value | undefined, digits: number): stri
 /** What a push button writes: TRUE while held (FALSE while held when normally closed). */
 export const pushValue = (pressed: boolean, nc: boolean | undefined): boolean => (nc ? !pressed : pressed);
 
-/** The value a numeric input or slider sends for text the user typed: a number, or IEC literal text. */
-export function typedValue(text: string): WriteValue | null {
-  const t = text.trim();
-  if (!t) return null;
-  const n = Number(t);
-  return Number.isFinite(n) && /^[+-]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)?$/.test(t) ? n : t;
-}
+/** The value a numeric input sends for text the user typed (as the watch list reads it); null for nothing. */
+export const typedValue = (text: string): WriteValue | null => (text.trim() ? parseValue(text) : null);
 
 /** A slider's value for a pointer at `at` (0..1 along it), on its steps. */
 export function sliderValue(at: number, min: number, max: number, step: number): number {
