@@ -27,7 +27,7 @@ def new_from_example(page, server: str, example: str, name: str, start: str = "s
     form.get_by_label("Start from").select_option(start)
     form.get_by_label("New project name").fill(name)
     form.get_by_role("button", name="Create").click()
-    page.get_by_role("heading", name=name).wait_for()
+    page.get_by_role("heading", name=name, exact=True).wait_for()
 
 
 def open_panel(page, name: str) -> None:
@@ -64,11 +64,11 @@ def lamp(page, widget_id: str):
     return widget(page, widget_id).locator("[data-on]").first
 
 
-def expect_on(page, widget_id: str, on: bool = True, timeout: int = 10_000) -> None:
+def expect_on(page, widget_id: str, on: bool = True, timeout: int = 20_000) -> None:
     expect(lamp(page, widget_id)).to_have_attribute("data-on", "true" if on else "false", timeout=timeout)
 
 
-def expect_text(page, widget_id: str, text: str, timeout: int = 10_000) -> None:
+def expect_text(page, widget_id: str, text: str, timeout: int = 20_000) -> None:
     expect(widget(page, widget_id).locator("[data-text]").first).to_have_attribute("data-text", text, timeout=timeout)
 
 
@@ -94,3 +94,12 @@ def run_until(page, panel: str, what: str) -> None:
 def simulation_of(server: str, project: str) -> dict:
     with urllib.request.urlopen(f"{server}/api/simulations", timeout=10) as response:
         return next(s for s in json.load(response) if s["project"] == project)
+
+
+def open_example_online(page, server: str, example: str, name: str, panel: str, start: str = "solution") -> list[str]:
+    """New from example, its panel, online and running; returns the page's errors from then on."""
+    errors = watch_errors(page)
+    new_from_example(page, server, example, name, start)
+    open_panel(page, panel)
+    go_online(page)
+    return errors

@@ -14,7 +14,7 @@ def new_project(page, server: str, name: str) -> None:
     page.get_by_role("button", name="New project").click()
     page.get_by_label("Project name").press_sequentially(name)
     page.keyboard.press("Enter")
-    page.get_by_role("heading", name=name).wait_for()
+    page.get_by_role("heading", name=name, exact=True).wait_for()
 
 
 def new_pou(page, name: str, *, language: str = "ld", kind: str = "program") -> None:

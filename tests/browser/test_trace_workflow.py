@@ -61,7 +61,7 @@ def _watch(page, path: str):
 def _open_project(page, server: str, name: str) -> None:
     page.goto(server)
     page.get_by_role("navigation", name="Projects").get_by_role("button", name=re.compile(f"^{name}")).click()
-    page.get_by_role("heading", name=name).wait_for()
+    page.get_by_role("heading", name=name, exact=True).wait_for()
 
 
 def test_a_trace_of_a_ton_shows_q_rising_pt_after_its_input(page, server):

@@ -9,6 +9,7 @@ from datetime import datetime
 import pytest
 from fastapi.testclient import TestClient
 
+from ladderlab.examples import example_names
 from ladderlab.model import Project
 from ladderlab.model.names import project_name_problem
 from ladderlab.server.app import create_app
@@ -69,7 +70,8 @@ def test_create_from_unknown_example_is_422(client: TestClient) -> None:
     for example in ("nope", "../motor", "motor/pous"):
         response = client.post("/api/projects", json={"name": "x", "example": example})
         assert response.status_code == 422
-        assert detail(response)["message"] == f"unknown example {example!r}; available: motor"
+        available = ", ".join(example_names())  # motor and the lab bench's exercises
+        assert detail(response)["message"] == f"unknown example {example!r}; available: {available}"
     assert client.get("/api/projects").json() == []
 
 

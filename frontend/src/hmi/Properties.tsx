@@ -6,7 +6,7 @@ import { projectApi } from "../api/client";
 import type { SymbolInfo } from "../generated/api";
 import type { IndicatorState as State, Motion, Panel, SwitchPosition as Position } from "../generated/project";
 import { OperandEditor } from "../ld/editor/OperandEditor";
-import { useWorkspace } from "../project/store";
+import { plainSymbol, useWorkspace } from "../project/store";
 import { candidates } from "../trace/candidates";
 import { SYMBOL_SHAPES, updateWidget, type Widget, type WidgetType } from "./model";
 
@@ -92,20 +92,7 @@ function useBindingSymbols(): SymbolInfo[] {
     if (!project || !names.length) return;
     let current = true;
     Promise.all(names.map((pou) => projectApi.getSymbols(project, pou))).then(
-      (tables) =>
-        current &&
-        setFound(
-          candidates(tables, library).map((c) => ({
-            name: c.path,
-            type: c.type,
-            var_class: "VAR",
-            initial: null,
-            address: null,
-            comment: null,
-            retain: false,
-            constant: false,
-          })),
-        ),
+      (tables) => current && setFound(candidates(tables, library).map((c) => plainSymbol(c.path, c.type))),
       () => undefined, // no symbols: bindings still take typed paths
     );
     return () => void (current = false);

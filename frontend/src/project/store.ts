@@ -113,6 +113,18 @@ const isDiagramBody = (body: Pou["body"]): body is LdBody | FbdBody =>
 export const ldBodyOf = (pou: Pou): LdBody => (isDiagramBody(pou.body) ? (pou.body as LdBody) : { networks: [] });
 export const fbdBodyOf = (pou: Pou): FbdBody => (isDiagramBody(pou.body) ? (pou.body as FbdBody) : { networks: [] });
 
+/** A symbol known by name and type only (a variable just declared, a path to suggest). */
+export const plainSymbol = (name: string, type: string): SymbolInfo => ({
+  name,
+  type,
+  var_class: "VAR",
+  initial: null,
+  address: null,
+  comment: null,
+  retain: false,
+  constant: false,
+});
+
 /** The symbols of a POU and the globals, for autocomplete and online paths. */
 export const symbolsOf = (table: SymbolTable | undefined): SymbolInfo[] =>
   table ? [...table.symbols, ...table.globals] : [];
@@ -255,16 +267,7 @@ export function createWorkspaceStore(
       declare(pou, { name, type }) {
         replacePou(pou, (p) => ({ ...p, declarations: addDeclaration(p.declarations ?? "", name, type) }));
         const table = get().symbols[pou] ?? { pou, symbols: [], globals: [], diagnostics: [] };
-        const symbol: SymbolInfo = {
-          name,
-          type,
-          var_class: "VAR",
-          initial: null,
-          address: null,
-          comment: null,
-          retain: false,
-          constant: false,
-        };
+        const symbol = plainSymbol(name, type);
         set({ symbols: { ...get().symbols, [pou]: { ...table, symbols: [...table.symbols, symbol] } } });
       },
 
