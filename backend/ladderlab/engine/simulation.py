@@ -115,6 +115,10 @@ class Simulation:
         self._injections: dict[str, tuple[Location, Injection]] = {}
         #: Hears every input as it is applied (the online log, a recording); see inputs.py.
         self.on_input: Callable[[AppliedInput], None] | None = None
+        #: Hears the end of every completed scan: its number, its virtual time, and whether the schedule chose
+        #: that time (``cycle``, ``run_for``) or the caller did (``scan_at``): a scan history (issue 23).
+        self.on_scan: Callable[[int, float, bool], None] | None = None
+        self._scheduled = True  # whether the scan under way runs at the time the schedule chose
         self._halts = 0  # halts of the scan under way so far
         self._halt_pid: int | None = None
         self.faults: list[Fault] = []
@@ -163,6 +167,10 @@ class Simulation:
         compiled.install(self._ns)
         self.compiled = compiled
         self._attach_debugger()
+
+    def variant_program(self, variant: str) -> CompiledProgram | None:
+        """This simulation's program compiled as ``variant``, when it was (a scan history replays the monitor code)."""
+        return self._variants.get(variant)
 
     def _attach_debugger(self) -> None:
         self.debugger = (
@@ -227,7 +235,7 @@ class Simulation:
         self._not_halted()
         for done in range(n):
             now, due = self._schedule.advance()
-            if not self._scan_now(now, due):
+            if not self._scan_now(now, due, scheduled=True):
                 return done
         return n
 
@@ -237,7 +245,7 @@ class Simulation:
         end, done = self.time_ms + ms, 0
         while self._schedule.next_time() <= end:
             now, due = self._schedule.advance()
-            if not self._scan_now(now, due):
+            if not self._scan_now(now, due, scheduled=True):
                 break
             done += 1
         return done
@@ -247,14 +255,15 @@ class Simulation:
 
         Returns False when the scan halted (debug variant)."""
         self._not_halted()
-        return self._scan_now(time_ms, self._schedule.at(time_ms))
+        return self._scan_now(time_ms, self._schedule.at(time_ms), scheduled=False)
 
     def _not_halted(self) -> None:
         if self.halted is not None:
             raise RuntimeError("the simulation is halted: resume(), step() or reset() first")
 
-    def _scan_now(self, now: float, due: list[Task]) -> bool:
+    def _scan_now(self, now: float, due: list[Task], scheduled: bool) -> bool:
         self._halts = 0
+        self._scheduled = scheduled
         self._apply_inputs()
         self._cross()
         self._ns["ll_now"] = now
@@ -327,6 +336,8 @@ class Simulation:
         self._apply_forces()
         self.stats.add(elapsed_ms)
         self.scan_count += 1
+        if self.on_scan is not None:
+            self.on_scan(self.scan_count - 1, self.time_ms, self._scheduled)
 
     def _fault(self, task: Task, error: Exception, now: float) -> None:
         task.stopped = True

@@ -1,0 +1,252 @@
+"""Scan history (issue 23): record a running simulation's nondeterminism, recompute any past scan exactly.
+
+A scan is a function of the state before it and of what entered from outside: the inputs applied at its
+start (``engine/inputs.py``: writes, forces, releases, panel events, faults, resets) and, for a scan not
+chosen by the schedule (``scan_at``), its virtual time. So the history keeps only that, per scan, plus
+full-state checkpoints (``engine/state.py``), and ``seek(k)`` restores the nearest checkpoint into a
+second simulation of the same program and runs the scans up to ``k`` again, feeding them the recorded
+inputs. An idle scan adds nothing to the log.
+
+What a replay cannot redo is kept as a checkpoint at once: a scan that a user changed while it was halted
+at a breakpoint (``halt``-phase inputs), a scan that ended with a fault (a watchdog trip depends on the
+machine's speed), a scan a reset ended while halted. Checkpoints are taken adaptively: every
+``interval`` scans, where the interval keeps the time spent capturing near ``overhead`` of the scan time
+and the replay of one interval within ``seek_ms``; or after ``log_bytes`` of input log. Checkpoints and
+log live in ``budget_bytes`` (default 256 MB): the oldest checkpoint and the log before the next one go
+first, so history is available from ``first`` on.
+
+    history = History(sim)        # records from now on (it sets sim.on_scan; call history.applied(...)
+    history.seek(42)              #   from sim.on_input). Returns the replay simulation at scan 42's end.
+"""
+
+from __future__ import annotations
+
+import bisect
+import json
+import math
+import pickle
+import time
+import zlib
+from collections.abc import Callable
+from dataclasses import dataclass, replace
+
+from ..engine.inputs import AppliedInput, InputEvent
+from ..engine.simulation import Simulation
+from ..engine.state import SimState
+
+#: The default memory budget of one simulation's history.
+DEFAULT_BUDGET_BYTES = 256 * 1024 * 1024
+
+
+class HistoryUnavailable(ValueError):
+    """A scan outside the recorded history (dropped by the budget, or not run yet): the user's words."""
+
+
+@dataclass(frozen=True)
+class Checkpoint:
+    """The state before scan ``scan`` (after scan ``scan - 1``), pickled and compressed."""
+
+    scan: int
+    blob: bytes
+
+    def state(self) -> SimState:
+        return pickle.loads(zlib.decompress(self.blob))
+
+
+class History:
+    """The scan history of one live simulation (on its engine thread, like the simulation itself)."""
+
+    def __init__(
+        self,
+        sim: Simulation,
+        *,
+        budget_bytes: int = DEFAULT_BUDGET_BYTES,
+        overhead: float = 0.05,
+        seek_ms: float = 500.0,
+        min_interval: int = 16,
+        log_bytes: int = 1 << 20,
+        clock: Callable[[], float] = time.perf_counter,
+    ) -> None:
+        if budget_bytes <= 0:
+            raise ValueError(f"the history budget must be positive, not {budget_bytes} bytes")
+        self.live = sim
+        self.budget_bytes = budget_bytes
+        self.overhead = overhead
+        self.seek_ms = seek_ms
+        self.min_interval = min_interval
+        self.log_bytes = log_bytes
+        self._clock = clock
+        self.checkpoints: list[Checkpoint] = []
+        self._inputs: dict[int, list[bytes]] = {}  # scan -> the inputs applied for it, as JSON, in order
+        self._times: dict[int, float] = {}  # scan -> its virtual time, for scans the schedule did not choose
+        self._barriers: set[int] = set()  # scans a replay cannot redo: viewed from the checkpoint after them
+        self.log_size = 0  # bytes of _inputs and _times
+        self.checkpoint_size = 0
+        self.interval = min_interval
+        self._since = 0  # scans since the last checkpoint
+        self._log_since = 0  # log bytes since the last checkpoint
+        self._faults = len(sim.faults)
+        self._capture_s = 0.0
+        self._replay: Simulation | None = None
+        self._replay_at: int | None = None  # scans the replay simulation has completed (its scan_count)
+        sim.on_scan = self._scanned
+        self._checkpoint()
+
+    # ------------------------------------------------------------------ recording (the live engine's hooks)
+
+    @property
+    def size(self) -> int:
+        """Bytes the history holds: checkpoints and input log."""
+        return self.checkpoint_size + self.log_size
+
+    @property
+    def first(self) -> int:
+        """The oldest scan that can be viewed."""
+        return self.checkpoints[0].scan
+
+    @property
+    def last(self) -> int:
+        """The newest scan that can be viewed (-1 before the first scan)."""
+        return self.live.scan_count - 1
+
+    def applied(self, applied: AppliedInput) -> None:
+        """Record an input as the engine applied it (``Simulation.on_input``)."""
+        line = json.dumps(applied.event.to_json(), separators=(",", ":")).encode()
+        self._inputs.setdefault(applied.scan, []).append(line)
+        self._grow_log(len(line) + 8)
+        if applied.phase == "halt":
+            self._barriers.add(applied.scan)
+            if applied.event.kind == "reset":  # it ended the halted scan: what follows starts from here
+                self._checkpoint()
+
+    def _scanned(self, scan: int, time_ms: float, scheduled: bool) -> None:
+        if not scheduled:
+            self._times[scan] = time_ms
+            self._grow_log(16)
+        self._since += 1
+        faults = len(self.live.faults)
+        if faults != self._faults:
+            self._faults = faults
+            if faults:
+                self._barriers.add(scan)
+        if scan in self._barriers or self._since >= self.interval or self._log_since >= self.log_bytes:
+            self._checkpoint()
+
+    def _grow_log(self, size: int) -> None:
+        self.log_size += size
+        self._log_since += size
+        if self.size > self.budget_bytes:
+            self._evict()
+
+    def _checkpoint(self) -> None:
+        start = self._clock()
+        state = replace(self.live.state(), pending=())  # the waiting inputs are in the log when they apply
+        blob = zlib.compress(pickle.dumps(state, pickle.HIGHEST_PROTOCOL), 1)
+        self._capture_s = self._clock() - start
+        scan = self.live.scan_count
+        if self.checkpoints and self.checkpoints[-1].scan == scan:
+            self.checkpoint_size -= len(self.checkpoints.pop().blob)
+        self.checkpoints.append(Checkpoint(scan, blob))
+        self.checkpoint_size += len(blob)
+        self._since = self._log_since = 0
+        self._adapt()
+        self._evict()
+
+    def _adapt(self) -> None:
+        """Checkpoint as often as ``overhead`` of the scan time allows, but at least every ``seek_ms`` of replay."""
+        if not self.live.stats.count:  # no scan time to go by yet
+            self.interval = self.min_interval
+            return
+        scan_ms = max(self.live.stats.avg_ms, 1e-3)
+        capture_ms = self._capture_s * 1000.0
+        cheap = math.ceil(capture_ms / (self.overhead * scan_ms))
+        bounded = max(self.min_interval, math.floor(self.seek_ms / scan_ms))
+        self.interval = max(self.min_interval, min(cheap, bounded))
+
+    def _evict(self) -> None:
+        """Drop the oldest checkpoints (and the log before the next one) until the history fits its budget."""
+        while self.size > self.budget_bytes and len(self.checkpoints) > 1:
+            self.checkpoint_size -= len(self.checkpoints.pop(0).blob)
+            first = self.checkpoints[0].scan
+            for scan in [scan for scan in self._inputs if scan < first]:
+                self.log_size -= sum(len(line) + 8 for line in self._inputs.pop(scan))
+            for scan in [scan for scan in self._times if scan < first]:
+                del self._times[scan]
+                self.log_size -= 16
+            self._barriers = {scan for scan in self._barriers if scan >= first}
+            if self._replay_at is not None and self._replay_at < first:
+                self._replay_at = None
+
+    # ------------------------------------------------------------------ seeking
+
+    def inputs_of(self, scan: int) -> list[dict[str, object]]:
+        """The inputs applied for ``scan`` (as ``InputEvent`` JSON), in order."""
+        return [json.loads(line) for line in self._inputs.get(scan, ())]
+
+    def seek(self, scan: int) -> Simulation:
+        """A simulation (the history's own, never the live one) at the end of ``scan``: every variable, FB
+        instance and probe as that scan left them. HistoryUnavailable outside ``first``..``last``."""
+        if not self.first <= scan <= self.last:
+            if scan > self.last:
+                raise HistoryUnavailable(f"scan {scan} has not run yet (the last scan is {self.last})")
+            raise HistoryUnavailable(f"scan {scan} is no longer in the history: it starts at scan {self.first}")
+        replay = self._replay_sim()
+        if scan in self._barriers:  # not replayable: the checkpoint taken after it holds it
+            self._restore(self._checkpoint_at(scan + 1))
+        else:
+            checkpoint = self._checkpoint_at(scan)
+            if not (self._replay_at is not None and checkpoint.scan <= self._replay_at <= scan):
+                self._restore(checkpoint)  # else: go on from where the last seek left the replay (a step forward)
+            assert self._replay_at is not None
+            for number in range(self._replay_at, scan + 1):
+                for line in self._inputs.get(number, ()):
+                    replay.submit(InputEvent.from_json(json.loads(line)))
+                if number in self._times:
+                    replay.scan_at(self._times[number])
+                else:
+                    replay.cycle(1)
+            self._replay_at = scan + 1
+        return replay
+
+    def changed(self, path: str, scan: int, direction: int) -> int | None:
+        """The nearest scan after (``direction`` 1) or before (-1) ``scan`` that changed ``path``: whose end
+        value differs from the end value of the scan before it. None when the history holds none."""
+        self.live.location(path)  # an unknown path fails before any replay
+        if direction == 1:
+            previous = self.seek(scan).read(path)
+            for number in range(scan + 1, self.last + 1):
+                value = self.seek(number).read(path)  # stepping forward replays one scan each
+                if _differs(value, previous):
+                    return number
+                previous = value
+            return None
+        high = min(scan, self.last + 1) - 1
+        while high > self.first:  # one checkpoint interval at a time, each replayed forward
+            low = max(self.first, self._checkpoint_at(high).scan - 1)
+            values = [self.seek(number).read(path) for number in range(low, high + 1)]
+            for offset in range(len(values) - 1, 0, -1):
+                if _differs(values[offset], values[offset - 1]):
+                    return low + offset
+            high = low
+        return None
+
+    def _checkpoint_at(self, scan: int) -> Checkpoint:
+        """The newest checkpoint taken before scan ``scan`` ran."""
+        index = bisect.bisect_right([c.scan for c in self.checkpoints], scan) - 1
+        return self.checkpoints[index]
+
+    def _restore(self, checkpoint: Checkpoint) -> None:
+        self._replay_sim().restore(checkpoint.state())
+        self._replay_at = checkpoint.scan
+
+    def _replay_sim(self) -> Simulation:
+        if self._replay is None:
+            self._replay = Simulation(self.live.variant_program("monitor") or self.live.compiled)
+        return self._replay
+
+
+def _differs(value: object, old: object) -> bool:
+    """Another value or another type (TRUE is not 1); a NaN that stays NaN has not changed."""
+    if value == old and type(value) is type(old):
+        return False
+    return not (value != value and type(old) is float and old != old)

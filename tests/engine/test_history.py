@@ -1,0 +1,261 @@
+"""Scan history (issue 23, simulation/history.py): recording only the nondeterminism, checkpoints under a
+memory budget, and exact recomputation of any past scan.
+
+The reference for every seek is the live simulation itself: after each live scan the test keeps what the
+online view would show (every variable, the power flow of every element); a seek to that scan must give
+exactly the same, whatever the inputs, checkpoints and evictions in between."""
+
+from __future__ import annotations
+
+from hypothesis import given
+from hypothesis import strategies as st
+
+from ladderlab.engine.inputs import InputEvent
+from ladderlab.engine.simulation import Simulation
+from ladderlab.simulation.build import build_project
+from ladderlab.simulation.history import History, HistoryUnavailable
+from ladderlab.st.project_text import source_to_project
+from tests.support import fuzz_settings
+
+# Timers (TON, TOF, TP) on the virtual clock, edge triggers (R_TRIG, F_TRIG), a counter and arithmetic: the
+# state a replay must carry exactly. Two tasks at different intervals so some scans run one task only.
+SOURCE = """
+VAR_GLOBAL
+    Shared : BOOL;
+END_VAR
+
+PROGRAM Main
+VAR
+    Go, Stop : BOOL;
+    Level : INT;
+    OnDelay : TON; OffDelay : TOF; Pulse : TP;
+    Up : R_TRIG; Down : F_TRIG;
+    Count : CTU;
+    Rises, Falls : INT;
+    Total : DINT;
+    Scaled : REAL;
+    Lamp : BOOL;
+END_VAR
+OnDelay(IN := Go AND NOT Stop, PT := T#30ms);
+OffDelay(IN := Go, PT := T#20ms);
+Pulse(IN := Stop, PT := T#15ms);
+Up(CLK := Go);
+Down(CLK := Go);
+IF Up.Q THEN Rises := Rises + 1; END_IF;
+IF Down.Q THEN Falls := Falls + 1; END_IF;
+Count(CU := OnDelay.Q, R := Stop, PV := 3);
+Total := Total + INT_TO_DINT(Level);
+Scaled := INT_TO_REAL(Level) * 0.5 + TIME_TO_REAL(OnDelay.ET);
+Lamp := Count.Q OR Pulse.Q;
+Shared := Lamp;
+END_PROGRAM
+
+PROGRAM Slow
+VAR
+    Ticks : INT;
+    Seen : BOOL;
+END_VAR
+Ticks := Ticks + 1;
+Seen := Shared;
+END_PROGRAM
+
+CONFIGURATION Cfg
+    RESOURCE Res ON PLC
+        TASK Fast (INTERVAL := T#5ms, PRIORITY := 1);
+        TASK Every (INTERVAL := T#15ms, PRIORITY := 2);
+        PROGRAM Main WITH Fast : Main;
+        PROGRAM Slow WITH Every : Slow;
+    END_RESOURCE
+END_CONFIGURATION
+"""
+
+PROJECT, _ = source_to_project(SOURCE)
+BUILD = build_project(PROJECT, "monitor")
+assert BUILD.compiled is not None, BUILD.diagnostics
+COMPILED = BUILD.compiled
+
+
+def _view(sim: Simulation) -> tuple[dict, dict]:
+    """What the online view shows of a scan: every variable, and the power flow of every element."""
+    return sim.snapshot(), {"MAIN": sim.probes("MAIN"), "SLOW": sim.probes("SLOW")}
+
+
+def _live() -> tuple[Simulation, History, list]:
+    sim = Simulation(COMPILED)
+    return sim, History(sim, min_interval=4), []
+
+
+def _record(sim: Simulation, history: History) -> None:
+    sim.on_input = history.applied
+
+
+EVENTS = st.one_of(
+    st.tuples(st.just("write"), st.sampled_from(["Main.Go", "Main.Stop"]), st.booleans()),
+    st.tuples(st.just("write"), st.just("Main.Level"), st.integers(-100, 100)),
+    st.tuples(st.just("panel"), st.sampled_from(["Main.Go", "Main.Stop"]), st.booleans()),
+    st.tuples(st.just("force"), st.sampled_from(["Main.Go", "Main.Level"]), st.integers(0, 1)),
+    st.tuples(st.just("release"), st.sampled_from(["Main.Go", "Main.Level"]), st.none()),
+    st.tuples(st.just("fault"), st.just("Main.Level"), st.integers(0, 1000)),
+    st.tuples(st.just("clear_fault"), st.none(), st.none()),
+    st.tuples(st.just("reset"), st.none(), st.booleans()),
+)
+
+
+def _event(kind: str, path: str | None, value: object, forced: dict) -> InputEvent | None:
+    if kind == "force":
+        return InputEvent("force", path, bool(value) if path == "Main.Go" else value)
+    if kind == "release":
+        return InputEvent("release", path) if path.upper() in forced else None
+    if kind == "fault":
+        return InputEvent("fault", path, mode="noisy", amplitude=5.0, seed=value)
+    if kind == "clear_fault":
+        return InputEvent("clear_fault")
+    if kind == "reset":
+        return InputEvent("reset", cold=bool(value))
+    return InputEvent(kind, path, value)  # type: ignore[arg-type]  # write and panel, as drawn
+
+
+@fuzz_settings(fast=30)
+@given(
+    steps=st.lists(
+        st.tuples(st.lists(EVENTS, max_size=3), st.integers(1, 12), st.booleans()), min_size=1, max_size=25
+    ),
+    seeks=st.lists(st.integers(0, 10_000), min_size=1, max_size=12),
+    budget=st.sampled_from([None, 6_000]),
+)
+def test_every_seeked_scan_equals_the_live_scan(steps, seeks, budget):
+    """LAB-23 (issue 23, item 2 and 6): random writes, panel presses, forces and releases, noisy faults, warm
+    and cold resets and scans at chosen times; every seek equals what the live run showed at that scan, also
+    after the budget evicted checkpoints (``budget`` 6,000 bytes keeps a few)."""
+    sim = Simulation(COMPILED)
+    history = History(sim, min_interval=4, **({"budget_bytes": budget} if budget else {}))
+    _record(sim, history)
+    seen = []
+    for events, scans, chosen_time in steps:
+        for kind, path, value in events:
+            event = _event(kind, path, value, {p.upper(): v for p, v in sim.forced.items()})
+            if event is not None:
+                sim.submit(event)
+        for _ in range(scans):
+            if chosen_time:
+                sim.scan_at(sim.time_ms + 7)
+            else:
+                sim.cycle(1)
+            seen.append(_view(sim))
+    assert history.last == len(seen) - 1
+    if budget:
+        assert history.size <= budget or len(history.checkpoints) == 1
+    live_before = _view(sim)
+    for raw in seeks:
+        scan = history.first + raw % (history.last - history.first + 1)
+        assert _view(history.seek(scan)) == seen[scan], f"scan {scan}"
+    assert _view(sim) == live_before  # seeking never touches the live simulation
+    for scan in range(history.first, history.last + 1):  # stepping forward and back, one scan at a time
+        assert history.seek(scan).snapshot() == seen[scan][0], f"scan {scan}"
+
+
+def test_an_idle_scan_costs_no_log_bytes():
+    """Issue 23 item 1: 2,000 scans without input add nothing to the log; each input adds its line."""
+    sim = Simulation(COMPILED)
+    history = History(sim)
+    _record(sim, history)
+    sim.cycle(2_000)
+    assert history.log_size == 0
+    sim.write("Main.Level", 3)
+    sim.cycle(1)
+    line = b'{"kind":"write","path":"Main.Level","value":3}'
+    assert history.log_size == len(line) + 8
+    assert history.inputs_of(2_000) == [{"kind": "write", "path": "Main.Level", "value": 3}]
+    sim.cycle(500)
+    assert history.log_size == len(line) + 8
+
+
+class _Ticks:
+    """A clock that moves ``step`` seconds at each reading: scans and captures of a known duration."""
+
+    def __init__(self, step: float) -> None:
+        self.now, self.step = 0.0, step
+
+    def __call__(self) -> float:
+        self.now += self.step
+        return self.now
+
+
+def test_checkpoints_adapt_to_the_scan_and_the_budget_drops_the_oldest():
+    """Issue 23 item 1: 0.1 ms scans and 0.503 ms captures: with 5 % overhead a checkpoint every 101 scans, unless
+    a seek would replay more than ``seek_ms`` (2.05 ms: 20 scans). Over budget the oldest checkpoints go first."""
+    sim = Simulation(COMPILED, wall_clock=_Ticks(0.0001))  # two readings a scan: 0.1 ms
+    history = History(sim, min_interval=10, seek_ms=2.05, clock=_Ticks(0.000503))
+    sim.cycle(300)
+    assert history.interval == 20
+    assert [c.scan for c in history.checkpoints] == [0, 10, *range(30, 300, 20)]
+    cheap = History(Simulation(COMPILED, wall_clock=_Ticks(0.0001)), min_interval=10, seek_ms=1e9, clock=_Ticks(0.000503))
+    cheap.live.cycle(300)
+    assert [c.scan for c in cheap.checkpoints] == [0, 10, 111, 212]
+
+    budget = 4 * len(history.checkpoints[-1].blob)
+    small = History(Simulation(COMPILED, wall_clock=_Ticks(0.0001)), budget_bytes=budget, min_interval=10, seek_ms=2.05, clock=_Ticks(0.000503))
+    small.live.cycle(300)
+    scans = [c.scan for c in small.checkpoints]
+    assert small.size <= budget and 2 <= len(scans) <= 5
+    assert scans == [0, 10, *range(30, 300, 20)][-len(scans) :]
+    assert small.first == scans[0] > 0
+    try:
+        small.seek(small.first - 1)
+    except HistoryUnavailable as error:
+        assert str(error) == f"scan {small.first - 1} is no longer in the history: it starts at scan {small.first}"
+    else:
+        raise AssertionError("a dropped scan was seeked")
+    try:
+        small.seek(300)
+    except HistoryUnavailable as error:
+        assert str(error) == "scan 300 has not run yet (the last scan is 299)"
+    else:
+        raise AssertionError("a future scan was seeked")
+
+
+def test_a_write_while_halted_is_kept_as_a_checkpoint():
+    """A scan changed at a breakpoint cannot be replayed in the monitor code: the checkpoint after it is its
+    view, and the scans after it replay from there."""
+    debug = build_project(PROJECT, "debug").compiled
+    sim = Simulation(debug)
+    history = History(sim, min_interval=1_000, seek_ms=1e9)
+    _record(sim, history)
+    sim.cycle(5)
+    sim.set_breakpoint("Main", line=26)  # Total := ...: after the timers and the edges ran
+    sim.cycle(1)
+    assert sim.halted is not None
+    sim.write("Main.Level", 40)  # at once, inside the halted scan: Total adds 40 in this very scan
+    sim.write("Main.Go", True)  # R_TRIG already ran in this scan: its edge counts in the next one
+    sim.clear_breakpoints()
+    sim.resume()
+    halted_scan = sim.scan_count - 1
+    seen = {halted_scan: sim.snapshot()}
+    for _ in range(6):
+        sim.cycle(1)
+        seen[sim.scan_count - 1] = sim.snapshot()
+    assert [c.scan for c in history.checkpoints] == [0, halted_scan + 1]
+    for scan, values in seen.items():
+        assert history.seek(scan).snapshot() == values
+    assert seen[halted_scan]["MAIN.TOTAL"] == 40
+    assert (seen[halted_scan]["MAIN.RISES"], seen[halted_scan + 1]["MAIN.RISES"]) == (0, 1)
+
+
+def test_find_the_scan_where_a_variable_changed():
+    """Issue 23 item 3: the previous and the next scan where ``Main.Rises`` changed (a rising edge of Go)."""
+    sim = Simulation(COMPILED)
+    history = History(sim, min_interval=4)
+    _record(sim, history)
+    sim.cycle(10)
+    sim.write("Main.Go", True)  # applied at scan 10: R_TRIG fires in scan 10
+    sim.cycle(10)
+    sim.write("Main.Go", False)
+    sim.cycle(10)
+    sim.write("Main.Go", True)  # scan 30
+    sim.cycle(10)
+    assert history.changed("Main.Rises", 0, 1) == 10
+    assert history.changed("Main.Rises", 10, 1) == 30
+    assert history.changed("Main.Rises", 30, 1) is None
+    assert history.changed("Main.Rises", 39, -1) == 30
+    assert history.changed("Main.Rises", 30, -1) == 10
+    assert history.changed("Main.Rises", 10, -1) is None
