@@ -117,9 +117,7 @@ def _event(kind: str, path: str | None, value: object, forced: dict) -> InputEve
 
 @fuzz_settings(fast=30)
 @given(
-    steps=st.lists(
-        st.tuples(st.lists(EVENTS, max_size=3), st.integers(1, 12), st.booleans()), min_size=1, max_size=25
-    ),
+    steps=st.lists(st.tuples(st.lists(EVENTS, max_size=3), st.integers(1, 12), st.booleans()), min_size=1, max_size=25),
     seeks=st.lists(st.integers(0, 10_000), min_size=1, max_size=12),
     budget=st.sampled_from([None, 6_000]),
 )
@@ -189,12 +187,20 @@ def test_checkpoints_adapt_to_the_scan_and_the_budget_drops_the_oldest():
     sim.cycle(300)
     assert history.interval == 20
     assert [c.scan for c in history.checkpoints] == [0, 10, *range(30, 300, 20)]
-    cheap = History(Simulation(COMPILED, wall_clock=_Ticks(0.0001)), min_interval=10, seek_ms=1e9, clock=_Ticks(0.000503))
+    cheap = History(
+        Simulation(COMPILED, wall_clock=_Ticks(0.0001)), min_interval=10, seek_ms=1e9, clock=_Ticks(0.000503)
+    )
     cheap.live.cycle(300)
     assert [c.scan for c in cheap.checkpoints] == [0, 10, 111, 212]
 
     budget = 4 * len(history.checkpoints[-1].blob)
-    small = History(Simulation(COMPILED, wall_clock=_Ticks(0.0001)), budget_bytes=budget, min_interval=10, seek_ms=2.05, clock=_Ticks(0.000503))
+    small = History(
+        Simulation(COMPILED, wall_clock=_Ticks(0.0001)),
+        budget_bytes=budget,
+        min_interval=10,
+        seek_ms=2.05,
+        clock=_Ticks(0.000503),
+    )
     small.live.cycle(300)
     scans = [c.scan for c in small.checkpoints]
     assert small.size <= budget and 2 <= len(scans) <= 5

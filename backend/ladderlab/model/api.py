@@ -12,6 +12,7 @@ from typing import Literal
 from pydantic import BaseModel, ConfigDict, Field
 
 from .diagnostics import Diagnostic
+from .monitor import HistoryRange
 from .project import Project
 
 
@@ -199,6 +200,21 @@ class SimulationInfo(BaseModel):
     speed: float = Field(default=1.0, description="The time scale: scans are paced at this times real time.")
     pending_inputs: int = Field(default=0, description="Input events waiting for the start of the next scan.")
     until: str | None = Field(default=None, description="What a run until waits for (a condition or a time).")
+    history: HistoryRange | None = Field(default=None, description="The scan history (null: none is kept).")
+
+
+class SeekScan(BaseModel):
+    """Body of ``POST /api/simulations/{id}/seek``: the scan to show, numbered as ``scan_count``."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    scan: int = Field(ge=0)
+
+
+class HistoryFound(BaseModel):
+    """``GET /api/simulations/{id}/history/find``: the scan where the variable changed (null: none kept)."""
+
+    scan: int | None
 
 
 class ResetSimulation(BaseModel):

@@ -211,6 +211,20 @@ class RunUntil(_Request):
         return self
 
 
+class Seek(_Request):
+    """Show scan ``scan`` as it was (issue 23): the values and the power flow that scan computed, recomputed from
+    the scan history. Scans are numbered as ``values.scan`` numbers them. The live scans go on; ``live`` returns."""
+
+    type: Literal["seek"]
+    scan: int = Field(ge=0)
+
+
+class Live(_Request):
+    """Show the live scans again after a ``seek``."""
+
+    type: Literal["live"]
+
+
 class TraceTrigger(_Request):
     """When a trace starts recording: at the first scan that ends with ``path`` past the condition.
 
@@ -271,7 +285,9 @@ ClientMessage = Annotated[
     | Inject
     | InjectClear
     | Speed
-    | RunUntil,
+    | RunUntil
+    | Seek
+    | Live,
     Field(discriminator="type"),
 ]
 
@@ -300,6 +316,16 @@ class DisplayType(BaseModel):
     names: dict[str, str] | None = Field(default=None, description="An enumeration's value names by value.")
 
 
+class HistoryRange(BaseModel):
+    """The scans the scan history can show (numbered as ``values.scan``), and the one shown (null: live)."""
+
+    first: int = Field(description="The oldest scan kept (older ones were dropped for the memory budget).")
+    last: int = Field(description="The newest scan: the live one.")
+    viewing: int | None = Field(default=None, description="The scan shown instead of the live one; null: live.")
+    bytes: int = Field(default=0, description="Memory the history holds: checkpoints and input log.")
+    budget_bytes: int = Field(default=0, description="Its budget (the server's history_mb).")
+
+
 class Values(BaseModel):
     """What changed in this client's subscription since the previous ``values`` message to it.
 
@@ -322,6 +348,11 @@ class Values(BaseModel):
     types: dict[str, DisplayType] = Field(
         default_factory=dict,
         description="The type of every subscribed path, in the first message after a subscribe (paths as in changed).",
+    )
+    history: HistoryRange | None = Field(
+        default=None,
+        description="The scan history; while ``viewing`` is set, scan, time_ms, changed, power, forced and "
+        "injected are those of that past scan.",
     )
 
 

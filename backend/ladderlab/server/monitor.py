@@ -104,6 +104,7 @@ class MonitorClient:
         self.last_forced: list[str] = []
         self.last_injected: dict[str, str] = {}
         self.last_scan = -1
+        self.last_history: dict | None = None
         # trace: its chunks are taken at the values interval while one runs
         self.tracing = False
         self.trace_due = 0.0
@@ -341,8 +342,9 @@ class MonitorClient:
         forced = list(frame.forced)
         injected = frame.injected
         news = forced != self.last_forced or injected != self.last_injected
-        if not (full or changed or power or news or frame.scan != self.last_scan):
+        if not (full or changed or power or news or frame.scan != self.last_scan or frame.history != self.last_history):
             return None
+        self.last_history = frame.history
         self.last_injected = injected
         types = dict(self.watch.paths) if full and self.watch is not None else {}
         self.full, self.last_forced, self.last_scan = False, forced, frame.scan
@@ -355,6 +357,7 @@ class MonitorClient:
             injected=injected,
             power=power,
             types=types,
+            history=m.HistoryRange(**frame.history) if frame.history is not None else None,
         )
 
 

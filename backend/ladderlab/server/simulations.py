@@ -14,7 +14,7 @@ from typing import Annotated, Any
 
 from fastapi import APIRouter, Body, Depends, Request, Response, status
 
-from ..model.api import ResetSimulation, ScanTimes, SimulationInfo
+from ..model.api import HistoryFound, ResetSimulation, ScanTimes, SeekScan, SimulationInfo
 from ..simulation.registry import SimulationEntry, SimulationRegistry
 from ..simulation.remote import BuildFailed
 from ..simulation.runner import CommandError
@@ -128,6 +128,32 @@ def inputs(sim_id: str, registry: RegistryDep) -> Response:
     return Response(text, media_type="application/x-ndjson", headers=headers)
 
 
+@router.post("/api/simulations/{sim_id}/seek", response_model=SimulationInfo, responses=_DESCRIBED)
+def seek(sim_id: str, registry: RegistryDep, body: Annotated[SeekScan, Body()]) -> SimulationInfo:
+    """Show a past scan (issue 23): its values and power flow, recomputed from the scan history, until
+    ``POST .../live``; the live scans go on. Scans are numbered as ``scan_count`` (422 outside the history)."""
+    return _command(registry.get(sim_id), "seek", scan=body.scan)
+
+
+@router.post("/api/simulations/{sim_id}/live", response_model=SimulationInfo, responses=_DESCRIBED)
+def live(sim_id: str, registry: RegistryDep) -> SimulationInfo:
+    """Show the live scans again after a seek."""
+    return _command(registry.get(sim_id), "live")
+
+
+@router.get("/api/simulations/{sim_id}/history/find", response_model=HistoryFound, responses=_DESCRIBED)
+def history_find(sim_id: str, registry: RegistryDep, path: str, scan: int, direction: int = 1) -> HistoryFound:
+    """The next (``direction`` 1) or previous (-1) scan from ``scan`` where the value of ``path`` changed, from
+    the scan history; ``scan`` null when the history holds none."""
+    try:
+        handle = registry.get(sim_id).handle
+        timeout = handle.settings.build_timeout_s  # a search replays scans: it may take a while
+        found = handle.call("history_find", timeout=timeout, path=path, scan=scan, direction=direction)
+    except CommandError as error:
+        raise ApiError(409 if error.code == "bad_state" else 422, error.message) from None
+    return HistoryFound(scan=found)
+
+
 @router.delete(
     "/api/simulations/{sim_id}",
     status_code=status.HTTP_204_NO_CONTENT,
@@ -170,4 +196,5 @@ def simulation_info(entry: SimulationEntry, info: dict[str, Any] | None = None) 
         speed=info.get("speed", 1.0),
         pending_inputs=info.get("pending_inputs", 0),
         until=info.get("until"),
+        history=info.get("history"),
     )

@@ -44,6 +44,7 @@ class SimulationSettings:
     watchdog_s: float = 0.1  # per scan and task, unless the task sets its own (Task.watchdog_ms)
     publish_s: float = 0.02  # newest values are published at most this often while running
     memory_mb: int = 1024  # address space of each simulation's (and build's) process
+    history_mb: int = 256  # each simulation's scan history (issue 23): checkpoints and input log; 0: none
     build_timeout_s: float = 30.0  # wall time of one build (a check, or compiling a simulation)
     grace_s: float = 2.0  # a simulation's process that sends nothing for this long is ended
     answer_s: float = 0.05  # REST stop answers within this, even while a long scan runs
@@ -61,6 +62,7 @@ class SimulationSettings:
             watchdog_s=self.watchdog_s,
             publish_s=self.publish_s,
             memory_bytes=self.memory_mb * MB if self.memory_mb else None,
+            history_bytes=self.history_mb * MB,
             build_timeout_s=self.build_timeout_s,
             grace_s=self.grace_s,
             beat_s=self.beat_s,

@@ -73,6 +73,7 @@ class Frame:
     power: dict[str, dict[str, object]]  # canonical instance -> element -> state (None: did not run)
     forced: tuple[str, ...]
     injected: dict[str, str]  # canonical path -> mode of the fault injected there
+    history: dict[str, Any] | None = None  # the scan history's range and the scan viewed (runner.history_range)
 
 
 EMPTY_FRAME = Frame(0, 0, 0.0, 0.0, {}, {}, (), {})
@@ -108,6 +109,7 @@ class WorkerSettings:
     grace_s: float
     beat_s: float
     log_entries: int
+    history_bytes: int = 256 * 1024 * 1024  # the scan history's budget (0: no history)
 
 
 @dataclass
@@ -130,6 +132,7 @@ class SimulationHandle:
             "watchdog_s": settings.watchdog_s,
             "publish_s": settings.publish_s,
             "memory_bytes": settings.memory_bytes,
+            "history_bytes": settings.history_bytes,
             "beat_s": settings.beat_s,
             "make": make,
         }
@@ -343,7 +346,15 @@ class SimulationHandle:
             forced = tuple(message["forced"]) if message["forced"] is not None else old.forced
             injected = message["injected"] if message.get("injected") is not None else old.injected
             self.frame = Frame(
-                message["seq"], message["scan"], message["time_ms"], message["wall"], values, power, forced, injected
+                message["seq"],
+                message["scan"],
+                message["time_ms"],
+                message["wall"],
+                values,
+                power,
+                forced,
+                injected,
+                message.get("history"),
             )
             self.info = message["info"]
             listeners = list(self._listeners)

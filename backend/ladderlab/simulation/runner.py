@@ -54,6 +54,7 @@ from ..ir import nodes as ir
 from ..ir import types as t
 from ..model.monitor import MAX_SPEED, MIN_SPEED, At, DisplayType, Log, TraceTrigger
 from .conditions import BadCondition, Condition, parse_condition
+from .history import History, HistoryUnavailable
 from .trace import TraceBook, TraceRefused, plan_trace
 
 log = logging.getLogger(__name__)
@@ -159,6 +160,7 @@ class SimRunner:
         publish_s: float = 0.02,
         clock: Callable[[], float] = time.monotonic,
         journal_size: int = 100_000,
+        history_bytes: int = 0,
     ) -> None:
         self.sim = sim
         self.sink = sink
@@ -195,6 +197,12 @@ class SimRunner:
         self.journal: deque[AppliedInput] = deque(maxlen=journal_size)
         self.journal_dropped = 0
         sim.on_input = self._applied
+        # scan history (history.py): the replayed scan shown instead of the live one, while viewing
+        self.history = History(sim, budget_bytes=history_bytes) if history_bytes else None
+        self._view: Simulation | None = None
+        self._viewing: int | None = None  # the scan shown, numbered as frames number them (scans completed)
+        self._union_locations: dict[str, Location] = {}
+        self._view_reader = self._reader
         self._until: Condition | None = None
         self._until_ms: float | None = None
 
@@ -271,6 +279,7 @@ class SimRunner:
             "speed": self.speed,
             "pending_inputs": len(sim.pending),
             "until": self._until_text(),
+            "history": self.history_range(),
         }
 
     def _settle(self, publish: bool = False) -> None:
@@ -348,8 +357,8 @@ class SimRunner:
 
     def _publish(self, now: float) -> None:
         self._last_publish = now
-        full, sim = self._full, self.sim
-        values = self._reader.read()
+        full, sim = self._full, self._view or self.sim
+        values = (self._reader if self._view is None else self._view_reader).read()
         if full:
             changed = values
             self._sent_values = dict(values)
@@ -381,6 +390,7 @@ class SimRunner:
                 "seq": self._seq,
                 "scan": sim.scan_count,
                 "time_ms": sim.time_ms,
+                "history": self.history_range(),
                 "wall": time.time(),  # when these values were read (latency measurements)
                 "full": full,
                 "values": changed,
@@ -394,7 +404,7 @@ class SimRunner:
 
     def _states(self, instance: str, every: bool, ids: tuple[str, ...]) -> dict[str, object]:
         """Each watched element's state: its value when it ran in the last scan, else None."""
-        view = self.sim.probes(instance, None if every else ids)
+        view = (self._view or self.sim).probes(instance, None if every else ids)
         elements = sorted((view.values.keys() | view.executed).union(ids)) if every else ids
         return {e: (view.values.get(e) if e in view.executed else None) for e in elements}
 
@@ -562,6 +572,8 @@ class SimRunner:
         if len(self.journal) == self.journal.maxlen:
             self.journal_dropped += 1
         self.journal.append(applied)
+        if self.history is not None:
+            self.history.applied(applied)
         event = applied.event
         if event.kind == "panel":
             self._log("panel", "info", f"{event.source}: {event.path} := {_written(event.value)}", scan=applied.scan)
@@ -574,6 +586,58 @@ class SimRunner:
     def inputs(self) -> dict[str, Any]:
         """The applied inputs kept (oldest first, as ``--events`` lines) and how many older ones were dropped."""
         return {"inputs": [applied.to_json() for applied in self.journal], "dropped": self.journal_dropped}
+
+    # ------------------------------------------------------------------ scan history (history.py)
+
+    def history_range(self) -> dict[str, Any] | None:
+        """The scans that can be viewed and the one viewed (None: live), numbered as frames number scans:
+        scans completed, so scan n shows what the live view showed as scan n. None without a history."""
+        history = self.history
+        if history is None:
+            return None
+        return {
+            "first": history.first + 1,
+            "last": history.last + 1,
+            "viewing": self._viewing,
+            "bytes": history.size,
+            "budget_bytes": history.budget_bytes,
+        }
+
+    def _recorded(self) -> History:
+        if self.history is None:
+            raise CommandError("bad_state", "this simulation keeps no scan history (the server's history_mb is 0)")
+        return self.history
+
+    def seek(self, scan: int) -> dict[str, Any] | None:
+        """Show scan ``scan`` as it was (every watched value and element); the live scans go on unseen."""
+        history = self._recorded()
+        try:
+            view = history.seek(scan - 1)
+        except HistoryUnavailable as error:
+            raise CommandError("bad_value", _shown_numbers(scan, history)) from None
+        self._view, self._viewing, self._full = view, scan, True
+        self._view_reader = view.reader(self._union_locations)
+        return self.history_range()
+
+    def live(self) -> None:
+        """Show the live scans again."""
+        self._view, self._viewing, self._full = None, None, True
+
+    def history_find(self, path: str, scan: int, direction: int) -> int | None:
+        """The nearest scan after (``direction`` 1) or before (-1) ``scan`` whose end value of ``path`` differs
+        from the scan before it (numbered as frames number scans); None when the history holds none."""
+        history = self._recorded()
+        location = self._location(path)
+        if direction not in (-1, 1):
+            raise CommandError("bad_value", f"direction is -1 (back) or 1 (forward), not {direction}")
+        if not history.first + 1 <= scan <= history.last + 1:
+            raise CommandError(
+                "bad_value", f"scan {scan} is not in the history ({history.first + 1} to {history.last + 1})"
+            )
+        found = history.changed(location.path, scan - 1, direction)
+        if self._viewing is not None:  # the search moved the replay: back to the scan shown
+            self._view = history.seek(self._viewing - 1)
+        return found + 1 if found is not None else None
 
     def set_speed(self, scale: float) -> None:
         """Pace the scans at ``scale`` times real time; the virtual clock and every value stay the same."""
@@ -691,6 +755,9 @@ class SimRunner:
     def _rebuild_union(self) -> None:
         union = {path: loc for watch in self._watches.values() for path, loc in watch.locations.items()}
         self._reader = self.sim.reader(union)
+        self._union_locations = union
+        if self._view is not None:
+            self._view_reader = self._view.reader(union)
         instances: dict[str, tuple[bool, dict[str, None]]] = {}
         for watch in self._watches.values():
             for instance, ids in watch.elements:
@@ -745,7 +812,17 @@ class SimRunner:
         "inputs": inputs,
         "speed": set_speed,
         "run_until": run_until,
+        "seek": seek,
+        "live": live,
+        "history_find": history_find,
     }
+
+
+def _shown_numbers(scan: int, history: History) -> str:
+    """A refused seek in the frames' numbering (the history counts scans from 0, frames count completed ones)."""
+    if scan - 1 > history.last:
+        return f"scan {scan} has not run yet (the last scan is {history.last + 1})"
+    return f"scan {scan} is no longer in the history: it starts at scan {history.first + 1}"
 
 
 def _coerced(method: Callable[[str, object], None], path: str, value: object) -> None:

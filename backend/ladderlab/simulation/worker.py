@@ -100,7 +100,7 @@ def run_simulation(connection: Connection, spec: dict[str, Any]) -> None:
         log.exception("building the simulation failed")
         link.send({"type": "failed", "message": f"internal error while building: {type(error).__name__}: {error}"})
         return
-    runner = SimRunner(sim, link, publish_s=spec["publish_s"])
+    runner = SimRunner(sim, link, publish_s=spec["publish_s"], history_bytes=spec.get("history_bytes", 0))
     link.send({"type": "ready", "info": runner.info(), "instances": sim.instances()})
     threading.Thread(target=_receive, args=(link, runner, spec["beat_s"]), name="ladderlab-link", daemon=True).start()
     runner.serve()

@@ -1165,6 +1165,10 @@ export interface SimulationInfo {
    * The fault that stopped it, located; null when none.
    */
   fault: Diagnostic | null;
+  /**
+   * The scan history (null: none is kept).
+   */
+  history?: HistoryRange | null;
   id: string;
   /**
    * Instance paths of every program and function block by POU name (upper case), e.g. {"BLINKER": ["MAIN.BLINK"]}: the instances an online view can show.
@@ -1204,6 +1208,34 @@ export interface SimulationInfo {
    * What a run until waits for (a condition or a time).
    */
   until?: string | null;
+}
+/**
+ * The scans the scan history can show (numbered as ``values.scan``), and the one shown (null: live).
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "HistoryRange".
+ */
+export interface HistoryRange {
+  /**
+   * Its budget (the server's history_mb).
+   */
+  budget_bytes?: number;
+  /**
+   * Memory the history holds: checkpoints and input log.
+   */
+  bytes?: number;
+  /**
+   * The oldest scan kept (older ones were dropped for the memory budget).
+   */
+  first: number;
+  /**
+   * The newest scan: the live one.
+   */
+  last: number;
+  /**
+   * The scan shown instead of the live one; null: live.
+   */
+  viewing?: number | null;
 }
 /**
  * Wall time of the scans run so far, in milliseconds (halted time excluded).

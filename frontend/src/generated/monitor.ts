@@ -24,7 +24,9 @@ export interface MonitorProtocol {
     | Inject
     | InjectClear
     | Speed
-    | RunUntil;
+    | RunUntil
+    | Seek
+    | Live;
   server: Values | Status | TraceData | Log | Error;
 }
 /**
@@ -458,6 +460,26 @@ export interface RunUntil {
   type: "run_until";
 }
 /**
+ * Show scan ``scan`` as it was (issue 23): the values and the power flow that scan computed, recomputed from
+ * the scan history. Scans are numbered as ``values.scan`` numbers them. The live scans go on; ``live`` returns.
+ *
+ * This interface was referenced by `MonitorProtocol`'s JSON-Schema
+ * via the `definition` "Seek".
+ */
+export interface Seek {
+  scan: number;
+  type: "seek";
+}
+/**
+ * Show the live scans again after a ``seek``.
+ *
+ * This interface was referenced by `MonitorProtocol`'s JSON-Schema
+ * via the `definition` "Live".
+ */
+export interface Live {
+  type: "live";
+}
+/**
  * What changed in this client's subscription since the previous ``values`` message to it.
  *
  * The first message after a ``subscribe`` holds every subscribed value. ``power`` is keyed
@@ -485,6 +507,10 @@ export interface Values {
    */
   forced: string[];
   /**
+   * The scan history; while ``viewing`` is set, scan, time_ms, changed, power, forced and injected are those of that past scan.
+   */
+  history?: HistoryRange | null;
+  /**
    * Every variable with an injected fault (canonical paths): the fault's mode.
    */
   injected?: {
@@ -510,6 +536,34 @@ export interface Values {
   types?: {
     [k: string]: DisplayType;
   };
+}
+/**
+ * The scans the scan history can show (numbered as ``values.scan``), and the one shown (null: live).
+ *
+ * This interface was referenced by `MonitorProtocol`'s JSON-Schema
+ * via the `definition` "HistoryRange".
+ */
+export interface HistoryRange {
+  /**
+   * Its budget (the server's history_mb).
+   */
+  budget_bytes?: number;
+  /**
+   * Memory the history holds: checkpoints and input log.
+   */
+  bytes?: number;
+  /**
+   * The oldest scan kept (older ones were dropped for the memory budget).
+   */
+  first: number;
+  /**
+   * The newest scan: the live one.
+   */
+  last: number;
+  /**
+   * The scan shown instead of the live one; null: live.
+   */
+  viewing?: number | null;
 }
 /**
  * What a client needs to show a value as IEC text: TIME and dates arrive as ms, enumerations as ints.

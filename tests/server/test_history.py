@@ -1,0 +1,78 @@
+"""Scan history over the websocket and REST (issue 23 item 3): go to a past scan and the subscribed values and
+the history marker are those of that scan; the live scans go on meanwhile; back to live; find the scan where a
+variable changed. Scans are numbered as ``values.scan`` (scans completed): Count equals that number."""
+
+from __future__ import annotations
+
+from fastapi.testclient import TestClient
+
+from .test_simulations_support import counter, of_type, recv_until, registry, subscribe
+
+__all__ = ["counter", "registry"]  # fixtures
+
+
+def _values(**fields):
+    def match(message):
+        if message["type"] != "values":
+            return False
+        history = message.get("history") or {}
+        return all(history.get(key) == value for key, value in fields.items())
+
+    return match
+
+
+def test_seek_shows_a_past_scan_while_the_live_scans_go_on(client: TestClient, counter: str) -> None:
+    with client.websocket_connect(f"/api/simulations/{counter}/ws") as ws:
+        subscribe(ws, ["Main.Count", "Main.Idle"])
+        for _ in range(4):
+            ws.send_json({"type": "single_cycle"})
+        ws.send_json({"type": "write", "path": "Main.Idle", "value": 42})  # applies at the start of scan 5
+        for _ in range(6):
+            ws.send_json({"type": "single_cycle"})
+        recv_until(ws, lambda m: m["type"] == "values" and m["scan"] == 10)
+
+        ws.send_json({"type": "seek", "scan": 3})
+        past = recv_until(ws, _values(viewing=3))[0]
+        assert (past["scan"], past["history"]["first"], past["history"]["last"]) == (3, 1, 10)
+        assert past["changed"]["MAIN.COUNT"] == 3 and past["changed"]["MAIN.IDLE"] == 7
+        assert past["time_ms"] == 30.0  # the third scan of a 10 ms task runs at 30 ms (the first at 10 ms)
+
+        ws.send_json({"type": "seek", "scan": 5})
+        past = recv_until(ws, _values(viewing=5))[0]
+        assert (past["changed"]["MAIN.COUNT"], past["changed"]["MAIN.IDLE"]) == (5, 42)
+
+        ws.send_json({"type": "single_cycle"})  # the live simulation goes on; the view stays
+        later = recv_until(ws, _values(viewing=5, last=11))[0]
+        assert later["scan"] == 5 and "MAIN.COUNT" not in later["changed"]
+
+        ws.send_json({"type": "seek", "scan": 99})
+        error = recv_until(ws, of_type("error"))[0]
+        assert error == {
+            "type": "error",
+            "code": "bad_value",
+            "message": "scan 99 has not run yet (the last scan is 11)",
+        }
+
+        found = client.get(f"/api/simulations/{counter}/history/find", params={"path": "main.idle", "scan": 1})
+        assert found.json() == {"scan": 5}
+        back = client.get(
+            f"/api/simulations/{counter}/history/find", params={"path": "Main.Idle", "scan": 11, "direction": -1}
+        )
+        assert back.json() == {"scan": 5}
+
+        ws.send_json({"type": "live"})
+        live = recv_until(ws, _values(viewing=None))[0]
+        assert live["scan"] == 11 and live["changed"]["MAIN.COUNT"] == 11
+
+
+def test_seek_over_rest_and_the_history_in_the_simulation_info(client: TestClient, counter: str) -> None:
+    for _ in range(3):
+        client.post(f"/api/simulations/{counter}/cycle")
+    info = client.post(f"/api/simulations/{counter}/seek", json={"scan": 2}).json()
+    assert {key: info["history"][key] for key in ("first", "last", "viewing")} == {"first": 1, "last": 3, "viewing": 2}
+    assert 0 < info["history"]["bytes"] <= info["history"]["budget_bytes"] == 256 * 1024 * 1024
+    unknown = client.get(f"/api/simulations/{counter}/history/find", params={"path": "Main.Nope", "scan": 1})
+    assert unknown.status_code == 422
+    assert unknown.json()["detail"]["message"] == "MAIN has no variable 'Nope'"
+    info = client.post(f"/api/simulations/{counter}/live").json()
+    assert info["history"]["viewing"] is None
