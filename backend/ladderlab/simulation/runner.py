@@ -613,7 +613,7 @@ class SimRunner:
         history = self._recorded()
         try:
             view = history.seek(scan - 1)
-        except HistoryUnavailable as error:
+        except HistoryUnavailable:
             raise CommandError("bad_value", _shown_numbers(scan, history)) from None
         self._view, self._viewing, self._full = view, scan, True
         self._view_reader = view.reader(self._union_locations)
