@@ -1,12 +1,13 @@
 // The simulation controls, always visible over the editor: Check, Compile & simulate, Run, Stop,
 // Single cycle, Reset, Go offline; the online/offline state; the number of active forces with
 // Release all forces; the prepared values (force / write / clear); scan counter, virtual time and
-// the last scan time. Compile & simulate saves unsaved changes first (the server compiles the saved
+// the last scan time; the scan history's timeline (HistoryBar.tsx). Compile & simulate saves unsaved changes first (the server compiles the saved
 // project). Keys (CODESYS's) come from the keymap and are handled by project/useAppKeys.ts.
 import { panelsStore, usePanels } from "../panels/store";
 import { workspaceStore } from "../project/store";
 import { onlineStore, useOnline } from "./store";
 import { formatClock } from "./values";
+import { HistoryBar } from "./HistoryBar";
 import { keysOf, type CommandOf } from "../keys/keymap";
 
 /** Saves pending changes, then checks or compiles the saved project. */
@@ -151,6 +152,7 @@ export function SimulationBar() {
           last scan <strong>{lastScanMs === null ? "—" : `${lastScanMs.toFixed(3)} ms`}</strong>
         </span>
       </span>
+      <HistoryBar />
       {error ? (
         <span className="online-error" role="alert">
           {error}

@@ -1,7 +1,7 @@
 // What the browser knows about a running simulation, folded from the server's monitor messages.
 // Pure functions only (the store and the views call them), so the handling of every message kind
 // is unit-tested without a socket. Paths are compared in upper case, as IEC names ignore case.
-import type { DisplayType, Log } from "../generated/monitor";
+import type { DisplayType, HistoryRange, Log } from "../generated/monitor";
 import type { PowerState, ServerMessage, SimulationState, Value, Where } from "./protocol";
 
 /** What a log entry is about (ON-15), as the server's `log` messages say. */
@@ -52,6 +52,8 @@ export interface MonitorState {
   /** Engine power by "<instance>/<element id>"; null = not executed in the last scan. */
   power: Readonly<Record<string, PowerState>>;
   log: readonly LogEntry[];
+  /** The scan history's range and the past scan shown instead of the live one (`viewing`); null: none kept. */
+  history: HistoryRange | null;
 }
 
 /** The online log keeps this many entries (older ones are dropped). */
@@ -68,6 +70,7 @@ export const emptyMonitor: MonitorState = {
   injected: {},
   power: {},
   log: [],
+  history: null,
 };
 
 /**
@@ -119,6 +122,7 @@ export function applyMessage(state: MonitorState, message: ServerMessage): Monit
         forced: new Set(message.forced.map(pathKey)),
         injected: Object.fromEntries(Object.entries(message.injected ?? {}).map(([p, mode]) => [pathKey(p), mode])),
         power: { ...state.power, ...message.power },
+        history: message.history ?? null,
       };
     }
     case "status":

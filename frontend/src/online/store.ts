@@ -95,6 +95,10 @@ export interface OnlineActions {
   force(path: string, value: WriteValue): void;
   unforce(path: string): void;
   unforceAll(): void;
+  /** Shows past scan `scan` from the scan history (values as `values.scan` numbers them); the live scans go on. */
+  seek(scan: number): void;
+  /** Shows the live scans again after `seek`. */
+  goLive(): void;
   /** Prepares `value` for `path` (null: drops its prepared value). */
   prepare(path: string, value: WriteValue | null): void;
   /** Forces (F7) or writes (Ctrl+F7) every prepared value, then forgets them. */
@@ -361,6 +365,8 @@ export function createOnlineStore(
       force: (path, value) => void get().send({ type: "force", path, value }),
       unforce: (path) => void get().send({ type: "unforce", path }),
       unforceAll: () => void get().send({ type: "unforce_all" }),
+      seek: (scan) => void get().send({ type: "seek", scan }),
+      goLive: () => void get().send({ type: "live" }),
 
       prepare(path, value) {
         const next = { ...get().prepared };

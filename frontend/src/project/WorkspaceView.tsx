@@ -11,6 +11,7 @@ import type { History } from "../ld/history";
 import { operandPath } from "../online/ldBinding";
 import { onlineStore, useOnline } from "../online/store";
 import { SimulationBar } from "../online/SimulationBar";
+import { HistoryBanner } from "../online/HistoryBar";
 import { instanceOf, useLdOnline } from "../online/useLdOnline";
 import { BottomPanels } from "../panels/BottomPanels";
 import { focusOf, panelsStore, usePanels } from "../panels/store";
@@ -797,6 +798,7 @@ export function WorkspaceView() {
         <ProjectTree />
       </ViewBoundary>
       <div className="editor-area">
+        <HistoryBanner />
         <ViewBoundary name="The debugging bar">
           <DebugBar networksOf={networksOf} reveal={revealPlace} />
         </ViewBoundary>
