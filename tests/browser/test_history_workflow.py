@@ -1,0 +1,80 @@
+"""Scan history in the real Chromium (issue 23 item 3): the example ``motor`` (Main in LD, the seal-in rung
+``Motor := (Start OR Motor) AND NOT Stop``) runs three single cycles, Start is written TRUE, three more
+cycles; the timeline in the toolbar goes back to scan 2 (the Motor coil is off, as it was), steps forward
+to scan 4 (the first scan after the write: the coil is on), the simulation runs on meanwhile without the
+view moving, and Live shows the running scans again. The test fails on any page or console error.
+Screenshot: tests/browser/artifacts/history-scan-2.png."""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from .conftest import ARTIFACTS
+from .steps import go_online, open_pou
+
+pytestmark = pytest.mark.browser
+
+
+def _coil(page, state: str) -> None:
+    page.wait_for_function(
+        f"() => document.querySelector('g.ld-coil[data-id=motor]')?.classList.contains('ld-{state}')"
+    )
+
+
+def test_go_back_to_a_scan_and_see_the_diagram_as_it_was(page, server):
+    page.goto(server)
+    open_pou(page, "motor", "Main")
+    page.locator('g.ld-element[data-id="motor"]').wait_for()
+    go_online(page, run=False)
+    scan = page.get_by_test_id("scan-count")
+    cycle = page.get_by_role("button", name="Single cycle")
+    for number in (1, 2, 3):
+        cycle.click()
+        scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
+    _coil(page, "off")
+    start = page.locator('g.ld-element[data-id="start"]')
+    start.locator(".ld-hit").dblclick()  # prepares TRUE; Ctrl+F7 writes it before the next scan
+    start.locator(".ld-prepared").filter(has_text="<TRUE>").wait_for()
+    page.keyboard.press("Control+F7")
+    for number in (4, 5, 6):
+        cycle.click()
+        scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
+    _coil(page, "on")
+
+    timeline = page.get_by_role("group", name="Scan history")
+    slider = timeline.get_by_role("slider", name="Scan")
+    assert slider.get_attribute("max") == "6"
+    slider.fill("2")
+    banner = page.get_by_role("status", name="History view")
+    banner.filter(has_text="Viewing scan 2 (history)").wait_for()
+    scan.filter(has_text=re.compile("^2$")).wait_for()
+    _coil(page, "off")
+    page.screenshot(path=str(ARTIFACTS / "history-scan-2.png"))
+
+    forward = timeline.get_by_role("button", name="▶")
+    forward.click()
+    banner.filter(has_text="Viewing scan 3 (history)").wait_for()
+    _coil(page, "off")
+    forward.click()
+    banner.filter(has_text="Viewing scan 4 (history)").wait_for()
+    _coil(page, "on")  # Start was written before scan 4: the seal-in holds from there
+
+    slider.focus()
+    page.keyboard.press("ArrowLeft")  # the arrow keys step one scan
+    banner.filter(has_text="Viewing scan 3 (history)").wait_for()
+    _coil(page, "off")
+
+    page.get_by_role("button", name="Run", exact=True).click()  # the live simulation goes on; the view stays
+    page.get_by_role("status", name="Online state").filter(has_text="Online · running").wait_for()
+    page.wait_for_function(
+        "() => Number(document.querySelector('[aria-label=\"Scan history\"] input')?.max) > 10"
+    )
+    assert scan.inner_text() == "3"
+    assert banner.inner_text().startswith("Viewing scan 3 (history)")
+
+    timeline.get_by_role("button", name="Live").click()
+    banner.wait_for(state="detached")
+    _coil(page, "on")
+    page.wait_for_function("() => Number(document.querySelector('[data-testid=scan-count]').textContent) > 10")
