@@ -1,0 +1,30 @@
+import { describe, expect, it } from "vitest";
+import { shownScan, stepScan } from "./HistoryBar";
+import { applyMessage, emptyMonitor } from "./monitor";
+
+describe("scan history in the monitor state (issue 23)", () => {
+  it("takes the history range of every values message, and null when a message has none", () => {
+    const viewing = applyMessage(emptyMonitor, {
+      type: "values",
+      scan: 3,
+      time_ms: 30,
+      changed: { "MAIN.COUNT": 3 },
+      forced: [],
+      power: {},
+      history: { first: 1, last: 10, viewing: 3, bytes: 100, budget_bytes: 1000 },
+    });
+    expect(viewing.history).toEqual({ first: 1, last: 10, viewing: 3, bytes: 100, budget_bytes: 1000 });
+    expect(viewing.scan).toBe(3);
+    const none = applyMessage(viewing, { type: "values", scan: 11, time_ms: 110, changed: {}, forced: [], power: {} });
+    expect(none.history).toBeNull();
+  });
+
+  it("shows the scan viewed, else the live one, and steps within the range only", () => {
+    expect(shownScan({ last: 10, viewing: null })).toBe(10);
+    expect(shownScan({ last: 10, viewing: 4 })).toBe(4);
+    expect(stepScan({ first: 1, last: 10 }, 4, -1)).toBe(3);
+    expect(stepScan({ first: 1, last: 10 }, 1, -1)).toBeNull();
+    expect(stepScan({ first: 1, last: 10 }, 10, 1)).toBeNull();
+    expect(stepScan({ first: 1, last: 10 }, 9, 1)).toBe(10);
+  });
+});
