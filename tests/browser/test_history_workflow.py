@@ -68,9 +68,7 @@ def test_go_back_to_a_scan_and_see_the_diagram_as_it_was(page, server):
 
     page.get_by_role("button", name="Run", exact=True).click()  # the live simulation goes on; the view stays
     page.get_by_role("status", name="Online state").filter(has_text="Online · running").wait_for()
-    page.wait_for_function(
-        "() => Number(document.querySelector('[aria-label=\"Scan history\"] input')?.max) > 10"
-    )
+    page.wait_for_function("() => Number(document.querySelector('[aria-label=\"Scan history\"] input')?.max) > 10")
     assert scan.inner_text() == "3"
     assert banner.inner_text().startswith("Viewing scan 3 (history)")
 

@@ -76,3 +76,24 @@ def test_seek_over_rest_and_the_history_in_the_simulation_info(client: TestClien
     assert unknown.json()["detail"]["message"] == "MAIN has no variable 'Nope'"
     info = client.post(f"/api/simulations/{counter}/live").json()
     assert info["history"]["viewing"] is None
+
+
+def test_find_where_a_condition_became_true_and_the_diff_of_two_scans(client: TestClient, counter: str) -> None:
+    """Issue 23 item 3: "where <condition> became TRUE" (Count >= 4 first holds after scan 4; Flag toggles every
+    scan, so NOT Flag becomes TRUE every second scan) and the variables that differ between two scans."""
+    for _ in range(8):
+        client.post(f"/api/simulations/{counter}/cycle")
+    find = f"/api/simulations/{counter}/history/find"
+    assert client.get(find, params={"condition": "Main.Count >= 4", "scan": 1}).json() == {"scan": 4}
+    assert client.get(find, params={"condition": "Main.Count >= 4", "scan": 4}).json() == {"scan": None}
+    assert client.get(find, params={"condition": "Main.Flag", "scan": 1}).json() == {"scan": 3}
+    assert client.get(find, params={"condition": "Main.Flag", "scan": 8, "direction": -1}).json() == {"scan": 7}
+    refused = client.get(find, params={"condition": "Main.Count", "scan": 1})
+    assert refused.status_code == 422
+    assert refused.json()["detail"]["message"] == "'Main.Count': MAIN.COUNT is not a BOOL; compare it, e.g. MAIN.COUNT > 0"
+    outside = client.get(find, params={"path": "Main.Count", "scan": 9})
+    assert outside.json()["detail"]["message"] == "scan 9 is not in the history (scans 1 to 8)"
+
+    diff = client.get(f"/api/simulations/{counter}/history/diff", params={"first": 2, "second": 5}).json()
+    # Count 2 -> 5, Flag TRUE after an odd number of scans; Result, Divisor, Idle, Kept, Trig unchanged
+    assert diff == {"first": 2, "second": 5, "differences": {"MAIN.COUNT": [2, 5], "MAIN.FLAG": [False, True]}}

@@ -12,7 +12,7 @@ from typing import Literal
 from pydantic import BaseModel, ConfigDict, Field
 
 from .diagnostics import Diagnostic
-from .monitor import HistoryRange
+from .monitor import HistoryRange, Value
 from .project import Project
 
 
@@ -215,6 +215,16 @@ class HistoryFound(BaseModel):
     """``GET /api/simulations/{id}/history/find``: the scan where the variable changed (null: none kept)."""
 
     scan: int | None
+
+
+class HistoryDiff(BaseModel):
+    """``GET /api/simulations/{id}/history/diff``: the variables that differ between the ends of two scans."""
+
+    model_config = ConfigDict(ser_json_inf_nan="strings")
+
+    first: int
+    second: int
+    differences: dict[str, list[Value]] = Field(description="Canonical path -> [its value in first, in second].")
 
 
 class ResetSimulation(BaseModel):

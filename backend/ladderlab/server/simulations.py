@@ -14,7 +14,7 @@ from typing import Annotated, Any
 
 from fastapi import APIRouter, Body, Depends, Request, Response, status
 
-from ..model.api import HistoryFound, ResetSimulation, ScanTimes, SeekScan, SimulationInfo
+from ..model.api import HistoryDiff, HistoryFound, ResetSimulation, ScanTimes, SeekScan, SimulationInfo
 from ..simulation.registry import SimulationEntry, SimulationRegistry
 from ..simulation.remote import BuildFailed
 from ..simulation.runner import CommandError
@@ -142,16 +142,34 @@ def live(sim_id: str, registry: RegistryDep) -> SimulationInfo:
 
 
 @router.get("/api/simulations/{sim_id}/history/find", response_model=HistoryFound, responses=_DESCRIBED)
-def history_find(sim_id: str, registry: RegistryDep, path: str, scan: int, direction: int = 1) -> HistoryFound:
-    """The next (``direction`` 1) or previous (-1) scan from ``scan`` where the value of ``path`` changed, from
-    the scan history; ``scan`` null when the history holds none."""
+def history_find(
+    sim_id: str,
+    registry: RegistryDep,
+    scan: int,
+    direction: int = 1,
+    path: str | None = None,
+    condition: str | None = None,
+) -> HistoryFound:
+    """The next (``direction`` 1) or previous (-1) scan from ``scan`` where the value of ``path`` changed, or
+    where ``condition`` (as run until takes it: ``Motor``, ``Tank.Level >= 80``) became TRUE, from the scan
+    history; ``scan`` null when the history holds none."""
+    args = {"scan": scan, "direction": direction, "path": path, "condition": condition}
+    return HistoryFound(scan=_history_call(registry.get(sim_id), "history_find", args))
+
+
+@router.get("/api/simulations/{sim_id}/history/diff", response_model=HistoryDiff, responses=_DESCRIBED)
+def history_diff(sim_id: str, registry: RegistryDep, first: int, second: int) -> HistoryDiff:
+    """The variables whose values differ between the ends of two scans of the history, with both values."""
+    differences = _history_call(registry.get(sim_id), "history_diff", {"first": first, "second": second})
+    return HistoryDiff(first=first, second=second, differences=differences)
+
+
+def _history_call(entry: SimulationEntry, op: str, args: dict[str, Any]) -> Any:
+    """A question to the scan history: it replays scans, so it may take longer than a command."""
     try:
-        handle = registry.get(sim_id).handle
-        timeout = handle.settings.build_timeout_s  # a search replays scans: it may take a while
-        found = handle.call("history_find", timeout=timeout, path=path, scan=scan, direction=direction)
+        return entry.handle.call(op, timeout=entry.handle.settings.build_timeout_s, **args)
     except CommandError as error:
         raise ApiError(409 if error.code == "bad_state" else 422, error.message) from None
-    return HistoryFound(scan=found)
 
 
 @router.delete(

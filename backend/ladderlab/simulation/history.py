@@ -212,23 +212,44 @@ class History:
         """The nearest scan after (``direction`` 1) or before (-1) ``scan`` that changed ``path``: whose end
         value differs from the end value of the scan before it. None when the history holds none."""
         self.live.location(path)  # an unknown path fails before any replay
+        return self.find(lambda sim: sim.read(path), _differs, scan, direction)
+
+    def find(
+        self,
+        measure: Callable[[Simulation], object],
+        hit: Callable[[object, object], bool],
+        scan: int,
+        direction: int,
+    ) -> int | None:
+        """The nearest scan after (``direction`` 1) or before (-1) ``scan`` where ``hit(before, now)`` holds for
+        ``measure`` at the end of the scan before it and at its end; None when the history holds none."""
         if direction == 1:
-            previous = self.seek(scan).read(path)
+            previous = measure(self.seek(scan))
             for number in range(scan + 1, self.last + 1):
-                value = self.seek(number).read(path)  # stepping forward replays one scan each
-                if _differs(value, previous):
+                now = measure(self.seek(number))  # stepping forward replays one scan each
+                if hit(previous, now):
                     return number
-                previous = value
+                previous = now
             return None
         high = min(scan, self.last + 1) - 1
         while high > self.first:  # one checkpoint interval at a time, each replayed forward
             low = max(self.first, self._checkpoint_at(high).scan - 1)
-            values = [self.seek(number).read(path) for number in range(low, high + 1)]
+            values = [measure(self.seek(number)) for number in range(low, high + 1)]
             for offset in range(len(values) - 1, 0, -1):
-                if _differs(values[offset], values[offset - 1]):
+                if hit(values[offset - 1], values[offset]):
                     return low + offset
             high = low
         return None
+
+    def diff(self, first: int, second: int) -> dict[str, tuple[object, object]]:
+        """The variables whose values differ between the ends of two scans: path -> (first's, second's)."""
+        before = self.seek(first).snapshot()
+        after = self.seek(second).snapshot()
+        return {
+            path: (before.get(path), after.get(path))
+            for path in before.keys() | after.keys()
+            if _differs(before.get(path), after.get(path))
+        }
 
     def _checkpoint_at(self, scan: int) -> Checkpoint:
         """The newest checkpoint taken before scan ``scan`` ran."""
@@ -245,7 +266,7 @@ class History:
         return self._replay
 
 
-def _differs(value: object, old: object) -> bool:
+def _differs(old: object, value: object) -> bool:
     """Another value or another type (TRUE is not 1); a NaN that stays NaN has not changed."""
     if value == old and type(value) is type(old):
         return False

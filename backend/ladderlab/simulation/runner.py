@@ -623,21 +623,50 @@ class SimRunner:
         """Show the live scans again."""
         self._view, self._viewing, self._full = None, None, True
 
-    def history_find(self, path: str, scan: int, direction: int) -> int | None:
-        """The nearest scan after (``direction`` 1) or before (-1) ``scan`` whose end value of ``path`` differs
-        from the scan before it (numbered as frames number scans); None when the history holds none."""
+    def history_find(
+        self, scan: int, direction: int = 1, path: str | None = None, condition: str | None = None
+    ) -> int | None:
+        """The nearest scan after (``direction`` 1) or before (-1) ``scan`` where ``path`` changed (its end value
+        differs from the scan before) or ``condition`` became TRUE; numbered as frames number scans; None when
+        the history holds none."""
         history = self._recorded()
-        location = self._location(path)
+        if (path is None) == (condition is None):
+            raise CommandError("bad_value", "give a path or a condition to find (one of them)")
         if direction not in (-1, 1):
             raise CommandError("bad_value", f"direction is -1 (back) or 1 (forward), not {direction}")
+        self._in_history(scan)
+        if path is not None:
+            found = history.changed(self._location(path).path, scan - 1, direction)
+        else:
+            try:
+                until = parse_condition(condition or "", self.sim)
+            except BadCondition as error:
+                raise CommandError("bad_value", str(error)) from None
+            found = history.find(until.holds, lambda before, now: bool(now) and not before, scan - 1, direction)
+        self._back_to_view()
+        return found + 1 if found is not None else None
+
+    def history_diff(self, first: int, second: int) -> dict[str, list[object]]:
+        """The variables that differ between the ends of two scans (numbered as frames number them): path ->
+        [value in ``first``, value in ``second``], by path."""
+        history = self._recorded()
+        self._in_history(first)
+        self._in_history(second)
+        differences = history.diff(first - 1, second - 1)
+        self._back_to_view()
+        return {path: list(differences[path]) for path in sorted(differences)}
+
+    def _in_history(self, scan: int) -> None:
+        history = self._recorded()
         if not history.first + 1 <= scan <= history.last + 1:
             raise CommandError(
-                "bad_value", f"scan {scan} is not in the history ({history.first + 1} to {history.last + 1})"
+                "bad_value", f"scan {scan} is not in the history (scans {history.first + 1} to {history.last + 1})"
             )
-        found = history.changed(location.path, scan - 1, direction)
-        if self._viewing is not None:  # the search moved the replay: back to the scan shown
-            self._view = history.seek(self._viewing - 1)
-        return found + 1 if found is not None else None
+
+    def _back_to_view(self) -> None:
+        """A search moved the replay: back to the scan shown."""
+        if self._viewing is not None and self.history is not None:
+            self._view = self.history.seek(self._viewing - 1)
 
     def set_speed(self, scale: float) -> None:
         """Pace the scans at ``scale`` times real time; the virtual clock and every value stay the same."""
@@ -815,6 +844,7 @@ class SimRunner:
         "seek": seek,
         "live": live,
         "history_find": history_find,
+        "history_diff": history_diff,
     }
 
 
