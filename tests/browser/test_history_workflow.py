@@ -2,7 +2,7 @@
 ``Motor := (Start OR Motor) AND NOT Stop``) runs three single cycles, Start is written TRUE, three more
 cycles; the timeline in the toolbar goes back to scan 2 (the Motor coil is off, as it was), steps forward
 to scan 4 (the first scan after the write: the coil is on), the simulation runs on meanwhile without the
-view moving, and Live shows the running scans again. The test fails on any page or console error.
+view moving, and Live shows the running scans again; Find jumps to the scan where Motor became TRUE. The test fails on any page or console error.
 Screenshot: tests/browser/artifacts/history-scan-2.png."""
 
 from __future__ import annotations
@@ -76,3 +76,16 @@ def test_go_back_to_a_scan_and_see_the_diagram_as_it_was(page, server):
     banner.wait_for(state="detached")
     _coil(page, "on")
     page.wait_for_function("() => Number(document.querySelector('[data-testid=scan-count]').textContent) > 10")
+
+    # Find: the previous scan where Motor became TRUE is scan 4; Start changed in no scan after it.
+    page.get_by_role("button", name="Stop", exact=True).click()
+    page.get_by_role("status", name="Online state").filter(has_text="Online · stopped").wait_for()
+    timeline.get_by_label("Find in history").fill("Motor")
+    timeline.get_by_label("Find what").select_option("became TRUE")
+    timeline.get_by_role("button", name="Previous").click()
+    banner.filter(has_text="Viewing scan 4 (history)").wait_for()
+    _coil(page, "on")
+    timeline.get_by_label("Find in history").fill("Start")
+    timeline.get_by_label("Find what").select_option("changed")
+    timeline.get_by_role("button", name="Next").click()
+    page.get_by_role("status", name="History search").filter(has_text="no scan after 4 in the history").wait_for()

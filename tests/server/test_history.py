@@ -90,7 +90,9 @@ def test_find_where_a_condition_became_true_and_the_diff_of_two_scans(client: Te
     assert client.get(find, params={"condition": "Main.Flag", "scan": 8, "direction": -1}).json() == {"scan": 7}
     refused = client.get(find, params={"condition": "Main.Count", "scan": 1})
     assert refused.status_code == 422
-    assert refused.json()["detail"]["message"] == "'Main.Count': MAIN.COUNT is not a BOOL; compare it, e.g. MAIN.COUNT > 0"
+    assert (
+        refused.json()["detail"]["message"] == "'Main.Count': MAIN.COUNT is not a BOOL; compare it, e.g. MAIN.COUNT > 0"
+    )
     outside = client.get(find, params={"path": "Main.Count", "scan": 9})
     assert outside.json()["detail"]["message"] == "scan 9 is not in the history (scans 1 to 8)"
 

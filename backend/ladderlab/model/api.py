@@ -380,6 +380,9 @@ class ApiTypes(BaseModel):
     conflict_detail: ConflictDetail
     simulation_info: SimulationInfo
     reset_simulation: ResetSimulation
+    seek_scan: SeekScan
+    history_found: HistoryFound
+    history_diff: HistoryDiff
     st_export: StExport
     import_report: ImportReport
     fbd_order: FbdOrder

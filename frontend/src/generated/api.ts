@@ -11,6 +11,8 @@ export interface ApiTypes {
   error_detail: ErrorDetail;
   example_info: ExampleInfo;
   fbd_order: FbdOrder;
+  history_diff: HistoryDiff;
+  history_found: HistoryFound;
   import_report: ImportReport;
   library_entry: LibraryEntry;
   project_document: ProjectDocument;
@@ -18,6 +20,7 @@ export interface ApiTypes {
   rename_project: RenameProject;
   reset_simulation: ResetSimulation;
   save_result: SaveResult;
+  seek_scan: SeekScan;
   simulation_info: SimulationInfo;
   st_export: StExport;
   symbol_table: SymbolTable;
@@ -128,6 +131,40 @@ export interface FbdOrder {
    * Blocks, input, output, jump and return nodes; connectors have no place.
    */
   order: string[];
+}
+/**
+ * ``GET /api/simulations/{id}/history/diff``: the variables that differ between the ends of two scans.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "HistoryDiff".
+ */
+export interface HistoryDiff {
+  /**
+   * Canonical path -> [its value in first, in second].
+   */
+  differences: {
+    [k: string]: (
+      | boolean
+      | number
+      | string
+      | unknown[]
+      | {
+          [k: string]: unknown;
+        }
+      | null
+    )[];
+  };
+  first: number;
+  second: number;
+}
+/**
+ * ``GET /api/simulations/{id}/history/find``: the scan where the variable changed (null: none kept).
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "HistoryFound".
+ */
+export interface HistoryFound {
+  scan: number | null;
 }
 /**
  * ``POST /api/import/plcopen``: the stored project and what the import had to say (warnings).
@@ -1148,6 +1185,15 @@ export interface ResetSimulation {
 export interface SaveResult {
   modified: string;
   revision: string;
+}
+/**
+ * Body of ``POST /api/simulations/{id}/seek``: the scan to show, numbered as ``scan_count``.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "SeekScan".
+ */
+export interface SeekScan {
+  scan: number;
 }
 /**
  * ``GET /api/simulations/{id}``: one live simulation of a saved project.

@@ -2,7 +2,10 @@
 // the slider or stepping one scan back or forward (the buttons, or the arrow keys on the slider) shows
 // that scan as it was: every watched value, the LD power flow, FBD pins and ST inline values come from
 // the server recomputing it, while the live scans go on. "Live" shows them again. The banner over the
-// editors says that the diagrams show the past.
+// editors says that the diagrams show the past. "Find" jumps to the previous or next scan where a
+// variable changed or a condition (as Run until takes it: Motor, Tank.Level >= 80) became TRUE.
+import { useState } from "react";
+import { findInHistory } from "./api";
 import { onlineStore, useOnline } from "./store";
 
 /** The scan the history shows: the one viewed, else the live one. */
@@ -59,6 +62,58 @@ export function HistoryBar() {
       <span className="history-range" aria-label="History kept">
         from scan {history.first}
       </span>
+      <HistoryFind scan={scan} />
+    </span>
+  );
+}
+
+/** Jump to the previous or next scan where a variable changed or a condition became TRUE. */
+function HistoryFind({ scan }: { scan: number }) {
+  const [text, setText] = useState("");
+  const [what, setWhat] = useState<"changed" | "true">("changed");
+  const [note, setNote] = useState<string | null>(null);
+  const find = async (direction: 1 | -1) => {
+    const s = onlineStore.getState();
+    if (!s.simulation || !text.trim()) return;
+    const query = what === "changed" ? { path: text.trim() } : { condition: text.trim() };
+    try {
+      const found = await findInHistory(s.simulation, scan, direction, query);
+      setNote(found === null ? `no scan ${direction > 0 ? "after" : "before"} ${scan} in the history` : null);
+      if (found !== null) s.seek(found);
+    } catch (err) {
+      setNote(err instanceof Error ? err.message : String(err));
+    }
+  };
+  return (
+    <span className="history-find">
+      <input
+        aria-label="Find in history"
+        placeholder="Motor, Tank.Level >= 80"
+        value={text}
+        onChange={(event) => setText(event.target.value)}
+        onKeyDown={(event) => {
+          if (event.key === "Enter") void find(event.shiftKey ? -1 : 1);
+        }}
+      />
+      <select
+        aria-label="Find what"
+        value={what}
+        onChange={(event) => setWhat(event.target.value as "changed" | "true")}
+      >
+        <option value="changed">changed</option>
+        <option value="true">became TRUE</option>
+      </select>
+      <button type="button" onClick={() => void find(-1)} title="The previous scan where it happened (Shift+Enter)">
+        Previous
+      </button>
+      <button type="button" onClick={() => void find(1)} title="The next scan where it happened (Enter)">
+        Next
+      </button>
+      {note ? (
+        <span className="history-note" role="status" aria-label="History search">
+          {note}
+        </span>
+      ) : null}
     </span>
   );
 }

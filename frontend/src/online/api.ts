@@ -1,7 +1,7 @@
 // REST calls of online mode (issue 6): create a simulation from the saved project, reset, read its
 // statistics, delete it. Run, stop and single cycle go over the websocket with everything else.
 import { requestHeaders, requestJson } from "../api/client";
-import type { SimulationInfo } from "../generated/api";
+import type { HistoryFound, SimulationInfo } from "../generated/api";
 
 const simulationPath = (id: string) => `/api/simulations/${encodeURIComponent(id)}`;
 
@@ -34,6 +34,21 @@ export function resetSimulation(id: string, cold = false): Promise<SimulationInf
 
 export async function deleteSimulation(id: string): Promise<void> {
   await fetch(simulationPath(id), { method: "DELETE", headers: requestHeaders({ method: "DELETE" }) });
+}
+
+/** What to look for in the scan history: where `path` changed, or where `condition` became TRUE. */
+export type HistoryQuery = { path: string } | { condition: string };
+
+/** The next (1) or previous (-1) scan from `scan` that the history finds for `query`; null: none kept. */
+export async function findInHistory(
+  id: string,
+  scan: number,
+  direction: 1 | -1,
+  query: HistoryQuery,
+): Promise<number | null> {
+  const params = new URLSearchParams({ scan: String(scan), direction: String(direction), ...query });
+  const found = await requestJson<HistoryFound>(`${simulationPath(id)}/history/find?${params.toString()}`);
+  return found.scan ?? null;
 }
 
 /** The websocket address of a simulation, on the origin the app was served from. */
