@@ -23,7 +23,7 @@ from .bench_steps import (
     watch_errors,
     widget,
 )
-from .steps import store_project
+from .steps import new_pou, store_project
 
 pytestmark = pytest.mark.browser
 
@@ -202,4 +202,68 @@ def test_a_press_at_a_breakpoint_waits_for_the_next_scan(page, server):
     assert events == [
         {"scan": halted_at + 1, "kind": "panel", "path": "Auto", "value": True, "source": "panel Tank/mode"}
     ]
+    assert errors == []
+
+
+OVEN_GLOBALS = "VAR_GLOBAL\n    Start : BOOL;\n    Heater : BOOL;\n    Hot : BOOL;\n    Done : BOOL;\nEND_VAR"
+CONTROL = {
+    "name": "Control",
+    "kind": "program",
+    "language": "st",
+    "declarations": "VAR\nEND_VAR",
+    "body": "Heater := (Start OR Heater) AND NOT Hot;\nDone := Done OR Hot;",
+}
+OVEN_PANEL = {
+    "name": "Oven",
+    "widgets": [
+        _w("push_button", "start", 20, 20, 90, 44, bind="Start"),
+        _w("symbol", "heater", 140, 20, 60, 50, bind="Heater", shape="heater"),
+        _w("lamp", "hot", 230, 20, 30, 30, bind="Hot"),
+        _w("lamp", "done", 290, 20, 30, 30, bind="Done"),
+        _w("numeric_display", "temp", 20, 100, 120, 30, bind="Oven.Temp", decimals=1),
+    ],
+}
+
+
+def test_a_teacher_writes_a_plant_in_the_browser(page, server):
+    """Item 3, "teachers write their own plants": a new POU of kind plant, written in ST in the browser, is
+    listed under Plants, runs before the program in every scan and closes the loop through the panel: the
+    heater warms the oven 1 degree a scan up to 50 (Hot), the program switches it off and latches Done, the
+    oven cools down 0.5 a scan to 0."""
+    errors = watch_errors(page)
+    store_project(server, {"name": "oven", "globals": OVEN_GLOBALS, "pous": [CONTROL], "panels": [OVEN_PANEL]})
+    page.goto(server)
+    page.get_by_role("navigation", name="Projects").get_by_role("button", name=re.compile("^oven")).click()
+    page.get_by_role("heading", name="oven").wait_for()
+    new_pou(page, "Oven", language="st", kind="plant")
+    page.get_by_label("Oven body").wait_for()
+    for label, text in (
+        ("Oven declarations", "VAR\n    Temp : REAL;\nEND_VAR"),
+        (
+            "Oven body",
+            "IF Heater THEN\n    Temp := Temp + 1.0;\nELSIF Temp > 0.0 THEN\n    Temp := Temp - 0.5;\nEND_IF;\nHot := Temp >= 50.0;",
+        ),
+    ):
+        page.get_by_label(label).click()
+        page.keyboard.press("Control+a")
+        page.keyboard.insert_text(text)
+    page.keyboard.press("Control+s")
+    page.get_by_role("status").filter(has_text="All changes saved").wait_for()
+    plants = (
+        page.get_by_role("navigation", name="Project tree")
+        .locator("section")
+        .filter(has=page.get_by_role("heading", name="Plants", exact=True))
+    )
+    expect(plants.get_by_role("button", name=re.compile("^Oven"))).to_be_visible()
+    with urllib.request.urlopen(f"{server}/api/projects/oven", timeout=10) as answer:
+        stored = {p["name"]: p for p in json.load(answer)["project"]["pous"]}
+    assert (stored["Oven"]["kind"], stored["Oven"]["language"]) == ("plant", "st")
+
+    open_panel(page, "Oven")
+    go_online(page)
+    widget(page, "start").get_by_role("button").click()
+    expect_on(page, "done")  # the plant's heating made Hot TRUE for one scan: the program latched it
+    expect_on(page, "heater", False)
+    expect_text(page, "temp", "0.0")  # cooled down again, the heater off for good
+    assert widget(page, "hot").locator("[data-on]").first.get_attribute("data-on") == "false"
     assert errors == []
