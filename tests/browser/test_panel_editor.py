@@ -1,7 +1,8 @@
 """The panel editor and the panel online in a real browser (issue 21, item 1): a panel drawn from the palette
 (drag and click), bound with the operand autocomplete, resized, aligned, undone and redone, deleted from,
 saved and reloaded; online, a push button held with the mouse lights the lamp the program drives; the
-panel opened in its own window drives the same simulation, and a toggle works by touch there."""
+panel opened in its own window drives the same simulation, and a toggle (tapped) and the push button (held)
+work by touch there."""
 
 from __future__ import annotations
 
@@ -133,6 +134,16 @@ def test_draw_a_panel_save_it_and_operate_it_online_and_in_its_own_window(page, 
     expect_on(popup, "lamp1")
     popup.screenshot(path=str(ARTIFACTS / "panel-window.png"))
     tablet.touchscreen.tap(box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
+    expect_on(popup, "lamp1", False)
+    # the push button held by a finger: the lamp is on while the finger stays, off when it lifts
+    held = widget(tablet, "pushButton1").get_by_role("button").bounding_box()
+    finger = touch.new_cdp_session(tablet)
+    point = {"x": held["x"] + held["width"] / 2, "y": held["y"] + held["height"] / 2}
+    finger.send("Input.dispatchTouchEvent", {"type": "touchStart", "touchPoints": [point]})
+    expect_on(popup, "lamp1")
+    tablet.wait_for_timeout(300)
+    expect_on(popup, "lamp1")  # still held
+    finger.send("Input.dispatchTouchEvent", {"type": "touchEnd", "touchPoints": []})
     expect_on(popup, "lamp1", False)
     touch.close()
     assert errors == [] and popup_errors == [] and tablet_errors == []
