@@ -194,3 +194,33 @@ def test_a_panel_bound_to_direct_addresses_drives_the_motor(client, registry, mo
         ws.send_json({"type": "panel", "path": "%IX0.9", "value": True})
         error, _ = recv_until(ws, of_type("error"))
         assert error["code"] == "bad_path" and "no variable is declared at %IX0.9" in error["message"]
+
+
+def test_a_widget_bound_to_a_variable_the_program_lacks_stops_the_build_at_the_widget(client, registry):
+    """As CODESYS does for its visualisations: the panel could not show the variable, so the build says which
+    panel, widget and field, and the simulation does not start."""
+    client.post("/api/projects", json={"name": "tank", "example": "tank_filling"})
+    stored = client.get("/api/projects/tank").json()
+    project = stored["project"]
+    tank = project["panels"][0]
+    tank["widgets"][2]["bind"] = "Tank.Levl"
+    tank["widgets"][3]["visible"] = "%IX7.7"
+    saved = client.put("/api/projects/tank", json=project, headers={"If-Match": f'"{stored["revision"]}"'})
+    assert saved.status_code == 200, saved.text
+    response = client.post("/api/projects/tank/simulations")
+    assert response.status_code == 422
+    found = [(d["file"], d["json_path"], d["element"], d["message"]) for d in response.json()["detail"]["diagnostics"]]
+    assert found == [
+        (
+            "hmi/Tank.json",
+            "widgets[2].bind",
+            "tank",
+            "panel Tank, widget tank (bind): TANK has no variable 'Levl' - did you mean 'LEVEL'?",
+        ),
+        (
+            "hmi/Tank.json",
+            "widgets[3].visible",
+            "lsh",
+            "panel Tank, widget lsh (visible): no variable is declared at %IX7.7 (declare one with AT %IX7.7)",
+        ),
+    ]
