@@ -91,11 +91,15 @@ def test_fire_alarm_confirms_two_sensors_and_ignores_burnt_toast(page, server):
     """Seed 003 task 7 with the 2 s confirmation: toast lights the room's lamp, never the siren; a fire sounds
     it 2 s after the second sensor; off silences it once the fire is out."""
     errors = open_example_online(page, server, "fire_alarm", "fire", "Building")
-    press(page, "toast1", hold_ms=1500)
-    expect_on(page, "lamp1")
+    widget(page, "toast1").get_by_role("button").hover()
+    page.mouse.down()  # burnt toast while held: the middle sensor sees smoke, the room's lamp lights
     expect_on(page, "d12")
-    expect_on(page, "lamp1", False)
+    expect_on(page, "lamp1")
+    page.wait_for_timeout(2500)  # longer than the 2 s confirmation: one sensor is no vote
     assert lamp(page, "siren").get_attribute("data-on") == "false"
+    page.mouse.up()
+    expect_on(page, "d12", False)
+    expect_on(page, "lamp1", False)
     widget(page, "fire2").get_by_role("switch").click()
     expect_on(page, "d21")
     expect_on(page, "lamp2")

@@ -217,3 +217,42 @@ def test_the_same_events_give_the_same_scans():
                 replay.submit(InputEvent.from_json(line))
         replay.cycle()
         assert replay.snapshot() == expected[scan], scan
+
+
+LOCATED = st_pou(
+    "Main",
+    "program",
+    "VAR_EXTERNAL\n    Start : BOOL;\n    Lamp : BOOL;\nEND_VAR\nVAR\n    Level AT %IW2 : INT;\n    Twice : INT;\nEND_VAR",
+    "Lamp := Start;\nTwice := Level * 2;",
+)
+LOCATED_GLOBALS = "VAR_GLOBAL\n    Start AT %IX0.0 : BOOL;\n    Lamp AT %QX0.0 : BOOL;\nEND_VAR"
+
+
+def test_a_panel_bound_to_a_direct_address_drives_the_variable_declared_at_it():
+    """Issue 21 item 1, widgets bound to direct addresses (IEC 61131-3 2.4.1.1): %IX0.0 is the global Start,
+    %IW2 the program's Level; values and faults are reported under the address the panel used."""
+    sim = simulate(LOCATED, globals=LOCATED_GLOBALS)
+    applied = _recording(sim)
+    sim.submit(InputEvent("panel", "%ix0.0", True, source="panel P/start"))
+    sim.submit(InputEvent("panel", "%IW2", 21))
+    sim.cycle()
+    assert (sim.read("Lamp"), sim.read("%QX0.0"), sim.read("Main.Twice"), sim.read("%iw2")) == (True, True, 42, 21)
+    assert [(a.scan, a.event.path, a.event.value) for a in applied] == [(0, "%ix0.0", True), (0, "%IW2", 21)]
+    sim.submit(InputEvent("fault", "%IX0.0", mode="stuck_false"))
+    sim.cycle()
+    assert (sim.read("Lamp"), sim.read("%QX0.0")) == (False, False)
+
+
+@pytest.mark.parametrize(
+    ("path", "error"),
+    [
+        ("%IX9.9", "no variable is declared at %IX9.9 (declare one with AT %IX9.9)"),
+        ("%Q", "'%Q' is not a direct address (e.g. %IX0.0, %QW2, %MD10)"),
+        ("%IX0.0.", "'%IX0.0.' is not a direct address"),
+    ],
+)
+def test_an_address_nothing_is_declared_at_is_refused_with_the_reason(path, error):
+    sim = simulate(LOCATED, globals=LOCATED_GLOBALS)
+    with pytest.raises((KeyError, ValueError)) as refused:
+        sim.read(path)
+    assert error in str(refused.value)

@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from ladderlab.engine.compile import CompileError
 from ladderlab.engine.simulation import Simulation
@@ -183,3 +185,31 @@ def test_an_interrupted_pacer_returns_after_a_scan_and_keeps_its_schedule():
     assert pacer.poll() == 0.0 and sim.scan_count == 1 and sim.time_ms == 10
     waiting[0] = False
     assert pacer.poll() == pytest.approx(0.004) and sim.time_ms == 25 and sim.scan_count == 3
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    first=st.sampled_from([0.1, 0.2, 0.5, 1.0, 2.0, 5.0, 10.0, 50.0, 100.0]),
+    second=st.sampled_from([0.1, 0.2, 0.5, 1.0, 2.0, 5.0, 10.0, 50.0, 100.0]),
+    walls=st.tuples(st.integers(0, 120), st.integers(0, 120)),
+)
+def test_the_time_scale_only_paces_the_virtual_clock(first, second, walls):
+    """LAB time scale (issue 21, 0.1x to 100x): after ``walls`` ms of wall time at ``first`` then at ``second``
+    times real time, exactly the scans due by ``first * wall1 + second * wall2`` virtual ms have run (FAST
+    every 10 ms, SLOW every 25 ms), and they are the same scans a plain run of as many cycles makes."""
+    sim, clock = _two_tasks(), _FakeClock()
+    pacer = Pacer(sim, clock=clock, speed=first)
+    for speed, wall in zip((first, second), walls, strict=True):
+        pacer.set_speed(speed)
+        for _ in range(wall):
+            clock.now += 0.001
+            pacer.poll()
+    virtual = first * walls[0] + second * walls[1]
+    due = sorted({t for t in range(10, int(virtual) + 2, 10)} | {t for t in range(25, int(virtual) + 2, 25)})
+    due = [t for t in due if t <= virtual + 1e-6]
+    assert (sim.scan_count, sim.time_ms) == (len(due), due[-1] if due else 0)
+    plain = _two_tasks()
+    plain.cycle(len(due))
+    assert [sim.read(p) for p in ("FASTP.RUNS", "SLOWP.RUNS", "ALSO.RUNS")] == [
+        plain.read(p) for p in ("FASTP.RUNS", "SLOWP.RUNS", "ALSO.RUNS")
+    ]

@@ -11,9 +11,9 @@ from fastapi.testclient import TestClient
 from ladderlab.examples import EXAMPLES_DIR, example_names
 from ladderlab.simulation.registry import SimulationRegistry
 
-from .test_simulations_support import log_of, of_type, recv, recv_until, registry, subscribe, wait_for
+from .test_simulations_support import log_of, motor_sim, of_type, recv, recv_until, registry, subscribe, wait_for
 
-__all__ = ["registry"]
+__all__ = ["motor_sim", "registry"]
 
 
 def _tank(client: TestClient, registry: SimulationRegistry) -> str:
@@ -179,3 +179,48 @@ def test_exports_leave_the_plants_out_unless_asked(client):
     xml = client.get("/api/projects/tank/export/plcopen").text
     assert 'name="Tank"' not in xml and 'name="Filling"' in xml
     assert 'name="Tank"' in client.get("/api/projects/tank/export/plcopen", params={"with_plants": True}).text
+
+
+def test_a_panel_bound_to_direct_addresses_drives_the_motor(client, registry, motor_sim):
+    """Widgets may be bound to direct addresses (issue 21 item 1): the motor example declares Start AT %IX0.0
+    and Motor AT %QX0.0; a press at %IX0.0 seals the motor in, reported under the addresses subscribed."""
+    with client.websocket_connect(_ws(motor_sim)) as ws:
+        recv(ws)
+        assert subscribe(ws, ["%IX0.0", "%QX0.0"])["changed"] == {"%IX0.0": False, "%QX0.0": False}
+        ws.send_json({"type": "panel", "path": "%IX0.0", "value": True, "panel": "Desk", "widget": "start"})
+        ws.send_json({"type": "single_cycle"})
+        values, _ = recv_until(ws, lambda m: m["type"] == "values" and m["scan"] == 1)
+        assert values["changed"] == {"%IX0.0": True, "%QX0.0": True}
+        ws.send_json({"type": "panel", "path": "%IX0.9", "value": True})
+        error, _ = recv_until(ws, of_type("error"))
+        assert error["code"] == "bad_path" and "no variable is declared at %IX0.9" in error["message"]
+
+
+def test_a_widget_bound_to_a_variable_the_program_lacks_stops_the_build_at_the_widget(client, registry):
+    """As CODESYS does for its visualisations: the panel could not show the variable, so the build says which
+    panel, widget and field, and the simulation does not start."""
+    client.post("/api/projects", json={"name": "tank", "example": "tank_filling"})
+    stored = client.get("/api/projects/tank").json()
+    project = stored["project"]
+    tank = project["panels"][0]
+    tank["widgets"][2]["bind"] = "Tank.Levl"
+    tank["widgets"][3]["visible"] = "%IX7.7"
+    saved = client.put("/api/projects/tank", json=project, headers={"If-Match": f'"{stored["revision"]}"'})
+    assert saved.status_code == 200, saved.text
+    response = client.post("/api/projects/tank/simulations")
+    assert response.status_code == 422
+    found = [(d["file"], d["json_path"], d["element"], d["message"]) for d in response.json()["detail"]["diagnostics"]]
+    assert found == [
+        (
+            "hmi/Tank.json",
+            "widgets[2].bind",
+            "tank",
+            "panel Tank, widget tank (bind): TANK has no variable 'Levl' - did you mean 'LEVEL'?",
+        ),
+        (
+            "hmi/Tank.json",
+            "widgets[3].visible",
+            "lsh",
+            "panel Tank, widget lsh (visible): no variable is declared at %IX7.7 (declare one with AT %IX7.7)",
+        ),
+    ]

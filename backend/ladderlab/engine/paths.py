@@ -1,4 +1,5 @@
-"""Variable paths of a running simulation: ``MAIN.T1.Q``, ``GVL.START`` or ``START``, ``MAIN.ARR[3]``, ``MAIN.S.F``.
+"""Variable paths of a running simulation: ``MAIN.T1.Q``, ``GVL.START`` or ``START``, ``MAIN.ARR[3]``, ``MAIN.S.F``,
+and direct addresses (``%IX0.0``: the variable declared AT it).
 
 Names are matched case-insensitively against the IR's canonical names; the
 first segment is a program instance, else ``GVL`` (the globals), else a global.
@@ -12,7 +13,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from ..iec import values
 from ..iec.spelling import did_you_mean
@@ -25,6 +26,7 @@ from .codegen.typeinfo import describe, is_composite, runtime_name
 
 GLOBALS_PREFIX = "GVL"
 _DEREF = object()  # step into a VAR_IN_OUT reference
+_ADDRESS = re.compile(r"%[IQM][XBWDL]?\d+(?:\.\d+)*")
 _TOKEN = re.compile(r"\s*(?:(?P<name>[A-Za-z_][A-Za-z0-9_]*)|(?P<int>[+-]?\d+)|(?P<punct>[.\[\],]))")
 
 
@@ -117,6 +119,8 @@ class Resolver:
     def _resolve(self, text: str) -> Location:
         if not isinstance(text, str):
             raise ValueError(f"a variable path must be text, not {text!r}")
+        if text.lstrip().startswith("%"):
+            return self._address(text)
         toks = tokens(text)
         if not toks or toks[0][0] != "name":
             raise ValueError(f"{text!r} is not a variable path (it must start with a name)")
@@ -130,6 +134,24 @@ class Resolver:
             name, rest = self._member_name(rest, text)
             return self._global(text, name, rest)
         return self._global(text, toks[0][1], rest, top=True)
+
+    def _address(self, text: str) -> Location:
+        """A direct address (``%IX0.0``, ``%QW3``) names the variable declared AT it, globally or in a program;
+        the location keeps the address as its path, so values and forces are reported under it."""
+        address = text.strip().upper()
+        if not _ADDRESS.fullmatch(address):
+            raise ValueError(f"{text!r} is not a direct address (e.g. %IX0.0, %QW2, %MD10)")
+        for place in self.context.globals.places.values():  # type: ignore[union-attr]
+            if (place.slot.address or "").upper() == address:
+                return replace(self._global(text, place.slot.name, []), path=address)
+        for program in self.programs:
+            layout = self.context.layouts[program]
+            for place in layout.places.values():
+                if (place.slot.address or "").upper() == address:
+                    return replace(
+                        self._walk(text, program, ("program", program), layout, place.slot.name, []), path=address
+                    )
+        raise UnknownPath(f"no variable is declared at {address} (declare one with AT {address})")
 
     def _member_name(self, rest: list, text: str) -> tuple[str, list]:
         if len(rest) < 2 or rest[0] != ("punct", ".") or rest[1][0] != "name":

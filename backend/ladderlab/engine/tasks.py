@@ -216,10 +216,13 @@ class Pacer:
         )  # (wall s, virtual ms) in step; None: re-anchor
 
     def set_speed(self, speed: float) -> None:
-        """Pace at ``speed`` from now on (time so far keeps its pace: the pacer re-anchors)."""
+        """Pace at ``speed`` from now on: the virtual time reached so far at the old speed is kept (the pacer
+        re-anchors there), so a change of scale neither loses nor gains virtual time."""
         if not speed > 0:
             raise ValueError("speed must be positive")
-        self.speed, self._anchor = speed, None
+        if self._anchor is not None:
+            self._anchor = (self.clock(), self._virtual_now())
+        self.speed = speed
 
     def _virtual_now(self) -> float:
         if self._anchor is None:

@@ -3,11 +3,12 @@
 A panel is stored as ``hmi/<name>.json`` in the project folder (sorted keys, defaults left out).
 Widgets are placed in pixels (``x``, ``y``, ``w``, ``h``) on a canvas of ``width`` x ``height``;
 ``grid`` is the snap of the editor (0: free placement). A binding is a variable path as the watch
-list takes it (``Start``, ``Main.Level``, ``Tank.Valve.Q``; direct addresses where the engine has
-them). Input widgets send their actions as panel input events (applied at the start of the next
-scan, docs/architecture.md "Inputs"); every widget can be shown only while a BOOL is TRUE
-(``visible``) and moved by a number (``move_x``, ``move_y``), which animates plants: boxes on a
-conveyor, a door, a cylinder. docs/hmi.md describes every widget.
+list takes it (``Start``, ``Main.Level``, ``Tank.Valve.Q``) or a direct address (``%IX0.0``: the
+variable declared AT it); a binding the program lacks is an error of the build (simulation/build.py).
+Input widgets send their actions as panel input events (applied at the start of the next scan,
+docs/architecture.md "Inputs"); every widget can be shown only while a BOOL is TRUE (``visible``) and
+moved by a number (``move_x``, ``move_y``), which animates plants: boxes on a conveyor, a door, a
+cylinder. docs/hmi.md describes every widget.
 """
 
 from __future__ import annotations
@@ -58,6 +59,21 @@ class _Widget(BaseModel):
     visible: Binding | None = Field(default=None, description="A BOOL: the widget is shown only while it is TRUE.")
     move_x: Motion | None = None
     move_y: Motion | None = None
+
+    def bindings(self) -> list[tuple[str, str]]:
+        """Every variable path the widget reads or writes, with the field that holds it (``bind``,
+        ``paths[1]``, ``move_x.path``), in field order."""
+        found: list[tuple[str, str]] = []
+        for field in ("bind", "fault", "visible"):
+            path = getattr(self, field, None)
+            if path:
+                found.append((field, path))
+        for field in ("move_x", "move_y"):
+            motion = getattr(self, field)
+            if motion is not None:
+                found.append((f"{field}.path", motion.path))
+        found += [(f"paths[{i}]", path) for i, path in enumerate(getattr(self, "paths", None) or [])]
+        return found
 
 
 class PushButton(_Widget):

@@ -9,6 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from ..engine.compile import CompiledProgram, CompileError, compile_program
+from ..engine.paths import Resolver
 from ..engine.simulation import Simulation
 from ..engine.tasks import DEFAULT_WATCHDOG_S
 from ..ir.lower_project import lower_project
@@ -42,9 +43,35 @@ def build_project(project: Project, variant: str = "fast") -> Build:
         return Build(None, diagnostics)
     watchdogs = task_watchdogs(project)
     try:
-        return Build(compile_program(lowered.program, variant), diagnostics, watchdogs)
+        compiled = compile_program(lowered.program, variant)
     except CompileError as error:
         return Build(None, diagnostics + error.diagnostics)
+    unbound = panel_diagnostics(project, compiled)
+    return Build(None if unbound else compiled, diagnostics + unbound, watchdogs)
+
+
+def panel_diagnostics(project: Project, compiled: CompiledProgram) -> list[Diagnostic]:
+    """A panel's widget bound to a variable the program does not have is an error of the build (as in CODESYS
+    visualisations), located at the panel file and the widget: online, the panel could not show it."""
+    resolver = Resolver(compiled.generated.context)
+    found: list[Diagnostic] = []
+    for panel in project.panels:
+        for index, widget in enumerate(panel.widgets):
+            for where, path in widget.bindings():
+                try:
+                    resolver.resolve(path)
+                except (KeyError, ValueError) as error:
+                    reason = str(error.args[0]) if error.args else str(error)
+                    found.append(
+                        Diagnostic(
+                            code="panel_binding",
+                            message=f"panel {panel.name}, widget {widget.id} ({where}): {reason}",
+                            file=f"hmi/{panel.name}.json",
+                            json_path=f"widgets[{index}].{where}",
+                            element=widget.id,
+                        )
+                    )
+    return found
 
 
 def task_watchdogs(project: Project) -> dict[str, float]:

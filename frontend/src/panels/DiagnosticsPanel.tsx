@@ -1,12 +1,14 @@
 // The Diagnostics panel: the last Check (or a refused compile), errors first; a click opens the
-// POU and reveals the network, element or line the diagnostic names.
+// POU and reveals the network, element or line the diagnostic names (or opens the operator panel).
 import type { Diagnostic } from "../generated/api";
-import { focusOf, usePanels } from "./store";
+import { focusOf, panelOf, usePanels } from "./store";
 
 const RANK = { error: 0, warning: 1, info: 2 } as const;
 
 /** Where a diagnostic is, as the panel shows it. */
 export function placeOf(d: Diagnostic): string {
+  const panel = panelOf(d);
+  if (panel) return d.element ? `panel ${panel}, widget ${d.element}` : `panel ${panel}`;
   const parts: string[] = [];
   if (d.pou) parts.push(d.pou);
   if (d.file?.endsWith("/declarations")) parts.push("declarations");
@@ -36,7 +38,7 @@ export function DiagnosticsPanel({ onReveal }: { onReveal(d: Diagnostic): void }
   return (
     <ul className="diagnostics" aria-label="Diagnostics">
       {sorted.map((d, i) => {
-        const target = focusOf(d);
+        const target = focusOf(d) ?? panelOf(d);
         return (
           <li key={i}>
             <button

@@ -47,6 +47,11 @@ export interface PanelsActions {
 export type PanelsState = PanelsData & PanelsActions;
 
 /** Where a diagnostic points, or null when it names no POU. */
+/** The operator panel a diagnostic is about (a widget's binding: file `hmi/<name>.json`), or null. */
+export function panelOf(d: Diagnostic): string | null {
+  return /^hmi\/([A-Za-z_][A-Za-z0-9_]*)\.json$/.exec(d.file ?? "")?.[1] ?? null;
+}
+
 export function focusOf(d: Diagnostic): Omit<Focus, "seq"> | null {
   if (!d.pou) return null;
   const part = d.file?.endsWith("/declarations") ? "declarations" : d.file?.endsWith("/body") ? "body" : null;

@@ -14,7 +14,7 @@ import { SimulationBar } from "../online/SimulationBar";
 import { HistoryBanner } from "../online/HistoryBar";
 import { instanceOf, useLdOnline } from "../online/useLdOnline";
 import { BottomPanels } from "../panels/BottomPanels";
-import { focusOf, panelsStore, usePanels } from "../panels/store";
+import { focusOf, panelOf, panelsStore, usePanels } from "../panels/store";
 import { StView } from "../stview/StView";
 import { DeclarationsEditor } from "../declarations/DeclarationsEditor";
 import { ELEMENTARY_TYPES, userTypeNames } from "../declarations/model";
@@ -35,7 +35,7 @@ import { DebugBar } from "../debug/DebugBar";
 import { useLdDebugging } from "../debug/ldDebugging";
 import { revealPlace } from "../debug/reveal";
 import { debugStore, useDebug } from "../debug/store";
-import { isShellTab, PanelsTree, ShellTab, tabLabel } from "../hmi/shell";
+import { isShellTab, PANEL_TAB, PanelsTree, ShellTab, tabLabel } from "../hmi/shell";
 import { ViewBoundary } from "./ViewBoundary";
 import { useAppKeys } from "./useAppKeys";
 import { ShortcutHelp } from "../keys/ShortcutHelp";
@@ -684,7 +684,8 @@ export function WorkspaceView() {
 
   const reveal = useCallback((d: Diagnostic) => {
     const target = focusOf(d);
-    if (!target) return;
+    const panel = panelOf(d);
+    if (!target) return void (panel && workspaceStore.getState().openTab(PANEL_TAB + panel));
     workspaceStore.getState().openPou(pouOf(workspaceStore.getState().project, target.pou)?.name ?? target.pou);
     panelsStore.getState().reveal(target);
   }, []);
