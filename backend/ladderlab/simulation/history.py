@@ -101,8 +101,9 @@ class History:
 
     @property
     def first(self) -> int:
-        """The oldest scan that can be viewed."""
-        return self.checkpoints[0].scan
+        """The oldest scan that can be viewed: the one the oldest checkpoint was taken after (scan 0 when that
+        checkpoint is the initial state)."""
+        return max(0, self.checkpoints[0].scan - 1)
 
     @property
     def last(self) -> int:
@@ -191,7 +192,7 @@ class History:
                 raise HistoryUnavailable(f"scan {scan} has not run yet (the last scan is {self.last})")
             raise HistoryUnavailable(f"scan {scan} is no longer in the history: it starts at scan {self.first}")
         replay = self._replay_sim()
-        if scan in self._barriers:  # not replayable: the checkpoint taken after it holds it
+        if scan in self._barriers or scan < self.checkpoints[0].scan:  # the checkpoint taken after it holds it
             self._restore(self._checkpoint_at(scan + 1))
         else:
             checkpoint = self._checkpoint_at(scan)
