@@ -10,6 +10,7 @@ import sys
 from pathlib import Path
 
 from ..engine.codegen import VARIANTS
+from ..engine.inputs import AppliedInput
 from ..model import has_errors
 from ..model.schema import SCHEMA_MODELS, schema_of
 from ..simulation.build import build_project
@@ -17,6 +18,8 @@ from ..simulation.check import check_project
 from ..simulation.conditions import BadCondition, parse_condition
 from ..storage import StorageError, load_project_path
 from ..storage.atomic import write_atomic
+from ..storage.project_folder import revision_of
+from .record import Recording, read_recording
 from .run import jsonl_line, parse_duration, parse_events, parse_fault, parse_set, run_scans, table_lines
 from .test import add_test_command
 
@@ -150,7 +153,24 @@ def _parser() -> argparse.ArgumentParser:
         f"exit {EXIT_NOT_REACHED} when it never did within --cycles/--for (default: {UNTIL_LIMIT:,} scans)",
     )
     run.add_argument("--format", choices=["table", "jsonl"], default="table")
+    run.add_argument(
+        "--record",
+        type=Path,
+        default=None,
+        metavar="FILE",
+        help="write a recording of this run (project path and revision, inputs, scans): ladderlab replay FILE",
+    )
     run.set_defaults(func=_run)
+
+    replay = sub.add_parser("replay", help="print a recorded run's rows again, exactly (ladderlab run --record)")
+    replay.add_argument("recording", type=Path, help="the file ladderlab run --record wrote")
+    replay.add_argument("--project", type=Path, default=None, help="the project (default: its recorded path)")
+    replay.add_argument("--seek", type=int, default=None, metavar="N", help="scans 0..N only: the last row is scan N")
+    replay.add_argument(
+        "--watch", action="append", default=[], metavar="PATH", help="print these variables (default: as recorded)"
+    )
+    replay.add_argument("--format", choices=["table", "jsonl"], default="table")
+    replay.set_defaults(func=_replay)
 
     add_test_command(sub)
 
@@ -202,7 +222,11 @@ def _check(args: argparse.Namespace) -> int:
 
 def _build(args: argparse.Namespace, variant: str = "fast"):
     """Load and build the project; prints the diagnostics and returns None when it has errors."""
-    project = load_project_path(args.project)
+    return _built(load_project_path(args.project), variant)
+
+
+def _built(project, variant: str = "fast"):
+    """Build ``project``; prints the diagnostics and returns None when it has errors."""
     build = build_project(project, variant)
     for diagnostic in build.diagnostics:
         print(diagnostic.format(), file=sys.stderr)
@@ -233,14 +257,25 @@ def _run(args: argparse.Namespace) -> int:
     watch = args.watch or list(sim.snapshot())
     limited = args.cycles is not None or for_ms is not None
     cycles = args.cycles if limited else (UNTIL_LIMIT if until is not None else 1)
+    applied: list[AppliedInput] = []
+    sim.on_input = applied.append
     rows = run_scans(sim, watch=watch, sets=sets, events=events, cycles=cycles, for_ms=for_ms, until=until)
-    try:
-        lines = (jsonl_line(row) for row in rows) if args.format == "jsonl" else table_lines(rows, watch)
-        for line in lines:
-            print(line)
-    except (KeyError, ValueError) as error:  # unknown path, value that does not fit its variable
-        print(f"ladderlab run: {error.args[0] if error.args else error}", file=sys.stderr)
-        return EXIT_USAGE
+    code = _print_rows(rows, watch, args.format, "run")
+    if code != EXIT_OK:
+        return code
+    if args.record is not None:
+        recording = Recording(
+            str(args.project.resolve()),
+            revision_of(load_project_path(args.project)),
+            sim.scan_count,
+            args.watch or None,
+            [line.to_json() for line in applied],
+        )
+        try:
+            write_atomic(args.record, recording.to_bytes())
+        except OSError as error:
+            print(f"ladderlab run: --record {args.record}: {error.strerror or error}", file=sys.stderr)
+            return EXIT_USAGE
     if sim.fault is not None:
         print(sim.fault.diagnostic().format(), file=sys.stderr)
         return EXIT_RUNTIME
@@ -248,6 +283,53 @@ def _run(args: argparse.Namespace) -> int:
         print(f"ladderlab run: {until.text} did not hold within {sim.scan_count} scans", file=sys.stderr)
         return EXIT_NOT_REACHED
     return EXIT_OK
+
+
+def _print_rows(rows, watch: list[str], form: str, command: str) -> int:
+    try:
+        lines = (jsonl_line(row) for row in rows) if form == "jsonl" else table_lines(rows, watch)
+        for line in lines:
+            print(line)
+    except (KeyError, ValueError) as error:  # unknown path, value that does not fit its variable
+        print(f"ladderlab {command}: {error.args[0] if error.args else error}", file=sys.stderr)
+        return EXIT_USAGE
+    return EXIT_OK
+
+
+def _replay(args: argparse.Namespace) -> int:
+    """The rows of a recorded run again: the same project revision, the same inputs at the same scans."""
+    try:
+        recording = read_recording(args.recording)
+        events = parse_events(recording.events_text(), f"{args.recording} inputs")
+    except ValueError as error:
+        print(f"ladderlab replay: {error}", file=sys.stderr)
+        return EXIT_USAGE
+    if args.seek is not None and not 0 <= args.seek < recording.scans:
+        print(
+            f"ladderlab replay: --seek {args.seek}: the recording has scans 0 to {recording.scans - 1}", file=sys.stderr
+        )
+        return EXIT_USAGE
+    args.project = args.project or Path(recording.project)
+    project = load_project_path(args.project)
+    revision = revision_of(project)
+    if revision != recording.revision:
+        print(
+            f"ladderlab replay: {args.project} is at revision {revision}, the recording was made at revision "
+            f"{recording.revision}: replay it with the project as it was (--project)",
+            file=sys.stderr,
+        )
+        return EXIT_USAGE
+    build = _built(project)
+    if build is None:
+        return EXIT_ERRORS
+    sim = build.simulation()
+    watch = args.watch or recording.watch or list(sim.snapshot())
+    cycles = recording.scans if args.seek is None else args.seek + 1
+    code = _print_rows(run_scans(sim, watch=watch, events=events, cycles=cycles), watch, args.format, "replay")
+    if code == EXIT_OK and sim.fault is not None:
+        print(sim.fault.diagnostic().format(), file=sys.stderr)
+        return EXIT_RUNTIME
+    return code
 
 
 def _read_events(path: Path) -> str:
