@@ -99,3 +99,21 @@ def test_find_where_a_condition_became_true_and_the_diff_of_two_scans(client: Te
     diff = client.get(f"/api/simulations/{counter}/history/diff", params={"first": 2, "second": 5}).json()
     # Count 2 -> 5, Flag TRUE after an odd number of scans; Result, Divisor, Idle, Kept, Trig unchanged
     assert diff == {"first": 2, "second": 5, "differences": {"MAIN.COUNT": [2, 5], "MAIN.FLAG": [False, True]}}
+
+
+def test_the_timeline_marks_inputs_and_runtime_errors(client: TestClient, counter: str) -> None:
+    """Issue 23 item 3: marks for writes, forces and runtime errors, at the scan they belong to."""
+    cycle = f"/api/simulations/{counter}/cycle"
+    client.post(cycle)
+    with client.websocket_connect(f"/api/simulations/{counter}/ws") as ws:
+        subscribe(ws, ["Main.Count"])
+        ws.send_json({"type": "write", "path": "Main.Idle", "value": 1})
+        ws.send_json({"type": "force", "path": "Main.Trig", "value": True})
+        ws.send_json({"type": "single_cycle"})  # scan 2: the write and the force
+        ws.send_json({"type": "single_cycle"})
+        ws.send_json({"type": "write", "path": "Main.Divisor", "value": 0})  # scan 4 divides by zero
+        ws.send_json({"type": "single_cycle"})
+        recv_until(ws, of_type("status", state="faulted"))
+    marks = client.get(f"/api/simulations/{counter}/history/marks").json()
+    assert marks == [{"scan": 2, "kinds": ["force", "write"]}, {"scan": 4, "kinds": ["error", "write"]}]
+    assert client.get(f"/api/simulations/{counter}").json()["history"]["marked"] == 4

@@ -217,6 +217,14 @@ class HistoryFound(BaseModel):
     scan: int | None
 
 
+class HistoryMark(BaseModel):
+    """A scan with something from outside (the inputs' kinds: write, force, release, panel, fault, reset...)
+    or a runtime error (``error``)."""
+
+    scan: int
+    kinds: list[str]
+
+
 class HistoryDiff(BaseModel):
     """``GET /api/simulations/{id}/history/diff``: the variables that differ between the ends of two scans."""
 
@@ -383,6 +391,7 @@ class ApiTypes(BaseModel):
     seek_scan: SeekScan
     history_found: HistoryFound
     history_diff: HistoryDiff
+    history_mark: HistoryMark
     st_export: StExport
     import_report: ImportReport
     fbd_order: FbdOrder

@@ -324,6 +324,7 @@ class HistoryRange(BaseModel):
     viewing: int | None = Field(default=None, description="The scan shown instead of the live one; null: live.")
     bytes: int = Field(default=0, description="Memory the history holds: checkpoints and input log.")
     budget_bytes: int = Field(default=0, description="Its budget (the server's history_mb).")
+    marked: int = Field(default=0, description="Grows when a scan gets a mark: fetch history/marks again.")
 
 
 class Values(BaseModel):

@@ -14,7 +14,7 @@ from typing import Annotated, Any
 
 from fastapi import APIRouter, Body, Depends, Request, Response, status
 
-from ..model.api import HistoryDiff, HistoryFound, ResetSimulation, ScanTimes, SeekScan, SimulationInfo
+from ..model.api import HistoryDiff, HistoryFound, HistoryMark, ResetSimulation, ScanTimes, SeekScan, SimulationInfo
 from ..simulation.registry import SimulationEntry, SimulationRegistry
 from ..simulation.remote import BuildFailed
 from ..simulation.runner import CommandError
@@ -162,6 +162,12 @@ def history_diff(sim_id: str, registry: RegistryDep, first: int, second: int) ->
     """The variables whose values differ between the ends of two scans of the history, with both values."""
     differences = _history_call(registry.get(sim_id), "history_diff", {"first": first, "second": second})
     return HistoryDiff(first=first, second=second, differences=differences)
+
+
+@router.get("/api/simulations/{sim_id}/history/marks", response_model=list[HistoryMark], responses=_DESCRIBED)
+def history_marks(sim_id: str, registry: RegistryDep) -> list[HistoryMark]:
+    """The newest 1,000 scans of the history with an input or a runtime error: the timeline's marks."""
+    return [HistoryMark(**mark) for mark in _history_call(registry.get(sim_id), "history_marks", {})]
 
 
 def _history_call(entry: SimulationEntry, op: str, args: dict[str, Any]) -> Any:

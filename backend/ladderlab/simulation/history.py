@@ -80,6 +80,8 @@ class History:
         self._inputs: dict[int, list[bytes]] = {}  # scan -> the inputs applied for it, as JSON, in order
         self._times: dict[int, float] = {}  # scan -> its virtual time, for scans the schedule did not choose
         self._barriers: set[int] = set()  # scans a replay cannot redo: viewed from the checkpoint after them
+        self._errors: set[int] = set()  # scans that ended with a runtime error or a watchdog trip
+        self.marked = 0  # grows with every newly marked scan (an input, an error): the timeline refetches marks
         self.log_size = 0  # bytes of _inputs and _times
         self.checkpoint_size = 0
         self.interval = min_interval
@@ -113,6 +115,7 @@ class History:
     def applied(self, applied: AppliedInput) -> None:
         """Record an input as the engine applied it (``Simulation.on_input``)."""
         line = json.dumps(applied.event.to_json(), separators=(",", ":")).encode()
+        self.marked += 1
         self._inputs.setdefault(applied.scan, []).append(line)
         self._grow_log(len(line) + 8)
         if applied.phase == "halt":
@@ -130,6 +133,8 @@ class History:
             self._faults = faults
             if faults:
                 self._barriers.add(scan)
+                self._errors.add(scan)
+                self.marked += 1
         if scan in self._barriers or self._since >= self.interval or self._log_since >= self.log_bytes:
             self._checkpoint()
 
@@ -175,10 +180,26 @@ class History:
                 del self._times[scan]
                 self.log_size -= 16
             self._barriers = {scan for scan in self._barriers if scan >= first}
+            self._errors = {scan for scan in self._errors if scan >= first}
             if self._replay_at is not None and self._replay_at < first:
                 self._replay_at = None
 
     # ------------------------------------------------------------------ seeking
+
+    def marks(self, limit: int = 1000) -> list[tuple[int, list[str]]]:
+        """The newest ``limit`` scans with an input or an error, for the timeline: (scan, what happened in it:
+        the inputs' kinds - write, force, release, panel, fault, reset... - and ``error``)."""
+        scans = sorted(self._inputs.keys() | self._errors)[-limit:]
+        return [
+            (
+                scan,
+                sorted(
+                    {str(line["kind"]) for line in self.inputs_of(scan)}
+                    | ({"error"} if scan in self._errors else set())
+                ),
+            )
+            for scan in scans
+        ]
 
     def inputs_of(self, scan: int) -> list[dict[str, object]]:
         """The inputs applied for ``scan`` (as ``InputEvent`` JSON), in order."""

@@ -601,6 +601,7 @@ class SimRunner:
             "viewing": self._viewing,
             "bytes": history.size,
             "budget_bytes": history.budget_bytes,
+            "marked": history.marked,
         }
 
     def _recorded(self) -> History:
@@ -655,6 +656,10 @@ class SimRunner:
         differences = history.diff(first - 1, second - 1)
         self._back_to_view()
         return {path: list(differences[path]) for path in sorted(differences)}
+
+    def history_marks(self) -> list[dict[str, Any]]:
+        """The newest scans with an input or an error (numbered as frames number them), for the timeline."""
+        return [{"scan": scan + 1, "kinds": kinds} for scan, kinds in self._recorded().marks()]
 
     def _in_history(self, scan: int) -> None:
         history = self._recorded()
@@ -845,6 +850,7 @@ class SimRunner:
         "live": live,
         "history_find": history_find,
         "history_diff": history_diff,
+        "history_marks": history_marks,
     }
 
 

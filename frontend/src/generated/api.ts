@@ -13,6 +13,7 @@ export interface ApiTypes {
   fbd_order: FbdOrder;
   history_diff: HistoryDiff;
   history_found: HistoryFound;
+  history_mark: HistoryMark;
   import_report: ImportReport;
   library_entry: LibraryEntry;
   project_document: ProjectDocument;
@@ -165,6 +166,17 @@ export interface HistoryDiff {
  */
 export interface HistoryFound {
   scan: number | null;
+}
+/**
+ * A scan with something from outside (the inputs' kinds: write, force, release, panel, fault, reset...)
+ * or a runtime error (``error``).
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "HistoryMark".
+ */
+export interface HistoryMark {
+  kinds: string[];
+  scan: number;
 }
 /**
  * ``POST /api/import/plcopen``: the stored project and what the import had to say (warnings).
@@ -1278,6 +1290,10 @@ export interface HistoryRange {
    * The newest scan: the live one.
    */
   last: number;
+  /**
+   * Grows when a scan gets a mark: fetch history/marks again.
+   */
+  marked?: number;
   /**
    * The scan shown instead of the live one; null: live.
    */

@@ -561,6 +561,10 @@ export interface HistoryRange {
    */
   last: number;
   /**
+   * Grows when a scan gets a mark: fetch history/marks again.
+   */
+  marked?: number;
+  /**
    * The scan shown instead of the live one; null: live.
    */
   viewing?: number | null;
