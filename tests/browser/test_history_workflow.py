@@ -66,11 +66,17 @@ def test_go_back_to_a_scan_and_see_the_diagram_as_it_was(page, server):
     banner.filter(has_text="Viewing scan 3 (history)").wait_for()
     _coil(page, "off")
 
+    mark = timeline.get_by_role("button", name="scan 4: write")  # the timeline marks the write's scan
+    assert mark.get_attribute("data-mark-scan") == "4"
+    mark.click()
+    banner.filter(has_text="Viewing scan 4 (history)").wait_for()
+    _coil(page, "on")
+
     page.get_by_role("button", name="Run", exact=True).click()  # the live simulation goes on; the view stays
     page.get_by_role("status", name="Online state").filter(has_text="Online · running").wait_for()
     page.wait_for_function("() => Number(document.querySelector('[aria-label=\"Scan history\"] input')?.max) > 10")
-    assert scan.inner_text() == "3"
-    assert banner.inner_text().startswith("Viewing scan 3 (history)")
+    assert scan.inner_text() == "4"
+    assert banner.inner_text().startswith("Viewing scan 4 (history)")
 
     timeline.get_by_role("button", name="Live").click()
     banner.wait_for(state="detached")

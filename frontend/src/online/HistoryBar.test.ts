@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { shownScan, stepScan } from "./HistoryBar";
+import { markOffset, shownScan, stepScan } from "./HistoryBar";
 import { applyMessage, emptyMonitor } from "./monitor";
 
 describe("scan history in the monitor state (issue 23)", () => {
@@ -26,5 +26,12 @@ describe("scan history in the monitor state (issue 23)", () => {
     expect(stepScan({ first: 1, last: 10 }, 1, -1)).toBeNull();
     expect(stepScan({ first: 1, last: 10 }, 10, 1)).toBeNull();
     expect(stepScan({ first: 1, last: 10 }, 9, 1)).toBe(10);
+  });
+
+  it("places a mark along the slider by its scan", () => {
+    expect(markOffset(1, 1, 11)).toBe(0);
+    expect(markOffset(6, 1, 11)).toBe(50);
+    expect(markOffset(11, 1, 11)).toBe(100);
+    expect(markOffset(3, 3, 3)).toBe(0);
   });
 });

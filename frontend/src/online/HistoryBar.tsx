@@ -4,8 +4,9 @@
 // the server recomputing it, while the live scans go on. "Live" shows them again. The banner over the
 // editors says that the diagrams show the past. "Find" jumps to the previous or next scan where a
 // variable changed or a condition (as Run until takes it: Motor, Tank.Level >= 80) became TRUE.
-import { useState } from "react";
-import { findInHistory } from "./api";
+import { useEffect, useState } from "react";
+import type { HistoryMark } from "../generated/api";
+import { findInHistory, historyMarks } from "./api";
 import { onlineStore, useOnline } from "./store";
 
 /** The scan the history shows: the one viewed, else the live one. */
@@ -38,16 +39,19 @@ export function HistoryBar() {
       >
         ◀
       </button>
-      <input
-        type="range"
-        aria-label="Scan"
-        min={history.first}
-        max={history.last}
-        step={1}
-        value={scan}
-        onChange={(event) => s.seek(Number(event.target.value))}
-        title={`History from scan ${history.first} to ${history.last}`}
-      />
+      <span className="history-timeline">
+        <input
+          type="range"
+          aria-label="Scan"
+          min={history.first}
+          max={history.last}
+          step={1}
+          value={scan}
+          onChange={(event) => s.seek(Number(event.target.value))}
+          title={`History from scan ${history.first} to ${history.last}`}
+        />
+        <HistoryMarks first={history.first} last={history.last} marked={history.marked ?? 0} />
+      </span>
       <button
         type="button"
         onClick={() => forward !== null && s.seek(forward)}
@@ -63,6 +67,46 @@ export function HistoryBar() {
         from scan {history.first}
       </span>
       <HistoryFind scan={scan} />
+    </span>
+  );
+}
+
+/** Where a mark sits along the slider, in percent of its width. */
+export function markOffset(scan: number, first: number, last: number): number {
+  return last > first ? ((scan - first) / (last - first)) * 100 : 0;
+}
+
+/** Ticks under the slider at the scans with an input (write, force, panel, fault...) or a runtime error;
+ * fetched again when the history's `marked` counter grows. A click shows that scan. */
+function HistoryMarks({ first, last, marked }: { first: number; last: number; marked: number }) {
+  const simulation = useOnline((s) => s.simulation);
+  const [marks, setMarks] = useState<HistoryMark[]>([]);
+  useEffect(() => {
+    if (!simulation) return;
+    let current = true;
+    historyMarks(simulation)
+      .then((found) => current && setMarks(found))
+      .catch(() => current && setMarks([]));
+    return () => {
+      current = false;
+    };
+  }, [simulation, marked]);
+  return (
+    <span className="history-marks" aria-label="Marks">
+      {marks
+        .filter((mark) => mark.scan >= first && mark.scan <= last)
+        .map((mark) => (
+          <button
+            type="button"
+            key={mark.scan}
+            className={`history-mark${mark.kinds.includes("error") ? " error" : ""}`}
+            data-mark-scan={mark.scan}
+            style={{ left: `${markOffset(mark.scan, first, last)}%` }}
+            title={`scan ${mark.scan}: ${mark.kinds.join(", ")}`}
+            aria-label={`scan ${mark.scan}: ${mark.kinds.join(", ")}`}
+            onClick={() => onlineStore.getState().seek(mark.scan)}
+          />
+        ))}
     </span>
   );
 }

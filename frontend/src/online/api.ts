@@ -1,7 +1,7 @@
 // REST calls of online mode (issue 6): create a simulation from the saved project, reset, read its
 // statistics, delete it. Run, stop and single cycle go over the websocket with everything else.
 import { requestHeaders, requestJson } from "../api/client";
-import type { HistoryFound, SimulationInfo } from "../generated/api";
+import type { HistoryFound, HistoryMark, SimulationInfo } from "../generated/api";
 
 const simulationPath = (id: string) => `/api/simulations/${encodeURIComponent(id)}`;
 
@@ -49,6 +49,11 @@ export async function findInHistory(
   const params = new URLSearchParams({ scan: String(scan), direction: String(direction), ...query });
   const found = await requestJson<HistoryFound>(`${simulationPath(id)}/history/find?${params.toString()}`);
   return found.scan ?? null;
+}
+
+/** The newest scans of the history with an input or a runtime error: the timeline's marks. */
+export function historyMarks(id: string): Promise<HistoryMark[]> {
+  return requestJson<HistoryMark[]>(`${simulationPath(id)}/history/marks`);
 }
 
 /** The websocket address of a simulation, on the origin the app was served from. */
