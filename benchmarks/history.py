@@ -62,7 +62,7 @@ def main() -> None:
     print(
         f"scan with history: {recorded * 1e6:.0f} us CPU per scan ({(recorded / bare - 1) * 100:+.1f} %); "
         f"checkpoint every {history.interval} scans, {blob / 1024:.0f} KB each, captured in "
-        f"{history._capture_s * 1000:.1f} ms"
+        f"{history._capture_s * 1000:.1f} ms CPU"
     )
     print(
         f"history memory: {history.size / 2**20:.1f} MB ({len(history.checkpoints)} checkpoints, "

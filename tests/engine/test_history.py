@@ -89,15 +89,16 @@ def _record(sim: Simulation, history: History) -> None:
     sim.on_input = history.applied
 
 
-class _Ticks:
-    """A clock that moves ``step`` seconds at each reading: scans and captures of a known duration."""
+class _Cost:
+    """The history's CPU clock with known costs: each scan ``scan_s``, each checkpoint's capture ``capture_s``
+    (the history reads the clock just before and just after a capture)."""
 
-    def __init__(self, step: float) -> None:
-        self.now, self.step = 0.0, step
+    def __init__(self, sim: Simulation, scan_s: float, capture_s: float) -> None:
+        self.sim, self.scan_s, self.capture_s, self.readings = sim, scan_s, capture_s, 0
 
     def __call__(self) -> float:
-        self.now += self.step
-        return self.now
+        self.readings += 1
+        return self.sim.scan_count * self.scan_s + (self.readings // 2) * self.capture_s
 
 
 EVENTS = st.one_of(
@@ -137,9 +138,9 @@ def test_every_seeked_scan_equals_the_live_scan(steps, seeks, budget, interval):
     """LAB-23 (issue 23, item 2 and 6): random writes, panel presses, forces and releases, noisy faults, warm
     and cold resets and scans at chosen times; every seek equals what the live run showed at that scan, also
     after the budget evicted checkpoints (``budget`` 6,000 bytes keeps a few)."""
-    sim = Simulation(COMPILED, wall_clock=_Ticks(0.0005))  # 1 ms scans and 0.01 ms captures: a checkpoint
-    budget_bytes = {"budget_bytes": budget} if budget else {}  # every ``interval`` scans, whatever the machine
-    history = History(sim, min_interval=interval, clock=_Ticks(0.00001), **budget_bytes)
+    sim = Simulation(COMPILED)
+    budget_bytes = {"budget_bytes": budget} if budget else {}  # 1 ms scans, 0.01 ms captures: a checkpoint
+    history = History(sim, min_interval=interval, clock=_Cost(sim, 1e-3, 1e-5), **budget_bytes)  # every interval
     _record(sim, history)
     seen = []
     for events, scans, chosen_time in steps:
@@ -181,28 +182,25 @@ def test_an_idle_scan_costs_no_log_bytes():
     assert history.log_size == len(line) + 8
 
 
+def _adaptive(budget: int | None = None, seek_ms: float = 2.05) -> History:
+    sim = Simulation(COMPILED)
+    budget_bytes = {"budget_bytes": budget} if budget else {}
+    return History(sim, min_interval=10, seek_ms=seek_ms, clock=_Cost(sim, 1e-4, 5.03e-4), **budget_bytes)
+
+
 def test_checkpoints_adapt_to_the_scan_and_the_budget_drops_the_oldest():
-    """Issue 23 item 1: 0.1 ms scans and 0.503 ms captures: with 5 % overhead a checkpoint every 101 scans, unless
-    a seek would replay more than ``seek_ms`` (2.05 ms: 20 scans). Over budget the oldest checkpoints go first."""
-    sim = Simulation(COMPILED, wall_clock=_Ticks(0.0001))  # two readings a scan: 0.1 ms
-    history = History(sim, min_interval=10, seek_ms=2.05, clock=_Ticks(0.000503))
-    sim.cycle(300)
+    """Issue 23 item 1: 0.1 ms scans and 0.503 ms captures (CPU): with 5 % overhead a checkpoint every 101 scans,
+    unless a seek would replay more than ``seek_ms`` (2.05 ms: 20 scans). Over budget the oldest go first."""
+    history = _adaptive()
+    history.live.cycle(300)
     assert history.interval == 20
     assert [c.scan for c in history.checkpoints] == [0, 10, *range(30, 300, 20)]
-    cheap = History(
-        Simulation(COMPILED, wall_clock=_Ticks(0.0001)), min_interval=10, seek_ms=1e9, clock=_Ticks(0.000503)
-    )
+    cheap = _adaptive(seek_ms=1e9)
     cheap.live.cycle(300)
     assert [c.scan for c in cheap.checkpoints] == [0, 10, 111, 212]
 
     budget = 4 * len(history.checkpoints[-1].blob)
-    small = History(
-        Simulation(COMPILED, wall_clock=_Ticks(0.0001)),
-        budget_bytes=budget,
-        min_interval=10,
-        seek_ms=2.05,
-        clock=_Ticks(0.000503),
-    )
+    small = _adaptive(budget)
     small.live.cycle(300)
     scans = [c.scan for c in small.checkpoints]
     assert small.size <= budget and 2 <= len(scans) <= 5

@@ -10,8 +10,8 @@ inputs. An idle scan adds nothing to the log.
 What a replay cannot redo is kept as a checkpoint at once: a scan that a user changed while it was halted
 at a breakpoint (``halt``-phase inputs), a scan that ended with a fault (a watchdog trip depends on the
 machine's speed), a scan a reset ended while halted. Checkpoints are taken adaptively: every
-``interval`` scans, where the interval keeps the time spent capturing near ``overhead`` of the scan time
-and the replay of one interval within ``seek_ms``; or after ``log_bytes`` of input log. Checkpoints and
+``interval`` scans, where the interval keeps the CPU time spent capturing near ``overhead`` of the CPU time
+of the scans and the replay of one interval within ``seek_ms``; or after ``log_bytes`` of input log. Checkpoints and
 log live in ``budget_bytes`` (default 256 MB): the oldest checkpoint and the log before the next one go
 first, so history is available from ``first`` on.
 
@@ -62,10 +62,10 @@ class History:
         *,
         budget_bytes: int = DEFAULT_BUDGET_BYTES,
         overhead: float = 0.05,
-        seek_ms: float = 500.0,
+        seek_ms: float = 800.0,
         min_interval: int = 16,
         log_bytes: int = 1 << 20,
-        clock: Callable[[], float] = time.perf_counter,
+        clock: Callable[[], float] = time.thread_time,
     ) -> None:
         if budget_bytes <= 0:
             raise ValueError(f"the history budget must be positive, not {budget_bytes} bytes")
@@ -89,6 +89,8 @@ class History:
         self._log_since = 0  # log bytes since the last checkpoint
         self._faults = len(sim.faults)
         self._capture_s = 0.0
+        self._scan_s: float | None = None  # CPU time per scan since the previous checkpoint (scans, the runner)
+        self._after: float | None = None  # the clock when the previous checkpoint was taken
         self._replay: Simulation | None = None
         self._replay_at: int | None = None  # scans the replay simulation has completed (its scan_count)
         sim.on_scan = self._scanned
@@ -146,9 +148,12 @@ class History:
 
     def _checkpoint(self) -> None:
         start = self._clock()
+        if self._after is not None and self._since:
+            self._scan_s = (start - self._after) / self._since
         state = replace(self.live.state(), pending=())  # the waiting inputs are in the log when they apply
         blob = zlib.compress(pickle.dumps(state, pickle.HIGHEST_PROTOCOL), 1)
-        self._capture_s = self._clock() - start
+        self._after = self._clock()
+        self._capture_s = self._after - start
         scan = self.live.scan_count
         if self.checkpoints and self.checkpoints[-1].scan == scan:
             self.checkpoint_size -= len(self.checkpoints.pop().blob)
@@ -159,11 +164,13 @@ class History:
         self._evict()
 
     def _adapt(self) -> None:
-        """Checkpoint as often as ``overhead`` of the scan time allows, but at least every ``seek_ms`` of replay."""
-        if not self.live.stats.count:  # no scan time to go by yet
+        """Checkpoint as often as ``overhead`` of the scan time allows, but at least every ``seek_ms`` of replay.
+
+        Both times are the engine thread's CPU time (``clock``), so a loaded machine does not shrink the interval."""
+        if self._scan_s is None:  # no scan time to go by yet
             self.interval = self.min_interval
             return
-        scan_ms = max(self.live.stats.avg_ms, 1e-3)
+        scan_ms = max(self._scan_s * 1000.0, 1e-3)
         capture_ms = self._capture_s * 1000.0
         cheap = math.ceil(capture_ms / (self.overhead * scan_ms))
         bounded = max(self.min_interval, math.floor(self.seek_ms / scan_ms))
