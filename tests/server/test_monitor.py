@@ -49,6 +49,8 @@ def test_connecting_reports_the_state_then_a_full_snapshot_of_the_subscription(
     with client.websocket_connect(ws_url(counter)) as ws:
         assert recv(ws) == {"type": "status", "state": "stopped", "at": None}
         first = subscribe(ws, ["Main.Count", "main.flag", "MAIN.Idle"])
+        history = first.pop("history")  # the scan history (test_history.py): scan 1 is kept, none viewed
+        assert (history["first"], history["last"], history["viewing"]) == (1, 1, None)
         assert first == {
             "type": "values",
             "scan": 1,
