@@ -104,6 +104,11 @@ class History:
         return self.checkpoint_size + self.log_size
 
     @property
+    def capture_s(self) -> float:
+        """CPU seconds the last checkpoint took (capture, pickle, compress)."""
+        return self._capture_s
+
+    @property
     def first(self) -> int:
         """The oldest scan that can be viewed: the one the oldest checkpoint was taken after (scan 0 when that
         checkpoint is the initial state)."""
