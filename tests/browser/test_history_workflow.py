@@ -53,6 +53,25 @@ def test_go_back_to_a_scan_and_see_the_diagram_as_it_was(page, server):
     _coil(page, "off")
     page.screenshot(path=str(ARTIFACTS / "history-scan-2.png"))
 
+    page.get_by_role("button", name="Show differences").click()  # with the live scan (6) by default
+    differences = page.get_by_role("table", name="Differences")
+    differences.locator('tr[data-path="START"]').wait_for()  # Start and Motor are globals
+    assert differences.locator('tr[data-path="START"] td').all_inner_texts() == [
+        "START",
+        "FALSE",
+        "→",
+        "TRUE",
+    ]
+    assert differences.locator('tr[data-path="MOTOR"] td').all_inner_texts() == [
+        "MOTOR",
+        "FALSE",
+        "→",
+        "TRUE",
+    ]
+    page.get_by_label("Comparison").filter(
+        has_text=re.compile(r"^\d+ variables differ between scan 2 and scan 6$")
+    ).wait_for()
+
     forward = timeline.get_by_role("button", name="▶")
     forward.click()
     banner.filter(has_text="Viewing scan 3 (history)").wait_for()

@@ -6,7 +6,9 @@
 // variable changed or a condition (as Run until takes it: Motor, Tank.Level >= 80) became TRUE.
 import { useEffect, useState } from "react";
 import type { HistoryMark } from "../generated/api";
-import { findInHistory, historyMarks } from "./api";
+import { findInHistory, historyDiff, historyMarks } from "./api";
+import type { Value } from "./protocol";
+import { formatValue } from "./values";
 import { onlineStore, useOnline } from "./store";
 
 /** The scan the history shows: the one viewed, else the live one. */
@@ -168,11 +170,68 @@ export function HistoryBanner() {
   const timeMs = useOnline((s) => s.monitor.timeMs);
   if (viewing === null) return null;
   return (
-    <div className="history-banner" role="status" aria-label="History view">
-      Viewing scan {viewing} (history) · t = {timeMs} ms · the values are those of that scan; the simulation goes on
-      <button type="button" onClick={onlineStore.getState().goLive}>
-        Back to live
+    <div className="history-banner-area">
+      <div className="history-banner" role="status" aria-label="History view">
+        Viewing scan {viewing} (history) · t = {timeMs} ms · the values are those of that scan; the simulation goes on
+        <button type="button" onClick={onlineStore.getState().goLive}>
+          Back to live
+        </button>
+      </div>
+      <HistoryCompare viewing={viewing} />
+    </div>
+  );
+}
+
+/** The variables that differ between the scan shown and another one (by default the live scan), both values. */
+function HistoryCompare({ viewing }: { viewing: number }) {
+  const last = useOnline((s) => s.monitor.history?.last ?? viewing);
+  const [other, setOther] = useState("");
+  const types = useOnline((s) => s.monitor.types);
+  const [rows, setRows] = useState<[string, Value[]][] | null>(null);
+  const [note, setNote] = useState<string | null>(null);
+  const compare = async () => {
+    const id = onlineStore.getState().simulation;
+    const second = other.trim() ? Number(other) : last;
+    if (!id || !Number.isInteger(second)) return;
+    try {
+      const diff = await historyDiff(id, viewing, second);
+      setRows(Object.entries(diff.differences));
+      setNote(`${Object.keys(diff.differences).length} variables differ between scan ${viewing} and scan ${second}`);
+    } catch (err) {
+      setRows(null);
+      setNote(err instanceof Error ? err.message : String(err));
+    }
+  };
+  return (
+    <div className="history-compare" role="group" aria-label="Compare scans">
+      <label>
+        Compare with scan{" "}
+        <input
+          aria-label="Compare with scan"
+          inputMode="numeric"
+          placeholder={String(last)}
+          value={other}
+          onChange={(event) => setOther(event.target.value)}
+        />
+      </label>
+      <button type="button" onClick={() => void compare()}>
+        Show differences
       </button>
+      {note ? <span aria-label="Comparison">{note}</span> : null}
+      {rows?.length ? (
+        <table aria-label="Differences">
+          <tbody>
+            {rows.map(([path, [a, b]]) => (
+              <tr key={path} data-path={path}>
+                <td>{path}</td>
+                <td>{formatValue(a, types[path])}</td>
+                <td>→</td>
+                <td>{formatValue(b, types[path])}</td>
+              </tr>
+            ))}
+          </tbody>
+        </table>
+      ) : null}
     </div>
   );
 }

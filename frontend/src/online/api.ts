@@ -1,7 +1,7 @@
 // REST calls of online mode (issue 6): create a simulation from the saved project, reset, read its
 // statistics, delete it. Run, stop and single cycle go over the websocket with everything else.
 import { requestHeaders, requestJson } from "../api/client";
-import type { HistoryFound, HistoryMark, SimulationInfo } from "../generated/api";
+import type { HistoryDiff, HistoryFound, HistoryMark, SimulationInfo } from "../generated/api";
 
 const simulationPath = (id: string) => `/api/simulations/${encodeURIComponent(id)}`;
 
@@ -54,6 +54,12 @@ export async function findInHistory(
 /** The newest scans of the history with an input or a runtime error: the timeline's marks. */
 export function historyMarks(id: string): Promise<HistoryMark[]> {
   return requestJson<HistoryMark[]>(`${simulationPath(id)}/history/marks`);
+}
+
+/** The variables whose values differ between the ends of two scans of the history, with both values. */
+export function historyDiff(id: string, first: number, second: number): Promise<HistoryDiff> {
+  const params = new URLSearchParams({ first: String(first), second: String(second) });
+  return requestJson<HistoryDiff>(`${simulationPath(id)}/history/diff?${params.toString()}`);
 }
 
 /** The websocket address of a simulation, on the origin the app was served from. */
