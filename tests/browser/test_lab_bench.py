@@ -247,7 +247,8 @@ def test_batch_mixer_makes_a_good_batch_and_stops_on_the_emergency_stop(page, se
 
 
 def test_an_exercise_starts_from_the_students_files(page, server):
-    """The student's Lights has its declarations and no logic: the panel runs, the lamp never lights."""
+    """The student's Lights has its declarations and no logic: the panel runs, the lamp never lights, and the
+    exercise's tests (Tests panel) fail for the goal."""
     errors = watch_errors(page)
     new_from_example(page, server, "room_lights", "student", start="exercise")
     page.get_by_role("navigation", name="Project tree").get_by_role("button", name=re.compile("^Statement")).click()
@@ -269,4 +270,11 @@ def test_an_exercise_starts_from_the_students_files(page, server):
     expect(widget(page, "walker")).to_have_attribute("data-shown", "false")
     bar.get_by_role("button", name="Single cycle").click()
     expect(widget(page, "walker")).to_have_attribute("data-shown", "true")
+    # the exercise's tests say the goal is not reached: only "nobody in the room" passes the empty program
+    panels = page.get_by_role("region", name="Panels")
+    panels.get_by_role("tab", name=re.compile("^Tests")).click()
+    panels.locator("li.test-row").nth(2).wait_for()
+    panels.get_by_role("button", name="Run all", exact=True).click()
+    expect(panels.locator(".tests-status")).to_have_text("1 passed, 2 failed", timeout=60_000)
+    expect(panels.locator("li.test-passed")).to_contain_text("nobody in the room: the lamp stays off")
     assert errors == []

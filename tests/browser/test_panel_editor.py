@@ -152,7 +152,7 @@ def test_draw_a_panel_save_it_and_operate_it_online_and_in_its_own_window(page, 
 
 def test_a_widget_bound_to_a_missing_variable_is_shown_at_the_widget_and_fixed_there(page, server, browser_errors):
     """Compile & simulate refuses the project: the Diagnostics panel names the panel and the widget; a click
-    opens the panel, rebinding the widget with the autocomplete and saving lets it run. (The page fixture
+    opens the panel's editor with the widget selected; rebound with the autocomplete and saved, it runs. (The page fixture
     fails the test on any other page or console error.)"""
     browser_errors.allow(r"422 \(Unprocessable Entity\) \(http://127\.0\.0\.1:\d+/api/projects/typo/simulations\)")
     desk = {
@@ -170,10 +170,11 @@ def test_a_widget_bound_to_a_missing_variable_is_shown_at_the_widget_and_fixed_t
     diagnostics = page.get_by_role("list", name="Diagnostics")
     entry = diagnostics.get_by_role("button").filter(has_text="panel Desk, widget lamp1")
     expect(entry).to_contain_text("panel Desk, widget lamp1 (bind): MAIN has no variable 'Lmp' - did you mean 'LAMP'?")
-    entry.click()
+    entry.click()  # the panel opens in its editor with the widget selected
     expect(page.get_by_role("tab", name="Desk (panel)")).to_have_attribute("aria-selected", "true")
-    page.get_by_role("tab", name="Edit").click()
-    widget(page, "lamp1").click()
+    expect(page.get_by_role("tab", name="Edit")).to_have_attribute("aria-selected", "true")
+    props = page.get_by_role("complementary", name="Properties")
+    expect(props.get_by_role("button", name="Variable of lamp1: Main.Lmp")).to_be_visible()
     _bind(page, "lamp1", "Lam", "Main.Lamp")
     page.keyboard.press("Control+s")
     page.get_by_role("status").filter(has_text="All changes saved").wait_for()

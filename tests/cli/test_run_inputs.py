@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import shutil
 from pathlib import Path
 
 from ladderlab.cli import main
@@ -71,3 +72,22 @@ def test_the_st_export_keeps_plants_only_when_asked(capsys):
     both = capsys.readouterr().out
     assert "Tank" not in control.replace("Tank filling", "") and "PROGRAM Filling" in control
     assert "PROGRAM Tank\n" in both and "PROGRAM Tank WITH PLANTS : Tank;" in both
+
+
+def test_check_and_run_name_a_widget_bound_to_a_variable_the_program_lacks(capsys, tmp_path: Path):
+    """The panel's bindings are part of the project: ``check`` reports one the program lacks at its widget, and
+    ``run`` refuses to build (as the browser's Compile & simulate does)."""
+    folder = tmp_path / "tank"
+    shutil.copytree(EXAMPLES / "tank_filling", folder)
+    panel = folder / "hmi" / "Tank.json"
+    document = json.loads(panel.read_text())
+    document["widgets"][10]["paths"] = ["Tank.Level", "Tank.Lvl"]
+    panel.write_text(json.dumps(document))
+    assert main(["check", str(folder)]) == 1
+    out, _ = capsys.readouterr()
+    assert out.splitlines()[0] == (
+        "hmi/Tank.json, widgets[10].paths[1], element trend: error panel_binding: panel Tank, widget trend "
+        "(paths[1]): TANK has no variable 'Lvl' - did you mean 'LEVEL'?"
+    )
+    code, rows, err = run(capsys, str(folder), "--cycles", "1")
+    assert code == 1 and rows == [] and "panel Tank, widget trend (paths[1])" in err

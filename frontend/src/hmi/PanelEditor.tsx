@@ -43,9 +43,10 @@ type Drag =
   | { kind: "move"; x: number; y: number; dx: number; dy: number }
   | { kind: "resize"; id: string; x: number; y: number; w: number; h: number; dw: number; dh: number };
 
-export function PanelEditor({ name }: { name: string }) {
+/** `selected`: the widgets selected when it opens (a diagnostic's widget, hmi/shell.tsx). */
+export function PanelEditor({ name, selected: initial = [] }: { name: string; selected?: string[] }) {
   const { panel, commit, undoStep, redoStep, history } = usePanelHistory(name);
-  const [selected, setSelected] = useState<string[]>([]);
+  const [selected, setSelected] = useState<string[]>(initial);
   const [drag, setDrag] = useState<Drag | null>(null);
   const svg = useRef<SVGSVGElement | null>(null);
   if (!panel) return <p className="placeholder">There is no panel {name} in this project.</p>;

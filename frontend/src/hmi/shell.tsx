@@ -2,6 +2,8 @@
 // that are no POU (a panel: editor and online view; the exercise statement). Tab keys start with
 // PANEL_TAB or are EXERCISE_TAB, which no POU name can be.
 import { useEffect, useMemo, useState, type FormEvent } from "react";
+import { useStore } from "zustand";
+import { createStore } from "zustand/vanilla";
 import type { Panel } from "../generated/project";
 import { onlineStore, useOnline } from "../online/store";
 import { useWorkspace, workspaceStore } from "../project/store";
@@ -126,10 +128,29 @@ function useAppLink(paths: string[], view: string): PanelLink {
   return { monitor, online: phase === "online", simulation, send: (msg) => onlineStore.getState().send(msg) };
 }
 
+/** A widget to show in its panel's editor, selected (a diagnostic's click); `seq` tells two clicks apart. */
+const widgetReveal = createStore<{ panel: string; widget: string | null; seq: number } | null>(() => null);
+let reveals = 0;
+
+/** Opens panel `panel` in its editor with `widget` selected (the Diagnostics panel's click on a binding). */
+export function revealWidget(panel: string, widget: string | null): void {
+  workspaceStore.getState().openTab(PANEL_TAB + panel);
+  widgetReveal.setState({ panel, widget, seq: ++reveals }, true);
+}
+
 function PanelTab({ name }: { name: string }) {
   const panel = useWorkspace((s) => s.project?.panels?.find((p) => p.name === name));
   const project = useWorkspace((s) => s.name);
   const [mode, setMode] = useState<"run" | "edit">("run");
+  const reveal = useStore(widgetReveal);
+  const [revealed, setRevealed] = useState<{ widget: string | null; seq: number } | null>(null);
+  if (reveal?.panel === name && reveal.seq !== revealed?.seq) {
+    setRevealed(reveal);
+    setMode("edit");
+  }
+  useEffect(() => {
+    if (reveal?.panel === name) widgetReveal.setState(null, true); // taken: the tab opens as usual next time
+  }, [reveal, name]);
   const paths = useMemo(() => (panel && mode === "run" ? bindingsOf(panel) : []), [panel, mode]);
   const link = useAppLink(paths, `hmi:${name}`);
   if (!panel || !project) return <p className="placeholder">There is no panel {name} in this project.</p>;
@@ -151,7 +172,11 @@ function PanelTab({ name }: { name: string }) {
           Edit
         </button>
       </div>
-      {mode === "run" ? <PanelRun panel={panel} link={link} onOpenWindow={openWindow} /> : <PanelEditor name={name} />}
+      {mode === "run" ? (
+        <PanelRun panel={panel} link={link} onOpenWindow={openWindow} />
+      ) : (
+        <PanelEditor key={revealed?.seq ?? 0} name={name} selected={revealed?.widget ? [revealed.widget] : undefined} />
+      )}
     </div>
   );
 }

@@ -35,7 +35,7 @@ import { DebugBar } from "../debug/DebugBar";
 import { useLdDebugging } from "../debug/ldDebugging";
 import { revealPlace } from "../debug/reveal";
 import { debugStore, useDebug } from "../debug/store";
-import { isShellTab, PANEL_TAB, PanelsTree, ShellTab, tabLabel } from "../hmi/shell";
+import { isShellTab, PanelsTree, revealWidget, ShellTab, tabLabel } from "../hmi/shell";
 import { ViewBoundary } from "./ViewBoundary";
 import { useAppKeys } from "./useAppKeys";
 import { ShortcutHelp } from "../keys/ShortcutHelp";
@@ -685,7 +685,7 @@ export function WorkspaceView() {
   const reveal = useCallback((d: Diagnostic) => {
     const target = focusOf(d);
     const panel = panelOf(d);
-    if (!target) return void (panel && workspaceStore.getState().openTab(PANEL_TAB + panel));
+    if (!target) return void (panel && revealWidget(panel, d.element ?? null));
     workspaceStore.getState().openPou(pouOf(workspaceStore.getState().project, target.pou)?.name ?? target.pou);
     panelsStore.getState().reveal(target);
   }, []);
