@@ -6,7 +6,9 @@ from __future__ import annotations
 
 from fastapi.testclient import TestClient
 
-from .test_simulations_support import counter, of_type, recv_until, registry, subscribe
+from ladderlab.simulation.registry import SimulationRegistry
+
+from .test_simulations_support import counter, entry, of_type, recv_until, registry, subscribe
 
 __all__ = ["counter", "registry"]  # fixtures
 
@@ -117,3 +119,51 @@ def test_the_timeline_marks_inputs_and_runtime_errors(client: TestClient, counte
     marks = client.get(f"/api/simulations/{counter}/history/marks").json()
     assert marks == [{"scan": 2, "kinds": ["force", "write"]}, {"scan": 4, "kinds": ["error", "write"]}]
     assert client.get(f"/api/simulations/{counter}").json()["history"]["marked"] == 4
+
+
+def test_continue_from_a_past_scan_starts_a_branch_and_keeps_the_old_one(
+    client: TestClient, counter: str, registry: SimulationRegistry
+) -> None:
+    """Issue 23 item 4: from scan 3, "continue from here" takes that scan's state (stopped); the next scans run
+    without the write the first branch had at scan 5; both branches stay viewable."""
+    with client.websocket_connect(f"/api/simulations/{counter}/ws") as ws:
+        subscribe(ws, ["Main.Count", "Main.Idle"])
+        for _ in range(4):
+            ws.send_json({"type": "single_cycle"})
+        ws.send_json({"type": "write", "path": "Main.Idle", "value": 42})
+        for _ in range(2):
+            ws.send_json({"type": "single_cycle"})
+        recv_until(ws, lambda m: m["type"] == "values" and m["scan"] == 6)
+        ws.send_json({"type": "fork"})
+        refused = recv_until(ws, of_type("error"))[0]
+        assert refused["message"] == "go to a past scan first: continue from here starts from the scan shown"
+
+        ws.send_json({"type": "seek", "scan": 3})
+        recv_until(ws, _values(viewing=3))
+        ws.send_json({"type": "fork"})
+        forked, before = recv_until(ws, _values(viewing=None, branch=2))
+        live = entry(registry, counter).handle
+        assert forked["scan"] == 3 and "MAIN.COUNT" not in forked["changed"]  # as the client saw it at scan 3
+        assert (live.read("Main.Count"), live.read("Main.Idle")) == (3, 7)
+        assert (forked["history"]["first"], forked["history"]["last"]) == (3, 3)
+        logs = [m["message"] for m in before if m["type"] == "log"]
+        assert "continued from scan 3 of branch 1: branch 2 is live" in logs
+        for _ in range(3):
+            ws.send_json({"type": "single_cycle"})
+        now = recv_until(ws, lambda m: m["type"] == "values" and m["scan"] == 6)[0]
+        assert now["history"]["last"] == 6 and now["changed"]["MAIN.COUNT"] == 6
+        assert live.read("Main.Idle") == 7
+        assert client.get(f"/api/simulations/{counter}").json()["state"] == "stopped"
+
+        ws.send_json({"type": "seek", "scan": 6, "branch": 1})  # the first branch: the write applied at scan 5
+        old = recv_until(ws, _values(viewing=6, viewing_branch=1))[0]
+        assert old["changed"]["MAIN.IDLE"] == 42
+        ws.send_json({"type": "seek", "scan": 6})  # this branch at scan 6 never had it
+        new = recv_until(ws, _values(viewing=6, viewing_branch=2))[0]
+        assert new["changed"]["MAIN.IDLE"] == 7 and new["scan"] == 6
+        ws.send_json({"type": "seek", "scan": 2})  # before the fork: not in this branch
+        error = recv_until(ws, of_type("error"))[0]
+        assert error["message"] == "scan 2 is no longer in the history: it starts at scan 3"
+        ws.send_json({"type": "seek", "scan": 2, "branch": 3})
+        error = recv_until(ws, of_type("error"))[0]
+        assert error["message"] == "there is no branch 3 (branches 1 to 2)"

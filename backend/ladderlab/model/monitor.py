@@ -217,6 +217,14 @@ class Seek(_Request):
 
     type: Literal["seek"]
     scan: int = Field(ge=0)
+    branch: int | None = Field(default=None, ge=1, description="An earlier branch of the history (default: live).")
+
+
+class Fork(_Request):
+    """Continue from the scan shown (after a ``seek``): the simulation takes that scan's state, stopped, and
+    records a new branch of the history; the branch it leaves stays viewable (``seek`` with its ``branch``)."""
+
+    type: Literal["fork"]
 
 
 class Live(_Request):
@@ -287,7 +295,8 @@ ClientMessage = Annotated[
     | Speed
     | RunUntil
     | Seek
-    | Live,
+    | Live
+    | Fork,
     Field(discriminator="type"),
 ]
 
@@ -325,6 +334,8 @@ class HistoryRange(BaseModel):
     bytes: int = Field(default=0, description="Memory the history holds: checkpoints and input log.")
     budget_bytes: int = Field(default=0, description="Its budget (the server's history_mb).")
     marked: int = Field(default=0, description="Grows when a scan gets a mark: fetch history/marks again.")
+    branch: int = Field(default=1, description="The live branch (a fork, continue from here, starts a new one).")
+    viewing_branch: int | None = Field(default=None, description="The branch of the scan shown; null: live.")
 
 
 class Values(BaseModel):

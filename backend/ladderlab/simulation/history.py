@@ -92,6 +92,7 @@ class History:
         self._scan_s: float | None = None  # CPU time per scan since the previous checkpoint (scans, the runner)
         self._after: float | None = None  # the clock when the previous checkpoint was taken
         self._replay: Simulation | None = None
+        self._ended: int | None = None  # the last scan recorded, once recording ended (``end``)
         self._replay_at: int | None = None  # scans the replay simulation has completed (its scan_count)
         sim.on_scan = self._scanned
         self._checkpoint()
@@ -117,7 +118,15 @@ class History:
     @property
     def last(self) -> int:
         """The newest scan that can be viewed (-1 before the first scan)."""
-        return self.live.scan_count - 1
+        return self._ended if self._ended is not None else self.live.scan_count - 1
+
+    def end(self) -> None:
+        """Stop recording (the live simulation continues from a past scan: a fork); what was recorded stays
+        viewable. The replay simulation is let go until the next seek (its memory is a whole program's)."""
+        self._ended = self.live.scan_count - 1
+        if self.live.on_scan == self._scanned:
+            self.live.on_scan = None
+        self._replay, self._replay_at = None, None
 
     def applied(self, applied: AppliedInput) -> None:
         """Record an input as the engine applied it (``Simulation.on_input``)."""

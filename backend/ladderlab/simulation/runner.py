@@ -199,6 +199,8 @@ class SimRunner:
         sim.on_input = self._applied
         # scan history (history.py): the replayed scan shown instead of the live one, while viewing
         self.history = History(sim, budget_bytes=history_bytes) if history_bytes else None
+        self.branches: list[History] = []  # earlier branches of the history, oldest first (fork)
+        self._view_history: History | None = None  # the history the scan shown comes from
         self._view: Simulation | None = None
         self._viewing: int | None = None  # the scan shown, numbered as frames number them (scans completed)
         self._union_locations: dict[str, Location] = {}
@@ -595,34 +597,74 @@ class SimRunner:
         history = self.history
         if history is None:
             return None
+        viewed = self._view_history
         return {
             "first": history.first + 1,
             "last": history.last + 1,
             "viewing": self._viewing,
-            "bytes": history.size,
+            "bytes": history.size + sum(branch.size for branch in self.branches),
             "budget_bytes": history.budget_bytes,
             "marked": history.marked,
+            "branch": len(self.branches) + 1,
+            "viewing_branch": self._branch_number(viewed) if viewed is not None else None,
         }
+
+    def _branch_number(self, history: History) -> int:
+        return self.branches.index(history) + 1 if history in self.branches else len(self.branches) + 1
 
     def _recorded(self) -> History:
         if self.history is None:
             raise CommandError("bad_state", "this simulation keeps no scan history (the server's history_mb is 0)")
         return self.history
 
-    def seek(self, scan: int) -> dict[str, Any] | None:
-        """Show scan ``scan`` as it was (every watched value and element); the live scans go on unseen."""
+    def seek(self, scan: int, branch: int | None = None) -> dict[str, Any] | None:
+        """Show scan ``scan`` as it was (every watched value and element); the live scans go on unseen. ``branch``:
+        an earlier branch of the history (1 for the first; default: the live one)."""
         history = self._recorded()
+        if branch is not None and branch != len(self.branches) + 1:
+            if not 1 <= branch <= len(self.branches):
+                raise CommandError("bad_value", f"there is no branch {branch} (branches 1 to {len(self.branches) + 1})")
+            history = self.branches[branch - 1]
         try:
             view = history.seek(scan - 1)
         except HistoryUnavailable:
             raise CommandError("bad_value", _shown_numbers(scan, history)) from None
-        self._view, self._viewing, self._full = view, scan, True
+        self._view, self._viewing, self._view_history, self._full = view, scan, history, True
         self._view_reader = view.reader(self._union_locations)
         return self.history_range()
 
     def live(self) -> None:
         """Show the live scans again."""
-        self._view, self._viewing, self._full = None, None, True
+        self._view, self._viewing, self._view_history, self._full = None, None, None, True
+
+    #: Earlier branches kept beside the live one; a fork beyond them drops the oldest.
+    MAX_BRANCHES = 3
+
+    def fork(self) -> dict[str, Any] | None:
+        """Continue from the scan shown: the live simulation takes that scan's state (stopped) and records a new
+        branch of the history; the branch it leaves is kept and viewable (``seek`` with ``branch``)."""
+        history, view = self._recorded(), self._view
+        if view is None or self._viewing is None:
+            raise CommandError("bad_state", "go to a past scan first: continue from here starts from the scan shown")
+        if self.sim.halted is not None:
+            raise CommandError(
+                "bad_state", "the live scan is halted: continue or reset it before continuing from another"
+            )
+        scan, origin = self._viewing, self._branch_number(self._view_history or history)
+        state = view.state()
+        self._set_running(False)
+        history.end()
+        self.sim.restore(state)
+        self.branches.append(history)
+        if len(self.branches) > self.MAX_BRANCHES:
+            self.branches.pop(0).end()
+        self.history = History(self.sim, budget_bytes=history.budget_bytes)
+        self._seen_scans, self._seen_faults, self._faulted = self.sim.scan_count, 0, False
+        self.live()
+        self._log(
+            "state", "info", f"continued from scan {scan} of branch {origin}: branch {len(self.branches) + 1} is live"
+        )
+        return self.history_range()
 
     def history_find(
         self, scan: int, direction: int = 1, path: str | None = None, condition: str | None = None
@@ -670,8 +712,8 @@ class SimRunner:
 
     def _back_to_view(self) -> None:
         """A search moved the replay: back to the scan shown."""
-        if self._viewing is not None and self.history is not None:
-            self._view = self.history.seek(self._viewing - 1)
+        if self._viewing is not None and self._view_history is not None:
+            self._view = self._view_history.seek(self._viewing - 1)
 
     def set_speed(self, scale: float) -> None:
         """Pace the scans at ``scale`` times real time; the virtual clock and every value stay the same."""
@@ -851,6 +893,7 @@ class SimRunner:
         "history_find": history_find,
         "history_diff": history_diff,
         "history_marks": history_marks,
+        "fork": fork,
     }
 
 

@@ -1275,6 +1275,10 @@ export interface SimulationInfo {
  */
 export interface HistoryRange {
   /**
+   * The live branch (a fork, continue from here, starts a new one).
+   */
+  branch?: number;
+  /**
    * Its budget (the server's history_mb).
    */
   budget_bytes?: number;
@@ -1298,6 +1302,10 @@ export interface HistoryRange {
    * The scan shown instead of the live one; null: live.
    */
   viewing?: number | null;
+  /**
+   * The branch of the scan shown; null: live.
+   */
+  viewing_branch?: number | null;
 }
 /**
  * Wall time of the scans run so far, in milliseconds (halted time excluded).

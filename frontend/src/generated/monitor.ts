@@ -26,7 +26,8 @@ export interface MonitorProtocol {
     | Speed
     | RunUntil
     | Seek
-    | Live;
+    | Live
+    | Fork;
   server: Values | Status | TraceData | Log | Error;
 }
 /**
@@ -467,6 +468,10 @@ export interface RunUntil {
  * via the `definition` "Seek".
  */
 export interface Seek {
+  /**
+   * An earlier branch of the history (default: live).
+   */
+  branch?: number | null;
   scan: number;
   type: "seek";
 }
@@ -478,6 +483,16 @@ export interface Seek {
  */
 export interface Live {
   type: "live";
+}
+/**
+ * Continue from the scan shown (after a ``seek``): the simulation takes that scan's state, stopped, and
+ * records a new branch of the history; the branch it leaves stays viewable (``seek`` with its ``branch``).
+ *
+ * This interface was referenced by `MonitorProtocol`'s JSON-Schema
+ * via the `definition` "Fork".
+ */
+export interface Fork {
+  type: "fork";
 }
 /**
  * What changed in this client's subscription since the previous ``values`` message to it.
@@ -545,6 +560,10 @@ export interface Values {
  */
 export interface HistoryRange {
   /**
+   * The live branch (a fork, continue from here, starts a new one).
+   */
+  branch?: number;
+  /**
    * Its budget (the server's history_mb).
    */
   budget_bytes?: number;
@@ -568,6 +587,10 @@ export interface HistoryRange {
    * The scan shown instead of the live one; null: live.
    */
   viewing?: number | null;
+  /**
+   * The branch of the scan shown; null: live.
+   */
+  viewing_branch?: number | null;
 }
 /**
  * What a client needs to show a value as IEC text: TIME and dates arrive as ms, enumerations as ints.
