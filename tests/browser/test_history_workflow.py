@@ -114,3 +114,15 @@ def test_go_back_to_a_scan_and_see_the_diagram_as_it_was(page, server):
     timeline.get_by_label("Find what").select_option("changed")
     timeline.get_by_role("button", name="Next").click()
     page.get_by_role("status", name="History search").filter(has_text="no scan after 4 in the history").wait_for()
+
+    # Continue from scan 2 (Motor off): the simulation takes that state, a new branch is live
+    slider.fill("2")
+    banner.filter(has_text="Viewing scan 2 (history)").wait_for()
+    page.get_by_role("button", name="Continue from here").click()
+    banner.wait_for(state="detached")
+    timeline.get_by_label("History kept").filter(has_text="branch 2 live").wait_for()
+    scan.filter(has_text=re.compile("^2$")).wait_for()
+    _coil(page, "off")
+    cycle.click()
+    scan.filter(has_text=re.compile("^3$")).wait_for()
+    _coil(page, "off")  # this branch never had the write of Start

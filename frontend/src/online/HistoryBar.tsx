@@ -67,6 +67,7 @@ export function HistoryBar() {
       </button>
       <span className="history-range" aria-label="History kept">
         from scan {history.first}
+        {(history.branch ?? 1) > 1 ? ` · branch ${history.branch} live` : ""}
       </span>
       <HistoryFind scan={scan} />
     </span>
@@ -175,6 +176,13 @@ export function HistoryBanner() {
         Viewing scan {viewing} (history) · t = {timeMs} ms · the values are those of that scan; the simulation goes on
         <button type="button" onClick={onlineStore.getState().goLive}>
           Back to live
+        </button>
+        <button
+          type="button"
+          onClick={onlineStore.getState().fork}
+          title="Continue from this scan: the simulation takes its state (stopped); the scans after it stay viewable as the earlier branch"
+        >
+          Continue from here
         </button>
       </div>
       <HistoryCompare viewing={viewing} />

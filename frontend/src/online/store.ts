@@ -99,6 +99,8 @@ export interface OnlineActions {
   seek(scan: number): void;
   /** Shows the live scans again after `seek`. */
   goLive(): void;
+  /** Continues from the scan shown: a new branch of the history becomes live (the old one is kept). */
+  fork(): void;
   /** Prepares `value` for `path` (null: drops its prepared value). */
   prepare(path: string, value: WriteValue | null): void;
   /** Forces (F7) or writes (Ctrl+F7) every prepared value, then forgets them. */
@@ -367,6 +369,7 @@ export function createOnlineStore(
       unforceAll: () => void get().send({ type: "unforce_all" }),
       seek: (scan) => void get().send({ type: "seek", scan }),
       goLive: () => void get().send({ type: "live" }),
+      fork: () => void get().send({ type: "fork" }),
 
       prepare(path, value) {
         const next = { ...get().prepared };
