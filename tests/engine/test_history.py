@@ -298,3 +298,51 @@ def test_random_fbd_programs_seek_to_what_ran_live(pou, writes, interval, seeks)
     for scan in seeks:
         replay = history.seek(scan)
         assert (replay.snapshot(), replay.probes("MAIN")) == seen[scan], f"scan {scan}"
+
+
+class _Quiet:
+    """A runner's sink that drops its messages."""
+
+    def status(self, state, at) -> None: ...
+
+    def log(self, entry) -> None: ...
+
+    def frame(self, frame) -> None: ...
+
+
+@fuzz_settings(fast=15)
+@given(
+    branches=st.lists(
+        st.tuples(st.lists(st.tuples(st.integers(0, 20), st.integers(-50, 50)), max_size=4), st.integers(1, 20)),
+        min_size=1,
+        max_size=4,
+    ),
+    forks=st.lists(st.integers(0, 1000), min_size=3, max_size=3),
+)
+def test_seeks_equal_the_live_scans_of_every_branch_after_forks(branches, forks):
+    """Issue 23 items 4 and 6: a run, then forks from random past scans, each branch running with other writes;
+    every scan of every branch (the earlier ones kept) seeks to what that branch showed live."""
+    from ladderlab.simulation.runner import SimRunner
+
+    runner = SimRunner(Simulation(COMPILED), _Quiet(), history_bytes=1 << 24)
+    seen: list[dict[int, dict]] = []
+    for number, (writes, scans) in enumerate(branches):
+        if number:  # fork from a past scan of the branch before
+            history = runner.history
+            scan = history.first + 1 + forks[number - 1] % (history.last - history.first + 1)
+            runner.seek(scan)
+            runner.fork()
+        shown = {runner.sim.scan_count: runner.sim.snapshot()} if number else {}
+        for step in range(scans):
+            for at, value in writes:
+                if at == step:
+                    runner.sim.write("Main.Level", value)
+            runner.sim.cycle(1)
+            shown[runner.sim.scan_count] = runner.sim.snapshot()
+        seen.append(shown)
+    for number, shown in enumerate(seen, 1):
+        for scan, values in shown.items():
+            if scan == 0 or scan - 1 < (runner.branches + [runner.history])[number - 1].first:
+                continue
+            runner.seek(scan, branch=number)
+            assert runner.shown.snapshot() == values, f"branch {number}, scan {scan}"

@@ -359,7 +359,7 @@ class SimRunner:
 
     def _publish(self, now: float) -> None:
         self._last_publish = now
-        full, sim = self._full, self._view or self.sim
+        full, sim = self._full, self.shown
         values = (self._reader if self._view is None else self._view_reader).read()
         if full:
             changed = values
@@ -406,7 +406,7 @@ class SimRunner:
 
     def _states(self, instance: str, every: bool, ids: tuple[str, ...]) -> dict[str, object]:
         """Each watched element's state: its value when it ran in the last scan, else None."""
-        view = (self._view or self.sim).probes(instance, None if every else ids)
+        view = self.shown.probes(instance, None if every else ids)
         elements = sorted((view.values.keys() | view.executed).union(ids)) if every else ids
         return {e: (view.values.get(e) if e in view.executed else None) for e in elements}
 
@@ -611,6 +611,11 @@ class SimRunner:
 
     def _branch_number(self, history: History) -> int:
         return self.branches.index(history) + 1 if history in self.branches else len(self.branches) + 1
+
+    @property
+    def shown(self) -> Simulation:
+        """The simulation the frames show: a past scan's replay while one is viewed, else the live one."""
+        return self._view or self.sim
 
     def _recorded(self) -> History:
         if self.history is None:
