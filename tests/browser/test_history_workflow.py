@@ -7,7 +7,9 @@ Screenshot: tests/browser/artifacts/history-scan-2.png."""
 
 from __future__ import annotations
 
+import json
 import re
+from pathlib import Path
 
 import pytest
 
@@ -114,6 +116,13 @@ def test_go_back_to_a_scan_and_see_the_diagram_as_it_was(page, server):
     timeline.get_by_label("Find what").select_option("changed")
     timeline.get_by_role("button", name="Next").click()
     page.get_by_role("status", name="History search").filter(has_text="no scan after 4 in the history").wait_for()
+
+    # the session as a file ladderlab replay takes: one write, at scan 3 (the fourth scan), six scans so far
+    with page.expect_download() as download:
+        timeline.get_by_role("link", name="Download recording").click()
+    recording = json.loads(Path(download.value.path()).read_text())
+    assert recording["format"] == "ladderlab-recording" and recording["scans"] > 10  # it ran meanwhile
+    assert [(line["scan"], line["kind"], line["path"]) for line in recording["inputs"]] == [(3, "write", "START")]
 
     # Continue from scan 2 (Motor off): the simulation takes that state, a new branch is live
     slider.fill("2")

@@ -4,6 +4,9 @@ variable changed. Scans are numbered as ``values.scan`` (scans completed): Count
 
 from __future__ import annotations
 
+import json
+from pathlib import Path
+
 from fastapi.testclient import TestClient
 
 from ladderlab.simulation.registry import SimulationRegistry
@@ -167,3 +170,50 @@ def test_continue_from_a_past_scan_starts_a_branch_and_keeps_the_old_one(
         ws.send_json({"type": "seek", "scan": 2, "branch": 3})
         error = recv_until(ws, of_type("error"))[0]
         assert error["message"] == "there is no branch 3 (branches 1 to 2)"
+
+
+def test_a_session_downloads_as_a_recording_that_ladderlab_replay_prints(
+    client: TestClient, counter: str, capsys
+) -> None:
+    """Issue 23 item 5: the browser's "Download recording" is the file ladderlab replay takes: the project's
+    folder in the workspace, its revision, the inputs with their scans; the rows are the session's scans."""
+    from ladderlab.cli import main
+
+    cycle = f"/api/simulations/{counter}/cycle"
+    client.post(cycle)
+    with client.websocket_connect(f"/api/simulations/{counter}/ws") as ws:
+        subscribe(ws, ["Main.Count"])
+        ws.send_json({"type": "write", "path": "Main.Idle", "value": 5})
+        ws.send_json({"type": "single_cycle"})
+        ws.send_json({"type": "single_cycle"})
+        recv_until(ws, lambda m: m["type"] == "values" and m["scan"] == 3)
+    response = client.get(f"/api/simulations/{counter}/recording")
+    assert response.status_code == 200
+    data = response.json()
+    assert (data["format"], data["scans"], data["inputs"]) == (
+        "ladderlab-recording",
+        3,
+        [{"scan": 1, "kind": "write", "path": "Main.Idle", "value": 5}],
+    )
+    path = Path(data["project"]).parent.parent / "session.json"
+    path.write_bytes(response.content)
+    capsys.readouterr()
+    assert main(["replay", str(path), "--watch", "Main.Count", "--watch", "Main.Idle", "--format", "jsonl"]) == 0
+    rows = [json.loads(line) for line in capsys.readouterr().out.splitlines()]
+    assert rows == [
+        {"scan": 0, "time_ms": 10, "Main.Count": 1, "Main.Idle": 7},
+        {"scan": 1, "time_ms": 20, "Main.Count": 2, "Main.Idle": 5},
+        {"scan": 2, "time_ms": 30, "Main.Count": 3, "Main.Idle": 5},
+    ]
+
+    with client.websocket_connect(f"/api/simulations/{counter}/ws") as ws:
+        subscribe(ws, ["Main.Count"])
+        ws.send_json({"type": "seek", "scan": 2})
+        recv_until(ws, _values(viewing=2))
+        ws.send_json({"type": "fork"})
+        recv_until(ws, _values(branch=2))
+    refused = client.get(f"/api/simulations/{counter}/recording")
+    assert refused.status_code == 409
+    assert refused.json()["detail"]["message"] == (
+        "this session cannot be replayed from scan 0 by ladderlab replay: it continued from a past scan"
+    )

@@ -16,10 +16,10 @@ from ..model.schema import SCHEMA_MODELS, schema_of
 from ..simulation.build import build_project
 from ..simulation.check import check_project
 from ..simulation.conditions import BadCondition, parse_condition
+from ..simulation.recording import Recording, read_recording
 from ..storage import StorageError, load_project_path
 from ..storage.atomic import write_atomic
 from ..storage.project_folder import revision_of
-from .record import Recording, read_recording
 from .run import jsonl_line, parse_duration, parse_events, parse_fault, parse_set, run_scans, table_lines
 from .test import add_test_command
 

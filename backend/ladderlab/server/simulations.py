@@ -15,6 +15,7 @@ from typing import Annotated, Any
 from fastapi import APIRouter, Body, Depends, Request, Response, status
 
 from ..model.api import HistoryDiff, HistoryFound, HistoryMark, ResetSimulation, ScanTimes, SeekScan, SimulationInfo
+from ..simulation.recording import Recording
 from ..simulation.registry import SimulationEntry, SimulationRegistry
 from ..simulation.remote import BuildFailed
 from ..simulation.runner import CommandError
@@ -126,6 +127,37 @@ def inputs(sim_id: str, registry: RegistryDep) -> Response:
     if answer["dropped"]:
         headers["X-Dropped-Inputs"] = str(answer["dropped"])
     return Response(text, media_type="application/x-ndjson", headers=headers)
+
+
+@router.get(
+    "/api/simulations/{sim_id}/recording",
+    response_class=Response,
+    responses={**responses(404, 409), 200: {"content": {"application/json": {}}}},
+)
+def recording(sim_id: str, registry: RegistryDep, workspace: WorkspaceDep) -> Response:
+    """The session as a recording ``ladderlab replay`` prints again scan for scan: the project's folder and
+    revision, the inputs applied with their scans, the scans run (409 when it cannot be one run from scan 0:
+    inputs dropped, a scan changed at a breakpoint, a continue from a past scan)."""
+    entry = registry.get(sim_id)
+    try:
+        answer = entry.handle.inputs()
+    except CommandError as error:
+        raise ApiError(409, error.message) from None
+    halted = [line["scan"] for line in answer["inputs"] if line.get("phase") == "halt"]
+    reason = (
+        f"{answer['dropped']} older inputs were dropped"
+        if answer["dropped"]
+        else "it continued from a past scan"
+        if answer["forked"]
+        else f"scan {halted[0]} was changed while halted at a breakpoint"
+        if halted
+        else None
+    )
+    if reason is not None:
+        raise ApiError(409, f"this session cannot be replayed from scan 0 by ladderlab replay: {reason}")
+    record = Recording(str(workspace.folder(entry.project)), entry.revision, answer["scans"], None, answer["inputs"])
+    headers = {"Content-Disposition": f'attachment; filename="{entry.project}-recording.json"'}
+    return Response(record.to_bytes(), media_type="application/json", headers=headers)
 
 
 @router.post("/api/simulations/{sim_id}/seek", response_model=SimulationInfo, responses=_DESCRIBED)

@@ -586,8 +586,15 @@ class SimRunner:
             self._log("inject", "info", f"removed {what}", scan=applied.scan)
 
     def inputs(self) -> dict[str, Any]:
-        """The applied inputs kept (oldest first, as ``--events`` lines) and how many older ones were dropped."""
-        return {"inputs": [applied.to_json() for applied in self.journal], "dropped": self.journal_dropped}
+        """The applied inputs kept (oldest first, as ``--events`` lines) and how many older ones were dropped;
+        ``scans``: the scans completed, ``forked``: whether the simulation continued from a past scan (then the
+        inputs are no longer one run from scan 0)."""
+        return {
+            "inputs": [applied.to_json() for applied in self.journal],
+            "dropped": self.journal_dropped,
+            "scans": self.sim.scan_count,
+            "forked": bool(self.branches),
+        }
 
     # ------------------------------------------------------------------ scan history (history.py)
 

@@ -25,6 +25,7 @@ export function stepScan(history: { first: number; last: number }, scan: number,
 export function HistoryBar() {
   const history = useOnline((s) => s.monitor.history);
   const online = useOnline((s) => s.phase === "online");
+  const simulation = useOnline((s) => s.simulation);
   if (!online || !history || history.last < history.first) return null;
   const s = onlineStore.getState();
   const scan = shownScan(history);
@@ -70,6 +71,16 @@ export function HistoryBar() {
         {(history.branch ?? 1) > 1 ? ` · branch ${history.branch} live` : ""}
       </span>
       <HistoryFind scan={scan} />
+      {simulation ? (
+        <a
+          className="history-download"
+          href={`/api/simulations/${encodeURIComponent(simulation)}/recording`}
+          download
+          title="The session as a file: ladderlab replay FILE prints its scans again"
+        >
+          Download recording
+        </a>
+      ) : null}
     </span>
   );
 }

@@ -1,6 +1,6 @@
-"""Recordings of ``ladderlab run`` (issue 23): ``--record FILE`` keeps what makes the run what it was, so
-``ladderlab replay FILE`` prints the same rows on any machine and a recording attached to a bug report
-reproduces the bug.
+"""Recordings of a run (issue 23): ``ladderlab run --record FILE``, or an online session's "Download
+recording", keep what makes the run what it was, so ``ladderlab replay FILE`` prints the same rows on any
+machine and a recording attached to a bug report reproduces the bug.
 
 A run is the project and the inputs applied to it, scan by scan: the clock is virtual and every input
 (``--set``, ``--fault``, ``--events``) enters through the engine's one input path, which reports each
