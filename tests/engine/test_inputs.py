@@ -256,3 +256,36 @@ def test_an_address_nothing_is_declared_at_is_refused_with_the_reason(path, erro
     with pytest.raises((KeyError, ValueError)) as refused:
         sim.read(path)
     assert error in str(refused.value)
+
+
+HEAT = st_pou(
+    "Heat",
+    "plant",
+    "VAR_EXTERNAL\n    T : REAL;\nEND_VAR\nVAR\n    Temp : REAL;\nEND_VAR",
+    "Temp := Temp + 1.0;\nT := Temp;",
+)
+SEEN = st_pou("Main", "program", "VAR_EXTERNAL\n    T : REAL;\nEND_VAR\nVAR\n    Seen : REAL;\nEND_VAR", "Seen := T;")
+HEAT_GLOBALS = "VAR_GLOBAL\n    T : REAL;\nEND_VAR"
+
+
+@settings(max_examples=20, deadline=None)
+@given(seed=st.integers(0, 2**32 - 1))
+def test_noise_on_a_plants_own_variable_never_feeds_back_into_its_physics(seed):
+    """The plant integrates Temp by 1 a scan and puts it out on T; noise of 0.5 on Heat.Temp is what is read
+    of it after the plant ran (the panel, the program), while the plant goes on from the true value: after n
+    scans Heat.Temp reads n within 0.5 and T is exactly n (noise fed back into the plant would wander off)."""
+    sim = simulate(HEAT, SEEN, globals=HEAT_GLOBALS)
+    sim.submit(InputEvent("fault", "Heat.Temp", mode="noisy", amplitude=0.5, seed=seed))
+    for n in range(1, 201):
+        sim.cycle()
+        assert abs(sim.read("Heat.Temp") - n) <= 0.5 and sim.read("Main.Seen") == n, n
+
+
+def test_a_stuck_plant_variable_is_what_is_read_while_the_plant_goes_on():
+    sim = simulate(HEAT, SEEN, globals=HEAT_GLOBALS)
+    sim.submit(InputEvent("fault", "Heat.Temp", mode="stuck", value=30))
+    sim.cycle(50)
+    assert (sim.read("Heat.Temp"), sim.read("Main.Seen")) == (30.0, 50.0)
+    sim.submit(InputEvent("clear_fault", "Heat.Temp"))
+    sim.cycle()
+    assert sim.read("Heat.Temp") == 51.0  # the plant counted every scan: only the reading was stuck

@@ -147,15 +147,19 @@ class Injection:
     clean: object = None  # the signal as its writer last left it
     last: tuple[object, ...] = ()  # (what this fault left there at the previous crossing,), () before the first
 
-    def value(self, current: object) -> object:
+    def value(self, current: object, fresh: bool = False) -> object:
         """What is read where the signal crosses, given the variable's value now; a noisy fault draws once
         (seeded). Noise strays around the signal as its writer (the plant, a panel) last wrote it: a variable
         that still holds what the fault left at the previous crossing has not been written since."""
-        unwritten = bool(self.last) and current == self.last[0] and type(current) is type(self.last[0])
-        signal = self.clean if unwritten else current
+        signal = current if fresh else self.lifted(current)
         self.clean = signal
         self.last = (self._faulted(signal),)
         return self.last[0]
+
+    def lifted(self, current: object) -> object:
+        """The signal without the fault: as its writer last left it, when nothing wrote it since the fault."""
+        unwritten = bool(self.last) and current == self.last[0] and type(current) is type(self.last[0])
+        return self.clean if unwritten else current
 
     def state(self) -> tuple[object, object, tuple[object, ...]]:
         """What the fault carries from scan to scan (its generator, the signal, its last value): plain data."""

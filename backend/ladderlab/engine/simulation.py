@@ -265,12 +265,12 @@ class Simulation:
         self._halts = 0
         self._scheduled = scheduled
         self._apply_inputs()
-        self._cross()
+        plants = [task for task in due if task.plant]
+        control = [task for task in due if not task.plant] if plants else due
+        self._cross(plants_next=bool(plants))
         self._ns["ll_now"] = now
         self._stamp += 1
         self._ns["ll_scan"] = self._stamp
-        plants = [task for task in due if task.plant]
-        control = [task for task in due if not task.plant] if plants else due
         if self.debugger is None:
             outer = self._watchdog.deadline, self._watchdog.limit_s  # a scan run from a test's body (call)
             start = self._clock()
@@ -732,9 +732,14 @@ class Simulation:
             self._injections[location.path] = (location, prepared)
         elif kind == "clear_fault":
             if location is None:
+                lifted = list(self._injections.values())
                 self._injections.clear()
             else:
-                self._injections.pop(location.path, None)
+                one = self._injections.pop(location.path, None)
+                lifted = [one] if one is not None else []
+            for where, fault in lifted:  # a plant's own variable gets its true value back
+                if self._plant_owned(where):
+                    where.set(self._roots, fault.lifted(where.get(self._roots)))
         scan = self.scan_count
         applied = (
             AppliedInput(event, scan, "halt", self._halt_pid, self._halts) if halted else AppliedInput(event, scan)
@@ -744,11 +749,24 @@ class Simulation:
         if self.on_input is not None:
             self.on_input(applied)
 
-    def _cross(self) -> None:
-        """Where signals cross between the plants and the program: injected faults, then forces (a force wins)."""
+    def _cross(self, plants_next: bool = False) -> None:
+        """Where signals cross between the plants and the program: injected faults, then forces (a force wins).
+
+        Before the plants run, a fault on a plant's own variable (``Tank.Level``) is lifted: the plant computes
+        its process from the true value, and only the program reads the faulted one (a noisy level would
+        otherwise feed its noise back into the physics and wander off)."""
         for location, injected in self._injections.values():
-            location.set(self._roots, injected.value(location.get(self._roots)))
+            current, owned = location.get(self._roots), self._plant_owned(location)
+            if plants_next and owned:
+                location.set(self._roots, injected.lifted(current))
+            else:  # after the plants ran, their own variables hold what they just computed: the true signal
+                location.set(self._roots, injected.value(current, fresh=owned and not plants_next))
         self._apply_forces()
+
+    def _plant_owned(self, location: Location) -> bool:
+        kind, name = location.root
+        pou = self._context.pous.get(name) if kind == "program" else None
+        return pou is not None and pou.plant
 
     def _apply_forces(self) -> None:
         for location, value in self._forces.values():
