@@ -199,6 +199,7 @@ class SimRunner:
         sim.on_input = self._applied
         # scan history (history.py): the replayed scan shown instead of the live one, while viewing
         self.history = History(sim, budget_bytes=history_bytes) if history_bytes else None
+        self._budget_bytes = history_bytes  # shared by every branch of the history
         self.branches: list[History] = []  # earlier branches of the history, oldest first (fork)
         self._view_history: History | None = None  # the history the scan shown comes from
         self._view: Simulation | None = None
@@ -610,7 +611,7 @@ class SimRunner:
             "last": history.last + 1,
             "viewing": self._viewing,
             "bytes": history.size + sum(branch.size for branch in self.branches),
-            "budget_bytes": history.budget_bytes,
+            "budget_bytes": self._budget_bytes,
             "marked": history.marked,
             "branch": len(self.branches) + 1,
             "viewing_branch": self._branch_number(viewed) if viewed is not None else None,
@@ -668,9 +669,12 @@ class SimRunner:
         history.end()
         self.sim.restore(state)
         self.branches.append(history)
-        if len(self.branches) > self.MAX_BRANCHES:
-            self.branches.pop(0).end()
-        self.history = History(self.sim, budget_bytes=history.budget_bytes)
+        budget = self._budget_bytes
+        while len(self.branches) > self.MAX_BRANCHES or (
+            self.branches and budget - sum(b.size for b in self.branches) < budget // 4
+        ):
+            self.branches.pop(0)  # the oldest branch goes: all branches share the one budget
+        self.history = History(self.sim, budget_bytes=budget - sum(b.size for b in self.branches))
         self._seen_scans, self._seen_faults, self._faulted = self.sim.scan_count, 0, False
         self.live()
         self._log(
