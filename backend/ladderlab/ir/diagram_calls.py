@@ -209,22 +209,25 @@ def check_call(
     at: At,
     en: PinValue | None = None,
     eno: Var | None = None,
+    context: t.Type | None = None,
 ) -> CheckedCall | None:
     """The box as a checked ST call (None when reported). ``inputs``/``outputs`` map upper-case pin names
-    to what feeds them / the variable they write (FB outputs). The first box of a shape that checks without
-    a word also gives that shape its template (diagram_shapes); later boxes of the shape use it."""
-    shape = ops.shapes.shape(callee.name, instance, inputs, outputs, en, eno)
+    to what feeds them / the variable they write (FB outputs); ``context`` is the type of the variable a
+    function's result is written to, which its literals and generic type adapt to as in ``y := F(...)``
+    (st/context_typing.py). The first box of a shape that checks without a word also gives that shape its
+    template (diagram_shapes); later boxes of the shape use it."""
+    shape = ops.shapes.shape(callee.name, instance, inputs, outputs, en, eno, context)
     if shape is not None:
         template = ops.shapes.templates.get(shape.key)
         if template is not None:
             return CheckedCall(template.ty, template.fb, None, template, shape.leaves)
     before = len(ops.ctx.diagnostics)
     target = ops.parse(instance, at, "the instance") if instance is not None else ast.Name(callee.name)
-    node = _check(ops, callee, target, inputs, outputs, at, en, eno)
+    node = _check(ops, callee, target, inputs, outputs, at, en, eno, context)
     if node is None:
         return None
     if shape is not None and shape.key not in ops.shapes.templates and len(ops.ctx.diagnostics) == before:
-        _learn(ops, callee, shape, inputs, at, en)
+        _learn(ops, callee, shape, inputs, at, en, context)
     return CheckedCall(node.ty, _fb(callee, node), node)
 
 
@@ -233,14 +236,28 @@ def _fb(callee: Callee, node: ast.Call) -> t.FbType | None:
 
 
 def _learn(
-    ops: Operands, callee: Callee, shape: Shape, inputs: dict[str, PinValue], at: At, en: PinValue | None
+    ops: Operands,
+    callee: Callee,
+    shape: Shape,
+    inputs: dict[str, PinValue],
+    at: At,
+    en: PinValue | None,
+    context: t.Type | None,
 ) -> None:
     """Check and lower the shape's call with placeholders; it becomes the template unless anything was reported."""
     holders = ops.shapes.placeholders(shape, inputs, en)
     template = None
     with ops.muted() as reported:
         node = _check(
-            ops, callee, holders.instance or ast.Name(callee.name), holders.inputs, {}, at, holders.en, holders.eno
+            ops,
+            callee,
+            holders.instance or ast.Name(callee.name),
+            holders.inputs,
+            {},
+            at,
+            holders.en,
+            holders.eno,
+            context,
         )
         statements = _lower(ops, callee, node, holders.result, at, Origin(ops.ctx.name)) if node else None
         if statements is not None and Template.covers(statements):
@@ -257,6 +274,7 @@ def _check(
     at: At,
     en: PinValue | None,
     eno: Var | None,
+    context: t.Type | None = None,
 ) -> ast.Call | None:
     """Check the box as the ST call of ``target`` (the instance or the function's name; None: reported)."""
     missing = callee.missing(set(inputs))
@@ -295,7 +313,7 @@ def _check(
     if callee.is_fb:
         checker.call(node, statement=True)
     else:
-        checker.expr(node)  # types the call node (its result type)
+        checker.expr(node, context)  # types the call node (its result type, adapted to where it goes)
     if ops.errors_since(before) or node.ty is t.ERROR:
         return None
     return node

@@ -5,6 +5,9 @@ are brought to the type the checker combined them in, inserting ``Convert`` for
 the implicit widenings it accepted; untyped literals take that type directly.
 Decisions (docs/ir.md, "Lowering of ST and whole projects"):
 
+* every node's type is the one the checker settled (st/context_typing.py): a literal has the
+  type its context gave it, a generic operation computes in ``node.ty``; literal expressions
+  (``-5``, ``3 * 4``) are folded into one ``Const`` in that type;
 * a STRING of any length and a Subrange count as one type with STRING / their base,
   so they never get a ``Convert``;
 * explicit ``*_TO_*`` conversions and TRUNC stay standard ``Call``s, ``Convert`` is only
@@ -20,11 +23,12 @@ Decisions (docs/ir.md, "Lowering of ST and whole projects"):
 from __future__ import annotations
 
 from ..iec import stdlib
-from ..iec.elementary import DEFAULT_STRING_LENGTH, GENERIC
+from ..iec.elementary import DEFAULT_STRING_LENGTH, ELEMENTARY, GENERIC
 from ..iec.stdlib import OPERATOR_OVERLOADS
 from ..st import ast
 from ..st import types as t
-from ..st.rules import EnumValue, constant_value
+from ..st.context_typing import FoldError, fold, literal_only
+from ..st.rules import EnumValue
 from ..st.symbols import PouInfo, Symbol
 from .context import PouContext
 from .lower_types import POINTERS_UNSUPPORTED, LoweringError, byte_size, engine_value, ir_default, unnamed_address
@@ -48,8 +52,8 @@ _OPERATORS = {
     "<=": "LE",
     ">=": "GE",
 }
-_LITERAL_TARGETS = ("bool", "int", "bits", "real")  # what an untyped literal may become (types.assignable)
 _TIME_CATEGORIES = {"time", "tod", "dt", "date"}
+_COMPARISONS = frozenset({"EQ", "NE", "LT", "GT", "LE", "GE"})
 
 
 def lower_expr(node: ast.Expr, ctx: PouContext, expected: IrType | None = None) -> Expr:
@@ -73,8 +77,10 @@ def _lower(node: ast.Expr, ctx: PouContext, expected: IrType | None) -> Expr:
         raise LoweringError(None)
     if type(node) is ast.Name and type(node.ref) is Symbol:  # the commonest node by far: a declared variable
         return lower_access(node, ctx)
-    if isinstance(ty, (t.UntypedInt, t.UntypedReal)):
+    if isinstance(ty, t.UNTYPED):  # not settled by the checker (a diagram's placeholder): the expected type decides
         return _untyped(node, ctx, expected)
+    if type(node) in _NUMERIC_LITERALS or (type(node) in _OPERATIONS and literal_only(node)):
+        return _folded(node, ctx.ir_type(ty))
     if isinstance(node, (ast.BoolLit, ast.StringLit, ast.TimeLit, ast.TypedLit)):
         return _literal(node, ctx)
     if isinstance(node, ast.Name) and isinstance(node.ref, EnumValue):
@@ -120,33 +126,41 @@ def value_type(ty: IrType) -> IrType:
 # ---------------------------------------------------------------- literals and constants
 
 
-def _untyped(node: ast.Expr, ctx: PouContext, expected: IrType | None) -> Expr:
-    """An expression of untyped literals (``5``, ``-2.5``, ``3 * 4``) folded into a constant of the target type."""
-    target = _literal_target(node.ty, ctx, expected)
-    value = constant_value(ctx.types.constants, node)
-    if value is None:  # e.g. NOT 5: compute it in the target type
-        if isinstance(node, ast.Call):  # SIZEOF
-            return _sizeof(node, ctx, target)
-        if isinstance(node, ast.Unary):
-            return Unary("NOT" if node.op == "NOT" else "NEG", lower_to(node.operand, ctx, target), target)
-        if isinstance(node, ast.Binary):
-            return Binary(
-                _OPERATORS[node.op], lower_to(node.left, ctx, target), lower_to(node.right, ctx, target), target
-            )
-        raise LoweringError(None)
+_NUMERIC_LITERALS = (ast.IntLit, ast.RealLit)
+_OPERATIONS = (ast.Unary, ast.Binary)
+
+
+def _folded(node: ast.Expr, target: IrType) -> Const:
+    """A literal expression as one constant of its settled type (the checker reported values that do not fit)."""
+    base = value_type(target)
+    try:
+        value = fold(node, _checker_type(base))
+    except FoldError:
+        raise LoweringError(None) from None
     return Const(engine_value(value, target), target)
 
 
-def _literal_target(ty: t.Type, ctx: PouContext, expected: IrType | None) -> IrType:
-    """The expected type when an untyped literal may take it (a subrange's base: the store checks the range)."""
+def _checker_type(ty: IrType) -> t.Type:
+    return t.Elementary(ty.name) if isinstance(ty, Elementary) and ty.name in ELEMENTARY else t.ERROR
+
+
+def _untyped(node: ast.Expr, ctx: PouContext, expected: IrType | None) -> Expr:
+    """An untyped literal expression the checker did not settle: it takes ``expected`` when it may (as the checker's
+    settle would), else its default type."""
+    target = _literal_target(node, ctx, expected)
+    if literal_only(node):
+        return _folded(node, target)
+    if isinstance(node, ast.Call):
+        return _sizeof(node, ctx, target)
+    raise LoweringError(None)
+
+
+def _literal_target(node: ast.Expr, ctx: PouContext, expected: IrType | None) -> IrType:
+    """The expected type when the untyped literal may take it (a subrange's base: the store checks the range)."""
     base = value_type(expected) if expected is not None else None
-    if (
-        isinstance(base, Elementary)
-        and base.info.category in _LITERAL_TARGETS
-        and (isinstance(ty, t.UntypedInt) or base.info.category == "real")
-    ):
+    if isinstance(base, Elementary) and base.name in ELEMENTARY and t.takes_literal(_checker_type(base), node.ty):
         return base
-    return ctx.ir_type(t.concrete(ty))
+    return ctx.ir_type(t.concrete(node.ty))
 
 
 def _literal(node: ast.Expr, ctx: PouContext) -> Const:
@@ -257,9 +271,11 @@ def _binary(node: ast.Binary, ctx: PouContext) -> Expr:
         mixed = _time_operator(node, op, ctx)
         if mixed is not None:
             return mixed
-    combined, _ = t.common(left_ty, right_ty)
-    operand = ctx.ir_type(t.concrete(combined))
-    result = ctx.ir_type(node.ty) if op in ("EQ", "NE", "LT", "GT", "LE", "GE") else operand
+    if op in _COMPARISONS:  # the checker settled both operands to types whose lub is the one compared in
+        operand = ctx.ir_type(t.lub(left_ty, right_ty) or t.concrete(t.common(left_ty, right_ty)[0]))
+        result = BOOL
+    else:
+        operand = result = ctx.ir_type(node.ty)
     return Binary(op, lower_to(node.left, ctx, operand), lower_to(node.right, ctx, operand), result)  # type: ignore[arg-type]
 
 
@@ -287,7 +303,7 @@ def _category(ty: IrType) -> str:
 def _power(node: ast.Binary, ctx: PouContext) -> Expr:
     """``a ** b``: one Binary when both are the same type (a literal exponent takes the base's), else EXPT."""
     result = ctx.ir_type(node.ty)
-    if isinstance(node.right.ty, (t.UntypedInt, t.UntypedReal)) or t.same(node.left.ty, node.right.ty):
+    if isinstance(node.right.ty, t.UNTYPED) or t.same(node.ty, node.right.ty):
         return Binary("EXPT", lower_to(node.left, ctx, result), lower_to(node.right, ctx, result), result)
     exponent = ctx.ir_type(node.right.ty)
     return _function("EXPT", [node.left, node.right], ctx, result, (result, exponent))
@@ -316,6 +332,8 @@ def refuse_unsupported_call(node: ast.Call) -> None:
 
 
 def _call(node: ast.Call, ctx: PouContext) -> Expr:
+    if node.ref is None and isinstance(node.callee, ast.Name) and node.callee.name.upper() == "SIZEOF":
+        return _sizeof(node, ctx, ctx.ir_type(node.ty))
     refuse_unsupported_call(node)
     ref = node.ref
     en, eno = _en_eno(node)
@@ -473,13 +491,16 @@ def _position(function: stdlib.StdFunction, name: str) -> int | None:
 
 
 def _generic_type(function: stdlib.StdFunction, node: ast.Call, bound: dict[int, ast.Arg], ctx: PouContext) -> IrType:
-    """The type T the generic inputs share, combined as the checker does (st/calls.py, FUN-02)."""
+    """The type T the generic inputs share: the call's own type when its result is T (settled by the checker,
+    st/context_typing.py), else the lub of its settled generic arguments (a comparison)."""
+    if function.result == stdlib.T and node.ty is not None and not isinstance(node.ty, t.UNTYPED):
+        return ctx.ir_type(node.ty)
     shared: t.Type | None = None
     for index in sorted(bound):
         pin = function.pin(function.input_name(index))  # type: ignore[arg-type]
         if pin is not None and pin.generic:
             ty = bound[index].value.ty
-            shared = ty if shared is None else t.common(shared, ty)[0]
+            shared = ty if shared is None else (t.lub(shared, ty) or t.common(shared, ty)[0])
     if shared is None:
         return ctx.ir_type(node.ty) if function.result == stdlib.T else Elementary("INT")
     return ctx.ir_type(t.concrete(shared))

@@ -76,13 +76,15 @@ class _Network:
         self.enables: dict[str, Expr] = {}  # block id -> its EN condition (blocks with EN)
         self.origins: dict[str, Origin] = {}
         self.used_pins: dict[str, set[str]] = {}  # producer id -> its output pins that feed something
+        self.consumers: dict[tuple[str, str], list[str]] = {}  # (producer id, PIN) -> the nodes it feeds
 
     def lower(self, analyses: Analyses) -> Block:
         self.ops.new_network()
         self.graph = graph = analyses.analyse(self.network, self.ctx.report)
-        for sources in graph.inputs.values():  # once per network, not a scan of all wires per block
+        for consumer, sources in graph.inputs.items():  # once per network, not a scan of all wires per block
             for source in sources.values():
                 self.used_pins.setdefault(source.node, set()).add(source.pin)
+                self.consumers.setdefault((source.node, source.pin), []).append(consumer)
         self.written = {name for node in graph.nodes.values() if node.type == "output" for name in root_names(node.var)}
         for node in graph.nodes.values():
             if node.type == "block":
@@ -265,7 +267,8 @@ class _Network:
             self.ops.report(at.on("EN"), "FBD-MISSING-PIN", f"input EN of '{node.id}' is not connected")
             return
         eno = self.ops.temp() if node.en else None
-        call = check_call(self.ops, callee, instance, inputs, {}, at, en, eno)
+        context = self._result_context(node) if not callee.is_fb else None
+        call = check_call(self.ops, callee, instance, inputs, {}, at, en, eno, context)
         if call is None:
             return
         result = None if callee.is_fb else self._result(node, call.ty)
@@ -274,6 +277,16 @@ class _Network:
             return
         self.out += statements
         self._outputs(node, callee, instance, call, statements[0], result, eno, flags, en)
+
+    def _result_context(self, node: fbd.Block) -> t.Type | None:
+        """The type of the one variable a function block's result is written to (an output node, as in
+        ``y := F(...)``), which its literals and generic type adapt to; None when it feeds anything else."""
+        consumers = self.consumers.get((node.id, "OUT"), [])
+        target = self.graph.nodes[consumers[0]] if len(consumers) == 1 else None
+        if not isinstance(target, fbd.OutputNode) or target.mode != "normal":
+            return None
+        found = self.ops.clean_read(target.var)
+        return found[1] if found is not None else None
 
     def _result(self, node: fbd.Block, ty: t.Type) -> Var:
         """Where a function block's result goes: a slot kept between scans when the block has EN (with EN

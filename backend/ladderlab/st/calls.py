@@ -15,6 +15,7 @@ from ..iec import stdlib
 from ..iec.spelling import did_you_mean
 from . import ast
 from . import types as t
+from .context_typing import default_type, untyped_leaves
 from .printer import print_expression
 from .rules import assignable_or_report, root_name
 from .symbols import PouInfo, Symbol
@@ -276,45 +277,59 @@ def _std_call(checker: Any, node: ast.Call, function: stdlib.StdFunction) -> Typ
 
 
 def _generic_type(checker: Any, node: ast.Call, function: stdlib.StdFunction, bound) -> Type:
-    """Type every argument; the generic inputs must share one type T within the pin's family (FUN-02)."""
+    """Type every argument; the generic inputs share one type T within the pin's family (FUN-02).
+
+    T is the ``lub`` of the typed generic arguments (untyped when all are literals). When the result is T the
+    call adapts to its context, which fixes T later (st/context_typing.py); otherwise T is fixed here."""
     shared: Type | None = None
+    generic_values = []
     for arg, pin in bound:
-        value = checker.expr(arg.value)
+        if not pin.generic:
+            fixed = t.elementary(pin.type)
+            value = checker.expr(arg.value, fixed)
+            if value is ERROR:
+                return ERROR
+            if not t.in_family(value, pin.type) and t.assignable(fixed or t.ERROR, value) == "error":
+                message = f"input {pin.name} of {function.name} must be {pin.type}, not {value}"
+                checker.report("ST-TYPE-MISMATCH", message, arg.value)
+            continue
+        value = checker.typed(arg.value)
         if value is ERROR:
             return ERROR
-        if pin.generic:
-            if shared is None:
-                shared = value
-                continue
-            combined, verdict = t.common(shared, value)
-            if verdict == "error":
-                checker.report(
-                    "ST-TYPE-MISMATCH",
-                    f"{function.name} needs inputs of one type: got {shared} and {value}; "
-                    "convert one of them with a *_TO_* function",
-                    arg.value,
-                )
-                return ERROR
-            if verdict == "widen":
-                checker.report(
-                    "ST-IMPLICIT-CONV",
-                    f"{function.name} mixes {shared} and {value}: the narrower one is converted implicitly",
-                    arg.value,
-                    severity="warning",
-                )
-            shared = combined
-        elif not t.in_family(value, pin.type) and t.assignable(t.elementary(pin.type) or t.ERROR, value) == "error":
+        generic_values.append(arg.value)
+        if shared is None:
+            shared = value
+            continue
+        combined, verdict = t.common(shared, value)
+        if verdict == "error":
             checker.report(
-                "ST-TYPE-MISMATCH", f"input {pin.name} of {function.name} must be {pin.type}, not {value}", arg.value
+                "ST-TYPE-MISMATCH",
+                f"{function.name} needs inputs of one type: got {shared} and {value}; "
+                "convert one of them with a *_TO_* function",
+                arg.value,
             )
+            return ERROR
+        if verdict == "widen":
+            checker.report(
+                "ST-IMPLICIT-CONV",
+                f"{function.name} mixes {shared} and {value}: the narrower one is converted implicitly",
+                arg.value,
+                severity="warning",
+            )
+        shared = t.untyped_pair(shared, value) if isinstance(combined, t.UNTYPED) else combined
     generic_pins = [p for p in function.inputs if p.generic]
     if shared is None:
         return ERROR if generic_pins and function.result == stdlib.T else t.VOID
-    shared = t.concrete(shared) if function.result == stdlib.T else shared
     family = generic_pins[0].type
     if not t.in_family(shared, family):
         checker.report("ST-TYPE-MISMATCH", f"{function.name} works on {family}, not on {shared}", node)
         return ERROR
+    if function.result != stdlib.T:  # a comparison: T takes no context from the BOOL result
+        fixed = shared
+        if isinstance(shared, t.UNTYPED):
+            fixed = default_type([leaf for value in generic_values for leaf in untyped_leaves(value)], family)
+        for value in generic_values:
+            checker.settle(value, fixed)
     return shared
 
 
