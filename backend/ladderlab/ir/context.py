@@ -252,4 +252,4 @@ class PouContext:
         """The result slot of the FUNCTION being lowered (assigning the function's name)."""
         if self.info is None or self.info.return_type is None:
             raise LoweringError(None)
-        return Var("local", self.name, self.types.type_of(self.info.return_type))
+        return Var("local", self.name, self.types.type_of(self.info.return_type, self.info.return_spec))

@@ -529,4 +529,5 @@ def user_call(node: ast.Call, ctx: PouContext) -> Call:
         args.append(lower_to(value, ctx, ty) if value is not None else Const(initial, ty))
         types.append(ty)
     ctx.calls += 1
-    return Call(pou.name.upper(), tuple(args), tuple(types), callee.type_of(pou.return_type), True, tuple(in_outs))
+    result = callee.type_of(pou.return_type, pou.return_spec)
+    return Call(pou.name.upper(), tuple(args), tuple(types), result, True, tuple(in_outs))

@@ -28,7 +28,7 @@ from .context import PouContext
 from .lower_fbd import lower_fbd_body
 from .lower_ld import lower_ld_body
 from .lower_st import lower_st_body
-from .lower_types import LoweringError, ir_default, unnamed_address
+from .lower_types import LoweringError, unnamed_address
 from .nodes import Assign, Binary, Block, Origin, Pou, Program, Slot, Stmt, TaskSpec, Unary, Var
 from .types import BOOL
 
@@ -89,10 +89,11 @@ def lower_pou(pou: ModelPou, info: PouInfo, checked: CheckResult, diagnostics: l
     return_type = None
     if info.kind == "FUNCTION" and info.return_type is not None:
         try:
-            return_type = ctx.types.type_of(info.return_type)
-            ctx.add_slot(Slot(ctx.name, "VAR_OUTPUT", return_type, ir_default(return_type)))
+            return_type = ctx.types.type_of(info.return_type, info.return_spec)
+            initial = ctx.types.default(info.return_type, info.return_spec)  # a TYPE's own initial value (TYP-11)
+            ctx.add_slot(Slot(ctx.name, "VAR_OUTPUT", return_type, initial))
         except LoweringError as error:
-            ctx.report_error(error, file=f"{info.name}/declarations")
+            ctx.report_error(error, file=f"{info.name}/return_type")
     preamble = edge_preamble(ctx)
     lower = LOWER_BODY.get(pou.language)
     blocks: list[Block] = []

@@ -401,7 +401,7 @@ class BodyChecker:
             return ERROR
         ty = self.expr(node)
         root = root_name(node)
-        if isinstance(node, ast.Name) and node.ref is self.pou and self.pou is not None:
+        if root is not None and root.ref is self.pou and self.pou is not None:  # F := ..., F[2] := ..., F.a := ...
             self.result_assigned = True
         symbol = root.ref if root is not None else None
         if isinstance(symbol, Symbol):

@@ -18,7 +18,7 @@ from ..model.project import Project
 from . import ast
 from . import types as t
 from .body import BodyChecker
-from .parser import parse_declarations, parse_expression, parse_source, parse_statements
+from .parser import parse_declarations, parse_expression, parse_source, parse_statements, parse_type
 from .rules import assignable_or_report, constant_value
 from .symbols import CheckResult, PouInfo, Symbol, TypeDef
 from .types import ERROR, Type
@@ -286,11 +286,7 @@ class ProjectChecker:
         report = self._reporter(f"{pou.name}/declarations", pou.name)
         checker = BodyChecker(self.result, info, report)
         if pou.return_type:
-            parsed = parse_expression(pou.return_type)
-            spec = ast.NamedType(pou.return_type.strip()) if isinstance(parsed.ast, ast.Name) else None
-            info.return_type = self.resolve(spec, checker) if spec else ERROR
-            if spec is None:
-                report("ST-UNKNOWN-TYPE", f"'{pou.return_type}' is not a type name", None)
+            self._declare_return_type(pou, info)
         elif info.kind == "FUNCTION":
             report("ST-DECL", f"the function {pou.name} needs a return type", None)
         for block in blocks:
@@ -302,6 +298,22 @@ class ProjectChecker:
         for symbol in info.symbols.values():
             if isinstance(symbol.type, t.FbType) and symbol.type.pou is not None:
                 info.calls.add(symbol.type.pou.name.upper())
+
+    def _declare_return_type(self, pou, info: PouInfo) -> None:
+        """A function's result type: any type specification (``STRING[20]``, ``INT (0..100)``, a TYPE's name);
+        its diagnostics are located in the ``<POU>/return_type`` text."""
+        file = f"{pou.name}/return_type"
+        parsed = parse_type(pou.return_type, file=file, pou=pou.name)
+        self.result.diagnostics += parsed.diagnostics
+        report = self._reporter(file, pou.name)
+        if parsed.ast is None:
+            info.return_type = ERROR
+            return
+        info.return_spec = parsed.ast
+        info.return_type = self.resolve(parsed.ast, BodyChecker(self.result, info, report))
+        if isinstance(info.return_type, t.FbType):
+            report("ST-DECL", f"a function cannot return a function block instance ({info.return_type.name})", None)
+            info.return_type = ERROR
 
     def _check_initial_values(self, pou) -> None:
         """After every POU is declared, so an FB instance may be initialised (``f : Fb := (n := 4)``) whatever

@@ -27,7 +27,7 @@ from .quick_decls import quick_declarations
 from .transformer import AstBuilder, StSyntaxError
 
 GRAMMAR = pathlib.Path(__file__).with_name("iec61131.lark")
-_STARTS = ["start_source", "start_pou", "start_decls", "start_stmts", "start_expr"]
+_STARTS = ["start_source", "start_pou", "start_decls", "start_stmts", "start_expr", "start_type"]
 _MAX_ERRORS_PER_UNIT = 25
 _END_KEYWORDS = {"END_IF", "END_CASE", "END_FOR", "END_WHILE", "END_REPEAT"}
 
@@ -140,6 +140,11 @@ def parse_expression(
 ) -> ParseResult:
     """One operand or expression, e.g. an LD contact's ``T1.Q`` or a pin's ``arr[i] + 1``."""
     return _finish(_run(_prepare(text, nested_comments), "start_expr", file, pou=pou), text)
+
+
+def parse_type(text: str, *, file: str | None = None, pou: str | None = None) -> ParseResult:
+    """One type specification, e.g. a function's result type: ``INT``, ``STRING[20]``, ``ARRAY [1..3] OF TRec``."""
+    return _run(text, "start_type", file, pou=pou)
 
 
 def _name_pous(result: ParseResult) -> None:

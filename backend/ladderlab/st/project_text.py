@@ -68,8 +68,9 @@ def _pou(pou: ast.Pou, source: _Text) -> Pou:
         body_start = (pou.body[0].span.line, pou.body[0].span.column) if pou.body else end
     body = source.between(body_start, end)
     return_type = None
-    if pou.return_type is not None:
-        return_type = pou.return_type.name if isinstance(pou.return_type, ast.NamedType) else None
+    if pou.return_type is not None:  # as written: STRING[20], ARRAY [1..3] OF INT, INT (0..100) ...
+        span = pou.return_type.span
+        return_type = source.between((span.line, span.column), (span.end_line, span.end_column)).strip()
     return Pou(
         name=pou.name,
         kind=_KIND[pou.kind],

@@ -54,6 +54,7 @@ class PouInfo:
     language: str
     return_type: Type | None
     symbols: dict[str, Symbol] = field(default_factory=dict)
+    return_spec: ast.TypeSpec | None = None  # the result type as written (subranges, a TYPE's own initial value)
     body: list[ast.Stmt] | None = None
     calls: set[str] = field(default_factory=set)
 

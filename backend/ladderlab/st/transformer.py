@@ -104,6 +104,9 @@ class AstBuilder(Transformer):
     def start_expr(self, c):
         return c[0]
 
+    def start_type(self, c):
+        return c[0]
+
     # ------------------------------------------------------------ POUs and types
     def pou(self, c):
         kind = c[0].type
@@ -139,13 +142,13 @@ class AstBuilder(Transformer):
         return ast.PointerType(kind, c[1], span_of(c))
 
     def enum_type(self, c):
-        return ast.EnumType(c, span_of(c))
+        return ast.EnumType(c[:-1], span_of(c))
 
     def enum_value(self, c):
         return ast.EnumValue(str(c[0]), c[1], span_of(c))
 
     def struct_type(self, c):
-        return ast.StructType(c[1:], span_of(c))
+        return ast.StructType(c[1:-1], span_of(c))
 
     # ------------------------------------------------------------ declarations
     def var_block(self, c):
