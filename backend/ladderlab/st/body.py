@@ -206,7 +206,14 @@ class BodyChecker:
             )
             return ERROR
         node.ref = symbol
-        if symbol.var_class not in ("VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT"):
+        if symbol.var_class == "VAR_IN_OUT":
+            self.report(
+                "ST-NOT-ACCESSIBLE",
+                f"'{node.name}' is an in-out of {base.name}: it stands for the caller's variable during a call "
+                "only, so it cannot be read or written from outside (pass the variable in the call)",
+                node,
+            )
+        elif symbol.var_class not in ("VAR_INPUT", "VAR_OUTPUT"):
             self.report(
                 "ST-NOT-ACCESSIBLE",
                 f"'{node.name}' is internal to {base.name}: only its inputs and outputs can be used from outside",

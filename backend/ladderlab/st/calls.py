@@ -110,6 +110,15 @@ def _instance_call(checker: Any, node: ast.Call, ty: Type, statement: bool) -> T
         )
         return ERROR
     node.ref = root_name(node.callee).ref if root_name(node.callee) is not None else None
+    if isinstance(node.ref, Symbol) and node.ref.var_class == "VAR_INPUT" and node.callee is root_name(node.callee):
+        _args_untyped(checker, node)
+        checker.report(
+            "ST-NOT-CALLABLE",
+            f"'{node.ref.name}' is an input: a function block instance passed as an input is a copy whose "
+            "outputs can be read, but it cannot be called (declare it VAR_IN_OUT to call the caller's instance)",
+            node.callee,
+        )
+        return ERROR
     if not statement:
         _args_untyped(checker, node)
         checker.report(

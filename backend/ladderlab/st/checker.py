@@ -18,7 +18,15 @@ from ..model.project import Project
 from . import ast
 from . import types as t
 from .body import BodyChecker
-from .parser import parse_declarations, parse_expression, parse_source, parse_statements, parse_type
+from .parser import (
+    parse_declarations,
+    parse_expression,
+    parse_source,
+    parse_statements,
+    parse_type,
+    keywords,
+    reserved_words,
+)
 from .rules import assignable_or_report, constant_value
 from .symbols import CheckResult, PouInfo, Symbol, TypeDef
 from .types import ERROR, Type
@@ -112,6 +120,8 @@ class ProjectChecker:
                     f"'{pou.name}' is a standard function or function block name and cannot be redefined",
                     None,
                 )
+            if upper in keywords():
+                where("ST-NAME", f"'{pou.name}' is a keyword and cannot name a POU (KW-02)", None)
             info = self.result.pous[upper] = PouInfo(pou.name, _KIND[pou.kind], pou.language, None)
             if not isinstance(pou.body, str):  # LD boxes and FBD blocks: edges of the call graph (POU-02)
                 info.calls |= pou.body.calls()
@@ -262,8 +272,15 @@ class ProjectChecker:
         checker = BodyChecker(self.result, None, report)
         before = set(self.result.globals)
         for block in blocks:
-            if block.kind not in ("VAR_GLOBAL", "VAR_EXTERNAL"):
-                report("ST-DECL", f"only VAR_GLOBAL blocks belong in the global variables, not {block.kind}", block)
+            if block.kind != "VAR_GLOBAL":
+                what = "it refers to a global variable from inside a POU" if block.kind == "VAR_EXTERNAL" else ""
+                report(
+                    "ST-DECL",
+                    f"only VAR_GLOBAL blocks belong in the global variables, not {block.kind}"
+                    + (f" ({what})" if what else ""),
+                    block,
+                )
+                continue
             self._declare_block(block, self.result.globals, checker, None)
         for key, symbol in self.result.globals.items():
             if key in before:
@@ -508,9 +525,12 @@ def check_project(project: Project) -> CheckResult:
 
 
 def check_identifier(name: str, node: Any, report: Reporter) -> None:
-    """LEX-13/LEX-15: no two '_' in a row, at most 64 characters; a trailing '_' only warns (IEC ed. 2 forbids it)."""
+    """A declared name: not a keyword or type name (KW-01, KW-02), no two '_' in a row, at most 64 characters
+    (LEX-13, LEX-15); a trailing '_' only warns (IEC ed. 2 forbids it)."""
     problem = pou_name_problem(name)
-    if problem:
+    if name.upper() in reserved_words():
+        report("ST-NAME", f"'{name}' is a keyword or type name and cannot be declared as a name (KW-02)", node)
+    elif problem:
         report("ST-NAME", f"'{name}' is not a valid identifier: {problem}", node)
     elif name.endswith("_"):
         report(

@@ -19,6 +19,7 @@ from typing import Any
 from lark import Lark, Token
 from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedToken
 
+from ..iec.elementary import ALIASES, ELEMENTARY, GENERIC
 from ..model.diagnostics import Diagnostic
 from . import ast
 from .comments import attach_comments, blank_nested_comments
@@ -69,6 +70,21 @@ _SOFT_KEYWORDS = {
 def _keywords() -> frozenset[str]:
     """Every keyword of the grammar, upper case."""
     return frozenset(_KEYWORD_RE.findall(GRAMMAR.read_text(encoding="utf-8")))
+
+
+@functools.cache
+def keywords() -> frozenset[str]:
+    """Words that are never names (KW-01, KW-02's hard keywords): the grammar's keywords but the contextual ones
+    (``_SOFT_KEYWORDS``, used as names by real libraries), TRUE/FALSE and the operator words."""
+    return (_keywords() - _SOFT_KEYWORDS) | {"TRUE", "FALSE", "AND", "OR", "XOR", "NOT", "MOD"}
+
+
+@functools.cache
+def reserved_words() -> frozenset[str]:
+    """Words that cannot be declared as variable, field or type names: ``keywords()`` and the names of the
+    elementary and generic types (KW-02). (IEC 61131-3 ed. 3 types LadderLab does not have yet, such as LDT,
+    stay usable, as in edition 2.)"""
+    return keywords() | ELEMENTARY.keys() | ALIASES.keys() | GENERIC.keys() | {"STRING", "WSTRING"}
 
 
 @functools.cache

@@ -239,6 +239,8 @@ def same(a: Type, b: Type) -> bool:
         return a.wide == b.wide
     if isinstance(a, PointerType) and isinstance(b, PointerType):
         return same(a.target, b.target) or (isinstance(a.target, Elementary) and a.target.name == "BYTE")
+    if isinstance(a, FbType) and isinstance(b, FbType):  # one user FB POU, or one standard FB (each use resolves anew)
+        return a.pou is b.pou if a.pou is not None else b.pou is None and a.std is b.std
     return a == b if not isinstance(a, (StructType, EnumType, FbType)) else a is b
 
 

@@ -38,6 +38,33 @@ class Addressable:
     def __setitem__(self, key: str, value: object) -> None:
         setattr(self, key, value)
 
+    def ll_assign(self, source: Addressable) -> None:
+        """Copy an FB instance's whole state into this one (an FB instance passed to a VAR_INPUT: by value).
+
+        Nested instances, pages, arrays and structures are copied into, keeping their identity; probe lists
+        (monitoring) stay the target's own."""
+        for name in _state_slots(type(self)):
+            mine, theirs = getattr(self, name, None), getattr(source, name, None)
+            if isinstance(mine, Addressable) or is_composite_value(mine):
+                assign_into(mine, theirs)
+            else:
+                setattr(self, name, theirs)
+
+
+_NOT_STATE = frozenset({"ll_pr", "ll_px"})
+
+
+def _state_slots(cls: type) -> tuple[str, ...]:
+    """Every ``__slots__`` attribute of an instance class and its bases, but the monitoring ones."""
+    found = _STATE_SLOTS.get(cls)
+    if found is None:
+        slots = [name for klass in cls.__mro__ for name in getattr(klass, "__slots__", ())]
+        found = _STATE_SLOTS[cls] = tuple(name for name in slots if name not in _NOT_STATE)
+    return found
+
+
+_STATE_SLOTS: dict[type, tuple[str, ...]] = {}
+
 
 class Structure(Addressable):
     """Base of generated structure classes: ``ll_fields`` lists the attributes to copy."""
