@@ -19,12 +19,12 @@ from . import ast
 from . import types as t
 from .body import BodyChecker
 from .parser import (
+    keywords,
     parse_declarations,
     parse_expression,
     parse_source,
     parse_statements,
     parse_type,
-    keywords,
     reserved_words,
 )
 from .rules import assignable_or_report, constant_value

@@ -11,27 +11,30 @@ from ..model import Diagnostic, Project
 from ..st.project_text import source_to_project
 from .errors import ProjectLoadError, validation_diagnostics
 from .project_folder import PROJECT_FILE, read_project_folder
+from .text_files import CLI_HINT, decode_text
 
 
-def load_project_path(path: Path | str) -> Project:
-    """Read whatever a user points the CLI at; raises ProjectLoadError with located diagnostics."""
+def load_project_path(path: Path | str, encoding: str | None = None, hint: str = CLI_HINT) -> Project:
+    """Read whatever a user points the CLI at, its files in ``encoding`` (default UTF-8); raises ProjectLoadError
+    with located diagnostics (a file that does not decode: BAD-ENCODING at its first bad byte)."""
     path = Path(path)
     if path.is_dir():
         if not (path / PROJECT_FILE).is_file():
             raise _error(str(path), f"not a project folder: it has no {PROJECT_FILE}")
-        return read_project_folder(path)
+        return read_project_folder(path, encoding, hint)
     if not path.is_file():
         raise _error(str(path), "no such file or folder")
     if path.suffix.lower() == ".json":
-        return _load_json_project(path)
+        return _load_json_project(path, decode_text(path.read_bytes(), path.name, encoding, hint))
     if path.suffix.lower() == ".st":
-        return project_from_st(path.read_text(encoding="utf-8"), name=path.stem, file=path.name)
+        text = decode_text(path.read_bytes(), path.name, encoding, hint)
+        return project_from_st(text, name=path.stem, file=path.name)
     raise _error(str(path), "expected a project folder, a project .json file or a .st file")
 
 
-def _load_json_project(path: Path) -> Project:
+def _load_json_project(path: Path, text: str) -> Project:
     try:
-        data = json.loads(path.read_text(encoding="utf-8"))
+        data = json.loads(text)
     except json.JSONDecodeError as err:
         raise ProjectLoadError(
             [

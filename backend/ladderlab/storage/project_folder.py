@@ -25,6 +25,7 @@ from pydantic import ValidationError
 from ..model import Diagnostic, Pou, Project
 from .errors import ProjectLoadError, validation_diagnostics
 from .st_text import StTextError, compose_pou_text, parse_pou_text, round_trips
+from .text_files import HINT, decode_text
 
 PROJECT_FILE = "project.json"
 TYPES_FILE = "types.st"
@@ -75,10 +76,14 @@ def revision_of(project: Project) -> str:
     return hashlib.sha256(canonical.encode()).hexdigest()[:16]
 
 
-def read_project_folder(folder: Path) -> Project:
-    """Load a project folder; raises ProjectLoadError naming every bad file and JSON path."""
+def read_project_folder(folder: Path, encoding: str | None = None, hint: str = HINT) -> Project:
+    """Load a project folder; raises ProjectLoadError naming every bad file and JSON path.
+
+    Its files are UTF-8 unless ``encoding`` says otherwise (text_files.py: a file that does not decode is a
+    located BAD-ENCODING error; ``hint`` says what to do about it)."""
     problems: list[Diagnostic] = []
-    meta = _read_json(folder / PROJECT_FILE, PROJECT_FILE, problems)
+    read = _Reader(encoding, hint, problems)
+    meta = read.json(folder / PROJECT_FILE, PROJECT_FILE)
     if meta is None:
         raise ProjectLoadError(problems)
     if not isinstance(meta, dict):
@@ -98,13 +103,13 @@ def read_project_folder(folder: Path) -> Project:
             Diagnostic(code="BAD-FILE", file=PROJECT_FILE, json_path="$.pous", message="expected a list of POU names")
         )
         order = []
-    pous = [pou for pou in (_read_pou(folder, name, problems) for name in _pou_names(folder, order)) if pou]
+    pous = [pou for pou in (_read_pou(folder, name, read) for name in _pou_names(folder, order)) if pou]
     data = {
         "name": meta.get("name"),
         "format": meta.get("format"),
         "tasks": meta.get("tasks", []),
-        "types": _read_text(folder / TYPES_FILE),
-        "globals": _read_text(folder / GLOBALS_FILE),
+        "types": read.text(folder / TYPES_FILE, TYPES_FILE) or "",
+        "globals": read.text(folder / GLOBALS_FILE, GLOBALS_FILE) or "",
     }
     project = None
     try:
@@ -143,7 +148,8 @@ def pou_paths(folder: Path, name: str) -> list[Path]:
     return [p for p in (folder / POUS_DIR / f"{name}{s}" for s in POU_SUFFIXES) if p.is_file()]
 
 
-def _read_pou(folder: Path, name: str, problems: list[Diagnostic]) -> Pou | None:
+def _read_pou(folder: Path, name: str, read: _Reader) -> Pou | None:
+    problems = read.problems
     paths = pou_paths(folder, name)
     if len(paths) != 1:
         message = (
@@ -156,7 +162,7 @@ def _read_pou(folder: Path, name: str, problems: list[Diagnostic]) -> Pou | None
     path = paths[0]
     rel = f"{POUS_DIR}/{path.name}"
     if path.name.endswith(".json"):
-        data = _read_json(path, rel, problems)
+        data = read.json(path, rel)
         if data is None:
             return None
         try:
@@ -178,11 +184,11 @@ def _read_pou(folder: Path, name: str, problems: list[Diagnostic]) -> Pou | None
             )
             return None
     else:
-        try:
-            pou = parse_pou_text(_read_exact(path))
-        except UnicodeDecodeError as err:
-            problems.append(Diagnostic(code="BAD-FILE", file=rel, pou=name, message=f"not UTF-8 text: {err.reason}"))
+        text = read.text(path, rel, pou=name)
+        if text is None:
             return None
+        try:
+            pou = parse_pou_text(text)
         except StTextError as err:
             problems.append(
                 Diagnostic(code="BAD-FILE", file=rel, pou=name, line=err.line, column=err.column, message=err.reason)
@@ -201,28 +207,36 @@ def _read_pou(folder: Path, name: str, problems: list[Diagnostic]) -> Pou | None
     return pou
 
 
-def _read_text(path: Path) -> str:
-    return _read_exact(path) if path.is_file() else ""
+class _Reader:
+    """Reads the files of one project folder in one encoding, collecting every problem."""
 
+    def __init__(self, encoding: str | None, hint: str, problems: list[Diagnostic]):
+        self.encoding, self.hint, self.problems = encoding, hint, problems
 
-def _read_exact(path: Path) -> str:
-    """UTF-8 text without newline translation: a '\\r' typed into a POU must come back as typed."""
-    return path.read_bytes().decode("utf-8")
+    def text(self, path: Path, rel: str, pou: str | None = None) -> str | None:
+        """A text file exactly as stored (no newline translation: a '\\r' typed into a POU comes back as typed);
+        "" when it is missing, None when it does not decode (reported)."""
+        if not path.is_file():
+            return ""
+        try:
+            return decode_text(path.read_bytes(), rel, self.encoding, self.hint)
+        except ProjectLoadError as err:
+            self.problems.extend(d.model_copy(update={"pou": pou}) for d in err.diagnostics)
+            return None
 
-
-def _read_json(path: Path, rel: str, problems: list[Diagnostic]) -> Any:
-    try:
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        problems.append(Diagnostic(code="BAD-FILE", file=rel, message="file is missing"))
-        return None
-    except UnicodeDecodeError as err:
-        problems.append(Diagnostic(code="BAD-FILE", file=rel, message=f"not UTF-8 text: {err.reason}"))
-        return None
-    try:
-        return json.loads(text)
-    except json.JSONDecodeError as err:
-        problems.append(
-            Diagnostic(code="BAD-JSON", file=rel, line=err.lineno, column=err.colno, message=f"invalid JSON: {err.msg}")
-        )
-        return None
+    def json(self, path: Path, rel: str) -> Any:
+        if not path.is_file():
+            self.problems.append(Diagnostic(code="BAD-FILE", file=rel, message="file is missing"))
+            return None
+        text = self.text(path, rel)
+        if text is None:
+            return None
+        try:
+            return json.loads(text)
+        except json.JSONDecodeError as err:
+            self.problems.append(
+                Diagnostic(
+                    code="BAD-JSON", file=rel, line=err.lineno, column=err.colno, message=f"invalid JSON: {err.msg}"
+                )
+            )
+            return None

@@ -26,6 +26,8 @@ from ...model.project import Pou, Project, Task
 from ...st import ast
 from ...st.parser import parse_declarations, parse_source
 from ...st.printer import print_declarations, print_source, print_type
+from ...storage.errors import ProjectLoadError
+from ...storage.text_files import xml_for_parser
 from .blocks import Signatures
 from .body import (
     IdMaker,
@@ -68,6 +70,10 @@ class ImportResult:
 
 def import_plcopen(data: bytes, *, name: str | None = None, file: str | None = None) -> ImportResult:
     """Read a PLCopen XML document; ``name`` overrides the project name, ``file`` locates the diagnostics."""
+    try:
+        data = xml_for_parser(data, file or "document")  # a document that is not UTF-8 and says nothing else
+    except ProjectLoadError as err:
+        return ImportResult(None, err.diagnostics)
     try:
         parsed = parse_untrusted_xml(data, file=file)
     except XmlInputError as err:
