@@ -53,13 +53,22 @@ def run_case(case: dict) -> str | None:
 
 
 def _program_prefix(sim: Simulation, project):
+    """Paths "in the PROGRAM's scope" (the MANIFEST): through its instance - named after it, or the one a
+    CONFIGURATION declares (``PROGRAM inst WITH task : main``) - else a global."""
     programs = [p.name for p in project.pous if p.kind == "program"]
+    instances = [
+        p if isinstance(p, str) else p.name
+        for task in project.all_tasks()
+        for p in task.programs
+        if (p if isinstance(p, str) else p.type).upper() in {n.upper() for n in programs}
+    ]
+    roots = instances[:1] if len(instances) == 1 else programs[:1] if len(programs) == 1 else []
 
     def path(name: str) -> str:
-        if len(programs) == 1:
+        for root in roots:
             try:
-                sim.location(f"{programs[0]}.{name}")
-                return f"{programs[0]}.{name}"
+                sim.location(f"{root}.{name}")
+                return f"{root}.{name}"
             except (KeyError, ValueError):
                 pass
         return name  # a global

@@ -191,5 +191,7 @@ def check_program(program: ir.Program) -> None:
         for block in pou.blocks:
             assert block.origin.pou == name and block.label is None
             checker.stmts(block.statements)
+    instances = {i.name: i for i in program.program_instances()}
+    assert all(program.pous[i.pou].kind == "program" for i in instances.values()), instances
     for task in program.tasks:
-        assert all(p in program.pous and program.pous[p].kind == "program" for p in task.programs), task
+        assert all(p in instances for p in task.programs), task

@@ -4,7 +4,8 @@ from __future__ import annotations
 
 from ladderlab.ir import nodes as ir
 from ladderlab.ir.context import PouContext
-from ladderlab.ir.lower_project import DEFAULT_TASK, LOWER_BODY, lower_project
+from ladderlab.ir.lower_configuration import DEFAULT_TASK
+from ladderlab.ir.lower_project import LOWER_BODY, lower_project
 from ladderlab.ir.types import Elementary
 from ladderlab.model import Pou, Project, Task
 from ladderlab.st.checker import check_project
@@ -48,15 +49,16 @@ def test_tasks_from_the_project_with_intervals_in_ms():
         [Pou(name="Fast", kind="program", language="st"), Pou(name="Slow", kind="program", language="st")],
         [
             Task(name="t_fast", interval="T#5ms", priority=1, programs=["fast"]),
-            Task(name="T_slow", interval="T#1s200ms", priority=2, programs=["Slow", "Fast"]),
+            Task(name="T_slow", interval="T#1s200ms", priority=2, programs=["Slow"]),
         ],
     )
     result = lower_project(project)
     assert result.diagnostics == []
-    assert result.program.tasks == [
-        ir.TaskSpec("T_FAST", 5, 1, ["FAST"]),
-        ir.TaskSpec("T_SLOW", 1200, 2, ["SLOW", "FAST"]),
+    assert [(t.name, t.interval_ms, t.priority, t.programs, t.single) for t in result.program.tasks] == [
+        ("T_FAST", 5, 1, ["FAST"], None),  # the instance named after its program
+        ("T_SLOW", 1200, 2, ["SLOW"], None),
     ]
+    assert [(i.name, i.pou) for i in result.program.instances] == [("FAST", "FAST"), ("SLOW", "SLOW")]
 
 
 def test_without_tasks_every_program_runs_in_the_default_10ms_task():
@@ -67,7 +69,8 @@ def test_without_tasks_every_program_runs_in_the_default_10ms_task():
             Pou(name="A", kind="program", language="st"),
         ]
     )
-    assert lower_project(project).program.tasks == [ir.TaskSpec(DEFAULT_TASK, 10, 0, ["B", "A"])]
+    (task,) = lower_project(project).program.tasks
+    assert (task.name, task.interval_ms, task.priority, task.programs) == (DEFAULT_TASK, 10, 0, ["B", "A"])
     assert lower_project(_project([Pou(name="Fb", kind="function_block", language="st")])).program.tasks == []
 
 

@@ -1,7 +1,9 @@
 """Variable paths of a running simulation: ``MAIN.T1.Q``, ``GVL.START`` or ``START``, ``MAIN.ARR[3]``, ``MAIN.S.F``.
 
 Names are matched case-insensitively against the IR's canonical names; the
-first segment is a program instance, else ``GVL`` (the globals), else a global.
+first segment is a VAR_ACCESS name, else ``GVL`` (the globals), else a global:
+program instances are globals (codegen/tasks.py), so ``MAIN.X`` is the variable X
+of the instance MAIN.
 ``resolve`` turns text into a ``Location``, which walks the live objects on
 every access (so it stays valid across a reset). Unknown names raise
 ``UnknownPath`` (a KeyError) with a did-you-mean hint; malformed text and bad
@@ -39,8 +41,9 @@ class Location:
 
     path: str
     type: t.IrType
-    root: tuple[str, str]  # ("program", NAME) or ("global", G-page name)
+    root: tuple[str, str]  # ("global", G-page name)
     keys: tuple[object, ...]
+    read_only: bool = False  # a READ_ONLY access path (VAR_ACCESS)
 
     @property
     def elementary(self) -> bool:
@@ -66,15 +69,13 @@ class Location:
 
 
 class Roots:
-    """The live objects paths start from: program instances and global pages."""
+    """The live objects paths start from: the global pages (program instances are globals) of a module."""
 
-    def __init__(self, programs: dict[str, object], ns: dict[str, object]) -> None:
-        self.programs = programs
+    def __init__(self, ns: dict[str, object]) -> None:
         self.ns = ns
 
     def get(self, root: tuple[str, str]) -> object:
-        kind, name = root
-        return self.programs[name] if kind == "program" else self.ns[name]
+        return self.ns[root[1]]
 
 
 def tokens(text: str) -> list[tuple[str, str]]:
@@ -95,7 +96,7 @@ class Resolver:
 
     def __init__(self, context: ModuleContext) -> None:
         self.context = context
-        self.programs = {n: p for n, p in context.pous.items() if p.kind == "program"}
+        self.access = {name.upper(): target for name, target in context.program.access.items()}
         self._cache: dict[str, Location] = {}
 
     def resolve(self, text: str) -> Location:
@@ -116,9 +117,10 @@ class Resolver:
             raise ValueError(f"{text!r} is not a variable path (it must start with a name)")
         first = toks[0][1].upper()
         rest = toks[1:]
-        if first in self.programs:
-            name, rest = self._member_name(rest, text)
-            return self._walk(text, first, ("program", first), self.context.layouts[first], name, rest)
+        if first in self.access:  # a VAR_ACCESS name stands for its path
+            target, read_only = self.access[first]
+            located = self._resolve(target + text.strip()[len(toks[0][1]) :])
+            return Location(located.path, located.type, located.root, located.keys, read_only)
         if first == GLOBALS_PREFIX and rest[:1] == [("punct", ".")]:
             name, rest = self._member_name(rest, text)
             return self._global(text, name, rest)
@@ -134,18 +136,11 @@ class Resolver:
         if place is None:
             candidates = [p.slot.name for p in self.context.globals.places.values() if not p.slot.hidden]  # type: ignore[union-attr]
             if top:
-                candidates += list(self.programs)
+                candidates += list(self.access)
                 raise UnknownPath(f"unknown variable or program {name!r}{did_you_mean(name, candidates)}")
             raise UnknownPath(f"unknown global variable {name!r}{did_you_mean(name, candidates)}")
         root = ("global", global_owner(place.page))
         return self._steps(text, place.slot.name, root, (place.attr,), place.slot, rest)
-
-    def _walk(self, text, prefix, root, layout, name, rest) -> Location:
-        place = layout.get(name)
-        if place is None:
-            raise UnknownPath(f"{prefix} has no variable {name!r}{did_you_mean(name, _visible(layout))}")
-        keys = (place.attr,) if place.page == 0 else (f"ll_p{place.page}", place.attr)
-        return self._steps(text, f"{prefix}.{place.slot.name}", root, keys, place.slot, rest)
 
     def _steps(self, text, path, root, keys, slot: ir.Slot, rest) -> Location:
         ty = slot.type
@@ -183,9 +178,8 @@ class Resolver:
                 layout = self.context.layouts[user.name.upper()]
                 inner = layout.get(member)
                 if inner is None:
-                    raise UnknownPath(
-                        f"{path} ({ty.fb}) has no variable {member!r}{did_you_mean(member, _visible(layout))}"
-                    )
+                    what = path if path.upper() == ty.fb.upper() else f"{path} ({ty.fb})"  # a program instance: MAIN
+                    raise UnknownPath(f"{what} has no variable {member!r}{did_you_mean(member, _visible(layout))}")
                 step = (inner.attr,) if inner.page == 0 else (f"ll_p{inner.page}", inner.attr)
                 deref = (_DEREF,) if inner.slot.var_class == "VAR_IN_OUT" else ()
                 return f"{path}.{inner.slot.name}", inner.slot.type, (*keys, *step, *deref)
@@ -226,6 +220,8 @@ def _a(ty: t.IrType) -> str:
 def coerce_for(location: Location, value: object) -> object:
     """A user value (Python or IEC literal text) for an elementary location; ValueError naming the path."""
     ty = location.type
+    if location.read_only:
+        raise ValueError(f"{location.path} is reached through a READ_ONLY access path: it cannot be written")
     if not location.elementary:
         raise ValueError(f"{location.path} is {_a(ty)}: write its elements one by one")
     try:
@@ -255,10 +251,8 @@ def _enum_value(ty: t.Enum, value: object) -> int:
 
 
 def leaves(context: ModuleContext, roots: Roots) -> Iterator[tuple[str, object]]:
-    """Every elementary variable (hidden slots and VAR_IN_OUT references left out) with its value."""
-    for name in context.pous:
-        if context.pous[name].kind == "program" and name in roots.programs:
-            yield from _instance_leaves(context, name, context.layouts[name], roots.programs[name])
+    """Every elementary variable (hidden slots and VAR_IN_OUT references left out) with its value: the program
+    instances' first, then the other globals'."""
     for place in context.globals.places.values():  # type: ignore[union-attr]
         if not place.slot.hidden:
             obj = roots.ns[global_owner(place.page)]

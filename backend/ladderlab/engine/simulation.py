@@ -96,8 +96,8 @@ class Simulation:
         self._tasks: list[Task] = task_table(compiled.program, watchdog_s)
         self._schedule = Schedule(self._tasks)
         self._resolver = Resolver(self._context)
-        self.programs: dict[str, object] = {}
-        self._roots = Roots(self.programs, self._ns)
+        self._roots = Roots(self._ns)
+        self._triggers = {task.name: self._resolver.resolve(task.single) for task in self._tasks if task.single}
         self.debugger: Debugger | None = None
         self._stamp = 0  # counts scans started: the stamp probe groups record (ll_scan)
         self._writes: list[tuple[Location, object]] = []
@@ -155,14 +155,10 @@ class Simulation:
     # ------------------------------------------------------------------ state
 
     def _initialise(self, warm: bool) -> None:
+        """The globals - program instances first (codegen/tasks.py) - then the VAR_CONFIG initial values."""
         self._ns["ll_init_globals"](warm)
-        for key, pou in self._context.pous.items():
-            if pou.kind != "program":
-                continue
-            if key in self.programs:
-                self.programs[key].ll_init(warm)  # type: ignore[attr-defined]
-            else:
-                self.programs[key] = self._ns[names.pou_class(pou.name)]()  # type: ignore[operator]
+        self._ns["ll_config_init"](warm)
+        self._schedule.reset_triggers()
         self._paths = None
 
     @property
@@ -231,6 +227,8 @@ class Simulation:
     def _scan_now(self, now: float, due: list[Task]) -> bool:
         self._apply_writes()
         self._apply_forces()
+        if self._triggers:
+            due = self._schedule.with_triggers(due, lambda task: self._triggers[task.name].get(self._roots))
         self._ns["ll_now"] = now
         self._stamp += 1
         self._ns["ll_scan"] = self._stamp
@@ -240,8 +238,7 @@ class Simulation:
                 if not task.stopped:
                     self._watchdog.arm(task.watchdog_s)
                     try:
-                        for name in task.programs:
-                            self.programs[name].execute(now)  # type: ignore[attr-defined]
+                        self._ns[task.function]()  # type: ignore[operator]
                     except Exception as error:
                         self._fault(task, error, now)
             self._finish((self._clock() - start) * 1000.0)
@@ -255,8 +252,7 @@ class Simulation:
                 continue
             self._watchdog.arm(task.watchdog_s)
             try:
-                for name in task.programs:
-                    yield from self.programs[name].execute(now)  # type: ignore[attr-defined]
+                yield from self._ns[task.function]()  # type: ignore[operator]
             except Exception as error:
                 self._fault(task, error, now)
 
@@ -418,8 +414,6 @@ class Simulation:
         """id(user POU instance) -> path (``MAIN``, ``MAIN.FB1``, ``MAIN.ARR[2]``, ``GFB``), cached until reset."""
         if self._paths is None:
             self._paths, self._instances = {}, {}
-            for key, obj in self.programs.items():
-                self._add_instance(key, obj, key)
             for place in self._context.globals.places.values():  # type: ignore[union-attr]
                 value = getattr(self._roots.get(("global", "G" if not place.page else f"G{place.page}")), place.attr)
                 self._add_values(place.slot.name, place.slot.type, value)

@@ -5,9 +5,10 @@ lowerings register themselves). The diagnostics are the project's whole check
 (``validate_project`` + the ST checker, as ``ladderlab.simulation.check``) plus the
 lowering's own; ``program`` is None as soon as any of them is an error.
 
-Tasks: ``project.tasks`` as given; a project without tasks runs every PROGRAM,
-in project order, in one cyclic task ``DEFAULT_TASK`` every 10 ms (issue 4: a
-single ``.st`` file without a configuration).
+Program instances and tasks come from ``lower_configuration`` (the project's tasks
+or its configuration; a project without either runs every PROGRAM, in project order,
+in one cyclic task ``DEFAULT_TASK`` every 10 ms: issue 4, a ``.st`` file without a
+configuration).
 """
 
 from __future__ import annotations
@@ -16,7 +17,6 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from ..collector import collector_paused
-from ..iec.literals import decode_duration
 from ..model.diagnostics import Diagnostic, has_errors
 from ..model.project import Pou as ModelPou
 from ..model.project import Project
@@ -25,11 +25,12 @@ from ..st import types as st_types
 from ..st.checker import check_project
 from ..st.symbols import CheckResult, PouInfo, Symbol
 from .context import PouContext
+from .lower_configuration import lower_configuration
 from .lower_fbd import lower_fbd_body
 from .lower_ld import lower_ld_body
 from .lower_st import lower_st_body
 from .lower_types import LoweringError, unnamed_address
-from .nodes import Assign, Binary, Block, Origin, Pou, Program, Slot, Stmt, TaskSpec, Unary, Var
+from .nodes import Assign, Binary, Block, Origin, Pou, Program, Slot, Stmt, Unary, Var
 from .types import BOOL
 
 #: Body lowering per ``Pou.language``; the LD and FBD lowerings add "ld" and "fbd".
@@ -38,10 +39,6 @@ LOWER_BODY: dict[str, Callable[[ModelPou, PouContext], list[Block]]] = {
     "ld": lower_ld_body,
     "fbd": lower_fbd_body,
 }
-
-#: The task of a project without a task configuration: every PROGRAM once per scan, every 10 ms.
-DEFAULT_TASK = "DEFAULT"
-DEFAULT_INTERVAL_MS = 10
 
 _KIND = {"PROGRAM": "program", "FUNCTION_BLOCK": "function_block", "FUNCTION": "function"}
 
@@ -68,7 +65,8 @@ def _lower_project(project: Project, checked: CheckResult | None) -> LoweringRes
         info = checked.pou(pou.name)
         if info is not None and info.name == pou.name:  # not a duplicate (reported by the checker)
             pous[pou.name.upper()] = lower_pou(pou, info, checked, diagnostics)
-    program = Program(pous, globals_, lower_tasks(project, pous))
+    instances, tasks, access = lower_configuration(checked, diagnostics)
+    program = Program(pous, globals_, tasks, instances, access)
     return LoweringResult(None if has_errors(diagnostics) else program, diagnostics)
 
 
@@ -144,25 +142,3 @@ def edge_preamble(ctx: PouContext) -> list[Stmt]:
         out += [Assign(edge, detected, origin), Assign(memory, raw, origin)]
         ctx.edges[upper] = edge
     return out
-
-
-def lower_tasks(project: Project, pous: dict[str, Pou]) -> list[TaskSpec]:
-    """``project.tasks`` with intervals in ms; without tasks, ``DEFAULT_TASK`` runs every PROGRAM."""
-    if not project.tasks:
-        programs = [name for name, pou in pous.items() if pou.kind == "program"]
-        return [TaskSpec(DEFAULT_TASK, DEFAULT_INTERVAL_MS, 0, programs)] if programs else []
-    tasks = []
-    for task in project.tasks:
-        try:
-            interval = round(decode_duration(task.interval.replace(" ", "")))
-        except (ValueError, IndexError):  # validate_project reported BAD-INTERVAL
-            continue
-        tasks.append(
-            TaskSpec(
-                task.name.upper(),
-                interval,
-                task.priority,
-                [name.upper() for name in task.programs if name.upper() in pous],
-            )
-        )
-    return tasks

@@ -18,6 +18,7 @@ from ..model.project import Project
 from . import ast
 from . import types as t
 from .body import BodyChecker
+from .configuration import check_configuration, configuration_globals
 from .parser import (
     keywords,
     parse_declarations,
@@ -27,7 +28,7 @@ from .parser import (
     parse_type,
     reserved_words,
 )
-from .rules import assignable_or_report, constant_value
+from .rules import assignable_or_report, check_init, constant_value
 from .symbols import CheckResult, PouInfo, Symbol, TypeDef
 from .types import ERROR, Type
 
@@ -74,7 +75,11 @@ class ProjectChecker:
     # ------------------------------------------------------------ driver
     def run(self) -> CheckResult:
         types = self._parse(_parse_types, self.project.types, "types", None)
-        globals_ = self._parse(parse_declarations, self.project.globals, "globals", None) or []
+        globals_ = [  # the project's, the configuration's and each resource's VAR_GLOBAL blocks, with their file
+            (block, file)
+            for text, file in [(self.project.globals, "globals"), *configuration_globals(self.project)]
+            for block in self._parse(parse_declarations, text, file, None) or []
+        ]
         declarations, bodies = {}, {}
         for pou in self.project.pous:
             declarations[pou.name] = (
@@ -83,10 +88,10 @@ class ProjectChecker:
             if pou.language == "st":
                 bodies[pou.name] = self._parse(parse_statements, pou.body, f"{pou.name}/body", pou.name)
         self._register_pous()
-        constants = [b for b in globals_ if b.constant and all(_elementary_decl(d) for d in b.decls)]
+        constants = [(b, f) for b, f in globals_ if b.constant and all(_elementary_decl(d) for d in b.decls)]
         self._declare_globals(constants)  # first, so array bounds in TYPEs may name them (TYP-22)
         self._register_types(types or [])
-        self._declare_globals([b for b in globals_ if b not in constants])
+        self._declare_globals([(b, f) for b, f in globals_ if (b, f) not in constants])
         for pou in self.project.pous:
             self._declare_pou(pou, declarations[pou.name])
         for pou in self.project.pous:
@@ -96,7 +101,11 @@ class ProjectChecker:
             if info is not None and info.language == "st" and bodies.get(pou.name) is not None:
                 self._check_body(info, bodies[pou.name])
         self._check_recursion()
+        self.result.configuration = check_configuration(self.result, self.project, self.resolve, self._reporter_for)
         return self.result
+
+    def _reporter_for(self, file: str) -> Reporter:
+        return self._reporter(file, None)
 
     def _parse(self, parse, text: str, file: str, pou: str | None):
         result = parse(text, file=file, pou=pou)
@@ -267,11 +276,11 @@ class ProjectChecker:
         return enum
 
     # ------------------------------------------------------------ variables
-    def _declare_globals(self, blocks: list[ast.VarBlock]) -> None:
-        report = self._reporter("globals", None)
-        checker = BodyChecker(self.result, None, report)
-        before = set(self.result.globals)
-        for block in blocks:
+    def _declare_globals(self, blocks: list[tuple[ast.VarBlock, str]]) -> None:
+        """VAR_GLOBAL blocks (with the file each is in: the project's globals, a configuration's or a resource's)."""
+        for block, file in blocks:
+            report = self._reporter(file, None)
+            checker = BodyChecker(self.result, None, report)
             if block.kind != "VAR_GLOBAL":
                 what = "it refers to a global variable from inside a POU" if block.kind == "VAR_EXTERNAL" else ""
                 report(
@@ -281,20 +290,22 @@ class ProjectChecker:
                     block,
                 )
                 continue
+            before = set(self.result.globals)
             self._declare_block(block, self.result.globals, checker, None)
-        for key, symbol in self.result.globals.items():
-            if key in before:
-                continue
-            program = self.result.pous.get(key)
-            if program is not None and program.kind == "PROGRAM":  # ST-08: both name an instance of the resource
-                report(
-                    "ST-DUPLICATE",
-                    f"'{symbol.name}' is the name of the program {program.name}: a global variable "
-                    "and a program instance cannot share a name",
-                    symbol,
-                )
-            if symbol.init is not None:
-                check_init(checker, symbol.type, symbol.init)
+            for key in self.result.globals.keys() - before:
+                self._check_global(self.result.globals[key], checker)
+
+    def _check_global(self, symbol: Symbol, checker: BodyChecker) -> None:
+        program = self.result.pous.get(symbol.name.upper())
+        if program is not None and program.kind == "PROGRAM" and self.project.configuration is None:
+            checker.report(  # ST-08: both name an instance of the resource (a configuration names its instances)
+                "ST-DUPLICATE",
+                f"'{symbol.name}' is the name of the program {program.name}: a global variable "
+                "and a program instance cannot share a name",
+                symbol,
+            )
+        if symbol.init is not None:
+            check_init(checker, symbol.type, symbol.init)
 
     def _declare_pou(self, pou, blocks: list[ast.VarBlock]) -> None:
         info = self.result.pous.get(pou.name.upper())
@@ -470,53 +481,6 @@ def _parse_types(text: str, *, file: str, pou: None = None):
             )
         result.ast = [item for item in result.ast.items if isinstance(item, ast.TypeBlock)]
     return result
-
-
-def check_init(checker: BodyChecker, ty: Type, init: ast.Init) -> None:
-    """An initial value against its variable's type (TYP-25, TYP-33)."""
-    if isinstance(init, ast.ArrayInit):
-        if not isinstance(ty, t.ArrayType):
-            if ty is not ERROR:
-                checker.report("ST-TYPE-MISMATCH", f"an array initialiser [...] needs an array, not {ty}", init)
-            return
-        count = 0
-        for item in init.items:
-            value = item.value if isinstance(item, ast.RepeatInit) else item
-            count += item.count if isinstance(item, ast.RepeatInit) else 1
-            if value is not None:
-                check_init(checker, ty.element, value)
-        size = 1
-        for dim in ty.dims:
-            size *= (dim[1] - dim[0] + 1) if dim is not None else 1
-        if None not in ty.dims and count > size:
-            checker.report("ST-INIT", f"{count} initial values for an array of {size} elements", init)
-        return
-    if isinstance(init, ast.StructInit):
-        if not isinstance(ty, (t.StructType, t.FbType)):
-            if ty is not ERROR:
-                checker.report("ST-TYPE-MISMATCH", f"a structure initialiser (...) needs a structure, not {ty}", init)
-            return
-        for name, value in init.fields:
-            field_type = _field_type(ty, name)
-            if field_type is None:
-                checker.report("ST-UNKNOWN-MEMBER", f"{ty.name} has no field '{name}'", init)
-            else:
-                check_init(checker, field_type, value)
-        return
-    value = checker.expr(init, ty)
-    if value is not ERROR:
-        assignable_or_report(checker, ty, value, init, "init")
-
-
-def _field_type(ty: Type, name: str) -> Type | None:
-    if isinstance(ty, t.StructType):
-        found = ty.fields.get(name.upper())
-        return found[1] if found else None
-    if ty.pou is not None:
-        symbol = ty.pou.symbols.get(name.upper())
-        return symbol.type if symbol else None
-    pin = next((p for p in (*ty.std.inputs, *ty.std.outputs) if p.name == name.upper()), None)
-    return t.elementary(pin.type) if pin else None
 
 
 def check_project(project: Project) -> CheckResult:

@@ -254,14 +254,30 @@ def fold(node: Any, target: Type, notes: list[tuple[Any, str]] | None = None) ->
     if isinstance(node, ast.Unary):
         if node.op == "-" and isinstance(node.operand, (ast.IntLit, ast.RealLit)):  # a signed literal: -32768
             return _literal_value(-node.operand.value, target, node)
+        _in_family(node, "NOT" if node.op == "NOT" else "-", target)
         value = fold(node.operand, target, notes)
         if node.op == "-":
             return _result(-value, target, node, notes)  # type: ignore[operator]
         return _not(value, target)
     if isinstance(node, ast.Binary):
+        _in_family(node, node.op, target)
         left, right = fold(node.left, target, notes), fold(node.right, target, notes)
         return _result(_apply(node, left, right, target), target, node, notes)
     raise FoldError("not a constant expression", node)
+
+
+_OPERATION_FAMILY = {**_FAMILY, "NOT": "ANY_BIT"}
+_WORDING = {"ANY_NUM": "numbers (ANY_NUM)", "ANY_INT": "integers (ANY_INT)", "ANY_BIT": "BOOL or bit strings (ANY_BIT)"}
+
+
+def _in_family(node: Any, op: str, target: Type) -> None:
+    """The operation is defined on ``target`` (a literal expression can be given a type its operators lack:
+    ``0.0 = NOT 2`` would compute NOT in LREAL). A literal expression for a bit string (``w := 16#FF00 + 16#FF``)
+    computes as an unsigned integer of its width."""
+    family = _OPERATION_FAMILY.get(op, "ANY_NUM")
+    bits = isinstance(target, t.Elementary) and target.category == "bits" and family != "ANY_BIT"
+    if not t.in_family(target, family) and not bits:
+        raise FoldError(f"'{op}' needs {_WORDING[family]}, not {target}", node)
 
 
 def _literal_value(value: Any, target: Type, node: Any) -> object:

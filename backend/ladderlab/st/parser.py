@@ -28,7 +28,7 @@ from .quick_decls import quick_declarations
 from .transformer import AstBuilder, StSyntaxError
 
 GRAMMAR = pathlib.Path(__file__).with_name("iec61131.lark")
-_STARTS = ["start_source", "start_pou", "start_decls", "start_stmts", "start_expr", "start_type"]
+_STARTS = ["start_source", "start_pou", "start_decls", "start_stmts", "start_expr", "start_type", "start_config_blocks"]
 _MAX_ERRORS_PER_UNIT = 25
 _END_KEYWORDS = {"END_IF", "END_CASE", "END_FOR", "END_WHILE", "END_REPEAT"}
 
@@ -161,6 +161,11 @@ def parse_expression(
 def parse_type(text: str, *, file: str | None = None, pou: str | None = None) -> ParseResult:
     """One type specification, e.g. a function's result type: ``INT``, ``STRING[20]``, ``ARRAY [1..3] OF TRec``."""
     return _run(text, "start_type", file, pou=pou)
+
+
+def parse_config_blocks(text: str, *, file: str | None = None) -> ParseResult:
+    """VAR_ACCESS and VAR_CONFIG blocks (a configuration's texts): ``list[AccessBlock | ConfigBlock]``."""
+    return _finish(_run(text, "start_config_blocks", file), text)
 
 
 def _name_pous(result: ParseResult) -> None:

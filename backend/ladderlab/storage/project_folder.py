@@ -22,7 +22,7 @@ from typing import Any
 
 from pydantic import ValidationError
 
-from ..model import Diagnostic, Pou, Project
+from ..model import Diagnostic, Pou, Project, Task
 from .errors import ProjectLoadError, validation_diagnostics
 from .st_text import StTextError, compose_pou_text, parse_pou_text, round_trips
 from .text_files import HINT, decode_text
@@ -39,21 +39,30 @@ def dump_json(data: Any) -> str:
     return json.dumps(data, indent=2, sort_keys=True, ensure_ascii=False) + "\n"
 
 
+def _task(task: Task) -> dict:
+    """A task as project.json holds it; ``single`` only when set, so files of cyclic tasks stay as they were."""
+    data = task.model_dump(mode="json")
+    if data["single"] is None:
+        del data["single"]
+    return data
+
+
 def _text_file(text: str) -> str:
     return text + "\n" if text else ""
 
 
 def project_files(project: Project) -> dict[str, str]:
     """Relative path -> content of every file the project is stored as."""
+    meta = {
+        "format": project.format,
+        "name": project.name,
+        "pous": [p.name for p in project.pous],
+        "tasks": [_task(t) for t in project.tasks],
+    }
+    if project.configuration is not None:
+        meta["configuration"] = project.configuration.model_dump(mode="json")
     files = {
-        PROJECT_FILE: dump_json(
-            {
-                "format": project.format,
-                "name": project.name,
-                "pous": [p.name for p in project.pous],
-                "tasks": [t.model_dump(mode="json") for t in project.tasks],
-            }
-        ),
+        PROJECT_FILE: dump_json(meta),
         TYPES_FILE: _text_file(project.types),
         GLOBALS_FILE: _text_file(project.globals),
     }
@@ -108,6 +117,7 @@ def read_project_folder(folder: Path, encoding: str | None = None, hint: str = H
         "name": meta.get("name"),
         "format": meta.get("format"),
         "tasks": meta.get("tasks", []),
+        "configuration": meta.get("configuration"),
         "types": read.text(folder / TYPES_FILE, TYPES_FILE) or "",
         "globals": read.text(folder / GLOBALS_FILE, GLOBALS_FILE) or "",
     }

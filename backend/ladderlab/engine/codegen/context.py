@@ -99,13 +99,25 @@ class ModuleContext:
     origin_statements: dict[int, ir.Stmt] = field(default_factory=dict)
     pauses: list[PausePoint] = field(default_factory=list)
     probe_tables: dict[str, ProbeTable] = field(default_factory=dict)  # upper-case POU name -> its probes
+    instances: list[ir.ProgramInstance] = field(default_factory=list)
+    tasks: list[ir.TaskSpec] = field(default_factory=list)
     diagnostics: list[Diagnostic] = field(default_factory=list)
     _bound_keys: dict[object, str] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         self.pous = {name.upper(): pou for name, pou in self.program.pous.items()}
         self.layouts = {name: Layout(pou.slots) for name, pou in self.pous.items() if pou.kind != "function"}
-        self.globals = Layout(self.program.globals)
+        self.instances = self.program.program_instances()
+        self.tasks = self.program.task_specs()
+        instance_slots = [  # program instances live among the globals, first (docs/runtime.md)
+            ir.Slot(i.name.upper(), "VAR_GLOBAL", t.FbInstance(i.pou.upper()), None, i.retain) for i in self.instances
+        ]
+        self.globals = Layout(instance_slots + self.program.globals)
+
+    def instance(self, name: str) -> ir.ProgramInstance | None:
+        """The program instance called ``name``."""
+        upper = name.upper()
+        return next((i for i in self.instances if i.name.upper() == upper), None)
 
     @property
     def debug(self) -> bool:

@@ -11,6 +11,7 @@ from .layout import slots_source
 from .pou import emit_function, emit_inits, emit_instance_class, emit_struct
 from .scope import global_owner
 from .source import Source
+from .tasks import emit_tasks
 
 #: fast: no hooks; monitor: probes record power flow; debug: probes and pause points (generators).
 VARIANTS = ("fast", "monitor", "debug")
@@ -63,6 +64,7 @@ def generate(program: ir.Program, variant: str = "fast") -> Generated:
             module.diagnostics.append(diagnostic(str(error), ir.Origin(pou.name)))
     decls.piece()
     _emit_globals(module, decls)
+    emit_tasks(module, code)
     emitted: set[str] = set()
     while len(emitted) < len(module.structs):
         for struct, cls in list(module.structs.items()):
