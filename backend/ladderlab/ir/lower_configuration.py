@@ -101,6 +101,6 @@ def _config_entry(entry, instances: dict[str, ProgramInstance], ctx: PouContext)
                 raise LoweringError(
                     "VAR_CONFIG initial values of arrays and structures are not supported yet", entry.path
                 )
-            instance.init.append((target, Const(value, target.type), entry.retain))
+            instance.init.append((target, Const(value, target.type), entry.retain or instance.retain))
     except LoweringError as error:
         ctx.report_error(error, file="configuration/config")

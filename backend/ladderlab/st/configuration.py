@@ -310,11 +310,17 @@ class _PathChecker(BodyChecker):
         return super().lookup(name)
 
     def _fb_member(self, node: ast.Member, base: t.FbType) -> Type:
-        if base.pou is not None and node.name.upper() in base.pou.symbols:  # internal variables too (CFG-08)
-            symbol = base.pou.symbols[node.name.upper()]
-            node.ref = symbol
-            return symbol.type
-        return super()._fb_member(node, base)
+        if base.pou is None:
+            return super()._fb_member(node, base)
+        symbol = base.pou.symbols.get(node.name.upper())  # internal variables too (CFG-08)
+        if symbol is None:
+            names = [s.name for s in base.pou.symbols.values()]
+            self.report(
+                "ST-UNKNOWN-MEMBER", f"{base.name} has no variable '{node.name}'" + did_you_mean(node.name, names), node
+            )
+            return ERROR
+        node.ref = symbol
+        return symbol.type
 
     def strip_resource(self, path: ast.Expr) -> ast.Expr:
         """``resource.inst.x`` -> ``inst.x`` (IEC access paths may start with the resource)."""

@@ -4,7 +4,8 @@
 interval single priority>``s with the ``<pouInstance name typeName>``s they run, and the program instances
 of no task. What the TC6 schema has no element for travels in LadderLab's addData (``<ll:info>``): a
 program instance's RETAIN and parameter bindings (JSON), a configuration's own VAR_GLOBAL, VAR_ACCESS and
-VAR_CONFIG texts, a resource written without a name. Another tool's document reads with the elements only.
+VAR_CONFIG texts, a resource's processor (ON), globals text as typed, or that it was written without a name.
+Another tool's document reads with the elements only.
 
 A project's own tasks (no configuration) are written as configuration ``config`` with resource
 ``resource`` whose instances are named after their programs; a document whose configuration runs nothing
@@ -55,8 +56,9 @@ def write_instances(
             _task(holder, task, where, problems)
         for program in resource.programs:
             _instance(holder, program)
-        if resource.name is None:
-            ladderlab_data(holder, {"unnamed": True})
+        if resource.name is None or resource.on is not None or resource.globals:
+            texts = {"globals": resource.globals} if resource.globals else None
+            ladderlab_data(holder, {"unnamed": resource.name is None or None, "on": resource.on}, texts)
     for block in globals_ + var_blocks(config.globals, "configuration/globals"):
         write_list(node, block)
     if project.configuration is not None:
@@ -92,10 +94,11 @@ def _instance(parent: ET.Element, instance: ProgramInstance) -> None:
 
 
 def read_instances(
-    reader: Reader, configurations: list[ET.Element], read_list: Callable[[list[ET.Element]], str]
+    reader: Reader, configurations: list[ET.Element], read_list: Callable[[list[ET.Element], str | None], str]
 ) -> tuple[str, Configuration | None, list[Task]]:
     """(the project's globals text, its configuration, its own tasks) from ``<configuration>`` elements;
-    ``read_list`` turns ``<globalVars>`` elements into a VAR_GLOBAL text."""
+    ``read_list(lists, carried)`` turns ``<globalVars>`` elements into a VAR_GLOBAL text (the carried text
+    when it still says the same)."""
     if len(configurations) > 1:
         reader.report(
             "PLCOPEN-CONFIG",
@@ -106,12 +109,12 @@ def read_instances(
         )
     lists = [g for c in configurations for g in reader.children(c, "globalVars")]
     if not configurations:
-        return read_list(lists), None, []
+        return read_list(lists, None), None, []
     node = configurations[0]
     ours = info(node, reader)
     resources = [_resource(reader, r, read_list) for r in reader.children(node, "resource")]
     carried = info_text(ours, "globals")
-    globals_ = read_list(lists)
+    globals_ = read_list(lists, None)
     if not resources and not carried:  # a configuration that only holds globals: the project's globals
         return globals_, None, []
     if ours is not None and ours.get("tasks") == "true":  # LadderLab's project with its own tasks
@@ -127,7 +130,7 @@ def read_instances(
     )
     if carried:  # LadderLab's own: its configuration's globals are the last lists, the project's the others
         own = len(parse_declarations(carried).ast or [])
-        globals_, configuration.globals = read_list(lists[: len(lists) - own]), carried
+        globals_, configuration.globals = read_list(lists[: len(lists) - own], None), carried
     return globals_, configuration, []
 
 
@@ -142,12 +145,13 @@ def _short(program: str | ProgramInstance) -> str | ProgramInstance:
     return program
 
 
-def _resource(reader: Reader, node: ET.Element, read_list: Callable[[list[ET.Element]], str]) -> Resource:
+def _resource(reader: Reader, node: ET.Element, read_list: Callable[[list[ET.Element], str | None], str]) -> Resource:
     ours = info(node, reader)
     unnamed = ours is not None and ours.get("unnamed") == "true"
     return Resource(
         name=None if unnamed else node.get("name", RESOURCE),
-        globals=read_list(reader.children(node, "globalVars")),
+        on=ours.get("on") if ours is not None else None,
+        globals=read_list(reader.children(node, "globalVars"), info_text(ours, "globals")),
         tasks=[_read_task(reader, t) for t in reader.children(node, "task")],
         programs=[_read_instance(reader, i) for i in reader.children(node, "pouInstance")],
     )

@@ -122,7 +122,8 @@ class _Importer:
         types = self.types(r.path(root, "types", "dataTypes"), info_text(ours, "types"))
         configurations = r.children(r.path(root, "instances", "configurations"), "configuration")
         carried = info_text(ours, "globals")
-        globals_, configuration, tasks = read_instances(r, configurations, lambda lists: self.globals(lists, carried))
+        read_list = lambda lists, own: self.globals(lists, own if own is not None else carried)  # noqa: E731
+        globals_, configuration, tasks = read_instances(r, configurations, read_list)
         for data_name, count in sorted(self.foreign.items()):
             r.report(
                 "PLCOPEN-ADDDATA",
