@@ -178,14 +178,15 @@ def check_program(program: ir.Program) -> None:
     """Assert the invariants of docs/ir.md on a whole lowered program."""
     for slot in program.globals:
         assert slot.name == slot.name.upper() and slot.var_class == "VAR_GLOBAL", slot
-        check_value(slot.initial, slot.type, slot.name)
+        if slot.address is None or slot.initial is not None:  # a located one without: the image holds its value
+            check_value(slot.initial, slot.type, slot.name)
     for name, pou in program.pous.items():
         assert name == pou.name == pou.name.upper()
         names = [s.name for s in pou.slots]
         assert len(names) == len(set(names)) and all(n == n.upper() for n in names), names
         for slot in pou.slots:
             assert slot.var_class != "VAR_EXTERNAL"
-            if slot.var_class != "VAR_IN_OUT":
+            if slot.var_class != "VAR_IN_OUT" and (slot.address is None or slot.initial is not None):
                 check_value(slot.initial, slot.type, f"{name}.{slot.name}")
         checker = _Checker(program, pou)
         for block in pou.blocks:

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from hypothesis import given
+from hypothesis import assume, given
 from hypothesis import strategies as st
 
 from ladderlab.iec.values import f32
@@ -273,8 +273,6 @@ def test_unsupported_expressions_are_located_errors():
     assert errors(text) == [
         "P/body:3:6, POU P: error IR-UNSUPPORTED: pointers (POINTER TO, REF_TO, ADR, REF, ^) are not supported by "
         "the engine yet",
-        "P/body:4:6, POU P: error IR-UNSUPPORTED: the directly represented variable %IW3 has no name: declare it as "
-        "'name AT %IW3 : type' (unnamed ones are not supported yet)",
     ]
 
 
@@ -318,5 +316,8 @@ _INT_OPERANDS = st.sampled_from(["i", "j", "si", "d", "pc", "arr[2]", "5", "-3",
 )
 def test_integer_expressions_lower_to_one_operand_type(expression):
     """Any mix of SINT/INT/DINT/subrange operands: every Binary's operands are of one type (checked by
-    ``lower_ok``'s invariant checker), and the value is widened to the DINT target."""
+    ``lower_ok``'s invariant checker), and the value is widened to the DINT target. (A constant expression
+    that divides by zero, ``5 / (5 - 5)``, is refused at compile time: not this test's subject.)"""
+    refused = errors(f"PROGRAM P\nVAR {DECLS} END_VAR\nd := {expression};\nEND_PROGRAM\n{TYPES}\n")
+    assume(not any("division by zero in a constant expression" in e for e in refused))
     assert value(expression, "d").type == DINT

@@ -186,7 +186,7 @@ VAR_GLOBAL g : INT; END_VAR""")
         ("R", "VAR", 3, True, False, None),
         ("C", "VAR", 4, False, True, None),
         ("TMP", "VAR_TEMP", 0, False, False, None),
-        ("LED", "VAR", False, False, False, "%QX0.1"),
+        ("LED", "VAR", None, False, False, "%QX0.1"),  # located: the process image holds its value
     ]
 
 

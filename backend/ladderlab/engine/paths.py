@@ -17,6 +17,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 
 from ..iec import values
+from ..iec.addresses import Address, parse_address, same_location
 from ..iec.spelling import did_you_mean
 from ..ir import nodes as ir
 from ..ir import types as t
@@ -24,8 +25,10 @@ from .codegen import names
 from .codegen.context import ModuleContext, std_fb_class, std_pin_type
 from .codegen.scope import global_owner
 from .codegen.typeinfo import describe, is_composite, runtime_name
+from .process_image import ProcessImage, image_view_name, key_of, view_kind
 
 GLOBALS_PREFIX = "GVL"
+VIEW_PREFIX = "ll_io_"
 _DEREF = object()  # step into a VAR_IN_OUT reference
 _TOKEN = re.compile(r"\s*(?:(?P<name>[A-Za-z_][A-Za-z0-9_]*)|(?P<int>[+-]?\d+)|(?P<punct>[.\[\],]))")
 
@@ -41,16 +44,17 @@ class Location:
 
     path: str
     type: t.IrType
-    root: tuple[str, str]  # ("global", G-page name)
+    root: tuple[str, str]  # ("global", a G page or a process image view)
     keys: tuple[object, ...]
     read_only: bool = False  # a READ_ONLY access path (VAR_ACCESS)
+    write_root: tuple[str, str] | None = None  # where writes go when not to ``root`` (the world's side of I/Q)
 
     @property
     def elementary(self) -> bool:
         return not is_composite(self.type)
 
-    def _container(self, roots: Roots) -> tuple[object, object]:
-        obj = roots.get(self.root)
+    def _container(self, roots: Roots, writing: bool = False) -> tuple[object, object]:
+        obj = roots.get(self.write_root if writing and self.write_root is not None else self.root)
         keys = list(self.keys)
         last = keys.pop()
         for key in keys:
@@ -64,18 +68,24 @@ class Location:
         return container[key]  # type: ignore[index]
 
     def set(self, roots: Roots, value: object) -> None:
-        container, key = self._container(roots)
+        container, key = self._container(roots, writing=True)
         container[key] = value  # type: ignore[index]
 
 
 class Roots:
-    """The live objects paths start from: the global pages (program instances are globals) of a module."""
+    """The live objects paths start from: the global pages (program instances are globals) of a module, and the
+    process image's views (made on first use: a path may read an address through a view no code uses)."""
 
     def __init__(self, ns: dict[str, object]) -> None:
         self.ns = ns
 
     def get(self, root: tuple[str, str]) -> object:
-        return self.ns[root[1]]
+        name = root[1]
+        found = self.ns.get(name)
+        if found is None and name.startswith(VIEW_PREFIX):
+            buffer, kind = name[len(VIEW_PREFIX) :].split("_", 1)
+            found = self.ns[name] = self.ns["ll_image"].view(buffer, kind)  # type: ignore[union-attr]
+        return found
 
 
 def tokens(text: str) -> list[tuple[str, str]]:
@@ -112,6 +122,8 @@ class Resolver:
     def _resolve(self, text: str) -> Location:
         if not isinstance(text, str):
             raise ValueError(f"a variable path must be text, not {text!r}")
+        if text.strip().startswith("%"):
+            return self._address(text.strip())
         toks = tokens(text)
         if not toks or toks[0][0] != "name":
             raise ValueError(f"{text!r} is not a variable path (it must start with a name)")
@@ -131,8 +143,27 @@ class Resolver:
             raise ValueError(f"{text!r}: expected '.name' after {text.split('.')[0].split('[')[0].strip()}")
         return rest[1][1], rest[2:]
 
+    def _address(self, text: str) -> Location:
+        """``%IX0.1``: the address with the type of the variable declared at it, else its size's default; it
+        must lie in the process image (the addresses the program uses)."""
+        address = parse_address(text)
+        declared = next((s for s in self.context.located if same_location(s.address, address)), None)  # type: ignore[arg-type]
+        name = runtime_name(declared.type) if declared is not None else address.default_type
+        image = self.context.image_sizes()
+        if address.end > image.get(address.area, 0):
+            used = image.get(address.area, 0)
+            raise UnknownPath(
+                f"{address.text} is outside the process image: the program uses {used} byte(s) of %{address.area}"
+                + (f" (%{address.area}B0..%{address.area}B{used - 1})" if used else "")
+            )
+        ty = declared.type if declared is not None else t.Elementary(name)  # type: ignore[arg-type]
+        return located_location(address.text, ty, address)
+
     def _global(self, text: str, name: str, rest: list, top: bool = False) -> Location:
         place = self.context.globals.get(name)  # type: ignore[union-attr]
+        located = self.context.globals.located.get(name.upper()) if place is None else None  # type: ignore[union-attr]
+        if located is not None:
+            return self._steps_located(text, located.name, located, rest)
         if place is None:
             candidates = [p.slot.name for p in self.context.globals.places.values() if not p.slot.hidden]  # type: ignore[union-attr]
             if top:
@@ -151,12 +182,21 @@ class Resolver:
             if (kind, value) == ("punct", "."):
                 member, rest = self._member_name(rest, text)
                 path, ty, keys = self._member(path, ty, keys, member)
+                if isinstance(keys, Location):  # a located variable of an FB or program instance
+                    if rest:
+                        raise ValueError(f"{path} is {_a(ty)} in the process image: it has no members")
+                    return keys
             elif (kind, value) == ("punct", "["):
                 indices, rest = self._indices(rest[1:], text)
                 path, ty, keys = self._index(path, ty, keys, indices)
             else:
                 raise ValueError(f"{text!r} is not a variable path (unexpected {value!r})")
         return Location(path, ty, root, keys)
+
+    def _steps_located(self, text: str, name: str, slot: ir.Slot, rest: list) -> Location:
+        if rest:
+            raise ValueError(f"{name} is {_a(slot.type)} in the process image: it has no members")
+        return located_location(name, slot.type, parse_address(slot.address))  # type: ignore[arg-type]
 
     def _indices(self, rest: list, text: str) -> tuple[list[int], list]:
         indices = []
@@ -177,6 +217,10 @@ class Resolver:
             if user is not None:
                 layout = self.context.layouts[user.name.upper()]
                 inner = layout.get(member)
+                if inner is None and member.upper() in layout.located:
+                    slot = layout.located[member.upper()]
+                    location = located_location(f"{path}.{slot.name}", slot.type, parse_address(slot.address))
+                    return location.path, location.type, location
                 if inner is None:
                     what = path if path.upper() == ty.fb.upper() else f"{path} ({ty.fb})"  # a program instance: MAIN
                     raise UnknownPath(f"{what} has no variable {member!r}{did_you_mean(member, _visible(layout))}")
@@ -207,6 +251,14 @@ class Resolver:
             keys = (*keys, index - lo)
         rest = ty.dims[len(indices) :]
         return f"{path}[{', '.join(map(str, indices))}]", (t.Array(ty.element, rest) if rest else ty.element), keys
+
+
+def located_location(path: str, ty: t.IrType, address: Address) -> Location:
+    """A located variable or an address as the world sees it: read from the inputs set or the outputs published,
+    written to the inputs or the output image (engine/process_image.py)."""
+    kind = view_kind(address, runtime_name(ty))  # type: ignore[arg-type]
+    read, write = (image_view_name(ProcessImage.world(address.area, writing), kind) for writing in (False, True))
+    return Location(path, ty, ("global", read), (key_of(address),), write_root=("global", write))
 
 
 def _visible(layout) -> list[str]:
@@ -256,27 +308,38 @@ def leaves(context: ModuleContext, roots: Roots) -> Iterator[tuple[str, object]]
     for place in context.globals.places.values():  # type: ignore[union-attr]
         if not place.slot.hidden:
             obj = roots.ns[global_owner(place.page)]
-            yield from _value_leaves(context, place.slot.name, place.slot.type, getattr(obj, place.attr))
+            yield from _value_leaves(context, place.slot.name, place.slot.type, getattr(obj, place.attr), roots)
+    yield from _located_leaves("", context.globals, roots)  # type: ignore[arg-type]
 
 
-def _instance_leaves(context, path, layout, obj) -> Iterator[tuple[str, object]]:
+def _located_leaves(prefix: str, layout, roots: Roots) -> Iterator[tuple[str, object]]:
+    for slot in layout.located.values():
+        location = located_location(f"{prefix}{slot.name}", slot.type, parse_address(slot.address))
+        yield location.path, location.get(roots)
+
+
+def _instance_leaves(context, path, layout, obj, roots: Roots | None = None) -> Iterator[tuple[str, object]]:
     for place in layout.places.values():
         if place.slot.hidden or place.slot.var_class == "VAR_IN_OUT":
             continue
         owner = obj if place.page == 0 else getattr(obj, f"ll_p{place.page}")
-        yield from _value_leaves(context, f"{path}.{place.slot.name}", place.slot.type, getattr(owner, place.attr))
+        yield from _value_leaves(
+            context, f"{path}.{place.slot.name}", place.slot.type, getattr(owner, place.attr), roots
+        )
+    if roots is not None:
+        yield from _located_leaves(f"{path}.", layout, roots)
 
 
-def _value_leaves(context, path, ty, value) -> Iterator[tuple[str, object]]:
+def _value_leaves(context, path, ty, value, roots: Roots | None = None) -> Iterator[tuple[str, object]]:
     if isinstance(ty, t.Array):
-        yield from _array_leaves(context, path, ty, value, [])
+        yield from _array_leaves(context, path, ty, value, [], roots)
     elif isinstance(ty, t.Struct):
         for f in ty.fields:
-            yield from _value_leaves(context, f"{path}.{f.name}", f.type, getattr(value, names.slot(f.name)))
+            yield from _value_leaves(context, f"{path}.{f.name}", f.type, getattr(value, names.slot(f.name)), roots)
     elif isinstance(ty, t.FbInstance):
         user = context.user_fb(ty.fb)
         if user is not None:
-            yield from _instance_leaves(context, path, context.layouts[user.name.upper()], value)
+            yield from _instance_leaves(context, path, context.layouts[user.name.upper()], value, roots)
         else:
             cls = std_fb_class(ty.fb)
             for pin in (*cls.INPUTS, *cls.OUTPUTS, *cls.MEMORY):  # type: ignore[union-attr]
@@ -285,15 +348,15 @@ def _value_leaves(context, path, ty, value) -> Iterator[tuple[str, object]]:
         yield path, value
 
 
-def _array_leaves(context, path, ty: t.Array, value, prefix: list[int]) -> Iterator[tuple[str, object]]:
+def _array_leaves(context, path, ty: t.Array, value, prefix: list[int], roots=None) -> Iterator[tuple[str, object]]:
     depth = len(prefix)
     lo, _hi = ty.dims[depth]
     for offset, item in enumerate(value):
         indices = [*prefix, lo + offset]
         if depth + 1 < len(ty.dims):
-            yield from _array_leaves(context, path, ty, item, indices)
+            yield from _array_leaves(context, path, ty, item, indices, roots)
         else:
-            yield from _value_leaves(context, f"{path}[{', '.join(map(str, indices))}]", ty.element, item)
+            yield from _value_leaves(context, f"{path}[{', '.join(map(str, indices))}]", ty.element, item, roots)
 
 
 def plain(context: ModuleContext, ty: t.IrType, value: object) -> object:

@@ -38,6 +38,7 @@ from .codegen.runtime import UNSET, Watchdog
 from .compile import CompiledProgram, compile_program
 from .debug import Debugger, Halt
 from .paths import Location, LocationReader, Resolver, Roots, UnknownPath, coerce_for, leaves, plain
+from .process_image import ProcessImage
 from .tasks import Schedule, Task, task_table
 
 
@@ -97,6 +98,7 @@ class Simulation:
         self._schedule = Schedule(self._tasks)
         self._resolver = Resolver(self._context)
         self._roots = Roots(self._ns)
+        self._image: ProcessImage = self._ns["ll_image"]  # type: ignore[assignment]
         self._triggers = {task.name: self._resolver.resolve(task.single) for task in self._tasks if task.single}
         self.debugger: Debugger | None = None
         self._stamp = 0  # counts scans started: the stamp probe groups record (ll_scan)
@@ -155,7 +157,9 @@ class Simulation:
     # ------------------------------------------------------------------ state
 
     def _initialise(self, warm: bool) -> None:
-        """The globals - program instances first (codegen/tasks.py) - then the VAR_CONFIG initial values."""
+        """The process image cleared (the inputs stay as the world set them), the globals - program instances first
+        (codegen/tasks.py) - then the VAR_CONFIG initial values."""
+        self._image.clear()
         self._ns["ll_init_globals"](warm)
         self._ns["ll_config_init"](warm)
         self._schedule.reset_triggers()
@@ -229,6 +233,7 @@ class Simulation:
         self._apply_forces()
         if self._triggers:
             due = self._schedule.with_triggers(due, lambda task: self._triggers[task.name].get(self._roots))
+        self._image.read_inputs()
         self._ns["ll_now"] = now
         self._stamp += 1
         self._ns["ll_scan"] = self._stamp
@@ -277,6 +282,7 @@ class Simulation:
 
     def _finish(self, elapsed_ms: float) -> None:
         self._apply_forces()
+        self._image.publish()
         self.stats.add(elapsed_ms)
         self.scan_count += 1
 

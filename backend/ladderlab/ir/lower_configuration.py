@@ -18,7 +18,7 @@ from ..st.symbols import CheckResult
 from .context import PouContext
 from .lower_expr import convert, lower_access, lower_to, value_type
 from .lower_types import LoweringError
-from .nodes import Assign, Const, FbCall, Member, Origin, ProgramInstance, Stmt, TaskSpec, Var
+from .nodes import Assign, Const, FbCall, Member, Origin, ProgramInstance, Slot, Stmt, TaskSpec, Var
 from .types import FbInstance
 
 #: The task of a project without a task configuration, and of a configuration's instances without a task.
@@ -27,11 +27,12 @@ DEFAULT_INTERVAL_MS = 10
 
 
 def lower_configuration(
-    checked: CheckResult, diagnostics: list[Diagnostic]
+    checked: CheckResult, diagnostics: list[Diagnostic], image: dict[str, Slot] | None = None
 ) -> tuple[list[ProgramInstance], list[TaskSpec], dict[str, tuple[str, bool]]]:
-    """(instances, tasks, access paths) of the checked project; problems go to ``diagnostics``."""
+    """(instances, tasks, access paths) of the checked project; problems go to ``diagnostics``, addresses the
+    bindings use without a declaration to ``image``."""
     info: ConfigurationInfo = checked.configuration
-    ctx = PouContext(checked, None, diagnostics)  # the global scope
+    ctx = PouContext(checked, None, diagnostics, image)  # the global scope
     instances = {name: ProgramInstance(name, i.pou.name.upper(), i.retain) for name, i in info.instances.items()}
     for entry in info.entries:
         _config_entry(entry, instances, ctx)

@@ -31,7 +31,7 @@ from ..st.context_typing import FoldError, fold, literal_only
 from ..st.rules import EnumValue
 from ..st.symbols import PouInfo, Symbol
 from .context import PouContext
-from .lower_types import POINTERS_UNSUPPORTED, LoweringError, byte_size, engine_value, ir_default, unnamed_address
+from .lower_types import POINTERS_UNSUPPORTED, LoweringError, byte_size, engine_value, ir_default
 from .nodes import Assign, Binary, Call, Const, Convert, Expr, FnCall, Index, Member, Unary, Var
 from .types import BOOL, Array, Elementary, FbInstance, IrType, Struct, Subrange
 
@@ -186,8 +186,8 @@ def lower_access(node: ast.Expr, ctx: PouContext) -> Var:
             return ctx.var_for(ref)
         if isinstance(ref, PouInfo):
             return ctx.result_var()
-        if isinstance(node, ast.DirectAddr):
-            raise unnamed_address(node.address, node)
+        if isinstance(node, ast.DirectAddr):  # used without a declaration: its size's default type (ST-13)
+            return ctx.direct(node.address, ctx.ir_type(node.ty))
         raise LoweringError(None)
     if isinstance(node, ast.Member) and not node.name.isdigit():
         base = lower_access(node.base, ctx)

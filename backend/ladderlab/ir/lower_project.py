@@ -29,7 +29,7 @@ from .lower_configuration import lower_configuration
 from .lower_fbd import lower_fbd_body
 from .lower_ld import lower_ld_body
 from .lower_st import lower_st_body
-from .lower_types import LoweringError, unnamed_address
+from .lower_types import LoweringError
 from .nodes import Assign, Binary, Block, Origin, Pou, Program, Slot, Stmt, Unary, Var
 from .types import BOOL
 
@@ -59,14 +59,15 @@ def _lower_project(project: Project, checked: CheckResult | None) -> LoweringRes
     if checked is None:
         checked = check_project(project)
     diagnostics = validate_project(project) + list(checked.diagnostics)
+    image: dict[str, Slot] = {}  # addresses the bodies use without a declaration: located globals (ST-13)
     globals_ = lower_globals(checked, diagnostics)
     pous: dict[str, Pou] = {}
     for pou in project.pous:
         info = checked.pou(pou.name)
         if info is not None and info.name == pou.name:  # not a duplicate (reported by the checker)
-            pous[pou.name.upper()] = lower_pou(pou, info, checked, diagnostics)
-    instances, tasks, access = lower_configuration(checked, diagnostics)
-    program = Program(pous, globals_, tasks, instances, access)
+            pous[pou.name.upper()] = lower_pou(pou, info, checked, diagnostics, image)
+    instances, tasks, access = lower_configuration(checked, diagnostics, image)
+    program = Program(pous, globals_ + list(image.values()), tasks, instances, access)
     return LoweringResult(None if has_errors(diagnostics) else program, diagnostics)
 
 
@@ -76,9 +77,16 @@ def lower_globals(checked: CheckResult, diagnostics: list[Diagnostic]) -> list[S
     return [slot for slot in slots if slot is not None]
 
 
-def lower_pou(pou: ModelPou, info: PouInfo, checked: CheckResult, diagnostics: list[Diagnostic]) -> Pou:
-    """One POU: a slot per declared variable (not VAR_EXTERNAL), the function result, the body blocks."""
-    ctx = PouContext(checked, info, diagnostics)
+def lower_pou(
+    pou: ModelPou,
+    info: PouInfo,
+    checked: CheckResult,
+    diagnostics: list[Diagnostic],
+    image: dict[str, Slot] | None = None,
+) -> Pou:
+    """One POU: a slot per declared variable (not VAR_EXTERNAL), the function result, the body blocks.
+    ``image`` collects the addresses the body uses without a declaration (PouContext.direct)."""
+    ctx = PouContext(checked, info, diagnostics, image)
     for symbol in info.symbols.values():
         if symbol.var_class != "VAR_EXTERNAL":
             slot = _slot(symbol, ctx, f"{info.name}/declarations")
@@ -109,8 +117,6 @@ def lower_pou(pou: ModelPou, info: PouInfo, checked: CheckResult, diagnostics: l
 
 def _slot(symbol: Symbol, ctx: PouContext, file: str) -> Slot | None:
     try:
-        if symbol.address is not None and symbol.name == symbol.address:
-            raise unnamed_address(symbol.address)
         return ctx.types.slot(symbol)
     except LoweringError as error:
         ctx.report_error(error, symbol, file)

@@ -21,6 +21,7 @@ import functools
 import math
 from typing import Any
 
+from ..iec.addresses import incomplete
 from ..iec.values import default_value, f32, store_fn
 from ..st import ast
 from ..st import types as t
@@ -46,15 +47,6 @@ class LoweringError(Exception):
 
 
 POINTERS_UNSUPPORTED = "pointers (POINTER TO, REF_TO, ADR, REF, ^) are not supported by the engine yet"
-
-
-def unnamed_address(address: str, node: Any = None) -> LoweringError:
-    """``%IX0.0`` used or declared without a name: the engine keeps variables by name."""
-    return LoweringError(
-        f"the directly represented variable {address} has no name: declare it as "
-        f"'name AT {address} : type' (unnamed ones are not supported yet)",
-        node,
-    )
 
 
 def _in_types_text(error: LoweringError) -> LoweringError:
@@ -265,8 +257,13 @@ class TypeLowering:
 
     # ------------------------------------------------------------ slots
     def slot(self, symbol: Symbol) -> Slot:
-        """The slot of a declared variable; VAR_IN_OUT slots are references and have no initial value."""
-        initial = None if symbol.var_class == "VAR_IN_OUT" else self.initial(symbol.type, symbol.type_spec, symbol.init)
+        """The slot of a declared variable; VAR_IN_OUT slots are references and have no initial value, nor has a
+        located variable without one (its memory keeps what the process image holds)."""
+        located = symbol.address is not None and not incomplete(symbol.address)  # %I*: an ordinary variable
+        if symbol.var_class == "VAR_IN_OUT" or (located and symbol.init is None):
+            initial = None
+        else:
+            initial = self.initial(symbol.type, symbol.type_spec, symbol.init)
         return Slot(
             symbol.name.upper(),
             symbol.var_class,
@@ -274,7 +271,7 @@ class TypeLowering:
             initial,
             symbol.retain,
             symbol.constant,
-            symbol.address,
+            symbol.address.upper() if located else None,
         )
 
 

@@ -11,6 +11,7 @@ from collections.abc import Callable
 from typing import Any
 
 from ..iec import stdlib
+from ..iec.addresses import parse_address, same_location
 from ..iec.spelling import did_you_mean
 from . import ast
 from . import types as t
@@ -38,7 +39,6 @@ _TIME_RULES = {
     ("-", "dt", "dt"): "TIME",
     ("-", "date", "date"): "TIME",
 }
-_DIRECT_DEFAULTS = {"X": "BOOL", "B": "BYTE", "W": "INT", "D": "REAL", "L": "LWORD"}  # S002 Table 10.1 (ST-13)
 
 
 class BodyChecker:
@@ -152,13 +152,19 @@ class BodyChecker:
         return ERROR
 
     def _direct(self, node: ast.DirectAddr) -> Type:
+        """A direct address: the variable declared AT it (in this POU, else globally), else one of its size's
+        default type (ST-13, iec/addresses.py)."""
+        try:
+            address = parse_address(node.address)
+        except ValueError as error:
+            self.report("ST-ADDRESS", str(error), node)
+            return ERROR
         for scope in (self.pou.symbols.values() if self.pou else (), self.result.globals.values()):
             for symbol in scope:
-                if symbol.address and symbol.address.upper() == node.address:
+                if symbol.address and same_location(symbol.address, address):
                     node.ref = symbol
                     return symbol.type
-        size = node.address[2] if len(node.address) > 2 and node.address[2].isalpha() else "X"
-        return t.Elementary(_DIRECT_DEFAULTS.get(size, "BOOL"))
+        return t.Elementary(address.default_type)
 
     def _member(self, node: ast.Member) -> Type:
         base = self.expr(node.base)

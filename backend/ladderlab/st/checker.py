@@ -11,6 +11,7 @@ from __future__ import annotations
 from typing import Any
 
 from ..iec import stdlib
+from ..iec.addresses import incomplete, parse_address, type_problem
 from ..iec.spelling import did_you_mean
 from ..model.diagnostics import Diagnostic
 from ..model.names import pou_name_problem
@@ -368,6 +369,8 @@ class ProjectChecker:
             for name in decl.names:
                 if name.name:
                     check_identifier(name.name, name, report)
+                if name.address:
+                    self._check_address(block, name, ty, pou, report)
                 key = (name.name or name.address or "").upper()
                 if key in table:
                     report("ST-DUPLICATE", f"'{name.name or name.address}' is declared twice", name)
@@ -390,6 +393,25 @@ class ProjectChecker:
                 if block.kind == "VAR_EXTERNAL" and pou is not None:
                     self._check_external(symbol, report, name)
 
+    def _check_address(self, block, name: ast.DeclName, ty: Type, pou: PouInfo | None, report) -> None:
+        """``AT %addr``: a valid address of the type's width (iec/addresses.py), not in a function (VAR-43). An
+        incomplete address (``AT %I*``) leaves the variable an ordinary one until a configuration places it."""
+        if incomplete(name.address):
+            return
+        try:
+            address = parse_address(name.address)
+        except ValueError as error:
+            report("ST-ADDRESS", str(error), name)
+            return
+        if pou is not None and pou.kind == "FUNCTION":
+            report("ST-DECL", "a function has no memory of its own: it cannot locate a variable AT an address", name)
+        elif isinstance(ty, (t.Elementary, t.StringType)) and block.kind != "VAR_EXTERNAL":
+            problem = type_problem(address, ty.name)
+            if problem:
+                report("ST-ADDRESS", problem, name)
+        elif ty is not ERROR and not isinstance(ty, t.Elementary):
+            report("ST-ADDRESS", f"a {ty} cannot be located at {address.text}: only elementary types can", name)
+
     def _check_decl(self, block, decl: ast.VarDecl, ty: Type, pou: PouInfo | None, report) -> None:
         if decl.edge and (block.kind != "VAR_INPUT" or not t.same(ty, t.BOOL) or pou is None or pou.kind == "FUNCTION"):
             report(
@@ -403,6 +425,8 @@ class ProjectChecker:
             report("ST-DECL", "a CONSTANT needs an initial value", decl, severity="warning")
 
     def _check_external(self, symbol: Symbol, report, node) -> None:
+        if symbol.address is not None and symbol.name == symbol.address:
+            return  # VAR_EXTERNAL AT %X0.0 : BOOL: the address itself, global by nature (VAR-73, Ex 3.21)
         target = self.result.globals.get(symbol.name.upper())
         if target is None:
             report(

@@ -7,13 +7,16 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 
 from ...iec import stdlib as catalogue
+from ...iec.addresses import parse_address
 from ...ir import nodes as ir
 from ...ir import types as t
 from ...model.diagnostics import Diagnostic
+from ..process_image import image_view_name, key_of, view_kind
 from ..stdlib import STANDARD_FBS
 from . import names
 from .layout import Layout
 from .runtime import UNSET
+from .typeinfo import runtime_name
 
 COMPILE_ERROR = "ENGINE-COMPILE"
 
@@ -113,6 +116,27 @@ class ModuleContext:
             ir.Slot(i.name.upper(), "VAR_GLOBAL", t.FbInstance(i.pou.upper()), None, i.retain) for i in self.instances
         ]
         self.globals = Layout(instance_slots + self.program.globals)
+
+    @property
+    def located(self) -> list[ir.Slot]:
+        """Every located variable: the globals' (addresses used without a declaration among them), the POUs'."""
+        found = list(self.globals.located.values())  # type: ignore[union-attr]
+        for layout in self.layouts.values():
+            found += layout.located.values()
+        return found
+
+    def image_sizes(self) -> dict[str, int]:
+        """Bytes of each process image area: up to the last byte a located variable uses."""
+        sizes: dict[str, int] = {}
+        for slot in self.located:
+            address = parse_address(slot.address)  # type: ignore[arg-type]
+            sizes[address.area] = max(sizes.get(address.area, 0), address.end)
+        return sizes
+
+    def image_view(self, slot: ir.Slot) -> tuple[str, int]:
+        """(the name of the view a located slot is read and written through, its key in that view)."""
+        address = parse_address(slot.address)  # type: ignore[arg-type]
+        return image_view_name(address.area, view_kind(address, runtime_name(slot.type))), key_of(address)
 
     def instance(self, name: str) -> ir.ProgramInstance | None:
         """The program instance called ``name``."""

@@ -8,7 +8,7 @@ from ...ir import nodes as ir
 from ...model.diagnostics import Diagnostic
 from .context import CodegenError, ModuleContext, PausePoint, diagnostic
 from .layout import slots_source
-from .pou import emit_function, emit_inits, emit_instance_class, emit_struct
+from .pou import emit_function, emit_inits, emit_instance_class, emit_located_inits, emit_struct
 from .scope import global_owner
 from .source import Source
 from .tasks import emit_tasks
@@ -52,6 +52,7 @@ def generate(program: ir.Program, variant: str = "fast") -> Generated:
     decls.line("# IEC names appear as v_NAME (variables), P_NAME (POUs), f_NAME (functions), S_NAME (structures);")
     decls.line("# ll_* are engine helpers. Declarations first, then the code of the variant.")
     decls.line()
+    _emit_image(module, decls)
     code.line(f"# ---- {variant} variant: code")
     code.line()
     for pou in module.pous.values():
@@ -120,12 +121,25 @@ def _emit_globals(module: ModuleContext, src: Source) -> None:
         with src.indent():
             emit_inits(module, layout.page_places(page), target, "globals", src)
             if not page:
+                emit_located_inits(module, list(layout.located.values()), src)
+            if not page:
                 for later in range(1, layout.pages):
                     src.line(f"ll_init_globals{later}(warm)")
         src.line()
     src.piece()
     for page in range(layout.pages):
         src.line(f"{global_owner(page)} = ll_Globals{page or ''}()")
+
+
+def _emit_image(module: ModuleContext, src: Source) -> None:
+    """The process image of the addresses the program uses, and the views its located variables go through."""
+    located = module.located
+    addresses = sorted({slot.address for slot in located})  # validated addresses (iec/addresses.py): safe text
+    src.line(f"ll_image = ll_ProcessImage({tuple(addresses)!r})")
+    for view in sorted({module.image_view(slot)[0] for slot in located}):
+        area, kind = view[len("ll_io_") :].split("_", 1)
+        src.line(f"{view} = ll_image.view({area!r}, {kind!r})")
+    src.line()
 
 
 def program_globals(module: ModuleContext) -> list[ir.Slot]:

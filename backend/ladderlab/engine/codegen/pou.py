@@ -98,8 +98,17 @@ def _emit_init(module: ModuleContext, pou: ir.Pou, scope: Scope, src: Source) ->
     src.line("def ll_init(self, warm):")
     with src.indent():
         emit_inits(module, layout.page_places(0), _target, pou.name, src)
+        emit_located_inits(module, list(layout.located.values()), src)
         for page in range(1, layout.pages):
             src.line(f"ll_i{page}_{names.escape(pou.name)}(self, warm)")
+
+
+def emit_located_inits(module: ModuleContext, slots: list[ir.Slot], src: Source) -> None:
+    """Located variables declared with an initial value store it into the image (the others keep the image's)."""
+    for slot in slots:
+        if slot.initial is not None:
+            view, key = module.image_view(slot)
+            src.line(f"{view}[{key}] = {construct(slot.type, slot.initial, module)}")
 
 
 def emit_inits(module: ModuleContext, places: list, target, owner: str, src: Source) -> None:

@@ -20,6 +20,7 @@ import math
 from collections.abc import Callable
 
 from ..errors import WATCHDOG, PlcRuntimeError, check_index, check_subrange, for_step_zero
+from ..process_image import ProcessImage
 from ..stdlib import INLINE_NAMES, STANDARD_FBS
 from . import names
 
@@ -214,6 +215,7 @@ def namespace() -> dict[str, object]:
         ll_inf=math.inf,
         ll_nan=math.nan,
         ll_Addressable=Addressable,
+        ll_ProcessImage=ProcessImage,
         ll_Structure=Structure,
         ll_now=0,
         ll_scan=0,  # the stamp of the running scan, for probe groups (context.ProbeTable)

@@ -50,6 +50,9 @@ class Scope:
         if var.scope == "global":
             place = self.module.globals.get(var.name)  # type: ignore[union-attr]
             if place is None:
+                located = self.module.globals.located.get(var.name.upper())  # type: ignore[union-attr]
+                if located is not None:
+                    return located
                 raise CodegenError(f"unknown global variable {var.name}")
             return place.slot
         slot = self.slots.get(var.name.upper())
@@ -78,6 +81,9 @@ class Scope:
     def _root(self, var: ir.Var) -> tuple[str, t.IrType, int]:
         """``root``'s source and type, and the page its slot lives on (0: ``self``, a local or a global)."""
         slot = self.slot(var)
+        if slot.address is not None:  # a located variable: its process image view (engine/process_image.py)
+            view, key = self.module.image_view(slot)
+            return f"{view}[{key}]", slot.type, 0
         attr = names.slot(slot.name)
         if var.scope == "global":
             place = self.module.globals.get(var.name)  # type: ignore[union-attr]
@@ -95,6 +101,9 @@ class Scope:
     def root_ref(self, var: ir.Var) -> str:
         """Source of a ``(container, key)`` reference to the whole root slot of ``var``."""
         slot = self.slot(var)
+        if slot.address is not None:
+            view, key = self.module.image_view(slot)
+            return f"({view}, {key})"
         attr = names.slot(slot.name)
         if var.scope == "global":
             place = self.module.globals.get(var.name)  # type: ignore[union-attr]
