@@ -215,3 +215,17 @@ def test_a_function_cannot_locate_a_variable():
         "F/declarations:2:5, POU F: error ST-DECL: a function has no memory of its own: it cannot locate a "
         "variable AT an address"
     ]
+
+
+def test_retain_on_a_located_variable_is_a_warning_and_a_warm_restart_clears_it():
+    text = "PROGRAM Main\nVAR RETAIN\n  k AT %MW0 : INT;\nEND_VAR\nk := k + 1;\nEND_PROGRAM\n"
+    project, _ = source_to_project(text, "io")
+    build = build_project(project)
+    assert [d.format() for d in build.diagnostics] == [
+        "Main/declarations:3:3, POU Main: warning ST-ADDRESS: RETAIN has no effect on a variable at %MW0: the "
+        "process image is cleared on a restart"
+    ]
+    sim = build.simulation()
+    sim.cycle(3)
+    sim.reset(cold=False)
+    assert sim.read("Main.k") == 0

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import struct
 from collections.abc import Iterable
+from dataclasses import dataclass, field
 
 from ..iec.addresses import Address, parse_address
 from ..iec.elementary import ELEMENTARY
@@ -89,6 +90,18 @@ class FloatView:
 
 
 View = BitView | ByteBoolView | IntView | FloatView
+AREA_ORDER = "IQMS"
+
+
+@dataclass
+class IoPoint:
+    """One address the program uses, for the I/O view: its area, its path (the address), its type, and the
+    variables declared at it (paths, none for an address used or declared without a name)."""
+
+    area: str
+    address: str
+    type: str
+    names: list[str] = field(default_factory=list)
 
 
 def image_view_name(buffer: str, kind: str) -> str:

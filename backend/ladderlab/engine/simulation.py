@@ -28,6 +28,7 @@ import time
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
+from ..iec.addresses import parse_address
 from ..iec.spelling import did_you_mean
 from ..ir import nodes as ir
 from ..ir import types as t
@@ -35,10 +36,11 @@ from .codegen import names
 from .codegen.context import ProbeTable
 from .codegen.faults import Fault, make_fault
 from .codegen.runtime import UNSET, Watchdog
+from .codegen.typeinfo import runtime_name
 from .compile import CompiledProgram, compile_program
 from .debug import Debugger, Halt
 from .paths import Location, LocationReader, Resolver, Roots, UnknownPath, coerce_for, leaves, plain
-from .process_image import ProcessImage
+from .process_image import AREA_ORDER, IoPoint, ProcessImage
 from .tasks import Schedule, Task, task_table
 
 
@@ -449,6 +451,25 @@ class Simulation:
 
     def _instance_path(self, obj: object) -> str | None:
         return self._instance_paths().get(id(obj))
+
+    # ------------------------------------------------------------------ the process image
+
+    def io_points(self) -> list[IoPoint]:
+        """Every address the program uses, inputs first (I, Q, M, S, then by byte and bit), with the variables
+        declared at it: globals by name, a program's or FB's by every instance path."""
+        instances = self.instances()
+        points: dict[tuple, IoPoint] = {}
+        owners = [("", self._context.globals)] + [(pou, layout) for pou, layout in self._context.layouts.items()]
+        for pou, layout in owners:
+            for slot in layout.located.values():  # type: ignore[union-attr]
+                address = parse_address(slot.address)  # type: ignore[arg-type]
+                bit = address.bit if address.bit is not None else -1
+                key = (AREA_ORDER.index(address.area), address.offset, bit, address.width, address.text)
+                point = points.setdefault(key, IoPoint(address.area, address.text, runtime_name(slot.type) or ""))
+                if slot.name.upper() != (slot.address or "").upper():  # a declared name
+                    paths = [slot.name] if not pou else [f"{path}.{slot.name}" for path in instances.get(pou, [])]
+                    point.names += paths
+        return [points[key] for key in sorted(points)]
 
     # ------------------------------------------------------------------ variables
 

@@ -12,7 +12,7 @@ from typing import Annotated
 from fastapi import APIRouter, Body, Depends, Request, Response, status
 
 from ..model import has_errors
-from ..model.api import ResetSimulation, ScanTimes, SimulationInfo
+from ..model.api import IoPoint, ResetSimulation, ScanTimes, SimulationInfo
 from ..simulation.build import build_project
 from ..simulation.registry import SimulationEntry, SimulationRegistry
 from ..simulation.runner import CommandError, SimRunner
@@ -126,4 +126,5 @@ def simulation_info(entry: SimulationEntry) -> SimulationInfo:
             clients=entry.clients,
             created=modified_at(entry.created),
             instances=sim.instances(),
+            io=[IoPoint(area=p.area, address=p.address, type=p.type, names=p.names) for p in sim.io_points()],  # type: ignore[arg-type]
         )

@@ -403,6 +403,13 @@ class ProjectChecker:
         except ValueError as error:
             report("ST-ADDRESS", str(error), name)
             return
+        if block.retain:
+            report(
+                "ST-ADDRESS",
+                f"RETAIN has no effect on a variable at {address.text}: the process image is cleared on a restart",
+                name,
+                severity="warning",
+            )
         if pou is not None and pou.kind == "FUNCTION":
             report("ST-DECL", "a function has no memory of its own: it cannot locate a variable AT an address", name)
         elif isinstance(ty, (t.Elementary, t.StringType)) and block.kind != "VAR_EXTERNAL":

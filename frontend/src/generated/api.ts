@@ -630,6 +630,10 @@ export interface SimulationInfo {
     [k: string]: string[];
   };
   /**
+   * The direct addresses the program uses (inputs, outputs, memory), in address order.
+   */
+  io?: IoPoint[];
+  /**
    * Times the scans fell behind the wall clock and skipped ahead.
    */
   overruns: number;
@@ -649,6 +653,30 @@ export interface SimulationInfo {
    * Virtual time of the last scan.
    */
   time_ms: number;
+}
+/**
+ * One direct address the program uses, for the I/O view.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "IoPoint".
+ */
+export interface IoPoint {
+  /**
+   * The address as written, e.g. '%IX0.1'; also its path for watch and write.
+   */
+  address: string;
+  /**
+   * I inputs, Q outputs, M memory, S the Mosaic system area.
+   */
+  area: "I" | "Q" | "M" | "S";
+  /**
+   * Paths of the variables declared AT it (e.g. 'MAIN.START'); empty when it is used without a name.
+   */
+  names?: string[];
+  /**
+   * Its elementary type, e.g. 'BOOL' or 'INT'.
+   */
+  type: string;
 }
 /**
  * Wall time of the scans run so far, in milliseconds (halted time excluded).

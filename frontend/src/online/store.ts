@@ -5,7 +5,7 @@
 import { useStore } from "zustand";
 import { createStore, type StoreApi } from "zustand/vanilla";
 import { ApiError } from "../api/client";
-import type { Diagnostic } from "../generated/api";
+import type { Diagnostic, IoPoint } from "../generated/api";
 import { monitorUrl, simulationApi, type SimulationApi } from "./api";
 import { applyMessage, emptyMonitor, keepSubscribed, logLocal, pathKey, powerKey, type MonitorState } from "./monitor";
 import {
@@ -42,6 +42,8 @@ export interface OnlineData {
   compileDiagnostics: Diagnostic[];
   /** The simulation's instance paths of every program and function block, by POU name in upper case. */
   instanceChoices: Record<string, string[]>;
+  /** The direct addresses the simulation's program uses (%I, %Q, %M), in address order. */
+  io: IoPoint[];
   monitor: MonitorState;
   lastScanMs: number | null;
   /** What each view wants to see, by view key. */
@@ -85,6 +87,7 @@ export const offline: Omit<OnlineData, "watch" | "instances"> = {
   error: null,
   compileDiagnostics: [],
   instanceChoices: {},
+  io: [],
   monitor: emptyMonitor,
   lastScanMs: null,
   views: {},
@@ -222,6 +225,7 @@ export function createOnlineStore(
             simulation: info.id,
             monitor: emptyMonitor,
             instanceChoices: info.instances ?? {},
+            io: info.io ?? [],
           });
           connect(info.id);
         } catch (err) {

@@ -1,4 +1,4 @@
-// The panels under the editor: Diagnostics, Watch list, Online log, Breakpoints and Trace, one shown at a time.
+// The panels under the editor: Diagnostics, Watch list, I/O, Online log, Breakpoints and Trace, one shown at a time.
 import { useDebug } from "../debug/store";
 import type { Diagnostic } from "../generated/api";
 import { draggedOperand } from "../ld/editor/dragOperand";
@@ -6,6 +6,7 @@ import { onlineStore, useOnline } from "../online/store";
 import { TracePanel } from "../trace/TracePanel";
 import { BreakpointsPanel } from "./BreakpointsPanel";
 import { DiagnosticsPanel } from "./DiagnosticsPanel";
+import { IoPanel } from "./IoPanel";
 import { LogPanel } from "./LogPanel";
 import { panelsStore, usePanels, type PanelId } from "./store";
 import { WatchPanel } from "./WatchPanel";
@@ -21,11 +22,13 @@ export function BottomPanels({ onReveal, pathOfOperand }: BottomPanelsProps) {
   const show = usePanels((s) => s.show);
   const problems = usePanels((s) => s.diagnostics?.length ?? 0);
   const watched = useOnline((s) => s.watch.length);
+  const addresses = useOnline((s) => s.io.length);
   const logged = useOnline((s) => s.monitor.log.length);
   const breakpoints = useDebug((s) => s.breakpoints.length);
   const tabs: { id: PanelId; label: string }[] = [
     { id: "diagnostics", label: `Diagnostics (${problems})` },
     { id: "watch", label: `Watch list (${watched})` },
+    { id: "io", label: `I/O (${addresses})` },
     { id: "log", label: `Online log (${logged})` },
     { id: "breakpoints", label: `Breakpoints (${breakpoints})` },
     { id: "trace", label: "Trace" },
@@ -33,6 +36,7 @@ export function BottomPanels({ onReveal, pathOfOperand }: BottomPanelsProps) {
   const body = {
     diagnostics: <DiagnosticsPanel onReveal={onReveal} />,
     watch: <WatchPanel />,
+    io: <IoPanel />,
     log: <LogPanel />,
     breakpoints: <BreakpointsPanel />,
     trace: <TracePanel />,

@@ -4,9 +4,27 @@ import { useState, type FormEvent } from "react";
 import { formatValue, parseValue, pathKey } from "../online/monitor";
 import { useOnline, onlineStore } from "../online/store";
 
-function WatchRow({ path }: { path: string }) {
+/** The live value of a path, with an F when it is forced (a table cell of the watch list and the I/O view). */
+export function LiveValue({ path }: { path: string }) {
   const value = useOnline((s) => s.monitor.values[pathKey(path)]);
   const type = useOnline((s) => s.monitor.types[pathKey(path)]);
+  const forced = useOnline((s) => s.monitor.forced.has(pathKey(path)));
+  const online = useOnline((s) => s.phase === "online");
+  return (
+    <td className={`watch-value${value === true ? " watch-true" : ""}`} aria-label={`Value of ${path}`}>
+      {online ? formatValue(value, type) : "—"}
+      {forced ? (
+        <span className="watch-forced-mark" title="forced">
+          {" "}
+          F
+        </span>
+      ) : null}
+    </td>
+  );
+}
+
+/** Write, force and release a path (and, given `onRemove`, a × that removes its row). */
+export function ValueCommands({ path, onRemove }: { path: string; onRemove?: () => void }) {
   const forced = useOnline((s) => s.monitor.forced.has(pathKey(path)));
   const online = useOnline((s) => s.phase === "online");
   const [text, setText] = useState("");
@@ -18,39 +36,40 @@ function WatchRow({ path }: { path: string }) {
     setText("");
   };
   return (
+    <form className="watch-edit" onSubmit={(e) => submit(e, "write")}>
+      <input
+        aria-label={`New value for ${path}`}
+        value={text}
+        onChange={(e) => setText(e.target.value)}
+        disabled={!online}
+        spellCheck={false}
+      />
+      <button type="submit" disabled={!online || !text.trim()}>
+        Write
+      </button>
+      <button type="button" disabled={!online || !text.trim()} onClick={(e) => submit(e, "force")}>
+        Force
+      </button>
+      <button type="button" disabled={!online || !forced} onClick={() => s.unforce(path)}>
+        Release
+      </button>
+      {onRemove ? (
+        <button type="button" aria-label={`Remove ${path}`} onClick={onRemove}>
+          ×
+        </button>
+      ) : null}
+    </form>
+  );
+}
+
+function WatchRow({ path }: { path: string }) {
+  const forced = useOnline((s) => s.monitor.forced.has(pathKey(path)));
+  return (
     <tr className={forced ? "watch-forced" : undefined} data-path={pathKey(path)}>
       <td className="watch-path">{path}</td>
-      <td className={`watch-value${value === true ? " watch-true" : ""}`} aria-label={`Value of ${path}`}>
-        {online ? formatValue(value, type) : "—"}
-        {forced ? (
-          <span className="watch-forced-mark" title="forced">
-            {" "}
-            F
-          </span>
-        ) : null}
-      </td>
+      <LiveValue path={path} />
       <td>
-        <form className="watch-edit" onSubmit={(e) => submit(e, "write")}>
-          <input
-            aria-label={`New value for ${path}`}
-            value={text}
-            onChange={(e) => setText(e.target.value)}
-            disabled={!online}
-            spellCheck={false}
-          />
-          <button type="submit" disabled={!online || !text.trim()}>
-            Write
-          </button>
-          <button type="button" disabled={!online || !text.trim()} onClick={(e) => submit(e, "force")}>
-            Force
-          </button>
-          <button type="button" disabled={!online || !forced} onClick={() => s.unforce(path)}>
-            Release
-          </button>
-          <button type="button" aria-label={`Remove ${path}`} onClick={() => s.removeWatch(path)}>
-            ×
-          </button>
-        </form>
+        <ValueCommands path={path} onRemove={() => onlineStore.getState().removeWatch(path)} />
       </td>
     </tr>
   );

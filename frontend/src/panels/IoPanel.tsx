@@ -1,0 +1,80 @@
+// The I/O view: every direct address the running program uses (%I inputs, %Q outputs, %M memory),
+// with the variables declared at it and its live value; each row writes, forces and releases the
+// address itself, so an input can be driven whether or not a variable names it.
+import { useEffect, useMemo } from "react";
+import type { IoPoint } from "../generated/api";
+import { pathKey } from "../online/monitor";
+import { onlineStore, useOnline } from "../online/store";
+import { LiveValue, ValueCommands } from "./WatchPanel";
+
+export const AREA_NAMES: Record<IoPoint["area"], string> = {
+  I: "Input",
+  Q: "Output",
+  M: "Memory",
+  S: "System",
+};
+
+/** The subscription key of the I/O view. */
+export const IO_VIEW = "io";
+
+function IoRow({ point }: { point: IoPoint }) {
+  const forced = useOnline((s) => s.monitor.forced.has(pathKey(point.address)));
+  const names = point.names ?? [];
+  return (
+    <tr className={forced ? "watch-forced" : undefined} data-path={pathKey(point.address)}>
+      <td>{AREA_NAMES[point.area]}</td>
+      <td className="watch-path">{point.address}</td>
+      <td className="watch-path">{names.length ? names.join(", ") : <span className="io-unnamed">—</span>}</td>
+      <td>{point.type}</td>
+      <LiveValue path={point.address} />
+      <td>
+        <ValueCommands path={point.address} />
+      </td>
+      <td>
+        <button
+          type="button"
+          aria-label={`Watch ${point.address}`}
+          onClick={() => onlineStore.getState().addWatch(point.address)}
+        >
+          Watch
+        </button>
+      </td>
+    </tr>
+  );
+}
+
+export function IoPanel() {
+  const io = useOnline((s) => s.io);
+  const live = useOnline((s) => s.phase !== "offline");
+  const paths = useMemo(() => io.map((p) => p.address), [io]);
+  useEffect(() => {
+    onlineStore.getState().subscribe(IO_VIEW, live && paths.length ? { paths, elements: [] } : null);
+  }, [live, paths]);
+  useEffect(() => () => onlineStore.getState().subscribe(IO_VIEW, null), []);
+  if (!live) {
+    return <p className="panel-empty">Go online to see the program's inputs, outputs and memory by address.</p>;
+  }
+  if (!io.length) {
+    return <p className="panel-empty">The program uses no direct addresses (%I, %Q, %M).</p>;
+  }
+  return (
+    <table className="watch-table" aria-label="Process image">
+      <thead>
+        <tr>
+          <th>Area</th>
+          <th>Address</th>
+          <th>Declared as</th>
+          <th>Type</th>
+          <th>Value</th>
+          <th>Write / force</th>
+          <th />
+        </tr>
+      </thead>
+      <tbody>
+        {io.map((p) => (
+          <IoRow key={p.address} point={p} />
+        ))}
+      </tbody>
+    </table>
+  );
+}
