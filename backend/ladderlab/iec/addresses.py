@@ -118,3 +118,25 @@ def same_location(text: str, address: Address) -> bool:
         address.bit,
         address.width,
     )
+
+
+#: Partial access (IEC 61131-3 ed. 3, 6.5.6): ``w.%X3`` a bit, ``.%B1`` a byte, ``.%W0`` a word, ``.%D1`` a double
+#: word, ``.%L0`` a long word of an ANY_BIT variable, numbered from the least significant; the type of each part.
+PARTS = {"X": (1, "BOOL"), "B": (8, "BYTE"), "W": (16, "WORD"), "D": (32, "DWORD"), "L": (64, "LWORD")}
+_PART = re.compile(r"%([XBWDL])(\d+)\Z", re.IGNORECASE)
+
+
+def partial_access(member: str) -> tuple[int, int] | None:
+    """``3`` or ``%X3`` -> (1, 3): bit 3; ``%B1`` -> (8, 1): bits 8..15; None for a name (a field or pin)."""
+    if member.isdigit():
+        return 1, int(member)
+    match = _PART.match(member)
+    if match is None:
+        return None
+    return PARTS[match.group(1).upper()][0], int(match.group(2))
+
+
+def part_type(width: int) -> str:
+    """The type of a part ``width`` bits wide: BOOL, BYTE, WORD, DWORD or LWORD."""
+    return next(name for bits, name in PARTS.values() if bits == width)
+

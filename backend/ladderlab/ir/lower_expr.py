@@ -23,6 +23,7 @@ Decisions (docs/ir.md, "Lowering of ST and whole projects"):
 from __future__ import annotations
 
 from ..iec import stdlib
+from ..iec.addresses import part_type, partial_access
 from ..iec.elementary import DEFAULT_STRING_LENGTH, ELEMENTARY, GENERIC
 from ..iec.stdlib import OPERATOR_OVERLOADS
 from ..st import ast
@@ -85,7 +86,7 @@ def _lower(node: ast.Expr, ctx: PouContext, expected: IrType | None) -> Expr:
         return _literal(node, ctx)
     if isinstance(node, ast.Name) and isinstance(node.ref, EnumValue):
         return Const(node.ref.value, ctx.ir_type(ty))
-    if isinstance(node, ast.Member) and node.name.isdigit():
+    if is_part(node):
         return _bit(node, ctx)
     if isinstance(node, (ast.Name, ast.DirectAddr, ast.Member, ast.Index, ast.Deref)):
         return lower_access(node, ctx)
@@ -189,7 +190,7 @@ def lower_access(node: ast.Expr, ctx: PouContext) -> Var:
         if isinstance(node, ast.DirectAddr):  # used without a declaration: its size's default type (ST-13)
             return ctx.direct(node.address, ctx.ir_type(node.ty))
         raise LoweringError(None)
-    if isinstance(node, ast.Member) and not node.name.isdigit():
+    if isinstance(node, ast.Member) and not is_part(node):
         base = lower_access(node.base, ctx)
         return Var(base.scope, base.name, _member_type(node, base.type, ctx), (*base.path, Member(node.name.upper())))
     if isinstance(node, ast.Index):
@@ -197,7 +198,9 @@ def lower_access(node: ast.Expr, ctx: PouContext) -> Var:
     if isinstance(node, ast.Deref):
         raise LoweringError(POINTERS_UNSUPPORTED, node)
     if isinstance(node, ast.Member):
-        raise LoweringError("a bit of a variable (x.3) can be read or assigned, but not passed by reference", node)
+        raise LoweringError(
+            "a bit or part of a variable (x.3, x.%B1) can be read or assigned, but not passed by reference", node
+        )
     raise LoweringError(
         "only a variable, array element or field can be used here: assign this value to a variable first", node
     )
@@ -230,26 +233,70 @@ def _index(node: ast.Index, ctx: PouContext) -> Var:
 
 
 _BITS_OF_WIDTH = {8: "BYTE", 16: "WORD", 32: "DWORD", 64: "LWORD"}
+_SHIFT_COUNT = Elementary("INT")
 
 
-def bit_access(node: ast.Member, ctx: PouContext) -> tuple[Var, Expr, Const]:
-    """``x.3`` -> (x, x as a bit string, the bit string with bit 3 set); integers go through ``INT_TO_WORD``..."""
+def is_part(node: ast.Expr) -> bool:
+    """Bit access ``x.3`` / ``x.%X3`` or partial access ``x.%B1`` (a member that is no field or pin)."""
+    return isinstance(node, ast.Member) and partial_access(node.name) is not None
+
+
+def bit_access(node: ast.Member, ctx: PouContext) -> tuple[Var, Expr, int, int]:
+    """``x.%B1`` -> (x, x as a bit string, the part's width in bits, its shift); integers go through their
+    same-width bit string (``INT_TO_WORD``), the two's complement pattern."""
     var = lower_access(node.base, ctx)
     ty = value_type(var.type)
-    if not isinstance(ty, Elementary) or not ty.info.bits or int(node.name) >= ty.info.bits:
+    width, index = partial_access(node.name) or (0, 0)
+    if not isinstance(ty, Elementary) or not ty.info.bits or width == 0 or (index + 1) * width > ty.info.bits:
         raise LoweringError(None)
     bits: Expr = var
     if ty.info.category != "bits":  # AND/OR work on ANY_BIT: same-width bit string, two's complement pattern
         bits_type = Elementary(_BITS_OF_WIDTH[ty.info.bits])
         bits = Call(f"{ty.name}_TO_{bits_type.name}", (var,), (ty,), bits_type)
-    mask_type = bits.type  # type: ignore[union-attr]
-    return var, bits, Const(engine_value(1 << int(node.name), mask_type), mask_type)
+    return var, bits, width, index * width
+
+
+def _mask(bits: Expr, width: int, shift: int) -> Const:
+    ty = bits.type  # type: ignore[union-attr]
+    return Const(engine_value(((1 << width) - 1) << shift, ty), ty)
+
+
+def _shifted(name: str, value: Expr, shift: int) -> Expr:
+    if not shift:
+        return value
+    ty = value.type  # type: ignore[union-attr]
+    return Call(name, (value, Const(shift, _SHIFT_COUNT)), (ty, _SHIFT_COUNT), ty)
+
+
+def _resized(value: Expr, target: Elementary) -> Expr:
+    source = value.type  # type: ignore[union-attr]
+    return value if source == target else Call(f"{source.name}_TO_{target.name}", (value,), (source,), target)
 
 
 def _bit(node: ast.Member, ctx: PouContext) -> Expr:
-    """Bit access ``x.3`` reads as ``(x AND 2#1000) <> 0``."""
-    _, bits, mask = bit_access(node, ctx)
-    return Binary("NE", Binary("AND", bits, mask, mask.type), Const(0, mask.type), BOOL)
+    """Bit access ``x.3`` reads as ``(x AND 2#1000) <> 0``; a part ``x.%B1`` as ``DWORD_TO_BYTE(SHR(x, 8))``."""
+    _, bits, width, shift = bit_access(node, ctx)
+    mask = _mask(bits, width, shift)
+    if width == 1:
+        return Binary("NE", Binary("AND", bits, mask, mask.type), Const(0, mask.type), BOOL)
+    return _resized(_shifted("SHR", bits, shift), Elementary(part_type(width)))
+
+
+def assign_part(target: ast.Member, value: Expr, ctx: PouContext) -> tuple[Var, Expr]:
+    """``x.3 := b`` stores ``SEL(b, x AND NOT 2#1000, x OR 2#1000)``; ``x.%B1 := v`` stores
+    ``(x AND NOT 16#FF00) OR SHL(BYTE_TO_DWORD(v), 8)`` (integers through their bit string)."""
+    var, bits, width, shift = bit_access(target, ctx)
+    mask = _mask(bits, width, shift)
+    ty = mask.type
+    cleared = Binary("AND", bits, Const(engine_value(~mask.value, ty), ty), ty)  # type: ignore[operator]
+    if width == 1:
+        updated: Expr = Call("SEL", (value, cleared, Binary("OR", bits, mask, ty)), (BOOL, ty, ty), ty)
+    else:
+        updated = Binary("OR", cleared, _shifted("SHL", _resized(value, ty), shift), ty)  # type: ignore[arg-type]
+    target_type = value_type(var.type)
+    if target_type != ty:
+        updated = Call(f"{ty.name}_TO_{target_type.name}", (updated,), (ty,), target_type)  # type: ignore[union-attr]
+    return var, updated
 
 
 # ---------------------------------------------------------------- operators

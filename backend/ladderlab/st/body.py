@@ -11,7 +11,7 @@ from collections.abc import Callable
 from typing import Any
 
 from ..iec import stdlib
-from ..iec.addresses import parse_address, same_location
+from ..iec.addresses import parse_address, part_type, partial_access, same_location
 from ..iec.spelling import did_you_mean
 from . import ast
 from . import types as t
@@ -21,6 +21,8 @@ from .context_typing import default_type, settle, untyped_leaves, untyped_result
 from .rules import EnumValue, assignable_or_report, constant_value, root_name
 from .symbols import CheckResult, PouInfo, Symbol
 from .types import ERROR, Type
+
+_PART_NAMES = {1: "bits", 8: "bytes", 16: "words", 32: "double words", 64: "long words"}
 
 Report = Callable[..., None]  # report(code, message, node, severity="error")
 
@@ -183,10 +185,27 @@ class BodyChecker:
             return ERROR
         if isinstance(base, t.FbType):
             return self._fb_member(node, base)
-        if node.name.isdigit() and t.category(base) in ("bits", "int"):
-            return t.BOOL  # bit access x.3
+        part = partial_access(node.name)
+        if part is not None and t.category(base) in ("bits", "int"):
+            return self._part(node, base, *part)
         self.report("ST-UNKNOWN-MEMBER", f"'{node.name}' cannot be selected from a {base}", node)
         return ERROR
+
+    def _part(self, node: ast.Member, base: Type, width: int, index: int) -> Type:
+        """Bit access ``x.3`` / ``x.%X3`` and partial access ``x.%B1``, ``.%W0``, ``.%D1``, ``.%L0`` (IEC 61131-3
+        ed. 3, 6.5.6; on integers too, as CODESYS allows), numbered from the least significant part."""
+        bits = base.info.bits  # type: ignore[union-attr]
+        if index >= bits // width:
+            what = _PART_NAMES[width]
+            self.report(
+                "ST-UNKNOWN-MEMBER",
+                f"'{node.name}' is outside a {base}: it has {what} 0..{bits // width - 1}"
+                if bits >= width
+                else f"a {base} has no {what}: it is {bits} bits wide",
+                node,
+            )
+            return ERROR
+        return t.elementary(part_type(width)) or ERROR
 
     def _fb_member(self, node: ast.Member, base: t.FbType) -> Type:
         upper = node.name.upper()

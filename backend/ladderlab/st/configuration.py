@@ -18,6 +18,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
+from ..iec.addresses import partial_access
 from ..iec.spelling import did_you_mean
 from ..model.diagnostics import Diagnostic
 from ..model.project import ProgramInstance, Project, Task
@@ -331,7 +332,7 @@ class _PathChecker(BodyChecker):
             node = node.base
         if isinstance(node, ast.Name) and node.name.upper() in self.resources and chain:
             first = chain[-1]
-            if isinstance(first, ast.Member) and not first.name.isdigit():
+            if isinstance(first, ast.Member) and partial_access(first.name) is None:
                 replacement = ast.Name(first.name, first.span)
                 if len(chain) == 1:
                     return replacement
