@@ -139,4 +139,3 @@ def partial_access(member: str) -> tuple[int, int] | None:
 def part_type(width: int) -> str:
     """The type of a part ``width`` bits wide: BOOL, BYTE, WORD, DWORD or LWORD."""
     return next(name for bits, name in PARTS.values() if bits == width)
-
