@@ -26,6 +26,7 @@ lint: $(VENV)/.installed $(FRONTEND_DEPS)
 	$(VENV)/bin/ruff check .
 	$(VENV)/bin/ruff format --check .
 	$(VENV)/bin/lint-imports
+	$(VENV)/bin/mypy
 	cd frontend && npm run --silent format:check
 
 test-slow: $(VENV)/.installed chromium

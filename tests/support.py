@@ -22,3 +22,18 @@ def external(*parts: str) -> pathlib.Path:
 
 #: External-corpus pass rates (name -> (passed, total)), printed at the end of the run by tests/conftest.py.
 PASS_RATES: dict[str, tuple[int, int]] = {}
+
+#: Issue 18's runaway scan: four nested FOR 1 TO 255 (4e9 iterations) once ``Go`` is TRUE (a PROGRAM's declarations
+#: and body; the innermost loop, whose back-edge the watchdog sees first, is on line 5 of the body).
+NESTED_LOOPS_DECLARATIONS = "VAR\n    Go : BOOL;\n    a, b, c, d : INT;\n    n : DINT;\nEND_VAR"
+NESTED_LOOPS = """IF Go THEN
+    FOR a := 1 TO 255 DO
+        FOR b := 1 TO 255 DO
+            FOR c := 1 TO 255 DO
+                FOR d := 1 TO 255 DO
+                    n := n + 1;
+                END_FOR;
+            END_FOR;
+        END_FOR;
+    END_FOR;
+END_IF;"""

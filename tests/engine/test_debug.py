@@ -324,7 +324,7 @@ def test_halted_time_does_not_count_against_the_watchdog_and_faults_work_in_debu
         ],
     )
     clock = _Clock()
-    sim = Simulation(prog(main), variant="debug", watchdog_s=0.5, wall_clock=clock)
+    sim = Simulation(prog(main), variant="debug", watchdog_s=0.5, watchdog_clock=clock)
     sim.set_breakpoint("MAIN", line=2)
     sim.cycle()
     clock.now += 3600.0  # an hour at the breakpoint

@@ -171,3 +171,15 @@ def test_pacer_run_sleeps_between_scans():
 
     Pacer(sim, clock=clock).run(0.05, sleep=sleep)
     assert sim.time_ms == 50 and slept == [0.01, 0.01, 0.005, 0.005, 0.01, 0.01]
+
+
+def test_an_interrupted_pacer_returns_after_a_scan_and_keeps_its_schedule():
+    """A simulation process runs commands between scans: poll() yields after the scan that saw one waiting,
+    and the next poll runs the scans still due (no re-anchoring: virtual time stays in step)."""
+    sim, clock = _two_tasks(), _FakeClock()
+    waiting = [True]
+    pacer = Pacer(sim, clock=clock, interrupted=lambda: waiting[0])
+    clock.now += 0.026  # 10, 20, 25 are due
+    assert pacer.poll() == 0.0 and sim.scan_count == 1 and sim.time_ms == 10
+    waiting[0] = False
+    assert pacer.poll() == pytest.approx(0.004) and sim.time_ms == 25 and sim.scan_count == 3

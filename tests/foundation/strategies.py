@@ -178,6 +178,7 @@ def projects(draw):
                     interval=st.sampled_from(["T#10ms", "T#1s"]),
                     priority=st.integers(0, 10),
                     programs=st.lists(identifiers, max_size=2),
+                    watchdog_ms=st.none() | st.integers(1, 60_000),
                 ),
                 max_size=2,
             )

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
@@ -17,8 +18,12 @@ def workspace(tmp_path: Path) -> Workspace:
 
 
 @pytest.fixture
-def client(workspace: Workspace) -> TestClient:
-    return TestClient(create_app(workspace))
+def client(workspace: Workspace) -> Iterator[TestClient]:
+    app = create_app(workspace)
+    yield TestClient(app)
+    registry = getattr(app.state, "simulations", None)
+    if registry is not None:  # end the build and simulation processes a test started
+        registry.close()
 
 
 @pytest.fixture

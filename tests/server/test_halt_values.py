@@ -26,13 +26,14 @@ def test_the_values_at_a_breakpoint_reach_the_client(client: TestClient, workspa
             subscribe(ws, ["Main.Count"])
             # Several scans run unpublished first, so the halt's values differ from the last frame.
             ws.send_json({"type": "run"})
-            sim = entry(registry, sim_id).runner.sim
+            sim = entry(registry, sim_id).handle
             recv_until(ws, of_type("status", state="running"))
-            wait_for(lambda: sim.scan_count >= 3)
+            wait_for(lambda: sim.inspect()["scan_count"] >= 3)  # (no periodic frames: ask)
             ws.send_json({"type": "breakpoint_set", "pou": "Main", "line": 2})
             recv_until(ws, of_type("status", state="halted"))
-            halted_count = sim.read("Main.Count")
-            assert halted_count == sim.scan_count + 1  # line 1 of the halted scan has run
+            state = sim.inspect(paths=["Main.Count"])
+            halted_count = state["values"]["Main.Count"]
+            assert halted_count == state["scan_count"] + 1  # line 1 of the halted scan has run
             recv_until(ws, lambda m: m["type"] == "values" and m["changed"].get("MAIN.COUNT") == halted_count)
     finally:
         registry.close()

@@ -22,6 +22,7 @@ from .test_simulations_support import (
     counter_project,
     entry,
     install,
+    log_of,
     motor_sim,
     of_type,
     recv,
@@ -182,31 +183,31 @@ def test_write_is_applied_once_before_the_next_scan(client: TestClient, counter:
 def test_bad_requests_get_an_error_naming_the_problem_and_change_nothing(
     client: TestClient, counter: str, registry: SimulationRegistry, message: dict, code: str, text: str
 ) -> None:
-    sim = entry(registry, counter).runner.sim
-    before = sim.snapshot()
+    sim = entry(registry, counter).handle
+    before = sim.inspect()["snapshot"]
     with client.websocket_connect(ws_url(counter)) as ws:
         recv(ws)
         ws.send_json(message)
         error, _ = recv_until(ws, of_type("error"))
         assert (error["code"], error["message"]) == (code, text)
         ws.send_json({"type": "single_cycle"})  # the connection still works
-        wait_for(lambda: sim.scan_count == 1)
-    assert sim.snapshot() == {**before, "MAIN.COUNT": 1, "MAIN.FLAG": True, "MAIN.RESULT": 100}
+        wait_for(lambda: sim.info["scan_count"] == 1)
+    assert sim.inspect()["snapshot"] == {**before, "MAIN.COUNT": 1, "MAIN.FLAG": True, "MAIN.RESULT": 100}
 
 
 def test_force_holds_a_value_the_program_writes_until_released(client: TestClient, counter: str) -> None:
     with client.websocket_connect(ws_url(counter)) as ws:
         subscribe(ws, ["Main.Flag"])
         ws.send_json({"type": "force", "path": "main.flag", "value": "TRUE"})
-        log, _ = recv_until(ws, of_type("log"))
+        log, _ = recv_until(ws, log_of("force"))
         assert (log["level"], log["message"]) == ("info", "forced MAIN.FLAG := TRUE")
         for scan in (1, 2, 3):
             ws.send_json({"type": "single_cycle"})
             values, _ = recv_until(ws, of_type("values", scan=scan))
             assert values["forced"] == ["MAIN.FLAG"]
-        assert entry(counter_registry(client), counter).runner.sim.read("Main.Flag") is True
+        assert entry(counter_registry(client), counter).handle.read("Main.Flag") is True
         ws.send_json({"type": "unforce", "path": "Main.Flag"})
-        log, _ = recv_until(ws, of_type("log"))
+        log, _ = recv_until(ws, log_of("release"))
         assert log["message"] == "released the force on MAIN.FLAG"
         ws.send_json({"type": "single_cycle"})
         values, _ = recv_until(ws, of_type("values", scan=4))
@@ -233,11 +234,11 @@ def test_a_line_breakpoint_halts_the_running_scan_there(
             "line": 2,
             "column": 1,
         }
-        sim = entry(registry, counter).runner.sim
-        scan = sim.scan_count
-        count = sim.read("Main.Count")
+        sim = entry(registry, counter).handle
+        state = sim.inspect(paths=["Main.Count"])
+        scan, count = state["scan_count"], state["values"]["Main.Count"]
         time.sleep(0.05)
-        assert sim.scan_count == scan  # the scan thread waits at the breakpoint
+        assert sim.inspect()["scan_count"] == scan  # the scan thread waits at the breakpoint
         # statement 1 of the halted scan has run: Count is one ahead of the last complete scan
         values, _ = recv_until(ws, lambda m: m["type"] == "values" and m["changed"].get("MAIN.COUNT") == count)
         assert count == scan + 1
@@ -263,11 +264,11 @@ def test_step_from_a_stopped_simulation_and_single_cycle_finish_the_scan(
         assert status["at"]["line"] == 1
         ws.send_json({"type": "single_cycle"})  # the rest of this scan
         recv_until(ws, of_type("status", state="stopped"))
-        sim = entry(registry, counter).runner.sim
-        assert (sim.scan_count, sim.read("Main.Count")) == (1, 1)
+        sim = entry(registry, counter).handle
+        assert (sim.inspect()["scan_count"], sim.read("Main.Count")) == (1, 1)
         ws.send_json({"type": "step", "granularity": "cycle"})  # no breakpoint: one whole scan
-        wait_for(lambda: sim.scan_count == 2)
-        assert sim.halted is None
+        wait_for(lambda: sim.info["scan_count"] == 2)
+        assert sim.inspect()["halted"] is None
 
 
 def test_element_breakpoints_and_power_flow_in_ladder(client: TestClient, motor_sim: str) -> None:
@@ -358,7 +359,7 @@ def test_a_runtime_error_is_logged_with_its_location_and_the_server_keeps_servin
         ws.send_json({"type": "run"})
         recv_until(ws, of_type("status", state="running"))
         ws.send_json({"type": "write", "path": "Main.Divisor", "value": 0})
-        log, _ = recv_until(ws, of_type("log"))
+        log, _ = recv_until(ws, log_of("fault"))
         assert log["level"] == "error"
         assert log["message"].startswith("division by zero: 100 / 0 at POU MAIN, line 3 column 1 (instance MAIN)")
         assert log["at"] == {
@@ -394,7 +395,7 @@ def test_a_watchdog_trip_is_logged(client: TestClient, workspace: Workspace) -> 
             ws.send_json({"type": "run"})
             recv_until(ws, of_type("status", state="running"))
             ws.send_json({"type": "write", "path": "Main.Go", "value": True})
-            log, _ = recv_until(ws, of_type("log"))
+            log, _ = recv_until(ws, log_of("watchdog"))
             assert log["level"] == "error" and "watchdog" in log["message"]
             assert log["at"]["pou"] == "MAIN" and log["at"]["line"] in (2, 3)
             recv_until(ws, of_type("status", state="faulted"))
@@ -549,13 +550,13 @@ def test_an_oversized_message_gets_an_error(client: TestClient, workspace: Works
 
 
 def test_rest_start_continues_a_halted_scan(client: TestClient, counter: str, registry: SimulationRegistry) -> None:
-    runner = entry(registry, counter).runner
-    runner.set_breakpoint("Main", line=3)
+    sim = entry(registry, counter).handle
+    sim.call("breakpoint_set", pou="Main", line=3)
     assert client.post(f"/api/simulations/{counter}/cycle").json()["state"] == "halted"
-    runner.clear_breakpoint()
+    sim.call("breakpoint_clear")
     assert client.post(f"/api/simulations/{counter}/start").json()["state"] == "running"
-    wait_for(lambda: runner.sim.scan_count >= 3)
-    assert runner.sim.read("Main.Result") == 100
+    wait_for(lambda: sim.info["scan_count"] >= 3)
+    assert sim.read("Main.Result") == 100
 
 
 class _RecordingSocket:
@@ -609,20 +610,20 @@ def test_a_halt_publishes_the_values_of_the_halt_point_at_once(client: TestClien
             ws.send_json({"type": "run"})
             status, _ = recv_until(ws, of_type("status", state="halted"))
             assert status["at"]["line"] == 3
-            sim = entry(registry, sim_id).runner.sim
+            sim = entry(registry, sim_id).handle
+            scan = sim.inspect()["scan_count"]
             # lines 1 and 2 of the halted scan have run: Count and Flag already hold its values
             values, _ = recv_until(ws, lambda m: m["type"] == "values" and "MAIN.FLAG" in m["changed"])
-            assert values["changed"] == {"MAIN.COUNT": sim.scan_count + 1, "MAIN.FLAG": (sim.scan_count + 1) % 2 == 1}
+            assert values["changed"] == {"MAIN.COUNT": scan + 1, "MAIN.FLAG": (scan + 1) % 2 == 1}
             # Stop while halted: the scan stays halted (and says so); Continue ends it and no scan follows
             ws.send_json({"type": "stop"})
-            log, _ = recv_until(ws, of_type("log"))
+            log, _ = recv_until(ws, log_of("state"))
             assert log["message"] == (
                 "stopped: the scan stays halted; Continue or a step finishes it, then no further scan runs"
             )
-            scans = sim.scan_count
             ws.send_json({"type": "continue"})
             recv_until(ws, of_type("status", state="stopped"))
             time.sleep(0.05)
-            assert sim.scan_count == scans + 1
+            assert sim.inspect()["scan_count"] == scan + 1
     finally:
         registry.close()

@@ -18,7 +18,7 @@ from starlette.testclient import WebSocketTestSession
 
 from ladderlab.server.app import create_app
 from ladderlab.server.monitor import CLIENT_MESSAGE
-from ladderlab.simulation.runner import SimRunner
+from ladderlab.simulation.remote import SimulationHandle
 from ladderlab.storage import Workspace
 
 from .test_simulations_support import counter_project, install, recv
@@ -85,7 +85,7 @@ def is_valid(data: Any) -> bool:
 
 
 @pytest.fixture(scope="module")
-def session() -> Iterator[tuple[TestClient, WebSocketTestSession, SimRunner]]:
+def session() -> Iterator[tuple[TestClient, WebSocketTestSession, SimulationHandle]]:
     with tempfile.TemporaryDirectory() as root:
         workspace = Workspace(Path(root))
         workspace.create(counter_project())
@@ -93,34 +93,27 @@ def session() -> Iterator[tuple[TestClient, WebSocketTestSession, SimRunner]]:
         registry = install(client)
         sim_id = client.post("/api/projects/counter/simulations").json()["id"]
         client.post(f"/api/simulations/{sim_id}/cycle")
-        runner = registry.get(sim_id).runner
+        handle = registry.get(sim_id).handle
         with client.websocket_connect(f"/api/simulations/{sim_id}/ws") as ws:
             assert recv(ws)["type"] == "status"
-            yield client, ws, runner
+            assert recv(ws)["message"] == "single cycle"  # the log so far
+            yield client, ws, handle
         registry.close()
 
 
-def state_of(runner: SimRunner) -> tuple:
-    sim = runner.sim
-    return (
-        runner.state,
-        sim.scan_count,
-        sim.time_ms,
-        sim.snapshot(),
-        sim.forced,
-        frozenset(sim.debugger.breakpoints if sim.debugger else ()),
-        sim.halted,
-        sim.variant,
-    )
+def state_of(handle: SimulationHandle) -> tuple:
+    state = handle.inspect()
+    keys = ("state", "scan_count", "time_ms", "snapshot", "forced", "breakpoints", "halted", "variant")
+    return tuple(state[key] for key in keys)
 
 
 def assert_refused_without_effect(session: tuple, send: Any) -> dict[str, Any]:
-    _, ws, runner = session
-    before = state_of(runner)
+    _, ws, handle = session
+    before = state_of(handle)
     send(ws)
     reply = recv(ws)
     assert reply["type"] == "error" and reply["message"], reply
-    assert state_of(runner) == before
+    assert state_of(handle) == before
     return reply
 
 
@@ -153,7 +146,7 @@ def test_binary_frames_get_an_error(session: tuple, blob: bytes) -> None:
 
 
 def test_the_connection_and_the_server_still_work_afterwards(session: tuple) -> None:
-    client, ws, runner = session
+    client, ws, handle = session
     ws.send_json({"type": "subscribe", "paths": ["Main.Count"], "interval_ms": 20})
-    assert recv(ws)["changed"] == {"MAIN.COUNT": runner.sim.read("Main.Count")}
+    assert recv(ws)["changed"] == {"MAIN.COUNT": handle.read("Main.Count")}
     assert client.get("/api/health").status_code == 200

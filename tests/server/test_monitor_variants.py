@@ -11,6 +11,7 @@ from fastapi.testclient import TestClient
 
 from ladderlab.simulation.build import build_project
 from ladderlab.simulation.registry import SimulationRegistry
+from ladderlab.simulation.remote import SimulationHandle
 from ladderlab.storage import Workspace
 
 from .test_simulations_support import entry, motor_sim, of_type, recv, recv_until, registry, subscribe, wait_for
@@ -19,13 +20,23 @@ __all__ = ["motor_sim", "registry"]  # fixtures used below
 
 
 def _state(sim) -> tuple:
-    return sim.scan_count, sim.time_ms, sim.snapshot(), sim.probes("Main")
+    """Scans, time, every variable and the LD POU's probes: of the reference simulation here, or of the
+    server's (through ``inspect``)."""
+    if isinstance(sim, SimulationHandle):
+        state = sim.inspect(probes=["Main"])
+        return state["scan_count"], state["time_ms"], state["snapshot"], state["probes"]["Main"]
+    view = sim.probes("Main")
+    return sim.scan_count, sim.time_ms, sim.snapshot(), {"values": view.values, "executed": sorted(view.executed)}
+
+
+def _variant(sim: SimulationHandle) -> str:
+    return sim.inspect()["variant"]
 
 
 def test_a_breakpoint_switches_to_debug_code_and_clearing_it_back_without_losing_state(
     client: TestClient, motor_sim: str, registry: SimulationRegistry, workspace: Workspace
 ) -> None:
-    runner = entry(registry, motor_sim).runner
+    runner = entry(registry, motor_sim).handle
     reference = build_project(workspace.load("motor").project, "monitor").simulation()
     reference.write("Start", True)
     with client.websocket_connect(f"/api/simulations/{motor_sim}/ws") as ws:
@@ -36,14 +47,12 @@ def test_a_breakpoint_switches_to_debug_code_and_clearing_it_back_without_losing
             ws.send_json({"type": "single_cycle"})
             recv_until(ws, of_type("values", scan=scan))
         reference.cycle(3)
-        assert runner.sim.variant == "monitor"
-        with runner.lock:
-            assert _state(runner.sim) == _state(reference)
+        assert _variant(runner) == "monitor"
+        assert _state(runner) == _state(reference)
 
         ws.send_json({"type": "breakpoint_set", "pou": "Main", "element": "motor"})
-        wait_for(lambda: runner.sim.variant == "debug")
-        with runner.lock:
-            assert _state(runner.sim) == _state(reference)  # the switch itself changes nothing
+        wait_for(lambda: _variant(runner) == "debug")
+        assert _state(runner) == _state(reference)  # the switch itself changes nothing
         ws.send_json({"type": "single_cycle"})
         status, _ = recv_until(ws, of_type("status", state="halted"))
         assert status["at"]["element"] == "motor"
@@ -51,22 +60,20 @@ def test_a_breakpoint_switches_to_debug_code_and_clearing_it_back_without_losing
         recv_until(ws, of_type("status", state="stopped"))
         reference.cycle(1)
         ws.send_json({"type": "breakpoint_clear"})
-        wait_for(lambda: runner.sim.variant == "monitor")
-        with runner.lock:
-            assert _state(runner.sim) == _state(reference)
+        wait_for(lambda: _variant(runner) == "monitor")
+        assert _state(runner) == _state(reference)
 
         ws.send_json({"type": "step", "granularity": "network"})  # a step debugs until its scan ends
         status, _ = recv_until(ws, of_type("status", state="halted"))
-        assert runner.sim.variant == "debug"
+        assert _variant(runner) == "debug"
         ws.send_json({"type": "step", "granularity": "cycle"})
         recv_until(ws, of_type("status", state="stopped"))
-        wait_for(lambda: runner.sim.variant == "monitor")
+        wait_for(lambda: _variant(runner) == "monitor")
         ws.send_json({"type": "write", "path": "Start", "value": False})
         for _ in range(2):
             ws.send_json({"type": "single_cycle"})
         reference.cycle(1)
         reference.write("Start", False)
         reference.cycle(2)
-        wait_for(lambda: runner.sim.scan_count == reference.scan_count)
-        with runner.lock:
-            assert _state(runner.sim) == _state(reference)
+        wait_for(lambda: runner.info["scan_count"] == reference.scan_count)
+        assert _state(runner) == _state(reference)

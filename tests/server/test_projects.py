@@ -297,10 +297,10 @@ def test_io_error_is_a_json_500_and_loses_nothing(
 
 
 def test_unexpected_error_is_a_json_500(workspace: Workspace, monkeypatch: pytest.MonkeyPatch) -> None:
-    def broken(project):
+    def broken(app, project):
         raise RuntimeError("checker exploded")
 
-    monkeypatch.setattr("ladderlab.server.projects.check_project", broken)
+    monkeypatch.setattr("ladderlab.server.projects.check_report", broken)
     client = TestClient(create_app(workspace), raise_server_exceptions=False)
     client.post("/api/projects", json={"name": "p"})
     response = client.post("/api/projects/p/check")

@@ -39,7 +39,9 @@ COUNTER_BODY = """Count := Count + 1;
 Flag := NOT Flag;
 Result := 100 / Divisor;"""
 
-FAST = SimulationSettings(idle_timeout_s=60.0, reap_every_s=0.05, publish_s=0.01)
+#: Shorter timings for tests; stop may wait for the simulation up to 1 s (a loaded machine may hold the process back
+#: longer than the 50 ms a server waits before answering 202: test_workers.py tests that).
+FAST = SimulationSettings(idle_timeout_s=60.0, reap_every_s=0.05, publish_s=0.01, answer_s=1.0)
 
 
 def counter_project(name: str = "counter", interval: str = "T#10ms") -> Project:
@@ -111,6 +113,11 @@ def recv_until(
 
 def of_type(kind: str, **fields: Any) -> Callable[[dict[str, Any]], bool]:
     return lambda message: message["type"] == kind and all(message.get(k) == v for k, v in fields.items())
+
+
+def log_of(kind: str) -> Callable[[dict[str, Any]], bool]:
+    """An online log entry of this kind (state, write, force, release, breakpoint, watchdog, fault, system)."""
+    return lambda message: message["type"] == "log" and message["kind"] == kind
 
 
 def subscribe(ws: WebSocketTestSession, paths: list[str], interval_ms: int = 20, **extra: Any) -> dict[str, Any]:

@@ -16,7 +16,7 @@ from ladderlab.model import Project, Task
 from ladderlab.model.monitor import MAX_TRACE_SAMPLES, TraceTrigger
 from ladderlab.simulation.build import build_project
 from ladderlab.simulation.registry import SimulationRegistry
-from ladderlab.simulation.trace import TraceBook, plan_trace
+from ladderlab.simulation.trace import TraceBook, TraceInbox, plan_trace
 from ladderlab.storage import Workspace
 
 from .helpers import st_program
@@ -309,20 +309,57 @@ def test_twenty_paths_are_accepted_including_array_elements_and_times(client: Te
 
 
 def test_samples_a_client_does_not_take_are_capped_and_counted_as_lost() -> None:
+    """In the simulation's process: samples not handed over yet are capped at MAX_TRACE_SAMPLES, the newest kept."""
     sim = build_project(counter_project()).simulation()
     book = TraceBook()
     book.start("client", 1, plan_trace(sim.location, ["Main.Count"], None), None, sim)
     for _ in range(MAX_TRACE_SAMPLES + 5):
         sim.cycle(1)
         book.sample(sim)
-    chunk = book.take("client")
-    assert chunk is not None and chunk.lost == 5
-    assert chunk.scans[0] == 6 and chunk.scans[-1] == MAX_TRACE_SAMPLES + 5 and len(chunk.scans) == MAX_TRACE_SAMPLES
-    assert chunk.values["MAIN.COUNT"][:2] == [6, 7]
-    assert book.take("client") is None  # nothing new: no chunk
+    chunk = book.take_all()["client"]
+    assert chunk["lost"] == 5
+    assert chunk["scans"][0] == 6 and chunk["scans"][-1] == MAX_TRACE_SAMPLES + 5
+    assert len(chunk["scans"]) == MAX_TRACE_SAMPLES
+    assert chunk["values"]["MAIN.COUNT"][:2] == [6, 7]
+    assert book.take_all() == {}  # nothing new: no chunk
     trigger = TraceTrigger(path="Main.Flag", condition="rising")
     book.start("client", 2, plan_trace(sim.location, ["Main.Count"], trigger), 3, sim)  # replaces the first
-    assert book.take("client").state == "waiting"  # type: ignore[union-attr]
+    assert book.take_all()["client"]["state"] == "waiting"
+
+
+def test_the_server_merges_chunks_a_client_has_not_taken_and_caps_them() -> None:
+    """On the server: chunks from several frames become one; beyond MAX_TRACE_SAMPLES the oldest are counted as
+    lost; a chunk of a new trace (another id) replaces what is left of the old one."""
+    inbox = TraceInbox()
+
+    def chunk(trace_id: int, first: int, count: int, **fields) -> dict:
+        scans = list(range(first, first + count))
+        return {
+            "id": trace_id,
+            "state": "recording",
+            "scans": scans,
+            "time_ms": [10.0 * n for n in scans],
+            "values": {"X": [n * 2 for n in scans]},
+            "triggered": None,
+            "lost": 0,
+            **fields,
+        }
+
+    inbox.add("client", chunk(1, 1, 3))  # not started on this server side: ignored
+    assert inbox.take("client") is None
+    inbox.open("client")
+    inbox.add("client", chunk(1, 1, 6_000, triggered={"scan": 1, "time_ms": 10.0}))
+    inbox.add("client", chunk(1, 6_001, 4_004, lost=2))
+    inbox.add("client", chunk(1, 10_005, 3, state="done"))
+    data = inbox.take("client")
+    assert (data.id, data.state, data.lost, len(data.scans)) == (1, "done", 2 + 7, MAX_TRACE_SAMPLES)
+    assert (data.scans[0], data.scans[-1], data.values["X"][0]) == (8, 10_007, 16)  # 10,007 sent, 7 dropped
+    assert data.triggered.scan == 1 and data.time_ms[-1] == 100_070.0
+    assert inbox.take("client") is None and not inbox.active("client")  # done: forgotten
+    inbox.open("client")
+    inbox.add("client", chunk(2, 1, 2))
+    inbox.add("client", chunk(3, 5, 1))
+    assert (inbox.take("client").id, inbox.active("client")) == (3, True)
 
 
 @pytest.fixture(scope="module")
@@ -361,12 +398,11 @@ def test_recording_starts_at_the_first_scan_whose_value_passes_the_condition(
         "cross_down": lambda a, b: a > level >= b,
     }[condition]
     first = next((i for i, (a, b) in enumerate(zip(previous, written)) if passes(a, b)), None)
-    chunk = book.take("client")
-    assert chunk is not None
+    chunk = book.take_all()["client"]
     if first is None:
-        assert (chunk.state, chunk.scans, chunk.triggered) == ("waiting", [], None)
+        assert (chunk["state"], chunk["scans"], chunk["triggered"]) == ("waiting", [], None)
     else:
-        assert chunk.state == "recording"
-        assert chunk.triggered is not None and chunk.triggered.scan == base + first + 1
-        assert chunk.scans == list(range(base + first + 1, base + len(written) + 1))
-        assert chunk.values[sim.location(path).path] == written[first:]
+        assert chunk["state"] == "recording"
+        assert chunk["triggered"] is not None and chunk["triggered"]["scan"] == base + first + 1
+        assert chunk["scans"] == list(range(base + first + 1, base + len(written) + 1))
+        assert chunk["values"][sim.location(path).path] == written[first:]

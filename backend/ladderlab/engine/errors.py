@@ -64,6 +64,7 @@ def check_subrange(value: int, low: int, high: int) -> int:
 
 FOR_STEP_ZERO = "for_step_zero"
 WATCHDOG = "watchdog"
+OUT_OF_MEMORY = "out_of_memory"
 
 
 def for_step_zero() -> PlcRuntimeError:

@@ -25,7 +25,7 @@ from .codegen import names
 from .codegen.context import ModuleContext, std_fb_class, std_pin_type
 from .codegen.scope import global_owner
 from .codegen.typeinfo import describe, is_composite, runtime_name
-from .process_image import ProcessImage, image_view_name, key_of, view_kind
+from .process_image import ProcessImage, image_view_name, key_of, located_address, view_kind
 
 GLOBALS_PREFIX = "GVL"
 VIEW_PREFIX = "ll_io_"
@@ -84,7 +84,9 @@ class Roots:
         found = self.ns.get(name)
         if found is None and name.startswith(VIEW_PREFIX):
             buffer, kind = name[len(VIEW_PREFIX) :].split("_", 1)
-            found = self.ns[name] = self.ns["ll_image"].view(buffer, kind)  # type: ignore[union-attr]
+            image = self.ns["ll_image"]
+            assert isinstance(image, ProcessImage)
+            found = self.ns[name] = image.view(buffer, kind)
         return found
 
 
@@ -147,8 +149,7 @@ class Resolver:
         """``%IX0.1``: the address with the type of the variable declared at it, else its size's default; it
         must lie in the process image (the addresses the program uses)."""
         address = parse_address(text)
-        declared = next((s for s in self.context.located if same_location(s.address, address)), None)  # type: ignore[arg-type]
-        name = runtime_name(declared.type) if declared is not None else address.default_type
+        declared = next((s for s in self.context.located if same_location(s.address, address)), None)
         image = self.context.image_sizes()
         if address.end > image.get(address.area, 0):
             used = image.get(address.area, 0)
@@ -156,16 +157,16 @@ class Resolver:
                 f"{address.text} is outside the process image: the program uses {used} byte(s) of %{address.area}"
                 + (f" (%{address.area}B0..%{address.area}B{used - 1})" if used else "")
             )
-        ty = declared.type if declared is not None else t.Elementary(name)  # type: ignore[arg-type]
+        ty = declared.type if declared is not None else t.Elementary(address.default_type)
         return located_location(address.text, ty, address)
 
     def _global(self, text: str, name: str, rest: list, top: bool = False) -> Location:
-        place = self.context.globals.get(name)  # type: ignore[union-attr]
-        located = self.context.globals.located.get(name.upper()) if place is None else None  # type: ignore[union-attr]
+        place = self.context.globals.get(name)
+        located = self.context.globals.located.get(name.upper()) if place is None else None
         if located is not None:
             return self._steps_located(text, located.name, located, rest)
         if place is None:
-            candidates = [p.slot.name for p in self.context.globals.places.values() if not p.slot.hidden]  # type: ignore[union-attr]
+            candidates = [p.slot.name for p in self.context.globals.places.values() if not p.slot.hidden]
             if top:
                 candidates += list(self.access)
                 raise UnknownPath(f"unknown variable or program {name!r}{did_you_mean(name, candidates)}")
@@ -196,7 +197,7 @@ class Resolver:
     def _steps_located(self, text: str, name: str, slot: ir.Slot, rest: list) -> Location:
         if rest:
             raise ValueError(f"{name} is {_a(slot.type)} in the process image: it has no members")
-        return located_location(name, slot.type, parse_address(slot.address))  # type: ignore[arg-type]
+        return located_location(name, slot.type, located_address(slot.address))
 
     def _indices(self, rest: list, text: str) -> tuple[list[int], list]:
         indices = []
@@ -219,7 +220,7 @@ class Resolver:
                 inner = layout.get(member)
                 if inner is None and member.upper() in layout.located:
                     slot = layout.located[member.upper()]
-                    location = located_location(f"{path}.{slot.name}", slot.type, parse_address(slot.address))
+                    location = located_location(f"{path}.{slot.name}", slot.type, located_address(slot.address))
                     return location.path, location.type, location
                 if inner is None:
                     what = path if path.upper() == ty.fb.upper() else f"{path} ({ty.fb})"  # a program instance: MAIN
@@ -256,7 +257,7 @@ class Resolver:
 def located_location(path: str, ty: t.IrType, address: Address) -> Location:
     """A located variable or an address as the world sees it: read from the inputs set or the outputs published,
     written to the inputs or the output image (engine/process_image.py)."""
-    kind = view_kind(address, runtime_name(ty))  # type: ignore[arg-type]
+    kind = view_kind(address, runtime_name(ty))
     read, write = (image_view_name(ProcessImage.world(address.area, writing), kind) for writing in (False, True))
     return Location(path, ty, ("global", read), (key_of(address),), write_root=("global", write))
 
@@ -305,16 +306,16 @@ def _enum_value(ty: t.Enum, value: object) -> int:
 def leaves(context: ModuleContext, roots: Roots) -> Iterator[tuple[str, object]]:
     """Every elementary variable (hidden slots and VAR_IN_OUT references left out) with its value: the program
     instances' first, then the other globals'."""
-    for place in context.globals.places.values():  # type: ignore[union-attr]
+    for place in context.globals.places.values():
         if not place.slot.hidden:
             obj = roots.ns[global_owner(place.page)]
             yield from _value_leaves(context, place.slot.name, place.slot.type, getattr(obj, place.attr), roots)
-    yield from _located_leaves("", context.globals, roots)  # type: ignore[arg-type]
+    yield from _located_leaves("", context.globals, roots)
 
 
 def _located_leaves(prefix: str, layout, roots: Roots) -> Iterator[tuple[str, object]]:
     for slot in layout.located.values():
-        location = located_location(f"{prefix}{slot.name}", slot.type, parse_address(slot.address))
+        location = located_location(f"{prefix}{slot.name}", slot.type, located_address(slot.address))
         yield location.path, location.get(roots)
 
 

@@ -109,8 +109,17 @@ def image_view_name(buffer: str, kind: str) -> str:
     return f"ll_io_{buffer}_{kind}"  # (engine/paths.py Roots makes the views no generated code names)
 
 
-def view_kind(address: Address, type_name: str) -> str:
+def located_address(text: str | None) -> Address:
+    """The address of a located variable (``Slot.address``, set on every located slot)."""
+    if text is None:
+        raise ValueError("not a located variable")
+    return parse_address(text)
+
+
+def view_kind(address: Address, type_name: str | None) -> str:
     """The view a variable of ``type_name`` at ``address`` is read through (one per kind and buffer)."""
+    if type_name is None:
+        raise ValueError(f"only an elementary variable can be located at {address.text}")
     if type_name == "BOOL":
         return "BIT" if address.bit is not None else "BOOL8"
     return type_name

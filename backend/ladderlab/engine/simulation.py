@@ -25,10 +25,10 @@ one thread (see docs/runtime.md).
 from __future__ import annotations
 
 import time
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
+from typing import Any, cast
 
-from ..iec.addresses import parse_address
 from ..iec.spelling import did_you_mean
 from ..ir import nodes as ir
 from ..ir import types as t
@@ -40,8 +40,8 @@ from .codegen.typeinfo import runtime_name
 from .compile import CompiledProgram, compile_program
 from .debug import Debugger, Halt
 from .paths import Location, LocationReader, Resolver, Roots, UnknownPath, coerce_for, leaves, plain
-from .process_image import AREA_ORDER, IoPoint, ProcessImage
-from .tasks import Schedule, Task, task_table
+from .process_image import AREA_ORDER, IoPoint, ProcessImage, located_address
+from .tasks import DEFAULT_WATCHDOG_S, Schedule, Task, task_table
 
 
 @dataclass
@@ -80,8 +80,9 @@ class Simulation:
         program: ir.Program | CompiledProgram,
         *,
         variant: str | None = None,
-        watchdog_s: float | dict[str, float] = 1.0,
+        watchdog_s: float | dict[str, float] = DEFAULT_WATCHDOG_S,
         wall_clock: Callable[[], float] = time.perf_counter,
+        watchdog_clock: Callable[[], float] = time.thread_time,
     ) -> None:
         if isinstance(program, CompiledProgram):
             if variant is not None and variant != program.variant:
@@ -92,15 +93,15 @@ class Simulation:
         self.compiled = compiled
         self._variants = {compiled.variant: compiled}
         self._context = compiled.generated.context
-        self._ns = compiled.namespace()
+        self._ns = cast("dict[str, Any]", compiled.namespace())  # the generated module's globals: functions, G, views
         self._clock = wall_clock
-        self._watchdog = Watchdog(wall_clock)
+        self._watchdog = Watchdog(watchdog_clock, self._ns["ll_wb"])
         self._ns["ll_wd"] = self._watchdog.check
         self._tasks: list[Task] = task_table(compiled.program, watchdog_s)
         self._schedule = Schedule(self._tasks)
         self._resolver = Resolver(self._context)
         self._roots = Roots(self._ns)
-        self._image: ProcessImage = self._ns["ll_image"]  # type: ignore[assignment]
+        self._image: ProcessImage = self._ns["ll_image"]
         self._triggers = {task.name: self._resolver.resolve(task.single) for task in self._tasks if task.single}
         self.debugger: Debugger | None = None
         self._stamp = 0  # counts scans started: the stamp probe groups record (ll_scan)
@@ -115,6 +116,7 @@ class Simulation:
         self._watchdog_left = 0.0
         self._paths: dict[int, str] | None = None
         self._instances: dict[str, tuple[object, str]] = {}  # upper-case path -> (instance, upper-case POU name)
+        self._deferred_locations: dict[tuple[str, int], Location] = {}  # (program, probe number) -> its variable
         self._attach_debugger()
         self._initialise(warm=False)
 
@@ -151,9 +153,7 @@ class Simulation:
 
     def _attach_debugger(self) -> None:
         self.debugger = (
-            Debugger(self.compiled.generated.pauses, self._ns["ll_halt"])  # type: ignore[arg-type]
-            if self.variant == "debug"
-            else None
+            Debugger(self.compiled.generated.pauses, self._ns["ll_halt"]) if self.variant == "debug" else None
         )
 
     # ------------------------------------------------------------------ state
@@ -245,7 +245,7 @@ class Simulation:
                 if not task.stopped:
                     self._watchdog.arm(task.watchdog_s)
                     try:
-                        self._ns[task.function]()  # type: ignore[operator]
+                        self._ns[task.function]()
                     except Exception as error:
                         self._fault(task, error, now)
             self._finish((self._clock() - start) * 1000.0)
@@ -259,7 +259,7 @@ class Simulation:
                 continue
             self._watchdog.arm(task.watchdog_s)
             try:
-                yield from self._ns[task.function]()  # type: ignore[operator]
+                yield from self._ns[task.function]()
             except Exception as error:
                 self._fault(task, error, now)
 
@@ -352,11 +352,13 @@ class Simulation:
 
     # ------------------------------------------------------------------ probes
 
-    def probes(self, instance: str) -> ProbeView:
+    def probes(self, instance: str, elements: Iterable[str] | None = None) -> ProbeView:
         """Probe values of a POU instance (``MAIN``, ``MAIN.FB1``) or a FUNCTION (by name): monitor and debug variants.
 
         ``values``: the last value each element computed (elements that never ran are left out);
-        ``executed``: the elements that ran in the last scan (while halted: so far in this scan)."""
+        ``executed``: the elements that ran in the last scan (while halted: so far in this scan).
+        ``elements``: only these are read (unknown ones are left out): an online view watches the networks it
+        shows, and reading every element of a 10,000-network POU after a scan costs more than the scan."""
         if self.variant == "fast":
             raise RuntimeError("probes need a simulation built with variant='monitor' or 'debug'")
         key = instance.strip().upper()
@@ -365,6 +367,7 @@ class Simulation:
             escaped = names.escape(pou.name)
             values, stamps = self._ns[f"ll_pr_{escaped}"], self._ns[f"ll_px_{escaped}"]
             table = self.compiled.generated.context.probes_of(pou.name)
+            indices = _indices(table, elements)
         else:
             found = self._instances_by_path().get(key)
             if found is None:
@@ -375,21 +378,24 @@ class Simulation:
                 raise UnknownPath(f"no POU instance {instance!r}{did_you_mean(instance, known)}")
             obj, pou_key = found
             table = self.compiled.generated.context.probes_of(pou_key)
-            self._read_deferred(obj, table)
+            indices = _indices(table, elements)
+            if elements is None:
+                self._read_deferred(obj, table)
+            else:
+                self._read_some_deferred(key, obj, table, indices)
             values, stamps = obj.ll_pr, obj.ll_px  # type: ignore[attr-defined]
-        if table.constants:
-            values = list(values)
-            for index, constant in table.constants.items():  # recorded by the group stamp alone
-                if values[index] is UNSET and any(stamps[g] >= 0 for g in table.groups[index]):
-                    values[index] = constant
-        return ProbeView(
-            {element: value for element, value in zip(table.elements, values) if value is not UNSET},
-            frozenset(
-                element
-                for element, groups in zip(table.elements, table.groups)
-                if any(stamps[g] == self._stamp for g in groups)
-            ),
-        )
+        found_values: dict[str, object] = {}
+        executed: list[str] = []
+        stamp, constants, groups, names_ = self._stamp, table.constants, table.groups, table.elements
+        for index in indices:
+            value = values[index]
+            if value is UNSET and index in constants and any(stamps[g] >= 0 for g in groups[index]):
+                value = constants[index]  # recorded by the group stamp alone
+            if value is not UNSET:
+                found_values[names_[index]] = value
+            if any(stamps[g] == stamp for g in groups[index]):
+                executed.append(names_[index])
+        return ProbeView(found_values, frozenset(executed))
 
     def _read_deferred(self, obj: object, table: ProbeTable) -> None:
         """Fill in the probes the monitor code reads after the scan (codegen/deferred.py); never-run ones stay unset."""
@@ -400,6 +406,23 @@ class Simulation:
         for index in table.deferred:
             if all(stamps[g] < 0 for g in table.groups[index]):
                 values[index] = UNSET
+
+    def _read_some_deferred(self, program: str, obj: object, table: ProbeTable, indices: Iterable[int]) -> None:
+        """``_read_deferred`` for the probes ``indices`` only: each reads its variable through a resolved path."""
+        if not table.deferred_paths or self.variant != "monitor":
+            return
+        values, stamps = obj.ll_pr, obj.ll_px  # type: ignore[attr-defined]
+        for index in indices:
+            path = table.deferred_paths.get(index)
+            if path is None:
+                continue
+            if all(stamps[g] < 0 for g in table.groups[index]):
+                values[index] = UNSET
+                continue
+            location = self._deferred_locations.get((program, index))
+            if location is None:
+                location = self._deferred_locations[(program, index)] = self._resolver.resolve(f"{program}.{path}")
+            values[index] = location.get(self._roots)
 
     # ------------------------------------------------------------------ instances
 
@@ -422,7 +445,7 @@ class Simulation:
         """id(user POU instance) -> path (``MAIN``, ``MAIN.FB1``, ``MAIN.ARR[2]``, ``GFB``), cached until reset."""
         if self._paths is None:
             self._paths, self._instances = {}, {}
-            for place in self._context.globals.places.values():  # type: ignore[union-attr]
+            for place in self._context.globals.places.values():
                 value = getattr(self._roots.get(("global", "G" if not place.page else f"G{place.page}")), place.attr)
                 self._add_values(place.slot.name, place.slot.type, value)
         return self._paths
@@ -461,8 +484,8 @@ class Simulation:
         points: dict[tuple, IoPoint] = {}
         owners = [("", self._context.globals)] + [(pou, layout) for pou, layout in self._context.layouts.items()]
         for pou, layout in owners:
-            for slot in layout.located.values():  # type: ignore[union-attr]
-                address = parse_address(slot.address)  # type: ignore[arg-type]
+            for slot in layout.located.values():
+                address = located_address(slot.address)
                 bit = address.bit if address.bit is not None else -1
                 key = (AREA_ORDER.index(address.area), address.offset, bit, address.width, address.text)
                 point = points.setdefault(key, IoPoint(address.area, address.text, runtime_name(slot.type) or ""))
@@ -527,3 +550,10 @@ class Simulation:
     def snapshot(self) -> dict[str, object]:
         """Every elementary variable of every program instance and every global: path -> value."""
         return dict(leaves(self._context, self._roots))
+
+
+def _indices(table: ProbeTable, elements: Iterable[str] | None) -> Iterable[int]:
+    """Probe numbers of ``elements`` in ``table`` (unknown ones left out); every probe when None."""
+    if elements is None:
+        return range(len(table.elements))
+    return [index for index in map(table.index, dict.fromkeys(elements)) if index is not None]

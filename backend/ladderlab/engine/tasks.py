@@ -33,6 +33,8 @@ _EPSILON_MS = 1e-6
 DEFAULT_INTERVAL_MS = 10
 #: How often a resource with SINGLE tasks (or no cyclic one) scans when no cyclic task is due.
 IDLE_MS = 10
+#: A task's time budget per scan unless configured (CODESYS's default watchdog time).
+DEFAULT_WATCHDOG_S = 0.1
 
 
 @dataclass
@@ -42,7 +44,7 @@ class Task:
     priority: int
     programs: list[str]
     order: int
-    watchdog_s: float = 1.0
+    watchdog_s: float = DEFAULT_WATCHDOG_S
     next_due: float = 0.0
     stopped: bool = False  # after a fault, until reset
     single: str | None = None  # the path of the BOOL variable whose rising edges run the task once
@@ -93,10 +95,10 @@ def validate_tasks(program: ir.Program) -> list[Diagnostic]:
     return diagnostics
 
 
-def task_table(program: ir.Program, watchdog_s: float | dict[str, float] = 1.0) -> list[Task]:
+def task_table(program: ir.Program, watchdog_s: float | dict[str, float] = DEFAULT_WATCHDOG_S) -> list[Task]:
     """The tasks to schedule (validated program): the configured ones, else one 10 ms task with every PROGRAM."""
     limits = {k.upper(): v for k, v in watchdog_s.items()} if isinstance(watchdog_s, dict) else {}
-    default = 1.0 if isinstance(watchdog_s, dict) else watchdog_s
+    default = DEFAULT_WATCHDOG_S if isinstance(watchdog_s, dict) else watchdog_s
     tasks = []
     for order, spec in enumerate(program.task_specs()):
         limit = limits.get(spec.name.upper(), default)
@@ -132,6 +134,7 @@ class Schedule:
     def __post_init__(self) -> None:
         self._ordered = sorted(self.tasks, key=Task.sort_key)
         self._cyclic = [task for task in self._ordered if task.interval_ms is not None]
+        self._periods = {id(task): task.interval_ms for task in self._ordered if task.interval_ms is not None}
         self._idle = not self._cyclic or any(task.single for task in self.tasks)
 
     def next_time(self) -> float:
@@ -143,7 +146,7 @@ class Schedule:
         now = self.next_time()
         due = [task for task in self._cyclic if task.next_due == now]
         for task in due:
-            task.next_due += task.interval_ms  # type: ignore[operator]
+            task.next_due += self._periods[id(task)]
         if self._idle and self._idle_due == now:
             self._idle_due += IDLE_MS
         self.time_ms = now
@@ -154,12 +157,13 @@ class Schedule:
         if not time_ms >= self.time_ms:
             raise ValueError(f"time {time_ms} ms is before the current time {self.time_ms} ms")
         for task in self._cyclic:
-            task.next_due = (math.floor(time_ms / task.interval_ms) + 1) * task.interval_ms  # type: ignore[operator]
+            period = self._periods[id(task)]
+            task.next_due = (math.floor(time_ms / period) + 1) * period
         self._idle_due = (math.floor(time_ms / IDLE_MS) + 1) * IDLE_MS
         self.time_ms = time_ms
         return list(self._cyclic)
 
-    def with_triggers(self, due: list[Task], read: Callable[[Task], bool]) -> list[Task]:
+    def with_triggers(self, due: list[Task], read: Callable[[Task], object]) -> list[Task]:
         """The tasks of this scan: the cyclic ones due, but a task whose SINGLE variable is TRUE (CFG-05), and
         every SINGLE task whose variable rose since the previous scan (``read`` gives its value now)."""
         running = set(map(id, due))
@@ -201,6 +205,8 @@ class Pacer:
     slower than real time, or the driver stalled) the pacer skips ahead instead
     of racing to catch up, and counts it in ``overruns``. While the simulation
     is halted at a breakpoint nothing runs; afterwards time resumes from there.
+    ``interrupted`` (asked after every scan) makes ``poll`` return at once, keeping
+    the schedule: the driver has something to do between two scans.
     """
 
     def __init__(
@@ -211,10 +217,12 @@ class Pacer:
         max_lag_ms: float = 200.0,
         clock: Callable[[], float] = time.monotonic,
         idle_s: float = 0.05,
+        interrupted: Callable[[], bool] = lambda: False,
     ) -> None:
         if not speed > 0:
             raise ValueError("speed must be positive")
         self.sim, self.speed, self.max_lag_ms, self.clock, self.idle_s = sim, speed, max_lag_ms, clock, idle_s
+        self.interrupted = interrupted
         self.overruns = 0
         self._anchor: tuple[float, float] | None = (
             clock(),
@@ -241,6 +249,8 @@ class Pacer:
             if self.sim.halted:
                 self._anchor = None
                 return self.idle_s
+            if self.interrupted():
+                return 0.0
         return max(0.0, (self.sim.next_scan_time() - now) / 1000.0 / self.speed)
 
     def run(self, seconds: float, sleep: Callable[[float], None] = time.sleep) -> None:

@@ -106,8 +106,10 @@ def type_problem(address: Address, type_name: str) -> str | None:
     return None
 
 
-def same_location(text: str, address: Address) -> bool:
-    """Does the address written ``text`` name exactly ``address`` (``%I0.1`` and ``%IX0.1`` do)?"""
+def same_location(text: str | None, address: Address) -> bool:
+    """Does the address written ``text`` name exactly ``address`` (``%I0.1`` and ``%IX0.1`` do)? None: no address."""
+    if text is None:
+        return False
     try:
         other = parse_address(text)
     except ValueError:

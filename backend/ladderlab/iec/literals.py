@@ -156,7 +156,7 @@ def encode_duration(value: int | float) -> str:
     fraction = _normalise_ms(rest - whole)
     parts = []
     for unit in ("d", "h", "m", "s"):
-        count, whole = divmod(whole, _MS_PER_UNIT[unit])
+        count, whole = divmod(whole, int(_MS_PER_UNIT[unit]))
         if count:
             parts.append(f"{count}{unit}")
     if whole or fraction:

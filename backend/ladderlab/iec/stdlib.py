@@ -14,6 +14,7 @@ the same names are in ``ladderlab.engine.stdlib``.
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 
 from .elementary import ALIASES, ELEMENTARY, canonical_type_name
@@ -75,7 +76,15 @@ def _g(name: str, family: str) -> Pin:
     return Pin(name, family, generic=True)
 
 
-def _fn(name, inputs, result, group, description, spec, extensible=False) -> StdFunction:
+def _fn(
+    name: str,
+    inputs: Iterable[Pin],
+    result: str,
+    group: str,
+    description: str,
+    spec: str,
+    extensible: bool = False,
+) -> StdFunction:
     return StdFunction(name, tuple(inputs), result, group, description, spec, extensible)
 
 

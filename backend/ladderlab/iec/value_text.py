@@ -137,20 +137,21 @@ def format_value(value: object, type_name: str) -> str:
     """The IEC literal text of a stored value, without type prefix for numbers (INT 5 -> '5')."""
     ref = resolve(type_name)
     cat = ref.category
-    if cat == "string":
-        return value  # type: ignore[return-value]
     if cat == "bool":
         return "TRUE" if value else "FALSE"
+    if cat == "string" or not isinstance(value, int | float):
+        return str(value)
     if cat == "real":
-        return format_real(value, ref.name == "REAL")  # type: ignore[arg-type]
+        return format_real(float(value), ref.name == "REAL")
+    ms = int(value)  # every other category is a whole number of milliseconds or an integer
     if cat == "time":
-        return format_time(value)  # type: ignore[arg-type]
+        return format_time(ms)
     if cat == "tod":
-        return "TOD#" + _clock(value)  # type: ignore[arg-type]
+        return "TOD#" + _clock(ms)
     if cat == "date":
-        return "D#" + _date(value)  # type: ignore[arg-type]
+        return "D#" + _date(ms)
     if cat == "dt":
-        return "DT#" + _date(value) + "-" + _clock(value % MS_PER_DAY)  # type: ignore[operator]
+        return "DT#" + _date(ms) + "-" + _clock(ms % MS_PER_DAY)
     return str(value)
 
 

@@ -24,10 +24,11 @@ import struct
 import sys
 from collections.abc import Callable
 from functools import cache
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
 from .elementary import (
     DEFAULT_STRING_LENGTH,
+    ELEMENTARY,
     MAX_STRING_LENGTH,
     ElementaryType,
     elementary,
@@ -45,7 +46,8 @@ FLT_MAX: float = _unpack(b"\xff\xff\x7f\x7f")[0]
 def f32(x: float) -> float:
     """Round to the nearest IEEE float32 (ties to even); beyond FLT_MAX it becomes ±inf."""
     try:
-        return _unpack(_pack(x))[0]
+        single: float = _unpack(_pack(x))[0]
+        return single
     except (OverflowError, struct.error):  # struct.error: an int too large even for a double
         return math.inf if x > 0 else -math.inf
 
@@ -86,7 +88,7 @@ def resolve(type_name: str) -> TypeRef:
         length = int(sized.group(1))
         if not 1 <= length <= MAX_STRING_LENGTH:
             raise ValueError(f"STRING length {length} is outside 1..{MAX_STRING_LENGTH}")
-        return TypeRef(elementary("STRING"), length)  # type: ignore[arg-type]
+        return TypeRef(ELEMENTARY["STRING"], length)
     elem = elementary(text)
     if elem is None:
         raise ValueError(f"{type_name!r} is not an elementary type")
@@ -102,7 +104,9 @@ def value_range(type_name: str) -> tuple[int, int] | None:
     if cat in ("date", "dt"):
         return 0, DT_MAX
     if cat in ("int", "bits", "time", "bool"):
-        return ref.elem.min, ref.elem.max  # type: ignore[return-value]
+        lo, hi = ref.elem.min, ref.elem.max
+        assert lo is not None and hi is not None  # these categories have integer ranges
+        return lo, hi
     return None
 
 
@@ -136,17 +140,19 @@ def store_expr(expr: str, type_name: str) -> str:
 
 
 @cache
-def store_fn(type_name: str) -> Callable[[object], object]:
+def store_fn(type_name: str) -> Callable[[Any], Any]:
     """A one-argument callable applying ``store_expr`` (e.g. for assignments)."""
     if resolve(type_name).name == "REAL":
         return f32
-    return eval(f"lambda x: {store_expr('x', type_name)}", dict(INLINE_NAMES))
+    store: Callable[[Any], Any] = eval(f"lambda x: {store_expr('x', type_name)}", dict(INLINE_NAMES))
+    return store
 
 
 @cache
 def wrap_fn(type_name: str) -> Callable[[int], int]:
     """Fast wrapper to the width of an int, bit-string or TIME type (e.g. ``wrap_fn("INT")(32768) == -32768``)."""
-    return eval(f"lambda x: {wrap_expr('x', type_name)}")
+    wrap: Callable[[int], int] = eval(f"lambda x: {wrap_expr('x', type_name)}")
+    return wrap
 
 
 def wrap(value: int, type_name: str) -> int:
@@ -193,7 +199,7 @@ def _raw(value: object, ref: TypeRef) -> int | float:
     if isinstance(value, str):
         from .value_text import parse  # value_text imports this module; import on use
 
-        return parse(value, ref.name)  # type: ignore[return-value]
+        return parse(value, ref.name)  # type: ignore[return-value]  # a number: strings are not coerced here
     if isinstance(value, bool):
         if ref.category == "bool":
             return int(value)
@@ -221,7 +227,7 @@ def _check_int(value: object, raw: int | float, ref: TypeRef) -> int:
         if not raw.is_integer():
             raise ValueError(f"{value!r} is not {article(ref.name)}")
         raw = int(raw)
-    lo, hi = value_range(ref.name)  # type: ignore[misc]
+    lo, hi = value_range(ref.name)  # type: ignore[misc]  # _check_int is called for ranged types only
     if not lo <= raw <= hi:
         from .value_text import format_value
 

@@ -22,6 +22,8 @@ Decisions (docs/ir.md, "Lowering of ST and whole projects"):
 
 from __future__ import annotations
 
+from typing import TypeGuard
+
 from ..iec import stdlib
 from ..iec.addresses import part_type, partial_access
 from ..iec.elementary import DEFAULT_STRING_LENGTH, ELEMENTARY, GENERIC
@@ -236,67 +238,56 @@ _BITS_OF_WIDTH = {8: "BYTE", 16: "WORD", 32: "DWORD", 64: "LWORD"}
 _SHIFT_COUNT = Elementary("INT")
 
 
-def is_part(node: ast.Expr) -> bool:
+def is_part(node: ast.Expr) -> TypeGuard[ast.Member]:
     """Bit access ``x.3`` / ``x.%X3`` or partial access ``x.%B1`` (a member that is no field or pin)."""
     return isinstance(node, ast.Member) and partial_access(node.name) is not None
 
 
-def bit_access(node: ast.Member, ctx: PouContext) -> tuple[Var, Expr, int, int]:
-    """``x.%B1`` -> (x, x as a bit string, the part's width in bits, its shift); integers go through their
-    same-width bit string (``INT_TO_WORD``), the two's complement pattern."""
+def bit_access(node: ast.Member, ctx: PouContext) -> tuple[Var, Elementary, Expr, Elementary, int, int]:
+    """``x.%B1`` -> (x, its type, x as a bit string, that bit string's type, the part's width in bits, its
+    shift); integers go through their same-width bit string (``INT_TO_WORD``), the two's complement pattern."""
     var = lower_access(node.base, ctx)
     ty = value_type(var.type)
     width, index = partial_access(node.name) or (0, 0)
     if not isinstance(ty, Elementary) or not ty.info.bits or width == 0 or (index + 1) * width > ty.info.bits:
         raise LoweringError(None)
-    bits: Expr = var
-    if ty.info.category != "bits":  # AND/OR work on ANY_BIT: same-width bit string, two's complement pattern
-        bits_type = Elementary(_BITS_OF_WIDTH[ty.info.bits])
-        bits = Call(f"{ty.name}_TO_{bits_type.name}", (var,), (ty,), bits_type)
-    return var, bits, width, index * width
+    if ty.info.category == "bits":
+        return var, ty, var, ty, width, index * width
+    bits_type = Elementary(_BITS_OF_WIDTH[ty.info.bits])  # AND/OR work on ANY_BIT
+    return var, ty, Call(f"{ty.name}_TO_{bits_type.name}", (var,), (ty,), bits_type), bits_type, width, index * width
 
 
-def _mask(bits: Expr, width: int, shift: int) -> Const:
-    ty = bits.type  # type: ignore[union-attr]
-    return Const(engine_value(((1 << width) - 1) << shift, ty), ty)
+def _shifted(name: str, value: Expr, ty: Elementary, shift: int) -> Expr:
+    return Call(name, (value, Const(shift, _SHIFT_COUNT)), (ty, _SHIFT_COUNT), ty) if shift else value
 
 
-def _shifted(name: str, value: Expr, shift: int) -> Expr:
-    if not shift:
-        return value
-    ty = value.type  # type: ignore[union-attr]
-    return Call(name, (value, Const(shift, _SHIFT_COUNT)), (ty, _SHIFT_COUNT), ty)
-
-
-def _resized(value: Expr, target: Elementary) -> Expr:
-    source = value.type  # type: ignore[union-attr]
+def _resized(value: Expr, source: Elementary, target: Elementary) -> Expr:
     return value if source == target else Call(f"{source.name}_TO_{target.name}", (value,), (source,), target)
 
 
 def _bit(node: ast.Member, ctx: PouContext) -> Expr:
     """Bit access ``x.3`` reads as ``(x AND 2#1000) <> 0``; a part ``x.%B1`` as ``DWORD_TO_BYTE(SHR(x, 8))``."""
-    _, bits, width, shift = bit_access(node, ctx)
-    mask = _mask(bits, width, shift)
+    _, _, bits, ty, width, shift = bit_access(node, ctx)
     if width == 1:
-        return Binary("NE", Binary("AND", bits, mask, mask.type), Const(0, mask.type), BOOL)
-    return _resized(_shifted("SHR", bits, shift), Elementary(part_type(width)))
+        mask = Const(engine_value(1 << shift, ty), ty)
+        return Binary("NE", Binary("AND", bits, mask, ty), Const(0, ty), BOOL)
+    return _resized(_shifted("SHR", bits, ty, shift), ty, Elementary(part_type(width)))
 
 
 def assign_part(target: ast.Member, value: Expr, ctx: PouContext) -> tuple[Var, Expr]:
     """``x.3 := b`` stores ``SEL(b, x AND NOT 2#1000, x OR 2#1000)``; ``x.%B1 := v`` stores
     ``(x AND NOT 16#FF00) OR SHL(BYTE_TO_DWORD(v), 8)`` (integers through their bit string)."""
-    var, bits, width, shift = bit_access(target, ctx)
-    mask = _mask(bits, width, shift)
-    ty = mask.type
-    cleared = Binary("AND", bits, Const(engine_value(~mask.value, ty), ty), ty)  # type: ignore[operator]
+    var, var_type, bits, ty, width, shift = bit_access(target, ctx)
+    mask = ((1 << width) - 1) << shift
+    cleared = Binary("AND", bits, Const(engine_value(~mask, ty), ty), ty)
     if width == 1:
-        updated: Expr = Call("SEL", (value, cleared, Binary("OR", bits, mask, ty)), (BOOL, ty, ty), ty)
+        updated: Expr = Call(
+            "SEL", (value, cleared, Binary("OR", bits, Const(engine_value(mask, ty), ty), ty)), (BOOL, ty, ty), ty
+        )
     else:
-        updated = Binary("OR", cleared, _shifted("SHL", _resized(value, ty), shift), ty)  # type: ignore[arg-type]
-    target_type = value_type(var.type)
-    if target_type != ty:
-        updated = Call(f"{ty.name}_TO_{target_type.name}", (updated,), (ty,), target_type)  # type: ignore[union-attr]
-    return var, updated
+        part = Elementary(part_type(width))
+        updated = Binary("OR", cleared, _shifted("SHL", _resized(value, part, ty), ty, shift), ty)
+    return var, _resized(updated, ty, var_type)
 
 
 # ---------------------------------------------------------------- operators

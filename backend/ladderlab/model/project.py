@@ -95,6 +95,13 @@ class Task(BaseModel):
         default_factory=list,
         description="What the task runs, in list order: a program's name (one instance named after it) or an instance.",
     )
+    watchdog_ms: int | None = Field(
+        default=None,
+        ge=1,
+        le=60_000,
+        description="The task's time budget per scan in ms (its scan's own running time); longer is a watchdog "
+        "fault. Null: the default of 100 ms (CODESYS's).",
+    )
 
 
 class Resource(BaseModel):

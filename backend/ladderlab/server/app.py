@@ -6,6 +6,9 @@ This module only assembles the app; routes live in one module per resource
 
 from __future__ import annotations
 
+import asyncio
+from collections.abc import AsyncIterator
+from contextlib import asynccontextmanager
 from pathlib import Path
 
 from fastapi import FastAPI
@@ -15,6 +18,7 @@ from fastapi.staticfiles import StaticFiles
 from .. import __version__
 from ..storage import Workspace
 from . import fbd, interchange, library, live_check, monitor, projects, simulations, symbols
+from .context import registry_of
 from .errors import install_error_handlers
 from .limits import BodySizeLimit, Limits
 
@@ -26,15 +30,24 @@ _PLACEHOLDER = """<!doctype html>
 """
 
 
+@asynccontextmanager
+async def _lifespan(app: FastAPI) -> AsyncIterator[None]:
+    await asyncio.to_thread(registry_of(app).warm)  # the first simulation opens fast (docs/architecture.md)
+    yield
+    registry = getattr(app.state, "simulations", None)
+    if registry is not None:  # end the simulations' and builds' processes with the server
+        registry.close()
+
+
 def create_app(workspace: Workspace, limits: Limits | None = None) -> FastAPI:
-    app = FastAPI(title="LadderLab", version=__version__)
+    app = FastAPI(title="LadderLab", version=__version__, lifespan=_lifespan)
     app.state.workspace = workspace
     app.state.limits = limits or Limits()
     install_error_handlers(app)
     app.add_middleware(BodySizeLimit, max_bytes=app.state.limits.max_body_bytes)
 
     @app.get("/api/health")
-    def health() -> dict[str, str]:
+    async def health() -> dict[str, str]:  # on the event loop: answers whatever the worker threads are doing
         return {"status": "ok", "version": __version__}
 
     for module in (projects, symbols, library, simulations, monitor, interchange, fbd, live_check):

@@ -1,16 +1,18 @@
 """The online-mode websocket: each client's subscription, commands, and a sender that never backs up.
 
-One ``MonitorClient`` per connection. Its receive loop parses messages
-(``model/monitor.py``) and runs commands on the ``SimRunner`` in a worker thread
-(a command may wait for a scan to finish; the event loop must not). Its sender task
-is the only writer to the socket:
+One ``MonitorClient`` per connection to a simulation (``simulation/remote.py``: its process
+runs the program). On connecting, a client gets the state, then the simulation's online log so far
+(oldest first, as ``log`` messages), then everything live. Its receive loop parses messages
+(``model/monitor.py``) and sends commands to the simulation's process, awaiting the reply (a
+command may wait for a scan to finish; the event loop never does). Its sender task is the only
+writer to the socket:
 
-* values are sampled, not queued: every ``interval_ms`` it takes the runner's latest
+* values are sampled, not queued: every ``interval_ms`` it takes the simulation's latest
   frame and sends what changed since its own previous message. A client that reads
   slowly makes its sender wait in ``send``, so it gets fewer messages, each complete;
-  the scan thread and the other clients never wait for it;
-* a running trace's new samples are taken from the runner at the same interval
-  (``trace_data``), so they wait in the runner's trace book, never in the queue;
+  the simulation and the other clients never wait for it;
+* a running trace's new samples are taken at the same interval (``trace_data``), so they
+  wait in the simulation's trace inbox, never in the queue;
 * status, log and error messages wait in a bounded queue; only the latest
   status is kept, and when the queue is full the oldest log entries are dropped and
   the client is told how many.
@@ -22,9 +24,9 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
+import itertools
 import json
 import logging
-import math
 from collections import deque
 from typing import Any
 
@@ -32,10 +34,10 @@ from fastapi import APIRouter, WebSocket
 from pydantic import BaseModel, TypeAdapter, ValidationError
 from starlette.websockets import WebSocketDisconnect
 
-from ..ir import types as t
 from ..model import monitor as m
 from ..simulation.registry import SimulationEntry, SimulationSettings, UnknownSimulation
-from ..simulation.runner import CommandError, Frame, SimRunner, Watch
+from ..simulation.remote import Frame, SimulationHandle, Watch
+from ..simulation.runner import CommandError, changes
 from .context import registry_of
 
 log = logging.getLogger(__name__)
@@ -47,7 +49,7 @@ _CLIENT_TYPES = ", ".join(sorted(CLIENT_MESSAGE.json_schema()["discriminator"]["
 CLOSE_NO_SIMULATION = 4404
 CLOSE_DELETED = 4410
 CLOSE_TRY_LATER = 1013
-_MISSING = object()
+_KEYS = itertools.count(1)  # a client's key in its simulation (watches, traces)
 
 
 def origin_allowed(websocket: WebSocket, settings: SimulationSettings) -> bool:
@@ -85,22 +87,12 @@ async def monitor(websocket: WebSocket, sim_id: str) -> None:
         registry.detach(entry)
 
 
-def _same(a: object, b: object) -> bool:
-    """Equal values, NaN equal to NaN (a NaN that stays NaN has not changed)."""
-    if a is b:
-        return True
-    if type(a) is not type(b):
-        return False
-    if a == b:
-        return True
-    return isinstance(a, float) and math.isnan(a) and math.isnan(b)  # type: ignore[arg-type]
-
-
 class MonitorClient:
     def __init__(self, websocket: WebSocket, entry: SimulationEntry, settings: SimulationSettings) -> None:
         self.websocket = websocket
         self.entry = entry
-        self.runner: SimRunner = entry.runner
+        self.simulation: SimulationHandle = entry.handle
+        self.key = next(_KEYS)
         self.settings = settings
         self.loop = asyncio.get_running_loop()
         self.wake = asyncio.Event()
@@ -124,11 +116,10 @@ class MonitorClient:
         self.tracing = False
         self.trace_due = 0.0
 
-    # ------------------------------------------------------------------ runner listener (any thread)
+    # ------------------------------------------------------------------ simulation listener (any thread)
 
-    def event(self, message: m.Status | m.Log, target: object | None) -> None:
-        if target is None or target is self:
-            self.loop.call_soon_threadsafe(self._enqueue, message)
+    def event(self, message: m.Status | m.Log) -> None:
+        self.loop.call_soon_threadsafe(self._enqueue, message)
 
     def frame(self) -> None:
         # Most clients are waiting for their interval, not for a frame: wake only those that are
@@ -147,7 +138,6 @@ class MonitorClient:
             self.wake.set()
 
     def _on_closed(self) -> None:
-        self._enqueue(m.Log(type="log", level="warning", message="the simulation was deleted"))
         self.ending = True
         self.wake.set()
 
@@ -166,15 +156,25 @@ class MonitorClient:
         self._enqueue(m.Error(type="error", code=code, message=message))  # type: ignore[arg-type]
 
     async def serve(self) -> None:
-        self.runner.add_listener(self)
-        self._enqueue(self.runner.status())
+        status, history, dropped = self.simulation.attach(self)
+        try:
+            await self._send(status)
+            if dropped:
+                await self._send(
+                    m.Log(type="log", kind="system", level="info", message=f"{dropped} older log entries are not kept")
+                )
+            for entry in history:  # the log so far, then live entries (attach: none in both, none lost)
+                await self._send(entry)
+        except (WebSocketDisconnect, RuntimeError, OSError):
+            self.simulation.detach(self)
+            return
         sender = asyncio.create_task(self._send_loop())
         try:
             await self._receive_loop(sender)
         finally:
             sender.cancel()
-            self.runner.remove_listener(self)
-            await asyncio.to_thread(self.runner.unwatch, self)
+            self.simulation.detach(self)
+            self.simulation.unwatch(self.key)
 
     async def _receive_loop(self, sender: asyncio.Task) -> None:
         while not sender.done():
@@ -223,40 +223,25 @@ class MonitorClient:
             self.error("bad_state", f"internal error: {type(error).__name__}: {error}")
 
     async def _dispatch(self, request: BaseModel) -> None:
-        runner = self.runner
+        simulation = self.simulation
         match request:
             case m.Subscribe():
                 await self._subscribe(request)
-            case m.Write(path=path, value=value):
-                await asyncio.to_thread(runner.write, path, value)
-            case m.Force(path=path, value=value):
-                await asyncio.to_thread(runner.force, path, value)
-            case m.Unforce(path=path):
-                await asyncio.to_thread(runner.unforce, path)
-            case m.UnforceAll():
-                await asyncio.to_thread(runner.unforce_all)
-            case m.BreakpointSet(pou=pou):
-                await asyncio.to_thread(runner.set_breakpoint, pou, **_where(request))
-            case m.BreakpointClear(pou=pou):
-                await asyncio.to_thread(runner.clear_breakpoint, pou, **_where(request))
-            case m.Continue():
-                await asyncio.to_thread(runner.resume)
-            case m.Step(granularity=granularity):
-                await asyncio.to_thread(runner.step, granularity)
-            case m.Run():
-                await asyncio.to_thread(runner.start)
-            case m.Stop():
-                await asyncio.to_thread(runner.stop)
-            case m.SingleCycle():
-                await asyncio.to_thread(runner.single_cycle)
             case m.TraceStart(paths=paths, samples=samples, trigger=trigger, id=trace_id):
-                await asyncio.to_thread(runner.start_trace, self, paths, samples, trigger, trace_id)
+                trigger_fields = trigger.model_dump() if trigger is not None else None
+                await simulation.start_trace(
+                    self.key, paths=paths, samples=samples, trigger=trigger_fields, trace_id=trace_id
+                )
                 self.tracing, self.trace_due = True, self.loop.time()  # the first chunk at once
                 self.wake.set()
             case m.TraceStop():
-                runner.stop_trace(self)
+                await simulation.acall("trace_stop", owner=self.key)
                 self.trace_due = self.loop.time()
                 self.wake.set()
+            case m.BreakpointSet(pou=pou) | m.BreakpointClear(pou=pou):
+                await simulation.acall(request.type, pou=pou, **_where(request))
+            case _:  # the other commands are the simulation's by the same name and fields
+                await simulation.acall(request.type, **request.model_dump(exclude={"type"}))
 
     async def _subscribe(self, request: m.Subscribe) -> None:
         limits = self.settings
@@ -268,7 +253,7 @@ class MonitorClient:
                 f"and {len(request.elements)}",
             )
         elements = [(e.pou_instance, e.ids) for e in request.elements]
-        self.watch = await asyncio.to_thread(self.runner.watch, self, request.paths, elements)
+        self.watch = await self.simulation.watch(self.key, request.paths, elements)
         self.elements = [(e.pou_instance, e.pou_instance.strip().upper(), e.ids) for e in request.elements]
         self.interval_s = request.interval_ms / 1000.0
         self.full, self.next_due = True, self.loop.time()
@@ -286,7 +271,7 @@ class MonitorClient:
                     await self.websocket.close(code=CLOSE_DELETED, reason="simulation deleted")
                     return
                 if self.watch is not None and self.loop.time() >= self.next_due:
-                    await self._send_values(self.runner.frame)
+                    await self._send_values(self.simulation.frame)
                 if self.tracing and self.loop.time() >= self.trace_due:
                     await self._send_trace()
         except (WebSocketDisconnect, RuntimeError, OSError):
@@ -295,7 +280,7 @@ class MonitorClient:
     async def _sleep(self) -> None:
         if self.outbox or self.status is not None or self.ending:
             return
-        if self.waiting_frame and self.runner.frame.seq != self.sent_seq:
+        if self.waiting_frame and self.simulation.frame.seq != self.sent_seq:
             return
         dues = [self.next_due] if self.watch is not None and not self.waiting_frame else []
         if self.tracing:
@@ -339,9 +324,9 @@ class MonitorClient:
         self.next_due = self.loop.time() + self.interval_s
 
     async def _send_trace(self) -> None:
-        chunk = self.runner.trace_chunk(self)
+        chunk = self.simulation.traces.take(self.key)
         if chunk is None:
-            self.tracing = self.runner.traces.active(self)  # replaced or dropped meanwhile: nothing more
+            self.tracing = self.simulation.traces.active(self.key)  # replaced or dropped meanwhile: nothing more
         else:
             await self._send(chunk)
             self.tracing = chunk.state != "done"
@@ -349,29 +334,22 @@ class MonitorClient:
 
     def values_message(self, frame: Frame) -> m.Values | None:
         """What changed for this client since its last message (everything after a subscribe); None: nothing."""
-        full, changed, power = self.full, {}, {}
-        last = self.last_values
-        for path in self.watch.locations if self.watch is not None else ():
-            value = frame.values.get(path)
-            if full or not _same(last.get(path, _MISSING), value):
-                changed[path] = last[path] = value
-        for label, instance, ids in self.elements:
-            view = frame.probes.get(instance)
-            if view is None:
-                continue
-            for element in ids if ids is not None else sorted(view.values.keys() | view.executed):
-                state = view.values.get(element) if element in view.executed else None
-                key = f"{label}/{element}"
-                if full or not _same(self.last_power.get(key, _MISSING), state):
-                    power[key] = self.last_power[key] = state
+        full = self.full
+        values = {path: frame.values.get(path) for path in (self.watch.paths if self.watch is not None else ())}
+        states = {
+            f"{label}/{element}": shown.get(element)
+            for label, instance, ids in self.elements
+            if (shown := frame.power.get(instance)) is not None
+            for element in (ids if ids is not None else sorted(shown))
+        }
+        changed = values if full else changes(self.last_values, values)
+        power = states if full else changes(self.last_power, states)
+        self.last_values.update(changed)
+        self.last_power.update(power)
         forced = list(frame.forced)
         if not (full or changed or power or forced != self.last_forced or frame.scan != self.last_scan):
             return None
-        types = (
-            {path: display_type(loc.type) for path, loc in self.watch.locations.items()}
-            if full and self.watch is not None
-            else {}
-        )
+        types = dict(self.watch.paths) if full and self.watch is not None else {}
         self.full, self.last_forced, self.last_scan = False, forced, frame.scan
         return m.Values.model_construct(
             type="values",
@@ -382,17 +360,6 @@ class MonitorClient:
             power=power,
             types=types,
         )
-
-
-def display_type(ty: t.IrType) -> m.DisplayType:
-    """How a client shows a value of ``ty`` (IR types name themselves differently by kind)."""
-    if isinstance(ty, t.Subrange):
-        ty = ty.base
-    if isinstance(ty, t.Enum):
-        return m.DisplayType(name=ty.name, names={str(value): name for name, value in ty.values})
-    if isinstance(ty, t.Array):
-        return m.DisplayType(name="ARRAY")
-    return m.DisplayType(name=ty.fb if isinstance(ty, t.FbInstance) else ty.name)
 
 
 def _where(request: m.BreakpointSet | m.BreakpointClear) -> dict[str, object]:

@@ -9,19 +9,19 @@ from __future__ import annotations
 
 from typing import Annotated
 
-from fastapi import APIRouter, Header, Response, status
+from fastapi import APIRouter, Header, Request, Response, status
 
 from ..examples import EXAMPLES_DIR
 from ..model import Diagnostic, Pou, Project
 from ..model.api import CheckReport, CreateProject, ProjectDocument, ProjectSummary, RenameProject, SaveResult
 from ..model.validate import validate_project
-from ..simulation.check import check_project
 from ..storage import ConflictError, NotFoundError, Workspace
 from ..storage.names import check_project_name
 from ..storage.project_folder import PROJECT_FILE, read_project_folder
 from .context import WorkspaceDep, etag, modified_at, revision_from_header
 from .errors import ApiError, responses
 from .limits import Limits, LimitsDep, check_project_size, check_room_for_project
+from .live_check import check_report
 
 router = APIRouter(prefix="/api/projects", tags=["projects"])
 
@@ -163,9 +163,9 @@ def delete_project(name: str, workspace: WorkspaceDep, if_match: IfMatch = None)
 
 
 @router.post("/{name}/check", response_model=CheckReport, responses=responses(404, 422))
-def check(name: str, workspace: WorkspaceDep) -> CheckReport:
+def check(name: str, workspace: WorkspaceDep, request: Request) -> CheckReport:
     """Every diagnostic of the saved project (model validation, declarations, ST; LD/FBD via check.py)."""
-    return CheckReport(diagnostics=check_project(workspace.load(name).project))
+    return check_report(request.app, workspace.load(name).project)
 
 
 def _required(if_match: str | None) -> str:

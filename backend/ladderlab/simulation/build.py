@@ -6,25 +6,30 @@ a project that runs in one runs identically in the other.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from ..engine.compile import CompiledProgram, CompileError, compile_program
 from ..engine.simulation import Simulation
+from ..engine.tasks import DEFAULT_WATCHDOG_S
 from ..ir.lower_project import lower_project
 from ..model import Diagnostic, Project
 
 
 @dataclass
 class Build:
-    """``compiled`` is None when the diagnostics hold an error."""
+    """``compiled`` is None when the diagnostics hold an error; ``watchdogs``: the tasks' own budgets (s)."""
 
     compiled: CompiledProgram | None
     diagnostics: list[Diagnostic]
+    watchdogs: dict[str, float] = field(default_factory=dict)
 
-    def simulation(self, **options) -> Simulation:
+    def simulation(self, watchdog_s: float = DEFAULT_WATCHDOG_S, **options) -> Simulation:
+        """A simulation of the program; ``watchdog_s`` is the budget of tasks that do not set their own."""
         if self.compiled is None:
             raise CompileError(self.diagnostics)
-        return Simulation(self.compiled, **options)
+        tasks = self.compiled.program.tasks
+        limits = {task.name: self.watchdogs.get(task.name.upper(), watchdog_s) for task in tasks} if tasks else {}
+        return Simulation(self.compiled, watchdog_s=limits or watchdog_s, **options)
 
 
 def build_project(project: Project, variant: str = "fast") -> Build:
@@ -35,7 +40,8 @@ def build_project(project: Project, variant: str = "fast") -> Build:
     diagnostics = list(lowered.diagnostics)
     if lowered.program is None:  # the lowering withholds the program whenever a diagnostic is an error
         return Build(None, diagnostics)
+    watchdogs = {task.name.upper(): task.watchdog_ms / 1000.0 for task in project.tasks if task.watchdog_ms}
     try:
-        return Build(compile_program(lowered.program, variant), diagnostics)
+        return Build(compile_program(lowered.program, variant), diagnostics, watchdogs)
     except CompileError as error:
         return Build(None, diagnostics + error.diagnostics)

@@ -1,26 +1,29 @@
-"""The thread that runs one simulation in real time; the only way anything touches it.
+"""One simulation's engine thread: scans paced on the wall clock, commands between two scans.
 
-A ``Simulation`` is a synchronous object for one thread at a time. ``SimRunner``
-owns it: a scan thread paces scans against the wall clock (``engine.tasks.Pacer``)
-while it is running, and every command (write, force, breakpoint, step, reset...)
-takes the same lock, so commands from the server's worker threads never interleave
-with a scan. A scan that takes long (up to its watchdog) holds the lock; callers on
-the event loop therefore run commands in a worker thread, never on the loop.
+A ``Simulation`` is a synchronous object for one thread. ``SimRunner.serve`` is that thread's
+loop (in a simulation's worker process, ``worker.py``): it runs the scans that are due
+(``engine.tasks.Pacer``) and, between two scans, the commands other threads ``submit`` (run,
+stop, write, force, breakpoints, steps, watches, traces...), in the order they came, each
+answered through its own callback. Nothing else touches the simulation, so it needs no lock,
+and the watchdog's clock (the thread's CPU time) measures this thread alone.
 
-Readers never take the lock: after scans the scan thread publishes an immutable
-``Frame`` (the values of everything any client watches, the probes of the watched
-POU instances, the forced paths) at most every ``publish_s`` seconds, and at once
-after a command. Each websocket client diffs the latest frame against what it sent
-last, so the cost of a scan does not grow with the number of clients.
+What the runner has to say goes to a ``Sink``:
 
-The simulation runs the monitor variant (probes, no pause points) and switches to
-the debug variant only while a breakpoint is set or a scan is halted (a step),
-between scans, keeping all state (``Simulation.use_variant``; ``_fit_variant``).
+* ``status``: the state (running, stopped, halted with where, faulted) whenever it changes;
+* ``log``: entries of the online log (ON-15): run/stop/reset/single cycle, writes, forces,
+  releases, breakpoint hits, watchdog trips and runtime errors, with kind, scan and virtual time;
+* ``frame``: after scans at most every ``publish_s``, and at once after a command or a change of
+  state (so a halt shows the values of the halt point): what changed since the previous frame in
+  the values and element states that some client watches, the forced paths, the trace samples
+  recorded since, and the figures of ``info``. Only the watched paths and the watched elements
+  (the networks a client has in view) are read, never a whole POU (``Simulation.probes``).
 
-Listeners hear about state changes, log entries (faults, forces) and new frames,
-from whichever thread made them: they must only hand them over (e.g.
-``loop.call_soon_threadsafe``). Traces are sampled after every scan into
-``self.traces`` (``trace.py``), which clients read in chunks without the lock.
+Every message is plain data (dicts, lists, strings, numbers), so it can cross a process
+boundary or a network (docs/architecture.md, "Online mode").
+
+The simulation runs the monitor variant and switches to the debug variant only while a
+breakpoint is set or a scan is halted (a step), between scans, keeping all state
+(``Simulation.use_variant``; ``_fit_variant``).
 """
 
 from __future__ import annotations
@@ -28,24 +31,25 @@ from __future__ import annotations
 import logging
 import threading
 import time
+from collections import deque
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Protocol
+from typing import Any, ClassVar, Protocol
 
 from ..engine.codegen.faults import Fault
 from ..engine.compile import CompileError
 from ..engine.debug import Halt
 from ..engine.paths import Location, UnknownPath
-from ..engine.simulation import ProbeView, Simulation
+from ..engine.simulation import Simulation
 from ..engine.tasks import Pacer
 from ..ir import nodes as ir
 from ..ir import types as t
-from ..model.monitor import At, Log, Status, TraceData, TraceTrigger
+from ..model.monitor import At, DisplayType, Log, TraceTrigger
 from .trace import TraceBook, TraceRefused, plan_trace
 
 log = logging.getLogger(__name__)
 
-State = str  # "running" | "stopped" | "halted" | "faulted"
+_MISSING = object()
 
 
 class CommandError(Exception):
@@ -57,38 +61,32 @@ class CommandError(Exception):
         self.message = message
 
 
-@dataclass(frozen=True)
-class Frame:
-    """Values published after a scan or a command: ``seq`` grows with every publication."""
+class Sink(Protocol):
+    """Where a runner's messages go (plain data; called on the engine thread)."""
 
-    seq: int
-    scan: int
-    time_ms: float
-    values: dict[str, object]  # canonical path -> value
-    probes: dict[str, ProbeView]  # canonical instance path (upper case) -> its probes
-    forced: tuple[str, ...]
+    def status(self, state: str, at: dict | None) -> None: ...
+
+    def log(self, entry: dict) -> None: ...
+
+    def frame(self, frame: dict) -> None: ...
 
 
-EMPTY_FRAME = Frame(0, 0, 0.0, {}, {}, ())
+#: How a submitted command is answered: (result, None) or (None, the refusal).
+Reply = Callable[[object, CommandError | None], None]
 
 
-@dataclass(frozen=True)
-class Watch:
-    """One client's resolved subscription: variables by canonical path, POU instances to probe."""
-
-    locations: dict[str, Location]
-    instances: tuple[str, ...] = ()  # canonical (upper-case) instance paths
-
-
-class Listener(Protocol):
-    def event(self, message: Status | Log, target: object | None) -> None:
-        """A message for every client (``target`` None) or for the client that asked for it."""
-
-    def frame(self) -> None:
-        """A new frame was published."""
-
-    def closed(self) -> None:
-        """The simulation was deleted: nothing more will come."""
+def changes(sent: dict[str, object], current: dict[str, object]) -> dict[str, object]:
+    """The entries of ``current`` that are new or differ from ``sent``: another value, another type (TRUE is
+    not 1), but a NaN that stays NaN has not changed. Runs for every watched value of every frame."""
+    changed = {}
+    for key, value in current.items():
+        old = sent.get(key, _MISSING)
+        if value == old and type(value) is type(old):
+            continue
+        if value != value and type(old) is float and old != old:  # NaN stays NaN
+            continue
+        changed[key] = value
+    return changed
 
 
 def at_halt(halt: Halt) -> At:
@@ -116,162 +114,175 @@ def at_origin(origin: ir.Origin | None, pou: str | None, instance: str | None) -
     )
 
 
+def display_type(ty: t.IrType) -> DisplayType:
+    """How a client shows a value of ``ty`` (IR types name themselves differently by kind)."""
+    if isinstance(ty, t.Subrange):
+        ty = ty.base
+    if isinstance(ty, t.Enum):
+        return DisplayType(name=ty.name, names={str(value): name for name, value in ty.values})
+    if isinstance(ty, t.Array):
+        return DisplayType(name="ARRAY")
+    return DisplayType(name=ty.fb if isinstance(ty, t.FbInstance) else ty.name)
+
+
+def value_text(value: object) -> str:
+    """A value as the log shows it: BOOLs as TRUE/FALSE like IEC literals."""
+    return ("TRUE" if value else "FALSE") if isinstance(value, bool) else repr(value)
+
+
+@dataclass(frozen=True)
+class _Watch:
+    """One client's subscription: variables by canonical path; POU instances with the elements watched."""
+
+    locations: dict[str, Location]
+    elements: tuple[tuple[str, tuple[str, ...] | None], ...]  # (canonical instance, ids; None: every element)
+
+
 class SimRunner:
-    """Runs ``sim`` (monitor variant, debug while debugging; or any variant it was built with) in its own thread."""
+    """Runs ``sim`` (monitor variant, debug while debugging; or any variant it was built with) on ``serve``'s thread."""
 
     def __init__(
         self,
         sim: Simulation,
+        sink: Sink,
         *,
         speed: float = 1.0,
         publish_s: float = 0.02,
         clock: Callable[[], float] = time.monotonic,
     ) -> None:
         self.sim = sim
-        self.lock = threading.RLock()
+        self.sink = sink
         self.speed = speed
         self.publish_s = publish_s
         self.clock = clock
-        self.frame: Frame = EMPTY_FRAME
-        self._overruns = 0  # pacer skips of finished runs
-        self.after_scan: list[Callable[[Simulation], None]] = []  # called in the scan's thread, lock held
-        self._ctx = sim.compiled.generated.context
-        self._listeners: list[Listener] = []
-        self._watches: dict[object, Watch] = {}
-        self._reader = sim.reader({})
-        self._instances: tuple[str, ...] = ()
         self.traces = TraceBook()
+        self._ctx = sim.compiled.generated.context
+        self._cv = threading.Condition()
+        self._commands: deque[tuple[str, dict, Reply]] = deque()
         self._running = False
         self._faulted = False
         self._seen_faults = 0
         self._seen_scans = sim.scan_count
         self._pacer: Pacer | None = None
+        self._delay: float | None = None
+        self._overruns = 0  # pacer skips of finished runs
         self._real_s = 0.0
         self._run_since: float | None = None
         self._last_publish = float("-inf")
-        self._status: tuple[State, At | None] = (self._state(), None)
-        self._wake = threading.Condition(self.lock)
-        self._woken = False
-        self._closed = False
-        self._thread = threading.Thread(target=self._loop, name="ladderlab-sim", daemon=True)
-        self._thread.start()
+        self._status: tuple[str, At | None] = (self._state(), None)
+        self._fault_report: tuple[Fault | None, dict | None] = (None, None)
+        # watches: each client's, and their union (what a frame reads)
+        self._watches: dict[object, _Watch] = {}
+        self._reader = sim.reader({})
+        self._union: dict[str, tuple[bool, tuple[str, ...]]] = {}  # instance -> (every element?, ids)
+        self._full = True  # the next frame holds every watched value (the union changed)
+        self._sent_values: dict[str, object] = {}
+        self._sent_power: dict[str, dict[str, object]] = {}
+        self._sent_forced: list[str] | None = None
+        self._seq = 0
 
-    # ------------------------------------------------------------------ listeners
+    # ------------------------------------------------------------------ other threads
 
-    def add_listener(self, listener: Listener) -> None:
-        with self.lock:
-            self._listeners.append(listener)
+    def submit(self, op: str, args: dict[str, Any], reply: Reply) -> None:
+        """Run the command ``op`` between two scans; ``reply`` gets its result (on the engine thread)."""
+        with self._cv:
+            self._commands.append((op, args, reply))
+            self._cv.notify()
 
-    def remove_listener(self, listener: Listener) -> None:
-        with self.lock:
-            if listener in self._listeners:
-                self._listeners.remove(listener)
+    # ------------------------------------------------------------------ the engine thread
 
-    def _emit(self, message: Status | Log, target: object | None = None) -> None:
-        for listener in list(self._listeners):
-            listener.event(message, target)
+    def serve(self) -> None:
+        """Scan and run commands, for the life of the process (it ends when the server goes or ends it)."""
+        self._settle(publish=True)
+        while True:
+            with self._cv:
+                if not self._commands:
+                    self._cv.wait(self._delay if self._running else None)
+                commands, self._commands = self._commands, deque()
+            for op, args, reply in commands:
+                self._execute(op, args, reply)
+            if self._running and self._pacer is not None:  # halted: the pacer idles and re-anchors after
+                try:
+                    self._delay = self._pacer.poll()
+                except Exception as error:
+                    log.exception("simulation thread failed")
+                    self._set_running(False)
+                    self._log("system", "error", f"internal error, simulation stopped: {error!r}")
+                self._settle()
+
+    def _execute(self, op: str, args: dict[str, Any], reply: Reply) -> None:
+        handler = self._OPS.get(op)
+        result: object = None
+        failure: CommandError | None = None
+        try:
+            if handler is None:
+                raise CommandError("bad_state", f"unknown command {op!r}")
+            result = handler(self, **args)
+        except CommandError as error:
+            failure = error
+        except Exception as error:
+            log.exception("simulation command %s failed", op)
+            failure = CommandError("bad_state", f"internal error: {type(error).__name__}: {error}")
+        self._settle(publish=True)  # before the reply: the server has the command's values when it answers
+        reply(result, failure)
 
     # ------------------------------------------------------------------ state
 
-    def _state(self) -> State:
+    def _state(self) -> str:
         if self.sim.halted is not None:
             return "halted"
         if self._faulted:
             return "faulted"
         return "running" if self._running else "stopped"
 
-    @property
-    def state(self) -> State:
-        with self.lock:
-            return self._state()
-
-    def status(self) -> Status:
-        with self.lock:
-            state, at = self._status
-            return Status(type="status", state=state, at=at)  # type: ignore[arg-type]
-
-    @property
-    def overruns(self) -> int:
-        """Times the scans fell more than the pacer's lag behind the wall clock and skipped ahead."""
-        with self.lock:
-            return self._overruns + (self._pacer.overruns if self._pacer is not None else 0)
-
-    def real_time_ms(self) -> float:
-        with self.lock:
-            running = self.clock() - self._run_since if self._run_since is not None else 0.0
-            return (self._real_s + running) * 1000.0
-
-    # ------------------------------------------------------------------ the scan thread
-
-    def _loop(self) -> None:
-        with self.lock:
-            while not self._closed:
-                delay: float | None = None
-                if self._running and self._pacer is not None:  # halted: the pacer idles and re-anchors after
-                    try:
-                        delay = self._pacer.poll()
-                    except Exception as error:
-                        log.exception("simulation thread failed")
-                        self._set_running(False)
-                        self._emit(
-                            Log(type="log", level="error", message=f"internal error, simulation stopped: {error!r}")
-                        )
-                    self._settle()
-                if not self._woken:
-                    self._wake.wait(delay)
-                self._woken = False
-
-    def _poke(self) -> None:
-        """Wake the scan thread (lock held): the state or the schedule changed."""
-        self._woken = True
-        self._wake.notify()
-
-    def close(self) -> None:
-        """End the scan thread and tell the listeners; every later command is refused."""
-        with self.lock:
-            if self._closed:
-                return
-            self._closed = True
-            self._set_running(False)
-            self._poke()
-            listeners, self._listeners = self._listeners, []
-        for listener in listeners:
-            listener.closed()
-        if threading.current_thread() is not self._thread:
-            self._thread.join(timeout=5)
-
-    # ------------------------------------------------------------------ after every step of the engine
+    def info(self) -> dict[str, Any]:
+        """The figures of the simulation (``SimulationInfo`` less what the server knows itself)."""
+        sim, stats = self.sim, self.sim.stats
+        running = self.clock() - self._run_since if self._run_since is not None else 0.0
+        fault = sim.fault
+        if fault is not self._fault_report[0]:
+            self._fault_report = (fault, fault.diagnostic().model_dump(mode="json") if fault is not None else None)
+        return {
+            "state": self._state(),
+            "scan_count": sim.scan_count,
+            "time_ms": sim.time_ms,
+            "real_time_ms": (self._real_s + running) * 1000.0,
+            "scan_ms": {"min": stats.min_ms, "avg": stats.avg_ms, "max": stats.max_ms, "last": stats.last_ms},
+            "overruns": self._overruns + (self._pacer.overruns if self._pacer is not None else 0),
+            "fault": self._fault_report[1],
+            "variant": sim.variant,
+        }
 
     def _settle(self, publish: bool = False) -> None:
-        """Account for what the engine did since the last call (lock held): scans, faults, halts, state."""
+        """Account for what the engine did since the last call: scans, faults, halts, state; publish when due."""
         sim = self.sim
         self._fit_variant()
         if sim.scan_count != self._seen_scans:
             self._seen_scans = sim.scan_count
             self.traces.sample(sim)
-            for hook in self.after_scan:
-                hook(sim)
         if len(sim.faults) > self._seen_faults:
             for fault in sim.faults[self._seen_faults :]:
-                self._emit(self._fault_log(fault))
+                self._fault_log(fault)
             self._seen_faults = len(sim.faults)
             self._faulted = True
             self._set_running(False)
         state = self._state()
         status = (state, at_halt(sim.halted) if sim.halted is not None else None)
-        now = self.clock()
-        # A new state (above all a halt) is published with the values of that moment, so a client
-        # shows the values at the halt point at once, not those of the last periodic frame.
-        if publish or status != self._status or now - self._last_publish >= self.publish_s:
-            self._publish(now)
-        if status != self._status:
+        changed = status != self._status
+        if changed:
             self._status = status
-            self._emit(Status(type="status", state=state, at=status[1]))  # type: ignore[arg-type]
+            at = status[1].model_dump() if status[1] is not None else None
+            if sim.halted is not None and sim.halted.reason == "breakpoint":
+                self._log("breakpoint", "info", f"halted at the breakpoint at {_where(status[1])}", at=at)
+            self.sink.status(state, at)
+        # A new state (above all a halt) is followed at once by the values of that moment, so a client
+        # shows the values at the halt point, not those of the last periodic frame.
+        now = self.clock()
+        if publish or changed or now - self._last_publish >= self.publish_s:
+            self._publish(now)
 
     def _fit_variant(self) -> None:
-        """Debug code only while debugging: a breakpoint is set or a scan is halted; else the monitor code.
-
-        Called with the lock held."""
+        """Debug code only while debugging: a breakpoint is set or a scan is halted; else the monitor code."""
         sim = self.sim
         if sim.variant not in ("monitor", "debug"):
             return
@@ -280,44 +291,99 @@ class SimRunner:
             sim.use_variant("debug" if debugging else "monitor")
 
     def _needs_debug(self) -> None:
-        """Switch to the debug variant before a breakpoint or step command (compiled on first use; lock held)."""
+        """Switch to the debug variant before a breakpoint or step command (compiled on first use)."""
         if self.sim.variant == "monitor":
             try:
                 self.sim.use_variant("debug")
             except CompileError as error:
                 raise CommandError("bad_state", f"cannot debug this program: {error}") from None
 
-    def _fault_log(self, fault: Fault) -> Log:
-        return Log(
+    def _log(self, kind: str, level: str, message: str, at: dict | None = None) -> None:
+        entry = Log(
+            type="log",
+            kind=kind,  # type: ignore[arg-type]
+            level=level,  # type: ignore[arg-type]
+            message=message,
+            scan=self.sim.scan_count,
+            time_ms=self.sim.time_ms,
+        )
+        data = entry.model_dump()
+        data["at"] = at
+        self.sink.log(data)
+
+    def _fault_log(self, fault: Fault) -> None:
+        where = at_origin(fault.origin, fault.pou, fault.instance)
+        entry = Log(
             type="log",
             kind="watchdog" if fault.kind == "watchdog" else "fault",
             level="error",
             message=fault.text(),
-            at=at_origin(fault.origin, fault.pou, fault.instance),
+            at=where,
             scan=fault.scan,
             time_ms=fault.time_ms,
         )
+        self.sink.log(entry.model_dump())
+
+    # ------------------------------------------------------------------ frames
 
     def _publish(self, now: float) -> None:
         self._last_publish = now
+        full, sim = self._full, self.sim
         values = self._reader.read()
-        probes = {}
-        for instance in self._instances:
-            try:
-                probes[instance] = self.sim.probes(instance)
-            except KeyError:
-                probes[instance] = ProbeView({}, frozenset())
-        self.frame = Frame(
-            self.frame.seq + 1, self.sim.scan_count, self.sim.time_ms, values, probes, tuple(self.sim.forced)
+        if full:
+            changed = values
+            self._sent_values = dict(values)
+        else:
+            changed = changes(self._sent_values, values)
+            self._sent_values.update(changed)
+        power: dict[str, dict[str, object]] = {}
+        for instance, (every, ids) in self._union.items():
+            states = self._states(instance, every, ids)
+            if full:
+                self._sent_power[instance] = dict(states)
+                power[instance] = states
+                continue
+            sent = self._sent_power.setdefault(instance, {})
+            diff = changes(sent, states)
+            if diff:
+                sent.update(diff)
+                power[instance] = diff
+        forced = list(sim.forced)
+        new_forced = full or forced != self._sent_forced
+        self._sent_forced = forced
+        self._full = False
+        self._seq += 1
+        self.sink.frame(
+            {
+                "seq": self._seq,
+                "scan": sim.scan_count,
+                "time_ms": sim.time_ms,
+                "wall": time.time(),  # when these values were read (latency measurements)
+                "full": full,
+                "values": changed,
+                "power": power,
+                "forced": forced if new_forced else None,
+                "traces": self.traces.take_all(),
+                "info": self.info(),
+            }
         )
-        for listener in list(self._listeners):
-            listener.frame()
+
+    def _states(self, instance: str, every: bool, ids: tuple[str, ...]) -> dict[str, object]:
+        """Each watched element's state: its value when it ran in the last scan, else None."""
+        view = self.sim.probes(instance, None if every else ids)
+        elements = sorted((view.values.keys() | view.executed).union(ids)) if every else ids
+        return {e: (view.values.get(e) if e in view.executed else None) for e in elements}
+
+    # ------------------------------------------------------------------ run control
 
     def _set_running(self, running: bool) -> None:
         now = self.clock()
         if running and not self._running:
             self._run_since = now
-            self._pacer = Pacer(_Scans(self), speed=self.speed, clock=self.clock)
+            self._pacer = Pacer(
+                _Scans(self), speed=self.speed, clock=self.clock, interrupted=lambda: bool(self._commands)
+            )
+            self._delay = 0.0
         elif not running and self._running:
             self._real_s += now - (self._run_since or now)
             self._run_since = None
@@ -326,214 +392,155 @@ class SimRunner:
             self._pacer = None
         self._running = running
 
-    def _command(self, action: Callable[[], object]) -> object:
-        """Run ``action`` on the engine under the lock, then publish and report what changed."""
-        with self.lock:
-            self._check_open()
-            try:
-                return action()
-            finally:
-                self._settle(publish=True)
-                self._poke()
-
-    def _check_open(self) -> None:
-        if self._closed:
-            raise CommandError("bad_state", "the simulation has been deleted")
-
-    # ------------------------------------------------------------------ run control
-
     def start(self) -> None:
-        def action() -> None:
-            if self._faulted:
-                raise CommandError("bad_state", "the simulation stopped on a fault: reset it before running")
-            self._set_running(True)
-            if self.sim.halted is not None:
-                self.sim.resume()
+        if self._faulted:
+            raise CommandError("bad_state", "the simulation stopped on a fault: reset it before running")
+        halted = self.sim.halted is not None
+        self._log("state", "info", "run: continued the halted scan, then scans run" if halted else "run")
+        self._set_running(True)
+        if halted:
+            self.sim.resume()
 
-        self._command(action)
-
-    def stop(self) -> None:
-        def action() -> None:
-            if self._running and self.sim.halted is not None:  # the state stays "halted": say what Stop did
-                self._emit(
-                    Log(
-                        type="log",
-                        kind="state",
-                        level="info",
-                        scan=self.sim.scan_count,
-                        time_ms=self.sim.time_ms,
-                        message="stopped: the scan stays halted; Continue or a step finishes it, "
-                        "then no further scan runs",
-                    )
-                )
-            self._set_running(False)
-
-        self._command(action)
+    def stop(self, reason: str | None = None) -> None:
+        """Stop after the scan under way; ``reason`` is logged (e.g. the last client left)."""
+        if self._running and self.sim.halted is not None:  # the state stays "halted": say what Stop did
+            self._log(
+                "state",
+                "info",
+                "stopped: the scan stays halted; Continue or a step finishes it, then no further scan runs",
+            )
+        elif self._running:
+            self._log("state", "info", f"stopped: {reason}" if reason else "stopped")
+        self._set_running(False)
 
     def reset(self, cold: bool = False) -> None:
         """Warm or cold restart: stops, ends a halted scan, clears the faults (forces stay)."""
-
-        def action() -> None:
-            self._set_running(False)
-            self.sim.reset(cold=cold)
-            self._faulted = False
-            self._seen_faults = 0
-
-        self._command(action)
+        self._set_running(False)
+        self.sim.reset(cold=cold)
+        self._faulted = False
+        self._seen_faults = 0
+        self._log("state", "info", "reset (cold: RETAIN variables too)" if cold else "reset (warm)")
 
     def single_cycle(self) -> None:
         """One scan of a stopped simulation; when halted, the rest of the current scan."""
-
-        def action() -> None:
-            if self.sim.halted is not None:
-                self.sim.resume()
-                return
-            if self._running:
-                raise CommandError("bad_state", "the simulation is running: stop it before a single cycle")
-            if self._faulted:
-                raise CommandError("bad_state", "the simulation stopped on a fault: reset it first")
-            self.sim.cycle(1)
-
-        self._command(action)
+        if self.sim.halted is not None:
+            self._log("state", "info", "single cycle: finished the halted scan")
+            self.sim.resume()
+            return
+        if self._running:
+            raise CommandError("bad_state", "the simulation is running: stop it before a single cycle")
+        if self._faulted:
+            raise CommandError("bad_state", "the simulation stopped on a fault: reset it first")
+        self._log("state", "info", "single cycle")
+        self.sim.cycle(1)
 
     def resume(self) -> None:
-        def action() -> None:
-            if self.sim.halted is None:
-                raise CommandError("bad_state", "the simulation is not halted")
-            self.sim.resume()
+        if self.sim.halted is None:
+            raise CommandError("bad_state", "the simulation is not halted")
+        self.sim.resume()
 
-        self._command(action)
-
-    def step(self, granularity: str) -> None:
+    def step(self, granularity: str = "statement") -> None:
         """Halted: continue to the next pause point of this granularity. Else halt in the next scan."""
+        if self._faulted and self.sim.halted is None:
+            raise CommandError("bad_state", "the simulation stopped on a fault: reset it first")
+        self._needs_debug()
+        self.sim.step(granularity)
 
-        def action() -> None:
-            if self._faulted and self.sim.halted is None:
-                raise CommandError("bad_state", "the simulation stopped on a fault: reset it first")
-            self._needs_debug()
-            self.sim.step(granularity)
+    def set_breakpoint(self, pou: str, **where: Any) -> None:
+        self._debug("set_breakpoint", pou, **where)
 
-        self._command(action)
-
-    def set_breakpoint(self, pou: str, **where: object) -> None:
-        self._command(lambda: self._debug("set_breakpoint", pou, **where))
-
-    def clear_breakpoint(self, pou: str | None = None, **where: object) -> None:
+    def clear_breakpoint(self, pou: str | None = None, **where: Any) -> None:
         if pou is None:
-            self._command(lambda: self.sim.debugger is not None and self.sim.clear_breakpoints())
+            if self.sim.debugger is not None:
+                self.sim.clear_breakpoints()
         else:
-            self._command(lambda: self._debug("clear_breakpoint", pou, **where))
+            self._debug("clear_breakpoint", pou, **where)
 
-    def _debug(self, method: str, pou: str, **where: object) -> object:
+    def _debug(self, method: str, pou: str, **where: Any) -> None:
         self._needs_debug()
         try:
-            return getattr(self.sim, method)(pou, **where)
+            getattr(self.sim, method)(pou, **where)
         except ValueError as error:
             raise CommandError("bad_path", str(error)) from None
 
     # ------------------------------------------------------------------ variables
 
-    def location(self, path: str) -> Location:
-        """Resolve a path (no lock: the resolver only reads the compiled program)."""
+    def _location(self, path: str) -> Location:
         try:
             return self.sim.location(path)
         except (UnknownPath, ValueError) as error:
             raise CommandError("bad_path", str(error)) from None
 
     def write(self, path: str, value: object) -> None:
-        self.location(path)
-        self._command(lambda: self._coerced(self.sim.write, path, value))
+        location = self._location(path)
+        _coerced(self.sim.write, path, value)
+        when = "" if self.sim.halted is not None else " (before the next scan)"
+        self._log("write", "info", f"wrote {location.path} := {_written(value)}{when}")
 
     def force(self, path: str, value: object) -> None:
-        location = self.location(path)
-
-        def action() -> None:
-            self._coerced(self.sim.force, path, value)
-            self._emit(
-                Log(
-                    type="log",
-                    kind="force",
-                    level="info",
-                    message=f"forced {location.path} := {_text(self.sim.read(path))}",
-                    scan=self.sim.scan_count,
-                    time_ms=self.sim.time_ms,
-                )
-            )
-
-        self._command(action)
+        location = self._location(path)
+        _coerced(self.sim.force, path, value)
+        self._log("force", "info", f"forced {location.path} := {value_text(self.sim.read(path))}")
 
     def unforce(self, path: str) -> None:
-        location = self.location(path)
-
-        def action() -> None:
-            if location.path not in self.sim.forced:
-                raise CommandError("bad_path", f"{location.path} is not forced")
-            self.sim.unforce(path)
-            self._emit(
-                Log(
-                    type="log",
-                    kind="release",
-                    level="info",
-                    message=f"released the force on {location.path}",
-                    scan=self.sim.scan_count,
-                    time_ms=self.sim.time_ms,
-                )
-            )
-
-        self._command(action)
+        location = self._location(path)
+        if location.path not in self.sim.forced:
+            raise CommandError("bad_path", f"{location.path} is not forced")
+        self.sim.unforce(path)
+        self._log("release", "info", f"released the force on {location.path}")
 
     def unforce_all(self) -> None:
-        def action() -> None:
-            count = len(self.sim.forced)
-            self.sim.unforce_all()
-            if count:
-                self._emit(
-                    Log(
-                        type="log",
-                        kind="release",
-                        level="info",
-                        message=f"released all forces ({count})",
-                        scan=self.sim.scan_count,
-                        time_ms=self.sim.time_ms,
-                    )
-                )
+        count = len(self.sim.forced)
+        self.sim.unforce_all()
+        if count:
+            self._log("release", "info", f"released all forces ({count})")
 
-        self._command(action)
+    def inspect(self, paths: list[str] = (), probes: list[str] = ()) -> dict[str, Any]:  # type: ignore[assignment]
+        """The whole state, for tests and diagnosis: every variable, forces, breakpoints, the halt, the variant."""
+        sim = self.sim
+        return {
+            **self.info(),
+            "snapshot": sim.snapshot(),
+            "forced": sim.forced,
+            "breakpoints": sorted(sim.debugger.breakpoints) if sim.debugger is not None else [],
+            "halted": at_halt(sim.halted).model_dump() if sim.halted is not None else None,
+            "values": {path: self._read(path) for path in paths},
+            "probes": {
+                instance: {"values": view.values, "executed": sorted(view.executed)}
+                for instance in probes
+                for view in [sim.probes(instance)]
+            },
+        }
 
-    @staticmethod
-    def _coerced(method: Callable[[str, object], None], path: str, value: object) -> None:
-        try:
-            method(path, value)
-        except ValueError as error:
-            raise CommandError("bad_value", str(error)) from None
+    def _read(self, path: str) -> object:
+        self._location(path)
+        return self.sim.read(path)
 
     # ------------------------------------------------------------------ watching
 
-    def watch(self, key: object, paths: list[str], elements: list[tuple[str, list[str] | None]]) -> Watch:
-        """Set ``key``'s subscription (replacing its previous one); the next frame carries its values.
+    def watch(self, key: object, paths: list[str], elements: list[tuple[str, list[str] | None]]) -> dict[str, Any]:
+        """Set ``key``'s subscription (replacing its previous one); the next frame holds every watched value.
 
-        ``elements``: (POU instance, element ids or None for all) whose probes to publish."""
-        locations = {}
+        ``elements``: (POU instance, element ids or None for all) whose states to publish. Returns the
+        canonical paths with their display types, and the canonical instances."""
+        locations: dict[str, Location] = {}
         for path in paths:
-            location = self.location(path)
+            location = self._location(path)
             locations.setdefault(location.path, location)
-        canonical = []
+        watched = []
         for instance, ids in elements:
-            with self.lock:
-                try:
-                    self.sim.probes(instance)
-                except KeyError as error:
-                    raise CommandError("bad_path", str(error.args[0])) from None
+            try:
+                self.sim.probes(instance, ())
+            except KeyError as error:
+                raise CommandError("bad_path", str(error.args[0])) from None
             self._check_elements(instance, ids or [])
-            canonical.append(instance.strip().upper())
-        watch = Watch(locations, tuple(dict.fromkeys(canonical)))
-
-        def action() -> None:
-            self._watches[key] = watch
-            self._rebuild_union()
-
-        self._command(action)
-        return watch
+            watched.append((instance.strip().upper(), tuple(ids) if ids is not None else None))
+        self._watches[key] = _Watch(locations, tuple(watched))
+        self._rebuild_union()
+        return {
+            "paths": {path: display_type(location.type).model_dump() for path, location in locations.items()},
+            "instances": [instance for instance, _ in watched],
+        }
 
     def _check_elements(self, instance: str, ids: list[str]) -> None:
         """Every id must be a probed element (or pin, ``box.Q``) of the instance's POU."""
@@ -549,21 +556,26 @@ class SimRunner:
         pou = self._ctx.pous.get(name)
         if pou is not None and pou.kind in ("program", "function"):
             return pou.name
-        location = self.location(instance)
+        location = self._location(instance)
         if isinstance(location.type, t.FbInstance):
             return location.type.fb
         raise CommandError("bad_path", f"{location.path} is not a POU instance")
 
     def unwatch(self, key: object) -> None:
-        with self.lock:
-            if self._watches.pop(key, None) is not None:
-                self._rebuild_union()
+        if self._watches.pop(key, None) is not None:
+            self._rebuild_union()
         self.traces.drop(key)
 
     def _rebuild_union(self) -> None:
         union = {path: loc for watch in self._watches.values() for path, loc in watch.locations.items()}
         self._reader = self.sim.reader(union)
-        self._instances = tuple(dict.fromkeys(i for watch in self._watches.values() for i in watch.instances))
+        instances: dict[str, tuple[bool, dict[str, None]]] = {}
+        for watch in self._watches.values():
+            for instance, ids in watch.elements:
+                every, known = instances.get(instance, (False, {}))
+                instances[instance] = (every or ids is None, {**known, **dict.fromkeys(ids or ())})
+        self._union = {instance: (every, tuple(ids)) for instance, (every, ids) in instances.items()}
+        self._full = True
 
     # ------------------------------------------------------------------ traces
 
@@ -572,28 +584,65 @@ class SimRunner:
         owner: object,
         paths: list[str],
         samples: int | None = None,
-        trigger: TraceTrigger | None = None,
+        trigger: dict | None = None,
         trace_id: int = 0,
     ) -> None:
         """Record ``paths`` after every scan for ``owner`` (replacing its running trace); see ``trace.py``."""
         try:
-            plan = plan_trace(self.location, paths, trigger)
+            plan = plan_trace(self._location, paths, TraceTrigger(**trigger) if trigger else None)
         except TraceRefused as error:
             raise CommandError("bad_path", str(error)) from None
-        self._command(lambda: self.traces.start(owner, trace_id, plan, samples, self.sim))
+        self.traces.start(owner, trace_id, plan, samples, self.sim)
 
     def stop_trace(self, owner: object) -> None:
         if not self.traces.stop(owner):
             raise CommandError("bad_state", "no trace is running: start one with trace_start")
 
-    def trace_chunk(self, owner: object) -> TraceData | None:
-        """``owner``'s samples since its previous chunk (no runner lock: a scan may be running)."""
-        return self.traces.take(owner)
+    #: The commands ``submit`` accepts, by name (the wire protocol's ``op``, worker.py).
+    _OPS: ClassVar[dict[str, Callable[..., object]]] = {
+        "run": start,
+        "stop": stop,
+        "reset": reset,
+        "single_cycle": single_cycle,
+        "continue": resume,
+        "step": step,
+        "breakpoint_set": set_breakpoint,
+        "breakpoint_clear": clear_breakpoint,
+        "write": write,
+        "force": force,
+        "unforce": unforce,
+        "unforce_all": unforce_all,
+        "watch": watch,
+        "unwatch": unwatch,
+        "trace_start": start_trace,
+        "trace_stop": stop_trace,
+        "inspect": inspect,
+    }
 
 
-def _text(value: object) -> str:
-    """A value as the log shows it: BOOLs as TRUE/FALSE like IEC literals."""
-    return ("TRUE" if value else "FALSE") if isinstance(value, bool) else repr(value)
+def _coerced(method: Callable[[str, object], None], path: str, value: object) -> None:
+    try:
+        method(path, value)
+    except ValueError as error:
+        raise CommandError("bad_value", str(error)) from None
+
+
+def _written(value: object) -> str:
+    """A written value as the user gave it (IEC literal text as typed, JSON values as IEC literals)."""
+    return value if isinstance(value, str) else value_text(value)
+
+
+def _where(at: At | None) -> str:
+    if at is None:
+        return "an unknown place"
+    parts = [at.pou]
+    if at.network is not None:
+        parts.append(f"network {at.network}")
+    if at.element is not None:
+        parts.append(f"element {at.element}")
+    if at.line is not None:
+        parts.append(f"line {at.line}")
+    return ", ".join(parts) + (f" (instance {at.instance})" if at.instance and at.instance != at.pou else "")
 
 
 class _Scans:

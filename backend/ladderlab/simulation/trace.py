@@ -1,10 +1,10 @@
 """Traces of online mode: up to 20 variables sampled after every scan, handed over in chunks.
 
-The scan thread calls ``TraceBook.sample`` after every scan (the runner's lock held, so the
-values are those the scan left); each websocket client's sender takes the samples recorded since
-its previous chunk with ``TraceBook.take`` at its monitor interval. The book has a lock of its
-own, so a sender never waits for a scan (a scan holds the runner's lock up to its watchdog time).
-The browser keeps the ring buffer it draws; the server holds only samples not taken yet, at most
+In the simulation's process the engine thread calls ``TraceBook.sample`` after every scan (so the
+values are those the scan left) and hands each client's samples recorded since the previous frame
+to the server with every frame (``take_all``: chunks as plain data). On the server a ``TraceInbox``
+merges them per client until the client's sender takes them at its monitor interval. The browser
+keeps the ring buffer it draws; the server holds only samples not taken yet, at most
 ``MAX_TRACE_SAMPLES`` per trace (older ones are dropped and counted in the next chunk's ``lost``).
 """
 
@@ -13,6 +13,7 @@ from __future__ import annotations
 import threading
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import Any
 
 from ..engine.paths import Location
 from ..engine.simulation import Simulation
@@ -95,7 +96,7 @@ class _Recorder:
     scans: list[int] = field(default_factory=list)
     times: list[float] = field(default_factory=list)
     columns: list[list[object]] = field(default_factory=list)
-    triggered: TraceTriggered | None = None
+    triggered: dict[str, Any] | None = None  # TraceTriggered's fields
     lost: int = 0
     unreported: bool = True  # a state change (or the start) the client has not been told about
 
@@ -107,7 +108,7 @@ class _Recorder:
             if not fired(plan.condition, plan.level, previous, current):
                 return
             self.state, self.unreported = "recording", True
-            self.triggered = TraceTriggered(scan=sim.scan_count, time_ms=sim.time_ms)
+            self.triggered = {"scan": sim.scan_count, "time_ms": sim.time_ms}
         if len(self.scans) >= MAX_TRACE_SAMPLES:  # the client is not taking them: keep the newest
             del self.scans[0], self.times[0]
             for column in self.columns:
@@ -121,21 +122,20 @@ class _Recorder:
         if self.samples is not None and self.recorded >= self.samples:
             self.state, self.unreported = "done", True
 
-    def chunk(self) -> TraceData | None:
-        """The samples since the previous chunk (and the state), or None when nothing is new."""
+    def chunk(self) -> dict[str, Any] | None:
+        """The samples since the previous chunk (and the state) as ``TraceData`` fields, or None when nothing is new."""
         if not self.scans and not self.unreported:
             return None
         values = {location.path: column for location, column in zip(self.plan.locations, self.columns)}
-        data = TraceData.model_construct(
-            type="trace_data",
-            id=self.id,
-            state=self.state,
-            scans=self.scans,
-            time_ms=self.times,
-            values=values,
-            triggered=self.triggered,
-            lost=self.lost,
-        )
+        data = {
+            "id": self.id,
+            "state": self.state,
+            "scans": self.scans,
+            "time_ms": self.times,
+            "values": values,
+            "triggered": self.triggered,
+            "lost": self.lost,
+        }
         self.scans, self.times = [], []
         self.columns = [[] for _ in self.plan.locations]
         self.triggered, self.lost, self.unreported = None, 0, False
@@ -143,16 +143,15 @@ class _Recorder:
 
 
 class TraceBook:
-    """The running trace of each client (its owner key), sampled by the scan thread."""
+    """The running trace of each client (its owner key), sampled on the engine thread after every scan."""
 
     def __init__(self) -> None:
-        self._lock = threading.Lock()
         self._traces: dict[object, _Recorder] = {}
 
     def start(self, owner: object, trace_id: int, plan: TracePlan, samples: int | None, sim: Simulation) -> None:
-        """Start (or replace) ``owner``'s trace; call with the runner's lock held (reads the trigger)."""
+        """Start (or replace) ``owner``'s trace (reads the trigger's value now)."""
         previous = sim.value(plan.trigger) if plan.trigger is not None else None
-        recorder = _Recorder(
+        self._traces[owner] = _Recorder(
             trace_id,
             plan,
             samples,
@@ -160,42 +159,94 @@ class TraceBook:
             state="waiting" if plan.trigger else "recording",
             columns=[[] for _ in plan.locations],
         )
-        with self._lock:
-            self._traces[owner] = recorder
 
     def stop(self, owner: object) -> bool:
         """End ``owner``'s trace; its next chunk is the last. False when it has none running."""
-        with self._lock:
-            recorder = self._traces.get(owner)
-            if recorder is None or recorder.state == "done":
-                return False
-            recorder.state, recorder.unreported = "done", True
-            return True
+        recorder = self._traces.get(owner)
+        if recorder is None or recorder.state == "done":
+            return False
+        recorder.state, recorder.unreported = "done", True
+        return True
 
     def sample(self, sim: Simulation) -> None:
-        """After every scan (runner's lock held): one sample per recording trace."""
-        if not self._traces:
-            return
-        with self._lock:
-            for recorder in self._traces.values():
-                if recorder.state != "done":
-                    recorder.sample(sim)
+        """After every scan: one sample per recording trace."""
+        for recorder in self._traces.values():
+            if recorder.state != "done":
+                recorder.sample(sim)
 
-    def take(self, owner: object) -> TraceData | None:
-        """``owner``'s new samples, or None; a finished trace is forgotten with its last chunk."""
-        with self._lock:
-            recorder = self._traces.get(owner)
-            if recorder is None:
-                return None
-            data = recorder.chunk()
+    def take_all(self) -> dict[object, dict[str, Any]]:
+        """Every owner's new samples (a finished trace is forgotten with its last chunk)."""
+        chunks = {}
+        for owner, recorder in list(self._traces.items()):
+            chunk = recorder.chunk()
+            if chunk is not None:
+                chunks[owner] = chunk
             if recorder.state == "done":
                 del self._traces[owner]
-            return data
+        return chunks
+
+    def drop(self, owner: object) -> None:
+        self._traces.pop(owner, None)
+
+
+class TraceInbox:
+    """The server's side: chunks from the simulation's frames, merged per client until its sender takes them.
+
+    Threads: the supervisor adds, the event loop takes; hence the lock."""
+
+    def __init__(self) -> None:
+        self._lock = threading.Lock()
+        self._running: set[object] = set()
+        self._pending: dict[object, dict[str, Any]] = {}
+
+    def open(self, owner: object) -> None:
+        """``owner`` starts a trace: what is pending of its previous one is dropped."""
+        with self._lock:
+            self._running.add(owner)
+            self._pending.pop(owner, None)
+
+    def add(self, owner: object, chunk: dict[str, Any]) -> None:
+        with self._lock:
+            if owner not in self._running:
+                return
+            pending = self._pending.get(owner)
+            if pending is None or pending["id"] != chunk["id"]:
+                self._pending[owner] = pending = {**chunk, "values": {p: list(v) for p, v in chunk["values"].items()}}
+                pending["scans"], pending["time_ms"] = list(chunk["scans"]), list(chunk["time_ms"])
+            else:
+                pending["scans"] += chunk["scans"]
+                pending["time_ms"] += chunk["time_ms"]
+                for path, column in chunk["values"].items():
+                    pending["values"][path] += column
+                pending["state"] = chunk["state"]
+                pending["triggered"] = pending["triggered"] or chunk["triggered"]
+                pending["lost"] += chunk["lost"]
+            excess = len(pending["scans"]) - MAX_TRACE_SAMPLES
+            if excess > 0:  # the client is not taking them: keep the newest
+                del pending["scans"][:excess], pending["time_ms"][:excess]
+                for column in pending["values"].values():
+                    del column[:excess]
+                pending["lost"] += excess
+
+    def take(self, owner: object) -> TraceData | None:
+        """``owner``'s samples since its previous chunk, or None; a finished trace is forgotten with its last chunk."""
+        with self._lock:
+            pending = self._pending.pop(owner, None)
+            if pending is None:
+                return None
+            if pending["state"] == "done":
+                self._running.discard(owner)
+        triggered = pending["triggered"]
+        return TraceData.model_construct(
+            type="trace_data",
+            **{**pending, "triggered": TraceTriggered(**triggered) if triggered is not None else None},
+        )
 
     def active(self, owner: object) -> bool:
         with self._lock:
-            return owner in self._traces
+            return owner in self._running
 
     def drop(self, owner: object) -> None:
         with self._lock:
-            self._traces.pop(owner, None)
+            self._running.discard(owner)
+            self._pending.pop(owner, None)

@@ -483,7 +483,7 @@ class ConfigBlock:
 
 @dataclass(slots=True)
 class Resource:
-    name: str
+    name: str | None  # None: a configuration's tasks and programs written without a RESOURCE block
     on: str | None
     items: list[TaskConfig | ProgramConfig | VarBlock]
     span: Span = _span()

@@ -186,15 +186,15 @@ class BodyChecker:
         if isinstance(base, t.FbType):
             return self._fb_member(node, base)
         part = partial_access(node.name)
-        if part is not None and t.category(base) in ("bits", "int"):
+        if part is not None and isinstance(base, t.Elementary) and base.category in ("bits", "int"):
             return self._part(node, base, *part)
         self.report("ST-UNKNOWN-MEMBER", f"'{node.name}' cannot be selected from a {base}", node)
         return ERROR
 
-    def _part(self, node: ast.Member, base: Type, width: int, index: int) -> Type:
+    def _part(self, node: ast.Member, base: t.Elementary, width: int, index: int) -> Type:
         """Bit access ``x.3`` / ``x.%X3`` and partial access ``x.%B1``, ``.%W0``, ``.%D1``, ``.%L0`` (IEC 61131-3
         ed. 3, 6.5.6; on integers too, as CODESYS allows), numbered from the least significant part."""
-        bits = base.info.bits  # type: ignore[union-attr]
+        bits = base.info.bits
         if index >= bits // width:
             what = _PART_NAMES[width]
             self.report(

@@ -67,8 +67,9 @@ def default_type(literals: list[Type], family: str = "ANY_NUM") -> Type:
     if any(isinstance(x, t.UntypedReal) for x in literals) or family == "ANY_REAL":
         return t.LREAL
     fallback = t.concrete(t.UntypedInt(), family)
+    values = [x.value for x in literals if isinstance(x, (t.UntypedInt, t.UntypedReal))]
     for candidate in _CANDIDATES.get(family, _CANDIDATES["ANY_NUM"]):
-        if all(t.literal_fits(candidate, x.value) for x in literals):  # type: ignore[attr-defined]
+        if all(t.literal_fits(candidate, value) for value in values):
             return candidate
     return fallback
 
@@ -255,9 +256,9 @@ def fold(node: Any, target: Type, notes: list[tuple[Any, str]] | None = None) ->
         if node.op == "-" and isinstance(node.operand, (ast.IntLit, ast.RealLit)):  # a signed literal: -32768
             return _literal_value(-node.operand.value, target, node)
         _in_family(node, "NOT" if node.op == "NOT" else "-", target)
-        value = fold(node.operand, target, notes)
+        value: Any = fold(node.operand, target, notes)
         if node.op == "-":
-            return _result(-value, target, node, notes)  # type: ignore[operator]
+            return _result(-value, target, node, notes)
         return _not(value, target)
     if isinstance(node, ast.Binary):
         _in_family(node, node.op, target)
@@ -350,7 +351,8 @@ def _apply(node: ast.Binary, left: Any, right: Any, target: Type) -> Any:
 def _not(value: Any, target: Type) -> Any:
     if isinstance(value, bool):
         return not value
-    bits = target.info.bits  # type: ignore[union-attr]
+    assert isinstance(target, t.Elementary)  # NOT of a number: a bit string (_in_family)
+    bits = target.info.bits
     return value ^ ((1 << bits) - 1)
 
 

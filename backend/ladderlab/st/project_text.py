@@ -107,7 +107,7 @@ def _configuration(config: ast.Configuration, source: _Text, diagnostics: list[D
     resources = [item for item in config.items if isinstance(item, ast.Resource)]
     direct = [item for item in config.items if isinstance(item, (ast.TaskConfig, ast.ProgramConfig))]
     if direct:  # tasks and programs without a RESOURCE block: the configuration's single resource
-        resources.insert(0, ast.Resource(None, None, direct, direct[0].span))  # type: ignore[arg-type]
+        resources.insert(0, ast.Resource(None, None, list(direct), direct[0].span))
     return Configuration(
         name=config.name,
         globals=source.kept([i for i in config.items if isinstance(i, ast.VarBlock)]),

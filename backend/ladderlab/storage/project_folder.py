@@ -40,10 +40,12 @@ def dump_json(data: Any) -> str:
 
 
 def _task(task: Task) -> dict:
-    """A task as project.json holds it; ``single`` only when set, so files of cyclic tasks stay as they were."""
+    """A task as project.json holds it; ``single`` and ``watchdog_ms`` only when set, so files of cyclic tasks stay
+    as they were (``interval`` stays even when null: null means a SINGLE task without an interval)."""
     data = task.model_dump(mode="json")
-    if data["single"] is None:
-        del data["single"]
+    for optional in ("single", "watchdog_ms"):
+        if data[optional] is None:
+            del data[optional]
     return data
 
 
@@ -60,7 +62,10 @@ def project_files(project: Project) -> dict[str, str]:
         "tasks": [_task(t) for t in project.tasks],
     }
     if project.configuration is not None:
-        meta["configuration"] = project.configuration.model_dump(mode="json")
+        configuration = project.configuration.model_dump(mode="json")
+        for resource, stored in zip(project.configuration.resources, configuration["resources"], strict=True):
+            stored["tasks"] = [_task(t) for t in resource.tasks]
+        meta["configuration"] = configuration
     files = {
         PROJECT_FILE: dump_json(meta),
         TYPES_FILE: _text_file(project.types),

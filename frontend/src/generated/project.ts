@@ -120,6 +120,10 @@ export interface Task {
    * A BOOL global or direct address: the task runs once on each of its rising edges.
    */
   single?: string | null;
+  /**
+   * The task's time budget per scan in ms (its scan's own running time); longer is a watchdog fault. Null: the default of 100 ms (CODESYS's).
+   */
+  watchdog_ms?: number | null;
 }
 /**
  * A program organisation unit. ``body`` is ST text, an ``LdBody`` or an ``FbdBody`` per ``language``.

@@ -7,11 +7,10 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 
 from ...iec import stdlib as catalogue
-from ...iec.addresses import parse_address
 from ...ir import nodes as ir
 from ...ir import types as t
 from ...model.diagnostics import Diagnostic
-from ..process_image import image_view_name, key_of, view_kind
+from ..process_image import image_view_name, key_of, located_address, view_kind
 from ..stdlib import STANDARD_FBS
 from . import names
 from .layout import Layout
@@ -68,7 +67,14 @@ class ProbeTable:
     group_count: int = 0
     constants: dict[int, object] = field(default_factory=dict)  # probes of constants: no store, the value is here
     deferred: list[int] = field(default_factory=list)  # read after the scan by ll_read_probes (codegen/deferred.py)
+    #: The variable each deferred probe reads, as a path below the program instance (``T1.Q``), so a monitor
+    #: can read a few of them without ``ll_read_probes`` reading them all.
+    deferred_paths: dict[int, str] = field(default_factory=dict)
     _index: dict[str, int] = field(default_factory=dict)
+
+    def index(self, element: str) -> int | None:
+        """The probe number of ``element`` (None: not probed)."""
+        return self._index.get(element)
 
     def probe(self, element: str, group: int, constant: object = UNSET) -> int:
         index = self._index.get(element)
@@ -94,7 +100,7 @@ class ModuleContext:
     variant: str
     pous: dict[str, ir.Pou] = field(default_factory=dict)
     layouts: dict[str, Layout] = field(default_factory=dict)
-    globals: Layout | None = None
+    globals: Layout = field(init=False)  # set in __post_init__
     structs: dict[t.Struct, str] = field(default_factory=dict)
     bound: dict[str, object] = field(default_factory=dict)
     origins: list[ir.Origin] = field(default_factory=list)
@@ -120,7 +126,7 @@ class ModuleContext:
     @property
     def located(self) -> list[ir.Slot]:
         """Every located variable: the globals' (addresses used without a declaration among them), the POUs'."""
-        found = list(self.globals.located.values())  # type: ignore[union-attr]
+        found = list(self.globals.located.values())
         for layout in self.layouts.values():
             found += layout.located.values()
         return found
@@ -129,13 +135,13 @@ class ModuleContext:
         """Bytes of each process image area: up to the last byte a located variable uses."""
         sizes: dict[str, int] = {}
         for slot in self.located:
-            address = parse_address(slot.address)  # type: ignore[arg-type]
+            address = located_address(slot.address)
             sizes[address.area] = max(sizes.get(address.area, 0), address.end)
         return sizes
 
     def image_view(self, slot: ir.Slot) -> tuple[str, int]:
         """(the name of the view a located slot is read and written through, its key in that view)."""
-        address = parse_address(slot.address)  # type: ignore[arg-type]
+        address = located_address(slot.address)
         return image_view_name(address.area, view_kind(address, runtime_name(slot.type))), key_of(address)
 
     def instance(self, name: str) -> ir.ProgramInstance | None:

@@ -16,7 +16,7 @@ from types import FrameType
 from ...ir import nodes as ir
 from ...ir import types as t
 from ...model.diagnostics import Diagnostic
-from ..errors import WATCHDOG, PlcRuntimeError
+from ..errors import OUT_OF_MEMORY, WATCHDOG, PlcRuntimeError
 from . import names
 from .context import ModuleContext, std_pin_type
 from .mentions import statement_vars
@@ -34,7 +34,7 @@ class Fault:
     """Why and where a task stopped.
 
     ``kind``: ``runtime_error`` (an IEC fault: ``code`` is division_by_zero,
-    index_out_of_range, subrange_violation, for_step_zero), ``watchdog``, or
+    index_out_of_range, subrange_violation, for_step_zero; or out_of_memory), ``watchdog``, or
     ``internal_error`` (an unexpected exception in generated code; ``code`` is
     the exception's class name). ``origin`` is the failing statement's origin,
     ``instance`` the path of the POU instance (None inside a function),
@@ -114,6 +114,8 @@ def make_fault(
     if isinstance(error, PlcRuntimeError):
         kind = "watchdog" if error.code == WATCHDOG else "runtime_error"
         code, message = error.code, error.message
+    elif isinstance(error, MemoryError):  # a simulation process runs under a memory limit (simulation/worker.py)
+        kind, code, message = "runtime_error", OUT_OF_MEMORY, "out of memory: the scan needs more memory than allowed"
     else:
         kind, code, message = "internal_error", type(error).__name__, f"internal error: {type(error).__name__}: {error}"
     values: dict[str, object] = {}
@@ -196,7 +198,7 @@ class _FrameReader:
 
     def root(self, var: ir.Var) -> tuple[object, t.IrType]:
         if var.scope == "global":
-            place = self.context.globals.get(var.name)  # type: ignore[union-attr]
+            place = self.context.globals.get(var.name)
             return getattr(self.ns[global_owner(place.page)], place.attr), place.slot.type  # type: ignore[union-attr]
         slot = self.slots[var.name.upper()]
         attr, key = names.slot(slot.name), names.escape(slot.name)

@@ -143,7 +143,7 @@ def _emit_image(module: ModuleContext, src: Source) -> None:
 
 
 def program_globals(module: ModuleContext) -> list[ir.Slot]:
-    return [p.slot for p in module.globals.places.values()]  # type: ignore[union-attr]
+    return [p.slot for p in module.globals.places.values()]
 
 
 __all__ = ["VARIANTS", "Generated", "generate"]

@@ -24,7 +24,7 @@ from ..process_image import ProcessImage
 from ..stdlib import INLINE_NAMES, STANDARD_FBS
 from . import names
 
-#: Loop iterations between two clock readings of the watchdog.
+#: Loop back-edges between two clock readings of the watchdog (``ll_wb``, statements.py).
 WATCHDOG_EVERY = 256
 
 
@@ -152,16 +152,24 @@ class WatchdogTimeout(PlcRuntimeError):
 
 
 class Watchdog:
-    """The deadline of the running task, checked at loop back-edges every ``WATCHDOG_EVERY`` iterations."""
+    """The time budget of the running task.
 
-    def __init__(self, clock: Callable[[], float]) -> None:
+    Generated loops count ``countdown[0]`` (the module's ``ll_wb``) down at every back-edge, one count
+    per task scan however the loops nest or call each other, and call ``check`` when it runs out: every
+    ``WATCHDOG_EVERY`` back-edges the clock is read against the deadline. ``clock`` is the time the
+    scan's own thread has run (CPU time, ``time.thread_time``) unless a test passes another: a scan
+    that the operating system holds back on a loaded machine is not the program's fault."""
+
+    def __init__(self, clock: Callable[[], float], countdown: list[int]) -> None:
         self.clock = clock
+        self.countdown = countdown
         self.deadline = math.inf
         self.limit_s = math.inf
 
     def arm(self, limit_s: float) -> None:
         self.limit_s = limit_s
         self.deadline = self.clock() + limit_s
+        self.countdown[0] = WATCHDOG_EVERY
 
     def pause(self) -> float:
         """Time left; the clock does not run for a halted task."""
@@ -219,6 +227,7 @@ def namespace() -> dict[str, object]:
         ll_Structure=Structure,
         ll_now=0,
         ll_scan=0,  # the stamp of the running scan, for probe groups (context.ProbeTable)
+        ll_wb=[WATCHDOG_EVERY],  # the watchdog countdown of the running task (Watchdog, statements.py)
         ll_unset=UNSET,
     )
     ns.update({names.std_fb(name): cls for name, cls in FB_CLASSES.items()})

@@ -48,9 +48,9 @@ class Scope:
 
     def slot(self, var: ir.Var) -> ir.Slot:
         if var.scope == "global":
-            place = self.module.globals.get(var.name)  # type: ignore[union-attr]
+            place = self.module.globals.get(var.name)
             if place is None:
-                located = self.module.globals.located.get(var.name.upper())  # type: ignore[union-attr]
+                located = self.module.globals.located.get(var.name.upper())
                 if located is not None:
                     return located
                 raise CodegenError(f"unknown global variable {var.name}")
@@ -86,7 +86,7 @@ class Scope:
             return f"{view}[{key}]", slot.type, 0
         attr = names.slot(slot.name)
         if var.scope == "global":
-            place = self.module.globals.get(var.name)  # type: ignore[union-attr]
+            place = self.module.globals.get(var.name)
             return f"{global_owner(place.page)}.{attr}", slot.type, 0  # type: ignore[union-attr]
         if slot.var_class == "VAR_IN_OUT":
             if is_composite(slot.type):
@@ -106,7 +106,7 @@ class Scope:
             return f"({view}, {key})"
         attr = names.slot(slot.name)
         if var.scope == "global":
-            place = self.module.globals.get(var.name)  # type: ignore[union-attr]
+            place = self.module.globals.get(var.name)
             return f"({global_owner(place.page)}, {attr!r})"  # type: ignore[union-attr]
         if slot.var_class == "VAR_IN_OUT":
             return f"r_{names.escape(slot.name)}"

@@ -1,10 +1,14 @@
 """IR statements and blocks -> Python statements.
 
-Loops check the watchdog on their back-edge: a local countdown, so reading
-the clock costs one call every ``WATCHDOG_EVERY`` iterations. A POU whose
-blocks are jump targets runs them inside a dispatch loop (``ll_b`` is the
-segment to resume at; a jump sets it and ``continue``s, backward jumps check
-the watchdog). A long body is split into chunk functions (chunks.py); a jump to
+Loops check the watchdog on their back-edge, counting down one budget per scan:
+the task's countdown lives in ``ll_wb[0]``; the outermost loop of a function
+copies it into the local ``ll_w`` on entry (nested loops count on that same
+local: an inner loop does not start a fresh count) and stores it back when it
+ends or returns, so loops in called POUs draw on the same budget. The clock is
+read when the countdown runs out, every ``WATCHDOG_EVERY`` back-edges
+(``ll_wd``). A POU whose blocks are jump targets runs them inside a dispatch
+loop (``ll_b`` is the segment to resume at; a jump sets it and ``continue``s,
+backward jumps are back-edges of that loop). A long body is split into chunk functions (chunks.py); a jump to
 another chunk returns its target segment. The monitor and debug variants record
 probes (``ll_pr[i] = value``, and ``ll_px[g] = ll_k`` once per straight run of
 code: context.ProbeTable). In the debug variant every pause point is
@@ -13,8 +17,8 @@ code: context.ProbeTable). In the debug variant every pause point is
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from contextlib import nullcontext
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager, nullcontext
 from typing import ClassVar
 
 from ...iec.values import store_expr
@@ -25,7 +29,7 @@ from .chunks import ChunkPlan
 from .context import CodegenError, diagnostic, std_fb_class
 from .expressions import Expressions, literal
 from .mentions import calls_in, expression_vars, walk
-from .runtime import UNSET, WATCHDOG_EVERY
+from .runtime import UNSET
 from .scope import Scope
 from .source import Source
 from .typeinfo import describe, is_composite, runtime_name, store_code
@@ -56,6 +60,7 @@ class Statements:
         self.deferred = deferred  # id() of the probes read after the scan (deferred.py)
         self.reads: list[str] = []  # their ``ll_pr[i] = value`` lines, for the chunk's ll_read_probes part
         self._line: int | None = None
+        self.counting = False  # ``ll_w`` holds the watchdog countdown (inside a loop or the jump dispatch loop)
 
     # ------------------------------------------------------------------ blocks
 
@@ -71,7 +76,8 @@ class Statements:
                 self._report(f"label {block.label} is used twice", block.origin)
         if self.plan.inline:
             self.src.line("ll_b = 0")
-        self.src.line(f"ll_wj = {WATCHDOG_EVERY}")
+        self.src.line("ll_w = ll_wb[0]")
+        self.counting = True
         self.src.line("while True:")
         with self.src.indent():
             segment = self.segment - 1
@@ -82,7 +88,9 @@ class Statements:
                     self.src.line(f"if ll_b <= {segment}:")
                 with self.src.indent():
                     self.block(block)
+            self._store_countdown()
             self.src.line("break" if self.plan.inline else f"return {self.plan.ends(self.chunk)}")
+        self.counting = False
 
     def block(self, block: ir.Block) -> None:
         origin = block.origin
@@ -228,14 +236,26 @@ class Statements:
             with self.src.indent():
                 self.statements(s.orelse)
 
-    def _countdown(self, oid: int) -> str:
-        counter = self.scope.temp("w")
-        self.src.line(f"{counter} = {WATCHDOG_EVERY}")
-        return counter
+    @contextmanager
+    def _counted(self) -> Iterator[None]:
+        """Around a loop: the outermost one of the function takes the task's countdown and gives it back."""
+        if self.counting:
+            yield
+            return
+        self.src.line("ll_w = ll_wb[0]")
+        self.counting = True
+        try:
+            yield
+        finally:
+            self.counting = False
+        self._store_countdown()
 
-    def _back_edge(self, counter: str, oid: int) -> None:
-        self.src.line(f"{counter} -= 1")
-        self.src.line(f"if not {counter}: {counter} = ll_wd({oid})")
+    def _store_countdown(self) -> None:
+        self.src.line("ll_wb[0] = ll_w")
+
+    def _back_edge(self, oid: int) -> None:
+        self.src.line("ll_w -= 1")
+        self.src.line(f"if not ll_w: ll_w = ll_wd({oid})")
 
     def _loop_body(self, body: list[ir.Stmt]) -> None:
         self.loops += 1
@@ -256,14 +276,14 @@ class Statements:
             self.src.line(f"{values} = range({var}, {stop}, {step})")
         else:
             self.src.line(f"{values} = ll_for_range({var}, {end}, {step})")
-        counter = self._countdown(oid)
-        self.src.line(f"for {var} in {values}:")
-        with self.src.indent():
-            self._back_edge(counter, oid)
-            self._loop_body(s.body)
-        self.src.line("else:")  # normal end: the first value that failed the test (ST-71), stored like any value
-        with self.src.indent():
-            self.src.line(f"if {values}: {var} = {self._next(values, ty)}")
+        with self._counted():
+            self.src.line(f"for {var} in {values}:")
+            with self.src.indent():
+                self._back_edge(oid)
+                self._loop_body(s.body)
+            self.src.line("else:")  # normal end: the first value that failed the test (ST-71), stored like any value
+            with self.src.indent():
+                self.src.line(f"if {values}: {var} = {self._next(values, ty)}")
 
     def _next(self, values: str, ty: t.IrType) -> str:
         """The value after the last one of the range, stored in the FOR variable's type."""
@@ -273,22 +293,22 @@ class Statements:
         return stored
 
     def _while(self, s: ir.While, oid: int) -> None:
-        counter = self._countdown(oid)
-        self.src.line(f"while {self.x.expr(s.cond)}:")
-        with self.src.indent():
-            self._back_edge(counter, oid)
-            self._loop_body(s.body)
+        with self._counted():
+            self.src.line(f"while {self.x.expr(s.cond)}:")
+            with self.src.indent():
+                self._back_edge(oid)
+                self._loop_body(s.body)
 
     def _repeat(self, s: ir.Repeat, oid: int) -> None:
-        counter = self._countdown(oid)
-        self.src.line("while True:")
-        with self.src.indent():
-            self._back_edge(counter, oid)
-            self._loop_body(s.body)
-            with self.src.at(oid):
-                self.src.line(f"if {self.x.expr(s.until)}:")
-                with self.src.indent():
-                    self.src.line("break")
+        with self._counted():
+            self.src.line("while True:")
+            with self.src.indent():
+                self._back_edge(oid)
+                self._loop_body(s.body)
+                with self.src.at(oid):
+                    self.src.line(f"if {self.x.expr(s.until)}:")
+                    with self.src.indent():
+                        self.src.line("break")
 
     def _exit(self, s: ir.Exit, oid: int) -> None:
         if not self.loops:
@@ -296,6 +316,8 @@ class Statements:
         self.src.line("break")
 
     def _return(self, s: ir.Return, oid: int) -> None:
+        if self.counting:
+            self._store_countdown()
         if self.plan.inline:
             self.src.line(self.scope.return_statement())
         else:  # out of a chunk function: tell execute to stop (chunks.py)
@@ -311,12 +333,13 @@ class Statements:
             self.src.line(f"if {self.x.expr(s.cond)}:")
         with self.src.indent() if s.cond is not None else nullcontext():
             if self.plan.segment_chunk[target] != self.chunk:  # to another chunk: execute dispatches it
-                if target <= self.segment:  # a back-edge whose countdown would not survive the return
-                    self.src.line(f"ll_wd({oid})")
+                if target <= self.segment:  # a back-edge of the dispatch
+                    self._back_edge(oid)
+                self._store_countdown()
                 self.src.line(f"return {target}")
                 return
             if target <= self.segment:  # backward (or to its own segment): a loop back-edge
-                self._back_edge("ll_wj", oid)
+                self._back_edge(oid)
             self.src.line(f"ll_b = {target}")
             self.src.line("continue")
 
@@ -341,6 +364,8 @@ class Statements:
     def _defer(self, s: ir.Probe) -> None:
         index = self._record(s)
         self.probes.deferred.append(index)  # type: ignore[union-attr]
+        var: ir.Var = s.value  # type: ignore[assignment]  # deferred.py: a variable of the program, members only
+        self.probes.deferred_paths[index] = ".".join([var.name, *(m.name for m in var.path)])  # type: ignore
         self.reads.append(f"ll_pr[{index}] = {self.x.expr(s.value)}  # {names.comment_text(s.element)}")
         self.src.line(f"# ll_pr[{index}] is read after the scan  # {names.comment_text(s.element)}")
 
