@@ -76,8 +76,21 @@ def test_two_instances_of_one_program_are_two_states_named_by_their_instances():
     assert (sim.read("a.n"), sim.read("b.n"), sim.read("c.n")) == (102, 12, 0)  # VAR_CONFIG starts a at 100, b at 7
     assert sim.read("sum_a") == 102  # total => sum_a after each run of a
     assert sim.read("log") == 1 * 100 + 5 * 10 + 1  # 10 ms: a; 20 ms: b before a (priority 1 runs first)
-    with pytest.raises(KeyError, match="unknown variable or program 'Counter'"):
+    with pytest.raises(KeyError, match=r"PROGRAM Counter has 3 instances \(A, B, C\): name one"):
         sim.read("Counter.n")  # the program type is not an instance
+
+
+def test_the_one_instance_of_a_program_is_also_reached_by_the_program_name():
+    sim = simulation(
+        COUNTER + "CONFIGURATION C\nVAR_GLOBAL log : DINT; END_VAR\nTASK t (INTERVAL := T#10ms);\n"
+        "PROGRAM inst WITH t : Counter;\nEND_CONFIGURATION\n"
+    )
+    sim.cycle(3)
+    assert (sim.read("inst.n"), sim.read("Counter.n")) == (3, 3)
+    sim.write("counter.n", 10)  # as an online view of the program writes it (PLCopen's pouInstance names, Beremiz)
+    sim.cycle(1)
+    assert sim.read("INST.N") == 11
+    assert sim.location("Counter.n").path == "COUNTER.N"  # the path as asked: a watch list finds its value
 
 
 def test_a_single_task_runs_once_on_each_rising_edge():

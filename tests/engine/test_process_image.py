@@ -116,18 +116,31 @@ def test_inputs_are_read_at_the_start_of_a_scan_and_outputs_published_at_its_end
     sim.set_breakpoint("Main", line=6)  # after 'before := %IX0.1', before 'after := %IX0.1'
     sim.cycle(1)
     assert sim.halted is not None
-    sim.write("%IX0.1", True)  # while halted a write acts at once - on the inputs, not the image this scan reads
+    sim.write("%IX0.1", True)  # while halted a write acts at once, as on any variable (the watch list, ON-07)
+    assert sim.read("%IX0.1") is True
     sim.resume()
-    assert (sim.read("Main.before"), sim.read("Main.after"), sim.read("%QX3.1")) == (False, False, False)
+    assert (sim.read("Main.before"), sim.read("Main.after"), sim.read("%QX3.1")) == (False, True, True)
+    assert sim.published("%QX3.1") is True  # the end of the scan published the output image
     sim.clear_breakpoints()
-    sim.cycle(1)
-    assert (sim.read("Main.before"), sim.read("Main.after"), sim.read("%QX3.1")) == (True, True, True)
     sim.set_breakpoint("Main", line=10)  # 'level := ...': %QX3.1 was written this scan, not yet published
     sim.write("%IX0.1", False)
     sim.cycle(1)
-    assert sim.read("%QX3.1") is True  # the world still sees the last scan's outputs
+    assert sim.halted is not None
+    assert (sim.read("%QX3.1"), sim.published("%QX3.1")) == (False, True)  # the world still sees the last scan
     sim.resume()
-    assert sim.read("%QX3.1") is False
+    assert sim.published("%QX3.1") is False
+    with pytest.raises(ValueError, match="%IX0.1 is not an output"):
+        sim.published("%IX0.1")
+
+
+def test_the_program_writing_an_input_lasts_until_the_next_scan_reads_the_inputs():
+    sim = simulation("PROGRAM Main\nVAR a, b : BOOL; END_VAR\na := %IX0.0;\n%IX0.0 := TRUE;\nb := %IX0.0;\nEND_PROGRAM\n")
+    for _ in range(2):
+        sim.cycle(1)
+        assert (sim.read("Main.a"), sim.read("Main.b")) == (False, True)
+    sim.write("%IX0.0", True)
+    sim.cycle(1)
+    assert (sim.read("Main.a"), sim.read("Main.b")) == (True, True)
 
 
 def test_forced_inputs_reach_the_program_and_forced_outputs_are_published():

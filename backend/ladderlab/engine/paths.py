@@ -165,6 +165,13 @@ class Resolver:
         located = self.context.globals.located.get(name.upper()) if place is None else None
         if located is not None:
             return self._steps_located(text, located.name, located, rest)
+        if place is None and top:
+            instance = self._only_instance(name)
+            if instance is not None:  # PLC_PRG.x for the one instance of PLC_PRG, whatever its name
+                place = self.context.globals.get(instance)
+                if place is not None:
+                    root = ("global", global_owner(place.page))
+                    return self._steps(text, name.upper(), root, (place.attr,), place.slot, rest)
         if place is None:
             candidates = [p.slot.name for p in self.context.globals.places.values() if not p.slot.hidden]
             if top:
@@ -173,6 +180,16 @@ class Resolver:
             raise UnknownPath(f"unknown global variable {name!r}{did_you_mean(name, candidates)}")
         root = ("global", global_owner(place.page))
         return self._steps(text, place.slot.name, root, (place.attr,), place.slot, rest)
+
+    def _only_instance(self, name: str) -> str | None:
+        """The instance of PROGRAM ``name`` when it has exactly one (a configuration may name it otherwise)."""
+        pou = self.context.pous.get(name.upper())
+        if pou is None or pou.kind != "program":
+            return None
+        names = [i.name for i in self.context.instances if i.pou.upper() == name.upper()]
+        if len(names) > 1:
+            raise UnknownPath(f"PROGRAM {name} has {len(names)} instances ({', '.join(names)}): name one")
+        return names[0] if names else None
 
     def _steps(self, text, path, root, keys, slot: ir.Slot, rest) -> Location:
         ty = slot.type
@@ -255,10 +272,10 @@ class Resolver:
 
 
 def located_location(path: str, ty: t.IrType, address: Address) -> Location:
-    """A located variable or an address as the world sees it: read from the inputs set or the outputs published,
-    written to the inputs or the output image (engine/process_image.py)."""
+    """A located variable or an address: read from and written to the program's image; a write to an input also
+    sets the inputs the next scans read (engine/process_image.py)."""
     kind = view_kind(address, runtime_name(ty))
-    read, write = (image_view_name(ProcessImage.world(address.area, writing), kind) for writing in (False, True))
+    read, write = (image_view_name(ProcessImage.path_buffer(address.area, w), kind) for w in (False, True))
     return Location(path, ty, ("global", read), (key_of(address),), write_root=("global", write))
 
 

@@ -4,8 +4,9 @@ Areas (iec/addresses.py): ``I`` inputs, ``Q`` outputs, ``M`` memory (Mosaic ``R`
 works on images: at the start of every scan the inputs the world set (``inputs``: ``--set %IX0.1``, writes and
 forces) are copied into the input image ``I`` it reads, and at the end of every scan its output image ``Q`` is
 published (``outputs``), after the forces are applied again, so a forced output is what is published. ``M`` and
-``S`` are plain memory. Paths to an address or a located variable read the world's view - the inputs set, the
-outputs published - and write what the world may write: the inputs, or the output image (docs/runtime.md).
+``S`` are plain memory. Paths to an address or a located variable read and write the program's image, like any
+variable (so a halted scan shows what the program works with); a write to an input also sets the inputs, which the
+next scans read again (docs/runtime.md).
 
 A view is a typed window on one buffer, indexed by byte offset (a bit view: by bit number): ``view[k]`` reads,
 ``view[k] = v`` writes, so ``(view, k)`` is a reference like any other ``(container, key)`` of the engine and a
@@ -18,6 +19,7 @@ from __future__ import annotations
 import struct
 from collections.abc import Iterable
 from dataclasses import dataclass, field
+from typing import Any
 
 from ..iec.addresses import Address, parse_address
 from ..iec.elementary import ELEMENTARY
@@ -89,6 +91,23 @@ class FloatView:
         self.format.pack_into(self.buffer, offset, value)
 
 
+class MirrorView:
+    """What a path writes to an input: the inputs the world set and the input image the program reads, so a
+    write acts at once (also in a halted scan) and the next scans read it again; reads come from the image."""
+
+    __slots__ = ("image", "inputs")
+
+    def __init__(self, image: View, inputs: View) -> None:
+        self.image, self.inputs = image, inputs
+
+    def __getitem__(self, key: int) -> object:
+        return self.image[key]
+
+    def __setitem__(self, key: int, value: Any) -> None:  # the view's type: paths coerce what they write
+        self.inputs[key] = value
+        self.image[key] = value
+
+
 View = BitView | ByteBoolView | IntView | FloatView
 AREA_ORDER = "IQMS"
 
@@ -144,9 +163,14 @@ class ProcessImage:
         self.outputs = bytearray(sizes.get("Q", 0))  # published at the end of every scan
         self._views: dict[tuple[str, str], View] = {}
 
-    def view(self, buffer: str, kind: str) -> View:
-        """The view of ``kind`` (a type name, ``BIT`` or ``BOOL8``) on a buffer: an area's image, or ``inputs``
-        / ``outputs`` (the world's side of I and Q)."""
+    def view(self, buffer: str, kind: str) -> View | MirrorView:
+        """The view of ``kind`` (a type name, ``BIT`` or ``BOOL8``) on a buffer: an area's image, ``inputs`` /
+        ``outputs`` (the world's side of I and Q), or ``set`` (an input written: the inputs and the image)."""
+        if buffer == "set":
+            return MirrorView(self._view("I", kind), self._view("inputs", kind))
+        return self._view(buffer, kind)
+
+    def _view(self, buffer: str, kind: str) -> View:
         found = self._views.get((buffer, kind))
         if found is None:
             memory = (
@@ -175,17 +199,16 @@ class ProcessImage:
             self.outputs[:] = self.buffers["Q"]
 
     def clear(self) -> None:
-        """A restart: the images and the published outputs are cleared; the inputs stay as the world set them."""
+        """A restart: the output and memory images and the published outputs are cleared; the inputs stay as the
+        world set them, and the input image shows them."""
         for memory in self.buffers.values():
             memory[:] = bytes(len(memory))
         self.outputs[:] = bytes(len(self.outputs))
+        self.read_inputs()
 
     @staticmethod
-    def world(area: str, writing: bool) -> str:
-        """The buffer a path to ``area`` reads (``writing`` False) or writes: inputs for I, the published
-        outputs (read) or the output image (written) for Q, the area itself for M and S."""
-        if area == "I":
-            return "inputs"
-        if area == "Q":
-            return "Q" if writing else "outputs"
-        return area
+    def path_buffer(area: str, writing: bool) -> str:
+        """The buffer a path to ``area`` reads (``writing`` False) or writes: the program's image, like any
+        variable (so halted scans and watch lists show the values the program works with); a write to an input
+        also sets the inputs the world set (``set``), which the next scans read again."""
+        return "set" if writing and area == "I" else area

@@ -29,6 +29,7 @@ from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
 from typing import Any, cast
 
+from ..iec.addresses import parse_address
 from ..iec.spelling import did_you_mean
 from ..ir import nodes as ir
 from ..ir import types as t
@@ -40,7 +41,7 @@ from .codegen.typeinfo import runtime_name
 from .compile import CompiledProgram, compile_program
 from .debug import Debugger, Halt
 from .paths import Location, LocationReader, Resolver, Roots, UnknownPath, coerce_for, leaves, plain
-from .process_image import AREA_ORDER, IoPoint, ProcessImage, located_address
+from .process_image import AREA_ORDER, IoPoint, ProcessImage, key_of, located_address, view_kind
 from .tasks import DEFAULT_WATCHDOG_S, Schedule, Task, task_table
 
 
@@ -476,6 +477,15 @@ class Simulation:
         return self._instance_paths().get(id(obj))
 
     # ------------------------------------------------------------------ the process image
+
+    def published(self, address: str) -> object:
+        """An output address (``%QX3.0``, ``%QW4``) as the last finished scan published it to the world, forces
+        applied; paths read the program's image instead, which a halted scan may have changed since."""
+        location = self.location(address)
+        parsed = parse_address(address)
+        if parsed.area != "Q":
+            raise ValueError(f"{parsed.text} is not an output: only %Q addresses are published")
+        return self._image.view("outputs", view_kind(parsed, runtime_name(location.type)))[key_of(parsed)]
 
     def io_points(self) -> list[IoPoint]:
         """Every address the program uses, inputs first (I, Q, M, S, then by byte and bit), with the variables
