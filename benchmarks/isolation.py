@@ -87,7 +87,8 @@ class Server:
         self.url = f"http://127.0.0.1:{self.port}"
         command = [sys.executable, "-m", "ladderlab.cli", "serve", "--port", str(self.port), "--workspace"]
         self.process = subprocess.Popen([*command, str(workspace)], stderr=subprocess.DEVNULL)
-        self.http = httpx.Client(base_url=self.url, timeout=120)
+        # every state-changing request as JSON, as the server requires (docs/security.md)
+        self.http = httpx.Client(base_url=self.url, timeout=120, headers={"Content-Type": "application/json"})
         while True:
             try:
                 if self.http.get("/api/health").status_code == 200:

@@ -85,7 +85,8 @@ def serve(projects) -> tuple[str, object, object]:
 def request(address: str, method: str, path: str, body: object = None) -> dict:
     import httpx
 
-    response = httpx.request(method, f"http://{address}{path}", json=body, timeout=120)
+    headers = {"Content-Type": "application/json"}  # what the server takes for a state-changing request
+    response = httpx.request(method, f"http://{address}{path}", json=body, timeout=120, headers=headers)
     response.raise_for_status()
     return response.json() if response.content else {}
 

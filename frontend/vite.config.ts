@@ -13,7 +13,23 @@ export default defineConfig({
   },
   server: {
     proxy: {
-      "/api": { target: BACKEND, changeOrigin: true, ws: true },
+      "/api": {
+        target: BACKEND,
+        changeOrigin: true,
+        ws: true,
+        // The backend takes state-changing requests and websockets only from its own origin
+        // (docs/security.md); what this dev server forwards comes from it, so it says so.
+        configure: (proxy) => {
+          const fromBackend = (req: {
+            getHeader(name: string): unknown;
+            setHeader(name: string, value: string): void;
+          }) => {
+            if (req.getHeader("origin")) req.setHeader("origin", BACKEND);
+          };
+          proxy.on("proxyReq", fromBackend);
+          proxy.on("proxyReqWs", fromBackend);
+        },
+      },
     },
   },
   test: {

@@ -23,6 +23,37 @@ def external(*parts: str) -> pathlib.Path:
 #: External-corpus pass rates (name -> (passed, total)), printed at the end of the run by tests/conftest.py.
 PASS_RATES: dict[str, tuple[int, int]] = {}
 
+
+def api_client(app, **options):
+    """A TestClient that talks to ``app`` as the browser app does: at http://localhost, sending JSON.
+
+    The server answers only the names it is served under and takes state-changing requests only as
+    JSON (server/security.py); tests of those rules build their requests themselves. Websockets go
+    to ws://localhost too (starlette's TestClient would name ``testserver``)."""
+    from fastapi.testclient import TestClient
+
+    class LocalClient(TestClient):
+        def websocket_connect(self, url: str, *args, **kwargs):
+            return super().websocket_connect(f"ws://localhost{url}" if url.startswith("/") else url, *args, **kwargs)
+
+    return LocalClient(app, base_url="http://localhost", headers={"Content-Type": "application/json"}, **options)
+
+
+def fuzz_settings(fast: int = 40):
+    """Hypothesis settings of a fuzzer (issue 18, fuzzing as a habit): a few dozen cases in ``make test``,
+    10,000 per surface in ``make test-slow`` (LADDERLAB_HYPOTHESIS=thorough)."""
+    import os
+
+    from hypothesis import HealthCheck, settings
+
+    thorough = os.environ.get("LADDERLAB_HYPOTHESIS") == "thorough"
+    return settings(
+        max_examples=10_000 if thorough else fast,
+        deadline=None,
+        suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much, HealthCheck.data_too_large],
+    )
+
+
 #: Issue 18's runaway scan: four nested FOR 1 TO 255 (4e9 iterations) once ``Go`` is TRUE (a PROGRAM's declarations
 #: and body; the innermost loop, whose back-edge the watchdog sees first, is on line 5 of the body).
 NESTED_LOOPS_DECLARATIONS = "VAR\n    Go : BOOL;\n    a, b, c, d : INT;\n    n : DINT;\nEND_VAR"

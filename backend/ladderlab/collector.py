@@ -9,14 +9,16 @@ Pauses nest and overlap across threads (the server builds in worker threads): th
 counted under a lock, the first turns the collector off (when it was on) and the last one
 to end turns it back on, so no interleaving of two builds can leave it off for good.
 
-A paused collector still counts the objects allocated meanwhile as young, so the
-first collection after the pause would traverse all of them at once (0.3-0.4 s
-for a 10,000-network diagram) only to find them alive. They are the build's
-long-lived result, so they are handed to the oldest generation instead
-(``gc.freeze`` + ``gc.unfreeze``: two list splices, no traversal), which the
-collector visits only in its rare full collections - where any cycle among them
-is still found. (LadderLab itself never freezes objects for good, so unfreezing
-releases nothing frozen elsewhere.)
+When the last pause ends, one collection of the two young generations (``gc.collect(1)``) runs
+over everything allocated meanwhile: the build's cyclic garbage (AST, symbol tables and IR nodes
+point at each other) is freed at once, and what survives (the compiled program of a simulation)
+moves to the oldest generation the way CPython counts it, so its own rule for full collections
+stays in force. That collection costs what one pass over the build's objects costs (about
+0.1-0.3 s for a 10,000-network diagram, a few milliseconds for a typical project), once per build
+and in the build's own thread, instead of at a random later moment (in a scan, say). An earlier
+version handed the build's objects to the oldest generation without a collection (``gc.freeze()``
++ ``gc.unfreeze()``): CPython does not count objects moved that way, so full collections never
+came and every check leaked its garbage (~130 KB per ``/api/check``; issue 18).
 """
 
 from __future__ import annotations
@@ -44,7 +46,7 @@ def collector_paused() -> Iterator[None]:
     finally:
         with _lock:
             _pauses -= 1
-            if _pauses == 0 and _restore:
-                gc.freeze()  # every tracked object -> the permanent generation ...
-                gc.unfreeze()  # ... -> the oldest one
-                gc.enable()
+            if _pauses == 0:
+                gc.collect(1)  # the build's garbage goes now; its survivors become old, and are counted
+                if _restore:
+                    gc.enable()

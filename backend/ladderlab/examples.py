@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 import os
-import shutil
 from pathlib import Path
 
 from .storage import Workspace
+from .storage.project_folder import read_project_folder
 
 #: The repository's examples/ folder; LADDERLAB_EXAMPLES overrides it (e.g. in the Docker image).
 EXAMPLES_DIR = Path(os.environ.get("LADDERLAB_EXAMPLES", Path(__file__).resolve().parents[2] / "examples"))
@@ -18,5 +18,5 @@ def seed_workspace(workspace: Workspace) -> str | None:
     source = EXAMPLES_DIR / DEFAULT_EXAMPLE
     if workspace.list() or not source.is_dir():
         return None
-    shutil.copytree(source, workspace.folder(DEFAULT_EXAMPLE))
+    workspace.create(read_project_folder(source).model_copy(update={"name": DEFAULT_EXAMPLE}))
     return DEFAULT_EXAMPLE

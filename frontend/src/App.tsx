@@ -29,6 +29,16 @@ function formatModified(iso: string): string {
   return Number.isNaN(date.getTime()) ? iso : date.toLocaleString();
 }
 
+/** The located problems of a project whose files do not load, one per line ("pous/Main.st:3:1: message"). */
+function problemsText(project: ProjectSummary): string {
+  return (project.problems ?? [])
+    .map((p) => {
+      const where = [p.file, p.line, p.column].filter((part) => part !== null && part !== undefined).join(":");
+      return where ? `${where}: ${p.message}` : p.message;
+    })
+    .join("\n");
+}
+
 function ProjectRow({ project }: { project: ProjectSummary }) {
   const selected = useAppStore((s) => s.selectedProject === project.name);
   const selectProject = useAppStore((s) => s.selectProject);
@@ -41,10 +51,16 @@ function ProjectRow({ project }: { project: ProjectSummary }) {
         onClick={() => selectProject(project.name)}
       >
         <span className="project-name">{project.name}</span>
-        <span className="project-meta">
-          {project.pou_count} POU{project.pou_count === 1 ? "" : "s"} · rev {project.revision.slice(0, 7)} ·{" "}
-          {formatModified(project.modified)}
-        </span>
+        {project.revision === null ? (
+          <span className="project-meta project-broken" title={problemsText(project)}>
+            cannot be loaded: {problemsText(project).split("\n")[0]}
+          </span>
+        ) : (
+          <span className="project-meta">
+            {project.pou_count} POU{project.pou_count === 1 ? "" : "s"} · rev {project.revision.slice(0, 7)} ·{" "}
+            {formatModified(project.modified)}
+          </span>
+        )}
       </button>
     </li>
   );

@@ -8,39 +8,15 @@ or the browser app has not been built (``make test`` builds it first).
 from __future__ import annotations
 
 import shutil
-import socket
-import subprocess
-import sys
-import time
-import urllib.request
 from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
 
 from ladderlab.server.app import STATIC_DIR
+from tests.live_server import LiveServer
 
 ARTIFACTS = Path(__file__).parent / "artifacts"
-
-
-def _free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
-def _wait_healthy(url: str, process: subprocess.Popen, timeout_s: float = 20) -> None:
-    deadline = time.monotonic() + timeout_s
-    while time.monotonic() < deadline:
-        if process.poll() is not None:
-            raise RuntimeError(f"ladderlab serve exited with {process.returncode}")
-        try:
-            with urllib.request.urlopen(f"{url}/api/health", timeout=1) as response:
-                if response.status == 200:
-                    return
-        except OSError:
-            time.sleep(0.1)
-    raise RuntimeError(f"ladderlab serve did not answer at {url} within {timeout_s} s")
 
 
 @pytest.fixture(scope="session")
@@ -57,33 +33,11 @@ def chromium_path() -> str:
 @pytest.fixture
 def server(tmp_path: Path, chromium_path: str) -> Iterator[str]:
     """Base URL of a fresh server whose workspace is empty."""
-    port = _free_port()
-    log = (tmp_path / "server.log").open("w")
-    process = subprocess.Popen(
-        [
-            sys.executable,
-            "-c",
-            "import sys; from ladderlab.cli import main; sys.exit(main())",
-            "serve",
-            "--port",
-            str(port),
-            "--workspace",
-            str(tmp_path / "workspace"),
-        ],
-        stdout=log,
-        stderr=subprocess.STDOUT,
-    )
-    url = f"http://127.0.0.1:{port}"
+    live = LiveServer(tmp_path / "workspace", tmp_path / "server.log")
     try:
-        _wait_healthy(url, process)
-        yield url
+        yield live.start().url
     finally:
-        process.terminate()
-        try:
-            process.wait(timeout=10)
-        except subprocess.TimeoutExpired:
-            process.kill()
-        log.close()
+        live.stop()
 
 
 @pytest.fixture

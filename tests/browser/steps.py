@@ -25,6 +25,18 @@ def new_pou(page, name: str, *, language: str = "ld", kind: str = "program") -> 
     page.get_by_role("button", name="Create").click()
 
 
+def save_and_run(page):
+    """Ctrl+S, then Compile & simulate and Run (the server compiles the saved project); returns the online state."""
+    page.keyboard.press("Control+s")
+    page.get_by_text("All changes saved").wait_for()
+    page.get_by_role("button", name="Compile & simulate").click()
+    state = page.get_by_role("status", name="Online state")
+    state.filter(has_text="Online · stopped").wait_for()
+    page.get_by_role("button", name="Run", exact=True).click()
+    state.filter(has_text="Online · running").wait_for()
+    return state
+
+
 def store_project(server: str, project: dict) -> None:
     """Creates project ``project["name"]`` through the REST API and saves ``project`` (a whole model) into it."""
     name = project["name"]

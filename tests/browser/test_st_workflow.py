@@ -17,7 +17,7 @@ import urllib.request
 import pytest
 
 from .conftest import ARTIFACTS
-from .steps import new_pou, new_project
+from .steps import new_pou, new_project, save_and_run
 
 pytestmark = pytest.mark.browser
 
@@ -113,15 +113,9 @@ def test_new_user_writes_an_st_fb_fixes_a_typo_and_watches_it_run(page, server):
     page.keyboard.type(";")
     assert page.get_by_label("Main body").inner_text() == "c1(Enable := Run);\nn := c1.Count;"
     page.get_by_label("Main body").locator(".cm-lintRange").wait_for(state="detached")
-    page.keyboard.press("Control+s")
-    page.get_by_text("All changes saved").wait_for()
 
     # Online: values appear inline after the variables and n keeps counting.
-    page.get_by_role("button", name="Compile & simulate").click()
-    state = page.get_by_role("status", name="Online state")
-    state.filter(has_text="Online · stopped").wait_for()
-    page.get_by_role("button", name="Run", exact=True).click()
-    state.filter(has_text="Online · running").wait_for()
+    state = save_and_run(page)
     assert page.get_by_label("Show values inline").is_checked()
     # Run, n and c1.Count have values; c1 (an FB) and Enable (a formal parameter) do not.
     n_value = """() => Number(document.querySelectorAll('[aria-label="Main body"] .cm-st-value')[1]?.textContent)"""

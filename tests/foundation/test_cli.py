@@ -8,11 +8,9 @@ import subprocess
 import sys
 from pathlib import Path
 
-from fastapi.testclient import TestClient
-
 from ladderlab.server.app import create_app
 from ladderlab.storage import Workspace, load_project_path
-from tests.support import EXAMPLES
+from tests.support import EXAMPLES, api_client
 
 
 def ladderlab(*args: str) -> subprocess.CompletedProcess[str]:
@@ -81,7 +79,7 @@ def test_serve_refuses_remote_bind_without_flag() -> None:
 
 
 def test_health_endpoint(tmp_path: Path) -> None:
-    client = TestClient(create_app(Workspace(tmp_path)))
+    client = api_client(create_app(Workspace(tmp_path)))
     assert client.get("/api/health").json()["status"] == "ok"
     assert "LadderLab" in client.get("/").text
 
@@ -89,7 +87,7 @@ def test_health_endpoint(tmp_path: Path) -> None:
 def test_project_list_endpoint(tmp_path: Path) -> None:
     workspace = Workspace(tmp_path)
     revision = workspace.create(load_project_path(EXAMPLES / "motor"))
-    rows = TestClient(create_app(workspace)).get("/api/projects").json()
+    rows = api_client(create_app(workspace)).get("/api/projects").json()
     assert [(r["name"], r["revision"], r["pou_count"]) for r in rows] == [("motor", revision, 3)]
     assert rows[0]["modified"].endswith("Z") or rows[0]["modified"].endswith("+00:00")
 

@@ -59,3 +59,15 @@ def test_fbd_positions_must_be_finite() -> None:
 
     with pytest.raises(ValidationError, match="finite number"):
         Position(x=float("nan"), y=0)
+
+
+def test_names_and_literals_ending_in_a_newline_are_refused() -> None:
+    """Issue 18: ``$`` in the name patterns matched before a final newline, so "Main\\n" passed validation."""
+    from ladderlab.model.names import pou_name_problem, project_name_problem
+    from ladderlab.model.validate import validate_project
+
+    assert pou_name_problem("Main\n") is not None
+    assert pou_name_problem("Main") is None
+    assert project_name_problem("motor\n") is not None
+    project = Project(name="p", tasks=[{"name": "T", "interval": "T#10ms\n", "programs": []}])
+    assert [d.json_path for d in validate_project(project)] == ["$.tasks[0].interval"]

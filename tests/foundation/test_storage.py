@@ -149,7 +149,9 @@ def test_rename_and_delete(ws: Workspace, motor: Project) -> None:
     assert ws.list() == []
 
 
-@pytest.mark.parametrize("name", ["../evil", "..", ".", "/etc", "a/b", "a\\b", ".hidden", "", "x" * 65, "trailing."])
+@pytest.mark.parametrize(
+    "name", ["../evil", "..", ".", "/etc", "a/b", "a\\b", ".hidden", "", "x" * 65, "trailing.", "motor\n", "a\nb"]
+)
 def test_project_names_cannot_escape_the_workspace(ws: Workspace, name: str) -> None:
     with pytest.raises(InvalidNameError):
         ws.create(Project(name=name))
@@ -158,7 +160,7 @@ def test_project_names_cannot_escape_the_workspace(ws: Workspace, name: str) -> 
     assert list(ws.root.parent.iterdir()) == [ws.root]
 
 
-@pytest.mark.parametrize("name", ["../../x", "a/b", "1abc", "a__b", "", "x y"])
+@pytest.mark.parametrize("name", ["../../x", "a/b", "1abc", "a__b", "", "x y", "Main\n", "Main\r\n"])
 def test_pou_names_are_iec_identifiers(ws: Workspace, name: str) -> None:
     with pytest.raises(InvalidNameError):
         ws.create(Project(name="p", pous=[Pou(name=name, kind="program", language="st", body="")]))
@@ -272,3 +274,47 @@ def test_nothing_is_overwritten_by_a_failed_load(tmp_path: Path) -> None:
     before = snapshot(folder)
     load_error(folder)
     assert snapshot(folder) == before
+
+
+# --- symbolic links (issue 18: followed outside the workspace) ---------------------------------
+
+
+@pytest.mark.skipif(os.name == "nt", reason="symlinks need privileges on Windows")
+def test_a_link_out_of_the_project_folder_is_refused_with_its_file(tmp_path: Path) -> None:
+    ws = Workspace(tmp_path / "ws")
+    ws.create(load_project_path(EXAMPLES / "motor"))
+    secret = tmp_path / "secret.st"
+    secret.write_text("PROGRAM Blinker\nVAR\n  password : STRING := 'hunter2';\nEND_VAR\nEND_PROGRAM\n")
+    link = ws.root / "motor" / "pous" / "Blinker.st"
+    link.unlink()
+    link.symlink_to(secret)
+    with pytest.raises(ProjectLoadError) as err:
+        ws.load("motor")
+    [problem] = err.value.diagnostics
+    assert (problem.file, problem.pou) == ("pous/Blinker.st", "Blinker")
+    assert problem.message == "is a symbolic link that leads out of the project folder; LadderLab does not follow it"
+    [listed] = ws.list()
+    assert (listed.name, listed.revision, listed.problems) == ("motor", None, [problem])
+    assert "hunter2" not in str(err.value)
+
+
+@pytest.mark.skipif(os.name == "nt", reason="symlinks need privileges on Windows")
+def test_a_linked_pous_folder_or_project_file_is_refused(tmp_path: Path) -> None:
+    ws = Workspace(tmp_path / "ws")
+    ws.create(load_project_path(EXAMPLES / "motor"))
+    outside = tmp_path / "elsewhere"
+    shutil.move(ws.root / "motor" / "pous", outside)
+    (ws.root / "motor" / "pous").symlink_to(outside)
+    assert "pous: error BAD-FILE: is a symbolic link that leads out" in load_error(ws.root / "motor")
+    with pytest.raises(ProjectLoadError):
+        ws.save(load_project_path(EXAMPLES / "motor"), "0")
+    assert sorted(p.name for p in outside.iterdir()) == ["Blinker.st", "Main.ld.json", "Scaling.fbd.json"]
+
+
+@pytest.mark.skipif(os.name == "nt", reason="symlinks need privileges on Windows")
+def test_a_link_inside_the_project_folder_is_followed(tmp_path: Path) -> None:
+    folder = broken_copy(tmp_path)
+    (folder / "shared.st").write_text((folder / "pous" / "Blinker.st").read_text())
+    (folder / "pous" / "Blinker.st").unlink()
+    (folder / "pous" / "Blinker.st").symlink_to(folder / "shared.st")
+    assert load_project_path(folder) == load_project_path(EXAMPLES / "motor")

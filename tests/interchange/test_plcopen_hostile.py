@@ -163,3 +163,54 @@ def test_documents_with_missing_elements_or_attributes_never_raise(motor_xml, dr
             parents[element].remove(element)
     result = import_plcopen(ET.tostring(root))
     assert result.project is not None
+
+
+# ----------------------------------------------------------------- issue 18: the PLCopen import 500s
+
+
+@pytest.mark.parametrize("value", ["NaN", "inf", "-Infinity", "1e999", "twelve"])
+def test_a_position_that_is_no_finite_number_is_a_warning_and_zero(value: str) -> None:
+    """Issue 18: a NaN position gave 500 (the model refuses it after the import had accepted it)."""
+    data = export_plcopen(load_project_path(EXAMPLES / "motor")).decode()
+    scaling = data.index('<pou name="Scaling"')
+    at = data.index('<position x="', scaling) + len('<position x="')
+    end = data.index('"', at)
+    result = import_plcopen((data[:at] + value + data[end:]).encode(), file="plc.xml")
+    assert result.project is not None
+    [warning] = result.diagnostics
+    assert (warning.severity, warning.code, warning.pou, warning.file) == (
+        "warning",
+        "PLCOPEN-GRAPH",
+        "Scaling",
+        "plc.xml",
+    )
+    assert warning.message == f"position x={value!r} is not a finite number; 0 is used"
+    assert warning.line == data[:at].count("\n") + 1
+    xs = [node.pos.x for net in result.project.pou("Scaling").body.networks for node in net.nodes if node.pos]
+    assert 0.0 in xs and all(abs(x) < 1e6 for x in xs)
+
+
+@pytest.mark.parametrize(
+    ("encoding", "reason"),
+    [("UTF-7", "multi-byte encodings are not supported"), ("klingon", "unknown encoding: klingon")],
+)
+def test_an_encoding_the_parser_cannot_read_is_a_located_refusal(encoding: str, reason: str) -> None:
+    """Issue 18: UTF-7 (and unknown encodings) gave 500 in the server and a traceback on the CLI."""
+    body = export_plcopen(load_project_path(EXAMPLES / "motor")).split(b"?>", 1)[1]
+    code, message, line = _refused(f'<?xml version="1.0" encoding="{encoding}"?>'.encode() + body)
+    assert (code, line) == ("XML-ENCODING", 1)
+    assert message == f"the document's encoding cannot be read ({reason}); save it as UTF-8"
+
+
+def test_deeply_nested_markup_is_refused_while_it_is_read() -> None:
+    """Issue 18: 100,000 nested xhtml paragraphs in a <documentation> gave a RecursionError (500)."""
+    data = export_plcopen(load_project_path(EXAMPLES / "motor")).decode()
+    at = data.index("<documentation>") + len("<documentation>")
+    nested = "<xhtml:p>" * 100_000 + "</xhtml:p>" * 100_000
+    code, message, line = _refused((data[:at] + nested + data[at:]).encode())
+    assert code == "XML-TOO-DEEP"
+    assert message == (
+        "the document nests deeper than the limit of 200 levels for the nesting of one XML document "
+        "(the setting LADDERLAB_MAX_XML_DEPTH raises it)"
+    )
+    assert line == data[:at].count("\n") + 1

@@ -1,4 +1,5 @@
-"""collector_paused: the cyclic GC is off inside, back on after, and what the pause allocated is old, not young."""
+"""collector_paused: the cyclic GC is off inside, back on after; the build's garbage is collected when the pause
+ends and what survives is old, not young (issue 18: it leaked into the oldest generation)."""
 
 from __future__ import annotations
 
@@ -37,6 +38,23 @@ def test_a_cycle_built_during_the_pause_is_still_collected() -> None:
     del a, b
     gc.collect()
     assert alive() is None
+
+
+def test_garbage_of_a_pause_is_collected_when_it_ends_without_waiting_for_a_full_collection() -> None:
+    """Issue 18: the pause moved each build's garbage into the oldest generation, where full collections
+    never came: ~130 KB per check, without bound."""
+    gc.collect()
+    before = len(gc.get_objects(generation=2))
+    gone = []
+    for _ in range(200):  # 200 "builds", each leaving a cycle of 50 nodes as garbage
+        with collector_paused():
+            ring = [_Node() for _ in range(50)]
+            for a, b in zip(ring, ring[1:] + ring[:1]):
+                a.other = b
+            gone.append(weakref.ref(ring[0]))
+            del ring, a, b
+        assert gone[-1]() is None, "collected as the pause ended"
+    assert len(gc.get_objects(generation=2)) - before < 1000, "the oldest generation does not grow"
 
 
 def test_overlapping_pauses_in_two_threads_keep_the_collector_off_until_the_last_ends() -> None:

@@ -10,6 +10,7 @@ from fastapi.testclient import TestClient
 
 from ladderlab.server.app import create_app
 from ladderlab.storage import Workspace
+from tests.support import api_client
 
 
 @pytest.fixture
@@ -20,7 +21,7 @@ def workspace(tmp_path: Path) -> Workspace:
 @pytest.fixture
 def client(workspace: Workspace) -> Iterator[TestClient]:
     app = create_app(workspace)
-    yield TestClient(app)
+    yield api_client(app)
     registry = getattr(app.state, "simulations", None)
     if registry is not None:  # end the build and simulation processes a test started
         registry.close()

@@ -7,6 +7,7 @@ from fastapi.testclient import TestClient
 from ladderlab.server.app import create_app
 from ladderlab.server.limits import Limits
 from ladderlab.storage import Workspace
+from tests.support import api_client
 
 
 def test_export_st_of_a_pou_maps_lines_to_networks(client: TestClient, motor: str) -> None:
@@ -53,5 +54,5 @@ def test_plcopen_upload_errors(client: TestClient, motor: str) -> None:
 
 
 def test_plcopen_upload_is_bounded_by_the_body_limit(tmp_path) -> None:
-    client = TestClient(create_app(Workspace(tmp_path), Limits(max_body_bytes=1000)))
+    client = api_client(create_app(Workspace(tmp_path), Limits(max_body_bytes=1000)))
     assert client.post("/api/import/plcopen", content=b"<project>" + b" " * 2000 + b"</project>").status_code == 413

@@ -11,6 +11,7 @@ from hypothesis import strategies as st
 from ladderlab.server.app import create_app
 from ladderlab.server.limits import Limits
 from ladderlab.storage import Workspace
+from tests.support import api_client
 
 from .helpers import detail, folder_bytes, st_program
 
@@ -97,7 +98,7 @@ def test_bad_bodies_get_a_located_422(client: TestClient) -> None:
 
 
 def test_a_project_over_the_size_limit_is_refused(tmp_path: Path) -> None:
-    client = TestClient(create_app(Workspace(tmp_path / "ws"), Limits(max_project_bytes=200)))
+    client = api_client(create_app(Workspace(tmp_path / "ws"), Limits(max_project_bytes=200)))
     response = client.post("/api/check", json=project(counter_fb("Count := 1;\n" * 40)))
     assert response.status_code == 413
     assert "more than the limit" in detail(response)["message"]

@@ -13,8 +13,11 @@ from fastapi.testclient import TestClient
 from starlette.websockets import WebSocketDisconnect
 
 from ladderlab.model import Project
+from ladderlab.server.app import create_app
+from ladderlab.server.security import Security
 from ladderlab.simulation.registry import SimulationRegistry, SimulationSettings
 from ladderlab.storage import Workspace
+from tests.support import api_client
 
 from .helpers import st_program
 from .test_simulations_support import (
@@ -404,19 +407,26 @@ def test_a_watchdog_trip_is_logged(client: TestClient, workspace: Workspace) -> 
         registry.close()
 
 
-def test_a_foreign_origin_is_refused_and_the_served_or_listed_ones_accepted(client: TestClient, counter: str) -> None:
-    with pytest.raises(WebSocketDisconnect) as refused:
-        with client.websocket_connect(ws_url(counter), headers={"Origin": "http://evil.example"}):
-            pass
-    assert refused.value.code == 1008
-    with client.websocket_connect(ws_url(counter), headers={"Origin": "http://testserver"}) as ws:
-        assert recv(ws)["type"] == "status"
-    registry = install(client, SimulationSettings(allowed_origins=("http://localhost:5173",)))
-    try:
-        with client.websocket_connect(ws_url(counter), headers={"Origin": "http://localhost:5173"}) as ws:
-            assert recv(ws)["code"] == "bad_path"  # accepted; this registry has no such simulation
-    finally:
-        registry.close()
+def test_a_foreign_origin_is_refused_and_the_served_or_listed_ones_accepted(
+    client: TestClient, counter: str, workspace: Workspace
+) -> None:
+    """Issue 18: the Origin is checked against the allow-list, not against Host (which the page chooses)."""
+    for origin, host in [
+        ("http://evil.example", "localhost"),
+        ("http://evil.example:8000", "evil.example:8000"),  # DNS rebinding: Host and Origin agree, both foreign
+        ("http://localhost:3000", "localhost:8000"),  # another local site
+        ("null", "localhost"),
+    ]:
+        with pytest.raises(WebSocketDisconnect) as refused:
+            with client.websocket_connect(ws_url(counter), headers={"Origin": origin, "Host": host}):
+                pass
+        assert refused.value.code == 1008, origin
+    for origin, host in [("http://localhost:8000", "localhost:8000"), ("http://127.0.0.1", "127.0.0.1")]:
+        with client.websocket_connect(ws_url(counter), headers={"Origin": origin, "Host": host}) as ws:
+            assert recv(ws)["type"] == "status"
+    dev = api_client(create_app(workspace, security=Security(origins=frozenset({"http://localhost:5173"}))))
+    with dev.websocket_connect(ws_url(counter), headers={"Origin": "http://localhost:5173"}) as ws:
+        assert recv(ws)["code"] == "bad_path"  # accepted (the Vite dev server); this app has no such simulation
 
 
 def test_an_unknown_simulation_gets_an_error_and_a_close(client: TestClient, registry: SimulationRegistry) -> None:

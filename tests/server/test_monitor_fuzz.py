@@ -20,6 +20,7 @@ from ladderlab.server.app import create_app
 from ladderlab.server.monitor import CLIENT_MESSAGE
 from ladderlab.simulation.remote import SimulationHandle
 from ladderlab.storage import Workspace
+from tests.support import api_client, fuzz_settings
 
 from .test_simulations_support import counter_project, install, recv
 
@@ -89,7 +90,7 @@ def session() -> Iterator[tuple[TestClient, WebSocketTestSession, SimulationHand
     with tempfile.TemporaryDirectory() as root:
         workspace = Workspace(Path(root))
         workspace.create(counter_project())
-        client = TestClient(create_app(workspace))
+        client = api_client(create_app(workspace))
         registry = install(client)
         sim_id = client.post("/api/projects/counter/simulations").json()["id"]
         client.post(f"/api/simulations/{sim_id}/cycle")
@@ -117,6 +118,7 @@ def assert_refused_without_effect(session: tuple, send: Any) -> dict[str, Any]:
     return reply
 
 
+@fuzz_settings()
 @given(data=message_like | json_values)
 def test_malformed_messages_get_an_error_and_change_nothing(session: tuple, data: Any) -> None:
     assume(not is_valid(data))
@@ -124,6 +126,7 @@ def test_malformed_messages_get_an_error_and_change_nothing(session: tuple, data
     assert reply["code"] == "bad_message"
 
 
+@fuzz_settings()
 @given(text=st.text(max_size=40))
 def test_text_that_is_not_json_gets_an_error(session: tuple, text: str) -> None:
     try:
@@ -135,6 +138,7 @@ def test_text_that_is_not_json_gets_an_error(session: tuple, text: str) -> None:
         assume(False)
 
 
+@fuzz_settings()
 @given(blob=st.binary(max_size=40))
 def test_binary_frames_get_an_error(session: tuple, blob: bytes) -> None:
     reply = assert_refused_without_effect(session, lambda ws: ws.send_bytes(blob))
@@ -143,6 +147,24 @@ def test_binary_frames_get_an_error(session: tuple, blob: bytes) -> None:
         "code": "bad_message",
         "message": "binary frames are not understood: send JSON text",
     }
+
+
+@fuzz_settings()
+@given(
+    text=st.one_of(
+        st.integers(1, 5000).map(lambda n: "[" * n + "]" * n),
+        st.sampled_from(["\\udcff", "\\ud800", "\\ud83d\\ude00"]).map(
+            lambda escape: '{"type": "write", "path": "Main.' + escape + '", "value": 1}'
+        ),
+        st.sampled_from(["subscribe", "trace_start", "force"]).map(
+            lambda kind: '{"type": "' + kind + '", "paths": ["\\udcff"], "path": "\\ud800", "value": "\\udfff"}'
+        ),
+    )
+)
+def test_deep_or_surrogate_messages_get_an_error(session: tuple, text: str) -> None:
+    """Issue 18: nesting past the interpreter's limits and lone surrogates in JSON strings."""
+    reply = assert_refused_without_effect(session, lambda ws: ws.send_text(text))
+    assert reply["code"] in ("bad_json", "bad_message", "bad_path", "bad_value")
 
 
 def test_the_connection_and_the_server_still_work_afterwards(session: tuple) -> None:

@@ -120,7 +120,7 @@ def test_a_client_that_never_reads_slows_neither_the_scan_nor_another_client(
 ) -> None:
     address, registry = live
     workspace.create(BIG)
-    http = httpx.Client(base_url=f"http://{address}")
+    http = httpx.Client(base_url=f"http://{address}", headers={"Content-Type": "application/json"})
     sim_id = http.post("/api/projects/big/simulations").json()["id"]
     path = f"/api/simulations/{sim_id}/ws"
     slow = RawClient(address, path)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import errno
 import threading
 from datetime import datetime
 
@@ -12,9 +13,9 @@ from ladderlab.model import Project
 from ladderlab.model.names import project_name_problem
 from ladderlab.server.app import create_app
 from ladderlab.server.limits import Limits
-from ladderlab.storage import Workspace, load_project_path
+from ladderlab.storage import Workspace, journal, load_project_path
 from ladderlab.storage.project_folder import project_files, revision_of
-from tests.support import EXAMPLES
+from tests.support import EXAMPLES, api_client
 
 from .helpers import detail, folder_bytes, st_program
 
@@ -73,7 +74,7 @@ def test_create_from_unknown_example_is_422(client: TestClient) -> None:
 
 
 def test_create_refused_when_the_workspace_is_full(workspace: Workspace) -> None:
-    client = TestClient(create_app(workspace, Limits(max_projects=2)))
+    client = api_client(create_app(workspace, Limits(max_projects=2)))
     assert [client.post("/api/projects", json={"name": n}).status_code for n in "ab"] == [201, 201]
     response = client.post("/api/projects", json={"name": "c"})
     assert response.status_code == 429
@@ -101,7 +102,9 @@ def test_get_project_with_etag(client: TestClient, motor: str) -> None:
     assert (body["name"], body["revision"]) == ("motor", motor)
     assert body["project"] == motor_example().model_dump(mode="json")
     listed = client.get("/api/projects").json()
-    assert listed == [{"name": "motor", "revision": motor, "modified": body["modified"], "pou_count": 3}]
+    assert listed == [
+        {"name": "motor", "revision": motor, "modified": body["modified"], "pou_count": 3, "problems": []}
+    ]
 
 
 def test_get_missing_project_is_404(client: TestClient) -> None:
@@ -129,6 +132,16 @@ def test_project_that_fails_to_load_is_422_with_located_diagnostics(
             4,
             1,
         )
+    # issue 18: the list still shows it, with the same located problem, instead of dropping it
+    [listed] = client.get("/api/projects").json()
+    assert (listed["name"], listed["revision"], listed["pou_count"]) == ("motor", None, 0)
+    [problem] = listed["problems"]
+    assert (problem["code"], problem["file"], problem["line"], problem["column"]) == (
+        "BAD-JSON",
+        "pous/Main.ld.json",
+        4,
+        1,
+    )
 
 
 # ----------------------------------------------------------------- save the whole project
@@ -256,7 +269,7 @@ def test_save_with_two_pous_of_one_name_is_refused(client: TestClient, workspace
 
 
 def test_save_of_a_project_over_the_size_limit_is_413(workspace: Workspace) -> None:
-    client = TestClient(create_app(workspace, Limits(max_project_bytes=4000)))
+    client = api_client(create_app(workspace, Limits(max_project_bytes=4000)))
     revision = client.post("/api/projects", json={"name": "big"}).json()["revision"]
     before = folder_bytes(workspace.root / "big")
     project = Project(name="big", pous=[st_program("P", body="x := 1;\n" * 600)])
@@ -277,20 +290,49 @@ def test_save_of_a_missing_project_is_404(client: TestClient) -> None:
     assert detail(response)["message"] == "project 'ghost' does not exist"
 
 
+def test_disk_full_is_507_and_the_old_project_stays_listed_and_loadable(
+    client: TestClient, workspace: Workspace, motor: str, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Issue 18: the disk fills up while the new version is staged (after its first file)."""
+    before = folder_bytes(workspace.root / "motor")
+    real_write = journal._write_synced
+    calls = []
+
+    def fills_up(path, data):
+        calls.append(path)
+        if len(calls) > 1:
+            raise OSError(errno.ENOSPC, "No space left on device")
+        real_write(path, data)
+
+    monkeypatch.setattr(journal, "_write_synced", fills_up)
+    changed = motor_example().model_copy(update={"globals": "", "types": ""})
+    response = client.put("/api/projects/motor", json=changed.model_dump(mode="json"), headers={"If-Match": motor})
+    assert response.status_code == 507
+    assert detail(response)["message"] == (
+        "project 'motor' was not saved: No space left on device. The stored project is unchanged; "
+        "free some disk space and save again"
+    )
+    monkeypatch.undo()
+    assert len(calls) == 2
+    assert folder_bytes(workspace.root / "motor") == before, "no staged file is left behind"
+    assert [(p["name"], p["revision"]) for p in client.get("/api/projects").json()] == [("motor", motor)]
+    assert client.get("/api/projects/motor").json()["revision"] == motor
+
+
 def test_io_error_is_a_json_500_and_loses_nothing(
     client: TestClient, workspace: Workspace, motor: str, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     before = folder_bytes(workspace.root / "motor")
 
-    def disk_full(path, data):
-        raise OSError(28, "No space left on device")
+    def denied(path, data):
+        raise PermissionError(errno.EACCES, "Permission denied")
 
-    monkeypatch.setattr("ladderlab.storage.workspace.write_atomic", disk_full)
+    monkeypatch.setattr(journal, "_write_synced", denied)
     changed = motor_example().model_copy(update={"globals": ""})
     response = client.put("/api/projects/motor", json=changed.model_dump(mode="json"), headers={"If-Match": motor})
     assert response.status_code == 500
     assert detail(response)["message"] == (
-        "the workspace could not be read or written: No space left on device. Reload the project to see what is stored."
+        "the workspace could not be read or written: Permission denied. Reload the project to see what is stored."
     )
     assert folder_bytes(workspace.root / "motor") == before
     assert client.get("/api/projects/motor").json()["revision"] == motor
@@ -301,7 +343,7 @@ def test_unexpected_error_is_a_json_500(workspace: Workspace, monkeypatch: pytes
         raise RuntimeError("checker exploded")
 
     monkeypatch.setattr("ladderlab.server.projects.check_report", broken)
-    client = TestClient(create_app(workspace), raise_server_exceptions=False)
+    client = api_client(create_app(workspace), raise_server_exceptions=False)
     client.post("/api/projects", json={"name": "p"})
     response = client.post("/api/projects/p/check")
     assert response.status_code == 500

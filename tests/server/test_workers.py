@@ -197,9 +197,16 @@ def test_a_process_that_dies_faults_its_simulation(
     assert client.post(f"/api/simulations/{counter}/cycle").json()["scan_count"] == 1
 
 
+@pytest.fixture
+def roomy_limits(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Size limits high enough that the process's memory limit is what refuses (set before its processes start)."""
+    monkeypatch.setenv("LADDERLAB_MAX_ARRAY_ELEMENTS", "1000000000")
+    monkeypatch.setenv("LADDERLAB_MAX_DATA_VALUES", "1000000000")
+
+
 @pytest.mark.parametrize("settings_registry", [SimulationSettings(memory_mb=400)], indirect=True)
 def test_a_simulation_that_needs_more_memory_than_allowed_is_refused(
-    client: TestClient, workspace: Workspace, settings_registry: SimulationRegistry
+    roomy_limits: None, client: TestClient, workspace: Workspace, settings_registry: SimulationRegistry
 ) -> None:
     huge = Project(name="huge", pous=[st_program("Main", "VAR\n    a : ARRAY[0..100000000] OF BOOL;\nEND_VAR", "")])
     workspace.create(huge)

@@ -19,7 +19,7 @@ from ..storage.atomic import write_atomic
 from ..storage.text_files import CLI_HINT, check_encoding, xml_for_parser
 from .run import jsonl_line, parse_duration, parse_set, run_scans, table_lines
 
-EXIT_OK, EXIT_ERRORS, EXIT_USAGE, EXIT_RUNTIME = 0, 1, 2, 3
+EXIT_OK, EXIT_ERRORS, EXIT_USAGE, EXIT_RUNTIME, EXIT_INTERNAL = 0, 1, 2, 3, 70
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -30,6 +30,22 @@ def main(argv: list[str] | None = None) -> int:
         for diagnostic in err.diagnostics:
             print(diagnostic.format(), file=sys.stderr)
         return EXIT_USAGE
+    except UnicodeDecodeError as err:  # a file in another encoding (its own located message where it is read)
+        print(
+            f"ladderlab: the input is not UTF-8 text: {err.reason} at byte {err.start}; save it as UTF-8",
+            file=sys.stderr,
+        )
+        return EXIT_USAGE
+    except OSError as err:  # a file that cannot be read or written: the user's to fix, not a bug
+        print(f"ladderlab: {err.filename or ''}{': ' if err.filename else ''}{err.strerror or err}", file=sys.stderr)
+        return EXIT_USAGE
+    except KeyboardInterrupt:
+        return 130
+    except Exception as err:  # a bug: one line, not a traceback (LADDERLAB_TRACEBACK=1 shows it)
+        if os.environ.get("LADDERLAB_TRACEBACK"):
+            raise
+        print(f"ladderlab: internal error: {type(err).__name__}: {err} (please report it)", file=sys.stderr)
+        return EXIT_INTERNAL
 
 
 def _parser() -> argparse.ArgumentParser:
@@ -42,7 +58,37 @@ def _parser() -> argparse.ArgumentParser:
     serve.add_argument(
         "--workspace", type=Path, default=None, help="project folder (default: $LADDERLAB_WORKSPACE or ./workspace)"
     )
-    serve.add_argument("--allow-remote", action="store_true", help="required to bind to an address other than loopback")
+    serve.add_argument(
+        "--allow-remote",
+        action="store_true",
+        help="serve other machines (or a TLS proxy): binding another address is allowed and everyone must sign in "
+        "with the token printed at start ($LADDERLAB_TOKEN fixes it) or the --password-file",
+    )
+    serve.add_argument(
+        "--password-file",
+        type=Path,
+        default=None,
+        help="sign in with the first line of this file instead of a token (keep it readable by you only)",
+    )
+    serve.add_argument(
+        "--allowed-host",
+        action="append",
+        default=[],
+        metavar="NAME",
+        help="a host name the server is reached under besides 127.0.0.1, localhost and [::1] (repeatable; "
+        "'*' for any, with --allow-remote only)",
+    )
+    serve.add_argument(
+        "--allowed-origin",
+        action="append",
+        default=[],
+        metavar="ORIGIN",
+        help="a browser origin allowed to use the API besides the served one, e.g. https://plc.example.com "
+        "behind a TLS proxy (repeatable)",
+    )
+    serve.add_argument(
+        "--secure-cookies", action="store_true", help="mark the session cookie Secure (behind a TLS proxy)"
+    )
     serve.set_defaults(func=_serve)
 
     check = sub.add_parser("check", help="load and check a project, print diagnostics")
@@ -264,17 +310,80 @@ def _serve(args: argparse.Namespace) -> int:
 
     from ..examples import seed_workspace
     from ..server.app import create_app
+    from ..server.limits import Limits
+    from ..server.logs import install_repeat_filter
     from ..storage import Workspace
 
-    if not _is_loopback(args.host):
-        if not args.allow_remote:
-            print(f"refusing to bind to {args.host}: pass --allow-remote to serve other machines", file=sys.stderr)
-            return EXIT_USAGE
-        print(f"WARNING: serving on {args.host}; anyone who can reach it can edit and run projects", file=sys.stderr)
+    if not _is_loopback(args.host) and not args.allow_remote:
+        print(f"refusing to bind to {args.host}: pass --allow-remote to serve other machines", file=sys.stderr)
+        return EXIT_USAGE
+    try:
+        security = serve_security(args)
+    except ValueError as error:
+        print(f"ladderlab serve: {error}", file=sys.stderr)
+        return EXIT_USAGE
     workspace = Workspace(args.workspace or Path(os.environ.get("LADDERLAB_WORKSPACE", "workspace")))
     seeded = seed_workspace(workspace)
     if seeded:
         print(f"workspace was empty: added the example project {seeded!r}")
-    print(f"LadderLab on http://{args.host}:{args.port}/ (workspace {workspace.root})")
-    uvicorn.run(create_app(workspace), host=args.host, port=args.port, log_level="warning")
+    shown = "localhost" if args.host in ("0.0.0.0", "::") else args.host
+    url = f"http://{f'[{shown}]' if ':' in shown else shown}:{args.port}/"
+    auth = security.auth
+    if auth is not None and auth.kind == "token":
+        print(f"LadderLab on {url}?token={auth.secret} (workspace {workspace.root})")
+        print("Open that link to sign in; anyone with the token can edit and run projects.")
+    else:
+        print(f"LadderLab on {url} (workspace {workspace.root})")
+    open_files = raise_open_files_limit()
+    limits = Limits(max_websockets=min(Limits.max_websockets, open_files // 2))
+    config = uvicorn.Config(
+        create_app(workspace, limits, security),
+        host=args.host,
+        port=args.port,
+        log_level="warning",
+        limit_concurrency=max(64, open_files - 64),  # connections beyond it get a 503, never EMFILE
+    )
+    install_repeat_filter()  # after uvicorn.Config, which sets up the server's log handlers
+    uvicorn.Server(config).run()
     return EXIT_OK
+
+
+def serve_security(args: argparse.Namespace):
+    """The server's Security from the command line: its names, extra origins and sign-in."""
+    from ..server.auth import Auth
+    from ..server.security import LOOPBACK_HOSTS, Security
+
+    hosts = set(LOOPBACK_HOSTS) | {name.strip().strip("[]").lower() for name in args.allowed_host}
+    if not _is_loopback(args.host) and args.host not in ("0.0.0.0", "::"):
+        hosts.add(args.host.strip("[]").lower())
+    auth = None
+    if args.password_file is not None:
+        try:
+            password = args.password_file.read_text(encoding="utf-8").splitlines()[0].strip()
+        except (OSError, UnicodeDecodeError, IndexError) as error:
+            raise ValueError(f"cannot read a password from {args.password_file}: {error}") from None
+        if len(password) < 8:
+            raise ValueError(f"the password in {args.password_file} is shorter than 8 characters")
+        auth = Auth(password, "password", args.secure_cookies)
+    elif args.allow_remote:
+        token = os.environ.get("LADDERLAB_TOKEN", "").strip()
+        auth = Auth(token, "token", args.secure_cookies) if token else Auth.new_token(args.secure_cookies)
+    if "*" in hosts and auth is None:
+        raise ValueError("--allowed-host '*' needs --allow-remote or --password-file (everyone must sign in)")
+    origins = frozenset(origin.strip().rstrip("/") for origin in args.allowed_origin)
+    return Security(hosts=frozenset(hosts), origins=origins, auth=auth)
+
+
+def raise_open_files_limit() -> int:
+    """Raise the soft limit of open files to the hard one (Unix); returns it (what connections may use)."""
+    try:
+        import resource
+    except ImportError:  # Windows: no such limit to raise
+        return 4096
+    soft, hard = resource.getrlimit(resource.RLIMIT_NOFILE)
+    wanted = hard if hard != resource.RLIM_INFINITY else max(soft, 65536)
+    try:
+        resource.setrlimit(resource.RLIMIT_NOFILE, (wanted, hard))
+    except (ValueError, OSError):
+        wanted = soft
+    return wanted

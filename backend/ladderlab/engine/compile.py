@@ -21,6 +21,7 @@ from dataclasses import dataclass
 from types import CodeType
 
 from ..collector import collector_paused
+from ..deep import deep_call
 from ..ir import nodes as ir
 from ..model.diagnostics import Diagnostic
 from .codegen import Generated, generate
@@ -79,18 +80,22 @@ class CompiledProgram:
 
 def compile_program(program: ir.Program, variant: str = "fast") -> CompiledProgram:
     # generation allocates millions of objects that live until it ends: collections would only traverse them
-    with collector_paused():
-        generated = generate(program, variant)
-        diagnostics = [*validate_tasks(program), *generated.diagnostics]
-        if any(d.severity == "error" for d in diagnostics):
-            raise CompileError(diagnostics)
-        filename = f"<ladderlab-{variant}-{next(_serial)}>"
-        try:
-            pieces = tuple(
-                _compile_piece(generated.source[start:end], first, filename) for first, start, end in generated.pieces
-            )
-        except (SyntaxError, RecursionError, MemoryError, ValueError) as error:  # e.g. nesting beyond CPython's limits
-            raise CompileError([diagnostic(f"the generated code does not compile: {error}", None)]) from None
+    with collector_paused():  # and on a deep stack: generation and compile() recurse per nesting level
+        return deep_call(_compile_program, program, variant)
+
+
+def _compile_program(program: ir.Program, variant: str) -> CompiledProgram:
+    generated = generate(program, variant)
+    diagnostics = [*validate_tasks(program), *generated.diagnostics]
+    if any(d.severity == "error" for d in diagnostics):
+        raise CompileError(diagnostics)
+    filename = f"<ladderlab-{variant}-{next(_serial)}>"
+    try:
+        pieces = tuple(
+            _compile_piece(generated.source[start:end], first, filename) for first, start, end in generated.pieces
+        )
+    except (SyntaxError, RecursionError, MemoryError, ValueError) as error:  # e.g. nesting beyond CPython's limits
+        raise CompileError([diagnostic(f"the generated code does not compile: {error}", None)]) from None
     return CompiledProgram(program, generated, pieces, filename)
 
 

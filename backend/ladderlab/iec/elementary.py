@@ -69,9 +69,9 @@ ELEMENTARY: dict[str, ElementaryType] = {
 #: Short spellings accepted wherever a type name is (TOD, DT) - spec TYP-01.
 ALIASES: dict[str, str] = {"TOD": "TIME_OF_DAY", "DT": "DATE_AND_TIME"}
 
-#: Default length of STRING when declared without [n] (IEC default; spec TYP-04 allows up to 255).
+#: Default length of STRING when declared without [n] (IEC default; spec TYP-04 allows up to 255, the
+#: default of ``limits.STRING_LENGTH``).
 DEFAULT_STRING_LENGTH = 80
-MAX_STRING_LENGTH = 255
 
 #: Generic type families used only in standard function signatures (spec TYP-06/07).
 GENERIC: dict[str, frozenset[str]] = {}

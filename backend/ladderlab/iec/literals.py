@@ -88,6 +88,8 @@ def _clock_ms(body: str) -> int:
     parts = body.split(":")
     hours, minutes = int(parts[0]), int(parts[1])
     seconds = float(parts[2]) if len(parts) > 2 else 0.0
+    if not (0 <= hours < 24 and 0 <= minutes < 60 and 0 <= seconds < 60):
+        raise ValueError("the time of day must lie between 00:00:00 and 23:59:59.999")
     return round(((hours * 60 + minutes) * 60 + seconds) * 1000)
 
 

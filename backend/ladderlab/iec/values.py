@@ -26,10 +26,10 @@ from collections.abc import Callable
 from functools import cache
 from typing import Any, NamedTuple
 
+from .. import limits
 from .elementary import (
     DEFAULT_STRING_LENGTH,
     ELEMENTARY,
-    MAX_STRING_LENGTH,
     ElementaryType,
     elementary,
 )
@@ -86,8 +86,8 @@ def resolve(type_name: str) -> TypeRef:
     sized = _STRING_N.match(text)
     if sized:
         length = int(sized.group(1))
-        if not 1 <= length <= MAX_STRING_LENGTH:
-            raise ValueError(f"STRING length {length} is outside 1..{MAX_STRING_LENGTH}")
+        if not 1 <= length <= limits.STRING_LENGTH.value:
+            raise ValueError(f"STRING length {length} is outside 1..{limits.STRING_LENGTH.value}")
         return TypeRef(ELEMENTARY["STRING"], length)
     elem = elementary(text)
     if elem is None:

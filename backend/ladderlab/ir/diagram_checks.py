@@ -14,7 +14,7 @@ from typing import Protocol
 
 from ..iec.spelling import did_you_mean
 
-_LABEL = re.compile(r"^([A-Za-z_][A-Za-z0-9_]*|[0-9]+)$")
+_LABEL = re.compile(r"^([A-Za-z_][A-Za-z0-9_]*|[0-9]+)\Z")
 
 
 class Report(Protocol):

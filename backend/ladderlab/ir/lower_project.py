@@ -17,6 +17,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from ..collector import collector_paused
+from ..deep import deep_call
 from ..model.diagnostics import Diagnostic, has_errors
 from ..model.project import Pou as ModelPou
 from ..model.project import Project
@@ -24,6 +25,7 @@ from ..model.validate import validate_project
 from ..st import types as st_types
 from ..st.checker import check_project
 from ..st.symbols import CheckResult, PouInfo, Symbol
+from .build_limits import data_too_large, source_too_large
 from .context import PouContext
 from .lower_configuration import lower_configuration
 from .lower_fbd import lower_fbd_body
@@ -52,10 +54,13 @@ class LoweringResult:
 def lower_project(project: Project, checked: CheckResult | None = None) -> LoweringResult:
     """Check (unless ``checked`` is given) and lower ``project``; never raises for any project content."""
     with collector_paused():  # see ladderlab.collector: the cyclic GC is most of the cost of a large build
-        return _lower_project(project, checked)
+        return deep_call(_lower_project, project, checked)  # recursion per nesting level: ladderlab.deep
 
 
 def _lower_project(project: Project, checked: CheckResult | None) -> LoweringResult:
+    too_large = source_too_large(project)
+    if too_large is not None:  # refused before it is parsed: a build needs ~800 MB per MB of ST
+        return LoweringResult(None, [too_large])
     if checked is None:
         checked = check_project(project)
     diagnostics = validate_project(project) + list(checked.diagnostics)
@@ -68,6 +73,9 @@ def _lower_project(project: Project, checked: CheckResult | None) -> LoweringRes
             pous[pou.name.upper()] = lower_pou(pou, info, checked, diagnostics, image)
     instances, tasks, access = lower_configuration(checked, diagnostics, image)
     program = Program(pous, globals_ + list(image.values()), tasks, instances, access)
+    too_much = data_too_large(program)
+    if too_much is not None:
+        diagnostics.append(too_much)
     return LoweringResult(None if has_errors(diagnostics) else program, diagnostics)
 
 

@@ -21,6 +21,7 @@ import functools
 import math
 from typing import Any
 
+from .. import limits
 from ..iec.addresses import incomplete
 from ..iec.values import default_value, f32, store_fn
 from ..st import ast
@@ -87,6 +88,9 @@ class TypeLowering:
                     return Subrange(Elementary(ty.name), low, high)
             return Elementary(ty.name)
         if isinstance(ty, t.StringType):
+            if ty.length is not None and ty.length > limits.STRING_LENGTH.value:
+                found = f"{'WSTRING' if ty.wide else 'STRING'}[{ty.length}] holds {ty.length:,} characters"
+                raise LoweringError(limits.STRING_LENGTH.message(found), code="LIMIT-SIZE")
             return Elementary("STRING", ty.length)  # WSTRING too: both are Python str in the value model
         if isinstance(ty, (t.UntypedInt, t.UntypedReal)):
             return self.type_of(t.concrete(ty))
@@ -96,7 +100,18 @@ class TypeLowering:
             if any(low > high for low, high in ty.dims):  # type: ignore[misc]
                 raise LoweringError(None)  # the checker reported the empty range
             element_spec = spec.element if isinstance(spec, ast.ArrayType) else None
-            return Array(self.type_of(ty.element, element_spec), tuple(ty.dims))  # type: ignore[arg-type]
+            count = _size(Array(Elementary("BOOL"), tuple(ty.dims)))  # type: ignore[arg-type]  # no open dims here
+            if count > limits.ARRAY_ELEMENTS.value:  # before anything is allocated for it
+                raise LoweringError(
+                    limits.ARRAY_ELEMENTS.message(f"the array has {count:,} elements"), code="LIMIT-SIZE"
+                )
+            array = Array(self.type_of(ty.element, element_spec), tuple(ty.dims))  # type: ignore[arg-type]  # as above
+            count = scalar_count(array)
+            if count > limits.ARRAY_ELEMENTS.value:  # an array of arrays or structures
+                raise LoweringError(
+                    limits.ARRAY_ELEMENTS.message(f"the array has {count:,} elements"), code="LIMIT-SIZE"
+                )
+            return array
         if isinstance(ty, t.EnumType):
             return Enum(ty.name.upper(), tuple((name, value) for name, (_, value) in ty.values.items()))
         if isinstance(ty, t.StructType):
@@ -329,6 +344,15 @@ def byte_size(type: IrType) -> int:
     if isinstance(type, Struct):
         return sum(byte_size(f.type) for f in type.fields)
     raise LoweringError("SIZEOF of a function block instance is not supported")
+
+
+def scalar_count(type: IrType) -> int:
+    """How many scalar values a variable of ``type`` holds (an FB instance's are counted with its POU)."""
+    if isinstance(type, Array):
+        return _size(type) * scalar_count(type.element)
+    if isinstance(type, Struct):
+        return sum(scalar_count(f.type) for f in type.fields)
+    return 0 if isinstance(type, FbInstance) else 1
 
 
 def _nest(values: list[object], dims: tuple[tuple[int, int], ...]) -> tuple:

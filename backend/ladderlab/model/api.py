@@ -16,12 +16,14 @@ from .project import Project
 
 
 class ProjectSummary(BaseModel):
-    """One row of ``GET /api/projects``."""
+    """One row of ``GET /api/projects``; a project whose files do not load has no revision and says why in
+    ``problems`` (located in its files), so it is listed rather than silently missing."""
 
     name: str
-    revision: str
+    revision: str | None
     modified: datetime
     pou_count: int
+    problems: list[Diagnostic] = Field(default_factory=list)
 
 
 class CreateProject(BaseModel):

@@ -8,9 +8,11 @@ every edit reflows cleanly and the files diff well in git.
 from __future__ import annotations
 
 from collections.abc import Iterator
-from typing import Annotated, Literal
+from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import BaseModel, ConfigDict, Field, model_validator
+
+from .. import limits
 
 ContactMode = Literal["no", "nc", "p", "n"]
 CoilMode = Literal["normal", "negated", "set", "reset", "p", "n"]
@@ -85,6 +87,17 @@ class LdNetwork(BaseModel):
     comment: str | None = None
     elements: list[LdElement] = Field(default_factory=list)
 
+    @model_validator(mode="before")
+    @classmethod
+    def _not_too_deep(cls, data: Any) -> Any:
+        """Branches nested deeper than ``limits.DIAGRAM_DEPTH`` are refused before they are validated (they
+        saved, then could not be sent back: issue 18). Measured on the raw data, without recursion."""
+        if isinstance(data, dict):
+            deep = _deepest(data.get("elements"))
+            if deep is not None:
+                raise ValueError(limits.DIAGRAM_DEPTH.too_deep(f"element {deep!r}"))
+        return data
+
 
 class LdBody(BaseModel):
     model_config = ConfigDict(extra="forbid")
@@ -94,6 +107,27 @@ class LdBody(BaseModel):
     def calls(self) -> set[str]:
         """The names (upper case) of the functions and FB types the boxes call: the body's edges of the call graph."""
         return {e.call.upper() for n in self.networks for e in walk(n.elements) if isinstance(e, Box)}
+
+
+def _deepest(elements: Any) -> str | None:
+    """The id of the first element (in raw data) whose parallels or box inputs cross the nesting limit."""
+    limit = limits.DIAGRAM_DEPTH.value
+    todo = [(elements, 0)]
+    while todo:
+        series, depth = todo.pop()
+        if not isinstance(series, list):
+            continue
+        for element in series:
+            if not isinstance(element, dict):
+                continue
+            nested = element.get("branches") if element.get("type") == "parallel" else None
+            inputs = element.get("inputs") if element.get("type") == "box" else None
+            children = list(nested) if isinstance(nested, list) else []
+            children += [v for v in inputs.values() if isinstance(v, list)] if isinstance(inputs, dict) else []
+            if children and depth + 1 > limit:
+                return str(element.get("id"))
+            todo.extend((child, depth + 1) for child in children)
+    return None
 
 
 def walk(elements: list[LdElement]) -> Iterator[LdElement]:

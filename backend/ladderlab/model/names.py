@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import re
 
-IEC_IDENTIFIER = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
-PROJECT_NAME = re.compile(r"^[A-Za-z0-9][A-Za-z0-9 _.-]*$")
+IEC_IDENTIFIER = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*\Z")  # \Z: "$" would accept a final newline
+PROJECT_NAME = re.compile(r"^[A-Za-z0-9][A-Za-z0-9 _.-]*\Z")
 MAX_NAME_LENGTH = 64
 
 

@@ -8,7 +8,7 @@ from .diagnostics import Diagnostic
 from .names import pou_name_problem
 from .project import ProgramInstance, Project, Task
 
-_TIME_LITERAL = re.compile(r"^(T|TIME)#-?(\d+(\.\d+)?(d|h|ms|m|s|us|ns)_?)+$", re.IGNORECASE)
+_TIME_LITERAL = re.compile(r"^(T|TIME)#-?(\d+(\.\d+)?(d|h|ms|m|s|us|ns)_?)+\Z", re.IGNORECASE)
 
 
 def validate_project(project: Project) -> list[Diagnostic]:

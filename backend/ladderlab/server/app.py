@@ -17,10 +17,11 @@ from fastapi.staticfiles import StaticFiles
 
 from .. import __version__
 from ..storage import Workspace
-from . import fbd, interchange, library, live_check, monitor, projects, simulations, symbols
+from . import auth, fbd, interchange, library, live_check, monitor, projects, simulations, symbols
 from .context import registry_of
 from .errors import install_error_handlers
-from .limits import BodySizeLimit, Limits
+from .limits import BodySizeLimit, JsonGuard, Limits, WebsocketLimit
+from .security import Security, SecurityMiddleware
 
 STATIC_DIR = Path(__file__).parent / "static"
 
@@ -39,18 +40,24 @@ async def _lifespan(app: FastAPI) -> AsyncIterator[None]:
         registry.close()
 
 
-def create_app(workspace: Workspace, limits: Limits | None = None) -> FastAPI:
+def create_app(workspace: Workspace, limits: Limits | None = None, security: Security | None = None) -> FastAPI:
+    """The app over ``workspace``; ``security`` says how it is reached (default: this machine only, no sign-in)."""
     app = FastAPI(title="LadderLab", version=__version__, lifespan=_lifespan)
     app.state.workspace = workspace
     app.state.limits = limits or Limits()
+    app.state.security = security or Security()
     install_error_handlers(app)
+    # the last added runs first: security checks, open websockets, body size, JSON guard
+    app.add_middleware(JsonGuard)
     app.add_middleware(BodySizeLimit, max_bytes=app.state.limits.max_body_bytes)
+    app.add_middleware(WebsocketLimit, max_open=app.state.limits.max_websockets)
+    app.add_middleware(SecurityMiddleware, security=app.state.security)
 
     @app.get("/api/health")
     async def health() -> dict[str, str]:  # on the event loop: answers whatever the worker threads are doing
         return {"status": "ok", "version": __version__}
 
-    for module in (projects, symbols, library, simulations, monitor, interchange, fbd, live_check):
+    for module in (projects, symbols, library, simulations, monitor, interchange, fbd, live_check, auth):
         app.include_router(module.router)
 
     if (STATIC_DIR / "index.html").is_file():

@@ -28,6 +28,7 @@ from ..storage import (
     NotFoundError,
     ProjectLoadError,
     StorageError,
+    StorageFullError,
 )
 from ..storage.errors import expectation, json_path
 from .context import modified_at
@@ -70,6 +71,7 @@ _DESCRIPTIONS = {
     422: "Bad name, invalid model or a project that does not load; see the diagnostics.",
     428: "The save needs an If-Match header naming the revision it is based on.",
     429: "Too many projects in the workspace.",
+    507: "The disk is full: nothing was saved and the stored project is unchanged.",
 }
 
 _STORAGE_STATUS: list[tuple[type[StorageError], int]] = [
@@ -77,6 +79,7 @@ _STORAGE_STATUS: list[tuple[type[StorageError], int]] = [
     (AlreadyExistsError, 409),
     (InvalidNameError, 422),
     (ProjectLoadError, 422),
+    (StorageFullError, 507),
 ]
 
 

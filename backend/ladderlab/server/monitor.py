@@ -39,6 +39,7 @@ from ..simulation.registry import SimulationEntry, SimulationSettings, UnknownSi
 from ..simulation.remote import Frame, SimulationHandle, Watch
 from ..simulation.runner import CommandError, changes
 from .context import registry_of
+from .security import websocket_origin_allowed
 
 log = logging.getLogger(__name__)
 
@@ -52,20 +53,10 @@ CLOSE_TRY_LATER = 1013
 _KEYS = itertools.count(1)  # a client's key in its simulation (watches, traces)
 
 
-def origin_allowed(websocket: WebSocket, settings: SimulationSettings) -> bool:
-    """Browsers send ``Origin`` on every websocket upgrade: it must be the origin this server is served
-    from (same host and port) or listed in the settings. Clients that send none are not browsers."""
-    origin = websocket.headers.get("origin")
-    if origin is None:
-        return True
-    host = websocket.headers.get("host", "")
-    return origin in (f"http://{host}", f"https://{host}") or origin in settings.allowed_origins
-
-
 @router.websocket("/api/simulations/{sim_id}/ws")
 async def monitor(websocket: WebSocket, sim_id: str) -> None:
     registry = registry_of(websocket.app)
-    if not origin_allowed(websocket, registry.settings):
+    if not websocket_origin_allowed(websocket):
         await websocket.close(code=1008, reason="origin not allowed")  # before accept: HTTP 403
         return
     await websocket.accept()

@@ -35,7 +35,11 @@ _UNSTORABLE = {"BAD-NAME", "DUPLICATE-POU"}
 def list_projects(workspace: WorkspaceDep) -> list[ProjectSummary]:
     return [
         ProjectSummary(
-            name=info.name, revision=info.revision, pou_count=info.pou_count, modified=modified_at(info.modified)
+            name=info.name,
+            revision=info.revision,
+            pou_count=info.pou_count,
+            modified=modified_at(info.modified),
+            problems=info.problems,
         )
         for info in workspace.list()
     ]

@@ -55,7 +55,6 @@ class SimulationSettings:
     max_instances: int = 32  # POU instances with element power flow per subscription
     max_message_bytes: int = 1 * MB  # one client message
     max_queued: int = 256  # status/log/trace/error messages waiting for a slow client; older logs are dropped
-    allowed_origins: tuple[str, ...] = ()  # websocket origins allowed besides the served one
 
     def worker(self) -> WorkerSettings:
         return WorkerSettings(

@@ -20,6 +20,7 @@ import contextlib
 import io
 import logging
 import multiprocessing
+import os
 import pickle
 import threading
 import time
@@ -77,6 +78,15 @@ def _start_fork_server() -> None:
         log.exception("the fork server did not start")
 
 
+def _with_settings(settings: dict[str, str], target: Callable[..., None], *args: Any) -> None:
+    """Run ``target`` with the server's ``LADDERLAB_*`` settings as they are now (the fork server's environment
+    is the one it started with; the documented limits are read from these: docs/security.md)."""
+    for key in [key for key in os.environ if key.startswith("LADDERLAB_")]:
+        del os.environ[key]
+    os.environ.update(settings)
+    target(*args)
+
+
 def start_process(target: Callable[..., None], *args: Any, name: str) -> tuple[BaseProcess, Connection]:
     """Start ``target(connection, *args)`` in a worker process; returns it and the server's end of the connection.
 
@@ -84,7 +94,8 @@ def start_process(target: Callable[..., None], *args: Any, name: str) -> tuple[B
     would run a main script again in every worker, costing time and running code not meant to run there)."""
     context = worker_context()
     ours, theirs = context.Pipe()
-    process = context.Process(target=target, args=(theirs, *args), name=name, daemon=True)
+    settings = {key: value for key, value in os.environ.items() if key.startswith("LADDERLAB_")}
+    process = context.Process(target=_with_settings, args=(settings, target, theirs, *args), name=name, daemon=True)
     with _starting:
         prepare = spawn.get_preparation_data
         spawn.get_preparation_data = _without_main(prepare)

@@ -24,6 +24,7 @@ from ..model.diagnostics import Diagnostic
 from . import ast
 from .comments import attach_comments, blank_nested_comments
 from .errors import describe_unexpected, last_token, would_accept
+from .nesting import too_deep
 from .quick_decls import quick_declarations
 from .transformer import AstBuilder, StSyntaxError
 
@@ -113,7 +114,7 @@ def parse_source(text: str, *, file: str | None = None, nested_comments: bool = 
     result = _run(prepared, "start_source", file)
     if result.ast is not None:
         _name_pous(result)
-        return _finish(result, text)
+        return _finish(result, text, file)
     items: list[Any] = []
     diagnostics: list[Diagnostic] = []
     for unit in split_units(prepared):
@@ -124,12 +125,12 @@ def parse_source(text: str, *, file: str | None = None, nested_comments: bool = 
             items += part.ast.items
     if not diagnostics:  # the split hid the problem (e.g. text outside any unit): keep the whole-file report
         diagnostics = result.diagnostics
-    return _finish(ParseResult(ast.Source(items, ast.NO_SPAN), diagnostics), text)
+    return _finish(ParseResult(ast.Source(items, ast.NO_SPAN), diagnostics), text, file)
 
 
 def parse_pou(text: str, *, file: str | None = None, nested_comments: bool = False) -> ParseResult:
     """Exactly one PROGRAM, FUNCTION_BLOCK or FUNCTION."""
-    return _finish(_run(_prepare(text, nested_comments), "start_pou", file), text)
+    return _finish(_run(_prepare(text, nested_comments), "start_pou", file), text, file)
 
 
 def parse_declarations(
@@ -141,21 +142,22 @@ def parse_declarations(
     """
     prepared = _prepare(text, nested_comments)
     quick = quick_declarations(prepared, _keywords())
-    return _finish(ParseResult(quick) if quick is not None else _run(prepared, "start_decls", file, pou=pou), text)
+    parsed = ParseResult(quick) if quick is not None else _run(prepared, "start_decls", file, pou=pou)
+    return _finish(parsed, text, file, pou)
 
 
 def parse_statements(
     text: str, *, file: str | None = None, nested_comments: bool = False, pou: str | None = None
 ) -> ParseResult:
     """A statement list (an ST POU body): ``list[Stmt]``."""
-    return _finish(_run(_prepare(text, nested_comments), "start_stmts", file, pou=pou), text)
+    return _finish(_run(_prepare(text, nested_comments), "start_stmts", file, pou=pou), text, file, pou)
 
 
 def parse_expression(
     text: str, *, file: str | None = None, nested_comments: bool = False, pou: str | None = None
 ) -> ParseResult:
     """One operand or expression, e.g. an LD contact's ``T1.Q`` or a pin's ``arr[i] + 1``."""
-    return _finish(_run(_prepare(text, nested_comments), "start_expr", file, pou=pou), text)
+    return _finish(_run(_prepare(text, nested_comments), "start_expr", file, pou=pou), text, file, pou)
 
 
 def parse_type(text: str, *, file: str | None = None, pou: str | None = None) -> ParseResult:
@@ -180,10 +182,19 @@ def _prepare(text: str, nested_comments: bool) -> str:
     return blank_nested_comments(text) if nested_comments else text
 
 
-def _finish(result: ParseResult, original: str) -> ParseResult:
+def _finish(result: ParseResult, original: str, file: str | None = None, pou: str | None = None) -> ParseResult:
+    if result.ast is not None and len(original) >= _NESTING_NEEDS:
+        deep = too_deep(result.ast)
+        if deep is not None:  # nothing after the parser may meet nesting beyond the limits (st/nesting.py)
+            message, span = deep
+            result.diagnostics.append(_diagnostic(message, span, file, pou, code="ST-TOO-DEEP"))
+            result.ast = None
     if result.ast is not None:
         attach_comments(result.ast, original)
     return result
+
+
+_NESTING_NEEDS = 100  # characters: a shorter text cannot nest anywhere near the limits
 
 
 def _run(text: str, start: str, file: str | None, pou: str | None = None) -> ParseResult:

@@ -354,7 +354,10 @@ class AstBuilder(Transformer):
         return ast.StringLit(decode_string(c[0]), c[0].type == "WSTRING", span_of(c))
 
     def time_literal(self, c):
-        kind, value = decode_time_literal(c[0])
+        try:
+            kind, value = decode_time_literal(c[0])
+        except ValueError as error:  # D#2024-02-30, TOD#25:00: the grammar's shape, not a real date or time
+            raise StSyntaxError(f"{c[0]} is not a valid date or time: {error}", span_of(c)) from None
         return ast.TimeLit(kind, value, span_of(c))
 
     def typed_literal(self, c):

@@ -7,6 +7,7 @@ from .errors import (
     NotFoundError,
     ProjectLoadError,
     StorageError,
+    StorageFullError,
 )
 from .load import load_project_path
 from .workspace import ProjectInfo, StoredProject, Workspace
@@ -19,6 +20,7 @@ __all__ = [
     "ProjectInfo",
     "ProjectLoadError",
     "StorageError",
+    "StorageFullError",
     "StoredProject",
     "Workspace",
     "load_project_path",

@@ -6,6 +6,7 @@ from typing import Any
 
 from pydantic import ValidationError
 
+from ..json_guard import json_problem
 from ..model import Diagnostic
 
 
@@ -19,6 +20,21 @@ class StorageError(Exception):
 
 class ProjectLoadError(StorageError):
     """A project file or folder does not parse; nothing was changed."""
+
+
+class StorageFullError(StorageError):
+    """The disk (or the user's quota) is full: the save was not made and the stored project is unchanged."""
+
+    def __init__(self, name: str, reason: str) -> None:
+        super().__init__(
+            [
+                Diagnostic(
+                    code="DISK-FULL",
+                    message=f"project {name!r} was not saved: {reason}. The stored project is unchanged; "
+                    "free some disk space and save again",
+                )
+            ]
+        )
 
 
 class InvalidNameError(StorageError):
@@ -107,3 +123,12 @@ def expectation(err: dict[str, Any]) -> str:
     if "input" in err and not isinstance(err["input"], (dict, list)):
         message += f" (got {err['input']!r})"
     return message
+
+
+def json_text_problem(text: str | bytes, file: str | None) -> Diagnostic | None:
+    """The located refusal of JSON text nested too deeply or holding a lone surrogate (json_guard.py)."""
+    problem = json_problem(text)
+    if problem is None:
+        return None
+    message, line, column = problem
+    return Diagnostic(code="BAD-JSON", file=file, line=line, column=column, message=message)

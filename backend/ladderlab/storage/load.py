@@ -2,16 +2,20 @@
 
 from __future__ import annotations
 
+import contextlib
 import json
 from pathlib import Path
 
+from filelock import FileLock
 from pydantic import ValidationError
 
 from ..model import Diagnostic, Project
 from ..st.project_text import source_to_project
-from .errors import ProjectLoadError, validation_diagnostics
-from .project_folder import PROJECT_FILE, read_project_folder
+from . import journal
+from .errors import ProjectLoadError, json_text_problem, validation_diagnostics
+from .project_folder import PROJECT_FILE, is_project_file, read_project_folder
 from .text_files import CLI_HINT, decode_text
+from .workspace import LOCKS_DIR
 
 
 def load_project_path(path: Path | str, encoding: str | None = None, hint: str = CLI_HINT) -> Project:
@@ -19,6 +23,7 @@ def load_project_path(path: Path | str, encoding: str | None = None, hint: str =
     with located diagnostics (a file that does not decode: BAD-ENCODING at its first bad byte)."""
     path = Path(path)
     if path.is_dir():
+        _finish_interrupted_save(path)
         if not (path / PROJECT_FILE).is_file():
             raise _error(str(path), f"not a project folder: it has no {PROJECT_FILE}")
         return read_project_folder(path, encoding, hint)
@@ -32,7 +37,21 @@ def load_project_path(path: Path | str, encoding: str | None = None, hint: str =
     raise _error(str(path), "expected a project folder, a project .json file or a .st file")
 
 
+def _finish_interrupted_save(folder: Path) -> None:
+    """Replay or drop a save a crash interrupted, so the folder reads as exactly one revision.
+
+    Inside a workspace (it has ``.locks/``) under that project's lock, as a server would take it."""
+    if not journal.pending(folder):
+        return
+    locks = folder.resolve().parent / LOCKS_DIR
+    with FileLock(locks / f"{folder.resolve().name}.lock") if locks.is_dir() else contextlib.nullcontext():
+        journal.recover(folder, is_project_file)
+
+
 def _load_json_project(path: Path, text: str) -> Project:
+    refused = json_text_problem(text, path.name)
+    if refused is not None:
+        raise ProjectLoadError([refused])
     try:
         data = json.loads(text)
     except json.JSONDecodeError as err:

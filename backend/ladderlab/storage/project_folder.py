@@ -17,13 +17,14 @@ from __future__ import annotations
 
 import hashlib
 import json
+import os
 from pathlib import Path
 from typing import Any
 
 from pydantic import ValidationError
 
 from ..model import Diagnostic, Pou, Project, Task
-from .errors import ProjectLoadError, validation_diagnostics
+from .errors import ProjectLoadError, json_text_problem, validation_diagnostics
 from .st_text import StTextError, compose_pou_text, parse_pou_text, round_trips
 from .text_files import HINT, decode_text
 
@@ -90,14 +91,35 @@ def revision_of(project: Project) -> str:
     return hashlib.sha256(canonical.encode()).hexdigest()[:16]
 
 
+def is_project_file(rel: str) -> bool:
+    """Whether ``rel`` (``/``-separated) names a file a project folder may hold: saves write and delete only these."""
+    if rel in (PROJECT_FILE, TYPES_FILE, GLOBALS_FILE):
+        return True
+    folder, _, name = rel.partition("/")
+    return (
+        folder == POUS_DIR
+        and name.endswith(POU_SUFFIXES)
+        and not name.startswith(".")
+        and "/" not in name
+        and "\\" not in name
+        and name not in (".", "..")
+    )
+
+
 def read_project_folder(folder: Path, encoding: str | None = None, hint: str = HINT) -> Project:
     """Load a project folder; raises ProjectLoadError naming every bad file and JSON path.
 
     Its files are UTF-8 unless ``encoding`` says otherwise (text_files.py: a file that does not decode is a
-    located BAD-ENCODING error; ``hint`` says what to do about it)."""
+    located BAD-ENCODING error; ``hint`` says what to do about it). A symbolic link that leads out of the
+    folder is refused (a project someone sent must not make LadderLab show or overwrite files elsewhere);
+    links within the folder are followed."""
     problems: list[Diagnostic] = []
-    read = _Reader(encoding, hint, problems)
-    meta = read.json(folder / PROJECT_FILE, PROJECT_FILE)
+    read = _Reader(folder, encoding, hint, problems)
+    if not _inside(folder, folder / POUS_DIR):
+        raise ProjectLoadError([_outside(POUS_DIR)])
+    meta = read.json(folder / PROJECT_FILE, PROJECT_FILE) if _inside(folder, folder / PROJECT_FILE) else None
+    if meta is None and not problems:
+        problems.append(_outside(PROJECT_FILE))
     if meta is None:
         raise ProjectLoadError(problems)
     if not isinstance(meta, dict):
@@ -144,7 +166,7 @@ def _pou_names(folder: Path, order: list[str]) -> list[str]:
     known = {n.upper() for n in names}
     pous_dir = folder / POUS_DIR
     if pous_dir.is_dir():
-        for path in sorted(pous_dir.iterdir()):
+        for path in sorted(pous_dir.iterdir(), key=lambda p: p.name):
             name = _pou_name_of(path.name)
             if name and name.upper() not in known:
                 names.append(name)
@@ -176,6 +198,9 @@ def _read_pou(folder: Path, name: str, read: _Reader) -> Pou | None:
         return None
     path = paths[0]
     rel = f"{POUS_DIR}/{path.name}"
+    if not _inside(folder, path):
+        problems.append(_outside(rel, name))
+        return None
     if path.name.endswith(".json"):
         data = read.json(path, rel)
         if data is None:
@@ -222,17 +247,36 @@ def _read_pou(folder: Path, name: str, read: _Reader) -> Pou | None:
     return pou
 
 
+def _inside(folder: Path, path: Path) -> bool:
+    """Whether ``path`` (following links) stays inside ``folder``; a path that does not exist does."""
+    if not os.path.lexists(path):
+        return True
+    return path.resolve().is_relative_to(folder.resolve())
+
+
+def _outside(rel: str, pou: str | None = None) -> Diagnostic:
+    return Diagnostic(
+        code="BAD-FILE",
+        file=rel,
+        pou=pou,
+        message="is a symbolic link that leads out of the project folder; LadderLab does not follow it",
+    )
+
+
 class _Reader:
     """Reads the files of one project folder in one encoding, collecting every problem."""
 
-    def __init__(self, encoding: str | None, hint: str, problems: list[Diagnostic]):
-        self.encoding, self.hint, self.problems = encoding, hint, problems
+    def __init__(self, folder: Path, encoding: str | None, hint: str, problems: list[Diagnostic]):
+        self.folder, self.encoding, self.hint, self.problems = folder, encoding, hint, problems
 
     def text(self, path: Path, rel: str, pou: str | None = None) -> str | None:
         """A text file exactly as stored (no newline translation: a '\\r' typed into a POU comes back as typed);
-        "" when it is missing, None when it does not decode (reported)."""
+        "" when it is missing, None when it leads out of the folder or does not decode (reported)."""
         if not path.is_file():
             return ""
+        if not _inside(self.folder, path):
+            self.problems.append(_outside(rel, pou))
+            return None
         try:
             return decode_text(path.read_bytes(), rel, self.encoding, self.hint)
         except ProjectLoadError as err:
@@ -245,6 +289,10 @@ class _Reader:
             return None
         text = self.text(path, rel)
         if text is None:
+            return None
+        refused = json_text_problem(text, rel)
+        if refused is not None:
+            self.problems.append(refused)
             return None
         try:
             return json.loads(text)

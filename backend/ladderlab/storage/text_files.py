@@ -51,10 +51,17 @@ def xml_for_parser(data: bytes, file: str, encoding: str | None = None, hint: st
         if declared:
             text = re.sub(r"encoding\s*=\s*[\"'][^\"']*[\"']", 'encoding="utf-8"', text, count=1)
         return text.encode("utf-8")
-    if declared and codecs.lookup(declared.group(2).decode("ascii", "replace")).name != "utf-8":
-        return data
+    if declared and _codec(declared.group(2).decode("ascii", "replace")) != "utf-8":
+        return data  # another encoding, or one Python does not know: the parser reads or refuses it (XML-ENCODING)
     decode_text(data, file, None, hint)
     return data
+
+
+def _codec(name: str) -> str | None:
+    try:
+        return codecs.lookup(name).name
+    except LookupError:
+        return None
 
 
 def _diagnostic(data: bytes, error: UnicodeDecodeError, file: str, encoding: str | None, hint: str) -> Diagnostic:

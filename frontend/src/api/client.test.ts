@@ -7,6 +7,7 @@ import {
   getProject,
   getSymbols,
   listProjects,
+  requestHeaders,
   requestJson,
   saveProject,
   SaveConflictError,
@@ -89,6 +90,25 @@ describe("requestJson", () => {
     expect(err).toBeInstanceOf(ApiError);
     expect((err as ApiError).status).toBe(0);
     expect((err as ApiError).message).toContain("Failed to fetch");
+  });
+
+  it("says JSON on every state-changing request, body or not, and keeps a type given (issue 18)", async () => {
+    const fetchMock = stubFetch(async () => jsonResponse({}));
+    await requestJson("/api/projects/p/check", { method: "POST" });
+    await requestJson("/api/import/plcopen", { method: "POST", headers: { "Content-Type": "application/xml" } });
+    await requestJson("/api/projects");
+    const types = fetchMock.mock.calls.map(([, init]) => new Headers(init?.headers).get("Content-Type"));
+    expect(types).toEqual(["application/json", "application/xml", null]);
+    expect(new Headers(requestHeaders({ method: "DELETE" })).get("Content-Type")).toBe("application/json");
+  });
+
+  it("sends the browser to the sign-in page when the server answers 401", async () => {
+    stubFetch(async () => jsonResponse({ detail: { message: "sign in first" } }, 401));
+    const assign = vi.fn();
+    vi.stubGlobal("location", { ...window.location, pathname: "/", assign });
+    const err = await requestJson("/api/projects").catch((e: unknown) => e);
+    expect((err as ApiError).status).toBe(401);
+    expect(assign).toHaveBeenCalledWith("/login?next=%2F");
   });
 
   it("rejects a 2xx response that is not JSON", async () => {

@@ -73,18 +73,37 @@ export async function errorFromResponse(response: Response): Promise<ApiError> {
   return new ApiError(text ?? `HTTP ${fallback}`, response.status, detail);
 }
 
+/**
+ * The headers of a request: the server takes a state-changing request (POST, PUT, PATCH, DELETE) only
+ * with a JSON body (or the PLCopen import's XML), so such a request without a Content-Type of its own
+ * says JSON, body or not (docs/security.md: a cross-site page cannot send that without the server's
+ * consent).
+ */
+export function requestHeaders(init?: RequestInit): Headers {
+  const headers = new Headers(init?.headers);
+  if (!headers.has("Accept")) headers.set("Accept", "application/json");
+  const method = (init?.method ?? "GET").toUpperCase();
+  if (method !== "GET" && method !== "HEAD" && !headers.has("Content-Type")) {
+    headers.set("Content-Type", "application/json");
+  }
+  return headers;
+}
+
+/** Where the browser goes when a server that needs sign-in says this browser has not (HTTP 401). */
+export function signInAgain(location: Pick<Location, "pathname" | "assign"> = window.location): void {
+  location.assign(`/login?next=${encodeURIComponent(location.pathname)}`);
+}
+
 /** Fetches `path` and returns its JSON body; throws ApiError for network errors, non-2xx and non-JSON. */
 export async function requestJson<T>(path: string, init?: RequestInit): Promise<T> {
   let response: Response;
   try {
-    response = await fetch(path, {
-      ...init,
-      headers: { Accept: "application/json", ...init?.headers },
-    });
+    response = await fetch(path, { ...init, headers: requestHeaders(init) });
   } catch (err) {
     const reason = err instanceof Error ? err.message : String(err);
     throw new ApiError(`Cannot reach the LadderLab server (${reason})`, 0);
   }
+  if (response.status === 401) signInAgain();
   if (!response.ok) throw await errorFromResponse(response);
   try {
     return (await response.json()) as T;

@@ -109,7 +109,8 @@ export interface ImportReport {
   project: ProjectSummary;
 }
 /**
- * One row of ``GET /api/projects``.
+ * One row of ``GET /api/projects``; a project whose files do not load has no revision and says why in
+ * ``problems`` (located in its files), so it is listed rather than silently missing.
  *
  * This interface was referenced by `ApiTypes`'s JSON-Schema
  * via the `definition` "ProjectSummary".
@@ -118,7 +119,8 @@ export interface ProjectSummary {
   modified: string;
   name: string;
   pou_count: number;
-  revision: string;
+  problems?: Diagnostic[];
+  revision: string | null;
 }
 /**
  * One function or function block the box picker offers (EN/ENO are implicit on all of them).

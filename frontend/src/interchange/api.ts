@@ -1,7 +1,7 @@
 // REST calls of the interchange endpoints (issue 6): PLCopen XML import/export and ST export.
 // The JSON ones go through requestJson; the XML export is a text download, so it needs its own
 // fetch with the same error handling (a 422 carries the diagnostics that block the export).
-import { ApiError, errorFromResponse, exportSt, requestJson } from "../api/client";
+import { ApiError, errorFromResponse, exportSt, requestJson, signInAgain } from "../api/client";
 import type { ImportReport, StExport } from "../generated/api";
 
 const projectPath = (name: string) => `/api/projects/${encodeURIComponent(name)}`;
@@ -19,6 +19,7 @@ export async function exportPlcopen(project: string): Promise<string> {
   } catch (err) {
     throw new ApiError(`Cannot reach the LadderLab server (${err instanceof Error ? err.message : String(err)})`, 0);
   }
+  if (response.status === 401) signInAgain();
   if (!response.ok) throw await errorFromResponse(response);
   return response.text();
 }

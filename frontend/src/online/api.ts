@@ -1,6 +1,6 @@
 // REST calls of online mode (issue 6): create a simulation from the saved project, reset, read its
 // statistics, delete it. Run, stop and single cycle go over the websocket with everything else.
-import { requestJson } from "../api/client";
+import { requestHeaders, requestJson } from "../api/client";
 import type { SimulationInfo } from "../generated/api";
 
 const simulationPath = (id: string) => `/api/simulations/${encodeURIComponent(id)}`;
@@ -28,7 +28,7 @@ export function resetSimulation(id: string, cold = false): Promise<SimulationInf
 }
 
 export async function deleteSimulation(id: string): Promise<void> {
-  await fetch(simulationPath(id), { method: "DELETE" });
+  await fetch(simulationPath(id), { method: "DELETE", headers: requestHeaders({ method: "DELETE" }) });
 }
 
 /** The websocket address of a simulation, on the origin the app was served from. */

@@ -64,6 +64,10 @@ def plan(blocks: list[ir.Block], chunked: bool) -> ChunkPlan:
     result = ChunkPlan(chunks, jumps, not (jumps or returns))
     segment = -1
     for number, chunk in enumerate(chunks):
+        if not chunk:  # an empty body (a new LD/FBD POU has no network yet): one empty segment
+            segment += 1
+            result.segment_chunk.append(number)
+            result.first_segment.append(segment)
         for i, block in enumerate(chunk):
             if i == 0 or block.label is not None:
                 segment += 1

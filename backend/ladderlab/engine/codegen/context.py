@@ -191,10 +191,12 @@ class ModuleContext:
     def struct_class(self, struct: t.Struct) -> str:
         name = self.structs.get(struct)
         if name is None:
-            name = names.struct_class(struct.name)
+            base = name = names.struct_class(struct.name)
             taken = set(self.structs.values())
-            if name in taken:  # two different structures of one name (anonymous or per POU)
-                name = f"{name}_{sum(1 for n in taken if n.startswith(name))}"
+            number = 0
+            while name in taken:  # two structures of one name (anonymous or per POU), or one named like a suffix
+                number += 1
+                name = f"{base}_{number}"
             self.structs[struct] = name
             for f in struct.fields:
                 self.visit_type(f.type)

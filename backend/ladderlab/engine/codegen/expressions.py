@@ -20,6 +20,7 @@ from ..stdlib import specialised
 from . import names
 from .context import CodegenError, std_fb_class, std_pin_type
 from .scope import Scope
+from .source import Source
 from .typeinfo import describe, is_composite, runtime_name, store_code, store_value
 
 _OPERATOR_FUNCTIONS = {
@@ -49,18 +50,60 @@ def literal(value: object) -> str:
     raise CodegenError(f"constant {value!r} of unsupported kind")
 
 
+#: IR levels emitted as one Python expression. CPython's tokenizer allows 200 nested parentheses and each
+#: level takes one to three, so a deeper expression is emitted one operation per line (``linear``).
+NESTED_LEVELS = 40
+
+
+class _TooDeep(Exception):
+    """An expression nests deeper than NESTED_LEVELS: it is emitted again, linearly."""
+
+
 class Expressions:
     def __init__(self, scope: Scope) -> None:
         self.scope = scope
         self.module = scope.module
+        self.depth = 0
+        self.linear = False
+        #: Where the lines computing a deep expression's parts go (just before the statement that uses it);
+        #: None where no line may go (a condition the statement re-evaluates: see Statements).
+        self.sink: Source | None = None
 
     # ------------------------------------------------------------------ dispatch
 
     def expr(self, e: ir.Expr) -> str:
+        """Python source of ``e``. Deeper than NESTED_LEVELS, every operation is computed into a temporary on
+        a line of its own first, in the order the nested expression would evaluate them (operands left to
+        right, an operation after its operands), so the values and faults are the same."""
+        if self.depth or self.linear:
+            return self._expr(e)
+        try:
+            return self._expr(e)
+        except _TooDeep:
+            if self.sink is None:
+                raise CodegenError("this expression nests too deeply to be evaluated here") from None
+            self.depth, self.linear = 0, True
+            try:
+                return self._expr(e)
+            finally:
+                self.linear = False
+
+    def _expr(self, e: ir.Expr) -> str:
         handler = _HANDLERS.get(type(e))
         if handler is None:
             raise CodegenError(f"unknown expression {type(e).__name__}")
-        return handler(self, e)
+        self.depth += 1
+        try:
+            if self.depth > NESTED_LEVELS and not self.linear:
+                raise _TooDeep
+            code = handler(self, e)
+        finally:
+            self.depth -= 1
+        if self.linear and not isinstance(e, ir.Const):  # variables too: a later call may change them
+            temp = self.scope.temp("e")
+            self.sink.line(f"{temp} = {code}")  # type: ignore[union-attr]  # expr() sets it before linear mode
+            return temp
+        return code
 
     def const(self, c: ir.Const) -> str:
         return literal(self.const_value(c))

@@ -66,12 +66,11 @@ def generate(program: ir.Program, variant: str = "fast") -> Generated:
     decls.piece()
     _emit_globals(module, decls)
     emit_tasks(module, code)
-    emitted: set[str] = set()
-    while len(emitted) < len(module.structs):
-        for struct, cls in list(module.structs.items()):
-            if cls not in emitted:
-                emitted.add(cls)
-                emit_struct(module, struct, cls, decls)
+    emitted: set[object] = set()  # by structure, not class name: each round emits at least one, so it ends
+    while pending := [(struct, cls) for struct, cls in module.structs.items() if struct not in emitted]:
+        for struct, cls in pending:  # emitting one may register the structures of its fields
+            emitted.add(struct)
+            emit_struct(module, struct, cls, decls)
     src = Source()
     src.extend(decls)
     src.piece()

@@ -276,6 +276,7 @@ def _emit_chunk(
             _unpack_reference(slot, src)
         if statements.probed:
             src.line("ll_pr, ll_px, ll_k = self.ll_pr, self.ll_px, ll_scan")
+        src.extend(statements.outlines)
         src.extend(body)
         if module.debug and prologue_depth:
             src.line("return")
@@ -364,6 +365,7 @@ def emit_function(module: ModuleContext, pou: ir.Pou, decls: Source, code: Sourc
         if statements.probed:
             key = names.escape(pou.name)
             code.line(f"ll_pr, ll_px, ll_k = ll_pr_{key}, ll_px_{key}, ll_scan")
+        code.extend(statements.outlines)
         code.extend(body)
         code.line(scope.return_statement())
         if module.debug:

@@ -47,7 +47,12 @@ class Statements:
         self.src = src
         self.plan = plan
         self.chunk = chunk
-        self.loops = 0
+        self.loops = 0  # ST loops around the statement being emitted (EXIT needs one)
+        self.blocks = 0  # Python loops around it in the function being written (CPython allows 20)
+        self.outlined = False  # writing an outlined body (``_outline``): RETURN and EXIT return a signal
+        #: The nested functions of outlined bodies; the POU's emitter puts them at the top of its function.
+        self.outlines = Source()
+        self.outlines.depth = src.depth
         self.segment = plan.first_segment[chunk]
         self.now = "ll_now" if scope.function else "now"
         self.me = "None" if scope.function else "self"
@@ -67,6 +72,9 @@ class Statements:
     def body(self) -> None:
         """This chunk's blocks: in a dispatch loop over its segments when the POU jumps."""
         blocks = self.plan.chunks[self.chunk]
+        if not blocks:  # an empty body (a new LD/FBD POU has no network yet)
+            self.src.line("pass")
+            return
         if not self.plan.jumps:
             for block in blocks:
                 self.block(block)
@@ -108,6 +116,10 @@ class Statements:
     def statements(self, statements: list[ir.Stmt], own_group: bool = True) -> None:
         """``own_group``: the probes here start a group of their own (else the blocks of a straight
         chunk share one, so a scan stamps it once per chunk)."""
+        deep = own_group and statements and (self.src.depth >= OUTLINE_DEPTH or self.blocks >= OUTLINE_BLOCKS)
+        if deep and not any(isinstance(x, ir.Jump) for x in walk(statements)):  # (a jump stays in its function)
+            self._outline(statements)
+            return
         before = len(self.src.lines)
         outer = self.group
         if own_group:
@@ -147,6 +159,7 @@ class Statements:
         oid = self.module.origin(origin, s)
         mark, saved = len(self.src.lines), self.src.origin
         self.src.origin = oid  # (not Source.at: this runs once per statement of 10,000-network programs)
+        self.x.sink = self.src  # a deep expression's parts are computed on lines before the statement
         try:
             if self.debug and origin.line is not None and not isinstance(s, ir.Probe):
                 self.pause("statement", origin)
@@ -197,21 +210,70 @@ class Statements:
     def _if(self, s: ir.If, oid: int) -> None:
         if not self.module.probes and _only_probes(s):
             return  # e.g. the EN-guarded probes of a box: nothing left to run in the fast variant
-        keyword = "if"
-        for cond, body in s.branches:
-            self.src.line(f"{keyword} {self.x.expr(cond)}:")
+        self._chain([(self._condition(cond), body) for cond, body in s.branches], s.orelse)
+
+    def _condition(self, e: ir.Expr) -> tuple[str, Source]:
+        """A condition's source and the lines that compute its parts first (a deep expression), unplaced."""
+        before = Source()
+        before.origin = self.src.origin
+        saved, self.x.sink = self.x.sink, before
+        try:
+            return self.x.expr(e), before
+        finally:
+            self.x.sink = saved
+
+    def _chain(self, branches: list[tuple[tuple[str, Source], list[ir.Stmt]]], orelse: list[ir.Stmt]) -> None:
+        """``if``/``elif``/``else`` over (condition, body) pairs. CPython's compiler recurses once per ``elif``,
+        and a condition computed on lines of its own cannot follow an ``elif``, so a chain longer than
+        CHAIN_BRANCHES, or one with such a condition after its first branch, continues in flat groups:
+        ``if ll_pN:``, where ``ll_pN`` says that no branch has been taken yet."""
+        split = [i for i, ((_, before), _) in enumerate(branches) if i and (i % CHAIN_BRANCHES == 0 or before.lines)]
+        pending = self.scope.temp("p") if split else None
+        if pending:
+            self.src.line(f"{pending} = False")
+        starts = [0, *split]
+        for number, start in enumerate(starts):
+            group = branches[start : starts[number + 1] if number + 1 < len(starts) else len(branches)]
+            last = number + 1 == len(starts)
+            with self.src.indent() if start else nullcontext():
+                if start:
+                    self.src.line(f"{pending} = False")
+                for i, ((condition, before), body) in enumerate(group):
+                    if before.lines:
+                        self._place(before)
+                    self.src.line(f"{'elif' if i else 'if'} {condition}:")
+                    with self.src.indent():
+                        self.statements(body)
+                if not last:
+                    self.src.line("else:")
+                    with self.src.indent():
+                        self.src.line(f"{pending} = True")
+                elif orelse and not pending:
+                    self.src.line("else:")
+                    with self.src.indent():
+                        self.statements(orelse)
+                elif orelse:
+                    self.src.line("else:")
+                    with self.src.indent():
+                        self.src.line(f"{pending} = True")
+            if not last:
+                self.src.line(f"if {pending}:")
+        if orelse and pending:
+            self.src.line(f"if {pending}:")
             with self.src.indent():
-                self.statements(body)
-            keyword = "elif"
-        if s.orelse:
-            self.src.line("else:")
-            with self.src.indent():
-                self.statements(s.orelse)
+                self.statements(orelse)
+
+    def _place(self, before: Source) -> None:
+        """Write lines computed for a condition at the current depth."""
+        for line, origin in zip(before.lines, before.line_origins):
+            saved, self.src.origin = self.src.origin, origin
+            self.src.line(line)
+            self.src.origin = saved
 
     def _case(self, s: ir.Case, oid: int) -> None:
         selector = self.scope.temp("sel")
         self.src.line(f"{selector} = {self.x.expr(s.selector)}")
-        keyword = "if"
+        branches = []
         for labels, body in s.branches:
             tests = []
             singles = [label for label in labels if isinstance(label, int)]
@@ -227,14 +289,10 @@ class Statements:
                     tests.append(f"{literal(lo)} <= {selector} <= {literal(hi)}")
                 elif not isinstance(label, int) or isinstance(label, bool):
                     raise CodegenError(f"CASE label {label!r} is not an integer")
-            self.src.line(f"{keyword} {' or '.join(tests) or 'False'}:")
-            with self.src.indent():
-                self.statements(body)
-            keyword = "elif"
-        if s.orelse:
-            self.src.line("else:" if keyword == "elif" else "if True:")
-            with self.src.indent():
-                self.statements(s.orelse)
+            branches.append(((" or ".join(tests) or "False", Source()), body))
+        if not branches:
+            branches.append((("False", Source()), []))
+        self._chain(branches, s.orelse)
 
     @contextmanager
     def _counted(self) -> Iterator[None]:
@@ -259,10 +317,51 @@ class Statements:
 
     def _loop_body(self, body: list[ir.Stmt]) -> None:
         self.loops += 1
+        self.blocks += 1
         try:
             self.statements(body)
         finally:
             self.loops -= 1
+            self.blocks -= 1
+
+    def _outline(self, statements: list[ir.Stmt]) -> None:
+        """Emit a deeply nested body as a nested function defined at the top of the function being written
+        and call it here: CPython's tokenizer allows 100 levels of indentation and its compiler 20 nested
+        loops per function. The function sees the POU's variables as the body would (a FUNCTION's locals
+        through ``nonlocal``); it returns 1 for an EXIT of a loop around it, 2 for a RETURN."""
+        name = self.scope.temp("o")
+        body = Source()
+        body.depth, body.origin = self.outlines.depth + 1, self.src.origin
+        saved = self.src, self.blocks, self.outlined, self.counting
+        # its loops take the watchdog countdown from ll_wb[0] and give it back, as a called POU's do
+        self.src, self.blocks, self.outlined, self.counting = body, 0, True, False
+        exits = self.loops > 0
+        try:
+            self.statements(statements)
+        finally:
+            self.src, self.blocks, self.outlined, self.counting = saved
+        self.outlines.line(f"def {name}():")
+        with self.outlines.indent():
+            if self.scope.function:
+                local = [names.slot(s.name) for s in self.scope.slots.values() if _bound_local(s)]
+                if local:
+                    self.outlines.line(f"nonlocal {', '.join(local)}")
+        self.outlines.extend(body)
+        with self.outlines.indent():
+            self.outlines.line("return 0")
+            if self.debug:
+                self.outlines.line("yield  # a generator even when no pause point is reached")
+        signal = self.scope.temp("s")
+        if self.counting:
+            self._store_countdown()
+        self.src.line(f"{signal} = yield from {name}()" if self.debug else f"{signal} = {name}()")
+        if self.counting:
+            self.src.line("ll_w = ll_wb[0]")
+        kinds = {type(x) for x in walk(statements)}
+        if exits and ir.Exit in kinds:
+            self.src.line(f"if {signal} == 1: break")
+        if ir.Return in kinds:
+            self.src.line(f"if {signal} == 2: {self._return_text()}")
 
     def _for(self, s: ir.For, oid: int) -> None:
         var, ty = self.x.access(s.var)
@@ -293,10 +392,21 @@ class Statements:
         return stored
 
     def _while(self, s: ir.While, oid: int) -> None:
+        condition, before = self._condition(s.cond)
         with self._counted():
-            self.src.line(f"while {self.x.expr(s.cond)}:")
+            if not before.lines:
+                self.src.line(f"while {condition}:")
+                with self.src.indent():
+                    self._back_edge(oid)
+                    self._loop_body(s.body)
+                return
+            self.src.line("while True:")  # the condition's parts are computed before each test
             with self.src.indent():
                 self._back_edge(oid)
+                self._place(before)
+                self.src.line(f"if not {condition}:")
+                with self.src.indent():
+                    self.src.line("break")
                 self._loop_body(s.body)
 
     def _repeat(self, s: ir.Repeat, oid: int) -> None:
@@ -313,15 +423,19 @@ class Statements:
     def _exit(self, s: ir.Exit, oid: int) -> None:
         if not self.loops:
             raise CodegenError("EXIT outside a loop")
-        self.src.line("break")
+        self.src.line("return 1" if self.outlined and not self.blocks else "break")
 
     def _return(self, s: ir.Return, oid: int) -> None:
         if self.counting:
             self._store_countdown()
+        self.src.line(self._return_text())
+
+    def _return_text(self) -> str:
+        if self.outlined:  # out of an outlined body: its caller returns (``_outline``)
+            return "return 2"
         if self.plan.inline:
-            self.src.line(self.scope.return_statement())
-        else:  # out of a chunk function: tell execute to stop (chunks.py)
-            self.src.line("return -1" if self.plan.jumps else "return True")
+            return self.scope.return_statement()
+        return "return -1" if self.plan.jumps else "return True"  # out of a chunk function: execute stops
 
     def _jump(self, s: ir.Jump, oid: int) -> None:
         target = self.plan.segments.get(s.label.upper()) if self.plan.jumps else None
@@ -366,7 +480,11 @@ class Statements:
         self.probes.deferred.append(index)  # type: ignore[union-attr]
         var: ir.Var = s.value  # type: ignore[assignment]  # deferred.py: a variable of the program, members only
         self.probes.deferred_paths[index] = ".".join([var.name, *(m.name for m in var.path)])  # type: ignore
-        self.reads.append(f"ll_pr[{index}] = {self.x.expr(s.value)}  # {names.comment_text(s.element)}")
+        saved, self.x.sink = self.x.sink, None  # read after the scan, in another function: no lines before it
+        try:
+            self.reads.append(f"ll_pr[{index}] = {self.x.expr(s.value)}  # {names.comment_text(s.element)}")
+        finally:
+            self.x.sink = saved
         self.src.line(f"# ll_pr[{index}] is read after the scan  # {names.comment_text(s.element)}")
 
     def _paused(self, s: ir.Probe) -> None:
@@ -483,6 +601,17 @@ class Statements:
 
 
 _STRAIGHT = (ir.Assign, ir.Probe, ir.FbCall, ir.FnCall)  # statements that never skip what follows
+#: Branches of one if/elif chain (CPython's compiler recurses once per elif); longer chains go in groups.
+CHAIN_BRANCHES = 64
+#: A body nested this deep (indentation levels), or inside this many loops of one Python function, is
+#: moved into a function of its own (``Statements._outline``): CPython allows 100 and 20.
+OUTLINE_DEPTH = 60
+OUTLINE_BLOCKS = 15
+
+
+def _bound_local(slot: ir.Slot) -> bool:
+    """Whether a FUNCTION's slot is a Python local of its function (a scalar VAR_IN_OUT is a reference)."""
+    return slot.var_class != "VAR_EXTERNAL" and not (slot.var_class == "VAR_IN_OUT" and not is_composite(slot.type))
 
 
 def _straight(s: ir.Stmt) -> bool:

@@ -10,6 +10,7 @@ reported and dropped.
 
 from __future__ import annotations
 
+import math
 import xml.etree.ElementTree as ET
 from collections import defaultdict
 from dataclasses import dataclass, field
@@ -104,11 +105,21 @@ def reaches(consumers: dict[int, list[tuple[int, str, Conn]]], start: int, goal:
     return False
 
 
-def _number(text: str | None, default: float = 0.0) -> float:
+def _coordinate(pos: ET.Element | None, axis: str, reader: Reader, pou: str) -> str:
+    """The text of a position coordinate, "0" when it is missing or no finite number (reported: a NaN or an
+    infinity cannot be stored, drawn or saved)."""
+    text = pos.get(axis) if pos is not None else None
+    if text is None:
+        return "0"
     try:
-        return float(text) if text is not None else default
+        if math.isfinite(float(text)):
+            return text.strip()
     except ValueError:
-        return default
+        pass
+    reader.report(
+        "PLCOPEN-GRAPH", f"position {axis}={text!r} is not a finite number; 0 is used", pos, pou=pou, severity="warning"
+    )
+    return "0"
 
 
 def _mods(node: ET.Element, prefix: str = "") -> PinMods:
@@ -141,14 +152,15 @@ def read_graph(container: ET.Element, reader: Reader, pou: str, signatures: Sign
             continue
         pos = reader.child(node, "position")
         order = node.get("executionOrderId")
-        y_text = pos.get("y", "0") if pos is not None else "0"
+        x_text = _coordinate(pos, "x", reader, pou)
+        y_text = _coordinate(pos, "y", reader, pou)
         extra = info(node, reader)
         element = Element(
             local_id,
             tag,
             node,
-            _number(pos.get("x") if pos is not None else None),
-            _number(y_text),
+            float(x_text),
+            float(y_text),
             int(order) if order is not None and order.strip().isdigit() else None,
             y_text=y_text,
             info=extra,

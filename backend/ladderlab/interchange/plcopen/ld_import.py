@@ -43,7 +43,7 @@ from .xml_io import Reader
 
 COMPARE_OPS = ("GT", "GE", "EQ", "LE", "LT", "NE")
 S, T = 0, 1  # left rail, right rail (every jump and return gets a sink point of its own)
-_SIMPLE = re.compile(r"^[A-Za-z_%][A-Za-z0-9_.%\[\]]*$")
+_SIMPLE = re.compile(r"^[A-Za-z_%][A-Za-z0-9_.%\[\]]*\Z")
 _POWER_CONSUMERS = ("contact", "coil", "jump", "return", "rightPowerRail")
 _CONTACT_MODE = {(False, None): "no", (True, None): "nc", (False, "rising"): "p", (False, "falling"): "n"}
 

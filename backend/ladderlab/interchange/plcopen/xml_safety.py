@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 from defusedxml.common import DTDForbidden, EntitiesForbidden, ExternalReferenceForbidden
 from defusedxml.ElementTree import DefusedXMLParser
 
+from ... import limits
 from ...model.diagnostics import Diagnostic
 
 #: Larger documents are refused unread (the biggest real PLCopen projects are a few MB).
@@ -41,19 +42,33 @@ class ParsedXml:
         return self.lines.get(id(element))
 
 
+class TooDeep(Exception):
+    """The document nests elements deeper than ``limits.XML_DEPTH`` (raised while it is parsed)."""
+
+
 class _LineRecorder(ET.TreeBuilder):
-    """Tree builder that notes the parser's current line for each element it opens."""
+    """Tree builder that notes the parser's current line for each element it opens and refuses a document
+    nested deeper than the limit: whatever reads the tree recurses once per level."""
 
     def __init__(self) -> None:
         super().__init__()
         self.expat = None
         self.lines: dict[int, int] = {}
+        self.depth = 0
+        self.max_depth = limits.XML_DEPTH.value
 
     def start(self, tag, attrs):
+        self.depth += 1
+        if self.depth > self.max_depth:
+            raise TooDeep
         element = super().start(tag, attrs)
         if self.expat is not None:
             self.lines[id(element)] = self.expat.CurrentLineNumber
         return element
+
+    def end(self, tag):
+        self.depth -= 1
+        return super().end(tag)
 
 
 def parse_untrusted_xml(data: bytes, *, file: str | None = None, max_bytes: int = MAX_XML_BYTES) -> ParsedXml:
@@ -101,6 +116,17 @@ def parse_untrusted_xml(data: bytes, *, file: str | None = None, max_bytes: int 
                 "external DTDs are never fetched",
                 builder,
                 file,
+            )
+        ) from err
+    except TooDeep as err:
+        raise XmlInputError(_refusal("XML-TOO-DEEP", limits.XML_DEPTH.too_deep("the document"), builder, file)) from err
+    except (ValueError, LookupError) as err:  # expat: an encoding it cannot read (UTF-7, UTF-16 declared in ASCII...)
+        raise XmlInputError(
+            Diagnostic(
+                code="XML-ENCODING",
+                file=file,
+                line=1,
+                message=f"the document's encoding cannot be read ({err}); save it as UTF-8",
             )
         ) from err
     except ET.ParseError as err:
