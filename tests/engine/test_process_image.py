@@ -129,7 +129,7 @@ def test_inputs_are_read_at_the_start_of_a_scan_and_outputs_published_at_its_end
     assert (sim.read("%QX3.1"), sim.published("%QX3.1")) == (False, True)  # the world still sees the last scan
     sim.resume()
     assert sim.published("%QX3.1") is False
-    with pytest.raises(ValueError, match="%IX0.1 is not an output"):
+    with pytest.raises(ValueError, match=r"%IX0\.1 is not an output"):
         sim.published("%IX0.1")
 
 
