@@ -134,7 +134,9 @@ def test_inputs_are_read_at_the_start_of_a_scan_and_outputs_published_at_its_end
 
 
 def test_the_program_writing_an_input_lasts_until_the_next_scan_reads_the_inputs():
-    sim = simulation("PROGRAM Main\nVAR a, b : BOOL; END_VAR\na := %IX0.0;\n%IX0.0 := TRUE;\nb := %IX0.0;\nEND_PROGRAM\n")
+    sim = simulation(
+        "PROGRAM Main\nVAR a, b : BOOL; END_VAR\na := %IX0.0;\n%IX0.0 := TRUE;\nb := %IX0.0;\nEND_PROGRAM\n"
+    )
     for _ in range(2):
         sim.cycle(1)
         assert (sim.read("Main.a"), sim.read("Main.b")) == (False, True)
