@@ -157,41 +157,40 @@ class _ConfigurationChecker:
         info = InstanceInfo(name, pou, instance.retain == "RETAIN")
         self.info.instances[name.upper()] = info
         checker = self._checker()
-        for param, text in instance.inputs.items():
-            symbol = pou.symbols.get(param.upper())
-            at = f"{where}.inputs.{param}"
-            if symbol is None or symbol.var_class != "VAR_INPUT":
-                self._unknown_parameter(pou, param, "VAR_INPUT", at)
-                continue
-            node = self._expression(text, at)
-            if node is not None:
-                value = checker.at(at).expr(node, symbol.type)
-                if value is not ERROR:
-                    assignable_or_report(checker.at(at), symbol.type, value, node, f"input {param} of {name}")
-                info.inputs.append((symbol, node))
-        for param, text in instance.outputs.items():
-            symbol = pou.symbols.get(param.upper())
-            at = f"{where}.outputs.{param}"
-            if symbol is None or symbol.var_class != "VAR_OUTPUT":
-                self._unknown_parameter(pou, param, "VAR_OUTPUT", at)
-                continue
-            node = self._expression(text, at)
-            if node is not None:
-                target = checker.at(at).target(node)
-                if target is not ERROR and t.assignable(target, symbol.type) == "error":
-                    self._report(
-                        "ST-TYPE-MISMATCH",
-                        f"output {param} of {name} is {symbol.type} and cannot be stored in {target}",
-                        at,
-                    )
-                info.outputs.append((symbol, node))
+        for symbol, node, at in self._bindings(pou, instance.inputs, "VAR_INPUT", f"{where}.inputs"):
+            value = checker.at(at).expr(node, symbol.type)
+            if value is not ERROR:
+                assignable_or_report(checker.at(at), symbol.type, value, node, f"input {symbol.name} of {name}")
+            info.inputs.append((symbol, node))
+        for symbol, node, at in self._bindings(pou, instance.outputs, "VAR_OUTPUT", f"{where}.outputs"):
+            target = checker.at(at).target(node)
+            if target is not ERROR and t.assignable(target, symbol.type) == "error":
+                self._report(
+                    "ST-TYPE-MISMATCH",
+                    f"output {symbol.name} of {name} is {symbol.type} and cannot be stored in {target}",
+                    at,
+                )
+            info.outputs.append((symbol, node))
         return info
 
-    def _unknown_parameter(self, pou: PouInfo, param: str, kind: str, where: str) -> None:
-        names = [s.name for s in pou.parameters(kind)]
-        self._report(
-            "ST-CALL-ARGS", f"the program {pou.name} has no {kind} '{param}'" + did_you_mean(param, names), where
-        )
+    def _bindings(
+        self, pou: PouInfo, texts: dict[str, str], kind: str, where: str
+    ) -> list[tuple[Symbol, ast.Expr, str]]:
+        """The parameters of ``kind`` bound in ``texts`` (name -> ST text) with their parsed expressions and where
+        each is written; an unknown parameter or a text that does not parse is reported and left out."""
+        found = []
+        for param, text in texts.items():
+            symbol = pou.symbols.get(param.upper())
+            at = f"{where}.{param}"
+            if symbol is None or symbol.var_class != kind:
+                names = [s.name for s in pou.parameters(kind)]
+                message = f"the program {pou.name} has no {kind} '{param}'" + did_you_mean(param, names)
+                self._report("ST-CALL-ARGS", message, at)
+                continue
+            node = self._expression(text, at)
+            if node is not None:
+                found.append((symbol, node, at))
+        return found
 
     def _single(self, text: str, where: str) -> ast.Expr | None:
         """A task's SINGLE: a BOOL global variable or direct address (read before every scan)."""

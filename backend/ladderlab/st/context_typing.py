@@ -29,6 +29,7 @@ from ..iec import stdlib
 from ..iec.values import f32, wrap
 from . import ast
 from . import types as t
+from .rules import fold_arithmetic
 from .types import ERROR, Type
 
 _ARITHMETIC = frozenset({"+", "-", "*", "/", "MOD"})
@@ -324,25 +325,11 @@ def _shown(value: Any) -> str:
 
 def _apply(node: ast.Binary, left: Any, right: Any, target: Type) -> Any:
     op = node.op
-    if op == "+":
-        return left + right
-    if op == "-":
-        return left - right
-    if op == "*":
-        return left * right
-    if op in ("/", "MOD") and right == 0 and isinstance(right, int):
-        if op == "MOD":
-            return 0  # IEC body: x MOD 0 = 0 (docs/runtime.md)
-        raise FoldError("division by zero in a constant expression", node)
-    if op == "/":
-        if isinstance(left, float) or isinstance(right, float):
-            if right == 0:
-                raise FoldError("division by zero in a constant expression", node)
-            return left / right
-        quotient = abs(left) // abs(right)
-        return quotient if (left < 0) == (right < 0) else -quotient
-    if op == "MOD":
-        return left - right * _apply(ast.Binary("/", node.left, node.right), left, right, target)
+    if op in ("+", "-", "*", "/", "MOD"):
+        value = fold_arithmetic(op, left, right)  # x MOD 0 = 0, the IEC body (docs/runtime.md)
+        if value is None:
+            raise FoldError("division by zero in a constant expression", node)
+        return value
     if isinstance(left, bool) or isinstance(right, bool):
         return {"AND": left and right, "OR": left or right, "XOR": left != right}[op]
     return {"AND": left & right, "OR": left | right, "XOR": left ^ right}[op]

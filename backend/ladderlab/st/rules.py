@@ -74,11 +74,13 @@ def constant_value(checker: Any, node: ast.Expr | None, depth: int = 0) -> int |
         right = constant_value(checker, node.right, depth + 1)
         if left is None or right is None:
             return None
-        return _fold(node.op, left, right)
+        return fold_arithmetic(node.op, left, right)
     return None
 
 
-def _fold(op: str, left, right):
+def fold_arithmetic(op: str, left: Any, right: Any) -> Any:
+    """``+ - * / MOD`` on constants, exactly as the scan computes them before storing: integer division
+    truncates toward zero, ``x MOD 0`` is 0 (the IEC body); None for a division by zero."""
     if op == "+":
         return left + right
     if op == "-":
@@ -86,10 +88,12 @@ def _fold(op: str, left, right):
     if op == "*":
         return left * right
     if right == 0:
-        return None
-    if op == "/":
-        return int(left / right) if isinstance(left, int) and isinstance(right, int) else left / right
-    return left - int(left / right) * right
+        return 0 if op == "MOD" and isinstance(right, int) and isinstance(left, int) else None
+    if op == "/" and (isinstance(left, float) or isinstance(right, float)):
+        return left / right
+    quotient = abs(left) // abs(right)
+    quotient = quotient if (left < 0) == (right < 0) else -quotient
+    return quotient if op == "/" else left - right * quotient
 
 
 def check_init(checker: Any, ty: Type, init: ast.Init) -> None:
