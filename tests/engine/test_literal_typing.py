@@ -82,6 +82,21 @@ def test_literals_take_the_type_of_their_context(declarations, body, variable, e
     assert value == expected and type(value) is type(expected)
 
 
+def test_constants_fold_exactly_as_the_scan_computes():
+    """CONSTANT arithmetic (array bounds, CASE labels) divides integers exactly, truncating toward zero."""
+    project, _ = source_to_project(
+        "PROGRAM Main\nVAR CONSTANT big : LINT := 1000000000000000001; END_VAR\n"
+        "VAR a : ARRAY[0..(big / 3) - 333333333333333330] OF INT; n : INT; k : LINT := 333333333333333333; END_VAR\n"
+        "CASE k OF big / 3: n := SIZEOF(a) / 2; END_CASE;\nEND_PROGRAM\n",
+        "t",
+    )
+    build = build_project(project)
+    assert [d.format() for d in build.diagnostics if d.severity == "error"] == []
+    sim = build.simulation()
+    sim.cycle(1)
+    assert (len(sim.read("Main.a")), sim.read("Main.n")) == (4, 4)  # was refused: 10**18 / 3 through a float
+
+
 def test_a_constant_expression_that_wraps_is_warned_about():
     _, diagnostics = run("x : INT;", "x := 32767 + 1;")
     assert [(d.severity, d.code, d.line, d.column, d.message) for d in diagnostics] == [
