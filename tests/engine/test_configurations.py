@@ -7,6 +7,8 @@ they survive the ST export, a project folder and PLCopen XML.
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
 from ladderlab.interchange.plcopen.exporter import export_plcopen
@@ -15,6 +17,7 @@ from ladderlab.interchange.st.project import export_project_st
 from ladderlab.simulation.build import build_project
 from ladderlab.st.project_text import source_to_project
 from ladderlab.storage import Workspace
+from ladderlab.storage.project_folder import project_files, read_project_folder
 
 COUNTER = """
 PROGRAM Counter
@@ -213,3 +216,14 @@ def _trace(project) -> list[tuple]:
         sim.cycle(1)
         out.append((sim.read("a.n"), sim.read("b.n"), sim.read("c.n"), sim.read("log"), sim.read("b_count")))
     return out
+
+
+def test_projects_with_the_simple_task_list_load_and_save_unchanged():
+    """project.json files written before configurations (tasks with program names) read as before and are written
+    back byte for byte; no configuration key appears."""
+    folder = Path(__file__).resolve().parents[2] / "examples" / "motor"
+    project = read_project_folder(folder)
+    assert project.configuration is None and all(isinstance(p, str) for t in project.tasks for p in t.programs)
+    for rel, text in project_files(project).items():
+        assert (folder / rel).read_text(encoding="utf-8") == text, rel
+    assert "configuration" not in project_files(project)["project.json"]
