@@ -1,4 +1,4 @@
-"""The ``ladderlab`` command line: serve, check, run, compile, export, import, schema."""
+"""The ``ladderlab`` command line: serve, check, run, test, compile, export, import, schema."""
 
 from __future__ import annotations
 
@@ -10,14 +10,16 @@ import sys
 from pathlib import Path
 
 from ..engine.codegen import VARIANTS
-from ..model import Diagnostic, has_errors
+from ..model import has_errors
 from ..model.schema import SCHEMA_MODELS, schema_of
 from ..simulation.build import build_project
 from ..simulation.check import check_project
 from ..storage import StorageError, load_project_path
 from ..storage.atomic import write_atomic
-from ..storage.text_files import CLI_HINT, check_encoding, xml_for_parser
+from ..storage.text_files import CLI_HINT, xml_for_parser
+from .encoding import add_encoding_option, encoding_of
 from .run import jsonl_line, parse_duration, parse_set, run_scans, table_lines
+from .test import add_test_command
 
 EXIT_OK, EXIT_ERRORS, EXIT_USAGE, EXIT_RUNTIME, EXIT_INTERNAL = 0, 1, 2, 3, 70
 
@@ -93,13 +95,13 @@ def _parser() -> argparse.ArgumentParser:
 
     check = sub.add_parser("check", help="load and check a project, print diagnostics")
     check.add_argument("project", type=Path, help="project folder, project .json file or .st file")
-    _encoding_option(check)
+    add_encoding_option(check)
     check.add_argument("--format", choices=["text", "json"], default="text")
     check.set_defaults(func=_check)
 
     run = sub.add_parser("run", help="run a project on the virtual clock and print watched values per scan")
     run.add_argument("project", type=Path, help="project folder, project .json file or .st file")
-    _encoding_option(run)
+    add_encoding_option(run)
     length = run.add_mutually_exclusive_group()
     length.add_argument("--cycles", type=int, default=None, metavar="N", help="number of scans (default 1)")
     length.add_argument(
@@ -127,9 +129,11 @@ def _parser() -> argparse.ArgumentParser:
     run.add_argument("--format", choices=["table", "jsonl"], default="table")
     run.set_defaults(func=_run)
 
+    add_test_command(sub)
+
     compile_ = sub.add_parser("compile", help="check and compile a project; optionally print the generated Python")
     compile_.add_argument("project", type=Path, help="project folder, project .json file or .st file")
-    _encoding_option(compile_)
+    add_encoding_option(compile_)
     compile_.add_argument("--emit-python", action="store_true", help="print the generated Python module")
     compile_.add_argument("--variant", choices=list(VARIANTS), default="fast")
     compile_.set_defaults(func=_compile)
@@ -137,7 +141,7 @@ def _parser() -> argparse.ArgumentParser:
     export = sub.add_parser("export", help="export a project as PLCopen XML or IEC ST text")
     export.add_argument("format", choices=["plcopen", "st"])
     export.add_argument("project", type=Path, help="project folder, project .json file or .st file")
-    _encoding_option(export)
+    add_encoding_option(export)
     export.add_argument("--pou", default=None, help="st: only this POU (default: the whole project)")
     export.add_argument("-o", "--output", type=Path, default=None, help="file to write (default: standard output)")
     export.set_defaults(func=_export)
@@ -145,7 +149,7 @@ def _parser() -> argparse.ArgumentParser:
     import_ = sub.add_parser("import", help="import a PLCopen XML project into a workspace")
     import_.add_argument("format", choices=["plcopen"])
     import_.add_argument("file", type=Path)
-    _encoding_option(import_)
+    add_encoding_option(import_)
     import_.add_argument(
         "--into", type=Path, default=None, help="workspace folder (default: $LADDERLAB_WORKSPACE or ./workspace)"
     )
@@ -158,25 +162,9 @@ def _parser() -> argparse.ArgumentParser:
     return parser
 
 
-def _encoding_option(command: argparse.ArgumentParser) -> None:
-    command.add_argument(
-        "--encoding",
-        default=None,
-        metavar="NAME",
-        help="encoding of the files read (default UTF-8), e.g. cp1251 for CoDeSys 2.3 exports",
-    )
-
-
 def _load(args: argparse.Namespace):
     """The PROJECT argument, its files read in ``--encoding``."""
-    return load_project_path(args.project, _encoding(args))
-
-
-def _encoding(args: argparse.Namespace) -> str | None:
-    try:
-        return check_encoding(args.encoding)
-    except ValueError as error:
-        raise StorageError([Diagnostic(code="BAD-OPTION", message=f"--encoding: {error}")]) from None
+    return load_project_path(args.project, encoding_of(args))
 
 
 def _check(args: argparse.Namespace) -> int:
@@ -279,7 +267,7 @@ def _import(args: argparse.Namespace) -> int:
     if not args.file.is_file():
         print(f"{args.file}: error BAD-PATH: no such file", file=sys.stderr)
         return EXIT_USAGE
-    data = xml_for_parser(args.file.read_bytes(), args.file.name, _encoding(args), CLI_HINT)  # exit 2 when not text
+    data = xml_for_parser(args.file.read_bytes(), args.file.name, encoding_of(args), CLI_HINT)  # exit 2 when not text
     result = import_plcopen(data, name=args.name, file=args.file.name)
     for diagnostic in result.diagnostics:
         print(diagnostic.format(), file=sys.stderr)

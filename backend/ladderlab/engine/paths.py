@@ -44,7 +44,7 @@ class Location:
 
     path: str
     type: t.IrType
-    root: tuple[str, str]  # ("global", a G page or a process image view)
+    root: tuple[str, str]  # ("global", a G page or a process image view) or ("attached", an instance's name)
     keys: tuple[object, ...]
     read_only: bool = False  # a READ_ONLY access path (VAR_ACCESS)
     write_root: tuple[str, str] | None = None  # where writes go when not to ``root`` (the world's side of I/Q)
@@ -71,16 +71,24 @@ class Location:
         container, key = self._container(roots, writing=True)
         container[key] = value  # type: ignore[index]
 
+    def reference(self, roots: Roots) -> tuple[object, object]:
+        """A VAR_IN_OUT reference ``(container, key)`` to this location, as generated code passes one."""
+        return self._container(roots)
+
 
 class Roots:
-    """The live objects paths start from: the global pages (program instances are globals) of a module, and the
-    process image's views (made on first use: a path may read an address through a view no code uses)."""
+    """The live objects paths start from: the global pages (program instances are globals) of a module, the
+    process image's views (made on first use: a path may read an address through a view no code uses) and the
+    instances attached outside the tasks (``Simulation.attach``)."""
 
-    def __init__(self, ns: dict[str, object]) -> None:
+    def __init__(self, ns: dict[str, object], attached: dict[str, tuple[object, str]]) -> None:
         self.ns = ns
+        self.attached = attached  # upper-case name -> (instance, upper-case POU name)
 
     def get(self, root: tuple[str, str]) -> object:
-        name = root[1]
+        kind, name = root
+        if kind == "attached":
+            return self.attached[name][0]
         found = self.ns.get(name)
         if found is None and name.startswith(VIEW_PREFIX):
             buffer, kind = name[len(VIEW_PREFIX) :].split("_", 1)
@@ -109,7 +117,13 @@ class Resolver:
     def __init__(self, context: ModuleContext) -> None:
         self.context = context
         self.access = {name.upper(): target for name, target in context.program.access.items()}
+        self.attached: dict[str, str] = {}  # root name of an instance outside the tasks -> its POU (upper case)
         self._cache: dict[str, Location] = {}
+
+    def attach(self, name: str, pou: str) -> None:
+        """Resolve paths starting with ``name`` in an instance of ``pou`` (``Simulation.attach``)."""
+        self.attached[name.upper()] = pou.upper()
+        self._cache.clear()
 
     def resolve(self, text: str) -> Location:
         """The location a path names; resolved paths are remembered (locations walk from the live roots, so
@@ -135,6 +149,10 @@ class Resolver:
             target, read_only = self.access[first]
             located = self._resolve(target + text.strip()[len(toks[0][1]) :])
             return Location(located.path, located.type, located.root, located.keys, read_only)
+        if first in self.attached:
+            if not rest:
+                raise ValueError(f"{text!r}: expected '.name' after {first}")
+            return self._walk(text, first, ("attached", first), t.FbInstance(self.attached[first]), (), rest)
         if first == GLOBALS_PREFIX and rest[:1] == [("punct", ".")]:
             name, rest = self._member_name(rest, text)
             return self._global(text, name, rest)
@@ -192,9 +210,11 @@ class Resolver:
         return names[0] if names else None
 
     def _steps(self, text, path, root, keys, slot: ir.Slot, rest) -> Location:
-        ty = slot.type
         if slot.var_class == "VAR_IN_OUT":
             keys = (*keys, _DEREF)
+        return self._walk(text, path, root, slot.type, keys, rest)
+
+    def _walk(self, text, path, root, ty: t.IrType, keys, rest) -> Location:
         while rest:
             kind, value = rest[0]
             if (kind, value) == ("punct", "."):
@@ -247,7 +267,7 @@ class Resolver:
                 return f"{path}.{inner.slot.name}", inner.slot.type, (*keys, *step, *deref)
             pin_type = std_pin_type(ty.fb, member)
             if pin_type is None:
-                pins = [*std_fb_class(ty.fb).INPUTS, *std_fb_class(ty.fb).OUTPUTS]  # type: ignore[union-attr]
+                pins = [*std_fb_class(ty.fb).INPUTS, *std_fb_class(ty.fb).OUTPUTS]
                 raise UnknownPath(f"{path} ({ty.fb}) has no pin {member!r}{did_you_mean(member, pins)}")
             return f"{path}.{member.upper()}", pin_type, (*keys, member.upper())
         if isinstance(ty, t.Struct):
@@ -321,8 +341,10 @@ def _enum_value(ty: t.Enum, value: object) -> int:
 
 
 def leaves(context: ModuleContext, roots: Roots) -> Iterator[tuple[str, object]]:
-    """Every elementary variable (hidden slots and VAR_IN_OUT references left out) with its value: the program
-    instances' first, then the other globals'."""
+    """Every elementary variable (hidden slots and VAR_IN_OUT references left out) with its value: the attached
+    instances', the program instances', then the other globals'."""
+    for name, (obj, pou) in roots.attached.items():
+        yield from _instance_leaves(context, name, context.layouts[pou], obj, roots)
     for place in context.globals.places.values():
         if not place.slot.hidden:
             obj = roots.ns[global_owner(place.page)]

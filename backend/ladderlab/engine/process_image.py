@@ -206,6 +206,18 @@ class ProcessImage:
         self.outputs[:] = bytes(len(self.outputs))
         self.read_inputs()
 
+    def state(self) -> dict[str, bytes]:
+        """Every buffer's bytes (engine/state.py): the images, the inputs and the published outputs."""
+        return {"inputs": bytes(self.inputs), "outputs": bytes(self.outputs)} | {
+            area: bytes(memory) for area, memory in self.buffers.items()
+        }
+
+    def restore(self, state: dict[str, bytes]) -> None:
+        """Write captured buffers back in place (the views keep reading the same memories)."""
+        memories = {"inputs": self.inputs, "outputs": self.outputs, **self.buffers}
+        for name, data in state.items():
+            memories[name][:] = data
+
     @staticmethod
     def path_buffer(area: str, writing: bool) -> str:
         """The buffer a path to ``area`` reads (``writing`` False) or writes: the program's image, like any

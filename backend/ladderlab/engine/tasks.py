@@ -154,6 +154,11 @@ class Schedule:
 
     def at(self, time_ms: float) -> list[Task]:
         """Move the clock to ``time_ms`` (not backwards) for a scan of every cyclic task; each is next due after it."""
+        self.skip_to(time_ms)
+        return list(self._cyclic)
+
+    def skip_to(self, time_ms: float) -> None:
+        """Move the clock to ``time_ms`` (not backwards) without a scan; each task is next due after it."""
         if not time_ms >= self.time_ms:
             raise ValueError(f"time {time_ms} ms is before the current time {self.time_ms} ms")
         for task in self._cyclic:
@@ -161,7 +166,6 @@ class Schedule:
             task.next_due = (math.floor(time_ms / period) + 1) * period
         self._idle_due = (math.floor(time_ms / IDLE_MS) + 1) * IDLE_MS
         self.time_ms = time_ms
-        return list(self._cyclic)
 
     def with_triggers(self, due: list[Task], read: Callable[[Task], object]) -> list[Task]:
         """The tasks of this scan: the cyclic ones due, but a task whose SINGLE variable is TRUE (CFG-05), and

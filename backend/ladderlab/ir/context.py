@@ -67,6 +67,8 @@ class PouContext:
         self.lifts: list[Stmt] | None = None
         self.reads = 0
         self.calls = 0
+        # A front end's own statements, lowered before the ST ones (test files' verbs: ir/lower_tests.py)
+        self.extra_statements: dict[type, Any] = {}
 
     # ------------------------------------------------------------ diagnostics
     def report(

@@ -232,7 +232,7 @@ def check_call(
 
 
 def _fb(callee: Callee, node: ast.Call) -> t.FbType | None:
-    return node.callee.ty if callee.is_fb else None  # type: ignore[return-value]
+    return node.callee.ty if callee.is_fb else None
 
 
 def _learn(

@@ -105,7 +105,7 @@ def lower_to(node: ast.Expr, ctx: PouContext, target: IrType) -> Expr:
 
 
 def convert(expr: Expr, target: IrType) -> Expr:
-    source = expr.type  # type: ignore[union-attr]
+    source = expr.type
     if source is target:  # the common case: lowered types are mostly shared instances
         return expr
     if (
@@ -401,7 +401,7 @@ def _sizeof(node: ast.Call, ctx: PouContext, target: IrType) -> Const:
             named if named is not None else typedef.type if typedef else None, ast.NamedType(argument.name)
         )
     else:
-        ty = lower_expr(argument, ctx).type  # type: ignore[union-attr]
+        ty = lower_expr(argument, ctx).type
     return Const(engine_value(byte_size(ty), target), target)
 
 

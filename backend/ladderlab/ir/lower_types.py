@@ -211,7 +211,7 @@ class TypeLowering:
         if not isinstance(ty, t.StructType):
             raise LoweringError(None)
         fields = self._fields(ty, spec)
-        values = list(self.default(ty, spec))  # type: ignore[arg-type]
+        values = list(self.default(ty, spec))
         names = list(fields)
         for name, value in init.fields:
             upper = name.upper()
@@ -282,7 +282,7 @@ class TypeLowering:
         return Slot(
             symbol.name.upper(),
             symbol.var_class,
-            self.type_of(symbol.type, symbol.type_spec),  # type: ignore[arg-type]
+            self.type_of(symbol.type, symbol.type_spec),
             initial,
             symbol.retain,
             symbol.constant,

@@ -21,7 +21,7 @@ from .fbd import (
     Wire,
 )
 from .ld import Box, Coil, Compare, Contact, Jump, LdBody, LdElement, LdNetwork, Parallel, Return
-from .project import PROJECT_FORMAT, Configuration, Pou, ProgramInstance, Project, Resource, Task
+from .project import PROJECT_FORMAT, Configuration, Pou, ProgramInstance, Project, Resource, Task, TestFile
 
 __all__ = [
     "PROJECT_FORMAT",
@@ -56,6 +56,7 @@ __all__ = [
     "Return",
     "Severity",
     "Task",
+    "TestFile",
     "Wire",
     "has_errors",
 ]

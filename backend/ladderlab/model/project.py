@@ -137,6 +137,19 @@ class Configuration(BaseModel):
         return [task for resource in self.resources for task in resource.tasks]
 
 
+class TestFile(BaseModel):
+    """A file of unit tests, ``tests/<name>.st`` in the project folder (docs/testing.md).
+
+    Tests a teacher hides from students live in ``tests/hidden/`` and are not part of the model: the
+    browser never sees them, ``ladderlab test --grade`` runs them."""
+
+    model_config = ConfigDict(extra="forbid")
+    name: str = Field(description="File name without the .st suffix (letters, digits, '_' and '-').")
+    text: str = Field(default="", description="ST test text: SETUP, TEARDOWN and TEST blocks, as typed.")
+
+    _normalise_texts = field_validator("text", mode="before")(_strip_trailing_whitespace)
+
+
 class Project(BaseModel):
     model_config = ConfigDict(extra="forbid")
 
@@ -151,6 +164,7 @@ class Project(BaseModel):
     configuration: Configuration | None = Field(
         default=None, description="The IEC configuration; when given, its resources hold the tasks."
     )
+    tests: list[TestFile] = Field(default_factory=list, description="Unit test files (tests/<name>.st).")
 
     _normalise_texts = field_validator("types", "globals", mode="before")(_strip_trailing_whitespace)
 

@@ -292,7 +292,7 @@ class ProjectChecker:
                 )
                 continue
             before = set(self.result.globals)
-            self._declare_block(block, self.result.globals, checker, None)
+            self.declare_block(block, self.result.globals, checker, None)
             for key in self.result.globals.keys() - before:
                 self._check_global(self.result.globals[key], checker)
 
@@ -323,7 +323,7 @@ class ProjectChecker:
                 report(
                     "ST-DECL", f"{block.kind} is not allowed in a {info.kind.lower().replace('_', ' ')} (VAR-11)", block
                 )
-            self._declare_block(block, info.symbols, checker, info)
+            self.declare_block(block, info.symbols, checker, info)
         for symbol in info.symbols.values():
             if isinstance(symbol.type, t.FbType) and symbol.type.pou is not None:
                 info.calls.add(symbol.type.pou.name.upper())
@@ -355,7 +355,7 @@ class ProjectChecker:
             if symbol.init is not None:
                 check_init(checker, symbol.type, symbol.init)
 
-    def _declare_block(
+    def declare_block(
         self, block: ast.VarBlock, table: dict[str, Symbol], checker: BodyChecker, pou: PouInfo | None
     ) -> None:
         report = checker.report

@@ -30,6 +30,11 @@ from .transformer import AstBuilder, StSyntaxError
 
 GRAMMAR = pathlib.Path(__file__).with_name("iec61131.lark")
 _STARTS = ["start_source", "start_pou", "start_decls", "start_stmts", "start_expr", "start_type", "start_config_blocks"]
+# Test files get a parser of their own from the same grammar: built from start_tests alone, its tables are
+# the only ones where the test keywords (END_TEST, MOCK ...) may follow a statement. (One LALR table for
+# all starts would merge them into the lookaheads of statements everywhere: ``x := 1; mock := 2;`` in a
+# program would then read ``mock`` as the keyword.)
+_TEST_STARTS = ["start_tests"]
 _MAX_ERRORS_PER_UNIT = 25
 _END_KEYWORDS = {"END_IF", "END_CASE", "END_FOR", "END_WHILE", "END_REPEAT"}
 
@@ -65,6 +70,10 @@ _SOFT_KEYWORDS = {
     "NOT",
     "MOD",
 }
+# Keywords of test files only (start_tests): names like ``test`` or ``setup`` stay free in programs.
+TEST_KEYWORDS = frozenset(
+    {"TEST", "END_TEST", "SETUP", "END_SETUP", "TEARDOWN", "END_TEARDOWN", "MOCK", "MOCK_FUNCTION", "RETURNS"}
+)
 
 
 @functools.cache
@@ -76,8 +85,9 @@ def _keywords() -> frozenset[str]:
 @functools.cache
 def keywords() -> frozenset[str]:
     """Words that are never names (KW-01, KW-02's hard keywords): the grammar's keywords but the contextual ones
-    (``_SOFT_KEYWORDS``, used as names by real libraries), TRUE/FALSE and the operator words."""
-    return (_keywords() - _SOFT_KEYWORDS) | {"TRUE", "FALSE", "AND", "OR", "XOR", "NOT", "MOD"}
+    (``_SOFT_KEYWORDS``, used as names by real libraries) and the test files' ones, TRUE/FALSE and the operator
+    words."""
+    return (_keywords() - _SOFT_KEYWORDS - TEST_KEYWORDS) | {"TRUE", "FALSE", "AND", "OR", "XOR", "NOT", "MOD"}
 
 
 @functools.cache
@@ -89,13 +99,13 @@ def reserved_words() -> frozenset[str]:
 
 
 @functools.cache
-def _parser() -> Lark:
-    reserved = _keywords() - {"TRUE", "FALSE"} - _SOFT_KEYWORDS
+def _parser(tests: bool = False) -> Lark:
+    reserved = _keywords() - {"TRUE", "FALSE"} - _SOFT_KEYWORDS - TEST_KEYWORDS
     return Lark(
         GRAMMAR.read_text(encoding="utf-8"),
         parser="lalr",
         lexer="contextual",
-        start=_STARTS,
+        start=_TEST_STARTS if tests else _STARTS,
         transformer=AstBuilder(reserved),
         maybe_placeholders=True,
         cache=False,
@@ -170,6 +180,11 @@ def parse_config_blocks(text: str, *, file: str | None = None) -> ParseResult:
     return _finish(_run(text, "start_config_blocks", file), text)
 
 
+def parse_tests(text: str, *, file: str | None = None, nested_comments: bool = False) -> ParseResult:
+    """A test file (``tests/<name>.st``): SETUP, TEARDOWN and TEST blocks (``ast.TestFile``, docs/testing.md)."""
+    return _finish(_run(_prepare(text, nested_comments), "start_tests", file), text)
+
+
 def _name_pous(result: ParseResult) -> None:
     """Give each diagnostic of a whole-file parse the POU it lies in."""
     pous = result.ast.pous
@@ -201,7 +216,7 @@ def _run(text: str, start: str, file: str | None, pou: str | None = None) -> Par
     diagnostics: list[Diagnostic] = []
     report = _Reporter(diagnostics, file, pou)
     try:
-        tree = _parser().parse(text, start=start, on_error=report.recover)
+        tree = _parser(start in _TEST_STARTS).parse(text, start=start, on_error=report.recover)
     except UnexpectedInput as error:
         if not report.seen(error):
             report.add(error)

@@ -18,6 +18,10 @@ export interface Project {
    */
   tasks?: Task[];
   /**
+   * Unit test files (tests/<name>.st).
+   */
+  tests?: TestFile[];
+  /**
    * ST text of TYPE ... END_TYPE blocks.
    */
   types?: string;
@@ -410,4 +414,23 @@ export interface Wire {
 export interface PinRef {
   node: string;
   pin: string;
+}
+/**
+ * A file of unit tests, ``tests/<name>.st`` in the project folder (docs/testing.md).
+ *
+ * Tests a teacher hides from students live in ``tests/hidden/`` and are not part of the model: the
+ * browser never sees them, ``ladderlab test --grade`` runs them.
+ *
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "TestFile".
+ */
+export interface TestFile {
+  /**
+   * File name without the .st suffix (letters, digits, '_' and '-').
+   */
+  name: string;
+  /**
+   * ST test text: SETUP, TEARDOWN and TEST blocks, as typed.
+   */
+  text?: string;
 }

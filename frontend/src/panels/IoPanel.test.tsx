@@ -45,10 +45,10 @@ describe("the I/O view (issue 16: the process image by area, address, declared n
     render(<IoPanel />);
     const cells = rows().map((r) => [...r.querySelectorAll("td")].slice(0, 5).map((c) => c.textContent));
     expect(cells).toEqual([
-      ["Input", "%IX0.1", "MAIN.START", "BOOL", "TRUE"],
-      ["Input", "%IW2", "—", "INT", "17 F"],
-      ["Output", "%QX3.0", "MAIN.LAMP, MAIN.COPY", "BOOL", "TRUE"],
-      ["Memory", "%MW10", "—", "INT", "-4"],
+      ["Input", "%IX0.1", "MAIN.START", "TRUE", "BOOL"],
+      ["Input", "%IW2", "—", "17F", "INT"],
+      ["Output", "%QX3.0", "MAIN.LAMP, MAIN.COPY", "TRUE", "BOOL"],
+      ["Memory", "%MW10", "—", "-4", "INT"],
     ]);
     expect(onlineStore.getState().views[IO_VIEW]?.paths).toEqual(["%IX0.1", "%IW2", "%QX3.0", "%MW10"]);
   });

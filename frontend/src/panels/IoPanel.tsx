@@ -1,11 +1,11 @@
 // The I/O view: every direct address the running program uses (%I inputs, %Q outputs, %M memory),
-// with the variables declared at it and its live value; each row writes, forces and releases the
-// address itself, so an input can be driven whether or not a variable names it.
+// with the variables declared at it and its live value; each row writes, forces, releases and
+// prepares the address itself (a variable row of the watch list's tree), so an input can be driven
+// whether or not a variable names it.
 import { useEffect, useMemo } from "react";
 import type { IoPoint } from "../generated/api";
-import { pathKey } from "../online/monitor";
 import { onlineStore, useOnline } from "../online/store";
-import { LiveValue, ValueCommands } from "./WatchPanel";
+import { VariableRow, type Expansion } from "./VariableTree";
 
 export const AREA_NAMES: Record<IoPoint["area"], string> = {
   I: "Input",
@@ -17,20 +17,23 @@ export const AREA_NAMES: Record<IoPoint["area"], string> = {
 /** The subscription key of the I/O view. */
 export const IO_VIEW = "io";
 
+/** Addresses are elementary: nothing expands. */
+const FLAT: Expansion = { isOpen: () => false, toggle: () => undefined };
+
 function IoRow({ point }: { point: IoPoint }) {
-  const forced = useOnline((s) => s.monitor.forced.has(pathKey(point.address)));
   const names = point.names ?? [];
   return (
-    <tr className={forced ? "watch-forced" : undefined} data-path={pathKey(point.address)}>
-      <td>{AREA_NAMES[point.area]}</td>
-      <td className="watch-path">{point.address}</td>
-      <td className="watch-path">{names.length ? names.join(", ") : <span className="io-unnamed">—</span>}</td>
-      <td>{point.type}</td>
-      <LiveValue path={point.address} />
-      <td>
-        <ValueCommands path={point.address} />
-      </td>
-      <td>
+    <VariableRow
+      node={{ name: names.length ? names.join(", ") : "—", path: point.address, type: point.type, expandable: false }}
+      depth={0}
+      expansion={FLAT}
+      lead={
+        <>
+          <td>{AREA_NAMES[point.area]}</td>
+          <td className="watch-path">{point.address}</td>
+        </>
+      }
+      actions={
         <button
           type="button"
           aria-label={`Watch ${point.address}`}
@@ -38,8 +41,8 @@ function IoRow({ point }: { point: IoPoint }) {
         >
           Watch
         </button>
-      </td>
-    </tr>
+      }
+    />
   );
 }
 
@@ -64,10 +67,9 @@ export function IoPanel() {
           <th>Area</th>
           <th>Address</th>
           <th>Declared as</th>
-          <th>Type</th>
           <th>Value</th>
+          <th>Type</th>
           <th>Write / force</th>
-          <th />
         </tr>
       </thead>
       <tbody>

@@ -10,7 +10,7 @@ from ...iec import stdlib as catalogue
 from ...ir import nodes as ir
 from ...ir import types as t
 from ...model.diagnostics import Diagnostic
-from ..process_image import image_view_name, key_of, located_address, view_kind
+from ..process_image import ProcessImage, image_view_name, key_of, located_address, view_kind
 from ..stdlib import STANDARD_FBS
 from . import names
 from .layout import Layout
@@ -139,10 +139,18 @@ class ModuleContext:
             sizes[address.area] = max(sizes.get(address.area, 0), address.end)
         return sizes
 
-    def image_view(self, slot: ir.Slot) -> tuple[str, int]:
-        """(the name of the view a located slot is read and written through, its key in that view)."""
+    def image_view(self, slot: ir.Slot, world: bool = False) -> tuple[str, int]:
+        """(the name of the view a located slot is read and written through, its key in that view). ``world``:
+        the code stands for the world outside the program (a test's body): what it writes to an input also sets
+        the inputs the next scans read, as a path's write does (ProcessImage.path_buffer)."""
         address = located_address(slot.address)
-        return image_view_name(address.area, view_kind(address, runtime_name(slot.type))), key_of(address)
+        buffer = ProcessImage.path_buffer(address.area, writing=world)
+        return image_view_name(buffer, view_kind(address, runtime_name(slot.type))), key_of(address)
+
+    @property
+    def world_views(self) -> bool:
+        """Whether some POU stands for the world (a test's body, ``live_clock``): it writes inputs as the world."""
+        return any(p.live_clock for p in self.pous.values())
 
     def instance(self, name: str) -> ir.ProgramInstance | None:
         """The program instance called ``name``."""

@@ -109,6 +109,7 @@ def _emit_globals(module: ModuleContext, src: Source) -> None:
     for slot in program_globals(module):
         module.visit_type(slot.type)
     target = lambda p: f"{global_owner(p.page)}.{p.attr}"  # noqa: E731
+    instances = frozenset(i.name.upper() for i in module.instances)  # made once below, initialised in place
     for page in range(layout.pages):  # each page in its own compile piece
         src.piece()
         src.line(f"class ll_Globals{page or ''}(ll_Addressable):")
@@ -118,7 +119,7 @@ def _emit_globals(module: ModuleContext, src: Source) -> None:
         src.line()
         src.line(f"def ll_init_globals{page or ''}(warm):")
         with src.indent():
-            emit_inits(module, layout.page_places(page), target, "globals", src)
+            emit_inits(module, layout.page_places(page), target, "globals", src, instances)
             if not page:
                 emit_located_inits(module, list(layout.located.values()), src)
             if not page:
@@ -128,6 +129,8 @@ def _emit_globals(module: ModuleContext, src: Source) -> None:
     src.piece()
     for page in range(layout.pages):
         src.line(f"{global_owner(page)} = ll_Globals{page or ''}()")
+    for instance in module.instances:  # made by the first ll_init_globals, initialised in place by the later ones
+        src.line(f"{target(layout.places[instance.name.upper()])} = None")
 
 
 def _emit_image(module: ModuleContext, src: Source) -> None:
@@ -135,7 +138,8 @@ def _emit_image(module: ModuleContext, src: Source) -> None:
     located = module.located
     addresses = sorted({slot.address for slot in located})  # validated addresses (iec/addresses.py): safe text
     src.line(f"ll_image = ll_ProcessImage({tuple(addresses)!r})")
-    for view in sorted({module.image_view(slot)[0] for slot in located}):
+    worlds = (False, True) if module.world_views else (False,)
+    for view in sorted({module.image_view(slot, world)[0] for slot in located for world in worlds}):
         area, kind = view[len("ll_io_") :].split("_", 1)
         src.line(f"{view} = ll_image.view({area!r}, {kind!r})")
     src.line()

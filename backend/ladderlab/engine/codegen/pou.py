@@ -111,9 +111,21 @@ def emit_located_inits(module: ModuleContext, slots: list[ir.Slot], src: Source)
             src.line(f"{view}[{key}] = {construct(slot.type, slot.initial, module)}")
 
 
-def emit_inits(module: ModuleContext, places: list, target, owner: str, src: Source) -> None:
-    """The body of an ``ll_init(warm)``: RETAIN slots only when cold, user FB instances in place when warm."""
+def emit_inits(
+    module: ModuleContext, places: list, target, owner: str, src: Source, kept: frozenset[str] = frozenset()
+) -> None:
+    """The body of an ``ll_init(warm)``: RETAIN slots only when cold, user FB instances in place when warm. The
+    instances named in ``kept`` (upper case, None until made) are made once and then initialised in place, so
+    references to them stay valid across restarts (program instances: a test's links to them)."""
     before = len(src.lines)
+    for place in [p for p in places if p.slot.name.upper() in kept]:
+        src.line(f"if {target(place)} is None:")
+        with src.indent():
+            src.line(f"{target(place)} = {_init_value(module, place.slot, owner)}")
+        src.line("elif not warm:" if place.slot.retain else "else:")
+        with src.indent():
+            src.line(f"{target(place)}.ll_init({'False' if place.slot.retain else 'warm'})")
+    places = [p for p in places if p.slot.name.upper() not in kept]
     retained = [p for p in places if p.slot.retain]
     if retained:
         src.line("if not warm:")
@@ -188,7 +200,7 @@ def _emit_execute(module: ModuleContext, pou: ir.Pou, scope: Scope, src: Source)
     calls, reads = [], []
     if not plan.inline:
         for number in range(len(plan.chunks)):
-            chunk = f"ll_k{number}_{key}"
+            chunk = names.chunk_function(number, key)
             src.piece()
             src.line(f"def {chunk}(self, now{', ll_b' if plan.jumps else ''}):")
             first, last = plan.chunks[number][0].origin, plan.chunks[number][-1].origin

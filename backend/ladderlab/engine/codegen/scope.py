@@ -82,7 +82,7 @@ class Scope:
         """``root``'s source and type, and the page its slot lives on (0: ``self``, a local or a global)."""
         slot = self.slot(var)
         if slot.address is not None:  # a located variable: its process image view (engine/process_image.py)
-            view, key = self.module.image_view(slot)
+            view, key = self.module.image_view(slot, world=self.pou.live_clock)
             return f"{view}[{key}]", slot.type, 0
         attr = names.slot(slot.name)
         if var.scope == "global":
@@ -102,7 +102,7 @@ class Scope:
         """Source of a ``(container, key)`` reference to the whole root slot of ``var``."""
         slot = self.slot(var)
         if slot.address is not None:
-            view, key = self.module.image_view(slot)
+            view, key = self.module.image_view(slot, world=self.pou.live_clock)
             return f"({view}, {key})"
         attr = names.slot(slot.name)
         if var.scope == "global":

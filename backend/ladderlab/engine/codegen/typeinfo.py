@@ -56,14 +56,14 @@ def store_value(value: object, ty: t.IrType) -> object:
             raise ValueError(f"{value!r} is not a value of {ty.name}")
         return value
     name = runtime_name(ty)
-    category = values.resolve(name).category  # type: ignore[arg-type]
+    category = values.resolve(name).category
     if category == "bool":
         if value in (0, 1) and isinstance(value, int):  # True, False, 1, 0
             return bool(value)
         raise ValueError(f"{value!r} is not a BOOL")
     expected = {"string": str, "real": (int, float)}.get(category, int)
     if not isinstance(value, expected) or isinstance(value, bool):
-        raise ValueError(f"{value!r} is not {values.article(name)}")  # type: ignore[arg-type]
+        raise ValueError(f"{value!r} is not {values.article(name)}")
     stored = values.store_fn(name)(float(value) if category == "real" else value)  # type: ignore[arg-type]
     if isinstance(ty, t.Subrange) and not ty.low <= stored <= ty.high:
         raise ValueError(f"{value} is outside the subrange {ty.low}..{ty.high}")
