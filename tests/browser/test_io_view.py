@@ -33,8 +33,10 @@ def _row(page, address: str):
     return page.locator(f'table[aria-label="Process image"] tr[data-path="{address}"]')
 
 
-def _value(page, address: str):
-    return _row(page, address).locator("td.watch-value")
+def _shows(page, address: str, value: str, forced: bool = False) -> None:
+    """Wait until the I/O view shows ``value`` at ``address``, on the forced colours with an F or not."""
+    tag = _row(page, address).locator(f'td.watch-value .value-tag[data-value="{value}"]')
+    tag.and_(page.locator(".value-tag-forced" if forced else ".value-tag:not(.value-tag-forced)")).wait_for()
 
 
 def test_the_io_view_shows_and_drives_the_process_image_of_a_configuration(page, server):
@@ -85,8 +87,8 @@ def test_the_io_view_shows_and_drives_the_process_image_of_a_configuration(page,
     page.get_by_role("tab", name="I/O (4)").click()
     rows = page.locator('table[aria-label="Process image"] tbody tr')
     rows.first.wait_for()
-    cells = [row.locator("td").all_inner_texts()[:4] for row in rows.all()]
-    assert cells == [
+    cells = [[row.locator("td").all_inner_texts()[i] for i in (0, 1, 2, 4)] for row in rows.all()]
+    assert cells == [  # area, address, the variables declared at it, type
         ["Input", "%IX0.1", "LINE1.START, LINE2.START", "BOOL"],
         ["Input", "%IX0.2", "—", "BOOL"],
         ["Output", "%QX3.0", "LINE1.LAMP, LINE2.LAMP", "BOOL"],
@@ -94,7 +96,7 @@ def test_the_io_view_shows_and_drives_the_process_image_of_a_configuration(page,
     ]
     page.get_by_role("button", name="Run", exact=True).click()
     state.filter(has_text="Online · running").wait_for()
-    _value(page, "%QX3.0").filter(has_text=re.compile("^FALSE$")).wait_for()
+    _shows(page, "%QX3.0", "FALSE")
     page.wait_for_function(
         """() => Number(document.querySelector('tr[data-path="%MW10"] td.watch-value')?.textContent) > 5"""
     )
@@ -102,21 +104,21 @@ def test_the_io_view_shows_and_drives_the_process_image_of_a_configuration(page,
     # Write the input by its address: the output follows at the end of the next scan.
     page.get_by_label("New value for %IX0.1").fill("TRUE")
     _row(page, "%IX0.1").get_by_role("button", name="Write").click()
-    _value(page, "%IX0.1").filter(has_text=re.compile("^TRUE$")).wait_for()
-    _value(page, "%QX3.0").filter(has_text=re.compile("^TRUE$")).wait_for()
+    _shows(page, "%IX0.1", "TRUE")
+    _shows(page, "%QX3.0", "TRUE")
     page.screenshot(path=str(ARTIFACTS / "io-view.png"))
 
     # Force the other input (no variable names it): the output goes off and the address shows F.
     page.get_by_label("New value for %IX0.2").fill("TRUE")
     _row(page, "%IX0.2").get_by_role("button", name="Force").click()
-    _value(page, "%IX0.2").filter(has_text=re.compile("^TRUE F$")).wait_for()
-    _value(page, "%QX3.0").filter(has_text=re.compile("^FALSE$")).wait_for()
+    _shows(page, "%IX0.2", "TRUE", forced=True)
+    _shows(page, "%QX3.0", "FALSE")
     _row(page, "%IX0.2").get_by_role("button", name="Release").click()
-    _value(page, "%IX0.2").filter(has_text=re.compile("^TRUE$")).wait_for()  # released: the input keeps its value
+    _shows(page, "%IX0.2", "TRUE")  # released: the input keeps its value
     page.get_by_label("New value for %IX0.2").fill("FALSE")
     _row(page, "%IX0.2").get_by_role("button", name="Write").click()
-    _value(page, "%IX0.2").filter(has_text=re.compile("^FALSE$")).wait_for()
-    _value(page, "%QX3.0").filter(has_text=re.compile("^TRUE$")).wait_for()
+    _shows(page, "%IX0.2", "FALSE")
+    _shows(page, "%QX3.0", "TRUE")
 
     # Watch an address from the I/O view: it joins the watch list with its value.
     page.get_by_role("button", name="Watch %MW10").click()

@@ -277,39 +277,12 @@ def _check(
     context: t.Type | None = None,
 ) -> ast.Call | None:
     """Check the box as the ST call of ``target`` (the instance or the function's name; None: reported)."""
-    missing = callee.missing(set(inputs))
-    for pin in missing:
-        ops.report(at.on(pin), f"{ops.lang}-MISSING-PIN", f"input {pin} of {callee.name} is not connected")
-    wired_in_outs = [pin for pin in callee.in_outs() if pin in inputs and not isinstance(inputs[pin], str)]
-    for pin in wired_in_outs:  # VAR-51: an in-out is passed by reference, so it needs a variable
-        ops.report(
-            at.on(pin), f"{ops.lang}-IN-OUT", f"in-out {pin} of {callee.name} needs a variable, not a computed value"
-        )
-    args: list[ast.Arg] = []
-    pins: dict[str, ast.Arg] = {}
-    failed = bool(missing or wired_in_outs)
-    if en is not None:
-        node = _node(ops, en, at, "EN", callee)
-        failed |= node is None
-        if node is not None:
-            args.append(_arg(ast.Arg("EN", node), "EN", pins))
-    for pin in sorted(inputs, key=callee.rank):
-        node = _node(ops, inputs[pin], at, pin, callee)
-        failed |= node is None
-        if node is not None:
-            args.append(_arg(ast.Arg(pin, node), pin, pins))
-    for pin, text in outputs.items():
-        node = ops.parse(text, at.on(pin), f"output {pin} of {callee.name}")
-        failed |= node is None
-        if node is not None:
-            args.append(_arg(ast.Arg(pin, node, output=True), pin, pins))
-    if eno is not None:
-        args.append(ast.Arg("ENO", ops.wire_node(eno, t.BOOL), output=True))
-    if failed or target is None:
+    node = call_ast(ops, callee, target, inputs, outputs, at, en, eno)
+    if node is None:
         return None
-    node = ast.Call(target, args)
     before = len(ops.ctx.diagnostics)
-    checker = ops.checker(at, pins)
+    pins = node.args[:-1] if eno is not None else node.args  # the pins diagnostics are located on (not ENO)
+    checker = ops.checker(at, {arg.name: arg for arg in pins if arg.name is not None})
     if callee.is_fb:
         checker.call(node, statement=True)
     else:
@@ -319,15 +292,70 @@ def _check(
     return node
 
 
+def type_call(
+    ops: Operands,
+    callee: Callee,
+    instance: str | None,
+    inputs: dict[str, PinValue],
+    at: At,
+    en: PinValue | None,
+    context: t.Type | None,
+) -> None:
+    """Type the box's call as ST types it, reporting nothing: the calls nested in ``inputs`` (``call_ast``: the
+    blocks chained into it) get the types their place in it gives them (st/context_typing.py)."""
+    with ops.muted():
+        target = ops.parse(instance, at, "the instance") if instance is not None else ast.Name(callee.name)
+        _check(ops, callee, target, inputs, {}, at, en, None, context)
+
+
+def call_ast(
+    ops: Operands,
+    callee: Callee,
+    target: ast.Expr | None,
+    inputs: dict[str, PinValue],
+    outputs: dict[str, str],
+    at: At,
+    en: PinValue | None = None,
+    eno: Var | None = None,
+) -> ast.Call | None:
+    """The box as an unchecked ST call of ``target`` (the instance or the function's name; None: reported, or
+    ``target`` is None: an instance that does not parse)."""
+    missing = callee.missing(set(inputs))
+    for pin in missing:
+        ops.report(at.on(pin), f"{ops.lang}-MISSING-PIN", f"input {pin} of {callee.name} is not connected")
+    wired_in_outs = [pin for pin in callee.in_outs() if pin in inputs and not isinstance(inputs[pin], str)]
+    for pin in wired_in_outs:  # VAR-51: an in-out is passed by reference, so it needs a variable
+        ops.report(
+            at.on(pin), f"{ops.lang}-IN-OUT", f"in-out {pin} of {callee.name} needs a variable, not a computed value"
+        )
+    args: list[ast.Arg] = []
+    failed = bool(missing or wired_in_outs)
+    if en is not None:
+        node = _node(ops, en, at, "EN", callee)
+        failed |= node is None
+        if node is not None:
+            args.append(ast.Arg("EN", node))
+    for pin in sorted(inputs, key=callee.rank):
+        node = _node(ops, inputs[pin], at, pin, callee)
+        failed |= node is None
+        if node is not None:
+            args.append(ast.Arg(pin, node))
+    for pin, text in outputs.items():
+        node = ops.parse(text, at.on(pin), f"output {pin} of {callee.name}")
+        failed |= node is None
+        if node is not None:
+            args.append(ast.Arg(pin, node, output=True))
+    if eno is not None:
+        args.append(ast.Arg("ENO", ops.wire_node(eno, t.BOOL), output=True))
+    if failed or target is None:
+        return None
+    return ast.Call(target, args)
+
+
 def _node(ops: Operands, value: PinValue, at: At, pin: str, callee: Callee) -> ast.Expr | None:
     if isinstance(value, str):
         return ops.parse(value, at.on(pin), f"input {pin} of {callee.name}")
     return ops.wire_node(*value) if isinstance(value, tuple) else value
-
-
-def _arg(arg: ast.Arg, pin: str, pins: dict[str, ast.Arg]) -> ast.Arg:
-    pins[pin] = arg
-    return arg
 
 
 def lower_call(
