@@ -99,3 +99,25 @@ def test_a_plcopen_file_that_declares_its_encoding_is_read_as_declared(capsys, t
     code, out, err = call(capsys, "import", "plcopen", str(path), "--into", str(tmp_path / "ws"))
     assert code == 0, err
     assert "'Пуск насоса'" in Workspace(tmp_path / "ws").load("kurs").project.pou("Main").declarations
+
+
+def test_ladderlab_test_reads_a_cp1251_project_with_its_tests_and_hidden_tests(capsys, tmp_path):
+    """``ladderlab test`` reads files too: test files and a teacher's hidden tests in cp1251 need --encoding."""
+    project, _ = source_to_project(SOURCE, "kurs")
+    folder = tmp_path / "kurs"
+    for rel, content in project_files(project).items():
+        (folder / rel).parent.mkdir(parents=True, exist_ok=True)
+        (folder / rel).write_bytes(content.encode("cp1251"))
+    test = "TEST 'подпись'\n  ASSERT_EQ(Main.label, 'Пуск насоса');\nEND_TEST\n"
+    (folder / "tests" / "hidden").mkdir(parents=True)
+    (folder / "tests" / "kurs.st").write_bytes(test.encode("cp1251"))
+    (folder / "tests" / "hidden" / "grade.st").write_bytes(test.replace("подпись", "скрытый").encode("cp1251"))
+    code, out, err = call(capsys, "test", str(folder))
+    assert code == 2 and out == "" and err.startswith("pous/Main.st:3:24, POU Main: error BAD-ENCODING")
+    code, out, err = call(capsys, "test", str(folder), "--encoding", "cp1251")
+    assert code == 0, err
+    assert "PASSED  подпись" in out and "1 passed" in out
+    code, out, err = call(capsys, "test", str(folder), "--encoding", "cp1251", "--grade")
+    assert code == 0, err
+    graded = json.loads(out)
+    assert (graded["passed"], graded["total"]) == (2, 2), graded
