@@ -282,7 +282,11 @@ def _std_call(checker: Any, node: ast.Call, function: stdlib.StdFunction) -> Typ
     generic = _generic_type(checker, node, function, bound)
     if generic is ERROR:
         return ERROR
-    return generic if function.result == stdlib.T else (t.elementary(function.result) or ERROR)
+    if function.result != stdlib.T:
+        return t.elementary(function.result) or ERROR
+    if isinstance(generic, t.StringType) and function.group == "string":  # CONCAT(a, b) is longer than a
+        return t.StringType(generic.wide)
+    return generic
 
 
 def _generic_type(checker: Any, node: ast.Call, function: stdlib.StdFunction, bound) -> Type:
