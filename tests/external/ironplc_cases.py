@@ -20,7 +20,8 @@ _SECONDS = ("DATE", "DT", "DATE_AND_TIME", "LDATE", "LDT")
 
 def run_case(case: dict) -> str | None:
     project, diagnostics = source_to_project(case["source"], "case")
-    build = build_project(project) if project is not None else None
+    refused = any(d.severity == "error" for d in diagnostics)  # a POU that does not parse is not in ``project``
+    build = build_project(project) if project is not None and not refused else None
     compiled = build is not None and build.compiled is not None
     if case["kind"] == "compile_error":
         return None if not compiled else f"compiled, expected the error: {case['error']}"

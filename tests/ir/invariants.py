@@ -47,6 +47,8 @@ def check_value(value: object, ty: t.IrType, where: str) -> None:
         assert isinstance(value, tuple) and len(value) == len(ty.fields), f"{where}: {value!r} for {ty.name}"
         for item, field in zip(value, ty.fields):
             check_value(item, field.type, f"{where}.{field.name}")
+    elif isinstance(ty, t.Reference):
+        assert value is None or isinstance(value, ir.ReferenceInit), f"{where}: reference initial {value!r}"
     else:
         assert value is None or isinstance(value, tuple), f"{where}: FB instance initial {value!r}"
 
@@ -63,7 +65,10 @@ class _Checker:
         assert v.name in slots, f"{self.pou.name}: {v.scope} {v.name} has no slot"
         ty = slots[v.name].type
         for selector in v.path:
-            if isinstance(selector, ir.Index):
+            if isinstance(selector, ir.Deref):
+                assert isinstance(ty, t.Reference), (v, ty)
+                ty = ty.target
+            elif isinstance(selector, ir.Index):
                 assert isinstance(ty, t.Array) and len(selector.indices) == len(ty.dims), (v, ty)
                 for index in selector.indices:
                     self.expr(index)
@@ -88,6 +93,9 @@ class _Checker:
             check_value(e.value, e.type, f"{self.pou.name}: Const")
         elif isinstance(e, ir.Var):
             self.var(e)
+        elif isinstance(e, ir.AddressOf):
+            self.var(e.var)
+            assert isinstance(e.type, t.Reference) and value_type(e.type.target) == value_type(e.var.type), e
         elif isinstance(e, ir.Unary):
             self.expr(e.operand)
             assert value_type(e.operand.type) == value_type(e.type), e  # type: ignore[union-attr]

@@ -21,10 +21,12 @@ from ..iec.addresses import Address, parse_address, same_location
 from ..iec.spelling import did_you_mean
 from ..ir import nodes as ir
 from ..ir import types as t
+from ..ir.types import describe
 from .codegen import names
 from .codegen.context import ModuleContext, std_fb_class, std_pin_type
+from .codegen.runtime import reference_text
 from .codegen.scope import global_owner
-from .codegen.typeinfo import describe, is_composite, runtime_name
+from .codegen.typeinfo import is_composite, runtime_name
 from .process_image import ProcessImage, image_view_name, key_of, located_address, view_kind
 
 GLOBALS_PREFIX = "GVL"
@@ -314,6 +316,8 @@ def coerce_for(location: Location, value: object) -> object:
         raise ValueError(f"{location.path} is reached through a READ_ONLY access path: it cannot be written")
     if not location.elementary:
         raise ValueError(f"{location.path} is {_a(ty)}: write its elements one by one")
+    if isinstance(ty, t.Reference):
+        raise ValueError(f"{location.path} is {_a(ty)}: a reference is set by the program (REF(...)), not online")
     try:
         if isinstance(ty, t.Enum):
             return _enum_value(ty, value)
@@ -376,6 +380,8 @@ def _value_leaves(context, path, ty, value, roots: Roots | None = None) -> Itera
     elif isinstance(ty, t.Struct):
         for f in ty.fields:
             yield from _value_leaves(context, f"{path}.{f.name}", f.type, getattr(value, names.slot(f.name)), roots)
+    elif isinstance(ty, t.Reference):
+        yield path, reference_text(value)
     elif isinstance(ty, t.FbInstance):
         user = context.user_fb(ty.fb)
         if user is not None:
@@ -400,7 +406,9 @@ def _array_leaves(context, path, ty: t.Array, value, prefix: list[int], roots=No
 
 
 def plain(context: ModuleContext, ty: t.IrType, value: object) -> object:
-    """A value as plain data: arrays as (nested) lists, structures and FB instances as dicts."""
+    """A value as plain data: arrays as (nested) lists, structures and FB instances as dicts, references as text."""
+    if isinstance(ty, t.Reference):
+        return reference_text(value)
     if isinstance(ty, t.Array):
         inner = t.Array(ty.element, ty.dims[1:]) if len(ty.dims) > 1 else ty.element
         return [plain(context, inner, item) for item in value]  # type: ignore[attr-defined]
@@ -434,7 +442,9 @@ class LocationReader:
         for path, location in locations.items():
             last = location.keys[-1]
             if isinstance(last, (str, int)):
-                plain_type = None if location.elementary else location.type
+                plain_type = (
+                    None if location.elementary and not isinstance(location.type, t.Reference) else location.type
+                )
                 groups.setdefault((location.root, location.keys[:-1]), []).append((path, last, plain_type))
             else:
                 self.single.append((path, location))
@@ -457,7 +467,7 @@ class LocationReader:
         for path, location in self.single:
             try:
                 value = location.get(self.roots)
-                values[path] = value if location.elementary else plain(self.ctx, location.type, value)
+                values[path] = plain(self.ctx, location.type, value)
             except Exception:
                 values[path] = None
         return values

@@ -8,9 +8,11 @@ program (another one included: a test's failure opened online, a later scan hist
 
 The data holds no object of the simulation's generated module: instances are dicts of their slots, arrays
 lists, scalars as stored; VAR_IN_OUT references are left out (a call binds them again; an attached
-instance's links are bound again by ``attach``). So a state pickles, and restoring needs a simulation of
-the same compiled program (same declarations), not the same namespace. Restoring writes values into the
-target's existing objects, so every reference into them stays valid.
+instance's links are bound again by ``attach``), and so are REF_TO / POINTER TO values (restoring starts them as
+declared, NULL or ``REF(x)`` of the target's own ``x``; one set by the body is set again when the body runs).
+So a state pickles, and restoring needs a simulation of the same compiled program (same declarations), not the
+same namespace. Restoring writes values into the target's existing objects, so every reference into them stays
+valid.
 """
 
 from __future__ import annotations
@@ -18,14 +20,14 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
-from .codegen.runtime import UNSET
+from .codegen.runtime import UNSET, Ref
 
 if TYPE_CHECKING:
     from .simulation import Simulation
 
 
 class _Reference:
-    """Stands for a VAR_IN_OUT reference in captured data (not restored)."""
+    """Stands for a VAR_IN_OUT reference or a REF_TO value in captured data (not restored)."""
 
     __slots__ = ()
 
@@ -69,7 +71,7 @@ def data_of(value: object) -> object:
         return value
     if value.__class__ is list:
         return [data_of(item) for item in value]
-    if value.__class__ is tuple:  # a VAR_IN_OUT reference (container, key)
+    if value.__class__ is tuple or value.__class__ is Ref:  # a VAR_IN_OUT reference (container, key), a REF_TO
         return REFERENCE
     names = [*_slot_names(type(value)), *getattr(value, "__dict__", ())]
     return {name: data_of(getattr(value, name)) for name in names if hasattr(value, name)}

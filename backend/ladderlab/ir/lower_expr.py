@@ -28,15 +28,19 @@ from ..iec import stdlib
 from ..iec.addresses import part_type, partial_access
 from ..iec.elementary import DEFAULT_STRING_LENGTH, ELEMENTARY, GENERIC
 from ..iec.stdlib import OPERATOR_OVERLOADS
+from ..iec.values import article
 from ..st import ast
 from ..st import types as t
 from ..st.context_typing import FoldError, fold, literal_only
+from ..st.printer import print_expression
 from ..st.rules import EnumValue
 from ..st.symbols import PouInfo, Symbol
 from .context import PouContext
-from .lower_types import POINTERS_UNSUPPORTED, LoweringError, byte_size, engine_value, ir_default
-from .nodes import Assign, Binary, Call, Const, Convert, Expr, FnCall, Index, Member, Unary, Var
-from .types import BOOL, Array, Elementary, FbInstance, IrType, Struct, Subrange
+from .lower_types import LoweringError, byte_size, engine_value, ir_default
+from .nodes import AddressOf, Assign, Binary, Call, Const, Convert, Deref, Expr, FnCall, Index, Member, Unary, Var
+from .types import BOOL, Array, Elementary, FbInstance, IrType, Reference, Struct, Subrange, describe
+
+POINTER_ARITHMETIC = "pointer arithmetic is not supported: a reference reaches its variable only"
 
 _OPERATORS = {
     "+": "ADD",
@@ -88,6 +92,8 @@ def _lower(node: ast.Expr, ctx: PouContext, expected: IrType | None) -> Expr:
         return _literal(node, ctx)
     if isinstance(node, ast.Name) and isinstance(node.ref, EnumValue):
         return Const(node.ref.value, ctx.ir_type(ty))
+    if ty is t.NULL:
+        return Const(None, ctx.ir_type(ty))
     if is_part(node):
         return _bit(node, ctx)
     if isinstance(node, (ast.Name, ast.DirectAddr, ast.Member, ast.Index, ast.Deref)):
@@ -101,7 +107,38 @@ def _lower(node: ast.Expr, ctx: PouContext, expected: IrType | None) -> Expr:
 
 def lower_to(node: ast.Expr, ctx: PouContext, target: IrType) -> Expr:
     """``node`` as a value of ``target``: untyped literals take it, accepted widenings get a ``Convert``."""
-    return convert(lower_expr(node, ctx, target), target)
+    expr = lower_expr(node, ctx, target)
+    if isinstance(target, Reference):
+        return _reference_to(expr, target, node)
+    return convert(expr, target)
+
+
+def _reference_to(expr: Expr, target: Reference, node: ast.Expr) -> Expr:
+    """A reference stored as a reference to ``target.target``: NULL, or one to a variable of that very type (a
+    ``POINTER TO BYTE`` cannot stand for another variable: the engine's references keep their target's type)."""
+    if isinstance(expr, Const) and expr.value is None:
+        return Const(None, target)
+    if isinstance(expr.type, Reference) and _same_target(expr.type.target, target.target):
+        return expr
+    raise LoweringError(
+        f"a {_reference_text(target)} cannot refer to {_referred_text(expr.type)}: LadderLab's references keep "
+        "their target's type (no reinterpretation of memory)",
+        node,
+    )
+
+
+def _same_target(a: IrType, b: IrType) -> bool:
+    return value_type(a) == value_type(b) or (
+        isinstance(a, Elementary) and isinstance(b, Elementary) and a.name == b.name  # STRING[n] and STRING[m]
+    )
+
+
+def _reference_text(ty: Reference) -> str:
+    return f"REF_TO {describe(ty.target)}"
+
+
+def _referred_text(ty: IrType) -> str:
+    return article(describe(ty.target)) if isinstance(ty, Reference) else describe(ty)
 
 
 def convert(expr: Expr, target: IrType) -> Expr:
@@ -198,7 +235,10 @@ def lower_access(node: ast.Expr, ctx: PouContext) -> Var:
     if isinstance(node, ast.Index):
         return _index(node, ctx)
     if isinstance(node, ast.Deref):
-        raise LoweringError(POINTERS_UNSUPPORTED, node)
+        base = lower_access(node.base, ctx)
+        if not isinstance(base.type, Reference):
+            raise LoweringError(None)
+        return Var(base.scope, base.name, base.type.target, (*base.path, Deref()))
     if isinstance(node, ast.Member):
         raise LoweringError(
             "a bit or part of a variable (x.3, x.%B1) can be read or assigned, but not passed by reference", node
@@ -226,7 +266,7 @@ def _index(node: ast.Index, ctx: PouContext) -> Var:
     if isinstance(node.base.ty, t.StringType):
         raise LoweringError("indexing a STRING is not supported: use MID(s, 1, i) to get one character", node)
     if isinstance(node.base.ty, t.PointerType):
-        raise LoweringError(POINTERS_UNSUPPORTED, node)
+        raise LoweringError(POINTER_ARITHMETIC + ": write p^[i] for an element of the array p refers to", node)
     base = lower_access(node.base, ctx)
     if not isinstance(base.type, Array):
         raise LoweringError(None)
@@ -309,12 +349,29 @@ def _binary(node: ast.Binary, ctx: PouContext) -> Expr:
         mixed = _time_operator(node, op, ctx)
         if mixed is not None:
             return mixed
+    if isinstance(left_ty, (t.PointerType, t.NullType)) or isinstance(right_ty, (t.PointerType, t.NullType)):
+        return _reference_operation(node, op, ctx)
     if op in _COMPARISONS:  # the checker settled both operands to types whose lub is the one compared in
         operand = ctx.ir_type(t.lub(left_ty, right_ty) or t.concrete(t.common(left_ty, right_ty)[0]))
         result = BOOL
     else:
         operand = result = ctx.ir_type(node.ty)
     return Binary(op, lower_to(node.left, ctx, operand), lower_to(node.right, ctx, operand), result)  # type: ignore[arg-type]
+
+
+def _reference_operation(node: ast.Binary, op: str, ctx: PouContext) -> Expr:
+    """``r1 = r2``, ``r <> NULL``: whether two references refer to one variable. Pointer arithmetic (``p + 1``)
+    and ordering would reach memory next to a variable, which the engine's references have not got."""
+    if op not in ("EQ", "NE"):
+        raise LoweringError(
+            POINTER_ARITHMETIC if op in ("ADD", "SUB") else f"references cannot be compared by '{node.op}'", node
+        )
+    left, right = lower_expr(node.left, ctx), lower_expr(node.right, ctx)
+    if isinstance(left, Const) and left.value is None:  # NULL takes the other reference's type
+        left = Const(None, right.type)
+    if isinstance(right, Const) and right.value is None:
+        right = Const(None, left.type)
+    return Binary(op, left, right, BOOL)  # type: ignore[arg-type]  # EQ/NE
 
 
 def _time_operator(node: ast.Binary, op: str, ctx: PouContext) -> Expr | None:
@@ -359,19 +416,19 @@ def _function(
 
 
 def refuse_unsupported_call(node: ast.Call) -> None:
-    """Program calls and ADR/REF cannot be lowered yet: raise the located error."""
+    """Program calls cannot be lowered yet: raise the located error."""
     ref = node.ref
     if isinstance(ref, PouInfo) and ref.kind == "PROGRAM":
         raise LoweringError(
             f"calling the program {ref.name} from ST is not supported by the engine yet: run it from a task", node
         )
-    if ref is None and isinstance(node.callee, ast.Name) and node.callee.name.upper() in ("ADR", "REF"):
-        raise LoweringError(POINTERS_UNSUPPORTED, node)
 
 
 def _call(node: ast.Call, ctx: PouContext) -> Expr:
     if node.ref is None and isinstance(node.callee, ast.Name) and node.callee.name.upper() == "SIZEOF":
         return _sizeof(node, ctx, ctx.ir_type(node.ty))
+    if node.ref is None and isinstance(node.callee, ast.Name) and node.callee.name.upper() in ("ADR", "REF"):
+        return _address_of(node, ctx)
     refuse_unsupported_call(node)
     ref = node.ref
     en, eno = _en_eno(node)
@@ -387,6 +444,15 @@ def _call(node: ast.Call, ctx: PouContext) -> Expr:
     if en is None and eno is None:
         return call
     return _lift(node, call, before, ctx)
+
+
+def _address_of(node: ast.Call, ctx: PouContext) -> AddressOf:
+    """``REF(x)`` / ``ADR(x)``: a reference to the variable ``x`` (the checker refused temporaries)."""
+    if len(node.args) != 1:
+        raise LoweringError(None)
+    var = lower_access(node.args[0].value, ctx)
+    ty = ctx.ir_type(node.ty)
+    return AddressOf(var, ty, f"{node.callee.name.upper()}({print_expression(node.args[0].value)})")  # type: ignore[union-attr]  # a Name
 
 
 def _sizeof(node: ast.Call, ctx: PouContext, target: IrType) -> Const:

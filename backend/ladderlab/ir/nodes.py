@@ -60,13 +60,19 @@ class Member:
     name: str
 
 
-Selector = Index | Member
+@dataclass(frozen=True)
+class Deref:
+    """``^``: the variable a reference (REF_TO / POINTER TO) refers to; a NULL reference is a runtime error."""
+
+
+Selector = Index | Member | Deref
 Scope = Literal["local", "global"]
 
 
 @dataclass(frozen=True)
 class Var:
-    """A variable access path: a root slot then array indices (Index) and struct/FB member selections (Member).
+    """A variable access path: a root slot then array indices (Index), struct/FB member selections (Member) and
+    dereferences of references (Deref).
 
     ``scope`` says where the root lives: ``local`` in the POU instance (any declared
     class, VAR_IN_OUT included: the engine resolves the reference), ``global`` in the
@@ -116,7 +122,17 @@ class Convert:
     type: IrType
 
 
-Expr = Const | Var | Unary | Binary | Call | Convert
+@dataclass(frozen=True)
+class AddressOf:
+    """``REF(x)`` / ``ADR(x)``: a reference (``type``, a ``Reference``) to the variable ``var``; ``text`` is the
+    call as written, which the online views show as the reference's value."""
+
+    var: Var
+    type: IrType
+    text: str
+
+
+Expr = Const | Var | Unary | Binary | Call | Convert | AddressOf
 
 # --------------------------------------------------------------------------- statements
 
@@ -244,6 +260,16 @@ Stmt = Assign | If | Case | For | While | Repeat | Exit | Return | FbCall | FnCa
 
 
 VarClass = Literal["VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_EXTERNAL", "VAR_TEMP", "VAR_GLOBAL"]
+
+
+@dataclass(frozen=True)
+class ReferenceInit:
+    """The initial value ``REF(x)`` of a reference slot: the whole variable ``name`` of this POU (``local``) or a
+    global, made after every other slot is initialised (``text`` as written, shown online)."""
+
+    name: str
+    scope: Scope
+    text: str
 
 
 @dataclass

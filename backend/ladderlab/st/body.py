@@ -148,6 +148,8 @@ class BodyChecker:
             names = ", ".join(f"{v.type.name}#{v.name}" for v in values)
             self.report("ST-AMBIGUOUS", f"'{node.name}' is a value of several enumerations: write {names}", node)
             return ERROR
+        if node.name.upper() == "NULL":  # IEC 61131-3 ed. 3: the reference to nothing (unless declared otherwise)
+            return t.NULL
         self.report(
             "ST-UNKNOWN-VAR", f"unknown variable '{node.name}'" + did_you_mean(node.name, self._visible_names()), node
         )

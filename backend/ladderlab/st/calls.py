@@ -361,4 +361,32 @@ def _system_call(checker: Any, node: ast.Call, name: str) -> Type:
     ty = checker.expr(value)
     if not isinstance(value, _WRITABLE):
         checker.report("ST-NOT-LVALUE", f"{name} needs a variable", value)
+        return t.PointerType(ty)
+    problem = _unreferable(checker, value)
+    if problem is not None:
+        checker.report("ST-REF", f"{name} cannot refer to {problem}", value)
     return t.PointerType(ty)
+
+
+def _unreferable(checker: Any, value: ast.Expr) -> str | None:
+    """Why a reference to ``value`` would outlive its variable or break a rule (None: it may be referred to).
+    IEC 61131-3 ed. 3 6.4.4.10: no reference to a temporary - a VAR_TEMP or a function's variable lives only
+    while the call runs - so a reference never dangles; and none to a CONSTANT, which could then be written."""
+    root = value
+    while isinstance(root, (ast.Member, ast.Index)):
+        root = root.base
+    if isinstance(root, ast.Name) and isinstance(root.ref, PouInfo):
+        return f"the result of the function {root.ref.name}: it lives only while the call runs"
+    if not isinstance(root, ast.Name) or not isinstance(root.ref, Symbol):
+        return None  # through a reference (r^.x): the variable r refers to
+    symbol: Symbol = root.ref
+    if symbol.constant:
+        return f"the CONSTANT {symbol.name}: it could be written through the reference"
+    function = checker.pou is not None and checker.pou.kind == "FUNCTION" and symbol.pou is not None
+    if symbol.var_class == "VAR_TEMP" or (function and symbol.var_class != "VAR_EXTERNAL"):
+        where = "VAR_TEMP" if symbol.var_class == "VAR_TEMP" else f"the function {checker.pou.name}"
+        return (
+            f"'{symbol.name}', a variable of {where}: it lives only while the call runs, the reference would "
+            "outlive it (declare it in a program or function block, or as a global)"
+        )
+    return None

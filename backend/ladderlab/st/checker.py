@@ -428,6 +428,12 @@ class ProjectChecker:
             report("ST-DECL", f"a {block.kind} variable cannot have an initial value (VAR-83)", decl.init)
         if isinstance(ty, t.FbType) and pou is not None and pou.kind == "FUNCTION":
             report("ST-DECL", f"a function has no memory, so it cannot contain the instance of {ty.name} (ST-57)", decl)
+        if isinstance(ty, t.PointerType) and block.retain:
+            report(
+                "ST-DECL",
+                f"a {ty} cannot be RETAIN: a restart makes the variables it refers to anew (set it again after one)",
+                decl,
+            )
         if block.constant and decl.init is None and block.kind != "VAR_EXTERNAL":
             report("ST-DECL", "a CONSTANT needs an initial value", decl, severity="warning")
 

@@ -119,8 +119,15 @@ class _Void(Type):
     name = "no value"
 
 
+class NullType(Type):
+    """The type of ``NULL`` (IEC 61131-3 ed. 3): the reference to nothing, which any reference type takes."""
+
+    name = "NULL"
+
+
 ERROR = _Error()
 VOID = _Void()
+NULL = NullType()
 BOOL = Elementary("BOOL")
 INT = Elementary("INT")
 TIME = Elementary("TIME")
@@ -237,7 +244,9 @@ def same(a: Type, b: Type) -> bool:
         return True
     if isinstance(a, StringType) and isinstance(b, StringType):
         return a.wide == b.wide
-    if isinstance(a, PointerType) and isinstance(b, PointerType):
+    if isinstance(a, PointerType | NullType) and isinstance(b, PointerType | NullType):
+        if isinstance(a, NullType) or isinstance(b, NullType):
+            return True
         return same(a.target, b.target) or (isinstance(a.target, Elementary) and a.target.name == "BYTE")
     if isinstance(a, FbType) and isinstance(b, FbType):  # one user FB POU, or one standard FB (each use resolves anew)
         return a.pou is b.pou if a.pou is not None else b.pou is None and a.std is b.std

@@ -8,7 +8,7 @@ from ...ir import nodes as ir
 from ...model.diagnostics import Diagnostic
 from .context import CodegenError, ModuleContext, PausePoint, diagnostic
 from .layout import slots_source
-from .pou import emit_function, emit_inits, emit_instance_class, emit_located_inits, emit_struct
+from .pou import emit_function, emit_inits, emit_instance_class, emit_located_inits, emit_reference_inits, emit_struct
 from .scope import global_owner
 from .source import Source
 from .tasks import emit_tasks
@@ -125,6 +125,7 @@ def _emit_globals(module: ModuleContext, src: Source) -> None:
             if not page:
                 for later in range(1, layout.pages):
                     src.line(f"ll_init_globals{later}(warm)")
+                emit_reference_inits(module, layout, global_owner, src)
         src.line()
     src.piece()
     for page in range(layout.pages):

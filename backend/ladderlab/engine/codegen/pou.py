@@ -27,7 +27,7 @@ from .context import CodegenError, ModuleContext, diagnostic
 from .deferred import deferred_probes
 from .layout import slots_source
 from .mentions import calls_in, own_expressions, walk
-from .scope import Scope
+from .scope import Scope, global_owner
 from .source import Source
 from .statements import Statements
 from .typeinfo import is_composite
@@ -101,6 +101,23 @@ def _emit_init(module: ModuleContext, pou: ir.Pou, scope: Scope, src: Source) ->
         emit_located_inits(module, list(layout.located.values()), src)
         for page in range(1, layout.pages):
             src.line(f"ll_i{page}_{names.escape(pou.name)}(self, warm)")
+        emit_reference_inits(module, layout, lambda page: "self" if page == 0 else f"self.ll_p{page}", src)
+
+
+def emit_reference_inits(module: ModuleContext, layout, holder, src: Source) -> None:
+    """``r : REF_TO T := REF(x)``: each such reference is made once every slot of the scope is (``holder(page)``:
+    the object holding a page of ``layout``; globals are held by their own pages)."""
+    for place in layout.places.values():
+        initial = place.slot.initial
+        if not isinstance(initial, ir.ReferenceInit):
+            continue
+        if initial.scope == "local":
+            target = layout.get(initial.name)
+            owner = holder(target.page)
+        else:
+            target = module.globals.get(initial.name)
+            owner = global_owner(target.page)
+        src.line(f"{holder(place.page)}.{place.attr} = ll_Ref({owner}, {target.attr!r}, {initial.text!r})")
 
 
 def emit_located_inits(module: ModuleContext, slots: list[ir.Slot], src: Source) -> None:

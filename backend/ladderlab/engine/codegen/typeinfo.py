@@ -87,6 +87,8 @@ def store_code(code: str, source: t.IrType, target: t.IrType, *, checked: bool =
     """
     if (source is target or source == target) and (checked or not isinstance(target, t.Subrange)):
         return code  # the common case, first
+    if isinstance(target, t.Reference):
+        return code  # a reference is stored as it is (lowering checked its target type)
     if isinstance(target, t.Subrange):
         if checked and source == target:
             return code
@@ -95,19 +97,3 @@ def store_code(code: str, source: t.IrType, target: t.IrType, *, checked: bool =
     if same_storage(source, target) or is_composite(target) or isinstance(target, t.Enum):
         return code
     return values.store_expr(code, runtime_name(target))  # type: ignore[arg-type]
-
-
-def describe(ty: t.IrType) -> str:
-    """IEC-like text of a type for messages and comments."""
-    if isinstance(ty, t.Elementary):
-        return runtime_name(ty)  # type: ignore[return-value]
-    if isinstance(ty, t.Subrange):
-        return f"{ty.base.name} ({ty.low}..{ty.high})"
-    if isinstance(ty, t.Enum):
-        return ty.name
-    if isinstance(ty, t.Array):
-        dims = ", ".join(f"{lo}..{hi}" for lo, hi in ty.dims)
-        return f"ARRAY [{dims}] OF {describe(ty.element)}"
-    if isinstance(ty, t.Struct):
-        return ty.name
-    return ty.fb
