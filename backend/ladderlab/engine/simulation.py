@@ -107,6 +107,7 @@ class Simulation:
         self._attached: dict[str, tuple[object, str]] = {}  # outside the tasks (attach): name -> (instance, POU)
         self._roots = Roots(self._ns, self._attached)
         self._image: ProcessImage = self._ns["ll_image"]
+        self._has_inputs, self._has_outputs = bool(self._image.inputs), bool(self._image.outputs)  # sized once
         self._triggers = {task.name: self._resolver.resolve(task.single) for task in self._tasks if task.single}
         self.debugger: Debugger | None = None
         self._stamp = 0  # counts scans started: the stamp probe groups record (ll_scan)
@@ -242,7 +243,8 @@ class Simulation:
         self._apply_forces()
         if self._triggers:
             due = self._schedule.with_triggers(due, lambda task: self._triggers[task.name].get(self._roots))
-        self._image.read_inputs()
+        if self._has_inputs:  # (a program without %I addresses pays nothing per scan)
+            self._image.read_inputs()
         self._ns["ll_now"] = now
         self._stamp += 1
         self._ns["ll_scan"] = self._stamp
@@ -293,7 +295,8 @@ class Simulation:
 
     def _finish(self, elapsed_ms: float) -> None:
         self._apply_forces()
-        self._image.publish()
+        if self._has_outputs:
+            self._image.publish()
         self.stats.add(elapsed_ms)
         self.scan_count += 1
 

@@ -134,19 +134,22 @@ class Schedule:
     def __post_init__(self) -> None:
         self._ordered = sorted(self.tasks, key=Task.sort_key)
         self._cyclic = [task for task in self._ordered if task.interval_ms is not None]
-        self._periods = {id(task): task.interval_ms for task in self._ordered if task.interval_ms is not None}
+        # (task, interval) of the cyclic tasks, in priority order: every scan walks it, so no lookups there
+        self._periods = [(task, task.interval_ms) for task in self._cyclic if task.interval_ms is not None]
         self._idle = not self._cyclic or any(task.single for task in self.tasks)
 
     def next_time(self) -> float:
-        due = min((task.next_due for task in self._cyclic), default=math.inf)
-        return min(due, self._idle_due) if self._idle else due
+        due = min([task.next_due for task in self._cyclic]) if self._cyclic else math.inf
+        return self._idle_due if self._idle and self._idle_due < due else due
 
     def advance(self) -> tuple[float, list[Task]]:
         """Move the clock to the next due time; the cyclic tasks due then, in priority order."""
         now = self.next_time()
-        due = [task for task in self._cyclic if task.next_due == now]
-        for task in due:
-            task.next_due += self._periods[id(task)]
+        due = []
+        for task, period in self._periods:
+            if task.next_due == now:
+                task.next_due += period
+                due.append(task)
         if self._idle and self._idle_due == now:
             self._idle_due += IDLE_MS
         self.time_ms = now
@@ -161,8 +164,7 @@ class Schedule:
         """Move the clock to ``time_ms`` (not backwards) without a scan; each task is next due after it."""
         if not time_ms >= self.time_ms:
             raise ValueError(f"time {time_ms} ms is before the current time {self.time_ms} ms")
-        for task in self._cyclic:
-            period = self._periods[id(task)]
+        for task, period in self._periods:
             task.next_due = (math.floor(time_ms / period) + 1) * period
         self._idle_due = (math.floor(time_ms / IDLE_MS) + 1) * IDLE_MS
         self.time_ms = time_ms
