@@ -195,7 +195,7 @@ class Simulation:
     def reset(self, cold: bool = False) -> None:
         """Warm (RETAIN variables keep their values) or cold restart; clears faults, ends a halted scan."""
         if self._scan is not None:
-            self._scan.close()  # type: ignore[attr-defined]
+            self._scan.close()  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
         self._scan, self.halted = None, None
         if self.debugger is not None:
             self.debugger.arm(None)
@@ -277,11 +277,11 @@ class Simulation:
     def _drive(self) -> bool:
         start = self._clock()
         try:
-            pid, instance = next(self._scan)  # type: ignore[arg-type]
+            pid, instance = next(self._scan)  # type: ignore[arg-type]  # generated POU classes and their namespace are untyped
         except StopIteration:
             self._busy += self._clock() - start
             self._scan = None
-            self.debugger.arm(None)  # type: ignore[union-attr]
+            self.debugger.arm(None)  # type: ignore[union-attr]  # the debug variant is in use on this path
             self._finish(self._busy * 1000.0)
             return True
         self._busy += self._clock() - start
@@ -290,7 +290,7 @@ class Simulation:
         self.halted = Halt(
             point, self._instance_path(instance) if instance is not None else None, self.debugger.reason(pid)
         )
-        self.debugger.arm(None)  # type: ignore[union-attr]
+        self.debugger.arm(None)  # type: ignore[union-attr]  # the debug variant is in use on this path
         return False
 
     def _finish(self, elapsed_ms: float) -> None:
@@ -344,7 +344,7 @@ class Simulation:
         now = self._ns["ll_now"]
         self._watchdog.arm(limit_s)
         try:
-            obj.execute(now)  # type: ignore[attr-defined]
+            obj.execute(now)  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
         except passthrough:
             raise
         except Exception as error:
@@ -427,7 +427,7 @@ class Simulation:
         return tuple(frames)
 
     def _continue(self, granularity: str | None) -> Halt | None:
-        self.debugger.arm(granularity)  # type: ignore[union-attr]
+        self.debugger.arm(granularity)  # type: ignore[union-attr]  # the debug variant is in use on this path
         self.halted = None
         self._watchdog.resume(self._watchdog_left)
         self._drive()
@@ -480,7 +480,7 @@ class Simulation:
                 self._read_deferred(obj, table)
             else:
                 self._read_some_deferred(key, obj, table, indices)
-            values, stamps = obj.ll_pr, obj.ll_px  # type: ignore[attr-defined]
+            values, stamps = obj.ll_pr, obj.ll_px  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
         found_values: dict[str, object] = {}
         executed: list[str] = []
         stamp, constants, groups, names_ = self._stamp, table.constants, table.groups, table.elements
@@ -498,8 +498,8 @@ class Simulation:
         """Fill in the probes the monitor code reads after the scan (codegen/deferred.py); never-run ones stay unset."""
         if not table.deferred or self.variant != "monitor":
             return
-        obj.ll_read_probes()  # type: ignore[attr-defined]
-        values, stamps = obj.ll_pr, obj.ll_px  # type: ignore[attr-defined]
+        obj.ll_read_probes()  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
+        values, stamps = obj.ll_pr, obj.ll_px  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
         for index in table.deferred:
             if all(stamps[g] < 0 for g in table.groups[index]):
                 values[index] = UNSET
@@ -508,7 +508,7 @@ class Simulation:
         """``_read_deferred`` for the probes ``indices`` only: each reads its variable through a resolved path."""
         if not table.deferred_paths or self.variant != "monitor":
             return
-        values, stamps = obj.ll_pr, obj.ll_px  # type: ignore[attr-defined]
+        values, stamps = obj.ll_pr, obj.ll_px  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
         for index in indices:
             path = table.deferred_paths.get(index)
             if path is None:
@@ -550,7 +550,7 @@ class Simulation:
         return self._paths
 
     def _add_instance(self, path: str, obj: object, pou: str) -> None:
-        self._paths[id(obj)] = path  # type: ignore[index]
+        self._paths[id(obj)] = path  # type: ignore[index]  # generated POU classes and their namespace are untyped
         self._instances[path.upper()] = (obj, pou)
         layout = self._context.layouts[pou]
         for place in layout.places.values():
@@ -565,7 +565,7 @@ class Simulation:
         elif isinstance(ty, t.Array) and isinstance(ty.element, (t.FbInstance, t.Array, t.Struct)):
             lo = ty.dims[0][0]
             inner = t.Array(ty.element, ty.dims[1:]) if len(ty.dims) > 1 else ty.element
-            for offset, item in enumerate(value):  # type: ignore[arg-type]
+            for offset, item in enumerate(value):  # type: ignore[arg-type]  # generated POU classes and their namespace are untyped
                 self._add_values(f"{path}[{lo + offset}]", inner, item)
         elif isinstance(ty, t.Struct):
             for f in ty.fields:
@@ -685,9 +685,9 @@ class Simulation:
             if name not in self._attached:
                 self.attach(name, pou, links)
         for name, data in state.instances.items():
-            restore_into(self._attached[name][0], data)  # type: ignore[arg-type]
+            restore_into(self._attached[name][0], data)  # type: ignore[arg-type]  # captured slot data is a dict
         for page, data in state.globals.items():
-            restore_into(self._ns[page], data)  # type: ignore[arg-type]
+            restore_into(self._ns[page], data)  # type: ignore[arg-type]  # captured slot data is a dict
         self._image.restore(state.image)
         self._schedule.time_ms = state.time_ms
         for task, (due, stopped, trigger) in zip(self._tasks, state.tasks):

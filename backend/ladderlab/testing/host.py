@@ -209,11 +209,11 @@ class Host:
 
     # ------------------------------------------------------------ forcing
     def _force(self, site: Site, value) -> bool:
-        self.sim.force(site.path, value)  # type: ignore[arg-type]
+        self.sim.force(site.path, value)  # type: ignore[arg-type]  # operands were checked when the test file was lowered
         return True
 
     def _release(self, site: Site) -> bool:
-        self.sim.unforce(site.path)  # type: ignore[arg-type]
+        self.sim.unforce(site.path)  # type: ignore[arg-type]  # operands were checked when the test file was lowered
         return True
 
     # ------------------------------------------------------------ mocks
@@ -222,7 +222,7 @@ class Host:
         return True
 
     def _mock_function(self, site: Site, value) -> bool:
-        self.sim.replace_function(site.function, lambda *args: value)  # type: ignore[arg-type]
+        self.sim.replace_function(site.function, lambda *args: value)  # type: ignore[arg-type]  # operands were checked when the test file was lowered
         return True
 
     def _mock_verify_called(self, site: Site, reference) -> bool:
