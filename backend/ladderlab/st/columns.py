@@ -60,6 +60,9 @@ def _row(lines: list[str], span) -> _Row | None:
         line[span.column - 1 : span.end_column - 1],
         line[span.end_column - 1 :],
     )
+    semicolon = after.find(";")
+    if semicolon > 0 and not re.search(r"\(\*|//|'|\"", after[:semicolon]):  # a span that stops short of a ']'
+        code, after = code + after[:semicolon], after[semicolon:]
     tail = _TAIL.match(after)
     if before.strip() or tail is None:
         return None

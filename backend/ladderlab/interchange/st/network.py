@@ -143,7 +143,7 @@ def plan(code: NetworkCode, declarations: Declarations) -> Planned:
         for op in code.ops
         if isinstance(op, Step) or op.effect
     ]
-    barriers = [position[id(op)] for op in code.ops if isinstance(op, Step) or op.effect or op.fallible]
+    barriers = [op for op in code.ops if isinstance(op, Step) or op.effect or op.fallible]
     final: dict[int, int] = {}  # value -> where its expression is finally evaluated
     inline: set[int] = set()
     carried: dict[int, Value] = {}  # id of the step that writes the value first -> the value
@@ -162,8 +162,11 @@ def plan(code: NetworkCode, declarations: Declarations) -> Planned:
     def movable(value: Value, stop: int) -> bool:
         """Can ``value`` be evaluated at ``stop`` instead of where it stands?"""
         start = position[id(value)]
-        if value.fallible:  # nothing that acts or may fault may come first
-            return not any(start < at < stop for at in barriers)
+        if value.fallible:  # nothing that acts or may fault may come first, except what is computed from it
+            return not any(
+                start < position[id(op)] < stop and not (isinstance(op, Value) and _computed_from(op, value))
+                for op in barriers
+            )
         return undisturbed(value.reads, start, stop)
 
     def carrier(value: Value, found: list[Any]) -> Step | None:
@@ -234,6 +237,19 @@ def plan(code: NetworkCode, declarations: Declarations) -> Planned:
                 statements.append((op.element, ast.Assign(ast.Name(name), expr)))
     conditions = [resolve(Use(c.cond)) if c.cond is not None else None for c in code.controls]
     return Planned(statements, conditions)
+
+
+def _computed_from(op: Value, value: Value) -> bool:
+    """Does ``op``'s expression use ``value``, directly or through other values?"""
+    todo, seen = list(uses_in(op.expr)), set()
+    while todo:
+        part = todo.pop()
+        if part is value:
+            return True
+        if id(part) not in seen:
+            seen.add(id(part))
+            todo += uses_in(part.expr)
+    return False
 
 
 def _stored(op: Value, users: dict[int, list[Any]], moved: set[int]) -> bool:
