@@ -13,6 +13,7 @@ from pydantic import BaseModel, ConfigDict, Field
 
 from .diagnostics import Diagnostic
 from .project import Project
+from .xref import XrefList
 
 
 class ProjectSummary(BaseModel):
@@ -319,3 +320,4 @@ class ApiTypes(BaseModel):
     test_run_request: TestRunRequest
     test_open_request: TestOpenRequest
     test_check_request: TestCheckRequest
+    xref_list: XrefList

@@ -25,6 +25,7 @@ export interface ApiTypes {
   test_listing: TestListing;
   test_open_request: TestOpenRequest;
   test_run_request: TestRunRequest;
+  xref_list: XrefList;
 }
 /**
  * ``POST /api/projects/{name}/check``: every diagnostic of the saved project.
@@ -826,4 +827,67 @@ export interface TestRunRequest {
    * one test of that file by name; None: all of them
    */
   test?: string | null;
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "XrefList".
+ */
+export interface XrefList {
+  entries: XrefEntry[];
+}
+/**
+ * A variable: a global, or one POU's own.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "XrefEntry".
+ */
+export interface XrefEntry {
+  accesses: XrefAccess[];
+  address?: string | null;
+  comment?: string | null;
+  name: string;
+  /**
+   * The POU that declares it, None for a global.
+   */
+  pou: string | null;
+  type: string;
+  var_class: string;
+}
+/**
+ * One place a variable occurs: its declaration, a read, a write, or a call of an FB instance.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "XrefAccess".
+ */
+export interface XrefAccess {
+  column?: number | null;
+  /**
+   * LD/FBD: the element's id.
+   */
+  element?: string | null;
+  kind: "declared" | "read" | "write" | "call";
+  /**
+   * ST body line, or the declaration's line in its declarations text.
+   */
+  line?: number | null;
+  /**
+   * LD/FBD: the network's id.
+   */
+  network?: string | null;
+  /**
+   * LD/FBD: the network's number as the editor shows it.
+   */
+  network_number?: number | null;
+  /**
+   * LD/FBD: the element's operand text, e.g. 'RunTimer.Q'.
+   */
+  operand?: string | null;
+  /**
+   * What was accessed, e.g. 'RunTimer.Q' or 'arr[i]' (indices as '[]').
+   */
+  path: string;
+  /**
+   * The POU, None for the global declarations (globals.st).
+   */
+  pou: string | null;
 }
