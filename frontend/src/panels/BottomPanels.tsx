@@ -1,4 +1,5 @@
-// The panels under the editor: Diagnostics, Watch list, Online log, Breakpoints, Trace and Tests, one shown at a time.
+// The panels under the editor: Diagnostics, Watch list, Online log, Breakpoints, Trace, Tests and Cross references,
+// one shown at a time.
 import { useDebug } from "../debug/store";
 import type { Diagnostic } from "../generated/api";
 import { draggedOperand } from "../ld/editor/dragOperand";
@@ -11,6 +12,7 @@ import { DiagnosticsPanel } from "./DiagnosticsPanel";
 import { LogPanel } from "./LogPanel";
 import { panelsStore, usePanels, type PanelId } from "./store";
 import { WatchPanel } from "./WatchPanel";
+import { XrefPanel } from "../xref/XrefPanel";
 
 export interface BottomPanelsProps {
   onReveal(d: Diagnostic): void;
@@ -33,6 +35,7 @@ export function BottomPanels({ onReveal, pathOfOperand }: BottomPanelsProps) {
     { id: "breakpoints", label: `Breakpoints (${breakpoints})` },
     { id: "trace", label: "Trace" },
     { id: "tests", label: failed ? `Tests (${failed} failed)` : "Tests" },
+    { id: "xref", label: "Cross references" },
   ];
   const body = {
     diagnostics: <DiagnosticsPanel onReveal={onReveal} />,
@@ -41,6 +44,7 @@ export function BottomPanels({ onReveal, pathOfOperand }: BottomPanelsProps) {
     breakpoints: <BreakpointsPanel />,
     trace: <TracePanel />,
     tests: <TestsPanel />,
+    xref: <XrefPanel />,
   };
   // A variable dragged from the diagram and released over the panels joins the watch list.
   const drop = () => {

@@ -2,6 +2,7 @@
 // and END_* matching, folding, autocomplete (members after `x.`), backend diagnostics as lint
 // underlines, and online the values of variables inline. The text is controlled: every edit goes
 // to onChange, and a new `text` from outside (reload, draft restore) replaces the doc.
+import { referencesKeymap } from "../xref/stReferences";
 import { autocompletion, closeBrackets, closeBracketsKeymap, completionKeymap } from "@codemirror/autocomplete";
 import { defaultKeymap, history, historyKeymap, indentWithTab } from "@codemirror/commands";
 import {
@@ -96,6 +97,7 @@ export function StEditor({
             ...historyKeymap,
             ...foldKeymap,
             ...completionKeymap,
+            ...referencesKeymap,
             indentWithTab,
           ]),
           editable.current.of(EditorState.readOnly.of(readOnly !== null)),

@@ -28,6 +28,7 @@ import { OperandEditor } from "../../ld/editor/OperandEditor";
 import { clipboardActions, type LastClip } from "../../ld/editor/systemClipboard";
 import { OperandValuePrompt, type ValueRequest } from "../../ld/editor/ValuePrompt";
 import { onlineOperandItems } from "../../online/operandCommands";
+import { referencesItem } from "../../xref/store";
 import { canRedo, canUndo, record, redo, undo, type History } from "../../ld/history";
 import { arrange } from "../arrange";
 import { clipOf, parseClip, pasteClip, serializeClip } from "../clipboard";
@@ -441,7 +442,10 @@ export function FbdEditor({
             },
           ]),
     ];
-    openMenu(event, [onlineItems(operandOf(node)), edit, order, debugItems, clip]);
+    const operand = operandOf(node);
+    const named = operand ?? (kind === "block" ? (node as Block).instance?.trim() || null : null);
+    const references: MenuItem[] = named ? [referencesItem(named)] : [];
+    openMenu(event, [onlineItems(operand), edit, order, debugItems, references, clip]);
   };
 
   const pinMenu = (node: FbdNode, pin: string, side: "in" | "out", event: MouseEvent) => {
