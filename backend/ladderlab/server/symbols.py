@@ -9,10 +9,9 @@ from __future__ import annotations
 from fastapi import APIRouter
 
 from ..model import Project
-from ..model.api import SymbolInfo, SymbolTable
+from ..model.api import SymbolTable
+from ..simulation.document import symbol_info
 from ..st.checker import check_project as check_st
-from ..st.printer import print_initializer, print_type
-from ..st.symbols import Symbol
 from ..storage import NotFoundError
 from .context import WorkspaceDep
 from .errors import responses
@@ -21,20 +20,6 @@ router = APIRouter(prefix="/api/projects", tags=["symbols"])
 
 #: Diagnostic ``file`` values of the texts every POU's symbols depend on.
 _SHARED_TEXTS = {"types", "globals"}
-
-
-def symbol_info(symbol: Symbol) -> SymbolInfo:
-    """One symbol with its type and initial value as ST text (as declared, not the resolved internals)."""
-    return SymbolInfo(
-        name=symbol.name,
-        var_class=symbol.var_class,
-        type=print_type(symbol.type_spec),
-        initial=print_initializer(symbol.init) if symbol.init is not None else None,
-        address=symbol.address,
-        comment=symbol.comment,
-        retain=symbol.retain,
-        constant=symbol.constant,
-    )
 
 
 def symbol_table(project: Project, pou_name: str) -> SymbolTable:
