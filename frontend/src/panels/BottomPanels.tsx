@@ -44,7 +44,7 @@ export function BottomPanels({ onReveal, pathOfOperand }: BottomPanelsProps) {
     breakpoints: <BreakpointsPanel />,
     trace: <TracePanel />,
     tests: <TestsPanel />,
-    xref: <XrefPanel />,
+    xref: <XrefPanel onReveal={onReveal} />,
   };
   // A variable dragged from the diagram and released over the panels joins the watch list.
   const drop = () => {

@@ -3,16 +3,15 @@
 // there (the same reveal as a diagnostic). "Find all references" in the LD, FBD and ST editors opens
 // it on one variable.
 import { useEffect, useState } from "react";
-import type { XrefEntry } from "../generated/api";
-import { panelsStore } from "../panels/store";
+import type { Diagnostic, XrefEntry } from "../generated/api";
 import { useWorkspace } from "../project/store";
-import { entryKey, filterEntries, focusOfAccess, placeOf } from "./model";
+import { entryKey, filterEntries, placeOf, placeToReveal } from "./model";
 import { useXref, xrefStore } from "./store";
 import "./xref.css";
 
 const KIND_LABEL = { declared: "declared", read: "read", write: "write", call: "call" } as const;
 
-export function XrefPanel() {
+export function XrefPanel({ onReveal }: { onReveal(place: Diagnostic): void }) {
   const project = useWorkspace((s) => s.name);
   const revision = useWorkspace((s) => s.revision);
   const { entries, loading, error, filter, focused } = useXref((s) => s);
@@ -56,7 +55,12 @@ export function XrefPanel() {
         </thead>
         <tbody>
           {shown.map((entry) => (
-            <EntryRows key={entryKey(entry)} entry={entry} open={focused === entryKey(entry) || shown.length <= 3} />
+            <EntryRows
+              key={entryKey(entry)}
+              entry={entry}
+              onReveal={onReveal}
+              open={focused === entryKey(entry) || shown.length <= 3}
+            />
           ))}
         </tbody>
       </table>
@@ -64,7 +68,15 @@ export function XrefPanel() {
   );
 }
 
-function EntryRows({ entry, open: initiallyOpen }: { entry: XrefEntry; open: boolean }) {
+function EntryRows({
+  entry,
+  open: initiallyOpen,
+  onReveal,
+}: {
+  entry: XrefEntry;
+  open: boolean;
+  onReveal(place: Diagnostic): void;
+}) {
   const [open, setOpen] = useState(initiallyOpen);
   const [wasOpen, setWasOpen] = useState(initiallyOpen);
   if (wasOpen !== initiallyOpen) {
@@ -76,7 +88,13 @@ function EntryRows({ entry, open: initiallyOpen }: { entry: XrefEntry; open: boo
     <>
       <tr className="xref-entry" data-entry={entryKey(entry)}>
         <td>
-          <button type="button" className="xref-toggle" aria-expanded={open} onClick={() => setOpen(!open)}>
+          <button
+            type="button"
+            className="xref-toggle"
+            aria-label={`${entry.name} (${entry.pou ?? "global"})`}
+            aria-expanded={open}
+            onClick={() => setOpen(!open)}
+          >
             {open ? "▾" : "▸"} {entry.name}
           </button>
         </td>
@@ -89,7 +107,7 @@ function EntryRows({ entry, open: initiallyOpen }: { entry: XrefEntry; open: boo
       </tr>
       {open
         ? entry.accesses.map((access, i) => {
-            const target = focusOfAccess(access);
+            const target = placeToReveal(access);
             return (
               <tr key={i} className={`xref-access xref-${access.kind}`} aria-label={`${label} ${access.kind}`}>
                 <td />
@@ -102,7 +120,7 @@ function EntryRows({ entry, open: initiallyOpen }: { entry: XrefEntry; open: boo
                     type="button"
                     className="xref-place"
                     disabled={!target}
-                    onClick={() => target && panelsStore.getState().reveal(target)}
+                    onClick={() => target && onReveal(target)}
                   >
                     {placeOf(access)}
                   </button>

@@ -1,6 +1,6 @@
 import { describe, expect, it } from "vitest";
 import type { XrefEntry } from "../generated/api";
-import { entryOf, filterEntries, focusOfAccess, placeOf, rootOf } from "./model";
+import { entryOf, filterEntries, placeOf, placeToReveal, rootOf } from "./model";
 
 const entry = (name: string, pou: string | null, extra: Partial<XrefEntry> = {}): XrefEntry => ({
   name,
@@ -52,12 +52,25 @@ describe("cross references", () => {
       path: "StartCount",
     };
     expect(placeOf(diagram)).toBe("Main, network 3 (StartCounter)");
-    expect(focusOfAccess(diagram)).toEqual({ pou: "Main", network: "n3", element: "ctu", line: null, part: null });
+    expect(placeToReveal(diagram)).toMatchObject({
+      pou: "Main",
+      network: "n3",
+      element: "ctu",
+      line: null,
+      file: null,
+    });
     const text = { kind: "read" as const, pou: "Blinker", line: 8, path: "Out" };
     expect(placeOf(text)).toBe("Blinker, line 8");
-    expect(focusOfAccess(text)).toEqual({ pou: "Blinker", network: null, element: null, line: 8, part: "body" });
+    expect(placeToReveal(text)).toMatchObject({
+      pou: "Blinker",
+      network: null,
+      element: null,
+      line: 8,
+      file: "Blinker/body",
+    });
     const declared = { kind: "declared" as const, pou: null, line: 2, path: "Start" };
     expect(placeOf(declared)).toBe("globals, declarations line 2");
-    expect(focusOfAccess(declared)).toBeNull();
+    expect(placeToReveal(declared)).toBeNull();
+    expect(placeToReveal({ ...declared, pou: "Main" })).toMatchObject({ line: 2, file: "Main/declarations" });
   });
 });

@@ -2,7 +2,7 @@
 // first, else the global), filtering, and where an access is, in words. The list itself comes from the
 // backend (GET /api/projects/{name}/xref), built from the checker and the lowering: nothing here
 // decides what is read or written.
-import type { XrefAccess, XrefEntry } from "../generated/api";
+import type { Diagnostic, XrefAccess, XrefEntry } from "../generated/api";
 
 /** The variable an operand text starts from: `RunTimer` of `RunTimer.Q`, `arr` of `arr[i]`, `%IX0.0`. */
 export function rootOf(operand: string): string | null {
@@ -46,22 +46,21 @@ export function placeOf(a: XrefAccess): string {
   return where;
 }
 
-/** What the editors reveal for an access (null: the global declarations, which no POU editor shows). */
-export function focusOfAccess(a: XrefAccess): {
-  pou: string;
-  network: string | null;
-  element: string | null;
-  line: number | null;
-  part: "declarations" | "body" | null;
-} | null {
+/**
+ * The place of an access as the shell's reveal takes it (the shape of a diagnostic: POU, network, element,
+ * line and the part as its file), null for the global declarations, which no POU editor shows.
+ */
+export function placeToReveal(a: XrefAccess): Diagnostic | null {
   if (!a.pou) return null;
-  if (a.kind === "declared")
-    return { pou: a.pou, network: null, element: null, line: a.line ?? null, part: "declarations" };
+  const part = a.kind === "declared" ? "declarations" : a.line != null ? "body" : null;
   return {
+    code: "XREF",
+    message: `${a.kind} ${a.path}`,
+    severity: "info",
     pou: a.pou,
     network: a.network ?? null,
     element: a.element ?? null,
     line: a.line ?? null,
-    part: a.line != null ? "body" : null,
+    file: part ? `${a.pou}/${part}` : null,
   };
 }

@@ -69,16 +69,19 @@ export interface NetworkCanvasProps {
   onNodeClick(network: string, node: FbdNode, event: MouseEvent): void;
   /** Told when the network comes near the viewport or leaves it (only those are online and get order badges). */
   onNear(network: string, near: boolean): void;
+  /** Drawn for a printed document (src/print): always mounted, every node shown, no controls or grid. */
+  print?: boolean;
 }
 
-/** The canvas height that shows every node of the network at zoom 1. */
-function canvasHeight(
+/** The canvas height that shows every node of the network at zoom 1 (at most MAX_HEIGHT on screen). */
+export function canvasHeight(
   network: FbdNetwork,
   fallback: ReadonlyMap<string, Position>,
   height: (node: FbdNode) => number,
+  limit = MAX_HEIGHT,
 ): number {
   const bottom = Math.max(0, ...nodesOf(network).map((n) => (n.pos ?? fallback.get(n.id) ?? { y: 0 }).y + height(n)));
-  return Math.min(MAX_HEIGHT, Math.max(MIN_HEIGHT, bottom + 50));
+  return Math.min(limit, Math.max(MIN_HEIGHT, bottom + 50));
 }
 
 function wireClass(value: unknown): string {
@@ -252,9 +255,9 @@ function Canvas(props: NetworkCanvasProps) {
         maxZoom={2}
         proOptions={{ hideAttribution: true }}
       >
-        <Background gap={20} size={1} />
+        {props.print ? null : <Background gap={20} size={1} />}
         <ConnectionHint refusal={(c) => props.refusal(network.id, c)} />
-        <Controls showInteractive={false} position="bottom-right" />
+        {props.print ? null : <Controls showInteractive={false} position="bottom-right" />}
       </ReactFlow>
     </div>
   );
@@ -277,11 +280,12 @@ function useNearViewport(): [React.RefObject<HTMLDivElement | null>, boolean] {
 
 export function NetworkCanvas(props: NetworkCanvasProps) {
   const { network, index } = props;
-  const [ref, near] = useNearViewport();
+  const [ref, nearViewport] = useNearViewport();
+  const near = nearViewport || props.print === true;
   const { onNear } = props;
   useEffect(() => onNear(network.id, near), [onNear, network.id, near]);
   useEffect(() => () => onNear(network.id, false), [onNear, network.id]);
-  const height = canvasHeight(network, props.fallback, props.height);
+  const height = canvasHeight(network, props.fallback, props.height, props.print ? Infinity : MAX_HEIGHT);
   const classes = [
     "fbd-network",
     props.networkSelected ? "fbd-network-selected" : "",

@@ -1,0 +1,106 @@
+// An FBD body as the editor draws it: the editor's own network canvases (src/fbd/editor), read-only,
+// every node shown, each network a block that a page break never cuts.
+import { useCallback, useMemo } from "react";
+import "@xyflow/react/dist/style.css";
+import type { LibraryEntry, SymbolInfo } from "../generated/api";
+import "../ld/ld.css";
+import { arrange } from "../fbd/arrange";
+import { FbdEditorContext, type FbdEditorApi } from "../fbd/editor/context";
+import { nodeHeight } from "../fbd/editor/FbdNodeView";
+import { NetworkCanvas } from "../fbd/editor/NetworkCanvas";
+import "../fbd/editor/fbd.css";
+import {
+  kindOf,
+  networksOf,
+  nodePins,
+  nodesOf,
+  type Block,
+  type FbdBody,
+  type FbdNetwork,
+  type FbdNode,
+  type Position,
+} from "../fbd/model";
+
+const NONE: never[] = [];
+const nothing = () => {};
+
+export function FbdPrint({
+  body,
+  library,
+  symbols,
+}: {
+  body: FbdBody;
+  library: (call: string) => LibraryEntry | undefined;
+  symbols: readonly SymbolInfo[];
+}) {
+  const networks = networksOf(body);
+  const heightOf = useCallback(
+    (network: FbdNetwork) => (node: FbdNode) => {
+      const pins = nodePins(node, network, library, symbols);
+      return nodeHeight(node, Math.max(pins.inputs.length, pins.outputs.length));
+    },
+    [library, symbols],
+  );
+  const fallbacks = useMemo(
+    () =>
+      new Map(
+        networks.map((n) => [
+          n.id,
+          nodesOf(n).every((node) => node.pos) ? new Map<string, Position>() : arrange(n, heightOf(n)),
+        ]),
+      ),
+    [networks, heightOf],
+  );
+  const api: FbdEditorApi = {
+    readOnly: true,
+    symbols,
+    editing: null,
+    view: (network, node) => ({
+      pins: nodePins(node, network, library, symbols),
+      diagnostics: NONE,
+      breakpoint: false,
+      halted: false,
+      fb: kindOf(node) === "block" && library((node as Block).call)?.kind === "function_block",
+    }),
+    startEdit: nothing,
+    commitEdit: nothing,
+    cancelEdit: nothing,
+    pinMenu: nothing,
+    valueDoubleClick: nothing,
+  };
+  return (
+    <FbdEditorContext.Provider value={api}>
+      <div className="print-diagram print-fbd ld-palette">
+        {networks.map((network, index) => (
+          <div key={network.id} className="print-network" data-network={network.id}>
+            <NetworkCanvas
+              network={network}
+              index={index}
+              readOnly
+              print
+              selected={null}
+              networkSelected={false}
+              problems={NONE}
+              breakpoint={false}
+              halted={false}
+              fallback={fallbacks.get(network.id)!}
+              height={heightOf(network)}
+              onSelectChanges={nothing}
+              onSelectNetwork={nothing}
+              onToggleBreakpoint={nothing}
+              onEditText={nothing}
+              onMove={nothing}
+              onConnect={nothing}
+              refusal={() => "read-only"}
+              onRefused={nothing}
+              onDropNew={nothing}
+              onNodeContextMenu={nothing}
+              onNodeClick={nothing}
+              onNear={nothing}
+            />
+          </div>
+        ))}
+      </div>
+    </FbdEditorContext.Provider>
+  );
+}
