@@ -22,9 +22,11 @@ import { nodesOf, wireKey, wiresOf, type FbdNetwork, type FbdNode, type Position
 import { probeOf, type FbdOnlineView } from "../online";
 import { useFbdEditor } from "./context";
 import { FbdNodeView, type FbdFlowNode } from "./FbdNodeView";
+import { OrthogonalEdge } from "./OrthogonalEdge";
 
 export const DRAG_FORMAT = "application/x-ladderlab-fbd";
 const NODE_TYPES = { fbd: FbdNodeView };
+const EDGE_TYPES = { orthogonal: OrthogonalEdge };
 const MIN_HEIGHT = 170;
 /** Room above and left of the diagram, so badges above a node at y = 0 (order, breakpoint) stay in view. */
 const ORIGIN = { x: 12, y: 16, zoom: 1 };
@@ -153,6 +155,7 @@ function Canvas(props: NetworkCanvasProps) {
           : undefined;
         return {
           id,
+          type: "orthogonal",
           source: w.from.node,
           sourceHandle: `out:${w.from.pin}`,
           target: w.to.node,
@@ -215,6 +218,7 @@ function Canvas(props: NetworkCanvasProps) {
         nodes={nodes}
         edges={edges}
         nodeTypes={NODE_TYPES}
+        edgeTypes={EDGE_TYPES}
         onNodesChange={onNodesChange}
         onEdgesChange={onEdgesChange}
         onNodeDragStop={(_e, _node, dragged) =>
