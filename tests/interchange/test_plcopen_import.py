@@ -312,7 +312,8 @@ def test_variables_in_a_rung_become_contacts_coils_or_a_move():
     ]
 
 
-def test_connected_parts_are_networks_top_to_bottom_with_labels_and_comments():
+def test_connected_parts_are_networks_top_to_bottom_with_labels_and_comment_networks():
+    """Issue 28: a free comment box is a comment network of its own where it stands, never merged into a rung."""
     data = ld_project(
         rail()
         + '<comment localId="9" height="20" width="100">'
@@ -330,9 +331,10 @@ def test_connected_parts_are_networks_top_to_bottom_with_labels_and_comments():
     networks = result.project.pous[0].body.networks
     assert [(n.id, n.label, n.comment, shape(n.elements)) for n in networks] == [
         ("network1", None, None, [("contact", "a", "no"), ("coil", "q1", "normal")]),
-        ("network2", "Again", "second rung", [("contact", "b", "no"), ("coil", "q2", "normal")]),
+        ("network2", None, "second rung", []),
+        ("network3", "Again", None, [("contact", "b", "no"), ("coil", "q2", "normal")]),
     ]
-    assert [[e.id for e in n.elements] for n in networks] == [["contact1", "coil1"], ["contact2", "coil2"]]
+    assert [[e.id for e in n.elements] for n in networks] == [["contact1", "coil1"], [], ["contact2", "coil2"]]
 
 
 def test_connector_and_continuation_join_a_rung():
