@@ -88,7 +88,7 @@ export interface FbdEditorProps {
 }
 
 type Selection = NetworkSelection & { network: string };
-type PaletteKind = "input" | "output" | "block" | "jump" | "return" | "connector" | "continuation";
+type PaletteKind = "input" | "output" | "block" | "jump" | "return" | "connector" | "continuation" | "comment";
 
 const PALETTE: { kind: PaletteKind; label: string }[] = [
   { kind: "input", label: "Input" },
@@ -98,6 +98,7 @@ const PALETTE: { kind: PaletteKind; label: string }[] = [
   { kind: "return", label: "Return" },
   { kind: "connector", label: "Connector" },
   { kind: "continuation", label: "Continuation" },
+  { kind: "comment", label: "Comment" },
 ];
 const COLUMN_OF: Record<PaletteKind, number> = {
   input: 20,
@@ -107,8 +108,9 @@ const COLUMN_OF: Record<PaletteKind, number> = {
   jump: 480,
   return: 480,
   connector: 480,
+  comment: 20,
 };
-const WITH_TEXT = new Set(["input", "output", "jump", "connector", "continuation"]);
+const WITH_TEXT = new Set(["input", "output", "jump", "connector", "continuation", "comment"]);
 const OUTPUT_MODES: { mode: OutputMode; label: string }[] = [
   { mode: "normal", label: "Output: normal" },
   { mode: "negated", label: "Output: negated" },

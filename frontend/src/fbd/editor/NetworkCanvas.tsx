@@ -8,6 +8,7 @@ import {
   ReactFlow,
   ReactFlowProvider,
   useConnection,
+  useNodesInitialized,
   useReactFlow,
   ViewportPortal,
   type Connection,
@@ -75,6 +76,24 @@ export interface NetworkCanvasProps {
   print?: boolean;
 }
 
+/** Print: once the nodes are measured, zoom so the whole network fits the width, and say the height it needs. */
+function usePrintFit(
+  print: boolean | undefined,
+  host: React.RefObject<HTMLDivElement | null>,
+  fit: (h: number) => void,
+) {
+  const flow = useReactFlow();
+  const initialized = useNodesInitialized();
+  useEffect(() => {
+    if (!print || !initialized) return;
+    const bounds = flow.getNodesBounds(flow.getNodes());
+    const width = host.current?.clientWidth || 1000;
+    const zoom = Math.min(1, width / (bounds.x + bounds.width + 2 * ORIGIN.x));
+    void flow.setViewport({ x: ORIGIN.x * zoom, y: ORIGIN.y * zoom, zoom });
+    fit(Math.ceil((bounds.y + bounds.height + 2 * ORIGIN.y) * zoom));
+  }, [print, initialized, flow, host, fit]);
+}
+
 /** The canvas height that shows every node of the network at zoom 1 (at most MAX_HEIGHT on screen). */
 export function canvasHeight(
   network: FbdNetwork,
@@ -120,9 +139,11 @@ function ConnectionHint({ refusal }: { refusal(c: Connection): string | null }) 
   );
 }
 
-function Canvas(props: NetworkCanvasProps) {
+function Canvas(props: NetworkCanvasProps & { onPrintHeight(height: number): void }) {
   const { network, readOnly, selected, online, fallback } = props;
   const flow = useReactFlow();
+  const host = useRef<HTMLDivElement>(null);
+  usePrintFit(props.print, host, props.onPrintHeight);
   const built = useMemo(
     (): FbdFlowNode[] =>
       nodesOf(network).map((node) => ({
@@ -209,6 +230,7 @@ function Canvas(props: NetworkCanvasProps) {
   return (
     <div
       className="fbd-canvas"
+      ref={host}
       onDragOver={(e) => {
         if (e.dataTransfer.types.includes(DRAG_FORMAT)) e.preventDefault();
       }}
@@ -289,7 +311,9 @@ export function NetworkCanvas(props: NetworkCanvasProps) {
   const { onNear } = props;
   useEffect(() => onNear(network.id, near), [onNear, network.id, near]);
   useEffect(() => () => onNear(network.id, false), [onNear, network.id]);
-  const height = canvasHeight(network, props.fallback, props.height, props.print ? Infinity : MAX_HEIGHT);
+  const [printHeight, setPrintHeight] = useState<number | null>(null);
+  const height =
+    printHeight ?? canvasHeight(network, props.fallback, props.height, props.print ? Infinity : MAX_HEIGHT);
   const classes = [
     "fbd-network",
     props.networkSelected ? "fbd-network-selected" : "",
@@ -325,7 +349,7 @@ export function NetworkCanvas(props: NetworkCanvasProps) {
       <div style={{ height }}>
         {near ? (
           <ReactFlowProvider>
-            <Canvas {...props} />
+            <Canvas {...props} onPrintHeight={setPrintHeight} />
           </ReactFlowProvider>
         ) : (
           <div className="fbd-canvas-placeholder">{nodesOf(network).length} nodes</div>
