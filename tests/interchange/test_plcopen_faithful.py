@@ -1,7 +1,8 @@
-"""Free comment boxes of OpenPLC and Beremiz drawings (issue 28): in FBD each becomes a comment node where it was
-and as large as it was, in LD a comment network of its own where it stands; none is merged into a network
-comment, and they come back the same through LadderLab's PLCopen export. Expected texts, places and sizes are
-those in the fixtures' XML (../shared/external), read by hand."""
+"""Imports that look like their originals (issue 28). Free comment boxes of OpenPLC and Beremiz drawings: in FBD
+each becomes a comment node where it was and as large as it was, in LD a comment network of its own where it
+stands; none is merged into a network comment, and they come back the same through LadderLab's PLCopen export.
+LD rungs keep the original's left-to-right order. Expected texts, places, sizes and orders are those in the
+fixtures' XML (../shared/external), read by hand."""
 
 from __future__ import annotations
 
@@ -119,3 +120,26 @@ def _rung(local: int, contact: str, coil: str, y: int) -> str:
         f'<connectionPointIn><relPosition x="0" y="10"/><connection refLocalId="{local}"/></connectionPointIn>'
         f'<connectionPointOut><relPosition x="20" y="10"/></connectionPointOut><variable>{coil}</variable></coil>'
     )
+
+
+def test_openplc_ld_rungs_read_left_to_right_as_drawn():
+    """Blink draws contact (x 180) -> TON (350) -> TOF (640) -> coil (820) on an EN chain from the left rail;
+    Arduino_7_Segments the same and then contact -> CTU -> coil."""
+    for parts, rungs in (
+        (BLINK, [["contact blink_led", "box TON", "box TOF", "coil blink_led"]]),
+        (
+            ("openplc-examples", "examples", "Arduino_7_Segments", "plc.xml"),
+            [
+                ["contact square_wave", "box TON", "box TOF", "coil square_wave"],
+                ["contact square_wave", "box CTU", "coil ctu_reset"],
+            ],
+        ),
+    ):
+        project = imported(*parts)
+        networks = next(p for p in project.pous if p.language == "ld").body.networks
+        drawn = [
+            [f"{e.type} {getattr(e, 'var', None) or getattr(e, 'call', '')}" for e in n.elements]
+            for n in networks
+            if n.elements
+        ]
+        assert drawn == rungs
