@@ -92,6 +92,29 @@ class SymbolTable(BaseModel):
     )
 
 
+class VariableNode(BaseModel):
+    """One variable of the instance tree (ON-10): a POU's variable, an FB's pin or variable, a field, an element."""
+
+    name: str = Field(description="As declared ('RunTimer', 'ET'), or an array element's index ('[3]').")
+    path: str = Field(description="The path that reads, writes and forces it: 'MAIN.RunTimer.ET', 'MAIN.arr[3]'.")
+    type: str = Field(description="Its type as IEC text: 'TIME', 'TON', 'ARRAY [1..3] OF INT'.")
+    var_class: str | None = Field(
+        default=None, description="VAR, VAR_INPUT, VAR_OUTPUT... of a variable; null for fields and array elements."
+    )
+    expandable: bool = Field(description="It has members: an FB instance, a structure or an array.")
+
+
+class VariableChildren(BaseModel):
+    """``GET /api/projects/{name}/variables?path=``: what one variable of the saved project holds.
+
+    No path: the programs (each its own instance) and the global variables."""
+
+    path: str
+    type: str | None = Field(description="The variable's type as IEC text; null for the top (no path).")
+    children: list[VariableNode]
+    more: int = Field(default=0, description="Array elements left out after the first ones (too many to list).")
+
+
 class Pin(BaseModel):
     """A parameter of a library function or function block."""
 
@@ -321,6 +344,7 @@ class ApiTypes(BaseModel):
     save_result: SaveResult
     check_report: CheckReport
     symbol_table: SymbolTable
+    variable_children: VariableChildren
     library_entry: LibraryEntry
     error_detail: ErrorDetail
     conflict_detail: ConflictDetail

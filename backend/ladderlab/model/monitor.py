@@ -127,10 +127,14 @@ class Continue(_Request):
 
 
 class Step(_Request):
-    """Run to the next network (LD/FBD), statement (ST; networks in diagrams) or the end of the scan."""
+    """Run to the next network (LD/FBD), statement (ST; networks in diagrams) or the end of the scan.
+
+    ``statement`` steps into calls; ``over`` goes to the next statement or network of the halted POU
+    (or of its caller once it returns), passing over the calls it makes; ``out`` runs until the caller
+    of the halted POU goes on. A breakpoint on the way halts first."""
 
     type: Literal["step"]
-    granularity: Literal["network", "statement", "cycle"] = "statement"
+    granularity: Literal["network", "statement", "over", "out", "cycle"] = "statement"
 
 
 class Run(_Request):

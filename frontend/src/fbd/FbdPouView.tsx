@@ -24,11 +24,11 @@ export function FbdPouView({
 }) {
   const name = pou.name;
   const setHistory = useWorkspace((s) => s.setFbdHistory);
-  const { library, symbols, diagnostics, focus, declare } = useDiagramPou(name);
+  const { library, symbols, symbolsLoaded, diagnostics, focus, declare } = useDiagramPou(name);
   const byName = useMemo(() => new Map(library.map((e) => [e.name.toUpperCase(), e])), [library]);
   const lookup = useCallback((call: string) => byName.get(call.toUpperCase()), [byName]);
   const body = history.present;
-  const live = useFbdOnline(pou, body, lookup, symbols);
+  const live = useFbdOnline(pou, body, lookup, symbolsLoaded ? symbols : null);
 
   const breakpoints = useDebug((s) => s.breakpoints);
   const at = useOnline((s) => (s.monitor.state === "halted" ? s.monitor.at : null));

@@ -26,6 +26,7 @@ export interface ApiTypes {
   test_listing: TestListing;
   test_open_request: TestOpenRequest;
   test_run_request: TestRunRequest;
+  variable_children: VariableChildren;
   xref_list: XrefList;
 }
 /**
@@ -939,4 +940,52 @@ export interface TestRunRequest {
    * one test of that file by name; None: all of them
    */
   test?: string | null;
+}
+/**
+ * ``GET /api/projects/{name}/variables?path=``: what one variable of the saved project holds.
+ *
+ * No path: the programs (each its own instance) and the global variables.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "VariableChildren".
+ */
+export interface VariableChildren {
+  children: VariableNode[];
+  /**
+   * Array elements left out after the first ones (too many to list).
+   */
+  more?: number;
+  path: string;
+  /**
+   * The variable's type as IEC text; null for the top (no path).
+   */
+  type: string | null;
+}
+/**
+ * One variable of the instance tree (ON-10): a POU's variable, an FB's pin or variable, a field, an element.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "VariableNode".
+ */
+export interface VariableNode {
+  /**
+   * It has members: an FB instance, a structure or an array.
+   */
+  expandable: boolean;
+  /**
+   * As declared ('RunTimer', 'ET'), or an array element's index ('[3]').
+   */
+  name: string;
+  /**
+   * The path that reads, writes and forces it: 'MAIN.RunTimer.ET', 'MAIN.arr[3]'.
+   */
+  path: string;
+  /**
+   * Its type as IEC text: 'TIME', 'TON', 'ARRAY [1..3] OF INT'.
+   */
+  type: string;
+  /**
+   * VAR, VAR_INPUT, VAR_OUTPUT... of a variable; null for fields and array elements.
+   */
+  var_class?: string | null;
 }

@@ -13,6 +13,18 @@ import { LogPanel } from "./LogPanel";
 import { panelsStore, usePanels, type PanelId } from "./store";
 import { WatchPanel } from "./WatchPanel";
 import { XrefPanel } from "../xref/XrefPanel";
+import { ViewBoundary } from "../project/ViewBoundary";
+
+/** Each panel in the user's words, for the message when it fails. */
+const PANEL_NAMES: Record<PanelId, string> = {
+  diagnostics: "diagnostics panel",
+  watch: "watch list",
+  log: "online log",
+  breakpoints: "breakpoints panel",
+  trace: "trace panel",
+  tests: "tests panel",
+  xref: "cross references panel",
+};
 
 export interface BottomPanelsProps {
   onReveal(d: Diagnostic): void;
@@ -65,7 +77,9 @@ export function BottomPanels({ onReveal, pathOfOperand }: BottomPanelsProps) {
         ))}
       </div>
       <div className="panel-body" role="tabpanel">
-        {body[panel]}
+        <ViewBoundary key={panel} name={`The ${PANEL_NAMES[panel]}`}>
+          {body[panel]}
+        </ViewBoundary>
       </div>
     </section>
   );

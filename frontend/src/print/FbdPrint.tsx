@@ -67,6 +67,7 @@ export function FbdPrint({
     cancelEdit: nothing,
     pinMenu: nothing,
     valueDoubleClick: nothing,
+    pinDoubleClick: nothing,
   };
   return (
     <FbdEditorContext.Provider value={api}>

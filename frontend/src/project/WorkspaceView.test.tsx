@@ -177,9 +177,10 @@ describe("app shell", () => {
     const help = screen.getByRole("dialog", { name: "Keyboard shortcuts" }).textContent;
     for (const text of [
       "F9Toggle a breakpoint",
-      "F5 (halted)Continue",
-      "F10Step to the next network",
-      "F11Step to the next statement",
+      "F5Run; continue a halted scan",
+      "F10Step over",
+      "F11Step into",
+      "Shift+F11Step out",
     ])
       expect(help).toContain(text);
     debugStore.getState().open(null);

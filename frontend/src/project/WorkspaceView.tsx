@@ -10,7 +10,7 @@ import { LdEditor } from "../ld/editor/LdEditor";
 import type { History } from "../ld/history";
 import { operandPath } from "../online/ldBinding";
 import { onlineStore, useOnline } from "../online/store";
-import { SIMULATION_KEYS, SimulationBar } from "../online/SimulationBar";
+import { SimulationBar } from "../online/SimulationBar";
 import { instanceOf, useLdOnline } from "../online/useLdOnline";
 import { BottomPanels } from "../panels/BottomPanels";
 import { focusOf, panelsStore, usePanels } from "../panels/store";
@@ -30,10 +30,20 @@ import { StEditor } from "../st/StEditor";
 import { StOnlineBar } from "../st/StOnlineBar";
 import { useStAssist } from "../st/useStAssist";
 import { useStOnline } from "../st/useStOnline";
-import { DEBUG_KEYS, DebugBar } from "../debug/DebugBar";
+import { DebugBar } from "../debug/DebugBar";
 import { useLdDebugging } from "../debug/ldDebugging";
 import { revealPlace } from "../debug/reveal";
 import { debugStore, useDebug } from "../debug/store";
+import { ViewBoundary } from "./ViewBoundary";
+import { useAppKeys } from "./useAppKeys";
+import { ShortcutHelp } from "../keys/ShortcutHelp";
+import { keysOf } from "../keys/keymap";
+import { VariablesView } from "./VariablesView";
+import { keepSession, restoreSession, type SessionStores } from "./session";
+import { traceStore } from "../trace/store";
+
+/** The stores a project's session (project/session.ts) is kept from. */
+const SESSION_STORES: SessionStores = { workspace: workspaceStore, online: onlineStore, trace: traceStore };
 
 const KINDS: { kind: Pou["kind"]; title: string }[] = [
   { kind: "program", title: "Programs" },
@@ -297,8 +307,6 @@ function Tabs() {
 }
 
 const NO_DIAGNOSTICS: Diagnostic[] = [];
-/** The app's keys in the editor's shortcut help. */
-const APP_KEYS = [...SIMULATION_KEYS, ...DEBUG_KEYS];
 
 /** A POU by an IEC name in any case (the simulation reports halts with the compiled spelling). */
 const pouNamed = (project: Project | null, name: string) =>
@@ -351,8 +359,8 @@ function OnlineActions({ pou }: { pou: Pou }) {
 function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
   const name = pou.name;
   const setLdHistory = useWorkspace((s) => s.setLdHistory);
-  const { library, symbols, diagnostics, focus, declare } = useDiagramPou(name);
-  const live = useLdOnline(pou, history.present, symbols);
+  const { library, symbols, symbolsLoaded, diagnostics, focus, declare } = useDiagramPou(name);
+  const live = useLdOnline(pou, history.present, symbolsLoaded ? symbols : null, library);
   const stepping = useLdDebugging(name, history.present);
   const covered = useTests((s) => coverageOf(s.coverage, name));
   const debugging = useMemo(
@@ -374,7 +382,6 @@ function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
       onlineActions={live.actions}
       onVisibleChange={live.onVisibleChange}
       focus={focus}
-      extraShortcuts={APP_KEYS}
       debugging={debugging}
     />
   );
@@ -485,7 +492,7 @@ function TestFileView({ path }: { path: string }) {
   );
 }
 
-type PouMode = "body" | "declarations" | "st";
+type PouMode = "body" | "declarations" | "variables" | "st";
 
 /** Declarations of one POU with the types to offer and the problems of its declaration text. */
 function PouDeclarations({
@@ -542,14 +549,17 @@ function PouView({ name }: { name: string }) {
   const focus = usePanels((s) => (s.focus?.pou.toUpperCase() === name.toUpperCase() ? s.focus : null));
   const [mode, setMode] = useState<PouMode>("body");
   const phase = useOnline((s) => s.phase);
-  // A diagnostic clicked for this POU shows the part it is in.
-  useEffect(() => {
+  // A diagnostic clicked for this POU shows the part it is in (as the request arrives, while rendering).
+  const [focusSeen, setFocusSeen] = useState(focus);
+  if (focus !== focusSeen) {
+    setFocusSeen(focus);
     if (focus) setMode(focus.part === "declarations" ? "declarations" : "body");
-  }, [focus]);
+  }
   if (!pou || !project) return <p className="placeholder">{name} is no longer in this project.</p>;
   const modes: { id: PouMode; label: string }[] = [
     { id: "body", label: pou.language === "st" ? "Body" : "Diagram" },
     { id: "declarations", label: "Declarations" },
+    { id: "variables", label: "Variables" },
     ...(pou.language !== "st" ? [{ id: "st" as const, label: "View as ST" }] : []),
   ];
   let content;
@@ -562,6 +572,8 @@ function PouView({ name }: { name: string }) {
         focus={focus?.part === "declarations" && focus.line != null ? { line: focus.line, seq: focus.seq } : null}
       />
     );
+  } else if (mode === "variables") {
+    content = <VariablesView pou={pou} instancePicker={<InstancePicker pou={pou.name} />} />;
   } else if (mode === "st") {
     content = (
       <StView
@@ -584,6 +596,14 @@ function PouView({ name }: { name: string }) {
       </p>
     );
   }
+  const area =
+    mode === "declarations"
+      ? `The declarations of ${name}`
+      : mode === "variables"
+        ? `The variables of ${name}`
+        : mode === "st"
+          ? `The ST view of ${name}`
+          : `The ${LANGUAGE[pou.language]} editor of ${name}`;
   return (
     <div className="pou-view">
       <div className="pou-modes" role="tablist" aria-label={`${name} views`}>
@@ -593,7 +613,9 @@ function PouView({ name }: { name: string }) {
           </button>
         ))}
       </div>
-      {content}
+      <ViewBoundary key={mode} name={area} onReload={() => workspaceStore.getState().refreshPou(name)}>
+        {content}
+      </ViewBoundary>
     </div>
   );
 }
@@ -644,6 +666,7 @@ export function WorkspaceView() {
   const project = useWorkspace((s) => s.project);
   const revision = useWorkspace((s) => s.revision);
   const panelsHeight = usePanels((s) => s.height);
+  const [help, setHelp] = useState(false);
 
   // A save changes the project's POU count, revision and time: the project list shows them.
   useEffect(() => {
@@ -685,16 +708,23 @@ export function WorkspaceView() {
     debugStore.getState().open(name);
   }, [name]);
 
+  // Once it has loaded, the project's session comes back (watch list, trace setup, tabs, its running
+  // simulation) and is kept from then on.
+  const ready = status === "ready";
   useEffect(() => {
-    const onKey = (e: KeyboardEvent) => {
-      if ((e.ctrlKey || e.metaKey) && e.key.toLowerCase() === "s") {
-        e.preventDefault();
-        void workspaceStore.getState().save();
-      }
+    if (!ready || !name) return;
+    let kept: (() => void) | null = null;
+    let current = true;
+    void restoreSession(name, SESSION_STORES, localStorage).finally(() => {
+      if (current) kept = keepSession(name, SESSION_STORES, localStorage);
+    });
+    return () => {
+      current = false;
+      kept?.();
     };
-    window.addEventListener("keydown", onKey);
-    return () => window.removeEventListener("keydown", onKey);
-  }, []);
+  }, [name, ready]);
+
+  useAppKeys();
 
   if (status === "loading" || status === "idle") return <p className="placeholder">Opening {name}…</p>;
   if (status === "error") {
@@ -719,7 +749,7 @@ export function WorkspaceView() {
           type="button"
           onClick={() => void save()}
           disabled={saving || changed.length === 0}
-          title="Save (Ctrl+S)"
+          title={`Save (${keysOf("app", "save")})`}
         >
           Save
         </button>
@@ -739,16 +769,28 @@ export function WorkspaceView() {
         {name ? (
           <ExportMenu project={name} pou={active && !isTestPath(active) ? active : null} unsaved={changed.length > 0} />
         ) : null}
+        <button type="button" aria-expanded={help} onClick={() => setHelp((h) => !h)}>
+          Keyboard shortcuts
+        </button>
+        {help ? <ShortcutHelp scopes={["app", "ld", "fbd", "st"]} onClose={() => setHelp(false)} /> : null}
         <ImportPlcopen
           onStored={() => void appStore.getState().loadProjects()}
           onOpen={(imported) => appStore.getState().selectProject(imported)}
         />
       </div>
-      <SimulationBar />
-      <ProjectTree />
+      <ViewBoundary name="The simulation toolbar" gridArea="sim">
+        <SimulationBar />
+      </ViewBoundary>
+      <ViewBoundary name="The project tree" gridArea="tree">
+        <ProjectTree />
+      </ViewBoundary>
       <div className="editor-area">
-        <DebugBar networksOf={networksOf} reveal={revealPlace} />
-        <Tabs />
+        <ViewBoundary name="The debugging bar">
+          <DebugBar networksOf={networksOf} reveal={revealPlace} />
+        </ViewBoundary>
+        <ViewBoundary name="The tabs">
+          <Tabs />
+        </ViewBoundary>
         {active ? (
           isTestPath(active) ? (
             <TestFileView key={active} path={active} />
@@ -759,8 +801,12 @@ export function WorkspaceView() {
           <p className="placeholder">Open a POU from the project tree.</p>
         )}
       </div>
-      <BottomPanels onReveal={reveal} pathOfOperand={pathOfOperand} />
-      <ConflictDialog />
+      <ViewBoundary name="The panels" gridArea="panels">
+        <BottomPanels onReveal={reveal} pathOfOperand={pathOfOperand} />
+      </ViewBoundary>
+      <ViewBoundary name="The save conflict dialog">
+        <ConflictDialog />
+      </ViewBoundary>
     </div>
   );
 }

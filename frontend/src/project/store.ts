@@ -29,6 +29,8 @@ export interface WorkspaceData {
   fbdHistories: Record<string, History<FbdBody>>;
   library: LibraryEntry[];
   symbols: Record<string, SymbolTable>;
+  /** POUs the saved project has (the server knows symbols only of those), upper case. */
+  savedPous: string[];
   saving: boolean;
   saveError: string | null;
   conflict: ConflictDetail | null;
@@ -56,6 +58,8 @@ export interface WorkspaceActions {
   /** Drops the working copy and loads the saved project. */
   reload(): Promise<void>;
   dismissConflict(): void;
+  /** Fetches a POU's symbols and the library again (a view of it is reloaded after a failure). */
+  refreshPou(pou: string): void;
 }
 
 export type WorkspaceState = WorkspaceData & WorkspaceActions;
@@ -75,6 +79,7 @@ export const emptyWorkspace: WorkspaceData = {
   fbdHistories: {},
   library: [],
   symbols: {},
+  savedPous: [],
   saving: false,
   saveError: null,
   conflict: null,
@@ -82,6 +87,7 @@ export const emptyWorkspace: WorkspaceData = {
 
 const IDENTIFIER = /^[A-Za-z_][A-Za-z0-9_]{0,63}$/;
 const message = (err: unknown) => (err instanceof Error ? err.message : String(err));
+const pouNames = (project: Project): string[] => (project.pous ?? []).map((p) => p.name.toUpperCase());
 export const pouOf = (project: Project | null, name: string): Pou | undefined =>
   project?.pous?.find((p) => p.name === name);
 
@@ -152,9 +158,10 @@ export function createWorkspaceStore(
     const replacePou = (pou: string, update: (p: Pou) => Pou) =>
       replacePous(pou, (pous) => pous.map((p) => (p.name === pou ? update(p) : p)));
 
+    /** The symbols of a saved POU (a new one has none on the server until the project is saved). */
     const loadSymbols = (pou: string) => {
       const name = get().name;
-      if (!name) return;
+      if (!name || !get().savedPous.includes(pou.toUpperCase())) return;
       api.getSymbols(name, pou).then(
         (table) => {
           if (get().name === name) set({ symbols: { ...get().symbols, [pou]: table } });
@@ -182,6 +189,7 @@ export function createWorkspaceStore(
         const draft = useDraft ? loadDraft(name, storage) : null;
         set({
           status: "ready",
+          savedPous: pouNames(doc.project),
           revision: draft?.base_revision ?? doc.revision,
           modified: draft?.base_modified ?? doc.modified,
           project: draft?.project ?? doc.project,
@@ -306,6 +314,7 @@ export function createWorkspaceStore(
           );
           removeDraft(name, storage);
           set({
+            savedPous: pouNames(project),
             saving: false,
             revision: result.revision,
             modified: result.modified,
@@ -331,6 +340,13 @@ export function createWorkspaceStore(
       },
 
       dismissConflict: () => set({ conflict: null }),
+
+      refreshPou(pou) {
+        const { name } = get();
+        if (!name) return;
+        loadSymbols(pou);
+        loadLibrary(name, openCall);
+      },
     };
   });
 }

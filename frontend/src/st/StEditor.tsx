@@ -2,9 +2,8 @@
 // and END_* matching, folding, autocomplete (members after `x.`), backend diagnostics as lint
 // underlines, and online the values of variables inline. The text is controlled: every edit goes
 // to onChange, and a new `text` from outside (reload, draft restore) replaces the doc.
-import { referencesKeymap } from "../xref/stReferences";
 import { autocompletion, closeBrackets, closeBracketsKeymap, completionKeymap } from "@codemirror/autocomplete";
-import { defaultKeymap, history, historyKeymap, indentWithTab } from "@codemirror/commands";
+import { defaultKeymap, history, historyKeymap } from "@codemirror/commands";
 import {
   bracketMatching,
   codeFolding,
@@ -17,7 +16,7 @@ import {
 import { lintGutter, setDiagnostics } from "@codemirror/lint";
 import { Compartment, EditorState } from "@codemirror/state";
 import { EditorView, highlightActiveLine, keymap, lineNumbers } from "@codemirror/view";
-import { useEffect, useRef } from "react";
+import { useEffect, useLayoutEffect, useRef } from "react";
 import type { Diagnostic } from "../generated/api";
 import { stBlocks } from "./blocks";
 import { setBreakpointLines, setHaltedLine, stDebugging } from "./breakpoints";
@@ -25,6 +24,7 @@ import { stCompletionSource, type StCompletions } from "./completion";
 import { setCoverageLines, stCoverage } from "./coverage";
 import { setInlineMarks, stInlineValues, type InlineMark, type StOnlineView } from "./inlineValues";
 import { stLanguage } from "./language";
+import { stKeys } from "./keys";
 import { lintDiagnostics } from "./lint";
 
 export interface StEditorProps {
@@ -65,11 +65,17 @@ export function StEditor({
 }: StEditorProps) {
   const host = useRef<HTMLDivElement>(null);
   const view = useRef<EditorView | null>(null);
+  // What the editor's callbacks read: the props of the last render (kept after rendering, not during it).
   const latest = useRef({ onChange, completions, debug, online });
-  latest.current = { onChange, completions, debug, online };
+  useLayoutEffect(() => {
+    latest.current = { onChange, completions, debug, online };
+  });
   const editable = useRef(new Compartment());
+  /** The props the view is created with; later ones arrive through the effects below. */
+  const initial = useRef({ text, debugging: debug !== undefined, readOnly, label });
 
   useEffect(() => {
+    const { text, debugging, readOnly, label } = initial.current;
     const v = new EditorView({
       parent: host.current!,
       state: EditorState.create({
@@ -88,17 +94,16 @@ export function StEditor({
           syntaxHighlighting(defaultHighlightStyle),
           autocompletion({ override: [stCompletionSource(() => latest.current.completions)] }),
           lintGutter(),
-          debug ? stDebugging((line) => latest.current.debug?.onToggle(line)) : [],
+          debugging ? stDebugging((line) => latest.current.debug?.onToggle(line)) : [],
           stInlineValues(() => latest.current.online),
           stCoverage,
           keymap.of([
+            ...stKeys(debugging ? (line) => latest.current.debug?.onToggle(line) : null),
             ...closeBracketsKeymap,
             ...defaultKeymap,
             ...historyKeymap,
             ...foldKeymap,
             ...completionKeymap,
-            ...referencesKeymap,
-            indentWithTab,
           ]),
           editable.current.of(EditorState.readOnly.of(readOnly !== null)),
           EditorView.contentAttributes.of({ "aria-label": label }),
@@ -117,7 +122,6 @@ export function StEditor({
       v.destroy();
       view.current = null;
     };
-    // The view is created once; later props arrive through the effects below.
   }, []);
 
   useEffect(() => {

@@ -1,6 +1,6 @@
-// "Find all references" in the ST editor: Shift+F12 on a variable lists its references in the Cross
-// references panel (the word at the cursor, resolved in the open POU like any operand).
-import type { EditorView, KeyBinding } from "@codemirror/view";
+// "Find all references" in the ST editor: Shift+F12 (src/keys/keymap.ts) on a variable lists its references
+// in the Cross references panel (the word at the cursor, resolved in the open POU like any operand).
+import type { EditorView } from "@codemirror/view";
 import { xrefStore } from "./store";
 
 export function findReferencesAtCursor(view: EditorView): boolean {
@@ -10,5 +10,3 @@ export function findReferencesAtCursor(view: EditorView): boolean {
   void xrefStore.getState().find(state.sliceDoc(word.from, word.to));
   return true;
 }
-
-export const referencesKeymap: KeyBinding[] = [{ key: "Shift-F12", run: findReferencesAtCursor }];
