@@ -1,25 +1,13 @@
 // An FBD body as the editor draws it: the editor's own network canvases (src/fbd/editor), read-only,
 // every node shown, each network a block that a page break never cuts.
-import { useCallback, useMemo } from "react";
 import "@xyflow/react/dist/style.css";
 import type { LibraryEntry, SymbolInfo } from "../generated/api";
 import "../ld/ld.css";
-import { arrange } from "../fbd/arrange";
 import { FbdEditorContext, type FbdEditorApi } from "../fbd/editor/context";
-import { nodeHeight } from "../fbd/editor/FbdNodeView";
 import { NetworkCanvas } from "../fbd/editor/NetworkCanvas";
+import { useNodeLayout } from "../fbd/editor/useNodeLayout";
 import "../fbd/editor/fbd.css";
-import {
-  kindOf,
-  networksOf,
-  nodePins,
-  nodesOf,
-  type Block,
-  type FbdBody,
-  type FbdNetwork,
-  type FbdNode,
-  type Position,
-} from "../fbd/model";
+import { kindOf, networksOf, nodePins, type Block, type FbdBody } from "../fbd/model";
 
 const NONE: never[] = [];
 const nothing = () => {};
@@ -34,23 +22,7 @@ export function FbdPrint({
   symbols: readonly SymbolInfo[];
 }) {
   const networks = networksOf(body);
-  const heightOf = useCallback(
-    (network: FbdNetwork) => (node: FbdNode) => {
-      const pins = nodePins(node, network, library, symbols);
-      return nodeHeight(node, Math.max(pins.inputs.length, pins.outputs.length));
-    },
-    [library, symbols],
-  );
-  const fallbacks = useMemo(
-    () =>
-      new Map(
-        networks.map((n) => [
-          n.id,
-          nodesOf(n).every((node) => node.pos) ? new Map<string, Position>() : arrange(n, heightOf(n)),
-        ]),
-      ),
-    [networks, heightOf],
-  );
+  const { heightOf, fallbacks } = useNodeLayout(networks, library, symbols);
   const api: FbdEditorApi = {
     readOnly: true,
     symbols,

@@ -6,6 +6,7 @@
 // write/force from the context menu, and breakpoints. The undo history is the caller's (one per POU).
 import "@xyflow/react/dist/style.css";
 import "../../ld/ld.css";
+import { useNodeLayout } from "./useNodeLayout";
 import "./fbd.css";
 import type { Connection } from "@xyflow/react";
 import {
@@ -30,7 +31,7 @@ import { OperandValuePrompt, type ValueRequest } from "../../ld/editor/ValueProm
 import { onlineOperandItems } from "../../online/operandCommands";
 import { referencesItem } from "../../xref/store";
 import { canRedo, canUndo, record, redo, undo, type History } from "../../ld/history";
-import { arrange } from "../arrange";
+
 import { clipOf, parseClip, pasteClip, serializeClip } from "../clipboard";
 import { outputType, refusal } from "../compat";
 import {
@@ -55,7 +56,7 @@ import * as ops from "../ops";
 import { moveInOrder } from "../order";
 import { fetchOrder, useEvaluationOrder } from "../useOrder";
 import { FbdEditorContext, type FbdEditorApi, type NodeView } from "./context";
-import { nodeHeight, pinOfHandle } from "./FbdNodeView";
+import { pinOfHandle } from "./FbdNodeView";
 import { DRAG_FORMAT, NetworkCanvas, type NetworkSelection } from "./NetworkCanvas";
 import { dispatchKey, keysOf, type CommandOf } from "../../keys/keymap";
 import { ShortcutHelp } from "../../keys/ShortcutHelp";
@@ -178,24 +179,8 @@ export function FbdEditor({
   const networks = networksOf(body);
   const locked = readOnly !== null;
 
-  const heightOf = useCallback(
-    (network: FbdNetwork) => (node: FbdNode) => {
-      const pins = nodePins(node, network, lookup, symbols);
-      return nodeHeight(node, Math.max(pins.inputs.length, pins.outputs.length));
-    },
-    [lookup, symbols],
-  );
   // Nodes without a stored position (imported, hand-written) are drawn where auto-arrange would put them.
-  const fallbacks = useMemo(
-    () =>
-      new Map(
-        networks.map((n) => [
-          n.id,
-          nodesOf(n).every((node) => node.pos) ? new Map<string, Position>() : arrange(n, heightOf(n)),
-        ]),
-      ),
-    [networks, heightOf],
-  );
+  const { heightOf, fallbacks } = useNodeLayout(networks, lookup, symbols);
 
   const byElement = useMemo(() => {
     const map = new Map<string, Diagnostic[]>();
