@@ -10,7 +10,7 @@ import { downloadText } from "../interchange/download";
 import type { FbdBody } from "../fbd/model";
 import type { LdBody } from "../ld/model";
 import { tokenize } from "../stview/highlight";
-import { placeOf } from "../xref/model";
+import { placeOf, XREF_COLUMNS } from "../xref/model";
 import { FbdPrint } from "./FbdPrint";
 import { LdPrint } from "./LdPrint";
 import { diagramSvg, pageStyles } from "./svg";
@@ -207,12 +207,9 @@ function XrefTable({ entries }: { entries: readonly XrefEntry[] }) {
     <table className="print-table print-xref-table">
       <thead>
         <tr>
-          <th>Variable</th>
-          <th>Scope</th>
-          <th>Type</th>
-          <th>Address</th>
-          <th>Access</th>
-          <th>Where</th>
+          {XREF_COLUMNS.map((c) => (
+            <th key={c}>{c}</th>
+          ))}
         </tr>
       </thead>
       {entries.map((e) => (

@@ -5,7 +5,7 @@
 import { useEffect, useState } from "react";
 import type { Diagnostic, XrefEntry } from "../generated/api";
 import { useWorkspace } from "../project/store";
-import { entryKey, filterEntries, placeOf, placeToReveal } from "./model";
+import { entryKey, filterEntries, placeOf, placeToReveal, XREF_COLUMNS } from "./model";
 import { useXref, xrefStore } from "./store";
 import "./xref.css";
 
@@ -44,13 +44,9 @@ export function XrefPanel({ onReveal }: { onReveal(place: Diagnostic): void }) {
       <table className="xref-table" aria-label="Cross references">
         <thead>
           <tr>
-            <th>Variable</th>
-            <th>Scope</th>
-            <th>Type</th>
-            <th>Address</th>
-            <th>Access</th>
-            <th>Where</th>
-            <th>Path</th>
+            {[...XREF_COLUMNS, "Path"].map((c) => (
+              <th key={c}>{c}</th>
+            ))}
           </tr>
         </thead>
         <tbody>

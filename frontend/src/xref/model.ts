@@ -25,6 +25,9 @@ export function entryOf(entries: readonly XrefEntry[], operand: string, pou: str
   );
 }
 
+/** The columns of the cross-reference list, in the panel and in print. */
+export const XREF_COLUMNS = ["Variable", "Scope", "Type", "Address", "Access", "Where"] as const;
+
 /** A stable key of an entry (a POU's variable or a global). */
 export const entryKey = (e: Pick<XrefEntry, "pou" | "name">): string => `${e.pou ?? ""}/${e.name}`.toUpperCase();
 
