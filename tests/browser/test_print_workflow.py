@@ -2,7 +2,8 @@
 
 The motor example is printed from the Export bar's "Print project…" (a new tab with the print view, drawn
 by the editors' own LD and FBD drawing); Chromium prints that page to PDF, which must have at least a page
-per POU plus the title page, each POU starting on its own page with the operand names of its diagram. The
+per POU plus the title page, each POU starting on its own page with the operand names of its diagram; a
+diagram saved as SVG holds its operands and wires, the page saved as HTML has no scripts or screen tools. The
 Cross references panel lists the variables, filters them, and a click on a place opens the POU there;
 "Find all references" from the LD context menu and from the ST editor (Shift+F12) shows one variable's
 places. The README's picture of a printed page is taken here (docs/print-page.png, when pdftoppm is there).
@@ -81,6 +82,18 @@ def test_print_a_project_to_pdf_and_find_its_cross_references(page, server: str)
         assert missing == [], f"{heading}: {missing} not printed"
     assert any("Cross-reference list" in t for t in texts[-2:])
     _readme_picture(pdf)
+
+    # A diagram as SVG, the page as static HTML.
+    with printed.expect_download() as download:
+        printed.get_by_role("region", name="PROGRAM Scaling").get_by_role("button", name="Save diagram as SVG").click()
+    svg = Path(download.value.path()).read_text(encoding="utf-8")
+    assert download.value.suggested_filename == "Scaling.svg" and svg.startswith("<svg xmlns=")
+    assert all(name in svg for name in ("StartCount", "HighSpeed", "react-flow__edge"))
+    with printed.expect_download() as download:
+        printed.get_by_role("button", name="Save as HTML").click()
+    html = Path(download.value.path()).read_text(encoding="utf-8")
+    assert download.value.suggested_filename == "motor.html" and "<script" not in html
+    assert "PROGRAM Main" in html and "Cross-reference list" in html and "Print…" not in html
 
     # Only one POU: the POU check boxes reload the view with the selection.
     printed.get_by_role("group", name="POUs").get_by_label("Main").uncheck()
