@@ -133,3 +133,34 @@ def test_gr05_an_input_node_whose_variable_the_network_writes_is_read_where_it_s
         ),
         expected="(* Network 1 *)\nn := n + 1;\n",
     )
+
+
+def test_issue28_the_light_control_exercise_reads_as_written_without_a_temporary():
+    """Issue 28's light-control exercise (a push button toggles the lamp, a master switch turns it off) was
+    ``Lamp := (R_TRIG_1.Q XOR in3) AND NOT MasterOff;`` with a ``VAR_TEMP in3`` named after a node id: the lamp's
+    own value is read where the XOR stands, before the network writes it (GR-05), so no temporary is needed."""
+    text = check(
+        net(
+            "n1",
+            [
+                inp("button", "Button"),
+                blk("edge", "R_TRIG", "R_TRIG_1"),
+                inp("lamp", "Lamp"),
+                blk("xor", "XOR"),
+                inp("master", "MasterOff"),
+                blk("and", "AND", IN2={"negated": True}),
+                out("o", "Lamp"),
+            ],
+            [
+                ("button.OUT", "edge.CLK"),
+                ("edge.Q", "xor.IN1"),
+                ("lamp.OUT", "xor.IN2"),
+                ("xor.OUT", "and.IN1"),
+                ("master.OUT", "and.IN2"),
+                ("and.OUT", "o.IN"),
+            ],
+        ),
+        declarations="VAR Button, Lamp, MasterOff : BOOL; R_TRIG_1 : R_TRIG; END_VAR",
+        expected="(* Network 1 *)\nR_TRIG_1(CLK := Button);\nLamp := (R_TRIG_1.Q XOR Lamp) AND NOT MasterOff;\n",
+    )
+    assert "VAR_TEMP" not in text and "in3" not in text
