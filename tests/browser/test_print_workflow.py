@@ -5,8 +5,8 @@ by the editors' own LD and FBD drawing); Chromium prints that page to PDF, which
 per POU plus the title page, each POU starting on its own page with the operand names of its diagram; a
 diagram saved as SVG holds its operands and wires, the page saved as HTML has no scripts or screen tools. The
 Cross references panel lists the variables, filters them, and a click on a place opens the POU there;
-"Find all references" from the LD context menu and from the ST editor (Shift+F12) shows one variable's
-places. The README's picture of a printed page is taken here (docs/print-page.png, when pdftoppm is there).
+"Find all references" from the LD and FBD context menus and from the ST editor (Shift+F12) shows one
+variable's places. The README's picture of a printed page is taken here (docs/print-page.png, when pdftoppm is there).
 Every page fails the test on a page error or a console error.
 """
 
@@ -43,6 +43,16 @@ def watch_errors(page) -> list[str]:
     return errors
 
 
+def orthogonal(path: str) -> bool:
+    """Is the SVG path ``M x y L x y ...`` made of horizontal and vertical segments only (no curves)?"""
+    number = r"-?\d+(?:\.\d+)?"
+    if re.fullmatch(rf"\s*M\s*{number}[ ,]+{number}(?:\s*L\s*{number}[ ,]+{number})+\s*", path) is None:
+        return False
+    values = [float(v) for v in re.findall(number, path)]
+    points = list(zip(values[::2], values[1::2]))
+    return all(abs(a[0] - b[0]) < 0.01 or abs(a[1] - b[1]) < 0.01 for a, b in zip(points, points[1:]))
+
+
 def open_pou(page, name: str) -> None:
     page.get_by_role("navigation", name="Project tree").get_by_role("button", name=re.compile(f"^{name}")).click()
 
@@ -63,6 +73,9 @@ def test_print_a_project_to_pdf_and_find_its_cross_references(page, server: str)
     printed.locator(".print-ld .print-network svg").first.wait_for()
     printed.locator(".print-fbd .react-flow__edge").first.wait_for()  # wires are drawn once nodes are measured
     assert printed.get_by_test_id("revision").inner_text() != ""
+    wires = printed.locator(".print-fbd .react-flow__edge path.react-flow__edge-path")
+    paths = [wires.nth(i).get_attribute("d") for i in range(wires.count())]
+    assert len(paths) >= 6 and all(orthogonal(d) for d in paths), paths  # Scaling's wires, routed as the editor does
     pdf = printed.pdf(format="A4", landscape=True, print_background=True)
     (ARTIFACTS / "motor.pdf").write_bytes(pdf)
     reader = pypdf.PdfReader(io.BytesIO(pdf))
@@ -118,6 +131,16 @@ def test_print_a_project_to_pdf_and_find_its_cross_references(page, server: str)
     expect(page.get_by_label("Filter cross references")).to_have_value("Motor")
     panel.get_by_role("button", name="Main, network 1 (Motor)").first.wait_for()
     panel.get_by_role("button", name="Main, network 2 (Motor)").wait_for()
+
+    # ... from the FBD editor's context menu on an input node: read in Scaling, written by Main's counter
+    # (CV => StartCount: the place names the CTU box by its instance).
+    open_pou(page, "Scaling")
+    page.locator('.fbd-node[data-node="count"]').click(button="right")
+    page.get_by_role("menuitem", name="Find all references of StartCount").click()
+    expect(page.get_by_label("Filter cross references")).to_have_value("StartCount")
+    panel.get_by_role("button", name="Scaling, network 1 (StartCount)").wait_for()
+    written = panel.get_by_role("row", name="StartCount write", exact=True)
+    expect(written.get_by_role("button")).to_have_text("Main, network 3 (StartCounter)")
 
     # ... and with Shift+F12 on a variable in the ST editor.
     open_pou(page, "Blinker")
