@@ -12,6 +12,7 @@ import pytest
 
 from ladderlab.cli import main
 from ladderlab.cli.doc import PRINT_DIR, find_chromium
+from tests.ir.diagram_support import blk, fbd_pou, inp, net, out, project
 
 MOTOR = Path(__file__).resolve().parents[2] / "examples" / "motor"
 built = pytest.mark.skipif(not (PRINT_DIR / "print.js").is_file(), reason="the print view is not built (make frontend)")
@@ -82,3 +83,36 @@ def test_pdf_has_a_page_per_pou_with_the_operands_of_its_diagram(tmp_path: Path,
     assert all(name in main_pages for name in ("Start", "Stop", "Motor", "RunTimer", "StartCounter", "Lamp"))
     scaling = texts[starts["PROGRAM Scaling"][0]]
     assert all(name in scaling for name in ("StartCount", "MUL", "ADD", "GT", "Speed", "HighSpeed"))
+
+
+@built
+@pytest.mark.skipif(find_chromium() is None, reason="Chromium is not installed")
+def test_page_breaks_never_cut_a_network(tmp_path: Path, capsys) -> None:
+    """Issue 28: a POU of more networks than a page holds is printed over several pages, and every network (its
+    number, comment and operands, each drawn once; global, so no declarations table lists them) stands on one
+    page. FBD networks are drawn in HTML, which a page break could cut (an LD network is one SVG)."""
+    pypdf = pytest.importorskip("pypdf")
+    # networks of 1 to 6 inputs stacked into an OR, so the page ends fall at different heights
+    names = {k: [f"In{k:02d}{b}" for b in "abcdef"[: 1 + k * 5 % 6]] for k in range(1, 21)}
+    networks = [
+        net(
+            f"n{k}",
+            [inp(f"i{k}_{i}", name, 0, 60 * i) for i, name in enumerate(operands)]
+            + [blk(f"or{k}", "OR", x=160, y=0), out(f"o{k}", f"Out{k:02d}", x=320, y=0)],
+            [(f"i{k}_{i}.OUT", f"or{k}.IN{i + 1}") for i in range(len(operands))] + [(f"or{k}.OUT", f"o{k}.IN")],
+        ).model_copy(update={"comment": f"Net{k:02d} marker"})
+        for k, operands in names.items()
+    ]
+    globals_ = "VAR_GLOBAL " + " ".join(f"{', '.join(n)}, Out{k:02d} : BOOL;" for k, n in names.items()) + " END_VAR"
+    source = tmp_path / "tall.json"
+    source.write_text(project(fbd_pou("Tall", "", *networks), globals=globals_).model_dump_json(), encoding="utf-8")
+    pdf = tmp_path / "tall.pdf"
+    assert main(["doc", str(source), "-o", str(pdf)]) == 0
+    texts = [page.extract_text() for page in pypdf.PdfReader(io.BytesIO(pdf.read_bytes())).pages]
+    pou_pages = [i for i, t in enumerate(texts) if any(f"Net{k:02d} marker" in t for k in names)]
+    assert len(pou_pages) >= 3, f"the networks fill {len(pou_pages)} pages: nothing to cut"
+    for k, operands in names.items():
+        marker = [i for i in pou_pages if f"Net{k:02d} marker" in texts[i]]
+        assert len(marker) == 1, f"network {k}'s comment on pages {marker}"
+        drawn = {name: [i for i in pou_pages if name in texts[i]] for name in [*operands, f"Out{k:02d}"]}
+        assert all(pages == marker for pages in drawn.values()), f"network {k} cut: {marker} {drawn}"
