@@ -13,6 +13,7 @@ Every page fails the test on a page error or a console error.
 from __future__ import annotations
 
 import io
+import itertools
 import re
 import shutil
 import subprocess
@@ -28,9 +29,10 @@ pytestmark = pytest.mark.browser
 pypdf = pytest.importorskip("pypdf", reason="pypdf reads the printed PDF")
 
 DOCS = Path(__file__).resolve().parents[2] / "docs"
-#: What each POU's pages must show: its heading and the operands its diagram (or body) draws.
+#: What each POU's pages must show: its heading, the operands its diagram (or body) draws, its network comments.
 PAGES = {
-    "PROGRAM Main": ["Start", "Stop", "Motor", "RunTimer", "MotorRunning", "StartCounter", "ResetCount", "Lamp"],
+    "PROGRAM Main": ["Start", "Stop", "Motor", "RunTimer", "MotorRunning", "StartCounter", "ResetCount", "Lamp"]
+    + ["Start/stop with seal-in", "MotorRunning after 5 s of Motor", "Blink the lamp while the motor runs"],
     "FUNCTION_BLOCK Blinker": ["Enable", "Period", "Half"],
     "PROGRAM Scaling": ["StartCount", "MUL", "ADD", "GT", "Speed", "HighSpeed"],
 }
@@ -50,7 +52,7 @@ def orthogonal(path: str) -> bool:
         return False
     values = [float(v) for v in re.findall(number, path)]
     points = list(zip(values[::2], values[1::2]))
-    return all(abs(a[0] - b[0]) < 0.01 or abs(a[1] - b[1]) < 0.01 for a, b in zip(points, points[1:]))
+    return all(abs(a[0] - b[0]) < 0.01 or abs(a[1] - b[1]) < 0.01 for a, b in itertools.pairwise(points))
 
 
 def open_pou(page, name: str) -> None:
@@ -81,7 +83,7 @@ def test_print_a_project_to_pdf_and_find_its_cross_references(page, server: str)
     reader = pypdf.PdfReader(io.BytesIO(pdf))
     texts = [p.extract_text() for p in reader.pages]
     assert len(texts) >= 1 + len(PAGES), f"{len(texts)} pages"
-    assert "motor" in texts[0] and "Revision" in texts[0]
+    assert "motor" in texts[0] and "Revision" in texts[0] and re.search(r"Date\s*\d{4}-\d{2}-\d{2}", texts[0])
     headings = [*PAGES, "Cross-reference list"]
     for heading, operands in PAGES.items():
         starts = [i for i, t in enumerate(texts) if t.lstrip().startswith(heading)]
@@ -108,11 +110,20 @@ def test_print_a_project_to_pdf_and_find_its_cross_references(page, server: str)
     assert download.value.suggested_filename == "motor.html" and "<script" not in html
     assert "PROGRAM Main" in html and "Cross-reference list" in html and "Print…" not in html
 
-    # Only one POU: the POU check boxes reload the view with the selection.
+    # A selection: the POU check boxes reload the view with the POUs left.
     printed.get_by_role("group", name="POUs").get_by_label("Main").uncheck()
     printed.get_by_role("region", name="PROGRAM Main").wait_for(state="detached")
     assert printed.locator(".print-pou[data-pou]").count() == 2
     printed.close()
+
+    # One POU: "Print Main…" prints the open POU alone (and the cross references of its variables).
+    with page.context.expect_page() as opened:
+        page.get_by_role("button", name="Print Main…").click()
+    alone = opened.value
+    errors += watch_errors(alone)
+    alone.get_by_role("region", name="PROGRAM Main").wait_for()
+    expect(alone.locator(".print-pou[data-pou]")).to_have_count(1)
+    alone.close()
 
     # The Cross references panel: filter, open a place.
     page.get_by_role("tab", name="Cross references").click()

@@ -89,7 +89,7 @@ def test_pdf_has_a_page_per_pou_with_the_operands_of_its_diagram(tmp_path: Path,
 @pytest.mark.skipif(find_chromium() is None, reason="Chromium is not installed")
 def test_page_breaks_never_cut_a_network(tmp_path: Path, capsys) -> None:
     """Issue 28: a POU of more networks than a page holds is printed over several pages, and every network (its
-    number, comment and operands, each drawn once; global, so no declarations table lists them) stands on one
+    label, comment and operands, each drawn once; global, so no declarations table lists them) stands on one
     page. FBD networks are drawn in HTML, which a page break could cut (an LD network is one SVG)."""
     pypdf = pytest.importorskip("pypdf")
     # networks of 1 to 6 inputs stacked into an OR, so the page ends fall at different heights
@@ -100,7 +100,7 @@ def test_page_breaks_never_cut_a_network(tmp_path: Path, capsys) -> None:
             [inp(f"i{k}_{i}", name, 0, 60 * i) for i, name in enumerate(operands)]
             + [blk(f"or{k}", "OR", x=160, y=0), out(f"o{k}", f"Out{k:02d}", x=320, y=0)],
             [(f"i{k}_{i}.OUT", f"or{k}.IN{i + 1}") for i in range(len(operands))] + [(f"or{k}.OUT", f"o{k}.IN")],
-        ).model_copy(update={"comment": f"Net{k:02d} marker"})
+        ).model_copy(update={"comment": f"Net{k:02d} marker", "label": f"Step{k:02d}"})
         for k, operands in names.items()
     ]
     globals_ = "VAR_GLOBAL " + " ".join(f"{', '.join(n)}, Out{k:02d} : BOOL;" for k, n in names.items()) + " END_VAR"
@@ -114,5 +114,7 @@ def test_page_breaks_never_cut_a_network(tmp_path: Path, capsys) -> None:
     for k, operands in names.items():
         marker = [i for i in pou_pages if f"Net{k:02d} marker" in texts[i]]
         assert len(marker) == 1, f"network {k}'s comment on pages {marker}"
-        drawn = {name: [i for i in pou_pages if name in texts[i]] for name in [*operands, f"Out{k:02d}"]}
+        drawn = {
+            name: [i for i in pou_pages if name in texts[i]] for name in [*operands, f"Out{k:02d}", f"Step{k:02d}:"]
+        }
         assert all(pages == marker for pages in drawn.values()), f"network {k} cut: {marker} {drawn}"
