@@ -16,23 +16,13 @@ import urllib.request
 import pytest
 from playwright.sync_api import expect
 
+from tests.interchange.test_plcopen_faithful import BLINK, TRAFFIC, TRAFFIC_COMMENTS
 from tests.support import external
 
 from .steps import new_project, open_pou
 from .test_print_workflow import orthogonal
 
 pytestmark = pytest.mark.browser
-
-TRAFFIC = ("openplc-examples", "examples", "Traffic_Light_FBD", "plc.xml")
-BLINK = ("openplc-examples", "examples", "Blink", "plc.xml")
-#: The comment boxes of Traffic_Light_FBD/plc.xml: first line, x, y, width, height.
-TRAFFIC_COMMENTS = [
-    ("PLC program to control a traffic light with an Arduino Uno as stand alone device.", 50, 50, 1050, 150),
-    ("Activation of the Red lamp", 50, 230, 1040, 40),
-    ("Activation of the orange lamp", 50, 460, 1020, 40),
-    ("Activation of the green lamp", 50, 670, 1010, 40),
-    ("Turn off first_cycle", 50, 890, 1010, 40),
-]
 
 
 def import_file(page, source, name: str) -> None:

@@ -18,6 +18,14 @@ from tests.support import external
 TRAFFIC = ("openplc-examples", "examples", "Traffic_Light_FBD", "plc.xml")
 BLINK = ("openplc-examples", "examples", "Blink", "plc.xml")
 FIRST_STEPS = ("beremiz-examples", "exemples", "first_steps", "plc.xml")
+#: The comment boxes of Traffic_Light_FBD/plc.xml as its XML draws them: first line, x, y, width, height.
+TRAFFIC_COMMENTS = [
+    ("PLC program to control a traffic light with an Arduino Uno as stand alone device.", 50, 50, 1050, 150),
+    ("Activation of the Red lamp", 50, 230, 1040, 40),
+    ("Activation of the orange lamp", 50, 460, 1020, 40),
+    ("Activation of the green lamp", 50, 670, 1010, 40),
+    ("Turn off first_cycle", 50, 890, 1010, 40),
+]
 
 
 def imported(*parts: str) -> Project:
@@ -48,13 +56,7 @@ def round_trip(project: Project) -> Project:
 def test_openplc_fbd_comment_boxes_keep_their_text_place_and_size():
     project = imported(*TRAFFIC)
     pou = next(p.name for p in project.pous if p.language == "fbd")
-    expected = [
-        ("PLC program to control a traffic light with an Arduino Uno as stand alone device.", 50, 50, 1050, 150),
-        ("Activation of the Red lamp", 50, 230, 1040, 40),
-        ("Activation of the orange lamp", 50, 460, 1020, 40),
-        ("Activation of the green lamp", 50, 670, 1010, 40),
-        ("Turn off first_cycle", 50, 890, 1010, 40),
-    ]
+    expected = TRAFFIC_COMMENTS
     assert comments(project, pou) == expected
     assert all(network.comment is None for network in project.pou(pou).body.networks)
     assert comments(round_trip(project), pou) == expected
