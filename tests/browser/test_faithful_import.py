@@ -67,8 +67,8 @@ def test_imported_fbd_comment_boxes_and_wires_look_like_the_original(page, serve
 
     # A comment box of one's own, from the palette, saved in the model.
     canvas = editor.locator(".fbd-network .react-flow__pane").first
-    palette = page.get_by_role("toolbar", name="FBD editing").locator('button[draggable="true"]')
-    palette.get_by_text("Comment", exact=True).drag_to(canvas, target_position={"x": 40, "y": 20})
+    toolbar = page.get_by_role("toolbar", name="FBD editing")
+    toolbar.get_by_role("button", name="Comment box", exact=True).drag_to(canvas, target_position={"x": 40, "y": 20})
     page.get_by_role("combobox", name="Comment").press_sequentially("Checked on site")
     page.keyboard.press("Enter")
     expect(notes).to_have_count(len(TRAFFIC_COMMENTS) + 1)

@@ -104,7 +104,7 @@ const PALETTE: { kind: PaletteKind; label: string }[] = [
   { kind: "return", label: "Return" },
   { kind: "connector", label: "Connector" },
   { kind: "continuation", label: "Continuation" },
-  { kind: "comment", label: "Comment" },
+  { kind: "comment", label: "Comment box" },
 ];
 const COLUMN_OF: Record<PaletteKind, number> = {
   input: 20,
