@@ -95,6 +95,7 @@ def test_print_a_project_to_pdf_and_find_its_cross_references(page, server: str)
             pou_pages.append(text)
         missing = [o for o in operands if not any(o in t for t in pou_pages)]
         assert missing == [], f"{heading}: {missing} not printed"
+        assert not any("???" in t for t in pou_pages), f"{heading}: an empty pin prints the editor's ???"
     assert any("Cross-reference list" in t for t in texts[-2:])
     _readme_picture(pdf)
 
