@@ -37,7 +37,7 @@ from .body import (
     read_network_list,
 )
 from .configuration import read_instances
-from .fbd_import import FbdImporter, fbd_groups
+from .fbd_import import FbdImporter, fbd_groups, place_comments
 from .graph import read_graph, resolve_continuations
 from .ld_import import LdImporter, ld_groups
 from .vars import KIND_BY_LIST, VarReader, parse_type_text, write_data_type, write_type, write_var_list
@@ -269,7 +269,7 @@ class _Importer:
         relative, orders = groups is not None, {}
         if groups is None:
             groups, orders = fbd_groups(graph, r)
-            attach_headers(groups, graph, r, labels=False)
+            place_comments(groups, graph)
         fbd = FbdImporter(graph, r, pou.name, ids).body(groups, orders, relative=relative)
         return Pou(
             name=pou.name,
