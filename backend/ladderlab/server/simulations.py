@@ -14,7 +14,7 @@ from typing import Annotated, Any
 
 from fastapi import APIRouter, Body, Depends, Request, Response, status
 
-from ..model.api import ResetSimulation, ScanTimes, SimulationInfo
+from ..model.api import IoPoint, ResetSimulation, ScanTimes, SimulationInfo
 from ..simulation.registry import SimulationEntry, SimulationRegistry
 from ..simulation.remote import BuildFailed
 from ..simulation.runner import CommandError
@@ -170,4 +170,5 @@ def simulation_info(entry: SimulationEntry, info: dict[str, Any] | None = None) 
         speed=info.get("speed", 1.0),
         pending_inputs=info.get("pending_inputs", 0),
         until=info.get("until"),
+        io=[IoPoint.model_validate(point) for point in handle.io],
     )
