@@ -162,6 +162,11 @@ class _Checker:
             if s.target is not None:
                 self.var(s.target)
             self._en_eno(s.en, s.eno)
+        elif isinstance(s, ir.Jump):  # IL jumps (invariant 4): to a labelled block of the same POU
+            assert s.label in {b.label for b in self.pou.blocks if b.label is not None}, s
+            if s.cond is not None:
+                self.expr(s.cond)
+                assert s.cond.type == t.BOOL, s  # type: ignore[union-attr]
         else:
             assert isinstance(s, (ir.Exit, ir.Return)), f"unexpected statement in ST: {s}"
 
@@ -188,8 +193,10 @@ def check_program(program: ir.Program) -> None:
             if slot.var_class != "VAR_IN_OUT":
                 check_value(slot.initial, slot.type, f"{name}.{slot.name}")
         checker = _Checker(program, pou)
+        labels = [block.label for block in pou.blocks if block.label is not None]
+        assert len(labels) == len(set(labels)) and all(label == label.upper() for label in labels), labels
         for block in pou.blocks:
-            assert block.origin.pou == name and block.label is None
+            assert block.origin.pou == name and (block.label is None or pou.language == "il")
             checker.stmts(block.statements)
     for task in program.tasks:
         assert all(p in program.pous and program.pous[p].kind == "program" for p in task.programs), task
