@@ -26,6 +26,7 @@ from .types import ERROR, Type
 
 ACCUMULATOR_PREFIX = "__CR"
 
+_OPERAND_COUNT = {0: "no operand", 1: "one operand"}
 _LOGIC = {"AND": "AND", "&": "AND", "OR": "OR", "XOR": "XOR"}
 _ARITHMETIC = {"ADD": "+", "SUB": "-", "MUL": "*", "DIV": "/", "MOD": "MOD"}
 _COMPARE = {"GT": ">", "GE": ">=", "EQ": "=", "NE": "<>", "LE": "<=", "LT": "<"}
@@ -96,8 +97,8 @@ class _Translator:
     # ------------------------------------------------------------ driver
     def run(self, body: IlBody) -> IlResult:
         for instruction in body.instructions:
-            for label in instruction.labels:
-                self._label(label, instruction.span)
+            for label, span in instruction.labels:
+                self._label(label, span)
             self.instruction(instruction)
         for label, span in body.trailing_labels:
             self._label(label, span)
@@ -120,7 +121,11 @@ class _Translator:
     def instruction(self, instruction: IlInstruction) -> None:
         word = instruction.operator
         handler = _HANDLERS.get(word)
-        if instruction.deferred:
+        if instruction.broken:  # reported by the parser: the CR is unknown until the next load
+            self.cr = Cr(ERROR, const=ast.BoolLit(False))
+            if instruction.deferred:
+                self.stack.append(_Frame(instruction, self.cr))
+        elif instruction.deferred:
             self._open(instruction)
         elif word == ")":
             self._close(instruction)
@@ -146,7 +151,7 @@ class _Translator:
                 "paths: load a value (LD) after the label",
                 instruction,
             )
-            self.cr = None
+            self.cr = Cr(ERROR, const=ast.BoolLit(False))
             return None
         if cr is None:
             where = " inside '('" if self.stack else ""
@@ -157,7 +162,7 @@ class _Translator:
             )
             return None
         cr.read = True
-        return cr
+        return None if cr.type is ERROR else cr  # after an error (already reported) the CR is unknown
 
     def _value(self, cr: Cr, span: ast.Span) -> ast.Expr:
         if cr.const is not None:
@@ -212,8 +217,8 @@ class _Translator:
         if len(instruction.operands) != count or instruction.call is not None:
             self.report(
                 "IL-OPERAND",
-                f"{instruction.written} takes {'one operand' if count == 1 else f'{count} operands'}"
-                f", not {len(instruction.operands)}",
+                f"{instruction.written} takes {_OPERAND_COUNT[count]}"
+                + (f", not {len(instruction.operands)}" if instruction.operands else ""),
                 instruction,
             )
             return None

@@ -57,12 +57,13 @@ class IlInstruction:
     of ``CAL inst(...)`` and function call forms 2/3; ``deferred`` is the ``(`` modifier."""
 
     operator: str  # upper case; ")" closes a deferred operation
-    labels: list[str]
+    labels: list[tuple[str, ast.Span]]
     span: ast.Span
     deferred: bool = False
     operands: list[ast.Expr] = field(default_factory=list)
     call: ast.Call | None = None
     written: str = ""  # the operator as the user wrote it
+    broken: bool = False  # its operands did not parse (already reported): checked no further
 
 
 @dataclass
@@ -131,13 +132,10 @@ def parse_il(text: str, *, file: str | None = None, pou: str | None = None) -> I
         if item[0] == "label":
             labels.append((item[1], item[2]))
             continue
-        names = [name for name, _ in labels]
         if item[0] == "close":
-            instructions.append(IlInstruction(")", names, item[1], written=")"))
+            instructions.append(IlInstruction(")", labels, item[1], written=")"))
         else:
-            instruction = _operation(item, names, blanked, file, pou, diagnostics)
-            if instruction is not None:
-                instructions.append(instruction)
+            instructions.append(_operation(item, labels, blanked, file, pou, diagnostics))
         labels = []
     return IlParseResult(IlBody(instructions, labels), diagnostics)
 
@@ -154,38 +152,36 @@ def _token_span(token: Token) -> ast.Span:
     return ast.Span(token.line, token.column, token.end_line, token.end_column)
 
 
-def _operation(item, labels, text, file, pou, diagnostics) -> IlInstruction | None:
+def _operation(item, labels, text, file, pou, diagnostics) -> IlInstruction:
     _, operator, defer, operands = item
     word = operator.value.upper()
     last = operands if operands is not None else defer if defer is not None else operator
     end_column = last.column + len(last.value.rstrip())
     span = ast.Span(operator.line, operator.column, operator.line, end_column)
     instruction = IlInstruction(word, labels, span, deferred=False, written=operator.value)
+    parsed: list[ast.Expr] | None = []
     if defer is not None and word in DEFERRABLE:
         instruction.deferred = True
-        if operands is not None:
-            instruction.operands = _operand_list(operands, file, pou, diagnostics)
-        return instruction
-    if defer is not None or _is_call_text(word, operands):
+        parsed = _operand_list(operands, file, pou, diagnostics) if operands is not None else []
+    elif defer is not None or _is_call_text(word, operands):
         # a call: ``Fun(args)`` (IL-31) or ``CAL inst(args)`` (IL-33): parse the operator's text as an ST call
         start = operator if word not in ("CAL", "CALC", "CALCN") else operands
-        if start is None:
-            return _syntax(f"{operator.value} needs an operand", operator, file, pou, diagnostics)
-        end_token = operands if operands is not None else defer
-        parsed = _parse_piece(text, start, end_token, file, pou, diagnostics)
-        if parsed is None:
-            return None
-        if isinstance(parsed, ast.Call):
-            instruction.call = parsed
-        elif word in ("CAL", "CALC", "CALCN"):
-            instruction.operands = [parsed]
-        else:
-            return _syntax(
-                f"'{operator.value}(' needs ')' at the end of its arguments", operator, file, pou, diagnostics
+        call = _parse_piece(text, start, operands if operands is not None else defer, file, pou, diagnostics)
+        if isinstance(call, ast.Call):
+            instruction.call = call
+        elif call is not None:
+            diagnostics.append(
+                _diagnostic(f"'{operator.value}(' needs ')' after its arguments", _token_span(operator), file, pou)
             )
-        return instruction
-    if operands is not None:
-        instruction.operands = _operand_list(operands, file, pou, diagnostics)
+            parsed = None
+        else:
+            parsed = None
+    elif operands is not None:
+        parsed = _operand_list(operands, file, pou, diagnostics)
+    if parsed is None:
+        instruction.broken = True
+    else:
+        instruction.operands = parsed
     return instruction
 
 
@@ -193,19 +189,19 @@ def _is_call_text(word: str, operands: Token | None) -> bool:
     return word in ("CAL", "CALC", "CALCN") and operands is not None and "(" in operands.value
 
 
-def _operand_list(token: Token, file, pou, diagnostics) -> list[ast.Expr]:
+def _operand_list(token: Token, file, pou, diagnostics) -> list[ast.Expr] | None:
     """``a, b, 3`` -> expressions: parsed as the arguments of a call so commas inside brackets stay put."""
     # an operand follows its operator and a blank, so the head "X(" fits in the two columns before it
     padded = "\n" * (token.line - 1) + " " * (token.column - 3) + "X(" + token.value.rstrip() + ")"
     result = parse_expression(padded, file=file, pou=pou)
     diagnostics += result.diagnostics
-    if result.ast is None or not isinstance(result.ast, ast.Call):
-        return []
+    if result.ast is None or not isinstance(result.ast, ast.Call) or not result.ok:
+        return None
     if any(arg.name is not None for arg in result.ast.args):
         diagnostics.append(
             _diagnostic("IL operands are values, not 'name := value' assignments", _token_span(token), file, pou)
         )
-        return []
+        return None
     return [arg.value for arg in result.ast.args]
 
 
@@ -216,12 +212,7 @@ def _parse_piece(text: str, start: Token, end: Token, file, pou, diagnostics):
     padded = "\n" * (start.line - 1) + " " * (start.column - 1) + piece
     result = parse_expression(padded, file=file, pou=pou)
     diagnostics += result.diagnostics
-    return result.ast
-
-
-def _syntax(message, token, file, pou, diagnostics):
-    diagnostics.append(_diagnostic(message, _token_span(token), file, pou))
-    return None
+    return result.ast if result.ok else None
 
 
 def _diagnostic(message: str, span: ast.Span, file: str | None, pou: str | None) -> Diagnostic:
