@@ -359,3 +359,22 @@ def test_not_and_fb_set_reset_input_operators_il24():
     assert (scan(sim, a=True).read("P.q"), sim.read("P.na")) == (True, False)
     assert scan(sim, a=False).read("P.q") is True
     assert (scan(sim, b=True).read("P.q"), sim.read("P.na")) == (False, True)
+
+
+def test_breakpoints_and_single_steps_stop_on_il_lines_il09():
+    """IL-09 / IL-26: every IL line is a pause point (the engine's statement points): a breakpoint on a line
+    halts before it with the accumulator readable, and single steps visit the lines in execution order,
+    jumps included (``JMPC`` taken in the second scan: lines 8 and 9 are skipped)."""
+    body = "LD a\nADD 1\nST a\nGT 1\nJMPC done\nLD a\nST r\ndone: LD a\nST s"
+    sim = Simulation(lower_ok(f"PROGRAM P\nVAR a, r, s : INT; END_VAR\n{body}\nEND_PROGRAM\n"), variant="debug")
+    sim.set_breakpoint("P", line=5)
+    for expected_lines, r in (([5, 6, 7, 8, 9, 10, 11], 1), ([5, 6, 7, 10, 11], 1)):
+        sim.cycle()
+        assert (sim.halted.origin.line, sim.read("P.__CR_INT")) == (5, sim.read("P.a") + 1)
+        lines = []
+        halt = sim.halted
+        while halt is not None:
+            lines.append(halt.origin.line)
+            halt = sim.step("statement")
+        assert lines == expected_lines
+        assert (sim.read("P.r"), sim.read("P.s")) == (r, sim.read("P.a"))
