@@ -92,12 +92,12 @@ def _parser() -> argparse.ArgumentParser:
     serve.set_defaults(func=_serve)
 
     check = sub.add_parser("check", help="load and check a project, print diagnostics")
-    check.add_argument("project", type=Path, help="project folder, project .json file or .st file")
+    check.add_argument("project", type=Path, help="project folder, project .json file or .st / .il file")
     check.add_argument("--format", choices=["text", "json"], default="text")
     check.set_defaults(func=_check)
 
     run = sub.add_parser("run", help="run a project on the virtual clock and print watched values per scan")
-    run.add_argument("project", type=Path, help="project folder, project .json file or .st file")
+    run.add_argument("project", type=Path, help="project folder, project .json file or .st / .il file")
     length = run.add_mutually_exclusive_group()
     length.add_argument("--cycles", type=int, default=None, metavar="N", help="number of scans (default 1)")
     length.add_argument(
@@ -128,14 +128,14 @@ def _parser() -> argparse.ArgumentParser:
     add_test_command(sub)
 
     compile_ = sub.add_parser("compile", help="check and compile a project; optionally print the generated Python")
-    compile_.add_argument("project", type=Path, help="project folder, project .json file or .st file")
+    compile_.add_argument("project", type=Path, help="project folder, project .json file or .st / .il file")
     compile_.add_argument("--emit-python", action="store_true", help="print the generated Python module")
     compile_.add_argument("--variant", choices=list(VARIANTS), default="fast")
     compile_.set_defaults(func=_compile)
 
     export = sub.add_parser("export", help="export a project as PLCopen XML or IEC ST text")
     export.add_argument("format", choices=["plcopen", "st"])
-    export.add_argument("project", type=Path, help="project folder, project .json file or .st file")
+    export.add_argument("project", type=Path, help="project folder, project .json file or .st / .il file")
     export.add_argument("--pou", default=None, help="st: only this POU (default: the whole project)")
     export.add_argument("-o", "--output", type=Path, default=None, help="file to write (default: standard output)")
     export.set_defaults(func=_export)
