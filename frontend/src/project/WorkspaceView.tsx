@@ -50,7 +50,9 @@ const KINDS: { kind: Pou["kind"]; title: string }[] = [
   { kind: "function_block", title: "Function blocks" },
   { kind: "function", title: "Functions" },
 ];
-const LANGUAGE = { st: "ST", ld: "LD", fbd: "FBD" } as const;
+const LANGUAGE = { st: "ST", ld: "LD", fbd: "FBD", il: "IL" } as const;
+/** Languages whose body is text, edited in the text editor (docs/il.md). */
+const TEXT_LANGUAGES: readonly Pou["language"][] = ["st", "il"];
 
 export const formatTime = (iso: string | null | undefined): string => {
   if (!iso) return "an unknown time";
@@ -388,7 +390,7 @@ function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
 }
 
 /**
- * An ST POU as text: its declarations above its body, each in the ST editor, with the live check
+ * An ST or IL POU as text: its declarations above its body, each in the text editor, with the live check
  * of the working copy as underlines; online, the body shows values inline.
  */
 function StPouView({ pou }: { pou: Pou }) {
@@ -557,7 +559,7 @@ function PouView({ name }: { name: string }) {
   }
   if (!pou || !project) return <p className="placeholder">{name} is no longer in this project.</p>;
   const modes: { id: PouMode; label: string }[] = [
-    { id: "body", label: pou.language === "st" ? "Body" : "Diagram" },
+    { id: "body", label: TEXT_LANGUAGES.includes(pou.language) ? "Body" : "Diagram" },
     { id: "declarations", label: "Declarations" },
     { id: "variables", label: "Variables" },
     ...(pou.language !== "st" ? [{ id: "st" as const, label: "View as ST" }] : []),
@@ -583,7 +585,7 @@ function PouView({ name }: { name: string }) {
         onRevealNetwork={(network) => panelsStore.getState().reveal({ pou: name, network })}
       />
     );
-  } else if (pou.language === "st") {
+  } else if (TEXT_LANGUAGES.includes(pou.language)) {
     content = <StPouView pou={pou} />;
   } else if (pou.language === "ld" && history) {
     content = <LdPouView pou={pou} history={history} />;
