@@ -26,6 +26,7 @@ import { FbdPouView } from "../fbd/FbdPouView";
 import { ExportMenu } from "../interchange/ExportMenu";
 import { ImportPlcopen } from "../interchange/ImportPlcopen";
 import { appStore } from "../store";
+import { IL_OPERATOR_COMPLETIONS } from "../st/ilLanguage";
 import { StEditor } from "../st/StEditor";
 import { StOnlineBar } from "../st/StOnlineBar";
 import { useStAssist } from "../st/useStAssist";
@@ -398,7 +399,12 @@ function StPouView({ pou }: { pou: Pou }) {
   const setDeclarations = useWorkspace((s) => s.setDeclarations);
   const phase = useOnline((s) => s.phase);
   const body = typeof pou.body === "string" ? pou.body : "";
-  const { diagnostics, completions, scope } = useStAssist(pou);
+  const { diagnostics, completions: stCompletions, scope } = useStAssist(pou);
+  const il = pou.language === "il";
+  const completions = useMemo(
+    () => (il ? { ...stCompletions, options: [...IL_OPERATOR_COMPLETIONS, ...stCompletions.options] } : stCompletions),
+    [il, stCompletions],
+  );
   const online = useStOnline(pou, body, scope);
   const readOnly = phase === "offline" ? null : "Online: go offline to edit.";
   const allBreakpoints = useDebug((s) => s.breakpoints);
@@ -444,6 +450,7 @@ function StPouView({ pou }: { pou: Pou }) {
           completions={completions}
           readOnly={readOnly}
           label={`${pou.name} body`}
+          language={il ? "il" : "st"}
           debug={debug}
           online={online.view}
           coverage={coverageLines(covered)}
