@@ -19,7 +19,7 @@ from lark.exceptions import UnexpectedInput
 from ..model.diagnostics import Diagnostic
 from . import ast
 from .comments import blank_nested_comments
-from .parser import parse_expression
+from .parser import parse_expression, syntax_diagnostic
 
 GRAMMAR = pathlib.Path(__file__).with_name("il.lark")
 
@@ -123,7 +123,13 @@ def parse_il(text: str, *, file: str | None = None, pou: str | None = None) -> I
         found = blanked.split("\n")[line - 1][column - 1 :].split()[:1] if line > 0 else []
         what = f"'{found[0]}'" if found else "the end of the line"
         diagnostics.append(
-            _diagnostic(f"IL syntax error: unexpected {what}", ast.Span(line, column, line, column + 1), file, pou)
+            syntax_diagnostic(
+                f"IL syntax error: unexpected {what}",
+                ast.Span(line, column, line, column + 1),
+                file,
+                pou,
+                code="IL-PARSE",
+            )
         )
         return IlParseResult(None, diagnostics)
     instructions: list[IlInstruction] = []
@@ -171,7 +177,13 @@ def _operation(item, labels, text, file, pou, diagnostics) -> IlInstruction:
             instruction.call = call
         elif call is not None:
             diagnostics.append(
-                _diagnostic(f"'{operator.value}(' needs ')' after its arguments", _token_span(operator), file, pou)
+                syntax_diagnostic(
+                    f"'{operator.value}(' needs ')' after its arguments",
+                    _token_span(operator),
+                    file,
+                    pou,
+                    code="IL-PARSE",
+                )
             )
             parsed = None
         else:
@@ -199,7 +211,13 @@ def _operand_list(token: Token, file, pou, diagnostics) -> list[ast.Expr] | None
         return None
     if any(arg.name is not None for arg in result.ast.args):
         diagnostics.append(
-            _diagnostic("IL operands are values, not 'name := value' assignments", _token_span(token), file, pou)
+            syntax_diagnostic(
+                "IL operands are values, not 'name := value' assignments",
+                _token_span(token),
+                file,
+                pou,
+                code="IL-PARSE",
+            )
         )
         return None
     return [arg.value for arg in result.ast.args]
@@ -213,20 +231,6 @@ def _parse_piece(text: str, start: Token, end: Token, file, pou, diagnostics):
     result = parse_expression(padded, file=file, pou=pou)
     diagnostics += result.diagnostics
     return result.ast if result.ok else None
-
-
-def _diagnostic(message: str, span: ast.Span, file: str | None, pou: str | None) -> Diagnostic:
-    return Diagnostic(
-        severity="error",
-        code="IL-PARSE",
-        message=message,
-        file=file,
-        pou=pou,
-        line=span.line,
-        column=span.column,
-        end_line=span.end_line,
-        end_column=span.end_column,
-    )
 
 
 # ---------------------------------------------------------------- IL POUs in IEC source files

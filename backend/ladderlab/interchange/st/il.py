@@ -110,7 +110,7 @@ def _reads_once_first(statement: ast.Stmt, name: str) -> bool:
         return (
             _count(conds[0], name) == 1
             and not any(_reads(cond, name) for cond in conds[1:])
-            and not any(_needs_old(body, name) for body in bodies)
+            and not any(_live(body, name, set()) for body in bodies)
         )
     return False
 
@@ -149,23 +149,13 @@ def _live(rest: list[ast.Stmt], name: str, live_after: set[str]) -> bool:
     return name in live_after
 
 
-def _needs_old(body: list[ast.Stmt], name: str) -> bool:
-    """Whether ``body`` reads the value ``name`` has when it starts."""
-    for statement in body:
-        if _reads_old(statement, name):
-            return True
-        if _kills(statement, name):
-            return False
-    return False
-
-
 def _reads_old(statement: ast.Stmt, name: str) -> bool:
     """Whether ``statement`` reads the value ``name`` has before it (assigning it first is not a read)."""
     if isinstance(statement, ast.Assign) and isinstance(statement.target, ast.Name):
         return _reads(statement.value, name)
     if isinstance(statement, ast.If):
         bodies = [body for _, body in statement.branches] + [statement.else_body or []]
-        return any(_reads(cond, name) for cond, _ in statement.branches) or any(_needs_old(b, name) for b in bodies)
+        return any(_reads(cond, name) for cond, _ in statement.branches) or any(_live(b, name, set()) for b in bodies)
     return _reads(statement, name)
 
 
