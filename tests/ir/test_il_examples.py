@@ -378,3 +378,25 @@ def test_breakpoints_and_single_steps_stop_on_il_lines_il09():
             halt = sim.step("statement")
         assert lines == expected_lines
         assert (sim.read("P.r"), sim.read("P.s")) == (r, sim.read("P.a"))
+
+
+@pytest.mark.parametrize("a, b", [(False, False), (False, True), (True, False), (True, True)])
+def test_n_negates_the_operand_il12(a, b):
+    """IL-12: ``ORN b`` is ``result := result OR NOT b``; ``LDN a`` is ``NOT a``; ``STN x`` stores ``NOT result``."""
+    sim = scan(program("a, b, r1, r2, r3 : BOOL;", "LD a\nORN b\nST r1\nLDN a\nST r2\nLD a\nSTN r3"), a=a, b=b)
+    assert [sim.read(f"P.r{i}") for i in (1, 2, 3)] == [a or not b, not a, not a]
+
+
+@pytest.mark.parametrize("i, expected", [(31, True), (32, False), (33, False)])
+def test_comparison_puts_the_cr_left_and_gives_bool_il11(i, expected):
+    """IL-11: ``LT %IW32``-style: TRUE when CR < operand (here CR = i, operand 32); the CR is then BOOL."""
+    sim = scan(program("i, limit : INT := 32; r : BOOL;", "LD i\nLT limit\nST r"), i=i)
+    assert sim.read("P.r") is expected
+
+
+def test_function_with_the_cr_as_first_argument_il30_il04():
+    """IL-30 / IL-04: ``LD -8 / LIMIT A, 5 / ST X`` is ``X := LIMIT(-8, A, 5)``; ``LD 7 / Fct 2, 4`` is
+    ``Fct(7, 2, 4)`` (a user function: 7 * 2 / 4 = 3 in INT)."""
+    fct = "FUNCTION Fct : INT\nVAR_INPUT P1, P2, P3 : INT; END_VAR\nLD P1\nMUL P2\nDIV P3\nST Fct\nEND_FUNCTION\n"
+    sim = scan(program("A, X, Result : INT;", "LD -8\nLIMIT A, 5\nST X\nLD 7\nFct 2, 4\nST Result", fct), A=-20)
+    assert (sim.read("P.X"), sim.read("P.Result")) == (-8, 3)
