@@ -127,7 +127,10 @@ def test_source_file_with_il_and_st_pous_and_types():
     assert diagnostics == []
     assert [(p.name, p.language) for p in project.pous] == [("Twice", "st"), ("Main", "il")]
     assert project.pous[1].body.split("\n")[7:10] == ["  LD 4", "  Twice", "  ST r"]
-    assert project.tasks[0].programs == ["Main"]
+    (resource,) = project.configuration.resources
+    assert [(task.name, [(p.name, p.type) for p in task.programs]) for task in resource.tasks] == [
+        ("T", [("M", "Main")])
+    ]
 
 
 def _errors(body: str, declarations: str = "i : INT; b : BOOL; t : TON;", extra: str = "") -> list[str]:
