@@ -27,7 +27,9 @@ def test_openplc_multi_language_il_counter_counts_like_its_st_twin():
         body="st(Reset := Reset);\nil(Reset := Reset);",
     )
     counters = [p for p in project.pous if p.name in ("CounterST", "CounterIL")]
-    program = project.model_copy(update={"pous": [*counters, check], "tasks": [Task(name="t", programs=["Check"])]})
+    program = project.model_copy(
+        update={"pous": [*counters, check], "tasks": [Task(name="t", programs=["Check"])], "configuration": None}
+    )
     lowered = lower_project(program)
     assert [d.format() for d in lowered.diagnostics if d.severity == "error"] == []
     sim = Simulation(lowered.program)

@@ -57,7 +57,7 @@ def test_a_backward_jump_is_refused_with_its_line():
 
 IL_PROGRAMS = {
     "IL-02": (
-        "PROGRAM P\nVAR lint : LINT; idword : DWORD; istruct : S; test : BOOL; start : LINT; END_VAR\n"
+        "PROGRAM P\nVAR lvar : LINT; idword : DWORD; istruct : S; test : BOOL; start : LINT; END_VAR\n"
         + examples.IL_02.format(load="start")
         + "END_PROGRAM\n"
         + examples.IL_02_TYPES

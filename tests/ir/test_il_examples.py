@@ -26,7 +26,7 @@ def scan(sim: Simulation, **inputs: object) -> Simulation:
 
 IL_02 = """
     LD    {load}
-    ST    lint      (* comment *)
+    ST    lvar      (* comment *)
     GE    5
     JMPC  next
     LD    idword
@@ -34,21 +34,22 @@ IL_02 = """
     STN   test
 next:
 """
-IL_02_DECLS = "lint : LINT; idword : DWORD; istruct : S; test : BOOL := TRUE;"
+IL_02_DECLS = "lvar : LINT; idword : DWORD; istruct : S; test : BOOL := TRUE;"
 IL_02_TYPES = "TYPE S : STRUCT sdword : DWORD; END_STRUCT; END_TYPE"
 
 
 def test_reference_program_jumps_when_17_ge_5_il02():
-    """IL-02: acc 17 -> lint := 17 -> acc := 17 >= 5 = TRUE -> jump -> test unchanged."""
+    """IL-02: acc 17 -> lvar := 17 -> acc := 17 >= 5 = TRUE -> jump -> test unchanged. (The seed's LINT variable
+    is called ``lint``, a type name, which cannot name a variable (KW-02): it is ``lvar`` here.)"""
     sim = scan(program(IL_02_DECLS, IL_02.format(load=17), IL_02_TYPES), idword=1)
-    assert (sim.read("P.lint"), sim.read("P.test")) == (17, True)
+    assert (sim.read("P.lvar"), sim.read("P.test")) == (17, True)
 
 
 @pytest.mark.parametrize("idword, sdword, test", [(1, 1, False), (1, 2, True)])
 def test_reference_program_variant_ld_3_falls_through_il02(idword, sdword, test):
     """IL-02 variant ``LD 3``: 3 >= 5 is FALSE -> no jump -> test := NOT (idword = istruct.sdword)."""
     sim = scan(program(IL_02_DECLS, IL_02.format(load=3), IL_02_TYPES), idword=idword, **{"istruct.sdword": sdword})
-    assert (sim.read("P.lint"), sim.read("P.test")) == (3, test)
+    assert (sim.read("P.lvar"), sim.read("P.test")) == (3, test)
 
 
 def test_parentheses_change_the_result_il06():

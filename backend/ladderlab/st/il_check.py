@@ -169,7 +169,7 @@ class _Translator:
             return copy.deepcopy(cr.const)
         return ast.Name(cr.name or "", span)
 
-    def _set(self, value: ast.Expr, ty: Type, instruction: IlInstruction) -> None:
+    def _set(self, value: ast.Expr, ty: Type, instruction: IlInstruction | _At) -> None:
         """``CR := value``: a constant stays one; anything else is stored in the accumulator of its type."""
         if ty is ERROR:
             self.cr = Cr(ERROR, const=value)
@@ -185,13 +185,13 @@ class _Translator:
         self._emit(ast.Assign(ast.Name(target.name, instruction.span), value, instruction.span))
         self.cr = Cr(concrete, name=target.name)
 
-    def _materialise(self, instruction: IlInstruction) -> None:
+    def _materialise(self, instruction: IlInstruction | _At) -> None:
         """Before a jump or label: a constant CR goes into its accumulator, so every path agrees on where it is."""
         cr = self.cr
         if isinstance(cr, Cr) and cr.const is not None and cr.type is not ERROR:
             self._set(cr.const, t.concrete(cr.type), instruction)
 
-    def _accumulator(self, ty: Type, instruction: IlInstruction) -> Symbol | None:
+    def _accumulator(self, ty: Type, instruction: IlInstruction | _At) -> Symbol | None:
         if isinstance(ty, (t.FbType, t.ArrayType)):
             self.report(
                 "IL-CR-TYPE", f"the accumulator cannot hold {ty}: load an elementary or user-typed value", instruction
@@ -464,7 +464,7 @@ class _Translator:
             )
             return
         if self.reachable:
-            self._materialise(_At(span))  # type: ignore[arg-type]
+            self._materialise(_At(span))
         states = ([self.cr] if self.reachable else []) + self.forward.pop(upper, [])
         self.cr = _merge(states, name)
         self.reachable = True
