@@ -6,6 +6,8 @@ Screenshots are written to tests/browser/artifacts/.
 
 from __future__ import annotations
 
+import re
+
 import pytest
 
 from .conftest import ARTIFACTS
@@ -72,10 +74,14 @@ def test_il_pou_is_written_with_help_checked_live_and_run(page, server):
     page.mouse.click(gutter_box["x"] + gutter_box["width"] / 2, line_box["y"] + line_box["height"] / 2)
     state.filter(has_text="Online · halted").wait_for()
     assert "cm-halted-line" in line3.get_attribute("class").split()
+    page.wait_for_timeout(500)  # the values of the halt come in the frame after the state
     halted = n.inner_text()
     page.wait_for_timeout(300)
-    assert n.inner_text() == halted
+    assert n.inner_text() == halted  # halted: nothing moves
     page.screenshot(path=str(ARTIFACTS / "il-halted.png"))
     page.get_by_role("button", name="Continue").click()
-    state.filter(has_text="Online · halted").wait_for()  # the breakpoint stays: the next scan halts again
+    # the breakpoint stays: the next scan halts on line 3 again, with n one higher
+    n.filter(has_text=re.compile(f"^{int(halted) + 1}$")).wait_for()
+    state.filter(has_text="Online · halted").wait_for()
+    page.wait_for_timeout(300)
     assert int(n.inner_text()) == int(halted) + 1
