@@ -106,6 +106,7 @@ def test_calls_keep_formal_and_informal_arguments_il31_il33():
         ("R(x);", False),
         ("LD := 3;", False),
         ("S := a.b;", False),
+        ("    r REF= counter;\n    value := r^;", False),  # CODESYS's REF= (ironplc's reference_to.st)
         ("", False),
     ],
 )

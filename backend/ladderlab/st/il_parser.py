@@ -254,6 +254,8 @@ def looks_like_il(body: str) -> bool:
         if word is None:
             return True
         rest = match.group("rest")
+        if rest.rstrip().endswith(";"):  # an ST statement (``r REF= x;``): no IL instruction ends with ';'
+            return False
         if word.upper() in ("NOT", "RET", "RETC", "RETCN") and not rest.strip():
             return True
         return word.upper() in OPERATORS | FB_INPUT_OPERATORS and _NOT_AN_OPERAND.match(rest) is None
