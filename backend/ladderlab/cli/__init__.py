@@ -95,13 +95,13 @@ def _parser() -> argparse.ArgumentParser:
     serve.set_defaults(func=_serve)
 
     check = sub.add_parser("check", help="load and check a project, print diagnostics")
-    check.add_argument("project", type=Path, help="project folder, project .json file or .st file")
+    check.add_argument("project", type=Path, help="project folder, project .json file or .st / .il file")
     add_encoding_option(check)
     check.add_argument("--format", choices=["text", "json"], default="text")
     check.set_defaults(func=_check)
 
     run = sub.add_parser("run", help="run a project on the virtual clock and print watched values per scan")
-    run.add_argument("project", type=Path, help="project folder, project .json file or .st file")
+    run.add_argument("project", type=Path, help="project folder, project .json file or .st / .il file")
     add_encoding_option(run)
     length = run.add_mutually_exclusive_group()
     length.add_argument("--cycles", type=int, default=None, metavar="N", help="number of scans (default 1)")
@@ -133,7 +133,7 @@ def _parser() -> argparse.ArgumentParser:
     add_test_command(sub)
 
     compile_ = sub.add_parser("compile", help="check and compile a project; optionally print the generated Python")
-    compile_.add_argument("project", type=Path, help="project folder, project .json file or .st file")
+    compile_.add_argument("project", type=Path, help="project folder, project .json file or .st / .il file")
     add_encoding_option(compile_)
     compile_.add_argument("--emit-python", action="store_true", help="print the generated Python module")
     compile_.add_argument("--variant", choices=list(VARIANTS), default="fast")
@@ -141,7 +141,7 @@ def _parser() -> argparse.ArgumentParser:
 
     export = sub.add_parser("export", help="export a project as PLCopen XML or IEC ST text")
     export.add_argument("format", choices=["plcopen", "st"])
-    export.add_argument("project", type=Path, help="project folder, project .json file or .st file")
+    export.add_argument("project", type=Path, help="project folder, project .json file or .st / .il file")
     add_encoding_option(export)
     export.add_argument("--pou", default=None, help="st: only this POU (default: the whole project)")
     export.add_argument("-o", "--output", type=Path, default=None, help="file to write (default: standard output)")

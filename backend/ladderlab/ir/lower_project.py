@@ -29,6 +29,7 @@ from .build_limits import data_too_large, source_too_large
 from .context import PouContext
 from .lower_configuration import lower_configuration
 from .lower_fbd import lower_fbd_body
+from .lower_il import lower_il_body
 from .lower_ld import lower_ld_body
 from .lower_st import lower_st_body
 from .lower_types import LoweringError
@@ -40,6 +41,7 @@ LOWER_BODY: dict[str, Callable[[ModelPou, PouContext], list[Block]]] = {
     "st": lower_st_body,
     "ld": lower_ld_body,
     "fbd": lower_fbd_body,
+    "il": lower_il_body,
 }
 
 _KIND = {"PROGRAM": "program", "FUNCTION_BLOCK": "function_block", "FUNCTION": "function"}

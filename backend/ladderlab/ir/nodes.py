@@ -293,7 +293,7 @@ class Pou:
     slots: list[Slot]
     blocks: list[Block]
     return_type: IrType | None = None
-    language: Literal["st", "ld", "fbd"] = "st"
+    language: Literal["st", "ld", "fbd", "il"] = "st"
     #: False: FB calls in the body see the time the POU was called with (a scan's clock, frozen in the scan).
     #: True: each FB call reads the engine's clock as it is then - a test's body, whose ADVANCE_TIME and
     #: RUN_SCANS move the clock between its statements (docs/testing.md).

@@ -12,9 +12,11 @@ from .ld import LdBody
 PROJECT_FORMAT = "ladderlab/1"
 
 PouKind = Literal["program", "function_block", "function"]
-Language = Literal["st", "ld", "fbd"]
+Language = Literal["st", "ld", "fbd", "il"]
 
-BODY_TYPE_BY_LANGUAGE: dict[str, type] = {"st": str, "ld": LdBody, "fbd": FbdBody}
+BODY_TYPE_BY_LANGUAGE: dict[str, type] = {"st": str, "ld": LdBody, "fbd": FbdBody, "il": str}
+#: Languages whose body is text (ST statements, IL instructions).
+TEXT_LANGUAGES = frozenset({"st", "il"})
 
 
 def _strip_trailing_whitespace(value: Any) -> Any:
@@ -23,7 +25,7 @@ def _strip_trailing_whitespace(value: Any) -> Any:
 
 
 class Pou(BaseModel):
-    """A program organisation unit. ``body`` is ST text, an ``LdBody`` or an ``FbdBody`` per ``language``."""
+    """A program organisation unit. ``body`` is ST or IL text, an ``LdBody`` or an ``FbdBody`` per ``language``."""
 
     model_config = ConfigDict(extra="forbid")
 
@@ -46,7 +48,7 @@ class Pou(BaseModel):
             return handler(value)
         if expected is str:
             if not isinstance(value, str):
-                raise ValueError("an ST POU's body must be a string of ST statements")
+                raise ValueError(f"an {language.upper()} POU's body must be a string of {language.upper()} text")
             return handler(value)
         if isinstance(value, expected):
             return value
@@ -57,7 +59,7 @@ class Pou(BaseModel):
     @model_validator(mode="after")
     def _empty_graphical_body(self) -> Pou:
         """A new LD/FBD POU created without a body starts with no networks."""
-        if self.language != "st" and isinstance(self.body, str):
+        if self.language not in TEXT_LANGUAGES and isinstance(self.body, str):
             self.body = BODY_TYPE_BY_LANGUAGE[self.language]()
         return self
 

@@ -202,7 +202,7 @@ def _finish(result: ParseResult, original: str, file: str | None = None, pou: st
         deep = too_deep(result.ast)
         if deep is not None:  # nothing after the parser may meet nesting beyond the limits (st/nesting.py)
             message, span = deep
-            result.diagnostics.append(_diagnostic(message, span, file, pou, code="ST-TOO-DEEP"))
+            result.diagnostics.append(syntax_diagnostic(message, span, file, pou, code="ST-TOO-DEEP"))
             result.ast = None
     if result.ast is not None:
         attach_comments(result.ast, original)
@@ -222,15 +222,15 @@ def _run(text: str, start: str, file: str | None, pou: str | None = None) -> Par
             report.add(error)
         return ParseResult(None, diagnostics)
     except StSyntaxError as error:
-        diagnostics.append(_diagnostic(str(error), error.span, file, pou))
+        diagnostics.append(syntax_diagnostic(str(error), error.span, file, pou))
         return ParseResult(None, diagnostics)
     except RecursionError:
-        diagnostics.append(_diagnostic("the text is nested too deeply to parse", ast.Span(1, 1, 1, 1), file, pou))
+        diagnostics.append(syntax_diagnostic("the text is nested too deeply to parse", ast.Span(1, 1, 1, 1), file, pou))
         return ParseResult(None, diagnostics)
     return ParseResult(tree, diagnostics)
 
 
-def _diagnostic(
+def syntax_diagnostic(
     message: str, span: ast.Span, file: str | None, pou: str | None, severity: str = "error", code: str = "ST-PARSE"
 ) -> Diagnostic:
     return Diagnostic(
@@ -261,7 +261,7 @@ class _Reporter:
     def add(self, error: UnexpectedInput, severity: str = "error") -> None:
         self._reported.add(id(error))
         message, span = describe_unexpected(error, _terminal_text())
-        self.diagnostics.append(_diagnostic(message, span, self.file, self.pou, severity))
+        self.diagnostics.append(syntax_diagnostic(message, span, self.file, self.pou, severity))
 
     def recover(self, error: UnexpectedInput) -> bool:
         if len(self.diagnostics) >= _MAX_ERRORS_PER_UNIT:

@@ -358,7 +358,7 @@ export interface Task {
   watchdog_ms?: number | null;
 }
 /**
- * A program organisation unit. ``body`` is ST text, an ``LdBody`` or an ``FbdBody`` per ``language``.
+ * A program organisation unit. ``body`` is ST or IL text, an ``LdBody`` or an ``FbdBody`` per ``language``.
  *
  * This interface was referenced by `ApiTypes`'s JSON-Schema
  * via the `definition` "Pou".
@@ -370,7 +370,7 @@ export interface Pou {
    */
   declarations?: string;
   kind: "program" | "function_block" | "function";
-  language: "st" | "ld" | "fbd";
+  language: "st" | "ld" | "fbd" | "il";
   name: string;
   /**
    * Functions only: the result type.

@@ -22,7 +22,12 @@ export interface PrintDocumentProps {
   tools?: { all: readonly string[]; onSelect(pous: string[]): void; onSaveHtml(): void } | null;
 }
 
-const LANGUAGE = { st: "Structured Text", ld: "Ladder Diagram", fbd: "Function Block Diagram" } as const;
+const LANGUAGE = {
+  st: "Structured Text",
+  ld: "Ladder Diagram",
+  fbd: "Function Block Diagram",
+  il: "Instruction List",
+} as const;
 const KIND = { program: "PROGRAM", function_block: "FUNCTION_BLOCK", function: "FUNCTION" } as const;
 
 export function PrintDocument({ doc, tools }: PrintDocumentProps) {
@@ -129,7 +134,7 @@ function PouSection({
     <section className="print-pou" aria-label={title} data-pou={pou.name}>
       <h2>
         {title} <small>{LANGUAGE[pou.language]}</small>
-        {pou.language !== "st" ? (
+        {pou.language === "ld" || pou.language === "fbd" ? (
           <button type="button" className="print-screen-only" onClick={saveSvg}>
             Save diagram as SVG
           </button>
@@ -137,7 +142,7 @@ function PouSection({
       </h2>
       <h3>Declarations</h3>
       <DeclarationTable symbols={symbols} />
-      <h3>{pou.language === "st" ? "Body" : "Networks"}</h3>
+      <h3>{pou.language === "st" || pou.language === "il" ? "Body" : "Networks"}</h3>
       <div ref={diagram}>
         {pou.language === "ld" ? (
           <LdPrint body={pou.body as LdBody} library={library} />

@@ -278,7 +278,7 @@ export function createWorkspaceStore(
           kind,
           language,
           declarations: kind === "function" ? "VAR_INPUT\nEND_VAR" : "VAR\nEND_VAR",
-          body: language === "st" ? "" : { networks: [] },
+          body: language === "st" || language === "il" ? "" : { networks: [] },
           ...(kind === "function" ? { return_type: "BOOL" } : {}),
         };
         replacePous(name, (pous) => [...pous, pou]);
