@@ -21,7 +21,7 @@ from ..testing.run import DEFAULT_SCAN_BUDGET, Options
 from ..testing.suite import run_suite, suite_files
 
 
-def add_test_command(sub) -> None:
+def add_test_command(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     test = sub.add_parser("test", help="run the project's unit tests (tests/*.st) and report them")
     test.add_argument("projects", nargs="+", type=Path, metavar="PROJECT", help="project folder or project .json file")
     test.add_argument("--filter", default=None, metavar="PATTERN", help="only tests whose name matches (glob or part)")

@@ -7,6 +7,7 @@ the checker's resolved POU interfaces, so the picker offers exactly what the che
 from __future__ import annotations
 
 from functools import cache
+from typing import Literal
 
 from fastapi import APIRouter, Query
 
@@ -21,7 +22,10 @@ from .errors import responses
 
 router = APIRouter(prefix="/api/library", tags=["library"])
 
-_USER_KINDS = {"FUNCTION": "function", "FUNCTION_BLOCK": "function_block"}
+_USER_KINDS: dict[str, Literal["function", "function_block"]] = {
+    "FUNCTION": "function",
+    "FUNCTION_BLOCK": "function_block",
+}
 
 
 def _std_pin(pin: stdlib.Pin) -> Pin:

@@ -17,7 +17,7 @@ from ..model.api import SymbolInfo, SymbolTable, VariableChildren, VariableNode
 from ..st import types as t
 from ..st.checker import check_project as check_st
 from ..st.printer import print_initializer, print_type
-from ..st.symbols import Symbol
+from ..st.symbols import CheckResult, Symbol
 from ..storage import NotFoundError
 from .context import WorkspaceDep
 from .errors import ApiError, responses
@@ -121,7 +121,7 @@ def _members(ty: t.Type, path: str, indices: tuple[int, ...]) -> tuple[list[Vari
     return [], 0
 
 
-def _walk(result, path: str) -> tuple[t.Type, tuple[int, ...]]:
+def _walk(result: CheckResult, path: str) -> tuple[t.Type, tuple[int, ...]]:
     """The type of the variable at ``path`` (and the indices of a partly indexed array at its end)."""
     parts = tokens(path)
     if not parts or parts[0][0] != "name":
@@ -167,13 +167,14 @@ def _member_type(ty: t.Type, member: str) -> t.Type:
     if isinstance(ty, t.StructType):
         return ty.fields[upper][1]
     if isinstance(ty, t.FbType) and ty.pou is not None:
-        return ty.pou.symbols[upper].type
+        found: t.Type = ty.pou.symbols[upper].type
+        return found
     assert isinstance(ty, t.FbType) and ty.std is not None  # _walk found the member among the pins
     pin = next(p for p in (*ty.std.inputs, *ty.std.outputs) if p.name == upper)
     return t.elementary(pin.type) or t.ERROR
 
 
-def _top_names(result) -> list[str]:
+def _top_names(result: CheckResult) -> list[str]:
     return [p.name for p in result.pous.values() if p.kind == "PROGRAM"] + [s.name for s in result.globals.values()]
 
 

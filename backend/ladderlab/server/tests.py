@@ -23,6 +23,7 @@ from fastapi.responses import StreamingResponse
 from ..ir.lower_tests import LoweredTest
 from ..model import Project
 from ..model.api import (
+    CoverageInfo,
     SimulationInfo,
     TestCaseInfo,
     TestCheckRequest,
@@ -135,8 +136,9 @@ async def _stream(project: Project, files: list[SuiteFile], test: str | None, co
                 files_with_errors=sum(1 for f in outcome.files if not f.ok),
                 seconds=round(outcome.seconds, 3),
             )
-            report = outcome.coverage.report(names) if outcome.coverage is not None else None
-            emit(TestEvent(type="done", summary=summary, coverage=report))  # type: ignore[arg-type]
+            report = outcome.coverage.report(names) if outcome.coverage is not None else {}
+            per_pou = {pou: CoverageInfo.model_validate(info) for pou, info in report.items()}
+            emit(TestEvent(type="done", summary=summary, coverage=per_pou if outcome.coverage is not None else None))
         finally:
             loop.call_soon_threadsafe(queue.put_nowait, None)
 

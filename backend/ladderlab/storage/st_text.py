@@ -12,6 +12,7 @@ import re
 from dataclasses import dataclass
 
 from ..model import Pou
+from ..model.project import PouKind
 
 _TOKEN = re.compile(
     r"""
@@ -23,7 +24,7 @@ _TOKEN = re.compile(
     re.VERBOSE | re.DOTALL,
 )
 
-POU_KEYWORDS = {"PROGRAM": "program", "FUNCTION_BLOCK": "function_block", "FUNCTION": "function"}
+POU_KEYWORDS: dict[str, PouKind] = {"PROGRAM": "program", "FUNCTION_BLOCK": "function_block", "FUNCTION": "function"}
 POU_END = {"program": "END_PROGRAM", "function_block": "END_FUNCTION_BLOCK", "function": "END_FUNCTION"}
 POU_HEADER = {kind: keyword for keyword, kind in POU_KEYWORDS.items()}
 VAR_SECTIONS = {
@@ -156,6 +157,7 @@ def compose_pou_text(pou: Pou) -> str:
     header = f"{POU_HEADER[pou.kind]} {pou.name}"
     if pou.kind == "function":
         header += f" : {pou.return_type}"
+    assert isinstance(pou.body, str), "only ST POUs are stored as text"
     parts = [header]
     if pou.declarations:
         parts.append(pou.declarations)
