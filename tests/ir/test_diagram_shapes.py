@@ -165,9 +165,9 @@ def test_boxes_of_other_shapes_get_their_own_check():
     )
     diagnostics = [d.format() for d in lower_project(project(pou, MY_FB, TWICE)).diagnostics]
     assert diagnostics == [
-        f"POU Main, network n{n}, element x{n}, pin PT: error ST-TYPE-MISMATCH: input PT of TON: expected TIME, got "
+        f"POU Main, network {n}, TON tn1.PT: error ST-TYPE-MISMATCH: input PT of TON: expected TIME, got "
         "INT without a conversion such as INT_TO_TIME"
-        for n in (1, 2)
+        for n in (2, 3)
     ]
 
 

@@ -307,6 +307,7 @@ class Simulation:
                 time_ms=now,
                 scan=self.scan_count,
                 instance_path=self._instance_path,
+                places=self.compiled.program.places,
             )
         )
 
@@ -353,6 +354,7 @@ class Simulation:
                 time_ms=now,  # type: ignore[arg-type]
                 scan=self.scan_count,
                 instance_path=self._instance_path,
+                places=self.compiled.program.places,
             )
         finally:
             self._watchdog.deadline = float("inf")

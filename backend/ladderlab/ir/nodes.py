@@ -12,6 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Literal
 
+from ..model.places import ProjectPlaces
 from .types import IrType
 
 # --------------------------------------------------------------------------- origin
@@ -289,3 +290,5 @@ class Program:
     pous: dict[str, Pou]
     globals: list[Slot]
     tasks: list[TaskSpec] = field(default_factory=list)
+    #: the LD/FBD elements' names as the user sees them, for runtime faults (model/places.py)
+    places: ProjectPlaces | None = None

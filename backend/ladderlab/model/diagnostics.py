@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from typing import Literal
 
-from pydantic import BaseModel, ConfigDict
+from pydantic import BaseModel, ConfigDict, Field
 
 Severity = Literal["error", "warning", "info"]
 
@@ -24,16 +24,20 @@ class Diagnostic(BaseModel):
     file: str | None = None
     json_path: str | None = None
     pou: str | None = None
-    network: str | None = None
-    element: str | None = None
+    network: str | None = Field(default=None, description="LD/FBD: the network's id (for the editor to reveal it).")
+    element: str | None = Field(default=None, description="LD/FBD: the element's id.")
     pin: str | None = None
+    place: str | None = Field(
+        default=None,
+        description='LD/FBD: where it is in the user\'s words, e.g. network 2 "Motor timer", TON RunTimer.PT.',
+    )
     line: int | None = None
     column: int | None = None
     end_line: int | None = None
     end_column: int | None = None
 
     def location(self) -> str:
-        """Human-readable location prefix, e.g. ``pous/Main.st:3:7`` or ``POU Main, network n1``."""
+        """Human-readable location prefix, e.g. ``pous/Main.st:3:7`` or ``POU Main, network 1 "Start", coil Motor``."""
         parts: list[str] = []
         if self.file:
             where = self.file
@@ -51,6 +55,9 @@ class Diagnostic(BaseModel):
                 if self.column is not None:
                     pou += f" column {self.column}"
             parts.append(pou)
+        if self.place:
+            parts.append(self.place)
+            return ", ".join(parts)
         if self.network:
             parts.append(f"network {self.network}")
         if self.element:

@@ -22,7 +22,7 @@ from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedTok
 from ..model.diagnostics import Diagnostic
 from . import ast
 from .comments import attach_comments, blank_nested_comments
-from .errors import describe_unexpected, last_token, would_accept
+from .errors import describe_unexpected, last_token, literal_problem, would_accept
 from .nesting import too_deep
 from .quick_decls import quick_declarations
 from .transformer import AstBuilder, StSyntaxError
@@ -93,6 +93,22 @@ def _parser(tests: bool = False) -> Lark:
         maybe_placeholders=True,
         cache=False,
     )
+
+
+#: The lexer's prefixed literal terminals (LEX-21, LEX-40..52).
+_LITERAL_TERMINALS = ("DURATION", "DATE_LITERAL", "TOD_LITERAL", "DT_LITERAL", "BASED_INTEGER")
+
+
+@functools.cache
+def literal_patterns() -> dict[str, str]:
+    """Terminal name -> the regular expression the lexer reads that literal with (case-insensitive)."""
+    return {t.name: t.pattern.value for t in _parser().terminals if t.name in _LITERAL_TERMINALS}
+
+
+def _complete_literal(text: str) -> bool:
+    """Whether ``text`` (trailing spaces aside) is one whole literal of the lexer's prefixed forms."""
+    stripped = text.strip()
+    return any(re.fullmatch(p, stripped, re.IGNORECASE) for p in literal_patterns().values())
 
 
 @functools.cache
@@ -187,7 +203,7 @@ _NESTING_NEEDS = 100  # characters: a shorter text cannot nest anywhere near the
 
 def _run(text: str, start: str, file: str | None, pou: str | None = None) -> ParseResult:
     diagnostics: list[Diagnostic] = []
-    report = _Reporter(diagnostics, file, pou)
+    report = _Reporter(diagnostics, file, pou, text)
     try:
         tree = _parser(start in _TEST_STARTS).parse(text, start=start, on_error=report.recover)
     except UnexpectedInput as error:
@@ -222,10 +238,11 @@ def _diagnostic(
 class _Reporter:
     """lark ``on_error`` handler: records each error and decides whether parsing can go on."""
 
-    def __init__(self, diagnostics: list[Diagnostic], file: str | None, pou: str | None):
+    def __init__(self, diagnostics: list[Diagnostic], file: str | None, pou: str | None, text: str):
         self.diagnostics = diagnostics
         self.file = file
         self.pou = pou
+        self.text = text
         self._reported: set[int] = set()
 
     def seen(self, error: UnexpectedInput) -> bool:
@@ -234,6 +251,10 @@ class _Reporter:
     def add(self, error: UnexpectedInput, severity: str = "error") -> None:
         self._reported.add(id(error))
         message, span = describe_unexpected(error, _terminal_text())
+        message = literal_problem(self.text, span.line, span.column, _complete_literal) or message
+        last = self.diagnostics[-1] if self.diagnostics else None
+        if last is not None and (last.message, last.line) == (message, span.line):
+            return  # one malformed literal can trip the lexer twice
         self.diagnostics.append(_diagnostic(message, span, self.file, self.pou, severity))
 
     def recover(self, error: UnexpectedInput) -> bool:
