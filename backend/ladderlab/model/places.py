@@ -38,7 +38,7 @@ def _calls(calls: list[tuple[str, str | None, str]]) -> dict[str, str]:
             counts[call.upper()] = counts.get(call.upper(), 0) + 1
     names, seen = {}, dict.fromkeys(counts, 0)
     for element_id, instance, call in calls:
-        if (instance or "").strip():
+        if instance and instance.strip():
             names[element_id] = f"{call.strip()} {instance.strip()}"
         elif counts[call.upper()] > 1:
             seen[call.upper()] += 1
@@ -128,7 +128,8 @@ class Places:
         """``network 2 "Motor timer", TON RunTimer.PT`` (as much as is known), or None for an unknown network."""
         if self._networks is None:
             self._networks = {}
-            for number, network in enumerate(self.body.networks, 1):
+            networks: list[ld.LdNetwork | fbd.FbdNetwork] = list(self.body.networks)
+            for number, network in enumerate(networks, 1):
                 name = network_name(number, network.label)
                 if network.id in self._networks:  # a file edited by hand: say which networks share the id
                     name = f"{self._networks[network.id][0]} or {name} (the same id '{network.id}')"
@@ -136,9 +137,9 @@ class Places:
         found = self._networks.get(network_id)
         if found is None:
             return None
-        network, names = found
+        name, names = found
         element = names.get(element_id, pin) if element_id is not None else None
-        return f"{network}, {element}" if element else network
+        return f"{name}, {element}" if element else name
 
 
 class ProjectPlaces:
