@@ -76,14 +76,14 @@ TEST_KEYWORDS = frozenset(
 
 
 @functools.cache
-def _keywords() -> frozenset[str]:
+def keywords() -> frozenset[str]:
     """Every keyword of the grammar, upper case."""
     return frozenset(_KEYWORD_RE.findall(GRAMMAR.read_text(encoding="utf-8")))
 
 
 @functools.cache
 def _parser(tests: bool = False) -> Lark:
-    reserved = _keywords() - {"TRUE", "FALSE"} - _SOFT_KEYWORDS - TEST_KEYWORDS
+    reserved = keywords() - {"TRUE", "FALSE"} - _SOFT_KEYWORDS - TEST_KEYWORDS
     return Lark(
         GRAMMAR.read_text(encoding="utf-8"),
         parser="lalr",
@@ -150,7 +150,7 @@ def parse_declarations(
     Plain ``name, name : Type;`` blocks are read without the LALR parser (``quick_decls``), with the same result.
     """
     prepared = _prepare(text, nested_comments)
-    quick = quick_declarations(prepared, _keywords())
+    quick = quick_declarations(prepared, keywords())
     parsed = ParseResult(quick) if quick is not None else _run(prepared, "start_decls", file, pou=pou)
     return _finish(parsed, text, file, pou)
 
