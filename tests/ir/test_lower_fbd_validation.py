@@ -234,3 +234,23 @@ def test_property_any_fbd_lowers_or_reports_located_diagnostics(networks):
     for diagnostic in result.diagnostics:
         assert diagnostic.pou == "Main" and diagnostic.network is not None, diagnostic
     assert (result.program is None) == any(d.severity == "error" for d in result.diagnostics)
+
+
+def test_a_program_in_a_block_a_bit_as_output_and_a_malformed_label():
+    """The diagram checks FBD shares with LD (docs/diagnostics.md): each reported at its block, output or network."""
+    other = fbd_pou("Other", "")
+    main = fbd_pou(
+        "Main",
+        "VAR a : BOOL; w : WORD; END_VAR",
+        net("n1", [blk("x", "Other")], []),
+        net("n2", [inp("i", "a"), out("o", "w.3")], [("i.OUT", "o.IN")]),
+        net("n3", [], [], label="2go"),
+    )
+    assert errors(main, other) == [
+        "POU Main, network 3 \"2go\": error FBD-BAD-LABEL: network label '2go' must be an identifier or an unsigned "
+        "integer",
+        "POU Main, network 1, Other: error FBD-NOT-CALLABLE: Other is a program: programs are run by tasks, not called "
+        "from a diagram",
+        "POU Main, network 2, output w.3: error FBD-BIT-TARGET: the output cannot write a single bit ('w.3') yet: "
+        "write a BOOL variable and copy it into the bit in ST",
+    ]

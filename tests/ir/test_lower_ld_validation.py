@@ -277,3 +277,12 @@ def test_many_problems_are_reported_without_comparing_each_with_all_before(monke
         "POU Main, network 300, contact Strat: error ST-UNKNOWN-VAR: unknown variable 'Strat'"
     )
     assert len(comparisons) < 300
+
+
+def test_an_in_out_pin_needs_a_variable_not_the_rung():
+    """VAR-51: an in-out is passed by reference; a series of contacts is a computed value."""
+    bump = ld_pou("Bump", "VAR_IN_OUT x : BOOL; END_VAR VAR_INPUT go : BOOL; END_VAR", kind="function_block")
+    main = ld_pou("Main", "VAR a : BOOL; u : Bump; END_VAR", rung("n1", box("b", "Bump", "u", X=[contact("c", "a")])))
+    assert errors(main, bump) == [
+        "POU Main, network 1, Bump u.X: error LD-IN-OUT: in-out X of Bump needs a variable, not a computed value"
+    ]

@@ -291,4 +291,4 @@ class Program:
     globals: list[Slot]
     tasks: list[TaskSpec] = field(default_factory=list)
     #: the LD/FBD elements' names as the user sees them, for runtime faults (model/places.py)
-    places: ProjectPlaces | None = None
+    places: ProjectPlaces | None = field(default=None, repr=False, compare=False)

@@ -6,11 +6,11 @@ problem the same way and jump to where it is.
 
 from __future__ import annotations
 
-from typing import Literal
+from pydantic import BaseModel, ConfigDict, Field, field_validator
 
-from pydantic import BaseModel, ConfigDict, Field
+from . import codes
 
-Severity = Literal["error", "warning", "info"]
+Severity = codes.Severity
 
 
 class Diagnostic(BaseModel):
@@ -19,7 +19,7 @@ class Diagnostic(BaseModel):
     model_config = ConfigDict(extra="forbid")
 
     severity: Severity = "error"
-    code: str
+    code: str = Field(description="What kind of problem it is: an entry of docs/diagnostics.md (model/codes.py).")
     message: str
     file: str | None = None
     json_path: str | None = None
@@ -35,6 +35,12 @@ class Diagnostic(BaseModel):
     column: int | None = None
     end_line: int | None = None
     end_column: int | None = None
+
+    @field_validator("code")
+    @classmethod
+    def _recorded(cls, code: str) -> str:
+        codes.record(code)  # the test suite's account of the codes it produced (model/codes.py)
+        return code
 
     def location(self) -> str:
         """Human-readable location prefix, e.g. ``pous/Main.st:3:7`` or ``POU Main, network 1 "Start", coil Motor``."""

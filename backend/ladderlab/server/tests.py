@@ -16,6 +16,7 @@ from __future__ import annotations
 import asyncio
 import threading
 from collections.abc import AsyncIterator
+from typing import Any
 
 from fastapi import APIRouter, Request
 from fastapi.responses import StreamingResponse
@@ -71,7 +72,12 @@ def check_tests(body: TestCheckRequest, limits: LimitsDep) -> TestFileInfo:
     return _file_info(prepared, prepared.tests)
 
 
-@router.post("/run", responses=responses(404, 413, 422))
+_EVENTS: dict[int | str, dict[str, Any]] = {
+    200: {"model": TestEvent, "description": "One TestEvent per line (application/x-ndjson)."}
+}
+
+
+@router.post("/run", responses={**_EVENTS, **responses(404, 413, 422)})
 async def run_tests(body: TestRunRequest, limits: LimitsDep) -> StreamingResponse:
     """Run every test, one file's or one test; answers a stream of ``TestEvent`` JSON lines."""
     check_project_size(body.project, limits)
