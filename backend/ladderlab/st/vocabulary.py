@@ -15,7 +15,7 @@ from __future__ import annotations
 from typing import Any
 
 from ..iec import stdlib
-from ..iec.elementary import ALIASES, ELEMENTARY, GENERIC
+from ..iec.elementary import ALIASES, ELEMENTARY, GENERIC, STRING_TYPES
 from ..iec.literals import LITERAL_FORMS
 from ..iec.value_text import format_value
 from ..iec.values import f32
@@ -83,8 +83,13 @@ def vocabulary() -> dict[str, Any]:
         "elementary": [
             {"name": e.name, "category": e.category, "bits": e.bits, "signed": e.signed} for e in ELEMENTARY.values()
         ],
+        "strings": list(STRING_TYPES),
         "aliases": dict(ALIASES),
-        "generic": {family: _order(members) for family, members in GENERIC.items()},
+        # ANY_STRING is not in GENERIC: the checker tells strings by their own type (st/types.py in_family)
+        "generic": {
+            **{family: _order(members) for family, members in GENERIC.items()},
+            "ANY_STRING": list(STRING_TYPES),
+        },
         "widening": _widenings(),
         "conversions": {
             "pattern": "{from}_TO_{to}",

@@ -2199,6 +2199,7 @@ export const IEC = {
     ],
     ANY_NUM: ["SINT", "INT", "DINT", "LINT", "USINT", "UINT", "UDINT", "ULINT", "REAL", "LREAL"],
     ANY_REAL: ["REAL", "LREAL"],
+    ANY_STRING: ["STRING", "WSTRING"],
   },
   keywords: [
     "AND",
@@ -2317,6 +2318,7 @@ export const IEC = {
       rule: "a hexadecimal number is 16# then the digits 0-9 and A-F",
     },
   ],
+  strings: ["STRING", "WSTRING"],
   test_keywords: [
     "END_SETUP",
     "END_TEARDOWN",
