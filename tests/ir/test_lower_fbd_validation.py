@@ -73,6 +73,10 @@ CASES = {
         net("n1", [inp("i", "n"), blk("x", "ADD"), out("o", "m")], [("i.OUT", "x.IN1"), ("x.OUT", "o.IN")]),
         "POU Main, network 1, ADD.IN2: error FBD-MISSING-PIN: input IN2 of ADD is not connected",
     ),
+    "input without operand": (
+        net("n1", [inp("i", ""), out("o", "a")], [("i.OUT", "o.IN")]),
+        "POU Main, network 1, input (no operand): error FBD-MISSING-OPERAND: the input has no operand",
+    ),
     "dangling output node": (
         net("n1", [out("o", "a")], []),
         "POU Main, network 1, output a: error FBD-DANGLING: the output has no input wire",

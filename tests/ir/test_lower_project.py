@@ -174,3 +174,13 @@ def test_a_lowering_failure_nothing_explains_is_reported_never_dropped():
         "Main/body:1:1, POU Main: error IR-INTERNAL: this could not be lowered (an internal error of LadderLab: "
         "please report it)"
     ]
+
+
+def test_a_task_interval_that_is_not_a_time_literal_stops_the_build():
+    """BAD-INTERVAL (docs/diagnostics.md): ``10ms`` lacks the ``T#`` of a TIME literal."""
+    project = _project([Pou(name="Main", kind="program", language="st")], [Task(name="Main", interval="10ms")])
+    result = lower_project(project)
+    assert result.program is None
+    assert [d.format() for d in result.diagnostics] == [
+        "$.tasks[0].interval: error BAD-INTERVAL: task Main: interval '10ms' is not a TIME literal such as T#10ms"
+    ]

@@ -410,3 +410,19 @@ def test_an_enumeration_value_of_several_types_must_be_named_with_its_type():
 def test_more_initial_values_than_array_elements():
     found = errors("", declarations="VAR a : ARRAY[1..3] OF INT := [1, 2, 3, 4]; END_VAR")
     assert found == [("error", "ST-INIT", 1, 32, "4 initial values for an array of 3 elements")]
+
+
+def test_a_pou_that_assigns_its_own_input_is_warned():
+    """ST-INPUT-WRITE (docs/diagnostics.md): legal ST, but the caller's value is lost; a warning, not an error."""
+    pump = Pou(name="Pump", kind="function_block", language="st", declarations="VAR_INPUT speed : INT; END_VAR")
+    found = check_project(Project(name="p", pous=[pump.model_copy(update={"body": "speed := 0;"})])).diagnostics
+    assert [(d.severity, d.code, d.pou, d.line, d.column, d.message) for d in found] == [
+        (
+            "warning",
+            "ST-INPUT-WRITE",
+            "Pump",
+            1,
+            1,
+            "'speed' is an input of Pump: assigning it overwrites the caller's value",
+        )
+    ]

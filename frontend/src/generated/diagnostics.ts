@@ -736,10 +736,11 @@ export const DIAGNOSTICS = {
     "PLCOPEN-DECL": {
       anchor: "plcopen-decl",
       area: "plcopen",
-      example: '<variable name="x"><type><derived name="Missing"/></type></variable>',
+      example: '<variable name="x"><type/></variable>',
       example_language: "xml",
-      example_note: "",
-      fix: "the message names the variable; declare the type, or correct the declaration after import.",
+      example_note:
+        "An empty type element (read as BOOL), an unknown type or value element, an initial value that is not ST.",
+      fix: "the message says what was assumed or dropped; correct the declaration in the exporting tool or after import.",
       severity: "error",
       summary: "A variable declaration of the document cannot be imported as it is.",
     },
