@@ -103,6 +103,9 @@ export function stCompletionSource(completions: () => StCompletions) {
     }
     const word = context.matchBefore(/[A-Za-z_][A-Za-z0-9_]*/);
     if (!word && !context.explicit) return null;
-    return { from: word ? word.from : context.pos, options: completions().options, validFor: /^[A-Za-z0-9_]*$/ };
+    // A keyword or type typed out in full is not offered again, so Enter after `THEN` starts a new line.
+    const typed = word?.text.toUpperCase();
+    const options = completions().options.filter((o) => !(LANGUAGE_WORDS.includes(o) && o.label === typed));
+    return { from: word ? word.from : context.pos, options, validFor: /^[A-Za-z0-9_]*$/ };
   };
 }

@@ -171,6 +171,9 @@ describe("ST autocomplete (issue 9: variables, standard functions with a formal 
         .map((o) => o.label),
     ).toEqual(["Start", "TON"]);
     expect(at("x := ")).toBeNull();
+    // A keyword typed out in full is not offered (Enter then starts a new line); its prefix is.
+    expect(at("IF x then")?.options.map((o) => o.label)).not.toContain("THEN");
+    expect(at("IF x the")?.options.map((o) => o.label)).toContain("THEN");
     expect(at("x := ", true)?.from).toBe(5);
   });
 });
