@@ -255,6 +255,6 @@ def test_a_program_in_a_block_a_bit_as_output_and_a_malformed_label():
         "integer",
         "POU Main, network 1, Other: error FBD-NOT-CALLABLE: Other is a program: programs are run by tasks, not called "
         "from a diagram",
-        "POU Main, network 2, output w.3: error FBD-BIT-TARGET: the output cannot write a single bit ('w.3') yet: "
-        "write a BOOL variable and copy it into the bit in ST",
+        "POU Main, network 2, output w.3: error FBD-BIT-TARGET: the output cannot write a single bit or part ('w.3') "
+        "yet: write a variable and copy it into the bit in ST",
     ]

@@ -48,6 +48,7 @@ _KIND = {
     "return": "a return",
     "connector": "a connector",
     "continuation": "a continuation",
+    "comment": "a comment",
 }
 
 

@@ -50,6 +50,8 @@ _TABLE: list[tuple[str, str, Severity, str]] = [
     ("project", "BAD-NAME", "error", "A POU or test file name is not a valid name."),
     ("project", "DUPLICATE-POU", "error", "Two POUs have the same name (names ignore case)."),
     ("project", "DUPLICATE-TASK", "error", "Two tasks have the same name."),
+    ("project", "DUPLICATE-INSTANCE", "error", "One program instance is run by two tasks."),
+    ("project", "TASKS-AND-CONFIGURATION", "error", "A project has both a task list and a configuration."),
     ("project", "DUPLICATE-TEST-FILE", "error", "Two test files have the same name."),
     ("project", "MISSING-RETURN-TYPE", "error", "A FUNCTION has no return type."),
     ("project", "UNEXPECTED-RETURN-TYPE", "error", "A PROGRAM or FUNCTION_BLOCK has a return type."),
@@ -64,6 +66,8 @@ _TABLE: list[tuple[str, str, Severity, str]] = [
     ("files", "EXISTS", "error", "A project of that name exists already."),
     ("files", "CONFLICT", "error", "The project changed since it was opened; the save was refused."),
     ("files", "DISK-FULL", "error", "The disk is full: nothing was saved."),
+    ("files", "BAD-ENCODING", "error", "A text file is not in the encoding it is read in (UTF-8 unless told)."),
+    ("files", "BAD-OPTION", "error", "A command-line option has a value the command cannot use."),
     # requests to the server
     ("requests", "BAD-REQUEST", "error", "A request to the server does not have the expected shape."),
     # structured text (st/)
@@ -78,6 +82,9 @@ _TABLE: list[tuple[str, str, Severity, str]] = [
     ("st", "ST-UNKNOWN-VAR", "error", "A name is used that is not declared."),
     ("st", "ST-UNKNOWN-TYPE", "error", "A type name is not an elementary, standard or declared type."),
     ("st", "ST-UNKNOWN-POU", "error", "A call names a function that does not exist."),
+    ("st", "ST-ADDRESS", "error", "A direct address (%IX0.0, %QW4) is malformed or does not fit its variable."),
+    ("st", "ST-REF", "error", "A reference (REF, ADR) to a variable that may not be referred to."),
+    ("st", "ST-CONFIG", "error", "A CONFIGURATION text does not describe a valid configuration."),
     ("st", "ST-UNKNOWN-MEMBER", "error", "A structure, function block or value has no member of that name."),
     ("st", "ST-NOT-ACCESSIBLE", "error", "A function block's internal variable is used from outside it."),
     ("st", "ST-NOT-CALLABLE", "error", "Something that cannot be called is called."),

@@ -122,6 +122,8 @@ def display_type(ty: t.IrType) -> DisplayType:
         return DisplayType(name=ty.name, names={str(value): name for name, value in ty.values})
     if isinstance(ty, t.Array):
         return DisplayType(name="ARRAY")
+    if isinstance(ty, t.Reference):  # it has no name of its own (ty.name raised AttributeError)
+        return DisplayType(name="REF_TO")
     return DisplayType(name=ty.fb if isinstance(ty, t.FbInstance) else ty.name)
 
 

@@ -19,6 +19,7 @@ from typing import Any
 from lark import Lark, Token
 from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedToken
 
+from ..iec.elementary import ALIASES, ELEMENTARY, GENERIC, STRING_TYPES
 from ..model.diagnostics import Diagnostic
 from . import ast
 from .comments import attach_comments, blank_nested_comments
@@ -28,7 +29,7 @@ from .quick_decls import quick_declarations
 from .transformer import AstBuilder, StSyntaxError
 
 GRAMMAR = pathlib.Path(__file__).with_name("iec61131.lark")
-_STARTS = ["start_source", "start_pou", "start_decls", "start_stmts", "start_expr"]
+_STARTS = ["start_source", "start_pou", "start_decls", "start_stmts", "start_expr", "start_type", "start_config_blocks"]
 # Test files get a parser of their own from the same grammar: built from start_tests alone, its tables are
 # the only ones where the test keywords (END_TEST, MOCK ...) may follow a statement. (One LALR table for
 # all starts would merge them into the lookaheads of statements everywhere: ``x := 1; mock := 2;`` in a
@@ -76,14 +77,30 @@ TEST_KEYWORDS = frozenset(
 
 
 @functools.cache
-def keywords() -> frozenset[str]:
-    """Every keyword of the grammar, upper case."""
+def grammar_keywords() -> frozenset[str]:
+    """Every keyword of the grammar, upper case (the contextual and the test files' ones too)."""
     return frozenset(_KEYWORD_RE.findall(GRAMMAR.read_text(encoding="utf-8")))
 
 
 @functools.cache
+def keywords() -> frozenset[str]:
+    """Words that are never names (KW-01, KW-02's hard keywords): the grammar's keywords but the contextual ones
+    (``_SOFT_KEYWORDS``, used as names by real libraries) and the test files' ones, TRUE/FALSE and the operator
+    words."""
+    return (grammar_keywords() - _SOFT_KEYWORDS - TEST_KEYWORDS) | {"TRUE", "FALSE", "AND", "OR", "XOR", "NOT", "MOD"}
+
+
+@functools.cache
+def reserved_words() -> frozenset[str]:
+    """Words that cannot be declared as variable, field or type names: ``keywords()`` and the names of the
+    elementary and generic types (KW-02). (IEC 61131-3 ed. 3 types LadderLab does not have yet, such as LDT,
+    stay usable, as in edition 2.)"""
+    return keywords() | ELEMENTARY.keys() | ALIASES.keys() | GENERIC.keys() | set(STRING_TYPES)
+
+
+@functools.cache
 def _parser(tests: bool = False) -> Lark:
-    reserved = keywords() - {"TRUE", "FALSE"} - _SOFT_KEYWORDS - TEST_KEYWORDS
+    reserved = grammar_keywords() - {"TRUE", "FALSE"} - _SOFT_KEYWORDS - TEST_KEYWORDS
     return Lark(
         GRAMMAR.read_text(encoding="utf-8"),
         parser="lalr",
@@ -150,7 +167,7 @@ def parse_declarations(
     Plain ``name, name : Type;`` blocks are read without the LALR parser (``quick_decls``), with the same result.
     """
     prepared = _prepare(text, nested_comments)
-    quick = quick_declarations(prepared, keywords())
+    quick = quick_declarations(prepared, grammar_keywords())
     parsed = ParseResult(quick) if quick is not None else _run(prepared, "start_decls", file, pou=pou)
     return _finish(parsed, text, file, pou)
 
@@ -167,6 +184,16 @@ def parse_expression(
 ) -> ParseResult:
     """One operand or expression, e.g. an LD contact's ``T1.Q`` or a pin's ``arr[i] + 1``."""
     return _finish(_run(_prepare(text, nested_comments), "start_expr", file, pou=pou), text, file, pou)
+
+
+def parse_type(text: str, *, file: str | None = None, pou: str | None = None) -> ParseResult:
+    """One type specification, e.g. a function's result type: ``INT``, ``STRING[20]``, ``ARRAY [1..3] OF TRec``."""
+    return _run(text, "start_type", file, pou=pou)
+
+
+def parse_config_blocks(text: str, *, file: str | None = None) -> ParseResult:
+    """VAR_ACCESS and VAR_CONFIG blocks (a configuration's texts): ``list[AccessBlock | ConfigBlock]``."""
+    return _finish(_run(text, "start_config_blocks", file), text)
 
 
 def parse_tests(text: str, *, file: str | None = None, nested_comments: bool = False) -> ParseResult:

@@ -20,7 +20,7 @@ from ..iec.literals import LITERAL_FORMS
 from ..iec.value_text import format_value
 from ..iec.values import f32
 from . import types as t
-from .parser import TEST_KEYWORDS, keywords, literal_patterns
+from .parser import TEST_KEYWORDS, grammar_keywords, literal_patterns
 
 #: Values the browser must write exactly as the engine does: (type, value in the value model).
 VALUE_SAMPLES: list[tuple[str, Any]] = [
@@ -116,7 +116,7 @@ def vocabulary() -> dict[str, Any]:
             }
             for fb in stdlib.FUNCTION_BLOCKS.values()
         ],
-        "keywords": sorted(keywords() - TEST_KEYWORDS),
+        "keywords": sorted(grammar_keywords() - TEST_KEYWORDS),
         "test_keywords": sorted(TEST_KEYWORDS),
         "literals": [
             {"name": form.name, "prefixes": list(form.prefixes), "rule": form.rule, "examples": list(form.examples)}

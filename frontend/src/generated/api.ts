@@ -195,6 +195,27 @@ export interface paths {
     patch?: never;
     trace?: never;
   };
+  "/api/projects/{name}/document": {
+    parameters: {
+      query?: never;
+      header?: never;
+      path?: never;
+      cookie?: never;
+    };
+    /**
+     * Get Document
+     * @description What the print view draws: the saved project (or the POUs named by ``pou``, repeatable), its revision,
+     *     each POU's declarations, the block catalogue and the cross-reference list.
+     */
+    get: operations["get_document_api_projects__name__document_get"];
+    put?: never;
+    post?: never;
+    delete?: never;
+    options?: never;
+    head?: never;
+    patch?: never;
+    trace?: never;
+  };
   "/api/projects/{name}/export/plcopen": {
     parameters: {
       query?: never;
@@ -322,6 +343,26 @@ export interface paths {
     };
     /** Get Variables */
     get: operations["get_variables_api_projects__name__variables_get"];
+    put?: never;
+    post?: never;
+    delete?: never;
+    options?: never;
+    head?: never;
+    patch?: never;
+    trace?: never;
+  };
+  "/api/projects/{name}/xref": {
+    parameters: {
+      query?: never;
+      header?: never;
+      path?: never;
+      cookie?: never;
+    };
+    /**
+     * Get Xref
+     * @description Every variable and direct address: where it is declared, read, written and (FB instances) called.
+     */
+    get: operations["get_xref_api_projects__name__xref_get"];
     put?: never;
     post?: never;
     delete?: never;
@@ -666,6 +707,34 @@ export interface components {
       type: "compare";
     };
     /**
+     * Configuration
+     * @description The IEC configuration a project runs as (CONFIGURATION ... END_CONFIGURATION, CFG-01..08).
+     */
+    Configuration: {
+      /**
+       * Access
+       * @description ST text of VAR_ACCESS blocks: named access paths.
+       * @default
+       */
+      access?: string;
+      /**
+       * Config
+       * @description ST text of VAR_CONFIG blocks: initial values and addresses.
+       * @default
+       */
+      config?: string;
+      /**
+       * Globals
+       * @description ST text of the configuration's VAR_GLOBAL blocks.
+       * @default
+       */
+      globals?: string;
+      /** Name */
+      name: string;
+      /** Resources */
+      resources?: components["schemas"]["Resource"][];
+    };
+    /**
      * ConflictDetail
      * @description The ``detail`` of a 409 from a save based on an old revision.
      */
@@ -833,6 +902,30 @@ export interface components {
       /** Networks */
       networks?: components["schemas"]["FbdNetwork"][];
     };
+    /**
+     * FbdComment
+     * @description A free comment box (issue 28): text drawn at ``pos`` in a box of ``width`` x ``height`` (None: as the
+     *     text needs); it takes no part in the logic (no pins, no wires, not in the evaluation order).
+     */
+    FbdComment: {
+      /** Height */
+      height?: number | null;
+      /** Id */
+      id: string;
+      pos?: components["schemas"]["Position"] | null;
+      /**
+       * Text
+       * @default
+       */
+      text?: string;
+      /**
+       * @description discriminator enum property added by openapi-typescript
+       * @enum {string}
+       */
+      type: "comment";
+      /** Width */
+      width?: number | null;
+    };
     /** FbdJump */
     FbdJump: {
       /** Id */
@@ -863,6 +956,7 @@ export interface components {
         | components["schemas"]["FbdReturn"]
         | components["schemas"]["Connector"]
         | components["schemas"]["Continuation"]
+        | components["schemas"]["FbdComment"]
       )[];
       /**
        * Order
@@ -936,6 +1030,33 @@ export interface components {
        * @enum {string}
        */
       type: "input";
+    };
+    /**
+     * IoPoint
+     * @description One direct address the program uses, for the I/O view.
+     */
+    IoPoint: {
+      /**
+       * Address
+       * @description The address as written, e.g. '%IX0.1'; also its path for watch and write.
+       */
+      address: string;
+      /**
+       * Area
+       * @description I inputs, Q outputs, M memory, S the Mosaic system area.
+       * @enum {string}
+       */
+      area: "I" | "Q" | "M" | "S";
+      /**
+       * Names
+       * @description Paths of the variables declared AT it (e.g. 'MAIN.START'); empty when it is used without a name.
+       */
+      names?: string[];
+      /**
+       * Type
+       * @description Its elementary type, e.g. 'BOOL' or 'INT'.
+       */
+      type: string;
     };
     /** Jump */
     Jump: {
@@ -1139,8 +1260,80 @@ export interface components {
        */
       return_type?: string | null;
     };
+    /**
+     * PrintDocument
+     * @description What a printed project document holds (issue 28): the print view draws it with the editors' own layout
+     *     and SVG drawing; ``GET /api/projects/{name}/document`` and ``ladderlab doc`` make it.
+     */
+    PrintDocument: {
+      /**
+       * Date
+       * @description When the document was made, ISO 8601 (UTC).
+       */
+      date: string;
+      /** Globals */
+      globals: components["schemas"]["SymbolInfo"][];
+      /**
+       * Library
+       * @description Standard and user blocks: the pins the diagrams draw.
+       */
+      library: components["schemas"]["LibraryEntry"][];
+      /**
+       * Pous
+       * @description The POUs to print, in project order.
+       */
+      pous: string[];
+      project: components["schemas"]["Project"];
+      /** Revision */
+      revision: string;
+      /**
+       * Symbols
+       * @description Each printed POU's declarations, by POU name.
+       */
+      symbols: {
+        [key: string]: components["schemas"]["SymbolInfo"][];
+      };
+      xref: components["schemas"]["XrefList"];
+    };
+    /**
+     * ProgramInstance
+     * @description A program instance: ``PROGRAM name WITH task : type (inputs, outputs)`` (IEC 61131-3 2.7.1, CFG-06).
+     */
+    ProgramInstance: {
+      /**
+       * Inputs
+       * @description VAR_INPUT name -> ST expression (globals, literals) set before each run.
+       */
+      inputs?: {
+        [key: string]: string;
+      };
+      /**
+       * Name
+       * @description The instance's name: watch paths start with it (name.var).
+       */
+      name: string;
+      /**
+       * Outputs
+       * @description VAR_OUTPUT name -> variable (a global) written after each run.
+       */
+      outputs?: {
+        [key: string]: string;
+      };
+      /**
+       * Retain
+       * @description RETAIN: every variable of the instance keeps its value on a warm restart.
+       */
+      retain?: ("RETAIN" | "NON_RETAIN") | null;
+      /**
+       * Type
+       * @description The PROGRAM it is an instance of; two instances of one program are two states.
+       */
+      type: string;
+    };
     /** Project */
     Project: {
+      /** @description The IEC configuration; when given, its resources hold the tasks. */
+      configuration?: components["schemas"]["Configuration"] | null;
       /**
        * Format
        * @default ladderlab/1
@@ -1157,7 +1350,10 @@ export interface components {
       name: string;
       /** Pous */
       pous?: components["schemas"]["Pou"][];
-      /** Tasks */
+      /**
+       * Tasks
+       * @description The tasks of a project without a configuration (one implicit resource).
+       */
       tasks?: components["schemas"]["Task"][];
       /**
        * Tests
@@ -1226,6 +1422,35 @@ export interface components {
        */
       cold?: boolean;
     };
+    /**
+     * Resource
+     * @description A RESOURCE of a configuration (``RESOURCE name ON processor``): its globals and its tasks.
+     */
+    Resource: {
+      /**
+       * Globals
+       * @description ST text of the resource's VAR_GLOBAL blocks.
+       * @default
+       */
+      globals?: string;
+      /**
+       * Name
+       * @description None: the configuration's tasks without a RESOURCE block.
+       */
+      name?: string | null;
+      /**
+       * On
+       * @description The processor type after ON.
+       */
+      on?: string | null;
+      /**
+       * Programs
+       * @description Program instances without a task (they run in a cyclic 10 ms task).
+       */
+      programs?: components["schemas"]["ProgramInstance"][];
+      /** Tasks */
+      tasks?: components["schemas"]["Task"][];
+    };
     /** Return */
     Return: {
       /**
@@ -1292,6 +1517,11 @@ export interface components {
       instances?: {
         [key: string]: string[];
       };
+      /**
+       * Io
+       * @description The direct addresses the program uses (inputs, outputs, memory), in address order.
+       */
+      io?: components["schemas"]["IoPoint"][];
       /**
        * Overruns
        * @description Times the scans fell behind the wall clock and skipped ahead.
@@ -1405,10 +1635,10 @@ export interface components {
     Task: {
       /**
        * Interval
-       * @description IEC TIME literal, e.g. T#10ms.
+       * @description IEC TIME literal, e.g. T#10ms: the task runs cyclically; null: only on SINGLE.
        * @default T#10ms
        */
-      interval?: string;
+      interval?: string | null;
       /** Name */
       name: string;
       /**
@@ -1418,9 +1648,14 @@ export interface components {
       priority?: number;
       /**
        * Programs
-       * @description Program names, run in list order.
+       * @description What the task runs, in list order: a program's name (one instance named after it) or an instance.
        */
-      programs?: string[];
+      programs?: (string | components["schemas"]["ProgramInstance"])[];
+      /**
+       * Single
+       * @description A BOOL global or direct address: the task runs once on each of its rising edges.
+       */
+      single?: string | null;
       /**
        * Watchdog Ms
        * @description The task's time budget per scan in ms (its scan's own running time); longer is a watchdog fault. Null: the default of 100 ms (CODESYS's).
@@ -1679,6 +1914,82 @@ export interface components {
       from: components["schemas"]["PinRef"];
       to: components["schemas"]["PinRef"];
     };
+    /**
+     * XrefAccess
+     * @description One place a variable occurs: its declaration, a read, a write, or a call of an FB instance.
+     */
+    XrefAccess: {
+      /** Column */
+      column?: number | null;
+      /**
+       * Element
+       * @description LD/FBD: the element's id.
+       */
+      element?: string | null;
+      /**
+       * Kind
+       * @enum {string}
+       */
+      kind: "declared" | "read" | "write" | "call";
+      /**
+       * Line
+       * @description ST body line, or the declaration's line in its declarations text.
+       */
+      line?: number | null;
+      /**
+       * Network
+       * @description LD/FBD: the network's id.
+       */
+      network?: string | null;
+      /**
+       * Network Number
+       * @description LD/FBD: the network's number as the editor shows it.
+       */
+      network_number?: number | null;
+      /**
+       * Operand
+       * @description LD/FBD: the element's operand text, e.g. 'RunTimer.Q'.
+       */
+      operand?: string | null;
+      /**
+       * Path
+       * @description What was accessed, e.g. 'RunTimer.Q' or 'arr[i]' (indices as '[]').
+       */
+      path: string;
+      /**
+       * Pou
+       * @description The POU, None for the global declarations (globals.st).
+       */
+      pou: string | null;
+    };
+    /**
+     * XrefEntry
+     * @description A variable: a global, or one POU's own.
+     */
+    XrefEntry: {
+      /** Accesses */
+      accesses: components["schemas"]["XrefAccess"][];
+      /** Address */
+      address?: string | null;
+      /** Comment */
+      comment?: string | null;
+      /** Name */
+      name: string;
+      /**
+       * Pou
+       * @description The POU that declares it, None for a global.
+       */
+      pou: string | null;
+      /** Type */
+      type: string;
+      /** Var Class */
+      var_class: string;
+    };
+    /** XrefList */
+    XrefList: {
+      /** Entries */
+      entries: components["schemas"]["XrefEntry"][];
+    };
   };
   responses: never;
   parameters: never;
@@ -1691,6 +2002,7 @@ export type Box = components["schemas"]["Box"];
 export type CheckReport = components["schemas"]["CheckReport"];
 export type Coil = components["schemas"]["Coil"];
 export type Compare = components["schemas"]["Compare"];
+export type Configuration = components["schemas"]["Configuration"];
 export type ConflictDetail = components["schemas"]["ConflictDetail"];
 export type ConflictResponse = components["schemas"]["ConflictResponse"];
 export type Connector = components["schemas"]["Connector"];
@@ -1702,6 +2014,7 @@ export type Diagnostic = components["schemas"]["Diagnostic"];
 export type ErrorDetail = components["schemas"]["ErrorDetail"];
 export type ErrorResponse = components["schemas"]["ErrorResponse"];
 export type FbdBody = components["schemas"]["FbdBody"];
+export type FbdComment = components["schemas"]["FbdComment"];
 export type FbdJump = components["schemas"]["FbdJump"];
 export type FbdNetwork = components["schemas"]["FbdNetwork"];
 export type FbdOrder = components["schemas"]["FbdOrder"];
@@ -1710,6 +2023,7 @@ export type HttpValidationError = components["schemas"]["HTTPValidationError"];
 export type Health = components["schemas"]["Health"];
 export type ImportReport = components["schemas"]["ImportReport"];
 export type InputNode = components["schemas"]["InputNode"];
+export type IoPoint = components["schemas"]["IoPoint"];
 export type Jump = components["schemas"]["Jump"];
 export type LdBody = components["schemas"]["LdBody"];
 export type LdNetwork = components["schemas"]["LdNetwork"];
@@ -1722,11 +2036,14 @@ export type PinFlags = components["schemas"]["PinFlags"];
 export type PinRef = components["schemas"]["PinRef"];
 export type Position = components["schemas"]["Position"];
 export type Pou = components["schemas"]["Pou"];
+export type PrintDocument = components["schemas"]["PrintDocument"];
+export type ProgramInstance = components["schemas"]["ProgramInstance"];
 export type Project = components["schemas"]["Project"];
 export type ProjectDocument = components["schemas"]["ProjectDocument"];
 export type ProjectSummary = components["schemas"]["ProjectSummary"];
 export type RenameProject = components["schemas"]["RenameProject"];
 export type ResetSimulation = components["schemas"]["ResetSimulation"];
+export type Resource = components["schemas"]["Resource"];
 export type Return = components["schemas"]["Return"];
 export type SaveResult = components["schemas"]["SaveResult"];
 export type ScanTimes = components["schemas"]["ScanTimes"];
@@ -1751,6 +2068,9 @@ export type ValidationError = components["schemas"]["ValidationError"];
 export type VariableChildren = components["schemas"]["VariableChildren"];
 export type VariableNode = components["schemas"]["VariableNode"];
 export type Wire = components["schemas"]["Wire"];
+export type XrefAccess = components["schemas"]["XrefAccess"];
+export type XrefEntry = components["schemas"]["XrefEntry"];
+export type XrefList = components["schemas"]["XrefList"];
 export type $defs = Record<string, never>;
 export interface operations {
   check_unsaved_api_check_post: {
@@ -2289,6 +2609,48 @@ export interface operations {
       };
     };
   };
+  get_document_api_projects__name__document_get: {
+    parameters: {
+      query?: {
+        pou?: string[] | null;
+      };
+      header?: never;
+      path: {
+        name: string;
+      };
+      cookie?: never;
+    };
+    requestBody?: never;
+    responses: {
+      /** @description Successful Response */
+      200: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["PrintDocument"];
+        };
+      };
+      /** @description No such project or POU. */
+      404: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["ErrorResponse"];
+        };
+      };
+      /** @description Bad name, invalid model or a project that does not load; see the diagnostics. */
+      422: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["ErrorResponse"];
+        };
+      };
+    };
+  };
   export_xml_api_projects__name__export_plcopen_get: {
     parameters: {
       query?: never;
@@ -2676,6 +3038,46 @@ export interface operations {
         };
         content: {
           "application/json": components["schemas"]["VariableChildren"];
+        };
+      };
+      /** @description No such project or POU. */
+      404: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["ErrorResponse"];
+        };
+      };
+      /** @description Bad name, invalid model or a project that does not load; see the diagnostics. */
+      422: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["ErrorResponse"];
+        };
+      };
+    };
+  };
+  get_xref_api_projects__name__xref_get: {
+    parameters: {
+      query?: never;
+      header?: never;
+      path: {
+        name: string;
+      };
+      cookie?: never;
+    };
+    requestBody?: never;
+    responses: {
+      /** @description Successful Response */
+      200: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["XrefList"];
         };
       };
       /** @description No such project or POU. */

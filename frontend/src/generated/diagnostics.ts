@@ -17,6 +17,16 @@ export const DIAGNOSTICS = {
     tests: "Unit tests of PLC programs",
   },
   codes: {
+    "BAD-ENCODING": {
+      anchor: "bad-encoding",
+      area: "files",
+      example: "pous/Main.st saved in Windows-1251: byte C4 on line 3 is not UTF-8",
+      example_language: "text",
+      example_note: "",
+      fix: "save the file as UTF-8, or tell the command line its encoding (`--encoding cp1251`); the message names the file, line and column of the first byte that does not decode.",
+      severity: "error",
+      summary: "A text file is not in the encoding it is read in (UTF-8 unless told).",
+    },
     "BAD-FILE": {
       anchor: "bad-file",
       area: "files",
@@ -58,6 +68,16 @@ export const DIAGNOSTICS = {
       fix: "POU names are IEC identifiers: letters, digits and `_`, starting with a letter or `_`, no `__`, at most 64 characters (`MainProgram`). Test file names use letters, digits, `_` and `-`.",
       severity: "error",
       summary: "A POU or test file name is not a valid name.",
+    },
+    "BAD-OPTION": {
+      anchor: "bad-option",
+      area: "files",
+      example: "ladderlab check --encoding latin-99 project/",
+      example_language: "text",
+      example_note: "",
+      fix: "give the option a value it accepts (`--encoding` takes a Python codec name such as `utf-8` or `cp1251`).",
+      severity: "error",
+      summary: "A command-line option has a value the command cannot use.",
     },
     "BAD-PATH": {
       anchor: "bad-path",
@@ -109,6 +129,17 @@ export const DIAGNOSTICS = {
       fix: "free some disk space and save again; the stored project is unchanged.",
       severity: "error",
       summary: "The disk is full: nothing was saved.",
+    },
+    "DUPLICATE-INSTANCE": {
+      anchor: "duplicate-instance",
+      area: "project",
+      example:
+        '{"tasks": [{"name": "Fast", "interval": "T#10ms", "programs": ["Main"]},\n           {"name": "Slow", "interval": "T#100ms", "programs": ["Main"]}]}',
+      example_language: "json",
+      example_note: "",
+      fix: "an instance runs in one task only: remove it from one task, or declare a second program instance and run that one.",
+      severity: "error",
+      summary: "One program instance is run by two tasks.",
     },
     "DUPLICATE-POU": {
       anchor: "duplicate-pou",
@@ -834,6 +865,17 @@ export const DIAGNOSTICS = {
       severity: "warning",
       summary: "The document uses another PLCopen version; it is read as TC6 v2.01.",
     },
+    "ST-ADDRESS": {
+      anchor: "st-address",
+      area: "st",
+      example: "VAR w AT %IW0 : DINT; END_VAR",
+      example_language: "st",
+      example_note:
+        "A type of another width at the address; also a malformed address (`%IX0.8`), a STRING, array or structure at an address, an address in a FUNCTION.",
+      fix: "declare a type of the address's width (`%IW0 : INT` or `UINT`, `%ID0 : DINT`), or correct the address (docs/runtime.md, direct addresses).",
+      severity: "error",
+      summary: "A direct address (%IX0.0, %QW4) is malformed or does not fit its variable.",
+    },
     "ST-AMBIGUOUS": {
       anchor: "st-ambiguous",
       area: "st",
@@ -863,6 +905,17 @@ export const DIAGNOSTICS = {
       fix: "only the first matching branch runs: make the labels disjoint.",
       severity: "warning",
       summary: "Two CASE labels overlap: only the first branch ever runs.",
+    },
+    "ST-CONFIG": {
+      anchor: "st-config",
+      area: "st",
+      example:
+        "CONFIGURATION Plant\n  RESOURCE Cpu ON PLC\n    TASK Fast(INTERVAL := T#10ms, PRIORITY := 1);\n    PROGRAM Main WITH Slow : MainProgram;\n  END_RESOURCE\nEND_CONFIGURATION",
+      example_language: "st",
+      example_note: "",
+      fix: "the message says what is wrong (here: there is no task Slow in this resource); name a task of the resource, give PRIORITY as an integer literal, name each program parameter (`name := value`).",
+      severity: "error",
+      summary: "A CONFIGURATION text does not describe a valid configuration.",
     },
     "ST-CONST-EXPR": {
       anchor: "st-const-expr",
@@ -1074,6 +1127,18 @@ export const DIAGNOSTICS = {
       severity: "error",
       summary: "A POU calls itself, or a type is defined in terms of itself.",
     },
+    "ST-REF": {
+      anchor: "st-ref",
+      area: "st",
+      example:
+        "FUNCTION Twice : INT\nVAR_INPUT x : INT; END_VAR\nVAR p : REF_TO INT; END_VAR\np := REF(x);",
+      example_language: "st",
+      example_note:
+        "A reference to a variable of a FUNCTION or a VAR_TEMP (gone after the call), or to a CONSTANT.",
+      fix: "refer to a variable that outlives the call (a FUNCTION_BLOCK's or program's variable, a global), or pass the value itself.",
+      severity: "error",
+      summary: "A reference (REF, ADR) to a variable that may not be referred to.",
+    },
     "ST-TOO-DEEP": {
       anchor: "st-too-deep",
       area: "st",
@@ -1134,6 +1199,17 @@ export const DIAGNOSTICS = {
       fix: "declare the variable, or correct the name (the message suggests the nearest declared one).",
       severity: "error",
       summary: "A name is used that is not declared.",
+    },
+    "TASKS-AND-CONFIGURATION": {
+      anchor: "tasks-and-configuration",
+      area: "project",
+      example:
+        '{"tasks": [{"name": "Main", "interval": "T#10ms"}], "configuration": {"name": "Plant", "resources": []}}',
+      example_language: "json",
+      example_note: "",
+      fix: "a project with a configuration keeps its tasks in the configuration's resources: move them there, or drop the configuration.",
+      severity: "error",
+      summary: "A project has both a task list and a configuration.",
     },
     "TEST-DECL": {
       anchor: "test-decl",

@@ -1180,6 +1180,25 @@ export const IEC = {
       result: "T",
     },
     {
+      description: "arc tangent of Y/X in -pi..pi",
+      extensible: false,
+      group: "numeric",
+      inputs: [
+        {
+          generic: true,
+          name: "Y",
+          type: "ANY_REAL",
+        },
+        {
+          generic: true,
+          name: "X",
+          type: "ANY_REAL",
+        },
+      ],
+      name: "ATAN2",
+      result: "T",
+    },
+    {
       description: "sum IN1 + IN2 + ... (operator +)",
       extensible: true,
       group: "arithmetic",
@@ -1684,9 +1703,9 @@ export const IEC = {
       group: "string",
       inputs: [
         {
-          generic: false,
+          generic: true,
           name: "IN",
-          type: "STRING",
+          type: "ANY_STRING",
         },
       ],
       name: "LEN",
@@ -1698,9 +1717,9 @@ export const IEC = {
       group: "string",
       inputs: [
         {
-          generic: false,
+          generic: true,
           name: "IN",
-          type: "STRING",
+          type: "ANY_STRING",
         },
         {
           generic: false,
@@ -1709,7 +1728,7 @@ export const IEC = {
         },
       ],
       name: "LEFT",
-      result: "STRING",
+      result: "T",
     },
     {
       description: "the rightmost L characters of IN",
@@ -1717,9 +1736,9 @@ export const IEC = {
       group: "string",
       inputs: [
         {
-          generic: false,
+          generic: true,
           name: "IN",
-          type: "STRING",
+          type: "ANY_STRING",
         },
         {
           generic: false,
@@ -1728,7 +1747,7 @@ export const IEC = {
         },
       ],
       name: "RIGHT",
-      result: "STRING",
+      result: "T",
     },
     {
       description: "L characters of IN from position P (1-based)",
@@ -1736,9 +1755,9 @@ export const IEC = {
       group: "string",
       inputs: [
         {
-          generic: false,
+          generic: true,
           name: "IN",
-          type: "STRING",
+          type: "ANY_STRING",
         },
         {
           generic: false,
@@ -1752,7 +1771,7 @@ export const IEC = {
         },
       ],
       name: "MID",
-      result: "STRING",
+      result: "T",
     },
     {
       description: "IN1, IN2, ... joined",
@@ -1760,18 +1779,18 @@ export const IEC = {
       group: "string",
       inputs: [
         {
-          generic: false,
+          generic: true,
           name: "IN1",
-          type: "STRING",
+          type: "ANY_STRING",
         },
         {
-          generic: false,
+          generic: true,
           name: "IN2",
-          type: "STRING",
+          type: "ANY_STRING",
         },
       ],
       name: "CONCAT",
-      result: "STRING",
+      result: "T",
     },
     {
       description: "IN2 inserted into IN1 after position P",
@@ -1779,14 +1798,14 @@ export const IEC = {
       group: "string",
       inputs: [
         {
-          generic: false,
+          generic: true,
           name: "IN1",
-          type: "STRING",
+          type: "ANY_STRING",
         },
         {
-          generic: false,
+          generic: true,
           name: "IN2",
-          type: "STRING",
+          type: "ANY_STRING",
         },
         {
           generic: false,
@@ -1795,7 +1814,7 @@ export const IEC = {
         },
       ],
       name: "INSERT",
-      result: "STRING",
+      result: "T",
     },
     {
       description: "IN without the L characters from position P",
@@ -1803,9 +1822,9 @@ export const IEC = {
       group: "string",
       inputs: [
         {
-          generic: false,
+          generic: true,
           name: "IN",
-          type: "STRING",
+          type: "ANY_STRING",
         },
         {
           generic: false,
@@ -1819,7 +1838,7 @@ export const IEC = {
         },
       ],
       name: "DELETE",
-      result: "STRING",
+      result: "T",
     },
     {
       description: "IN1 with L characters from position P replaced by IN2",
@@ -1827,14 +1846,14 @@ export const IEC = {
       group: "string",
       inputs: [
         {
-          generic: false,
+          generic: true,
           name: "IN1",
-          type: "STRING",
+          type: "ANY_STRING",
         },
         {
-          generic: false,
+          generic: true,
           name: "IN2",
-          type: "STRING",
+          type: "ANY_STRING",
         },
         {
           generic: false,
@@ -1848,7 +1867,7 @@ export const IEC = {
         },
       ],
       name: "REPLACE",
-      result: "STRING",
+      result: "T",
     },
     {
       description: "position of IN2 in IN1 (1-based, 0 if absent)",
@@ -1856,14 +1875,14 @@ export const IEC = {
       group: "string",
       inputs: [
         {
-          generic: false,
+          generic: true,
           name: "IN1",
-          type: "STRING",
+          type: "ANY_STRING",
         },
         {
-          generic: false,
+          generic: true,
           name: "IN2",
-          type: "STRING",
+          type: "ANY_STRING",
         },
       ],
       name: "FIND",
@@ -2241,6 +2260,8 @@ export const IEC = {
     "PERSISTENT",
     "POINTER",
     "PROGRAM",
+    "READ_ONLY",
+    "READ_WRITE",
     "REF_TO",
     "REPEAT",
     "RESOURCE",
@@ -2255,6 +2276,8 @@ export const IEC = {
     "TYPE",
     "UNTIL",
     "VAR",
+    "VAR_ACCESS",
+    "VAR_CONFIG",
     "VAR_EXTERNAL",
     "VAR_GLOBAL",
     "VAR_INPUT",
