@@ -319,11 +319,15 @@ describe("Check and the Diagnostics panel", () => {
     const editor = await openMain();
     fireEvent.click(screen.getByRole("button", { name: "Check" }));
     const list = await screen.findByRole("list", { name: "Diagnostics" });
-    const items = within(list).getAllByRole("button");
-    expect(items.map((b) => b.textContent)).toEqual([
-      "errorMain, declarations, line 3:12unknown type 'NOPE'ST-UNKNOWN-TYPE",
-      "warningMain, network lamp, element lamp_coilcoil without effectLD-X",
+    // Each diagnostic: the button that reveals it, then its code (which opens the catalogue entry).
+    const buttons = within(list).getAllByRole("button");
+    expect(buttons.map((b) => b.textContent)).toEqual([
+      "errorMain, declarations, line 3:12unknown type 'NOPE'",
+      "ST-UNKNOWN-TYPE",
+      "warningMain, network lamp, element lamp_coilcoil without effect",
+      "LD-X",
     ]);
+    const items = [buttons[0]!, buttons[2]!];
     expect(element(editor, "lamp_coil").getAttribute("class")).toContain("ld-has-diagnostic");
 
     fireEvent.click(items[1]!);
