@@ -5,7 +5,7 @@
 // overwrite deliberately).
 import { useCallback, useEffect, useMemo, useState, type CSSProperties, type FormEvent, type ReactNode } from "react";
 import type { Diagnostic } from "../generated/api";
-import type { LdBody, Pou, Project, TestFile } from "../generated/project";
+import type { LdBody, Pou, Project, TestFile } from "../generated/api";
 import { LdEditor } from "../ld/editor/LdEditor";
 import type { History } from "../ld/history";
 import { operandPath } from "../online/ldBinding";
@@ -16,7 +16,8 @@ import { BottomPanels } from "../panels/BottomPanels";
 import { focusOf, panelsStore, usePanels } from "../panels/store";
 import { StView } from "../stview/StView";
 import { DeclarationsEditor } from "../declarations/DeclarationsEditor";
-import { ELEMENTARY_TYPES, userTypeNames } from "../declarations/model";
+import { userTypeNames } from "../declarations/model";
+import { DECLARABLE_TYPES } from "../iec/vocabulary";
 import { isTestPath, pouOf, symbolsOf, testOf, testPath, useWorkspace, workspaceStore } from "./store";
 import { useTestCheck, useTestCompletions } from "../tests/assist";
 import { coverageLines, coverageMarks, coverageOf } from "../tests/coverage";
@@ -557,7 +558,7 @@ function PouDeclarations({
   const types = useMemo(
     () => [
       ...new Set([
-        ...ELEMENTARY_TYPES,
+        ...DECLARABLE_TYPES,
         ...userTypeNames(userTypes),
         ...library.filter((e) => e.kind === "function_block").map((e) => e.name),
       ]),
