@@ -349,6 +349,7 @@ class Simulation:
                 time_ms=now,
                 scan=self.scan_count,
                 instance_path=self._instance_path,
+                places=self.compiled.program.places,
             )
         )
 
@@ -394,6 +395,7 @@ class Simulation:
                 time_ms=now,
                 scan=self.scan_count,
                 instance_path=self._instance_path,
+                places=self.compiled.program.places,
             )
         finally:
             self._watchdog.deadline = float("inf")

@@ -18,7 +18,7 @@ def source_too_large(project: Project) -> Diagnostic | None:
     """The refusal of a project whose ST text (types, globals, declarations, ST bodies) exceeds the limit."""
     # stripped: a POU read from a .st file keeps its lines by leading blank lines, which cost nothing to parse
     sizes = {
-        pou.name: len(pou.declarations.strip()) + (len(pou.body.strip()) if pou.language == "st" else 0)
+        pou.name: len(pou.declarations.strip()) + (len(pou.body.strip()) if isinstance(pou.body, str) else 0)
         for pou in project.pous
     }
     total = sum(sizes.values()) + len(project.types.strip()) + len(project.globals.strip())

@@ -5,7 +5,7 @@
 // network. On screen a toolbar chooses the POUs, prints, and saves the page as HTML or a diagram as SVG.
 import { useMemo, useRef } from "react";
 import type { LibraryEntry, PrintDocument as Doc, SymbolInfo, XrefEntry } from "../generated/api";
-import type { Pou } from "../generated/project";
+import type { Pou } from "../generated/api";
 import { downloadText } from "../interchange/download";
 import type { FbdBody } from "../fbd/model";
 import type { LdBody } from "../ld/model";
@@ -22,7 +22,12 @@ export interface PrintDocumentProps {
   tools?: { all: readonly string[]; onSelect(pous: string[]): void; onSaveHtml(): void } | null;
 }
 
-const LANGUAGE = { st: "Structured Text", ld: "Ladder Diagram", fbd: "Function Block Diagram" } as const;
+const LANGUAGE = {
+  st: "Structured Text",
+  ld: "Ladder Diagram",
+  fbd: "Function Block Diagram",
+  il: "Instruction List",
+} as const;
 // A plant is a PROGRAM in IEC text (.plant.st); the print names its role.
 const KIND = {
   program: "PROGRAM",
@@ -135,7 +140,7 @@ function PouSection({
     <section className="print-pou" aria-label={title} data-pou={pou.name}>
       <h2>
         {title} <small>{LANGUAGE[pou.language]}</small>
-        {pou.language !== "st" ? (
+        {pou.language === "ld" || pou.language === "fbd" ? (
           <button type="button" className="print-screen-only" onClick={saveSvg}>
             Save diagram as SVG
           </button>
@@ -143,7 +148,7 @@ function PouSection({
       </h2>
       <h3>Declarations</h3>
       <DeclarationTable symbols={symbols} />
-      <h3>{pou.language === "st" ? "Body" : "Networks"}</h3>
+      <h3>{pou.language === "st" || pou.language === "il" ? "Body" : "Networks"}</h3>
       <div ref={diagram}>
         {pou.language === "ld" ? (
           <LdPrint body={pou.body as LdBody} library={library} />

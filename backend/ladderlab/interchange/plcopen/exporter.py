@@ -127,7 +127,7 @@ class _Exporter:
         elif isinstance(pou.body, FbdBody):
             self.fbd_body(body, pou)
         else:
-            formatted_text(body, "ST", pou.body)
+            formatted_text(body, pou.language.upper(), pou.body)  # ST or IL text
 
     def ld_body(self, body: ET.Element, pou: Pou) -> None:
         exporter = LdExporter(sub(body, "LD"), self.signatures, Counter())

@@ -237,7 +237,7 @@ class _Importer:
         body = bodies[0] if bodies else None
         language = next(r.elements(body), None)
         tag = local(language) if language is not None else "ST"
-        if tag in ("SFC", "IL"):
+        if tag == "SFC":
             r.report(
                 "PLCOPEN-UNSUPPORTED",
                 f"POU {pou.name} is written in {tag}, which LadderLab does not support; "
@@ -248,16 +248,17 @@ class _Importer:
                 pou=pou.name,
             )
             return pou.model_copy(update={"body": unsupported_body(tag, language)})
-        if tag == "ST":
-            return pou.model_copy(update={"body": text_content(language)})
+        if tag in ("ST", "IL"):  # IL bodies are IL text like ST bodies are ST text (docs/il.md)
+            return pou.model_copy(update={"body": text_content(language), "language": tag.lower()})
         graph = read_graph(language, r, pou.name, signatures)
         listing = read_network_list(body, r)
         ids = IdMaker(claimed_ids(graph, listing))
         groups = group_by_ladderlab(graph, r, listing)
         if tag == "LD":
             resolve_continuations(graph, r, pou.name)
+            foreign = groups is None
             groups = groups or attach_headers(ld_groups(graph), graph, r)
-            ld = LdImporter(graph, r, pou.name, signatures, ids).body(groups)
+            ld = LdImporter(graph, r, pou.name, signatures, ids, foreign=foreign).body(groups)
             return Pou(
                 name=pou.name,
                 kind=pou.kind,
@@ -338,22 +339,19 @@ def _return_type_elements(text: str) -> list[ET.Element] | None:
 
 
 #: What an unsupported body leaves in the comments of the POU standing in for it.
-_KEPT = {"IL": "the IL text is kept", "SFC": "the names of its steps are kept"}
+_KEPT = {"SFC": "the names of its steps are kept"}
 
 
 def unsupported_body(tag: str, language: ET.Element) -> str:
-    """The ST body standing in for an SFC or IL body: no statements, the original described in line comments.
+    """The ST body standing in for an SFC body: no statements, the original described in line comments.
 
     The POU keeps its interface so that the programs calling it still build (the rest of an imported
     project runs); the comment says, where the user opens the POU, that this body does nothing.
     """
-    if tag == "IL":
-        original = text_content(language).strip().splitlines()
-    else:
-        original = [
-            f"step {s.get('name', '')}{' (initial)' if s.get('initialStep') == 'true' else ''}"
-            for s in language
-            if local(s) == "step"
-        ]
+    original = [
+        f"step {s.get('name', '')}{' (initial)' if s.get('initialStep') == 'true' else ''}"
+        for s in language
+        if local(s) == "step"
+    ]
     lines = [f"// Imported from {tag}, which LadderLab cannot run: this body does nothing. The original {tag}:"]
     return "\n".join(lines + [f"// {line}".rstrip() for line in original])
