@@ -165,6 +165,7 @@ class Simulation:
                 self.programs[key].ll_init(warm)  # type: ignore[attr-defined]
             else:
                 self.programs[key] = self._ns[names.pou_class(pou.name)]()  # type: ignore[operator]
+                self._ns[names.program_instance(pou.name)] = self.programs[key]  # other POUs read it (sfc1.step1.X)
         self._paths = None
 
     @property
@@ -190,6 +191,7 @@ class Simulation:
             self._scan.close()  # type: ignore[attr-defined]
         self._scan, self.halted = None, None
         if self.debugger is not None:
+            self.debugger.waiting_for_transition = False
             self.debugger.arm(None)
         self.faults.clear()
         for task in self._tasks:
@@ -278,6 +280,7 @@ class Simulation:
         self.halted = Halt(
             point, self._instance_path(instance) if instance is not None else None, self.debugger.reason(pid)
         )  # type: ignore[union-attr]
+        self.debugger.halted_at(pid)  # type: ignore[union-attr]
         self.debugger.arm(None)  # type: ignore[union-attr]
         return False
 
@@ -316,10 +319,12 @@ class Simulation:
         return self._continue(None)
 
     def step(self, granularity: str = "statement") -> Halt | None:
-        """Run to the next pause point of this granularity (statement | network | cycle).
+        """Run to the next pause point of this granularity (statement | network | transition | cycle).
 
         Halted: continue the current scan. Not halted: start the next scan and
-        stop at its first such point. Returns the new halt (None: the scan ended)."""
+        stop at its first such point. Returns the new halt (None: the scan ended).
+        ``transition`` stays armed in the scans that follow until an SFC transition
+        fires (``debugger.waiting_for_transition``): run scans to get there."""
         debugger = self._debugging()
         debugger.arm(granularity)
         if self.halted is None:
@@ -335,15 +340,28 @@ class Simulation:
         return self.halted
 
     def set_breakpoint(
-        self, pou: str, *, line: int | None = None, network: str | None = None, element: str | None = None
+        self,
+        pou: str,
+        *,
+        line: int | None = None,
+        network: str | None = None,
+        element: str | None = None,
+        body: str | None = None,
     ) -> list[int]:
-        """Halt before an ST statement (line), an LD/FBD network, or at an element; returns the pause point ids."""
-        return self._debugging().add_breakpoint(pou, line=line, network=network, element=element)
+        """Halt before an ST statement (line), an LD/FBD network, or at an element (an SFC step, transition...);
+        ``body`` names the action or named transition of an SFC POU they are in. Returns the pause point ids."""
+        return self._debugging().add_breakpoint(pou, line=line, network=network, element=element, body=body)
 
     def clear_breakpoint(
-        self, pou: str, *, line: int | None = None, network: str | None = None, element: str | None = None
+        self,
+        pou: str,
+        *,
+        line: int | None = None,
+        network: str | None = None,
+        element: str | None = None,
+        body: str | None = None,
     ) -> None:
-        self._debugging().remove_breakpoint(pou, line=line, network=network, element=element)
+        self._debugging().remove_breakpoint(pou, line=line, network=network, element=element, body=body)
 
     def clear_breakpoints(self) -> None:
         self._debugging().clear_breakpoints()

@@ -170,6 +170,8 @@ def lower_access(node: ast.Expr, ctx: PouContext) -> Var:
         if isinstance(ref, Symbol):
             ctx.reads += 1
             return ctx.var_for(ref)
+        if isinstance(ref, PouInfo) and ref.kind == "PROGRAM":  # another program's outputs or SFC steps (ST-60)
+            return Var("program", ref.name.upper(), FbInstance(ref.name.upper()))
         if isinstance(ref, PouInfo):
             return ctx.result_var()
         if isinstance(node, ast.DirectAddr):

@@ -29,6 +29,7 @@ from .build_limits import data_too_large, source_too_large
 from .context import PouContext
 from .lower_fbd import lower_fbd_body
 from .lower_ld import lower_ld_body
+from .lower_sfc import lower_sfc_body
 from .lower_st import lower_st_body
 from .lower_types import LoweringError, ir_default, unnamed_address
 from .nodes import Assign, Binary, Block, Origin, Pou, Program, Slot, Stmt, TaskSpec, Unary, Var
@@ -39,6 +40,7 @@ LOWER_BODY: dict[str, Callable[[ModelPou, PouContext], list[Block]]] = {
     "st": lower_st_body,
     "ld": lower_ld_body,
     "fbd": lower_fbd_body,
+    "sfc": lower_sfc_body,
 }
 
 #: The task of a project without a task configuration: every PROGRAM once per scan, every 10 ms.

@@ -87,6 +87,11 @@ class _Where(_Request):
     network: str | None = None
     element: str | None = None
     line: int | None = None
+    body: str | None = Field(
+        default=None,
+        description="In an SFC POU: the action or named transition the network or line is in "
+        "(actions/<name>, transitions/<name>); null for the POU's body or chart.",
+    )
 
 
 class BreakpointSet(_Where):
@@ -109,6 +114,7 @@ class BreakpointClear(_Request):
     network: str | None = None
     element: str | None = None
     line: int | None = None
+    body: str | None = None
 
     @model_validator(mode="after")
     def _all_or_one(self) -> BreakpointClear:
@@ -127,10 +133,11 @@ class Continue(_Request):
 
 
 class Step(_Request):
-    """Run to the next network (LD/FBD), statement (ST; networks in diagrams) or the end of the scan."""
+    """Run to the next network (LD/FBD), statement (ST; networks in diagrams), SFC transition that fires (over as
+    many scans as it takes) or the end of the scan."""
 
     type: Literal["step"]
-    granularity: Literal["network", "statement", "cycle"] = "statement"
+    granularity: Literal["network", "statement", "transition", "cycle"] = "statement"
 
 
 class Run(_Request):
@@ -219,6 +226,7 @@ class At(BaseModel):
     element: str | None = None
     line: int | None = None
     column: int | None = None
+    body: str | None = Field(default=None, description="In an SFC POU: actions/<name> or transitions/<name>.")
 
 
 class DisplayType(BaseModel):

@@ -8,13 +8,14 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validat
 
 from .fbd import FbdBody
 from .ld import LdBody
+from .sfc import SfcBody
 
 PROJECT_FORMAT = "ladderlab/1"
 
 PouKind = Literal["program", "function_block", "function"]
-Language = Literal["st", "ld", "fbd"]
+Language = Literal["st", "ld", "fbd", "sfc"]
 
-BODY_TYPE_BY_LANGUAGE: dict[str, type] = {"st": str, "ld": LdBody, "fbd": FbdBody}
+BODY_TYPE_BY_LANGUAGE: dict[str, type] = {"st": str, "ld": LdBody, "fbd": FbdBody, "sfc": SfcBody}
 
 
 def _strip_trailing_whitespace(value: Any) -> Any:
@@ -23,7 +24,8 @@ def _strip_trailing_whitespace(value: Any) -> Any:
 
 
 class Pou(BaseModel):
-    """A program organisation unit. ``body`` is ST text, an ``LdBody`` or an ``FbdBody`` per ``language``."""
+    """A program organisation unit. ``body`` is ST text, an ``LdBody``, an ``FbdBody`` or an ``SfcBody`` per
+    ``language``."""
 
     model_config = ConfigDict(extra="forbid")
 
@@ -32,7 +34,7 @@ class Pou(BaseModel):
     language: Language
     return_type: str | None = Field(default=None, description="Functions only: the result type.")
     declarations: str = Field(default="", description="ST text of the VAR...END_VAR blocks, as typed.")
-    body: str | LdBody | FbdBody = ""
+    body: str | LdBody | FbdBody | SfcBody = ""
 
     _normalise_texts = field_validator("declarations", "body", mode="before")(_strip_trailing_whitespace)
 
@@ -51,12 +53,13 @@ class Pou(BaseModel):
         if isinstance(value, expected):
             return value
         if not isinstance(value, dict):
-            raise ValueError(f"an {language.upper()} POU's body must be an object with 'networks'")
+            shape = "'chart'" if language == "sfc" else "'networks'"
+            raise ValueError(f"an {language.upper()} POU's body must be an object with {shape}")
         return expected.model_validate(value)
 
     @model_validator(mode="after")
     def _empty_graphical_body(self) -> Pou:
-        """A new LD/FBD POU created without a body starts with no networks."""
+        """A new LD/FBD POU created without a body starts with no networks (an SFC POU with an empty chart)."""
         if self.language != "st" and isinstance(self.body, str):
             self.body = BODY_TYPE_BY_LANGUAGE[self.language]()
         return self

@@ -98,6 +98,7 @@ def at_halt(halt: Halt) -> At:
         element=halt.point.element or origin.element,
         line=origin.line,
         column=origin.column,
+        body=origin.body,
     )
 
 
@@ -111,6 +112,7 @@ def at_origin(origin: ir.Origin | None, pou: str | None, instance: str | None) -
         element=origin.element,
         line=origin.line,
         column=origin.column,
+        body=origin.body,
     )
 
 
@@ -636,6 +638,8 @@ def _where(at: At | None) -> str:
     if at is None:
         return "an unknown place"
     parts = [at.pou]
+    if at.body is not None:
+        parts.append(at.body.replace("s/", " ", 1))
     if at.network is not None:
         parts.append(f"network {at.network}")
     if at.element is not None:

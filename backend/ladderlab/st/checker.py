@@ -20,6 +20,7 @@ from . import types as t
 from .body import BodyChecker
 from .parser import parse_declarations, parse_expression, parse_source, parse_statements
 from .rules import assignable_or_report, constant_value
+from .sfc import check_actions, declare_implicit, parse_actions
 from .symbols import CheckResult, PouInfo, Symbol, TypeDef
 from .types import ERROR, Type
 
@@ -67,13 +68,17 @@ class ProjectChecker:
     def run(self) -> CheckResult:
         types = self._parse(_parse_types, self.project.types, "types", None)
         globals_ = self._parse(parse_declarations, self.project.globals, "globals", None) or []
-        declarations, bodies = {}, {}
+        declarations, bodies, actions = {}, {}, {}
         for pou in self.project.pous:
             declarations[pou.name] = (
                 self._parse(parse_declarations, pou.declarations, f"{pou.name}/declarations", pou.name) or []
             )
             if pou.language == "st":
                 bodies[pou.name] = self._parse(parse_statements, pou.body, f"{pou.name}/body", pou.name)
+            elif pou.language == "sfc":
+                actions[pou.name] = parse_actions(pou)
+                for parsed in actions[pou.name].values():
+                    self.result.diagnostics += parsed.diagnostics
         self._register_pous()
         constants = [b for b in globals_ if b.constant and all(_elementary_decl(d) for d in b.decls)]
         self._declare_globals(constants)  # first, so array bounds in TYPEs may name them (TYP-22)
@@ -82,11 +87,22 @@ class ProjectChecker:
         for pou in self.project.pous:
             self._declare_pou(pou, declarations[pou.name])
         for pou in self.project.pous:
+            info = self.result.pous.get(pou.name.upper())
+            if pou.language == "sfc" and info is not None and info.name == pou.name:
+                declare_implicit(pou, info, self.result.diagnostics)
+        for pou in self.project.pous:
             self._check_initial_values(pou)
         for pou in self.project.pous:
             info = self.result.pous.get(pou.name.upper())
             if info is not None and info.language == "st" and bodies.get(pou.name) is not None:
                 self._check_body(info, bodies[pou.name])
+            if info is not None and info.name == pou.name and pou.name in actions:
+                check_actions(
+                    lambda file, info=info: BodyChecker(self.result, info, self._reporter(file, info.name)),
+                    pou,
+                    info,
+                    actions[pou.name],
+                )
         self._check_recursion()
         return self.result
 

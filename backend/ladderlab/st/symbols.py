@@ -27,6 +27,7 @@ class Symbol:
     comment: str | None = None
     span: ast.Span = ast.NO_SPAN
     pou: str | None = None  # owning POU, None for globals
+    implicit: str | None = None  # an SFC POU's step, action or named transition (st/sfc.py), None if declared
 
 
 @dataclass(eq=False)
@@ -56,6 +57,7 @@ class PouInfo:
     symbols: dict[str, Symbol] = field(default_factory=dict)
     body: list[ast.Stmt] | None = None
     calls: set[str] = field(default_factory=set)
+    actions: dict[str, list[ast.Stmt] | None] = field(default_factory=dict)
 
     def parameters(self, *classes: str) -> list[Symbol]:
         wanted = classes or PARAMETER_CLASSES

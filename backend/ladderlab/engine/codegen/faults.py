@@ -57,6 +57,8 @@ class Fault:
             return f"POU {self.pou}" if self.pou else "unknown location"
         o = self.origin
         parts = [f"POU {o.pou}"]
+        if o.body is not None:
+            parts.append(o.body.replace("s/", " ", 1))  # actions/Fill -> action Fill
         if o.line is not None:
             parts.append(f"line {o.line}" + (f" column {o.column}" if o.column is not None else ""))
         if o.network is not None:
@@ -79,6 +81,7 @@ class Fault:
         return Diagnostic(
             code=RUNTIME_FAULT,
             message=self.text(),
+            file=f"{o.pou}/{o.body}" if o.body is not None else None,
             pou=self.pou,
             line=o.line,
             column=o.column,
@@ -197,6 +200,8 @@ class _FrameReader:
         raise ValueError("index is an expression")
 
     def root(self, var: ir.Var) -> tuple[object, t.IrType]:
+        if var.scope == "program":
+            return self.ns[names.program_instance(var.name)], t.FbInstance(var.name.upper())
         if var.scope == "global":
             place = self.context.globals.get(var.name)  # type: ignore[union-attr]
             return getattr(self.ns[global_owner(place.page)], place.attr), place.slot.type  # type: ignore[union-attr]

@@ -47,6 +47,10 @@ class Scope:
         return f"ll_{prefix}{self._temps}"
 
     def slot(self, var: ir.Var) -> ir.Slot:
+        if var.scope == "program":
+            if self.module.pous.get(var.name.upper()) is None:
+                raise CodegenError(f"unknown program {var.name}")
+            return ir.Slot(var.name, "VAR", t.FbInstance(var.name.upper()))
         if var.scope == "global":
             place = self.module.globals.get(var.name)  # type: ignore[union-attr]
             if place is None:
@@ -79,6 +83,8 @@ class Scope:
         """``root``'s source and type, and the page its slot lives on (0: ``self``, a local or a global)."""
         slot = self.slot(var)
         attr = names.slot(slot.name)
+        if var.scope == "program":
+            return names.program_instance(var.name), slot.type, 0
         if var.scope == "global":
             place = self.module.globals.get(var.name)  # type: ignore[union-attr]
             return f"{global_owner(place.page)}.{attr}", slot.type, 0  # type: ignore[union-attr]
@@ -96,6 +102,8 @@ class Scope:
         """Source of a ``(container, key)`` reference to the whole root slot of ``var``."""
         slot = self.slot(var)
         attr = names.slot(slot.name)
+        if var.scope == "program":
+            raise CodegenError(f"the program {var.name} cannot be passed by reference")
         if var.scope == "global":
             place = self.module.globals.get(var.name)  # type: ignore[union-attr]
             return f"({global_owner(place.page)}, {attr!r})"  # type: ignore[union-attr]
