@@ -169,9 +169,10 @@ class _Control:
 class _SfcLowering:
     def __init__(self, pou: ModelPou, ctx: PouContext):
         self.pou = pou
-        self.body: SfcBody = pou.body  # type: ignore[assignment]
+        assert isinstance(pou.body, SfcBody) and ctx.info is not None
+        self.body = pou.body
         self.ctx = ctx
-        self.info: PouInfo = ctx.info  # type: ignore[assignment]
+        self.info = ctx.info
         self.name = ctx.name
         self.chart = chart_file(pou.name)
         self.ops = Operands(ctx, "SFC")
@@ -569,8 +570,8 @@ class _SfcLowering:
                         Origin(self.name, body=body),
                     )
                 ]
-            if action.language in ("ld", "fbd"):
-                return self.diagram(action.body, action.language, body, skip)  # type: ignore[arg-type]
+            if isinstance(action.body, (ld.LdBody, fbd.FbdBody)):
+                return self.diagram(action.body, action.language, body, skip)
             return []
         finally:
             self.ctx.default_file = None
@@ -638,11 +639,11 @@ class _SfcLowering:
                             network=network.id,
                             element=item.id,
                         )
-                if item.type in ("box", "block") and getattr(item, "instance", None):
+                instance = getattr(item, "instance", None) if item.type in ("box", "block") else None
+                if instance:
                     self.ctx.report(
                         "SFC-03",
-                        f"a transition cannot call the function block instance "
-                        f"{item.instance} (SFC-03): call it in an action",  # type: ignore[union-attr]
+                        f"a transition cannot call the function block instance {instance}: call it in an action",
                         network=network.id,
                         element=item.id,
                     )

@@ -211,8 +211,8 @@ def walk(elements: list[SfcElement]) -> Iterator[SfcElement]:
     """Every element of a sequence, branch contents included, in drawing order (top to bottom, left to right)."""
     for element in elements:
         yield element
-        if element.type in ("alternative", "parallel"):
-            for branch in element.branches:  # type: ignore[union-attr]
+        if isinstance(element, (SfcAlternative, SfcParallel)):
+            for branch in element.branches:
                 yield from walk(branch)
 
 

@@ -39,7 +39,8 @@ def transition_file(pou: str, transition: str) -> str:
 
 def parse_actions(pou: Pou) -> dict[str, ParseResult]:
     """The ST actions of an SFC POU, parsed (by upper-case name); the parse diagnostics are in the results."""
-    body: SfcBody = pou.body  # type: ignore[assignment]
+    body = pou.body
+    assert isinstance(body, SfcBody)
     return {
         action.name.upper(): parse_statements(action.body, file=action_file(pou.name, action.name), pou=pou.name)
         for action in body.actions
@@ -49,7 +50,8 @@ def parse_actions(pou: Pou) -> dict[str, ParseResult]:
 
 def declare_implicit(pou: Pou, info: PouInfo, diagnostics: list[Diagnostic]) -> None:
     """Add the steps, actions and named transitions of an SFC POU to its symbols; report bad and taken names."""
-    body: SfcBody = pou.body  # type: ignore[assignment]
+    body = pou.body
+    assert isinstance(body, SfcBody)
     if info.kind == "FUNCTION":
         diagnostics.append(
             Diagnostic(
@@ -122,7 +124,8 @@ def check_actions(checker_factory, pou: Pou, info: PouInfo, parsed: dict[str, Pa
         if result.ast is None:
             info.actions[name] = None
             continue
-        action = next(a for a in pou.body.actions if a.name.upper() == name)  # type: ignore[union-attr]
+        assert isinstance(pou.body, SfcBody)
+        action = next(a for a in pou.body.actions if a.name.upper() == name)
         checker = checker_factory(action_file(pou.name, action.name))
         checker.statements(result.ast)
         info.actions[name] = result.ast

@@ -6,7 +6,7 @@ Layout::
     types.st            TYPE ... END_TYPE blocks
     globals.st          VAR_GLOBAL ... END_VAR blocks
     pous/<name>.st      ST POUs as complete IEC text (PROGRAM ... END_PROGRAM)
-    pous/<name>.ld.json / pous/<name>.fbd.json   graphical POUs
+    pous/<name>.ld.json / pous/<name>.fbd.json / pous/<name>.sfc.json   graphical POUs
     pous/<name>.st.json ST POUs whose text cannot be split back exactly (e.g. a VAR block
                         without END_VAR while the user is still typing); never loses a character
 
@@ -31,7 +31,7 @@ PROJECT_FILE = "project.json"
 TYPES_FILE = "types.st"
 GLOBALS_FILE = "globals.st"
 POUS_DIR = "pous"
-POU_SUFFIXES = (".st", ".st.json", ".ld.json", ".fbd.json")
+POU_SUFFIXES = (".st", ".st.json", ".ld.json", ".fbd.json", ".sfc.json")
 
 
 def dump_json(data: Any) -> str:
@@ -170,7 +170,7 @@ def _read_pou(folder: Path, name: str, problems: list[Diagnostic]) -> Pou | None
     paths = pou_paths(folder, name)
     if len(paths) != 1:
         message = (
-            (f"POU {name!r} is listed in project.json but has no file pous/{name}.st, .ld.json or .fbd.json")
+            (f"POU {name!r} is listed in project.json but has no file pous/{name}.st, .ld.json, .fbd.json or .sfc.json")
             if not paths
             else (f"POU {name!r} has several files: {', '.join(p.name for p in paths)}; keep one")
         )

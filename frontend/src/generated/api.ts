@@ -189,19 +189,20 @@ export interface Project {
   types?: string;
 }
 /**
- * A program organisation unit. ``body`` is ST text, an ``LdBody`` or an ``FbdBody`` per ``language``.
+ * A program organisation unit. ``body`` is ST text, an ``LdBody``, an ``FbdBody`` or an ``SfcBody`` per
+ * ``language``.
  *
  * This interface was referenced by `ApiTypes`'s JSON-Schema
  * via the `definition` "Pou".
  */
 export interface Pou {
-  body?: string | LdBody | FbdBody;
+  body?: string | LdBody | FbdBody | SfcBody;
   /**
    * ST text of the VAR...END_VAR blocks, as typed.
    */
   declarations?: string;
   kind: "program" | "function_block" | "function";
-  language: "st" | "ld" | "fbd";
+  language: "st" | "ld" | "fbd" | "sfc";
   name: string;
   /**
    * Functions only: the result type.
@@ -473,6 +474,174 @@ export interface Wire {
 export interface PinRef {
   node: string;
   pin: string;
+}
+/**
+ * The body of an SFC POU: the chart (its first step is the initial step), the actions, the named transitions.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "SfcBody".
+ */
+export interface SfcBody {
+  actions?: SfcAction[];
+  chart?: SfcChart;
+  transitions?: SfcNamedTransition[];
+}
+/**
+ * A named action (SFC-02): ST statements, LD or FBD networks, or a chart of its own.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "SfcAction".
+ */
+export interface SfcAction {
+  body?: string | LdBody | FbdBody | SfcChart;
+  comment?: string | null;
+  language?: "st" | "ld" | "fbd" | "sfc";
+  name: string;
+}
+/**
+ * A sequence of chart elements: the POU's chart, or the body of an action written in SFC.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "SfcChart".
+ */
+export interface SfcChart {
+  elements?: (SfcStep | SfcTransition | SfcAlternative | SfcParallel | SfcJump)[];
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "SfcStep".
+ */
+export interface SfcStep {
+  actions?: SfcAssociation[];
+  comment?: string | null;
+  /**
+   * Action run once in the first scan the step is active.
+   */
+  entry?: string | null;
+  /**
+   * Action run once in the scan after the step was left.
+   */
+  exit?: string | null;
+  /**
+   * Unique within the POU: probes, breakpoints and diagnostics use it.
+   */
+  id: string;
+  /**
+   * TIME: active longer is an error in SFCError (with SFCEnableLimit).
+   */
+  max_time?: string | null;
+  /**
+   * TIME: transitions after the step wait at least this long.
+   */
+  min_time?: string | null;
+  /**
+   * An IEC identifier; Name.X and Name.T are its implicit variables.
+   */
+  name: string;
+  type?: "step";
+}
+/**
+ * One line of a step's action block: a qualifier (with its TIME where needed) and an action or BOOL variable.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "SfcAssociation".
+ */
+export interface SfcAssociation {
+  /**
+   * The name of an action of the POU, or a BOOL variable (SFC-04: its value is Q).
+   */
+  action: string;
+  /**
+   * Unique within the POU: probes, breakpoints and diagnostics use it.
+   */
+  id: string;
+  qualifier?: "N" | "R" | "S" | "L" | "D" | "P" | "P1" | "P0" | "SD" | "DS" | "SL";
+  /**
+   * TIME expression (T#5s or a TIME variable) for L, D, SD, DS and SL.
+   */
+  time?: string | null;
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "SfcTransition".
+ */
+export interface SfcTransition {
+  comment?: string | null;
+  /**
+   * ST expression (SFC-03: no assignment, no FB call); the name of a named transition reads its result.
+   */
+  condition?: string;
+  /**
+   * Unique within the POU: probes, breakpoints and diagnostics use it.
+   */
+  id: string;
+  /**
+   * Among the transitions after one step, lower first; then left to right.
+   */
+  priority?: number | null;
+  type?: "transition";
+}
+/**
+ * Alternative divergence (single line): one branch is taken, the first whose transition is TRUE (SFC-08).
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "SfcAlternative".
+ */
+export interface SfcAlternative {
+  /**
+   * Two or more sequences, each starting with a transition.
+   */
+  branches: (SfcStep | SfcTransition | SfcAlternative | SfcParallel | SfcJump)[][];
+  /**
+   * Unique within the POU: probes, breakpoints and diagnostics use it.
+   */
+  id: string;
+  type?: "alternative";
+}
+/**
+ * Simultaneous divergence (double line): every branch starts together; all must end to go on (SFC-08).
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "SfcParallel".
+ */
+export interface SfcParallel {
+  /**
+   * Two or more sequences, each starting and ending with a step.
+   */
+  branches: (SfcStep | SfcTransition | SfcAlternative | SfcParallel | SfcJump)[][];
+  /**
+   * Unique within the POU: probes, breakpoints and diagnostics use it.
+   */
+  id: string;
+  type?: "parallel";
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "SfcJump".
+ */
+export interface SfcJump {
+  /**
+   * Unique within the POU: probes, breakpoints and diagnostics use it.
+   */
+  id: string;
+  /**
+   * The name of the step the chart continues at.
+   */
+  target: string;
+  type?: "jump";
+}
+/**
+ * A transition condition written on its own (SFC-03): an ST expression, or LD/FBD networks whose coil or output
+ * named like the transition gives its value. A chart transition whose condition is this name reads it.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "SfcNamedTransition".
+ */
+export interface SfcNamedTransition {
+  body?: string | LdBody | FbdBody;
+  comment?: string | null;
+  language?: "st" | "ld" | "fbd";
+  name: string;
 }
 /**
  * This interface was referenced by `ApiTypes`'s JSON-Schema

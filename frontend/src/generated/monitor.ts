@@ -94,6 +94,10 @@ export interface UnforceAll {
  * via the `definition` "BreakpointSet".
  */
 export interface BreakpointSet {
+  /**
+   * In an SFC POU: the action or named transition the network or line is in (actions/<name>, transitions/<name>); null for the POU's body or chart.
+   */
+  body?: string | null;
   element?: string | null;
   line?: number | null;
   network?: string | null;
@@ -107,6 +111,7 @@ export interface BreakpointSet {
  * via the `definition` "BreakpointClear".
  */
 export interface BreakpointClear {
+  body?: string | null;
   element?: string | null;
   line?: number | null;
   network?: string | null;
@@ -123,13 +128,14 @@ export interface Continue {
   type: "continue";
 }
 /**
- * Run to the next network (LD/FBD), statement (ST; networks in diagrams) or the end of the scan.
+ * Run to the next network (LD/FBD), statement (ST; networks in diagrams), SFC transition that fires (over as
+ * many scans as it takes) or the end of the scan.
  *
  * This interface was referenced by `MonitorProtocol`'s JSON-Schema
  * via the `definition` "Step".
  */
 export interface Step {
-  granularity?: "network" | "statement" | "cycle";
+  granularity?: "network" | "statement" | "transition" | "cycle";
   type: "step";
 }
 /**
@@ -460,6 +466,10 @@ export interface Status {
  * via the `definition` "At".
  */
 export interface At {
+  /**
+   * In an SFC POU: actions/<name> or transitions/<name>.
+   */
+  body?: string | null;
   column?: number | null;
   element?: string | null;
   /**
