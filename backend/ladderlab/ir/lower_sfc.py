@@ -180,6 +180,7 @@ class _SfcLowering:
         self.controls: dict[str, _Control] = {}
         self.flags: dict[str, Var] = {}
         self.jumps_to_end = False
+        self.refused = False
 
     # ------------------------------------------------------------ helpers
     def origin(self, element: str | None = None) -> Origin:
@@ -205,6 +206,8 @@ class _SfcLowering:
         self.ctx.default_file = self.chart
         try:
             self.declare_steps(graph)
+            if self.refused:
+                return []
             self.find_flags()
             self.associate(graph)
             transitions = self.conditions(graph)
@@ -244,11 +247,11 @@ class _SfcLowering:
 
     # ------------------------------------------------------------ steps, flags, associations
     def declare_steps(self, graph: ChartGraph) -> None:
-        used = {n.upper() for s in graph.steps.values() for n in (s.step.entry, s.step.exit) if n}
         for key, node in graph.steps.items():
             symbol = self.info.symbols.get(key)
             if symbol is None or symbol.implicit != "step":
-                continue  # its name was refused (reported by the checker)
+                self.refused = True  # its name was refused (reported by the checker): the chart cannot be built
+                continue
             slots = _StepSlots(node.step, self.ctx.var_for(symbol), node.initial)
             if node.step.entry or node.step.exit:
                 hint = f"SFC_{key}"
@@ -266,7 +269,6 @@ class _SfcLowering:
                         f"the {which} action of step {node.step.name} is {name!r}, which is no action of this POU",
                         node.step.id,
                     )
-        del used
         fan_out: dict[str, int] = {}
         for transition in graph.transitions:
             for source in transition.sources:

@@ -13,8 +13,7 @@ and jumps to named steps for loops; a graph no chart can draw is refused with th
 
 from __future__ import annotations
 
-import re
-from collections.abc import Callable
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 
 from .sfc import SfcAlternative, SfcChart, SfcElement, SfcJump, SfcParallel, SfcStep, SfcTransition, walk
@@ -153,8 +152,9 @@ class _ChartWalker:
                 self.report(
                     _last_id(branch),
                     "SFC-BRANCH-END",
-                    f"branch {number} of the alternative ends with a step: end it with a transition (the branches "
-                    "join) or a jump",
+                    f"branch {number} of the alternative ends with a step, so the chart stops there when it takes "
+                    "this branch: end it with a transition (the branches join) or a jump to go on",
+                    "warning",
                 )
             joined += end.open or []
         return _State(open=joined) if joined else _State()
@@ -268,10 +268,11 @@ class ImportedTransition:
 @dataclass
 class _End:
     """How a branch being rebuilt ended: at a join (``join``: the transitions after the simultaneous
-    convergence), at the convergence step of its alternative (``converge``), or for good (jump, last step)."""
+    convergence), at the convergence of its alternative (``converge``: the steps the branches lead to), or for good
+    (a jump, a last step)."""
 
     join: tuple[int, ...] | None = None
-    converge: str | None = None
+    converge: frozenset[str] | None = None
     last: frozenset[str] = frozenset()
 
 
@@ -310,11 +311,13 @@ class _Rebuilder:
         return [s.step.name for name, s in self.steps.items() if name not in self.placed]
 
     # a step-like position: after a transition (or at the start), with the steps it activates
-    def from_steps_position(self, targets: list[str], reserved: frozenset[str], converge: str | None = None):
+    def from_steps_position(
+        self, targets: list[str], reserved: frozenset[str], converge: frozenset[str] | None = None
+    ) -> tuple[list[SfcElement], _End]:
+        if converge is not None and frozenset(targets) == converge:
+            return [], _End(converge=converge)
         if len(targets) == 1:
             name = targets[0]
-            if name == converge:
-                return [], _End(converge=name)
             if name in self.placed or name in reserved:
                 return [SfcJump(id=self.ids.new("J"), target=self.steps[name].step.name)], _End()
             self.placed.add(name)
@@ -326,31 +329,37 @@ class _Rebuilder:
                     f"a simultaneous divergence activates step {self.steps[name].step.name}, which is also reached "
                     "another way"
                 )
-        branches, joins, last = [], set(), set()
+        branches, ends = [], []
         for name in targets:
             branch, end = self.from_steps_position([name], reserved)
-            if end.join is None:
-                raise UnstructuredChart(
-                    f"the simultaneous branch starting at step {self.steps[name].step.name} does not join the others"
-                )
             branches.append(branch)
-            joins.add(end.join)
-            last |= end.last
-        if len(joins) != 1:
-            raise UnstructuredChart("the branches of a simultaneous divergence join at different transitions")
-        (join,) = joins
-        for index in join:
-            if frozenset(self.transitions[index].sources) != frozenset(last):
-                raise UnstructuredChart(
-                    f"transition {self.transitions[index].transition.id} joins some, but not all, of the simultaneous "
-                    "branches"
-                )
+            ends.append(end)
         parallel = SfcParallel(id=self.ids.new("P"), branches=branches)
-        rest, end = self.transition_position([self.transitions[i] for i in join], reserved, converge)
-        return [parallel, *rest], end
+        joins = {end.join for end in ends}
+        if joins == {None} and all(end.converge is None for end in ends):
+            return [parallel], _End()  # the chart ends in these branches
+        names = ", ".join(self.steps[n].step.name for n in targets)
+        if len(joins) != 1 or None in joins:
+            raise UnstructuredChart(
+                f"the simultaneous branches starting at steps {names} do not join at one transition"
+            )
+        (join,) = joins
+        assert join is not None
+        last = frozenset().union(*(end.last for end in ends))
+        sources = {frozenset(self.transitions[index].sources) for index in join}
+        if sources == {last}:
+            rest, end = self.transition_position([self.transitions[i] for i in join], reserved, converge)
+            return [parallel, *rest], end
+        if len(sources) == 1 and sources.pop() > last:  # the join of an enclosing divergence: this branch ends here
+            return [parallel], _End(join=join, last=last)
+        raise UnstructuredChart(
+            f"a transition joins some, but not all, of the simultaneous branches starting at {names}"
+        )
 
     # after step-like elements whose last steps are ``sources``
-    def after_steps(self, sources: frozenset[str], reserved: frozenset[str], converge: str | None):
+    def after_steps(
+        self, sources: frozenset[str], reserved: frozenset[str], converge: frozenset[str] | None
+    ) -> tuple[list[SfcElement], _End]:
         exact, wider = [], []
         for index, t in enumerate(self.transitions):
             mine = frozenset(t.sources)
@@ -369,55 +378,157 @@ class _Rebuilder:
         return self.transition_position([self.transitions[i] for i in exact], reserved, converge)
 
     # a transition-like position: the transitions leaving the same steps, left to right
-    def transition_position(self, outs: list[ImportedTransition], reserved: frozenset[str], converge: str | None):
+    def transition_position(
+        self, outs: list[ImportedTransition], reserved: frozenset[str], converge: frozenset[str] | None
+    ) -> tuple[list[SfcElement], _End]:
         for t in outs:
             self.used_transitions.add(id(t))
         if len(outs) == 1:
             t = outs[0]
             rest, end = self.from_steps_position(t.targets, reserved, converge)
             return [t.transition, *rest], end
-        meet = self.convergence(outs, reserved)
-        inner = reserved | ({meet} if meet else set())
+        failure: UnstructuredChart | None = None
+        options = self.meeting_points(outs, reserved, converge)
+        for number, meet in enumerate(options):
+            saved = (set(self.placed), set(self.used_transitions), set(self.ids.taken))
+            try:
+                built = self.alternative(outs, reserved, converge, meet, last=number == len(options) - 1)
+                if built is not None:
+                    return built
+            except UnstructuredChart as error:
+                failure = failure or error
+            self.placed, self.used_transitions, self.ids.taken = saved
+        raise failure or UnstructuredChart("the branches of an alternative divergence cannot be drawn")
+
+    def alternative(
+        self,
+        outs: list[ImportedTransition],
+        reserved: frozenset[str],
+        converge: frozenset[str] | None,
+        meet: frozenset[str] | None,
+        last: bool,
+    ) -> tuple[list[SfcElement], _End] | None:
+        """The alternative divergence of ``outs`` meeting at ``meet``; None when a branch would end with a step (a
+        chart's alternative branches end with a transition or a jump) and another meeting point may be tried."""
+        inner = reserved | (self._downstream(meet, reserved) if meet else frozenset())
         branches, joined = [], False
         for t in outs:
             rest, end = self.from_steps_position(t.targets, inner, meet)
+            if end.join is not None:
+                raise UnstructuredChart(
+                    f"the alternative branch of transition {t.transition.id} ends a simultaneous branch the others "
+                    "do not"
+                )
+            if rest and isinstance(rest[-1], (SfcStep, SfcParallel)) and not last:
+                return None
             joined = joined or end.converge is not None
             branches.append([t.transition, *rest])
         alternative = SfcAlternative(id=self.ids.new("A"), branches=branches)
         if meet is None or not joined:
             return [alternative], _End()
-        rest, end = self.from_steps_position([meet], reserved, converge)
+        rest, end = self.from_steps_position(sorted(meet, key=list(self.steps).index), reserved, converge)
+        final = end.join is None and end.converge is None  # (else what comes after is placed further out)
+        if final and not last and not (inner - reserved) <= self.placed:
+            return None  # a branch jumped to a step after the meeting point that the chart after it never places
         return [alternative, *rest], end
 
-    def convergence(self, outs: list[ImportedTransition], reserved: frozenset[str]) -> str | None:
-        """The step where the alternative branches meet: not yet placed, reached by two branches or more (the
-        first such in breadth-first order of the first branch that reaches one)."""
-        reach = [self._reachable(t.targets, reserved) for t in outs]
-        counts: dict[str, int] = {}
+    def meeting_points(
+        self, outs: list[ImportedTransition], reserved: frozenset[str], converge: frozenset[str] | None
+    ) -> list[frozenset[str] | None]:
+        """Where the alternative branches may meet, best first: the steps (one, or the first steps of a
+        simultaneous divergence) that two transitions or more of different branches lead to, not placed yet or
+        where the enclosing alternative meets (nearest first: the one the farthest branch reaches soonest, then
+        the one most branches reach); where the only branch that does not come back goes; nowhere (None)."""
+        reach = [self._reachable(t.targets, reserved, converge) for t in outs]
+        counts: dict[frozenset[str], int] = {}
         for found in reach:
-            for name in found:
-                counts[name] = counts.get(name, 0) + 1
+            for target in found:
+                counts[target] = counts.get(target, 0) + 1
+        candidates: list[frozenset[str] | None] = []
         for found in reach:
-            for name in found:
-                if counts[name] >= 2 and len(self.steps_into(name)) >= 2:
-                    return name
-        return None
+            for target in found:
+                into = sum(frozenset(t.targets) == target for t in self.transitions)
+                if counts[target] >= 2 and (target == converge or into >= 2) and target not in candidates:
+                    candidates.append(target)
+        far = {c: max(found.index(c) for found in reach if c in found) for c in candidates if c is not None}
+        candidates.sort(key=lambda c: (far[c], -counts[c]) if c is not None else (0, 0))
+        if converge is not None and converge not in candidates and any(converge in found for found in reach):
+            candidates.append(converge)  # a branch leads to where the enclosing alternative meets: meet there too
+        going_on = [i for i, found in enumerate(reach) if found]
+        if len(going_on) > 1:  # of the branches that go on, the one that does not come back
+            going_on = [i for i in going_on if self._escapes(outs[i].targets, reserved, converge)]
+        if len(going_on) == 1 and reach[going_on[0]][0] not in candidates:
+            candidates.append(reach[going_on[0]][0])
+        return [*candidates, None]
 
-    def steps_into(self, name: str) -> list[ImportedTransition]:
-        return [t for t in self.transitions if name in t.targets]
-
-    def _reachable(self, start: list[str], reserved: frozenset[str]) -> list[str]:
-        """Steps reachable from ``start`` without passing placed or reserved steps, breadth first."""
-        order, seen, todo = [], set(), list(start)
+    def _fresh_steps(self, start: Iterable[str], reserved: frozenset[str]) -> list[str]:
+        """The steps reachable from ``start`` (included) without passing placed or reserved ones."""
+        blocked = self.placed | reserved
+        order: list[str] = []
+        todo = [name for name in start if name not in blocked]
         while todo:
             name = todo.pop(0)
-            if name in seen or name in self.placed or name in reserved:
+            if name in order:
                 continue
-            seen.add(name)
             order.append(name)
             for t in self.transitions:
                 if name in t.sources:
-                    todo.extend(t.targets)
+                    todo += [n for n in t.targets if n not in blocked]
+        return order
+
+    def _downstream(self, meet: frozenset[str], reserved: frozenset[str]) -> frozenset[str]:
+        """The steps after an alternative's meeting point, which a branch reaching one jumps to (they are placed
+        after the alternative); not those that lead back to the meeting point (a loop): a branch places them."""
+        after = self._fresh_steps(meet, reserved - meet)
+        return meet | frozenset(name for name in after if name in meet or not self._leads_to(name, meet, reserved))
+
+    def _leads_to(self, name: str, meet: frozenset[str], reserved: frozenset[str]) -> bool:
+        blocked = (self.placed | reserved) - meet
+        seen, todo = set(), [name]
+        while todo:
+            here = todo.pop()
+            if here in seen:
+                continue
+            seen.add(here)
+            for t in self.transitions:
+                if here in t.sources:
+                    if frozenset(t.targets) == meet or set(t.targets) & meet:
+                        return True
+                    todo += [n for n in t.targets if n not in blocked]
+        return False
+
+    def _escapes(self, start: list[str], reserved: frozenset[str], converge: frozenset[str] | None) -> bool:
+        """Does a branch lead somewhere new (a last step, where its enclosing alternative meets, a join) rather
+        than only back to steps already placed?"""
+        if frozenset(start) == converge:
+            return True
+        for name in self._fresh_steps(start, reserved):
+            leaving = [t for t in self.transitions if name in t.sources]
+            if not leaving or any(frozenset(t.targets) == converge or len(t.sources) > 1 for t in leaving):
+                return True  # a last step, the enclosing meeting point, the join of a simultaneous divergence
+        return False
+
+    def _reachable(
+        self, start: list[str], reserved: frozenset[str], converge: frozenset[str] | None
+    ) -> list[frozenset[str]]:
+        """The target sets reachable from ``start`` (itself first) without passing placed or reserved steps (the
+        enclosing alternative's meeting steps are reached, not passed)."""
+        order: list[frozenset[str]] = []
+        seen: set[str] = set()
+        todo = [frozenset(start)]
+        while todo:
+            target = todo.pop(0)
+            if target in order:
+                continue
+            if target == converge:
+                order.append(target)
+                continue
+            if target & (self.placed | reserved):
+                continue
+            order.append(target)
+            for name in target - seen:
+                seen.add(name)
+                todo += [frozenset(t.targets) for t in self.transitions if name in t.sources]
         return order
 
 
@@ -444,15 +555,3 @@ def graph_chart(steps: list[ImportedStep], transitions: list[ImportedTransition]
     if lost and not unreachable:
         raise UnstructuredChart(f"transition {lost[0]} could not be placed in the chart")
     return chart, unreachable
-
-
-_IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")
-
-
-def is_name(text: str) -> bool:
-    return bool(_IDENT.match(text.strip()))
-
-
-def fresh_ids(prefix: str, taken: set[str]) -> Callable[[], str]:
-    maker = _IdMaker(taken)
-    return lambda: maker.new(prefix)
