@@ -21,13 +21,15 @@ test: $(VENV)/.installed chromium $(FRONTEND_DEPS) frontend lint
 	cd frontend && npm run --silent check:types && npm test --silent
 	$(PY) -m pytest -q $(PYTEST_ARGS)
 
-# Lint, format and layer checks (docs/architecture.md); `ruff format .` and `npm run format` (frontend) fix the format.
+# Lint, format and layer checks (docs/architecture.md), and ESLint (typescript-eslint, React hooks) on the frontend;
+# `ruff format .` and `npm run format` (frontend) fix the format.
 lint: $(VENV)/.installed $(FRONTEND_DEPS)
 	$(VENV)/bin/ruff check .
 	$(VENV)/bin/ruff format --check .
 	$(VENV)/bin/lint-imports
 	$(VENV)/bin/mypy
 	cd frontend && npm run --silent format:check
+	cd frontend && npm run lint -- --max-warnings 0
 
 test-slow: $(VENV)/.installed chromium
 	LADDERLAB_HYPOTHESIS=thorough $(PY) -m pytest -q -m "slow or not slow" $(PYTEST_ARGS)

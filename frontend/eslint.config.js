@@ -15,6 +15,17 @@ export default tseslint.config(
     rules: {
       ...reactHooks.configs.recommended.rules,
       "@typescript-eslint/no-unused-vars": ["error", { argsIgnorePattern: "^_", varsIgnorePattern: "^_" }],
+      // React calls whatever an effect returns as its cleanup: an arrow with an expression body returns
+      // the expression's value (scrollIntoView returns a Promise in Chromium 156: a blank page, issue 17).
+      "no-restricted-syntax": [
+        "error",
+        {
+          selector:
+            "CallExpression[callee.name=/^use(Layout|Insertion)?Effect$/] > ArrowFunctionExpression[body.type!='BlockStatement'][body.type!='ArrowFunctionExpression']",
+          message:
+            "Give an effect a block body (or return a cleanup arrow): an expression body's value becomes its cleanup.",
+        },
+      ],
     },
   },
 );

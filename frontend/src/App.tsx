@@ -1,8 +1,10 @@
 import { useEffect, useState, type FormEvent } from "react";
 import type { ProjectSummary } from "./api/client";
-import { useAppStore } from "./store";
+import { appStore, useAppStore } from "./store";
+import { lastProject, rememberProject } from "./project/session";
 import { useWorkspace } from "./project/store";
 import { WorkspaceView } from "./project/WorkspaceView";
+import { ViewBoundary } from "./project/ViewBoundary";
 
 const HEALTH_POLL_MS = 15_000;
 
@@ -166,7 +168,13 @@ function MainArea() {
   }, [selected, open]);
   return (
     <main className="main">
-      {selected ? <WorkspaceView /> : <p className="placeholder">Select a project to open it.</p>}
+      {selected ? (
+        <ViewBoundary key={selected} name={`The project ${selected}`}>
+          <WorkspaceView />
+        </ViewBoundary>
+      ) : (
+        <p className="placeholder">Select a project to open it.</p>
+      )}
     </main>
   );
 }
@@ -174,10 +182,23 @@ function MainArea() {
 export default function App() {
   const loadProjects = useAppStore((s) => s.loadProjects);
   const checkHealth = useAppStore((s) => s.checkHealth);
+  const selected = useAppStore((s) => s.selectedProject);
+  const listed = useAppStore((s) => s.projectsStatus === "ready");
 
   useEffect(() => {
     void loadProjects();
   }, [loadProjects]);
+
+  // After a reload the project open last opens again (project/session.ts keeps the rest of the session).
+  useEffect(() => {
+    if (listed && appStore.getState().selectedProject === null) {
+      const last = lastProject(localStorage);
+      if (last) appStore.getState().selectProject(last);
+    }
+  }, [listed]);
+  useEffect(() => {
+    if (selected) rememberProject(selected, localStorage);
+  }, [selected]);
 
   useEffect(() => {
     void checkHealth();
@@ -186,13 +207,17 @@ export default function App() {
   }, [checkHealth]);
 
   return (
-    <div className="app">
-      <header className="header">
-        <h1>LadderLab</h1>
-        <HealthIndicator />
-      </header>
-      <ProjectList />
-      <MainArea />
-    </div>
+    <ViewBoundary name="LadderLab">
+      <div className="app">
+        <header className="header">
+          <h1>LadderLab</h1>
+          <HealthIndicator />
+        </header>
+        <ViewBoundary name="The project list" gridArea="sidebar">
+          <ProjectList />
+        </ViewBoundary>
+        <MainArea />
+      </div>
+    </ViewBoundary>
   );
 }

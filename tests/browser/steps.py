@@ -4,6 +4,7 @@ project through the REST API."""
 from __future__ import annotations
 
 import json
+import re
 import urllib.request
 
 
@@ -54,3 +55,34 @@ def _request(method: str, url: str, body: dict | None = None, revision: str | No
         urllib.request.Request(url, data=data, method=method, headers=headers), timeout=30
     ) as response:
         return json.load(response)
+
+
+def open_pou(page, project: str, pou: str) -> None:
+    """Opens ``project`` from the project list and ``pou`` from its tree."""
+    page.get_by_role("navigation", name="Projects").get_by_role("button", name=re.compile(f"^{project}")).click()
+    page.get_by_role("navigation", name="Project tree").get_by_role("button", name=re.compile(f"^{pou}")).click()
+
+
+def go_online(page, *, run: bool = True) -> None:
+    """Compile & simulate, then Run (unless ``run`` is False): waits for the state the toolbar shows."""
+    state = page.get_by_role("status", name="Online state")
+    page.get_by_role("button", name="Compile & simulate").click()
+    state.filter(has_text="Online · stopped").wait_for()
+    if run:
+        page.get_by_role("button", name="Run", exact=True).click()
+        state.filter(has_text="Online · running").wait_for()
+
+
+def panel_tab(page, name: str):
+    """Shows the bottom panel whose tab starts with ``name`` ("Watch list", "Online log") and returns the panels."""
+    panels = page.get_by_role("region", name="Panels")
+    panels.get_by_role("tab", name=re.compile(f"^{re.escape(name)}")).click()
+    return panels
+
+
+def watch(page, path: str):
+    """Adds ``path`` to the watch list; returns its value cell."""
+    panels = panel_tab(page, "Watch list")
+    panels.get_by_label("Variable path to watch").fill(path)
+    panels.get_by_label("Variable path to watch").press("Enter")
+    return panels.locator(f'tr[data-path="{path.upper()}"] td.watch-value')

@@ -93,7 +93,8 @@ def test_breakpoint_halt_step_continue_disable_and_single_cycle(page, server):
 
     # Start pressed while halted (writes act at once), then step: network 3 counts the rising edge
     # of Start within this scan, and StartCount shows it at the next halt.
-    page.locator('g.ld-element[data-id="start"] .ld-hit').dblclick()
+    page.locator('g.ld-element[data-id="start"] .ld-hit').dblclick()  # prepares TRUE (CODESYS)
+    page.keyboard.press("Control+F7")  # writes the prepared value
     debug.get_by_role("button", name="Step network").click()
     debug.get_by_text("Halted at MAIN, network 3").wait_for()
     assert halted_networks(page) == ["count_starts"]

@@ -4,7 +4,7 @@ Create an FBD program and build ``result := (var1 + var2) - var3``: drag input, 
 output nodes from the palette onto the network, pick ADD and SUB in the block picker, declare
 the variables through the editor's offer, move a node by dragging it, wire the pins with the mouse (a second wire into an
 occupied input is refused with the reason), save, compile and run, write var1..var3 from the
-input nodes' context menus, read the result on the wire into the output node, and halt at a
+input nodes' context menus, read the result at the block pins and the output node, and halt at a
 breakpoint on the network and on the SUB block. Screenshots go to tests/browser/artifacts/.
 """
 
@@ -131,7 +131,7 @@ def test_new_user_builds_and_runs_an_fbd_calculation(page, server):
     # dropped 660 px into the canvas, whose origin is 12 px in (NetworkCanvas ORIGIN), at zoom 1
     assert [n["pos"]["x"] for n in network["nodes"] if n["id"] == "out1"] == [660 - 12 + shift]
 
-    # Online: run, write var1..var3 from the input nodes, read result on the wire.
+    # Online: run, write var1..var3 from the input nodes, read the result at the pins.
     page.get_by_role("button", name="Compile & simulate").click()
     state = page.get_by_role("status", name="Online state")
     state.filter(has_text="Online · stopped").wait_for()
@@ -143,11 +143,11 @@ def test_new_user_builds_and_runs_an_fbd_calculation(page, server):
         page.get_by_label("Value").fill(value)
         page.keyboard.press("Enter")
         page.get_by_test_id(f"value-{node}").filter(has_text=value).wait_for()
-    into_result = editor.locator('.react-flow__edge[data-id="blk2.OUT->out1.IN"]')
-    into_result.locator(".react-flow__edge-text").filter(has_text="10").wait_for()
+    # Values on every pin (issue 17): SUB's output, and ADD's input as its wire feeds it.
+    pin = editor.locator('.fbd-node[data-node="blk2"] [data-pin-value="out:OUT"]')
+    pin.filter(has_text="10").wait_for()
     page.get_by_test_id("value-out1").filter(has_text="10").wait_for()
-    into_add = editor.locator('.react-flow__edge[data-id="in1.OUT->blk1.IN1"] .react-flow__edge-text')
-    assert into_add.text_content() == "7"
+    assert editor.locator('.fbd-node[data-node="blk1"] [data-pin-value="in:IN1"]').text_content() == "7"
     page.screenshot(path=str(ARTIFACTS / "fbd-online.png"))
 
     # Breakpoints: on the network (its number), then on the SUB block (Alt+click); each halts the scan there.

@@ -123,8 +123,11 @@ def test_new_user_draws_saves_and_runs_the_motor_rung(page, server):
     watched.filter(has_text="FALSE").wait_for()
     assert OFF.search(coil.get_attribute("class"))
 
-    # Toggle Start: the seal-in energises Motor in the diagram and the watch list.
+    # Toggle Start as in CODESYS: a double-click prepares TRUE, Ctrl+F7 writes it. The seal-in energises
+    # Motor in the diagram and the watch list.
     element(page, "contact", "Start").locator(".ld-hit").dblclick()
+    element(page, "contact", "Start").locator(".ld-prepared").filter(has_text="<TRUE>").wait_for()
+    page.keyboard.press("Control+F7")
     page.wait_for_function("() => document.querySelector('g.ld-coil')?.classList.contains('ld-on')")
     watched.filter(has_text="TRUE").wait_for()
     assert ON.search(element(page, "contact", "Start").get_attribute("class"))

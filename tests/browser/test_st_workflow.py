@@ -165,7 +165,10 @@ def test_new_user_writes_an_st_fb_fixes_a_typo_and_watches_it_run(page, server):
     page.mouse.click(*char_at(page, "Main body", 0, len("c1(Enable := R")), button="right")
     page.get_by_role("menuitem", name="Force FALSE").click()
     page.wait_for_function(
-        """() => document.querySelectorAll('[aria-label="Main body"] .cm-st-value')[0].textContent === 'FALSE F'"""
+        """() => {
+            const run = document.querySelectorAll('[aria-label="Main body"] .cm-st-value')[0];
+            return run.firstChild.textContent === 'FALSE' && run.querySelector('.forced-mark')?.textContent === 'F';
+        }"""
     )
     stopped = inline_values(page, "Main body")[1]
     page.wait_for_timeout(300)

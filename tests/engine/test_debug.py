@@ -202,6 +202,145 @@ def test_step_statement_goes_into_called_functions():
     assert sim.scan_count == 1 and sim.read("MAIN.B") == 2
 
 
+def _nested_program():
+    """MAIN: 1 A := A + 1; 2 C1(); 3 X := X + 1.  CNT (FB): 1 N := N + 1; 2 M := DOUBLE(N); 3 N := N + 0.
+    DOUBLE (function): 1 T := N + N; 2 DOUBLE := T."""
+    n, mm = v("N", INT), v("M", INT)
+    double = function(
+        "DOUBLE",
+        INT,
+        [slot("N", INT, "VAR_INPUT"), slot("T", INT)],
+        [assign(v("T", INT), add(n, n)), assign(v("DOUBLE", INT), v("T", INT))],
+    )
+    cnt = pou(
+        "CNT",
+        [slot("N", INT), slot("M", INT)],
+        [
+            assign(n, add(n, c(1, INT))),
+            assign(mm, call("DOUBLE", n, type=INT, user=True)),
+            assign(n, add(n, c(0, INT))),
+        ],
+        kind="function_block",
+    )
+    main = pou(
+        "MAIN",
+        [slot("A", INT), slot("X", INT), slot("C1", fb("CNT"))],
+        [assign(A, add(A, c(1, INT))), fbcall(v("C1", fb("CNT"))), assign(X, add(X, c(1, INT)))],
+    )
+    return prog(main, cnt, double)
+
+
+def _steps(sim, granularity: str) -> list[tuple[str, int, str]]:
+    """Where each step of ``granularity`` halts until the scan ends: (POU, line, reason)."""
+    where, halt = [], sim.halted
+    while halt is not None:
+        where.append((halt.origin.pou, halt.origin.line, halt.reason))
+        halt = sim.step(granularity)
+    return where
+
+
+@pytest.mark.parametrize(
+    ("pou", "line", "granularity", "expected"),
+    [
+        # Step over (F10) passes over the call of C1 and of DOUBLE; stays in the POU, then its caller.
+        ("MAIN", 2, "over", [("MAIN", 2, "breakpoint"), ("MAIN", 3, "step")]),
+        ("CNT", 1, "over", [("CNT", 1, "breakpoint"), ("CNT", 2, "step"), ("CNT", 3, "step"), ("MAIN", 3, "step")]),
+        # Step into (F11) goes into every call.
+        (
+            "MAIN",
+            2,
+            "statement",
+            [
+                ("MAIN", 2, "breakpoint"),
+                ("CNT", 1, "step"),
+                ("CNT", 2, "step"),
+                ("DOUBLE", 1, "step"),
+                ("DOUBLE", 2, "step"),
+                ("CNT", 3, "step"),
+                ("MAIN", 3, "step"),
+            ],
+        ),
+        # Step out (Shift+F11) runs until the caller goes on.
+        ("DOUBLE", 1, "out", [("DOUBLE", 1, "breakpoint"), ("CNT", 3, "step"), ("MAIN", 3, "step")]),
+        ("CNT", 2, "out", [("CNT", 2, "breakpoint"), ("MAIN", 3, "step")]),
+        ("MAIN", 1, "out", [("MAIN", 1, "breakpoint")]),  # out of the program: the rest of the scan
+    ],
+)
+def test_step_over_into_and_out_of_calls(pou, line, granularity, expected):
+    """Issue 17 (CODESYS F10 / F11 / Shift+F11): what each step passes over, from a breakpoint."""
+    sim = Simulation(_nested_program(), variant="debug")
+    sim.set_breakpoint(pou, line=line)
+    sim.cycle()
+    sim.clear_breakpoints()
+    assert _steps(sim, granularity) == expected
+    assert sim.scan_count == 1 and (sim.read("MAIN.X"), sim.read("MAIN.C1.M")) == (1, 2)
+
+
+def test_a_breakpoint_inside_a_call_halts_a_step_over_it():
+    sim = Simulation(_nested_program(), variant="debug")
+    sim.set_breakpoint("MAIN", line=2)
+    sim.set_breakpoint("DOUBLE", line=2)
+    sim.cycle()
+    halt = sim.step("over")
+    assert (halt.origin.pou, halt.origin.line, halt.reason) == ("DOUBLE", 2, "breakpoint")
+    assert (sim.step("out").origin.pou, sim.halted.origin.line) == ("CNT", 3)
+
+
+def test_step_over_the_last_network_of_a_call_returns_to_the_caller_not_into_a_sibling_call():
+    """MAIN (a diagram) calls C1 and C2 in network N1: stepping over C1's last network goes on in MAIN."""
+    n = v("N", INT)
+    cnt = pou(
+        "CNT",
+        [slot("N", INT)],
+        [network("K1", [assign(n, add(n, c(1, INT)))]), network("K2", [assign(n, add(n, c(1, INT)))])],
+        kind="function_block",
+    )
+    main = pou(
+        "MAIN",
+        [slot("X", INT), slot("C1", fb("CNT")), slot("C2", fb("CNT"))],
+        [
+            network("N1", [fbcall(v("C1", fb("CNT"))), fbcall(v("C2", fb("CNT")))]),
+            network("N2", [assign(X, add(X, c(1, INT)))]),
+        ],
+    )
+    sim = Simulation(prog(main, cnt), variant="debug")
+    sim.set_breakpoint("CNT", network="K2")
+    sim.cycle()
+    sim.clear_breakpoints()
+    assert sim.halted.instance == "MAIN.C1"
+    halt = sim.step("over")
+    assert (halt.origin.pou, halt.origin.network, sim.read("MAIN.C2.N")) == ("MAIN", "N2", 2)
+    assert sim.step("over") is None
+
+
+def test_step_over_counts_calls_not_the_chunks_of_a_long_body():
+    """A POU body split into chunk functions is still one call: step over goes network by network."""
+    from .test_chunks import chunk_size
+
+    n = v("N", INT)
+    cnt = pou("CNT", [slot("N", INT)], [network("K1", [assign(n, add(n, c(1, INT)))])], kind="function_block")
+    main = pou(
+        "MAIN",
+        [slot("A", INT), slot("X", INT), slot("C1", fb("CNT"))],
+        [
+            network("N1", [assign(A, add(A, c(1, INT)))]),
+            network("N2", [fbcall(v("C1", fb("CNT")))]),
+            network("N3", [assign(X, add(X, c(1, INT)))]),
+        ],
+    )
+    with chunk_size(1):
+        sim = Simulation(prog(main, cnt), variant="debug")
+    assert "def ll_k2_MAIN" in sim.compiled.source  # every network its own chunk
+    sim.set_breakpoint("MAIN", network="N1")
+    sim.cycle()
+    sim.clear_breakpoints()
+    where, halt = [], sim.halted
+    while halt is not None:
+        where.append(halt.origin.network)
+        halt = sim.step("over")
+    assert where == ["N1", "N2", "N3"] and sim.read("MAIN.C1.N") == 1
+
+
 def test_step_when_not_halted_starts_a_scan_and_step_cycle_finishes_it():
     sim = Simulation(_st_program(), variant="debug")
     halt = sim.step("statement")

@@ -42,6 +42,7 @@ def test_plcopen_download_then_upload_gives_the_same_project(client: TestClient,
     original = client.get("/api/projects/motor").json()["project"]
     copied = client.get("/api/projects/copy").json()["project"]
     assert copied == {**original, "name": "copy"}
+    assert [t["name"] for t in copied["tests"]] == ["motor"]  # carried in LadderLab's addData
 
 
 def test_plcopen_upload_errors(client: TestClient, motor: str) -> None:

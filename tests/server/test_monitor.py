@@ -314,6 +314,9 @@ def test_element_breakpoints_and_power_flow_in_ladder(client: TestClient, motor_
         ws.send_json({"type": "step", "granularity": "network"})
         status, _ = recv_until(ws, of_type("status", state="halted"))
         assert status["at"]["network"] == "lamp"
+        ws.send_json({"type": "breakpoint_clear"})
+        ws.send_json({"type": "step", "granularity": "over"})  # the last network of Main: the scan ends
+        recv_until(ws, of_type("status", state="stopped"))
 
 
 def test_every_element_of_an_instance_when_no_ids_are_given(client: TestClient, motor_sim: str) -> None:

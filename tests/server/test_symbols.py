@@ -4,6 +4,9 @@ from __future__ import annotations
 
 from fastapi.testclient import TestClient
 
+from ladderlab.simulation.build import build_project
+from ladderlab.storage import Workspace
+
 from .helpers import detail, st_program
 
 
@@ -111,3 +114,133 @@ def test_symbols_of_unknown_pou_or_project_is_404(client: TestClient, motor: str
     response = client.get("/api/projects/motor/pous/Nope/symbols")
     assert (response.status_code, detail(response)["message"]) == (404, "POU 'Nope' does not exist")
     assert client.get("/api/projects/ghost/pous/Main/symbols").status_code == 404
+
+
+# --------------------------------------------------------------------------- the instance tree (ON-10)
+
+TREE_TYPES = """TYPE
+    Point : STRUCT
+        x : INT;
+        y : REAL;
+    END_STRUCT;
+END_TYPE"""
+TREE_GLOBALS = "VAR_GLOBAL\n    Alarm : BOOL;\n    Grid : ARRAY [1..2, 0..1] OF INT;\nEND_VAR"
+TREE_MAIN = """VAR
+    p : Point;
+    pts : ARRAY [0..2] OF Point;
+    big : ARRAY [1..1500] OF BOOL;
+    t1 : TON;
+    tmp_in : INT;
+END_VAR
+VAR_TEMP
+    scratch : INT;
+END_VAR"""
+
+
+def node(name: str, path: str, type_: str, var_class: str | None = None, expandable: bool = False) -> dict:
+    return {"name": name, "path": path, "type": type_, "var_class": var_class, "expandable": expandable}
+
+
+def children(client: TestClient, project: str, path: str) -> list[dict]:
+    response = client.get(f"/api/projects/{project}/variables", params={"path": path})
+    assert response.status_code == 200, response.text
+    return response.json()["children"]
+
+
+def test_the_instance_tree_of_the_example_programs_and_fb_instances(client: TestClient, motor: str) -> None:
+    """ON-10: program, FB instances (standard and user), their pins and variables, with types and classes."""
+    top = children(client, "motor", "")
+    assert [(n["name"], n["var_class"], n["expandable"]) for n in top[:2]] == [
+        ("Main", "PROGRAM", True),
+        ("Scaling", "PROGRAM", True),
+    ]
+    assert [n["path"] for n in top[2:]] == [s["name"] for s in MOTOR_GLOBALS]
+    assert children(client, "motor", "Main")[:3] == [
+        node("RunTimer", "Main.RunTimer", "TON", "VAR", True),
+        node("StartCounter", "Main.StartCounter", "CTU", "VAR", True),
+        node("Blink", "Main.Blink", "Blinker", "VAR", True),
+    ]
+    # A standard FB: its inputs and outputs as IEC 61131-3 declares them (TON: IN, PT; Q, ET).
+    assert children(client, "motor", "Main.RunTimer") == [
+        node("IN", "Main.RunTimer.IN", "BOOL", "VAR_INPUT"),
+        node("PT", "Main.RunTimer.PT", "TIME", "VAR_INPUT"),
+        node("Q", "Main.RunTimer.Q", "BOOL", "VAR_OUTPUT"),
+        node("ET", "Main.RunTimer.ET", "TIME", "VAR_OUTPUT"),
+    ]
+    # A user FB (examples/motor/pous/Blinker.st): its own declarations, a nested instance too.
+    assert children(client, "motor", "main.blink") == [
+        node("Enable", "main.blink.Enable", "BOOL", "VAR_INPUT"),
+        node("Period", "main.blink.Period", "TIME", "VAR_INPUT"),
+        node("Out", "main.blink.Out", "BOOL", "VAR_OUTPUT"),
+        node("Half", "main.blink.Half", "TON", "VAR", True),
+    ]
+    assert [n["path"] for n in children(client, "motor", "main.blink.Half")] == [
+        "main.blink.Half.IN",
+        "main.blink.Half.PT",
+        "main.blink.Half.Q",
+        "main.blink.Half.ET",
+    ]
+
+
+def tree_project(client: TestClient) -> None:
+    response = client.post("/api/projects", json={"name": "tree"})
+    assert response.status_code == 201, response.text
+    project = {
+        "name": "tree",
+        "types": TREE_TYPES,
+        "globals": TREE_GLOBALS,
+        "pous": [st_program("Main", TREE_MAIN, "p.x := p.x + 1;")],
+    }
+    saved = client.put("/api/projects/tree", json=project, headers={"If-Match": f'"{response.json()["revision"]}"'})
+    assert saved.status_code == 200, saved.text
+
+
+def test_structures_arrays_and_globals_expand(client: TestClient) -> None:
+    tree_project(client)
+    main = children(client, "tree", "Main")
+    assert [n["name"] for n in main] == ["p", "pts", "big", "t1", "tmp_in"]  # VAR_TEMP lives only in a call
+    assert children(client, "tree", "Main.p") == [
+        node("x", "Main.p.x", "INT"),
+        node("y", "Main.p.y", "REAL"),
+    ]
+    assert children(client, "tree", "Main.pts") == [
+        node(f"[{i}]", f"Main.pts[{i}]", "Point", expandable=True) for i in range(3)
+    ]
+    assert children(client, "tree", "Main.pts[2]") == [
+        node("x", "Main.pts[2].x", "INT"),
+        node("y", "Main.pts[2].y", "REAL"),
+    ]
+    # A two-dimensional global, through GVL. or by name: rows, then the elements of a row.
+    assert children(client, "tree", "GVL.Grid") == [
+        node("[1]", "GVL.Grid[1]", "ARRAY [0..1] OF INT", expandable=True),
+        node("[2]", "GVL.Grid[2]", "ARRAY [0..1] OF INT", expandable=True),
+    ]
+    assert children(client, "tree", "Grid[2]") == [node("[0]", "Grid[2, 0]", "INT"), node("[1]", "Grid[2, 1]", "INT")]
+    # A long array lists its first 1,000 elements and counts the rest.
+    big = client.get("/api/projects/tree/variables", params={"path": "Main.big"}).json()
+    assert (len(big["children"]), big["children"][-1]["path"], big["more"]) == (1000, "Main.big[1000]", 500)
+
+
+def test_every_path_of_the_tree_reads_in_a_running_simulation(client: TestClient, workspace: Workspace) -> None:
+    """The tree's paths are the engine's: each one the server lists can be read while the program runs."""
+    tree_project(client)
+    sim = build_project(workspace.load("tree").project).simulation()
+    sim.cycle()
+    pending, read = [""], 0
+    while pending:
+        for child in children(client, "tree", pending.pop()):
+            if child["expandable"] and not child["path"].endswith("big"):
+                pending.append(child["path"])
+            else:
+                sim.read(child["path"])  # raises for a path the engine does not know
+                read += 1
+    assert read == 2 + 1 + 2 * 3 + 4 + 1 + 1 + 4  # p.x/y, big, pts[i].x/y, t1 pins, tmp_in, Alarm, Grid elements
+
+
+def test_an_unknown_variable_is_refused_with_a_suggestion(client: TestClient, motor: str) -> None:
+    response = client.get("/api/projects/motor/variables", params={"path": "Mian"})
+    assert response.status_code == 404
+    assert detail(response)["message"] == "no program or global variable 'Mian' - did you mean 'Main'?"
+    response = client.get("/api/projects/motor/variables", params={"path": "Main.RunTimer.Nope"})
+    assert response.status_code == 404
+    assert detail(response)["message"] == "Main.RunTimer.Nope: TON has no member 'Nope'"

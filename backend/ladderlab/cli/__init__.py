@@ -1,4 +1,4 @@
-"""The ``ladderlab`` command line: serve, check, run, compile, export, import, schema."""
+"""The ``ladderlab`` command line: serve, check, run, test, compile, export, import, schema."""
 
 from __future__ import annotations
 
@@ -17,6 +17,7 @@ from ..simulation.check import check_project
 from ..storage import StorageError, load_project_path
 from ..storage.atomic import write_atomic
 from .run import jsonl_line, parse_duration, parse_set, run_scans, table_lines
+from .test import add_test_command
 
 EXIT_OK, EXIT_ERRORS, EXIT_USAGE, EXIT_RUNTIME, EXIT_INTERNAL = 0, 1, 2, 3, 70
 
@@ -123,6 +124,8 @@ def _parser() -> argparse.ArgumentParser:
     )
     run.add_argument("--format", choices=["table", "jsonl"], default="table")
     run.set_defaults(func=_run)
+
+    add_test_command(sub)
 
     compile_ = sub.add_parser("compile", help="check and compile a project; optionally print the generated Python")
     compile_.add_argument("project", type=Path, help="project folder, project .json file or .st file")

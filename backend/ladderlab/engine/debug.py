@@ -8,11 +8,15 @@ Generated debug code is made of generators: at every pause point it runs
 which pause points are armed in ``ll_halt``:
 
 * breakpoints, always;
-* while stepping ``statement``: every ST statement and every network boundary
-  (LD/FBD step by network, ON-04); ``network``: every network boundary;
-  ``transition``: every SFC transition that fires, in this scan and the following
-  ones until one does (``waiting_for_transition``); ``cycle``: nothing more (run
-  to the end of the scan, or the next breakpoint).
+* while stepping ``statement`` (step into), ``over`` and ``out``: every ST statement and
+  every network boundary (LD/FBD step by network, ON-04); ``network``: every network
+  boundary; ``transition``: every SFC transition that fires, in this scan and the
+  following ones until one does (``waiting_for_transition``); ``cycle``: nothing more
+  (run to the end of the scan, or the next breakpoint).
+
+``over`` and ``out`` arm what ``statement`` arms; the simulation passes over the points
+inside calls made from the halted POU (``over``) or inside that POU itself (``out``):
+``STEP_ENDS`` says which halts end such a step.
 
 Breakpoints name an ST line, a network or an element of a POU; in an SFC POU also
 the action or named transition (``body``: ``actions/<name>``, ``transitions/<name>``)
@@ -26,14 +30,30 @@ from dataclasses import dataclass
 from ..ir import nodes as ir
 from .codegen.context import PausePoint
 
-GRANULARITIES = ("statement", "network", "transition", "cycle")
+GRANULARITIES = ("statement", "over", "out", "network", "transition", "cycle")
+_STEPS_INTO = ("statement", "network")
 _STEP_KINDS = {
-    "statement": ("statement", "network"),
+    "statement": _STEPS_INTO,
+    "over": _STEPS_INTO,
+    "out": _STEPS_INTO,
     "network": ("network",),
     "transition": ("transition",),
     "cycle": (),
 }
 _ELEMENT_KINDS = ("element", "transition")
+
+
+def _within(frames: tuple, start: tuple) -> bool:
+    """Whether ``frames`` (the POU calls a halt is in, outermost first) are those of ``start`` or its callers."""
+    return frames == start[: len(frames)]
+
+
+#: A step ``over`` ends in the POU call where it started, or in a caller once that call returned (not in
+#: calls made from it, nor in a sibling call); a step ``out`` ends in a caller.
+STEP_ENDS = {
+    "over": _within,
+    "out": lambda frames, start: len(frames) < len(start) and _within(frames, start),
+}
 
 
 @dataclass(frozen=True)

@@ -96,7 +96,13 @@ class Resolver:
     def __init__(self, context: ModuleContext) -> None:
         self.context = context
         self.programs = {n: p for n, p in context.pous.items() if p.kind == "program"}
+        self.attached: dict[str, str] = {}  # root name of an instance outside the tasks -> its POU (upper case)
         self._cache: dict[str, Location] = {}
+
+    def attach(self, name: str, pou: str) -> None:
+        """Resolve paths starting with ``name`` in an instance of ``pou`` (``Simulation.attach``)."""
+        self.attached[name.upper()] = pou.upper()
+        self._cache.clear()
 
     def resolve(self, text: str) -> Location:
         """The location a path names; resolved paths are remembered (locations walk from the live roots, so
@@ -116,9 +122,10 @@ class Resolver:
             raise ValueError(f"{text!r} is not a variable path (it must start with a name)")
         first = toks[0][1].upper()
         rest = toks[1:]
-        if first in self.programs:
+        if first in self.programs or first in self.attached:
             name, rest = self._member_name(rest, text)
-            return self._walk(text, first, ("program", first), self.context.layouts[first], name, rest)
+            layout = self.context.layouts[self.attached.get(first, first)]
+            return self._walk(text, first, ("program", first), layout, name, rest)
         if first == GLOBALS_PREFIX and rest[:1] == [("punct", ".")]:
             name, rest = self._member_name(rest, text)
             return self._global(text, name, rest)

@@ -25,8 +25,9 @@ one thread (see docs/runtime.md).
 from __future__ import annotations
 
 import time
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Callable, Generator, Iterable, Iterator
 from dataclasses import dataclass
+from typing import cast
 
 from ..iec.spelling import did_you_mean
 from ..ir import nodes as ir
@@ -35,9 +36,12 @@ from .codegen import names
 from .codegen.context import ProbeTable
 from .codegen.faults import Fault, make_fault
 from .codegen.runtime import UNSET, Watchdog
+from .codegen.scope import global_owner
 from .compile import CompiledProgram, compile_program
-from .debug import Debugger, Halt
+from .debug import STEP_ENDS, Debugger, Halt
+from .doubles import Mocks
 from .paths import Location, LocationReader, Resolver, Roots, UnknownPath, coerce_for, leaves, plain
+from .state import SimState, data_of, restore_into
 from .tasks import DEFAULT_WATCHDOG_S, Schedule, Task, task_table
 
 
@@ -112,6 +116,9 @@ class Simulation:
         self._watchdog_left = 0.0
         self._paths: dict[int, str] | None = None
         self._instances: dict[str, tuple[object, str]] = {}  # upper-case path -> (instance, upper-case POU name)
+        self._attached: dict[str, str] = {}  # instances outside the tasks (attach): name -> POU, upper case
+        self._links: dict[str, dict[str, str]] = {}  # their VAR_IN_OUT links to program instances
+        self.mocks = Mocks()
         self._deferred_locations: dict[tuple[str, int], Location] = {}  # (program, probe number) -> its variable
         self._attach_debugger()
         self._initialise(warm=False)
@@ -239,6 +246,7 @@ class Simulation:
         self._stamp += 1
         self._ns["ll_scan"] = self._stamp
         if self.debugger is None:
+            outer = self._watchdog.deadline, self._watchdog.limit_s  # a scan run from a test's body (call)
             start = self._clock()
             for task in due:
                 if not task.stopped:
@@ -249,6 +257,7 @@ class Simulation:
                     except Exception as error:
                         self._fault(task, error, now)
             self._finish((self._clock() - start) * 1000.0)
+            self._watchdog.deadline, self._watchdog.limit_s = outer
             return True
         self._scan, self._busy = self._debug_scan(now, due), 0.0
         return self._drive()
@@ -304,6 +313,75 @@ class Simulation:
             )
         )
 
+    # ------------------------------------------------------------------ outside the task configuration (tests)
+
+    def attach(self, name: str, pou: str, links: dict[str, str] | None = None) -> object:
+        """A new instance of the PROGRAM or FUNCTION_BLOCK ``pou`` that no task runs, reachable by path as
+        ``name`` (read, write, force, probes, snapshot, state) until a reset; returns it.
+
+        ``links`` binds VAR_IN_OUT slots of the instance to program instances of the configuration (slot ->
+        program name), so its code reads and writes them (a test's ``Main.Start := TRUE``)."""
+        key, pou_key = name.upper(), pou.upper()
+        obj = self._ns[names.pou_class(self._context.pous[pou_key].name)]()  # type: ignore[operator]
+        layout = self._context.layouts[pou_key]
+        for slot, program in (links or {}).items():
+            place = layout.get(slot)
+            owner = obj if place.page == 0 else getattr(obj, f"ll_p{place.page}")
+            setattr(owner, place.attr, (self.programs, program.upper()))
+        self.programs[key] = obj
+        self._attached[key] = pou_key
+        self._links[key] = dict(links or {})
+        self._resolver.attach(key, pou_key)
+        self._paths = None
+        return obj
+
+    def call(self, obj: object, *, limit_s: float, passthrough: tuple[type[BaseException], ...] = ()) -> Fault | None:
+        """Run one call of an (attached) instance now, outside any scan, under a watchdog of ``limit_s``: a
+        test's body. Scans it runs (``cycle`` from a function it calls) keep their own task watchdogs. A runtime
+        error becomes the returned Fault; exceptions of the ``passthrough`` types reach the caller."""
+        self._not_halted()
+        now = self._ns["ll_now"]
+        self._watchdog.arm(limit_s)
+        try:
+            obj.execute(now)  # type: ignore[attr-defined]
+        except passthrough:
+            raise
+        except Exception as error:
+            return make_fault(
+                error,
+                self.compiled.generated,
+                self.compiled.filename,
+                self._ns,
+                task="",
+                time_ms=now,  # type: ignore[arg-type]
+                scan=self.scan_count,
+                instance_path=self._instance_path,
+            )
+        finally:
+            self._watchdog.deadline = float("inf")
+        return None
+
+    def advance_clock(self, ms: float) -> None:
+        """Move the virtual clock ``ms`` forward without a scan: FB calls outside scans see the new time, and
+        each task is next due at its first interval after it (ADVANCE_TIME)."""
+        if not ms >= 0:
+            raise ValueError(f"the clock only moves forward, not by {ms} ms")
+        now = max(self.time_ms, self._ns["ll_now"]) + ms  # type: ignore[type-var, operator]
+        self._schedule.skip_to(now)
+        self._ns["ll_now"] = now
+
+    def replace_function(self, name: str, function: Callable[..., object]) -> None:
+        """Every later call of the user FUNCTION ``name`` calls ``function`` with its arguments (fast and
+        monitor variants: inputs, then VAR_IN_OUT references as (container, key))."""
+        pou = self._context.pous.get(name.upper())
+        if pou is None or pou.kind != "function":
+            raise UnknownPath(f"no user FUNCTION {name!r}")
+        self._ns[names.function(pou.name)] = function
+
+    def mock(self, obj: object) -> None:
+        """From now on calls of this FB instance are counted and its body does not run (MOCK)."""
+        self.mocks.mock(obj)
+
     # ------------------------------------------------------------------ debugging
 
     def _debugging(self) -> Debugger:
@@ -319,18 +397,36 @@ class Simulation:
         return self._continue(None)
 
     def step(self, granularity: str = "statement") -> Halt | None:
-        """Run to the next pause point of this granularity (statement | network | transition | cycle).
+        """Run to the next pause point of this granularity: statement (into calls) | over | out | network |
+        transition | cycle.
 
-        Halted: continue the current scan. Not halted: start the next scan and
-        stop at its first such point. Returns the new halt (None: the scan ended).
-        ``transition`` stays armed in the scans that follow until an SFC transition
-        fires (``debugger.waiting_for_transition``): run scans to get there."""
+        Halted: continue the current scan (``over`` passes over the calls the halted POU makes,
+        ``out`` runs until its caller goes on; a breakpoint on the way halts first). Not halted:
+        start the next scan and stop at its first such point. Returns the new halt (None: the scan ended).
+        ``transition`` stays armed in the scans that follow until an SFC transition fires
+        (``debugger.waiting_for_transition``): run scans to get there."""
         debugger = self._debugging()
         debugger.arm(granularity)
         if self.halted is None:
             self.cycle(1)
             return self.halted
-        return self._continue(granularity)
+        ends = STEP_ENDS.get(granularity)
+        start = self._call_frames()
+        halt = self._continue(granularity)
+        while halt is not None and ends is not None and halt.reason == "step" and not ends(self._call_frames(), start):
+            halt = self._continue(granularity)
+        return halt
+
+    def _call_frames(self) -> tuple[object, ...]:
+        """The POU calls the halted scan is suspended in, outermost first: its generators (``yield from``
+        chains one per call), without the chunk functions that hold parts of one POU's body."""
+        frames: list[object] = []
+        frame = cast("Generator[object, None, None] | None", self._scan)  # the debug scan is a generator
+        while frame is not None:
+            if not names.is_chunk_function(frame.gi_code.co_name):
+                frames.append(frame)
+            frame = frame.gi_yieldfrom
+        return tuple(frames)
 
     def _continue(self, granularity: str | None) -> Halt | None:
         self.debugger.arm(granularity)  # type: ignore[union-attr]
@@ -462,7 +558,7 @@ class Simulation:
         if self._paths is None:
             self._paths, self._instances = {}, {}
             for key, obj in self.programs.items():
-                self._add_instance(key, obj, key)
+                self._add_instance(key, obj, self._attached.get(key, key))
             for place in self._context.globals.places.values():  # type: ignore[union-attr]
                 value = getattr(self._roots.get(("global", "G" if not place.page else f"G{place.page}")), place.attr)
                 self._add_values(place.slot.name, place.slot.type, value)
@@ -545,6 +641,49 @@ class Simulation:
     def _apply_forces(self) -> None:
         for location, value in self._forces.values():
             location.set(self._roots, value)
+
+    # ------------------------------------------------------------------ state (engine/state.py)
+
+    def state(self) -> SimState:
+        """The whole state between scans as plain data (not while halted)."""
+        self._not_halted()
+        pages = sorted({global_owner(p.page) for p in self._context.globals.places.values()})  # type: ignore[union-attr]
+        return SimState(
+            self.compiled.declarations,
+            self.time_ms,
+            self._ns["ll_now"],  # type: ignore[arg-type]
+            self.scan_count,
+            self._stamp,
+            tuple((task.next_due, task.stopped) for task in self._tasks),
+            {name: data_of(obj) for name, obj in self.programs.items()},  # type: ignore[misc]
+            {page: data_of(self._ns[page]) for page in pages},  # type: ignore[misc]
+            {path: value for path, (_, value) in self._forces.items()},
+            {name: (pou, dict(self._links.get(name, {}))) for name, pou in self._attached.items()},
+        )
+
+    def restore(self, state: SimState) -> None:
+        """Make this simulation's state ``state`` (captured from a simulation of the same program): variables,
+        instances, probes, clock, tasks, forces, attached instances. Faults are cleared, a halted scan ended."""
+        if state.declarations != self.compiled.declarations:
+            raise ValueError("that state was captured from another program")
+        self.reset(cold=True)
+        for name, (pou, links) in state.attached.items():
+            if name not in self.programs:
+                self.attach(name, pou, links)
+        for name, data in state.instances.items():
+            restore_into(self.programs[name], data)  # type: ignore[arg-type]
+        for page, data in state.globals.items():
+            restore_into(self._ns[page], data)  # type: ignore[arg-type]
+        self._schedule.time_ms = state.time_ms
+        for task, (due, stopped) in zip(self._tasks, state.tasks):
+            task.next_due, task.stopped = due, stopped
+        self._ns["ll_now"] = state.now
+        self.scan_count = state.scan_count
+        self._stamp = state.stamp
+        self._ns["ll_scan"] = state.stamp
+        self._forces.clear()
+        for path, value in state.forces.items():
+            self.force(path, value)
 
     def snapshot(self) -> dict[str, object]:
         """Every elementary variable of every program instance and every global: path -> value."""

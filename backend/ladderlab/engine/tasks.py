@@ -131,12 +131,16 @@ class Schedule:
 
     def at(self, time_ms: float) -> list[Task]:
         """Move the clock to ``time_ms`` (not backwards) for a scan of every task; each task is next due after it."""
+        self.skip_to(time_ms)
+        return list(self._ordered)
+
+    def skip_to(self, time_ms: float) -> None:
+        """Move the clock to ``time_ms`` (not backwards) without a scan; each task is next due after it."""
         if not time_ms >= self.time_ms:
             raise ValueError(f"time {time_ms} ms is before the current time {self.time_ms} ms")
         for task in self.tasks:
             task.next_due = (math.floor(time_ms / task.interval_ms) + 1) * task.interval_ms
         self.time_ms = time_ms
-        return list(self._ordered)
 
 
 class Scanner(Protocol):

@@ -63,6 +63,8 @@ class PouContext:
         # The text being lowered when it is not the POU's body: an SFC POU's chart or one of its actions or named
         # transitions (``<POU>/chart``, ``<POU>/actions/<name>``): where diagnostics without a file of their own go.
         self.default_file: str | None = None
+        # A front end's own statements, lowered before the ST ones (test files' verbs: ir/lower_tests.py)
+        self.extra_statements: dict[type, Any] = {}
 
     # ------------------------------------------------------------ diagnostics
     def report(

@@ -82,7 +82,8 @@ def _statement(statement: ast.Stmt, ctx: PouContext) -> list[Stmt]:
     lifted: list[Stmt] = []
     ctx.lifts, ctx.reads, ctx.calls = lifted, 0, 0
     try:
-        lowered = _LOWER[type(statement)](statement, ctx)
+        lower = ctx.extra_statements.get(type(statement)) if ctx.extra_statements else None
+        lowered = (lower or _LOWER[type(statement)])(statement, ctx)
     except LoweringError as error:
         if not ctx.checker_error_in(statement.span):  # no second diagnostic for a statement the checker rejected
             ctx.report_error(error, statement)
@@ -121,7 +122,7 @@ def _assign_bit(target: ast.Member, value: ast.Expr, ctx: PouContext, origin: Or
     return Assign(var, updated, origin)
 
 
-def _call_statement(statement: ast.CallStmt, ctx: PouContext) -> list[Stmt]:
+def lower_call_statement(statement: ast.CallStmt, ctx: PouContext) -> list[Stmt]:
     call = statement.call
     if not isinstance(call, ast.Call):
         raise LoweringError(None)
@@ -284,7 +285,7 @@ def _empty(statement: ast.Empty, ctx: PouContext) -> list[Stmt]:
 
 _LOWER = {
     ast.Assign: _assign,
-    ast.CallStmt: _call_statement,
+    ast.CallStmt: lower_call_statement,
     ast.If: _if,
     ast.Case: _case,
     ast.For: _for,

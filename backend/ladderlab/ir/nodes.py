@@ -275,6 +275,10 @@ class Pou:
     blocks: list[Block]
     return_type: IrType | None = None
     language: Literal["st", "ld", "fbd", "sfc"] = "st"
+    #: False: FB calls in the body see the time the POU was called with (a scan's clock, frozen in the scan).
+    #: True: each FB call reads the engine's clock as it is then - a test's body, whose ADVANCE_TIME and
+    #: RUN_SCANS move the clock between its statements (docs/testing.md).
+    live_clock: bool = False
 
 
 @dataclass

@@ -21,7 +21,7 @@ from .fbd import (
     Wire,
 )
 from .ld import Box, Coil, Compare, Contact, Jump, LdBody, LdElement, LdNetwork, Parallel, Return
-from .project import PROJECT_FORMAT, Pou, Project, Task
+from .project import PROJECT_FORMAT, Pou, Project, Task, TestFile
 
 __all__ = [
     "PROJECT_FORMAT",
@@ -53,6 +53,7 @@ __all__ = [
     "Return",
     "Severity",
     "Task",
+    "TestFile",
     "Wire",
     "has_errors",
 ]

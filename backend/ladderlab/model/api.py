@@ -91,6 +91,29 @@ class SymbolTable(BaseModel):
     )
 
 
+class VariableNode(BaseModel):
+    """One variable of the instance tree (ON-10): a POU's variable, an FB's pin or variable, a field, an element."""
+
+    name: str = Field(description="As declared ('RunTimer', 'ET'), or an array element's index ('[3]').")
+    path: str = Field(description="The path that reads, writes and forces it: 'MAIN.RunTimer.ET', 'MAIN.arr[3]'.")
+    type: str = Field(description="Its type as IEC text: 'TIME', 'TON', 'ARRAY [1..3] OF INT'.")
+    var_class: str | None = Field(
+        default=None, description="VAR, VAR_INPUT, VAR_OUTPUT... of a variable; null for fields and array elements."
+    )
+    expandable: bool = Field(description="It has members: an FB instance, a structure or an array.")
+
+
+class VariableChildren(BaseModel):
+    """``GET /api/projects/{name}/variables?path=``: what one variable of the saved project holds.
+
+    No path: the programs (each its own instance) and the global variables."""
+
+    path: str
+    type: str | None = Field(description="The variable's type as IEC text; null for the top (no path).")
+    children: list[VariableNode]
+    more: int = Field(default=0, description="Array elements left out after the first ones (too many to list).")
+
+
 class Pin(BaseModel):
     """A parameter of a library function or function block."""
 
@@ -196,6 +219,106 @@ class FbdOrder(BaseModel):
     order: list[str] = Field(description="Blocks, input, output, jump and return nodes; connectors have no place.")
 
 
+class TestCaseInfo(BaseModel):
+    name: str
+    line: int = Field(description="Line of its TEST keyword in the test file.")
+
+
+class TestFileInfo(BaseModel):
+    """A test file's tests, or the diagnostics that keep it from compiling."""
+
+    file: str = Field(description="tests/<name>.st")
+    tests: list[TestCaseInfo] = Field(default_factory=list)
+    diagnostics: list[Diagnostic] = Field(default_factory=list)
+
+
+class TestListing(BaseModel):
+    """``POST /api/tests/list``: every test file of the working copy and its tests (parsed, not run)."""
+
+    files: list[TestFileInfo]
+
+
+class TestFailureInfo(BaseModel):
+    message: str
+    line: int | None = None
+    column: int | None = None
+    verb: str | None = None
+    actual: str | None = Field(default=None, description="The actual value as an IEC literal (assertions).")
+    expected: str | None = Field(default=None, description="The expected value as an IEC literal (assertions).")
+    note: str | None = Field(default=None, description="The assertion's own message.")
+    kind: str = Field(description="assertion, timeout, budget, fault, watchdog, memory or error")
+
+
+class TestResultInfo(BaseModel):
+    file: str
+    name: str
+    line: int
+    outcome: Literal["passed", "failed"]
+    duration_s: float
+    scans: int
+    failure: TestFailureInfo | None = None
+
+
+class CoverageInfo(BaseModel):
+    """What the tests never executed or energised in one POU (element ids of LD/FBD, body lines of ST)."""
+
+    language: str
+    elements: int
+    executed: int
+    never_executed: list[str] = Field(default_factory=list)
+    never_energised: list[str] = Field(default_factory=list)
+    never_executed_lines: list[int] = Field(default_factory=list)
+
+
+class TestSummary(BaseModel):
+    passed: int
+    failed: int
+    skipped: int
+    files_with_errors: int
+    seconds: float
+
+
+class TestEvent(BaseModel):
+    """One line of the ``POST /api/tests/run`` stream: a file prepared (its tests or its diagnostics), a test's
+    result, or the end (summary, and coverage per POU when asked for)."""
+
+    type: Literal["file", "result", "done"]
+    file: TestFileInfo | None = None
+    result: TestResultInfo | None = None
+    summary: TestSummary | None = None
+    coverage: dict[str, CoverageInfo] | None = None
+
+
+class TestRunRequest(BaseModel):
+    """Body of ``POST /api/tests/run``: the working copy, and which tests (none: all; a file; one test)."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    project: Project
+    file: str | None = Field(default=None, description="tests/<name>.st; None: every test file")
+    test: str | None = Field(default=None, description="one test of that file by name; None: all of them")
+    coverage: bool = False
+
+
+class TestOpenRequest(BaseModel):
+    """Body of ``POST /api/tests/open``: the failing test whose last state is to be opened online."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    project: Project
+    file: str
+    test: str
+
+
+class TestCheckRequest(BaseModel):
+    """Body of ``POST /api/tests/check``: the diagnostics of one test file of the working copy (ST editor)."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    project: Project
+    file: str
+
+
 class ApiTypes(BaseModel):
     """Container so every API shape lands in one schema file (``api.schema.json``)."""
 
@@ -206,6 +329,7 @@ class ApiTypes(BaseModel):
     save_result: SaveResult
     check_report: CheckReport
     symbol_table: SymbolTable
+    variable_children: VariableChildren
     library_entry: LibraryEntry
     error_detail: ErrorDetail
     conflict_detail: ConflictDetail
@@ -214,3 +338,8 @@ class ApiTypes(BaseModel):
     st_export: StExport
     import_report: ImportReport
     fbd_order: FbdOrder
+    test_listing: TestListing
+    test_event: TestEvent
+    test_run_request: TestRunRequest
+    test_open_request: TestOpenRequest
+    test_check_request: TestCheckRequest

@@ -134,10 +134,14 @@ class Continue(_Request):
 
 class Step(_Request):
     """Run to the next network (LD/FBD), statement (ST; networks in diagrams), SFC transition that fires (over as
-    many scans as it takes) or the end of the scan."""
+    many scans as it takes) or the end of the scan.
+
+    ``statement`` steps into calls; ``over`` goes to the next statement or network of the halted POU
+    (or of its caller once it returns), passing over the calls it makes; ``out`` runs until the caller
+    of the halted POU goes on. A breakpoint on the way halts first."""
 
     type: Literal["step"]
-    granularity: Literal["network", "statement", "transition", "cycle"] = "statement"
+    granularity: Literal["network", "statement", "over", "out", "transition", "cycle"] = "statement"
 
 
 class Run(_Request):

@@ -5,6 +5,7 @@ from __future__ import annotations
 import re
 
 IEC_IDENTIFIER = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*\Z")  # \Z: "$" would accept a final newline
+TEST_FILE_NAME = re.compile(r"^[A-Za-z0-9][A-Za-z0-9_-]*\Z")
 PROJECT_NAME = re.compile(r"^[A-Za-z0-9][A-Za-z0-9 _.-]*\Z")
 MAX_NAME_LENGTH = 64
 
@@ -29,4 +30,13 @@ def project_name_problem(name: str) -> str | None:
             "use letters, digits, spaces, '_', '-' and '.', start with a letter or digit, "
             "and do not end with '.' or a space"
         )
+    return None
+
+
+def test_file_name_problem(name: str) -> str | None:
+    """Why ``name`` cannot name a test file (``tests/<name>.st``), or None."""
+    if not name or len(name) > MAX_NAME_LENGTH:
+        return f"use 1 to {MAX_NAME_LENGTH} characters"
+    if not TEST_FILE_NAME.match(name):
+        return "use letters, digits, '_' and '-', starting with a letter or digit"
     return None

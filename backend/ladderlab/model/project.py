@@ -81,6 +81,19 @@ class Task(BaseModel):
     )
 
 
+class TestFile(BaseModel):
+    """A file of unit tests, ``tests/<name>.st`` in the project folder (docs/testing.md).
+
+    Tests a teacher hides from students live in ``tests/hidden/`` and are not part of the model: the
+    browser never sees them, ``ladderlab test --grade`` runs them."""
+
+    model_config = ConfigDict(extra="forbid")
+    name: str = Field(description="File name without the .st suffix (letters, digits, '_' and '-').")
+    text: str = Field(default="", description="ST test text: SETUP, TEARDOWN and TEST blocks, as typed.")
+
+    _normalise_texts = field_validator("text", mode="before")(_strip_trailing_whitespace)
+
+
 class Project(BaseModel):
     model_config = ConfigDict(extra="forbid")
 
@@ -90,6 +103,7 @@ class Project(BaseModel):
     globals: str = Field(default="", description="ST text of VAR_GLOBAL ... END_VAR blocks.")
     pous: list[Pou] = Field(default_factory=list)
     tasks: list[Task] = Field(default_factory=list)
+    tests: list[TestFile] = Field(default_factory=list, description="Unit test files (tests/<name>.st).")
 
     _normalise_texts = field_validator("types", "globals", mode="before")(_strip_trailing_whitespace)
 

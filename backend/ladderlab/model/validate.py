@@ -5,7 +5,7 @@ from __future__ import annotations
 import re
 
 from .diagnostics import Diagnostic
-from .names import pou_name_problem
+from .names import pou_name_problem, test_file_name_problem
 from .project import Project
 
 _TIME_LITERAL = re.compile(r"^(T|TIME)#-?(\d+(\.\d+)?(d|h|ms|m|s|us|ns)_?)+\Z", re.IGNORECASE)
@@ -41,6 +41,28 @@ def validate_project(project: Project) -> list[Diagnostic]:
                 )
             )
     out.extend(_validate_tasks(project))
+    out.extend(_validate_tests(project))
+    return out
+
+
+def _validate_tests(project: Project) -> list[Diagnostic]:
+    out: list[Diagnostic] = []
+    seen: set[str] = set()
+    for test in project.tests:
+        problem = test_file_name_problem(test.name)
+        if problem:
+            out.append(
+                Diagnostic(code="BAD-NAME", file=f"tests/{test.name}.st", message=f"invalid test file name: {problem}")
+            )
+        elif test.name.lower() in seen:
+            out.append(
+                Diagnostic(
+                    code="DUPLICATE-TEST-FILE",
+                    file=f"tests/{test.name}.st",
+                    message=f"test file {test.name!r} is there twice",
+                )
+            )
+        seen.add(test.name.lower())
     return out
 
 

@@ -1,4 +1,6 @@
-"""The resolved declarations of one POU, for the variable table and operand autocomplete.
+"""The resolved declarations of one POU, for the variable table and operand autocomplete, and the
+instance tree of the watch list and the Variables view (what a program, FB instance, structure or
+array holds: ``GET /api/projects/{name}/variables?path=``).
 
 They come from the ST checker, which resolves every POU's declarations before (and
 independently of) its body, so the table is complete while the body has errors.
@@ -8,14 +10,17 @@ from __future__ import annotations
 
 from fastapi import APIRouter
 
+from ..engine.paths import GLOBALS_PREFIX, tokens
+from ..iec.spelling import did_you_mean
 from ..model import Project
-from ..model.api import SymbolInfo, SymbolTable
+from ..model.api import SymbolInfo, SymbolTable, VariableChildren, VariableNode
+from ..st import types as t
 from ..st.checker import check_project as check_st
 from ..st.printer import print_initializer, print_type
 from ..st.symbols import Symbol
 from ..storage import NotFoundError
 from .context import WorkspaceDep
-from .errors import responses
+from .errors import ApiError, responses
 
 router = APIRouter(prefix="/api/projects", tags=["symbols"])
 
@@ -59,3 +64,141 @@ def symbol_table(project: Project, pou_name: str) -> SymbolTable:
 @router.get("/{name}/pous/{pou}/symbols", response_model=SymbolTable, responses=responses(404, 422))
 def get_symbols(name: str, pou: str, workspace: WorkspaceDep) -> SymbolTable:
     return symbol_table(workspace.load(name).project, pou)
+
+
+# --------------------------------------------------------------------------- the instance tree (ON-10)
+
+#: An array lists at most this many elements of its first dimension (the rest is counted in ``more``).
+MAX_ELEMENTS = 1000
+#: Variables a running instance holds: VAR_TEMP lives only during a call, externals are the globals.
+_INSTANCE_CLASSES = ("VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_STAT")
+
+
+def _expandable(ty: t.Type) -> bool:
+    return isinstance(ty, (t.FbType, t.StructType, t.ArrayType))
+
+
+def _variable(symbol: Symbol, path: str) -> VariableNode:
+    return VariableNode(
+        name=symbol.name,
+        path=path,
+        type=print_type(symbol.type_spec),
+        var_class=symbol.var_class,
+        expandable=_expandable(symbol.type),
+    )
+
+
+def _members(ty: t.Type, path: str, indices: tuple[int, ...]) -> tuple[list[VariableNode], int]:
+    """The members of a variable of type ``ty`` at ``path`` (``indices``: of an array indexed partly so far)."""
+    if isinstance(ty, t.FbType) and ty.pou is not None:
+        symbols = [s for s in ty.pou.symbols.values() if s.var_class in _INSTANCE_CLASSES]
+        return [_variable(s, f"{path}.{s.name}") for s in symbols], 0
+    if isinstance(ty, t.FbType) and ty.std is not None:
+        pins = [(p, "VAR_INPUT") for p in ty.std.inputs] + [(p, "VAR_OUTPUT") for p in ty.std.outputs]
+        return [
+            VariableNode(name=p.name, path=f"{path}.{p.name}", type=p.type, var_class=c, expandable=False)
+            for p, c in pins
+        ], 0
+    if isinstance(ty, t.StructType):
+        return [
+            VariableNode(name=name, path=f"{path}.{name}", type=str(field), expandable=_expandable(field))
+            for name, field in ty.fields.values()
+        ], 0
+    if isinstance(ty, t.ArrayType) and ty.dims and ty.dims[0] is not None:
+        (low, high), rest = ty.dims[0], ty.dims[1:]
+        inner = t.ArrayType(rest, ty.element) if rest else ty.element
+        base = path[: path.rindex("[")] if indices else path
+        last = min(high, low + MAX_ELEMENTS - 1)
+        return [
+            VariableNode(
+                name=f"[{i}]",
+                path=f"{base}[{', '.join(map(str, (*indices, i)))}]",
+                type=str(inner),
+                expandable=_expandable(inner),
+            )
+            for i in range(low, last + 1)
+        ], high - last
+    return [], 0
+
+
+def _walk(result, path: str) -> tuple[t.Type, tuple[int, ...]]:
+    """The type of the variable at ``path`` (and the indices of a partly indexed array at its end)."""
+    parts = tokens(path)
+    if not parts or parts[0][0] != "name":
+        raise ApiError(422, f"{path!r} is not a variable path")
+    head, rest = parts[0][1], parts[1:]
+    program = result.pou(head)
+    if program is not None and program.kind == "PROGRAM":
+        ty: t.Type = t.FbType(program.name, pou=program)
+    else:
+        if head.upper() == GLOBALS_PREFIX and rest[:1] == [("punct", ".")] and rest[1:2] and rest[1][0] == "name":
+            head, rest = rest[1][1], rest[2:]
+        symbol = result.globals.get(head.upper())
+        if symbol is None:
+            raise ApiError(404, f"no program or global variable {head!r}{did_you_mean(head, _top_names(result))}")
+        ty = symbol.type
+    indices: tuple[int, ...] = ()
+    while rest:
+        if rest[0] == ("punct", ".") and len(rest) > 1 and rest[1][0] == "name":
+            member = rest[1][1]
+            children, _ = _members(ty, path, ())
+            found = next((c for c in children if c.name.upper() == member.upper()), None)
+            if found is None or not isinstance(ty, (t.FbType, t.StructType)):
+                raise ApiError(404, f"{path}: {ty} has no member {member!r}")
+            ty, indices, rest = _member_type(ty, member), (), rest[2:]
+        elif rest[0] == ("punct", "[") and isinstance(ty, t.ArrayType):
+            close = rest.index(("punct", "]"))
+            numbers = [int(v) for kind, v in rest[1:close] if kind == "int"]
+            if len(numbers) > len(ty.dims):
+                raise ApiError(422, f"{path}: {ty} has {len(ty.dims)} dimension(s)")
+            left = ty.dims[len(numbers) :]
+            ty, indices, rest = (
+                (t.ArrayType(left, ty.element) if left else ty.element),
+                (*indices, *numbers),
+                rest[close + 1 :],
+            )
+        else:
+            raise ApiError(422, f"{path!r} is not a variable path")
+    return ty, (indices if isinstance(ty, t.ArrayType) else ())
+
+
+def _member_type(ty: t.Type, member: str) -> t.Type:
+    upper = member.upper()
+    if isinstance(ty, t.StructType):
+        return ty.fields[upper][1]
+    if isinstance(ty, t.FbType) and ty.pou is not None:
+        return ty.pou.symbols[upper].type
+    assert isinstance(ty, t.FbType) and ty.std is not None  # _walk found the member among the pins
+    pin = next(p for p in (*ty.std.inputs, *ty.std.outputs) if p.name == upper)
+    return t.elementary(pin.type) or t.ERROR
+
+
+def _top_names(result) -> list[str]:
+    return [p.name for p in result.pous.values() if p.kind == "PROGRAM"] + [s.name for s in result.globals.values()]
+
+
+def variable_children(project: Project, path: str) -> VariableChildren:
+    """What the variable at ``path`` holds, for the watch list's and the Variables view's tree; the programs
+    and the globals when ``path`` is empty."""
+    result = check_st(project)
+    text = path.strip()
+    if not text:
+        programs = [
+            VariableNode(name=p.name, path=p.name, type=p.name, var_class="PROGRAM", expandable=True)
+            for p in result.pous.values()
+            if p.kind == "PROGRAM"
+        ]
+        return VariableChildren(
+            path="", type=None, children=[*programs, *(_variable(s, s.name) for s in result.globals.values())]
+        )
+    try:
+        ty, indices = _walk(result, text)
+    except ValueError as error:
+        raise ApiError(422, str(error)) from None
+    children, more = _members(ty, text, indices)
+    return VariableChildren(path=text, type=str(ty), children=children, more=more)
+
+
+@router.get("/{name}/variables", response_model=VariableChildren, responses=responses(404, 422))
+def get_variables(name: str, workspace: WorkspaceDep, path: str = "") -> VariableChildren:
+    return variable_children(workspace.load(name).project, path)

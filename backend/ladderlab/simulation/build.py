@@ -40,8 +40,13 @@ def build_project(project: Project, variant: str = "fast") -> Build:
     diagnostics = list(lowered.diagnostics)
     if lowered.program is None:  # the lowering withholds the program whenever a diagnostic is an error
         return Build(None, diagnostics)
-    watchdogs = {task.name.upper(): task.watchdog_ms / 1000.0 for task in project.tasks if task.watchdog_ms}
+    watchdogs = task_watchdogs(project)
     try:
         return Build(compile_program(lowered.program, variant), diagnostics, watchdogs)
     except CompileError as error:
         return Build(None, diagnostics + error.diagnostics)
+
+
+def task_watchdogs(project: Project) -> dict[str, float]:
+    """The tasks' own watchdog budgets in seconds, by upper-case task name (``Build.watchdogs``)."""
+    return {task.name.upper(): task.watchdog_ms / 1000.0 for task in project.tasks if task.watchdog_ms}

@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 
 from ..model import Diagnostic, Project
 from .builds import BuildPool
-from .remote import SimulationHandle, WorkerSettings
+from .remote import Maker, SimulationHandle, WorkerSettings
 from .supervisor import WorkerHub
 
 MB = 1024 * 1024
@@ -127,13 +127,14 @@ class SimulationRegistry:
         if count >= self.settings.max_simulations:
             raise RegistryFull(f"the server already runs {count} simulations, the most it allows; delete one first")
 
-    def create(self, project: Project, revision: str) -> SimulationEntry:
-        """Build ``project`` in a new simulation process (stopped); raises ``remote.BuildFailed``, ``RegistryFull``."""
+    def create(self, project: Project, revision: str, make: Maker | None = None) -> SimulationEntry:
+        """Build ``project`` in a new simulation process (stopped), or have ``make`` make it there; raises
+        ``remote.BuildFailed``, ``RegistryFull``."""
         with self._lock:
             self._check_room()
             self._starting += 1
         try:
-            handle = SimulationHandle(self.hub, project.model_dump_json(), self.settings.worker())
+            handle = SimulationHandle(self.hub, project.model_dump_json(), self.settings.worker(), make)
             handle.launch()
         finally:
             with self._lock:

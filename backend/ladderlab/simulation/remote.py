@@ -25,6 +25,7 @@ import itertools
 import threading
 import time
 from collections import deque
+from collections.abc import Callable
 from concurrent.futures import Future
 from dataclasses import dataclass, field
 from multiprocessing.connection import Connection
@@ -32,12 +33,23 @@ from multiprocessing.process import BaseProcess
 from typing import Any, Protocol
 
 from ..engine.codegen.faults import RUNTIME_FAULT
+from ..engine.simulation import Simulation
 from ..model import Diagnostic
 from ..model.monitor import DisplayType, Log, Status
 from .runner import CommandError
 from .supervisor import WorkerHub, kill, start_process
 from .trace import TraceInbox
 from .worker import run_simulation
+
+
+@dataclass(frozen=True)
+class Maker:
+    """Another way to make a simulation than building the project (a failed test's last state, testing/online.py):
+    ``function`` is importable by name (it runs in the simulation's process) and is called with ``args`` and
+    ``watchdog_s``; a LookupError or ValueError it raises is the reason the simulation cannot be made."""
+
+    function: Callable[..., Simulation]
+    args: dict[str, Any]
 
 
 class BuildFailed(Exception):
@@ -108,7 +120,7 @@ class _Requests:
 class SimulationHandle:
     """One simulation, run in its own process (see the module docstring)."""
 
-    def __init__(self, hub: WorkerHub, project_json: str, settings: WorkerSettings) -> None:
+    def __init__(self, hub: WorkerHub, project_json: str, settings: WorkerSettings, make: Maker | None = None) -> None:
         self.hub = hub
         self.settings = settings
         self.spec = {
@@ -118,6 +130,7 @@ class SimulationHandle:
             "publish_s": settings.publish_s,
             "memory_bytes": settings.memory_bytes,
             "beat_s": settings.beat_s,
+            "make": make,
         }
         self.instances: dict[str, list[str]] = {}
         self.info: dict[str, Any] = {}

@@ -472,3 +472,62 @@ class Source:
     @property
     def pous(self) -> list[Pou]:
         return [item for item in self.items if isinstance(item, Pou)]
+
+
+# ---------------------------------------------------------------- test files (docs/testing.md)
+
+
+@dataclass(slots=True)
+class MockStmt:
+    """``MOCK inst;``: the instance's body does not run from here on; its calls are counted."""
+
+    target: Expr
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class MockFunctionStmt:
+    """``MOCK_FUNCTION f RETURNS value;``: every call of the user FUNCTION ``f`` returns ``value`` from here on."""
+
+    name: str
+    value: Expr
+    span: Span = _span()
+    ref: Any = _annotation()
+
+
+TestStmt = Stmt | MockStmt | MockFunctionStmt
+
+
+@dataclass(slots=True)
+class TestCase:
+    """``TEST 'name' VAR..END_VAR statements END_TEST``."""
+
+    name: str
+    var_blocks: list[VarBlock]
+    body: list[TestStmt]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class TestSetup:
+    """``SETUP``: its variables belong to every test of the file; its statements run before each test."""
+
+    var_blocks: list[VarBlock]
+    body: list[TestStmt]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class TestTeardown:
+    """``TEARDOWN``: statements run after each test, also after a failed one."""
+
+    body: list[TestStmt]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class TestFile:
+    setup: TestSetup | None
+    teardown: TestTeardown | None
+    tests: list[TestCase]
+    span: Span = _span()

@@ -280,7 +280,7 @@ class ProjectChecker:
         for block in blocks:
             if block.kind not in ("VAR_GLOBAL", "VAR_EXTERNAL"):
                 report("ST-DECL", f"only VAR_GLOBAL blocks belong in the global variables, not {block.kind}", block)
-            self._declare_block(block, self.result.globals, checker, None)
+            self.declare_block(block, self.result.globals, checker, None)
         for key, symbol in self.result.globals.items():
             if key in before:
                 continue
@@ -314,7 +314,7 @@ class ProjectChecker:
                 report(
                     "ST-DECL", f"{block.kind} is not allowed in a {info.kind.lower().replace('_', ' ')} (VAR-11)", block
                 )
-            self._declare_block(block, info.symbols, checker, info)
+            self.declare_block(block, info.symbols, checker, info)
         for symbol in info.symbols.values():
             if isinstance(symbol.type, t.FbType) and symbol.type.pou is not None:
                 info.calls.add(symbol.type.pou.name.upper())
@@ -330,7 +330,7 @@ class ProjectChecker:
             if symbol.init is not None:
                 check_init(checker, symbol.type, symbol.init)
 
-    def _declare_block(
+    def declare_block(
         self, block: ast.VarBlock, table: dict[str, Symbol], checker: BodyChecker, pou: PouInfo | None
     ) -> None:
         report = checker.report

@@ -29,6 +29,11 @@ from .transformer import AstBuilder, StSyntaxError
 
 GRAMMAR = pathlib.Path(__file__).with_name("iec61131.lark")
 _STARTS = ["start_source", "start_pou", "start_decls", "start_stmts", "start_expr"]
+# Test files get a parser of their own from the same grammar: built from start_tests alone, its tables are
+# the only ones where the test keywords (END_TEST, MOCK ...) may follow a statement. (One LALR table for
+# all starts would merge them into the lookaheads of statements everywhere: ``x := 1; mock := 2;`` in a
+# program would then read ``mock`` as the keyword.)
+_TEST_STARTS = ["start_tests"]
 _MAX_ERRORS_PER_UNIT = 25
 _END_KEYWORDS = {"END_IF", "END_CASE", "END_FOR", "END_WHILE", "END_REPEAT"}
 
@@ -64,6 +69,10 @@ _SOFT_KEYWORDS = {
     "NOT",
     "MOD",
 }
+# Keywords of test files only (start_tests): names like ``test`` or ``setup`` stay free in programs.
+TEST_KEYWORDS = frozenset(
+    {"TEST", "END_TEST", "SETUP", "END_SETUP", "TEARDOWN", "END_TEARDOWN", "MOCK", "MOCK_FUNCTION", "RETURNS"}
+)
 
 
 @functools.cache
@@ -73,13 +82,13 @@ def _keywords() -> frozenset[str]:
 
 
 @functools.cache
-def _parser() -> Lark:
-    reserved = _keywords() - {"TRUE", "FALSE"} - _SOFT_KEYWORDS
+def _parser(tests: bool = False) -> Lark:
+    reserved = _keywords() - {"TRUE", "FALSE"} - _SOFT_KEYWORDS - TEST_KEYWORDS
     return Lark(
         GRAMMAR.read_text(encoding="utf-8"),
         parser="lalr",
         lexer="contextual",
-        start=_STARTS,
+        start=_TEST_STARTS if tests else _STARTS,
         transformer=AstBuilder(reserved),
         maybe_placeholders=True,
         cache=False,
@@ -144,6 +153,11 @@ def parse_expression(
     return _finish(_run(_prepare(text, nested_comments), "start_expr", file, pou=pou), text, file, pou)
 
 
+def parse_tests(text: str, *, file: str | None = None, nested_comments: bool = False) -> ParseResult:
+    """A test file (``tests/<name>.st``): SETUP, TEARDOWN and TEST blocks (``ast.TestFile``, docs/testing.md)."""
+    return _finish(_run(_prepare(text, nested_comments), "start_tests", file), text)
+
+
 def _name_pous(result: ParseResult) -> None:
     """Give each diagnostic of a whole-file parse the POU it lies in."""
     pous = result.ast.pous
@@ -175,7 +189,7 @@ def _run(text: str, start: str, file: str | None, pou: str | None = None) -> Par
     diagnostics: list[Diagnostic] = []
     report = _Reporter(diagnostics, file, pou)
     try:
-        tree = _parser().parse(text, start=start, on_error=report.recover)
+        tree = _parser(start in _TEST_STARTS).parse(text, start=start, on_error=report.recover)
     except UnexpectedInput as error:
         if not report.seen(error):
             report.add(error)

@@ -104,6 +104,35 @@ class AstBuilder(Transformer):
     def start_expr(self, c):
         return c[0]
 
+    def start_tests(self, c):
+        setups = [x for x in c if isinstance(x, ast.TestSetup)]
+        teardowns = [x for x in c if isinstance(x, ast.TestTeardown)]
+        for extra in (setups[1:] + teardowns[1:])[:1]:
+            what = "SETUP" if isinstance(extra, ast.TestSetup) else "TEARDOWN"
+            raise StSyntaxError(f"a test file has at most one {what} block", extra.span)
+        tests = [x for x in c if isinstance(x, ast.TestCase)]
+        return ast.TestFile(setups[0] if setups else None, teardowns[0] if teardowns else None, tests, span_of(c))
+
+    # ------------------------------------------------------------ test files
+    def setup_block(self, c):
+        blocks = [x for x in c[1:-1] if isinstance(x, ast.VarBlock)]
+        return ast.TestSetup(blocks, [x for x in c[1:-1] if not isinstance(x, ast.VarBlock)], span_of(c))
+
+    def teardown_block(self, c):
+        return ast.TestTeardown(c[1:-1], span_of(c))
+
+    def test_case(self, c):
+        rest = c[2:-1]
+        blocks = [x for x in rest if isinstance(x, ast.VarBlock)]
+        body = [x for x in rest if not isinstance(x, ast.VarBlock)]
+        return ast.TestCase(decode_string(str(c[1])), blocks, body, span_of(c))
+
+    def mock_statement(self, c):
+        return ast.MockStmt(c[1], span_of(c))
+
+    def mock_function_statement(self, c):
+        return ast.MockFunctionStmt(str(c[1]), c[3], span_of(c))
+
     # ------------------------------------------------------------ POUs and types
     def pou(self, c):
         kind = c[0].type

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from ..model.names import pou_name_problem, project_name_problem
+from ..model.names import pou_name_problem, project_name_problem, test_file_name_problem
 from .errors import InvalidNameError
 
 
@@ -17,4 +17,11 @@ def check_project_name(name: str) -> str:
     problem = project_name_problem(name)
     if problem:
         raise InvalidNameError("project", name, problem)
+    return name
+
+
+def check_test_file_name(name: str) -> str:
+    problem = test_file_name_problem(name)
+    if problem:
+        raise InvalidNameError("test file", name, problem)
     return name

@@ -9,6 +9,9 @@ Layout::
     pous/<name>.ld.json / pous/<name>.fbd.json / pous/<name>.sfc.json   graphical POUs
     pous/<name>.st.json ST POUs whose text cannot be split back exactly (e.g. a VAR block
                         without END_VAR while the user is still typing); never loses a character
+    tests/<name>.st     unit test files (docs/testing.md), as typed
+    tests/hidden/       a teacher's hidden test files: not part of the model, kept as they are by saves,
+                        read by ``hidden_tests`` for ``ladderlab test --grade``
 
 JSON is pretty-printed with sorted keys so an unchanged POU gives an unchanged file.
 """
@@ -23,7 +26,8 @@ from typing import Any
 
 from pydantic import ValidationError
 
-from ..model import Diagnostic, Pou, Project
+from ..model import Diagnostic, Pou, Project, TestFile
+from ..model.names import test_file_name_problem
 from .errors import ProjectLoadError, json_text_problem, validation_diagnostics
 from .st_text import StTextError, compose_pou_text, parse_pou_text, round_trips
 
@@ -32,6 +36,9 @@ TYPES_FILE = "types.st"
 GLOBALS_FILE = "globals.st"
 POUS_DIR = "pous"
 POU_SUFFIXES = (".st", ".st.json", ".ld.json", ".fbd.json", ".sfc.json")
+TESTS_DIR = "tests"
+HIDDEN_TESTS_DIR = "tests/hidden"
+TEST_SUFFIX = ".st"
 
 
 def dump_json(data: Any) -> str:
@@ -59,7 +66,13 @@ def project_files(project: Project) -> dict[str, str]:
     }
     for pou in project.pous:
         files.update([pou_file(pou)])
+    for test in project.tests:
+        files[test_path(test.name)] = _text_file(test.text)
     return files
+
+
+def test_path(name: str) -> str:
+    return f"{TESTS_DIR}/{name}{TEST_SUFFIX}"
 
 
 def pou_file(pou: Pou) -> tuple[str, str]:
@@ -81,6 +94,8 @@ def is_project_file(rel: str) -> bool:
     if rel in (PROJECT_FILE, TYPES_FILE, GLOBALS_FILE):
         return True
     folder, _, name = rel.partition("/")
+    if folder == TESTS_DIR:  # tests/<name>.st; never tests/hidden/ (a teacher's files, not the model's)
+        return name.endswith(TEST_SUFFIX) and test_file_name_problem(name[: -len(TEST_SUFFIX)]) is None
     return (
         folder == POUS_DIR
         and name.endswith(POU_SUFFIXES)
@@ -138,7 +153,38 @@ def read_project_folder(folder: Path) -> Project:
         raise ProjectLoadError(problems)
     assert project is not None
     project.pous = pous
+    project.tests = read_tests(folder / TESTS_DIR, TESTS_DIR, problems)
+    if problems:
+        raise ProjectLoadError(problems)
     return project
+
+
+def read_tests(folder: Path, rel_dir: str, problems: list[Diagnostic] | None = None) -> list[TestFile]:
+    """The test files of one folder (``tests`` or ``tests/hidden``), by name; unreadable ones are problems."""
+    found: list[TestFile] = []
+    if not folder.is_dir():
+        return found
+    for path in sorted(folder.iterdir()):
+        if not path.is_file() or not path.name.endswith(TEST_SUFFIX) or path.name.startswith("."):
+            continue
+        name = path.name[: -len(TEST_SUFFIX)]
+        rel = f"{rel_dir}/{path.name}"
+        problem = test_file_name_problem(name)
+        try:
+            text = _read_exact(path)
+        except UnicodeDecodeError as err:
+            problem = f"not UTF-8 text: {err.reason}"
+        if problem:
+            if problems is not None:
+                problems.append(Diagnostic(code="BAD-FILE", file=rel, message=f"cannot read this test file: {problem}"))
+            continue
+        found.append(TestFile(name=name, text=text))
+    return found
+
+
+def hidden_tests(folder: Path) -> list[TestFile]:
+    """A teacher's hidden test files of a project folder (``tests/hidden/<name>.st``)."""
+    return read_tests(folder / HIDDEN_TESTS_DIR, HIDDEN_TESTS_DIR)
 
 
 def _pou_names(folder: Path, order: list[str]) -> list[str]:

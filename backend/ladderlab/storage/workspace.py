@@ -17,11 +17,13 @@ from filelock import FileLock
 from ..model import Diagnostic, Project
 from . import journal
 from .errors import AlreadyExistsError, ConflictError, NotFoundError, StorageError, StorageFullError
-from .names import check_pou_name, check_project_name
+from .names import check_pou_name, check_project_name, check_test_file_name
 from .project_folder import (
     POU_SUFFIXES,
     POUS_DIR,
     PROJECT_FILE,
+    TEST_SUFFIX,
+    TESTS_DIR,
     is_project_file,
     project_files,
     read_project_folder,
@@ -175,6 +177,8 @@ class Workspace:
         """Commit every changed file and the removal of POU files the project no longer has, as one."""
         for pou in project.pous:
             check_pou_name(pou.name)
+        for test in project.tests:
+            check_test_file_name(test.name)
         folder = self.folder(project.name)
         files = {rel: content.encode("utf-8") for rel, content in project_files(project).items()}
         writes = {rel: data for rel, data in files.items() if not _holds(folder / rel, data)}
@@ -187,6 +191,13 @@ class Workspace:
                 if path.name.endswith(POU_SUFFIXES)
                 and f"{POUS_DIR}/{path.name}" not in files
                 and is_project_file(f"{POUS_DIR}/{path.name}")
+            )
+        tests_dir = folder / TESTS_DIR  # test files the project no longer has; tests/hidden/ stays as it is
+        if tests_dir.is_dir():
+            deletes += sorted(
+                f"{TESTS_DIR}/{path.name}"
+                for path in tests_dir.iterdir()
+                if path.is_file() and path.name.endswith(TEST_SUFFIX) and f"{TESTS_DIR}/{path.name}" not in files
             )
         if writes or deletes:
             try:

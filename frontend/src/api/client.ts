@@ -8,6 +8,7 @@ import type {
   SaveResult,
   StExport,
   SymbolTable,
+  VariableChildren,
 } from "../generated/api";
 import type { Project } from "../generated/project";
 
@@ -167,6 +168,11 @@ export function getLibrary(project: string): Promise<LibraryEntry[]> {
 /** `GET /api/projects/{name}/pous/{pou}/symbols`: the POU's declarations and the globals. */
 export function getSymbols(project: string, pou: string): Promise<SymbolTable> {
   return requestJson<SymbolTable>(`${projectPath(project)}/pous/${encodeURIComponent(pou)}/symbols`);
+}
+
+/** What the variable at `path` holds (the instance tree, ON-10); the programs and globals for "". */
+export function getVariables(project: string, path: string): Promise<VariableChildren> {
+  return requestJson<VariableChildren>(`${projectPath(project)}/variables?path=${encodeURIComponent(path)}`);
 }
 
 /** `POST /api/projects`: a new empty project. */

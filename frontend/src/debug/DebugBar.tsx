@@ -1,34 +1,13 @@
-// The halted scan: where it stands (revealed in its editor when it halts) and what to do next,
-// Continue / Step network / Step statement / Step cycle / Stop, also from F5, F10, F11 and
-// Shift+F5. Breakpoints are set in the editors and listed in the Breakpoints panel.
+// The halted scan: where it stands (revealed in its editor when it halts) and what to do next:
+// Continue, Step over, Step into, Step out, Step network, Step cycle, Stop (the keys of the keymap,
+// CODESYS's, handled by project/useAppKeys.ts). Breakpoints are set in the editors and listed in the
+// Breakpoints panel.
 import { useEffect } from "react";
 import { onlineStore, useOnline } from "../online/store";
+import { keysOf } from "../keys/keymap";
 import { describeHalt } from "./breakpoints";
 import type { Place } from "./reveal";
-import { debugStore, useDebug } from "./store";
-
-/** Keys of debugging, for the shortcut help (F5 runs when not halted, see SIMULATION_KEYS). */
-export const DEBUG_KEYS: [string, string][] = [
-  ["F9", "Toggle a breakpoint on the selected element or network"],
-  ["Click a network number", "Toggle a breakpoint on the network"],
-  ["Alt+click", "Toggle a breakpoint on an element"],
-  ["F5 (halted)", "Continue"],
-  ["F10", "Step to the next network"],
-  ["F11", "Step to the next statement"],
-];
-
-/** F5 continues a halted scan; F10/F11 step (from a stopped simulation: into the next scan). */
-export function debugKey(
-  e: Pick<KeyboardEvent, "key" | "altKey" | "ctrlKey" | "metaKey" | "shiftKey">,
-  halted: boolean,
-): (() => void) | null {
-  if (e.altKey || e.ctrlKey || e.metaKey || e.shiftKey) return null;
-  const debug = debugStore.getState();
-  if (e.key === "F5" && halted) return debug.resume;
-  if (e.key === "F10") return () => debug.step("network");
-  if (e.key === "F11") return () => debug.step("statement");
-  return null;
-}
+import { useDebug } from "./store";
 
 export interface DebugBarProps {
   /** Network ids of a POU in order (for "network 2"), empty when it has no diagram. */
@@ -48,36 +27,33 @@ export function DebugBar({ networksOf, reveal }: DebugBarProps) {
     if (halted) reveal({ pou: halted.pou, network: halted.network, element: halted.element, line: halted.line });
   }, [halted, reveal]);
 
-  useEffect(() => {
-    const onKey = (e: KeyboardEvent) => {
-      const online = onlineStore.getState();
-      if (online.phase !== "online") return;
-      const run = debugKey(e, online.monitor.state === "halted");
-      if (!run) return;
-      e.preventDefault();
-      run();
-    };
-    window.addEventListener("keydown", onKey);
-    return () => window.removeEventListener("keydown", onKey);
-  }, []);
-
   if (!halted) return null;
   return (
     <div className="debug-bar debug-halted" role="region" aria-label="Debugging">
       <span role="status">Halted at {describeHalt(halted, networksOf(halted.pou))}</span>
-      <button type="button" onClick={debug.resume} title="Continue (F5)">
+      <button type="button" onClick={debug.resume} title={`Continue (${keysOf("app", "run")})`}>
         Continue
       </button>
-      <button type="button" onClick={() => debug.step("network")} title="Step to the next network (F10)">
-        Step network
+      <button type="button" onClick={() => debug.step("over")} title={`Step over (${keysOf("app", "step-over")})`}>
+        Step over
       </button>
-      <button type="button" onClick={() => debug.step("statement")} title="Step to the next statement (F11)">
-        Step statement
+      <button type="button" onClick={() => debug.step("statement")} title={`Step into (${keysOf("app", "step-into")})`}>
+        Step into
+      </button>
+      <button type="button" onClick={() => debug.step("out")} title={`Step out (${keysOf("app", "step-out")})`}>
+        Step out
+      </button>
+      <button type="button" onClick={() => debug.step("network")} title="Step to the next network">
+        Step network
       </button>
       <button type="button" onClick={() => debug.step("cycle")} title="Run to the end of this scan">
         Step cycle
       </button>
-      <button type="button" onClick={onlineStore.getState().stop} title="Stop the simulation (Shift+F5)">
+      <button
+        type="button"
+        onClick={onlineStore.getState().stop}
+        title={`Stop the simulation (${keysOf("app", "stop")})`}
+      >
         Stop
       </button>
     </div>

@@ -178,6 +178,7 @@ describe("debug store (issue 9: breakpoints, continue, step)", () => {
       {
         createSimulation: async () => info,
         getSimulation: async () => info,
+        listSimulations: async () => [info],
         resetSimulation: async () => info,
         deleteSimulation: async () => undefined,
       },

@@ -48,17 +48,20 @@ export function DeclarationsEditor({
   // the text wins whenever it changes from elsewhere (the text view, the LD declare prompt).
   const [rows, setRows] = useState<DeclRow[]>(parsed.ok ? parsed.rows : []);
   /** The text the table printed last: while it is the text, the table's rows describe it. */
-  const printed = useRef<string | null>(null);
-  useEffect(() => {
-    if (text !== printed.current && parsed.ok) setRows(parsed.rows);
-  }, [text, parsed]);
-  const tabular = parsed.ok || text === printed.current;
+  const [printed, setPrinted] = useState<string | null>(null);
+  const [textSeen, setTextSeen] = useState(text);
+  if (text !== textSeen) {
+    // A new text during render (React's "adjusting state when a prop changes"), not in an effect.
+    setTextSeen(text);
+    if (text !== printed && parsed.ok) setRows(parsed.rows);
+  }
+  const tabular = parsed.ok || text === printed;
   const listId = useId();
 
   const update = (next: DeclRow[]) => {
     setRows(next);
     const out = printDeclarations(next);
-    printed.current = out;
+    setPrinted(out);
     onChange(out);
   };
   const setCell = (index: number, column: (typeof COLUMNS)[number], value: string) =>
@@ -75,14 +78,20 @@ export function DeclarationsEditor({
   const unplaced = diagnostics.filter((d) => d.line == null || !lines.includes(d.line));
   const editable = tabular && !readOnly;
   const tableRef = useRef<HTMLTableSectionElement>(null);
-  // Only a new focus request switches the view (re-running on every keystroke would fight the user).
+  // Only a new focus request switches the view (switching on every keystroke would fight the user).
+  const seq = focus?.seq ?? null;
+  const [seqSeen, setSeqSeen] = useState<number | null>(null);
+  if (seq !== seqSeen) {
+    setSeqSeen(seq);
+    if (focusLine != null) setMode(parsed.ok && lines.includes(focusLine) ? "table" : "text");
+  }
   useEffect(() => {
     if (focusLine == null) return;
-    setMode(parsed.ok && lines.includes(focusLine) ? "table" : "text");
-    requestAnimationFrame(() =>
+    const frame = requestAnimationFrame(() =>
       tableRef.current?.querySelector(`[data-line="${focusLine}"]`)?.scrollIntoView?.({ block: "nearest" }),
     );
-  }, [focus?.seq]);
+    return () => cancelAnimationFrame(frame);
+  }, [seq, focusLine]);
 
   return (
     <div className="declarations">

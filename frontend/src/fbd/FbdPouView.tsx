@@ -1,5 +1,5 @@
 // An FBD POU in the workspace: the FBD editor with the project's library and symbols, the
-// check's diagnostics, online mode and the POU's breakpoints (debug/store.ts).
+// check's diagnostics, online mode, the POU's breakpoints (debug/store.ts) and the tests' coverage tint.
 import { useCallback, useMemo, type ReactNode } from "react";
 import type { FbdBody, Pou } from "../generated/project";
 import type { History } from "../ld/history";
@@ -10,6 +10,8 @@ import { useDiagramPou } from "../project/useDiagramPou";
 import { FbdEditor, type FbdDebug } from "./editor/FbdEditor";
 import { nodeOfProbe } from "./online";
 import { useFbdOnline } from "./useFbdOnline";
+import { coverageMarks, coverageOf } from "../tests/coverage";
+import { useTests } from "../tests/store";
 
 export function FbdPouView({
   pou,
@@ -22,15 +24,17 @@ export function FbdPouView({
 }) {
   const name = pou.name;
   const setHistory = useWorkspace((s) => s.setFbdHistory);
-  const { library, symbols, diagnostics, focus, declare } = useDiagramPou(name);
+  const { library, symbols, symbolsLoaded, diagnostics, focus, declare } = useDiagramPou(name);
   const byName = useMemo(() => new Map(library.map((e) => [e.name.toUpperCase(), e])), [library]);
   const lookup = useCallback((call: string) => byName.get(call.toUpperCase()), [byName]);
   const body = history.present;
-  const live = useFbdOnline(pou, body, lookup, symbols);
+  const live = useFbdOnline(pou, body, lookup, symbolsLoaded ? symbols : null);
 
   const breakpoints = useDebug((s) => s.breakpoints);
   const at = useOnline((s) => (s.monitor.state === "halted" ? s.monitor.at : null));
   const upper = name.toUpperCase();
+  const covered = useTests((s) => coverageOf(s.coverage, name));
+  const coverage = useMemo(() => coverageMarks(covered), [covered]);
   const debug = useMemo((): FbdDebug => {
     const mine = breakpoints.filter((b) => b.pou.toUpperCase() === upper);
     return {
@@ -41,8 +45,9 @@ export function FbdPouView({
           ? { network: at.network, element: at.element ? nodeOfProbe(body, at.element) : null }
           : null,
       toggle: (bp) => debugStore.getState().toggle({ pou: name, ...bp }),
+      coverage,
     };
-  }, [breakpoints, at, upper, name, body]);
+  }, [breakpoints, at, upper, name, body, coverage]);
 
   return (
     <FbdEditor

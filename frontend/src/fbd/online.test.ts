@@ -19,7 +19,13 @@ describe("online FBD", () => {
     expect(binding.elements).toEqual([
       { pou_instance: "MAIN", ids: ["a", "b", "c", "add.OUT", "sub.OUT", "r", "t.ENO", "t.Q", "t.ET", "j"] },
     ]);
-    expect(binding.paths).toEqual(["MAIN.VAR1", "MAIN.VAR2", "MAIN.VAR3", "MAIN.RESULT"]);
+    expect([...binding.paths].sort()).toEqual(
+      [
+        ...["MAIN.VAR1", "MAIN.VAR2", "MAIN.VAR3"], // the input nodes' (the add block's inputs take their types)
+        ...["MAIN.T1.IN", "MAIN.T1.PT", "MAIN.T1.Q", "MAIN.T1.ET"], // every pin of the FB instance
+        "MAIN.RESULT",
+      ].sort(),
+    );
     expect(bindFbd(body, "MAIN", lookup, SYMBOLS, new Set(["n2"])).elements[0]!.ids).toEqual([
       "t.ENO",
       "t.Q",
@@ -61,7 +67,43 @@ describe("online FBD", () => {
     expect(executed(view, "add")).toBe(true);
     expect(executed(view, "t")).toBe(false);
     expect(executed(view, "sub")).toBe(true); // nothing known yet: not dimmed
-    expect([...view.forced]).toEqual(["VAR1"]);
+    expect(view.operands).toEqual({}); // no values arrived yet
+  });
+
+  it("shows every pin of an FB instance block from the instance, a function's from its wires and probes", () => {
+    const binding = bindFbd(body, "MAIN", lookup, SYMBOLS);
+    expect(binding.pins.get("t")!.map((p) => [p.side, p.name, p.source])).toEqual([
+      ["in", "EN", null],
+      ["in", "IN", { path: "MAIN.T1.IN" }],
+      ["in", "PT", { path: "MAIN.T1.PT" }],
+      ["out", "ENO", { probe: "t.ENO" }],
+      ["out", "Q", { path: "MAIN.T1.Q" }],
+      ["out", "ET", { path: "MAIN.T1.ET" }],
+    ]);
+    expect(binding.pins.get("add")!.map((p) => [p.side, p.name, p.source])).toEqual([
+      ["in", "IN1", { probe: "a", typeOf: "MAIN.VAR1" }],
+      ["in", "IN2", { probe: "b", typeOf: "MAIN.VAR2" }],
+      ["out", "OUT", { probe: "add.OUT" }],
+    ]);
+    const monitor = {
+      ...emptyMonitor,
+      values: { "MAIN.T1.ET": 1500, "MAIN.VAR1": 1.5 },
+      types: { "MAIN.T1.ET": { name: "TIME" }, "MAIN.VAR1": { name: "REAL" }, "MAIN.VAR2": { name: "REAL" } },
+      power: {
+        [powerKey("MAIN", "a")]: 1.5,
+        [powerKey("MAIN", "b")]: 0.10000000149011612,
+        [powerKey("MAIN", "add.OUT")]: 1.600000023841858,
+      },
+      forced: new Set(["MAIN.VAR1"]),
+    };
+    const view = fbdOnlineView(monitor, binding);
+    expect(view.pins.t!["out:ET"]!.text).toBe("T#1s500ms");
+    expect(Object.fromEntries(Object.entries(view.pins.add!).map(([k, v]) => [k, v.text]))).toEqual({
+      "in:IN1": "1.5",
+      "in:IN2": "0.1",
+      "out:OUT": "1.6",
+    });
+    expect(view.operands.VAR1).toEqual({ text: "1.5", bool: null, forced: true, prepared: null });
   });
 
   it("maps a halt's probe id back to its node", () => {

@@ -1,11 +1,22 @@
-// Online FBD: which probes and variable paths the shown networks need, and what each wire and
-// node shows. Values come from the engine's probes (docs/diagrams.md "Power-flow probes"):
+// Online FBD: which probes and variable paths the shown networks need, and what each wire, node
+// and block pin shows. Values come from the engine's probes (docs/diagrams.md "Power-flow probes"):
 // `<block>.<PIN>` for every output pin of a block, `<node>` for input, output, jump and return
-// nodes; a probe that is null did not execute in the last scan (the block is dimmed).
+// nodes; a probe that is null did not execute in the last scan (the block is dimmed). Block pins
+// are bound as LD boxes are (online/pinValues.ts): an FB instance's from the instance, a
+// function's inputs from the wire feeding them, its outputs from their probes.
 import type { SymbolInfo } from "../generated/api";
 import { operandPath } from "../online/ldBinding";
 import { powerKey, type MonitorState } from "../online/monitor";
-import type { ElementSubscription, PowerState } from "../online/protocol";
+import {
+  bindBoxPins,
+  diagramBinding,
+  diagramValues,
+  type DiagramBinding,
+  type PinBinding,
+  type PinSource,
+} from "../online/pinValues";
+import type { PowerState } from "../online/protocol";
+import type { Prepared, ValueShown } from "../online/shown";
 import {
   findNode,
   kindOf,
@@ -57,12 +68,35 @@ export function nodeOfProbe(body: FbdBody, probe: string): string {
   return dot > 0 && findNode(body, probe.slice(0, dot)) ? probe.slice(0, dot) : probe;
 }
 
-export interface FbdBinding {
-  instance: string;
-  paths: string[];
-  elements: ElementSubscription[];
-  /** Upper-case operand text -> its path. */
-  pathOf: ReadonlyMap<string, string>;
+/** What an FBD view subscribes and how the values map back onto its nodes and blocks. */
+export type FbdBinding = DiagramBinding;
+
+/** A block's pins online: its FB instance's, or what the wires feed a function's inputs and its output probes. */
+function bindBlock(
+  node: ReturnType<typeof nodesOf>[number],
+  network: FbdNetwork,
+  lookup: Lookup,
+  symbols: readonly SymbolInfo[],
+  path: (operand: string) => string | null,
+): PinBinding[] {
+  const block = node as { id: string; call: string; instance?: string | null };
+  const { inputs, outputs } = nodePins(node, network, lookup, symbols);
+  const pins = [
+    ...inputs.map((p) => ({ side: "in" as const, name: p.name, type: p.type })),
+    ...outputs.map((p) => ({ side: "out" as const, name: p.name, type: p.type })),
+  ];
+  const instance = block.instance?.trim() ? path(block.instance) : null;
+  return bindBoxPins(lookup(block.call), instance, pins, (pin): PinSource => {
+    if (pin.side === "out") return { probe: `${block.id}.${pin.name.toUpperCase()}` };
+    const wire = wiresOf(network).find(
+      (w) => w.to.node === block.id && w.to.pin.toUpperCase() === pin.name.toUpperCase(),
+    );
+    const probe = wire ? probeOf(network, wire.from) : null;
+    if (!probe) return null;
+    const source = nodesOf(network).find((n) => n.id === wire!.from.node);
+    const operand = source && kindOf(source) === "input" ? operandOf(source) : null;
+    return { probe, typeOf: (operand && path(operand)) ?? undefined };
+  });
 }
 
 /** The probe ids of one node: its output pins (blocks) or the node itself. */
@@ -96,31 +130,35 @@ export function bindFbd(
   networks?: ReadonlySet<string>,
 ): FbdBinding {
   const pathOf = new Map<string, string>();
+  const pins = new Map<string, PinBinding[]>();
   const ids: string[] = [];
+  const path = (operand: string) => operandPath(operand, instance, symbols);
   for (const network of networksOf(body)) {
     if (networks && !networks.has(network.id)) continue;
     for (const node of nodesOf(network)) {
       ids.push(...probesOfNode(node, network, lookup, symbols));
       const operand = operandOf(node);
-      const path = operand ? operandPath(operand, instance, symbols) : null;
-      if (operand && path) pathOf.set(operand.toUpperCase(), path);
+      const p = operand ? path(operand) : null;
+      if (operand && p) pathOf.set(operand.toUpperCase(), p);
+      if (kindOf(node) === "block") pins.set(node.id, bindBlock(node, network, lookup, symbols, path));
     }
   }
-  return {
-    instance,
-    paths: [...new Set(pathOf.values())],
-    elements: ids.length ? [{ pou_instance: instance, ids }] : [],
-    pathOf,
-  };
+  return diagramBinding(instance, ids, pathOf, pins);
 }
 
-/** What the FBD diagram shows online: probe values by id (null: not executed), forced operands. */
+/**
+ * What the FBD diagram shows online: probe values by id (null: not executed; wires and variable
+ * nodes), the values of the operands' variables (forced, prepared) and of every block pin.
+ */
 export interface FbdOnlineView {
   probes: Readonly<Record<string, PowerState>>;
-  forced: ReadonlySet<string>;
+  /** By upper-case operand text. */
+  operands: Readonly<Record<string, ValueShown>>;
+  /** Block id -> pin key (`in:IN1`, `out:ET`) -> value. */
+  pins: Readonly<Record<string, Readonly<Record<string, ValueShown>>>>;
 }
 
-export function fbdOnlineView(monitor: MonitorState, binding: FbdBinding): FbdOnlineView {
+export function fbdOnlineView(monitor: MonitorState, binding: FbdBinding, prepared: Prepared = {}): FbdOnlineView {
   const probes: Record<string, PowerState> = {};
   for (const { pou_instance, ids } of binding.elements) {
     for (const id of ids ?? []) {
@@ -128,9 +166,7 @@ export function fbdOnlineView(monitor: MonitorState, binding: FbdBinding): FbdOn
       if (state !== undefined) probes[id] = state;
     }
   }
-  const forced = new Set<string>();
-  for (const [operand, path] of binding.pathOf) if (monitor.forced.has(path)) forced.add(operand);
-  return { probes, forced };
+  return { probes, ...diagramValues(monitor, binding, prepared) };
 }
 
 /** Whether a block ran in the last scan: any of its probes holds a value (none known: assume it did). */

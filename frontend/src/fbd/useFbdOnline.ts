@@ -17,9 +17,16 @@ export interface FbdOnline {
   onVisibleChange(networks: readonly string[]): void;
 }
 
-export function useFbdOnline(pou: Pou, body: FbdBody, lookup: Lookup, symbols: readonly SymbolInfo[]): FbdOnline {
+/** `symbols` null: not arrived yet, nothing is bound (see useLdOnline). */
+export function useFbdOnline(
+  pou: Pou,
+  body: FbdBody,
+  lookup: Lookup,
+  symbols: readonly SymbolInfo[] | null,
+): FbdOnline {
   const phase = useOnline((s) => s.phase);
   const monitor = useOnline((s) => s.monitor);
+  const prepared = useOnline((s) => s.prepared);
   const instance = useShownInstance(pou);
   const key = `fbd:${pou.name}`;
   const live = phase !== "offline";
@@ -27,7 +34,7 @@ export function useFbdOnline(pou: Pou, body: FbdBody, lookup: Lookup, symbols: r
   const [visible, setVisible] = useState<ReadonlySet<string> | null>(null);
   const onVisibleChange = useCallback((networks: readonly string[]) => setVisible(new Set(networks)), []);
   const binding = useMemo(
-    () => (instance ? bindFbd(body, instance, lookup, symbols, visible ?? undefined) : null),
+    () => (instance && symbols ? bindFbd(body, instance, lookup, symbols, visible ?? undefined) : null),
     [body, instance, lookup, symbols, visible],
   );
   useEffect(() => {
@@ -38,11 +45,11 @@ export function useFbdOnline(pou: Pou, body: FbdBody, lookup: Lookup, symbols: r
   useEffect(() => () => onlineStore.getState().subscribe(key, null), [key]);
 
   const online = useMemo(
-    () => (live && binding ? fbdOnlineView(monitor, binding) : undefined),
-    [live, binding, monitor],
+    () => (live && binding ? fbdOnlineView(monitor, binding, prepared) : undefined),
+    [live, binding, monitor, prepared],
   );
   const actions = useMemo(
-    () => (live && instance ? operandActions(instance, symbols) : undefined),
+    () => (live && instance && symbols ? operandActions(instance, symbols) : undefined),
     [live, instance, symbols],
   );
   return { online, readOnly: onlineReadOnly(pou, live, instance), actions, onVisibleChange };

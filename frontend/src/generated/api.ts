@@ -20,6 +20,12 @@ export interface ApiTypes {
   simulation_info: SimulationInfo;
   st_export: StExport;
   symbol_table: SymbolTable;
+  test_check_request: TestCheckRequest;
+  test_event: TestEvent;
+  test_listing: TestListing;
+  test_open_request: TestOpenRequest;
+  test_run_request: TestRunRequest;
+  variable_children: VariableChildren;
 }
 /**
  * ``POST /api/projects/{name}/check``: every diagnostic of the saved project.
@@ -183,6 +189,10 @@ export interface Project {
   name: string;
   pous?: Pou[];
   tasks?: Task[];
+  /**
+   * Unit test files (tests/<name>.st).
+   */
+  tests?: TestFile[];
   /**
    * ST text of TYPE ... END_TYPE blocks.
    */
@@ -664,6 +674,25 @@ export interface Task {
   watchdog_ms?: number | null;
 }
 /**
+ * A file of unit tests, ``tests/<name>.st`` in the project folder (docs/testing.md).
+ *
+ * Tests a teacher hides from students live in ``tests/hidden/`` and are not part of the model: the
+ * browser never sees them, ``ladderlab test --grade`` runs them.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "TestFile".
+ */
+export interface TestFile {
+  /**
+   * File name without the .st suffix (letters, digits, '_' and '-').
+   */
+  name: string;
+  /**
+   * ST test text: SETUP, TEARDOWN and TEST blocks, as typed.
+   */
+  text?: string;
+}
+/**
  * Body of ``POST /api/projects/{name}/rename``.
  *
  * This interface was referenced by `ApiTypes`'s JSON-Schema
@@ -814,4 +843,205 @@ export interface SymbolInfo {
    * VAR, VAR_INPUT, VAR_OUTPUT, VAR_IN_OUT, VAR_EXTERNAL, VAR_TEMP or VAR_GLOBAL.
    */
   var_class: string;
+}
+/**
+ * Body of ``POST /api/tests/check``: the diagnostics of one test file of the working copy (ST editor).
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "TestCheckRequest".
+ */
+export interface TestCheckRequest {
+  file: string;
+  project: Project;
+}
+/**
+ * One line of the ``POST /api/tests/run`` stream: a file prepared (its tests or its diagnostics), a test's
+ * result, or the end (summary, and coverage per POU when asked for).
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "TestEvent".
+ */
+export interface TestEvent {
+  coverage?: {
+    [k: string]: CoverageInfo;
+  } | null;
+  file?: TestFileInfo | null;
+  result?: TestResultInfo | null;
+  summary?: TestSummary | null;
+  type: "file" | "result" | "done";
+}
+/**
+ * What the tests never executed or energised in one POU (element ids of LD/FBD, body lines of ST).
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "CoverageInfo".
+ */
+export interface CoverageInfo {
+  elements: number;
+  executed: number;
+  language: string;
+  never_energised?: string[];
+  never_executed?: string[];
+  never_executed_lines?: number[];
+}
+/**
+ * A test file's tests, or the diagnostics that keep it from compiling.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "TestFileInfo".
+ */
+export interface TestFileInfo {
+  diagnostics?: Diagnostic[];
+  /**
+   * tests/<name>.st
+   */
+  file: string;
+  tests?: TestCaseInfo[];
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "TestCaseInfo".
+ */
+export interface TestCaseInfo {
+  /**
+   * Line of its TEST keyword in the test file.
+   */
+  line: number;
+  name: string;
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "TestResultInfo".
+ */
+export interface TestResultInfo {
+  duration_s: number;
+  failure?: TestFailureInfo | null;
+  file: string;
+  line: number;
+  name: string;
+  outcome: "passed" | "failed";
+  scans: number;
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "TestFailureInfo".
+ */
+export interface TestFailureInfo {
+  /**
+   * The actual value as an IEC literal (assertions).
+   */
+  actual?: string | null;
+  column?: number | null;
+  /**
+   * The expected value as an IEC literal (assertions).
+   */
+  expected?: string | null;
+  /**
+   * assertion, timeout, budget, fault, watchdog, memory or error
+   */
+  kind: string;
+  line?: number | null;
+  message: string;
+  /**
+   * The assertion's own message.
+   */
+  note?: string | null;
+  verb?: string | null;
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "TestSummary".
+ */
+export interface TestSummary {
+  failed: number;
+  files_with_errors: number;
+  passed: number;
+  seconds: number;
+  skipped: number;
+}
+/**
+ * ``POST /api/tests/list``: every test file of the working copy and its tests (parsed, not run).
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "TestListing".
+ */
+export interface TestListing {
+  files: TestFileInfo[];
+}
+/**
+ * Body of ``POST /api/tests/open``: the failing test whose last state is to be opened online.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "TestOpenRequest".
+ */
+export interface TestOpenRequest {
+  file: string;
+  project: Project;
+  test: string;
+}
+/**
+ * Body of ``POST /api/tests/run``: the working copy, and which tests (none: all; a file; one test).
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "TestRunRequest".
+ */
+export interface TestRunRequest {
+  coverage?: boolean;
+  /**
+   * tests/<name>.st; None: every test file
+   */
+  file?: string | null;
+  project: Project;
+  /**
+   * one test of that file by name; None: all of them
+   */
+  test?: string | null;
+}
+/**
+ * ``GET /api/projects/{name}/variables?path=``: what one variable of the saved project holds.
+ *
+ * No path: the programs (each its own instance) and the global variables.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "VariableChildren".
+ */
+export interface VariableChildren {
+  children: VariableNode[];
+  /**
+   * Array elements left out after the first ones (too many to list).
+   */
+  more?: number;
+  path: string;
+  /**
+   * The variable's type as IEC text; null for the top (no path).
+   */
+  type: string | null;
+}
+/**
+ * One variable of the instance tree (ON-10): a POU's variable, an FB's pin or variable, a field, an element.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "VariableNode".
+ */
+export interface VariableNode {
+  /**
+   * It has members: an FB instance, a structure or an array.
+   */
+  expandable: boolean;
+  /**
+   * As declared ('RunTimer', 'ET'), or an array element's index ('[3]').
+   */
+  name: string;
+  /**
+   * The path that reads, writes and forces it: 'MAIN.RunTimer.ET', 'MAIN.arr[3]'.
+   */
+  path: string;
+  /**
+   * Its type as IEC text: 'TIME', 'TON', 'ARRAY [1..3] OF INT'.
+   */
+  type: string;
+  /**
+   * VAR, VAR_INPUT, VAR_OUTPUT... of a variable; null for fields and array elements.
+   */
+  var_class?: string | null;
 }

@@ -131,11 +131,15 @@ export interface Continue {
  * Run to the next network (LD/FBD), statement (ST; networks in diagrams), SFC transition that fires (over as
  * many scans as it takes) or the end of the scan.
  *
+ * ``statement`` steps into calls; ``over`` goes to the next statement or network of the halted POU
+ * (or of its caller once it returns), passing over the calls it makes; ``out`` runs until the caller
+ * of the halted POU goes on. A breakpoint on the way halts first.
+ *
  * This interface was referenced by `MonitorProtocol`'s JSON-Schema
  * via the `definition` "Step".
  */
 export interface Step {
-  granularity?: "network" | "statement" | "transition" | "cycle";
+  granularity?: "network" | "statement" | "over" | "out" | "transition" | "cycle";
   type: "step";
 }
 /**

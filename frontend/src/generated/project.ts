@@ -11,6 +11,10 @@ export interface Project {
   pous?: Pou[];
   tasks?: Task[];
   /**
+   * Unit test files (tests/<name>.st).
+   */
+  tests?: TestFile[];
+  /**
    * ST text of TYPE ... END_TYPE blocks.
    */
   types?: string;
@@ -489,4 +493,23 @@ export interface Task {
    * The task's time budget per scan in ms (its scan's own running time); longer is a watchdog fault. Null: the default of 100 ms (CODESYS's).
    */
   watchdog_ms?: number | null;
+}
+/**
+ * A file of unit tests, ``tests/<name>.st`` in the project folder (docs/testing.md).
+ *
+ * Tests a teacher hides from students live in ``tests/hidden/`` and are not part of the model: the
+ * browser never sees them, ``ladderlab test --grade`` runs them.
+ *
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "TestFile".
+ */
+export interface TestFile {
+  /**
+   * File name without the .st suffix (letters, digits, '_' and '-').
+   */
+  name: string;
+  /**
+   * ST test text: SETUP, TEARDOWN and TEST blocks, as typed.
+   */
+  text?: string;
 }

@@ -45,6 +45,10 @@ export const METRICS = {
   comment: 16,
   networkPad: 12,
   emptySeries: 48,
+  /** Online (LayoutOptions.values): room under a contact or coil for its variable's value... */
+  valueRow: 12,
+  /** ...and inside a box next to each pin's name for the pin's value (11 characters of 10 px text). */
+  pinValue: 70,
 } as const;
 
 /** The element whose right-side power a wire carries; null is the left rail (always ON). */
@@ -65,6 +69,8 @@ export interface PlacedPin extends BoxPin {
   /** The point on the box edge. */
   x: number;
   y: number;
+  /** An input carrying power: the element whose power it gets (null: the left rail); unset for operand pins. */
+  feed?: PowerSource;
 }
 
 export interface PlacedElement {
@@ -121,6 +127,8 @@ export interface LayoutOptions {
   /** The library entry of a box's call (pins and types); unknown calls show only connected pins. */
   library?: (call: string) => LibraryEntry | undefined;
   minRightRail?: number;
+  /** Online: leave room for values (under contacts and coils, next to box pin names). */
+  values?: boolean;
 }
 
 interface Block {
@@ -135,6 +143,7 @@ interface Block {
 interface Ctx {
   network: string;
   library: (call: string) => LibraryEntry | undefined;
+  values: boolean;
 }
 
 export const textWidth = (text: string): number => text.length * METRICS.char;
@@ -194,7 +203,8 @@ function layoutSeries(
 }
 
 function leaf(element: LdElement, ref: SeriesRef, index: number, ctx: Ctx, width: number): Block {
-  const { rowHeight: height, line } = METRICS;
+  const { line } = METRICS;
+  const height = METRICS.rowHeight + (ctx.values ? METRICS.valueRow : 0);
   const placed: PlacedElement = {
     id: element.id,
     element,
@@ -313,10 +323,11 @@ function layoutBox(element: Box, ref: SeriesRef, index: number, inPower: PowerSo
   );
   const rows = Math.max(pins.inputs.length, pins.outputs.length);
   let bodyWidth = Math.max(METRICS.minBoxBody, textWidth(element.call) + 20, textWidth(element.instance ?? "") + 8);
+  const values = ctx.values ? 2 * METRICS.pinValue : 0;
   for (let i = 0; i < rows; i += 1) {
     bodyWidth = Math.max(
       bodyWidth,
-      textWidth(pins.inputs[i]?.name ?? "") + textWidth(pins.outputs[i]?.name ?? "") + 24,
+      textWidth(pins.inputs[i]?.name ?? "") + textWidth(pins.outputs[i]?.name ?? "") + 24 + values,
     );
   }
   const bodyX = leftWidth;
@@ -333,7 +344,9 @@ function layoutBox(element: Box, ref: SeriesRef, index: number, inPower: PowerSo
   let top = rowsTop;
   for (const row of inputRows) {
     const y = top + row.line;
-    placedPins.push({ ...row.pin, side: "in", x: bodyX, y });
+    const series = Array.isArray(row.pin.value) ? row.pin.value : null;
+    const feed = series ? (series[series.length - 1]?.id ?? null) : row.pin.power ? inPower : undefined;
+    placedPins.push({ ...row.pin, side: "in", x: bodyX, y, ...(feed !== undefined ? { feed } : {}) });
     if (row.block) {
       const x = bodyX - row.block.width;
       const placed = shift(row.block, x, y - row.block.lineOffset);
@@ -425,14 +438,16 @@ type Laid = ReturnType<typeof layoutNetwork>;
  */
 const cache = new WeakMap<
   LdNetwork,
-  { rightRailX: number; library: Ctx["library"]; laid: Laid; placed?: NetworkLayout }
+  { rightRailX: number; library: Ctx["library"]; values: boolean; laid: Laid; placed?: NetworkLayout }
 >();
 
-function cachedNetwork(network: LdNetwork, rightRailX: number, library: Ctx["library"]): Laid {
+type Shared = Pick<Ctx, "library" | "values">;
+
+function cachedNetwork(network: LdNetwork, rightRailX: number, { library, values }: Shared): Laid {
   const hit = cache.get(network);
-  if (hit && hit.rightRailX === rightRailX && hit.library === library) return hit.laid;
-  const laid = layoutNetwork(network, rightRailX, { network: network.id, library });
-  cache.set(network, { rightRailX, library, laid });
+  if (hit && hit.rightRailX === rightRailX && hit.library === library && hit.values === values) return hit.laid;
+  const laid = layoutNetwork(network, rightRailX, { network: network.id, library, values });
+  cache.set(network, { rightRailX, library, values, laid });
   return laid;
 }
 
@@ -440,11 +455,11 @@ function cachedNetwork(network: LdNetwork, rightRailX: number, library: Ctx["lib
 function placedNetwork(
   network: LdNetwork,
   rightRailX: number,
-  library: Ctx["library"],
+  shared: Shared,
   index: number,
   top: number,
 ): NetworkLayout {
-  const { layout } = cachedNetwork(network, rightRailX, library);
+  const { layout } = cachedNetwork(network, rightRailX, shared);
   const entry = cache.get(network)!;
   if (entry.placed?.index !== index || entry.placed.top !== top) entry.placed = { ...layout, index, top };
   return entry.placed;
@@ -454,16 +469,17 @@ const noLibrary = (): undefined => undefined;
 
 /** Lays out a whole LD body; all networks share one right rail, far enough right for the widest. */
 export function layoutBody(body: LdBody, options: LayoutOptions = {}): LdLayout {
-  const library = options.library ?? noLibrary;
+  const shared: Shared = { library: options.library ?? noLibrary, values: options.values ?? false };
   const networks = networksOf(body);
   const natural = networks.map((n) => {
     const hit = cache.get(n);
-    return (hit?.library === library ? hit.laid : cachedNetwork(n, 0, library)).natural;
+    return (hit?.library === shared.library && hit.values === shared.values ? hit.laid : cachedNetwork(n, 0, shared))
+      .natural;
   });
   const rightRailX = Math.max(options.minRightRail ?? METRICS.minRightRail, ...natural);
   let top = 0;
   const laid = networks.map((network, index) => {
-    const layout = placedNetwork(network, rightRailX, library, index, top);
+    const layout = placedNetwork(network, rightRailX, shared, index, top);
     top += layout.height;
     return layout;
   });

@@ -137,7 +137,7 @@ async function openMain() {
 const element = (editor: HTMLElement, id: string) => editor.querySelector(`[data-id="${id}"]`)!;
 
 describe("online LD in the app (issue 7 online mode)", () => {
-  it("compiles, subscribes the diagram, colours from the engine, toggles, watches by drag and goes offline", async () => {
+  it("compiles, subscribes the diagram, colours from the engine, prepares and writes, watches by drag and goes offline", async () => {
     const fetchMock = serve();
     const editor = await openMain();
     fireEvent.click(screen.getByRole("button", { name: "Compile & simulate" }));
@@ -171,9 +171,13 @@ describe("online LD in the app (issue 7 online mode)", () => {
     expect(screen.getByTestId("scan-count").textContent).toBe("42");
     expect(screen.getByText("0:00:00.420")).toBeTruthy();
 
-    // Double-click toggles Start (TRUE now): a write of FALSE.
+    // Double-click prepares FALSE for Start (TRUE now), shown as <FALSE>; Ctrl+F7 writes it (CODESYS).
     fireEvent.doubleClick(element(editor, "start"));
+    expect(element(editor, "start").querySelector(".ld-prepared")!.textContent).toBe("<FALSE>");
+    expect(screen.getByRole("group", { name: "Prepared values" }).textContent).toContain("1 prepared");
+    fireEvent.keyDown(window, { key: "F7", ctrlKey: true });
     expect(socket.sent.at(-1)).toEqual({ type: "write", path: "MAIN.START", value: false });
+    expect(element(editor, "start").querySelector(".ld-prepared")).toBeNull();
 
     // Drag Motor from the diagram onto the panels: it joins the watch list with its value.
     fireEvent.mouseDown(element(editor, "motor").querySelector(".ld-hit")!);
@@ -200,7 +204,7 @@ describe("online LD in the app (issue 7 online mode)", () => {
     expect(element(editor, "motor").getAttribute("class")).not.toContain("ld-on");
   }, 20_000); // a long user session in jsdom; slow when the machine is busy
 
-  it("runs the simulation commands from their keys and the toolbar", async () => {
+  it("runs the simulation commands from their keys (CODESYS's, exact modifiers only) and the toolbar", async () => {
     serve();
     await openMain();
     fireEvent.keyDown(window, { key: "F8", altKey: true });
@@ -208,9 +212,11 @@ describe("online LD in the app (issue 7 online mode)", () => {
     const socket = FakeSocket.all[0]!;
     socket.open();
     socket.receive({ type: "status", state: "stopped" });
-    fireEvent.keyDown(window, { key: "F8" });
+    fireEvent.keyDown(window, { key: "F5", ctrlKey: true });
     fireEvent.keyDown(window, { key: "F5" });
     fireEvent.keyDown(window, { key: "F5", shiftKey: true });
+    fireEvent.keyDown(window, { key: "F8" }); // not bound: nothing
+    fireEvent.keyDown(window, { key: "F8", altKey: true, ctrlKey: true }); // not bound either
     fireEvent.click(screen.getByRole("button", { name: "Run" }));
     fireEvent.click(screen.getByRole("button", { name: "Single cycle" }));
     expect(socket.sent.filter((m) => m.type !== "subscribe").map((m) => m.type)).toEqual([
@@ -248,11 +254,14 @@ describe("online LD in the app (issue 7 online mode)", () => {
     expect(screen.getByText(/name the instance of Pump to show/)).toBeTruthy();
     fireEvent.change(screen.getByLabelText("Instance of Pump"), { target: { value: "Main.P1" } });
     fireEvent.click(screen.getByRole("button", { name: "Show" }));
-    expect(socket.sent.at(-1)).toMatchObject({
-      type: "subscribe",
-      paths: ["MAIN.P1.OUT", "MAIN.P1.RUN"],
-      elements: [{ pou_instance: "MAIN.P1", ids: ["q1", "r1"] }],
-    });
+    // once Pump's symbols have arrived (its operands are then known as its own variables)
+    await waitFor(() =>
+      expect(socket.sent.at(-1)).toMatchObject({
+        type: "subscribe",
+        paths: ["MAIN.P1.OUT", "MAIN.P1.RUN"],
+        elements: [{ pou_instance: "MAIN.P1", ids: ["q1", "r1"] }],
+      }),
+    );
     socket.receive({
       type: "values",
       scan: 3,

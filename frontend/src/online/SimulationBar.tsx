@@ -1,21 +1,13 @@
 // The simulation controls, always visible over the editor: Check, Compile & simulate, Run, Stop,
-// Single cycle, Reset, Go offline; the online/offline state; scan counter, virtual time and the
-// last scan time. Compile & simulate saves unsaved changes first (the server compiles the saved
-// project). F-keys as in CODESYS-like IDEs, listed in the shortcut help.
-import { useEffect } from "react";
+// Single cycle, Reset, Go offline; the online/offline state; the number of active forces with
+// Release all forces; the prepared values (force / write / clear); scan counter, virtual time and
+// the last scan time. Compile & simulate saves unsaved changes first (the server compiles the saved
+// project). Keys (CODESYS's) come from the keymap and are handled by project/useAppKeys.ts.
 import { panelsStore, usePanels } from "../panels/store";
 import { workspaceStore } from "../project/store";
 import { onlineStore, useOnline } from "./store";
-
-/** Keys of the simulation commands, for the shortcut help. */
-export const SIMULATION_KEYS: [string, string][] = [
-  ["F7", "Check the project"],
-  ["Alt+F8", "Compile & simulate (go online)"],
-  ["Ctrl+F8", "Go offline"],
-  ["F5", "Run"],
-  ["Shift+F5", "Stop"],
-  ["F8", "Single cycle"],
-];
+import { formatClock } from "./values";
+import { keysOf, type CommandOf } from "../keys/keymap";
 
 /** Saves pending changes, then checks or compiles the saved project. */
 async function savedProject(): Promise<string | null> {
@@ -41,46 +33,22 @@ export async function compileSaved(): Promise<void> {
   if (compileDiagnostics.length) panelsStore.getState().showDiagnostics(compileDiagnostics);
 }
 
-/** Virtual time as h:mm:ss.mmm (the simulation's clock starts at 0). */
-export function formatClock(ms: number): string {
-  const total = Math.max(0, Math.round(ms));
-  const h = Math.floor(total / 3_600_000);
-  const m = Math.floor(total / 60_000) % 60;
-  const s = Math.floor(total / 1000) % 60;
-  const rest = total % 1000;
-  return `${h}:${String(m).padStart(2, "0")}:${String(s).padStart(2, "0")}.${String(rest).padStart(3, "0")}`;
-}
+/** A button's tooltip: what it does and its key from the keymap. */
+const titled = (label: string, command: CommandOf<"app">) => `${label} (${keysOf("app", command)})`;
 
 export function SimulationBar() {
   const phase = useOnline((s) => s.phase);
   const state = useOnline((s) => s.monitor.state);
   const scan = useOnline((s) => s.monitor.scan);
   const timeMs = useOnline((s) => s.monitor.timeMs);
+  const forces = useOnline((s) => s.monitor.forced.size);
+  const prepared = useOnline((s) => Object.keys(s.prepared).length);
   const lastScanMs = useOnline((s) => s.lastScanMs);
   const error = useOnline((s) => s.error);
   const checking = usePanels((s) => s.checking);
   const online = phase === "online";
   const running = state === "running";
   const s = onlineStore.getState();
-
-  useEffect(() => {
-    const onKey = (e: KeyboardEvent) => {
-      const o = onlineStore.getState();
-      const ready = o.phase === "online";
-      let run: (() => unknown) | null = null;
-      if (e.key === "F7" && !e.altKey && !e.ctrlKey && !e.shiftKey) run = checkSaved;
-      else if (e.key === "F8" && e.altKey) run = compileSaved;
-      else if (e.key === "F8" && e.ctrlKey) run = o.goOffline;
-      else if (e.key === "F8" && ready) run = o.singleCycle;
-      else if (e.key === "F5" && e.shiftKey && ready) run = o.stop;
-      else if (e.key === "F5" && !e.shiftKey && ready && o.monitor.state !== "halted") run = o.run; // halted: F5 continues (debug/DebugBar)
-      if (!run) return;
-      e.preventDefault();
-      void run();
-    };
-    window.addEventListener("keydown", onKey);
-    return () => window.removeEventListener("keydown", onKey);
-  }, []);
 
   const label =
     phase === "online"
@@ -92,25 +60,25 @@ export function SimulationBar() {
           : "Connecting…";
   return (
     <div className={`simulation-bar phase-${phase}${running ? " running" : ""}`} role="toolbar" aria-label="Simulation">
-      <button type="button" onClick={() => void checkSaved()} disabled={checking} title="Check (F7)">
+      <button type="button" onClick={() => void checkSaved()} disabled={checking} title={titled("Check", "check")}>
         Check
       </button>
       <button
         type="button"
         onClick={() => void compileSaved()}
         disabled={phase === "compiling" || phase === "connecting"}
-        title="Compile & simulate (Alt+F8)"
+        title={titled("Compile & simulate", "go-online")}
       >
         Compile &amp; simulate
       </button>
-      <button type="button" onClick={s.run} disabled={!online || running} title="Run (F5)">
+      <button type="button" onClick={s.run} disabled={!online || running} title={titled("Run", "run")}>
         Run
       </button>
       <button
         type="button"
         onClick={s.stop}
         disabled={!online || !(running || state === "halted")}
-        title="Stop (Shift+F5)"
+        title={titled("Stop", "stop")}
       >
         Stop
       </button>
@@ -118,7 +86,7 @@ export function SimulationBar() {
         type="button"
         onClick={s.singleCycle}
         disabled={!online}
-        title="Single cycle (F8): one scan, then stopped"
+        title={titled("Single cycle: one scan, then stopped", "single-cycle")}
       >
         Single cycle
       </button>
@@ -129,7 +97,7 @@ export function SimulationBar() {
         type="button"
         onClick={() => void s.goOffline()}
         disabled={phase === "offline"}
-        title="Go offline (Ctrl+F8)"
+        title={titled("Go offline", "go-offline")}
       >
         Go offline
       </button>
@@ -137,6 +105,41 @@ export function SimulationBar() {
         <span className="online-dot" aria-hidden="true" />
         {label}
       </span>
+      <span className={`force-count${forces ? " forcing" : ""}`} role="status" aria-label="Active forces">
+        {forces} forced
+      </span>
+      <button
+        type="button"
+        onClick={s.unforceAll}
+        disabled={!online || forces === 0}
+        title={titled("Release all forces", "release-forces")}
+      >
+        Release all forces
+      </button>
+      {prepared ? (
+        <span className="prepared" role="group" aria-label="Prepared values">
+          {prepared} prepared
+          <button
+            type="button"
+            onClick={() => s.applyPrepared("force")}
+            disabled={!online}
+            title={titled("Force the prepared values", "force-prepared")}
+          >
+            Force
+          </button>
+          <button
+            type="button"
+            onClick={() => s.applyPrepared("write")}
+            disabled={!online}
+            title={titled("Write the prepared values", "write-prepared")}
+          >
+            Write
+          </button>
+          <button type="button" onClick={s.clearPrepared} title="Forget the prepared values">
+            Clear
+          </button>
+        </span>
+      ) : null}
       <span className="scan-info" aria-label="Scan statistics">
         <span>
           scan <strong data-testid="scan-count">{scan}</strong>

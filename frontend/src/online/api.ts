@@ -18,6 +18,11 @@ export function getSimulation(id: string): Promise<SimulationInfo> {
   return requestJson<SimulationInfo>(simulationPath(id));
 }
 
+/** Every simulation the server runs (finding one this way asks nothing that may 404). */
+export function listSimulations(): Promise<SimulationInfo[]> {
+  return requestJson<SimulationInfo[]>("/api/simulations");
+}
+
 /** Warm reset keeps RETAIN variables; cold resets everything to its initial value. */
 export function resetSimulation(id: string, cold = false): Promise<SimulationInfo> {
   return requestJson<SimulationInfo>(`${simulationPath(id)}/reset`, {
@@ -39,8 +44,15 @@ export function monitorUrl(id: string, location: Pick<Location, "protocol" | "ho
 export interface SimulationApi {
   createSimulation(project: string): Promise<SimulationInfo>;
   getSimulation(id: string): Promise<SimulationInfo>;
+  listSimulations(): Promise<SimulationInfo[]>;
   resetSimulation(id: string, cold?: boolean): Promise<SimulationInfo>;
   deleteSimulation(id: string): Promise<void>;
 }
 
-export const simulationApi: SimulationApi = { createSimulation, getSimulation, resetSimulation, deleteSimulation };
+export const simulationApi: SimulationApi = {
+  createSimulation,
+  getSimulation,
+  listSimulations,
+  resetSimulation,
+  deleteSimulation,
+};

@@ -1,11 +1,21 @@
 // Online LD: which variable paths and element ids the visible networks need, and how the
-// monitor's values map back onto the operand texts the diagram draws. Power comes from the engine
-// per element id (never recomputed here); an element the last scan skipped has power null.
-import type { SymbolInfo } from "../generated/api";
-import { walk, type LdBody, type LdElement } from "../ld/model";
+// monitor's values map back onto the operand texts and box pins the diagram draws. Power comes from
+// the engine per element id (never recomputed here); an element the last scan skipped has power null.
+import type { LibraryEntry, SymbolInfo } from "../generated/api";
+import { walk, type Box, type LdBody, type LdElement } from "../ld/model";
+import { boxPins } from "../ld/pins";
 import type { OnlineView } from "../ld/view/types";
-import { formatValue, pathKey, powerKey, type MonitorState } from "./monitor";
-import type { ElementSubscription } from "./protocol";
+import { pathKey, powerKey, type MonitorState } from "./monitor";
+import {
+  bindBoxPins,
+  diagramBinding,
+  diagramValues,
+  pinProbes,
+  type DiagramBinding,
+  type PinBinding,
+  type PinSource,
+} from "./pinValues";
+import type { Prepared } from "./shown";
 
 /** A variable operand: names with member/index access (`T1.Q`, `A[3]`); literals and addresses are not. */
 const VARIABLE = /^[A-Za-z_][A-Za-z0-9_]*(\.[A-Za-z_][A-Za-z0-9_]*|\[\s*\d+\s*\])*$/;
@@ -43,13 +53,28 @@ export function operandPath(operand: string, instance: string, symbols: readonly
   return pathKey(global ? text : `${instance}.${text}`);
 }
 
-export interface LdBinding {
-  instance: string;
-  /** Paths to subscribe, upper case, without repeats. */
-  paths: string[];
-  elements: ElementSubscription[];
-  /** Upper-case operand text -> its path. */
-  pathOf: ReadonlyMap<string, string>;
+/** What an LD view subscribes and how the values map back onto its operands and boxes. */
+export type LdBinding = DiagramBinding;
+
+/**
+ * A box's pins online: an FB instance's from the instance, a function's outputs from their probes
+ * (ENO: the box's own power), operand inputs from their variables; power-fed inputs are drawn from
+ * the power of the element feeding them (the layout knows it), so they need nothing here.
+ */
+function bindBox(box: Box, entry: LibraryEntry | undefined, path: (operand: string) => string | null): PinBinding[] {
+  const { inputs, outputs } = boxPins(box, entry);
+  const pins = [
+    ...inputs.map((p) => ({ side: "in" as const, name: p.name, type: p.type, value: p.value })),
+    ...outputs.map((p) => ({ side: "out" as const, name: p.name, type: p.type, value: p.value })),
+  ].filter((p) => p.name);
+  const instance = box.instance?.trim() ? path(box.instance) : null;
+  return bindBoxPins(entry, instance, pins, (pin): PinSource => {
+    if (pin.side === "out")
+      return { probe: pin.name.toUpperCase() === "ENO" ? box.id : `${box.id}.${pin.name.toUpperCase()}` };
+    const value = pins.find((p) => p.side === "in" && p.name === pin.name)?.value;
+    const variable = typeof value === "string" ? path(value) : null;
+    return variable ? { path: variable } : null;
+  });
 }
 
 /** What to subscribe for `networks` (ids; all when undefined) of an LD body shown for `instance`. */
@@ -57,28 +82,31 @@ export function bindLd(
   body: LdBody,
   instance: string,
   symbols: readonly SymbolInfo[],
+  library: (call: string) => LibraryEntry | undefined,
   networks?: ReadonlySet<string>,
 ): LdBinding {
   const pathOf = new Map<string, string>();
+  const pins = new Map<string, PinBinding[]>();
   const ids: string[] = [];
+  const path = (operand: string) => operandPath(operand, instance, symbols);
   for (const { network, element } of walk(body)) {
     if (networks && !networks.has(network)) continue;
     ids.push(element.id);
     for (const operand of operandsOf(element)) {
-      const path = operandPath(operand, instance, symbols);
-      if (path) pathOf.set(operand.trim().toUpperCase(), path);
+      const p = path(operand);
+      if (p) pathOf.set(operand.trim().toUpperCase(), p);
+    }
+    if (element.type === "box") {
+      const bound = bindBox(element, library(element.call), path);
+      pins.set(element.id, bound);
+      for (const probe of pinProbes(bound)) if (probe !== element.id) ids.push(probe);
     }
   }
-  return {
-    instance,
-    paths: [...new Set(pathOf.values())],
-    elements: ids.length ? [{ pou_instance: instance, ids }] : [],
-    pathOf,
-  };
+  return diagramBinding(instance, ids, pathOf, pins);
 }
 
-/** The diagram's online view of a binding: power and dimming by element id, values and forces by operand. */
-export function ldOnlineView(monitor: MonitorState, binding: LdBinding): OnlineView {
+/** The diagram's online view of a binding: power and dimming by element id, values by operand and box pin. */
+export function ldOnlineView(monitor: MonitorState, binding: LdBinding, prepared: Prepared = {}): OnlineView {
   const power: Record<string, boolean> = {};
   const executed: Record<string, boolean> = {};
   for (const { pou_instance, ids } of binding.elements) {
@@ -88,14 +116,5 @@ export function ldOnlineView(monitor: MonitorState, binding: LdBinding): OnlineV
       else if (typeof state === "boolean") power[id] = state;
     }
   }
-  const values: Record<string, string | number | boolean> = {};
-  const forced = new Set<string>();
-  for (const [operand, path] of binding.pathOf) {
-    const value = monitor.values[path];
-    if (typeof value === "boolean") values[operand] = value;
-    else if (typeof value === "number" || typeof value === "string")
-      values[operand] = formatValue(value, monitor.types[path]);
-    if (monitor.forced.has(path)) forced.add(operand);
-  }
-  return { power, executed, values, forced };
+  return { power, executed, ...diagramValues(monitor, binding, prepared) };
 }

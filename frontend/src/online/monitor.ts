@@ -1,17 +1,38 @@
 // What the browser knows about a running simulation, folded from the server's monitor messages.
 // Pure functions only (the store and the views call them), so the handling of every message kind
 // is unit-tested without a socket. Paths are compared in upper case, as IEC names ignore case.
-import type { DisplayType } from "../generated/monitor";
-import type { PowerState, ServerMessage, SimulationState, Value, Where, WriteValue } from "./protocol";
+import type { DisplayType, Log } from "../generated/monitor";
+import type { PowerState, ServerMessage, SimulationState, Value, Where } from "./protocol";
+
+/** What a log entry is about (ON-15), as the server's `log` messages say. */
+export type LogKind = NonNullable<Log["kind"]>;
+export const LOG_KINDS: readonly LogKind[] = [
+  "state",
+  "write",
+  "force",
+  "release",
+  "breakpoint",
+  "watchdog",
+  "fault",
+  "system",
+];
 
 export interface LogEntry {
   /** Increasing number, a stable React key. */
   seq: number;
-  level: string;
+  kind: LogKind;
+  level: Log["level"];
   message: string;
   at?: Where | null;
-  /** Scan counter when the entry arrived. */
+  /** The scan it belongs to (the server's; else the scan counter when it arrived). */
   scan: number;
+  /** Virtual time of that scan in ms (the server's; else the time shown when it arrived). */
+  timeMs: number;
+  /**
+   * "server": the simulation's own log, which the server sends again (history first) on every
+   * connection; "client": this browser's notes (a refused request, a lost connection), kept.
+   */
+  origin: "server" | "client";
 }
 
 export interface MonitorState {
@@ -32,7 +53,7 @@ export interface MonitorState {
 }
 
 /** The online log keeps this many entries (older ones are dropped). */
-export const LOG_LIMIT = 500;
+export const LOG_LIMIT = 5000;
 
 export const emptyMonitor: MonitorState = {
   scan: 0,
@@ -56,10 +77,26 @@ export const pathKey = (path: string): string =>
     .toUpperCase()
     .replace(/^GVL\s*\.\s*/, "");
 
-function appendLog(state: MonitorState, entry: Omit<LogEntry, "seq" | "scan">, scan?: number | null): MonitorState {
+function appendLog(
+  state: MonitorState,
+  entry: Omit<LogEntry, "seq" | "scan" | "timeMs">,
+  scan?: number | null,
+  timeMs?: number | null,
+): MonitorState {
   const last = state.log[state.log.length - 1];
-  const next = [...state.log, { ...entry, seq: (last?.seq ?? 0) + 1, scan: scan ?? state.scan }];
+  const next = [
+    ...state.log,
+    { ...entry, seq: (last?.seq ?? 0) + 1, scan: scan ?? state.scan, timeMs: timeMs ?? state.timeMs },
+  ];
   return { ...state, log: next.length > LOG_LIMIT ? next.slice(next.length - LOG_LIMIT) : next };
+}
+
+/**
+ * A new connection to the simulation: the server sends its whole log again (oldest first) before
+ * live entries, so the entries of the last connection make way for it; this browser's own stay.
+ */
+export function connectionOpened(state: MonitorState): MonitorState {
+  return { ...state, log: state.log.filter((e) => e.origin === "client") };
 }
 
 /** The state after one server message (values and power merge, `forced` replaces, status and log append). */
@@ -83,17 +120,33 @@ export function applyMessage(state: MonitorState, message: ServerMessage): Monit
     case "status":
       return { ...state, state: message.state, at: message.state === "halted" ? (message.at ?? null) : null };
     case "log":
-      return appendLog(state, { level: message.level, message: message.message, at: message.at ?? null }, message.scan);
+      return appendLog(
+        state,
+        {
+          kind: message.kind ?? "system",
+          level: message.level,
+          message: message.message,
+          at: message.at ?? null,
+          origin: "server",
+        },
+        message.scan,
+        message.time_ms,
+      );
     case "error":
-      return appendLog(state, { level: "error", message: `${message.code}: ${message.message}` });
+      return appendLog(state, {
+        kind: "system",
+        level: "error",
+        message: `${message.code}: ${message.message}`,
+        origin: "client",
+      });
     case "trace_data":
       return state; // the trace panel keeps its own samples (src/trace/store.ts)
   }
 }
 
 /** A local entry in the online log (connection lost, a refused compile), shown like the server's. */
-export function logLocal(state: MonitorState, level: "info" | "warning" | "error", message: string): MonitorState {
-  return appendLog(state, { level, message });
+export function logLocal(state: MonitorState, level: LogEntry["level"], message: string): MonitorState {
+  return appendLog(state, { kind: "system", level, message, origin: "client" });
 }
 
 /**
@@ -116,75 +169,3 @@ export function keepSubscribed(
 
 /** The key of an element's power in `values.power`. */
 export const powerKey = (instance: string, id: string): string => `${instance}/${id}`;
-
-/**
- * Text of a value for labels, the watch list and inline values, as IEC writes it: TRUE/FALSE, TIME
- * and dates as literals (the server sends ms), an enumeration's value by name. `type` is the
- * server's DisplayType or a declared type name; without one a number shows as it is.
- */
-export function formatValue(value: Value | undefined, type?: DisplayType | string): string {
-  if (value === undefined) return "…";
-  if (value === null) return "—";
-  if (typeof value === "boolean") return value ? "TRUE" : "FALSE";
-  if (typeof value === "object") return JSON.stringify(value);
-  if (typeof value !== "number" || type === undefined) return String(value);
-  const name = (typeof type === "string" ? type : type.name).toUpperCase();
-  const named = typeof type === "string" ? undefined : type.names?.[String(value)];
-  if (named !== undefined) return named;
-  return TIME_LITERALS[name]?.(value) ?? String(value);
-}
-
-const pad = (n: number, width = 2) => String(n).padStart(width, "0");
-
-/** `T#1h2m3s500ms`: the non-zero units, largest first (`T#0ms` for zero; a minus sign after `T#`). */
-export function timeLiteral(ms: number): string {
-  const units: [string, number][] = [
-    ["d", 86_400_000],
-    ["h", 3_600_000],
-    ["m", 60_000],
-    ["s", 1000],
-    ["ms", 1],
-  ];
-  let rest = Math.abs(ms);
-  let text = "";
-  for (const [unit, size] of units) {
-    const count = unit === "ms" ? Math.round(rest * 1000) / 1000 : Math.floor(rest / size);
-    if (count) text += `${count}${unit}`;
-    rest -= unit === "ms" ? rest : count * size;
-  }
-  return `T#${ms < 0 ? "-" : ""}${text || "0ms"}`;
-}
-
-/** Time of day after midnight, with milliseconds when there are any. */
-function clock(ms: number): string {
-  const day = new Date(ms);
-  const millis = day.getUTCMilliseconds();
-  return `${pad(day.getUTCHours())}:${pad(day.getUTCMinutes())}:${pad(day.getUTCSeconds())}${millis ? `.${pad(millis, 3)}` : ""}`;
-}
-
-const dateOf = (ms: number) => {
-  const day = new Date(ms);
-  return `${day.getUTCFullYear()}-${pad(day.getUTCMonth() + 1)}-${pad(day.getUTCDate())}`;
-};
-
-/** TIME and the date types, from the server's ms (dates since 1970-01-01 UTC), as IEC literals. */
-const TIME_LITERALS: Record<string, (ms: number) => string> = {
-  TIME: timeLiteral,
-  DATE: (ms) => `D#${dateOf(ms)}`,
-  TIME_OF_DAY: (ms) => `TOD#${clock(ms)}`,
-  TOD: (ms) => `TOD#${clock(ms)}`,
-  DATE_AND_TIME: (ms) => `DT#${dateOf(ms)}-${clock(ms)}`,
-  DT: (ms) => `DT#${dateOf(ms)}-${clock(ms)}`,
-};
-
-/**
- * The JSON value to send for text the user typed: TRUE/FALSE become booleans and plain numbers
- * numbers; anything else goes as text, which the server reads as an IEC literal (T#1s, 16#FF).
- */
-export function parseValue(text: string): WriteValue {
-  const t = text.trim();
-  if (/^true$/i.test(t)) return true;
-  if (/^false$/i.test(t)) return false;
-  if (/^[+-]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)?$/.test(t)) return Number(t);
-  return t;
-}

@@ -1,20 +1,42 @@
-// The online commands on a variable, shared by the LD diagram and the ST editor: toggle, write,
+// The online commands on a variable, shared by the LD and FBD diagrams and the ST editor: prepare
+// (CODESYS's double-click: a BOOL toggles its prepared value, other types ask for one), write,
 // force and release go to the online store as simulation paths, and one list of context menu items
 // (the editors render it with the LD context menu and ask for values with ValuePrompt).
 import type { LdOnlineActions } from "../ld/editor/LdEditor";
 import type { MenuItem } from "../ld/editor/ContextMenu";
-import { parseValue, pathKey } from "./monitor";
+import { pathKey } from "./monitor";
+import { parseValue } from "./values";
+import type { Value } from "./protocol";
+
+const isBool = (value: Value | undefined, type: string | undefined) =>
+  typeof value === "boolean" || type?.toUpperCase() === "BOOL";
 import { onlineStore } from "./store";
 
-/** Commands by operand text; `pathOf` names its simulation path (null: nothing to do). */
-export function operandCommands(pathOf: (operand: string) => string | null): LdOnlineActions {
+/**
+ * Commands by operand text; `pathOf` names its simulation path (null: nothing to do), `declared` its
+ * declared type when known (so a BOOL toggles its prepared value before its first value arrives).
+ */
+export function operandCommands(
+  pathOf: (operand: string) => string | null,
+  declared: (operand: string) => string | undefined = () => undefined,
+): LdOnlineActions {
   const store = () => onlineStore.getState();
   const on = (operand: string, run: (path: string) => void) => {
     const p = pathOf(operand);
     if (p) run(p);
   };
   return {
-    toggle: (operand) => on(operand, (p) => store().write(p, store().monitor.values[pathKey(p)] !== true)),
+    prepare(operand, text, type) {
+      const p = pathOf(operand);
+      if (!p) return true; // nothing to prepare (a literal): done
+      const key = pathKey(p);
+      const { monitor, prepared } = store();
+      if (text !== undefined) store().prepare(p, parseValue(text));
+      else if (isBool(monitor.values[key], monitor.types[key]?.name ?? type ?? declared(operand)))
+        store().prepare(p, !(prepared[key] ?? monitor.values[key]));
+      else return false;
+      return true;
+    },
     write: (operand, text) => on(operand, (p) => store().write(p, parseValue(text))),
     force: (operand, value) =>
       on(operand, (p) => store().force(p, typeof value === "boolean" ? value : parseValue(value))),

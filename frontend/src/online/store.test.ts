@@ -2,7 +2,7 @@ import { afterEach, beforeEach, describe, expect, it, vi } from "vitest";
 import { ApiError } from "../api/client";
 import type { SimulationInfo } from "../generated/api";
 import type { SimulationApi } from "./api";
-import { createOnlineStore, mergeSubscriptions, type SocketLike } from "./store";
+import { createOnlineStore, mergeSubscriptions, RECONNECT_DELAYS_MS, type SocketLike } from "./store";
 
 class FakeSocket {
   readyState = 0;
@@ -52,6 +52,7 @@ function setup(overrides: Partial<SimulationApi> = {}) {
   const api: SimulationApi = {
     createSimulation: vi.fn(async () => info(0, 0)),
     getSimulation: vi.fn(async () => info(3, 0.4)),
+    listSimulations: vi.fn(async () => [info(3, 0.4)]),
     resetSimulation: vi.fn(async () => info(0, 0)),
     deleteSimulation: vi.fn(async () => undefined),
     ...overrides,
@@ -222,14 +223,87 @@ describe("online store", () => {
     });
   });
 
-  it("reports a lost connection and goes offline", async () => {
+  it("reconnects after a dropped connection while the simulation still runs, keeping the views", async () => {
+    const { store, api, sockets } = setup();
+    store.getState().subscribe("ld:Main", MOTOR);
+    await store.getState().compile("demo");
+    sockets[0]!.open();
+    sockets[0]!.drop();
+    expect(store.getState()).toMatchObject({ phase: "connecting", simulation: "s1" });
+    expect(store.getState().monitor.log.at(-1)?.message).toBe("connection to the simulation lost");
+    await vi.advanceTimersByTimeAsync(RECONNECT_DELAYS_MS[0]!);
+    expect(api.listSimulations).toHaveBeenCalled();
+    expect(sockets).toHaveLength(2);
+    sockets[1]!.open();
+    expect(store.getState()).toMatchObject({ phase: "online", error: null, connection: 2 });
+    expect(sockets[1]!.sent[0]).toMatchObject({ type: "subscribe", paths: ["MAIN.MOTOR", "MAIN.START"] });
+  });
+
+  it("goes offline when the dropped simulation is gone from the server", async () => {
+    const { store, sockets } = setup({ listSimulations: vi.fn(async () => []) });
+    await store.getState().compile("demo");
+    sockets[0]!.open();
+    sockets[0]!.drop();
+    await vi.advanceTimersByTimeAsync(RECONNECT_DELAYS_MS[0]!);
+    expect(store.getState()).toMatchObject({ phase: "offline", simulation: null });
+    expect(store.getState().error).toMatch(/simulation is gone/);
+    expect(sockets).toHaveLength(1);
+  });
+
+  it("gives up after the last reconnect attempt fails", async () => {
     const { store, sockets } = setup();
     await store.getState().compile("demo");
     sockets[0]!.open();
     sockets[0]!.drop();
+    for (let i = 0; i < RECONNECT_DELAYS_MS.length; i++) {
+      await vi.advanceTimersByTimeAsync(RECONNECT_DELAYS_MS[i]!);
+      sockets.at(-1)!.drop(); // the server lists it but the websocket does not open
+    }
+    expect(store.getState()).toMatchObject({ phase: "offline", error: "The connection to the simulation was lost." });
+  });
+
+  it("attaches to a simulation of the project that still runs (after a page reload)", async () => {
+    const { store, api, sockets } = setup();
+    expect(await store.getState().attach("other", "s1")).toBe(false); // s1 runs project demo
+    expect(sockets).toHaveLength(0);
+    expect(await store.getState().attach("demo", "s1")).toBe(true);
+    expect(api.listSimulations).toHaveBeenCalled();
+    expect(store.getState()).toMatchObject({ phase: "connecting", project: "demo", simulation: "s1" });
+    sockets[0]!.open();
+    expect(store.getState().phase).toBe("online");
+    expect(api.createSimulation).not.toHaveBeenCalled();
+  });
+
+  it("attaches to nothing when the simulation is gone", async () => {
+    const { store, sockets } = setup({ listSimulations: vi.fn(async () => [{ ...info(1, 0), id: "s2" }]) });
+    expect(await store.getState().attach("demo", "s1")).toBe(false);
     expect(store.getState().phase).toBe("offline");
-    expect(store.getState().error).toMatch(/connection to the simulation was lost/);
-    expect(store.getState().monitor.log.at(-1)?.message).toBe("connection to the simulation lost");
+    expect(sockets).toHaveLength(0);
+  });
+
+  it("forces or writes every prepared value at once and then forgets them (CODESYS F7 / Ctrl+F7)", async () => {
+    const { store, sockets } = setup();
+    await store.getState().compile("demo");
+    sockets[0]!.open();
+    const s = store.getState();
+    s.prepare("Main.Start", true);
+    s.prepare("MAIN.SPEED", "T#5s");
+    s.prepare("main.start", false); // prepared again: the new value replaces the old one
+    expect(store.getState().prepared).toEqual({ "MAIN.START": false, "MAIN.SPEED": "T#5s" });
+    store.getState().applyPrepared("force");
+    expect(sockets[0]!.sent.slice(1)).toEqual([
+      { type: "force", path: "MAIN.START", value: false },
+      { type: "force", path: "MAIN.SPEED", value: "T#5s" },
+    ]);
+    expect(store.getState().prepared).toEqual({});
+    store.getState().prepare("MAIN.X", 3);
+    store.getState().prepare("MAIN.Y", 4);
+    store.getState().prepare("MAIN.Y", null);
+    store.getState().applyPrepared("write");
+    expect(sockets[0]!.sent.slice(3)).toEqual([{ type: "write", path: "MAIN.X", value: 3 }]);
+    store.getState().applyPrepared("write");
+    expect(sockets[0]!.sent).toHaveLength(4);
+    expect(store.getState().monitor.log.at(-1)?.message).toBe("no prepared values to write");
   });
 
   it("polls the scan statistics while online and stops when offline", async () => {
@@ -271,5 +345,70 @@ describe("mergeSubscriptions", () => {
         { pou_instance: "MAIN.FB1", ids: null },
       ],
     });
+  });
+});
+
+describe("the online log across connections (ON-15: history first, then live entries)", () => {
+  /** A simulation's log as the server keeps it: every connection gets the whole history first. */
+  class FakeSimulationLog {
+    entries: unknown[] = [];
+    add(socket: FakeSocket, kind: string, message: string, scan: number) {
+      const entry = { type: "log", kind, level: "info", message, scan, time_ms: scan * 10 };
+      this.entries.push(entry);
+      socket.receive(entry);
+    }
+    connect(socket: FakeSocket) {
+      socket.open();
+      for (const entry of this.entries) socket.receive(entry);
+    }
+  }
+
+  const logOf = (store: ReturnType<typeof setup>["store"]) =>
+    store.getState().monitor.log.map((e) => [e.origin, e.kind, e.message, e.scan, e.timeMs]);
+
+  it("shows each entry once after a reconnect, in the server's order, and keeps this browser's own notes", async () => {
+    const { store, sockets } = setup();
+    const server = new FakeSimulationLog();
+    await store.getState().compile("demo");
+    server.connect(sockets[0]!);
+    server.add(sockets[0]!, "state", "run", 0);
+    server.add(sockets[0]!, "force", "forced MAIN.STOP := TRUE", 12);
+    sockets[0]!.receive({ type: "error", code: "bad_path", message: "no variable MAIN.NOPE" });
+    sockets[0]!.drop();
+    server.entries.push({
+      type: "log",
+      kind: "release",
+      level: "info",
+      message: "released MAIN.STOP",
+      scan: 40,
+      time_ms: 400,
+    });
+    await vi.advanceTimersByTimeAsync(RECONNECT_DELAYS_MS[0]!);
+    server.connect(sockets[1]!);
+    server.add(sockets[1]!, "state", "stop", 55);
+    expect(logOf(store)).toEqual([
+      // This browser's notes carry the scan of the last values received (none here).
+      ["client", "system", "bad_path: no variable MAIN.NOPE", 0, 0],
+      ["client", "system", "connection to the simulation lost", 0, 0],
+      ["server", "state", "run", 0, 0],
+      ["server", "force", "forced MAIN.STOP := TRUE", 12, 120],
+      ["server", "release", "released MAIN.STOP", 40, 400],
+      ["server", "state", "stop", 55, 550],
+    ]);
+  });
+
+  it("shows the whole history of a simulation it attaches to", async () => {
+    const { store, sockets } = setup();
+    const server = new FakeSimulationLog();
+    server.entries.push(
+      { type: "log", kind: "state", level: "info", message: "run", scan: 0, time_ms: 0 },
+      { type: "log", kind: "fault", level: "error", message: "division by zero", scan: 7, time_ms: 70 },
+    );
+    await store.getState().attach("demo", "s1");
+    server.connect(sockets[0]!);
+    expect(logOf(store)).toEqual([
+      ["server", "state", "run", 0, 0],
+      ["server", "fault", "division by zero", 7, 70],
+    ]);
   });
 });

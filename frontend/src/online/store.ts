@@ -5,9 +5,18 @@
 import { useStore } from "zustand";
 import { createStore, type StoreApi } from "zustand/vanilla";
 import { ApiError } from "../api/client";
-import type { Diagnostic } from "../generated/api";
+import type { Diagnostic, SimulationInfo } from "../generated/api";
 import { monitorUrl, simulationApi, type SimulationApi } from "./api";
-import { applyMessage, emptyMonitor, keepSubscribed, logLocal, pathKey, powerKey, type MonitorState } from "./monitor";
+import {
+  applyMessage,
+  connectionOpened,
+  emptyMonitor,
+  keepSubscribed,
+  logLocal,
+  pathKey,
+  powerKey,
+  type MonitorState,
+} from "./monitor";
 import {
   DEFAULT_INTERVAL_MS,
   parseServerMessage,
@@ -25,6 +34,8 @@ export type OpenSocket = (url: string) => SocketLike;
 const OPEN = 1;
 /** How often the toolbar's scan statistics are refreshed from GET /api/simulations/{id}. */
 export const STATS_POLL_MS = 1000;
+/** Waits before each attempt to reconnect to a simulation whose connection dropped (then: offline). */
+export const RECONNECT_DELAYS_MS = [200, 500, 1000, 2000, 4000];
 
 export interface Subscription {
   paths: string[];
@@ -48,13 +59,30 @@ export interface OnlineData {
   views: Record<string, Subscription>;
   /** Paths in the watch list, as the user typed them. */
   watch: string[];
+  /** Upper-case paths of the watch list's expanded rows (FB instances, structures, arrays). */
+  watchExpanded: string[];
   /** The instance a function block's diagram shows online, by POU name (e.g. Blinker -> MAIN.BLINK). */
   instances: Record<string, string>;
+  /** Counts the connections opened to the simulation (a reconnect ends what the server kept per client). */
+  connection: number;
+  /**
+   * Prepared values (CODESYS): double-clicking a value prepares one; F7 forces them all, Ctrl+F7
+   * writes them. Keyed by upper-case path; the value as it will be sent.
+   */
+  prepared: Readonly<Record<string, WriteValue>>;
 }
 
 export interface OnlineActions {
-  /** Compiles the saved project and connects; an open simulation is closed first. */
-  compile(project: string): Promise<void>;
+  /**
+   * Compiles the saved project and connects; an open simulation is closed first. `create` makes the
+   * simulation another way (the Tests panel: a failed test's last state).
+   */
+  compile(project: string, create?: () => Promise<SimulationInfo>): Promise<void>;
+  /**
+   * Connects to simulation `id` of `project` if it still runs on the server (after a page reload);
+   * false when it is gone or belongs to another project.
+   */
+  attach(project: string, id: string): Promise<boolean>;
   goOffline(): Promise<void>;
   run(): void;
   stop(): void;
@@ -65,10 +93,19 @@ export interface OnlineActions {
   force(path: string, value: WriteValue): void;
   unforce(path: string): void;
   unforceAll(): void;
+  /** Prepares `value` for `path` (null: drops its prepared value). */
+  prepare(path: string, value: WriteValue | null): void;
+  /** Forces (F7) or writes (Ctrl+F7) every prepared value, then forgets them. */
+  applyPrepared(action: "force" | "write"): void;
+  clearPrepared(): void;
   /** Sets (or with null removes) the subscription of one view. */
   subscribe(view: string, subscription: Subscription | null): void;
   addWatch(path: string): void;
   removeWatch(path: string): void;
+  /** Opens or closes a row of the watch list's tree. */
+  toggleWatchExpanded(path: string): void;
+  /** The watch list of a project opened again (kept in localStorage); the rows it had expanded. */
+  restoreWatch(watch: readonly string[], expanded: readonly string[]): void;
   setInstance(pou: string, instance: string): void;
   /** Sends any client message (breakpoints, continue, step); false and a log line when not connected. */
   send(msg: ClientMessage): boolean;
@@ -78,7 +115,8 @@ export interface OnlineActions {
 
 export type OnlineState = OnlineData & OnlineActions;
 
-export const offline: Omit<OnlineData, "watch" | "instances"> = {
+/** What going offline resets; the views, the watch list and the chosen instances stay. */
+export const offline: Omit<OnlineData, "views" | "watch" | "watchExpanded" | "instances" | "connection"> = {
   phase: "offline",
   project: null,
   simulation: null,
@@ -87,7 +125,7 @@ export const offline: Omit<OnlineData, "watch" | "instances"> = {
   instanceChoices: {},
   monitor: emptyMonitor,
   lastScanMs: null,
-  views: {},
+  prepared: {},
 };
 
 /** The union of every view's subscription: paths without repeats, element ids merged per instance. */
@@ -110,6 +148,7 @@ export function mergeSubscriptions(views: Iterable<Subscription>): Subscription 
 }
 
 const message = (err: unknown) => (err instanceof Error ? err.message : String(err));
+const GONE = "The simulation is gone (stopped on the server); compile & simulate to start a new one.";
 
 const compileDiagnosticsOf = (err: unknown): Diagnostic[] => {
   const detail = err instanceof ApiError ? (err.detail as { diagnostics?: unknown } | undefined) : undefined;
@@ -169,12 +208,44 @@ export function createOnlineStore(
       }
     };
 
-    const connect = (id: string) => {
+    let retry: ReturnType<typeof setTimeout> | null = null;
+    const stopRetrying = () => {
+      if (retry !== null) clearTimeout(retry);
+      retry = null;
+    };
+
+    /** After a dropped connection: the simulation may still run (a server hiccup), so try again. */
+    const reconnect = (id: string, attempt: number) => {
+      if (attempt >= RECONNECT_DELAYS_MS.length) {
+        set({ ...offline, error: "The connection to the simulation was lost." });
+        return;
+      }
+      retry = setTimeout(() => {
+        retry = null;
+        api.listSimulations().then(
+          (running) => {
+            if (get().simulation !== id || get().phase !== "connecting") return;
+            if (running.some((s) => s.id === id)) connect(id, attempt + 1);
+            else set({ ...offline, monitor: logLocal(get().monitor, "error", "the simulation is gone"), error: GONE });
+          },
+          () => {
+            if (get().simulation === id && get().phase === "connecting") reconnect(id, attempt + 1);
+          },
+        );
+      }, RECONNECT_DELAYS_MS[attempt]);
+    };
+
+    const connect = (id: string, attempt = 0) => {
       const s = openSocket(url(id));
       socket = s;
       s.onopen = () => {
         if (socket !== s) return;
-        set({ phase: "online" });
+        set({
+          phase: "online",
+          error: null,
+          connection: get().connection + 1,
+          monitor: connectionOpened(get().monitor),
+        });
         resubscribe(true);
       };
       s.onmessage = (event) => {
@@ -187,11 +258,13 @@ export function createOnlineStore(
       s.onclose = () => {
         if (socket !== s) return;
         disconnect();
+        const opened = get().phase === "online";
         set({
-          ...offline,
-          error: "The connection to the simulation was lost.",
-          monitor: logLocal(get().monitor, "error", "connection to the simulation lost"),
+          phase: "connecting",
+          error: "The connection to the simulation was lost; reconnecting…",
+          monitor: opened ? logLocal(get().monitor, "error", "connection to the simulation lost") : get().monitor,
         });
+        reconnect(id, opened ? 0 : attempt);
       };
       poll = setInterval(() => {
         api.getSimulation(id).then(
@@ -205,14 +278,17 @@ export function createOnlineStore(
 
     return {
       ...offline,
+      views: {},
       watch: [],
+      watchExpanded: [],
       instances: {},
+      connection: 0,
 
-      async compile(project) {
+      async compile(project, create = () => api.createSimulation(project)) {
         if (get().simulation) await get().goOffline();
         set({ phase: "compiling", project, error: null, compileDiagnostics: [] });
         try {
-          const info = await api.createSimulation(project);
+          const info = await create();
           if (get().phase !== "compiling") {
             void api.deleteSimulation(info.id).catch(() => undefined); // went offline meanwhile
             return;
@@ -229,18 +305,40 @@ export function createOnlineStore(
         }
       },
 
+      async attach(project, id) {
+        if (get().simulation) return get().simulation === id;
+        try {
+          const info = (await api.listSimulations()).find((s) => s.id === id);
+          if (!info || info.project !== project || get().simulation || get().phase !== "offline") return false;
+          set({
+            phase: "connecting",
+            project,
+            simulation: id,
+            error: null,
+            monitor: emptyMonitor,
+            instanceChoices: info.instances ?? {},
+          });
+          connect(id);
+          return true;
+        } catch {
+          return false;
+        }
+      },
+
       async goOffline() {
         const id = get().simulation;
+        stopRetrying();
         disconnect();
-        set({ ...offline, views: get().views });
+        set({ ...offline });
         if (id) await api.deleteSimulation(id).catch(() => undefined);
       },
 
-      run: () => void send({ type: "run" }),
-      stop: () => void send({ type: "stop" }),
+      // Commands go through the state's `send`, so a test may stand in for the socket there.
+      run: () => void get().send({ type: "run" }),
+      stop: () => void get().send({ type: "stop" }),
       singleCycle() {
-        if (get().monitor.state === "running" && !send({ type: "stop" })) return;
-        send({ type: "single_cycle" });
+        if (get().monitor.state === "running" && !get().send({ type: "stop" })) return;
+        get().send({ type: "single_cycle" });
       },
 
       async reset(cold = false) {
@@ -253,10 +351,29 @@ export function createOnlineStore(
         }
       },
 
-      write: (path, value) => void send({ type: "write", path, value }),
-      force: (path, value) => void send({ type: "force", path, value }),
-      unforce: (path) => void send({ type: "unforce", path }),
-      unforceAll: () => void send({ type: "unforce_all" }),
+      write: (path, value) => void get().send({ type: "write", path, value }),
+      force: (path, value) => void get().send({ type: "force", path, value }),
+      unforce: (path) => void get().send({ type: "unforce", path }),
+      unforceAll: () => void get().send({ type: "unforce_all" }),
+
+      prepare(path, value) {
+        const next = { ...get().prepared };
+        if (value === null) delete next[pathKey(path)];
+        else next[pathKey(path)] = value;
+        set({ prepared: next });
+      },
+
+      applyPrepared(action) {
+        const prepared = Object.entries(get().prepared);
+        if (!prepared.length) {
+          set({ monitor: logLocal(get().monitor, "info", `no prepared values to ${action}`) });
+          return;
+        }
+        for (const [path, value] of prepared) if (!get().send({ type: action, path, value })) return;
+        set({ prepared: {} });
+      },
+
+      clearPrepared: () => set({ prepared: {} }),
 
       subscribe(view, subscription) {
         const next = { ...get().views };
@@ -285,7 +402,24 @@ export function createOnlineStore(
       },
 
       removeWatch(path) {
-        set({ watch: get().watch.filter((p) => pathKey(p) !== pathKey(path)) });
+        const key = pathKey(path);
+        set({
+          watch: get().watch.filter((p) => pathKey(p) !== key),
+          watchExpanded: get().watchExpanded.filter(
+            (p) => p !== key && !p.startsWith(`${key}.`) && !p.startsWith(`${key}[`),
+          ),
+        });
+        resubscribe();
+      },
+
+      toggleWatchExpanded(path) {
+        const key = pathKey(path);
+        const open = get().watchExpanded;
+        set({ watchExpanded: open.includes(key) ? open.filter((p) => p !== key) : [...open, key] });
+      },
+
+      restoreWatch(watch, expanded) {
+        set({ watch: [...watch], watchExpanded: expanded.map(pathKey) });
         resubscribe();
       },
     };

@@ -1,8 +1,8 @@
 // Connects one LD editor to online mode: subscribes the networks in view of a program's POU,
-// turns the monitor into the diagram's online view, and maps the diagram's operand commands
-// (toggle, write, force, watch) onto simulation paths.
+// turns the monitor into the diagram's online view (power, values of operands and box pins), and
+// maps the diagram's operand commands (prepare, write, force, watch) onto simulation paths.
 import { useCallback, useEffect, useMemo, useState } from "react";
-import type { SymbolInfo } from "../generated/api";
+import type { LibraryEntry, SymbolInfo } from "../generated/api";
 import type { Pou } from "../generated/project";
 import type { LdOnlineActions } from "../ld/editor/LdEditor";
 import type { LdBody } from "../ld/model";
@@ -43,17 +43,28 @@ export interface LdOnline {
   onVisibleChange(networks: readonly string[]): void;
 }
 
-export function useLdOnline(pou: Pou, body: LdBody, symbols: readonly SymbolInfo[]): LdOnline {
+/**
+ * `symbols` null: the POU's symbol table has not arrived, so its operands cannot be told apart as
+ * its own variables or globals yet; nothing is bound (no wrong paths) until it has.
+ */
+export function useLdOnline(
+  pou: Pou,
+  body: LdBody,
+  symbols: readonly SymbolInfo[] | null,
+  library: readonly LibraryEntry[],
+): LdOnline {
   const phase = useOnline((s) => s.phase);
   const monitor = useOnline((s) => s.monitor);
+  const prepared = useOnline((s) => s.prepared);
   const [visible, setVisible] = useState<ReadonlySet<string> | null>(null);
   const instance = useShownInstance(pou);
   const key = `ld:${pou.name}`;
   const live = phase !== "offline";
+  const lookup = useLibraryLookup(library);
 
   const binding = useMemo(
-    () => (instance ? bindLd(body, instance, symbols, visible ?? undefined) : null),
-    [body, instance, symbols, visible],
+    () => (instance && symbols ? bindLd(body, instance, symbols, lookup, visible ?? undefined) : null),
+    [body, instance, symbols, lookup, visible],
   );
 
   useEffect(() => {
@@ -65,21 +76,32 @@ export function useLdOnline(pou: Pou, body: LdBody, symbols: readonly SymbolInfo
 
   const onVisibleChange = useCallback((networks: readonly string[]) => setVisible(new Set(networks)), []);
   const online = useMemo(
-    () => (live && binding ? ldOnlineView(monitor, binding) : undefined),
-    [live, binding, monitor],
+    () => (live && binding ? ldOnlineView(monitor, binding, prepared) : undefined),
+    [live, binding, monitor, prepared],
   );
 
   const actions = useMemo(
-    () => (live && instance ? operandActions(instance, symbols) : undefined),
+    () => (live && instance && symbols ? operandActions(instance, symbols) : undefined),
     [live, instance, symbols],
   );
   const readOnly = onlineReadOnly(pou, live, instance);
   return { online, readOnly, actions, onVisibleChange };
 }
 
+/** A library entry by call name in any case, the same function while the library is the same. */
+export function useLibraryLookup(library: readonly LibraryEntry[]): (call: string) => LibraryEntry | undefined {
+  return useMemo(() => {
+    const byName = new Map(library.map((e) => [e.name.toUpperCase(), e]));
+    return (call: string) => byName.get(call.toUpperCase());
+  }, [library]);
+}
+
 /** The online commands on operand texts of a diagram showing `instance` (LD and FBD alike). */
 export function operandActions(instance: string, symbols: readonly SymbolInfo[]): LdOnlineActions {
-  return operandCommands((operand) => operandPath(operand, instance, symbols));
+  return operandCommands(
+    (operand) => operandPath(operand, instance, symbols),
+    (operand) => symbols.find((s) => s.name.toUpperCase() === operand.trim().toUpperCase())?.type,
+  );
 }
 
 /** Why a diagram is read-only in online mode (null offline). */

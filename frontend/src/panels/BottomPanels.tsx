@@ -1,14 +1,27 @@
-// The panels under the editor: Diagnostics, Watch list, Online log, Breakpoints and Trace, one shown at a time.
+// The panels under the editor: Diagnostics, Watch list, Online log, Breakpoints, Trace and Tests, one shown at a time.
 import { useDebug } from "../debug/store";
 import type { Diagnostic } from "../generated/api";
 import { draggedOperand } from "../ld/editor/dragOperand";
 import { onlineStore, useOnline } from "../online/store";
+import { TestsPanel } from "../tests/TestsPanel";
+import { useTests } from "../tests/store";
 import { TracePanel } from "../trace/TracePanel";
 import { BreakpointsPanel } from "./BreakpointsPanel";
 import { DiagnosticsPanel } from "./DiagnosticsPanel";
 import { LogPanel } from "./LogPanel";
 import { panelsStore, usePanels, type PanelId } from "./store";
 import { WatchPanel } from "./WatchPanel";
+import { ViewBoundary } from "../project/ViewBoundary";
+
+/** Each panel in the user's words, for the message when it fails. */
+const PANEL_NAMES: Record<PanelId, string> = {
+  diagnostics: "diagnostics panel",
+  watch: "watch list",
+  log: "online log",
+  breakpoints: "breakpoints panel",
+  trace: "trace panel",
+  tests: "tests panel",
+};
 
 export interface BottomPanelsProps {
   onReveal(d: Diagnostic): void;
@@ -23,12 +36,14 @@ export function BottomPanels({ onReveal, pathOfOperand }: BottomPanelsProps) {
   const watched = useOnline((s) => s.watch.length);
   const logged = useOnline((s) => s.monitor.log.length);
   const breakpoints = useDebug((s) => s.breakpoints.length);
+  const failed = useTests((s) => Object.values(s.results).filter((r) => r.outcome === "failed").length);
   const tabs: { id: PanelId; label: string }[] = [
     { id: "diagnostics", label: `Diagnostics (${problems})` },
     { id: "watch", label: `Watch list (${watched})` },
     { id: "log", label: `Online log (${logged})` },
     { id: "breakpoints", label: `Breakpoints (${breakpoints})` },
     { id: "trace", label: "Trace" },
+    { id: "tests", label: failed ? `Tests (${failed} failed)` : "Tests" },
   ];
   const body = {
     diagnostics: <DiagnosticsPanel onReveal={onReveal} />,
@@ -36,6 +51,7 @@ export function BottomPanels({ onReveal, pathOfOperand }: BottomPanelsProps) {
     log: <LogPanel />,
     breakpoints: <BreakpointsPanel />,
     trace: <TracePanel />,
+    tests: <TestsPanel />,
   };
   // A variable dragged from the diagram and released over the panels joins the watch list.
   const drop = () => {
@@ -56,7 +72,9 @@ export function BottomPanels({ onReveal, pathOfOperand }: BottomPanelsProps) {
         ))}
       </div>
       <div className="panel-body" role="tabpanel">
-        {body[panel]}
+        <ViewBoundary key={panel} name={`The ${PANEL_NAMES[panel]}`}>
+          {body[panel]}
+        </ViewBoundary>
       </div>
     </section>
   );

@@ -1,64 +1,39 @@
-// The watch list: variables by path (typed, or dragged from a diagram) with their live values;
-// each row writes, forces and releases like the diagram's context menu.
+// The watch list: variables by path (typed, dragged from a diagram, or added from a box or the
+// Variables view) with their live values. Programs, FB instances, structures and arrays expand into
+// their members (ON-10); every row writes, forces, releases and prepares values in place. The list and
+// what is expanded are kept per project (project/session.ts).
 import { useState, type FormEvent } from "react";
-import { formatValue, parseValue, pathKey } from "../online/monitor";
-import { useOnline, onlineStore } from "../online/store";
+import { pathKey } from "../online/monitor";
+import { onlineStore, useOnline } from "../online/store";
+import { TreeHead, VariableRow, type Expansion } from "./VariableTree";
 
-function WatchRow({ path }: { path: string }) {
-  const value = useOnline((s) => s.monitor.values[pathKey(path)]);
-  const type = useOnline((s) => s.monitor.types[pathKey(path)]);
-  const forced = useOnline((s) => s.monitor.forced.has(pathKey(path)));
-  const online = useOnline((s) => s.phase === "online");
-  const [text, setText] = useState("");
-  const s = onlineStore.getState();
-  const submit = (e: FormEvent, action: "write" | "force") => {
-    e.preventDefault();
-    if (!text.trim()) return;
-    (action === "write" ? s.write : s.force)(path, parseValue(text));
-    setText("");
-  };
+function WatchRoot({ path, expansion }: { path: string; expansion: Expansion }) {
+  const composite = useOnline((s) => {
+    const value = s.monitor.values[pathKey(path)];
+    return typeof value === "object" && value !== null;
+  });
   return (
-    <tr className={forced ? "watch-forced" : undefined} data-path={pathKey(path)}>
-      <td className="watch-path">{path}</td>
-      <td className={`watch-value${value === true ? " watch-true" : ""}`} aria-label={`Value of ${path}`}>
-        {online ? formatValue(value, type) : "—"}
-        {forced ? (
-          <span className="watch-forced-mark" title="forced">
-            {" "}
-            F
-          </span>
-        ) : null}
-      </td>
-      <td>
-        <form className="watch-edit" onSubmit={(e) => submit(e, "write")}>
-          <input
-            aria-label={`New value for ${path}`}
-            value={text}
-            onChange={(e) => setText(e.target.value)}
-            disabled={!online}
-            spellCheck={false}
-          />
-          <button type="submit" disabled={!online || !text.trim()}>
-            Write
-          </button>
-          <button type="button" disabled={!online || !text.trim()} onClick={(e) => submit(e, "force")}>
-            Force
-          </button>
-          <button type="button" disabled={!online || !forced} onClick={() => s.unforce(path)}>
-            Release
-          </button>
-          <button type="button" aria-label={`Remove ${path}`} onClick={() => s.removeWatch(path)}>
-            ×
-          </button>
-        </form>
-      </td>
-    </tr>
+    <VariableRow
+      node={{ name: path, path, type: null, expandable: composite }}
+      depth={0}
+      expansion={expansion}
+      actions={
+        <button type="button" aria-label={`Remove ${path}`} onClick={() => onlineStore.getState().removeWatch(path)}>
+          ×
+        </button>
+      }
+    />
   );
 }
 
 export function WatchPanel() {
   const watch = useOnline((s) => s.watch);
+  const expanded = useOnline((s) => s.watchExpanded);
   const [text, setText] = useState("");
+  const expansion: Expansion = {
+    isOpen: (path) => expanded.includes(pathKey(path)),
+    toggle: (path) => onlineStore.getState().toggleWatchExpanded(path),
+  };
   const add = (e: FormEvent) => {
     e.preventDefault();
     if (!text.trim()) return;
@@ -81,16 +56,10 @@ export function WatchPanel() {
       </form>
       {watch.length ? (
         <table className="watch-table" aria-label="Watch list">
-          <thead>
-            <tr>
-              <th>Variable</th>
-              <th>Value</th>
-              <th>Write / force</th>
-            </tr>
-          </thead>
+          <TreeHead />
           <tbody>
             {watch.map((p) => (
-              <WatchRow key={pathKey(p)} path={p} />
+              <WatchRoot key={pathKey(p)} path={p} expansion={expansion} />
             ))}
           </tbody>
         </table>

@@ -1,22 +1,26 @@
-// The open project: project tree (POUs by kind with their language, types, globals, tasks), tabs
-// of open POUs with unsaved marks, the LD and FBD editors (online when a simulation runs), the
-// simulation toolbar, the bottom panels, Save (Ctrl+S) and the dialog for a save conflict (reload
-// theirs or overwrite deliberately).
-import { useCallback, useEffect, useMemo, useState, type CSSProperties, type FormEvent } from "react";
+// The open project: project tree (POUs by kind with their language, types, globals, tasks, test
+// files), tabs of open POUs and test files with unsaved marks, the LD and FBD editors (online when a
+// simulation runs, tinted by the tests' coverage), the ST editor of test files, the simulation
+// toolbar, the bottom panels, Save (Ctrl+S) and the dialog for a save conflict (reload theirs or
+// overwrite deliberately).
+import { useCallback, useEffect, useMemo, useState, type CSSProperties, type FormEvent, type ReactNode } from "react";
 import type { Diagnostic } from "../generated/api";
-import type { LdBody, Pou, Project } from "../generated/project";
+import type { LdBody, Pou, Project, TestFile } from "../generated/project";
 import { LdEditor } from "../ld/editor/LdEditor";
 import type { History } from "../ld/history";
 import { operandPath } from "../online/ldBinding";
 import { onlineStore, useOnline } from "../online/store";
-import { SIMULATION_KEYS, SimulationBar } from "../online/SimulationBar";
+import { SimulationBar } from "../online/SimulationBar";
 import { instanceOf, useLdOnline } from "../online/useLdOnline";
 import { BottomPanels } from "../panels/BottomPanels";
 import { focusOf, panelsStore, usePanels } from "../panels/store";
 import { StView } from "../stview/StView";
 import { DeclarationsEditor } from "../declarations/DeclarationsEditor";
 import { ELEMENTARY_TYPES, userTypeNames } from "../declarations/model";
-import { pouOf, symbolsOf, useWorkspace, workspaceStore } from "./store";
+import { isTestPath, pouOf, symbolsOf, testOf, testPath, useWorkspace, workspaceStore } from "./store";
+import { useTestCheck, useTestCompletions } from "../tests/assist";
+import { coverageLines, coverageMarks, coverageOf } from "../tests/coverage";
+import { testsStore, useTests } from "../tests/store";
 import { useDiagramPou } from "./useDiagramPou";
 import { FbdPouView } from "../fbd/FbdPouView";
 import { ExportMenu } from "../interchange/ExportMenu";
@@ -26,10 +30,20 @@ import { StEditor } from "../st/StEditor";
 import { StOnlineBar } from "../st/StOnlineBar";
 import { useStAssist } from "../st/useStAssist";
 import { useStOnline } from "../st/useStOnline";
-import { DEBUG_KEYS, DebugBar } from "../debug/DebugBar";
+import { DebugBar } from "../debug/DebugBar";
 import { useLdDebugging } from "../debug/ldDebugging";
 import { revealPlace } from "../debug/reveal";
 import { debugStore, useDebug } from "../debug/store";
+import { ViewBoundary } from "./ViewBoundary";
+import { useAppKeys } from "./useAppKeys";
+import { ShortcutHelp } from "../keys/ShortcutHelp";
+import { keysOf } from "../keys/keymap";
+import { VariablesView } from "./VariablesView";
+import { keepSession, restoreSession, type SessionStores } from "./session";
+import { traceStore } from "../trace/store";
+
+/** The stores a project's session (project/session.ts) is kept from. */
+const SESSION_STORES: SessionStores = { workspace: workspaceStore, online: onlineStore, trace: traceStore };
 
 const KINDS: { kind: Pou["kind"]; title: string }[] = [
   { kind: "program", title: "Programs" },
@@ -44,24 +58,34 @@ export const formatTime = (iso: string | null | undefined): string => {
   return Number.isNaN(date.getTime()) ? iso : date.toLocaleString();
 };
 
-/** "New POU": name, kind and language; the POU joins the working copy (saved with the project). */
-function NewPou() {
-  const addPou = useWorkspace((s) => s.addPou);
+/**
+ * A "New ..." button that opens a small form: a name (and `fields`); `create` adds the item to the working
+ * copy and returns the reason it refused the name, or null (the form closes).
+ */
+function NewItemForm({
+  title,
+  nameLabel,
+  create,
+  children,
+}: {
+  title: string;
+  nameLabel: string;
+  create(name: string): string | null;
+  children?: ReactNode;
+}) {
   const [open, setOpen] = useState(false);
   const [name, setName] = useState("");
-  const [kind, setKind] = useState<Pou["kind"]>("program");
-  const [language, setLanguage] = useState<Pou["language"]>("ld");
   const [error, setError] = useState<string | null>(null);
   if (!open) {
     return (
       <button type="button" className="new-pou-button" onClick={() => setOpen(true)}>
-        New POU
+        {title}
       </button>
     );
   }
   const submit = (e: FormEvent) => {
     e.preventDefault();
-    const problem = addPou(name, kind, language);
+    const problem = create(name);
     setError(problem);
     if (!problem) {
       setOpen(false);
@@ -69,15 +93,36 @@ function NewPou() {
     }
   };
   return (
-    <form className="new-pou" aria-label="New POU" onSubmit={submit}>
+    <form className="new-pou" aria-label={title} onSubmit={submit}>
       <input
-        aria-label="POU name"
+        aria-label={nameLabel}
         autoFocus
         value={name}
         onChange={(e) => setName(e.target.value)}
         placeholder="name"
         spellCheck={false}
       />
+      {children}
+      <button type="submit">Create</button>
+      <button type="button" onClick={() => setOpen(false)}>
+        Cancel
+      </button>
+      {error ? (
+        <p className="new-pou-error" role="alert">
+          {error}
+        </p>
+      ) : null}
+    </form>
+  );
+}
+
+/** "New POU": name, kind and language; the POU joins the working copy (saved with the project). */
+function NewPou() {
+  const addPou = useWorkspace((s) => s.addPou);
+  const [kind, setKind] = useState<Pou["kind"]>("program");
+  const [language, setLanguage] = useState<Pou["language"]>("ld");
+  return (
+    <NewItemForm title="New POU" nameLabel="POU name" create={(name) => addPou(name, kind, language)}>
       <select aria-label="POU kind" value={kind} onChange={(e) => setKind(e.target.value as Pou["kind"])}>
         {KINDS.map((k) => (
           <option key={k.kind} value={k.kind}>
@@ -96,16 +141,63 @@ function NewPou() {
           </option>
         ))}
       </select>
-      <button type="submit">Create</button>
-      <button type="button" onClick={() => setOpen(false)}>
-        Cancel
-      </button>
-      {error ? (
-        <p className="new-pou-error" role="alert">
-          {error}
-        </p>
-      ) : null}
-    </form>
+    </NewItemForm>
+  );
+}
+
+/** "New test file": a name; the file joins the working copy with a first test and opens. */
+function NewTestFile() {
+  const addTestFile = useWorkspace((s) => s.addTestFile);
+  return <NewItemForm title="New test file" nameLabel="Test file name" create={addTestFile} />;
+}
+
+const NO_TESTS: readonly TestFile[] = [];
+
+/** The test files (tests/<name>.st) of the working copy, each with its outcome of the last run. */
+function TestFilesTree() {
+  const tests = useWorkspace((s) => s.project?.tests ?? NO_TESTS);
+  const changed = useWorkspace((s) => s.changed);
+  const active = useWorkspace((s) => s.active);
+  const openPou = useWorkspace((s) => s.openPou);
+  const results = useTests((s) => s.results);
+  return (
+    <section>
+      <h3>Tests</h3>
+      {tests.length ? (
+        <ul>
+          {tests.map((t) => {
+            const path = testPath(t.name);
+            const mine = Object.values(results).filter((r) => r.file === path);
+            const failed = mine.filter((r) => r.outcome === "failed").length;
+            return (
+              <li key={t.name}>
+                <button
+                  type="button"
+                  className="tree-item"
+                  aria-current={active === path ? "true" : undefined}
+                  onClick={() => openPou(path)}
+                >
+                  <span className="tree-name">{path}</span>
+                  {mine.length ? (
+                    <span className={`test-badge${failed ? " test-badge-failed" : ""}`}>
+                      {failed ? `${failed} failed` : "passed"}
+                    </span>
+                  ) : null}
+                  {changed.includes(path) ? (
+                    <span className="unsaved" aria-label="unsaved changes">
+                      ●
+                    </span>
+                  ) : null}
+                </button>
+              </li>
+            );
+          })}
+        </ul>
+      ) : (
+        <p className="tree-empty">none</p>
+      )}
+      <NewTestFile />
+    </section>
   );
 }
 
@@ -181,6 +273,7 @@ function ProjectTree() {
           <p className="tree-empty">none (the default task runs every program)</p>
         )}
       </section>
+      <TestFilesTree />
     </nav>
   );
 }
@@ -214,8 +307,6 @@ function Tabs() {
 }
 
 const NO_DIAGNOSTICS: Diagnostic[] = [];
-/** The app's keys in the editor's shortcut help. */
-const APP_KEYS = [...SIMULATION_KEYS, ...DEBUG_KEYS];
 
 /** A POU by an IEC name in any case (the simulation reports halts with the compiled spelling). */
 const pouNamed = (project: Project | null, name: string) =>
@@ -268,9 +359,14 @@ function OnlineActions({ pou }: { pou: Pou }) {
 function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
   const name = pou.name;
   const setLdHistory = useWorkspace((s) => s.setLdHistory);
-  const { library, symbols, diagnostics, focus, declare } = useDiagramPou(name);
-  const live = useLdOnline(pou, history.present, symbols);
-  const debugging = useLdDebugging(name, history.present);
+  const { library, symbols, symbolsLoaded, diagnostics, focus, declare } = useDiagramPou(name);
+  const live = useLdOnline(pou, history.present, symbolsLoaded ? symbols : null, library);
+  const stepping = useLdDebugging(name, history.present);
+  const covered = useTests((s) => coverageOf(s.coverage, name));
+  const debugging = useMemo(
+    () => (covered ? { ...stepping, marks: { ...stepping.marks, coverage: coverageMarks(covered) } } : stepping),
+    [stepping, covered],
+  );
   return (
     <LdEditor
       key={name}
@@ -286,7 +382,6 @@ function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
       onlineActions={live.actions}
       onVisibleChange={live.onVisibleChange}
       focus={focus}
-      extraShortcuts={APP_KEYS}
       debugging={debugging}
     />
   );
@@ -312,6 +407,7 @@ function StPouView({ pou }: { pou: Pou }) {
     [allBreakpoints, upper],
   );
   const at = useOnline((s) => (s.monitor.state === "halted" ? s.monitor.at : null));
+  const covered = useTests((s) => coverageOf(s.coverage, pou.name));
   const debug = {
     breakpoints: lines,
     halted: at && same(at.pou) && at.line != null ? at.line : null,
@@ -348,6 +444,7 @@ function StPouView({ pou }: { pou: Pou }) {
           label={`${pou.name} body`}
           debug={debug}
           online={online.view}
+          coverage={coverageLines(covered)}
         />
       </div>
       {online.overlay}
@@ -355,7 +452,47 @@ function StPouView({ pou }: { pou: Pou }) {
   );
 }
 
-type PouMode = "body" | "declarations" | "st";
+/** A test file in the ST editor: live diagnostics, completions, Run this file, jumps from the Tests panel. */
+function TestFileView({ path }: { path: string }) {
+  const project = useWorkspace((s) => s.project);
+  const test = useWorkspace((s) => testOf(s.project, path));
+  const setTestText = useWorkspace((s) => s.setTestText);
+  const diagnostics = useTestCheck(project, path);
+  const completions = useTestCompletions(project);
+  const focus = usePanels((s) => (s.focus?.pou === path && s.focus.line != null ? s.focus : null));
+  const running = useTests((s) => s.running !== null);
+  if (!test || !project) return <p className="placeholder">{path} is no longer in this project.</p>;
+  return (
+    <div className="pou-view test-file-view">
+      <div className="pou-modes">
+        <button
+          type="button"
+          disabled={running}
+          onClick={() => {
+            panelsStore.getState().show("tests");
+            void testsStore.getState().run(project, { file: path });
+          }}
+        >
+          Run this file
+        </button>
+      </div>
+      <div style={{ flex: "1 1 auto", minHeight: "10rem", overflow: "hidden", height: "100%" }}>
+        <StEditor
+          text={test.text ?? ""}
+          onChange={(text) => setTestText(path, text)}
+          file={path}
+          diagnostics={diagnostics}
+          completions={completions}
+          readOnly={null}
+          label={path}
+          focusLine={focus ? { line: focus.line!, seq: focus.seq } : null}
+        />
+      </div>
+    </div>
+  );
+}
+
+type PouMode = "body" | "declarations" | "variables" | "st";
 
 /** Declarations of one POU with the types to offer and the problems of its declaration text. */
 function PouDeclarations({
@@ -412,14 +549,17 @@ function PouView({ name }: { name: string }) {
   const focus = usePanels((s) => (s.focus?.pou.toUpperCase() === name.toUpperCase() ? s.focus : null));
   const [mode, setMode] = useState<PouMode>("body");
   const phase = useOnline((s) => s.phase);
-  // A diagnostic clicked for this POU shows the part it is in.
-  useEffect(() => {
+  // A diagnostic clicked for this POU shows the part it is in (as the request arrives, while rendering).
+  const [focusSeen, setFocusSeen] = useState(focus);
+  if (focus !== focusSeen) {
+    setFocusSeen(focus);
     if (focus) setMode(focus.part === "declarations" ? "declarations" : "body");
-  }, [focus]);
+  }
   if (!pou || !project) return <p className="placeholder">{name} is no longer in this project.</p>;
   const modes: { id: PouMode; label: string }[] = [
     { id: "body", label: pou.language === "st" ? "Body" : "Diagram" },
     { id: "declarations", label: "Declarations" },
+    { id: "variables", label: "Variables" },
     ...(pou.language !== "st" ? [{ id: "st" as const, label: "View as ST" }] : []),
   ];
   let content;
@@ -432,6 +572,8 @@ function PouView({ name }: { name: string }) {
         focus={focus?.part === "declarations" && focus.line != null ? { line: focus.line, seq: focus.seq } : null}
       />
     );
+  } else if (mode === "variables") {
+    content = <VariablesView pou={pou} instancePicker={<InstancePicker pou={pou.name} />} />;
   } else if (mode === "st") {
     content = (
       <StView
@@ -454,6 +596,14 @@ function PouView({ name }: { name: string }) {
       </p>
     );
   }
+  const area =
+    mode === "declarations"
+      ? `The declarations of ${name}`
+      : mode === "variables"
+        ? `The variables of ${name}`
+        : mode === "st"
+          ? `The ST view of ${name}`
+          : `The ${LANGUAGE[pou.language]} editor of ${name}`;
   return (
     <div className="pou-view">
       <div className="pou-modes" role="tablist" aria-label={`${name} views`}>
@@ -463,7 +613,9 @@ function PouView({ name }: { name: string }) {
           </button>
         ))}
       </div>
-      {content}
+      <ViewBoundary key={mode} name={area} onReload={() => workspaceStore.getState().refreshPou(name)}>
+        {content}
+      </ViewBoundary>
     </div>
   );
 }
@@ -514,6 +666,7 @@ export function WorkspaceView() {
   const project = useWorkspace((s) => s.project);
   const revision = useWorkspace((s) => s.revision);
   const panelsHeight = usePanels((s) => s.height);
+  const [help, setHelp] = useState(false);
 
   // A save changes the project's POU count, revision and time: the project list shows them.
   useEffect(() => {
@@ -551,19 +704,27 @@ export function WorkspaceView() {
   useEffect(() => {
     void onlineStore.getState().goOffline();
     panelsStore.getState().clear();
+    testsStore.getState().clear();
     debugStore.getState().open(name);
   }, [name]);
 
+  // Once it has loaded, the project's session comes back (watch list, trace setup, tabs, its running
+  // simulation) and is kept from then on.
+  const ready = status === "ready";
   useEffect(() => {
-    const onKey = (e: KeyboardEvent) => {
-      if ((e.ctrlKey || e.metaKey) && e.key.toLowerCase() === "s") {
-        e.preventDefault();
-        void workspaceStore.getState().save();
-      }
+    if (!ready || !name) return;
+    let kept: (() => void) | null = null;
+    let current = true;
+    void restoreSession(name, SESSION_STORES, localStorage).finally(() => {
+      if (current) kept = keepSession(name, SESSION_STORES, localStorage);
+    });
+    return () => {
+      current = false;
+      kept?.();
     };
-    window.addEventListener("keydown", onKey);
-    return () => window.removeEventListener("keydown", onKey);
-  }, []);
+  }, [name, ready]);
+
+  useAppKeys();
 
   if (status === "loading" || status === "idle") return <p className="placeholder">Opening {name}…</p>;
   if (status === "error") {
@@ -588,7 +749,7 @@ export function WorkspaceView() {
           type="button"
           onClick={() => void save()}
           disabled={saving || changed.length === 0}
-          title="Save (Ctrl+S)"
+          title={`Save (${keysOf("app", "save")})`}
         >
           Save
         </button>
@@ -605,25 +766,47 @@ export function WorkspaceView() {
             Save failed: {saveError}
           </span>
         ) : null}
-        {name ? <ExportMenu project={name} pou={active} unsaved={changed.length > 0} /> : null}
+        {name ? (
+          <ExportMenu project={name} pou={active && !isTestPath(active) ? active : null} unsaved={changed.length > 0} />
+        ) : null}
+        <button type="button" aria-expanded={help} onClick={() => setHelp((h) => !h)}>
+          Keyboard shortcuts
+        </button>
+        {help ? <ShortcutHelp scopes={["app", "ld", "fbd", "st"]} onClose={() => setHelp(false)} /> : null}
         <ImportPlcopen
           onStored={() => void appStore.getState().loadProjects()}
           onOpen={(imported) => appStore.getState().selectProject(imported)}
         />
       </div>
-      <SimulationBar />
-      <ProjectTree />
+      <ViewBoundary name="The simulation toolbar" gridArea="sim">
+        <SimulationBar />
+      </ViewBoundary>
+      <ViewBoundary name="The project tree" gridArea="tree">
+        <ProjectTree />
+      </ViewBoundary>
       <div className="editor-area">
-        <DebugBar networksOf={networksOf} reveal={revealPlace} />
-        <Tabs />
+        <ViewBoundary name="The debugging bar">
+          <DebugBar networksOf={networksOf} reveal={revealPlace} />
+        </ViewBoundary>
+        <ViewBoundary name="The tabs">
+          <Tabs />
+        </ViewBoundary>
         {active ? (
-          <PouView key={active} name={active} />
+          isTestPath(active) ? (
+            <TestFileView key={active} path={active} />
+          ) : (
+            <PouView key={active} name={active} />
+          )
         ) : (
           <p className="placeholder">Open a POU from the project tree.</p>
         )}
       </div>
-      <BottomPanels onReveal={reveal} pathOfOperand={pathOfOperand} />
-      <ConflictDialog />
+      <ViewBoundary name="The panels" gridArea="panels">
+        <BottomPanels onReveal={reveal} pathOfOperand={pathOfOperand} />
+      </ViewBoundary>
+      <ViewBoundary name="The save conflict dialog">
+        <ConflictDialog />
+      </ViewBoundary>
     </div>
   );
 }

@@ -8,6 +8,7 @@ import { deleteElements } from "../ld/ops";
 import { addNetwork } from "../fbd/ops";
 import { loadDraft, saveDraft } from "./drafts";
 import { createWorkspaceStore } from "./store";
+import { MemoryStorage } from "../test/memoryStorage";
 
 const project: Project = {
   name: "demo",
@@ -32,29 +33,6 @@ async function opened(api = fakeApi(), storage: Storage = new MemoryStorage()) {
   const store = createWorkspaceStore(api, storage);
   await store.getState().open("demo");
   return { store, api, storage };
-}
-
-/** A Storage that is not shared with other tests. */
-class MemoryStorage implements Storage {
-  private data = new Map<string, string>();
-  get length() {
-    return this.data.size;
-  }
-  clear() {
-    this.data.clear();
-  }
-  getItem(key: string) {
-    return this.data.get(key) ?? null;
-  }
-  key(index: number) {
-    return [...this.data.keys()][index] ?? null;
-  }
-  removeItem(key: string) {
-    this.data.delete(key);
-  }
-  setItem(key: string, value: string) {
-    this.data.set(key, value);
-  }
 }
 
 function editMain(store: Awaited<ReturnType<typeof opened>>["store"]) {

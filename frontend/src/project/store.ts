@@ -1,10 +1,11 @@
-// The open project (zustand): the working copy, open POU tabs with their LD undo histories,
-// library and symbols for the editors, drafts in localStorage, and saving with conflict handling.
+// The open project (zustand): the working copy, open POU tabs with their LD undo histories (and tabs
+// of test files, named by their path tests/<name>.st), library and symbols for the editors, drafts in
+// localStorage, and saving with conflict handling.
 import { useStore } from "zustand";
 import { createStore, type StoreApi } from "zustand/vanilla";
 import { ApiError, projectApi, SaveConflictError, type ProjectApi } from "../api/client";
 import type { ConflictDetail, Diagnostic, LibraryEntry, SymbolInfo, SymbolTable } from "../generated/api";
-import type { FbdBody, LdBody, Pou, Project } from "../generated/project";
+import type { FbdBody, LdBody, Pou, Project, TestFile } from "../generated/project";
 import { historyOf, type History } from "../ld/history";
 import type { VariableDeclaration } from "../ld/editor/declare";
 import { addDeclaration } from "./declarations";
@@ -18,7 +19,7 @@ export interface WorkspaceData {
   revision: string | null;
   modified: string | null;
   project: Project | null;
-  /** POUs with unsaved changes. */
+  /** POUs (and test files, by path) with unsaved changes. */
   changed: string[];
   /** The working copy came from a draft left by an earlier session. */
   restoredAt: string | null;
@@ -28,6 +29,8 @@ export interface WorkspaceData {
   fbdHistories: Record<string, History<FbdBody>>;
   library: LibraryEntry[];
   symbols: Record<string, SymbolTable>;
+  /** POUs the saved project has (the server knows symbols only of those), upper case. */
+  savedPous: string[];
   saving: boolean;
   saveError: string | null;
   conflict: ConflictDetail | null;
@@ -46,11 +49,17 @@ export interface WorkspaceActions {
   setStBody(pou: string, text: string): void;
   /** Adds a new, empty POU to the working copy and opens it; an error message when the name is refused. */
   addPou(name: string, kind: Pou["kind"], language: Pou["language"]): string | null;
+  /** The new text of a test file (by path, tests/<name>.st). */
+  setTestText(path: string, text: string): void;
+  /** Adds a test file with a first test to the working copy and opens it; an error message when refused. */
+  addTestFile(name: string): string | null;
   /** Saves the working copy; `overwrite` saves over the revision a conflict reported. */
   save(overwrite?: boolean): Promise<void>;
   /** Drops the working copy and loads the saved project. */
   reload(): Promise<void>;
   dismissConflict(): void;
+  /** Fetches a POU's symbols and the library again (a view of it is reloaded after a failure). */
+  refreshPou(pou: string): void;
 }
 
 export type WorkspaceState = WorkspaceData & WorkspaceActions;
@@ -70,6 +79,7 @@ export const emptyWorkspace: WorkspaceData = {
   fbdHistories: {},
   library: [],
   symbols: {},
+  savedPous: [],
   saving: false,
   saveError: null,
   conflict: null,
@@ -77,8 +87,23 @@ export const emptyWorkspace: WorkspaceData = {
 
 const IDENTIFIER = /^[A-Za-z_][A-Za-z0-9_]{0,63}$/;
 const message = (err: unknown) => (err instanceof Error ? err.message : String(err));
+const pouNames = (project: Project): string[] => (project.pous ?? []).map((p) => p.name.toUpperCase());
 export const pouOf = (project: Project | null, name: string): Pou | undefined =>
   project?.pous?.find((p) => p.name === name);
+
+/** Test files are shown and stored as tests/<name>.st; a tab of that name is a test file, never a POU. */
+export const testPath = (name: string) => `tests/${name}.st`;
+export const isTestPath = (tab: string) => tab.startsWith("tests/");
+export const testOf = (project: Project | null, path: string): TestFile | undefined =>
+  project?.tests?.find((t) => testPath(t.name) === path);
+const TEST_NAME = /^[A-Za-z0-9][A-Za-z0-9_-]{0,63}$/;
+
+/** What a new test file starts with (docs/testing.md). */
+export const NEW_TEST_TEXT = `TEST 'first test'
+  RUN_SCANS(1);
+  ASSERT_TRUE(TRUE, 'replace with what the program must do');
+END_TEST
+`;
 const isDiagramBody = (body: Pou["body"]): body is LdBody | FbdBody =>
   typeof body === "object" && body !== null && "networks" in body;
 export const ldBodyOf = (pou: Pou): LdBody => (isDiagramBody(pou.body) ? (pou.body as LdBody) : { networks: [] });
@@ -104,11 +129,18 @@ export function createWorkspaceStore(
 ): StoreApi<WorkspaceState> {
   let openCall = 0;
   return createStore<WorkspaceState>()((set, get) => {
-    const replacePous = (pou: string, update: (pous: Pou[]) => Pou[]) => {
+    const replacePous = (pou: string, update: (pous: Pou[]) => Pou[]) =>
+      replaceProject(pou, (project) => ({ ...project, pous: update(project.pous ?? []) }));
+
+    const replaceTests = (path: string, update: (tests: TestFile[]) => TestFile[]) =>
+      replaceProject(path, (project) => ({ ...project, tests: update(project.tests ?? []) }));
+
+    /** A change of one POU or test file (`item`): marks it unsaved and keeps a draft. */
+    const replaceProject = (item: string, update: (project: Project) => Project) => {
       const { project, changed } = get();
       if (!project) return;
-      const next: Project = { ...project, pous: update(project.pous ?? []) };
-      const nextChanged = changed.includes(pou) ? changed : [...changed, pou];
+      const next: Project = update(project);
+      const nextChanged = changed.includes(item) ? changed : [...changed, item];
       set({ project: next, changed: nextChanged });
       const { revision, modified } = get();
       saveDraft(
@@ -126,9 +158,10 @@ export function createWorkspaceStore(
     const replacePou = (pou: string, update: (p: Pou) => Pou) =>
       replacePous(pou, (pous) => pous.map((p) => (p.name === pou ? update(p) : p)));
 
+    /** The symbols of a saved POU (a new one has none on the server until the project is saved). */
     const loadSymbols = (pou: string) => {
       const name = get().name;
-      if (!name) return;
+      if (!name || !get().savedPous.includes(pou.toUpperCase())) return;
       api.getSymbols(name, pou).then(
         (table) => {
           if (get().name === name) set({ symbols: { ...get().symbols, [pou]: table } });
@@ -156,6 +189,7 @@ export function createWorkspaceStore(
         const draft = useDraft ? loadDraft(name, storage) : null;
         set({
           status: "ready",
+          savedPous: pouNames(doc.project),
           revision: draft?.base_revision ?? doc.revision,
           modified: draft?.base_modified ?? doc.modified,
           project: draft?.project ?? doc.project,
@@ -175,6 +209,10 @@ export function createWorkspaceStore(
 
       openPou(pou) {
         const { tabs, project, histories } = get();
+        if (isTestPath(pou)) {
+          if (testOf(project, pou)) set({ active: pou, tabs: tabs.includes(pou) ? tabs : [...tabs, pou] });
+          return;
+        }
         const found = pouOf(project, pou);
         if (!found) return;
         const patch: Partial<WorkspaceData> = { active: pou, tabs: tabs.includes(pou) ? tabs : [...tabs, pou] };
@@ -248,6 +286,22 @@ export function createWorkspaceStore(
         return null;
       },
 
+      setTestText(path, text) {
+        if (testOf(get().project, path)?.text === text) return;
+        replaceTests(path, (tests) => tests.map((t) => (testPath(t.name) === path ? { ...t, text } : t)));
+      },
+
+      addTestFile(text) {
+        const name = text.trim();
+        if (!TEST_NAME.test(name))
+          return `${name || "An empty name"} cannot name a test file (letters, digits, _ and -, starting with a letter or digit).`;
+        if (get().project?.tests?.some((t) => t.name.toLowerCase() === name.toLowerCase()))
+          return `There is already a test file called ${name}.`;
+        replaceTests(testPath(name), (tests) => [...tests, { name, text: NEW_TEST_TEXT }]);
+        get().openPou(testPath(name));
+        return null;
+      },
+
       async save(overwrite = false) {
         const { name, project, revision, conflict } = get();
         if (!name || !project || !revision) return;
@@ -260,6 +314,7 @@ export function createWorkspaceStore(
           );
           removeDraft(name, storage);
           set({
+            savedPous: pouNames(project),
             saving: false,
             revision: result.revision,
             modified: result.modified,
@@ -267,7 +322,7 @@ export function createWorkspaceStore(
             restoredAt: null,
             conflict: null,
           });
-          for (const pou of get().tabs) loadSymbols(pou);
+          for (const pou of get().tabs) if (!isTestPath(pou)) loadSymbols(pou);
           loadLibrary(name, openCall);
         } catch (err) {
           if (err instanceof SaveConflictError) set({ saving: false, conflict: err.conflict });
@@ -285,6 +340,13 @@ export function createWorkspaceStore(
       },
 
       dismissConflict: () => set({ conflict: null }),
+
+      refreshPou(pou) {
+        const { name } = get();
+        if (!name) return;
+        loadSymbols(pou);
+        loadLibrary(name, openCall);
+      },
     };
   });
 }

@@ -12,6 +12,8 @@ const NO_DIAGNOSTICS: Diagnostic[] = [];
 export interface DiagramPou {
   library: LibraryEntry[];
   symbols: SymbolInfo[];
+  /** The symbol table has arrived: operands can be told apart as the POU's variables or globals. */
+  symbolsLoaded: boolean;
   diagnostics: Diagnostic[];
   focus: Focus | null;
   declare(declaration: VariableDeclaration): void;
@@ -25,5 +27,12 @@ export function useDiagramPou(name: string): DiagramPou {
   const focus = usePanels((s) => (s.focus?.pou.toUpperCase() === name.toUpperCase() ? s.focus : null));
   const symbols = useMemo(() => symbolsOf(table), [table]);
   const diagnostics = useMemo(() => diagramDiagnostics(table, checked, name), [table, checked, name]);
-  return { library, symbols, diagnostics, focus, declare: (declaration) => declareIn(name, declaration) };
+  return {
+    library,
+    symbols,
+    symbolsLoaded: table !== undefined,
+    diagnostics,
+    focus,
+    declare: (declaration) => declareIn(name, declaration),
+  };
 }

@@ -3,7 +3,7 @@
 // underlines, and online the values of variables inline. The text is controlled: every edit goes
 // to onChange, and a new `text` from outside (reload, draft restore) replaces the doc.
 import { autocompletion, closeBrackets, closeBracketsKeymap, completionKeymap } from "@codemirror/autocomplete";
-import { defaultKeymap, history, historyKeymap, indentWithTab } from "@codemirror/commands";
+import { defaultKeymap, history, historyKeymap } from "@codemirror/commands";
 import {
   bracketMatching,
   codeFolding,
@@ -16,13 +16,15 @@ import {
 import { lintGutter, setDiagnostics } from "@codemirror/lint";
 import { Compartment, EditorState } from "@codemirror/state";
 import { EditorView, highlightActiveLine, keymap, lineNumbers } from "@codemirror/view";
-import { useEffect, useRef } from "react";
+import { useEffect, useLayoutEffect, useRef } from "react";
 import type { Diagnostic } from "../generated/api";
 import { stBlocks } from "./blocks";
 import { setBreakpointLines, setHaltedLine, stDebugging } from "./breakpoints";
 import { stCompletionSource, type StCompletions } from "./completion";
+import { setCoverageLines, stCoverage } from "./coverage";
 import { setInlineMarks, stInlineValues, type InlineMark, type StOnlineView } from "./inlineValues";
 import { stLanguage } from "./language";
+import { stKeys } from "./keys";
 import { lintDiagnostics } from "./lint";
 
 export interface StEditorProps {
@@ -39,9 +41,14 @@ export interface StEditorProps {
   debug?: { breakpoints: readonly number[]; halted: number | null; onToggle(line: number): void };
   /** Online (the body only): values shown after their variables (none when hidden), hover and right-click. */
   online?: StOnlineView & { marks: readonly InlineMark[] };
+  /** Lines the last test run with coverage never executed (tinted). */
+  coverage?: readonly number[];
+  /** A line to show and put the cursor on (a test failure or diagnostic was clicked); `seq` repeats a jump. */
+  focusLine?: { line: number; seq: number } | null;
 }
 
 const NO_MARKS: readonly InlineMark[] = [];
+const NO_LINES: readonly number[] = [];
 
 export function StEditor({
   text,
@@ -53,14 +60,22 @@ export function StEditor({
   label,
   debug,
   online,
+  coverage = NO_LINES,
+  focusLine,
 }: StEditorProps) {
   const host = useRef<HTMLDivElement>(null);
   const view = useRef<EditorView | null>(null);
+  // What the editor's callbacks read: the props of the last render (kept after rendering, not during it).
   const latest = useRef({ onChange, completions, debug, online });
-  latest.current = { onChange, completions, debug, online };
+  useLayoutEffect(() => {
+    latest.current = { onChange, completions, debug, online };
+  });
   const editable = useRef(new Compartment());
+  /** The props the view is created with; later ones arrive through the effects below. */
+  const initial = useRef({ text, debugging: debug !== undefined, readOnly, label });
 
   useEffect(() => {
+    const { text, debugging, readOnly, label } = initial.current;
     const v = new EditorView({
       parent: host.current!,
       state: EditorState.create({
@@ -79,15 +94,16 @@ export function StEditor({
           syntaxHighlighting(defaultHighlightStyle),
           autocompletion({ override: [stCompletionSource(() => latest.current.completions)] }),
           lintGutter(),
-          debug ? stDebugging((line) => latest.current.debug?.onToggle(line)) : [],
+          debugging ? stDebugging((line) => latest.current.debug?.onToggle(line)) : [],
           stInlineValues(() => latest.current.online),
+          stCoverage,
           keymap.of([
+            ...stKeys(debugging ? (line) => latest.current.debug?.onToggle(line) : null),
             ...closeBracketsKeymap,
             ...defaultKeymap,
             ...historyKeymap,
             ...foldKeymap,
             ...completionKeymap,
-            indentWithTab,
           ]),
           editable.current.of(EditorState.readOnly.of(readOnly !== null)),
           EditorView.contentAttributes.of({ "aria-label": label }),
@@ -106,7 +122,6 @@ export function StEditor({
       v.destroy();
       view.current = null;
     };
-    // The view is created once; later props arrive through the effects below.
   }, []);
 
   useEffect(() => {
@@ -134,6 +149,21 @@ export function StEditor({
   useEffect(() => {
     view.current?.dispatch({ effects: setInlineMarks.of(marks) });
   }, [marks]);
+
+  useEffect(() => {
+    view.current?.dispatch({ effects: setCoverageLines.of(coverage) });
+  }, [coverage]);
+
+  const focusSeq = focusLine?.seq;
+  useEffect(() => {
+    const v = view.current;
+    if (!v || !focusLine || focusLine.line < 1 || focusLine.line > v.state.doc.lines) return;
+    const at = v.state.doc.line(focusLine.line).from;
+    v.dispatch({ selection: { anchor: at }, effects: EditorView.scrollIntoView(at, { y: "center" }) });
+    v.focus();
+    // Only a new request moves the cursor (seq), not a re-render with the same one.
+    // eslint-disable-next-line react-hooks/exhaustive-deps
+  }, [focusSeq]);
 
   useEffect(() => {
     view.current?.dispatch({ effects: editable.current.reconfigure(EditorState.readOnly.of(readOnly !== null)) });

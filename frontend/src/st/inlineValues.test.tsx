@@ -2,7 +2,16 @@ import { EditorView } from "@codemirror/view";
 import { act, fireEvent, render } from "@testing-library/react";
 import { describe, expect, it, vi } from "vitest";
 import type { LibraryEntry, SymbolInfo } from "../generated/api";
-import { describe as describeOccurrence, inlineMarks, variableOccurrences, type Occurrence } from "./inlineValues";
+import { emptyMonitor } from "../online/monitor";
+import type { Value } from "../online/protocol";
+import {
+  concretePath,
+  describe as describeOccurrence,
+  inlineMarks,
+  variableOccurrences,
+  type InlineMark,
+  type Occurrence,
+} from "./inlineValues";
 import { structTypes, type Scope } from "./members";
 import { StEditor } from "./StEditor";
 
@@ -51,7 +60,7 @@ END_IF;`;
 const at = (o: Occurrence) => `${o.text}@${o.from}-${o.to} ${o.path} ${o.type}`;
 
 describe("variable occurrences (issue 9: ST online values inline)", () => {
-  it("finds each variable with a value, as a path of the instance; skips FBs, arrays, formal names, comments and strings", () => {
+  it("finds each variable with a value, as a path of the instance; skips FBs, whole arrays, formal names, comments and strings", () => {
     const found = variableOccurrences(BODY, scope, "MAIN");
     const offset = (needle: string, nth = 0) =>
       BODY.split(needle)
@@ -64,7 +73,8 @@ describe("variable occurrences (issue 9: ST online values inline)", () => {
       `Count@${offset("Count", 0)}-${offset("Count", 0) + 5} MAIN.COUNT INT`,
       `Count@${offset("Count", 1)}-${offset("Count", 1) + 5} MAIN.COUNT INT`,
       `p.x@${offset("p.x")}-${offset("p.x") + 3} MAIN.P.X INT`,
-      // the third "Count" is in a comment; the fourth is an array index
+      // the third "Count" is in a comment; the fourth is an array index: the element has a value (ON-12), so has Count
+      `arr[Count]@${offset("arr")}-${offset("arr") + 10} MAIN.ARR INT`,
       `Count@${offset("Count", 3)}-${offset("Count", 3) + 5} MAIN.COUNT INT`,
     ]);
   });
@@ -77,27 +87,87 @@ describe("variable occurrences (issue 9: ST online values inline)", () => {
   });
 });
 
+const monitorOf = (values: Record<string, Value>, forced: string[] = []) => ({
+  ...emptyMonitor,
+  values,
+  forced: new Set(forced),
+});
+
 describe("inline value marks", () => {
   const occurrences = variableOccurrences("IF Start THEN Count := Count + 1; END_IF; x := T1.ET;", scope, "MAIN");
+  const text = (marks: InlineMark[]) => marks.map((m) => [m.pos, m.shown.text, m.shown.bool, m.shown.forced]);
 
   it("puts each value after its occurrence, BOOLs as TRUE/FALSE with their state, forced ones marked", () => {
-    const values = { "MAIN.START": true, "MAIN.COUNT": 42 };
-    expect(inlineMarks(occurrences, values, new Set(["MAIN.COUNT"]))).toEqual([
-      { pos: 8, text: "TRUE", bool: true, forced: false },
-      { pos: 19, text: "42", bool: null, forced: true },
-      { pos: 28, text: "42", bool: null, forced: true },
+    const monitor = monitorOf({ "MAIN.START": true, "MAIN.COUNT": 42 }, ["MAIN.COUNT"]);
+    expect(text(inlineMarks(occurrences, monitor))).toEqual([
+      [8, "TRUE", true, false],
+      [19, "42", null, true],
+      [28, "42", null, true],
     ]);
+    expect(inlineMarks(occurrences, monitor, { "MAIN.START": false })[0]!.shown.prepared).toBe("FALSE");
   });
 
   it("shows nothing for paths the monitor has not sent yet", () => {
-    expect(inlineMarks(occurrences, {}, new Set())).toEqual([]);
+    expect(inlineMarks(occurrences, monitorOf({}))).toEqual([]);
   });
 
   it("describes an occurrence with type, value and force on hover", () => {
-    expect(describeOccurrence(occurrences[3]!, { "MAIN.T1.ET": 250 }, new Set(["MAIN.T1.ET"]))).toBe(
+    expect(describeOccurrence(occurrences[3]!, monitorOf({ "MAIN.T1.ET": 250 }, ["MAIN.T1.ET"]))).toBe(
       "T1.ET : TIME = T#250ms (forced)",
     );
-    expect(describeOccurrence(occurrences[0]!, {}, new Set())).toBe("Start : BOOL = …");
+    expect(describeOccurrence(occurrences[0]!, monitorOf({}), { "MAIN.START": true })).toBe("Start : BOOL = …");
+    expect(describeOccurrence(occurrences[0]!, monitorOf({ "MAIN.START": false }), { "MAIN.START": true })).toBe(
+      "Start : BOOL = FALSE, prepared TRUE",
+    );
+  });
+});
+
+describe("array elements inline (ON-12: a[i] shows its value, a[i + 1] none)", () => {
+  const text = "x := arr[Count] + arr[2] + arr[Count + 1] + grid[Count, 0];";
+  const withGrid: Scope = { ...scope, symbols: [...scope.symbols, symbol("grid", "ARRAY [1..2, 0..1] OF REAL")] };
+  const found = variableOccurrences(text, withGrid, "MAIN");
+
+  it("names an element whose indices are variables or numbers; an expression index is left alone", () => {
+    expect(found.filter((o) => o.element).map((o) => [o.text, o.path, o.type])).toEqual([
+      ["arr[Count]", "MAIN.ARR", "INT"],
+      ["arr[2]", "MAIN.ARR", "INT"],
+      ["grid[Count, 0]", "MAIN.GRID", "REAL"],
+    ]);
+  });
+
+  it("picks the element the index names now from the array's value", () => {
+    const monitor = monitorOf({
+      "MAIN.ARR": [10, 20, 30],
+      "MAIN.COUNT": 3,
+      "MAIN.GRID": [
+        [0.5, 1],
+        [2, Math.fround(2.2)],
+      ],
+    });
+    const shown = inlineMarks(found, monitor).map((m) => [text.slice(0, m.pos).split(" ").at(-1), m.shown.text]);
+    expect(shown).toEqual([
+      ["arr[Count]", "30"],
+      ["arr[Count", "3"], // the index variable's own value
+      ["arr[2]", "20"],
+      ["arr[Count", "3"], // in arr[Count + 1] only Count has a value
+      ["grid[Count", "3"],
+    ]); // grid[3, 0] is outside the array: no value
+    expect(
+      concretePath(
+        found.find((o) => o.text === "arr[Count]")!,
+        monitor.values,
+      ),
+    ).toBe("MAIN.ARR[3]");
+    const grid = found.find((o) => o.text === "grid[Count, 0]")!;
+    const later = monitorOf({ ...monitor.values, "MAIN.COUNT": 2 }, ["MAIN.GRID[2, 1]"]);
+    expect(inlineMarks([grid], later).map((m) => m.shown.text)).toEqual(["2"]);
+    expect(inlineMarks([grid], monitorOf({ ...later.values, "MAIN.COUNT": 2 })).length).toBe(1);
+  });
+
+  it("marks an element forced when its own path is", () => {
+    const monitor = monitorOf({ "MAIN.ARR": [10, 20, 30], "MAIN.COUNT": 1 }, ["MAIN.ARR[1]"]);
+    const element = found.find((o) => o.text === "arr[Count]")!;
+    expect(inlineMarks([element], monitor)[0]!.shown).toMatchObject({ text: "10", forced: true });
   });
 });
 
@@ -106,11 +176,13 @@ describe("StEditor online (issue 9: values inline, right-click commands)", () =>
     const text = "Count := Count + 1;";
     const occurrences = variableOccurrences(text, scope, "MAIN");
     const onMenu = vi.fn();
+    const onPrepare = vi.fn();
     const online = (values: Record<string, number>) => ({
       occurrences,
-      marks: inlineMarks(occurrences, values, new Set<string>()),
+      marks: inlineMarks(occurrences, monitorOf(values)),
       describe: () => "",
       onMenu,
+      onPrepare,
     });
     const props = {
       text,
@@ -131,6 +203,8 @@ describe("StEditor online (issue 9: values inline, right-click commands)", () =>
     view.posAtCoords = () => 11;
     act(() => void fireEvent.contextMenu(view.contentDOM, { clientX: 30, clientY: 5 }));
     expect(onMenu).toHaveBeenCalledWith(occurrences[1], 30, 5);
+    act(() => void fireEvent.dblClick(container.querySelectorAll(".cm-st-value")[0]!));
+    expect(onPrepare).toHaveBeenCalledWith(occurrences[0]); // a double-click on a value prepares one
     rerender(<StEditor {...props} />);
     expect(shown()).toEqual([]);
   });

@@ -1,29 +1,84 @@
 // ST online mode (like CODESYS): every occurrence of a variable with a value (elementary type,
-// reached through FB instances and struct fields) gets its simulation path; the editor shows the
-// monitor's value after it as a widget, describes it on hover and opens the online commands on a
-// right click. Occurrences come from the highlighter's tokens, so comments, strings, keywords,
-// function names and formal parameter names (`IN :=`) are never taken for variables.
+// reached through FB instances and struct fields, and array elements whose index is a variable or a
+// number: `a[i]`, ON-12) gets its simulation path; the editor shows the monitor's value after it as
+// a widget (forced and prepared values marked as everywhere else), describes it on hover, prepares a
+// value on a double-click and opens the online commands on a right click. Occurrences come from the
+// highlighter's tokens, so comments, strings, keywords, function names and formal parameter names
+// (`IN :=`) are never taken for variables. An element with an expression index (`a[i + 1]`) shows none.
 import { StateEffect, StateField, type Extension } from "@codemirror/state";
 import { Decoration, EditorView, hoverTooltip, WidgetType, type DecorationSet } from "@codemirror/view";
 import { operandPath } from "../online/ldBinding";
-import { formatValue } from "../online/monitor";
+import { pathKey, type MonitorState } from "../online/monitor";
 import type { Value } from "../online/protocol";
+import { preparedText, shownOf, type Prepared, type ValueShown } from "../online/shown";
+import { valueTagClass } from "../online/ValueTag";
+import { formatValue } from "../online/values";
 import { tokenize } from "./language";
 import { membersOf, typeOfChain, type Scope } from "./members";
+
+/** An array element `a[i, 2]`: each index (a variable's path or a number) and the array's lower bounds. */
+export interface ElementAccess {
+  indices: ({ path: string } | { value: number })[];
+  lows: number[];
+}
 
 export interface Occurrence {
   from: number;
   to: number;
-  /** The access as written, e.g. `Timer.Q`. */
+  /** The access as written, e.g. `Timer.Q` or `arr[i]`. */
   text: string;
-  /** Canonical simulation path (upper case), e.g. `MAIN.TIMER.Q` or `ALARM` (a global, as the server names it). */
+  /**
+   * Canonical simulation path (upper case), e.g. `MAIN.TIMER.Q` or `ALARM` (a global, as the server
+   * names it); for an array element, the array's (the element is picked from its value).
+   */
   path: string;
   type: string;
+  /** Set for an array element: how to pick it. */
+  element?: ElementAccess;
 }
 
 /** A type whose variables have one value to show (not an FB, a struct, an array or a reference). */
 const hasValue = (type: string, scope: Scope) =>
   membersOf(type, scope) === null && !/^\s*(ARRAY|REF_TO|POINTER)\b/i.test(type);
+
+const ARRAY = /^\s*ARRAY\s*\[([^\]]*)\]\s*OF\s+(.+?)\s*$/i;
+
+/** An array type's lower bounds and element type, when its bounds are numbers. */
+function arrayOf(type: string): { lows: number[]; element: string } | null {
+  const match = ARRAY.exec(type);
+  if (!match) return null;
+  const lows = match[1]!.split(",").map((d) => Number(d.split("..")[0]!.trim()));
+  return lows.every(Number.isInteger) ? { lows, element: match[2]! } : null;
+}
+
+type Token = ReturnType<typeof tokenize>[number];
+
+/**
+ * The indices of `[...]` opening at token `open` when each is a variable (with a value) or an
+ * integer, and the token of its `]`; null for an expression index.
+ */
+function plainIndices(
+  tokens: readonly Token[],
+  open: number,
+  scope: Scope,
+  instance: string,
+): { indices: ElementAccess["indices"]; close: number } | null {
+  const indices: ElementAccess["indices"] = [];
+  for (let i = open + 1; ; i += 2) {
+    const t = tokens[i];
+    if (!t) return null;
+    if (t.style === "variableName") {
+      const type = typeOfChain([t.text], scope);
+      const path = type !== null && hasValue(type, scope) ? operandPath(t.text, instance, scope.symbols) : null;
+      if (!path) return null;
+      indices.push({ path });
+    } else if (/^[+-]?\d+$/.test(t.text)) indices.push({ value: Number(t.text) });
+    else return null;
+    const next = tokens[i + 1]?.text;
+    if (next === "]") return { indices, close: i + 1 };
+    if (next !== ",") return null;
+  }
+}
 
 /** Every variable occurrence in `text` with a value, as paths of POU instance `instance`. */
 export function variableOccurrences(text: string, scope: Scope, instance: string): Occurrence[] {
@@ -44,9 +99,16 @@ export function variableOccurrences(text: string, scope: Scope, instance: string
     const next = tokens[end + 1]?.text;
     const formal = depth > 0 && chain.length === 1 && (next === ":=" || next === "=>");
     const type = formal ? null : typeOfChain(chain, scope);
-    const path = type !== null && hasValue(type, scope) ? operandPath(chain.join("."), instance, scope.symbols) : null;
-    if (path && type)
+    const path = type !== null ? operandPath(chain.join("."), instance, scope.symbols) : null;
+    if (path && type && hasValue(type, scope))
       out.push({ from: t.from, to: tokens[end]!.to, text: text.slice(t.from, tokens[end]!.to), path, type });
+    const array = path && type && next === "[" ? arrayOf(type) : null;
+    const index = array ? plainIndices(tokens, end + 1, scope, instance) : null;
+    if (path && array && index && index.indices.length === array.lows.length && tokens[index.close + 1]?.text !== ".") {
+      const to = tokens[index.close]!.to;
+      const element = { indices: index.indices, lows: array.lows };
+      out.push({ from: t.from, to, text: text.slice(t.from, to), path, type: array.element, element });
+    }
     i = end;
   }
   return out;
@@ -55,35 +117,63 @@ export function variableOccurrences(text: string, scope: Scope, instance: string
 export interface InlineMark {
   /** Document offset the value is shown at (the end of the occurrence). */
   pos: number;
-  text: string;
-  /** BOOL values are coloured like LD power flow. */
-  bool: boolean | null;
-  forced: boolean;
+  shown: ValueShown;
 }
 
-/** The values to show: one per occurrence whose path has a value in the monitor. */
+/** The numbers an element's indices stand for now; null while one is unknown. */
+function indexValues(element: ElementAccess, values: MonitorState["values"]): number[] | null {
+  const numbers = element.indices.map((i) => ("value" in i ? i.value : values[i.path]));
+  return numbers.every((n): n is number => typeof n === "number") ? numbers : null;
+}
+
+/** The path of the variable an occurrence names now (`MAIN.ARR[3]` for `arr[i]`); null while an index is unknown. */
+export function concretePath(o: Occurrence, values: MonitorState["values"]): string | null {
+  if (!o.element) return o.path;
+  const numbers = indexValues(o.element, values);
+  return numbers ? `${o.path}[${numbers.join(", ")}]` : null;
+}
+
+/** The value an occurrence has now (an array element picked from its array's value); undefined when unknown. */
+function valueOf(o: Occurrence, values: MonitorState["values"]): Value | undefined {
+  const value = values[o.path];
+  const element = o.element;
+  if (!element) return value;
+  const numbers = indexValues(element, values);
+  if (!numbers) return undefined;
+  let item: Value | undefined = value;
+  numbers.forEach((n, d) => {
+    item = Array.isArray(item) ? (item[n - element.lows[d]!] as Value | undefined) : undefined;
+  });
+  return item === null || typeof item === "object" ? undefined : item;
+}
+
+/** What an occurrence shows now: its value, forced, prepared; null when unknown. */
+export function shownOccurrence(o: Occurrence, monitor: MonitorState, prepared: Prepared = {}): ValueShown | null {
+  const value = valueOf(o, monitor.values);
+  if (value === undefined) return null;
+  const path = pathKey(concretePath(o, monitor.values) ?? o.path);
+  const type = o.element ? o.type : (monitor.types[o.path] ?? o.type);
+  return { ...shownOf(value, type), forced: monitor.forced.has(path), prepared: preparedText(prepared[path], type) };
+}
+
+/** The values to show: one per occurrence whose value the monitor has. */
 export function inlineMarks(
   occurrences: readonly Occurrence[],
-  values: Readonly<Record<string, Value>>,
-  forced: ReadonlySet<string>,
+  monitor: MonitorState,
+  prepared: Prepared = {},
 ): InlineMark[] {
   return occurrences.flatMap((o) => {
-    const value = values[o.path];
-    if (value === undefined) return [];
-    return [
-      {
-        pos: o.to,
-        text: formatValue(value, o.type),
-        bool: typeof value === "boolean" ? value : null,
-        forced: forced.has(o.path),
-      },
-    ];
+    const shown = shownOccurrence(o, monitor, prepared);
+    return shown ? [{ pos: o.to, shown }] : [];
   });
 }
 
-/** What hover says about an occurrence: access, type, value and whether it is forced. */
-export function describe(o: Occurrence, values: Readonly<Record<string, Value>>, forced: ReadonlySet<string>): string {
-  return `${o.text} : ${o.type} = ${formatValue(values[o.path], o.type)}${forced.has(o.path) ? " (forced)" : ""}`;
+/** What hover says about an occurrence: access, type, value, and whether it is forced or has a prepared value. */
+export function describe(o: Occurrence, monitor: MonitorState, prepared: Prepared = {}): string {
+  const shown = shownOccurrence(o, monitor, prepared);
+  const forced = shown?.forced ? " (forced)" : "";
+  const ready = shown && shown.prepared !== null ? `, prepared ${shown.prepared}` : "";
+  return `${o.text} : ${o.type} = ${shown?.text ?? formatValue(undefined)}${forced}${ready}`;
 }
 
 class ValueWidget extends WidgetType {
@@ -91,15 +181,32 @@ class ValueWidget extends WidgetType {
     super();
   }
   override eq(other: ValueWidget) {
-    const [a, b] = [this.mark, other.mark];
-    return a.text === b.text && a.bool === b.bool && a.forced === b.forced;
+    const [a, b] = [this.mark.shown, other.mark.shown];
+    return a.text === b.text && a.bool === b.bool && a.forced === b.forced && a.prepared === b.prepared;
   }
   override toDOM() {
+    const { shown } = this.mark;
     const span = document.createElement("span");
-    const { bool, forced, text } = this.mark;
-    span.className = `cm-st-value${bool === null ? "" : bool ? " cm-st-value-true" : " cm-st-value-false"}${forced ? " cm-st-value-forced" : ""}`;
-    span.textContent = forced ? `${text} F` : text;
-    return span;
+    span.className = `cm-st-value ${valueTagClass(shown)}`;
+    span.dataset.pos = String(this.mark.pos);
+    span.textContent = shown.text;
+    if (shown.forced) {
+      const mark = document.createElement("span");
+      mark.className = "forced-mark";
+      mark.textContent = "F";
+      span.append(mark);
+    }
+    if (shown.prepared === null) return span;
+    const wrap = document.createElement("span");
+    const prepared = document.createElement("span");
+    prepared.className = "prepared-tag";
+    prepared.textContent = `<${shown.prepared}>`;
+    wrap.append(span, prepared);
+    return wrap;
+  }
+  /** Double-clicks and right-clicks on a value reach the editor's handlers (prepare, the menu). */
+  override ignoreEvent() {
+    return false;
   }
 }
 
@@ -125,27 +232,27 @@ export interface StOnlineView {
   occurrences: readonly Occurrence[];
   describe(o: Occurrence): string;
   onMenu(o: Occurrence, x: number, y: number): void;
+  /** A double-click on an occurrence or its value: prepare a value for it (CODESYS). */
+  onPrepare(o: Occurrence): void;
 }
 
 const occurrenceAt = (view: StOnlineView | undefined, pos: number) =>
   view?.occurrences.find((o) => o.from <= pos && pos <= o.to);
 
-/** Values as small tags after their variable; BOOLs in the LD editor's power colours. */
+/** Values as small tags after their variable, in the classes of every other view (styles.css, value-tag). */
 const valueTheme = EditorView.baseTheme({
-  ".cm-st-value": {
-    marginLeft: "2px",
-    padding: "0 3px",
-    borderRadius: "3px",
-    fontSize: "85%",
-    background: "#e8eefc",
-    color: "#1d3f8f",
-    border: "1px solid #b9c8ee",
-  },
-  ".cm-st-value-true": { background: "#d9f5dc", color: "#14692a", borderColor: "#7fcf8f" },
-  ".cm-st-value-false": { background: "#eef0f3", color: "#555d6b", borderColor: "#c9ced6" },
-  ".cm-st-value-forced": { outline: "2px solid #d0312d" },
+  ".cm-st-value": { marginLeft: "2px", fontSize: "85%" },
   ".cm-st-value-tooltip": { padding: "2px 6px", fontFamily: "ui-monospace, monospace" },
 });
+
+/** The occurrence of a mouse event: the one whose value widget was hit, else the one under the pointer. */
+function occurrenceOfEvent(event: MouseEvent, view: EditorView, online: StOnlineView | undefined) {
+  const widget = (event.target as HTMLElement).closest?.(".cm-st-value") as HTMLElement | null;
+  const pos = widget?.dataset.pos
+    ? Number(widget.dataset.pos)
+    : view.posAtCoords({ x: event.clientX, y: event.clientY });
+  return pos === null ? undefined : occurrenceAt(online, pos);
+}
 
 /** The inline value widgets (fed by setInlineMarks), hover and the right-click menu on variables. */
 export function stInlineValues(online: () => StOnlineView | undefined): Extension {
@@ -169,11 +276,17 @@ export function stInlineValues(online: () => StOnlineView | undefined): Extensio
     }),
     EditorView.domEventHandlers({
       contextmenu(event, view) {
-        const pos = view.posAtCoords({ x: event.clientX, y: event.clientY });
-        const o = pos === null ? undefined : occurrenceAt(online(), pos);
+        const o = occurrenceOfEvent(event, view, online());
         if (!o) return false;
         event.preventDefault();
         online()!.onMenu(o, event.clientX, event.clientY);
+        return true;
+      },
+      dblclick(event, view) {
+        const o = occurrenceOfEvent(event, view, online());
+        if (!o) return false;
+        event.preventDefault();
+        online()!.onPrepare(o);
         return true;
       },
     }),

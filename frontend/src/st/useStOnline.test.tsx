@@ -64,7 +64,7 @@ describe("useStOnline (issue 9: ST online values, values of the halt)", () => {
     const write = vi.fn();
     onlineStore.setState({ write }); // the store's own write needs a socket; this one records the call
     const { result } = renderHook(() => useStOnline(counter, BODY, scope));
-    expect(result.current.view?.marks.map((m) => m.text)).toEqual(["TRUE", "3", "3"]);
+    expect(result.current.view?.marks.map((m) => m.shown.text)).toEqual(["TRUE", "3", "3"]);
     expect(result.current.view?.describe(result.current.view.occurrences[1]!)).toBe("Count : INT = 3");
     act(() => result.current.setShowValues(false));
     expect(result.current.view?.marks).toEqual([]);

@@ -1,7 +1,8 @@
 // Connects an ST body to online mode: subscribes the paths of its variable occurrences for the
 // POU's instance (the halted instance while a scan halts in this POU, so values are those of the
-// halt), turns the monitor's values into inline marks and hover text, and offers write / force /
-// release from a right click with the LD editor's menu and value prompt.
+// halt), turns the monitor's values into inline marks and hover text, prepares a value on a
+// double-click (CODESYS) and offers write / force / release from a right click with the LD
+// editor's menu and value prompt. An array element `a[i]` acts on the element `i` names now.
 import { useEffect, useMemo, useState, type ReactNode } from "react";
 import type { Pou } from "../generated/project";
 import { ContextMenu } from "../ld/editor/ContextMenu";
@@ -10,6 +11,7 @@ import { onlineOperandItems, operandCommands } from "../online/operandCommands";
 import { onlineStore, useOnline } from "../online/store";
 import { useShownInstance } from "../online/useLdOnline";
 import {
+  concretePath,
   describe,
   inlineMarks,
   variableOccurrences,
@@ -34,9 +36,10 @@ export interface StOnline {
 export function useStOnline(pou: Pou, body: string, scope: Scope): StOnline {
   const phase = useOnline((s) => s.phase);
   const monitor = useOnline((s) => s.monitor);
+  const prepared = useOnline((s) => s.prepared);
   const [showValues, setShowValues] = useState(true);
   const [menu, setMenu] = useState<{ occurrence: Occurrence; x: number; y: number } | null>(null);
-  const [prompt, setPrompt] = useState<{ occurrence: Occurrence; action: "write" | "force" } | null>(null);
+  const [prompt, setPrompt] = useState<{ occurrence: Occurrence; action: "write" | "force" | "prepare" } | null>(null);
   const live = phase !== "offline";
   const at = monitor.state === "halted" ? monitor.at : null;
   const haltedHere = at?.instance && at.pou.toUpperCase() === pou.name.toUpperCase() ? at.instance.toUpperCase() : null;
@@ -54,14 +57,21 @@ export function useStOnline(pou: Pou, body: string, scope: Scope): StOnline {
   }, [key, live, paths]);
   useEffect(() => () => onlineStore.getState().subscribe(key, null), [key]);
 
+  // An element `a[i]` acts on the element `i` names when the command runs.
   const commands = useMemo(
-    () => operandCommands((text) => occurrences.find((o) => o.text === text)?.path ?? null),
+    () =>
+      operandCommands(
+        (text) => {
+          const o = occurrences.find((c) => c.text === text);
+          return o ? concretePath(o, onlineStore.getState().monitor.values) : null;
+        },
+        (text) => occurrences.find((c) => c.text === text)?.type,
+      ),
     [occurrences],
   );
-  const { values, forced } = monitor;
   const marks = useMemo(
-    () => (showValues ? inlineMarks(occurrences, values, forced) : []),
-    [showValues, occurrences, values, forced],
+    () => (showValues ? inlineMarks(occurrences, monitor, prepared) : []),
+    [showValues, occurrences, monitor, prepared],
   );
   const view = useMemo(
     () =>
@@ -69,11 +79,14 @@ export function useStOnline(pou: Pou, body: string, scope: Scope): StOnline {
         ? {
             occurrences,
             marks,
-            describe: (o: Occurrence) => describe(o, values, forced),
+            describe: (o: Occurrence) => describe(o, monitor, prepared),
             onMenu: (occurrence: Occurrence, x: number, y: number) => setMenu({ occurrence, x, y }),
+            onPrepare: (occurrence: Occurrence) => {
+              if (!commands.prepare(occurrence.text)) setPrompt({ occurrence, action: "prepare" });
+            },
           }
         : undefined,
-    [live, instance, occurrences, marks, values, forced],
+    [live, instance, occurrences, marks, monitor, prepared, commands],
   );
 
   const overlay = (

@@ -4,6 +4,7 @@
 import { useEffect, useMemo, useState } from "react";
 import { ApiError, exportSt } from "../api/client";
 import type { Diagnostic, StExport } from "../generated/api";
+import { downloadText } from "../interchange/download";
 import { placeOf } from "../panels/DiagnosticsPanel";
 import { tokenize } from "./highlight";
 
@@ -39,37 +40,37 @@ export function blocksOf(text: string, sourceMap: StExport["source_map"] = []): 
   return blocks;
 }
 
-function download(name: string, text: string) {
-  const url = URL.createObjectURL(new Blob([text], { type: "text/plain;charset=utf-8" }));
-  const a = document.createElement("a");
-  a.href = url;
-  a.download = `${name}.st`;
-  a.click();
-  URL.revokeObjectURL(url);
-}
+type Outcome = { result: StExport } | { error: { message: string; diagnostics: Diagnostic[] } };
 
 export function StView({ project, pou, unsaved, onRevealNetwork, load = exportSt }: StViewProps) {
-  const [result, setResult] = useState<StExport | null>(null);
-  const [error, setError] = useState<{ message: string; diagnostics: Diagnostic[] } | null>(null);
+  // The outcome of the export asked for `key`; another key (a new POU) shows "Exporting…" until its answer.
+  const key = `${project}\u0000${pou}`;
+  const [outcome, setOutcome] = useState<{ key: string; value: Outcome } | null>(null);
   useEffect(() => {
     let live = true;
-    setResult(null);
-    setError(null);
     load(project, pou).then(
-      (r) => live && setResult(r),
+      (r) => live && setOutcome({ key, value: { result: r } }),
       (err: unknown) => {
         if (!live) return;
         const detail = err instanceof ApiError ? (err.detail as { diagnostics?: Diagnostic[] } | undefined) : undefined;
-        setError({
-          message: err instanceof Error ? err.message : String(err),
-          diagnostics: Array.isArray(detail?.diagnostics) ? detail.diagnostics : [],
+        setOutcome({
+          key,
+          value: {
+            error: {
+              message: err instanceof Error ? err.message : String(err),
+              diagnostics: Array.isArray(detail?.diagnostics) ? detail.diagnostics : [],
+            },
+          },
         });
       },
     );
     return () => {
       live = false;
     };
-  }, [project, pou, load]);
+  }, [project, pou, load, key]);
+  const current = outcome?.key === key ? outcome.value : null;
+  const result = current && "result" in current ? current.result : null;
+  const error = current && "error" in current ? current.error : null;
   const blocks = useMemo(() => (result ? blocksOf(result.text, result.source_map) : []), [result]);
 
   return (
@@ -78,7 +79,7 @@ export function StView({ project, pou, unsaved, onRevealNetwork, load = exportSt
         <span>
           {pou} exported as Structured Text{unsaved ? " (of the saved version: save to include your changes)" : ""}
         </span>
-        <button type="button" disabled={!result} onClick={() => result && download(pou, result.text)}>
+        <button type="button" disabled={!result} onClick={() => result && downloadText(`${pou}.st`, result.text)}>
           Download {pou}.st
         </button>
       </div>

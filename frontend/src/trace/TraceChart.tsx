@@ -1,7 +1,7 @@
 // The trace as a uPlot time chart: drag to zoom (x), double click to reset, Shift+drag or the
 // buttons to pan, Ctrl+wheel to zoom around the cursor; the legend shows the values under the
 // cursor. While the user has not zoomed, the chart follows new samples; a zoom holds still.
-import { useEffect, useRef, useState } from "react";
+import { useEffect, useEffectEvent, useRef, useState } from "react";
 import uPlot from "uplot";
 import "uplot/dist/uPlot.min.css";
 import { usePanels } from "../panels/store";
@@ -174,40 +174,40 @@ export function TraceChart({ paths, kinds, ring, version, origin, laneView }: Tr
     return () => observer.disconnect();
   }, []);
 
-  useEffect(() => {
-    if (!host.current) return;
+  /** A chart of the current series in `el` (effect events read the props of the latest render). */
+  const build = useEffectEvent((el: HTMLDivElement) => {
     zoomed.current = false;
     const chart = chartData(paths, kinds, ring.columnsInOrder(), origin, laneView);
-    const u = new uPlot(
-      options(
-        chart,
-        width,
-        height,
-        () => void (zoomed.current = true),
-        () => void (zoomed.current = false),
-      ),
-      chart.data as uPlot.AlignedData,
-      host.current,
-    );
+    const onZoom = () => void (zoomed.current = true);
+    const onReset = () => void (zoomed.current = false);
+    return new uPlot(options(chart, width, height, onZoom, onReset), chart.data as uPlot.AlignedData, el);
+  });
+  const refresh = useEffectEvent((u: uPlot) => {
+    const chart = chartData(paths, kinds, ring.columnsInOrder(), origin, laneView);
+    u.setData(chart.data as uPlot.AlignedData, !zoomed.current);
+  });
+
+  // Rebuilt only when the series change; new data and sizes go to the same chart below.
+  useEffect(() => {
+    if (!host.current) return;
+    const u = build(host.current);
     plot.current = u;
     return () => {
       u.destroy();
       plot.current = null;
     };
-    // Rebuilt only when the series change; new data and sizes go to the same chart below.
   }, [layout, ring]);
 
-  useEffect(() => plot.current?.setSize({ width, height }), [width, height]);
-
   useEffect(() => {
-    const u = plot.current;
-    if (!u) return;
-    const chart = chartData(paths, kinds, ring.columnsInOrder(), origin, laneView);
-    u.setData(chart.data as uPlot.AlignedData, !zoomed.current);
-    // The ring changes in place: `version` says when.
+    plot.current?.setSize({ width, height });
+  }, [width, height]);
+
+  // The ring changes in place: `version` says when.
+  useEffect(() => {
+    if (plot.current) refresh(plot.current);
   }, [version, origin]);
 
-  const act = (action: (u: uPlot) => void) => () => {
+  const act = (action: (u: uPlot) => void) => {
     const u = plot.current;
     if (!u) return;
     zoomed.current = true;
@@ -222,20 +222,20 @@ export function TraceChart({ paths, kinds, ring, version, origin, laneView }: Tr
   return (
     <div className="trace-chart">
       <div className="trace-chart-tools" role="toolbar" aria-label="Chart zoom and pan">
-        <button type="button" onClick={act((u) => panX(u, -0.25))} title="Pan back in time (or Shift+drag)">
+        <button type="button" onClick={() => act((u) => panX(u, -0.25))} title="Pan back in time (or Shift+drag)">
           ◀
         </button>
         <button
           type="button"
-          onClick={act((u) => zoomX(u, 0.5))}
+          onClick={() => act((u) => zoomX(u, 0.5))}
           title="Zoom in (or drag over the chart, or Ctrl+wheel)"
         >
           Zoom in
         </button>
-        <button type="button" onClick={act((u) => zoomX(u, 2))}>
+        <button type="button" onClick={() => act((u) => zoomX(u, 2))}>
           Zoom out
         </button>
-        <button type="button" onClick={act((u) => panX(u, 0.25))} title="Pan forward in time (or Shift+drag)">
+        <button type="button" onClick={() => act((u) => panX(u, 0.25))} title="Pan forward in time (or Shift+drag)">
           ▶
         </button>
         <button type="button" onClick={reset} title="Show every sample (or double click the chart)">

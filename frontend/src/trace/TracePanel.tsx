@@ -20,23 +20,28 @@ const TraceChart = lazy(() => import("./TraceChart").then((m) => ({ default: m.T
 /** The table shows at most this many samples (the newest); the chart and the CSV show them all. */
 export const TABLE_ROWS = 500;
 
+const NO_CANDIDATES: string[] = [];
+
 /** Paths offered by the path inputs: BOOL and numeric variables of every program. */
 function useCandidates(): string[] {
   const project = useWorkspace((s) => s.name);
   const pous = useWorkspace((s) => s.project?.pous);
   const library = useWorkspace((s) => s.library);
-  const [candidates, setCandidates] = useState<string[]>([]);
+  // Candidates found for what was asked (another project or program list shows none until its answer).
+  const [found, setFound] = useState<{ for: readonly string[]; candidates: string[] } | null>(null);
   const programs = useMemo(() => (pous ?? []).filter((p) => p.kind === "program").map((p) => p.name), [pous]);
   useEffect(() => {
-    if (!project || !programs.length) return setCandidates([]);
+    if (!project || !programs.length) return;
     let current = true;
     Promise.all(programs.map((pou) => projectApi.getSymbols(project, pou))).then(
-      (tables) => current && setCandidates(traceCandidates(tables, library)),
+      (tables) => current && setFound({ for: programs, candidates: traceCandidates(tables, library) }),
       () => undefined, // no symbols: the inputs still take typed paths
     );
-    return () => void (current = false);
+    return () => {
+      current = false;
+    };
   }, [project, programs, library]);
-  return candidates;
+  return project && found?.for === programs ? found.candidates : NO_CANDIDATES;
 }
 
 export function statusText(

@@ -124,16 +124,17 @@ describe("trace store", () => {
     ]);
   });
 
-  it("ends a trace in progress when the simulation changes, keeping its samples", () => {
+  const onlineFake = () => {
     let listener: ((msg: ServerMessage) => void) | null = null;
-    const sent: ClientMessage[] = [];
     const online = createStore<{
       simulation: string | null;
+      connection: number;
       send(msg: ClientMessage): boolean;
       listen(l: (msg: ServerMessage) => void): () => void;
     }>()(() => ({
       simulation: "s1",
-      send: (msg) => (sent.push(msg), true),
+      connection: 1,
+      send: () => true,
       listen: (l) => ((listener = l), () => undefined),
     }));
     const trace = traceStoreFor(online);
@@ -141,11 +142,22 @@ describe("trace store", () => {
     trace.getState().start();
     listener!(chunk({ scans: [1], time_ms: [10], values: { "MAIN.N": [5] } }));
     expect(trace.getState().ring!.length).toBe(1);
+    return { online, trace };
+  };
+
+  it("ends a trace in progress when the simulation changes, keeping its samples", () => {
+    const { online, trace } = onlineFake();
     online.setState({ simulation: null });
     expect([trace.getState().phase, trace.getState().error, trace.getState().ring!.length]).toEqual([
       "done",
       "the simulation went offline: the trace ended",
       1,
     ]);
+  });
+
+  it("ends it on a reconnect too: the server keeps a trace per connection", () => {
+    const { online, trace } = onlineFake();
+    online.setState({ connection: 2 });
+    expect([trace.getState().phase, trace.getState().ring!.length]).toEqual(["done", 1]);
   });
 });

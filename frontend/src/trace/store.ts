@@ -196,16 +196,21 @@ export interface OnlineLike {
     listen(listener: (msg: ServerMessage) => void): () => void;
     simulation: string | null;
   };
-  subscribe(
-    listener: (state: { simulation: string | null }, previous: { simulation: string | null }) => void,
-  ): () => void;
+  subscribe(listener: (state: Connection, previous: Connection) => void): () => void;
+}
+
+/** Which simulation, and which connection to it: the server keeps a trace per connection. */
+interface Connection {
+  simulation: string | null;
+  connection: number;
 }
 
 export function traceStoreFor(online: OnlineLike): StoreApi<TraceState> {
   const store = createTraceStore({ send: (msg) => online.getState().send(msg) });
   online.getState().listen((msg) => store.getState().receive(msg));
   online.subscribe((state, previous) => {
-    if (state.simulation !== previous.simulation) store.getState().disconnected();
+    if (state.simulation !== previous.simulation || state.connection !== previous.connection)
+      store.getState().disconnected();
   });
   return store;
 }

@@ -72,3 +72,16 @@ def std_fb(name: str) -> str:
 def comment_text(text: object) -> str:
     """User text as it may appear in a generated comment: one line, ASCII, quoted."""
     return ascii(str(text))
+
+
+_CHUNK = re.compile(r"ll_k\d+_")
+
+
+def chunk_function(number: int, key: str) -> str:
+    """The function holding part ``number`` of a long POU body (``key``: the POU's escaped name)."""
+    return f"ll_k{number}_{key}"
+
+
+def is_chunk_function(name: str) -> bool:
+    """A chunk is part of its POU's body, not a call of its own (the debugger's step over/out counts calls)."""
+    return _CHUNK.match(name) is not None

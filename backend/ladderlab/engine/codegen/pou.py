@@ -179,7 +179,7 @@ def _emit_execute(module: ModuleContext, pou: ir.Pou, scope: Scope, src: Source)
     calls, reads = [], []
     if not plan.inline:
         for number in range(len(plan.chunks)):
-            chunk = f"ll_k{number}_{key}"
+            chunk = names.chunk_function(number, key)
             src.piece()
             src.line(f"def {chunk}(self, now{', ll_b' if plan.jumps else ''}):")
             first, last = plan.chunks[number][0].origin, plan.chunks[number][-1].origin

@@ -164,6 +164,9 @@ class _Unset:
     def __repr__(self) -> str:
         return "UNSET"
 
+    def __reduce__(self) -> str:
+        return "UNSET"  # pickles as the one module-level UNSET (engine/state.py)
+
 
 #: ``ll_unset``: what a probe list holds for an element that has not executed yet.
 UNSET = _Unset()

@@ -54,7 +54,7 @@ class Statements:
         self.outlines = Source()
         self.outlines.depth = src.depth
         self.segment = plan.first_segment[chunk]
-        self.now = "ll_now" if scope.function else "now"
+        self.now = "ll_now" if scope.function or scope.pou.live_clock else "now"
         self.me = "None" if scope.function else "self"
         self.debug = self.module.debug
         self.probes = self.module.probe_table(scope.pou.name) if self.module.probes else None

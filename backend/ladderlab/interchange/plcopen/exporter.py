@@ -30,7 +30,7 @@ from .body import NETWORK_GAP, Counter, write_network_list
 from .fbd_export import FbdExporter
 from .ld_export import LdExporter
 from .vars import parse_type_text, write_data_type, write_type, write_var_list
-from .xml_io import formatted_text, ladderlab_data, q, sub, to_bytes
+from .xml_io import formatted_text, ladderlab_data, ladderlab_tests, q, sub, to_bytes
 
 POU_TYPE = {"program": "program", "function_block": "functionBlock", "function": "function"}
 CONFIGURATION = "config"
@@ -81,9 +81,10 @@ class _Exporter:
         for pou in self.project.pous:
             self.pou(pous, pou)
         self.instances(sub(root, "instances"))
-        ladderlab_data(
+        ours = ladderlab_data(
             root, {"format": self.project.format}, {"types": self.project.types, "globals": self.project.globals}
         )
+        ladderlab_tests(ours, [(test.name, test.text) for test in self.project.tests])
         if self.problems:
             raise PlcopenExportError(self.problems)
         return to_bytes(root)

@@ -22,7 +22,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from ...model.diagnostics import Diagnostic
-from ...model.project import Pou, Project, Task
+from ...model.project import Pou, Project, Task, TestFile
 from ...st import ast
 from ...st.parser import parse_declarations, parse_source
 from ...st.printer import print_declarations, print_source, print_type
@@ -48,6 +48,7 @@ from .xml_io import (
     info_text,
     local,
     namespace,
+    test_texts,
     text_content,
 )
 from .xml_safety import XmlInputError, parse_untrusted_xml
@@ -124,7 +125,10 @@ class _Importer:
                 root,
                 severity="warning",
             )
-        return Project(name=name, types=types, globals=globals_, pous=[p for p in pous if p is not None], tasks=tasks)
+        tests = [TestFile(name=test, text=text) for test, text in test_texts(ours)]
+        return Project(
+            name=name, types=types, globals=globals_, pous=[p for p in pous if p is not None], tasks=tasks, tests=tests
+        )
 
     # ------------------------------------------------------------ addData bookkeeping
 

@@ -83,6 +83,14 @@ def ladderlab_data(
     return add
 
 
+def ladderlab_tests(add_data: ET.Element, tests: list[tuple[str, str]]) -> None:
+    """Carry unit test files (name, text) in the ``<ll:info>`` of ``ladderlab_data``'s result: PLCopen XML
+    has no place for them, and a project should come back with its tests."""
+    info = add_data[0][0]
+    for name, text in tests:
+        ET.SubElement(info, f"{{{LADDERLAB_NS}}}test", {"name": name}).text = text
+
+
 def to_bytes(root: ET.Element) -> bytes:
     """Serialise a built document (its root gets the default PLCopen namespace declaration).
 
@@ -189,6 +197,13 @@ def info_text(node: ET.Element | None, name: str) -> str | None:
         return None
     found = node.find(f"{{{LADDERLAB_NS}}}{name}")
     return None if found is None else (found.text or "")
+
+
+def test_texts(node: ET.Element | None) -> list[tuple[str, str]]:
+    """The unit test files carried in the project's ``<ll:info>`` (``<ll:test name=...>text</ll:test>``)."""
+    if node is None:
+        return []
+    return [(found.get("name", ""), found.text or "") for found in node.findall(f"{{{LADDERLAB_NS}}}test")]
 
 
 def foreign_data(element: ET.Element | None, reader: Reader) -> list[ET.Element]:

@@ -89,9 +89,9 @@ describe("FBD editor", () => {
     expect(screen.getByRole("alert").textContent).toContain("add feeds sub: data flow makes add run first.");
   });
 
-  it("online (ON-06..09): shows node values, dims skipped blocks, toggles a BOOL on double-click, writes from the menu", () => {
+  it("online (ON-06..09): shows node values, dims skipped blocks, prepares a value on double-click, writes from the menu", () => {
     const write = vi.fn();
-    const toggle = vi.fn();
+    const prepare = vi.fn((operand: string) => operand === "flag"); // a BOOL toggles; others ask for the value
     const network = arithmetic();
     const t = setup(
       bodyOf({
@@ -100,13 +100,30 @@ describe("FBD editor", () => {
       }),
       {
         readOnly: "Online",
-        online: { probes: { a: 7, "add.OUT": null, "sub.OUT": 3, r: 3, f: true }, forced: new Set(["VAR1"]) },
-        onlineActions: { write, toggle, force: vi.fn(), unforce: vi.fn(), watch: vi.fn() },
+        online: {
+          probes: { a: 7, "add.OUT": null, "sub.OUT": 3, r: 3, f: true },
+          operands: { VAR1: { text: "7", bool: null, forced: true, prepared: "8" } },
+          pins: { sub: { "out:OUT": { text: "3", bool: null, forced: false, prepared: null } } },
+        },
+        onlineActions: { write, prepare, force: vi.fn(), unforce: vi.fn(), watch: vi.fn() },
       },
     );
     fireEvent.doubleClick(t.node("f").querySelector(".fbd-text")!);
-    expect(toggle).toHaveBeenCalledWith("flag");
-    expect(screen.getByTestId("value-a").textContent).toBe("7");
+    expect(prepare).toHaveBeenCalledWith("flag", undefined, undefined);
+    expect(screen.queryByRole("dialog")).toBeNull();
+    fireEvent.doubleClick(screen.getByTestId("value-a"));
+    expect(prepare).toHaveBeenLastCalledWith("var1", undefined, undefined);
+    act(() => {
+      fireEvent.submit(screen.getByRole("dialog", { name: "Prepare a value for var1" }));
+    }); // an empty value is not submitted
+    fireEvent.change(screen.getByLabelText("Value"), { target: { value: "9" } });
+    act(() => {
+      fireEvent.submit(screen.getByRole("dialog", { name: "Prepare a value for var1" }));
+    });
+    expect(prepare).toHaveBeenLastCalledWith("var1", "9");
+    expect(screen.getByTestId("value-a").textContent).toBe("7F<8>"); // forced, 8 prepared
+    expect(screen.getByTestId("value-f").textContent).toBe("TRUE"); // a literal's probe
+    expect(t.node("sub").querySelector('[data-pin-value="out:OUT"]')!.textContent).toBe("3");
     expect(t.node("add").classList.contains("fbd-skipped")).toBe(true);
     expect(t.node("sub").classList.contains("fbd-skipped")).toBe(false);
     expect(t.node("a").classList.contains("fbd-forced")).toBe(true);

@@ -56,6 +56,11 @@ import { fetchOrder, useEvaluationOrder } from "../useOrder";
 import { FbdEditorContext, type FbdEditorApi, type NodeView } from "./context";
 import { nodeHeight, pinOfHandle } from "./FbdNodeView";
 import { DRAG_FORMAT, NetworkCanvas, type NetworkSelection } from "./NetworkCanvas";
+import { dispatchKey, keysOf, type CommandOf } from "../../keys/keymap";
+import { ShortcutHelp } from "../../keys/ShortcutHelp";
+
+/** A toolbar tooltip: the action and its key from the keymap. */
+const keyed = (label: string, command: CommandOf<"fbd">) => `${label} (${keysOf("fbd", command)})`;
 
 /** Breakpoints and the halt, for this POU (debug/store.ts holds them). */
 export interface FbdDebug {
@@ -63,6 +68,8 @@ export interface FbdDebug {
   elements: ReadonlySet<string>;
   halted: { network?: string | null; element?: string | null } | null;
   toggle(bp: { network: string } | { element: string }): void;
+  /** Nodes the last test run with coverage never executed or never energised (tinted). */
+  coverage?: ReadonlyMap<string, "never-executed" | "never-energised">;
 }
 
 export interface FbdEditorProps {
@@ -146,6 +153,7 @@ export function FbdEditor({
   const [message, setMessage] = useState<string | null>(null);
   const [offer, setOffer] = useState<VariableDeclaration | null>(null);
   const [valuePrompt, setValuePrompt] = useState<ValueRequest | null>(null);
+  const [help, setHelp] = useState(false);
 
   const byName = useMemo(() => new Map(library.map((e) => [e.name.toUpperCase(), e])), [library]);
   const lookup = useCallback((call: string) => byName.get(call.toUpperCase()), [byName]);
@@ -160,7 +168,9 @@ export function FbdEditor({
       return next;
     });
   }, []);
-  useEffect(() => onVisibleChange?.([...near]), [near, onVisibleChange]);
+  useEffect(() => {
+    onVisibleChange?.([...near]);
+  }, [near, onVisibleChange]);
   const orders = useEvaluationOrder(body, orderOf, near);
   const networks = networksOf(body);
   const locked = readOnly !== null;
@@ -406,13 +416,13 @@ export function FbdEditor({
             {
               id: "earlier",
               label: "Run earlier",
-              keys: "Alt+ArrowUp",
+              keys: keysOf("fbd", "run-earlier"),
               run: () => apply(moveInOrder(body, network, orders.get(network) ?? [], node.id, -1)),
             },
             {
               id: "later",
               label: "Run later",
-              keys: "Alt+ArrowDown",
+              keys: keysOf("fbd", "run-later"),
               run: () => apply(moveInOrder(body, network, orders.get(network) ?? [], node.id, 1)),
             },
           ];
@@ -421,20 +431,20 @@ export function FbdEditor({
           {
             id: "breakpoint",
             label: debug.elements.has(node.id) ? "Remove breakpoint" : "Set breakpoint",
-            keys: "Alt+click",
+            keys: keysOf("fbd", "toggle-breakpoint"),
             run: () => debug.toggle({ element: node.id }),
           },
         ]
       : [];
     const clip: MenuItem[] = [
-      { id: "copy", label: "Copy", keys: "Ctrl+C", run: () => clipboard.copy(false) },
+      { id: "copy", label: "Copy", keys: keysOf("fbd", "copy"), run: () => clipboard.copy(false) },
       ...(locked
         ? []
         : [
             {
               id: "delete",
               label: "Delete",
-              keys: "Delete",
+              keys: keysOf("fbd", "delete"),
               run: () => apply(ops.deleteNodes(body, selectedNodes.includes(node.id) ? selectedNodes : [node.id])),
             },
           ]),
@@ -484,10 +494,34 @@ export function FbdEditor({
         breakpoint: debug?.elements.has(node.id) ?? false,
         halted: debug?.halted?.element === node.id,
         fb: kindOf(node) === "block" && lookup((node as Block).call)?.kind === "function_block",
+        coverage: debug?.coverage?.get(node.id),
       };
     },
     [orders, lookup, symbols, byElement, debug],
   );
+
+  /** Prepares a value for `operand` (CODESYS double-click): a BOOL toggles, others ask for the value. */
+  const prepare = (operand: string | null, type?: string) => {
+    if (onlineActions && operand && !onlineActions.prepare(operand, undefined, type))
+      setValuePrompt({ operand, action: "prepare" });
+  };
+  /** The variable behind a block pin: the FB instance's pin, or the input node wired to it. */
+  const pinOperand = (block: Block, side: "in" | "out", pin: string): string | null => {
+    const entry = lookup(block.call);
+    const declared = entry
+      ? [...entry.inputs, ...entry.in_outs, ...entry.outputs].some((p) => p.name.toUpperCase() === pin.toUpperCase())
+      : false;
+    if (entry?.kind === "function_block" && block.instance?.trim() && declared)
+      return `${block.instance.trim()}.${pin}`;
+    const network = findNode(body, block.id)?.network;
+    const wire =
+      side === "in"
+        ? network &&
+          wiresOf(network).find((w) => w.to.node === block.id && w.to.pin.toUpperCase() === pin.toUpperCase())
+        : undefined;
+    const source = wire && network ? nodesOf(network).find((n) => n.id === wire.from.node) : undefined;
+    return source && kindOf(source) === "input" ? operandOf(source) : null;
+  };
 
   const api: FbdEditorApi = {
     readOnly: locked,
@@ -502,11 +536,12 @@ export function FbdEditor({
       root.current?.focus();
     },
     pinMenu,
-    valueDoubleClick: (node) => {
-      const operand = operandOf(node);
-      if (!onlineActions || !operand) return;
-      if (typeof online?.probes[node.id] === "boolean") onlineActions.toggle(operand);
-      else setValuePrompt({ operand, action: "write" });
+    valueDoubleClick: (node) => prepare(operandOf(node)),
+    pinDoubleClick: (node, side, pin) => {
+      const network = findNode(body, node.id)?.network;
+      const pins = network ? nodePins(node, network, lookup, symbols) : null;
+      const type = (side === "in" ? pins?.inputs : pins?.outputs)?.find((p) => p.name === pin)?.type;
+      prepare(pinOperand(node as Block, side, pin), type);
     },
   };
 
@@ -520,8 +555,14 @@ export function FbdEditor({
         const base = current?.network === network ? current : { network, nodes: [], edges: [] };
         const nextNodes = new Set(base.nodes);
         const nextEdges = new Set(base.edges);
-        for (const c of nodes) c.selected ? nextNodes.add(c.id) : nextNodes.delete(c.id);
-        for (const c of edges) c.selected ? nextEdges.add(c.id) : nextEdges.delete(c.id);
+        for (const c of nodes) {
+          if (c.selected) nextNodes.add(c.id);
+          else nextNodes.delete(c.id);
+        }
+        for (const c of edges) {
+          if (c.selected) nextEdges.add(c.id);
+          else nextEdges.delete(c.id);
+        }
         if (!nextNodes.size && !nextEdges.size) return current?.network === network ? null : current; // another network's canvas letting go
         return { network, nodes: [...nextNodes], edges: [...nextEdges] };
       });
@@ -560,40 +601,63 @@ export function FbdEditor({
       : null;
   };
 
-  // A halt or a clicked diagnostic scrolls its network into view and selects the place.
-  const reveal = (network?: string | null, element?: string | null) => {
-    const net = element ? findNode(body, element)?.network.id : network;
-    if (!net) return;
-    root.current?.querySelector(`[data-network="${CSS.escape(net)}"]`)?.scrollIntoView?.({ block: "center" });
-    if (element) setSelection({ network: net, nodes: [element], edges: [] });
-    else setNetworkSelected(net);
-  };
+  // A new halt place or a clicked diagnostic selects the place (while rendering, as the request
+  // arrives: later edits do not move the selection) and scrolls its network into view.
   const halted = debug?.halted;
+  const haltKey = halted ? `${halted.network ?? ""}:${halted.element ?? ""}` : null;
+  const focusSeq = focus?.seq ?? null;
+  const [revealed, setRevealed] = useState<{ halt: string | null; focus: number | null; network: string | null }>({
+    halt: null,
+    focus: null,
+    network: null,
+  });
+  if (haltKey !== revealed.halt || focusSeq !== revealed.focus) {
+    const place = haltKey !== revealed.halt && halted ? halted : focusSeq !== revealed.focus ? focus : null;
+    const network = place
+      ? ((place.element ? findNode(body, place.element)?.network.id : place.network) ?? null)
+      : null;
+    if (place && network) {
+      if (place.element) setSelection({ network, nodes: [place.element], edges: [] });
+      else setNetworkSelected(network);
+    }
+    setRevealed({ halt: haltKey, focus: focusSeq, network });
+  }
   useEffect(() => {
-    if (halted) reveal(halted.network, halted.element);
-    // Only a new halt place scrolls, not later edits.
-  }, [halted?.network, halted?.element]);
-  useEffect(() => {
-    if (focus) reveal(focus.network, focus.element);
-  }, [focus?.seq]);
+    const network = revealed.network;
+    if (network)
+      root.current?.querySelector(`[data-network="${CSS.escape(network)}"]`)?.scrollIntoView?.({ block: "center" });
+  }, [revealed]);
+
+  /** What each FBD key does (src/keys/keymap.ts, scope "fbd"); false when it does not apply now. */
+  const keyActions: Record<CommandOf<"fbd">, () => boolean> = {
+    delete: () => (deleteSelection(), true),
+    // Copy, cut and paste arrive as clipboard events (below), which reach the system clipboard.
+    copy: () => false,
+    cut: () => false,
+    paste: () => false,
+    undo: () => !locked && (onHistoryChange(undo(history)), true),
+    redo: () => !locked && (onHistoryChange(redo(history)), true),
+    "run-earlier": () => (reorder(-1), true),
+    "run-later": () => (reorder(1), true),
+    "clear-selection": () => {
+      setSelection(null);
+      setNetworkSelected(null);
+      setMenu(null);
+      return true;
+    },
+    "toggle-breakpoint": () => {
+      const element = selectedNodes.length === 1 ? selectedNodes[0] : undefined;
+      const network = networkSelected ?? selection?.network;
+      if (!debug || (!element && !network)) return false;
+      debug.toggle(element ? { element } : { network: network! });
+      return true;
+    },
+  };
 
   const onKeyDown = (event: KeyboardEvent<HTMLDivElement>) => {
     if (editing || picker || networkText || (event.target as HTMLElement).closest("input, textarea, .ld-context-menu"))
       return;
-    const ctrl = event.ctrlKey || event.metaKey;
-    const key = event.key.toLowerCase();
-    let handled = true;
-    if (event.key === "Delete" || event.key === "Backspace") deleteSelection();
-    else if (ctrl && key === "z" && !event.shiftKey) !locked && onHistoryChange(undo(history));
-    else if (ctrl && (key === "y" || (key === "z" && event.shiftKey))) !locked && onHistoryChange(redo(history));
-    else if (event.altKey && event.key === "ArrowUp") reorder(-1);
-    else if (event.altKey && event.key === "ArrowDown") reorder(1);
-    else if (event.key === "Escape") {
-      setSelection(null);
-      setNetworkSelected(null);
-      setMenu(null);
-    } else handled = false;
-    if (handled) event.preventDefault();
+    dispatchKey("fbd", event, keyActions);
   };
 
   const selectedBlock = selectedNodes.length === 1 ? findNode(body, selectedNodes[0]!)?.node : undefined;
@@ -655,10 +719,10 @@ export function FbdEditor({
                   wiresOf(findNode(body, selectedBlock.id)!.network),
                 ),
             )}
-            {tool("Run earlier", () => reorder(-1), !locked && !!selectedBlock, "Run earlier (Alt+ArrowUp)")}
-            {tool("Run later", () => reorder(1), !locked && !!selectedBlock, "Run later (Alt+ArrowDown)")}
+            {tool("Run earlier", () => reorder(-1), !locked && !!selectedBlock, keyed("Run earlier", "run-earlier"))}
+            {tool("Run later", () => reorder(1), !locked && !!selectedBlock, keyed("Run later", "run-later"))}
             {tool("Auto-arrange", autoArrange, !locked && networks.length > 0)}
-            {tool("Delete", deleteSelection, !locked && (!!selection || !!networkSelected), "Delete (Delete)")}
+            {tool("Delete", deleteSelection, !locked && (!!selection || !!networkSelected), keyed("Delete", "delete"))}
           </div>
           <div className="ld-toolbar-group">
             {tool("Add network", () => apply(ops.addNetwork(body, netIndex < 0 ? networks.length : netIndex + 1)))}
@@ -684,12 +748,16 @@ export function FbdEditor({
             )}
           </div>
           <div className="ld-toolbar-group">
-            {tool("Copy", () => clipboard.copy(false), selectedNodes.length > 0, "Copy (Ctrl+C)")}
-            {tool("Paste", clipboard.paste, !locked, "Paste (Ctrl+V)")}
-            {tool("Undo", () => onHistoryChange(undo(history)), !locked && canUndo(history), "Undo (Ctrl+Z)")}
-            {tool("Redo", () => onHistoryChange(redo(history)), !locked && canRedo(history), "Redo (Ctrl+Y)")}
+            {tool("Copy", () => clipboard.copy(false), selectedNodes.length > 0, keyed("Copy", "copy"))}
+            {tool("Paste", clipboard.paste, !locked, keyed("Paste", "paste"))}
+            {tool("Undo", () => onHistoryChange(undo(history)), !locked && canUndo(history), keyed("Undo", "undo"))}
+            {tool("Redo", () => onHistoryChange(redo(history)), !locked && canRedo(history), keyed("Redo", "redo"))}
           </div>
+          <button type="button" className="ld-help-button" aria-expanded={help} onClick={() => setHelp((h) => !h)}>
+            Shortcuts
+          </button>
         </div>
+        {help ? <ShortcutHelp scopes={["fbd", "app"]} onClose={() => setHelp(false)} /> : null}
         <EditorNotices
           readOnly={readOnly}
           readOnlyActions={readOnlyActions}

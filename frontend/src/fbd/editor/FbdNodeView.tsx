@@ -4,8 +4,10 @@
 import { Handle, Position, type Node, type NodeProps } from "@xyflow/react";
 import type { Block, FbdNetwork, FbdNode, OutputMode, PinDef } from "../model";
 import { kindOf } from "../model";
-import { formatValue } from "../../online/monitor";
 import { OperandEditor } from "../../ld/editor/OperandEditor";
+import { pinKey } from "../../online/pinValues";
+import { shownOf, type ValueShown } from "../../online/shown";
+import { ValueTag } from "../../online/ValueTag";
 import { executed, operandOf } from "../online";
 import { useFbdEditor, type NodeView } from "./context";
 
@@ -56,8 +58,21 @@ function PinRow({ node, input, output, view }: { node: FbdNode; input?: PinDef; 
           </span>
         ) : null}
         <span className="fbd-pin-name">{pin.name}</span>
+        {pinValue(pin, dir)}
       </span>
     );
+  };
+  const pinValue = (pin: PinDef, dir: "in" | "out") => {
+    const shown = api.online?.pins[node.id]?.[pinKey(dir, pin.name)];
+    return shown ? (
+      <span
+        className="fbd-pin-value nodrag"
+        data-pin-value={pinKey(dir, pin.name)}
+        onDoubleClick={() => api.pinDoubleClick(node, dir, pin.name)}
+      >
+        <ValueTag shown={shown} />
+      </span>
+    ) : null;
   };
   return (
     <div className="fbd-pin-row" style={{ height: PIN_ROW }}>
@@ -120,14 +135,23 @@ function TextField({
 
 export function FbdNodeView({ data, selected }: NodeProps<FbdFlowNode>) {
   const api = useFbdEditor();
+  /** A variable node's value: its variable's (forced, prepared), else the probe's (a literal, an expression). */
+  const nodeValue = (id: string, operand: string | null): ValueShown | null => {
+    const variable = operand ? api.online?.operands[operand.toUpperCase()] : undefined;
+    if (variable) return variable;
+    const probe = api.online?.probes[id];
+    if (probe === undefined || probe === null) return null;
+    const pins = api.view(data.network, data.node).pins;
+    return { ...shownOf(probe, (pins.outputs[0] ?? pins.inputs[0])?.type), forced: false, prepared: null };
+  };
   const { network, node } = data;
   const view = api.view(network, node);
   const kind = kindOf(node);
   const online = api.online;
   const skipped = online ? !executed(online, node.id) : false;
   const operand = operandOf(node);
-  const forced = online && operand ? online.forced.has(operand.toUpperCase()) : false;
-  const value = online && (kind === "input" || kind === "output") ? online.probes[node.id] : undefined;
+  const shown = online && (kind === "input" || kind === "output") ? nodeValue(node.id, operand) : null;
+  const forced = shown?.forced ?? false;
   const classes = [
     "fbd-node",
     `fbd-${kind}`,
@@ -136,6 +160,7 @@ export function FbdNodeView({ data, selected }: NodeProps<FbdFlowNode>) {
     view.diagnostics.length ? "fbd-error" : "",
     view.halted ? "fbd-halted" : "",
     forced ? "fbd-forced" : "",
+    view.coverage ? `fbd-coverage-${view.coverage}` : "",
   ].filter(Boolean);
   const common = { className: classes.join(" "), "data-node": node.id, title: titleOf(view) };
 
@@ -208,9 +233,13 @@ export function FbdNodeView({ data, selected }: NodeProps<FbdFlowNode>) {
         </span>
       ) : null}
       {text}
-      {value !== undefined ? (
-        <span className="fbd-value" data-testid={`value-${node.id}`}>
-          {formatValue(value, (output ?? input)?.type)}
+      {shown ? (
+        <span
+          className="fbd-value nodrag"
+          data-testid={`value-${node.id}`}
+          onDoubleClick={() => api.valueDoubleClick(node)}
+        >
+          <ValueTag shown={shown} />
         </span>
       ) : null}
       {output ? (

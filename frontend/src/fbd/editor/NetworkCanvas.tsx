@@ -17,10 +17,8 @@ import {
 } from "@xyflow/react";
 import { useEffect, useMemo, useRef, useState, type DragEvent, type MouseEvent, type ReactNode } from "react";
 import type { Diagnostic } from "../../generated/api";
-import { formatValue } from "../../online/monitor";
 import { nodesOf, wireKey, wiresOf, type FbdNetwork, type FbdNode, type Position } from "../model";
 import { probeOf, type FbdOnlineView } from "../online";
-import { useFbdEditor } from "./context";
 import { FbdNodeView, type FbdFlowNode } from "./FbdNodeView";
 
 export const DRAG_FORMAT = "application/x-ladderlab-fbd";
@@ -129,25 +127,22 @@ function Canvas(props: NetworkCanvasProps) {
       })),
     [network, selected, fallback],
   );
-  // xyflow measures nodes once they are drawn; the sizes stay on our copies across model edits.
+  // xyflow measures nodes once they are drawn; the sizes stay on our copies across model edits
+  // (taken over while rendering the new model, not in an effect after it).
   const [nodes, setNodes] = useState(built);
-  useEffect(() => {
-    setNodes((previous) => {
-      const old = new Map(previous.map((n) => [n.id, n]));
-      return built.map((n) => ({ ...n, measured: old.get(n.id)?.measured }));
-    });
-  }, [built]);
-  const editor = useFbdEditor();
+  const [builtSeen, setBuiltSeen] = useState(built);
+  if (built !== builtSeen) {
+    setBuiltSeen(built);
+    const old = new Map(nodes.map((n) => [n.id, n]));
+    setNodes(built.map((n) => ({ ...n, measured: old.get(n.id)?.measured })));
+  }
   const edges = useMemo(
     (): Edge[] =>
       wiresOf(network).map((w) => {
         const id = wireKey(w);
         const probe = online ? probeOf(network, w.from) : null;
         const value = probe ? online?.probes[probe] : undefined;
-        const source = online && value !== undefined ? nodesOf(network).find((n) => n.id === w.from.node) : undefined;
-        const type = source
-          ? editor.view(network, source).pins.outputs.find((p) => p.name === w.from.pin)?.type
-          : undefined;
+        // The value shows at the pins (FbdNodeView), the wire its BOOL state by colour.
         return {
           id,
           source: w.from.node,
@@ -156,12 +151,10 @@ function Canvas(props: NetworkCanvasProps) {
           targetHandle: `in:${w.to.pin}`,
           selected: selected?.edges.includes(id) ?? false,
           className: wireClass(value),
-          label: online && value !== undefined ? formatValue(value, type) : undefined,
-          labelClassName: "fbd-wire-label",
           markerEnd: { type: MarkerType.ArrowClosed, width: 12, height: 12 },
         };
       }),
-    [network, selected, online, editor],
+    [network, selected, online],
   );
 
   const onNodesChange = (changes: NodeChange<FbdFlowNode>[]) => {
@@ -279,7 +272,9 @@ export function NetworkCanvas(props: NetworkCanvasProps) {
   const { network, index } = props;
   const [ref, near] = useNearViewport();
   const { onNear } = props;
-  useEffect(() => onNear(network.id, near), [onNear, network.id, near]);
+  useEffect(() => {
+    onNear(network.id, near);
+  }, [onNear, network.id, near]);
   useEffect(() => () => onNear(network.id, false), [onNear, network.id]);
   const height = canvasHeight(network, props.fallback, props.height);
   const classes = [

@@ -14,6 +14,8 @@ export interface NodeView {
   halted: boolean;
   /** A function block: the instance name is shown (and edited) above it. */
   fb: boolean;
+  /** The last test run with coverage never executed or never energised it. */
+  coverage?: "never-executed" | "never-energised";
 }
 
 export interface FbdEditorApi {
@@ -27,8 +29,10 @@ export interface FbdEditorApi {
   commitEdit(id: string, text: string): void;
   cancelEdit(): void;
   pinMenu(node: FbdNode, pin: string, side: "in" | "out", event: MouseEvent): void;
-  /** Online double-click on a variable node (ON-08): a BOOL toggles, any other value opens the write dialog. */
+  /** Online double-click on a variable node (ON-08): prepares a value (a BOOL toggles, others ask for one). */
   valueDoubleClick(node: FbdNode): void;
+  /** Online double-click on a block pin's value: prepares a value for the FB instance's pin or the pin's variable. */
+  pinDoubleClick(node: FbdNode, side: "in" | "out", pin: string): void;
 }
 
 export const FbdEditorContext = createContext<FbdEditorApi | null>(null);

@@ -1,6 +1,6 @@
 // Right-click menu: the commands available for what was clicked, grouped like the toolbar.
 import { useEffect, useRef } from "react";
-import { available, COMMANDS, type CommandContext, type CommandGroup } from "./commands";
+import { available, commandKeys, COMMANDS, type CommandContext, type CommandGroup } from "./commands";
 
 const GROUP_ORDER: CommandGroup[] = ["insert", "mode", "edit", "clipboard", "network", "history"];
 
@@ -28,7 +28,7 @@ export function ContextMenu({ x, y, ctx, extra = [], onClose }: ContextMenuProps
     ? GROUP_ORDER.map((group) => COMMANDS.filter((c) => c.group === group && available(c, ctx))).filter((g) => g.length)
     : [];
   const items = groups.map((group) =>
-    group.map((c): MenuItem => ({ id: c.id, label: c.label, keys: c.keys, run: () => c.run(ctx!) })),
+    group.map((c): MenuItem => ({ id: c.id, label: c.label, keys: commandKeys(c), run: () => c.run(ctx!) })),
   );
   return <MenuList x={x} y={y} groups={extra.length ? [[...extra], ...items] : items} onClose={onClose} />;
 }

@@ -1,4 +1,4 @@
-import { fireEvent, render, screen, within } from "@testing-library/react";
+import { act, fireEvent, render, screen, within } from "@testing-library/react";
 import { useState } from "react";
 import { describe, expect, it, vi } from "vitest";
 import type { SymbolInfo } from "../../generated/api";
@@ -354,23 +354,38 @@ describe("read-only (online)", () => {
 });
 
 describe("shortcut help", () => {
-  it("lists every command with its keys, and the app's own keys", () => {
-    setup(motorMain, { extraShortcuts: [["F5", "Run"]] });
+  it("lists the keymap: every LD key with what it does, and the app's own keys", () => {
+    setup(motorMain);
     fireEvent.click(screen.getByRole("button", { name: "Shortcuts" }));
-    const rows = within(screen.getByRole("dialog", { name: "Keyboard shortcuts" }))
-      .getAllByRole("row")
-      .map((r) => r.textContent);
-    expect(rows).toEqual(
+    const help = screen.getByRole("dialog", { name: "Keyboard shortcuts" });
+    const rows = (section: string) =>
+      within(within(help).getByRole("region", { name: section }))
+        .getAllByRole("row")
+        .map((r) => r.textContent);
+    expect(rows("LD editor")).toEqual(
       expect.arrayContaining([
-        "CContact",
-        "Shift+CContact before",
-        "PParallel branch",
+        "CInsert a contact after the selection",
+        "Shift+CInsert a contact before the selection",
+        "PPut the selection in a parallel branch",
         "Ctrl+ZUndo",
-        "Ctrl+SSave the project",
-        "Alt+ArrowUpMove network up",
-        "F5Run",
+        "Alt+ArrowUpMove the network up",
+        "F9Toggle a breakpoint on the selected element or network",
+        "Alt+clickToggle a breakpoint on an element",
       ]),
     );
+    expect(rows("Everywhere")).toEqual(
+      expect.arrayContaining([
+        "Ctrl+SSave the project",
+        "F5Run; continue a halted scan",
+        "F7Force the prepared values",
+      ]),
+    );
+  });
+
+  it("shows each toolbar command's key from the keymap in its tooltip", () => {
+    setup(motorMain);
+    expect(screen.getByRole("button", { name: "Contact" }).getAttribute("title")).toBe("Contact (C)");
+    expect(screen.getByRole("button", { name: "Redo" }).getAttribute("title")).toBe("Redo (Ctrl+Y / Ctrl+Shift+Z)");
   });
 });
 
@@ -386,16 +401,51 @@ describe("history depth", () => {
 });
 
 describe("online commands (issue 7 online mode)", () => {
-  const actions = () => ({ toggle: vi.fn(), write: vi.fn(), force: vi.fn(), unforce: vi.fn(), watch: vi.fn() });
+  // prepare: a BOOL's prepared value toggles (true); any other variable needs a value asked for (false)
+  const actions = () => ({
+    prepare: vi.fn((operand: string) => !operand.endsWith(".CV")),
+    write: vi.fn(),
+    force: vi.fn(),
+    unforce: vi.fn(),
+    watch: vi.fn(),
+  });
 
-  it("toggles a BOOL operand on double-click instead of editing it", () => {
+  it("prepares a value on double-click instead of editing: a BOOL toggles, others ask for it (CODESYS)", () => {
     const onlineActions = actions();
     const t = setup(motorMain, { readOnly: "Go offline to edit", onlineActions });
     fireEvent.doubleClick(t.hit("start"));
     fireEvent.doubleClick(t.hit("motor"));
-    expect(onlineActions.toggle.mock.calls).toEqual([["Start"], ["Motor"]]);
+    // a contact's and a coil's variable is a BOOL: the editor says so, for before its first value arrives
+    expect(onlineActions.prepare.mock.calls).toEqual([
+      ["Start", undefined, "BOOL"],
+      ["Motor", undefined, "BOOL"],
+    ]);
     expect(screen.queryByRole("combobox")).toBeNull();
+    expect(screen.queryByRole("dialog")).toBeNull();
     expect(t.current()).toBe(motorMain);
+  });
+
+  it("prepares a box pin's value: the FB instance's pin (asking for a non-BOOL's value)", () => {
+    const onlineActions = actions();
+    const online = {
+      pins: {
+        ton: { "in:PT": { text: "T#5s", bool: null, forced: false, prepared: null } },
+        ctu: { "out:CV": { text: "3", bool: null, forced: false, prepared: null } },
+      },
+    };
+    const t = setup(motorMain, { readOnly: "Go offline to edit", onlineActions, online });
+    fireEvent.doubleClick(t.editor.querySelector('[data-id="ton"] [data-pin-value="in:PT"] text')!);
+    expect(onlineActions.prepare).toHaveBeenLastCalledWith("RunTimer.PT", undefined, "TIME");
+    fireEvent.doubleClick(t.editor.querySelector('[data-id="ctu"] [data-pin-value="out:CV"] text')!);
+    expect(onlineActions.prepare).toHaveBeenLastCalledWith("StartCounter.CV", undefined, "INT");
+    fireEvent.change(
+      within(screen.getByRole("dialog", { name: "Prepare a value for StartCounter.CV" })).getByLabelText("Value"),
+      {
+        target: { value: "5" },
+      },
+    );
+    act(() => void fireEvent.submit(screen.getByRole("dialog", { name: "Prepare a value for StartCounter.CV" })));
+    expect(onlineActions.prepare).toHaveBeenLastCalledWith("StartCounter.CV", "5");
   });
 
   it("writes, forces, releases and watches the clicked element's variable from the context menu", () => {

@@ -25,8 +25,8 @@ import type { DebugMarks, DiagramHandlers, OnlineView, Selection, Target } from 
 import { BoxPicker } from "./BoxPicker";
 import {
   available,
+  commandKeys,
   COMMANDS,
-  commandForKey,
   insert,
   selectedNetwork,
   type CommandContext,
@@ -41,6 +41,8 @@ import { EditorNotices } from "./EditorNotices";
 import { clipboardActions, type LastClip } from "./systemClipboard";
 import { OperandValuePrompt, type ValueRequest } from "./ValuePrompt";
 import { onlineOperandItems } from "../../online/operandCommands";
+import { commandsFor, keysOf } from "../../keys/keymap";
+import { ShortcutHelp } from "../../keys/ShortcutHelp";
 import "../ld.css";
 
 export interface LdEditorProps {
@@ -57,12 +59,10 @@ export interface LdEditorProps {
   /** Controls next to the read-only reason (online: "Go offline to edit", the instance shown). */
   readOnlyActions?: ReactNode;
   onDeclareVariable?(declaration: VariableDeclaration): void;
-  /** Online commands on operands (double-click toggles a BOOL, the context menu writes and forces). */
+  /** Online commands on operands (double-click prepares a value, the context menu writes and forces). */
   onlineActions?: LdOnlineActions;
   /** Told which networks are rendered, so online mode subscribes only to those. */
   onVisibleChange?(networks: readonly string[]): void;
-  /** More rows for the shortcut help (the app's own keys, e.g. the simulation commands). */
-  extraShortcuts?: readonly [string, string][];
   /** Select and reveal a network or element (a diagnostic was clicked); `seq` repeats a jump to the same place. */
   focus?: { network?: string | null; element?: string | null; seq: number } | null;
   /** Breakpoints: drawn from `marks`; a network number click, Alt+click on an element, F9 or the context menu toggle them. */
@@ -77,7 +77,12 @@ export interface LdDebugging {
 
 /** What the diagram can ask of a running simulation, by operand text (the caller maps it to a path). */
 export interface LdOnlineActions {
-  toggle(operand: string): void;
+  /**
+   * Prepares a value (double-click, CODESYS): `text` when given, else a BOOL's prepared value toggles;
+   * false when the variable is not a BOOL and a value must be asked for. `type`: what the diagram
+   * knows of it (a contact's variable is a BOOL), for before its first value arrives.
+   */
+  prepare(operand: string, text?: string, type?: string): boolean;
   write(operand: string, text: string): void;
   force(operand: string, value: boolean | string): void;
   unforce(operand: string): void;
@@ -98,6 +103,11 @@ const TOOLBAR: { group: CommandGroup; ids: string[] }[] = [
   { group: "clipboard", ids: ["copy", "cut", "paste"] },
   { group: "history", ids: ["undo", "redo"] },
 ];
+
+/** The keys of the LD scope that are not editing commands (COMMANDS): selection and breakpoints. */
+export const LD_EDITOR_KEYS = ["move-selection", "extend-selection", "clear-selection", "toggle-breakpoint"] as const;
+type LdEditorKey = (typeof LD_EDITOR_KEYS)[number];
+const CLIPBOARD_COMMANDS: ReadonlySet<string> = new Set(["copy", "cut", "paste"]);
 
 const NO_LIBRARY: readonly LibraryEntry[] = [];
 const NO_SYMBOLS: readonly SymbolInfo[] = [];
@@ -164,6 +174,34 @@ function variableOf(body: LdBody, id: string): string | null {
   return text.trim() || null;
 }
 
+/**
+ * The variable a double-click online prepares a value for, with its type when the diagram knows it:
+ * a contact's or coil's (a BOOL), a compare's left side, or at a box pin's value (`pin`: its key,
+ * `in:PT`) the FB instance's pin or the pin's variable (the pin's declared type).
+ */
+export function valueOperand(
+  body: LdBody,
+  id: string,
+  pin: string | null,
+  library: (call: string) => LibraryEntry | undefined,
+): { operand: string; type?: string } | null {
+  const e = locate(body, id)?.element;
+  if (e?.type !== "box" || !pin) {
+    const operand = variableOf(body, id);
+    return operand ? { operand, type: e?.type === "contact" || e?.type === "coil" ? "BOOL" : undefined } : null;
+  }
+  const [side, name] = pin.split(":") as ["in" | "out", string];
+  const entry = library(e.call);
+  const declared = entry
+    ? [...entry.inputs, ...entry.in_outs, ...entry.outputs].find((p) => p.name.toUpperCase() === name)
+    : undefined;
+  if (entry?.kind === "function_block" && e.instance?.trim() && declared)
+    return { operand: `${e.instance.trim()}.${name}`, type: declared.type };
+  const pins = side === "in" ? (e.inputs ?? {}) : (e.outputs ?? {});
+  const operand = Object.entries(pins).find(([n]) => n.toUpperCase() === name)?.[1];
+  return typeof operand === "string" && operand.trim() ? { operand: operand.trim(), type: declared?.type } : null;
+}
+
 const fieldLabel = (field: OperandField) =>
   field.kind === "input" || field.kind === "output"
     ? `Pin ${field.pin}`
@@ -184,7 +222,6 @@ export function LdEditor({
   onlineActions,
   onVisibleChange,
   focus,
-  extraShortcuts = [],
   debugging,
 }: LdEditorProps) {
   const body = history.present;
@@ -205,7 +242,8 @@ export function LdEditor({
 
   const byName = useMemo(() => new Map(library.map((e) => [e.name.toUpperCase(), e])), [library]);
   const lookup = useCallback((call: string) => byName.get(call.toUpperCase()), [byName]);
-  const layout = useMemo(() => layoutBody(body, { library: lookup }), [body, lookup]);
+  const values = online !== undefined;
+  const layout = useMemo(() => layoutBody(body, { library: lookup, values }), [body, lookup, values]);
   const known = useMemo(() => symbolNames(symbols), [symbols]);
 
   // A selection naming elements an undo removed is dropped rather than left dangling.
@@ -223,15 +261,32 @@ export function LdEditor({
     setSelection(next);
     setAnchor(newAnchor !== undefined ? newAnchor : next?.kind === "elements" ? next.ids[0]! : null);
   }, []);
+  /**
+   * The network to scroll into view: where the keyboard, an edit or a focus request moved the
+   * selection. A click does not scroll (the diagram would move under the pointer between the two
+   * clicks of a double-click).
+   */
+  const [reveal, setReveal] = useState<string | null>(null);
+  const selectAndReveal = useCallback(
+    (next: Selection | null, of: LdBody, newAnchor?: string | null) => {
+      select(next, newAnchor);
+      setReveal(selectedNetwork({ body: of, selection: next }) ?? null);
+    },
+    [select],
+  );
 
-  useEffect(() => {
-    if (!focus) return;
-    if (focus.element && locate(body, focus.element)) select({ kind: "elements", ids: [focus.element] });
+  // Only a new focus request moves the selection (while rendering, as it arrives), not later edits of the body.
+  const focusSeq = focus?.seq ?? null;
+  const [focusSeen, setFocusSeen] = useState<number | null>(null);
+  if (focus && focusSeq !== focusSeen) {
+    setFocusSeen(focusSeq);
+    if (focus.element && locate(body, focus.element)) selectAndReveal({ kind: "elements", ids: [focus.element] }, body);
     else if (focus.network && networksOf(body).some((n) => n.id === focus.network))
-      select({ kind: "network", id: focus.network });
-    root.current?.focus();
-    // Only a new focus request moves the selection, not later edits of the body.
-  }, [focus?.seq]);
+      selectAndReveal({ kind: "network", id: focus.network }, body);
+  }
+  useEffect(() => {
+    if (focusSeq !== null) root.current?.focus();
+  }, [focusSeq]);
 
   const apply = useCallback(
     (result: EditResult, then?: "edit") => {
@@ -245,10 +300,10 @@ export function LdEditor({
       const networkIds = new Set(networksOf(result.body).map((n) => n.id));
       const [first] = result.select;
       if (first === undefined) select(null);
-      else if (networkIds.has(first)) select({ kind: "network", id: first });
-      else select({ kind: "elements", ids: result.select });
+      else if (networkIds.has(first)) selectAndReveal({ kind: "network", id: first }, result.body);
+      else selectAndReveal({ kind: "elements", ids: result.select }, result.body);
     },
-    [history, onHistoryChange, select],
+    [history, onHistoryChange, select, selectAndReveal],
   );
 
   /** Opens the operand editor over `field` of element `id`. */
@@ -269,12 +324,12 @@ export function LdEditor({
     [layout],
   );
 
-  useEffect(() => {
-    if (!pendingEdit) return;
+  // The new element is laid out in this render: its operand editor opens now.
+  if (pendingEdit && locate(body, pendingEdit)) {
     setPendingEdit(null);
     const field = mainField(body, pendingEdit, lookup);
     if (field) editField(pendingEdit, field);
-  }, [pendingEdit, body, lookup, editField]);
+  }
 
   const commitOperand = (id: string, field: OperandField, text: string) => {
     setEditing(null);
@@ -448,10 +503,12 @@ export function LdEditor({
       select({ kind: "elements", ids: [id] });
       editField(id, field);
     },
-    onDoubleClick: (target) => {
+    onDoubleClick: (target, event) => {
       if (onlineActions && target.kind === "element") {
-        const e = locate(body, target.id)?.element;
-        if ((e?.type === "contact" || e?.type === "coil") && e.var.trim()) onlineActions.toggle(e.var.trim());
+        const pin = (event.target as Element).closest?.("[data-pin-value]")?.getAttribute("data-pin-value");
+        const value = valueOperand(body, target.id, pin ?? null, lookup);
+        if (value && !onlineActions.prepare(value.operand, undefined, value.type))
+          setValuePrompt({ operand: value.operand, action: "prepare" });
         return;
       }
       if (readOnly) return;
@@ -483,37 +540,43 @@ export function LdEditor({
     return network ? { network } : null;
   };
 
-  const onKeyDown = (event: KeyboardEvent<HTMLDivElement>) => {
-    if (editing || picker || (event.target as HTMLElement).closest("input, textarea, .ld-context-menu")) return;
-    const direction = ARROWS[event.key];
-    if (direction && !event.altKey && !event.ctrlKey && !event.metaKey) {
-      event.preventDefault();
+  /** The editor's keys besides its commands (src/keys/keymap.ts, scope "ld"); each says whether it acted. */
+  const keyActions = (event: KeyboardEvent<HTMLDivElement>): Record<LdEditorKey, () => boolean> => ({
+    "move-selection": () => {
+      selectAndReveal(navigate(body, layout, liveSelection, ARROWS[event.key]!), body);
+      return true;
+    },
+    "extend-selection": () => {
       const focus = liveSelection?.kind === "elements" ? liveSelection.ids[liveSelection.ids.length - 1] : undefined;
-      if (event.shiftKey && anchor && focus && (direction === "left" || direction === "right")) {
-        const next = extend(body, anchor, focus, direction);
-        select({ kind: "elements", ids: ops.rangeIds(body, anchor, next) }, anchor);
-      } else {
-        select(navigate(body, layout, liveSelection, direction));
-      }
-      return;
-    }
-    if (event.key === "F9" && debugging && !event.altKey && !event.ctrlKey && !event.metaKey && !event.shiftKey) {
-      event.preventDefault();
-      const target = breakpointTarget();
-      if (target) debugging.toggle(target);
-      return;
-    }
-    if (event.key === "Escape") {
+      if (!anchor || !focus) return false;
+      const next = extend(body, anchor, focus, ARROWS[event.key] as "left" | "right");
+      selectAndReveal({ kind: "elements", ids: ops.rangeIds(body, anchor, next) }, body, anchor);
+      return true;
+    },
+    "clear-selection": () => {
       setMenu(null);
       select(null);
-      return;
-    }
-    // Copy, cut and paste arrive as clipboard events (below), which reach the system clipboard.
-    if ((event.ctrlKey || event.metaKey) && ["c", "x", "v"].includes(event.key.toLowerCase())) return;
-    const command = commandForKey(event, ctx);
-    if (command) {
-      event.preventDefault();
-      command.run(ctx);
+      return true;
+    },
+    "toggle-breakpoint": () => {
+      const target = debugging ? breakpointTarget() : null;
+      if (target) debugging!.toggle(target);
+      return debugging !== undefined;
+    },
+  });
+
+  const onKeyDown = (event: KeyboardEvent<HTMLDivElement>) => {
+    if (editing || picker || (event.target as HTMLElement).closest("input, textarea, .ld-context-menu")) return;
+    const actions = keyActions(event);
+    for (const id of commandsFor("ld", event)) {
+      // Copy, cut and paste arrive as clipboard events (below), which reach the system clipboard.
+      if (CLIPBOARD_COMMANDS.has(id)) return;
+      const command = id in actions ? null : COMMANDS.find((c) => c.id === id);
+      const done = command ? available(command, ctx) && (command.run(ctx), true) : actions[id as LdEditorKey]();
+      if (done) {
+        event.preventDefault();
+        return;
+      }
     }
   };
 
@@ -526,7 +589,7 @@ export function LdEditor({
             {
               id: "toggle-breakpoint",
               label: "element" in target ? "Toggle breakpoint on element" : "Toggle breakpoint on network",
-              keys: "F9",
+              keys: keysOf("ld", "toggle-breakpoint"),
               run: () => debugging.toggle(target),
             },
           ]
@@ -540,7 +603,6 @@ export function LdEditor({
     ];
   };
 
-  const reveal = selectedNetwork({ body, selection: liveSelection }) ?? null;
   const editorOverlay = editing ? (
     editing.kind === "operand" ? (
       <OperandEditor
@@ -609,7 +671,7 @@ export function LdEditor({
                   key={id}
                   type="button"
                   disabled={!available(command, ctx)}
-                  title={command.keys ? `${command.label} (${command.keys})` : command.label}
+                  title={commandKeys(command) ? `${command.label} (${commandKeys(command)})` : command.label}
                   onMouseDown={(e) => e.preventDefault()}
                   onClick={() => command.run(ctx)}
                 >
@@ -623,7 +685,7 @@ export function LdEditor({
           Shortcuts
         </button>
       </div>
-      {help ? <ShortcutHelp extra={extraShortcuts} onClose={() => setHelp(false)} /> : null}
+      {help ? <ShortcutHelp scopes={["ld", "app"]} onClose={() => setHelp(false)} /> : null}
       <EditorNotices
         readOnly={readOnly}
         readOnlyActions={readOnlyActions}
@@ -674,42 +736,6 @@ export function LdEditor({
           }}
         />
       ) : null}
-    </div>
-  );
-}
-
-/** Keys that are not commands: selection and saving. */
-const OTHER_KEYS: [string, string][] = [
-  ["Arrow keys", "Move the selection through the rung and between networks"],
-  ["Shift+Arrow left/right", "Extend the selection along a branch"],
-  ["Shift+click", "Select a run of elements"],
-  ["Escape", "Clear the selection"],
-  ["Ctrl+S", "Save the project"],
-];
-
-function ShortcutHelp({ extra, onClose }: { extra: readonly [string, string][]; onClose(): void }) {
-  const rows: [string, string][] = [
-    ...COMMANDS.filter((c) => c.keys).map((c): [string, string] => [c.keys!, c.label]),
-    ...OTHER_KEYS,
-    ...extra,
-  ];
-  return (
-    <div className="ld-help" role="dialog" aria-label="Keyboard shortcuts">
-      <table>
-        <tbody>
-          {rows.map(([keys, label]) => (
-            <tr key={`${keys}:${label}`}>
-              <td>
-                <kbd>{keys}</kbd>
-              </td>
-              <td>{label}</td>
-            </tr>
-          ))}
-        </tbody>
-      </table>
-      <button type="button" onClick={onClose}>
-        Close
-      </button>
     </div>
   );
 }

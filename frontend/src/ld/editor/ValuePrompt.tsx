@@ -51,11 +51,17 @@ export function ValuePrompt({ title, onSubmit, onCancel }: ValuePromptProps) {
   );
 }
 
-/** A pending "write value…" / "force value…" request on an operand, as the context menus make it. */
+/** A pending "write value…" / "force value…" request (context menus) or a value to prepare (double-click). */
 export interface ValueRequest {
   operand: string;
-  action: "write" | "force";
+  action: "write" | "force" | "prepare";
 }
+
+const TITLES: Record<ValueRequest["action"], string> = {
+  write: "Write",
+  force: "Force",
+  prepare: "Prepare a value for",
+};
 
 /** The prompt for `request`, sending the value through `commands`; `onDone` runs after OK or Cancel. */
 export function OperandValuePrompt({
@@ -64,16 +70,17 @@ export function OperandValuePrompt({
   onDone,
 }: {
   request: ValueRequest;
-  commands: Pick<LdOnlineActions, "write" | "force">;
+  commands: Pick<LdOnlineActions, "write" | "force" | "prepare">;
   onDone(): void;
 }) {
   return (
     <ValuePrompt
-      title={`${request.action === "write" ? "Write" : "Force"} ${request.operand}`}
+      title={`${TITLES[request.action]} ${request.operand}`}
       onSubmit={(text) => {
         onDone();
         if (request.action === "write") commands.write(request.operand, text);
-        else commands.force(request.operand, text);
+        else if (request.action === "force") commands.force(request.operand, text);
+        else commands.prepare(request.operand, text);
       }}
       onCancel={onDone}
     />

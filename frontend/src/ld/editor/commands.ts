@@ -1,9 +1,11 @@
 // Every editor action once: toolbar buttons, context menu items and keyboard shortcuts are all
-// drawn from this table, so each action is reachable all three ways with the same rules.
+// drawn from this table, so each action is reachable all three ways with the same rules. The keys
+// are the keymap's (src/keys/keymap.ts, scope "ld"), by command id.
 import { locate, networksOf, type CoilMode, type ContactMode, type LdBody } from "../model";
 import * as ops from "../ops";
 import type { EditResult, ElementSpec } from "../ops";
 import type { Selection } from "../view/types";
+import { commandsFor, keysOf, type KeyPress } from "../../keys/keymap";
 
 export interface CommandContext {
   body: LdBody;
@@ -29,29 +31,10 @@ export interface Command {
   id: string;
   label: string;
   group: CommandGroup;
-  /** Shortcut as shown to the user, e.g. "Ctrl+Z"; also what the keyboard handler matches. */
-  keys?: string;
   /** Edits the model (disabled while read-only). */
   edits: boolean;
   enabled(ctx: CommandContext): boolean;
   run(ctx: CommandContext): void;
-}
-
-type KeyPress = Pick<KeyboardEvent, "key" | "ctrlKey" | "metaKey" | "shiftKey" | "altKey">;
-
-/** Whether a key press is the shortcut `keys` ("Ctrl+Shift+Z", "Alt+ArrowUp", "Delete / Backspace", "C", "Space"). */
-export function matches(keys: string, event: KeyPress): boolean {
-  return keys.split(" / ").some((alternative) => {
-    const parts = alternative.split("+");
-    const key = parts[parts.length - 1] === "Space" ? " " : parts[parts.length - 1]!;
-    const mods = new Set(parts.slice(0, -1));
-    return (
-      event.key.toLowerCase() === key.toLowerCase() &&
-      mods.has("Ctrl") === (event.ctrlKey || event.metaKey) &&
-      mods.has("Alt") === event.altKey &&
-      mods.has("Shift") === event.shiftKey
-    );
-  });
 }
 
 const selectedIds = (s: Selection | null): string[] => (s?.kind === "elements" ? s.ids : []);
@@ -96,14 +79,12 @@ export function insert(
 const insertCommand = (
   id: string,
   label: string,
-  keys: string,
   spec: () => ElementSpec,
   side: "before" | "after" = "after",
 ): Command => ({
   id,
   label,
   group: "insert",
-  keys,
   edits: true,
   enabled: hasTarget,
   run: (ctx) => ctx.apply(insert(ctx, spec(), side), "edit"),
@@ -125,20 +106,18 @@ const COIL_LABELS: Record<CoilMode, string> = {
 };
 
 const modeCommands: Command[] = [
-  ...(Object.keys(CONTACT_LABELS) as ContactMode[]).map((mode, i): Command => ({
+  ...(Object.keys(CONTACT_LABELS) as ContactMode[]).map((mode): Command => ({
     id: `contact-mode-${mode}`,
     label: CONTACT_LABELS[mode],
     group: "mode",
-    keys: String(i + 1),
     edits: true,
     enabled: (ctx) => single(ctx)?.type === "contact",
     run: (ctx) => ctx.apply(ops.setMode(ctx.body, selectedIds(ctx.selection)[0]!, mode)),
   })),
-  ...(Object.keys(COIL_LABELS) as CoilMode[]).map((mode, i): Command => ({
+  ...(Object.keys(COIL_LABELS) as CoilMode[]).map((mode): Command => ({
     id: `coil-mode-${mode}`,
     label: COIL_LABELS[mode],
     group: "mode",
-    keys: String(i + 1),
     edits: true,
     enabled: (ctx) => single(ctx)?.type === "coil",
     run: (ctx) => ctx.apply(ops.setMode(ctx.body, selectedIds(ctx.selection)[0]!, mode)),
@@ -151,27 +130,25 @@ function networkIndex(ctx: CommandContext): number {
 }
 
 export const COMMANDS: Command[] = [
-  insertCommand("contact", "Contact", "C", () => ops.contact("no")),
-  insertCommand("contact-before", "Contact before", "Shift+C", () => ops.contact("no"), "before"),
-  insertCommand("contact-nc", "NC contact", "N", () => ops.contact("nc")),
-  insertCommand("coil", "Coil", "O", () => ops.coil("normal")),
-  insertCommand("compare", "Compare", "M", () => ops.compare("GT")),
+  insertCommand("contact", "Contact", () => ops.contact("no")),
+  insertCommand("contact-before", "Contact before", () => ops.contact("no"), "before"),
+  insertCommand("contact-nc", "NC contact", () => ops.contact("nc")),
+  insertCommand("coil", "Coil", () => ops.coil("normal")),
+  insertCommand("compare", "Compare", () => ops.compare("GT")),
   {
     id: "box",
     label: "Box…",
     group: "insert",
-    keys: "B",
     edits: true,
     enabled: hasTarget,
     run: (ctx) => ctx.openBoxPicker(),
   },
-  insertCommand("jump", "Jump", "J", () => ops.jump("")),
-  insertCommand("return", "Return", "R", () => ops.ret()),
+  insertCommand("jump", "Jump", () => ops.jump("")),
+  insertCommand("return", "Return", () => ops.ret()),
   {
     id: "parallel",
     label: "Parallel branch",
     group: "insert",
-    keys: "P",
     edits: true,
     enabled: (ctx) => selectedIds(ctx.selection).length > 0,
     run: (ctx) => ctx.apply(ops.wrapInParallel(ctx.body, selectedIds(ctx.selection))),
@@ -180,7 +157,6 @@ export const COMMANDS: Command[] = [
     id: "add-branch",
     label: "Add branch",
     group: "insert",
-    keys: "Shift+P",
     edits: true,
     enabled: (ctx) => single(ctx)?.type === "parallel",
     run: (ctx) => ctx.apply(ops.addBranch(ctx.body, selectedIds(ctx.selection)[0]!)),
@@ -189,7 +165,6 @@ export const COMMANDS: Command[] = [
     id: "edit-operand",
     label: "Edit operand",
     group: "edit",
-    keys: "Enter / F2",
     edits: true,
     enabled: (ctx) => {
       const e = single(ctx);
@@ -201,7 +176,6 @@ export const COMMANDS: Command[] = [
     id: "cycle-mode",
     label: "Next mode",
     group: "edit",
-    keys: "Space",
     edits: true,
     enabled: (ctx) => ["contact", "coil", "compare"].includes(single(ctx)?.type ?? ""),
     run: (ctx) => ctx.apply(ops.cycleMode(ctx.body, selectedIds(ctx.selection)[0]!)),
@@ -210,7 +184,6 @@ export const COMMANDS: Command[] = [
     id: "toggle-en",
     label: "EN/ENO",
     group: "edit",
-    keys: "E",
     edits: true,
     enabled: (ctx) => single(ctx)?.type === "box",
     run: (ctx) => ctx.apply(ops.toggleEn(ctx.body, selectedIds(ctx.selection)[0]!)),
@@ -219,7 +192,6 @@ export const COMMANDS: Command[] = [
     id: "delete",
     label: "Delete",
     group: "edit",
-    keys: "Delete / Backspace",
     edits: true,
     enabled: (ctx) => ctx.selection?.kind === "elements" || ctx.selection?.kind === "network",
     run: (ctx) => {
@@ -234,7 +206,6 @@ export const COMMANDS: Command[] = [
     id: "network-add",
     label: "New network below",
     group: "network",
-    keys: "Ctrl+Enter",
     edits: true,
     enabled: () => true,
     run: (ctx) => {
@@ -246,7 +217,6 @@ export const COMMANDS: Command[] = [
     id: "network-add-above",
     label: "New network above",
     group: "network",
-    keys: "Ctrl+Shift+Enter",
     edits: true,
     enabled: () => true,
     run: (ctx) => ctx.apply(ops.addNetwork(ctx.body, Math.max(0, networkIndex(ctx)))),
@@ -255,7 +225,6 @@ export const COMMANDS: Command[] = [
     id: "network-duplicate",
     label: "Duplicate network",
     group: "network",
-    keys: "Ctrl+D",
     edits: true,
     enabled: (ctx) => selectedNetwork(ctx) !== undefined,
     run: (ctx) => ctx.apply(ops.duplicateNetwork(ctx.body, selectedNetwork(ctx)!)),
@@ -264,7 +233,6 @@ export const COMMANDS: Command[] = [
     id: "network-up",
     label: "Move network up",
     group: "network",
-    keys: "Alt+ArrowUp",
     edits: true,
     enabled: (ctx) => networkIndex(ctx) > 0,
     run: (ctx) => ctx.apply(ops.moveNetwork(ctx.body, selectedNetwork(ctx)!, networkIndex(ctx) - 1)),
@@ -273,7 +241,6 @@ export const COMMANDS: Command[] = [
     id: "network-down",
     label: "Move network down",
     group: "network",
-    keys: "Alt+ArrowDown",
     edits: true,
     enabled: (ctx) => {
       const i = networkIndex(ctx);
@@ -285,7 +252,6 @@ export const COMMANDS: Command[] = [
     id: "network-label",
     label: "Network label…",
     group: "network",
-    keys: "L",
     edits: true,
     enabled: (ctx) => selectedNetwork(ctx) !== undefined,
     run: (ctx) => ctx.editNetwork("label"),
@@ -294,7 +260,6 @@ export const COMMANDS: Command[] = [
     id: "network-comment",
     label: "Network comment…",
     group: "network",
-    keys: "K",
     edits: true,
     enabled: (ctx) => selectedNetwork(ctx) !== undefined,
     run: (ctx) => ctx.editNetwork("comment"),
@@ -303,7 +268,6 @@ export const COMMANDS: Command[] = [
     id: "network-delete",
     label: "Delete network",
     group: "network",
-    keys: "Ctrl+Delete",
     edits: true,
     enabled: (ctx) => selectedNetwork(ctx) !== undefined,
     run: (ctx) => ctx.apply(ops.deleteNetworks(ctx.body, [selectedNetwork(ctx)!])),
@@ -312,7 +276,6 @@ export const COMMANDS: Command[] = [
     id: "copy",
     label: "Copy",
     group: "clipboard",
-    keys: "Ctrl+C",
     edits: false,
     enabled: (ctx) => ctx.selection?.kind === "elements" || ctx.selection?.kind === "network",
     run: (ctx) => ctx.copy(false),
@@ -321,7 +284,6 @@ export const COMMANDS: Command[] = [
     id: "cut",
     label: "Cut",
     group: "clipboard",
-    keys: "Ctrl+X",
     edits: true,
     enabled: (ctx) => ctx.selection?.kind === "elements" || ctx.selection?.kind === "network",
     run: (ctx) => ctx.copy(true),
@@ -330,7 +292,6 @@ export const COMMANDS: Command[] = [
     id: "paste",
     label: "Paste",
     group: "clipboard",
-    keys: "Ctrl+V",
     edits: true,
     enabled: () => true,
     run: (ctx) => ctx.paste(),
@@ -339,7 +300,6 @@ export const COMMANDS: Command[] = [
     id: "undo",
     label: "Undo",
     group: "history",
-    keys: "Ctrl+Z",
     edits: true,
     enabled: (ctx) => ctx.canUndo,
     run: (ctx) => ctx.undo(),
@@ -348,7 +308,6 @@ export const COMMANDS: Command[] = [
     id: "redo",
     label: "Redo",
     group: "history",
-    keys: "Ctrl+Y / Ctrl+Shift+Z",
     edits: true,
     enabled: (ctx) => ctx.canRedo,
     run: (ctx) => ctx.redo(),
@@ -359,7 +318,12 @@ export const COMMANDS: Command[] = [
 export const available = (command: Command, ctx: CommandContext): boolean =>
   (!command.edits || !ctx.readOnly) && command.enabled(ctx);
 
-/** The command a key press means in this context, if any. */
+/** The command a key press means in this context, if any (of those the keymap binds to it, the first available). */
 export function commandForKey(event: KeyPress, ctx: CommandContext): Command | undefined {
-  return COMMANDS.find((c) => c.keys !== undefined && matches(c.keys, event) && available(c, ctx));
+  return commandsFor("ld", event)
+    .map((id) => COMMANDS.find((c) => c.id === id))
+    .find((c) => c !== undefined && available(c, ctx));
 }
+
+/** A command's keys as tooltips and menus show them ("" without). */
+export const commandKeys = (command: Pick<Command, "id">): string => keysOf("ld", command.id);

@@ -5,8 +5,8 @@ import { layoutBody } from "../layout";
 import type { LdBody, LdElement } from "../model";
 import { LdDiagram, type LdDiagramProps } from "./LdDiagram";
 
-function draw(body: LdBody, props: Partial<LdDiagramProps> = {}) {
-  const layout = layoutBody(body, { library });
+function draw(body: LdBody, props: Partial<LdDiagramProps> & { values?: boolean } = {}) {
+  const layout = layoutBody(body, { library, values: props.values });
   const view = render(<LdDiagram body={body} layout={layout} selection={null} {...props} />);
   const all = (selector: string) => [...view.container.querySelectorAll(selector)];
   const one = (selector: string) => {
@@ -97,14 +97,24 @@ describe("LdDiagram rendering", () => {
     ).toEqual(["lamp"]);
   });
 
-  it("colours power flow, dims elements not executed, marks forced variables and shows values", () => {
+  it("colours power flow, dims elements not executed, badges variable values and marks forced ones (issue 17)", () => {
+    const shown = (text: string, forced = false, prepared: string | null = null) => ({
+      text,
+      bool: text === "TRUE" ? true : text === "FALSE" ? false : null,
+      forced,
+      prepared,
+    });
     const online = {
       power: { start: false, seal: true, start_or_motor: true, stop: true, motor: true, ton: false },
       executed: { blink: false },
-      forced: new Set(["STOP"]),
-      values: { "T#5S": 5000, STARTCOUNT: 42, START: false },
+      operands: {
+        STOP: shown("FALSE", true),
+        START: shown("FALSE", false, "TRUE"),
+        MOTOR: shown("TRUE"),
+        STARTCOUNT: shown("42"),
+      },
     };
-    const { one, all } = draw(motorMain, { online });
+    const { one, all } = draw(motorMain, { online, values: true });
     expect(one('[data-id="seal"]').classList.contains("ld-on")).toBe(true);
     expect(one('[data-id="start"]').classList.contains("ld-off")).toBe(true);
     expect(one('[data-id="motor_on"]').classList.contains("ld-on")).toBe(false);
@@ -112,10 +122,49 @@ describe("LdDiagram rendering", () => {
     const sealWire = one('[data-network="seal_in"] line.ld-wire.ld-off');
     expect(sealWire).toBeTruthy();
     expect(one('[data-id="blink"]').classList.contains("ld-not-executed")).toBe(true);
+    // Contacts and coils: their variable's value in a badge, apart from the power flow (Stop is TRUE: power passes).
+    expect(one('[data-id="motor"] .ld-badge').getAttribute("class")).toBe("ld-badge ld-badge-true");
+    expect(one('[data-id="start"] .ld-badge').getAttribute("data-value")).toBe("FALSE");
+    expect(one('[data-id="start"] .ld-prepared').textContent).toBe("<TRUE>");
+    // Forced: an orange ground under the name, an orange frame and a red F on the value.
     expect(one('[data-id="stop"] .ld-operand').classList.contains("ld-forced")).toBe(true);
-    expect(one('[data-id="stop"] .ld-forced-mark').textContent).toBe("F");
-    expect(one('[data-id="ctu"] [data-field="output:CV"] .ld-value').textContent).toBe("42");
-    expect(all('[data-id="start"] .ld-value')).toEqual([]); // BOOL values show as colour, not as a label
+    expect(all('[data-id="stop"] .ld-forced-ground')).toHaveLength(1);
+    expect(one('[data-id="stop"] .ld-badge').classList.contains("ld-badge-forced")).toBe(true);
+    expect(one('[data-id="stop"] .ld-forced-badge').textContent).toBe("F");
+    expect(all('[data-id="seal"] .ld-forced-badge')).toEqual([]);
+  });
+
+  it("shows every box pin's value next to its name, a power-fed input from the power feeding it", () => {
+    const shown = (text: string) => ({ text, bool: null, forced: false, prepared: null });
+    const online = {
+      power: { motor_on: true, start_edge: false, reset_count: false },
+      pins: { ton: { "in:PT": shown("T#5s"), "out:ET": shown("T#2s300ms") } },
+    };
+    const { one, all } = draw(motorMain, { online, values: true });
+    const values = (id: string) =>
+      Object.fromEntries(
+        all(`[data-id="${id}"] [data-pin-value]`).map((e) => [
+          e.getAttribute("data-pin-value"),
+          e.querySelector(".ld-badge")!.getAttribute("data-value"),
+        ]),
+      );
+    expect(values("ton")).toEqual({ "in:IN": "TRUE", "in:PT": "T#5s", "out:ET": "T#2s300ms" });
+    expect(values("ctu")).toEqual({ "in:CU": "FALSE", "in:R": "FALSE" }); // the rung, and the series into R
+    // The value sits inside the box, right of an input's name and left of an output's.
+    const x = (sel: string) => Number(one(sel).getAttribute("x"));
+    const box = one('[data-id="ton"] .ld-box-body');
+    const [left, width] = [Number(box.getAttribute("x")), Number(box.getAttribute("width"))];
+    expect(x('[data-id="ton"] [data-pin-value="in:PT"] rect')).toBeGreaterThan(left);
+    const et = one('[data-id="ton"] [data-pin-value="out:ET"] rect');
+    expect(Number(et.getAttribute("x")) + Number(et.getAttribute("width"))).toBeLessThan(left + width);
+  });
+
+  it("leaves room for the values online: boxes wider, rows taller", () => {
+    const offline = layoutBody(motorMain, { library });
+    const online = layoutBody(motorMain, { library, values: true });
+    const body = (l: typeof offline, id: string) => l.networks.flatMap((n) => n.elements).find((e) => e.id === id)!;
+    expect(body(online, "ton").body!.width).toBeGreaterThanOrEqual(body(offline, "ton").body!.width + 2 * 60);
+    expect(body(online, "stop").height).toBe(body(offline, "stop").height + 12);
   });
 
   it("marks an empty required operand (a function input) as missing, an empty optional one (FB input, output) as muted", () => {

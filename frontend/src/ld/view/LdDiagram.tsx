@@ -1,7 +1,7 @@
 // The scrolling, virtualised LD diagram: networks are stacked at the offsets the layout computed,
 // and only those intersecting the viewport (plus a margin) are rendered, so a 1,000-network POU
 // opens and scrolls as fast as a small one.
-import { useEffect, useLayoutEffect, useMemo, useRef, useState, type ReactNode } from "react";
+import { useCallback, useEffect, useLayoutEffect, useMemo, useRef, useState, type ReactNode } from "react";
 import type { Diagnostic } from "../../generated/api";
 import type { LdLayout, NetworkLayout } from "../layout";
 import { locate, networkOfSeries, type LdBody } from "../model";
@@ -94,21 +94,28 @@ export function LdDiagram({
     return () => observer.disconnect();
   }, [fallbackHeight]);
 
-  /** Scrolls the least that brings network `id` into view. */
-  const scrollTo = (id: string | null | undefined) => {
-    const el = scroller.current;
-    const target = id ? layout.networks.find((n) => n.network.id === id) : undefined;
-    if (!el || !target) return;
-    const height = el.clientHeight || fallbackHeight;
-    if (target.top < el.scrollTop) el.scrollTop = target.top;
-    else if (target.top + target.height > el.scrollTop + height)
-      el.scrollTop = Math.max(0, target.top + target.height - height);
-    setViewport({ top: el.scrollTop, height });
-  };
-  useEffect(() => scrollTo(reveal), [reveal, layout, fallbackHeight]);
+  /** Scrolls the least that brings network `id` into view, and reads the scroll position back. */
+  const scrollTo = useCallback(
+    (id: string | null | undefined) => {
+      const el = scroller.current;
+      const target = id ? layout.networks.find((n) => n.network.id === id) : undefined;
+      if (!el || !target) return;
+      const height = el.clientHeight || fallbackHeight;
+      if (target.top < el.scrollTop) el.scrollTop = target.top;
+      else if (target.top + target.height > el.scrollTop + height)
+        el.scrollTop = Math.max(0, target.top + target.height - height);
+      setViewport({ top: el.scrollTop, height });
+    },
+    [layout, fallbackHeight],
+  );
+  useEffect(() => {
+    scrollTo(reveal);
+  }, [reveal, scrollTo]);
   // A halt (or a step to another network) is shown wherever the user had scrolled.
   const haltedNetwork = debug?.halted?.network;
-  useEffect(() => scrollTo(haltedNetwork), [haltedNetwork]);
+  useEffect(() => {
+    scrollTo(haltedNetwork);
+  }, [haltedNetwork, scrollTo]);
 
   const byNetwork = useMemo(() => {
     const map = new Map<string, Diagnostic[]>();

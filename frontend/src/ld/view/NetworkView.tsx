@@ -81,9 +81,10 @@ interface ElementProps {
   problems: readonly Diagnostic[];
   online?: OnlineView;
   handlers: DiagramHandlers;
+  coverage?: "never-executed" | "never-energised";
 }
 
-function Element({ placed, selected, breakpoint, halted, problems, online, handlers }: ElementProps) {
+function Element({ placed, selected, breakpoint, halted, problems, online, handlers, coverage }: ElementProps) {
   const type = placed.element.type ?? "contact";
   const target: Target = { kind: "element", id: placed.id };
   const mode = "mode" in placed.element ? ` ld-mode-${placed.element.mode}` : "";
@@ -94,6 +95,7 @@ function Element({ placed, selected, breakpoint, halted, problems, online, handl
     online?.executed?.[placed.id] === false ? "ld-not-executed" : "",
     problems.length ? "ld-has-diagnostic" : "",
     halted ? "ld-halted" : "",
+    coverage ? `ld-coverage-${coverage}` : "",
   ].filter(Boolean);
   const Shape = type === "parallel" ? null : SHAPES[type];
   return (
@@ -241,6 +243,7 @@ function NetworkViewImpl({
           problems={byElement.get(placed.id) ?? []}
           online={online}
           handlers={handlers}
+          coverage={debug?.coverage?.get(placed.id)}
         />
       ))}
       {layout.slots.map((slot) => {

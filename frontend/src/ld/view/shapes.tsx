@@ -2,7 +2,9 @@
 // contacts and boxes as rectangles, jumps as a double arrowhead, returns as a labelled end.
 import type { MouseEvent, ReactNode } from "react";
 import type { PlacedElement, PlacedPin } from "../layout";
-import { textWidth } from "../layout";
+import { METRICS, textWidth } from "../layout";
+import { pinKey } from "../../online/pinValues";
+import type { ValueShown } from "../../online/shown";
 import type { OperandField } from "../ops";
 import type { OnlineView } from "./types";
 
@@ -13,6 +15,58 @@ const COIL_MARK: Record<string, string> = { normal: "", negated: "/", set: "S", 
 export function fit(text: string, width: number): string {
   const max = Math.floor(width / textWidth("M"));
   return text.length <= max ? text : `${text.slice(0, Math.max(1, max - 1))}…`;
+}
+
+/** Width of one character of value text (10 px monospace). */
+const VALUE_CHAR = 6;
+const F_MARK = 11;
+
+/**
+ * A value in a small badge, CODESYS style: TRUE blue, FALSE white with a dark frame, other values
+ * framed; forced ones framed in orange with a red F; a prepared value follows as `<value>`.
+ * (x, y) is the anchor point on the badge's middle line.
+ */
+export function ValueBadge({
+  shown,
+  x,
+  y,
+  anchor,
+  maxWidth = 120,
+}: {
+  shown: ValueShown;
+  x: number;
+  y: number;
+  anchor: "start" | "middle" | "end";
+  maxWidth?: number;
+}) {
+  const max = Math.max(3, Math.floor((maxWidth - 6 - (shown.forced ? F_MARK : 0)) / VALUE_CHAR));
+  const text = shown.text.length <= max ? shown.text : `${shown.text.slice(0, max - 1)}…`;
+  const width = text.length * VALUE_CHAR + 6 + (shown.forced ? F_MARK : 0);
+  const left = anchor === "start" ? x : anchor === "end" ? x - width : x - width / 2;
+  const kind = shown.bool === null ? "ld-badge-value" : shown.bool ? "ld-badge-true" : "ld-badge-false";
+  const title = `${shown.text}${shown.forced ? " (forced)" : ""}${shown.prepared !== null ? `, prepared ${shown.prepared}` : ""}`;
+  return (
+    <g className={`ld-badge ${kind}${shown.forced ? " ld-badge-forced" : ""}`} data-value={shown.text}>
+      <title>{title}</title>
+      <rect className="ld-badge-box" x={left} y={y - 7} width={width} height={13} rx={2} />
+      <text className="ld-badge-text" x={left + 3} y={y + 3.5}>
+        {text}
+      </text>
+      {shown.forced ? (
+        <g className="ld-forced-badge" aria-label="forced">
+          <rect x={left + width - F_MARK} y={y - 7} width={F_MARK} height={13} rx={2} />
+          <text x={left + width - F_MARK / 2} y={y + 3.5} textAnchor="middle">
+            F
+          </text>
+        </g>
+      ) : null}
+      {shown.prepared !== null ? (
+        <text className="ld-prepared" x={left + width + 3} y={y + 3.5}>
+          {`<${shown.prepared}>`}
+        </text>
+      ) : null}
+    </g>
+  );
 }
 
 interface OperandProps {
@@ -27,9 +81,11 @@ interface OperandProps {
   onOperand?: (id: string, field: OperandField, event: MouseEvent) => void;
   /** May stay empty (an FB input, an output pin): its "???" is muted instead of marked as missing. */
   optional?: boolean;
+  /** Show a non-BOOL value next to the text (compare operands; boxes show theirs at the pin, contacts under the symbol). */
+  withValue?: boolean;
 }
 
-/** An operand text: click to edit; shows "???" when empty, a forced marker and a non-BOOL value. */
+/** An operand text: click to edit; shows "???" when empty, a forced variable on an orange ground, and a value. */
 export function Operand({
   id,
   field,
@@ -41,43 +97,50 @@ export function Operand({
   online,
   onOperand,
   optional = false,
+  withValue = false,
 }: OperandProps) {
-  const key = text.toUpperCase();
-  const forced = online?.forced?.has(key) ?? false;
-  const value = online?.values?.[key];
-  const shown = text ? fit(text, width) : "???";
-  const valueX =
-    anchor === "end"
-      ? x - textWidth(shown) - 4
-      : anchor === "middle"
-        ? x + textWidth(shown) / 2 + 4
-        : x + textWidth(shown) + 4;
+  const shown = online?.operands?.[text.trim().toUpperCase()];
+  const forced = shown?.forced ?? false;
+  const label = text ? fit(text, width) : "???";
+  const textLeft = anchor === "end" ? x - textWidth(label) : anchor === "middle" ? x - textWidth(label) / 2 : x;
   return (
     <g
       className={`ld-operand${text ? "" : optional ? " ld-operand-unset" : " ld-operand-empty"}${forced ? " ld-forced" : ""}`}
       data-field={field.kind === "input" || field.kind === "output" ? `${field.kind}:${field.pin}` : field.kind}
     >
-      <text x={x} y={y} textAnchor={anchor} onClick={onOperand ? (event) => onOperand(id, field, event) : undefined}>
-        {text && shown !== text ? <title>{text}</title> : null}
-        {shown}
-      </text>
       {forced ? (
-        <text
-          className="ld-forced-mark"
-          x={anchor === "end" ? x + 4 : x - (anchor === "middle" ? textWidth(shown) / 2 : 0) - 4}
-          y={y}
-          textAnchor="end"
-        >
-          F
-        </text>
+        <rect
+          className="ld-forced-ground"
+          x={textLeft - 2}
+          y={y - 11}
+          width={textWidth(label) + 4}
+          height={14}
+          rx={2}
+        />
       ) : null}
-      {value !== undefined && typeof value !== "boolean" ? (
-        <text className="ld-value" x={valueX} y={y} textAnchor={anchor === "end" ? "end" : "start"}>
-          {String(value)}
-        </text>
+      <text x={x} y={y} textAnchor={anchor} onClick={onOperand ? (event) => onOperand(id, field, event) : undefined}>
+        {text && label !== text ? <title>{text}</title> : null}
+        {label}
+      </text>
+      {withValue && shown && shown.bool === null ? (
+        <ValueBadge
+          shown={shown}
+          x={anchor === "end" ? textLeft - 4 : textLeft + textWidth(label) + 4}
+          y={y - 4}
+          anchor={anchor === "end" ? "end" : "start"}
+        />
       ) : null}
     </g>
   );
+}
+
+/** A contact's or coil's variable value (TRUE/FALSE, forced, prepared) under its symbol. */
+function VariableValue({ placed: p, online }: { placed: PlacedElement; online?: OnlineView }) {
+  if (p.element.type !== "contact" && p.element.type !== "coil") return null;
+  const shown = online?.operands?.[p.element.var.trim().toUpperCase()];
+  return shown ? (
+    <ValueBadge shown={shown} x={p.x + p.width / 2} y={p.lineY + 20} anchor="middle" maxWidth={p.width} />
+  ) : null;
 }
 
 interface ShapeProps {
@@ -124,6 +187,7 @@ export function ContactShape({ placed: p, online, onOperand }: ShapeProps) {
         online={online}
         onOperand={onOperand}
       />
+      <VariableValue placed={p} online={online} />
     </>
   );
 }
@@ -154,6 +218,7 @@ export function CoilShape({ placed: p, online, onOperand }: ShapeProps) {
         online={online}
         onOperand={onOperand}
       />
+      <VariableValue placed={p} online={online} />
     </>
   );
 }
@@ -180,6 +245,7 @@ export function CompareShape({ placed: p, online, onOperand }: ShapeProps) {
         width={width - 4}
         online={online}
         onOperand={onOperand}
+        withValue
       />
       <Operand
         id={p.id}
@@ -190,6 +256,7 @@ export function CompareShape({ placed: p, online, onOperand }: ShapeProps) {
         width={width - 4}
         online={online}
         onOperand={onOperand}
+        withValue
       />
     </>
   );
@@ -234,6 +301,16 @@ export function ReturnShape({ placed: p }: ShapeProps) {
   );
 }
 
+/** What a pin shows online: its bound value, else the power feeding it (a series or the rung). */
+function pinShown(pin: PlacedPin, boxId: string, online?: OnlineView): ValueShown | undefined {
+  const bound = online?.pins?.[boxId]?.[pinKey(pin.side, pin.name)];
+  if (bound || pin.feed === undefined || !online?.power) return bound;
+  const power = pin.feed === null ? true : online.power[pin.feed];
+  return power === undefined
+    ? undefined
+    : { text: power ? "TRUE" : "FALSE", bool: power, forced: false, prepared: null };
+}
+
 function Pin({
   pin,
   boxId,
@@ -251,6 +328,8 @@ function Pin({
   const outside = pin.side === "in" ? pin.x - 10 : pin.x + 10;
   const field: OperandField = { kind: pin.side === "in" ? "input" : "output", pin: pin.name };
   const text = typeof pin.value === "string" ? pin.value : "";
+  const shown = pin.name ? pinShown(pin, boxId, online) : undefined;
+  const valueAt = inside + (pin.side === "in" ? 1 : -1) * (textWidth(pin.name) * (10 / 12) + 4);
   return (
     <g className={`ld-pin ld-pin-${pin.side}${pin.power ? " ld-pin-power" : ""}`} data-pin={pin.name}>
       {!pin.power ? (
@@ -259,6 +338,17 @@ function Pin({
       <text className="ld-pin-name" x={inside} y={pin.y + 4} textAnchor={pin.side === "in" ? "start" : "end"}>
         {pin.name}
       </text>
+      {shown ? (
+        <g className="ld-pin-value" data-pin-value={pinKey(pin.side, pin.name)}>
+          <ValueBadge
+            shown={shown}
+            x={valueAt}
+            y={pin.y}
+            anchor={pin.side === "in" ? "start" : "end"}
+            maxWidth={METRICS.pinValue - 4}
+          />
+        </g>
+      ) : null}
       {!pin.power && !Array.isArray(pin.value) && pin.name ? (
         <Operand
           id={boxId}

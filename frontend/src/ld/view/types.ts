@@ -3,20 +3,23 @@ import type { MouseEvent } from "react";
 import type { Diagnostic } from "../../generated/api";
 import type { Place } from "../model";
 import type { OperandField } from "../ops";
+import type { ValueShown } from "../../online/shown";
 
 export type Selection =
   { kind: "elements"; ids: string[] } | { kind: "place"; place: Place } | { kind: "network"; id: string };
 
 /**
- * Online colouring hooks (issue 7 online mode; no server connection yet). `power` is the engine's
- * right-side power of each element by id, `executed` false marks elements the last scan skipped,
- * `forced` and `values` are keyed by operand text in upper case.
+ * What the diagram shows online: `power` is the engine's right-side power of each element by id,
+ * `executed` false marks elements the last scan skipped, `operands` the values of the variables
+ * the operands name (by operand text in upper case: a contact's or coil's value badge, non-BOOL
+ * values next to their text, forced marks), `pins` the value on each box pin by box id and pin key
+ * (`in:PT`, `out:ET`, online/pinValues.ts).
  */
 export interface OnlineView {
   power?: Readonly<Record<string, boolean>>;
   executed?: Readonly<Record<string, boolean>>;
-  forced?: ReadonlySet<string>;
-  values?: Readonly<Record<string, string | number | boolean>>;
+  operands?: Readonly<Record<string, ValueShown>>;
+  pins?: Readonly<Record<string, Readonly<Record<string, ValueShown>>>>;
 }
 
 /**
@@ -27,6 +30,8 @@ export interface DebugMarks {
   networks?: Readonly<Record<string, boolean>>;
   elements?: Readonly<Record<string, boolean>>;
   halted?: { network: string; element: string | null } | null;
+  /** Elements the last test run with coverage never executed or never energised (tinted). */
+  coverage?: ReadonlyMap<string, "never-executed" | "never-energised">;
 }
 
 /** Something the user can point at in the diagram. */

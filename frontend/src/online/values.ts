@@ -1,0 +1,108 @@
+// How values read: the IEC text of a monitored value (TRUE/FALSE, T#1s, D#2024-05-01, enumerations
+// by name, REALs in their shortest decimal form), the virtual clock, and the value a user typed.
+// Pure functions, shared by every view that shows values (LD, FBD, ST, watch list, log, trace).
+import type { DisplayType } from "../generated/monitor";
+import type { Value, WriteValue } from "./protocol";
+
+/**
+ * Text of a value for labels, the watch list and inline values, as IEC writes it: TRUE/FALSE, TIME
+ * and dates as literals (the server sends ms), an enumeration's value by name. `type` is the
+ * server's DisplayType or a declared type name; without one a number shows as it is.
+ */
+export function formatValue(value: Value | undefined, type?: DisplayType | string): string {
+  if (value === undefined) return "…";
+  if (value === null) return "—";
+  if (typeof value === "boolean") return value ? "TRUE" : "FALSE";
+  const name = type === undefined ? undefined : (typeof type === "string" ? type : type.name).toUpperCase();
+  if (typeof value === "object") return compositeText(value, name);
+  if (typeof value !== "number" || name === undefined) return String(value);
+  const named = typeof type === "string" ? undefined : type?.names?.[String(value)];
+  if (named !== undefined) return named;
+  if (name === "REAL") return shortestReal(value);
+  return TIME_LITERALS[name]?.(value) ?? String(value);
+}
+
+/**
+ * A REAL (IEEE single) as the fewest decimal digits that read back as the same single: the server
+ * sends the single widened to a double, so 50.4 arrives as 50.400001525878906 and shows as 50.4.
+ */
+export function shortestReal(value: number): string {
+  if (!Number.isFinite(value)) return String(value);
+  const single = Math.fround(value);
+  for (let digits = 1; digits <= 9; digits++) {
+    const text = Number(value.toPrecision(digits));
+    if (Math.fround(text) === single) return String(text);
+  }
+  return String(value); // not reached: 9 significant digits always identify a single
+}
+
+/** An array, structure or FB instance in one line (its members show in the watch list's tree). */
+function compositeText(value: object, type: string | undefined): string {
+  if (Array.isArray(value)) return `${type && type !== "ARRAY" ? type : "ARRAY"} (${value.length} elements)`;
+  return type ?? "STRUCT";
+}
+
+const pad = (n: number, width = 2) => String(n).padStart(width, "0");
+
+/** `T#1h2m3s500ms`: the non-zero units, largest first (`T#0ms` for zero; a minus sign after `T#`). */
+export function timeLiteral(ms: number): string {
+  const units: [string, number][] = [
+    ["d", 86_400_000],
+    ["h", 3_600_000],
+    ["m", 60_000],
+    ["s", 1000],
+    ["ms", 1],
+  ];
+  let rest = Math.abs(ms);
+  let text = "";
+  for (const [unit, size] of units) {
+    const count = unit === "ms" ? Math.round(rest * 1000) / 1000 : Math.floor(rest / size);
+    if (count) text += `${count}${unit}`;
+    rest -= unit === "ms" ? rest : count * size;
+  }
+  return `T#${ms < 0 ? "-" : ""}${text || "0ms"}`;
+}
+
+/** Time of day after midnight, with milliseconds when there are any. */
+function clock(ms: number): string {
+  const day = new Date(ms);
+  const millis = day.getUTCMilliseconds();
+  return `${pad(day.getUTCHours())}:${pad(day.getUTCMinutes())}:${pad(day.getUTCSeconds())}${millis ? `.${pad(millis, 3)}` : ""}`;
+}
+
+const dateOf = (ms: number) => {
+  const day = new Date(ms);
+  return `${day.getUTCFullYear()}-${pad(day.getUTCMonth() + 1)}-${pad(day.getUTCDate())}`;
+};
+
+/** TIME and the date types, from the server's ms (dates since 1970-01-01 UTC), as IEC literals. */
+const TIME_LITERALS: Record<string, (ms: number) => string> = {
+  TIME: timeLiteral,
+  DATE: (ms) => `D#${dateOf(ms)}`,
+  TIME_OF_DAY: (ms) => `TOD#${clock(ms)}`,
+  TOD: (ms) => `TOD#${clock(ms)}`,
+  DATE_AND_TIME: (ms) => `DT#${dateOf(ms)}-${clock(ms)}`,
+  DT: (ms) => `DT#${dateOf(ms)}-${clock(ms)}`,
+};
+
+/**
+ * The JSON value to send for text the user typed: TRUE/FALSE become booleans and plain numbers
+ * numbers; anything else goes as text, which the server reads as an IEC literal (T#1s, 16#FF).
+ */
+export function parseValue(text: string): WriteValue {
+  const t = text.trim();
+  if (/^true$/i.test(t)) return true;
+  if (/^false$/i.test(t)) return false;
+  if (/^[+-]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)?$/.test(t)) return Number(t);
+  return t;
+}
+
+/** Virtual time as h:mm:ss.mmm (the simulation's clock starts at 0). */
+export function formatClock(ms: number): string {
+  const total = Math.max(0, Math.round(ms));
+  const h = Math.floor(total / 3_600_000);
+  const m = Math.floor(total / 60_000) % 60;
+  const s = Math.floor(total / 1000) % 60;
+  const rest = total % 1000;
+  return `${h}:${String(m).padStart(2, "0")}:${String(s).padStart(2, "0")}.${String(rest).padStart(3, "0")}`;
+}

@@ -1,0 +1,36 @@
+// The run stream (issue 20): JSON lines arrive in chunks cut anywhere; each complete line is one event.
+import { afterEach, describe, expect, it, vi } from "vitest";
+import type { TestEvent } from "../generated/api";
+import { runTests } from "./api";
+
+afterEach(() => vi.unstubAllGlobals());
+
+describe("runTests", () => {
+  it("hands out each line of the stream as it completes, whatever the chunks", async () => {
+    const lines = ['{"type":"file","file":{"file":"tests/a.st","tests":[]}}', '{"type":"done"}'];
+    const text = lines.join("\n") + "\n";
+    const chunks = [text.slice(0, 7), text.slice(7, 40), text.slice(40, 62), text.slice(62)];
+    const body = new ReadableStream<Uint8Array>({
+      start(controller) {
+        for (const chunk of chunks) controller.enqueue(new TextEncoder().encode(chunk));
+        controller.close();
+      },
+    });
+    const fetchMock = vi.fn(async () => new Response(body, { status: 200 }));
+    vi.stubGlobal("fetch", fetchMock);
+    const events: TestEvent[] = [];
+    await runTests({ name: "p" }, { file: "tests/a.st" }, (e) => events.push(e));
+    expect(events.map((e) => e.type)).toEqual(["file", "done"]);
+    const [url, init] = fetchMock.mock.calls[0] as unknown as [string, RequestInit];
+    expect(url).toBe("/api/tests/run");
+    expect(JSON.parse(String(init.body))).toEqual({ project: { name: "p" }, file: "tests/a.st" });
+  });
+
+  it("turns a refused run into an error with the server's message", async () => {
+    vi.stubGlobal(
+      "fetch",
+      vi.fn(async () => new Response(JSON.stringify({ detail: { message: "no such file" } }), { status: 404 })),
+    );
+    await expect(runTests({ name: "p" }, {}, () => undefined)).rejects.toThrow("no such file");
+  });
+});

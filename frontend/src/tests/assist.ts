@@ -1,0 +1,111 @@
+// What the ST editor of a test file needs: live diagnostics of the file with the working copy
+// (POST /api/tests/check after the user pauses typing) and completions - the test verbs, the
+// configuration's programs (their variables as members: tests may read and write any of them), the
+// globals, functions and function blocks.
+import { useEffect, useMemo, useState } from "react";
+import type { Completion } from "@codemirror/autocomplete";
+import type { Diagnostic, LibraryEntry, SymbolInfo } from "../generated/api";
+import type { Project } from "../generated/project";
+import { memberCompletions, stCompletions, type StCompletions } from "../st/completion";
+import { structTypes } from "../st/members";
+import { declaredSymbols, workingLibrary } from "../st/scope";
+import { CHECK_DELAY_MS } from "../st/useLiveCheck";
+import { useWorkspace } from "../project/store";
+import { testsApi, type TestsApi } from "./api";
+
+/** The verbs of test files (docs/testing.md), with the signature shown in the completion list. */
+export const TEST_VERBS: readonly [string, string][] = [
+  ["ASSERT_EQ", "(actual, expected [, 'message'])"],
+  ["ASSERT_NEQ", "(actual, expected [, 'message'])"],
+  ["ASSERT_GT", "(actual, threshold [, 'message'])"],
+  ["ASSERT_LT", "(actual, threshold [, 'message'])"],
+  ["ASSERT_GE", "(actual, threshold [, 'message'])"],
+  ["ASSERT_LE", "(actual, threshold [, 'message'])"],
+  ["ASSERT_NEAR", "(actual, expected, tolerance [, 'message'])"],
+  ["ASSERT_TRUE", "(condition [, 'message'])"],
+  ["ASSERT_FALSE", "(condition [, 'message'])"],
+  ["ASSERT", "(condition)"],
+  ["ADVANCE_TIME", "(T#...)"],
+  ["RUN_SCANS", "(n)"],
+  ["RUN_FOR", "(T#...)"],
+  ["RUN_UNTIL", "(condition, T#timeout)"],
+  ["FORCE", "(variable, value)"],
+  ["RELEASE", "(variable)"],
+  ["WARM_START", ""],
+  ["COLD_START", ""],
+  ["MOCK", " instance"],
+  ["MOCK_FUNCTION", " f RETURNS value"],
+  ["MOCK_VERIFY_CALLED", "(instance)"],
+  ["MOCK_VERIFY_CALL_COUNT", "(instance, n)"],
+];
+
+const verbCompletions: Completion[] = TEST_VERBS.map(([label, args]) => ({
+  label,
+  type: "keyword",
+  detail: args,
+  info: `test verb ${label}${args}`,
+}));
+
+/** Each PROGRAM of the working copy as a library entry whose members are all its variables. */
+function programEntries(project: Project): LibraryEntry[] {
+  return (project.pous ?? [])
+    .filter((p) => p.kind === "program")
+    .map((p) => ({
+      name: p.name,
+      kind: "function_block",
+      source: "user",
+      inputs: [],
+      outputs: (declaredSymbols(p.declarations ?? "") ?? []).map((s) => ({ name: s.name, type: s.type })),
+      in_outs: [],
+      extensible: false,
+      return_type: null,
+      comment: `PROGRAM ${p.name}`,
+    }));
+}
+
+export function useTestCompletions(project: Project | null): StCompletions {
+  const saved = useWorkspace((s) => s.library);
+  const tables = useWorkspace((s) => s.symbols);
+  return useMemo(() => {
+    if (!project) return { options: verbCompletions, members: () => null };
+    const library = [...workingLibrary(saved, project.pous ?? []), ...programEntries(project)];
+    const globals = Object.values(tables)[0]?.globals ?? [];
+    const programs: SymbolInfo[] = (project.pous ?? [])
+      .filter((p) => p.kind === "program")
+      .map((p) => ({
+        name: p.name,
+        type: p.name,
+        var_class: "VAR",
+        initial: null,
+        address: null,
+        comment: "program instance",
+        retain: false,
+        constant: false,
+      }));
+    const scope = { symbols: [...programs, ...globals], library, structs: structTypes(project.types ?? "") };
+    return {
+      options: [...verbCompletions, ...stCompletions([...scope.symbols], library)],
+      members: (chain: readonly string[]) => memberCompletions(chain, scope),
+    };
+  }, [project, saved, tables]);
+}
+
+/** The diagnostics of one test file of the working copy, checked after the user pauses typing. */
+export function useTestCheck(project: Project | null, file: string, api: TestsApi = testsApi): Diagnostic[] {
+  const [diagnostics, setDiagnostics] = useState<Diagnostic[]>([]);
+  useEffect(() => {
+    if (!project) return;
+    let current = true;
+    const timer = setTimeout(() => {
+      api.checkTestFile(project, file).then(
+        (info) => current && setDiagnostics(info.diagnostics ?? []),
+        () => current && setDiagnostics([]),
+      );
+    }, CHECK_DELAY_MS);
+    return () => {
+      current = false;
+      clearTimeout(timer);
+    };
+  }, [project, file, api]);
+  return diagnostics;
+}
