@@ -590,7 +590,7 @@ def test_types_globals_and_tasks_fill_the_project():
     ]
 
 
-def test_sfc_and_il_pous_actions_and_foreign_add_data_are_reported_not_dropped_silently():
+def test_il_pous_actions_outside_sfc_and_foreign_add_data_are_reported_not_dropped_silently():
     pous = (
         pou_xml(
             "Seq",
@@ -606,13 +606,7 @@ def test_sfc_and_il_pous_actions_and_foreign_add_data_are_reported_not_dropped_s
     )
     result = imported(project_xml(pous))
     assert [(d.code, d.pou, d.message) for d in result.diagnostics] == [
-        (
-            "PLCOPEN-UNSUPPORTED",
-            "Seq",
-            "POU Seq is written in SFC, which LadderLab does not support; it was imported "
-            "with its interface and a body that does nothing (the names of its steps are "
-            "kept as comments), so its callers build and run",
-        ),
+        ("PLCOPEN-SFC", "Seq", "step Run is reached from no initial step: it was left out"),
         (
             "PLCOPEN-UNSUPPORTED",
             "Asm",
@@ -620,7 +614,11 @@ def test_sfc_and_il_pous_actions_and_foreign_add_data_are_reported_not_dropped_s
             "with its interface and a body that does nothing (the IL text is kept as "
             "comments), so its callers build and run",
         ),
-        ("PLCOPEN-UNSUPPORTED", "Main", "action 'Blink' of POU Main was not imported: LadderLab has no actions"),
+        (
+            "PLCOPEN-UNSUPPORTED",
+            "Main",
+            "action 'Blink' of POU Main was not imported: only SFC POUs have actions in LadderLab",
+        ),
         (
             "PLCOPEN-ADDDATA",
             None,
@@ -633,15 +631,12 @@ def test_sfc_and_il_pous_actions_and_foreign_add_data_are_reported_not_dropped_s
     assert (seq.name, seq.kind, seq.language, asm.name, asm.language, main.name) == (
         "Seq",
         "function_block",
-        "st",
+        "sfc",
         "Asm",
         "st",
         "Main",
     )
-    assert seq.body == (
-        "// Imported from SFC, which LadderLab cannot run: this body does nothing. The original SFC:\n"
-        "// step Init (initial)\n// step Run"
-    )
+    assert [e.name for e in seq.body.chart.elements] == ["Init"]
     assert asm.body == (
         "// Imported from IL, which LadderLab cannot run: this body does nothing. The original IL:\n"
         "// LD TRUE\n// (* keep *)\n// ST x"

@@ -8,9 +8,10 @@ resource) and tasks fill the project's TYPE text, VAR_GLOBAL text and task list.
 
 Never raises on bad input: hostile or malformed XML (``xml_safety``) gives
 ``project=None`` and an error; everything else is imported as far as it goes.
-SFC and IL POUs, actions, transitions and other tools' addData have no place in
-the project and are reported as warnings; Bachmann/RuSTy's textual declarations
-and negated jumps/returns are understood and kept.
+SFC bodies with their actions and transitions go through ``plcopen_sfc_import``.
+IL POUs and other tools' addData have no place in the project and are reported
+as warnings; Bachmann/RuSTy's textual declarations and negated jumps/returns are
+understood and kept.
 """
 
 from __future__ import annotations
@@ -22,6 +23,8 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from ...model.diagnostics import Diagnostic
+from ...model.fbd import FbdBody
+from ...model.ld import LdBody
 from ...model.project import Pou, Project, Task, TestFile
 from ...st import ast
 from ...st.parser import parse_declarations, parse_source
@@ -34,9 +37,11 @@ from .body import (
     group_by_ladderlab,
     read_network_list,
 )
+from .exporter import diagram_writer
 from .fbd_import import FbdImporter, fbd_groups
 from .graph import read_graph, resolve_continuations
 from .ld_import import LdImporter, ld_groups
+from .sfc_import import SfcImporter
 from .vars import KIND_BY_LIST, VarReader, parse_type_text, write_data_type, write_type, write_var_list
 from .xml_io import (
     LADDERLAB_DATA,
@@ -202,16 +207,19 @@ class _Importer:
 
     def pou(self, node: ET.Element, pou: Pou, signatures: Signatures) -> Pou | None:
         r = self.reader
-        for tag in ("actions", "transitions"):
-            for item in r.children(r.child(node, tag), tag[:-1]):
-                r.report(
-                    "PLCOPEN-UNSUPPORTED",
-                    f"{tag[:-1]} '{item.get('name', '')}' of POU {pou.name} was not imported: LadderLab has no {tag}",
-                    item,
-                    severity="warning",
-                    pou=pou.name,
-                )
         bodies = r.children(node, "body")
+        first = next(r.elements(bodies[0]), None) if bodies else None
+        if first is None or local(first) != "SFC":
+            for tag in ("actions", "transitions"):
+                for item in r.children(r.child(node, tag), tag[:-1]):
+                    r.report(
+                        "PLCOPEN-UNSUPPORTED",
+                        f"{tag[:-1]} '{item.get('name', '')}' of POU {pou.name} was not imported: only SFC POUs "
+                        f"have {tag} in LadderLab",
+                        item,
+                        severity="warning",
+                        pou=pou.name,
+                    )
         if len(bodies) > 1:
             r.report(
                 "PLCOPEN-POU",
@@ -223,7 +231,7 @@ class _Importer:
         body = bodies[0] if bodies else None
         language = next(r.elements(body), None)
         tag = local(language) if language is not None else "ST"
-        if tag in ("SFC", "IL"):
+        if tag == "IL":
             r.report(
                 "PLCOPEN-UNSUPPORTED",
                 f"POU {pou.name} is written in {tag}, which LadderLab does not support; "
@@ -236,35 +244,40 @@ class _Importer:
             return pou.model_copy(update={"body": unsupported_body(tag, language)})
         if tag == "ST":
             return pou.model_copy(update={"body": text_content(language)})
-        graph = read_graph(language, r, pou.name, signatures)
+        assert body is not None and language is not None
+        if tag == "SFC":
+            importer = SfcImporter(
+                r,
+                pou.name,
+                lambda holder, what: self.diagram(holder, pou.name, signatures),
+                lambda holder, networks: diagram_writer(holder, networks, signatures, pou.name),
+            )
+            return pou.model_copy(update={"language": "sfc", "body": importer.body(node, body, language)})
+        made = self.diagram(body, pou.name, signatures)
+        if made is None:
+            return pou
+        return pou.model_copy(update={"language": made[0], "body": made[1]})
+
+    def diagram(self, body: ET.Element, pou: str, signatures: Signatures) -> tuple[str, LdBody | FbdBody] | None:
+        """The LD or FBD networks of a ``<body>`` (a POU's, or an SFC action's or transition's)."""
+        r = self.reader
+        language = next(r.elements(body), None)
+        tag = local(language) if language is not None else ""
+        if language is None or tag not in ("LD", "FBD"):
+            return None
+        graph = read_graph(language, r, pou, signatures)
         listing = read_network_list(body, r)
         ids = IdMaker(claimed_ids(graph, listing))
         groups = group_by_ladderlab(graph, r, listing)
         if tag == "LD":
-            resolve_continuations(graph, r, pou.name)
+            resolve_continuations(graph, r, pou)
             groups = groups or attach_headers(ld_groups(graph), graph, r)
-            ld = LdImporter(graph, r, pou.name, signatures, ids).body(groups)
-            return Pou(
-                name=pou.name,
-                kind=pou.kind,
-                language="ld",
-                return_type=pou.return_type,
-                declarations=pou.declarations,
-                body=ld,
-            )
+            return "ld", LdImporter(graph, r, pou, signatures, ids).body(groups)
         relative, orders = groups is not None, {}
         if groups is None:
             groups, orders = fbd_groups(graph, r)
             attach_headers(groups, graph, r, labels=False)
-        fbd = FbdImporter(graph, r, pou.name, ids).body(groups, orders, relative=relative)
-        return Pou(
-            name=pou.name,
-            kind=pou.kind,
-            language="fbd",
-            return_type=pou.return_type,
-            declarations=pou.declarations,
-            body=fbd,
-        )
+        return "fbd", FbdImporter(graph, r, pou, ids).body(groups, orders, relative=relative)
 
     # ------------------------------------------------------------ project texts
 
@@ -378,22 +391,15 @@ def _return_type_elements(text: str) -> list[ET.Element] | None:
 
 
 #: What an unsupported body leaves in the comments of the POU standing in for it.
-_KEPT = {"IL": "the IL text is kept", "SFC": "the names of its steps are kept"}
+_KEPT = {"IL": "the IL text is kept"}
 
 
 def unsupported_body(tag: str, language: ET.Element) -> str:
-    """The ST body standing in for an SFC or IL body: no statements, the original described in line comments.
+    """The ST body standing in for an IL body: no statements, the original in line comments.
 
     The POU keeps its interface so that the programs calling it still build (the rest of an imported
     project runs); the comment says, where the user opens the POU, that this body does nothing.
     """
-    if tag == "IL":
-        original = text_content(language).strip().splitlines()
-    else:
-        original = [
-            f"step {s.get('name', '')}{' (initial)' if s.get('initialStep') == 'true' else ''}"
-            for s in language
-            if local(s) == "step"
-        ]
+    original = text_content(language).strip().splitlines()
     lines = [f"// Imported from {tag}, which LadderLab cannot run: this body does nothing. The original {tag}:"]
     return "\n".join(lines + [f"// {line}".rstrip() for line in original])
