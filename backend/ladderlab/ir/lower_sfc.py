@@ -82,7 +82,7 @@ BOOL_FLAGS = (
 STRING_FLAGS = ("SFCERRORSTEP", "SFCERRORPOU", "SFCCURRENTSTEP")
 
 #: The inputs of ACTION_CONTROL by qualifier (S is S0 there).
-_PIN = {
+PIN = {
     "N": "N",
     "R": "R",
     "S": "S0",
@@ -104,7 +104,7 @@ EXIT_PASS, ENTRY_PASS, FINAL_PASS, ACTIVE_PASS = 0, 1, 2, 3
 
 def lower_sfc_body(pou: ModelPou, ctx: PouContext) -> list[Block]:
     """The chart, actions and transitions of an SFC POU as IR blocks; problems are reported on ``ctx``."""
-    return _SfcLowering(pou, ctx).blocks()
+    return SfcLowering(pou, ctx).blocks()
 
 
 def _and(*terms: Expr) -> Expr:
@@ -130,7 +130,7 @@ def _member(var: Var, name: str, ty: IrType) -> Var:
 
 
 @dataclasses.dataclass
-class _StepSlots:
+class StepSlots:
     """What the lowering keeps of one step: its variable and, for a step with entry or exit actions, the flags."""
 
     step: SfcStep
@@ -152,21 +152,21 @@ class _StepSlots:
         return _member(self.var, "T", TIME)
 
 
-class _Control:
+class Control:
     """One action control block (an action's, or the hidden one of a BOOL variable) and its associations."""
 
     def __init__(self, name: str, var: Var, target: Var | None = None):
         self.name = name
         self.var = var
         self.target = target  # the BOOL variable that takes Q
-        self.inputs: dict[str, list[Expr]] = {}
-        self.times: list[tuple[Expr, Expr, str]] = []  # (step active, time, association id)
+        self.inputs: dict[str, list[str]] = {}  # ACTION_CONTROL pin -> the steps (upper-case names) feeding it
+        self.times: list[tuple[str, Expr, str, str]] = []  # (step, time, its text, association id)
 
     def member(self, pin: str) -> Var:
         return _member(self.var, pin, BOOL)
 
 
-class _SfcLowering:
+class SfcLowering:
     def __init__(self, pou: ModelPou, ctx: PouContext):
         self.pou = pou
         assert isinstance(pou.body, SfcBody) and ctx.info is not None
@@ -176,11 +176,12 @@ class _SfcLowering:
         self.name = ctx.name
         self.chart = chart_file(pou.name)
         self.ops = Operands(ctx, "SFC")
-        self.steps: dict[str, _StepSlots] = {}
-        self.controls: dict[str, _Control] = {}
+        self.steps: dict[str, StepSlots] = {}
+        self.controls: dict[str, Control] = {}
         self.flags: dict[str, Var] = {}
         self.jumps_to_end = False
         self.refused = False
+        self.graph_made: ChartGraph | None = None
 
     # ------------------------------------------------------------ helpers
     def origin(self, element: str | None = None) -> Origin:
@@ -230,7 +231,7 @@ class _SfcLowering:
         return out
 
     def graph(self) -> ChartGraph | None:
-        graph = chart_graph(self.body.chart)
+        graph = self.graph_made = chart_graph(self.body.chart)
         for problem in graph.problems:
             self.report(problem.code, problem.message, problem.element or None, severity=problem.severity)
         for action in self.body.actions:
@@ -252,7 +253,7 @@ class _SfcLowering:
             if symbol is None or symbol.implicit != "step":
                 self.refused = True  # its name was refused (reported by the checker): the chart cannot be built
                 continue
-            slots = _StepSlots(node.step, self.ctx.var_for(symbol), node.initial)
+            slots = StepSlots(node.step, self.ctx.var_for(symbol), node.initial)
             if node.step.entry or node.step.exit:
                 hint = f"SFC_{key}"
                 slots.entered = self.ctx.hidden(f"{hint}_IN", BOOL)
@@ -301,7 +302,7 @@ class _SfcLowering:
         for action in sorted(self.body.actions, key=lambda a: a.name.upper()):
             symbol = self.info.symbols.get(action.name.upper())
             if symbol is not None and symbol.implicit == "action":
-                self.controls[action.name.upper()] = _Control(action.name, self.ctx.var_for(symbol))
+                self.controls[action.name.upper()] = Control(action.name, self.ctx.var_for(symbol))
         for node in graph.steps.values():
             slots = self.steps.get(node.step.name.upper())
             if slots is None:
@@ -310,8 +311,8 @@ class _SfcLowering:
                 control = self.control_for(association.action, association.id)
                 if control is None:
                     continue
-                pin = _PIN[association.qualifier]
-                control.inputs.setdefault(pin, []).append(slots.x)
+                pin = PIN[association.qualifier]
+                control.inputs.setdefault(pin, []).append(node.step.name.upper())
                 timed = association.qualifier in TIMED_QUALIFIERS
                 if timed and not (association.time or "").strip():
                     self.report(
@@ -324,7 +325,7 @@ class _SfcLowering:
                         association.time or "", At(None, association.id), "the time", st_types.Elementary("TIME")
                     )
                     if value is not None:
-                        control.times.append((slots.x, value, association.id))
+                        control.times.append((node.step.name.upper(), value, association.time or "", association.id))
             for which in ("min_time", "max_time"):
                 text = getattr(node.step, which)
                 if text is not None and text.strip():
@@ -340,7 +341,7 @@ class _SfcLowering:
                 severity="warning",
             )
 
-    def control_for(self, target: str, element: str) -> _Control | None:
+    def control_for(self, target: str, element: str) -> Control | None:
         """The control block of an association's action, or of the BOOL variable it names (made once per text)."""
         key = target.strip().upper()
         if key in self.controls:
@@ -367,7 +368,7 @@ class _SfcLowering:
         if var is None:
             return None
         hidden = self.ctx.hidden(f"SFC_{text}", FbInstance("ACTION_CONTROL"))
-        control = self.controls[key] = _Control(text, hidden, var)
+        control = self.controls[key] = Control(text, hidden, var)
         return control
 
     # ------------------------------------------------------------ 1. the flags
@@ -427,7 +428,7 @@ class _SfcLowering:
         if initial is not None:
             out.append(Assign(initial.x, TRUE, origin))
         for control in self.controls.values():
-            inputs = [(pin, TRUE if pin == "R" else FALSE) for pin in _PIN.values()]
+            inputs = [(pin, FALSE) for pin in PIN.values() if pin in control.inputs and pin != "R"] + [("R", TRUE)]
             out.append(FbCall(control.var, inputs, [], origin))
             if control.target is not None:
                 out.append(Assign(control.target, control.member("Q"), origin))
@@ -436,7 +437,7 @@ class _SfcLowering:
             out.append(Assign(current, Const(initial.step.name, current.type), origin))
         return out
 
-    def call_step(self, slots: _StepSlots, x: bool | None = None) -> FbCall:
+    def call_step(self, slots: StepSlots, x: bool | None = None) -> FbCall:
         inputs = [] if x is None else [("X", TRUE if x else FALSE)]
         return FbCall(slots.var, inputs, [], self.origin(slots.step.id))
 
@@ -461,7 +462,7 @@ class _SfcLowering:
                 out.append(limit)
         return out
 
-    def time_limit(self, slots: _StepSlots) -> Stmt | None:
+    def time_limit(self, slots: StepSlots) -> Stmt | None:
         """SFC-07: a step active longer than its maximum time sets SFCError (the first error only, until reset)."""
         error = self.flag("SFCERROR")
         text = slots.step.max_time
@@ -488,11 +489,14 @@ class _SfcLowering:
         for control in self.controls.values():
             if not control.inputs:
                 continue
-            for active, time, element in control.times:
-                out.append(
-                    If([(active, [Assign(_member(control.var, "T", TIME), time, self.origin(element))])], [], origin)
-                )
-            inputs = [(pin, _or(control.inputs.get(pin, []))) for pin in _PIN.values() if pin in control.inputs]
+            for step, time, _, element in control.times:
+                assign = Assign(_member(control.var, "T", TIME), time, self.origin(element))
+                out.append(If([(self.steps[step].x, [assign])], [], origin))
+            inputs = [
+                (pin, _or(self.steps[key].x for key in control.inputs[pin]))
+                for pin in PIN.values()
+                if pin in control.inputs
+            ]
             if "R" not in control.inputs:
                 inputs.append(("R", FALSE))  # after SFCInit/SFCReset set it
             out.append(FbCall(control.var, inputs, [], origin))
@@ -501,38 +505,50 @@ class _SfcLowering:
         return out
 
     # ------------------------------------------------------------ 4. the actions
-    def action_blocks(self) -> list[Block]:
-        """Each action's body once, behind a jump that skips it unless this pass runs it; the passes loop."""
-        entry = {a.name.upper(): [] for a in self.body.actions}
-        exit_: dict[str, list[Var]] = {a.name.upper(): [] for a in self.body.actions}
-        for slots in self.steps.values():
-            if slots.step.entry and slots.entering is not None and slots.step.entry.upper() in entry:
-                entry[slots.step.entry.upper()].append(slots.entering)
-            if slots.step.exit and slots.leaving is not None and slots.step.exit.upper() in exit_:
-                exit_[slots.step.exit.upper()].append(slots.leaving)
-        runs: list[tuple[SfcAction, Expr]] = []
-        counter = self.ctx.hidden("SFC_PASS", INT, var_class="VAR_TEMP")
-        passes: set[int] = set()
+    def action_passes(self) -> list[tuple[SfcAction, dict[int, list[str]]]]:
+        """Every action (alphabetical) with the passes it runs in: EXIT_PASS and ENTRY_PASS with the steps (upper
+        case) whose leaving or entering runs it, FINAL_PASS and ACTIVE_PASS (no steps) when steps associate it.
+        (The ST export writes the same passes.)"""
+        out = []
         for action in sorted(self.body.actions, key=lambda a: a.name.upper()):
             key = action.name.upper()
+            passes: dict[int, list[str]] = {}
+            for name, slots in self.steps.items():
+                if slots.leaving is not None and (slots.step.exit or "").upper() == key:
+                    passes.setdefault(EXIT_PASS, []).append(name)
+                if slots.entering is not None and (slots.step.entry or "").upper() == key:
+                    passes.setdefault(ENTRY_PASS, []).append(name)
             control = self.controls.get(key)
-            terms: list[Expr] = []
-            for number, requests in ((EXIT_PASS, exit_[key]), (ENTRY_PASS, entry[key])):
-                if requests:
-                    passes.add(number)
-                    terms.append(_and(Binary("EQ", counter, Const(number, INT), BOOL), _or(requests)))
             if control is not None and control.inputs:
-                passes |= {FINAL_PASS, ACTIVE_PASS}
-                final = _and(control.member("A"), _not(control.member("Q")))
-                terms.append(_and(Binary("EQ", counter, Const(FINAL_PASS, INT), BOOL), final))
-                terms.append(_and(Binary("EQ", counter, Const(ACTIVE_PASS, INT), BOOL), control.member("Q")))
-            if not terms:
+                passes[FINAL_PASS] = passes[ACTIVE_PASS] = []
+            if not passes:
                 self.report(
                     "SFC-UNUSED",
                     f"the action {action.name} is not associated with any step: it never runs",
                     file=action_file(self.pou.name, action.name),
                     severity="warning",
                 )
+            out.append((action, passes))
+        return out
+
+    def action_blocks(self) -> list[Block]:
+        """Each action's body once, behind a jump that skips it unless this pass runs it; the passes loop."""
+        counter = self.ctx.hidden("SFC_PASS", INT, var_class="VAR_TEMP")
+        runs: list[tuple[SfcAction, Expr]] = []
+        passes: set[int] = set()
+        for action, wanted in self.action_passes():
+            passes |= set(wanted)
+            control = self.controls.get(action.name.upper())
+            terms: list[Expr] = []
+            for number, keys in sorted(wanted.items()):
+                if number == FINAL_PASS and control is not None:
+                    when = _and(control.member("A"), _not(control.member("Q")))
+                elif number == ACTIVE_PASS and control is not None:
+                    when = control.member("Q")
+                else:
+                    flags = [getattr(self.steps[k], "leaving" if number == EXIT_PASS else "entering") for k in keys]
+                    when = _or(flag for flag in flags if flag is not None)
+                terms.append(_and(Binary("EQ", counter, Const(number, INT), BOOL), when))
             runs.append((action, _or(terms)))
         if not passes:
             for action, _ in runs:

@@ -198,7 +198,7 @@ class BodyChecker:
             )
             return ERROR
         node.ref = symbol
-        if symbol.var_class not in ("VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT") and symbol.implicit not in SFC_PUBLIC:
+        if symbol.var_class not in ("VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT") and not _sfc_state(symbol):
             self.report(
                 "ST-NOT-ACCESSIBLE",
                 f"'{node.name}' is internal to {base.name}: only its inputs and outputs can be used from outside",
@@ -472,6 +472,15 @@ _EXPRESSION_CHECKS: dict[type, Callable[[BodyChecker, Any, Type | None], Type]] 
 
 #: Implicit SFC variables other POUs may read (``sfc1.step1.X``); named transitions stay internal.
 SFC_PUBLIC = ("step", "action")
+
+
+def _sfc_state(symbol: Symbol) -> bool:
+    """A step or action of an SFC, implicit or (in its ST export) declared as an SFC_STEP / ACTION_CONTROL: other
+    POUs may read it."""
+    if symbol.implicit in SFC_PUBLIC:
+        return True
+    ty = symbol.type
+    return isinstance(ty, t.FbType) and ty.std is not None and ty.std.name in ("SFC_STEP", "ACTION_CONTROL")
 
 
 def _implicit_in(node: ast.Expr) -> Symbol | None:

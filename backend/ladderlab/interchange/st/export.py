@@ -25,6 +25,7 @@ from .fbd import fbd_network
 from .ld import ld_network
 from .names import Names
 from .network import Declarations, plan
+from .sfc import st_sfc_pou
 
 SourceMap = list[tuple[int, str, str | None]]
 
@@ -75,6 +76,11 @@ def st_pou(project: Project, pou: Pou, checked: CheckResult) -> ExportedPou:
     ]
     if info is None or has_errors(diagnostics):
         return ExportedPou(None, [], _refused(pou, diagnostics))
+    if pou.language == "sfc":
+        made = st_sfc_pou(project, pou, checked, diagnostics)
+        if made.pou is None:
+            return ExportedPou(None, [], _refused(pou, made.diagnostics))
+        return ExportedPou(made.pou, [], made.diagnostics)
     lowered = lower_pou(pou, info, checked, diagnostics)
     if has_errors(diagnostics):
         return ExportedPou(None, [], _refused(pou, diagnostics))
