@@ -137,6 +137,11 @@ def _parser() -> argparse.ArgumentParser:
     export.add_argument("format", choices=["plcopen", "st"])
     export.add_argument("project", type=Path, help="project folder, project .json file or .st file")
     export.add_argument("--pou", default=None, help="st: only this POU (default: the whole project)")
+    export.add_argument(
+        "--sfc-text",
+        action="store_true",
+        help="st: SFC POUs as IEC textual SFC (INITIAL_STEP, TRANSITION ...) instead of the ST of their scan",
+    )
     export.add_argument("-o", "--output", type=Path, default=None, help="file to write (default: standard output)")
     export.set_defaults(func=_export)
 
@@ -228,7 +233,7 @@ def _export(args: argparse.Namespace) -> int:
                 print(diagnostic.format(), file=sys.stderr)
             return EXIT_ERRORS
     else:
-        data = _st_export(project, args.pou)
+        data = _st_export(project, args.pou, args.sfc_text)
         if data is None:
             return EXIT_ERRORS
     if args.output is None:
@@ -238,11 +243,15 @@ def _export(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
-def _st_export(project, pou: str | None) -> bytes | None:
+def _st_export(project, pou: str | None, sfc_text: bool = False) -> bytes | None:
     from ..interchange.st.export import export_pou_st
     from ..interchange.st.project import export_project_st
 
-    result = export_pou_st(project, pou) if pou is not None else export_project_st(project)
+    result = (
+        export_pou_st(project, pou, sfc_text=sfc_text)
+        if pou is not None
+        else export_project_st(project, sfc_text=sfc_text)
+    )
     for diagnostic in result.diagnostics:
         print(diagnostic.format(), file=sys.stderr)
     return None if has_errors(result.diagnostics) else result.text.encode("utf-8")

@@ -29,12 +29,17 @@ def export_st(
     name: str,
     workspace: WorkspaceDep,
     pou: Annotated[str | None, Query(description="one POU; default: the whole project")] = None,
+    sfc_text: Annotated[bool, Query(description="SFC POUs as IEC textual SFC instead of the ST of their scan")] = False,
 ) -> StExport:
     """The saved project (or one POU) as IEC ST that runs identically; each exported line maps to its network."""
     project = workspace.load(name).project
     if pou is not None and project.pou(pou) is None:
         raise ApiError(404, f"project {name!r} has no POU {pou!r}")
-    result = export_pou_st(project, pou) if pou is not None else export_project_st(project)
+    result = (
+        export_pou_st(project, pou, sfc_text=sfc_text)
+        if pou is not None
+        else export_project_st(project, sfc_text=sfc_text)
+    )
     if has_errors(result.diagnostics):
         raise ApiError(422, "the project cannot be exported as ST until these errors are fixed", result.diagnostics)
     return StExport(

@@ -12,6 +12,7 @@ from ..model.project import Pou, Project, Task
 from . import ast
 from .parser import parse_source
 from .printer import print_expression
+from .sfc_text import sfc_from_text
 
 _KIND = {"PROGRAM": "program", "FUNCTION_BLOCK": "function_block", "FUNCTION": "function"}
 
@@ -41,18 +42,23 @@ def source_to_project(
         return None, parsed.diagnostics
     source = _Text(text)
     types, globals_, pous, tasks = [], [], [], []
+    sfc_problems: list[Diagnostic] = []
     for item in parsed.ast.items:
         span = (item.span.line, item.span.column), (item.span.end_line, item.span.end_column)
         if isinstance(item, ast.TypeBlock):
             types.append(source.between(*span))
         elif isinstance(item, ast.VarBlock):
             globals_.append(source.between(*span))
+        elif isinstance(item, ast.Pou) and item.sfc is not None:
+            made, problems = _sfc_pou(item, source)
+            pous.append(made)
+            sfc_problems += problems
         elif isinstance(item, ast.Pou):
             pous.append(_pou(item, source))
         else:
             tasks += _tasks(item)
     project = Project(name=name, types="\n".join(types), globals="\n".join(globals_), pous=pous, tasks=tasks)
-    return project, parsed.diagnostics
+    return project, parsed.diagnostics + sfc_problems
 
 
 def _pou(pou: ast.Pou, source: _Text) -> Pou:
@@ -78,6 +84,17 @@ def _pou(pou: ast.Pou, source: _Text) -> Pou:
         declarations=declarations,
         body=_keep_lines(body, body_start),
     )
+
+
+def _sfc_pou(pou: ast.Pou, source: _Text) -> tuple[Pou, list[Diagnostic]]:
+    """A POU written in textual SFC: its declarations as typed, the chart drawn from its steps and transitions."""
+    declarations = ""
+    if pou.var_blocks:
+        first, last = pou.var_blocks[0].span, pou.var_blocks[-1].span
+        declarations = source.between((first.line, first.column), (last.end_line, last.end_column))
+    body, problems = sfc_from_text(pou, source.between)
+    kind = _KIND[pou.kind]
+    return Pou(name=pou.name, kind=kind, language="sfc", declarations=declarations, body=body), problems
 
 
 def _keep_lines(body: str, start: tuple[int, int]) -> str:
