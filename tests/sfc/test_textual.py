@@ -70,7 +70,7 @@ def test_a_textual_sfc_function_block_reads_and_runs_like_its_plcopen_twin():
     assert [d.format() for d in diagnostics] == []
     counter = project.pou("CounterSFC")
     assert counter.language == "sfc"
-    assert [a.body for a in counter.body.actions][0] == "Cnt := 17; (* ResetCounterValue *)"
+    assert counter.body.actions[0].body == "Cnt := 17; (* ResetCounterValue *)"
     sim = build(project.model_copy(update={"tasks": [Task(name="t", interval="T#100ms", programs=["Check"])]}))
     counts = []
     for scan in range(30):
