@@ -43,6 +43,13 @@ export function DebugBar({ networksOf, reveal }: DebugBarProps) {
       <button type="button" onClick={() => debug.step("out")} title={`Step out (${keysOf("app", "step-out")})`}>
         Step out
       </button>
+      <button
+        type="button"
+        onClick={() => debug.step("transition")}
+        title={`Step to the next SFC transition that fires (${keysOf("app", "step-transition")})`}
+      >
+        Step to transition
+      </button>
       <button type="button" onClick={() => debug.step("network")} title="Step to the next network">
         Step network
       </button>

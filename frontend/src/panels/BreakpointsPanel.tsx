@@ -34,7 +34,7 @@ function ldElementText(body: LdBody, id: string): string | null {
 
 /** Where a breakpoint is, in words: "network 2 seal_in: comment", "element motor (coil Motor)", "line 3: Count := Count + 1;". */
 export function describePlace(bp: Breakpoint, pou: Pou | undefined, body: Pou["body"] | undefined): string {
-  const networks: Networks = body && typeof body === "object" ? (body.networks ?? []) : [];
+  const networks: Networks = body && typeof body === "object" && "networks" in body ? (body.networks ?? []) : [];
   if ("line" in bp) {
     const text = typeof body === "string" ? body.split("\n")[bp.line - 1]?.trim() : undefined;
     return text ? `line ${bp.line}: ${text}` : `line ${bp.line}`;

@@ -23,6 +23,7 @@ import { coverageLines, coverageMarks, coverageOf } from "../tests/coverage";
 import { testsStore, useTests } from "../tests/store";
 import { useDiagramPou } from "./useDiagramPou";
 import { FbdPouView } from "../fbd/FbdPouView";
+import { SfcPouView } from "../sfc/SfcPouView";
 import { ExportMenu } from "../interchange/ExportMenu";
 import { ImportPlcopen } from "../interchange/ImportPlcopen";
 import { appStore } from "../store";
@@ -50,7 +51,7 @@ const KINDS: { kind: Pou["kind"]; title: string }[] = [
   { kind: "function_block", title: "Function blocks" },
   { kind: "function", title: "Functions" },
 ];
-const LANGUAGE = { st: "ST", ld: "LD", fbd: "FBD" } as const;
+const LANGUAGE = { st: "ST", ld: "LD", fbd: "FBD", sfc: "SFC" } as const;
 
 export const formatTime = (iso: string | null | undefined): string => {
   if (!iso) return "an unknown time";
@@ -544,6 +545,7 @@ function PouView({ name }: { name: string }) {
   const pou = useWorkspace((s) => pouOf(s.project, name));
   const history = useWorkspace((s) => s.histories[name]);
   const fbdHistory = useWorkspace((s) => s.fbdHistories[name]);
+  const sfcHistory = useWorkspace((s) => s.sfcHistories[name]);
   const project = useWorkspace((s) => s.name);
   const unsaved = useWorkspace((s) => s.changed.includes(name));
   const focus = usePanels((s) => (s.focus?.pou.toUpperCase() === name.toUpperCase() ? s.focus : null));
@@ -557,7 +559,7 @@ function PouView({ name }: { name: string }) {
   }
   if (!pou || !project) return <p className="placeholder">{name} is no longer in this project.</p>;
   const modes: { id: PouMode; label: string }[] = [
-    { id: "body", label: pou.language === "st" ? "Body" : "Diagram" },
+    { id: "body", label: pou.language === "st" ? "Body" : pou.language === "sfc" ? "Chart" : "Diagram" },
     { id: "declarations", label: "Declarations" },
     { id: "variables", label: "Variables" },
     ...(pou.language !== "st" ? [{ id: "st" as const, label: "View as ST" }] : []),
@@ -589,6 +591,8 @@ function PouView({ name }: { name: string }) {
     content = <LdPouView pou={pou} history={history} />;
   } else if (pou.language === "fbd" && fbdHistory) {
     content = <FbdPouView pou={pou} history={fbdHistory} onlineActions={<OnlineActions pou={pou} />} />;
+  } else if (pou.language === "sfc" && sfcHistory) {
+    content = <SfcPouView pou={pou} history={sfcHistory} onlineActions={<OnlineActions pou={pou} />} />;
   } else {
     content = (
       <p className="placeholder">
@@ -695,7 +699,7 @@ export function WorkspaceView() {
   const networksOf = useCallback(
     (pouName: string) => {
       const body = pouNamed(project, pouName)?.body;
-      return body && typeof body === "object" ? (body.networks ?? []).map((n) => n.id) : [];
+      return body && typeof body === "object" && "networks" in body ? (body.networks ?? []).map((n) => n.id) : [];
     },
     [project],
   );
