@@ -89,6 +89,11 @@ export function SfcDiagram(props: SfcDiagramProps) {
 
 const firstStep = (layout: ChartLayout): Item | undefined => layout.items.find((i) => kindOf(i.element) === "step");
 
+/** The hover text of a drawn element's problems, each with its code (as the FBD editor shows them). */
+function tooltip(problems: readonly Diagnostic[]): string {
+  return problems.map((d) => `${d.code}: ${d.message}`).join("\n");
+}
+
 function ItemView(props: SfcDiagramProps & { item: Item; initial: boolean }) {
   const { item, online, marks, selected } = props;
   const id = item.element.id;
@@ -112,7 +117,7 @@ function ItemView(props: SfcDiagramProps & { item: Item; initial: boolean }) {
     onDoubleClick: (e: MouseEvent) => props.onDoubleClick?.(id, e),
     onContextMenu: (e: MouseEvent) => props.onContextMenu?.(id, e),
   };
-  const title = problems.map((d) => d.message).join("\n");
+  const title = tooltip(problems);
   const breakpoint = marks?.breakpoints.has(id) ? (
     <circle className="sfc-breakpoint" cx={item.x - STEP_W / 2 - 10} cy={item.y + item.height / 2} r={5} />
   ) : null;
@@ -245,7 +250,7 @@ function ActionBlock(props: SfcDiagramProps & { step: SfcStep; x: number; y: num
               props.onSelectAssociation?.(step.id, row.id, e);
             }}
           >
-            {problems.length ? <title>{problems.map((d) => d.message).join("\n")}</title> : null}
+            {problems.length ? <title>{tooltip(problems)}</title> : null}
             <rect className="sfc-cell" x={left} y={top} width={QUALIFIER_W} height={ROW_H} />
             <rect
               className="sfc-cell sfc-action-name"

@@ -18,6 +18,7 @@ import {
 import type { Diagnostic } from "../generated/api";
 import type { SfcAction, SfcNamedTransition } from "../generated/project";
 import { MenuList, type MenuItem } from "../ld/editor/ContextMenu";
+import { clipboardActions, type LastClip } from "../ld/editor/systemClipboard";
 import type { LdOnlineActions } from "../ld/editor/LdEditor";
 import { OperandValuePrompt, type ValueRequest } from "../ld/editor/ValuePrompt";
 import { canRedo, canUndo, record, redo, undo, type History } from "../ld/history";
@@ -69,12 +70,8 @@ type Command = CommandOf<"sfc">;
 type Editing = { kind: "name" | "condition" | "target"; id: string } | null;
 
 const ZOOMS = [0.5, 0.67, 0.8, 1, 1.25, 1.5, 2];
-const lastClip: { text: string | null } = { text: null };
-
-/** Remembers the last copied fragment (the clipboard may refuse to be read back). */
-function rememberClip(text: string): void {
-  lastClip.text = text;
-}
+/** The last fragment copied in this tab (the browser may keep its clipboard closed to the toolbar's Paste). */
+const lastClip: LastClip = { text: null };
 
 export function SfcEditor(props: SfcEditorProps) {
   const { history, onHistoryChange, readOnly } = props;
@@ -127,22 +124,25 @@ export function SfcEditor(props: SfcEditorProps) {
     return apply(fn(selected ?? "")) || true;
   };
 
-  const copy = (cut: boolean, write?: (text: string) => void): boolean => {
-    if (!selected) return false;
-    const fragment = ops.copyFragment(body, selected);
-    if (!fragment) return false;
-    const text = ops.serializeFragment(fragment);
-    rememberClip(text);
-    if (write) write(text);
-    else void navigator.clipboard?.writeText?.(text).catch(() => undefined);
-    if (cut && editable) apply(ops.remove(body, selected));
-    return true;
-  };
-  const paste = (text: string | null): boolean => {
-    const fragment = text ? ops.parseFragment(text) : null;
-    if (!fragment || !selected || !editable) return false;
-    return apply(ops.pasteFragment(body, selected, fragment));
-  };
+  const clipboard = clipboardActions(
+    {
+      take: (cut) => {
+        const fragment = selected ? ops.copyFragment(body, selected) : null;
+        if (!fragment) return null;
+        if (cut && editable) apply(ops.remove(body, selected!));
+        return ops.serializeFragment(fragment);
+      },
+      paste: (text) => {
+        const fragment = text ? ops.parseFragment(text) : null;
+        if (!fragment) setMessage("The clipboard holds no SFC steps or transitions.");
+        else if (!selected) setMessage("Select where to paste first.");
+        else apply(ops.pasteFragment(body, selected, fragment));
+      },
+      isClip: (text) => ops.parseFragment(text) !== null,
+      locked: !editable,
+    },
+    lastClip,
+  );
 
   const handlers: Record<Command, () => boolean> = {
     "insert-step": () => editable && apply(ops.insertBelow(body, selected)),
@@ -179,15 +179,10 @@ export function SfcEditor(props: SfcEditorProps) {
       return apply(ops.remove(body, selected)) && (setSelected(null), true);
     },
     "delete-branch": () => (editable && selected ? apply(ops.removeBranch(body, selected)) : false),
-    copy: () => copy(false),
-    cut: () => copy(true),
-    paste: () => {
-      void navigator.clipboard
-        ?.readText?.()
-        .then((text) => paste(text) || paste(lastClip.text))
-        .catch(() => paste(lastClip.text));
-      return true;
-    },
+    // Copy, cut and paste arrive as clipboard events (below), which reach the system clipboard.
+    copy: () => false,
+    cut: () => false,
+    paste: () => false,
     undo: () => editable && canUndo(history) && (onHistoryChange(undo(history)), true),
     redo: () => editable && canRedo(history) && (onHistoryChange(redo(history)), true),
     "zoom-in": () => (setZoom((z) => Math.min(ZOOMS.length - 1, z + 1)), true),
@@ -277,14 +272,9 @@ export function SfcEditor(props: SfcEditorProps) {
       role="application"
       aria-label="Sequential function chart editor"
       onKeyDown={onKeyDown}
-      onCopy={(e) => {
-        if ((e.target as HTMLElement).closest("input, textarea")) return;
-        if (copy(false, (text) => e.clipboardData.setData("text/plain", text))) e.preventDefault();
-      }}
-      onPaste={(e) => {
-        if ((e.target as HTMLElement).closest("input, textarea")) return;
-        if (paste(e.clipboardData.getData("text/plain"))) e.preventDefault();
-      }}
+      onCopy={(e) => clipboard.onCopy(e, false)}
+      onCut={(e) => clipboard.onCopy(e, true)}
+      onPaste={clipboard.onPaste}
     >
       <div className="ld-toolbar sfc-toolbar" role="toolbar" aria-label="SFC editing">
         {toolbar.map(({ label, command, enabled }) => (
@@ -295,7 +285,9 @@ export function SfcEditor(props: SfcEditorProps) {
             title={keysOf("sfc", command) ? `${label} (${keysOf("sfc", command)})` : label}
             onMouseDown={(e) => e.preventDefault()}
             onClick={() => {
-              handlers[command]();
+              if (command === "copy" || command === "cut") clipboard.copy(command === "cut");
+              else if (command === "paste") clipboard.paste();
+              else handlers[command]();
               root.current?.focus();
             }}
           >
@@ -593,33 +585,59 @@ function Properties(props: PropertiesProps) {
     );
   }
   if (kind === "jump") {
-    const target = (element as { target: string }).target;
     return (
-      <section className="sfc-properties" aria-label="Jump">
-        <h3>Jump</h3>
-        <label>
-          Jump target
-          <select
-            aria-label="Jump target"
-            value={target}
-            disabled={readOnly}
-            autoFocus={props.editing?.kind === "target"}
-            onChange={(e) => apply(ops.setJump(body, element.id, e.target.value))}
-          >
-            {steps(body).map((s) => (
-              <option key={s.id} value={s.name}>
-                {s.name}
-              </option>
-            ))}
-          </select>
-        </label>
-      </section>
+      <JumpTarget
+        body={body}
+        id={element.id}
+        target={(element as { target: string }).target}
+        readOnly={readOnly}
+        focus={props.editing?.kind === "target"}
+        apply={apply}
+        onDone={() => props.setEditing(null)}
+      />
     );
   }
   return (
     <p className="sfc-hint">
       {kind === "parallel" ? "Simultaneous divergence" : "Alternative divergence"}: select one of its branches.
     </p>
+  );
+}
+
+function JumpTarget(props: {
+  body: SfcBody;
+  id: string;
+  target: string;
+  readOnly: boolean;
+  focus: boolean;
+  apply(result: ops.EditResult): boolean;
+  onDone(): void;
+}) {
+  const select = useRef<HTMLSelectElement>(null);
+  useEffect(() => {
+    if (props.focus) select.current?.focus();
+  }, [props.focus]);
+  return (
+    <section className="sfc-properties" aria-label="Jump">
+      <h3>Jump</h3>
+      <label>
+        Jump target
+        <select
+          ref={select}
+          aria-label="Jump target"
+          value={props.target}
+          disabled={props.readOnly}
+          onBlur={props.onDone}
+          onChange={(e) => props.apply(ops.setJump(props.body, props.id, e.target.value))}
+        >
+          {steps(props.body).map((s) => (
+            <option key={s.id} value={s.name}>
+              {s.name}
+            </option>
+          ))}
+        </select>
+      </label>
+    </section>
   );
 }
 
@@ -709,6 +727,14 @@ function Field(props: {
 }) {
   const [text, setText] = useState(props.value);
   const [seen, setSeen] = useState(props.value);
+  const input = useRef<HTMLInputElement>(null);
+  // Editing asked for (Enter, F2, a double-click): the field takes the focus with its text selected.
+  useEffect(() => {
+    if (props.autoFocus) {
+      input.current?.focus();
+      input.current?.select();
+    }
+  }, [props.autoFocus]);
   if (props.value !== seen) {
     setSeen(props.value);
     setText(props.value);
@@ -721,12 +747,12 @@ function Field(props: {
     <label className="sfc-field">
       <span>{props.label}</span>
       <input
+        ref={input}
         aria-label={props.label}
         value={text}
         placeholder={props.placeholder}
         readOnly={props.readOnly}
         list={props.list}
-        autoFocus={props.autoFocus}
         spellCheck={false}
         onChange={(e) => setText(e.target.value)}
         onBlur={commit}
