@@ -49,7 +49,8 @@ def remote(tmp_path: Path, *args: str) -> LiveServer:
     return LiveServer(tmp_path / "remote-ws", tmp_path / "remote.log", *args).start()
 
 
-def test_sign_in_with_a_password_then_work_online(page, errors: Errors, tmp_path: Path) -> None:
+def test_sign_in_with_a_password_then_work_online(page, errors: Errors, browser_errors, tmp_path: Path) -> None:
+    browser_errors.allow(r"401 \(Unauthorized\) \(http://127\.0\.0\.1:\d+/api/login\)")  # the wrong password
     secret = tmp_path / "password"
     secret.write_text("correct horse battery\n")
     server = remote(tmp_path, "--allow-remote", "--password-file", str(secret))
@@ -82,6 +83,7 @@ def test_sign_in_with_a_password_then_work_online(page, errors: Errors, tmp_path
         page.wait_for_function(f"() => ({n_value})() > 5")  # values arrive over the websocket
         page.screenshot(path=str(ARTIFACTS / "remote-online.png"))
     finally:
+        page.goto("about:blank")  # the app polls its server: leave it before the server stops
         server.stop()
     # expected: the wrong password, and the symbols of the new POU before its first save (as in local mode)
     assert errors.unexpected((401, "/api/login"), (404, "/api/projects/lab/pous/Main/symbols")) == []
@@ -95,6 +97,7 @@ def test_the_printed_token_link_opens_the_app(page, errors: Errors, tmp_path: Pa
         page.wait_for_url(f"{server.url}/")  # the token leaves the address bar
         page.get_by_role("button", name=re.compile("^motor")).wait_for()
     finally:
+        page.goto("about:blank")  # the app polls its server: leave it before the server stops
         server.stop()
     assert errors.unexpected() == []
 

@@ -96,7 +96,7 @@ class Simulation:
         self._context = compiled.generated.context
         self._ns = compiled.namespace()
         self._clock = wall_clock
-        self._watchdog = Watchdog(watchdog_clock, self._ns["ll_wb"])  # type: ignore[arg-type]
+        self._watchdog = Watchdog(watchdog_clock, self._ns["ll_wb"])  # type: ignore[arg-type]  # generated POU classes and their namespace are untyped
         self._ns["ll_wd"] = self._watchdog.check
         self._tasks: list[Task] = task_table(compiled.program, watchdog_s)
         self._schedule = Schedule(self._tasks)
@@ -156,7 +156,7 @@ class Simulation:
 
     def _attach_debugger(self) -> None:
         self.debugger = (
-            Debugger(self.compiled.generated.pauses, self._ns["ll_halt"])  # type: ignore[arg-type]
+            Debugger(self.compiled.generated.pauses, self._ns["ll_halt"])  # type: ignore[arg-type]  # generated POU classes and their namespace are untyped
             if self.variant == "debug"
             else None
         )
@@ -169,9 +169,9 @@ class Simulation:
             if pou.kind != "program":
                 continue
             if key in self.programs:
-                self.programs[key].ll_init(warm)  # type: ignore[attr-defined]
+                self.programs[key].ll_init(warm)  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
             else:
-                self.programs[key] = self._ns[names.pou_class(pou.name)]()  # type: ignore[operator]
+                self.programs[key] = self._ns[names.pou_class(pou.name)]()  # type: ignore[operator]  # generated POU classes and their namespace are untyped
                 self._ns[names.program_instance(pou.name)] = self.programs[key]  # other POUs read it (sfc1.step1.X)
         self._paths = None
 
@@ -195,7 +195,7 @@ class Simulation:
     def reset(self, cold: bool = False) -> None:
         """Warm (RETAIN variables keep their values) or cold restart; clears faults, ends a halted scan."""
         if self._scan is not None:
-            self._scan.close()  # type: ignore[attr-defined]
+            self._scan.close()  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
         self._scan, self.halted = None, None
         if self.debugger is not None:
             self.debugger.waiting_for_transition = False
@@ -253,7 +253,7 @@ class Simulation:
                     self._watchdog.arm(task.watchdog_s)
                     try:
                         for name in task.programs:
-                            self.programs[name].execute(now)  # type: ignore[attr-defined]
+                            self.programs[name].execute(now)  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
                     except Exception as error:
                         self._fault(task, error, now)
             self._finish((self._clock() - start) * 1000.0)
@@ -269,18 +269,18 @@ class Simulation:
             self._watchdog.arm(task.watchdog_s)
             try:
                 for name in task.programs:
-                    yield from self.programs[name].execute(now)  # type: ignore[attr-defined]
+                    yield from self.programs[name].execute(now)  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
             except Exception as error:
                 self._fault(task, error, now)
 
     def _drive(self) -> bool:
         start = self._clock()
         try:
-            pid, instance = next(self._scan)  # type: ignore[arg-type]
+            pid, instance = next(self._scan)  # type: ignore[arg-type]  # generated POU classes and their namespace are untyped
         except StopIteration:
             self._busy += self._clock() - start
             self._scan = None
-            self.debugger.arm(None)  # type: ignore[union-attr]
+            self.debugger.arm(None)  # type: ignore[union-attr]  # the debug variant is in use on this path
             self._finish(self._busy * 1000.0)
             return True
         self._busy += self._clock() - start
@@ -288,9 +288,9 @@ class Simulation:
         point = self.compiled.generated.pauses[pid]
         self.halted = Halt(
             point, self._instance_path(instance) if instance is not None else None, self.debugger.reason(pid)
-        )  # type: ignore[union-attr]
-        self.debugger.halted_at(pid)  # type: ignore[union-attr]
-        self.debugger.arm(None)  # type: ignore[union-attr]
+        )  # type: ignore[union-attr]  # generated code is untyped
+        self.debugger.halted_at(pid)  # type: ignore[union-attr]  # the debug variant is in use on this path
+        self.debugger.arm(None)  # type: ignore[union-attr]  # the debug variant is in use on this path
         return False
 
     def _finish(self, elapsed_ms: float) -> None:
@@ -322,7 +322,7 @@ class Simulation:
         ``links`` binds VAR_IN_OUT slots of the instance to program instances of the configuration (slot ->
         program name), so its code reads and writes them (a test's ``Main.Start := TRUE``)."""
         key, pou_key = name.upper(), pou.upper()
-        obj = self._ns[names.pou_class(self._context.pous[pou_key].name)]()  # type: ignore[operator]
+        obj = self._ns[names.pou_class(self._context.pous[pou_key].name)]()  # type: ignore[operator]  # generated POU classes and their namespace are untyped
         layout = self._context.layouts[pou_key]
         for slot, program in (links or {}).items():
             place = layout.get(slot)
@@ -343,7 +343,7 @@ class Simulation:
         now = self._ns["ll_now"]
         self._watchdog.arm(limit_s)
         try:
-            obj.execute(now)  # type: ignore[attr-defined]
+            obj.execute(now)  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
         except passthrough:
             raise
         except Exception as error:
@@ -353,7 +353,7 @@ class Simulation:
                 self.compiled.filename,
                 self._ns,
                 task="",
-                time_ms=now,  # type: ignore[arg-type]
+                time_ms=now,  # type: ignore[arg-type]  # generated POU classes and their namespace are untyped
                 scan=self.scan_count,
                 instance_path=self._instance_path,
             )
@@ -366,7 +366,7 @@ class Simulation:
         each task is next due at its first interval after it (ADVANCE_TIME)."""
         if not ms >= 0:
             raise ValueError(f"the clock only moves forward, not by {ms} ms")
-        now = max(self.time_ms, self._ns["ll_now"]) + ms  # type: ignore[type-var, operator]
+        now = max(self.time_ms, self._ns["ll_now"]) + ms  # type: ignore[type-var, operator]  # generated POU classes and their namespace are untyped
         self._schedule.skip_to(now)
         self._ns["ll_now"] = now
 
@@ -429,7 +429,7 @@ class Simulation:
         return tuple(frames)
 
     def _continue(self, granularity: str | None) -> Halt | None:
-        self.debugger.arm(granularity)  # type: ignore[union-attr]
+        self.debugger.arm(granularity)  # type: ignore[union-attr]  # the debug variant is in use on this path
         self.halted = None
         self._watchdog.resume(self._watchdog_left)
         self._drive()
@@ -495,7 +495,7 @@ class Simulation:
                 self._read_deferred(obj, table)
             else:
                 self._read_some_deferred(key, obj, table, indices)
-            values, stamps = obj.ll_pr, obj.ll_px  # type: ignore[attr-defined]
+            values, stamps = obj.ll_pr, obj.ll_px  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
         found_values: dict[str, object] = {}
         executed: list[str] = []
         stamp, constants, groups, names_ = self._stamp, table.constants, table.groups, table.elements
@@ -513,8 +513,8 @@ class Simulation:
         """Fill in the probes the monitor code reads after the scan (codegen/deferred.py); never-run ones stay unset."""
         if not table.deferred or self.variant != "monitor":
             return
-        obj.ll_read_probes()  # type: ignore[attr-defined]
-        values, stamps = obj.ll_pr, obj.ll_px  # type: ignore[attr-defined]
+        obj.ll_read_probes()  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
+        values, stamps = obj.ll_pr, obj.ll_px  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
         for index in table.deferred:
             if all(stamps[g] < 0 for g in table.groups[index]):
                 values[index] = UNSET
@@ -523,7 +523,7 @@ class Simulation:
         """``_read_deferred`` for the probes ``indices`` only: each reads its variable through a resolved path."""
         if not table.deferred_paths or self.variant != "monitor":
             return
-        values, stamps = obj.ll_pr, obj.ll_px  # type: ignore[attr-defined]
+        values, stamps = obj.ll_pr, obj.ll_px  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
         for index in indices:
             path = table.deferred_paths.get(index)
             if path is None:
@@ -559,13 +559,13 @@ class Simulation:
             self._paths, self._instances = {}, {}
             for key, obj in self.programs.items():
                 self._add_instance(key, obj, self._attached.get(key, key))
-            for place in self._context.globals.places.values():  # type: ignore[union-attr]
+            for place in self._context.globals.places.values():  # type: ignore[union-attr]  # generated POU classes and their namespace are untyped
                 value = getattr(self._roots.get(("global", "G" if not place.page else f"G{place.page}")), place.attr)
                 self._add_values(place.slot.name, place.slot.type, value)
         return self._paths
 
     def _add_instance(self, path: str, obj: object, pou: str) -> None:
-        self._paths[id(obj)] = path  # type: ignore[index]
+        self._paths[id(obj)] = path  # type: ignore[index]  # generated POU classes and their namespace are untyped
         self._instances[path.upper()] = (obj, pou)
         layout = self._context.layouts[pou]
         for place in layout.places.values():
@@ -580,7 +580,7 @@ class Simulation:
         elif isinstance(ty, t.Array) and isinstance(ty.element, (t.FbInstance, t.Array, t.Struct)):
             lo = ty.dims[0][0]
             inner = t.Array(ty.element, ty.dims[1:]) if len(ty.dims) > 1 else ty.element
-            for offset, item in enumerate(value):  # type: ignore[arg-type]
+            for offset, item in enumerate(value):  # type: ignore[arg-type]  # generated POU classes and their namespace are untyped
                 self._add_values(f"{path}[{lo + offset}]", inner, item)
         elif isinstance(ty, t.Struct):
             for f in ty.fields:
@@ -647,16 +647,16 @@ class Simulation:
     def state(self) -> SimState:
         """The whole state between scans as plain data (not while halted)."""
         self._not_halted()
-        pages = sorted({global_owner(p.page) for p in self._context.globals.places.values()})  # type: ignore[union-attr]
+        pages = sorted({global_owner(p.page) for p in self._context.globals.places.values()})  # type: ignore[union-attr]  # generated POU classes and their namespace are untyped
         return SimState(
             self.compiled.declarations,
             self.time_ms,
-            self._ns["ll_now"],  # type: ignore[arg-type]
+            self._ns["ll_now"],  # type: ignore[arg-type]  # generated POU classes and their namespace are untyped
             self.scan_count,
             self._stamp,
             tuple((task.next_due, task.stopped) for task in self._tasks),
-            {name: data_of(obj) for name, obj in self.programs.items()},  # type: ignore[misc]
-            {page: data_of(self._ns[page]) for page in pages},  # type: ignore[misc]
+            {name: data_of(obj) for name, obj in self.programs.items()},  # type: ignore[misc]  # generated POU classes and their namespace are untyped
+            {page: data_of(self._ns[page]) for page in pages},  # type: ignore[misc]  # generated POU classes and their namespace are untyped
             {path: value for path, (_, value) in self._forces.items()},
             {name: (pou, dict(self._links.get(name, {}))) for name, pou in self._attached.items()},
         )
@@ -671,9 +671,9 @@ class Simulation:
             if name not in self.programs:
                 self.attach(name, pou, links)
         for name, data in state.instances.items():
-            restore_into(self.programs[name], data)  # type: ignore[arg-type]
+            restore_into(self.programs[name], data)  # type: ignore[arg-type]  # generated POU classes and their namespace are untyped
         for page, data in state.globals.items():
-            restore_into(self._ns[page], data)  # type: ignore[arg-type]
+            restore_into(self._ns[page], data)  # type: ignore[arg-type]  # generated POU classes and their namespace are untyped
         self._schedule.time_ms = state.time_ms
         for task, (due, stopped) in zip(self._tasks, state.tasks):
             task.next_due, task.stopped = due, stopped

@@ -66,7 +66,7 @@ def data_of(value: object) -> object:
     if isinstance(value, _SCALARS) or value is UNSET:
         return value
     if value.__class__ is list:
-        return [data_of(item) for item in value]  # type: ignore[union-attr]
+        return [data_of(item) for item in value]  # type: ignore[union-attr]  # generated POU classes and their namespace are untyped
     if value.__class__ is tuple:  # a VAR_IN_OUT reference (container, key)
         return REFERENCE
     names = [*_slot_names(type(value)), *getattr(value, "__dict__", ())]

@@ -136,7 +136,7 @@ async def _stream(project: Project, files: list[SuiteFile], test: str | None, co
                 seconds=round(outcome.seconds, 3),
             )
             report = outcome.coverage.report(names) if outcome.coverage is not None else None
-            emit(TestEvent(type="done", summary=summary, coverage=report))  # type: ignore[arg-type]
+            emit(TestEvent(type="done", summary=summary, coverage=report))  # type: ignore[arg-type]  # the summary's model is built by the runner
         finally:
             loop.call_soon_threadsafe(queue.put_nowait, None)
 

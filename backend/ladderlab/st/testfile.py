@@ -179,7 +179,7 @@ class TestChecker(BodyChecker):
     def _as_verb(self, use: VerbUse, check):
         """Check the expression an assertion stands for, its problems told with the verb's name, not the
         operator's the user never wrote ('=' needs ... -> ASSERT_EQ needs ...)."""
-        report, operator = self.report, f"'{use.compare.op}' "  # type: ignore[union-attr]
+        report, operator = self.report, f"'{use.compare.op}' "  # type: ignore[union-attr]  # operands were checked when the test file was lowered
 
         def renamed(code: str, message: str, at, severity: str = "error") -> None:
             report(code, message.replace(operator, use.verb + " ", 1), at, severity)

@@ -68,11 +68,11 @@ class Host:
         method = self._methods.get(where.verb)
         if method is None:
             method = self._methods[where.verb] = getattr(self, "_" + where.verb.lower())
-        return method(where, *args)  # type: ignore[operator]
+        return method(where, *args)  # type: ignore[operator]  # operands were checked when the test file was lowered
 
     # ------------------------------------------------------------ failing
     def fail(self, site: Site, message: str, kind: str = "assertion", **values: object) -> None:
-        raise TestFailure(Failure(message, site.line, site.column, site.verb, kind=kind, **values))  # type: ignore[arg-type]
+        raise TestFailure(Failure(message, site.line, site.column, site.verb, kind=kind, **values))  # type: ignore[arg-type]  # operands were checked when the test file was lowered
 
     # ------------------------------------------------------------ assertions
     def _phase(self, site: Site) -> bool:
@@ -161,10 +161,10 @@ class Host:
         if not args:  # the start: the time the timeout counts from
             return self.sim.time_ms
         start, timeout = args
-        if self.sim.time_ms - start >= timeout:  # type: ignore[operator]
+        if self.sim.time_ms - start >= timeout:  # type: ignore[operator]  # operands were checked when the test file was lowered
             self.fail(
                 site,
-                f"RUN_UNTIL timed out: {site.operands[0]} still FALSE after {format_time(timeout)} "  # type: ignore[arg-type]
+                f"RUN_UNTIL timed out: {site.operands[0]} still FALSE after {format_time(timeout)} "  # type: ignore[arg-type]  # operands were checked when the test file was lowered
                 f"({self.sim.scan_count} scans run in the test)",
                 kind="timeout",
             )
@@ -207,11 +207,11 @@ class Host:
 
     # ------------------------------------------------------------ forcing
     def _force(self, site: Site, value) -> bool:
-        self.sim.force(site.path, value)  # type: ignore[arg-type]
+        self.sim.force(site.path, value)  # type: ignore[arg-type]  # operands were checked when the test file was lowered
         return True
 
     def _release(self, site: Site) -> bool:
-        self.sim.unforce(site.path)  # type: ignore[arg-type]
+        self.sim.unforce(site.path)  # type: ignore[arg-type]  # operands were checked when the test file was lowered
         return True
 
     # ------------------------------------------------------------ mocks
@@ -220,7 +220,7 @@ class Host:
         return True
 
     def _mock_function(self, site: Site, value) -> bool:
-        self.sim.replace_function(site.function, lambda *args: value)  # type: ignore[arg-type]
+        self.sim.replace_function(site.function, lambda *args: value)  # type: ignore[arg-type]  # operands were checked when the test file was lowered
         return True
 
     def _mock_verify_called(self, site: Site, reference) -> bool:
@@ -244,7 +244,7 @@ class Host:
         calls = self.sim.mocks.count(_target(reference))
         if calls is None:
             self.fail(site, f"{site.verb}: {site.operands[0]} is not mocked (write MOCK {site.operands[0]}; first)")
-        return calls  # type: ignore[return-value]
+        return calls  # type: ignore[return-value]  # operands were checked when the test file was lowered
 
 
 def _target(reference) -> object:

@@ -18,5 +18,5 @@ def failed_test_simulation(*, project_json: str, file: str, text: str, test: str
     project = Project.model_validate_json(project_json)
     prepared, result = failure_state(project, file, text, test)
     sim = Build(prepared.compiled, [], prepared.watchdogs).simulation(watchdog_s=watchdog_s)
-    sim.restore(result.state)  # type: ignore[arg-type]
+    sim.restore(result.state)  # type: ignore[arg-type]  # operands were checked when the test file was lowered
     return sim

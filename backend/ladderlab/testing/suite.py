@@ -209,10 +209,10 @@ def _worker_start(project: Project, files: list[SuiteFile], memory_limit_mb: int
 
 
 def _run_part(index: int, part: int, parts: int, options: Options, choice: tuple[str | None, str | None]) -> _Part:
-    cache: dict[int, Prepared] = _worker["prepared"]  # type: ignore[assignment]
+    cache: dict[int, Prepared] = _worker["prepared"]  # type: ignore[assignment]  # set by the worker pool's initialiser
     if index not in cache:
-        file: SuiteFile = _worker["files"][index]  # type: ignore[index]
-        cache[index] = prepare(_worker["project"], file.path, file.text, coverage=options.coverage)  # type: ignore[arg-type]
+        file: SuiteFile = _worker["files"][index]  # type: ignore[index]  # set by the worker pool's initialiser
+        cache[index] = prepare(_worker["project"], file.path, file.text, coverage=options.coverage)  # type: ignore[arg-type]  # set by the worker pool's initialiser
     prepared = cache[index]
     coverage = Coverage() if options.coverage else None
     tests = selected(prepared, *choice) if prepared.compiled is not None else []
