@@ -25,8 +25,20 @@ from pathlib import Path
 import pytest
 from playwright.sync_api import expect
 
+from ladderlab.storage.project_folder import read_project_folder
+
 from .conftest import ARTIFACTS
-from .steps import new_pou, new_project
+from .steps import (
+    go_online,
+    new_pou,
+    new_project,
+    open_pou,
+    panel_tab,
+    scan_count,
+    settled_scan_count,
+    store_project,
+    watch,
+)
 
 pytestmark = pytest.mark.browser
 
@@ -229,3 +241,116 @@ def test_new_user_draws_an_sfc_program(page, server):
     assert [(a["name"], a["language"], a["body"]) for a in main["body"]["actions"]] == [
         ("Pump", "st", "fills := fills + 1;")
     ]
+
+
+ACTIVE = re.compile(r"\bsfc-active\b")
+HALTED = re.compile(r"\bsfc-halted\b")
+BLUE_FILL = "rgb(214, 228, 255)"  # sfc.css --sfc-active-fill
+
+
+def write(page, path: str, text: str) -> None:
+    """Writes ``text`` into ``path`` from its watch list row (added first)."""
+    watch(page, path)
+    row = page.get_by_role("region", name="Panels").locator(f'tr[data-path="{path.upper()}"]')
+    row.get_by_label(f"New value for {path}").fill(text)
+    row.get_by_role("button", name="Write").click()
+
+
+def context_menu(editor, element_id: str, entry: str) -> None:
+    """Right-clicks a drawn step or transition and picks ``entry`` from its menu."""
+    item(editor, element_id).locator(":scope > g").first.click(button="right")
+    editor.page.get_by_role("menuitem", name=entry).click()
+
+
+def test_the_car_wash_online_breakpoints_and_stepping_by_transition(page, server):
+    """SFC-09, ON-17; issue 24 item 4: the running chart as the scans compute it, a step breakpoint, stepping to
+    the next transition that fires, a single cycle and a forced step flag."""
+    project = read_project_folder(EXAMPLES / "car_wash_sfc").model_dump(mode="json", exclude_none=True)
+    store_project(server, project)
+    page.goto(server)
+    open_pou(page, "car_wash_sfc", "Wash")
+    editor = page.get_by_role("application", name="Sequential function chart editor")
+    editor.wait_for()
+    cars = watch(page, "Wash.Cars")
+    go_online(page)
+
+    # Waiting for a car: Idle is active, blue, and its N action Ready runs (blue too).
+    idle = item(editor, "s1")
+    expect(idle).to_have_class(ACTIVE)
+    assert idle.locator("rect.sfc-box").evaluate("e => getComputedStyle(e).fill") == BLUE_FILL
+    expect(editor.locator('g.sfc-association[data-sfc-association="a2"]')).to_have_class(ACTIVE)
+    expect(item(editor, "s23")).not_to_have_class(ACTIVE)
+    # Idle's time grows with the scans (100 ms each); inactive steps show none.
+    idle_time = idle.locator("text.sfc-time")
+    expect(idle_time).to_have_text(re.compile(r"^T#[1-9]"))
+    first = idle_time.text_content()
+    expect(idle_time).not_to_have_text(first or "")
+    assert item(editor, "s23").locator("text.sfc-time").text_content() in ("", "T#0ms")
+    # Every transition shows its condition's value, the inactive ones too: NOT Premium and TRUE are TRUE.
+    condition = lambda t: editor.locator(f'text[data-condition="{t}"]')  # noqa: E731
+    expect(condition("t3")).to_have_text("FALSE")  # Start AND CarInside
+    expect(condition("t7")).to_have_text("FALSE")  # Premium
+    expect(condition("t12")).to_have_text("TRUE")  # NOT Premium, Welcome inactive
+    expect(condition("t22")).to_have_text("TRUE")  # TRUE, the join's steps inactive
+    page.screenshot(path=str(ARTIFACTS / "sfc-online-idle.png"))
+
+    # A car drives in and Start is pressed (written inputs): t3 fires, Welcome counts the car (P), NOT Premium
+    # leads to the simultaneous Brush and Spray.
+    write(page, "Wash.CarInside", "TRUE")
+    expect(condition("t3")).to_have_text("FALSE")
+    write(page, "Wash.Start", "TRUE")
+    expect(item(editor, "s13")).to_have_class(ACTIVE)
+    expect(item(editor, "s18")).to_have_class(ACTIVE)
+    expect(idle).not_to_have_class(ACTIVE)
+    expect(cars).to_have_text("1")
+    expect(editor.locator('g.sfc-association[data-sfc-association="a14"]')).to_have_class(ACTIVE)  # N Brushes
+    page.screenshot(path=str(ARTIFACTS / "sfc-online-running.png"))
+
+    # Stopped, a breakpoint on Rinse from its context menu; Run halts in the scan where Rinse is active, before
+    # its actions run.
+    page.get_by_role("button", name="Stop", exact=True).click()
+    context_menu(editor, "s23", "Set breakpoint")
+    expect(item(editor, "s23").locator("circle.sfc-breakpoint")).to_have_count(1)
+    panels = panel_tab(page, "Breakpoints")
+    expect(panels.locator("tr.breakpoint-row")).to_contain_text("step Rinse")
+    page.get_by_role("button", name="Run", exact=True).click()
+    debug = page.get_by_role("region", name="Debugging")
+    expect(debug.get_by_role("status")).to_have_text(re.compile(r"^Halted at Wash, step Rinse$", re.I))
+    expect(item(editor, "s23")).to_have_class(HALTED)
+    expect(item(editor, "s23")).to_have_class(ACTIVE)
+    page.screenshot(path=str(ARTIFACTS / "sfc-online-breakpoint.png"))
+
+    # The breakpoint removed, "Step to next transition": scans run until Rinse.T >= T#2s fires (20 scans of
+    # 100 ms after Rinse became active), and halt there; Rinse is still the active step.
+    context_menu(editor, "s23", "Remove breakpoint")
+    expect(item(editor, "s23").locator("circle.sfc-breakpoint")).to_have_count(0)
+    halted_scan = scan_count(page)
+    editor.get_by_role("button", name="Step to next transition").click()
+    expect(debug.get_by_role("status")).to_have_text(re.compile(r"^Halted at Wash, transition Rinse\.T >= T#2s$", re.I))
+    expect(item(editor, "t26")).to_have_class(HALTED)
+    expect(item(editor, "s23")).to_have_class(ACTIVE)
+    expect(item(editor, "s27")).not_to_have_class(ACTIVE)
+    assert 15 <= scan_count(page) - halted_scan <= 25, (halted_scan, scan_count(page))
+    page.screenshot(path=str(ARTIFACTS / "sfc-online-transition.png"))
+
+    # Continue: the transition fires, Dry follows; stopped, a single cycle is exactly one scan.
+    debug.get_by_role("button", name="Continue").click()
+    expect(item(editor, "s27")).to_have_class(ACTIVE)
+    page.get_by_role("button", name="Stop", exact=True).click()
+    page.get_by_role("status", name="Online state").filter(has_text="Online · stopped").wait_for()
+    before = settled_scan_count(page)
+    page.get_by_role("button", name="Single cycle").click()
+    page.wait_for_function(
+        "n => Number(document.querySelector('[data-testid=scan-count]').textContent) === n", arg=before + 1
+    )
+
+    # A forced step flag: Leave.X forced TRUE from the step's menu; the next cycle runs Leave's actions (N Gate),
+    # the step shows the force; released, the force is gone.
+    context_menu(editor, "s32", "Force TRUE")
+    page.get_by_role("button", name="Single cycle").click()
+    expect(item(editor, "s32")).to_have_class(ACTIVE)
+    expect(item(editor, "s32").locator("text.sfc-time")).to_have_text(re.compile(r"^F "))
+    expect(editor.locator('g.sfc-association[data-sfc-association="a33"]')).to_have_class(ACTIVE)
+    page.screenshot(path=str(ARTIFACTS / "sfc-online-forced.png"))
+    context_menu(editor, "s32", "Release force")
+    expect(item(editor, "s32").locator("text.sfc-time")).not_to_have_text(re.compile(r"^F "))

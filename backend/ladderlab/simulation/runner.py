@@ -163,6 +163,7 @@ class SimRunner:
         self._commands: deque[tuple[str, dict, Reply]] = deque()
         self._running = False
         self._to_transition = False  # a "transition" step runs scans until an SFC transition fires
+        self._run_after_transition = False  # it was asked for from a halt of a running simulation: keep running
         self._faulted = False
         self._seen_faults = 0
         self._seen_scans = sim.scan_count
@@ -271,7 +272,7 @@ class SimRunner:
             self._set_running(False)
         if self._to_transition and (sim.halted is not None or not self._running):
             self._to_transition = False  # reached (or stopped): no further scans after this halt
-            self._set_running(False)
+            self._set_running(self._run_after_transition and sim.halted is not None)
             if sim.halted is None and sim.debugger is not None:
                 sim.debugger.waiting_for_transition = False  # stopped before a transition fired
         state = self._state()
@@ -452,14 +453,17 @@ class SimRunner:
         """Halted: continue to the next pause point of this granularity. Else halt in the next scan.
 
         ``transition``: when no SFC transition fires in that scan, scans run on (paced) until one does; the
-        simulation then halts there and stops (it was stopped or halted when the step was asked for)."""
+        simulation then halts there, and Continue goes back to what it was doing: stopped, or running when the step
+        was asked for at a halt of a running simulation (as after any other step)."""
         if self._faulted and self.sim.halted is None:
             raise CommandError("bad_state", "the simulation stopped on a fault: reset it first")
         if granularity == "transition" and self._running and self.sim.halted is None:
             raise CommandError("bad_state", "the simulation is running: stop it before stepping to a transition")
         self._needs_debug()
+        running = self._running
         self.sim.step(granularity)
         if granularity == "transition" and self.sim.halted is None and not self._faulted:
+            self._run_after_transition = running
             self._log("state", "info", "running until an SFC transition fires")
             self._to_transition = True
             self._set_running(True)

@@ -65,8 +65,9 @@ export function describeBreakpoint(bp: Breakpoint, networkIds: readonly string[]
 export const partName = (body: string): string =>
   body.replace(/^actions\//, "action ").replace(/^transitions\//, "transition ");
 
-/** Where a halt is, in words: POU (instance), network/element/line. */
-export function describeHalt(at: At, networkIds: readonly string[] = []): string {
+/** Where a halt is, in words: POU (instance), network/element/line; `elementText` names the element when known
+ * ("step Rinse"). */
+export function describeHalt(at: At, networkIds: readonly string[] = [], elementText?: string | null): string {
   const parts = [
     at.instance && at.instance.toUpperCase() !== at.pou.toUpperCase() ? `${at.pou} (${at.instance})` : at.pou,
   ];
@@ -75,7 +76,7 @@ export function describeHalt(at: At, networkIds: readonly string[] = []): string
     const index = at.body ? -1 : networkIds.indexOf(at.network);
     parts.push(`network ${index >= 0 ? index + 1 : at.network}`);
   }
-  if (at.element) parts.push(`element ${at.element}`);
+  if (at.element) parts.push(elementText ?? `element ${at.element}`);
   if (at.line != null) parts.push(`line ${at.line}`);
   return parts.join(", ");
 }

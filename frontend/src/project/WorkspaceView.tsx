@@ -24,6 +24,7 @@ import { testsStore, useTests } from "../tests/store";
 import { useDiagramPou } from "./useDiagramPou";
 import { FbdPouView } from "../fbd/FbdPouView";
 import { SfcPouView } from "../sfc/SfcPouView";
+import { elementText as sfcElementText, type SfcBody } from "../sfc/model";
 import { ExportMenu } from "../interchange/ExportMenu";
 import { ImportPlcopen } from "../interchange/ImportPlcopen";
 import { appStore } from "../store";
@@ -704,6 +705,14 @@ export function WorkspaceView() {
     [project],
   );
 
+  const elementText = useCallback(
+    (pouName: string, id: string) => {
+      const pou = pouNamed(project, pouName);
+      return pou?.language === "sfc" ? sfcElementText(pou.body as SfcBody, id) : null;
+    },
+    [project],
+  );
+
   // A different project: the old one's simulation and check results do not apply; its own breakpoints do.
   useEffect(() => {
     void onlineStore.getState().goOffline();
@@ -790,7 +799,7 @@ export function WorkspaceView() {
       </ViewBoundary>
       <div className="editor-area">
         <ViewBoundary name="The debugging bar">
-          <DebugBar networksOf={networksOf} reveal={revealPlace} />
+          <DebugBar networksOf={networksOf} elementText={elementText} reveal={revealPlace} />
         </ViewBoundary>
         <ViewBoundary name="The tabs">
           <Tabs />

@@ -8,6 +8,7 @@ import type { Diagnostic } from "../generated/api";
 import type { FbdBody, LdBody, Pou, SfcAction, SfcNamedTransition } from "../generated/project";
 import { debugStore, useDebug } from "../debug/store";
 import { FbdEditor } from "../fbd/editor/FbdEditor";
+import { keysOf } from "../keys/keymap";
 import { LdEditor } from "../ld/editor/LdEditor";
 import { historyOf, record, type History } from "../ld/history";
 import { operandCommands } from "../online/operandCommands";
@@ -16,7 +17,7 @@ import { onlineReadOnly, useShownInstance } from "../online/useLdOnline";
 import { useWorkspace } from "../project/store";
 import { StEditor } from "../st/StEditor";
 import { useStAssist } from "../st/useStAssist";
-import { chartOf, kindOf, walk, type SfcBody } from "./model";
+import type { SfcBody } from "./model";
 import { bindSfc, sfcOnlineView } from "./online";
 import { setPartBody } from "./ops";
 import { SfcEditor, type SfcPart } from "./SfcEditor";
@@ -102,10 +103,17 @@ export function SfcPouView({
     }
   }
 
+  // The server steps to a transition from a stopped or halted scan (a running one is stopped first).
+  const running = useOnline((s) => s.monitor.state === "running");
   const stepToTransition = live ? (
     <button
       type="button"
-      title="Run scans until an SFC transition fires, then halt there (Ctrl+F11)"
+      disabled={running}
+      title={
+        running
+          ? "Stop the simulation first: then scans run until an SFC transition fires"
+          : `Run scans until an SFC transition fires, then halt there (${keysOf("app", "step-transition")})`
+      }
       onClick={() => debugStore.getState().step("transition")}
     >
       Step to next transition
@@ -269,11 +277,3 @@ function PartEditor(props: {
 }
 
 const kindOfDiagram = (item: SfcAction | SfcNamedTransition) => item.language ?? "st";
-
-/** Step and transition ids of a chart (for the Breakpoints panel and reveals). */
-export function chartElementIds(body: SfcBody): string[] {
-  return [...walk(chartOf(body))]
-    .map((p) => p.element)
-    .filter((e) => kindOf(e) === "step" || kindOf(e) === "transition")
-    .map((e) => e.id);
-}

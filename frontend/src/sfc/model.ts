@@ -103,5 +103,14 @@ export function freshId(prefix: string, used: Set<string>): string {
   return id;
 }
 
+/** A step or transition in the user's words ("step Rinse", "transition Rinse.T >= T#2s"); null for other ids. */
+export function elementText(body: SfcBody, id: string): string | null {
+  const element = locate(body, id)?.element;
+  if (!element) return null;
+  if (kindOf(element) === "step") return `step ${(element as SfcStep).name}`;
+  if (kindOf(element) === "transition") return `transition ${(element as SfcTransition).condition}`;
+  return null;
+}
+
 /** The id of the element (or association) a probe or breakpoint names: "t3.COND" is transition t3's condition. */
 export const conditionProbe = (transition: string): string => `${transition}.COND`;

@@ -1,11 +1,12 @@
 // What the SFC editor subscribes to online and how the monitor becomes its online view (SFC-09, ON-17):
 // the probes of the instance (a step's probe runs while it is active; a transition's "<id>.COND" probe is its
 // condition every scan; its own probe runs when it fires) and the paths of the steps' X and T and the actions'
-// Q and A (ir/lower_sfc.py names them so).
+// Q and A (ir/lower_sfc.py names them so), and the BOOL variables associated to steps as actions (their
+// value is their action flag: IEC 61131-3 6.7.4.2).
 import type { MonitorState } from "../online/monitor";
 import { pathKey, powerKey } from "../online/monitor";
 import { timeLiteral } from "../online/values";
-import { chartOf, conditionProbe, kindOf, walk, type SfcBody } from "./model";
+import { chartOf, conditionProbe, kindOf, walk, type SfcBody, type SfcStep } from "./model";
 import type { SfcOnlineView } from "./SfcDiagram";
 
 export interface SfcBinding {
@@ -15,22 +16,32 @@ export interface SfcBinding {
   steps: { id: string; name: string }[];
   transitions: string[];
   actions: string[];
+  /** BOOL variables associated to steps in place of an action. */
+  variables: string[];
 }
 
 export function bindSfc(body: SfcBody, instance: string): SfcBinding {
   const steps: { id: string; name: string }[] = [];
   const transitions: string[] = [];
+  const associated = new Set<string>();
   for (const { element } of walk(chartOf(body))) {
-    if (kindOf(element) === "step") steps.push({ id: element.id, name: (element as { name: string }).name });
+    if (kindOf(element) === "step") {
+      const step = element as SfcStep;
+      steps.push({ id: step.id, name: step.name });
+      for (const row of step.actions ?? []) associated.add(row.action.trim());
+    }
     if (kindOf(element) === "transition") transitions.push(element.id);
   }
   const actions = (body.actions ?? []).map((a) => a.name);
+  const named = new Set(actions.map((a) => a.toUpperCase()));
+  const variables = [...associated].filter((name) => name && !named.has(name.toUpperCase()));
   const paths = [
     ...steps.flatMap((s) => [`${instance}.${s.name}.X`, `${instance}.${s.name}.T`]),
     ...actions.flatMap((a) => [`${instance}.${a}.Q`, `${instance}.${a}.A`]),
+    ...variables.map((v) => `${instance}.${v}`),
   ];
   const ids = [...steps.map((s) => s.id), ...transitions, ...transitions.map(conditionProbe)];
-  return { instance, paths, elements: [{ pou_instance: instance, ids }], steps, transitions, actions };
+  return { instance, paths, elements: [{ pou_instance: instance, ids }], steps, transitions, actions, variables };
 }
 
 export function sfcOnlineView(monitor: MonitorState, binding: SfcBinding): SfcOnlineView {
@@ -60,5 +71,10 @@ export function sfcOnlineView(monitor: MonitorState, binding: SfcBinding): SfcOn
     if (value(`${instance}.${action}.A`) === true) running.add(action.toUpperCase());
     if (value(`${instance}.${action}.Q`) === true) flagged.add(action.toUpperCase());
   }
+  for (const variable of binding.variables)
+    if (value(`${instance}.${variable}`) === true) {
+      running.add(variable.toUpperCase());
+      flagged.add(variable.toUpperCase());
+    }
   return { active, times, conditions, fired, running, flagged, forced };
 }
