@@ -294,6 +294,16 @@ def test_the_car_wash_online_breakpoints_and_stepping_by_transition(page, server
     expect(condition("t22")).to_have_text("TRUE")  # TRUE, the join's steps inactive
     page.screenshot(path=str(ARTIFACTS / "sfc-online-idle.png"))
 
+    # The LD action Ready, opened online: its network shows the power its scans computed (no car: the NC contact
+    # on CarInside conducts and the coil GreenLamp is on); back to the chart.
+    parts = editor.locator('section.sfc-parts[aria-label="Actions"]')
+    parts.locator("li", has=page.get_by_label("Name of action Ready")).get_by_role("button", name="Open").click()
+    page.get_by_role("navigation", name="SFC parts").get_by_text("Action Ready (LD)").wait_for()
+    expect(page.locator('g.ld-coil[data-id="k1"]')).to_have_class(re.compile(r"\bld-on\b"))
+    page.screenshot(path=str(ARTIFACTS / "sfc-online-ld-action.png"))
+    page.get_by_role("navigation", name="SFC parts").get_by_role("button", name="Chart").click()
+    editor.wait_for()
+
     # A car drives in and Start is pressed (written inputs): t3 fires, Welcome counts the car (P), NOT Premium
     # leads to the simultaneous Brush and Spray.
     write(page, "Wash.CarInside", "TRUE")

@@ -3,8 +3,8 @@
 // watch list and the step's context), breakpoints on steps and transitions, "step to the next transition",
 // and the POU's actions and named transitions opened in the ST, LD or FBD editor (their lines and networks
 // take breakpoints too, with the part they are in).
-import { useEffect, useMemo, useState, type ReactNode } from "react";
-import type { Diagnostic } from "../generated/api";
+import { useCallback, useEffect, useMemo, useState, type ReactNode } from "react";
+import type { Diagnostic, LibraryEntry, SymbolInfo } from "../generated/api";
 import type { FbdBody, LdBody, Pou, SfcAction, SfcNamedTransition } from "../generated/project";
 import { debugStore, useDebug } from "../debug/store";
 import { FbdEditor } from "../fbd/editor/FbdEditor";
@@ -13,7 +13,8 @@ import { LdEditor } from "../ld/editor/LdEditor";
 import { historyOf, record, type History } from "../ld/history";
 import { operandCommands } from "../online/operandCommands";
 import { onlineStore, useOnline } from "../online/store";
-import { onlineReadOnly, useShownInstance } from "../online/useLdOnline";
+import { onlineReadOnly, useLdOnline, useShownInstance } from "../online/useLdOnline";
+import { useFbdOnline } from "../fbd/useFbdOnline";
 import { useWorkspace } from "../project/store";
 import { StEditor } from "../st/StEditor";
 import { useStAssist } from "../st/useStAssist";
@@ -221,53 +222,123 @@ function PartEditor(props: {
       />
     );
   }
+  const diagram = {
+    pou,
+    body,
+    file,
+    diagnostics: mine,
+    library,
+    symbols: table ? symbols : null,
+    readOnly: props.readOnly,
+    histories,
+    setHistories,
+    onChange: props.onChange,
+  };
   if ("networks" in item.body && kindOfDiagram(item) === "ld") {
-    const history = (histories[file] as History<LdBody> | undefined) ?? historyOf(item.body as LdBody);
-    const present = history.present === item.body ? history : historyOf(item.body as LdBody);
+    const networks = breakpoints.flatMap((b) => ("network" in b && inPart(b) ? [[b.network, true] as const] : []));
     return (
-      <LdEditor
-        key={file}
-        history={present}
-        onHistoryChange={(h) => {
-          setHistories((all) => ({ ...all, [file]: h }));
-          props.onChange(h.present);
-        }}
-        library={library}
-        symbols={symbols}
-        diagnostics={mine}
-        readOnly={props.readOnly}
-        debugging={{
-          marks: {
-            networks: Object.fromEntries(
-              breakpoints.flatMap((b) => ("network" in b && inPart(b) ? [[b.network, true] as const] : [])),
-            ),
-            halted: at && at.body === body && at.network ? { network: at.network, element: null } : null,
-          },
-          toggle: (target) => {
-            if ("network" in target) debugStore.getState().toggle({ pou: pou.name, body, network: target.network });
-          },
-        }}
+      <LdPart
+        {...diagram}
+        content={item.body as LdBody}
+        breakpoints={Object.fromEntries(networks)}
+        halted={at && at.body === body && at.network ? at.network : null}
       />
     );
   }
-  const history = (histories[file] as History<FbdBody> | undefined) ?? historyOf(item.body as FbdBody);
-  const present = history.present === item.body ? history : historyOf(item.body as FbdBody);
+  return (
+    <FbdPart
+      {...diagram}
+      content={item.body as FbdBody}
+      breakpoints={new Set(breakpoints.flatMap((b) => ("network" in b && inPart(b) ? [b.network] : [])))}
+      halted={at && at.body === body ? { network: at.network ?? null, element: null } : null}
+    />
+  );
+}
+
+/** What the LD and FBD editors of a part share: where it is, its checks and its undo history. */
+interface DiagramPart {
+  pou: Pou;
+  /** "actions/Fill": breakpoints, halts and probes name the part so. */
+  body: string;
+  file: string;
+  diagnostics: Diagnostic[];
+  library: LibraryEntry[];
+  symbols: SymbolInfo[] | null;
+  readOnly: string | null;
+  histories: Record<string, History<LdBody | FbdBody>>;
+  setHistories(
+    update: (all: Record<string, History<LdBody | FbdBody>>) => Record<string, History<LdBody | FbdBody>>,
+  ): void;
+  onChange(content: SfcAction["body"]): void;
+}
+
+/** An LD action or transition, online with the power of its own probes. */
+function LdPart(props: DiagramPart & { content: LdBody; breakpoints: Record<string, boolean>; halted: string | null }) {
+  const { pou, body, file, content } = props;
+  const history = (props.histories[file] as History<LdBody> | undefined) ?? historyOf(content);
+  const present = history.present === content ? history : historyOf(content);
+  const live = useLdOnline(pou, content, props.symbols, props.library, body);
+  return (
+    <LdEditor
+      key={file}
+      history={present}
+      onHistoryChange={(h) => {
+        props.setHistories((all) => ({ ...all, [file]: h }));
+        props.onChange(h.present);
+      }}
+      library={props.library}
+      symbols={props.symbols ?? []}
+      diagnostics={props.diagnostics}
+      readOnly={props.readOnly}
+      online={live.online}
+      onlineActions={live.actions}
+      onVisibleChange={live.onVisibleChange}
+      debugging={{
+        marks: {
+          networks: props.breakpoints,
+          halted: props.halted ? { network: props.halted, element: null } : null,
+        },
+        toggle: (target) => {
+          if ("network" in target) debugStore.getState().toggle({ pou: pou.name, body, network: target.network });
+        },
+      }}
+    />
+  );
+}
+
+/** An FBD action or transition, online with the values of its own probes. */
+function FbdPart(
+  props: DiagramPart & {
+    content: FbdBody;
+    breakpoints: ReadonlySet<string>;
+    halted: { network: string | null; element: null } | null;
+  },
+) {
+  const { pou, body, file, content, library } = props;
+  const history = (props.histories[file] as History<FbdBody> | undefined) ?? historyOf(content);
+  const present = history.present === content ? history : historyOf(content);
+  const byName = useMemo(() => new Map(library.map((e) => [e.name.toUpperCase(), e])), [library]);
+  const lookup = useCallback((call: string) => byName.get(call.toUpperCase()), [byName]);
+  const live = useFbdOnline(pou, content, lookup, props.symbols, body);
   return (
     <FbdEditor
       key={file}
       history={present}
       onHistoryChange={(h) => {
-        setHistories((all) => ({ ...all, [file]: h }));
+        props.setHistories((all) => ({ ...all, [file]: h }));
         props.onChange(h.present);
       }}
       library={library}
-      symbols={symbols}
-      diagnostics={mine}
+      symbols={props.symbols ?? []}
+      diagnostics={props.diagnostics}
       readOnly={props.readOnly}
+      online={live.online}
+      onlineActions={live.actions}
+      onVisibleChange={live.onVisibleChange}
       debug={{
-        networks: new Set(breakpoints.flatMap((b) => ("network" in b && inPart(b) ? [b.network] : []))),
+        networks: props.breakpoints,
         elements: new Set(),
-        halted: at && at.body === body ? { network: at.network ?? null, element: null } : null,
+        halted: props.halted,
         toggle: (bp) => {
           if ("network" in bp) debugStore.getState().toggle({ pou: pou.name, body, network: bp.network });
         },
