@@ -74,6 +74,7 @@ CHECK_FAILS = {
     "rusty-cfc/tests/integration/data/cfc/jump_missing_label.cfc": ({"FBD-UNKNOWN-LABEL"}, BROKEN),
     "rusty-cfc/tests/integration/data/cfc/jump_no_label.cfc": ({"FBD-UNKNOWN-LABEL"}, BROKEN),
     "rusty-cfc/tests/integration/data/cfc/my_add.cfc": ({"FBD-UNKNOWN-CALL"}, OTHER_FILE),
+    "ironplc/integrations/vscode/tests/grammar/snap/plcopen-configuration.xml": ({"UNKNOWN-PROGRAM"}, GRAMMAR),
     "ironplc/integrations/vscode/tests/grammar/snap/plcopen-cdata.xml": (
         {"ST-UNKNOWN-VAR", "ST-DECL", "MISSING-RETURN-TYPE"},
         GRAMMAR,
@@ -163,7 +164,11 @@ def test_first_steps_counters_in_ld_fbd_and_st_agree_scan_for_scan(fixtures):
         body="st(Reset := Reset);\nfbd(Reset := Reset);\nld(Reset := Reset);",
     )
     program = project.model_copy(
-        update={"pous": [*counters, check], "tasks": [Task(name="t", interval="T#100ms", programs=["Check"])]}
+        update={
+            "pous": [*counters, check],
+            "tasks": [Task(name="t", interval="T#100ms", programs=["Check"])],
+            "configuration": None,
+        }
     )
     result = lower_project(program)
     assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
@@ -185,9 +190,9 @@ def test_first_steps_runs_as_imported_with_a_stand_in_for_its_il_counter(fixture
     sim = Simulation(result.program)
     for scan in range(1, 6):
         sim.cycle(1)
-        counts = [sim.read(f"plc_prg.Cnt{n}") for n in range(1, 6)]
+        counts = [sim.read(f"plc_task_instance.Cnt{n}") for n in range(1, 6)]  # the instance of plc_prg
         assert counts == [scan, scan, scan - 1, 0, scan]
-        assert sim.read("plc_prg.AVCnt") == pytest.approx((4 * scan - 1) / 5)
+        assert sim.read("plc_task_instance.AVCnt") == pytest.approx((4 * scan - 1) / 5)
 
 
 def test_first_steps_sfc_counter_counts_up_and_resets_as_its_chart_says(fixtures):
@@ -207,7 +212,11 @@ def test_first_steps_sfc_counter_counts_up_and_resets_as_its_chart_says(fixtures
         body="sfc(Reset := Reset);",
     )
     program = project.model_copy(
-        update={"pous": [counter, check], "tasks": [Task(name="t", interval="T#100ms", programs=["Check"])]}
+        update={
+            "pous": [counter, check],
+            "tasks": [Task(name="t", interval="T#100ms", programs=["Check"])],
+            "configuration": None,
+        }
     )
     result = lower_project(program)
     assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
@@ -228,8 +237,8 @@ def test_openplc_blink_in_ld_behaves_like_its_st_twin(fixtures):
         external("openplc-examples", "examples", "Blink", "blink.st").read_text(), name="blink", file="blink.st"
     )
     traces = []
-    for project, path in ((ld, "Blink.blink_led"), (st, "program0.LED_PIN")):
-        assert [t.interval for t in project.tasks] == ["T#20ms"]
+    for project, path in ((ld, "instance0.blink_led"), (st, "instance0.LED_PIN")):  # the instances' names
+        assert [t.interval for t in project.all_tasks()] == ["T#20ms"]
         sim = Simulation(lower_project(project).program)
         trace = []
         for _ in range(200):

@@ -20,6 +20,7 @@ from ladderlab.model import (
     OutputNode,
     Parallel,
     PinFlags,
+    ProgramInstance,
     Task,
 )
 from tests.interchange.plcopen_helpers import fbd_project, ld_project, pou_xml, project_xml
@@ -570,24 +571,18 @@ def test_types_globals_and_tasks_fill_the_project():
         "TYPE\n    Point : STRUCT\n        x : INT;\n        y : INT := 2;\n    END_STRUCT;\n"
         "    Level : USINT (0..9) := 3;\nEND_TYPE"
     )
-    assert project.globals == ("VAR_GLOBAL CONSTANT\n    Max : INT := 5;\nEND_VAR\nVAR_GLOBAL\n    rg : BOOL;\nEND_VAR")
-    assert project.tasks == [
-        Task(name="Fast", interval="T#5ms", priority=3, programs=["Main"]),
-        Task(name="OnEvent", interval="T#10ms", priority=1, programs=[]),
+    assert project.globals == "VAR_GLOBAL CONSTANT\n    Max : INT := 5;\nEND_VAR"
+    assert project.tasks == []
+    config = project.configuration
+    assert config.name == "C" and [r.name for r in config.resources] == ["R"]
+    (resource,) = config.resources
+    assert resource.globals == "VAR_GLOBAL\n    rg : BOOL;\nEND_VAR"
+    assert resource.tasks == [
+        Task(name="Fast", interval="T#5ms", priority=3, programs=[ProgramInstance(name="i1", type="Main")]),
+        Task(name="OnEvent", interval=None, single="trigger", priority=1, programs=[]),
     ]
-    assert [(d.code, d.severity, d.message) for d in result.diagnostics] == [
-        (
-            "PLCOPEN-CONFIG",
-            "warning",
-            "task OnEvent has no interval (an event task); it is imported as a cyclic task of T#10ms",
-        ),
-        (
-            "PLCOPEN-CONFIG",
-            "warning",
-            "program instance 'loose' is not assigned to a task; LadderLab runs programs "
-            "from tasks only, so it was not imported",
-        ),
-    ]
+    assert resource.programs == [ProgramInstance(name="loose", type="Main")]  # runs in the default task
+    assert [(d.code, d.severity, d.message) for d in result.diagnostics] == []
 
 
 def test_il_pous_actions_outside_sfc_and_foreign_add_data_are_reported_not_dropped_silently():

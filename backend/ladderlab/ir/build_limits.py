@@ -45,11 +45,12 @@ def data_too_large(program: Program) -> Diagnostic | None:
     """The refusal of a program whose globals and program instances hold more values than the limit."""
     counter = _Counter(program)
     parts = [("global", slot.name, counter.slot(slot)) for slot in program.globals]
-    parts += [
-        (pou.name, slot.name, counter.slot(slot))
-        for pou in program.pous.values()
-        if pou.kind == "program"
-        for slot in pou.slots
+    pous = {name.upper(): pou for name, pou in program.pous.items()}
+    parts += [  # each program instance holds its own values (two instances of one PROGRAM: twice)
+        (pous[instance.pou.upper()].name, slot.name, counter.slot(slot))
+        for instance in program.program_instances()
+        if instance.pou.upper() in pous
+        for slot in pous[instance.pou.upper()].slots
     ]
     total = sum(count for _, _, count in parts)
     if total <= limits.DATA_ELEMENTS.value:

@@ -21,7 +21,7 @@ from .fbd import (
     Wire,
 )
 from .ld import Box, Coil, Compare, Contact, Jump, LdBody, LdElement, LdNetwork, Parallel, Return
-from .project import PROJECT_FORMAT, Pou, Project, Task, TestFile
+from .project import PROJECT_FORMAT, Configuration, Pou, ProgramInstance, Project, Resource, Task, TestFile
 
 __all__ = [
     "PROJECT_FORMAT",
@@ -29,6 +29,7 @@ __all__ = [
     "Box",
     "Coil",
     "Compare",
+    "Configuration",
     "Connector",
     "Contact",
     "Continuation",
@@ -49,7 +50,9 @@ __all__ = [
     "PinRef",
     "Position",
     "Pou",
+    "ProgramInstance",
     "Project",
+    "Resource",
     "Return",
     "Severity",
     "Task",

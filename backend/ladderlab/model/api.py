@@ -160,6 +160,18 @@ class ScanTimes(BaseModel):
     last: float
 
 
+class IoPoint(BaseModel):
+    """One direct address the program uses, for the I/O view."""
+
+    area: Literal["I", "Q", "M", "S"] = Field(description="I inputs, Q outputs, M memory, S the Mosaic system area.")
+    address: str = Field(description="The address as written, e.g. '%IX0.1'; also its path for watch and write.")
+    type: str = Field(description="Its elementary type, e.g. 'BOOL' or 'INT'.")
+    names: list[str] = Field(
+        default_factory=list,
+        description="Paths of the variables declared AT it (e.g. 'MAIN.START'); empty when it is used without a name.",
+    )
+
+
 class SimulationInfo(BaseModel):
     """``GET /api/simulations/{id}``: one live simulation of a saved project."""
 
@@ -179,6 +191,10 @@ class SimulationInfo(BaseModel):
         default_factory=dict,
         description="Instance paths of every program and function block by POU name (upper case), e.g. "
         '{"BLINKER": ["MAIN.BLINK"]}: the instances an online view can show.',
+    )
+    io: list[IoPoint] = Field(
+        default_factory=list,
+        description="The direct addresses the program uses (inputs, outputs, memory), in address order.",
     )
 
 

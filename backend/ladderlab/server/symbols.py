@@ -16,8 +16,9 @@ from ..model import Project
 from ..model.api import SymbolInfo, SymbolTable, VariableChildren, VariableNode
 from ..st import types as t
 from ..st.checker import check_project as check_st
+from ..st.configuration import InstanceInfo
 from ..st.printer import print_initializer, print_type
-from ..st.symbols import Symbol
+from ..st.symbols import PouInfo, Symbol
 from ..storage import NotFoundError
 from .context import WorkspaceDep
 from .errors import ApiError, responses
@@ -127,8 +128,8 @@ def _walk(result, path: str) -> tuple[t.Type, tuple[int, ...]]:
     if not parts or parts[0][0] != "name":
         raise ApiError(422, f"{path!r} is not a variable path")
     head, rest = parts[0][1], parts[1:]
-    program = result.pou(head)
-    if program is not None and program.kind == "PROGRAM":
+    program = _instance_pou(result, head)
+    if program is not None:
         ty: t.Type = t.FbType(program.name, pou=program)
     else:
         if head.upper() == GLOBALS_PREFIX and rest[:1] == [("punct", ".")] and rest[1:2] and rest[1][0] == "name":
@@ -173,8 +174,27 @@ def _member_type(ty: t.Type, member: str) -> t.Type:
     return t.elementary(pin.type) or t.ERROR
 
 
+def _instances(result) -> dict[str, InstanceInfo]:
+    """The program instances the project runs, by upper-case name (a configuration names them; without one,
+    each PROGRAM has one instance named after it)."""
+    return result.configuration.instances if result.configuration is not None else {}
+
+
+def _instance_pou(result, name: str) -> PouInfo | None:
+    """The PROGRAM of the instance ``name``; a PROGRAM's own name stands for its only instance (engine paths)."""
+    instance = _instances(result).get(name.upper())
+    if instance is not None:
+        return instance.pou
+    program = result.pou(name)
+    if program is None or program.kind != "PROGRAM":
+        return None
+    if sum(1 for i in _instances(result).values() if i.pou is program) > 1:
+        return None
+    return program
+
+
 def _top_names(result) -> list[str]:
-    return [p.name for p in result.pous.values() if p.kind == "PROGRAM"] + [s.name for s in result.globals.values()]
+    return [i.name for i in _instances(result).values()] + [s.name for s in result.globals.values()]
 
 
 def variable_children(project: Project, path: str) -> VariableChildren:
@@ -184,9 +204,8 @@ def variable_children(project: Project, path: str) -> VariableChildren:
     text = path.strip()
     if not text:
         programs = [
-            VariableNode(name=p.name, path=p.name, type=p.name, var_class="PROGRAM", expandable=True)
-            for p in result.pous.values()
-            if p.kind == "PROGRAM"
+            VariableNode(name=i.name, path=i.name, type=i.pou.name, var_class="PROGRAM", expandable=True)
+            for i in _instances(result).values()
         ]
         return VariableChildren(
             path="", type=None, children=[*programs, *(_variable(s, s.name) for s in result.globals.values())]

@@ -19,6 +19,7 @@ from typing import Any
 from lark import Lark, Token
 from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedToken
 
+from ..iec.elementary import ALIASES, ELEMENTARY, GENERIC
 from ..model.diagnostics import Diagnostic
 from . import ast
 from .comments import attach_comments, blank_nested_comments
@@ -28,7 +29,7 @@ from .quick_decls import quick_declarations
 from .transformer import AstBuilder, StSyntaxError
 
 GRAMMAR = pathlib.Path(__file__).with_name("iec61131.lark")
-_STARTS = ["start_source", "start_pou", "start_decls", "start_stmts", "start_expr"]
+_STARTS = ["start_source", "start_pou", "start_decls", "start_stmts", "start_expr", "start_type", "start_config_blocks"]
 # Test files get a parser of their own from the same grammar: built from start_tests alone, its tables are
 # the only ones where the test keywords (END_TEST, MOCK ...) may follow a statement. (One LALR table for
 # all starts would merge them into the lookaheads of statements everywhere: ``x := 1; mock := 2;`` in a
@@ -85,6 +86,22 @@ TEST_KEYWORDS = frozenset(
 def _keywords() -> frozenset[str]:
     """Every keyword of the grammar, upper case."""
     return frozenset(_KEYWORD_RE.findall(GRAMMAR.read_text(encoding="utf-8")))
+
+
+@functools.cache
+def keywords() -> frozenset[str]:
+    """Words that are never names (KW-01, KW-02's hard keywords): the grammar's keywords but the contextual ones
+    (``_SOFT_KEYWORDS``, used as names by real libraries) and the test files' ones, TRUE/FALSE and the operator
+    words."""
+    return (_keywords() - _SOFT_KEYWORDS - TEST_KEYWORDS) | {"TRUE", "FALSE", "AND", "OR", "XOR", "NOT", "MOD"}
+
+
+@functools.cache
+def reserved_words() -> frozenset[str]:
+    """Words that cannot be declared as variable, field or type names: ``keywords()`` and the names of the
+    elementary and generic types (KW-02). (IEC 61131-3 ed. 3 types LadderLab does not have yet, such as LDT,
+    stay usable, as in edition 2.)"""
+    return keywords() | ELEMENTARY.keys() | ALIASES.keys() | GENERIC.keys() | {"STRING", "WSTRING"}
 
 
 @functools.cache
@@ -157,6 +174,16 @@ def parse_expression(
 ) -> ParseResult:
     """One operand or expression, e.g. an LD contact's ``T1.Q`` or a pin's ``arr[i] + 1``."""
     return _finish(_run(_prepare(text, nested_comments), "start_expr", file, pou=pou), text, file, pou)
+
+
+def parse_type(text: str, *, file: str | None = None, pou: str | None = None) -> ParseResult:
+    """One type specification, e.g. a function's result type: ``INT``, ``STRING[20]``, ``ARRAY [1..3] OF TRec``."""
+    return _run(text, "start_type", file, pou=pou)
+
+
+def parse_config_blocks(text: str, *, file: str | None = None) -> ParseResult:
+    """VAR_ACCESS and VAR_CONFIG blocks (a configuration's texts): ``list[AccessBlock | ConfigBlock]``."""
+    return _finish(_run(text, "start_config_blocks", file), text)
 
 
 def parse_tests(text: str, *, file: str | None = None, nested_comments: bool = False) -> ParseResult:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Any
 
 from ..model.diagnostics import Diagnostic
 from . import ast
@@ -55,6 +56,7 @@ class PouInfo:
     language: str
     return_type: Type | None
     symbols: dict[str, Symbol] = field(default_factory=dict)
+    return_spec: ast.TypeSpec | None = None  # the result type as written (subranges, a TYPE's own initial value)
     body: list[ast.Stmt] | None = None
     calls: set[str] = field(default_factory=set)
     actions: dict[str, list[ast.Stmt] | None] = field(default_factory=dict)
@@ -70,6 +72,7 @@ class CheckResult:
     types: dict[str, TypeDef] = field(default_factory=dict)
     globals: dict[str, Symbol] = field(default_factory=dict)
     pous: dict[str, PouInfo] = field(default_factory=dict)
+    configuration: Any = None  # configuration.ConfigurationInfo: the instances and tasks the project runs
 
     @property
     def ok(self) -> bool:

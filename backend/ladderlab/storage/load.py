@@ -14,23 +14,26 @@ from ..st.project_text import source_to_project
 from . import journal
 from .errors import ProjectLoadError, json_text_problem, validation_diagnostics
 from .project_folder import PROJECT_FILE, is_project_file, read_project_folder
+from .text_files import CLI_HINT, decode_text
 from .workspace import LOCKS_DIR
 
 
-def load_project_path(path: Path | str) -> Project:
-    """Read whatever a user points the CLI at; raises ProjectLoadError with located diagnostics."""
+def load_project_path(path: Path | str, encoding: str | None = None, hint: str = CLI_HINT) -> Project:
+    """Read whatever a user points the CLI at, its files in ``encoding`` (default UTF-8); raises ProjectLoadError
+    with located diagnostics (a file that does not decode: BAD-ENCODING at its first bad byte)."""
     path = Path(path)
     if path.is_dir():
         _finish_interrupted_save(path)
         if not (path / PROJECT_FILE).is_file():
             raise _error(str(path), f"not a project folder: it has no {PROJECT_FILE}")
-        return read_project_folder(path)
+        return read_project_folder(path, encoding, hint)
     if not path.is_file():
         raise _error(str(path), "no such file or folder")
     if path.suffix.lower() == ".json":
-        return _load_json_project(path)
+        return _load_json_project(path, decode_text(path.read_bytes(), path.name, encoding, hint))
     if path.suffix.lower() == ".st":
-        return project_from_st(path.read_text(encoding="utf-8"), name=path.stem, file=path.name)
+        text = decode_text(path.read_bytes(), path.name, encoding, hint)
+        return project_from_st(text, name=path.stem, file=path.name)
     raise _error(str(path), "expected a project folder, a project .json file or a .st file")
 
 
@@ -45,8 +48,7 @@ def _finish_interrupted_save(folder: Path) -> None:
         journal.recover(folder, is_project_file)
 
 
-def _load_json_project(path: Path) -> Project:
-    text = path.read_text(encoding="utf-8")
+def _load_json_project(path: Path, text: str) -> Project:
     refused = json_text_problem(text, path.name)
     if refused is not None:
         raise ProjectLoadError([refused])

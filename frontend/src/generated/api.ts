@@ -181,6 +181,10 @@ export interface ProjectDocument {
  * via the `definition` "Project".
  */
 export interface Project {
+  /**
+   * The IEC configuration; when given, its resources hold the tasks.
+   */
+  configuration?: Configuration | null;
   format?: "ladderlab/1";
   /**
    * ST text of VAR_GLOBAL ... END_VAR blocks.
@@ -188,6 +192,9 @@ export interface Project {
   globals?: string;
   name: string;
   pous?: Pou[];
+  /**
+   * The tasks of a project without a configuration (one implicit resource).
+   */
   tasks?: Task[];
   /**
    * Unit test files (tests/<name>.st).
@@ -197,6 +204,109 @@ export interface Project {
    * ST text of TYPE ... END_TYPE blocks.
    */
   types?: string;
+}
+/**
+ * The IEC configuration a project runs as (CONFIGURATION ... END_CONFIGURATION, CFG-01..08).
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "Configuration".
+ */
+export interface Configuration {
+  /**
+   * ST text of VAR_ACCESS blocks: named access paths.
+   */
+  access?: string;
+  /**
+   * ST text of VAR_CONFIG blocks: initial values and addresses.
+   */
+  config?: string;
+  /**
+   * ST text of the configuration's VAR_GLOBAL blocks.
+   */
+  globals?: string;
+  name: string;
+  resources?: Resource[];
+}
+/**
+ * A RESOURCE of a configuration (``RESOURCE name ON processor``): its globals and its tasks.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "Resource".
+ */
+export interface Resource {
+  /**
+   * ST text of the resource's VAR_GLOBAL blocks.
+   */
+  globals?: string;
+  /**
+   * None: the configuration's tasks without a RESOURCE block.
+   */
+  name?: string | null;
+  /**
+   * The processor type after ON.
+   */
+  on?: string | null;
+  /**
+   * Program instances without a task (they run in a cyclic 10 ms task).
+   */
+  programs?: ProgramInstance[];
+  tasks?: Task[];
+}
+/**
+ * A program instance: ``PROGRAM name WITH task : type (inputs, outputs)`` (IEC 61131-3 2.7.1, CFG-06).
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "ProgramInstance".
+ */
+export interface ProgramInstance {
+  /**
+   * VAR_INPUT name -> ST expression (globals, literals) set before each run.
+   */
+  inputs?: {
+    [k: string]: string;
+  };
+  /**
+   * The instance's name: watch paths start with it (name.var).
+   */
+  name: string;
+  /**
+   * VAR_OUTPUT name -> variable (a global) written after each run.
+   */
+  outputs?: {
+    [k: string]: string;
+  };
+  /**
+   * RETAIN: every variable of the instance keeps its value on a warm restart.
+   */
+  retain?: ("RETAIN" | "NON_RETAIN") | null;
+  /**
+   * The PROGRAM it is an instance of; two instances of one program are two states.
+   */
+  type: string;
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "Task".
+ */
+export interface Task {
+  /**
+   * IEC TIME literal, e.g. T#10ms: the task runs cyclically; null: only on SINGLE.
+   */
+  interval?: string | null;
+  name: string;
+  priority?: number;
+  /**
+   * What the task runs, in list order: a program's name (one instance named after it) or an instance.
+   */
+  programs?: (string | ProgramInstance)[];
+  /**
+   * A BOOL global or direct address: the task runs once on each of its rising edges.
+   */
+  single?: string | null;
+  /**
+   * The task's time budget per scan in ms (its scan's own running time); longer is a watchdog fault. Null: the default of 100 ms (CODESYS's).
+   */
+  watchdog_ms?: number | null;
 }
 /**
  * A program organisation unit. ``body`` is ST text, an ``LdBody``, an ``FbdBody`` or an ``SfcBody`` per
@@ -654,26 +764,6 @@ export interface SfcNamedTransition {
   name: string;
 }
 /**
- * This interface was referenced by `ApiTypes`'s JSON-Schema
- * via the `definition` "Task".
- */
-export interface Task {
-  /**
-   * IEC TIME literal, e.g. T#10ms.
-   */
-  interval?: string;
-  name: string;
-  priority?: number;
-  /**
-   * Program names, run in list order.
-   */
-  programs?: string[];
-  /**
-   * The task's time budget per scan in ms (its scan's own running time); longer is a watchdog fault. Null: the default of 100 ms (CODESYS's).
-   */
-  watchdog_ms?: number | null;
-}
-/**
  * A file of unit tests, ``tests/<name>.st`` in the project folder (docs/testing.md).
  *
  * Tests a teacher hides from students live in ``tests/hidden/`` and are not part of the model: the
@@ -744,6 +834,10 @@ export interface SimulationInfo {
     [k: string]: string[];
   };
   /**
+   * The direct addresses the program uses (inputs, outputs, memory), in address order.
+   */
+  io?: IoPoint[];
+  /**
    * Times the scans fell behind the wall clock and skipped ahead.
    */
   overruns: number;
@@ -763,6 +857,30 @@ export interface SimulationInfo {
    * Virtual time of the last scan.
    */
   time_ms: number;
+}
+/**
+ * One direct address the program uses, for the I/O view.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "IoPoint".
+ */
+export interface IoPoint {
+  /**
+   * The address as written, e.g. '%IX0.1'; also its path for watch and write.
+   */
+  address: string;
+  /**
+   * I inputs, Q outputs, M memory, S the Mosaic system area.
+   */
+  area: "I" | "Q" | "M" | "S";
+  /**
+   * Paths of the variables declared AT it (e.g. 'MAIN.START'); empty when it is used without a name.
+   */
+  names?: string[];
+  /**
+   * Its elementary type, e.g. 'BOOL' or 'INT'.
+   */
+  type: string;
 }
 /**
  * Wall time of the scans run so far, in milliseconds (halted time excluded).

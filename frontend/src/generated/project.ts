@@ -2,6 +2,10 @@
  * Do not edit: change the pydantic models, run `make schema`, then `npm run gen:types`. */
 
 export interface Project {
+  /**
+   * The IEC configuration; when given, its resources hold the tasks.
+   */
+  configuration?: Configuration | null;
   format?: "ladderlab/1";
   /**
    * ST text of VAR_GLOBAL ... END_VAR blocks.
@@ -9,6 +13,9 @@ export interface Project {
   globals?: string;
   name: string;
   pous?: Pou[];
+  /**
+   * The tasks of a project without a configuration (one implicit resource).
+   */
   tasks?: Task[];
   /**
    * Unit test files (tests/<name>.st).
@@ -18,6 +25,109 @@ export interface Project {
    * ST text of TYPE ... END_TYPE blocks.
    */
   types?: string;
+}
+/**
+ * The IEC configuration a project runs as (CONFIGURATION ... END_CONFIGURATION, CFG-01..08).
+ *
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "Configuration".
+ */
+export interface Configuration {
+  /**
+   * ST text of VAR_ACCESS blocks: named access paths.
+   */
+  access?: string;
+  /**
+   * ST text of VAR_CONFIG blocks: initial values and addresses.
+   */
+  config?: string;
+  /**
+   * ST text of the configuration's VAR_GLOBAL blocks.
+   */
+  globals?: string;
+  name: string;
+  resources?: Resource[];
+}
+/**
+ * A RESOURCE of a configuration (``RESOURCE name ON processor``): its globals and its tasks.
+ *
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "Resource".
+ */
+export interface Resource {
+  /**
+   * ST text of the resource's VAR_GLOBAL blocks.
+   */
+  globals?: string;
+  /**
+   * None: the configuration's tasks without a RESOURCE block.
+   */
+  name?: string | null;
+  /**
+   * The processor type after ON.
+   */
+  on?: string | null;
+  /**
+   * Program instances without a task (they run in a cyclic 10 ms task).
+   */
+  programs?: ProgramInstance[];
+  tasks?: Task[];
+}
+/**
+ * A program instance: ``PROGRAM name WITH task : type (inputs, outputs)`` (IEC 61131-3 2.7.1, CFG-06).
+ *
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "ProgramInstance".
+ */
+export interface ProgramInstance {
+  /**
+   * VAR_INPUT name -> ST expression (globals, literals) set before each run.
+   */
+  inputs?: {
+    [k: string]: string;
+  };
+  /**
+   * The instance's name: watch paths start with it (name.var).
+   */
+  name: string;
+  /**
+   * VAR_OUTPUT name -> variable (a global) written after each run.
+   */
+  outputs?: {
+    [k: string]: string;
+  };
+  /**
+   * RETAIN: every variable of the instance keeps its value on a warm restart.
+   */
+  retain?: ("RETAIN" | "NON_RETAIN") | null;
+  /**
+   * The PROGRAM it is an instance of; two instances of one program are two states.
+   */
+  type: string;
+}
+/**
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "Task".
+ */
+export interface Task {
+  /**
+   * IEC TIME literal, e.g. T#10ms: the task runs cyclically; null: only on SINGLE.
+   */
+  interval?: string | null;
+  name: string;
+  priority?: number;
+  /**
+   * What the task runs, in list order: a program's name (one instance named after it) or an instance.
+   */
+  programs?: (string | ProgramInstance)[];
+  /**
+   * A BOOL global or direct address: the task runs once on each of its rising edges.
+   */
+  single?: string | null;
+  /**
+   * The task's time budget per scan in ms (its scan's own running time); longer is a watchdog fault. Null: the default of 100 ms (CODESYS's).
+   */
+  watchdog_ms?: number | null;
 }
 /**
  * A program organisation unit. ``body`` is ST text, an ``LdBody``, an ``FbdBody`` or an ``SfcBody`` per
@@ -473,26 +583,6 @@ export interface SfcNamedTransition {
   comment?: string | null;
   language?: "st" | "ld" | "fbd";
   name: string;
-}
-/**
- * This interface was referenced by `Project`'s JSON-Schema
- * via the `definition` "Task".
- */
-export interface Task {
-  /**
-   * IEC TIME literal, e.g. T#10ms.
-   */
-  interval?: string;
-  name: string;
-  priority?: number;
-  /**
-   * Program names, run in list order.
-   */
-  programs?: string[];
-  /**
-   * The task's time budget per scan in ms (its scan's own running time); longer is a watchdog fault. Null: the default of 100 ms (CODESYS's).
-   */
-  watchdog_ms?: number | null;
 }
 /**
  * A file of unit tests, ``tests/<name>.st`` in the project folder (docs/testing.md).

@@ -73,7 +73,7 @@ describe("app shell", () => {
     ]);
     expect(within(tree).getByRole("button", { name: /Main/ }).textContent).toBe("MainLD");
     expect(within(tree).getByRole("button", { name: /Blinker/ }).textContent).toBe("BlinkerST");
-    expect(within(tree).getByText(/Fast/).textContent).toContain("T#10ms · Main");
+    expect(within(tree).getByText(/Fast/).textContent).toContain("every T#10ms · priority 0 · Main");
     expect(within(tree).getByText("3 lines of VAR_GLOBAL declarations")).toBeTruthy();
   });
 

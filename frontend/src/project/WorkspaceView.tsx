@@ -21,6 +21,7 @@ import { isTestPath, pouOf, symbolsOf, testOf, testPath, useWorkspace, workspace
 import { useTestCheck, useTestCompletions } from "../tests/assist";
 import { coverageLines, coverageMarks, coverageOf } from "../tests/coverage";
 import { testsStore, useTests } from "../tests/store";
+import { runsOf } from "./tasks";
 import { useDiagramPou } from "./useDiagramPou";
 import { FbdPouView } from "../fbd/FbdPouView";
 import { SfcPouView } from "../sfc/SfcPouView";
@@ -258,25 +259,51 @@ function ProjectTree() {
           {lines(project.globals) ? `${lines(project.globals)} lines of VAR_GLOBAL declarations` : "none"}
         </p>
       </section>
-      <section>
-        <h3>Tasks</h3>
-        {project.tasks?.length ? (
-          <ul>
-            {project.tasks.map((t) => (
-              <li key={t.name} className="tree-task">
-                {t.name}{" "}
-                <span className="tree-meta">
-                  {t.interval ?? ""} · {(t.programs ?? []).join(", ") || "no programs"}
-                </span>
-              </li>
-            ))}
-          </ul>
-        ) : (
-          <p className="tree-empty">none (the default task runs every program)</p>
-        )}
-      </section>
+      <TasksSection project={project} />
       <TestFilesTree />
     </nav>
+  );
+}
+
+/** The tasks and the program instances they run: the project's own, or its configuration's resources. */
+function TasksSection({ project }: { project: Project }) {
+  const runs = runsOf(project);
+  const empty = project.configuration
+    ? "none (an empty configuration runs nothing)"
+    : "none (the default task runs every program)";
+  return (
+    <section aria-label="Tasks">
+      <h3>{runs.configuration ? `Configuration ${runs.configuration}` : "Tasks"}</h3>
+      {runs.resources.length ? (
+        runs.resources.map((resource, index) => (
+          <div key={resource.name ?? index} className="tree-resource">
+            {resource.name ? (
+              <p className="tree-resource-name">
+                Resource {resource.name}
+                {resource.on ? <span className="tree-meta"> on {resource.on}</span> : null}
+              </p>
+            ) : null}
+            <ul>
+              {resource.tasks.map((t) => (
+                <li key={t.name} className="tree-task">
+                  {t.name}{" "}
+                  <span className="tree-meta">
+                    {t.timing} · priority {t.priority} · {t.instances.join(", ") || "no programs"}
+                  </span>
+                </li>
+              ))}
+              {resource.unscheduled.length ? (
+                <li className="tree-task">
+                  <span className="tree-meta">default task · {resource.unscheduled.join(", ")}</span>
+                </li>
+              ) : null}
+            </ul>
+          </div>
+        ))
+      ) : (
+        <p className="tree-empty">{empty}</p>
+      )}
+    </section>
   );
 }
 

@@ -52,11 +52,6 @@ def pou_class(name: str) -> str:
     return "P_" + escape(name)
 
 
-def program_instance(name: str) -> str:
-    """The module global holding the instance of a PROGRAM (the simulation sets it), for reads from other POUs."""
-    return "ll_prog_" + escape(name)
-
-
 def function(name: str) -> str:
     return "f_" + escape(name)
 

@@ -25,10 +25,12 @@ from dataclasses import dataclass, field
 from ...model.diagnostics import Diagnostic
 from ...model.fbd import FbdBody
 from ...model.ld import LdBody
-from ...model.project import Pou, Project, Task, TestFile
+from ...model.project import Pou, Project, TestFile
 from ...st import ast
 from ...st.parser import parse_declarations, parse_source
 from ...st.printer import print_declarations, print_source, print_type
+from ...storage.errors import ProjectLoadError
+from ...storage.text_files import xml_for_parser
 from .blocks import Signatures
 from .body import (
     IdMaker,
@@ -37,6 +39,7 @@ from .body import (
     group_by_ladderlab,
     read_network_list,
 )
+from .configuration import read_instances
 from .exporter import diagram_writer
 from .fbd_import import FbdImporter, fbd_groups
 from .graph import read_graph, resolve_continuations
@@ -74,6 +77,10 @@ class ImportResult:
 
 def import_plcopen(data: bytes, *, name: str | None = None, file: str | None = None) -> ImportResult:
     """Read a PLCopen XML document; ``name`` overrides the project name, ``file`` locates the diagnostics."""
+    try:
+        data = xml_for_parser(data, file or "document")  # a document that is not UTF-8 and says nothing else
+    except ProjectLoadError as err:
+        return ImportResult(None, err.diagnostics)
     try:
         parsed = parse_untrusted_xml(data, file=file)
     except XmlInputError as err:
@@ -120,8 +127,9 @@ class _Importer:
         self.collect_foreign(root)
         types = self.types(r.path(root, "types", "dataTypes"), info_text(ours, "types"))
         configurations = r.children(r.path(root, "instances", "configurations"), "configuration")
-        globals_ = self.globals(configurations, info_text(ours, "globals"))
-        tasks = self.tasks(configurations)
+        carried = info_text(ours, "globals")
+        read_list = lambda lists, own: self.globals(lists, own if own is not None else carried)  # noqa: E731
+        globals_, configuration, tasks = read_instances(r, configurations, read_list)
         for data_name, count in sorted(self.foreign.items()):
             r.report(
                 "PLCOPEN-ADDDATA",
@@ -132,7 +140,13 @@ class _Importer:
             )
         tests = [TestFile(name=test, text=text) for test, text in test_texts(ours)]
         return Project(
-            name=name, types=types, globals=globals_, pous=[p for p in pous if p is not None], tasks=tasks, tests=tests
+            name=name,
+            types=types,
+            globals=globals_,
+            pous=[p for p in pous if p is not None],
+            tasks=tasks,
+            configuration=configuration,
+            tests=tests,
         )
 
     # ------------------------------------------------------------ addData bookkeeping
@@ -295,66 +309,12 @@ class _Importer:
         decls = [reader.data_type(e) for e in elements]
         return print_source(ast.Source([ast.TypeBlock(decls)])).rstrip() if decls else ""
 
-    def globals(self, configurations: list[ET.Element], carried: str | None) -> str:
-        r = self.reader
-        lists = [
-            g
-            for c in configurations
-            for holder in [c, *r.children(c, "resource")]
-            for g in r.children(holder, "globalVars")
-        ]
+    def globals(self, lists: list[ET.Element], carried: str | None) -> str:
+        """A VAR_GLOBAL text from ``<globalVars>`` lists (the carried text when it still says the same)."""
         if carried is not None and self.same(lists, carried, _declaration_elements):
             return carried
-        reader = VarReader(r)
+        reader = VarReader(self.reader)
         return print_declarations([reader.var_block(g, "VAR_GLOBAL") for g in lists]).rstrip()
-
-    def tasks(self, configurations: list[ET.Element]) -> list[Task]:
-        r = self.reader
-        if len(configurations) > 1:
-            r.report(
-                "PLCOPEN-CONFIG",
-                f"{len(configurations)} configurations are merged into the project's one task list",
-                configurations[1],
-                severity="warning",
-            )
-        tasks = []
-        for resource in (res for c in configurations for res in r.children(c, "resource")):
-            for task in r.children(resource, "task"):
-                tasks.append(self.task(task))
-            for instance in r.children(resource, "pouInstance"):
-                r.report(
-                    "PLCOPEN-CONFIG",
-                    f"program instance '{instance.get('name', '')}' is not assigned to a "
-                    "task; LadderLab runs programs from tasks only, so it was not imported",
-                    instance,
-                    severity="warning",
-                )
-        return tasks
-
-    def task(self, node: ET.Element) -> Task:
-        r = self.reader
-        name = node.get("name", "")
-        interval = node.get("interval")
-        if not interval:
-            r.report(
-                "PLCOPEN-CONFIG",
-                f"task {name} has no interval (an event task); it is imported as a cyclic task of T#10ms",
-                node,
-                severity="warning",
-            )
-            interval = "T#10ms"
-        try:
-            priority = int(node.get("priority", "0"))
-        except ValueError:
-            r.report(
-                "PLCOPEN-CONFIG",
-                f"task {name}: priority '{node.get('priority')}' is not a number; 0 is used",
-                node,
-                severity="warning",
-            )
-            priority = 0
-        programs = [i.get("typeName", "") for i in r.children(node, "pouInstance")]
-        return Task(name=name, interval=interval, priority=priority, programs=programs)
 
 
 # ---------------------------------------------------------------- regenerating typed XML from carried texts
