@@ -165,6 +165,29 @@ def test_other_pous_read_the_implicit_variables():
     )
 
 
+def test_a_program_that_runs_under_another_instance_name_is_read_through_that_name():
+    """Program instances live among the globals (docs/runtime.md): ``Main.S0.X`` reads the instance named after
+    Main; when the configuration names it otherwise, the read is a located error that names the instance."""
+    from ladderlab.ir.lower_project import lower_project
+    from ladderlab.model.project import Configuration, ProgramInstance, Resource, Task
+
+    chart = [step("S0"), tr("go"), step("S1"), tr("back"), jump("S0")]
+    other = Pou(
+        name="Other", kind="program", language="st", declarations="VAR b : BOOL; END_VAR", body="b := Main.S0.X;"
+    )
+    proj = project(sfc_pou("Main", LOG, chart), other)
+    task = Task(
+        name="t", programs=[ProgramInstance(name="Line1", type="Main"), ProgramInstance(name="O", type="Other")]
+    )
+    configured = proj.model_copy(
+        update={"configuration": Configuration(name="Plant", resources=[Resource(tasks=[task])])}
+    )
+    errors = [d for d in lower_project(configured).diagnostics if d.severity == "error"]
+    assert [(d.file, d.line, d.message) for d in errors] == [
+        ("Other/body", 1, "the program Main runs as its instance Line1: read the members through an instance")
+    ]
+
+
 def test_a_function_block_may_be_written_in_sfc_and_each_instance_has_its_own_chart():
     fb = sfc_pou(
         "Seq",
