@@ -695,8 +695,8 @@ function PartSelect(props: {
   onChange(value: string): void;
 }) {
   return (
-    <label>
-      {props.label}
+    <label className="sfc-field">
+      <span>{props.label}</span>
       <select
         aria-label={props.label}
         value={props.value}
