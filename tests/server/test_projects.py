@@ -69,7 +69,7 @@ def test_create_from_unknown_example_is_422(client: TestClient) -> None:
     for example in ("nope", "../motor", "motor/pous"):
         response = client.post("/api/projects", json={"name": "x", "example": example})
         assert response.status_code == 422
-        assert detail(response)["message"] == f"unknown example {example!r}; available: motor"
+        assert detail(response)["message"] == f"unknown example {example!r}; available: car_wash_sfc, motor"
     assert client.get("/api/projects").json() == []
 
 
