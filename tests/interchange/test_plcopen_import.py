@@ -193,7 +193,8 @@ def test_a_bridge_is_refused_with_a_diagnostic_naming_its_elements():
 
 def test_openplc_timer_chain_with_en_and_a_coil_on_an_output():
     """OpenPLC's Blink: TON/TOF with EN on the rung, IN fed by a contact and by TON0.Q, the coil on TOF0.Q.
-    The coil reads TOF0.Q through a contact placed after the boxes (a branch of the rung below them)."""
+    Issue 28: the EN/ENO chain starts at the left rail, so both FBs always run (an FB's ENO is its EN) and the
+    rung reads left to right as drawn - contact, TON, TOF, coil - with the power through IN and Q."""
     data = ld_project(
         rail()
         + block(3, "TON", {"EN": ("1",), "IN": ("5",), "PT": ("7",)}, ["ENO", "Q", "ET"], x=350, y=130, instance="TON0")
@@ -217,16 +218,29 @@ def test_openplc_timer_chain_with_en_and_a_coil_on_an_output():
         + "</rightPowerRail>"
     )
     assert shape(elements(data)) == [
-        (
-            "OR",
-            [
-                [
-                    ("TON", "TON0", True, {"IN": [("contact", "blink_led", "nc")], "PT": "T#500ms"}, {}),
-                    ("TOF", "TOF0", True, {"IN": "TON0.Q", "PT": "T#500ms"}, {}),
-                ],
-                [("contact", "TOF0.Q", "no"), ("coil", "blink_led", "normal")],
-            ],
-        )
+        ("contact", "blink_led", "nc"),
+        ("TON", "TON0", False, {"PT": "T#500ms"}, {}),
+        ("TOF", "TOF0", False, {"PT": "T#500ms"}, {}),
+        ("coil", "blink_led", "normal"),
+    ]
+
+
+def test_an_en_chain_that_does_not_start_at_the_rail_keeps_en():
+    """The same drawing with a contact in front of TON's EN: EN decides whether the FBs run, so it stays."""
+    data = ld_project(
+        rail()
+        + contact(9, "go", "1", x=100, y=130)
+        + block(3, "TON", {"EN": ("9",), "IN": ("5",), "PT": ("7",)}, ["ENO", "Q", "ET"], x=350, y=130, instance="TON0")
+        + contact(5, "blink_led", "1", x=180, y=200, attrs='negated="true"')
+        + in_var(7, "T#500ms", 240, 230)
+        + '<rightPowerRail localId="2">'
+        + pos(990, 110)
+        + cin("3.ENO")
+        + "</rightPowerRail>"
+    )
+    assert shape(elements(data)) == [
+        ("contact", "go", "no"),
+        ("TON", "TON0", True, {"IN": [("contact", "blink_led", "nc")], "PT": "T#500ms"}, {}),
     ]
 
 
@@ -313,7 +327,8 @@ def test_variables_in_a_rung_become_contacts_coils_or_a_move():
     ]
 
 
-def test_connected_parts_are_networks_top_to_bottom_with_labels_and_comments():
+def test_connected_parts_are_networks_top_to_bottom_with_labels_and_comment_networks():
+    """Issue 28: a free comment box is a comment network of its own where it stands, never merged into a rung."""
     data = ld_project(
         rail()
         + '<comment localId="9" height="20" width="100">'
@@ -331,9 +346,10 @@ def test_connected_parts_are_networks_top_to_bottom_with_labels_and_comments():
     networks = result.project.pous[0].body.networks
     assert [(n.id, n.label, n.comment, shape(n.elements)) for n in networks] == [
         ("network1", None, None, [("contact", "a", "no"), ("coil", "q1", "normal")]),
-        ("network2", "Again", "second rung", [("contact", "b", "no"), ("coil", "q2", "normal")]),
+        ("network2", None, "second rung", []),
+        ("network3", "Again", None, [("contact", "b", "no"), ("coil", "q2", "normal")]),
     ]
-    assert [[e.id for e in n.elements] for n in networks] == [["contact1", "coil1"], ["contact2", "coil2"]]
+    assert [[e.id for e in n.elements] for n in networks] == [["contact1", "coil1"], [], ["contact2", "coil2"]]
 
 
 def test_connector_and_continuation_join_a_rung():

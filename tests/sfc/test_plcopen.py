@@ -53,15 +53,18 @@ def semantics(body: SfcBody) -> tuple:
 
 
 def _without_ids(body: object) -> object:
-    """A body to compare across a file without LadderLab's addData, which carries the element ids."""
+    """A body to compare across a file without LadderLab's addData, which carries the element ids and which network
+    a comment belongs to (without it a network's comment box is read as a comment network of its own)."""
     if isinstance(body, str):
         return body
-    return repr(_drop(body.model_dump(mode="json", exclude_none=True)))  # type: ignore[attr-defined]  # LD/FBD
+    data = body.model_dump(mode="json", exclude_none=True)  # type: ignore[attr-defined]  # LD/FBD
+    data["networks"] = [n for n in data["networks"] if n.get("elements")]
+    return repr(_drop(data))
 
 
 def _drop(data: object) -> object:
     if isinstance(data, dict):
-        return {k: _drop(v) for k, v in data.items() if k not in ("id", "pos", "node")}
+        return {k: _drop(v) for k, v in data.items() if k not in ("id", "pos", "node", "comment")}
     if isinstance(data, list):
         return [_drop(v) for v in data]
     return data

@@ -1,4 +1,4 @@
-"""The ``ladderlab`` command line: serve, check, run, test, compile, export, import, schema."""
+"""The ``ladderlab`` command line: serve, check, run, test, compile, export, doc, import, schema."""
 
 from __future__ import annotations
 
@@ -17,6 +17,7 @@ from ..simulation.check import check_project
 from ..storage import StorageError, load_project_path
 from ..storage.atomic import write_atomic
 from ..storage.text_files import CLI_HINT, xml_for_parser
+from .doc import add_doc_command
 from .encoding import add_encoding_option, encoding_of
 from .run import jsonl_line, parse_duration, parse_set, run_scans, table_lines
 from .test import add_test_command
@@ -150,6 +151,8 @@ def _parser() -> argparse.ArgumentParser:
     )
     export.add_argument("-o", "--output", type=Path, default=None, help="file to write (default: standard output)")
     export.set_defaults(func=_export)
+
+    add_doc_command(sub)
 
     import_ = sub.add_parser("import", help="import a PLCopen XML project into a workspace")
     import_.add_argument("format", choices=["plcopen"])

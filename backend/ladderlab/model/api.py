@@ -13,6 +13,7 @@ from pydantic import BaseModel, ConfigDict, Field
 
 from .diagnostics import Diagnostic
 from .project import Project
+from .xref import XrefList
 
 
 class ProjectSummary(BaseModel):
@@ -335,6 +336,20 @@ class TestCheckRequest(BaseModel):
     file: str
 
 
+class PrintDocument(BaseModel):
+    """What a printed project document holds (issue 28): the print view draws it with the editors' own layout
+    and SVG drawing; ``GET /api/projects/{name}/document`` and ``ladderlab doc`` make it."""
+
+    project: Project
+    revision: str
+    date: str = Field(description="When the document was made, ISO 8601 (UTC).")
+    pous: list[str] = Field(description="The POUs to print, in project order.")
+    library: list[LibraryEntry] = Field(description="Standard and user blocks: the pins the diagrams draw.")
+    symbols: dict[str, list[SymbolInfo]] = Field(description="Each printed POU's declarations, by POU name.")
+    globals: list[SymbolInfo]
+    xref: XrefList
+
+
 class ApiTypes(BaseModel):
     """Container so every API shape lands in one schema file (``api.schema.json``)."""
 
@@ -359,3 +374,5 @@ class ApiTypes(BaseModel):
     test_run_request: TestRunRequest
     test_open_request: TestOpenRequest
     test_check_request: TestCheckRequest
+    xref_list: XrefList
+    print_document: PrintDocument

@@ -13,11 +13,12 @@ from fastapi import APIRouter
 from ..engine.paths import GLOBALS_PREFIX, tokens
 from ..iec.spelling import did_you_mean
 from ..model import Project
-from ..model.api import SymbolInfo, SymbolTable, VariableChildren, VariableNode
+from ..model.api import SymbolTable, VariableChildren, VariableNode
+from ..simulation.document import symbol_info
 from ..st import types as t
 from ..st.checker import check_project as check_st
 from ..st.configuration import InstanceInfo
-from ..st.printer import print_initializer, print_type
+from ..st.printer import print_type
 from ..st.symbols import PouInfo, Symbol
 from ..storage import NotFoundError
 from .context import WorkspaceDep
@@ -27,20 +28,6 @@ router = APIRouter(prefix="/api/projects", tags=["symbols"])
 
 #: Diagnostic ``file`` values of the texts every POU's symbols depend on.
 _SHARED_TEXTS = {"types", "globals"}
-
-
-def symbol_info(symbol: Symbol) -> SymbolInfo:
-    """One symbol with its type and initial value as ST text (as declared, not the resolved internals)."""
-    return SymbolInfo(
-        name=symbol.name,
-        var_class=symbol.var_class,
-        type=print_type(symbol.type_spec),
-        initial=print_initializer(symbol.init) if symbol.init is not None else None,
-        address=symbol.address,
-        comment=symbol.comment,
-        retain=symbol.retain,
-        constant=symbol.constant,
-    )
 
 
 def symbol_table(project: Project, pou_name: str) -> SymbolTable:

@@ -12,6 +12,7 @@ export interface ApiTypes {
   fbd_order: FbdOrder;
   import_report: ImportReport;
   library_entry: LibraryEntry;
+  print_document: PrintDocument;
   project_document: ProjectDocument;
   project_summary: ProjectSummary;
   rename_project: RenameProject;
@@ -26,6 +27,7 @@ export interface ApiTypes {
   test_open_request: TestOpenRequest;
   test_run_request: TestRunRequest;
   variable_children: VariableChildren;
+  xref_list: XrefList;
 }
 /**
  * ``POST /api/projects/{name}/check``: every diagnostic of the saved project.
@@ -165,16 +167,63 @@ export interface Pin {
   type: string;
 }
 /**
- * ``GET /api/projects/{name}``: the project and the revision a later save must name in ``If-Match``.
+ * What a printed project document holds (issue 28): the print view draws it with the editors' own layout
+ * and SVG drawing; ``GET /api/projects/{name}/document`` and ``ladderlab doc`` make it.
  *
  * This interface was referenced by `ApiTypes`'s JSON-Schema
- * via the `definition` "ProjectDocument".
+ * via the `definition` "PrintDocument".
  */
-export interface ProjectDocument {
-  modified: string;
-  name: string;
+export interface PrintDocument {
+  /**
+   * When the document was made, ISO 8601 (UTC).
+   */
+  date: string;
+  globals: SymbolInfo[];
+  /**
+   * Standard and user blocks: the pins the diagrams draw.
+   */
+  library: LibraryEntry[];
+  /**
+   * The POUs to print, in project order.
+   */
+  pous: string[];
   project: Project;
   revision: string;
+  /**
+   * Each printed POU's declarations, by POU name.
+   */
+  symbols: {
+    [k: string]: SymbolInfo[];
+  };
+  xref: XrefList;
+}
+/**
+ * One declared variable, for the variable table and operand autocomplete.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "SymbolInfo".
+ */
+export interface SymbolInfo {
+  /**
+   * Direct address of an AT declaration, e.g. '%IX0.0'.
+   */
+  address: string | null;
+  comment: string | null;
+  constant: boolean;
+  /**
+   * Declared initial value (or the user type's), as ST text; null means the type's default.
+   */
+  initial: string | null;
+  name: string;
+  retain: boolean;
+  /**
+   * The type as declared, e.g. 'TON' or 'ARRAY[1..10] OF INT'.
+   */
+  type: string;
+  /**
+   * VAR, VAR_INPUT, VAR_OUTPUT, VAR_IN_OUT, VAR_EXTERNAL, VAR_TEMP or VAR_GLOBAL.
+   */
+  var_class: string;
 }
 /**
  * This interface was referenced by `ApiTypes`'s JSON-Schema
@@ -474,7 +523,9 @@ export interface FbdNetwork {
   comment?: string | null;
   id: string;
   label?: string | null;
-  nodes?: (Block | InputNode | OutputNode | FbdJump | FbdReturn | Connector | Continuation)[];
+  nodes?: (
+    Block | InputNode | OutputNode | FbdJump | FbdReturn | Connector | Continuation | FbdComment
+  )[];
   /**
    * Node ids fixing the execution order where the wiring leaves it open.
    */
@@ -576,6 +627,21 @@ export interface Continuation {
   name: string;
   pos?: Position | null;
   type?: "continuation";
+}
+/**
+ * A free comment box (issue 28): text drawn at ``pos`` in a box of ``width`` x ``height`` (None: as the
+ * text needs); it takes no part in the logic (no pins, no wires, not in the evaluation order).
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "FbdComment".
+ */
+export interface FbdComment {
+  height?: number | null;
+  id: string;
+  pos?: Position | null;
+  text?: string;
+  type?: "comment";
+  width?: number | null;
 }
 /**
  * A connection from an output pin to an input pin (``from`` is a Python keyword, hence the alias).
@@ -783,6 +849,81 @@ export interface TestFile {
   text?: string;
 }
 /**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "XrefList".
+ */
+export interface XrefList {
+  entries: XrefEntry[];
+}
+/**
+ * A variable: a global, or one POU's own.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "XrefEntry".
+ */
+export interface XrefEntry {
+  accesses: XrefAccess[];
+  address?: string | null;
+  comment?: string | null;
+  name: string;
+  /**
+   * The POU that declares it, None for a global.
+   */
+  pou: string | null;
+  type: string;
+  var_class: string;
+}
+/**
+ * One place a variable occurs: its declaration, a read, a write, or a call of an FB instance.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "XrefAccess".
+ */
+export interface XrefAccess {
+  column?: number | null;
+  /**
+   * LD/FBD: the element's id.
+   */
+  element?: string | null;
+  kind: "declared" | "read" | "write" | "call";
+  /**
+   * ST body line, or the declaration's line in its declarations text.
+   */
+  line?: number | null;
+  /**
+   * LD/FBD: the network's id.
+   */
+  network?: string | null;
+  /**
+   * LD/FBD: the network's number as the editor shows it.
+   */
+  network_number?: number | null;
+  /**
+   * LD/FBD: the element's operand text, e.g. 'RunTimer.Q'.
+   */
+  operand?: string | null;
+  /**
+   * What was accessed, e.g. 'RunTimer.Q' or 'arr[i]' (indices as '[]').
+   */
+  path: string;
+  /**
+   * The POU, None for the global declarations (globals.st).
+   */
+  pou: string | null;
+}
+/**
+ * ``GET /api/projects/{name}``: the project and the revision a later save must name in ``If-Match``.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "ProjectDocument".
+ */
+export interface ProjectDocument {
+  modified: string;
+  name: string;
+  project: Project;
+  revision: string;
+}
+/**
  * Body of ``POST /api/projects/{name}/rename``.
  *
  * This interface was referenced by `ApiTypes`'s JSON-Schema
@@ -933,34 +1074,6 @@ export interface SymbolTable {
    * The POU's own declarations, in declaration order.
    */
   symbols: SymbolInfo[];
-}
-/**
- * One declared variable, for the variable table and operand autocomplete.
- *
- * This interface was referenced by `ApiTypes`'s JSON-Schema
- * via the `definition` "SymbolInfo".
- */
-export interface SymbolInfo {
-  /**
-   * Direct address of an AT declaration, e.g. '%IX0.0'.
-   */
-  address: string | null;
-  comment: string | null;
-  constant: boolean;
-  /**
-   * Declared initial value (or the user type's), as ST text; null means the type's default.
-   */
-  initial: string | null;
-  name: string;
-  retain: boolean;
-  /**
-   * The type as declared, e.g. 'TON' or 'ARRAY[1..10] OF INT'.
-   */
-  type: string;
-  /**
-   * VAR, VAR_INPUT, VAR_OUTPUT, VAR_IN_OUT, VAR_EXTERNAL, VAR_TEMP or VAR_GLOBAL.
-   */
-  var_class: string;
 }
 /**
  * Body of ``POST /api/tests/check``: the diagnostics of one test file of the working copy (ST editor).

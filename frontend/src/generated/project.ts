@@ -295,7 +295,9 @@ export interface FbdNetwork {
   comment?: string | null;
   id: string;
   label?: string | null;
-  nodes?: (Block | InputNode | OutputNode | FbdJump | FbdReturn | Connector | Continuation)[];
+  nodes?: (
+    Block | InputNode | OutputNode | FbdJump | FbdReturn | Connector | Continuation | FbdComment
+  )[];
   /**
    * Node ids fixing the execution order where the wiring leaves it open.
    */
@@ -397,6 +399,21 @@ export interface Continuation {
   name: string;
   pos?: Position | null;
   type?: "continuation";
+}
+/**
+ * A free comment box (issue 28): text drawn at ``pos`` in a box of ``width`` x ``height`` (None: as the
+ * text needs); it takes no part in the logic (no pins, no wires, not in the evaluation order).
+ *
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "FbdComment".
+ */
+export interface FbdComment {
+  height?: number | null;
+  id: string;
+  pos?: Position | null;
+  text?: string;
+  type?: "comment";
+  width?: number | null;
 }
 /**
  * A connection from an output pin to an input pin (``from`` is a Python keyword, hence the alias).

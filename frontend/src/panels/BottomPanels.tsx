@@ -1,5 +1,5 @@
-// The panels under the editor: Diagnostics, Watch list, I/O, Online log, Breakpoints, Trace and Tests, one shown
-// at a time.
+// The panels under the editor: Diagnostics, Watch list, I/O, Online log, Breakpoints, Trace, Tests and Cross
+// references, one shown at a time.
 import { useDebug } from "../debug/store";
 import type { Diagnostic } from "../generated/api";
 import { draggedOperand } from "../ld/editor/dragOperand";
@@ -13,6 +13,7 @@ import { IoPanel } from "./IoPanel";
 import { LogPanel } from "./LogPanel";
 import { panelsStore, usePanels, type PanelId } from "./store";
 import { WatchPanel } from "./WatchPanel";
+import { XrefPanel } from "../xref/XrefPanel";
 import { ViewBoundary } from "../project/ViewBoundary";
 
 /** Each panel in the user's words, for the message when it fails. */
@@ -24,6 +25,7 @@ const PANEL_NAMES: Record<PanelId, string> = {
   breakpoints: "breakpoints panel",
   trace: "trace panel",
   tests: "tests panel",
+  xref: "cross references panel",
 };
 
 export interface BottomPanelsProps {
@@ -49,6 +51,7 @@ export function BottomPanels({ onReveal, pathOfOperand }: BottomPanelsProps) {
     { id: "breakpoints", label: `Breakpoints (${breakpoints})` },
     { id: "trace", label: "Trace" },
     { id: "tests", label: failed ? `Tests (${failed} failed)` : "Tests" },
+    { id: "xref", label: "Cross references" },
   ];
   const body = {
     diagnostics: <DiagnosticsPanel onReveal={onReveal} />,
@@ -58,6 +61,7 @@ export function BottomPanels({ onReveal, pathOfOperand }: BottomPanelsProps) {
     breakpoints: <BreakpointsPanel />,
     trace: <TracePanel />,
     tests: <TestsPanel />,
+    xref: <XrefPanel onReveal={onReveal} />,
   };
   // A variable dragged from the diagram and released over the panels joins the watch list.
   const drop = () => {

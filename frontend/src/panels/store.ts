@@ -5,7 +5,7 @@ import { createStore, type StoreApi } from "zustand/vanilla";
 import { checkProject } from "../api/client";
 import type { CheckReport, Diagnostic } from "../generated/api";
 
-export type PanelId = "diagnostics" | "watch" | "io" | "log" | "breakpoints" | "trace" | "tests";
+export type PanelId = "diagnostics" | "watch" | "io" | "log" | "breakpoints" | "trace" | "tests" | "xref";
 
 /** A place to reveal: a POU, and in it a network/element (diagrams) or a line (texts). */
 export interface Focus {

@@ -41,7 +41,7 @@ from .body import (
 )
 from .configuration import read_instances
 from .exporter import diagram_writer
-from .fbd_import import FbdImporter, fbd_groups
+from .fbd_import import FbdImporter, fbd_groups, place_comments
 from .graph import read_graph, resolve_continuations
 from .ld_import import LdImporter, ld_groups
 from .sfc_import import SfcImporter
@@ -290,7 +290,7 @@ class _Importer:
         relative, orders = groups is not None, {}
         if groups is None:
             groups, orders = fbd_groups(graph, r)
-            attach_headers(groups, graph, r, labels=False)
+            place_comments(groups, graph)
         return "fbd", FbdImporter(graph, r, pou, ids).body(groups, orders, relative=relative)
 
     # ------------------------------------------------------------ project texts

@@ -33,7 +33,7 @@ from ...st.nesting import nodes
 from ...st.parser import parse_statements
 from ...st.sfc import action_file
 from ...st.symbols import CheckResult
-from .body import Network, body_lines, comment
+from .body import Network, body_lines, comment, network_title
 from .elements import PouScope
 from .fbd import fbd_network
 from .ld import ld_network
@@ -356,15 +356,13 @@ class _Writer:
         networks: list[Network] = []
         for index, network in enumerate(body.networks):
             code = (
-                ld_network(self.scope, network)
+                ld_network(self.scope, network, index + 1)
                 if isinstance(network, ld.LdNetwork)
                 else fbd_network(self.scope, network, lowered)
             )
-            title = f"Network {index + 1} ({network.id})" + (
-                f", label {network.label.strip()}" if network.label else ""
-            )
+            title = network_title(index + 1, network.label, network.comment)
             controls = [(c.label, c.element) for c in code.controls]
-            networks.append(Network(network.id, [title], plan(code, self.declarations), controls))
+            networks.append(Network(network.id, title, plan(code, self.declarations), controls))
         labels = {canonical_label(n.label): i for i, n in enumerate(body.networks) if n.label}
         for made in body_lines(networks, labels, self.declarations):
             self.line(made.text)
