@@ -364,3 +364,26 @@ def test_the_car_wash_online_breakpoints_and_stepping_by_transition(page, server
     page.screenshot(path=str(ARTIFACTS / "sfc-online-forced.png"))
     context_menu(editor, "s32", "Release force")
     expect(item(editor, "s32").locator("text.sfc-time")).not_to_have_text(re.compile(r"^F "))
+
+
+def test_the_car_wash_prints_its_chart_and_its_actions(page, server):
+    """Issue 24 with the print view: an SFC POU prints as its chart, then each action (ST text, LD networks)."""
+    project = read_project_folder(EXAMPLES / "car_wash_sfc").model_dump(mode="json", exclude_none=True)
+    store_project(server, project)
+    page.goto(server)
+    open_pou(page, "car_wash_sfc", "Wash")
+    page.get_by_role("application", name="Sequential function chart editor").wait_for()
+    with page.context.expect_page() as opened:
+        page.get_by_role("button", name="Print project…").click()
+    printed = opened.value
+    errors: list[str] = []
+    printed.on("pageerror", lambda error: errors.append(f"page error: {error}"))
+    printed.on("console", lambda message: errors.append(message.text) if message.type == "error" else None)
+    wash = printed.get_by_role("region", name="PROGRAM Wash")
+    wash.locator("svg.sfc-canvas").wait_for()
+    names = wash.locator("svg.sfc-canvas text.sfc-name").all_text_contents()
+    assert names == ["Idle", "Welcome", "Soak", "Brush", "BrushHome", "Spray", "Drain", "Rinse", "Dry", "Leave"]
+    assert "Cars := Cars + 1;" in wash.get_by_role("region", name="Action CountCar").inner_text()
+    wash.get_by_role("region", name="Action Ready").locator(".print-network svg").wait_for()
+    printed.screenshot(path=str(ARTIFACTS / "sfc-print.png"), full_page=True)
+    assert errors == []
