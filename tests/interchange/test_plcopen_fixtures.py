@@ -82,11 +82,8 @@ CHECK_FAILS = {
     "ironplc/integrations/vscode/tests/grammar/snap/plcopen-pou.xml": ({"ST-DECL"}, GRAMMAR),
     "ironplc/integrations/vscode/tests/grammar/snap/plcopen-sfc.xml": ({"SFC-EMPTY"}, GRAMMAR),
 }
-#: IL POUs, reported as unsupported (file -> POU names).
-UNSUPPORTED = {
-    "beremiz-examples/exemples/first_steps/plc.xml": ["CounterIL"],
-    "openplc-examples/examples/Multi_Language/plc.xml": ["CounterIL"],
-}
+#: POUs reported as unsupported (file -> POU names): none, SFC and IL both import (issues 24 and 26).
+UNSUPPORTED: dict[str, list[str]] = {}
 
 
 class _Summary:
@@ -128,13 +125,14 @@ def test_every_fixture_imports_ld_fbd_sfc_and_st_without_errors_and_reports_il(f
         if skipped:
             unsupported[path] = skipped
     SUMMARY.lines.append(
-        f"{len(fixtures)} files imported: {languages['ld']} LD, {languages['fbd']} FBD and "
-        f"{languages['st']} ST and {languages['sfc']} SFC POUs; {sum(map(len, unsupported.values()))} IL POUs reported "
+        f"{len(fixtures)} files imported: {languages['ld']} LD, {languages['fbd']} FBD, {languages['st']} ST, "
+        f"{languages['il']} IL and {languages['sfc']} SFC POUs; {sum(map(len, unsupported.values()))} POUs reported "
         f"unsupported; import errors in {len(errors)} file(s), all in the source"
     )
     assert errors == IMPORT_ERRORS
     assert unsupported == UNSUPPORTED
     assert len(fixtures) >= 51 and languages["ld"] >= 12 and languages["fbd"] >= 36 and languages["st"] >= 12
+    assert languages["il"] == 2  # CounterIL of first_steps and of Multi_Language
 
 
 def test_imported_projects_pass_the_project_check_unless_the_source_is_not_standard(fixtures):
@@ -151,17 +149,24 @@ def test_imported_projects_pass_the_project_check_unless_the_source_is_not_stand
     assert failing == {path: codes for path, (codes, _) in CHECK_FAILS.items()}
 
 
-def test_first_steps_counters_in_ld_fbd_and_st_agree_scan_for_scan(fixtures):
-    """Beremiz first_steps: CounterST, CounterFBD and CounterLD count up, and Reset loads ResetCounterValue (17)."""
+def test_first_steps_counters_in_ld_fbd_st_and_il_agree_scan_for_scan(fixtures):
+    """Beremiz first_steps: CounterST, CounterFBD, CounterLD and CounterIL count up, and Reset loads
+    ResetCounterValue (17)."""
     project = fixtures["beremiz-examples/exemples/first_steps/plc.xml"].project
-    counters = [p for p in project.pous if p.name in ("CounterST", "CounterFBD", "CounterLD")]
-    assert [p.language for p in counters] == ["st", "fbd", "ld"]
+    counters = [p for p in project.pous if p.name in ("CounterST", "CounterFBD", "CounterLD", "CounterIL")]
+    assert sorted((p.name, p.language) for p in counters) == [
+        ("CounterFBD", "fbd"),
+        ("CounterIL", "il"),
+        ("CounterLD", "ld"),
+        ("CounterST", "st"),
+    ]
     check = Pou(
         name="Check",
         kind="program",
         language="st",
-        declarations="VAR\n    Reset : BOOL;\n    st : CounterST;\n    fbd : CounterFBD;\n    ld : CounterLD;\nEND_VAR",
-        body="st(Reset := Reset);\nfbd(Reset := Reset);\nld(Reset := Reset);",
+        declarations="VAR\n    Reset : BOOL;\n    st : CounterST;\n    fbd : CounterFBD;\n    ld : CounterLD;\n"
+        "    il : CounterIL;\nEND_VAR",
+        body="st(Reset := Reset);\nfbd(Reset := Reset);\nld(Reset := Reset);\nil(Reset := Reset);",
     )
     program = project.model_copy(
         update={
@@ -177,22 +182,24 @@ def test_first_steps_counters_in_ld_fbd_and_st_agree_scan_for_scan(fixtures):
     for scan in range(30):
         sim.write("Check.Reset", scan in (10, 11, 25))
         sim.cycle(1)
-        counts.append((sim.read("Check.st.OUT"), sim.read("Check.fbd.OUT"), sim.read("Check.ld.Out")))
-    assert all(st == fbd == ld for st, fbd, ld in counts)
+        counts.append(
+            (sim.read("Check.st.OUT"), sim.read("Check.fbd.OUT"), sim.read("Check.ld.Out"), sim.read("Check.il.Out"))
+        )
+    assert all(st == fbd == ld == il for st, fbd, ld, il in counts)
     assert [c[0] for c in counts] == [*range(1, 11), 17, 17, *range(18, 31), 17, 18, 19, 20, 21][:30]
 
 
-def test_first_steps_runs_as_imported_with_a_stand_in_for_its_il_counter(fixtures):
-    """The whole first_steps project builds as imported; the SFC counter counts one scan behind (its first scan is
-    the initial step's, SFC-04), the IL stand-in keeps its output at 0 (IL: issue 26)."""
+def test_first_steps_runs_as_imported_and_its_five_counters_count(fixtures):
+    """The whole first_steps project builds as imported; its ST, FBD, LD and IL counters count every scan, the SFC
+    counter one scan behind (its first scan is the initial step's, SFC-04)."""
     result = lower_project(fixtures["beremiz-examples/exemples/first_steps/plc.xml"].project)
     assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
     sim = Simulation(result.program)
     for scan in range(1, 6):
         sim.cycle(1)
         counts = [sim.read(f"plc_task_instance.Cnt{n}") for n in range(1, 6)]  # the instance of plc_prg
-        assert counts == [scan, scan, scan - 1, 0, scan]
-        assert sim.read("plc_task_instance.AVCnt") == pytest.approx((4 * scan - 1) / 5)
+        assert counts == [scan, scan, scan - 1, scan, scan]
+        assert sim.read("plc_task_instance.AVCnt") == pytest.approx((5 * scan - 1) / 5)  # the mean of the five
 
 
 def test_first_steps_sfc_counter_counts_up_and_resets_as_its_chart_says(fixtures):

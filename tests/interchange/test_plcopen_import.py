@@ -601,7 +601,8 @@ def test_types_globals_and_tasks_fill_the_project():
     assert [(d.code, d.severity, d.message) for d in result.diagnostics] == []
 
 
-def test_il_pous_actions_outside_sfc_and_foreign_add_data_are_reported_not_dropped_silently():
+def test_sfc_and_il_pous_import_actions_outside_sfc_and_foreign_add_data_are_reported_not_dropped_silently():
+    """SFC imports as a chart (issue 24), IL as IL text kept as written (issue 26)."""
     pous = (
         pou_xml(
             "Seq",
@@ -618,13 +619,6 @@ def test_il_pous_actions_outside_sfc_and_foreign_add_data_are_reported_not_dropp
     result = imported(project_xml(pous))
     assert [(d.code, d.pou, d.message) for d in result.diagnostics] == [
         ("PLCOPEN-SFC", "Seq", "step Run is reached from no initial step: it was left out"),
-        (
-            "PLCOPEN-UNSUPPORTED",
-            "Asm",
-            "POU Asm is written in IL, which LadderLab does not support; it was imported "
-            "with its interface and a body that does nothing (the IL text is kept as "
-            "comments), so its callers build and run",
-        ),
         (
             "PLCOPEN-UNSUPPORTED",
             "Main",
@@ -644,24 +638,21 @@ def test_il_pous_actions_outside_sfc_and_foreign_add_data_are_reported_not_dropp
         "function_block",
         "sfc",
         "Asm",
-        "st",
+        "il",
         "Main",
     )
     assert [e.name for e in seq.body.chart.elements] == ["Init"]
-    assert asm.body == (
-        "// Imported from IL, which LadderLab cannot run: this body does nothing. The original IL:\n"
-        "// LD TRUE\n// (* keep *)\n// ST x"
-    )
+    assert asm.body == "LD TRUE\n(* keep *)\nST x"
 
 
-def test_a_caller_of_an_il_function_block_builds_and_runs_with_its_interface():
-    """The stand-in keeps the IL FB's interface: the ST caller builds, its own logic runs, the FB's output stays default."""
+def test_an_il_function_block_is_imported_as_il_and_runs_for_its_st_caller():
+    """Issue 26: the IL body runs (``SEL`` with the accumulator as its selector, IL-04): Out is 1 while Go."""
     interface = (
         "<interface><inputVars><variable name='Go'><type><BOOL/></type></variable></inputVars>"
         "<outputVars><variable name='Out'><type><INT/></type></variable></outputVars></interface>"
     )
     counter = (
-        f'<pou name="CounterIL" pouType="functionBlock">{interface}<body><IL><xhtml:p>LD Go\nST Out'
+        f'<pou name="CounterIL" pouType="functionBlock">{interface}<body><IL><xhtml:p>LD Go\nSEL 0, 1\nST Out'
         "</xhtml:p></IL></body></pou>"
     )
     main = (
@@ -674,7 +665,7 @@ def test_a_caller_of_an_il_function_block_builds_and_runs_with_its_interface():
     assert [d for d in result.diagnostics if d.severity == "error"] == []
     sim = Simulation(result.program)
     sim.cycle(3)
-    assert (sim.read("Main.n"), sim.read("Main.c.Out")) == (3, 0)
+    assert (sim.read("Main.n"), sim.read("Main.c.Out")) == (6, 1)
 
 
 def test_a_single_pou_document_with_a_textual_declaration():
@@ -730,3 +721,14 @@ def test_fbd_pin_modifiers_and_output_modes():
         ("in:NOT a", "OUT", "AND", "IN2"),
         ("AND", "OUT", "out:q", "IN"),
     }
+
+
+def test_a_declaration_the_importer_cannot_read_is_reported_with_its_pou():
+    """PLCOPEN-DECL (docs/diagnostics.md): an empty type element is read as BOOL and reported as an error."""
+    interface = '<localVars><variable name="x"><type/></variable></localVars>'
+    result = import_plcopen(
+        project_xml(pou_xml("Main", "<xhtml:p>x := TRUE;</xhtml:p>", language="ST", interface=interface))
+    )
+    assert [(d.code, d.severity, d.pou, d.message) for d in result.diagnostics] == [
+        ("PLCOPEN-DECL", "error", "Main", "a type element is empty; assumed BOOL")
+    ]

@@ -170,6 +170,11 @@ class _Checker:
             if s.target is not None:
                 self.var(s.target)
             self._en_eno(s.en, s.eno)
+        elif isinstance(s, ir.Jump):  # IL jumps (invariant 4): to a labelled block of the same POU
+            assert s.label in {b.label for b in self.pou.blocks if b.label is not None}, s
+            if s.cond is not None:
+                self.expr(s.cond)
+                assert s.cond.type == t.BOOL, s  # type: ignore[union-attr]
         else:
             assert isinstance(s, (ir.Exit, ir.Return)), f"unexpected statement in ST: {s}"
 
@@ -197,8 +202,10 @@ def check_program(program: ir.Program) -> None:
             if slot.var_class != "VAR_IN_OUT" and (slot.address is None or slot.initial is not None):
                 check_value(slot.initial, slot.type, f"{name}.{slot.name}")
         checker = _Checker(program, pou)
+        labels = [block.label for block in pou.blocks if block.label is not None]
+        assert len(labels) == len(set(labels)) and all(label == label.upper() for label in labels), labels
         for block in pou.blocks:
-            assert block.origin.pou == name and block.label is None
+            assert block.origin.pou == name and (block.label is None or pou.language == "il")
             checker.stmts(block.statements)
     instances = {i.name: i for i in program.program_instances()}
     assert all(program.pous[i.pou].kind == "program" for i in instances.values()), instances

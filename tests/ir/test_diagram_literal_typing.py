@@ -114,8 +114,7 @@ def test_a_chained_block_computes_in_the_type_of_its_place_as_the_nested_st_call
     sim.cycle(1)
     value = sim.read(f"Main.{target}")
     assert value == expected and type(value) is type(expected)
-    assert f"{outer}(IN1 := {inner}(" in exported(project(pou), "Main").text or outer == "DINT_TO_LINT"
-    same_traces(project(pou), scans=3)
+    same_traces(project(pou), scans=3)  # the ST export (operators where ST has them) computes the same
 
 
 def test_a_chained_literal_that_does_not_fit_its_place_is_a_located_error():

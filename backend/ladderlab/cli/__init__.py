@@ -8,6 +8,7 @@ import json
 import os
 import sys
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from ..engine.codegen import VARIANTS
 from ..model import has_errors
@@ -22,13 +23,19 @@ from .encoding import add_encoding_option, encoding_of
 from .run import jsonl_line, parse_duration, parse_set, run_scans, table_lines
 from .test import add_test_command
 
+if TYPE_CHECKING:  # the server is imported only by the commands that start it
+    from ..model import Project
+    from ..server.security import Security
+    from ..simulation.build import Build
+
 EXIT_OK, EXIT_ERRORS, EXIT_USAGE, EXIT_RUNTIME, EXIT_INTERNAL = 0, 1, 2, 3, 70
 
 
 def main(argv: list[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     try:
-        return args.func(args)
+        code: int = args.func(args)
+        return code
     except StorageError as err:
         for diagnostic in err.diagnostics:
             print(diagnostic.format(), file=sys.stderr)
@@ -95,13 +102,13 @@ def _parser() -> argparse.ArgumentParser:
     serve.set_defaults(func=_serve)
 
     check = sub.add_parser("check", help="load and check a project, print diagnostics")
-    check.add_argument("project", type=Path, help="project folder, project .json file or .st file")
+    check.add_argument("project", type=Path, help="project folder, project .json file or .st / .il file")
     add_encoding_option(check)
     check.add_argument("--format", choices=["text", "json"], default="text")
     check.set_defaults(func=_check)
 
     run = sub.add_parser("run", help="run a project on the virtual clock and print watched values per scan")
-    run.add_argument("project", type=Path, help="project folder, project .json file or .st file")
+    run.add_argument("project", type=Path, help="project folder, project .json file or .st / .il file")
     add_encoding_option(run)
     length = run.add_mutually_exclusive_group()
     length.add_argument("--cycles", type=int, default=None, metavar="N", help="number of scans (default 1)")
@@ -133,7 +140,7 @@ def _parser() -> argparse.ArgumentParser:
     add_test_command(sub)
 
     compile_ = sub.add_parser("compile", help="check and compile a project; optionally print the generated Python")
-    compile_.add_argument("project", type=Path, help="project folder, project .json file or .st file")
+    compile_.add_argument("project", type=Path, help="project folder, project .json file or .st / .il file")
     add_encoding_option(compile_)
     compile_.add_argument("--emit-python", action="store_true", help="print the generated Python module")
     compile_.add_argument("--variant", choices=list(VARIANTS), default="fast")
@@ -141,7 +148,7 @@ def _parser() -> argparse.ArgumentParser:
 
     export = sub.add_parser("export", help="export a project as PLCopen XML or IEC ST text")
     export.add_argument("format", choices=["plcopen", "st"])
-    export.add_argument("project", type=Path, help="project folder, project .json file or .st file")
+    export.add_argument("project", type=Path, help="project folder, project .json file or .st / .il file")
     add_encoding_option(export)
     export.add_argument("--pou", default=None, help="st: only this POU (default: the whole project)")
     export.add_argument(
@@ -170,7 +177,7 @@ def _parser() -> argparse.ArgumentParser:
     return parser
 
 
-def _load(args: argparse.Namespace):
+def _load(args: argparse.Namespace) -> Project:
     """The PROJECT argument, its files read in ``--encoding``."""
     return load_project_path(args.project, encoding_of(args))
 
@@ -188,7 +195,7 @@ def _check(args: argparse.Namespace) -> int:
     return EXIT_ERRORS if has_errors(diagnostics) else EXIT_OK
 
 
-def _build(args: argparse.Namespace, variant: str = "fast"):
+def _build(args: argparse.Namespace, variant: str = "fast") -> Build | None:
     """Load and build the project; prints the diagnostics and returns None when it has errors."""
     project = _load(args)
     build = build_project(project, variant)
@@ -226,7 +233,7 @@ def _run(args: argparse.Namespace) -> int:
 
 def _compile(args: argparse.Namespace) -> int:
     build = _build(args, args.variant)
-    if build is None:
+    if build is None or build.compiled is None:
         return EXIT_ERRORS
     if args.emit_python:
         print(build.compiled.source)
@@ -248,9 +255,10 @@ def _export(args: argparse.Namespace) -> int:
                 print(diagnostic.format(), file=sys.stderr)
             return EXIT_ERRORS
     else:
-        data = _st_export(project, args.pou, args.sfc_text)
-        if data is None:
+        text = _st_export(project, args.pou, args.sfc_text)
+        if text is None:
             return EXIT_ERRORS
+        data = text
     if args.output is None:
         sys.stdout.write(data.decode("utf-8"))
     else:
@@ -258,7 +266,7 @@ def _export(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
-def _st_export(project, pou: str | None, sfc_text: bool = False) -> bytes | None:
+def _st_export(project: Project, pou: str | None, sfc_text: bool = False) -> bytes | None:
     from ..interchange.st.export import export_pou_st
     from ..interchange.st.project import export_project_st
 
@@ -348,7 +356,7 @@ def _serve(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
-def serve_security(args: argparse.Namespace):
+def serve_security(args: argparse.Namespace) -> Security:
     """The server's Security from the command line: its names, extra origins and sign-in."""
     from ..server.auth import Auth
     from ..server.security import LOOPBACK_HOSTS, Security

@@ -19,6 +19,7 @@ from dataclasses import dataclass
 from ..collector import collector_paused
 from ..deep import deep_call
 from ..model.diagnostics import Diagnostic, has_errors
+from ..model.places import ProjectPlaces
 from ..model.project import Pou as ModelPou
 from ..model.project import Project
 from ..model.validate import validate_project
@@ -29,6 +30,7 @@ from .build_limits import data_too_large, source_too_large
 from .context import PouContext
 from .lower_configuration import lower_configuration
 from .lower_fbd import lower_fbd_body
+from .lower_il import lower_il_body
 from .lower_ld import lower_ld_body
 from .lower_sfc import lower_sfc_body
 from .lower_st import lower_st_body
@@ -42,6 +44,7 @@ LOWER_BODY: dict[str, Callable[[ModelPou, PouContext], list[Block]]] = {
     "ld": lower_ld_body,
     "fbd": lower_fbd_body,
     "sfc": lower_sfc_body,
+    "il": lower_il_body,
 }
 
 _KIND = {"PROGRAM": "program", "FUNCTION_BLOCK": "function_block", "FUNCTION": "function"}
@@ -74,7 +77,8 @@ def _lower_project(project: Project, checked: CheckResult | None) -> LoweringRes
         if info is not None and info.name == pou.name:  # not a duplicate (reported by the checker)
             pous[pou.name.upper()] = lower_pou(pou, info, checked, diagnostics, image)
     instances, tasks, access = lower_configuration(checked, diagnostics, image)
-    program = Program(pous, globals_ + list(image.values()), tasks, instances, access)
+    diagrams = [(pou.name, pou.body) for pou in project.pous if not isinstance(pou.body, str)]
+    program = Program(pous, globals_ + list(image.values()), tasks, instances, access, ProjectPlaces(diagrams))
     too_much = data_too_large(program)
     if too_much is not None:
         diagnostics.append(too_much)

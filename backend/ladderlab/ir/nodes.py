@@ -12,6 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Literal
 
+from ..model.places import ProjectPlaces
 from .types import IrType
 
 # --------------------------------------------------------------------------- origin
@@ -300,7 +301,7 @@ class Pou:
     slots: list[Slot]
     blocks: list[Block]
     return_type: IrType | None = None
-    language: Literal["st", "ld", "fbd", "sfc"] = "st"
+    language: Literal["st", "ld", "fbd", "il", "sfc"] = "st"
     #: False: FB calls in the body see the time the POU was called with (a scan's clock, frozen in the scan).
     #: True: each FB call reads the engine's clock as it is then - a test's body, whose ADVANCE_TIME and
     #: RUN_SCANS move the clock between its statements (docs/testing.md).
@@ -348,6 +349,8 @@ class Program:
     tasks: list[TaskSpec] = field(default_factory=list)
     instances: list[ProgramInstance] | None = None
     access: dict[str, tuple[str, bool]] = field(default_factory=dict)
+    #: the LD/FBD elements' names as the user sees them, for runtime faults (model/places.py)
+    places: ProjectPlaces | None = field(default=None, repr=False, compare=False)
 
     def program_instances(self) -> list[ProgramInstance]:
         """The instances to create: ``instances``, or one per PROGRAM named after it."""

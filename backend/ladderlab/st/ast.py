@@ -283,7 +283,24 @@ class Empty:
     span: Span = _span()
 
 
-Stmt = Assign | CallStmt | If | Case | For | While | Repeat | Exit | Return | Empty
+@dataclass(slots=True)
+class Label:
+    """A jump target of an IL body (IL-02); ST has none. Lowered as the start of a labelled IR block."""
+
+    name: str
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class Goto:
+    """An IL jump (JMP, JMPC, JMPCN: IL-23) to a ``Label`` of the same body when ``cond`` holds (None: always)."""
+
+    label: str
+    cond: Expr | None
+    span: Span = _span()
+
+
+Stmt = Assign | CallStmt | If | Case | For | While | Repeat | Exit | Return | Empty | Label | Goto
 
 # ---------------------------------------------------------------- types and declarations
 

@@ -20,6 +20,8 @@ from . import ast
 from . import types as t
 from .body import BodyChecker
 from .configuration import check_configuration, configuration_globals
+from .il_check import check_il_body
+from .il_parser import IlBody, parse_il
 from .parser import (
     keywords,
     parse_declarations,
@@ -93,6 +95,10 @@ class ProjectChecker:
                 actions[pou.name] = parse_actions(pou)
                 for parsed in actions[pou.name].values():
                     self.result.diagnostics += parsed.diagnostics
+            elif pou.language == "il":
+                parsed = parse_il(pou.body, file=f"{pou.name}/body", pou=pou.name)
+                self.result.diagnostics += parsed.diagnostics
+                bodies[pou.name] = parsed.body
         self._register_pous()
         constants = [(b, f) for b, f in globals_ if b.constant and all(_elementary_decl(d) for d in b.decls)]
         self._declare_globals(constants)  # first, so array bounds in TYPEs may name them (TYP-22)
@@ -108,7 +114,7 @@ class ProjectChecker:
             self._check_initial_values(pou)
         for pou in self.project.pous:
             info = self.result.pous.get(pou.name.upper())
-            if info is not None and info.language == "st" and bodies.get(pou.name) is not None:
+            if info is not None and info.language in ("st", "il") and bodies.get(pou.name) is not None:
                 self._check_body(info, bodies[pou.name])
             if info is not None and info.name == pou.name and pou.name in actions:
                 check_actions(
@@ -472,12 +478,16 @@ class ProjectChecker:
             symbol.constant = symbol.constant or target.constant
 
     # ------------------------------------------------------------ bodies and the call graph
-    def _check_body(self, info: PouInfo, body: list[ast.Stmt]) -> None:
+    def _check_body(self, info: PouInfo, body: list[ast.Stmt] | IlBody) -> None:
         report = self._reporter(f"{info.name}/body", info.name)
-        checker = BodyChecker(self.result, info, report)
-        checker.statements(body)
-        info.body = body
-        if info.kind == "FUNCTION" and not checker.result_assigned and info.return_type not in (None, ERROR):
+        if isinstance(body, IlBody):
+            il = check_il_body(self.result, info, body, report)
+            info.body, info.accumulators, assigned = il.statements, il.accumulators, il.result_assigned
+        else:
+            checker = BodyChecker(self.result, info, report)
+            checker.statements(body)
+            info.body, assigned = body, checker.result_assigned
+        if info.kind == "FUNCTION" and not assigned and info.return_type not in (None, ERROR):
             report(
                 "ST-NO-RESULT",
                 f"the function {info.name} never assigns its result: it returns the default value of its type",

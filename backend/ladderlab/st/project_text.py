@@ -10,6 +10,7 @@ from __future__ import annotations
 from ..model.diagnostics import Diagnostic
 from ..model.project import Configuration, Pou, ProgramInstance, Project, Resource, Task
 from . import ast
+from .il_parser import blank_il_bodies
 from .parser import parse_source
 from .printer import print_expression
 from .sfc_text import sfc_from_text
@@ -48,7 +49,8 @@ class _Text:
 def source_to_project(
     text: str, name: str = "imported", *, nested_comments: bool = False
 ) -> tuple[Project | None, list[Diagnostic]]:
-    parsed = parse_source(text, nested_comments=nested_comments)
+    st_text, il_pous = blank_il_bodies(text)  # IL bodies are read from ``text`` (docs/il.md)
+    parsed = parse_source(st_text, nested_comments=nested_comments)
     if parsed.ast is None:
         return None, parsed.diagnostics
     source = _Text(text)
@@ -64,7 +66,7 @@ def source_to_project(
             pous.append(made)
             diagnostics += problems
         elif isinstance(item, ast.Pou):
-            pous.append(_pou(item, source))
+            pous.append(_pou(item, source, "il" if item.name.upper() in il_pous else "st"))
         else:
             configurations.append(item)
     for extra in configurations[1:]:
@@ -76,7 +78,7 @@ def source_to_project(
     return project, diagnostics
 
 
-def _pou(pou: ast.Pou, source: _Text) -> Pou:
+def _pou(pou: ast.Pou, source: _Text, language: str) -> Pou:
     end = (pou.span.end_line, pou.span.end_column - len(f"END_{pou.kind}"))
     if pou.var_blocks:
         first, last = pou.var_blocks[0].span, pou.var_blocks[-1].span
@@ -87,6 +89,8 @@ def _pou(pou: ast.Pou, source: _Text) -> Pou:
     else:
         declarations = ""
         body_start = (pou.body[0].span.line, pou.body[0].span.column) if pou.body else end
+        if language == "il":  # the blanked IL body left no statements: it starts on the line after the header
+            body_start = min((pou.span.line + 1, 1), end)
     body = source.between(body_start, end)
     return_type = None
     if pou.return_type is not None:  # as written: STRING[20], ARRAY [1..3] OF INT, INT (0..100) ...
@@ -95,7 +99,7 @@ def _pou(pou: ast.Pou, source: _Text) -> Pou:
     return Pou(
         name=pou.name,
         kind=_KIND[pou.kind],
-        language="st",
+        language=language,
         return_type=return_type,
         declarations=declarations,
         body=_keep_lines(body, body_start),

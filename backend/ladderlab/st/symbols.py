@@ -43,7 +43,7 @@ class TypeDef:
 
 @dataclass(eq=False)
 class PouInfo:
-    """A POU's interface and, for ST POUs, its checked body.
+    """A POU's interface and, for ST and IL POUs, its checked body (IL: as ST statements, st/il_check.py).
 
     ``symbols`` maps upper-case names to symbols in declaration order; ``body`` is
     the typed AST (every expression has ``.ty``, names have ``.ref``, calls have
@@ -60,6 +60,7 @@ class PouInfo:
     body: list[ast.Stmt] | None = None
     calls: set[str] = field(default_factory=set)
     actions: dict[str, list[ast.Stmt] | None] = field(default_factory=dict)
+    accumulators: list[Symbol] = field(default_factory=list)  # IL POUs: the hidden current-result variables
 
     def parameters(self, *classes: str) -> list[Symbol]:
         wanted = classes or PARAMETER_CLASSES

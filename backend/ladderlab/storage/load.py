@@ -1,4 +1,4 @@
-"""Load the PROJECT argument of the CLI: a project folder, a whole-project .json, or a .st file."""
+"""Load the PROJECT argument of the CLI: a project folder, a whole-project .json, or a .st / .il file."""
 
 from __future__ import annotations
 
@@ -31,10 +31,10 @@ def load_project_path(path: Path | str, encoding: str | None = None, hint: str =
         raise _error(str(path), "no such file or folder")
     if path.suffix.lower() == ".json":
         return _load_json_project(path, decode_text(path.read_bytes(), path.name, encoding, hint))
-    if path.suffix.lower() == ".st":
+    if path.suffix.lower() in (".st", ".il"):  # IEC source; a POU whose body is IL is IL in either (docs/il.md)
         text = decode_text(path.read_bytes(), path.name, encoding, hint)
         return project_from_st(text, name=path.stem, file=path.name)
-    raise _error(str(path), "expected a project folder, a project .json file or a .st file")
+    raise _error(str(path), "expected a project folder, a project .json file or a .st or .il file")
 
 
 def _finish_interrupted_save(folder: Path) -> None:
@@ -73,7 +73,7 @@ def _load_json_project(path: Path, text: str) -> Project:
 
 
 def project_from_st(text: str, *, name: str, file: str) -> Project:
-    """A project made of the TYPEs, VAR_GLOBALs, POUs and CONFIGURATION tasks of one ST source file.
+    """A project made of the TYPEs, VAR_GLOBALs, POUs and CONFIGURATION tasks of one IEC source file (ST, IL).
 
     The file is parsed (not just split like a stored POU file) because its CONFIGURATION
     becomes the project's tasks; POU texts keep the file's line numbers, so later

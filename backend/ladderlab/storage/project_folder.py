@@ -6,8 +6,9 @@ Layout::
     types.st            TYPE ... END_TYPE blocks
     globals.st          VAR_GLOBAL ... END_VAR blocks
     pous/<name>.st      ST POUs as complete IEC text (PROGRAM ... END_PROGRAM)
+    pous/<name>.il      IL POUs as complete IEC text, the body in IL (docs/il.md)
     pous/<name>.ld.json / pous/<name>.fbd.json / pous/<name>.sfc.json   graphical POUs
-    pous/<name>.st.json ST POUs whose text cannot be split back exactly (e.g. a VAR block
+    pous/<name>.st.json ST (.il.json: IL) POUs whose text cannot be split back exactly (e.g. a VAR block
                         without END_VAR while the user is still typing); never loses a character
     tests/<name>.st     unit test files (docs/testing.md), as typed
     tests/hidden/       a teacher's hidden test files: not part of the model, kept as they are by saves,
@@ -28,6 +29,7 @@ from pydantic import ValidationError
 
 from ..model import Diagnostic, Pou, Project, Task, TestFile
 from ..model.names import test_file_name_problem
+from ..model.project import TEXT_LANGUAGES
 from .errors import ProjectLoadError, json_text_problem, validation_diagnostics
 from .st_text import StTextError, compose_pou_text, parse_pou_text, round_trips
 from .text_files import HINT, decode_text
@@ -36,7 +38,7 @@ PROJECT_FILE = "project.json"
 TYPES_FILE = "types.st"
 GLOBALS_FILE = "globals.st"
 POUS_DIR = "pous"
-POU_SUFFIXES = (".st", ".st.json", ".ld.json", ".fbd.json", ".sfc.json")
+POU_SUFFIXES = (".st", ".st.json", ".il", ".il.json", ".ld.json", ".fbd.json", ".sfc.json")
 TESTS_DIR = "tests"
 HIDDEN_TESTS_DIR = "tests/hidden"
 TEST_SUFFIX = ".st"
@@ -47,7 +49,7 @@ def dump_json(data: Any) -> str:
     return json.dumps(data, indent=2, sort_keys=True, ensure_ascii=False) + "\n"
 
 
-def _task(task: Task) -> dict:
+def _task(task: Task) -> dict[str, Any]:
     """A task as project.json holds it; ``single`` and ``watchdog_ms`` only when set, so files of cyclic tasks stay
     as they were (``interval`` stays even when null: null means a SINGLE task without an interval)."""
     data = task.model_dump(mode="json")
@@ -63,7 +65,7 @@ def _text_file(text: str) -> str:
 
 def project_files(project: Project) -> dict[str, str]:
     """Relative path -> content of every file the project is stored as."""
-    meta = {
+    meta: dict[str, Any] = {
         "format": project.format,
         "name": project.name,
         "pous": [p.name for p in project.pous],
@@ -92,8 +94,8 @@ def test_path(name: str) -> str:
 
 def pou_file(pou: Pou) -> tuple[str, str]:
     """The stored path and content of one POU."""
-    if pou.language == "st" and round_trips(pou):
-        return f"{POUS_DIR}/{pou.name}.st", compose_pou_text(pou)
+    if pou.language in TEXT_LANGUAGES and round_trips(pou):
+        return f"{POUS_DIR}/{pou.name}.{pou.language}", compose_pou_text(pou)
     data = pou.model_dump(mode="json", by_alias=True, exclude_none=True)
     return f"{POUS_DIR}/{pou.name}.{pou.language}.json", dump_json(data)
 
@@ -238,7 +240,10 @@ def _read_pou(folder: Path, name: str, read: _Reader) -> Pou | None:
     paths = pou_paths(folder, name)
     if len(paths) != 1:
         message = (
-            (f"POU {name!r} is listed in project.json but has no file pous/{name}.st, .ld.json, .fbd.json or .sfc.json")
+            (
+                f"POU {name!r} is listed in project.json but has no file pous/{name}.st, .il, .ld.json, .fbd.json "
+                "or .sfc.json"
+            )
             if not paths
             else (f"POU {name!r} has several files: {', '.join(p.name for p in paths)}; keep one")
         )
@@ -276,7 +281,7 @@ def _read_pou(folder: Path, name: str, read: _Reader) -> Pou | None:
         if text is None:
             return None
         try:
-            pou = parse_pou_text(text)
+            pou = parse_pou_text(text, language=path.suffix[1:])
         except StTextError as err:
             problems.append(
                 Diagnostic(code="BAD-FILE", file=rel, pou=name, line=err.line, column=err.column, message=err.reason)

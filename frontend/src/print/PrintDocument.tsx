@@ -5,7 +5,7 @@
 // network. On screen a toolbar chooses the POUs, prints, and saves the page as HTML or a diagram as SVG.
 import { useMemo, useRef } from "react";
 import type { LibraryEntry, PrintDocument as Doc, SymbolInfo, XrefEntry } from "../generated/api";
-import type { Pou } from "../generated/project";
+import type { Pou } from "../generated/api";
 import { downloadText } from "../interchange/download";
 import type { FbdBody } from "../fbd/model";
 import type { LdBody } from "../ld/model";
@@ -29,6 +29,7 @@ const LANGUAGE = {
   ld: "Ladder Diagram",
   fbd: "Function Block Diagram",
   sfc: "Sequential Function Chart",
+  il: "Instruction List",
 } as const;
 const KIND = { program: "PROGRAM", function_block: "FUNCTION_BLOCK", function: "FUNCTION" } as const;
 
@@ -136,7 +137,7 @@ function PouSection({
     <section className="print-pou" aria-label={title} data-pou={pou.name}>
       <h2>
         {title} <small>{LANGUAGE[pou.language]}</small>
-        {pou.language !== "st" ? (
+        {pou.language === "ld" || pou.language === "fbd" ? (
           <button type="button" className="print-screen-only" onClick={saveSvg}>
             Save diagram as SVG
           </button>
@@ -144,7 +145,7 @@ function PouSection({
       </h2>
       <h3>Declarations</h3>
       <DeclarationTable symbols={symbols} />
-      <h3>{pou.language === "st" ? "Body" : pou.language === "sfc" ? "Chart" : "Networks"}</h3>
+      <h3>{pou.language === "st" || pou.language === "il" ? "Body" : pou.language === "sfc" ? "Chart" : "Networks"}</h3>
       <div ref={diagram}>
         {pou.language === "ld" ? (
           <LdPrint body={pou.body as LdBody} library={library} />

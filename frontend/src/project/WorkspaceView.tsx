@@ -5,7 +5,7 @@
 // overwrite deliberately).
 import { useCallback, useEffect, useMemo, useState, type CSSProperties, type FormEvent, type ReactNode } from "react";
 import type { Diagnostic } from "../generated/api";
-import type { LdBody, Pou, Project, TestFile } from "../generated/project";
+import type { LdBody, Pou, Project, TestFile } from "../generated/api";
 import { LdEditor } from "../ld/editor/LdEditor";
 import type { History } from "../ld/history";
 import { operandPath } from "../online/ldBinding";
@@ -16,7 +16,8 @@ import { BottomPanels } from "../panels/BottomPanels";
 import { focusOf, panelsStore, usePanels } from "../panels/store";
 import { StView } from "../stview/StView";
 import { DeclarationsEditor } from "../declarations/DeclarationsEditor";
-import { ELEMENTARY_TYPES, userTypeNames } from "../declarations/model";
+import { userTypeNames } from "../declarations/model";
+import { DECLARABLE_TYPES } from "../iec/vocabulary";
 import { isTestPath, pouOf, symbolsOf, testOf, testPath, useWorkspace, workspaceStore } from "./store";
 import { useTestCheck, useTestCompletions } from "../tests/assist";
 import { coverageLines, coverageMarks, coverageOf } from "../tests/coverage";
@@ -29,6 +30,7 @@ import { elementText as sfcElementText, type SfcBody } from "../sfc/model";
 import { ExportMenu } from "../interchange/ExportMenu";
 import { ImportPlcopen } from "../interchange/ImportPlcopen";
 import { appStore } from "../store";
+import { IL_OPERATOR_COMPLETIONS } from "../st/ilLanguage";
 import { StEditor } from "../st/StEditor";
 import { StOnlineBar } from "../st/StOnlineBar";
 import { useStAssist } from "../st/useStAssist";
@@ -53,7 +55,9 @@ const KINDS: { kind: Pou["kind"]; title: string }[] = [
   { kind: "function_block", title: "Function blocks" },
   { kind: "function", title: "Functions" },
 ];
-const LANGUAGE = { st: "ST", ld: "LD", fbd: "FBD", sfc: "SFC" } as const;
+const LANGUAGE = { st: "ST", ld: "LD", fbd: "FBD", il: "IL", sfc: "SFC" } as const;
+/** Languages whose body is text, edited in the text editor (docs/il.md). */
+const TEXT_LANGUAGES: readonly Pou["language"][] = ["st", "il"];
 
 export const formatTime = (iso: string | null | undefined): string => {
   if (!iso) return "an unknown time";
@@ -417,7 +421,7 @@ function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
 }
 
 /**
- * An ST POU as text: its declarations above its body, each in the ST editor, with the live check
+ * An ST or IL POU as text: its declarations above its body, each in the text editor, with the live check
  * of the working copy as underlines; online, the body shows values inline.
  */
 function StPouView({ pou }: { pou: Pou }) {
@@ -425,7 +429,12 @@ function StPouView({ pou }: { pou: Pou }) {
   const setDeclarations = useWorkspace((s) => s.setDeclarations);
   const phase = useOnline((s) => s.phase);
   const body = typeof pou.body === "string" ? pou.body : "";
-  const { diagnostics, completions, scope } = useStAssist(pou);
+  const { diagnostics, completions: stCompletions, scope } = useStAssist(pou);
+  const il = pou.language === "il";
+  const completions = useMemo(
+    () => (il ? { ...stCompletions, options: [...IL_OPERATOR_COMPLETIONS, ...stCompletions.options] } : stCompletions),
+    [il, stCompletions],
+  );
   const online = useStOnline(pou, body, scope);
   const readOnly = phase === "offline" ? null : "Online: go offline to edit.";
   const allBreakpoints = useDebug((s) => s.breakpoints);
@@ -471,6 +480,7 @@ function StPouView({ pou }: { pou: Pou }) {
           completions={completions}
           readOnly={readOnly}
           label={`${pou.name} body`}
+          language={il ? "il" : "st"}
           debug={debug}
           online={online.view}
           coverage={coverageLines(covered)}
@@ -550,7 +560,7 @@ function PouDeclarations({
   const types = useMemo(
     () => [
       ...new Set([
-        ...ELEMENTARY_TYPES,
+        ...DECLARABLE_TYPES,
         ...userTypeNames(userTypes),
         ...library.filter((e) => e.kind === "function_block").map((e) => e.name),
       ]),
@@ -587,7 +597,10 @@ function PouView({ name }: { name: string }) {
   }
   if (!pou || !project) return <p className="placeholder">{name} is no longer in this project.</p>;
   const modes: { id: PouMode; label: string }[] = [
-    { id: "body", label: pou.language === "st" ? "Body" : pou.language === "sfc" ? "Chart" : "Diagram" },
+    {
+      id: "body",
+      label: TEXT_LANGUAGES.includes(pou.language) ? "Body" : pou.language === "sfc" ? "Chart" : "Diagram",
+    },
     { id: "declarations", label: "Declarations" },
     { id: "variables", label: "Variables" },
     ...(pou.language !== "st" ? [{ id: "st" as const, label: "View as ST" }] : []),
@@ -613,7 +626,7 @@ function PouView({ name }: { name: string }) {
         onRevealNetwork={(network) => panelsStore.getState().reveal({ pou: name, network })}
       />
     );
-  } else if (pou.language === "st") {
+  } else if (TEXT_LANGUAGES.includes(pou.language)) {
     content = <StPouView pou={pou} />;
   } else if (pou.language === "ld" && history) {
     content = <LdPouView pou={pou} history={history} />;

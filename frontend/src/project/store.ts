@@ -5,7 +5,7 @@ import { useStore } from "zustand";
 import { createStore, type StoreApi } from "zustand/vanilla";
 import { ApiError, projectApi, SaveConflictError, type ProjectApi } from "../api/client";
 import type { ConflictDetail, Diagnostic, LibraryEntry, SymbolInfo, SymbolTable } from "../generated/api";
-import type { FbdBody, LdBody, Pou, Project, SfcBody, TestFile } from "../generated/project";
+import type { FbdBody, LdBody, Pou, Project, SfcBody, TestFile } from "../generated/api";
 import { historyOf, type History } from "../ld/history";
 import type { VariableDeclaration } from "../ld/editor/declare";
 import { addDeclaration } from "./declarations";
@@ -305,7 +305,7 @@ export function createWorkspaceStore(
           kind,
           language,
           declarations: kind === "function" ? "VAR_INPUT\nEND_VAR" : "VAR\nEND_VAR",
-          body: language === "st" ? "" : language === "sfc" ? sfcStart() : { networks: [] },
+          body: language === "st" || language === "il" ? "" : language === "sfc" ? sfcStart() : { networks: [] },
           ...(kind === "function" ? { return_type: "BOOL" } : {}),
         };
         replacePous(name, (pous) => [...pous, pou]);

@@ -16,7 +16,7 @@ import {
   type ReactNode,
 } from "react";
 import type { Diagnostic } from "../generated/api";
-import type { SfcAction, SfcNamedTransition } from "../generated/project";
+import type { SfcAction, SfcNamedTransition } from "../generated/api";
 import { MenuList, type MenuItem } from "../ld/editor/ContextMenu";
 import { clipboardActions, type LastClip } from "../ld/editor/systemClipboard";
 import type { LdOnlineActions } from "../ld/editor/LdEditor";

@@ -5,7 +5,7 @@
 // take breakpoints too, with the part they are in).
 import { useCallback, useEffect, useMemo, useState, type ReactNode } from "react";
 import type { Diagnostic, LibraryEntry, SymbolInfo } from "../generated/api";
-import type { FbdBody, LdBody, Pou, SfcAction, SfcNamedTransition } from "../generated/project";
+import type { FbdBody, LdBody, Pou, SfcAction, SfcNamedTransition } from "../generated/api";
 import { debugStore, useDebug } from "../debug/store";
 import { FbdEditor } from "../fbd/editor/FbdEditor";
 import { keysOf } from "../keys/keymap";

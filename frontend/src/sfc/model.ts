@@ -10,7 +10,7 @@ import type {
   SfcParallel,
   SfcStep,
   SfcTransition,
-} from "../generated/project";
+} from "../generated/api";
 
 export type { SfcAlternative, SfcAssociation, SfcBody, SfcJump, SfcParallel, SfcStep, SfcTransition };
 export type SfcElement = SfcStep | SfcTransition | SfcAlternative | SfcParallel | SfcJump;

@@ -25,7 +25,7 @@ import {
   type SfcStep,
   type SfcTransition,
 } from "./model";
-import type { SfcAction, SfcNamedTransition } from "../generated/project";
+import type { SfcAction, SfcNamedTransition } from "../generated/api";
 
 export type EditResult = { body: SfcBody; select?: string } | { error: string };
 

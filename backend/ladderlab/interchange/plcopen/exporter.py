@@ -130,7 +130,7 @@ class _Exporter:
         if isinstance(pou.body, (LdBody, FbdBody)):
             self.diagram(body, pou.body, pou.name)
         else:
-            formatted_text(body, "ST", pou.body)
+            formatted_text(body, pou.language.upper(), pou.body)  # ST or IL text
 
     def diagram(self, body: ET.Element, networks: LdBody | FbdBody, pou: str) -> None:
         """The ``<LD>`` or ``<FBD>`` of a POU's body, or of an SFC action's or transition's."""

@@ -245,19 +245,8 @@ class _Importer:
         body = bodies[0] if bodies else None
         language = next(r.elements(body), None)
         tag = local(language) if language is not None else "ST"
-        if tag == "IL":
-            r.report(
-                "PLCOPEN-UNSUPPORTED",
-                f"POU {pou.name} is written in {tag}, which LadderLab does not support; "
-                f"it was imported with its interface and a body that does nothing ({_KEPT[tag]} as comments), "
-                "so its callers build and run",
-                language,
-                severity="warning",
-                pou=pou.name,
-            )
-            return pou.model_copy(update={"body": unsupported_body(tag, language)})
-        if tag == "ST":
-            return pou.model_copy(update={"body": text_content(language)})
+        if tag in ("ST", "IL"):  # IL bodies are IL text like ST bodies are ST text (docs/il.md)
+            return pou.model_copy(update={"body": text_content(language), "language": tag.lower()})
         assert body is not None and language is not None
         if tag == "SFC":
             importer = SfcImporter(
@@ -285,8 +274,9 @@ class _Importer:
         groups = group_by_ladderlab(graph, r, listing)
         if tag == "LD":
             resolve_continuations(graph, r, pou)
+            foreign = groups is None
             groups = groups or attach_headers(ld_groups(graph), graph, r)
-            return "ld", LdImporter(graph, r, pou, signatures, ids).body(groups)
+            return "ld", LdImporter(graph, r, pou, signatures, ids, foreign=foreign).body(groups)
         relative, orders = groups is not None, {}
         if groups is None:
             groups, orders = fbd_groups(graph, r)
@@ -348,18 +338,3 @@ def _return_type_elements(text: str) -> list[ET.Element] | None:
     holder = ET.Element("returnType")
     write_type(holder, spec)
     return [holder]
-
-
-#: What an unsupported body leaves in the comments of the POU standing in for it.
-_KEPT = {"IL": "the IL text is kept"}
-
-
-def unsupported_body(tag: str, language: ET.Element) -> str:
-    """The ST body standing in for an IL body: no statements, the original in line comments.
-
-    The POU keeps its interface so that the programs calling it still build (the rest of an imported
-    project runs); the comment says, where the user opens the POU, that this body does nothing.
-    """
-    original = text_content(language).strip().splitlines()
-    lines = [f"// Imported from {tag}, which LadderLab cannot run: this body does nothing. The original {tag}:"]
-    return "\n".join(lines + [f"// {line}".rstrip() for line in original])

@@ -1,4 +1,5 @@
-"""ST export of a POU: the complete IEC text of an LD/FBD POU that behaves like the diagram (issue 8).
+"""ST export of a POU: the complete IEC text of an LD/FBD POU that behaves like the diagram (issue 8), or of an
+IL POU (``il.py``).
 
 ``export_pou_st(project, name)`` returns the POU's text, a source map (text line
 -> network and element) and diagnostics. ST POUs export as their text
@@ -25,6 +26,7 @@ from ...storage.st_text import compose_pou_text
 from .body import Network, body_lines, comment, network_title
 from .elements import PouScope
 from .fbd import fbd_network
+from .il import il_to_st
 from .ld import ld_network
 from .names import Names
 from .network import Declarations, plan
@@ -75,7 +77,7 @@ class ExportedPou:
 
 
 def st_pou(project: Project, pou: Pou, checked: CheckResult) -> ExportedPou:
-    """The ST version of the diagram POU ``pou``, or diagnostics saying why it cannot be exported."""
+    """The ST version of the diagram or IL POU ``pou``, or diagnostics saying why it cannot be exported."""
     info = checked.pou(pou.name)
     diagnostics: list[Diagnostic] = [
         d for d in checked.diagnostics if d.pou is None or d.pou.upper() == pou.name.upper()
@@ -87,6 +89,9 @@ def st_pou(project: Project, pou: Pou, checked: CheckResult) -> ExportedPou:
         if made.pou is None:
             return ExportedPou(None, [], _refused(pou, made.diagnostics))
         return ExportedPou(made.pou, [], made.diagnostics)
+    if pou.language == "il":
+        exported_il, problems = il_to_st(pou, checked)
+        return ExportedPou(exported_il, [], problems + [d for d in diagnostics if d.severity != "error"])
     lowered = lower_pou(pou, info, checked, diagnostics)
     if has_errors(diagnostics):
         return ExportedPou(None, [], _refused(pou, diagnostics))
