@@ -41,6 +41,7 @@ _AREAS = {
     "fbd": "Function block diagram",
     "build": "Building and running",
     "tests": "Unit tests of PLC programs",
+    "il": "Instruction List",
     "export": "ST export",
     "plcopen": "PLCopen XML",
 }
@@ -152,9 +153,19 @@ _TABLE: list[tuple[str, str, Severity, str]] = [
     ("tests", "TEST-MOCK", "error", "MOCK or MOCK_FUNCTION names something that cannot be mocked."),
     ("tests", "TEST-MEMORY", "error", "A test file needed more memory than its process may use."),
     ("tests", "TEST-WORKER", "error", "The process running a test file stopped."),
+    # instruction list (st/il_parser.py, st/il_check.py)
+    ("il", "IL-PARSE", "error", "The text is not a valid IL instruction at this place."),
+    ("il", "IL-UNKNOWN-OPERATOR", "error", "An IL line starts with a word that is no operator or function."),
+    ("il", "IL-OPERAND", "error", "An IL operator has the wrong number or kind of operands."),
+    ("il", "IL-TYPE", "error", "The accumulator's type does not fit the operator or the operand."),
+    ("il", "IL-NO-CR", "error", "An instruction reads the accumulator before anything was loaded."),
+    ("il", "IL-CR-TYPE", "error", "The accumulator cannot hold this type, or its type differs by path."),
+    ("il", "IL-LABEL", "error", "A jump names an unknown label, or a label is defined twice."),
+    ("il", "IL-PAREN", "error", "A deferred operation's '(' and ')' do not match."),
     # ST export (interchange/st/)
     ("export", "EXPORT-UNKNOWN-POU", "error", "The POU to export does not exist."),
     ("export", "EXPORT-INVALID", "error", "A POU with errors cannot be exported as ST."),
+    ("export", "EXPORT-IL-JUMP", "error", "An IL jump that ST cannot write (backwards or out of a jump)."),
     ("export", "EXPORT-INTERNAL", "error", "The exported ST does not check: please report it."),
     # PLCopen XML (interchange/plcopen/)
     ("plcopen", "XML-TOO-LARGE", "error", "The XML document is larger than the import accepts."),
