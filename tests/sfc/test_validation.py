@@ -139,7 +139,7 @@ def test_an_entry_action_that_does_not_exist():
 @pytest.mark.parametrize(
     ("condition", "code"),
     [
-        ("x := TRUE", "SFC-03"),
+        ("x := TRUE", "SFC-CONDITION"),
         ("LIMIT(0, n, 10) > 5 AND go", None),
         ("n", "ST-TYPE-MISMATCH"),
         ("undeclared", "ST-UNKNOWN-VAR"),
@@ -170,7 +170,7 @@ def test_a_transition_written_in_ld_may_not_assign_or_call_a_function_block():
         },
     }
     found = problems(sfc_pou("Main", DECLS, [step("S0"), tr("Ready"), jump("S0")], transitions=[transition]))
-    sfc03 = [(f, e, m) for c, f, e, m in found if c == "SFC-03"]
+    sfc03 = [(f, e, m) for c, f, e, m in found if c == "SFC-CONDITION"]
     assert (
         "Main/transitions/Ready",
         "b1",

@@ -651,7 +651,7 @@ class SfcLowering:
                         writes += 1
                     else:
                         self.ctx.report(
-                            "SFC-03",
+                            "SFC-CONDITION",
                             f"a transition cannot assign {target.strip()}: it only gives its "
                             f"own value ({transition.name})",
                             network=network.id,
@@ -660,14 +660,14 @@ class SfcLowering:
                 instance = getattr(item, "instance", None) if item.type in ("box", "block") else None
                 if instance:
                     self.ctx.report(
-                        "SFC-03",
+                        "SFC-CONDITION",
                         f"a transition cannot call the function block instance {instance}: call it in an action",
                         network=network.id,
                         element=item.id,
                     )
         if not writes:
             self.ctx.report(
-                "SFC-03",
+                "SFC-CONDITION",
                 f"nothing sets the transition {transition.name}: add a coil or output named {transition.name}",
                 severity="warning",
             )
@@ -676,7 +676,7 @@ class SfcLowering:
         """An ST condition (SFC-03): a BOOL expression without assignment, output or in-out argument."""
         at = At(None, element)
         if ":=" in text and parse_expression(text).ast is None:
-            self.ops.report(at, "SFC-03", f"{what} is a condition, not a statement: it cannot assign (:=)")
+            self.ops.report(at, "SFC-CONDITION", f"{what} is a condition, not a statement: it cannot assign (:=)")
             return None
         value, _ = self.ops.read(text, at, what, st_types.BOOL)
         if value is None:
@@ -686,12 +686,12 @@ class SfcLowering:
             self.ops.checker(at).expr(parsed)
             for call in _calls(parsed):
                 if any(arg.output for arg in call.args):
-                    self.ops.report(at, "SFC-03", f"{what} cannot assign through an output (=>) of a call")
+                    self.ops.report(at, "SFC-CONDITION", f"{what} cannot assign through an output (=>) of a call")
                     return None
                 ref = call.ref
                 if isinstance(ref, PouInfo) and ref.parameters("VAR_IN_OUT"):
                     self.ops.report(
-                        at, "SFC-03", f"{what} cannot call {ref.name}: its VAR_IN_OUT may change a variable"
+                        at, "SFC-CONDITION", f"{what} cannot call {ref.name}: its VAR_IN_OUT may change a variable"
                     )
                     return None
         return value

@@ -189,6 +189,7 @@ _TABLE: list[tuple[str, str, Severity, str]] = [
     ("plcopen", "PLCOPEN-SFC", "error", "An SFC chart in the document cannot be imported as it is drawn."),
     # sequential function charts (docs/sfc.md)
     ("sfc", "SFC-EMPTY", "error", "An SFC chart has no initial step."),
+    ("sfc", "SFC-CONDITION", "error", "A transition condition assigns, writes an output or calls an FB (spec SFC-03)."),
     ("sfc", "SFC-ORDER", "error", "Two steps or two transitions follow each other in a chart."),
     ("sfc", "SFC-DANGLING", "error", "A transition leads to no step."),
     ("sfc", "SFC-UNREACHABLE", "error", "Part of a chart can never become active."),

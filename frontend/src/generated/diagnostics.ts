@@ -1007,6 +1007,16 @@ export const DIAGNOSTICS = {
       severity: "error",
       summary: "A divergence has fewer than two branches.",
     },
+    "SFC-CONDITION": {
+      anchor: "sfc-condition",
+      area: "sfc",
+      example: "a transition whose condition is fills := 1",
+      example_language: "text",
+      example_note: "",
+      fix: "a condition only reads: write a BOOL expression such as fills >= 1, and do the assignment in an action.",
+      severity: "error",
+      summary: "A transition condition assigns, writes an output or calls an FB (spec SFC-03).",
+    },
     "SFC-DANGLING": {
       anchor: "sfc-dangling",
       area: "sfc",
