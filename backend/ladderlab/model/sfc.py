@@ -164,9 +164,10 @@ class SfcBody(BaseModel):
     def calls(self) -> set[str]:
         """The names (upper case) of the functions and FB types the LD/FBD actions and transitions call."""
         out: set[str] = set()
-        for item in (*self.actions, *self.transitions):
-            if isinstance(item.body, (LdBody, FbdBody)):
-                out |= item.body.calls()
+        bodies: list[object] = [*(a.body for a in self.actions), *(t.body for t in self.transitions)]
+        for body in bodies:
+            if isinstance(body, (LdBody, FbdBody)):
+                out |= body.calls()
         return out
 
     def action(self, name: str) -> SfcAction | None:
@@ -185,7 +186,7 @@ class SfcBody(BaseModel):
                 yield action.name, action.body
 
 
-def _typed_body(data: Any, types: dict[str, type]) -> Any:
+def _typed_body(data: Any, types: dict[str, Any]) -> Any:
     """Validate ``body`` as the type ``language`` names, so errors point at the right shape."""
     if not isinstance(data, dict):
         return data

@@ -82,7 +82,7 @@ class _ChartWalker:
         self.steps: dict[str, GraphStep] = {}
         self.transitions: list[GraphTransition] = []
         self.problems: list[ChartProblem] = []
-        self.jumps: list[tuple[SfcJump, list[GraphTransition], tuple]] = []
+        self.jumps: list[tuple[SfcJump, list[GraphTransition], tuple[tuple[str, int], ...]]] = []
         self.context: tuple[tuple[str, int], ...] = ()
 
     def report(self, element: str, code: str, message: str, severity: str = "error") -> None:
