@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import re
+import time
 import urllib.request
 
 
@@ -86,3 +87,19 @@ def watch(page, path: str):
     panels.get_by_label("Variable path to watch").fill(path)
     panels.get_by_label("Variable path to watch").press("Enter")
     return panels.locator(f'tr[data-path="{path.upper()}"] td.watch-value')
+
+
+def scan_count(page) -> int:
+    """The scan counter of the simulation toolbar."""
+    return int(page.get_by_test_id("scan-count").inner_text())
+
+
+def settled_scan_count(page) -> int:
+    """The counter once the last values sent before a stop have arrived (it stops changing)."""
+    previous = scan_count(page)
+    while True:
+        time.sleep(0.25)
+        current = scan_count(page)
+        if current == previous:
+            return current
+        previous = current

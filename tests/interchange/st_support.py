@@ -38,7 +38,10 @@ SCAFFOLDING = {"END_CASE;", "END_WHILE;"}
 
 def check_source_map(project: Project, name: str, result: StExport) -> None:
     """Issue 28: every line from the first network's comment to the POU's end (the state machine's closing lines
-    apart) maps to a network of the POU and, if to an element, to one of that network's elements."""
+    apart) maps to a network of the POU and, if to an element, to one of that network's elements. (An SFC POU's
+    source map is not written: its networks are those of its actions.)"""
+    if project.pou(name).language not in ("ld", "fbd"):
+        return
     lines = result.text.splitlines()
     first = next((i for i, line in enumerate(lines, 1) if line.lstrip().startswith("(* Network")), None)
     if first is None:

@@ -80,14 +80,10 @@ CHECK_FAILS = {
         GRAMMAR,
     ),
     "ironplc/integrations/vscode/tests/grammar/snap/plcopen-pou.xml": ({"ST-DECL"}, GRAMMAR),
+    "ironplc/integrations/vscode/tests/grammar/snap/plcopen-sfc.xml": ({"SFC-EMPTY"}, GRAMMAR),
 }
-#: SFC POUs, reported as unsupported (file -> POU names); IL POUs are imported as IL (issue 26).
-UNSUPPORTED = {
-    "beremiz-examples/exemples/first_steps/plc.xml": ["CounterSFC"],
-    "beremiz-examples/exemples/svghmi_traffic_light/plc.xml": ["traffic_light_sequence"],
-    "openplc-examples/examples/Multi_Language/plc.xml": ["CounterSFC"],
-    "ironplc/integrations/vscode/tests/grammar/snap/plcopen-sfc.xml": ["MySfcProgram"],
-}
+#: POUs reported as unsupported (file -> POU names): none, SFC and IL both import (issues 24 and 26).
+UNSUPPORTED: dict[str, list[str]] = {}
 
 
 class _Summary:
@@ -116,7 +112,7 @@ def fixtures(request) -> dict[str, object]:
     return {p.relative_to(EXTERNAL).as_posix(): import_plcopen(p.read_bytes(), file=p.name) for p in files}
 
 
-def test_every_fixture_imports_ld_fbd_and_st_without_errors_and_reports_sfc_and_il(fixtures):
+def test_every_fixture_imports_ld_fbd_sfc_and_st_without_errors_and_reports_il(fixtures):
     languages: Counter[str] = Counter()
     errors, unsupported = {}, {}
     for path, result in fixtures.items():
@@ -129,8 +125,8 @@ def test_every_fixture_imports_ld_fbd_and_st_without_errors_and_reports_sfc_and_
         if skipped:
             unsupported[path] = skipped
     SUMMARY.lines.append(
-        f"{len(fixtures)} files imported: {languages['ld']} LD, {languages['fbd']} FBD, "
-        f"{languages['st']} ST and {languages['il']} IL POUs; {sum(map(len, unsupported.values()))} SFC POUs reported "
+        f"{len(fixtures)} files imported: {languages['ld']} LD, {languages['fbd']} FBD, {languages['st']} ST, "
+        f"{languages['il']} IL and {languages['sfc']} SFC POUs; {sum(map(len, unsupported.values()))} POUs reported "
         f"unsupported; import errors in {len(errors)} file(s), all in the source"
     )
     assert errors == IMPORT_ERRORS
@@ -193,16 +189,52 @@ def test_first_steps_counters_in_ld_fbd_st_and_il_agree_scan_for_scan(fixtures):
     assert [c[0] for c in counts] == [*range(1, 11), 17, 17, *range(18, 31), 17, 18, 19, 20, 21][:30]
 
 
-def test_first_steps_runs_as_imported_with_a_stand_in_for_its_sfc_counter(fixtures):
-    """The whole first_steps project builds as imported; its IL counter counts (Cnt4), the SFC stand-in stays 0."""
+def test_first_steps_runs_as_imported_and_its_five_counters_count(fixtures):
+    """The whole first_steps project builds as imported; its ST, FBD, LD and IL counters count every scan, the SFC
+    counter one scan behind (its first scan is the initial step's, SFC-04)."""
     result = lower_project(fixtures["beremiz-examples/exemples/first_steps/plc.xml"].project)
     assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
     sim = Simulation(result.program)
     for scan in range(1, 6):
         sim.cycle(1)
         counts = [sim.read(f"plc_task_instance.Cnt{n}") for n in range(1, 6)]  # the instance of plc_prg
-        assert counts == [scan, scan, 0, scan, scan]
-        assert sim.read("plc_task_instance.AVCnt") == pytest.approx(4 * scan / 5)  # the mean of the five counters
+        assert counts == [scan, scan, scan - 1, scan, scan]
+        assert sim.read("plc_task_instance.AVCnt") == pytest.approx((5 * scan - 1) / 5)  # the mean of the five
+
+
+def test_first_steps_sfc_counter_counts_up_and_resets_as_its_chart_says(fixtures):
+    """CounterSFC (Beremiz: "if reset is False, counter is incremented every cycle; if True it is reset to
+    ResetCounterValue", 17). Its chart: Start -(NOT Reset)-> Count [Cnt := Cnt + 1; OUT := Cnt] -(Reset)-> Start
+    -(Reset)-> ResetCounter [Cnt := 17; OUT := Cnt] -(NOT Reset)-> Start. Worked out from SFC-04: a step acts from
+    the scan after its transition fired, and each left action runs once more (so Count adds one in the scan after
+    Reset rises, and ResetCounter loads 17 again as Start is active); every pass through Start costs a scan."""
+    project = fixtures["beremiz-examples/exemples/first_steps/plc.xml"].project
+    counter = project.pou("CounterSFC")
+    assert counter is not None and counter.language == "sfc"
+    check = Pou(
+        name="Check",
+        kind="program",
+        language="st",
+        declarations="VAR\n    Reset : BOOL;\n    sfc : CounterSFC;\nEND_VAR",
+        body="sfc(Reset := Reset);",
+    )
+    program = project.model_copy(
+        update={
+            "pous": [counter, check],
+            "tasks": [Task(name="t", interval="T#100ms", programs=["Check"])],
+            "configuration": None,
+        }
+    )
+    result = lower_project(program)
+    assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
+    sim = Simulation(result.program)
+    counts = []
+    for scan in range(30):
+        sim.write("Check.Reset", scan in (10, 11, 25))
+        sim.cycle(1)
+        counts.append(sim.read("Check.sfc.OUT"))
+    expected = [*range(0, 12), 17, 17, *range(18, 30), 30, *range(31, 34)]
+    assert counts == expected
 
 
 def test_openplc_blink_in_ld_behaves_like_its_st_twin(fixtures):

@@ -601,8 +601,8 @@ def test_types_globals_and_tasks_fill_the_project():
     assert [(d.code, d.severity, d.message) for d in result.diagnostics] == []
 
 
-def test_sfc_pous_actions_and_foreign_add_data_are_reported_not_dropped_silently_il_bodies_imported():
-    """SFC stands in with a body that does nothing; IL is imported as IL (issue 26), its text kept as written."""
+def test_sfc_and_il_pous_import_actions_outside_sfc_and_foreign_add_data_are_reported_not_dropped_silently():
+    """SFC imports as a chart (issue 24), IL as IL text kept as written (issue 26)."""
     pous = (
         pou_xml(
             "Seq",
@@ -618,14 +618,12 @@ def test_sfc_pous_actions_and_foreign_add_data_are_reported_not_dropped_silently
     )
     result = imported(project_xml(pous))
     assert [(d.code, d.pou, d.message) for d in result.diagnostics] == [
+        ("PLCOPEN-SFC", "Seq", "step Run is reached from no initial step: it was left out"),
         (
             "PLCOPEN-UNSUPPORTED",
-            "Seq",
-            "POU Seq is written in SFC, which LadderLab does not support; it was imported "
-            "with its interface and a body that does nothing (the names of its steps are "
-            "kept as comments), so its callers build and run",
+            "Main",
+            "action 'Blink' of POU Main was not imported: only SFC POUs have actions in LadderLab",
         ),
-        ("PLCOPEN-UNSUPPORTED", "Main", "action 'Blink' of POU Main was not imported: LadderLab has no actions"),
         (
             "PLCOPEN-ADDDATA",
             None,
@@ -638,16 +636,13 @@ def test_sfc_pous_actions_and_foreign_add_data_are_reported_not_dropped_silently
     assert (seq.name, seq.kind, seq.language, asm.name, asm.language, main.name) == (
         "Seq",
         "function_block",
-        "st",
+        "sfc",
         "Asm",
         "il",
         "Main",
     )
+    assert [e.name for e in seq.body.chart.elements] == ["Init"]
     assert asm.body == "LD TRUE\n(* keep *)\nST x"
-    assert seq.body == (
-        "// Imported from SFC, which LadderLab cannot run: this body does nothing. The original SFC:\n"
-        "// step Init (initial)\n// step Run"
-    )
 
 
 def test_an_il_function_block_is_imported_as_il_and_runs_for_its_st_caller():

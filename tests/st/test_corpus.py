@@ -16,10 +16,6 @@ from ladderlab.st.printer import print_source
 from tests.support import PASS_RATES, external
 
 IRONPLC_UNSUPPORTED = {
-    "first_steps.st": "SFC (INITIAL_STEP / TRANSITION), a later phase",
-    "first_steps_function_block_counter_sfc.st": "SFC",
-    "first_steps_semantic_error.st": "SFC (the file is the first_steps project)",
-    "sfc.st": "SFC",
     "program.st": "VAR_ACCESS inside a PROGRAM (a configuration's VAR_ACCESS is supported, CFG-08)",
     "reference_to.st": "REFERENCE TO (a CODESYS dialect; REF_TO and POINTER TO are supported)",
     "oscat.st": "CODESYS export header with text outside any comment",

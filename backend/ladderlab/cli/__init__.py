@@ -178,6 +178,11 @@ def _parser() -> argparse.ArgumentParser:
     export.add_argument("project", type=Path, help="project folder, project .json file or .st / .il file")
     add_encoding_option(export)
     export.add_argument("--pou", default=None, help="st: only this POU (default: the whole project)")
+    export.add_argument(
+        "--sfc-text",
+        action="store_true",
+        help="st: SFC POUs as IEC textual SFC (INITIAL_STEP, TRANSITION ...) instead of the ST of their scan",
+    )
     export.add_argument("-o", "--output", type=Path, default=None, help="file to write (default: standard output)")
     export.add_argument(
         "--with-plants",
@@ -308,7 +313,7 @@ def _export(args: argparse.Namespace) -> int:
                 print(diagnostic.format(), file=sys.stderr)
             return EXIT_ERRORS
     else:
-        text = _st_export(project, args.pou)
+        text = _st_export(project, args.pou, args.sfc_text)
         if text is None:
             return EXIT_ERRORS
         data = text
@@ -319,11 +324,15 @@ def _export(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
-def _st_export(project: Project, pou: str | None) -> bytes | None:
+def _st_export(project: Project, pou: str | None, sfc_text: bool = False) -> bytes | None:
     from ..interchange.st.export import export_pou_st
     from ..interchange.st.project import export_project_st
 
-    result = export_pou_st(project, pou) if pou is not None else export_project_st(project)
+    result = (
+        export_pou_st(project, pou, sfc_text=sfc_text)
+        if pou is not None
+        else export_project_st(project, sfc_text=sfc_text)
+    )
     for diagnostic in result.diagnostics:
         print(diagnostic.format(), file=sys.stderr)
     return None if has_errors(result.diagnostics) else result.text.encode("utf-8")

@@ -218,6 +218,7 @@ class Simulation:
             self.scan_count += 1  # the abandoned scan keeps its number: the next scan has the next one
         self._scan, self.halted = None, None
         if self.debugger is not None:
+            self.debugger.waiting_for_transition = False
             self.debugger.arm(None)
         self.faults.clear()
         for task in self._tasks:
@@ -327,6 +328,7 @@ class Simulation:
         self.halted = Halt(
             point, self._instance_path(instance) if instance is not None else None, self.debugger.reason(pid)
         )
+        self.debugger.halted_at(pid)  # type: ignore[union-attr]  # the debug variant is in use on this path
         self.debugger.arm(None)  # type: ignore[union-attr]  # the debug variant is in use on this path
         return False
 
@@ -437,11 +439,14 @@ class Simulation:
         return self._continue(None)
 
     def step(self, granularity: str = "statement") -> Halt | None:
-        """Run to the next pause point of this granularity: statement (into calls) | over | out | network | cycle.
+        """Run to the next pause point of this granularity: statement (into calls) | over | out | network |
+        transition | cycle.
 
         Halted: continue the current scan (``over`` passes over the calls the halted POU makes,
         ``out`` runs until its caller goes on; a breakpoint on the way halts first). Not halted:
-        start the next scan and stop at its first such point. Returns the new halt (None: the scan ended)."""
+        start the next scan and stop at its first such point. Returns the new halt (None: the scan ended).
+        ``transition`` stays armed in the scans that follow until an SFC transition fires
+        (``debugger.waiting_for_transition``): run scans to get there."""
         debugger = self._debugging()
         debugger.arm(granularity)
         if self.halted is None:
@@ -473,15 +478,28 @@ class Simulation:
         return self.halted
 
     def set_breakpoint(
-        self, pou: str, *, line: int | None = None, network: str | None = None, element: str | None = None
+        self,
+        pou: str,
+        *,
+        line: int | None = None,
+        network: str | None = None,
+        element: str | None = None,
+        body: str | None = None,
     ) -> list[int]:
-        """Halt before an ST statement (line), an LD/FBD network, or at an element; returns the pause point ids."""
-        return self._debugging().add_breakpoint(pou, line=line, network=network, element=element)
+        """Halt before an ST statement (line), an LD/FBD network, or at an element (an SFC step, transition...);
+        ``body`` names the action or named transition of an SFC POU they are in. Returns the pause point ids."""
+        return self._debugging().add_breakpoint(pou, line=line, network=network, element=element, body=body)
 
     def clear_breakpoint(
-        self, pou: str, *, line: int | None = None, network: str | None = None, element: str | None = None
+        self,
+        pou: str,
+        *,
+        line: int | None = None,
+        network: str | None = None,
+        element: str | None = None,
+        body: str | None = None,
     ) -> None:
-        self._debugging().remove_breakpoint(pou, line=line, network=network, element=element)
+        self._debugging().remove_breakpoint(pou, line=line, network=network, element=element, body=body)
 
     def clear_breakpoints(self) -> None:
         self._debugging().clear_breakpoints()

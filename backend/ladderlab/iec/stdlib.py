@@ -349,6 +349,34 @@ def _function_blocks() -> list[StdFunctionBlock]:
         timer("TP", "pulse timer: Q TRUE for PT after a rising edge of IN"),
         timer("TON", "on-delay timer: Q TRUE once IN has been TRUE for PT"),
         timer("TOF", "off-delay timer: Q stays TRUE for PT after IN falls"),
+        *_sfc_blocks(),
+    ]
+
+
+#: The inputs of ACTION_CONTROL, one per action qualifier (IEC 61131-3 ed. 2, figure 15: S0 is S), in its order.
+ACTION_CONTROL_QUALIFIERS = ("N", "R", "S0", "L", "D", "P", "P1", "P0", "SD", "DS", "SL")
+
+
+def _sfc_blocks() -> list[StdFunctionBlock]:
+    """The blocks an SFC is lowered to (docs/sfc.md): IEC's action control, and the step's flag and time."""
+    b = "BOOL"
+    return [
+        StdFunctionBlock(
+            "ACTION_CONTROL",
+            (*(Pin(q, b) for q in ACTION_CONTROL_QUALIFIERS), Pin("T", "TIME")),
+            (Pin("Q", b), Pin("A", b)),
+            "SFC action control: Q the action flag, A runs the action (Q and the final run)",
+            "SFC-05",
+            group="SFC",
+        ),
+        StdFunctionBlock(
+            "SFC_STEP",
+            (Pin("X", b),),
+            (Pin("T", "TIME"),),
+            "SFC step: X active, T the time since its first active scan",
+            "SFC-06",
+            group="SFC",
+        ),
     ]
 
 

@@ -69,6 +69,9 @@ class PouContext:
         self.lifts: list[Stmt] | None = None
         self.reads = 0
         self.calls = 0
+        # The text being lowered when it is not the POU's body: an SFC POU's chart or one of its actions or named
+        # transitions (``<POU>/chart``, ``<POU>/actions/<name>``): where diagnostics without a file of their own go.
+        self.default_file: str | None = None
         # A front end's own statements, lowered before the ST ones (test files' verbs: ir/lower_tests.py)
         self.extra_statements: dict[type, Any] = {}
 
@@ -93,6 +96,8 @@ class PouContext:
         A diagnostic already in the list is not added again (a bad TYPE initial value
         is met wherever the type is used).
         """
+        if file is None:
+            file = self.default_file
         diagnostic = Diagnostic(
             severity=severity,
             code=code,
@@ -131,7 +136,7 @@ class PouContext:
         """Report at an ST AST node's span (``file`` defaults to this POU's body text)."""
         span = getattr(node, "span", None) or ast.NO_SPAN
         if file is None and self.info is not None:
-            file = f"{self.info.name}/body"
+            file = self.default_file or f"{self.info.name}/body"
         self.report(
             code,
             message,
@@ -174,8 +179,9 @@ class PouContext:
         return self._errors_found
 
     def checker_error_in(self, span: ast.Span) -> bool:
-        """Did the checker report an error on the lines of ``span`` in this POU's ST body?"""
-        file = f"{self.info.name}/body" if self.info is not None else None
+        """Did the checker report an error on the lines of ``span`` in this POU's ST body (or the SFC action being
+        lowered)?"""
+        file = (self.default_file or f"{self.info.name}/body") if self.info is not None else None
         return any(
             d.severity == "error" and d.file == file and d.line is not None and span.line <= d.line <= span.end_line
             for d in self.checked.diagnostics

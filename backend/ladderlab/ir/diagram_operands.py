@@ -42,7 +42,7 @@ class At(NamedTuple):
     """Where a diagnostic of a diagram goes: network, element and pin. (A tuple: made for every operand and
     pin of a large diagram, it must be cheap.)"""
 
-    network: str
+    network: str | None
     element: str | None = None
     pin: str | None = None
 

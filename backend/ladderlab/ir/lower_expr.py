@@ -217,6 +217,18 @@ def _literal(node: ast.Expr, ctx: PouContext) -> Const:
 # ---------------------------------------------------------------- variables
 
 
+def _program_instance(node: ast.Expr, program: PouInfo, ctx: PouContext) -> Var:
+    """``Prog.x`` read from another POU: the instance named after the program (the engine keeps program instances
+    among the globals); a configuration that names its instances otherwise is read through those names."""
+    configuration = ctx.checked.configuration
+    name = program.name.upper()
+    if configuration is not None and name not in configuration.instances:
+        names = [i.name for i in configuration.instances.values() if i.pou is program]
+        where = f"its instance{'s' if len(names) > 1 else ''} {', '.join(names)}" if names else "no instance"
+        raise LoweringError(f"the program {program.name} runs as {where}: read the members through an instance", node)
+    return Var("global", name, FbInstance(name))
+
+
 def lower_access(node: ast.Expr, ctx: PouContext) -> Var:
     """A variable access path: a declared variable, then ``[i]`` and ``.field`` / ``.PIN`` selectors."""
     if isinstance(node, (ast.Name, ast.DirectAddr)):
@@ -224,6 +236,8 @@ def lower_access(node: ast.Expr, ctx: PouContext) -> Var:
         if isinstance(ref, Symbol):
             ctx.reads += 1
             return ctx.var_for(ref)
+        if isinstance(ref, PouInfo) and ref.kind == "PROGRAM":  # another program's outputs or SFC steps (ST-60)
+            return _program_instance(node, ref, ctx)
         if isinstance(ref, PouInfo):
             return ctx.result_var()
         if isinstance(node, ast.DirectAddr):  # used without a declaration: its size's default type (ST-13)

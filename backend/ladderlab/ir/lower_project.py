@@ -32,6 +32,7 @@ from .lower_configuration import lower_configuration
 from .lower_fbd import lower_fbd_body
 from .lower_il import lower_il_body
 from .lower_ld import lower_ld_body
+from .lower_sfc import lower_sfc_body
 from .lower_st import lower_st_body
 from .lower_types import LoweringError
 from .nodes import Assign, Binary, Block, Origin, Pou, Program, Slot, Stmt, Unary, Var
@@ -42,6 +43,7 @@ LOWER_BODY: dict[str, Callable[[ModelPou, PouContext], list[Block]]] = {
     "st": lower_st_body,
     "ld": lower_ld_body,
     "fbd": lower_fbd_body,
+    "sfc": lower_sfc_body,
     "il": lower_il_body,
 }
 

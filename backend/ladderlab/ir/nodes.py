@@ -21,7 +21,8 @@ from .types import IrType
 
 @dataclass(frozen=True)
 class Origin:
-    """Where a node came from: an ST span, or a network and element of a diagram."""
+    """Where a node came from: an ST span, or a network and element of a diagram. ``body`` names the part of an SFC
+    POU the span or network lies in (an action or a named transition); None: the POU's own body, or its chart."""
 
     pou: str
     line: int | None = None
@@ -30,6 +31,7 @@ class Origin:
     end_column: int | None = None
     network: str | None = None
     element: str | None = None
+    body: str | None = None
 
 
 def diagram_origin(pou: str, network: str, element: str | None = None) -> Origin:
@@ -38,7 +40,7 @@ def diagram_origin(pou: str, network: str, element: str | None = None) -> Origin
     (tests/ir/test_nodes.py checks it equals the constructor's object.)"""
     origin = object.__new__(Origin)
     origin.__dict__.update(
-        pou=pou, line=None, column=None, end_line=None, end_column=None, network=network, element=element
+        pou=pou, line=None, column=None, end_line=None, end_column=None, network=network, element=element, body=None
     )
     return origin
 
@@ -78,8 +80,9 @@ class Var:
 
     ``scope`` says where the root lives: ``local`` in the POU instance (any declared
     class, VAR_IN_OUT included: the engine resolves the reference), ``global`` in the
-    resource's globals (VAR_EXTERNAL names lower to global accesses). ``type`` is the
-    type of the whole path.
+    resource's globals (VAR_EXTERNAL names lower to global accesses), ``program``: the
+    root is the instance of the PROGRAM ``name`` (its type ``FbInstance(name)``), read
+    from another POU (``sfc1.step1.X``, ST-60). ``type`` is the type of the whole path.
     """
 
     scope: Scope
@@ -240,11 +243,15 @@ class Jump:
 
 @dataclass
 class Probe:
-    """Record ``value`` as element ``element``'s power flow / pin value in this scan (monitoring only)."""
+    """Record ``value`` as element ``element``'s power flow / pin value in this scan (monitoring only).
+
+    ``kind`` is the kind of its pause point in the debug variant: ``element``, or ``transition`` for an SFC
+    transition that fires (what "step to the next transition" halts at)."""
 
     element: str
     value: Expr
     origin: Origin
+    kind: Literal["element", "transition"] = "element"
 
 
 @dataclass
@@ -295,7 +302,7 @@ class Pou:
     slots: list[Slot]
     blocks: list[Block]
     return_type: IrType | None = None
-    language: Literal["st", "ld", "fbd", "il"] = "st"
+    language: Literal["st", "ld", "fbd", "il", "sfc"] = "st"
     plant: bool = False  # a program that models the process: run by the plant task, never called
     #: False: FB calls in the body see the time the POU was called with (a scan's clock, frozen in the scan).
     #: True: each FB call reads the engine's clock as it is then - a test's body, whose ADVANCE_TIME and

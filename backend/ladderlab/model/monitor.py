@@ -90,6 +90,11 @@ class _Where(_Request):
     network: str | None = None
     element: str | None = None
     line: int | None = None
+    body: str | None = Field(
+        default=None,
+        description="In an SFC POU: the action or named transition the network or line is in "
+        "(actions/<name>, transitions/<name>); null for the POU's body or chart.",
+    )
 
 
 class BreakpointSet(_Where):
@@ -112,6 +117,7 @@ class BreakpointClear(_Request):
     network: str | None = None
     element: str | None = None
     line: int | None = None
+    body: str | None = None
 
     @model_validator(mode="after")
     def _all_or_one(self) -> BreakpointClear:
@@ -130,14 +136,15 @@ class Continue(_Request):
 
 
 class Step(_Request):
-    """Run to the next network (LD/FBD), statement (ST; networks in diagrams) or the end of the scan.
+    """Run to the next network (LD/FBD), statement (ST; networks in diagrams), SFC transition that fires (over as
+    many scans as it takes) or the end of the scan.
 
     ``statement`` steps into calls; ``over`` goes to the next statement or network of the halted POU
     (or of its caller once it returns), passing over the calls it makes; ``out`` runs until the caller
     of the halted POU goes on. A breakpoint on the way halts first."""
 
     type: Literal["step"]
-    granularity: Literal["network", "statement", "over", "out", "cycle"] = "statement"
+    granularity: Literal["network", "statement", "over", "out", "transition", "cycle"] = "statement"
 
 
 class Run(_Request):
@@ -288,6 +295,7 @@ class At(BaseModel):
     element: str | None = None
     line: int | None = None
     column: int | None = None
+    body: str | None = Field(default=None, description="In an SFC POU: actions/<name> or transitions/<name>.")
 
 
 class DisplayType(BaseModel):

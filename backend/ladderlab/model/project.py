@@ -9,6 +9,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validat
 from .fbd import FbdBody
 from .hmi import Panel
 from .ld import LdBody
+from .sfc import SfcBody
 
 ProjectFormat = Literal["ladderlab/1"]
 PROJECT_FORMAT: ProjectFormat = "ladderlab/1"
@@ -16,12 +17,12 @@ PROJECT_FORMAT: ProjectFormat = "ladderlab/1"
 #: ``plant``: a program that models the process (reads the control program's outputs, writes its inputs); it
 #: runs in the plant task before the control tasks of every scan and cannot be called from control code.
 PouKind = Literal["program", "function_block", "function", "plant"]
-Language = Literal["st", "ld", "fbd", "il"]
+Language = Literal["st", "ld", "fbd", "il", "sfc"]
 
 #: Languages whose body is text (ST statements, IL instructions).
 TEXT_LANGUAGES = frozenset({"st", "il"})
 #: The body model of each graphical language (an ST POU's body is its text).
-DIAGRAM_BODY: dict[str, type[LdBody] | type[FbdBody]] = {"ld": LdBody, "fbd": FbdBody}
+DIAGRAM_BODY: dict[str, type[LdBody] | type[FbdBody] | type[SfcBody]] = {"ld": LdBody, "fbd": FbdBody, "sfc": SfcBody}
 
 
 def _strip_trailing_whitespace(value: Any) -> Any:
@@ -30,7 +31,8 @@ def _strip_trailing_whitespace(value: Any) -> Any:
 
 
 class Pou(BaseModel):
-    """A program organisation unit. ``body`` is ST or IL text, an ``LdBody`` or an ``FbdBody`` per ``language``."""
+    """A program organisation unit. ``body`` is ST or IL text, an ``LdBody``, an ``FbdBody`` or an ``SfcBody`` per
+    ``language``."""
 
     model_config = ConfigDict(extra="forbid")
 
@@ -39,7 +41,7 @@ class Pou(BaseModel):
     language: Language
     return_type: str | None = Field(default=None, description="Functions only: the result type.")
     declarations: str = Field(default="", description="ST text of the VAR...END_VAR blocks, as typed.")
-    body: str | LdBody | FbdBody = ""
+    body: str | LdBody | FbdBody | SfcBody = ""
 
     _normalise_texts = field_validator("declarations", "body", mode="before")(_strip_trailing_whitespace)
 
@@ -58,12 +60,13 @@ class Pou(BaseModel):
         if isinstance(value, expected):
             return value
         if not isinstance(value, dict):
-            raise ValueError(f"an {language.upper()} POU's body must be an object with 'networks'")
+            shape = "'chart'" if language == "sfc" else "'networks'"
+            raise ValueError(f"an {language.upper()} POU's body must be an object with {shape}")
         return expected.model_validate(value)
 
     @model_validator(mode="after")
     def _empty_graphical_body(self) -> Pou:
-        """A new LD/FBD POU created without a body starts with no networks."""
+        """A new LD/FBD POU created without a body starts with no networks (an SFC POU with an empty chart)."""
         if self.language not in TEXT_LANGUAGES and isinstance(self.body, str):
             self.body = DIAGRAM_BODY[self.language]()
         return self

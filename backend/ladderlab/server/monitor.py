@@ -358,7 +358,9 @@ class MonitorClient:
 
 
 def _where(request: m.BreakpointSet | m.BreakpointClear) -> dict[str, object]:
-    return {key: value for key in ("network", "element", "line") if (value := getattr(request, key)) is not None}
+    return {
+        key: value for key in ("network", "element", "line", "body") if (value := getattr(request, key)) is not None
+    }
 
 
 def describe_invalid(data: object, error: ValidationError) -> str:

@@ -107,6 +107,7 @@ def at_halt(halt: Halt) -> At:
         element=halt.point.element or origin.element,
         line=origin.line,
         column=origin.column,
+        body=origin.body,
     )
 
 
@@ -120,6 +121,7 @@ def at_origin(origin: ir.Origin | None, pou: str | None, instance: str | None) -
         element=origin.element,
         line=origin.line,
         column=origin.column,
+        body=origin.body,
     )
 
 
@@ -172,6 +174,8 @@ class SimRunner:
         self._cv = threading.Condition()
         self._commands: deque[tuple[str, dict[str, Any], Reply]] = deque()
         self._running = False
+        self._to_transition = False  # a "transition" step runs scans until an SFC transition fires
+        self._run_after_transition = False  # it was asked for from a halt of a running simulation: keep running
         self._faulted = False
         self._seen_faults = 0
         self._seen_scans = sim.scan_count
@@ -288,6 +292,11 @@ class SimRunner:
             self._seen_faults = len(sim.faults)
             self._faulted = True
             self._set_running(False)
+        if self._to_transition and (sim.halted is not None or not self._running):
+            self._to_transition = False  # reached (or stopped): no further scans after this halt
+            self._set_running(self._run_after_transition and sim.halted is not None)
+            if sim.halted is None and sim.debugger is not None:
+                sim.debugger.waiting_for_transition = False  # stopped before a transition fired
         state = self._state()
         status = (state, at_halt(sim.halted) if sim.halted is not None else None)
         changed = status != self._status
@@ -308,7 +317,8 @@ class SimRunner:
         sim = self.sim
         if sim.variant not in ("monitor", "debug"):
             return
-        debugging = sim.halted is not None or (sim.debugger is not None and bool(sim.debugger.breakpoints))
+        waiting = sim.debugger is not None and (bool(sim.debugger.breakpoints) or sim.debugger.waiting_for_transition)
+        debugging = sim.halted is not None or waiting
         if debugging != (sim.variant == "debug"):
             sim.use_variant("debug" if debugging else "monitor")
 
@@ -470,11 +480,23 @@ class SimRunner:
         self.sim.resume()
 
     def step(self, granularity: str = "statement") -> None:
-        """Halted: continue to the next pause point of this granularity. Else halt in the next scan."""
+        """Halted: continue to the next pause point of this granularity. Else halt in the next scan.
+
+        ``transition``: when no SFC transition fires in that scan, scans run on (paced) until one does; the
+        simulation then halts there, and Continue goes back to what it was doing: stopped, or running when the step
+        was asked for at a halt of a running simulation (as after any other step)."""
         if self._faulted and self.sim.halted is None:
             raise CommandError("bad_state", "the simulation stopped on a fault: reset it first")
+        if granularity == "transition" and self._running and self.sim.halted is None:
+            raise CommandError("bad_state", "the simulation is running: stop it before stepping to a transition")
         self._needs_debug()
+        running = self._running
         self.sim.step(granularity)
+        if granularity == "transition" and self.sim.halted is None and not self._faulted:
+            self._run_after_transition = running
+            self._log("state", "info", "running until an SFC transition fires")
+            self._to_transition = True
+            self._set_running(True)
 
     def set_breakpoint(self, pou: str, **where: Any) -> None:
         self._debug("set_breakpoint", pou, **where)
@@ -781,6 +803,8 @@ def _where(at: At | None) -> str:
     if at is None:
         return "an unknown place"
     parts = [at.pou]
+    if at.body is not None:
+        parts.append(at.body.replace("s/", " ", 1))
     if at.network is not None:
         parts.append(f"network {at.network}")
     if at.element is not None:

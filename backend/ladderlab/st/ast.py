@@ -438,6 +438,51 @@ class TypeBlock:
 
 
 @dataclass(slots=True)
+class SfcAssociation:
+    """``action(qualifier, time, indicator...)`` in a textual step: ``args`` as written after the qualifier."""
+
+    action: str
+    qualifier: str | None
+    args: list[Expr]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class SfcStep:
+    name: str
+    initial: bool
+    associations: list[SfcAssociation]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class SfcTransition:
+    """``TRANSITION [name] [(PRIORITY := n)] FROM steps TO steps := condition; END_TRANSITION``."""
+
+    name: str | None
+    priority: int | None
+    sources: list[str]
+    targets: list[str]
+    condition: Expr
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class SfcAction:
+    name: str
+    body: list[Stmt]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class Sfc:
+    """A textual SFC body (IEC 61131-3 B.1.6): steps, transitions and actions in the order written."""
+
+    items: list[SfcStep | SfcTransition | SfcAction]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
 class Pou:
     kind: str  # PROGRAM, FUNCTION_BLOCK, FUNCTION
     name: str
@@ -445,6 +490,7 @@ class Pou:
     var_blocks: list[VarBlock]
     body: list[Stmt]
     span: Span = _span()
+    sfc: Sfc | None = None  # a body written in textual SFC (``body`` is then empty)
 
 
 @dataclass(slots=True)

@@ -138,6 +138,10 @@ class BodyChecker:
         if self.pou is not None and self.pou.kind == "FUNCTION" and node.name.upper() == self.pou.name.upper():
             node.ref = self.pou
             return self.pou.return_type or ERROR
+        program = self.result.pous.get(node.name.upper())
+        if program is not None and program.kind == "PROGRAM":  # its outputs and SFC steps are read (ST-60, SFC-06)
+            node.ref = program
+            return t.FbType(program.name, pou=program)
         values = self.enum_values(node.name)
         if isinstance(expected, t.EnumType):
             values = [v for v in values if v.type is expected] or values
@@ -240,7 +244,7 @@ class BodyChecker:
                 "only, so it cannot be read or written from outside (pass the variable in the call)",
                 node,
             )
-        elif symbol.var_class not in ("VAR_INPUT", "VAR_OUTPUT"):
+        elif symbol.var_class not in ("VAR_INPUT", "VAR_OUTPUT") and not _sfc_state(symbol):
             self.report(
                 "ST-NOT-ACCESSIBLE",
                 f"'{node.name}' is internal to {base.name}: only its inputs and outputs can be used from outside",
@@ -386,6 +390,11 @@ class BodyChecker:
         elif isinstance(stmt, ast.CallStmt):
             if isinstance(stmt.call, ast.Call):
                 self.call(stmt.call, statement=True)
+                ref = stmt.call.ref
+                if isinstance(ref, Symbol) and ref.implicit is not None:
+                    self.report(
+                        "ST-NOT-CALLABLE", f"'{ref.name}' is a {ref.implicit} of the SFC: the chart runs it", stmt
+                    )
                 self.settle(stmt.call, None)
             else:
                 self.expr(stmt.call)
@@ -438,6 +447,20 @@ class BodyChecker:
         if root is not None and root.ref is self.pou and self.pou is not None:  # F := ..., F[2] := ..., F.a := ...
             self.result_assigned = True
         symbol = root.ref if root is not None else None
+        if root is not None and isinstance(root.ref, PouInfo) and root.ref.kind == "PROGRAM" and node is not root:
+            self.report(
+                "ST-NOT-LVALUE",
+                f"the variables of the program {root.ref.name} can be read from other POUs, not assigned",
+                node,
+            )
+        read_only = _implicit_in(node)
+        if read_only is not None:
+            self.report(
+                "ST-READONLY",
+                f"'{read_only.name}' is a{'n' if read_only.implicit == 'action' else ''} {read_only.implicit} of the "
+                "SFC: the chart sets it, a program can only read it",
+                node,
+            )
         if isinstance(symbol, Symbol):
             if symbol.constant:
                 self.report("ST-CONST-WRITE", f"'{symbol.name}' is a CONSTANT and cannot be assigned", node)
@@ -499,6 +522,30 @@ _EXPRESSION_CHECKS: dict[type, Callable[[BodyChecker, Any, Type | None], Type]] 
     ast.Unary: lambda checker, node, expected: checker._unary(node),
     ast.Binary: lambda checker, node, expected: checker._binary(node),
 }
+
+
+#: Implicit SFC variables other POUs may read (``sfc1.step1.X``); named transitions stay internal.
+SFC_PUBLIC = ("step", "action")
+
+
+def _sfc_state(symbol: Symbol) -> bool:
+    """A step or action of an SFC, implicit or (in its ST export) declared as an SFC_STEP / ACTION_CONTROL: other
+    POUs may read it."""
+    if symbol.implicit in SFC_PUBLIC:
+        return True
+    ty = symbol.type
+    return isinstance(ty, t.FbType) and ty.std is not None and ty.std.name in ("SFC_STEP", "ACTION_CONTROL")
+
+
+def _implicit_in(node: ast.Expr) -> Symbol | None:
+    """The implicit SFC variable (step, action) an assignment target writes into, if any: the root or a member."""
+    while isinstance(node, (ast.Member, ast.Index, ast.Deref)):
+        ref = getattr(node, "ref", None)
+        if isinstance(ref, Symbol) and ref.implicit in SFC_PUBLIC:
+            return ref
+        node = node.base
+    ref = getattr(node, "ref", None)
+    return ref if isinstance(ref, Symbol) and ref.implicit in SFC_PUBLIC else None
 
 
 def _is_output(node: ast.Member) -> bool:

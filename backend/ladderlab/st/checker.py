@@ -32,6 +32,7 @@ from .parser import (
     reserved_words,
 )
 from .rules import assignable_or_report, check_init, constant_value
+from .sfc import check_actions, declare_implicit, parse_actions
 from .symbols import CheckResult, PouInfo, Symbol, TypeDef
 from .types import ERROR, Type
 
@@ -83,13 +84,17 @@ class ProjectChecker:
             for text, file in [(self.project.globals, "globals"), *configuration_globals(self.project)]
             for block in self._parse(parse_declarations, text, file, None) or []
         ]
-        declarations, bodies = {}, {}
+        declarations, bodies, actions = {}, {}, {}
         for pou in self.project.pous:
             declarations[pou.name] = (
                 self._parse(parse_declarations, pou.declarations, f"{pou.name}/declarations", pou.name) or []
             )
             if pou.language == "st":
                 bodies[pou.name] = self._parse(parse_statements, pou.body, f"{pou.name}/body", pou.name)
+            elif pou.language == "sfc":
+                actions[pou.name] = parse_actions(pou)
+                for parsed in actions[pou.name].values():
+                    self.result.diagnostics += parsed.diagnostics
             elif pou.language == "il":
                 parsed = parse_il(pou.body, file=f"{pou.name}/body", pou=pou.name)
                 self.result.diagnostics += parsed.diagnostics
@@ -102,11 +107,22 @@ class ProjectChecker:
         for pou in self.project.pous:
             self._declare_pou(pou, declarations[pou.name])
         for pou in self.project.pous:
+            info = self.result.pous.get(pou.name.upper())
+            if pou.language == "sfc" and info is not None and info.name == pou.name:
+                declare_implicit(pou, info, self.result.diagnostics)
+        for pou in self.project.pous:
             self._check_initial_values(pou)
         for pou in self.project.pous:
             info = self.result.pous.get(pou.name.upper())
             if info is not None and info.language in ("st", "il") and bodies.get(pou.name) is not None:
                 self._check_body(info, bodies[pou.name])
+            if info is not None and info.name == pou.name and pou.name in actions:
+                check_actions(
+                    lambda file, info=info: BodyChecker(self.result, info, self._reporter(file, info.name)),
+                    pou,
+                    info,
+                    actions[pou.name],
+                )
         self._check_recursion()
         self.result.configuration = check_configuration(self.result, self.project, self.resolve, self._reporter_for)
         return self.result

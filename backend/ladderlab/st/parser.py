@@ -69,6 +69,12 @@ _SOFT_KEYWORDS = {
     "XOR",
     "NOT",
     "MOD",
+    # textual SFC's words inside an SFC body (OSCAT names variables step); INITIAL_STEP and END_* stay reserved
+    "STEP",
+    "TRANSITION",
+    "FROM",
+    "PRIORITY",
+    "ACTION",
 }
 # Keywords of test files only (start_tests): names like ``test`` or ``setup`` stay free in programs.
 TEST_KEYWORDS = frozenset(

@@ -13,6 +13,7 @@ from . import ast
 from .il_parser import blank_il_bodies
 from .parser import parse_source
 from .printer import print_expression
+from .sfc_text import sfc_from_text
 
 _KIND = {"PROGRAM": "program", "FUNCTION_BLOCK": "function_block", "FUNCTION": "function"}
 
@@ -60,6 +61,10 @@ def source_to_project(
             types.append(source.of(item))
         elif isinstance(item, ast.VarBlock):
             globals_.append(source.of(item))
+        elif isinstance(item, ast.Pou) and item.sfc is not None:
+            made, problems = _sfc_pou(item, source)
+            pous.append(made)
+            diagnostics += problems
         elif isinstance(item, ast.Pou):
             pous.append(_pou(item, source, "il" if item.name.upper() in il_pous else "st"))
         else:
@@ -99,6 +104,17 @@ def _pou(pou: ast.Pou, source: _Text, language: str) -> Pou:
         declarations=declarations,
         body=_keep_lines(body, body_start),
     )
+
+
+def _sfc_pou(pou: ast.Pou, source: _Text) -> tuple[Pou, list[Diagnostic]]:
+    """A POU written in textual SFC: its declarations as typed, the chart drawn from its steps and transitions."""
+    declarations = ""
+    if pou.var_blocks:
+        first, last = pou.var_blocks[0].span, pou.var_blocks[-1].span
+        declarations = source.between((first.line, first.column), (last.end_line, last.end_column))
+    body, problems = sfc_from_text(pou, source.between)
+    kind = _KIND[pou.kind]
+    return Pou(name=pou.name, kind=kind, language="sfc", declarations=declarations, body=body), problems
 
 
 def _keep_lines(body: str, start: tuple[int, int]) -> str:

@@ -28,6 +28,7 @@ class Symbol:
     comment: str | None = None
     span: ast.Span = ast.NO_SPAN
     pou: str | None = None  # owning POU, None for globals
+    implicit: str | None = None  # an SFC POU's step, action or named transition (st/sfc.py), None if declared
 
 
 @dataclass(eq=False)
@@ -59,6 +60,7 @@ class PouInfo:
     body: list[ast.Stmt] | None = None
     calls: set[str] = field(default_factory=set)
     plant: bool = False  # a PROGRAM that models the process: run by the plant task, never called
+    actions: dict[str, list[ast.Stmt] | None] = field(default_factory=dict)
     accumulators: list[Symbol] = field(default_factory=list)  # IL POUs: the hidden current-result variables
 
     def parameters(self, *classes: str) -> list[Symbol]:

@@ -145,8 +145,34 @@ class AstBuilder(Transformer):
         return_type = c[2] if kind == "FUNCTION" else None
         rest = c[3:-1] if kind == "FUNCTION" else c[2:-1]
         blocks = [x for x in rest if isinstance(x, ast.VarBlock)]
-        body = [x for x in rest if not isinstance(x, ast.VarBlock)]
-        return ast.Pou(kind, str(c[1]), return_type, blocks, body, span_of(c))
+        sfc = next((x for x in rest if isinstance(x, ast.Sfc)), None)
+        body = [x for x in rest if not isinstance(x, (ast.VarBlock, ast.Sfc))]
+        return ast.Pou(kind, str(c[1]), return_type, blocks, body, span_of(c), sfc)
+
+    def sfc(self, c):
+        return ast.Sfc(list(c), span_of(c))
+
+    def sfc_step(self, c):
+        associations = [x for x in c[2:] if isinstance(x, ast.SfcAssociation)]
+        return ast.SfcStep(str(c[1]), c[0].type == "INITIAL_STEP", associations, span_of(c))
+
+    sfc_initial_step = sfc_step
+
+    def sfc_association(self, c):
+        qualifier = str(c[1]) if len(c) > 1 and c[1] is not None else None
+        return ast.SfcAssociation(str(c[0]), qualifier, [x for x in c[2:] if x is not None], span_of(c))
+
+    def sfc_transition(self, c):
+        name = next((str(x) for x in c[1:2] if isinstance(x, Token) and x.type == "IDENT"), None)
+        priority = next((int(str(x)) for x in c if isinstance(x, Token) and x.type == "INTEGER"), None)
+        steps = [x for x in c if isinstance(x, list)]
+        return ast.SfcTransition(name, priority, steps[0], steps[1], c[-2], span_of(c))
+
+    def sfc_steps(self, c):
+        return [str(x) for x in c]
+
+    def sfc_action(self, c):
+        return ast.SfcAction(str(c[1]), [x for x in c[2:-1] if x is not None], span_of(c))
 
     def type_block(self, c):
         return ast.TypeBlock(c[1:-1], span_of(c))

@@ -8,7 +8,7 @@ Layout::
     pous/<name>.st      ST POUs as complete IEC text (PROGRAM ... END_PROGRAM)
     pous/<name>.plant.st ST plants (a PROGRAM in IEC text; the file name makes it a plant)
     pous/<name>.il      IL POUs as complete IEC text, the body in IL (docs/il.md)
-    pous/<name>.ld.json / pous/<name>.fbd.json   graphical POUs
+    pous/<name>.ld.json / pous/<name>.fbd.json / pous/<name>.sfc.json   graphical POUs
     pous/<name>.st.json ST (.il.json: IL) POUs whose text cannot be split back exactly (e.g. a VAR block
                         without END_VAR while the user is still typing); never loses a character
     hmi/<name>.json     operator panels (project.json lists their order)
@@ -42,7 +42,7 @@ PROJECT_FILE = "project.json"
 TYPES_FILE = "types.st"
 GLOBALS_FILE = "globals.st"
 POUS_DIR = "pous"
-POU_SUFFIXES = (".st", ".plant.st", ".st.json", ".il", ".il.json", ".ld.json", ".fbd.json")
+POU_SUFFIXES = (".st", ".plant.st", ".st.json", ".il", ".il.json", ".ld.json", ".fbd.json", ".sfc.json")
 HMI_DIR = "hmi"
 EXERCISE_FILE = "EXERCISE.md"
 TESTS_DIR = "tests"
@@ -319,7 +319,10 @@ def _read_pou(folder: Path, name: str, read: _Reader) -> Pou | None:
     paths = pou_paths(folder, name)
     if len(paths) != 1:
         message = (
-            (f"POU {name!r} is listed in project.json but has no file pous/{name}.st, .il, .ld.json or .fbd.json")
+            (
+                f"POU {name!r} is listed in project.json but has no file pous/{name}.st, .il, .ld.json, .fbd.json "
+                "or .sfc.json"
+            )
             if not paths
             else (f"POU {name!r} has several files: {', '.join(p.name for p in paths)}; keep one")
         )

@@ -1840,14 +1840,19 @@ export interface components {
     };
     /**
      * Pou
-     * @description A program organisation unit. ``body`` is ST or IL text, an ``LdBody`` or an ``FbdBody`` per ``language``.
+     * @description A program organisation unit. ``body`` is ST or IL text, an ``LdBody``, an ``FbdBody`` or an ``SfcBody`` per
+     *     ``language``.
      */
     Pou: {
       /**
        * Body
        * @default
        */
-      body?: string | components["schemas"]["LdBody"] | components["schemas"]["FbdBody"];
+      body?:
+        | string
+        | components["schemas"]["LdBody"]
+        | components["schemas"]["FbdBody"]
+        | components["schemas"]["SfcBody"];
       /**
        * Declarations
        * @description ST text of the VAR...END_VAR blocks, as typed.
@@ -1863,7 +1868,7 @@ export interface components {
        * Language
        * @enum {string}
        */
-      language: "st" | "ld" | "fbd" | "il";
+      language: "st" | "ld" | "fbd" | "il" | "sfc";
       /** Name */
       name: string;
       /**
@@ -2255,6 +2260,245 @@ export interface components {
       x: number;
       /** Y */
       y: number;
+    };
+    /**
+     * SfcAction
+     * @description A named action (SFC-02): ST statements, LD or FBD networks, or a chart of its own.
+     */
+    SfcAction: {
+      /**
+       * Body
+       * @default
+       */
+      body?:
+        | string
+        | components["schemas"]["LdBody"]
+        | components["schemas"]["FbdBody"]
+        | components["schemas"]["SfcChart"];
+      /** Comment */
+      comment?: string | null;
+      /**
+       * Language
+       * @default st
+       * @enum {string}
+       */
+      language?: "st" | "ld" | "fbd" | "sfc";
+      /** Name */
+      name: string;
+    };
+    /**
+     * SfcAlternative
+     * @description Alternative divergence (single line): one branch is taken, the first whose transition is TRUE (SFC-08).
+     */
+    SfcAlternative: {
+      /**
+       * Branches
+       * @description Two or more sequences, each starting with a transition.
+       */
+      branches: (
+        | components["schemas"]["SfcStep"]
+        | components["schemas"]["SfcTransition"]
+        | components["schemas"]["SfcAlternative"]
+        | components["schemas"]["SfcParallel"]
+        | components["schemas"]["SfcJump"]
+      )[][];
+      /**
+       * Id
+       * @description Unique within the POU: probes, breakpoints and diagnostics use it.
+       */
+      id: string;
+      /**
+       * @description discriminator enum property added by openapi-typescript
+       * @enum {string}
+       */
+      type: "alternative";
+    };
+    /**
+     * SfcAssociation
+     * @description One line of a step's action block: a qualifier (with its TIME where needed) and an action or BOOL variable.
+     */
+    SfcAssociation: {
+      /**
+       * Action
+       * @description The name of an action of the POU, or a BOOL variable (SFC-04: its value is Q).
+       */
+      action: string;
+      /**
+       * Id
+       * @description Unique within the POU: probes, breakpoints and diagnostics use it.
+       */
+      id: string;
+      /**
+       * Qualifier
+       * @default N
+       * @enum {string}
+       */
+      qualifier?: "N" | "R" | "S" | "L" | "D" | "P" | "P1" | "P0" | "SD" | "DS" | "SL";
+      /**
+       * Time
+       * @description TIME expression (T#5s or a TIME variable) for L, D, SD, DS and SL.
+       */
+      time?: string | null;
+    };
+    /**
+     * SfcBody
+     * @description The body of an SFC POU: the chart (its first step is the initial step), the actions, the named transitions.
+     */
+    SfcBody: {
+      /** Actions */
+      actions?: components["schemas"]["SfcAction"][];
+      chart?: components["schemas"]["SfcChart"];
+      /** Transitions */
+      transitions?: components["schemas"]["SfcNamedTransition"][];
+    };
+    /**
+     * SfcChart
+     * @description A sequence of chart elements: the POU's chart, or the body of an action written in SFC.
+     */
+    SfcChart: {
+      /** Elements */
+      elements?: (
+        | components["schemas"]["SfcStep"]
+        | components["schemas"]["SfcTransition"]
+        | components["schemas"]["SfcAlternative"]
+        | components["schemas"]["SfcParallel"]
+        | components["schemas"]["SfcJump"]
+      )[];
+    };
+    /** SfcJump */
+    SfcJump: {
+      /**
+       * Id
+       * @description Unique within the POU: probes, breakpoints and diagnostics use it.
+       */
+      id: string;
+      /**
+       * Target
+       * @description The name of the step the chart continues at.
+       */
+      target: string;
+      /**
+       * @description discriminator enum property added by openapi-typescript
+       * @enum {string}
+       */
+      type: "jump";
+    };
+    /**
+     * SfcNamedTransition
+     * @description A transition condition written on its own (SFC-03): an ST expression, or LD/FBD networks whose coil or output
+     *     named like the transition gives its value. A chart transition whose condition is this name reads it.
+     */
+    SfcNamedTransition: {
+      /**
+       * Body
+       * @default FALSE
+       */
+      body?: string | components["schemas"]["LdBody"] | components["schemas"]["FbdBody"];
+      /** Comment */
+      comment?: string | null;
+      /**
+       * Language
+       * @default st
+       * @enum {string}
+       */
+      language?: "st" | "ld" | "fbd";
+      /** Name */
+      name: string;
+    };
+    /**
+     * SfcParallel
+     * @description Simultaneous divergence (double line): every branch starts together; all must end to go on (SFC-08).
+     */
+    SfcParallel: {
+      /**
+       * Branches
+       * @description Two or more sequences, each starting and ending with a step.
+       */
+      branches: (
+        | components["schemas"]["SfcStep"]
+        | components["schemas"]["SfcTransition"]
+        | components["schemas"]["SfcAlternative"]
+        | components["schemas"]["SfcParallel"]
+        | components["schemas"]["SfcJump"]
+      )[][];
+      /**
+       * Id
+       * @description Unique within the POU: probes, breakpoints and diagnostics use it.
+       */
+      id: string;
+      /**
+       * @description discriminator enum property added by openapi-typescript
+       * @enum {string}
+       */
+      type: "parallel";
+    };
+    /** SfcStep */
+    SfcStep: {
+      /** Actions */
+      actions?: components["schemas"]["SfcAssociation"][];
+      /** Comment */
+      comment?: string | null;
+      /**
+       * Entry
+       * @description Action run once in the first scan the step is active.
+       */
+      entry?: string | null;
+      /**
+       * Exit
+       * @description Action run once in the scan after the step was left.
+       */
+      exit?: string | null;
+      /**
+       * Id
+       * @description Unique within the POU: probes, breakpoints and diagnostics use it.
+       */
+      id: string;
+      /**
+       * Max Time
+       * @description TIME: active longer is an error in SFCError (with SFCEnableLimit).
+       */
+      max_time?: string | null;
+      /**
+       * Min Time
+       * @description TIME: transitions after the step wait at least this long.
+       */
+      min_time?: string | null;
+      /**
+       * Name
+       * @description An IEC identifier; Name.X and Name.T are its implicit variables.
+       */
+      name: string;
+      /**
+       * @description discriminator enum property added by openapi-typescript
+       * @enum {string}
+       */
+      type: "step";
+    };
+    /** SfcTransition */
+    SfcTransition: {
+      /** Comment */
+      comment?: string | null;
+      /**
+       * Condition
+       * @description ST expression (SFC-03: no assignment, no FB call); the name of a named transition reads its result.
+       * @default FALSE
+       */
+      condition?: string;
+      /**
+       * Id
+       * @description Unique within the POU: probes, breakpoints and diagnostics use it.
+       */
+      id: string;
+      /**
+       * Priority
+       * @description Among the transitions after one step, lower first; then left to right.
+       */
+      priority?: number | null;
+      /**
+       * @description discriminator enum property added by openapi-typescript
+       * @enum {string}
+       */
+      type: "transition";
     };
     /**
      * SimulationInfo
@@ -2997,6 +3241,16 @@ export type SaveResult = components["schemas"]["SaveResult"];
 export type ScanTimes = components["schemas"]["ScanTimes"];
 export type SelectorSwitch = components["schemas"]["SelectorSwitch"];
 export type SevenSegment = components["schemas"]["SevenSegment"];
+export type SfcAction = components["schemas"]["SfcAction"];
+export type SfcAlternative = components["schemas"]["SfcAlternative"];
+export type SfcAssociation = components["schemas"]["SfcAssociation"];
+export type SfcBody = components["schemas"]["SfcBody"];
+export type SfcChart = components["schemas"]["SfcChart"];
+export type SfcJump = components["schemas"]["SfcJump"];
+export type SfcNamedTransition = components["schemas"]["SfcNamedTransition"];
+export type SfcParallel = components["schemas"]["SfcParallel"];
+export type SfcStep = components["schemas"]["SfcStep"];
+export type SfcTransition = components["schemas"]["SfcTransition"];
 export type SimulationInfo = components["schemas"]["SimulationInfo"];
 export type Slider = components["schemas"]["Slider"];
 export type SourceMapEntry = components["schemas"]["SourceMapEntry"];
@@ -3673,6 +3927,8 @@ export interface operations {
         pou?: string | null;
         /** @description the whole project: keep its plants (as programs) */
         with_plants?: boolean;
+        /** @description SFC POUs as IEC textual SFC instead of the ST of their scan */
+        sfc_text?: boolean;
       };
       header?: never;
       path: {

@@ -99,6 +99,10 @@ export interface UnforceAll {
  * via the `definition` "BreakpointSet".
  */
 export interface BreakpointSet {
+  /**
+   * In an SFC POU: the action or named transition the network or line is in (actions/<name>, transitions/<name>); null for the POU's body or chart.
+   */
+  body?: string | null;
   element?: string | null;
   line?: number | null;
   network?: string | null;
@@ -112,6 +116,7 @@ export interface BreakpointSet {
  * via the `definition` "BreakpointClear".
  */
 export interface BreakpointClear {
+  body?: string | null;
   element?: string | null;
   line?: number | null;
   network?: string | null;
@@ -128,7 +133,8 @@ export interface Continue {
   type: "continue";
 }
 /**
- * Run to the next network (LD/FBD), statement (ST; networks in diagrams) or the end of the scan.
+ * Run to the next network (LD/FBD), statement (ST; networks in diagrams), SFC transition that fires (over as
+ * many scans as it takes) or the end of the scan.
  *
  * ``statement`` steps into calls; ``over`` goes to the next statement or network of the halted POU
  * (or of its caller once it returns), passing over the calls it makes; ``out`` runs until the caller
@@ -138,7 +144,7 @@ export interface Continue {
  * via the `definition` "Step".
  */
 export interface Step {
-  granularity?: "network" | "statement" | "over" | "out" | "cycle";
+  granularity?: "network" | "statement" | "over" | "out" | "transition" | "cycle";
   type: "step";
 }
 /**
@@ -547,6 +553,10 @@ export interface Status {
  * via the `definition` "At".
  */
 export interface At {
+  /**
+   * In an SFC POU: actions/<name> or transitions/<name>.
+   */
+  body?: string | null;
   column?: number | null;
   element?: string | null;
   /**

@@ -13,6 +13,8 @@ import { tokenize } from "../stview/highlight";
 import { placeOf, XREF_COLUMNS } from "../xref/model";
 import { FbdPrint } from "./FbdPrint";
 import { LdPrint } from "./LdPrint";
+import { SfcPrint } from "./SfcPrint";
+import type { SfcBody } from "../sfc/model";
 import { diagramSvg, pageStyles } from "./svg";
 import "./print.css";
 
@@ -26,6 +28,7 @@ const LANGUAGE = {
   st: "Structured Text",
   ld: "Ladder Diagram",
   fbd: "Function Block Diagram",
+  sfc: "Sequential Function Chart",
   il: "Instruction List",
 } as const;
 // A plant is a PROGRAM in IEC text (.plant.st); the print names its role.
@@ -148,12 +151,19 @@ function PouSection({
       </h2>
       <h3>Declarations</h3>
       <DeclarationTable symbols={symbols} />
-      <h3>{pou.language === "st" || pou.language === "il" ? "Body" : "Networks"}</h3>
+      <h3>{pou.language === "st" || pou.language === "il" ? "Body" : pou.language === "sfc" ? "Chart" : "Networks"}</h3>
       <div ref={diagram}>
         {pou.language === "ld" ? (
           <LdPrint body={pou.body as LdBody} library={library} />
         ) : pou.language === "fbd" ? (
           <FbdPrint body={pou.body as FbdBody} library={library} symbols={[...symbols, ...globals]} />
+        ) : pou.language === "sfc" ? (
+          <SfcPrint
+            body={pou.body as SfcBody}
+            library={library}
+            symbols={[...symbols, ...globals]}
+            text={(text) => <StBody text={text} />}
+          />
         ) : (
           <StBody text={typeof pou.body === "string" ? pou.body : ""} />
         )}

@@ -25,6 +25,8 @@ import { testsStore, useTests } from "../tests/store";
 import { runsOf } from "./tasks";
 import { useDiagramPou } from "./useDiagramPou";
 import { FbdPouView } from "../fbd/FbdPouView";
+import { SfcPouView } from "../sfc/SfcPouView";
+import { elementText as sfcElementText, type SfcBody } from "../sfc/model";
 import { ExportMenu } from "../interchange/ExportMenu";
 import { ImportPlcopen } from "../interchange/ImportPlcopen";
 import { appStore } from "../store";
@@ -55,7 +57,7 @@ const KINDS: { kind: Pou["kind"]; title: string }[] = [
   { kind: "function", title: "Functions" },
   { kind: "plant", title: "Plants" },
 ];
-const LANGUAGE = { st: "ST", ld: "LD", fbd: "FBD", il: "IL" } as const;
+const LANGUAGE = { st: "ST", ld: "LD", fbd: "FBD", il: "IL", sfc: "SFC" } as const;
 /** Languages whose body is text, edited in the text editor (docs/il.md). */
 const TEXT_LANGUAGES: readonly Pou["language"][] = ["st", "il"];
 
@@ -589,6 +591,7 @@ function PouView({ name }: { name: string }) {
   const pou = useWorkspace((s) => pouOf(s.project, name));
   const history = useWorkspace((s) => s.histories[name]);
   const fbdHistory = useWorkspace((s) => s.fbdHistories[name]);
+  const sfcHistory = useWorkspace((s) => s.sfcHistories[name]);
   const project = useWorkspace((s) => s.name);
   const unsaved = useWorkspace((s) => s.changed.includes(name));
   const focus = usePanels((s) => (s.focus?.pou.toUpperCase() === name.toUpperCase() ? s.focus : null));
@@ -602,7 +605,10 @@ function PouView({ name }: { name: string }) {
   }
   if (!pou || !project) return <p className="placeholder">{name} is no longer in this project.</p>;
   const modes: { id: PouMode; label: string }[] = [
-    { id: "body", label: TEXT_LANGUAGES.includes(pou.language) ? "Body" : "Diagram" },
+    {
+      id: "body",
+      label: TEXT_LANGUAGES.includes(pou.language) ? "Body" : pou.language === "sfc" ? "Chart" : "Diagram",
+    },
     { id: "declarations", label: "Declarations" },
     { id: "variables", label: "Variables" },
     ...(pou.language !== "st" ? [{ id: "st" as const, label: "View as ST" }] : []),
@@ -634,6 +640,8 @@ function PouView({ name }: { name: string }) {
     content = <LdPouView pou={pou} history={history} />;
   } else if (pou.language === "fbd" && fbdHistory) {
     content = <FbdPouView pou={pou} history={fbdHistory} onlineActions={<OnlineActions pou={pou} />} />;
+  } else if (pou.language === "sfc" && sfcHistory) {
+    content = <SfcPouView pou={pou} history={sfcHistory} onlineActions={<OnlineActions pou={pou} />} />;
   } else {
     content = (
       <p className="placeholder">
@@ -741,7 +749,15 @@ export function WorkspaceView() {
   const networksOf = useCallback(
     (pouName: string) => {
       const body = pouNamed(project, pouName)?.body;
-      return body && typeof body === "object" ? (body.networks ?? []).map((n) => n.id) : [];
+      return body && typeof body === "object" && "networks" in body ? (body.networks ?? []).map((n) => n.id) : [];
+    },
+    [project],
+  );
+
+  const elementText = useCallback(
+    (pouName: string, id: string) => {
+      const pou = pouNamed(project, pouName);
+      return pou?.language === "sfc" ? sfcElementText(pou.body as SfcBody, id) : null;
     },
     [project],
   );
@@ -836,7 +852,7 @@ export function WorkspaceView() {
       </ViewBoundary>
       <div className="editor-area">
         <ViewBoundary name="The debugging bar">
-          <DebugBar networksOf={networksOf} reveal={revealPlace} />
+          <DebugBar networksOf={networksOf} elementText={elementText} reveal={revealPlace} />
         </ViewBoundary>
         <ViewBoundary name="The tabs">
           <Tabs />

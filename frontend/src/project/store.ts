@@ -5,7 +5,7 @@ import { useStore } from "zustand";
 import { createStore, type StoreApi } from "zustand/vanilla";
 import { ApiError, projectApi, SaveConflictError, type ProjectApi } from "../api/client";
 import type { ConflictDetail, Diagnostic, LibraryEntry, SymbolInfo, SymbolTable } from "../generated/api";
-import type { FbdBody, LdBody, Pou, Project, TestFile } from "../generated/api";
+import type { FbdBody, LdBody, Pou, Project, SfcBody, TestFile } from "../generated/api";
 import { historyOf, type History } from "../ld/history";
 import type { VariableDeclaration } from "../ld/editor/declare";
 import { addDeclaration } from "./declarations";
@@ -27,6 +27,7 @@ export interface WorkspaceData {
   active: string | null;
   histories: Record<string, History<LdBody>>;
   fbdHistories: Record<string, History<FbdBody>>;
+  sfcHistories: Record<string, History<SfcBody>>;
   library: LibraryEntry[];
   symbols: Record<string, SymbolTable>;
   /** POUs the saved project has (the server knows symbols only of those), upper case. */
@@ -42,6 +43,7 @@ export interface WorkspaceActions {
   closeTab(pou: string): void;
   setLdHistory(pou: string, history: History<LdBody>): void;
   setFbdHistory(pou: string, history: History<FbdBody>): void;
+  setSfcHistory(pou: string, history: History<SfcBody>): void;
   declare(pou: string, declaration: VariableDeclaration): void;
   /** Replaces the declaration text of a POU (the declarations table and text view). */
   setDeclarations(pou: string, text: string): void;
@@ -81,6 +83,7 @@ export const emptyWorkspace: WorkspaceData = {
   active: null,
   histories: {},
   fbdHistories: {},
+  sfcHistories: {},
   library: [],
   symbols: {},
   savedPous: [],
@@ -108,10 +111,27 @@ export const NEW_TEST_TEXT = `TEST 'first test'
   ASSERT_TRUE(TRUE, 'replace with what the program must do');
 END_TEST
 `;
+/** What a new SFC POU starts with: the initial step, a transition and the jump back (as CODESYS does). */
+const sfcStart = (): SfcBody => ({
+  chart: {
+    elements: [
+      { type: "step", id: "s1", name: "Init", actions: [] },
+      { type: "transition", id: "t1", condition: "FALSE" },
+      { type: "jump", id: "j1", target: "Init" },
+    ],
+  },
+  actions: [],
+  transitions: [],
+});
+
 const isDiagramBody = (body: Pou["body"]): body is LdBody | FbdBody =>
   typeof body === "object" && body !== null && "networks" in body;
 export const ldBodyOf = (pou: Pou): LdBody => (isDiagramBody(pou.body) ? (pou.body as LdBody) : { networks: [] });
 export const fbdBodyOf = (pou: Pou): FbdBody => (isDiagramBody(pou.body) ? (pou.body as FbdBody) : { networks: [] });
+export const sfcBodyOf = (pou: Pou): SfcBody =>
+  typeof pou.body === "object" && pou.body !== null && "chart" in pou.body
+    ? (pou.body as SfcBody)
+    : { chart: { elements: [] } };
 
 /** A symbol known by name and type only (a variable just declared, a path to suggest). */
 export const plainSymbol = (name: string, type: string): SymbolInfo => ({
@@ -236,6 +256,8 @@ export function createWorkspaceStore(
           patch.histories = { ...histories, [pou]: historyOf(ldBodyOf(found)) };
         if (found.language === "fbd" && !get().fbdHistories[pou])
           patch.fbdHistories = { ...get().fbdHistories, [pou]: historyOf(fbdBodyOf(found)) };
+        if (found.language === "sfc" && !get().sfcHistories[pou])
+          patch.sfcHistories = { ...get().sfcHistories, [pou]: historyOf(sfcBodyOf(found)) };
         set(patch);
         if (!get().symbols[pou]) loadSymbols(pou);
       },
@@ -261,6 +283,11 @@ export function createWorkspaceStore(
 
       setFbdHistory(pou, history) {
         set({ fbdHistories: { ...get().fbdHistories, [pou]: history } });
+        replacePou(pou, (p) => ({ ...p, body: history.present }));
+      },
+
+      setSfcHistory(pou, history) {
+        set({ sfcHistories: { ...get().sfcHistories, [pou]: history } });
         replacePou(pou, (p) => ({ ...p, body: history.present }));
       },
 
@@ -292,7 +319,7 @@ export function createWorkspaceStore(
           kind,
           language,
           declarations: kind === "function" ? "VAR_INPUT\nEND_VAR" : "VAR\nEND_VAR",
-          body: language === "st" || language === "il" ? "" : { networks: [] },
+          body: language === "st" || language === "il" ? "" : language === "sfc" ? sfcStart() : { networks: [] },
           ...(kind === "function" ? { return_type: "BOOL" } : {}),
         };
         replacePous(name, (pous) => [...pous, pou]);

@@ -30,6 +30,7 @@ export function appKeyActions(): Record<CommandOf<"app">, () => boolean> {
     "step-over": () => when(connected(), () => debugStore.getState().step("over")),
     "step-into": () => when(connected(), () => debugStore.getState().step("statement")),
     "step-out": () => when(connected(), () => debugStore.getState().step("out")),
+    "step-transition": () => when(connected(), () => debugStore.getState().step("transition")),
   };
 }
 

@@ -30,6 +30,7 @@ def diagnostic(message: str, origin: ir.Origin | None, code: str = COMPILE_ERROR
     return Diagnostic(
         code=code,
         message=message,
+        file=f"{origin.pou}/{origin.body}" if origin.body is not None else None,
         pou=origin.pou,
         line=origin.line,
         column=origin.column,

@@ -59,6 +59,8 @@ class Fault:
             return f"POU {self.pou}" if self.pou else "unknown location"
         o = self.origin
         parts = [f"POU {o.pou}"]
+        if o.body is not None:
+            parts.append(o.body.replace("s/", " ", 1))  # actions/Fill -> action Fill
         if o.line is not None:
             parts.append(f"line {o.line}" + (f" column {o.column}" if o.column is not None else ""))
         if self.place is not None:
@@ -82,6 +84,7 @@ class Fault:
         return Diagnostic(
             code=RUNTIME_FAULT,
             message=self.text(),
+            file=f"{o.pou}/{o.body}" if o.body is not None else None,
             pou=self.pou,
             line=o.line,
             column=o.column,

@@ -490,7 +490,7 @@ class Statements:
 
     def _paused(self, s: ir.Probe) -> None:
         if self.module.debug:
-            self.pause("element", s.origin, s.element)
+            self.pause(s.kind, s.origin, s.element)
 
     # ------------------------------------------------------------------ calls
 

@@ -23,6 +23,7 @@ from ...model.diagnostics import Diagnostic
 from ...model.fbd import FbdBody
 from ...model.ld import LdBody
 from ...model.project import Pou, Project
+from ...model.sfc import SfcBody
 from ...st import ast
 from ...st.parser import parse_declarations, parse_source
 from .blocks import Signatures
@@ -30,6 +31,7 @@ from .body import NETWORK_GAP, Counter, write_network_list
 from .configuration import write_instances
 from .fbd_export import FbdExporter
 from .ld_export import LdExporter
+from .sfc_export import write_sfc_pou
 from .vars import parse_type_text, write_data_type, write_type, write_var_list
 from .xml_io import formatted_text, ladderlab_data, ladderlab_tests, q, sub, to_bytes
 
@@ -121,31 +123,18 @@ class _Exporter:
         for block in self.var_blocks(pou.declarations, pou.name):
             write_var_list(interface, block)
         ladderlab_data(interface, {"returnType": pou.return_type}, {"declarations": pou.declarations})
+        if isinstance(pou.body, SfcBody):
+            write_sfc_pou(node, pou.body, lambda holder, networks: self.diagram(holder, networks, pou.name))
+            return
         body = sub(node, "body")
-        if isinstance(pou.body, LdBody):
-            self.ld_body(body, pou)
-        elif isinstance(pou.body, FbdBody):
-            self.fbd_body(body, pou)
+        if isinstance(pou.body, (LdBody, FbdBody)):
+            self.diagram(body, pou.body, pou.name)
         else:
             formatted_text(body, pou.language.upper(), pou.body)  # ST or IL text
 
-    def ld_body(self, body: ET.Element, pou: Pou) -> None:
-        exporter = LdExporter(sub(body, "LD"), self.signatures, Counter())
-        top, listing = 0.0, []
-        for network in pou.body.networks:
-            listing.append((network.id, top, None))
-            top = exporter.network(network, top) + NETWORK_GAP
-        write_network_list(body, listing)
-
-    def fbd_body(self, body: ET.Element, pou: Pou) -> None:
-        exporter = FbdExporter(sub(body, "FBD"), self.signatures, Counter(), pou.name)
-        top, listing = 0.0, []
-        for network in pou.body.networks:
-            offset, bottom = exporter.network(network, top)
-            listing.append((network.id, offset, network.order))
-            top = bottom + NETWORK_GAP
-        self.problems += exporter.problems
-        write_network_list(body, listing)
+    def diagram(self, body: ET.Element, networks: LdBody | FbdBody, pou: str) -> None:
+        """The ``<LD>`` or ``<FBD>`` of a POU's body, or of an SFC action's or transition's."""
+        self.problems += diagram_writer(body, networks, self.signatures, pou)
 
     # ------------------------------------------------------------ configuration
 
@@ -153,3 +142,22 @@ class _Exporter:
         write_instances(
             self.project, parent, lambda text, file: self.var_blocks(text, None, file), write_var_list, self.problems
         )
+
+
+def diagram_writer(body: ET.Element, networks: LdBody | FbdBody, signatures: Signatures, pou: str) -> list[Diagnostic]:
+    """Write LD or FBD networks into a ``<body>``: one graph, the network list in LadderLab's addData."""
+    top, listing = 0.0, []
+    if isinstance(networks, LdBody):
+        ld = LdExporter(sub(body, "LD"), signatures, Counter())
+        for network in networks.networks:
+            listing.append((network.id, top, None))
+            top = ld.network(network, top) + NETWORK_GAP
+        write_network_list(body, listing)
+        return []
+    fbd = FbdExporter(sub(body, "FBD"), signatures, Counter(), pou)
+    for fbd_network in networks.networks:
+        offset, bottom = fbd.network(fbd_network, top)
+        listing.append((fbd_network.id, offset, fbd_network.order))
+        top = bottom + NETWORK_GAP
+    write_network_list(body, listing)
+    return fbd.problems

@@ -8,9 +8,10 @@ resource) and tasks fill the project's TYPE text, VAR_GLOBAL text and task list.
 
 Never raises on bad input: hostile or malformed XML (``xml_safety``) gives
 ``project=None`` and an error; everything else is imported as far as it goes.
-SFC and IL POUs, actions, transitions and other tools' addData have no place in
-the project and are reported as warnings; Bachmann/RuSTy's textual declarations
-and negated jumps/returns are understood and kept.
+SFC bodies with their actions and transitions go through ``plcopen_sfc_import``.
+IL POUs and other tools' addData have no place in the project and are reported
+as warnings; Bachmann/RuSTy's textual declarations and negated jumps/returns are
+understood and kept.
 """
 
 from __future__ import annotations
@@ -22,6 +23,8 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from ...model.diagnostics import Diagnostic
+from ...model.fbd import FbdBody
+from ...model.ld import LdBody
 from ...model.project import Pou, Project, TestFile
 from ...st import ast
 from ...st.parser import parse_declarations, parse_source
@@ -37,9 +40,11 @@ from .body import (
     read_network_list,
 )
 from .configuration import read_instances
+from .exporter import diagram_writer
 from .fbd_import import FbdImporter, fbd_groups, place_comments
 from .graph import read_graph, resolve_continuations
 from .ld_import import LdImporter, ld_groups
+from .sfc_import import SfcImporter
 from .vars import KIND_BY_LIST, VarReader, parse_type_text, write_data_type, write_type, write_var_list
 from .xml_io import (
     LADDERLAB_DATA,
@@ -216,16 +221,19 @@ class _Importer:
 
     def pou(self, node: ET.Element, pou: Pou, signatures: Signatures) -> Pou | None:
         r = self.reader
-        for tag in ("actions", "transitions"):
-            for item in r.children(r.child(node, tag), tag[:-1]):
-                r.report(
-                    "PLCOPEN-UNSUPPORTED",
-                    f"{tag[:-1]} '{item.get('name', '')}' of POU {pou.name} was not imported: LadderLab has no {tag}",
-                    item,
-                    severity="warning",
-                    pou=pou.name,
-                )
         bodies = r.children(node, "body")
+        first = next(r.elements(bodies[0]), None) if bodies else None
+        if first is None or local(first) != "SFC":
+            for tag in ("actions", "transitions"):
+                for item in r.children(r.child(node, tag), tag[:-1]):
+                    r.report(
+                        "PLCOPEN-UNSUPPORTED",
+                        f"{tag[:-1]} '{item.get('name', '')}' of POU {pou.name} was not imported: only SFC POUs "
+                        f"have {tag} in LadderLab",
+                        item,
+                        severity="warning",
+                        pou=pou.name,
+                    )
         if len(bodies) > 1:
             r.report(
                 "PLCOPEN-POU",
@@ -237,49 +245,43 @@ class _Importer:
         body = bodies[0] if bodies else None
         language = next(r.elements(body), None)
         tag = local(language) if language is not None else "ST"
-        if tag == "SFC":
-            r.report(
-                "PLCOPEN-UNSUPPORTED",
-                f"POU {pou.name} is written in {tag}, which LadderLab does not support; "
-                f"it was imported with its interface and a body that does nothing ({_KEPT[tag]} as comments), "
-                "so its callers build and run",
-                language,
-                severity="warning",
-                pou=pou.name,
-            )
-            return pou.model_copy(update={"body": unsupported_body(tag, language)})
         if tag in ("ST", "IL"):  # IL bodies are IL text like ST bodies are ST text (docs/il.md)
             return pou.model_copy(update={"body": text_content(language), "language": tag.lower()})
-        graph = read_graph(language, r, pou.name, signatures)
+        assert body is not None and language is not None
+        if tag == "SFC":
+            importer = SfcImporter(
+                r,
+                pou.name,
+                lambda holder, what: self.diagram(holder, pou.name, signatures),
+                lambda holder, networks: diagram_writer(holder, networks, signatures, pou.name),
+            )
+            return pou.model_copy(update={"language": "sfc", "body": importer.body(node, body, language)})
+        made = self.diagram(body, pou.name, signatures)
+        if made is None:
+            return pou
+        return pou.model_copy(update={"language": made[0], "body": made[1]})
+
+    def diagram(self, body: ET.Element, pou: str, signatures: Signatures) -> tuple[str, LdBody | FbdBody] | None:
+        """The LD or FBD networks of a ``<body>`` (a POU's, or an SFC action's or transition's)."""
+        r = self.reader
+        language = next(r.elements(body), None)
+        tag = local(language) if language is not None else ""
+        if language is None or tag not in ("LD", "FBD"):
+            return None
+        graph = read_graph(language, r, pou, signatures)
         listing = read_network_list(body, r)
         ids = IdMaker(claimed_ids(graph, listing))
         groups = group_by_ladderlab(graph, r, listing)
         if tag == "LD":
-            resolve_continuations(graph, r, pou.name)
+            resolve_continuations(graph, r, pou)
             foreign = groups is None
             groups = groups or attach_headers(ld_groups(graph), graph, r)
-            ld = LdImporter(graph, r, pou.name, signatures, ids, foreign=foreign).body(groups)
-            return Pou(
-                name=pou.name,
-                kind=pou.kind,
-                language="ld",
-                return_type=pou.return_type,
-                declarations=pou.declarations,
-                body=ld,
-            )
+            return "ld", LdImporter(graph, r, pou, signatures, ids, foreign=foreign).body(groups)
         relative, orders = groups is not None, {}
         if groups is None:
             groups, orders = fbd_groups(graph, r)
             place_comments(groups, graph)
-        fbd = FbdImporter(graph, r, pou.name, ids).body(groups, orders, relative=relative)
-        return Pou(
-            name=pou.name,
-            kind=pou.kind,
-            language="fbd",
-            return_type=pou.return_type,
-            declarations=pou.declarations,
-            body=fbd,
-        )
+        return "fbd", FbdImporter(graph, r, pou, ids).body(groups, orders, relative=relative)
 
     # ------------------------------------------------------------ project texts
 
@@ -336,22 +338,3 @@ def _return_type_elements(text: str) -> list[ET.Element] | None:
     holder = ET.Element("returnType")
     write_type(holder, spec)
     return [holder]
-
-
-#: What an unsupported body leaves in the comments of the POU standing in for it.
-_KEPT = {"SFC": "the names of its steps are kept"}
-
-
-def unsupported_body(tag: str, language: ET.Element) -> str:
-    """The ST body standing in for an SFC body: no statements, the original described in line comments.
-
-    The POU keeps its interface so that the programs calling it still build (the rest of an imported
-    project runs); the comment says, where the user opens the POU, that this body does nothing.
-    """
-    original = [
-        f"step {s.get('name', '')}{' (initial)' if s.get('initialStep') == 'true' else ''}"
-        for s in language
-        if local(s) == "step"
-    ]
-    lines = [f"// Imported from {tag}, which LadderLab cannot run: this body does nothing. The original {tag}:"]
-    return "\n".join(lines + [f"// {line}".rstrip() for line in original])

@@ -17,8 +17,10 @@ from dataclasses import dataclass, field
 from ...ir.diagram_checks import canonical_label
 from ...ir.lower_project import lower_pou
 from ...model import Diagnostic, Pou, Project, has_errors
+from ...model.sfc import SfcBody
 from ...st.checker import check_project
 from ...st.columns import align_declarations
+from ...st.sfc_text import sfc_to_text
 from ...st.symbols import CheckResult
 from ...storage.st_text import compose_pou_text
 from .body import Network, body_lines, comment, network_title
@@ -28,6 +30,7 @@ from .il import il_to_st
 from .ld import ld_network
 from .names import Names
 from .network import Declarations, plan
+from .sfc import st_sfc_pou
 
 SourceMap = list[tuple[int, str, str | None]]
 
@@ -42,12 +45,15 @@ class StExport:
     diagnostics: list[Diagnostic] = field(default_factory=list)
 
 
-def export_pou_st(project: Project, pou_name: str) -> StExport:
+def export_pou_st(project: Project, pou_name: str, *, sfc_text: bool = False) -> StExport:
+    """``sfc_text``: an SFC POU as IEC textual SFC (steps, transitions, actions) instead of the ST of its scan."""
     pou = project.pou(pou_name)
     if pou is None:
         return StExport("", [], [Diagnostic(code="EXPORT-UNKNOWN-POU", message=f"the project has no POU '{pou_name}'")])
     if pou.language == "st":
         return StExport(compose_pou_text(pou))
+    if sfc_text and pou.language == "sfc":
+        return textual_sfc(project, pou)
     checked = check_project(project)
     exported = st_pou(project, pou, checked)
     if has_errors(exported.diagnostics):
@@ -78,6 +84,11 @@ def st_pou(project: Project, pou: Pou, checked: CheckResult) -> ExportedPou:
     ]
     if info is None or has_errors(diagnostics):
         return ExportedPou(None, [], _refused(pou, diagnostics))
+    if pou.language == "sfc":
+        made = st_sfc_pou(project, pou, checked, diagnostics)
+        if made.pou is None:
+            return ExportedPou(None, [], _refused(pou, made.diagnostics))
+        return ExportedPou(made.pou, [], made.diagnostics)
     if pou.language == "il":
         exported_il, problems = il_to_st(pou, checked)
         return ExportedPou(exported_il, [], problems + [d for d in diagnostics if d.severity != "error"])
@@ -110,6 +121,19 @@ def st_pou(project: Project, pou: Pou, checked: CheckResult) -> ExportedPou:
         source_map,
         [d for d in diagnostics if d.severity != "error"],
     )
+
+
+def textual_sfc(project: Project, pou: Pou) -> StExport:
+    """An SFC POU in IEC textual SFC, refused (located) when it has errors or what the text cannot say."""
+    diagnostics = [d for d in check_project(project).diagnostics if (d.pou or "").upper() == pou.name.upper()]
+    if has_errors(diagnostics):
+        return StExport("", [], _refused(pou, diagnostics))
+    assert isinstance(pou.body, SfcBody)
+    body, problems = sfc_to_text(pou.name, pou.body)
+    if problems:
+        return StExport("", [], problems)
+    text = compose_pou_text(pou.model_copy(update={"language": "st", "body": body}))
+    return StExport(text, [], diagnostics)
 
 
 def _declarations(user: str, declarations: Declarations) -> str:

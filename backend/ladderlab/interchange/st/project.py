@@ -22,11 +22,11 @@ from ...st.checker import check_project
 from ...st.printer import INDENT
 from ...st.project_text import source_to_project
 from ...storage.st_text import compose_pou_text
-from .export import StExport, st_pou
+from .export import StExport, st_pou, textual_sfc
 from .names import Names
 
 
-def export_project_st(project: Project) -> StExport:
+def export_project_st(project: Project, *, sfc_text: bool = False) -> StExport:
     """The project's complete ST text; ``source_map`` entries name the network as ``POU/network``."""
     checked = check_project(project)
     parts: list[str] = []
@@ -39,6 +39,12 @@ def export_project_st(project: Project) -> StExport:
     for pou in project.pous:
         if pou.language == "st":
             parts.append(compose_pou_text(pou).rstrip("\n"))
+            continue
+        if sfc_text and pou.language == "sfc":
+            textual = textual_sfc(project, pou)
+            diagnostics += textual.diagnostics
+            if textual.text:
+                parts.append(textual.text.rstrip("\n"))
             continue
         exported = st_pou(project, pou, checked)
         diagnostics += exported.diagnostics
