@@ -17,7 +17,7 @@ from fastapi.staticfiles import StaticFiles
 
 from .. import __version__
 from ..storage import Workspace
-from . import auth, fbd, interchange, library, live_check, monitor, projects, simulations, symbols, tests
+from . import auth, fbd, interchange, library, live_check, monitor, projects, refactor, simulations, symbols, tests
 from .context import registry_of
 from .errors import install_error_handlers
 from .limits import BodySizeLimit, JsonGuard, Limits, WebsocketLimit
@@ -57,7 +57,19 @@ def create_app(workspace: Workspace, limits: Limits | None = None, security: Sec
     async def health() -> dict[str, str]:  # on the event loop: answers whatever the worker threads are doing
         return {"status": "ok", "version": __version__}
 
-    for module in (projects, symbols, library, simulations, monitor, interchange, fbd, live_check, auth, tests):
+    for module in (
+        projects,
+        symbols,
+        library,
+        simulations,
+        monitor,
+        interchange,
+        fbd,
+        live_check,
+        refactor,
+        auth,
+        tests,
+    ):
         app.include_router(module.router)
 
     if (STATIC_DIR / "index.html").is_file():

@@ -8,13 +8,18 @@ export interface ApiTypes {
   check_report: CheckReport;
   conflict_detail: ConflictDetail;
   create_project: CreateProject;
+  duplicate_request: DuplicateRequest;
   error_detail: ErrorDetail;
   fbd_order: FbdOrder;
   import_report: ImportReport;
   library_entry: LibraryEntry;
   project_document: ProjectDocument;
   project_summary: ProjectSummary;
+  reference_list: ReferenceList;
+  references_request: ReferencesRequest;
   rename_project: RenameProject;
+  rename_request: RenameRequest;
+  rename_result: RenameResult;
   reset_simulation: ResetSimulation;
   save_result: SaveResult;
   simulation_info: SimulationInfo;
@@ -83,98 +88,15 @@ export interface CreateProject {
   name: string;
 }
 /**
- * The ``detail`` of every error response except save conflicts.
+ * Body of ``POST /api/refactor/duplicate``: a copy of POU ``name`` called ``new_name``.
  *
  * This interface was referenced by `ApiTypes`'s JSON-Schema
- * via the `definition` "ErrorDetail".
+ * via the `definition` "DuplicateRequest".
  */
-export interface ErrorDetail {
-  diagnostics?: Diagnostic[];
-  message: string;
-}
-/**
- * ``POST /api/fbd/order``: the node ids of one FBD network in the order the scan runs them.
- *
- * This interface was referenced by `ApiTypes`'s JSON-Schema
- * via the `definition` "FbdOrder".
- */
-export interface FbdOrder {
-  /**
-   * Blocks, input, output, jump and return nodes; connectors have no place.
-   */
-  order: string[];
-}
-/**
- * ``POST /api/import/plcopen``: the stored project and what the import had to say (warnings).
- *
- * This interface was referenced by `ApiTypes`'s JSON-Schema
- * via the `definition` "ImportReport".
- */
-export interface ImportReport {
-  diagnostics?: Diagnostic[];
-  project: ProjectSummary;
-}
-/**
- * One row of ``GET /api/projects``; a project whose files do not load has no revision and says why in
- * ``problems`` (located in its files), so it is listed rather than silently missing.
- *
- * This interface was referenced by `ApiTypes`'s JSON-Schema
- * via the `definition` "ProjectSummary".
- */
-export interface ProjectSummary {
-  modified: string;
+export interface DuplicateRequest {
   name: string;
-  pou_count: number;
-  problems?: Diagnostic[];
-  revision: string | null;
-}
-/**
- * One function or function block the box picker offers (EN/ENO are implicit on all of them).
- *
- * This interface was referenced by `ApiTypes`'s JSON-Schema
- * via the `definition` "LibraryEntry".
- */
-export interface LibraryEntry {
-  comment: string | null;
-  /**
-   * More inputs like the last one may be added (IN3, IN4, ...).
-   */
-  extensible: boolean;
-  in_outs: Pin[];
-  inputs: Pin[];
-  kind: "function" | "function_block";
-  name: string;
-  outputs: Pin[];
-  /**
-   * Functions only: the result type (a family for generic ones).
-   */
-  return_type: string | null;
-  source: "standard" | "user";
-}
-/**
- * A parameter of a library function or function block.
- *
- * This interface was referenced by `ApiTypes`'s JSON-Schema
- * via the `definition` "Pin".
- */
-export interface Pin {
-  name: string;
-  /**
-   * Elementary type, user type, or generic family such as ANY_NUM.
-   */
-  type: string;
-}
-/**
- * ``GET /api/projects/{name}``: the project and the revision a later save must name in ``If-Match``.
- *
- * This interface was referenced by `ApiTypes`'s JSON-Schema
- * via the `definition` "ProjectDocument".
- */
-export interface ProjectDocument {
-  modified: string;
-  name: string;
+  new_name: string;
   project: Project;
-  revision: string;
 }
 /**
  * This interface was referenced by `ApiTypes`'s JSON-Schema
@@ -524,6 +446,137 @@ export interface TestFile {
   text?: string;
 }
 /**
+ * The ``detail`` of every error response except save conflicts.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "ErrorDetail".
+ */
+export interface ErrorDetail {
+  diagnostics?: Diagnostic[];
+  message: string;
+}
+/**
+ * ``POST /api/fbd/order``: the node ids of one FBD network in the order the scan runs them.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "FbdOrder".
+ */
+export interface FbdOrder {
+  /**
+   * Blocks, input, output, jump and return nodes; connectors have no place.
+   */
+  order: string[];
+}
+/**
+ * ``POST /api/import/plcopen``: the stored project and what the import had to say (warnings).
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "ImportReport".
+ */
+export interface ImportReport {
+  diagnostics?: Diagnostic[];
+  project: ProjectSummary;
+}
+/**
+ * One row of ``GET /api/projects``; a project whose files do not load has no revision and says why in
+ * ``problems`` (located in its files), so it is listed rather than silently missing.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "ProjectSummary".
+ */
+export interface ProjectSummary {
+  modified: string;
+  name: string;
+  pou_count: number;
+  problems?: Diagnostic[];
+  revision: string | null;
+}
+/**
+ * One function or function block the box picker offers (EN/ENO are implicit on all of them).
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "LibraryEntry".
+ */
+export interface LibraryEntry {
+  comment: string | null;
+  /**
+   * More inputs like the last one may be added (IN3, IN4, ...).
+   */
+  extensible: boolean;
+  in_outs: Pin[];
+  inputs: Pin[];
+  kind: "function" | "function_block";
+  name: string;
+  outputs: Pin[];
+  /**
+   * Functions only: the result type (a family for generic ones).
+   */
+  return_type: string | null;
+  source: "standard" | "user";
+}
+/**
+ * A parameter of a library function or function block.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "Pin".
+ */
+export interface Pin {
+  name: string;
+  /**
+   * Elementary type, user type, or generic family such as ANY_NUM.
+   */
+  type: string;
+}
+/**
+ * ``GET /api/projects/{name}``: the project and the revision a later save must name in ``If-Match``.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "ProjectDocument".
+ */
+export interface ProjectDocument {
+  modified: string;
+  name: string;
+  project: Project;
+  revision: string;
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "ReferenceList".
+ */
+export interface ReferenceList {
+  references: Reference[];
+}
+/**
+ * One place that uses a project-level name (a POU, type or global), as a rename changes it or a
+ * delete would break it: the POU and its part, the line of a text or the network and element of a
+ * diagram, the task, and the text there (the line, or the operand) as it was.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "Reference".
+ */
+export interface Reference {
+  element?: string | null;
+  file?: string | null;
+  line?: number | null;
+  network?: string | null;
+  network_label?: string | null;
+  network_number?: number | null;
+  part: "declarations" | "body" | "network" | "return type" | "globals" | "types" | "task" | "test";
+  pou?: string | null;
+  task?: string | null;
+  text?: string;
+}
+/**
+ * Body of ``POST /api/refactor/references``: the (unsaved) project and the name whose uses are wanted.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "ReferencesRequest".
+ */
+export interface ReferencesRequest {
+  name: string;
+  project: Project;
+}
+/**
  * Body of ``POST /api/projects/{name}/rename``.
  *
  * This interface was referenced by `ApiTypes`'s JSON-Schema
@@ -531,6 +584,27 @@ export interface TestFile {
  */
 export interface RenameProject {
   new_name: string;
+}
+/**
+ * Body of ``POST /api/refactor/rename``: the (unsaved) project and the name to rename in it.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "RenameRequest".
+ */
+export interface RenameRequest {
+  new_name: string;
+  old_name: string;
+  project: Project;
+}
+/**
+ * The renamed project (nothing is stored) and every place that changed, for the preview.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "RenameResult".
+ */
+export interface RenameResult {
+  changes: Reference[];
+  project: Project;
 }
 /**
  * Body of ``POST /api/simulations/{id}/reset``: warm (RETAIN kept) or cold restart.
