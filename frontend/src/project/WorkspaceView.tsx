@@ -39,6 +39,7 @@ import { useAppKeys } from "./useAppKeys";
 import { ShortcutHelp } from "../keys/ShortcutHelp";
 import { keysOf } from "../keys/keymap";
 import { VariablesView } from "./VariablesView";
+import { KindPicker, PouActions } from "./PouActions";
 import { keepSession, restoreSession, type SessionStores } from "./session";
 import { traceStore } from "../trace/store";
 
@@ -66,11 +67,14 @@ function NewItemForm({
   title,
   nameLabel,
   create,
+  onOpen,
   children,
 }: {
   title: string;
   nameLabel: string;
   create(name: string): string | null;
+  /** Called as the form opens (to start its fields afresh). */
+  onOpen?: () => void;
   children?: ReactNode;
 }) {
   const [open, setOpen] = useState(false);
@@ -78,7 +82,14 @@ function NewItemForm({
   const [error, setError] = useState<string | null>(null);
   if (!open) {
     return (
-      <button type="button" className="new-pou-button" onClick={() => setOpen(true)}>
+      <button
+        type="button"
+        className="new-pou-button"
+        onClick={() => {
+          onOpen?.();
+          setOpen(true);
+        }}
+      >
         {title}
       </button>
     );
@@ -116,20 +127,20 @@ function NewItemForm({
   );
 }
 
-/** "New POU": name, kind and language; the POU joins the working copy (saved with the project). */
+/** "New POU": name, kind (each time from "program", with what the kind is) and language; the POU joins
+ * the working copy (saved with the project). */
 function NewPou() {
   const addPou = useWorkspace((s) => s.addPou);
   const [kind, setKind] = useState<Pou["kind"]>("program");
   const [language, setLanguage] = useState<Pou["language"]>("ld");
   return (
-    <NewItemForm title="New POU" nameLabel="POU name" create={(name) => addPou(name, kind, language)}>
-      <select aria-label="POU kind" value={kind} onChange={(e) => setKind(e.target.value as Pou["kind"])}>
-        {KINDS.map((k) => (
-          <option key={k.kind} value={k.kind}>
-            {k.title.replace(/s$/, "").toLowerCase()}
-          </option>
-        ))}
-      </select>
+    <NewItemForm
+      title="New POU"
+      nameLabel="POU name"
+      create={(name) => addPou(name, kind, language)}
+      onOpen={() => setKind("program")}
+    >
+      <KindPicker kind={kind} onChange={setKind} />
       <select
         aria-label="POU language"
         value={language}
@@ -220,7 +231,7 @@ function ProjectTree() {
             {group.length ? (
               <ul>
                 {group.map((p) => (
-                  <li key={p.name}>
+                  <li key={p.name} className="tree-row">
                     <button
                       type="button"
                       className="tree-item"
@@ -235,6 +246,7 @@ function ProjectTree() {
                         </span>
                       ) : null}
                     </button>
+                    <PouActions pou={p} />
                   </li>
                 ))}
               </ul>
@@ -666,6 +678,7 @@ export function WorkspaceView() {
   const project = useWorkspace((s) => s.project);
   const revision = useWorkspace((s) => s.revision);
   const panelsHeight = usePanels((s) => s.height);
+  const undo = useWorkspace((s) => s.undo);
   const [help, setHelp] = useState(false);
 
   // A save changes the project's POU count, revision and time: the project list shows them.
@@ -753,6 +766,11 @@ export function WorkspaceView() {
         >
           Save
         </button>
+        {undo ? (
+          <button type="button" onClick={() => workspaceStore.getState().undoOperation()}>
+            Undo {undo.label}
+          </button>
+        ) : null}
         {restoredAt ? (
           <span className="restored">
             Restored unsaved changes from {formatTime(restoredAt)}.{" "}

@@ -34,6 +34,23 @@ export interface WorkspaceData {
   saving: boolean;
   saveError: string | null;
   conflict: ConflictDetail | null;
+  /** The working copy before the last project operation (rename, delete, ...): one step back. */
+  undo: ProjectUndo | null;
+}
+
+/** What undoing a project operation restores. */
+export interface ProjectUndo {
+  label: string;
+  project: Project;
+  changed: string[];
+  tabs: string[];
+  active: string | null;
+}
+
+/** A project operation's effect on the open tabs: tabs renamed (old -> new name) and tabs closed. */
+export interface TabChanges {
+  renamed?: Record<string, string>;
+  closed?: string[];
 }
 
 export interface WorkspaceActions {
@@ -60,6 +77,11 @@ export interface WorkspaceActions {
   dismissConflict(): void;
   /** Fetches a POU's symbols and the library again (a view of it is reloaded after a failure). */
   refreshPou(pou: string): void;
+  /** Replaces the working copy by `next` as one undoable step named `label` (rename, delete, ...);
+   * `changed` are the items it marks unsaved. */
+  applyOperation(label: string, next: Project, changed: string[], tabs?: TabChanges): void;
+  /** Takes the last project operation back. */
+  undoOperation(): void;
 }
 
 export type WorkspaceState = WorkspaceData & WorkspaceActions;
@@ -83,7 +105,11 @@ export const emptyWorkspace: WorkspaceData = {
   saving: false,
   saveError: null,
   conflict: null,
+  undo: null,
 };
+
+/** The declarations a new (or re-kinded empty) POU starts with. */
+export const emptyDeclarations = (kind: Pou["kind"]) => (kind === "function" ? "VAR_INPUT\nEND_VAR" : "VAR\nEND_VAR");
 
 const IDENTIFIER = /^[A-Za-z_][A-Za-z0-9_]{0,63}$/;
 const message = (err: unknown) => (err instanceof Error ? err.message : String(err));
@@ -123,6 +149,18 @@ export const diagramDiagnostics = (
     (d) => d.network,
   );
 
+/** Tabs with fresh diagram histories from `project` (a project operation may have changed any body). */
+function diagramHistories(project: Project, tabs: string[], active: string | null): Partial<WorkspaceData> {
+  const histories: Record<string, History<LdBody>> = {};
+  const fbdHistories: Record<string, History<FbdBody>> = {};
+  for (const tab of tabs) {
+    const pou = pouOf(project, tab);
+    if (pou?.language === "ld") histories[tab] = historyOf(ldBodyOf(pou));
+    if (pou?.language === "fbd") fbdHistories[tab] = historyOf(fbdBodyOf(pou));
+  }
+  return { tabs, active, histories, fbdHistories };
+}
+
 export function createWorkspaceStore(
   api: ProjectApi = projectApi,
   storage: Storage = localStorage,
@@ -139,8 +177,11 @@ export function createWorkspaceStore(
     const replaceProject = (item: string, update: (project: Project) => Project) => {
       const { project, changed } = get();
       if (!project) return;
-      const next: Project = update(project);
-      const nextChanged = changed.includes(item) ? changed : [...changed, item];
+      commit(update(project), changed.includes(item) ? changed : [...changed, item]);
+    };
+
+    /** The new working copy and its unsaved items, kept as a draft. */
+    const commit = (next: Project, nextChanged: string[]) => {
       set({ project: next, changed: nextChanged });
       const { revision, modified } = get();
       saveDraft(
@@ -277,7 +318,7 @@ export function createWorkspaceStore(
           name,
           kind,
           language,
-          declarations: kind === "function" ? "VAR_INPUT\nEND_VAR" : "VAR\nEND_VAR",
+          declarations: emptyDeclarations(kind),
           body: language === "st" ? "" : { networks: [] },
           ...(kind === "function" ? { return_type: "BOOL" } : {}),
         };
@@ -340,6 +381,24 @@ export function createWorkspaceStore(
       },
 
       dismissConflict: () => set({ conflict: null }),
+
+      applyOperation(label, next, items, tabChanges = {}) {
+        const { project, changed, tabs, active } = get();
+        if (!project) return;
+        const renamed = tabChanges.renamed ?? {};
+        const closed = new Set(tabChanges.closed ?? []);
+        const nextTabs = tabs.filter((t) => !closed.has(t)).map((t) => renamed[t] ?? t);
+        const nextActive = active && !closed.has(active) ? (renamed[active] ?? active) : (nextTabs[0] ?? null);
+        set({ undo: { label, project, changed, tabs, active }, ...diagramHistories(next, nextTabs, nextActive) });
+        commit(next, [...new Set([...changed.map((c) => renamed[c] ?? c), ...items])]);
+      },
+
+      undoOperation() {
+        const { undo } = get();
+        if (!undo) return;
+        set({ undo: null, ...diagramHistories(undo.project, undo.tabs, undo.active) });
+        commit(undo.project, undo.changed);
+      },
 
       refreshPou(pou) {
         const { name } = get();
