@@ -4,6 +4,7 @@ import { useStore } from "zustand";
 import { createStore, type StoreApi } from "zustand/vanilla";
 import { checkProject } from "../api/client";
 import type { CheckReport, Diagnostic } from "../generated/api";
+import { partOf } from "../project/parts";
 
 export type PanelId = "diagnostics" | "watch" | "log" | "breakpoints" | "trace" | "tests";
 
@@ -48,6 +49,8 @@ export type PanelsState = PanelsData & PanelsActions;
 
 /** Where a diagnostic points, or null when it names no POU. */
 export function focusOf(d: Diagnostic): Omit<Focus, "seq"> | null {
+  const projectPart = partOf(d);
+  if (projectPart) return { pou: projectPart, network: null, element: null, line: d.line ?? null, part: null };
   if (!d.pou) return null;
   const part = d.file?.endsWith("/declarations") ? "declarations" : d.file?.endsWith("/body") ? "body" : null;
   return { pou: d.pou, network: d.network ?? null, element: d.element ?? null, line: d.line ?? null, part };

@@ -16,7 +16,7 @@ import { BottomPanels } from "../panels/BottomPanels";
 import { focusOf, panelsStore, usePanels } from "../panels/store";
 import { StView } from "../stview/StView";
 import { DeclarationsEditor } from "../declarations/DeclarationsEditor";
-import { ELEMENTARY_TYPES, userTypeNames } from "../declarations/model";
+import { parseDeclarations } from "../declarations/model";
 import { isTestPath, pouOf, symbolsOf, testOf, testPath, useWorkspace, workspaceStore } from "./store";
 import { useTestCheck, useTestCompletions } from "../tests/assist";
 import { coverageLines, coverageMarks, coverageOf } from "../tests/coverage";
@@ -40,6 +40,9 @@ import { ShortcutHelp } from "../keys/ShortcutHelp";
 import { keysOf } from "../keys/keymap";
 import { VariablesView } from "./VariablesView";
 import { KindPicker, PouActions } from "./PouActions";
+import { GlobalsView, TasksView, TypesView, useDeclarableTypes } from "./ProjectParts";
+import { isProjectPart, PROJECT_PARTS, type ProjectPart } from "./parts";
+import { typeRows } from "./types";
 import { keepSession, restoreSession, type SessionStores } from "./session";
 import { traceStore } from "../trace/store";
 
@@ -212,6 +215,14 @@ function TestFilesTree() {
   );
 }
 
+/** What the tree says of a project part: how many types, globals, tasks it has. */
+function partSummary(project: Project, part: ProjectPart): string {
+  if (part === "Tasks") return project.tasks?.length ? `${project.tasks.length}` : "default";
+  if (part === "Types") return `${typeRows(project.types ?? "").length}`;
+  const parsed = parseDeclarations(project.globals ?? "");
+  return parsed.ok ? `${parsed.rows.length}` : "";
+}
+
 function ProjectTree() {
   const project = useWorkspace((s) => s.project);
   const changed = useWorkspace((s) => s.changed);
@@ -219,7 +230,6 @@ function ProjectTree() {
   const openPou = useWorkspace((s) => s.openPou);
   if (!project) return null;
   const pous = project.pous ?? [];
-  const lines = (text: string | undefined) => (text ?? "").split("\n").filter((l) => l.trim()).length;
   return (
     <nav className="tree" aria-label="Project tree">
       <NewPou />
@@ -257,33 +267,27 @@ function ProjectTree() {
         );
       })}
       <section>
-        <h3>Types</h3>
-        <p className="tree-empty">
-          {lines(project.types) ? `${lines(project.types)} lines of TYPE declarations` : "none"}
-        </p>
-      </section>
-      <section>
-        <h3>Global variables</h3>
-        <p className="tree-empty">
-          {lines(project.globals) ? `${lines(project.globals)} lines of VAR_GLOBAL declarations` : "none"}
-        </p>
-      </section>
-      <section>
-        <h3>Tasks</h3>
-        {project.tasks?.length ? (
-          <ul>
-            {project.tasks.map((t) => (
-              <li key={t.name} className="tree-task">
-                {t.name}{" "}
-                <span className="tree-meta">
-                  {t.interval ?? ""} · {(t.programs ?? []).join(", ") || "no programs"}
-                </span>
-              </li>
-            ))}
-          </ul>
-        ) : (
-          <p className="tree-empty">none (the default task runs every program)</p>
-        )}
+        <h3>Project</h3>
+        <ul>
+          {PROJECT_PARTS.map((part) => (
+            <li key={part}>
+              <button
+                type="button"
+                className="tree-item"
+                aria-current={active === part ? "true" : undefined}
+                onClick={() => openPou(part)}
+              >
+                <span className="tree-name">{part}</span>
+                <span className="tree-meta">{partSummary(project, part)}</span>
+                {changed.includes(part) ? (
+                  <span className="unsaved" aria-label="unsaved changes">
+                    ●
+                  </span>
+                ) : null}
+              </button>
+            </li>
+          ))}
+        </ul>
       </section>
       <TestFilesTree />
     </nav>
@@ -506,6 +510,14 @@ function TestFileView({ path }: { path: string }) {
 
 type PouMode = "body" | "declarations" | "variables" | "st";
 
+function ProjectPartView({ part }: { part: ProjectPart }) {
+  return (
+    <ViewBoundary name={`The ${part} editor`}>
+      {part === "Global variables" ? <GlobalsView /> : part === "Types" ? <TypesView /> : <TasksView />}
+    </ViewBoundary>
+  );
+}
+
 /** Declarations of one POU with the types to offer and the problems of its declaration text. */
 function PouDeclarations({
   pou,
@@ -517,8 +529,7 @@ function PouDeclarations({
   focus: { line: number; seq: number } | null;
 }) {
   const setDeclarations = useWorkspace((s) => s.setDeclarations);
-  const library = useWorkspace((s) => s.library);
-  const userTypes = useWorkspace((s) => s.project?.types ?? "");
+  const types = useDeclarableTypes();
   const table = useWorkspace((s) => s.symbols[pou.name]);
   const checked = usePanels((s) => s.diagnostics) ?? NO_DIAGNOSTICS;
   const file = `${pou.name}/declarations`.toUpperCase();
@@ -530,16 +541,6 @@ function PouDeclarations({
       return seen.has(key) ? false : (seen.add(key), true);
     });
   }, [table, checked, file]);
-  const types = useMemo(
-    () => [
-      ...new Set([
-        ...ELEMENTARY_TYPES,
-        ...userTypeNames(userTypes),
-        ...library.filter((e) => e.kind === "function_block").map((e) => e.name),
-      ]),
-    ],
-    [userTypes, library],
-  );
   return (
     <DeclarationsEditor
       text={pou.declarations ?? ""}
@@ -785,7 +786,11 @@ export function WorkspaceView() {
           </span>
         ) : null}
         {name ? (
-          <ExportMenu project={name} pou={active && !isTestPath(active) ? active : null} unsaved={changed.length > 0} />
+          <ExportMenu
+            project={name}
+            pou={active && !isTestPath(active) && !isProjectPart(active) ? active : null}
+            unsaved={changed.length > 0}
+          />
         ) : null}
         <button type="button" aria-expanded={help} onClick={() => setHelp((h) => !h)}>
           Keyboard shortcuts
@@ -810,7 +815,9 @@ export function WorkspaceView() {
           <Tabs />
         </ViewBoundary>
         {active ? (
-          isTestPath(active) ? (
+          isProjectPart(active) ? (
+            <ProjectPartView key={active} part={active} />
+          ) : isTestPath(active) ? (
             <TestFileView key={active} path={active} />
           ) : (
             <PouView key={active} name={active} />

@@ -5,10 +5,11 @@ import { useStore } from "zustand";
 import { createStore, type StoreApi } from "zustand/vanilla";
 import { ApiError, projectApi, SaveConflictError, type ProjectApi } from "../api/client";
 import type { ConflictDetail, Diagnostic, LibraryEntry, SymbolInfo, SymbolTable } from "../generated/api";
-import type { FbdBody, LdBody, Pou, Project, TestFile } from "../generated/project";
+import type { FbdBody, LdBody, Pou, Project, Task, TestFile } from "../generated/project";
 import { historyOf, type History } from "../ld/history";
 import type { VariableDeclaration } from "../ld/editor/declare";
 import { addDeclaration } from "./declarations";
+import { isProjectPart } from "./parts";
 import { loadDraft, removeDraft, saveDraft } from "./drafts";
 
 export interface WorkspaceData {
@@ -66,6 +67,10 @@ export interface WorkspaceActions {
   setStBody(pou: string, text: string): void;
   /** Adds a new, empty POU to the working copy and opens it; an error message when the name is refused. */
   addPou(name: string, kind: Pou["kind"], language: Pou["language"]): string | null;
+  /** The new VAR_GLOBAL text, TYPE text or task list of the project (each marks its part unsaved). */
+  setGlobals(text: string): void;
+  setTypes(text: string): void;
+  setTasks(tasks: Task[]): void;
   /** The new text of a test file (by path, tests/<name>.st). */
   setTestText(path: string, text: string): void;
   /** Adds a test file with a first test to the working copy and opens it; an error message when refused. */
@@ -250,6 +255,10 @@ export function createWorkspaceStore(
 
       openPou(pou) {
         const { tabs, project, histories } = get();
+        if (isProjectPart(pou)) {
+          set({ active: pou, tabs: tabs.includes(pou) ? tabs : [...tabs, pou] });
+          return;
+        }
         if (isTestPath(pou)) {
           if (testOf(project, pou)) set({ active: pou, tabs: tabs.includes(pou) ? tabs : [...tabs, pou] });
           return;
@@ -327,6 +336,18 @@ export function createWorkspaceStore(
         return null;
       },
 
+      setGlobals(text) {
+        if (get().project?.globals !== text) replaceProject("Global variables", (p) => ({ ...p, globals: text }));
+      },
+
+      setTypes(text) {
+        if (get().project?.types !== text) replaceProject("Types", (p) => ({ ...p, types: text }));
+      },
+
+      setTasks(tasks) {
+        replaceProject("Tasks", (p) => ({ ...p, tasks }));
+      },
+
       setTestText(path, text) {
         if (testOf(get().project, path)?.text === text) return;
         replaceTests(path, (tests) => tests.map((t) => (testPath(t.name) === path ? { ...t, text } : t)));
@@ -363,7 +384,7 @@ export function createWorkspaceStore(
             restoredAt: null,
             conflict: null,
           });
-          for (const pou of get().tabs) if (!isTestPath(pou)) loadSymbols(pou);
+          for (const pou of get().tabs) if (!isTestPath(pou) && !isProjectPart(pou)) loadSymbols(pou);
           loadLibrary(name, openCall);
         } catch (err) {
           if (err instanceof SaveConflictError) set({ saving: false, conflict: err.conflict });
