@@ -184,9 +184,13 @@ export function createProject(name: string): Promise<ProjectSummary> {
   });
 }
 
-/** `POST /api/projects/{name}/check`: every diagnostic of the saved project, located. */
-export function checkProject(name: string): Promise<CheckReport> {
-  return requestJson<CheckReport>(`${projectPath(name)}/check`, { method: "POST" });
+/** `POST /api/check`: every diagnostic of a project as sent (the unsaved working copy), nothing stored. */
+export function checkUnsaved(project: Project): Promise<CheckReport> {
+  return requestJson<CheckReport>("/api/check", {
+    method: "POST",
+    headers: { "Content-Type": "application/json" },
+    body: JSON.stringify(project),
+  });
 }
 
 /** `GET /api/projects/{name}/export/st?pou=`: a saved POU as ST, with the lines each network became. */

@@ -62,13 +62,7 @@ describe("app shell", () => {
     const headings = within(tree)
       .getAllByRole("heading")
       .map((h) => h.textContent);
-    expect(headings).toEqual([
-      "Programs",
-      "Function blocks",
-      "Functions",
-      "Project",
-      "Tests",
-    ]);
+    expect(headings).toEqual(["Programs", "Function blocks", "Functions", "Project", "Tests"]);
     expect(within(tree).getByRole("button", { name: /^Main/ }).textContent).toBe("MainLD");
     expect(within(tree).getByRole("button", { name: /^Blinker/ }).textContent).toBe("BlinkerST");
     // the project's parts open in editors; the tree counts their globals, types and tasks
