@@ -2,13 +2,13 @@
 // POUs), the types (text with a list of the types and a form that adds a STRUCT, enumeration, array,
 // subrange or alias) and the tasks (interval, priority, watchdog, the programs each runs in order).
 // Each shows the live check of the working copy where it applies, like the POU editors.
-import { useMemo, useState, type FormEvent } from "react";
+import { Suspense, useMemo, useState, type FormEvent } from "react";
 import type { Diagnostic } from "../generated/api";
 import type { Task } from "../generated/project";
 import { DeclarationsEditor } from "../declarations/DeclarationsEditor";
 import { ELEMENTARY_TYPES, userTypeNames } from "../declarations/model";
 import { usePanels } from "../panels/store";
-import { StEditor } from "../st/StEditor";
+import { LazyStEditor, LOADING } from "./lazy";
 import { useLiveCheck } from "../st/useLiveCheck";
 import { useOnline } from "../online/store";
 import { taskIndexOf, type ProjectPart } from "./parts";
@@ -148,16 +148,18 @@ export function TypesView() {
         )}
       </div>
       <div className="types-text">
-        <StEditor
-          text={text}
-          onChange={setTypes}
-          file="types"
-          diagnostics={diagnostics}
-          completions={NO_COMPLETIONS}
-          readOnly={readOnly}
-          label="Types text"
-          focusLine={jump && (!focus || jump.seq > focus.seq) ? jump : focus}
-        />
+        <Suspense fallback={LOADING}>
+          <LazyStEditor
+            text={text}
+            onChange={setTypes}
+            file="types"
+            diagnostics={diagnostics}
+            completions={NO_COMPLETIONS}
+            readOnly={readOnly}
+            label="Types text"
+            focusLine={jump && (!focus || jump.seq > focus.seq) ? jump : focus}
+          />
+        </Suspense>
       </div>
     </div>
   );

@@ -3,7 +3,17 @@
 // simulation runs, tinted by the tests' coverage), the ST editor of test files, the simulation
 // toolbar, the bottom panels, Save (Ctrl+S) and the dialog for a save conflict (reload theirs or
 // overwrite deliberately).
-import { useCallback, useEffect, useMemo, useState, type CSSProperties, type FormEvent, type ReactNode } from "react";
+import {
+  lazy,
+  Suspense,
+  useCallback,
+  useEffect,
+  useMemo,
+  useState,
+  type CSSProperties,
+  type FormEvent,
+  type ReactNode,
+} from "react";
 import type { Diagnostic } from "../generated/api";
 import type { LdBody, Pou, Project, TestFile } from "../generated/project";
 import { LdEditor } from "../ld/editor/LdEditor";
@@ -17,34 +27,35 @@ import { focusOf, panelsStore, usePanels } from "../panels/store";
 import { StView } from "../stview/StView";
 import { DeclarationsEditor } from "../declarations/DeclarationsEditor";
 import { parseDeclarations } from "../declarations/model";
-import { isTestPath, pouOf, symbolsOf, testOf, testPath, useWorkspace, workspaceStore } from "./store";
-import { useTestCheck, useTestCompletions } from "../tests/assist";
-import { coverageLines, coverageMarks, coverageOf } from "../tests/coverage";
+import { isTestPath, pouOf, symbolsOf, testPath, useWorkspace, workspaceStore } from "./store";
+import { coverageMarks, coverageOf } from "../tests/coverage";
 import { testsStore, useTests } from "../tests/store";
 import { useDiagramPou } from "./useDiagramPou";
-import { FbdPouView } from "../fbd/FbdPouView";
 import { ExportMenu } from "../interchange/ExportMenu";
 import { ImportPlcopen } from "../interchange/ImportPlcopen";
 import { appStore } from "../store";
-import { StEditor } from "../st/StEditor";
-import { StOnlineBar } from "../st/StOnlineBar";
-import { useStAssist } from "../st/useStAssist";
-import { useStOnline } from "../st/useStOnline";
 import { DebugBar } from "../debug/DebugBar";
 import { useLdDebugging } from "../debug/ldDebugging";
 import { revealPlace } from "../debug/reveal";
-import { debugStore, useDebug } from "../debug/store";
+import { debugStore } from "../debug/store";
 import { ViewBoundary } from "./ViewBoundary";
 import { useAppKeys } from "./useAppKeys";
 import { ShortcutHelp } from "../keys/ShortcutHelp";
 import { keysOf } from "../keys/keymap";
 import { VariablesView } from "./VariablesView";
+import { InstancePicker, OnlineActions } from "./InstancePicker";
+import { LOADING } from "./lazy";
 import { KindPicker, PouActions } from "./PouActions";
 import { GlobalsView, TasksView, TypesView, useDeclarableTypes } from "./ProjectParts";
 import { isProjectPart, PROJECT_PARTS, type ProjectPart } from "./parts";
 import { typeRows } from "./types";
 import { keepSession, restoreSession, type SessionStores } from "./session";
 import { traceStore } from "../trace/store";
+
+// Loaded on first use, each in its own chunk: the ST views (CodeMirror) and the FBD editor (@xyflow).
+const StPouView = lazy(() => import("./StViews").then((m) => ({ default: m.StPouView })));
+const TestFileView = lazy(() => import("./StViews").then((m) => ({ default: m.TestFileView })));
+const FbdPouView = lazy(() => import("../fbd/FbdPouView").then((m) => ({ default: m.FbdPouView })));
 
 /** The stores a project's session (project/session.ts) is kept from. */
 const SESSION_STORES: SessionStores = { workspace: workspaceStore, online: onlineStore, trace: traceStore };
@@ -328,50 +339,6 @@ const NO_DIAGNOSTICS: Diagnostic[] = [];
 const pouNamed = (project: Project | null, name: string) =>
   project?.pous?.find((p) => p.name.toUpperCase() === name.toUpperCase());
 
-/** Which instance of a function block the online view shows (a path such as MAIN.BLINK), typed or picked from the simulation's. */
-function InstancePicker({ pou }: { pou: string }) {
-  const current = useOnline((s) => s.instances[pou] ?? "");
-  const choices = useOnline((s) => s.instanceChoices[pou.toUpperCase()]);
-  const [text, setText] = useState(current);
-  const listId = `instances-of-${pou}`;
-  return (
-    <form
-      className="instance-picker"
-      onSubmit={(e) => {
-        e.preventDefault();
-        onlineStore.getState().setInstance(pou, text);
-      }}
-    >
-      <input
-        aria-label={`Instance of ${pou}`}
-        list={listId}
-        value={text}
-        onChange={(e) => setText(e.target.value)}
-        placeholder={choices?.[0] ?? "MAIN.Instance"}
-        spellCheck={false}
-      />
-      <datalist id={listId}>
-        {choices?.map((path) => (
-          <option key={path} value={path} />
-        ))}
-      </datalist>
-      <button type="submit">Show</button>
-    </form>
-  );
-}
-
-/** Next to an online diagram's read-only notice: the FB instance shown, and going offline. */
-function OnlineActions({ pou }: { pou: Pou }) {
-  return (
-    <>
-      {pou.kind === "function_block" ? <InstancePicker pou={pou.name} /> : null}
-      <button type="button" onClick={() => void onlineStore.getState().goOffline()}>
-        Go offline to edit
-      </button>
-    </>
-  );
-}
-
 function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
   const name = pou.name;
   const setLdHistory = useWorkspace((s) => s.setLdHistory);
@@ -400,111 +367,6 @@ function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
       focus={focus}
       debugging={debugging}
     />
-  );
-}
-
-/**
- * An ST POU as text: its declarations above its body, each in the ST editor, with the live check
- * of the working copy as underlines; online, the body shows values inline.
- */
-function StPouView({ pou }: { pou: Pou }) {
-  const setStBody = useWorkspace((s) => s.setStBody);
-  const setDeclarations = useWorkspace((s) => s.setDeclarations);
-  const phase = useOnline((s) => s.phase);
-  const body = typeof pou.body === "string" ? pou.body : "";
-  const { diagnostics, completions, scope } = useStAssist(pou);
-  const online = useStOnline(pou, body, scope);
-  const readOnly = phase === "offline" ? null : "Online: go offline to edit.";
-  const allBreakpoints = useDebug((s) => s.breakpoints);
-  const upper = pou.name.toUpperCase();
-  const same = (name: string) => name.toUpperCase() === upper;
-  const lines = useMemo(
-    () => allBreakpoints.flatMap((b) => ("line" in b && b.pou.toUpperCase() === upper ? [b.line] : [])),
-    [allBreakpoints, upper],
-  );
-  const at = useOnline((s) => (s.monitor.state === "halted" ? s.monitor.at : null));
-  const covered = useTests((s) => coverageOf(s.coverage, pou.name));
-  const debug = {
-    breakpoints: lines,
-    halted: at && same(at.pou) && at.line != null ? at.line : null,
-    onToggle: (line: number) => debugStore.getState().toggle({ pou: pou.name, line }),
-  };
-  return (
-    <div
-      className="st-pou"
-      style={{ display: "flex", flexDirection: "column", gap: "0.25rem", height: "100%", minHeight: 0 }}
-    >
-      <div style={{ flex: "0 0 35%", minHeight: "6rem", overflow: "hidden", borderBottom: "1px solid #ccc" }}>
-        <StEditor
-          text={pou.declarations ?? ""}
-          onChange={(text) => setDeclarations(pou.name, text)}
-          file={`${pou.name}/declarations`}
-          diagnostics={diagnostics}
-          completions={completions}
-          readOnly={readOnly}
-          label={`${pou.name} declarations`}
-        />
-      </div>
-      <StOnlineBar
-        online={online}
-        instancePicker={pou.kind === "function_block" ? <InstancePicker pou={pou.name} /> : undefined}
-      />
-      <div style={{ flex: "1 1 65%", minHeight: "10rem", overflow: "hidden" }}>
-        <StEditor
-          text={body}
-          onChange={(text) => setStBody(pou.name, text)}
-          file={`${pou.name}/body`}
-          diagnostics={diagnostics}
-          completions={completions}
-          readOnly={readOnly}
-          label={`${pou.name} body`}
-          debug={debug}
-          online={online.view}
-          coverage={coverageLines(covered)}
-        />
-      </div>
-      {online.overlay}
-    </div>
-  );
-}
-
-/** A test file in the ST editor: live diagnostics, completions, Run this file, jumps from the Tests panel. */
-function TestFileView({ path }: { path: string }) {
-  const project = useWorkspace((s) => s.project);
-  const test = useWorkspace((s) => testOf(s.project, path));
-  const setTestText = useWorkspace((s) => s.setTestText);
-  const diagnostics = useTestCheck(project, path);
-  const completions = useTestCompletions(project);
-  const focus = usePanels((s) => (s.focus?.pou === path && s.focus.line != null ? s.focus : null));
-  const running = useTests((s) => s.running !== null);
-  if (!test || !project) return <p className="placeholder">{path} is no longer in this project.</p>;
-  return (
-    <div className="pou-view test-file-view">
-      <div className="pou-modes">
-        <button
-          type="button"
-          disabled={running}
-          onClick={() => {
-            panelsStore.getState().show("tests");
-            void testsStore.getState().run(project, { file: path });
-          }}
-        >
-          Run this file
-        </button>
-      </div>
-      <div style={{ flex: "1 1 auto", minHeight: "10rem", overflow: "hidden", height: "100%" }}>
-        <StEditor
-          text={test.text ?? ""}
-          onChange={(text) => setTestText(path, text)}
-          file={path}
-          diagnostics={diagnostics}
-          completions={completions}
-          readOnly={null}
-          label={path}
-          focusLine={focus ? { line: focus.line!, seq: focus.seq } : null}
-        />
-      </div>
-    </div>
   );
 }
 
@@ -627,7 +489,7 @@ function PouView({ name }: { name: string }) {
         ))}
       </div>
       <ViewBoundary key={mode} name={area} onReload={() => workspaceStore.getState().refreshPou(name)}>
-        {content}
+        <Suspense fallback={LOADING}>{content}</Suspense>
       </ViewBoundary>
     </div>
   );
@@ -818,7 +680,9 @@ export function WorkspaceView() {
           isProjectPart(active) ? (
             <ProjectPartView key={active} part={active} />
           ) : isTestPath(active) ? (
-            <TestFileView key={active} path={active} />
+            <Suspense fallback={LOADING}>
+              <TestFileView key={active} path={active} />
+            </Suspense>
           ) : (
             <PouView key={active} name={active} />
           )
