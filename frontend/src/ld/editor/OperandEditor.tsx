@@ -1,5 +1,5 @@
 // A text field for an operand, with autocomplete from the POU's symbols and the globals.
-import { useMemo, useRef, useState, type CSSProperties } from "react";
+import { useEffect, useMemo, useRef, useState, type CSSProperties } from "react";
 import type { SymbolInfo } from "../../generated/api";
 
 export interface OperandEditorProps {
@@ -44,6 +44,21 @@ export function OperandEditor({ label, initial, suggestions = [], style, onCommi
     end();
   };
   const commit = (value: string) => finish(() => onCommit(value));
+  // Focused as it opens, also where it is drawn hidden at first (an @xyflow node is invisible until it
+  // is measured, and a hidden field cannot take focus): tried again each frame until it has it.
+  const field = useRef<HTMLInputElement>(null);
+  useEffect(() => {
+    let frame = 0;
+    let tries = 0;
+    const focus = () => {
+      const input = field.current;
+      if (!input || document.activeElement === input) return;
+      input.focus();
+      if (document.activeElement !== input && tries++ < 60) frame = requestAnimationFrame(focus);
+    };
+    focus();
+    return () => cancelAnimationFrame(frame);
+  }, []);
   return (
     <div className="ld-operand-editor" style={style}>
       <input
@@ -51,7 +66,7 @@ export function OperandEditor({ label, initial, suggestions = [], style, onCommi
         role="combobox"
         aria-expanded={list.length > 0}
         aria-autocomplete="list"
-        autoFocus
+        ref={field}
         value={text}
         spellCheck={false}
         onChange={(e) => {
