@@ -45,6 +45,7 @@ import { keysOf } from "../keys/keymap";
 import { VariablesView } from "./VariablesView";
 import { InstancePicker, OnlineActions } from "./InstancePicker";
 import { LOADING } from "./lazy";
+import { useHidden } from "./layout";
 import { KindPicker, PouActions } from "./PouActions";
 import { GlobalsView, TasksView, TypesView, useDeclarableTypes } from "./ProjectParts";
 import { isProjectPart, PROJECT_PARTS, type ProjectPart } from "./parts";
@@ -542,6 +543,8 @@ export function WorkspaceView() {
   const revision = useWorkspace((s) => s.revision);
   const panelsHeight = usePanels((s) => s.height);
   const undo = useWorkspace((s) => s.undo);
+  const [treeHidden, toggleTree] = useHidden("tree");
+  const [panelsHidden, togglePanels] = useHidden("panels");
   const [help, setHelp] = useState(false);
 
   // A save changes the project's POU count, revision and time: the project list shows them.
@@ -613,10 +616,13 @@ export function WorkspaceView() {
   }
   return (
     <div
-      className="workspace"
+      className={`workspace${treeHidden ? " tree-hidden" : ""}${panelsHidden ? " panels-hidden" : ""}`}
       style={panelsHeight ? ({ "--panels-height": `${panelsHeight}px` } as CSSProperties) : undefined}
     >
       <div className="workspace-bar">
+        <button type="button" className="panel-toggle" aria-pressed={!treeHidden} onClick={toggleTree}>
+          {treeHidden ? "Show project tree" : "Hide project tree"}
+        </button>
         <h2>{name}</h2>
         <span className={`save-state${changed.length ? " dirty" : ""}`} role="status">
           {saving ? "Saving…" : changed.length ? `Unsaved changes in ${changed.join(", ")}` : "All changes saved"}
@@ -657,6 +663,9 @@ export function WorkspaceView() {
         <button type="button" aria-expanded={help} onClick={() => setHelp((h) => !h)}>
           Keyboard shortcuts
         </button>
+        <button type="button" className="panel-toggle" aria-pressed={!panelsHidden} onClick={togglePanels}>
+          {panelsHidden ? "Show panels" : "Hide panels"}
+        </button>
         {help ? <ShortcutHelp scopes={["app", "ld", "fbd", "st"]} onClose={() => setHelp(false)} /> : null}
         <ImportPlcopen
           onStored={() => void appStore.getState().loadProjects()}
@@ -666,9 +675,11 @@ export function WorkspaceView() {
       <ViewBoundary name="The simulation toolbar" gridArea="sim">
         <SimulationBar />
       </ViewBoundary>
-      <ViewBoundary name="The project tree" gridArea="tree">
-        <ProjectTree />
-      </ViewBoundary>
+      {treeHidden ? null : (
+        <ViewBoundary name="The project tree" gridArea="tree">
+          <ProjectTree />
+        </ViewBoundary>
+      )}
       <div className="editor-area">
         <ViewBoundary name="The debugging bar">
           <DebugBar networksOf={networksOf} reveal={revealPlace} />
@@ -690,9 +701,11 @@ export function WorkspaceView() {
           <p className="placeholder">Open a POU from the project tree.</p>
         )}
       </div>
-      <ViewBoundary name="The panels" gridArea="panels">
-        <BottomPanels onReveal={reveal} pathOfOperand={pathOfOperand} />
-      </ViewBoundary>
+      {panelsHidden ? null : (
+        <ViewBoundary name="The panels" gridArea="panels">
+          <BottomPanels onReveal={reveal} pathOfOperand={pathOfOperand} />
+        </ViewBoundary>
+      )}
       <ViewBoundary name="The save conflict dialog">
         <ConflictDialog />
       </ViewBoundary>
