@@ -128,7 +128,7 @@ describe("app shell", () => {
     const fetchMock = serve(() => json({}));
     const tree = await openPlant();
     fireEvent.click(within(tree).getByRole("button", { name: /^Blinker/ }));
-    const content = screen.getByLabelText("Blinker body");
+    const content = await screen.findByLabelText("Blinker body", {}, { timeout: 5000 }); // loaded on first use
     const view = EditorView.findFromDOM(content)!;
     const checkedBodies = () =>
       fetchMock.mock.calls
