@@ -42,3 +42,49 @@ def test_hidden_panels_give_the_editor_their_room_and_stay_hidden(page, server: 
     page.get_by_role("button", name="Show project tree").wait_for()
     page.get_by_role("button", name="Show panels").click()
     page.get_by_role("region", name="Panels").wait_for()
+
+
+ZOOMED = {
+    "name": "zoom",
+    "pous": [
+        {
+            "name": "Main",
+            "kind": "program",
+            "language": "ld",
+            "declarations": "VAR\n    Start : BOOL;\n    Motor : BOOL;\nEND_VAR",
+            "body": {
+                "networks": [
+                    {
+                        "id": "n1",
+                        "elements": [
+                            {"type": "contact", "id": "c1", "var": "Start"},
+                            {"type": "coil", "id": "q1", "var": "Motor"},
+                        ],
+                    }
+                ]
+            },
+        }
+    ],
+}
+
+
+def test_ld_zooms_with_ctrl_plus_minus_and_the_toolbar(page, server: str) -> None:
+    store_project(server, ZOOMED)
+    page.goto(server)
+    open_pou(page, "zoom", "Main")
+    contact = page.locator('g.ld-element[data-id="c1"] rect.ld-hit')
+    contact.wait_for()
+    width = contact.bounding_box()["width"]
+    zoom = page.get_by_role("group", name="Zoom").get_by_role("button", name="Zoom")
+    assert zoom.inner_text() == "100%"
+
+    contact.click()  # the editor has the keyboard
+    page.keyboard.press("Control+=")
+    page.keyboard.press("Control+=")
+    assert zoom.inner_text() == "120%"
+    assert abs(contact.bounding_box()["width"] - 1.2 * width) < 1.5
+    page.keyboard.press("Control+-")
+    assert zoom.inner_text() == "110%"
+    zoom.click()
+    assert zoom.inner_text() == "100%"
+    assert abs(contact.bounding_box()["width"] - width) < 1.5
