@@ -66,7 +66,7 @@ def test_globals_types_and_a_task_built_in_the_browser_compile_and_run(page, ser
     project = _request("GET", f"{server}/api/projects/parts")["project"]
     assert project["globals"] == "VAR_GLOBAL\n    Speed : INT;\nEND_VAR"
     assert project["types"] == "TYPE\n    Cell : STRUCT\n        Member : BOOL;\n    END_STRUCT;\nEND_TYPE"
-    assert project["tasks"] == [
-        {"name": "Task1", "interval": "T#20ms", "priority": 0, "programs": ["Main"], "watchdog_ms": None}
-    ]
+    [task] = project["tasks"]
+    assert (task["name"], task["interval"], task["priority"], task["programs"]) == ("Task1", "T#20ms", 0, ["Main"])
+    assert task["single"] is None
     go_online(page)

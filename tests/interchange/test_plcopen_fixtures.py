@@ -74,17 +74,18 @@ CHECK_FAILS = {
     "rusty-cfc/tests/integration/data/cfc/jump_missing_label.cfc": ({"FBD-UNKNOWN-LABEL"}, BROKEN),
     "rusty-cfc/tests/integration/data/cfc/jump_no_label.cfc": ({"FBD-UNKNOWN-LABEL"}, BROKEN),
     "rusty-cfc/tests/integration/data/cfc/my_add.cfc": ({"FBD-UNKNOWN-CALL"}, OTHER_FILE),
+    "ironplc/integrations/vscode/tests/grammar/snap/plcopen-configuration.xml": ({"UNKNOWN-PROGRAM"}, GRAMMAR),
     "ironplc/integrations/vscode/tests/grammar/snap/plcopen-cdata.xml": (
         {"ST-UNKNOWN-VAR", "ST-DECL", "MISSING-RETURN-TYPE"},
         GRAMMAR,
     ),
     "ironplc/integrations/vscode/tests/grammar/snap/plcopen-pou.xml": ({"ST-DECL"}, GRAMMAR),
 }
-#: SFC and IL POUs, reported as unsupported (file -> POU names).
+#: SFC POUs, reported as unsupported (file -> POU names); IL POUs are imported as IL (issue 26).
 UNSUPPORTED = {
-    "beremiz-examples/exemples/first_steps/plc.xml": ["CounterSFC", "CounterIL"],
+    "beremiz-examples/exemples/first_steps/plc.xml": ["CounterSFC"],
     "beremiz-examples/exemples/svghmi_traffic_light/plc.xml": ["traffic_light_sequence"],
-    "openplc-examples/examples/Multi_Language/plc.xml": ["CounterSFC", "CounterIL"],
+    "openplc-examples/examples/Multi_Language/plc.xml": ["CounterSFC"],
     "ironplc/integrations/vscode/tests/grammar/snap/plcopen-sfc.xml": ["MySfcProgram"],
 }
 
@@ -128,13 +129,14 @@ def test_every_fixture_imports_ld_fbd_and_st_without_errors_and_reports_sfc_and_
         if skipped:
             unsupported[path] = skipped
     SUMMARY.lines.append(
-        f"{len(fixtures)} files imported: {languages['ld']} LD, {languages['fbd']} FBD and "
-        f"{languages['st']} ST POUs; {sum(map(len, unsupported.values()))} SFC/IL POUs reported "
+        f"{len(fixtures)} files imported: {languages['ld']} LD, {languages['fbd']} FBD, "
+        f"{languages['st']} ST and {languages['il']} IL POUs; {sum(map(len, unsupported.values()))} SFC POUs reported "
         f"unsupported; import errors in {len(errors)} file(s), all in the source"
     )
     assert errors == IMPORT_ERRORS
     assert unsupported == UNSUPPORTED
     assert len(fixtures) >= 51 and languages["ld"] >= 12 and languages["fbd"] >= 36 and languages["st"] >= 12
+    assert languages["il"] == 2  # CounterIL of first_steps and of Multi_Language
 
 
 def test_imported_projects_pass_the_project_check_unless_the_source_is_not_standard(fixtures):
@@ -151,20 +153,31 @@ def test_imported_projects_pass_the_project_check_unless_the_source_is_not_stand
     assert failing == {path: codes for path, (codes, _) in CHECK_FAILS.items()}
 
 
-def test_first_steps_counters_in_ld_fbd_and_st_agree_scan_for_scan(fixtures):
-    """Beremiz first_steps: CounterST, CounterFBD and CounterLD count up, and Reset loads ResetCounterValue (17)."""
+def test_first_steps_counters_in_ld_fbd_st_and_il_agree_scan_for_scan(fixtures):
+    """Beremiz first_steps: CounterST, CounterFBD, CounterLD and CounterIL count up, and Reset loads
+    ResetCounterValue (17)."""
     project = fixtures["beremiz-examples/exemples/first_steps/plc.xml"].project
-    counters = [p for p in project.pous if p.name in ("CounterST", "CounterFBD", "CounterLD")]
-    assert [p.language for p in counters] == ["st", "fbd", "ld"]
+    counters = [p for p in project.pous if p.name in ("CounterST", "CounterFBD", "CounterLD", "CounterIL")]
+    assert sorted((p.name, p.language) for p in counters) == [
+        ("CounterFBD", "fbd"),
+        ("CounterIL", "il"),
+        ("CounterLD", "ld"),
+        ("CounterST", "st"),
+    ]
     check = Pou(
         name="Check",
         kind="program",
         language="st",
-        declarations="VAR\n    Reset : BOOL;\n    st : CounterST;\n    fbd : CounterFBD;\n    ld : CounterLD;\nEND_VAR",
-        body="st(Reset := Reset);\nfbd(Reset := Reset);\nld(Reset := Reset);",
+        declarations="VAR\n    Reset : BOOL;\n    st : CounterST;\n    fbd : CounterFBD;\n    ld : CounterLD;\n"
+        "    il : CounterIL;\nEND_VAR",
+        body="st(Reset := Reset);\nfbd(Reset := Reset);\nld(Reset := Reset);\nil(Reset := Reset);",
     )
     program = project.model_copy(
-        update={"pous": [*counters, check], "tasks": [Task(name="t", interval="T#100ms", programs=["Check"])]}
+        update={
+            "pous": [*counters, check],
+            "tasks": [Task(name="t", interval="T#100ms", programs=["Check"])],
+            "configuration": None,
+        }
     )
     result = lower_project(program)
     assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
@@ -173,21 +186,23 @@ def test_first_steps_counters_in_ld_fbd_and_st_agree_scan_for_scan(fixtures):
     for scan in range(30):
         sim.write("Check.Reset", scan in (10, 11, 25))
         sim.cycle(1)
-        counts.append((sim.read("Check.st.OUT"), sim.read("Check.fbd.OUT"), sim.read("Check.ld.Out")))
-    assert all(st == fbd == ld for st, fbd, ld in counts)
+        counts.append(
+            (sim.read("Check.st.OUT"), sim.read("Check.fbd.OUT"), sim.read("Check.ld.Out"), sim.read("Check.il.Out"))
+        )
+    assert all(st == fbd == ld == il for st, fbd, ld, il in counts)
     assert [c[0] for c in counts] == [*range(1, 11), 17, 17, *range(18, 31), 17, 18, 19, 20, 21][:30]
 
 
-def test_first_steps_runs_as_imported_with_stand_ins_for_its_sfc_and_il_counters(fixtures):
-    """The whole first_steps project builds as imported; the SFC/IL stand-ins keep their outputs at 0."""
+def test_first_steps_runs_as_imported_with_a_stand_in_for_its_sfc_counter(fixtures):
+    """The whole first_steps project builds as imported; its IL counter counts (Cnt4), the SFC stand-in stays 0."""
     result = lower_project(fixtures["beremiz-examples/exemples/first_steps/plc.xml"].project)
     assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
     sim = Simulation(result.program)
     for scan in range(1, 6):
         sim.cycle(1)
-        counts = [sim.read(f"plc_prg.Cnt{n}") for n in range(1, 6)]
-        assert counts == [scan, scan, 0, 0, scan]
-        assert sim.read("plc_prg.AVCnt") == pytest.approx(3 * scan / 5)
+        counts = [sim.read(f"plc_task_instance.Cnt{n}") for n in range(1, 6)]  # the instance of plc_prg
+        assert counts == [scan, scan, 0, scan, scan]
+        assert sim.read("plc_task_instance.AVCnt") == pytest.approx(4 * scan / 5)  # the mean of the five counters
 
 
 def test_openplc_blink_in_ld_behaves_like_its_st_twin(fixtures):
@@ -197,8 +212,8 @@ def test_openplc_blink_in_ld_behaves_like_its_st_twin(fixtures):
         external("openplc-examples", "examples", "Blink", "blink.st").read_text(), name="blink", file="blink.st"
     )
     traces = []
-    for project, path in ((ld, "Blink.blink_led"), (st, "program0.LED_PIN")):
-        assert [t.interval for t in project.tasks] == ["T#20ms"]
+    for project, path in ((ld, "instance0.blink_led"), (st, "instance0.LED_PIN")):  # the instances' names
+        assert [t.interval for t in project.all_tasks()] == ["T#20ms"]
         sim = Simulation(lower_project(project).program)
         trace = []
         for _ in range(200):

@@ -46,8 +46,16 @@ def test_motor_project_file_has_every_part_and_runs_like_the_project():
         "    END_RESOURCE\nEND_CONFIGURATION\n"
     )
     read = read_back(project)
-    assert read.tasks == project.tasks
+    assert runs(read) == runs(project)
     same_traces(project, other=read)
+
+
+def runs(project: Project) -> list[tuple]:
+    """What each task runs: (task, interval, priority, [(instance, program)]), whichever form holds it."""
+    return [
+        (t.name, t.interval, t.priority, [(p, p) if isinstance(p, str) else (p.name, p.type) for p in t.programs])
+        for t in project.all_tasks()
+    ]
 
 
 def test_project_source_map_names_pou_and_network():

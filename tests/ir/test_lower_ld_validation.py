@@ -143,8 +143,8 @@ CASES = {
     ),
     "coil on a bit of a variable": (
         rung("n1", contact("c", "a"), coil("q", "w.3")),
-        f"{WHERE} q: error LD-BIT-TARGET: coil 'q' cannot write a single bit ('w.3') yet: write a BOOL variable and "
-        "copy it into the bit in ST",
+        f"{WHERE} q: error LD-BIT-TARGET: coil 'q' cannot write a single bit or part ('w.3') yet: write a variable "
+        "and copy it into the bit in ST",
     ),
     "parallel with one branch": (
         rung("n1", parallel("p", [contact("c", "a")]), coil("q", "b")),

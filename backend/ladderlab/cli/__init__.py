@@ -1,4 +1,4 @@
-"""The ``ladderlab`` command line: serve, check, run, test, compile, export, import, schema."""
+"""The ``ladderlab`` command line: serve, check, run, test, compile, export, doc, import, schema."""
 
 from __future__ import annotations
 
@@ -16,6 +16,9 @@ from ..simulation.build import build_project
 from ..simulation.check import check_project
 from ..storage import StorageError, load_project_path
 from ..storage.atomic import write_atomic
+from ..storage.text_files import CLI_HINT, xml_for_parser
+from .doc import add_doc_command
+from .encoding import add_encoding_option, encoding_of
 from .run import jsonl_line, parse_duration, parse_set, run_scans, table_lines
 from .test import add_test_command
 
@@ -92,12 +95,14 @@ def _parser() -> argparse.ArgumentParser:
     serve.set_defaults(func=_serve)
 
     check = sub.add_parser("check", help="load and check a project, print diagnostics")
-    check.add_argument("project", type=Path, help="project folder, project .json file or .st file")
+    check.add_argument("project", type=Path, help="project folder, project .json file or .st / .il file")
+    add_encoding_option(check)
     check.add_argument("--format", choices=["text", "json"], default="text")
     check.set_defaults(func=_check)
 
     run = sub.add_parser("run", help="run a project on the virtual clock and print watched values per scan")
-    run.add_argument("project", type=Path, help="project folder, project .json file or .st file")
+    run.add_argument("project", type=Path, help="project folder, project .json file or .st / .il file")
+    add_encoding_option(run)
     length = run.add_mutually_exclusive_group()
     length.add_argument("--cycles", type=int, default=None, metavar="N", help="number of scans (default 1)")
     length.add_argument(
@@ -128,21 +133,26 @@ def _parser() -> argparse.ArgumentParser:
     add_test_command(sub)
 
     compile_ = sub.add_parser("compile", help="check and compile a project; optionally print the generated Python")
-    compile_.add_argument("project", type=Path, help="project folder, project .json file or .st file")
+    compile_.add_argument("project", type=Path, help="project folder, project .json file or .st / .il file")
+    add_encoding_option(compile_)
     compile_.add_argument("--emit-python", action="store_true", help="print the generated Python module")
     compile_.add_argument("--variant", choices=list(VARIANTS), default="fast")
     compile_.set_defaults(func=_compile)
 
     export = sub.add_parser("export", help="export a project as PLCopen XML or IEC ST text")
     export.add_argument("format", choices=["plcopen", "st"])
-    export.add_argument("project", type=Path, help="project folder, project .json file or .st file")
+    export.add_argument("project", type=Path, help="project folder, project .json file or .st / .il file")
+    add_encoding_option(export)
     export.add_argument("--pou", default=None, help="st: only this POU (default: the whole project)")
     export.add_argument("-o", "--output", type=Path, default=None, help="file to write (default: standard output)")
     export.set_defaults(func=_export)
 
+    add_doc_command(sub)
+
     import_ = sub.add_parser("import", help="import a PLCopen XML project into a workspace")
     import_.add_argument("format", choices=["plcopen"])
     import_.add_argument("file", type=Path)
+    add_encoding_option(import_)
     import_.add_argument(
         "--into", type=Path, default=None, help="workspace folder (default: $LADDERLAB_WORKSPACE or ./workspace)"
     )
@@ -155,8 +165,13 @@ def _parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _load(args: argparse.Namespace):
+    """The PROJECT argument, its files read in ``--encoding``."""
+    return load_project_path(args.project, encoding_of(args))
+
+
 def _check(args: argparse.Namespace) -> int:
-    project = load_project_path(args.project)
+    project = _load(args)
     diagnostics = check_project(project)
     if args.format == "json":
         print(json.dumps([d.model_dump(exclude_none=True) for d in diagnostics], indent=2))
@@ -170,7 +185,7 @@ def _check(args: argparse.Namespace) -> int:
 
 def _build(args: argparse.Namespace, variant: str = "fast"):
     """Load and build the project; prints the diagnostics and returns None when it has errors."""
-    project = load_project_path(args.project)
+    project = _load(args)
     build = build_project(project, variant)
     for diagnostic in build.diagnostics:
         print(diagnostic.format(), file=sys.stderr)
@@ -216,7 +231,7 @@ def _compile(args: argparse.Namespace) -> int:
 def _export(args: argparse.Namespace) -> int:
     from ..interchange.plcopen.exporter import PlcopenExportError, export_plcopen
 
-    project = load_project_path(args.project)
+    project = _load(args)
     if args.format == "plcopen":
         if args.pou is not None:
             print("ladderlab export plcopen: --pou applies to st only", file=sys.stderr)
@@ -255,7 +270,8 @@ def _import(args: argparse.Namespace) -> int:
     if not args.file.is_file():
         print(f"{args.file}: error BAD-PATH: no such file", file=sys.stderr)
         return EXIT_USAGE
-    result = import_plcopen(args.file.read_bytes(), name=args.name, file=args.file.name)
+    data = xml_for_parser(args.file.read_bytes(), args.file.name, encoding_of(args), CLI_HINT)  # exit 2 when not text
+    result = import_plcopen(data, name=args.name, file=args.file.name)
     for diagnostic in result.diagnostics:
         print(diagnostic.format(), file=sys.stderr)
     if result.project is None or has_errors(result.diagnostics):

@@ -18,7 +18,7 @@ def source_too_large(project: Project) -> Diagnostic | None:
     """The refusal of a project whose ST text (types, globals, declarations, ST bodies) exceeds the limit."""
     # stripped: a POU read from a .st file keeps its lines by leading blank lines, which cost nothing to parse
     sizes = {
-        pou.name: len(pou.declarations.strip()) + (len(pou.body.strip()) if pou.language == "st" else 0)
+        pou.name: len(pou.declarations.strip()) + (len(pou.body.strip()) if isinstance(pou.body, str) else 0)
         for pou in project.pous
     }
     total = sum(sizes.values()) + len(project.types.strip()) + len(project.globals.strip())
@@ -37,11 +37,12 @@ def data_too_large(program: Program) -> Diagnostic | None:
     """The refusal of a program whose globals and program instances hold more values than the limit."""
     counter = _Counter(program)
     parts = [("global", slot.name, counter.slot(slot)) for slot in program.globals]
-    parts += [
-        (pou.name, slot.name, counter.slot(slot))
-        for pou in program.pous.values()
-        if pou.kind == "program"
-        for slot in pou.slots
+    pous = {name.upper(): pou for name, pou in program.pous.items()}
+    parts += [  # each program instance holds its own values (two instances of one PROGRAM: twice)
+        (pous[instance.pou.upper()].name, slot.name, counter.slot(slot))
+        for instance in program.program_instances()
+        if instance.pou.upper() in pous
+        for slot in pous[instance.pou.upper()].slots
     ]
     total = sum(count for _, _, count in parts)
     if total <= limits.DATA_ELEMENTS.value:

@@ -15,7 +15,7 @@ from ..st import types as t
 from ..st.body import BodyChecker
 from ..st.rules import assignable_or_report
 from ..st.symbols import CheckResult, PouInfo, Symbol
-from .lower_types import LoweringError, TypeLowering, ir_default, unnamed_address
+from .lower_types import LoweringError, TypeLowering, ir_default
 from .nodes import Origin, Slot, Stmt, Var, VarClass
 from .types import IrType
 
@@ -37,8 +37,15 @@ class PouContext:
     project lowering builds the ``ir.Pou`` from them afterwards.
     """
 
-    def __init__(self, checked: CheckResult, info: PouInfo | None, diagnostics: list[Diagnostic] | None = None):
+    def __init__(
+        self,
+        checked: CheckResult,
+        info: PouInfo | None,
+        diagnostics: list[Diagnostic] | None = None,
+        image: dict[str, Slot] | None = None,
+    ):
         self.checked = checked
+        self.image: dict[str, Slot] = image if image is not None else {}  # addresses used without a declaration
         self.info = info
         self.name = info.name.upper() if info is not None else ""
         self.diagnostics: list[Diagnostic] = diagnostics if diagnostics is not None else []
@@ -240,9 +247,9 @@ class PouContext:
         return var
 
     def _var_for(self, symbol: Symbol) -> Var:
-        if symbol.address is not None and symbol.name == symbol.address:
-            raise unnamed_address(symbol.address)
         upper = symbol.name.upper()
+        if symbol.var_class == "VAR_EXTERNAL" and symbol.address and upper not in self.checked.globals:
+            return self.direct(symbol.address, self.types.type_of(symbol.type, symbol.type_spec))  # AT %X0.0
         if symbol.pou is None or symbol.var_class == "VAR_EXTERNAL":
             target = self.checked.globals.get(upper, symbol)
             return Var("global", upper, self.types.type_of(target.type, target.type_spec))
@@ -250,8 +257,17 @@ class PouContext:
             return self.edges[upper]
         return Var("local", upper, self.types.type_of(symbol.type, symbol.type_spec))
 
+    def direct(self, address: str, type: IrType) -> Var:
+        """An address used without a declaration (``q := %IX0.1``): a located global of its default type, one per
+        address text, shared by every POU of the project (``image``)."""
+        canonical = address.upper()
+        slot = self.image.get(canonical)
+        if slot is None:
+            slot = self.image[canonical] = Slot(canonical, "VAR_GLOBAL", type, None, address=canonical)
+        return Var("global", canonical, slot.type)
+
     def result_var(self) -> Var:
         """The result slot of the FUNCTION being lowered (assigning the function's name)."""
         if self.info is None or self.info.return_type is None:
             raise LoweringError(None)
-        return Var("local", self.name, self.types.type_of(self.info.return_type))
+        return Var("local", self.name, self.types.type_of(self.info.return_type, self.info.return_spec))

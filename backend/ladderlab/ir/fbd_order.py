@@ -47,6 +47,7 @@ _KIND = {
     "return": "return",
     "connector": "connector",
     "continuation": "continuation",
+    "comment": "comment",
 }
 
 

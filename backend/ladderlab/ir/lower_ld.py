@@ -195,7 +195,8 @@ class _Rung:
         if not box.en and not self._feed_power(callee, inputs, power, at):
             return None
         result_text = outputs.pop("OUT", None) if not callee.is_fb else None
-        call = check_call(self.ops, callee, instance, inputs, outputs, at, en, eno)
+        written = self.ops.clean_read(result_text) if result_text is not None else None  # as in y := F(...)
+        call = check_call(self.ops, callee, instance, inputs, outputs, at, en, eno, written[1] if written else None)
         if call is None:
             return None
         result = None if callee.is_fb else self._result(callee, call.ty, result_text, at, box.en)

@@ -60,13 +60,19 @@ class Member:
     name: str
 
 
-Selector = Index | Member
+@dataclass(frozen=True)
+class Deref:
+    """``^``: the variable a reference (REF_TO / POINTER TO) refers to; a NULL reference is a runtime error."""
+
+
+Selector = Index | Member | Deref
 Scope = Literal["local", "global"]
 
 
 @dataclass(frozen=True)
 class Var:
-    """A variable access path: a root slot then array indices (Index) and struct/FB member selections (Member).
+    """A variable access path: a root slot then array indices (Index), struct/FB member selections (Member) and
+    dereferences of references (Deref).
 
     ``scope`` says where the root lives: ``local`` in the POU instance (any declared
     class, VAR_IN_OUT included: the engine resolves the reference), ``global`` in the
@@ -116,7 +122,17 @@ class Convert:
     type: IrType
 
 
-Expr = Const | Var | Unary | Binary | Call | Convert
+@dataclass(frozen=True)
+class AddressOf:
+    """``REF(x)`` / ``ADR(x)``: a reference (``type``, a ``Reference``) to the variable ``var``; ``text`` is the
+    call as written, which the online views show as the reference's value."""
+
+    var: Var
+    type: IrType
+    text: str
+
+
+Expr = Const | Var | Unary | Binary | Call | Convert | AddressOf
 
 # --------------------------------------------------------------------------- statements
 
@@ -246,6 +262,16 @@ Stmt = Assign | If | Case | For | While | Repeat | Exit | Return | FbCall | FnCa
 VarClass = Literal["VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_EXTERNAL", "VAR_TEMP", "VAR_GLOBAL"]
 
 
+@dataclass(frozen=True)
+class ReferenceInit:
+    """The initial value ``REF(x)`` of a reference slot: the whole variable ``name`` of this POU (``local``) or a
+    global, made after every other slot is initialised (``text`` as written, shown online)."""
+
+    name: str
+    scope: Scope
+    text: str
+
+
 @dataclass
 class Slot:
     """A declared variable of a POU (or a global): its storage, type and initial value."""
@@ -267,7 +293,7 @@ class Pou:
     slots: list[Slot]
     blocks: list[Block]
     return_type: IrType | None = None
-    language: Literal["st", "ld", "fbd"] = "st"
+    language: Literal["st", "ld", "fbd", "il"] = "st"
     #: False: FB calls in the body see the time the POU was called with (a scan's clock, frozen in the scan).
     #: True: each FB call reads the engine's clock as it is then - a test's body, whose ADVANCE_TIME and
     #: RUN_SCANS move the clock between its statements (docs/testing.md).
@@ -275,17 +301,56 @@ class Pou:
 
 
 @dataclass
-class TaskSpec:
+class ProgramInstance:
+    """A program instance: an object of its PROGRAM's class that the engine keeps among the globals, so
+    paths start with its name (``INST.X``) and RETAIN / warm restarts treat it like a global FB instance.
+
+    ``init`` holds VAR_CONFIG initial values: (instance variable, constant, whether it is RETAIN, so that a
+    warm restart keeps its value instead)."""
+
     name: str
-    interval_ms: int
+    pou: str
+    retain: bool = False
+    init: list[tuple[Var, Const, bool]] = field(default_factory=list)
+
+
+@dataclass
+class TaskSpec:
+    """A task: cyclic every ``interval_ms`` (None: only on SINGLE), once on each rising edge of ``single``
+    (a BOOL variable's path; with an interval, the task is cyclic while it is FALSE, CFG-05), in ``priority``
+    order (0 first). ``programs`` are the instances it runs, in order; ``body`` runs them with their parameter
+    bindings and VAR_CONFIG addresses (None: just the FB calls of ``programs``)."""
+
+    name: str
+    interval_ms: float | None
     priority: int
     programs: list[str]
+    single: str | None = None
+    body: list[Stmt] | None = None
 
 
 @dataclass
 class Program:
-    """Everything the engine needs: all POUs, the globals, and the task configuration."""
+    """Everything the engine needs: all POUs, the globals, the program instances and the task configuration.
+
+    ``instances`` None means one instance of every PROGRAM, named after it (IR built without a project);
+    ``access`` maps VAR_ACCESS names to (path, read only)."""
 
     pous: dict[str, Pou]
     globals: list[Slot]
     tasks: list[TaskSpec] = field(default_factory=list)
+    instances: list[ProgramInstance] | None = None
+    access: dict[str, tuple[str, bool]] = field(default_factory=dict)
+
+    def program_instances(self) -> list[ProgramInstance]:
+        """The instances to create: ``instances``, or one per PROGRAM named after it."""
+        if self.instances is not None:
+            return self.instances
+        return [ProgramInstance(name.upper(), name.upper()) for name, pou in self.pous.items() if pou.kind == "program"]
+
+    def task_specs(self) -> list[TaskSpec]:
+        """The tasks to run: ``tasks``; for IR built without tasks or instances, one of 10 ms running every
+        PROGRAM (a configuration without tasks runs nothing)."""
+        if self.tasks or self.instances is not None:
+            return self.tasks
+        return [TaskSpec("DEFAULT", 10, 0, [i.name for i in self.program_instances()])]

@@ -9,6 +9,7 @@ from .fbd import (
     Connector,
     Continuation,
     FbdBody,
+    FbdComment,
     FbdJump,
     FbdNetwork,
     FbdNode,
@@ -21,7 +22,7 @@ from .fbd import (
     Wire,
 )
 from .ld import Box, Coil, Compare, Contact, Jump, LdBody, LdElement, LdNetwork, Parallel, Return
-from .project import PROJECT_FORMAT, Pou, Project, Task, TestFile
+from .project import PROJECT_FORMAT, Configuration, Pou, ProgramInstance, Project, Resource, Task, TestFile
 
 __all__ = [
     "PROJECT_FORMAT",
@@ -29,11 +30,13 @@ __all__ = [
     "Box",
     "Coil",
     "Compare",
+    "Configuration",
     "Connector",
     "Contact",
     "Continuation",
     "Diagnostic",
     "FbdBody",
+    "FbdComment",
     "FbdJump",
     "FbdNetwork",
     "FbdNode",
@@ -49,7 +52,9 @@ __all__ = [
     "PinRef",
     "Position",
     "Pou",
+    "ProgramInstance",
     "Project",
+    "Resource",
     "Return",
     "Severity",
     "Task",

@@ -13,6 +13,7 @@ from pydantic import BaseModel, ConfigDict, Field
 
 from .diagnostics import Diagnostic
 from .project import Project
+from .xref import XrefList
 
 
 class ProjectSummary(BaseModel):
@@ -160,6 +161,18 @@ class ScanTimes(BaseModel):
     last: float
 
 
+class IoPoint(BaseModel):
+    """One direct address the program uses, for the I/O view."""
+
+    area: Literal["I", "Q", "M", "S"] = Field(description="I inputs, Q outputs, M memory, S the Mosaic system area.")
+    address: str = Field(description="The address as written, e.g. '%IX0.1'; also its path for watch and write.")
+    type: str = Field(description="Its elementary type, e.g. 'BOOL' or 'INT'.")
+    names: list[str] = Field(
+        default_factory=list,
+        description="Paths of the variables declared AT it (e.g. 'MAIN.START'); empty when it is used without a name.",
+    )
+
+
 class SimulationInfo(BaseModel):
     """``GET /api/simulations/{id}``: one live simulation of a saved project."""
 
@@ -179,6 +192,10 @@ class SimulationInfo(BaseModel):
         default_factory=dict,
         description="Instance paths of every program and function block by POU name (upper case), e.g. "
         '{"BLINKER": ["MAIN.BLINK"]}: the instances an online view can show.',
+    )
+    io: list[IoPoint] = Field(
+        default_factory=list,
+        description="The direct addresses the program uses (inputs, outputs, memory), in address order.",
     )
 
 
@@ -374,6 +391,18 @@ class DuplicateRequest(BaseModel):
     project: Project
     name: str
     new_name: str
+class PrintDocument(BaseModel):
+    """What a printed project document holds (issue 28): the print view draws it with the editors' own layout
+    and SVG drawing; ``GET /api/projects/{name}/document`` and ``ladderlab doc`` make it."""
+
+    project: Project
+    revision: str
+    date: str = Field(description="When the document was made, ISO 8601 (UTC).")
+    pous: list[str] = Field(description="The POUs to print, in project order.")
+    library: list[LibraryEntry] = Field(description="Standard and user blocks: the pins the diagrams draw.")
+    symbols: dict[str, list[SymbolInfo]] = Field(description="Each printed POU's declarations, by POU name.")
+    globals: list[SymbolInfo]
+    xref: XrefList
 
 
 class ApiTypes(BaseModel):
@@ -405,3 +434,5 @@ class ApiTypes(BaseModel):
     references_request: ReferencesRequest
     reference_list: ReferenceList
     duplicate_request: DuplicateRequest
+    xref_list: XrefList
+    print_document: PrintDocument

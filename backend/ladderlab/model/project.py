@@ -12,9 +12,11 @@ from .ld import LdBody
 PROJECT_FORMAT = "ladderlab/1"
 
 PouKind = Literal["program", "function_block", "function"]
-Language = Literal["st", "ld", "fbd"]
+Language = Literal["st", "ld", "fbd", "il"]
 
-BODY_TYPE_BY_LANGUAGE: dict[str, type] = {"st": str, "ld": LdBody, "fbd": FbdBody}
+BODY_TYPE_BY_LANGUAGE: dict[str, type] = {"st": str, "ld": LdBody, "fbd": FbdBody, "il": str}
+#: Languages whose body is text (ST statements, IL instructions).
+TEXT_LANGUAGES = frozenset({"st", "il"})
 
 
 def _strip_trailing_whitespace(value: Any) -> Any:
@@ -23,7 +25,7 @@ def _strip_trailing_whitespace(value: Any) -> Any:
 
 
 class Pou(BaseModel):
-    """A program organisation unit. ``body`` is ST text, an ``LdBody`` or an ``FbdBody`` per ``language``."""
+    """A program organisation unit. ``body`` is ST or IL text, an ``LdBody`` or an ``FbdBody`` per ``language``."""
 
     model_config = ConfigDict(extra="forbid")
 
@@ -46,7 +48,7 @@ class Pou(BaseModel):
             return handler(value)
         if expected is str:
             if not isinstance(value, str):
-                raise ValueError("an ST POU's body must be a string of ST statements")
+                raise ValueError(f"an {language.upper()} POU's body must be a string of {language.upper()} text")
             return handler(value)
         if isinstance(value, expected):
             return value
@@ -57,18 +59,44 @@ class Pou(BaseModel):
     @model_validator(mode="after")
     def _empty_graphical_body(self) -> Pou:
         """A new LD/FBD POU created without a body starts with no networks."""
-        if self.language != "st" and isinstance(self.body, str):
+        if self.language not in TEXT_LANGUAGES and isinstance(self.body, str):
             self.body = BODY_TYPE_BY_LANGUAGE[self.language]()
         return self
+
+
+class ProgramInstance(BaseModel):
+    """A program instance: ``PROGRAM name WITH task : type (inputs, outputs)`` (IEC 61131-3 2.7.1, CFG-06)."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    name: str = Field(description="The instance's name: watch paths start with it (name.var).")
+    type: str = Field(description="The PROGRAM it is an instance of; two instances of one program are two states.")
+    retain: Literal["RETAIN", "NON_RETAIN"] | None = Field(
+        default=None, description="RETAIN: every variable of the instance keeps its value on a warm restart."
+    )
+    inputs: dict[str, str] = Field(
+        default_factory=dict, description="VAR_INPUT name -> ST expression (globals, literals) set before each run."
+    )
+    outputs: dict[str, str] = Field(
+        default_factory=dict, description="VAR_OUTPUT name -> variable (a global) written after each run."
+    )
 
 
 class Task(BaseModel):
     model_config = ConfigDict(extra="forbid")
 
     name: str
-    interval: str = Field(default="T#10ms", description="IEC TIME literal, e.g. T#10ms.")
+    interval: str | None = Field(
+        default="T#10ms", description="IEC TIME literal, e.g. T#10ms: the task runs cyclically; null: only on SINGLE."
+    )
+    single: str | None = Field(
+        default=None, description="A BOOL global or direct address: the task runs once on each of its rising edges."
+    )
     priority: int = 0
-    programs: list[str] = Field(default_factory=list, description="Program names, run in list order.")
+    programs: list[str | ProgramInstance] = Field(
+        default_factory=list,
+        description="What the task runs, in list order: a program's name (one instance named after it) or an instance.",
+    )
     watchdog_ms: int | None = Field(
         default=None,
         ge=1,
@@ -76,6 +104,39 @@ class Task(BaseModel):
         description="The task's time budget per scan in ms (its scan's own running time); longer is a watchdog "
         "fault. Null: the default of 100 ms (CODESYS's).",
     )
+
+
+class Resource(BaseModel):
+    """A RESOURCE of a configuration (``RESOURCE name ON processor``): its globals and its tasks."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    name: str | None = Field(default=None, description="None: the configuration's tasks without a RESOURCE block.")
+    on: str | None = Field(default=None, description="The processor type after ON.")
+    globals: str = Field(default="", description="ST text of the resource's VAR_GLOBAL blocks.")
+    tasks: list[Task] = Field(default_factory=list)
+    programs: list[ProgramInstance] = Field(
+        default_factory=list, description="Program instances without a task (they run in a cyclic 10 ms task)."
+    )
+
+    _normalise_texts = field_validator("globals", mode="before")(_strip_trailing_whitespace)
+
+
+class Configuration(BaseModel):
+    """The IEC configuration a project runs as (CONFIGURATION ... END_CONFIGURATION, CFG-01..08)."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    name: str
+    globals: str = Field(default="", description="ST text of the configuration's VAR_GLOBAL blocks.")
+    resources: list[Resource] = Field(default_factory=list)
+    access: str = Field(default="", description="ST text of VAR_ACCESS blocks: named access paths.")
+    config: str = Field(default="", description="ST text of VAR_CONFIG blocks: initial values and addresses.")
+
+    _normalise_texts = field_validator("globals", "access", "config", mode="before")(_strip_trailing_whitespace)
+
+    def tasks(self) -> list[Task]:
+        return [task for resource in self.resources for task in resource.tasks]
 
 
 class TestFile(BaseModel):
@@ -99,7 +160,12 @@ class Project(BaseModel):
     types: str = Field(default="", description="ST text of TYPE ... END_TYPE blocks.")
     globals: str = Field(default="", description="ST text of VAR_GLOBAL ... END_VAR blocks.")
     pous: list[Pou] = Field(default_factory=list)
-    tasks: list[Task] = Field(default_factory=list)
+    tasks: list[Task] = Field(
+        default_factory=list, description="The tasks of a project without a configuration (one implicit resource)."
+    )
+    configuration: Configuration | None = Field(
+        default=None, description="The IEC configuration; when given, its resources hold the tasks."
+    )
     tests: list[TestFile] = Field(default_factory=list, description="Unit test files (tests/<name>.st).")
 
     _normalise_texts = field_validator("types", "globals", mode="before")(_strip_trailing_whitespace)
@@ -108,3 +174,7 @@ class Project(BaseModel):
         """The POU called ``name`` (IEC names are case-insensitive)."""
         key = name.upper()
         return next((p for p in self.pous if p.name.upper() == key), None)
+
+    def all_tasks(self) -> list[Task]:
+        """The tasks the project runs: its own, or its configuration's."""
+        return self.configuration.tasks() if self.configuration is not None else list(self.tasks)

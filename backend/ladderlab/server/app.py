@@ -17,7 +17,7 @@ from fastapi.staticfiles import StaticFiles
 
 from .. import __version__
 from ..storage import Workspace
-from . import auth, fbd, interchange, library, live_check, monitor, projects, refactor, simulations, symbols, tests
+from . import auth, fbd, interchange, library, live_check, monitor, projects, refactor, simulations, symbols, tests, xref
 from .context import registry_of
 from .errors import install_error_handlers
 from .limits import BodySizeLimit, JsonGuard, Limits, WebsocketLimit
@@ -69,6 +69,7 @@ def create_app(workspace: Workspace, limits: Limits | None = None, security: Sec
         refactor,
         auth,
         tests,
+        xref,
     ):
         app.include_router(module.router)
 

@@ -13,7 +13,7 @@ from typing import Annotated, Any
 
 from fastapi import APIRouter, Body, Depends, Request, Response, status
 
-from ..model.api import ResetSimulation, ScanTimes, SimulationInfo
+from ..model.api import IoPoint, ResetSimulation, ScanTimes, SimulationInfo
 from ..simulation.registry import SimulationEntry, SimulationRegistry
 from ..simulation.remote import BuildFailed
 from ..simulation.runner import CommandError
@@ -145,4 +145,5 @@ def simulation_info(entry: SimulationEntry, info: dict[str, Any] | None = None) 
         clients=entry.clients,
         created=modified_at(entry.created),
         instances=handle.instances,
+        io=[IoPoint.model_validate(point) for point in handle.io],
     )

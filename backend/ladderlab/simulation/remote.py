@@ -133,6 +133,7 @@ class SimulationHandle:
             "make": make,
         }
         self.instances: dict[str, list[str]] = {}
+        self.io: list[dict[str, Any]] = []  # the addresses the program uses (Simulation.io_points), plain data
         self.info: dict[str, Any] = {}
         self.frame = EMPTY_FRAME
         self.status = Status(type="status", state="stopped")
@@ -198,6 +199,7 @@ class SimulationHandle:
         elif kind == "ready":
             with self._lock:
                 self.info, self.instances, self._alive = message["info"], message["instances"], True
+                self.io = message.get("io", [])
                 self.status = Status(type="status", state=message["info"]["state"])
             _answer(self._ready)  # type: ignore[arg-type]
         elif kind == "failed":

@@ -7,7 +7,8 @@ functions could run on another machine behind a job queue (docs/architecture.md,
 
 ``run_simulation(connection, spec)``: limits its address space to ``spec["memory_bytes"]``,
 builds the project (``spec["project"]``, JSON text) and answers ``ready`` (the runner's
-``info`` and the POU instances) or ``failed`` (the build's diagnostics, or the limit it hit).
+``info``, the POU instances and the addresses the program uses) or ``failed`` (the build's
+diagnostics, or the limit it hit).
 Then the main thread runs the ``SimRunner`` while a link thread passes requests
 ``{"id", "op", "args"}`` to it, sends ``beat`` at least every ``beat_s`` (the supervisor ends a
 process that goes quiet) and ends the process when the server goes away. The runner's status,
@@ -101,7 +102,8 @@ def run_simulation(connection: Connection, spec: dict[str, Any]) -> None:
         link.send({"type": "failed", "message": f"internal error while building: {type(error).__name__}: {error}"})
         return
     runner = SimRunner(sim, link, publish_s=spec["publish_s"])
-    link.send({"type": "ready", "info": runner.info(), "instances": sim.instances()})
+    io = [{"area": p.area, "address": p.address, "type": p.type, "names": p.names} for p in sim.io_points()]
+    link.send({"type": "ready", "info": runner.info(), "instances": sim.instances(), "io": io})
     threading.Thread(target=_receive, args=(link, runner, spec["beat_s"]), name="ladderlab-link", daemon=True).start()
     runner.serve()
 

@@ -19,6 +19,7 @@ from typing import Any
 from lark import Lark, Token
 from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedToken
 
+from ..iec.elementary import ALIASES, ELEMENTARY, GENERIC
 from ..model.diagnostics import Diagnostic
 from . import ast
 from .comments import attach_comments, blank_nested_comments
@@ -28,7 +29,7 @@ from .quick_decls import quick_declarations
 from .transformer import AstBuilder, StSyntaxError
 
 GRAMMAR = pathlib.Path(__file__).with_name("iec61131.lark")
-_STARTS = ["start_source", "start_pou", "start_decls", "start_stmts", "start_expr"]
+_STARTS = ["start_source", "start_pou", "start_decls", "start_stmts", "start_expr", "start_type", "start_config_blocks"]
 # Test files get a parser of their own from the same grammar: built from start_tests alone, its tables are
 # the only ones where the test keywords (END_TEST, MOCK ...) may follow a statement. (One LALR table for
 # all starts would merge them into the lookaheads of statements everywhere: ``x := 1; mock := 2;`` in a
@@ -79,6 +80,22 @@ TEST_KEYWORDS = frozenset(
 def _keywords() -> frozenset[str]:
     """Every keyword of the grammar, upper case."""
     return frozenset(_KEYWORD_RE.findall(GRAMMAR.read_text(encoding="utf-8")))
+
+
+@functools.cache
+def keywords() -> frozenset[str]:
+    """Words that are never names (KW-01, KW-02's hard keywords): the grammar's keywords but the contextual ones
+    (``_SOFT_KEYWORDS``, used as names by real libraries) and the test files' ones, TRUE/FALSE and the operator
+    words."""
+    return (_keywords() - _SOFT_KEYWORDS - TEST_KEYWORDS) | {"TRUE", "FALSE", "AND", "OR", "XOR", "NOT", "MOD"}
+
+
+@functools.cache
+def reserved_words() -> frozenset[str]:
+    """Words that cannot be declared as variable, field or type names: ``keywords()`` and the names of the
+    elementary and generic types (KW-02). (IEC 61131-3 ed. 3 types LadderLab does not have yet, such as LDT,
+    stay usable, as in edition 2.)"""
+    return keywords() | ELEMENTARY.keys() | ALIASES.keys() | GENERIC.keys() | {"STRING", "WSTRING"}
 
 
 @functools.cache
@@ -153,6 +170,16 @@ def parse_expression(
     return _finish(_run(_prepare(text, nested_comments), "start_expr", file, pou=pou), text, file, pou)
 
 
+def parse_type(text: str, *, file: str | None = None, pou: str | None = None) -> ParseResult:
+    """One type specification, e.g. a function's result type: ``INT``, ``STRING[20]``, ``ARRAY [1..3] OF TRec``."""
+    return _run(text, "start_type", file, pou=pou)
+
+
+def parse_config_blocks(text: str, *, file: str | None = None) -> ParseResult:
+    """VAR_ACCESS and VAR_CONFIG blocks (a configuration's texts): ``list[AccessBlock | ConfigBlock]``."""
+    return _finish(_run(text, "start_config_blocks", file), text)
+
+
 def parse_tests(text: str, *, file: str | None = None, nested_comments: bool = False) -> ParseResult:
     """A test file (``tests/<name>.st``): SETUP, TEARDOWN and TEST blocks (``ast.TestFile``, docs/testing.md)."""
     return _finish(_run(_prepare(text, nested_comments), "start_tests", file), text)
@@ -175,7 +202,7 @@ def _finish(result: ParseResult, original: str, file: str | None = None, pou: st
         deep = too_deep(result.ast)
         if deep is not None:  # nothing after the parser may meet nesting beyond the limits (st/nesting.py)
             message, span = deep
-            result.diagnostics.append(_diagnostic(message, span, file, pou, code="ST-TOO-DEEP"))
+            result.diagnostics.append(syntax_diagnostic(message, span, file, pou, code="ST-TOO-DEEP"))
             result.ast = None
     if result.ast is not None:
         attach_comments(result.ast, original)
@@ -195,15 +222,15 @@ def _run(text: str, start: str, file: str | None, pou: str | None = None) -> Par
             report.add(error)
         return ParseResult(None, diagnostics)
     except StSyntaxError as error:
-        diagnostics.append(_diagnostic(str(error), error.span, file, pou))
+        diagnostics.append(syntax_diagnostic(str(error), error.span, file, pou))
         return ParseResult(None, diagnostics)
     except RecursionError:
-        diagnostics.append(_diagnostic("the text is nested too deeply to parse", ast.Span(1, 1, 1, 1), file, pou))
+        diagnostics.append(syntax_diagnostic("the text is nested too deeply to parse", ast.Span(1, 1, 1, 1), file, pou))
         return ParseResult(None, diagnostics)
     return ParseResult(tree, diagnostics)
 
 
-def _diagnostic(
+def syntax_diagnostic(
     message: str, span: ast.Span, file: str | None, pou: str | None, severity: str = "error", code: str = "ST-PARSE"
 ) -> Diagnostic:
     return Diagnostic(
@@ -234,7 +261,7 @@ class _Reporter:
     def add(self, error: UnexpectedInput, severity: str = "error") -> None:
         self._reported.add(id(error))
         message, span = describe_unexpected(error, _terminal_text())
-        self.diagnostics.append(_diagnostic(message, span, self.file, self.pou, severity))
+        self.diagnostics.append(syntax_diagnostic(message, span, self.file, self.pou, severity))
 
     def recover(self, error: UnexpectedInput) -> bool:
         if len(self.diagnostics) >= _MAX_ERRORS_PER_UNIT:

@@ -286,9 +286,32 @@ def _program_config(prog: ast.ProgramConfig, level: int) -> str:
     return f"{INDENT * level}{text};\n"
 
 
+def _access_block(block: ast.AccessBlock, level: int) -> str:
+    lines = [f"{INDENT * level}VAR_ACCESS\n"]
+    for d in block.decls:
+        direction = f" {d.direction}" if d.direction else ""
+        path, ty = _expr(d.path, 0), print_type(d.type, level + 1)
+        lines.append(f"{INDENT * (level + 1)}{d.name} : {path} : {ty}{direction};\n")
+    return "".join(lines) + f"{INDENT * level}END_VAR\n"
+
+
+def _config_block(block: ast.ConfigBlock, level: int) -> str:
+    lines = [f"{INDENT * level}VAR_CONFIG\n"]
+    for d in block.decls:
+        at = f" AT {d.address}" if d.address else ""
+        init = f" := {print_initializer(d.init)}" if d.init is not None else ""
+        path, ty = _expr(d.path, 0), print_type(d.type, level + 1)
+        lines.append(f"{INDENT * (level + 1)}{path}{at} : {ty}{init};\n")
+    return "".join(lines) + f"{INDENT * level}END_VAR\n"
+
+
 def _config_item(item, level: int) -> str:
     if isinstance(item, ast.TaskConfig):
         return _task(item, level)
+    if isinstance(item, ast.AccessBlock):
+        return _access_block(item, level)
+    if isinstance(item, ast.ConfigBlock):
+        return _config_block(item, level)
     if isinstance(item, ast.ProgramConfig):
         return _program_config(item, level)
     if isinstance(item, ast.VarBlock):

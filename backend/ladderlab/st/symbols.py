@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Any
 
 from ..model.diagnostics import Diagnostic
 from . import ast
@@ -41,7 +42,7 @@ class TypeDef:
 
 @dataclass(eq=False)
 class PouInfo:
-    """A POU's interface and, for ST POUs, its checked body.
+    """A POU's interface and, for ST and IL POUs, its checked body (IL: as ST statements, st/il_check.py).
 
     ``symbols`` maps upper-case names to symbols in declaration order; ``body`` is
     the typed AST (every expression has ``.ty``, names have ``.ref``, calls have
@@ -54,8 +55,10 @@ class PouInfo:
     language: str
     return_type: Type | None
     symbols: dict[str, Symbol] = field(default_factory=dict)
+    return_spec: ast.TypeSpec | None = None  # the result type as written (subranges, a TYPE's own initial value)
     body: list[ast.Stmt] | None = None
     calls: set[str] = field(default_factory=set)
+    accumulators: list[Symbol] = field(default_factory=list)  # IL POUs: the hidden current-result variables
 
     def parameters(self, *classes: str) -> list[Symbol]:
         wanted = classes or PARAMETER_CLASSES
@@ -68,6 +71,7 @@ class CheckResult:
     types: dict[str, TypeDef] = field(default_factory=dict)
     globals: dict[str, Symbol] = field(default_factory=dict)
     pous: dict[str, PouInfo] = field(default_factory=dict)
+    configuration: Any = None  # configuration.ConfigurationInfo: the instances and tasks the project runs
 
     @property
     def ok(self) -> bool:

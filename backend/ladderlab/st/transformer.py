@@ -104,6 +104,12 @@ class AstBuilder(Transformer):
     def start_expr(self, c):
         return c[0]
 
+    def start_type(self, c):
+        return c[0]
+
+    def start_config_blocks(self, c):
+        return c
+
     def start_tests(self, c):
         setups = [x for x in c if isinstance(x, ast.TestSetup)]
         teardowns = [x for x in c if isinstance(x, ast.TestTeardown)]
@@ -168,13 +174,13 @@ class AstBuilder(Transformer):
         return ast.PointerType(kind, c[1], span_of(c))
 
     def enum_type(self, c):
-        return ast.EnumType(c, span_of(c))
+        return ast.EnumType(c[:-1], span_of(c))
 
     def enum_value(self, c):
         return ast.EnumValue(str(c[0]), c[1], span_of(c))
 
     def struct_type(self, c):
-        return ast.StructType(c[1:], span_of(c))
+        return ast.StructType(c[1:-1], span_of(c))
 
     # ------------------------------------------------------------ declarations
     def var_block(self, c):
@@ -223,6 +229,20 @@ class AstBuilder(Transformer):
 
     def task_prop(self, c):
         return (str(c[0]), c[1])
+
+    def access_block(self, c):
+        return ast.AccessBlock(c[1:-1], span_of(c))
+
+    def access_decl(self, c):
+        name, path, type_spec, direction = c[0], c[1], c[2], c[3]
+        return ast.AccessDecl(str(name), path, type_spec, direction.type if direction is not None else None, span_of(c))
+
+    def config_block(self, c):
+        return ast.ConfigBlock(c[1:-1], span_of(c))
+
+    def config_decl(self, c):
+        path, address, type_spec, init = c[0], c[1], c[2], c[3]
+        return ast.ConfigDecl(path, str(address).upper() if address is not None else None, type_spec, init, span_of(c))
 
     def program_config(self, c):
         retain, name, task, type_name, args = c[1], c[2], c[3], c[4], c[5]

@@ -12,6 +12,7 @@ import re
 from dataclasses import dataclass
 
 from ..model import Pou
+from ..st.il_parser import looks_like_il
 
 _TOKEN = re.compile(
     r"""
@@ -113,12 +114,16 @@ def _find(words: list[Word], start: int, targets: set[str], text: str, at: int, 
     raise StTextError(message, text, at)
 
 
-def parse_pou_text(text: str) -> Pou:
-    """Read one ``pous/<name>.st`` file: exactly one POU, nothing around it but comments."""
+def parse_pou_text(text: str, language: str = "st") -> Pou:
+    """Read one ``pous/<name>.st`` or ``.il`` file: exactly one POU, nothing around it but comments.
+
+    A ``.il`` file's POU is IL; in a ``.st`` file a POU whose body is IL is IL too (docs/il.md), so a
+    stored ST POU whose body reads as IL does not round-trip and is kept as ``.st.json``."""
     parsed = split_source(text)
     if len(parsed.pous) != 1 or parsed.types or parsed.globals:
         raise StTextError("a POU file must hold exactly one PROGRAM, FUNCTION_BLOCK or FUNCTION", text, 0)
-    return parsed.pous[0]
+    pou = parsed.pous[0]
+    return pou.model_copy(update={"language": "il"}) if language == "il" else pou
 
 
 def _split_pou(text: str, words: list[Word]) -> Pou:
@@ -148,11 +153,12 @@ def _split_pou(text: str, words: list[Word]) -> Pou:
     declarations = text[inner_start:decl_end] if decl_end > inner_start else ""
     body_start = min(decl_end + 1, footer_start) if declarations else inner_start
     body = text[body_start : max(footer_start - 1, body_start)]
-    return Pou(name=name, kind=kind, language="st", return_type=return_type, declarations=declarations, body=body)
+    language = "il" if looks_like_il(body) else "st"
+    return Pou(name=name, kind=kind, language=language, return_type=return_type, declarations=declarations, body=body)
 
 
 def compose_pou_text(pou: Pou) -> str:
-    """The complete IEC text of an ST POU, as stored in ``pous/<name>.st``."""
+    """The complete IEC text of an ST or IL POU, as stored in ``pous/<name>.st`` / ``.il``."""
     header = f"{POU_HEADER[pou.kind]} {pou.name}"
     if pou.kind == "function":
         header += f" : {pou.return_type}"
@@ -168,6 +174,6 @@ def compose_pou_text(pou: Pou) -> str:
 def round_trips(pou: Pou) -> bool:
     """Whether ``pou`` survives compose -> parse unchanged (else storage keeps it as JSON)."""
     try:
-        return parse_pou_text(compose_pou_text(pou)) == pou
+        return parse_pou_text(compose_pou_text(pou), pou.language) == pou
     except StTextError:
         return False

@@ -8,7 +8,9 @@ runner then runs the TEARDOWN and reports it).
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
+from typing import NoReturn
 
 from ..engine.simulation import Simulation
 from ..iec.value_text import format_time
@@ -59,7 +61,7 @@ class Host:
         self.teardown = False
         self.collect = collect  # coverage: called after every scan and before every verb
         self._faults = 0
-        self._methods: dict[str, object] = {}
+        self._methods: dict[str, Callable[..., object]] = {}
 
     def dispatch(self, site: int, *args: object) -> object:
         if self.collect is not None:
@@ -68,11 +70,11 @@ class Host:
         method = self._methods.get(where.verb)
         if method is None:
             method = self._methods[where.verb] = getattr(self, "_" + where.verb.lower())
-        return method(where, *args)  # type: ignore[operator]  # operands were checked when the test file was lowered
+        return method(where, *args)
 
     # ------------------------------------------------------------ failing
-    def fail(self, site: Site, message: str, kind: str = "assertion", **values: object) -> None:
-        raise TestFailure(Failure(message, site.line, site.column, site.verb, kind=kind, **values))  # type: ignore[arg-type]  # operands were checked when the test file was lowered
+    def fail(self, site: Site, message: str, kind: str = "assertion", **values: str | None) -> NoReturn:
+        raise TestFailure(Failure(message, site.line, site.column, site.verb, kind=kind, **values))
 
     # ------------------------------------------------------------ assertions
     def _phase(self, site: Site) -> bool:
@@ -161,10 +163,10 @@ class Host:
         if not args:  # the start: the time the timeout counts from
             return self.sim.time_ms
         start, timeout = args
-        if self.sim.time_ms - start >= timeout:  # type: ignore[operator]  # operands were checked when the test file was lowered
+        if self.sim.time_ms - start >= timeout:
             self.fail(
                 site,
-                f"RUN_UNTIL timed out: {site.operands[0]} still FALSE after {format_time(timeout)} "  # type: ignore[arg-type]  # operands were checked when the test file was lowered
+                f"RUN_UNTIL timed out: {site.operands[0]} still FALSE after {format_time(timeout)} "
                 f"({self.sim.scan_count} scans run in the test)",
                 kind="timeout",
             )
@@ -244,7 +246,7 @@ class Host:
         calls = self.sim.mocks.count(_target(reference))
         if calls is None:
             self.fail(site, f"{site.verb}: {site.operands[0]} is not mocked (write MOCK {site.operands[0]}; first)")
-        return calls  # type: ignore[return-value]  # operands were checked when the test file was lowered
+        return calls
 
 
 def _target(reference) -> object:

@@ -75,11 +75,15 @@ class SuiteOutcome:
         return 1 if self.count("failed") else 0
 
 
-def suite_files(project: Project, folder: Path | None = None, *, grade: bool = False) -> list[SuiteFile]:
-    """The project's test files (``tests/*.st``), and with ``grade`` the hidden ones of its folder too."""
+def suite_files(
+    project: Project, folder: Path | None = None, *, grade: bool = False, encoding: str | None = None
+) -> list[SuiteFile]:
+    """The project's test files (``tests/*.st``), and with ``grade`` the hidden ones of its folder too (read in
+    ``encoding``, UTF-8 when None)."""
     files = [SuiteFile(test_path(t.name), t.text) for t in project.tests]
     if grade and folder is not None and folder.is_dir():
-        files += [SuiteFile(f"{HIDDEN_TESTS_DIR}/{t.name}.st", t.text, True) for t in hidden_tests(folder)]
+        hidden = hidden_tests(folder, encoding)
+        files += [SuiteFile(f"{HIDDEN_TESTS_DIR}/{t.name}.st", t.text, True) for t in hidden]
     return files
 
 
@@ -196,7 +200,16 @@ def _result(future, index: int, number: int, files: list[SuiteFile]) -> _Part:
         return _Part(index, number, diagnostics, [], 0, [], None)
 
 
-_worker: dict[str, object] = {}
+@dataclass
+class _Worker:
+    """What a worker process keeps between its parts: the project, the files, each file prepared once."""
+
+    project: Project
+    files: list[SuiteFile]
+    prepared: dict[int, Prepared] = field(default_factory=dict)
+
+
+_worker: list[_Worker] = []  # the worker process's one _Worker, set by _worker_start
 
 
 def _worker_start(project: Project, files: list[SuiteFile], memory_limit_mb: int | None) -> None:
@@ -205,14 +218,15 @@ def _worker_start(project: Project, files: list[SuiteFile], memory_limit_mb: int
 
         limit = memory_limit_mb * 1024 * 1024
         resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
-    _worker.update(project=project, files=files, prepared={})
+    _worker[:] = [_Worker(project, files)]
 
 
 def _run_part(index: int, part: int, parts: int, options: Options, choice: tuple[str | None, str | None]) -> _Part:
-    cache: dict[int, Prepared] = _worker["prepared"]  # type: ignore[assignment]  # set by the worker pool's initialiser
+    worker = _worker[0]
+    cache = worker.prepared
     if index not in cache:
-        file: SuiteFile = _worker["files"][index]  # type: ignore[index]  # set by the worker pool's initialiser
-        cache[index] = prepare(_worker["project"], file.path, file.text, coverage=options.coverage)  # type: ignore[arg-type]  # set by the worker pool's initialiser
+        file = worker.files[index]
+        cache[index] = prepare(worker.project, file.path, file.text, coverage=options.coverage)
     prepared = cache[index]
     coverage = Coverage() if options.coverage else None
     tests = selected(prepared, *choice) if prepared.compiled is not None else []

@@ -10,6 +10,7 @@ export type {
   Connector,
   Continuation,
   FbdBody,
+  FbdComment,
   FbdJump,
   FbdNetwork,
   FbdReturn,
@@ -164,5 +165,7 @@ export function nodePins(node: FbdNode, network: FbdNetwork, lookup: Lookup, sym
       return { inputs: [{ name: SIMPLE_IN }], outputs: [] };
     case "continuation":
       return { inputs: [], outputs: [{ name: SIMPLE_OUT }] };
+    case "comment":
+      return { inputs: [], outputs: [] };
   }
 }

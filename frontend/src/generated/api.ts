@@ -13,6 +13,7 @@ export interface ApiTypes {
   fbd_order: FbdOrder;
   import_report: ImportReport;
   library_entry: LibraryEntry;
+  print_document: PrintDocument;
   project_document: ProjectDocument;
   project_summary: ProjectSummary;
   reference_list: ReferenceList;
@@ -31,6 +32,7 @@ export interface ApiTypes {
   test_open_request: TestOpenRequest;
   test_run_request: TestRunRequest;
   variable_children: VariableChildren;
+  xref_list: XrefList;
 }
 /**
  * ``POST /api/projects/{name}/check``: every diagnostic of the saved project.
@@ -103,6 +105,10 @@ export interface DuplicateRequest {
  * via the `definition` "Project".
  */
 export interface Project {
+  /**
+   * The IEC configuration; when given, its resources hold the tasks.
+   */
+  configuration?: Configuration | null;
   format?: "ladderlab/1";
   /**
    * ST text of VAR_GLOBAL ... END_VAR blocks.
@@ -110,6 +116,9 @@ export interface Project {
   globals?: string;
   name: string;
   pous?: Pou[];
+  /**
+   * The tasks of a project without a configuration (one implicit resource).
+   */
   tasks?: Task[];
   /**
    * Unit test files (tests/<name>.st).
@@ -121,7 +130,110 @@ export interface Project {
   types?: string;
 }
 /**
- * A program organisation unit. ``body`` is ST text, an ``LdBody`` or an ``FbdBody`` per ``language``.
+ * The IEC configuration a project runs as (CONFIGURATION ... END_CONFIGURATION, CFG-01..08).
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "Configuration".
+ */
+export interface Configuration {
+  /**
+   * ST text of VAR_ACCESS blocks: named access paths.
+   */
+  access?: string;
+  /**
+   * ST text of VAR_CONFIG blocks: initial values and addresses.
+   */
+  config?: string;
+  /**
+   * ST text of the configuration's VAR_GLOBAL blocks.
+   */
+  globals?: string;
+  name: string;
+  resources?: Resource[];
+}
+/**
+ * A RESOURCE of a configuration (``RESOURCE name ON processor``): its globals and its tasks.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "Resource".
+ */
+export interface Resource {
+  /**
+   * ST text of the resource's VAR_GLOBAL blocks.
+   */
+  globals?: string;
+  /**
+   * None: the configuration's tasks without a RESOURCE block.
+   */
+  name?: string | null;
+  /**
+   * The processor type after ON.
+   */
+  on?: string | null;
+  /**
+   * Program instances without a task (they run in a cyclic 10 ms task).
+   */
+  programs?: ProgramInstance[];
+  tasks?: Task[];
+}
+/**
+ * A program instance: ``PROGRAM name WITH task : type (inputs, outputs)`` (IEC 61131-3 2.7.1, CFG-06).
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "ProgramInstance".
+ */
+export interface ProgramInstance {
+  /**
+   * VAR_INPUT name -> ST expression (globals, literals) set before each run.
+   */
+  inputs?: {
+    [k: string]: string;
+  };
+  /**
+   * The instance's name: watch paths start with it (name.var).
+   */
+  name: string;
+  /**
+   * VAR_OUTPUT name -> variable (a global) written after each run.
+   */
+  outputs?: {
+    [k: string]: string;
+  };
+  /**
+   * RETAIN: every variable of the instance keeps its value on a warm restart.
+   */
+  retain?: ("RETAIN" | "NON_RETAIN") | null;
+  /**
+   * The PROGRAM it is an instance of; two instances of one program are two states.
+   */
+  type: string;
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "Task".
+ */
+export interface Task {
+  /**
+   * IEC TIME literal, e.g. T#10ms: the task runs cyclically; null: only on SINGLE.
+   */
+  interval?: string | null;
+  name: string;
+  priority?: number;
+  /**
+   * What the task runs, in list order: a program's name (one instance named after it) or an instance.
+   */
+  programs?: (string | ProgramInstance)[];
+  /**
+   * A BOOL global or direct address: the task runs once on each of its rising edges.
+   */
+  single?: string | null;
+  /**
+   * The task's time budget per scan in ms (its scan's own running time); longer is a watchdog fault. Null: the default of 100 ms (CODESYS's).
+   */
+  watchdog_ms?: number | null;
+}
+/**
+ * A program organisation unit. ``body`` is ST or IL text, an ``LdBody`` or an ``FbdBody`` per ``language``.
  *
  * This interface was referenced by `ApiTypes`'s JSON-Schema
  * via the `definition` "Pou".
@@ -133,7 +245,7 @@ export interface Pou {
    */
   declarations?: string;
   kind: "program" | "function_block" | "function";
-  language: "st" | "ld" | "fbd";
+  language: "st" | "ld" | "fbd" | "il";
   name: string;
   /**
    * Functions only: the result type.
@@ -285,7 +397,9 @@ export interface FbdNetwork {
   comment?: string | null;
   id: string;
   label?: string | null;
-  nodes?: (Block | InputNode | OutputNode | FbdJump | FbdReturn | Connector | Continuation)[];
+  nodes?: (
+    Block | InputNode | OutputNode | FbdJump | FbdReturn | Connector | Continuation | FbdComment
+  )[];
   /**
    * Node ids fixing the execution order where the wiring leaves it open.
    */
@@ -389,6 +503,21 @@ export interface Continuation {
   type?: "continuation";
 }
 /**
+ * A free comment box (issue 28): text drawn at ``pos`` in a box of ``width`` x ``height`` (None: as the
+ * text needs); it takes no part in the logic (no pins, no wires, not in the evaluation order).
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "FbdComment".
+ */
+export interface FbdComment {
+  height?: number | null;
+  id: string;
+  pos?: Position | null;
+  text?: string;
+  type?: "comment";
+  width?: number | null;
+}
+/**
  * A connection from an output pin to an input pin (``from`` is a Python keyword, hence the alias).
  *
  * This interface was referenced by `ApiTypes`'s JSON-Schema
@@ -405,26 +534,6 @@ export interface Wire {
 export interface PinRef {
   node: string;
   pin: string;
-}
-/**
- * This interface was referenced by `ApiTypes`'s JSON-Schema
- * via the `definition` "Task".
- */
-export interface Task {
-  /**
-   * IEC TIME literal, e.g. T#10ms.
-   */
-  interval?: string;
-  name: string;
-  priority?: number;
-  /**
-   * Program names, run in list order.
-   */
-  programs?: string[];
-  /**
-   * The task's time budget per scan in ms (its scan's own running time); longer is a watchdog fault. Null: the default of 100 ms (CODESYS's).
-   */
-  watchdog_ms?: number | null;
 }
 /**
  * A file of unit tests, ``tests/<name>.st`` in the project folder (docs/testing.md).
@@ -526,6 +635,128 @@ export interface Pin {
    * Elementary type, user type, or generic family such as ANY_NUM.
    */
   type: string;
+}
+/**
+ * What a printed project document holds (issue 28): the print view draws it with the editors' own layout
+ * and SVG drawing; ``GET /api/projects/{name}/document`` and ``ladderlab doc`` make it.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "PrintDocument".
+ */
+export interface PrintDocument {
+  /**
+   * When the document was made, ISO 8601 (UTC).
+   */
+  date: string;
+  globals: SymbolInfo[];
+  /**
+   * Standard and user blocks: the pins the diagrams draw.
+   */
+  library: LibraryEntry[];
+  /**
+   * The POUs to print, in project order.
+   */
+  pous: string[];
+  project: Project;
+  revision: string;
+  /**
+   * Each printed POU's declarations, by POU name.
+   */
+  symbols: {
+    [k: string]: SymbolInfo[];
+  };
+  xref: XrefList;
+}
+/**
+ * One declared variable, for the variable table and operand autocomplete.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "SymbolInfo".
+ */
+export interface SymbolInfo {
+  /**
+   * Direct address of an AT declaration, e.g. '%IX0.0'.
+   */
+  address: string | null;
+  comment: string | null;
+  constant: boolean;
+  /**
+   * Declared initial value (or the user type's), as ST text; null means the type's default.
+   */
+  initial: string | null;
+  name: string;
+  retain: boolean;
+  /**
+   * The type as declared, e.g. 'TON' or 'ARRAY[1..10] OF INT'.
+   */
+  type: string;
+  /**
+   * VAR, VAR_INPUT, VAR_OUTPUT, VAR_IN_OUT, VAR_EXTERNAL, VAR_TEMP or VAR_GLOBAL.
+   */
+  var_class: string;
+}
+/**
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "XrefList".
+ */
+export interface XrefList {
+  entries: XrefEntry[];
+}
+/**
+ * A variable: a global, or one POU's own.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "XrefEntry".
+ */
+export interface XrefEntry {
+  accesses: XrefAccess[];
+  address?: string | null;
+  comment?: string | null;
+  name: string;
+  /**
+   * The POU that declares it, None for a global.
+   */
+  pou: string | null;
+  type: string;
+  var_class: string;
+}
+/**
+ * One place a variable occurs: its declaration, a read, a write, or a call of an FB instance.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "XrefAccess".
+ */
+export interface XrefAccess {
+  column?: number | null;
+  /**
+   * LD/FBD: the element's id.
+   */
+  element?: string | null;
+  kind: "declared" | "read" | "write" | "call";
+  /**
+   * ST body line, or the declaration's line in its declarations text.
+   */
+  line?: number | null;
+  /**
+   * LD/FBD: the network's id.
+   */
+  network?: string | null;
+  /**
+   * LD/FBD: the network's number as the editor shows it.
+   */
+  network_number?: number | null;
+  /**
+   * LD/FBD: the element's operand text, e.g. 'RunTimer.Q'.
+   */
+  operand?: string | null;
+  /**
+   * What was accessed, e.g. 'RunTimer.Q' or 'arr[i]' (indices as '[]').
+   */
+  path: string;
+  /**
+   * The POU, None for the global declarations (globals.st).
+   */
+  pou: string | null;
 }
 /**
  * ``GET /api/projects/{name}``: the project and the revision a later save must name in ``If-Match``.
@@ -649,6 +880,10 @@ export interface SimulationInfo {
     [k: string]: string[];
   };
   /**
+   * The direct addresses the program uses (inputs, outputs, memory), in address order.
+   */
+  io?: IoPoint[];
+  /**
    * Times the scans fell behind the wall clock and skipped ahead.
    */
   overruns: number;
@@ -668,6 +903,30 @@ export interface SimulationInfo {
    * Virtual time of the last scan.
    */
   time_ms: number;
+}
+/**
+ * One direct address the program uses, for the I/O view.
+ *
+ * This interface was referenced by `ApiTypes`'s JSON-Schema
+ * via the `definition` "IoPoint".
+ */
+export interface IoPoint {
+  /**
+   * The address as written, e.g. '%IX0.1'; also its path for watch and write.
+   */
+  address: string;
+  /**
+   * I inputs, Q outputs, M memory, S the Mosaic system area.
+   */
+  area: "I" | "Q" | "M" | "S";
+  /**
+   * Paths of the variables declared AT it (e.g. 'MAIN.START'); empty when it is used without a name.
+   */
+  names?: string[];
+  /**
+   * Its elementary type, e.g. 'BOOL' or 'INT'.
+   */
+  type: string;
 }
 /**
  * Wall time of the scans run so far, in milliseconds (halted time excluded).
@@ -720,34 +979,6 @@ export interface SymbolTable {
    * The POU's own declarations, in declaration order.
    */
   symbols: SymbolInfo[];
-}
-/**
- * One declared variable, for the variable table and operand autocomplete.
- *
- * This interface was referenced by `ApiTypes`'s JSON-Schema
- * via the `definition` "SymbolInfo".
- */
-export interface SymbolInfo {
-  /**
-   * Direct address of an AT declaration, e.g. '%IX0.0'.
-   */
-  address: string | null;
-  comment: string | null;
-  constant: boolean;
-  /**
-   * Declared initial value (or the user type's), as ST text; null means the type's default.
-   */
-  initial: string | null;
-  name: string;
-  retain: boolean;
-  /**
-   * The type as declared, e.g. 'TON' or 'ARRAY[1..10] OF INT'.
-   */
-  type: string;
-  /**
-   * VAR, VAR_INPUT, VAR_OUTPUT, VAR_IN_OUT, VAR_EXTERNAL, VAR_TEMP or VAR_GLOBAL.
-   */
-  var_class: string;
 }
 /**
  * Body of ``POST /api/tests/check``: the diagnostics of one test file of the working copy (ST editor).

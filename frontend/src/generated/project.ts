@@ -2,6 +2,10 @@
  * Do not edit: change the pydantic models, run `make schema`, then `npm run gen:types`. */
 
 export interface Project {
+  /**
+   * The IEC configuration; when given, its resources hold the tasks.
+   */
+  configuration?: Configuration | null;
   format?: "ladderlab/1";
   /**
    * ST text of VAR_GLOBAL ... END_VAR blocks.
@@ -9,6 +13,9 @@ export interface Project {
   globals?: string;
   name: string;
   pous?: Pou[];
+  /**
+   * The tasks of a project without a configuration (one implicit resource).
+   */
   tasks?: Task[];
   /**
    * Unit test files (tests/<name>.st).
@@ -20,7 +27,110 @@ export interface Project {
   types?: string;
 }
 /**
- * A program organisation unit. ``body`` is ST text, an ``LdBody`` or an ``FbdBody`` per ``language``.
+ * The IEC configuration a project runs as (CONFIGURATION ... END_CONFIGURATION, CFG-01..08).
+ *
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "Configuration".
+ */
+export interface Configuration {
+  /**
+   * ST text of VAR_ACCESS blocks: named access paths.
+   */
+  access?: string;
+  /**
+   * ST text of VAR_CONFIG blocks: initial values and addresses.
+   */
+  config?: string;
+  /**
+   * ST text of the configuration's VAR_GLOBAL blocks.
+   */
+  globals?: string;
+  name: string;
+  resources?: Resource[];
+}
+/**
+ * A RESOURCE of a configuration (``RESOURCE name ON processor``): its globals and its tasks.
+ *
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "Resource".
+ */
+export interface Resource {
+  /**
+   * ST text of the resource's VAR_GLOBAL blocks.
+   */
+  globals?: string;
+  /**
+   * None: the configuration's tasks without a RESOURCE block.
+   */
+  name?: string | null;
+  /**
+   * The processor type after ON.
+   */
+  on?: string | null;
+  /**
+   * Program instances without a task (they run in a cyclic 10 ms task).
+   */
+  programs?: ProgramInstance[];
+  tasks?: Task[];
+}
+/**
+ * A program instance: ``PROGRAM name WITH task : type (inputs, outputs)`` (IEC 61131-3 2.7.1, CFG-06).
+ *
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "ProgramInstance".
+ */
+export interface ProgramInstance {
+  /**
+   * VAR_INPUT name -> ST expression (globals, literals) set before each run.
+   */
+  inputs?: {
+    [k: string]: string;
+  };
+  /**
+   * The instance's name: watch paths start with it (name.var).
+   */
+  name: string;
+  /**
+   * VAR_OUTPUT name -> variable (a global) written after each run.
+   */
+  outputs?: {
+    [k: string]: string;
+  };
+  /**
+   * RETAIN: every variable of the instance keeps its value on a warm restart.
+   */
+  retain?: ("RETAIN" | "NON_RETAIN") | null;
+  /**
+   * The PROGRAM it is an instance of; two instances of one program are two states.
+   */
+  type: string;
+}
+/**
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "Task".
+ */
+export interface Task {
+  /**
+   * IEC TIME literal, e.g. T#10ms: the task runs cyclically; null: only on SINGLE.
+   */
+  interval?: string | null;
+  name: string;
+  priority?: number;
+  /**
+   * What the task runs, in list order: a program's name (one instance named after it) or an instance.
+   */
+  programs?: (string | ProgramInstance)[];
+  /**
+   * A BOOL global or direct address: the task runs once on each of its rising edges.
+   */
+  single?: string | null;
+  /**
+   * The task's time budget per scan in ms (its scan's own running time); longer is a watchdog fault. Null: the default of 100 ms (CODESYS's).
+   */
+  watchdog_ms?: number | null;
+}
+/**
+ * A program organisation unit. ``body`` is ST or IL text, an ``LdBody`` or an ``FbdBody`` per ``language``.
  *
  * This interface was referenced by `Project`'s JSON-Schema
  * via the `definition` "Pou".
@@ -32,7 +142,7 @@ export interface Pou {
    */
   declarations?: string;
   kind: "program" | "function_block" | "function";
-  language: "st" | "ld" | "fbd";
+  language: "st" | "ld" | "fbd" | "il";
   name: string;
   /**
    * Functions only: the result type.
@@ -184,7 +294,9 @@ export interface FbdNetwork {
   comment?: string | null;
   id: string;
   label?: string | null;
-  nodes?: (Block | InputNode | OutputNode | FbdJump | FbdReturn | Connector | Continuation)[];
+  nodes?: (
+    Block | InputNode | OutputNode | FbdJump | FbdReturn | Connector | Continuation | FbdComment
+  )[];
   /**
    * Node ids fixing the execution order where the wiring leaves it open.
    */
@@ -288,6 +400,21 @@ export interface Continuation {
   type?: "continuation";
 }
 /**
+ * A free comment box (issue 28): text drawn at ``pos`` in a box of ``width`` x ``height`` (None: as the
+ * text needs); it takes no part in the logic (no pins, no wires, not in the evaluation order).
+ *
+ * This interface was referenced by `Project`'s JSON-Schema
+ * via the `definition` "FbdComment".
+ */
+export interface FbdComment {
+  height?: number | null;
+  id: string;
+  pos?: Position | null;
+  text?: string;
+  type?: "comment";
+  width?: number | null;
+}
+/**
  * A connection from an output pin to an input pin (``from`` is a Python keyword, hence the alias).
  *
  * This interface was referenced by `Project`'s JSON-Schema
@@ -304,26 +431,6 @@ export interface Wire {
 export interface PinRef {
   node: string;
   pin: string;
-}
-/**
- * This interface was referenced by `Project`'s JSON-Schema
- * via the `definition` "Task".
- */
-export interface Task {
-  /**
-   * IEC TIME literal, e.g. T#10ms.
-   */
-  interval?: string;
-  name: string;
-  priority?: number;
-  /**
-   * Program names, run in list order.
-   */
-  programs?: string[];
-  /**
-   * The task's time budget per scan in ms (its scan's own running time); longer is a watchdog fault. Null: the default of 100 ms (CODESYS's).
-   */
-  watchdog_ms?: number | null;
 }
 /**
  * A file of unit tests, ``tests/<name>.st`` in the project folder (docs/testing.md).

@@ -122,6 +122,12 @@ const ST = [
   { scope: "st", command: "unfold", keys: "Ctrl+Shift+]", label: "Unfold the block at the cursor" },
   { scope: "st", command: "indent", keys: "Tab", label: "Indent the selected lines" },
   { scope: "st", command: "unindent", keys: "Shift+Tab", label: "Unindent the selected lines" },
+  {
+    scope: "st",
+    command: "find-references",
+    keys: "Shift+F12",
+    label: "Find all references of the variable at the cursor",
+  },
 ] as const;
 
 export const KEYMAP = [...APP, ...LD, ...FBD, ...ST] as const satisfies readonly KeyBinding[];

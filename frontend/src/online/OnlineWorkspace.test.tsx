@@ -345,7 +345,7 @@ describe("Check and the Diagnostics panel", () => {
 describe("View as ST", () => {
   it("shows the export highlighted, links network blocks to the diagram and offers the download", async () => {
     const text =
-      "PROGRAM Main\nVAR\n    Start : BOOL;\nEND_VAR\n(* Network 1 (seal_in) *)\nMotor := (Start OR Motor) AND NOT Stop;\nEND_PROGRAM\n";
+      "PROGRAM Main\nVAR\n    Start : BOOL;\nEND_VAR\n(* Network 1: Start/stop with seal-in *)\nMotor := (Start OR Motor) AND NOT Stop;\nEND_PROGRAM\n";
     serve({
       "GET /api/projects/plant/export/st?pou=Main": () =>
         json({
@@ -362,7 +362,7 @@ describe("View as ST", () => {
     expect(code.textContent).toContain("Motor := (Start OR Motor) AND NOT Stop;");
     expect(within(code).getAllByText("AND")[0]!.className).toBe("st-keyword");
     const block = code.querySelector('[data-network="seal_in"]')!;
-    expect(block.textContent).toBe("5(* Network 1 (seal_in) *)6Motor := (Start OR Motor) AND NOT Stop;");
+    expect(block.textContent).toBe("5(* Network 1: Start/stop with seal-in *)6Motor := (Start OR Motor) AND NOT Stop;");
     expect((screen.getByRole("button", { name: "Download Main.st" }) as HTMLButtonElement).disabled).toBe(false);
 
     fireEvent.click(block);

@@ -7,7 +7,7 @@ import type { CheckReport, Diagnostic } from "../generated/api";
 import type { Project } from "../generated/project";
 import { partOf } from "../project/parts";
 
-export type PanelId = "diagnostics" | "watch" | "log" | "breakpoints" | "trace" | "tests";
+export type PanelId = "diagnostics" | "watch" | "io" | "log" | "breakpoints" | "trace" | "tests" | "xref";
 
 /** A place to reveal: a POU, and in it a network/element (diagrams) or a line (texts). */
 export interface Focus {

@@ -1,6 +1,7 @@
 // Editors of the project's own parts: the global variables (the declarations table and text of the
 // POUs), the types (text with a list of the types and a form that adds a STRUCT, enumeration, array,
-// subrange or alias) and the tasks (interval, priority, watchdog, the programs each runs in order).
+// subrange or alias) and the tasks (cyclic interval or SINGLE event, priority, watchdog, the programs each
+// runs in order; program instances are listed as they are).
 // Each shows the live check of the working copy where it applies, like the POU editors.
 import { Suspense, useMemo, useState, type FormEvent } from "react";
 import type { Diagnostic } from "../generated/api";
@@ -165,6 +166,10 @@ export function TypesView() {
   );
 }
 
+/** A task's run as listed: a program's name, or an instance "name : type" (its bindings are kept as they are). */
+const runName = (run: NonNullable<Task["programs"]>[number]) =>
+  typeof run === "string" ? run : `${run.name} : ${run.type}`;
+
 const newTask = (tasks: readonly Task[]): Task => {
   const taken = new Set(tasks.map((t) => t.name.toUpperCase()));
   let n = tasks.length + 1;
@@ -198,6 +203,7 @@ export function TasksView() {
           <tr>
             <th>Name</th>
             <th>Interval</th>
+            <th>SINGLE (event)</th>
             <th>Priority</th>
             <th>Watchdog (ms)</th>
             <th>Programs, in the order they run</th>
@@ -221,9 +227,19 @@ export function TasksView() {
                 <td>
                   <input
                     aria-label="Interval"
-                    value={task.interval ?? "T#10ms"}
+                    value={task.interval ?? ""}
+                    placeholder="none"
                     disabled={disabled}
-                    onChange={(e) => update(index, { interval: e.target.value })}
+                    onChange={(e) => update(index, { interval: e.target.value || null })}
+                  />
+                </td>
+                <td>
+                  <input
+                    aria-label="SINGLE"
+                    value={task.single ?? ""}
+                    placeholder="BOOL variable"
+                    disabled={disabled}
+                    onChange={(e) => update(index, { single: e.target.value || null })}
                   />
                 </td>
                 <td>
@@ -250,11 +266,11 @@ export function TasksView() {
                 <td>
                   <ol className="task-programs" aria-label={`Programs of ${task.name}`}>
                     {runs.map((program, p) => (
-                      <li key={`${program}:${p}`}>
-                        {program}
+                      <li key={`${runName(program)}:${p}`}>
+                        {runName(program)}
                         <button
                           type="button"
-                          aria-label={`Run ${program} earlier`}
+                          aria-label={`Run ${runName(program)} earlier`}
                           disabled={disabled || p === 0}
                           onClick={() => move(index, p, -1)}
                         >
@@ -262,7 +278,7 @@ export function TasksView() {
                         </button>
                         <button
                           type="button"
-                          aria-label={`Run ${program} later`}
+                          aria-label={`Run ${runName(program)} later`}
                           disabled={disabled || p === runs.length - 1}
                           onClick={() => move(index, p, 1)}
                         >
@@ -270,7 +286,7 @@ export function TasksView() {
                         </button>
                         <button
                           type="button"
-                          aria-label={`Remove ${program} from ${task.name}`}
+                          aria-label={`Remove ${runName(program)} from ${task.name}`}
                           disabled={disabled}
                           onClick={() => update(index, { programs: runs.filter((_, i) => i !== p) })}
                         >
@@ -287,7 +303,7 @@ export function TasksView() {
                   >
                     <option value="">add a program…</option>
                     {programs
-                      .filter((p) => !runs.some((r) => r.toUpperCase() === p.toUpperCase()))
+                      .filter((p) => !runs.some((r) => typeof r === "string" && r.toUpperCase() === p.toUpperCase()))
                       .map((p) => (
                         <option key={p} value={p}>
                           {p}

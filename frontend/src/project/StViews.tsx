@@ -1,9 +1,10 @@
-// The ST views of the app, loaded on first use with CodeMirror (their own chunk): an ST POU's
+// The text views of the app, loaded on first use with CodeMirror (their own chunk): an ST or IL POU's
 // declarations and body, and a test file.
 import { useMemo } from "react";
 import type { Pou } from "../generated/project";
 import { useOnline } from "../online/store";
 import { panelsStore, usePanels } from "../panels/store";
+import { IL_OPERATOR_COMPLETIONS } from "../st/ilLanguage";
 import { StEditor } from "../st/StEditor";
 import { StOnlineBar } from "../st/StOnlineBar";
 import { useStAssist } from "../st/useStAssist";
@@ -16,7 +17,7 @@ import { InstancePicker } from "./InstancePicker";
 import { testOf, useWorkspace } from "./store";
 
 /**
- * An ST POU as text: its declarations above its body, each in the ST editor, with the live check
+ * An ST or IL POU as text: its declarations above its body, each in the text editor, with the live check
  * of the working copy as underlines; online, the body shows values inline.
  */
 export function StPouView({ pou }: { pou: Pou }) {
@@ -24,7 +25,12 @@ export function StPouView({ pou }: { pou: Pou }) {
   const setDeclarations = useWorkspace((s) => s.setDeclarations);
   const phase = useOnline((s) => s.phase);
   const body = typeof pou.body === "string" ? pou.body : "";
-  const { diagnostics, completions, scope } = useStAssist(pou);
+  const { diagnostics, completions: stCompletions, scope } = useStAssist(pou);
+  const il = pou.language === "il";
+  const completions = useMemo(
+    () => (il ? { ...stCompletions, options: [...IL_OPERATOR_COMPLETIONS, ...stCompletions.options] } : stCompletions),
+    [il, stCompletions],
+  );
   const online = useStOnline(pou, body, scope);
   const readOnly = phase === "offline" ? null : "Online: go offline to edit.";
   const allBreakpoints = useDebug((s) => s.breakpoints);
@@ -70,6 +76,7 @@ export function StPouView({ pou }: { pou: Pou }) {
           completions={completions}
           readOnly={readOnly}
           label={`${pou.name} body`}
+          language={il ? "il" : "st"}
           debug={debug}
           online={online.view}
           coverage={coverageLines(covered)}

@@ -62,9 +62,10 @@ describe("app shell", () => {
     const headings = within(tree)
       .getAllByRole("heading")
       .map((h) => h.textContent);
-    expect(headings).toEqual(["Programs", "Function blocks", "Functions", "Project", "Tests"]);
+    expect(headings).toEqual(["Programs", "Function blocks", "Functions", "Project", "Tasks", "Tests"]);
     expect(within(tree).getByRole("button", { name: /^Main/ }).textContent).toBe("MainLD");
     expect(within(tree).getByRole("button", { name: /^Blinker/ }).textContent).toBe("BlinkerST");
+    expect(within(tree).getByText(/Fast/).textContent).toContain("every T#10ms · priority 0 · Main");
     // the project's parts open in editors; the tree counts their globals, types and tasks
     expect(within(tree).getByRole("button", { name: /^Global variables/ }).textContent).toBe("Global variables1");
     expect(within(tree).getByRole("button", { name: /^Tasks/ }).textContent).toBe("Tasks1");

@@ -30,6 +30,7 @@ import { parseDeclarations } from "../declarations/model";
 import { isTestPath, pouOf, symbolsOf, testPath, useWorkspace, workspaceStore } from "./store";
 import { coverageMarks, coverageOf } from "../tests/coverage";
 import { testsStore, useTests } from "../tests/store";
+import { runsOf } from "./tasks";
 import { useDiagramPou } from "./useDiagramPou";
 import { ExportMenu } from "../interchange/ExportMenu";
 import { ImportPlcopen } from "../interchange/ImportPlcopen";
@@ -66,7 +67,9 @@ const KINDS: { kind: Pou["kind"]; title: string }[] = [
   { kind: "function_block", title: "Function blocks" },
   { kind: "function", title: "Functions" },
 ];
-const LANGUAGE = { st: "ST", ld: "LD", fbd: "FBD" } as const;
+const LANGUAGE = { st: "ST", ld: "LD", fbd: "FBD", il: "IL" } as const;
+/** Languages whose body is text, edited in the text editor (docs/il.md). */
+const TEXT_LANGUAGES: readonly Pou["language"][] = ["st", "il"];
 
 export const formatTime = (iso: string | null | undefined): string => {
   if (!iso) return "an unknown time";
@@ -301,8 +304,51 @@ function ProjectTree() {
           ))}
         </ul>
       </section>
+      <TasksSection project={project} />
       <TestFilesTree />
     </nav>
+  );
+}
+
+/** The tasks and the program instances they run: the project's own, or its configuration's resources. */
+function TasksSection({ project }: { project: Project }) {
+  const runs = runsOf(project);
+  const empty = project.configuration
+    ? "none (an empty configuration runs nothing)"
+    : "none (the default task runs every program)";
+  return (
+    <section aria-label="Tasks">
+      <h3>{runs.configuration ? `Configuration ${runs.configuration}` : "Tasks"}</h3>
+      {runs.resources.length ? (
+        runs.resources.map((resource, index) => (
+          <div key={resource.name ?? index} className="tree-resource">
+            {resource.name ? (
+              <p className="tree-resource-name">
+                Resource {resource.name}
+                {resource.on ? <span className="tree-meta"> on {resource.on}</span> : null}
+              </p>
+            ) : null}
+            <ul>
+              {resource.tasks.map((t) => (
+                <li key={t.name} className="tree-task">
+                  {t.name}{" "}
+                  <span className="tree-meta">
+                    {t.timing} · priority {t.priority} · {t.instances.join(", ") || "no programs"}
+                  </span>
+                </li>
+              ))}
+              {resource.unscheduled.length ? (
+                <li className="tree-task">
+                  <span className="tree-meta">default task · {resource.unscheduled.join(", ")}</span>
+                </li>
+              ) : null}
+            </ul>
+          </div>
+        ))
+      ) : (
+        <p className="tree-empty">{empty}</p>
+      )}
+    </section>
   );
 }
 
@@ -433,7 +479,7 @@ function PouView({ name }: { name: string }) {
   }
   if (!pou || !project) return <p className="placeholder">{name} is no longer in this project.</p>;
   const modes: { id: PouMode; label: string }[] = [
-    { id: "body", label: pou.language === "st" ? "Body" : "Diagram" },
+    { id: "body", label: TEXT_LANGUAGES.includes(pou.language) ? "Body" : "Diagram" },
     { id: "declarations", label: "Declarations" },
     { id: "variables", label: "Variables" },
     ...(pou.language !== "st" ? [{ id: "st" as const, label: "View as ST" }] : []),
@@ -459,7 +505,7 @@ function PouView({ name }: { name: string }) {
         onRevealNetwork={(network) => panelsStore.getState().reveal({ pou: name, network })}
       />
     );
-  } else if (pou.language === "st") {
+  } else if (TEXT_LANGUAGES.includes(pou.language)) {
     content = <StPouView pou={pou} />;
   } else if (pou.language === "ld" && history) {
     content = <LdPouView pou={pou} history={history} />;

@@ -328,7 +328,7 @@ export function createWorkspaceStore(
           kind,
           language,
           declarations: emptyDeclarations(kind),
-          body: language === "st" ? "" : { networks: [] },
+          body: language === "st" || language === "il" ? "" : { networks: [] },
           ...(kind === "function" ? { return_type: "BOOL" } : {}),
         };
         replacePous(name, (pous) => [...pous, pou]);

@@ -19,10 +19,10 @@ from ...model.diagnostics import Diagnostic
 from ..errors import OUT_OF_MEMORY, WATCHDOG, PlcRuntimeError
 from . import names
 from .context import ModuleContext, std_pin_type
-from .mentions import statement_vars
+from .mentions import statement_vars, var_text
 from .module import Generated
 from .pou import boxed_locals
-from .runtime import WatchdogTimeout
+from .runtime import WatchdogTimeout, reference_text
 from .scope import global_owner
 from .typeinfo import is_composite
 
@@ -128,7 +128,9 @@ def make_fault(
                 value = reader.read(var)
             except Exception:
                 continue
-            if not isinstance(value, (list, tuple)) and not hasattr(value, "__slots__"):
+            if isinstance(var.type, t.Reference):
+                values[var_text(var)] = reference_text(value)
+            elif not isinstance(value, (list, tuple)) and not hasattr(value, "__slots__"):
                 values[var_text(var)] = value
         me = frame.f_locals.get("self")
         instance = instance_path(me) if me is not None else None
@@ -143,25 +145,6 @@ def _deepest_generated_frame(error: BaseException, filename: str) -> tuple[Frame
             found = (tb.tb_frame, tb.tb_lineno)
         tb = tb.tb_next
     return found
-
-
-def var_text(var: ir.Var) -> str:
-    """IEC text of an access path, e.g. ``ARR[I]``, ``S.F``, ``T1.Q``."""
-    text = var.name
-    for selector in var.path:
-        if isinstance(selector, ir.Member):
-            text += f".{selector.name}"
-        else:
-            text += "[" + ", ".join(_index_text(i) for i in selector.indices) + "]"
-    return text
-
-
-def _index_text(e: ir.Expr) -> str:
-    if isinstance(e, ir.Var):
-        return var_text(e)
-    if isinstance(e, ir.Const):
-        return repr(e.value)
-    return "..."
 
 
 class _FrameReader:
@@ -185,6 +168,9 @@ class _FrameReader:
                     value = value[i - lo]  # type: ignore[index]
                 rest = ty.dims[len(selector.indices) :]
                 ty = t.Array(ty.element, rest) if rest else ty.element
+            elif isinstance(selector, ir.Deref):
+                assert isinstance(ty, t.Reference) and value is not None  # (a NULL one raises: not shown)
+                value, ty = value.v, ty.target  # type: ignore[attr-defined]  # a runtime.Ref
             else:
                 value, ty = self.member(value, ty, selector.name)
         return value
@@ -198,7 +184,7 @@ class _FrameReader:
 
     def root(self, var: ir.Var) -> tuple[object, t.IrType]:
         if var.scope == "global":
-            place = self.context.globals.get(var.name)  # type: ignore[union-attr]
+            place = self.context.globals.get(var.name)
             return getattr(self.ns[global_owner(place.page)], place.attr), place.slot.type  # type: ignore[union-attr]
         slot = self.slots[var.name.upper()]
         attr, key = names.slot(slot.name), names.escape(slot.name)

@@ -27,14 +27,13 @@ from ...st import ast
 from ...st.parser import parse_declarations, parse_source
 from .blocks import Signatures
 from .body import NETWORK_GAP, Counter, write_network_list
+from .configuration import write_instances
 from .fbd_export import FbdExporter
 from .ld_export import LdExporter
 from .vars import parse_type_text, write_data_type, write_type, write_var_list
 from .xml_io import formatted_text, ladderlab_data, ladderlab_tests, q, sub, to_bytes
 
 POU_TYPE = {"program": "program", "function_block": "functionBlock", "function": "function"}
-CONFIGURATION = "config"
-RESOURCE = "resource"
 
 
 class PlcopenExportError(Exception):
@@ -128,7 +127,7 @@ class _Exporter:
         elif isinstance(pou.body, FbdBody):
             self.fbd_body(body, pou)
         else:
-            formatted_text(body, "ST", pou.body)
+            formatted_text(body, pou.language.upper(), pou.body)  # ST or IL text
 
     def ld_body(self, body: ET.Element, pou: Pou) -> None:
         exporter = LdExporter(sub(body, "LD"), self.signatures, Counter())
@@ -151,24 +150,6 @@ class _Exporter:
     # ------------------------------------------------------------ configuration
 
     def instances(self, parent: ET.Element) -> None:
-        configurations = sub(parent, "configurations")
-        globals_ = self.var_blocks(self.project.globals, None, "globals.st")
-        if not globals_ and not self.project.tasks:
-            return
-        configuration = sub(configurations, "configuration", {"name": CONFIGURATION})
-        if self.project.tasks:
-            resource = sub(configuration, "resource", {"name": RESOURCE})
-            for i, task in enumerate(self.project.tasks):
-                if not 0 <= task.priority <= 65535:
-                    self.problems.append(
-                        Diagnostic(
-                            code="PLCOPEN-EXPORT",
-                            json_path=f"$.tasks[{i}].priority",
-                            message=f"task {task.name}: PLCopen priorities are 0..65535, not {task.priority}",
-                        )
-                    )
-                node = sub(resource, "task", {"name": task.name, "interval": task.interval, "priority": task.priority})
-                for program in task.programs:
-                    sub(node, "pouInstance", {"name": program, "typeName": program})
-        for block in globals_:
-            write_var_list(configuration, block)
+        write_instances(
+            self.project, parent, lambda text, file: self.var_blocks(text, None, file), write_var_list, self.problems
+        )

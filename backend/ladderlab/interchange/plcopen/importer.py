@@ -22,10 +22,12 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from ...model.diagnostics import Diagnostic
-from ...model.project import Pou, Project, Task, TestFile
+from ...model.project import Pou, Project, TestFile
 from ...st import ast
 from ...st.parser import parse_declarations, parse_source
 from ...st.printer import print_declarations, print_source, print_type
+from ...storage.errors import ProjectLoadError
+from ...storage.text_files import xml_for_parser
 from .blocks import Signatures
 from .body import (
     IdMaker,
@@ -34,7 +36,8 @@ from .body import (
     group_by_ladderlab,
     read_network_list,
 )
-from .fbd_import import FbdImporter, fbd_groups
+from .configuration import read_instances
+from .fbd_import import FbdImporter, fbd_groups, place_comments
 from .graph import read_graph, resolve_continuations
 from .ld_import import LdImporter, ld_groups
 from .vars import KIND_BY_LIST, VarReader, parse_type_text, write_data_type, write_type, write_var_list
@@ -69,6 +72,10 @@ class ImportResult:
 
 def import_plcopen(data: bytes, *, name: str | None = None, file: str | None = None) -> ImportResult:
     """Read a PLCopen XML document; ``name`` overrides the project name, ``file`` locates the diagnostics."""
+    try:
+        data = xml_for_parser(data, file or "document")  # a document that is not UTF-8 and says nothing else
+    except ProjectLoadError as err:
+        return ImportResult(None, err.diagnostics)
     try:
         parsed = parse_untrusted_xml(data, file=file)
     except XmlInputError as err:
@@ -115,8 +122,9 @@ class _Importer:
         self.collect_foreign(root)
         types = self.types(r.path(root, "types", "dataTypes"), info_text(ours, "types"))
         configurations = r.children(r.path(root, "instances", "configurations"), "configuration")
-        globals_ = self.globals(configurations, info_text(ours, "globals"))
-        tasks = self.tasks(configurations)
+        carried = info_text(ours, "globals")
+        read_list = lambda lists, own: self.globals(lists, own if own is not None else carried)  # noqa: E731
+        globals_, configuration, tasks = read_instances(r, configurations, read_list)
         for data_name, count in sorted(self.foreign.items()):
             r.report(
                 "PLCOPEN-ADDDATA",
@@ -127,7 +135,13 @@ class _Importer:
             )
         tests = [TestFile(name=test, text=text) for test, text in test_texts(ours)]
         return Project(
-            name=name, types=types, globals=globals_, pous=[p for p in pous if p is not None], tasks=tasks, tests=tests
+            name=name,
+            types=types,
+            globals=globals_,
+            pous=[p for p in pous if p is not None],
+            tasks=tasks,
+            configuration=configuration,
+            tests=tests,
         )
 
     # ------------------------------------------------------------ addData bookkeeping
@@ -223,7 +237,7 @@ class _Importer:
         body = bodies[0] if bodies else None
         language = next(r.elements(body), None)
         tag = local(language) if language is not None else "ST"
-        if tag in ("SFC", "IL"):
+        if tag == "SFC":
             r.report(
                 "PLCOPEN-UNSUPPORTED",
                 f"POU {pou.name} is written in {tag}, which LadderLab does not support; "
@@ -234,8 +248,8 @@ class _Importer:
                 pou=pou.name,
             )
             return pou.model_copy(update={"body": unsupported_body(tag, language)})
-        if tag == "ST":
-            return pou.model_copy(update={"body": text_content(language)})
+        if tag in ("ST", "IL"):  # IL bodies are IL text like ST bodies are ST text (docs/il.md)
+            return pou.model_copy(update={"body": text_content(language), "language": tag.lower()})
         graph = read_graph(language, r, pou.name, signatures)
         listing = read_network_list(body, r)
         ids = IdMaker(claimed_ids(graph, listing))
@@ -255,7 +269,7 @@ class _Importer:
         relative, orders = groups is not None, {}
         if groups is None:
             groups, orders = fbd_groups(graph, r)
-            attach_headers(groups, graph, r, labels=False)
+            place_comments(groups, graph)
         fbd = FbdImporter(graph, r, pou.name, ids).body(groups, orders, relative=relative)
         return Pou(
             name=pou.name,
@@ -282,66 +296,12 @@ class _Importer:
         decls = [reader.data_type(e) for e in elements]
         return print_source(ast.Source([ast.TypeBlock(decls)])).rstrip() if decls else ""
 
-    def globals(self, configurations: list[ET.Element], carried: str | None) -> str:
-        r = self.reader
-        lists = [
-            g
-            for c in configurations
-            for holder in [c, *r.children(c, "resource")]
-            for g in r.children(holder, "globalVars")
-        ]
+    def globals(self, lists: list[ET.Element], carried: str | None) -> str:
+        """A VAR_GLOBAL text from ``<globalVars>`` lists (the carried text when it still says the same)."""
         if carried is not None and self.same(lists, carried, _declaration_elements):
             return carried
-        reader = VarReader(r)
+        reader = VarReader(self.reader)
         return print_declarations([reader.var_block(g, "VAR_GLOBAL") for g in lists]).rstrip()
-
-    def tasks(self, configurations: list[ET.Element]) -> list[Task]:
-        r = self.reader
-        if len(configurations) > 1:
-            r.report(
-                "PLCOPEN-CONFIG",
-                f"{len(configurations)} configurations are merged into the project's one task list",
-                configurations[1],
-                severity="warning",
-            )
-        tasks = []
-        for resource in (res for c in configurations for res in r.children(c, "resource")):
-            for task in r.children(resource, "task"):
-                tasks.append(self.task(task))
-            for instance in r.children(resource, "pouInstance"):
-                r.report(
-                    "PLCOPEN-CONFIG",
-                    f"program instance '{instance.get('name', '')}' is not assigned to a "
-                    "task; LadderLab runs programs from tasks only, so it was not imported",
-                    instance,
-                    severity="warning",
-                )
-        return tasks
-
-    def task(self, node: ET.Element) -> Task:
-        r = self.reader
-        name = node.get("name", "")
-        interval = node.get("interval")
-        if not interval:
-            r.report(
-                "PLCOPEN-CONFIG",
-                f"task {name} has no interval (an event task); it is imported as a cyclic task of T#10ms",
-                node,
-                severity="warning",
-            )
-            interval = "T#10ms"
-        try:
-            priority = int(node.get("priority", "0"))
-        except ValueError:
-            r.report(
-                "PLCOPEN-CONFIG",
-                f"task {name}: priority '{node.get('priority')}' is not a number; 0 is used",
-                node,
-                severity="warning",
-            )
-            priority = 0
-        programs = [i.get("typeName", "") for i in r.children(node, "pouInstance")]
-        return Task(name=name, interval=interval, priority=priority, programs=programs)
 
 
 # ---------------------------------------------------------------- regenerating typed XML from carried texts
@@ -378,22 +338,19 @@ def _return_type_elements(text: str) -> list[ET.Element] | None:
 
 
 #: What an unsupported body leaves in the comments of the POU standing in for it.
-_KEPT = {"IL": "the IL text is kept", "SFC": "the names of its steps are kept"}
+_KEPT = {"SFC": "the names of its steps are kept"}
 
 
 def unsupported_body(tag: str, language: ET.Element) -> str:
-    """The ST body standing in for an SFC or IL body: no statements, the original described in line comments.
+    """The ST body standing in for an SFC body: no statements, the original described in line comments.
 
     The POU keeps its interface so that the programs calling it still build (the rest of an imported
     project runs); the comment says, where the user opens the POU, that this body does nothing.
     """
-    if tag == "IL":
-        original = text_content(language).strip().splitlines()
-    else:
-        original = [
-            f"step {s.get('name', '')}{' (initial)' if s.get('initialStep') == 'true' else ''}"
-            for s in language
-            if local(s) == "step"
-        ]
+    original = [
+        f"step {s.get('name', '')}{' (initial)' if s.get('initialStep') == 'true' else ''}"
+        for s in language
+        if local(s) == "step"
+    ]
     lines = [f"// Imported from {tag}, which LadderLab cannot run: this body does nothing. The original {tag}:"]
     return "\n".join(lines + [f"// {line}".rstrip() for line in original])

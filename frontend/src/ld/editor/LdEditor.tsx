@@ -41,6 +41,7 @@ import { EditorNotices } from "./EditorNotices";
 import { clipboardActions, type LastClip } from "./systemClipboard";
 import { OperandValuePrompt, type ValueRequest } from "./ValuePrompt";
 import { onlineOperandItems } from "../../online/operandCommands";
+import { referencesItem } from "../../xref/store";
 import { commandsFor, keysOf } from "../../keys/keymap";
 import { ShortcutHelp } from "../../keys/ShortcutHelp";
 import "../ld.css";
@@ -614,12 +615,14 @@ export function LdEditor({
             },
           ]
         : [];
-    const operand =
-      onlineActions && liveSelection?.kind === "elements" ? variableOf(body, liveSelection.ids[0]!) : null;
-    if (!onlineActions || !operand) return breakpoint;
+    const selected = liveSelection?.kind === "elements" ? variableOf(body, liveSelection.ids[0]!) : null;
+    const references = selected ? [referencesItem(selected)] : [];
+    const operand = onlineActions ? selected : null;
+    if (!onlineActions || !operand) return [...breakpoint, ...references];
     return [
       ...breakpoint,
       ...onlineOperandItems(operand, onlineActions, (action) => setValuePrompt({ operand, action })),
+      ...references,
     ];
   };
 
