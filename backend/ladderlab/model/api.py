@@ -391,6 +391,8 @@ class DuplicateRequest(BaseModel):
     project: Project
     name: str
     new_name: str
+
+
 class PrintDocument(BaseModel):
     """What a printed project document holds (issue 28): the print view draws it with the editors' own layout
     and SVG drawing; ``GET /api/projects/{name}/document`` and ``ladderlab doc`` make it."""

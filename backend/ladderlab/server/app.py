@@ -17,7 +17,20 @@ from fastapi.staticfiles import StaticFiles
 
 from .. import __version__
 from ..storage import Workspace
-from . import auth, fbd, interchange, library, live_check, monitor, projects, refactor, simulations, symbols, tests, xref
+from . import (
+    auth,
+    fbd,
+    interchange,
+    library,
+    live_check,
+    monitor,
+    projects,
+    refactor,
+    simulations,
+    symbols,
+    tests,
+    xref,
+)
 from .context import registry_of
 from .errors import install_error_handlers
 from .limits import BodySizeLimit, JsonGuard, Limits, WebsocketLimit
