@@ -726,3 +726,14 @@ def test_fbd_pin_modifiers_and_output_modes():
         ("in:NOT a", "OUT", "AND", "IN2"),
         ("AND", "OUT", "out:q", "IN"),
     }
+
+
+def test_a_declaration_the_importer_cannot_read_is_reported_with_its_pou():
+    """PLCOPEN-DECL (docs/diagnostics.md): an empty type element is read as BOOL and reported as an error."""
+    interface = '<localVars><variable name="x"><type/></variable></localVars>'
+    result = import_plcopen(
+        project_xml(pou_xml("Main", "<xhtml:p>x := TRUE;</xhtml:p>", language="ST", interface=interface))
+    )
+    assert [(d.code, d.severity, d.pou, d.message) for d in result.diagnostics] == [
+        ("PLCOPEN-DECL", "error", "Main", "a type element is empty; assumed BOOL")
+    ]

@@ -145,3 +145,77 @@ def test_a_language_without_lowering_is_reported(monkeypatch):
     result = lower_project(_project([Pou(name="Ladder", kind="program", language="ld")]))
     assert result.program is None
     assert [d.format() for d in result.diagnostics] == ["POU Ladder: error IR-UNSUPPORTED: LD POUs cannot be run yet"]
+
+
+def test_the_model_rules_are_reported_with_the_project_and_stop_the_build():
+    """A program with a return type, two tasks and two test files of one name (names ignore case)."""
+    from ladderlab.model import TestFile
+
+    project = _project(
+        [Pou(name="Main", kind="program", language="st", return_type="INT")],
+        [Task(name="Fast", interval="T#10ms", programs=["Main"]), Task(name="fast", interval="T#20ms")],
+        tests=[TestFile(name="motor"), TestFile(name="Motor")],
+    )
+    result = lower_project(project)
+    assert result.program is None
+    assert [d.format() for d in result.diagnostics] == [
+        "POU Main: error UNEXPECTED-RETURN-TYPE: only functions have a return type; Main is a program",
+        "$.tasks[1]: error DUPLICATE-TASK: task 'fast' is declared twice",
+        "tests/Motor.st: error DUPLICATE-TEST-FILE: test file 'Motor' is there twice",
+    ]
+
+
+def test_a_lowering_failure_nothing_explains_is_reported_never_dropped():
+    """IR-INTERNAL: a statement the lowering gave up on without a message, while the checker found nothing wrong."""
+    from ladderlab.ir.lower_types import LoweringError
+    from ladderlab.st import ast
+
+    project = _project(
+        [Pou(name="Main", kind="program", language="st", body="x := 1;", declarations="VAR x : INT; END_VAR")]
+    )
+    checked = check_project(project)
+    ctx = PouContext(checked, checked.pou("Main"), [])
+    ctx.report_error(LoweringError(None), ast.Name("x", ast.Span(1, 1, 1, 2)))
+    assert [d.format() for d in ctx.diagnostics] == [
+        "Main/body:1:1, POU Main: error IR-INTERNAL: this could not be lowered (an internal error of LadderLab: "
+        "please report it)"
+    ]
+
+
+def test_a_task_interval_that_is_not_a_time_literal_stops_the_build():
+    """BAD-INTERVAL (docs/diagnostics.md): ``10ms`` lacks the ``T#`` of a TIME literal."""
+    project = _project([Pou(name="Main", kind="program", language="st")], [Task(name="Main", interval="10ms")])
+    result = lower_project(project)
+    assert result.program is None
+    assert [d.format() for d in result.diagnostics] == [
+        "$.tasks[0].interval: error BAD-INTERVAL: task Main: interval '10ms' is not a TIME literal such as T#10ms"
+    ]
+
+
+def test_one_program_instance_in_two_tasks_stops_the_build():
+    """DUPLICATE-INSTANCE (docs/diagnostics.md, CFG-06): an instance runs in one task only."""
+    project = _project(
+        [Pou(name="Main", kind="program", language="st")],
+        [
+            Task(name="Fast", interval="T#10ms", programs=["Main"]),
+            Task(name="Slow", interval="T#100ms", programs=["Main"]),
+        ],
+    )
+    result = lower_project(project)
+    assert result.program is None
+    assert [d.format() for d in result.diagnostics] == [
+        "$.tasks[1].programs[0]: error DUPLICATE-INSTANCE: the program instance Main is run twice (task Fast and "
+        "task Slow): an instance runs in one task only; declare a second instance to run the program twice"
+    ]
+
+
+def test_a_project_with_a_configuration_keeps_no_task_list():
+    """TASKS-AND-CONFIGURATION (docs/diagnostics.md): the tasks belong in the configuration's resources."""
+    from ladderlab.model.project import Configuration
+
+    project = _project([Pou(name="Main", kind="program", language="st")], [Task(name="Main", interval="T#10ms")])
+    project = project.model_copy(update={"configuration": Configuration(name="Plant")})
+    assert [d.format() for d in lower_project(project).diagnostics][:1] == [
+        "$.tasks: error TASKS-AND-CONFIGURATION: a project with a configuration keeps its tasks in the "
+        "configuration's resources, not in tasks"
+    ]

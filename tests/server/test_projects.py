@@ -464,6 +464,7 @@ def test_check_reports_a_located_st_error(client: TestClient, motor: str) -> Non
             "network": None,
             "element": None,
             "pin": None,
+            "place": None,
             "line": 2,
             "column": 6,
             "end_line": 2,

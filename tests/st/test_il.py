@@ -146,6 +146,10 @@ def _errors(body: str, declarations: str = "i : INT; b : BOOL; t : TON;", extra:
             "P/body:4:1, POU P: error IL-TYPE: ADD b: the accumulator holds INT, the operand is BOOL",
         ),
         ("LD i\nST b", "P/body:4:1, POU P: error IL-TYPE: ST b: the accumulator holds INT, b is BOOL"),
+        (
+            "LD i\nADD( IN1 := 2\n)\nST i",
+            "P/body:4:6, POU P: error IL-PARSE: IL operands are values, not 'name := value' assignments",
+        ),
         ("ST i", "P/body:3:1, POU P: error IL-NO-CR: ST needs a value in the accumulator: load one first (LD)"),
         ("LD b\nJMPC nowhere", "P/body:4:1, POU P: error IL-LABEL: there is no label 'nowhere' in P"),
         ("LD i\nADD( 2", "P/body:4:1, POU P: error IL-PAREN: 'ADD(' is never closed with ')'"),

@@ -8,6 +8,7 @@ import json
 import os
 import sys
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from ..engine.codegen import VARIANTS
 from ..model import has_errors
@@ -22,13 +23,19 @@ from .encoding import add_encoding_option, encoding_of
 from .run import jsonl_line, parse_duration, parse_set, run_scans, table_lines
 from .test import add_test_command
 
+if TYPE_CHECKING:  # the server is imported only by the commands that start it
+    from ..model import Project
+    from ..server.security import Security
+    from ..simulation.build import Build
+
 EXIT_OK, EXIT_ERRORS, EXIT_USAGE, EXIT_RUNTIME, EXIT_INTERNAL = 0, 1, 2, 3, 70
 
 
 def main(argv: list[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     try:
-        return args.func(args)
+        code: int = args.func(args)
+        return code
     except StorageError as err:
         for diagnostic in err.diagnostics:
             print(diagnostic.format(), file=sys.stderr)
@@ -165,7 +172,7 @@ def _parser() -> argparse.ArgumentParser:
     return parser
 
 
-def _load(args: argparse.Namespace):
+def _load(args: argparse.Namespace) -> Project:
     """The PROJECT argument, its files read in ``--encoding``."""
     return load_project_path(args.project, encoding_of(args))
 
@@ -183,7 +190,7 @@ def _check(args: argparse.Namespace) -> int:
     return EXIT_ERRORS if has_errors(diagnostics) else EXIT_OK
 
 
-def _build(args: argparse.Namespace, variant: str = "fast"):
+def _build(args: argparse.Namespace, variant: str = "fast") -> Build | None:
     """Load and build the project; prints the diagnostics and returns None when it has errors."""
     project = _load(args)
     build = build_project(project, variant)
@@ -221,7 +228,7 @@ def _run(args: argparse.Namespace) -> int:
 
 def _compile(args: argparse.Namespace) -> int:
     build = _build(args, args.variant)
-    if build is None:
+    if build is None or build.compiled is None:
         return EXIT_ERRORS
     if args.emit_python:
         print(build.compiled.source)
@@ -243,9 +250,10 @@ def _export(args: argparse.Namespace) -> int:
                 print(diagnostic.format(), file=sys.stderr)
             return EXIT_ERRORS
     else:
-        data = _st_export(project, args.pou)
-        if data is None:
+        text = _st_export(project, args.pou)
+        if text is None:
             return EXIT_ERRORS
+        data = text
     if args.output is None:
         sys.stdout.write(data.decode("utf-8"))
     else:
@@ -253,7 +261,7 @@ def _export(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
-def _st_export(project, pou: str | None) -> bytes | None:
+def _st_export(project: Project, pou: str | None) -> bytes | None:
     from ..interchange.st.export import export_pou_st
     from ..interchange.st.project import export_project_st
 
@@ -339,7 +347,7 @@ def _serve(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
-def serve_security(args: argparse.Namespace):
+def serve_security(args: argparse.Namespace) -> Security:
     """The server's Security from the command line: its names, extra origins and sign-in."""
     from ..server.auth import Auth
     from ..server.security import LOOPBACK_HOSTS, Security

@@ -35,7 +35,7 @@ class DocError(Exception):
     """What the user must fix, in one line (exit 2)."""
 
 
-def add_doc_command(sub) -> None:
+def add_doc_command(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     doc = sub.add_parser("doc", help="print a project (or some POUs) as a PDF or HTML document")
     doc.add_argument("project", type=Path, help="project folder, project .json file or .st file")
     doc.add_argument("--pou", action="append", default=[], metavar="NAME", help="only this POU (repeatable)")

@@ -22,7 +22,7 @@ from ..testing.suite import run_suite, suite_files
 from .encoding import add_encoding_option, encoding_of
 
 
-def add_test_command(sub) -> None:
+def add_test_command(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     test = sub.add_parser("test", help="run the project's unit tests (tests/*.st) and report them")
     test.add_argument("projects", nargs="+", type=Path, metavar="PROJECT", help="project folder or project .json file")
     add_encoding_option(test)

@@ -312,6 +312,7 @@ class Simulation:
                 time_ms=now,
                 scan=self.scan_count,
                 instance_path=self._instance_path,
+                places=self.compiled.program.places,
             )
         )
 
@@ -357,6 +358,7 @@ class Simulation:
                 time_ms=now,
                 scan=self.scan_count,
                 instance_path=self._instance_path,
+                places=self.compiled.program.places,
             )
         finally:
             self._watchdog.deadline = float("inf")

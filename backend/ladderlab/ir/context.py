@@ -10,6 +10,7 @@ from __future__ import annotations
 from typing import Any
 
 from ..model.diagnostics import Diagnostic
+from ..model.places import Places
 from ..st import ast
 from ..st import types as t
 from ..st.body import BodyChecker
@@ -49,6 +50,7 @@ class PouContext:
         self.info = info
         self.name = info.name.upper() if info is not None else ""
         self.diagnostics: list[Diagnostic] = diagnostics if diagnostics is not None else []
+        self.places: Places | None = None  # an LD/FBD body's names for networks and elements (set by its lowering)
         self.types = TypeLowering(checked, info)
         self.slots: list[Slot] = []
         self.edges: dict[str, Var] = {}  # R_EDGE/F_EDGE input name -> hidden slot holding the detected edge
@@ -99,6 +101,7 @@ class PouContext:
             network=network,
             element=element,
             pin=pin,
+            place=self.places.where(network, element, pin) if network is not None and self.places is not None else None,
             pou=self.info.name if self.info is not None and file != "types" else None,
             line=line,
             column=column,

@@ -19,6 +19,7 @@ from dataclasses import dataclass
 
 from ..iec.spelling import did_you_mean
 from ..model import fbd
+from ..model.places import NetworkNames, Places
 from ..model.project import Pou as ModelPou
 from ..st import ast
 from ..st import types as t
@@ -26,7 +27,7 @@ from .context import PouContext
 from .diagram_calls import Callee, PinValue, call_ast, check_call, lower_call, resolve_callee, type_call
 from .diagram_checks import canonical_label, check_jump_target, check_labels, check_unique_ids, check_unique_networks
 from .diagram_operands import At, Operands
-from .fbd_order import Analyses, NetworkGraph, Source, analyse
+from .fbd_order import Analyses, NetworkGraph, Source, analyse, wire_text
 from .lower_expr import convert
 from .lower_st import fb_output, fb_pins
 from .nodes import (
@@ -55,8 +56,11 @@ _ROOT = re.compile(r"\s*([A-Za-z_][A-Za-z0-9_]*)")
 def lower_fbd_body(pou: ModelPou, ctx: PouContext) -> list[Block]:
     """The networks of an FBD POU as IR blocks; problems are reported on ``ctx`` with network and element."""
     body: fbd.FbdBody = pou.body  # type: ignore[assignment]
+    ctx.places = Places(body)
     check_unique_networks(body.networks, ctx.report, "FBD")
-    check_unique_ids(((n.id, node.id) for n in body.networks for node in n.nodes), ctx.report, "FBD")
+    check_unique_ids(
+        ((i, n.id, node.id) for i, n in enumerate(body.networks, 1) for node in n.nodes), ctx.report, "FBD"
+    )
     labels = check_labels(body.networks, ctx.report, "FBD")
     ops = Operands(ctx, "FBD")
     analyses = Analyses()
@@ -95,6 +99,7 @@ class _Network:
         self.enables: dict[str, Expr] = {}  # block id -> its EN condition (blocks with EN)
         self.origins: dict[str, Origin] = {}
         self.used_pins: dict[str, set[str]] = {}  # producer id -> its output pins that feed something
+        self.names = NetworkNames(network)  # its elements as messages name them
         self.consumers: dict[tuple[str, str], list[str]] = {}  # (producer id, PIN) -> the nodes it feeds
 
     def lower(self, analyses: Analyses) -> Block:
@@ -172,9 +177,9 @@ class _Network:
         self.ops.report(
             self.at(node, pin),
             "FBD-FEEDBACK",
-            f"the wire {source.wire} closes a loop: it carries "
-            f"{source.node}.{source.pin} of the previous scan, and a function's result has none before its "
-            f"first call; also connect {source.node}.{source.pin} to an output variable, whose declared "
+            f"the wire {wire_text(source.via, self.names)} closes a loop: it carries "
+            f"{self.names(source.node, source.pin)} of the previous scan, and a function's result has none before its "
+            f"first call; also connect {self.names(source.node, source.pin)} to an output variable, whose declared "
             "initial value then starts the loop",
         )
         return None
@@ -192,7 +197,7 @@ class _Network:
     def input_node(self, node: fbd.InputNode) -> None:
         """An input node is evaluated once (GR-05): consumers read its operand text where they run, unless an
         output node of this network writes a variable it reads - then its value is kept in a temporary first."""
-        value, ty = self.ops.read(node.expr, self.at(node.id), f"input node '{node.id}'")
+        value, ty = self.ops.read(node.expr, self.at(node.id), "the input")
         if value is None:
             return
         origin = self.origin(node.id)
@@ -215,7 +220,7 @@ class _Network:
         value = self.source(node.id, "IN")
         if value is None:
             return
-        what = f"output node '{node.id}'"
+        what = "the output"
         if node.mode == "normal":
             target, target_type = self.ops.target(node.var, at.on(None), what)
             if target is None:
@@ -242,7 +247,7 @@ class _Network:
         value = self.source(node.id, "IN")
         if (node.id, "IN") in self.graph.broken or (wired and value is None):
             return  # reported where the wire breaks or the value fails
-        condition = self.bool_value(value, self.at(node.id, "IN"), f"{node.type} '{node.id}'") if wired else TRUE
+        condition = self.bool_value(value, self.at(node.id, "IN"), f"the {node.type}") if wired else TRUE
         if condition is None:
             return
         self.out.append(Probe(node.id, condition, origin))
@@ -293,7 +298,7 @@ class _Network:
             inputs[pin] = value
         en = inputs.pop("EN", None)
         if node.en and en is None:
-            self.ops.report(at.on("EN"), "FBD-MISSING-PIN", f"input EN of '{node.id}' is not connected")
+            self.ops.report(at.on("EN"), "FBD-MISSING-PIN", "input EN is not connected")
             return
         block = _Chained(node, callee, instance, inputs, chained, en, [])
         self.out.append(block.statements)  # its place: the statements come when it is lowered
@@ -418,14 +423,14 @@ class _Network:
             )
         for pin in ("EN", "ENO"):
             if not node.en and pin in wired | used | set(flags):
-                problems.append((pin, "FBD-UNKNOWN-PIN", f"'{node.id}' has no {pin}: set en to use EN and ENO"))
+                problems.append((pin, "FBD-UNKNOWN-PIN", f"the block has no {pin}: switch on EN/ENO to use it"))
         for pin, flag in sorted(flags.items()):
             if pin in outputs and flag.edge is not None:
                 problems.append(
                     (
                         pin,
                         "FBD-PIN-FLAG",
-                        f"output {pin} of '{node.id}' cannot have an edge flag: edge detection is for inputs",
+                        f"output {pin} cannot have an edge flag: edge detection is for inputs",
                     )
                 )
             elif pin not in outputs and not callee.is_input(pin) and pin not in ("EN", "ENO"):
@@ -440,7 +445,7 @@ class _Network:
         if not flags.negated and flags.edge is None:
             return value
         flag = "negated" if flags.edge is None else f"{flags.edge} edge"
-        what = f"the {flag} input {at.pin} of '{at.element}'"
+        what = f"the {flag} input {at.pin}"
         expr = self.bool_value(value, at, what)
         if expr is None:
             return None
@@ -492,9 +497,7 @@ class _Network:
             expr, ty = probed[pin]
             if flag is not None and flag.negated:
                 if not t.same(ty, t.BOOL):
-                    self.ops.report(
-                        at.on(pin), "FBD-NOT-BOOL", f"output {pin} of '{node.id}' is negated, but it is {ty}, not BOOL"
-                    )
+                    self.ops.report(at.on(pin), "FBD-NOT-BOOL", f"output {pin} is negated, but it is {ty}, not BOOL")
                     continue
                 negated = self.ops.temp()
                 self.out.append(Assign(negated, not_(expr), origin))
@@ -504,7 +507,7 @@ class _Network:
         if en is None:
             self.out += probes
             return
-        condition, _ = self.expr(en, at.on("EN"), f"input EN of '{node.id}'")
+        condition, _ = self.expr(en, at.on("EN"), "input EN")
         self.enables[node.id] = condition
         self.out += [If([(condition, probes)], [], origin)] if condition != TRUE else probes
 

@@ -19,6 +19,7 @@ from dataclasses import dataclass
 from ..collector import collector_paused
 from ..deep import deep_call
 from ..model.diagnostics import Diagnostic, has_errors
+from ..model.places import ProjectPlaces
 from ..model.project import Pou as ModelPou
 from ..model.project import Project
 from ..model.validate import validate_project
@@ -74,7 +75,8 @@ def _lower_project(project: Project, checked: CheckResult | None) -> LoweringRes
         if info is not None and info.name == pou.name:  # not a duplicate (reported by the checker)
             pous[pou.name.upper()] = lower_pou(pou, info, checked, diagnostics, image)
     instances, tasks, access = lower_configuration(checked, diagnostics, image)
-    program = Program(pous, globals_ + list(image.values()), tasks, instances, access)
+    diagrams = [(pou.name, pou.body) for pou in project.pous if not isinstance(pou.body, str)]
+    program = Program(pous, globals_ + list(image.values()), tasks, instances, access, ProjectPlaces(diagrams))
     too_much = data_too_large(program)
     if too_much is not None:
         diagnostics.append(too_much)

@@ -12,6 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Literal
 
+from ..model.places import ProjectPlaces
 from .types import IrType
 
 # --------------------------------------------------------------------------- origin
@@ -341,6 +342,8 @@ class Program:
     tasks: list[TaskSpec] = field(default_factory=list)
     instances: list[ProgramInstance] | None = None
     access: dict[str, tuple[str, bool]] = field(default_factory=dict)
+    #: the LD/FBD elements' names as the user sees them, for runtime faults (model/places.py)
+    places: ProjectPlaces | None = field(default=None, repr=False, compare=False)
 
     def program_instances(self) -> list[ProgramInstance]:
         """The instances to create: ``instances``, or one per PROGRAM named after it."""

@@ -407,34 +407,8 @@ class PrintDocument(BaseModel):
     xref: XrefList
 
 
-class ApiTypes(BaseModel):
-    """Container so every API shape lands in one schema file (``api.schema.json``)."""
+class Health(BaseModel):
+    """``GET /api/health``: the server answers, and which version it is."""
 
-    project_summary: ProjectSummary
-    create_project: CreateProject
-    rename_project: RenameProject
-    project_document: ProjectDocument
-    save_result: SaveResult
-    check_report: CheckReport
-    symbol_table: SymbolTable
-    variable_children: VariableChildren
-    library_entry: LibraryEntry
-    error_detail: ErrorDetail
-    conflict_detail: ConflictDetail
-    simulation_info: SimulationInfo
-    reset_simulation: ResetSimulation
-    st_export: StExport
-    import_report: ImportReport
-    fbd_order: FbdOrder
-    test_listing: TestListing
-    test_event: TestEvent
-    test_run_request: TestRunRequest
-    test_open_request: TestOpenRequest
-    test_check_request: TestCheckRequest
-    rename_request: RenameRequest
-    rename_result: RenameResult
-    references_request: ReferencesRequest
-    reference_list: ReferenceList
-    duplicate_request: DuplicateRequest
-    xref_list: XrefList
-    print_document: PrintDocument
+    status: str = Field(description='"ok" while the server answers.')
+    version: str

@@ -296,6 +296,7 @@ class TraceData(BaseModel):
 
 #: What an online log entry is about, so the log can be filtered (seed ON-15).
 LogKind = Literal["state", "write", "force", "release", "breakpoint", "watchdog", "fault", "system"]
+LogLevel = Literal["info", "warning", "error"]
 
 
 class Log(BaseModel):
@@ -304,18 +305,22 @@ class Log(BaseModel):
 
     type: Literal["log"]
     kind: LogKind = "system"
-    level: Literal["info", "warning", "error"]
+    level: LogLevel
     message: str
     at: At | None = None
     scan: int | None = None
     time_ms: float | None = None
 
 
+#: Why a websocket request was refused (protocol codes, not diagnostics: docs/diagnostics.md).
+ErrorCode = Literal["bad_json", "bad_message", "bad_path", "bad_value", "bad_state", "too_large", "too_many"]
+
+
 class Error(BaseModel):
     """A request of this client was refused; the connection and the simulation carry on."""
 
     type: Literal["error"]
-    code: Literal["bad_json", "bad_message", "bad_path", "bad_value", "bad_state", "too_large", "too_many"]
+    code: ErrorCode
     message: str
 
 

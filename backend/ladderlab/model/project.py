@@ -9,14 +9,16 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validat
 from .fbd import FbdBody
 from .ld import LdBody
 
-PROJECT_FORMAT = "ladderlab/1"
+ProjectFormat = Literal["ladderlab/1"]
+PROJECT_FORMAT: ProjectFormat = "ladderlab/1"
 
 PouKind = Literal["program", "function_block", "function"]
 Language = Literal["st", "ld", "fbd", "il"]
 
-BODY_TYPE_BY_LANGUAGE: dict[str, type] = {"st": str, "ld": LdBody, "fbd": FbdBody, "il": str}
 #: Languages whose body is text (ST statements, IL instructions).
 TEXT_LANGUAGES = frozenset({"st", "il"})
+#: The body model of each graphical language (an ST POU's body is its text).
+DIAGRAM_BODY: dict[str, type[LdBody] | type[FbdBody]] = {"ld": LdBody, "fbd": FbdBody}
 
 
 def _strip_trailing_whitespace(value: Any) -> Any:
@@ -43,13 +45,13 @@ class Pou(BaseModel):
     def _body_matches_language(cls, value: Any, handler: Any, info: ValidationInfo) -> Any:
         """Validate ``body`` as the type its ``language`` names, so errors point at the right shape."""
         language = info.data.get("language")
-        expected = BODY_TYPE_BY_LANGUAGE.get(language)
-        if expected is None:
-            return handler(value)
-        if expected is str:
+        if language in TEXT_LANGUAGES:
             if not isinstance(value, str):
                 raise ValueError(f"an {language.upper()} POU's body must be a string of {language.upper()} text")
             return handler(value)
+        if not isinstance(language, str) or language not in DIAGRAM_BODY:
+            return handler(value)
+        expected = DIAGRAM_BODY[language]
         if isinstance(value, expected):
             return value
         if not isinstance(value, dict):
@@ -60,7 +62,7 @@ class Pou(BaseModel):
     def _empty_graphical_body(self) -> Pou:
         """A new LD/FBD POU created without a body starts with no networks."""
         if self.language not in TEXT_LANGUAGES and isinstance(self.body, str):
-            self.body = BODY_TYPE_BY_LANGUAGE[self.language]()
+            self.body = DIAGRAM_BODY[self.language]()
         return self
 
 
@@ -156,7 +158,7 @@ class Project(BaseModel):
     model_config = ConfigDict(extra="forbid")
 
     name: str
-    format: Literal["ladderlab/1"] = PROJECT_FORMAT
+    format: ProjectFormat = PROJECT_FORMAT
     types: str = Field(default="", description="ST text of TYPE ... END_TYPE blocks.")
     globals: str = Field(default="", description="ST text of VAR_GLOBAL ... END_VAR blocks.")
     pous: list[Pou] = Field(default_factory=list)

@@ -64,6 +64,12 @@ def export_xml(name: str, workspace: WorkspaceDep) -> Response:
     status_code=status.HTTP_201_CREATED,
     response_model=ImportReport,
     responses=responses(409, 413, 422, 429),
+    openapi_extra={
+        "requestBody": {
+            "required": True,
+            "content": {"application/xml": {"schema": {"type": "string", "description": "a PLCopen TC6 XML document"}}},
+        }
+    },
 )
 async def import_xml(
     request: Request,

@@ -28,7 +28,6 @@ import itertools
 import json
 import logging
 from collections import deque
-from typing import Any
 
 from fastapi import APIRouter, WebSocket
 from pydantic import BaseModel, TypeAdapter, ValidationError
@@ -45,7 +44,7 @@ log = logging.getLogger(__name__)
 
 router = APIRouter(tags=["monitor"])
 
-CLIENT_MESSAGE: TypeAdapter[Any] = TypeAdapter(m.ClientMessage)
+CLIENT_MESSAGE: TypeAdapter[m.ClientMessage] = TypeAdapter(m.ClientMessage)
 _CLIENT_TYPES = ", ".join(sorted(CLIENT_MESSAGE.json_schema()["discriminator"]["mapping"]))
 CLOSE_NO_SIMULATION = 4404
 CLOSE_DELETED = 4410
@@ -143,8 +142,8 @@ class MonitorClient:
             self.outbox.append(message)
         self.wake.set()
 
-    def error(self, code: str, message: str) -> None:
-        self._enqueue(m.Error(type="error", code=code, message=message))  # type: ignore[arg-type]
+    def error(self, code: m.ErrorCode, message: str) -> None:
+        self._enqueue(m.Error(type="error", code=code, message=message))
 
     async def serve(self) -> None:
         status, history, dropped = self.simulation.attach(self)
@@ -167,7 +166,7 @@ class MonitorClient:
             self.simulation.detach(self)
             self.simulation.unwatch(self.key)
 
-    async def _receive_loop(self, sender: asyncio.Task) -> None:
+    async def _receive_loop(self, sender: asyncio.Task[None]) -> None:
         while not sender.done():
             receiving = asyncio.ensure_future(self.websocket.receive())
             await asyncio.wait({receiving, sender}, return_when=asyncio.FIRST_COMPLETED)
@@ -213,7 +212,7 @@ class MonitorClient:
             log.exception("monitor request %s failed", type(request).__name__)
             self.error("bad_state", f"internal error: {type(error).__name__}: {error}")
 
-    async def _dispatch(self, request: BaseModel) -> None:
+    async def _dispatch(self, request: m.ClientMessage) -> None:
         simulation = self.simulation
         match request:
             case m.Subscribe():
@@ -298,7 +297,7 @@ class MonitorClient:
                 await self._send(self.outbox.popleft())
             else:
                 status, self.status = self.status, None
-                await self._send(status)  # type: ignore[arg-type]
+                await self._send(status)  # type: ignore[arg-type]  # the loop runs while outbox or status holds one
 
     async def _send(self, message: BaseModel) -> None:
         await self.websocket.send_text(message.model_dump_json())

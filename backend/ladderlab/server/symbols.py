@@ -19,7 +19,7 @@ from ..st import types as t
 from ..st.checker import check_project as check_st
 from ..st.configuration import InstanceInfo
 from ..st.printer import print_type
-from ..st.symbols import PouInfo, Symbol
+from ..st.symbols import CheckResult, PouInfo, Symbol
 from ..storage import NotFoundError
 from .context import WorkspaceDep
 from .errors import ApiError, responses
@@ -109,7 +109,7 @@ def _members(ty: t.Type, path: str, indices: tuple[int, ...]) -> tuple[list[Vari
     return [], 0
 
 
-def _walk(result, path: str) -> tuple[t.Type, tuple[int, ...]]:
+def _walk(result: CheckResult, path: str) -> tuple[t.Type, tuple[int, ...]]:
     """The type of the variable at ``path`` (and the indices of a partly indexed array at its end)."""
     parts = tokens(path)
     if not parts or parts[0][0] != "name":
@@ -155,19 +155,20 @@ def _member_type(ty: t.Type, member: str) -> t.Type:
     if isinstance(ty, t.StructType):
         return ty.fields[upper][1]
     if isinstance(ty, t.FbType) and ty.pou is not None:
-        return ty.pou.symbols[upper].type
+        found: t.Type = ty.pou.symbols[upper].type
+        return found
     assert isinstance(ty, t.FbType) and ty.std is not None  # _walk found the member among the pins
     pin = next(p for p in (*ty.std.inputs, *ty.std.outputs) if p.name == upper)
     return t.elementary(pin.type) or t.ERROR
 
 
-def _instances(result) -> dict[str, InstanceInfo]:
+def _instances(result: CheckResult) -> dict[str, InstanceInfo]:
     """The program instances the project runs, by upper-case name (a configuration names them; without one,
     each PROGRAM has one instance named after it)."""
     return result.configuration.instances if result.configuration is not None else {}
 
 
-def _instance_pou(result, name: str) -> PouInfo | None:
+def _instance_pou(result: CheckResult, name: str) -> PouInfo | None:
     """The PROGRAM of the instance ``name``; a PROGRAM's own name stands for its only instance (engine paths)."""
     instance = _instances(result).get(name.upper())
     if instance is not None:
@@ -180,7 +181,7 @@ def _instance_pou(result, name: str) -> PouInfo | None:
     return program
 
 
-def _top_names(result) -> list[str]:
+def _top_names(result: CheckResult) -> list[str]:
     return [i.name for i in _instances(result).values()] + [s.name for s in result.globals.values()]
 
 

@@ -8,6 +8,7 @@ documents offer and draw exactly what the checker accepts.
 from __future__ import annotations
 
 from functools import cache
+from typing import Literal
 
 from ..iec import stdlib
 from ..model import Project
@@ -16,7 +17,10 @@ from ..st.checker import check_project as check_st
 from ..st.printer import print_type
 from ..st.symbols import Symbol
 
-_USER_KINDS = {"FUNCTION": "function", "FUNCTION_BLOCK": "function_block"}
+_USER_KINDS: dict[str, Literal["function", "function_block"]] = {
+    "FUNCTION": "function",
+    "FUNCTION_BLOCK": "function_block",
+}
 
 
 def _std_pin(pin: stdlib.Pin) -> Pin:

@@ -32,7 +32,7 @@ import logging
 import threading
 import time
 from collections import deque
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any, ClassVar, Protocol
 
@@ -44,7 +44,7 @@ from ..engine.simulation import Simulation
 from ..engine.tasks import Pacer
 from ..ir import nodes as ir
 from ..ir import types as t
-from ..model.monitor import At, DisplayType, Log, TraceTrigger
+from ..model.monitor import At, DisplayType, ErrorCode, Log, LogKind, LogLevel, TraceTrigger
 from .trace import TraceBook, TraceRefused, plan_trace
 
 log = logging.getLogger(__name__)
@@ -55,20 +55,20 @@ _MISSING = object()
 class CommandError(Exception):
     """A command the simulation refuses; ``code`` is an ``Error`` message code (bad_path, bad_value, bad_state)."""
 
-    def __init__(self, code: str, message: str) -> None:
+    def __init__(self, code: ErrorCode, message: str) -> None:
         super().__init__(message)
-        self.code = code
+        self.code: ErrorCode = code
         self.message = message
 
 
 class Sink(Protocol):
     """Where a runner's messages go (plain data; called on the engine thread)."""
 
-    def status(self, state: str, at: dict | None) -> None: ...
+    def status(self, state: str, at: dict[str, Any] | None) -> None: ...
 
-    def log(self, entry: dict) -> None: ...
+    def log(self, entry: dict[str, Any]) -> None: ...
 
-    def frame(self, frame: dict) -> None: ...
+    def frame(self, frame: dict[str, Any]) -> None: ...
 
 
 #: How a submitted command is answered: (result, None) or (None, the refusal).
@@ -122,6 +122,8 @@ def display_type(ty: t.IrType) -> DisplayType:
         return DisplayType(name=ty.name, names={str(value): name for name, value in ty.values})
     if isinstance(ty, t.Array):
         return DisplayType(name="ARRAY")
+    if isinstance(ty, t.Reference):  # it has no name of its own (ty.name raised AttributeError)
+        return DisplayType(name="REF_TO")
     return DisplayType(name=ty.fb if isinstance(ty, t.FbInstance) else ty.name)
 
 
@@ -158,7 +160,7 @@ class SimRunner:
         self.traces = TraceBook()
         self._ctx = sim.compiled.generated.context
         self._cv = threading.Condition()
-        self._commands: deque[tuple[str, dict, Reply]] = deque()
+        self._commands: deque[tuple[str, dict[str, Any], Reply]] = deque()
         self._running = False
         self._faulted = False
         self._seen_faults = 0
@@ -170,7 +172,7 @@ class SimRunner:
         self._run_since: float | None = None
         self._last_publish = float("-inf")
         self._status: tuple[str, At | None] = (self._state(), None)
-        self._fault_report: tuple[Fault | None, dict | None] = (None, None)
+        self._fault_report: tuple[Fault | None, dict[str, Any] | None] = (None, None)
         # watches: each client's, and their union (what a frame reads)
         self._watches: dict[object, _Watch] = {}
         self._reader = sim.reader({})
@@ -298,11 +300,11 @@ class SimRunner:
             except CompileError as error:
                 raise CommandError("bad_state", f"cannot debug this program: {error}") from None
 
-    def _log(self, kind: str, level: str, message: str, at: dict | None = None) -> None:
+    def _log(self, kind: LogKind, level: LogLevel, message: str, at: dict[str, Any] | None = None) -> None:
         entry = Log(
             type="log",
-            kind=kind,  # type: ignore[arg-type]
-            level=level,  # type: ignore[arg-type]
+            kind=kind,
+            level=level,
             message=message,
             scan=self.sim.scan_count,
             time_ms=self.sim.time_ms,
@@ -495,7 +497,7 @@ class SimRunner:
         if count:
             self._log("release", "info", f"released all forces ({count})")
 
-    def inspect(self, paths: list[str] = (), probes: list[str] = ()) -> dict[str, Any]:  # type: ignore[assignment]
+    def inspect(self, paths: Sequence[str] = (), probes: Sequence[str] = ()) -> dict[str, Any]:
         """The whole state, for tests and diagnosis: every variable, forces, breakpoints, the halt, the variant."""
         sim = self.sim
         return {
@@ -584,7 +586,7 @@ class SimRunner:
         owner: object,
         paths: list[str],
         samples: int | None = None,
-        trigger: dict | None = None,
+        trigger: dict[str, Any] | None = None,
         trace_id: int = 0,
     ) -> None:
         """Record ``paths`` after every scan for ``owner`` (replacing its running trace); see ``trace.py``."""

@@ -31,7 +31,7 @@ from typing import Any
 from ..model import Diagnostic, Project, has_errors
 from .build import build_project
 from .check import check_project
-from .runner import CommandError, SimRunner
+from .runner import CommandError, Reply, SimRunner
 
 log = logging.getLogger(__name__)
 
@@ -55,13 +55,13 @@ class Link:
             self.last_sent = time.monotonic()
 
     # the runner's Sink
-    def status(self, state: str, at: dict | None) -> None:
+    def status(self, state: str, at: dict[str, Any] | None) -> None:
         self.send({"type": "status", "state": state, "at": at})
 
-    def log(self, entry: dict) -> None:
+    def log(self, entry: dict[str, Any]) -> None:
         self.send({"type": "log", "entry": entry})
 
-    def frame(self, frame: dict) -> None:
+    def frame(self, frame: dict[str, Any]) -> None:
         self.send({"type": "frame", **frame})
 
 
@@ -123,7 +123,7 @@ def _receive(link: Link, runner: SimRunner, beat_s: float) -> None:
             link.send({"type": "beat"})
 
 
-def _replier(link: Link, runner: SimRunner, request_id: int):
+def _replier(link: Link, runner: SimRunner, request_id: int) -> Reply:
     """The answer to one request, with the simulation's figures right after it (what a REST command returns)."""
 
     def reply(result: object, error: CommandError | None) -> None:
@@ -158,5 +158,5 @@ def serve_builds(connection: Connection, memory_bytes: int | None) -> None:
             return
 
 
-def _dumped(diagnostics: list[Diagnostic]) -> list[dict]:
+def _dumped(diagnostics: list[Diagnostic]) -> list[dict[str, Any]]:
     return [d.model_dump(mode="json") for d in diagnostics]

@@ -18,13 +18,13 @@ from typing import Any
 
 from ..ir import nodes as ir
 from ..ir.lower_project import lower_pou
-from ..model import Diagnostic, Project
+from ..model import Diagnostic, Pou, Project
 from ..model import fbd as fbd_model
 from ..model import ld as ld_model
 from ..model.xref import AccessKind, XrefAccess, XrefEntry, XrefList
 from ..st.checker import check_project
 from ..st.printer import print_type
-from ..st.symbols import CheckResult, Symbol
+from ..st.symbols import CheckResult, PouInfo, Symbol
 
 Key = tuple[str | None, str]
 _ROOT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")  # (upper-case POU or None for a global, upper-case name)
@@ -72,8 +72,10 @@ def _declared(symbol: Symbol, pou: str | None) -> XrefAccess:
     return XrefAccess(kind="declared", pou=pou, line=line, column=symbol.span.column or None, path=symbol.name)
 
 
-def _accesses(project: Project, checked: CheckResult, pou, entries: dict[Key, XrefEntry]) -> None:
+def _accesses(project: Project, checked: CheckResult, pou: Pou, entries: dict[Key, XrefEntry]) -> None:
     info = checked.pou(pou.name)
+    if info is None:  # not checked: cross_reference passes only the POUs the checker resolved
+        return
     diagnostics: list[Diagnostic] = []
     lowered = lower_pou(pou, info, checked, diagnostics)
     places = _places(pou)
@@ -106,7 +108,7 @@ def _accesses(project: Project, checked: CheckResult, pou, entries: dict[Key, Xr
             )
 
 
-def _places(pou) -> dict[tuple[str | None, str | None], tuple[int, str | None]]:
+def _places(pou: Pou) -> dict[tuple[str | None, str | None], tuple[int, str | None]]:
     """(network id, element id or None) -> (network number, the element's operand text) of a diagram POU."""
     found: dict[tuple[str | None, str | None], tuple[int, str | None]] = {}
     body = pou.body
@@ -116,20 +118,20 @@ def _places(pou) -> dict[tuple[str | None, str | None], tuple[int, str | None]]:
             for element in ld_model.walk(network.elements):
                 found[(network.id, element.id)] = (number, _ld_operand(element))
     elif isinstance(body, fbd_model.FbdBody):
-        for number, network in enumerate(body.networks, 1):
-            found[(network.id, None)] = (number, None)
-            for node in network.nodes:
+        for number, fbd_network in enumerate(body.networks, 1):
+            found[(fbd_network.id, None)] = (number, None)
+            for node in fbd_network.nodes:
                 text = getattr(node, "expr", None) or getattr(node, "var", None)
                 if isinstance(node, fbd_model.Block):
                     text = node.instance or node.call
-                found[(network.id, node.id)] = (number, text)
+                found[(fbd_network.id, node.id)] = (number, text)
     return found
 
 
-def _fbd_inputs(pou) -> dict[tuple[str, str], str]:
+def _fbd_inputs(pou: Pou) -> dict[tuple[str | None, str], str]:
     """(network id, upper-case variable) -> the FBD input node that names it (the lowering reads an input node's
     variable where its consumer runs; the list shows the node the user drew)."""
-    found: dict[tuple[str, str], str] = {}
+    found: dict[tuple[str | None, str], str] = {}
     if isinstance(pou.body, fbd_model.FbdBody):
         for network in pou.body.networks:
             for node in network.nodes:
@@ -138,7 +140,7 @@ def _fbd_inputs(pou) -> dict[tuple[str, str], str]:
     return found
 
 
-def _ld_operand(element) -> str | None:
+def _ld_operand(element: object) -> str | None:
     if isinstance(element, (ld_model.Contact, ld_model.Coil)):
         return element.var
     if isinstance(element, ld_model.Compare):
@@ -148,7 +150,7 @@ def _ld_operand(element) -> str | None:
     return None
 
 
-def _path(var: ir.Var, names: dict[str, str], checked: CheckResult, info) -> str:
+def _path(var: ir.Var, names: dict[str, str], checked: CheckResult, info: PouInfo) -> str:
     """The access as the user spells it: ``Blink.Out`` (an FB's pins as declared), ``arr[]`` for an element."""
     text = names.get(var.name, var.name)
     fb = _fb_of(var, checked, info)
@@ -163,7 +165,7 @@ def _path(var: ir.Var, names: dict[str, str], checked: CheckResult, info) -> str
     return text
 
 
-def _fb_of(var: ir.Var, checked: CheckResult, info) -> str | None:
+def _fb_of(var: ir.Var, checked: CheckResult, info: PouInfo) -> str | None:
     """The user FB type the variable ``var`` starts from (its root's declared type), if it is one."""
     symbol = checked.globals.get(var.name) if var.scope == "global" else info.symbols.get(var.name)
     type_name = print_type(symbol.type_spec) if symbol is not None else ""
@@ -221,7 +223,9 @@ def _statement_accesses(statements: list[Any]) -> Iterator[tuple[AccessKind, ir.
             yield from _statement_accesses(statement.statements)
 
 
-def _written(var: ir.Var | None, origin: ir.Origin, kind: AccessKind = "write"):
+def _written(
+    var: ir.Var | None, origin: ir.Origin, kind: AccessKind = "write"
+) -> Iterator[tuple[AccessKind, ir.Var, ir.Origin]]:
     if var is None:
         return
     yield kind, var, origin
@@ -231,7 +235,7 @@ def _written(var: ir.Var | None, origin: ir.Origin, kind: AccessKind = "write"):
                 yield from _reads(index, origin)
 
 
-def _reads(expr: Any, origin: ir.Origin):
+def _reads(expr: Any, origin: ir.Origin) -> Iterator[tuple[AccessKind, ir.Var, ir.Origin]]:
     """Every variable ``expr`` reads (VAR_IN_OUT arguments of a call are written too)."""
     if expr is None:
         return

@@ -19,11 +19,11 @@ from typing import Any
 from lark import Lark, Token
 from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedToken
 
-from ..iec.elementary import ALIASES, ELEMENTARY, GENERIC
+from ..iec.elementary import ALIASES, ELEMENTARY, GENERIC, STRING_TYPES
 from ..model.diagnostics import Diagnostic
 from . import ast
 from .comments import attach_comments, blank_nested_comments
-from .errors import describe_unexpected, last_token, would_accept
+from .errors import describe_unexpected, last_token, literal_problem, would_accept
 from .nesting import too_deep
 from .quick_decls import quick_declarations
 from .transformer import AstBuilder, StSyntaxError
@@ -77,8 +77,8 @@ TEST_KEYWORDS = frozenset(
 
 
 @functools.cache
-def _keywords() -> frozenset[str]:
-    """Every keyword of the grammar, upper case."""
+def grammar_keywords() -> frozenset[str]:
+    """Every keyword of the grammar, upper case (the contextual and the test files' ones too)."""
     return frozenset(_KEYWORD_RE.findall(GRAMMAR.read_text(encoding="utf-8")))
 
 
@@ -87,7 +87,7 @@ def keywords() -> frozenset[str]:
     """Words that are never names (KW-01, KW-02's hard keywords): the grammar's keywords but the contextual ones
     (``_SOFT_KEYWORDS``, used as names by real libraries) and the test files' ones, TRUE/FALSE and the operator
     words."""
-    return (_keywords() - _SOFT_KEYWORDS - TEST_KEYWORDS) | {"TRUE", "FALSE", "AND", "OR", "XOR", "NOT", "MOD"}
+    return (grammar_keywords() - _SOFT_KEYWORDS - TEST_KEYWORDS) | {"TRUE", "FALSE", "AND", "OR", "XOR", "NOT", "MOD"}
 
 
 @functools.cache
@@ -95,12 +95,12 @@ def reserved_words() -> frozenset[str]:
     """Words that cannot be declared as variable, field or type names: ``keywords()`` and the names of the
     elementary and generic types (KW-02). (IEC 61131-3 ed. 3 types LadderLab does not have yet, such as LDT,
     stay usable, as in edition 2.)"""
-    return keywords() | ELEMENTARY.keys() | ALIASES.keys() | GENERIC.keys() | {"STRING", "WSTRING"}
+    return keywords() | ELEMENTARY.keys() | ALIASES.keys() | GENERIC.keys() | set(STRING_TYPES)
 
 
 @functools.cache
 def _parser(tests: bool = False) -> Lark:
-    reserved = _keywords() - {"TRUE", "FALSE"} - _SOFT_KEYWORDS - TEST_KEYWORDS
+    reserved = grammar_keywords() - {"TRUE", "FALSE"} - _SOFT_KEYWORDS - TEST_KEYWORDS
     return Lark(
         GRAMMAR.read_text(encoding="utf-8"),
         parser="lalr",
@@ -110,6 +110,22 @@ def _parser(tests: bool = False) -> Lark:
         maybe_placeholders=True,
         cache=False,
     )
+
+
+#: The lexer's prefixed literal terminals (LEX-21, LEX-40..52).
+_LITERAL_TERMINALS = ("DURATION", "DATE_LITERAL", "TOD_LITERAL", "DT_LITERAL", "BASED_INTEGER")
+
+
+@functools.cache
+def literal_patterns() -> dict[str, str]:
+    """Terminal name -> the regular expression the lexer reads that literal with (case-insensitive)."""
+    return {t.name: t.pattern.value for t in _parser().terminals if t.name in _LITERAL_TERMINALS}
+
+
+def _complete_literal(text: str) -> bool:
+    """Whether ``text`` (trailing spaces aside) is one whole literal of the lexer's prefixed forms."""
+    stripped = text.strip()
+    return any(re.fullmatch(p, stripped, re.IGNORECASE) for p in literal_patterns().values())
 
 
 @functools.cache
@@ -151,7 +167,7 @@ def parse_declarations(
     Plain ``name, name : Type;`` blocks are read without the LALR parser (``quick_decls``), with the same result.
     """
     prepared = _prepare(text, nested_comments)
-    quick = quick_declarations(prepared, _keywords())
+    quick = quick_declarations(prepared, grammar_keywords())
     parsed = ParseResult(quick) if quick is not None else _run(prepared, "start_decls", file, pou=pou)
     return _finish(parsed, text, file, pou)
 
@@ -214,7 +230,7 @@ _NESTING_NEEDS = 100  # characters: a shorter text cannot nest anywhere near the
 
 def _run(text: str, start: str, file: str | None, pou: str | None = None) -> ParseResult:
     diagnostics: list[Diagnostic] = []
-    report = _Reporter(diagnostics, file, pou)
+    report = _Reporter(diagnostics, file, pou, text)
     try:
         tree = _parser(start in _TEST_STARTS).parse(text, start=start, on_error=report.recover)
     except UnexpectedInput as error:
@@ -249,10 +265,11 @@ def syntax_diagnostic(
 class _Reporter:
     """lark ``on_error`` handler: records each error and decides whether parsing can go on."""
 
-    def __init__(self, diagnostics: list[Diagnostic], file: str | None, pou: str | None):
+    def __init__(self, diagnostics: list[Diagnostic], file: str | None, pou: str | None, text: str):
         self.diagnostics = diagnostics
         self.file = file
         self.pou = pou
+        self.text = text
         self._reported: set[int] = set()
 
     def seen(self, error: UnexpectedInput) -> bool:
@@ -261,6 +278,10 @@ class _Reporter:
     def add(self, error: UnexpectedInput, severity: str = "error") -> None:
         self._reported.add(id(error))
         message, span = describe_unexpected(error, _terminal_text())
+        message = literal_problem(self.text, span.line, span.column, _complete_literal) or message
+        last = self.diagnostics[-1] if self.diagnostics else None
+        if last is not None and (last.message, last.line) == (message, span.line):
+            return  # one malformed literal can trip the lexer twice
         self.diagnostics.append(syntax_diagnostic(message, span, self.file, self.pou, severity))
 
     def recover(self, error: UnexpectedInput) -> bool:

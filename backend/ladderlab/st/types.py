@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 from math import isfinite
 from typing import Any
 
-from ..iec.elementary import ELEMENTARY, GENERIC, ElementaryType, canonical_type_name
+from ..iec.elementary import ELEMENTARY, GENERIC, STRING_TYPES, ElementaryType, canonical_type_name
 
 
 class Type:
@@ -140,7 +140,7 @@ _BITS = ["BYTE", "WORD", "DWORD", "LWORD"]
 @functools.cache  # types are immutable; asked for every pin of every call checked
 def elementary(name: str) -> Type | None:
     canonical = canonical_type_name(name)
-    if canonical in ("STRING", "WSTRING"):
+    if canonical in STRING_TYPES:
         return StringType(canonical == "WSTRING")
     return Elementary(canonical) if canonical in ELEMENTARY else None
 

@@ -49,7 +49,7 @@ def dump_json(data: Any) -> str:
     return json.dumps(data, indent=2, sort_keys=True, ensure_ascii=False) + "\n"
 
 
-def _task(task: Task) -> dict:
+def _task(task: Task) -> dict[str, Any]:
     """A task as project.json holds it; ``single`` and ``watchdog_ms`` only when set, so files of cyclic tasks stay
     as they were (``interval`` stays even when null: null means a SINGLE task without an interval)."""
     data = task.model_dump(mode="json")
@@ -65,7 +65,7 @@ def _text_file(text: str) -> str:
 
 def project_files(project: Project) -> dict[str, str]:
     """Relative path -> content of every file the project is stored as."""
-    meta = {
+    meta: dict[str, Any] = {
         "format": project.format,
         "name": project.name,
         "pous": [p.name for p in project.pous],

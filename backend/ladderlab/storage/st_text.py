@@ -12,6 +12,7 @@ import re
 from dataclasses import dataclass
 
 from ..model import Pou
+from ..model.project import Language, PouKind
 from ..st.il_parser import looks_like_il
 
 _TOKEN = re.compile(
@@ -24,7 +25,7 @@ _TOKEN = re.compile(
     re.VERBOSE | re.DOTALL,
 )
 
-POU_KEYWORDS = {"PROGRAM": "program", "FUNCTION_BLOCK": "function_block", "FUNCTION": "function"}
+POU_KEYWORDS: dict[str, PouKind] = {"PROGRAM": "program", "FUNCTION_BLOCK": "function_block", "FUNCTION": "function"}
 POU_END = {"program": "END_PROGRAM", "function_block": "END_FUNCTION_BLOCK", "function": "END_FUNCTION"}
 POU_HEADER = {kind: keyword for keyword, kind in POU_KEYWORDS.items()}
 VAR_SECTIONS = {
@@ -153,7 +154,7 @@ def _split_pou(text: str, words: list[Word]) -> Pou:
     declarations = text[inner_start:decl_end] if decl_end > inner_start else ""
     body_start = min(decl_end + 1, footer_start) if declarations else inner_start
     body = text[body_start : max(footer_start - 1, body_start)]
-    language = "il" if looks_like_il(body) else "st"
+    language: Language = "il" if looks_like_il(body) else "st"
     return Pou(name=name, kind=kind, language=language, return_type=return_type, declarations=declarations, body=body)
 
 
@@ -162,6 +163,7 @@ def compose_pou_text(pou: Pou) -> str:
     header = f"{POU_HEADER[pou.kind]} {pou.name}"
     if pou.kind == "function":
         header += f" : {pou.return_type}"
+    assert isinstance(pou.body, str), "only ST POUs are stored as text"
     parts = [header]
     if pou.declarations:
         parts.append(pou.declarations)

@@ -136,7 +136,9 @@ def run_test(prepared: Prepared, test: LoweredTest, options: Options, coverage: 
 _OUT_OF_MEMORY = "out of memory: the test needed more memory than its process may use (--memory-limit)"
 
 
-def _run(prepared: Prepared, test: LoweredTest, options: Options, coverage: Coverage | None, result: TestResult):
+def _run(
+    prepared: Prepared, test: LoweredTest, options: Options, coverage: Coverage | None, result: TestResult
+) -> None:
     sim = Build(prepared.compiled, [], prepared.watchdogs).simulation(watchdog_s=options.watchdog_s)
     collect = (lambda: coverage.collect(sim)) if coverage is not None else None
     host = Host(sim, prepared.sites, options.scan_budget, collect)

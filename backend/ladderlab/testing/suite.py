@@ -17,7 +17,7 @@ import os
 import re
 import time
 from collections.abc import Callable
-from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
+from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -146,11 +146,21 @@ class _Parallel:
     ``n`` runs the tests ``k::n`` (a file has several parts when there are fewer files than workers, so one big
     file still uses every core, or one per test when results must come one by one)."""
 
-    def __init__(self, project, files, options, choice, progress, file_ready) -> None:
+    def __init__(
+        self,
+        project: Project,
+        files: list[SuiteFile],
+        options: Options,
+        choice: tuple[str | None, str | None],
+        progress: Callable[[TestResult], None] | None,
+        file_ready: Callable[[FileOutcome, list[LoweredTest]], None] | None,
+    ) -> None:
         self.project, self.files, self.options, self.choice = project, files, options, choice
         self.progress, self.file_ready = progress, file_ready
 
-    def run(self, parts: list[int], jobs: int, memory_limit_mb: int | None):
+    def run(
+        self, parts: list[int], jobs: int, memory_limit_mb: int | None
+    ) -> tuple[list[FileOutcome], Coverage | None]:
         files = self.files
         work = [(index, part, parts[index]) for index in range(len(files)) for part in range(parts[index])]
         outcomes = [FileOutcome(f.path) for f in files]
@@ -176,7 +186,7 @@ class _Parallel:
             outcome.results.sort(key=lambda r: r.line)
         return outcomes, coverage
 
-    def _arrived(self, part: _Part, outcome: FileOutcome, done: dict) -> None:
+    def _arrived(self, part: _Part, outcome: FileOutcome, done: dict[tuple[int, int], _Part]) -> None:
         first = not any(key[0] == part.file for key in done)
         done[(part.file, part.part)] = part
         if first:
@@ -189,7 +199,7 @@ class _Parallel:
                 self.progress(result)
 
 
-def _result(future, index: int, number: int, files: list[SuiteFile]) -> _Part:
+def _result(future: Future[_Part], index: int, number: int, files: list[SuiteFile]) -> _Part:
     """A part's outcome; a worker process that died (killed, out of memory outside a test) says so for its file."""
     try:
         return future.result()

@@ -7,33 +7,6 @@
 /** A block keyword with its qualifier, as the class column shows it: "VAR", "VAR_INPUT", "VAR CONSTANT", ... */
 export type VarClass = string;
 
-/** IEC elementary types and the standard FBs' type names are offered first by the type field. */
-export const ELEMENTARY_TYPES: readonly string[] = [
-  "BOOL",
-  "SINT",
-  "INT",
-  "DINT",
-  "LINT",
-  "USINT",
-  "UINT",
-  "UDINT",
-  "ULINT",
-  "BYTE",
-  "WORD",
-  "DWORD",
-  "LWORD",
-  "REAL",
-  "LREAL",
-  "TIME",
-  "DATE",
-  "TIME_OF_DAY",
-  "DATE_AND_TIME",
-  "STRING",
-  "WSTRING",
-  "CHAR",
-  "WCHAR",
-];
-
 export const VAR_CLASSES: readonly VarClass[] = [
   "VAR",
   "VAR_INPUT",

@@ -3,7 +3,7 @@
 // the operand commands (write, force, release, watch) on simulation paths.
 import { useCallback, useEffect, useMemo, useState } from "react";
 import type { SymbolInfo } from "../generated/api";
-import type { Pou } from "../generated/project";
+import type { Pou } from "../generated/api";
 import type { LdOnlineActions } from "../ld/editor/LdEditor";
 import { onlineStore, useOnline } from "../online/store";
 import { useShownInstance, onlineReadOnly, operandActions } from "../online/useLdOnline";

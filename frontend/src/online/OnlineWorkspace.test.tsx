@@ -8,6 +8,7 @@ import { emptyPanels, panelsStore } from "../panels/store";
 import { emptyWorkspace, workspaceStore } from "../project/store";
 import { appStore, initialData } from "../store";
 import { offline, onlineStore } from "./store";
+import { stubFetch, type SentRequest } from "../test/fetchStub";
 
 const json = (body: unknown, status = 200) =>
   new Response(JSON.stringify(body), { status, headers: { "Content-Type": "application/json" } });
@@ -93,11 +94,11 @@ class FakeSocket {
   }
 }
 
-function serve(routes: Record<string, (init?: RequestInit) => Response> = {}) {
-  const fetchMock = vi.fn(async (input: RequestInfo | URL, init?: RequestInit) => {
-    const url = String(input);
-    const key = `${init?.method ?? "GET"} ${url}`;
-    if (routes[key]) return routes[key]!(init);
+function serve(routes: Record<string, (request: SentRequest) => Response> = {}) {
+  return stubFetch((request) => {
+    const { path: url, method } = request;
+    const key = `${method} ${url}`;
+    if (routes[key]) return routes[key]!(request);
     if (url === "/api/health") return json({ status: "ok", version: "0.1.0" });
     if (url === "/api/projects")
       return json([{ name: "plant", revision: "r1", modified: "2024-05-01T10:00:00Z", pou_count: 1 }]);
@@ -108,11 +109,9 @@ function serve(routes: Record<string, (init?: RequestInit) => Response> = {}) {
       return json({ pou: "Main", symbols: [sym("Start"), sym("Stop"), sym("Motor")], globals: [], diagnostics: [] });
     if (key === "POST /api/projects/plant/simulations") return json(simulation, 201);
     if (url.startsWith("/api/simulations/s1"))
-      return init?.method === "DELETE" ? new Response(null, { status: 204 }) : json(simulation);
+      return method === "DELETE" ? new Response(null, { status: 204 }) : json(simulation);
     throw new Error(`unexpected fetch ${key}`);
   });
-  vi.stubGlobal("fetch", fetchMock);
-  return fetchMock;
 }
 
 beforeEach(() => {
@@ -138,7 +137,7 @@ const element = (editor: HTMLElement, id: string) => editor.querySelector(`[data
 
 describe("online LD in the app (issue 7 online mode)", () => {
   it("compiles, subscribes the diagram, colours from the engine, prepares and writes, watches by drag and goes offline", async () => {
-    const fetchMock = serve();
+    const { sent } = serve();
     const editor = await openMain();
     fireEvent.click(screen.getByRole("button", { name: "Compile & simulate" }));
     await waitFor(() => expect(FakeSocket.all).toHaveLength(1));
@@ -194,11 +193,7 @@ describe("online LD in the app (issue 7 online mode)", () => {
     expect(screen.getByRole("list", { name: "Online log" }).textContent).toContain("forced MAIN.MOTOR := FALSE");
 
     fireEvent.click(screen.getByRole("button", { name: "Go offline to edit" }));
-    await waitFor(() =>
-      expect(
-        fetchMock.mock.calls.some(([url, init]) => url === "/api/simulations/s1" && init?.method === "DELETE"),
-      ).toBe(true),
-    );
+    await waitFor(() => expect(sent.some((r) => r.path === "/api/simulations/s1" && r.method === "DELETE")).toBe(true));
     expect(socket.closed).toBe(true);
     expect((screen.getByRole("button", { name: "Contact" }) as HTMLButtonElement).disabled).toBe(false);
     expect(element(editor, "motor").getAttribute("class")).not.toContain("ld-on");
@@ -320,17 +315,25 @@ describe("Check and the Diagnostics panel", () => {
         column: 12,
       },
     ];
-    const fetchMock = serve({ "POST /api/check": () => json({ diagnostics }) });
+    let saved = false;
+    serve({
+      "POST /api/check": () => json({ diagnostics }),
+      "PUT /api/projects/plant": () => ((saved = true), json({ revision: "r2", modified: "2024-05-02T10:00:00Z" })),
+    });
     const editor = await openMain();
     fireEvent.click(screen.getByRole("button", { name: "Check" }));
     const list = await screen.findByRole("list", { name: "Diagnostics" });
-    const items = within(list).getAllByRole("button");
-    expect(items.map((b) => b.textContent)).toEqual([
-      "errorMain, declarations, line 3:12unknown type 'NOPE'ST-UNKNOWN-TYPE",
-      "warningMain, network lamp, element lamp_coilcoil without effectLD-X",
+    // Each diagnostic: the button that reveals it, then its code (which opens the catalogue entry).
+    const buttons = within(list).getAllByRole("button");
+    expect(buttons.map((b) => b.textContent)).toEqual([
+      "errorMain, declarations, line 3:12unknown type 'NOPE'",
+      "ST-UNKNOWN-TYPE",
+      "warningMain, network lamp, element lamp_coilcoil without effect",
+      "LD-X",
     ]);
+    const items = [buttons[0]!, buttons[2]!];
     await waitFor(() => expect(element(editor, "lamp_coil").getAttribute("class")).toContain("ld-has-diagnostic"));
-    expect(fetchMock.mock.calls.some(([, init]) => init?.method === "PUT")).toBe(false);
+    expect(saved).toBe(false); // Check never saves
 
     fireEvent.click(items[1]!);
     expect(element(editor, "lamp_coil").getAttribute("class")).toContain("ld-selected");

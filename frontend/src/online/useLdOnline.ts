@@ -3,7 +3,7 @@
 // maps the diagram's operand commands (prepare, write, force, watch) onto simulation paths.
 import { useCallback, useEffect, useMemo, useState } from "react";
 import type { LibraryEntry, SymbolInfo } from "../generated/api";
-import type { Pou } from "../generated/project";
+import type { Pou } from "../generated/api";
 import type { LdOnlineActions } from "../ld/editor/LdEditor";
 import type { LdBody } from "../ld/model";
 import type { OnlineView } from "../ld/view/types";

@@ -1,7 +1,7 @@
 // Every breakpoint of the project (LD/FBD networks and elements, ST lines, wherever they were set):
 // enable/disable, remove, remove all, and a click shows the place in its editor. The row where the
 // scan is halted is marked.
-import type { LdBody, Pou } from "../generated/project";
+import type { LdBody, Pou } from "../generated/api";
 import { breakpointKey, type Breakpoint } from "../debug/breakpoints";
 import { revealPlace } from "../debug/reveal";
 import { debugStore, isEnabled, useDebug } from "../debug/store";

@@ -5,7 +5,7 @@
 // network. On screen a toolbar chooses the POUs, prints, and saves the page as HTML or a diagram as SVG.
 import { useMemo, useRef } from "react";
 import type { LibraryEntry, PrintDocument as Doc, SymbolInfo, XrefEntry } from "../generated/api";
-import type { Pou } from "../generated/project";
+import type { Pou } from "../generated/api";
 import { downloadText } from "../interchange/download";
 import type { FbdBody } from "../fbd/model";
 import type { LdBody } from "../ld/model";

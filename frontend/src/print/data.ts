@@ -1,7 +1,7 @@
 // Where the print view's document comes from: embedded in the page by `ladderlab doc` (a script element
 // of type application/json, so the file works offline and Chromium prints it without a server), or
 // fetched from GET /api/projects/{name}/document for the project and POUs in the page's query.
-import { requestJson } from "../api/client";
+import { http, unwrap } from "../api/client";
 import type { PrintDocument } from "../generated/api";
 
 export const EMBEDDED_ID = "ladderlab-document";
@@ -30,7 +30,6 @@ export function embeddedDocument(doc: Document): PrintDocument | null {
 }
 
 export function fetchDocument(request: PrintRequest): Promise<PrintDocument> {
-  const query = new URLSearchParams(request.pous.map((p): [string, string] => ["pou", p]));
-  const suffix = request.pous.length ? `?${query.toString()}` : "";
-  return requestJson<PrintDocument>(`/api/projects/${encodeURIComponent(request.project)}/document${suffix}`);
+  const query = request.pous.length ? { pou: request.pous } : {};
+  return unwrap(http.GET("/api/projects/{name}/document", { params: { path: { name: request.project }, query } }));
 }

@@ -1,6 +1,6 @@
 // Next to an online view: which instance of a function block it shows, and going offline to edit.
 import { useState } from "react";
-import type { Pou } from "../generated/project";
+import type { Pou } from "../generated/api";
 import { onlineStore, useOnline } from "../online/store";
 
 /** Which instance of a function block the online view shows (a path such as MAIN.BLINK), typed or picked from the simulation's. */

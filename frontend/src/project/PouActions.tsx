@@ -3,7 +3,7 @@
 // (workspace store's applyOperation); nothing is saved until the user saves.
 import { useEffect, useState, type FormEvent, type ReactNode } from "react";
 import type { Reference } from "../generated/api";
-import type { Pou } from "../generated/project";
+import type { Pou } from "../generated/api";
 import { onlineStore } from "../online/store";
 import {
   copyName,

@@ -5,9 +5,10 @@
 // Each shows the live check of the working copy where it applies, like the POU editors.
 import { Suspense, useMemo, useState, type FormEvent } from "react";
 import type { Diagnostic } from "../generated/api";
-import type { Task } from "../generated/project";
+import type { Task } from "../generated/api";
 import { DeclarationsEditor } from "../declarations/DeclarationsEditor";
-import { ELEMENTARY_TYPES, userTypeNames } from "../declarations/model";
+import { userTypeNames } from "../declarations/model";
+import { DECLARABLE_TYPES } from "../iec/vocabulary";
 import { usePanels } from "../panels/store";
 import { LazyStEditor, LOADING } from "./lazy";
 import { useLiveCheck } from "../st/useLiveCheck";
@@ -27,7 +28,7 @@ export function useDeclarableTypes(): string[] {
   return useMemo(
     () => [
       ...new Set([
-        ...ELEMENTARY_TYPES,
+        ...DECLARABLE_TYPES,
         ...userTypeNames(userTypes),
         ...library.filter((e) => e.kind === "function_block").map((e) => e.name),
         ...(pous ?? []).filter((p) => p.kind === "function_block").map((p) => p.name),

@@ -1,7 +1,7 @@
 // The text views of the app, loaded on first use with CodeMirror (their own chunk): an ST or IL POU's
 // declarations and body, and a test file.
 import { useMemo } from "react";
-import type { Pou } from "../generated/project";
+import type { Pou } from "../generated/api";
 import { useOnline } from "../online/store";
 import { panelsStore, usePanels } from "../panels/store";
 import { IL_OPERATOR_COMPLETIONS } from "../st/ilLanguage";

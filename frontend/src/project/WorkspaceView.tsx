@@ -15,7 +15,7 @@ import {
   type ReactNode,
 } from "react";
 import type { Diagnostic } from "../generated/api";
-import type { LdBody, Pou, Project, TestFile } from "../generated/project";
+import type { LdBody, Pou, Project, TestFile } from "../generated/api";
 import { LdEditor } from "../ld/editor/LdEditor";
 import type { History } from "../ld/history";
 import { operandPath } from "../online/ldBinding";

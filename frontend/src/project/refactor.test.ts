@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import type { Pou } from "../generated/project";
+import type { Pou } from "../generated/api";
 import { copyName, describeReference, isEmptyPou, renamedPath } from "./refactor";
 
 const pou = (declarations: string, body: Pou["body"], language: Pou["language"] = "st"): Pou => ({

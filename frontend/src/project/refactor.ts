@@ -1,24 +1,21 @@
 // Project operations on the working copy: rename everywhere, what refers to a name, duplicate (the
 // server's st/refactor.py does the ST-aware work, statelessly), and the small pure facts the tree's
 // menus need (is a POU empty, how a reference is shown, a watch path after a rename).
-import { requestJson } from "../api/client";
-import type { Reference, ReferenceList, RenameResult } from "../generated/api";
-import type { Pou, Project } from "../generated/project";
-
-const post = <T>(path: string, body: unknown) =>
-  requestJson<T>(path, { method: "POST", headers: { "Content-Type": "application/json" }, body: JSON.stringify(body) });
+import { http, unwrap } from "../api/client";
+import type { Reference } from "../generated/api";
+import type { Pou, Project } from "../generated/api";
 
 /** The working copy with `oldName` renamed to `newName` in every POU, diagram, task and test file. */
 export const renameEverywhere = (project: Project, oldName: string, newName: string) =>
-  post<RenameResult>("/api/refactor/rename", { project, old_name: oldName, new_name: newName });
+  unwrap(http.POST("/api/refactor/rename", { body: { project, old_name: oldName, new_name: newName } }));
 
 /** Every place in the working copy that uses `name` (what deleting it would break). */
 export const referencesTo = async (project: Project, name: string) =>
-  (await post<ReferenceList>("/api/refactor/references", { project, name })).references;
+  (await unwrap(http.POST("/api/refactor/references", { body: { project, name } }))).references;
 
 /** The working copy with a copy of POU `name` called `newName`. */
 export const duplicated = async (project: Project, name: string, newName: string) =>
-  (await post<RenameResult>("/api/refactor/duplicate", { project, name, new_name: newName })).project;
+  (await unwrap(http.POST("/api/refactor/duplicate", { body: { project, name, new_name: newName } }))).project;
 
 /** Where a reference is, in the words of the project tree ("Main, declarations line 2", "task Fast"). */
 export function describeReference(r: Reference): string {

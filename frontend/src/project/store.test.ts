@@ -1,7 +1,7 @@
 import { describe, expect, it, vi } from "vitest";
 import { SaveConflictError, type ProjectApi } from "../api/client";
 import type { ProjectDocument } from "../generated/api";
-import type { Project } from "../generated/project";
+import type { Project } from "../generated/api";
 import { motorMain } from "../ld/fixtures";
 import { record } from "../ld/history";
 import { deleteElements } from "../ld/ops";

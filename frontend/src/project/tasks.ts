@@ -1,6 +1,6 @@
 // What a project runs, as the project tree lists it: its own tasks, or its configuration's resources with
 // their tasks and the program instances each runs (issue 16; the model is backend/ladderlab/model/project.py).
-import type { ProgramInstance, Project, Task } from "../generated/project";
+import type { ProgramInstance, Project, Task } from "../generated/api";
 
 export interface TaskLine {
   name: string;

@@ -5,7 +5,7 @@
 import { useEffect, useState } from "react";
 import { checkUnsaved } from "../api/client";
 import type { CheckReport, Diagnostic } from "../generated/api";
-import type { Project } from "../generated/project";
+import type { Project } from "../generated/api";
 
 export const CHECK_DELAY_MS = 500;
 

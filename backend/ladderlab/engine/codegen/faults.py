@@ -16,6 +16,7 @@ from types import FrameType
 from ...ir import nodes as ir
 from ...ir import types as t
 from ...model.diagnostics import Diagnostic
+from ...model.places import ProjectPlaces
 from ..errors import OUT_OF_MEMORY, WATCHDOG, PlcRuntimeError
 from . import names
 from .context import ModuleContext, std_pin_type
@@ -51,6 +52,7 @@ class Fault:
     instance: str | None = None
     origin: ir.Origin | None = None
     values: dict[str, object] = field(default_factory=dict)
+    place: str | None = None  # an LD/FBD origin in the user's words: network 2 "Timer", TON T1
 
     def where(self) -> str:
         if self.origin is None:
@@ -59,10 +61,11 @@ class Fault:
         parts = [f"POU {o.pou}"]
         if o.line is not None:
             parts.append(f"line {o.line}" + (f" column {o.column}" if o.column is not None else ""))
-        if o.network is not None:
-            parts.append(f"network {o.network}")
-        if o.element is not None:
-            parts.append(f"element {o.element}")
+        if self.place is not None:
+            parts.append(self.place)
+        else:
+            parts += [f"network {o.network}"] if o.network is not None else []
+            parts += [f"element {o.element}"] if o.element is not None else []
         return ", ".join(parts)
 
     def text(self) -> str:
@@ -86,6 +89,7 @@ class Fault:
             end_column=o.end_column,
             network=o.network,
             element=o.element,
+            place=self.place,
         )
 
 
@@ -99,6 +103,7 @@ def make_fault(
     time_ms: float,
     scan: int,
     instance_path: Callable[[object], str | None],
+    places: ProjectPlaces | None = None,
 ) -> Fault:
     frame, lineno = _deepest_generated_frame(error, filename)
     oid = (
@@ -134,7 +139,11 @@ def make_fault(
                 values[var_text(var)] = value
         me = frame.f_locals.get("self")
         instance = instance_path(me) if me is not None else None
-    return Fault(kind, code, message, task, time_ms, scan, origin.pou if origin else None, instance, origin, values)
+    place = None
+    if places is not None and origin is not None and origin.network is not None:
+        place = places.where(origin.pou, origin.network, origin.element)
+    pou = origin.pou if origin else None
+    return Fault(kind, code, message, task, time_ms, scan, pou, instance, origin, values, place)
 
 
 def _deepest_generated_frame(error: BaseException, filename: str) -> tuple[FrameType | None, int]:

@@ -256,8 +256,9 @@ class _Importer:
         groups = group_by_ladderlab(graph, r, listing)
         if tag == "LD":
             resolve_continuations(graph, r, pou.name)
+            foreign = groups is None
             groups = groups or attach_headers(ld_groups(graph), graph, r)
-            ld = LdImporter(graph, r, pou.name, signatures, ids).body(groups)
+            ld = LdImporter(graph, r, pou.name, signatures, ids, foreign=foreign).body(groups)
             return Pou(
                 name=pou.name,
                 kind=pou.kind,

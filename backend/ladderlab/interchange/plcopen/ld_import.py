@@ -86,8 +86,13 @@ class _Net:
 class LdImporter:
     """Reads the networks of one LD body; problems go to ``reader`` located at the POU and element."""
 
-    def __init__(self, graph: Graph, reader: Reader, pou: str, signatures: Signatures, ids: IdMaker):
+    def __init__(
+        self, graph: Graph, reader: Reader, pou: str, signatures: Signatures, ids: IdMaker, *, foreign: bool = True
+    ):
         self.graph = graph
+        #: Drawn by another tool: read an FB on an EN/ENO chain as its author drew it (LadderLab's own files say
+        #: what each box is, and read back exactly).
+        self.foreign = foreign
         self.reader = reader
         self.pou = pou
         self.signatures = signatures
@@ -264,7 +269,7 @@ class LdImporter:
             self.plans[element.local_id] = _Plan("inline")
             return
         plan = _Plan("box", en=True, power_in=en_pin, power_out=eno_pin or "ENO")
-        if wired_en and self.always_enabled(element, sig, instance, en_pin, eno_pin):
+        if self.foreign and wired_en and self.always_enabled(element, sig, instance, en_pin, eno_pin):
             # Issue 28: an FB on an EN/ENO chain from the left rail always runs (an FB's ENO is its EN), so the
             # power flow can pass from its BOOL input to its BOOL output as drawn, left to right (OpenPLC's
             # contact -> TON -> TOF -> coil), instead of a box on the rail and its output read by a contact.
