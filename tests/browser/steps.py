@@ -65,10 +65,15 @@ def open_pou(page, project: str, pou: str) -> None:
 
 
 def go_online(page, *, run: bool = True) -> None:
-    """Compile & simulate, then Run (unless ``run`` is False): waits for the state the toolbar shows."""
+    """Compile & simulate (saving unsaved changes when it asks), then Run (unless ``run`` is False): waits for
+    the state the toolbar shows."""
     state = page.get_by_role("status", name="Online state")
     page.get_by_role("button", name="Compile & simulate").click()
-    state.filter(has_text="Online · stopped").wait_for()
+    question = page.get_by_role("alertdialog", name="Unsaved changes")
+    state.filter(has_text="Online · stopped").or_(question).wait_for()
+    if question.is_visible():  # unsaved changes: save them, then compile
+        question.get_by_role("button", name="Save and compile").click()
+        state.filter(has_text="Online · stopped").wait_for()
     if run:
         page.get_by_role("button", name="Run", exact=True).click()
         state.filter(has_text="Online · running").wait_for()

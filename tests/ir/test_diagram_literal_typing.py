@@ -68,9 +68,7 @@ def test_a_box_literal_that_does_not_fit_is_a_located_error(language):
         if language == "ld"
         else fbd_pou("Main", DECLS, fbd_block("MAX", "s", IN1="1", IN2="300"))
     )
-    assert errors(pou) == [
-        "POU Main, network N1, element B1, pin IN2: error ST-RANGE: 300 is out of range for SINT (-128..127)"
-    ]
+    assert errors(pou) == ["POU Main, network 1, MAX.IN2: error ST-RANGE: 300 is out of range for SINT (-128..127)"]
 
 
 def fbd_chain(inner: str, inner_inputs: dict[str, str], outer: str, outer_inputs: dict[str, str], target: str):
@@ -121,5 +119,5 @@ def test_a_chained_literal_that_does_not_fit_its_place_is_a_located_error():
     """INT_TO_DINT takes an INT: ADD(1, 100000) there is refused as ``INT_TO_DINT(ADD(1, 100000))`` is in ST."""
     pou = fbd_pou("Main", DECLS, fbd_chain("ADD", {"IN1": "1", "IN2": "100000"}, "INT_TO_DINT", {"IN": "inner"}, "m"))
     assert errors(pou) == [
-        "POU Main, network N1, element B1, pin IN2: error ST-RANGE: 100000 is out of range for INT (-32768..32767)"
+        "POU Main, network 1, ADD.IN2: error ST-RANGE: 100000 is out of range for INT (-32768..32767)"
     ]

@@ -355,6 +355,65 @@ class TestCheckRequest(BaseModel):
     file: str
 
 
+class Reference(BaseModel):
+    """One place that uses a project-level name (a POU, type or global), as a rename changes it or a
+    delete would break it: the POU and its part, the line of a text or the network and element of a
+    diagram, the task, and the text there (the line, or the operand) as it was."""
+
+    pou: str | None = None
+    part: Literal[
+        "declarations", "body", "network", "transition", "step", "return type", "globals", "types", "task", "test"
+    ]
+    line: int | None = None
+    network: str | None = None
+    network_number: int | None = None
+    network_label: str | None = None
+    element: str | None = None
+    task: str | None = None
+    file: str | None = None
+    text: str = ""
+
+
+class RenameRequest(BaseModel):
+    """Body of ``POST /api/refactor/rename``: the (unsaved) project and the name to rename in it."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    project: Project
+    old_name: str
+    new_name: str
+
+
+class RenameResult(BaseModel):
+    """The renamed project (nothing is stored) and every place that changed, for the preview."""
+
+    project: Project
+    changes: list[Reference]
+
+
+class ReferencesRequest(BaseModel):
+    """Body of ``POST /api/refactor/references``: the (unsaved) project and the name whose uses are wanted."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    project: Project
+    name: str
+
+
+class ReferenceList(BaseModel):
+    references: list[Reference]
+
+
+class DuplicateRequest(BaseModel):
+    """Body of ``POST /api/refactor/duplicate``: a copy of POU ``name`` called ``new_name``."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    project: Project
+    name: str
+    new_name: str
+
+
 class PrintDocument(BaseModel):
     """What a printed project document holds (issue 28): the print view draws it with the editors' own layout
     and SVG drawing; ``GET /api/projects/{name}/document`` and ``ladderlab doc`` make it."""

@@ -18,7 +18,20 @@ from fastapi.staticfiles import StaticFiles
 from .. import __version__
 from ..model.api import Health
 from ..storage import Workspace
-from . import auth, fbd, interchange, library, live_check, monitor, projects, simulations, symbols, tests, xref
+from . import (
+    auth,
+    fbd,
+    interchange,
+    library,
+    live_check,
+    monitor,
+    projects,
+    refactor,
+    simulations,
+    symbols,
+    tests,
+    xref,
+)
 from .context import registry_of
 from .errors import install_error_handlers
 from .limits import BodySizeLimit, JsonGuard, Limits, WebsocketLimit
@@ -58,7 +71,20 @@ def create_app(workspace: Workspace, limits: Limits | None = None, security: Sec
     async def health() -> Health:  # on the event loop: answers whatever the worker threads are doing
         return Health(status="ok", version=__version__)
 
-    for module in (projects, symbols, library, simulations, monitor, interchange, fbd, live_check, auth, tests, xref):
+    for module in (
+        projects,
+        symbols,
+        library,
+        simulations,
+        monitor,
+        interchange,
+        fbd,
+        live_check,
+        refactor,
+        auth,
+        tests,
+        xref,
+    ):
         app.include_router(module.router)
     app.include_router(projects.examples_router)
 

@@ -189,6 +189,11 @@ export function checkProject(name: string): Promise<CheckReport> {
   return unwrap(http.POST("/api/projects/{name}/check", project(name)));
 }
 
+/** `POST /api/check`: every diagnostic of a project as sent (the unsaved working copy), nothing stored. */
+export function checkUnsaved(project: Project): Promise<CheckReport> {
+  return unwrap(http.POST("/api/check", { body: project }));
+}
+
 /** `GET /api/projects/{name}/export/st?pou=`: a saved POU as ST, with the lines each network became. */
 export function exportSt(name: string, pou: string): Promise<StExport> {
   return unwrap(http.GET("/api/projects/{name}/export/st", { params: { path: { name }, query: { pou } } }));

@@ -392,6 +392,66 @@ export interface paths {
     patch?: never;
     trace?: never;
   };
+  "/api/refactor/duplicate": {
+    parameters: {
+      query?: never;
+      header?: never;
+      path?: never;
+      cookie?: never;
+    };
+    get?: never;
+    put?: never;
+    /**
+     * Duplicate
+     * @description The project with a copy of POU ``name`` called ``new_name`` (nothing else changes).
+     */
+    post: operations["duplicate_api_refactor_duplicate_post"];
+    delete?: never;
+    options?: never;
+    head?: never;
+    patch?: never;
+    trace?: never;
+  };
+  "/api/refactor/references": {
+    parameters: {
+      query?: never;
+      header?: never;
+      path?: never;
+      cookie?: never;
+    };
+    get?: never;
+    put?: never;
+    /**
+     * References
+     * @description Every place that uses ``name`` (what deleting it would break).
+     */
+    post: operations["references_api_refactor_references_post"];
+    delete?: never;
+    options?: never;
+    head?: never;
+    patch?: never;
+    trace?: never;
+  };
+  "/api/refactor/rename": {
+    parameters: {
+      query?: never;
+      header?: never;
+      path?: never;
+      cookie?: never;
+    };
+    get?: never;
+    put?: never;
+    /**
+     * Rename
+     * @description The project with ``old_name`` renamed to ``new_name`` in every POU, diagram, task and test file.
+     */
+    post: operations["rename_api_refactor_rename_post"];
+    delete?: never;
+    options?: never;
+    head?: never;
+    patch?: never;
+    trace?: never;
+  };
   "/api/simulations": {
     parameters: {
       query?: never;
@@ -1002,6 +1062,17 @@ export interface components {
        * @enum {string}
        */
       severity?: "error" | "warning" | "info";
+    };
+    /**
+     * DuplicateRequest
+     * @description Body of ``POST /api/refactor/duplicate``: a copy of POU ``name`` called ``new_name``.
+     */
+    DuplicateRequest: {
+      /** Name */
+      name: string;
+      /** New Name */
+      new_name: string;
+      project: components["schemas"]["Project"];
     };
     /**
      * EmergencyStop
@@ -2083,12 +2154,90 @@ export interface components {
       y: number;
     };
     /**
+     * Reference
+     * @description One place that uses a project-level name (a POU, type or global), as a rename changes it or a
+     *     delete would break it: the POU and its part, the line of a text or the network and element of a
+     *     diagram, the task, and the text there (the line, or the operand) as it was.
+     */
+    Reference: {
+      /** Element */
+      element?: string | null;
+      /** File */
+      file?: string | null;
+      /** Line */
+      line?: number | null;
+      /** Network */
+      network?: string | null;
+      /** Network Label */
+      network_label?: string | null;
+      /** Network Number */
+      network_number?: number | null;
+      /**
+       * Part
+       * @enum {string}
+       */
+      part:
+        | "declarations"
+        | "body"
+        | "network"
+        | "transition"
+        | "step"
+        | "return type"
+        | "globals"
+        | "types"
+        | "task"
+        | "test";
+      /** Pou */
+      pou?: string | null;
+      /** Task */
+      task?: string | null;
+      /**
+       * Text
+       * @default
+       */
+      text?: string;
+    };
+    /** ReferenceList */
+    ReferenceList: {
+      /** References */
+      references: components["schemas"]["Reference"][];
+    };
+    /**
+     * ReferencesRequest
+     * @description Body of ``POST /api/refactor/references``: the (unsaved) project and the name whose uses are wanted.
+     */
+    ReferencesRequest: {
+      /** Name */
+      name: string;
+      project: components["schemas"]["Project"];
+    };
+    /**
      * RenameProject
      * @description Body of ``POST /api/projects/{name}/rename``.
      */
     RenameProject: {
       /** New Name */
       new_name: string;
+    };
+    /**
+     * RenameRequest
+     * @description Body of ``POST /api/refactor/rename``: the (unsaved) project and the name to rename in it.
+     */
+    RenameRequest: {
+      /** New Name */
+      new_name: string;
+      /** Old Name */
+      old_name: string;
+      project: components["schemas"]["Project"];
+    };
+    /**
+     * RenameResult
+     * @description The renamed project (nothing is stored) and every place that changed, for the preview.
+     */
+    RenameResult: {
+      /** Changes */
+      changes: components["schemas"]["Reference"][];
+      project: components["schemas"]["Project"];
     };
     /**
      * ResetSimulation
@@ -3191,6 +3340,7 @@ export type Continuation = components["schemas"]["Continuation"];
 export type CoverageInfo = components["schemas"]["CoverageInfo"];
 export type CreateProject = components["schemas"]["CreateProject"];
 export type Diagnostic = components["schemas"]["Diagnostic"];
+export type DuplicateRequest = components["schemas"]["DuplicateRequest"];
 export type EmergencyStop = components["schemas"]["EmergencyStop"];
 export type ErrorDetail = components["schemas"]["ErrorDetail"];
 export type ErrorResponse = components["schemas"]["ErrorResponse"];
@@ -3233,7 +3383,12 @@ export type Project = components["schemas"]["Project"];
 export type ProjectDocument = components["schemas"]["ProjectDocument"];
 export type ProjectSummary = components["schemas"]["ProjectSummary"];
 export type PushButton = components["schemas"]["PushButton"];
+export type Reference = components["schemas"]["Reference"];
+export type ReferenceList = components["schemas"]["ReferenceList"];
+export type ReferencesRequest = components["schemas"]["ReferencesRequest"];
 export type RenameProject = components["schemas"]["RenameProject"];
+export type RenameRequest = components["schemas"]["RenameRequest"];
+export type RenameResult = components["schemas"]["RenameResult"];
 export type ResetSimulation = components["schemas"]["ResetSimulation"];
 export type Resource = components["schemas"]["Resource"];
 export type Return = components["schemas"]["Return"];
@@ -4317,6 +4472,141 @@ export interface operations {
       };
       /** @description No such project or POU. */
       404: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["ErrorResponse"];
+        };
+      };
+      /** @description Bad name, invalid model or a project that does not load; see the diagnostics. */
+      422: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["ErrorResponse"];
+        };
+      };
+    };
+  };
+  duplicate_api_refactor_duplicate_post: {
+    parameters: {
+      query?: never;
+      header?: never;
+      path?: never;
+      cookie?: never;
+    };
+    requestBody: {
+      content: {
+        "application/json": components["schemas"]["DuplicateRequest"];
+      };
+    };
+    responses: {
+      /** @description Successful Response */
+      200: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["RenameResult"];
+        };
+      };
+      /** @description No such project or POU. */
+      404: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["ErrorResponse"];
+        };
+      };
+      /** @description The request body or the project is too large. */
+      413: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["ErrorResponse"];
+        };
+      };
+      /** @description Bad name, invalid model or a project that does not load; see the diagnostics. */
+      422: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["ErrorResponse"];
+        };
+      };
+    };
+  };
+  references_api_refactor_references_post: {
+    parameters: {
+      query?: never;
+      header?: never;
+      path?: never;
+      cookie?: never;
+    };
+    requestBody: {
+      content: {
+        "application/json": components["schemas"]["ReferencesRequest"];
+      };
+    };
+    responses: {
+      /** @description Successful Response */
+      200: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["ReferenceList"];
+        };
+      };
+      /** @description The request body or the project is too large. */
+      413: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["ErrorResponse"];
+        };
+      };
+      /** @description Bad name, invalid model or a project that does not load; see the diagnostics. */
+      422: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["ErrorResponse"];
+        };
+      };
+    };
+  };
+  rename_api_refactor_rename_post: {
+    parameters: {
+      query?: never;
+      header?: never;
+      path?: never;
+      cookie?: never;
+    };
+    requestBody: {
+      content: {
+        "application/json": components["schemas"]["RenameRequest"];
+      };
+    };
+    responses: {
+      /** @description Successful Response */
+      200: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["RenameResult"];
+        };
+      };
+      /** @description The request body or the project is too large. */
+      413: {
         headers: {
           [name: string]: unknown;
         };

@@ -128,7 +128,7 @@ async function openMain() {
   render(<App />);
   fireEvent.click(await screen.findByRole("button", { name: /plant/ }));
   const tree = await screen.findByRole("navigation", { name: "Project tree" });
-  fireEvent.click(within(tree).getByRole("button", { name: /Main/ }));
+  fireEvent.click(within(tree).getByRole("button", { name: /^Main/ }));
   await waitFor(() => expect(workspaceStore.getState().symbols.Main).toBeDefined());
   return screen.getByRole("application", { name: "Ladder diagram editor" });
 }
@@ -244,7 +244,7 @@ describe("online LD in the app (issue 7 online mode)", () => {
     const socket = FakeSocket.all[0]!;
     socket.open();
     fireEvent.click(
-      within(screen.getByRole("navigation", { name: "Project tree" })).getByRole("button", { name: /Pump/ }),
+      within(screen.getByRole("navigation", { name: "Project tree" })).getByRole("button", { name: /^Pump/ }),
     );
     expect(screen.getByText(/name the instance of Pump to show/)).toBeTruthy();
     fireEvent.change(screen.getByLabelText("Instance of Pump"), { target: { value: "Main.P1" } });
@@ -295,7 +295,7 @@ describe("online LD in the app (issue 7 online mode)", () => {
 });
 
 describe("Check and the Diagnostics panel", () => {
-  it("lists the check's diagnostics and a click reveals the element, or the declaration row", async () => {
+  it("lists the check's diagnostics of the working copy (nothing saved), marks the elements live, and a click reveals the element, or the declaration row", async () => {
     const diagnostics: Diagnostic[] = [
       {
         severity: "warning",
@@ -315,7 +315,11 @@ describe("Check and the Diagnostics panel", () => {
         column: 12,
       },
     ];
-    serve({ "POST /api/projects/plant/check": () => json({ diagnostics }) });
+    let saved = false;
+    serve({
+      "POST /api/check": () => json({ diagnostics }),
+      "PUT /api/projects/plant": () => ((saved = true), json({ revision: "r2", modified: "2024-05-02T10:00:00Z" })),
+    });
     const editor = await openMain();
     fireEvent.click(screen.getByRole("button", { name: "Check" }));
     const list = await screen.findByRole("list", { name: "Diagnostics" });
@@ -328,7 +332,8 @@ describe("Check and the Diagnostics panel", () => {
       "LD-X",
     ]);
     const items = [buttons[0]!, buttons[2]!];
-    expect(element(editor, "lamp_coil").getAttribute("class")).toContain("ld-has-diagnostic");
+    await waitFor(() => expect(element(editor, "lamp_coil").getAttribute("class")).toContain("ld-has-diagnostic"));
+    expect(saved).toBe(false); // Check never saves
 
     fireEvent.click(items[1]!);
     expect(element(editor, "lamp_coil").getAttribute("class")).toContain("ld-selected");

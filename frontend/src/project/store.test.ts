@@ -188,3 +188,26 @@ describe("workspace store", () => {
     expect(loadDraft("other", storage)?.base_revision).toBe("r1");
   });
 });
+
+describe("project operations", () => {
+  it("applies a new working copy as one step, following renamed and closed tabs, and undoes it", async () => {
+    const { store, storage } = await opened();
+    store.getState().openPou("Main");
+    store.getState().openPou("Util");
+    const before = store.getState().project!;
+    const renamed: Project = {
+      ...before,
+      pous: before.pous!.map((p) => (p.name === "Main" ? { ...p, name: "Plant" } : p)),
+    };
+    store.getState().applyOperation("rename Main to Plant", renamed, ["Plant"], { renamed: { Main: "Plant" } });
+    expect(store.getState()).toMatchObject({ tabs: ["Plant", "Util"], active: "Util", changed: ["Plant"] });
+    expect(store.getState().histories.Plant?.present).toEqual(motorMain);
+    expect(loadDraft("demo", storage)?.project.pous?.[0]?.name).toBe("Plant");
+    const deleted: Project = { ...renamed, pous: renamed.pous!.filter((p) => p.name !== "Util") };
+    store.getState().applyOperation("delete Util", deleted, ["Util"], { closed: ["Util"] });
+    expect(store.getState()).toMatchObject({ tabs: ["Plant"], active: "Plant", changed: ["Plant", "Util"] });
+    store.getState().undoOperation();
+    expect(store.getState()).toMatchObject({ tabs: ["Plant", "Util"], active: "Util", changed: ["Plant"], undo: null });
+    expect(store.getState().project).toEqual(renamed);
+  });
+});

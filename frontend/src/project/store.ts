@@ -5,10 +5,11 @@ import { useStore } from "zustand";
 import { createStore, type StoreApi } from "zustand/vanilla";
 import { ApiError, projectApi, SaveConflictError, type ProjectApi } from "../api/client";
 import type { ConflictDetail, Diagnostic, LibraryEntry, SymbolInfo, SymbolTable } from "../generated/api";
-import type { FbdBody, LdBody, Pou, Project, SfcBody, TestFile } from "../generated/api";
+import type { FbdBody, LdBody, Pou, Project, SfcBody, Task, TestFile } from "../generated/api";
 import { historyOf, type History } from "../ld/history";
 import type { VariableDeclaration } from "../ld/editor/declare";
 import { addDeclaration } from "./declarations";
+import { isProjectPart } from "./parts";
 import { loadDraft, removeDraft, saveDraft } from "./drafts";
 
 export interface WorkspaceData {
@@ -35,6 +36,23 @@ export interface WorkspaceData {
   saving: boolean;
   saveError: string | null;
   conflict: ConflictDetail | null;
+  /** The working copy before the last project operation (rename, delete, ...): one step back. */
+  undo: ProjectUndo | null;
+}
+
+/** What undoing a project operation restores. */
+export interface ProjectUndo {
+  label: string;
+  project: Project;
+  changed: string[];
+  tabs: string[];
+  active: string | null;
+}
+
+/** A project operation's effect on the open tabs: tabs renamed (old -> new name) and tabs closed. */
+export interface TabChanges {
+  renamed?: Record<string, string>;
+  closed?: string[];
 }
 
 export interface WorkspaceActions {
@@ -55,6 +73,10 @@ export interface WorkspaceActions {
   openTab(key: string): void;
   /** Adds a new, empty POU to the working copy and opens it; an error message when the name is refused. */
   addPou(name: string, kind: Pou["kind"], language: Pou["language"]): string | null;
+  /** The new VAR_GLOBAL text, TYPE text or task list of the project (each marks its part unsaved). */
+  setGlobals(text: string): void;
+  setTypes(text: string): void;
+  setTasks(tasks: Task[]): void;
   /** The new text of a test file (by path, tests/<name>.st). */
   setTestText(path: string, text: string): void;
   /** Adds a test file with a first test to the working copy and opens it; an error message when refused. */
@@ -66,6 +88,11 @@ export interface WorkspaceActions {
   dismissConflict(): void;
   /** Fetches a POU's symbols and the library again (a view of it is reloaded after a failure). */
   refreshPou(pou: string): void;
+  /** Replaces the working copy by `next` as one undoable step named `label` (rename, delete, ...);
+   * `changed` are the items it marks unsaved. */
+  applyOperation(label: string, next: Project, changed: string[], tabs?: TabChanges): void;
+  /** Takes the last project operation back. */
+  undoOperation(): void;
 }
 
 export type WorkspaceState = WorkspaceData & WorkspaceActions;
@@ -90,7 +117,11 @@ export const emptyWorkspace: WorkspaceData = {
   saving: false,
   saveError: null,
   conflict: null,
+  undo: null,
 };
+
+/** The declarations a new (or re-kinded empty) POU starts with. */
+export const emptyDeclarations = (kind: Pou["kind"]) => (kind === "function" ? "VAR_INPUT\nEND_VAR" : "VAR\nEND_VAR");
 
 const IDENTIFIER = /^[A-Za-z_][A-Za-z0-9_]{0,63}$/;
 const message = (err: unknown) => (err instanceof Error ? err.message : String(err));
@@ -159,6 +190,18 @@ export const diagramDiagnostics = (
     (d) => d.network,
   );
 
+/** Tabs with fresh diagram histories from `project` (a project operation may have changed any body). */
+function diagramHistories(project: Project, tabs: string[], active: string | null): Partial<WorkspaceData> {
+  const histories: Record<string, History<LdBody>> = {};
+  const fbdHistories: Record<string, History<FbdBody>> = {};
+  for (const tab of tabs) {
+    const pou = pouOf(project, tab);
+    if (pou?.language === "ld") histories[tab] = historyOf(ldBodyOf(pou));
+    if (pou?.language === "fbd") fbdHistories[tab] = historyOf(fbdBodyOf(pou));
+  }
+  return { tabs, active, histories, fbdHistories };
+}
+
 export function createWorkspaceStore(
   api: ProjectApi = projectApi,
   storage: Storage = localStorage,
@@ -175,8 +218,11 @@ export function createWorkspaceStore(
     const replaceProject = (item: string, update: (project: Project) => Project) => {
       const { project, changed } = get();
       if (!project) return;
-      const next: Project = update(project);
-      const nextChanged = changed.includes(item) ? changed : [...changed, item];
+      commit(update(project), changed.includes(item) ? changed : [...changed, item]);
+    };
+
+    /** The new working copy and its unsaved items, kept as a draft. */
+    const commit = (next: Project, nextChanged: string[]) => {
       set({ project: next, changed: nextChanged });
       const { revision, modified } = get();
       saveDraft(
@@ -245,6 +291,10 @@ export function createWorkspaceStore(
 
       openPou(pou) {
         const { tabs, project, histories } = get();
+        if (isProjectPart(pou)) {
+          set({ active: pou, tabs: tabs.includes(pou) ? tabs : [...tabs, pou] });
+          return;
+        }
         if (isTestPath(pou)) {
           if (testOf(project, pou)) set({ active: pou, tabs: tabs.includes(pou) ? tabs : [...tabs, pou] });
           return;
@@ -318,13 +368,25 @@ export function createWorkspaceStore(
           name,
           kind,
           language,
-          declarations: kind === "function" ? "VAR_INPUT\nEND_VAR" : "VAR\nEND_VAR",
+          declarations: emptyDeclarations(kind),
           body: language === "st" || language === "il" ? "" : language === "sfc" ? sfcStart() : { networks: [] },
           ...(kind === "function" ? { return_type: "BOOL" } : {}),
         };
         replacePous(name, (pous) => [...pous, pou]);
         get().openPou(name);
         return null;
+      },
+
+      setGlobals(text) {
+        if (get().project?.globals !== text) replaceProject("Global variables", (p) => ({ ...p, globals: text }));
+      },
+
+      setTypes(text) {
+        if (get().project?.types !== text) replaceProject("Types", (p) => ({ ...p, types: text }));
+      },
+
+      setTasks(tasks) {
+        replaceProject("Tasks", (p) => ({ ...p, tasks }));
       },
 
       setTestText(path, text) {
@@ -381,6 +443,24 @@ export function createWorkspaceStore(
       },
 
       dismissConflict: () => set({ conflict: null }),
+
+      applyOperation(label, next, items, tabChanges = {}) {
+        const { project, changed, tabs, active } = get();
+        if (!project) return;
+        const renamed = tabChanges.renamed ?? {};
+        const closed = new Set(tabChanges.closed ?? []);
+        const nextTabs = tabs.filter((t) => !closed.has(t)).map((t) => renamed[t] ?? t);
+        const nextActive = active && !closed.has(active) ? (renamed[active] ?? active) : (nextTabs[0] ?? null);
+        set({ undo: { label, project, changed, tabs, active }, ...diagramHistories(next, nextTabs, nextActive) });
+        commit(next, [...new Set([...changed.map((c) => renamed[c] ?? c), ...items])]);
+      },
+
+      undoOperation() {
+        const { undo } = get();
+        if (!undo) return;
+        set({ undo: null, ...diagramHistories(undo.project, undo.tabs, undo.active) });
+        commit(undo.project, undo.changed);
+      },
 
       refreshPou(pou) {
         const { name } = get();
