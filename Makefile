@@ -37,8 +37,9 @@ test-slow: $(VENV)/.installed chromium
 bench: $(VENV)/.installed
 	@for script in benchmarks/*.py; do echo "== $$script"; $(PY) $$script || exit 1; done
 
+# shared_schema/ (schemas, OpenAPI, IEC vocabulary, diagnostics), docs/diagnostics.md's table, frontend/src/generated/.
 schema: $(VENV)/.installed $(FRONTEND_DEPS)
-	$(PY) -c "from pathlib import Path; from ladderlab.model.schema import write_schemas; [print('wrote', p) for p in write_schemas(Path('shared_schema'))]"
+	$(PY) -m ladderlab.cli.shared
 	cd frontend && npm run --silent gen:types
 
 # The virtual environment is rebuilt whenever pyproject.toml changes.

@@ -5,6 +5,9 @@ import os
 import pytest
 from hypothesis import settings
 
+# The diagnostic codes the run produces are checked against the catalogue at the end (issue 19 item 5).
+pytest_plugins = ["tests.diagnostic_codes"]
+
 # Detailed assertion messages from shared test helpers (registered here, before any suite imports them).
 pytest.register_assert_rewrite("tests.ir.helpers", "tests.ir.invariants")
 

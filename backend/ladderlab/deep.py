@@ -16,7 +16,7 @@ from __future__ import annotations
 import sys
 import threading
 from collections.abc import Callable
-from typing import TypeVar
+from typing import Any, Literal, TypeVar
 
 from . import limits
 
@@ -47,11 +47,11 @@ def budget() -> tuple[int, int]:
     return frames, max(MIN_STACK, frames * STACK_PER_FRAME)
 
 
-def deep_call(function: Callable[..., T], *args, **kwargs) -> T:
+def deep_call(function: Callable[..., T], *args: Any, **kwargs: Any) -> T:
     """``function(*args, **kwargs)`` in a thread with the stack and recursion limit the nesting limits need;
     its result, or its exception re-raised here."""
     stack = budget()[1]
-    outcome: list = []
+    outcome: list[tuple[Literal[True], T] | tuple[Literal[False], BaseException]] = []
 
     def run() -> None:
         try:
@@ -68,10 +68,10 @@ def deep_call(function: Callable[..., T], *args, **kwargs) -> T:
         finally:
             threading.stack_size(previous)
     worker.join()
-    ok, value = outcome[0]
-    if ok:
-        return value
-    raise value
+    result = outcome[0]
+    if result[0]:
+        return result[1]
+    raise result[1]
 
 
 raise_recursion_limit()  # at import, not in the middle of someone's recursion

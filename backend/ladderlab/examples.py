@@ -12,6 +12,7 @@ import json
 import os
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 from .model import Project
 from .storage import Workspace
@@ -84,7 +85,7 @@ def example_project(name: str, new_name: str, start: str = "solution", root: Pat
     return project.model_copy(update={"pous": pous})
 
 
-def _meta(folder: Path) -> dict:
+def _meta(folder: Path) -> dict[str, Any]:
     path = folder / META_FILE
     return json.loads(path.read_text(encoding="utf-8")) if path.is_file() else {}
 

@@ -1,18 +1,15 @@
 import { render, screen, within } from "@testing-library/react";
-import { beforeEach, describe, expect, it, vi } from "vitest";
+import { beforeEach, describe, expect, it } from "vitest";
 import App from "./App";
 import { appStore, initialData } from "./store";
+import { stubFetch } from "./test/fetchStub";
 
 function respond(routes: Record<string, () => Response>) {
-  vi.stubGlobal(
-    "fetch",
-    vi.fn(async (input: RequestInfo | URL) => {
-      const url = String(input);
-      const route = routes[url];
-      if (!route) throw new Error(`unexpected fetch ${url}`);
-      return route();
-    }),
-  );
+  stubFetch(({ path }) => {
+    const route = routes[path];
+    if (!route) throw new Error(`unexpected fetch ${path}`);
+    return route();
+  });
 }
 
 const json = (body: unknown, status = 200) =>

@@ -6,6 +6,7 @@ import { useWorkspace } from "./project/store";
 import { WorkspaceView } from "./project/WorkspaceView";
 import { NewFromExample } from "./hmi/NewFromExample";
 import { ViewBoundary } from "./project/ViewBoundary";
+import { useHidden } from "./project/layout";
 
 const HEALTH_POLL_MS = 15_000;
 
@@ -186,6 +187,7 @@ export default function App() {
   const checkHealth = useAppStore((s) => s.checkHealth);
   const selected = useAppStore((s) => s.selectedProject);
   const listed = useAppStore((s) => s.projectsStatus === "ready");
+  const [projectsHidden, toggleProjects] = useHidden("projects");
 
   useEffect(() => {
     void loadProjects();
@@ -210,14 +212,19 @@ export default function App() {
 
   return (
     <ViewBoundary name="LadderLab">
-      <div className="app">
+      <div className={`app${projectsHidden ? " projects-hidden" : ""}`}>
         <header className="header">
+          <button type="button" className="panel-toggle" aria-pressed={!projectsHidden} onClick={toggleProjects}>
+            {projectsHidden ? "Show projects" : "Hide projects"}
+          </button>
           <h1>LadderLab</h1>
           <HealthIndicator />
         </header>
-        <ViewBoundary name="The project list" gridArea="sidebar">
-          <ProjectList />
-        </ViewBoundary>
+        {projectsHidden ? null : (
+          <ViewBoundary name="The project list" gridArea="sidebar">
+            <ProjectList />
+          </ViewBoundary>
+        )}
         <MainArea />
       </div>
     </ViewBoundary>

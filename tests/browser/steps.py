@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import re
+import time
 import urllib.request
 
 
@@ -64,10 +65,15 @@ def open_pou(page, project: str, pou: str) -> None:
 
 
 def go_online(page, *, run: bool = True) -> None:
-    """Compile & simulate, then Run (unless ``run`` is False): waits for the state the toolbar shows."""
+    """Compile & simulate (saving unsaved changes when it asks), then Run (unless ``run`` is False): waits for
+    the state the toolbar shows."""
     state = page.get_by_role("status", name="Online state")
     page.get_by_role("button", name="Compile & simulate").click()
-    state.filter(has_text="Online · stopped").wait_for()
+    question = page.get_by_role("alertdialog", name="Unsaved changes")
+    state.filter(has_text="Online · stopped").or_(question).wait_for()
+    if question.is_visible():  # unsaved changes: save them, then compile
+        question.get_by_role("button", name="Save and compile").click()
+        state.filter(has_text="Online · stopped").wait_for()
     if run:
         page.get_by_role("button", name="Run", exact=True).click()
         state.filter(has_text="Online · running").wait_for()
@@ -86,3 +92,19 @@ def watch(page, path: str):
     panels.get_by_label("Variable path to watch").fill(path)
     panels.get_by_label("Variable path to watch").press("Enter")
     return panels.locator(f'tr[data-path="{path.upper()}"] td.watch-value')
+
+
+def scan_count(page) -> int:
+    """The scan counter of the simulation toolbar."""
+    return int(page.get_by_test_id("scan-count").inner_text())
+
+
+def settled_scan_count(page) -> int:
+    """The counter once the last values sent before a stop have arrived (it stops changing)."""
+    previous = scan_count(page)
+    while True:
+        time.sleep(0.25)
+        current = scan_count(page)
+        if current == previous:
+            return current
+        previous = current

@@ -20,27 +20,13 @@ import time
 import pytest
 
 from .conftest import ARTIFACTS
+from .steps import scan_count, settled_scan_count
 
 pytestmark = pytest.mark.browser
 
 
 def halted_networks(page) -> list[str]:
     return page.eval_on_selector_all("svg.ld-network.ld-halted", "els => els.map(e => e.dataset.network)")
-
-
-def scan_count(page) -> int:
-    return int(page.get_by_test_id("scan-count").inner_text())
-
-
-def settled_scan_count(page) -> int:
-    """The counter once the last values sent before a stop have arrived (it stops changing)."""
-    previous = scan_count(page)
-    while True:
-        time.sleep(0.25)
-        current = scan_count(page)
-        if current == previous:
-            return current
-        previous = current
 
 
 def open_main(page) -> None:

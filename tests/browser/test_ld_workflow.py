@@ -91,10 +91,11 @@ def test_new_user_draws_saves_and_runs_the_motor_rung(page, server):
     page.get_by_text("All changes saved").wait_for()
     page.screenshot(path=str(ARTIFACTS / "ld-offline.png"))
 
-    # The saved project holds the rung and the declarations the prompt wrote.
+    # The saved project holds the rung and the declarations the prompt wrote, aligned in columns (issue 28).
     with urllib.request.urlopen(f"{server}/api/projects/plant") as response:
         main = json.load(response)["project"]["pous"][0]
-    assert re.findall(r"(\w+) : BOOL;", main["declarations"]) == ["Start", "Stop", "Motor"]
+    assert re.findall(r"(\w+) *: BOOL;", main["declarations"]) == ["Start", "Stop", "Motor"]
+    assert "    Start : BOOL;\n    Stop  : BOOL;\n    Motor : BOOL;" in main["declarations"]
     network = main["body"]["networks"][0]["elements"]
     assert [e["type"] for e in network] == ["parallel", "contact", "coil"]
     assert [[e["var"] for e in b] for b in network[0]["branches"]] == [["Start"], ["Motor"]]

@@ -138,7 +138,7 @@ def test_write_prepared_values_with_ctrl_f7_and_in_place(page, server):
     watch(page, "StartCount").filter(has_text=re.compile(r"^1$")).wait_for()  # the rising edge of Start, once
     # A TIME nothing writes while the Blinker is disabled: written in place as an IEC literal.
     value = watch(page, "Main.Blink.Half.PT")
-    value.filter(has_text="T#0ms").wait_for()
+    value.filter(has_text=re.compile(r"^T#0s$")).wait_for()  # as the engine's TO_STRING writes it
     page.get_by_label("New value for Main.Blink.Half.PT").fill("T#7s250ms")
     page.get_by_role("region", name="Panels").locator('tr[data-path="MAIN.BLINK.HALF.PT"]').get_by_role(
         "button", name="Write"

@@ -189,4 +189,7 @@ def test_a_file_that_is_not_utf8_is_a_message_with_exit_2(capsys, tmp_path: Path
     path.write_bytes(b"PROGRAM Main\nVAR x : INT; END_VAR\n\xed\xb3\xbf\nEND_PROGRAM\n")  # 13 + 21 bytes, then it
     code, _, err = cli(capsys, "check", str(path))
     assert code == 2
-    assert err == "ladderlab: the input is not UTF-8 text: invalid continuation byte at byte 34; save it as UTF-8\n"
+    assert (
+        err
+        == "bad.st:3:1: error BAD-ENCODING: not UTF-8 at byte 34 (0xED); re-save as UTF-8 or pass --encoding cp1251\n"
+    )

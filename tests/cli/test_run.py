@@ -190,3 +190,33 @@ def test_parse_duration_forms():
         90_000,
         3_600_000,
     ]
+
+
+def test_direct_addresses_are_set_and_watched_by_address(capsys, tmp_path):
+    """Issue 16: ``--set %IX0.1=TRUE`` and ``--watch %QX3.0`` reach the process image; the program uses the
+    addresses without declaring them (the seeds' IEC manuals write I/O this way)."""
+    source = "PROGRAM Main\n%QX3.0 := %IX0.1 AND NOT %IX0.2;\n%QW4 := %IW2 + 1;\nEND_PROGRAM\n"
+    code, out, err = run(
+        capsys,
+        tmp_path,
+        source,
+        "--cycles",
+        "2",
+        "--set",
+        "%IX0.1=TRUE",
+        "--set",
+        "%IX0.2=TRUE@1",
+        "--set",
+        "%IW2=41",
+        "--watch",
+        "%QX3.0",
+        "--watch",
+        "%QW4",
+        "--format",
+        "jsonl",
+    )
+    assert (code, err) == (0, "")
+    assert [json.loads(line) for line in out.splitlines()] == [
+        {"scan": 0, "time_ms": 10, "%QX3.0": True, "%QW4": 42},
+        {"scan": 1, "time_ms": 20, "%QX3.0": False, "%QW4": 42},
+    ]

@@ -370,4 +370,5 @@ def test_reset_returns_to_the_cold_state(name):
 def test_every_standard_fb_is_registered_SFB_01():
     expected = {"SR", "RS", "R_TRIG", "F_TRIG", "CTU", "CTD", "CTUD", "TP", "TON", "TOF"}
     expected |= {f"{c}_{t}" for c in ("CTU", "CTD", "CTUD") for t in ("INT", "DINT", "LINT", "UDINT", "ULINT")}
+    expected |= {"ACTION_CONTROL", "SFC_STEP"}  # what SFC charts are lowered to (IEC 61131-3 figure 15, docs/sfc.md)
     assert set(STANDARD_FBS) == expected

@@ -246,16 +246,20 @@ def test_a_panel_bound_to_a_direct_address_drives_the_variable_declared_at_it():
 @pytest.mark.parametrize(
     ("path", "error"),
     [
-        ("%IX9.9", "no variable is declared at %IX9.9 (declare one with AT %IX9.9)"),
-        ("%Q", "'%Q' is not a direct address (e.g. %IX0.0, %QW2, %MD10)"),
+        ("%IX9.9", "%IX9.9: a byte has bits 0..7, not 9"),
+        ("%QW2", "%QW2 is outside the process image: the program uses 1 byte(s) of %Q (%QB0..%QB0)"),
+        ("%Q", "'%Q' is not a direct address such as %IX0.1, %QW4 or %MD8"),
         ("%IX0.0.", "'%IX0.0.' is not a direct address"),
     ],
 )
-def test_an_address_nothing_is_declared_at_is_refused_with_the_reason(path, error):
+def test_an_address_outside_the_image_or_malformed_is_refused_with_the_reason(path, error):
+    """An address the program's process image does not hold, or that is no address, is refused with the
+    reason (engine/paths.py's wording); one inside the image reads it even with nothing declared at it."""
     sim = simulate(LOCATED, globals=LOCATED_GLOBALS)
     with pytest.raises((KeyError, ValueError)) as refused:
         sim.read(path)
     assert error in str(refused.value)
+    assert sim.read("%IX1.0") is False  # in the input image, no variable declared at it
 
 
 HEAT = st_pou(

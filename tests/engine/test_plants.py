@@ -8,7 +8,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from ladderlab.engine.inputs import InputEvent
-from ladderlab.model import Task
+from ladderlab.model import Configuration, ProgramInstance, Project, Resource, Task
 from ladderlab.simulation.build import build_project
 
 from .plant_support import TANK_CONTROL, TANK_GLOBALS, TANK_PLANT, project, simulate, st_pou, tank_reference
@@ -194,3 +194,52 @@ def test_a_plant_fault_stops_the_plant_task_with_its_location(variant):
     sim = simulate(TANK_CONTROL, plant, globals=TANK_GLOBALS, variant=variant)
     sim.cycle()
     assert sim.fault is not None and sim.fault.task == "PLANTS" and sim.fault.pou.upper() == "MODEL"
+
+
+def test_the_plant_runs_every_scan_beside_a_single_task():
+    """A SINGLE task (CFG-05) runs once per rising edge of its variable; the resource then scans every 10 ms
+    and the plant (mark 9) runs in each of those scans, the triggered task (mark 1) after it."""
+    globals_ = "VAR_GLOBAL\n    Order : DINT;\n    Go : BOOL;\nEND_VAR"
+    task = Task(name="OnGo", interval=None, single="Go", programs=["Ctl"])
+    sim = simulate(_marker("Ctl", "program", 1), _marker("Model", "plant", 9), globals=globals_, tasks=[task])
+    rows = []
+    for go in (False, True, True, False, True):
+        sim.write("Order", 0)
+        sim.write("Go", go)
+        sim.cycle()
+        rows.append((sim.time_ms, sim.read("Order")))
+    assert rows == [(10, 9), (20, 91), (30, 9), (40, 9), (50, 91)]
+
+
+def _configured(*instances: ProgramInstance, task: Task | None = None) -> Project:
+    resource = Resource(name="Cpu", tasks=[task] if task else [], programs=list(instances))
+    bench = project(TANK_PLANT, TANK_CONTROL, globals=TANK_GLOBALS)
+    return bench.model_copy(update={"configuration": Configuration(name="Cell", resources=[resource])})
+
+
+def test_a_configuration_runs_the_plants_first_in_every_scan():
+    """With an IEC configuration (instance Ctl of Main in a 10 ms task), the plant still has its own instance
+    (Tank, named after it) run by the plant task before the configuration's task: the tank's lockstep."""
+    task = Task(name="Cyclic", interval="T#10ms", programs=[ProgramInstance(name="Ctl", type="Main")])
+    build = build_project(_configured(task=task))
+    assert build.compiled is not None, [d.format() for d in build.diagnostics]
+    sim = build.simulation()
+    assert [(t.name, t.programs, t.plant) for t in sim.tasks] == [
+        ("CYCLIC", ["CTL"], False),
+        ("PLANTS", ["TANK"], True),
+    ]
+    rows = [(sim.read("Pump"), sim.read("High"), sim.read("Level")) for _ in range(12) if sim.cycle()]
+    reference = tank_reference(12)
+    assert rows == reference
+    # the program's own state is the instance Ctl's: it counts the scans that found the pump off below HIGH
+    before = [False] + [pump for pump, _, _ in reference[:-1]]
+    assert sim.read("Ctl.Starts") == sum(not pump and not high for pump, (_, high, _) in zip(before, reference))
+
+
+def test_a_configuration_instance_cannot_take_a_plants_name():
+    """The plant's instance is named after it, among the globals: a configuration's instance of that name
+    would be a second one."""
+    build = build_project(_configured(ProgramInstance(name="Tank", type="Main")))
+    assert [(d.code, d.json_path) for d in build.diagnostics] == [
+        ("DUPLICATE-INSTANCE", "$.configuration.resources[0].programs[0]")
+    ]

@@ -45,9 +45,9 @@ END_CONFIGURATION
 def test_configuration_tasks_and_warm_cold_restart_from_st():
     sim = simulation(TWO_TASKS)
     sim.cycle(6)  # 10 20 25 30 40 50
-    assert (sim.time_ms, sim.read("fast.n"), sim.read("Slow.N"), sim.read("kept")) == (50, 5, 2, 10)
+    assert (sim.time_ms, sim.read("f.n"), sim.read("S.N"), sim.read("kept")) == (50, 5, 2, 10)  # instance names
     sim.reset()
-    assert (sim.read("KEPT"), sim.read("LOST"), sim.read("FAST.N")) == (10, 5, 0)
+    assert (sim.read("KEPT"), sim.read("LOST"), sim.read("F.N")) == (10, 5, 0)
     sim.reset(cold=True)
     assert sim.read("KEPT") == 5
 

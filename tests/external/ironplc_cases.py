@@ -20,7 +20,8 @@ _SECONDS = ("DATE", "DT", "DATE_AND_TIME", "LDATE", "LDT")
 
 def run_case(case: dict) -> str | None:
     project, diagnostics = source_to_project(case["source"], "case")
-    build = build_project(project) if project is not None else None
+    refused = any(d.severity == "error" for d in diagnostics)  # a POU that does not parse is not in ``project``
+    build = build_project(project) if project is not None and not refused else None
     compiled = build is not None and build.compiled is not None
     if case["kind"] == "compile_error":
         return None if not compiled else f"compiled, expected the error: {case['error']}"
@@ -53,13 +54,22 @@ def run_case(case: dict) -> str | None:
 
 
 def _program_prefix(sim: Simulation, project):
+    """Paths "in the PROGRAM's scope" (the MANIFEST): through its instance - named after it, or the one a
+    CONFIGURATION declares (``PROGRAM inst WITH task : main``) - else a global."""
     programs = [p.name for p in project.pous if p.kind == "program"]
+    instances = [
+        p if isinstance(p, str) else p.name
+        for task in project.all_tasks()
+        for p in task.programs
+        if (p if isinstance(p, str) else p.type).upper() in {n.upper() for n in programs}
+    ]
+    roots = instances[:1] if len(instances) == 1 else programs[:1] if len(programs) == 1 else []
 
     def path(name: str) -> str:
-        if len(programs) == 1:
+        for root in roots:
             try:
-                sim.location(f"{programs[0]}.{name}")
-                return f"{programs[0]}.{name}"
+                sim.location(f"{root}.{name}")
+                return f"{root}.{name}"
             except (KeyError, ValueError):
                 pass
         return name  # a global

@@ -147,18 +147,29 @@ st_bodies = st.sampled_from(
 )
 
 
+il_bodies = st.sampled_from(
+    [
+        "",
+        "LD x\nADD 1\nST x",
+        "start: LD a  (* comment *)\n  JMPC start\n\nend:",
+        "  CAL t1(IN := a)\n  LD 'END_PROGRAM'",
+        "x := 1;",  # an IL POU whose text is not IL yet (being typed): still stored as .il
+    ]
+)
+
+
 @st.composite
 def pous(draw):
-    language = draw(st.sampled_from(["st", "ld", "fbd"]))
+    language = draw(st.sampled_from(["st", "ld", "fbd", "il"]))
     kind = draw(st.sampled_from(["program", "function_block", "function"]))
-    body = {"st": st_bodies, "ld": ld_bodies, "fbd": fbd_bodies}[language]
+    body = {"st": st_bodies, "ld": ld_bodies, "fbd": fbd_bodies, "il": il_bodies}[language]
     return Pou(
         name=draw(identifiers),
         kind=kind,
         language=language,
         return_type="INT" if kind == "function" else None,
         declarations=draw(declarations | texts),
-        body=draw(body) if language != "st" else draw(body | texts),
+        body=draw(body) if language not in ("st", "il") else draw(body | texts),
     )
 
 

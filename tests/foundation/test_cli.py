@@ -101,7 +101,7 @@ def test_check_reports_st_diagnostics_with_location(tmp_path: Path) -> None:
     assert "Main/body" in result.stdout
 
 
-def test_st_file_configuration_becomes_tasks(tmp_path: Path) -> None:
+def test_st_file_configuration_becomes_the_project_configuration(tmp_path: Path) -> None:
     path = tmp_path / "plant.st"
     path.write_text(
         "PROGRAM Fast\nVAR n : INT; END_VAR\nn := n + 1;\nEND_PROGRAM\n"
@@ -113,9 +113,12 @@ def test_st_file_configuration_becomes_tasks(tmp_path: Path) -> None:
         "  END_RESOURCE\nEND_CONFIGURATION\n"
     )
     project = load_project_path(path)
-    assert [(t.name, t.interval, t.priority, t.programs) for t in project.tasks] == [
-        ("T1", "T#5ms", 1, ["Fast"]),
-        ("T2", "T#20ms", 2, ["Slow"]),
+    assert project.tasks == [] and project.configuration.name == "Plant"
+    (resource,) = project.configuration.resources
+    assert (resource.name, resource.on) == ("Cpu", "PLC")
+    assert [(t.name, t.interval, t.priority, [(p.name, p.type) for p in t.programs]) for t in resource.tasks] == [
+        ("T1", "T#5ms", 1, [("fast_inst", "Fast")]),
+        ("T2", "T#20ms", 2, [("slow_inst", "Slow")]),
     ]
 
 

@@ -21,6 +21,7 @@ from ladderlab.model import (
     Contact,
     Continuation,
     FbdBody,
+    FbdComment,
     FbdJump,
     FbdNetwork,
     FbdReturn,
@@ -155,7 +156,9 @@ def fbd_bodies(draw, ids: Ids | None = None):
         nodes = []
         for _ in range(draw(st.integers(0, 5))):
             pos = draw(st.none() | st.builds(Position, x=_coordinates, y=_coordinates))
-            kind = draw(st.sampled_from(["block", "block", "input", "output", "jump", "return", "conn", "cont"]))
+            kind = draw(
+                st.sampled_from(["block", "block", "input", "output", "jump", "return", "conn", "cont", "comment"])
+            )
             if kind == "block":
                 flags = st.builds(PinFlags, negated=st.booleans(), edge=st.sampled_from([None, "rising", "falling"]))
                 nodes.append(
@@ -185,11 +188,18 @@ def fbd_bodies(draw, ids: Ids | None = None):
                 nodes.append(FbdJump(id=ids(), pos=pos, target="L1"))
             elif kind == "return":
                 nodes.append(FbdReturn(id=ids(), pos=pos))
+            elif kind == "comment":  # issue 28: free comment boxes keep their text, place and size
+                size = draw(st.none() | st.integers(10, 400).map(float))
+                nodes.append(
+                    FbdComment(
+                        id=ids(), pos=pos, text=(draw(comments) or "").strip(), width=size, height=size and size / 2
+                    )
+                )
             else:
                 cls = Connector if kind == "conn" else Continuation
                 nodes.append(cls(id=ids(), pos=pos, name=draw(st.sampled_from(["c1", "c2"]))))
         sources = [n for n in nodes if isinstance(n, (Block, InputNode, Continuation))]
-        sinks = [n for n in nodes if not isinstance(n, (InputNode, Continuation))]
+        sinks = [n for n in nodes if not isinstance(n, (InputNode, Continuation, FbdComment))]
         wires = []
         if sources and sinks:
             for _ in range(draw(st.integers(0, 4))):

@@ -4,7 +4,8 @@
 project with every LD/FBD POU replaced by its exported ST (parsed back from the
 text) run side by side; before each scan both get the same random writes to a
 random subset of the programs' and the globals' BOOL and integer variables, after
-each scan every elementary variable the two have in common must be equal.
+each scan every elementary variable the two have in common must be equal. Every export is also checked to map
+each line of its networks to its network and element (``check_source_map``, issue 28).
 """
 
 from __future__ import annotations
@@ -13,6 +14,7 @@ import random
 
 from ladderlab.interchange.st.export import StExport, export_pou_st
 from ladderlab.ir import types as irt
+from ladderlab.model import ld
 from ladderlab.model.project import Project
 from ladderlab.simulation.build import build_project
 from ladderlab.st.checker import check_project
@@ -26,7 +28,35 @@ def exported(project: Project, name: str) -> StExport:
     result = export_pou_st(project, name)
     assert [d.format() for d in result.diagnostics] == [], result.text
     assert result.text
+    check_source_map(project, name, result)
     return result
+
+
+#: Lines of the network-index state machine that belong to no one network (docs/st_export.md, jumps).
+SCAFFOLDING = {"END_CASE;", "END_WHILE;"}
+
+
+def check_source_map(project: Project, name: str, result: StExport) -> None:
+    """Issue 28: every line from the first network's comment to the POU's end (the state machine's closing lines
+    apart) maps to a network of the POU and, if to an element, to one of that network's elements. (An SFC POU's
+    source map is not written: its networks are those of its actions.)"""
+    if project.pou(name).language not in ("ld", "fbd"):
+        return
+    lines = result.text.splitlines()
+    first = next((i for i, line in enumerate(lines, 1) if line.lstrip().startswith("(* Network")), None)
+    if first is None:
+        return
+    mapped = {line: (network, element) for line, network, element in result.source_map}
+    networks = project.pou(name).body.networks
+    elements = {n.id: {e.id for e in (n.nodes if hasattr(n, "nodes") else ld.walk(n.elements))} for n in networks}
+    for number in range(first, len(lines)):  # the last line is END_PROGRAM (or END_FUNCTION...)
+        text = lines[number - 1]
+        if text.strip() in SCAFFOLDING:
+            continue
+        assert number in mapped, f"line {number} {text!r} maps to no network"
+        network, element = mapped[number]
+        assert network in elements, f"line {number} {text!r}: no network {network!r}"
+        assert element is None or element in elements[network], f"line {number} {text!r}: no element {element!r}"
 
 
 def as_st(project: Project) -> Project:

@@ -409,7 +409,9 @@ def test_declarations_that_do_not_parse_stop_the_export_with_a_located_error():
 def test_a_priority_plcopen_cannot_hold_is_an_export_error():
     with pytest.raises(PlcopenExportError) as caught:
         export_plcopen(Project(name="t", tasks=[Task(name="T", priority=70000)]))
-    assert [d.json_path for d in caught.value.diagnostics] == ["$.tasks[0].priority"]
+    assert [(d.code, d.json_path, d.message) for d in caught.value.diagnostics] == [
+        ("PLCOPEN-EXPORT", "$.tasks[0].priority", "task T: PLCopen priorities are 0..65535, not 70000")
+    ]
 
 
 def test_a_wire_to_a_missing_node_is_an_export_error_not_dropped():

@@ -74,19 +74,16 @@ CHECK_FAILS = {
     "rusty-cfc/tests/integration/data/cfc/jump_missing_label.cfc": ({"FBD-UNKNOWN-LABEL"}, BROKEN),
     "rusty-cfc/tests/integration/data/cfc/jump_no_label.cfc": ({"FBD-UNKNOWN-LABEL"}, BROKEN),
     "rusty-cfc/tests/integration/data/cfc/my_add.cfc": ({"FBD-UNKNOWN-CALL"}, OTHER_FILE),
+    "ironplc/integrations/vscode/tests/grammar/snap/plcopen-configuration.xml": ({"UNKNOWN-PROGRAM"}, GRAMMAR),
     "ironplc/integrations/vscode/tests/grammar/snap/plcopen-cdata.xml": (
         {"ST-UNKNOWN-VAR", "ST-DECL", "MISSING-RETURN-TYPE"},
         GRAMMAR,
     ),
     "ironplc/integrations/vscode/tests/grammar/snap/plcopen-pou.xml": ({"ST-DECL"}, GRAMMAR),
+    "ironplc/integrations/vscode/tests/grammar/snap/plcopen-sfc.xml": ({"SFC-EMPTY"}, GRAMMAR),
 }
-#: SFC and IL POUs, reported as unsupported (file -> POU names).
-UNSUPPORTED = {
-    "beremiz-examples/exemples/first_steps/plc.xml": ["CounterSFC", "CounterIL"],
-    "beremiz-examples/exemples/svghmi_traffic_light/plc.xml": ["traffic_light_sequence"],
-    "openplc-examples/examples/Multi_Language/plc.xml": ["CounterSFC", "CounterIL"],
-    "ironplc/integrations/vscode/tests/grammar/snap/plcopen-sfc.xml": ["MySfcProgram"],
-}
+#: POUs reported as unsupported (file -> POU names): none, SFC and IL both import (issues 24 and 26).
+UNSUPPORTED: dict[str, list[str]] = {}
 
 
 class _Summary:
@@ -115,7 +112,7 @@ def fixtures(request) -> dict[str, object]:
     return {p.relative_to(EXTERNAL).as_posix(): import_plcopen(p.read_bytes(), file=p.name) for p in files}
 
 
-def test_every_fixture_imports_ld_fbd_and_st_without_errors_and_reports_sfc_and_il(fixtures):
+def test_every_fixture_imports_ld_fbd_sfc_and_st_without_errors_and_reports_il(fixtures):
     languages: Counter[str] = Counter()
     errors, unsupported = {}, {}
     for path, result in fixtures.items():
@@ -128,13 +125,14 @@ def test_every_fixture_imports_ld_fbd_and_st_without_errors_and_reports_sfc_and_
         if skipped:
             unsupported[path] = skipped
     SUMMARY.lines.append(
-        f"{len(fixtures)} files imported: {languages['ld']} LD, {languages['fbd']} FBD and "
-        f"{languages['st']} ST POUs; {sum(map(len, unsupported.values()))} SFC/IL POUs reported "
+        f"{len(fixtures)} files imported: {languages['ld']} LD, {languages['fbd']} FBD, {languages['st']} ST, "
+        f"{languages['il']} IL and {languages['sfc']} SFC POUs; {sum(map(len, unsupported.values()))} POUs reported "
         f"unsupported; import errors in {len(errors)} file(s), all in the source"
     )
     assert errors == IMPORT_ERRORS
     assert unsupported == UNSUPPORTED
     assert len(fixtures) >= 51 and languages["ld"] >= 12 and languages["fbd"] >= 36 and languages["st"] >= 12
+    assert languages["il"] == 2  # CounterIL of first_steps and of Multi_Language
 
 
 def test_imported_projects_pass_the_project_check_unless_the_source_is_not_standard(fixtures):
@@ -151,20 +149,31 @@ def test_imported_projects_pass_the_project_check_unless_the_source_is_not_stand
     assert failing == {path: codes for path, (codes, _) in CHECK_FAILS.items()}
 
 
-def test_first_steps_counters_in_ld_fbd_and_st_agree_scan_for_scan(fixtures):
-    """Beremiz first_steps: CounterST, CounterFBD and CounterLD count up, and Reset loads ResetCounterValue (17)."""
+def test_first_steps_counters_in_ld_fbd_st_and_il_agree_scan_for_scan(fixtures):
+    """Beremiz first_steps: CounterST, CounterFBD, CounterLD and CounterIL count up, and Reset loads
+    ResetCounterValue (17)."""
     project = fixtures["beremiz-examples/exemples/first_steps/plc.xml"].project
-    counters = [p for p in project.pous if p.name in ("CounterST", "CounterFBD", "CounterLD")]
-    assert [p.language for p in counters] == ["st", "fbd", "ld"]
+    counters = [p for p in project.pous if p.name in ("CounterST", "CounterFBD", "CounterLD", "CounterIL")]
+    assert sorted((p.name, p.language) for p in counters) == [
+        ("CounterFBD", "fbd"),
+        ("CounterIL", "il"),
+        ("CounterLD", "ld"),
+        ("CounterST", "st"),
+    ]
     check = Pou(
         name="Check",
         kind="program",
         language="st",
-        declarations="VAR\n    Reset : BOOL;\n    st : CounterST;\n    fbd : CounterFBD;\n    ld : CounterLD;\nEND_VAR",
-        body="st(Reset := Reset);\nfbd(Reset := Reset);\nld(Reset := Reset);",
+        declarations="VAR\n    Reset : BOOL;\n    st : CounterST;\n    fbd : CounterFBD;\n    ld : CounterLD;\n"
+        "    il : CounterIL;\nEND_VAR",
+        body="st(Reset := Reset);\nfbd(Reset := Reset);\nld(Reset := Reset);\nil(Reset := Reset);",
     )
     program = project.model_copy(
-        update={"pous": [*counters, check], "tasks": [Task(name="t", interval="T#100ms", programs=["Check"])]}
+        update={
+            "pous": [*counters, check],
+            "tasks": [Task(name="t", interval="T#100ms", programs=["Check"])],
+            "configuration": None,
+        }
     )
     result = lower_project(program)
     assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
@@ -173,21 +182,59 @@ def test_first_steps_counters_in_ld_fbd_and_st_agree_scan_for_scan(fixtures):
     for scan in range(30):
         sim.write("Check.Reset", scan in (10, 11, 25))
         sim.cycle(1)
-        counts.append((sim.read("Check.st.OUT"), sim.read("Check.fbd.OUT"), sim.read("Check.ld.Out")))
-    assert all(st == fbd == ld for st, fbd, ld in counts)
+        counts.append(
+            (sim.read("Check.st.OUT"), sim.read("Check.fbd.OUT"), sim.read("Check.ld.Out"), sim.read("Check.il.Out"))
+        )
+    assert all(st == fbd == ld == il for st, fbd, ld, il in counts)
     assert [c[0] for c in counts] == [*range(1, 11), 17, 17, *range(18, 31), 17, 18, 19, 20, 21][:30]
 
 
-def test_first_steps_runs_as_imported_with_stand_ins_for_its_sfc_and_il_counters(fixtures):
-    """The whole first_steps project builds as imported; the SFC/IL stand-ins keep their outputs at 0."""
+def test_first_steps_runs_as_imported_and_its_five_counters_count(fixtures):
+    """The whole first_steps project builds as imported; its ST, FBD, LD and IL counters count every scan, the SFC
+    counter one scan behind (its first scan is the initial step's, SFC-04)."""
     result = lower_project(fixtures["beremiz-examples/exemples/first_steps/plc.xml"].project)
     assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
     sim = Simulation(result.program)
     for scan in range(1, 6):
         sim.cycle(1)
-        counts = [sim.read(f"plc_prg.Cnt{n}") for n in range(1, 6)]
-        assert counts == [scan, scan, 0, 0, scan]
-        assert sim.read("plc_prg.AVCnt") == pytest.approx(3 * scan / 5)
+        counts = [sim.read(f"plc_task_instance.Cnt{n}") for n in range(1, 6)]  # the instance of plc_prg
+        assert counts == [scan, scan, scan - 1, scan, scan]
+        assert sim.read("plc_task_instance.AVCnt") == pytest.approx((5 * scan - 1) / 5)  # the mean of the five
+
+
+def test_first_steps_sfc_counter_counts_up_and_resets_as_its_chart_says(fixtures):
+    """CounterSFC (Beremiz: "if reset is False, counter is incremented every cycle; if True it is reset to
+    ResetCounterValue", 17). Its chart: Start -(NOT Reset)-> Count [Cnt := Cnt + 1; OUT := Cnt] -(Reset)-> Start
+    -(Reset)-> ResetCounter [Cnt := 17; OUT := Cnt] -(NOT Reset)-> Start. Worked out from SFC-04: a step acts from
+    the scan after its transition fired, and each left action runs once more (so Count adds one in the scan after
+    Reset rises, and ResetCounter loads 17 again as Start is active); every pass through Start costs a scan."""
+    project = fixtures["beremiz-examples/exemples/first_steps/plc.xml"].project
+    counter = project.pou("CounterSFC")
+    assert counter is not None and counter.language == "sfc"
+    check = Pou(
+        name="Check",
+        kind="program",
+        language="st",
+        declarations="VAR\n    Reset : BOOL;\n    sfc : CounterSFC;\nEND_VAR",
+        body="sfc(Reset := Reset);",
+    )
+    program = project.model_copy(
+        update={
+            "pous": [counter, check],
+            "tasks": [Task(name="t", interval="T#100ms", programs=["Check"])],
+            "configuration": None,
+        }
+    )
+    result = lower_project(program)
+    assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
+    sim = Simulation(result.program)
+    counts = []
+    for scan in range(30):
+        sim.write("Check.Reset", scan in (10, 11, 25))
+        sim.cycle(1)
+        counts.append(sim.read("Check.sfc.OUT"))
+    expected = [*range(0, 12), 17, 17, *range(18, 30), 30, *range(31, 34)]
+    assert counts == expected
 
 
 def test_openplc_blink_in_ld_behaves_like_its_st_twin(fixtures):
@@ -197,8 +244,8 @@ def test_openplc_blink_in_ld_behaves_like_its_st_twin(fixtures):
         external("openplc-examples", "examples", "Blink", "blink.st").read_text(), name="blink", file="blink.st"
     )
     traces = []
-    for project, path in ((ld, "Blink.blink_led"), (st, "program0.LED_PIN")):
-        assert [t.interval for t in project.tasks] == ["T#20ms"]
+    for project, path in ((ld, "instance0.blink_led"), (st, "instance0.LED_PIN")):  # the instances' names
+        assert [t.interval for t in project.all_tasks()] == ["T#20ms"]
         sim = Simulation(lower_project(project).program)
         trace = []
         for _ in range(200):

@@ -20,6 +20,7 @@ from ladderlab.model import (
     OutputNode,
     Parallel,
     PinFlags,
+    ProgramInstance,
     Task,
 )
 from tests.interchange.plcopen_helpers import fbd_project, ld_project, pou_xml, project_xml
@@ -192,7 +193,8 @@ def test_a_bridge_is_refused_with_a_diagnostic_naming_its_elements():
 
 def test_openplc_timer_chain_with_en_and_a_coil_on_an_output():
     """OpenPLC's Blink: TON/TOF with EN on the rung, IN fed by a contact and by TON0.Q, the coil on TOF0.Q.
-    The coil reads TOF0.Q through a contact placed after the boxes (a branch of the rung below them)."""
+    Issue 28: the EN/ENO chain starts at the left rail, so both FBs always run (an FB's ENO is its EN) and the
+    rung reads left to right as drawn - contact, TON, TOF, coil - with the power through IN and Q."""
     data = ld_project(
         rail()
         + block(3, "TON", {"EN": ("1",), "IN": ("5",), "PT": ("7",)}, ["ENO", "Q", "ET"], x=350, y=130, instance="TON0")
@@ -216,16 +218,29 @@ def test_openplc_timer_chain_with_en_and_a_coil_on_an_output():
         + "</rightPowerRail>"
     )
     assert shape(elements(data)) == [
-        (
-            "OR",
-            [
-                [
-                    ("TON", "TON0", True, {"IN": [("contact", "blink_led", "nc")], "PT": "T#500ms"}, {}),
-                    ("TOF", "TOF0", True, {"IN": "TON0.Q", "PT": "T#500ms"}, {}),
-                ],
-                [("contact", "TOF0.Q", "no"), ("coil", "blink_led", "normal")],
-            ],
-        )
+        ("contact", "blink_led", "nc"),
+        ("TON", "TON0", False, {"PT": "T#500ms"}, {}),
+        ("TOF", "TOF0", False, {"PT": "T#500ms"}, {}),
+        ("coil", "blink_led", "normal"),
+    ]
+
+
+def test_an_en_chain_that_does_not_start_at_the_rail_keeps_en():
+    """The same drawing with a contact in front of TON's EN: EN decides whether the FBs run, so it stays."""
+    data = ld_project(
+        rail()
+        + contact(9, "go", "1", x=100, y=130)
+        + block(3, "TON", {"EN": ("9",), "IN": ("5",), "PT": ("7",)}, ["ENO", "Q", "ET"], x=350, y=130, instance="TON0")
+        + contact(5, "blink_led", "1", x=180, y=200, attrs='negated="true"')
+        + in_var(7, "T#500ms", 240, 230)
+        + '<rightPowerRail localId="2">'
+        + pos(990, 110)
+        + cin("3.ENO")
+        + "</rightPowerRail>"
+    )
+    assert shape(elements(data)) == [
+        ("contact", "go", "no"),
+        ("TON", "TON0", True, {"IN": [("contact", "blink_led", "nc")], "PT": "T#500ms"}, {}),
     ]
 
 
@@ -312,7 +327,8 @@ def test_variables_in_a_rung_become_contacts_coils_or_a_move():
     ]
 
 
-def test_connected_parts_are_networks_top_to_bottom_with_labels_and_comments():
+def test_connected_parts_are_networks_top_to_bottom_with_labels_and_comment_networks():
+    """Issue 28: a free comment box is a comment network of its own where it stands, never merged into a rung."""
     data = ld_project(
         rail()
         + '<comment localId="9" height="20" width="100">'
@@ -330,9 +346,10 @@ def test_connected_parts_are_networks_top_to_bottom_with_labels_and_comments():
     networks = result.project.pous[0].body.networks
     assert [(n.id, n.label, n.comment, shape(n.elements)) for n in networks] == [
         ("network1", None, None, [("contact", "a", "no"), ("coil", "q1", "normal")]),
-        ("network2", "Again", "second rung", [("contact", "b", "no"), ("coil", "q2", "normal")]),
+        ("network2", None, "second rung", []),
+        ("network3", "Again", None, [("contact", "b", "no"), ("coil", "q2", "normal")]),
     ]
-    assert [[e.id for e in n.elements] for n in networks] == [["contact1", "coil1"], ["contact2", "coil2"]]
+    assert [[e.id for e in n.elements] for n in networks] == [["contact1", "coil1"], [], ["contact2", "coil2"]]
 
 
 def test_connector_and_continuation_join_a_rung():
@@ -570,27 +587,22 @@ def test_types_globals_and_tasks_fill_the_project():
         "TYPE\n    Point : STRUCT\n        x : INT;\n        y : INT := 2;\n    END_STRUCT;\n"
         "    Level : USINT (0..9) := 3;\nEND_TYPE"
     )
-    assert project.globals == ("VAR_GLOBAL CONSTANT\n    Max : INT := 5;\nEND_VAR\nVAR_GLOBAL\n    rg : BOOL;\nEND_VAR")
-    assert project.tasks == [
-        Task(name="Fast", interval="T#5ms", priority=3, programs=["Main"]),
-        Task(name="OnEvent", interval="T#10ms", priority=1, programs=[]),
+    assert project.globals == "VAR_GLOBAL CONSTANT\n    Max : INT := 5;\nEND_VAR"
+    assert project.tasks == []
+    config = project.configuration
+    assert config.name == "C" and [r.name for r in config.resources] == ["R"]
+    (resource,) = config.resources
+    assert resource.globals == "VAR_GLOBAL\n    rg : BOOL;\nEND_VAR"
+    assert resource.tasks == [
+        Task(name="Fast", interval="T#5ms", priority=3, programs=[ProgramInstance(name="i1", type="Main")]),
+        Task(name="OnEvent", interval=None, single="trigger", priority=1, programs=[]),
     ]
-    assert [(d.code, d.severity, d.message) for d in result.diagnostics] == [
-        (
-            "PLCOPEN-CONFIG",
-            "warning",
-            "task OnEvent has no interval (an event task); it is imported as a cyclic task of T#10ms",
-        ),
-        (
-            "PLCOPEN-CONFIG",
-            "warning",
-            "program instance 'loose' is not assigned to a task; LadderLab runs programs "
-            "from tasks only, so it was not imported",
-        ),
-    ]
+    assert resource.programs == [ProgramInstance(name="loose", type="Main")]  # runs in the default task
+    assert [(d.code, d.severity, d.message) for d in result.diagnostics] == []
 
 
-def test_sfc_and_il_pous_actions_and_foreign_add_data_are_reported_not_dropped_silently():
+def test_sfc_and_il_pous_import_actions_outside_sfc_and_foreign_add_data_are_reported_not_dropped_silently():
+    """SFC imports as a chart (issue 24), IL as IL text kept as written (issue 26)."""
     pous = (
         pou_xml(
             "Seq",
@@ -606,21 +618,12 @@ def test_sfc_and_il_pous_actions_and_foreign_add_data_are_reported_not_dropped_s
     )
     result = imported(project_xml(pous))
     assert [(d.code, d.pou, d.message) for d in result.diagnostics] == [
+        ("PLCOPEN-SFC", "Seq", "step Run is reached from no initial step: it was left out"),
         (
             "PLCOPEN-UNSUPPORTED",
-            "Seq",
-            "POU Seq is written in SFC, which LadderLab does not support; it was imported "
-            "with its interface and a body that does nothing (the names of its steps are "
-            "kept as comments), so its callers build and run",
+            "Main",
+            "action 'Blink' of POU Main was not imported: only SFC POUs have actions in LadderLab",
         ),
-        (
-            "PLCOPEN-UNSUPPORTED",
-            "Asm",
-            "POU Asm is written in IL, which LadderLab does not support; it was imported "
-            "with its interface and a body that does nothing (the IL text is kept as "
-            "comments), so its callers build and run",
-        ),
-        ("PLCOPEN-UNSUPPORTED", "Main", "action 'Blink' of POU Main was not imported: LadderLab has no actions"),
         (
             "PLCOPEN-ADDDATA",
             None,
@@ -633,29 +636,23 @@ def test_sfc_and_il_pous_actions_and_foreign_add_data_are_reported_not_dropped_s
     assert (seq.name, seq.kind, seq.language, asm.name, asm.language, main.name) == (
         "Seq",
         "function_block",
-        "st",
+        "sfc",
         "Asm",
-        "st",
+        "il",
         "Main",
     )
-    assert seq.body == (
-        "// Imported from SFC, which LadderLab cannot run: this body does nothing. The original SFC:\n"
-        "// step Init (initial)\n// step Run"
-    )
-    assert asm.body == (
-        "// Imported from IL, which LadderLab cannot run: this body does nothing. The original IL:\n"
-        "// LD TRUE\n// (* keep *)\n// ST x"
-    )
+    assert [e.name for e in seq.body.chart.elements] == ["Init"]
+    assert asm.body == "LD TRUE\n(* keep *)\nST x"
 
 
-def test_a_caller_of_an_il_function_block_builds_and_runs_with_its_interface():
-    """The stand-in keeps the IL FB's interface: the ST caller builds, its own logic runs, the FB's output stays default."""
+def test_an_il_function_block_is_imported_as_il_and_runs_for_its_st_caller():
+    """Issue 26: the IL body runs (``SEL`` with the accumulator as its selector, IL-04): Out is 1 while Go."""
     interface = (
         "<interface><inputVars><variable name='Go'><type><BOOL/></type></variable></inputVars>"
         "<outputVars><variable name='Out'><type><INT/></type></variable></outputVars></interface>"
     )
     counter = (
-        f'<pou name="CounterIL" pouType="functionBlock">{interface}<body><IL><xhtml:p>LD Go\nST Out'
+        f'<pou name="CounterIL" pouType="functionBlock">{interface}<body><IL><xhtml:p>LD Go\nSEL 0, 1\nST Out'
         "</xhtml:p></IL></body></pou>"
     )
     main = (
@@ -668,7 +665,7 @@ def test_a_caller_of_an_il_function_block_builds_and_runs_with_its_interface():
     assert [d for d in result.diagnostics if d.severity == "error"] == []
     sim = Simulation(result.program)
     sim.cycle(3)
-    assert (sim.read("Main.n"), sim.read("Main.c.Out")) == (3, 0)
+    assert (sim.read("Main.n"), sim.read("Main.c.Out")) == (6, 1)
 
 
 def test_a_single_pou_document_with_a_textual_declaration():
@@ -724,3 +721,14 @@ def test_fbd_pin_modifiers_and_output_modes():
         ("in:NOT a", "OUT", "AND", "IN2"),
         ("AND", "OUT", "out:q", "IN"),
     }
+
+
+def test_a_declaration_the_importer_cannot_read_is_reported_with_its_pou():
+    """PLCOPEN-DECL (docs/diagnostics.md): an empty type element is read as BOOL and reported as an error."""
+    interface = '<localVars><variable name="x"><type/></variable></localVars>'
+    result = import_plcopen(
+        project_xml(pou_xml("Main", "<xhtml:p>x := TRUE;</xhtml:p>", language="ST", interface=interface))
+    )
+    assert [(d.code, d.severity, d.pou, d.message) for d in result.diagnostics] == [
+        ("PLCOPEN-DECL", "error", "Main", "a type element is empty; assumed BOOL")
+    ]

@@ -16,7 +16,7 @@ from ladderlab.engine.simulation import Simulation
 from ladderlab.interchange.plcopen.exporter import export_plcopen
 from ladderlab.interchange.plcopen.importer import import_plcopen
 from ladderlab.ir.lower_project import lower_project
-from ladderlab.model import Box, Coil, Contact, LdBody, LdNetwork, Parallel, Pou, Project, Return, Task
+from ladderlab.model import Box, Coil, Compare, Contact, LdBody, LdNetwork, Parallel, Pou, Project, Return, Task
 from ladderlab.storage import load_project_path
 from tests.interchange.plcopen_helpers import FOLDERS, IMPORT_ERRORS, strip_ladderlab, xsd_errors
 from tests.interchange.plcopen_strategies import Ids, projects
@@ -37,6 +37,27 @@ def test_motor_example_comes_back_equal():
 @given(projects())
 def test_generated_projects_come_back_equal(project):
     """Random TYPEs, globals, tasks, ST POUs, LD series/parallel trees and FBD networks (plcopen_strategies)."""
+    assert round_trip(project) == project
+
+
+def _box_on_the_rail(*more) -> Project:
+    box = Box(id="e2", type="box", call="TON", instance="Start", inputs={"PT": "Start", "IN": []}, outputs={}, en=True)
+    network = LdNetwork(id="e1", elements=[box, *more])
+    pou = Pou(name="Main", kind="program", language="ld", declarations="", body=LdBody(networks=[network]))
+    return Project(name="demo", pous=[pou])
+
+
+@pytest.mark.parametrize(
+    "project",
+    [
+        _box_on_the_rail(),
+        _box_on_the_rail(Compare(id="e3", type="compare", op="GT", left="Start", right="Start"), Return(id="e4")),
+    ],
+    ids=["alone", "before a comparison and a return"],
+)
+def test_an_fb_with_en_from_the_rail_comes_back_as_drawn(project):
+    """Found by the property above: LadderLab's own EN box on the rail is not read as another tool's always-running
+    FB (that reading is for foreign files, issue 28), so it comes back equal."""
     assert round_trip(project) == project
 
 

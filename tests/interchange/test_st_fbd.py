@@ -16,7 +16,7 @@ def check(*networks, expected: str, declarations: str = DECL) -> str:
     return text
 
 
-def test_gr29_bool_blocks_are_operators_and_a_result_with_two_consumers_is_a_temporary():
+def test_gr29_bool_blocks_are_operators_and_a_result_with_two_consumers_is_read_back_from_the_first_output():
     check(
         net(
             "n1",
@@ -29,8 +29,7 @@ def test_gr29_bool_blocks_are_operators_and_a_result_with_two_consumers_is_a_tem
             ],
             [("ia.OUT", "and.IN1"), ("ib.OUT", "and.IN2"), ("and.OUT", "ox.IN"), ("and.OUT", "oy.IN")],
         ),
-        expected="(* Network 1 (n1) *)\nand_OUT := a AND NOT b;\nx := and_OUT;\nIF and_OUT THEN\n    y := TRUE;\n"
-        "END_IF;\n",
+        expected="(* Network 1 *)\nx := a AND NOT b;\nIF x THEN\n    y := TRUE;\nEND_IF;\n",
     )
 
 
@@ -47,14 +46,13 @@ def test_fb_block_is_a_formal_call_its_outputs_are_read_from_the_instance_and_an
             ],
             [("ia.OUT", "t.IN"), ("pt.OUT", "t.PT"), ("t.Q", "ox.IN"), ("t.ET", "oe.IN")],
         ),
-        expected="(* Network 1 (n1) *)\nt_IN_trig(CLK := a);\nt1(IN := t_IN_trig.Q, PT := T#50ms);\n"
-        "e := t1.ET;\nx := t1.Q;\n",
+        expected="(* Network 1 *)\na_rising(CLK := a);\nt1(IN := a_rising.Q, PT := T#50ms);\ne := t1.ET;\nx := t1.Q;\n",
     )
 
 
 def test_lab01_block_with_en_runs_under_if_its_outputs_are_written_only_then_and_eno_is_tracked():
-    """The input node reading n is kept in a temporary (n is written in the network: GR-05, read once); ENO
-    is the call's own (a standard function's warning clears it)."""
+    """The input node reading n needs no temporary (n is written in the network, GR-05, but only after the call
+    read it); ENO is the call's own (a standard function's warning clears it), so the call stays formal."""
     check(
         net(
             "n1",
@@ -74,9 +72,9 @@ def test_lab01_block_with_en_runs_under_if_its_outputs_are_written_only_then_and
                 ("add.ENO", "ok.IN"),
             ],
         ),
-        expected="(* Network 1 (n1) *)\nia := n;\nadd_EN := go;\nIF add_EN THEN\n"
-        "    add_OUT := ADD(IN1 := ia, IN2 := 1, ENO => add_ENO);\nELSE\n    add_ENO := FALSE;\nEND_IF;\n"
-        "ok := add_ENO;\nIF add_EN THEN\n    n := add_OUT;\nEND_IF;\n",
+        expected="(* Network 1 *)\nIF go THEN\n"
+        "    ADD_OUT := ADD(IN1 := n, IN2 := 1, ENO => ADD_ENO);\nELSE\n    ADD_ENO := FALSE;\nEND_IF;\n"
+        "ok := ADD_ENO;\nIF go THEN\n    n := ADD_OUT;\nEND_IF;\n",
     )
 
 
@@ -87,7 +85,7 @@ def test_gr06_feedback_from_a_function_reads_the_variable_its_result_goes_to():
             [inp("one", "1"), blk("add", "ADD", x=0, y=0), out("on", "n")],
             [("add.OUT", "add.IN1"), ("one.OUT", "add.IN2"), ("add.OUT", "on.IN")],
         ),
-        expected="(* Network 1 (n1) *)\nn := ADD(IN1 := n, IN2 := 1);\n",
+        expected="(* Network 1 *)\nn := n + 1;\n",
     )
 
 
@@ -98,7 +96,7 @@ def test_gr06_feedback_from_an_fb_output_reads_the_instance_before_the_call():
             [inp("pt", "T#30ms"), blk("t", "TON", "t1", IN={"negated": True}), out("ox", "x")],
             [("t.Q", "t.IN"), ("pt.OUT", "t.PT"), ("t.Q", "ox.IN")],
         ),
-        expected="(* Network 1 (n1) *)\nt1(IN := NOT t1.Q, PT := T#30ms);\nx := t1.Q;\n",
+        expected="(* Network 1 *)\nt1(IN := NOT t1.Q, PT := T#30ms);\nx := t1.Q;\n",
     )
 
 
@@ -108,8 +106,8 @@ def test_fbd_jump_and_return():
         net("n2", [inp("ib", "b"), out("ox", "x")], [("ib.OUT", "ox.IN")]),
         net("n3", [inp("ic", "c"), fret("r")], [("ic.OUT", "r.IN")], label="L"),
         net("n4", [inp("ib4", "b"), out("oy", "y")], [("ib4.OUT", "oy.IN")]),
-        expected="(* Network 1 (n1) *)\nIF NOT a THEN\n    (* Network 2 (n2) *)\n    x := b;\nEND_IF;\n"
-        "(* Network 3 (n3), label L *)\nIF c THEN\n    RETURN;\nEND_IF;\n(* Network 4 (n4) *)\ny := b;\n",
+        expected="(* Network 1 *)\nIF NOT a THEN\n    (* Network 2 *)\n    x := b;\nEND_IF;\n"
+        '(* Network 3 "L" *)\nIF c THEN\n    RETURN;\nEND_IF;\n(* Network 4 *)\ny := b;\n',
     )
 
 
@@ -120,17 +118,49 @@ def test_gr02_connector_and_continuation_carry_the_value_and_an_edge_output_is_a
             [inp("ia", "a"), connector("k", "w"), continuation("cc", "w"), out("ox", "x", "p")],
             [("ia.OUT", "k.IN"), ("cc.OUT", "ox.IN")],
         ),
-        expected="(* Network 1 (n1) *)\nox_trig(CLK := a);\nx := ox_trig.Q;\n",
+        expected="(* Network 1 *)\nx_trig(CLK := a);\nx := x_trig.Q;\n",
     )
 
 
-def test_gr05_an_input_node_whose_variable_the_network_writes_is_read_once_where_it_stands():
-    """Even unused: the lowering stores it in a temporary at its place in the order."""
+def test_gr05_an_input_node_whose_variable_the_network_writes_is_read_where_it_stands():
+    """Read before the write, so the operator reads n itself; the unused read (the lowering's temporary) changes
+    nothing and is left out."""
     check(
         net(
             "n1",
             [inp("ia", "n"), inp("unused", "n"), blk("add", "ADD"), inp("one", "1"), out("o", "n")],
             [("ia.OUT", "add.IN1"), ("one.OUT", "add.IN2"), ("add.OUT", "o.IN")],
         ),
-        expected="(* Network 1 (n1) *)\nia := n;\nn := ADD(IN1 := ia, IN2 := 1);\nunused := n;\n",
+        expected="(* Network 1 *)\nn := n + 1;\n",
     )
+
+
+def test_issue28_the_light_control_exercise_reads_as_written_without_a_temporary():
+    """Issue 28's light-control exercise (a push button toggles the lamp, a master switch turns it off) was
+    ``Lamp := (R_TRIG_1.Q XOR in3) AND NOT MasterOff;`` with a ``VAR_TEMP in3`` named after a node id: the lamp's
+    own value is read where the XOR stands, before the network writes it (GR-05), so no temporary is needed."""
+    text = check(
+        net(
+            "n1",
+            [
+                inp("button", "Button"),
+                blk("edge", "R_TRIG", "R_TRIG_1"),
+                inp("lamp", "Lamp"),
+                blk("xor", "XOR"),
+                inp("master", "MasterOff"),
+                blk("and", "AND", IN2={"negated": True}),
+                out("o", "Lamp"),
+            ],
+            [
+                ("button.OUT", "edge.CLK"),
+                ("edge.Q", "xor.IN1"),
+                ("lamp.OUT", "xor.IN2"),
+                ("xor.OUT", "and.IN1"),
+                ("master.OUT", "and.IN2"),
+                ("and.OUT", "o.IN"),
+            ],
+        ),
+        declarations="VAR Button, Lamp, MasterOff : BOOL; R_TRIG_1 : R_TRIG; END_VAR",
+        expected="(* Network 1 *)\nR_TRIG_1(CLK := Button);\nLamp := (R_TRIG_1.Q XOR Lamp) AND NOT MasterOff;\n",
+    )
+    assert "VAR_TEMP" not in text and "in3" not in text

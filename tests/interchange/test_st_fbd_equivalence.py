@@ -1,5 +1,5 @@
-"""Equivalence property for richer FBD networks (issue 8): generated networks of BOOL, INT, compare and select
-blocks, TON/CTU instances, EN/ENO, negated and edge pin flags, negated outputs, output nodes of every mode,
+"""Equivalence property for richer FBD networks (issues 8, 28): generated networks of BOOL, INT (every arithmetic
+operator, MOVE, extensible ADD/MUL), compare and select blocks, TON/CTU instances, EN/ENO, negated and edge pin flags, negated outputs, output nodes of every mode,
 feedback loops (through an FB output and through a function's output variable), and forward jumps - the
 exported ST runs like the diagram (st_support.same_traces, 200 scans of random writes)."""
 
@@ -75,12 +75,15 @@ class _Builder:
             self.block(
                 call, None, {f"IN{n + 1}" if call != "NOT" else "IN": "BOOL" for n in range(count)}, {"OUT": "BOOL"}
             )
-        elif kind == "int":
-            self.block(
-                draw(st.sampled_from(["ADD", "SUB", "MUL", "MAX"])), None, {"IN1": "INT", "IN2": "INT"}, {"OUT": "INT"}
-            )
+        elif kind == "int":  # issue 28: the operators (a zero divisor stops both runs in the same scan)
+            call = draw(st.sampled_from(["ADD", "SUB", "MUL", "MAX", "DIV", "MOD", "MOVE"]))
+            inputs = {"IN": "INT"} if call == "MOVE" else {f"IN{n + 1}": "INT" for n in range(2)}
+            if call in ("ADD", "MUL") and draw(st.booleans()):
+                inputs["IN3"] = "INT"
+            self.block(call, None, inputs, {"OUT": "INT"})
         elif kind == "compare":
-            self.block(draw(st.sampled_from(["GT", "LT", "EQ"])), None, {"IN1": "INT", "IN2": "INT"}, {"OUT": "BOOL"})
+            call = draw(st.sampled_from(["GT", "GE", "EQ", "LE", "LT", "NE"]))
+            self.block(call, None, {"IN1": "INT", "IN2": "INT"}, {"OUT": "BOOL"})
         elif kind == "select":
             self.block("SEL", None, {"G": "BOOL", "IN0": "INT", "IN1": "INT"}, {"OUT": "INT"})
         elif kind == "timer":

@@ -46,8 +46,16 @@ def test_motor_project_file_has_every_part_and_runs_like_the_project():
         "    END_RESOURCE\nEND_CONFIGURATION\n"
     )
     read = read_back(project)
-    assert read.tasks == project.tasks
+    assert runs(read) == runs(project)
     same_traces(project, other=read)
+
+
+def runs(project: Project) -> list[tuple]:
+    """What each task runs: (task, interval, priority, [(instance, program)]), whichever form holds it."""
+    return [
+        (t.name, t.interval, t.priority, [(p, p) if isinstance(p, str) else (p.name, p.type) for p in t.programs])
+        for t in project.all_tasks()
+    ]
 
 
 def test_project_source_map_names_pou_and_network():
@@ -105,3 +113,38 @@ def test_property_a_two_program_project_reads_back_and_runs_identically(ld_rungs
         tasks=[Task(name="fast", interval="T#10ms", priority=1, programs=["Main", "Second"])],
     )
     same_traces(project, scans=100, seed=seed, other=read_back(project))
+
+
+def test_an_export_that_would_not_check_is_refused_never_handed_out():
+    """EXPORT-INTERNAL: the exported text is checked before it is given out; were it wrong (a defect of the
+    export), the user gets this error instead of a file that does not build."""
+    from ladderlab.interchange.st.export import verify
+    from ladderlab.interchange.st.project import verify_text
+
+    project = Project(
+        name="p", pous=[Pou(name="Main", kind="program", language="ld", declarations="VAR a : BOOL; END_VAR")]
+    )
+    broken = Pou(name="Main", kind="program", language="st", declarations="VAR a : BOOL; END_VAR", body="a := b;")
+    assert [d.format() for d in verify(project, broken)] == [
+        "POU Main: error EXPORT-INTERNAL: the exported ST of Main does not check: Main/body:1:6, POU Main: error "
+        "ST-UNKNOWN-VAR: unknown variable 'b'"
+    ]
+    text = "PROGRAM Main\nVAR a : BOOL; END_VAR\na := 1.5;\nEND_PROGRAM\n"
+    assert [d.format() for d in verify_text(text, "p")] == [
+        "POU Main: error EXPORT-INTERNAL: the exported ST does not check: Main/body:3:6, POU Main: error "
+        "ST-TYPE-MISMATCH: cannot assign ANY_REAL literal to BOOL"
+    ]
+
+
+def test_a_configuration_naming_a_missing_task_is_located():
+    """ST-CONFIG (docs/diagnostics.md): the program instance names a task its resource does not have."""
+    text = (
+        "PROGRAM MainProgram\nVAR x : INT; END_VAR\nx := 1;\nEND_PROGRAM\n"
+        "CONFIGURATION Plant\n  RESOURCE Cpu ON PLC\n    TASK Fast(INTERVAL := T#10ms, PRIORITY := 1);\n"
+        "    PROGRAM Main WITH Slow : MainProgram;\n  END_RESOURCE\nEND_CONFIGURATION\n"
+    )
+    project, diagnostics = source_to_project(text)
+    assert project is not None and project.configuration is not None
+    assert [(d.code, d.line, d.column, d.message) for d in diagnostics] == [
+        ("ST-CONFIG", 8, 5, "program Main: there is no task Slow in this resource")
+    ]

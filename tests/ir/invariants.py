@@ -47,6 +47,8 @@ def check_value(value: object, ty: t.IrType, where: str) -> None:
         assert isinstance(value, tuple) and len(value) == len(ty.fields), f"{where}: {value!r} for {ty.name}"
         for item, field in zip(value, ty.fields):
             check_value(item, field.type, f"{where}.{field.name}")
+    elif isinstance(ty, t.Reference):
+        assert value is None or isinstance(value, ir.ReferenceInit), f"{where}: reference initial {value!r}"
     else:
         assert value is None or isinstance(value, tuple), f"{where}: FB instance initial {value!r}"
 
@@ -63,7 +65,10 @@ class _Checker:
         assert v.name in slots, f"{self.pou.name}: {v.scope} {v.name} has no slot"
         ty = slots[v.name].type
         for selector in v.path:
-            if isinstance(selector, ir.Index):
+            if isinstance(selector, ir.Deref):
+                assert isinstance(ty, t.Reference), (v, ty)
+                ty = ty.target
+            elif isinstance(selector, ir.Index):
                 assert isinstance(ty, t.Array) and len(selector.indices) == len(ty.dims), (v, ty)
                 for index in selector.indices:
                     self.expr(index)
@@ -88,6 +93,9 @@ class _Checker:
             check_value(e.value, e.type, f"{self.pou.name}: Const")
         elif isinstance(e, ir.Var):
             self.var(e)
+        elif isinstance(e, ir.AddressOf):
+            self.var(e.var)
+            assert isinstance(e.type, t.Reference) and value_type(e.type.target) == value_type(e.var.type), e
         elif isinstance(e, ir.Unary):
             self.expr(e.operand)
             assert value_type(e.operand.type) == value_type(e.type), e  # type: ignore[union-attr]
@@ -162,6 +170,11 @@ class _Checker:
             if s.target is not None:
                 self.var(s.target)
             self._en_eno(s.en, s.eno)
+        elif isinstance(s, ir.Jump):  # IL jumps (invariant 4): to a labelled block of the same POU
+            assert s.label in {b.label for b in self.pou.blocks if b.label is not None}, s
+            if s.cond is not None:
+                self.expr(s.cond)
+                assert s.cond.type == t.BOOL, s  # type: ignore[union-attr]
         else:
             assert isinstance(s, (ir.Exit, ir.Return)), f"unexpected statement in ST: {s}"
 
@@ -178,18 +191,23 @@ def check_program(program: ir.Program) -> None:
     """Assert the invariants of docs/ir.md on a whole lowered program."""
     for slot in program.globals:
         assert slot.name == slot.name.upper() and slot.var_class == "VAR_GLOBAL", slot
-        check_value(slot.initial, slot.type, slot.name)
+        if slot.address is None or slot.initial is not None:  # a located one without: the image holds its value
+            check_value(slot.initial, slot.type, slot.name)
     for name, pou in program.pous.items():
         assert name == pou.name == pou.name.upper()
         names = [s.name for s in pou.slots]
         assert len(names) == len(set(names)) and all(n == n.upper() for n in names), names
         for slot in pou.slots:
             assert slot.var_class != "VAR_EXTERNAL"
-            if slot.var_class != "VAR_IN_OUT":
+            if slot.var_class != "VAR_IN_OUT" and (slot.address is None or slot.initial is not None):
                 check_value(slot.initial, slot.type, f"{name}.{slot.name}")
         checker = _Checker(program, pou)
+        labels = [block.label for block in pou.blocks if block.label is not None]
+        assert len(labels) == len(set(labels)) and all(label == label.upper() for label in labels), labels
         for block in pou.blocks:
-            assert block.origin.pou == name and block.label is None
+            assert block.origin.pou == name and (block.label is None or pou.language == "il")
             checker.stmts(block.statements)
+    instances = {i.name: i for i in program.program_instances()}
+    assert all(program.pous[i.pou].kind == "program" for i in instances.values()), instances
     for task in program.tasks:
-        assert all(p in program.pous and program.pous[p].kind == "program" for p in task.programs), task
+        assert all(p in instances for p in task.programs), task

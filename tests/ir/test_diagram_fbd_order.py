@@ -86,8 +86,7 @@ def test_gr30_wired_or_names_both_wires():
     network = net("n", [inp("a", "x"), inp("b", "y"), out("o", "z")], [("a.OUT", "o.IN"), ("b.OUT", "o.IN")])
     analyse(network, report)
     assert report.messages == [
-        "FBD-WIRED-OR o.IN: input IN of 'o' has 2 wires (from a.OUT and from b.OUT): FBD has "
-        "no wired OR, use an OR block"
+        "FBD-WIRED-OR o.IN: 2 wires lead into it (from input x and from input y): FBD has no wired OR, use an OR block"
     ]
 
 
@@ -100,12 +99,12 @@ def test_bad_wire_ends_are_reported():
     )
     analyse(network, report)
     assert report.messages == [
-        "FBD-BAD-WIRE a.Q: wire a.Q -> b.IN: the output pin of a input node is OUT",
-        "FBD-BAD-WIRE ghost.OUT: wire ghost.OUT -> b.IN: there is no node 'ghost' in this network",
-        "FBD-BAD-WIRE o.OUT: wire o.OUT -> b.IN: a output node has no output pin",
-        "FBD-BAD-WIRE a.IN: wire b.OUT -> a.IN: a input node has no input pin",
-        "FBD-BAD-WIRE o.X: wire b.OUT -> o.X: the input pin of a output node is IN",
-        "FBD-DANGLING o.IN: output node 'o' (z) has no input wire",
+        "FBD-BAD-WIRE a.Q: the wire from input x to NOT.IN: an input has no output pin Q",
+        "FBD-BAD-WIRE ghost.OUT: the wire from 'ghost' to NOT.IN ends at a node this network does not have",
+        "FBD-BAD-WIRE o.OUT: the wire from output z to NOT.IN: an output has no output pin",
+        "FBD-BAD-WIRE a.IN: the wire from NOT.OUT to input x: an input has no input pin",
+        "FBD-BAD-WIRE o.X: the wire from NOT.OUT to output z: an output has no input pin X",
+        "FBD-DANGLING o.IN: the output has no input wire",
     ]
 
 
@@ -142,11 +141,11 @@ def test_gr02_connector_errors():
     )
     graph = analyse(network, report)
     assert report.messages == [
-        "FBD-CONNECTOR k2.None: connector 'x' is also defined by 'k1'",
-        "FBD-CONNECTOR c1.None: continuation 'c1' continues 'nowhere', but this network has no connector 'nowhere'",
-        "FBD-DANGLING k1.IN: connector 'X' has no input wire",
-        "FBD-DANGLING k2.IN: connector 'x' has no input wire",
-        "FBD-CONNECTOR k3.None: connector 'loop' is fed only through its own continuations",
+        "FBD-CONNECTOR k2.None: this network has another connector 'x'",
+        "FBD-CONNECTOR c1.None: this network has no connector 'nowhere' for the continuation to continue",
+        "FBD-DANGLING k1.IN: the connector has no input wire",
+        "FBD-DANGLING k2.IN: the connector has no input wire",
+        "FBD-CONNECTOR k3.None: the connector is fed only through its own continuations",
     ]
     assert graph.broken == {("o1", "IN"), ("o2", "IN")}
 

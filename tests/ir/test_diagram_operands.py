@@ -92,10 +92,10 @@ def test_a_written_kind_is_remembered_only_when_nothing_was_reported():
         "function_block",
     )
     assert [d.format() for d in lower_project(project(pou, globals=GLOBALS)).diagnostics] == [
-        "POU Main, network n2, element q2: error ST-CONST-WRITE: 'k' is a CONSTANT and cannot be assigned",
-        "POU Main, network n3, element q3: error ST-CONST-WRITE: 'k' is a CONSTANT and cannot be assigned",
-        "POU Main, network n4, element q4: error LD-INPUT-WRITE: 'i' is an input of Main: assigning it overwrites "
+        "POU Main, network 3, coil k: error ST-CONST-WRITE: 'k' is a CONSTANT and cannot be assigned",
+        "POU Main, network 4, set coil k: error ST-CONST-WRITE: 'k' is a CONSTANT and cannot be assigned",
+        "POU Main, network 5, coil i: error LD-INPUT-WRITE: 'i' is an input of Main: assigning it overwrites "
         "the caller's value",
-        "POU Main, network n5, element q5: error LD-INPUT-WRITE: 'e' is an input of Main: assigning it overwrites "
+        "POU Main, network 6, reset coil e: error LD-INPUT-WRITE: 'e' is an input of Main: assigning it overwrites "
         "the caller's value",
     ]

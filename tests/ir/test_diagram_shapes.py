@@ -165,9 +165,9 @@ def test_boxes_of_other_shapes_get_their_own_check():
     )
     diagnostics = [d.format() for d in lower_project(project(pou, MY_FB, TWICE)).diagnostics]
     assert diagnostics == [
-        f"POU Main, network n{n}, element x{n}, pin PT: error ST-TYPE-MISMATCH: input PT of TON: expected TIME, got "
+        f"POU Main, network {n}, TON tn1.PT: error ST-TYPE-MISMATCH: input PT of TON: expected TIME, got "
         "INT without a conversion such as INT_TO_TIME"
-        for n in (1, 2)
+        for n in (2, 3)
     ]
 
 
@@ -176,12 +176,12 @@ def test_what_a_muted_check_reports_is_taken_back():
     checked_project = project(ld_pou("Main", DECLARATIONS, rung("n0", contact("c", "b0"))))
     checked = check_project(checked_project)
     ctx = PouContext(checked, checked.pou("Main"), [])
-    ctx.report("LD-EARLIER", "reported before", network="n0")
+    ctx.report("LD-MISSING-PIN", "reported before", network="n0")
     ops = Operands(ctx, "LD")
     with ops.muted() as reported:
-        ops.report(At("n0", "x"), "LD-MUTED", "muted")
-        ctx.report("ST-DIRECT", "reported to the POU directly", network="n0")
-    assert reported == ["LD-MUTED", "ST-DIRECT"]
-    assert [d.code for d in ctx.diagnostics] == ["LD-EARLIER"]
-    ctx.report("ST-DIRECT", "reported to the POU directly", network="n0")  # not taken for a duplicate
-    assert [d.code for d in ctx.diagnostics] == ["LD-EARLIER", "ST-DIRECT"]
+        ops.report(At("n0", "x"), "LD-NOT-BOOL", "muted")
+        ctx.report("ST-TYPE-MISMATCH", "reported to the POU directly", network="n0")
+    assert reported == ["LD-NOT-BOOL", "ST-TYPE-MISMATCH"]
+    assert [d.code for d in ctx.diagnostics] == ["LD-MISSING-PIN"]
+    ctx.report("ST-TYPE-MISMATCH", "reported to the POU directly", network="n0")  # not taken for a duplicate
+    assert [d.code for d in ctx.diagnostics] == ["LD-MISSING-PIN", "ST-TYPE-MISMATCH"]

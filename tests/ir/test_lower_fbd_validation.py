@@ -31,23 +31,23 @@ WHERE = "POU Main, network n1, element"
 CASES = {
     "unknown variable": (
         net("n1", [inp("i", "Strat"), out("o", "a")], [("i.OUT", "o.IN")]),
-        f"{WHERE} i: error ST-UNKNOWN-VAR: unknown variable 'Strat'",
+        "POU Main, network 1, input Strat: error ST-UNKNOWN-VAR: unknown variable 'Strat'",
     ),
     "write to a CONSTANT": (
         net("n1", [inp("i", "b"), out("o", "kc")], [("i.OUT", "o.IN")]),
-        f"{WHERE} o: error ST-CONST-WRITE: 'kc' is a CONSTANT and cannot be assigned",
+        "POU Main, network 1, output kc: error ST-CONST-WRITE: 'kc' is a CONSTANT and cannot be assigned",
     ),
     "write to an input": (
         net("n1", [inp("i", "b"), out("o", "inb", "set")], [("i.OUT", "o.IN")]),
-        f"{WHERE} o: error FBD-INPUT-WRITE: 'inb' is an input of Main: assigning it overwrites the caller's value",
+        "POU Main, network 1, set output inb: error FBD-INPUT-WRITE: 'inb' is an input of Main: assigning it overwrites the caller's value",
     ),
     "set output on a non-BOOL variable": (
         net("n1", [inp("i", "b"), out("o", "n", "set")], [("i.OUT", "o.IN")]),
-        f"{WHERE} o: error FBD-NOT-BOOL: output node 'o' needs a BOOL variable; 'n' is INT",
+        "POU Main, network 1, set output n: error FBD-NOT-BOOL: the output needs a BOOL variable; 'n' is INT",
     ),
     "set output fed a non-BOOL value": (
         net("n1", [inp("i", "n"), out("o", "a", "set")], [("i.OUT", "o.IN")]),
-        f"{WHERE} o, pin IN: error FBD-NOT-BOOL: output node 'o' needs a BOOL value, got INT",
+        "POU Main, network 1, set output a: error FBD-NOT-BOOL: the output needs a BOOL value, got INT",
     ),
     "type mismatch into an output node": (
         net(
@@ -55,93 +55,91 @@ CASES = {
             [inp("i", "n"), blk("g", "ADD"), out("o", "a")],
             [("i.OUT", "g.IN1"), ("i.OUT", "g.IN2"), ("g.OUT", "o.IN")],
         ),
-        f"{WHERE} o, pin IN: error ST-TYPE-MISMATCH: output node 'o': expected BOOL, got INT without a conversion "
-        "such as INT_TO_BOOL",
+        "POU Main, network 1, output a: error ST-TYPE-MISMATCH: the output: expected BOOL, got INT without a conversion such as INT_TO_BOOL",
     ),
     "unknown function": (
         net("n1", [blk("x", "ADDD")], []),
-        f"{WHERE} x: error FBD-UNKNOWN-CALL: unknown function or function block 'ADDD' - did you mean 'ADD'?",
+        "POU Main, network 1, ADDD: error FBD-UNKNOWN-CALL: unknown function or function block 'ADDD' - did you mean 'ADD'?",
     ),
     "FB without an instance": (
         net("n1", [blk("x", "TON")], []),
-        f"{WHERE} x: error FBD-NO-INSTANCE: the function block TON needs an instance: declare one (e.g. inst : "
-        "TON;) and name it in the box",
+        "POU Main, network 1, TON: error FBD-NO-INSTANCE: the function block TON needs an instance: declare one (e.g. inst : TON;) and name it in the box",
     ),
     "instance of another FB type": (
         net("n1", [blk("x", "TON", "c1")], []),
-        f"{WHERE} x: error FBD-INSTANCE-TYPE: 'c1' is a CTU, not a TON instance",
+        "POU Main, network 1, TON c1: error FBD-INSTANCE-TYPE: 'c1' is a CTU, not a TON instance",
     ),
     "dangling function input": (
         net("n1", [inp("i", "n"), blk("x", "ADD"), out("o", "m")], [("i.OUT", "x.IN1"), ("x.OUT", "o.IN")]),
-        f"{WHERE} x, pin IN2: error FBD-MISSING-PIN: input IN2 of ADD is not connected",
+        "POU Main, network 1, ADD.IN2: error FBD-MISSING-PIN: input IN2 of ADD is not connected",
+    ),
+    "input without operand": (
+        net("n1", [inp("i", ""), out("o", "a")], [("i.OUT", "o.IN")]),
+        "POU Main, network 1, input (no operand): error FBD-MISSING-OPERAND: the input has no operand",
     ),
     "dangling output node": (
         net("n1", [out("o", "a")], []),
-        f"{WHERE} o, pin IN: error FBD-DANGLING: output node 'o' (a) has no input wire",
+        "POU Main, network 1, output a: error FBD-DANGLING: the output has no input wire",
     ),
     "dangling EN": (
         net("n1", [blk("x", "TON", "t1", en=True)], []),
-        f"{WHERE} x, pin EN: error FBD-MISSING-PIN: input EN of 'x' is not connected",
+        "POU Main, network 1, TON t1.EN: error FBD-MISSING-PIN: input EN is not connected",
     ),
     "unknown input pin": (
         net("n1", [inp("i", "n"), blk("x", "TON", "t1")], [("i.OUT", "x.XX")]),
-        f"{WHERE} x, pin XX: error ST-CALL-ARGS: TON has no parameter 'XX'",
+        "POU Main, network 1, TON t1.XX: error ST-CALL-ARGS: TON has no parameter 'XX'",
     ),
     "unknown output pin": (
         net("n1", [blk("x", "TON", "t1"), out("o", "a")], [("x.QQ", "o.IN")]),
-        f"{WHERE} x, pin QQ: error FBD-UNKNOWN-PIN: TON has no output 'QQ' - did you mean 'Q'?",
+        "POU Main, network 1, TON t1.QQ: error FBD-UNKNOWN-PIN: TON has no output 'QQ' - did you mean 'Q'?",
     ),
     "EN without en": (
         net("n1", [inp("i", "a"), blk("x", "TON", "t1")], [("i.OUT", "x.EN")]),
-        f"{WHERE} x, pin EN: error FBD-UNKNOWN-PIN: 'x' has no EN: set en to use EN and ENO",
+        "POU Main, network 1, TON t1.EN: error FBD-UNKNOWN-PIN: the block has no EN: switch on EN/ENO to use it",
     ),
     "ENO without en": (
         net("n1", [blk("x", "TON", "t1"), out("o", "a")], [("x.ENO", "o.IN")]),
-        f"{WHERE} x, pin ENO: error FBD-UNKNOWN-PIN: 'x' has no ENO: set en to use EN and ENO",
+        "POU Main, network 1, TON t1.ENO: error FBD-UNKNOWN-PIN: the block has no ENO: switch on EN/ENO to use it",
     ),
     "a wire into ENO without en": (
         net("n1", [inp("i", "a"), blk("x", "TON", "t1")], [("i.OUT", "x.ENO")]),
-        f"{WHERE} x, pin ENO: error FBD-UNKNOWN-PIN: 'x' has no ENO: set en to use EN and ENO",
+        "POU Main, network 1, TON t1.ENO: error FBD-UNKNOWN-PIN: the block has no ENO: switch on EN/ENO to use it",
     ),
     "type mismatch on a pin": (
         net("n1", [inp("i", "n"), blk("x", "TON", "t1")], [("i.OUT", "x.PT")]),
-        f"{WHERE} x, pin PT: error ST-TYPE-MISMATCH: input PT of TON: expected TIME, got INT without a conversion "
-        "such as INT_TO_TIME",
+        "POU Main, network 1, TON t1.PT: error ST-TYPE-MISMATCH: input PT of TON: expected TIME, got INT without a conversion such as INT_TO_TIME",
     ),
     "negated pin that is not BOOL": (
         net("n1", [inp("i", "n"), blk("x", "TON", "t1", PT={"negated": True})], [("i.OUT", "x.PT")]),
-        f"{WHERE} x, pin PT: error FBD-NOT-BOOL: the negated input PT of 'x' needs a BOOL value, got INT",
+        "POU Main, network 1, TON t1.PT: error FBD-NOT-BOOL: the negated input PT needs a BOOL value, got INT",
     ),
     "edge flag on an output": (
         net("n1", [blk("x", "TON", "t1", Q={"edge": "rising"})], []),
-        f"{WHERE} x, pin Q: error FBD-PIN-FLAG: output Q of 'x' cannot have an edge flag: edge detection is for inputs",
+        "POU Main, network 1, TON t1.Q: error FBD-PIN-FLAG: output Q cannot have an edge flag: edge detection is for inputs",
     ),
     "flags for a pin the block lacks": (
         net("n1", [blk("x", "TON", "t1", ZZ={"negated": True})], []),
-        f"{WHERE} x, pin ZZ: error FBD-UNKNOWN-PIN: TON has no pin 'ZZ' for the flags",
+        "POU Main, network 1, TON t1.ZZ: error FBD-UNKNOWN-PIN: TON has no pin 'ZZ' for the flags",
     ),
     "cycle without a feedback value": (
         net("n1", [inp("one", "1"), blk("c", "ADD")], [("c.OUT", "c.IN1"), ("one.OUT", "c.IN2")]),
-        f"{WHERE} c, pin IN1: error FBD-FEEDBACK: the wire c.OUT -> c.IN1 closes a loop: it carries c.OUT of the "
-        "previous scan, and a function's result has none before its first call; also connect c.OUT to an output "
-        "variable, whose declared initial value then starts the loop",
+        "POU Main, network 1, ADD.IN1: error FBD-FEEDBACK: the wire from ADD.OUT to ADD.IN1 closes a loop: it carries ADD.OUT of the previous scan, and a function's result has none before its first call; also connect ADD.OUT to an output variable, whose declared initial value then starts the loop",
     ),
     "wired OR": (
         net("n1", [inp("i", "a"), inp("k", "b"), out("o", "a")], [("i.OUT", "o.IN"), ("k.OUT", "o.IN")]),
-        f"{WHERE} o, pin IN: error FBD-WIRED-OR: input IN of 'o' has 2 wires (from i.OUT and from k.OUT): FBD has "
-        "no wired OR, use an OR block",
+        "POU Main, network 1, output a: error FBD-WIRED-OR: 2 wires lead into it (from input a and from input b): FBD has no wired OR, use an OR block",
     ),
     "unknown jump target": (
         net("n1", [inp("i", "a"), fjump("j", "nowhere")], [("i.OUT", "j.IN")]),
-        f"{WHERE} j: error FBD-UNKNOWN-LABEL: jump to 'nowhere', but no network of this POU has that label",
+        "POU Main, network 1, jump to nowhere: error FBD-UNKNOWN-LABEL: jump to 'nowhere', but no network of this POU has that label",
     ),
     "jump on a non-BOOL value": (
         net("n1", [inp("i", "n"), fjump("j", "L")], [("i.OUT", "j.IN")]),
-        f"{WHERE} j, pin IN: error FBD-NOT-BOOL: jump 'j' needs a BOOL value, got INT",
+        "POU Main, network 1, jump to L: error FBD-NOT-BOOL: the jump needs a BOOL value, got INT",
     ),
     "unknown order entry": (
         net("n1", [], [], order=["ghost"]),
-        f"{WHERE} ghost: error FBD-ORDER: the order list names 'ghost', which is not a node of this network",
+        "POU Main, network 1: error FBD-ORDER: the network's execution order names a node it does not have ('ghost')",
     ),
     "connector named like a variable": (
         net(
@@ -149,12 +147,11 @@ CASES = {
             [inp("i", "a"), connector("k", "B"), continuation("c", "b"), out("o", "a")],
             [("i.OUT", "k.IN"), ("c.OUT", "o.IN")],
         ),
-        f"{WHERE} k: error FBD-CONNECTOR: connector 'B' has the name of a variable of this POU",
+        "POU Main, network 1, connector B: error FBD-CONNECTOR: connector 'B' has the name of a variable of this POU",
     ),
     "duplicate node id": (
         net("n1", [inp("i", "a"), out("i", "b")], []),
-        f"{WHERE} i: error FBD-DUPLICATE-ID: element id 'i' is also used in network n1: element ids must be unique "
-        "in the POU",
+        "POU Main, network 1, output b: error FBD-DUPLICATE-ID: an element of network 1 has the same id 'i': element ids must be unique in the POU (was the file edited by hand?)",
     ),
 }
 
@@ -177,8 +174,7 @@ def test_in_out_needs_a_variable():
         ),
     )
     assert errors(swap, main) == [
-        "POU Main, network n1, element b, pin X: error FBD-IN-OUT: in-out X of Bump needs a "
-        "variable, not a computed value"
+        "POU Main, network 1, Bump u.X: error FBD-IN-OUT: in-out X of Bump needs a variable, not a computed value"
     ]
 
 
@@ -242,3 +238,23 @@ def test_property_any_fbd_lowers_or_reports_located_diagnostics(networks):
     for diagnostic in result.diagnostics:
         assert diagnostic.pou == "Main" and diagnostic.network is not None, diagnostic
     assert (result.program is None) == any(d.severity == "error" for d in result.diagnostics)
+
+
+def test_a_program_in_a_block_a_bit_as_output_and_a_malformed_label():
+    """The diagram checks FBD shares with LD (docs/diagnostics.md): each reported at its block, output or network."""
+    other = fbd_pou("Other", "")
+    main = fbd_pou(
+        "Main",
+        "VAR a : BOOL; w : WORD; END_VAR",
+        net("n1", [blk("x", "Other")], []),
+        net("n2", [inp("i", "a"), out("o", "w.3")], [("i.OUT", "o.IN")]),
+        net("n3", [], [], label="2go"),
+    )
+    assert errors(main, other) == [
+        "POU Main, network 3 \"2go\": error FBD-BAD-LABEL: network label '2go' must be an identifier or an unsigned "
+        "integer",
+        "POU Main, network 1, Other: error FBD-NOT-CALLABLE: Other is a program: programs are run by tasks, not called "
+        "from a diagram",
+        "POU Main, network 2, output w.3: error FBD-BIT-TARGET: the output cannot write a single bit or part ('w.3') "
+        "yet: write a variable and copy it into the bit in ST",
+    ]

@@ -31,146 +31,140 @@ WHERE = "POU Main, network n1, element"
 CASES = {
     "unknown variable": (
         rung("n1", contact("c", "Strat"), coil("q", "a")),
-        f"{WHERE} c: error ST-UNKNOWN-VAR: unknown variable 'Strat'",
+        "POU Main, network 1, contact Strat: error ST-UNKNOWN-VAR: unknown variable 'Strat'",
     ),
     "contact on a non-BOOL variable": (
         rung("n1", contact("c", "n"), coil("q", "a")),
-        f"{WHERE} c: error LD-NOT-BOOL: contact 'c' needs a BOOL variable; 'n' is INT",
+        "POU Main, network 1, contact n: error LD-NOT-BOOL: the contact needs a BOOL variable; 'n' is INT",
     ),
     "coil on a non-BOOL variable": (
         rung("n1", contact("c", "a"), coil("q", "n")),
-        f"{WHERE} q: error LD-NOT-BOOL: coil 'q' needs a BOOL variable; 'n' is INT",
+        "POU Main, network 1, coil n: error LD-NOT-BOOL: the coil needs a BOOL variable; 'n' is INT",
     ),
     "write to a CONSTANT": (
         rung("n1", contact("c", "a"), coil("q", "kc")),
-        f"{WHERE} q: error ST-CONST-WRITE: 'kc' is a CONSTANT and cannot be assigned",
+        "POU Main, network 1, coil kc: error ST-CONST-WRITE: 'kc' is a CONSTANT and cannot be assigned",
     ),
     "write to an input": (
         rung("n1", contact("c", "a"), coil("q", "inb")),
-        f"{WHERE} q: error LD-INPUT-WRITE: 'inb' is an input of Main: assigning it overwrites the caller's value",
+        "POU Main, network 1, coil inb: error LD-INPUT-WRITE: 'inb' is an input of Main: assigning it overwrites the caller's value",
     ),
     "unknown function": (
         rung("n1", box("x", "TOM", en=True)),
-        f"{WHERE} x: error LD-UNKNOWN-CALL: unknown function or function block 'TOM' - did you mean 'TON'?",
+        "POU Main, network 1, TOM: error LD-UNKNOWN-CALL: unknown function or function block 'TOM' - did you mean 'TON'?",
     ),
     "FB without an instance": (
         rung("n1", box("x", "TON", PT="T#1s")),
-        f"{WHERE} x: error LD-NO-INSTANCE: the function block TON needs an instance: declare one "
-        "(e.g. inst : TON;) and name it in the box",
+        "POU Main, network 1, TON: error LD-NO-INSTANCE: the function block TON needs an instance: declare one (e.g. inst : TON;) and name it in the box",
     ),
     "instance of another FB type": (
         rung("n1", box("x", "TON", instance="c1", PT="T#1s")),
-        f"{WHERE} x: error LD-INSTANCE-TYPE: 'c1' is a CTU, not a TON instance",
+        "POU Main, network 1, TON c1: error LD-INSTANCE-TYPE: 'c1' is a CTU, not a TON instance",
     ),
     "instance that is no FB": (
         rung("n1", box("x", "TON", instance="a", PT="T#1s")),
-        f"{WHERE} x: error LD-INSTANCE-TYPE: 'a' is a BOOL, not a TON instance",
+        "POU Main, network 1, TON a: error LD-INSTANCE-TYPE: 'a' is a BOOL, not a TON instance",
     ),
     "function with an instance": (
         rung("n1", box("x", "ADD", instance="t1", en=True, IN1="1", IN2="2")),
-        f"{WHERE} x: error LD-INSTANCE: ADD is a function: it has no instance (remove 't1')",
+        "POU Main, network 1, ADD t1: error LD-INSTANCE: ADD is a function: it has no instance (remove 't1')",
     ),
     "missing pin": (
         rung("n1", box("x", "ADD", en=True, IN1="n", outputs={"OUT": "n"})),
-        f"{WHERE} x, pin IN2: error LD-MISSING-PIN: input IN2 of ADD is not connected",
+        "POU Main, network 1, ADD.IN2: error LD-MISSING-PIN: input IN2 of ADD is not connected",
     ),
     "gap in extensible inputs": (
         rung("n1", box("x", "ADD", en=True, IN1="n", IN2="n", IN4="n", outputs={"OUT": "n"})),
-        f"{WHERE} x, pin IN3: error LD-MISSING-PIN: input IN3 of ADD is not connected",
+        "POU Main, network 1, ADD.IN3: error LD-MISSING-PIN: input IN3 of ADD is not connected",
     ),
     "unknown input pin": (
         rung("n1", box("x", "TON", instance="t1", PX="T#1s")),
-        f"{WHERE} x, pin PX: error ST-CALL-ARGS: TON has no parameter 'PX'",
+        "POU Main, network 1, TON t1.PX: error ST-CALL-ARGS: TON has no parameter 'PX'",
     ),
     "unknown output pin": (
         rung("n1", box("x", "TON", instance="t1", outputs={"QQ": "a"})),
-        f"{WHERE} x, pin QQ: error ST-CALL-ARGS: TON has no parameter 'QQ' - did you mean 'Q'?",
+        "POU Main, network 1, TON t1.QQ: error ST-CALL-ARGS: TON has no parameter 'QQ' - did you mean 'Q'?",
     ),
     "function output other than OUT": (
         rung("n1", box("x", "ADD", en=True, IN1="n", IN2="1", outputs={"Q": "n"})),
-        f"{WHERE} x, pin Q: error LD-UNKNOWN-PIN: ADD is a function: its only output is OUT",
+        "POU Main, network 1, ADD.Q: error LD-UNKNOWN-PIN: ADD is a function: its only output is OUT",
     ),
     "EN connected as an operand": (
         rung("n1", box("x", "ADD", en=True, EN="a", IN1="n", IN2="1")),
-        f"{WHERE} x, pin EN: error LD-UNKNOWN-PIN: EN is the box's power flow: set en instead of connecting it",
+        "POU Main, network 1, ADD.EN: error LD-UNKNOWN-PIN: EN is the box's power flow: switch on EN/ENO instead of connecting it",
     ),
     "type mismatch on an input pin": (
         rung("n1", box("x", "TON", instance="t1", PT="5")),
-        f"{WHERE} x, pin PT: error ST-TYPE-MISMATCH: input PT of TON: expected TIME, got ANY_INT literal",
+        "POU Main, network 1, TON t1.PT: error ST-TYPE-MISMATCH: input PT of TON: expected TIME, got ANY_INT literal",
     ),
     "type mismatch between generic inputs": (
         rung("n1", box("x", "ADD", en=True, IN1="n", IN2="1.5", outputs={"OUT": "n"})),
-        f"{WHERE} x, pin IN2: error ST-TYPE-MISMATCH: ADD needs inputs of one type: got INT and ANY_REAL literal; "
-        "convert one of them with a *_TO_* function",
+        "POU Main, network 1, ADD.IN2: error ST-TYPE-MISMATCH: ADD needs inputs of one type: got INT and ANY_REAL literal; convert one of them with a *_TO_* function",
     ),
     "type mismatch on an output pin": (
         rung("n1", box("x", "TON", instance="t1", outputs={"ET": "n"})),
-        f"{WHERE} x, pin ET: error ST-TYPE-MISMATCH: output ET is TIME and cannot be stored in INT without a "
-        "conversion such as TIME_TO_INT",
+        "POU Main, network 1, TON t1.ET: error ST-TYPE-MISMATCH: output ET is TIME and cannot be stored in INT without a conversion such as TIME_TO_INT",
     ),
     "type mismatch on a function result": (
         rung("n1", box("x", "GT", en=True, IN1="n", IN2="1", outputs={"OUT": "n"})),
-        f"{WHERE} x, pin OUT: error ST-TYPE-MISMATCH: output OUT of GT ('n'): expected INT, got BOOL without a "
-        "conversion such as BOOL_TO_INT",
+        "POU Main, network 1, GT.OUT: error ST-TYPE-MISMATCH: output OUT of GT ('n'): expected INT, got BOOL without a conversion such as BOOL_TO_INT",
     ),
     "box without a BOOL input": (
         rung("n1", box("x", "ADD", IN1="n", IN2="1")),
-        f"{WHERE} x: error LD-BOX-POWER: ADD has no free BOOL input for the power flow: set en to use EN",
+        "POU Main, network 1, ADD: error LD-BOX-POWER: ADD has no free BOOL input for the power flow: switch on EN/ENO",
     ),
     "box without a BOOL output": (
         rung("n1", box("x", "SEL", IN0="n", IN1="1")),
-        f"{WHERE} x: error LD-BOX-POWER: SEL has no BOOL output to pass the power flow on: set en to use ENO",
+        "POU Main, network 1, SEL: error LD-BOX-POWER: SEL has no BOOL output to pass the power flow on: switch on EN/ENO",
     ),
     "program called from a box": (
         rung("n1", box("x", "Other")),
-        f"{WHERE} x: error LD-NOT-CALLABLE: Other is a program: programs are run by tasks, not called from a diagram",
+        "POU Main, network 1, Other: error LD-NOT-CALLABLE: Other is a program: programs are run by tasks, not called from a diagram",
     ),
     "unknown jump target": (
         rung("n1", contact("c", "a"), jump("j", "nowhere")),
-        f"{WHERE} j: error LD-UNKNOWN-LABEL: jump to 'nowhere', but no network of this POU has that label",
+        "POU Main, network 1, jump to nowhere: error LD-UNKNOWN-LABEL: jump to 'nowhere', but no network of this POU has that label",
     ),
     "jump not at the end of its branch": (
         rung("n1", jump("j", "L"), coil("q", "a")),
-        f"{WHERE} j: error LD-CONTROL-POSITION: jump 'j' must be the last element of a branch that ends the rung",
+        "POU Main, network 1, jump to L: error LD-CONTROL-POSITION: a jump must be the last element of a branch that ends the rung",
     ),
     "return in a branch that does not end the rung": (
         rung("n1", parallel("p", [contact("c", "a"), ret("r")], [contact("d", "b")]), coil("q", "a")),
-        f"{WHERE} r: error LD-CONTROL-POSITION: return 'r' must be the last element of a branch that ends the rung",
+        "POU Main, network 1, RETURN: error LD-CONTROL-POSITION: a return must be the last element of a branch that ends the rung",
     ),
     "jump feeding a box input": (
         rung("n1", box("x", "TON", instance="t1", PT=[jump("j", "L")])),
-        f"{WHERE} j: error LD-CONTROL-POSITION: jump 'j' must be the last element of a branch that ends the rung",
+        "POU Main, network 1, jump to L: error LD-CONTROL-POSITION: a jump must be the last element of a branch that ends the rung",
     ),
     "coil on a bit of a variable": (
         rung("n1", contact("c", "a"), coil("q", "w.3")),
-        f"{WHERE} q: error LD-BIT-TARGET: coil 'q' cannot write a single bit ('w.3') yet: write a BOOL variable and "
-        "copy it into the bit in ST",
+        "POU Main, network 1, coil w.3: error LD-BIT-TARGET: the coil cannot write a single bit or part ('w.3') yet: "
+        "write a variable and copy it into the bit in ST",
     ),
     "parallel with one branch": (
         rung("n1", parallel("p", [contact("c", "a")]), coil("q", "b")),
-        f"{WHERE} p: error LD-PARALLEL: parallel 'p' has 1 branch(es); it needs at least two",
+        "POU Main, network 1, parallel branch: error LD-PARALLEL: the parallel branch has 1 branch(es); it needs at least two",
     ),
     "duplicate element id": (
         rung("n1", contact("c", "a"), coil("c", "b")),
-        f"{WHERE} c: error LD-DUPLICATE-ID: element id 'c' is also used in network n1: element ids must be unique "
-        "in the POU",
+        "POU Main, network 1, coil b: error LD-DUPLICATE-ID: an element of network 1 has the same id 'c': element ids must be unique in the POU (was the file edited by hand?)",
     ),
     "empty operand": (
         rung("n1", contact("c", " "), coil("q", "b")),
-        f"{WHERE} c: error LD-MISSING-OPERAND: contact 'c' has no operand",
+        "POU Main, network 1, contact (no operand): error LD-MISSING-OPERAND: the contact has no operand",
     ),
     "operand syntax error": (
         rung("n1", contact("c", "a +"), coil("q", "b")),
-        f"{WHERE} c: error ST-PARSE: expected an expression, found end of text",
+        "POU Main, network 1, contact a +: error ST-PARSE: expected an expression, found end of text",
     ),
     "compare contact operand types": (
         rung("n1", compare("c", "GT", "n", "a"), coil("q", "b")),
-        f"{WHERE} c: error ST-TYPE-MISMATCH: '>' needs operands of the same type: INT and BOOL; convert one of them "
-        "(e.g. BOOL_TO_INT)",
+        "POU Main, network 1, comparison n > a: error ST-TYPE-MISMATCH: '>' needs operands of the same type: INT and BOOL; convert one of them (e.g. BOOL_TO_INT)",
     ),
     "compare contact unknown operand": (
         rung("n1", compare("c", "LT", "n", "zz"), coil("q", "b")),
-        f"{WHERE} c, pin right: error ST-UNKNOWN-VAR: unknown variable 'zz'",
+        "POU Main, network 1, comparison n < zz: error ST-UNKNOWN-VAR: unknown variable 'zz'",
     ),
 }
 
@@ -187,9 +181,11 @@ def test_duplicate_and_malformed_labels():
         "Main", "", rung("n1", label="Next"), rung("n2", label="next"), rung("n3", label="1x"), rung("n3", label="10")
     )
     assert errors(main) == [
-        "POU Main, network n3: error LD-DUPLICATE-ID: network id 'n3' is used twice in this POU",
-        "POU Main, network n2: error LD-DUPLICATE-LABEL: label 'next' is already used by network n1",
-        "POU Main, network n3: error LD-BAD-LABEL: network label '1x' must be an identifier or an unsigned integer",
+        'POU Main, network 3 "1x" or network 4 "10" (the same id \'n3\'): error LD-DUPLICATE-ID: an earlier network '
+        "has the same id 'n3': network ids must be unique in the POU",
+        "POU Main, network 2 \"next\": error LD-DUPLICATE-LABEL: label 'next' is already used by network 1",
+        "POU Main, network 3 \"1x\" or network 4 \"10\" (the same id 'n3'): error LD-BAD-LABEL: network label '1x' "
+        "must be an identifier or an unsigned integer",
     ]
 
 
@@ -203,7 +199,7 @@ def test_jump_target_suggestion_and_integer_labels():
         rung("n4", label="10"),
     )
     assert errors(main) == [
-        "POU Main, network n1, element j1: error LD-UNKNOWN-LABEL: jump to 'Nxet', but no network "
+        "POU Main, network 1, jump to Nxet: error LD-UNKNOWN-LABEL: jump to 'Nxet', but no network "
         "of this POU has that label - did you mean 'NEXT'?"
     ]
 
@@ -263,7 +259,7 @@ def test_a_text_on_several_pins_is_located_on_the_pin_at_fault():
         "Main", DECL, rung("n1", box("s", "SEL", en=True, G="TRUE", IN0="T#1s", IN1="TRUE", outputs={"OUT": "n"}))
     )
     assert errors(main) == [
-        "POU Main, network n1, element s, pin IN1: error ST-TYPE-MISMATCH: SEL needs inputs of "
+        "POU Main, network 1, SEL.IN1: error ST-TYPE-MISMATCH: SEL needs inputs of "
         "one type: got TIME and BOOL; convert one of them with a *_TO_* function"
     ]
 
@@ -279,6 +275,15 @@ def test_many_problems_are_reported_without_comparing_each_with_all_before(monke
     networks = [rung(f"n{i}", contact(f"c{i}", "Strat"), coil(f"q{i}", "a")) for i in range(300)]
     found = errors(ld_pou("Main", DECL, *networks))
     assert len(found) == 300 and found[299] == (
-        "POU Main, network n299, element c299: error ST-UNKNOWN-VAR: unknown variable 'Strat'"
+        "POU Main, network 300, contact Strat: error ST-UNKNOWN-VAR: unknown variable 'Strat'"
     )
     assert len(comparisons) < 300
+
+
+def test_an_in_out_pin_needs_a_variable_not_the_rung():
+    """VAR-51: an in-out is passed by reference; a series of contacts is a computed value."""
+    bump = ld_pou("Bump", "VAR_IN_OUT x : BOOL; END_VAR VAR_INPUT go : BOOL; END_VAR", kind="function_block")
+    main = ld_pou("Main", "VAR a : BOOL; u : Bump; END_VAR", rung("n1", box("b", "Bump", "u", X=[contact("c", "a")])))
+    assert errors(main, bump) == [
+        "POU Main, network 1, Bump u.X: error LD-IN-OUT: in-out X of Bump needs a variable, not a computed value"
+    ]

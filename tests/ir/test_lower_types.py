@@ -8,6 +8,7 @@ from hypothesis import strategies as st
 
 from ladderlab.iec.elementary import ELEMENTARY
 from ladderlab.iec.values import f32
+from ladderlab.ir import types as ir
 from ladderlab.ir.lower_types import LoweringError, ir_type
 from ladderlab.ir.types import Array, Elementary, Enum, FbInstance, Struct, StructField, Subrange
 from ladderlab.st import types as t
@@ -34,9 +35,8 @@ def test_ir_type_of_elementary_and_string_types():
     assert ir_type(t.UntypedInt(70000)) == DINT and ir_type(t.UntypedReal()) == Elementary("LREAL")
 
 
-def test_ir_type_refuses_pointers_and_open_arrays_and_errors():
-    with pytest.raises(LoweringError, match="pointers"):
-        ir_type(t.PointerType(t.INT))
+def test_ir_type_of_references_and_refusal_of_open_arrays_and_errors():
+    assert ir_type(t.PointerType(t.INT)) == ir.Reference(ir.Elementary("INT"))
     with pytest.raises(LoweringError, match=r"ARRAY \[\*\]"):
         ir_type(t.ArrayType((None,), t.INT))
     with pytest.raises(LoweringError) as error:
@@ -186,7 +186,7 @@ VAR_GLOBAL g : INT; END_VAR""")
         ("R", "VAR", 3, True, False, None),
         ("C", "VAR", 4, False, True, None),
         ("TMP", "VAR_TEMP", 0, False, False, None),
-        ("LED", "VAR", False, False, False, "%QX0.1"),
+        ("LED", "VAR", None, False, False, "%QX0.1"),  # located: the process image holds its value
     ]
 
 
@@ -198,11 +198,14 @@ def test_non_constant_initial_value_is_a_located_error():
     ]
 
 
-def test_pointer_declaration_is_a_located_unsupported_error():
-    text = "PROGRAM P\nVAR\n  p : POINTER TO INT;\nEND_VAR\nEND_PROGRAM\n"
+def test_references_start_as_null_or_as_ref_of_a_whole_variable():
+    text = (
+        "PROGRAM P\nVAR\n  x : INT;\n  a : ARRAY [1..2] OF INT;\n  p : POINTER TO INT;\n  q : REF_TO INT := NULL;\n"
+        "  r : REF_TO INT := REF(x);\n  s : REF_TO INT := REF(a[1]);\nEND_VAR\nEND_PROGRAM\n"
+    )
     assert errors(text) == [
-        "P/declarations:3:3, POU P: error IR-UNSUPPORTED: pointers (POINTER TO, REF_TO, ADR, REF, "
-        "^) are not supported by the engine yet"
+        "P/declarations:8:21, POU P: error IR-INIT: a reference starts as NULL or as REF(x) of a whole variable x "
+        "(assign REF(a[i]) or REF(s.f) in the body)"
     ]
 
 

@@ -191,9 +191,12 @@ def test_a_panel_bound_to_direct_addresses_drives_the_motor(client, registry, mo
         ws.send_json({"type": "single_cycle"})
         values, _ = recv_until(ws, lambda m: m["type"] == "values" and m["scan"] == 1)
         assert values["changed"] == {"%IX0.0": True, "%QX0.0": True}
-        ws.send_json({"type": "panel", "path": "%IX0.9", "value": True})
+        ws.send_json({"type": "panel", "path": "%IX7.7", "value": True})
         error, _ = recv_until(ws, of_type("error"))
-        assert error["code"] == "bad_path" and "no variable is declared at %IX0.9" in error["message"]
+        assert error["code"] == "bad_path"
+        assert error["message"].endswith(
+            "%IX7.7 is outside the process image: the program uses 1 byte(s) of %I (%IB0..%IB0)"
+        )
 
 
 def test_a_widget_bound_to_a_variable_the_program_lacks_stops_the_build_at_the_widget(client, registry):
@@ -221,6 +224,6 @@ def test_a_widget_bound_to_a_variable_the_program_lacks_stops_the_build_at_the_w
             "hmi/Tank.json",
             "widgets[3].visible",
             "lsh",
-            "panel Tank, widget lsh (visible): no variable is declared at %IX7.7 (declare one with AT %IX7.7)",
+            "panel Tank, widget lsh (visible): %IX7.7 is outside the process image: the program uses 0 byte(s) of %I",
         ),
     ]

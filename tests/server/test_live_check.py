@@ -43,6 +43,7 @@ def test_a_typo_in_an_unsaved_body_is_located_and_nothing_is_stored(client: Test
                 "network": None,
                 "element": None,
                 "pin": None,
+                "place": None,
                 "line": 2,
                 "column": 14,
                 "end_line": 2,

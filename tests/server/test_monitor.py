@@ -239,6 +239,7 @@ def test_a_line_breakpoint_halts_the_running_scan_there(
             "element": None,
             "line": 2,
             "column": 1,
+            "body": None,  # not in an SFC action or transition
         }
         sim = entry(registry, counter).handle
         state = sim.inspect(paths=["Main.Count"])
@@ -378,6 +379,7 @@ def test_a_runtime_error_is_logged_with_its_location_and_the_server_keeps_servin
             "element": None,
             "line": 3,
             "column": 1,
+            "body": None,  # not in an SFC action or transition
         }
         recv_until(ws, of_type("status", state="faulted"))
         assert client.get("/api/health").status_code == 200

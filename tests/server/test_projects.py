@@ -389,7 +389,9 @@ def test_save_pou_error_paths(client: TestClient, workspace: Workspace, motor: s
     bad = client.put("/api/projects/motor/pous/Bad__name", json=st_program("Bad__name"), headers={"If-Match": motor})
     assert bad.status_code == 422
     assert detail(bad)["diagnostics"][0]["code"] == "BAD-NAME"
-    invalid = client.put("/api/projects/motor/pous/Extra", json={**new, "language": "il"}, headers={"If-Match": motor})
+    invalid = client.put(
+        "/api/projects/motor/pous/Extra", json={**new, "language": "cobol"}, headers={"If-Match": motor}
+    )
     assert (invalid.status_code, detail(invalid)["diagnostics"][0]["json_path"]) == (422, "$.language")
     assert client.put("/api/projects/ghost/pous/Extra", json=new, headers={"If-Match": motor}).status_code == 404
     assert folder_bytes(workspace.root / "motor") == before
@@ -466,6 +468,7 @@ def test_check_reports_a_located_st_error(client: TestClient, motor: str) -> Non
             "network": None,
             "element": None,
             "pin": None,
+            "place": None,
             "line": 2,
             "column": 6,
             "end_line": 2,

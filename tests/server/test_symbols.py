@@ -244,3 +244,44 @@ def test_an_unknown_variable_is_refused_with_a_suggestion(client: TestClient, mo
     response = client.get("/api/projects/motor/variables", params={"path": "Main.RunTimer.Nope"})
     assert response.status_code == 404
     assert detail(response)["message"] == "Main.RunTimer.Nope: TON has no member 'Nope'"
+
+
+def test_the_instance_tree_of_a_configuration_lists_its_named_instances(
+    client: TestClient, workspace: Workspace
+) -> None:
+    """Issue 16 (CFG-04): two instances of one PROGRAM are two roots of the tree, by instance name and typed by
+    their PROGRAM; each path the tree lists reads in the running simulation."""
+    response = client.post("/api/projects", json={"name": "plant"})
+    assert response.status_code == 201, response.text
+    project = {
+        "name": "plant",
+        "pous": [st_program("Conveyor", "VAR\n    Count : INT;\nEND_VAR", "Count := Count + 1;")],
+        "configuration": {
+            "name": "Plant",
+            "resources": [
+                {
+                    "name": "Cpu",
+                    "tasks": [
+                        {
+                            "name": "Fast",
+                            "interval": "T#10ms",
+                            "programs": [{"name": "Line1", "type": "Conveyor"}, {"name": "Line2", "type": "Conveyor"}],
+                        }
+                    ],
+                }
+            ],
+        },
+    }
+    saved = client.put("/api/projects/plant", json=project, headers={"If-Match": f'"{response.json()["revision"]}"'})
+    assert saved.status_code == 200, saved.text
+    top = children(client, "plant", "")
+    assert [(n["name"], n["path"], n["type"], n["var_class"]) for n in top] == [
+        ("Line1", "Line1", "Conveyor", "PROGRAM"),
+        ("Line2", "Line2", "Conveyor", "PROGRAM"),
+    ]
+    assert children(client, "plant", "Line2") == [node("Count", "Line2.Count", "INT", "VAR")]
+    response = client.get("/api/projects/plant/variables", params={"path": "Conveyor"})  # two instances: name one
+    assert response.status_code == 404
+    sim = build_project(workspace.load("plant").project).simulation()
+    sim.cycle(3)
+    assert [sim.read("Line1.Count"), sim.read("Line2.Count")] == [3, 3]

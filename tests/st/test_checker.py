@@ -391,3 +391,38 @@ def test_fb_instance_initialised_before_its_fb_is_declared():
         assert check_project(Project(name="p", pous=pous)).diagnostics == []
     bad = main.model_copy(update={"declarations": "VAR f : Fb := (m := 4); END_VAR"})
     assert [d.code for d in check_project(Project(name="p", pous=[bad, fb])).diagnostics] == ["ST-UNKNOWN-MEMBER"]
+
+
+def test_an_enumeration_value_of_several_types_must_be_named_with_its_type():
+    """ST-AMBIGUOUS: without a target that says which enumeration is meant, ``Idle`` could be either."""
+    main = Pou(name="Main", kind="program", language="st", declarations="VAR m : TMode; END_VAR")
+    types = "TYPE TMode : (Idle, Run); TState : (Idle, Stop); END_TYPE"
+    found = check_project(
+        Project(name="p", types=types, pous=[main.model_copy(update={"body": "IF Idle = m THEN m := Run; END_IF;"})])
+    ).diagnostics
+    assert [(d.code, d.line, d.column, d.message) for d in found] == [
+        ("ST-AMBIGUOUS", 1, 4, "'Idle' is a value of several enumerations: write TMode#Idle, TState#Idle")
+    ]
+    clear = main.model_copy(update={"body": "IF TMode#Idle = m THEN m := Run; END_IF;"})
+    assert check_project(Project(name="p", types=types, pous=[clear])).diagnostics == []
+
+
+def test_more_initial_values_than_array_elements():
+    found = errors("", declarations="VAR a : ARRAY[1..3] OF INT := [1, 2, 3, 4]; END_VAR")
+    assert found == [("error", "ST-INIT", 1, 32, "4 initial values for an array of 3 elements")]
+
+
+def test_a_pou_that_assigns_its_own_input_is_warned():
+    """ST-INPUT-WRITE (docs/diagnostics.md): legal ST, but the caller's value is lost; a warning, not an error."""
+    pump = Pou(name="Pump", kind="function_block", language="st", declarations="VAR_INPUT speed : INT; END_VAR")
+    found = check_project(Project(name="p", pous=[pump.model_copy(update={"body": "speed := 0;"})])).diagnostics
+    assert [(d.severity, d.code, d.pou, d.line, d.column, d.message) for d in found] == [
+        (
+            "warning",
+            "ST-INPUT-WRITE",
+            "Pump",
+            1,
+            1,
+            "'speed' is an input of Pump: assigning it overwrites the caller's value",
+        )
+    ]

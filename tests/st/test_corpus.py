@@ -16,12 +16,7 @@ from ladderlab.st.printer import print_source
 from tests.support import PASS_RATES, external
 
 IRONPLC_UNSUPPORTED = {
-    "first_steps.st": "SFC (INITIAL_STEP / TRANSITION), a later phase",
-    "first_steps_function_block_counter_sfc.st": "SFC",
-    "first_steps_semantic_error.st": "SFC (the file is the first_steps project)",
-    "sfc.st": "SFC",
-    "configuration.st": "VAR_CONFIG (optional, CFG-08)",
-    "program.st": "VAR_ACCESS (optional, CFG-08)",
+    "program.st": "VAR_ACCESS inside a PROGRAM (a configuration's VAR_ACCESS is supported, CFG-08)",
     "reference_to.st": "REFERENCE TO (a CODESYS dialect; REF_TO and POINTER TO are supported)",
     "oscat.st": "CODESYS export header with text outside any comment",
     "if.st": "missing ';' after END_IF followed by another statement (ST-40 makes it an error)",

@@ -13,7 +13,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from ladderlab.st import ast
-from ladderlab.st.parser import _keywords, _run, parse_declarations
+from ladderlab.st.parser import _run, grammar_keywords, parse_declarations
 from ladderlab.st.quick_decls import quick_declarations
 
 NAMES = st.sampled_from(["a", "B1", "Start", "x_1", "_t", "motorOn", "IN", "q"])
@@ -79,7 +79,7 @@ def full(node):
 @settings(max_examples=400, deadline=None)
 @given(declarations_text())
 def test_quick_reading_declines_or_equals_the_parser(text):
-    quick = quick_declarations(text, _keywords())
+    quick = quick_declarations(text, grammar_keywords())
     parsed = _run(text, "start_decls", None)
     if quick is not None:
         assert not parsed.diagnostics
@@ -88,11 +88,11 @@ def test_quick_reading_declines_or_equals_the_parser(text):
 
 def test_plain_blocks_are_read_without_the_parser():
     text = "VAR_INPUT\n  a, b : BOOL;\nEND_VAR\nVAR RETAIN\n\tT1 : TON; n : INT;\r\nEND_VAR"
-    quick = quick_declarations(text, _keywords())
+    quick = quick_declarations(text, grammar_keywords())
     assert full(quick) == full(_run(text, "start_decls", None).ast)
     assert [b.kind for b in quick] == ["VAR_INPUT", "VAR"] and quick[1].retain
     assert quick[1].decls[0].span == ast.Span(5, 2, 5, 10)  # 'T1 : TON' without the ';'
-    assert quick_declarations("", _keywords()) == []
+    assert quick_declarations("", grammar_keywords()) == []
 
 
 def test_anything_else_goes_to_the_parser_with_its_diagnostics():
@@ -105,7 +105,7 @@ def test_anything_else_goes_to_the_parser_with_its_diagnostics():
         "VAR a : BOOL;",
         "a : BOOL;",
     ]:
-        assert quick_declarations(text, _keywords()) is None, text
+        assert quick_declarations(text, grammar_keywords()) is None, text
     result = parse_declarations("VAR\n  a : BOOL\n  b : INT;\nEND_VAR")
     assert [(d.code, d.line) for d in result.diagnostics] == [("ST-PARSE", 2)]  # the missing ";"
 

@@ -188,3 +188,25 @@ def test_many_tests_run_in_worker_processes_with_the_same_results_and_a_memory_l
     ]
     assert result.returncode == 2
     assert load_project_path(motor).tests[2].name == "motor"
+
+
+def test_a_worker_process_that_dies_is_reported_for_its_file():
+    """TEST-WORKER: the process running a file ended (killed, out of memory outside a test) - said for that file,
+    not a traceback; the other files' results stand."""
+    from concurrent.futures import Future
+    from concurrent.futures.process import BrokenProcessPool
+
+    from ladderlab.testing.suite import SuiteFile, _result
+
+    died: Future = Future()
+    died.set_exception(BrokenProcessPool("A child process terminated abruptly, the process pool is not usable anymore"))
+    part = _result(died, 1, 0, [SuiteFile("tests/a.st", ""), SuiteFile("tests/b.st", "")])
+    assert (part.file, part.results) == (1, [])
+    assert [(d.code, d.file, d.message) for d in part.diagnostics] == [
+        (
+            "TEST-WORKER",
+            "tests/b.st",
+            "the worker process running this file stopped (BrokenProcessPool: A child process terminated abruptly, "
+            "the process pool is not usable anymore); its tests did not run",
+        )
+    ]

@@ -206,3 +206,18 @@ END_TEST
         "14:3 ST-UNKNOWN-VAR unknown variable 'x'",
         "14:8 TEST-VERB ASSERT_TRUE is a statement of its own: it has no value",
     ]
+
+
+def test_a_test_declares_plain_variables_and_has_a_name_of_its_own():
+    text = """TEST 'starts'
+  VAR_INPUT x : INT; END_VAR
+  ASSERT_TRUE(TRUE);
+END_TEST
+TEST 'starts'
+  ASSERT_TRUE(TRUE);
+END_TEST
+"""
+    assert errors(PLANT, text) == [
+        "5:1 TEST-DUPLICATE there is already a test called 'starts' in this file",
+        "2:3 TEST-DECL a test declares VAR blocks only, not VAR_INPUT",
+    ]

@@ -1,4 +1,4 @@
-"""The ``ladderlab`` command line: serve, check, run, test, compile, export, import, schema."""
+"""The ``ladderlab`` command line: serve, check, run, test, compile, export, doc, import, schema."""
 
 from __future__ import annotations
 
@@ -7,7 +7,9 @@ import ipaddress
 import json
 import os
 import sys
+from collections.abc import Iterator
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from ..engine.codegen import VARIANTS
 from ..engine.inputs import AppliedInput
@@ -20,8 +22,16 @@ from ..simulation.recording import Recording, read_recording
 from ..storage import StorageError, load_project_path
 from ..storage.atomic import write_atomic
 from ..storage.project_folder import revision_of
-from .run import jsonl_line, parse_duration, parse_events, parse_fault, parse_set, run_scans, table_lines
+from ..storage.text_files import CLI_HINT, xml_for_parser
+from .doc import add_doc_command
+from .encoding import add_encoding_option, encoding_of
+from .run import Row, jsonl_line, parse_duration, parse_events, parse_fault, parse_set, run_scans, table_lines
 from .test import add_test_command
+
+if TYPE_CHECKING:  # the server is imported only by the commands that start it
+    from ..model import Project
+    from ..server.security import Security
+    from ..simulation.build import Build
 
 EXIT_OK, EXIT_ERRORS, EXIT_USAGE, EXIT_RUNTIME, EXIT_NOT_REACHED, EXIT_INTERNAL = 0, 1, 2, 3, 4, 70
 #: How many scans ``--until`` runs at most when neither --cycles nor --for says.
@@ -31,7 +41,8 @@ UNTIL_LIMIT = 1_000_000
 def main(argv: list[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     try:
-        return args.func(args)
+        code: int = args.func(args)
+        return code
     except StorageError as err:
         for diagnostic in err.diagnostics:
             print(diagnostic.format(), file=sys.stderr)
@@ -98,12 +109,14 @@ def _parser() -> argparse.ArgumentParser:
     serve.set_defaults(func=_serve)
 
     check = sub.add_parser("check", help="load and check a project, print diagnostics")
-    check.add_argument("project", type=Path, help="project folder, project .json file or .st file")
+    check.add_argument("project", type=Path, help="project folder, project .json file or .st / .il file")
+    add_encoding_option(check)
     check.add_argument("--format", choices=["text", "json"], default="text")
     check.set_defaults(func=_check)
 
     run = sub.add_parser("run", help="run a project on the virtual clock and print watched values per scan")
-    run.add_argument("project", type=Path, help="project folder, project .json file or .st file")
+    run.add_argument("project", type=Path, help="project folder, project .json file or .st / .il file")
+    add_encoding_option(run)
     length = run.add_mutually_exclusive_group()
     length.add_argument("--cycles", type=int, default=None, metavar="N", help="number of scans (default 1)")
     length.add_argument(
@@ -175,15 +188,22 @@ def _parser() -> argparse.ArgumentParser:
     add_test_command(sub)
 
     compile_ = sub.add_parser("compile", help="check and compile a project; optionally print the generated Python")
-    compile_.add_argument("project", type=Path, help="project folder, project .json file or .st file")
+    compile_.add_argument("project", type=Path, help="project folder, project .json file or .st / .il file")
+    add_encoding_option(compile_)
     compile_.add_argument("--emit-python", action="store_true", help="print the generated Python module")
     compile_.add_argument("--variant", choices=list(VARIANTS), default="fast")
     compile_.set_defaults(func=_compile)
 
     export = sub.add_parser("export", help="export a project as PLCopen XML or IEC ST text")
     export.add_argument("format", choices=["plcopen", "st"])
-    export.add_argument("project", type=Path, help="project folder, project .json file or .st file")
+    export.add_argument("project", type=Path, help="project folder, project .json file or .st / .il file")
+    add_encoding_option(export)
     export.add_argument("--pou", default=None, help="st: only this POU (default: the whole project)")
+    export.add_argument(
+        "--sfc-text",
+        action="store_true",
+        help="st: SFC POUs as IEC textual SFC (INITIAL_STEP, TRANSITION ...) instead of the ST of their scan",
+    )
     export.add_argument("-o", "--output", type=Path, default=None, help="file to write (default: standard output)")
     export.add_argument(
         "--with-plants",
@@ -192,9 +212,12 @@ def _parser() -> argparse.ArgumentParser:
     )
     export.set_defaults(func=_export)
 
+    add_doc_command(sub)
+
     import_ = sub.add_parser("import", help="import a PLCopen XML project into a workspace")
     import_.add_argument("format", choices=["plcopen"])
     import_.add_argument("file", type=Path)
+    add_encoding_option(import_)
     import_.add_argument(
         "--into", type=Path, default=None, help="workspace folder (default: $LADDERLAB_WORKSPACE or ./workspace)"
     )
@@ -207,8 +230,13 @@ def _parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _load(args: argparse.Namespace) -> Project:
+    """The PROJECT argument, its files read in ``--encoding``."""
+    return load_project_path(args.project, encoding_of(args))
+
+
 def _check(args: argparse.Namespace) -> int:
-    project = load_project_path(args.project)
+    project = _load(args)
     diagnostics = check_project(project)
     if args.format == "json":
         print(json.dumps([d.model_dump(exclude_none=True) for d in diagnostics], indent=2))
@@ -220,12 +248,12 @@ def _check(args: argparse.Namespace) -> int:
     return EXIT_ERRORS if has_errors(diagnostics) else EXIT_OK
 
 
-def _build(args: argparse.Namespace, variant: str = "fast"):
+def _build(args: argparse.Namespace, variant: str = "fast") -> Build | None:
     """Load and build the project; prints the diagnostics and returns None when it has errors."""
-    return _built(load_project_path(args.project), variant)
+    return _built(_load(args), variant)
 
 
-def _built(project, variant: str = "fast"):
+def _built(project: Project, variant: str = "fast") -> Build | None:
     """Build ``project``; prints the diagnostics and returns None when it has errors."""
     build = build_project(project, variant)
     for diagnostic in build.diagnostics:
@@ -285,7 +313,7 @@ def _run(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
-def _print_rows(rows, watch: list[str], form: str, command: str) -> int:
+def _print_rows(rows: Iterator[Row], watch: list[str], form: str, command: str) -> int:
     try:
         lines = (jsonl_line(row) for row in rows) if form == "jsonl" else table_lines(rows, watch)
         for line in lines:
@@ -343,7 +371,7 @@ def _read_events(path: Path) -> str:
 
 def _compile(args: argparse.Namespace) -> int:
     build = _build(args, args.variant)
-    if build is None:
+    if build is None or build.compiled is None:
         return EXIT_ERRORS
     if args.emit_python:
         print(build.compiled.source)
@@ -354,7 +382,7 @@ def _export(args: argparse.Namespace) -> int:
     from ..interchange.plants import for_export
     from ..interchange.plcopen.exporter import PlcopenExportError, export_plcopen
 
-    project = load_project_path(args.project)
+    project = _load(args)
     if args.pou is None:
         project = for_export(project, args.with_plants)
     if args.format == "plcopen":
@@ -368,9 +396,10 @@ def _export(args: argparse.Namespace) -> int:
                 print(diagnostic.format(), file=sys.stderr)
             return EXIT_ERRORS
     else:
-        data = _st_export(project, args.pou)
-        if data is None:
+        text = _st_export(project, args.pou, args.sfc_text)
+        if text is None:
             return EXIT_ERRORS
+        data = text
     if args.output is None:
         sys.stdout.write(data.decode("utf-8"))
     else:
@@ -378,11 +407,15 @@ def _export(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
-def _st_export(project, pou: str | None) -> bytes | None:
+def _st_export(project: Project, pou: str | None, sfc_text: bool = False) -> bytes | None:
     from ..interchange.st.export import export_pou_st
     from ..interchange.st.project import export_project_st
 
-    result = export_pou_st(project, pou) if pou is not None else export_project_st(project)
+    result = (
+        export_pou_st(project, pou, sfc_text=sfc_text)
+        if pou is not None
+        else export_project_st(project, sfc_text=sfc_text)
+    )
     for diagnostic in result.diagnostics:
         print(diagnostic.format(), file=sys.stderr)
     return None if has_errors(result.diagnostics) else result.text.encode("utf-8")
@@ -395,7 +428,8 @@ def _import(args: argparse.Namespace) -> int:
     if not args.file.is_file():
         print(f"{args.file}: error BAD-PATH: no such file", file=sys.stderr)
         return EXIT_USAGE
-    result = import_plcopen(args.file.read_bytes(), name=args.name, file=args.file.name)
+    data = xml_for_parser(args.file.read_bytes(), args.file.name, encoding_of(args), CLI_HINT)  # exit 2 when not text
+    result = import_plcopen(data, name=args.name, file=args.file.name)
     for diagnostic in result.diagnostics:
         print(diagnostic.format(), file=sys.stderr)
     if result.project is None or has_errors(result.diagnostics):
@@ -463,7 +497,7 @@ def _serve(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
-def serve_security(args: argparse.Namespace):
+def serve_security(args: argparse.Namespace) -> Security:
     """The server's Security from the command line: its names, extra origins and sign-in."""
     from ..server.auth import Auth
     from ..server.security import LOOPBACK_HOSTS, Security

@@ -19,11 +19,13 @@ from ..testing.grade import grade
 from ..testing.report import jsonl_report, junit_report, result_lines, text_report
 from ..testing.run import DEFAULT_SCAN_BUDGET, Options
 from ..testing.suite import run_suite, suite_files
+from .encoding import add_encoding_option, encoding_of
 
 
-def add_test_command(sub) -> None:
+def add_test_command(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     test = sub.add_parser("test", help="run the project's unit tests (tests/*.st) and report them")
     test.add_argument("projects", nargs="+", type=Path, metavar="PROJECT", help="project folder or project .json file")
+    add_encoding_option(test)
     test.add_argument("--filter", default=None, metavar="PATTERN", help="only tests whose name matches (glob or part)")
     test.add_argument("--format", choices=["text", "jsonl", "junit"], default="text")
     test.add_argument("-o", "--output", type=Path, default=None, metavar="FILE", help="write the report to FILE")
@@ -51,7 +53,7 @@ def run_test_command(args: argparse.Namespace) -> int:
         print("ladderlab test: give one PROJECT (several only with --grade)", file=sys.stderr)
         return 2
     folder = args.projects[0]
-    project = load_project_path(folder)
+    project = load_project_path(folder, encoding_of(args))
     files = suite_files(project, folder if folder.is_dir() else None)
     live = args.format == "text" and args.output is None and sys.stdout.isatty()
     outcome = run_suite(
@@ -87,8 +89,8 @@ def run_test_command(args: argparse.Namespace) -> int:
 def _grade(args: argparse.Namespace, options: Options) -> int:
     lines = []
     for folder in args.projects:
-        project = load_project_path(folder)
-        files = suite_files(project, folder if folder.is_dir() else None, grade=True)
+        project = load_project_path(folder, encoding_of(args))
+        files = suite_files(project, folder if folder.is_dir() else None, grade=True, encoding=encoding_of(args))
         outcome = run_suite(
             project, files, options, pattern=args.filter, jobs=args.jobs, memory_limit_mb=args.memory_limit
         )

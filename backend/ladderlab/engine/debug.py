@@ -10,11 +10,17 @@ which pause points are armed in ``ll_halt``:
 * breakpoints, always;
 * while stepping ``statement`` (step into), ``over`` and ``out``: every ST statement and
   every network boundary (LD/FBD step by network, ON-04); ``network``: every network
-  boundary; ``cycle``: nothing more (run to the end of the scan, or the next breakpoint).
+  boundary; ``transition``: every SFC transition that fires, in this scan and the
+  following ones until one does (``waiting_for_transition``); ``cycle``: nothing more
+  (run to the end of the scan, or the next breakpoint).
 
 ``over`` and ``out`` arm what ``statement`` arms; the simulation passes over the points
 inside calls made from the halted POU (``over``) or inside that POU itself (``out``):
 ``STEP_ENDS`` says which halts end such a step.
+
+Breakpoints name an ST line, a network or an element of a POU; in an SFC POU also
+the action or named transition (``body``: ``actions/<name>``, ``transitions/<name>``)
+the line or network is in.
 """
 
 from __future__ import annotations
@@ -24,9 +30,17 @@ from dataclasses import dataclass
 from ..ir import nodes as ir
 from .codegen.context import PausePoint
 
-GRANULARITIES = ("statement", "over", "out", "network", "cycle")
+GRANULARITIES = ("statement", "over", "out", "network", "transition", "cycle")
 _STEPS_INTO = ("statement", "network")
-_STEP_KINDS = {"statement": _STEPS_INTO, "over": _STEPS_INTO, "out": _STEPS_INTO, "network": ("network",), "cycle": ()}
+_STEP_KINDS = {
+    "statement": _STEPS_INTO,
+    "over": _STEPS_INTO,
+    "out": _STEPS_INTO,
+    "network": ("network",),
+    "transition": ("transition",),
+    "cycle": (),
+}
+_ELEMENT_KINDS = ("element", "transition")
 
 
 def _within(frames: tuple, start: tuple) -> bool:
@@ -60,17 +74,29 @@ class Debugger:
         self.points = points
         self.flags = flags  # the generated module's ll_halt, shared
         self.breakpoints: set[int] = set()
+        self.waiting_for_transition = False  # a "transition" step: armed from scan to scan until one fires
 
     def pause_points(self, pou: str | None = None) -> list[PausePoint]:
         return [p for p in self.points if pou is None or p.origin.pou.upper() == pou.upper()]
 
     def find(
-        self, pou: str, *, line: int | None = None, network: str | None = None, element: str | None = None
+        self,
+        pou: str,
+        *,
+        line: int | None = None,
+        network: str | None = None,
+        element: str | None = None,
+        body: str | None = None,
     ) -> list[int]:
-        """Pause points of a breakpoint on an ST line, an LD/FBD network or an element (exactly one given)."""
+        """Pause points of a breakpoint on an ST line, an LD/FBD network or an element (exactly one given), in the
+        POU's body or chart, or (``body``) in one of an SFC POU's actions or named transitions."""
         if sum(x is not None for x in (line, network, element)) != 1:
             raise ValueError("give exactly one of line, network, element")
         points = self.pause_points(pou)
+        if points:
+            points = [p for p in points if p.origin.body == body]
+            if not points:
+                raise ValueError(f"{pou} has no pause points in {body or 'its body'}")
         if not points:
             known = sorted({p.origin.pou for p in self.points})
             raise ValueError(f"no POU {pou!r} with pause points (known: {', '.join(known) or 'none'})")
@@ -84,8 +110,11 @@ class Debugger:
             found = [p.id for p in points if p.kind == "network" and p.origin.network == network]
             what, options = f"network {network!r}", sorted({p.origin.network for p in points if p.kind == "network"})
         else:
-            found = [p.id for p in points if p.kind == "element" and element in (p.element, p.origin.element)]
-            what, options = f"element {element!r}", sorted({p.element for p in points if p.kind == "element"})
+            found = [p.id for p in points if p.kind in _ELEMENT_KINDS and element in (p.element, p.origin.element)]
+            what, options = (
+                f"element {element!r}",
+                sorted({p.element for p in points if p.kind in _ELEMENT_KINDS and p.element}),
+            )
         if not found:
             shown = ", ".join(map(str, options[:20])) or "none"
             raise ValueError(f"{pou} has no {what} (possible: {shown})")
@@ -106,12 +135,21 @@ class Debugger:
         self.arm(None)
 
     def arm(self, step: str | None) -> None:
-        """Arm the breakpoints, plus the pause points of a step of this granularity."""
+        """Arm the breakpoints, plus the pause points of a step of this granularity (and the transitions while a
+        transition step waits)."""
         if step is not None and step not in GRANULARITIES:
             raise ValueError(f"step granularity must be one of {', '.join(GRANULARITIES)}, not {step!r}")
+        if step == "transition":
+            self.waiting_for_transition = True
         kinds = _STEP_KINDS[step] if step else ()
+        if self.waiting_for_transition:
+            kinds = (*kinds, "transition")
         for point in self.points:
             self.flags[point.id] = point.id in self.breakpoints or point.kind in kinds
 
     def reason(self, pid: int) -> str:
         return "breakpoint" if pid in self.breakpoints else "step"
+
+    def halted_at(self, pid: int) -> None:
+        """A scan halted at pause point ``pid``: a transition step that waited is over when any halt comes."""
+        self.waiting_for_transition = False

@@ -63,8 +63,14 @@ def check_subrange(value: int, low: int, high: int) -> int:
 
 
 FOR_STEP_ZERO = "for_step_zero"
+NULL_DEREFERENCE = "null_dereference"
 WATCHDOG = "watchdog"
 OUT_OF_MEMORY = "out_of_memory"
+
+
+def null_dereference(what: str) -> PlcRuntimeError:
+    """``r^`` where ``r`` is NULL (IEC 61131-3 ed. 3 6.4.4.10.3: an error)."""
+    return PlcRuntimeError(NULL_DEREFERENCE, f"{what} is NULL: it refers to no variable, so '^' has nothing to reach")
 
 
 def for_step_zero() -> PlcRuntimeError:

@@ -1,8 +1,9 @@
-"""Variable paths of a running simulation: ``MAIN.T1.Q``, ``GVL.START`` or ``START``, ``MAIN.ARR[3]``, ``MAIN.S.F``,
-and direct addresses (``%IX0.0``: the variable declared AT it).
+"""Variable paths of a running simulation: ``MAIN.T1.Q``, ``GVL.START`` or ``START``, ``MAIN.ARR[3]``, ``MAIN.S.F``.
 
 Names are matched case-insensitively against the IR's canonical names; the
-first segment is a program instance, else ``GVL`` (the globals), else a global.
+first segment is a VAR_ACCESS name, else ``GVL`` (the globals), else a global:
+program instances are globals (codegen/tasks.py), so ``MAIN.X`` is the variable X
+of the instance MAIN.
 ``resolve`` turns text into a ``Location``, which walks the live objects on
 every access (so it stays valid across a reset). Unknown names raise
 ``UnknownPath`` (a KeyError) with a did-you-mean hint; malformed text and bad
@@ -13,20 +14,24 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterator
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 from ..iec import values
+from ..iec.addresses import Address, parse_address, same_location
 from ..iec.spelling import did_you_mean
 from ..ir import nodes as ir
 from ..ir import types as t
+from ..ir.types import describe
 from .codegen import names
 from .codegen.context import ModuleContext, std_fb_class, std_pin_type
+from .codegen.runtime import reference_text
 from .codegen.scope import global_owner
-from .codegen.typeinfo import describe, is_composite, runtime_name
+from .codegen.typeinfo import is_composite, runtime_name
+from .process_image import ProcessImage, image_view_name, key_of, located_address, view_kind
 
 GLOBALS_PREFIX = "GVL"
+VIEW_PREFIX = "ll_io_"
 _DEREF = object()  # step into a VAR_IN_OUT reference
-_ADDRESS = re.compile(r"%[IQM][XBWDL]?\d+(?:\.\d+)*")
 _TOKEN = re.compile(r"\s*(?:(?P<name>[A-Za-z_][A-Za-z0-9_]*)|(?P<int>[+-]?\d+)|(?P<punct>[.\[\],]))")
 
 
@@ -41,15 +46,17 @@ class Location:
 
     path: str
     type: t.IrType
-    root: tuple[str, str]  # ("program", NAME) or ("global", G-page name)
+    root: tuple[str, str]  # ("global", a G page or a process image view) or ("attached", an instance's name)
     keys: tuple[object, ...]
+    read_only: bool = False  # a READ_ONLY access path (VAR_ACCESS)
+    write_root: tuple[str, str] | None = None  # where writes go when not to ``root`` (the world's side of I/Q)
 
     @property
     def elementary(self) -> bool:
         return not is_composite(self.type)
 
-    def _container(self, roots: Roots) -> tuple[object, object]:
-        obj = roots.get(self.root)
+    def _container(self, roots: Roots, writing: bool = False) -> tuple[object, object]:
+        obj = roots.get(self.write_root if writing and self.write_root is not None else self.root)
         keys = list(self.keys)
         last = keys.pop()
         for key in keys:
@@ -63,20 +70,34 @@ class Location:
         return container[key]  # type: ignore[index]
 
     def set(self, roots: Roots, value: object) -> None:
-        container, key = self._container(roots)
+        container, key = self._container(roots, writing=True)
         container[key] = value  # type: ignore[index]
+
+    def reference(self, roots: Roots) -> tuple[object, object]:
+        """A VAR_IN_OUT reference ``(container, key)`` to this location, as generated code passes one."""
+        return self._container(roots)
 
 
 class Roots:
-    """The live objects paths start from: program instances and global pages."""
+    """The live objects paths start from: the global pages (program instances are globals) of a module, the
+    process image's views (made on first use: a path may read an address through a view no code uses) and the
+    instances attached outside the tasks (``Simulation.attach``)."""
 
-    def __init__(self, programs: dict[str, object], ns: dict[str, object]) -> None:
-        self.programs = programs
+    def __init__(self, ns: dict[str, object], attached: dict[str, tuple[object, str]]) -> None:
         self.ns = ns
+        self.attached = attached  # upper-case name -> (instance, upper-case POU name)
 
     def get(self, root: tuple[str, str]) -> object:
         kind, name = root
-        return self.programs[name] if kind == "program" else self.ns[name]
+        if kind == "attached":
+            return self.attached[name][0]
+        found = self.ns.get(name)
+        if found is None and name.startswith(VIEW_PREFIX):
+            buffer, kind = name[len(VIEW_PREFIX) :].split("_", 1)
+            image = self.ns["ll_image"]
+            assert isinstance(image, ProcessImage)
+            found = self.ns[name] = image.view(buffer, kind)
+        return found
 
 
 def tokens(text: str) -> list[tuple[str, str]]:
@@ -97,7 +118,7 @@ class Resolver:
 
     def __init__(self, context: ModuleContext) -> None:
         self.context = context
-        self.programs = {n: p for n, p in context.pous.items() if p.kind == "program"}
+        self.access = {name.upper(): target for name, target in context.program.access.items()}
         self.attached: dict[str, str] = {}  # root name of an instance outside the tasks -> its POU (upper case)
         self._cache: dict[str, Location] = {}
 
@@ -119,78 +140,103 @@ class Resolver:
     def _resolve(self, text: str) -> Location:
         if not isinstance(text, str):
             raise ValueError(f"a variable path must be text, not {text!r}")
-        if text.lstrip().startswith("%"):
-            return self._address(text)
+        if text.strip().startswith("%"):
+            return self._address(text.strip())
         toks = tokens(text)
         if not toks or toks[0][0] != "name":
             raise ValueError(f"{text!r} is not a variable path (it must start with a name)")
         first = toks[0][1].upper()
         rest = toks[1:]
-        if first in self.programs or first in self.attached:
-            name, rest = self._member_name(rest, text)
-            layout = self.context.layouts[self.attached.get(first, first)]
-            return self._walk(text, first, ("program", first), layout, name, rest)
+        if first in self.access:  # a VAR_ACCESS name stands for its path
+            target, read_only = self.access[first]
+            located = self._resolve(target + text.strip()[len(toks[0][1]) :])
+            return Location(located.path, located.type, located.root, located.keys, read_only)
+        if first in self.attached:
+            if not rest:
+                raise ValueError(f"{text!r}: expected '.name' after {first}")
+            return self._walk(text, first, ("attached", first), t.FbInstance(self.attached[first]), (), rest)
         if first == GLOBALS_PREFIX and rest[:1] == [("punct", ".")]:
             name, rest = self._member_name(rest, text)
             return self._global(text, name, rest)
         return self._global(text, toks[0][1], rest, top=True)
-
-    def _address(self, text: str) -> Location:
-        """A direct address (``%IX0.0``, ``%QW3``) names the variable declared AT it, globally or in a program;
-        the location keeps the address as its path, so values and forces are reported under it."""
-        address = text.strip().upper()
-        if not _ADDRESS.fullmatch(address):
-            raise ValueError(f"{text!r} is not a direct address (e.g. %IX0.0, %QW2, %MD10)")
-        for place in self.context.globals.places.values():  # type: ignore[union-attr]
-            if (place.slot.address or "").upper() == address:
-                return replace(self._global(text, place.slot.name, []), path=address)
-        for program in self.programs:
-            layout = self.context.layouts[program]
-            for place in layout.places.values():
-                if (place.slot.address or "").upper() == address:
-                    return replace(
-                        self._walk(text, program, ("program", program), layout, place.slot.name, []), path=address
-                    )
-        raise UnknownPath(f"no variable is declared at {address} (declare one with AT {address})")
 
     def _member_name(self, rest: list, text: str) -> tuple[str, list]:
         if len(rest) < 2 or rest[0] != ("punct", ".") or rest[1][0] != "name":
             raise ValueError(f"{text!r}: expected '.name' after {text.split('.')[0].split('[')[0].strip()}")
         return rest[1][1], rest[2:]
 
+    def _address(self, text: str) -> Location:
+        """``%IX0.1``: the address with the type of the variable declared at it, else its size's default; it
+        must lie in the process image (the addresses the program uses)."""
+        address = parse_address(text)
+        declared = next((s for s in self.context.located if same_location(s.address, address)), None)
+        image = self.context.image_sizes()
+        if address.end > image.get(address.area, 0):
+            used = image.get(address.area, 0)
+            raise UnknownPath(
+                f"{address.text} is outside the process image: the program uses {used} byte(s) of %{address.area}"
+                + (f" (%{address.area}B0..%{address.area}B{used - 1})" if used else "")
+            )
+        ty = declared.type if declared is not None else t.Elementary(address.default_type)
+        return located_location(address.text, ty, address)
+
     def _global(self, text: str, name: str, rest: list, top: bool = False) -> Location:
-        place = self.context.globals.get(name)  # type: ignore[union-attr]
+        place = self.context.globals.get(name)
+        located = self.context.globals.located.get(name.upper()) if place is None else None
+        if located is not None:
+            return self._steps_located(text, located.name, located, rest)
+        if place is None and top:
+            instance = self._only_instance(name)
+            if instance is not None:  # PLC_PRG.x for the one instance of PLC_PRG, whatever its name
+                place = self.context.globals.get(instance)
+                if place is not None:
+                    root = ("global", global_owner(place.page))
+                    return self._steps(text, name.upper(), root, (place.attr,), place.slot, rest)
         if place is None:
-            candidates = [p.slot.name for p in self.context.globals.places.values() if not p.slot.hidden]  # type: ignore[union-attr]
+            candidates = [p.slot.name for p in self.context.globals.places.values() if not p.slot.hidden]
             if top:
-                candidates += list(self.programs)
+                candidates += list(self.access)
                 raise UnknownPath(f"unknown variable or program {name!r}{did_you_mean(name, candidates)}")
             raise UnknownPath(f"unknown global variable {name!r}{did_you_mean(name, candidates)}")
         root = ("global", global_owner(place.page))
         return self._steps(text, place.slot.name, root, (place.attr,), place.slot, rest)
 
-    def _walk(self, text, prefix, root, layout, name, rest) -> Location:
-        place = layout.get(name)
-        if place is None:
-            raise UnknownPath(f"{prefix} has no variable {name!r}{did_you_mean(name, _visible(layout))}")
-        keys = (place.attr,) if place.page == 0 else (f"ll_p{place.page}", place.attr)
-        return self._steps(text, f"{prefix}.{place.slot.name}", root, keys, place.slot, rest)
+    def _only_instance(self, name: str) -> str | None:
+        """The instance of PROGRAM ``name`` when it has exactly one (a configuration may name it otherwise)."""
+        pou = self.context.pous.get(name.upper())
+        if pou is None or pou.kind != "program":
+            return None
+        names = [i.name for i in self.context.instances if i.pou.upper() == name.upper()]
+        if len(names) > 1:
+            raise UnknownPath(f"PROGRAM {name} has {len(names)} instances ({', '.join(names)}): name one")
+        return names[0] if names else None
 
     def _steps(self, text, path, root, keys, slot: ir.Slot, rest) -> Location:
-        ty = slot.type
         if slot.var_class == "VAR_IN_OUT":
             keys = (*keys, _DEREF)
+        return self._walk(text, path, root, slot.type, keys, rest)
+
+    def _walk(self, text, path, root, ty: t.IrType, keys, rest) -> Location:
         while rest:
             kind, value = rest[0]
             if (kind, value) == ("punct", "."):
                 member, rest = self._member_name(rest, text)
                 path, ty, keys = self._member(path, ty, keys, member)
+                if isinstance(keys, Location):  # a located variable of an FB or program instance
+                    if rest:
+                        raise ValueError(f"{path} is {_a(ty)} in the process image: it has no members")
+                    return keys
             elif (kind, value) == ("punct", "["):
                 indices, rest = self._indices(rest[1:], text)
                 path, ty, keys = self._index(path, ty, keys, indices)
             else:
                 raise ValueError(f"{text!r} is not a variable path (unexpected {value!r})")
         return Location(path, ty, root, keys)
+
+    def _steps_located(self, text: str, name: str, slot: ir.Slot, rest: list) -> Location:
+        if rest:
+            raise ValueError(f"{name} is {_a(slot.type)} in the process image: it has no members")
+        return located_location(name, slot.type, located_address(slot.address))
 
     def _indices(self, rest: list, text: str) -> tuple[list[int], list]:
         indices = []
@@ -211,16 +257,19 @@ class Resolver:
             if user is not None:
                 layout = self.context.layouts[user.name.upper()]
                 inner = layout.get(member)
+                if inner is None and member.upper() in layout.located:
+                    slot = layout.located[member.upper()]
+                    location = located_location(f"{path}.{slot.name}", slot.type, located_address(slot.address))
+                    return location.path, location.type, location
                 if inner is None:
-                    raise UnknownPath(
-                        f"{path} ({ty.fb}) has no variable {member!r}{did_you_mean(member, _visible(layout))}"
-                    )
+                    what = path if path.upper() == ty.fb.upper() else f"{path} ({ty.fb})"  # a program instance: MAIN
+                    raise UnknownPath(f"{what} has no variable {member!r}{did_you_mean(member, _visible(layout))}")
                 step = (inner.attr,) if inner.page == 0 else (f"ll_p{inner.page}", inner.attr)
                 deref = (_DEREF,) if inner.slot.var_class == "VAR_IN_OUT" else ()
                 return f"{path}.{inner.slot.name}", inner.slot.type, (*keys, *step, *deref)
             pin_type = std_pin_type(ty.fb, member)
             if pin_type is None:
-                pins = [*std_fb_class(ty.fb).INPUTS, *std_fb_class(ty.fb).OUTPUTS]  # type: ignore[union-attr]
+                pins = [*std_fb_class(ty.fb).INPUTS, *std_fb_class(ty.fb).OUTPUTS]
                 raise UnknownPath(f"{path} ({ty.fb}) has no pin {member!r}{did_you_mean(member, pins)}")
             return f"{path}.{member.upper()}", pin_type, (*keys, member.upper())
         if isinstance(ty, t.Struct):
@@ -244,6 +293,14 @@ class Resolver:
         return f"{path}[{', '.join(map(str, indices))}]", (t.Array(ty.element, rest) if rest else ty.element), keys
 
 
+def located_location(path: str, ty: t.IrType, address: Address) -> Location:
+    """A located variable or an address: read from and written to the program's image; a write to an input also
+    sets the inputs the next scans read (engine/process_image.py)."""
+    kind = view_kind(address, runtime_name(ty))
+    read, write = (image_view_name(ProcessImage.path_buffer(address.area, w), kind) for w in (False, True))
+    return Location(path, ty, ("global", read), (key_of(address),), write_root=("global", write))
+
+
 def _visible(layout) -> list[str]:
     return [p.slot.name for p in layout.places.values() if not p.slot.hidden]
 
@@ -255,8 +312,12 @@ def _a(ty: t.IrType) -> str:
 def coerce_for(location: Location, value: object) -> object:
     """A user value (Python or IEC literal text) for an elementary location; ValueError naming the path."""
     ty = location.type
+    if location.read_only:
+        raise ValueError(f"{location.path} is reached through a READ_ONLY access path: it cannot be written")
     if not location.elementary:
         raise ValueError(f"{location.path} is {_a(ty)}: write its elements one by one")
+    if isinstance(ty, t.Reference):
+        raise ValueError(f"{location.path} is {_a(ty)}: a reference is set by the program (REF(...)), not online")
     try:
         if isinstance(ty, t.Enum):
             return _enum_value(ty, value)
@@ -284,34 +345,47 @@ def _enum_value(ty: t.Enum, value: object) -> int:
 
 
 def leaves(context: ModuleContext, roots: Roots) -> Iterator[tuple[str, object]]:
-    """Every elementary variable (hidden slots and VAR_IN_OUT references left out) with its value."""
-    for name in context.pous:
-        if context.pous[name].kind == "program" and name in roots.programs:
-            yield from _instance_leaves(context, name, context.layouts[name], roots.programs[name])
-    for place in context.globals.places.values():  # type: ignore[union-attr]
+    """Every elementary variable (hidden slots and VAR_IN_OUT references left out) with its value: the attached
+    instances', the program instances', then the other globals'."""
+    for name, (obj, pou) in roots.attached.items():
+        yield from _instance_leaves(context, name, context.layouts[pou], obj, roots)
+    for place in context.globals.places.values():
         if not place.slot.hidden:
             obj = roots.ns[global_owner(place.page)]
-            yield from _value_leaves(context, place.slot.name, place.slot.type, getattr(obj, place.attr))
+            yield from _value_leaves(context, place.slot.name, place.slot.type, getattr(obj, place.attr), roots)
+    yield from _located_leaves("", context.globals, roots)
 
 
-def _instance_leaves(context, path, layout, obj) -> Iterator[tuple[str, object]]:
+def _located_leaves(prefix: str, layout, roots: Roots) -> Iterator[tuple[str, object]]:
+    for slot in layout.located.values():
+        location = located_location(f"{prefix}{slot.name}", slot.type, located_address(slot.address))
+        yield location.path, location.get(roots)
+
+
+def _instance_leaves(context, path, layout, obj, roots: Roots | None = None) -> Iterator[tuple[str, object]]:
     for place in layout.places.values():
         if place.slot.hidden or place.slot.var_class == "VAR_IN_OUT":
             continue
         owner = obj if place.page == 0 else getattr(obj, f"ll_p{place.page}")
-        yield from _value_leaves(context, f"{path}.{place.slot.name}", place.slot.type, getattr(owner, place.attr))
+        yield from _value_leaves(
+            context, f"{path}.{place.slot.name}", place.slot.type, getattr(owner, place.attr), roots
+        )
+    if roots is not None:
+        yield from _located_leaves(f"{path}.", layout, roots)
 
 
-def _value_leaves(context, path, ty, value) -> Iterator[tuple[str, object]]:
+def _value_leaves(context, path, ty, value, roots: Roots | None = None) -> Iterator[tuple[str, object]]:
     if isinstance(ty, t.Array):
-        yield from _array_leaves(context, path, ty, value, [])
+        yield from _array_leaves(context, path, ty, value, [], roots)
     elif isinstance(ty, t.Struct):
         for f in ty.fields:
-            yield from _value_leaves(context, f"{path}.{f.name}", f.type, getattr(value, names.slot(f.name)))
+            yield from _value_leaves(context, f"{path}.{f.name}", f.type, getattr(value, names.slot(f.name)), roots)
+    elif isinstance(ty, t.Reference):
+        yield path, reference_text(value)
     elif isinstance(ty, t.FbInstance):
         user = context.user_fb(ty.fb)
         if user is not None:
-            yield from _instance_leaves(context, path, context.layouts[user.name.upper()], value)
+            yield from _instance_leaves(context, path, context.layouts[user.name.upper()], value, roots)
         else:
             cls = std_fb_class(ty.fb)
             for pin in (*cls.INPUTS, *cls.OUTPUTS, *cls.MEMORY):  # type: ignore[union-attr]
@@ -320,19 +394,21 @@ def _value_leaves(context, path, ty, value) -> Iterator[tuple[str, object]]:
         yield path, value
 
 
-def _array_leaves(context, path, ty: t.Array, value, prefix: list[int]) -> Iterator[tuple[str, object]]:
+def _array_leaves(context, path, ty: t.Array, value, prefix: list[int], roots=None) -> Iterator[tuple[str, object]]:
     depth = len(prefix)
     lo, _hi = ty.dims[depth]
     for offset, item in enumerate(value):
         indices = [*prefix, lo + offset]
         if depth + 1 < len(ty.dims):
-            yield from _array_leaves(context, path, ty, item, indices)
+            yield from _array_leaves(context, path, ty, item, indices, roots)
         else:
-            yield from _value_leaves(context, f"{path}[{', '.join(map(str, indices))}]", ty.element, item)
+            yield from _value_leaves(context, f"{path}[{', '.join(map(str, indices))}]", ty.element, item, roots)
 
 
 def plain(context: ModuleContext, ty: t.IrType, value: object) -> object:
-    """A value as plain data: arrays as (nested) lists, structures and FB instances as dicts."""
+    """A value as plain data: arrays as (nested) lists, structures and FB instances as dicts, references as text."""
+    if isinstance(ty, t.Reference):
+        return reference_text(value)
     if isinstance(ty, t.Array):
         inner = t.Array(ty.element, ty.dims[1:]) if len(ty.dims) > 1 else ty.element
         return [plain(context, inner, item) for item in value]  # type: ignore[attr-defined]
@@ -366,7 +442,9 @@ class LocationReader:
         for path, location in locations.items():
             last = location.keys[-1]
             if isinstance(last, (str, int)):
-                plain_type = None if location.elementary else location.type
+                plain_type = (
+                    None if location.elementary and not isinstance(location.type, t.Reference) else location.type
+                )
                 groups.setdefault((location.root, location.keys[:-1]), []).append((path, last, plain_type))
             else:
                 self.single.append((path, location))
@@ -389,7 +467,7 @@ class LocationReader:
         for path, location in self.single:
             try:
                 value = location.get(self.roots)
-                values[path] = value if location.elementary else plain(self.ctx, location.type, value)
+                values[path] = plain(self.ctx, location.type, value)
             except Exception:
                 values[path] = None
         return values

@@ -6,10 +6,12 @@
 
 Everything from outside the program enters through ``submit`` (``inputs.py``: writes, forces,
 releases, panel events, injected faults, resets), applied at the start of the next scan and
-reported to ``on_input`` with the scan number. A scan applies those inputs, then forces and
-injected faults, runs the plant task (plants: the models of the process, tasks.py), applies
-injected faults and forces again where the plants' signals cross into the program, runs every
-control task due, applies forces again and records its wall time. A fault (PlcRuntimeError,
+reported to ``on_input`` with the scan number. A scan applies those inputs, reads the SINGLE
+tasks' variables and the process image's inputs, applies injected faults and forces, runs the
+plant task (plants: the models of the process, tasks.py), applies injected faults and forces
+again where the plants' signals cross into the program, runs every control task due (each a
+generated function ``ll_task_N``), applies forces again, publishes the outputs and records its
+wall time. A fault (PlcRuntimeError,
 watchdog, or any unexpected exception in generated code) stops its task until
 ``reset`` and is kept in ``faults``; the caller's process never sees it.
 
@@ -31,8 +33,9 @@ from __future__ import annotations
 import time
 from collections.abc import Callable, Generator, Iterable, Iterator
 from dataclasses import dataclass, replace
-from typing import cast
+from typing import Any, cast
 
+from ..iec.addresses import parse_address
 from ..iec.spelling import did_you_mean
 from ..ir import nodes as ir
 from ..ir import types as t
@@ -41,11 +44,13 @@ from .codegen.context import ProbeTable
 from .codegen.faults import Fault, make_fault
 from .codegen.runtime import UNSET, Watchdog
 from .codegen.scope import global_owner
+from .codegen.typeinfo import runtime_name
 from .compile import CompiledProgram, compile_program
 from .debug import STEP_ENDS, Debugger, Halt
 from .doubles import Mocks
 from .inputs import AppliedInput, Injection, InputEvent, InputRefused, immediate, injection
 from .paths import Location, LocationReader, Resolver, Roots, UnknownPath, coerce_for, leaves, plain
+from .process_image import AREA_ORDER, IoPoint, ProcessImage, key_of, located_address, view_kind
 from .state import SimState, data_of, restore_into
 from .tasks import DEFAULT_WATCHDOG_S, Schedule, Task, task_table
 
@@ -99,15 +104,20 @@ class Simulation:
         self.compiled = compiled
         self._variants = {compiled.variant: compiled}
         self._context = compiled.generated.context
-        self._ns = compiled.namespace()
+        self._ns = cast("dict[str, Any]", compiled.namespace())  # the generated module's globals: functions, G, views
         self._clock = wall_clock
-        self._watchdog = Watchdog(watchdog_clock, self._ns["ll_wb"])  # type: ignore[arg-type]  # generated POU classes and their namespace are untyped
+        self._watchdog = Watchdog(watchdog_clock, self._ns["ll_wb"])
         self._ns["ll_wd"] = self._watchdog.check
         self._tasks: list[Task] = task_table(compiled.program, watchdog_s)
         self._schedule = Schedule(self._tasks)
         self._resolver = Resolver(self._context)
-        self.programs: dict[str, object] = {}
-        self._roots = Roots(self.programs, self._ns)
+        self._attached: dict[str, tuple[object, str]] = {}  # outside the tasks (attach): name -> (instance, POU)
+        self._roots = Roots(self._ns, self._attached)
+        self._image: ProcessImage = self._ns["ll_image"]
+        self._has_inputs, self._has_outputs = bool(self._image.inputs), bool(self._image.outputs)  # sized once
+        self._triggers = {task.name: self._resolver.resolve(task.single) for task in self._tasks if task.single}
+        pous = self._context.pous
+        self._plant_instances = {i.name.upper() for i in self._context.instances if pous[i.pou.upper()].plant}
         self.debugger: Debugger | None = None
         self._stamp = 0  # counts scans started: the stamp probe groups record (ll_scan)
         self._pending: list[tuple[InputEvent, Location | None, object]] = []  # waiting for the next scan start
@@ -130,7 +140,6 @@ class Simulation:
         self._watchdog_left = 0.0
         self._paths: dict[int, str] | None = None
         self._instances: dict[str, tuple[object, str]] = {}  # upper-case path -> (instance, upper-case POU name)
-        self._attached: dict[str, str] = {}  # instances outside the tasks (attach): name -> POU, upper case
         self._links: dict[str, dict[str, str]] = {}  # their VAR_IN_OUT links to program instances
         self.mocks = Mocks()
         self._deferred_locations: dict[tuple[str, int], Location] = {}  # (program, probe number) -> its variable
@@ -174,22 +183,18 @@ class Simulation:
 
     def _attach_debugger(self) -> None:
         self.debugger = (
-            Debugger(self.compiled.generated.pauses, self._ns["ll_halt"])  # type: ignore[arg-type]  # generated POU classes and their namespace are untyped
-            if self.variant == "debug"
-            else None
+            Debugger(self.compiled.generated.pauses, self._ns["ll_halt"]) if self.variant == "debug" else None
         )
 
     # ------------------------------------------------------------------ state
 
     def _initialise(self, warm: bool) -> None:
+        """The process image cleared (the inputs stay as the world set them), the globals - program instances first
+        (codegen/tasks.py) - then the VAR_CONFIG initial values."""
+        self._image.clear()
         self._ns["ll_init_globals"](warm)
-        for key, pou in self._context.pous.items():
-            if pou.kind != "program":
-                continue
-            if key in self.programs:
-                self.programs[key].ll_init(warm)  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
-            else:
-                self.programs[key] = self._ns[names.pou_class(pou.name)]()  # type: ignore[operator]  # generated POU classes and their namespace are untyped
+        self._ns["ll_config_init"](warm)
+        self._schedule.reset_triggers()
         self._paths = None
 
     @property
@@ -221,6 +226,7 @@ class Simulation:
             self.scan_count += 1  # the abandoned scan keeps its number: the next scan has the next one
         self._scan, self.halted = None, None
         if self.debugger is not None:
+            self.debugger.waiting_for_transition = False
             self.debugger.arm(None)
         self.faults.clear()
         for task in self._tasks:
@@ -265,6 +271,10 @@ class Simulation:
         self._halts = 0
         self._scheduled = scheduled
         self._apply_inputs()
+        if self._triggers:
+            due = self._schedule.with_triggers(due, lambda task: self._triggers[task.name].get(self._roots))
+        if self._has_inputs:  # (a program without %I addresses pays nothing per scan)
+            self._image.read_inputs()
         plants = [task for task in due if task.plant]
         control = [task for task in due if not task.plant] if plants else due
         self._cross(plants_next=bool(plants))
@@ -289,8 +299,7 @@ class Simulation:
             if not task.stopped:
                 self._watchdog.arm(task.watchdog_s)
                 try:
-                    for name in task.programs:
-                        self.programs[name].execute(now)  # type: ignore[attr-defined]
+                    self._ns[task.function]()
                 except Exception as error:
                     self._fault(task, error, now)
 
@@ -306,8 +315,7 @@ class Simulation:
                 continue
             self._watchdog.arm(task.watchdog_s)
             try:
-                for name in task.programs:
-                    yield from self.programs[name].execute(now)  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
+                yield from self._ns[task.function]()
             except Exception as error:
                 self._fault(task, error, now)
 
@@ -328,12 +336,15 @@ class Simulation:
         point = self.compiled.generated.pauses[pid]
         self.halted = Halt(
             point, self._instance_path(instance) if instance is not None else None, self.debugger.reason(pid)
-        )  # type: ignore[union-attr]  # generated code is untyped
+        )
+        self.debugger.halted_at(pid)  # type: ignore[union-attr]  # the debug variant is in use on this path
         self.debugger.arm(None)  # type: ignore[union-attr]  # the debug variant is in use on this path
         return False
 
     def _finish(self, elapsed_ms: float) -> None:
         self._apply_forces()
+        if self._has_outputs:
+            self._image.publish()
         self.stats.add(elapsed_ms)
         self.scan_count += 1
         if self.on_scan is not None:
@@ -351,6 +362,7 @@ class Simulation:
                 time_ms=now,
                 scan=self.scan_count,
                 instance_path=self._instance_path,
+                places=self.compiled.program.places,
             )
         )
 
@@ -363,14 +375,13 @@ class Simulation:
         ``links`` binds VAR_IN_OUT slots of the instance to program instances of the configuration (slot ->
         program name), so its code reads and writes them (a test's ``Main.Start := TRUE``)."""
         key, pou_key = name.upper(), pou.upper()
-        obj = self._ns[names.pou_class(self._context.pous[pou_key].name)]()  # type: ignore[operator]  # generated POU classes and their namespace are untyped
+        obj = self._ns[names.pou_class(self._context.pous[pou_key].name)]()
         layout = self._context.layouts[pou_key]
         for slot, program in (links or {}).items():
             place = layout.get(slot)
             owner = obj if place.page == 0 else getattr(obj, f"ll_p{place.page}")
-            setattr(owner, place.attr, (self.programs, program.upper()))
-        self.programs[key] = obj
-        self._attached[key] = pou_key
+            setattr(owner, place.attr, self._resolver.resolve(program).reference(self._roots))
+        self._attached[key] = (obj, pou_key)
         self._links[key] = dict(links or {})
         self._resolver.attach(key, pou_key)
         self._paths = None
@@ -394,9 +405,10 @@ class Simulation:
                 self.compiled.filename,
                 self._ns,
                 task="",
-                time_ms=now,  # type: ignore[arg-type]  # generated POU classes and their namespace are untyped
+                time_ms=now,
                 scan=self.scan_count,
                 instance_path=self._instance_path,
+                places=self.compiled.program.places,
             )
         finally:
             self._watchdog.deadline = float("inf")
@@ -407,7 +419,7 @@ class Simulation:
         each task is next due at its first interval after it (ADVANCE_TIME)."""
         if not ms >= 0:
             raise ValueError(f"the clock only moves forward, not by {ms} ms")
-        now = max(self.time_ms, self._ns["ll_now"]) + ms  # type: ignore[type-var, operator]  # generated POU classes and their namespace are untyped
+        now = max(self.time_ms, self._ns["ll_now"]) + ms
         self._schedule.skip_to(now)
         self._ns["ll_now"] = now
 
@@ -438,11 +450,14 @@ class Simulation:
         return self._continue(None)
 
     def step(self, granularity: str = "statement") -> Halt | None:
-        """Run to the next pause point of this granularity: statement (into calls) | over | out | network | cycle.
+        """Run to the next pause point of this granularity: statement (into calls) | over | out | network |
+        transition | cycle.
 
         Halted: continue the current scan (``over`` passes over the calls the halted POU makes,
         ``out`` runs until its caller goes on; a breakpoint on the way halts first). Not halted:
-        start the next scan and stop at its first such point. Returns the new halt (None: the scan ended)."""
+        start the next scan and stop at its first such point. Returns the new halt (None: the scan ended).
+        ``transition`` stays armed in the scans that follow until an SFC transition fires
+        (``debugger.waiting_for_transition``): run scans to get there."""
         debugger = self._debugging()
         debugger.arm(granularity)
         if self.halted is None:
@@ -474,15 +489,28 @@ class Simulation:
         return self.halted
 
     def set_breakpoint(
-        self, pou: str, *, line: int | None = None, network: str | None = None, element: str | None = None
+        self,
+        pou: str,
+        *,
+        line: int | None = None,
+        network: str | None = None,
+        element: str | None = None,
+        body: str | None = None,
     ) -> list[int]:
-        """Halt before an ST statement (line), an LD/FBD network, or at an element; returns the pause point ids."""
-        return self._debugging().add_breakpoint(pou, line=line, network=network, element=element)
+        """Halt before an ST statement (line), an LD/FBD network, or at an element (an SFC step, transition...);
+        ``body`` names the action or named transition of an SFC POU they are in. Returns the pause point ids."""
+        return self._debugging().add_breakpoint(pou, line=line, network=network, element=element, body=body)
 
     def clear_breakpoint(
-        self, pou: str, *, line: int | None = None, network: str | None = None, element: str | None = None
+        self,
+        pou: str,
+        *,
+        line: int | None = None,
+        network: str | None = None,
+        element: str | None = None,
+        body: str | None = None,
     ) -> None:
-        self._debugging().remove_breakpoint(pou, line=line, network=network, element=element)
+        self._debugging().remove_breakpoint(pou, line=line, network=network, element=element, body=body)
 
     def clear_breakpoints(self) -> None:
         self._debugging().clear_breakpoints()
@@ -582,9 +610,9 @@ class Simulation:
         """id(user POU instance) -> path (``MAIN``, ``MAIN.FB1``, ``MAIN.ARR[2]``, ``GFB``), cached until reset."""
         if self._paths is None:
             self._paths, self._instances = {}, {}
-            for key, obj in self.programs.items():
-                self._add_instance(key, obj, self._attached.get(key, key))
-            for place in self._context.globals.places.values():  # type: ignore[union-attr]  # generated POU classes and their namespace are untyped
+            for key, (obj, pou) in self._attached.items():
+                self._add_instance(key, obj, pou)
+            for place in self._context.globals.places.values():
                 value = getattr(self._roots.get(("global", "G" if not place.page else f"G{place.page}")), place.attr)
                 self._add_values(place.slot.name, place.slot.type, value)
         return self._paths
@@ -613,6 +641,34 @@ class Simulation:
 
     def _instance_path(self, obj: object) -> str | None:
         return self._instance_paths().get(id(obj))
+
+    # ------------------------------------------------------------------ the process image
+
+    def published(self, address: str) -> object:
+        """An output address (``%QX3.0``, ``%QW4``) as the last finished scan published it to the world, forces
+        applied; paths read the program's image instead, which a halted scan may have changed since."""
+        location = self.location(address)
+        parsed = parse_address(address)
+        if parsed.area != "Q":
+            raise ValueError(f"{parsed.text} is not an output: only %Q addresses are published")
+        return self._image.view("outputs", view_kind(parsed, runtime_name(location.type)))[key_of(parsed)]
+
+    def io_points(self) -> list[IoPoint]:
+        """Every address the program uses, inputs first (I, Q, M, S, then by byte and bit), with the variables
+        declared at it: globals by name, a program's or FB's by every instance path."""
+        instances = self.instances()
+        points: dict[tuple, IoPoint] = {}
+        owners = [("", self._context.globals)] + [(pou, layout) for pou, layout in self._context.layouts.items()]
+        for pou, layout in owners:
+            for slot in layout.located.values():
+                address = located_address(slot.address)
+                bit = address.bit if address.bit is not None else -1
+                key = (AREA_ORDER.index(address.area), address.offset, bit, address.width, address.text)
+                point = points.setdefault(key, IoPoint(address.area, address.text, runtime_name(slot.type) or ""))
+                if slot.name.upper() != (slot.address or "").upper():  # a declared name
+                    paths = [slot.name] if not pou else [f"{path}.{slot.name}" for path in instances.get(pou, [])]
+                    point.names += paths
+        return [points[key] for key in sorted(points)]
 
     # ------------------------------------------------------------------ variables
 
@@ -764,9 +820,8 @@ class Simulation:
         self._apply_forces()
 
     def _plant_owned(self, location: Location) -> bool:
-        kind, name = location.root
-        pou = self._context.pous.get(name) if kind == "program" else None
-        return pou is not None and pou.plant
+        """Whether the variable lives in a plant's instance (its path starts with the instance's name)."""
+        return location.path.split(".", 1)[0].upper() in self._plant_instances
 
     def _apply_forces(self) -> None:
         for location, value in self._forces.values():
@@ -777,18 +832,19 @@ class Simulation:
     def state(self) -> SimState:
         """The whole state between scans as plain data (not while halted)."""
         self._not_halted()
-        pages = sorted({global_owner(p.page) for p in self._context.globals.places.values()})  # type: ignore[union-attr]  # generated POU classes and their namespace are untyped
+        pages = sorted({global_owner(p.page) for p in self._context.globals.places.values()})
         return SimState(
             self.compiled.declarations,
             self.time_ms,
-            self._ns["ll_now"],  # type: ignore[arg-type]  # generated POU classes and their namespace are untyped
+            self._ns["ll_now"],
             self.scan_count,
             self._stamp,
-            tuple((task.next_due, task.stopped) for task in self._tasks),
-            {name: data_of(obj) for name, obj in self.programs.items()},  # type: ignore[misc]  # generated POU classes and their namespace are untyped
-            {page: data_of(self._ns[page]) for page in pages},  # type: ignore[misc]  # generated POU classes and their namespace are untyped
+            tuple((task.next_due, task.stopped, task.trigger) for task in self._tasks),
+            {name: data_of(obj) for name, (obj, _pou) in self._attached.items()},
+            {page: data_of(self._ns[page]) for page in pages},
+            self._image.state(),
             {path: value for path, (_, value) in self._forces.items()},
-            {name: (pou, dict(self._links.get(name, {}))) for name, pou in self._attached.items()},
+            {name: (pou, dict(self._links.get(name, {}))) for name, (_obj, pou) in self._attached.items()},
             {path: (fault.event.to_json(), fault.state()) for path, (_, fault) in self._injections.items()},
             tuple(event.to_json() for event, _, _ in self._pending),
         )
@@ -801,15 +857,16 @@ class Simulation:
             raise ValueError("that state was captured from another program")
         self._reset(cold=True)
         for name, (pou, links) in state.attached.items():
-            if name not in self.programs:
+            if name not in self._attached:
                 self.attach(name, pou, links)
         for name, data in state.instances.items():
-            restore_into(self.programs[name], data)  # type: ignore[arg-type]  # generated POU classes and their namespace are untyped
+            restore_into(self._attached[name][0], data)  # type: ignore[arg-type]  # captured slot data is a dict
         for page, data in state.globals.items():
-            restore_into(self._ns[page], data)  # type: ignore[arg-type]  # generated POU classes and their namespace are untyped
+            restore_into(self._ns[page], data)  # type: ignore[arg-type]  # captured slot data is a dict
+        self._image.restore(state.image)
         self._schedule.time_ms = state.time_ms
-        for task, (due, stopped) in zip(self._tasks, state.tasks):
-            task.next_due, task.stopped = due, stopped
+        for task, (due, stopped, trigger) in zip(self._tasks, state.tasks):
+            task.next_due, task.stopped, task.trigger = due, stopped, trigger
         self._ns["ll_now"] = state.now
         self.scan_count = state.scan_count
         self._stamp = state.stamp

@@ -2,14 +2,17 @@
 program (another one included: a test's failure opened online, a later scan history).
 
     state = capture(sim)          # every variable of every program instance, global, FB instance (timers,
-    restore(other, state)         # counters, edge memories: all their slots), the probes, the clock, the
-                                  # tasks' next due times and stopped flags, the forces, the attached instances
+    restore(other, state)         # counters, edge memories: all their slots), the probes, the process image,
+                                  # the clock, the tasks' next due times and stopped flags, the forces, the
+                                  # attached instances
 
 The data holds no object of the simulation's generated module: instances are dicts of their slots, arrays
 lists, scalars as stored; VAR_IN_OUT references are left out (a call binds them again; an attached
-instance's links are bound again by ``attach``). So a state pickles, and restoring needs a simulation of
-the same compiled program (same declarations), not the same namespace. Restoring writes values into the
-target's existing objects, so every reference into them stays valid.
+instance's links are bound again by ``attach``), and so are REF_TO / POINTER TO values (restoring starts them as
+declared, NULL or ``REF(x)`` of the target's own ``x``; one set by the body is set again when the body runs).
+So a state pickles, and restoring needs a simulation of the same compiled program (same declarations), not the
+same namespace. Restoring writes values into the target's existing objects, so every reference into them stays
+valid.
 """
 
 from __future__ import annotations
@@ -17,14 +20,14 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
-from .codegen.runtime import UNSET
+from .codegen.runtime import UNSET, Ref
 
 if TYPE_CHECKING:
     from .simulation import Simulation
 
 
 class _Reference:
-    """Stands for a VAR_IN_OUT reference in captured data (not restored)."""
+    """Stands for a VAR_IN_OUT reference or a REF_TO value in captured data (not restored)."""
 
     __slots__ = ()
 
@@ -46,9 +49,10 @@ class SimState:
     now: float
     scan_count: int
     stamp: int  # scans started: the probes' record of what ran in the last scan refers to it
-    tasks: tuple[tuple[float, bool], ...]  # each task's next due time and stopped flag
+    tasks: tuple[tuple[float, bool, bool], ...]  # each task's next due time, stopped flag and SINGLE input seen
     instances: dict[str, object]  # program or attached instance name -> its slots
-    globals: dict[str, object]  # global page -> its slots
+    globals: dict[str, object]  # global page -> its slots (program instances among them)
+    image: dict[str, bytes] = field(default_factory=dict)  # the process image's buffers (ProcessImage.state)
     forces: dict[str, object] = field(default_factory=dict)  # canonical path -> forced value
     attached: dict[str, tuple[str, dict[str, str]]] = field(default_factory=dict)  # name -> (POU, links)
     #: canonical path -> (the fault's event as JSON, what it carries between scans: Injection.state())
@@ -69,8 +73,8 @@ def data_of(value: object) -> object:
     if isinstance(value, _SCALARS) or value is UNSET:
         return value
     if value.__class__ is list:
-        return [data_of(item) for item in value]  # type: ignore[union-attr]  # generated POU classes and their namespace are untyped
-    if value.__class__ is tuple:  # a VAR_IN_OUT reference (container, key)
+        return [data_of(item) for item in value]
+    if value.__class__ is tuple or value.__class__ is Ref:  # a VAR_IN_OUT reference (container, key), a REF_TO
         return REFERENCE
     names = [*_slot_names(type(value)), *getattr(value, "__dict__", ())]
     return {name: data_of(getattr(value, name)) for name in names if hasattr(value, name)}

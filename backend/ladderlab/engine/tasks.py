@@ -3,8 +3,13 @@
 Virtual clock (issue 4): time starts at 0 ms; a cyclic task of interval I is
 due at I, 2I, 3I...; one scan advances the clock to the earliest due time and
 runs every task due then, in priority order (lower number first, CFG-05; equal
-priorities in declaration order), each task's programs in the order listed
-(CFG-06). With no task configured every PROGRAM runs in one 10 ms task.
+priorities in declaration order), each task's program instances in the order
+listed (CFG-06). A SINGLE task runs once on each rising edge of its BOOL
+variable, read at the start of every scan; a task with both INTERVAL and SINGLE
+is cyclic while the variable is FALSE (CFG-05). When a task has a SINGLE or no
+task is cyclic, the resource also scans every ``IDLE_MS`` (so a configuration
+without tasks advances time and runs nothing). With no task configured every
+PROGRAM runs in one 10 ms task.
 
 The plant task (``Task.plant``: the project's plants, the models of the process) is due in
 every scan and runs before the control tasks of that scan, on the same clock; scans come when
@@ -25,11 +30,13 @@ from typing import Protocol
 
 from ..ir import nodes as ir
 from ..model.diagnostics import Diagnostic
-from ..model.validate import PLANT_TASK
+from .codegen.tasks import task_function
 
 TASK_ERROR = "ENGINE-TASKS"
 _EPSILON_MS = 1e-6
 DEFAULT_INTERVAL_MS = 10
+#: How often a resource with SINGLE tasks (or no cyclic one) scans when no cyclic task is due.
+IDLE_MS = 10
 #: A task's time budget per scan unless configured (CODESYS's default watchdog time).
 DEFAULT_WATCHDOG_S = 0.1
 
@@ -37,13 +44,16 @@ DEFAULT_WATCHDOG_S = 0.1
 @dataclass
 class Task:
     name: str
-    interval_ms: float
+    interval_ms: float | None  # None: runs only on the rising edges of ``single``
     priority: int
     programs: list[str]
     order: int
     watchdog_s: float = DEFAULT_WATCHDOG_S
     next_due: float = 0.0
     stopped: bool = False  # after a fault, until reset
+    single: str | None = None  # the path of the BOOL variable whose rising edges run the task once
+    function: str = ""  # the generated function that runs the task (codegen/tasks.py)
+    trigger: bool = False  # the SINGLE variable's value at the previous scan
     plant: bool = False  # the plant task: runs first in every scan
 
     def sort_key(self) -> tuple[int, int]:
@@ -55,33 +65,41 @@ def _error(message: str, pou: str | None = None) -> Diagnostic:
 
 
 def validate_tasks(program: ir.Program) -> list[Diagnostic]:
-    """Task configuration errors: bad interval, unknown program, a program instance in two tasks."""
+    """Task configuration errors: bad interval, unknown program instance, an instance in two tasks, a plant
+    outside the plant task or a program in it."""
     diagnostics: list[Diagnostic] = []
-    programs = {name.upper(): pou for name, pou in program.pous.items() if pou.kind == "program"}
+    instances = {i.name.upper(): i for i in program.program_instances()}
+    plants: set[str] = set()  # the instances of plants: the plant task's, and no other task's
+    for instance in instances.values():
+        pou = program.pous.get(instance.pou) or next(
+            (p for n, p in program.pous.items() if n.upper() == instance.pou.upper()), None
+        )
+        if pou is not None and pou.plant:
+            plants.add(instance.name.upper())
+        if pou is None or pou.kind != "program":
+            what = f"{instance.pou} is a {pou.kind.replace('_', ' ')}, not a program" if pou else "unknown program"
+            diagnostics.append(_error(f"program instance {instance.name}: {what}", instance.pou))
     owner: dict[str, str] = {}
     names: set[str] = set()
-    for task in program.tasks:
+    for task in program.task_specs():
         if task.name.upper() in names:
             diagnostics.append(_error(f"task {task.name} is declared twice"))
         names.add(task.name.upper())
-        if not (
-            isinstance(task.interval_ms, (int, float)) and task.interval_ms > 0 and math.isfinite(task.interval_ms)
-        ):
-            diagnostics.append(
-                _error(f"task {task.name}: the interval must be a positive time, not {task.interval_ms!r} ms")
-            )
+        interval = task.interval_ms
+        if interval is None and task.single is None:
+            diagnostics.append(_error(f"task {task.name} needs an interval or a SINGLE variable"))
+        elif interval is not None and not (isinstance(interval, (int, float)) and 0 < interval < math.inf):
+            diagnostics.append(_error(f"task {task.name}: the interval must be a positive time, not {interval!r} ms"))
         for name in task.programs:
             key = name.upper()
-            if key not in programs:
-                kind = program.pous.get(name) or next((p for n, p in program.pous.items() if n.upper() == key), None)
-                what = (
-                    f"{name} is a {kind.kind.replace('_', ' ')}, not a program" if kind else f"unknown program {name}"
-                )
+            if key not in instances:
+                kind = next((p.kind for n, p in program.pous.items() if n.upper() == key), None)
+                what = f"{name} is a {kind.replace('_', ' ')}, not a program" if kind else f"unknown program {name}"
                 diagnostics.append(_error(f"task {task.name}: {what}", name))
-            elif programs[key].plant != task.plant:
+            elif (key in plants) != task.plant:
                 what = (
                     f"{name} is a plant: plants run in the plant task, before the control tasks of every scan"
-                    if programs[key].plant
+                    if key in plants
                     else f"the plant task runs plants only; {name} is a program"
                 )
                 diagnostics.append(_error(f"task {task.name}: {what}", name))
@@ -93,23 +111,12 @@ def validate_tasks(program: ir.Program) -> list[Diagnostic]:
     return diagnostics
 
 
-def default_tasks(pous: dict[str, ir.Pou]) -> list[ir.TaskSpec]:
-    """Without a task configuration: every program in one 10 ms task, and the plants in the plant task."""
-    programs = [name for name, pou in pous.items() if pou.kind == "program" and not pou.plant]
-    plants = [name for name, pou in pous.items() if pou.kind == "program" and pou.plant]
-    specs = [ir.TaskSpec("DEFAULT", DEFAULT_INTERVAL_MS, 0, programs)] if programs or not plants else []
-    if plants:
-        specs.append(ir.TaskSpec(PLANT_TASK, DEFAULT_INTERVAL_MS, 0, plants, plant=True))
-    return specs
-
-
 def task_table(program: ir.Program, watchdog_s: float | dict[str, float] = DEFAULT_WATCHDOG_S) -> list[Task]:
     """The tasks to schedule (validated program): the configured ones, else one 10 ms task with every PROGRAM."""
-    specs = program.tasks or default_tasks(program.pous)
     limits = {k.upper(): v for k, v in watchdog_s.items()} if isinstance(watchdog_s, dict) else {}
     default = DEFAULT_WATCHDOG_S if isinstance(watchdog_s, dict) else watchdog_s
     tasks = []
-    for order, spec in enumerate(specs):
+    for order, spec in enumerate(program.task_specs()):
         limit = limits.get(spec.name.upper(), default)
         if not limit > 0:
             raise ValueError(f"watchdog of task {spec.name} must be positive, not {limit!r}")
@@ -121,7 +128,9 @@ def task_table(program: ir.Program, watchdog_s: float | dict[str, float] = DEFAU
                 [p.upper() for p in spec.programs],
                 order,
                 limit,
-                next_due=spec.interval_ms,
+                next_due=spec.interval_ms if spec.interval_ms is not None else math.inf,
+                single=spec.single,
+                function=task_function(order),
                 plant=spec.plant,
             )
         )
@@ -135,38 +144,74 @@ class Schedule:
     tasks: list[Task]
     time_ms: float = 0.0
     _ordered: list[Task] = field(default_factory=list)
+    _cyclic: list[Task] = field(default_factory=list)
+    _idle: bool = False  # scans also every IDLE_MS (a SINGLE task, or no cyclic one)
+    _idle_due: float = IDLE_MS
 
     def __post_init__(self) -> None:
         self._ordered = sorted(self.tasks, key=lambda task: (not task.plant, *task.sort_key()))
+        self._cyclic = [task for task in self._ordered if task.interval_ms is not None]
         control = [task for task in self.tasks if not task.plant]
-        self._clocks = control or self.tasks  # the tasks whose due times make the scans
-        self._plants_every_scan = bool(control)
+        # the plants run in every scan; the control tasks' due times make the scans (with none, the plants')
+        self._plants = [task for task in self._ordered if task.plant] if control else []
+        clocks = [task for task in self._cyclic if not task.plant] if control else self._cyclic
+        # (task, interval) of the cyclic tasks, in priority order: every scan walks it, so no lookups there
+        self._periods = [(task, task.interval_ms) for task in clocks if task.interval_ms is not None]
+        self._idle = not clocks or any(task.single for task in self.tasks)
 
     def next_time(self) -> float:
-        return min(task.next_due for task in self._clocks)
+        due = min([task.next_due for task, _ in self._periods]) if self._periods else math.inf
+        return self._idle_due if self._idle and self._idle_due < due else due
 
     def advance(self) -> tuple[float, list[Task]]:
-        """Move the clock to the next due time; the tasks due then, plants first, then in priority order."""
+        """Move the clock to the next due time; the tasks due then: the plants (every scan) first, then the
+        cyclic tasks due, in priority order."""
         now = self.next_time()
-        every = self._plants_every_scan
-        due = [task for task in self._ordered if task.next_due == now or (task.plant and every)]
-        for task in due:
-            task.next_due = now + task.interval_ms if task.plant else task.next_due + task.interval_ms
+        due = []
+        for task in self._plants:
+            task.next_due = now + task.interval_ms  # type: ignore[operator]  # the plant task is cyclic
+            due.append(task)
+        for task, period in self._periods:
+            if task.next_due == now:
+                task.next_due += period
+                due.append(task)
+        if self._idle and self._idle_due == now:
+            self._idle_due += IDLE_MS
         self.time_ms = now
         return now, due
 
     def at(self, time_ms: float) -> list[Task]:
-        """Move the clock to ``time_ms`` (not backwards) for a scan of every task; each task is next due after it."""
+        """Move the clock to ``time_ms`` (not backwards) for a scan of every cyclic task; each is next due after it."""
         self.skip_to(time_ms)
-        return list(self._ordered)
+        return list(self._cyclic)
 
     def skip_to(self, time_ms: float) -> None:
         """Move the clock to ``time_ms`` (not backwards) without a scan; each task is next due after it."""
         if not time_ms >= self.time_ms:
             raise ValueError(f"time {time_ms} ms is before the current time {self.time_ms} ms")
-        for task in self.tasks:
-            task.next_due = (math.floor(time_ms / task.interval_ms) + 1) * task.interval_ms
+        for task, period in self._periods:
+            task.next_due = (math.floor(time_ms / period) + 1) * period
+        self._idle_due = (math.floor(time_ms / IDLE_MS) + 1) * IDLE_MS
         self.time_ms = time_ms
+
+    def with_triggers(self, due: list[Task], read: Callable[[Task], object]) -> list[Task]:
+        """The tasks of this scan: the cyclic ones due, but a task whose SINGLE variable is TRUE (CFG-05), and
+        every SINGLE task whose variable rose since the previous scan (``read`` gives its value now)."""
+        running = set(map(id, due))
+        for task in self.tasks:
+            if task.single is None:
+                continue
+            value = bool(read(task))
+            rising, task.trigger = value and not task.trigger, value
+            if rising:
+                running.add(id(task))
+            elif value:
+                running.discard(id(task))
+        return [task for task in self._ordered if id(task) in running]
+
+    def reset_triggers(self) -> None:
+        for task in self.tasks:
+            task.trigger = False
 
 
 class Scanner(Protocol):

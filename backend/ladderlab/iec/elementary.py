@@ -69,6 +69,9 @@ ELEMENTARY: dict[str, ElementaryType] = {
 #: Short spellings accepted wherever a type name is (TOD, DT) - spec TYP-01.
 ALIASES: dict[str, str] = {"TOD": "TIME_OF_DAY", "DT": "DATE_AND_TIME"}
 
+#: The character string types: STRING (one byte a character) and WSTRING (two); both take a length, ``[n]``.
+STRING_TYPES: tuple[str, ...] = ("STRING", "WSTRING")
+
 #: Default length of STRING when declared without [n] (IEC default; spec TYP-04 allows up to 255, the
 #: default of ``limits.STRING_LENGTH``).
 DEFAULT_STRING_LENGTH = 80

@@ -8,12 +8,63 @@ from __future__ import annotations
 
 import datetime as _dt
 import re
+from dataclasses import dataclass
 
 _EPOCH = _dt.datetime(1970, 1, 1)
 _MS_PER_UNIT = {"d": 86_400_000, "h": 3_600_000, "m": 60_000, "s": 1000, "ms": 1, "us": 0.001, "ns": 0.000001}
 _UNIT_RE = re.compile(r"(\d[\d_]*(?:\.\d+)?)(ms|us|ns|d|h|m|s)_?", re.IGNORECASE)
 _ESCAPES = {"$": "$", "'": "'", '"': '"', "L": "\n", "N": "\n", "P": "\f", "R": "\r", "T": "\t"}
 _ESCAPE_RE = {False: re.compile(r"\$([0-9A-Fa-f]{2}|.)"), True: re.compile(r"\$([0-9A-Fa-f]{4}|.)")}
+
+
+@dataclass(frozen=True)
+class LiteralForm:
+    """One kind of prefixed literal as a user writes it: the prefixes that introduce it, what follows them, and
+    examples (messages quote them when a literal is malformed; the browser shows them as hints)."""
+
+    name: str
+    prefixes: tuple[str, ...]
+    rule: str
+    examples: tuple[str, ...]
+
+    def hint(self) -> str:
+        """``a TIME literal is T# then ...: T#2s, TIME#1h30m``"""
+        return f"{self.rule}, e.g. {', '.join(self.examples)}"
+
+
+#: The prefixed literal forms (LEX-21, LEX-40..52), most common first.
+LITERAL_FORMS = (
+    LiteralForm(
+        "TIME",
+        ("T", "TIME", "LT", "LTIME"),
+        "a duration is T# then numbers with the units d, h, m, s, ms (largest first, no spaces)",
+        ("T#2s", "T#500ms", "TIME#1h30m", "T#-1.5s"),
+    ),
+    LiteralForm(
+        "TIME_OF_DAY",
+        ("TOD", "TIME_OF_DAY", "LTOD", "LTIME_OF_DAY"),
+        "a time of day is TOD# then hours:minutes:seconds",
+        ("TOD#08:30:00", "TOD#23:59:59.5"),
+    ),
+    LiteralForm("DATE", ("D", "DATE", "LDATE"), "a date is D# then year-month-day", ("D#2024-05-01",)),
+    LiteralForm(
+        "DATE_AND_TIME",
+        ("DT", "DATE_AND_TIME", "LDT", "LDATE_AND_TIME"),
+        "a date and time is DT# then year-month-day-hours:minutes:seconds",
+        ("DT#2024-05-01-08:30:00",),
+    ),
+    LiteralForm("binary", ("2",), "a binary number is 2# then the digits 0 and 1", ("2#1010", "2#1111_0000")),
+    LiteralForm("octal", ("8",), "an octal number is 8# then the digits 0 to 7", ("8#17",)),
+    LiteralForm(
+        "hexadecimal", ("16",), "a hexadecimal number is 16# then the digits 0-9 and A-F", ("16#FF", "16#1A2B")
+    ),
+)
+_FORMS = {prefix: form for form in LITERAL_FORMS for prefix in form.prefixes}
+
+
+def literal_form(prefix: str) -> LiteralForm | None:
+    """The form a literal prefix (``T``, ``TOD``, ``16``; any case) introduces, or None."""
+    return _FORMS.get(prefix.upper())
 
 
 def decode_integer(text: str) -> tuple[int, int]:

@@ -124,6 +124,11 @@ _MATH = {
 def _numeric() -> list[StdFunction]:
     rows = [_fn("ABS", [_g("IN", "ANY_NUM")], T, "numeric", "absolute value", "FUN-20")]
     rows += [_fn(name, [_g("IN", "ANY_REAL")], T, "numeric", text, "FUN-20") for name, text in _MATH.items()]
+    rows.append(  # IEC 61131-3 ed. 3 Table 23
+        _fn(
+            "ATAN2", [_g("Y", "ANY_REAL"), _g("X", "ANY_REAL")], T, "numeric", "arc tangent of Y/X in -pi..pi", "FUN-20"
+        )
+    )
     two = [_g("IN1", "ANY_NUM"), _g("IN2", "ANY_NUM")]
     rows += [
         _fn("ADD", two, T, "arithmetic", "sum IN1 + IN2 + ... (operator +)", "FUN-30", extensible=True),
@@ -201,23 +206,29 @@ def _selection_and_comparison() -> list[StdFunction]:
 
 
 def _strings() -> list[StdFunction]:
-    s, n = "STRING", "ANY_INT"
+    """The string functions take STRING or WSTRING (ANY_STRING, IEC 61131-3 ed. 3 Table 29): the string inputs
+    of one call share the type, a string result is that type at its default length."""
+    n, s = "ANY_INT", T
+
+    def g(name: str) -> Pin:
+        return _g(name, "ANY_STRING")
+
     return [
-        _fn("LEN", [Pin("IN", s)], "INT", "string", "length of IN", "FUN-80"),
-        _fn("LEFT", [Pin("IN", s), Pin("L", n)], s, "string", "the leftmost L characters of IN", "FUN-81"),
-        _fn("RIGHT", [Pin("IN", s), Pin("L", n)], s, "string", "the rightmost L characters of IN", "FUN-81"),
+        _fn("LEN", [g("IN")], "INT", "string", "length of IN", "FUN-80"),
+        _fn("LEFT", [g("IN"), Pin("L", n)], s, "string", "the leftmost L characters of IN", "FUN-81"),
+        _fn("RIGHT", [g("IN"), Pin("L", n)], s, "string", "the rightmost L characters of IN", "FUN-81"),
         _fn(
             "MID",
-            [Pin("IN", s), Pin("L", n), Pin("P", n)],
+            [g("IN"), Pin("L", n), Pin("P", n)],
             s,
             "string",
             "L characters of IN from position P (1-based)",
             "FUN-81",
         ),
-        _fn("CONCAT", [Pin("IN1", s), Pin("IN2", s)], s, "string", "IN1, IN2, ... joined", "FUN-80", extensible=True),
+        _fn("CONCAT", [g("IN1"), g("IN2")], s, "string", "IN1, IN2, ... joined", "FUN-80", extensible=True),
         _fn(
             "INSERT",
-            [Pin("IN1", s), Pin("IN2", s), Pin("P", n)],
+            [g("IN1"), g("IN2"), Pin("P", n)],
             s,
             "string",
             "IN2 inserted into IN1 after position P",
@@ -225,7 +236,7 @@ def _strings() -> list[StdFunction]:
         ),
         _fn(
             "DELETE",
-            [Pin("IN", s), Pin("L", n), Pin("P", n)],
+            [g("IN"), Pin("L", n), Pin("P", n)],
             s,
             "string",
             "IN without the L characters from position P",
@@ -233,7 +244,7 @@ def _strings() -> list[StdFunction]:
         ),
         _fn(
             "REPLACE",
-            [Pin("IN1", s), Pin("IN2", s), Pin("L", n), Pin("P", n)],
+            [g("IN1"), g("IN2"), Pin("L", n), Pin("P", n)],
             s,
             "string",
             "IN1 with L characters from position P replaced by IN2",
@@ -241,7 +252,7 @@ def _strings() -> list[StdFunction]:
         ),
         _fn(
             "FIND",
-            [Pin("IN1", s), Pin("IN2", s)],
+            [g("IN1"), g("IN2")],
             "INT",
             "string",
             "position of IN2 in IN1 (1-based, 0 if absent)",
@@ -338,6 +349,34 @@ def _function_blocks() -> list[StdFunctionBlock]:
         timer("TP", "pulse timer: Q TRUE for PT after a rising edge of IN"),
         timer("TON", "on-delay timer: Q TRUE once IN has been TRUE for PT"),
         timer("TOF", "off-delay timer: Q stays TRUE for PT after IN falls"),
+        *_sfc_blocks(),
+    ]
+
+
+#: The inputs of ACTION_CONTROL, one per action qualifier (IEC 61131-3 ed. 2, figure 15: S0 is S), in its order.
+ACTION_CONTROL_QUALIFIERS = ("N", "R", "S0", "L", "D", "P", "P1", "P0", "SD", "DS", "SL")
+
+
+def _sfc_blocks() -> list[StdFunctionBlock]:
+    """The blocks an SFC is lowered to (docs/sfc.md): IEC's action control, and the step's flag and time."""
+    b = "BOOL"
+    return [
+        StdFunctionBlock(
+            "ACTION_CONTROL",
+            (*(Pin(q, b) for q in ACTION_CONTROL_QUALIFIERS), Pin("T", "TIME")),
+            (Pin("Q", b), Pin("A", b)),
+            "SFC action control: Q the action flag, A runs the action (Q and the final run)",
+            "SFC-05",
+            group="SFC",
+        ),
+        StdFunctionBlock(
+            "SFC_STEP",
+            (Pin("X", b),),
+            (Pin("T", "TIME"),),
+            "SFC step: X active, T the time since its first active scan",
+            "SFC-06",
+            group="SFC",
+        ),
     ]
 
 

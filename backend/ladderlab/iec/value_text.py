@@ -15,7 +15,7 @@ import math
 import re
 
 from .elementary import ALIASES
-from .literals import decode_date, decode_duration, decode_integer, decode_tod, encode_duration
+from .literals import decode_date, decode_duration, decode_integer, decode_tod, encode_duration, literal_form
 from .values import MS_PER_DAY, f32, resolve
 
 _EPOCH = _dt.date(1970, 1, 1).toordinal()
@@ -45,7 +45,8 @@ def parse(text: str, type_name: str) -> object:
     if result is None:
         from .values import article
 
-        raise ValueError(f"{text!r} is not {article(ref.name)}")
+        form = literal_form(ref.name) if ref.category in _PREFIXES else None
+        raise ValueError(f"{text!r} is not {article(ref.name)}" + (f" ({form.hint()})" if form else ""))
     return result
 
 

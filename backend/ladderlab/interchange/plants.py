@@ -10,7 +10,7 @@ of every scan).
 from __future__ import annotations
 
 from ..iec.literals import decode_duration
-from ..model import Project, Task
+from ..model import Project, Resource, Task
 from ..model.validate import PLANT_TASK
 
 #: The interval of the default task (ir/lower_project.py: DEFAULT_TASK runs every PROGRAM every 10 ms).
@@ -25,14 +25,27 @@ def for_export(project: Project, with_plants: bool = False) -> Project:
         return project.model_copy(update={"panels": []})
     if not with_plants:
         return project.model_copy(update={"pous": [p for p in project.pous if p.kind != "plant"], "panels": []})
+    pous = [p.model_copy(update={"kind": "program"}) if p.kind == "plant" else p for p in project.pous]
+    names = [p.name for p in plants]
+    config = project.configuration
+    if config is not None:  # the plant task goes into the first resource, beside the configuration's tasks
+        resources = list(config.resources) or [Resource()]
+        first = resources[0]
+        resources[0] = first.model_copy(update={"tasks": [_plant_task(config.tasks(), names), *first.tasks]})
+        configuration = config.model_copy(update={"resources": resources})
+        return project.model_copy(update={"pous": pous, "configuration": configuration, "panels": []})
     control = [p.name for p in project.pous if p.kind == "program"]
     tasks = list(project.tasks) or (
         [Task(name=_DEFAULT_TASK, interval=_DEFAULT_INTERVAL, priority=0, programs=control)] if control else []
     )
-    interval = min((task.interval for task in tasks), key=_milliseconds, default=_DEFAULT_INTERVAL)
-    plant_task = Task(name=PLANT_TASK, interval=interval, priority=0, programs=[p.name for p in plants])
-    pous = [p.model_copy(update={"kind": "program"}) if p.kind == "plant" else p for p in project.pous]
-    return project.model_copy(update={"pous": pous, "tasks": [plant_task, *tasks], "panels": []})
+    return project.model_copy(update={"pous": pous, "tasks": [_plant_task(tasks, names), *tasks], "panels": []})
+
+
+def _plant_task(tasks: list[Task], plants: list[str]) -> Task:
+    """The plants' task: priority 0 at the shortest cyclic interval of the control tasks (10 ms without one)."""
+    cyclic = [task.interval for task in tasks if task.interval is not None]
+    interval = min(cyclic, key=_milliseconds, default=_DEFAULT_INTERVAL)
+    return Task(name=PLANT_TASK, interval=interval, priority=0, programs=plants)
 
 
 def _milliseconds(interval: str) -> float:

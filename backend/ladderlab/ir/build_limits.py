@@ -9,7 +9,8 @@ from __future__ import annotations
 
 from .. import limits
 from ..model.diagnostics import Diagnostic
-from ..model.project import Project
+from ..model.project import Pou, Project
+from ..model.sfc import SfcBody
 from .nodes import Program, Slot
 from .types import Array, FbInstance, IrType, Struct
 
@@ -17,10 +18,7 @@ from .types import Array, FbInstance, IrType, Struct
 def source_too_large(project: Project) -> Diagnostic | None:
     """The refusal of a project whose ST text (types, globals, declarations, ST bodies) exceeds the limit."""
     # stripped: a POU read from a .st file keeps its lines by leading blank lines, which cost nothing to parse
-    sizes = {
-        pou.name: len(pou.declarations.strip()) + (len(pou.body.strip()) if pou.language == "st" else 0)
-        for pou in project.pous
-    }
+    sizes = {pou.name: len(pou.declarations.strip()) + _body_text(pou) for pou in project.pous}
     total = sum(sizes.values()) + len(project.types.strip()) + len(project.globals.strip())
     if total <= limits.SOURCE_BYTES.value:
         return None
@@ -33,15 +31,26 @@ def source_too_large(project: Project) -> Diagnostic | None:
     )
 
 
+def _body_text(pou: Pou) -> int:
+    """The ST characters of a POU's body: its text, or an SFC POU's ST actions and named transitions."""
+    if isinstance(pou.body, str):
+        return len(pou.body.strip())
+    if isinstance(pou.body, SfcBody):
+        parts = (*pou.body.actions, *pou.body.transitions)
+        return sum(len(part.body.strip()) for part in parts if isinstance(part.body, str))
+    return 0
+
+
 def data_too_large(program: Program) -> Diagnostic | None:
     """The refusal of a program whose globals and program instances hold more values than the limit."""
     counter = _Counter(program)
     parts = [("global", slot.name, counter.slot(slot)) for slot in program.globals]
-    parts += [
-        (pou.name, slot.name, counter.slot(slot))
-        for pou in program.pous.values()
-        if pou.kind == "program"
-        for slot in pou.slots
+    pous = {name.upper(): pou for name, pou in program.pous.items()}
+    parts += [  # each program instance holds its own values (two instances of one PROGRAM: twice)
+        (pous[instance.pou.upper()].name, slot.name, counter.slot(slot))
+        for instance in program.program_instances()
+        if instance.pou.upper() in pous
+        for slot in pous[instance.pou.upper()].slots
     ]
     total = sum(count for _, _, count in parts)
     if total <= limits.DATA_ELEMENTS.value:

@@ -10,12 +10,13 @@ from __future__ import annotations
 from typing import Any
 
 from ..model.diagnostics import Diagnostic
+from ..model.places import Places
 from ..st import ast
 from ..st import types as t
 from ..st.body import BodyChecker
 from ..st.rules import assignable_or_report
 from ..st.symbols import CheckResult, PouInfo, Symbol
-from .lower_types import LoweringError, TypeLowering, ir_default, unnamed_address
+from .lower_types import LoweringError, TypeLowering, ir_default
 from .nodes import Origin, Slot, Stmt, Var, VarClass
 from .types import IrType
 
@@ -37,11 +38,19 @@ class PouContext:
     project lowering builds the ``ir.Pou`` from them afterwards.
     """
 
-    def __init__(self, checked: CheckResult, info: PouInfo | None, diagnostics: list[Diagnostic] | None = None):
+    def __init__(
+        self,
+        checked: CheckResult,
+        info: PouInfo | None,
+        diagnostics: list[Diagnostic] | None = None,
+        image: dict[str, Slot] | None = None,
+    ):
         self.checked = checked
+        self.image: dict[str, Slot] = image if image is not None else {}  # addresses used without a declaration
         self.info = info
         self.name = info.name.upper() if info is not None else ""
         self.diagnostics: list[Diagnostic] = diagnostics if diagnostics is not None else []
+        self.places: Places | None = None  # an LD/FBD body's names for networks and elements (set by its lowering)
         self.types = TypeLowering(checked, info)
         self.slots: list[Slot] = []
         self.edges: dict[str, Var] = {}  # R_EDGE/F_EDGE input name -> hidden slot holding the detected edge
@@ -60,6 +69,9 @@ class PouContext:
         self.lifts: list[Stmt] | None = None
         self.reads = 0
         self.calls = 0
+        # The text being lowered when it is not the POU's body: an SFC POU's chart or one of its actions or named
+        # transitions (``<POU>/chart``, ``<POU>/actions/<name>``): where diagnostics without a file of their own go.
+        self.default_file: str | None = None
         # A front end's own statements, lowered before the ST ones (test files' verbs: ir/lower_tests.py)
         self.extra_statements: dict[type, Any] = {}
 
@@ -84,6 +96,8 @@ class PouContext:
         A diagnostic already in the list is not added again (a bad TYPE initial value
         is met wherever the type is used).
         """
+        if file is None:
+            file = self.default_file
         diagnostic = Diagnostic(
             severity=severity,
             code=code,
@@ -92,6 +106,7 @@ class PouContext:
             network=network,
             element=element,
             pin=pin,
+            place=self.places.where(network, element, pin) if network is not None and self.places is not None else None,
             pou=self.info.name if self.info is not None and file != "types" else None,
             line=line,
             column=column,
@@ -121,7 +136,7 @@ class PouContext:
         """Report at an ST AST node's span (``file`` defaults to this POU's body text)."""
         span = getattr(node, "span", None) or ast.NO_SPAN
         if file is None and self.info is not None:
-            file = f"{self.info.name}/body"
+            file = self.default_file or f"{self.info.name}/body"
         self.report(
             code,
             message,
@@ -164,8 +179,9 @@ class PouContext:
         return self._errors_found
 
     def checker_error_in(self, span: ast.Span) -> bool:
-        """Did the checker report an error on the lines of ``span`` in this POU's ST body?"""
-        file = f"{self.info.name}/body" if self.info is not None else None
+        """Did the checker report an error on the lines of ``span`` in this POU's ST body (or the SFC action being
+        lowered)?"""
+        file = (self.default_file or f"{self.info.name}/body") if self.info is not None else None
         return any(
             d.severity == "error" and d.file == file and d.line is not None and span.line <= d.line <= span.end_line
             for d in self.checked.diagnostics
@@ -240,9 +256,9 @@ class PouContext:
         return var
 
     def _var_for(self, symbol: Symbol) -> Var:
-        if symbol.address is not None and symbol.name == symbol.address:
-            raise unnamed_address(symbol.address)
         upper = symbol.name.upper()
+        if symbol.var_class == "VAR_EXTERNAL" and symbol.address and upper not in self.checked.globals:
+            return self.direct(symbol.address, self.types.type_of(symbol.type, symbol.type_spec))  # AT %X0.0
         if symbol.pou is None or symbol.var_class == "VAR_EXTERNAL":
             target = self.checked.globals.get(upper, symbol)
             return Var("global", upper, self.types.type_of(target.type, target.type_spec))
@@ -250,8 +266,17 @@ class PouContext:
             return self.edges[upper]
         return Var("local", upper, self.types.type_of(symbol.type, symbol.type_spec))
 
+    def direct(self, address: str, type: IrType) -> Var:
+        """An address used without a declaration (``q := %IX0.1``): a located global of its default type, one per
+        address text, shared by every POU of the project (``image``)."""
+        canonical = address.upper()
+        slot = self.image.get(canonical)
+        if slot is None:
+            slot = self.image[canonical] = Slot(canonical, "VAR_GLOBAL", type, None, address=canonical)
+        return Var("global", canonical, slot.type)
+
     def result_var(self) -> Var:
         """The result slot of the FUNCTION being lowered (assigning the function's name)."""
         if self.info is None or self.info.return_type is None:
             raise LoweringError(None)
-        return Var("local", self.name, self.types.type_of(self.info.return_type))
+        return Var("local", self.name, self.types.type_of(self.info.return_type, self.info.return_spec))

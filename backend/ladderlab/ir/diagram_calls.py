@@ -217,38 +217,55 @@ def check_call(
     at: At,
     en: PinValue | None = None,
     eno: Var | None = None,
+    context: t.Type | None = None,
 ) -> CheckedCall | None:
     """The box as a checked ST call (None when reported). ``inputs``/``outputs`` map upper-case pin names
-    to what feeds them / the variable they write (FB outputs). The first box of a shape that checks without
-    a word also gives that shape its template (diagram_shapes); later boxes of the shape use it."""
-    shape = ops.shapes.shape(callee.name, instance, inputs, outputs, en, eno)
+    to what feeds them / the variable they write (FB outputs); ``context`` is the type of the variable a
+    function's result is written to, which its literals and generic type adapt to as in ``y := F(...)``
+    (st/context_typing.py). The first box of a shape that checks without a word also gives that shape its
+    template (diagram_shapes); later boxes of the shape use it."""
+    shape = ops.shapes.shape(callee.name, instance, inputs, outputs, en, eno, context)
     if shape is not None:
         template = ops.shapes.templates.get(shape.key)
         if template is not None:
             return CheckedCall(template.ty, template.fb, None, template, shape.leaves)
     before = len(ops.ctx.diagnostics)
     target = ops.parse(instance, at, "the instance") if instance is not None else ast.Name(callee.name)
-    node = _check(ops, callee, target, inputs, outputs, at, en, eno)
+    node = _check(ops, callee, target, inputs, outputs, at, en, eno, context)
     if node is None:
         return None
     if shape is not None and shape.key not in ops.shapes.templates and len(ops.ctx.diagnostics) == before:
-        _learn(ops, callee, shape, inputs, at, en)
+        _learn(ops, callee, shape, inputs, at, en, context)
     return CheckedCall(node.ty, _fb(callee, node), node)
 
 
 def _fb(callee: Callee, node: ast.Call) -> t.FbType | None:
-    return node.callee.ty if callee.is_fb else None  # type: ignore[return-value]
+    return node.callee.ty if callee.is_fb else None
 
 
 def _learn(
-    ops: Operands, callee: Callee, shape: Shape, inputs: dict[str, PinValue], at: At, en: PinValue | None
+    ops: Operands,
+    callee: Callee,
+    shape: Shape,
+    inputs: dict[str, PinValue],
+    at: At,
+    en: PinValue | None,
+    context: t.Type | None,
 ) -> None:
     """Check and lower the shape's call with placeholders; it becomes the template unless anything was reported."""
     holders = ops.shapes.placeholders(shape, inputs, en)
     template = None
     with ops.muted() as reported:
         node = _check(
-            ops, callee, holders.instance or ast.Name(callee.name), holders.inputs, {}, at, holders.en, holders.eno
+            ops,
+            callee,
+            holders.instance or ast.Name(callee.name),
+            holders.inputs,
+            {},
+            at,
+            holders.en,
+            holders.eno,
+            context,
         )
         statements = _lower(ops, callee, node, holders.result, at, Origin(ops.ctx.name)) if node else None
         if statements is not None and Template.covers(statements):
@@ -265,8 +282,52 @@ def _check(
     at: At,
     en: PinValue | None,
     eno: Var | None,
+    context: t.Type | None = None,
 ) -> ast.Call | None:
     """Check the box as the ST call of ``target`` (the instance or the function's name; None: reported)."""
+    node = call_ast(ops, callee, target, inputs, outputs, at, en, eno)
+    if node is None:
+        return None
+    before = len(ops.ctx.diagnostics)
+    pins = node.args[:-1] if eno is not None else node.args  # the pins diagnostics are located on (not ENO)
+    checker = ops.checker(at, {arg.name: arg for arg in pins if arg.name is not None})
+    if callee.is_fb:
+        checker.call(node, statement=True)
+    else:
+        checker.expr(node, context)  # types the call node (its result type, adapted to where it goes)
+    if ops.errors_since(before) or node.ty is t.ERROR:
+        return None
+    return node
+
+
+def type_call(
+    ops: Operands,
+    callee: Callee,
+    instance: str | None,
+    inputs: dict[str, PinValue],
+    at: At,
+    en: PinValue | None,
+    context: t.Type | None,
+) -> None:
+    """Type the box's call as ST types it, reporting nothing: the calls nested in ``inputs`` (``call_ast``: the
+    blocks chained into it) get the types their place in it gives them (st/context_typing.py)."""
+    with ops.muted():
+        target = ops.parse(instance, at, "the instance") if instance is not None else ast.Name(callee.name)
+        _check(ops, callee, target, inputs, {}, at, en, None, context)
+
+
+def call_ast(
+    ops: Operands,
+    callee: Callee,
+    target: ast.Expr | None,
+    inputs: dict[str, PinValue],
+    outputs: dict[str, str],
+    at: At,
+    en: PinValue | None = None,
+    eno: Var | None = None,
+) -> ast.Call | None:
+    """The box as an unchecked ST call of ``target`` (the instance or the function's name; None: reported, or
+    ``target`` is None: an instance that does not parse)."""
     missing = callee.missing(set(inputs))
     for pin in missing:
         ops.report(at.on(pin), f"{ops.lang}-MISSING-PIN", f"input {pin} of {callee.name} is not connected")
@@ -276,48 +337,33 @@ def _check(
             at.on(pin), f"{ops.lang}-IN-OUT", f"in-out {pin} of {callee.name} needs a variable, not a computed value"
         )
     args: list[ast.Arg] = []
-    pins: dict[str, ast.Arg] = {}
     failed = bool(missing or wired_in_outs)
     if en is not None:
         node = _node(ops, en, at, "EN", callee)
         failed |= node is None
         if node is not None:
-            args.append(_arg(ast.Arg("EN", node), "EN", pins))
+            args.append(ast.Arg("EN", node))
     for pin in sorted(inputs, key=callee.rank):
         node = _node(ops, inputs[pin], at, pin, callee)
         failed |= node is None
         if node is not None:
-            args.append(_arg(ast.Arg(pin, node), pin, pins))
+            args.append(ast.Arg(pin, node))
     for pin, text in outputs.items():
         node = ops.parse(text, at.on(pin), f"output {pin} of {callee.name}")
         failed |= node is None
         if node is not None:
-            args.append(_arg(ast.Arg(pin, node, output=True), pin, pins))
+            args.append(ast.Arg(pin, node, output=True))
     if eno is not None:
         args.append(ast.Arg("ENO", ops.wire_node(eno, t.BOOL), output=True))
     if failed or target is None:
         return None
-    node = ast.Call(target, args)
-    before = len(ops.ctx.diagnostics)
-    checker = ops.checker(at, pins)
-    if callee.is_fb:
-        checker.call(node, statement=True)
-    else:
-        checker.expr(node)  # types the call node (its result type)
-    if ops.errors_since(before) or node.ty is t.ERROR:
-        return None
-    return node
+    return ast.Call(target, args)
 
 
 def _node(ops: Operands, value: PinValue, at: At, pin: str, callee: Callee) -> ast.Expr | None:
     if isinstance(value, str):
         return ops.parse(value, at.on(pin), f"input {pin} of {callee.name}")
     return ops.wire_node(*value) if isinstance(value, tuple) else value
-
-
-def _arg(arg: ast.Arg, pin: str, pins: dict[str, ast.Arg]) -> ast.Arg:
-    pins[pin] = arg
-    return arg
 
 
 def lower_call(

@@ -40,7 +40,8 @@ def canonical_label(label: str) -> str:
 def check_labels(networks: Iterable[object], report: Report, lang: str) -> dict[str, str]:
     """Report malformed and duplicate labels; return {canonical label: network id} of the usable ones."""
     labels: dict[str, str] = {}
-    for network in networks:
+    numbers: dict[str, int] = {}
+    for number, network in enumerate(networks, 1):
         label = getattr(network, "label", None)
         if label is None:
             continue
@@ -55,11 +56,11 @@ def check_labels(networks: Iterable[object], report: Report, lang: str) -> dict[
         if key in labels:
             report(
                 f"{lang}-DUPLICATE-LABEL",
-                f"label '{label}' is already used by network {labels[key]}",
+                f"label '{label}' is already used by network {numbers[key]}",
                 network=network.id,
             )
             continue
-        labels[key] = network.id
+        labels[key], numbers[key] = network.id, number
     return labels
 
 
@@ -79,25 +80,29 @@ def check_jump_target(
     return None
 
 
-def check_unique_ids(elements: Iterable[tuple[str, str]], report: Report, lang: str) -> None:
-    """``elements`` are (network id, element id) pairs; a repeated element id would merge two probes."""
-    seen: dict[str, str] = {}
-    for network, element in elements:
+def check_unique_ids(elements: Iterable[tuple[int, str, str]], report: Report, lang: str) -> None:
+    """``elements`` are (network number, network id, element id); a repeated element id would merge two probes."""
+    seen: dict[str, int] = {}
+    for number, network, element in elements:
         if element in seen:
             report(
                 f"{lang}-DUPLICATE-ID",
-                f"element id '{element}' is also used in network {seen[element]}: "
-                "element ids must be unique in the POU",
+                f"an element of network {seen[element]} has the same id '{element}': element ids must be unique "
+                "in the POU (was the file edited by hand?)",
                 network=network,
                 element=element,
             )
         else:
-            seen[element] = network
+            seen[element] = number
 
 
 def check_unique_networks(networks: Iterable[object], report: Report, lang: str) -> None:
     seen: set[str] = set()
     for network in networks:
         if network.id in seen:
-            report(f"{lang}-DUPLICATE-ID", f"network id '{network.id}' is used twice in this POU", network=network.id)
+            report(
+                f"{lang}-DUPLICATE-ID",
+                f"an earlier network has the same id '{network.id}': network ids must be unique in the POU",
+                network=network.id,
+            )
         seen.add(network.id)

@@ -20,6 +20,7 @@ import re
 from collections.abc import Iterator
 from typing import Any, NamedTuple
 
+from ..iec.addresses import partial_access
 from ..model.diagnostics import Diagnostic
 from ..st import ast
 from ..st import types as t
@@ -41,7 +42,7 @@ class At(NamedTuple):
     """Where a diagnostic of a diagram goes: network, element and pin. (A tuple: made for every operand and
     pin of a large diagram, it must be cheap.)"""
 
-    network: str
+    network: str | None
     element: str | None = None
     pin: str | None = None
 
@@ -340,12 +341,12 @@ class Operands:
         ty = self.checker(at).target(node)
         if ty is t.ERROR or self.errors_since(before):
             return None, t.ERROR
-        if isinstance(node, ast.Member) and node.name.isdigit():
+        if isinstance(node, ast.Member) and partial_access(node.name) is not None:
             self.report(
                 at,
                 f"{self.lang}-BIT-TARGET",
-                f"{what} cannot write a single bit ('{text.strip()}') yet: "
-                "write a BOOL variable and copy it into the bit in ST",
+                f"{what} cannot write a single bit or part ('{text.strip()}') yet: "
+                "write a variable and copy it into the bit in ST",
             )
             return None, t.ERROR
         if kind is not None and len(self.ctx.diagnostics) == before:

@@ -101,12 +101,14 @@ class CallShapes:
         outputs: dict[str, str],
         en: Any,
         eno: Var | None,
+        context: t.Type | None = None,
     ) -> Shape | None:
-        """The shape of a box call, or None when templates do not cover it."""
+        """The shape of a box call, or None when templates do not cover it (``context``: the type its result is
+        written to, which the call's type may adapt to)."""
         if outputs:
             return None
         leaves: dict[str, Leaf] = {}
-        parts: list[Any] = [callee, eno is not None]
+        parts: list[Any] = [callee, eno is not None, context]
         if instance is not None:
             leaf = self._variable(instance, fb=True)
             if leaf is None:

@@ -28,6 +28,7 @@ from dataclasses import dataclass, field
 from typing import NamedTuple, Protocol
 
 from ..model import fbd
+from ..model.places import NetworkNames
 from .diagram_checks import Report
 
 # Node kinds by their ``type`` tag: comparing tags is several times cheaper than isinstance on the pydantic
@@ -40,13 +41,14 @@ SIMPLE_OUT = "OUT"
 SIMPLE_IN = "IN"
 
 _KIND = {
-    "block": "block",
-    "input": "input node",
-    "output": "output node",
-    "jump": "jump",
-    "return": "return",
-    "connector": "connector",
-    "continuation": "continuation",
+    "block": "a block",
+    "input": "an input",
+    "output": "an output",
+    "jump": "a jump",
+    "return": "a return",
+    "connector": "a connector",
+    "continuation": "a continuation",
+    "comment": "a comment",
 }
 
 
@@ -56,11 +58,6 @@ class Source(NamedTuple):
     node: str
     pin: str
     via: fbd.Wire
-
-    @property
-    def wire(self) -> str:
-        """The text naming the wire, for messages."""
-        return wire_text(self.via)
 
 
 @dataclass
@@ -97,8 +94,9 @@ class NodeVisitor(Protocol):
     def control(self, node: fbd.FbdJump | fbd.FbdReturn) -> None: ...
 
 
-def wire_text(wire: fbd.Wire) -> str:
-    return f"{wire.from_.node}.{wire.from_.pin} -> {wire.to.node}.{wire.to.pin}"
+def wire_text(wire: fbd.Wire, names: NetworkNames) -> str:
+    """The wire as messages name it: ``from ADD.OUT to output Level``."""
+    return f"from {names(wire.from_.node, wire.from_.pin.upper())} to {names(wire.to.node, wire.to.pin.upper())}"
 
 
 def analyse(network: fbd.FbdNetwork, report: Report) -> NetworkGraph:
@@ -109,7 +107,8 @@ def analyse(network: fbd.FbdNetwork, report: Report) -> NetworkGraph:
         nodes.setdefault(node.id, node)  # a repeated id is reported for the whole POU (check_unique_ids)
         named = named or node.type in ("connector", "continuation")
     graph = NetworkGraph(nodes)
-    wires = _wires_by_input(network, nodes, report)
+    names = NetworkNames(network)
+    wires = _wires_by_input(network, nodes, report, names)
     connectors = _connectors(network, nodes, report) if named else {}
     _resolve(graph, network, wires, connectors, report)
     graph.order = _order(graph, network, report)
@@ -117,7 +116,7 @@ def analyse(network: fbd.FbdNetwork, report: Report) -> NetworkGraph:
 
 
 def _wires_by_input(
-    network: fbd.FbdNetwork, nodes: dict[str, fbd.FbdNode], report: Report
+    network: fbd.FbdNetwork, nodes: dict[str, fbd.FbdNode], report: Report, names: NetworkNames
 ) -> dict[tuple[str, str], fbd.Wire]:
     """Valid wires by their (consumer, PIN) end; a second wire into one input is a wired OR (GR-30)."""
     result: dict[tuple[str, str], fbd.Wire] = {}  # the first wire into each input
@@ -129,8 +128,8 @@ def _wires_by_input(
             _plain_end(nodes.get(source.node), source.pin, PRODUCERS, SIMPLE_OUT)
             and _plain_end(nodes.get(target.node), pin, CONSUMERS, SIMPLE_IN)
         ) or (
-            _valid_end(wire, source, nodes, PRODUCERS, SIMPLE_OUT, "output", network.id, report)
-            and _valid_end(wire, target, nodes, CONSUMERS, SIMPLE_IN, "input", network.id, report)
+            _valid_end(wire, source, nodes, PRODUCERS, SIMPLE_OUT, "output", network.id, report, names)
+            and _valid_end(wire, target, nodes, CONSUMERS, SIMPLE_IN, "input", network.id, report, names)
         ):
             key = (target.node, pin)
             if key not in result:
@@ -139,10 +138,11 @@ def _wires_by_input(
                 more.setdefault(key, []).append(wire)
     for node, pin in [key for key in result if key in more] if more else []:  # in the order of their first wires
         group = [result[(node, pin)], *more[(node, pin)]]
-        names = " and ".join(f"from {w.from_.node}.{w.from_.pin}" for w in group)
+        sources = " and ".join(f"from {names(w.from_.node, w.from_.pin.upper())}" for w in group)
+        into = f"input {pin}" if nodes[node].type == "block" else "it"
         report(
             "FBD-WIRED-OR",
-            f"input {pin} of '{node}' has {len(group)} wires ({names}): FBD has no wired OR, use an OR block",
+            f"{len(group)} wires lead into {into} ({sources}): FBD has no wired OR, use an OR block",
             network=network.id,
             element=node,
             pin=pin,
@@ -165,12 +165,13 @@ def _valid_end(
     side: str,
     network: str,
     report: Report,
+    names: NetworkNames,
 ) -> bool:
     node = nodes.get(end.node)
     if node is None:
         report(
             "FBD-BAD-WIRE",
-            f"wire {wire_text(wire)}: there is no node '{end.node}' in this network",
+            f"the wire {wire_text(wire, names)} ends at a node this network does not have",
             network=network,
             element=end.node,
             pin=end.pin.upper(),
@@ -179,7 +180,7 @@ def _valid_end(
     if node.type not in kinds:
         report(
             "FBD-BAD-WIRE",
-            f"wire {wire_text(wire)}: a {_KIND[node.type]} has no {side} pin",
+            f"the wire {wire_text(wire, names)}: {_KIND[node.type]} has no {side} pin",
             network=network,
             element=node.id,
             pin=end.pin.upper(),
@@ -188,7 +189,7 @@ def _valid_end(
     if node.type != "block" and end.pin.upper() != simple_pin:
         report(
             "FBD-BAD-WIRE",
-            f"wire {wire_text(wire)}: the {side} pin of a {_KIND[node.type]} is {simple_pin}",
+            f"the wire {wire_text(wire, names)}: {_KIND[node.type]} has no {side} pin {end.pin.upper()}",
             network=network,
             element=node.id,
             pin=end.pin.upper(),
@@ -206,7 +207,7 @@ def _connectors(network: fbd.FbdNetwork, nodes: dict[str, fbd.FbdNode], report: 
             if key in connectors:
                 report(
                     "FBD-CONNECTOR",
-                    f"connector '{node.name}' is also defined by '{connectors[key]}'",
+                    f"this network has another connector '{node.name}'",
                     network=network.id,
                     element=node.id,
                 )
@@ -216,7 +217,7 @@ def _connectors(network: fbd.FbdNetwork, nodes: dict[str, fbd.FbdNode], report: 
         if isinstance(node, fbd.Continuation) and node.name.upper() not in connectors:
             report(
                 "FBD-CONNECTOR",
-                f"continuation '{node.id}' continues '{node.name}', but this network has no connector '{node.name}'",
+                f"this network has no connector '{node.name}' for the continuation to continue",
                 network=network.id,
                 element=node.id,
             )
@@ -250,11 +251,7 @@ def _resolve(
         if node.type != "output" and node.type != "connector":
             continue
         if (node.id, SIMPLE_IN) not in wires:
-            what = (
-                f"output node '{node.id}' ({node.var})"
-                if isinstance(node, fbd.OutputNode)
-                else f"connector '{node.name}'"
-            )
+            what = "the output" if isinstance(node, fbd.OutputNode) else "the connector"
             report("FBD-DANGLING", f"{what} has no input wire", network=network.id, element=node.id, pin=SIMPLE_IN)
         elif isinstance(node, fbd.Connector):
             _follow(wires[(node.id, SIMPLE_IN)], nodes, wires, connectors, set(), report, network.id)
@@ -278,7 +275,7 @@ def _follow(
         if report is not None and connector in seen:
             report(
                 "FBD-CONNECTOR",
-                f"connector '{producer.name}' is fed only through its own continuations",
+                "the connector is fed only through its own continuations",
                 network=network,
                 element=connector,
             )
@@ -344,7 +341,7 @@ def _explicit_ranks(network: fbd.FbdNetwork, nodes: dict[str, fbd.FbdNode], repo
         if node_id not in nodes:
             report(
                 "FBD-ORDER",
-                f"the order list names '{node_id}', which is not a node of this network",
+                f"the network's execution order names a node it does not have ('{node_id}')",
                 network=network.id,
                 element=node_id,
             )

@@ -5,6 +5,9 @@ are brought to the type the checker combined them in, inserting ``Convert`` for
 the implicit widenings it accepted; untyped literals take that type directly.
 Decisions (docs/ir.md, "Lowering of ST and whole projects"):
 
+* every node's type is the one the checker settled (st/context_typing.py): a literal has the
+  type its context gave it, a generic operation computes in ``node.ty``; literal expressions
+  (``-5``, ``3 * 4``) are folded into one ``Const`` in that type;
 * a STRING of any length and a Subrange count as one type with STRING / their base,
   so they never get a ``Convert``;
 * explicit ``*_TO_*`` conversions and TRUNC stay standard ``Call``s, ``Convert`` is only
@@ -19,17 +22,25 @@ Decisions (docs/ir.md, "Lowering of ST and whole projects"):
 
 from __future__ import annotations
 
+from typing import TypeGuard
+
 from ..iec import stdlib
-from ..iec.elementary import DEFAULT_STRING_LENGTH, GENERIC
+from ..iec.addresses import part_type, partial_access
+from ..iec.elementary import DEFAULT_STRING_LENGTH, ELEMENTARY, GENERIC
 from ..iec.stdlib import OPERATOR_OVERLOADS
+from ..iec.values import article
 from ..st import ast
 from ..st import types as t
-from ..st.rules import EnumValue, constant_value
+from ..st.context_typing import FoldError, fold, literal_only
+from ..st.printer import print_expression
+from ..st.rules import EnumValue
 from ..st.symbols import PouInfo, Symbol
 from .context import PouContext
-from .lower_types import POINTERS_UNSUPPORTED, LoweringError, byte_size, engine_value, ir_default, unnamed_address
-from .nodes import Assign, Binary, Call, Const, Convert, Expr, FnCall, Index, Member, Unary, Var
-from .types import BOOL, Array, Elementary, FbInstance, IrType, Struct, Subrange
+from .lower_types import LoweringError, byte_size, engine_value, ir_default
+from .nodes import AddressOf, Assign, Binary, Call, Const, Convert, Deref, Expr, FnCall, Index, Member, Unary, Var
+from .types import BOOL, Array, Elementary, FbInstance, IrType, Reference, Struct, Subrange, describe
+
+POINTER_ARITHMETIC = "pointer arithmetic is not supported: a reference reaches its variable only"
 
 _OPERATORS = {
     "+": "ADD",
@@ -48,8 +59,8 @@ _OPERATORS = {
     "<=": "LE",
     ">=": "GE",
 }
-_LITERAL_TARGETS = ("bool", "int", "bits", "real")  # what an untyped literal may become (types.assignable)
 _TIME_CATEGORIES = {"time", "tod", "dt", "date"}
+_COMPARISONS = frozenset({"EQ", "NE", "LT", "GT", "LE", "GE"})
 
 
 def lower_expr(node: ast.Expr, ctx: PouContext, expected: IrType | None = None) -> Expr:
@@ -73,13 +84,17 @@ def _lower(node: ast.Expr, ctx: PouContext, expected: IrType | None) -> Expr:
         raise LoweringError(None)
     if type(node) is ast.Name and type(node.ref) is Symbol:  # the commonest node by far: a declared variable
         return lower_access(node, ctx)
-    if isinstance(ty, (t.UntypedInt, t.UntypedReal)):
+    if isinstance(ty, t.UNTYPED):  # not settled by the checker (a diagram's placeholder): the expected type decides
         return _untyped(node, ctx, expected)
+    if type(node) in _NUMERIC_LITERALS or (type(node) in _OPERATIONS and literal_only(node)):
+        return _folded(node, ctx.ir_type(ty))
     if isinstance(node, (ast.BoolLit, ast.StringLit, ast.TimeLit, ast.TypedLit)):
         return _literal(node, ctx)
     if isinstance(node, ast.Name) and isinstance(node.ref, EnumValue):
         return Const(node.ref.value, ctx.ir_type(ty))
-    if isinstance(node, ast.Member) and node.name.isdigit():
+    if ty is t.NULL:
+        return Const(None, ctx.ir_type(ty))
+    if is_part(node):
         return _bit(node, ctx)
     if isinstance(node, (ast.Name, ast.DirectAddr, ast.Member, ast.Index, ast.Deref)):
         return lower_access(node, ctx)
@@ -92,11 +107,42 @@ def _lower(node: ast.Expr, ctx: PouContext, expected: IrType | None) -> Expr:
 
 def lower_to(node: ast.Expr, ctx: PouContext, target: IrType) -> Expr:
     """``node`` as a value of ``target``: untyped literals take it, accepted widenings get a ``Convert``."""
-    return convert(lower_expr(node, ctx, target), target)
+    expr = lower_expr(node, ctx, target)
+    if isinstance(target, Reference):
+        return _reference_to(expr, target, node)
+    return convert(expr, target)
+
+
+def _reference_to(expr: Expr, target: Reference, node: ast.Expr) -> Expr:
+    """A reference stored as a reference to ``target.target``: NULL, or one to a variable of that very type (a
+    ``POINTER TO BYTE`` cannot stand for another variable: the engine's references keep their target's type)."""
+    if isinstance(expr, Const) and expr.value is None:
+        return Const(None, target)
+    if isinstance(expr.type, Reference) and _same_target(expr.type.target, target.target):
+        return expr
+    raise LoweringError(
+        f"a {_reference_text(target)} cannot refer to {_referred_text(expr.type)}: LadderLab's references keep "
+        "their target's type (no reinterpretation of memory)",
+        node,
+    )
+
+
+def _same_target(a: IrType, b: IrType) -> bool:
+    return value_type(a) == value_type(b) or (
+        isinstance(a, Elementary) and isinstance(b, Elementary) and a.name == b.name  # STRING[n] and STRING[m]
+    )
+
+
+def _reference_text(ty: Reference) -> str:
+    return f"REF_TO {describe(ty.target)}"
+
+
+def _referred_text(ty: IrType) -> str:
+    return article(describe(ty.target)) if isinstance(ty, Reference) else describe(ty)
 
 
 def convert(expr: Expr, target: IrType) -> Expr:
-    source = expr.type  # type: ignore[union-attr]
+    source = expr.type
     if source is target:  # the common case: lowered types are mostly shared instances
         return expr
     if (
@@ -120,33 +166,41 @@ def value_type(ty: IrType) -> IrType:
 # ---------------------------------------------------------------- literals and constants
 
 
-def _untyped(node: ast.Expr, ctx: PouContext, expected: IrType | None) -> Expr:
-    """An expression of untyped literals (``5``, ``-2.5``, ``3 * 4``) folded into a constant of the target type."""
-    target = _literal_target(node.ty, ctx, expected)
-    value = constant_value(ctx.types.constants, node)
-    if value is None:  # e.g. NOT 5: compute it in the target type
-        if isinstance(node, ast.Call):  # SIZEOF
-            return _sizeof(node, ctx, target)
-        if isinstance(node, ast.Unary):
-            return Unary("NOT" if node.op == "NOT" else "NEG", lower_to(node.operand, ctx, target), target)
-        if isinstance(node, ast.Binary):
-            return Binary(
-                _OPERATORS[node.op], lower_to(node.left, ctx, target), lower_to(node.right, ctx, target), target
-            )
-        raise LoweringError(None)
+_NUMERIC_LITERALS = (ast.IntLit, ast.RealLit)
+_OPERATIONS = (ast.Unary, ast.Binary)
+
+
+def _folded(node: ast.Expr, target: IrType) -> Const:
+    """A literal expression as one constant of its settled type (the checker reported values that do not fit)."""
+    base = value_type(target)
+    try:
+        value = fold(node, _checker_type(base))
+    except FoldError:
+        raise LoweringError(None) from None
     return Const(engine_value(value, target), target)
 
 
-def _literal_target(ty: t.Type, ctx: PouContext, expected: IrType | None) -> IrType:
-    """The expected type when an untyped literal may take it (a subrange's base: the store checks the range)."""
+def _checker_type(ty: IrType) -> t.Type:
+    return t.Elementary(ty.name) if isinstance(ty, Elementary) and ty.name in ELEMENTARY else t.ERROR
+
+
+def _untyped(node: ast.Expr, ctx: PouContext, expected: IrType | None) -> Expr:
+    """An untyped literal expression the checker did not settle: it takes ``expected`` when it may (as the checker's
+    settle would), else its default type."""
+    target = _literal_target(node, ctx, expected)
+    if literal_only(node):
+        return _folded(node, target)
+    if isinstance(node, ast.Call):
+        return _sizeof(node, ctx, target)
+    raise LoweringError(None)
+
+
+def _literal_target(node: ast.Expr, ctx: PouContext, expected: IrType | None) -> IrType:
+    """The expected type when the untyped literal may take it (a subrange's base: the store checks the range)."""
     base = value_type(expected) if expected is not None else None
-    if (
-        isinstance(base, Elementary)
-        and base.info.category in _LITERAL_TARGETS
-        and (isinstance(ty, t.UntypedInt) or base.info.category == "real")
-    ):
+    if isinstance(base, Elementary) and base.name in ELEMENTARY and t.takes_literal(_checker_type(base), node.ty):
         return base
-    return ctx.ir_type(t.concrete(ty))
+    return ctx.ir_type(t.concrete(node.ty))
 
 
 def _literal(node: ast.Expr, ctx: PouContext) -> Const:
@@ -163,6 +217,18 @@ def _literal(node: ast.Expr, ctx: PouContext) -> Const:
 # ---------------------------------------------------------------- variables
 
 
+def _program_instance(node: ast.Expr, program: PouInfo, ctx: PouContext) -> Var:
+    """``Prog.x`` read from another POU: the instance named after the program (the engine keeps program instances
+    among the globals); a configuration that names its instances otherwise is read through those names."""
+    configuration = ctx.checked.configuration
+    name = program.name.upper()
+    if configuration is not None and name not in configuration.instances:
+        names = [i.name for i in configuration.instances.values() if i.pou is program]
+        where = f"its instance{'s' if len(names) > 1 else ''} {', '.join(names)}" if names else "no instance"
+        raise LoweringError(f"the program {program.name} runs as {where}: read the members through an instance", node)
+    return Var("global", name, FbInstance(name))
+
+
 def lower_access(node: ast.Expr, ctx: PouContext) -> Var:
     """A variable access path: a declared variable, then ``[i]`` and ``.field`` / ``.PIN`` selectors."""
     if isinstance(node, (ast.Name, ast.DirectAddr)):
@@ -170,20 +236,27 @@ def lower_access(node: ast.Expr, ctx: PouContext) -> Var:
         if isinstance(ref, Symbol):
             ctx.reads += 1
             return ctx.var_for(ref)
+        if isinstance(ref, PouInfo) and ref.kind == "PROGRAM":  # another program's outputs or SFC steps (ST-60)
+            return _program_instance(node, ref, ctx)
         if isinstance(ref, PouInfo):
             return ctx.result_var()
-        if isinstance(node, ast.DirectAddr):
-            raise unnamed_address(node.address, node)
+        if isinstance(node, ast.DirectAddr):  # used without a declaration: its size's default type (ST-13)
+            return ctx.direct(node.address, ctx.ir_type(node.ty))
         raise LoweringError(None)
-    if isinstance(node, ast.Member) and not node.name.isdigit():
+    if isinstance(node, ast.Member) and not is_part(node):
         base = lower_access(node.base, ctx)
         return Var(base.scope, base.name, _member_type(node, base.type, ctx), (*base.path, Member(node.name.upper())))
     if isinstance(node, ast.Index):
         return _index(node, ctx)
     if isinstance(node, ast.Deref):
-        raise LoweringError(POINTERS_UNSUPPORTED, node)
+        base = lower_access(node.base, ctx)
+        if not isinstance(base.type, Reference):
+            raise LoweringError(None)
+        return Var(base.scope, base.name, base.type.target, (*base.path, Deref()))
     if isinstance(node, ast.Member):
-        raise LoweringError("a bit of a variable (x.3) can be read or assigned, but not passed by reference", node)
+        raise LoweringError(
+            "a bit or part of a variable (x.3, x.%B1) can be read or assigned, but not passed by reference", node
+        )
     raise LoweringError(
         "only a variable, array element or field can be used here: assign this value to a variable first", node
     )
@@ -207,7 +280,7 @@ def _index(node: ast.Index, ctx: PouContext) -> Var:
     if isinstance(node.base.ty, t.StringType):
         raise LoweringError("indexing a STRING is not supported: use MID(s, 1, i) to get one character", node)
     if isinstance(node.base.ty, t.PointerType):
-        raise LoweringError(POINTERS_UNSUPPORTED, node)
+        raise LoweringError(POINTER_ARITHMETIC + ": write p^[i] for an element of the array p refers to", node)
     base = lower_access(node.base, ctx)
     if not isinstance(base.type, Array):
         raise LoweringError(None)
@@ -216,26 +289,59 @@ def _index(node: ast.Index, ctx: PouContext) -> Var:
 
 
 _BITS_OF_WIDTH = {8: "BYTE", 16: "WORD", 32: "DWORD", 64: "LWORD"}
+_SHIFT_COUNT = Elementary("INT")
 
 
-def bit_access(node: ast.Member, ctx: PouContext) -> tuple[Var, Expr, Const]:
-    """``x.3`` -> (x, x as a bit string, the bit string with bit 3 set); integers go through ``INT_TO_WORD``..."""
+def is_part(node: ast.Expr) -> TypeGuard[ast.Member]:
+    """Bit access ``x.3`` / ``x.%X3`` or partial access ``x.%B1`` (a member that is no field or pin)."""
+    return isinstance(node, ast.Member) and partial_access(node.name) is not None
+
+
+def bit_access(node: ast.Member, ctx: PouContext) -> tuple[Var, Elementary, Expr, Elementary, int, int]:
+    """``x.%B1`` -> (x, its type, x as a bit string, that bit string's type, the part's width in bits, its
+    shift); integers go through their same-width bit string (``INT_TO_WORD``), the two's complement pattern."""
     var = lower_access(node.base, ctx)
     ty = value_type(var.type)
-    if not isinstance(ty, Elementary) or not ty.info.bits or int(node.name) >= ty.info.bits:
+    width, index = partial_access(node.name) or (0, 0)
+    if not isinstance(ty, Elementary) or not ty.info.bits or width == 0 or (index + 1) * width > ty.info.bits:
         raise LoweringError(None)
-    bits: Expr = var
-    if ty.info.category != "bits":  # AND/OR work on ANY_BIT: same-width bit string, two's complement pattern
-        bits_type = Elementary(_BITS_OF_WIDTH[ty.info.bits])
-        bits = Call(f"{ty.name}_TO_{bits_type.name}", (var,), (ty,), bits_type)
-    mask_type = bits.type  # type: ignore[union-attr]
-    return var, bits, Const(engine_value(1 << int(node.name), mask_type), mask_type)
+    if ty.info.category == "bits":
+        return var, ty, var, ty, width, index * width
+    bits_type = Elementary(_BITS_OF_WIDTH[ty.info.bits])  # AND/OR work on ANY_BIT
+    return var, ty, Call(f"{ty.name}_TO_{bits_type.name}", (var,), (ty,), bits_type), bits_type, width, index * width
+
+
+def _shifted(name: str, value: Expr, ty: Elementary, shift: int) -> Expr:
+    return Call(name, (value, Const(shift, _SHIFT_COUNT)), (ty, _SHIFT_COUNT), ty) if shift else value
+
+
+def _resized(value: Expr, source: Elementary, target: Elementary) -> Expr:
+    return value if source == target else Call(f"{source.name}_TO_{target.name}", (value,), (source,), target)
 
 
 def _bit(node: ast.Member, ctx: PouContext) -> Expr:
-    """Bit access ``x.3`` reads as ``(x AND 2#1000) <> 0``."""
-    _, bits, mask = bit_access(node, ctx)
-    return Binary("NE", Binary("AND", bits, mask, mask.type), Const(0, mask.type), BOOL)
+    """Bit access ``x.3`` reads as ``(x AND 2#1000) <> 0``; a part ``x.%B1`` as ``DWORD_TO_BYTE(SHR(x, 8))``."""
+    _, _, bits, ty, width, shift = bit_access(node, ctx)
+    if width == 1:
+        mask = Const(engine_value(1 << shift, ty), ty)
+        return Binary("NE", Binary("AND", bits, mask, ty), Const(0, ty), BOOL)
+    return _resized(_shifted("SHR", bits, ty, shift), ty, Elementary(part_type(width)))
+
+
+def assign_part(target: ast.Member, value: Expr, ctx: PouContext) -> tuple[Var, Expr]:
+    """``x.3 := b`` stores ``SEL(b, x AND NOT 2#1000, x OR 2#1000)``; ``x.%B1 := v`` stores
+    ``(x AND NOT 16#FF00) OR SHL(BYTE_TO_DWORD(v), 8)`` (integers through their bit string)."""
+    var, var_type, bits, ty, width, shift = bit_access(target, ctx)
+    mask = ((1 << width) - 1) << shift
+    cleared = Binary("AND", bits, Const(engine_value(~mask, ty), ty), ty)
+    if width == 1:
+        updated: Expr = Call(
+            "SEL", (value, cleared, Binary("OR", bits, Const(engine_value(mask, ty), ty), ty)), (BOOL, ty, ty), ty
+        )
+    else:
+        part = Elementary(part_type(width))
+        updated = Binary("OR", cleared, _shifted("SHL", _resized(value, part, ty), ty, shift), ty)
+    return var, _resized(updated, ty, var_type)
 
 
 # ---------------------------------------------------------------- operators
@@ -257,10 +363,29 @@ def _binary(node: ast.Binary, ctx: PouContext) -> Expr:
         mixed = _time_operator(node, op, ctx)
         if mixed is not None:
             return mixed
-    combined, _ = t.common(left_ty, right_ty)
-    operand = ctx.ir_type(t.concrete(combined))
-    result = ctx.ir_type(node.ty) if op in ("EQ", "NE", "LT", "GT", "LE", "GE") else operand
+    if isinstance(left_ty, (t.PointerType, t.NullType)) or isinstance(right_ty, (t.PointerType, t.NullType)):
+        return _reference_operation(node, op, ctx)
+    if op in _COMPARISONS:  # the checker settled both operands to types whose lub is the one compared in
+        operand = ctx.ir_type(t.lub(left_ty, right_ty) or t.concrete(t.common(left_ty, right_ty)[0]))
+        result = BOOL
+    else:
+        operand = result = ctx.ir_type(node.ty)
     return Binary(op, lower_to(node.left, ctx, operand), lower_to(node.right, ctx, operand), result)  # type: ignore[arg-type]
+
+
+def _reference_operation(node: ast.Binary, op: str, ctx: PouContext) -> Expr:
+    """``r1 = r2``, ``r <> NULL``: whether two references refer to one variable. Pointer arithmetic (``p + 1``)
+    and ordering would reach memory next to a variable, which the engine's references have not got."""
+    if op not in ("EQ", "NE"):
+        raise LoweringError(
+            POINTER_ARITHMETIC if op in ("ADD", "SUB") else f"references cannot be compared by '{node.op}'", node
+        )
+    left, right = lower_expr(node.left, ctx), lower_expr(node.right, ctx)
+    if isinstance(left, Const) and left.value is None:  # NULL takes the other reference's type
+        left = Const(None, right.type)
+    if isinstance(right, Const) and right.value is None:
+        right = Const(None, left.type)
+    return Binary(op, left, right, BOOL)  # type: ignore[arg-type]  # EQ/NE
 
 
 def _time_operator(node: ast.Binary, op: str, ctx: PouContext) -> Expr | None:
@@ -287,7 +412,7 @@ def _category(ty: IrType) -> str:
 def _power(node: ast.Binary, ctx: PouContext) -> Expr:
     """``a ** b``: one Binary when both are the same type (a literal exponent takes the base's), else EXPT."""
     result = ctx.ir_type(node.ty)
-    if isinstance(node.right.ty, (t.UntypedInt, t.UntypedReal)) or t.same(node.left.ty, node.right.ty):
+    if isinstance(node.right.ty, t.UNTYPED) or t.same(node.ty, node.right.ty):
         return Binary("EXPT", lower_to(node.left, ctx, result), lower_to(node.right, ctx, result), result)
     exponent = ctx.ir_type(node.right.ty)
     return _function("EXPT", [node.left, node.right], ctx, result, (result, exponent))
@@ -305,17 +430,19 @@ def _function(
 
 
 def refuse_unsupported_call(node: ast.Call) -> None:
-    """Program calls and ADR/REF cannot be lowered yet: raise the located error."""
+    """Program calls cannot be lowered yet: raise the located error."""
     ref = node.ref
     if isinstance(ref, PouInfo) and ref.kind == "PROGRAM":
         raise LoweringError(
             f"calling the program {ref.name} from ST is not supported by the engine yet: run it from a task", node
         )
-    if ref is None and isinstance(node.callee, ast.Name) and node.callee.name.upper() in ("ADR", "REF"):
-        raise LoweringError(POINTERS_UNSUPPORTED, node)
 
 
 def _call(node: ast.Call, ctx: PouContext) -> Expr:
+    if node.ref is None and isinstance(node.callee, ast.Name) and node.callee.name.upper() == "SIZEOF":
+        return _sizeof(node, ctx, ctx.ir_type(node.ty))
+    if node.ref is None and isinstance(node.callee, ast.Name) and node.callee.name.upper() in ("ADR", "REF"):
+        return _address_of(node, ctx)
     refuse_unsupported_call(node)
     ref = node.ref
     en, eno = _en_eno(node)
@@ -333,6 +460,15 @@ def _call(node: ast.Call, ctx: PouContext) -> Expr:
     return _lift(node, call, before, ctx)
 
 
+def _address_of(node: ast.Call, ctx: PouContext) -> AddressOf:
+    """``REF(x)`` / ``ADR(x)``: a reference to the variable ``x`` (the checker refused temporaries)."""
+    if len(node.args) != 1:
+        raise LoweringError(None)
+    var = lower_access(node.args[0].value, ctx)
+    ty = ctx.ir_type(node.ty)
+    return AddressOf(var, ty, f"{node.callee.name.upper()}({print_expression(node.args[0].value)})")  # type: ignore[union-attr]  # a Name
+
+
 def _sizeof(node: ast.Call, ctx: PouContext, target: IrType) -> Const:
     """``SIZEOF(x)`` / ``SIZEOF(TypeName)``: the size in bytes (``lower_types.byte_size``) as a constant."""
     if not isinstance(node.callee, ast.Name) or node.callee.name.upper() != "SIZEOF" or len(node.args) != 1:
@@ -345,7 +481,7 @@ def _sizeof(node: ast.Call, ctx: PouContext, target: IrType) -> Const:
             named if named is not None else typedef.type if typedef else None, ast.NamedType(argument.name)
         )
     else:
-        ty = lower_expr(argument, ctx).type  # type: ignore[union-attr]
+        ty = lower_expr(argument, ctx).type
     return Const(engine_value(byte_size(ty), target), target)
 
 
@@ -473,13 +609,16 @@ def _position(function: stdlib.StdFunction, name: str) -> int | None:
 
 
 def _generic_type(function: stdlib.StdFunction, node: ast.Call, bound: dict[int, ast.Arg], ctx: PouContext) -> IrType:
-    """The type T the generic inputs share, combined as the checker does (st/calls.py, FUN-02)."""
+    """The type T the generic inputs share: the call's own type when its result is T (settled by the checker,
+    st/context_typing.py), else the lub of its settled generic arguments (a comparison)."""
+    if function.result == stdlib.T and node.ty is not None and not isinstance(node.ty, t.UNTYPED):
+        return ctx.ir_type(node.ty)
     shared: t.Type | None = None
     for index in sorted(bound):
         pin = function.pin(function.input_name(index))  # type: ignore[arg-type]
         if pin is not None and pin.generic:
             ty = bound[index].value.ty
-            shared = ty if shared is None else t.common(shared, ty)[0]
+            shared = ty if shared is None else (t.lub(shared, ty) or t.common(shared, ty)[0])
     if shared is None:
         return ctx.ir_type(node.ty) if function.result == stdlib.T else Elementary("INT")
     return ctx.ir_type(t.concrete(shared))
@@ -508,4 +647,5 @@ def user_call(node: ast.Call, ctx: PouContext) -> Call:
         args.append(lower_to(value, ctx, ty) if value is not None else Const(initial, ty))
         types.append(ty)
     ctx.calls += 1
-    return Call(pou.name.upper(), tuple(args), tuple(types), callee.type_of(pou.return_type), True, tuple(in_outs))
+    result = callee.type_of(pou.return_type, pou.return_spec)
+    return Call(pou.name.upper(), tuple(args), tuple(types), result, True, tuple(in_outs))

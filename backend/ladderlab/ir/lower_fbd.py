@@ -3,7 +3,10 @@
 Every block is the ST call it stands for (diagram_calls); its outputs stay where
 the call leaves them - a function's result in a temporary (in a slot kept between
 scans when the block has EN: EN FALSE keeps it), an FB's outputs in its instance -
-and consumers read them there. Pin flags add the inversion
+and consumers read them there. A function block whose result feeds one plain input of
+another block is typed as the call nested in that block's call (as the ST export
+writes it; literal typing, docs/st.md): it waits, in its place, until that block is
+lowered, then both are typed together and lowered where they stand. Pin flags add the inversion
 or edge detection in front of an input or behind an output. Output nodes
 write like LD coils (power.coil). Every block output pin is probed as
 ``<id>.<PIN>``; input, output, jump and return nodes as ``<id>``.
@@ -12,17 +15,19 @@ write like LD coils (power.coil). Every block output pin is probed as
 from __future__ import annotations
 
 import re
+from dataclasses import dataclass
 
 from ..iec.spelling import did_you_mean
 from ..model import fbd
+from ..model.places import NetworkNames, Places
 from ..model.project import Pou as ModelPou
 from ..st import ast
 from ..st import types as t
 from .context import PouContext
-from .diagram_calls import Callee, PinValue, check_call, lower_call, resolve_callee
+from .diagram_calls import Callee, PinValue, call_ast, check_call, lower_call, resolve_callee, type_call
 from .diagram_checks import canonical_label, check_jump_target, check_labels, check_unique_ids, check_unique_networks
 from .diagram_operands import At, Operands
-from .fbd_order import Analyses, NetworkGraph, Source, analyse
+from .fbd_order import Analyses, NetworkGraph, Source, analyse, wire_text
 from .lower_expr import convert
 from .lower_st import fb_output, fb_pins
 from .nodes import (
@@ -51,8 +56,11 @@ _ROOT = re.compile(r"\s*([A-Za-z_][A-Za-z0-9_]*)")
 def lower_fbd_body(pou: ModelPou, ctx: PouContext) -> list[Block]:
     """The networks of an FBD POU as IR blocks; problems are reported on ``ctx`` with network and element."""
     body: fbd.FbdBody = pou.body  # type: ignore[assignment]
+    ctx.places = Places(body)
     check_unique_networks(body.networks, ctx.report, "FBD")
-    check_unique_ids(((n.id, node.id) for n in body.networks for node in n.nodes), ctx.report, "FBD")
+    check_unique_ids(
+        ((i, n.id, node.id) for i, n in enumerate(body.networks, 1) for node in n.nodes), ctx.report, "FBD"
+    )
     labels = check_labels(body.networks, ctx.report, "FBD")
     ops = Operands(ctx, "FBD")
     analyses = Analyses()
@@ -64,10 +72,25 @@ def evaluation_order(network: fbd.FbdNetwork) -> list[str]:
     return analyse(network, lambda *_args, **_kwargs: None).order
 
 
+@dataclass
+class _Chained:
+    """A block with its inputs gathered in its place; ``chained``: its inputs fed by chained blocks (pin -> block
+    id), lowered before it; ``statements``: its place in the network's statements, filled when it is lowered."""
+
+    node: fbd.Block
+    callee: Callee
+    instance: str | None
+    inputs: dict[str, PinValue]
+    chained: dict[str, str]
+    en: PinValue | None
+    statements: list[Stmt]
+
+
 class _Network:
     def __init__(self, ctx: PouContext, ops: Operands, labels: dict[str, str], network: fbd.FbdNetwork):
         self.ctx, self.ops, self.labels, self.network = ctx, ops, labels, network
-        self.out: list[Stmt] = []
+        self.out: list[Stmt | list[Stmt]] = []  # a block's statements are a list in its place (_Chained)
+        self.chained: dict[str, _Chained] = {}  # chained blocks waiting for the block they feed
         #: (producer id, PIN) -> what its consumers read; missing when the producer could not be lowered
         self.values: dict[tuple[str, str], PinValue] = {}
         self.graph: NetworkGraph | None = None
@@ -76,13 +99,16 @@ class _Network:
         self.enables: dict[str, Expr] = {}  # block id -> its EN condition (blocks with EN)
         self.origins: dict[str, Origin] = {}
         self.used_pins: dict[str, set[str]] = {}  # producer id -> its output pins that feed something
+        self.names = NetworkNames(network)  # its elements as messages name them
+        self.consumers: dict[tuple[str, str], list[str]] = {}  # (producer id, PIN) -> the nodes it feeds
 
     def lower(self, analyses: Analyses) -> Block:
         self.ops.new_network()
         self.graph = graph = analyses.analyse(self.network, self.ctx.report)
-        for sources in graph.inputs.values():  # once per network, not a scan of all wires per block
+        for consumer, sources in graph.inputs.items():  # once per network, not a scan of all wires per block
             for source in sources.values():
                 self.used_pins.setdefault(source.node, set()).add(source.pin)
+                self.consumers.setdefault((source.node, source.pin), []).append(consumer)
         self.written = {name for node in graph.nodes.values() if node.type == "output" for name in root_names(node.var)}
         for node in graph.nodes.values():
             if node.type == "block":
@@ -90,9 +116,12 @@ class _Network:
             elif node.type == "connector":
                 self.connector_name(node)
         graph.visit(self)
+        for block in list(self.chained.values()):  # chained into a block that was not lowered: typed alone
+            if self.chained.pop(block.node.id, None) is not None:
+                self._lower_block(block, None)
         label = canonical_label(self.network.label) if self.network.label else None
         return Block(
-            self.out,
+            [s for item in self.out for s in (item if isinstance(item, list) else (item,))],
             diagram_origin(self.ctx.name, self.network.id),
             label if label is not None and self.labels.get(label) == self.network.id else None,
         )
@@ -148,9 +177,9 @@ class _Network:
         self.ops.report(
             self.at(node, pin),
             "FBD-FEEDBACK",
-            f"the wire {source.wire} closes a loop: it carries "
-            f"{source.node}.{source.pin} of the previous scan, and a function's result has none before its "
-            f"first call; also connect {source.node}.{source.pin} to an output variable, whose declared "
+            f"the wire {wire_text(source.via, self.names)} closes a loop: it carries "
+            f"{self.names(source.node, source.pin)} of the previous scan, and a function's result has none before its "
+            f"first call; also connect {self.names(source.node, source.pin)} to an output variable, whose declared "
             "initial value then starts the loop",
         )
         return None
@@ -168,7 +197,7 @@ class _Network:
     def input_node(self, node: fbd.InputNode) -> None:
         """An input node is evaluated once (GR-05): consumers read its operand text where they run, unless an
         output node of this network writes a variable it reads - then its value is kept in a temporary first."""
-        value, ty = self.ops.read(node.expr, self.at(node.id), f"input node '{node.id}'")
+        value, ty = self.ops.read(node.expr, self.at(node.id), "the input")
         if value is None:
             return
         origin = self.origin(node.id)
@@ -191,7 +220,7 @@ class _Network:
         value = self.source(node.id, "IN")
         if value is None:
             return
-        what = f"output node '{node.id}'"
+        what = "the output"
         if node.mode == "normal":
             target, target_type = self.ops.target(node.var, at.on(None), what)
             if target is None:
@@ -218,7 +247,7 @@ class _Network:
         value = self.source(node.id, "IN")
         if (node.id, "IN") in self.graph.broken or (wired and value is None):
             return  # reported where the wire breaks or the value fails
-        condition = self.bool_value(value, self.at(node.id, "IN"), f"{node.type} '{node.id}'") if wired else TRUE
+        condition = self.bool_value(value, self.at(node.id, "IN"), f"the {node.type}") if wired else TRUE
         if condition is None:
             return
         self.out.append(Probe(node.id, condition, origin))
@@ -240,17 +269,24 @@ class _Network:
 
     # ------------------------------------------------------------ blocks
     def block(self, node: fbd.Block) -> None:
+        """A block: its inputs gathered where it stands; a function block chained into another block (its
+        result feeds one plain input of it) is lowered when that block is, in its own place (``_Chained``)."""
         resolved = self.callees[node.id]
         if resolved is None:
             return
         callee, instance = resolved
-        at, origin = self.at(node.id), self.origin(node.id)
+        at = self.at(node.id)
         flags = _flags(node)
         broken = self.graph.broken
         if not self._pins_known(node, callee, flags) or (broken and any(n == node.id for n, _ in broken)):
             return
         inputs: dict[str, PinValue] = {}
+        chained: dict[str, str] = {}  # pin -> the chained block feeding it
         for pin in self.graph.inputs.get(node.id, {}):
+            source = self.graph.inputs[node.id][pin]
+            if source.node in self.chained:
+                chained[pin] = source.node
+                continue
             value = self.source(node.id, pin)
             if value is None:
                 return  # its producer failed or the loop has no initial value: reported there
@@ -262,18 +298,103 @@ class _Network:
             inputs[pin] = value
         en = inputs.pop("EN", None)
         if node.en and en is None:
-            self.ops.report(at.on("EN"), "FBD-MISSING-PIN", f"input EN of '{node.id}' is not connected")
+            self.ops.report(at.on("EN"), "FBD-MISSING-PIN", "input EN is not connected")
             return
-        eno = self.ops.temp() if node.en else None
-        call = check_call(self.ops, callee, instance, inputs, {}, at, en, eno)
-        if call is None:
+        block = _Chained(node, callee, instance, inputs, chained, en, [])
+        self.out.append(block.statements)  # its place: the statements come when it is lowered
+        if self._chains_into(node, callee):
+            self.chained[node.id] = block
             return
-        result = None if callee.is_fb else self._result(node, call.ty)
-        statements = lower_call(self.ops, callee, call, result, at, origin)
-        if statements is None:
-            return
-        self.out += statements
-        self._outputs(node, callee, instance, call, statements[0], result, eno, flags, en)
+        context = self._result_context(node) if not callee.is_fb else None
+        contexts = self._chain_types(block, context) if chained else {}
+        for member in self._members(block):
+            self._lower_block(member, contexts.get(member.node.id))
+        self._lower_block(block, context)
+
+    def _chains_into(self, node: fbd.Block, callee: Callee) -> bool:
+        """Whether a function block's result is typed where it is used (IEC 61131-3 6.4.2, as the ST export nests
+        it): it feeds exactly one plain input (no flags, no loop, not EN) of another block, and nothing else."""
+        if callee.is_fb or self.used_pins.get(node.id) != {"OUT"}:
+            return False
+        consumers = self.consumers.get((node.id, "OUT"), [])
+        if len(consumers) != 1 or self.callees.get(consumers[0]) is None:
+            return False
+        consumer = self.graph.nodes[consumers[0]]
+        pin = next(p for p, s in self.graph.inputs[consumer.id].items() if (s.node, s.pin) == (node.id, "OUT"))
+        return (
+            isinstance(consumer, fbd.Block)
+            and pin != "EN"
+            and pin not in _flags(consumer)
+            and (consumer.id, pin) not in self.graph.feedback
+        )
+
+    def _members(self, block: _Chained) -> list[_Chained]:
+        """The chained blocks under ``block``, producers first, taken from the waiting ones."""
+        found: list[_Chained] = []
+        for producer in block.chained.values():
+            member = self.chained.pop(producer, None)
+            if member is not None:
+                found += [*self._members(member), member]
+        return found
+
+    def _chain_types(self, block: _Chained, context: t.Type | None) -> dict[str, t.Type]:
+        """The type of each block chained into ``block``: the one ST gives the nested call in its place."""
+        nested: dict[str, ast.Call] = {}
+
+        def inputs_of(member: _Chained) -> dict[str, PinValue] | None:
+            found = dict(member.inputs)
+            for pin, producer in member.chained.items():
+                inner = self.chained.get(producer)
+                values = inputs_of(inner) if inner is not None else None
+                if inner is None or values is None:
+                    return None
+                call = call_ast(self.ops, inner.callee, ast.Name(inner.callee.name), values, {}, self.at(producer))
+                if call is None:
+                    return None
+                found[pin] = nested[producer] = call
+            return found
+
+        with self.ops.muted():
+            inputs = inputs_of(block)
+        if inputs is None:
+            return {}
+        type_call(self.ops, block.callee, block.instance, inputs, self.at(block.node.id), block.en, context)
+        return {name: call.ty for name, call in nested.items() if isinstance(call.ty, t.Elementary)}
+
+    def _lower_block(self, block: _Chained, context: t.Type | None) -> None:
+        """Check and lower a block in its place with the type its result is used as (None: its own)."""
+        node, callee, instance, en = block.node, block.callee, block.instance, block.en
+        at, origin = self.at(node.id), self.origin(node.id)
+        inputs = dict(block.inputs)
+        for pin, producer in block.chained.items():
+            value = self.values.get((producer, "OUT"))
+            if value is None:
+                return  # the chained block failed: reported there
+            inputs[pin] = value
+        saved, self.out = self.out, block.statements
+        try:
+            eno = self.ops.temp() if node.en else None
+            call = check_call(self.ops, callee, instance, inputs, {}, at, en, eno, context)
+            if call is None:
+                return
+            result = None if callee.is_fb else self._result(node, call.ty)
+            statements = lower_call(self.ops, callee, call, result, at, origin)
+            if statements is None:
+                return
+            self.out += statements
+            self._outputs(node, callee, instance, call, statements[0], result, eno, _flags(node), en)
+        finally:
+            self.out = saved
+
+    def _result_context(self, node: fbd.Block) -> t.Type | None:
+        """The type of the one variable a function block's result is written to (an output node, as in
+        ``y := F(...)``), which its literals and generic type adapt to; None when it feeds anything else."""
+        consumers = self.consumers.get((node.id, "OUT"), [])
+        target = self.graph.nodes[consumers[0]] if len(consumers) == 1 else None
+        if not isinstance(target, fbd.OutputNode) or target.mode != "normal":
+            return None
+        found = self.ops.clean_read(target.var)
+        return found[1] if found is not None else None
 
     def _result(self, node: fbd.Block, ty: t.Type) -> Var:
         """Where a function block's result goes: a slot kept between scans when the block has EN (with EN
@@ -302,14 +423,14 @@ class _Network:
             )
         for pin in ("EN", "ENO"):
             if not node.en and pin in wired | used | set(flags):
-                problems.append((pin, "FBD-UNKNOWN-PIN", f"'{node.id}' has no {pin}: set en to use EN and ENO"))
+                problems.append((pin, "FBD-UNKNOWN-PIN", f"the block has no {pin}: switch on EN/ENO to use it"))
         for pin, flag in sorted(flags.items()):
             if pin in outputs and flag.edge is not None:
                 problems.append(
                     (
                         pin,
                         "FBD-PIN-FLAG",
-                        f"output {pin} of '{node.id}' cannot have an edge flag: edge detection is for inputs",
+                        f"output {pin} cannot have an edge flag: edge detection is for inputs",
                     )
                 )
             elif pin not in outputs and not callee.is_input(pin) and pin not in ("EN", "ENO"):
@@ -324,7 +445,7 @@ class _Network:
         if not flags.negated and flags.edge is None:
             return value
         flag = "negated" if flags.edge is None else f"{flags.edge} edge"
-        what = f"the {flag} input {at.pin} of '{at.element}'"
+        what = f"the {flag} input {at.pin}"
         expr = self.bool_value(value, at, what)
         if expr is None:
             return None
@@ -376,9 +497,7 @@ class _Network:
             expr, ty = probed[pin]
             if flag is not None and flag.negated:
                 if not t.same(ty, t.BOOL):
-                    self.ops.report(
-                        at.on(pin), "FBD-NOT-BOOL", f"output {pin} of '{node.id}' is negated, but it is {ty}, not BOOL"
-                    )
+                    self.ops.report(at.on(pin), "FBD-NOT-BOOL", f"output {pin} is negated, but it is {ty}, not BOOL")
                     continue
                 negated = self.ops.temp()
                 self.out.append(Assign(negated, not_(expr), origin))
@@ -388,7 +507,7 @@ class _Network:
         if en is None:
             self.out += probes
             return
-        condition, _ = self.expr(en, at.on("EN"), f"input EN of '{node.id}'")
+        condition, _ = self.expr(en, at.on("EN"), "input EN")
         self.enables[node.id] = condition
         self.out += [If([(condition, probes)], [], origin)] if condition != TRUE else probes
 

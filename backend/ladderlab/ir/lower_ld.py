@@ -12,6 +12,7 @@ all see one value. Jumps and returns act after the whole network is evaluated
 from __future__ import annotations
 
 from ..model import ld
+from ..model.places import Places
 from ..model.project import Pou as ModelPou
 from ..st import types as t
 from .context import PouContext
@@ -27,8 +28,11 @@ from .types import BOOL
 def lower_ld_body(pou: ModelPou, ctx: PouContext) -> list[Block]:
     """The networks of an LD POU as IR blocks; problems are reported on ``ctx`` with network and element."""
     body: ld.LdBody = pou.body  # type: ignore[assignment]
+    ctx.places = Places(body)
     check_unique_networks(body.networks, ctx.report, "LD")
-    check_unique_ids(((n.id, e.id) for n in body.networks for e in ld.walk(n.elements)), ctx.report, "LD")
+    check_unique_ids(
+        ((i, n.id, e.id) for i, n in enumerate(body.networks, 1) for e in ld.walk(n.elements)), ctx.report, "LD"
+    )
     labels = check_labels(body.networks, ctx.report, "LD")
     rung = _Rung(ctx, Operands(ctx, "LD"), labels)
     return [rung.lower(network) for network in body.networks]
@@ -109,7 +113,7 @@ class _Rung:
 
     def contact(self, contact: ld.Contact, power: Expr) -> Var:
         """GR-15..18: no / nc / p / n contacts; an edge contact's memory follows its variable every scan."""
-        value = self.ops.read_bool(contact.var, self.at(contact.id), f"contact '{contact.id}'")
+        value = self.ops.read_bool(contact.var, self.at(contact.id), "the contact")
         value = value if value is not None else FALSE
         if contact.mode == "no":
             return self.power(contact.id, and_(power, value))
@@ -121,7 +125,7 @@ class _Rung:
     def coil(self, element: ld.Coil, power: Expr) -> Expr:
         """GR-20..25: the coil writes a function of its left power and passes that power on unchanged."""
         origin = self.origin(element.id)
-        target = self.ops.bool_target(element.var, self.at(element.id), f"coil '{element.id}'")
+        target = self.ops.bool_target(element.var, self.at(element.id), "the coil")
         if target is not None:
             self.out += coil(element.mode, target, power, lambda: self.memory(element.id), origin)
         self.out.append(Probe(element.id, power, origin))
@@ -134,7 +138,7 @@ class _Rung:
             self.ops.report(
                 self.at(element.id),
                 "LD-PARALLEL",
-                f"parallel '{element.id}' has {len(element.branches)} branch(es); it needs at least two",
+                f"the parallel branch has {len(element.branches)} branch(es); it needs at least two",
             )
         reaching = [out for branch in element.branches if (out := self.series(branch, power, open_end)) is not None]
         return self.power(element.id, or_(reaching))
@@ -148,7 +152,7 @@ class _Rung:
             self.ops.report(
                 self.at(element.id),
                 "LD-CONTROL-POSITION",
-                f"{kind} '{element.id}' must be the last element of a branch that ends the rung",
+                f"a {kind} must be the last element of a branch that ends the rung",
             )
             return
         if isinstance(element, ld.Jump):
@@ -195,7 +199,8 @@ class _Rung:
         if not box.en and not self._feed_power(callee, inputs, power, at):
             return None
         result_text = outputs.pop("OUT", None) if not callee.is_fb else None
-        call = check_call(self.ops, callee, instance, inputs, outputs, at, en, eno)
+        written = self.ops.clean_read(result_text) if result_text is not None else None  # as in y := F(...)
+        call = check_call(self.ops, callee, instance, inputs, outputs, at, en, eno, written[1] if written else None)
         if call is None:
             return None
         result = None if callee.is_fb else self._result(callee, call.ty, result_text, at, box.en)
@@ -223,7 +228,7 @@ class _Rung:
     def _pins_allowed(self, callee: Callee, inputs: dict, outputs: dict, at: At) -> bool:
         """EN and ENO are the power flow, not operands; a function's only output is OUT."""
         problems = [
-            (pin, f"{pin} is the box's power flow: set en instead of connecting it")
+            (pin, f"{pin} is the box's power flow: switch on EN/ENO instead of connecting it")
             for pin in ("EN", "ENO")
             if pin in inputs or pin in outputs
         ]
@@ -242,7 +247,7 @@ class _Rung:
         free = [pin for pin in callee.bool_inputs() if pin not in inputs]
         if not free:
             self.ops.report(
-                at, "LD-BOX-POWER", f"{callee.name} has no free BOOL input for the power flow: set en to use EN"
+                at, "LD-BOX-POWER", f"{callee.name} has no free BOOL input for the power flow: switch on EN/ENO"
             )
             return False
         inputs[free[0]] = (power, t.BOOL)
@@ -266,6 +271,6 @@ class _Rung:
             return pins["OUT"]
         if not callee.is_fb or not callee.bool_outputs():
             self.ops.report(
-                at, "LD-BOX-POWER", f"{callee.name} has no BOOL output to pass the power flow on: set en to use ENO"
+                at, "LD-BOX-POWER", f"{callee.name} has no BOOL output to pass the power flow on: switch on EN/ENO"
             )
         return None

@@ -5,9 +5,10 @@ lowerings register themselves). The diagnostics are the project's whole check
 (``validate_project`` + the ST checker, as ``ladderlab.simulation.check``) plus the
 lowering's own; ``program`` is None as soon as any of them is an error.
 
-Tasks: ``project.tasks`` as given; a project without tasks runs every PROGRAM,
-in project order, in one cyclic task ``DEFAULT_TASK`` every 10 ms (issue 4: a
-single ``.st`` file without a configuration).
+Program instances and tasks come from ``lower_configuration`` (the project's tasks
+or its configuration; a project without either runs every PROGRAM, in project order,
+in one cyclic task ``DEFAULT_TASK`` every 10 ms: issue 4, a ``.st`` file without a
+configuration).
 """
 
 from __future__ import annotations
@@ -17,21 +18,24 @@ from dataclasses import dataclass
 
 from ..collector import collector_paused
 from ..deep import deep_call
-from ..iec.literals import decode_duration
 from ..model.diagnostics import Diagnostic, has_errors
+from ..model.places import ProjectPlaces
 from ..model.project import Pou as ModelPou
 from ..model.project import Project
-from ..model.validate import PLANT_TASK, validate_project
+from ..model.validate import validate_project
 from ..st import types as st_types
 from ..st.checker import check_project
 from ..st.symbols import CheckResult, PouInfo, Symbol
 from .build_limits import data_too_large, source_too_large
 from .context import PouContext
+from .lower_configuration import lower_configuration
 from .lower_fbd import lower_fbd_body
+from .lower_il import lower_il_body
 from .lower_ld import lower_ld_body
+from .lower_sfc import lower_sfc_body
 from .lower_st import lower_st_body
-from .lower_types import LoweringError, ir_default, unnamed_address
-from .nodes import Assign, Binary, Block, Origin, Pou, Program, Slot, Stmt, TaskSpec, Unary, Var
+from .lower_types import LoweringError
+from .nodes import Assign, Binary, Block, Origin, Pou, Program, Slot, Stmt, Unary, Var
 from .types import BOOL
 
 #: Body lowering per ``Pou.language``; the LD and FBD lowerings add "ld" and "fbd".
@@ -39,11 +43,9 @@ LOWER_BODY: dict[str, Callable[[ModelPou, PouContext], list[Block]]] = {
     "st": lower_st_body,
     "ld": lower_ld_body,
     "fbd": lower_fbd_body,
+    "sfc": lower_sfc_body,
+    "il": lower_il_body,
 }
-
-#: The task of a project without a task configuration: every PROGRAM once per scan, every 10 ms.
-DEFAULT_TASK = "DEFAULT"
-DEFAULT_INTERVAL_MS = 10
 
 _KIND = {"PROGRAM": "program", "FUNCTION_BLOCK": "function_block", "FUNCTION": "function"}
 
@@ -67,13 +69,16 @@ def _lower_project(project: Project, checked: CheckResult | None) -> LoweringRes
     if checked is None:
         checked = check_project(project)
     diagnostics = validate_project(project) + list(checked.diagnostics)
+    image: dict[str, Slot] = {}  # addresses the bodies use without a declaration: located globals (ST-13)
     globals_ = lower_globals(checked, diagnostics)
     pous: dict[str, Pou] = {}
     for pou in project.pous:
         info = checked.pou(pou.name)
         if info is not None and info.name == pou.name:  # not a duplicate (reported by the checker)
-            pous[pou.name.upper()] = lower_pou(pou, info, checked, diagnostics)
-    program = Program(pous, globals_, lower_tasks(project, pous))
+            pous[pou.name.upper()] = lower_pou(pou, info, checked, diagnostics, image)
+    instances, tasks, access = lower_configuration(checked, diagnostics, image)
+    diagrams = [(pou.name, pou.body) for pou in project.pous if not isinstance(pou.body, str)]
+    program = Program(pous, globals_ + list(image.values()), tasks, instances, access, ProjectPlaces(diagrams))
     too_much = data_too_large(program)
     if too_much is not None:
         diagnostics.append(too_much)
@@ -86,9 +91,16 @@ def lower_globals(checked: CheckResult, diagnostics: list[Diagnostic]) -> list[S
     return [slot for slot in slots if slot is not None]
 
 
-def lower_pou(pou: ModelPou, info: PouInfo, checked: CheckResult, diagnostics: list[Diagnostic]) -> Pou:
-    """One POU: a slot per declared variable (not VAR_EXTERNAL), the function result, the body blocks."""
-    ctx = PouContext(checked, info, diagnostics)
+def lower_pou(
+    pou: ModelPou,
+    info: PouInfo,
+    checked: CheckResult,
+    diagnostics: list[Diagnostic],
+    image: dict[str, Slot] | None = None,
+) -> Pou:
+    """One POU: a slot per declared variable (not VAR_EXTERNAL), the function result, the body blocks.
+    ``image`` collects the addresses the body uses without a declaration (PouContext.direct)."""
+    ctx = PouContext(checked, info, diagnostics, image)
     for symbol in info.symbols.values():
         if symbol.var_class != "VAR_EXTERNAL":
             slot = _slot(symbol, ctx, f"{info.name}/declarations")
@@ -97,10 +109,11 @@ def lower_pou(pou: ModelPou, info: PouInfo, checked: CheckResult, diagnostics: l
     return_type = None
     if info.kind == "FUNCTION" and info.return_type is not None:
         try:
-            return_type = ctx.types.type_of(info.return_type)
-            ctx.add_slot(Slot(ctx.name, "VAR_OUTPUT", return_type, ir_default(return_type)))
+            return_type = ctx.types.type_of(info.return_type, info.return_spec)
+            initial = ctx.types.default(info.return_type, info.return_spec)  # a TYPE's own initial value (TYP-11)
+            ctx.add_slot(Slot(ctx.name, "VAR_OUTPUT", return_type, initial))
         except LoweringError as error:
-            ctx.report_error(error, file=f"{info.name}/declarations")
+            ctx.report_error(error, file=f"{info.name}/return_type")
     preamble = edge_preamble(ctx)
     lower = LOWER_BODY.get(pou.language)
     blocks: list[Block] = []
@@ -119,8 +132,6 @@ def lower_pou(pou: ModelPou, info: PouInfo, checked: CheckResult, diagnostics: l
 
 def _slot(symbol: Symbol, ctx: PouContext, file: str) -> Slot | None:
     try:
-        if symbol.address is not None and symbol.name == symbol.address:
-            raise unnamed_address(symbol.address)
         return ctx.types.slot(symbol)
     except LoweringError as error:
         ctx.report_error(error, symbol, file)
@@ -152,28 +163,3 @@ def edge_preamble(ctx: PouContext) -> list[Stmt]:
         out += [Assign(edge, detected, origin), Assign(memory, raw, origin)]
         ctx.edges[upper] = edge
     return out
-
-
-def lower_tasks(project: Project, pous: dict[str, Pou]) -> list[TaskSpec]:
-    """``project.tasks`` with intervals in ms (without tasks, ``DEFAULT_TASK`` runs every PROGRAM), and the
-    plant task running the plants (engine/tasks.py: first in every scan)."""
-    plants = [name for name, pou in pous.items() if pou.plant]
-    plant_task = [TaskSpec(PLANT_TASK, DEFAULT_INTERVAL_MS, 0, plants, plant=True)] if plants else []
-    if not project.tasks:
-        programs = [name for name, pou in pous.items() if pou.kind == "program" and not pou.plant]
-        return ([TaskSpec(DEFAULT_TASK, DEFAULT_INTERVAL_MS, 0, programs)] if programs else []) + plant_task
-    tasks = []
-    for task in project.tasks:
-        try:
-            interval = round(decode_duration(task.interval.replace(" ", "")))
-        except (ValueError, IndexError):  # validate_project reported BAD-INTERVAL
-            continue
-        tasks.append(
-            TaskSpec(
-                task.name.upper(),
-                interval,
-                task.priority,
-                [name.upper() for name in task.programs if name.upper() in pous],
-            )
-        )
-    return tasks + plant_task

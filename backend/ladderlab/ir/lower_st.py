@@ -17,8 +17,9 @@ from ..st import types as t
 from ..st.symbols import PouInfo, Symbol
 from .context import PouContext
 from .lower_expr import (
-    bit_access,
+    assign_part,
     convert,
+    is_part,
     lower_access,
     lower_en_eno,
     lower_expr,
@@ -28,10 +29,9 @@ from .lower_expr import (
     user_call,
     value_type,
 )
-from .lower_types import LoweringError, engine_value
+from .lower_types import LoweringError
 from .nodes import (
     Assign,
-    Binary,
     Block,
     Call,
     Case,
@@ -99,7 +99,7 @@ def _statement(statement: ast.Stmt, ctx: PouContext) -> list[Stmt]:
 def _assign(statement: ast.Assign, ctx: PouContext) -> list[Stmt]:
     origin = ctx.origin(statement)
     target, value = statement.target, statement.value
-    if isinstance(target, ast.Member) and target.name.isdigit():
+    if is_part(target):
         return [_assign_bit(target, value, ctx, origin)]
     if isinstance(value, ast.Call) and _has_en_eno(value) and _is_function(value.ref):
         call = _function_call(value, ctx)
@@ -110,15 +110,8 @@ def _assign(statement: ast.Assign, ctx: PouContext) -> list[Stmt]:
 
 
 def _assign_bit(target: ast.Member, value: ast.Expr, ctx: PouContext, origin: Origin) -> Assign:
-    """``x.3 := b`` is ``x := SEL(b, x AND NOT 2#1000, x OR 2#1000)`` (integers through their bit string)."""
-    bit = lower_to(value, ctx, BOOL)
-    var, bits, mask = bit_access(target, ctx)
-    ty = mask.type
-    cleared = Binary("AND", bits, Const(engine_value(~mask.value, ty), ty), ty)  # type: ignore[operator]
-    updated: Expr = Call("SEL", (bit, cleared, Binary("OR", bits, mask, ty)), (BOOL, ty, ty), ty)
-    target_type = value_type(var.type)
-    if target_type != ty:
-        updated = Call(f"{ty.name}_TO_{target_type.name}", (updated,), (ty,), target_type)  # type: ignore[union-attr]
+    """``x.3 := b`` and ``x.%B1 := v``: the variable gets its new pattern (lower_expr.assign_part)."""
+    var, updated = assign_part(target, lower_to(value, ctx, ctx.ir_type(target.ty)), ctx)
     return Assign(var, updated, origin)
 
 

@@ -22,14 +22,15 @@ import math
 from typing import Any
 
 from .. import limits
+from ..iec.addresses import incomplete
 from ..iec.values import default_value, f32, store_fn
 from ..st import ast
 from ..st import types as t
 from ..st.body import BodyChecker
 from ..st.rules import EnumValue, constant_value
 from ..st.symbols import CheckResult, PouInfo, Symbol, TypeDef
-from .nodes import Slot
-from .types import Array, Elementary, Enum, FbInstance, IrType, Struct, StructField, Subrange
+from .nodes import ReferenceInit, Slot
+from .types import Array, Elementary, Enum, FbInstance, IrType, Reference, Struct, StructField, Subrange
 
 _ALIAS_DEPTH = 64  # longer TYPE alias chains than this are cycles the checker already reported
 
@@ -44,18 +45,6 @@ class LoweringError(Exception):
     def __init__(self, message: str | None, node: Any = None, code: str = "IR-UNSUPPORTED", file: str | None = None):
         super().__init__(message or "already reported")
         self.message, self.node, self.code, self.file = message, node, code, file
-
-
-POINTERS_UNSUPPORTED = "pointers (POINTER TO, REF_TO, ADR, REF, ^) are not supported by the engine yet"
-
-
-def unnamed_address(address: str, node: Any = None) -> LoweringError:
-    """``%IX0.0`` used or declared without a name: the engine keeps variables by name."""
-    return LoweringError(
-        f"the directly represented variable {address} has no name: declare it as "
-        f"'name AT {address} : type' (unnamed ones are not supported yet)",
-        node,
-    )
 
 
 def _in_types_text(error: LoweringError) -> LoweringError:
@@ -127,7 +116,10 @@ class TypeLowering:
         if isinstance(ty, t.FbType):
             return FbInstance(ty.name.upper())
         if isinstance(ty, t.PointerType):
-            raise LoweringError(POINTERS_UNSUPPORTED)
+            target_spec = spec.target if isinstance(spec, ast.PointerType) else None
+            return Reference(self.type_of(ty.target, target_spec))
+        if isinstance(ty, t.NullType):  # a bare NULL: it takes the type of the reference it is stored in
+            return Reference(Elementary("BYTE"))
         raise LoweringError(None)  # ERROR / VOID / None: the checker reported why
 
     def _spec_body(self, spec: ast.TypeSpec | None) -> ast.TypeSpec | None:
@@ -219,7 +211,7 @@ class TypeLowering:
         if not isinstance(ty, t.StructType):
             raise LoweringError(None)
         fields = self._fields(ty, spec)
-        values = list(self.default(ty, spec))  # type: ignore[arg-type]
+        values = list(self.default(ty, spec))
         names = list(fields)
         for name, value in init.fields:
             upper = name.upper()
@@ -241,6 +233,8 @@ class TypeLowering:
         """Engine value of a constant expression (literal, CONSTANT, enum value, arithmetic on them) in ``target``."""
         if getattr(node, "ty", None) is t.ERROR:
             raise LoweringError(None)
+        if isinstance(target, Reference):
+            return _reference_initial(node)
         raw = self.raw_constant(node)
         if raw is None:
             raise LoweringError(
@@ -280,17 +274,39 @@ class TypeLowering:
 
     # ------------------------------------------------------------ slots
     def slot(self, symbol: Symbol) -> Slot:
-        """The slot of a declared variable; VAR_IN_OUT slots are references and have no initial value."""
-        initial = None if symbol.var_class == "VAR_IN_OUT" else self.initial(symbol.type, symbol.type_spec, symbol.init)
+        """The slot of a declared variable; VAR_IN_OUT slots are references and have no initial value, nor has a
+        located variable without one (its memory keeps what the process image holds)."""
+        located = symbol.address is not None and not incomplete(symbol.address)  # %I*: an ordinary variable
+        if symbol.var_class == "VAR_IN_OUT" or (located and symbol.init is None):
+            initial = None
+        else:
+            initial = self.initial(symbol.type, symbol.type_spec, symbol.init)
         return Slot(
             symbol.name.upper(),
             symbol.var_class,
-            self.type_of(symbol.type, symbol.type_spec),  # type: ignore[arg-type]
+            self.type_of(symbol.type, symbol.type_spec),
             initial,
             symbol.retain,
             symbol.constant,
-            symbol.address,
+            symbol.address.upper() if located else None,
         )
+
+
+def _reference_initial(node: ast.Expr) -> ReferenceInit | None:
+    """A reference starts as NULL (None) or as ``REF(x)`` / ``ADR(x)`` of a whole variable."""
+    if node.ty is t.NULL:
+        return None
+    if isinstance(node, ast.Call) and isinstance(node.callee, ast.Name) and len(node.args) == 1:
+        value = node.args[0].value
+        if isinstance(value, ast.Name) and isinstance(value.ref, Symbol):
+            symbol: Symbol = value.ref
+            scope = "global" if symbol.pou is None or symbol.var_class == "VAR_EXTERNAL" else "local"
+            return ReferenceInit(symbol.name.upper(), scope, f"{node.callee.name.upper()}({value.name})")
+    raise LoweringError(
+        "a reference starts as NULL or as REF(x) of a whole variable x (assign REF(a[i]) or REF(s.f) in the body)",
+        node,
+        code="IR-INIT",
+    )
 
 
 @functools.cache

@@ -12,6 +12,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Literal
 
+from ..model.places import ProjectPlaces
+from ..model.validate import PLANT_TASK
 from .types import IrType
 
 # --------------------------------------------------------------------------- origin
@@ -19,7 +21,8 @@ from .types import IrType
 
 @dataclass(frozen=True)
 class Origin:
-    """Where a node came from: an ST span, or a network and element of a diagram."""
+    """Where a node came from: an ST span, or a network and element of a diagram. ``body`` names the part of an SFC
+    POU the span or network lies in (an action or a named transition); None: the POU's own body, or its chart."""
 
     pou: str
     line: int | None = None
@@ -28,6 +31,7 @@ class Origin:
     end_column: int | None = None
     network: str | None = None
     element: str | None = None
+    body: str | None = None
 
 
 def diagram_origin(pou: str, network: str, element: str | None = None) -> Origin:
@@ -36,7 +40,7 @@ def diagram_origin(pou: str, network: str, element: str | None = None) -> Origin
     (tests/ir/test_nodes.py checks it equals the constructor's object.)"""
     origin = object.__new__(Origin)
     origin.__dict__.update(
-        pou=pou, line=None, column=None, end_line=None, end_column=None, network=network, element=element
+        pou=pou, line=None, column=None, end_line=None, end_column=None, network=network, element=element, body=None
     )
     return origin
 
@@ -60,18 +64,25 @@ class Member:
     name: str
 
 
-Selector = Index | Member
+@dataclass(frozen=True)
+class Deref:
+    """``^``: the variable a reference (REF_TO / POINTER TO) refers to; a NULL reference is a runtime error."""
+
+
+Selector = Index | Member | Deref
 Scope = Literal["local", "global"]
 
 
 @dataclass(frozen=True)
 class Var:
-    """A variable access path: a root slot then array indices (Index) and struct/FB member selections (Member).
+    """A variable access path: a root slot then array indices (Index), struct/FB member selections (Member) and
+    dereferences of references (Deref).
 
     ``scope`` says where the root lives: ``local`` in the POU instance (any declared
     class, VAR_IN_OUT included: the engine resolves the reference), ``global`` in the
-    resource's globals (VAR_EXTERNAL names lower to global accesses). ``type`` is the
-    type of the whole path.
+    resource's globals (VAR_EXTERNAL names lower to global accesses), ``program``: the
+    root is the instance of the PROGRAM ``name`` (its type ``FbInstance(name)``), read
+    from another POU (``sfc1.step1.X``, ST-60). ``type`` is the type of the whole path.
     """
 
     scope: Scope
@@ -116,7 +127,17 @@ class Convert:
     type: IrType
 
 
-Expr = Const | Var | Unary | Binary | Call | Convert
+@dataclass(frozen=True)
+class AddressOf:
+    """``REF(x)`` / ``ADR(x)``: a reference (``type``, a ``Reference``) to the variable ``var``; ``text`` is the
+    call as written, which the online views show as the reference's value."""
+
+    var: Var
+    type: IrType
+    text: str
+
+
+Expr = Const | Var | Unary | Binary | Call | Convert | AddressOf
 
 # --------------------------------------------------------------------------- statements
 
@@ -222,11 +243,15 @@ class Jump:
 
 @dataclass
 class Probe:
-    """Record ``value`` as element ``element``'s power flow / pin value in this scan (monitoring only)."""
+    """Record ``value`` as element ``element``'s power flow / pin value in this scan (monitoring only).
+
+    ``kind`` is the kind of its pause point in the debug variant: ``element``, or ``transition`` for an SFC
+    transition that fires (what "step to the next transition" halts at)."""
 
     element: str
     value: Expr
     origin: Origin
+    kind: Literal["element", "transition"] = "element"
 
 
 @dataclass
@@ -244,6 +269,16 @@ Stmt = Assign | If | Case | For | While | Repeat | Exit | Return | FbCall | FnCa
 
 
 VarClass = Literal["VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_EXTERNAL", "VAR_TEMP", "VAR_GLOBAL"]
+
+
+@dataclass(frozen=True)
+class ReferenceInit:
+    """The initial value ``REF(x)`` of a reference slot: the whole variable ``name`` of this POU (``local``) or a
+    global, made after every other slot is initialised (``text`` as written, shown online)."""
+
+    name: str
+    scope: Scope
+    text: str
 
 
 @dataclass
@@ -267,7 +302,7 @@ class Pou:
     slots: list[Slot]
     blocks: list[Block]
     return_type: IrType | None = None
-    language: Literal["st", "ld", "fbd"] = "st"
+    language: Literal["st", "ld", "fbd", "il", "sfc"] = "st"
     plant: bool = False  # a program that models the process: run by the plant task, never called
     #: False: FB calls in the body see the time the POU was called with (a scan's clock, frozen in the scan).
     #: True: each FB call reads the engine's clock as it is then - a test's body, whose ADVANCE_TIME and
@@ -276,21 +311,66 @@ class Pou:
 
 
 @dataclass
-class TaskSpec:
-    """A task: its programs run every ``interval_ms`` in ``priority`` order. The plant task (``plant``) runs
-    the plants first in every scan, whichever control tasks are due (engine/tasks.py)."""
+class ProgramInstance:
+    """A program instance: an object of its PROGRAM's class that the engine keeps among the globals, so
+    paths start with its name (``INST.X``) and RETAIN / warm restarts treat it like a global FB instance.
+
+    ``init`` holds VAR_CONFIG initial values: (instance variable, constant, whether it is RETAIN, so that a
+    warm restart keeps its value instead)."""
 
     name: str
-    interval_ms: int
+    pou: str
+    retain: bool = False
+    init: list[tuple[Var, Const, bool]] = field(default_factory=list)
+
+
+@dataclass
+class TaskSpec:
+    """A task: cyclic every ``interval_ms`` (None: only on SINGLE), once on each rising edge of ``single``
+    (a BOOL variable's path; with an interval, the task is cyclic while it is FALSE, CFG-05), in ``priority``
+    order (0 first). ``programs`` are the instances it runs, in order; ``body`` runs them with their parameter
+    bindings and VAR_CONFIG addresses (None: just the FB calls of ``programs``). The plant task (``plant``)
+    runs the plants' instances first in every scan, whichever control tasks are due."""
+
+    name: str
+    interval_ms: float | None
     priority: int
     programs: list[str]
-    plant: bool = False
+    single: str | None = None
+    body: list[Stmt] | None = None
+    plant: bool = False  # the plant task: runs the plants first in every scan (engine/tasks.py)
 
 
 @dataclass
 class Program:
-    """Everything the engine needs: all POUs, the globals, and the task configuration."""
+    """Everything the engine needs: all POUs, the globals, the program instances and the task configuration.
+
+    ``instances`` None means one instance of every PROGRAM, named after it (IR built without a project);
+    ``access`` maps VAR_ACCESS names to (path, read only)."""
 
     pous: dict[str, Pou]
     globals: list[Slot]
     tasks: list[TaskSpec] = field(default_factory=list)
+    instances: list[ProgramInstance] | None = None
+    access: dict[str, tuple[str, bool]] = field(default_factory=dict)
+    #: the LD/FBD elements' names as the user sees them, for runtime faults (model/places.py)
+    places: ProjectPlaces | None = field(default=None, repr=False, compare=False)
+
+    def program_instances(self) -> list[ProgramInstance]:
+        """The instances to create: ``instances``, or one per PROGRAM named after it."""
+        if self.instances is not None:
+            return self.instances
+        return [ProgramInstance(name.upper(), name.upper()) for name, pou in self.pous.items() if pou.kind == "program"]
+
+    def task_specs(self) -> list[TaskSpec]:
+        """The tasks to run: ``tasks``; for IR built without tasks or instances, one of 10 ms running every
+        PROGRAM but the plants, which run in the plant task (a configuration without tasks runs nothing)."""
+        if self.tasks or self.instances is not None:
+            return self.tasks
+        plants = {name.upper() for name, pou in self.pous.items() if pou.plant}
+        instances = [i.name for i in self.program_instances()]
+        programs = [name for name in instances if name not in plants]
+        specs = [TaskSpec("DEFAULT", 10, 0, programs)] if programs or not plants else []
+        if plants:
+            specs.append(TaskSpec(PLANT_TASK, 10, 0, [name for name in instances if name in plants], plant=True))
+        return specs

@@ -70,6 +70,33 @@ class FbInstance:
     fb: str
 
 
-IrType = Elementary | Subrange | Enum | Array | Struct | FbInstance
+@dataclass(frozen=True)
+class Reference:
+    """``REF_TO target`` (or CODESYS ``POINTER TO``): a reference to a variable of ``target``, or NULL.
+
+    The engine holds it as an ``engine.codegen.runtime.Ref`` (the variable's container and key) or None; a
+    dereference of NULL is a runtime error (docs/runtime.md)."""
+
+    target: IrType
+
+
+IrType = Elementary | Subrange | Enum | Array | Struct | FbInstance | Reference
+
+
+def describe(ty: IrType) -> str:
+    """IEC-like text of a type for messages and comments."""
+    if isinstance(ty, Elementary):
+        return f"STRING[{ty.length}]" if ty.name == "STRING" and ty.length is not None else ty.name
+    if isinstance(ty, Subrange):
+        return f"{ty.base.name} ({ty.low}..{ty.high})"
+    if isinstance(ty, Enum | Struct):
+        return ty.name
+    if isinstance(ty, Array):
+        dims = ", ".join(f"{lo}..{hi}" for lo, hi in ty.dims)
+        return f"ARRAY [{dims}] OF {describe(ty.element)}"
+    if isinstance(ty, Reference):
+        return f"REF_TO {describe(ty.target)}"
+    return ty.fb
+
 
 BOOL = Elementary("BOOL")

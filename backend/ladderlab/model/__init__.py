@@ -9,6 +9,7 @@ from .fbd import (
     Connector,
     Continuation,
     FbdBody,
+    FbdComment,
     FbdJump,
     FbdNetwork,
     FbdNode,
@@ -22,7 +23,7 @@ from .fbd import (
 )
 from .hmi import Panel
 from .ld import Box, Coil, Compare, Contact, Jump, LdBody, LdElement, LdNetwork, Parallel, Return
-from .project import PROJECT_FORMAT, Pou, Project, Task, TestFile
+from .project import PROJECT_FORMAT, Configuration, Pou, ProgramInstance, Project, Resource, Task, TestFile
 
 __all__ = [
     "PROJECT_FORMAT",
@@ -30,11 +31,13 @@ __all__ = [
     "Box",
     "Coil",
     "Compare",
+    "Configuration",
     "Connector",
     "Contact",
     "Continuation",
     "Diagnostic",
     "FbdBody",
+    "FbdComment",
     "FbdJump",
     "FbdNetwork",
     "FbdNode",
@@ -51,7 +54,9 @@ __all__ = [
     "PinRef",
     "Position",
     "Pou",
+    "ProgramInstance",
     "Project",
+    "Resource",
     "Return",
     "Severity",
     "Task",

@@ -14,6 +14,7 @@ from pydantic import BaseModel, ConfigDict, Field
 from .diagnostics import Diagnostic
 from .monitor import HistoryRange, Value
 from .project import Project
+from .xref import XrefList
 
 
 class ProjectSummary(BaseModel):
@@ -177,6 +178,18 @@ class ScanTimes(BaseModel):
     last: float
 
 
+class IoPoint(BaseModel):
+    """One direct address the program uses, for the I/O view."""
+
+    area: Literal["I", "Q", "M", "S"] = Field(description="I inputs, Q outputs, M memory, S the Mosaic system area.")
+    address: str = Field(description="The address as written, e.g. '%IX0.1'; also its path for watch and write.")
+    type: str = Field(description="Its elementary type, e.g. 'BOOL' or 'INT'.")
+    names: list[str] = Field(
+        default_factory=list,
+        description="Paths of the variables declared AT it (e.g. 'MAIN.START'); empty when it is used without a name.",
+    )
+
+
 class SimulationInfo(BaseModel):
     """``GET /api/simulations/{id}``: one live simulation of a saved project."""
 
@@ -201,6 +214,10 @@ class SimulationInfo(BaseModel):
     pending_inputs: int = Field(default=0, description="Input events waiting for the start of the next scan.")
     until: str | None = Field(default=None, description="What a run until waits for (a condition or a time).")
     history: HistoryRange | None = Field(default=None, description="The scan history (null: none is kept).")
+    io: list[IoPoint] = Field(
+        default_factory=list,
+        description="The direct addresses the program uses (inputs, outputs, memory), in address order.",
+    )
 
 
 class SeekScan(BaseModel):
@@ -372,32 +389,81 @@ class TestCheckRequest(BaseModel):
     file: str
 
 
-class ApiTypes(BaseModel):
-    """Container so every API shape lands in one schema file (``api.schema.json``)."""
+class Reference(BaseModel):
+    """One place that uses a project-level name (a POU, type or global), as a rename changes it or a
+    delete would break it: the POU and its part, the line of a text or the network and element of a
+    diagram, the task, and the text there (the line, or the operand) as it was."""
 
-    project_summary: ProjectSummary
-    create_project: CreateProject
-    rename_project: RenameProject
-    project_document: ProjectDocument
-    save_result: SaveResult
-    check_report: CheckReport
-    symbol_table: SymbolTable
-    variable_children: VariableChildren
-    library_entry: LibraryEntry
-    error_detail: ErrorDetail
-    conflict_detail: ConflictDetail
-    simulation_info: SimulationInfo
-    reset_simulation: ResetSimulation
-    seek_scan: SeekScan
-    history_found: HistoryFound
-    history_diff: HistoryDiff
-    history_mark: HistoryMark
-    st_export: StExport
-    import_report: ImportReport
-    fbd_order: FbdOrder
-    example_info: ExampleInfo
-    test_listing: TestListing
-    test_event: TestEvent
-    test_run_request: TestRunRequest
-    test_open_request: TestOpenRequest
-    test_check_request: TestCheckRequest
+    pou: str | None = None
+    part: Literal[
+        "declarations", "body", "network", "transition", "step", "return type", "globals", "types", "task", "test"
+    ]
+    line: int | None = None
+    network: str | None = None
+    network_number: int | None = None
+    network_label: str | None = None
+    element: str | None = None
+    task: str | None = None
+    file: str | None = None
+    text: str = ""
+
+
+class RenameRequest(BaseModel):
+    """Body of ``POST /api/refactor/rename``: the (unsaved) project and the name to rename in it."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    project: Project
+    old_name: str
+    new_name: str
+
+
+class RenameResult(BaseModel):
+    """The renamed project (nothing is stored) and every place that changed, for the preview."""
+
+    project: Project
+    changes: list[Reference]
+
+
+class ReferencesRequest(BaseModel):
+    """Body of ``POST /api/refactor/references``: the (unsaved) project and the name whose uses are wanted."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    project: Project
+    name: str
+
+
+class ReferenceList(BaseModel):
+    references: list[Reference]
+
+
+class DuplicateRequest(BaseModel):
+    """Body of ``POST /api/refactor/duplicate``: a copy of POU ``name`` called ``new_name``."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    project: Project
+    name: str
+    new_name: str
+
+
+class PrintDocument(BaseModel):
+    """What a printed project document holds (issue 28): the print view draws it with the editors' own layout
+    and SVG drawing; ``GET /api/projects/{name}/document`` and ``ladderlab doc`` make it."""
+
+    project: Project
+    revision: str
+    date: str = Field(description="When the document was made, ISO 8601 (UTC).")
+    pous: list[str] = Field(description="The POUs to print, in project order.")
+    library: list[LibraryEntry] = Field(description="Standard and user blocks: the pins the diagrams draw.")
+    symbols: dict[str, list[SymbolInfo]] = Field(description="Each printed POU's declarations, by POU name.")
+    globals: list[SymbolInfo]
+    xref: XrefList
+
+
+class Health(BaseModel):
+    """``GET /api/health``: the server answers, and which version it is."""
+
+    status: str = Field(description='"ok" while the server answers.')
+    version: str

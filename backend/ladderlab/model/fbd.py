@@ -74,8 +74,20 @@ class Continuation(_Node):
     name: str
 
 
+class FbdComment(_Node):
+    """A free comment box (issue 28): text drawn at ``pos`` in a box of ``width`` x ``height`` (None: as the
+    text needs); it takes no part in the logic (no pins, no wires, not in the evaluation order)."""
+
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
+
+    type: Literal["comment"] = "comment"
+    text: str = ""
+    width: float | None = Field(default=None, gt=0)
+    height: float | None = Field(default=None, gt=0)
+
+
 FbdNode = Annotated[
-    Block | InputNode | OutputNode | FbdJump | FbdReturn | Connector | Continuation,
+    Block | InputNode | OutputNode | FbdJump | FbdReturn | Connector | Continuation | FbdComment,
     Field(discriminator="type"),
 ]
 

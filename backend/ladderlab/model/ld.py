@@ -136,9 +136,9 @@ def walk(elements: list[LdElement]) -> Iterator[LdElement]:
         yield element
         kind = element.type  # (the tag, not isinstance: the pydantic classes check through ABCMeta)
         if kind == "parallel":
-            for branch in element.branches:  # type: ignore[union-attr]
+            for branch in element.branches:  # type: ignore[union-attr]  # the tag says Parallel
                 yield from walk(branch)
         elif kind == "box":
-            for value in element.inputs.values():  # type: ignore[union-attr]
+            for value in element.inputs.values():  # type: ignore[union-attr]  # the tag says Box
                 if isinstance(value, list):
                     yield from walk(value)

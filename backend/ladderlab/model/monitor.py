@@ -90,6 +90,11 @@ class _Where(_Request):
     network: str | None = None
     element: str | None = None
     line: int | None = None
+    body: str | None = Field(
+        default=None,
+        description="In an SFC POU: the action or named transition the network or line is in "
+        "(actions/<name>, transitions/<name>); null for the POU's body or chart.",
+    )
 
 
 class BreakpointSet(_Where):
@@ -112,6 +117,7 @@ class BreakpointClear(_Request):
     network: str | None = None
     element: str | None = None
     line: int | None = None
+    body: str | None = None
 
     @model_validator(mode="after")
     def _all_or_one(self) -> BreakpointClear:
@@ -130,14 +136,15 @@ class Continue(_Request):
 
 
 class Step(_Request):
-    """Run to the next network (LD/FBD), statement (ST; networks in diagrams) or the end of the scan.
+    """Run to the next network (LD/FBD), statement (ST; networks in diagrams), SFC transition that fires (over as
+    many scans as it takes) or the end of the scan.
 
     ``statement`` steps into calls; ``over`` goes to the next statement or network of the halted POU
     (or of its caller once it returns), passing over the calls it makes; ``out`` runs until the caller
     of the halted POU goes on. A breakpoint on the way halts first."""
 
     type: Literal["step"]
-    granularity: Literal["network", "statement", "over", "out", "cycle"] = "statement"
+    granularity: Literal["network", "statement", "over", "out", "transition", "cycle"] = "statement"
 
 
 class Run(_Request):
@@ -313,6 +320,7 @@ class At(BaseModel):
     element: str | None = None
     line: int | None = None
     column: int | None = None
+    body: str | None = Field(default=None, description="In an SFC POU: actions/<name> or transitions/<name>.")
 
 
 class DisplayType(BaseModel):
@@ -407,6 +415,7 @@ class TraceData(BaseModel):
 
 #: What an online log entry is about, so the log can be filtered (seed ON-15).
 LogKind = Literal["state", "write", "force", "release", "panel", "inject", "breakpoint", "watchdog", "fault", "system"]
+LogLevel = Literal["info", "warning", "error"]
 
 
 class Log(BaseModel):
@@ -416,18 +425,22 @@ class Log(BaseModel):
 
     type: Literal["log"]
     kind: LogKind = "system"
-    level: Literal["info", "warning", "error"]
+    level: LogLevel
     message: str
     at: At | None = None
     scan: int | None = None
     time_ms: float | None = None
 
 
+#: Why a websocket request was refused (protocol codes, not diagnostics: docs/diagnostics.md).
+ErrorCode = Literal["bad_json", "bad_message", "bad_path", "bad_value", "bad_state", "too_large", "too_many"]
+
+
 class Error(BaseModel):
     """A request of this client was refused; the connection and the simulation carry on."""
 
     type: Literal["error"]
-    code: Literal["bad_json", "bad_message", "bad_path", "bad_value", "bad_state", "too_large", "too_many"]
+    code: ErrorCode
     message: str
 
 

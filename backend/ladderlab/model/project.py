@@ -9,15 +9,20 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validat
 from .fbd import FbdBody
 from .hmi import Panel
 from .ld import LdBody
+from .sfc import SfcBody
 
-PROJECT_FORMAT = "ladderlab/1"
+ProjectFormat = Literal["ladderlab/1"]
+PROJECT_FORMAT: ProjectFormat = "ladderlab/1"
 
 #: ``plant``: a program that models the process (reads the control program's outputs, writes its inputs); it
 #: runs in the plant task before the control tasks of every scan and cannot be called from control code.
 PouKind = Literal["program", "function_block", "function", "plant"]
-Language = Literal["st", "ld", "fbd"]
+Language = Literal["st", "ld", "fbd", "il", "sfc"]
 
-BODY_TYPE_BY_LANGUAGE: dict[str, type] = {"st": str, "ld": LdBody, "fbd": FbdBody}
+#: Languages whose body is text (ST statements, IL instructions).
+TEXT_LANGUAGES = frozenset({"st", "il"})
+#: The body model of each graphical language (an ST POU's body is its text).
+DIAGRAM_BODY: dict[str, type[LdBody] | type[FbdBody] | type[SfcBody]] = {"ld": LdBody, "fbd": FbdBody, "sfc": SfcBody}
 
 
 def _strip_trailing_whitespace(value: Any) -> Any:
@@ -26,7 +31,8 @@ def _strip_trailing_whitespace(value: Any) -> Any:
 
 
 class Pou(BaseModel):
-    """A program organisation unit. ``body`` is ST text, an ``LdBody`` or an ``FbdBody`` per ``language``."""
+    """A program organisation unit. ``body`` is ST or IL text, an ``LdBody``, an ``FbdBody`` or an ``SfcBody`` per
+    ``language``."""
 
     model_config = ConfigDict(extra="forbid")
 
@@ -35,7 +41,7 @@ class Pou(BaseModel):
     language: Language
     return_type: str | None = Field(default=None, description="Functions only: the result type.")
     declarations: str = Field(default="", description="ST text of the VAR...END_VAR blocks, as typed.")
-    body: str | LdBody | FbdBody = ""
+    body: str | LdBody | FbdBody | SfcBody = ""
 
     _normalise_texts = field_validator("declarations", "body", mode="before")(_strip_trailing_whitespace)
 
@@ -44,34 +50,61 @@ class Pou(BaseModel):
     def _body_matches_language(cls, value: Any, handler: Any, info: ValidationInfo) -> Any:
         """Validate ``body`` as the type its ``language`` names, so errors point at the right shape."""
         language = info.data.get("language")
-        expected = BODY_TYPE_BY_LANGUAGE.get(language)
-        if expected is None:
-            return handler(value)
-        if expected is str:
+        if language in TEXT_LANGUAGES:
             if not isinstance(value, str):
-                raise ValueError("an ST POU's body must be a string of ST statements")
+                raise ValueError(f"an {language.upper()} POU's body must be a string of {language.upper()} text")
             return handler(value)
+        if not isinstance(language, str) or language not in DIAGRAM_BODY:
+            return handler(value)
+        expected = DIAGRAM_BODY[language]
         if isinstance(value, expected):
             return value
         if not isinstance(value, dict):
-            raise ValueError(f"an {language.upper()} POU's body must be an object with 'networks'")
+            shape = "'chart'" if language == "sfc" else "'networks'"
+            raise ValueError(f"an {language.upper()} POU's body must be an object with {shape}")
         return expected.model_validate(value)
 
     @model_validator(mode="after")
     def _empty_graphical_body(self) -> Pou:
-        """A new LD/FBD POU created without a body starts with no networks."""
-        if self.language != "st" and isinstance(self.body, str):
-            self.body = BODY_TYPE_BY_LANGUAGE[self.language]()
+        """A new LD/FBD POU created without a body starts with no networks (an SFC POU with an empty chart)."""
+        if self.language not in TEXT_LANGUAGES and isinstance(self.body, str):
+            self.body = DIAGRAM_BODY[self.language]()
         return self
+
+
+class ProgramInstance(BaseModel):
+    """A program instance: ``PROGRAM name WITH task : type (inputs, outputs)`` (IEC 61131-3 2.7.1, CFG-06)."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    name: str = Field(description="The instance's name: watch paths start with it (name.var).")
+    type: str = Field(description="The PROGRAM it is an instance of; two instances of one program are two states.")
+    retain: Literal["RETAIN", "NON_RETAIN"] | None = Field(
+        default=None, description="RETAIN: every variable of the instance keeps its value on a warm restart."
+    )
+    inputs: dict[str, str] = Field(
+        default_factory=dict, description="VAR_INPUT name -> ST expression (globals, literals) set before each run."
+    )
+    outputs: dict[str, str] = Field(
+        default_factory=dict, description="VAR_OUTPUT name -> variable (a global) written after each run."
+    )
 
 
 class Task(BaseModel):
     model_config = ConfigDict(extra="forbid")
 
     name: str
-    interval: str = Field(default="T#10ms", description="IEC TIME literal, e.g. T#10ms.")
+    interval: str | None = Field(
+        default="T#10ms", description="IEC TIME literal, e.g. T#10ms: the task runs cyclically; null: only on SINGLE."
+    )
+    single: str | None = Field(
+        default=None, description="A BOOL global or direct address: the task runs once on each of its rising edges."
+    )
     priority: int = 0
-    programs: list[str] = Field(default_factory=list, description="Program names, run in list order.")
+    programs: list[str | ProgramInstance] = Field(
+        default_factory=list,
+        description="What the task runs, in list order: a program's name (one instance named after it) or an instance.",
+    )
     watchdog_ms: int | None = Field(
         default=None,
         ge=1,
@@ -79,6 +112,39 @@ class Task(BaseModel):
         description="The task's time budget per scan in ms (its scan's own running time); longer is a watchdog "
         "fault. Null: the default of 100 ms (CODESYS's).",
     )
+
+
+class Resource(BaseModel):
+    """A RESOURCE of a configuration (``RESOURCE name ON processor``): its globals and its tasks."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    name: str | None = Field(default=None, description="None: the configuration's tasks without a RESOURCE block.")
+    on: str | None = Field(default=None, description="The processor type after ON.")
+    globals: str = Field(default="", description="ST text of the resource's VAR_GLOBAL blocks.")
+    tasks: list[Task] = Field(default_factory=list)
+    programs: list[ProgramInstance] = Field(
+        default_factory=list, description="Program instances without a task (they run in a cyclic 10 ms task)."
+    )
+
+    _normalise_texts = field_validator("globals", mode="before")(_strip_trailing_whitespace)
+
+
+class Configuration(BaseModel):
+    """The IEC configuration a project runs as (CONFIGURATION ... END_CONFIGURATION, CFG-01..08)."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    name: str
+    globals: str = Field(default="", description="ST text of the configuration's VAR_GLOBAL blocks.")
+    resources: list[Resource] = Field(default_factory=list)
+    access: str = Field(default="", description="ST text of VAR_ACCESS blocks: named access paths.")
+    config: str = Field(default="", description="ST text of VAR_CONFIG blocks: initial values and addresses.")
+
+    _normalise_texts = field_validator("globals", "access", "config", mode="before")(_strip_trailing_whitespace)
+
+    def tasks(self) -> list[Task]:
+        return [task for resource in self.resources for task in resource.tasks]
 
 
 class TestFile(BaseModel):
@@ -98,11 +164,16 @@ class Project(BaseModel):
     model_config = ConfigDict(extra="forbid")
 
     name: str
-    format: Literal["ladderlab/1"] = PROJECT_FORMAT
+    format: ProjectFormat = PROJECT_FORMAT
     types: str = Field(default="", description="ST text of TYPE ... END_TYPE blocks.")
     globals: str = Field(default="", description="ST text of VAR_GLOBAL ... END_VAR blocks.")
     pous: list[Pou] = Field(default_factory=list)
-    tasks: list[Task] = Field(default_factory=list)
+    tasks: list[Task] = Field(
+        default_factory=list, description="The tasks of a project without a configuration (one implicit resource)."
+    )
+    configuration: Configuration | None = Field(
+        default=None, description="The IEC configuration; when given, its resources hold the tasks."
+    )
     panels: list[Panel] = Field(default_factory=list, description="Operator panels (hmi/<name>.json), in order.")
     exercise: str = Field(
         default="", description="Markdown: the statement of the exercise this project is (stored as EXERCISE.md)."
@@ -129,3 +200,7 @@ class Project(BaseModel):
         """The POU called ``name`` (IEC names are case-insensitive)."""
         key = name.upper()
         return next((p for p in self.pous if p.name.upper() == key), None)
+
+    def all_tasks(self) -> list[Task]:
+        """The tasks the project runs: its own, or its configuration's."""
+        return self.configuration.tasks() if self.configuration is not None else list(self.tasks)

@@ -6,7 +6,7 @@ import re
 
 from .diagnostics import Diagnostic
 from .names import pou_name_problem, test_file_name_problem
-from .project import Project
+from .project import ProgramInstance, Project, Task
 
 #: The task that runs the plants (engine/tasks.py uses the same name).
 PLANT_TASK = "PLANTS"
@@ -69,10 +69,29 @@ def _validate_tests(project: Project) -> list[Diagnostic]:
 
 
 def _validate_tasks(project: Project) -> list[Diagnostic]:
+    """Tasks of either form: task names once, an INTERVAL and/or a SINGLE, programs that are PROGRAMs, instance
+    names once (CFG-04..06)."""
     out: list[Diagnostic] = []
+    if project.configuration is not None and project.tasks:
+        out.append(
+            Diagnostic(
+                code="TASKS-AND-CONFIGURATION",
+                json_path="$.tasks",
+                message="a project with a configuration keeps its tasks in the configuration's resources, not in tasks",
+            )
+        )
+    places: list[tuple[str, Task]] = [(f"$.tasks[{i}]", task) for i, task in enumerate(project.tasks)]
+    unscheduled: list[tuple[str, ProgramInstance]] = []
+    if project.configuration is not None:
+        for r, resource in enumerate(project.configuration.resources):
+            where = f"$.configuration.resources[{r}]"
+            places += [(f"{where}.tasks[{i}]", task) for i, task in enumerate(resource.tasks)]
+            unscheduled += [(f"{where}.programs[{j}]", instance) for j, instance in enumerate(resource.programs)]
     names: set[str] = set()
-    for i, task in enumerate(project.tasks):
-        where = f"$.tasks[{i}]"
+    instances: dict[str, str] = {}
+    if project.configuration is not None:  # each plant has its instance, named after it, in the plant task
+        instances.update((pou.name.upper(), "the plant task") for pou in project.pous if pou.kind == "plant")
+    for where, task in places:
         if task.name.upper() in names:
             out.append(
                 Diagnostic(code="DUPLICATE-TASK", json_path=where, message=f"task {task.name!r} is declared twice")
@@ -86,36 +105,73 @@ def _validate_tasks(project: Project) -> list[Diagnostic]:
                     message=f"the task name {PLANT_TASK} is reserved for the plant task; choose another name",
                 )
             )
-        if not _TIME_LITERAL.match(task.interval.replace(" ", "")):
-            out.append(
-                Diagnostic(
-                    code="BAD-INTERVAL",
-                    json_path=f"{where}.interval",
-                    message=f"task {task.name}: interval {task.interval!r} is not a TIME literal such as T#10ms",
-                )
-            )
+        out.extend(_validate_timing(task, where))
         for j, program in enumerate(task.programs):
-            pou = project.pou(program)
-            if pou is None:
-                out.append(
-                    Diagnostic(
-                        code="UNKNOWN-PROGRAM",
-                        json_path=f"{where}.programs[{j}]",
-                        message=f"task {task.name} runs {program!r}, which is not a POU of this project",
-                    )
-                )
-            elif pou.kind != "program":
-                why = (
-                    "a plant: plants run in the plant task, before the control tasks of every scan"
-                    if pou.kind == "plant"
-                    else f"a {pou.kind.replace('_', ' ')}"
-                )
-                out.append(
-                    Diagnostic(
-                        code="NOT-A-PROGRAM",
-                        json_path=f"{where}.programs[{j}]",
-                        pou=pou.name,
-                        message=f"task {task.name} can only run programs; {pou.name} is {why}",
-                    )
-                )
+            out.extend(_validate_instance(project, program, f"{where}.programs[{j}]", f"task {task.name}", instances))
+    for where, instance in unscheduled:
+        out.extend(_validate_instance(project, instance, where, "the resource", instances))
+    return out
+
+
+def _validate_timing(task: Task, where: str) -> list[Diagnostic]:
+    if task.interval is None and not task.single:
+        return [
+            Diagnostic(
+                code="BAD-INTERVAL",
+                json_path=f"{where}.interval",
+                message=f"task {task.name} needs an INTERVAL (cyclic) or a SINGLE variable (on its rising edges)",
+            )
+        ]
+    if task.interval is not None and not _TIME_LITERAL.match(task.interval.replace(" ", "")):
+        return [
+            Diagnostic(
+                code="BAD-INTERVAL",
+                json_path=f"{where}.interval",
+                message=f"task {task.name}: interval {task.interval!r} is not a TIME literal such as T#10ms",
+            )
+        ]
+    return []
+
+
+def _validate_instance(
+    project: Project, program: str | ProgramInstance, where: str, runner: str, instances: dict[str, str]
+) -> list[Diagnostic]:
+    """A task's program: a PROGRAM of the project; an instance's name used once in the whole configuration."""
+    name, type_name = (program, program) if isinstance(program, str) else (program.name, program.type)
+    out = []
+    where_type = where if isinstance(program, str) else f"{where}.type"
+    pou = project.pou(type_name)
+    if pou is None:
+        out.append(
+            Diagnostic(
+                code="UNKNOWN-PROGRAM",
+                json_path=where_type,
+                message=f"{runner} runs {type_name!r}, which is not a POU of this project",
+            )
+        )
+    elif pou.kind != "program":
+        why = (
+            "a plant: plants run in the plant task, before the control tasks of every scan"
+            if pou.kind == "plant"
+            else f"a {pou.kind.replace('_', ' ')}"
+        )
+        out.append(
+            Diagnostic(
+                code="NOT-A-PROGRAM",
+                json_path=where_type,
+                pou=pou.name,
+                message=f"{runner} can only run programs; {pou.name} is {why}",
+            )
+        )
+    key = name.upper()
+    if key in instances:
+        out.append(
+            Diagnostic(
+                code="DUPLICATE-INSTANCE",
+                json_path=where,
+                message=f"the program instance {name} is run twice ({instances[key]} and {runner}): "
+                "an instance runs in one task only; declare a second instance to run the program twice",
+            )
+        )
+    instances.setdefault(key, runner)
     return out

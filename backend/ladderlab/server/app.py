@@ -16,8 +16,22 @@ from fastapi.responses import HTMLResponse
 from fastapi.staticfiles import StaticFiles
 
 from .. import __version__
+from ..model.api import Health
 from ..storage import Workspace
-from . import auth, fbd, interchange, library, live_check, monitor, projects, simulations, symbols, tests
+from . import (
+    auth,
+    fbd,
+    interchange,
+    library,
+    live_check,
+    monitor,
+    projects,
+    refactor,
+    simulations,
+    symbols,
+    tests,
+    xref,
+)
 from .context import registry_of
 from .errors import install_error_handlers
 from .limits import BodySizeLimit, JsonGuard, Limits, WebsocketLimit
@@ -42,7 +56,7 @@ async def _lifespan(app: FastAPI) -> AsyncIterator[None]:
 
 def create_app(workspace: Workspace, limits: Limits | None = None, security: Security | None = None) -> FastAPI:
     """The app over ``workspace``; ``security`` says how it is reached (default: this machine only, no sign-in)."""
-    app = FastAPI(title="LadderLab", version=__version__, lifespan=_lifespan)
+    app = FastAPI(title="LadderLab", version=__version__, lifespan=_lifespan, separate_input_output_schemas=False)
     app.state.workspace = workspace
     app.state.limits = limits or Limits()
     app.state.security = security or Security()
@@ -54,10 +68,23 @@ def create_app(workspace: Workspace, limits: Limits | None = None, security: Sec
     app.add_middleware(SecurityMiddleware, security=app.state.security)
 
     @app.get("/api/health")
-    async def health() -> dict[str, str]:  # on the event loop: answers whatever the worker threads are doing
-        return {"status": "ok", "version": __version__}
+    async def health() -> Health:  # on the event loop: answers whatever the worker threads are doing
+        return Health(status="ok", version=__version__)
 
-    for module in (projects, symbols, library, simulations, monitor, interchange, fbd, live_check, auth, tests):
+    for module in (
+        projects,
+        symbols,
+        library,
+        simulations,
+        monitor,
+        interchange,
+        fbd,
+        live_check,
+        refactor,
+        auth,
+        tests,
+        xref,
+    ):
         app.include_router(module.router)
     app.include_router(projects.examples_router)
 
@@ -65,7 +92,7 @@ def create_app(workspace: Workspace, limits: Limits | None = None, security: Sec
         app.mount("/", StaticFiles(directory=STATIC_DIR, html=True), name="app")
     else:
 
-        @app.get("/", response_class=HTMLResponse)
+        @app.get("/", response_class=HTMLResponse, include_in_schema=False)
         def placeholder() -> str:
             return _PLACEHOLDER
 

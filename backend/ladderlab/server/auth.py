@@ -171,7 +171,7 @@ def _cookies(headers: Headers) -> dict[str, str]:
 
 
 def _auth(request: Request) -> Auth:
-    auth = request.app.state.security.auth
+    auth: Auth | None = request.app.state.security.auth
     if auth is None:
         raise ApiError(404, "this server does not ask anyone to sign in")
     return auth

@@ -13,7 +13,8 @@ from ..storage import Workspace
 
 
 def _workspace(request: Request) -> Workspace:
-    return request.app.state.workspace
+    workspace: Workspace = request.app.state.workspace
+    return workspace
 
 
 WorkspaceDep = Annotated[Workspace, Depends(_workspace)]

@@ -8,6 +8,7 @@ client as an HTML page or a bare string.
 from __future__ import annotations
 
 import logging
+from collections.abc import Mapping
 from datetime import datetime
 from http import HTTPStatus
 from typing import Any
@@ -16,6 +17,7 @@ from fastapi import FastAPI, Request
 from fastapi.exceptions import RequestValidationError
 from fastapi.responses import JSONResponse
 from pydantic import BaseModel
+from pydantic_core import ErrorDetails
 from starlette.exceptions import HTTPException
 
 from ..model import Diagnostic
@@ -95,7 +97,7 @@ def install_error_handlers(app: FastAPI) -> None:
     app.add_exception_handler(Exception, _internal_error)
 
 
-def _json(status: int, detail: BaseModel, headers: dict[str, str] | None = None) -> JSONResponse:
+def _json(status: int, detail: BaseModel, headers: Mapping[str, str] | None = None) -> JSONResponse:
     return JSONResponse({"detail": detail.model_dump(mode="json")}, status, headers=headers)
 
 
@@ -152,7 +154,7 @@ def summarise(diagnostics: list[Diagnostic], shown: int = 3) -> str:
     return "; ".join(parts) + (f" (and {more} more)" if more > 0 else "")
 
 
-def _request_diagnostic(err: dict[str, Any], body: Any) -> Diagnostic:
+def _request_diagnostic(err: ErrorDetails, body: Any) -> Diagnostic:
     """A located diagnostic for one validation error: JSON path into the body, or the parameter's name."""
     where, *loc = err["loc"]
     if err["type"] == "json_invalid":

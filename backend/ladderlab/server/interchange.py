@@ -31,13 +31,18 @@ def export_st(
     workspace: WorkspaceDep,
     pou: Annotated[str | None, Query(description="one POU; default: the whole project")] = None,
     with_plants: Annotated[bool, Query(description="the whole project: keep its plants (as programs)")] = False,
+    sfc_text: Annotated[bool, Query(description="SFC POUs as IEC textual SFC instead of the ST of their scan")] = False,
 ) -> StExport:
     """The saved project (or one POU) as IEC ST that runs identically; each exported line maps to its network.
     The whole project's control program leaves the plants out unless ``with_plants``."""
     project = workspace.load(name).project
     if pou is not None and project.pou(pou) is None:
         raise ApiError(404, f"project {name!r} has no POU {pou!r}")
-    result = export_pou_st(project, pou) if pou is not None else export_project_st(for_export(project, with_plants))
+    result = (
+        export_pou_st(project, pou, sfc_text=sfc_text)
+        if pou is not None
+        else export_project_st(for_export(project, with_plants), sfc_text=sfc_text)
+    )
     if has_errors(result.diagnostics):
         raise ApiError(422, "the project cannot be exported as ST until these errors are fixed", result.diagnostics)
     return StExport(
@@ -71,6 +76,12 @@ def export_xml(
     status_code=status.HTTP_201_CREATED,
     response_model=ImportReport,
     responses=responses(409, 413, 422, 429),
+    openapi_extra={
+        "requestBody": {
+            "required": True,
+            "content": {"application/xml": {"schema": {"type": "string", "description": "a PLCopen TC6 XML document"}}},
+        }
+    },
 )
 async def import_xml(
     request: Request,

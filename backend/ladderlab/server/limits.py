@@ -36,7 +36,8 @@ class Limits:
 
 
 def _limits(request: Request) -> Limits:
-    return request.app.state.limits
+    limits: Limits = request.app.state.limits
+    return limits
 
 
 LimitsDep = Annotated[Limits, Depends(_limits)]
@@ -138,9 +139,9 @@ class JsonGuard:
         body = b"".join(chunks)
         problem = json_problem(body)
         if problem is not None:
-            message, line, column = problem
-            diagnostic = Diagnostic(code="BAD-JSON", line=line, column=column, message=message)
-            detail = ErrorDetail(message=f"invalid request: {line}:{column}: {message}", diagnostics=[diagnostic])
+            reason, line, column = problem
+            diagnostic = Diagnostic(code="BAD-JSON", line=line, column=column, message=reason)
+            detail = ErrorDetail(message=f"invalid request: {line}:{column}: {reason}", diagnostics=[diagnostic])
             await JSONResponse({"detail": detail.model_dump(mode="json")}, 422)(scope, receive, send)
             return
         sent = False

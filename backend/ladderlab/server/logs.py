@@ -21,7 +21,9 @@ class RepeatFilter(logging.Filter):
     def __init__(self, window_s: float = WINDOW_S) -> None:
         super().__init__()
         self.window_s = window_s
-        self._seen: dict[tuple, tuple[float, int]] = {}  # kind -> (when it was last let through, dropped since)
+        self._seen: dict[
+            tuple[object, ...], tuple[float, int]
+        ] = {}  # kind -> (when it was last let through, dropped since)
         self._lock = threading.Lock()
 
     def filter(self, record: logging.LogRecord) -> bool:
@@ -48,9 +50,9 @@ def install_repeat_filter(window_s: float = WINDOW_S) -> RepeatFilter:
     repeat = RepeatFilter(window_s)
     root = logging.getLogger()
     if not root.handlers:
-        handler = logging.StreamHandler()
-        handler.setFormatter(logging.Formatter("%(levelname)s: %(name)s: %(message)s"))
-        root.addHandler(handler)
+        stream = logging.StreamHandler()
+        stream.setFormatter(logging.Formatter("%(levelname)s: %(name)s: %(message)s"))
+        root.addHandler(stream)
     for logger in (root, *(logging.getLogger(name) for name in SERVER_LOGGERS)):
         for handler in logger.handlers:
             handler.addFilter(repeat)

@@ -45,7 +45,7 @@ log = logging.getLogger(__name__)
 
 router = APIRouter(tags=["monitor"])
 
-CLIENT_MESSAGE: TypeAdapter[Any] = TypeAdapter(m.ClientMessage)
+CLIENT_MESSAGE: TypeAdapter[m.ClientMessage] = TypeAdapter(m.ClientMessage)
 _CLIENT_TYPES = ", ".join(sorted(CLIENT_MESSAGE.json_schema()["discriminator"]["mapping"]))
 CLOSE_NO_SIMULATION = 4404
 CLOSE_DELETED = 4410
@@ -104,7 +104,7 @@ class MonitorClient:
         self.last_forced: list[str] = []
         self.last_injected: dict[str, str] = {}
         self.last_scan = -1
-        self.last_history: dict | None = None
+        self.last_history: dict[str, Any] | None = None
         # trace: its chunks are taken at the values interval while one runs
         self.tracing = False
         self.trace_due = 0.0
@@ -145,8 +145,8 @@ class MonitorClient:
             self.outbox.append(message)
         self.wake.set()
 
-    def error(self, code: str, message: str) -> None:
-        self._enqueue(m.Error(type="error", code=code, message=message))  # type: ignore[arg-type]
+    def error(self, code: m.ErrorCode, message: str) -> None:
+        self._enqueue(m.Error(type="error", code=code, message=message))
 
     async def serve(self) -> None:
         status, history, dropped = self.simulation.attach(self)
@@ -169,7 +169,7 @@ class MonitorClient:
             self.simulation.detach(self)
             self.simulation.unwatch(self.key)
 
-    async def _receive_loop(self, sender: asyncio.Task) -> None:
+    async def _receive_loop(self, sender: asyncio.Task[None]) -> None:
         while not sender.done():
             receiving = asyncio.ensure_future(self.websocket.receive())
             await asyncio.wait({receiving, sender}, return_when=asyncio.FIRST_COMPLETED)
@@ -215,7 +215,7 @@ class MonitorClient:
             log.exception("monitor request %s failed", type(request).__name__)
             self.error("bad_state", f"internal error: {type(error).__name__}: {error}")
 
-    async def _dispatch(self, request: BaseModel) -> None:
+    async def _dispatch(self, request: m.ClientMessage) -> None:
         simulation = self.simulation
         match request:
             case m.Subscribe():
@@ -300,7 +300,7 @@ class MonitorClient:
                 await self._send(self.outbox.popleft())
             else:
                 status, self.status = self.status, None
-                await self._send(status)  # type: ignore[arg-type]
+                await self._send(status)  # type: ignore[arg-type]  # the loop runs while outbox or status holds one
 
     async def _send(self, message: BaseModel) -> None:
         await self.websocket.send_text(message.model_dump_json())
@@ -362,7 +362,9 @@ class MonitorClient:
 
 
 def _where(request: m.BreakpointSet | m.BreakpointClear) -> dict[str, object]:
-    return {key: value for key in ("network", "element", "line") if (value := getattr(request, key)) is not None}
+    return {
+        key: value for key in ("network", "element", "line", "body") if (value := getattr(request, key)) is not None
+    }
 
 
 def describe_invalid(data: object, error: ValidationError) -> str:

@@ -14,7 +14,16 @@ from typing import Annotated, Any
 
 from fastapi import APIRouter, Body, Depends, Request, Response, status
 
-from ..model.api import HistoryDiff, HistoryFound, HistoryMark, ResetSimulation, ScanTimes, SeekScan, SimulationInfo
+from ..model.api import (
+    HistoryDiff,
+    HistoryFound,
+    HistoryMark,
+    IoPoint,
+    ResetSimulation,
+    ScanTimes,
+    SeekScan,
+    SimulationInfo,
+)
 from ..simulation.recording import Recording
 from ..simulation.registry import SimulationEntry, SimulationRegistry
 from ..simulation.remote import BuildFailed
@@ -253,4 +262,5 @@ def simulation_info(entry: SimulationEntry, info: dict[str, Any] | None = None) 
         pending_inputs=info.get("pending_inputs", 0),
         until=info.get("until"),
         history=info.get("history"),
+        io=[IoPoint.model_validate(point) for point in handle.io],
     )

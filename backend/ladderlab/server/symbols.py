@@ -13,11 +13,13 @@ from fastapi import APIRouter
 from ..engine.paths import GLOBALS_PREFIX, tokens
 from ..iec.spelling import did_you_mean
 from ..model import Project
-from ..model.api import SymbolInfo, SymbolTable, VariableChildren, VariableNode
+from ..model.api import SymbolTable, VariableChildren, VariableNode
+from ..simulation.document import symbol_info
 from ..st import types as t
 from ..st.checker import check_project as check_st
-from ..st.printer import print_initializer, print_type
-from ..st.symbols import Symbol
+from ..st.configuration import InstanceInfo
+from ..st.printer import print_type
+from ..st.symbols import CheckResult, PouInfo, Symbol
 from ..storage import NotFoundError
 from .context import WorkspaceDep
 from .errors import ApiError, responses
@@ -26,20 +28,6 @@ router = APIRouter(prefix="/api/projects", tags=["symbols"])
 
 #: Diagnostic ``file`` values of the texts every POU's symbols depend on.
 _SHARED_TEXTS = {"types", "globals"}
-
-
-def symbol_info(symbol: Symbol) -> SymbolInfo:
-    """One symbol with its type and initial value as ST text (as declared, not the resolved internals)."""
-    return SymbolInfo(
-        name=symbol.name,
-        var_class=symbol.var_class,
-        type=print_type(symbol.type_spec),
-        initial=print_initializer(symbol.init) if symbol.init is not None else None,
-        address=symbol.address,
-        comment=symbol.comment,
-        retain=symbol.retain,
-        constant=symbol.constant,
-    )
 
 
 def symbol_table(project: Project, pou_name: str) -> SymbolTable:
@@ -121,14 +109,14 @@ def _members(ty: t.Type, path: str, indices: tuple[int, ...]) -> tuple[list[Vari
     return [], 0
 
 
-def _walk(result, path: str) -> tuple[t.Type, tuple[int, ...]]:
+def _walk(result: CheckResult, path: str) -> tuple[t.Type, tuple[int, ...]]:
     """The type of the variable at ``path`` (and the indices of a partly indexed array at its end)."""
     parts = tokens(path)
     if not parts or parts[0][0] != "name":
         raise ApiError(422, f"{path!r} is not a variable path")
     head, rest = parts[0][1], parts[1:]
-    program = result.pou(head)
-    if program is not None and program.kind == "PROGRAM":
+    program = _instance_pou(result, head)
+    if program is not None:
         ty: t.Type = t.FbType(program.name, pou=program)
     else:
         if head.upper() == GLOBALS_PREFIX and rest[:1] == [("punct", ".")] and rest[1:2] and rest[1][0] == "name":
@@ -167,14 +155,34 @@ def _member_type(ty: t.Type, member: str) -> t.Type:
     if isinstance(ty, t.StructType):
         return ty.fields[upper][1]
     if isinstance(ty, t.FbType) and ty.pou is not None:
-        return ty.pou.symbols[upper].type
+        found: t.Type = ty.pou.symbols[upper].type
+        return found
     assert isinstance(ty, t.FbType) and ty.std is not None  # _walk found the member among the pins
     pin = next(p for p in (*ty.std.inputs, *ty.std.outputs) if p.name == upper)
     return t.elementary(pin.type) or t.ERROR
 
 
-def _top_names(result) -> list[str]:
-    return [p.name for p in result.pous.values() if p.kind == "PROGRAM"] + [s.name for s in result.globals.values()]
+def _instances(result: CheckResult) -> dict[str, InstanceInfo]:
+    """The program instances the project runs, by upper-case name (a configuration names them; without one,
+    each PROGRAM has one instance named after it)."""
+    return result.configuration.instances if result.configuration is not None else {}
+
+
+def _instance_pou(result: CheckResult, name: str) -> PouInfo | None:
+    """The PROGRAM of the instance ``name``; a PROGRAM's own name stands for its only instance (engine paths)."""
+    instance = _instances(result).get(name.upper())
+    if instance is not None:
+        return instance.pou
+    program = result.pou(name)
+    if program is None or program.kind != "PROGRAM":
+        return None
+    if sum(1 for i in _instances(result).values() if i.pou is program) > 1:
+        return None
+    return program
+
+
+def _top_names(result: CheckResult) -> list[str]:
+    return [i.name for i in _instances(result).values()] + [s.name for s in result.globals.values()]
 
 
 def variable_children(project: Project, path: str) -> VariableChildren:
@@ -184,9 +192,8 @@ def variable_children(project: Project, path: str) -> VariableChildren:
     text = path.strip()
     if not text:
         programs = [
-            VariableNode(name=p.name, path=p.name, type=p.name, var_class="PROGRAM", expandable=True)
-            for p in result.pous.values()
-            if p.kind == "PROGRAM"
+            VariableNode(name=i.name, path=i.name, type=i.pou.name, var_class="PROGRAM", expandable=True)
+            for i in _instances(result).values()
         ]
         return VariableChildren(
             path="", type=None, children=[*programs, *(_variable(s, s.name) for s in result.globals.values())]

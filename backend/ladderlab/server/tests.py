@@ -16,6 +16,7 @@ from __future__ import annotations
 import asyncio
 import threading
 from collections.abc import AsyncIterator
+from typing import Any
 
 from fastapi import APIRouter, Request
 from fastapi.responses import StreamingResponse
@@ -23,6 +24,7 @@ from fastapi.responses import StreamingResponse
 from ..ir.lower_tests import LoweredTest
 from ..model import Project
 from ..model.api import (
+    CoverageInfo,
     SimulationInfo,
     TestCaseInfo,
     TestCheckRequest,
@@ -70,7 +72,12 @@ def check_tests(body: TestCheckRequest, limits: LimitsDep) -> TestFileInfo:
     return _file_info(prepared, prepared.tests)
 
 
-@router.post("/run", responses=responses(404, 413, 422))
+_EVENTS: dict[int | str, dict[str, Any]] = {
+    200: {"model": TestEvent, "description": "One TestEvent per line (application/x-ndjson)."}
+}
+
+
+@router.post("/run", responses={**_EVENTS, **responses(404, 413, 422)})
 async def run_tests(body: TestRunRequest, limits: LimitsDep) -> StreamingResponse:
     """Run every test, one file's or one test; answers a stream of ``TestEvent`` JSON lines."""
     check_project_size(body.project, limits)
@@ -135,8 +142,9 @@ async def _stream(project: Project, files: list[SuiteFile], test: str | None, co
                 files_with_errors=sum(1 for f in outcome.files if not f.ok),
                 seconds=round(outcome.seconds, 3),
             )
-            report = outcome.coverage.report(names) if outcome.coverage is not None else None
-            emit(TestEvent(type="done", summary=summary, coverage=report))  # type: ignore[arg-type]  # the summary's model is built by the runner
+            report = outcome.coverage.report(names) if outcome.coverage is not None else {}
+            per_pou = {pou: CoverageInfo.model_validate(info) for pou, info in report.items()}
+            emit(TestEvent(type="done", summary=summary, coverage=per_pou if outcome.coverage is not None else None))
         finally:
             loop.call_soon_threadsafe(queue.put_nowait, None)
 

@@ -7,6 +7,7 @@ a project that runs in one runs identically in the other.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Any
 
 from ..engine.compile import CompiledProgram, CompileError, compile_program
 from ..engine.paths import Resolver
@@ -24,7 +25,7 @@ class Build:
     diagnostics: list[Diagnostic]
     watchdogs: dict[str, float] = field(default_factory=dict)
 
-    def simulation(self, watchdog_s: float = DEFAULT_WATCHDOG_S, **options) -> Simulation:
+    def simulation(self, watchdog_s: float = DEFAULT_WATCHDOG_S, **options: Any) -> Simulation:
         """A simulation of the program; ``watchdog_s`` is the budget of tasks that do not set their own."""
         if self.compiled is None:
             raise CompileError(self.diagnostics)

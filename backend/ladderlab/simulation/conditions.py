@@ -14,13 +14,14 @@ import operator
 import re
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 from ..engine.paths import UnknownPath, coerce_for
 from ..engine.simulation import Simulation
 
 _COMPARE = re.compile(r"^\s*(?P<path>[^<>=]+?)\s*(?P<op><>|<=|>=|=|<|>)\s*(?P<value>.+?)\s*$")
 _NOT = re.compile(r"^\s*NOT\s+(?P<path>.+?)\s*$", re.IGNORECASE)
-_OPERATORS: dict[str, Callable[[object, object], bool]] = {
+_OPERATORS: dict[str, Callable[[Any, Any], Any]] = {
     "=": operator.eq,
     "<>": operator.ne,
     "<": operator.lt,
@@ -54,6 +55,7 @@ def parse_condition(text: str, sim: Simulation) -> Condition:
         raise BadCondition("a condition is a BOOL variable (Motor), NOT one, or a comparison (Tank.Level >= 80)")
     negated = _NOT.match(text)
     compared = None if negated else _COMPARE.match(text)
+    literal: str | bool
     if negated:
         path, op, literal = negated.group("path"), "=", False
     elif compared:

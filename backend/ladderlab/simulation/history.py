@@ -50,7 +50,8 @@ class Checkpoint:
     blob: bytes
 
     def state(self) -> SimState:
-        return pickle.loads(zlib.decompress(self.blob))
+        state: SimState = pickle.loads(zlib.decompress(self.blob))
+        return state
 
 
 class History:

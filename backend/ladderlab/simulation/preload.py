@@ -67,6 +67,13 @@ _WARM_UP = {
                 ]
             },
         },
+        {
+            "name": "List",
+            "kind": "program",
+            "language": "il",
+            "declarations": "VAR\n    a, q : BOOL;\nEND_VAR",
+            "body": "LD a\nJMPC done\nLDN q\ndone: ST q",
+        },
     ],
 }
 

@@ -25,7 +25,7 @@ import itertools
 import threading
 import time
 from collections import deque
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from concurrent.futures import Future
 from dataclasses import dataclass, field
 from multiprocessing.connection import Connection
@@ -35,7 +35,7 @@ from typing import Any, Protocol
 from ..engine.codegen.faults import RUNTIME_FAULT
 from ..engine.simulation import Simulation
 from ..model import Diagnostic
-from ..model.monitor import DisplayType, Log, Status
+from ..model.monitor import DisplayType, Log, LogKind, LogLevel, Status
 from .runner import CommandError
 from .supervisor import WorkerHub, kill, start_process
 from .trace import TraceInbox
@@ -116,8 +116,8 @@ class WorkerSettings:
 class _Requests:
     """Requests waiting for their reply, by id, with when each was sent."""
 
-    ids: itertools.count = field(default_factory=lambda: itertools.count(1))
-    waiting: dict[int, tuple[Future, float]] = field(default_factory=dict)
+    ids: itertools.count[int] = field(default_factory=lambda: itertools.count(1))
+    waiting: dict[int, tuple[Future[Any], float]] = field(default_factory=dict)
 
 
 class SimulationHandle:
@@ -137,6 +137,7 @@ class SimulationHandle:
             "make": make,
         }
         self.instances: dict[str, list[str]] = {}
+        self.io: list[dict[str, Any]] = []  # the addresses the program uses (Simulation.io_points), plain data
         self.info: dict[str, Any] = {}
         self.frame = EMPTY_FRAME
         self.status = Status(type="status", state="stopped")
@@ -150,7 +151,7 @@ class SimulationHandle:
         self._requests = _Requests()
         self._process: BaseProcess | None = None
         self._connection: Connection | None = None
-        self._ready: Future | None = None
+        self._ready: Future[None] | None = None
         self._launched = 0.0
         self._alive = False
         self._closed = False
@@ -161,7 +162,7 @@ class SimulationHandle:
 
     def launch(self) -> None:
         """Start the process and wait until it has built the project; raises ``BuildFailed``."""
-        ready: Future = Future()
+        ready: Future[None] = Future()
         process, connection = start_process(run_simulation, self.spec, name="ladderlab-simulation")
         with self._lock:
             self._process, self._connection, self._ready = process, connection, ready
@@ -202,12 +203,13 @@ class SimulationHandle:
         elif kind == "ready":
             with self._lock:
                 self.info, self.instances, self._alive = message["info"], message["instances"], True
+                self.io = message.get("io", [])
                 self.status = Status(type="status", state=message["info"]["state"])
-            _answer(self._ready)  # type: ignore[arg-type]
+            _answer(self._ready)
         elif kind == "failed":
             diagnostics = [Diagnostic.model_validate(d) for d in message.get("diagnostics", [])]
             failure = BuildFailed(message.get("message", "the project does not build"), diagnostics)
-            _answer(self._ready, error=failure)  # type: ignore[arg-type]
+            _answer(self._ready, error=failure)
 
     def lost(self, reason: str | None = None) -> None:
         """The process ended, or broke the protocol (``reason``; the supervisor's thread): a crash, unless the
@@ -245,7 +247,7 @@ class SimulationHandle:
                     f"the build did not finish within {settings.build_timeout_s:g} s "
                     "(the server's build_timeout_s setting)"
                 )
-                _answer(self._ready, error=failure)  # type: ignore[arg-type]
+                _answer(self._ready, error=failure)
             return
         if not self._alive:
             return
@@ -263,7 +265,7 @@ class SimulationHandle:
                 kind="fault",
             )
 
-    def _fail(self, reason: str, kind: str) -> None:
+    def _fail(self, reason: str, kind: LogKind) -> None:
         """The process is ended or gone: the simulation is faulted with ``reason`` until a reset starts another."""
         with self._lock:
             if self._closed or not self._alive:
@@ -279,7 +281,7 @@ class SimulationHandle:
         self.traces = TraceInbox()
         for future, _ in waiting.values():
             _answer(future, error=CommandError("bad_state", reason))
-        self._record(Log(type="log", kind=kind, level="error", message=reason))  # type: ignore[arg-type]
+        self._record(Log(type="log", kind=kind, level="error", message=reason))
         for listener in listeners:
             listener.event(self.status)
 
@@ -381,9 +383,9 @@ class SimulationHandle:
         for listener in listeners:
             listener.event(entry)
 
-    def note(self, message: str, level: str = "info") -> None:
+    def note(self, message: str, level: LogLevel = "info") -> None:
         """A ``system`` entry of the server's own in the log (e.g. why the simulation was stopped)."""
-        self._record(Log(type="log", kind="system", level=level, message=message))  # type: ignore[arg-type]
+        self._record(Log(type="log", kind="system", level=level, message=message))
 
     # ------------------------------------------------------------------ listeners
 
@@ -401,10 +403,10 @@ class SimulationHandle:
 
     # ------------------------------------------------------------------ requests
 
-    def request(self, op: str, **args: Any) -> Future:
+    def request(self, op: str, **args: Any) -> Future[dict[str, Any]]:
         """Send the command ``op``; the future gets the reply (``result``, and ``info``: the simulation's figures
         right after the command), or a ``CommandError``."""
-        future: Future = Future()
+        future: Future[dict[str, Any]] = Future()
         with self._lock:
             if not self._alive:
                 future.set_exception(CommandError("bad_state", self._gone))
@@ -414,7 +416,7 @@ class SimulationHandle:
             connection = self._connection
         try:
             with self._send_lock:
-                connection.send({"id": request_id, "op": op, "args": args})  # type: ignore[union-attr]
+                connection.send({"id": request_id, "op": op, "args": args})  # type: ignore[union-attr]  # alive: connected
         except (OSError, ValueError):
             with self._lock:
                 self._requests.waiting.pop(request_id, None)
@@ -428,7 +430,8 @@ class SimulationHandle:
 
     def command(self, op: str, timeout: float | None = None, **args: Any) -> dict[str, Any]:
         """``request`` and wait; the simulation's ``info`` right after the command (later frames may be newer)."""
-        return self.request(op, **args).result(timeout)["info"]
+        info: dict[str, Any] = self.request(op, **args).result(timeout)["info"]
+        return info
 
     async def acall(self, op: str, **args: Any) -> Any:
         """``request`` from the event loop."""
@@ -458,19 +461,21 @@ class SimulationHandle:
 
     def inputs(self) -> dict[str, Any]:
         """The input events the simulation applied (``SimRunner.inputs``), as ``--events`` lines."""
-        return self.call("inputs", timeout=self.settings.build_timeout_s)
+        inputs: dict[str, Any] = self.call("inputs", timeout=self.settings.build_timeout_s)
+        return inputs
 
-    def inspect(self, paths: list[str] = (), probes: list[str] = ()) -> dict[str, Any]:  # type: ignore[assignment]
+    def inspect(self, paths: Sequence[str] = (), probes: Sequence[str] = ()) -> dict[str, Any]:
         """The simulation's whole state (tests, diagnosis): see ``SimRunner.inspect``."""
-        return self.call("inspect", paths=list(paths), probes=list(probes))
+        state: dict[str, Any] = self.call("inspect", paths=list(paths), probes=list(probes))
+        return state
 
     def read(self, path: str) -> object:
         return self.inspect(paths=[path])["values"][path]
 
 
-def _answer(future: Future, result: object = None, error: Exception | None = None) -> None:
+def _answer(future: Future[Any] | None, result: object = None, error: Exception | None = None) -> None:
     """Settle a request's future, unless its waiter gave up (a websocket client that left cancels it)."""
-    if future.done():
+    if future is None or future.done():
         return
     if error is not None:
         future.set_exception(error)

@@ -39,7 +39,7 @@ import random
 import threading
 import time
 from collections import deque
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any, ClassVar, Protocol
 
@@ -52,7 +52,7 @@ from ..engine.simulation import Simulation
 from ..engine.tasks import Pacer
 from ..ir import nodes as ir
 from ..ir import types as t
-from ..model.monitor import MAX_SPEED, MIN_SPEED, At, DisplayType, Log, TraceTrigger
+from ..model.monitor import MAX_SPEED, MIN_SPEED, At, DisplayType, ErrorCode, Log, LogKind, LogLevel, TraceTrigger
 from .conditions import BadCondition, Condition, parse_condition
 from .history import History, HistoryUnavailable
 from .trace import TraceBook, TraceRefused, plan_trace
@@ -65,20 +65,20 @@ _MISSING = object()
 class CommandError(Exception):
     """A command the simulation refuses; ``code`` is an ``Error`` message code (bad_path, bad_value, bad_state)."""
 
-    def __init__(self, code: str, message: str) -> None:
+    def __init__(self, code: ErrorCode, message: str) -> None:
         super().__init__(message)
-        self.code = code
+        self.code: ErrorCode = code
         self.message = message
 
 
 class Sink(Protocol):
     """Where a runner's messages go (plain data; called on the engine thread)."""
 
-    def status(self, state: str, at: dict | None) -> None: ...
+    def status(self, state: str, at: dict[str, Any] | None) -> None: ...
 
-    def log(self, entry: dict) -> None: ...
+    def log(self, entry: dict[str, Any]) -> None: ...
 
-    def frame(self, frame: dict) -> None: ...
+    def frame(self, frame: dict[str, Any]) -> None: ...
 
 
 #: How a submitted command is answered: (result, None) or (None, the refusal).
@@ -108,6 +108,7 @@ def at_halt(halt: Halt) -> At:
         element=halt.point.element or origin.element,
         line=origin.line,
         column=origin.column,
+        body=origin.body,
     )
 
 
@@ -121,6 +122,7 @@ def at_origin(origin: ir.Origin | None, pou: str | None, instance: str | None) -
         element=origin.element,
         line=origin.line,
         column=origin.column,
+        body=origin.body,
     )
 
 
@@ -132,6 +134,8 @@ def display_type(ty: t.IrType) -> DisplayType:
         return DisplayType(name=ty.name, names={str(value): name for name, value in ty.values})
     if isinstance(ty, t.Array):
         return DisplayType(name="ARRAY")
+    if isinstance(ty, t.Reference):  # it has no name of its own (ty.name raised AttributeError)
+        return DisplayType(name="REF_TO")
     return DisplayType(name=ty.fb if isinstance(ty, t.FbInstance) else ty.name)
 
 
@@ -170,8 +174,10 @@ class SimRunner:
         self.traces = TraceBook()
         self._ctx = sim.compiled.generated.context
         self._cv = threading.Condition()
-        self._commands: deque[tuple[str, dict, Reply]] = deque()
+        self._commands: deque[tuple[str, dict[str, Any], Reply]] = deque()
         self._running = False
+        self._to_transition = False  # a "transition" step runs scans until an SFC transition fires
+        self._run_after_transition = False  # it was asked for from a halt of a running simulation: keep running
         self._faulted = False
         self._seen_faults = 0
         self._seen_scans = sim.scan_count
@@ -182,7 +188,7 @@ class SimRunner:
         self._run_since: float | None = None
         self._last_publish = float("-inf")
         self._status: tuple[str, At | None] = (self._state(), None)
-        self._fault_report: tuple[Fault | None, dict | None] = (None, None)
+        self._fault_report: tuple[Fault | None, dict[str, Any] | None] = (None, None)
         # watches: each client's, and their union (what a frame reads)
         self._watches: dict[object, _Watch] = {}
         self._reader = sim.reader({})
@@ -298,6 +304,11 @@ class SimRunner:
             self._seen_faults = len(sim.faults)
             self._faulted = True
             self._set_running(False)
+        if self._to_transition and (sim.halted is not None or not self._running):
+            self._to_transition = False  # reached (or stopped): no further scans after this halt
+            self._set_running(self._run_after_transition and sim.halted is not None)
+            if sim.halted is None and sim.debugger is not None:
+                sim.debugger.waiting_for_transition = False  # stopped before a transition fired
         state = self._state()
         status = (state, at_halt(sim.halted) if sim.halted is not None else None)
         changed = status != self._status
@@ -318,7 +329,8 @@ class SimRunner:
         sim = self.sim
         if sim.variant not in ("monitor", "debug"):
             return
-        debugging = sim.halted is not None or (sim.debugger is not None and bool(sim.debugger.breakpoints))
+        waiting = sim.debugger is not None and (bool(sim.debugger.breakpoints) or sim.debugger.waiting_for_transition)
+        debugging = sim.halted is not None or waiting
         if debugging != (sim.variant == "debug"):
             sim.use_variant("debug" if debugging else "monitor")
 
@@ -330,11 +342,13 @@ class SimRunner:
             except CompileError as error:
                 raise CommandError("bad_state", f"cannot debug this program: {error}") from None
 
-    def _log(self, kind: str, level: str, message: str, at: dict | None = None, scan: int | None = None) -> None:
+    def _log(
+        self, kind: LogKind, level: LogLevel, message: str, at: dict[str, Any] | None = None, scan: int | None = None
+    ) -> None:
         entry = Log(
             type="log",
-            kind=kind,  # type: ignore[arg-type]
-            level=level,  # type: ignore[arg-type]
+            kind=kind,
+            level=level,
             message=message,
             scan=self.sim.scan_count if scan is None else scan,
             time_ms=self.sim.time_ms,
@@ -479,11 +493,23 @@ class SimRunner:
         self.sim.resume()
 
     def step(self, granularity: str = "statement") -> None:
-        """Halted: continue to the next pause point of this granularity. Else halt in the next scan."""
+        """Halted: continue to the next pause point of this granularity. Else halt in the next scan.
+
+        ``transition``: when no SFC transition fires in that scan, scans run on (paced) until one does; the
+        simulation then halts there, and Continue goes back to what it was doing: stopped, or running when the step
+        was asked for at a halt of a running simulation (as after any other step)."""
         if self._faulted and self.sim.halted is None:
             raise CommandError("bad_state", "the simulation stopped on a fault: reset it first")
+        if granularity == "transition" and self._running and self.sim.halted is None:
+            raise CommandError("bad_state", "the simulation is running: stop it before stepping to a transition")
         self._needs_debug()
+        running = self._running
         self.sim.step(granularity)
+        if granularity == "transition" and self.sim.halted is None and not self._faulted:
+            self._run_after_transition = running
+            self._log("state", "info", "running until an SFC transition fires")
+            self._to_transition = True
+            self._set_running(True)
 
     def set_breakpoint(self, pou: str, **where: Any) -> None:
         self._debug("set_breakpoint", pou, **where)
@@ -771,7 +797,7 @@ class SimRunner:
             return f"virtual time {self._until_ms:g} ms reached"
         return None
 
-    def inspect(self, paths: list[str] = (), probes: list[str] = ()) -> dict[str, Any]:  # type: ignore[assignment]
+    def inspect(self, paths: Sequence[str] = (), probes: Sequence[str] = ()) -> dict[str, Any]:
         """The whole state, for tests and diagnosis: every variable, forces, breakpoints, the halt, the variant."""
         sim = self.sim
         return {
@@ -865,7 +891,7 @@ class SimRunner:
         owner: object,
         paths: list[str],
         samples: int | None = None,
-        trigger: dict | None = None,
+        trigger: dict[str, Any] | None = None,
         trace_id: int = 0,
     ) -> None:
         """Record ``paths`` after every scan for ``owner`` (replacing its running trace); see ``trace.py``."""
@@ -949,6 +975,8 @@ def _where(at: At | None) -> str:
     if at is None:
         return "an unknown place"
     parts = [at.pou]
+    if at.body is not None:
+        parts.append(at.body.replace("s/", " ", 1))
     if at.network is not None:
         parts.append(f"network {at.network}")
     if at.element is not None:

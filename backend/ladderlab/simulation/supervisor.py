@@ -27,7 +27,7 @@ import time
 from collections.abc import Callable
 from multiprocessing import spawn
 from multiprocessing.connection import Connection, wait
-from multiprocessing.context import BaseContext
+from multiprocessing.context import ForkServerContext
 from multiprocessing.process import BaseProcess
 from typing import Any, Protocol
 
@@ -54,15 +54,15 @@ def receive(connection: Connection) -> Any:
 
 
 _context_lock = threading.Lock()
-_context: BaseContext | None = None
+_context: ForkServerContext | None = None
 
 
-def worker_context() -> BaseContext:
+def worker_context() -> ForkServerContext:
     """The multiprocessing context workers start from (a warm fork server, started in the background)."""
     global _context
     with _context_lock:
         if _context is None:
-            context = multiprocessing.get_context("forkserver")
+            context: ForkServerContext = multiprocessing.get_context("forkserver")
             context.set_forkserver_preload([PRELOAD])
             threading.Thread(target=_start_fork_server, name="ladderlab-forkserver", daemon=True).start()
             _context = context
@@ -98,7 +98,7 @@ def start_process(target: Callable[..., None], *args: Any, name: str) -> tuple[B
     process = context.Process(target=_with_settings, args=(settings, target, theirs, *args), name=name, daemon=True)
     with _starting:
         prepare = spawn.get_preparation_data
-        spawn.get_preparation_data = _without_main(prepare)
+        spawn.get_preparation_data = _without_main(prepare)  # type: ignore[assignment]  # patched while starting
         try:
             process.start()
         finally:
@@ -110,8 +110,8 @@ def start_process(target: Callable[..., None], *args: Any, name: str) -> tuple[B
 _starting = threading.Lock()
 
 
-def _without_main(prepare: Callable[[str], dict]) -> Callable[[str], dict]:
-    def preparation_data(name: str) -> dict:
+def _without_main(prepare: Callable[[str], dict[str, Any]]) -> Callable[[str], dict[str, Any]]:
+    def preparation_data(name: str) -> dict[str, Any]:
         data = prepare(name)
         data.pop("init_main_from_path", None)
         data.pop("init_main_from_name", None)
@@ -185,7 +185,7 @@ class WorkerHub:
                     while self._wake_r.poll():
                         self._wake_r.recv_bytes()
                     continue
-                self._read(ready)  # type: ignore[arg-type]
+                self._read(ready)  # type: ignore[arg-type]  # every waitable but the wake pipe is a Connection
             now = time.monotonic()
             if now >= next_check:
                 next_check = now + SUPERVISE_EVERY_S

@@ -43,8 +43,8 @@ def fired(condition: str, level: float | None, previous: object, current: object
     if condition == "falling":
         return bool(previous) and not current
     if condition == "cross_up":
-        return previous < level <= current  # type: ignore[operator]
-    return previous > level >= current  # type: ignore[operator]  # cross_down
+        return previous < level <= current  # type: ignore[operator]  # level triggers watch numbers
+    return previous > level >= current  # type: ignore[operator]  # cross_down: numbers, as above
 
 
 @dataclass(frozen=True)
@@ -103,7 +103,7 @@ class _Recorder:
     def sample(self, sim: Simulation) -> None:
         plan = self.plan
         if self.state == "waiting":
-            current = sim.value(plan.trigger)  # type: ignore[arg-type]
+            current = sim.value(plan.trigger)  # type: ignore[arg-type]  # waiting: a trigger was set
             previous, self.previous = self.previous, current
             if not fired(plan.condition, plan.level, previous, current):
                 return

@@ -7,7 +7,8 @@ functions could run on another machine behind a job queue (docs/architecture.md,
 
 ``run_simulation(connection, spec)``: limits its address space to ``spec["memory_bytes"]``,
 builds the project (``spec["project"]``, JSON text) and answers ``ready`` (the runner's
-``info`` and the POU instances) or ``failed`` (the build's diagnostics, or the limit it hit).
+``info``, the POU instances and the addresses the program uses) or ``failed`` (the build's
+diagnostics, or the limit it hit).
 Then the main thread runs the ``SimRunner`` while a link thread passes requests
 ``{"id", "op", "args"}`` to it, sends ``beat`` at least every ``beat_s`` (the supervisor ends a
 process that goes quiet) and ends the process when the server goes away. The runner's status,
@@ -30,7 +31,7 @@ from typing import Any
 from ..model import Diagnostic, Project, has_errors
 from .build import build_project
 from .check import check_project
-from .runner import CommandError, SimRunner
+from .runner import CommandError, Reply, SimRunner
 
 log = logging.getLogger(__name__)
 
@@ -54,13 +55,13 @@ class Link:
             self.last_sent = time.monotonic()
 
     # the runner's Sink
-    def status(self, state: str, at: dict | None) -> None:
+    def status(self, state: str, at: dict[str, Any] | None) -> None:
         self.send({"type": "status", "state": state, "at": at})
 
-    def log(self, entry: dict) -> None:
+    def log(self, entry: dict[str, Any]) -> None:
         self.send({"type": "log", "entry": entry})
 
-    def frame(self, frame: dict) -> None:
+    def frame(self, frame: dict[str, Any]) -> None:
         self.send({"type": "frame", **frame})
 
 
@@ -101,7 +102,8 @@ def run_simulation(connection: Connection, spec: dict[str, Any]) -> None:
         link.send({"type": "failed", "message": f"internal error while building: {type(error).__name__}: {error}"})
         return
     runner = SimRunner(sim, link, publish_s=spec["publish_s"], history_bytes=spec.get("history_bytes", 0))
-    link.send({"type": "ready", "info": runner.info(), "instances": sim.instances()})
+    io = [{"area": p.area, "address": p.address, "type": p.type, "names": p.names} for p in sim.io_points()]
+    link.send({"type": "ready", "info": runner.info(), "instances": sim.instances(), "io": io})
     threading.Thread(target=_receive, args=(link, runner, spec["beat_s"]), name="ladderlab-link", daemon=True).start()
     runner.serve()
 
@@ -121,7 +123,7 @@ def _receive(link: Link, runner: SimRunner, beat_s: float) -> None:
             link.send({"type": "beat"})
 
 
-def _replier(link: Link, runner: SimRunner, request_id: int):
+def _replier(link: Link, runner: SimRunner, request_id: int) -> Reply:
     """The answer to one request, with the simulation's figures right after it (what a REST command returns)."""
 
     def reply(result: object, error: CommandError | None) -> None:
@@ -156,5 +158,5 @@ def serve_builds(connection: Connection, memory_bytes: int | None) -> None:
             return
 
 
-def _dumped(diagnostics: list[Diagnostic]) -> list[dict]:
+def _dumped(diagnostics: list[Diagnostic]) -> list[dict[str, Any]]:
     return [d.model_dump(mode="json") for d in diagnostics]

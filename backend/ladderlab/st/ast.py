@@ -283,7 +283,24 @@ class Empty:
     span: Span = _span()
 
 
-Stmt = Assign | CallStmt | If | Case | For | While | Repeat | Exit | Return | Empty
+@dataclass(slots=True)
+class Label:
+    """A jump target of an IL body (IL-02); ST has none. Lowered as the start of a labelled IR block."""
+
+    name: str
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class Goto:
+    """An IL jump (JMP, JMPC, JMPCN: IL-23) to a ``Label`` of the same body when ``cond`` holds (None: always)."""
+
+    label: str
+    cond: Expr | None
+    span: Span = _span()
+
+
+Stmt = Assign | CallStmt | If | Case | For | While | Repeat | Exit | Return | Empty | Label | Goto
 
 # ---------------------------------------------------------------- types and declarations
 
@@ -421,6 +438,51 @@ class TypeBlock:
 
 
 @dataclass(slots=True)
+class SfcAssociation:
+    """``action(qualifier, time, indicator...)`` in a textual step: ``args`` as written after the qualifier."""
+
+    action: str
+    qualifier: str | None
+    args: list[Expr]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class SfcStep:
+    name: str
+    initial: bool
+    associations: list[SfcAssociation]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class SfcTransition:
+    """``TRANSITION [name] [(PRIORITY := n)] FROM steps TO steps := condition; END_TRANSITION``."""
+
+    name: str | None
+    priority: int | None
+    sources: list[str]
+    targets: list[str]
+    condition: Expr
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class SfcAction:
+    name: str
+    body: list[Stmt]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class Sfc:
+    """A textual SFC body (IEC 61131-3 B.1.6): steps, transitions and actions in the order written."""
+
+    items: list[SfcStep | SfcTransition | SfcAction]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
 class Pou:
     kind: str  # PROGRAM, FUNCTION_BLOCK, FUNCTION
     name: str
@@ -428,6 +490,7 @@ class Pou:
     var_blocks: list[VarBlock]
     body: list[Stmt]
     span: Span = _span()
+    sfc: Sfc | None = None  # a body written in textual SFC (``body`` is then empty)
 
 
 @dataclass(slots=True)
@@ -448,8 +511,42 @@ class ProgramConfig:
 
 
 @dataclass(slots=True)
-class Resource:
+class AccessDecl:
+    """``name : path : type [READ_WRITE | READ_ONLY];`` of VAR_ACCESS: a named access path (CFG-08)."""
+
     name: str
+    path: Expr
+    type: TypeSpec
+    direction: str | None = None  # READ_WRITE / READ_ONLY (None: READ_ONLY, IEC's default)
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class AccessBlock:
+    decls: list[AccessDecl]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class ConfigDecl:
+    """``inst.var [AT %addr] : type [:= value];`` of VAR_CONFIG: an instance variable's address or initial value."""
+
+    path: Expr
+    address: str | None
+    type: TypeSpec
+    init: Init | None = None
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class ConfigBlock:
+    decls: list[ConfigDecl]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class Resource:
+    name: str | None  # None: a configuration's tasks and programs written without a RESOURCE block
     on: str | None
     items: list[TaskConfig | ProgramConfig | VarBlock]
     span: Span = _span()
@@ -458,7 +555,7 @@ class Resource:
 @dataclass(slots=True)
 class Configuration:
     name: str
-    items: list[Resource | TaskConfig | ProgramConfig | VarBlock]
+    items: list[Resource | TaskConfig | ProgramConfig | VarBlock | AccessBlock | ConfigBlock]
     span: Span = _span()
 
 

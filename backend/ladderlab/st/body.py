@@ -11,14 +11,18 @@ from collections.abc import Callable
 from typing import Any
 
 from ..iec import stdlib
+from ..iec.addresses import parse_address, part_type, partial_access, same_location
 from ..iec.spelling import did_you_mean
 from . import ast
 from . import types as t
 from .calls import check_call
 from .cases import check_case
+from .context_typing import default_type, settle, untyped_leaves, untyped_result
 from .rules import EnumValue, assignable_or_report, constant_value, root_name
 from .symbols import CheckResult, PouInfo, Symbol
 from .types import ERROR, Type
+
+_PART_NAMES = {1: "bits", 8: "bytes", 16: "words", 32: "double words", 64: "long words"}
 
 Report = Callable[..., None]  # report(code, message, node, severity="error")
 
@@ -37,7 +41,6 @@ _TIME_RULES = {
     ("-", "dt", "dt"): "TIME",
     ("-", "date", "date"): "TIME",
 }
-_DIRECT_DEFAULTS = {"X": "BOOL", "B": "BYTE", "W": "INT", "D": "REAL", "L": "LWORD"}  # S002 Table 10.1 (ST-13)
 
 
 class BodyChecker:
@@ -75,9 +78,22 @@ class BodyChecker:
 
     # ------------------------------------------------------------ expressions
     def expr(self, node: ast.Expr, expected: Type | None = None) -> Type:
+        """Type a whole expression where it is used (an assignment's value, a condition, an argument ...): its
+        literals and generic operations take their types from ``expected`` (st/context_typing.py)."""
+        ty = self._expr(node, expected)
+        node.ty = ty
+        if type(node) is not ast.Name and ty is not ERROR:  # a declared variable, the commonest, has nothing to fix
+            settle(self, node, expected)
+        return node.ty
+
+    def typed(self, node: ast.Expr, expected: Type | None = None) -> Type:
+        """An operand's own type before its context is known (literals untyped, see ``expr``)."""
         ty = self._expr(node, expected)
         node.ty = ty
         return ty
+
+    def settle(self, node: ast.Expr, context: Type | None) -> None:
+        settle(self, node, context)
 
     def _expr(self, node: ast.Expr, expected: Type | None) -> Type:
         check = _EXPRESSION_CHECKS.get(type(node))
@@ -107,13 +123,11 @@ class BodyChecker:
                 return ERROR
             self.report("ST-UNKNOWN-TYPE", f"unknown type '{node.type_name}' in typed literal", node)
             return ERROR
-        value = self.expr(node.value)
-        if (
+        value = self.typed(node.value)
+        if isinstance(value, t.UNTYPED) and t.takes_literal(target, value):
+            self.settle(node.value, target)  # reports a value out of the type's range (ST-RANGE)
+        else:
             assignable_or_report(self, target, value, node, f"{node.type_name}# literal")
-            and isinstance(node.value, ast.IntLit)
-            and not t.literal_fits(target, node.value.value)
-        ):
-            self.report("ST-RANGE", f"{node.value.value} is out of range for {target}", node)
         return target
 
     def _name(self, node: ast.Name, expected: Type | None) -> Type:
@@ -124,6 +138,10 @@ class BodyChecker:
         if self.pou is not None and self.pou.kind == "FUNCTION" and node.name.upper() == self.pou.name.upper():
             node.ref = self.pou
             return self.pou.return_type or ERROR
+        program = self.result.pous.get(node.name.upper())
+        if program is not None and program.kind == "PROGRAM":  # its outputs and SFC steps are read (ST-60, SFC-06)
+            node.ref = program
+            return t.FbType(program.name, pou=program)
         values = self.enum_values(node.name)
         if isinstance(expected, t.EnumType):
             values = [v for v in values if v.type is expected] or values
@@ -134,19 +152,27 @@ class BodyChecker:
             names = ", ".join(f"{v.type.name}#{v.name}" for v in values)
             self.report("ST-AMBIGUOUS", f"'{node.name}' is a value of several enumerations: write {names}", node)
             return ERROR
+        if node.name.upper() == "NULL":  # IEC 61131-3 ed. 3: the reference to nothing (unless declared otherwise)
+            return t.NULL
         self.report(
             "ST-UNKNOWN-VAR", f"unknown variable '{node.name}'" + did_you_mean(node.name, self._visible_names()), node
         )
         return ERROR
 
     def _direct(self, node: ast.DirectAddr) -> Type:
+        """A direct address: the variable declared AT it (in this POU, else globally), else one of its size's
+        default type (ST-13, iec/addresses.py)."""
+        try:
+            address = parse_address(node.address)
+        except ValueError as error:
+            self.report("ST-ADDRESS", str(error), node)
+            return ERROR
         for scope in (self.pou.symbols.values() if self.pou else (), self.result.globals.values()):
             for symbol in scope:
-                if symbol.address and symbol.address.upper() == node.address:
+                if symbol.address and same_location(symbol.address, address):
                     node.ref = symbol
                     return symbol.type
-        size = node.address[2] if len(node.address) > 2 and node.address[2].isalpha() else "X"
-        return t.Elementary(_DIRECT_DEFAULTS.get(size, "BOOL"))
+        return t.Elementary(address.default_type)
 
     def _member(self, node: ast.Member) -> Type:
         base = self.expr(node.base)
@@ -165,10 +191,27 @@ class BodyChecker:
             return ERROR
         if isinstance(base, t.FbType):
             return self._fb_member(node, base)
-        if node.name.isdigit() and t.category(base) in ("bits", "int"):
-            return t.BOOL  # bit access x.3
+        part = partial_access(node.name)
+        if part is not None and isinstance(base, t.Elementary) and base.category in ("bits", "int"):
+            return self._part(node, base, *part)
         self.report("ST-UNKNOWN-MEMBER", f"'{node.name}' cannot be selected from a {base}", node)
         return ERROR
+
+    def _part(self, node: ast.Member, base: t.Elementary, width: int, index: int) -> Type:
+        """Bit access ``x.3`` / ``x.%X3`` and partial access ``x.%B1``, ``.%W0``, ``.%D1``, ``.%L0`` (IEC 61131-3
+        ed. 3, 6.5.6; on integers too, as CODESYS allows), numbered from the least significant part."""
+        bits = base.info.bits
+        if index >= bits // width:
+            what = _PART_NAMES[width]
+            self.report(
+                "ST-UNKNOWN-MEMBER",
+                f"'{node.name}' is outside a {base}: it has {what} 0..{bits // width - 1}"
+                if bits >= width
+                else f"a {base} has no {what}: it is {bits} bits wide",
+                node,
+            )
+            return ERROR
+        return t.elementary(part_type(width)) or ERROR
 
     def _fb_member(self, node: ast.Member, base: t.FbType) -> Type:
         upper = node.name.upper()
@@ -194,7 +237,14 @@ class BodyChecker:
             )
             return ERROR
         node.ref = symbol
-        if symbol.var_class not in ("VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT"):
+        if symbol.var_class == "VAR_IN_OUT":
+            self.report(
+                "ST-NOT-ACCESSIBLE",
+                f"'{node.name}' is an in-out of {base.name}: it stands for the caller's variable during a call "
+                "only, so it cannot be read or written from outside (pass the variable in the call)",
+                node,
+            )
+        elif symbol.var_class not in ("VAR_INPUT", "VAR_OUTPUT") and not _sfc_state(symbol):
             self.report(
                 "ST-NOT-ACCESSIBLE",
                 f"'{node.name}' is internal to {base.name}: only its inputs and outputs can be used from outside",
@@ -229,7 +279,7 @@ class BodyChecker:
                 self.report("ST-INDEX", f"constant array index {value} is outside {array}", index)
 
     def _unary(self, node: ast.Unary) -> Type:
-        operand = self.expr(node.operand)
+        operand = self.typed(node.operand)
         if operand is ERROR:
             return ERROR
         if node.op == "NOT":
@@ -237,16 +287,16 @@ class BodyChecker:
                 return t.BOOL if isinstance(operand, t.UntypedInt) and operand.value in (0, 1) else operand
             self.report("ST-TYPE-MISMATCH", f"NOT needs BOOL or a bit string (ANY_BIT), not {operand}", node)
             return ERROR
-        if isinstance(operand, t.UntypedInt):
-            return t.UntypedInt(-operand.value if operand.value is not None else None)
+        if isinstance(operand, t.UNTYPED):
+            return type(operand)(-operand.value if operand.value is not None else None)
         if t.in_family(operand, "ANY_NUM") or t.category(operand) == "time":
             return operand
         self.report("ST-TYPE-MISMATCH", f"unary '-' needs a number or TIME, not {operand}", node)
         return ERROR
 
     def _binary(self, node: ast.Binary) -> Type:
-        left = self.expr(node.left)
-        right = self.expr(node.right)
+        left = self.typed(node.left)
+        right = self.typed(node.right)
         if left is ERROR or right is ERROR:
             return ERROR
         op = node.op
@@ -256,7 +306,7 @@ class BodyChecker:
         if time_rule:
             return t.Elementary(time_rule)
         if op in ("*", "/") and t.category(left) == "time" and t.in_family(right, "ANY_NUM"):
-            return t.TIME  # ST-21: TIME * ANY_NUM, TIME / ANY_NUM
+            return t.TIME  # ST-21: TIME * ANY_NUM, TIME / ANY_NUM (the number keeps its own type)
         if op == "*" and t.category(right) == "time" and t.in_family(left, "ANY_NUM"):
             return t.TIME
         if op in ("+", "-") and isinstance(left, t.PointerType) and t.in_family(right, "ANY_INT"):
@@ -264,6 +314,8 @@ class BodyChecker:
         if op == "+" and isinstance(left, t.StringType) and isinstance(right, t.StringType):
             return left  # FUN-82 (Mosaic): '+' concatenates
         combined, verdict = t.common(left, right)
+        if isinstance(combined, t.UNTYPED):
+            combined = untyped_result(op, left, right) if op not in _COMPARISON else combined
         if verdict == "error":
             self.report(
                 "ST-TYPE-MISMATCH",
@@ -288,6 +340,11 @@ class BodyChecker:
                 self.report("ST-TYPE-MISMATCH", "enumeration values can only be compared with = and <>", node)
             elif isinstance(combined, (t.ArrayType, t.StructType, t.FbType)):
                 self.report("ST-TYPE-MISMATCH", f"cannot compare values of type {combined}", node)
+            operands = t.concrete(combined) if not isinstance(combined, t.UNTYPED) else None
+            if operands is None:  # two literal expressions: the smallest type that fits both
+                operands = default_type(untyped_leaves(node.left) + untyped_leaves(node.right))
+            self.settle(node.left, operands)
+            self.settle(node.right, operands)
             return t.BOOL
         if op in _LOGIC:
             if t.in_family(combined, "ANY_BIT"):
@@ -306,7 +363,7 @@ class BodyChecker:
 
     def _power(self, node: ast.Binary, left: Type, right: Type) -> Type:
         if isinstance(left, t.UntypedInt):
-            left = t.UntypedReal()  # FUN-33: an untyped integer base is promoted
+            left = t.UntypedReal(left.value)  # FUN-33: an untyped integer base is promoted
         if not t.in_family(left, "ANY_REAL"):
             self.report(
                 "ST-TYPE-MISMATCH",
@@ -333,6 +390,12 @@ class BodyChecker:
         elif isinstance(stmt, ast.CallStmt):
             if isinstance(stmt.call, ast.Call):
                 self.call(stmt.call, statement=True)
+                ref = stmt.call.ref
+                if isinstance(ref, Symbol) and ref.implicit is not None:
+                    self.report(
+                        "ST-NOT-CALLABLE", f"'{ref.name}' is a {ref.implicit} of the SFC: the chart runs it", stmt
+                    )
+                self.settle(stmt.call, None)
             else:
                 self.expr(stmt.call)
                 self.report(
@@ -362,7 +425,7 @@ class BodyChecker:
         self.loop_depth -= 1
 
     def condition(self, cond: ast.Expr, keyword: str) -> None:
-        ty = self.expr(cond)
+        ty = self.expr(cond, t.BOOL)
         if ty is not ERROR and not t.same(ty, t.BOOL):
             self.report("ST-TYPE-MISMATCH", f"the {keyword} condition must be BOOL, not {ty}", cond)
 
@@ -381,9 +444,23 @@ class BodyChecker:
             return ERROR
         ty = self.expr(node)
         root = root_name(node)
-        if isinstance(node, ast.Name) and node.ref is self.pou and self.pou is not None:
+        if root is not None and root.ref is self.pou and self.pou is not None:  # F := ..., F[2] := ..., F.a := ...
             self.result_assigned = True
         symbol = root.ref if root is not None else None
+        if root is not None and isinstance(root.ref, PouInfo) and root.ref.kind == "PROGRAM" and node is not root:
+            self.report(
+                "ST-NOT-LVALUE",
+                f"the variables of the program {root.ref.name} can be read from other POUs, not assigned",
+                node,
+            )
+        read_only = _implicit_in(node)
+        if read_only is not None:
+            self.report(
+                "ST-READONLY",
+                f"'{read_only.name}' is a{'n' if read_only.implicit == 'action' else ''} {read_only.implicit} of the "
+                "SFC: the chart sets it, a program can only read it",
+                node,
+            )
         if isinstance(symbol, Symbol):
             if symbol.constant:
                 self.report("ST-CONST-WRITE", f"'{symbol.name}' is a CONSTANT and cannot be assigned", node)
@@ -431,7 +508,7 @@ class BodyChecker:
 # diagrams); methods are looked up on the checker, so subclasses may override them.
 _EXPRESSION_CHECKS: dict[type, Callable[[BodyChecker, Any, Type | None], Type]] = {
     ast.IntLit: lambda checker, node, expected: t.UntypedInt(node.value),
-    ast.RealLit: lambda checker, node, expected: t.UntypedReal(),
+    ast.RealLit: lambda checker, node, expected: t.UntypedReal(node.value),
     ast.BoolLit: lambda checker, node, expected: t.BOOL,
     ast.StringLit: lambda checker, node, expected: t.StringType(node.wide),
     ast.TimeLit: lambda checker, node, expected: t.Elementary(node.kind),
@@ -445,6 +522,30 @@ _EXPRESSION_CHECKS: dict[type, Callable[[BodyChecker, Any, Type | None], Type]] 
     ast.Unary: lambda checker, node, expected: checker._unary(node),
     ast.Binary: lambda checker, node, expected: checker._binary(node),
 }
+
+
+#: Implicit SFC variables other POUs may read (``sfc1.step1.X``); named transitions stay internal.
+SFC_PUBLIC = ("step", "action")
+
+
+def _sfc_state(symbol: Symbol) -> bool:
+    """A step or action of an SFC, implicit or (in its ST export) declared as an SFC_STEP / ACTION_CONTROL: other
+    POUs may read it."""
+    if symbol.implicit in SFC_PUBLIC:
+        return True
+    ty = symbol.type
+    return isinstance(ty, t.FbType) and ty.std is not None and ty.std.name in ("SFC_STEP", "ACTION_CONTROL")
+
+
+def _implicit_in(node: ast.Expr) -> Symbol | None:
+    """The implicit SFC variable (step, action) an assignment target writes into, if any: the root or a member."""
+    while isinstance(node, (ast.Member, ast.Index, ast.Deref)):
+        ref = getattr(node, "ref", None)
+        if isinstance(ref, Symbol) and ref.implicit in SFC_PUBLIC:
+            return ref
+        node = node.base
+    ref = getattr(node, "ref", None)
+    return ref if isinstance(ref, Symbol) and ref.implicit in SFC_PUBLIC else None
 
 
 def _is_output(node: ast.Member) -> bool:

@@ -15,6 +15,7 @@ from ..iec import stdlib
 from ..iec.spelling import did_you_mean
 from . import ast
 from . import types as t
+from .context_typing import default_type, untyped_leaves
 from .printer import print_expression
 from .rules import assignable_or_report, root_name
 from .symbols import PouInfo, Symbol
@@ -118,6 +119,15 @@ def _instance_call(checker: Any, node: ast.Call, ty: Type, statement: bool) -> T
         )
         return ERROR
     node.ref = root_name(node.callee).ref if root_name(node.callee) is not None else None
+    if isinstance(node.ref, Symbol) and node.ref.var_class == "VAR_INPUT" and node.callee is root_name(node.callee):
+        _args_untyped(checker, node)
+        checker.report(
+            "ST-NOT-CALLABLE",
+            f"'{node.ref.name}' is an input: a function block instance passed as an input is a copy whose "
+            "outputs can be read, but it cannot be called (declare it VAR_IN_OUT to call the caller's instance)",
+            node.callee,
+        )
+        return ERROR
     if not statement:
         _args_untyped(checker, node)
         checker.report(
@@ -281,49 +291,67 @@ def _std_call(checker: Any, node: ast.Call, function: stdlib.StdFunction) -> Typ
     generic = _generic_type(checker, node, function, bound)
     if generic is ERROR:
         return ERROR
-    return generic if function.result == stdlib.T else (t.elementary(function.result) or ERROR)
+    if function.result != stdlib.T:
+        return t.elementary(function.result) or ERROR
+    if isinstance(generic, t.StringType) and function.group == "string":  # CONCAT(a, b) is longer than a
+        return t.StringType(generic.wide)
+    return generic
 
 
 def _generic_type(checker: Any, node: ast.Call, function: stdlib.StdFunction, bound) -> Type:
-    """Type every argument; the generic inputs must share one type T within the pin's family (FUN-02)."""
+    """Type every argument; the generic inputs share one type T within the pin's family (FUN-02).
+
+    T is the ``lub`` of the typed generic arguments (untyped when all are literals). When the result is T the
+    call adapts to its context, which fixes T later (st/context_typing.py); otherwise T is fixed here."""
     shared: Type | None = None
+    generic_values = []
     for arg, pin in bound:
-        value = checker.expr(arg.value)
+        if not pin.generic:
+            fixed = t.elementary(pin.type)
+            value = checker.expr(arg.value, fixed)
+            if value is ERROR:
+                return ERROR
+            if not t.in_family(value, pin.type) and t.assignable(fixed or t.ERROR, value) == "error":
+                message = f"input {pin.name} of {function.name} must be {pin.type}, not {value}"
+                checker.report("ST-TYPE-MISMATCH", message, arg.value)
+            continue
+        value = checker.typed(arg.value)
         if value is ERROR:
             return ERROR
-        if pin.generic:
-            if shared is None:
-                shared = value
-                continue
-            combined, verdict = t.common(shared, value)
-            if verdict == "error":
-                checker.report(
-                    "ST-TYPE-MISMATCH",
-                    f"{function.name} needs inputs of one type: got {shared} and {value}; "
-                    "convert one of them with a *_TO_* function",
-                    arg.value,
-                )
-                return ERROR
-            if verdict == "widen":
-                checker.report(
-                    "ST-IMPLICIT-CONV",
-                    f"{function.name} mixes {shared} and {value}: the narrower one is converted implicitly",
-                    arg.value,
-                    severity="warning",
-                )
-            shared = combined
-        elif not t.in_family(value, pin.type) and t.assignable(t.elementary(pin.type) or t.ERROR, value) == "error":
+        generic_values.append(arg.value)
+        if shared is None:
+            shared = value
+            continue
+        combined, verdict = t.common(shared, value)
+        if verdict == "error":
             checker.report(
-                "ST-TYPE-MISMATCH", f"input {pin.name} of {function.name} must be {pin.type}, not {value}", arg.value
+                "ST-TYPE-MISMATCH",
+                f"{function.name} needs inputs of one type: got {shared} and {value}; "
+                "convert one of them with a *_TO_* function",
+                arg.value,
             )
+            return ERROR
+        if verdict == "widen":
+            checker.report(
+                "ST-IMPLICIT-CONV",
+                f"{function.name} mixes {shared} and {value}: the narrower one is converted implicitly",
+                arg.value,
+                severity="warning",
+            )
+        shared = t.untyped_pair(shared, value) if isinstance(combined, t.UNTYPED) else combined
     generic_pins = [p for p in function.inputs if p.generic]
     if shared is None:
         return ERROR if generic_pins and function.result == stdlib.T else t.VOID
-    shared = t.concrete(shared) if function.result == stdlib.T else shared
     family = generic_pins[0].type
     if not t.in_family(shared, family):
         checker.report("ST-TYPE-MISMATCH", f"{function.name} works on {family}, not on {shared}", node)
         return ERROR
+    if function.result != stdlib.T:  # a comparison: T takes no context from the BOOL result
+        fixed = shared
+        if isinstance(shared, t.UNTYPED):
+            fixed = default_type([leaf for value in generic_values for leaf in untyped_leaves(value)], family)
+        for value in generic_values:
+            checker.settle(value, fixed)
     return shared
 
 
@@ -342,4 +370,32 @@ def _system_call(checker: Any, node: ast.Call, name: str) -> Type:
     ty = checker.expr(value)
     if not isinstance(value, _WRITABLE):
         checker.report("ST-NOT-LVALUE", f"{name} needs a variable", value)
+        return t.PointerType(ty)
+    problem = _unreferable(checker, value)
+    if problem is not None:
+        checker.report("ST-REF", f"{name} cannot refer to {problem}", value)
     return t.PointerType(ty)
+
+
+def _unreferable(checker: Any, value: ast.Expr) -> str | None:
+    """Why a reference to ``value`` would outlive its variable or break a rule (None: it may be referred to).
+    IEC 61131-3 ed. 3 6.4.4.10: no reference to a temporary - a VAR_TEMP or a function's variable lives only
+    while the call runs - so a reference never dangles; and none to a CONSTANT, which could then be written."""
+    root = value
+    while isinstance(root, (ast.Member, ast.Index)):
+        root = root.base
+    if isinstance(root, ast.Name) and isinstance(root.ref, PouInfo):
+        return f"the result of the function {root.ref.name}: it lives only while the call runs"
+    if not isinstance(root, ast.Name) or not isinstance(root.ref, Symbol):
+        return None  # through a reference (r^.x): the variable r refers to
+    symbol: Symbol = root.ref
+    if symbol.constant:
+        return f"the CONSTANT {symbol.name}: it could be written through the reference"
+    function = checker.pou is not None and checker.pou.kind == "FUNCTION" and symbol.pou is not None
+    if symbol.var_class == "VAR_TEMP" or (function and symbol.var_class != "VAR_EXTERNAL"):
+        where = "VAR_TEMP" if symbol.var_class == "VAR_TEMP" else f"the function {checker.pou.name}"
+        return (
+            f"'{symbol.name}', a variable of {where}: it lives only while the call runs, the reference would "
+            "outlive it (declare it in a program or function block, or as a global)"
+        )
+    return None

@@ -11,6 +11,7 @@ from __future__ import annotations
 from typing import Any
 
 from ..iec import stdlib
+from ..iec.addresses import incomplete, parse_address, type_problem
 from ..iec.spelling import did_you_mean
 from ..model.diagnostics import Diagnostic
 from ..model.names import pou_name_problem
@@ -18,8 +19,20 @@ from ..model.project import Project
 from . import ast
 from . import types as t
 from .body import BodyChecker
-from .parser import parse_declarations, parse_expression, parse_source, parse_statements
-from .rules import assignable_or_report, constant_value
+from .configuration import check_configuration, configuration_globals
+from .il_check import check_il_body
+from .il_parser import IlBody, parse_il
+from .parser import (
+    keywords,
+    parse_declarations,
+    parse_expression,
+    parse_source,
+    parse_statements,
+    parse_type,
+    reserved_words,
+)
+from .rules import assignable_or_report, check_init, constant_value
+from .sfc import check_actions, declare_implicit, parse_actions
 from .symbols import CheckResult, PouInfo, Symbol, TypeDef
 from .types import ERROR, Type
 
@@ -66,29 +79,56 @@ class ProjectChecker:
     # ------------------------------------------------------------ driver
     def run(self) -> CheckResult:
         types = self._parse(_parse_types, self.project.types, "types", None)
-        globals_ = self._parse(parse_declarations, self.project.globals, "globals", None) or []
-        declarations, bodies = {}, {}
+        globals_ = [  # the project's, the configuration's and each resource's VAR_GLOBAL blocks, with their file
+            (block, file)
+            for text, file in [(self.project.globals, "globals"), *configuration_globals(self.project)]
+            for block in self._parse(parse_declarations, text, file, None) or []
+        ]
+        declarations, bodies, actions = {}, {}, {}
         for pou in self.project.pous:
             declarations[pou.name] = (
                 self._parse(parse_declarations, pou.declarations, f"{pou.name}/declarations", pou.name) or []
             )
             if pou.language == "st":
                 bodies[pou.name] = self._parse(parse_statements, pou.body, f"{pou.name}/body", pou.name)
+            elif pou.language == "sfc":
+                actions[pou.name] = parse_actions(pou)
+                for parsed in actions[pou.name].values():
+                    self.result.diagnostics += parsed.diagnostics
+            elif pou.language == "il":
+                parsed = parse_il(pou.body, file=f"{pou.name}/body", pou=pou.name)
+                self.result.diagnostics += parsed.diagnostics
+                bodies[pou.name] = parsed.body
         self._register_pous()
-        constants = [b for b in globals_ if b.constant and all(_elementary_decl(d) for d in b.decls)]
+        constants = [(b, f) for b, f in globals_ if b.constant and all(_elementary_decl(d) for d in b.decls)]
         self._declare_globals(constants)  # first, so array bounds in TYPEs may name them (TYP-22)
         self._register_types(types or [])
-        self._declare_globals([b for b in globals_ if b not in constants])
+        self._declare_globals([(b, f) for b, f in globals_ if (b, f) not in constants])
         for pou in self.project.pous:
             self._declare_pou(pou, declarations[pou.name])
+        for pou in self.project.pous:
+            info = self.result.pous.get(pou.name.upper())
+            if pou.language == "sfc" and info is not None and info.name == pou.name:
+                declare_implicit(pou, info, self.result.diagnostics)
         for pou in self.project.pous:
             self._check_initial_values(pou)
         for pou in self.project.pous:
             info = self.result.pous.get(pou.name.upper())
-            if info is not None and info.language == "st" and bodies.get(pou.name) is not None:
+            if info is not None and info.language in ("st", "il") and bodies.get(pou.name) is not None:
                 self._check_body(info, bodies[pou.name])
+            if info is not None and info.name == pou.name and pou.name in actions:
+                check_actions(
+                    lambda file, info=info: BodyChecker(self.result, info, self._reporter(file, info.name)),
+                    pou,
+                    info,
+                    actions[pou.name],
+                )
         self._check_recursion()
+        self.result.configuration = check_configuration(self.result, self.project, self.resolve, self._reporter_for)
         return self.result
+
+    def _reporter_for(self, file: str) -> Reporter:
+        return self._reporter(file, None)
 
     def _parse(self, parse, text: str, file: str, pou: str | None):
         result = parse(text, file=file, pou=pou)
@@ -112,6 +152,8 @@ class ProjectChecker:
                     f"'{pou.name}' is a standard function or function block name and cannot be redefined",
                     None,
                 )
+            if upper in keywords():
+                where("ST-NAME", f"'{pou.name}' is a keyword and cannot name a POU (KW-02)", None)
             info = self.result.pous[upper] = PouInfo(pou.name, _KIND[pou.kind], pou.language, None)
             info.plant = pou.kind == "plant"
             if not isinstance(pou.body, str):  # LD boxes and FBD blocks: edges of the call graph (POU-02)
@@ -258,27 +300,36 @@ class ProjectChecker:
         return enum
 
     # ------------------------------------------------------------ variables
-    def _declare_globals(self, blocks: list[ast.VarBlock]) -> None:
-        report = self._reporter("globals", None)
-        checker = BodyChecker(self.result, None, report)
-        before = set(self.result.globals)
-        for block in blocks:
-            if block.kind not in ("VAR_GLOBAL", "VAR_EXTERNAL"):
-                report("ST-DECL", f"only VAR_GLOBAL blocks belong in the global variables, not {block.kind}", block)
-            self.declare_block(block, self.result.globals, checker, None)
-        for key, symbol in self.result.globals.items():
-            if key in before:
-                continue
-            program = self.result.pous.get(key)
-            if program is not None and program.kind == "PROGRAM":  # ST-08: both name an instance of the resource
+    def _declare_globals(self, blocks: list[tuple[ast.VarBlock, str]]) -> None:
+        """VAR_GLOBAL blocks (with the file each is in: the project's globals, a configuration's or a resource's)."""
+        for block, file in blocks:
+            report = self._reporter(file, None)
+            checker = BodyChecker(self.result, None, report)
+            if block.kind != "VAR_GLOBAL":
+                what = "it refers to a global variable from inside a POU" if block.kind == "VAR_EXTERNAL" else ""
                 report(
-                    "ST-DUPLICATE",
-                    f"'{symbol.name}' is the name of the program {program.name}: a global variable "
-                    "and a program instance cannot share a name",
-                    symbol,
+                    "ST-DECL",
+                    f"only VAR_GLOBAL blocks belong in the global variables, not {block.kind}"
+                    + (f" ({what})" if what else ""),
+                    block,
                 )
-            if symbol.init is not None:
-                check_init(checker, symbol.type, symbol.init)
+                continue
+            before = set(self.result.globals)
+            self.declare_block(block, self.result.globals, checker, None)
+            for key in self.result.globals.keys() - before:
+                self._check_global(self.result.globals[key], checker)
+
+    def _check_global(self, symbol: Symbol, checker: BodyChecker) -> None:
+        program = self.result.pous.get(symbol.name.upper())
+        if program is not None and program.kind == "PROGRAM" and self.project.configuration is None:
+            checker.report(  # ST-08: both name an instance of the resource (a configuration names its instances)
+                "ST-DUPLICATE",
+                f"'{symbol.name}' is the name of the program {program.name}: a global variable "
+                "and a program instance cannot share a name",
+                symbol,
+            )
+        if symbol.init is not None:
+            check_init(checker, symbol.type, symbol.init)
 
     def _declare_pou(self, pou, blocks: list[ast.VarBlock]) -> None:
         info = self.result.pous.get(pou.name.upper())
@@ -287,11 +338,7 @@ class ProjectChecker:
         report = self._reporter(f"{pou.name}/declarations", pou.name)
         checker = BodyChecker(self.result, info, report)
         if pou.return_type:
-            parsed = parse_expression(pou.return_type)
-            spec = ast.NamedType(pou.return_type.strip()) if isinstance(parsed.ast, ast.Name) else None
-            info.return_type = self.resolve(spec, checker) if spec else ERROR
-            if spec is None:
-                report("ST-UNKNOWN-TYPE", f"'{pou.return_type}' is not a type name", None)
+            self._declare_return_type(pou, info)
         elif info.kind == "FUNCTION":
             report("ST-DECL", f"the function {pou.name} needs a return type", None)
         for block in blocks:
@@ -303,6 +350,22 @@ class ProjectChecker:
         for symbol in info.symbols.values():
             if isinstance(symbol.type, t.FbType) and symbol.type.pou is not None:
                 info.calls.add(symbol.type.pou.name.upper())
+
+    def _declare_return_type(self, pou, info: PouInfo) -> None:
+        """A function's result type: any type specification (``STRING[20]``, ``INT (0..100)``, a TYPE's name);
+        its diagnostics are located in the ``<POU>/return_type`` text."""
+        file = f"{pou.name}/return_type"
+        parsed = parse_type(pou.return_type, file=file, pou=pou.name)
+        self.result.diagnostics += parsed.diagnostics
+        report = self._reporter(file, pou.name)
+        if parsed.ast is None:
+            info.return_type = ERROR
+            return
+        info.return_spec = parsed.ast
+        info.return_type = self.resolve(parsed.ast, BodyChecker(self.result, info, report))
+        if isinstance(info.return_type, t.FbType):
+            report("ST-DECL", f"a function cannot return a function block instance ({info.return_type.name})", None)
+            info.return_type = ERROR
 
     def _check_initial_values(self, pou) -> None:
         """After every POU is declared, so an FB instance may be initialised (``f : Fb := (n := 4)``) whatever
@@ -329,6 +392,8 @@ class ProjectChecker:
             for name in decl.names:
                 if name.name:
                     check_identifier(name.name, name, report)
+                if name.address:
+                    self._check_address(block, name, ty, pou, report)
                 key = (name.name or name.address or "").upper()
                 if key in table:
                     report("ST-DUPLICATE", f"'{name.name or name.address}' is declared twice", name)
@@ -351,6 +416,32 @@ class ProjectChecker:
                 if block.kind == "VAR_EXTERNAL" and pou is not None:
                     self._check_external(symbol, report, name)
 
+    def _check_address(self, block, name: ast.DeclName, ty: Type, pou: PouInfo | None, report) -> None:
+        """``AT %addr``: a valid address of the type's width (iec/addresses.py), not in a function (VAR-43). An
+        incomplete address (``AT %I*``) leaves the variable an ordinary one until a configuration places it."""
+        if incomplete(name.address):
+            return
+        try:
+            address = parse_address(name.address)
+        except ValueError as error:
+            report("ST-ADDRESS", str(error), name)
+            return
+        if block.retain:
+            report(
+                "ST-ADDRESS",
+                f"RETAIN has no effect on a variable at {address.text}: the process image is cleared on a restart",
+                name,
+                severity="warning",
+            )
+        if pou is not None and pou.kind == "FUNCTION":
+            report("ST-DECL", "a function has no memory of its own: it cannot locate a variable AT an address", name)
+        elif isinstance(ty, (t.Elementary, t.StringType)) and block.kind != "VAR_EXTERNAL":
+            problem = type_problem(address, ty.name)
+            if problem:
+                report("ST-ADDRESS", problem, name)
+        elif ty is not ERROR and not isinstance(ty, t.Elementary):
+            report("ST-ADDRESS", f"a {ty} cannot be located at {address.text}: only elementary types can", name)
+
     def _check_decl(self, block, decl: ast.VarDecl, ty: Type, pou: PouInfo | None, report) -> None:
         if decl.edge and (block.kind != "VAR_INPUT" or not t.same(ty, t.BOOL) or pou is None or pou.kind == "FUNCTION"):
             report(
@@ -367,10 +458,18 @@ class ProjectChecker:
             )
         if isinstance(ty, t.FbType) and pou is not None and pou.kind == "FUNCTION":
             report("ST-DECL", f"a function has no memory, so it cannot contain the instance of {ty.name} (ST-57)", decl)
+        if isinstance(ty, t.PointerType) and block.retain:
+            report(
+                "ST-DECL",
+                f"a {ty} cannot be RETAIN: a restart makes the variables it refers to anew (set it again after one)",
+                decl,
+            )
         if block.constant and decl.init is None and block.kind != "VAR_EXTERNAL":
             report("ST-DECL", "a CONSTANT needs an initial value", decl, severity="warning")
 
     def _check_external(self, symbol: Symbol, report, node) -> None:
+        if symbol.address is not None and symbol.name == symbol.address:
+            return  # VAR_EXTERNAL AT %X0.0 : BOOL: the address itself, global by nature (VAR-73, Ex 3.21)
         target = self.result.globals.get(symbol.name.upper())
         if target is None:
             report(
@@ -387,12 +486,16 @@ class ProjectChecker:
             symbol.constant = symbol.constant or target.constant
 
     # ------------------------------------------------------------ bodies and the call graph
-    def _check_body(self, info: PouInfo, body: list[ast.Stmt]) -> None:
+    def _check_body(self, info: PouInfo, body: list[ast.Stmt] | IlBody) -> None:
         report = self._reporter(f"{info.name}/body", info.name)
-        checker = BodyChecker(self.result, info, report)
-        checker.statements(body)
-        info.body = body
-        if info.kind == "FUNCTION" and not checker.result_assigned and info.return_type not in (None, ERROR):
+        if isinstance(body, IlBody):
+            il = check_il_body(self.result, info, body, report)
+            info.body, info.accumulators, assigned = il.statements, il.accumulators, il.result_assigned
+        else:
+            checker = BodyChecker(self.result, info, report)
+            checker.statements(body)
+            info.body, assigned = body, checker.result_assigned
+        if info.kind == "FUNCTION" and not assigned and info.return_type not in (None, ERROR):
             report(
                 "ST-NO-RESULT",
                 f"the function {info.name} never assigns its result: it returns the default value of its type",
@@ -451,62 +554,18 @@ def _parse_types(text: str, *, file: str, pou: None = None):
     return result
 
 
-def check_init(checker: BodyChecker, ty: Type, init: ast.Init) -> None:
-    """An initial value against its variable's type (TYP-25, TYP-33)."""
-    if isinstance(init, ast.ArrayInit):
-        if not isinstance(ty, t.ArrayType):
-            if ty is not ERROR:
-                checker.report("ST-TYPE-MISMATCH", f"an array initialiser [...] needs an array, not {ty}", init)
-            return
-        count = 0
-        for item in init.items:
-            value = item.value if isinstance(item, ast.RepeatInit) else item
-            count += item.count if isinstance(item, ast.RepeatInit) else 1
-            if value is not None:
-                check_init(checker, ty.element, value)
-        size = 1
-        for dim in ty.dims:
-            size *= (dim[1] - dim[0] + 1) if dim is not None else 1
-        if None not in ty.dims and count > size:
-            checker.report("ST-INIT", f"{count} initial values for an array of {size} elements", init)
-        return
-    if isinstance(init, ast.StructInit):
-        if not isinstance(ty, (t.StructType, t.FbType)):
-            if ty is not ERROR:
-                checker.report("ST-TYPE-MISMATCH", f"a structure initialiser (...) needs a structure, not {ty}", init)
-            return
-        for name, value in init.fields:
-            field_type = _field_type(ty, name)
-            if field_type is None:
-                checker.report("ST-UNKNOWN-MEMBER", f"{ty.name} has no field '{name}'", init)
-            else:
-                check_init(checker, field_type, value)
-        return
-    value = checker.expr(init, ty)
-    if value is not ERROR:
-        assignable_or_report(checker, ty, value, init, "init")
-
-
-def _field_type(ty: Type, name: str) -> Type | None:
-    if isinstance(ty, t.StructType):
-        found = ty.fields.get(name.upper())
-        return found[1] if found else None
-    if ty.pou is not None:
-        symbol = ty.pou.symbols.get(name.upper())
-        return symbol.type if symbol else None
-    pin = next((p for p in (*ty.std.inputs, *ty.std.outputs) if p.name == name.upper()), None)
-    return t.elementary(pin.type) if pin else None
-
-
 def check_project(project: Project) -> CheckResult:
     """Parse and check every text of ``project``; see ``CheckResult`` for what is resolved."""
     return ProjectChecker(project).run()
 
 
 def check_identifier(name: str, node: Any, report: Reporter) -> None:
-    """LEX-13/LEX-15: no two '_' in a row, at most 64 characters; a trailing '_' only warns (IEC ed. 2 forbids it)."""
+    """A declared name: not a keyword or type name (KW-01, KW-02), no two '_' in a row, at most 64 characters
+    (LEX-13, LEX-15); a trailing '_' only warns (IEC ed. 2 forbids it)."""
     problem = pou_name_problem(name)
-    if problem:
+    if name.upper() in reserved_words():
+        report("ST-NAME", f"'{name}' is a keyword or type name and cannot be declared as a name (KW-02)", node)
+    elif problem:
         report("ST-NAME", f"'{name}' is not a valid identifier: {problem}", node)
     elif name.endswith("_"):
         report(

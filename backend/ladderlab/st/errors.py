@@ -8,12 +8,15 @@ missing ';' is reported at the end of the line where it belongs.
 
 from __future__ import annotations
 
+import re
+from collections.abc import Callable
 from typing import Any
 
 from lark import Token, Tree
 from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedToken
 from lark.parsers.lalr_analysis import Shift
 
+from ..iec.literals import literal_form
 from . import ast
 
 _FRIENDLY = {
@@ -140,6 +143,32 @@ def describe_unexpected(error: UnexpectedInput, terminal_text: dict[str, str]) -
         line, column = (previous.end_line, previous.end_column) if previous is not None else (1, 1)
         return message, ast.Span(line, column, line, column + 1)
     return message, ast.Span(token.line, token.column, token.end_line, token.end_column)
+
+
+_LITERAL_PREFIX = re.compile(r"(?<![A-Za-z0-9_])([A-Za-z_]+|[0-9]+)#")
+_LITERAL_UP_TO_ERROR = re.compile(r"(?:[A-Za-z_]+|[0-9]+)#[A-Za-z0-9_.:+\-]*\s*")
+_LITERAL_REST = re.compile(r"[A-Za-z0-9_.:#+\-]*")
+
+
+def literal_problem(text: str, line: int, column: int, complete: Callable[[str], bool]) -> str | None:
+    """When the parse error at ``line``:``column`` lies in a prefixed literal (``T#2 s``, ``16#FG``, ``T#``): the
+    literal as typed and what a valid one looks like, instead of the parser's view ("expected end of text").
+    ``complete(text)``: whether ``text`` is a whole valid literal (then a word after it is not part of it)."""
+    rows = text.split("\n")
+    if not 1 <= line <= len(rows):
+        return None
+    row, at = rows[line - 1], column - 1
+    starts = [m for m in _LITERAL_PREFIX.finditer(row) if m.start() <= at]
+    if not starts:
+        return None
+    start = starts[-1]
+    form = literal_form(start.group(1))
+    before = row[start.start() : max(at, start.end())]
+    if form is None or not _LITERAL_UP_TO_ERROR.fullmatch(before) or (before[-1:].isspace() and complete(before)):
+        return None
+    rest = _LITERAL_REST.match(row, max(at, start.end()))
+    shown = row[start.start() : rest.end() if rest else at].rstrip()
+    return f"'{shown}' is not a valid {form.name} literal: {form.hint()}"
 
 
 def _bad_character(error: UnexpectedCharacters) -> tuple[str, ast.Span]:

@@ -10,6 +10,7 @@ CASE, FOR, WHILE and REPEAT inside each other.
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from dataclasses import fields, is_dataclass
 from typing import Any
 
@@ -49,6 +50,22 @@ def too_deep(root: Any) -> tuple[str, ast.Span] | None:
             if value is not None and not isinstance(value, (str, int, float, bool)):
                 todo.append((value, expressions, statements, span))
     return None
+
+
+def nodes(root: Any) -> Iterator[Any]:
+    """Every AST node under ``root`` (a node or a list of them), without recursion."""
+    todo = [root]
+    while todo:
+        node = todo.pop()
+        if isinstance(node, (list, tuple)):
+            todo.extend(node)
+        elif is_dataclass(node):
+            yield node
+            todo.extend(
+                value
+                for name in _children(type(node))
+                if (value := getattr(node, name)) is not None and not isinstance(value, (str, int, float, bool))
+            )
 
 
 def _children(kind: type) -> tuple[str, ...]:

@@ -19,16 +19,17 @@ from typing import Any
 from lark import Lark, Token
 from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedToken
 
+from ..iec.elementary import ALIASES, ELEMENTARY, GENERIC, STRING_TYPES
 from ..model.diagnostics import Diagnostic
 from . import ast
 from .comments import attach_comments, blank_nested_comments
-from .errors import describe_unexpected, last_token, would_accept
+from .errors import describe_unexpected, last_token, literal_problem, would_accept
 from .nesting import too_deep
 from .quick_decls import quick_declarations
 from .transformer import AstBuilder, StSyntaxError
 
 GRAMMAR = pathlib.Path(__file__).with_name("iec61131.lark")
-_STARTS = ["start_source", "start_pou", "start_decls", "start_stmts", "start_expr"]
+_STARTS = ["start_source", "start_pou", "start_decls", "start_stmts", "start_expr", "start_type", "start_config_blocks"]
 # Test files get a parser of their own from the same grammar: built from start_tests alone, its tables are
 # the only ones where the test keywords (END_TEST, MOCK ...) may follow a statement. (One LALR table for
 # all starts would merge them into the lookaheads of statements everywhere: ``x := 1; mock := 2;`` in a
@@ -68,6 +69,12 @@ _SOFT_KEYWORDS = {
     "XOR",
     "NOT",
     "MOD",
+    # textual SFC's words inside an SFC body (OSCAT names variables step); INITIAL_STEP and END_* stay reserved
+    "STEP",
+    "TRANSITION",
+    "FROM",
+    "PRIORITY",
+    "ACTION",
 }
 # Keywords of test files only (start_tests): names like ``test`` or ``setup`` stay free in programs.
 TEST_KEYWORDS = frozenset(
@@ -76,14 +83,30 @@ TEST_KEYWORDS = frozenset(
 
 
 @functools.cache
-def _keywords() -> frozenset[str]:
-    """Every keyword of the grammar, upper case."""
+def grammar_keywords() -> frozenset[str]:
+    """Every keyword of the grammar, upper case (the contextual and the test files' ones too)."""
     return frozenset(_KEYWORD_RE.findall(GRAMMAR.read_text(encoding="utf-8")))
 
 
 @functools.cache
+def keywords() -> frozenset[str]:
+    """Words that are never names (KW-01, KW-02's hard keywords): the grammar's keywords but the contextual ones
+    (``_SOFT_KEYWORDS``, used as names by real libraries) and the test files' ones, TRUE/FALSE and the operator
+    words."""
+    return (grammar_keywords() - _SOFT_KEYWORDS - TEST_KEYWORDS) | {"TRUE", "FALSE", "AND", "OR", "XOR", "NOT", "MOD"}
+
+
+@functools.cache
+def reserved_words() -> frozenset[str]:
+    """Words that cannot be declared as variable, field or type names: ``keywords()`` and the names of the
+    elementary and generic types (KW-02). (IEC 61131-3 ed. 3 types LadderLab does not have yet, such as LDT,
+    stay usable, as in edition 2.)"""
+    return keywords() | ELEMENTARY.keys() | ALIASES.keys() | GENERIC.keys() | set(STRING_TYPES)
+
+
+@functools.cache
 def _parser(tests: bool = False) -> Lark:
-    reserved = _keywords() - {"TRUE", "FALSE"} - _SOFT_KEYWORDS - TEST_KEYWORDS
+    reserved = grammar_keywords() - {"TRUE", "FALSE"} - _SOFT_KEYWORDS - TEST_KEYWORDS
     return Lark(
         GRAMMAR.read_text(encoding="utf-8"),
         parser="lalr",
@@ -93,6 +116,22 @@ def _parser(tests: bool = False) -> Lark:
         maybe_placeholders=True,
         cache=False,
     )
+
+
+#: The lexer's prefixed literal terminals (LEX-21, LEX-40..52).
+_LITERAL_TERMINALS = ("DURATION", "DATE_LITERAL", "TOD_LITERAL", "DT_LITERAL", "BASED_INTEGER")
+
+
+@functools.cache
+def literal_patterns() -> dict[str, str]:
+    """Terminal name -> the regular expression the lexer reads that literal with (case-insensitive)."""
+    return {t.name: t.pattern.value for t in _parser().terminals if t.name in _LITERAL_TERMINALS}
+
+
+def _complete_literal(text: str) -> bool:
+    """Whether ``text`` (trailing spaces aside) is one whole literal of the lexer's prefixed forms."""
+    stripped = text.strip()
+    return any(re.fullmatch(p, stripped, re.IGNORECASE) for p in literal_patterns().values())
 
 
 @functools.cache
@@ -134,7 +173,7 @@ def parse_declarations(
     Plain ``name, name : Type;`` blocks are read without the LALR parser (``quick_decls``), with the same result.
     """
     prepared = _prepare(text, nested_comments)
-    quick = quick_declarations(prepared, _keywords())
+    quick = quick_declarations(prepared, grammar_keywords())
     parsed = ParseResult(quick) if quick is not None else _run(prepared, "start_decls", file, pou=pou)
     return _finish(parsed, text, file, pou)
 
@@ -151,6 +190,16 @@ def parse_expression(
 ) -> ParseResult:
     """One operand or expression, e.g. an LD contact's ``T1.Q`` or a pin's ``arr[i] + 1``."""
     return _finish(_run(_prepare(text, nested_comments), "start_expr", file, pou=pou), text, file, pou)
+
+
+def parse_type(text: str, *, file: str | None = None, pou: str | None = None) -> ParseResult:
+    """One type specification, e.g. a function's result type: ``INT``, ``STRING[20]``, ``ARRAY [1..3] OF TRec``."""
+    return _run(text, "start_type", file, pou=pou)
+
+
+def parse_config_blocks(text: str, *, file: str | None = None) -> ParseResult:
+    """VAR_ACCESS and VAR_CONFIG blocks (a configuration's texts): ``list[AccessBlock | ConfigBlock]``."""
+    return _finish(_run(text, "start_config_blocks", file), text)
 
 
 def parse_tests(text: str, *, file: str | None = None, nested_comments: bool = False) -> ParseResult:
@@ -175,7 +224,7 @@ def _finish(result: ParseResult, original: str, file: str | None = None, pou: st
         deep = too_deep(result.ast)
         if deep is not None:  # nothing after the parser may meet nesting beyond the limits (st/nesting.py)
             message, span = deep
-            result.diagnostics.append(_diagnostic(message, span, file, pou, code="ST-TOO-DEEP"))
+            result.diagnostics.append(syntax_diagnostic(message, span, file, pou, code="ST-TOO-DEEP"))
             result.ast = None
     if result.ast is not None:
         attach_comments(result.ast, original)
@@ -187,7 +236,7 @@ _NESTING_NEEDS = 100  # characters: a shorter text cannot nest anywhere near the
 
 def _run(text: str, start: str, file: str | None, pou: str | None = None) -> ParseResult:
     diagnostics: list[Diagnostic] = []
-    report = _Reporter(diagnostics, file, pou)
+    report = _Reporter(diagnostics, file, pou, text)
     try:
         tree = _parser(start in _TEST_STARTS).parse(text, start=start, on_error=report.recover)
     except UnexpectedInput as error:
@@ -195,15 +244,15 @@ def _run(text: str, start: str, file: str | None, pou: str | None = None) -> Par
             report.add(error)
         return ParseResult(None, diagnostics)
     except StSyntaxError as error:
-        diagnostics.append(_diagnostic(str(error), error.span, file, pou))
+        diagnostics.append(syntax_diagnostic(str(error), error.span, file, pou))
         return ParseResult(None, diagnostics)
     except RecursionError:
-        diagnostics.append(_diagnostic("the text is nested too deeply to parse", ast.Span(1, 1, 1, 1), file, pou))
+        diagnostics.append(syntax_diagnostic("the text is nested too deeply to parse", ast.Span(1, 1, 1, 1), file, pou))
         return ParseResult(None, diagnostics)
     return ParseResult(tree, diagnostics)
 
 
-def _diagnostic(
+def syntax_diagnostic(
     message: str, span: ast.Span, file: str | None, pou: str | None, severity: str = "error", code: str = "ST-PARSE"
 ) -> Diagnostic:
     return Diagnostic(
@@ -222,10 +271,11 @@ def _diagnostic(
 class _Reporter:
     """lark ``on_error`` handler: records each error and decides whether parsing can go on."""
 
-    def __init__(self, diagnostics: list[Diagnostic], file: str | None, pou: str | None):
+    def __init__(self, diagnostics: list[Diagnostic], file: str | None, pou: str | None, text: str):
         self.diagnostics = diagnostics
         self.file = file
         self.pou = pou
+        self.text = text
         self._reported: set[int] = set()
 
     def seen(self, error: UnexpectedInput) -> bool:
@@ -234,7 +284,11 @@ class _Reporter:
     def add(self, error: UnexpectedInput, severity: str = "error") -> None:
         self._reported.add(id(error))
         message, span = describe_unexpected(error, _terminal_text())
-        self.diagnostics.append(_diagnostic(message, span, self.file, self.pou, severity))
+        message = literal_problem(self.text, span.line, span.column, _complete_literal) or message
+        last = self.diagnostics[-1] if self.diagnostics else None
+        if last is not None and (last.message, last.line) == (message, span.line):
+            return  # one malformed literal can trip the lexer twice
+        self.diagnostics.append(syntax_diagnostic(message, span, self.file, self.pou, severity))
 
     def recover(self, error: UnexpectedInput) -> bool:
         if len(self.diagnostics) >= _MAX_ERRORS_PER_UNIT:

@@ -268,7 +268,36 @@ def print_pou(pou: ast.Pou) -> str:
     head = f"{pou.kind} {pou.name}"
     if pou.return_type is not None:
         head += f" : {print_type(pou.return_type)}"
-    return f"{head}\n{print_declarations(pou.var_blocks)}{print_statements(pou.body, 1)}END_{pou.kind}\n"
+    body = print_sfc(pou.sfc, 1) if pou.sfc is not None else print_statements(pou.body, 1)
+    return f"{head}\n{print_declarations(pou.var_blocks)}{body}END_{pou.kind}\n"
+
+
+def print_sfc(sfc: ast.Sfc, level: int = 0) -> str:
+    """A textual SFC body (IEC 61131-3 B.1.6): steps with their action associations, transitions, actions."""
+    pad = INDENT * level
+    out = []
+    for item in sfc.items:
+        if isinstance(item, ast.SfcStep):
+            lines = [f"{pad}{'INITIAL_STEP' if item.initial else 'STEP'} {item.name}:\n"]
+            for association in item.associations:
+                args = [association.qualifier] if association.qualifier else []
+                args += [_expr(arg, 0) for arg in association.args]
+                lines.append(f"{pad}{INDENT}{association.action}({', '.join(args)});\n")
+            out.append("".join(lines) + f"{pad}END_STEP\n")
+        elif isinstance(item, ast.SfcTransition):
+            name = f" {item.name}" if item.name else ""
+            priority = f" (PRIORITY := {item.priority})" if item.priority is not None else ""
+            out.append(
+                f"{pad}TRANSITION{name}{priority} FROM {_step_list(item.sources)} TO {_step_list(item.targets)}\n"
+                f"{pad}{INDENT}:= {_expr(item.condition, 0)};\n{pad}END_TRANSITION\n"
+            )
+        else:
+            out.append(f"{pad}ACTION {item.name}:\n{print_statements(item.body, level + 1)}{pad}END_ACTION\n")
+    return "".join(out)
+
+
+def _step_list(names: list[str]) -> str:
+    return names[0] if len(names) == 1 else "(" + ", ".join(names) + ")"
 
 
 def _task(task: ast.TaskConfig, level: int) -> str:
@@ -286,9 +315,32 @@ def _program_config(prog: ast.ProgramConfig, level: int) -> str:
     return f"{INDENT * level}{text};\n"
 
 
+def _access_block(block: ast.AccessBlock, level: int) -> str:
+    lines = [f"{INDENT * level}VAR_ACCESS\n"]
+    for d in block.decls:
+        direction = f" {d.direction}" if d.direction else ""
+        path, ty = _expr(d.path, 0), print_type(d.type, level + 1)
+        lines.append(f"{INDENT * (level + 1)}{d.name} : {path} : {ty}{direction};\n")
+    return "".join(lines) + f"{INDENT * level}END_VAR\n"
+
+
+def _config_block(block: ast.ConfigBlock, level: int) -> str:
+    lines = [f"{INDENT * level}VAR_CONFIG\n"]
+    for d in block.decls:
+        at = f" AT {d.address}" if d.address else ""
+        init = f" := {print_initializer(d.init)}" if d.init is not None else ""
+        path, ty = _expr(d.path, 0), print_type(d.type, level + 1)
+        lines.append(f"{INDENT * (level + 1)}{path}{at} : {ty}{init};\n")
+    return "".join(lines) + f"{INDENT * level}END_VAR\n"
+
+
 def _config_item(item, level: int) -> str:
     if isinstance(item, ast.TaskConfig):
         return _task(item, level)
+    if isinstance(item, ast.AccessBlock):
+        return _access_block(item, level)
+    if isinstance(item, ast.ConfigBlock):
+        return _config_block(item, level)
     if isinstance(item, ast.ProgramConfig):
         return _program_config(item, level)
     if isinstance(item, ast.VarBlock):

@@ -8,10 +8,12 @@ examples can go through ``check_project`` exactly like edited projects.
 from __future__ import annotations
 
 from ..model.diagnostics import Diagnostic
-from ..model.project import Pou, Project, Task
+from ..model.project import Configuration, Pou, ProgramInstance, Project, Resource, Task
 from . import ast
+from .il_parser import blank_il_bodies
 from .parser import parse_source
 from .printer import print_expression
+from .sfc_text import sfc_from_text
 
 _KIND = {"PROGRAM": "program", "FUNCTION_BLOCK": "function_block", "FUNCTION": "function"}
 
@@ -32,30 +34,51 @@ class _Text:
     def between(self, start: tuple[int, int], end: tuple[int, int]) -> str:
         return self.text[self.offset(*start) : self.offset(*end)]
 
+    def of(self, node) -> str:
+        """A node's text as written."""
+        return self.between((node.span.line, node.span.column), (node.span.end_line, node.span.end_column))
+
+    def kept(self, nodes: list) -> str:
+        """The text of ``nodes`` (VAR blocks), padded so its line numbers are the file's (diagnostics point in it)."""
+        if not nodes:
+            return ""
+        first = nodes[0].span
+        return _keep_lines("\n".join(self.of(n) for n in nodes), (first.line, first.column))
+
 
 def source_to_project(
     text: str, name: str = "imported", *, nested_comments: bool = False
 ) -> tuple[Project | None, list[Diagnostic]]:
-    parsed = parse_source(text, nested_comments=nested_comments)
+    st_text, il_pous = blank_il_bodies(text)  # IL bodies are read from ``text`` (docs/il.md)
+    parsed = parse_source(st_text, nested_comments=nested_comments)
     if parsed.ast is None:
         return None, parsed.diagnostics
     source = _Text(text)
-    types, globals_, pous, tasks = [], [], [], []
+    diagnostics = list(parsed.diagnostics)
+    types, globals_, pous, configurations = [], [], [], []
     for item in parsed.ast.items:
-        span = (item.span.line, item.span.column), (item.span.end_line, item.span.end_column)
         if isinstance(item, ast.TypeBlock):
-            types.append(source.between(*span))
+            types.append(source.of(item))
         elif isinstance(item, ast.VarBlock):
-            globals_.append(source.between(*span))
+            globals_.append(source.of(item))
+        elif isinstance(item, ast.Pou) and item.sfc is not None:
+            made, problems = _sfc_pou(item, source)
+            pous.append(made)
+            diagnostics += problems
         elif isinstance(item, ast.Pou):
-            pous.append(_pou(item, source))
+            pous.append(_pou(item, source, "il" if item.name.upper() in il_pous else "st"))
         else:
-            tasks += _tasks(item)
-    project = Project(name=name, types="\n".join(types), globals="\n".join(globals_), pous=pous, tasks=tasks)
-    return project, parsed.diagnostics
+            configurations.append(item)
+    for extra in configurations[1:]:
+        diagnostics.append(_problem(extra, "a project runs one CONFIGURATION: this second one is left out"))
+    configuration = _configuration(configurations[0], source, diagnostics) if configurations else None
+    project = Project(
+        name=name, types="\n".join(types), globals="\n".join(globals_), pous=pous, configuration=configuration
+    )
+    return project, diagnostics
 
 
-def _pou(pou: ast.Pou, source: _Text) -> Pou:
+def _pou(pou: ast.Pou, source: _Text, language: str) -> Pou:
     end = (pou.span.end_line, pou.span.end_column - len(f"END_{pou.kind}"))
     if pou.var_blocks:
         first, last = pou.var_blocks[0].span, pou.var_blocks[-1].span
@@ -66,18 +89,32 @@ def _pou(pou: ast.Pou, source: _Text) -> Pou:
     else:
         declarations = ""
         body_start = (pou.body[0].span.line, pou.body[0].span.column) if pou.body else end
+        if language == "il":  # the blanked IL body left no statements: it starts on the line after the header
+            body_start = min((pou.span.line + 1, 1), end)
     body = source.between(body_start, end)
     return_type = None
-    if pou.return_type is not None:
-        return_type = pou.return_type.name if isinstance(pou.return_type, ast.NamedType) else None
+    if pou.return_type is not None:  # as written: STRING[20], ARRAY [1..3] OF INT, INT (0..100) ...
+        span = pou.return_type.span
+        return_type = source.between((span.line, span.column), (span.end_line, span.end_column)).strip()
     return Pou(
         name=pou.name,
         kind=_KIND[pou.kind],
-        language="st",
+        language=language,
         return_type=return_type,
         declarations=declarations,
         body=_keep_lines(body, body_start),
     )
+
+
+def _sfc_pou(pou: ast.Pou, source: _Text) -> tuple[Pou, list[Diagnostic]]:
+    """A POU written in textual SFC: its declarations as typed, the chart drawn from its steps and transitions."""
+    declarations = ""
+    if pou.var_blocks:
+        first, last = pou.var_blocks[0].span, pou.var_blocks[-1].span
+        declarations = source.between((first.line, first.column), (last.end_line, last.end_column))
+    body, problems = sfc_from_text(pou, source.between)
+    kind = _KIND[pou.kind]
+    return Pou(name=pou.name, kind=kind, language="sfc", declarations=declarations, body=body), problems
 
 
 def _keep_lines(body: str, start: tuple[int, int]) -> str:
@@ -85,21 +122,75 @@ def _keep_lines(body: str, start: tuple[int, int]) -> str:
     return "\n" * (start[0] - 1) + " " * (start[1] - 1) + body
 
 
-def _tasks(config: ast.Configuration) -> list[Task]:
-    items = [i for r in config.items if isinstance(r, ast.Resource) for i in r.items] + list(config.items)
-    programs = [p for p in items if isinstance(p, ast.ProgramConfig)]
+def _configuration(config: ast.Configuration, source: _Text, diagnostics: list[Diagnostic]) -> Configuration:
+    """The AST of a CONFIGURATION as the project model holds it: texts of its VAR blocks, structured tasks."""
+    resources = [item for item in config.items if isinstance(item, ast.Resource)]
+    direct = [item for item in config.items if isinstance(item, (ast.TaskConfig, ast.ProgramConfig))]
+    if direct:  # tasks and programs without a RESOURCE block: the configuration's single resource
+        resources.insert(0, ast.Resource(None, None, list(direct), direct[0].span))
+    return Configuration(
+        name=config.name,
+        globals=source.kept([i for i in config.items if isinstance(i, ast.VarBlock)]),
+        resources=[_resource(r, source, diagnostics) for r in resources],
+        access=source.kept([i for i in config.items if isinstance(i, ast.AccessBlock)]),
+        config=source.kept([i for i in config.items if isinstance(i, ast.ConfigBlock)]),
+    )
+
+
+def _resource(resource: ast.Resource, source: _Text, diagnostics: list[Diagnostic]) -> Resource:
+    programs = [_instance(p, diagnostics) for p in resource.items if isinstance(p, ast.ProgramConfig)]
     tasks = []
-    for task in (i for i in items if isinstance(i, ast.TaskConfig)):
-        props = {name.upper(): value for name, value in task.properties}
-        # A task without INTERVAL is free-running (CFG-04, Mosaic process P0): the model's default cycle.
-        interval = {"interval": print_expression(props["INTERVAL"])} if "INTERVAL" in props else {}
+    for task in (i for i in resource.items if isinstance(i, ast.TaskConfig)):
+        props = {}
+        for prop, value in task.properties:
+            if prop.upper() in props or prop.upper() not in ("INTERVAL", "SINGLE", "PRIORITY", "NUMBER"):
+                message = f"task {task.name}: {prop} is not INTERVAL, SINGLE, PRIORITY or (Mosaic) NUMBER"
+                diagnostics.append(_problem(value, message))
+            props[prop.upper()] = value
         priority = props.get("PRIORITY")
+        if priority is not None and not isinstance(priority, ast.IntLit):
+            diagnostics.append(_problem(priority, f"task {task.name}: PRIORITY must be an integer literal"))
+        single = print_expression(props["SINGLE"]) if "SINGLE" in props else None
+        # Neither INTERVAL nor SINGLE (Mosaic: Number := n): a free-running task (CFG-04, CFG-05), the default cycle.
+        interval = print_expression(props["INTERVAL"]) if "INTERVAL" in props else None if single else "T#10ms"
         tasks.append(
             Task(
                 name=task.name,
-                **interval,
+                interval=interval,
+                single=single,
                 priority=priority.value if isinstance(priority, ast.IntLit) else 0,
-                programs=[p.type_name for p in programs if (p.task or "").upper() == task.name.upper()],
+                programs=[p for p, c in programs if (c.task or "").upper() == task.name.upper()],
             )
         )
-    return tasks
+    known = {t.name.upper() for t in tasks}
+    for _, config in programs:
+        if config.task is not None and config.task.upper() not in known:
+            diagnostics.append(
+                _problem(config, f"program {config.name}: there is no task {config.task} in this resource")
+            )
+    return Resource(
+        name=resource.name,
+        on=resource.on,
+        globals=source.kept([i for i in resource.items if isinstance(i, ast.VarBlock)]),
+        tasks=tasks,
+        programs=[p for p, c in programs if c.task is None],
+    )
+
+
+def _instance(config: ast.ProgramConfig, diagnostics: list[Diagnostic]) -> tuple[ProgramInstance, ast.ProgramConfig]:
+    inputs, outputs = {}, {}
+    for arg in config.args or []:
+        if arg.name is None:
+            diagnostics.append(_problem(arg, f"program {config.name}: name each parameter (name := value)"))
+        elif arg.output:
+            outputs[arg.name] = print_expression(arg.value)
+        else:
+            inputs[arg.name] = print_expression(arg.value)
+    instance = ProgramInstance(
+        name=config.name, type=config.type_name, retain=config.retain, inputs=inputs, outputs=outputs
+    )
+    return instance, config
+
+
+def _problem(node, message: str) -> Diagnostic:
+    return Diagnostic(code="ST-CONFIG", message=message, line=node.span.line or None, column=node.span.column or None)

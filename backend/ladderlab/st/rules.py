@@ -7,7 +7,7 @@ from typing import Any
 
 from . import ast
 from . import types as t
-from .types import Type
+from .types import ERROR, Type
 
 
 @dataclass
@@ -74,11 +74,13 @@ def constant_value(checker: Any, node: ast.Expr | None, depth: int = 0) -> int |
         right = constant_value(checker, node.right, depth + 1)
         if left is None or right is None:
             return None
-        return _fold(node.op, left, right)
+        return fold_arithmetic(node.op, left, right)
     return None
 
 
-def _fold(op: str, left, right):
+def fold_arithmetic(op: str, left: Any, right: Any) -> Any:
+    """``+ - * / MOD`` on constants, exactly as the scan computes them before storing: integer division
+    truncates toward zero, ``x MOD 0`` is 0 (the IEC body); None for a division by zero."""
     if op == "+":
         return left + right
     if op == "-":
@@ -86,7 +88,56 @@ def _fold(op: str, left, right):
     if op == "*":
         return left * right
     if right == 0:
-        return None
-    if op == "/":
-        return int(left / right) if isinstance(left, int) and isinstance(right, int) else left / right
-    return left - int(left / right) * right
+        return 0 if op == "MOD" and isinstance(right, int) and isinstance(left, int) else None
+    if op == "/" and (isinstance(left, float) or isinstance(right, float)):
+        return left / right
+    quotient = abs(left) // abs(right)
+    quotient = quotient if (left < 0) == (right < 0) else -quotient
+    return quotient if op == "/" else left - right * quotient
+
+
+def check_init(checker: Any, ty: Type, init: ast.Init) -> None:
+    """An initial value against its variable's type (TYP-25, TYP-33)."""
+    if isinstance(init, ast.ArrayInit):
+        if not isinstance(ty, t.ArrayType):
+            if ty is not ERROR:
+                checker.report("ST-TYPE-MISMATCH", f"an array initialiser [...] needs an array, not {ty}", init)
+            return
+        count = 0
+        for item in init.items:
+            value = item.value if isinstance(item, ast.RepeatInit) else item
+            count += item.count if isinstance(item, ast.RepeatInit) else 1
+            if value is not None:
+                check_init(checker, ty.element, value)
+        size = 1
+        for dim in ty.dims:
+            size *= (dim[1] - dim[0] + 1) if dim is not None else 1
+        if None not in ty.dims and count > size:
+            checker.report("ST-INIT", f"{count} initial values for an array of {size} elements", init)
+        return
+    if isinstance(init, ast.StructInit):
+        if not isinstance(ty, (t.StructType, t.FbType)):
+            if ty is not ERROR:
+                checker.report("ST-TYPE-MISMATCH", f"a structure initialiser (...) needs a structure, not {ty}", init)
+            return
+        for name, value in init.fields:
+            field_type = _field_type(ty, name)
+            if field_type is None:
+                checker.report("ST-UNKNOWN-MEMBER", f"{ty.name} has no field '{name}'", init)
+            else:
+                check_init(checker, field_type, value)
+        return
+    value = checker.expr(init, ty)
+    if value is not ERROR:
+        assignable_or_report(checker, ty, value, init, "init")
+
+
+def _field_type(ty: Type, name: str) -> Type | None:
+    if isinstance(ty, t.StructType):
+        found = ty.fields.get(name.upper())
+        return found[1] if found else None
+    if ty.pou is not None:
+        symbol = ty.pou.symbols.get(name.upper())
+        return symbol.type if symbol else None
+    pin = next((p for p in (*ty.std.inputs, *ty.std.outputs) if p.name == name.upper()), None)
+    return t.elementary(pin.type) if pin else None

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Any
 
 from ..model.diagnostics import Diagnostic
 from . import ast
@@ -27,6 +28,7 @@ class Symbol:
     comment: str | None = None
     span: ast.Span = ast.NO_SPAN
     pou: str | None = None  # owning POU, None for globals
+    implicit: str | None = None  # an SFC POU's step, action or named transition (st/sfc.py), None if declared
 
 
 @dataclass(eq=False)
@@ -41,7 +43,7 @@ class TypeDef:
 
 @dataclass(eq=False)
 class PouInfo:
-    """A POU's interface and, for ST POUs, its checked body.
+    """A POU's interface and, for ST and IL POUs, its checked body (IL: as ST statements, st/il_check.py).
 
     ``symbols`` maps upper-case names to symbols in declaration order; ``body`` is
     the typed AST (every expression has ``.ty``, names have ``.ref``, calls have
@@ -54,9 +56,12 @@ class PouInfo:
     language: str
     return_type: Type | None
     symbols: dict[str, Symbol] = field(default_factory=dict)
+    return_spec: ast.TypeSpec | None = None  # the result type as written (subranges, a TYPE's own initial value)
     body: list[ast.Stmt] | None = None
     calls: set[str] = field(default_factory=set)
     plant: bool = False  # a PROGRAM that models the process: run by the plant task, never called
+    actions: dict[str, list[ast.Stmt] | None] = field(default_factory=dict)
+    accumulators: list[Symbol] = field(default_factory=list)  # IL POUs: the hidden current-result variables
 
     def parameters(self, *classes: str) -> list[Symbol]:
         wanted = classes or PARAMETER_CLASSES
@@ -69,6 +74,7 @@ class CheckResult:
     types: dict[str, TypeDef] = field(default_factory=dict)
     globals: dict[str, Symbol] = field(default_factory=dict)
     pous: dict[str, PouInfo] = field(default_factory=dict)
+    configuration: Any = None  # configuration.ConfigurationInfo: the instances and tasks the project runs
 
     @property
     def ok(self) -> bool:

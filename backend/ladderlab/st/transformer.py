@@ -104,6 +104,12 @@ class AstBuilder(Transformer):
     def start_expr(self, c):
         return c[0]
 
+    def start_type(self, c):
+        return c[0]
+
+    def start_config_blocks(self, c):
+        return c
+
     def start_tests(self, c):
         setups = [x for x in c if isinstance(x, ast.TestSetup)]
         teardowns = [x for x in c if isinstance(x, ast.TestTeardown)]
@@ -139,8 +145,34 @@ class AstBuilder(Transformer):
         return_type = c[2] if kind == "FUNCTION" else None
         rest = c[3:-1] if kind == "FUNCTION" else c[2:-1]
         blocks = [x for x in rest if isinstance(x, ast.VarBlock)]
-        body = [x for x in rest if not isinstance(x, ast.VarBlock)]
-        return ast.Pou(kind, str(c[1]), return_type, blocks, body, span_of(c))
+        sfc = next((x for x in rest if isinstance(x, ast.Sfc)), None)
+        body = [x for x in rest if not isinstance(x, (ast.VarBlock, ast.Sfc))]
+        return ast.Pou(kind, str(c[1]), return_type, blocks, body, span_of(c), sfc)
+
+    def sfc(self, c):
+        return ast.Sfc(list(c), span_of(c))
+
+    def sfc_step(self, c):
+        associations = [x for x in c[2:] if isinstance(x, ast.SfcAssociation)]
+        return ast.SfcStep(str(c[1]), c[0].type == "INITIAL_STEP", associations, span_of(c))
+
+    sfc_initial_step = sfc_step
+
+    def sfc_association(self, c):
+        qualifier = str(c[1]) if len(c) > 1 and c[1] is not None else None
+        return ast.SfcAssociation(str(c[0]), qualifier, [x for x in c[2:] if x is not None], span_of(c))
+
+    def sfc_transition(self, c):
+        name = next((str(x) for x in c[1:2] if isinstance(x, Token) and x.type == "IDENT"), None)
+        priority = next((int(str(x)) for x in c if isinstance(x, Token) and x.type == "INTEGER"), None)
+        steps = [x for x in c if isinstance(x, list)]
+        return ast.SfcTransition(name, priority, steps[0], steps[1], c[-2], span_of(c))
+
+    def sfc_steps(self, c):
+        return [str(x) for x in c]
+
+    def sfc_action(self, c):
+        return ast.SfcAction(str(c[1]), [x for x in c[2:-1] if x is not None], span_of(c))
 
     def type_block(self, c):
         return ast.TypeBlock(c[1:-1], span_of(c))
@@ -168,13 +200,13 @@ class AstBuilder(Transformer):
         return ast.PointerType(kind, c[1], span_of(c))
 
     def enum_type(self, c):
-        return ast.EnumType(c, span_of(c))
+        return ast.EnumType(c[:-1], span_of(c))
 
     def enum_value(self, c):
         return ast.EnumValue(str(c[0]), c[1], span_of(c))
 
     def struct_type(self, c):
-        return ast.StructType(c[1:], span_of(c))
+        return ast.StructType(c[1:-1], span_of(c))
 
     # ------------------------------------------------------------ declarations
     def var_block(self, c):
@@ -223,6 +255,20 @@ class AstBuilder(Transformer):
 
     def task_prop(self, c):
         return (str(c[0]), c[1])
+
+    def access_block(self, c):
+        return ast.AccessBlock(c[1:-1], span_of(c))
+
+    def access_decl(self, c):
+        name, path, type_spec, direction = c[0], c[1], c[2], c[3]
+        return ast.AccessDecl(str(name), path, type_spec, direction.type if direction is not None else None, span_of(c))
+
+    def config_block(self, c):
+        return ast.ConfigBlock(c[1:-1], span_of(c))
+
+    def config_decl(self, c):
+        path, address, type_spec, init = c[0], c[1], c[2], c[3]
+        return ast.ConfigDecl(path, str(address).upper() if address is not None else None, type_spec, init, span_of(c))
 
     def program_config(self, c):
         retain, name, task, type_name, args = c[1], c[2], c[3], c[4], c[5]

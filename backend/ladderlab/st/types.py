@@ -1,18 +1,20 @@
 """Resolved types and the IEC compatibility rules the checker applies (spec §2, FUN-02, ST-20..26).
 
-Untyped literals have their own types (``UntypedInt``/``UntypedReal``) that adopt
-the type of the other operand or of the assignment target (LEX-26, FUN-02).
-Lossless widening (SINT -> INT, INT -> REAL, REAL -> LREAL ...) is accepted with a
-warning; anything else needs an explicit ``*_TO_*`` conversion.
+Untyped literals have their own types (``UntypedInt``/``UntypedReal``, ANY_INT and
+ANY_REAL of IEC 61131-3 ed. 3, 6.4.2) until their context fixes them (st/context.py).
+Lossless widening (SINT -> INT, UINT -> DINT, REAL -> LREAL ...) is accepted with a
+warning; ``lub`` is the smallest type two types widen to. Anything else needs an
+explicit ``*_TO_*`` conversion.
 """
 
 from __future__ import annotations
 
 import functools
 from dataclasses import dataclass, field
+from math import isfinite
 from typing import Any
 
-from ..iec.elementary import ELEMENTARY, GENERIC, ElementaryType, canonical_type_name
+from ..iec.elementary import ELEMENTARY, GENERIC, STRING_TYPES, ElementaryType, canonical_type_name
 
 
 class Type:
@@ -90,13 +92,21 @@ class FbType(Type):
 
 @dataclass(frozen=True)
 class UntypedInt(Type):
+    """An integer literal, or an expression of integer literals only; ``value`` when it is known exactly."""
+
     value: int | None = None
     name: str = "ANY_INT literal"
 
 
 @dataclass(frozen=True)
 class UntypedReal(Type):
+    """A real literal, or an expression of literals with a real among them."""
+
+    value: float | None = None
     name: str = "ANY_REAL literal"
+
+
+UNTYPED = (UntypedInt, UntypedReal)
 
 
 class _Error(Type):
@@ -109,8 +119,15 @@ class _Void(Type):
     name = "no value"
 
 
+class NullType(Type):
+    """The type of ``NULL`` (IEC 61131-3 ed. 3): the reference to nothing, which any reference type takes."""
+
+    name = "NULL"
+
+
 ERROR = _Error()
 VOID = _Void()
+NULL = NullType()
 BOOL = Elementary("BOOL")
 INT = Elementary("INT")
 TIME = Elementary("TIME")
@@ -123,7 +140,7 @@ _BITS = ["BYTE", "WORD", "DWORD", "LWORD"]
 @functools.cache  # types are immutable; asked for every pin of every call checked
 def elementary(name: str) -> Type | None:
     canonical = canonical_type_name(name)
-    if canonical in ("STRING", "WSTRING"):
+    if canonical in STRING_TYPES:
         return StringType(canonical == "WSTRING")
     return Elementary(canonical) if canonical in ELEMENTARY else None
 
@@ -156,15 +173,37 @@ def in_family(t: Type, family: str) -> bool:
     return False
 
 
-def literal_fits(t: Type, value: int | None) -> bool:
+def literal_fits(t: Type, value: int | float | None) -> bool:
+    """Can the literal value be stored in ``t`` exactly as written (integers) or within its range (reals)?"""
     if value is None or not isinstance(t, Elementary):
         return True
+    if t.category == "real":
+        return isfinite(value) and (t.name == "LREAL" or abs(value) <= _REAL_MAX)
+    if isinstance(value, float):
+        return False
     lo, hi = t.info.min, t.info.max
     return lo is None or lo <= value <= hi
 
 
+_REAL_MAX = 3.4028235677973366e38  # the largest finite binary32 value (a larger literal would become inf)
+
+
+def takes_literal(target: Type, literal: Type) -> bool:
+    """May an untyped literal of this kind become a ``target`` (whatever its value)? An integer literal may become any
+    integer, bit string or real type (and BOOL, when it is 0 or 1); a real literal only a real type."""
+    if not isinstance(target, Elementary):
+        return False
+    if isinstance(literal, UntypedInt):
+        return target.category in ("int", "bits", "real") or (target.category == "bool" and literal.value in (0, 1))
+    return isinstance(literal, UntypedReal) and target.category == "real"
+
+
 def _widens(source: Elementary, target: Elementary) -> bool:
-    s, d = source.name, target.name
+    return _widens_name(source.name, target.name)
+
+
+@functools.cache
+def _widens_name(s: str, d: str) -> bool:
     for chain in (_SIGNED, _UNSIGNED, _BITS):
         if s in chain and d in chain:
             return chain.index(s) < chain.index(d)
@@ -173,13 +212,44 @@ def _widens(source: Elementary, target: Elementary) -> bool:
     return s == "REAL" and d == "LREAL"  # integer -> REAL always needs a conversion (ST-20)
 
 
+# Candidates for the smallest common type, smallest first (of one width only one can fit both).
+_WIDENING_ORDER = ("SINT", "USINT", "INT", "UINT", "DINT", "UDINT", "LINT", "ULINT", "BYTE", "WORD", "DWORD", "LWORD")
+_WIDENING_ORDER += ("REAL", "LREAL")
+
+
+@functools.cache
+def _lub_name(a: str, b: str) -> str | None:
+    if a == b:
+        return a
+    for name in _WIDENING_ORDER:
+        if (name == a or _widens_name(a, name)) and (name == b or _widens_name(b, name)):
+            return name
+    return None
+
+
+def lub(a: Type, b: Type) -> Type | None:
+    """The smallest type both ``a`` and ``b`` widen to without loss (INT, UINT -> DINT); None when there is none.
+
+    ``a`` itself when the two are the same type (STRINGs of any length, one structure ...)."""
+    if same(a, b):
+        return b if a is ERROR else a
+    if isinstance(a, Elementary) and isinstance(b, Elementary):
+        name = _lub_name(a.name, b.name)
+        return None if name is None else (a if name == a.name else b if name == b.name else Elementary(name))
+    return None
+
+
 def same(a: Type, b: Type) -> bool:
     if a is b or a is ERROR or b is ERROR:
         return True
     if isinstance(a, StringType) and isinstance(b, StringType):
         return a.wide == b.wide
-    if isinstance(a, PointerType) and isinstance(b, PointerType):
+    if isinstance(a, PointerType | NullType) and isinstance(b, PointerType | NullType):
+        if isinstance(a, NullType) or isinstance(b, NullType):
+            return True
         return same(a.target, b.target) or (isinstance(a.target, Elementary) and a.target.name == "BYTE")
+    if isinstance(a, FbType) and isinstance(b, FbType):  # one user FB POU, or one standard FB (each use resolves anew)
+        return a.pou is b.pou if a.pou is not None else b.pou is None and a.std is b.std
     return a == b if not isinstance(a, (StructType, EnumType, FbType)) else a is b
 
 
@@ -187,14 +257,8 @@ def assignable(target: Type, source: Type) -> str | None:
     """None when ``source`` may be stored in ``target``; "widen" for a lossless implicit conversion; else "error"."""
     if same(target, source):
         return None
-    if isinstance(source, UntypedInt):
-        if isinstance(target, Elementary) and target.category in ("int", "bits", "real", "bool"):
-            if target.category == "bool" and source.value not in (0, 1, None):
-                return "error"
-            return None if literal_fits(target, source.value) else "error"
-        return "error"
-    if isinstance(source, UntypedReal):
-        return None if isinstance(target, Elementary) and target.category == "real" else "error"
+    if isinstance(source, UNTYPED):
+        return None if takes_literal(target, source) and literal_fits(target, source.value) else "error"
     if isinstance(target, Elementary) and isinstance(source, Elementary) and _widens(source, target):
         return "widen"
     if isinstance(target, PointerType) and isinstance(source, PointerType):
@@ -203,30 +267,45 @@ def assignable(target: Type, source: Type) -> str | None:
 
 
 def common(a: Type, b: Type) -> tuple[Type, str | None]:
-    """The type two operands are combined in: (type, None | "widen" | "error")."""
+    """The type two operands are combined in before any context: (type, None | "widen" | "error").
+
+    A typed operand decides over an untyped one (whether the literal fits is decided when the context has fixed the
+    type, st/context.py); two typed ones combine in their ``lub``; two untyped ones stay untyped."""
     if a is ERROR or b is ERROR:
         return (b if a is ERROR else a), None
-    if isinstance(a, (UntypedInt, UntypedReal)) and isinstance(b, (UntypedInt, UntypedReal)):
-        return (a if isinstance(a, UntypedInt) and isinstance(b, UntypedInt) else UntypedReal()), None
-    if isinstance(a, (UntypedInt, UntypedReal)):
-        return b, assignable(b, a)
-    if isinstance(b, (UntypedInt, UntypedReal)):
-        return a, assignable(a, b)
+    if isinstance(a, UNTYPED) and isinstance(b, UNTYPED):
+        return untyped_pair(a, b), None
+    if isinstance(a, UNTYPED):
+        return b, None if takes_literal(b, a) else "error"
+    if isinstance(b, UNTYPED):
+        return a, None if takes_literal(a, b) else "error"
     if same(a, b):
         return a, None
-    if assignable(a, b) == "widen":
-        return a, "widen"
-    if assignable(b, a) == "widen":
-        return b, "widen"
-    return a, "error"
+    combined = lub(a, b)
+    return (a, "error") if combined is None else (combined, "widen")
 
 
-def concrete(t: Type) -> Type:
-    """An untyped literal standing alone takes the IEC default: INT for integers (ST-24), LREAL for reals."""
+def untyped_pair(a: Type, b: Type) -> Type:
+    """Two untyped operands combined (without a value: the operation's value is worked out by the caller)."""
+    return UntypedInt() if isinstance(a, UntypedInt) and isinstance(b, UntypedInt) else UntypedReal()
+
+
+_DEFAULT_INTEGERS = (INT, Elementary("DINT"), Elementary("LINT"), Elementary("ULINT"))
+_DEFAULT_BITS = tuple(Elementary(name) for name in _BITS)
+LREAL = Elementary("LREAL")
+
+
+def concrete(t: Type, family: str | None = None) -> Type:
+    """The type an untyped literal (expression) takes without any context: INT for integers (ST-24; DINT, LINT or
+    ULINT when the value needs it), LREAL for reals; within ``family`` (ANY_REAL: LREAL, ANY_BIT: the smallest bit
+    string) when a generic function asks."""
     if isinstance(t, UntypedInt):
-        return Elementary("DINT") if not literal_fits(INT, t.value) else INT
+        if family == "ANY_REAL":
+            return LREAL
+        candidates = _DEFAULT_BITS if family == "ANY_BIT" else _DEFAULT_INTEGERS
+        return next((c for c in candidates if literal_fits(c, t.value)), candidates[-1])
     if isinstance(t, UntypedReal):
-        return Elementary("LREAL")
+        return LREAL
     return t
 
 

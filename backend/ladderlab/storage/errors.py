@@ -5,6 +5,7 @@ from __future__ import annotations
 from typing import Any
 
 from pydantic import ValidationError
+from pydantic_core import ErrorDetails
 
 from ..json_guard import json_problem
 from ..model import Diagnostic
@@ -106,7 +107,7 @@ def validation_diagnostics(error: ValidationError, data: Any, file: str) -> list
     return out
 
 
-def expectation(err: dict[str, Any]) -> str:
+def expectation(err: ErrorDetails) -> str:
     kind = err["type"]
     ctx = err.get("ctx") or {}
     if kind == "missing":
@@ -119,7 +120,7 @@ def expectation(err: dict[str, Any]) -> str:
         return "missing field 'type' that says what kind of element this is"
     if kind == "literal_error":
         return f"expected {ctx.get('expected')}, got {err.get('input')!r}"
-    message = err["msg"].removeprefix("Value error, ")
+    message: str = err["msg"].removeprefix("Value error, ")
     if "input" in err and not isinstance(err["input"], (dict, list)):
         message += f" (got {err['input']!r})"
     return message

@@ -21,6 +21,7 @@ import json
 import os
 import re
 import shutil
+from collections.abc import Callable
 from pathlib import Path
 
 from .atomic import fsync_dir
@@ -33,11 +34,15 @@ _STALE_TEMP = re.compile(r"^\..+\.tmp\Z")
 NO_SPACE = frozenset({errno.ENOSPC, getattr(errno, "EDQUOT", errno.ENOSPC), errno.EFBIG})
 
 
+#: Whether a path relative to the project folder is one the project may hold.
+Allowed = Callable[[str], bool]
+
+
 class StagingFailed(OSError):
     """Writing the new version failed before the commit point; nothing of the project changed."""
 
 
-def commit(folder: Path, writes: dict[str, bytes], deletes: list[str], allowed) -> None:
+def commit(folder: Path, writes: dict[str, bytes], deletes: list[str], allowed: Allowed) -> None:
     """Replace the files ``writes`` (relative path -> content) and remove ``deletes``, all or nothing.
 
     ``allowed(rel)`` says whether a relative path is one the project may hold; recovery checks every
@@ -66,7 +71,7 @@ def commit(folder: Path, writes: dict[str, bytes], deletes: list[str], allowed) 
     _apply(folder, journal, staged, list(deletes))
 
 
-def recover(folder: Path, allowed) -> str | None:
+def recover(folder: Path, allowed: Allowed) -> str | None:
     """Finish or drop an interrupted save of ``folder`` and remove stale temporary files.
 
     Returns "replayed" or "dropped" when there was a journal, else None. The caller holds the lock."""
@@ -96,7 +101,7 @@ def pending(folder: Path) -> bool:
     return os.path.lexists(folder / JOURNAL)
 
 
-def _manifest(path: Path, allowed) -> tuple[list[list[str]], list[str]] | None:
+def _manifest(path: Path, allowed: Allowed) -> tuple[list[list[str]], list[str]] | None:
     """The committed changes, or None when the journal never reached its commit point (or is not ours)."""
     try:
         data = json.loads(path.read_bytes())

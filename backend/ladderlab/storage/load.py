@@ -1,4 +1,4 @@
-"""Load the PROJECT argument of the CLI: a project folder, a whole-project .json, or a .st file."""
+"""Load the PROJECT argument of the CLI: a project folder, a whole-project .json, or a .st / .il file."""
 
 from __future__ import annotations
 
@@ -14,24 +14,27 @@ from ..st.project_text import source_to_project
 from . import journal
 from .errors import ProjectLoadError, json_text_problem, validation_diagnostics
 from .project_folder import PROJECT_FILE, is_project_file, read_project_folder
+from .text_files import CLI_HINT, decode_text
 from .workspace import LOCKS_DIR
 
 
-def load_project_path(path: Path | str) -> Project:
-    """Read whatever a user points the CLI at; raises ProjectLoadError with located diagnostics."""
+def load_project_path(path: Path | str, encoding: str | None = None, hint: str = CLI_HINT) -> Project:
+    """Read whatever a user points the CLI at, its files in ``encoding`` (default UTF-8); raises ProjectLoadError
+    with located diagnostics (a file that does not decode: BAD-ENCODING at its first bad byte)."""
     path = Path(path)
     if path.is_dir():
         _finish_interrupted_save(path)
         if not (path / PROJECT_FILE).is_file():
             raise _error(str(path), f"not a project folder: it has no {PROJECT_FILE}")
-        return read_project_folder(path)
+        return read_project_folder(path, encoding, hint)
     if not path.is_file():
         raise _error(str(path), "no such file or folder")
     if path.suffix.lower() == ".json":
-        return _load_json_project(path)
-    if path.suffix.lower() == ".st":
-        return project_from_st(path.read_text(encoding="utf-8"), name=path.stem, file=path.name)
-    raise _error(str(path), "expected a project folder, a project .json file or a .st file")
+        return _load_json_project(path, decode_text(path.read_bytes(), path.name, encoding, hint))
+    if path.suffix.lower() in (".st", ".il"):  # IEC source; a POU whose body is IL is IL in either (docs/il.md)
+        text = decode_text(path.read_bytes(), path.name, encoding, hint)
+        return project_from_st(text, name=path.stem, file=path.name)
+    raise _error(str(path), "expected a project folder, a project .json file or a .st or .il file")
 
 
 def _finish_interrupted_save(folder: Path) -> None:
@@ -45,8 +48,7 @@ def _finish_interrupted_save(folder: Path) -> None:
         journal.recover(folder, is_project_file)
 
 
-def _load_json_project(path: Path) -> Project:
-    text = path.read_text(encoding="utf-8")
+def _load_json_project(path: Path, text: str) -> Project:
     refused = json_text_problem(text, path.name)
     if refused is not None:
         raise ProjectLoadError([refused])
@@ -71,7 +73,7 @@ def _load_json_project(path: Path) -> Project:
 
 
 def project_from_st(text: str, *, name: str, file: str) -> Project:
-    """A project made of the TYPEs, VAR_GLOBALs, POUs and CONFIGURATION tasks of one ST source file.
+    """A project made of the TYPEs, VAR_GLOBALs, POUs and CONFIGURATION tasks of one IEC source file (ST, IL).
 
     The file is parsed (not just split like a stored POU file) because its CONFIGURATION
     becomes the project's tasks; POU texts keep the file's line numbers, so later

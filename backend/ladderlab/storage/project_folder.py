@@ -2,13 +2,14 @@
 
 Layout::
 
-    project.json        name, format, POU order, tasks
+    project.json        name, format, POU order, tasks, configuration
     types.st            TYPE ... END_TYPE blocks
     globals.st          VAR_GLOBAL ... END_VAR blocks
     pous/<name>.st      ST POUs as complete IEC text (PROGRAM ... END_PROGRAM)
     pous/<name>.plant.st ST plants (a PROGRAM in IEC text; the file name makes it a plant)
-    pous/<name>.ld.json / pous/<name>.fbd.json   graphical POUs
-    pous/<name>.st.json ST POUs whose text cannot be split back exactly (e.g. a VAR block
+    pous/<name>.il      IL POUs as complete IEC text, the body in IL (docs/il.md)
+    pous/<name>.ld.json / pous/<name>.fbd.json / pous/<name>.sfc.json   graphical POUs
+    pous/<name>.st.json ST (.il.json: IL) POUs whose text cannot be split back exactly (e.g. a VAR block
                         without END_VAR while the user is still typing); never loses a character
     hmi/<name>.json     operator panels (project.json lists their order)
     EXERCISE.md         the statement of the exercise, when the project is one
@@ -30,16 +31,18 @@ from typing import Any
 
 from pydantic import ValidationError
 
-from ..model import Diagnostic, Panel, Pou, Project, TestFile
+from ..model import Diagnostic, Panel, Pou, Project, Task, TestFile
 from ..model.names import test_file_name_problem
+from ..model.project import TEXT_LANGUAGES
 from .errors import ProjectLoadError, json_text_problem, validation_diagnostics
 from .st_text import StTextError, compose_pou_text, parse_pou_text, round_trips
+from .text_files import HINT, decode_text
 
 PROJECT_FILE = "project.json"
 TYPES_FILE = "types.st"
 GLOBALS_FILE = "globals.st"
 POUS_DIR = "pous"
-POU_SUFFIXES = (".st", ".plant.st", ".st.json", ".ld.json", ".fbd.json")
+POU_SUFFIXES = (".st", ".plant.st", ".st.json", ".il", ".il.json", ".ld.json", ".fbd.json", ".sfc.json")
 HMI_DIR = "hmi"
 EXERCISE_FILE = "EXERCISE.md"
 TESTS_DIR = "tests"
@@ -52,18 +55,33 @@ def dump_json(data: Any) -> str:
     return json.dumps(data, indent=2, sort_keys=True, ensure_ascii=False) + "\n"
 
 
+def _task(task: Task) -> dict[str, Any]:
+    """A task as project.json holds it; ``single`` and ``watchdog_ms`` only when set, so files of cyclic tasks stay
+    as they were (``interval`` stays even when null: null means a SINGLE task without an interval)."""
+    data = task.model_dump(mode="json")
+    for optional in ("single", "watchdog_ms"):
+        if data[optional] is None:
+            del data[optional]
+    return data
+
+
 def _text_file(text: str) -> str:
     return text + "\n" if text else ""
 
 
 def project_files(project: Project) -> dict[str, str]:
     """Relative path -> content of every file the project is stored as."""
-    meta = {
+    meta: dict[str, Any] = {
         "format": project.format,
         "name": project.name,
         "pous": [p.name for p in project.pous],
-        "tasks": [t.model_dump(mode="json", exclude_none=True) for t in project.tasks],
+        "tasks": [_task(t) for t in project.tasks],
     }
+    if project.configuration is not None:
+        configuration = project.configuration.model_dump(mode="json")
+        for resource, stored in zip(project.configuration.resources, configuration["resources"], strict=True):
+            stored["tasks"] = [_task(t) for t in resource.tasks]
+        meta["configuration"] = configuration
     if project.panels:
         meta["panels"] = [p.name for p in project.panels]
     files = {
@@ -88,8 +106,8 @@ def test_path(name: str) -> str:
 
 def pou_file(pou: Pou) -> tuple[str, str]:
     """The stored path and content of one POU."""
-    if pou.language == "st" and round_trips(pou):
-        suffix = ".plant.st" if pou.kind == "plant" else ".st"
+    if pou.language in TEXT_LANGUAGES and round_trips(pou):
+        suffix = ".plant.st" if pou.kind == "plant" else f".{pou.language}"
         return f"{POUS_DIR}/{pou.name}{suffix}", compose_pou_text(pou)
     data = pou.model_dump(mode="json", by_alias=True, exclude_none=True)
     return f"{POUS_DIR}/{pou.name}.{pou.language}.json", dump_json(data)
@@ -120,15 +138,18 @@ def is_project_file(rel: str) -> bool:
     )
 
 
-def read_project_folder(folder: Path) -> Project:
+def read_project_folder(folder: Path, encoding: str | None = None, hint: str = HINT) -> Project:
     """Load a project folder; raises ProjectLoadError naming every bad file and JSON path.
 
-    A symbolic link that leads out of the folder is refused (a project someone sent must not make
-    LadderLab show or overwrite files elsewhere); links within the folder are followed."""
+    Its files are UTF-8 unless ``encoding`` says otherwise (text_files.py: a file that does not decode is a
+    located BAD-ENCODING error; ``hint`` says what to do about it). A symbolic link that leads out of the
+    folder is refused (a project someone sent must not make LadderLab show or overwrite files elsewhere);
+    links within the folder are followed."""
     problems: list[Diagnostic] = []
+    read = _Reader(folder, encoding, hint, problems)
     if not _inside(folder, folder / POUS_DIR):
         raise ProjectLoadError([_outside(POUS_DIR)])
-    meta = _read_json(folder / PROJECT_FILE, PROJECT_FILE, problems) if _inside(folder, folder / PROJECT_FILE) else None
+    meta = read.json(folder / PROJECT_FILE, PROJECT_FILE) if _inside(folder, folder / PROJECT_FILE) else None
     if meta is None and not problems:
         problems.append(_outside(PROJECT_FILE))
     if meta is None:
@@ -150,15 +171,16 @@ def read_project_folder(folder: Path) -> Project:
             Diagnostic(code="BAD-FILE", file=PROJECT_FILE, json_path="$.pous", message="expected a list of POU names")
         )
         order = []
-    pous = [pou for pou in (_read_pou(folder, name, problems) for name in _pou_names(folder, order)) if pou]
-    panels = _read_panels(folder, meta.get("panels", []), problems)
+    pous = [pou for pou in (_read_pou(folder, name, read) for name in _pou_names(folder, order)) if pou]
+    panels = _read_panels(read, meta.get("panels", []))
     data = {
         "name": meta.get("name"),
         "format": meta.get("format"),
         "tasks": meta.get("tasks", []),
-        "types": _read_text(folder, TYPES_FILE, problems),
-        "globals": _read_text(folder, GLOBALS_FILE, problems),
-        "exercise": _read_text(folder, EXERCISE_FILE, problems),
+        "configuration": meta.get("configuration"),
+        "types": read.text(folder / TYPES_FILE, TYPES_FILE) or "",
+        "globals": read.text(folder / GLOBALS_FILE, GLOBALS_FILE) or "",
+        "exercise": read.text(folder / EXERCISE_FILE, EXERCISE_FILE) or "",
     }
     project = None
     try:
@@ -170,15 +192,17 @@ def read_project_folder(folder: Path) -> Project:
     assert project is not None
     project.pous = pous
     project.panels = panels
-    project.tests = read_tests(folder / TESTS_DIR, TESTS_DIR, problems)
+    project.tests = _read_tests(read, TESTS_DIR)
     if problems:
         raise ProjectLoadError(problems)
     return project
 
 
-def read_tests(folder: Path, rel_dir: str, problems: list[Diagnostic] | None = None) -> list[TestFile]:
-    """The test files of one folder (``tests`` or ``tests/hidden``), by name; unreadable ones are problems."""
+def _read_tests(read: _Reader, rel_dir: str) -> list[TestFile]:
+    """The test files of one folder of the project (``tests`` or ``tests/hidden``), by name; unreadable ones are
+    problems of ``read``."""
     found: list[TestFile] = []
+    folder = read.folder / rel_dir
     if not folder.is_dir():
         return found
     for path in sorted(folder.iterdir()):
@@ -187,25 +211,26 @@ def read_tests(folder: Path, rel_dir: str, problems: list[Diagnostic] | None = N
         name = path.name[: -len(TEST_SUFFIX)]
         rel = f"{rel_dir}/{path.name}"
         problem = test_file_name_problem(name)
-        try:
-            text = _read_exact(path)
-        except UnicodeDecodeError as err:
-            problem = f"not UTF-8 text: {err.reason}"
         if problem:
-            if problems is not None:
-                problems.append(Diagnostic(code="BAD-FILE", file=rel, message=f"cannot read this test file: {problem}"))
+            read.problems.append(
+                Diagnostic(code="BAD-FILE", file=rel, message=f"cannot read this test file: {problem}")
+            )
             continue
-        found.append(TestFile(name=name, text=text))
+        text = read.text(path, rel)
+        if text is not None:
+            found.append(TestFile(name=name, text=text))
     return found
 
 
-def hidden_tests(folder: Path) -> list[TestFile]:
-    """A teacher's hidden test files of a project folder (``tests/hidden/<name>.st``)."""
-    return read_tests(folder / HIDDEN_TESTS_DIR, HIDDEN_TESTS_DIR)
+def hidden_tests(folder: Path, encoding: str | None = None) -> list[TestFile]:
+    """A teacher's hidden test files of a project folder (``tests/hidden/<name>.st``); unreadable ones are left
+    out (the grade counts what runs)."""
+    return _read_tests(_Reader(folder, encoding, HINT, []), HIDDEN_TESTS_DIR)
 
 
-def _read_panels(folder: Path, order: object, problems: list[Diagnostic]) -> list[Panel]:
+def _read_panels(read: _Reader, order: object) -> list[Panel]:
     """The panels in project.json order, then any other ``hmi/*.json`` (added by hand), sorted."""
+    folder, problems = read.folder, read.problems
     if not isinstance(order, list) or not all(isinstance(n, str) for n in order):
         problems.append(
             Diagnostic(
@@ -231,7 +256,7 @@ def _read_panels(folder: Path, order: object, problems: list[Diagnostic]) -> lis
         if not _inside(folder, folder / rel):
             problems.append(_outside(rel))
             continue
-        data = _read_json(folder / rel, rel, problems)
+        data = read.json(folder / rel, rel)
         if data is None:
             continue
         try:
@@ -278,7 +303,7 @@ def read_pou_file(path: Path) -> Pou:
     """One POU file alone (e.g. an exercise's starting file); ProjectLoadError naming the file."""
     problems: list[Diagnostic] = []
     name = _pou_name_of(path.name)
-    pou = _read_pou(path.parent.parent, name, problems) if name else None
+    pou = _read_pou(path.parent.parent, name, _Reader(path.parent.parent, None, HINT, problems)) if name else None
     if pou is None:
         message = f"{path.name} is not a POU file (.st, .plant.st, .ld.json, .fbd.json, .st.json)"
         raise ProjectLoadError(problems or [Diagnostic(code="BAD-FILE", file=path.name, message=message)])
@@ -289,11 +314,15 @@ def pou_paths(folder: Path, name: str) -> list[Path]:
     return [p for p in (folder / POUS_DIR / f"{name}{s}" for s in POU_SUFFIXES) if p.is_file()]
 
 
-def _read_pou(folder: Path, name: str, problems: list[Diagnostic]) -> Pou | None:
+def _read_pou(folder: Path, name: str, read: _Reader) -> Pou | None:
+    problems = read.problems
     paths = pou_paths(folder, name)
     if len(paths) != 1:
         message = (
-            (f"POU {name!r} is listed in project.json but has no file pous/{name}.st, .ld.json or .fbd.json")
+            (
+                f"POU {name!r} is listed in project.json but has no file pous/{name}.st, .il, .ld.json, .fbd.json "
+                "or .sfc.json"
+            )
             if not paths
             else (f"POU {name!r} has several files: {', '.join(p.name for p in paths)}; keep one")
         )
@@ -305,7 +334,7 @@ def _read_pou(folder: Path, name: str, problems: list[Diagnostic]) -> Pou | None
         problems.append(_outside(rel, name))
         return None
     if path.name.endswith(".json"):
-        data = _read_json(path, rel, problems)
+        data = read.json(path, rel)
         if data is None:
             return None
         try:
@@ -327,11 +356,11 @@ def _read_pou(folder: Path, name: str, problems: list[Diagnostic]) -> Pou | None
             )
             return None
     else:
-        try:
-            pou = parse_pou_text(_read_exact(path), plant=path.name.endswith(".plant.st"))
-        except UnicodeDecodeError as err:
-            problems.append(Diagnostic(code="BAD-FILE", file=rel, pou=name, message=f"not UTF-8 text: {err.reason}"))
+        text = read.text(path, rel, pou=name)
+        if text is None:
             return None
+        try:
+            pou = parse_pou_text(text, language=path.suffix[1:], plant=path.name.endswith(".plant.st"))
         except StTextError as err:
             problems.append(
                 Diagnostic(code="BAD-FILE", file=rel, pou=name, line=err.line, column=err.column, message=err.reason)
@@ -350,20 +379,6 @@ def _read_pou(folder: Path, name: str, problems: list[Diagnostic]) -> Pou | None
     return pou
 
 
-def _read_text(folder: Path, rel: str, problems: list[Diagnostic]) -> str:
-    path = folder / rel
-    if not path.is_file():
-        return ""
-    if not _inside(folder, path):
-        problems.append(_outside(rel))
-        return ""
-    try:
-        return _read_exact(path)
-    except UnicodeDecodeError as err:
-        problems.append(Diagnostic(code="BAD-FILE", file=rel, message=f"not UTF-8 text: {err.reason}"))
-        return ""
-
-
 def _inside(folder: Path, path: Path) -> bool:
     """Whether ``path`` (following links) stays inside ``folder``; a path that does not exist does."""
     if not os.path.lexists(path):
@@ -380,28 +395,43 @@ def _outside(rel: str, pou: str | None = None) -> Diagnostic:
     )
 
 
-def _read_exact(path: Path) -> str:
-    """UTF-8 text without newline translation: a '\\r' typed into a POU must come back as typed."""
-    return path.read_bytes().decode("utf-8")
+class _Reader:
+    """Reads the files of one project folder in one encoding, collecting every problem."""
 
+    def __init__(self, folder: Path, encoding: str | None, hint: str, problems: list[Diagnostic]):
+        self.folder, self.encoding, self.hint, self.problems = folder, encoding, hint, problems
 
-def _read_json(path: Path, rel: str, problems: list[Diagnostic]) -> Any:
-    try:
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        problems.append(Diagnostic(code="BAD-FILE", file=rel, message="file is missing"))
-        return None
-    except UnicodeDecodeError as err:
-        problems.append(Diagnostic(code="BAD-FILE", file=rel, message=f"not UTF-8 text: {err.reason}"))
-        return None
-    refused = json_text_problem(text, rel)
-    if refused is not None:
-        problems.append(refused)
-        return None
-    try:
-        return json.loads(text)
-    except json.JSONDecodeError as err:
-        problems.append(
-            Diagnostic(code="BAD-JSON", file=rel, line=err.lineno, column=err.colno, message=f"invalid JSON: {err.msg}")
-        )
-        return None
+    def text(self, path: Path, rel: str, pou: str | None = None) -> str | None:
+        """A text file exactly as stored (no newline translation: a '\\r' typed into a POU comes back as typed);
+        "" when it is missing, None when it leads out of the folder or does not decode (reported)."""
+        if not path.is_file():
+            return ""
+        if not _inside(self.folder, path):
+            self.problems.append(_outside(rel, pou))
+            return None
+        try:
+            return decode_text(path.read_bytes(), rel, self.encoding, self.hint)
+        except ProjectLoadError as err:
+            self.problems.extend(d.model_copy(update={"pou": pou}) for d in err.diagnostics)
+            return None
+
+    def json(self, path: Path, rel: str) -> Any:
+        if not path.is_file():
+            self.problems.append(Diagnostic(code="BAD-FILE", file=rel, message="file is missing"))
+            return None
+        text = self.text(path, rel)
+        if text is None:
+            return None
+        refused = json_text_problem(text, rel)
+        if refused is not None:
+            self.problems.append(refused)
+            return None
+        try:
+            return json.loads(text)
+        except json.JSONDecodeError as err:
+            self.problems.append(
+                Diagnostic(
+                    code="BAD-JSON", file=rel, line=err.lineno, column=err.colno, message=f"invalid JSON: {err.msg}"
+                )
+            )
+            return None

@@ -12,6 +12,8 @@ import re
 from dataclasses import dataclass
 
 from ..model import Pou
+from ..model.project import Language, PouKind
+from ..st.il_parser import looks_like_il
 
 _TOKEN = re.compile(
     r"""
@@ -23,7 +25,7 @@ _TOKEN = re.compile(
     re.VERBOSE | re.DOTALL,
 )
 
-POU_KEYWORDS = {"PROGRAM": "program", "FUNCTION_BLOCK": "function_block", "FUNCTION": "function"}
+POU_KEYWORDS: dict[str, PouKind] = {"PROGRAM": "program", "FUNCTION_BLOCK": "function_block", "FUNCTION": "function"}
 POU_END = {
     "program": "END_PROGRAM",
     "function_block": "END_FUNCTION_BLOCK",
@@ -118,14 +120,18 @@ def _find(words: list[Word], start: int, targets: set[str], text: str, at: int, 
     raise StTextError(message, text, at)
 
 
-def parse_pou_text(text: str, plant: bool = False) -> Pou:
-    """Read one ``pous/<name>.st`` file: exactly one POU, nothing around it but comments.
+def parse_pou_text(text: str, language: str = "st", plant: bool = False) -> Pou:
+    """Read one ``pous/<name>.st`` or ``.il`` file: exactly one POU, nothing around it but comments.
 
-    ``plant``: a ``pous/<name>.plant.st`` file, whose POU must be a PROGRAM (it becomes a plant)."""
+    A ``.il`` file's POU is IL; in a ``.st`` file a POU whose body is IL is IL too (docs/il.md), so a
+    stored ST POU whose body reads as IL does not round-trip and is kept as ``.st.json``. ``plant``: a
+    ``pous/<name>.plant.st`` file, whose POU must be a PROGRAM (it becomes a plant)."""
     parsed = split_source(text)
     if len(parsed.pous) != 1 or parsed.types or parsed.globals:
         raise StTextError("a POU file must hold exactly one PROGRAM, FUNCTION_BLOCK or FUNCTION", text, 0)
     pou = parsed.pous[0]
+    if language == "il":
+        pou = pou.model_copy(update={"language": "il"})
     if not plant:
         return pou
     if pou.kind != "program":
@@ -162,14 +168,16 @@ def _split_pou(text: str, words: list[Word]) -> Pou:
     declarations = text[inner_start:decl_end] if decl_end > inner_start else ""
     body_start = min(decl_end + 1, footer_start) if declarations else inner_start
     body = text[body_start : max(footer_start - 1, body_start)]
-    return Pou(name=name, kind=kind, language="st", return_type=return_type, declarations=declarations, body=body)
+    language: Language = "il" if looks_like_il(body) else "st"
+    return Pou(name=name, kind=kind, language=language, return_type=return_type, declarations=declarations, body=body)
 
 
 def compose_pou_text(pou: Pou) -> str:
-    """The complete IEC text of an ST POU, as stored in ``pous/<name>.st``."""
+    """The complete IEC text of an ST or IL POU, as stored in ``pous/<name>.st`` / ``.il``."""
     header = f"{POU_HEADER[pou.kind]} {pou.name}"
     if pou.kind == "function":
         header += f" : {pou.return_type}"
+    assert isinstance(pou.body, str), "only ST POUs are stored as text"
     parts = [header]
     if pou.declarations:
         parts.append(pou.declarations)
@@ -182,6 +190,6 @@ def compose_pou_text(pou: Pou) -> str:
 def round_trips(pou: Pou) -> bool:
     """Whether ``pou`` survives compose -> parse unchanged (else storage keeps it as JSON)."""
     try:
-        return parse_pou_text(compose_pou_text(pou), plant=pou.kind == "plant") == pou
+        return parse_pou_text(compose_pou_text(pou), pou.language, plant=pou.kind == "plant") == pou
     except StTextError:
         return False

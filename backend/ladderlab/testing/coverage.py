@@ -11,8 +11,9 @@ Coverages of several tests and processes ``merge``; ``report()`` is the JSON sha
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Any
 
-from ..engine.simulation import Simulation
+from ..engine.simulation import ProbeView, Simulation
 from ..ir import nodes as ir
 from ..ir.lower_tests import HOST
 from ..ir.types import BOOL
@@ -79,7 +80,7 @@ class Coverage:
             if pou.kind == "function" and not pou.name.startswith(_TEST_PREFIXES):
                 self._add(pou, context.probes_of(pou.name).elements, sim.probes(pou.name))
 
-    def _add(self, pou: ir.Pou, elements: list[str], view) -> None:
+    def _add(self, pou: ir.Pou, elements: list[str], view: ProbeView) -> None:
         if pou.name.startswith(_TEST_PREFIXES) or not elements:
             return
         entry = self.pous.get(pou.name.upper())
@@ -99,9 +100,9 @@ class Coverage:
             mine.energised |= theirs.energised
             mine.booleans |= theirs.booleans
 
-    def report(self, names: dict[str, str] | None = None) -> dict[str, dict]:
+    def report(self, names: dict[str, str] | None = None) -> dict[str, dict[str, Any]]:
         """``{POU: {language, elements, executed, never_executed, never_energised}}`` (ST: ``lines`` too)."""
-        out: dict[str, dict] = {}
+        out: dict[str, dict[str, Any]] = {}
         for key in sorted(self.pous):
             entry = self.pous[key]
             never = [e for e in entry.elements if e not in entry.executed]

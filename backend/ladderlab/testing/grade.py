@@ -8,11 +8,13 @@ A test file that does not compile scores 0 of the tests it declares.
 
 from __future__ import annotations
 
+from typing import Any
+
 from ..st.parser import parse_tests
 from .suite import SuiteFile, SuiteOutcome
 
 
-def grade(exercise: str, files: list[SuiteFile], outcome: SuiteOutcome) -> dict:
+def grade(exercise: str, files: list[SuiteFile], outcome: SuiteOutcome) -> dict[str, Any]:
     per_file: dict[str, dict[str, int]] = {}
     for file, result in zip(files, outcome.files):
         parsed = parse_tests(file.text, file=file.path).ast

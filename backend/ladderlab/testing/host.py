@@ -8,7 +8,9 @@ runner then runs the TEARDOWN and reports it).
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any, NoReturn
 
 from ..engine.simulation import Simulation
 from ..iec.value_text import format_time
@@ -16,7 +18,7 @@ from ..ir.lower_tests import Site
 from ..ir.types import Elementary
 from .values import literal
 
-_OPERATORS = {
+_OPERATORS: dict[str, tuple[str, Callable[[Any, Any], bool]]] = {
     "ASSERT_EQ": ("=", lambda a, e: a == e),
     "ASSERT_NEQ": ("<>", lambda a, e: a != e),
     "ASSERT_GT": (">", lambda a, e: a > e),
@@ -54,12 +56,14 @@ class TestFailure(Exception):
 class Host:
     """Carries out the verbs of one test in ``sim``; ``scan_budget`` bounds the scans it may run."""
 
-    def __init__(self, sim: Simulation, sites: list[Site], scan_budget: int, collect=None) -> None:
+    def __init__(
+        self, sim: Simulation, sites: list[Site], scan_budget: int, collect: Callable[[], None] | None = None
+    ) -> None:
         self.sim, self.sites, self.scan_budget = sim, sites, scan_budget
         self.teardown = False
         self.collect = collect  # coverage: called after every scan and before every verb
         self._faults = 0
-        self._methods: dict[str, object] = {}
+        self._methods: dict[str, Callable[..., object]] = {}
 
     def dispatch(self, site: int, *args: object) -> object:
         if self.collect is not None:
@@ -68,17 +72,17 @@ class Host:
         method = self._methods.get(where.verb)
         if method is None:
             method = self._methods[where.verb] = getattr(self, "_" + where.verb.lower())
-        return method(where, *args)  # type: ignore[operator]  # operands were checked when the test file was lowered
+        return method(where, *args)
 
     # ------------------------------------------------------------ failing
-    def fail(self, site: Site, message: str, kind: str = "assertion", **values: object) -> None:
-        raise TestFailure(Failure(message, site.line, site.column, site.verb, kind=kind, **values))  # type: ignore[arg-type]  # operands were checked when the test file was lowered
+    def fail(self, site: Site, message: str, kind: str = "assertion", **values: str | None) -> NoReturn:
+        raise TestFailure(Failure(message, site.line, site.column, site.verb, kind=kind, **values))
 
     # ------------------------------------------------------------ assertions
     def _phase(self, site: Site) -> bool:
         return self.teardown
 
-    def _compare(self, site: Site, actual, expected, message=None) -> bool:
+    def _compare(self, site: Site, actual: Any, expected: Any, message: Any = None) -> bool:
         symbol, holds = _OPERATORS[site.verb]
         if holds(actual, expected):
             return True
@@ -95,7 +99,7 @@ class Host:
 
     _assert_eq = _assert_neq = _assert_gt = _assert_lt = _assert_ge = _assert_le = _compare
 
-    def _assert_near(self, site: Site, actual, expected, tolerance, message=None) -> bool:
+    def _assert_near(self, site: Site, actual: Any, expected: Any, tolerance: Any, message: Any = None) -> bool:
         if abs(actual - expected) <= tolerance:
             return True
         shown, wanted = literal(actual, site.types[0]), literal(expected, site.types[1])
@@ -109,16 +113,16 @@ class Host:
         )
         return False
 
-    def _assert_true(self, site: Site, condition, message=None) -> bool:
+    def _assert_true(self, site: Site, condition: Any, message: Any = None) -> bool:
         return self._condition(site, condition, True, message)
 
-    def _assert_false(self, site: Site, condition, message=None) -> bool:
+    def _assert_false(self, site: Site, condition: Any, message: Any = None) -> bool:
         return self._condition(site, condition, False, message)
 
-    def _assert(self, site: Site, condition) -> bool:
+    def _assert(self, site: Site, condition: Any) -> bool:
         return self._condition(site, condition, True, None)
 
-    def _condition(self, site: Site, condition, wanted: bool, message) -> bool:
+    def _condition(self, site: Site, condition: Any, wanted: bool, message: Any) -> bool:
         if bool(condition) is wanted:
             return True
         shown, expected = literal(condition, _BOOL), literal(wanted, _BOOL)
@@ -132,11 +136,11 @@ class Host:
         return False
 
     # ------------------------------------------------------------ time and scans
-    def _advance_time(self, site: Site, ms) -> bool:
+    def _advance_time(self, site: Site, ms: Any) -> bool:
         self.sim.advance_clock(ms)
         return True
 
-    def _run_scans(self, site: Site, count) -> bool:
+    def _run_scans(self, site: Site, count: Any) -> bool:
         if count < 0:
             self.fail(site, f"RUN_SCANS needs a count of zero or more, not {count}", kind="error")
         self._budget(site, count)
@@ -149,7 +153,7 @@ class Host:
         self._scanned(site)
         return True
 
-    def _run_for(self, site: Site, ms) -> bool:
+    def _run_for(self, site: Site, ms: Any) -> bool:
         end = self.sim.time_ms + ms
         while self.sim.next_scan_time() <= end:
             self._budget(site, 1)
@@ -157,14 +161,14 @@ class Host:
             self._scanned(site)
         return True
 
-    def _run_until(self, site: Site, *args) -> object:
+    def _run_until(self, site: Site, *args: Any) -> object:
         if not args:  # the start: the time the timeout counts from
             return self.sim.time_ms
         start, timeout = args
-        if self.sim.time_ms - start >= timeout:  # type: ignore[operator]  # operands were checked when the test file was lowered
+        if self.sim.time_ms - start >= timeout:
             self.fail(
                 site,
-                f"RUN_UNTIL timed out: {site.operands[0]} still FALSE after {format_time(timeout)} "  # type: ignore[arg-type]  # operands were checked when the test file was lowered
+                f"RUN_UNTIL timed out: {site.operands[0]} still FALSE after {format_time(timeout)} "
                 f"({self.sim.scan_count} scans run in the test)",
                 kind="timeout",
             )
@@ -206,30 +210,30 @@ class Host:
             self.fail(site, f"{site.verb}: the configuration stopped: {fault.text()}", kind=kind)
 
     # ------------------------------------------------------------ forcing
-    def _force(self, site: Site, value) -> bool:
-        self.sim.force(site.path, value)  # type: ignore[arg-type]  # operands were checked when the test file was lowered
+    def _force(self, site: Site, value: Any) -> bool:
+        self.sim.force(site.path, value)  # type: ignore[arg-type]  # a FORCE site has its path
         return True
 
     def _release(self, site: Site) -> bool:
-        self.sim.unforce(site.path)  # type: ignore[arg-type]  # operands were checked when the test file was lowered
+        self.sim.unforce(site.path)  # type: ignore[arg-type]  # a RELEASE site has its path
         return True
 
     # ------------------------------------------------------------ mocks
-    def _mock(self, site: Site, reference) -> bool:
+    def _mock(self, site: Site, reference: Any) -> bool:
         self.sim.mock(_target(reference))
         return True
 
-    def _mock_function(self, site: Site, value) -> bool:
-        self.sim.replace_function(site.function, lambda *args: value)  # type: ignore[arg-type]  # operands were checked when the test file was lowered
+    def _mock_function(self, site: Site, value: Any) -> bool:
+        self.sim.replace_function(site.function, lambda *args: value)  # type: ignore[arg-type]  # a MOCK_FUNCTION site names it
         return True
 
-    def _mock_verify_called(self, site: Site, reference) -> bool:
+    def _mock_verify_called(self, site: Site, reference: Any) -> bool:
         calls = self._calls(site, reference)
         if calls == 0:
             self.fail(site, f"MOCK_VERIFY_CALLED failed: {site.operands[0]} was never called")
         return True
 
-    def _mock_verify_call_count(self, site: Site, expected, reference) -> bool:
+    def _mock_verify_call_count(self, site: Site, expected: Any, reference: Any) -> bool:
         calls = self._calls(site, reference)
         if calls != expected:
             self.fail(
@@ -240,13 +244,13 @@ class Host:
             )
         return True
 
-    def _calls(self, site: Site, reference) -> int:
+    def _calls(self, site: Site, reference: Any) -> int:
         calls = self.sim.mocks.count(_target(reference))
         if calls is None:
             self.fail(site, f"{site.verb}: {site.operands[0]} is not mocked (write MOCK {site.operands[0]}; first)")
-        return calls  # type: ignore[return-value]  # operands were checked when the test file was lowered
+        return calls
 
 
-def _target(reference) -> object:
+def _target(reference: Any) -> object:
     container, key = reference
     return container[key]

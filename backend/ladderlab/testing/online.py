@@ -16,7 +16,7 @@ from .run import failure_state
 def failed_test_simulation(*, project_json: str, file: str, text: str, test: str, watchdog_s: float) -> Simulation:
     """LookupError: no such test, or the file does not compile; ValueError: the test passes."""
     project = Project.model_validate_json(project_json)
-    prepared, result = failure_state(project, file, text, test)
+    prepared, state = failure_state(project, file, text, test)
     sim = Build(prepared.compiled, [], prepared.watchdogs).simulation(watchdog_s=watchdog_s)
-    sim.restore(result.state)  # type: ignore[arg-type]  # operands were checked when the test file was lowered
+    sim.restore(state)
     return sim

@@ -9,6 +9,7 @@ from __future__ import annotations
 import json
 import xml.etree.ElementTree as ET
 from dataclasses import asdict
+from typing import Any
 
 from .run import TestResult
 from .suite import SuiteOutcome
@@ -55,8 +56,8 @@ def text_report(outcome: SuiteOutcome, coverage_text: str | None = None) -> str:
     return "\n".join(lines) + "\n"
 
 
-def result_json(result: TestResult) -> dict:
-    data = {
+def result_json(result: TestResult) -> dict[str, Any]:
+    data: dict[str, Any] = {
         "file": result.file,
         "name": result.name,
         "line": result.line,
@@ -70,7 +71,7 @@ def result_json(result: TestResult) -> dict:
 
 
 def jsonl_report(outcome: SuiteOutcome) -> str:
-    lines = []
+    lines: list[dict[str, Any]] = []
     for file in outcome.files:
         if not file.ok:
             lines.append(

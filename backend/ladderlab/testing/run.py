@@ -136,7 +136,9 @@ def run_test(prepared: Prepared, test: LoweredTest, options: Options, coverage: 
 _OUT_OF_MEMORY = "out of memory: the test needed more memory than its process may use (--memory-limit)"
 
 
-def _run(prepared: Prepared, test: LoweredTest, options: Options, coverage: Coverage | None, result: TestResult):
+def _run(
+    prepared: Prepared, test: LoweredTest, options: Options, coverage: Coverage | None, result: TestResult
+) -> None:
     sim = Build(prepared.compiled, [], prepared.watchdogs).simulation(watchdog_s=options.watchdog_s)
     collect = (lambda: coverage.collect(sim)) if coverage is not None else None
     host = Host(sim, prepared.sites, options.scan_budget, collect)
@@ -181,9 +183,9 @@ def _phase(sim: Simulation, instance: object, test: LoweredTest, options: Option
     return Failure(message, line, origin.column if line is not None and origin else None, kind=kind)
 
 
-def failure_state(project: Project, file: str, text: str, name: str) -> tuple[Prepared, TestResult]:
+def failure_state(project: Project, file: str, text: str, name: str) -> tuple[Prepared, SimState]:
     """Run the test ``name`` again (the virtual clock makes it repeat exactly) in the monitor variant and
-    return its program and its result with the state the simulation had when it failed (to open online).
+    return its program and the state the simulation had when it failed (to open online).
     LookupError: no such test or the file does not compile; ValueError: the test passes."""
     prepared = prepare(project, file, text, monitor=True)
     test = next((t for t in prepared.tests if t.name == name), None)
@@ -192,4 +194,4 @@ def failure_state(project: Project, file: str, text: str, name: str) -> tuple[Pr
     result = run_test(prepared, test, Options(keep_state=True))
     if result.state is None:
         raise ValueError(f"the test {name!r} passes: there is no failure to open")
-    return prepared, result
+    return prepared, result.state

@@ -17,7 +17,7 @@ import os
 import re
 import time
 from collections.abc import Callable
-from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
+from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -75,11 +75,15 @@ class SuiteOutcome:
         return 1 if self.count("failed") else 0
 
 
-def suite_files(project: Project, folder: Path | None = None, *, grade: bool = False) -> list[SuiteFile]:
-    """The project's test files (``tests/*.st``), and with ``grade`` the hidden ones of its folder too."""
+def suite_files(
+    project: Project, folder: Path | None = None, *, grade: bool = False, encoding: str | None = None
+) -> list[SuiteFile]:
+    """The project's test files (``tests/*.st``), and with ``grade`` the hidden ones of its folder too (read in
+    ``encoding``, UTF-8 when None)."""
     files = [SuiteFile(test_path(t.name), t.text) for t in project.tests]
     if grade and folder is not None and folder.is_dir():
-        files += [SuiteFile(f"{HIDDEN_TESTS_DIR}/{t.name}.st", t.text, True) for t in hidden_tests(folder)]
+        hidden = hidden_tests(folder, encoding)
+        files += [SuiteFile(f"{HIDDEN_TESTS_DIR}/{t.name}.st", t.text, True) for t in hidden]
     return files
 
 
@@ -142,11 +146,21 @@ class _Parallel:
     ``n`` runs the tests ``k::n`` (a file has several parts when there are fewer files than workers, so one big
     file still uses every core, or one per test when results must come one by one)."""
 
-    def __init__(self, project, files, options, choice, progress, file_ready) -> None:
+    def __init__(
+        self,
+        project: Project,
+        files: list[SuiteFile],
+        options: Options,
+        choice: tuple[str | None, str | None],
+        progress: Callable[[TestResult], None] | None,
+        file_ready: Callable[[FileOutcome, list[LoweredTest]], None] | None,
+    ) -> None:
         self.project, self.files, self.options, self.choice = project, files, options, choice
         self.progress, self.file_ready = progress, file_ready
 
-    def run(self, parts: list[int], jobs: int, memory_limit_mb: int | None):
+    def run(
+        self, parts: list[int], jobs: int, memory_limit_mb: int | None
+    ) -> tuple[list[FileOutcome], Coverage | None]:
         files = self.files
         work = [(index, part, parts[index]) for index in range(len(files)) for part in range(parts[index])]
         outcomes = [FileOutcome(f.path) for f in files]
@@ -172,7 +186,7 @@ class _Parallel:
             outcome.results.sort(key=lambda r: r.line)
         return outcomes, coverage
 
-    def _arrived(self, part: _Part, outcome: FileOutcome, done: dict) -> None:
+    def _arrived(self, part: _Part, outcome: FileOutcome, done: dict[tuple[int, int], _Part]) -> None:
         first = not any(key[0] == part.file for key in done)
         done[(part.file, part.part)] = part
         if first:
@@ -185,7 +199,7 @@ class _Parallel:
                 self.progress(result)
 
 
-def _result(future, index: int, number: int, files: list[SuiteFile]) -> _Part:
+def _result(future: Future[_Part], index: int, number: int, files: list[SuiteFile]) -> _Part:
     """A part's outcome; a worker process that died (killed, out of memory outside a test) says so for its file."""
     try:
         return future.result()
@@ -196,7 +210,16 @@ def _result(future, index: int, number: int, files: list[SuiteFile]) -> _Part:
         return _Part(index, number, diagnostics, [], 0, [], None)
 
 
-_worker: dict[str, object] = {}
+@dataclass
+class _Worker:
+    """What a worker process keeps between its parts: the project, the files, each file prepared once."""
+
+    project: Project
+    files: list[SuiteFile]
+    prepared: dict[int, Prepared] = field(default_factory=dict)
+
+
+_worker: list[_Worker] = []  # the worker process's one _Worker, set by _worker_start
 
 
 def _worker_start(project: Project, files: list[SuiteFile], memory_limit_mb: int | None) -> None:
@@ -205,14 +228,15 @@ def _worker_start(project: Project, files: list[SuiteFile], memory_limit_mb: int
 
         limit = memory_limit_mb * 1024 * 1024
         resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
-    _worker.update(project=project, files=files, prepared={})
+    _worker[:] = [_Worker(project, files)]
 
 
 def _run_part(index: int, part: int, parts: int, options: Options, choice: tuple[str | None, str | None]) -> _Part:
-    cache: dict[int, Prepared] = _worker["prepared"]  # type: ignore[assignment]  # set by the worker pool's initialiser
+    worker = _worker[0]
+    cache = worker.prepared
     if index not in cache:
-        file: SuiteFile = _worker["files"][index]  # type: ignore[index]  # set by the worker pool's initialiser
-        cache[index] = prepare(_worker["project"], file.path, file.text, coverage=options.coverage)  # type: ignore[arg-type]  # set by the worker pool's initialiser
+        file = worker.files[index]
+        cache[index] = prepare(worker.project, file.path, file.text, coverage=options.coverage)
     prepared = cache[index]
     coverage = Coverage() if options.coverage else None
     tests = selected(prepared, *choice) if prepared.compiled is not None else []

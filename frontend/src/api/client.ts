@@ -1,24 +1,26 @@
-// Typed helpers for the LadderLab HTTP API (served under /api by the FastAPI backend).
+// The LadderLab HTTP API, typed from the server's OpenAPI document: `http` is an openapi-fetch client
+// over `paths` (src/generated/api.ts, `make schema`), so a call names a real route, sends the body the
+// route takes and gets the type it answers. What every call shares is here: the headers the server's
+// security rules ask for (docs/security.md), sign-in on a 401, and failures as ApiError with the
+// server's message. Features keep their calls next to them (online/api.ts, tests/api.ts ...), each a
+// one-line use of `http`.
+import createClient, { type Middleware } from "openapi-fetch";
 import type {
   CheckReport,
+  Health,
   ConflictDetail,
   LibraryEntry,
   ProjectDocument,
   ProjectSummary,
+  Project,
   SaveResult,
   StExport,
   SymbolTable,
   VariableChildren,
+  paths,
 } from "../generated/api";
-import type { Project } from "../generated/project";
 
-export type { ProjectSummary };
-
-/** `GET /api/health`. */
-export interface Health {
-  status: string;
-  version: string;
-}
+export type { Health, ProjectSummary };
 
 /** A failed API call: `status` is the HTTP status (0 when the server could not be reached). */
 export class ApiError extends Error {
@@ -58,32 +60,21 @@ function detailText(detail: unknown): string | null {
   return null;
 }
 
-/** Turns a non-2xx response into an ApiError carrying the server's JSON `detail` when it sent one. */
-export async function errorFromResponse(response: Response): Promise<ApiError> {
-  const fallback = `${response.status} ${response.statusText}`.trim();
-  let detail: unknown = undefined;
-  try {
-    const body: unknown = JSON.parse(await response.text());
-    if (body && typeof body === "object" && "detail" in body) {
-      detail = (body as { detail: unknown }).detail;
-    }
-  } catch {
-    // Not JSON (a proxy error page, an empty body): the status line has to do.
-  }
+/** A non-2xx response as an ApiError, from the body openapi-fetch parsed (`{detail}` when the server sent JSON). */
+export function errorOf(response: Response, body: unknown): ApiError {
+  const detail =
+    body && typeof body === "object" && "detail" in body ? (body as { detail: unknown }).detail : undefined;
   const text = detailText(detail);
-  return new ApiError(text ?? `HTTP ${fallback}`, response.status, detail);
+  return new ApiError(text ?? `HTTP ${`${response.status} ${response.statusText}`.trim()}`, response.status, detail);
 }
 
 /**
- * The headers of a request: the server takes a state-changing request (POST, PUT, PATCH, DELETE) only
- * with a JSON body (or the PLCopen import's XML), so such a request without a Content-Type of its own
- * says JSON, body or not (docs/security.md: a cross-site page cannot send that without the server's
- * consent).
+ * The server takes a state-changing request (POST, PUT, PATCH, DELETE) only with a JSON body (or the
+ * PLCopen import's XML), so such a request without a Content-Type of its own says JSON, body or not
+ * (docs/security.md: a cross-site page cannot send that without the server's consent).
  */
-export function requestHeaders(init?: RequestInit): Headers {
-  const headers = new Headers(init?.headers);
+export function requestHeaders(method: string, headers: Headers): Headers {
   if (!headers.has("Accept")) headers.set("Accept", "application/json");
-  const method = (init?.method ?? "GET").toUpperCase();
   if (method !== "GET" && method !== "HEAD" && !headers.has("Content-Type")) {
     headers.set("Content-Type", "application/json");
   }
@@ -95,41 +86,56 @@ export function signInAgain(location: Pick<Location, "pathname" | "assign"> = wi
   location.assign(`/login?next=${encodeURIComponent(location.pathname)}`);
 }
 
-/** Fetches `path` and returns its JSON body; throws ApiError for network errors, non-2xx and non-JSON. */
-export async function requestJson<T>(path: string, init?: RequestInit): Promise<T> {
-  let response: Response;
+const serverRules: Middleware = {
+  onRequest({ request }) {
+    requestHeaders(request.method.toUpperCase(), request.headers);
+    return request;
+  },
+  onResponse({ response }) {
+    if (response.status === 401) signInAgain();
+    return response;
+  },
+};
+
+/** The typed client of the whole API (global fetch looked up per call, so tests can stub it). */
+export const http = createClient<paths>({
+  baseUrl: typeof window === "undefined" ? "" : window.location.origin,
+  fetch: (request) => globalThis.fetch(request),
+});
+http.use(serverRules);
+
+/**
+ * The data of an openapi-fetch call, or an ApiError: the server's message for a non-2xx answer,
+ * "cannot reach" (status 0) when there was no answer at all.
+ */
+export async function unwrap<T>(call: Promise<{ data?: T; error?: unknown; response: Response }>): Promise<T> {
+  let result: { data?: T; error?: unknown; response: Response };
   try {
-    response = await fetch(path, { ...init, headers: requestHeaders(init) });
+    result = await call;
   } catch (err) {
+    if (err instanceof ApiError) throw err;
     const reason = err instanceof Error ? err.message : String(err);
     throw new ApiError(`Cannot reach the LadderLab server (${reason})`, 0);
   }
-  if (response.status === 401) signInAgain();
-  if (!response.ok) throw await errorFromResponse(response);
-  try {
-    return (await response.json()) as T;
-  } catch {
-    throw new ApiError(`The server sent a response to ${path} that is not JSON`, response.status);
-  }
+  if (!result.response.ok) throw errorOf(result.response, result.error);
+  return result.data as T;
 }
 
+const project = (name: string) => ({ params: { path: { name } } });
+
 export function getHealth(): Promise<Health> {
-  return requestJson<Health>("/api/health");
+  return unwrap(http.GET("/api/health"));
 }
 
 export async function listProjects(): Promise<ProjectSummary[]> {
-  const body = await requestJson<unknown>("/api/projects");
-  if (!Array.isArray(body)) {
-    throw new ApiError("GET /api/projects did not return a list", 200, body);
-  }
+  const body: unknown = await unwrap(http.GET("/api/projects"));
+  if (!Array.isArray(body)) throw new ApiError("GET /api/projects did not return a list", 200, body);
   return body as ProjectSummary[];
 }
 
-const projectPath = (name: string) => `/api/projects/${encodeURIComponent(name)}`;
-
 /** `GET /api/projects/{name}`: the project and the revision a save must name. */
 export function getProject(name: string): Promise<ProjectDocument> {
-  return requestJson<ProjectDocument>(projectPath(name));
+  return unwrap(http.GET("/api/projects/{name}", project(name)));
 }
 
 /** A save refused because the project changed since `base_revision` (HTTP 409). */
@@ -146,13 +152,11 @@ const isConflict = (detail: unknown): detail is ConflictDetail =>
   !!detail && typeof detail === "object" && typeof (detail as ConflictDetail).current_revision === "string";
 
 /** `PUT /api/projects/{name}` with `If-Match: <revision>`; a 409 becomes a SaveConflictError. */
-export async function saveProject(name: string, revision: string, project: Project): Promise<SaveResult> {
+export async function saveProject(name: string, revision: string, body: Project): Promise<SaveResult> {
   try {
-    return await requestJson<SaveResult>(projectPath(name), {
-      method: "PUT",
-      headers: { "Content-Type": "application/json", "If-Match": `"${revision}"` },
-      body: JSON.stringify(project),
-    });
+    return await unwrap(
+      http.PUT("/api/projects/{name}", { ...project(name), body, headers: { "If-Match": `"${revision}"` } }),
+    );
   } catch (err) {
     if (err instanceof ApiError && err.status === 409 && isConflict(err.detail))
       throw new SaveConflictError(err.detail);
@@ -161,37 +165,38 @@ export async function saveProject(name: string, revision: string, project: Proje
 }
 
 /** `GET /api/library?project=`: standard and the project's own functions and FBs. */
-export function getLibrary(project: string): Promise<LibraryEntry[]> {
-  return requestJson<LibraryEntry[]>(`/api/library?project=${encodeURIComponent(project)}`);
+export function getLibrary(name: string): Promise<LibraryEntry[]> {
+  return unwrap(http.GET("/api/library", { params: { query: { project: name } } }));
 }
 
 /** `GET /api/projects/{name}/pous/{pou}/symbols`: the POU's declarations and the globals. */
-export function getSymbols(project: string, pou: string): Promise<SymbolTable> {
-  return requestJson<SymbolTable>(`${projectPath(project)}/pous/${encodeURIComponent(pou)}/symbols`);
+export function getSymbols(name: string, pou: string): Promise<SymbolTable> {
+  return unwrap(http.GET("/api/projects/{name}/pous/{pou}/symbols", { params: { path: { name, pou } } }));
 }
 
 /** What the variable at `path` holds (the instance tree, ON-10); the programs and globals for "". */
-export function getVariables(project: string, path: string): Promise<VariableChildren> {
-  return requestJson<VariableChildren>(`${projectPath(project)}/variables?path=${encodeURIComponent(path)}`);
+export function getVariables(name: string, path: string): Promise<VariableChildren> {
+  return unwrap(http.GET("/api/projects/{name}/variables", { params: { path: { name }, query: { path } } }));
 }
 
 /** `POST /api/projects`: a new empty project. */
 export function createProject(name: string): Promise<ProjectSummary> {
-  return requestJson<ProjectSummary>("/api/projects", {
-    method: "POST",
-    headers: { "Content-Type": "application/json" },
-    body: JSON.stringify({ name }),
-  });
+  return unwrap(http.POST("/api/projects", { body: { name } }));
 }
 
 /** `POST /api/projects/{name}/check`: every diagnostic of the saved project, located. */
 export function checkProject(name: string): Promise<CheckReport> {
-  return requestJson<CheckReport>(`${projectPath(name)}/check`, { method: "POST" });
+  return unwrap(http.POST("/api/projects/{name}/check", project(name)));
+}
+
+/** `POST /api/check`: every diagnostic of a project as sent (the unsaved working copy), nothing stored. */
+export function checkUnsaved(project: Project): Promise<CheckReport> {
+  return unwrap(http.POST("/api/check", { body: project }));
 }
 
 /** `GET /api/projects/{name}/export/st?pou=`: a saved POU as ST, with the lines each network became. */
-export function exportSt(project: string, pou: string): Promise<StExport> {
-  return requestJson<StExport>(`${projectPath(project)}/export/st?pou=${encodeURIComponent(pou)}`);
+export function exportSt(name: string, pou: string): Promise<StExport> {
+  return unwrap(http.GET("/api/projects/{name}/export/st", { params: { path: { name }, query: { pou } } }));
 }
 
 /** The calls the stores need; tests pass fakes. */

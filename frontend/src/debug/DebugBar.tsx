@@ -12,11 +12,13 @@ import { useDebug } from "./store";
 export interface DebugBarProps {
   /** Network ids of a POU in order (for "network 2"), empty when it has no diagram. */
   networksOf(pou: string): string[];
+  /** An element of a POU in words when its editor knows it ("step Rinse"), else null. */
+  elementText?(pou: string, id: string): string | null;
   /** Shows a location in its editor (opens the POU, selects the network or element, or the line). */
   reveal(target: Place): void;
 }
 
-export function DebugBar({ networksOf, reveal }: DebugBarProps) {
+export function DebugBar({ networksOf, elementText, reveal }: DebugBarProps) {
   const state = useOnline((s) => s.monitor.state);
   const at = useOnline((s) => s.monitor.at);
   const debug = useDebug((s) => s);
@@ -30,7 +32,14 @@ export function DebugBar({ networksOf, reveal }: DebugBarProps) {
   if (!halted) return null;
   return (
     <div className="debug-bar debug-halted" role="region" aria-label="Debugging">
-      <span role="status">Halted at {describeHalt(halted, networksOf(halted.pou))}</span>
+      <span role="status">
+        Halted at{" "}
+        {describeHalt(
+          halted,
+          networksOf(halted.pou),
+          halted.element && !halted.body ? elementText?.(halted.pou, halted.element) : null,
+        )}
+      </span>
       <button type="button" onClick={debug.resume} title={`Continue (${keysOf("app", "run")})`}>
         Continue
       </button>
@@ -42,6 +51,13 @@ export function DebugBar({ networksOf, reveal }: DebugBarProps) {
       </button>
       <button type="button" onClick={() => debug.step("out")} title={`Step out (${keysOf("app", "step-out")})`}>
         Step out
+      </button>
+      <button
+        type="button"
+        onClick={() => debug.step("transition")}
+        title={`Step to the next SFC transition that fires (${keysOf("app", "step-transition")})`}
+      >
+        Step to transition
       </button>
       <button type="button" onClick={() => debug.step("network")} title="Step to the next network">
         Step network

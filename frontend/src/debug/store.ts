@@ -46,11 +46,12 @@ const storageKey = (project: string) => `ladderlab:breakpoints:${project}`;
 /** A kept breakpoint as the store holds it, or null for anything else (the entry is the browser's, not ours). */
 function asBreakpoint(value: unknown): Breakpoint | null {
   if (typeof value !== "object" || value === null) return null;
-  const { pou, network, element, line } = value as Record<string, unknown>;
+  const { pou, network, element, line, body } = value as Record<string, unknown>;
   if (typeof pou !== "string") return null;
-  if (typeof network === "string") return { pou, network };
-  if (typeof element === "string") return { pou, element };
-  return typeof line === "number" && Number.isInteger(line) ? { pou, line } : null;
+  const part = typeof body === "string" ? { body } : {};
+  if (typeof network === "string") return { pou, ...part, network };
+  if (typeof element === "string") return { pou, ...part, element };
+  return typeof line === "number" && Number.isInteger(line) ? { pou, ...part, line } : null;
 }
 
 /** `project`'s kept breakpoints; nothing (not an error) when none were kept or the entry is unreadable. */

@@ -41,7 +41,7 @@ describe("declarations table and text (issue 7 Declarations)", () => {
     fireEvent.click(screen.getByRole("button", { name: "Remove Start" }));
     expect(t.text()).toBe("VAR\n    NewVar : BOOL;\n    Count  : INT := 5;\nEND_VAR");
     fireEvent.change(screen.getByLabelText("Class of Count"), { target: { value: "VAR_OUTPUT" } });
-    expect(t.text()).toBe("VAR\n    NewVar : BOOL;\nEND_VAR\nVAR_OUTPUT\n    Count  : INT := 5;\nEND_VAR");
+    expect(t.text()).toBe("VAR\n    NewVar : BOOL;\nEND_VAR\nVAR_OUTPUT\n    Count : INT := 5;\nEND_VAR");
   });
 
   it("shows text edits in the table and table edits in the text", () => {

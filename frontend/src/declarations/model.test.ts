@@ -79,7 +79,7 @@ describe("declarations as table rows", () => {
         "    Count           : INT := 5;",
         "END_VAR",
         "VAR_OUTPUT",
-        "    Out             : BOOL;",
+        "    Out : BOOL;",
         "END_VAR",
       ].join("\n"),
     );

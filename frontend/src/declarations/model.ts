@@ -7,33 +7,6 @@
 /** A block keyword with its qualifier, as the class column shows it: "VAR", "VAR_INPUT", "VAR CONSTANT", ... */
 export type VarClass = string;
 
-/** IEC elementary types and the standard FBs' type names are offered first by the type field. */
-export const ELEMENTARY_TYPES: readonly string[] = [
-  "BOOL",
-  "SINT",
-  "INT",
-  "DINT",
-  "LINT",
-  "USINT",
-  "UINT",
-  "UDINT",
-  "ULINT",
-  "BYTE",
-  "WORD",
-  "DWORD",
-  "LWORD",
-  "REAL",
-  "LREAL",
-  "TIME",
-  "DATE",
-  "TIME_OF_DAY",
-  "DATE_AND_TIME",
-  "STRING",
-  "WSTRING",
-  "CHAR",
-  "WCHAR",
-];
-
 export const VAR_CLASSES: readonly VarClass[] = [
   "VAR",
   "VAR_INPUT",
@@ -180,26 +153,81 @@ export function parseDeclarations(text: string): ParseResult {
   }
 }
 
-/** The rows as declaration text: consecutive rows of one class share a block; columns are aligned. */
+/**
+ * The rows as declaration text: consecutive rows of one class share a block; in each block the names, colons and
+ * trailing comments are aligned in columns (the backend's st/columns.py aligns exported declarations the same way;
+ * both are tested against tests/fixtures/declaration_columns.json).
+ */
 export function printDeclarations(rows: readonly DeclRow[]): string {
-  const out: string[] = [];
-  const head = (r: DeclRow) => `${r.name}${r.address ? ` AT ${r.address}` : ""}`;
-  const width = Math.max(0, ...rows.map((r) => head(r).length));
-  const lineOf = (r: DeclRow) =>
-    `${head(r).padEnd(width)} : ${r.type.trim()}${r.initial.trim() ? ` := ${r.initial.trim()}` : ""};`;
-  const codeWidth = Math.max(0, ...rows.map((r) => lineOf(r).length));
+  const blocks: DeclRow[][] = [];
   rows.forEach((r, index) => {
-    if (index === 0 || rows[index - 1]!.varClass !== r.varClass) {
-      if (index > 0) out.push("END_VAR");
-      out.push(r.varClass);
-    }
-    const code = lineOf(r);
-    out.push(
-      `    ${r.comment.trim() ? `${code.padEnd(codeWidth)}    (* ${r.comment.trim().replace(/\*\)/g, "* )")} *)` : code}`,
-    );
+    if (index === 0 || rows[index - 1]!.varClass !== r.varClass) blocks.push([]);
+    blocks[blocks.length - 1]!.push(r);
   });
-  if (rows.length) out.push("END_VAR");
-  return out.join("\n");
+  const head = (r: DeclRow) => `${r.name}${r.address ? ` AT ${r.address}` : ""}`;
+  return blocks
+    .map((block) => {
+      const width = Math.max(0, ...block.map((r) => head(r).length));
+      const lineOf = (r: DeclRow) =>
+        `${head(r).padEnd(width)} : ${r.type.trim()}${r.initial.trim() ? ` := ${r.initial.trim()}` : ""};`;
+      const codeWidth = Math.max(0, ...block.map((r) => lineOf(r).length));
+      const lines = block.map((r) => {
+        const code = lineOf(r);
+        const note = r.comment.trim().replace(/\*\)/g, "* )");
+        return `    ${note ? `${code.padEnd(codeWidth)}    (* ${note} *)` : code}`;
+      });
+      return [block[0]!.varClass, ...lines, "END_VAR"].join("\n");
+    })
+    .join("\n");
+}
+
+const BLOCK_HEAD = /^[ \t]*VAR(?:_INPUT|_OUTPUT|_IN_OUT|_TEMP|_EXTERNAL|_GLOBAL)?\b.*$/i;
+const BLOCK_END = /^[ \t]*END_VAR\b/i;
+/** One declaration alone on its line: names (and address), type and initial value, `;`, a trailing comment. */
+const DECLARATION_LINE =
+  /^[ \t]*([A-Za-z_]\w*(?:[ \t]*,[ \t]*[A-Za-z_]\w*)*(?:[ \t]+AT[ \t]+%[\w.*]+)?)[ \t]*:(?!=)[ \t]*((?:[^;'"(/]|\((?!\*)|\/(?!\/)|'[^']*'|"[^"]*")+?)[ \t]*;[ \t]*(\(\*(?:(?!\*\)).)*\*\)|\/\/.*)?[ \t]*$/;
+
+/**
+ * `text` with the declarations that stand alone on their lines aligned in columns, block by block, keeping every
+ * token as typed and every other line as it is: the layout `printDeclarations` gives and the backend's
+ * st/columns.py gives the ST export (tests/fixtures/declaration_columns.json).
+ */
+export function alignDeclarations(text: string): string {
+  const lines = text.split("\n");
+  let block: { line: number; head: string; rest: string; comment: string }[] | null = null;
+  const flush = () => {
+    if (!block?.length) return;
+    const width = Math.max(...block.map((r) => r.head.length));
+    const codes = block.map((r) => `${r.head.padEnd(width)} : ${r.rest};`);
+    const codeWidth = Math.max(...codes.map((c) => c.length));
+    block.forEach((r, i) => {
+      lines[r.line] = `    ${r.comment ? `${codes[i]!.padEnd(codeWidth)}    ${r.comment}` : codes[i]!}`;
+    });
+  };
+  lines.forEach((line, index) => {
+    if (block === null) {
+      if (BLOCK_HEAD.test(line) && !BLOCK_END.test(line) && !/\bEND_VAR\b/i.test(line)) block = [];
+      return;
+    }
+    if (BLOCK_END.test(line)) {
+      flush();
+      block = null;
+      return;
+    }
+    if (BLOCK_HEAD.test(line)) {
+      block = []; // the block before had no END_VAR: its lines stay as they are
+      return;
+    }
+    const match = DECLARATION_LINE.exec(line);
+    if (match)
+      block.push({
+        line: index,
+        head: match[1]!.replace(/\s+/g, " ").replace(/\s*,\s*/g, ", "),
+        rest: match[2]!.trim(),
+        comment: (match[3] ?? "").trim(),
+      });
+  });
+  return lines.join("\n");
 }
 
 /** A name no row uses yet: `base`, else `base1`, `base2`, ... (case-insensitive like IEC). */

@@ -1,7 +1,7 @@
 // An FBD POU in the workspace: the FBD editor with the project's library and symbols, the
 // check's diagnostics, online mode, the POU's breakpoints (debug/store.ts) and the tests' coverage tint.
 import { useCallback, useMemo, type ReactNode } from "react";
-import type { FbdBody, Pou } from "../generated/project";
+import type { FbdBody, Pou } from "../generated/api";
 import type { History } from "../ld/history";
 import { debugStore, useDebug } from "../debug/store";
 import { useOnline } from "../online/store";

@@ -1,7 +1,8 @@
 // Which wires the FBD editor accepts (issue 9: "Wires only connect type-compatible pins").
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
-import { compatible, ELEMENTARY, FAMILIES, outputType, refusal, typeSet, widens } from "./compat";
+import { ELEMENTARY, widens } from "../iec/vocabulary";
+import { compatible, FAMILIES, outputType, refusal, typeSet } from "./compat";
 import { arithmetic, lookup, SYMBOLS, wire } from "./fixtures";
 import type { FbdNetwork } from "./model";
 

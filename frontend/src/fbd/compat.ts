@@ -1,36 +1,19 @@
 // Which wires the editor accepts: an output may feed an input when some type the output can carry
-// is the input's type or widens to it losslessly (st/types.py `assignable`: SINT -> INT -> DINT,
-// USINT -> UINT, unsigned -> wider signed, BYTE -> WORD, REAL -> LREAL). Generic families
-// (ANY_NUM, ANY_BIT, ...) stand for their members (iec/elementary.py GENERIC). Types the editor
-// cannot resolve (user types, arrays, unknown variables) are accepted: the backend's check has
-// the last word, the editor only refuses what can never type-check.
+// is the input's type or widens to it losslessly (the checker's `assignable`). Generic families
+// (ANY_NUM, ANY_BIT, ...) stand for their members. Types, families and widenings are the backend's
+// (iec/vocabulary.ts). Types the editor cannot resolve (user types, arrays, unknown variables) are
+// accepted: the backend's check has the last word, the editor only refuses what can never type-check.
 import type { SymbolInfo } from "../generated/api";
+import { ALIASES, ELEMENTARY, FAMILIES as IEC_FAMILIES, widens } from "../iec/vocabulary";
 import { kindOf, nodePins, nodesOf, wiresOf, type FbdNetwork, type Lookup, type PinRef } from "./model";
 
-const SIGNED = ["SINT", "INT", "DINT", "LINT"];
-const UNSIGNED = ["USINT", "UINT", "UDINT", "ULINT"];
-const BITS = ["BYTE", "WORD", "DWORD", "LWORD"];
-const REALS = ["REAL", "LREAL"];
-const DATES = ["DATE", "TIME_OF_DAY", "DATE_AND_TIME"];
-const OTHERS = ["BOOL", "TIME", "STRING"];
-export const ELEMENTARY: readonly string[] = [...SIGNED, ...UNSIGNED, ...BITS, ...REALS, ...DATES, ...OTHERS];
-
-const ALIASES: Record<string, string> = { TOD: "TIME_OF_DAY", DT: "DATE_AND_TIME" };
-
-/** Families and what they admit; ANY_LITERAL_INT is an untyped integer literal (fits ints, bits, reals, BOOL 0/1). */
-export const FAMILIES: Record<string, readonly string[]> = {
-  ANY_INT: [...SIGNED, ...UNSIGNED],
-  ANY_SIGNED: SIGNED,
-  ANY_UNSIGNED: UNSIGNED,
-  ANY_REAL: REALS,
-  ANY_NUM: [...SIGNED, ...UNSIGNED, ...REALS],
-  ANY_BIT: ["BOOL", ...BITS],
-  ANY_DATE: DATES,
-  ANY_MAGNITUDE: [...SIGNED, ...UNSIGNED, ...REALS, "TIME"],
-  ANY_ELEMENTARY: ELEMENTARY,
-  ANY: ELEMENTARY,
-  ANY_STRING: ["STRING"],
-  ANY_LITERAL_INT: [...SIGNED, ...UNSIGNED, ...BITS, ...REALS, "BOOL"],
+/**
+ * The IEC families, and ANY_LITERAL_INT: an untyped integer literal, which fits what the checker lets
+ * it fit (st/types.py `in_family`: the numbers and the bit strings, BOOL as 0/1).
+ */
+export const FAMILIES: Readonly<Record<string, readonly string[]>> = {
+  ...IEC_FAMILIES,
+  ANY_LITERAL_INT: [...new Set([...IEC_FAMILIES.ANY_NUM!, ...IEC_FAMILIES.ANY_BIT!])],
 };
 
 /** How a type reads in a refusal (the literal pseudo-family in words). */
@@ -42,15 +25,6 @@ export function typeSet(type: string | undefined): readonly string[] | null {
   const t = ALIASES[type.trim().toUpperCase()] ?? type.trim().toUpperCase();
   if (FAMILIES[t]) return FAMILIES[t];
   return ELEMENTARY.includes(t) ? [t] : null;
-}
-
-/** Lossless implicit conversion of one elementary type into another (not integer -> REAL: ST-20). */
-export function widens(source: string, target: string): boolean {
-  for (const chain of [SIGNED, UNSIGNED, BITS]) {
-    if (chain.includes(source) && chain.includes(target)) return chain.indexOf(source) < chain.indexOf(target);
-  }
-  if (UNSIGNED.includes(source) && SIGNED.includes(target)) return UNSIGNED.indexOf(source) < SIGNED.indexOf(target);
-  return source === "REAL" && target === "LREAL";
 }
 
 /** Whether an output of type `source` may feed an input of type `target`. */

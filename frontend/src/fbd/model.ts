@@ -2,7 +2,7 @@
 // (typed from the library and the symbols), and lookups by id. Pin names follow the lowering
 // (ir/fbd_order.py): simple nodes have one pin, IN or OUT; a function's result is OUT.
 import type { LibraryEntry, SymbolInfo } from "../generated/api";
-import type { Block, FbdBody, FbdNetwork, PinRef, Wire } from "../generated/project";
+import type { Block, FbdBody, FbdNetwork, PinRef, Wire } from "../generated/api";
 import { RESULT_PIN } from "../ld/pins";
 
 export type {
@@ -10,6 +10,7 @@ export type {
   Connector,
   Continuation,
   FbdBody,
+  FbdComment,
   FbdJump,
   FbdNetwork,
   FbdReturn,
@@ -18,7 +19,7 @@ export type {
   PinRef,
   Position,
   Wire,
-} from "../generated/project";
+} from "../generated/api";
 
 export type FbdNode = NonNullable<FbdNetwork["nodes"]>[number];
 export type NodeKind = NonNullable<FbdNode["type"]>;
@@ -164,5 +165,7 @@ export function nodePins(node: FbdNode, network: FbdNetwork, lookup: Lookup, sym
       return { inputs: [{ name: SIMPLE_IN }], outputs: [] };
     case "continuation":
       return { inputs: [], outputs: [{ name: SIMPLE_OUT }] };
+    case "comment":
+      return { inputs: [], outputs: [] };
   }
 }

@@ -234,3 +234,17 @@ describe("undo, redo and the clipboard", () => {
     expect(parseClip("hello")).toBeNull();
   });
 });
+
+describe("comment boxes (issue 28)", () => {
+  it("adds a comment node and edits its text, line breaks kept", () => {
+    const body: FbdBody = { networks: [{ id: "n1", nodes: [], wires: [] }] };
+    const added = ops.addNode(body, "n1", { type: "comment", text: "why" }, { x: 10, y: 20 });
+    if (!added.ok) throw new Error(added.error);
+    expect(added.body.networks![0]!.nodes).toEqual([
+      { type: "comment", id: "note1", pos: { x: 10, y: 20 }, text: "why" },
+    ]);
+    const edited = ops.setNodeText(added.body, "note1", "first line\n  second line  ");
+    if (!edited.ok) throw new Error(edited.error);
+    expect(edited.body.networks![0]!.nodes![0]).toMatchObject({ text: "first line\n  second line" });
+  });
+});

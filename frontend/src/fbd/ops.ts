@@ -38,6 +38,7 @@ export const PREFIX: Record<NonNullable<FbdNode["type"]>, string> = {
   return: "ret",
   connector: "con",
   continuation: "cont",
+  comment: "note",
 };
 
 /** Every id of the body: networks and nodes (node ids are probe ids, unique in the POU). */
@@ -100,7 +101,8 @@ export type NodeSpec =
   | { type: "jump"; target?: string }
   | { type: "return" }
   | { type: "connector"; name?: string }
-  | { type: "continuation"; name?: string };
+  | { type: "continuation"; name?: string }
+  | { type: "comment"; text?: string };
 
 function nodeOf(spec: NodeSpec, id: string, pos: Position): FbdNode {
   switch (spec.type) {
@@ -130,6 +132,8 @@ function nodeOf(spec: NodeSpec, id: string, pos: Position): FbdNode {
     case "connector":
     case "continuation":
       return { type: spec.type, id, pos, name: spec.name ?? "" };
+    case "comment":
+      return { type: "comment", id, pos, text: spec.text ?? "" };
   }
 }
 
@@ -171,7 +175,8 @@ export function moveNodes(body: FbdBody, positions: ReadonlyMap<string, Position
   return done({ ...body, networks }, [...positions.keys()]);
 }
 
-/** The text of a node: an input's operand, an output's variable, a jump's target, a connector's name, a block's instance. */
+/** The text of a node: an input's operand, an output's variable, a jump's target, a connector's name, a block's
+ * instance, a comment's text. */
 export function setNodeText(body: FbdBody, id: string, text: string): EditResult {
   const value = text.trim();
   const next = updateNode(body, id, (node) => {
@@ -187,6 +192,8 @@ export function setNodeText(body: FbdBody, id: string, text: string): EditResult
         return { ...node, name: value };
       case "block":
         return { ...node, instance: value || null };
+      case "comment":
+        return { ...node, text: text.replace(/\s+$/, "") }; // a comment keeps its line breaks and indentation
       default:
         return node;
     }

@@ -3,8 +3,9 @@
 // the operand commands (write, force, release, watch) on simulation paths.
 import { useCallback, useEffect, useMemo, useState } from "react";
 import type { SymbolInfo } from "../generated/api";
-import type { Pou } from "../generated/project";
+import type { Pou } from "../generated/api";
 import type { LdOnlineActions } from "../ld/editor/LdEditor";
+import { partElements, partMonitor } from "../online/parts";
 import { onlineStore, useOnline } from "../online/store";
 import { useShownInstance, onlineReadOnly, operandActions } from "../online/useLdOnline";
 import type { FbdBody, Lookup } from "./model";
@@ -23,12 +24,14 @@ export function useFbdOnline(
   body: FbdBody,
   lookup: Lookup,
   symbols: readonly SymbolInfo[] | null,
+  /** The body is an SFC action or transition of the POU ("actions/Fill", online/parts.ts). */
+  part?: string,
 ): FbdOnline {
   const phase = useOnline((s) => s.phase);
   const monitor = useOnline((s) => s.monitor);
   const prepared = useOnline((s) => s.prepared);
   const instance = useShownInstance(pou);
-  const key = `fbd:${pou.name}`;
+  const key = part ? `fbd:${pou.name}/${part}` : `fbd:${pou.name}`;
   const live = phase !== "offline";
 
   const [visible, setVisible] = useState<ReadonlySet<string> | null>(null);
@@ -40,13 +43,16 @@ export function useFbdOnline(
   useEffect(() => {
     onlineStore
       .getState()
-      .subscribe(key, live && binding ? { paths: binding.paths, elements: binding.elements } : null);
-  }, [key, live, binding]);
+      .subscribe(
+        key,
+        live && binding ? { paths: binding.paths, elements: partElements(binding.elements, part) } : null,
+      );
+  }, [key, live, binding, part]);
   useEffect(() => () => onlineStore.getState().subscribe(key, null), [key]);
 
   const online = useMemo(
-    () => (live && binding ? fbdOnlineView(monitor, binding, prepared) : undefined),
-    [live, binding, monitor, prepared],
+    () => (live && binding ? fbdOnlineView(partMonitor(monitor, instance, part), binding, prepared) : undefined),
+    [live, binding, monitor, prepared, instance, part],
   );
   const actions = useMemo(
     () => (live && instance && symbols ? operandActions(instance, symbols) : undefined),

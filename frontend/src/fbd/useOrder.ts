@@ -1,18 +1,14 @@
 // The execution order of every network, as the backend's lowering computes it (POST
 // /api/fbd/order), fetched debounced after edits and only for networks whose content changed.
 import { useEffect, useRef, useState } from "react";
-import { requestJson } from "../api/client";
+import { http, unwrap } from "../api/client";
 import type { FbdOrder } from "../generated/api";
 import { networksOf, type FbdBody, type FbdNetwork } from "./model";
 
 export const ORDER_DEBOUNCE_MS = 250;
 
 export const fetchOrder = (network: FbdNetwork): Promise<FbdOrder> =>
-  requestJson<FbdOrder>("/api/fbd/order", {
-    method: "POST",
-    headers: { "Content-Type": "application/json" },
-    body: JSON.stringify(network),
-  });
+  unwrap(http.POST("/api/fbd/order", { body: network }));
 
 /** Network id -> node ids in execution order, for the networks in `only` (missing until the server has answered). */
 export function useEvaluationOrder(

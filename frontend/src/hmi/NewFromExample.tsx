@@ -1,7 +1,7 @@
 // "New from example": the shipped examples (GET /api/examples), each copied as a new project, starting
 // from the student's files of an exercise or from its reference solution.
 import { useEffect, useState, type FormEvent } from "react";
-import { requestJson } from "../api/client";
+import { http, unwrap } from "../api/client";
 import type { ExampleInfo } from "../generated/api";
 import { appStore } from "../store";
 
@@ -15,7 +15,7 @@ export function NewFromExample() {
   const [busy, setBusy] = useState(false);
   useEffect(() => {
     if (!open || examples) return;
-    requestJson<ExampleInfo[]>("/api/examples").then(
+    unwrap(http.GET("/api/examples")).then(
       (found) => {
         setExamples(found);
         if (found[0]) {
@@ -37,11 +37,11 @@ export function NewFromExample() {
     e.preventDefault();
     setBusy(true);
     try {
-      await requestJson("/api/projects", {
-        method: "POST",
-        headers: { "Content-Type": "application/json" },
-        body: JSON.stringify({ name: name.trim(), example, start: chosen?.exercise ? start : "solution" }),
-      });
+      await unwrap(
+        http.POST("/api/projects", {
+          body: { name: name.trim(), example, start: chosen?.exercise ? start : "solution" },
+        }),
+      );
       await appStore.getState().loadProjects();
       appStore.getState().selectProject(name.trim());
       setOpen(false);

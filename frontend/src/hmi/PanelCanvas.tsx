@@ -2,7 +2,7 @@
 // moved by their `move_x`/`move_y` values (in the editor every widget shows, unmoved). The editor adds
 // its selection and handles through `overlay` and `widgetProps`.
 import type { MouseEvent, ReactNode, SVGProps } from "react";
-import type { Panel } from "../generated/project";
+import type { Panel } from "../generated/api";
 import type { MonitorState } from "../online/monitor";
 import { pathKey } from "../online/monitor";
 import { motionOffset, truthy, widgetsOf, type Widget } from "./model";

@@ -4,7 +4,7 @@
 // Keys on the canvas: Delete, arrows (a grid step), Ctrl+Z / Ctrl+Y, Ctrl+D duplicate, Ctrl+A, Escape.
 // Every edit is one step of the panel's undo history (hmi/history.ts) and marks the project unsaved.
 import { useRef, useState, type PointerEvent as ReactPointerEvent } from "react";
-import type { Panel } from "../generated/project";
+import type { Panel } from "../generated/api";
 import { canRedo, canUndo } from "../ld/history";
 import {
   addWidget,

@@ -4,9 +4,8 @@
 // `PanelLink` is where values come from and commands go: the app's online store, or the panel
 // window's own connection (PanelWindow.tsx).
 import { useEffect, useMemo, useState, type FormEvent } from "react";
-import { requestJson } from "../api/client";
-import type { SimulationInfo } from "../generated/api";
-import type { Panel } from "../generated/project";
+import type { Panel } from "../generated/api";
+import { getSimulation } from "../online/api";
 import type { MonitorState } from "../online/monitor";
 import type { ClientMessage, WriteValue } from "../online/protocol";
 import { FaultDialog } from "./FaultDialog";
@@ -91,7 +90,7 @@ function RunToolbar({
   useEffect(() => {
     if (!simulation) return;
     let current = true;
-    requestJson<SimulationInfo>(`/api/simulations/${encodeURIComponent(simulation)}`).then(
+    getSimulation(simulation).then(
       (info) => current && setSpeed(info.speed ?? 1),
       () => undefined,
     );

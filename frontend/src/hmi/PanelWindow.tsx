@@ -2,10 +2,9 @@
 // panel tab): no editor chrome, its own connection to the simulation (any number of clients may watch
 // one), the same canvas and controls. Without a simulation id it attaches to the project's newest one.
 import { useEffect, useMemo, useRef, useState } from "react";
-import { requestJson } from "../api/client";
-import type { ProjectDocument, SimulationInfo } from "../generated/api";
-import type { Panel } from "../generated/project";
-import { monitorUrl } from "../online/api";
+import { getProject } from "../api/client";
+import type { Panel } from "../generated/api";
+import { listSimulations, monitorUrl } from "../online/api";
 import { applyMessage, emptyMonitor, type MonitorState } from "../online/monitor";
 import { parseServerMessage, type ClientMessage } from "../online/protocol";
 import { bindingsOf } from "./model";
@@ -73,7 +72,7 @@ export function PanelWindow({
   const [sim, setSim] = useState<string | null>(simulation);
   const [problem, setProblem] = useState<string | null>(null);
   useEffect(() => {
-    requestJson<ProjectDocument>(`/api/projects/${encodeURIComponent(project)}`).then(
+    getProject(project).then(
       (doc) => {
         const found = doc.project.panels?.find((p) => p.name === name);
         if (found) setPanel(found);
@@ -82,7 +81,7 @@ export function PanelWindow({
       (err: unknown) => setProblem(err instanceof Error ? err.message : String(err)),
     );
     if (!simulation)
-      requestJson<SimulationInfo[]>("/api/simulations").then(
+      listSimulations().then(
         (all) =>
           setSim(
             all.filter((s) => s.project === project).sort((a, b) => b.created.localeCompare(a.created))[0]?.id ?? null,

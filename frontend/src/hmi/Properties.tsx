@@ -3,8 +3,7 @@
 // the LD and FBD editors, with the project's programs', plants' and global variables as suggestions.
 import { useEffect, useMemo, useState, type ReactNode } from "react";
 import { projectApi } from "../api/client";
-import type { SymbolInfo } from "../generated/api";
-import type { IndicatorState as State, Motion, Panel, SwitchPosition as Position } from "../generated/project";
+import type { SymbolInfo, IndicatorState as State, Motion, Panel, SwitchPosition as Position } from "../generated/api";
 import { OperandEditor } from "../ld/editor/OperandEditor";
 import { plainSymbol, useWorkspace } from "../project/store";
 import { candidates } from "../trace/candidates";

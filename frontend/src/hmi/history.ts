@@ -2,7 +2,7 @@
 // every edit records the new panel and writes it into the project's working copy (marked unsaved).
 import { useStore } from "zustand";
 import { createStore } from "zustand/vanilla";
-import type { Panel, Project } from "../generated/project";
+import type { Panel, Project } from "../generated/api";
 import { historyOf, record, redo, undo, type History } from "../ld/history";
 import { useWorkspace, workspaceStore } from "../project/store";
 

@@ -1,6 +1,6 @@
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
-import type { Panel } from "../generated/project";
+import type { Panel } from "../generated/api";
 import { faultModes } from "./FaultDialog";
 import {
   alignWidgets,

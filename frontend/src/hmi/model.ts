@@ -3,7 +3,7 @@
 // panels (move, resize, align, distribute, delete, duplicate: every edit returns a new panel, so the
 // editor's undo history is a list of values) and turns variable values into what widgets show.
 import type { DisplayType } from "../generated/monitor";
-import type { IndicatorState as State, Motion, Panel } from "../generated/project";
+import type { IndicatorState as State, Motion, Panel } from "../generated/api";
 import { pathKey } from "../online/monitor";
 import { formatValue, parseValue } from "../online/values";
 import type { Value, WriteValue } from "../online/protocol";

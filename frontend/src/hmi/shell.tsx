@@ -4,7 +4,7 @@
 import { useEffect, useMemo, useState, type FormEvent } from "react";
 import { useStore } from "zustand";
 import { createStore } from "zustand/vanilla";
-import type { Panel } from "../generated/project";
+import type { Panel } from "../generated/api";
 import { onlineStore, useOnline } from "../online/store";
 import { useWorkspace, workspaceStore } from "../project/store";
 import { ExerciseView } from "./ExerciseView";

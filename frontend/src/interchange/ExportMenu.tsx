@@ -1,7 +1,9 @@
-// Export of the saved project: as PLCopen XML, as one ST file, and the active POU as ST. The
+// Export of the saved project: as PLCopen XML, as one ST file, the active POU as ST, and a printable
+// document (PDF, HTML, SVG) of the project or the active POU (src/print). The
 // server exports the saved version, so unsaved changes are called out before the download.
 import { useState } from "react";
 import { interchangeApi, type InterchangeApi } from "./api";
+import { printUrl } from "../print/data";
 import { downloadText } from "./download";
 import { failure } from "./outcome";
 import { Problems, type Outcome } from "./Problems";
@@ -59,6 +61,14 @@ export function ExportMenu({ project, pou, unsaved, api = interchangeApi, downlo
           onClick={() => void run(`ST export of ${pou}`, `${pou}.st`, () => st(api.exportPouSt(project, pou)))}
         >
           {pou} as ST
+        </button>
+      ) : null}
+      <button type="button" onClick={() => window.open(printUrl(project), "_blank")}>
+        Print project…
+      </button>
+      {pou ? (
+        <button type="button" onClick={() => window.open(printUrl(project, [pou]), "_blank")}>
+          Print {pou}…
         </button>
       ) : null}
       {outcome ? (

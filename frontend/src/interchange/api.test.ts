@@ -1,34 +1,32 @@
 import { afterEach, describe, expect, it, vi } from "vitest";
 import { ApiError } from "../api/client";
+import { jsonResponse as json, stubFetch } from "../test/fetchStub";
 import { exportPlcopen, exportProjectSt, importPlcopen } from "./api";
-
-const json = (body: unknown, status = 200) =>
-  new Response(JSON.stringify(body), { status, headers: { "Content-Type": "application/json" } });
 
 afterEach(() => vi.unstubAllGlobals());
 
 describe("interchange REST calls (issue 9: interchange in the UI)", () => {
   it("posts the raw XML with the project name in the query", async () => {
-    const fetchMock = vi.fn(async () =>
+    const fetched = stubFetch(() =>
       json({ project: { name: "plant 2", revision: "r", modified: "m", pou_count: 1 }, diagnostics: [] }, 201),
     );
-    vi.stubGlobal("fetch", fetchMock);
     const report = await importPlcopen("<project/>", " plant 2 ");
     expect(report.project.name).toBe("plant 2");
-    const [url, init] = fetchMock.mock.calls[0] as unknown as [string, RequestInit];
-    expect(url).toBe("/api/import/plcopen?name=plant%202");
-    expect(init.method).toBe("POST");
-    expect(init.body).toBe("<project/>");
-    expect(new Headers(init.headers).get("Content-Type")).toBe("application/xml");
+    const [sent] = fetched.sent;
+    expect([sent!.method, sent!.path, sent!.body]).toEqual([
+      "POST",
+      "/api/import/plcopen?name=plant%202",
+      "<project/>",
+    ]);
+    expect(sent!.headers.get("Content-Type")).toBe("application/xml");
   });
 
   it("leaves the name out when none is given, so the document's name is used", async () => {
-    const fetchMock = vi.fn(async () =>
+    const fetched = stubFetch(() =>
       json({ project: { name: "doc", revision: "r", modified: "m", pou_count: 0 } }, 201),
     );
-    vi.stubGlobal("fetch", fetchMock);
     await importPlcopen("<project/>", "  ");
-    expect((fetchMock.mock.calls[0] as unknown as [string])[0]).toBe("/api/import/plcopen");
+    expect(fetched.sent.map((c) => c.path)).toEqual(["/api/import/plcopen"]);
   });
 
   it("turns a refused import into an ApiError carrying the diagnostics", async () => {
@@ -45,15 +43,14 @@ describe("interchange REST calls (issue 9: interchange in the UI)", () => {
   });
 
   it("fetches the PLCopen export as text and the project ST export as JSON", async () => {
-    const fetchMock = vi.fn(async (input: RequestInfo | URL) =>
-      String(input).endsWith("/plcopen")
+    const fetched = stubFetch((request) =>
+      request.path.endsWith("/plcopen")
         ? new Response("<project name='a b'/>", { status: 200 })
         : json({ text: "PROGRAM Main\nEND_PROGRAM\n" }),
     );
-    vi.stubGlobal("fetch", fetchMock);
     expect(await exportPlcopen("a b")).toBe("<project name='a b'/>");
     expect((await exportProjectSt("a b")).text).toBe("PROGRAM Main\nEND_PROGRAM\n");
-    expect(fetchMock.mock.calls.map((c) => String(c[0]))).toEqual([
+    expect(fetched.sent.map((c) => c.path)).toEqual([
       "/api/projects/a%20b/export/plcopen",
       "/api/projects/a%20b/export/st",
     ]);

@@ -1,27 +1,24 @@
 // REST calls of the interchange endpoints (issue 6): PLCopen XML import/export and ST export.
-// The JSON ones go through requestJson; the XML export is a text download, so it needs its own
-// fetch with the same error handling (a 422 carries the diagnostics that block the export).
-import { ApiError, errorFromResponse, exportSt, requestJson, signInAgain } from "../api/client";
+import { exportSt, http, unwrap } from "../api/client";
 import type { ImportReport, StExport } from "../generated/api";
 
-const projectPath = (name: string) => `/api/projects/${encodeURIComponent(name)}`;
+const project = (name: string) => ({ params: { path: { name } } });
 
 /** `GET /api/projects/{name}/export/st`: the whole saved project as one ST text. */
-export function exportProjectSt(project: string): Promise<StExport> {
-  return requestJson<StExport>(`${projectPath(project)}/export/st`);
+export function exportProjectSt(name: string): Promise<StExport> {
+  return unwrap(http.GET("/api/projects/{name}/export/st", project(name)));
 }
 
 /** `GET /api/projects/{name}/export/plcopen`: the saved project as a PLCopen TC6 XML document. */
-export async function exportPlcopen(project: string): Promise<string> {
-  let response: Response;
-  try {
-    response = await fetch(`${projectPath(project)}/export/plcopen`, { headers: { Accept: "application/xml" } });
-  } catch (err) {
-    throw new ApiError(`Cannot reach the LadderLab server (${err instanceof Error ? err.message : String(err)})`, 0);
-  }
-  if (response.status === 401) signInAgain();
-  if (!response.ok) throw await errorFromResponse(response);
-  return response.text();
+export async function exportPlcopen(name: string): Promise<string> {
+  const xml: unknown = await unwrap(
+    http.GET("/api/projects/{name}/export/plcopen", {
+      ...project(name),
+      parseAs: "text",
+      headers: { Accept: "application/xml" },
+    }),
+  );
+  return String(xml);
 }
 
 /**
@@ -29,12 +26,14 @@ export async function exportPlcopen(project: string): Promise<string> {
  * server takes the document's own project name.
  */
 export function importPlcopen(xml: string, name?: string): Promise<ImportReport> {
-  const query = name?.trim() ? `?name=${encodeURIComponent(name.trim())}` : "";
-  return requestJson<ImportReport>(`/api/import/plcopen${query}`, {
-    method: "POST",
-    headers: { "Content-Type": "application/xml" },
-    body: xml,
-  });
+  return unwrap(
+    http.POST("/api/import/plcopen", {
+      params: { query: name?.trim() ? { name: name.trim() } : {} },
+      body: xml,
+      bodySerializer: (text: string) => text,
+      headers: { "Content-Type": "application/xml" },
+    }),
+  );
 }
 
 /** The calls the interchange UI makes; tests pass fakes. */

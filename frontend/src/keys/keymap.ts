@@ -3,7 +3,7 @@
 // shortcut help lists this table, so the help cannot disagree with what the keys do (issue 17).
 // A binding matches only its exact modifiers: a combination the table does not list does nothing.
 
-export type KeyScope = "app" | "ld" | "fbd" | "st";
+export type KeyScope = "app" | "ld" | "fbd" | "st" | "sfc";
 
 export interface KeyBinding {
   scope: KeyScope;
@@ -34,6 +34,12 @@ const APP = [
   },
   { scope: "app", command: "step-into", keys: "F11", label: "Step into: the next statement, also in called POUs" },
   { scope: "app", command: "step-out", keys: "Shift+F11", label: "Step out: run until the caller goes on" },
+  {
+    scope: "app",
+    command: "step-transition",
+    keys: "Ctrl+F11",
+    label: "Step to the next SFC transition that fires (scans run until one does)",
+  },
 ] as const;
 
 const LD = [
@@ -113,6 +119,39 @@ const FBD = [
   },
 ] as const;
 
+const SFC = [
+  { scope: "sfc", command: "insert-step", keys: "S", label: "Insert a step and a transition below the selection" },
+  { scope: "sfc", command: "alternative", keys: "A", label: "Alternative branch: divide the transition" },
+  { scope: "sfc", command: "parallel", keys: "P", label: "Simultaneous branch: divide the step" },
+  { scope: "sfc", command: "jump", keys: "J", label: "Jump at the end of the sequence" },
+  { scope: "sfc", command: "associate", keys: "Q", label: "Associate an action with the step (qualifier picker)" },
+  { scope: "sfc", command: "edit", keys: "Enter / F2", label: "Edit the step name, the condition or the jump target" },
+  { scope: "sfc", command: "open", keys: "Ctrl+Enter", label: "Open the action of the selected association" },
+  { scope: "sfc", command: "delete", keys: "Delete / Backspace", label: "Delete the selection with its partner" },
+  { scope: "sfc", command: "delete-branch", keys: "Shift+Delete", label: "Delete the branch of the selection" },
+  { scope: "sfc", command: "copy", keys: "Ctrl+C", label: "Copy" },
+  { scope: "sfc", command: "cut", keys: "Ctrl+X", label: "Cut" },
+  { scope: "sfc", command: "paste", keys: "Ctrl+V", label: "Paste below the selection" },
+  { scope: "sfc", command: "undo", keys: "Ctrl+Z", label: "Undo" },
+  { scope: "sfc", command: "redo", keys: "Ctrl+Y / Ctrl+Shift+Z", label: "Redo" },
+  { scope: "sfc", command: "zoom-in", keys: "=", label: "Zoom in" },
+  { scope: "sfc", command: "zoom-out", keys: "-", label: "Zoom out" },
+  { scope: "sfc", command: "zoom-reset", keys: "0", label: "Zoom to 100 %" },
+  {
+    scope: "sfc",
+    command: "move-selection",
+    keys: "ArrowLeft / ArrowRight / ArrowUp / ArrowDown",
+    label: "Move the selection along the chart and across branches",
+  },
+  { scope: "sfc", command: "clear-selection", keys: "Escape", label: "Clear the selection" },
+  {
+    scope: "sfc",
+    command: "toggle-breakpoint",
+    keys: "F9",
+    label: "Toggle a breakpoint on the selected step or transition",
+  },
+] as const;
+
 const ST = [
   { scope: "st", command: "toggle-breakpoint", keys: "F9", label: "Toggle a breakpoint on the cursor's line" },
   { scope: "st", command: "complete", keys: "Ctrl+Space", label: "Complete: variables, functions, FB pins" },
@@ -122,9 +161,15 @@ const ST = [
   { scope: "st", command: "unfold", keys: "Ctrl+Shift+]", label: "Unfold the block at the cursor" },
   { scope: "st", command: "indent", keys: "Tab", label: "Indent the selected lines" },
   { scope: "st", command: "unindent", keys: "Shift+Tab", label: "Unindent the selected lines" },
+  {
+    scope: "st",
+    command: "find-references",
+    keys: "Shift+F12",
+    label: "Find all references of the variable at the cursor",
+  },
 ] as const;
 
-export const KEYMAP = [...APP, ...LD, ...FBD, ...ST] as const satisfies readonly KeyBinding[];
+export const KEYMAP = [...APP, ...LD, ...FBD, ...SFC, ...ST] as const satisfies readonly KeyBinding[];
 
 /** The commands of one scope, as the table names them: a scope's handler table must cover them all. */
 export type CommandOf<S extends KeyScope> = Extract<(typeof KEYMAP)[number], { scope: S }>["command"];
@@ -137,6 +182,8 @@ export const GESTURES: readonly { scope: KeyScope; gesture: string; label: strin
   { scope: "ld", gesture: "Click a network number", label: "Toggle a breakpoint on the network" },
   { scope: "fbd", gesture: "Alt+click", label: "Toggle a breakpoint on a node" },
   { scope: "fbd", gesture: "Click a network number", label: "Toggle a breakpoint on the network" },
+  { scope: "sfc", gesture: "Alt+click", label: "Toggle a breakpoint on a step or transition" },
+  { scope: "sfc", gesture: "Double-click", label: "Edit a step's name, a condition, a jump's target; open an action" },
   { scope: "st", gesture: "Click the breakpoint gutter", label: "Toggle a breakpoint on the line" },
   { scope: "st", gesture: "Arrows, Home, End, Shift+…", label: "Move and select as in any text editor" },
 ];
@@ -145,6 +192,7 @@ export const SCOPE_TITLES: Record<KeyScope, string> = {
   app: "Everywhere",
   ld: "LD editor",
   fbd: "FBD editor",
+  sfc: "SFC editor",
   st: "ST editor",
 };
 

@@ -1,8 +1,8 @@
 // The LD model as the editor sees it: the generated project types plus the defaults the schema
 // leaves optional, and addressing of series lists so pure edits can rebuild only what changed.
-import type { Box, LdBody, LdNetwork } from "../generated/project";
+import type { Box, LdBody, LdNetwork } from "../generated/api";
 
-export type { Box, Coil, Compare, Contact, Jump, LdBody, LdNetwork, Parallel, Return } from "../generated/project";
+export type { Box, Coil, Compare, Contact, Jump, LdBody, LdNetwork, Parallel, Return } from "../generated/api";
 
 /** One element of a series list (contact, compare, coil, parallel, box, jump, return). */
 export type LdElement = NonNullable<LdNetwork["elements"]>[number];

@@ -8,6 +8,7 @@ import { emptyPanels, panelsStore } from "../panels/store";
 import { emptyWorkspace, workspaceStore } from "../project/store";
 import { appStore, initialData } from "../store";
 import { offline, onlineStore } from "./store";
+import { stubFetch, type SentRequest } from "../test/fetchStub";
 
 const json = (body: unknown, status = 200) =>
   new Response(JSON.stringify(body), { status, headers: { "Content-Type": "application/json" } });
@@ -93,11 +94,11 @@ class FakeSocket {
   }
 }
 
-function serve(routes: Record<string, (init?: RequestInit) => Response> = {}) {
-  const fetchMock = vi.fn(async (input: RequestInfo | URL, init?: RequestInit) => {
-    const url = String(input);
-    const key = `${init?.method ?? "GET"} ${url}`;
-    if (routes[key]) return routes[key]!(init);
+function serve(routes: Record<string, (request: SentRequest) => Response> = {}) {
+  return stubFetch((request) => {
+    const { path: url, method } = request;
+    const key = `${method} ${url}`;
+    if (routes[key]) return routes[key]!(request);
     if (url === "/api/health") return json({ status: "ok", version: "0.1.0" });
     if (url === "/api/projects")
       return json([{ name: "plant", revision: "r1", modified: "2024-05-01T10:00:00Z", pou_count: 1 }]);
@@ -108,11 +109,9 @@ function serve(routes: Record<string, (init?: RequestInit) => Response> = {}) {
       return json({ pou: "Main", symbols: [sym("Start"), sym("Stop"), sym("Motor")], globals: [], diagnostics: [] });
     if (key === "POST /api/projects/plant/simulations") return json(simulation, 201);
     if (url.startsWith("/api/simulations/s1"))
-      return init?.method === "DELETE" ? new Response(null, { status: 204 }) : json(simulation);
+      return method === "DELETE" ? new Response(null, { status: 204 }) : json(simulation);
     throw new Error(`unexpected fetch ${key}`);
   });
-  vi.stubGlobal("fetch", fetchMock);
-  return fetchMock;
 }
 
 beforeEach(() => {
@@ -129,7 +128,7 @@ async function openMain() {
   render(<App />);
   fireEvent.click(await screen.findByRole("button", { name: /plant/ }));
   const tree = await screen.findByRole("navigation", { name: "Project tree" });
-  fireEvent.click(within(tree).getByRole("button", { name: /Main/ }));
+  fireEvent.click(within(tree).getByRole("button", { name: /^Main/ }));
   await waitFor(() => expect(workspaceStore.getState().symbols.Main).toBeDefined());
   return screen.getByRole("application", { name: "Ladder diagram editor" });
 }
@@ -138,7 +137,7 @@ const element = (editor: HTMLElement, id: string) => editor.querySelector(`[data
 
 describe("online LD in the app (issue 7 online mode)", () => {
   it("compiles, subscribes the diagram, colours from the engine, prepares and writes, watches by drag and goes offline", async () => {
-    const fetchMock = serve();
+    const { sent } = serve();
     const editor = await openMain();
     fireEvent.click(screen.getByRole("button", { name: "Compile & simulate" }));
     await waitFor(() => expect(FakeSocket.all).toHaveLength(1));
@@ -194,11 +193,7 @@ describe("online LD in the app (issue 7 online mode)", () => {
     expect(screen.getByRole("list", { name: "Online log" }).textContent).toContain("forced MAIN.MOTOR := FALSE");
 
     fireEvent.click(screen.getByRole("button", { name: "Go offline to edit" }));
-    await waitFor(() =>
-      expect(
-        fetchMock.mock.calls.some(([url, init]) => url === "/api/simulations/s1" && init?.method === "DELETE"),
-      ).toBe(true),
-    );
+    await waitFor(() => expect(sent.some((r) => r.path === "/api/simulations/s1" && r.method === "DELETE")).toBe(true));
     expect(socket.closed).toBe(true);
     expect((screen.getByRole("button", { name: "Contact" }) as HTMLButtonElement).disabled).toBe(false);
     expect(element(editor, "motor").getAttribute("class")).not.toContain("ld-on");
@@ -249,7 +244,7 @@ describe("online LD in the app (issue 7 online mode)", () => {
     const socket = FakeSocket.all[0]!;
     socket.open();
     fireEvent.click(
-      within(screen.getByRole("navigation", { name: "Project tree" })).getByRole("button", { name: /Pump/ }),
+      within(screen.getByRole("navigation", { name: "Project tree" })).getByRole("button", { name: /^Pump/ }),
     );
     expect(screen.getByText(/name the instance of Pump to show/)).toBeTruthy();
     fireEvent.change(screen.getByLabelText("Instance of Pump"), { target: { value: "Main.P1" } });
@@ -300,7 +295,7 @@ describe("online LD in the app (issue 7 online mode)", () => {
 });
 
 describe("Check and the Diagnostics panel", () => {
-  it("lists the check's diagnostics and a click reveals the element, or the declaration row", async () => {
+  it("lists the check's diagnostics of the working copy (nothing saved), marks the elements live, and a click reveals the element, or the declaration row", async () => {
     const diagnostics: Diagnostic[] = [
       {
         severity: "warning",
@@ -320,16 +315,25 @@ describe("Check and the Diagnostics panel", () => {
         column: 12,
       },
     ];
-    serve({ "POST /api/projects/plant/check": () => json({ diagnostics }) });
+    let saved = false;
+    serve({
+      "POST /api/check": () => json({ diagnostics }),
+      "PUT /api/projects/plant": () => ((saved = true), json({ revision: "r2", modified: "2024-05-02T10:00:00Z" })),
+    });
     const editor = await openMain();
     fireEvent.click(screen.getByRole("button", { name: "Check" }));
     const list = await screen.findByRole("list", { name: "Diagnostics" });
-    const items = within(list).getAllByRole("button");
-    expect(items.map((b) => b.textContent)).toEqual([
-      "errorMain, declarations, line 3:12unknown type 'NOPE'ST-UNKNOWN-TYPE",
-      "warningMain, network lamp, element lamp_coilcoil without effectLD-X",
+    // Each diagnostic: the button that reveals it, then its code (which opens the catalogue entry).
+    const buttons = within(list).getAllByRole("button");
+    expect(buttons.map((b) => b.textContent)).toEqual([
+      "errorMain, declarations, line 3:12unknown type 'NOPE'",
+      "ST-UNKNOWN-TYPE",
+      "warningMain, network lamp, element lamp_coilcoil without effect",
+      "LD-X",
     ]);
-    expect(element(editor, "lamp_coil").getAttribute("class")).toContain("ld-has-diagnostic");
+    const items = [buttons[0]!, buttons[2]!];
+    await waitFor(() => expect(element(editor, "lamp_coil").getAttribute("class")).toContain("ld-has-diagnostic"));
+    expect(saved).toBe(false); // Check never saves
 
     fireEvent.click(items[1]!);
     expect(element(editor, "lamp_coil").getAttribute("class")).toContain("ld-selected");
@@ -344,7 +348,7 @@ describe("Check and the Diagnostics panel", () => {
 describe("View as ST", () => {
   it("shows the export highlighted, links network blocks to the diagram and offers the download", async () => {
     const text =
-      "PROGRAM Main\nVAR\n    Start : BOOL;\nEND_VAR\n(* Network 1 (seal_in) *)\nMotor := (Start OR Motor) AND NOT Stop;\nEND_PROGRAM\n";
+      "PROGRAM Main\nVAR\n    Start : BOOL;\nEND_VAR\n(* Network 1: Start/stop with seal-in *)\nMotor := (Start OR Motor) AND NOT Stop;\nEND_PROGRAM\n";
     serve({
       "GET /api/projects/plant/export/st?pou=Main": () =>
         json({
@@ -361,7 +365,7 @@ describe("View as ST", () => {
     expect(code.textContent).toContain("Motor := (Start OR Motor) AND NOT Stop;");
     expect(within(code).getAllByText("AND")[0]!.className).toBe("st-keyword");
     const block = code.querySelector('[data-network="seal_in"]')!;
-    expect(block.textContent).toBe("5(* Network 1 (seal_in) *)6Motor := (Start OR Motor) AND NOT Stop;");
+    expect(block.textContent).toBe("5(* Network 1: Start/stop with seal-in *)6Motor := (Start OR Motor) AND NOT Stop;");
     expect((screen.getByRole("button", { name: "Download Main.st" }) as HTMLButtonElement).disabled).toBe(false);
 
     fireEvent.click(block);

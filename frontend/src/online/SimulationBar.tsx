@@ -1,16 +1,19 @@
 // The simulation controls, always visible over the editor: Check, Compile & simulate, Run, Stop,
 // Single cycle, Reset, Go offline; the online/offline state; the number of active forces with
 // Release all forces; the prepared values (force / write / clear); scan counter, virtual time and
-// the last scan time; the scan history's timeline (HistoryBar.tsx). Compile & simulate saves unsaved changes first (the server compiles the saved
-// project). Keys (CODESYS's) come from the keymap and are handled by project/useAppKeys.ts.
+// the last scan time; the scan history's timeline (HistoryBar.tsx). Check checks the working copy and never saves;
+// Compile & simulate compiles the saved project, so with unsaved changes it asks: save and compile, compile the
+// saved version, or cancel. Keys (CODESYS's) come from the keymap and are handled by project/useAppKeys.ts.
 import { panelsStore, usePanels } from "../panels/store";
 import { workspaceStore } from "../project/store";
 import { onlineStore, useOnline } from "./store";
 import { formatClock } from "./values";
+import { useStore } from "zustand";
+import { createStore } from "zustand/vanilla";
 import { HistoryBar } from "./HistoryBar";
 import { keysOf, type CommandOf } from "../keys/keymap";
 
-/** Saves pending changes, then checks or compiles the saved project. */
+/** Saves pending changes; the project's name once it is saved, else null (the save's message is shown). */
 async function savedProject(): Promise<string | null> {
   const ws = workspaceStore.getState();
   if (!ws.name) return null;
@@ -21,17 +24,54 @@ async function savedProject(): Promise<string | null> {
   return ws.name;
 }
 
-export async function checkSaved(): Promise<void> {
-  const name = await savedProject();
-  if (name) await panelsStore.getState().check(name);
+/** Check: every diagnostic of the working copy as it is; nothing is saved. */
+export async function checkWorkingCopy(): Promise<void> {
+  const { project } = workspaceStore.getState();
+  if (project) await panelsStore.getState().check(project);
 }
 
+/** Whether the "unsaved changes" question of Compile & simulate is open. */
+const compileQuestion = createStore<{ open: boolean }>()(() => ({ open: false }));
+
+/** Compile & simulate: the server compiles the saved project, so with unsaved changes the user chooses first. */
 export async function compileSaved(): Promise<void> {
-  const name = await savedProject();
+  const ws = workspaceStore.getState();
+  if (ws.changed.length) compileQuestion.setState({ open: true });
+  else if (ws.name) await compile(ws.name);
+}
+
+async function compile(name: string | null): Promise<void> {
+  compileQuestion.setState({ open: false });
   if (!name) return;
   await onlineStore.getState().compile(name);
   const { compileDiagnostics } = onlineStore.getState();
   if (compileDiagnostics.length) panelsStore.getState().showDiagnostics(compileDiagnostics);
+}
+
+/** Save and compile / compile the saved version / cancel. */
+function CompileQuestion() {
+  const open = useStore(compileQuestion, (s) => s.open);
+  const changed = workspaceStore.getState().changed;
+  if (!open) return null;
+  return (
+    <div className="ld-dialog-backdrop">
+      <div className="ld-dialog" role="alertdialog" aria-label="Unsaved changes">
+        <h2>Compile with unsaved changes?</h2>
+        <p>The simulator compiles the saved project. Unsaved: {changed.join(", ")}.</p>
+        <div className="dialog-buttons">
+          <button type="button" autoFocus onClick={() => void savedProject().then(compile)}>
+            Save and compile
+          </button>
+          <button type="button" onClick={() => void compile(workspaceStore.getState().name)}>
+            Compile the saved version
+          </button>
+          <button type="button" onClick={() => compileQuestion.setState({ open: false })}>
+            Cancel
+          </button>
+        </div>
+      </div>
+    </div>
+  );
 }
 
 /** A button's tooltip: what it does and its key from the keymap. */
@@ -61,7 +101,13 @@ export function SimulationBar() {
           : "Connecting…";
   return (
     <div className={`simulation-bar phase-${phase}${running ? " running" : ""}`} role="toolbar" aria-label="Simulation">
-      <button type="button" onClick={() => void checkSaved()} disabled={checking} title={titled("Check", "check")}>
+      <CompileQuestion />
+      <button
+        type="button"
+        onClick={() => void checkWorkingCopy()}
+        disabled={checking}
+        title={titled("Check the project as it is (nothing is saved)", "check")}
+      >
         Check
       </button>
       <button

@@ -1,39 +1,31 @@
 // REST calls of online mode (issue 6): create a simulation from the saved project, reset, read its
 // statistics, delete it. Run, stop and single cycle go over the websocket with everything else.
-import { requestHeaders, requestJson } from "../api/client";
-import type { HistoryDiff, HistoryFound, HistoryMark, SimulationInfo } from "../generated/api";
+import { http, unwrap } from "../api/client";
+import type { HistoryDiff, HistoryMark, SimulationInfo } from "../generated/api";
 
-const simulationPath = (id: string) => `/api/simulations/${encodeURIComponent(id)}`;
+const simulation = (sim_id: string) => ({ params: { path: { sim_id } } });
 
 /** Compiles the saved project into a new simulation; a 422 ApiError carries the compile diagnostics. */
 export function createSimulation(project: string): Promise<SimulationInfo> {
-  return requestJson<SimulationInfo>(`/api/projects/${encodeURIComponent(project)}/simulations`, {
-    method: "POST",
-    headers: { "Content-Type": "application/json" },
-    body: "{}",
-  });
+  return unwrap(http.POST("/api/projects/{name}/simulations", { params: { path: { name: project } } }));
 }
 
 export function getSimulation(id: string): Promise<SimulationInfo> {
-  return requestJson<SimulationInfo>(simulationPath(id));
+  return unwrap(http.GET("/api/simulations/{sim_id}", simulation(id)));
 }
 
 /** Every simulation the server runs (finding one this way asks nothing that may 404). */
 export function listSimulations(): Promise<SimulationInfo[]> {
-  return requestJson<SimulationInfo[]>("/api/simulations");
+  return unwrap(http.GET("/api/simulations"));
 }
 
 /** Warm reset keeps RETAIN variables; cold resets everything to its initial value. */
 export function resetSimulation(id: string, cold = false): Promise<SimulationInfo> {
-  return requestJson<SimulationInfo>(`${simulationPath(id)}/reset`, {
-    method: "POST",
-    headers: { "Content-Type": "application/json" },
-    body: JSON.stringify({ cold }),
-  });
+  return unwrap(http.POST("/api/simulations/{sim_id}/reset", { ...simulation(id), body: { cold } }));
 }
 
 export async function deleteSimulation(id: string): Promise<void> {
-  await fetch(simulationPath(id), { method: "DELETE", headers: requestHeaders({ method: "DELETE" }) });
+  await unwrap(http.DELETE("/api/simulations/{sim_id}", simulation(id)));
 }
 
 /** What to look for in the scan history: where `path` changed, or where `condition` became TRUE. */
@@ -46,25 +38,29 @@ export async function findInHistory(
   direction: 1 | -1,
   query: HistoryQuery,
 ): Promise<number | null> {
-  const params = new URLSearchParams({ scan: String(scan), direction: String(direction), ...query });
-  const found = await requestJson<HistoryFound>(`${simulationPath(id)}/history/find?${params.toString()}`);
+  const found = await unwrap(
+    http.GET("/api/simulations/{sim_id}/history/find", {
+      params: { path: { sim_id: id }, query: { scan, direction, ...query } },
+    }),
+  );
   return found.scan ?? null;
 }
 
 /** The newest scans of the history with an input or a runtime error: the timeline's marks. */
 export function historyMarks(id: string): Promise<HistoryMark[]> {
-  return requestJson<HistoryMark[]>(`${simulationPath(id)}/history/marks`);
+  return unwrap(http.GET("/api/simulations/{sim_id}/history/marks", simulation(id)));
 }
 
 /** The variables whose values differ between the ends of two scans of the history, with both values. */
 export function historyDiff(id: string, first: number, second: number): Promise<HistoryDiff> {
-  const params = new URLSearchParams({ first: String(first), second: String(second) });
-  return requestJson<HistoryDiff>(`${simulationPath(id)}/history/diff?${params.toString()}`);
+  return unwrap(
+    http.GET("/api/simulations/{sim_id}/history/diff", { params: { path: { sim_id: id }, query: { first, second } } }),
+  );
 }
 
 /** The websocket address of a simulation, on the origin the app was served from. */
 export function monitorUrl(id: string, location: Pick<Location, "protocol" | "host"> = window.location): string {
-  return `${location.protocol === "https:" ? "wss" : "ws"}://${location.host}${simulationPath(id)}/ws`;
+  return `${location.protocol === "https:" ? "wss" : "ws"}://${location.host}/api/simulations/${encodeURIComponent(id)}/ws`;
 }
 
 export interface SimulationApi {

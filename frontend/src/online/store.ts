@@ -5,7 +5,7 @@
 import { useStore } from "zustand";
 import { createStore, type StoreApi } from "zustand/vanilla";
 import { ApiError } from "../api/client";
-import type { Diagnostic, SimulationInfo } from "../generated/api";
+import type { Diagnostic, IoPoint, SimulationInfo } from "../generated/api";
 import { monitorUrl, simulationApi, type SimulationApi } from "./api";
 import {
   applyMessage,
@@ -55,6 +55,8 @@ export interface OnlineData {
   compileDiagnostics: Diagnostic[];
   /** The simulation's instance paths of every program and function block, by POU name in upper case. */
   instanceChoices: Record<string, string[]>;
+  /** The direct addresses the simulation's program uses (%I, %Q, %M), in address order. */
+  io: IoPoint[];
   monitor: MonitorState;
   lastScanMs: number | null;
   /** What each view wants to see, by view key. */
@@ -131,6 +133,7 @@ export const offline: Omit<OnlineData, "views" | "watch" | "watchExpanded" | "in
   error: null,
   compileDiagnostics: [],
   instanceChoices: {},
+  io: [],
   monitor: emptyMonitor,
   lastScanMs: null,
   prepared: {},
@@ -310,6 +313,7 @@ export function createOnlineStore(
             simulation: info.id,
             monitor: emptyMonitor,
             instanceChoices: info.instances ?? {},
+            io: info.io ?? [],
           });
           connect(info.id);
         } catch (err) {
@@ -329,6 +333,7 @@ export function createOnlineStore(
             error: null,
             monitor: emptyMonitor,
             instanceChoices: info.instances ?? {},
+            io: info.io ?? [],
           });
           connect(id);
           return true;

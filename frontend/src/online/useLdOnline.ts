@@ -3,12 +3,13 @@
 // maps the diagram's operand commands (prepare, write, force, watch) onto simulation paths.
 import { useCallback, useEffect, useMemo, useState } from "react";
 import type { LibraryEntry, SymbolInfo } from "../generated/api";
-import type { Pou } from "../generated/project";
+import type { Pou } from "../generated/api";
 import type { LdOnlineActions } from "../ld/editor/LdEditor";
 import type { LdBody } from "../ld/model";
 import type { OnlineView } from "../ld/view/types";
 import { bindLd, ldOnlineView, operandPath } from "./ldBinding";
 import { operandCommands } from "./operandCommands";
+import { partElements, partMonitor } from "./parts";
 import { onlineStore, useOnline } from "./store";
 
 /**
@@ -45,20 +46,22 @@ export interface LdOnline {
 
 /**
  * `symbols` null: the POU's symbol table has not arrived, so its operands cannot be told apart as
- * its own variables or globals yet; nothing is bound (no wrong paths) until it has.
+ * its own variables or globals yet; nothing is bound (no wrong paths) until it has. `part`: the body is
+ * an SFC action or transition of the POU ("actions/Fill", online/parts.ts).
  */
 export function useLdOnline(
   pou: Pou,
   body: LdBody,
   symbols: readonly SymbolInfo[] | null,
   library: readonly LibraryEntry[],
+  part?: string,
 ): LdOnline {
   const phase = useOnline((s) => s.phase);
   const monitor = useOnline((s) => s.monitor);
   const prepared = useOnline((s) => s.prepared);
   const [visible, setVisible] = useState<ReadonlySet<string> | null>(null);
   const instance = useShownInstance(pou);
-  const key = `ld:${pou.name}`;
+  const key = part ? `ld:${pou.name}/${part}` : `ld:${pou.name}`;
   const live = phase !== "offline";
   const lookup = useLibraryLookup(library);
 
@@ -70,14 +73,17 @@ export function useLdOnline(
   useEffect(() => {
     onlineStore
       .getState()
-      .subscribe(key, live && binding ? { paths: binding.paths, elements: binding.elements } : null);
-  }, [key, live, binding]);
+      .subscribe(
+        key,
+        live && binding ? { paths: binding.paths, elements: partElements(binding.elements, part) } : null,
+      );
+  }, [key, live, binding, part]);
   useEffect(() => () => onlineStore.getState().subscribe(key, null), [key]);
 
   const onVisibleChange = useCallback((networks: readonly string[]) => setVisible(new Set(networks)), []);
   const online = useMemo(
-    () => (live && binding ? ldOnlineView(monitor, binding, prepared) : undefined),
-    [live, binding, monitor, prepared],
+    () => (live && binding ? ldOnlineView(partMonitor(monitor, instance, part), binding, prepared) : undefined),
+    [live, binding, monitor, prepared, instance, part],
   );
 
   const actions = useMemo(

@@ -2,7 +2,7 @@ import fc from "fast-check";
 import { describe, expect, it } from "vitest";
 import { applyMessage, emptyMonitor } from "./monitor";
 import type { ValuesMessage } from "./protocol";
-import { formatClock, formatValue, parseValue, shortestReal } from "./values";
+import { formatClock, formatValue, parseValue, realText } from "./values";
 
 describe("values typed by the user", () => {
   it("parses booleans and numbers and passes other text on as an IEC literal", () => {
@@ -23,11 +23,11 @@ describe("values typed by the user", () => {
 
   it("shows TIME, dates and enumerations as IEC text when the type is known (the server sends ms and ints)", () => {
     expect(formatValue(62500, { name: "TIME" })).toBe("T#1m2s500ms");
-    expect(formatValue(0, "TIME")).toBe("T#0ms");
+    expect(formatValue(0, "TIME")).toBe("T#0s");
     expect(formatValue(-1500, "time")).toBe("T#-1s500ms");
     expect(formatValue(90061001, "TIME")).toBe("T#1d1h1m1s1ms");
     expect(formatValue(1714521600000, { name: "DATE" })).toBe("D#2024-05-01");
-    expect(formatValue(45015500, { name: "TIME_OF_DAY" })).toBe("TOD#12:30:15.500");
+    expect(formatValue(45015500, { name: "TIME_OF_DAY" })).toBe("TOD#12:30:15.5");
     expect(formatValue(1714566600000, { name: "DATE_AND_TIME" })).toBe("DT#2024-05-01-12:30:00");
     const mode = { name: "MODE", names: { "0": "IDLE", "5": "RUN" } };
     expect([formatValue(5, mode), formatValue(7, mode)]).toEqual(["RUN", "7"]);
@@ -76,25 +76,36 @@ describe("REAL values (issue 17: a REAL 50.4 shows 50.4, not 50.400001525878906)
     expect(formatValue(50.400001525878906, { name: "REAL" })).toBe("50.4");
     expect(formatValue(Math.fround(0.1), "REAL")).toBe("0.1");
     expect(formatValue(Math.fround(-3.75), "REAL")).toBe("-3.75");
-    expect(formatValue(50, "REAL")).toBe("50");
-    expect(formatValue(Math.fround(16777217), "REAL")).toBe("16777216");
-    expect(formatValue(Math.fround(1e-7), "REAL")).toBe("1e-7");
-    // An LREAL is a double: its shortest form is JavaScript's.
+    // As IEC real literals, the way the engine's TO_STRING writes them (iec/value_text.py).
+    expect(formatValue(50, "REAL")).toBe("50.0");
+    expect(formatValue(Math.fround(16777217), "REAL")).toBe("16777216.0");
+    expect(formatValue(Math.fround(1e-7), "REAL")).toBe("1.0E-7");
+    expect(formatValue(Math.fround(1e20), "REAL")).toBe("1.0E20");
+    expect(formatValue(Math.fround(1234567), "REAL")).toBe("1234567.0");
+    expect(formatValue(Math.fround(-0.00025), "REAL")).toBe("-0.00025");
+    // An LREAL is a double: its shortest digits.
     expect(formatValue(50.400001525878906, "LREAL")).toBe("50.400001525878906");
     expect(formatValue(50.4, "LREAL")).toBe("50.4");
+    expect(formatValue(1e16, "LREAL")).toBe("1.0E16");
+    expect(formatValue(1e15, "LREAL")).toBe("1000000000000000.0");
   });
 
-  it("always names the same single, and never with more digits than needed (property)", () => {
+  it("always names the same single, and never with more than 6 digits unless needed (property)", () => {
     fc.assert(
       fc.property(fc.float({ noNaN: true, noDefaultInfinity: true }), (f) => {
         const single = Math.fround(f);
-        const text = shortestReal(single);
+        const text = realText(single, true);
         expect(Math.fround(Number(text)) === single).toBe(true); // -0 shows as 0
 
-        const digits = text.replace(/^-/, "").replace(/e.*$/, "").replace(".", "").replace(/^0+/, "");
-        if (digits.length > 1) {
-          // One significant digit fewer no longer reads back as the same single.
-          expect(Math.fround(Number(single.toPrecision(digits.replace(/0+$/, "").length - 1)))).not.toBe(single);
+        const digits = text
+          .replace(/^-/, "")
+          .replace(/E.*$/, "")
+          .replace(".", "")
+          .replace(/^0+/, "")
+          .replace(/0+$/, "");
+        if (digits.length > 6) {
+          // Beyond the 6 digits it is rounded to, one significant digit fewer no longer reads back.
+          expect(Math.fround(Number(single.toPrecision(digits.length - 1)))).not.toBe(single);
         }
       }),
     );

@@ -18,22 +18,34 @@ export function formatValue(value: Value | undefined, type?: DisplayType | strin
   if (typeof value !== "number" || name === undefined) return String(value);
   const named = typeof type === "string" ? undefined : type?.names?.[String(value)];
   if (named !== undefined) return named;
-  if (name === "REAL") return shortestReal(value);
+  if (name === "REAL" || name === "LREAL") return realText(value, name === "REAL");
   return TIME_LITERALS[name]?.(value) ?? String(value);
 }
 
 /**
- * A REAL (IEEE single) as the fewest decimal digits that read back as the same single: the server
- * sends the single widened to a double, so 50.4 arrives as 50.400001525878906 and shows as 50.4.
+ * A REAL or LREAL as the engine's TO_STRING writes it (iec/value_text.py `format_real`), as an IEC
+ * real literal (`50.0`, `0.1`, `1.0E20`, `1.5E-7`): an LREAL in the fewest digits that read back as
+ * the same double; a REAL rounded to 6 significant digits (7, 8 or 9 when 6 do not read back as the
+ * same single: the server sends the single widened to a double, 50.4 arrives as 50.400001525878906
+ * and shows as 50.4), trailing zeros dropped. The exponent form starts where Python's does (below
+ * 1e-4; from 10^16, for a REAL from 10^p with p the digits rounded to).
  */
-export function shortestReal(value: number): string {
-  if (!Number.isFinite(value)) return String(value);
-  const single = Math.fround(value);
-  for (let digits = 1; digits <= 9; digits++) {
-    const text = Number(value.toPrecision(digits));
-    if (Math.fround(text) === single) return String(text);
+export function realText(value: number, single: boolean): string {
+  if (Number.isNaN(value)) return "NAN";
+  if (!Number.isFinite(value)) return value > 0 ? "INF" : "-INF";
+  const x = single ? Math.fround(value) : value;
+  let [mantissa, exponent] = x.toExponential().split("e") as [string, string];
+  let limit = 16;
+  if (single) {
+    limit = [6, 7, 8, 9].find((p) => Math.fround(Number(x.toExponential(p - 1))) === x) ?? 9;
+    [mantissa, exponent] = x.toExponential(limit - 1).split("e") as [string, string];
   }
-  return String(value); // not reached: 9 significant digits always identify a single
+  const exp = Number(exponent);
+  const sign = mantissa.startsWith("-") ? "-" : "";
+  const digits = mantissa.replace("-", "").replace(".", "").replace(/0+$/, "") || "0";
+  if (exp < -4 || exp >= limit) return `${sign}${digits[0]}.${digits.slice(1) || "0"}E${exp}`;
+  if (exp < 0) return `${sign}0.${"0".repeat(-exp - 1)}${digits}`;
+  return `${sign}${digits.slice(0, exp + 1).padEnd(exp + 1, "0")}.${digits.slice(exp + 1) || "0"}`;
 }
 
 /** An array, structure or FB instance in one line (its members show in the watch list's tree). */
@@ -44,7 +56,7 @@ function compositeText(value: object, type: string | undefined): string {
 
 const pad = (n: number, width = 2) => String(n).padStart(width, "0");
 
-/** `T#1h2m3s500ms`: the non-zero units, largest first (`T#0ms` for zero; a minus sign after `T#`). */
+/** `T#1h2m3s500ms`: the non-zero units, largest first (`T#0s` for zero, as the engine's TO_STRING; a minus sign after `T#`). */
 export function timeLiteral(ms: number): string {
   const units: [string, number][] = [
     ["d", 86_400_000],
@@ -60,14 +72,14 @@ export function timeLiteral(ms: number): string {
     if (count) text += `${count}${unit}`;
     rest -= unit === "ms" ? rest : count * size;
   }
-  return `T#${ms < 0 ? "-" : ""}${text || "0ms"}`;
+  return `T#${ms < 0 ? "-" : ""}${text || "0s"}`;
 }
 
-/** Time of day after midnight, with milliseconds when there are any. */
+/** Time of day after midnight, with the fraction of a second when there is one (`12:30:15.5`, as the engine). */
 function clock(ms: number): string {
   const day = new Date(ms);
   const millis = day.getUTCMilliseconds();
-  return `${pad(day.getUTCHours())}:${pad(day.getUTCMinutes())}:${pad(day.getUTCSeconds())}${millis ? `.${pad(millis, 3)}` : ""}`;
+  return `${pad(day.getUTCHours())}:${pad(day.getUTCMinutes())}:${pad(day.getUTCSeconds())}${millis ? `.${pad(millis, 3).replace(/0+$/, "")}` : ""}`;
 }
 
 const dateOf = (ms: number) => {

@@ -1,4 +1,5 @@
-// The panels under the editor: Diagnostics, Watch list, Online log, Breakpoints, Trace and Tests, one shown at a time.
+// The panels under the editor: Diagnostics, Watch list, I/O, Online log, Breakpoints, Trace, Tests and Cross
+// references, one shown at a time.
 import { useDebug } from "../debug/store";
 import type { Diagnostic } from "../generated/api";
 import { draggedOperand } from "../ld/editor/dragOperand";
@@ -8,19 +9,23 @@ import { useTests } from "../tests/store";
 import { TracePanel } from "../trace/TracePanel";
 import { BreakpointsPanel } from "./BreakpointsPanel";
 import { DiagnosticsPanel } from "./DiagnosticsPanel";
+import { IoPanel } from "./IoPanel";
 import { LogPanel } from "./LogPanel";
 import { panelsStore, usePanels, type PanelId } from "./store";
 import { WatchPanel } from "./WatchPanel";
+import { XrefPanel } from "../xref/XrefPanel";
 import { ViewBoundary } from "../project/ViewBoundary";
 
 /** Each panel in the user's words, for the message when it fails. */
 const PANEL_NAMES: Record<PanelId, string> = {
   diagnostics: "diagnostics panel",
   watch: "watch list",
+  io: "I/O view",
   log: "online log",
   breakpoints: "breakpoints panel",
   trace: "trace panel",
   tests: "tests panel",
+  xref: "cross references panel",
 };
 
 export interface BottomPanelsProps {
@@ -34,24 +39,29 @@ export function BottomPanels({ onReveal, pathOfOperand }: BottomPanelsProps) {
   const show = usePanels((s) => s.show);
   const problems = usePanels((s) => s.diagnostics?.length ?? 0);
   const watched = useOnline((s) => s.watch.length);
+  const addresses = useOnline((s) => s.io.length);
   const logged = useOnline((s) => s.monitor.log.length);
   const breakpoints = useDebug((s) => s.breakpoints.length);
   const failed = useTests((s) => Object.values(s.results).filter((r) => r.outcome === "failed").length);
   const tabs: { id: PanelId; label: string }[] = [
     { id: "diagnostics", label: `Diagnostics (${problems})` },
     { id: "watch", label: `Watch list (${watched})` },
+    { id: "io", label: `I/O (${addresses})` },
     { id: "log", label: `Online log (${logged})` },
     { id: "breakpoints", label: `Breakpoints (${breakpoints})` },
     { id: "trace", label: "Trace" },
     { id: "tests", label: failed ? `Tests (${failed} failed)` : "Tests" },
+    { id: "xref", label: "Cross references" },
   ];
   const body = {
     diagnostics: <DiagnosticsPanel onReveal={onReveal} />,
     watch: <WatchPanel />,
+    io: <IoPanel />,
     log: <LogPanel />,
     breakpoints: <BreakpointsPanel />,
     trace: <TracePanel />,
     tests: <TestsPanel />,
+    xref: <XrefPanel onReveal={onReveal} />,
   };
   // A variable dragged from the diagram and released over the panels joins the watch list.
   const drop = () => {

@@ -2,7 +2,7 @@ import { act, fireEvent, render, screen, within } from "@testing-library/react";
 import { afterEach, beforeEach, describe, expect, it, vi } from "vitest";
 import { debugStore } from "../debug/store";
 import type { SymbolTable } from "../generated/api";
-import type { Project } from "../generated/project";
+import type { Project } from "../generated/api";
 import { motorMain } from "../ld/fixtures";
 import type { ClientMessage } from "../online/protocol";
 import { emptyMonitor } from "../online/monitor";

@@ -1,11 +1,12 @@
 // Every breakpoint of the project (LD/FBD networks and elements, ST lines, wherever they were set):
 // enable/disable, remove, remove all, and a click shows the place in its editor. The row where the
 // scan is halted is marked.
-import type { LdBody, Pou } from "../generated/project";
+import type { LdBody, Pou } from "../generated/api";
 import { breakpointKey, type Breakpoint } from "../debug/breakpoints";
 import { revealPlace } from "../debug/reveal";
 import { debugStore, isEnabled, useDebug } from "../debug/store";
 import { locate } from "../ld/model";
+import { elementText as sfcElementText, type SfcBody } from "../sfc/model";
 import type { At } from "../online/protocol";
 import { useOnline } from "../online/store";
 import { useWorkspace } from "../project/store";
@@ -34,7 +35,7 @@ function ldElementText(body: LdBody, id: string): string | null {
 
 /** Where a breakpoint is, in words: "network 2 seal_in: comment", "element motor (coil Motor)", "line 3: Count := Count + 1;". */
 export function describePlace(bp: Breakpoint, pou: Pou | undefined, body: Pou["body"] | undefined): string {
-  const networks: Networks = body && typeof body === "object" ? (body.networks ?? []) : [];
+  const networks: Networks = body && typeof body === "object" && "networks" in body ? (body.networks ?? []) : [];
   if ("line" in bp) {
     const text = typeof body === "string" ? body.split("\n")[bp.line - 1]?.trim() : undefined;
     return text ? `line ${bp.line}: ${text}` : `line ${bp.line}`;
@@ -47,7 +48,13 @@ export function describePlace(bp: Breakpoint, pou: Pou | undefined, body: Pou["b
     return [`network ${index + 1}`, n.label ? `${n.label}:` : null, comment].filter(Boolean).join(" ");
   }
   const what =
-    pou?.language === "ld" && body && typeof body === "object" ? ldElementText(body as LdBody, bp.element) : null;
+    body && typeof body === "object"
+      ? pou?.language === "ld"
+        ? ldElementText(body as LdBody, bp.element)
+        : pou?.language === "sfc"
+          ? sfcElementText(body as SfcBody, bp.element)
+          : null
+      : null;
   return what ? `element ${bp.element} (${what})` : `element ${bp.element}`;
 }
 

@@ -1,7 +1,23 @@
 // The Diagnostics panel: the last Check (or a refused compile), errors first; a click opens the
-// POU and reveals the network, element or line the diagnostic names (or opens the operator panel).
+// POU and reveals the network, element or line the diagnostic names (or opens the operator panel). Each code opens its entry of
+// the diagnostics catalogue (docs/diagnostics.md, src/generated/diagnostics.ts): what it means, an
+// example that triggers it and how to fix it.
+import { useState } from "react";
 import type { Diagnostic } from "../generated/api";
+import { DIAGNOSTICS } from "../generated/diagnostics";
 import { focusOf, panelOf, usePanels } from "./store";
+
+interface CatalogueEntry {
+  summary: string;
+  example?: string;
+  example_note?: string;
+  fix?: string;
+}
+
+const CATALOGUE: Readonly<Record<string, CatalogueEntry>> = DIAGNOSTICS.codes;
+
+/** The catalogue's entry of a code (undefined for a code the catalogue does not know). */
+export const entryOf = (code: string): CatalogueEntry | undefined => CATALOGUE[code];
 
 const RANK = { error: 0, warning: 1, info: 2 } as const;
 
@@ -12,14 +28,30 @@ export function placeOf(d: Diagnostic): string {
   const parts: string[] = [];
   if (d.pou) parts.push(d.pou);
   if (d.file?.endsWith("/declarations")) parts.push("declarations");
-  if (d.network) parts.push(`network ${d.network}`);
-  if (d.element) parts.push(`element ${d.element}${d.pin ? `.${d.pin}` : ""}`);
+  if (d.place) parts.push(d.place);
+  else if (d.network) parts.push(`network ${d.network}`);
+  if (d.element && !d.place) parts.push(`element ${d.element}${d.pin ? `.${d.pin}` : ""}`);
   if (d.line != null) parts.push(`line ${d.line}${d.column != null ? `:${d.column}` : ""}`);
   if (!parts.length && d.json_path) parts.push(d.json_path);
   return parts.join(", ") || "project";
 }
 
+/** A code's catalogue entry, shown under the diagnostic. */
+function Entry({ code }: { code: string }) {
+  const entry = entryOf(code);
+  if (!entry) return <p className="diagnostic-entry">No entry for {code} in the catalogue.</p>;
+  return (
+    <div className="diagnostic-entry" role="note" aria-label={`About ${code}`}>
+      <p>{entry.summary}</p>
+      {entry.example ? <pre>{entry.example}</pre> : null}
+      {entry.example_note ? <p>{entry.example_note}</p> : null}
+      {entry.fix ? <p>Fix: {entry.fix}</p> : null}
+    </div>
+  );
+}
+
 export function DiagnosticsPanel({ onReveal }: { onReveal(d: Diagnostic): void }) {
+  const [open, setOpen] = useState<number | null>(null);
   const diagnostics = usePanels((s) => s.diagnostics);
   const checking = usePanels((s) => s.checking);
   const error = usePanels((s) => s.checkError);
@@ -50,8 +82,17 @@ export function DiagnosticsPanel({ onReveal }: { onReveal(d: Diagnostic): void }
               <span className="diagnostic-severity">{d.severity ?? "error"}</span>
               <span className="diagnostic-place">{placeOf(d)}</span>
               <span className="diagnostic-message">{d.message}</span>
-              <span className="diagnostic-code">{d.code}</span>
             </button>
+            <button
+              type="button"
+              className="diagnostic-code"
+              aria-expanded={open === i}
+              title={entryOf(d.code)?.summary ?? d.code}
+              onClick={() => setOpen(open === i ? null : i)}
+            >
+              {d.code}
+            </button>
+            {open === i ? <Entry code={d.code} /> : null}
           </li>
         );
       })}

@@ -34,12 +34,15 @@ export function VariableRow({
   depth,
   expansion,
   actions,
+  lead,
 }: {
   node: TreeNode;
   depth: number;
   expansion: Expansion;
   /** More controls at the row's end (the watch list's remove button). */
   actions?: ReactNode;
+  /** Cells before the name (the I/O view's area and address). */
+  lead?: ReactNode;
 }) {
   const key = pathKey(node.path);
   const shown = useOnline(useShallow((s) => shownPath(s.monitor, key, s.prepared)));
@@ -62,6 +65,7 @@ export function VariableRow({
   return (
     <>
       <tr className={shown?.forced ? "watch-forced" : undefined} data-path={key} aria-level={depth + 1}>
+        {lead}
         <td className="watch-path" style={{ paddingLeft: `${0.5 + depth * 1.1}rem` }}>
           {node.expandable ? (
             <button

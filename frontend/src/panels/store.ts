@@ -2,10 +2,12 @@
 // a clicked diagnostic asks the editors to reveal. The check call is injected for tests.
 import { useStore } from "zustand";
 import { createStore, type StoreApi } from "zustand/vanilla";
-import { checkProject } from "../api/client";
+import { checkUnsaved } from "../api/client";
 import type { CheckReport, Diagnostic } from "../generated/api";
+import type { Project } from "../generated/api";
+import { partOf } from "../project/parts";
 
-export type PanelId = "diagnostics" | "watch" | "log" | "breakpoints" | "trace" | "tests";
+export type PanelId = "diagnostics" | "watch" | "io" | "log" | "breakpoints" | "trace" | "tests" | "xref";
 
 /** A place to reveal: a POU, and in it a network/element (diagrams) or a line (texts). */
 export interface Focus {
@@ -33,7 +35,8 @@ export interface PanelsData {
 export interface PanelsActions {
   show(panel: PanelId): void;
   /** Runs Check on the saved project and shows the diagnostics panel. */
-  check(project: string): Promise<void>;
+  /** Checks the working copy as it is (unsaved changes included; nothing is saved). */
+  check(project: Project): Promise<void>;
   /** Shows `diagnostics` (e.g. a refused compile) as the current list. */
   showDiagnostics(diagnostics: Diagnostic[]): void;
   /** Asks the editors to reveal where a diagnostic points. */
@@ -53,6 +56,8 @@ export function panelOf(d: Diagnostic): string | null {
 }
 
 export function focusOf(d: Diagnostic): Omit<Focus, "seq"> | null {
+  const projectPart = partOf(d);
+  if (projectPart) return { pou: projectPart, network: null, element: null, line: d.line ?? null, part: null };
   if (!d.pou) return null;
   const part = d.file?.endsWith("/declarations") ? "declarations" : d.file?.endsWith("/body") ? "body" : null;
   return { pou: d.pou, network: d.network ?? null, element: d.element ?? null, line: d.line ?? null, part };
@@ -74,7 +79,7 @@ export const clampHeight = (px: number, windowHeight: number): number =>
   Math.round(Math.max(PANEL_HEIGHT_LIMITS.min, Math.min(px, windowHeight - PANEL_HEIGHT_LIMITS.editor)));
 
 export function createPanelsStore(
-  check: (project: string) => Promise<CheckReport> = checkProject,
+  check: (project: Project) => Promise<CheckReport> = checkUnsaved,
 ): StoreApi<PanelsState> {
   let call = 0;
   return createStore<PanelsState>()((set, get) => ({

@@ -2,7 +2,7 @@
 // function block the instance picked) as a tree of its variables, FB instances, structures and
 // arrays, with values, types, forced marks and in-place write, like CODESYS's declaration view online.
 import { useState, type ReactNode } from "react";
-import type { Pou } from "../generated/project";
+import type { Pou } from "../generated/api";
 import { pathKey } from "../online/monitor";
 import { useOnline } from "../online/store";
 import { useShownInstance } from "../online/useLdOnline";

@@ -1,9 +1,10 @@
 import { diagnosticCount } from "@codemirror/lint";
 import { EditorView } from "@codemirror/view";
 import { act, fireEvent, render, screen, waitFor, within } from "@testing-library/react";
-import { beforeEach, describe, expect, it, vi } from "vitest";
+import { beforeEach, describe, expect, it } from "vitest";
 import App from "../App";
 import { appStore, initialData } from "../store";
+import { stubFetch } from "../test/fetchStub";
 import { motorMain } from "../ld/fixtures";
 import { debugStore } from "../debug/store";
 import { emptyWorkspace, workspaceStore } from "./store";
@@ -21,12 +22,11 @@ const project = {
 };
 
 function serve(put: () => Response) {
-  const fetchMock = vi.fn(async (input: RequestInfo | URL, init?: RequestInit) => {
-    const url = String(input);
+  return stubFetch(({ path: url, method }) => {
     if (url === "/api/health") return json({ status: "ok", version: "0.1.0" });
     if (url === "/api/projects")
       return json([{ name: "plant", revision: "r1", modified: "2024-05-01T10:00:00Z", pou_count: 2 }]);
-    if (url === "/api/projects/plant" && init?.method === "PUT") return put();
+    if (url === "/api/projects/plant" && method === "PUT") return put();
     if (url === "/api/projects/plant")
       return json({ name: "plant", revision: "r1", modified: "2024-05-01T10:00:00Z", project });
     if (url.startsWith("/api/library")) return json([]);
@@ -39,8 +39,6 @@ function serve(put: () => Response) {
     if (url.endsWith("/symbols")) return json({ pou: "Main", symbols: [], globals: [], diagnostics: [] });
     throw new Error(`unexpected fetch ${url}`);
   });
-  vi.stubGlobal("fetch", fetchMock);
-  return fetchMock;
 }
 
 beforeEach(() => {
@@ -69,21 +67,22 @@ describe("app shell", () => {
       "Plants",
       "Panels",
       "Exercise",
-      "Types",
-      "Global variables",
+      "Project",
       "Tasks",
       "Tests",
     ]);
-    expect(within(tree).getByRole("button", { name: /Main/ }).textContent).toBe("MainLD");
-    expect(within(tree).getByRole("button", { name: /Blinker/ }).textContent).toBe("BlinkerST");
-    expect(within(tree).getByText(/Fast/).textContent).toContain("T#10ms · Main");
-    expect(within(tree).getByText("3 lines of VAR_GLOBAL declarations")).toBeTruthy();
+    expect(within(tree).getByRole("button", { name: /^Main/ }).textContent).toBe("MainLD");
+    expect(within(tree).getByRole("button", { name: /^Blinker/ }).textContent).toBe("BlinkerST");
+    expect(within(tree).getByText(/Fast/).textContent).toContain("every T#10ms · priority 0 · Main");
+    // the project's parts open in editors; the tree counts their globals, types and tasks
+    expect(within(tree).getByRole("button", { name: /^Global variables/ }).textContent).toBe("Global variables1");
+    expect(within(tree).getByRole("button", { name: /^Tasks/ }).textContent).toBe("Tasks1");
   });
 
   it("opens an LD POU in a tab, marks edits unsaved and saves with If-Match", async () => {
-    const fetchMock = serve(() => json({ revision: "r2", modified: "2024-05-02T10:00:00Z" }));
+    const { sent } = serve(() => json({ revision: "r2", modified: "2024-05-02T10:00:00Z" }));
     const tree = await openPlant();
-    fireEvent.click(within(tree).getByRole("button", { name: /Main/ }));
+    fireEvent.click(within(tree).getByRole("button", { name: /^Main/ }));
     expect(screen.getByRole("tab", { name: "Main" }).getAttribute("aria-selected")).toBe("true");
     const editor = screen.getByRole("application", { name: "Ladder diagram editor" });
     fireEvent.mouseDown(editor.querySelector('[data-id="seal"] .ld-hit')!);
@@ -91,14 +90,14 @@ describe("app shell", () => {
     expect(screen.getByRole("tab", { name: /Main/ }).textContent).toContain("●");
     expect(screen.getByText("Unsaved changes in Main")).toBeTruthy();
     expect(localStorage.getItem("ladderlab:draft:plant")).toContain('"base_revision":"r1"');
-    const listings = () => fetchMock.mock.calls.filter(([url]) => String(url) === "/api/projects").length;
+    const listings = () => sent.filter((r) => r.path === "/api/projects").length;
     const listedBefore = listings();
     fireEvent.keyDown(window, { key: "s", ctrlKey: true });
     expect(await screen.findByText("All changes saved")).toBeTruthy();
     await waitFor(() => expect(listings()).toBe(listedBefore + 1)); // the project list shows the new revision
-    const put = fetchMock.mock.calls.find(([, init]) => init?.method === "PUT")!;
-    expect(new Headers(put[1]!.headers).get("If-Match")).toBe('"r1"');
-    expect(JSON.parse(String(put[1]!.body)).pous[0].body.networks[0].elements[0].id).toBe("start");
+    const put = sent.find((r) => r.method === "PUT")!;
+    expect(put.headers.get("If-Match")).toBe('"r1"');
+    expect(JSON.parse(put.body).pous[0].body.networks[0].elements[0].id).toBe("start");
     expect(localStorage.getItem("ladderlab:draft:plant")).toBeNull();
   });
 
@@ -121,7 +120,7 @@ describe("app shell", () => {
         : json({ revision: "r6", modified: "2024-05-03T10:00:00Z" });
     });
     const tree = await openPlant();
-    fireEvent.click(within(tree).getByRole("button", { name: /Main/ }));
+    fireEvent.click(within(tree).getByRole("button", { name: /^Main/ }));
     const editor = screen.getByRole("application", { name: "Ladder diagram editor" });
     fireEvent.mouseDown(editor.querySelector('[data-id="stop"] .ld-hit')!);
     fireEvent.keyDown(editor, { key: " " });
@@ -135,15 +134,13 @@ describe("app shell", () => {
   });
 
   it("opens an ST POU as text (declarations and body) in the ST editor, underlines the live check of the unsaved text and marks edits unsaved (issue 9)", async () => {
-    const fetchMock = serve(() => json({}));
+    const { sent } = serve(() => json({}));
     const tree = await openPlant();
-    fireEvent.click(within(tree).getByRole("button", { name: /Blinker/ }));
-    const content = screen.getByLabelText("Blinker body");
+    fireEvent.click(within(tree).getByRole("button", { name: /^Blinker/ }));
+    const content = await screen.findByLabelText("Blinker body", {}, { timeout: 5000 }); // loaded on first use
     const view = EditorView.findFromDOM(content)!;
     const checkedBodies = () =>
-      fetchMock.mock.calls
-        .filter(([url]) => String(url) === "/api/check")
-        .map(([, init]) => (JSON.parse(String(init?.body)) as typeof project).pous[1]!.body);
+      sent.filter((r) => r.path === "/api/check").map((r) => (JSON.parse(r.body) as typeof project).pous[1]!.body);
     // The live check waits CHECK_DELAY_MS after typing; on a loaded machine the answer takes longer than
     // waitFor's default second (make test failed here twice at load average 5-8).
     const slow = { timeout: 5000 };
@@ -167,7 +164,7 @@ describe("app shell", () => {
     debugStore.getState().toggle({ pou: "Other", line: 1 }); // another project's
     const tree = await openPlant();
     expect(debugStore.getState().breakpoints).toEqual([]); // the project opened shows its own breakpoints: none yet
-    fireEvent.click(within(tree).getByRole("button", { name: /Main/ }));
+    fireEvent.click(within(tree).getByRole("button", { name: /^Main/ }));
     fireEvent.click(screen.getByRole("button", { name: "Toggle breakpoint on network 3" }));
     fireEvent.click(screen.getByRole("tab", { name: "Breakpoints (1)" }));
     expect(screen.getByRole("table", { name: "Breakpoints" }).textContent).toContain(

@@ -3,9 +3,19 @@
 // simulation runs, tinted by the tests' coverage), the ST editor of test files, the simulation
 // toolbar, the bottom panels, Save (Ctrl+S) and the dialog for a save conflict (reload theirs or
 // overwrite deliberately).
-import { useCallback, useEffect, useMemo, useState, type CSSProperties, type FormEvent, type ReactNode } from "react";
+import {
+  lazy,
+  Suspense,
+  useCallback,
+  useEffect,
+  useMemo,
+  useState,
+  type CSSProperties,
+  type FormEvent,
+  type ReactNode,
+} from "react";
 import type { Diagnostic } from "../generated/api";
-import type { LdBody, Pou, Project, TestFile } from "../generated/project";
+import type { LdBody, Pou, Project, TestFile } from "../generated/api";
 import { LdEditor } from "../ld/editor/LdEditor";
 import type { History } from "../ld/history";
 import { operandPath } from "../online/ldBinding";
@@ -17,32 +27,41 @@ import { BottomPanels } from "../panels/BottomPanels";
 import { focusOf, panelOf, panelsStore, usePanels } from "../panels/store";
 import { StView } from "../stview/StView";
 import { DeclarationsEditor } from "../declarations/DeclarationsEditor";
-import { ELEMENTARY_TYPES, userTypeNames } from "../declarations/model";
-import { isTestPath, pouOf, symbolsOf, testOf, testPath, useWorkspace, workspaceStore } from "./store";
-import { useTestCheck, useTestCompletions } from "../tests/assist";
-import { coverageLines, coverageMarks, coverageOf } from "../tests/coverage";
+import { parseDeclarations } from "../declarations/model";
+import { isTestPath, pouOf, symbolsOf, testPath, useWorkspace, workspaceStore } from "./store";
+import { coverageMarks, coverageOf } from "../tests/coverage";
 import { testsStore, useTests } from "../tests/store";
+import { runsOf } from "./tasks";
 import { useDiagramPou } from "./useDiagramPou";
-import { FbdPouView } from "../fbd/FbdPouView";
+import { SfcPouView } from "../sfc/SfcPouView";
+import { elementText as sfcElementText, type SfcBody } from "../sfc/model";
 import { ExportMenu } from "../interchange/ExportMenu";
 import { ImportPlcopen } from "../interchange/ImportPlcopen";
 import { appStore } from "../store";
-import { StEditor } from "../st/StEditor";
-import { StOnlineBar } from "../st/StOnlineBar";
-import { useStAssist } from "../st/useStAssist";
-import { useStOnline } from "../st/useStOnline";
 import { DebugBar } from "../debug/DebugBar";
 import { useLdDebugging } from "../debug/ldDebugging";
 import { revealPlace } from "../debug/reveal";
-import { debugStore, useDebug } from "../debug/store";
+import { debugStore } from "../debug/store";
 import { isShellTab, PanelsTree, revealWidget, ShellTab, tabLabel } from "../hmi/shell";
 import { ViewBoundary } from "./ViewBoundary";
 import { useAppKeys } from "./useAppKeys";
 import { ShortcutHelp } from "../keys/ShortcutHelp";
 import { keysOf } from "../keys/keymap";
 import { VariablesView } from "./VariablesView";
+import { InstancePicker, OnlineActions } from "./InstancePicker";
+import { LOADING } from "./lazy";
+import { useHidden } from "./layout";
+import { KindPicker, PouActions } from "./PouActions";
+import { GlobalsView, TasksView, TypesView, useDeclarableTypes } from "./ProjectParts";
+import { isProjectPart, PROJECT_PARTS, type ProjectPart } from "./parts";
+import { typeRows } from "./types";
 import { keepSession, restoreSession, type SessionStores } from "./session";
 import { traceStore } from "../trace/store";
+
+// Loaded on first use, each in its own chunk: the ST views (CodeMirror) and the FBD editor (@xyflow).
+const StPouView = lazy(() => import("./StViews").then((m) => ({ default: m.StPouView })));
+const TestFileView = lazy(() => import("./StViews").then((m) => ({ default: m.TestFileView })));
+const FbdPouView = lazy(() => import("../fbd/FbdPouView").then((m) => ({ default: m.FbdPouView })));
 
 /** The stores a project's session (project/session.ts) is kept from. */
 const SESSION_STORES: SessionStores = { workspace: workspaceStore, online: onlineStore, trace: traceStore };
@@ -53,7 +72,9 @@ const KINDS: { kind: Pou["kind"]; title: string }[] = [
   { kind: "function", title: "Functions" },
   { kind: "plant", title: "Plants" },
 ];
-const LANGUAGE = { st: "ST", ld: "LD", fbd: "FBD" } as const;
+const LANGUAGE = { st: "ST", ld: "LD", fbd: "FBD", il: "IL", sfc: "SFC" } as const;
+/** Languages whose body is text, edited in the text editor (docs/il.md). */
+const TEXT_LANGUAGES: readonly Pou["language"][] = ["st", "il"];
 
 export const formatTime = (iso: string | null | undefined): string => {
   if (!iso) return "an unknown time";
@@ -69,11 +90,14 @@ function NewItemForm({
   title,
   nameLabel,
   create,
+  onOpen,
   children,
 }: {
   title: string;
   nameLabel: string;
   create(name: string): string | null;
+  /** Called as the form opens (to start its fields afresh). */
+  onOpen?: () => void;
   children?: ReactNode;
 }) {
   const [open, setOpen] = useState(false);
@@ -81,7 +105,14 @@ function NewItemForm({
   const [error, setError] = useState<string | null>(null);
   if (!open) {
     return (
-      <button type="button" className="new-pou-button" onClick={() => setOpen(true)}>
+      <button
+        type="button"
+        className="new-pou-button"
+        onClick={() => {
+          onOpen?.();
+          setOpen(true);
+        }}
+      >
         {title}
       </button>
     );
@@ -119,20 +150,20 @@ function NewItemForm({
   );
 }
 
-/** "New POU": name, kind and language; the POU joins the working copy (saved with the project). */
+/** "New POU": name, kind (each time from "program", with what the kind is) and language; the POU joins
+ * the working copy (saved with the project). */
 function NewPou() {
   const addPou = useWorkspace((s) => s.addPou);
   const [kind, setKind] = useState<Pou["kind"]>("program");
   const [language, setLanguage] = useState<Pou["language"]>("ld");
   return (
-    <NewItemForm title="New POU" nameLabel="POU name" create={(name) => addPou(name, kind, language)}>
-      <select aria-label="POU kind" value={kind} onChange={(e) => setKind(e.target.value as Pou["kind"])}>
-        {KINDS.map((k) => (
-          <option key={k.kind} value={k.kind}>
-            {k.title.replace(/s$/, "").toLowerCase()}
-          </option>
-        ))}
-      </select>
+    <NewItemForm
+      title="New POU"
+      nameLabel="POU name"
+      create={(name) => addPou(name, kind, language)}
+      onOpen={() => setKind("program")}
+    >
+      <KindPicker kind={kind} onChange={setKind} />
       <select
         aria-label="POU language"
         value={language}
@@ -204,6 +235,14 @@ function TestFilesTree() {
   );
 }
 
+/** What the tree says of a project part: how many types, globals, tasks it has. */
+function partSummary(project: Project, part: ProjectPart): string {
+  if (part === "Tasks") return project.tasks?.length ? `${project.tasks.length}` : "default";
+  if (part === "Types") return `${typeRows(project.types ?? "").length}`;
+  const parsed = parseDeclarations(project.globals ?? "");
+  return parsed.ok ? `${parsed.rows.length}` : "";
+}
+
 function ProjectTree() {
   const project = useWorkspace((s) => s.project);
   const changed = useWorkspace((s) => s.changed);
@@ -211,7 +250,6 @@ function ProjectTree() {
   const openPou = useWorkspace((s) => s.openPou);
   if (!project) return null;
   const pous = project.pous ?? [];
-  const lines = (text: string | undefined) => (text ?? "").split("\n").filter((l) => l.trim()).length;
   return (
     <nav className="tree" aria-label="Project tree">
       <NewPou />
@@ -223,7 +261,7 @@ function ProjectTree() {
             {group.length ? (
               <ul>
                 {group.map((p) => (
-                  <li key={p.name}>
+                  <li key={p.name} className="tree-row">
                     <button
                       type="button"
                       className="tree-item"
@@ -238,6 +276,7 @@ function ProjectTree() {
                         </span>
                       ) : null}
                     </button>
+                    <PouActions pou={p} />
                   </li>
                 ))}
               </ul>
@@ -249,36 +288,73 @@ function ProjectTree() {
       })}
       <PanelsTree />
       <section>
-        <h3>Types</h3>
-        <p className="tree-empty">
-          {lines(project.types) ? `${lines(project.types)} lines of TYPE declarations` : "none"}
-        </p>
+        <h3>Project</h3>
+        <ul>
+          {PROJECT_PARTS.map((part) => (
+            <li key={part}>
+              <button
+                type="button"
+                className="tree-item"
+                aria-current={active === part ? "true" : undefined}
+                onClick={() => openPou(part)}
+              >
+                <span className="tree-name">{part}</span>
+                <span className="tree-meta">{partSummary(project, part)}</span>
+                {changed.includes(part) ? (
+                  <span className="unsaved" aria-label="unsaved changes">
+                    ●
+                  </span>
+                ) : null}
+              </button>
+            </li>
+          ))}
+        </ul>
       </section>
-      <section>
-        <h3>Global variables</h3>
-        <p className="tree-empty">
-          {lines(project.globals) ? `${lines(project.globals)} lines of VAR_GLOBAL declarations` : "none"}
-        </p>
-      </section>
-      <section>
-        <h3>Tasks</h3>
-        {project.tasks?.length ? (
-          <ul>
-            {project.tasks.map((t) => (
-              <li key={t.name} className="tree-task">
-                {t.name}{" "}
-                <span className="tree-meta">
-                  {t.interval ?? ""} · {(t.programs ?? []).join(", ") || "no programs"}
-                </span>
-              </li>
-            ))}
-          </ul>
-        ) : (
-          <p className="tree-empty">none (the default task runs every program)</p>
-        )}
-      </section>
+      <TasksSection project={project} />
       <TestFilesTree />
     </nav>
+  );
+}
+
+/** The tasks and the program instances they run: the project's own, or its configuration's resources. */
+function TasksSection({ project }: { project: Project }) {
+  const runs = runsOf(project);
+  const empty = project.configuration
+    ? "none (an empty configuration runs nothing)"
+    : "none (the default task runs every program)";
+  return (
+    <section aria-label="Tasks">
+      <h3>{runs.configuration ? `Configuration ${runs.configuration}` : "Tasks"}</h3>
+      {runs.resources.length ? (
+        runs.resources.map((resource, index) => (
+          <div key={resource.name ?? index} className="tree-resource">
+            {resource.name ? (
+              <p className="tree-resource-name">
+                Resource {resource.name}
+                {resource.on ? <span className="tree-meta"> on {resource.on}</span> : null}
+              </p>
+            ) : null}
+            <ul>
+              {resource.tasks.map((t) => (
+                <li key={t.name} className="tree-task">
+                  {t.name}{" "}
+                  <span className="tree-meta">
+                    {t.timing} · priority {t.priority} · {t.instances.join(", ") || "no programs"}
+                  </span>
+                </li>
+              ))}
+              {resource.unscheduled.length ? (
+                <li className="tree-task">
+                  <span className="tree-meta">default task · {resource.unscheduled.join(", ")}</span>
+                </li>
+              ) : null}
+            </ul>
+          </div>
+        ))
+      ) : (
+        <p className="tree-empty">{empty}</p>
+      )}
+    </section>
   );
 }
 
@@ -321,50 +397,6 @@ const NO_DIAGNOSTICS: Diagnostic[] = [];
 const pouNamed = (project: Project | null, name: string) =>
   project?.pous?.find((p) => p.name.toUpperCase() === name.toUpperCase());
 
-/** Which instance of a function block the online view shows (a path such as MAIN.BLINK), typed or picked from the simulation's. */
-function InstancePicker({ pou }: { pou: string }) {
-  const current = useOnline((s) => s.instances[pou] ?? "");
-  const choices = useOnline((s) => s.instanceChoices[pou.toUpperCase()]);
-  const [text, setText] = useState(current);
-  const listId = `instances-of-${pou}`;
-  return (
-    <form
-      className="instance-picker"
-      onSubmit={(e) => {
-        e.preventDefault();
-        onlineStore.getState().setInstance(pou, text);
-      }}
-    >
-      <input
-        aria-label={`Instance of ${pou}`}
-        list={listId}
-        value={text}
-        onChange={(e) => setText(e.target.value)}
-        placeholder={choices?.[0] ?? "MAIN.Instance"}
-        spellCheck={false}
-      />
-      <datalist id={listId}>
-        {choices?.map((path) => (
-          <option key={path} value={path} />
-        ))}
-      </datalist>
-      <button type="submit">Show</button>
-    </form>
-  );
-}
-
-/** Next to an online diagram's read-only notice: the FB instance shown, and going offline. */
-function OnlineActions({ pou }: { pou: Pou }) {
-  return (
-    <>
-      {pou.kind === "function_block" ? <InstancePicker pou={pou.name} /> : null}
-      <button type="button" onClick={() => void onlineStore.getState().goOffline()}>
-        Go offline to edit
-      </button>
-    </>
-  );
-}
-
 function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
   const name = pou.name;
   const setLdHistory = useWorkspace((s) => s.setLdHistory);
@@ -396,112 +428,15 @@ function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
   );
 }
 
-/**
- * An ST POU as text: its declarations above its body, each in the ST editor, with the live check
- * of the working copy as underlines; online, the body shows values inline.
- */
-function StPouView({ pou }: { pou: Pou }) {
-  const setStBody = useWorkspace((s) => s.setStBody);
-  const setDeclarations = useWorkspace((s) => s.setDeclarations);
-  const phase = useOnline((s) => s.phase);
-  const body = typeof pou.body === "string" ? pou.body : "";
-  const { diagnostics, completions, scope } = useStAssist(pou);
-  const online = useStOnline(pou, body, scope);
-  const readOnly = phase === "offline" ? null : "Online: go offline to edit.";
-  const allBreakpoints = useDebug((s) => s.breakpoints);
-  const upper = pou.name.toUpperCase();
-  const same = (name: string) => name.toUpperCase() === upper;
-  const lines = useMemo(
-    () => allBreakpoints.flatMap((b) => ("line" in b && b.pou.toUpperCase() === upper ? [b.line] : [])),
-    [allBreakpoints, upper],
-  );
-  const at = useOnline((s) => (s.monitor.state === "halted" ? s.monitor.at : null));
-  const covered = useTests((s) => coverageOf(s.coverage, pou.name));
-  const debug = {
-    breakpoints: lines,
-    halted: at && same(at.pou) && at.line != null ? at.line : null,
-    onToggle: (line: number) => debugStore.getState().toggle({ pou: pou.name, line }),
-  };
-  return (
-    <div
-      className="st-pou"
-      style={{ display: "flex", flexDirection: "column", gap: "0.25rem", height: "100%", minHeight: 0 }}
-    >
-      <div style={{ flex: "0 0 35%", minHeight: "6rem", overflow: "hidden", borderBottom: "1px solid #ccc" }}>
-        <StEditor
-          text={pou.declarations ?? ""}
-          onChange={(text) => setDeclarations(pou.name, text)}
-          file={`${pou.name}/declarations`}
-          diagnostics={diagnostics}
-          completions={completions}
-          readOnly={readOnly}
-          label={`${pou.name} declarations`}
-        />
-      </div>
-      <StOnlineBar
-        online={online}
-        instancePicker={pou.kind === "function_block" ? <InstancePicker pou={pou.name} /> : undefined}
-      />
-      <div style={{ flex: "1 1 65%", minHeight: "10rem", overflow: "hidden" }}>
-        <StEditor
-          text={body}
-          onChange={(text) => setStBody(pou.name, text)}
-          file={`${pou.name}/body`}
-          diagnostics={diagnostics}
-          completions={completions}
-          readOnly={readOnly}
-          label={`${pou.name} body`}
-          debug={debug}
-          online={online.view}
-          coverage={coverageLines(covered)}
-        />
-      </div>
-      {online.overlay}
-    </div>
-  );
-}
-
-/** A test file in the ST editor: live diagnostics, completions, Run this file, jumps from the Tests panel. */
-function TestFileView({ path }: { path: string }) {
-  const project = useWorkspace((s) => s.project);
-  const test = useWorkspace((s) => testOf(s.project, path));
-  const setTestText = useWorkspace((s) => s.setTestText);
-  const diagnostics = useTestCheck(project, path);
-  const completions = useTestCompletions(project);
-  const focus = usePanels((s) => (s.focus?.pou === path && s.focus.line != null ? s.focus : null));
-  const running = useTests((s) => s.running !== null);
-  if (!test || !project) return <p className="placeholder">{path} is no longer in this project.</p>;
-  return (
-    <div className="pou-view test-file-view">
-      <div className="pou-modes">
-        <button
-          type="button"
-          disabled={running}
-          onClick={() => {
-            panelsStore.getState().show("tests");
-            void testsStore.getState().run(project, { file: path });
-          }}
-        >
-          Run this file
-        </button>
-      </div>
-      <div style={{ flex: "1 1 auto", minHeight: "10rem", overflow: "hidden", height: "100%" }}>
-        <StEditor
-          text={test.text ?? ""}
-          onChange={(text) => setTestText(path, text)}
-          file={path}
-          diagnostics={diagnostics}
-          completions={completions}
-          readOnly={null}
-          label={path}
-          focusLine={focus ? { line: focus.line!, seq: focus.seq } : null}
-        />
-      </div>
-    </div>
-  );
-}
-
 type PouMode = "body" | "declarations" | "variables" | "st";
+
+function ProjectPartView({ part }: { part: ProjectPart }) {
+  return (
+    <ViewBoundary name={`The ${part} editor`}>
+      {part === "Global variables" ? <GlobalsView /> : part === "Types" ? <TypesView /> : <TasksView />}
+    </ViewBoundary>
+  );
+}
 
 /** Declarations of one POU with the types to offer and the problems of its declaration text. */
 function PouDeclarations({
@@ -514,8 +449,7 @@ function PouDeclarations({
   focus: { line: number; seq: number } | null;
 }) {
   const setDeclarations = useWorkspace((s) => s.setDeclarations);
-  const library = useWorkspace((s) => s.library);
-  const userTypes = useWorkspace((s) => s.project?.types ?? "");
+  const types = useDeclarableTypes();
   const table = useWorkspace((s) => s.symbols[pou.name]);
   const checked = usePanels((s) => s.diagnostics) ?? NO_DIAGNOSTICS;
   const file = `${pou.name}/declarations`.toUpperCase();
@@ -527,16 +461,6 @@ function PouDeclarations({
       return seen.has(key) ? false : (seen.add(key), true);
     });
   }, [table, checked, file]);
-  const types = useMemo(
-    () => [
-      ...new Set([
-        ...ELEMENTARY_TYPES,
-        ...userTypeNames(userTypes),
-        ...library.filter((e) => e.kind === "function_block").map((e) => e.name),
-      ]),
-    ],
-    [userTypes, library],
-  );
   return (
     <DeclarationsEditor
       text={pou.declarations ?? ""}
@@ -553,6 +477,7 @@ function PouView({ name }: { name: string }) {
   const pou = useWorkspace((s) => pouOf(s.project, name));
   const history = useWorkspace((s) => s.histories[name]);
   const fbdHistory = useWorkspace((s) => s.fbdHistories[name]);
+  const sfcHistory = useWorkspace((s) => s.sfcHistories[name]);
   const project = useWorkspace((s) => s.name);
   const unsaved = useWorkspace((s) => s.changed.includes(name));
   const focus = usePanels((s) => (s.focus?.pou.toUpperCase() === name.toUpperCase() ? s.focus : null));
@@ -566,7 +491,10 @@ function PouView({ name }: { name: string }) {
   }
   if (!pou || !project) return <p className="placeholder">{name} is no longer in this project.</p>;
   const modes: { id: PouMode; label: string }[] = [
-    { id: "body", label: pou.language === "st" ? "Body" : "Diagram" },
+    {
+      id: "body",
+      label: TEXT_LANGUAGES.includes(pou.language) ? "Body" : pou.language === "sfc" ? "Chart" : "Diagram",
+    },
     { id: "declarations", label: "Declarations" },
     { id: "variables", label: "Variables" },
     ...(pou.language !== "st" ? [{ id: "st" as const, label: "View as ST" }] : []),
@@ -592,12 +520,14 @@ function PouView({ name }: { name: string }) {
         onRevealNetwork={(network) => panelsStore.getState().reveal({ pou: name, network })}
       />
     );
-  } else if (pou.language === "st") {
+  } else if (TEXT_LANGUAGES.includes(pou.language)) {
     content = <StPouView pou={pou} />;
   } else if (pou.language === "ld" && history) {
     content = <LdPouView pou={pou} history={history} />;
   } else if (pou.language === "fbd" && fbdHistory) {
     content = <FbdPouView pou={pou} history={fbdHistory} onlineActions={<OnlineActions pou={pou} />} />;
+  } else if (pou.language === "sfc" && sfcHistory) {
+    content = <SfcPouView pou={pou} history={sfcHistory} onlineActions={<OnlineActions pou={pou} />} />;
   } else {
     content = (
       <p className="placeholder">
@@ -623,7 +553,7 @@ function PouView({ name }: { name: string }) {
         ))}
       </div>
       <ViewBoundary key={mode} name={area} onReload={() => workspaceStore.getState().refreshPou(name)}>
-        {content}
+        <Suspense fallback={LOADING}>{content}</Suspense>
       </ViewBoundary>
     </div>
   );
@@ -675,6 +605,9 @@ export function WorkspaceView() {
   const project = useWorkspace((s) => s.project);
   const revision = useWorkspace((s) => s.revision);
   const panelsHeight = usePanels((s) => s.height);
+  const undo = useWorkspace((s) => s.undo);
+  const [treeHidden, toggleTree] = useHidden("tree");
+  const [panelsHidden, togglePanels] = useHidden("panels");
   const [help, setHelp] = useState(false);
 
   // A save changes the project's POU count, revision and time: the project list shows them.
@@ -705,7 +638,15 @@ export function WorkspaceView() {
   const networksOf = useCallback(
     (pouName: string) => {
       const body = pouNamed(project, pouName)?.body;
-      return body && typeof body === "object" ? (body.networks ?? []).map((n) => n.id) : [];
+      return body && typeof body === "object" && "networks" in body ? (body.networks ?? []).map((n) => n.id) : [];
+    },
+    [project],
+  );
+
+  const elementText = useCallback(
+    (pouName: string, id: string) => {
+      const pou = pouNamed(project, pouName);
+      return pou?.language === "sfc" ? sfcElementText(pou.body as SfcBody, id) : null;
     },
     [project],
   );
@@ -747,10 +688,13 @@ export function WorkspaceView() {
   }
   return (
     <div
-      className="workspace"
+      className={`workspace${treeHidden ? " tree-hidden" : ""}${panelsHidden ? " panels-hidden" : ""}`}
       style={panelsHeight ? ({ "--panels-height": `${panelsHeight}px` } as CSSProperties) : undefined}
     >
       <div className="workspace-bar">
+        <button type="button" className="panel-toggle" aria-pressed={!treeHidden} onClick={toggleTree}>
+          {treeHidden ? "Show project tree" : "Hide project tree"}
+        </button>
         <h2>{name}</h2>
         <span className={`save-state${changed.length ? " dirty" : ""}`} role="status">
           {saving ? "Saving…" : changed.length ? `Unsaved changes in ${changed.join(", ")}` : "All changes saved"}
@@ -763,6 +707,11 @@ export function WorkspaceView() {
         >
           Save
         </button>
+        {undo ? (
+          <button type="button" onClick={() => workspaceStore.getState().undoOperation()}>
+            Undo {undo.label}
+          </button>
+        ) : null}
         {restoredAt ? (
           <span className="restored">
             Restored unsaved changes from {formatTime(restoredAt)}.{" "}
@@ -779,12 +728,15 @@ export function WorkspaceView() {
         {name ? (
           <ExportMenu
             project={name}
-            pou={active && !isTestPath(active) && !isShellTab(active) ? active : null}
+            pou={active && !isTestPath(active) && !isShellTab(active) && !isProjectPart(active) ? active : null}
             unsaved={changed.length > 0}
           />
         ) : null}
         <button type="button" aria-expanded={help} onClick={() => setHelp((h) => !h)}>
           Keyboard shortcuts
+        </button>
+        <button type="button" className="panel-toggle" aria-pressed={!panelsHidden} onClick={togglePanels}>
+          {panelsHidden ? "Show panels" : "Hide panels"}
         </button>
         {help ? <ShortcutHelp scopes={["app", "ld", "fbd", "st"]} onClose={() => setHelp(false)} /> : null}
         <ImportPlcopen
@@ -795,13 +747,15 @@ export function WorkspaceView() {
       <ViewBoundary name="The simulation toolbar" gridArea="sim">
         <SimulationBar />
       </ViewBoundary>
-      <ViewBoundary name="The project tree" gridArea="tree">
-        <ProjectTree />
-      </ViewBoundary>
+      {treeHidden ? null : (
+        <ViewBoundary name="The project tree" gridArea="tree">
+          <ProjectTree />
+        </ViewBoundary>
+      )}
       <div className="editor-area">
         <HistoryBanner />
         <ViewBoundary name="The debugging bar">
-          <DebugBar networksOf={networksOf} reveal={revealPlace} />
+          <DebugBar networksOf={networksOf} elementText={elementText} reveal={revealPlace} />
         </ViewBoundary>
         <ViewBoundary name="The tabs">
           <Tabs />
@@ -809,8 +763,12 @@ export function WorkspaceView() {
         {active ? (
           isShellTab(active) ? (
             <ShellTab tab={active} />
+          ) : isProjectPart(active) ? (
+            <ProjectPartView key={active} part={active} />
           ) : isTestPath(active) ? (
-            <TestFileView key={active} path={active} />
+            <Suspense fallback={LOADING}>
+              <TestFileView key={active} path={active} />
+            </Suspense>
           ) : (
             <PouView key={active} name={active} />
           )
@@ -818,9 +776,11 @@ export function WorkspaceView() {
           <p className="placeholder">Open a POU from the project tree.</p>
         )}
       </div>
-      <ViewBoundary name="The panels" gridArea="panels">
-        <BottomPanels onReveal={reveal} pathOfOperand={pathOfOperand} />
-      </ViewBoundary>
+      {panelsHidden ? null : (
+        <ViewBoundary name="The panels" gridArea="panels">
+          <BottomPanels onReveal={reveal} pathOfOperand={pathOfOperand} />
+        </ViewBoundary>
+      )}
       <ViewBoundary name="The save conflict dialog">
         <ConflictDialog />
       </ViewBoundary>

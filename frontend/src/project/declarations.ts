@@ -1,12 +1,18 @@
-// Adding a variable to a POU's declaration text (the "declare variable" offer of the LD editor).
-// The text stays as the user typed it: one line goes into the first plain VAR block, or a new
-// VAR block is appended; the backend's checker reads the result like any other declaration.
+// Adding a variable to a POU's declaration text (the "declare variable" offer of the LD and FBD editors).
+// One line goes into the first plain VAR block, or a new VAR block is appended; then the declarations
+// are aligned in columns like the table prints them, when the table can read them (otherwise the text
+// stays as the user typed it). The backend's checker reads the result like any other declaration.
+import { alignDeclarations } from "../declarations/model";
 
 const VAR_LINE = /^[ \t]*VAR[ \t]*(\(\*.*\*\))?[ \t]*$/i;
 const END_VAR_LINE = /^[ \t]*END_VAR\b/i;
 
 /** `declarations` with `name : type;` added to its first plain VAR block (or a new one). */
 export function addDeclaration(declarations: string, name: string, type: string): string {
+  return alignDeclarations(inserted(declarations, name, type));
+}
+
+function inserted(declarations: string, name: string, type: string): string {
   const lines = declarations.split("\n");
   const start = lines.findIndex((line) => VAR_LINE.test(line));
   if (start >= 0) {

@@ -1,6 +1,6 @@
 // Unsaved changes survive a page reload: the working copy of a project is kept in localStorage,
 // with the revision it is based on, until a save succeeds or the user discards it.
-import type { Project } from "../generated/project";
+import type { Project } from "../generated/api";
 
 export interface Draft {
   /** The revision the changes are based on; a save names it in If-Match. */

@@ -1,7 +1,7 @@
 import { describe, expect, it, vi } from "vitest";
 import type { ProjectApi } from "../api/client";
 import type { SimulationInfo } from "../generated/api";
-import type { Project } from "../generated/project";
+import type { Project } from "../generated/api";
 import { motorMain } from "../ld/fixtures";
 import type { SimulationApi } from "../online/api";
 import { createOnlineStore, type SocketLike } from "../online/store";

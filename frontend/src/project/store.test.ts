@@ -1,7 +1,7 @@
 import { describe, expect, it, vi } from "vitest";
 import { SaveConflictError, type ProjectApi } from "../api/client";
 import type { ProjectDocument } from "../generated/api";
-import type { Project } from "../generated/project";
+import type { Project } from "../generated/api";
 import { motorMain } from "../ld/fixtures";
 import { record } from "../ld/history";
 import { deleteElements } from "../ld/ops";
@@ -186,5 +186,28 @@ describe("workspace store", () => {
     storage.setItem("ladderlab:draft:demo", "{not json");
     expect(loadDraft("demo", storage)).toBeNull();
     expect(loadDraft("other", storage)?.base_revision).toBe("r1");
+  });
+});
+
+describe("project operations", () => {
+  it("applies a new working copy as one step, following renamed and closed tabs, and undoes it", async () => {
+    const { store, storage } = await opened();
+    store.getState().openPou("Main");
+    store.getState().openPou("Util");
+    const before = store.getState().project!;
+    const renamed: Project = {
+      ...before,
+      pous: before.pous!.map((p) => (p.name === "Main" ? { ...p, name: "Plant" } : p)),
+    };
+    store.getState().applyOperation("rename Main to Plant", renamed, ["Plant"], { renamed: { Main: "Plant" } });
+    expect(store.getState()).toMatchObject({ tabs: ["Plant", "Util"], active: "Util", changed: ["Plant"] });
+    expect(store.getState().histories.Plant?.present).toEqual(motorMain);
+    expect(loadDraft("demo", storage)?.project.pous?.[0]?.name).toBe("Plant");
+    const deleted: Project = { ...renamed, pous: renamed.pous!.filter((p) => p.name !== "Util") };
+    store.getState().applyOperation("delete Util", deleted, ["Util"], { closed: ["Util"] });
+    expect(store.getState()).toMatchObject({ tabs: ["Plant"], active: "Plant", changed: ["Plant", "Util"] });
+    store.getState().undoOperation();
+    expect(store.getState()).toMatchObject({ tabs: ["Plant", "Util"], active: "Util", changed: ["Plant"], undo: null });
+    expect(store.getState().project).toEqual(renamed);
   });
 });

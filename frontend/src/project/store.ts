@@ -5,10 +5,11 @@ import { useStore } from "zustand";
 import { createStore, type StoreApi } from "zustand/vanilla";
 import { ApiError, projectApi, SaveConflictError, type ProjectApi } from "../api/client";
 import type { ConflictDetail, Diagnostic, LibraryEntry, SymbolInfo, SymbolTable } from "../generated/api";
-import type { FbdBody, LdBody, Pou, Project, TestFile } from "../generated/project";
+import type { FbdBody, LdBody, Pou, Project, SfcBody, Task, TestFile } from "../generated/api";
 import { historyOf, type History } from "../ld/history";
 import type { VariableDeclaration } from "../ld/editor/declare";
 import { addDeclaration } from "./declarations";
+import { isProjectPart } from "./parts";
 import { loadDraft, removeDraft, saveDraft } from "./drafts";
 
 export interface WorkspaceData {
@@ -27,6 +28,7 @@ export interface WorkspaceData {
   active: string | null;
   histories: Record<string, History<LdBody>>;
   fbdHistories: Record<string, History<FbdBody>>;
+  sfcHistories: Record<string, History<SfcBody>>;
   library: LibraryEntry[];
   symbols: Record<string, SymbolTable>;
   /** POUs the saved project has (the server knows symbols only of those), upper case. */
@@ -34,6 +36,23 @@ export interface WorkspaceData {
   saving: boolean;
   saveError: string | null;
   conflict: ConflictDetail | null;
+  /** The working copy before the last project operation (rename, delete, ...): one step back. */
+  undo: ProjectUndo | null;
+}
+
+/** What undoing a project operation restores. */
+export interface ProjectUndo {
+  label: string;
+  project: Project;
+  changed: string[];
+  tabs: string[];
+  active: string | null;
+}
+
+/** A project operation's effect on the open tabs: tabs renamed (old -> new name) and tabs closed. */
+export interface TabChanges {
+  renamed?: Record<string, string>;
+  closed?: string[];
 }
 
 export interface WorkspaceActions {
@@ -42,6 +61,7 @@ export interface WorkspaceActions {
   closeTab(pou: string): void;
   setLdHistory(pou: string, history: History<LdBody>): void;
   setFbdHistory(pou: string, history: History<FbdBody>): void;
+  setSfcHistory(pou: string, history: History<SfcBody>): void;
   declare(pou: string, declaration: VariableDeclaration): void;
   /** Replaces the declaration text of a POU (the declarations table and text view). */
   setDeclarations(pou: string, text: string): void;
@@ -53,6 +73,10 @@ export interface WorkspaceActions {
   openTab(key: string): void;
   /** Adds a new, empty POU to the working copy and opens it; an error message when the name is refused. */
   addPou(name: string, kind: Pou["kind"], language: Pou["language"]): string | null;
+  /** The new VAR_GLOBAL text, TYPE text or task list of the project (each marks its part unsaved). */
+  setGlobals(text: string): void;
+  setTypes(text: string): void;
+  setTasks(tasks: Task[]): void;
   /** The new text of a test file (by path, tests/<name>.st). */
   setTestText(path: string, text: string): void;
   /** Adds a test file with a first test to the working copy and opens it; an error message when refused. */
@@ -64,6 +88,11 @@ export interface WorkspaceActions {
   dismissConflict(): void;
   /** Fetches a POU's symbols and the library again (a view of it is reloaded after a failure). */
   refreshPou(pou: string): void;
+  /** Replaces the working copy by `next` as one undoable step named `label` (rename, delete, ...);
+   * `changed` are the items it marks unsaved. */
+  applyOperation(label: string, next: Project, changed: string[], tabs?: TabChanges): void;
+  /** Takes the last project operation back. */
+  undoOperation(): void;
 }
 
 export type WorkspaceState = WorkspaceData & WorkspaceActions;
@@ -81,13 +110,18 @@ export const emptyWorkspace: WorkspaceData = {
   active: null,
   histories: {},
   fbdHistories: {},
+  sfcHistories: {},
   library: [],
   symbols: {},
   savedPous: [],
   saving: false,
   saveError: null,
   conflict: null,
+  undo: null,
 };
+
+/** The declarations a new (or re-kinded empty) POU starts with. */
+export const emptyDeclarations = (kind: Pou["kind"]) => (kind === "function" ? "VAR_INPUT\nEND_VAR" : "VAR\nEND_VAR");
 
 const IDENTIFIER = /^[A-Za-z_][A-Za-z0-9_]{0,63}$/;
 const message = (err: unknown) => (err instanceof Error ? err.message : String(err));
@@ -108,10 +142,27 @@ export const NEW_TEST_TEXT = `TEST 'first test'
   ASSERT_TRUE(TRUE, 'replace with what the program must do');
 END_TEST
 `;
+/** What a new SFC POU starts with: the initial step, a transition and the jump back (as CODESYS does). */
+const sfcStart = (): SfcBody => ({
+  chart: {
+    elements: [
+      { type: "step", id: "s1", name: "Init", actions: [] },
+      { type: "transition", id: "t1", condition: "FALSE" },
+      { type: "jump", id: "j1", target: "Init" },
+    ],
+  },
+  actions: [],
+  transitions: [],
+});
+
 const isDiagramBody = (body: Pou["body"]): body is LdBody | FbdBody =>
   typeof body === "object" && body !== null && "networks" in body;
 export const ldBodyOf = (pou: Pou): LdBody => (isDiagramBody(pou.body) ? (pou.body as LdBody) : { networks: [] });
 export const fbdBodyOf = (pou: Pou): FbdBody => (isDiagramBody(pou.body) ? (pou.body as FbdBody) : { networks: [] });
+export const sfcBodyOf = (pou: Pou): SfcBody =>
+  typeof pou.body === "object" && pou.body !== null && "chart" in pou.body
+    ? (pou.body as SfcBody)
+    : { chart: { elements: [] } };
 
 /** A symbol known by name and type only (a variable just declared, a path to suggest). */
 export const plainSymbol = (name: string, type: string): SymbolInfo => ({
@@ -139,6 +190,18 @@ export const diagramDiagnostics = (
     (d) => d.network,
   );
 
+/** Tabs with fresh diagram histories from `project` (a project operation may have changed any body). */
+function diagramHistories(project: Project, tabs: string[], active: string | null): Partial<WorkspaceData> {
+  const histories: Record<string, History<LdBody>> = {};
+  const fbdHistories: Record<string, History<FbdBody>> = {};
+  for (const tab of tabs) {
+    const pou = pouOf(project, tab);
+    if (pou?.language === "ld") histories[tab] = historyOf(ldBodyOf(pou));
+    if (pou?.language === "fbd") fbdHistories[tab] = historyOf(fbdBodyOf(pou));
+  }
+  return { tabs, active, histories, fbdHistories };
+}
+
 export function createWorkspaceStore(
   api: ProjectApi = projectApi,
   storage: Storage = localStorage,
@@ -155,8 +218,11 @@ export function createWorkspaceStore(
     const replaceProject = (item: string, update: (project: Project) => Project) => {
       const { project, changed } = get();
       if (!project) return;
-      const next: Project = update(project);
-      const nextChanged = changed.includes(item) ? changed : [...changed, item];
+      commit(update(project), changed.includes(item) ? changed : [...changed, item]);
+    };
+
+    /** The new working copy and its unsaved items, kept as a draft. */
+    const commit = (next: Project, nextChanged: string[]) => {
       set({ project: next, changed: nextChanged });
       const { revision, modified } = get();
       saveDraft(
@@ -225,6 +291,10 @@ export function createWorkspaceStore(
 
       openPou(pou) {
         const { tabs, project, histories } = get();
+        if (isProjectPart(pou)) {
+          set({ active: pou, tabs: tabs.includes(pou) ? tabs : [...tabs, pou] });
+          return;
+        }
         if (isTestPath(pou)) {
           if (testOf(project, pou)) set({ active: pou, tabs: tabs.includes(pou) ? tabs : [...tabs, pou] });
           return;
@@ -236,6 +306,8 @@ export function createWorkspaceStore(
           patch.histories = { ...histories, [pou]: historyOf(ldBodyOf(found)) };
         if (found.language === "fbd" && !get().fbdHistories[pou])
           patch.fbdHistories = { ...get().fbdHistories, [pou]: historyOf(fbdBodyOf(found)) };
+        if (found.language === "sfc" && !get().sfcHistories[pou])
+          patch.sfcHistories = { ...get().sfcHistories, [pou]: historyOf(sfcBodyOf(found)) };
         set(patch);
         if (!get().symbols[pou]) loadSymbols(pou);
       },
@@ -261,6 +333,11 @@ export function createWorkspaceStore(
 
       setFbdHistory(pou, history) {
         set({ fbdHistories: { ...get().fbdHistories, [pou]: history } });
+        replacePou(pou, (p) => ({ ...p, body: history.present }));
+      },
+
+      setSfcHistory(pou, history) {
+        set({ sfcHistories: { ...get().sfcHistories, [pou]: history } });
         replacePou(pou, (p) => ({ ...p, body: history.present }));
       },
 
@@ -291,13 +368,25 @@ export function createWorkspaceStore(
           name,
           kind,
           language,
-          declarations: kind === "function" ? "VAR_INPUT\nEND_VAR" : "VAR\nEND_VAR",
-          body: language === "st" ? "" : { networks: [] },
+          declarations: emptyDeclarations(kind),
+          body: language === "st" || language === "il" ? "" : language === "sfc" ? sfcStart() : { networks: [] },
           ...(kind === "function" ? { return_type: "BOOL" } : {}),
         };
         replacePous(name, (pous) => [...pous, pou]);
         get().openPou(name);
         return null;
+      },
+
+      setGlobals(text) {
+        if (get().project?.globals !== text) replaceProject("Global variables", (p) => ({ ...p, globals: text }));
+      },
+
+      setTypes(text) {
+        if (get().project?.types !== text) replaceProject("Types", (p) => ({ ...p, types: text }));
+      },
+
+      setTasks(tasks) {
+        replaceProject("Tasks", (p) => ({ ...p, tasks }));
       },
 
       setTestText(path, text) {
@@ -354,6 +443,24 @@ export function createWorkspaceStore(
       },
 
       dismissConflict: () => set({ conflict: null }),
+
+      applyOperation(label, next, items, tabChanges = {}) {
+        const { project, changed, tabs, active } = get();
+        if (!project) return;
+        const renamed = tabChanges.renamed ?? {};
+        const closed = new Set(tabChanges.closed ?? []);
+        const nextTabs = tabs.filter((t) => !closed.has(t)).map((t) => renamed[t] ?? t);
+        const nextActive = active && !closed.has(active) ? (renamed[active] ?? active) : (nextTabs[0] ?? null);
+        set({ undo: { label, project, changed, tabs, active }, ...diagramHistories(next, nextTabs, nextActive) });
+        commit(next, [...new Set([...changed.map((c) => renamed[c] ?? c), ...items])]);
+      },
+
+      undoOperation() {
+        const { undo } = get();
+        if (!undo) return;
+        set({ undo: null, ...diagramHistories(undo.project, undo.tabs, undo.active) });
+        commit(undo.project, undo.changed);
+      },
 
       refreshPou(pou) {
         const { name } = get();

@@ -4,7 +4,7 @@
 import { useEffect } from "react";
 import { debugStore } from "../debug/store";
 import { commandsFor, RESERVED_KEYS, type CommandOf } from "../keys/keymap";
-import { checkSaved, compileSaved } from "../online/SimulationBar";
+import { checkWorkingCopy, compileSaved } from "../online/SimulationBar";
 import { onlineStore } from "../online/store";
 import { workspaceStore } from "./store";
 
@@ -18,7 +18,7 @@ export function appKeyActions(): Record<CommandOf<"app">, () => boolean> {
   };
   return {
     save: () => when(workspaceStore.getState().name !== null, () => workspaceStore.getState().save()),
-    check: () => when(true, checkSaved),
+    check: () => when(true, checkWorkingCopy),
     "go-online": () => when(true, compileSaved),
     "go-offline": () => when(online().phase !== "offline", online().goOffline),
     run: () => when(connected(), online().monitor.state === "halted" ? debugStore.getState().resume : online().run),
@@ -30,6 +30,7 @@ export function appKeyActions(): Record<CommandOf<"app">, () => boolean> {
     "step-over": () => when(connected(), () => debugStore.getState().step("over")),
     "step-into": () => when(connected(), () => debugStore.getState().step("statement")),
     "step-out": () => when(connected(), () => debugStore.getState().step("out")),
+    "step-transition": () => when(connected(), () => debugStore.getState().step("transition")),
   };
 }
 

@@ -1,13 +1,12 @@
 // What an LD or FBD POU's editor takes from the workspace and the panels: the library, the POU's
-// symbols, its diagnostics (symbols table and the last Check, those naming a network), the place a
+// symbols, its diagnostics (symbols table and the live check of the working copy, those naming a network), the place a
 // clicked diagnostic asks to reveal, and declaring a variable typed but not declared.
 import { useMemo } from "react";
 import type { Diagnostic, LibraryEntry, SymbolInfo } from "../generated/api";
 import type { VariableDeclaration } from "../ld/editor/declare";
 import { usePanels, type Focus } from "../panels/store";
+import { useLiveCheck } from "../st/useLiveCheck";
 import { diagramDiagnostics, symbolsOf, useWorkspace } from "./store";
-
-const NO_DIAGNOSTICS: Diagnostic[] = [];
 
 export interface DiagramPou {
   library: LibraryEntry[];
@@ -23,10 +22,12 @@ export function useDiagramPou(name: string): DiagramPou {
   const library = useWorkspace((s) => s.library);
   const table = useWorkspace((s) => s.symbols[name]);
   const declareIn = useWorkspace((s) => s.declare);
-  const checked = usePanels((s) => s.diagnostics) ?? NO_DIAGNOSTICS;
+  const project = useWorkspace((s) => s.project);
+  // The working copy is checked as it is edited (debounced): its problems show on the elements at once.
+  const live = useLiveCheck(project);
   const focus = usePanels((s) => (s.focus?.pou.toUpperCase() === name.toUpperCase() ? s.focus : null));
   const symbols = useMemo(() => symbolsOf(table), [table]);
-  const diagnostics = useMemo(() => diagramDiagnostics(table, checked, name), [table, checked, name]);
+  const diagnostics = useMemo(() => diagramDiagnostics(table, live, name), [table, live, name]);
   return {
     library,
     symbols,

@@ -3,7 +3,7 @@ import { EditorView } from "@codemirror/view";
 import { act, fireEvent, render, renderHook } from "@testing-library/react";
 import { afterEach, describe, expect, it, vi } from "vitest";
 import type { CheckReport, Diagnostic } from "../generated/api";
-import type { Project } from "../generated/project";
+import type { Project } from "../generated/api";
 import { StEditor } from "./StEditor";
 import { CHECK_DELAY_MS, useLiveCheck } from "./useLiveCheck";
 

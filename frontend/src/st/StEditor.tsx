@@ -23,6 +23,7 @@ import { setBreakpointLines, setHaltedLine, stDebugging } from "./breakpoints";
 import { stCompletionSource, type StCompletions } from "./completion";
 import { setCoverageLines, stCoverage } from "./coverage";
 import { setInlineMarks, stInlineValues, type InlineMark, type StOnlineView } from "./inlineValues";
+import { ilLanguage } from "./ilLanguage";
 import { stLanguage } from "./language";
 import { stKeys } from "./keys";
 import { lintDiagnostics } from "./lint";
@@ -45,6 +46,8 @@ export interface StEditorProps {
   coverage?: readonly number[];
   /** A line to show and put the cursor on (a test failure or diagnostic was clicked); `seq` repeats a jump. */
   focusLine?: { line: number; seq: number } | null;
+  /** The text's language: ST (default) or an IL body (docs/il.md). */
+  language?: "st" | "il";
 }
 
 const NO_MARKS: readonly InlineMark[] = [];
@@ -62,6 +65,7 @@ export function StEditor({
   online,
   coverage = NO_LINES,
   focusLine,
+  language = "st",
 }: StEditorProps) {
   const host = useRef<HTMLDivElement>(null);
   const view = useRef<EditorView | null>(null);
@@ -72,10 +76,10 @@ export function StEditor({
   });
   const editable = useRef(new Compartment());
   /** The props the view is created with; later ones arrive through the effects below. */
-  const initial = useRef({ text, debugging: debug !== undefined, readOnly, label });
+  const initial = useRef({ text, debugging: debug !== undefined, readOnly, label, language });
 
   useEffect(() => {
-    const { text, debugging, readOnly, label } = initial.current;
+    const { text, debugging, readOnly, label, language } = initial.current;
     const v = new EditorView({
       parent: host.current!,
       state: EditorState.create({
@@ -87,8 +91,7 @@ export function StEditor({
           indentOnInput(),
           bracketMatching(),
           closeBrackets(),
-          stLanguage,
-          stBlocks,
+          language === "il" ? ilLanguage : [stLanguage, stBlocks],
           codeFolding(),
           foldGutter(),
           syntaxHighlighting(defaultHighlightStyle),

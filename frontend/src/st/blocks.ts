@@ -6,7 +6,7 @@ import { StateField, type EditorState, type Extension } from "@codemirror/state"
 import { Decoration, EditorView, type DecorationSet } from "@codemirror/view";
 import { tokenize } from "./language";
 
-/** Opening keyword -> the keyword that closes it (the blocks a project's ST texts hold; all are ST_KEYWORDS). */
+/** Opening keyword -> the keyword that closes it (the blocks a project's ST texts hold; all are keywords). */
 const CLOSER: Readonly<Record<string, string>> = {
   IF: "END_IF",
   CASE: "END_CASE",

@@ -2,8 +2,10 @@
 // and user functions and FB types (from /api/library). Calls insert a formal-parameter template
 // (`TON1(IN := , PT := , Q => , ET => );`); an FB instance variable offers the call of its type.
 // After `inst.` or `s.` it offers the members of that variable's type (FB pins, struct fields).
+// Keywords and elementary types come last, from the backend's vocabulary (iec/vocabulary.ts).
 import type { Completion, CompletionContext, CompletionResult } from "@codemirror/autocomplete";
 import type { LibraryEntry, SymbolInfo } from "../generated/api";
+import { ALIASES, DECLARABLE_TYPES, KEYWORDS } from "../iec/vocabulary";
 import { membersOf, typeOfChain, type Scope } from "./members";
 
 /** The formal call of `entry` by `callee` (a function name or an FB instance). */
@@ -53,8 +55,19 @@ export function stCompletions(symbols: SymbolInfo[], library: LibraryEntry[]): C
   const fbTypes = library
     .filter((e) => e.kind === "function_block")
     .map((e): Completion => ({ label: e.name, type: "class", detail: "function block", info: e.comment ?? undefined }));
-  return [...variables, ...functions, ...fbTypes];
+  return [...variables, ...functions, ...fbTypes, ...LANGUAGE_WORDS];
 }
+
+/** The grammar's keywords and the elementary type names, ranked below the POU's own names. */
+const LANGUAGE_WORDS: readonly Completion[] = [
+  ...[...KEYWORDS].map((word): Completion => ({ label: word, type: "keyword", boost: -50 })),
+  ...[...DECLARABLE_TYPES, ...Object.keys(ALIASES)].map((name): Completion => ({
+    label: name,
+    type: "type",
+    detail: ALIASES[name] ?? "elementary type",
+    boost: -40,
+  })),
+];
 
 /** The members offered after `chain.` (e.g. ["Timer"] -> IN, PT, Q, ET); null when the chain has no members. */
 export function memberCompletions(chain: readonly string[], scope: Scope): Completion[] | null {
@@ -90,6 +103,9 @@ export function stCompletionSource(completions: () => StCompletions) {
     }
     const word = context.matchBefore(/[A-Za-z_][A-Za-z0-9_]*/);
     if (!word && !context.explicit) return null;
-    return { from: word ? word.from : context.pos, options: completions().options, validFor: /^[A-Za-z0-9_]*$/ };
+    // A keyword or type typed out in full is not offered again, so Enter after `THEN` starts a new line.
+    const typed = word?.text.toUpperCase();
+    const options = completions().options.filter((o) => !(LANGUAGE_WORDS.includes(o) && o.label === typed));
+    return { from: word ? word.from : context.pos, options, validFor: /^[A-Za-z0-9_]*$/ };
   };
 }

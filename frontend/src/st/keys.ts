@@ -1,6 +1,7 @@
 // The ST editor's keys (scope "st" of src/keys/keymap.ts) as a CodeMirror keymap: what each command
 // of the table runs. They take precedence over CodeMirror's standard keymaps (which stay for plain
 // text editing: arrows, Home/End, selection).
+import { findReferencesAtCursor } from "../xref/stReferences";
 import { startCompletion } from "@codemirror/autocomplete";
 import { indentLess, indentMore, redo, undo } from "@codemirror/commands";
 import { foldCode, unfoldCode } from "@codemirror/language";
@@ -22,6 +23,7 @@ export function stKeys(toggleBreakpoint: ((line: number) => void) | null): KeyBi
     unfold: unfoldCode,
     indent: indentMore,
     unindent: indentLess,
+    "find-references": findReferencesAtCursor,
   };
   return KEYMAP.filter((b) => b.scope === "st").flatMap((b) =>
     codeMirrorKeys(b.keys).map((key) => ({ key, run: commands[b.command as CommandOf<"st">], preventDefault: true })),

@@ -2,21 +2,11 @@
 // ((* *), /* */ and //, block comments span lines), pragmas ({...}), strings, typed and time
 // literals (16#FF, T#5s, INT#3), numbers, keywords, elementary/standard FB types, operators.
 // The token names are CodeMirror's standard tags, so the default highlight style colours them.
+// Keywords and type names are the backend's (iec/vocabulary.ts).
 import { StreamLanguage, StringStream, type StreamParser } from "@codemirror/language";
+import { KEYWORDS, TYPE_WORDS } from "../iec/vocabulary";
 
-const words = (text: string) => new Set(text.split(/\s+/));
-
-export const ST_KEYWORDS = words(
-  "PROGRAM END_PROGRAM FUNCTION END_FUNCTION FUNCTION_BLOCK END_FUNCTION_BLOCK VAR VAR_INPUT VAR_OUTPUT VAR_IN_OUT " +
-    "VAR_TEMP VAR_GLOBAL VAR_EXTERNAL END_VAR CONSTANT RETAIN NON_RETAIN AT IF THEN ELSIF ELSE END_IF CASE OF END_CASE " +
-    "FOR TO BY DO END_FOR WHILE END_WHILE REPEAT UNTIL END_REPEAT EXIT CONTINUE RETURN AND OR XOR NOT MOD TYPE END_TYPE " +
-    "STRUCT END_STRUCT ARRAY REF_TO",
-);
-export const ST_TYPES = words(
-  "BOOL SINT INT DINT LINT USINT UINT UDINT ULINT BYTE WORD DWORD LWORD REAL LREAL TIME LTIME DATE TIME_OF_DAY TOD " +
-    "DATE_AND_TIME DT STRING WSTRING CHAR WCHAR TON TOF TP CTU CTD CTUD R_TRIG F_TRIG SR RS",
-);
-const ATOMS = words("TRUE FALSE");
+const ATOMS = new Set(["TRUE", "FALSE"]);
 
 /** Inside a block comment or a pragma that continues on the next line. */
 export interface StState {
@@ -69,8 +59,8 @@ export const stParser: StreamParser<StState> = {
     if (word) {
       const upper = word[0].toUpperCase();
       if (ATOMS.has(upper)) return "atom";
-      if (ST_KEYWORDS.has(upper)) return "keyword";
-      if (ST_TYPES.has(upper)) return "typeName";
+      if (KEYWORDS.has(upper)) return "keyword";
+      if (TYPE_WORDS.has(upper)) return "typeName";
       return "variableName";
     }
     if (stream.match(/^(:=|=>|<=|>=|<>|\*\*|[-+*/=<>&^])/)) return "operator";

@@ -4,7 +4,7 @@
 // copy's function blocks in their current form; the STRUCT types.
 import { parseDeclarations } from "../declarations/model";
 import type { LibraryEntry, SymbolInfo, SymbolTable } from "../generated/api";
-import type { Pou } from "../generated/project";
+import type { Pou } from "../generated/api";
 import { structTypes, type Scope } from "./members";
 
 /** The POU's own symbols from its declaration text, or null when the text does not read as a table. */

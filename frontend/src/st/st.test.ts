@@ -138,7 +138,8 @@ describe("ST autocomplete (issue 9: variables, standard functions with a formal 
 
   it("offers variables (an FB instance inserts its call), functions and FB types", () => {
     const options = stCompletions([symbol("Start", "BOOL"), symbol("TON1", "ton")], [TON, LIMIT]);
-    expect(options.map((o) => [o.label, o.type, o.detail, o.apply ?? null])).toEqual([
+    const own = options.filter((o) => o.type !== "keyword" && o.type !== "type");
+    expect(own.map((o) => [o.label, o.type, o.detail, o.apply ?? null])).toEqual([
       ["Start", "variable", "BOOL", null],
       ["TON1", "variable", "ton", "TON1(IN := , PT := , Q => , ET => );"],
       [
@@ -149,6 +150,11 @@ describe("ST autocomplete (issue 9: variables, standard functions with a formal 
       ],
       ["TON", "class", "function block", null],
     ]);
+    // Then the backend's keywords and types (issue 22 item 3): none the checker would reject.
+    const words = options.filter((o) => !own.includes(o)).map((o) => o.label);
+    expect(words).toEqual(expect.arrayContaining(["IF", "END_IF", "VAR_INPUT", "WSTRING", "TOD", "LREAL"]));
+    expect(words.filter((w) => ["CHAR", "WCHAR", "LTIME", "CONTINUE"].includes(w))).toEqual([]);
+    expect(options.slice(0, own.length)).toEqual(own); // the POU's own names first
   });
 
   it("completes the word before the cursor, and nothing after a space unless asked", () => {
@@ -159,8 +165,15 @@ describe("ST autocomplete (issue 9: variables, standard functions with a formal 
     const at = (doc: string, explicit = false) =>
       source(new CompletionContext(EditorState.create({ doc }), doc.length, explicit));
     expect(at("x := St")?.from).toBe(5);
-    expect(at("x := St")?.options.map((o) => o.label)).toEqual(["Start", "TON"]);
+    expect(
+      at("x := St")
+        ?.options.filter((o) => o.type !== "keyword" && o.type !== "type")
+        .map((o) => o.label),
+    ).toEqual(["Start", "TON"]);
     expect(at("x := ")).toBeNull();
+    // A keyword typed out in full is not offered (Enter then starts a new line); its prefix is.
+    expect(at("IF x then")?.options.map((o) => o.label)).not.toContain("THEN");
+    expect(at("IF x the")?.options.map((o) => o.label)).toContain("THEN");
     expect(at("x := ", true)?.from).toBe(5);
   });
 });

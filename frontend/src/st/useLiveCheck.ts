@@ -3,20 +3,11 @@
 // counts only while the working copy it was computed for is still the current one, so a slow,
 // older check never overwrites a newer one or marks text that has changed since.
 import { useEffect, useState } from "react";
-import { requestJson } from "../api/client";
+import { checkUnsaved } from "../api/client";
 import type { CheckReport, Diagnostic } from "../generated/api";
-import type { Project } from "../generated/project";
+import type { Project } from "../generated/api";
 
 export const CHECK_DELAY_MS = 500;
-
-/** `POST /api/check`: every diagnostic of a project as sent, nothing stored. */
-export function checkUnsaved(project: Project): Promise<CheckReport> {
-  return requestJson<CheckReport>("/api/check", {
-    method: "POST",
-    headers: { "Content-Type": "application/json" },
-    body: JSON.stringify(project),
-  });
-}
 
 export function useLiveCheck(
   project: Project | null,

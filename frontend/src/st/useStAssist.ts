@@ -3,7 +3,7 @@
 // that inline values resolve variables in.
 import { useMemo } from "react";
 import type { Diagnostic } from "../generated/api";
-import type { Pou } from "../generated/project";
+import type { Pou } from "../generated/api";
 import { useWorkspace } from "../project/store";
 import { memberCompletions, stCompletions, type StCompletions } from "./completion";
 import type { Scope } from "./members";

@@ -1,7 +1,7 @@
 import { act, fireEvent, render, renderHook, screen } from "@testing-library/react";
 import { afterEach, describe, expect, it, vi } from "vitest";
 import type { LibraryEntry, SymbolInfo } from "../generated/api";
-import type { Pou } from "../generated/project";
+import type { Pou } from "../generated/api";
 import { emptyMonitor } from "../online/monitor";
 import { offline, onlineStore } from "../online/store";
 import { structTypes, type Scope } from "./members";

@@ -4,7 +4,7 @@
 // double-click (CODESYS) and offers write / force / release from a right click with the LD
 // editor's menu and value prompt. An array element `a[i]` acts on the element `i` names now.
 import { useEffect, useMemo, useState, type ReactNode } from "react";
-import type { Pou } from "../generated/project";
+import type { Pou } from "../generated/api";
 import { ContextMenu } from "../ld/editor/ContextMenu";
 import { OperandValuePrompt } from "../ld/editor/ValuePrompt";
 import { onlineOperandItems, operandCommands } from "../online/operandCommands";

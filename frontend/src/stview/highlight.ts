@@ -1,6 +1,9 @@
 // A small ST tokenizer for read-only highlighting: comments, strings, typed literals (T#5s,
 // 16#FF), numbers, keywords, identifiers and the rest. It never fails: text it does not know is
-// "plain", and the tokens of a line always join back to the line.
+// "plain", and the tokens of a line always join back to the line. Keywords and type names are the
+// backend's (iec/vocabulary.ts).
+
+import { KEYWORDS, TYPE_WORDS as TYPES } from "../iec/vocabulary";
 
 export type TokenKind = "comment" | "string" | "literal" | "number" | "keyword" | "type" | "name" | "plain";
 
@@ -8,20 +11,6 @@ export interface Token {
   kind: TokenKind;
   text: string;
 }
-
-const KEYWORDS = new Set(
-  (
-    "PROGRAM END_PROGRAM FUNCTION END_FUNCTION FUNCTION_BLOCK END_FUNCTION_BLOCK VAR VAR_INPUT VAR_OUTPUT VAR_IN_OUT " +
-    "VAR_TEMP VAR_GLOBAL VAR_EXTERNAL END_VAR CONSTANT RETAIN AT IF THEN ELSIF ELSE END_IF CASE OF END_CASE FOR TO BY DO " +
-    "END_FOR WHILE END_WHILE REPEAT UNTIL END_REPEAT EXIT RETURN AND OR XOR NOT MOD TRUE FALSE TYPE END_TYPE STRUCT END_STRUCT ARRAY"
-  ).split(" "),
-);
-const TYPES = new Set(
-  (
-    "BOOL SINT INT DINT LINT USINT UINT UDINT ULINT BYTE WORD DWORD LWORD REAL LREAL TIME DATE TIME_OF_DAY TOD DATE_AND_TIME DT " +
-    "STRING WSTRING CHAR WCHAR TON TOF TP CTU CTD CTUD R_TRIG F_TRIG SR RS"
-  ).split(" "),
-);
 
 const RULES: [TokenKind, RegExp][] = [
   ["comment", /\(\*[\s\S]*?(\*\)|$)|\/\/.*/y],

@@ -4,7 +4,7 @@
 // a run with coverage tints what no test executed or energised in the LD/FBD/ST editors.
 import { useEffect } from "react";
 import type { Diagnostic, TestFailureInfo, TestResultInfo } from "../generated/api";
-import type { Project } from "../generated/project";
+import type { Project } from "../generated/api";
 import { panelsStore } from "../panels/store";
 import { useWorkspace, workspaceStore } from "../project/store";
 import { CHECK_DELAY_MS } from "../st/useLiveCheck";

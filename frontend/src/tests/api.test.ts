@@ -1,6 +1,7 @@
 // The run stream (issue 20): JSON lines arrive in chunks cut anywhere; each complete line is one event.
 import { afterEach, describe, expect, it, vi } from "vitest";
 import type { TestEvent } from "../generated/api";
+import { stubFetch } from "../test/fetchStub";
 import { runTests } from "./api";
 
 afterEach(() => vi.unstubAllGlobals());
@@ -16,14 +17,13 @@ describe("runTests", () => {
         controller.close();
       },
     });
-    const fetchMock = vi.fn(async () => new Response(body, { status: 200 }));
-    vi.stubGlobal("fetch", fetchMock);
+    const fetched = stubFetch(() => new Response(body, { status: 200 }));
     const events: TestEvent[] = [];
     await runTests({ name: "p" }, { file: "tests/a.st" }, (e) => events.push(e));
     expect(events.map((e) => e.type)).toEqual(["file", "done"]);
-    const [url, init] = fetchMock.mock.calls[0] as unknown as [string, RequestInit];
-    expect(url).toBe("/api/tests/run");
-    expect(JSON.parse(String(init.body))).toEqual({ project: { name: "p" }, file: "tests/a.st" });
+    const [sent] = fetched.sent;
+    expect([sent!.method, sent!.path]).toEqual(["POST", "/api/tests/run"]);
+    expect(JSON.parse(sent!.body)).toEqual({ project: { name: "p" }, file: "tests/a.st" });
   });
 
   it("turns a refused run into an error with the server's message", async () => {

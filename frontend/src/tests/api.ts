@@ -1,32 +1,21 @@
 // REST calls of the Tests panel (docs/testing.md): list, check, run (a stream of JSON lines) and open a
 // failed test's last state online. Every call sends the working copy, so unsaved edits are tested.
-import { errorFromResponse, requestJson } from "../api/client";
-import type { SimulationInfo, TestEvent, TestFileInfo, TestListing } from "../generated/api";
-import type { Project } from "../generated/project";
-
-const post = (body: unknown): RequestInit => ({
-  method: "POST",
-  headers: { "Content-Type": "application/json" },
-  body: JSON.stringify(body),
-});
+import { http, unwrap } from "../api/client";
+import type { Project, SimulationInfo, TestEvent, TestFileInfo, TestListing, TestRunRequest } from "../generated/api";
 
 export function listTests(project: Project): Promise<TestListing> {
-  return requestJson<TestListing>("/api/tests/list", post(project));
+  return unwrap(http.POST("/api/tests/list", { body: project }));
 }
 
 export function checkTestFile(project: Project, file: string): Promise<TestFileInfo> {
-  return requestJson<TestFileInfo>("/api/tests/check", post({ project, file }));
+  return unwrap(http.POST("/api/tests/check", { body: { project, file } }));
 }
 
 export function openFailure(project: Project, file: string, test: string): Promise<SimulationInfo> {
-  return requestJson<SimulationInfo>("/api/tests/open", post({ project, file, test }));
+  return unwrap(http.POST("/api/tests/open", { body: { project, file, test } }));
 }
 
-export interface RunRequest {
-  file?: string | null;
-  test?: string | null;
-  coverage?: boolean;
-}
+export type RunRequest = Omit<TestRunRequest, "project">;
 
 /** Runs tests and hands each event of the stream to `onEvent` as it arrives; resolves when the run ends. */
 export async function runTests(
@@ -35,9 +24,10 @@ export async function runTests(
   onEvent: (event: TestEvent) => void,
   signal?: AbortSignal,
 ): Promise<void> {
-  const response = await fetch("/api/tests/run", { ...post({ project, ...request }), signal });
-  if (!response.ok) throw await errorFromResponse(response);
-  const reader = response.body!.getReader();
+  const stream = await unwrap(
+    http.POST("/api/tests/run", { body: { project, ...request }, parseAs: "stream", ...(signal ? { signal } : {}) }),
+  );
+  const reader = (stream as ReadableStream<Uint8Array>).getReader();
   const decoder = new TextDecoder();
   let pending = "";
   for (;;) {

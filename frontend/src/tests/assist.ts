@@ -5,7 +5,7 @@
 import { useEffect, useMemo, useState } from "react";
 import type { Completion } from "@codemirror/autocomplete";
 import type { Diagnostic, LibraryEntry, SymbolInfo } from "../generated/api";
-import type { Project } from "../generated/project";
+import type { Project } from "../generated/api";
 import { memberCompletions, stCompletions, type StCompletions } from "../st/completion";
 import { structTypes } from "../st/members";
 import { declaredSymbols, workingLibrary } from "../st/scope";

@@ -2,7 +2,7 @@
 // run wins over an older one; coverage comes only from a run that asked for it.
 import { describe, expect, it } from "vitest";
 import type { TestEvent, TestFileInfo, TestResultInfo } from "../generated/api";
-import type { Project } from "../generated/project";
+import type { Project } from "../generated/api";
 import type { RunRequest, TestsApi } from "./api";
 import { coverageLines, coverageMarks, coverageOf } from "./coverage";
 import { createTestsStore, resultKey } from "./store";

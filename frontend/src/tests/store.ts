@@ -4,7 +4,7 @@
 import { useStore } from "zustand";
 import { createStore, type StoreApi } from "zustand/vanilla";
 import type { CoverageInfo, TestFileInfo, TestResultInfo, TestSummary } from "../generated/api";
-import type { Project } from "../generated/project";
+import type { Project } from "../generated/api";
 import { onlineStore } from "../online/store";
 import { testsApi, type RunRequest, type TestsApi } from "./api";
 

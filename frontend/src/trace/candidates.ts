@@ -2,30 +2,10 @@
 // every program (PROGRAM.var), the globals (by name), and the BOOL/numeric inputs and outputs of
 // function block instances (PROGRAM.inst.Q), from the symbols endpoint and the library.
 import type { LibraryEntry, SymbolInfo, SymbolTable } from "../generated/api";
+import { ALIASES, ELEMENTARY } from "../iec/vocabulary";
 
-const TRACEABLE = new Set([
-  "BOOL",
-  "SINT",
-  "INT",
-  "DINT",
-  "LINT",
-  "USINT",
-  "UINT",
-  "UDINT",
-  "ULINT",
-  "BYTE",
-  "WORD",
-  "DWORD",
-  "LWORD",
-  "REAL",
-  "LREAL",
-  "TIME",
-  "DATE",
-  "TIME_OF_DAY",
-  "TOD",
-  "DATE_AND_TIME",
-  "DT",
-]);
+/** Every elementary type but STRING (a trace plots numbers), by any of its names (iec/vocabulary.ts). */
+const TRACEABLE = new Set([...ELEMENTARY, ...Object.keys(ALIASES)].filter((t) => (ALIASES[t] ?? t) !== "STRING"));
 
 export const traceable = (type: string): boolean => TRACEABLE.has(type.trim().toUpperCase());
 

@@ -13,11 +13,13 @@ from __future__ import annotations
 import math
 from functools import lru_cache
 
+from ...ir import nodes as ir
 from ...ir import types as t
+from ...ir.types import describe
 from . import names
 from .context import CodegenError, ModuleContext, std_fb_class, std_pin_type
 from .expressions import literal
-from .typeinfo import describe, scalar_default, store_value
+from .typeinfo import scalar_default, store_value
 
 
 def construct(ty: t.IrType, initial: object, module: ModuleContext) -> str:
@@ -33,6 +35,10 @@ def construct(ty: t.IrType, initial: object, module: ModuleContext) -> str:
         return _with(f"{module.struct_class(ty)}()", overrides)
     if isinstance(ty, t.FbInstance):
         return _instance(ty, initial, module)
+    if isinstance(ty, t.Reference):  # NULL; a REF(x) initial is set after every slot (pou.emit_reference_inits)
+        if initial is not None and not isinstance(initial, ir.ReferenceInit):
+            raise CodegenError("a reference starts as NULL or as REF(...) of a variable")
+        return "None"
     if not isinstance(ty, (t.Elementary, t.Subrange, t.Enum)):
         raise CodegenError(f"unknown type {ty!r}")
     try:

@@ -10,10 +10,12 @@ from ...iec import stdlib as catalogue
 from ...ir import nodes as ir
 from ...ir import types as t
 from ...model.diagnostics import Diagnostic
+from ..process_image import ProcessImage, image_view_name, key_of, located_address, view_kind
 from ..stdlib import STANDARD_FBS
 from . import names
 from .layout import Layout
 from .runtime import UNSET
+from .typeinfo import runtime_name
 
 COMPILE_ERROR = "ENGINE-COMPILE"
 
@@ -28,6 +30,7 @@ def diagnostic(message: str, origin: ir.Origin | None, code: str = COMPILE_ERROR
     return Diagnostic(
         code=code,
         message=message,
+        file=f"{origin.pou}/{origin.body}" if origin.body is not None else None,
         pou=origin.pou,
         line=origin.line,
         column=origin.column,
@@ -98,7 +101,7 @@ class ModuleContext:
     variant: str
     pous: dict[str, ir.Pou] = field(default_factory=dict)
     layouts: dict[str, Layout] = field(default_factory=dict)
-    globals: Layout | None = None
+    globals: Layout = field(init=False)  # set in __post_init__
     structs: dict[t.Struct, str] = field(default_factory=dict)
     bound: dict[str, object] = field(default_factory=dict)
     origins: list[ir.Origin] = field(default_factory=list)
@@ -106,13 +109,54 @@ class ModuleContext:
     origin_statements: dict[int, ir.Stmt] = field(default_factory=dict)
     pauses: list[PausePoint] = field(default_factory=list)
     probe_tables: dict[str, ProbeTable] = field(default_factory=dict)  # upper-case POU name -> its probes
+    instances: list[ir.ProgramInstance] = field(default_factory=list)
+    tasks: list[ir.TaskSpec] = field(default_factory=list)
     diagnostics: list[Diagnostic] = field(default_factory=list)
     _bound_keys: dict[object, str] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         self.pous = {name.upper(): pou for name, pou in self.program.pous.items()}
         self.layouts = {name: Layout(pou.slots) for name, pou in self.pous.items() if pou.kind != "function"}
-        self.globals = Layout(self.program.globals)
+        self.instances = self.program.program_instances()
+        self.tasks = self.program.task_specs()
+        instance_slots = [  # program instances live among the globals, first (docs/runtime.md)
+            ir.Slot(i.name.upper(), "VAR_GLOBAL", t.FbInstance(i.pou.upper()), None, i.retain) for i in self.instances
+        ]
+        self.globals = Layout(instance_slots + self.program.globals)
+
+    @property
+    def located(self) -> list[ir.Slot]:
+        """Every located variable: the globals' (addresses used without a declaration among them), the POUs'."""
+        found = list(self.globals.located.values())
+        for layout in self.layouts.values():
+            found += layout.located.values()
+        return found
+
+    def image_sizes(self) -> dict[str, int]:
+        """Bytes of each process image area: up to the last byte a located variable uses."""
+        sizes: dict[str, int] = {}
+        for slot in self.located:
+            address = located_address(slot.address)
+            sizes[address.area] = max(sizes.get(address.area, 0), address.end)
+        return sizes
+
+    def image_view(self, slot: ir.Slot, world: bool = False) -> tuple[str, int]:
+        """(the name of the view a located slot is read and written through, its key in that view). ``world``:
+        the code stands for the world outside the program (a test's body): what it writes to an input also sets
+        the inputs the next scans read, as a path's write does (ProcessImage.path_buffer)."""
+        address = located_address(slot.address)
+        buffer = ProcessImage.path_buffer(address.area, writing=world)
+        return image_view_name(buffer, view_kind(address, runtime_name(slot.type))), key_of(address)
+
+    @property
+    def world_views(self) -> bool:
+        """Whether some POU stands for the world (a test's body, ``live_clock``): it writes inputs as the world."""
+        return any(p.live_clock for p in self.pous.values())
+
+    def instance(self, name: str) -> ir.ProgramInstance | None:
+        """The program instance called ``name``."""
+        upper = name.upper()
+        return next((i for i in self.instances if i.name.upper() == upper), None)
 
     @property
     def debug(self) -> bool:

@@ -16,12 +16,14 @@ from functools import cache, lru_cache
 from ...iec import values
 from ...ir import nodes as ir
 from ...ir import types as t
+from ...ir.types import describe
 from ..stdlib import specialised
 from . import names
 from .context import CodegenError, std_fb_class, std_pin_type
+from .mentions import var_text
 from .scope import Scope
 from .source import Source
-from .typeinfo import describe, is_composite, runtime_name, store_code, store_value
+from .typeinfo import is_composite, runtime_name, store_code, store_value
 
 _OPERATOR_FUNCTIONS = {
     op: op for op in ("ADD", "SUB", "MUL", "DIV", "MOD", "EXPT", "AND", "OR", "XOR", "EQ", "NE", "LT", "LE", "GT", "GE")
@@ -106,6 +108,10 @@ class Expressions:
         return code
 
     def const(self, c: ir.Const) -> str:
+        if isinstance(c.type, t.Reference):
+            if c.value is not None:
+                raise CodegenError(f"a constant reference {c.value!r}")
+            return "None"  # NULL
         return literal(self.const_value(c))
 
     @staticmethod
@@ -131,6 +137,8 @@ class Expressions:
 
     def binary(self, b: ir.Binary) -> str:
         left, right = self.expr(b.left), self.expr(b.right)
+        if isinstance(b.left.type, t.Reference):  # EQ / NE: one variable referred to (runtime.Ref), or both NULL
+            return f"({left} {'==' if b.op == 'EQ' else '!='} {right})"
         types = (self.scalar(b.left.type, b.op), self.scalar(b.right.type, b.op))
         result = None if b.op in _COMPARISONS else self.scalar(b.type, b.op)
         return self.standard(_OPERATOR_FUNCTIONS[b.op], [left, right], types, result)
@@ -141,6 +149,10 @@ class Expressions:
         args = [self.expr(a) for a in c.args]
         types = tuple([self.scalar(ty, c.function) for ty in c.arg_types])
         return self.standard(c.function, args, types, runtime_name(c.type))
+
+    def address_of(self, a: ir.AddressOf) -> str:
+        """``REF(x)``: a ``runtime.Ref`` to the variable's ``(container, key)``."""
+        return f"ll_Ref(*{self.ref(a.var)}, {a.text!r})"
 
     def convert(self, c: ir.Convert) -> str:
         operand = self.expr(c.operand)
@@ -214,18 +226,23 @@ class Expressions:
     def access(self, v: ir.Var) -> tuple[str, t.IrType]:
         """Source of the variable ``v`` (readable and assignable) and its declared type."""
         code, ty = self.scope.root(v)
-        for selector in v.path:
-            code, ty = self.select(code, ty, selector)
+        for number, selector in enumerate(v.path):
+            if isinstance(selector, ir.Deref):
+                if not isinstance(ty, t.Reference):
+                    raise CodegenError(f"'^' on a {describe(ty)}")
+                code, ty = f"{_dereferenced(code, ir.Var(v.scope, v.name, ty, v.path[:number]))}.v", ty.target
+            else:
+                code, ty = self.select(code, ty, selector)
         return code, ty
 
     def ref(self, v: ir.Var) -> str:
         """Source of a ``(container, key)`` reference to the variable ``v`` (VAR_IN_OUT argument)."""
         if not v.path:
             return self.scope.root_ref(v)
-        code, ty = self.scope.root(v)
-        for selector in v.path[:-1]:
-            code, ty = self.select(code, ty, selector)
+        code, ty = self.access(ir.Var(v.scope, v.name, v.type, v.path[:-1]))
         last = v.path[-1]
+        if isinstance(last, ir.Deref):  # the variable the reference refers to: its own (container, key)
+            return f"{_dereferenced(code, ir.Var(v.scope, v.name, ty, v.path[:-1]))}.pair"
         if isinstance(last, ir.Index):
             container, _ = self.select(code, ty, ir.Index(last.indices[:-1])) if len(last.indices) > 1 else (code, ty)
             array = ty
@@ -297,7 +314,13 @@ _HANDLERS = {
     ir.Unary: Expressions.unary,
     ir.Call: Expressions.call,
     ir.Convert: Expressions.convert,
+    ir.AddressOf: Expressions.address_of,
 }
+
+
+def _dereferenced(code: str, reference: ir.Var) -> str:
+    """``code`` (the reference ``reference``) checked not to be NULL, to be read or assigned through."""
+    return f"ll_deref({code}, {var_text(reference)!r})"
 
 
 @lru_cache(maxsize=1024)  # bounded: a long-running server compiles many projects

@@ -16,13 +16,14 @@ from types import FrameType
 from ...ir import nodes as ir
 from ...ir import types as t
 from ...model.diagnostics import Diagnostic
+from ...model.places import ProjectPlaces
 from ..errors import OUT_OF_MEMORY, WATCHDOG, PlcRuntimeError
 from . import names
 from .context import ModuleContext, std_pin_type
-from .mentions import statement_vars
+from .mentions import statement_vars, var_text
 from .module import Generated
 from .pou import boxed_locals
-from .runtime import WatchdogTimeout
+from .runtime import WatchdogTimeout, reference_text
 from .scope import global_owner
 from .typeinfo import is_composite
 
@@ -51,18 +52,22 @@ class Fault:
     instance: str | None = None
     origin: ir.Origin | None = None
     values: dict[str, object] = field(default_factory=dict)
+    place: str | None = None  # an LD/FBD origin in the user's words: network 2 "Timer", TON T1
 
     def where(self) -> str:
         if self.origin is None:
             return f"POU {self.pou}" if self.pou else "unknown location"
         o = self.origin
         parts = [f"POU {o.pou}"]
+        if o.body is not None:
+            parts.append(o.body.replace("s/", " ", 1))  # actions/Fill -> action Fill
         if o.line is not None:
             parts.append(f"line {o.line}" + (f" column {o.column}" if o.column is not None else ""))
-        if o.network is not None:
-            parts.append(f"network {o.network}")
-        if o.element is not None:
-            parts.append(f"element {o.element}")
+        if self.place is not None:
+            parts.append(self.place)
+        else:
+            parts += [f"network {o.network}"] if o.network is not None else []
+            parts += [f"element {o.element}"] if o.element is not None else []
         return ", ".join(parts)
 
     def text(self) -> str:
@@ -79,6 +84,7 @@ class Fault:
         return Diagnostic(
             code=RUNTIME_FAULT,
             message=self.text(),
+            file=f"{o.pou}/{o.body}" if o.body is not None else None,
             pou=self.pou,
             line=o.line,
             column=o.column,
@@ -86,6 +92,7 @@ class Fault:
             end_column=o.end_column,
             network=o.network,
             element=o.element,
+            place=self.place,
         )
 
 
@@ -99,6 +106,7 @@ def make_fault(
     time_ms: float,
     scan: int,
     instance_path: Callable[[object], str | None],
+    places: ProjectPlaces | None = None,
 ) -> Fault:
     frame, lineno = _deepest_generated_frame(error, filename)
     oid = (
@@ -128,11 +136,17 @@ def make_fault(
                 value = reader.read(var)
             except Exception:
                 continue
-            if not isinstance(value, (list, tuple)) and not hasattr(value, "__slots__"):
+            if isinstance(var.type, t.Reference):
+                values[var_text(var)] = reference_text(value)
+            elif not isinstance(value, (list, tuple)) and not hasattr(value, "__slots__"):
                 values[var_text(var)] = value
         me = frame.f_locals.get("self")
         instance = instance_path(me) if me is not None else None
-    return Fault(kind, code, message, task, time_ms, scan, origin.pou if origin else None, instance, origin, values)
+    place = None
+    if places is not None and origin is not None and origin.network is not None:
+        place = places.where(origin.pou, origin.network, origin.element)
+    pou = origin.pou if origin else None
+    return Fault(kind, code, message, task, time_ms, scan, pou, instance, origin, values, place)
 
 
 def _deepest_generated_frame(error: BaseException, filename: str) -> tuple[FrameType | None, int]:
@@ -143,25 +157,6 @@ def _deepest_generated_frame(error: BaseException, filename: str) -> tuple[Frame
             found = (tb.tb_frame, tb.tb_lineno)
         tb = tb.tb_next
     return found
-
-
-def var_text(var: ir.Var) -> str:
-    """IEC text of an access path, e.g. ``ARR[I]``, ``S.F``, ``T1.Q``."""
-    text = var.name
-    for selector in var.path:
-        if isinstance(selector, ir.Member):
-            text += f".{selector.name}"
-        else:
-            text += "[" + ", ".join(_index_text(i) for i in selector.indices) + "]"
-    return text
-
-
-def _index_text(e: ir.Expr) -> str:
-    if isinstance(e, ir.Var):
-        return var_text(e)
-    if isinstance(e, ir.Const):
-        return repr(e.value)
-    return "..."
 
 
 class _FrameReader:
@@ -185,6 +180,9 @@ class _FrameReader:
                     value = value[i - lo]  # type: ignore[index]
                 rest = ty.dims[len(selector.indices) :]
                 ty = t.Array(ty.element, rest) if rest else ty.element
+            elif isinstance(selector, ir.Deref):
+                assert isinstance(ty, t.Reference) and value is not None  # (a NULL one raises: not shown)
+                value, ty = value.v, ty.target  # type: ignore[attr-defined]  # a runtime.Ref
             else:
                 value, ty = self.member(value, ty, selector.name)
         return value
@@ -198,7 +196,7 @@ class _FrameReader:
 
     def root(self, var: ir.Var) -> tuple[object, t.IrType]:
         if var.scope == "global":
-            place = self.context.globals.get(var.name)  # type: ignore[union-attr]
+            place = self.context.globals.get(var.name)
             return getattr(self.ns[global_owner(place.page)], place.attr), place.slot.type  # type: ignore[union-attr]
         slot = self.slots[var.name.upper()]
         attr, key = names.slot(slot.name), names.escape(slot.name)

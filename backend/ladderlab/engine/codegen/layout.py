@@ -28,7 +28,9 @@ class Layout:
     """The slots of one POU (or of the globals) by upper-case name, with their attribute and page."""
 
     def __init__(self, slots: list[ir.Slot], page_size: int = PAGE_SIZE) -> None:
-        stored = [s for s in slots if s.var_class != "VAR_EXTERNAL"]
+        stored = [s for s in slots if s.var_class != "VAR_EXTERNAL" and s.address is None]
+        #: located variables: no attribute, they live in the process image (engine/process_image.py)
+        self.located: dict[str, ir.Slot] = {s.name.upper(): s for s in slots if s.address is not None}
         self.places: dict[str, Place] = {
             s.name.upper(): Place(s, names.slot(s.name), i // page_size) for i, s in enumerate(stored)
         }

@@ -1,4 +1,5 @@
-"""The variables a statement mentions (its own expressions, not nested statements): shown in fault reports."""
+"""The variables a statement mentions (its own expressions, not nested statements) and their IEC text: shown in
+fault reports."""
 
 from __future__ import annotations
 
@@ -26,6 +27,8 @@ def expression_vars(e: ir.Expr | None) -> Iterator[ir.Var]:
             yield from expression_vars(a)
     elif isinstance(e, ir.Convert):
         yield from expression_vars(e.operand)
+    elif isinstance(e, ir.AddressOf):
+        yield from expression_vars(e.var)
 
 
 def calls_in(e: ir.Expr | None) -> Iterator[ir.Call]:
@@ -44,6 +47,8 @@ def calls_in(e: ir.Expr | None) -> Iterator[ir.Call]:
         yield from calls_in(e.right)
     elif isinstance(e, (ir.Unary, ir.Convert)):
         yield from calls_in(e.operand)
+    elif isinstance(e, ir.AddressOf):
+        yield from calls_in(e.var)
 
 
 def own_expressions(s: ir.Stmt) -> Iterable[ir.Expr | None]:
@@ -98,3 +103,24 @@ def walk(statements: list[ir.Stmt]) -> Iterator[ir.Stmt]:
         if not isinstance(s, _LEAVES):
             for body in nested(s):
                 yield from walk(body)
+
+
+def var_text(var: ir.Var) -> str:
+    """IEC text of an access path, e.g. ``ARR[I]``, ``S.F``, ``T1.Q``."""
+    text = var.name
+    for selector in var.path:
+        if isinstance(selector, ir.Member):
+            text += f".{selector.name}"
+        elif isinstance(selector, ir.Deref):
+            text += "^"
+        else:
+            text += "[" + ", ".join(_index_text(i) for i in selector.indices) + "]"
+    return text
+
+
+def _index_text(e: ir.Expr) -> str:
+    if isinstance(e, ir.Var):
+        return var_text(e)
+    if isinstance(e, ir.Const):
+        return repr(e.value)
+    return "..."

@@ -8,9 +8,10 @@ from ...ir import nodes as ir
 from ...model.diagnostics import Diagnostic
 from .context import CodegenError, ModuleContext, PausePoint, diagnostic
 from .layout import slots_source
-from .pou import emit_function, emit_inits, emit_instance_class, emit_struct
+from .pou import emit_function, emit_inits, emit_instance_class, emit_located_inits, emit_reference_inits, emit_struct
 from .scope import global_owner
 from .source import Source
+from .tasks import emit_tasks
 
 #: fast: no hooks; monitor: probes record power flow; debug: probes and pause points (generators).
 VARIANTS = ("fast", "monitor", "debug")
@@ -51,6 +52,7 @@ def generate(program: ir.Program, variant: str = "fast") -> Generated:
     decls.line("# IEC names appear as v_NAME (variables), P_NAME (POUs), f_NAME (functions), S_NAME (structures);")
     decls.line("# ll_* are engine helpers. Declarations first, then the code of the variant.")
     decls.line()
+    _emit_image(module, decls)
     code.line(f"# ---- {variant} variant: code")
     code.line()
     for pou in module.pous.values():
@@ -63,6 +65,7 @@ def generate(program: ir.Program, variant: str = "fast") -> Generated:
             module.diagnostics.append(diagnostic(str(error), ir.Origin(pou.name)))
     decls.piece()
     _emit_globals(module, decls)
+    emit_tasks(module, code)
     emitted: set[object] = set()  # by structure, not class name: each round emits at least one, so it ends
     while pending := [(struct, cls) for struct, cls in module.structs.items() if struct not in emitted]:
         for struct, cls in pending:  # emitting one may register the structures of its fields
@@ -106,6 +109,7 @@ def _emit_globals(module: ModuleContext, src: Source) -> None:
     for slot in program_globals(module):
         module.visit_type(slot.type)
     target = lambda p: f"{global_owner(p.page)}.{p.attr}"  # noqa: E731
+    instances = frozenset(i.name.upper() for i in module.instances)  # made once below, initialised in place
     for page in range(layout.pages):  # each page in its own compile piece
         src.piece()
         src.line(f"class ll_Globals{page or ''}(ll_Addressable):")
@@ -115,18 +119,35 @@ def _emit_globals(module: ModuleContext, src: Source) -> None:
         src.line()
         src.line(f"def ll_init_globals{page or ''}(warm):")
         with src.indent():
-            emit_inits(module, layout.page_places(page), target, "globals", src)
+            emit_inits(module, layout.page_places(page), target, "globals", src, instances)
+            if not page:
+                emit_located_inits(module, list(layout.located.values()), src)
             if not page:
                 for later in range(1, layout.pages):
                     src.line(f"ll_init_globals{later}(warm)")
+                emit_reference_inits(module, layout, global_owner, src)
         src.line()
     src.piece()
     for page in range(layout.pages):
         src.line(f"{global_owner(page)} = ll_Globals{page or ''}()")
+    for instance in module.instances:  # made by the first ll_init_globals, initialised in place by the later ones
+        src.line(f"{target(layout.places[instance.name.upper()])} = None")
+
+
+def _emit_image(module: ModuleContext, src: Source) -> None:
+    """The process image of the addresses the program uses, and the views its located variables go through."""
+    located = module.located
+    addresses = sorted({slot.address for slot in located})  # validated addresses (iec/addresses.py): safe text
+    src.line(f"ll_image = ll_ProcessImage({tuple(addresses)!r})")
+    worlds = (False, True) if module.world_views else (False,)
+    for view in sorted({module.image_view(slot, world)[0] for slot in located for world in worlds}):
+        area, kind = view[len("ll_io_") :].split("_", 1)
+        src.line(f"{view} = ll_image.view({area!r}, {kind!r})")
+    src.line()
 
 
 def program_globals(module: ModuleContext) -> list[ir.Slot]:
-    return [p.slot for p in module.globals.places.values()]  # type: ignore[union-attr]
+    return [p.slot for p in module.globals.places.values()]
 
 
 __all__ = ["VARIANTS", "Generated", "generate"]

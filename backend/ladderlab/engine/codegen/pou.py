@@ -27,7 +27,7 @@ from .context import CodegenError, ModuleContext, diagnostic
 from .deferred import deferred_probes
 from .layout import slots_source
 from .mentions import calls_in, own_expressions, walk
-from .scope import Scope
+from .scope import Scope, global_owner
 from .source import Source
 from .statements import Statements
 from .typeinfo import is_composite
@@ -98,13 +98,51 @@ def _emit_init(module: ModuleContext, pou: ir.Pou, scope: Scope, src: Source) ->
     src.line("def ll_init(self, warm):")
     with src.indent():
         emit_inits(module, layout.page_places(0), _target, pou.name, src)
+        emit_located_inits(module, list(layout.located.values()), src)
         for page in range(1, layout.pages):
             src.line(f"ll_i{page}_{names.escape(pou.name)}(self, warm)")
+        emit_reference_inits(module, layout, lambda page: "self" if page == 0 else f"self.ll_p{page}", src)
 
 
-def emit_inits(module: ModuleContext, places: list, target, owner: str, src: Source) -> None:
-    """The body of an ``ll_init(warm)``: RETAIN slots only when cold, user FB instances in place when warm."""
+def emit_reference_inits(module: ModuleContext, layout, holder, src: Source) -> None:
+    """``r : REF_TO T := REF(x)``: each such reference is made once every slot of the scope is (``holder(page)``:
+    the object holding a page of ``layout``; globals are held by their own pages)."""
+    for place in layout.places.values():
+        initial = place.slot.initial
+        if not isinstance(initial, ir.ReferenceInit):
+            continue
+        if initial.scope == "local":
+            target = layout.get(initial.name)
+            owner = holder(target.page)
+        else:
+            target = module.globals.get(initial.name)
+            owner = global_owner(target.page)
+        src.line(f"{holder(place.page)}.{place.attr} = ll_Ref({owner}, {target.attr!r}, {initial.text!r})")
+
+
+def emit_located_inits(module: ModuleContext, slots: list[ir.Slot], src: Source) -> None:
+    """Located variables declared with an initial value store it into the image (the others keep the image's)."""
+    for slot in slots:
+        if slot.initial is not None:
+            view, key = module.image_view(slot)
+            src.line(f"{view}[{key}] = {construct(slot.type, slot.initial, module)}")
+
+
+def emit_inits(
+    module: ModuleContext, places: list, target, owner: str, src: Source, kept: frozenset[str] = frozenset()
+) -> None:
+    """The body of an ``ll_init(warm)``: RETAIN slots only when cold, user FB instances in place when warm. The
+    instances named in ``kept`` (upper case, None until made) are made once and then initialised in place, so
+    references to them stay valid across restarts (program instances: a test's links to them)."""
     before = len(src.lines)
+    for place in [p for p in places if p.slot.name.upper() in kept]:
+        src.line(f"if {target(place)} is None:")
+        with src.indent():
+            src.line(f"{target(place)} = {_init_value(module, place.slot, owner)}")
+        src.line("elif not warm:" if place.slot.retain else "else:")
+        with src.indent():
+            src.line(f"{target(place)}.ll_init({'False' if place.slot.retain else 'warm'})")
+    places = [p for p in places if p.slot.name.upper() not in kept]
     retained = [p for p in places if p.slot.retain]
     if retained:
         src.line("if not warm:")

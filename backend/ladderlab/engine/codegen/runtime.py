@@ -19,7 +19,8 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 
-from ..errors import WATCHDOG, PlcRuntimeError, check_index, check_subrange, for_step_zero
+from ..errors import WATCHDOG, PlcRuntimeError, check_index, check_subrange, for_step_zero, null_dereference
+from ..process_image import ProcessImage
 from ..stdlib import INLINE_NAMES, STANDARD_FBS
 from . import names
 
@@ -37,6 +38,33 @@ class Addressable:
 
     def __setitem__(self, key: str, value: object) -> None:
         setattr(self, key, value)
+
+    def ll_assign(self, source: Addressable) -> None:
+        """Copy an FB instance's whole state into this one (an FB instance passed to a VAR_INPUT: by value).
+
+        Nested instances, pages, arrays and structures are copied into, keeping their identity; probe lists
+        (monitoring) stay the target's own."""
+        for name in _state_slots(type(self)):
+            mine, theirs = getattr(self, name, None), getattr(source, name, None)
+            if isinstance(mine, Addressable) or is_composite_value(mine):
+                assign_into(mine, theirs)
+            else:
+                setattr(self, name, theirs)
+
+
+_NOT_STATE = frozenset({"ll_pr", "ll_px"})
+
+
+def _state_slots(cls: type) -> tuple[str, ...]:
+    """Every ``__slots__`` attribute of an instance class and its bases, but the monitoring ones."""
+    found = _STATE_SLOTS.get(cls)
+    if found is None:
+        slots = [name for klass in cls.__mro__ for name in getattr(klass, "__slots__", ())]
+        found = _STATE_SLOTS[cls] = tuple(name for name in slots if name not in _NOT_STATE)
+    return found
+
+
+_STATE_SLOTS: dict[type, tuple[str, ...]] = {}
 
 
 class Structure(Addressable):
@@ -107,6 +135,57 @@ def for_range(start: int, end: int, step: int) -> range:
     if step < 0:
         return range(start, end - 1, step)
     raise for_step_zero()
+
+
+class Ref:
+    """A REF_TO / POINTER TO value: the variable it refers to, as its ``(container, key)`` (NULL is None).
+
+    ``r.v`` reads and assigns the variable, so ``r^`` is ``ll_deref(r, 'r').v`` in generated code. Two
+    references are equal when they refer to one variable. ``text`` is the REF() it came from, for the online
+    views; pickled (a worker's frames, probe values) a reference becomes that text: it never carries the
+    simulation's objects out of its process."""
+
+    __slots__ = ("c", "k", "text")
+
+    def __init__(self, container: object, key: object, text: str) -> None:
+        self.c, self.k, self.text = container, key, text
+
+    @property
+    def v(self) -> object:
+        return self.c[self.k]  # type: ignore[index]  # a list, an Addressable or a process image view
+
+    @v.setter
+    def v(self, value: object) -> None:
+        self.c[self.k] = value  # type: ignore[index]  # as above
+
+    @property
+    def pair(self) -> tuple[object, object]:
+        """The ``(container, key)`` of a VAR_IN_OUT argument ``r^``."""
+        return self.c, self.k
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Ref) and other.c is self.c and other.k == self.k
+
+    def __hash__(self) -> int:
+        return hash((id(self.c), self.k))
+
+    def __repr__(self) -> str:
+        return self.text
+
+    def __reduce__(self) -> tuple[type[str], tuple[str]]:
+        return str, (self.text,)
+
+
+def reference_text(value: object) -> str:
+    """How the online views and snapshots show a reference: ``NULL``, or the REF() it was made by."""
+    return "NULL" if value is None else str(value.text if isinstance(value, Ref) else value)
+
+
+def deref(ref: Ref | None, what: str) -> Ref:
+    """``ref`` itself, to be read or written through; a NULL ``ref`` is a fault naming ``what``."""
+    if ref is None:
+        raise null_dereference(what)
+    return ref
 
 
 def dummy_reference(value: object) -> tuple[list, int]:
@@ -195,9 +274,12 @@ def namespace() -> dict[str, object]:
         ll_fill=fill,
         ll_for_range=for_range,
         ll_ref=dummy_reference,
+        ll_Ref=Ref,
+        ll_deref=deref,
         ll_inf=math.inf,
         ll_nan=math.nan,
         ll_Addressable=Addressable,
+        ll_ProcessImage=ProcessImage,
         ll_Structure=Structure,
         ll_now=0,
         ll_scan=0,  # the stamp of the running scan, for probe groups (context.ProbeTable)

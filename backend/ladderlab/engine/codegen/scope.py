@@ -48,8 +48,11 @@ class Scope:
 
     def slot(self, var: ir.Var) -> ir.Slot:
         if var.scope == "global":
-            place = self.module.globals.get(var.name)  # type: ignore[union-attr]
+            place = self.module.globals.get(var.name)
             if place is None:
+                located = self.module.globals.located.get(var.name.upper())
+                if located is not None:
+                    return located
                 raise CodegenError(f"unknown global variable {var.name}")
             return place.slot
         slot = self.slots.get(var.name.upper())
@@ -78,9 +81,12 @@ class Scope:
     def _root(self, var: ir.Var) -> tuple[str, t.IrType, int]:
         """``root``'s source and type, and the page its slot lives on (0: ``self``, a local or a global)."""
         slot = self.slot(var)
+        if slot.address is not None:  # a located variable: its process image view (engine/process_image.py)
+            view, key = self.module.image_view(slot, world=self.pou.live_clock)
+            return f"{view}[{key}]", slot.type, 0
         attr = names.slot(slot.name)
         if var.scope == "global":
-            place = self.module.globals.get(var.name)  # type: ignore[union-attr]
+            place = self.module.globals.get(var.name)
             return f"{global_owner(place.page)}.{attr}", slot.type, 0  # type: ignore[union-attr]
         if slot.var_class == "VAR_IN_OUT":
             if is_composite(slot.type):
@@ -95,9 +101,12 @@ class Scope:
     def root_ref(self, var: ir.Var) -> str:
         """Source of a ``(container, key)`` reference to the whole root slot of ``var``."""
         slot = self.slot(var)
+        if slot.address is not None:
+            view, key = self.module.image_view(slot, world=self.pou.live_clock)
+            return f"({view}, {key})"
         attr = names.slot(slot.name)
         if var.scope == "global":
-            place = self.module.globals.get(var.name)  # type: ignore[union-attr]
+            place = self.module.globals.get(var.name)
             return f"({global_owner(place.page)}, {attr!r})"  # type: ignore[union-attr]
         if slot.var_class == "VAR_IN_OUT":
             return f"r_{names.escape(slot.name)}"

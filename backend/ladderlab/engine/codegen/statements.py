@@ -24,6 +24,7 @@ from typing import ClassVar
 from ...iec.values import store_expr
 from ...ir import nodes as ir
 from ...ir import types as t
+from ...ir.types import describe
 from . import names
 from .chunks import ChunkPlan
 from .context import CodegenError, diagnostic, std_fb_class
@@ -32,7 +33,7 @@ from .mentions import calls_in, expression_vars, walk
 from .runtime import UNSET
 from .scope import Scope
 from .source import Source
-from .typeinfo import describe, is_composite, runtime_name, store_code
+from .typeinfo import is_composite, runtime_name, store_code
 
 
 class Statements:
@@ -489,7 +490,7 @@ class Statements:
 
     def _paused(self, s: ir.Probe) -> None:
         if self.module.debug:
-            self.pause("element", s.origin, s.element)
+            self.pause(s.kind, s.origin, s.element)
 
     # ------------------------------------------------------------------ calls
 

@@ -56,14 +56,14 @@ def store_value(value: object, ty: t.IrType) -> object:
             raise ValueError(f"{value!r} is not a value of {ty.name}")
         return value
     name = runtime_name(ty)
-    category = values.resolve(name).category  # type: ignore[arg-type]
+    category = values.resolve(name).category
     if category == "bool":
         if value in (0, 1) and isinstance(value, int):  # True, False, 1, 0
             return bool(value)
         raise ValueError(f"{value!r} is not a BOOL")
     expected = {"string": str, "real": (int, float)}.get(category, int)
     if not isinstance(value, expected) or isinstance(value, bool):
-        raise ValueError(f"{value!r} is not {values.article(name)}")  # type: ignore[arg-type]
+        raise ValueError(f"{value!r} is not {values.article(name)}")
     stored = values.store_fn(name)(float(value) if category == "real" else value)  # type: ignore[arg-type]
     if isinstance(ty, t.Subrange) and not ty.low <= stored <= ty.high:
         raise ValueError(f"{value} is outside the subrange {ty.low}..{ty.high}")
@@ -87,6 +87,8 @@ def store_code(code: str, source: t.IrType, target: t.IrType, *, checked: bool =
     """
     if (source is target or source == target) and (checked or not isinstance(target, t.Subrange)):
         return code  # the common case, first
+    if isinstance(target, t.Reference):
+        return code  # a reference is stored as it is (lowering checked its target type)
     if isinstance(target, t.Subrange):
         if checked and source == target:
             return code
@@ -95,19 +97,3 @@ def store_code(code: str, source: t.IrType, target: t.IrType, *, checked: bool =
     if same_storage(source, target) or is_composite(target) or isinstance(target, t.Enum):
         return code
     return values.store_expr(code, runtime_name(target))  # type: ignore[arg-type]
-
-
-def describe(ty: t.IrType) -> str:
-    """IEC-like text of a type for messages and comments."""
-    if isinstance(ty, t.Elementary):
-        return runtime_name(ty)  # type: ignore[return-value]
-    if isinstance(ty, t.Subrange):
-        return f"{ty.base.name} ({ty.low}..{ty.high})"
-    if isinstance(ty, t.Enum):
-        return ty.name
-    if isinstance(ty, t.Array):
-        dims = ", ".join(f"{lo}..{hi}" for lo, hi in ty.dims)
-        return f"ARRAY [{dims}] OF {describe(ty.element)}"
-    if isinstance(ty, t.Struct):
-        return ty.name
-    return ty.fb

@@ -102,6 +102,7 @@ def _table() -> dict[str, StandardFunction]:
         ("FIND", 2, False, find_position, "FUN-81"),
     ]
     rows += [(name, 1, False, f.real_function(name), "FUN-20") for name in f.MATH_FUNCTIONS]
+    rows.append(("ATAN2", 2, False, f.atan2, "FUN-20"))
     rows += [
         (name, inputs, False, positional(name), "FUN-81")
         for name, inputs in (("LEFT", 2), ("RIGHT", 2), ("MID", 3), ("INSERT", 3), ("DELETE", 3), ("REPLACE", 4))

@@ -263,6 +263,123 @@ class TP(_Timer):
             self.ET = 0
 
 
+class ACTION_CONTROL(FunctionBlock):
+    """IEC 61131-3 (ed. 2, 2003) figure 15, the action control with the final scan: one input per qualifier (S0 is
+    S), T the time of L, D, SD, DS and SL; Q the action flag, A TRUE while the action runs: Q, the one call after
+    Q falls (the final run), and the one call of a P1 or P0 pulse (with Q FALSE). The body, with its own blocks:
+
+        S_FF(S := S0, R1 := R);  L_TMR(IN := L, PT := T);  D_TMR(IN := D, PT := T);  P_TRIG(CLK := P);
+        SD_FF(S := SD, R1 := R);  SD_TMR(IN := SD_FF.Q1, PT := T);
+        DS_TMR(IN := DS, PT := T);  DS_FF(S := DS_TMR.Q, R1 := R);
+        SL_FF(S := SL, R1 := R);  SL_TMR(IN := SL_FF.Q1, PT := T);
+        P1_TRIG(CLK := P1);  P0_TRIG(CLK := P0);
+        Q := NOT R AND (N OR (L AND NOT L_TMR.Q) OR D_TMR.Q OR P_TRIG.Q OR S_FF.Q1 OR SD_TMR.Q OR DS_FF.Q1
+                        OR (SL_FF.Q1 AND NOT SL_TMR.Q));
+        Q_FT(CLK := Q);
+        A := Q OR Q_FT.Q OR P1_TRIG.Q OR P0_TRIG.Q;
+    """
+
+    __slots__ = (
+        "A",
+        "D",
+        "DS",
+        "L",
+        "N",
+        "P",
+        "P0",
+        "P1",
+        "Q",
+        "R",
+        "S0",
+        "SD",
+        "SL",
+        "T",
+        "_d_tmr",
+        "_ds_ff",
+        "_ds_tmr",
+        "_l_tmr",
+        "_p0_trig",
+        "_p1_trig",
+        "_p_trig",
+        "_q_ft",
+        "_s_ff",
+        "_sd_ff",
+        "_sd_tmr",
+        "_sl_ff",
+        "_sl_tmr",
+    )
+    INPUTS = ("N", "R", "S0", "L", "D", "P", "P1", "P0", "SD", "DS", "SL", "T")
+    OUTPUTS = ("Q", "A")
+
+    def __init__(self) -> None:
+        self.N = self.R = self.S0 = self.L = self.D = self.P = self.P1 = self.P0 = False
+        self.SD = self.DS = self.SL = self.Q = self.A = False
+        self.T = 0
+        self._s_ff, self._sd_ff, self._ds_ff, self._sl_ff = RS(), RS(), RS(), RS()
+        self._l_tmr, self._d_tmr, self._sd_tmr, self._ds_tmr, self._sl_tmr = TON(), TON(), TON(), TON(), TON()
+        self._p_trig, self._p1_trig, self._p0_trig, self._q_ft = R_TRIG(), R_TRIG(), F_TRIG(), F_TRIG()
+
+    def execute(self, now_ms: int) -> None:
+        r, t = self.R, self.T
+        s_ff = _rs(self._s_ff, self.S0, r)
+        l_tmr = _ton(self._l_tmr, self.L, t, now_ms)
+        d_tmr = _ton(self._d_tmr, self.D, t, now_ms)
+        p_trig = _trig(self._p_trig, self.P)
+        sd_ff = _rs(self._sd_ff, self.SD, r)
+        sd_tmr = _ton(self._sd_tmr, sd_ff, t, now_ms)
+        ds_tmr = _ton(self._ds_tmr, self.DS, t, now_ms)
+        ds_ff = _rs(self._ds_ff, ds_tmr, r)
+        sl_ff = _rs(self._sl_ff, self.SL, r)
+        sl_tmr = _ton(self._sl_tmr, sl_ff, t, now_ms)
+        p1 = _trig(self._p1_trig, self.P1)
+        p0 = _trig(self._p0_trig, self.P0)
+        q = not r and (
+            self.N or (self.L and not l_tmr) or d_tmr or p_trig or s_ff or sd_tmr or ds_ff or (sl_ff and not sl_tmr)
+        )
+        final = _trig(self._q_ft, q)  # (called every time: the F_TRIG must see Q rise)
+        self.Q = q
+        self.A = q or final or p1 or p0
+
+
+class SFC_STEP(FunctionBlock):
+    """An SFC step (docs/sfc.md): X, the step flag the chart sets and clears; T, how long the step has been active,
+    T#0s in its first active scan (so a transition ``S.T >= t`` and a D or L action of time t agree to the scan).
+    A call with X FALSE ends the interval and T keeps its value until the next activation (IEC 61131-3 2.6.2)."""
+
+    __slots__ = ("T", "X", "_running", "_start")
+    INPUTS, OUTPUTS = ("X",), ("T",)
+
+    def __init__(self) -> None:
+        self.X = self._running = False
+        self.T = self._start = 0
+
+    def execute(self, now_ms: int) -> None:
+        if not self.X:
+            self._running = False
+            return
+        if not self._running:
+            self._running, self._start = True, now_ms
+        self.T = now_ms - self._start
+
+
+def _rs(ff: RS, s: bool, r1: bool) -> bool:
+    ff.S, ff.R1 = s, r1
+    ff.execute(0)
+    return ff.Q1
+
+
+def _ton(timer: TON, run: bool, pt: int, now_ms: int) -> bool:
+    timer.IN, timer.PT = run, pt
+    timer.execute(now_ms)
+    return timer.Q
+
+
+def _trig(trig: R_TRIG | F_TRIG, clk: bool) -> bool:
+    trig.CLK = clk
+    trig.execute(0)
+    return trig.Q
+
+
 def _typed_counters() -> dict[str, type[_Counter]]:
     """CTU_INT .. CTUD_ULINT (IEC 3rd edition names; spec ST-23 also uses CTD_DINT)."""
     typed: dict[str, type[_Counter]] = {}
@@ -274,6 +391,6 @@ def _typed_counters() -> dict[str, type[_Counter]]:
 
 
 STANDARD_FBS: dict[str, type[FunctionBlock]] = {
-    cls.__name__: cls for cls in (SR, RS, R_TRIG, F_TRIG, CTU, CTD, CTUD, TP, TON, TOF)
+    cls.__name__: cls for cls in (SR, RS, R_TRIG, F_TRIG, CTU, CTD, CTUD, TP, TON, TOF, ACTION_CONTROL, SFC_STEP)
 }
 STANDARD_FBS.update(_typed_counters())

@@ -163,6 +163,7 @@ HELPERS.update(
     ll__mux_error=mux_error,
     ll__round=round_half_even,
     ll__trunc=trunc,
+    ll__atan2=math.atan2,
 )
 
 
@@ -233,6 +234,12 @@ def real_function(name: str):
         return Impl(f"ll__{name.lower()}(a0)", result or types[0])
 
     return implement
+
+
+def atan2(types: tuple[str, ...], result: str | None) -> Impl:
+    """ATAN2(Y, X): the angle of the point (X, Y) in -pi..pi, by the signs of both (IEEE atan2, never a fault)."""
+    _numeric("ATAN2", types, _REAL)
+    return Impl("ll__atan2(a0, a1)", result or types[0])
 
 
 def move(types: tuple[str, ...], result: str | None) -> Impl:

@@ -151,40 +151,35 @@ def group_by_ladderlab(graph: Graph, reader: Reader, listing: NetworkList | None
             return None
         if element.tag == "label":
             group.label = header_text(graph, reader, local_id)
-        elif element.tag == "comment":
+        elif element.tag == "comment" and element.model_id is None:  # the network's comment
             group.comment = header_text(graph, reader, local_id)
-        elif element.tag not in COMMENT_TAGS:
+        elif element.tag not in COMMENT_TAGS or element.tag == "comment":  # a comment with an id: an FBD node
             group.members.append(local_id)
     return list(groups.values())
 
 
-def attach_headers(
-    groups: list[NetworkGroup], graph: Graph, reader: Reader, *, labels: bool = True
-) -> list[NetworkGroup]:
-    """Labels (unless placed already) and comments of a foreign drawing go to the first network at or below them."""
+def attach_headers(groups: list[NetworkGroup], graph: Graph, reader: Reader) -> list[NetworkGroup]:
+    """Labels of a foreign LD drawing go to the first network at or below them; each free comment box becomes a
+    comment network of its own where it stands among the networks (issue 28: nothing merged, nothing moved)."""
 
     def top(group: NetworkGroup) -> float:
         return min((graph.elements[m].y for m in group.members), default=group.top)
 
     for group in groups:
         group.top = top(group)
-    tags = ("label", "comment") if labels else ("comment",)
-    headers = sorted((e for e in graph.elements.values() if e.tag in tags), key=lambda e: e.key)
-    for header in headers:
+    labels = sorted((e for e in graph.elements.values() if e.tag == "label"), key=lambda e: e.key)
+    for header in labels:
         text = header_text(graph, reader, header.local_id)
-        below = [g for g in groups if g.top >= header.y and (header.tag == "comment" or g.label is None)]
-        if header.tag == "label":
-            if below:
-                below[0].label = text
-            else:
-                groups.append(NetworkGroup(label=text, top=header.y))
-            continue
-        text = text.strip()
-        target = below[0] if below else (groups[-1] if groups else None)
-        if target is None:
-            target = NetworkGroup(top=header.y)
-            groups.append(target)
-        target.comment = text if target.comment is None else f"{target.comment}\n{text}"
+        below = [g for g in groups if g.top >= header.y and g.label is None]
+        if below:
+            below[0].label = text
+        else:
+            groups.append(NetworkGroup(label=text, top=header.y))
+    comments = sorted((e for e in graph.elements.values() if e.tag == "comment"), key=lambda e: e.key)
+    for header in comments:
+        text = header_text(graph, reader, header.local_id).strip()
+        at = next((i for i, g in enumerate(groups) if g.top > header.y), len(groups))
+        groups.insert(at, NetworkGroup(comment=text, top=header.y))
     return groups
 
 

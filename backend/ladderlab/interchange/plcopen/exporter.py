@@ -23,18 +23,19 @@ from ...model.diagnostics import Diagnostic
 from ...model.fbd import FbdBody
 from ...model.ld import LdBody
 from ...model.project import Pou, Project
+from ...model.sfc import SfcBody
 from ...st import ast
 from ...st.parser import parse_declarations, parse_source
 from .blocks import Signatures
 from .body import NETWORK_GAP, Counter, write_network_list
+from .configuration import write_instances
 from .fbd_export import FbdExporter
 from .ld_export import LdExporter
+from .sfc_export import write_sfc_pou
 from .vars import parse_type_text, write_data_type, write_type, write_var_list
 from .xml_io import formatted_text, ladderlab_data, ladderlab_tests, q, sub, to_bytes
 
 POU_TYPE = {"program": "program", "function_block": "functionBlock", "function": "function"}
-CONFIGURATION = "config"
-RESOURCE = "resource"
 
 
 class PlcopenExportError(Exception):
@@ -122,53 +123,41 @@ class _Exporter:
         for block in self.var_blocks(pou.declarations, pou.name):
             write_var_list(interface, block)
         ladderlab_data(interface, {"returnType": pou.return_type}, {"declarations": pou.declarations})
+        if isinstance(pou.body, SfcBody):
+            write_sfc_pou(node, pou.body, lambda holder, networks: self.diagram(holder, networks, pou.name))
+            return
         body = sub(node, "body")
-        if isinstance(pou.body, LdBody):
-            self.ld_body(body, pou)
-        elif isinstance(pou.body, FbdBody):
-            self.fbd_body(body, pou)
+        if isinstance(pou.body, (LdBody, FbdBody)):
+            self.diagram(body, pou.body, pou.name)
         else:
-            formatted_text(body, "ST", pou.body)
+            formatted_text(body, pou.language.upper(), pou.body)  # ST or IL text
 
-    def ld_body(self, body: ET.Element, pou: Pou) -> None:
-        exporter = LdExporter(sub(body, "LD"), self.signatures, Counter())
-        top, listing = 0.0, []
-        for network in pou.body.networks:
-            listing.append((network.id, top, None))
-            top = exporter.network(network, top) + NETWORK_GAP
-        write_network_list(body, listing)
-
-    def fbd_body(self, body: ET.Element, pou: Pou) -> None:
-        exporter = FbdExporter(sub(body, "FBD"), self.signatures, Counter(), pou.name)
-        top, listing = 0.0, []
-        for network in pou.body.networks:
-            offset, bottom = exporter.network(network, top)
-            listing.append((network.id, offset, network.order))
-            top = bottom + NETWORK_GAP
-        self.problems += exporter.problems
-        write_network_list(body, listing)
+    def diagram(self, body: ET.Element, networks: LdBody | FbdBody, pou: str) -> None:
+        """The ``<LD>`` or ``<FBD>`` of a POU's body, or of an SFC action's or transition's."""
+        self.problems += diagram_writer(body, networks, self.signatures, pou)
 
     # ------------------------------------------------------------ configuration
 
     def instances(self, parent: ET.Element) -> None:
-        configurations = sub(parent, "configurations")
-        globals_ = self.var_blocks(self.project.globals, None, "globals.st")
-        if not globals_ and not self.project.tasks:
-            return
-        configuration = sub(configurations, "configuration", {"name": CONFIGURATION})
-        if self.project.tasks:
-            resource = sub(configuration, "resource", {"name": RESOURCE})
-            for i, task in enumerate(self.project.tasks):
-                if not 0 <= task.priority <= 65535:
-                    self.problems.append(
-                        Diagnostic(
-                            code="PLCOPEN-EXPORT",
-                            json_path=f"$.tasks[{i}].priority",
-                            message=f"task {task.name}: PLCopen priorities are 0..65535, not {task.priority}",
-                        )
-                    )
-                node = sub(resource, "task", {"name": task.name, "interval": task.interval, "priority": task.priority})
-                for program in task.programs:
-                    sub(node, "pouInstance", {"name": program, "typeName": program})
-        for block in globals_:
-            write_var_list(configuration, block)
+        write_instances(
+            self.project, parent, lambda text, file: self.var_blocks(text, None, file), write_var_list, self.problems
+        )
+
+
+def diagram_writer(body: ET.Element, networks: LdBody | FbdBody, signatures: Signatures, pou: str) -> list[Diagnostic]:
+    """Write LD or FBD networks into a ``<body>``: one graph, the network list in LadderLab's addData."""
+    top, listing = 0.0, []
+    if isinstance(networks, LdBody):
+        ld = LdExporter(sub(body, "LD"), signatures, Counter())
+        for network in networks.networks:
+            listing.append((network.id, top, None))
+            top = ld.network(network, top) + NETWORK_GAP
+        write_network_list(body, listing)
+        return []
+    fbd = FbdExporter(sub(body, "FBD"), signatures, Counter(), pou)
+    for fbd_network in networks.networks:
+        offset, bottom = fbd.network(fbd_network, top)
+        listing.append((fbd_network.id, offset, fbd_network.order))
+        top = bottom + NETWORK_GAP
+    write_network_list(body, listing)
+    return fbd.problems

@@ -23,6 +23,7 @@ from ...model.diagnostics import Diagnostic
 from ...model.fbd import (
     Block,
     Connector,
+    FbdComment,
     FbdJump,
     FbdNetwork,
     FbdNode,
@@ -33,7 +34,7 @@ from ...model.fbd import (
 )
 from .blocks import Signatures
 from .body import Counter, write_header
-from .xml_io import ladderlab_data, position, sub
+from .xml_io import formatted_text, ladderlab_data, position, sub
 
 PIN_STEP = 20
 NODE_W = 80
@@ -128,6 +129,9 @@ class FbdExporter:
                     "network": network.id,
                     "pos": "auto" if node.pos is None else None,
                     "pins": " ".join(node.pins) if isinstance(node, Block) and node.pins is not None else None,
+                    "size": "auto"
+                    if isinstance(node, FbdComment) and (node.width is None or node.height is None)
+                    else None,
                 },
             )
             bottom = max(bottom, y + height)
@@ -272,6 +276,12 @@ class FbdExporter:
             position(element, "position", x, y_exact)
             single_input(element)
             return 20
+        if isinstance(node, FbdComment):  # a free comment box: its size as drawn (issue 28)
+            width, height = node.width or NODE_W, node.height or 40
+            element = sub(self.parent, "comment", {"localId": local_id, "height": height, "width": width})
+            position(element, "position", x, y_exact)
+            formatted_text(element, "content", node.text)
+            return height
         tag = "connector" if isinstance(node, Connector) else "continuation"
         element = sub(self.parent, tag, {"name": node.name, "localId": local_id, "height": 20, "width": NODE_W})
         position(element, "position", x, y_exact)

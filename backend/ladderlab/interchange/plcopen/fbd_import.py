@@ -26,6 +26,7 @@ from ...model.fbd import (
     Connector,
     Continuation,
     FbdBody,
+    FbdComment,
     FbdJump,
     FbdNetwork,
     FbdNode,
@@ -40,7 +41,7 @@ from ...model.fbd import (
 from .body import IdMaker, NetworkGroup
 from .graph import Conn, Element, Graph, reaches
 from .ld_import import negate
-from .xml_io import Reader, local
+from .xml_io import Reader, local, text_content
 
 EXECUTABLE = ("block", "outVariable", "inOutVariable", "jump", "return", "label")
 _PREFIX = {
@@ -52,6 +53,7 @@ _PREFIX = {
     "connector": "connector",
     "continuation": "continuation",
     "inOutVariable": "output",
+    "comment": "comment",
 }
 _BACHMANN = "www.bachmann.at/plc/plcopenxml"
 
@@ -86,6 +88,16 @@ def fbd_groups(graph: Graph, reader: Reader) -> tuple[list[NetworkGroup], dict[i
     groups = [g for g in groups if g.members or g.label is not None] or [NetworkGroup()]
     order = {id(g): [m for m in g.members if graph.elements[m].tag in EXECUTABLE] for g in groups} if cfc else {}
     return groups, order
+
+
+def place_comments(groups: list[NetworkGroup], graph: Graph) -> None:
+    """Free comment boxes of a foreign drawing become comment nodes of the network drawn at their height, where
+    they were and as large as they were (issue 28): the first network whose elements reach below the box's top,
+    else the last."""
+    bottoms = [max((graph.elements[m].y for m in g.members), default=float(g.top)) for g in groups]
+    for element in sorted((e for e in graph.elements.values() if e.tag == "comment"), key=lambda e: e.key):
+        target = next((i for i, bottom in enumerate(bottoms) if bottom >= element.y), len(groups) - 1)
+        groups[target].members.append(element.local_id)
 
 
 def _attach_values(graph: Graph, groups: list[NetworkGroup]) -> None:
@@ -240,6 +252,18 @@ class FbdImporter:
             self.add(element, Connector(id=node_id, pos=pos, name=element.node.get("name", "")))
         elif tag == "continuation":
             self.add(element, Continuation(id=node_id, pos=pos, name=element.node.get("name", "")))
+        elif tag == "comment":
+            auto = element.info is not None and element.info.get("size") == "auto"
+            self.add(
+                element,
+                FbdComment(
+                    id=node_id,
+                    pos=pos,
+                    text=text_content(self.reader.child(element.node, "content")).strip(),
+                    width=None if auto else _size(element.node.get("width")),
+                    height=None if auto else _size(element.node.get("height")),
+                ),
+            )
         else:
             self.error(f"<{tag}> is not an FBD element this project can hold", element, self.network_id)
 
@@ -319,3 +343,12 @@ class FbdImporter:
         self.add(None, block)
         self.wires.append(Wire(from_=PinRef(node=block.id, pin="OUT"), to=PinRef(node=target.id, pin=SIMPLE_IN)))
         return block
+
+
+def _size(text: str | None) -> float | None:
+    """A comment box's width or height: a positive finite number, else None (drawn as the text needs)."""
+    try:
+        value = float(text or "")
+    except ValueError:
+        return None
+    return value if 0 < value < float("inf") else None

@@ -8,9 +8,10 @@ resource) and tasks fill the project's TYPE text, VAR_GLOBAL text and task list.
 
 Never raises on bad input: hostile or malformed XML (``xml_safety``) gives
 ``project=None`` and an error; everything else is imported as far as it goes.
-SFC and IL POUs, actions, transitions and other tools' addData have no place in
-the project and are reported as warnings; Bachmann/RuSTy's textual declarations
-and negated jumps/returns are understood and kept.
+SFC bodies with their actions and transitions go through ``plcopen_sfc_import``.
+IL POUs and other tools' addData have no place in the project and are reported
+as warnings; Bachmann/RuSTy's textual declarations and negated jumps/returns are
+understood and kept.
 """
 
 from __future__ import annotations
@@ -22,10 +23,14 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from ...model.diagnostics import Diagnostic
-from ...model.project import Pou, Project, Task, TestFile
+from ...model.fbd import FbdBody
+from ...model.ld import LdBody
+from ...model.project import Pou, Project, TestFile
 from ...st import ast
 from ...st.parser import parse_declarations, parse_source
 from ...st.printer import print_declarations, print_source, print_type
+from ...storage.errors import ProjectLoadError
+from ...storage.text_files import xml_for_parser
 from .blocks import Signatures
 from .body import (
     IdMaker,
@@ -34,9 +39,12 @@ from .body import (
     group_by_ladderlab,
     read_network_list,
 )
-from .fbd_import import FbdImporter, fbd_groups
+from .configuration import read_instances
+from .exporter import diagram_writer
+from .fbd_import import FbdImporter, fbd_groups, place_comments
 from .graph import read_graph, resolve_continuations
 from .ld_import import LdImporter, ld_groups
+from .sfc_import import SfcImporter
 from .vars import KIND_BY_LIST, VarReader, parse_type_text, write_data_type, write_type, write_var_list
 from .xml_io import (
     LADDERLAB_DATA,
@@ -69,6 +77,10 @@ class ImportResult:
 
 def import_plcopen(data: bytes, *, name: str | None = None, file: str | None = None) -> ImportResult:
     """Read a PLCopen XML document; ``name`` overrides the project name, ``file`` locates the diagnostics."""
+    try:
+        data = xml_for_parser(data, file or "document")  # a document that is not UTF-8 and says nothing else
+    except ProjectLoadError as err:
+        return ImportResult(None, err.diagnostics)
     try:
         parsed = parse_untrusted_xml(data, file=file)
     except XmlInputError as err:
@@ -115,8 +127,9 @@ class _Importer:
         self.collect_foreign(root)
         types = self.types(r.path(root, "types", "dataTypes"), info_text(ours, "types"))
         configurations = r.children(r.path(root, "instances", "configurations"), "configuration")
-        globals_ = self.globals(configurations, info_text(ours, "globals"))
-        tasks = self.tasks(configurations)
+        carried = info_text(ours, "globals")
+        read_list = lambda lists, own: self.globals(lists, own if own is not None else carried)  # noqa: E731
+        globals_, configuration, tasks = read_instances(r, configurations, read_list)
         for data_name, count in sorted(self.foreign.items()):
             r.report(
                 "PLCOPEN-ADDDATA",
@@ -127,7 +140,13 @@ class _Importer:
             )
         tests = [TestFile(name=test, text=text) for test, text in test_texts(ours)]
         return Project(
-            name=name, types=types, globals=globals_, pous=[p for p in pous if p is not None], tasks=tasks, tests=tests
+            name=name,
+            types=types,
+            globals=globals_,
+            pous=[p for p in pous if p is not None],
+            tasks=tasks,
+            configuration=configuration,
+            tests=tests,
         )
 
     # ------------------------------------------------------------ addData bookkeeping
@@ -202,16 +221,19 @@ class _Importer:
 
     def pou(self, node: ET.Element, pou: Pou, signatures: Signatures) -> Pou | None:
         r = self.reader
-        for tag in ("actions", "transitions"):
-            for item in r.children(r.child(node, tag), tag[:-1]):
-                r.report(
-                    "PLCOPEN-UNSUPPORTED",
-                    f"{tag[:-1]} '{item.get('name', '')}' of POU {pou.name} was not imported: LadderLab has no {tag}",
-                    item,
-                    severity="warning",
-                    pou=pou.name,
-                )
         bodies = r.children(node, "body")
+        first = next(r.elements(bodies[0]), None) if bodies else None
+        if first is None or local(first) != "SFC":
+            for tag in ("actions", "transitions"):
+                for item in r.children(r.child(node, tag), tag[:-1]):
+                    r.report(
+                        "PLCOPEN-UNSUPPORTED",
+                        f"{tag[:-1]} '{item.get('name', '')}' of POU {pou.name} was not imported: only SFC POUs "
+                        f"have {tag} in LadderLab",
+                        item,
+                        severity="warning",
+                        pou=pou.name,
+                    )
         if len(bodies) > 1:
             r.report(
                 "PLCOPEN-POU",
@@ -223,48 +245,43 @@ class _Importer:
         body = bodies[0] if bodies else None
         language = next(r.elements(body), None)
         tag = local(language) if language is not None else "ST"
-        if tag in ("SFC", "IL"):
-            r.report(
-                "PLCOPEN-UNSUPPORTED",
-                f"POU {pou.name} is written in {tag}, which LadderLab does not support; "
-                f"it was imported with its interface and a body that does nothing ({_KEPT[tag]} as comments), "
-                "so its callers build and run",
-                language,
-                severity="warning",
-                pou=pou.name,
+        if tag in ("ST", "IL"):  # IL bodies are IL text like ST bodies are ST text (docs/il.md)
+            return pou.model_copy(update={"body": text_content(language), "language": tag.lower()})
+        assert body is not None and language is not None
+        if tag == "SFC":
+            importer = SfcImporter(
+                r,
+                pou.name,
+                lambda holder, what: self.diagram(holder, pou.name, signatures),
+                lambda holder, networks: diagram_writer(holder, networks, signatures, pou.name),
             )
-            return pou.model_copy(update={"body": unsupported_body(tag, language)})
-        if tag == "ST":
-            return pou.model_copy(update={"body": text_content(language)})
-        graph = read_graph(language, r, pou.name, signatures)
+            return pou.model_copy(update={"language": "sfc", "body": importer.body(node, body, language)})
+        made = self.diagram(body, pou.name, signatures)
+        if made is None:
+            return pou
+        return pou.model_copy(update={"language": made[0], "body": made[1]})
+
+    def diagram(self, body: ET.Element, pou: str, signatures: Signatures) -> tuple[str, LdBody | FbdBody] | None:
+        """The LD or FBD networks of a ``<body>`` (a POU's, or an SFC action's or transition's)."""
+        r = self.reader
+        language = next(r.elements(body), None)
+        tag = local(language) if language is not None else ""
+        if language is None or tag not in ("LD", "FBD"):
+            return None
+        graph = read_graph(language, r, pou, signatures)
         listing = read_network_list(body, r)
         ids = IdMaker(claimed_ids(graph, listing))
         groups = group_by_ladderlab(graph, r, listing)
         if tag == "LD":
-            resolve_continuations(graph, r, pou.name)
+            resolve_continuations(graph, r, pou)
+            foreign = groups is None
             groups = groups or attach_headers(ld_groups(graph), graph, r)
-            ld = LdImporter(graph, r, pou.name, signatures, ids).body(groups)
-            return Pou(
-                name=pou.name,
-                kind=pou.kind,
-                language="ld",
-                return_type=pou.return_type,
-                declarations=pou.declarations,
-                body=ld,
-            )
+            return "ld", LdImporter(graph, r, pou, signatures, ids, foreign=foreign).body(groups)
         relative, orders = groups is not None, {}
         if groups is None:
             groups, orders = fbd_groups(graph, r)
-            attach_headers(groups, graph, r, labels=False)
-        fbd = FbdImporter(graph, r, pou.name, ids).body(groups, orders, relative=relative)
-        return Pou(
-            name=pou.name,
-            kind=pou.kind,
-            language="fbd",
-            return_type=pou.return_type,
-            declarations=pou.declarations,
-            body=fbd,
-        )
+            place_comments(groups, graph)
+        return "fbd", FbdImporter(graph, r, pou, ids).body(groups, orders, relative=relative)
 
     # ------------------------------------------------------------ project texts
 
@@ -282,66 +299,12 @@ class _Importer:
         decls = [reader.data_type(e) for e in elements]
         return print_source(ast.Source([ast.TypeBlock(decls)])).rstrip() if decls else ""
 
-    def globals(self, configurations: list[ET.Element], carried: str | None) -> str:
-        r = self.reader
-        lists = [
-            g
-            for c in configurations
-            for holder in [c, *r.children(c, "resource")]
-            for g in r.children(holder, "globalVars")
-        ]
+    def globals(self, lists: list[ET.Element], carried: str | None) -> str:
+        """A VAR_GLOBAL text from ``<globalVars>`` lists (the carried text when it still says the same)."""
         if carried is not None and self.same(lists, carried, _declaration_elements):
             return carried
-        reader = VarReader(r)
+        reader = VarReader(self.reader)
         return print_declarations([reader.var_block(g, "VAR_GLOBAL") for g in lists]).rstrip()
-
-    def tasks(self, configurations: list[ET.Element]) -> list[Task]:
-        r = self.reader
-        if len(configurations) > 1:
-            r.report(
-                "PLCOPEN-CONFIG",
-                f"{len(configurations)} configurations are merged into the project's one task list",
-                configurations[1],
-                severity="warning",
-            )
-        tasks = []
-        for resource in (res for c in configurations for res in r.children(c, "resource")):
-            for task in r.children(resource, "task"):
-                tasks.append(self.task(task))
-            for instance in r.children(resource, "pouInstance"):
-                r.report(
-                    "PLCOPEN-CONFIG",
-                    f"program instance '{instance.get('name', '')}' is not assigned to a "
-                    "task; LadderLab runs programs from tasks only, so it was not imported",
-                    instance,
-                    severity="warning",
-                )
-        return tasks
-
-    def task(self, node: ET.Element) -> Task:
-        r = self.reader
-        name = node.get("name", "")
-        interval = node.get("interval")
-        if not interval:
-            r.report(
-                "PLCOPEN-CONFIG",
-                f"task {name} has no interval (an event task); it is imported as a cyclic task of T#10ms",
-                node,
-                severity="warning",
-            )
-            interval = "T#10ms"
-        try:
-            priority = int(node.get("priority", "0"))
-        except ValueError:
-            r.report(
-                "PLCOPEN-CONFIG",
-                f"task {name}: priority '{node.get('priority')}' is not a number; 0 is used",
-                node,
-                severity="warning",
-            )
-            priority = 0
-        programs = [i.get("typeName", "") for i in r.children(node, "pouInstance")]
-        return Task(name=name, interval=interval, priority=priority, programs=programs)
 
 
 # ---------------------------------------------------------------- regenerating typed XML from carried texts
@@ -375,25 +338,3 @@ def _return_type_elements(text: str) -> list[ET.Element] | None:
     holder = ET.Element("returnType")
     write_type(holder, spec)
     return [holder]
-
-
-#: What an unsupported body leaves in the comments of the POU standing in for it.
-_KEPT = {"IL": "the IL text is kept", "SFC": "the names of its steps are kept"}
-
-
-def unsupported_body(tag: str, language: ET.Element) -> str:
-    """The ST body standing in for an SFC or IL body: no statements, the original described in line comments.
-
-    The POU keeps its interface so that the programs calling it still build (the rest of an imported
-    project runs); the comment says, where the user opens the POU, that this body does nothing.
-    """
-    if tag == "IL":
-        original = text_content(language).strip().splitlines()
-    else:
-        original = [
-            f"step {s.get('name', '')}{' (initial)' if s.get('initialStep') == 'true' else ''}"
-            for s in language
-            if local(s) == "step"
-        ]
-    lines = [f"// Imported from {tag}, which LadderLab cannot run: this body does nothing. The original {tag}:"]
-    return "\n".join(lines + [f"// {line}".rstrip() for line in original])

@@ -62,6 +62,7 @@ class _Plan:
     power_out: str | None = None
     en: bool = False
     virtual_en: bool = False
+    constant: bool = False  # an FB that always runs, read without its EN/ENO chain (always_enabled)
 
 
 @dataclass
@@ -85,8 +86,13 @@ class _Net:
 class LdImporter:
     """Reads the networks of one LD body; problems go to ``reader`` located at the POU and element."""
 
-    def __init__(self, graph: Graph, reader: Reader, pou: str, signatures: Signatures, ids: IdMaker):
+    def __init__(
+        self, graph: Graph, reader: Reader, pou: str, signatures: Signatures, ids: IdMaker, *, foreign: bool = True
+    ):
         self.graph = graph
+        #: Drawn by another tool: read an FB on an EN/ENO chain as its author drew it (LadderLab's own files say
+        #: what each box is, and read back exactly).
+        self.foreign = foreign
         self.reader = reader
         self.pou = pou
         self.signatures = signatures
@@ -263,6 +269,15 @@ class LdImporter:
             self.plans[element.local_id] = _Plan("inline")
             return
         plan = _Plan("box", en=True, power_in=en_pin, power_out=eno_pin or "ENO")
+        if self.foreign and wired_en and self.always_enabled(element, sig, instance, en_pin, eno_pin):
+            # Issue 28: an FB on an EN/ENO chain from the left rail always runs (an FB's ENO is its EN), so the
+            # power flow can pass from its BOOL input to its BOOL output as drawn, left to right (OpenPLC's
+            # contact -> TON -> TOF -> coil), instead of a box on the rail and its output read by a contact.
+            power_in = self.power_input(values, inputs, sig.bool_inputs() if sig is not None else [])
+            power_out = self.power_output(element, sig)
+            if power_in is not None and power_out is not None:
+                self.plans[element.local_id] = _Plan("box", power_in=power_in, power_out=power_out, constant=True)
+                return
         if not wired_en:
             # Without EN the power flow passes through the box only from a BOOL input to a BOOL output. An
             # unknown FB (a vendor block) has neither as far as the export could name them again: it runs
@@ -276,6 +291,23 @@ class LdImporter:
             else:
                 plan.virtual_en, plan.power_in = True, "EN"
         self.plans[element.local_id] = plan
+
+    def always_enabled(self, element: Element, sig, instance: str | None, en_pin: str, eno_pin: str | None) -> bool:
+        """An FB whose EN comes only from the left rail or the ENO of an FB that always runs, and whose ENO goes
+        only to the right rail or other blocks' EN: it runs in every scan, whatever its EN says."""
+        if not instance or (sig is not None and sig.kind != "function_block"):
+            return False
+        for conn in element.inputs.get(en_pin, []):
+            source = self.graph.elements[conn.ref]
+            plan = self.plans.get(conn.ref)
+            from_chain = plan is not None and plan.constant and (conn.param or "").upper() == "ENO"
+            if source.tag != "leftPowerRail" and not from_chain:
+                return False
+        return all(
+            self.graph.elements[c].tag == "rightPowerRail" or target_pin.upper() == "EN"
+            for c, target_pin, conn in self.consumers.get(element.local_id, [])
+            if eno_pin is not None and conn.param == eno_pin
+        )
 
     def power_output(self, element: Element, sig) -> str | None:
         """The output the power flow leaves by: the first that is BOOL, or of a generic type and driving contacts

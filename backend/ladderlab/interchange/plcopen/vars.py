@@ -14,7 +14,7 @@ import xml.etree.ElementTree as ET
 
 from ...iec.elementary import canonical_type_name, elementary
 from ...st import ast
-from ...st.parser import parse_declarations, parse_expression
+from ...st.parser import parse_expression, parse_type
 from ...st.printer import print_expression
 from .xml_io import Reader, formatted_text, info, ladderlab_data, local, sub, text_content
 
@@ -163,11 +163,9 @@ def write_data_type(parent: ET.Element, decl: ast.TypeDecl) -> None:
 
 
 def parse_type_text(text: str) -> ast.TypeSpec | None:
-    """A type written as text (a function's ``return_type``), through the declaration grammar."""
-    parsed = parse_declarations(f"VAR\n    _ : {text};\nEND_VAR")
-    if parsed.ast is None or not parsed.ok:
-        return None
-    return parsed.ast[0].decls[0].type
+    """A type written as text (a function's ``return_type``), or None when it is not one."""
+    parsed = parse_type(text)
+    return parsed.ast if parsed.ok else None
 
 
 # ---------------------------------------------------------------- import

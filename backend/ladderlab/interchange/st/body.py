@@ -21,7 +21,8 @@ from .network import Declarations, Planned
 
 @dataclass
 class Network:
-    """One planned network: its id, comment lines, statements, and controls as (label | None, element)."""
+    """One planned network: its id, its heading (comment lines, ``network_title``), statements, and controls
+    as (label | None, element)."""
 
     id: str
     title: list[str]
@@ -38,7 +39,25 @@ class Line:
 
 def comment(text: str) -> str:
     """``text`` as one ``(* *)`` comment that nothing inside can end early (or open a nested one)."""
-    return "(* " + text.replace("(*", "( *").replace("*)", "* )") + " *)"
+    return "(* " + _inert(text) + " *)"
+
+
+def _inert(text: str) -> str:
+    return text.replace("(*", "( *").replace("*)", "* )")
+
+
+def network_title(number: int, label: str | None, text: str | None) -> list[str]:
+    """The comment over a network, as the editor shows it: ``(* Network 2 "Motor_timer": what it does *)``;
+    the lines of a longer comment follow inside the same comment, indented under the first."""
+    head = f"Network {number}" + (f' "{label.strip()}"' if label and label.strip() else "")
+    lines = [line.strip() for line in (text or "").splitlines() if line.strip()]
+    if not lines:
+        return [comment(head)]
+    first = f"(* {_inert(head)}: {_inert(lines[0])}"
+    rest = ["   " + _inert(line) for line in lines[1:]]
+    out = [first, *rest]
+    out[-1] += " *)"
+    return out
 
 
 def body_lines(networks: list[Network], labels: dict[str, int], declarations: Declarations) -> list[Line]:
@@ -67,7 +86,7 @@ def _structured(networks: list[Network], labels: dict[str, int]) -> bool:
 
 
 def _statements(network: Network, level: int) -> list[Line]:
-    lines = [Line(INDENT * level + comment(text), network.id) for text in network.title]
+    lines = [Line(INDENT * level + text, network.id) for text in network.title]
     for element, statement in network.planned.statements:
         lines += _printed([statement], level, network.id, element)
     return lines
@@ -96,12 +115,15 @@ def _structured_lines(networks: list[Network], labels: dict[str, int], start: in
         if target == index:
             continue  # to the next network: nothing is skipped
         if condition is None:  # always taken: the networks in between never run
+            skipped = [str(n + 1) for n in range(index, target)]
+            what = (
+                f"Network {skipped[0]} never runs" if len(skipped) == 1 else f"Networks {', '.join(skipped)} never run"
+            )
             lines += [
                 Line(
                     INDENT * level
                     + comment(
-                        f"Networks {', '.join(n.id for n in networks[index:target])} "
-                        f"never run: the jump in network {network.id} always skips them"
+                        f"{what}: the jump in network {index} always skips {'it' if len(skipped) == 1 else 'them'}"
                     ),
                     network.id,
                     element,

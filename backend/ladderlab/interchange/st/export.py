@@ -1,4 +1,5 @@
-"""ST export of a POU: the complete IEC text of an LD/FBD POU that behaves like the diagram (issue 8).
+"""ST export of a POU: the complete IEC text of an LD/FBD POU that behaves like the diagram (issue 8), or of an
+IL POU (``il.py``).
 
 ``export_pou_st(project, name)`` returns the POU's text, a source map (text line
 -> network and element) and diagnostics. ST POUs export as their text
@@ -16,15 +17,20 @@ from dataclasses import dataclass, field
 from ...ir.diagram_checks import canonical_label
 from ...ir.lower_project import lower_pou
 from ...model import Diagnostic, Pou, Project, has_errors
+from ...model.sfc import SfcBody
 from ...st.checker import check_project
+from ...st.columns import align_declarations
+from ...st.sfc_text import sfc_to_text
 from ...st.symbols import CheckResult
 from ...storage.st_text import compose_pou_text
-from .body import Network, body_lines, comment
+from .body import Network, body_lines, comment, network_title
 from .elements import PouScope
 from .fbd import fbd_network
+from .il import il_to_st
 from .ld import ld_network
 from .names import Names
 from .network import Declarations, plan
+from .sfc import st_sfc_pou
 
 SourceMap = list[tuple[int, str, str | None]]
 
@@ -39,12 +45,15 @@ class StExport:
     diagnostics: list[Diagnostic] = field(default_factory=list)
 
 
-def export_pou_st(project: Project, pou_name: str) -> StExport:
+def export_pou_st(project: Project, pou_name: str, *, sfc_text: bool = False) -> StExport:
+    """``sfc_text``: an SFC POU as IEC textual SFC (steps, transitions, actions) instead of the ST of its scan."""
     pou = project.pou(pou_name)
     if pou is None:
         return StExport("", [], [Diagnostic(code="EXPORT-UNKNOWN-POU", message=f"the project has no POU '{pou_name}'")])
     if pou.language == "st":
         return StExport(compose_pou_text(pou))
+    if sfc_text and pou.language == "sfc":
+        return textual_sfc(project, pou)
     checked = check_project(project)
     exported = st_pou(project, pou, checked)
     if has_errors(exported.diagnostics):
@@ -68,13 +77,21 @@ class ExportedPou:
 
 
 def st_pou(project: Project, pou: Pou, checked: CheckResult) -> ExportedPou:
-    """The ST version of the diagram POU ``pou``, or diagnostics saying why it cannot be exported."""
+    """The ST version of the diagram or IL POU ``pou``, or diagnostics saying why it cannot be exported."""
     info = checked.pou(pou.name)
     diagnostics: list[Diagnostic] = [
         d for d in checked.diagnostics if d.pou is None or d.pou.upper() == pou.name.upper()
     ]
     if info is None or has_errors(diagnostics):
         return ExportedPou(None, [], _refused(pou, diagnostics))
+    if pou.language == "sfc":
+        made = st_sfc_pou(project, pou, checked, diagnostics)
+        if made.pou is None:
+            return ExportedPou(None, [], _refused(pou, made.diagnostics))
+        return ExportedPou(made.pou, [], made.diagnostics)
+    if pou.language == "il":
+        exported_il, problems = il_to_st(pou, checked)
+        return ExportedPou(exported_il, [], problems + [d for d in diagnostics if d.severity != "error"])
     lowered = lower_pou(pou, info, checked, diagnostics)
     if has_errors(diagnostics):
         return ExportedPou(None, [], _refused(pou, diagnostics))
@@ -82,9 +99,8 @@ def st_pou(project: Project, pou: Pou, checked: CheckResult) -> ExportedPou:
     scope = PouScope(checked, info, declarations)
     networks: list[Network] = []
     for index, network in enumerate(pou.body.networks):
-        code = ld_network(scope, network) if pou.language == "ld" else fbd_network(scope, network, lowered)
-        title = f"Network {index + 1} ({network.id})" + (f", label {network.label.strip()}" if network.label else "")
-        lines = [title] + [line.strip() for line in (network.comment or "").splitlines() if line.strip()]
+        code = ld_network(scope, network, index + 1) if pou.language == "ld" else fbd_network(scope, network, lowered)
+        lines = network_title(index + 1, network.label, network.comment)
         controls = [(c.label, c.element) for c in code.controls]
         networks.append(Network(network.id, lines, plan(code, declarations), controls))
     labels = {canonical_label(n.label): index for index, n in enumerate(pou.body.networks) if n.label}
@@ -107,8 +123,22 @@ def st_pou(project: Project, pou: Pou, checked: CheckResult) -> ExportedPou:
     )
 
 
+def textual_sfc(project: Project, pou: Pou) -> StExport:
+    """An SFC POU in IEC textual SFC, refused (located) when it has errors or what the text cannot say."""
+    diagnostics = [d for d in check_project(project).diagnostics if (d.pou or "").upper() == pou.name.upper()]
+    if has_errors(diagnostics):
+        return StExport("", [], _refused(pou, diagnostics))
+    assert isinstance(pou.body, SfcBody)
+    body, problems = sfc_to_text(pou.name, pou.body)
+    if problems:
+        return StExport("", [], problems)
+    text = compose_pou_text(pou.model_copy(update={"language": "st", "body": body}))
+    return StExport(text, [], diagnostics)
+
+
 def _declarations(user: str, declarations: Declarations) -> str:
-    """The user's declarations as typed, then the export's variables (persistent ones, then temporaries)."""
+    """The user's declarations, then the export's variables (persistent ones, then temporaries), all aligned in
+    columns (``st.columns``)."""
     blocks = [user] if user.strip() else []
     for var_class in ("VAR", "VAR_TEMP"):
         items = [(name, type_text) for name, type_text, kind in declarations.items if kind == var_class]
@@ -116,7 +146,7 @@ def _declarations(user: str, declarations: Declarations) -> str:
             lines = [f"{var_class} {comment('generated by the ST export')}"]
             lines += [f"    {name} : {type_text};" for name, type_text in items]
             blocks.append("\n".join(lines + ["END_VAR"]))
-    return "\n".join(blocks)
+    return align_declarations("\n".join(blocks))
 
 
 def _refused(pou: Pou, diagnostics: list[Diagnostic]) -> list[Diagnostic]:

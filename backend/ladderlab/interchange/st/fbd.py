@@ -23,7 +23,7 @@ from ...ir.lower_fbd import root_names  # the variable an output node writes, ex
 from ...model import fbd
 from ...st import ast
 from ...st.checker import check_operand
-from .elements import PouScope, callee_of, function_call, operand, output_pin
+from .elements import PouScope, callee_of, function_call, operand, output_pin, owner, text_of
 from .network import Control, NetworkCode, Use, Value
 
 
@@ -86,57 +86,69 @@ class _Network:
         raise ValueError(f"feedback from {source.node}.{source.pin} without a variable")  # refused by the lowering
 
     def as_value(self, value: PinValue, element: str, hint: str) -> Value:
-        """``value`` fixed at this position (an operand text is read here, once)."""
+        """``value`` as read at this position (the planner moves it to its users when nothing in between
+        writes what it reads)."""
         if isinstance(value, Value):
             return value
-        return self.code.value(value.expr, element, hint, pinned=True)
+        return self.code.value(value.expr, element, hint)
 
     # ------------------------------------------------------------ nodes
     def input_node(self, node: fbd.InputNode) -> None:
+        """Read where its consumers run; one whose variable an output of this network writes is read where it
+        stands (the lowering's temporary), kept as ``<var>_prev`` only when a write comes before its use."""
         expr = operand(node.expr)
         if self.written & set(_variables(expr)):
-            checked, _ = check_operand(self.scope.checked, self.scope.info.name, node.expr)
-            self.values[(node.id, "OUT")] = self.code.value(expr, node.id, node.id, type=str(checked.ty), pinned=True)
+            hint = f"{text_of(expr)}_prev"
+            self.values[(node.id, "OUT")] = self.code.value(expr, node.id, hint, type=self.type_of(node.expr))
         else:
             self.values[(node.id, "OUT")] = Text(expr)
+
+    def type_of(self, text: str) -> str:
+        checked, _ = check_operand(self.scope.checked, self.scope.info.name, text)
+        return str(checked.ty)
 
     def output_node(self, node: fbd.OutputNode) -> None:
         value = self.source(node.id, "IN")
         source = self.graph.inputs[node.id]["IN"]
         enable = self.enables.get(source.node) if source.pin != "ENO" else None
         guard = self.read(enable) if enable is not None else None
-        self.scope.coil(self.code, node.mode, operand(node.var), self.read(value), node.id, guard)
+        target_type = self.type_of(node.var) if isinstance(value, Value) and node.mode == "normal" else None
+        self.scope.coil(self.code, node.mode, operand(node.var), self.read(value), node.id, guard, target_type)
 
     def control(self, node: fbd.FbdJump | fbd.FbdReturn) -> None:
         condition = None
+        hint = f"jump_{node.target}" if isinstance(node, fbd.FbdJump) else "return_now"
         if "IN" in self.graph.inputs.get(node.id, {}):
-            condition = self.code.value(self.read(self.source(node.id, "IN")), node.id, node.id)
+            condition = self.code.value(self.read(self.source(node.id, "IN")), node.id, hint)
         label = canonical_label(node.target) if isinstance(node, fbd.FbdJump) else None
         self.code.controls.append(Control(label, condition, node.id))
 
-    def flagged(self, value: PinValue, flags: fbd.PinFlags | None, node: str, pin: str) -> PinValue:
-        """An input with its pin flags: inversion first, then edge detection."""
+    def flagged(self, value: PinValue, flags: fbd.PinFlags | None, node: str, pin: str, name: str) -> PinValue:
+        """An input with its pin flags: inversion first, then edge detection. ``name`` is the block's (its
+        instance or function): an edge of a variable is named after the variable, else after the pin."""
         if flags is None or (not flags.negated and flags.edge is None):
             return value
         expr = self.read(value)
         if flags.negated:
             expr = ast.Unary("NOT", expr)
         if flags.edge is not None:
-            return self.scope.edge(self.code, flags.edge == "rising", expr, node, f"{node}_{pin}")
-        return Text(expr) if isinstance(value, Text) else self.code.value(expr, node, f"{node}_{pin}")
+            watched = text_of(value.expr) if isinstance(value, Text) and not flags.negated else f"{name}_{pin}"
+            return self.scope.edge(self.code, flags.edge == "rising", expr, node, watched)
+        return Text(expr) if isinstance(value, Text) else self.code.value(expr, node, f"{name}_{pin}")
 
     def block(self, node: fbd.Block) -> None:
         scope, code = self.scope, self.code
         callee = callee_of(scope.checked, node.call)
+        instance = operand(node.instance) if callee.is_fb else None
+        name = owner(callee, instance)
         flags = _flags(node)
         inputs: dict[str, PinValue] = {}
         for pin in self.graph.inputs.get(node.id, {}):
-            inputs[pin] = self.flagged(self.source(node.id, pin), flags.get(pin), node.id, pin)
+            inputs[pin] = self.flagged(self.source(node.id, pin), flags.get(pin), node.id, pin, name)
         en = inputs.pop("EN", None)
         if en is not None and (node.id, "ENO") in self.consumed:
-            en = self.as_value(en, node.id, f"{node.id}_EN")
+            en = self.as_value(en, node.id, f"{name}_EN")
         args = {pin: self.read(value) for pin, value in inputs.items()}
-        instance = operand(node.instance) if callee.is_fb else None
         guard = self.read(en) if en is not None else None
         pins: dict[str, PinValue] = {}
         if callee.is_fb:
@@ -146,15 +158,12 @@ class _Network:
                 pins["ENO"] = en
         elif en is None:
             result_type = self.result_type(node, callee)
-            operands = [args[pin] for pin in sorted(args, key=callee.rank)]
-            call = _operator(callee.name, operands, result_type) if callee.pou is None else None
-            if call is None:
-                call = function_call(callee, args)
-            pins["OUT"] = code.value(call, node.id, f"{node.id}_OUT", type=result_type, effect=callee.pou is not None)
+            call = function_call(callee, args)
+            pins["OUT"] = code.value(call, node.id, f"{name}_OUT", type=result_type, effect=callee.pou is not None)
         else:
             target = None
             if (node.id, "OUT") in self.consumed:
-                target = ast.Name(scope.declarations.declare(f"{node.id}_OUT", self.result_type(node, callee), "VAR"))
+                target = ast.Name(scope.declarations.declare(f"{name}_OUT", self.result_type(node, callee), "VAR"))
                 pins["OUT"] = Text(target)
             eno = scope.call(
                 code,
@@ -165,7 +174,7 @@ class _Network:
                 guard,
                 node.id,
                 target,
-                eno_hint=node.id if (node.id, "ENO") in self.consumed else None,
+                eno_hint=name if (node.id, "ENO") in self.consumed else None,
             )
             pins["ENO"] = eno if eno is not None else en
         if en is not None:
@@ -173,7 +182,7 @@ class _Network:
         for pin, value in pins.items():
             flag = flags.get(pin)
             if flag is not None and flag.negated:
-                value = code.value(ast.Unary("NOT", self.read(value)), node.id, f"{node.id}_{pin}")
+                value = code.value(ast.Unary("NOT", self.read(value)), node.id, f"{name}_not_{pin}")
             self.values[(node.id, pin)] = value
 
     def result_type(self, node: fbd.Block, callee) -> str:
@@ -182,21 +191,6 @@ class _Network:
             model = self.scope.checked.pou(callee.name)
             return str(model.return_type)
         return _type_text(self.result_types[node.id])
-
-
-def _operator(function: str, operands: list[Any], result_type: str) -> Any:
-    """BOOL AND/OR/XOR/NOT blocks as the operators they are, MOVE as its input (docs/ir.md: ``MOVE(x)`` without
-    EN is ``x``); None for any other call."""
-    if function == "MOVE":
-        return operands[0]
-    if result_type != "BOOL" or function not in ("AND", "OR", "XOR", "NOT"):
-        return None
-    if function == "NOT":
-        return ast.Unary("NOT", operands[0])
-    result = operands[0]
-    for operand_ in operands[1:]:
-        result = ast.Binary(function, result, operand_)
-    return result
 
 
 def _flags(node: fbd.FbdNode) -> dict[str, fbd.PinFlags]:

@@ -18,7 +18,7 @@ from typing import Any
 from ...ir.diagram_checks import canonical_label
 from ...model import ld
 from ...st import ast
-from .elements import PouScope, callee_of, function_call, operand, output_pin
+from .elements import PouScope, callee_of, function_call, operand, output_pin, owner, text_of
 from .network import TRUE, Control, NetworkCode, Use, Value, conjunction, disjunction
 
 _COMPARE = {"GT": ">", "GE": ">=", "EQ": "=", "LE": "<=", "LT": "<", "NE": "<>"}
@@ -46,15 +46,16 @@ class Power:
         return Use(value) if value is not None else TRUE
 
 
-def ld_network(scope: PouScope, network: ld.LdNetwork) -> NetworkCode:
-    return _Rung(scope, network).code
+def ld_network(scope: PouScope, network: ld.LdNetwork, number: int) -> NetworkCode:
+    """Network ``network``, the ``number``-th of its POU (1-based: what the editor shows)."""
+    return _Rung(scope, network, number).code
 
 
 class _Rung:
-    def __init__(self, scope: PouScope, network: ld.LdNetwork):
+    def __init__(self, scope: PouScope, network: ld.LdNetwork, number: int):
         self.scope, self.network = scope, network
         self.code = NetworkCode()
-        self.hint = f"{network.id}_rung"
+        self.hint = f"rung{number}"  # the power of this rung, where several elements need it
         self.series(network.elements, Power())
 
     def expr(self, power: Power, element: str) -> Any:
@@ -75,35 +76,40 @@ class _Rung:
             return Power(power.base, power.terms + (self.contact(element),))
         if isinstance(element, ld.Compare):
             condition = ast.Binary(_COMPARE[element.op], operand(element.left), operand(element.right))
-            return Power(power.base, power.terms + (self.code.value(condition, element.id, element.id),))
+            hint = f"{element.left}_{element.op}_{element.right}"
+            return Power(power.base, power.terms + (self.code.value(condition, element.id, hint),))
         if isinstance(element, ld.Coil):
-            self.scope.coil(self.code, element.mode, operand(element.var), self.expr(power, element.id), element.id)
+            target = operand(element.var)
+            self.scope.coil(self.code, element.mode, target, self.expr(power, element.id), element.id, None, "BOOL")
             return power
         if isinstance(element, ld.Parallel):
             return self.parallel(element, power)
         return self.box(element, power)
 
     def contact(self, contact: ld.Contact) -> Value:
+        """The contact's term: its variable as read here (kept as ``<var>_prev`` when a coil before its use
+        writes it), negated for nc, or the edge of it."""
         variable = operand(contact.var)
+        if contact.mode in ("p", "n"):
+            return self.scope.edge(self.code, contact.mode == "p", variable, contact.id, text_of(variable))
+        read = self.code.value(variable, contact.id, f"{text_of(variable)}_prev")
         if contact.mode == "no":
-            return self.code.value(variable, contact.id, contact.id)
-        if contact.mode == "nc":
-            return self.code.value(ast.Unary("NOT", variable), contact.id, contact.id)
-        return self.scope.edge(self.code, contact.mode == "p", variable, contact.id, contact.id)
+            return read
+        return self.code.value(ast.Unary("NOT", Use(read)), contact.id, f"not_{text_of(variable)}")
 
     def parallel(self, element: ld.Parallel, power: Power) -> Power:
         """OR of the branches that reach the right side; factored when they only add terms to ``power``."""
         reaching = [out for branch in element.branches if (out := self.series(branch, power)) is not None]
         if not reaching:
-            return Power(self.code.value(ast.BoolLit(False), element.id, element.id))
+            return Power(self.code.value(ast.BoolLit(False), element.id, self.hint))
         if all(out.base is power.base and out.terms[: len(power.terms)] == power.terms for out in reaching):
             extras = [out.terms[len(power.terms) :] for out in reaching]
             if any(not extra for extra in extras):  # power OR (power AND x) = power
                 return power
             branches = disjunction([conjunction([Use(term) for term in extra]) for extra in extras])
-            return Power(power.base, power.terms + (self.code.value(branches, element.id, element.id),))
+            return Power(power.base, power.terms + (self.code.value(branches, element.id, self.hint),))
         branches = disjunction([self.expr(out, element.id) for out in reaching])
-        return Power(self.code.value(branches, element.id, element.id))
+        return Power(self.code.value(branches, element.id, self.hint))
 
     def box(self, box: ld.Box, power: Power) -> Power:
         """A box as the call the lowering checks: power into EN or the first free BOOL input, out of ENO or the
@@ -126,14 +132,15 @@ class _Rung:
             en = None
             free = next(pin for pin in callee.bool_inputs() if pin not in inputs)
             inputs[free] = self.expr(power, box.id)
+        name = owner(callee, instance)
         if not callee.is_fb and target is None and not box.en and callee.pou is None:
-            return Power(code.value(function_call(callee, inputs), box.id, box.id))
+            return Power(code.value(function_call(callee, inputs), box.id, f"{name}_OUT"))
         if not callee.is_fb and target is None and not box.en:  # a user function: run where the box is
-            return Power(code.value(function_call(callee, inputs), box.id, box.id, effect=True))
-        eno = scope.call(code, callee, instance, inputs, outputs, en, box.id, target, eno_hint=box.id)
+            return Power(code.value(function_call(callee, inputs), box.id, f"{name}_OUT", effect=True))
+        eno = scope.call(code, callee, instance, inputs, outputs, en, box.id, target, eno_hint=name)
         if box.en:
             return Power(eno) if eno is not None else Power(enable)
         if callee.is_fb:
             pin = callee.bool_outputs()[0]
-            return Power(code.value(output_pin(callee, instance, pin), box.id, box.id))
-        return Power(code.value(target, box.id, box.id))
+            return Power(code.value(output_pin(callee, instance, pin), box.id, f"{name}_{pin}"))
+        return Power(code.value(target, box.id, text_of(target)))

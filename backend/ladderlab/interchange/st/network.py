@@ -11,10 +11,15 @@ expression and what a named temporary. A value is written inline into its one
 user when no step between its position and the place where the user is finally
 evaluated writes a variable the value reads (a step calling a user POU may write
 anything). A trivial value (a variable, ``NOT`` variable, a literal) may be
-inlined into several users under the same rule; everything else used more than
-once - "a rung value used by several coils" - is computed once into a temporary.
-A value that may fault (non-constant index, integer division, MUX) always gets
-its temporary, so it is evaluated exactly where the diagram evaluates it.
+inlined into several users under the same rule. A value used several times whose
+first user writes it to a variable of its own type (``Speed := a * 10 + 5``) is
+read back from that variable by the others (``HighSpeed := Speed > 50``) while
+nothing writes it in between. Only what is left - "a rung value used by several
+set coils", a variable read before the network writes it - gets a temporary,
+named after what it holds (``rung2``, ``Lamp_prev``, ``TON1_Q``). A value that
+may fault (non-constant index, integer division, MUX) or calls a user function
+moves to its user only past nothing that could act first (no step, no other such
+value), so it is evaluated exactly where the diagram evaluates it.
 """
 
 from __future__ import annotations
@@ -71,6 +76,7 @@ class Step:
     optional: Value | None = None
     without: list[Any] | None = None
     declare: tuple[str, str, str] | None = None  # the optional value's variable, declared only when used
+    carries: tuple[Value, Any, str | None] | None = None  # statements are ``target := Use(value)``; target's type
 
 
 @dataclass(eq=False)
@@ -122,7 +128,7 @@ class Planned:
 
 
 def plan(code: NetworkCode, declarations: Declarations) -> Planned:
-    """Decide inline or temporary for every value (module docstring) and build the final statements."""
+    """Decide inline, carried or temporary for every value (module docstring) and build the final statements."""
     position = {id(op): index for index, op in enumerate(code.ops)}
     end = len(code.ops)
     users: dict[int, list[Any]] = {id(op): [] for op in code.ops if isinstance(op, Value)}
@@ -137,18 +143,47 @@ def plan(code: NetworkCode, declarations: Declarations) -> Planned:
         for op in code.ops
         if isinstance(op, Step) or op.effect
     ]
+    barriers = [op for op in code.ops if isinstance(op, Step) or op.effect or op.fallible]
     final: dict[int, int] = {}  # value -> where its expression is finally evaluated
     inline: set[int] = set()
+    carried: dict[int, Value] = {}  # id of the step that writes the value first -> the value
+    moved: set[int] = set()  # carried values
 
     def evaluated_at(user: Any) -> int:
         if isinstance(user, Control):
             return end
-        if isinstance(user, Step) or id(user) not in inline:
+        if isinstance(user, Step) or (id(user) not in inline and id(user) not in moved):
             return position[id(user)]
         return final[id(user)]
 
-    def undisturbed(value: Value, start: int, stop: int) -> bool:
-        return not any(start < at < stop and (writes is None or writes & value.reads) for at, writes in effects)
+    def undisturbed(reads: frozenset[str], start: int, stop: int) -> bool:
+        return not any(start < at < stop and (writes is None or writes & reads) for at, writes in effects)
+
+    def movable(value: Value, stop: int) -> bool:
+        """Can ``value`` be evaluated at ``stop`` instead of where it stands?"""
+        start = position[id(value)]
+        if value.fallible:  # nothing that acts or may fault may come first, except what is computed from it
+            return not any(
+                start < position[id(op)] < stop and not (isinstance(op, Value) and _computed_from(op, value))
+                for op in barriers
+            )
+        return undisturbed(value.reads, start, stop)
+
+    def carrier(value: Value, found: list[Any]) -> Step | None:
+        """The step that writes ``value`` to a variable of its type before every other user reads it."""
+        steps = [u for u in found if isinstance(u, Step) and u.carries is not None and u.carries[0] is value]
+        if not steps:
+            return None
+        step = min(steps, key=lambda u: position[id(u)])
+        _, target, target_type = step.carries
+        at = position[id(step)]
+        root = frozenset({root_name(target)})
+        others = [evaluated_at(u) for u in found if u is not step]
+        if target_type != value.type or not movable(value, at) or any(stop <= at for stop in others):
+            return None
+        if not all(undisturbed(root | read_names(target), at, stop) for stop in others):
+            return None
+        return step
 
     for op in reversed(code.ops):
         if not isinstance(op, Value):
@@ -158,15 +193,21 @@ def plan(code: NetworkCode, declarations: Declarations) -> Planned:
             for part in uses_in(op.expr):
                 users[id(part)].remove(op)
             continue
-        if op.pinned or op.effect or op.fallible:
+        if op.pinned or op.effect or (not found and op.fallible):
             final[id(op)] = position[id(op)]
             continue
-        if len(found) == 1 or trivial(op.expr):
+        if len(found) == 1 or (trivial(op.expr) and not op.fallible):
             stops = [evaluated_at(user) for user in found]
-            if all(undisturbed(op, position[id(op)], stop) for stop in stops):
+            if all(movable(op, stop) for stop in stops):
                 inline.add(id(op))
                 final[id(op)] = stops[0]
                 continue
+        step = carrier(op, found)
+        if step is not None:
+            carried[id(step)] = op
+            moved.add(id(op))
+            final[id(op)] = position[id(step)]
+            continue
         final[id(op)] = position[id(op)]
 
     temps: dict[int, ast.Expr] = {}
@@ -184,7 +225,9 @@ def plan(code: NetworkCode, declarations: Declarations) -> Planned:
             if full and op.declare is not None:
                 declarations.items.append(op.declare)
             statements += [(op.element, resolve(s)) for s in chosen]
-        elif id(op) not in inline and (users[id(op)] or op.pinned or op.effect or op.fallible):
+            if id(op) in carried:  # later users read the variable it wrote
+                temps[id(carried[id(op)])] = op.carries[1]
+        elif id(op) not in inline and _stored(op, users, moved):
             expr = resolve(op.expr)
             if op.effect and not users[id(op)]:  # a user function box whose result nothing reads
                 statements.append((op.element, ast.CallStmt(expr)))
@@ -194,6 +237,24 @@ def plan(code: NetworkCode, declarations: Declarations) -> Planned:
                 statements.append((op.element, ast.Assign(ast.Name(name), expr)))
     conditions = [resolve(Use(c.cond)) if c.cond is not None else None for c in code.controls]
     return Planned(statements, conditions)
+
+
+def _computed_from(op: Value, value: Value) -> bool:
+    """Does ``op``'s expression use ``value``, directly or through other values?"""
+    todo, seen = list(uses_in(op.expr)), set()
+    while todo:
+        part = todo.pop()
+        if part is value:
+            return True
+        if id(part) not in seen:
+            seen.add(id(part))
+            todo += uses_in(part.expr)
+    return False
+
+
+def _stored(op: Value, users: dict[int, list[Any]], moved: set[int]) -> bool:
+    """Does ``op`` (not inline) get its own statement here?"""
+    return id(op) not in moved and (bool(users[id(op)]) or op.pinned or op.effect or op.fallible)
 
 
 # ------------------------------------------------------------------ AST helpers

@@ -1,27 +1,32 @@
-"""A whole project as one IEC ST file: TYPEs, VAR_GLOBAL, every POU, and the task configuration.
+"""A whole project as one IEC ST file: TYPEs, VAR_GLOBAL, every POU, and the configuration.
 
 The types and globals texts are kept as typed; ST POUs as their text, LD/FBD
-POUs as their ST export (st_export). The tasks become ``CONFIGURATION`` /
-``RESOURCE ... ON PLC`` / ``TASK name(INTERVAL := ..., PRIORITY := ...)`` /
-``PROGRAM inst WITH task : Type;``. A project without tasks runs every PROGRAM
-in one 10 ms task (ir/lower_project.py DEFAULT_TASK), and the file says so
-explicitly, so another tool runs it the same way. The file reads back with
+POUs as their ST export (st_export). A project's configuration is written as it
+is (its VAR_GLOBAL, VAR_ACCESS and VAR_CONFIG texts, ``RESOURCE name ON cpu``,
+``TASK name(INTERVAL := ..., SINGLE := ..., PRIORITY := ...)``, ``PROGRAM [RETAIN]
+inst WITH task : Type(in := expr, out => var);``); a project's own tasks become
+one ``CONFIGURATION`` / ``RESOURCE ... ON PLC`` whose instances are named after
+their programs. A project without either runs every PROGRAM in one 10 ms task
+(ir/lower_configuration.py DEFAULT_TASK), and the file says so explicitly, so
+another tool runs it the same way. The file reads back with
 ``st.project_text.source_to_project``.
 """
 
 from __future__ import annotations
 
-from ...ir.lower_project import DEFAULT_INTERVAL_MS, DEFAULT_TASK
-from ...model import Diagnostic, Project, Task, has_errors
+import textwrap
+
+from ...ir.lower_configuration import DEFAULT_INTERVAL_MS, DEFAULT_TASK
+from ...model import Configuration, Diagnostic, ProgramInstance, Project, Resource, Task, has_errors
 from ...st.checker import check_project
 from ...st.printer import INDENT
 from ...st.project_text import source_to_project
 from ...storage.st_text import compose_pou_text
-from .export import StExport, st_pou
+from .export import StExport, st_pou, textual_sfc
 from .names import Names
 
 
-def export_project_st(project: Project) -> StExport:
+def export_project_st(project: Project, *, sfc_text: bool = False) -> StExport:
     """The project's complete ST text; ``source_map`` entries name the network as ``POU/network``."""
     checked = check_project(project)
     parts: list[str] = []
@@ -34,6 +39,12 @@ def export_project_st(project: Project) -> StExport:
     for pou in project.pous:
         if pou.language == "st":
             parts.append(compose_pou_text(pou).rstrip("\n"))
+            continue
+        if sfc_text and pou.language == "sfc":
+            textual = textual_sfc(project, pou)
+            diagnostics += textual.diagnostics
+            if textual.text:
+                parts.append(textual.text.rstrip("\n"))
             continue
         exported = st_pou(project, pou, checked)
         diagnostics += exported.diagnostics
@@ -70,7 +81,9 @@ def verify_text(text: str, name: str) -> list[Diagnostic]:
 
 
 def configuration(project: Project, names: Names) -> str:
-    """``CONFIGURATION`` with one resource holding the project's tasks and the programs they run."""
+    """The CONFIGURATION the project runs as (its own, or one made of its tasks)."""
+    if project.configuration is not None:
+        return _configuration(project.configuration)
     tasks = project.tasks or [
         Task(
             name=DEFAULT_TASK,
@@ -79,14 +92,46 @@ def configuration(project: Project, names: Names) -> str:
             programs=[p.name for p in project.pous if p.kind == "program"],
         )
     ]
-    lines = [
-        f"CONFIGURATION {names.fresh(f'{project.name}_config')}",
-        f"{INDENT}RESOURCE {names.fresh('main_resource')} ON PLC",
-    ]
-    lines += [
-        f"{INDENT * 2}TASK {task.name}(INTERVAL := {task.interval}, PRIORITY := {task.priority});" for task in tasks
-    ]
-    lines += [
-        f"{INDENT * 2}PROGRAM {program} WITH {task.name} : {program};" for task in tasks for program in task.programs
-    ]
-    return "\n".join(lines + [f"{INDENT}END_RESOURCE", "END_CONFIGURATION"])
+    made = Configuration(
+        name=names.fresh(f"{project.name}_config"),
+        resources=[Resource(name=names.fresh("main_resource"), on="PLC", tasks=tasks)],
+    )
+    return _configuration(made)
+
+
+def _configuration(config: Configuration) -> str:
+    lines = [f"CONFIGURATION {config.name}", *_text(config.globals, 1)]
+    for resource in config.resources:
+        level = 1 if resource.name is None else 2
+        if resource.name is not None:
+            lines.append(f"{INDENT}RESOURCE {resource.name}" + (f" ON {resource.on}" if resource.on else ""))
+        lines += _text(resource.globals, level)
+        lines += [f"{INDENT * level}{_task(task)}" for task in resource.tasks]
+        for task in resource.tasks:
+            lines += [f"{INDENT * level}{_program(program, task.name)}" for program in task.programs]
+        lines += [f"{INDENT * level}{_program(program, None)}" for program in resource.programs]
+        if resource.name is not None:
+            lines.append(f"{INDENT}END_RESOURCE")
+    lines += _text(config.access, 1) + _text(config.config, 1)
+    return "\n".join([*lines, "END_CONFIGURATION"])
+
+
+def _task(task: Task) -> str:
+    properties = [("INTERVAL", task.interval), ("SINGLE", task.single), ("PRIORITY", str(task.priority))]
+    return f"TASK {task.name}({', '.join(f'{n} := {v}' for n, v in properties if v is not None)});"
+
+
+def _program(program: str | ProgramInstance, task: str | None) -> str:
+    instance = ProgramInstance(name=program, type=program) if isinstance(program, str) else program
+    retain = f"{instance.retain} " if instance.retain else ""
+    args = [f"{n} := {v}" for n, v in instance.inputs.items()] + [f"{n} => {v}" for n, v in instance.outputs.items()]
+    with_task = f" WITH {task}" if task is not None else ""
+    return (
+        f"PROGRAM {retain}{instance.name}{with_task} : {instance.type}" + (f"({', '.join(args)})" if args else "") + ";"
+    )
+
+
+def _text(text: str, level: int) -> list[str]:
+    """A configuration text (VAR blocks as typed) indented into the CONFIGURATION, blank lines around it dropped."""
+    lines = textwrap.dedent(text.strip("\n")).splitlines()
+    return [INDENT * level + line if line.strip() else "" for line in lines]

@@ -6,6 +6,7 @@
 // write/force from the context menu, and breakpoints. The undo history is the caller's (one per POU).
 import "@xyflow/react/dist/style.css";
 import "../../ld/ld.css";
+import { useNodeLayout } from "./useNodeLayout";
 import "./fbd.css";
 import type { Connection } from "@xyflow/react";
 import {
@@ -28,8 +29,9 @@ import { OperandEditor } from "../../ld/editor/OperandEditor";
 import { clipboardActions, type LastClip } from "../../ld/editor/systemClipboard";
 import { OperandValuePrompt, type ValueRequest } from "../../ld/editor/ValuePrompt";
 import { onlineOperandItems } from "../../online/operandCommands";
+import { referencesItem } from "../../xref/store";
 import { canRedo, canUndo, record, redo, undo, type History } from "../../ld/history";
-import { arrange } from "../arrange";
+
 import { clipOf, parseClip, pasteClip, serializeClip } from "../clipboard";
 import { outputType, refusal } from "../compat";
 import {
@@ -54,7 +56,7 @@ import * as ops from "../ops";
 import { moveInOrder } from "../order";
 import { fetchOrder, useEvaluationOrder } from "../useOrder";
 import { FbdEditorContext, type FbdEditorApi, type NodeView } from "./context";
-import { nodeHeight, pinOfHandle } from "./FbdNodeView";
+import { pinOfHandle } from "./FbdNodeView";
 import { DRAG_FORMAT, NetworkCanvas, type NetworkSelection } from "./NetworkCanvas";
 import { dispatchKey, keysOf, type CommandOf } from "../../keys/keymap";
 import { ShortcutHelp } from "../../keys/ShortcutHelp";
@@ -92,7 +94,7 @@ export interface FbdEditorProps {
 }
 
 type Selection = NetworkSelection & { network: string };
-type PaletteKind = "input" | "output" | "block" | "jump" | "return" | "connector" | "continuation";
+type PaletteKind = "input" | "output" | "block" | "jump" | "return" | "connector" | "continuation" | "comment";
 
 const PALETTE: { kind: PaletteKind; label: string }[] = [
   { kind: "input", label: "Input" },
@@ -102,6 +104,7 @@ const PALETTE: { kind: PaletteKind; label: string }[] = [
   { kind: "return", label: "Return" },
   { kind: "connector", label: "Connector" },
   { kind: "continuation", label: "Continuation" },
+  { kind: "comment", label: "Comment box" },
 ];
 const COLUMN_OF: Record<PaletteKind, number> = {
   input: 20,
@@ -111,8 +114,9 @@ const COLUMN_OF: Record<PaletteKind, number> = {
   jump: 480,
   return: 480,
   connector: 480,
+  comment: 20,
 };
-const WITH_TEXT = new Set(["input", "output", "jump", "connector", "continuation"]);
+const WITH_TEXT = new Set(["input", "output", "jump", "connector", "continuation", "comment"]);
 const OUTPUT_MODES: { mode: OutputMode; label: string }[] = [
   { mode: "normal", label: "Output: normal" },
   { mode: "negated", label: "Output: negated" },
@@ -175,24 +179,8 @@ export function FbdEditor({
   const networks = networksOf(body);
   const locked = readOnly !== null;
 
-  const heightOf = useCallback(
-    (network: FbdNetwork) => (node: FbdNode) => {
-      const pins = nodePins(node, network, lookup, symbols);
-      return nodeHeight(node, Math.max(pins.inputs.length, pins.outputs.length));
-    },
-    [lookup, symbols],
-  );
   // Nodes without a stored position (imported, hand-written) are drawn where auto-arrange would put them.
-  const fallbacks = useMemo(
-    () =>
-      new Map(
-        networks.map((n) => [
-          n.id,
-          nodesOf(n).every((node) => node.pos) ? new Map<string, Position>() : arrange(n, heightOf(n)),
-        ]),
-      ),
-    [networks, heightOf],
-  );
+  const { heightOf, fallbacks } = useNodeLayout(networks, lookup, symbols);
 
   const byElement = useMemo(() => {
     const map = new Map<string, Diagnostic[]>();
@@ -449,7 +437,10 @@ export function FbdEditor({
             },
           ]),
     ];
-    openMenu(event, [onlineItems(operandOf(node)), edit, order, debugItems, clip]);
+    const operand = operandOf(node);
+    const named = operand ?? (kind === "block" ? (node as Block).instance?.trim() || null : null);
+    const references: MenuItem[] = named ? [referencesItem(named)] : [];
+    openMenu(event, [onlineItems(operand), edit, order, debugItems, references, clip]);
   };
 
   const pinMenu = (node: FbdNode, pin: string, side: "in" | "out", event: MouseEvent) => {

@@ -2,7 +2,7 @@
 // input/output variables, jumps, returns, connectors and continuations; each with its execution
 // order badge, diagnostics, breakpoint mark and online value.
 import { Handle, Position, type Node, type NodeProps } from "@xyflow/react";
-import type { Block, FbdNetwork, FbdNode, OutputMode, PinDef } from "../model";
+import type { Block, FbdComment, FbdNetwork, FbdNode, OutputMode, PinDef } from "../model";
 import { kindOf } from "../model";
 import { OperandEditor } from "../../ld/editor/OperandEditor";
 import { pinKey } from "../../online/pinValues";
@@ -179,6 +179,16 @@ export function FbdNodeView({ data, selected }: NodeProps<FbdFlowNode>) {
         {Array.from({ length: rows }, (_, i) => (
           <PinRow key={i} node={node} input={view.pins.inputs[i]} output={view.pins.outputs[i]} view={view} />
         ))}
+      </div>
+    );
+  }
+
+  if (kind === "comment") {
+    // A free comment box (issue 28): its text where it was drawn, as large as it was drawn; no pins.
+    const note = node as FbdComment;
+    return (
+      <div {...common} style={{ width: note.width ?? undefined, height: note.height ?? undefined }}>
+        <TextField node={node} text={note.text ?? ""} placeholder="comment" label="Comment" />
       </div>
     );
   }

@@ -8,6 +8,7 @@ import {
   ReactFlow,
   ReactFlowProvider,
   useConnection,
+  useNodesInitialized,
   useReactFlow,
   ViewportPortal,
   type Connection,
@@ -20,9 +21,11 @@ import type { Diagnostic } from "../../generated/api";
 import { nodesOf, wireKey, wiresOf, type FbdNetwork, type FbdNode, type Position } from "../model";
 import { probeOf, type FbdOnlineView } from "../online";
 import { FbdNodeView, type FbdFlowNode } from "./FbdNodeView";
+import { OrthogonalEdge } from "./OrthogonalEdge";
 
 export const DRAG_FORMAT = "application/x-ladderlab-fbd";
 const NODE_TYPES = { fbd: FbdNodeView };
+const EDGE_TYPES = { orthogonal: OrthogonalEdge };
 const MIN_HEIGHT = 170;
 /** Room above and left of the diagram, so badges above a node at y = 0 (order, breakpoint) stay in view. */
 const ORIGIN = { x: 12, y: 16, zoom: 1 };
@@ -67,16 +70,37 @@ export interface NetworkCanvasProps {
   onNodeClick(network: string, node: FbdNode, event: MouseEvent): void;
   /** Told when the network comes near the viewport or leaves it (only those are online and get order badges). */
   onNear(network: string, near: boolean): void;
+  /** Drawn for a printed document (src/print): always mounted, every node shown, no controls or grid. */
+  print?: boolean;
 }
 
-/** The canvas height that shows every node of the network at zoom 1. */
-function canvasHeight(
+/** Print: once the nodes are measured, zoom so the whole network fits the width, and say the height it needs. */
+function usePrintFit(
+  print: boolean | undefined,
+  host: React.RefObject<HTMLDivElement | null>,
+  fit: (h: number) => void,
+) {
+  const flow = useReactFlow();
+  const initialized = useNodesInitialized();
+  useEffect(() => {
+    if (!print || !initialized) return;
+    const bounds = flow.getNodesBounds(flow.getNodes());
+    const width = host.current?.clientWidth || 1000;
+    const zoom = Math.min(1, width / (bounds.x + bounds.width + 2 * ORIGIN.x));
+    void flow.setViewport({ x: ORIGIN.x * zoom, y: ORIGIN.y * zoom, zoom });
+    fit(Math.ceil((bounds.y + bounds.height + 2 * ORIGIN.y) * zoom));
+  }, [print, initialized, flow, host, fit]);
+}
+
+/** The canvas height that shows every node of the network at zoom 1 (at most MAX_HEIGHT on screen). */
+export function canvasHeight(
   network: FbdNetwork,
   fallback: ReadonlyMap<string, Position>,
   height: (node: FbdNode) => number,
+  limit = MAX_HEIGHT,
 ): number {
   const bottom = Math.max(0, ...nodesOf(network).map((n) => (n.pos ?? fallback.get(n.id) ?? { y: 0 }).y + height(n)));
-  return Math.min(MAX_HEIGHT, Math.max(MIN_HEIGHT, bottom + 50));
+  return Math.min(limit, Math.max(MIN_HEIGHT, bottom + 50));
 }
 
 function wireClass(value: unknown): string {
@@ -113,9 +137,11 @@ function ConnectionHint({ refusal }: { refusal(c: Connection): string | null }) 
   );
 }
 
-function Canvas(props: NetworkCanvasProps) {
+function Canvas(props: NetworkCanvasProps & { onPrintHeight(height: number): void }) {
   const { network, readOnly, selected, online, fallback } = props;
   const flow = useReactFlow();
+  const host = useRef<HTMLDivElement>(null);
+  usePrintFit(props.print, host, props.onPrintHeight);
   const built = useMemo(
     (): FbdFlowNode[] =>
       nodesOf(network).map((node) => ({
@@ -145,6 +171,7 @@ function Canvas(props: NetworkCanvasProps) {
         // The value shows at the pins (FbdNodeView), the wire its BOOL state by colour.
         return {
           id,
+          type: "orthogonal",
           source: w.from.node,
           sourceHandle: `out:${w.from.pin}`,
           target: w.to.node,
@@ -196,6 +223,7 @@ function Canvas(props: NetworkCanvasProps) {
   return (
     <div
       className="fbd-canvas"
+      ref={host}
       onDragOver={(e) => {
         if (e.dataTransfer.types.includes(DRAG_FORMAT)) e.preventDefault();
       }}
@@ -205,6 +233,7 @@ function Canvas(props: NetworkCanvasProps) {
         nodes={nodes}
         edges={edges}
         nodeTypes={NODE_TYPES}
+        edgeTypes={EDGE_TYPES}
         onNodesChange={onNodesChange}
         onEdgesChange={onEdgesChange}
         onNodeDragStop={(_e, _node, dragged) =>
@@ -245,9 +274,9 @@ function Canvas(props: NetworkCanvasProps) {
         maxZoom={2}
         proOptions={{ hideAttribution: true }}
       >
-        <Background gap={20} size={1} />
+        {props.print ? null : <Background gap={20} size={1} />}
         <ConnectionHint refusal={(c) => props.refusal(network.id, c)} />
-        <Controls showInteractive={false} position="bottom-right" />
+        {props.print ? null : <Controls showInteractive={false} position="bottom-right" />}
       </ReactFlow>
     </div>
   );
@@ -270,13 +299,16 @@ function useNearViewport(): [React.RefObject<HTMLDivElement | null>, boolean] {
 
 export function NetworkCanvas(props: NetworkCanvasProps) {
   const { network, index } = props;
-  const [ref, near] = useNearViewport();
+  const [ref, nearViewport] = useNearViewport();
+  const near = nearViewport || props.print === true;
   const { onNear } = props;
   useEffect(() => {
     onNear(network.id, near);
   }, [onNear, network.id, near]);
   useEffect(() => () => onNear(network.id, false), [onNear, network.id]);
-  const height = canvasHeight(network, props.fallback, props.height);
+  const [printHeight, setPrintHeight] = useState<number | null>(null);
+  const height =
+    printHeight ?? canvasHeight(network, props.fallback, props.height, props.print ? Infinity : MAX_HEIGHT);
   const classes = [
     "fbd-network",
     props.networkSelected ? "fbd-network-selected" : "",
@@ -312,7 +344,7 @@ export function NetworkCanvas(props: NetworkCanvasProps) {
       <div style={{ height }}>
         {near ? (
           <ReactFlowProvider>
-            <Canvas {...props} />
+            <Canvas {...props} onPrintHeight={setPrintHeight} />
           </ReactFlowProvider>
         ) : (
           <div className="fbd-canvas-placeholder">{nodesOf(network).length} nodes</div>

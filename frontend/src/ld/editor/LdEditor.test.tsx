@@ -82,7 +82,8 @@ describe("editing by keyboard", () => {
     fireEvent.change(input, { target: { value: "mo" } });
     const options = screen.getAllByRole("option").map((o) => o.textContent);
     expect(options).toEqual(["Motor BOOL", "MotorRunning BOOL"]);
-    fireEvent.keyDown(input, { key: "ArrowDown" });
+    // the first suggestion is highlighted as typed (Enter would take Motor); one ArrowDown moves on
+    expect(screen.getByRole("option", { selected: true }).textContent).toBe("Motor BOOL");
     fireEvent.keyDown(input, { key: "ArrowDown" });
     fireEvent.keyDown(input, { key: "Enter" });
     expect(rung(t.current())).toEqual(["A:no", "MotorRunning:no", "(M):normal"]);

@@ -41,6 +41,7 @@ import { EditorNotices } from "./EditorNotices";
 import { clipboardActions, type LastClip } from "./systemClipboard";
 import { OperandValuePrompt, type ValueRequest } from "./ValuePrompt";
 import { onlineOperandItems } from "../../online/operandCommands";
+import { referencesItem } from "../../xref/store";
 import { commandsFor, keysOf } from "../../keys/keymap";
 import { ShortcutHelp } from "../../keys/ShortcutHelp";
 import "../ld.css";
@@ -108,6 +109,19 @@ const TOOLBAR: { group: CommandGroup; ids: string[] }[] = [
 export const LD_EDITOR_KEYS = ["move-selection", "extend-selection", "clear-selection", "toggle-breakpoint"] as const;
 type LdEditorKey = (typeof LD_EDITOR_KEYS)[number];
 const CLIPBOARD_COMMANDS: ReadonlySet<string> = new Set(["copy", "cut", "paste"]);
+
+/** Zoom steps of the diagram: 50 % to 200 %. */
+const ZOOM_MIN = 0.5;
+const ZOOM_MAX = 2;
+const zoomIn = (z: number) => Math.min(ZOOM_MAX, Math.round((z + 0.1) * 10) / 10);
+const zoomOut = (z: number) => Math.max(ZOOM_MIN, Math.round((z - 0.1) * 10) / 10);
+/** Ctrl + these keys zoom (as in browsers and CODESYS). */
+const ZOOM_KEYS: Record<string, number | ((z: number) => number)> = {
+  "+": zoomIn,
+  "=": zoomIn,
+  "-": zoomOut,
+  "0": 1,
+};
 
 const NO_LIBRARY: readonly LibraryEntry[] = [];
 const NO_SYMBOLS: readonly SymbolInfo[] = [];
@@ -235,6 +249,7 @@ export function LdEditor({
   const [offer, setOffer] = useState<VariableDeclaration | null>(null);
   const [dropping, setDropping] = useState(false);
   const [help, setHelp] = useState(false);
+  const [zoom, setZoom] = useState(1);
   const drag = useRef<{ ids: string[]; x: number; y: number } | null>(null);
   /** An element whose operand editor opens once the edit that created it has been laid out. */
   const [pendingEdit, setPendingEdit] = useState<string | null>(null);
@@ -567,6 +582,12 @@ export function LdEditor({
 
   const onKeyDown = (event: KeyboardEvent<HTMLDivElement>) => {
     if (editing || picker || (event.target as HTMLElement).closest("input, textarea, .ld-context-menu")) return;
+    const zoomTo = event.ctrlKey && !event.altKey ? ZOOM_KEYS[event.key] : undefined;
+    if (zoomTo) {
+      event.preventDefault(); // not the browser's page zoom
+      setZoom(zoomTo);
+      return;
+    }
     const actions = keyActions(event);
     for (const id of commandsFor("ld", event)) {
       // Copy, cut and paste arrive as clipboard events (below), which reach the system clipboard.
@@ -594,12 +615,14 @@ export function LdEditor({
             },
           ]
         : [];
-    const operand =
-      onlineActions && liveSelection?.kind === "elements" ? variableOf(body, liveSelection.ids[0]!) : null;
-    if (!onlineActions || !operand) return breakpoint;
+    const selected = liveSelection?.kind === "elements" ? variableOf(body, liveSelection.ids[0]!) : null;
+    const references = selected ? [referencesItem(selected)] : [];
+    const operand = onlineActions ? selected : null;
+    if (!onlineActions || !operand) return [...breakpoint, ...references];
     return [
       ...breakpoint,
       ...onlineOperandItems(operand, onlineActions, (action) => setValuePrompt({ operand, action })),
+      ...references,
     ];
   };
 
@@ -681,6 +704,17 @@ export function LdEditor({
             })}
           </div>
         ))}
+        <div className="ld-toolbar-group" role="group" aria-label="Zoom">
+          <button type="button" title="Zoom out (Ctrl+-)" onClick={() => setZoom(zoomOut)}>
+            −
+          </button>
+          <button type="button" title="Actual size (Ctrl+0)" aria-label="Zoom" onClick={() => setZoom(1)}>
+            {Math.round(zoom * 100)}%
+          </button>
+          <button type="button" title="Zoom in (Ctrl++)" onClick={() => setZoom(zoomIn)}>
+            +
+          </button>
+        </div>
         <button type="button" className="ld-help-button" aria-expanded={help} onClick={() => setHelp((h) => !h)}>
           Shortcuts
         </button>
@@ -711,6 +745,7 @@ export function LdEditor({
         overlay={editorOverlay}
         onVisibleChange={onVisibleChange}
         debug={debugging?.marks}
+        zoom={zoom}
       />
       {networksOf(body).length === 0 ? (
         <p className="ld-empty-hint">This POU has no networks yet: press Ctrl+Enter or C to start a rung.</p>

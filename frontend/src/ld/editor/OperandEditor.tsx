@@ -1,5 +1,5 @@
 // A text field for an operand, with autocomplete from the POU's symbols and the globals.
-import { useMemo, useRef, useState, type CSSProperties } from "react";
+import { useEffect, useMemo, useRef, useState, type CSSProperties } from "react";
 import type { SymbolInfo } from "../../generated/api";
 
 export interface OperandEditorProps {
@@ -21,10 +21,21 @@ export function suggest(text: string, symbols: readonly SymbolInfo[]): SymbolInf
   return hits.sort((a, b) => starts(a) - starts(b) || a.name.localeCompare(b.name)).slice(0, MAX_SUGGESTIONS);
 }
 
+/** The suggestion highlighted before the user picks one: the first, if it starts with the typed text
+ * and the text names no symbol already (typing "Start" keeps Start even when StartCount exists). */
+export function defaultSuggestion(text: string, list: readonly SymbolInfo[], symbols: readonly SymbolInfo[]): number {
+  const needle = text.trim().toUpperCase();
+  if (!needle || symbols.some((s) => s.name.toUpperCase() === needle)) return -1;
+  return list[0]?.name.toUpperCase().startsWith(needle) ? 0 : -1;
+}
+
 export function OperandEditor({ label, initial, suggestions = [], style, onCommit, onCancel }: OperandEditorProps) {
   const [text, setText] = useState(initial);
   const [active, setActive] = useState(-1);
   const list = useMemo(() => suggest(text, suggestions), [text, suggestions]);
+  // Until the user picks with the arrows, a suggestion that starts with the typed text is highlighted,
+  // and Enter or Tab take it (as IDE completion does): typing "Mo" + Enter gives "Motor".
+  const highlighted = active >= 0 ? active : defaultSuggestion(text, list, suggestions);
   // Enter, Escape and the blur that follows them must end the edit once, not twice.
   const done = useRef(false);
   const finish = (end: () => void) => {
@@ -33,6 +44,21 @@ export function OperandEditor({ label, initial, suggestions = [], style, onCommi
     end();
   };
   const commit = (value: string) => finish(() => onCommit(value));
+  // Focused as it opens, also where it is drawn hidden at first (an @xyflow node is invisible until it
+  // is measured, and a hidden field cannot take focus): tried again each frame until it has it.
+  const field = useRef<HTMLInputElement>(null);
+  useEffect(() => {
+    let frame = 0;
+    let tries = 0;
+    const focus = () => {
+      const input = field.current;
+      if (!input || document.activeElement === input) return;
+      input.focus();
+      if (document.activeElement !== input && tries++ < 60) frame = requestAnimationFrame(focus);
+    };
+    focus();
+    return () => cancelAnimationFrame(frame);
+  }, []);
   return (
     <div className="ld-operand-editor" style={style}>
       <input
@@ -40,7 +66,7 @@ export function OperandEditor({ label, initial, suggestions = [], style, onCommi
         role="combobox"
         aria-expanded={list.length > 0}
         aria-autocomplete="list"
-        autoFocus
+        ref={field}
         value={text}
         spellCheck={false}
         onChange={(e) => {
@@ -51,13 +77,13 @@ export function OperandEditor({ label, initial, suggestions = [], style, onCommi
           e.stopPropagation();
           if (e.key === "ArrowDown" && list.length) {
             e.preventDefault();
-            setActive((i) => (i + 1) % list.length);
+            setActive((highlighted + 1) % list.length);
           } else if (e.key === "ArrowUp" && list.length) {
             e.preventDefault();
-            setActive((i) => (i <= 0 ? list.length - 1 : i - 1));
+            setActive(highlighted <= 0 ? list.length - 1 : highlighted - 1);
           } else if (e.key === "Enter" || e.key === "Tab") {
             e.preventDefault();
-            commit(list[active]?.name ?? text);
+            commit(list[highlighted]?.name ?? text);
           } else if (e.key === "Escape") {
             e.preventDefault();
             finish(onCancel);
@@ -71,7 +97,7 @@ export function OperandEditor({ label, initial, suggestions = [], style, onCommi
             <li
               key={s.name}
               role="option"
-              aria-selected={i === active}
+              aria-selected={i === highlighted}
               onMouseDown={(e) => {
                 e.preventDefault();
                 commit(s.name);

@@ -26,6 +26,8 @@ export interface LdDiagramProps {
   onVisibleChange?(networks: readonly string[]): void;
   /** Breakpoints and the halt; a new halt is scrolled into view. */
   debug?: DebugMarks;
+  /** Scale of the drawing (1 = 100 %); the editor's zoom. */
+  zoom?: number;
 }
 
 const OVERSCAN = 400;
@@ -79,6 +81,7 @@ export function LdDiagram({
   overlay,
   onVisibleChange,
   debug,
+  zoom = 1,
 }: LdDiagramProps) {
   const scroller = useRef<HTMLDivElement>(null);
   const [viewport, setViewport] = useState({ top: 0, height: fallbackHeight });
@@ -101,12 +104,13 @@ export function LdDiagram({
       const target = id ? layout.networks.find((n) => n.network.id === id) : undefined;
       if (!el || !target) return;
       const height = el.clientHeight || fallbackHeight;
-      if (target.top < el.scrollTop) el.scrollTop = target.top;
-      else if (target.top + target.height > el.scrollTop + height)
-        el.scrollTop = Math.max(0, target.top + target.height - height);
+      const top = target.top * zoom; // the scroller's pixels are zoomed, the layout's are not
+      const bottom = (target.top + target.height) * zoom;
+      if (top < el.scrollTop) el.scrollTop = top;
+      else if (bottom > el.scrollTop + height) el.scrollTop = Math.max(0, bottom - height);
       setViewport({ top: el.scrollTop, height });
     },
-    [layout, fallbackHeight],
+    [layout, fallbackHeight, zoom],
   );
   useEffect(() => {
     scrollTo(reveal);
@@ -124,7 +128,7 @@ export function LdDiagram({
   }, [diagnostics]);
 
   const selected = selectionNetwork(body, selection);
-  const shown = visibleNetworks(layout, viewport.top, viewport.height);
+  const shown = visibleNetworks(layout, viewport.top / zoom, viewport.height / zoom);
   const shownKey = shown.map((n) => n.network.id).join("\n");
   useEffect(() => {
     onVisibleChange?.(shownKey ? shownKey.split("\n") : []);
@@ -137,7 +141,7 @@ export function LdDiagram({
         setViewport({ top: e.currentTarget.scrollTop, height: e.currentTarget.clientHeight || fallbackHeight })
       }
     >
-      <div className="ld-canvas" style={{ height: layout.height, width: layout.width }}>
+      <div className="ld-canvas" style={{ height: layout.height, width: layout.width, zoom }}>
         {shown.map((n) => (
           <div key={n.network.id} className="ld-network-slot" style={{ top: n.top, height: n.height }}>
             <NetworkView

@@ -1,0 +1,204 @@
+"""A project's configuration in PLCopen XML (``instances/configurations``), both ways.
+
+``<configuration name>`` holds ``<resource name>``s; a resource its ``<globalVars>``, its ``<task name
+interval single priority>``s with the ``<pouInstance name typeName>``s they run, and the program instances
+of no task. What the TC6 schema has no element for travels in LadderLab's addData (``<ll:info>``): a
+program instance's RETAIN and parameter bindings (JSON), a configuration's own VAR_GLOBAL, VAR_ACCESS and
+VAR_CONFIG texts, a resource's processor (ON), globals text as typed, or that it was written without a name.
+Another tool's document reads with the elements only.
+
+A project's own tasks (no configuration) are written as configuration ``config`` with resource
+``resource`` whose instances are named after their programs; a document whose configuration runs nothing
+and holds only globals reads back as the project's globals.
+"""
+
+from __future__ import annotations
+
+import json
+import xml.etree.ElementTree as ET
+from collections.abc import Callable
+
+from ...model.diagnostics import Diagnostic
+from ...model.project import Configuration, ProgramInstance, Project, Resource, Task
+from ...st import ast
+from ...st.parser import parse_declarations
+from .xml_io import Reader, info, info_text, ladderlab_data, sub
+
+CONFIGURATION = "config"
+RESOURCE = "resource"
+
+VarBlocks = Callable[[str, str], list[ast.VarBlock]]  # (text, file) -> parsed VAR blocks
+WriteList = Callable[[ET.Element, ast.VarBlock], ET.Element]
+
+
+# ---------------------------------------------------------------- export
+
+
+def write_instances(
+    project: Project, parent: ET.Element, var_blocks: VarBlocks, write_list: WriteList, problems: list[Diagnostic]
+) -> None:
+    """``<configurations>`` of ``project`` under ``parent`` (``<instances>``)."""
+    configurations = sub(parent, "configurations")
+    globals_ = var_blocks(project.globals, "globals.st")
+    config = project.configuration
+    if config is None:
+        if not globals_ and not project.tasks:
+            return
+        resources = [Resource(name=RESOURCE, tasks=project.tasks)] if project.tasks else []
+        config = Configuration(name=CONFIGURATION, resources=resources)
+    node = sub(configurations, "configuration", {"name": config.name})
+    for r, resource in enumerate(config.resources):
+        holder = sub(node, "resource", {"name": resource.name or RESOURCE})
+        for block in var_blocks(resource.globals, f"configuration/{resource.name}/globals"):
+            write_list(holder, block)
+        for t, task in enumerate(resource.tasks):
+            where = f"$.configuration.resources[{r}].tasks[{t}]" if project.configuration else f"$.tasks[{t}]"
+            _task(holder, task, where, problems)
+        for program in resource.programs:
+            _instance(holder, program)
+        if resource.name is None or resource.on is not None or resource.globals:
+            texts = {"globals": resource.globals} if resource.globals else None
+            ladderlab_data(holder, {"unnamed": resource.name is None or None, "on": resource.on}, texts)
+    for block in globals_ + var_blocks(config.globals, "configuration/globals"):
+        write_list(node, block)
+    if project.configuration is not None:
+        texts = {"globals": config.globals, "access": config.access, "config": config.config}
+        ladderlab_data(node, None, {name: text for name, text in texts.items() if text})
+    elif project.tasks:
+        ladderlab_data(node, {"tasks": True})  # the project's own tasks: they read back as tasks
+
+
+def _task(resource: ET.Element, task: Task, where: str, problems: list[Diagnostic]) -> None:
+    if not 0 <= task.priority <= 65535:
+        problems.append(
+            Diagnostic(
+                code="PLCOPEN-EXPORT",
+                json_path=f"{where}.priority",
+                message=f"task {task.name}: PLCopen priorities are 0..65535, not {task.priority}",
+            )
+        )
+    attributes = {"name": task.name, "priority": task.priority, "interval": task.interval, "single": task.single}
+    node = sub(resource, "task", {k: v for k, v in attributes.items() if v is not None})
+    for program in task.programs:
+        _instance(node, ProgramInstance(name=program, type=program) if isinstance(program, str) else program)
+
+
+def _instance(parent: ET.Element, instance: ProgramInstance) -> None:
+    node = sub(parent, "pouInstance", {"name": instance.name, "typeName": instance.type})
+    if instance.retain or instance.inputs or instance.outputs:
+        bindings = {"inputs": json.dumps(instance.inputs), "outputs": json.dumps(instance.outputs)}
+        ladderlab_data(node, {"retain": instance.retain}, bindings)
+
+
+# ---------------------------------------------------------------- import
+
+
+def read_instances(
+    reader: Reader, configurations: list[ET.Element], read_list: Callable[[list[ET.Element], str | None], str]
+) -> tuple[str, Configuration | None, list[Task]]:
+    """(the project's globals text, its configuration, its own tasks) from ``<configuration>`` elements;
+    ``read_list(lists, carried)`` turns ``<globalVars>`` elements into a VAR_GLOBAL text (the carried text
+    when it still says the same)."""
+    if len(configurations) > 1:
+        reader.report(
+            "PLCOPEN-CONFIG",
+            f"{len(configurations)} configurations: a project runs one, so only the first was imported "
+            "(the globals of all of them were)",
+            configurations[1],
+            severity="warning",
+        )
+    lists = [g for c in configurations for g in reader.children(c, "globalVars")]
+    if not configurations:
+        return read_list(lists, None), None, []
+    node = configurations[0]
+    ours = info(node, reader)
+    resources = [_resource(reader, r, read_list) for r in reader.children(node, "resource")]
+    carried = info_text(ours, "globals")
+    globals_ = read_list(lists, None)
+    if not resources and not carried:  # a configuration that only holds globals: the project's globals
+        return globals_, None, []
+    if ours is not None and ours.get("tasks") == "true":  # LadderLab's project with its own tasks
+        tasks = [task for resource in resources for task in resource.tasks]
+        for task in tasks:
+            task.programs = [_short(p) for p in task.programs]
+        return globals_, None, tasks
+    configuration = Configuration(
+        name=node.get("name", CONFIGURATION),
+        resources=resources,
+        access=info_text(ours, "access") or "",
+        config=info_text(ours, "config") or "",
+    )
+    if carried:  # LadderLab's own: its configuration's globals are the last lists, the project's the others
+        own = len(parse_declarations(carried).ast or [])
+        globals_, configuration.globals = read_list(lists[: len(lists) - own], None), carried
+    return globals_, configuration, []
+
+
+def _short(program: str | ProgramInstance) -> str | ProgramInstance:
+    """An instance named after its program without bindings is written as the program's name."""
+    if (
+        isinstance(program, ProgramInstance)
+        and program.name == program.type
+        and program == ProgramInstance(name=program.name, type=program.type)
+    ):
+        return program.name
+    return program
+
+
+def _resource(reader: Reader, node: ET.Element, read_list: Callable[[list[ET.Element], str | None], str]) -> Resource:
+    ours = info(node, reader)
+    unnamed = ours is not None and ours.get("unnamed") == "true"
+    return Resource(
+        name=None if unnamed else node.get("name", RESOURCE),
+        on=ours.get("on") if ours is not None else None,
+        globals=read_list(reader.children(node, "globalVars"), info_text(ours, "globals")),
+        tasks=[_read_task(reader, t) for t in reader.children(node, "task")],
+        programs=[_read_instance(reader, i) for i in reader.children(node, "pouInstance")],
+    )
+
+
+def _read_task(reader: Reader, node: ET.Element) -> Task:
+    name = node.get("name", "")
+    interval, single = node.get("interval"), node.get("single")
+    if not interval and not single:
+        reader.report(
+            "PLCOPEN-CONFIG",
+            f"task {name} has neither interval nor single; it is imported as a cyclic task of T#10ms",
+            node,
+            severity="warning",
+        )
+        interval = "T#10ms"
+    try:
+        priority = int(node.get("priority", "0"))
+    except ValueError:
+        reader.report(
+            "PLCOPEN-CONFIG",
+            f"task {name}: priority '{node.get('priority')}' is not a number; 0 is used",
+            node,
+            severity="warning",
+        )
+        priority = 0
+    programs: list[str | ProgramInstance] = [_read_instance(reader, i) for i in reader.children(node, "pouInstance")]
+    return Task(name=name, interval=interval or None, single=single, priority=priority, programs=programs)
+
+
+def _read_instance(reader: Reader, node: ET.Element) -> ProgramInstance:
+    ours = info(node, reader)
+    retain = ours.get("retain") if ours is not None else None
+    bindings = {}
+    for kind in ("inputs", "outputs"):
+        text = info_text(ours, kind)
+        try:
+            value = json.loads(text) if text else {}
+        except json.JSONDecodeError:
+            value = None
+        if not isinstance(value, dict) or not all(isinstance(v, str) for v in value.values()):
+            reader.report("PLCOPEN-CONFIG", f"the {kind} of program instance {node.get('name')} are unreadable", node)
+            value = {}
+        bindings[kind] = value
+    return ProgramInstance(
+        name=node.get("name", ""),
+        type=node.get("typeName", ""),
+        retain=retain if retain in ("RETAIN", "NON_RETAIN") else None,
+        **bindings,
+    )

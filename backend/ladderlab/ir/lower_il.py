@@ -1,0 +1,43 @@
+"""IL bodies -> IR blocks (docs/il.md, IL-26): the checker turned each instruction into a typed ST statement
+(``st/il_check.py``); here labels start labelled blocks and jumps become ``Jump``s, so the engine, monitoring,
+breakpoints (one pause point per IL line) and tracing treat an IL POU like any other.
+"""
+
+from __future__ import annotations
+
+from ..model.project import Pou as ModelPou
+from ..st import ast
+from .context import PouContext
+from .lower_expr import lower_to
+from .lower_st import lower_statements
+from .lower_types import LoweringError, ir_default
+from .nodes import Block, Jump, Origin, Slot, Stmt
+from .types import BOOL
+
+
+def lower_il_body(pou: ModelPou, ctx: PouContext) -> list[Block]:
+    """One block for the instructions before the first label, then one labelled block per label."""
+    info = ctx.info
+    if info is None or info.body is None:
+        return []
+    for symbol in info.accumulators:  # the hidden current-result variables (one per type and '(' depth)
+        ir_type = ctx.types.type_of(symbol.type, symbol.type_spec)
+        ctx.add_slot(Slot(symbol.name.upper(), "VAR", ir_type, ir_default(ir_type), hidden=True))
+    blocks = [Block([], Origin(ctx.name))]
+    for statement in info.body:
+        if isinstance(statement, ast.Label):
+            blocks.append(Block([], ctx.origin(statement), statement.name.upper()))
+        elif isinstance(statement, ast.Goto):
+            blocks[-1].statements += _jump(statement, ctx)
+        else:
+            blocks[-1].statements += lower_statements([statement], ctx)
+    return blocks if blocks[0].statements or len(blocks) == 1 else blocks[1:]
+
+
+def _jump(statement: ast.Goto, ctx: PouContext) -> list[Stmt]:
+    try:
+        cond = lower_to(statement.cond, ctx, BOOL) if statement.cond is not None else None
+    except LoweringError as error:
+        ctx.report_error(error, statement)
+        return []
+    return [Jump(statement.label.upper(), cond, ctx.origin(statement))]

@@ -1,0 +1,189 @@
+"""Project-wide rename refactoring and "what refers to this name" for POUs, types, globals.
+
+A project-level name (a POU, a user type, a global variable) is used by ST texts (declarations,
+bodies, globals, types, test files), by LD/FBD operands (contacts, coils, compares, box calls,
+instances and pin operands, FBD blocks and nodes) and by tasks (the programs they run). Renaming
+finds every use as an ST identifier token: comments, strings, literals (``T#5s``, ``16#FF``),
+direct addresses (``%IX0.1``) and member names after a ``.`` are never touched, so ``x.Main`` or
+``'Main'`` keep their text. IEC names are case-insensitive; the new spelling replaces every use.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+from ..model.api import Reference
+from ..model.names import pou_name_problem
+from ..model.project import Project
+from .comments import blank_nested_comments
+
+#: Tokens that are never a name: strings, comments, pragmas, typed literal values, numbers, addresses.
+_TOKEN = re.compile(
+    r"""(?P<skip>'(?:[^'$\n]|\$.)*'|"(?:[^"$\n]|\$.)*"|//[^\n]*|\{[^}]*\}"""
+    r"""|\#[A-Za-z0-9_.:+\-]*|\d[A-Za-z0-9_.]*|%[A-Za-z0-9_.*]+)"""
+    r"""|(?P<name>[A-Za-z_][A-Za-z0-9_]*)"""
+)
+_MEMBER = re.compile(r"\.\s*$")
+
+#: Keys of LD/FBD element objects whose value is ST operand text (a name, an expression, a call).
+_OPERAND_KEYS = ("var", "left", "right", "call", "instance", "expr")
+
+
+def name_spans(text: str, name: str) -> list[tuple[int, int]]:
+    """Start and end offsets of ``name`` used as an identifier in ST ``text`` (not as a member after ``.``)."""
+    key = name.upper()
+    scanned = blank_nested_comments(text)  # same length: offsets stay those of ``text``
+    spans = []
+    for match in _TOKEN.finditer(scanned):
+        if match.group("name") is None or match.group("name").upper() != key:
+            continue
+        if _MEMBER.search(scanned, 0, match.start()):
+            continue
+        spans.append((match.start(), match.end()))
+    return spans
+
+
+def rename_in_text(text: str, old: str, new: str) -> str:
+    """``text`` with every identifier use of ``old`` spelt ``new``."""
+    pieces, copied = [], 0
+    for start, end in name_spans(text, old):
+        pieces += [text[copied:start], new]
+        copied = end
+    return "".join(pieces) + text[copied:]
+
+
+def references(project: Project, name: str) -> list[Reference]:
+    """Every place in ``project`` that uses ``name``, except the definition of a POU called ``name`` itself."""
+    found: list[Reference] = []
+    _visit(project.model_dump(by_alias=True), name, name, found, skip_pou=name)
+    return found
+
+
+def rename(project: Project, old: str, new: str) -> tuple[Project, list[Reference]]:
+    """``project`` with ``old`` renamed to ``new`` everywhere (a POU called ``old`` too), and what changed."""
+    data = project.model_dump(by_alias=True)
+    changes: list[Reference] = []
+    _visit(data, old, new, changes, skip_pou=None)
+    for pou in data["pous"]:
+        if pou["name"].upper() == old.upper():
+            pou["name"] = new
+    return Project.model_validate(data), changes
+
+
+def new_name_problem(project: Project, old: str, new: str) -> str | None:
+    """Why ``old`` cannot become ``new`` in ``project`` (not an identifier, or another POU's name), or None."""
+    problem = pou_name_problem(new)
+    if problem:
+        return f"{new or 'an empty name'} is no IEC name: {problem}"
+    other = project.pou(new)
+    if other is not None and other.name.upper() != old.upper():
+        return f"there is already a POU called {other.name}"
+    return None
+
+
+def duplicate_pou(project: Project, name: str, copy: str) -> Project:
+    """``project`` with a copy of POU ``name`` called ``copy`` after it (its own uses of ``name`` renamed too,
+    e.g. a function's result assignment)."""
+    pou = project.pou(name)
+    if pou is None:
+        raise KeyError(name)
+    alone = Project(name=project.name, pous=[pou])
+    renamed, _ = rename(alone, pou.name, copy)
+    pous = list(project.pous)
+    pous.insert(pous.index(pou) + 1, renamed.pous[0])
+    return project.model_copy(update={"pous": pous})
+
+
+def _visit(data: dict[str, Any], old: str, new: str, found: list[Reference], skip_pou: str | None) -> None:
+    """Renames ``old`` to ``new`` in the dumped project ``data`` in place, noting each use in ``found``
+    (``new == old`` only finds). The POU called ``skip_pou`` is left out (its definition is no reference)."""
+    for part in ("globals", "types"):
+        data[part] = _text(data[part], old, new, found, Reference(part=part))
+    for pou in data["pous"]:
+        if skip_pou is not None and pou["name"].upper() == skip_pou.upper():
+            continue
+        name = pou["name"]
+        pou["declarations"] = _text(pou["declarations"], old, new, found, Reference(pou=name, part="declarations"))
+        pou["body"] = _body(pou["body"], old, new, found, name)
+        if pou.get("return_type"):
+            pou["return_type"] = _text(pou["return_type"], old, new, found, Reference(pou=name, part="return type"))
+    for task in data["tasks"]:
+        programs = task["programs"]
+        for i, program in enumerate(programs):
+            if program.upper() == old.upper():
+                programs[i] = new
+                found.append(Reference(part="task", task=task["name"], text=program))
+    for test in data["tests"]:
+        path = f"tests/{test['name']}.st"
+        test["text"] = _text(test["text"], old, new, found, Reference(part="test", file=path))
+
+
+def _body(body: Any, old: str, new: str, found: list[Reference], pou: str) -> Any:
+    """A dumped POU, SFC action or transition body renamed in place: ST/IL text, LD/FBD networks, an SFC chart."""
+    if isinstance(body, str):
+        return _text(body, old, new, found, Reference(pou=pou, part="body"))
+    if "networks" in body:
+        for number, network in enumerate(body["networks"], start=1):
+            where = Reference(pou=pou, part="network", network=network["id"], network_number=number)
+            if network.get("label"):
+                where.network_label = network["label"]
+            for item in network.get("elements") or network.get("nodes") or []:
+                _element(item, old, new, found, where)
+        return body
+    if "chart" in body:  # an SFC POU: its chart, then its actions' and named transitions' bodies
+        _chart(body["chart"], old, new, found, pou)
+        for part in (*body.get("actions", []), *body.get("transitions", [])):
+            part["body"] = _body(part["body"], old, new, found, pou)
+        return body
+    _chart(body, old, new, found, pou)  # an action written as an SFC chart
+    return body
+
+
+def _chart(chart: dict[str, Any], old: str, new: str, found: list[Reference], pou: str) -> None:
+    """An SFC chart's transition conditions and the BOOL variables its steps' associations name."""
+    for element in chart.get("elements", []):
+        if element.get("type") == "transition":
+            where = Reference(pou=pou, part="transition", element=element.get("id"))
+            element["condition"] = _text(element["condition"], old, new, found, where)
+        for association in element.get("actions", []):
+            if association["action"].upper() == old.upper():
+                found.append(Reference(pou=pou, part="step", element=element.get("id"), text=association["action"]))
+                association["action"] = new
+        for branch in element.get("branches", []):
+            _chart({"elements": branch}, old, new, found, pou)
+
+
+def _text(text: str, old: str, new: str, found: list[Reference], where: Reference) -> str:
+    """ST ``text`` renamed; one reference (``where`` with the line) per line that uses ``old``, as it was."""
+    spans = name_spans(text, old)
+    lines = text.split("\n")
+    seen: set[int] = set()
+    for start, _ in spans:
+        line = text.count("\n", 0, start) + 1
+        if line not in seen:
+            seen.add(line)
+            found.append(where.model_copy(update={"line": line, "text": lines[line - 1].strip()}))
+    return rename_in_text(text, old, new) if spans and new != old else text
+
+
+def _element(item: dict[str, Any], old: str, new: str, found: list[Reference], where: Reference) -> None:
+    """One LD element or FBD node: its operands, box input operands and outputs, nested branches."""
+    here = where.model_copy(update={"element": item.get("id")})
+    for key in _OPERAND_KEYS:
+        value = item.get(key)
+        if isinstance(value, str) and name_spans(value, old):
+            found.append(here.model_copy(update={"text": value}))
+            item[key] = rename_in_text(value, old, new)
+    for pins in (item.get("inputs"), item.get("outputs")):
+        for pin, value in (pins or {}).items():
+            if isinstance(value, str):
+                if name_spans(value, old):
+                    found.append(here.model_copy(update={"text": f"{pin} := {value}"}))
+                    pins[pin] = rename_in_text(value, old, new)
+            else:
+                for nested in value:
+                    _element(nested, old, new, found, where)
+    for branch in item.get("branches") or []:
+        for nested in branch:
+            _element(nested, old, new, found, where)

@@ -1,0 +1,119 @@
+"""Textual SFC (IEC 61131-3 B.1.6) in .st files: read into the SFC model, and written from it.
+
+Reading: the steps (``INITIAL_STEP``/``STEP`` with their ``action(qualifier[, time])`` associations), the
+transitions (``TRANSITION [name] [(PRIORITY := n)] FROM a TO (b, c) := condition; END_TRANSITION``, in the order
+written: the earlier of two transitions leaving one step comes first, as the left one of a drawn chart) and the
+``ACTION``s (ST) make a graph that ``model.sfc_graph.graph_chart`` draws as a chart; texts keep their source.
+Writing: the chart's graph as the same constructs, ST actions as typed (what IEC text cannot say - entry and exit
+actions, time limits, actions in LD or FBD - is refused or named, see ``sfc_to_text``).
+"""
+
+from __future__ import annotations
+
+from ..model.diagnostics import Diagnostic
+from ..model.sfc import QUALIFIERS, TIMED_QUALIFIERS, SfcAction, SfcAssociation, SfcBody, SfcStep, SfcTransition
+from ..model.sfc_graph import ImportedStep, ImportedTransition, UnstructuredChart, chart_graph, graph_chart
+from . import ast
+
+
+def sfc_from_text(pou: ast.Pou, between, file: str | None = None) -> tuple[SfcBody, list[Diagnostic]]:
+    """The SfcBody of a POU written in textual SFC; ``between((line, col), (line, col))`` slices the source."""
+    assert pou.sfc is not None
+    diagnostics: list[Diagnostic] = []
+
+    def report(message: str, node: object, severity: str = "error") -> None:
+        span = getattr(node, "span", ast.NO_SPAN)
+        diagnostics.append(
+            Diagnostic(
+                code="ST-SFC",
+                message=message,
+                severity=severity,
+                file=file,
+                pou=pou.name,
+                line=span.line or None,
+                column=span.column or None,
+            )
+        )
+
+    def text(node: ast.Expr) -> str:
+        span = node.span
+        return between((span.line, span.column), (span.end_line, span.end_column))
+
+    steps, transitions, actions = [], [], []
+    for number, item in enumerate(pou.sfc.items, 1):
+        if isinstance(item, ast.SfcStep):
+            associations = [a for a in (_association(a, number, report, text) for a in item.associations) if a]
+            steps.append(ImportedStep(SfcStep(id=f"s{number}", name=item.name, actions=associations), item.initial))
+        elif isinstance(item, ast.SfcTransition):
+            condition = SfcTransition(id=f"t{number}", condition=text(item.condition), priority=item.priority)
+            transitions.append(ImportedTransition(condition, list(item.sources), list(item.targets)))
+        else:
+            body = ""
+            if item.body:  # to END_ACTION: a statement's span ends before its ';'
+                first, end = item.body[0].span, item.span
+                body = between((first.line, first.column), (end.end_line, end.end_column - len("END_ACTION"))).rstrip()
+            actions.append(SfcAction(name=item.name, language="st", body=body))
+    try:
+        chart, unreachable = graph_chart(steps, transitions)
+    except UnstructuredChart as error:
+        report(f"the chart of {pou.name} cannot be drawn: {error}", pou.sfc)
+        return SfcBody(actions=actions), diagnostics
+    for name in unreachable:
+        report(f"step {name} is reached from no initial step: it was left out", pou.sfc, "warning")
+    return SfcBody(chart=chart, actions=actions), diagnostics
+
+
+def _association(item: ast.SfcAssociation, number: int, report, text) -> SfcAssociation | None:
+    qualifier = (item.qualifier or "N").upper()
+    if qualifier not in QUALIFIERS:
+        report(f"{qualifier} is not an action qualifier ({', '.join(QUALIFIERS)})", item)
+        return None
+    args = list(item.args)
+    time = text(args.pop(0)) if qualifier in TIMED_QUALIFIERS and args else None
+    if args:
+        report(f"the indicator variables of {item.action} are not kept", item, "warning")
+    return SfcAssociation(id=f"a{number}_{item.action}", qualifier=qualifier, action=item.action, time=time)  # type: ignore[arg-type]  # checked against QUALIFIERS
+
+
+def sfc_to_text(name: str, body: SfcBody, indent: str = "    ") -> tuple[str, list[Diagnostic]]:
+    """The textual SFC of a chart (steps, transitions, ST actions), and why it cannot be written if it cannot."""
+    graph = chart_graph(body.chart)
+    problems: list[Diagnostic] = []
+
+    def refuse(message: str) -> None:
+        problems.append(Diagnostic(code="EXPORT-UNSUPPORTED", pou=name, message=message))
+
+    lines: list[str] = []
+    for key, node in graph.steps.items():
+        step = node.step
+        if step.entry or step.exit or step.min_time or step.max_time:
+            refuse(f"step {step.name} has entry or exit actions or time limits, which textual SFC cannot say")
+        lines.append(f"{indent}{'INITIAL_STEP' if node.initial else 'STEP'} {step.name}:")
+        for association in step.actions:
+            args = [association.qualifier] + ([association.time.strip()] if association.time else [])
+            lines.append(f"{indent * 2}{association.action}({', '.join(args)});")
+        lines.append(f"{indent}END_STEP")
+        for transition in (t for t in graph.evaluation_order() if t.sources and t.sources[0] == key):
+            element = transition.transition
+            priority = f" (PRIORITY := {element.priority})" if element.priority is not None else ""
+            steps = [
+                _list(graph.steps[s].step.name for s in names) for names in (transition.sources, transition.targets)
+            ]
+            lines.append(f"{indent}TRANSITION{priority} FROM {steps[0]} TO {steps[1]}")
+            lines.append(f"{indent * 2}:= {element.condition.strip()};")
+            lines.append(f"{indent}END_TRANSITION")
+    for action in body.actions:
+        if not isinstance(action.body, str):
+            refuse(f"the action {action.name} is written in {action.language.upper()}: textual SFC has ST actions")
+            continue
+        lines.append(f"{indent}ACTION {action.name}:")
+        lines += [f"{indent * 2}{line}".rstrip() for line in action.body.splitlines()]
+        lines.append(f"{indent}END_ACTION")
+    if body.transitions:
+        refuse("named transitions have no textual SFC form here: write their condition in the chart")
+    return "\n".join(lines), problems
+
+
+def _list(names) -> str:
+    names = list(names)
+    return names[0] if len(names) == 1 else "(" + ", ".join(names) + ")"

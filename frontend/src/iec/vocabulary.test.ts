@@ -1,0 +1,85 @@
+// Issue 19 item 2 / issue 22 item 3: the browser's IEC words are the backend's, never a hand copy.
+import { readdirSync, readFileSync, statSync } from "node:fs";
+import { join, relative } from "node:path";
+import { describe, expect, it } from "vitest";
+import { IEC } from "../generated/iec";
+import { FAMILY_DEFAULT } from "../ld/editor/declare";
+import { formatValue } from "../online/values";
+import { tokenize as stTokens } from "../st/language";
+import { tokenize as viewTokens } from "../stview/highlight";
+import { DECLARABLE_TYPES, ELEMENTARY, FAMILIES, KEYWORDS, TYPE_WORDS, widens } from "./vocabulary";
+
+const SRC = join(__dirname, "..");
+
+/** Every source file of the app but the generated ones, this folder and the tests. */
+function sources(dir = SRC): string[] {
+  return readdirSync(dir).flatMap((name) => {
+    const path = join(dir, name);
+    if (statSync(path).isDirectory()) return ["generated", "iec", "test"].includes(name) ? [] : sources(path);
+    return /\.tsx?$/.test(name) && !/\.test\.tsx?$/.test(name) ? [path] : [];
+  });
+}
+
+describe("the IEC vocabulary the browser reads", () => {
+  it("offers the types the checker accepts in declarations: no CHAR or WCHAR, which it rejects", () => {
+    // IEC 61131-3 elementary types LadderLab implements (docs/st.md), STRING and WSTRING with a length.
+    expect([...DECLARABLE_TYPES].sort()).toEqual(
+      [
+        ...["BOOL", "SINT", "INT", "DINT", "LINT", "USINT", "UINT", "UDINT", "ULINT"],
+        ...["BYTE", "WORD", "DWORD", "LWORD", "REAL", "LREAL", "TIME", "DATE", "TIME_OF_DAY", "DATE_AND_TIME"],
+        ...["STRING", "WSTRING"],
+      ].sort(),
+    );
+    expect(DECLARABLE_TYPES).not.toContain("CHAR");
+    expect(DECLARABLE_TYPES).not.toContain("WCHAR");
+  });
+
+  it("widens as IEC 61131-3 table 11 allows, and no other way", () => {
+    expect(widens("SINT", "INT") && widens("USINT", "UINT") && widens("UINT", "DINT")).toBe(true);
+    expect(widens("BYTE", "WORD") && widens("REAL", "LREAL")).toBe(true);
+    expect(widens("INT", "SINT") || widens("INT", "REAL") || widens("UINT", "INT") || widens("BOOL", "BYTE")).toBe(
+      false,
+    );
+  });
+
+  it("highlights the backend's keywords and types the same in the ST editor and the read-only view", () => {
+    for (const word of KEYWORDS) {
+      const kind = viewTokens(word)[0]!.kind;
+      const style = stTokens(word)[0]!.style;
+      expect([word, kind, style]).toEqual([word, "keyword", ["TRUE", "FALSE"].includes(word) ? "atom" : "keyword"]);
+    }
+    for (const word of TYPE_WORDS) {
+      expect([word, viewTokens(word)[0]!.kind, stTokens(word)[0]!.style]).toEqual([word, "type", "typeName"]);
+    }
+    // Words the grammar does not know are names (CONTINUE, LTIME and CHAR were hand-copied once).
+    for (const word of ["CONTINUE", "LTIME", "CHAR", "WCHAR"]) {
+      expect([word, viewTokens(word)[0]!.kind, stTokens(word)[0]!.style]).toEqual([word, "name", "variableName"]);
+    }
+  });
+
+  it("declares a variable on a generic pin with a member of the pin's family, for every family", () => {
+    expect(Object.keys(FAMILY_DEFAULT).sort()).toEqual(Object.keys(FAMILIES).sort());
+    for (const [family, type] of Object.entries(FAMILY_DEFAULT)) expect(FAMILIES[family]).toContain(type);
+  });
+
+  it("writes every monitored value as the engine's TO_STRING does", () => {
+    for (const sample of IEC.value_texts) {
+      expect([sample.type, sample.value, formatValue(sample.value, sample.type)]).toEqual([
+        sample.type,
+        sample.value,
+        sample.text,
+      ]);
+    }
+  });
+
+  it("is never copied by hand into a feature: no source outside src/iec lists the elementary types", () => {
+    const copies = sources().filter((path) => {
+      const literals = readFileSync(path, "utf8").match(/"[^"\n]*"|'[^'\n]*'|`[^`]*`/g) ?? [];
+      const named = new Set(
+        literals.flatMap((l) => l.match(/\b[A-Z_]+\b/g) ?? []).filter((w) => ELEMENTARY.includes(w)),
+      );
+      return named.size >= 8;
+    });
+    expect(copies.map((path) => relative(SRC, path))).toEqual([]);
+  });
+});

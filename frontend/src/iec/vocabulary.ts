@@ -1,0 +1,31 @@
+// The IEC 61131-3 words and type rules the browser uses, all read from the backend's vocabulary
+// (src/generated/iec.ts, written by `make schema` from backend/ladderlab/st/vocabulary.py), so the
+// declarations table, the FBD wire check, the ST highlighters and the LD declare offer cannot
+// disagree with the checker (issue 19 item 2, issue 22 item 3). Nothing here is typed by hand.
+import { IEC } from "../generated/iec";
+
+/** The elementary types in the backend's order (BOOL, SINT ... STRING). */
+export const ELEMENTARY: readonly string[] = IEC.elementary.map((e) => e.name);
+
+/** Every type name a declaration may use without defining it: the elementary types and WSTRING. */
+export const DECLARABLE_TYPES: readonly string[] = [...new Set([...ELEMENTARY, ...IEC.strings])];
+
+/** Short spellings of type names (TOD, DT) -> the full name. */
+export const ALIASES: Readonly<Record<string, string>> = IEC.aliases;
+
+/** Generic families (ANY_NUM ...) -> their elementary members. */
+export const FAMILIES: Readonly<Record<string, readonly string[]>> = IEC.generic;
+
+const WIDENING: Readonly<Record<string, readonly string[]>> = IEC.widening;
+
+/** Lossless implicit conversion of one elementary type into another (the checker's `assignable`). */
+export const widens = (source: string, target: string): boolean => WIDENING[source]?.includes(target) ?? false;
+
+/** The standard function blocks' type names (TON, CTU, R_TRIG ...). */
+export const STANDARD_FBS: readonly string[] = IEC.function_blocks.map((fb) => fb.name);
+
+/** The keywords of the ST grammar, upper case (TRUE and FALSE among them). */
+export const KEYWORDS: ReadonlySet<string> = new Set(IEC.keywords);
+
+/** Words shown as type names: elementary and string types, their short spellings and the standard FBs. */
+export const TYPE_WORDS: ReadonlySet<string> = new Set([...DECLARABLE_TYPES, ...Object.keys(ALIASES), ...STANDARD_FBS]);

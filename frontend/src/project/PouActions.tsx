@@ -1,0 +1,306 @@
+// The project tree's menu of a POU: rename (everywhere, with a preview), duplicate, change the kind of an
+// empty POU, delete (listing what refers to it). Each is one undoable step of the working copy
+// (workspace store's applyOperation); nothing is saved until the user saves.
+import { useEffect, useState, type FormEvent, type ReactNode } from "react";
+import type { Reference } from "../generated/api";
+import type { Pou } from "../generated/api";
+import { onlineStore } from "../online/store";
+import {
+  copyName,
+  describeReference,
+  duplicated,
+  isEmptyPou,
+  referencesTo,
+  renamedPath,
+  renameEverywhere,
+} from "./refactor";
+import { emptyDeclarations, workspaceStore } from "./store";
+
+type Action = "rename" | "duplicate" | "kind" | "delete";
+
+/** What each kind of POU is, for the New POU form and the kind dialog. */
+export const KIND_HELP: Record<Pou["kind"], { label: string; help: string }> = {
+  program: { label: "program", help: "Runs in a task every cycle; its variables keep their values (like MAIN)." },
+  function_block: {
+    label: "function block",
+    help: "A block with memory (like TON): declare instances of it in programs and call them.",
+  },
+  function: { label: "function", help: "Computes a result from its inputs (like ADD); no memory between calls." },
+  plant: {
+    label: "plant",
+    help: "A model of the machine (lab bench): runs before the control program in every scan, reads its outputs, writes its inputs.",
+  },
+};
+
+const message = (err: unknown) => (err instanceof Error ? err.message : String(err));
+
+function Dialog({ title, children, onClose }: { title: string; children: ReactNode; onClose(): void }) {
+  return (
+    <div className="ld-dialog-backdrop" onKeyDown={(e) => e.key === "Escape" && onClose()}>
+      <div className="ld-dialog project-dialog" role="dialog" aria-label={title}>
+        <h2>{title}</h2>
+        {children}
+      </div>
+    </div>
+  );
+}
+
+function ReferenceList({ references, empty }: { references: Reference[]; empty: string }) {
+  if (!references.length) return <p className="tree-empty">{empty}</p>;
+  return (
+    <ul className="reference-list" aria-label="References">
+      {references.map((r, i) => (
+        <li key={i}>
+          <span className="reference-where">{describeReference(r)}</span> <code>{r.text}</code>
+        </li>
+      ))}
+    </ul>
+  );
+}
+
+/** Rename: the new name, a preview of every change the server's refactoring makes, then one step. */
+function RenameDialog({ pou, onClose }: { pou: Pou; onClose(): void }) {
+  const [name, setName] = useState(pou.name);
+  const [preview, setPreview] = useState<{ name: string; changes: Reference[] } | null>(null);
+  const [error, setError] = useState<string | null>(null);
+  const [result, setResult] = useState<Awaited<ReturnType<typeof renameEverywhere>> | null>(null);
+  const submit = async (e: FormEvent) => {
+    e.preventDefault();
+    const project = workspaceStore.getState().project;
+    if (!project) return;
+    if (preview && result && preview.name === name.trim()) {
+      const renamed = { [pou.name]: preview.name };
+      const changedPous = new Set(preview.changes.map((c) => c.pou).filter((p): p is string => !!p));
+      workspaceStore
+        .getState()
+        .applyOperation(
+          `rename ${pou.name} to ${preview.name}`,
+          result.project,
+          [preview.name, ...[...changedPous].map((p) => (p === pou.name ? preview.name : p))],
+          { renamed },
+        );
+      const online = onlineStore.getState();
+      online.restoreWatch(
+        online.watch.map((p) => renamedPath(p, pou.name, preview.name)),
+        online.watchExpanded.map((p) => renamedPath(p, pou.name, preview.name)),
+      );
+      onClose();
+      return;
+    }
+    try {
+      const answer = await renameEverywhere(project, pou.name, name.trim());
+      setResult(answer);
+      setPreview({ name: name.trim(), changes: answer.changes });
+      setError(null);
+    } catch (err) {
+      setError(message(err));
+      setPreview(null);
+    }
+  };
+  const ready = preview !== null && preview.name === name.trim();
+  return (
+    <Dialog title={`Rename ${pou.name}`} onClose={onClose}>
+      <form onSubmit={(e) => void submit(e)}>
+        <input
+          aria-label="New name"
+          autoFocus
+          value={name}
+          onChange={(e) => setName(e.target.value)}
+          spellCheck={false}
+        />
+        {ready ? (
+          <>
+            <p>
+              {preview.changes.length} place{preview.changes.length === 1 ? "" : "s"} will change:
+            </p>
+            <ReferenceList references={preview.changes} empty="Nothing else uses this name." />
+          </>
+        ) : null}
+        {error ? (
+          <p className="new-pou-error" role="alert">
+            {error}
+          </p>
+        ) : null}
+        <div className="dialog-buttons">
+          <button type="submit">{ready ? "Rename" : "Preview"}</button>
+          <button type="button" onClick={onClose}>
+            Cancel
+          </button>
+        </div>
+      </form>
+    </Dialog>
+  );
+}
+
+/** Delete: what still refers to the POU (those places will no longer compile), then one step. */
+function DeleteDialog({ pou, onClose }: { pou: Pou; onClose(): void }) {
+  const [references, setReferences] = useState<Reference[] | null>(null);
+  const [error, setError] = useState<string | null>(null);
+  useEffect(() => {
+    const project = workspaceStore.getState().project;
+    if (project) referencesTo(project, pou.name).then(setReferences, (err) => setError(message(err)));
+  }, [pou.name]);
+  const remove = () => {
+    const ws = workspaceStore.getState();
+    if (!ws.project) return;
+    const pous = (ws.project.pous ?? []).filter((p) => p.name !== pou.name);
+    ws.applyOperation(`delete ${pou.name}`, { ...ws.project, pous }, [pou.name], { closed: [pou.name] });
+    onClose();
+  };
+  return (
+    <Dialog title={`Delete ${pou.name}`} onClose={onClose}>
+      {references === null && !error ? <p>Looking for uses of {pou.name}…</p> : null}
+      {references?.length ? <p>These places use {pou.name} and will no longer compile:</p> : null}
+      {references ? <ReferenceList references={references} empty={`Nothing refers to ${pou.name}.`} /> : null}
+      {error ? (
+        <p className="new-pou-error" role="alert">
+          {error}
+        </p>
+      ) : null}
+      <div className="dialog-buttons">
+        <button type="button" onClick={remove} disabled={references === null && !error} autoFocus>
+          Delete {pou.name}
+        </button>
+        <button type="button" onClick={onClose}>
+          Cancel
+        </button>
+      </div>
+    </Dialog>
+  );
+}
+
+function DuplicateDialog({ pou, onClose }: { pou: Pou; onClose(): void }) {
+  const [name, setName] = useState(() => copyName(workspaceStore.getState().project ?? { name: "" }, pou.name));
+  const [error, setError] = useState<string | null>(null);
+  const submit = async (e: FormEvent) => {
+    e.preventDefault();
+    const ws = workspaceStore.getState();
+    if (!ws.project) return;
+    try {
+      const next = await duplicated(ws.project, pou.name, name.trim());
+      ws.applyOperation(`duplicate ${pou.name}`, next, [name.trim()]);
+      ws.openPou(name.trim());
+      onClose();
+    } catch (err) {
+      setError(message(err));
+    }
+  };
+  return (
+    <Dialog title={`Duplicate ${pou.name}`} onClose={onClose}>
+      <form onSubmit={(e) => void submit(e)}>
+        <input aria-label="Name of the copy" autoFocus value={name} onChange={(e) => setName(e.target.value)} />
+        {error ? (
+          <p className="new-pou-error" role="alert">
+            {error}
+          </p>
+        ) : null}
+        <div className="dialog-buttons">
+          <button type="submit">Duplicate</button>
+          <button type="button" onClick={onClose}>
+            Cancel
+          </button>
+        </div>
+      </form>
+    </Dialog>
+  );
+}
+
+function KindDialog({ pou, onClose }: { pou: Pou; onClose(): void }) {
+  const [kind, setKind] = useState<Pou["kind"]>(pou.kind);
+  const change = (e: FormEvent) => {
+    e.preventDefault();
+    const ws = workspaceStore.getState();
+    if (!ws.project) return;
+    const { return_type: _unused, ...rest } = pou;
+    const next: Pou = {
+      ...rest,
+      kind,
+      declarations: emptyDeclarations(kind),
+      ...(kind === "function" ? { return_type: pou.return_type ?? "BOOL" } : {}),
+    };
+    const pous = (ws.project.pous ?? []).map((p) => (p.name === pou.name ? next : p));
+    ws.applyOperation(`make ${pou.name} a ${KIND_HELP[kind].label}`, { ...ws.project, pous }, [pou.name]);
+    onClose();
+  };
+  return (
+    <Dialog title={`Kind of ${pou.name}`} onClose={onClose}>
+      <form onSubmit={change}>
+        <KindPicker kind={kind} onChange={setKind} />
+        <div className="dialog-buttons">
+          <button type="submit">Change kind</button>
+          <button type="button" onClick={onClose}>
+            Cancel
+          </button>
+        </div>
+      </form>
+    </Dialog>
+  );
+}
+
+/** The kind select with a sentence saying what the chosen kind is. */
+export function KindPicker({ kind, onChange }: { kind: Pou["kind"]; onChange(kind: Pou["kind"]): void }) {
+  return (
+    <>
+      <select aria-label="POU kind" value={kind} onChange={(e) => onChange(e.target.value as Pou["kind"])}>
+        {Object.entries(KIND_HELP).map(([value, { label }]) => (
+          <option key={value} value={value}>
+            {label}
+          </option>
+        ))}
+      </select>
+      <p className="kind-help">{KIND_HELP[kind].help}</p>
+    </>
+  );
+}
+
+/** The "⋯" button of a POU in the tree and its menu. */
+export function PouActions({ pou }: { pou: Pou }) {
+  const [menu, setMenu] = useState(false);
+  const [action, setAction] = useState<Action | null>(null);
+  const empty = isEmptyPou(pou);
+  const choose = (a: Action) => {
+    setMenu(false);
+    setAction(a);
+  };
+  const close = () => setAction(null);
+  return (
+    <span className="tree-actions">
+      <button
+        type="button"
+        className="tree-actions-button"
+        aria-label={`Actions for ${pou.name}`}
+        aria-haspopup="menu"
+        aria-expanded={menu}
+        onClick={() => setMenu((m) => !m)}
+      >
+        ⋯
+      </button>
+      {menu ? (
+        <div className="tree-menu" role="menu" aria-label={`${pou.name} actions`}>
+          <button type="button" role="menuitem" onClick={() => choose("rename")}>
+            Rename…
+          </button>
+          <button type="button" role="menuitem" onClick={() => choose("duplicate")}>
+            Duplicate…
+          </button>
+          <button
+            type="button"
+            role="menuitem"
+            disabled={!empty}
+            title={empty ? undefined : "Only an empty POU (no variables, no body) can change its kind."}
+            onClick={() => choose("kind")}
+          >
+            Change kind…
+          </button>
+          <button type="button" role="menuitem" onClick={() => choose("delete")}>
+            Delete…
+          </button>
+        </div>
+      ) : null}
+      {action === "rename" ? <RenameDialog pou={pou} onClose={close} /> : null}
+      {action === "duplicate" ? <DuplicateDialog pou={pou} onClose={close} /> : null}
+      {action === "kind" ? <KindDialog pou={pou} onClose={close} /> : null}
+      {action === "delete" ? <DeleteDialog pou={pou} onClose={close} /> : null}
+    </span>
+  );
+}

@@ -1,0 +1,43 @@
+import { describe, expect, it } from "vitest";
+import type { Pou } from "../generated/api";
+import { copyName, describeReference, isEmptyPou, renamedPath } from "./refactor";
+
+const pou = (declarations: string, body: Pou["body"], language: Pou["language"] = "st"): Pou => ({
+  name: "P",
+  kind: "program",
+  language,
+  declarations,
+  body,
+});
+
+describe("project operations' pure facts", () => {
+  it("knows an empty POU: only empty VAR blocks and comments, no body or networks", () => {
+    expect(isEmptyPou(pou("VAR\nEND_VAR", ""))).toBe(true);
+    expect(isEmptyPou(pou("VAR_INPUT (* none yet *)\nEND_VAR", "  "))).toBe(true);
+    expect(isEmptyPou(pou("VAR\n  x : BOOL;\nEND_VAR", ""))).toBe(false);
+    expect(isEmptyPou(pou("VAR\nEND_VAR", "x := 1;"))).toBe(false);
+    expect(isEmptyPou(pou("", { networks: [] }, "ld"))).toBe(true);
+    expect(isEmptyPou(pou("", { networks: [{ id: "n1", elements: [] }] }, "ld"))).toBe(false);
+  });
+
+  it("renames the first part of a watch path only, in any case", () => {
+    expect(renamedPath("MAIN.b.Q", "Main", "Plant")).toBe("Plant.b.Q");
+    expect(renamedPath("Other.Main", "Main", "Plant")).toBe("Other.Main");
+    expect(renamedPath("MainX.a", "Main", "Plant")).toBe("MainX.a");
+  });
+
+  it("names the next free copy", () => {
+    const project = { name: "p", pous: [pou("", ""), { ...pou("", ""), name: "P_copy" }] };
+    expect(copyName(project, "P")).toBe("P_copy2");
+  });
+
+  it("says where a reference is in the tree's words", () => {
+    expect(
+      describeReference({ part: "network", pou: "Lad", network_number: 2, network_label: "Timer", text: "" }),
+    ).toBe('Lad, network 2 "Timer"');
+    expect(describeReference({ part: "declarations", pou: "Main", line: 3, text: "" })).toBe(
+      "Main, declarations line 3",
+    );
+    expect(describeReference({ part: "task", task: "Fast", text: "Main" })).toBe("task Fast");
+  });
+});

@@ -1,0 +1,350 @@
+// An SFC POU in the workspace: the chart editor with the live check of the working copy (POST /api/check),
+// online mode (active steps and actions, step times, every condition, forces on step flags through the
+// watch list and the step's context), breakpoints on steps and transitions, "step to the next transition",
+// and the POU's actions and named transitions opened in the ST, LD or FBD editor (their lines and networks
+// take breakpoints too, with the part they are in).
+import { useCallback, useEffect, useMemo, useState, type ReactNode } from "react";
+import type { Diagnostic, LibraryEntry, SymbolInfo } from "../generated/api";
+import type { FbdBody, LdBody, Pou, SfcAction, SfcNamedTransition } from "../generated/api";
+import { debugStore, useDebug } from "../debug/store";
+import { FbdEditor } from "../fbd/editor/FbdEditor";
+import { keysOf } from "../keys/keymap";
+import { LdEditor } from "../ld/editor/LdEditor";
+import { historyOf, record, type History } from "../ld/history";
+import { operandCommands } from "../online/operandCommands";
+import { onlineStore, useOnline } from "../online/store";
+import { onlineReadOnly, useLdOnline, useShownInstance } from "../online/useLdOnline";
+import { useFbdOnline } from "../fbd/useFbdOnline";
+import { useWorkspace } from "../project/store";
+import { StEditor } from "../st/StEditor";
+import { useStAssist } from "../st/useStAssist";
+import type { SfcBody } from "./model";
+import { bindSfc, sfcOnlineView } from "./online";
+import { setPartBody } from "./ops";
+import { SfcEditor, type SfcPart } from "./SfcEditor";
+
+const partPath = (part: SfcPart) => `${part.kind === "action" ? "actions" : "transitions"}/${part.name}`;
+
+export function SfcPouView({
+  pou,
+  history,
+  onlineActions,
+}: {
+  pou: Pou;
+  history: History<SfcBody>;
+  onlineActions: ReactNode;
+}) {
+  const name = pou.name;
+  const setHistory = useWorkspace((s) => s.setSfcHistory);
+  const table = useWorkspace((s) => s.symbols[name]);
+  const body = history.present;
+  const { diagnostics: checked, completions } = useStAssist(pou);
+  const [part, setPart] = useState<SfcPart | null>(null);
+  const diagnostics = useMemo(
+    () => checked.filter((d) => (d.pou ?? "").toUpperCase() === name.toUpperCase()),
+    [checked, name],
+  );
+  const chartDiagnostics = useMemo(
+    () => diagnostics.filter((d) => !d.file || d.file.toUpperCase() === `${name}/chart`.toUpperCase()),
+    [diagnostics, name],
+  );
+  const variables = useMemo(
+    () => (table?.symbols ?? []).filter((s) => s.type.toUpperCase() === "BOOL").map((s) => s.name),
+    [table],
+  );
+
+  // online
+  const phase = useOnline((s) => s.phase);
+  const monitor = useOnline((s) => s.monitor);
+  const instance = useShownInstance(pou);
+  const live = phase !== "offline";
+  const key = `sfc:${name}`;
+  const binding = useMemo(() => (instance ? bindSfc(body, instance) : null), [body, instance]);
+  useEffect(() => {
+    onlineStore
+      .getState()
+      .subscribe(key, live && binding ? { paths: binding.paths, elements: binding.elements } : null);
+  }, [key, live, binding]);
+  useEffect(() => () => onlineStore.getState().subscribe(key, null), [key]);
+  const online = useMemo(
+    () => (live && binding ? sfcOnlineView(monitor, binding) : undefined),
+    [live, binding, monitor],
+  );
+  const readOnly = onlineReadOnly(pou, live, instance);
+  const flagCommands = useMemo(
+    () =>
+      live && instance
+        ? operandCommands(
+            (operand) => `${instance}.${operand}`,
+            () => "BOOL",
+          )
+        : undefined,
+    [live, instance],
+  );
+
+  // debugging
+  const breakpoints = useDebug((s) => s.breakpoints);
+  const at = useOnline((s) => (s.monitor.state === "halted" ? s.monitor.at : null));
+  const upper = name.toUpperCase();
+  const marks = useMemo(() => {
+    const mine = breakpoints.filter((b) => b.pou.toUpperCase() === upper && !b.body);
+    return {
+      breakpoints: new Set(mine.flatMap((b) => ("element" in b ? [b.element] : []))),
+      halted: at && at.pou.toUpperCase() === upper && !at.body ? (at.element ?? null) : null,
+    };
+  }, [breakpoints, at, upper]);
+  // A halt inside an action or named transition shows it.
+  const haltedPart = at && at.pou.toUpperCase() === upper && at.body ? at.body : null;
+  const [haltSeen, setHaltSeen] = useState<string | null>(null);
+  if (haltedPart !== haltSeen) {
+    setHaltSeen(haltedPart);
+    if (haltedPart) {
+      const [kind, partName] = haltedPart.split("/", 2);
+      setPart({ kind: kind === "actions" ? "action" : "transition", name: partName! });
+    }
+  }
+
+  // The server steps to a transition from a stopped or halted scan (a running one is stopped first).
+  const running = useOnline((s) => s.monitor.state === "running");
+  const stepToTransition = live ? (
+    <button
+      type="button"
+      disabled={running}
+      title={
+        running
+          ? "Stop the simulation first: then scans run until an SFC transition fires"
+          : `Run scans until an SFC transition fires, then halt there (${keysOf("app", "step-transition")})`
+      }
+      onClick={() => debugStore.getState().step("transition")}
+    >
+      Step to next transition
+    </button>
+  ) : null;
+
+  if (part) {
+    const item =
+      part.kind === "action"
+        ? body.actions?.find((a) => a.name === part.name)
+        : body.transitions?.find((t) => t.name === part.name);
+    return (
+      <div className="sfc-pou">
+        <div className="sfc-part-bar" role="navigation" aria-label="SFC parts">
+          <button type="button" onClick={() => setPart(null)}>
+            Chart
+          </button>
+          <span>
+            {part.kind === "action" ? "Action" : "Transition"} <strong>{part.name}</strong>
+            {item ? ` (${(item.language ?? "st").toUpperCase()})` : ""}
+          </span>
+          {stepToTransition}
+        </div>
+        <div className="sfc-part">
+          {item ? (
+            <PartEditor
+              pou={pou}
+              part={part}
+              item={item}
+              diagnostics={diagnostics}
+              completions={completions}
+              readOnly={readOnly}
+              onChange={(content) =>
+                setHistory(name, record(history, setPartBody(body, part.kind, part.name, content)))
+              }
+            />
+          ) : (
+            <p className="placeholder">
+              {part.name} is no longer part of {name}.
+            </p>
+          )}
+        </div>
+      </div>
+    );
+  }
+  return (
+    <SfcEditor
+      key={name}
+      history={history}
+      onHistoryChange={(h) => setHistory(name, h)}
+      variables={variables}
+      diagnostics={chartDiagnostics}
+      online={online}
+      readOnly={readOnly}
+      readOnlyActions={readOnly ? onlineActions : undefined}
+      onOpen={setPart}
+      debugging={{ marks, toggle: (element) => debugStore.getState().toggle({ pou: name, element }) }}
+      toolbarExtra={stepToTransition}
+      onlineActions={flagCommands}
+    />
+  );
+}
+
+function PartEditor(props: {
+  pou: Pou;
+  part: SfcPart;
+  item: SfcAction | SfcNamedTransition;
+  diagnostics: Diagnostic[];
+  completions: ReturnType<typeof useStAssist>["completions"];
+  readOnly: string | null;
+  onChange(content: SfcAction["body"]): void;
+}) {
+  const { pou, part, item } = props;
+  const body = partPath(part);
+  const file = `${pou.name}/${body}`;
+  const mine = useMemo(
+    () => props.diagnostics.filter((d) => d.file?.toUpperCase() === file.toUpperCase()),
+    [props.diagnostics, file],
+  );
+  const breakpoints = useDebug((s) => s.breakpoints);
+  const at = useOnline((s) => (s.monitor.state === "halted" ? s.monitor.at : null));
+  const upper = pou.name.toUpperCase();
+  const inPart = (b: { pou: string; body?: string }) => b.pou.toUpperCase() === upper && b.body === body;
+  const library = useWorkspace((s) => s.library);
+  const table = useWorkspace((s) => s.symbols[pou.name]);
+  const symbols = useMemo(() => (table ? [...table.symbols, ...table.globals] : []), [table]);
+  const [histories, setHistories] = useState<Record<string, History<LdBody | FbdBody>>>({});
+  if (typeof item.body === "string" || item.body === undefined) {
+    const lines = breakpoints.flatMap((b) => ("line" in b && inPart(b) ? [b.line] : []));
+    return (
+      <StEditor
+        key={file}
+        text={typeof item.body === "string" ? item.body : ""}
+        onChange={(text) => props.onChange(text)}
+        file={file}
+        diagnostics={mine}
+        completions={props.completions}
+        readOnly={props.readOnly}
+        label={`${pou.name} ${part.kind} ${part.name}`}
+        debug={{
+          breakpoints: lines,
+          halted: at && inPart({ pou: at.pou, body: at.body ?? undefined }) && at.line != null ? at.line : null,
+          onToggle: (line) => debugStore.getState().toggle({ pou: pou.name, body, line }),
+        }}
+      />
+    );
+  }
+  const diagram = {
+    pou,
+    body,
+    file,
+    diagnostics: mine,
+    library,
+    symbols: table ? symbols : null,
+    readOnly: props.readOnly,
+    histories,
+    setHistories,
+    onChange: props.onChange,
+  };
+  if ("networks" in item.body && kindOfDiagram(item) === "ld") {
+    const networks = breakpoints.flatMap((b) => ("network" in b && inPart(b) ? [[b.network, true] as const] : []));
+    return (
+      <LdPart
+        {...diagram}
+        content={item.body as LdBody}
+        breakpoints={Object.fromEntries(networks)}
+        halted={at && at.body === body && at.network ? at.network : null}
+      />
+    );
+  }
+  return (
+    <FbdPart
+      {...diagram}
+      content={item.body as FbdBody}
+      breakpoints={new Set(breakpoints.flatMap((b) => ("network" in b && inPart(b) ? [b.network] : [])))}
+      halted={at && at.body === body ? { network: at.network ?? null, element: null } : null}
+    />
+  );
+}
+
+/** What the LD and FBD editors of a part share: where it is, its checks and its undo history. */
+interface DiagramPart {
+  pou: Pou;
+  /** "actions/Fill": breakpoints, halts and probes name the part so. */
+  body: string;
+  file: string;
+  diagnostics: Diagnostic[];
+  library: LibraryEntry[];
+  symbols: SymbolInfo[] | null;
+  readOnly: string | null;
+  histories: Record<string, History<LdBody | FbdBody>>;
+  setHistories(
+    update: (all: Record<string, History<LdBody | FbdBody>>) => Record<string, History<LdBody | FbdBody>>,
+  ): void;
+  onChange(content: SfcAction["body"]): void;
+}
+
+/** An LD action or transition, online with the power of its own probes. */
+function LdPart(props: DiagramPart & { content: LdBody; breakpoints: Record<string, boolean>; halted: string | null }) {
+  const { pou, body, file, content } = props;
+  const history = (props.histories[file] as History<LdBody> | undefined) ?? historyOf(content);
+  const present = history.present === content ? history : historyOf(content);
+  const live = useLdOnline(pou, content, props.symbols, props.library, body);
+  return (
+    <LdEditor
+      key={file}
+      history={present}
+      onHistoryChange={(h) => {
+        props.setHistories((all) => ({ ...all, [file]: h }));
+        props.onChange(h.present);
+      }}
+      library={props.library}
+      symbols={props.symbols ?? []}
+      diagnostics={props.diagnostics}
+      readOnly={props.readOnly}
+      online={live.online}
+      onlineActions={live.actions}
+      onVisibleChange={live.onVisibleChange}
+      debugging={{
+        marks: {
+          networks: props.breakpoints,
+          halted: props.halted ? { network: props.halted, element: null } : null,
+        },
+        toggle: (target) => {
+          if ("network" in target) debugStore.getState().toggle({ pou: pou.name, body, network: target.network });
+        },
+      }}
+    />
+  );
+}
+
+/** An FBD action or transition, online with the values of its own probes. */
+function FbdPart(
+  props: DiagramPart & {
+    content: FbdBody;
+    breakpoints: ReadonlySet<string>;
+    halted: { network: string | null; element: null } | null;
+  },
+) {
+  const { pou, body, file, content, library } = props;
+  const history = (props.histories[file] as History<FbdBody> | undefined) ?? historyOf(content);
+  const present = history.present === content ? history : historyOf(content);
+  const byName = useMemo(() => new Map(library.map((e) => [e.name.toUpperCase(), e])), [library]);
+  const lookup = useCallback((call: string) => byName.get(call.toUpperCase()), [byName]);
+  const live = useFbdOnline(pou, content, lookup, props.symbols, body);
+  return (
+    <FbdEditor
+      key={file}
+      history={present}
+      onHistoryChange={(h) => {
+        props.setHistories((all) => ({ ...all, [file]: h }));
+        props.onChange(h.present);
+      }}
+      library={library}
+      symbols={props.symbols ?? []}
+      diagnostics={props.diagnostics}
+      readOnly={props.readOnly}
+      online={live.online}
+      onlineActions={live.actions}
+      onVisibleChange={live.onVisibleChange}
+      debug={{
+        networks: props.breakpoints,
+        elements: new Set(),
+        halted: props.halted,
+        toggle: (bp) => {
+          if ("network" in bp) debugStore.getState().toggle({ pou: pou.name, body, network: bp.network });
+        },
+      }}
+    />
+  );
+}
+
+const kindOfDiagram = (item: SfcAction | SfcNamedTransition) => item.language ?? "st";

@@ -1,0 +1,116 @@
+// The SFC chart as the editor sees it: the project model's nested sequences (backend model/sfc.py), with
+// helpers to find an element and the sequence holding it, walk every element, and name new ones. A sequence
+// alternates step-like elements (a step, a simultaneous divergence) and transition-like ones (a transition,
+// an alternative divergence) and may end with a jump; the first step of the chart is the initial step.
+import type {
+  SfcAlternative,
+  SfcAssociation,
+  SfcBody,
+  SfcJump,
+  SfcParallel,
+  SfcStep,
+  SfcTransition,
+} from "../generated/api";
+
+export type { SfcAlternative, SfcAssociation, SfcBody, SfcJump, SfcParallel, SfcStep, SfcTransition };
+export type SfcElement = SfcStep | SfcTransition | SfcAlternative | SfcParallel | SfcJump;
+export type Sequence = SfcElement[];
+export type Qualifier = NonNullable<SfcAssociation["qualifier"]>;
+
+export const QUALIFIERS: readonly Qualifier[] = ["N", "R", "S", "L", "D", "P", "P1", "P0", "SD", "DS", "SL"];
+/** Qualifiers that need a TIME (SFC-05). */
+export const TIMED: ReadonlySet<Qualifier> = new Set(["L", "D", "SD", "DS", "SL"]);
+export const QUALIFIER_TEXT: Record<Qualifier, string> = {
+  N: "non-stored: while the step is active",
+  R: "overriding reset",
+  S: "set (stored) until reset",
+  L: "time limited",
+  D: "time delayed",
+  P: "pulse: once on activation",
+  P1: "pulse on activation (rising edge)",
+  P0: "pulse on deactivation (falling edge)",
+  SD: "stored and time delayed",
+  DS: "delayed and stored",
+  SL: "stored and time limited",
+};
+
+export const kindOf = (e: SfcElement): "step" | "transition" | "alternative" | "parallel" | "jump" =>
+  e.type ?? ("name" in e ? "step" : "target" in e ? "jump" : "branches" in e ? "alternative" : "transition");
+
+export const isStepLike = (e: SfcElement): boolean => kindOf(e) === "step" || kindOf(e) === "parallel";
+export const isTransitionLike = (e: SfcElement): boolean => kindOf(e) === "transition" || kindOf(e) === "alternative";
+
+export const chartOf = (body: SfcBody): Sequence => body.chart?.elements ?? [];
+
+/** Where an element is: the sequence that holds it (and its index there). */
+export interface Place {
+  sequence: Sequence;
+  index: number;
+  element: SfcElement;
+}
+
+/** Every element of the chart in drawing order, with its place. */
+export function* walk(sequence: Sequence): Generator<Place> {
+  for (let index = 0; index < sequence.length; index += 1) {
+    const element = sequence[index]!;
+    yield { sequence, index, element };
+    if ("branches" in element) for (const branch of element.branches) yield* walk(branch);
+  }
+}
+
+export function locate(body: SfcBody, id: string): Place | undefined {
+  for (const place of walk(chartOf(body))) if (place.element.id === id) return place;
+  return undefined;
+}
+
+export const steps = (body: SfcBody): SfcStep[] =>
+  [...walk(chartOf(body))].map((p) => p.element).filter((e): e is SfcStep => kindOf(e) === "step");
+
+/** Every id of the body (elements and associations): new ones must differ. */
+export function usedIds(body: SfcBody): Set<string> {
+  const ids = new Set<string>();
+  for (const { element } of walk(chartOf(body))) {
+    ids.add(element.id);
+    if (kindOf(element) === "step") for (const a of (element as SfcStep).actions ?? []) ids.add(a.id);
+  }
+  return ids;
+}
+
+/** Names taken by steps, actions and named transitions (upper case): a new one must differ. */
+export function usedNames(body: SfcBody): Set<string> {
+  return new Set([
+    ...steps(body).map((s) => s.name.toUpperCase()),
+    ...(body.actions ?? []).map((a) => a.name.toUpperCase()),
+    ...(body.transitions ?? []).map((t) => t.name.toUpperCase()),
+  ]);
+}
+
+/** The first `<prefix><n>` not in `used` (compared upper case); reserved from now on. */
+export function freshName(prefix: string, used: Set<string>): string {
+  let n = 1;
+  while (used.has(`${prefix}${n}`.toUpperCase())) n += 1;
+  const name = `${prefix}${n}`;
+  used.add(name.toUpperCase());
+  return name;
+}
+
+/** Element ids as the model names them (s1, t1, alt1 ...), unique in the body. */
+export function freshId(prefix: string, used: Set<string>): string {
+  let n = 1;
+  while (used.has(`${prefix}${n}`)) n += 1;
+  const id = `${prefix}${n}`;
+  used.add(id);
+  return id;
+}
+
+/** A step or transition in the user's words ("step Rinse", "transition Rinse.T >= T#2s"); null for other ids. */
+export function elementText(body: SfcBody, id: string): string | null {
+  const element = locate(body, id)?.element;
+  if (!element) return null;
+  if (kindOf(element) === "step") return `step ${(element as SfcStep).name}`;
+  if (kindOf(element) === "transition") return `transition ${(element as SfcTransition).condition}`;
+  return null;
+}
+
+/** The id of the element (or association) a probe or breakpoint names: "t3.COND" is transition t3's condition. */
+export const conditionProbe = (transition: string): string => `${transition}.COND`;

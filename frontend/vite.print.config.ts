@@ -1,0 +1,20 @@
+import react from "@vitejs/plugin-react";
+import { defineConfig } from "vite";
+
+// The print view (print.html, src/print) as one script and one style sheet, so `ladderlab doc` can put
+// the whole page into a single HTML file that opens (and Chromium prints) without a server. Built after
+// the app into the server's static folder, served at /print/print.html.
+export default defineConfig({
+  plugins: [react()],
+  base: "./",
+  build: {
+    outDir: "../backend/ladderlab/server/static/print",
+    emptyOutDir: true,
+    cssCodeSplit: false,
+    assetsInlineLimit: 100_000_000,
+    rollupOptions: {
+      input: "print.html",
+      output: { inlineDynamicImports: true, entryFileNames: "print.js", assetFileNames: "print[extname]" },
+    },
+  },
+});

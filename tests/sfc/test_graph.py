@@ -1,0 +1,157 @@
+"""model/sfc_graph.py: a chart as its step/transition graph and a graph (PLCopen, textual SFC) back as a chart."""
+
+from __future__ import annotations
+
+import pytest
+from hypothesis import given
+
+from ladderlab.model.sfc import SfcChart
+from ladderlab.model.sfc_graph import (
+    ImportedStep,
+    ImportedTransition,
+    UnstructuredChart,
+    chart_graph,
+    graph_chart,
+)
+
+from .strategies import charts
+from .support import alt, jump, par, step, tr
+
+
+def edges(chart: SfcChart) -> list[tuple[tuple[str, ...], tuple[str, ...], str]]:
+    graph = chart_graph(chart)
+    assert not [p for p in graph.problems if p.severity == "error"], graph.problems
+    return sorted(
+        (tuple(sorted(t.sources)), tuple(sorted(t.targets)), t.transition.condition) for t in graph.transitions
+    )
+
+
+def imported(chart: SfcChart) -> tuple[list[ImportedStep], list[ImportedTransition]]:
+    graph = chart_graph(chart)
+    steps = [ImportedStep(s.step, s.initial) for s in graph.steps.values()]
+    transitions = [ImportedTransition(t.transition, list(t.sources), list(t.targets)) for t in graph.transitions]
+    return steps, transitions
+
+
+def test_the_graph_of_a_chart_with_both_branch_kinds():
+    chart = SfcChart.model_validate(
+        {
+            "elements": [
+                step("S0"),
+                alt(
+                    [tr("a"), step("S1"), tr("b")],
+                    [tr("c"), par([step("P1")], [step("P2"), tr("d"), step("P3")]), tr("e")],
+                ),
+                step("S4"),
+                tr("f"),
+                jump("S0"),
+            ]
+        }
+    )
+    assert edges(chart) == [
+        (("P1", "P3"), ("S4",), "e"),
+        (("P2",), ("P3",), "d"),
+        (("S0",), ("P1", "P2"), "c"),
+        (("S0",), ("S1",), "a"),
+        (("S1",), ("S4",), "b"),
+        (("S4",), ("S0",), "f"),
+    ]
+    graph = chart_graph(chart)
+    assert graph.initial is not None and graph.initial.step.name == "S0"
+    assert [t.transition.condition for t in graph.transitions] == ["a", "b", "c", "d", "e", "f"]
+
+
+def test_priorities_come_before_drawing_order():
+    chart = SfcChart.model_validate(
+        {"elements": [step("S0"), alt([tr("a"), jump("S0")], [tr("b", 2), jump("S0")], [tr("c", 1), jump("S0")])]}
+    )
+    assert [t.transition.condition for t in chart_graph(chart).evaluation_order()] == ["c", "b", "a"]
+
+
+@given(charts())
+def test_a_chart_rebuilt_from_its_graph_has_the_same_graph(elements):
+    """Whatever the chart, rebuilding it from its graph gives a chart of the same steps and transitions, and the
+    transitions leaving one step keep their left-to-right order (their priority)."""
+    chart = SfcChart.model_validate({"elements": elements})
+    steps, transitions = imported(chart)
+    rebuilt, unreachable = graph_chart(steps, transitions)
+    assert unreachable == []
+    assert edges(rebuilt) == edges(chart)
+    before, after = chart_graph(chart), chart_graph(rebuilt)
+    assert [s for s in before.steps] == sorted(before.steps, key=list(before.steps).index)
+    assert set(before.steps) == set(after.steps)
+    for source in before.steps:
+        order = [t.transition.condition for t in before.evaluation_order() if source in t.sources]
+        assert order == [t.transition.condition for t in after.evaluation_order() if source in t.sources]
+
+
+def test_the_rebuilt_chart_of_first_steps_joins_both_branches_and_jumps_back():
+    """Beremiz first_steps' CounterSFC as a graph: Start -> (NOT Reset) Count | (Reset) ResetCounter -> Start."""
+    start, count, reset = (step(n) for n in ("Start", "Count", "ResetCounter"))
+    models = SfcChart.model_validate({"elements": [start, tr("x"), count, tr("x"), reset, tr("x"), jump("Start")]})
+    by_name = {s.name: s for s in models.elements if s.type == "step"}  # type: ignore[union-attr]
+    t = {
+        c: SfcChart.model_validate({"elements": [step("Q"), tr(c), jump("Q")]}).elements[1]
+        for c in ("NOT Reset", "Reset", "Reset ", "NOT Reset ")
+    }
+    graph_steps = [
+        ImportedStep(by_name["Start"], True),
+        ImportedStep(by_name["ResetCounter"]),
+        ImportedStep(by_name["Count"]),
+    ]
+    graph_transitions = [
+        ImportedTransition(t["NOT Reset"], ["Start"], ["Count"]),
+        ImportedTransition(t["Reset"], ["Start"], ["ResetCounter"]),
+        ImportedTransition(t["Reset "], ["Count"], ["Start"]),
+        ImportedTransition(t["NOT Reset "], ["ResetCounter"], ["Start"]),
+    ]
+    chart, unreachable = graph_chart(graph_steps, graph_transitions)
+    assert unreachable == []
+    shape = [e.type for e in chart.elements]
+    assert shape == ["step", "alternative"]
+    branches = chart.elements[1].branches  # type: ignore[union-attr]
+    assert [[e.type for e in b] for b in branches] == [["transition", "step", "transition", "jump"]] * 2
+
+
+def test_a_graph_no_chart_can_draw_is_refused_with_the_reason():
+    s = {n: SfcChart.model_validate({"elements": [step(n)]}).elements[0] for n in ("A", "B", "C")}
+    cond = SfcChart.model_validate({"elements": [step("Q"), tr("x"), jump("Q")]}).elements[1]
+    with pytest.raises(UnstructuredChart, match="several initial steps"):
+        graph_chart([ImportedStep(s["A"], True), ImportedStep(s["B"], True)], [])
+    d = SfcChart.model_validate({"elements": [step("D")]}).elements[0]
+    join = SfcChart.model_validate({"elements": [step("Q"), tr("y"), jump("Q")]}).elements[1]
+    with pytest.raises(UnstructuredChart, match="do not join at one transition"):  # B and C join, D never does
+        graph_chart(
+            [ImportedStep(s["A"], True), ImportedStep(s["B"]), ImportedStep(s["C"]), ImportedStep(d)],
+            [ImportedTransition(cond, ["A"], ["B", "C", "D"]), ImportedTransition(join, ["B", "C"], ["A"])],
+        )
+
+
+def test_steps_nothing_reaches_are_named():
+    s = {n: SfcChart.model_validate({"elements": [step(n)]}).elements[0] for n in ("A", "B", "Lost")}
+    cond = SfcChart.model_validate({"elements": [step("Q"), tr("x"), jump("Q")]}).elements[1]
+    chart, unreachable = graph_chart(
+        [ImportedStep(s["A"], True), ImportedStep(s["B"]), ImportedStep(s["Lost"])],
+        [ImportedTransition(cond, ["A"], ["B"])],
+    )
+    assert unreachable == ["Lost"]
+    assert [e.type for e in chart.elements] == ["step", "transition", "step"]
+
+
+def test_a_forward_jump_round_trips():
+    """S0 -(a)-> S1 | -(b)-> jump S3; S1 -> S2 -> S3: the jump goes to a step drawn after it."""
+    chart = SfcChart.model_validate(
+        {
+            "elements": [
+                step("S0"),
+                alt([tr("a"), step("S1"), tr("c")], [tr("b"), jump("S3")]),
+                step("S2"),
+                tr("d"),
+                step("S3"),
+                tr("e"),
+                jump("S0"),
+            ]
+        }
+    )
+    rebuilt, unreachable = graph_chart(*imported(chart))
+    assert unreachable == [] and edges(rebuilt) == edges(chart)
