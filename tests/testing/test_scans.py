@@ -221,3 +221,48 @@ END_TEST
         "5:1 TEST-DUPLICATE there is already a test called 'starts' in this file",
         "2:3 TEST-DECL a test declares VAR blocks only, not VAR_INPUT",
     ]
+
+
+IMAGE = """
+PROGRAM Main
+VAR
+    Start AT %IX0.0 : BOOL;
+    Motor AT %QX0.1 : BOOL;
+    Count AT %MW4 : INT;
+END_VAR
+Motor := Start OR %IX0.2;
+Count := Count + 1;
+END_PROGRAM
+"""
+
+
+def test_direct_addresses_and_located_variables_in_test_code():
+    """Issue 20 item 2 with issue 16's process image: a test sets inputs by address (as the world does) and reads
+    outputs and memory by address or by the program's located variable; %MW4 overlaps %MB4/%MB5 and %MX4.x
+    (little-endian, docs/runtime.md)."""
+    text = """
+TEST 'by address'
+  %IX0.0 := TRUE;
+  RUN_SCANS(1);
+  ASSERT_TRUE(%QX0.1, 'the motor runs');
+  ASSERT_TRUE(Main.Motor);
+  ASSERT_TRUE(Main.Start);
+  %IX0.0 := FALSE;
+  %IX0.2 := TRUE;
+  RUN_SCANS(1);
+  ASSERT_TRUE(%QX0.1, 'the second input runs it too');
+  ASSERT_EQ(Main.Count, 2);
+  ASSERT_EQ(%MB4, 2);
+  ASSERT_EQ(%MB5, 0);
+  ASSERT_TRUE(%MX4.1);
+  ASSERT_FALSE(%MX4.0);
+END_TEST
+TEST 'failing'
+  RUN_SCANS(3);
+  ASSERT_EQ(%MW4, 4, 'three scans');
+END_TEST
+"""
+    assert outcomes(run(IMAGE, text)) == {
+        "by address": None,
+        "failing": f"ASSERT_EQ failed: %MW4 expected 4, got 3\nMessage: three scans @{at(text, 'ASSERT_EQ(%MW4, 4')}",
+    }

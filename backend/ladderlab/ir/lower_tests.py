@@ -101,15 +101,21 @@ def lower_test_file(project: Project, text: str, file: str) -> TestProgram:
     tests = TestFileChecker(checker, parsed.ast, file)
     tests.duplicate_names()
     builder = _Builder(file)
+    # Addresses the tests use without a declaration join the program's (PouContext.direct): one process image.
+    image = (
+        {slot.name: slot for slot in lowered.program.globals if slot.address == slot.name} if lowered.program else {}
+    )
+    known = set(image)
     pous: dict[str, Pou] = {}
     for index in range(len(parsed.ast.tests)):
         test = tests.test(index)
         if lowered.program is not None and not has_errors(tests.diagnostics):
-            pous[test.info.name.upper()] = builder.test_pou(test, checked, parsed.ast)
+            pous[test.info.name.upper()] = builder.test_pou(test, checked, parsed.ast, image)
     diagnostics += tests.diagnostics + builder.diagnostics
     if lowered.program is None or has_errors(diagnostics):
         return TestProgram(None, diagnostics=diagnostics)
-    program = Program({**lowered.program.pous, **pous, **builder.stubs}, lowered.program.globals, lowered.program.tasks)
+    globals_ = lowered.program.globals + [slot for name, slot in image.items() if name not in known]
+    program = Program({**lowered.program.pous, **pous, **builder.stubs}, globals_, lowered.program.tasks)
     return TestProgram(program, builder.tests, builder.sites, list(builder.stubs), diagnostics)
 
 
@@ -125,8 +131,8 @@ class _Builder:
         self.diagnostics: list[Diagnostic] = []
 
     # ------------------------------------------------------------ POUs
-    def test_pou(self, test: CheckedTest, checked, tests: ast.TestFile) -> Pou:
-        ctx = PouContext(checked, test.info, self.diagnostics)
+    def test_pou(self, test: CheckedTest, checked, tests: ast.TestFile, image: dict[str, Slot]) -> Pou:
+        ctx = PouContext(checked, test.info, self.diagnostics, image)
         ctx.extra_statements = {
             ast.CallStmt: self._call_statement,
             ast.MockStmt: self._mock,

@@ -249,6 +249,9 @@ class Expressions:
             assert isinstance(array, t.Array)
             lo, hi = array.dims[len(last.indices) - 1]
             return f"({container}, {self.index(last.indices[-1], lo, hi)})"
+        located = self.located_member(ty, last.name)
+        if located is not None:
+            return f"({located[0]}, {located[1]})"
         owner, attr = self.member_parts(code, ty, last.name)
         return f"({owner}, {attr!r})"
 
@@ -262,8 +265,25 @@ class Expressions:
                 code = f"{code}[{self.index(index, lo, hi)}]"
             rest = ty.dims[len(selector.indices) :]
             return code, (t.Array(ty.element, rest) if rest else ty.element)
+        located = self.located_member(ty, selector.name)
+        if located is not None:
+            return f"{located[0]}[{located[1]}]", located[2]
         owner, attr = self.member_parts(code, ty, selector.name)
         return f"{owner}.{attr}", self.member_type(ty, selector.name)
+
+    def located_member(self, ty: t.IrType, member: str) -> tuple[str, int, t.IrType] | None:
+        """(view, key, type) of a program's located variable read from outside it (``Main.Motor`` in a test):
+        a program has one instance, so its located variables live in the process image, not in the instance."""
+        if not isinstance(ty, t.FbInstance):
+            return None
+        user = self.module.user_fb(ty.fb)
+        if user is None or user.kind != "program":
+            return None
+        slot = self.module.layouts[user.name.upper()].located.get(member.upper())
+        if slot is None:
+            return None
+        view, key = self.module.image_view(slot, world=self.scope.pou.live_clock)
+        return view, key, slot.type
 
     def index(self, e: ir.Expr, lo: int, hi: int) -> str:
         if isinstance(e, ir.Const) and isinstance(e.value, int) and lo <= e.value <= hi:
