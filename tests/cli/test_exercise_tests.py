@@ -11,11 +11,11 @@ from pathlib import Path
 import pytest
 
 from ladderlab.cli import main
-from ladderlab.examples import example_names, example_project
+from ladderlab.examples import example_project, list_examples
 from ladderlab.storage import Workspace
 from tests.support import EXAMPLES
 
-EXERCISES = [name for name in example_names() if name != "motor"]
+EXERCISES = [example.name for example in list_examples() if example.exercise]
 
 #: The tests an empty program passes: nothing may happen by itself.
 AT_REST = {
