@@ -32,8 +32,9 @@ def new_st_pou(page, name: str, kind: str) -> None:
 
 
 def replace_text(page, label: str, text: str) -> None:
-    """Select all of an ST editor's text and put ``text`` there (as a paste would)."""
-    page.get_by_label(label).click()
+    """Select all of an ST editor's text and put ``text`` there (as a paste would). Focused, not clicked: an open
+    completion list of the previous text may lie over the editor's middle."""
+    page.get_by_label(label).focus()
     page.keyboard.press("Control+a")
     page.keyboard.insert_text(text)
 

@@ -33,7 +33,6 @@ import { coverageMarks, coverageOf } from "../tests/coverage";
 import { testsStore, useTests } from "../tests/store";
 import { runsOf } from "./tasks";
 import { useDiagramPou } from "./useDiagramPou";
-import { SfcPouView } from "../sfc/SfcPouView";
 import { elementText as sfcElementText, type SfcBody } from "../sfc/model";
 import { ExportMenu } from "../interchange/ExportMenu";
 import { ImportPlcopen } from "../interchange/ImportPlcopen";
@@ -42,7 +41,7 @@ import { DebugBar } from "../debug/DebugBar";
 import { useLdDebugging } from "../debug/ldDebugging";
 import { revealPlace } from "../debug/reveal";
 import { debugStore } from "../debug/store";
-import { isShellTab, PanelsTree, revealWidget, ShellTab, tabLabel } from "../hmi/shell";
+import { isShellTab, PanelsTree, revealWidget, tabLabel } from "../hmi/shell";
 import { ViewBoundary } from "./ViewBoundary";
 import { useAppKeys } from "./useAppKeys";
 import { ShortcutHelp } from "../keys/ShortcutHelp";
@@ -62,6 +61,8 @@ import { traceStore } from "../trace/store";
 const StPouView = lazy(() => import("./StViews").then((m) => ({ default: m.StPouView })));
 const TestFileView = lazy(() => import("./StViews").then((m) => ({ default: m.TestFileView })));
 const FbdPouView = lazy(() => import("../fbd/FbdPouView").then((m) => ({ default: m.FbdPouView })));
+const ShellTab = lazy(() => import("../hmi/ShellTab").then((m) => ({ default: m.ShellTab })));
+const SfcPouView = lazy(() => import("../sfc/SfcPouView").then((m) => ({ default: m.SfcPouView })));
 
 /** The stores a project's session (project/session.ts) is kept from. */
 const SESSION_STORES: SessionStores = { workspace: workspaceStore, online: onlineStore, trace: traceStore };
@@ -762,7 +763,9 @@ export function WorkspaceView() {
         </ViewBoundary>
         {active ? (
           isShellTab(active) ? (
-            <ShellTab tab={active} />
+            <Suspense fallback={LOADING}>
+              <ShellTab tab={active} />
+            </Suspense>
           ) : isProjectPart(active) ? (
             <ProjectPartView key={active} part={active} />
           ) : isTestPath(active) ? (
