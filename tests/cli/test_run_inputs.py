@@ -86,7 +86,7 @@ def test_check_and_run_name_a_widget_bound_to_a_variable_the_program_lacks(capsy
     assert main(["check", str(folder)]) == 1
     out, _ = capsys.readouterr()
     assert out.splitlines()[0] == (
-        "hmi/Tank.json, widgets[10].paths[1], element trend: error panel_binding: panel Tank, widget trend "
+        "hmi/Tank.json, widgets[10].paths[1], element trend: error PANEL-BINDING: panel Tank, widget trend "
         "(paths[1]): TANK has no variable 'Lvl' - did you mean 'LEVEL'?"
     )
     code, rows, err = run(capsys, str(folder), "--cycles", "1")

@@ -161,17 +161,19 @@ def test_control_code_cannot_declare_a_plant():
     assert "Tank is a plant" in codes[0][4] and "cannot be declared as a variable" in codes[0][4]
 
 
-def test_a_ladder_box_cannot_call_a_plant():
-    from ladderlab.model import Box, LdBody, LdNetwork, Pou
+@pytest.mark.parametrize("language", ["ld", "fbd"])
+def test_a_diagram_box_cannot_call_a_plant(language):
+    from ladderlab.model import Box, FbdBody, FbdNetwork, LdBody, LdNetwork, Pou
+    from ladderlab.model.fbd import Block
 
-    main = Pou(
-        name="Main",
-        kind="program",
-        language="ld",
-        body=LdBody(networks=[LdNetwork(id="n1", elements=[Box(id="b1", call="Tank")])]),
+    body = (
+        LdBody(networks=[LdNetwork(id="n1", elements=[Box(id="b1", call="Tank")])])
+        if language == "ld"
+        else FbdBody(networks=[FbdNetwork(id="n1", nodes=[Block(id="b1", call="Tank")])])
     )
+    main = Pou(name="Main", kind="program", language=language, body=body)
     found = _diagnostics(main, TANK_PLANT)
-    assert [(c, p) for c, p, *_ in found] == [("LD-PLANT", "Main")]
+    assert [(c, p) for c, p, *_ in found] == [(f"{language.upper()}-PLANT", "Main")]
     assert "Tank is a plant" in found[0][4]
 
 

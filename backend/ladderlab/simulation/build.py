@@ -65,7 +65,7 @@ def panel_diagnostics(project: Project, compiled: CompiledProgram) -> list[Diagn
                     reason = str(error.args[0]) if error.args else str(error)
                     found.append(
                         Diagnostic(
-                            code="panel_binding",
+                            code="PANEL-BINDING",
                             message=f"panel {panel.name}, widget {widget.id} ({where}): {reason}",
                             file=f"hmi/{panel.name}.json",
                             json_path=f"widgets[{index}].{where}",
