@@ -272,9 +272,7 @@ export function SfcEditor(props: SfcEditorProps) {
       role="application"
       aria-label="Sequential function chart editor"
       onKeyDown={onKeyDown}
-      onCopy={(e) => clipboard.onCopy(e, false)}
-      onCut={(e) => clipboard.onCopy(e, true)}
-      onPaste={clipboard.onPaste}
+      {...clipboard.events}
     >
       <div className="ld-toolbar sfc-toolbar" role="toolbar" aria-label="SFC editing">
         {toolbar.map(({ label, command, enabled }) => (

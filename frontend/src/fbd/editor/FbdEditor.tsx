@@ -674,9 +674,7 @@ export function FbdEditor({
         role="application"
         aria-label="Function block diagram editor"
         onKeyDown={onKeyDown}
-        onCopy={(e) => clipboard.onCopy(e, false)}
-        onCut={(e) => clipboard.onCopy(e, true)}
-        onPaste={clipboard.onPaste}
+        {...clipboard.events}
       >
         <div className="ld-toolbar fbd-toolbar" role="toolbar" aria-label="FBD editing">
           <div className="ld-toolbar-group fbd-palette" aria-label="Add (click, or drag onto a network)">

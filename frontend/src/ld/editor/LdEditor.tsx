@@ -677,9 +677,7 @@ export function LdEditor({
       role="application"
       aria-label="Ladder diagram editor"
       onKeyDown={onKeyDown}
-      onCopy={(e) => clipboard.onCopy(e, false)}
-      onCut={(e) => clipboard.onCopy(e, true)}
-      onPaste={clipboard.onPaste}
+      {...clipboard.events}
       onMouseDown={(e) => {
         if (e.target === e.currentTarget || (e.target as HTMLElement).classList.contains("ld-canvas")) select(null);
       }}

@@ -29,17 +29,23 @@ export function clipboardActions(editor: DiagramClipboard, last: LastClip) {
     last.text = text;
     write(text);
   };
+  /** The editor's onCopy/onCut: the clip goes to the event's clipboard (text fields keep their own). */
+  const onCopy = (event: ClipboardEvent<HTMLElement>, cut: boolean) => {
+    if (inField(event)) return;
+    event.preventDefault();
+    copyWith(cut, (text) => event.clipboardData.setData("text/plain", text));
+  };
+  const onPaste = (event: ClipboardEvent<HTMLElement>) => {
+    if (inField(event)) return;
+    event.preventDefault();
+    if (!editor.locked) editor.paste(event.clipboardData.getData("text/plain"));
+  };
   return {
-    /** The editor's onCopy/onCut: the clip goes to the event's clipboard (text fields keep their own). */
-    onCopy(event: ClipboardEvent<HTMLElement>, cut: boolean) {
-      if (inField(event)) return;
-      event.preventDefault();
-      copyWith(cut, (text) => event.clipboardData.setData("text/plain", text));
-    },
-    onPaste(event: ClipboardEvent<HTMLElement>) {
-      if (inField(event)) return;
-      event.preventDefault();
-      if (!editor.locked) editor.paste(event.clipboardData.getData("text/plain"));
+    /** The editor root's clipboard event props (LD, FBD and SFC spread them on their root element). */
+    events: {
+      onCopy: (event: ClipboardEvent<HTMLElement>) => onCopy(event, false),
+      onCut: (event: ClipboardEvent<HTMLElement>) => onCopy(event, true),
+      onPaste,
     },
     /** Toolbar or menu Copy/Cut. */
     copy(cut: boolean) {
