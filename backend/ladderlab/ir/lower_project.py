@@ -29,7 +29,7 @@ from ..st.symbols import CheckResult, PouInfo, Symbol
 from .build_limits import data_too_large, source_too_large
 from .context import PouContext
 from .lower_configuration import lower_configuration
-from .lower_fbd import lower_fbd_body
+from .lower_fbd import lower_cfc_body, lower_fbd_body
 from .lower_il import lower_il_body
 from .lower_ld import lower_ld_body
 from .lower_sfc import lower_sfc_body
@@ -43,6 +43,7 @@ LOWER_BODY: dict[str, Callable[[ModelPou, PouContext], list[Block]]] = {
     "st": lower_st_body,
     "ld": lower_ld_body,
     "fbd": lower_fbd_body,
+    "cfc": lower_cfc_body,
     "sfc": lower_sfc_body,
     "il": lower_il_body,
 }

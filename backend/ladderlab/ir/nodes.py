@@ -302,7 +302,7 @@ class Pou:
     slots: list[Slot]
     blocks: list[Block]
     return_type: IrType | None = None
-    language: Literal["st", "ld", "fbd", "il", "sfc"] = "st"
+    language: Literal["st", "ld", "fbd", "cfc", "il", "sfc"] = "st"
     plant: bool = False  # a program that models the process: run by the plant task, never called
     #: False: FB calls in the body see the time the POU was called with (a scan's clock, frozen in the scan).
     #: True: each FB call reads the engine's clock as it is then - a test's body, whose ADVANCE_TIME and

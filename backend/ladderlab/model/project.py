@@ -6,6 +6,7 @@ from typing import Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validator, model_validator
 
+from .cfc import CfcBody
 from .fbd import FbdBody
 from .hmi import Panel
 from .ld import LdBody
@@ -17,12 +18,17 @@ PROJECT_FORMAT: ProjectFormat = "ladderlab/1"
 #: ``plant``: a program that models the process (reads the control program's outputs, writes its inputs); it
 #: runs in the plant task before the control tasks of every scan and cannot be called from control code.
 PouKind = Literal["program", "function_block", "function", "plant"]
-Language = Literal["st", "ld", "fbd", "il", "sfc"]
+Language = Literal["st", "ld", "fbd", "cfc", "il", "sfc"]
 
 #: Languages whose body is text (ST statements, IL instructions).
 TEXT_LANGUAGES = frozenset({"st", "il"})
 #: The body model of each graphical language (an ST POU's body is its text).
-DIAGRAM_BODY: dict[str, type[LdBody] | type[FbdBody] | type[SfcBody]] = {"ld": LdBody, "fbd": FbdBody, "sfc": SfcBody}
+DIAGRAM_BODY: dict[str, type[LdBody] | type[FbdBody] | type[SfcBody]] = {
+    "ld": LdBody,
+    "fbd": FbdBody,
+    "cfc": CfcBody,
+    "sfc": SfcBody,
+}
 
 
 def _strip_trailing_whitespace(value: Any) -> Any:
@@ -31,8 +37,8 @@ def _strip_trailing_whitespace(value: Any) -> Any:
 
 
 class Pou(BaseModel):
-    """A program organisation unit. ``body`` is ST or IL text, an ``LdBody``, an ``FbdBody`` or an ``SfcBody`` per
-    ``language``."""
+    """A program organisation unit. ``body`` is ST or IL text, an ``LdBody``, an ``FbdBody``, a ``CfcBody`` (one
+    FBD chart) or an ``SfcBody`` per ``language``."""
 
     model_config = ConfigDict(extra="forbid")
 
@@ -41,7 +47,7 @@ class Pou(BaseModel):
     language: Language
     return_type: str | None = Field(default=None, description="Functions only: the result type.")
     declarations: str = Field(default="", description="ST text of the VAR...END_VAR blocks, as typed.")
-    body: str | LdBody | FbdBody | SfcBody = ""
+    body: str | LdBody | CfcBody | FbdBody | SfcBody = ""
 
     _normalise_texts = field_validator("declarations", "body", mode="before")(_strip_trailing_whitespace)
 
@@ -57,8 +63,10 @@ class Pou(BaseModel):
         if not isinstance(language, str) or language not in DIAGRAM_BODY:
             return handler(value)
         expected = DIAGRAM_BODY[language]
-        if isinstance(value, expected):
+        if type(value) is expected:
             return value
+        if isinstance(value, FbdBody) and expected in (FbdBody, CfcBody):  # a chart made FBD, or FBD made a chart
+            return expected.model_validate(value.model_dump(by_alias=True))
         if not isinstance(value, dict):
             shape = "'chart'" if language == "sfc" else "'networks'"
             raise ValueError(f"an {language.upper()} POU's body must be an object with {shape}")

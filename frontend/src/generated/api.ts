@@ -954,6 +954,17 @@ export interface components {
       type: "box";
     };
     /**
+     * CfcBody
+     * @description A CFC POU's body: ``networks`` holds exactly one network, the chart.
+     */
+    CfcBody: {
+      /**
+       * Networks
+       * @description The chart.
+       */
+      networks?: components["schemas"]["FbdNetwork"][];
+    };
+    /**
      * CheckReport
      * @description ``POST /api/projects/{name}/check``: every diagnostic of the saved project.
      */
@@ -2131,8 +2142,8 @@ export interface components {
     };
     /**
      * Pou
-     * @description A program organisation unit. ``body`` is ST or IL text, an ``LdBody``, an ``FbdBody`` or an ``SfcBody`` per
-     *     ``language``.
+     * @description A program organisation unit. ``body`` is ST or IL text, an ``LdBody``, an ``FbdBody``, a ``CfcBody`` (one
+     *     FBD chart) or an ``SfcBody`` per ``language``.
      */
     Pou: {
       /**
@@ -2142,6 +2153,7 @@ export interface components {
       body?:
         | string
         | components["schemas"]["LdBody"]
+        | components["schemas"]["CfcBody"]
         | components["schemas"]["FbdBody"]
         | components["schemas"]["SfcBody"];
       /**
@@ -2159,7 +2171,7 @@ export interface components {
        * Language
        * @enum {string}
        */
-      language: "st" | "ld" | "fbd" | "il" | "sfc";
+      language: "st" | "ld" | "fbd" | "cfc" | "il" | "sfc";
       /** Name */
       name: string;
       /**
@@ -3558,6 +3570,7 @@ export interface components {
 export type Bar = components["schemas"]["Bar"];
 export type Block = components["schemas"]["Block"];
 export type Box = components["schemas"]["Box"];
+export type CfcBody = components["schemas"]["CfcBody"];
 export type CheckReport = components["schemas"]["CheckReport"];
 export type Coil = components["schemas"]["Coil"];
 export type Compare = components["schemas"]["Compare"];
