@@ -19,6 +19,7 @@ import xml.etree.ElementTree as ET
 from datetime import UTC, datetime
 
 from ... import __version__
+from ...model.cfc import CfcBody
 from ...model.diagnostics import Diagnostic
 from ...model.fbd import FbdBody
 from ...model.ld import LdBody
@@ -155,9 +156,10 @@ def diagram_writer(body: ET.Element, networks: LdBody | FbdBody, signatures: Sig
         write_network_list(body, listing)
         return []
     fbd = FbdExporter(sub(body, "FBD"), signatures, Counter(), pou)
+    chart = isinstance(networks, CfcBody)  # IEC 61131-10 style: an FBD whose executionOrderIds are the order
     for fbd_network in networks.networks:
-        offset, bottom = fbd.network(fbd_network, top)
+        offset, bottom = fbd.network(fbd_network, top, explicit=chart)
         listing.append((fbd_network.id, offset, fbd_network.order))
         top = bottom + NETWORK_GAP
-    write_network_list(body, listing)
+    write_network_list(body, listing, chart)
     return fbd.problems

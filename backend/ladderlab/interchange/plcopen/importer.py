@@ -22,6 +22,7 @@ from collections import Counter as Tally
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
+from ...model.cfc import CfcBody
 from ...model.diagnostics import Diagnostic
 from ...model.fbd import FbdBody
 from ...model.ld import LdBody
@@ -281,7 +282,10 @@ class _Importer:
         if groups is None:
             groups, orders = fbd_groups(graph, r)
             place_comments(groups, graph)
-        return "fbd", FbdImporter(graph, r, pou, ids).body(groups, orders, relative=relative)
+        made = FbdImporter(graph, r, pou, ids).body(groups, orders, relative=relative)
+        if relative and listing is not None and listing.chart and len(made.networks) == 1:
+            return "cfc", CfcBody(networks=made.networks)  # a chart LadderLab wrote (issue 26)
+        return "fbd", made
 
     # ------------------------------------------------------------ project texts
 
