@@ -50,7 +50,11 @@ export interface paths {
     };
     get?: never;
     put?: never;
-    /** Network Order */
+    /**
+     * Network Order
+     * @description ``chart``: a CFC chart, whose order list is the order (CFC-02); without it, the FBD order - data flow
+     *     first, the order list among what the wiring leaves open - which is also a chart's "order by data flow".
+     */
     post: operations["network_order_api_fbd_order_post"];
     delete?: never;
     options?: never;
@@ -3748,7 +3752,9 @@ export interface operations {
   };
   network_order_api_fbd_order_post: {
     parameters: {
-      query?: never;
+      query?: {
+        chart?: boolean;
+      };
       header?: never;
       path?: never;
       cookie?: never;
