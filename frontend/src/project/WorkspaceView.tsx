@@ -73,7 +73,7 @@ const KINDS: { kind: Pou["kind"]; title: string }[] = [
   { kind: "function", title: "Functions" },
   { kind: "plant", title: "Plants" },
 ];
-const LANGUAGE = { st: "ST", ld: "LD", fbd: "FBD", il: "IL", sfc: "SFC" } as const;
+const LANGUAGE = { st: "ST", ld: "LD", fbd: "FBD", cfc: "CFC", il: "IL", sfc: "SFC" } as const;
 /** Languages whose body is text, edited in the text editor (docs/il.md). */
 const TEXT_LANGUAGES: readonly Pou["language"][] = ["st", "il"];
 
@@ -525,7 +525,7 @@ function PouView({ name }: { name: string }) {
     content = <StPouView pou={pou} />;
   } else if (pou.language === "ld" && history) {
     content = <LdPouView pou={pou} history={history} />;
-  } else if (pou.language === "fbd" && fbdHistory) {
+  } else if ((pou.language === "fbd" || pou.language === "cfc") && fbdHistory) {
     content = <FbdPouView pou={pou} history={fbdHistory} onlineActions={<OnlineActions pou={pou} />} />;
   } else if (pou.language === "sfc" && sfcHistory) {
     content = <SfcPouView pou={pou} history={sfcHistory} onlineActions={<OnlineActions pou={pou} />} />;

@@ -4,6 +4,8 @@
 // pin's context menu, execution-order badges from the backend with "run earlier/later",
 // auto-arrange, undo/redo, copy/paste, diagnostics on nodes and pins, online values on wires,
 // write/force from the context menu, and breakpoints. The undo history is the caller's (one per POU).
+// With `chart` it edits a CFC POU's one chart (docs/diagrams.md "CFC"): no networks, an execution
+// order number on every executed element that "run earlier/later" moves freely, "Order by data flow".
 import "@xyflow/react/dist/style.css";
 import "../../ld/ld.css";
 import { useNodeLayout } from "./useNodeLayout";
@@ -53,8 +55,8 @@ import {
 import type { FbdOnlineView } from "../online";
 import { operandOf } from "../online";
 import * as ops from "../ops";
-import { moveInOrder } from "../order";
-import { fetchOrder, useEvaluationOrder } from "../useOrder";
+import { moveInOrder, orderByDataFlow, orderNumbers, ordered } from "../order";
+import { fetchChartOrder, fetchOrder, useEvaluationOrder } from "../useOrder";
 import { FbdEditorContext, type FbdEditorApi, type NodeView } from "./context";
 import { pinOfHandle } from "./FbdNodeView";
 import { DRAG_FORMAT, NetworkCanvas, type NetworkSelection } from "./NetworkCanvas";
@@ -89,8 +91,12 @@ export interface FbdEditorProps {
   focus?: { network?: string | null; element?: string | null; seq: number } | null;
   /** Told which networks are near the viewport, so online mode subscribes only to those. */
   onVisibleChange?(networks: readonly string[]): void;
-  /** POST /api/fbd/order (replaced in tests). */
+  /** POST /api/fbd/order (replaced in tests); on a chart, its execution order (?chart=true). */
   orderOf?(network: FbdNetwork): Promise<FbdOrder>;
+  /** A CFC POU: the body's one network is a free chart whose order list is the execution order (CFC-01/02). */
+  chart?: boolean;
+  /** On a chart: the FBD (data-flow) order of the chart, for "Order by data flow" (replaced in tests). */
+  dataFlowOf?(network: FbdNetwork): Promise<FbdOrder>;
 }
 
 type Selection = NetworkSelection & { network: string };
@@ -100,7 +106,7 @@ const PALETTE: { kind: PaletteKind; label: string }[] = [
   { kind: "input", label: "Input" },
   { kind: "output", label: "Output" },
   { kind: "block", label: "Block…" },
-  { kind: "jump", label: "Jump" },
+  { kind: "jump", label: "Jump" }, // not on a CFC chart: it has no labels to jump to (CFC-JUMP)
   { kind: "return", label: "Return" },
   { kind: "connector", label: "Connector" },
   { kind: "continuation", label: "Continuation" },
@@ -143,7 +149,9 @@ export function FbdEditor({
   onlineActions,
   debug,
   focus,
-  orderOf = fetchOrder,
+  chart = false,
+  orderOf = chart ? fetchChartOrder : fetchOrder,
+  dataFlowOf = fetchOrder,
   onVisibleChange,
 }: FbdEditorProps) {
   const body = history.present;
@@ -339,7 +347,17 @@ export function FbdEditor({
     const id = selectedNodes[0];
     const network = selection?.network;
     if (!id || !network) return;
-    apply(moveInOrder(body, network, orders.get(network) ?? [], id, delta));
+    apply(moveInOrder(body, network, orders.get(network) ?? [], id, delta, chart));
+  };
+
+  /** A chart's "Order by data flow": each element after those feeding it, the current numbers breaking ties. */
+  const orderChartByDataFlow = () => {
+    const network = networks[0];
+    if (!network) return;
+    dataFlowOf(network).then(
+      ({ order }) => apply(orderByDataFlow(body, network.id, order)),
+      () => setMessage("The data-flow order could not be computed; try again in a moment."),
+    );
   };
 
   const autoArrange = () => {
@@ -398,20 +416,20 @@ export function FbdEditor({
             : []),
         ];
     const order: MenuItem[] =
-      locked || !(kind === "block" || kind === "output")
+      locked || !ordered(net, node.id, chart)
         ? []
         : [
             {
               id: "earlier",
               label: "Run earlier",
               keys: keysOf("fbd", "run-earlier"),
-              run: () => apply(moveInOrder(body, network, orders.get(network) ?? [], node.id, -1)),
+              run: () => apply(moveInOrder(body, network, orders.get(network) ?? [], node.id, -1, chart)),
             },
             {
               id: "later",
               label: "Run later",
               keys: keysOf("fbd", "run-later"),
-              run: () => apply(moveInOrder(body, network, orders.get(network) ?? [], node.id, 1)),
+              run: () => apply(moveInOrder(body, network, orders.get(network) ?? [], node.id, 1, chart)),
             },
           ];
     const debugItems: MenuItem[] = debug
@@ -475,9 +493,14 @@ export function FbdEditor({
   };
 
   // ------------------------------------------------------------ views
+  const chartNumbers = useMemo(() => {
+    const network = networks[0];
+    const order = chart && network ? orders.get(network.id) : undefined;
+    return network && order ? orderNumbers(network, order) : null;
+  }, [chart, networks, orders]);
   const view = useCallback(
     (network: FbdNetwork, node: FbdNode): NodeView => {
-      const order = orders.get(network.id)?.indexOf(node.id);
+      const order = chartNumbers ? (chartNumbers.get(node.id) ?? -1) - 1 : orders.get(network.id)?.indexOf(node.id);
       return {
         pins: nodePins(node, network, lookup, symbols),
         order: order !== undefined && order >= 0 ? order + 1 : undefined,
@@ -488,7 +511,7 @@ export function FbdEditor({
         coverage: debug?.coverage?.get(node.id),
       };
     },
-    [orders, lookup, symbols, byElement, debug],
+    [orders, chartNumbers, lookup, symbols, byElement, debug],
   );
 
   /** Prepares a value for `operand` (CODESYS double-click): a BOOL toggles, others ask for the value. */
@@ -672,13 +695,13 @@ export function FbdEditor({
         ref={root}
         tabIndex={0}
         role="application"
-        aria-label="Function block diagram editor"
+        aria-label={chart ? "Continuous function chart editor" : "Function block diagram editor"}
         onKeyDown={onKeyDown}
         {...clipboard.events}
       >
         <div className="ld-toolbar fbd-toolbar" role="toolbar" aria-label="FBD editing">
           <div className="ld-toolbar-group fbd-palette" aria-label="Add (click, or drag onto a network)">
-            {PALETTE.map(({ kind, label }) => (
+            {PALETTE.filter(({ kind }) => !chart || kind !== "jump").map(({ kind, label }) => (
               <button
                 key={kind}
                 type="button"
@@ -710,10 +733,18 @@ export function FbdEditor({
             )}
             {tool("Run earlier", () => reorder(-1), !locked && !!selectedBlock, keyed("Run earlier", "run-earlier"))}
             {tool("Run later", () => reorder(1), !locked && !!selectedBlock, keyed("Run later", "run-later"))}
+            {chart
+              ? tool(
+                  "Order by data flow",
+                  orderChartByDataFlow,
+                  !locked && networks.length > 0,
+                  "Number every element after the elements feeding it (the current numbers break ties)",
+                )
+              : null}
             {tool("Auto-arrange", autoArrange, !locked && networks.length > 0)}
             {tool("Delete", deleteSelection, !locked && (!!selection || !!networkSelected), keyed("Delete", "delete"))}
           </div>
-          <div className="ld-toolbar-group">
+          <div className="ld-toolbar-group" hidden={chart}>
             {tool("Add network", () => apply(ops.addNetwork(body, netIndex < 0 ? networks.length : netIndex + 1)))}
             {tool(
               "Network up",
@@ -766,6 +797,7 @@ export function FbdEditor({
               key={network.id}
               network={network}
               index={index}
+              chart={chart}
               readOnly={locked}
               selected={selection?.network === network.id ? selection : null}
               networkSelected={networkSelected === network.id}
