@@ -8,7 +8,7 @@ Layout::
     pous/<name>.st      ST POUs as complete IEC text (PROGRAM ... END_PROGRAM)
     pous/<name>.plant.st ST plants (a PROGRAM in IEC text; the file name makes it a plant)
     pous/<name>.il      IL POUs as complete IEC text, the body in IL (docs/il.md)
-    pous/<name>.ld.json / pous/<name>.fbd.json / pous/<name>.sfc.json   graphical POUs
+    pous/<name>.ld.json / .fbd.json / .cfc.json / .sfc.json   graphical POUs
     pous/<name>.st.json ST (.il.json: IL) POUs whose text cannot be split back exactly (e.g. a VAR block
                         without END_VAR while the user is still typing); never loses a character
     hmi/<name>.json     operator panels (project.json lists their order)
@@ -42,7 +42,7 @@ PROJECT_FILE = "project.json"
 TYPES_FILE = "types.st"
 GLOBALS_FILE = "globals.st"
 POUS_DIR = "pous"
-POU_SUFFIXES = (".st", ".plant.st", ".st.json", ".il", ".il.json", ".ld.json", ".fbd.json", ".sfc.json")
+POU_SUFFIXES = (".st", ".plant.st", ".st.json", ".il", ".il.json", ".ld.json", ".fbd.json", ".cfc.json", ".sfc.json")
 HMI_DIR = "hmi"
 EXERCISE_FILE = "EXERCISE.md"
 TESTS_DIR = "tests"
@@ -305,7 +305,9 @@ def read_pou_file(path: Path) -> Pou:
     name = _pou_name_of(path.name)
     pou = _read_pou(path.parent.parent, name, _Reader(path.parent.parent, None, HINT, problems)) if name else None
     if pou is None:
-        message = f"{path.name} is not a POU file (.st, .plant.st, .ld.json, .fbd.json, .st.json)"
+        message = (
+            f"{path.name} is not a POU file (.st, .plant.st, .il, .ld.json, .fbd.json, .cfc.json, .sfc.json, .st.json)"
+        )
         raise ProjectLoadError(problems or [Diagnostic(code="BAD-FILE", file=path.name, message=message)])
     return pou
 
@@ -320,8 +322,8 @@ def _read_pou(folder: Path, name: str, read: _Reader) -> Pou | None:
     if len(paths) != 1:
         message = (
             (
-                f"POU {name!r} is listed in project.json but has no file pous/{name}.st, .il, .ld.json, .fbd.json "
-                "or .sfc.json"
+                f"POU {name!r} is listed in project.json but has no file pous/{name}.st, .il, .ld.json, .fbd.json, "
+                ".cfc.json or .sfc.json"
             )
             if not paths
             else (f"POU {name!r} has several files: {', '.join(p.name for p in paths)}; keep one")

@@ -744,29 +744,31 @@ export function FbdEditor({
             {tool("Auto-arrange", autoArrange, !locked && networks.length > 0)}
             {tool("Delete", deleteSelection, !locked && (!!selection || !!networkSelected), keyed("Delete", "delete"))}
           </div>
-          <div className="ld-toolbar-group" hidden={chart}>
-            {tool("Add network", () => apply(ops.addNetwork(body, netIndex < 0 ? networks.length : netIndex + 1)))}
-            {tool(
-              "Network up",
-              () => apply(ops.moveNetwork(body, networks[netIndex]!.id, -1)),
-              !locked && netIndex > 0,
-            )}
-            {tool(
-              "Network down",
-              () => apply(ops.moveNetwork(body, networks[netIndex]!.id, 1)),
-              !locked && netIndex >= 0 && netIndex < networks.length - 1,
-            )}
-            {tool(
-              "Label",
-              () => setNetworkText({ network: networks[netIndex]!.id, field: "label" }),
-              !locked && netIndex >= 0,
-            )}
-            {tool(
-              "Comment",
-              () => setNetworkText({ network: networks[netIndex]!.id, field: "comment" }),
-              !locked && netIndex >= 0,
-            )}
-          </div>
+          {chart ? null : (
+            <div className="ld-toolbar-group">
+              {tool("Add network", () => apply(ops.addNetwork(body, netIndex < 0 ? networks.length : netIndex + 1)))}
+              {tool(
+                "Network up",
+                () => apply(ops.moveNetwork(body, networks[netIndex]!.id, -1)),
+                !locked && netIndex > 0,
+              )}
+              {tool(
+                "Network down",
+                () => apply(ops.moveNetwork(body, networks[netIndex]!.id, 1)),
+                !locked && netIndex >= 0 && netIndex < networks.length - 1,
+              )}
+              {tool(
+                "Label",
+                () => setNetworkText({ network: networks[netIndex]!.id, field: "label" }),
+                !locked && netIndex >= 0,
+              )}
+              {tool(
+                "Comment",
+                () => setNetworkText({ network: networks[netIndex]!.id, field: "comment" }),
+                !locked && netIndex >= 0,
+              )}
+            </div>
+          )}
           <div className="ld-toolbar-group">
             {tool("Copy", () => clipboard.copy(false), selectedNodes.length > 0, keyed("Copy", "copy"))}
             {tool("Paste", clipboard.paste, !locked, keyed("Paste", "paste"))}
