@@ -364,12 +364,13 @@ def test_not_and_fb_set_reset_input_operators_il24():
 
 def test_breakpoints_and_single_steps_stop_on_il_lines_il09():
     """IL-09 / IL-26: every IL line is a pause point (the engine's statement points): a breakpoint on a line
-    halts before it with the accumulator readable, and single steps visit the lines in execution order,
-    jumps included (``JMPC`` taken in the second scan: lines 8 and 9 are skipped)."""
+    halts before it with the accumulator readable. Single steps (ON-04) stop at the next load, jump or call in
+    execution order - the JMPC on line 7, the loads on lines 8 and 10 - jumps included (``JMPC`` taken in the
+    second scan: line 8 is skipped)."""
     body = "LD a\nADD 1\nST a\nGT 1\nJMPC done\nLD a\nST r\ndone: LD a\nST s"
     sim = Simulation(lower_ok(f"PROGRAM P\nVAR a, r, s : INT; END_VAR\n{body}\nEND_PROGRAM\n"), variant="debug")
     sim.set_breakpoint("P", line=5)
-    for expected_lines, r in (([5, 6, 7, 8, 9, 10, 11], 1), ([5, 6, 7, 10, 11], 1)):
+    for expected_lines, r in (([5, 7, 8, 10], 1), ([5, 7, 10], 1)):
         sim.cycle()
         assert (sim.halted.origin.line, sim.read("P.__CR_INT")) == (5, sim.read("P.a") + 1)
         lines = []

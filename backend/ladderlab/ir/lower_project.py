@@ -128,7 +128,8 @@ def lower_pou(
         else:
             blocks.insert(0, Block(preamble, Origin(ctx.name)))
     kind = _KIND[info.kind]
-    return Pou(ctx.name, kind, ctx.slots, blocks, return_type, pou.language, pou.kind == "plant")  # type: ignore[arg-type]
+    step_lines = info.il_step_lines if pou.language == "il" else None
+    return Pou(ctx.name, kind, ctx.slots, blocks, return_type, pou.language, pou.kind == "plant", step_lines=step_lines)  # type: ignore[arg-type]
 
 
 def _slot(symbol: Symbol, ctx: PouContext, file: str) -> Slot | None:

@@ -304,6 +304,8 @@ class Pou:
     return_type: IrType | None = None
     language: Literal["st", "ld", "fbd", "cfc", "il", "sfc"] = "st"
     plant: bool = False  # a program that models the process: run by the plant task, never called
+    #: IL: the body lines a single step stops at - loads, jumps, calls (ON-04); None: every statement's line.
+    step_lines: frozenset[int] | None = None
     #: False: FB calls in the body see the time the POU was called with (a scan's clock, frozen in the scan).
     #: True: each FB call reads the engine's clock as it is then - a test's body, whose ADVANCE_TIME and
     #: RUN_SCANS move the clock between its statements (docs/testing.md).

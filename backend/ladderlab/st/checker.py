@@ -491,6 +491,7 @@ class ProjectChecker:
         if isinstance(body, IlBody):
             il = check_il_body(self.result, info, body, report)
             info.body, info.accumulators, assigned = il.statements, il.accumulators, il.result_assigned
+            info.il_values, info.il_step_lines = il.values, il.step_lines
         else:
             checker = BodyChecker(self.result, info, report)
             checker.statements(body)

@@ -62,6 +62,8 @@ class PouInfo:
     plant: bool = False  # a PROGRAM that models the process: run by the plant task, never called
     actions: dict[str, list[ast.Stmt] | None] = field(default_factory=dict)
     accumulators: list[Symbol] = field(default_factory=list)  # IL POUs: the hidden current-result variables
+    il_values: list = field(default_factory=list)  # IL POUs: the accumulator after each line (il_check.IlValue)
+    il_step_lines: frozenset[int] = frozenset()  # IL POUs: the lines a single step stops at (ON-04)
 
     def parameters(self, *classes: str) -> list[Symbol]:
         wanted = classes or PARAMETER_CLASSES

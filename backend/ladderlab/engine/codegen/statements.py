@@ -163,7 +163,8 @@ class Statements:
         self.x.sink = self.src  # a deep expression's parts are computed on lines before the statement
         try:
             if self.debug and origin.line is not None and not isinstance(s, ir.Probe):
-                self.pause("statement", origin)
+                stops = self.scope.pou.step_lines  # IL: a step stops at loads, jumps and calls only (ON-04)
+                self.pause("statement" if stops is None or origin.line in stops else "line", origin)
             handler = self._HANDLERS.get(type(s))
             if handler is None:
                 raise CodegenError(f"unknown statement {type(s).__name__}")
