@@ -34,17 +34,18 @@ def test_accumulator_after_every_line_and_lines_a_jump_skipped():
     view = sim.probes("Main")
     # a 0 -> 1; 1 > 2 is FALSE: no jump; the CAL and the ST keep the CR (IL-05); t.Q FALSE; 1 * 10
     assert view.values == {
-        "L1": 0, "L2": 1, "L3": 1, "L4": 1, "L5": False, "L6": False, "L7": False, "L8": False, "L9": False,
-        "L11": 1, "L12": 10, "L13": 10,
+        "L1:INT": 0, "L2:INT": 1, "L3:INT": 1, "L4:INT": 1, "L5:BOOL": False, "L6:BOOL": False,
+        "L7:BOOL": False, "L8:BOOL": False, "L9:BOOL": False, "L11:INT": 1, "L12:INT": 10, "L13:INT": 10,
     }  # fmt: skip
     sim.write("Main.a", 5)
     sim.cycle(1)
     view = sim.probes("Main")
     # 5 -> 6 > 2: the jump skips lines 7..9, which keep last scan's values and are not executed
-    assert {line: view.values[line] for line in ("L2", "L5", "L6", "L11", "L12")} == {
-        "L2": 6, "L5": True, "L6": True, "L11": 6, "L12": 60,
+    assert {line: view.values[line] for line in ("L2:INT", "L5:BOOL", "L6:BOOL", "L11:INT", "L12:INT")} == {
+        "L2:INT": 6, "L5:BOOL": True, "L6:BOOL": True, "L11:INT": 6, "L12:INT": 60,
     }  # fmt: skip
-    assert {"L7", "L8", "L9"}.isdisjoint(view.executed) and {"L6", "L11"} <= view.executed
+    assert {"L7:BOOL", "L8:BOOL", "L9:BOOL"}.isdisjoint(view.executed)
+    assert {"L6:BOOL", "L11:INT"} <= view.executed
 
 
 def test_single_step_stops_at_the_next_load_jump_or_call_ON_04():

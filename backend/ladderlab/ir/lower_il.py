@@ -2,8 +2,9 @@
 (``st/il_check.py``); here labels start labelled blocks and jumps become ``Jump``s, so the engine, monitoring,
 breakpoints (one pause point per IL line) and tracing treat an IL POU like any other.
 
-Online mode shows the accumulator after every line: each line's value (``IlValue``) is a probe ``L<line>``
-where the checker says it stands, so the monitor variant records it like a diagram element's value.
+Online mode shows the accumulator after every line: each line's value (``IlValue``) is a probe
+``L<line>:<type>`` where the checker says it stands, so the monitor variant records it like a diagram
+element's value (the type tells the browser how to show it: a TIME, a REAL).
 """
 
 from __future__ import annotations
@@ -43,9 +44,9 @@ def lower_il_body(pou: ModelPou, ctx: PouContext) -> list[Block]:
     return blocks if blocks[0].statements or len(blocks) == 1 else blocks[1:]
 
 
-def probe_id(line: int) -> str:
-    """The probe of the accumulator after body line ``line`` (the browser reads ``L<line>``)."""
-    return f"L{line}"
+def probe_id(line: int, type_name: str) -> str:
+    """The probe of the accumulator after body line ``line`` holding a ``type_name`` (``L12:INT``)."""
+    return f"L{line}:{type_name}"
 
 
 def _probe(value: IlValue, ctx: PouContext) -> list[Stmt]:
@@ -53,7 +54,7 @@ def _probe(value: IlValue, ctx: PouContext) -> list[Stmt]:
         expr = lower_to(value.value, ctx, ctx.ir_type(value.type))
     except LoweringError:
         return []  # a value the statements lower without trouble; nothing to show rather than a wrong one
-    return [Probe(probe_id(value.line), expr, Origin(ctx.name, value.line))]
+    return [Probe(probe_id(value.line, str(value.type)), expr, Origin(ctx.name, value.line))]
 
 
 def _jump(statement: ast.Goto, ctx: PouContext) -> list[Stmt]:
