@@ -71,9 +71,7 @@ def test_accumulator_per_line_and_single_step_at_loads_jumps_and_calls(page, ser
     page.screenshot(path=str(ARTIFACTS / "il-online-accumulator.png"))
     for _ in range(2):
         single_cycle(page)  # a = 3: 3 > 2, the jump skips lines 6 and 7
-    wait_accumulators(
-        page, [(1, "2"), (2, "3"), (3, "3"), (4, "TRUE"), (5, "TRUE"), (9, "3"), (10, "30"), (11, "30")]
-    )
+    wait_accumulators(page, [(1, "2"), (2, "3"), (3, "3"), (4, "TRUE"), (5, "TRUE"), (9, "3"), (10, "30"), (11, "30")])
 
     # A breakpoint on line 2 (ADD 1); single steps then stop at the JMPC (5) and, as it jumps, the LD on 9.
     line2 = body.locator(".cm-line").nth(1)
@@ -91,7 +89,5 @@ def test_accumulator_per_line_and_single_step_at_loads_jumps_and_calls(page, ser
     debug.get_by_role("button", name="Step into").click()  # no load, jump or call left: the scan ends
     debug.wait_for(state="detached")
     page.get_by_role("status", name="Online state").filter(has_text="Online · stopped").wait_for()
-    wait_accumulators(
-        page, [(1, "3"), (2, "4"), (3, "4"), (4, "TRUE"), (5, "TRUE"), (9, "4"), (10, "40"), (11, "40")]
-    )
+    wait_accumulators(page, [(1, "3"), (2, "4"), (3, "4"), (4, "TRUE"), (5, "TRUE"), (9, "4"), (10, "40"), (11, "40")])
     assert accumulators(page)[0] == [1, "3"]
