@@ -99,6 +99,26 @@ export interface paths {
     patch?: never;
     trace?: never;
   };
+  "/api/ld/il": {
+    parameters: {
+      query?: never;
+      header?: never;
+      path?: never;
+      cookie?: never;
+    };
+    get?: never;
+    put?: never;
+    /**
+     * Ld As Il
+     * @description One LD network as IL, for the editor's read-only "View as IL" (issue 26); stateless.
+     */
+    post: operations["ld_as_il_api_ld_il_post"];
+    delete?: never;
+    options?: never;
+    head?: never;
+    patch?: never;
+    trace?: never;
+  };
   "/api/library": {
     parameters: {
       query?: never;
@@ -1700,6 +1720,22 @@ export interface components {
       x: number;
       /** Y */
       y: number;
+    };
+    /**
+     * LdAsIl
+     * @description ``POST /api/ld/il``: an LD network as IL ("View as IL", read-only), or why it has no IL equivalent.
+     */
+    LdAsIl: {
+      /**
+       * Reason
+       * @description Why there is no IL (the element and what it needs).
+       */
+      reason?: string | null;
+      /**
+       * Text
+       * @description The IL text; null when the network has no plain IL equivalent.
+       */
+      text: string | null;
     };
     /** LdBody */
     LdBody: {
@@ -3611,6 +3647,7 @@ export type IoPoint = components["schemas"]["IoPoint"];
 export type Jump = components["schemas"]["Jump"];
 export type Label = components["schemas"]["Label"];
 export type Lamp = components["schemas"]["Lamp"];
+export type LdAsIl = components["schemas"]["LdAsIl"];
 export type LdBody = components["schemas"]["LdBody"];
 export type LdNetwork = components["schemas"]["LdNetwork"];
 export type LibraryEntry = components["schemas"]["LibraryEntry"];
@@ -3860,6 +3897,39 @@ export interface operations {
       };
       /** @description Too many projects in the workspace. */
       429: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["ErrorResponse"];
+        };
+      };
+    };
+  };
+  ld_as_il_api_ld_il_post: {
+    parameters: {
+      query?: never;
+      header?: never;
+      path?: never;
+      cookie?: never;
+    };
+    requestBody: {
+      content: {
+        "application/json": components["schemas"]["LdNetwork"];
+      };
+    };
+    responses: {
+      /** @description Successful Response */
+      200: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["LdAsIl"];
+        };
+      };
+      /** @description Bad name, invalid model or a project that does not load; see the diagnostics. */
+      422: {
         headers: {
           [name: string]: unknown;
         };
