@@ -45,6 +45,28 @@ VERBS: dict[str, tuple[int, int]] = {
     "MOCK_VERIFY_CALLED": (1, 1),
     "MOCK_VERIFY_CALL_COUNT": (2, 2),
 }
+#: What the test file editor's completion shows after each verb and MOCK statement (docs/testing.md); the
+#: browser reads it from shared_schema/iec.json (``test_verbs``).
+SIGNATURES: dict[str, str] = {
+    **{verb: "(actual, expected [, 'message'])" for verb in ("ASSERT_EQ", "ASSERT_NEQ")},
+    **{verb: "(actual, threshold [, 'message'])" for verb in ("ASSERT_GT", "ASSERT_LT", "ASSERT_GE", "ASSERT_LE")},
+    "ASSERT_NEAR": "(actual, expected, tolerance [, 'message'])",
+    "ASSERT_TRUE": "(condition [, 'message'])",
+    "ASSERT_FALSE": "(condition [, 'message'])",
+    "ASSERT": "(condition)",
+    "ADVANCE_TIME": "(T#...)",
+    "RUN_SCANS": "(n)",
+    "RUN_FOR": "(T#...)",
+    "RUN_UNTIL": "(condition, T#timeout)",
+    "FORCE": "(variable, value)",
+    "RELEASE": "(variable)",
+    "WARM_START": "",
+    "COLD_START": "",
+    "MOCK": " instance",
+    "MOCK_FUNCTION": " f RETURNS value",
+    "MOCK_VERIFY_CALLED": "(instance)",
+    "MOCK_VERIFY_CALL_COUNT": "(instance, n)",
+}
 #: The comparison each ASSERT_x checks, as the ST operator.
 COMPARISONS = {
     "ASSERT_EQ": "=",
