@@ -2547,6 +2547,14 @@ export const IEC = {
       name: "MOCK_VERIFY_CALL_COUNT",
       signature: "(instance, n)",
     },
+    {
+      name: "FAULT",
+      signature: "(variable, 'mode' [, value])",
+    },
+    {
+      name: "CLEAR_FAULT",
+      signature: "(variable)",
+    },
   ],
   value_texts: [
     {
