@@ -12,7 +12,7 @@ from hypothesis import strategies as st
 from ladderlab.interchange.ld_il import body_il, network_il
 from ladderlab.model.project import Pou
 from tests.ir.diagram_support import coil, compare, contact, jump, ld_pou, parallel, ret, rung, simulate
-from tests.ir.test_diagram_equivalence import DECLARATIONS, INPUTS, OUTPUTS, Gate, Leaf, Rung, ld_program
+from tests.ir.test_diagram_equivalence import DECLARATIONS, INPUTS, OUTPUTS, ld_program, rung_strategy
 
 
 def text(network) -> str:
@@ -53,24 +53,7 @@ def test_a_network_without_il_equivalent_says_why():
     assert network_il(rung("n3", contact("a", "i0"))).reason == "the rung ends in no coil, jump or return"
 
 
-leaves = st.builds(Leaf, st.sampled_from(INPUTS + OUTPUTS), st.sampled_from(["no", "nc"]))
-trees = st.recursive(
-    leaves,
-    lambda inner: st.builds(
-        Gate, st.sampled_from(["series", "parallel"]), st.lists(inner, min_size=2, max_size=3).map(tuple)
-    ),
-    max_leaves=6,
-)
-rungs = st.builds(
-    Rung,
-    trees,
-    st.lists(
-        st.tuples(st.sampled_from(["normal", "negated", "set", "reset"]), st.sampled_from(OUTPUTS)),
-        min_size=1,
-        max_size=3,
-    ).map(tuple),
-    st.none(),
-)
+rungs = rung_strategy(("no", "nc"), ("normal", "negated", "set", "reset"), (None,))
 
 
 def run(pou: Pou, seed: int) -> list[tuple]:
