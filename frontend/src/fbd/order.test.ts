@@ -3,6 +3,7 @@
 import { describe, expect, it } from "vitest";
 import { arithmetic, bodyOf } from "./fixtures";
 import type { FbdBody } from "./model";
+import { arrangeNetwork } from "./ops";
 import { moveInOrder, orderByDataFlow, orderNumbers } from "./order";
 
 // arithmetic(): inputs a, b -> add -> sub (with input c) -> output r
@@ -36,5 +37,15 @@ describe("CFC execution order", () => {
   it("orders by data flow: the executed elements of the FBD order, stored as the chart's order", () => {
     const result = orderByDataFlow(chart(), "n1", ["a", "b", "add", "c", "sub", "r", "ret"]);
     expect(result.ok && result.body.networks![0]!.order).toEqual(["add", "sub", "r", "ret"]);
+  });
+});
+
+describe("auto-arrange on a chart", () => {
+  it("keeps every execution order number, the return's too", () => {
+    const order = ["a", "b", "c", "sub", "add", "ret", "r"];
+    const result = arrangeNetwork(chart(), "n1", () => 60, order, true);
+    expect(result.ok && result.body.networks![0]!.order).toEqual(["sub", "add", "ret", "r"]);
+    const fbd = arrangeNetwork(chart(), "n1", () => 60, order);
+    expect(fbd.ok && fbd.body.networks![0]!.order).toEqual(["sub", "add", "r"]);
   });
 });

@@ -363,7 +363,7 @@ export function FbdEditor({
   const autoArrange = () => {
     const network = targetNetwork();
     const net = network && networks.find((n) => n.id === network);
-    if (net) apply(ops.arrangeNetwork(body, net.id, heightOf(net), orders.get(net.id) ?? null));
+    if (net) apply(ops.arrangeNetwork(body, net.id, heightOf(net), orders.get(net.id) ?? null, chart));
   };
 
   const addInput = (id: string) => apply(ops.addInput(body, id, lookup));
