@@ -71,7 +71,7 @@ def lower_fbd_body(pou: ModelPou, ctx: PouContext) -> list[Block]:
 def lower_cfc_body(pou: ModelPou, ctx: PouContext) -> list[Block]:
     """A CFC chart as one IR block: its elements in their execution order numbers' order (CFC-02,
     fbd_order), otherwise lowered exactly as an FBD network."""
-    body: CfcBody = pou.body  # type: ignore[assignment]
+    body: CfcBody = pou.body  # type: ignore[assignment]  # language "cfc": the model made the body a CfcBody
     ctx.places = Places(body)
     check_unique_ids(((1, body.chart.id, node.id) for node in body.chart.nodes), ctx.report, "FBD")
     for node in body.chart.nodes:
