@@ -1,10 +1,11 @@
-"""The fast variant against the debug variant over random LD programs (issue 27).
+"""The fast and monitor variants against the debug variant over random LD programs (issue 27).
 
 The fast variant keeps the lowering's power-flow and ENO temporaries in Python locals of each chunk function
 (codegen/scope.py, ``temp_locals``); the debug variant keeps every variable in its slot and shares nothing with
 it but the IR, so it is the reference. Random LD networks (contacts NO/NC/edges in series and parallel, coils of
 every mode, TON/CTU/R_TRIG boxes, ADD with EN, compares) run scan by scan under random writes, with the chunk
-size lowered so the temporaries cross chunk boundaries; every variable must agree after every scan.
+size lowered so the temporaries cross chunk boundaries; every variable (and every probe of the monitor variant)
+must agree after every scan.
 """
 
 from __future__ import annotations
@@ -95,17 +96,17 @@ _writes = st.lists(st.lists(st.tuples(st.sampled_from(BOOLS), st.booleans()), ma
 def test_the_fast_variant_computes_what_the_debug_variant_does(chunk_statements, project, writes):
     with pytest.MonkeyPatch.context() as patch:
         patch.setattr(chunks, "CHUNK_STATEMENTS", chunk_statements)
-        fast_build, debug_build = build_project(project, "fast"), build_project(project, "debug")
-    assert fast_build.compiled is not None, [d.message for d in fast_build.diagnostics]
-    assert debug_build.compiled is not None
-    fast, debug = fast_build.simulation(), debug_build.simulation()
+        builds = [build_project(project, variant) for variant in ("fast", "monitor", "debug")]
+    assert all(build.compiled is not None for build in builds), [d.message for d in builds[0].diagnostics]
+    fast, monitor, debug = (build.simulation() for build in builds)
     for scan, scan_writes in enumerate(writes):
         for name, value in scan_writes:
-            fast.write(f"Main.{name}", value)
-            debug.write(f"Main.{name}", value)
-        assert fast.cycle(1) == debug.cycle(1) == 1
-        assert fast.snapshot() == debug.snapshot(), f"scan {scan}"
-        assert (fast.fault is None) == (debug.fault is None)
+            for sim in (fast, monitor, debug):
+                sim.write(f"Main.{name}", value)
+        assert fast.cycle(1) == monitor.cycle(1) == debug.cycle(1) == 1
+        assert fast.snapshot() == debug.snapshot() == monitor.snapshot(), f"scan {scan}"
+        assert monitor.probes("Main") == debug.probes("Main"), f"scan {scan}"
+        assert (fast.fault is None) == (monitor.fault is None) == (debug.fault is None)
 
 
 def test_power_flow_temporaries_are_locals_of_the_fast_code_only():

@@ -9,7 +9,7 @@ A VAR_IN_OUT slot holds a reference ``(container, key)``: scalars are read and
 written as ``ll_c_X[ll_k_X]``; an array or structure is fetched once at entry
 into ``v_X`` (composite values never change identity).
 
-In the fast variant a hidden elementary VAR_TEMP of a PROGRAM / FUNCTION_BLOCK (a power-flow or ENO
+In the fast and monitor variants a hidden elementary VAR_TEMP of a PROGRAM / FUNCTION_BLOCK (a power-flow or ENO
 temporary of the LD/FBD lowering) is a Python local ``ll_t_X`` of each chunk function that uses it: loaded
 from its slot at the chunk's start, stored back at its end (``temp_locals``; docs/runtime.md, "Temporaries
 as locals"). Nothing outside the POU's own code reads such a slot (hidden slots have no path) and its value
@@ -153,10 +153,11 @@ class Scope:
 
 
 def temp_locals(module: ModuleContext, pou: ir.Pou) -> dict[str, str]:
-    """The hidden elementary VAR_TEMP slots of a PROGRAM / FUNCTION_BLOCK that the fast variant keeps in locals
+    """The hidden elementary VAR_TEMP slots of a PROGRAM / FUNCTION_BLOCK that the fast and monitor variants keep
+    in locals
     (upper-case name -> local), none when the body jumps (a chunk is then re-entered mid-way) or a slot is passed
     by reference (a VAR_IN_OUT needs a container)."""
-    if module.variant != "fast" or pou.kind == "function":
+    if module.debug or pou.kind == "function":  # (no probe is deferred to after the scan: not VAR_TEMP ones)
         return {}
     candidates = {
         s.name.upper(): f"ll_t_{names.escape(s.name)}"
