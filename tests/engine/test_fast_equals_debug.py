@@ -131,3 +131,26 @@ def test_power_flow_temporaries_are_locals_of_the_fast_code_only():
     body = fast.source[fast.source.index("def ll_x_MAIN") :]
     assert "ll_t___P_1 = (ll_t___P & ((not self.v_B1)))" in body and "self.v___P" not in body
     assert "self.v___P_1 = (self.v___P & ((not self.v_B1)))" in debug.source
+
+
+def test_a_fault_report_shows_the_temporaries_as_the_debug_variant_does():
+    """A fault's report lists the values of the variables its statement mentions, power flow included: the fast
+    variant reads its local temporaries from the faulting frame (codegen/faults.py)."""
+    net = ld.LdNetwork(
+        id="n1",
+        elements=[
+            ld.Contact(id="a", var="B0"),
+            ld.Box(id="d", call="DIV", en=True, inputs={"IN1": "X", "IN2": "Y"}, outputs={"OUT": "X"}),
+            ld.Coil(id="c", var="B1"),
+        ],
+    )
+    declarations = "VAR B0 : BOOL := TRUE; B1 : BOOL; X : INT := 7; Y : INT; END_VAR"
+    pou = Pou(name="Main", kind="program", language="ld", declarations=declarations, body=ld.LdBody(networks=[net]))
+    reports = []
+    for variant in ("fast", "debug"):
+        sim = build_project(Project(name="p", pous=[pou]), variant).simulation()
+        sim.cycle(1)
+        assert sim.fault is not None
+        reports.append(sim.fault.diagnostic().message)
+    assert reports[0] == reports[1]
+    assert "division by zero: 7 / 0" in reports[0] and "__P = True" in reports[0]
