@@ -11,6 +11,7 @@ from collections.abc import Callable
 from typing import Any
 
 from ..iec import stdlib
+from ..iec.elementary import LONG_TIME_TYPES, SHORT_TO_LONG
 from ..iec.addresses import parse_address, part_type, partial_access, same_location
 from ..iec.spelling import did_you_mean
 from . import ast
@@ -41,6 +42,18 @@ _TIME_RULES = {
     ("-", "dt", "dt"): "TIME",
     ("-", "date", "date"): "TIME",
 }
+
+
+def time_rule(op: str, left: Type, right: Type) -> t.Type | None:
+    """The result type of a TIME/date operation (_TIME_RULES), in the long forms (LTIME, LDT ...) when both operands
+    are long; None when the operands mix a long and a short type (an explicit conversion is needed)."""
+    rule = _TIME_RULES.get((op, t.category(left), t.category(right)))
+    if rule is None:
+        return None
+    longs = {isinstance(x, t.Elementary) and x.name in LONG_TIME_TYPES for x in (left, right)}
+    if len(longs) > 1:
+        return None
+    return t.Elementary(SHORT_TO_LONG[rule] if True in longs else rule)
 
 
 class BodyChecker:
@@ -302,13 +315,13 @@ class BodyChecker:
         op = node.op
         if op == "**":
             return self._power(node, left, right)
-        time_rule = _TIME_RULES.get((op, t.category(left), t.category(right)))
-        if time_rule:
-            return t.Elementary(time_rule)
+        time_result = time_rule(op, left, right)
+        if time_result:
+            return time_result
         if op in ("*", "/") and t.category(left) == "time" and t.in_family(right, "ANY_NUM"):
-            return t.TIME  # ST-21: TIME * ANY_NUM, TIME / ANY_NUM (the number keeps its own type)
+            return left  # ST-21: TIME * ANY_NUM, TIME / ANY_NUM (the number keeps its own type); LTIME alike
         if op == "*" and t.category(right) == "time" and t.in_family(left, "ANY_NUM"):
-            return t.TIME
+            return right
         if op in ("+", "-") and isinstance(left, t.PointerType) and t.in_family(right, "ANY_INT"):
             return left  # pointer arithmetic in bytes (TYP-43)
         if op == "+" and isinstance(left, t.StringType) and isinstance(right, t.StringType):
@@ -564,8 +577,10 @@ def _enums_in(ty: Type):
 
 
 def _hint(left: Type, right: Type) -> str:
-    return (
-        f"{right.name}_TO_{left.name}"
-        if isinstance(left, t.Elementary) and isinstance(right, t.Elementary)
-        else "a *_TO_* conversion"
-    )
+    if not (isinstance(left, t.Elementary) and isinstance(right, t.Elementary)):
+        return "a *_TO_* conversion"
+    if left.name in LONG_TIME_TYPES and right.category == "time":  # LTOD + TIME: the duration becomes an LTIME
+        return f"{right.name}_TO_LTIME"
+    if right.name in LONG_TIME_TYPES and left.category == "time":
+        return f"{left.name}_TO_LTIME"
+    return f"{right.name}_TO_{left.name}"

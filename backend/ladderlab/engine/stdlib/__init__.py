@@ -20,6 +20,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cache
 
+from ...iec import values
 from ...iec.stdlib import OPERATOR_OVERLOADS
 from ..errors import PlcRuntimeError, PlcWarning
 from . import functions as f
@@ -27,7 +28,7 @@ from .build import HELPERS, Impl, Specialised, specialise
 from .conversions import conversion_function, conversion_names, convert, converter
 from .fbs import STANDARD_FBS, FunctionBlock, pins
 from .strings import concat, find_position, length, positional
-from .timefuncs import TIME_FUNCTIONS
+from .timefuncs import TIME_FUNCTIONS, time_lengths
 
 Implement = Callable[[tuple[str, ...], "str | None"], Impl]
 
@@ -58,8 +59,8 @@ def _operator(name: str, numeric: Implement) -> Implement:
         overload = OPERATOR_OVERLOADS.get((name, cats))
         if overload:
             return TIME_FUNCTIONS[overload](types, result)
-        if name == "ADD" and set(cats) == {"time"}:
-            return f.chain("+", types, "TIME")
+        if name == "ADD" and set(cats) == {"time"} and time_lengths(types) is not None:
+            return f.chain("+", types, values.resolve(types[0]).name)
         if name == "ADD" and set(cats) == {"string"}:
             return concat(types, result)
         return numeric(types, result)
