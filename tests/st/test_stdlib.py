@@ -44,8 +44,10 @@ def test_fun10_conversions_cover_all_pairs_in_long_and_short_spellings():
     assert stdlib.function("DATE_AND_TIME_TO_TIME_OF_DAY").result == "TIME_OF_DAY"
     assert stdlib.function("INT_TO_INT") is None
     conversions = [f for f in stdlib.FUNCTIONS.values() if "_TO_" in f.name]
-    # 20 types + the TOD and DT spellings = 22 names; drop pairs naming one type twice (18 singles, 2 x 4 alias pairs)
-    assert len(conversions) == 22 * 22 - 18 - 2 * 4
+    # 24 types + the TOD, DT, LTOD and LDT spellings = 28 names; drop pairs naming one type twice (20 singles,
+    # 4 x 4 alias pairs)
+    assert len(conversions) == 28 * 28 - 20 - 4 * 4
+    assert stdlib.function("LDT_TO_LTOD").result == "LTIME_OF_DAY"
 
 
 def test_fun03_extensible_inputs_are_numbered_on():

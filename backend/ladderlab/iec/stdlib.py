@@ -17,7 +17,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 
-from .elementary import ALIASES, ELEMENTARY, canonical_type_name
+from .elementary import ALIASES, ELEMENTARY, SHORT_TO_LONG, canonical_type_name
 
 T = "T"
 
@@ -261,6 +261,19 @@ def _strings() -> list[StdFunction]:
     ]
 
 
+_LONG_WORDS = {"TIME": "LTIME", "TOD": "LTOD", "DT": "LDT", "DATE": "LDATE"}
+
+
+def long_time_name(name: str) -> str:
+    """The IEC 3rd edition name of a date and time function on the long types: ADD_TOD_TIME -> ADD_LTOD_LTIME."""
+    operation, *operands = name.split("_")
+    return "_".join([operation, *(_LONG_WORDS[word] for word in operands)])
+
+
+def _long(type_name: str) -> str:
+    return SHORT_TO_LONG.get(type_name, type_name)
+
+
 def _date_and_time() -> list[StdFunction]:
     tod, dt = "TIME_OF_DAY", "DATE_AND_TIME"
     table = [
@@ -279,6 +292,10 @@ def _date_and_time() -> list[StdFunction]:
     ]
     rows = [
         _fn(name, [Pin("IN1", a), Pin("IN2", b)], result, "date and time", text, "FUN-85")
+        for name, a, b, result, text in table
+    ]
+    rows += [  # IEC 61131-3 ed. 3 Table 35: the same functions on the long types (ADD_LTOD_LTIME ...)
+        _fn(long_time_name(name), [Pin("IN1", _long(a)), Pin("IN2", _long(b))], _long(result), "date and time", text, "FUN-85")
         for name, a, b, result, text in table
     ]
     rows += [

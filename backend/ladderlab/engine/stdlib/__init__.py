@@ -21,7 +21,7 @@ from dataclasses import dataclass
 from functools import cache
 
 from ...iec import values
-from ...iec.stdlib import OPERATOR_OVERLOADS
+from ...iec.stdlib import OPERATOR_OVERLOADS, long_time_name
 from ..errors import PlcRuntimeError, PlcWarning
 from . import functions as f
 from .build import HELPERS, Impl, Specialised, specialise
@@ -109,6 +109,7 @@ def _table() -> dict[str, StandardFunction]:
         for name, inputs in (("LEFT", 2), ("RIGHT", 2), ("MID", 3), ("INSERT", 3), ("DELETE", 3), ("REPLACE", 4))
     ]
     rows += [(name, 2, False, implement, "FUN-85") for name, implement in TIME_FUNCTIONS.items()]
+    rows += [(long_time_name(name), 2, False, implement, "FUN-85") for name, implement in TIME_FUNCTIONS.items()]
     rows += [
         ("MULTIME", 2, False, TIME_FUNCTIONS["MUL_TIME"], "FUN-85"),
         ("DIVTIME", 2, False, TIME_FUNCTIONS["DIV_TIME"], "FUN-85"),
