@@ -26,6 +26,7 @@ from ..errors import PlcRuntimeError, PlcWarning
 from . import functions as f
 from .build import HELPERS, Impl, Specialised, specialise
 from .conversions import conversion_function, conversion_names, convert, converter
+from .ed3_conversions import ed3_conversions
 from .fbs import STANDARD_FBS, FunctionBlock, pins
 from .strings import concat, find_position, length, positional
 from .timefuncs import TIME_FUNCTIONS, time_lengths
@@ -115,6 +116,7 @@ def _table() -> dict[str, StandardFunction]:
         ("DIVTIME", 2, False, TIME_FUNCTIONS["DIV_TIME"], "FUN-85"),
     ]
     rows += [(name, 1, False, conversion_function(*pair), "FUN-10") for name, pair in conversion_names().items()]
+    rows += [(name, 1, False, implement, "FUN-10") for name, implement in ed3_conversions().items()]
     return {name: StandardFunction(name, inputs, ext, implement, spec) for name, inputs, ext, implement, spec in rows}
 
 

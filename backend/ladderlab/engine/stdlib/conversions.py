@@ -22,7 +22,8 @@ from __future__ import annotations
 from collections.abc import Callable
 from functools import cache
 
-from ...iec.elementary import ALIASES, ELEMENTARY, per_day
+from ...iec.elementary import canonical_type_name, per_day
+from ...iec.stdlib import CONVERSION_SPELLINGS
 from ...iec.value_text import format_value, parse
 from ...iec.values import MS_PER_DAY, TypeRef, default_value, resolve, value_range
 from ..errors import NOT_A_NUMBER, PlcWarning
@@ -108,9 +109,19 @@ def conversion_function(src: str, dst: str):
 
 
 def conversion_names() -> dict[str, tuple[str, str]]:
-    """Every SRC_TO_DST name with long and short spellings (FUN-10: DT_TO_TOD = DATE_AND_TIME_TO_TIME_OF_DAY)."""
-    spellings = [*ELEMENTARY, *ALIASES]
-    return {f"{a}_TO_{b}": (a, b) for a in spellings for b in spellings if resolve(a).name != resolve(b).name}
+    """Every SRC_TO_DST name with long and short spellings (FUN-10: DT_TO_TOD = DATE_AND_TIME_TO_TIME_OF_DAY), and
+    WSTRING's, which the value model holds as a STRING (a Python str)."""
+    return {
+        f"{a}_TO_{b}": (value_type_name(a), value_type_name(b))
+        for a in CONVERSION_SPELLINGS
+        for b in CONVERSION_SPELLINGS
+        if canonical_type_name(a) != canonical_type_name(b)
+    }
+
+
+def value_type_name(name: str) -> str:
+    """The value model's type of a type name: WSTRING is held as STRING, every other name is its own."""
+    return "STRING" if name.upper() == "WSTRING" else name
 
 
 @cache
