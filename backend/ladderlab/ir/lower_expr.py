@@ -51,6 +51,8 @@ _OPERATORS = {
     "**": "EXPT",
     "AND": "AND",
     "OR": "OR",
+    "AND_THEN": "AND_THEN",
+    "OR_ELSE": "OR_ELSE",
     "XOR": "XOR",
     "=": "EQ",
     "<>": "NE",
@@ -357,6 +359,8 @@ def _binary(node: ast.Binary, ctx: PouContext) -> Expr:
     left_ty, right_ty = node.left.ty, node.right.ty
     if op == "EXPT":
         return _power(node, ctx)
+    if op in ("AND_THEN", "OR_ELSE"):
+        return _short_circuit(node, op, ctx)
     if t.category(left_ty) == "string" and op == "ADD":  # FUN-82: '+' concatenates
         return _function("CONCAT", [node.left, node.right], ctx, ctx.ir_type(node.ty))
     if op in ("ADD", "SUB", "MUL", "DIV") and {t.category(left_ty), t.category(right_ty)} & _TIME_CATEGORIES:
@@ -371,6 +375,18 @@ def _binary(node: ast.Binary, ctx: PouContext) -> Expr:
     else:
         operand = result = ctx.ir_type(node.ty)
     return Binary(op, lower_to(node.left, ctx, operand), lower_to(node.right, ctx, operand), result)  # type: ignore[arg-type]
+
+
+def _short_circuit(node: ast.Binary, op: str, ctx: PouContext) -> Expr:
+    """AND_THEN / OR_ELSE: the right operand may not run, so nothing of it is evaluated ahead of the statement
+    (a call with EN/ENO there is IR-EN-CALL, as in a WHILE condition)."""
+    left = lower_to(node.left, ctx, BOOL)
+    saved, ctx.lifts = ctx.lifts, None
+    try:
+        right = lower_to(node.right, ctx, BOOL)
+    finally:
+        ctx.lifts = saved
+    return Binary(op, left, right, BOOL)  # type: ignore[arg-type]  # op is AND_THEN or OR_ELSE
 
 
 def _reference_operation(node: ast.Binary, op: str, ctx: PouContext) -> Expr:

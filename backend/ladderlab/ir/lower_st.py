@@ -37,6 +37,7 @@ from .nodes import (
     Case,
     CaseLabel,
     Const,
+    Continue,
     Exit,
     Expr,
     FbCall,
@@ -268,6 +269,10 @@ def _exit(statement: ast.Exit, ctx: PouContext) -> list[Stmt]:
     return [Exit(ctx.origin(statement))]
 
 
+def _continue(statement: ast.Continue, ctx: PouContext) -> list[Stmt]:
+    return [Continue(ctx.origin(statement))]
+
+
 def _return(statement: ast.Return, ctx: PouContext) -> list[Stmt]:
     return [Return(ctx.origin(statement))]
 
@@ -285,6 +290,7 @@ _LOWER = {
     ast.While: _while,
     ast.Repeat: _repeat,
     ast.Exit: _exit,
+    ast.Continue: _continue,
     ast.Return: _return,
     ast.Empty: _empty,
 }

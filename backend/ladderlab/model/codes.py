@@ -104,7 +104,7 @@ _TABLE: list[tuple[str, str, Severity, str]] = [
     ("st", "ST-NOT-LVALUE", "error", "Something that is not a variable is assigned."),
     ("st", "ST-INPUT-WRITE", "warning", "An input of the POU is assigned inside it."),
     ("st", "ST-LOOP-VAR", "error", "A FOR loop's variable or step is not allowed."),
-    ("st", "ST-EXIT-OUTSIDE-LOOP", "error", "EXIT is used outside a loop."),
+    ("st", "ST-EXIT-OUTSIDE-LOOP", "error", "EXIT or CONTINUE is used outside a loop."),
     ("st", "ST-CASE-OVERLAP", "warning", "Two CASE labels overlap: only the first branch ever runs."),
     ("st", "ST-NO-EFFECT", "error", "A statement computes a value and does nothing with it."),
     ("st", "ST-NO-RESULT", "warning", "A function never assigns its result."),

@@ -274,6 +274,13 @@ class Exit:
 
 
 @dataclass(slots=True)
+class Continue:
+    """CONTINUE (IEC 61131-3 ed. 3): the rest of the innermost loop's body is skipped for this iteration."""
+
+    span: Span = _span()
+
+
+@dataclass(slots=True)
 class Return:
     span: Span = _span()
 
@@ -300,7 +307,7 @@ class Goto:
     span: Span = _span()
 
 
-Stmt = Assign | CallStmt | If | Case | For | While | Repeat | Exit | Return | Empty | Label | Goto
+Stmt = Assign | CallStmt | If | Case | For | While | Repeat | Exit | Continue | Return | Empty | Label | Goto
 
 # ---------------------------------------------------------------- types and declarations
 
@@ -351,8 +358,11 @@ class EnumValue:
 
 @dataclass(slots=True)
 class EnumType:
+    """``(red, green)``; with ``base`` (an integer type name), ``INT (a := 0, b := 10)`` (IEC ed. 3 6.4.4.3)."""
+
     values: list[EnumValue]
     span: Span = _span()
+    base: str | None = None
 
 
 @dataclass(slots=True)

@@ -30,6 +30,8 @@ Report = Callable[..., None]  # report(code, message, node, severity="error")
 _ARITHMETIC = {"+", "-", "*", "/"}
 _COMPARISON = {"=", "<>", "<", ">", "<=", ">="}
 _LOGIC = {"AND", "OR", "XOR"}
+#: CODESYS' short-circuit operators: the right operand is evaluated only when the left does not decide.
+_SHORT_CIRCUIT = {"AND_THEN", "OR_ELSE"}
 # TIME and date arithmetic (ST-21, ST-22, FUN-85): (op, left category, right category) -> result type name
 _TIME_RULES = {
     ("+", "time", "time"): "TIME",
@@ -315,6 +317,8 @@ class BodyChecker:
         op = node.op
         if op == "**":
             return self._power(node, left, right)
+        if op in _SHORT_CIRCUIT:
+            return self._short_circuit(node, left, right)
         time_result = time_rule(op, left, right)
         if time_result:
             return time_result
@@ -345,6 +349,14 @@ class BodyChecker:
                 severity="warning",
             )
         return self._operator_result(node, combined)
+
+    def _short_circuit(self, node: ast.Binary, left: Type, right: Type) -> Type:
+        """AND_THEN / OR_ELSE take BOOL operands only (CODESYS), and give a BOOL."""
+        for side, operand in ((left, node.left), (right, node.right)):
+            if side != t.BOOL:
+                self.report("ST-TYPE-MISMATCH", f"{node.op} needs BOOL operands, not {side}", operand)
+                return ERROR
+        return t.BOOL
 
     def _operator_result(self, node: ast.Binary, combined: Type) -> Type:
         op = node.op
@@ -431,6 +443,8 @@ class BodyChecker:
             self.condition(stmt.until, "UNTIL")
         elif isinstance(stmt, ast.Exit) and self.loop_depth == 0:
             self.report("ST-EXIT-OUTSIDE-LOOP", "EXIT is only allowed inside FOR, WHILE or REPEAT", stmt)
+        elif isinstance(stmt, ast.Continue) and self.loop_depth == 0:
+            self.report("ST-EXIT-OUTSIDE-LOOP", "CONTINUE is only allowed inside FOR, WHILE or REPEAT", stmt)
 
     def loop(self, body: list[ast.Stmt]) -> None:
         self.loop_depth += 1

@@ -202,6 +202,9 @@ class AstBuilder(Transformer):
     def enum_type(self, c):
         return ast.EnumType(c[:-1], span_of(c))
 
+    def based_enum_type(self, c):
+        return ast.EnumType(c[1:-1], span_of(c), str(c[0]))
+
     def enum_value(self, c):
         return ast.EnumValue(str(c[0]), c[1], span_of(c))
 
@@ -342,6 +345,9 @@ class AstBuilder(Transformer):
 
     def exit_statement(self, c):
         return ast.Exit(span_of(c))
+
+    def continue_statement(self, c):
+        return ast.Continue(span_of(c))
 
     def return_statement(self, c):
         return ast.Return(span_of(c))

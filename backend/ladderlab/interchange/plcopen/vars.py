@@ -100,13 +100,16 @@ def write_type(parent: ET.Element, spec: ast.TypeSpec) -> None:
     elif isinstance(spec, ast.PointerType):
         write_type(sub(sub(parent, "pointer"), "baseType"), spec.target)
     elif isinstance(spec, ast.EnumType):
-        values = sub(sub(parent, "enum"), "values")
+        enum = sub(parent, "enum")
+        values = sub(enum, "values")
         for value in spec.values:
             sub(
                 values,
                 "value",
                 {"name": value.name, "value": None if value.value is None else print_expression(value.value)},
             )
+        if spec.base:  # TC6 XML: enum's optional baseType
+            write_type(sub(enum, "baseType"), ast.NamedType(spec.base))
     elif isinstance(spec, ast.StructType):
         node = sub(parent, "struct")
         for decl in spec.members:
@@ -226,7 +229,9 @@ class VarReader:
                 ast.EnumValue(v.get("name", ""), self.expression(v.get("value"), v) if v.get("value") else None)
                 for v in self.reader.children(self.reader.child(choice, "values"), "value")
             ]
-            return ast.EnumType(values)
+            base_type = self.reader.child(choice, "baseType")
+            base = self.type(base_type) if base_type is not None else None
+            return ast.EnumType(values, base=base.name if isinstance(base, ast.NamedType) else None)
         if tag == "struct":
             return ast.StructType(self.declarations(choice))
         self._problem(f"unknown type element <{tag}>; kept as the type name {tag}", choice, "error")
