@@ -6,11 +6,11 @@ from ladderlab.simulation.build import build_project
 from ladderlab.st.project_text import source_to_project
 
 
-def build(text: str):
-    """The build of ``text`` (a whole .st file); the parse must succeed."""
+def build(text: str, variant: str = "fast"):
+    """The build of ``text`` (a whole .st file) in the code generator's ``variant``; the parse must succeed."""
     project, diagnostics = source_to_project(text, "ed3")
     assert project is not None and not [d for d in diagnostics if d.severity == "error"], diagnostics
-    return build_project(project)
+    return build_project(project, variant)
 
 
 def errors(text: str) -> list[str]:
@@ -24,9 +24,9 @@ def program(declarations: str, body: str, types: str = "") -> str:
     return f"{types}\nPROGRAM Main\nVAR\n{declarations}\nEND_VAR\n{body}\nEND_PROGRAM\n"
 
 
-def scans(text: str, count: int, *paths: str) -> list[list]:
+def scans(text: str, count: int, *paths: str, variant: str = "fast") -> list[list]:
     """The values of ``Main.<path>`` after each of ``count`` scans (the program must compile and not fault)."""
-    result = build(text)
+    result = build(text, variant)
     assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
     sim = result.simulation()
     seen = []
