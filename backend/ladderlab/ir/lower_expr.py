@@ -232,7 +232,17 @@ def _program_instance(node: ast.Expr, program: PouInfo, ctx: PouContext) -> Var:
 
 
 def lower_access(node: ast.Expr, ctx: PouContext) -> Var:
-    """A variable access path: a declared variable, then ``[i]`` and ``.field`` / ``.PIN`` selectors."""
+    """A variable access path: a declared variable, then ``[i]`` and ``.field`` / ``.PIN`` selectors; a CODESYS
+    REFERENCE TO read through (the checker marked it ``deref``) gets the ``^`` it stands for."""
+    var = _access(node, ctx)
+    if getattr(node, "deref", None):
+        if not isinstance(var.type, Reference):
+            raise LoweringError(None)
+        return Var(var.scope, var.name, var.type.target, (*var.path, Deref()))
+    return var
+
+
+def _access(node: ast.Expr, ctx: PouContext) -> Var:
     if isinstance(node, (ast.Name, ast.DirectAddr)):
         ref = node.ref
         if isinstance(ref, Symbol):
@@ -459,6 +469,9 @@ def _call(node: ast.Call, ctx: PouContext) -> Expr:
         return _sizeof(node, ctx, ctx.ir_type(node.ty))
     if node.ref is None and isinstance(node.callee, ast.Name) and node.callee.name.upper() in ("ADR", "REF"):
         return _address_of(node, ctx)
+    if node.ref is None and isinstance(node.callee, ast.Name) and node.callee.name.upper() == "__ISVALIDREF":
+        reference = lower_access(node.args[0].value, ctx)
+        return Binary("NE", reference, Const(None, reference.type), BOOL)
     refuse_unsupported_call(node)
     ref = node.ref
     en, eno = _en_eno(node)
@@ -476,13 +489,17 @@ def _call(node: ast.Call, ctx: PouContext) -> Expr:
     return _lift(node, call, before, ctx)
 
 
+def address_of(value: ast.Expr, ty: IrType, text: str, ctx: PouContext) -> AddressOf:
+    """A reference of type ``ty`` to the variable ``value`` (the checker refused temporaries); ``text`` shows it."""
+    return AddressOf(lower_access(value, ctx), ty, text)
+
+
 def _address_of(node: ast.Call, ctx: PouContext) -> AddressOf:
     """``REF(x)`` / ``ADR(x)``: a reference to the variable ``x`` (the checker refused temporaries)."""
     if len(node.args) != 1:
         raise LoweringError(None)
-    var = lower_access(node.args[0].value, ctx)
-    ty = ctx.ir_type(node.ty)
-    return AddressOf(var, ty, f"{node.callee.name.upper()}({print_expression(node.args[0].value)})")  # type: ignore[union-attr]  # a Name
+    text = f"{node.callee.name.upper()}({print_expression(node.args[0].value)})"  # type: ignore[union-attr]  # a Name
+    return address_of(node.args[0].value, ctx.ir_type(node.ty), text, ctx)
 
 
 def _sizeof(node: ast.Call, ctx: PouContext, target: IrType) -> Const:

@@ -14,9 +14,11 @@ from ..iec import stdlib
 from ..model.project import Pou as ModelPou
 from ..st import ast
 from ..st import types as t
+from ..st.printer import print_expression
 from ..st.symbols import PouInfo, Symbol
 from .context import PouContext
 from .lower_expr import (
+    address_of,
     assign_part,
     convert,
     is_part,
@@ -108,6 +110,13 @@ def _assign(statement: ast.Assign, ctx: PouContext) -> list[Stmt]:
         return [FnCall(call, lower_access(target, ctx), origin, en, eno), *after]
     lowered = lower_to(value, ctx, ctx.ir_type(target.ty))  # the value is computed before the target is stored
     return [Assign(lower_access(target, ctx), lowered, origin)]
+
+
+def _ref_assign(statement: ast.RefAssign, ctx: PouContext) -> list[Stmt]:
+    """``r REF= x``: the reference itself (not read through) gets a reference to x, as ``r := REF(x)`` would."""
+    target = lower_access(statement.target, ctx)
+    value = address_of(statement.value, target.type, f"REF({print_expression(statement.value)})", ctx)
+    return [Assign(target, value, ctx.origin(statement))]
 
 
 def _assign_bit(target: ast.Member, value: ast.Expr, ctx: PouContext, origin: Origin) -> Assign:
@@ -283,6 +292,7 @@ def _empty(statement: ast.Empty, ctx: PouContext) -> list[Stmt]:
 
 _LOWER = {
     ast.Assign: _assign,
+    ast.RefAssign: _ref_assign,
     ast.CallStmt: lower_call_statement,
     ast.If: _if,
     ast.Case: _case,

@@ -99,6 +99,7 @@ class Name:
     span: Span = _span()
     ty: Any = _annotation()
     ref: Any = _annotation()
+    deref: Any = _annotation()  # True: a REFERENCE TO read through (the checker sets it)
 
 
 @dataclass(slots=True)
@@ -120,6 +121,7 @@ class Member:
     span: Span = _span()
     ty: Any = _annotation()
     ref: Any = _annotation()
+    deref: Any = _annotation()  # True: a REFERENCE TO read through (the checker sets it)
 
 
 @dataclass(slots=True)
@@ -128,6 +130,7 @@ class Index:
     indices: list[Expr]
     span: Span = _span()
     ty: Any = _annotation()
+    deref: Any = _annotation()  # True: a REFERENCE TO read through (the checker sets it)
 
 
 @dataclass(slots=True)
@@ -202,6 +205,15 @@ LITERALS = (IntLit, RealLit, BoolLit, StringLit, TimeLit, TypedLit)
 
 @dataclass(slots=True)
 class Assign:
+    target: Expr
+    value: Expr
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class RefAssign:
+    """CODESYS ``r REF= x``: the REFERENCE TO ``r`` now refers to the variable ``x``."""
+
     target: Expr
     value: Expr
     span: Span = _span()
@@ -307,7 +319,7 @@ class Goto:
     span: Span = _span()
 
 
-Stmt = Assign | CallStmt | If | Case | For | While | Repeat | Exit | Continue | Return | Empty | Label | Goto
+Stmt = Assign | RefAssign | CallStmt | If | Case | For | While | Repeat | Exit | Continue | Return | Empty | Label | Goto
 
 # ---------------------------------------------------------------- types and declarations
 
@@ -344,7 +356,7 @@ class ArrayType:
 
 @dataclass(slots=True)
 class PointerType:
-    kind: str  # "POINTER TO" or "REF_TO"
+    kind: str  # "POINTER TO", "REF_TO" or "REFERENCE TO" (CODESYS: dereferenced implicitly)
     target: TypeSpec
     span: Span = _span()
 

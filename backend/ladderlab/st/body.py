@@ -16,13 +16,14 @@ from ..iec.addresses import parse_address, part_type, partial_access, same_locat
 from ..iec.spelling import did_you_mean
 from . import ast
 from . import types as t
-from .calls import check_call
+from .calls import check_call, unreferable
 from .cases import check_case
 from .context_typing import default_type, settle, untyped_leaves, untyped_result
 from .rules import EnumValue, assignable_or_report, constant_value, root_name
 from .symbols import CheckResult, PouInfo, Symbol
 from .types import ERROR, Type
 
+_ACCESSES = (ast.Name, ast.Member, ast.Index)
 _PART_NAMES = {1: "bits", 8: "bytes", 16: "words", 32: "double words", 64: "long words"}
 
 Report = Callable[..., None]  # report(code, message, node, severity="error")
@@ -66,6 +67,8 @@ class BodyChecker:
         self.loop_depth = 0
         self.loop_vars: list[Symbol] = []
         self.result_assigned = False
+        #: The access typed as the REFERENCE TO itself, not read through (REF='s target, ^'s base, __ISVALIDREF)
+        self.keep_reference: ast.Expr | None = None
 
     # ------------------------------------------------------------ names
     def lookup(self, name: str) -> Symbol | None:
@@ -112,10 +115,22 @@ class BodyChecker:
 
     def _expr(self, node: ast.Expr, expected: Type | None) -> Type:
         check = _EXPRESSION_CHECKS.get(type(node))
-        return check(self, node, expected) if check is not None else self._binary(node)
+        ty = check(self, node, expected) if check is not None else self._binary(node)
+        if isinstance(ty, t.PointerType) and ty.implicit and type(node) in _ACCESSES and node is not self.keep_reference:
+            node.deref = True  # a CODESYS REFERENCE TO stands for its target (lowered as r^)
+            return ty.target
+        return ty
+
+    def reference(self, node: ast.Expr) -> Type:
+        """Type an access as the reference itself: a REFERENCE TO is not read through here."""
+        saved, self.keep_reference = self.keep_reference, node
+        try:
+            return self.expr(node)
+        finally:
+            self.keep_reference = saved
 
     def _deref(self, node: ast.Deref) -> Type:
-        base = self.expr(node.base)
+        base = self.reference(node.base)  # r^ on a REFERENCE TO too, as IronPLC accepts
         if isinstance(base, t.PointerType):
             return base.target
         if base is not ERROR:
@@ -412,6 +427,8 @@ class BodyChecker:
     def statement(self, stmt: ast.Stmt) -> None:
         if isinstance(stmt, ast.Assign):
             self.assign(stmt)
+        elif isinstance(stmt, ast.RefAssign):
+            self.ref_assign(stmt)
         elif isinstance(stmt, ast.CallStmt):
             if isinstance(stmt.call, ast.Call):
                 self.call(stmt.call, statement=True)
@@ -460,6 +477,23 @@ class BodyChecker:
         target = self.target(stmt.target)
         value = self.expr(stmt.value, target)
         assignable_or_report(self, target, value, stmt.value, "assign")
+
+    def ref_assign(self, stmt: ast.RefAssign) -> None:
+        """``r REF= x`` (CODESYS): r, a REFERENCE TO T, refers to the variable x of type T from now on."""
+        target = self.reference(stmt.target)
+        value = self.expr(stmt.value)
+        if target is ERROR or value is ERROR:
+            return
+        if not (isinstance(target, t.PointerType) and target.implicit):
+            self.report("ST-TYPE-MISMATCH", f"REF= binds a REFERENCE TO variable, not {target}", stmt.target)
+        elif not isinstance(stmt.value, (ast.Name, ast.Member, ast.Index, ast.Deref)):
+            self.report("ST-NOT-LVALUE", "REF= needs a variable on its right: the one the reference will refer to", stmt.value)
+        elif not t.same(target.target, value):
+            self.report("ST-TYPE-MISMATCH", f"a {target} cannot refer to a {value}", stmt.value)
+        else:
+            problem = unreferable(self, stmt.value)
+            if problem is not None:
+                self.report("ST-REF", f"REF= cannot refer to {problem}", stmt.value)
 
     def target(self, node: ast.Expr) -> Type:
         """Type an assignment target and check it may be written (ST-20, POU-23, VAR-21, ST-73)."""

@@ -226,7 +226,7 @@ class ProjectChecker:
         if isinstance(spec, ast.ArrayType):
             return self._array(spec, checker)
         if isinstance(spec, ast.PointerType):
-            return t.PointerType(self.resolve(spec.target, checker))
+            return t.PointerType(self.resolve(spec.target, checker), spec.kind == "REFERENCE TO")
         if isinstance(spec, ast.EnumType):
             return self._enum(spec, checker, name or "enumeration")
         struct = t.StructType(name or "STRUCT")

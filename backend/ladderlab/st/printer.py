@@ -141,6 +141,8 @@ def print_statements(statements: list[ast.Stmt], level: int = 0) -> str:
 
 def _statement(stmt: ast.Stmt, level: int) -> str:
     pad = INDENT * level
+    if isinstance(stmt, ast.RefAssign):
+        return f"{pad}{_expr(stmt.target, 0)} REF= {_expr(stmt.value, 0)};\n"
     if isinstance(stmt, ast.Assign):
         return f"{pad}{_expr(stmt.target, 0)} := {_expr(stmt.value, 0)};\n"
     if isinstance(stmt, ast.CallStmt):

@@ -196,7 +196,7 @@ class AstBuilder(Transformer):
         return None if isinstance(c[0], Token) and c[0].type == "STAR" else (c[0], c[1])
 
     def pointer_type(self, c):
-        kind = "POINTER TO" if c[0].type == "POINTER" else "REF_TO"
+        kind = {"POINTER": "POINTER TO", "REFERENCE": "REFERENCE TO"}.get(c[0].type, "REF_TO")
         return ast.PointerType(kind, c[1], span_of(c))
 
     def enum_type(self, c):
@@ -287,6 +287,9 @@ class AstBuilder(Transformer):
     # ------------------------------------------------------------ statements
     def assignment(self, c):
         return ast.Assign(c[0], c[1], span_of(c))
+
+    def ref_assignment(self, c):
+        return ast.RefAssign(c[0], c[2], span_of(c))
 
     def call_statement(self, c):
         return ast.CallStmt(c[0], span_of(c))
