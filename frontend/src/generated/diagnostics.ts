@@ -1268,7 +1268,7 @@ export const DIAGNOSTICS = {
       example_note: "outside any FOR, WHILE or REPEAT.",
       fix: "use EXIT only inside a loop; RETURN leaves the POU.",
       severity: "error",
-      summary: "EXIT is used outside a loop.",
+      summary: "EXIT or CONTINUE is used outside a loop.",
     },
     "ST-EXTERNAL": {
       anchor: "st-external",
