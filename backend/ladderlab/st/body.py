@@ -531,7 +531,7 @@ class BodyChecker:
                     f"'{symbol.name}' is the FOR loop variable: it must not be changed inside the loop",
                     node,
                 )
-            if symbol.var_class == "VAR_INPUT" and node is root and self.pou is not None:
+            if symbol.var_class == "VAR_INPUT" and node is root and self.pou is not None and not root.deref:
                 self.report(
                     "ST-INPUT-WRITE",
                     f"'{symbol.name}' is an input of {self.pou.name}: assigning it overwrites the caller's value",
