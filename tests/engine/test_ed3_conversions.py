@@ -49,7 +49,11 @@ def test_bcd_conversions_scan_by_scan():
 @pytest.mark.parametrize(
     "declarations, body, message",
     [
-        ("w : WORD := 16#12A4; u : UINT;", "u := WORD_BCD_TO_UINT(w);", "WORD_BCD_TO_UINT(16#12A4): the digit 16#A is not BCD"),
+        (
+            "w : WORD := 16#12A4; u : UINT;",
+            "u := WORD_BCD_TO_UINT(w);",
+            "WORD_BCD_TO_UINT(16#12A4): the digit 16#A is not BCD",
+        ),
         ("w : WORD := 16#0999; s : SINT;", "s := BCD_TO_SINT(w);", "BCD_TO_SINT(16#999) = 999 does not fit its result"),
         ("i : INT := -5; w : WORD;", "w := INT_TO_BCD_WORD(i);", "INT_TO_BCD_WORD(-5): BCD in 4 digits holds 0..9999"),
         ("i : INT := 123; b : BYTE;", "b := INT_TO_BCD_BYTE(i);", "INT_TO_BCD_BYTE(123): BCD in 2 digits holds 0..99"),

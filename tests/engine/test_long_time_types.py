@@ -119,15 +119,23 @@ def test_ltime_wraps_at_64_bits():
 
 def test_struct_fields_and_arrays_of_long_types():
     types = "TYPE Stamp : STRUCT t : LTIME; moment : LDT; END_STRUCT; END_TYPE"
-    text = program("s : Stamp; log : ARRAY[1..2] OF LTOD; r : LTIME;", "s.t := LTIME#5s; r := s.t; log[2] := LTOD#1:2:3;", types)
+    text = program(
+        "s : Stamp; log : ARRAY[1..2] OF LTOD; r : LTIME;", "s.t := LTIME#5s; r := s.t; log[2] := LTOD#1:2:3;", types
+    )
     assert scans(text, 1, "r", "log[2]") == [[5 * S, H + 2 * M + 3 * S]]
 
 
 @pytest.mark.parametrize(
     "body, message",
     [
-        ("a := a + t;", "'+' needs operands of the same type: LTIME and TIME; convert one of them (e.g. TIME_TO_LTIME)"),
-        ("lt_tod := lt_tod + t;", "needs operands of the same type: LTIME_OF_DAY and TIME; convert one of them (e.g. TIME_TO_LTIME)"),
+        (
+            "a := a + t;",
+            "'+' needs operands of the same type: LTIME and TIME; convert one of them (e.g. TIME_TO_LTIME)",
+        ),
+        (
+            "lt_tod := lt_tod + t;",
+            "needs operands of the same type: LTIME_OF_DAY and TIME; convert one of them (e.g. TIME_TO_LTIME)",
+        ),
         ("t := a;", "cannot assign LTIME to TIME without a conversion such as LTIME_TO_TIME"),
         ("a := T#1s;", "cannot assign TIME to LTIME without a conversion such as TIME_TO_LTIME"),
     ],

@@ -114,7 +114,9 @@ def _conversions() -> list[StdFunction]:
 _INTEGERS = [name for name, t in ELEMENTARY.items() if t.category == "int"]
 _BIT_STRINGS = [name for name, t in ELEMENTARY.items() if t.category == "bits"]
 #: The bit string as wide as each integer type: what ``<int>_TO_BCD`` writes into.
-BCD_WIDTH = {name: _BIT_STRINGS[_BIT_STRINGS.index("BYTE") + (ELEMENTARY[name].bits // 16).bit_length()] for name in _INTEGERS}
+BCD_WIDTH = {
+    name: _BIT_STRINGS[_BIT_STRINGS.index("BYTE") + (ELEMENTARY[name].bits // 16).bit_length()] for name in _INTEGERS
+}
 
 
 def bcd_digits(bit_string: str) -> int:
@@ -350,7 +352,14 @@ def _date_and_time() -> list[StdFunction]:
         for name, a, b, result, text in table
     ]
     rows += [  # IEC 61131-3 ed. 3 Table 35: the same functions on the long types (ADD_LTOD_LTIME ...)
-        _fn(long_time_name(name), [Pin("IN1", _long(a)), Pin("IN2", _long(b))], _long(result), "date and time", text, "FUN-85")
+        _fn(
+            long_time_name(name),
+            [Pin("IN1", _long(a)), Pin("IN2", _long(b))],
+            _long(result),
+            "date and time",
+            text,
+            "FUN-85",
+        )
         for name, a, b, result, text in table
     ]
     rows += [
@@ -455,7 +464,15 @@ def _sfc_blocks() -> list[StdFunctionBlock]:
 #: Every standard function by upper-case name.
 FUNCTIONS: dict[str, StdFunction] = {
     f.name: f
-    for f in (*_conversions(), *_ed3_conversions(), *_numeric(), *_bits(), *_selection_and_comparison(), *_strings(), *_date_and_time())
+    for f in (
+        *_conversions(),
+        *_ed3_conversions(),
+        *_numeric(),
+        *_bits(),
+        *_selection_and_comparison(),
+        *_strings(),
+        *_date_and_time(),
+    )
 }
 #: Every standard function block by upper-case name.
 FUNCTION_BLOCKS: dict[str, StdFunctionBlock] = {fb.name: fb for fb in _function_blocks()}

@@ -103,7 +103,23 @@ class Binary:
     """Arithmetic, comparison or boolean operator on operands of one type (after conversions)."""
 
     op: Literal[
-        "ADD", "SUB", "MUL", "DIV", "MOD", "EXPT", "AND", "OR", "XOR", "AND_THEN", "OR_ELSE", "EQ", "NE", "LT", "LE", "GT", "GE"
+        "ADD",
+        "SUB",
+        "MUL",
+        "DIV",
+        "MOD",
+        "EXPT",
+        "AND",
+        "OR",
+        "XOR",
+        "AND_THEN",
+        "OR_ELSE",
+        "EQ",
+        "NE",
+        "LT",
+        "LE",
+        "GT",
+        "GE",
     ]
     left: Expr
     right: Expr

@@ -319,7 +319,9 @@ class Goto:
     span: Span = _span()
 
 
-Stmt = Assign | RefAssign | CallStmt | If | Case | For | While | Repeat | Exit | Continue | Return | Empty | Label | Goto
+Stmt = (
+    Assign | RefAssign | CallStmt | If | Case | For | While | Repeat | Exit | Continue | Return | Empty | Label | Goto
+)
 
 # ---------------------------------------------------------------- types and declarations
 

@@ -11,8 +11,8 @@ from collections.abc import Callable
 from typing import Any
 
 from ..iec import stdlib
-from ..iec.elementary import LONG_TIME_TYPES, SHORT_TO_LONG
 from ..iec.addresses import parse_address, part_type, partial_access, same_location
+from ..iec.elementary import LONG_TIME_TYPES, SHORT_TO_LONG
 from ..iec.spelling import did_you_mean
 from . import ast
 from . import types as t
@@ -116,7 +116,12 @@ class BodyChecker:
     def _expr(self, node: ast.Expr, expected: Type | None) -> Type:
         check = _EXPRESSION_CHECKS.get(type(node))
         ty = check(self, node, expected) if check is not None else self._binary(node)
-        if isinstance(ty, t.PointerType) and ty.implicit and type(node) in _ACCESSES and node is not self.keep_reference:
+        if (
+            isinstance(ty, t.PointerType)
+            and ty.implicit
+            and type(node) in _ACCESSES
+            and node is not self.keep_reference
+        ):
             node.deref = True  # a CODESYS REFERENCE TO stands for its target (lowered as r^)
             return ty.target
         return ty
@@ -487,7 +492,9 @@ class BodyChecker:
         if not (isinstance(target, t.PointerType) and target.implicit):
             self.report("ST-TYPE-MISMATCH", f"REF= binds a REFERENCE TO variable, not {target}", stmt.target)
         elif not isinstance(stmt.value, (ast.Name, ast.Member, ast.Index, ast.Deref)):
-            self.report("ST-NOT-LVALUE", "REF= needs a variable on its right: the one the reference will refer to", stmt.value)
+            self.report(
+                "ST-NOT-LVALUE", "REF= needs a variable on its right: the one the reference will refer to", stmt.value
+            )
         elif not t.same(target.target, value):
             self.report("ST-TYPE-MISMATCH", f"a {target} cannot refer to a {value}", stmt.value)
         else:

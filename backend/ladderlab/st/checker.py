@@ -287,7 +287,9 @@ class ProjectChecker:
         enum = t.EnumType(name)
         base = t.elementary(spec.base) if spec.base else None
         if spec.base and not (base is not None and t.in_family(base, "ANY_INT")):
-            checker.report("ST-TYPE-MISMATCH", f"an enumeration's base type must be an integer type, not {spec.base}", spec)
+            checker.report(
+                "ST-TYPE-MISMATCH", f"an enumeration's base type must be an integer type, not {spec.base}", spec
+            )
             base = None
         following = 0
         for value in spec.values:

@@ -55,6 +55,7 @@ def _long(result: str, store: str | None) -> tuple[str, str | None]:
     """The result type and store override of a time function whose operands are long forms."""
     return SHORT_TO_LONG[result], store and store.replace("ll__sat_time", "ll__sat_ltime")
 
+
 # name -> (argument categories, exact expression, result type, store override)
 _FIXED: dict[str, tuple[tuple[str, ...], str, str, str | None]] = {
     "ADD_TIME": (("time", "time"), "a0 + a1", "TIME", None),
