@@ -1265,8 +1265,9 @@ export const DIAGNOSTICS = {
       area: "st",
       example: "IF done THEN EXIT; END_IF;",
       example_language: "st",
-      example_note: "outside any FOR, WHILE or REPEAT.",
-      fix: "use EXIT only inside a loop; RETURN leaves the POU.",
+      example_note:
+        "outside any FOR, WHILE or REPEAT. The same code for CONTINUE (`IF skip THEN CONTINUE; END_IF;` outside a loop).",
+      fix: "use EXIT and CONTINUE only inside a loop; RETURN leaves the POU.",
       severity: "error",
       summary: "EXIT or CONTINUE is used outside a loop.",
     },
