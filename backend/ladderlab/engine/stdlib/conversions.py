@@ -66,7 +66,7 @@ def _to_integer_like(s: TypeRef, d: TypeRef) -> Impl:
         factor = max(s.elem.unit_ns, d.elem.unit_ns) // min(s.elem.unit_ns, d.elem.unit_ns)
         if s.elem.unit_ns > d.elem.unit_ns:
             exact = f"({exact}) * {factor}"
-            src_range = (src_range[0] * factor, src_range[1] * factor)  # type: ignore[index]
+            src_range = (src_range[0] * factor, src_range[1] * factor)  # type: ignore[index]  # time types have ranges
         else:
             exact = f"ll__idiv({exact}, {factor})"
     if d.category == "date":

@@ -25,7 +25,7 @@ from .build import HELPERS, Impl, finite_args
 from .functions import categories, reject, round_half_even
 
 TIME_MIN, TIME_MAX = value_range("TIME")  # type: ignore[misc]
-LTIME_MIN, LTIME_MAX = value_range("LTIME")  # type: ignore[misc]
+LTIME_MIN, LTIME_MAX = value_range("LTIME")  # type: ignore[misc]  # LTIME has a range
 
 
 def saturate_time(ms: int) -> int:
