@@ -7,8 +7,12 @@ from __future__ import annotations
 
 import pytest
 
+from ladderlab.interchange.plcopen.exporter import export_plcopen
+from ladderlab.interchange.plcopen.importer import import_plcopen
+from ladderlab.simulation.build import build_project
 from ladderlab.st.parser import parse_source
 from ladderlab.st.printer import print_source
+from ladderlab.st.project_text import source_to_project
 
 from .ed3_support import build, errors, program, scans
 
@@ -109,3 +113,15 @@ def test_sizeof_of_types_and_variables():
         "n1 := SIZEOF(a); n2 := SIZEOF(LINT); n3 := SIZEOF(lt); n4 := SIZEOF(INT);",
     )
     assert scans(text, 1, "n1", "n2", "n3", "n4") == [[16, 8, 8, 2]]
+
+
+def test_plcopen_round_trip_keeps_reference_to():
+    """TC6 XML has no REFERENCE TO: it travels as a derived type named by its ST text and reads back as one."""
+    project, _ = source_to_project(program(DECLS, BODY, TYPES), "refs")
+    data = export_plcopen(project)
+    assert b'<derived name="REFERENCE TO INT"' in data
+    imported = import_plcopen(data)
+    assert [d.format() for d in imported.diagnostics if d.severity == "error"] == []
+    sim = build_project(imported.project).simulation()
+    sim.cycle(1)
+    assert [sim.read("Main.x"), sim.read("Main.arr")] == [42 + 10 + 1, [1, 30, 3]]

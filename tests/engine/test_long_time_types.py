@@ -16,8 +16,12 @@ from hypothesis import strategies as st
 from ladderlab.iec.literals import decode_time_literal, encode_time_literal
 from ladderlab.iec.value_text import format_value, parse
 from ladderlab.iec.values import coerce
+from ladderlab.interchange.plcopen.exporter import export_plcopen
+from ladderlab.interchange.plcopen.importer import import_plcopen
+from ladderlab.simulation.build import build_project
 from ladderlab.st.parser import parse_expression
 from ladderlab.st.printer import print_expression
+from ladderlab.st.project_text import source_to_project
 
 from .ed3_support import errors, program, scans
 
@@ -148,3 +152,16 @@ def test_a_long_and_a_short_time_do_not_mix_without_a_conversion(body, message):
 def test_long_type_names_are_reserved_as_the_other_elementary_types():
     found = errors(program("LDT : INT;", "LDT := 1;"))
     assert any("ST-NAME" in e and "'LDT'" in e for e in found), found
+
+
+def test_plcopen_round_trip_of_the_long_types():
+    """TC6 XML 2.01 has no LTIME element: the long types travel as derived types and their literals as ST text."""
+    text = program(
+        "a : LTIME := LT#1us500ns; moment : LDT := LDT#2024-01-01-12:00:00; n : LINT;", "n := LTIME_TO_LINT(a);"
+    )
+    project, _ = source_to_project(text, "long")
+    imported = import_plcopen(export_plcopen(project))
+    assert [d.format() for d in imported.diagnostics if d.severity == "error"] == []
+    sim = build_project(imported.project).simulation()
+    sim.cycle(1)
+    assert [sim.read("Main.n"), sim.read("Main.moment")] == [1500, ns_since_epoch("2024-01-01 12:00:00")]

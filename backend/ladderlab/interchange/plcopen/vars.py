@@ -15,7 +15,7 @@ import xml.etree.ElementTree as ET
 from ...iec.elementary import canonical_type_name, elementary
 from ...st import ast
 from ...st.parser import parse_expression, parse_type
-from ...st.printer import print_expression
+from ...st.printer import print_expression, print_type
 from .xml_io import Reader, formatted_text, info, ladderlab_data, local, sub, text_content
 
 #: Elementary types the XSD names directly (TIME_OF_DAY and DATE_AND_TIME are spelled TOD and DT there).
@@ -97,6 +97,9 @@ def write_type(parent: ET.Element, spec: ast.TypeSpec) -> None:
             low, high = ("*", "*") if bounds is None else (print_expression(bounds[0]), print_expression(bounds[1]))
             sub(node, "dimension", {"lower": low, "upper": high})
         write_type(sub(node, "baseType"), spec.element)
+    elif isinstance(spec, ast.PointerType) and spec.kind == "REFERENCE TO":
+        # TC6 XML has no implicitly dereferenced reference: its ST text as a derived type, which reads back
+        sub(parent, "derived", {"name": print_type(spec)})
     elif isinstance(spec, ast.PointerType):
         write_type(sub(sub(parent, "pointer"), "baseType"), spec.target)
     elif isinstance(spec, ast.EnumType):
@@ -208,6 +211,10 @@ class VarReader:
             if length:
                 return ast.SizedType(upper, self.expression(length, choice))
             return ast.NamedType(upper)
+        if tag == "derived" and choice.get("name", "").upper().startswith("REFERENCE "):
+            spec = parse_type(choice.get("name", "")).ast
+            if isinstance(spec, ast.PointerType):
+                return spec
         if tag == "derived":
             return ast.NamedType(choice.get("name", ""))
         if tag == "array":
