@@ -125,3 +125,53 @@ def test_plcopen_round_trip_keeps_reference_to():
     sim = build_project(imported.project).simulation()
     sim.cycle(1)
     assert [sim.read("Main.x"), sim.read("Main.arr")] == [42 + 10 + 1, [1, 30, 3]]
+
+
+def test_a_reference_to_input_is_bound_by_the_call_and_stays_bound():
+    """CODESYS: ``inst(r := y)`` binds the REFERENCE TO input r to y; later calls without it keep the binding."""
+    text = """FUNCTION_BLOCK Inc
+VAR_INPUT r : REFERENCE TO INT; END_VAR
+r := r + 1;
+END_FUNCTION_BLOCK
+FUNCTION Twice : INT
+VAR_INPUT r : REFERENCE TO INT; END_VAR
+r := r * 2;
+Twice := r;
+END_FUNCTION
+PROGRAM Main
+VAR x : INT := 5; y : INT := 1; i : Inc; i2 : Inc; t : INT; END_VAR
+i.r REF= x;
+i();
+i2(r := y);
+i2();
+t := Twice(x);
+END_PROGRAM
+"""
+    x, y = 5, 1
+    expected = []
+    for _ in range(2):
+        x = (x + 1) * 2
+        y = y + 2
+        expected.append([x, y, x])
+    assert scans(text, 2, "x", "y", "t") == expected
+
+
+@pytest.mark.parametrize(
+    "argument, message",
+    [
+        ("y + 1", "ST-NOT-LVALUE: REFERENCE TO INT input r of Inc needs a variable"),
+        ("d", "input r of Inc: a REFERENCE TO INT cannot refer to a DINT"),
+    ],
+)
+def test_a_reference_to_input_needs_a_variable_of_its_type(argument, message):
+    text = f"""FUNCTION_BLOCK Inc
+VAR_INPUT r : REFERENCE TO INT; END_VAR
+r := r + 1;
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR y : INT; d : DINT; i : Inc; END_VAR
+i(r := {argument});
+END_PROGRAM
+"""
+    found = errors(text)
+    assert len(found) == 1 and message in found[0], found

@@ -489,6 +489,13 @@ def _call(node: ast.Call, ctx: PouContext) -> Expr:
     return _lift(node, call, before, ctx)
 
 
+def lower_input(value: ast.Expr, ctx: PouContext, ty: IrType) -> Expr:
+    """An input's value; a REFERENCE TO input given a variable (the checker bound it, CODESYS) gets a reference."""
+    if isinstance(ty, Reference) and not isinstance(value.ty, (t.PointerType, t.NullType)):
+        return address_of(value, ty, f"REF({print_expression(value)})", ctx)
+    return lower_to(value, ctx, ty)
+
+
 def address_of(value: ast.Expr, ty: IrType, text: str, ctx: PouContext) -> AddressOf:
     """A reference of type ``ty`` to the variable ``value`` (the checker refused temporaries); ``text`` shows it."""
     return AddressOf(lower_access(value, ctx), ty, text)
@@ -677,7 +684,7 @@ def user_call(node: ast.Call, ctx: PouContext) -> Call:
             in_outs.append(lower_access(value, ctx))
             continue
         initial = callee.initial(symbol.type, symbol.type_spec, symbol.init)
-        args.append(lower_to(value, ctx, ty) if value is not None else Const(initial, ty))
+        args.append(lower_input(value, ctx, ty) if value is not None else Const(initial, ty))
         types.append(ty)
     ctx.calls += 1
     result = callee.type_of(pou.return_type, pou.return_spec)

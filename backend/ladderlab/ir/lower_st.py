@@ -25,6 +25,7 @@ from .lower_expr import (
     lower_access,
     lower_en_eno,
     lower_expr,
+    lower_input,
     lower_to,
     refuse_unsupported_call,
     std_call,
@@ -175,7 +176,7 @@ def lower_fb_call(call: ast.Call, ctx: PouContext, origin: Origin) -> list[Stmt]
         if kind == "VAR_IN_OUT":
             inputs.append((name, lower_access(arg.value, ctx)))
         elif not arg.output:
-            inputs.append((name, lower_to(arg.value, ctx, pin_type)))
+            inputs.append((name, lower_input(arg.value, ctx, pin_type)))
         else:
             target = lower_access(arg.value, ctx)
             if not arg.negated and value_type(target.type) == value_type(pin_type):

@@ -214,8 +214,29 @@ def _input(checker: Any, arg: ast.Arg, param: Param, callee: str) -> None:
     if param.in_out:
         _in_out(checker, arg, param, callee)
         return
+    if isinstance(param.type, t.PointerType) and param.type.implicit:
+        _bind(checker, arg, param, callee)
+        return
     value = checker.expr(arg.value, param.type)
     assignable_or_report(checker, param.type, value, arg.value, f"input {param.name} of {callee}")
+
+
+def _bind(checker: Any, arg: ast.Arg, param: Param, callee: str) -> None:
+    """A REFERENCE TO input given a variable is bound to it for the call (CODESYS), as ``REF=`` binds."""
+    value = checker.expr(arg.value)
+    reference: t.PointerType = param.type  # type: ignore[assignment]  # _input checked it is one
+    if value is ERROR:
+        return
+    if not isinstance(arg.value, _WRITABLE):
+        checker.report("ST-NOT-LVALUE", f"{reference} input {param.name} of {callee} needs a variable", arg.value)
+    elif not t.same(reference.target, value):
+        checker.report(
+            "ST-TYPE-MISMATCH", f"input {param.name} of {callee}: a {reference} cannot refer to a {value}", arg.value
+        )
+    else:
+        problem = unreferable(checker, arg.value)
+        if problem is not None:
+            checker.report("ST-REF", f"input {param.name} of {callee} cannot refer to {problem}", arg.value)
 
 
 def _in_out(checker: Any, arg: ast.Arg, param: Param, callee: str) -> None:
