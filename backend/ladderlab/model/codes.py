@@ -111,7 +111,6 @@ _TABLE: list[tuple[str, str, Severity, str]] = [
     ("diagram", "MISSING-OPERAND", "error", "An element has no operand."),
     ("diagram", "NOT-BOOL", "error", "An element that carries power or a BOOL value is given another type."),
     ("diagram", "INPUT-WRITE", "error", "A coil or output writes an input of the POU."),
-    ("diagram", "BIT-TARGET", "error", "A coil or output writes a single bit of a variable."),
     ("diagram", "UNKNOWN-CALL", "error", "A box calls a function or function block that does not exist."),
     ("diagram", "PLANT", "error", "A box calls a plant (plants run in the plant task, never called)."),
     ("diagram", "NOT-CALLABLE", "error", "A box calls a program."),
@@ -126,6 +125,7 @@ _TABLE: list[tuple[str, str, Severity, str]] = [
     ("diagram", "DUPLICATE-ID", "error", "Two networks or elements of a POU have the same id."),
     # ladder diagram (ir/lower_ld.py)
     ("ld", "LD-PARALLEL", "error", "A parallel branch has fewer than two branches."),
+    ("ld", "LD-BIT-TARGET", "error", "A box output writes a single bit or part of a variable."),
     ("ld", "LD-CONTROL-POSITION", "error", "A jump or return is not at the end of a branch that ends the rung."),
     ("ld", "LD-UNKNOWN-PIN", "error", "A box pin is connected that the box does not have."),
     ("ld", "LD-BOX-POWER", "error", "A box without EN/ENO cannot pass the rung's power flow."),
