@@ -51,6 +51,7 @@ import { InstancePicker, OnlineActions } from "./InstancePicker";
 import { LOADING } from "./lazy";
 import { useHidden } from "./layout";
 import { KindPicker, PouActions } from "./PouActions";
+import { TestFileActions } from "../tests/TestFileActions";
 import { GlobalsView, TasksView, TypesView, useDeclarableTypes } from "./ProjectParts";
 import { isProjectPart, PROJECT_PARTS, type ProjectPart } from "./parts";
 import { typeRows } from "./types";
@@ -224,6 +225,7 @@ function TestFilesTree() {
                     </span>
                   ) : null}
                 </button>
+                <TestFileActions name={t.name} />
               </li>
             );
           })}
