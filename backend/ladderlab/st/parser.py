@@ -65,6 +65,7 @@ _SOFT_KEYWORDS = {
     "NON_RETAIN",
     "PERSISTENT",
     "POINTER",
+    "REFERENCE",
     "AND",
     "OR",
     "XOR",

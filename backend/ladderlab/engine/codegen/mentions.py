@@ -95,7 +95,7 @@ def nested(s: ir.Stmt) -> Iterator[list[ir.Stmt]]:
         yield s.body
 
 
-_LEAVES = (ir.Assign, ir.Probe, ir.FbCall, ir.FnCall, ir.Exit, ir.Return, ir.Jump)  # no nested statements
+_LEAVES = (ir.Assign, ir.Probe, ir.FbCall, ir.FnCall, ir.Exit, ir.Continue, ir.Return, ir.Jump)  # no nested statements
 
 
 def walk(statements: list[ir.Stmt]) -> Iterator[ir.Stmt]:
