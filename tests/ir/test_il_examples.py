@@ -215,6 +215,35 @@ def test_informal_call_does_not_use_the_accumulator_il31():
     assert sim.read("P.r") == 500
 
 
+LIM_RET = """
+FUNCTION Lim : INT
+  VAR_INPUT val, lo, hi : INT; END_VAR
+      LD      val
+      ST      Lim
+      LT      lo
+      JMPCN   NOT_LOW
+      LD      lo
+      ST      Lim
+      RET
+NOT_LOW:
+      LD      val
+      GT      hi
+      RETCN
+      LD      hi
+      ST      Lim
+END_FUNCTION
+"""
+
+
+@pytest.mark.parametrize("count, result", [(50, 101), (500, 501), (2000, 1001)])
+def test_the_value_stored_in_the_function_name_is_the_new_cr_after_ret_or_the_end_il32(count, result):
+    """IL-32: inside an IL function ``ST Lim`` sets the return value; ``RET``/``RETCN`` and the physical end
+    return it, and it becomes the caller's CR (``ADD 1`` works on it): 50 -> 100 (RET), 500 -> 500 (RETCN),
+    2000 -> 1000 (end), each plus 1."""
+    sim = scan(program("count, r : INT;", "LD count\nLim 100, 1000\nADD 1\nST r", LIM_RET), count=count)
+    assert sim.read("P.r") == result
+
+
 EX_34_STYLES = {
     "instance memory": """
   LD   in1
