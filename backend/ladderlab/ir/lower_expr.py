@@ -34,7 +34,7 @@ from ..st import types as t
 from ..st.context_typing import FoldError, fold, literal_only
 from ..st.printer import print_expression
 from ..st.rules import EnumValue
-from ..st.symbols import PouInfo, Symbol
+from ..st.symbols import THIS, PouInfo, Symbol
 from .context import PouContext
 from .lower_types import LoweringError, byte_size, engine_value, ir_default
 from .nodes import AddressOf, Assign, Binary, Call, Const, Convert, Deref, Expr, FnCall, Index, Member, Unary, Var
@@ -250,6 +250,8 @@ def lower_access(node: ast.Expr, ctx: PouContext) -> Var:
         return _index(node, ctx)
     if isinstance(node, ast.Deref):
         base = lower_access(node.base, ctx)
+        if isinstance(base.type, FbInstance):  # ``THIS^`` in a method: THIS is already the instance (st/methods.py)
+            return base
         if not isinstance(base.type, Reference):
             raise LoweringError(None)
         return Var(base.scope, base.name, base.type.target, (*base.path, Deref()))
@@ -630,11 +632,15 @@ def user_call(node: ast.Call, ctx: PouContext) -> Call:
     callee = ctx.types_for(pou.name)
     parameters = pou.parameters("VAR_INPUT", "VAR_IN_OUT")
     given: dict[str, ast.Expr] = {}
+    in_outs: list[Var] = []
+    if pou.method is not None:  # the instance it is called on; a bare ``M()`` in a method: the caller's own
+        instance = node.callee.base if isinstance(node.callee, ast.Member) else None
+        in_outs.append(lower_access(instance, ctx) if instance is not None else ctx.var_for(ctx.info.symbols[THIS]))
     for position, arg in enumerate(_arguments(node)):
         if arg.name is None and position >= len(parameters):
             raise LoweringError(None)
         given[(arg.name or parameters[position].name).upper()] = arg.value
-    args, types, in_outs = [], [], []
+    args, types = [], []
     for symbol in parameters:
         ty = callee.type_of(symbol.type, symbol.type_spec)
         value = given.get(symbol.name.upper())

@@ -76,6 +76,8 @@ def _lower_project(project: Project, checked: CheckResult | None) -> LoweringRes
         info = checked.pou(pou.name)
         if info is not None and info.name == pou.name:  # not a duplicate (reported by the checker)
             pous[pou.name.upper()] = lower_pou(pou, info, checked, diagnostics, image)
+            for method in info.methods.values():
+                pous[method.name.upper()] = lower_pou(None, method, checked, diagnostics, image)
     instances, tasks, access = lower_configuration(checked, diagnostics, image)
     diagrams = [(pou.name, pou.body) for pou in project.pous if not isinstance(pou.body, str)]
     program = Program(pous, globals_ + list(image.values()), tasks, instances, access, ProjectPlaces(diagrams))
@@ -92,14 +94,15 @@ def lower_globals(checked: CheckResult, diagnostics: list[Diagnostic]) -> list[S
 
 
 def lower_pou(
-    pou: ModelPou,
+    pou: ModelPou | None,
     info: PouInfo,
     checked: CheckResult,
     diagnostics: list[Diagnostic],
     image: dict[str, Slot] | None = None,
 ) -> Pou:
     """One POU: a slot per declared variable (not VAR_EXTERNAL), the function result, the body blocks.
-    ``image`` collects the addresses the body uses without a declaration (PouContext.direct)."""
+    ``image`` collects the addresses the body uses without a declaration (PouContext.direct). ``pou`` None: a
+    METHOD (``info.method``), lowered as a function of ST whose in-out ``THIS`` is its instance."""
     ctx = PouContext(checked, info, diagnostics, image)
     for symbol in info.symbols.values():
         if symbol.var_class != "VAR_EXTERNAL":
@@ -114,20 +117,24 @@ def lower_pou(
             ctx.add_slot(Slot(ctx.name, "VAR_OUTPUT", return_type, initial))
         except LoweringError as error:
             ctx.report_error(error, file=f"{info.name}/return_type")
+    elif info.method is not None:  # a method without a value: the engine's functions all return one, never read
+        return_type = BOOL
+        ctx.add_slot(Slot(ctx.name, "VAR_OUTPUT", BOOL, False, hidden=True))
     preamble = edge_preamble(ctx)
-    lower = LOWER_BODY.get(pou.language)
+    language, plant = (pou.language, pou.kind == "plant") if pou is not None else ("st", False)
+    lower = LOWER_BODY.get(language)
     blocks: list[Block] = []
     if lower is None:
-        ctx.report("IR-UNSUPPORTED", f"{pou.language.upper()} POUs cannot be run yet")
+        ctx.report("IR-UNSUPPORTED", f"{language.upper()} POUs cannot be run yet")
     else:
         blocks = lower(pou, ctx)
     if preamble:
-        if pou.language == "st" and blocks:
+        if language == "st" and blocks:
             blocks[0].statements[:0] = preamble
         else:
             blocks.insert(0, Block(preamble, Origin(ctx.name)))
     kind = _KIND[info.kind]
-    return Pou(ctx.name, kind, ctx.slots, blocks, return_type, pou.language, pou.kind == "plant")  # type: ignore[arg-type]
+    return Pou(ctx.name, kind, ctx.slots, blocks, return_type, language, plant)  # type: ignore[arg-type]
 
 
 def _slot(symbol: Symbol, ctx: PouContext, file: str) -> Slot | None:

@@ -18,6 +18,7 @@ from . import types as t
 from .calls import check_call
 from .cases import check_case
 from .context_typing import default_type, settle, untyped_leaves, untyped_result
+from .methods import this_type, unknown_member_hint
 from .rules import EnumValue, assignable_or_report, constant_value, root_name
 from .symbols import CheckResult, PouInfo, Symbol
 from .types import ERROR, Type
@@ -57,6 +58,8 @@ class BodyChecker:
         upper = name.upper()
         if self.pou is not None and upper in self.pou.symbols:
             return self.pou.symbols[upper]
+        if self.pou is not None and self.pou.method is not None and upper in self.pou.method.owner.symbols:
+            return self.pou.method.owner.symbols[upper]  # a method works on its instance's variables
         return self.result.globals.get(upper)
 
     def enum_values(self, name: str) -> list[EnumValue]:
@@ -100,6 +103,9 @@ class BodyChecker:
         return check(self, node, expected) if check is not None else self._binary(node)
 
     def _deref(self, node: ast.Deref) -> Type:
+        this = this_type(self, node)
+        if this is not None:
+            return this
         base = self.expr(node.base)
         if isinstance(base, t.PointerType):
             return base.target
@@ -135,7 +141,7 @@ class BodyChecker:
         if symbol is not None:
             node.ref = symbol
             return symbol.type
-        if self.pou is not None and self.pou.kind == "FUNCTION" and node.name.upper() == self.pou.name.upper():
+        if self.pou is not None and self.pou.kind == "FUNCTION" and node.name.upper() == _result_name(self.pou):
             node.ref = self.pou
             return self.pou.return_type or ERROR
         program = self.result.pous.get(node.name.upper())
@@ -228,11 +234,13 @@ class BodyChecker:
             )
             return ERROR
         symbol = base.pou.symbols.get(upper)
+        if symbol is None and upper in base.pou.methods:
+            self.report("ST-NOT-CALLABLE", f"'{node.name}' is a method of {base.name}: call it (add the ( ))", node)
+            return ERROR
         if symbol is None:
-            pins = [s.name for s in base.pou.parameters()]
             self.report(
                 "ST-UNKNOWN-MEMBER",
-                f"{base.name} has no input or output '{node.name}'" + did_you_mean(node.name, pins),
+                f"{base.name} has no input or output '{node.name}'" + unknown_member_hint(base.pou, node.name),
                 node,
             )
             return ERROR
@@ -546,6 +554,11 @@ def _implicit_in(node: ast.Expr) -> Symbol | None:
         node = node.base
     ref = getattr(node, "ref", None)
     return ref if isinstance(ref, Symbol) and ref.implicit in SFC_PUBLIC else None
+
+
+def _result_name(pou: PouInfo) -> str:
+    """The name a function's (or a method's) body assigns its result to."""
+    return (pou.method.name if pou.method is not None else pou.name).upper()
 
 
 def _is_output(node: ast.Member) -> bool:

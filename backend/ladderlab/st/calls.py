@@ -16,6 +16,7 @@ from ..iec.spelling import did_you_mean
 from . import ast
 from . import types as t
 from .context_typing import default_type, untyped_leaves
+from .methods import check_method_call, method_callee
 from .printer import print_expression
 from .rules import assignable_or_report, root_name
 from .symbols import PouInfo, Symbol
@@ -34,6 +35,9 @@ class Param:
 
 def check_call(checker: Any, node: ast.Call, statement: bool) -> Type:
     callee = node.callee
+    method = method_callee(checker, callee)
+    if method is not None:
+        return check_method_call(checker, node, *method)
     if not isinstance(callee, ast.Name):
         return _instance_call(checker, node, checker.expr(callee), statement)
     upper = callee.name.upper()

@@ -22,6 +22,7 @@ from .body import BodyChecker
 from .configuration import check_configuration, configuration_globals
 from .il_check import check_il_body
 from .il_parser import IlBody, parse_il
+from .methods import check_method_body, declare_methods
 from .parser import (
     keywords,
     parse_declarations,
@@ -110,8 +111,15 @@ class ProjectChecker:
             info = self.result.pous.get(pou.name.upper())
             if pou.language == "sfc" and info is not None and info.name == pou.name:
                 declare_implicit(pou, info, self.result.diagnostics)
+        methods = []
+        for pou in self.project.pous:
+            info = self.result.pous.get(pou.name.upper())
+            if pou.methods and info is not None and info.name == pou.name:
+                methods += declare_methods(self, info, pou.methods)
         for pou in self.project.pous:
             self._check_initial_values(pou)
+        for info, method in methods:
+            check_method_body(self, info, method)
         for pou in self.project.pous:
             info = self.result.pous.get(pou.name.upper())
             if info is not None and info.language in ("st", "il") and bodies.get(pou.name) is not None:

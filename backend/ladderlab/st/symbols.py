@@ -62,10 +62,32 @@ class PouInfo:
     plant: bool = False  # a PROGRAM that models the process: run by the plant task, never called
     actions: dict[str, list[ast.Stmt] | None] = field(default_factory=dict)
     accumulators: list[Symbol] = field(default_factory=list)  # IL POUs: the hidden current-result variables
+    methods: dict[str, PouInfo] = field(default_factory=dict)  # a function block's METHODs by upper-case name
+    method: MethodInfo | None = None  # set on a METHOD: its FB, name as written and modifiers
 
     def parameters(self, *classes: str) -> list[Symbol]:
-        wanted = classes or PARAMETER_CLASSES
-        return [s for s in self.symbols.values() if s.var_class in wanted]
+        """The parameters of ``classes`` (default: all) in declaration order; a METHOD's ``THIS`` is none."""
+        wanted, this = classes or PARAMETER_CLASSES, self.this()
+        return [s for s in self.symbols.values() if s.var_class in wanted and s is not this]
+
+    def this(self) -> Symbol | None:
+        """A METHOD's hidden first in-out ``THIS``: the instance it is called on (st/methods.py)."""
+        return self.symbols.get(THIS) if self.method is not None else None
+
+
+THIS = "THIS"
+
+
+@dataclass(eq=False)
+class MethodInfo:
+    """What makes a FUNCTION-like PouInfo a METHOD (``<FB>.<name>``): the function block it belongs to, its name
+    as written, who may call it (PUBLIC, PRIVATE, PROTECTED, INTERNAL), FINAL and ABSTRACT."""
+
+    owner: PouInfo
+    name: str
+    access: str = "PUBLIC"
+    final: bool = False
+    abstract: bool = False
 
 
 @dataclass
@@ -81,4 +103,11 @@ class CheckResult:
         return not any(d.severity == "error" for d in self.diagnostics)
 
     def pou(self, name: str) -> PouInfo | None:
-        return self.pous.get(name.upper())
+        """A POU by name, or a METHOD by ``<FB>.<method>``."""
+        upper = name.upper()
+        found = self.pous.get(upper)
+        if found is None and "." in upper:
+            owner, _, method = upper.partition(".")
+            fb = self.pous.get(owner)
+            found = fb.methods.get(method) if fb is not None else None
+        return found

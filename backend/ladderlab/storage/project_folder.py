@@ -110,6 +110,8 @@ def pou_file(pou: Pou) -> tuple[str, str]:
         suffix = ".plant.st" if pou.kind == "plant" else f".{pou.language}"
         return f"{POUS_DIR}/{pou.name}{suffix}", compose_pou_text(pou)
     data = pou.model_dump(mode="json", by_alias=True, exclude_none=True)
+    if not data["methods"]:  # only FBs with methods carry the key: other POUs' files stay as they were
+        del data["methods"]
     return f"{POUS_DIR}/{pou.name}.{pou.language}.json", dump_json(data)
 
 

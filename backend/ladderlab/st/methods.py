@@ -1,0 +1,198 @@
+"""METHODs of function blocks (IEC 61131-3 ed. 3, 6.6.5; CODESYS): declaring, checking bodies, checking calls.
+
+A method ``M`` of the FB ``F`` is checked as a function ``F.M`` (``PouInfo`` with ``method`` set) whose hidden
+first in-out ``THIS`` is the instance it is called on: the method's own variables are a function's (fresh in
+every call), and a name it does not declare is a variable of ``F`` reached through ``THIS`` (ir/context.py).
+A call ``inst.M(a := 1)`` passes ``inst`` as ``THIS``; ``THIS^`` inside a method is that instance.
+"""
+
+from __future__ import annotations
+
+import copy
+from typing import Any
+
+from ..iec.spelling import did_you_mean
+from ..model.project import Method
+from . import ast
+from . import types as t
+from .parser import parse_declarations, parse_statements, parse_type
+from .printer import print_expression
+from .symbols import THIS, MethodInfo, PouInfo, Symbol
+from .types import ERROR, VOID, Type
+
+# A method's variables are a function's: no memory between calls, so no VAR_EXTERNAL-free restriction beyond it.
+_ALLOWED = {"VAR", "VAR_TEMP", "VAR_INPUT", "VAR_IN_OUT", "VAR_EXTERNAL"}
+
+
+def method_file(fb: str, method: str, part: str) -> str:
+    """The diagnostics' file of a method's declarations, body or return type: ``<FB>.<method>/<part>``."""
+    return f"{fb}.{method}/{part}"
+
+
+def declare_methods(checker: Any, fb: PouInfo, methods: list[Method]) -> list[tuple[PouInfo, Method]]:
+    """Register and declare the methods of ``fb`` (``checker``: the ProjectChecker); their bodies are parsed and
+    checked later by ``check_method_body``, once every POU and method is declared."""
+    declared = []
+    for method in methods:
+        report = checker._reporter(method_file(fb.name, method.name, "declarations"), f"{fb.name}.{method.name}")
+        upper = method.name.upper()
+        if fb.kind != "FUNCTION_BLOCK":
+            report("ST-DECL", f"only a function block has methods, not a {fb.kind.lower().replace('_', ' ')}", None)
+            continue
+        from .checker import check_identifier  # the checker imports this module
+
+        check_identifier(method.name, None, report)
+        if upper in fb.methods:
+            report("ST-DUPLICATE", f"{fb.name} has two methods called '{method.name}'", None)
+            continue
+        if upper in fb.symbols:
+            report("ST-DUPLICATE", f"'{method.name}' is both a variable and a method of {fb.name}", None)
+            continue
+        info = PouInfo(f"{fb.name}.{method.name}", "FUNCTION", "st", None)
+        info.method = MethodInfo(fb, method.name, method.access, method.final, method.abstract)
+        info.symbols[THIS] = Symbol(THIS, "VAR_IN_OUT", t.FbType(fb.name, pou=fb), ast.NamedType(fb.name), pou=info.name)
+        fb.methods[upper] = info
+        _declare(checker, info, method, report)
+        declared.append((info, method))
+    return declared
+
+
+def _declare(checker: Any, info: PouInfo, method: Method, report) -> None:
+    from .body import BodyChecker
+
+    fb = info.method.owner
+    if method.return_type:
+        file = method_file(fb.name, method.name, "return_type")
+        parsed = parse_type(method.return_type, file=file, pou=info.name)
+        checker.result.diagnostics += parsed.diagnostics
+        if parsed.ast is not None:
+            info.return_spec = parsed.ast
+            where = checker._reporter(file, info.name)
+            info.return_type = checker.resolve(parsed.ast, BodyChecker(checker.result, info, where))
+            if isinstance(info.return_type, t.FbType):
+                where("ST-DECL", f"a method cannot return a function block instance ({info.return_type.name})", None)
+                info.return_type = ERROR
+        else:
+            info.return_type = ERROR
+    parsed = parse_declarations(method.declarations, file=method_file(fb.name, method.name, "declarations"), pou=info.name)
+    checker.result.diagnostics += parsed.diagnostics
+    body_checker = BodyChecker(checker.result, info, report)
+    for block in parsed.ast or []:
+        if block.kind == "VAR_OUTPUT":
+            report("ST-DECL", "VAR_OUTPUT in a method is not supported yet: return the value, or use VAR_IN_OUT", block)
+            continue
+        if block.kind not in _ALLOWED:
+            report("ST-DECL", f"{block.kind} is not allowed in a method", block)
+            continue
+        checker.declare_block(block, info.symbols, body_checker, info)
+    for symbol in info.symbols.values():
+        if symbol.name.upper() in fb.symbols and symbol.var_class != "VAR_EXTERNAL" and symbol.name != THIS:
+            report(
+                "ST-DUPLICATE",
+                f"'{symbol.name}' is also a variable of {fb.name}: the method's own would hide it",
+                symbol,
+                severity="warning",
+            )
+
+
+def check_method_body(checker: Any, info: PouInfo, method: Method) -> None:
+    """Parse and check a method's statements; an ABSTRACT method has none."""
+    from .body import BodyChecker
+
+    fb = info.method.owner
+    file = method_file(fb.name, method.name, "body")
+    report = checker._reporter(file, info.name)
+    parsed = parse_statements(method.body, file=file, pou=info.name)
+    checker.result.diagnostics += parsed.diagnostics
+    if parsed.ast is None:
+        return
+    if method.abstract:
+        if parsed.ast:
+            report("ST-DECL", f"the ABSTRACT method {method.name} has no body: a derived FB implements it", None)
+        return
+    body = BodyChecker(checker.result, info, report)
+    body.statements(parsed.ast)
+    info.body = parsed.ast
+    fb.calls |= {name for name in info.calls if name != fb.name.upper()}
+
+
+def find_method(fb: PouInfo, name: str) -> PouInfo | None:
+    return fb.methods.get(name.upper())
+
+
+def method_callee(checker: Any, callee: ast.Expr) -> tuple[PouInfo, ast.Expr | None] | None:
+    """The method a call's callee names, with the instance it is called on (None: the caller's own ``THIS``),
+    or None when the callee is no method: ``inst.M``, ``THIS^.M`` or, inside a method, a bare ``M``."""
+    caller = checker.pou
+    if isinstance(callee, ast.Name):
+        own = caller.method.owner if caller is not None and caller.method is not None else None
+        if own is not None and checker.lookup(callee.name) is None:
+            found = find_method(own, callee.name)
+            return (found, None) if found is not None else None
+        return None
+    if not isinstance(callee, ast.Member):
+        return None
+    base = callee.base
+    if not isinstance(base, (ast.Name, ast.Member, ast.Index, ast.Deref)):
+        return None
+    from .body import BodyChecker
+
+    silent = BodyChecker(checker.result, caller, lambda *args, **kwargs: None)  # typed for real once it is a method
+    base_type = silent.expr(copy.deepcopy(base))
+    if not isinstance(base_type, t.FbType) or base_type.pou is None:
+        return None
+    found = find_method(base_type.pou, callee.name)
+    if found is None:
+        return None
+    checker.expr(base)
+    return found, base
+
+
+def _is_this(node: ast.Expr, caller: PouInfo | None) -> bool:
+    return isinstance(node, ast.Name) and node.name.upper() == THIS and caller is not None and caller.method is not None
+
+
+def this_type(checker: Any, node: ast.Deref) -> Type | None:
+    """``THIS^`` inside a method: the instance it was called on (None: not ``THIS^``)."""
+    caller = checker.pou
+    if not _is_this(node.base, caller):
+        return None
+    symbol = caller.symbols[THIS]
+    node.base.ref, node.base.ty = symbol, symbol.type
+    return symbol.type
+
+
+def check_method_call(checker: Any, node: ast.Call, method: PouInfo, instance: ast.Expr | None) -> Type:
+    """``inst.M(...)``: whether the caller may call it (its access specifier), then its arguments as a function's."""
+    from .calls import Param, check_arguments
+
+    info = method.method
+    node.ref = method
+    caller = checker.pou
+    caller_fb = None
+    if caller is not None:
+        caller_fb = caller.method.owner if caller.method is not None else caller
+    if info.access in ("PRIVATE", "PROTECTED") and caller_fb is not info.owner:
+        what = "its own function block" if info.access == "PRIVATE" else "its function block and those derived from it"
+        checker.report(
+            "ST-NOT-ACCESSIBLE",
+            f"the method {info.owner.name}.{info.name} is {info.access}: only {what} may call it",
+            node.callee,
+        )
+    if info.abstract:
+        checker.report(
+            "ST-NOT-CALLABLE", f"the method {info.owner.name}.{info.name} is ABSTRACT: it has no body to run", node
+        )
+    if instance is not None and isinstance(node.callee, ast.Member):
+        node.callee.ref = method
+    if caller is not None:
+        caller.calls.add(info.owner.name.upper())
+    inputs = [Param(s.name, s.type, s.var_class == "VAR_IN_OUT") for s in method.parameters("VAR_INPUT", "VAR_IN_OUT")]
+    name = f"{info.owner.name}.{info.name}" if instance is None else f"{print_expression(instance)}.{info.name}"
+    check_arguments(checker, node, name, inputs, [], function=True)
+    return method.return_type or VOID
+
+
+def unknown_member_hint(fb: PouInfo, name: str) -> str:
+    """A did-you-mean over an FB's pins and methods."""
+    return did_you_mean(name, [s.name for s in fb.parameters()] + [m.method.name for m in fb.methods.values()])
