@@ -653,5 +653,7 @@ def user_call(node: ast.Call, ctx: PouContext) -> Call:
         args.append(lower_to(value, ctx, ty) if value is not None else Const(initial, ty))
         types.append(ty)
     ctx.calls += 1
+    if pou.method is not None and pou.return_type is None:  # a method without a value (lower_project.lower_pou)
+        return Call(pou.name.upper(), tuple(args), tuple(types), BOOL, True, tuple(in_outs))
     result = callee.type_of(pou.return_type, pou.return_spec)
     return Call(pou.name.upper(), tuple(args), tuple(types), result, True, tuple(in_outs))

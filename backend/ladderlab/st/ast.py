@@ -483,6 +483,18 @@ class Sfc:
 
 
 @dataclass(slots=True)
+class MethodDecl:
+    """``METHOD [PUBLIC|PRIVATE|PROTECTED|INTERNAL] [FINAL|ABSTRACT] name [: type] ... END_METHOD``."""
+
+    name: str
+    modifiers: list[str]  # upper case, as written
+    return_type: TypeSpec | None
+    var_blocks: list[VarBlock]
+    body: list[Stmt]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
 class Pou:
     kind: str  # PROGRAM, FUNCTION_BLOCK, FUNCTION
     name: str
@@ -491,6 +503,10 @@ class Pou:
     body: list[Stmt]
     span: Span = _span()
     sfc: Sfc | None = None  # a body written in textual SFC (``body`` is then empty)
+    methods: list[MethodDecl] = field(default_factory=list)  # a function block's METHODs
+    modifier: str | None = None  # a function block's FINAL or ABSTRACT
+    extends: str | None = None  # the function block it EXTENDS
+    implements: list[str] = field(default_factory=list)  # the INTERFACEs it IMPLEMENTS
 
 
 @dataclass(slots=True)

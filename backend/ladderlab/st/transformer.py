@@ -142,12 +142,46 @@ class AstBuilder(Transformer):
     # ------------------------------------------------------------ POUs and types
     def pou(self, c):
         kind = c[0].type
+        if kind == "FUNCTION_BLOCK":
+            return self._function_block(c)
         return_type = c[2] if kind == "FUNCTION" else None
         rest = c[3:-1] if kind == "FUNCTION" else c[2:-1]
         blocks = [x for x in rest if isinstance(x, ast.VarBlock)]
         sfc = next((x for x in rest if isinstance(x, ast.Sfc)), None)
         body = [x for x in rest if not isinstance(x, (ast.VarBlock, ast.Sfc))]
         return ast.Pou(kind, str(c[1]), return_type, blocks, body, span_of(c), sfc)
+
+    def _function_block(self, c):
+        """``FUNCTION_BLOCK [FINAL|ABSTRACT] name [EXTENDS base] [IMPLEMENTS i, ...] VARs METHODs body``."""
+        modifier, name, extends, implements = c[1], str(c[2]), c[3], c[4] or []
+        rest = c[5:-1]
+        blocks = [x for x in rest if isinstance(x, ast.VarBlock)]
+        methods = [x for x in rest if isinstance(x, ast.MethodDecl)]
+        sfc = next((x for x in rest if isinstance(x, ast.Sfc)), None)
+        body = [x for x in rest if not isinstance(x, (ast.VarBlock, ast.Sfc, ast.MethodDecl))]
+        pou = ast.Pou("FUNCTION_BLOCK", name, None, blocks, body, span_of(c), sfc, methods, modifier, extends)
+        pou.implements = implements
+        return pou
+
+    def fb_modifier(self, c):
+        return c[0].type
+
+    def fb_extends(self, c):
+        return str(c[1])
+
+    def fb_implements(self, c):
+        return [str(x) for x in c[1:]]
+
+    def method_modifier(self, c):
+        return c[0].type
+
+    def method_decl(self, c):
+        modifiers = [x for x in c[1:] if isinstance(x, str) and not isinstance(x, Token)]
+        name_at = 1 + len(modifiers)
+        rest = c[name_at + 2 : -1]
+        blocks = [x for x in rest if isinstance(x, ast.VarBlock)]
+        body = [x for x in rest if not isinstance(x, ast.VarBlock)]
+        return ast.MethodDecl(str(c[name_at]), modifiers, c[name_at + 1], blocks, body, span_of(c))
 
     def sfc(self, c):
         return ast.Sfc(list(c), span_of(c))

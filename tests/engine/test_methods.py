@@ -1,0 +1,248 @@
+"""METHODs of function blocks (issue 25, item 5; IEC 61131-3 ed. 3, 6.6.5; CODESYS): inputs, in-outs, local
+variables, a result in expressions and as a statement, ``THIS^``, the access specifiers checked at compile time,
+ABSTRACT; run scan by scan. Expected values are worked out by hand from the program text and the standard's rules:
+a method's VAR is fresh in every call (it has no memory of its own, like a function), the instance's variables keep
+their values between calls and scans, and each instance has its own.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from ladderlab.simulation.build import build_project
+from ladderlab.st.project_text import source_to_project
+from ladderlab.storage.workspace import Workspace
+
+COUNTER = """
+FUNCTION_BLOCK Counter
+VAR_INPUT step : INT := 1; END_VAR
+VAR count : INT; END_VAR
+METHOD PUBLIC Add : INT
+VAR_INPUT n : INT; END_VAR
+VAR tmp : INT; END_VAR
+tmp := tmp + n;
+count := count + tmp * step;
+Add := count;
+END_METHOD
+METHOD Twice : INT
+Add(1);
+Twice := THIS^.Add(n := 1);
+END_METHOD
+METHOD PRIVATE Clear
+count := 0;
+END_METHOD
+METHOD ClearAbove
+VAR_INPUT limit : INT; END_VAR
+IF count > limit THEN
+    Clear();
+END_IF;
+END_METHOD
+END_FUNCTION_BLOCK
+"""
+
+
+def build(text: str):
+    project, diagnostics = source_to_project(text, "oo")
+    assert project is not None and [d.format() for d in diagnostics] == []
+    return build_project(project)
+
+
+def run(text: str):
+    result = build(text)
+    assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
+    return result.simulation()
+
+
+def errors(text: str) -> list[tuple[str, str | None, int | None, int | None, str]]:
+    return [
+        (d.code, d.file, d.line, d.column, d.message)
+        for d in build(text).diagnostics
+        if d.severity == "error"
+    ]
+
+
+def test_a_method_call_in_an_expression_and_as_a_statement_scan_by_scan():
+    sim = run(
+        COUNTER
+        + "PROGRAM Main\nVAR c : Counter; r : INT; q : INT; END_VAR\n"
+        + "r := c.Add(n := 5);\nq := c.Twice();\nc.Add(2);\nEND_PROGRAM\n"
+    )
+    count = 0
+    for _ in range(3):
+        sim.cycle(1)
+        count += 5  # tmp starts at 0 in every call: Add(n) adds n * step
+        r = count
+        count += 1 + 1  # Twice: Add(1) then THIS^.Add(1)
+        q = count
+        count += 2
+        assert (sim.read("Main.r"), sim.read("Main.q"), sim.read("Main.c.count")) == (r, q, count)
+
+
+def test_each_instance_has_its_own_variables_and_the_method_sees_the_instance_inputs():
+    sim = run(
+        COUNTER
+        + "PROGRAM Main\nVAR a : Counter; b : Counter := (step := 10); END_VAR\n"
+        + "a.Add(1);\nb.Add(1);\nb.Add(n := 2);\nEND_PROGRAM\n"
+    )
+    sim.cycle(2)
+    assert (sim.read("Main.a.count"), sim.read("Main.b.count")) == (2 * 1, 2 * (10 + 20))
+
+
+def test_a_private_method_is_called_by_a_sibling_method():
+    sim = run(
+        COUNTER
+        + "PROGRAM Main\nVAR c : Counter; END_VAR\n"
+        + "c.Add(4);\nc.ClearAbove(limit := 10);\nEND_PROGRAM\n"
+    )
+    expected = []
+    count = 0
+    for _ in range(4):
+        count += 4
+        if count > 10:
+            count = 0
+        expected.append(count)
+    assert [(sim.cycle(1), sim.read("Main.c.count"))[1] for _ in range(4)] == expected == [4, 8, 0, 4]
+
+
+def test_a_method_with_in_outs_works_on_the_callers_variables_and_is_called_through_an_in_out_instance():
+    sim = run(
+        """
+FUNCTION_BLOCK Swapper
+VAR swaps : INT; END_VAR
+METHOD Swap : BOOL
+VAR_IN_OUT a, b : INT; END_VAR
+VAR t : INT; END_VAR
+t := a; a := b; b := t;
+swaps := swaps + 1;
+Swap := swaps MOD 2 = 0;
+END_METHOD
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK SwapWith
+VAR_IN_OUT s : Swapper; x, y : INT; END_VAR
+VAR_OUTPUT even : BOOL; END_VAR
+even := s.Swap(a := x, b := y);
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR s : Swapper; w : SwapWith; x : INT := 1; y : INT := 2; even : BOOL; END_VAR
+w(s := s, x := x, y := y, even => even);
+END_PROGRAM
+"""
+    )
+    sim.cycle(1)
+    assert (sim.read("Main.x"), sim.read("Main.y"), sim.read("Main.even"), sim.read("Main.s.swaps")) == (2, 1, False, 1)
+    sim.cycle(1)
+    assert (sim.read("Main.x"), sim.read("Main.y"), sim.read("Main.even"), sim.read("Main.s.swaps")) == (1, 2, True, 2)
+
+
+def test_access_specifiers_are_checked_at_compile_time_with_located_errors():
+    text = COUNTER.replace("METHOD PRIVATE Clear", "METHOD PROTECTED Guarded\nEND_METHOD\nMETHOD PRIVATE Clear")
+    text += (
+        "PROGRAM Main\nVAR c : Counter; END_VAR\n"
+        "c.Clear();\n"
+        "   c.Guarded();\n"
+        "c.ClearAbove(1);\n"
+        "END_PROGRAM\n"
+    )
+    first = text.splitlines().index("c.Clear();") + 1  # the body's lines are the file's
+    assert errors(text) == [
+        (
+            "ST-NOT-ACCESSIBLE",
+            "Main/body",
+            first,
+            1,
+            "the method Counter.Clear is PRIVATE: only its own function block may call it",
+        ),
+        (
+            "ST-NOT-ACCESSIBLE",
+            "Main/body",
+            first + 1,
+            4,
+            "the method Counter.Guarded is PROTECTED: only its function block and those derived from it may call it",
+        ),
+    ]
+
+
+def test_internal_and_public_methods_are_called_from_anywhere_in_the_project():
+    sim = run(
+        "FUNCTION_BLOCK F\nVAR n : INT; END_VAR\nMETHOD INTERNAL Inc\nn := n + 1;\nEND_METHOD\nEND_FUNCTION_BLOCK\n"
+        "PROGRAM Main\nVAR f : F; END_VAR\nf.Inc();\nf.Inc();\nEND_PROGRAM\n"
+    )
+    sim.cycle(3)
+    assert sim.read("Main.f.n") == 6
+
+
+@pytest.mark.parametrize(
+    ("method", "call", "expected"),
+    [
+        (
+            "METHOD ABSTRACT M : INT\nEND_METHOD\n",
+            "x := f.M();",
+            ("ST-NOT-CALLABLE", "Main/body", "the method F.M is ABSTRACT: it has no body to run"),
+        ),
+        (
+            "METHOD ABSTRACT M : INT\nM := 1;\nEND_METHOD\n",
+            "",
+            ("ST-DECL", "F.M/body", "the ABSTRACT method M has no body: a derived FB implements it"),
+        ),
+        (
+            "METHOD M : INT\nVAR_OUTPUT o : INT; END_VAR\nEND_METHOD\n",
+            "",
+            (
+                "ST-DECL",
+                "F.M/declarations",
+                "VAR_OUTPUT in a method is not supported yet: return the value, or use VAR_IN_OUT",
+            ),
+        ),
+        (
+            "METHOD n : INT\nEND_METHOD\n",
+            "",
+            ("ST-DUPLICATE", "F.n/declarations", "'n' is both a variable and a method of F"),
+        ),
+        (
+            "METHOD M : INT\nM := n + undefined;\nEND_METHOD\n",
+            "",
+            ("ST-UNKNOWN-VAR", "F.M/body", "unknown variable 'undefined'"),
+        ),
+        (
+            "METHOD M : INT\nEND_METHOD\n",
+            "x := f.M;",
+            ("ST-NOT-CALLABLE", "Main/body", "'M' is a method of F: call it (add the ( ))"),
+        ),
+        (
+            "METHOD M : INT\nVAR_INPUT a : INT; END_VAR\nEND_METHOD\n",
+            "x := f.M(b := 1);",
+            ("ST-CALL-ARGS", "Main/body", "f.M has no parameter 'b'"),
+        ),
+    ],
+)
+def test_method_declaration_and_call_errors(method, call, expected):
+    text = (
+        f"FUNCTION_BLOCK F\nVAR n : INT; END_VAR\n{method}END_FUNCTION_BLOCK\n"
+        f"PROGRAM Main\nVAR f : F; x : INT; END_VAR\n{call}\nEND_PROGRAM\n"
+    )
+    assert [(code, file, message) for code, file, _, _, message in errors(text)] == [expected]
+
+
+def test_only_a_function_block_has_methods():
+    from ladderlab.model.project import Method, Pou, Project
+
+    project = Project(
+        name="p",
+        pous=[Pou(name="Main", kind="program", language="st", methods=[Method(name="M", body="")])],
+    )
+    assert [(d.code, d.file, d.message) for d in build_project(project).diagnostics] == [
+        ("ST-DECL", "Main.M/declarations", "only a function block has methods, not a program")
+    ]
+
+
+def test_methods_survive_a_project_folder(tmp_path):
+    project, _ = source_to_project(COUNTER + "PROGRAM Main\nVAR c : Counter; END_VAR\nc.Add(3);\nEND_PROGRAM\n", "p")
+    workspace = Workspace(tmp_path)
+    workspace.create(project)
+    loaded = workspace.load("p").project
+    assert loaded == project
+    assert (tmp_path / "p" / "pous" / "Counter.st.json").is_file()
+    assert (tmp_path / "p" / "pous" / "Main.st").is_file()  # POUs without methods keep their IEC text files
+    sim = build_project(loaded).simulation()
+    sim.cycle(2)
+    assert sim.read("Main.c.count") == 6
