@@ -1755,6 +1755,51 @@ export interface components {
       secret: string;
     };
     /**
+     * Method
+     * @description A METHOD of a FUNCTION_BLOCK (IEC 61131-3 ed. 3, CODESYS): its own variables and ST body; it works on the
+     *     variables of the instance it is called on (docs/st.md, object orientation).
+     */
+    Method: {
+      /**
+       * Abstract
+       * @description ABSTRACT: no body; a derived FB must implement it.
+       * @default false
+       */
+      abstract?: boolean;
+      /**
+       * Access
+       * @description Who may call it; CODESYS's default is PUBLIC.
+       * @default PUBLIC
+       * @enum {string}
+       */
+      access?: "PUBLIC" | "PRIVATE" | "PROTECTED" | "INTERNAL";
+      /**
+       * Body
+       * @description ST statements.
+       * @default
+       */
+      body?: string;
+      /**
+       * Declarations
+       * @description ST text of its VAR...END_VAR blocks, as typed.
+       * @default
+       */
+      declarations?: string;
+      /**
+       * Final
+       * @description FINAL: an FB derived from this one cannot override it.
+       * @default false
+       */
+      final?: boolean;
+      /** Name */
+      name: string;
+      /**
+       * Return Type
+       * @description The result type; None: a method without a value.
+       */
+      return_type?: string | null;
+    };
+    /**
      * Motion
      * @description A move by a variable's value: ``min`` leaves the widget where it is placed, ``max`` moves it by ``distance``
      *     pixels (negative: left or up), values in between in proportion, values outside held at the ends.
@@ -2160,6 +2205,11 @@ export interface components {
        * @enum {string}
        */
       language: "st" | "ld" | "fbd" | "il" | "sfc";
+      /**
+       * Methods
+       * @description Function blocks only: their METHODs.
+       */
+      methods?: components["schemas"]["Method"][];
       /** Name */
       name: string;
       /**
@@ -3598,6 +3648,7 @@ export type LdBody = components["schemas"]["LdBody"];
 export type LdNetwork = components["schemas"]["LdNetwork"];
 export type LibraryEntry = components["schemas"]["LibraryEntry"];
 export type Login = components["schemas"]["Login"];
+export type Method = components["schemas"]["Method"];
 export type Motion = components["schemas"]["Motion"];
 export type Multistate = components["schemas"]["Multistate"];
 export type NumericDisplay = components["schemas"]["NumericDisplay"];
