@@ -265,7 +265,7 @@ class PouContext:
         if upper in self.edges and self.info is not None and symbol.pou.upper() == self.name:
             return self.edges[upper]
         method = self.info.method if self.info is not None else None
-        if method is not None and symbol.pou.upper() == method.owner.name.upper():  # the instance's, via THIS
+        if method is not None and method.owner.symbols.get(upper) is symbol:  # the instance's (inherited too), via THIS
             this = self.var_for(self.info.symbols[THIS])
             owner = self.types_for(method.owner.name)
             return Var("local", this.name, owner.type_of(symbol.type, symbol.type_spec), (Member(upper),))

@@ -32,6 +32,7 @@ from ..iec.values import article
 from ..st import ast
 from ..st import types as t
 from ..st.context_typing import FoldError, fold, literal_only
+from ..st.methods import is_super
 from ..st.printer import print_expression
 from ..st.rules import EnumValue
 from ..st.symbols import THIS, PouInfo, Symbol
@@ -653,7 +654,10 @@ def user_call(node: ast.Call, ctx: PouContext) -> Call:
         args.append(lower_to(value, ctx, ty) if value is not None else Const(initial, ty))
         types.append(ty)
     ctx.calls += 1
-    if pou.method is not None and pou.return_type is None:  # a method without a value (lower_project.lower_pou)
-        return Call(pou.name.upper(), tuple(args), tuple(types), BOOL, True, tuple(in_outs))
-    result = callee.type_of(pou.return_type, pou.return_spec)
-    return Call(pou.name.upper(), tuple(args), tuple(types), result, True, tuple(in_outs))
+    if pou.method is None:
+        result = callee.type_of(pou.return_type, pou.return_spec)
+        return Call(pou.name.upper(), tuple(args), tuple(types), result, True, tuple(in_outs))
+    # a method without a value returns an unused BOOL (lower_project.lower_pou); SUPER^.M() runs the base's M
+    result = callee.type_of(pou.return_type, pou.return_spec) if pou.return_type is not None else BOOL
+    virtual = not is_super(node.callee.base) if isinstance(node.callee, ast.Member) else True
+    return Call(pou.name.upper(), tuple(args), tuple(types), result, True, tuple(in_outs), virtual)

@@ -81,10 +81,28 @@ def _lower_project(project: Project, checked: CheckResult | None) -> LoweringRes
     instances, tasks, access = lower_configuration(checked, diagnostics, image)
     diagrams = [(pou.name, pou.body) for pou in project.pous if not isinstance(pou.body, str)]
     program = Program(pous, globals_ + list(image.values()), tasks, instances, access, ProjectPlaces(diagrams))
+    program.dispatch = dispatch_tables(checked)
     too_much = data_too_large(program)
     if too_much is not None:
         diagnostics.append(too_much)
     return LoweringResult(None if has_errors(diagnostics) else program, diagnostics)
+
+
+def dispatch_tables(checked: CheckResult) -> dict[str, dict[str, str]]:
+    """For each method that a derived function block overrides: which method each FB descending from its own
+    runs for that name (dynamic dispatch, st/inheritance.py). Methods nobody overrides are called directly."""
+    blocks = [info for info in checked.pous.values() if info.kind == "FUNCTION_BLOCK"]
+    tables: dict[str, dict[str, str]] = {}
+    for owner in blocks:
+        for method in owner.methods.values():
+            table = {}
+            for fb in blocks:
+                found = fb.find_method(method.method.name) if fb.derives_from(owner) else None
+                if found is not None:
+                    table[fb.name.upper()] = found.name.upper()
+            if any(name != method.name.upper() for name in table.values()):
+                tables[method.name.upper()] = table
+    return tables
 
 
 def lower_globals(checked: CheckResult, diagnostics: list[Diagnostic]) -> list[Slot]:

@@ -110,7 +110,10 @@ class Binary:
 
 @dataclass(frozen=True)
 class Call:
-    """A function call: a standard function (by name, specialised to ``arg_types``) or a user function."""
+    """A function call: a standard function (by name, specialised to ``arg_types``) or a user function.
+
+    ``virtual``: a METHOD ``<FB>.<M>`` whose implementation is chosen when it runs, by the FB of the instance it is
+    called on (its first in-out, ``THIS``): ``Program.dispatch[function]`` maps each FB to the function it runs."""
 
     function: str
     args: tuple[Expr, ...]
@@ -118,6 +121,7 @@ class Call:
     type: IrType
     user: bool = False
     in_outs: tuple[Var, ...] = ()
+    virtual: bool = False
 
 
 @dataclass(frozen=True)
@@ -355,6 +359,8 @@ class Program:
     access: dict[str, tuple[str, bool]] = field(default_factory=dict)
     #: the LD/FBD elements' names as the user sees them, for runtime faults (model/places.py)
     places: ProjectPlaces | None = field(default=None, repr=False, compare=False)
+    #: method ``<FB>.<M>`` -> {function block -> the method it runs for ``M``}: for calls with ``virtual`` set
+    dispatch: dict[str, dict[str, str]] = field(default_factory=dict)
 
     def program_instances(self) -> list[ProgramInstance]:
         """The instances to create: ``instances``, or one per PROGRAM named after it."""

@@ -65,6 +65,9 @@ class Pou(BaseModel):
     declarations: str = Field(default="", description="ST text of the VAR...END_VAR blocks, as typed.")
     body: str | LdBody | FbdBody | SfcBody = ""
     methods: list[Method] = Field(default_factory=list, description="Function blocks only: their METHODs.")
+    extends: str | None = Field(default=None, description="Function blocks only: the function block it EXTENDS.")
+    abstract: bool = Field(default=False, description="Function blocks only: ABSTRACT, it cannot be instantiated.")
+    final: bool = Field(default=False, description="Function blocks only: FINAL, no function block extends it.")
 
     _normalise_texts = field_validator("declarations", "body", mode="before")(_strip_trailing_whitespace)
 

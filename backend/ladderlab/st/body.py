@@ -234,7 +234,7 @@ class BodyChecker:
             )
             return ERROR
         symbol = base.pou.symbols.get(upper)
-        if symbol is None and upper in base.pou.methods:
+        if symbol is None and base.pou.find_method(upper) is not None:
             self.report("ST-NOT-CALLABLE", f"'{node.name}' is a method of {base.name}: call it (add the ( ))", node)
             return ERROR
         if symbol is None:

@@ -237,12 +237,23 @@ def _in_out(checker: Any, arg: ast.Arg, param: Param, callee: str) -> None:
             f"the CONSTANT '{root.ref.name}' cannot be passed as in-out parameter {param.name}",
             arg.value,
         )
-    elif not t.same(param.type, value) and not _open_array(param.type, value):
+    elif not t.same(param.type, value) and not _open_array(param.type, value) and not _derived(param.type, value):
         checker.report(
             "ST-TYPE-MISMATCH",
             f"in-out parameter {param.name} of {callee} needs a {param.type}, got {value}",
             arg.value,
         )
+
+
+def _derived(param: Type, value: Type) -> bool:
+    """An instance of a function block that EXTENDS the in-out's FB (st/inheritance.py) stands for one of it."""
+    return (
+        isinstance(param, t.FbType)
+        and isinstance(value, t.FbType)
+        and param.pou is not None
+        and value.pou is not None
+        and value.pou.derives_from(param.pou)
+    )
 
 
 def _open_array(param: Type, value: Type) -> bool:

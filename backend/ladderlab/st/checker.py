@@ -22,6 +22,7 @@ from .body import BodyChecker
 from .configuration import check_configuration, configuration_globals
 from .il_check import check_il_body
 from .il_parser import IlBody, parse_il
+from .inheritance import abstract_instance, check_overrides, link_bases
 from .methods import check_method_body, declare_methods
 from .parser import (
     keywords,
@@ -111,11 +112,13 @@ class ProjectChecker:
             info = self.result.pous.get(pou.name.upper())
             if pou.language == "sfc" and info is not None and info.name == pou.name:
                 declare_implicit(pou, info, self.result.diagnostics)
+        link_bases(self, self.project)
         methods = []
         for pou in self.project.pous:
             info = self.result.pous.get(pou.name.upper())
             if pou.methods and info is not None and info.name == pou.name:
                 methods += declare_methods(self, info, pou.methods)
+        check_overrides(self, [info for info in self.result.pous.values() if info.kind == "FUNCTION_BLOCK"])
         for pou in self.project.pous:
             self._check_initial_values(pou)
         for info, method in methods:
@@ -164,6 +167,7 @@ class ProjectChecker:
                 where("ST-NAME", f"'{pou.name}' is a keyword and cannot name a POU (KW-02)", None)
             info = self.result.pous[upper] = PouInfo(pou.name, _KIND[pou.kind], pou.language, None)
             info.plant = pou.kind == "plant"
+            info.abstract, info.final = pou.abstract, pou.final
             if not isinstance(pou.body, str):  # LD boxes and FBD blocks: edges of the call graph (POU-02)
                 info.calls |= pou.body.calls()
 
@@ -464,6 +468,9 @@ class ProjectChecker:
                 "declared as a variable",
                 decl,
             )
+        abstract = abstract_instance(ty, block.kind)
+        if abstract:
+            report("ST-DECL", abstract, decl)
         if isinstance(ty, t.FbType) and pou is not None and pou.kind == "FUNCTION":
             report("ST-DECL", f"a function has no memory, so it cannot contain the instance of {ty.name} (ST-57)", decl)
         if isinstance(ty, t.PointerType) and block.retain:

@@ -116,10 +116,6 @@ def check_method_body(checker: Any, info: PouInfo, method: Method) -> None:
     fb.calls |= {name for name in info.calls if name != fb.name.upper()}
 
 
-def find_method(fb: PouInfo, name: str) -> PouInfo | None:
-    return fb.methods.get(name.upper())
-
-
 def method_callee(checker: Any, callee: ast.Expr) -> tuple[PouInfo, ast.Expr | None] | None:
     """The method a call's callee names, with the instance it is called on (None: the caller's own ``THIS``),
     or None when the callee is no method: ``inst.M``, ``THIS^.M`` or, inside a method, a bare ``M``."""
@@ -127,7 +123,7 @@ def method_callee(checker: Any, callee: ast.Expr) -> tuple[PouInfo, ast.Expr | N
     if isinstance(callee, ast.Name):
         own = caller.method.owner if caller is not None and caller.method is not None else None
         if own is not None and checker.lookup(callee.name) is None:
-            found = find_method(own, callee.name)
+            found = own.find_method(callee.name)
             return (found, None) if found is not None else None
         return None
     if not isinstance(callee, ast.Member):
@@ -141,25 +137,47 @@ def method_callee(checker: Any, callee: ast.Expr) -> tuple[PouInfo, ast.Expr | N
     base_type = silent.expr(copy.deepcopy(base))
     if not isinstance(base_type, t.FbType) or base_type.pou is None:
         return None
-    found = find_method(base_type.pou, callee.name)
+    found = base_type.pou.find_method(callee.name)
     if found is None:
         return None
     checker.expr(base)
     return found, base
 
 
-def _is_this(node: ast.Expr, caller: PouInfo | None) -> bool:
-    return isinstance(node, ast.Name) and node.name.upper() == THIS and caller is not None and caller.method is not None
+SUPER = "SUPER"
+
+
+def is_super(node: ast.Expr) -> bool:
+    """``SUPER^``: the instance a method was called on, seen as its base FB (calls through it are not dispatched)."""
+    return isinstance(node, ast.Deref) and isinstance(node.base, ast.Name) and node.base.name.upper() == SUPER
 
 
 def this_type(checker: Any, node: ast.Deref) -> Type | None:
-    """``THIS^`` inside a method: the instance it was called on (None: not ``THIS^``)."""
-    caller = checker.pou
-    if not _is_this(node.base, caller):
+    """``THIS^`` inside a method: the instance it was called on; ``SUPER^``: the same seen as the FB's base.
+    None: neither (or a variable declared with that name)."""
+    caller, base = checker.pou, node.base
+    if not isinstance(base, ast.Name) or base.name.upper() not in (THIS, SUPER):
         return None
+    if caller is None or caller.method is None:
+        if checker.lookup(base.name) is not None:
+            return None
+        checker.report(
+            "ST-UNKNOWN-VAR",
+            f"{base.name.upper()}^ can be used inside a method only (a function block's body cannot use it yet)",
+            node,
+        )
+        return ERROR
     symbol = caller.symbols[THIS]
-    node.base.ref, node.base.ty = symbol, symbol.type
-    return symbol.type
+    base.ref = symbol
+    if base.name.upper() == THIS:
+        base.ty = symbol.type
+        return symbol.type
+    owner = caller.method.owner
+    if owner.base is None:
+        checker.report("ST-UNKNOWN-VAR", f"SUPER^: {owner.name} does not extend another function block", node)
+        return ERROR
+    base.ty = t.FbType(owner.base.name, pou=owner.base)
+    return base.ty
 
 
 def check_method_call(checker: Any, node: ast.Call, method: PouInfo, instance: ast.Expr | None) -> Type:
@@ -172,14 +190,16 @@ def check_method_call(checker: Any, node: ast.Call, method: PouInfo, instance: a
     caller_fb = None
     if caller is not None:
         caller_fb = caller.method.owner if caller.method is not None else caller
-    if info.access in ("PRIVATE", "PROTECTED") and caller_fb is not info.owner:
+    if (info.access == "PRIVATE" and caller_fb is not info.owner) or (
+        info.access == "PROTECTED" and (caller_fb is None or not caller_fb.derives_from(info.owner))
+    ):
         what = "its own function block" if info.access == "PRIVATE" else "its function block and those derived from it"
         checker.report(
             "ST-NOT-ACCESSIBLE",
             f"the method {info.owner.name}.{info.name} is {info.access}: only {what} may call it",
             node.callee,
         )
-    if info.abstract:
+    if info.abstract and instance is not None and is_super(instance):  # otherwise a derived FB's runs
         checker.report(
             "ST-NOT-CALLABLE", f"the method {info.owner.name}.{info.name} is ABSTRACT: it has no body to run", node
         )

@@ -89,6 +89,9 @@ def _pou(pou: ast.Pou, source: _Text, language: str) -> Pou:
         declarations=_keep_lines(*declarations) if declarations[0] else "",
         body=_keep_lines(*body),
         methods=[_method(method, source) for method in pou.methods],
+        extends=pou.extends,
+        abstract=pou.modifier == "ABSTRACT",
+        final=pou.modifier == "FINAL",
     )
 
 

@@ -64,6 +64,27 @@ class PouInfo:
     accumulators: list[Symbol] = field(default_factory=list)  # IL POUs: the hidden current-result variables
     methods: dict[str, PouInfo] = field(default_factory=dict)  # a function block's METHODs by upper-case name
     method: MethodInfo | None = None  # set on a METHOD: its FB, name as written and modifiers
+    base: PouInfo | None = None  # the function block this one EXTENDS (st/inheritance.py)
+    abstract: bool = False  # an ABSTRACT function block: no instances, only FBs derived from it
+    final: bool = False  # a FINAL function block: nothing EXTENDS it
+
+    def lineage(self) -> list[PouInfo]:
+        """This function block, then the one it extends, and so on."""
+        chain, seen = [], set()
+        pou: PouInfo | None = self
+        while pou is not None and id(pou) not in seen:
+            seen.add(id(pou))
+            chain.append(pou)
+            pou = pou.base
+        return chain
+
+    def derives_from(self, other: PouInfo) -> bool:
+        return any(pou is other for pou in self.lineage())
+
+    def find_method(self, name: str) -> PouInfo | None:
+        """The method ``name`` of this FB, its own or the nearest inherited one."""
+        upper = name.upper()
+        return next((pou.methods[upper] for pou in self.lineage() if upper in pou.methods), None)
 
     def parameters(self, *classes: str) -> list[Symbol]:
         """The parameters of ``classes`` (default: all) in declaration order; a METHOD's ``THIS`` is none."""

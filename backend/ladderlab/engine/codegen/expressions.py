@@ -203,7 +203,10 @@ class Expressions:
             )
         args = [self.value_for(a, slot.type) for a, slot in zip(c.args, inputs)]
         args += [self.ref(v) for v in c.in_outs]
-        call = f"{names.function(callee.name)}({', '.join(args)})"
+        if c.virtual and c.function.upper() in self.module.program.dispatch:  # a method: by its instance's FB
+            call = f"ll_virtual({names.dispatch_table(callee.name)}, {len(inputs)}, {', '.join(args)})"
+        else:
+            call = f"{names.function(callee.name)}({', '.join(args)})"
         return f"(yield from {call})" if self.module.debug else call
 
     def value_for(self, e: ir.Expr, target: t.IrType) -> str:

@@ -251,6 +251,13 @@ class _Unset:
 UNSET = _Unset()
 
 
+def virtual_call(table: dict[type, Callable], inputs: int, *args: object) -> object:
+    """Call a METHOD as implemented by the function block of the instance it is called on: that instance is the
+    method's first in-out (``THIS``, a ``(container, key)`` reference after its ``inputs`` input values)."""
+    container, key = args[inputs]  # type: ignore[misc]
+    return table[type(container[key])](*args)  # type: ignore[index]
+
+
 def _addressable_fbs() -> dict[str, type]:
     return {
         name: type(name, (Addressable, cls), {"__slots__": (), "__doc__": cls.__doc__})
@@ -285,6 +292,7 @@ def namespace() -> dict[str, object]:
         ll_scan=0,  # the stamp of the running scan, for probe groups (context.ProbeTable)
         ll_wb=[WATCHDOG_EVERY],  # the watchdog countdown of the running task (Watchdog, statements.py)
         ll_unset=UNSET,
+        ll_virtual=virtual_call,
     )
     ns.update({names.std_fb(name): cls for name, cls in FB_CLASSES.items()})
     return ns
