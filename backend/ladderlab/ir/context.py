@@ -17,8 +17,8 @@ from ..st.body import BodyChecker
 from ..st.rules import assignable_or_report
 from ..st.symbols import THIS, CheckResult, PouInfo, Symbol
 from .lower_types import LoweringError, TypeLowering, ir_default
-from .nodes import Member, Origin, Slot, Stmt, Var, VarClass
-from .types import IrType
+from .nodes import SELF, Member, Origin, Slot, Stmt, Var, VarClass
+from .types import FbInstance, IrType
 
 #: Hidden slot names start with two underscores, which an IEC identifier must not contain (LEX-13); they
 #: get a number suffix if a declared name (the parser does not refuse ``__x``) or another hidden one is taken.
@@ -270,6 +270,13 @@ class PouContext:
             owner = self.types_for(method.owner.name)
             return Var("local", this.name, owner.type_of(symbol.type, symbol.type_spec), (Member(upper),))
         return Var("local", upper, self.types.type_of(symbol.type, symbol.type_spec))
+
+    def this_var(self) -> Var:
+        """``THIS^``: in a METHOD its in-out ``THIS``; in a function block's body the instance running it
+        (``SELF``, a root without a slot: the engine's ``self``)."""
+        if self.info is not None and self.info.method is not None:
+            return self.var_for(self.info.symbols[THIS])
+        return Var("local", SELF, FbInstance(self.name))
 
     def direct(self, address: str, type: IrType) -> Var:
         """An address used without a declaration (``q := %IX0.1``): a located global of its default type, one per

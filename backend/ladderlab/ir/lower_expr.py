@@ -32,10 +32,10 @@ from ..iec.values import article
 from ..st import ast
 from ..st import types as t
 from ..st.context_typing import FoldError, fold, literal_only
-from ..st.methods import is_super
+from ..st.methods import is_self, is_super
 from ..st.printer import print_expression
 from ..st.rules import EnumValue
-from ..st.symbols import THIS, PouInfo, Symbol
+from ..st.symbols import PouInfo, Symbol
 from .context import PouContext
 from .lower_types import LoweringError, byte_size, engine_value, ir_default
 from .nodes import AddressOf, Assign, Binary, Call, Const, Convert, Deref, Expr, FnCall, Index, Member, Unary, Var
@@ -249,10 +249,10 @@ def lower_access(node: ast.Expr, ctx: PouContext) -> Var:
         return Var(base.scope, base.name, _member_type(node, base.type, ctx), (*base.path, Member(node.name.upper())))
     if isinstance(node, ast.Index):
         return _index(node, ctx)
+    if is_self(node):  # THIS^ / SUPER^ (st/methods.py)
+        return ctx.this_var()
     if isinstance(node, ast.Deref):
         base = lower_access(node.base, ctx)
-        if isinstance(base.type, FbInstance):  # ``THIS^`` in a method: THIS is already the instance (st/methods.py)
-            return base
         if not isinstance(base.type, Reference):
             raise LoweringError(None)
         return Var(base.scope, base.name, base.type.target, (*base.path, Deref()))
@@ -634,9 +634,9 @@ def user_call(node: ast.Call, ctx: PouContext) -> Call:
     parameters = pou.parameters("VAR_INPUT", "VAR_IN_OUT")
     given: dict[str, ast.Expr] = {}
     in_outs: list[Var] = []
-    if pou.method is not None:  # the instance it is called on; a bare ``M()`` in a method: the caller's own
+    if pou.method is not None:  # the instance it is called on; a bare ``M()``: the caller's own
         instance = node.callee.base if isinstance(node.callee, ast.Member) else None
-        in_outs.append(lower_access(instance, ctx) if instance is not None else ctx.var_for(ctx.info.symbols[THIS]))
+        in_outs.append(lower_access(instance, ctx) if instance is not None else ctx.this_var())
     for position, arg in enumerate(_arguments(node)):
         if arg.name is None and position >= len(parameters):
             raise LoweringError(None)

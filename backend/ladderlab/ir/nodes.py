@@ -71,6 +71,8 @@ class Deref:
 
 Selector = Index | Member | Deref
 Scope = Literal["local", "global"]
+#: The root of ``THIS^`` in a function block's body: the instance itself (no slot; a name no identifier can be)
+SELF = "__SELF"
 
 
 @dataclass(frozen=True)

@@ -18,7 +18,7 @@ from . import types as t
 from .calls import check_call
 from .cases import check_case
 from .context_typing import default_type, settle, untyped_leaves, untyped_result
-from .methods import this_type, unknown_member_hint
+from .methods import is_self, this_type, unknown_member_hint
 from .rules import EnumValue, assignable_or_report, constant_value, root_name
 from .symbols import CheckResult, PouInfo, Symbol
 from .types import ERROR, Type
@@ -252,7 +252,7 @@ class BodyChecker:
                 "only, so it cannot be read or written from outside (pass the variable in the call)",
                 node,
             )
-        elif symbol.var_class not in ("VAR_INPUT", "VAR_OUTPUT") and not _sfc_state(symbol):
+        elif symbol.var_class not in ("VAR_INPUT", "VAR_OUTPUT") and not _sfc_state(symbol) and not is_self(node.base):
             self.report(
                 "ST-NOT-ACCESSIBLE",
                 f"'{node.name}' is internal to {base.name}: only its inputs and outputs can be used from outside",

@@ -23,6 +23,7 @@ from .symbols import PouInfo, Symbol
 from .types import ERROR, VOID, Type
 
 _SYSTEM = {"ADR", "REF", "SIZEOF"}
+_SELF = ("THIS", "SUPER")
 _WRITABLE = (ast.Name, ast.Member, ast.Index, ast.Deref, ast.DirectAddr)
 
 
@@ -38,6 +39,14 @@ def check_call(checker: Any, node: ast.Call, statement: bool) -> Type:
     method = method_callee(checker, callee)
     if method is not None:
         return check_method_call(checker, node, *method)
+    if isinstance(callee, ast.Deref) and isinstance(callee.base, ast.Name) and callee.base.name.upper() in _SELF:
+        _args_untyped(checker, node)
+        checker.report(
+            "ST-NOT-CALLABLE",
+            f"{callee.base.name.upper()}^() would run a function block's body from a method: not supported yet",
+            node,
+        )
+        return ERROR
     if not isinstance(callee, ast.Name):
         return _instance_call(checker, node, checker.expr(callee), statement)
     upper = callee.name.upper()

@@ -3,7 +3,8 @@
 A method ``M`` of the FB ``F`` is checked as a function ``F.M`` (``PouInfo`` with ``method`` set) whose hidden
 first in-out ``THIS`` is the instance it is called on: the method's own variables are a function's (fresh in
 every call), and a name it does not declare is a variable of ``F`` reached through ``THIS`` (ir/context.py).
-A call ``inst.M(a := 1)`` passes ``inst`` as ``THIS``; ``THIS^`` inside a method is that instance.
+A call ``inst.M(a := 1)`` passes ``inst`` as ``THIS``; ``THIS^`` inside a method is that instance, in the FB's own
+body the instance running it (the engine's ``self``, ir/context.py ``this_var``).
 """
 
 from __future__ import annotations
@@ -118,10 +119,10 @@ def check_method_body(checker: Any, info: PouInfo, method: Method) -> None:
 
 def method_callee(checker: Any, callee: ast.Expr) -> tuple[PouInfo, ast.Expr | None] | None:
     """The method a call's callee names, with the instance it is called on (None: the caller's own ``THIS``),
-    or None when the callee is no method: ``inst.M``, ``THIS^.M`` or, inside a method, a bare ``M``."""
+    or None when the callee is no method: ``inst.M``, ``THIS^.M`` or, in an FB or its method, a bare ``M``."""
     caller = checker.pou
     if isinstance(callee, ast.Name):
-        own = caller.method.owner if caller is not None and caller.method is not None else None
+        own = _own_fb(caller)
         if own is not None and checker.lookup(callee.name) is None:
             found = own.find_method(callee.name)
             return (found, None) if found is not None else None
@@ -153,31 +154,45 @@ def is_super(node: ast.Expr) -> bool:
 
 
 def this_type(checker: Any, node: ast.Deref) -> Type | None:
-    """``THIS^`` inside a method: the instance it was called on; ``SUPER^``: the same seen as the FB's base.
-    None: neither (or a variable declared with that name)."""
+    """``THIS^`` in a function block or its method: the instance the code runs on; ``SUPER^``: the same seen as
+    the FB's base. None: neither (or a variable declared with that name)."""
     caller, base = checker.pou, node.base
     if not isinstance(base, ast.Name) or base.name.upper() not in (THIS, SUPER):
         return None
-    if caller is None or caller.method is None:
-        if checker.lookup(base.name) is not None:
-            return None
+    declared = checker.lookup(base.name)
+    if declared is not None and (caller is None or declared is not caller.this()):
+        return None  # a variable someone called THIS (edition 2 code)
+    owner = _own_fb(caller)
+    if owner is None:
         checker.report(
-            "ST-UNKNOWN-VAR",
-            f"{base.name.upper()}^ can be used inside a method only (a function block's body cannot use it yet)",
-            node,
+            "ST-UNKNOWN-VAR", f"{base.name.upper()}^ is only known in a function block and its methods", node
         )
         return ERROR
-    symbol = caller.symbols[THIS]
-    base.ref = symbol
     if base.name.upper() == THIS:
-        base.ty = symbol.type
-        return symbol.type
-    owner = caller.method.owner
+        base.ty = t.FbType(owner.name, pou=owner)
+        return base.ty
     if owner.base is None:
         checker.report("ST-UNKNOWN-VAR", f"SUPER^: {owner.name} does not extend another function block", node)
         return ERROR
     base.ty = t.FbType(owner.base.name, pou=owner.base)
     return base.ty
+
+
+def _own_fb(caller: PouInfo | None) -> PouInfo | None:
+    """The function block whose instance ``THIS^`` is in ``caller``'s code: its own, or a method's FB."""
+    if caller is not None and caller.method is not None:
+        return caller.method.owner
+    return caller if caller is not None and caller.kind == "FUNCTION_BLOCK" else None
+
+
+def is_self(node: ast.Expr) -> bool:
+    """``THIS^`` or ``SUPER^`` (``this_type`` typed it: no variable of that name is declared)."""
+    return (
+        isinstance(node, ast.Deref)
+        and isinstance(node.base, ast.Name)
+        and node.base.name.upper() in (THIS, SUPER)
+        and node.base.ref is None
+    )
 
 
 def check_method_call(checker: Any, node: ast.Call, method: PouInfo, instance: ast.Expr | None) -> Type:
@@ -205,8 +220,8 @@ def check_method_call(checker: Any, node: ast.Call, method: PouInfo, instance: a
         )
     if instance is not None and isinstance(node.callee, ast.Member):
         node.callee.ref = method
-    if caller is not None:
-        caller.calls.add(info.owner.name.upper())
+    if caller is not None and (caller_fb is None or not caller_fb.derives_from(info.owner)):
+        caller.calls.add(info.owner.name.upper())  # (its own FB's methods are no call of another POU)
     inputs = [Param(s.name, s.type, s.var_class == "VAR_IN_OUT") for s in method.parameters("VAR_INPUT", "VAR_IN_OUT")]
     name = f"{info.owner.name}.{info.name}" if instance is None else f"{print_expression(instance)}.{info.name}"
     check_arguments(checker, node, name, inputs, [], function=True)
