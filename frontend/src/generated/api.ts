@@ -2181,6 +2181,12 @@ export interface components {
      */
     Pou: {
       /**
+       * Abstract
+       * @description Function blocks only: ABSTRACT, it cannot be instantiated.
+       * @default false
+       */
+      abstract?: boolean;
+      /**
        * Body
        * @default
        */
@@ -2195,6 +2201,17 @@ export interface components {
        * @default
        */
       declarations?: string;
+      /**
+       * Extends
+       * @description Function blocks only: the function block it EXTENDS.
+       */
+      extends?: string | null;
+      /**
+       * Final
+       * @description Function blocks only: FINAL, no function block extends it.
+       * @default false
+       */
+      final?: boolean;
       /**
        * Kind
        * @enum {string}

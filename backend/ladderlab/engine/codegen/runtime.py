@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from typing import Any
 
 from ..errors import WATCHDOG, PlcRuntimeError, check_index, check_subrange, for_step_zero, null_dereference
 from ..process_image import ProcessImage
@@ -251,11 +252,11 @@ class _Unset:
 UNSET = _Unset()
 
 
-def virtual_call(table: dict[type, Callable], inputs: int, *args: object) -> object:
+def virtual_call(table: dict[type, Callable], inputs: int, *args: Any) -> object:
     """Call a METHOD as implemented by the function block of the instance it is called on: that instance is the
     method's first in-out (``THIS``, a ``(container, key)`` reference after its ``inputs`` input values)."""
-    container, key = args[inputs]  # type: ignore[misc]
-    return table[type(container[key])](*args)  # type: ignore[index]
+    container, key = args[inputs]
+    return table[type(container[key])](*args)
 
 
 def _addressable_fbs() -> dict[str, type]:
