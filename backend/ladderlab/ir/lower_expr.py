@@ -108,10 +108,20 @@ def _lower(node: ast.Expr, ctx: PouContext, expected: IrType | None) -> Expr:
 
 def lower_to(node: ast.Expr, ctx: PouContext, target: IrType) -> Expr:
     """``node`` as a value of ``target``: untyped literals take it, accepted widenings get a ``Convert``."""
+    if isinstance(target, Reference) and isinstance(node.ty, (t.FbType, t.InterfaceType)):
+        return interface_value(node, ctx, target)
     expr = lower_expr(node, ctx, target)
     if isinstance(target, Reference):
         return _reference_to(expr, target, node)
     return convert(expr, target)
+
+
+def interface_value(node: ast.Expr, ctx: PouContext, target: Reference) -> Expr:
+    """An instance (a reference to it) or an interface variable's reference, stored in an interface variable (the
+    checker accepted it: st/interfaces.py)."""
+    if isinstance(node.ty, t.InterfaceType):
+        return lower_expr(node, ctx, target)
+    return AddressOf(lower_access(node, ctx), target, print_expression(node))
 
 
 def _reference_to(expr: Expr, target: Reference, node: ast.Expr) -> Expr:
@@ -366,7 +376,8 @@ def _binary(node: ast.Binary, ctx: PouContext) -> Expr:
         mixed = _time_operator(node, op, ctx)
         if mixed is not None:
             return mixed
-    if isinstance(left_ty, (t.PointerType, t.NullType)) or isinstance(right_ty, (t.PointerType, t.NullType)):
+    references = (t.PointerType, t.NullType, t.InterfaceType)
+    if isinstance(left_ty, references) or isinstance(right_ty, references):
         return _reference_operation(node, op, ctx)
     if op in _COMPARISONS:  # the checker settled both operands to types whose lub is the one compared in
         operand = ctx.ir_type(t.lub(left_ty, right_ty) or t.concrete(t.common(left_ty, right_ty)[0]))
@@ -384,9 +395,9 @@ def _reference_operation(node: ast.Binary, op: str, ctx: PouContext) -> Expr:
             POINTER_ARITHMETIC if op in ("ADD", "SUB") else f"references cannot be compared by '{node.op}'", node
         )
     left, right = lower_expr(node.left, ctx), lower_expr(node.right, ctx)
-    if isinstance(left, Const) and left.value is None:  # NULL takes the other reference's type
+    if isinstance(left, Const) and left.value in (None, 0):  # NULL (an interface's 0) takes the other's type
         left = Const(None, right.type)
-    if isinstance(right, Const) and right.value is None:
+    if isinstance(right, Const) and right.value in (None, 0):
         right = Const(None, left.type)
     return Binary(op, left, right, BOOL)  # type: ignore[arg-type]  # EQ/NE
 
@@ -636,7 +647,10 @@ def user_call(node: ast.Call, ctx: PouContext) -> Call:
     in_outs: list[Var] = []
     if pou.method is not None:  # the instance it is called on; a bare ``M()``: the caller's own
         instance = node.callee.base if isinstance(node.callee, ast.Member) else None
-        in_outs.append(lower_access(instance, ctx) if instance is not None else ctx.this_var())
+        this = lower_access(instance, ctx) if instance is not None else ctx.this_var()
+        if isinstance(this.type, Reference):  # an interface variable: the instance it refers to
+            this = Var(this.scope, this.name, this.type.target, (*this.path, Deref()))
+        in_outs.append(this)
     for position, arg in enumerate(_arguments(node)):
         if arg.name is None and position >= len(parameters):
             raise LoweringError(None)

@@ -78,6 +78,9 @@ def _lower_project(project: Project, checked: CheckResult | None) -> LoweringRes
             pous[pou.name.upper()] = lower_pou(pou, info, checked, diagnostics, image)
             for method in info.methods.values():
                 pous[method.name.upper()] = lower_pou(None, method, checked, diagnostics, image)
+    for interface in checked.interfaces.values():  # prototypes: what a call through an interface passes
+        for prototype in interface.methods.values():
+            pous[prototype.name.upper()] = lower_pou(None, prototype, checked, diagnostics, image)
     instances, tasks, access = lower_configuration(checked, diagnostics, image)
     diagrams = [(pou.name, pou.body) for pou in project.pous if not isinstance(pou.body, str)]
     program = Program(pous, globals_ + list(image.values()), tasks, instances, access, ProjectPlaces(diagrams))
@@ -89,18 +92,20 @@ def _lower_project(project: Project, checked: CheckResult | None) -> LoweringRes
 
 
 def dispatch_tables(checked: CheckResult) -> dict[str, dict[str, str]]:
-    """For each method that a derived function block overrides: which method each FB descending from its own
-    runs for that name (dynamic dispatch, st/inheritance.py). Methods nobody overrides are called directly."""
+    """For each method that a derived function block overrides, and each INTERFACE's: which method each FB
+    descending from its own (implementing the interface) runs for that name (dynamic dispatch, st/inheritance.py,
+    st/interfaces.py). Methods nobody overrides are called directly."""
     blocks = [info for info in checked.pous.values() if info.kind == "FUNCTION_BLOCK"]
     tables: dict[str, dict[str, str]] = {}
-    for owner in blocks:
+    for owner in [*blocks, *checked.interfaces.values()]:
         for method in owner.methods.values():
             table = {}
             for fb in blocks:
-                found = fb.find_method(method.method.name) if fb.derives_from(owner) else None
-                if found is not None:
-                    table[fb.name.upper()] = found.name.upper()
-            if any(name != method.name.upper() for name in table.values()):
+                if fb.derives_from(owner) or fb.implements(owner):
+                    found = fb.find_method(method.method.name)
+                    if found is not None:
+                        table[fb.name.upper()] = found.name.upper()
+            if owner.kind == "INTERFACE" or any(name != method.name.upper() for name in table.values()):
                 tables[method.name.upper()] = table
     return tables
 

@@ -32,6 +32,7 @@ from .lower_expr import (
 from .lower_types import LoweringError
 from .nodes import (
     Assign,
+    Attempt,
     Block,
     Call,
     Case,
@@ -106,6 +107,10 @@ def _assign(statement: ast.Assign, ctx: PouContext) -> list[Stmt]:
         en, eno, after = lower_en_eno(value, ctx)
         return [FnCall(call, lower_access(target, ctx), origin, en, eno), *after]
     lowered = lower_to(value, ctx, ctx.ir_type(target.ty))  # the value is computed before the target is stored
+    if statement.attempt:  # ?=: NULL unless the instance's FB implements the target's interface
+        blocks = ctx.checked.pous.values()
+        implementing = tuple(fb.name.upper() for fb in blocks if fb.kind == "FUNCTION_BLOCK" and fb.implements(target.ty.info))
+        lowered = Attempt(lowered, implementing, lowered.type)
     return [Assign(lower_access(target, ctx), lowered, origin)]
 
 

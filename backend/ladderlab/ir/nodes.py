@@ -143,7 +143,17 @@ class AddressOf:
     text: str
 
 
-Expr = Const | Var | Unary | Binary | Call | Convert | AddressOf
+@dataclass(frozen=True)
+class Attempt:
+    """``?=``'s value: the reference ``value`` (to an FB instance) when the instance's FB is one of ``blocks`` (those
+    implementing the target's interface), else NULL (IEC 61131-3 ed. 3, 6.6.6.7)."""
+
+    value: Expr
+    blocks: tuple[str, ...]
+    type: IrType
+
+
+Expr = Const | Var | Unary | Binary | Call | Convert | AddressOf | Attempt
 
 # --------------------------------------------------------------------------- statements
 

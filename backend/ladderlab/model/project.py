@@ -66,6 +66,9 @@ class Pou(BaseModel):
     body: str | LdBody | FbdBody | SfcBody = ""
     methods: list[Method] = Field(default_factory=list, description="Function blocks only: their METHODs.")
     extends: str | None = Field(default=None, description="Function blocks only: the function block it EXTENDS.")
+    implements: list[str] = Field(
+        default_factory=list, description="Function blocks only: the INTERFACEs (declared in the types) it IMPLEMENTS."
+    )
     abstract: bool = Field(default=False, description="Function blocks only: ABSTRACT, it cannot be instantiated.")
     final: bool = Field(default=False, description="Function blocks only: FINAL, no function block extends it.")
 

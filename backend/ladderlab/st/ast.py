@@ -202,9 +202,13 @@ LITERALS = (IntLit, RealLit, BoolLit, StringLit, TimeLit, TypedLit)
 
 @dataclass(slots=True)
 class Assign:
+    """``target := value``; ``attempt``: ``target ?= value`` (IEC 61131-3 ed. 3: NULL when the value's instance
+    does not implement the target's interface)."""
+
     target: Expr
     value: Expr
     span: Span = _span()
+    attempt: bool = False
 
 
 @dataclass(slots=True)
@@ -495,6 +499,16 @@ class MethodDecl:
 
 
 @dataclass(slots=True)
+class InterfaceDecl:
+    """``INTERFACE name [EXTENDS i, ...] METHOD prototypes END_INTERFACE``."""
+
+    name: str
+    extends: list[str]
+    methods: list[MethodDecl]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
 class Pou:
     kind: str  # PROGRAM, FUNCTION_BLOCK, FUNCTION
     name: str
@@ -579,7 +593,7 @@ class Configuration:
 class Source:
     """A whole ST file: TYPE blocks, VAR_GLOBAL blocks, POUs and configurations in source order."""
 
-    items: list[TypeBlock | VarBlock | Pou | Configuration]
+    items: list[TypeBlock | VarBlock | Pou | Configuration | InterfaceDecl]
     span: Span = _span()
 
     @property

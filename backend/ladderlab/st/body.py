@@ -18,6 +18,7 @@ from . import types as t
 from .calls import check_call
 from .cases import check_case
 from .context_typing import default_type, settle, untyped_leaves, untyped_result
+from .interfaces import check_attempt, interface_comparison
 from .methods import is_self, this_type, unknown_member_hint
 from .rules import EnumValue, assignable_or_report, constant_value, root_name
 from .symbols import CheckResult, PouInfo, Symbol
@@ -319,6 +320,8 @@ class BodyChecker:
             return t.TIME
         if op in ("+", "-") and isinstance(left, t.PointerType) and t.in_family(right, "ANY_INT"):
             return left  # pointer arithmetic in bytes (TYP-43)
+        if op in ("=", "<>") and interface_comparison(left, right):
+            return t.BOOL
         if op == "+" and isinstance(left, t.StringType) and isinstance(right, t.StringType):
             return left  # FUN-82 (Mosaic): '+' concatenates
         combined, verdict = t.common(left, right)
@@ -438,6 +441,9 @@ class BodyChecker:
             self.report("ST-TYPE-MISMATCH", f"the {keyword} condition must be BOOL, not {ty}", cond)
 
     def assign(self, stmt: ast.Assign) -> None:
+        if stmt.attempt:
+            check_attempt(self, stmt)
+            return
         target = self.target(stmt.target)
         value = self.expr(stmt.value, target)
         assignable_or_report(self, target, value, stmt.value, "assign")

@@ -92,7 +92,7 @@ def check_overrides(checker: Any, fbs: list[PouInfo]) -> None:
                 continue
             if inherited.method.final:
                 where("ST-DECL", f"{inherited.name} is FINAL: {fb.name} cannot override it", None)
-            difference = _signature_difference(inherited, method)
+            difference = signature_difference(inherited, method)
             if difference:
                 where("ST-DECL", f"{method.name} overrides {inherited.name} but {difference}", None)
         if fb.abstract:
@@ -108,7 +108,7 @@ def check_overrides(checker: Any, fbs: list[PouInfo]) -> None:
                 )
 
 
-def _signature_difference(base: PouInfo, method: PouInfo) -> str | None:
+def signature_difference(base: PouInfo, method: PouInfo) -> str | None:
     """What makes ``method`` unfit to override ``base`` (its parameters and result must be the same)."""
     mine, theirs = method.parameters(), base.parameters()
     if [(s.name.upper(), s.var_class) for s in mine] != [(s.name.upper(), s.var_class) for s in theirs]:

@@ -136,9 +136,13 @@ def method_callee(checker: Any, callee: ast.Expr) -> tuple[PouInfo, ast.Expr | N
 
     silent = BodyChecker(checker.result, caller, lambda *args, **kwargs: None)  # typed for real once it is a method
     base_type = silent.expr(copy.deepcopy(base))
-    if not isinstance(base_type, t.FbType) or base_type.pou is None:
+    if isinstance(base_type, t.InterfaceType):  # a call through an interface variable (st/interfaces.py)
+        owner = base_type.info
+    elif isinstance(base_type, t.FbType) and base_type.pou is not None:
+        owner = base_type.pou
+    else:
         return None
-    found = base_type.pou.find_method(callee.name)
+    found = owner.find_method(callee.name)
     if found is None:
         return None
     checker.expr(base)
@@ -220,7 +224,7 @@ def check_method_call(checker: Any, node: ast.Call, method: PouInfo, instance: a
         )
     if instance is not None and isinstance(node.callee, ast.Member):
         node.callee.ref = method
-    if caller is not None and (caller_fb is None or not caller_fb.derives_from(info.owner)):
+    if caller is not None and info.owner.kind != "INTERFACE" and (caller_fb is None or not caller_fb.derives_from(info.owner)):
         caller.calls.add(info.owner.name.upper())  # (its own FB's methods are no call of another POU)
     inputs = [Param(s.name, s.type, s.var_class == "VAR_IN_OUT") for s in method.parameters("VAR_INPUT", "VAR_IN_OUT")]
     name = f"{info.owner.name}.{info.name}" if instance is None else f"{print_expression(instance)}.{info.name}"

@@ -86,6 +86,7 @@ _SOFT_KEYWORDS = {
     "OVERRIDE",
     "EXTENDS",
     "IMPLEMENTS",
+    "INTERFACE",
 }
 # Keywords of test files only (start_tests): names like ``test`` or ``setup`` stay free in programs.
 TEST_KEYWORDS = frozenset(

@@ -140,7 +140,7 @@ def print_statements(statements: list[ast.Stmt], level: int = 0) -> str:
 def _statement(stmt: ast.Stmt, level: int) -> str:
     pad = INDENT * level
     if isinstance(stmt, ast.Assign):
-        return f"{pad}{_expr(stmt.target, 0)} := {_expr(stmt.value, 0)};\n"
+        return f"{pad}{_expr(stmt.target, 0)} {'?=' if stmt.attempt else ':='} {_expr(stmt.value, 0)};\n"
     if isinstance(stmt, ast.CallStmt):
         return f"{pad}{_expr(stmt.call, 0)};\n"
     if isinstance(stmt, ast.If):

@@ -57,7 +57,7 @@ def source_to_project(
     diagnostics = list(parsed.diagnostics)
     types, globals_, pous, configurations = [], [], [], []
     for item in parsed.ast.items:
-        if isinstance(item, ast.TypeBlock):
+        if isinstance(item, (ast.TypeBlock, ast.InterfaceDecl)):  # INTERFACEs live in the types text
             types.append(source.of(item))
         elif isinstance(item, ast.VarBlock):
             globals_.append(source.of(item))
@@ -90,6 +90,7 @@ def _pou(pou: ast.Pou, source: _Text, language: str) -> Pou:
         body=_keep_lines(*body),
         methods=[_method(method, source) for method in pou.methods],
         extends=pou.extends,
+        implements=pou.implements,
         abstract=pou.modifier == "ABSTRACT",
         final=pou.modifier == "FINAL",
     )

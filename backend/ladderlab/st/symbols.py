@@ -52,7 +52,7 @@ class PouInfo:
     """
 
     name: str
-    kind: str  # PROGRAM, FUNCTION_BLOCK, FUNCTION
+    kind: str  # PROGRAM, FUNCTION_BLOCK, FUNCTION (also a METHOD), INTERFACE (in CheckResult.interfaces only)
     language: str
     return_type: Type | None
     symbols: dict[str, Symbol] = field(default_factory=dict)
@@ -67,6 +67,7 @@ class PouInfo:
     base: PouInfo | None = None  # the function block this one EXTENDS (st/inheritance.py)
     abstract: bool = False  # an ABSTRACT function block: no instances, only FBs derived from it
     final: bool = False  # a FINAL function block: nothing EXTENDS it
+    interfaces: list[PouInfo] = field(default_factory=list)  # an FB: those it IMPLEMENTS; an INTERFACE: it EXTENDS
 
     def lineage(self) -> list[PouInfo]:
         """This function block, then the one it extends, and so on."""
@@ -82,9 +83,26 @@ class PouInfo:
         return any(pou is other for pou in self.lineage())
 
     def find_method(self, name: str) -> PouInfo | None:
-        """The method ``name`` of this FB, its own or the nearest inherited one."""
+        """The method ``name`` of this FB, its own or the nearest inherited one; of an INTERFACE, its own or one
+        of an interface it extends."""
         upper = name.upper()
+        if self.kind == "INTERFACE":
+            return next((i.methods[upper] for i in self.all_interfaces() if upper in i.methods), None)
         return next((pou.methods[upper] for pou in self.lineage() if upper in pou.methods), None)
+
+    def all_interfaces(self) -> list[PouInfo]:
+        """An INTERFACE and every one it extends; of an FB, every interface it or a base of it IMPLEMENTS."""
+        found: list[PouInfo] = [self] if self.kind == "INTERFACE" else []
+        pending = [i for pou in self.lineage() for i in pou.interfaces]
+        while pending:
+            interface = pending.pop(0)
+            if all(interface is not known for known in found):
+                found.append(interface)
+                pending += interface.interfaces
+        return found
+
+    def implements(self, interface: PouInfo) -> bool:
+        return any(known is interface for known in self.all_interfaces())
 
     def parameters(self, *classes: str) -> list[Symbol]:
         """The parameters of ``classes`` (default: all) in declaration order; a METHOD's ``THIS`` is none."""
@@ -117,6 +135,7 @@ class CheckResult:
     types: dict[str, TypeDef] = field(default_factory=dict)
     globals: dict[str, Symbol] = field(default_factory=dict)
     pous: dict[str, PouInfo] = field(default_factory=dict)
+    interfaces: dict[str, PouInfo] = field(default_factory=dict)  # INTERFACEs (kind INTERFACE) by upper-case name
     configuration: Any = None  # configuration.ConfigurationInfo: the instances and tasks the project runs
 
     @property
@@ -129,6 +148,6 @@ class CheckResult:
         found = self.pous.get(upper)
         if found is None and "." in upper:
             owner, _, method = upper.partition(".")
-            fb = self.pous.get(owner)
+            fb = self.pous.get(owner) or self.interfaces.get(owner)
             found = fb.methods.get(method) if fb is not None else None
         return found

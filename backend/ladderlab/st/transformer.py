@@ -172,6 +172,16 @@ class AstBuilder(Transformer):
     def fb_implements(self, c):
         return [str(x) for x in c[1:]]
 
+    def interface_decl(self, c):
+        methods = [x for x in c if isinstance(x, ast.MethodDecl)]
+        return ast.InterfaceDecl(str(c[1]), c[2] or [], methods, span_of(c))
+
+    def fb_extends_interfaces(self, c):
+        return [str(x) for x in c[1:]]
+
+    def assignment_attempt(self, c):
+        return ast.Assign(c[0], c[1], span_of(c), attempt=True)
+
     def method_modifier(self, c):
         return c[0].type
 

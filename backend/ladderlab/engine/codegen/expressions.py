@@ -154,6 +154,11 @@ class Expressions:
         """``REF(x)``: a ``runtime.Ref`` to the variable's ``(container, key)``."""
         return f"ll_Ref(*{self.ref(a.var)}, {a.text!r})"
 
+    def attempt(self, a: ir.Attempt) -> str:
+        """``?=``: the reference when its instance's class is one of the FBs implementing the interface, else NULL."""
+        classes = "".join(f"{names.pou_class(fb)}, " for fb in a.blocks)
+        return f"ll_attempt({self.expr(a.value)}, ({classes}))"
+
     def convert(self, c: ir.Convert) -> str:
         operand = self.expr(c.operand)
         source, target = self.scalar(c.source, "conversion"), self.scalar(c.type, "conversion")
@@ -338,6 +343,7 @@ _HANDLERS = {
     ir.Call: Expressions.call,
     ir.Convert: Expressions.convert,
     ir.AddressOf: Expressions.address_of,
+    ir.Attempt: Expressions.attempt,
 }
 
 

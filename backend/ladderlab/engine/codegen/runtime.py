@@ -259,6 +259,11 @@ def virtual_call(table: dict[type, Callable], inputs: int, *args: Any) -> object
     return table[type(container[key])](*args)
 
 
+def attempt(reference: Ref | None, classes: tuple[type, ...]) -> Ref | None:
+    """``?=``: ``reference`` when the instance it refers to is of one of ``classes``, else NULL (None)."""
+    return reference if reference is not None and type(reference.v) in classes else None
+
+
 def _addressable_fbs() -> dict[str, type]:
     return {
         name: type(name, (Addressable, cls), {"__slots__": (), "__doc__": cls.__doc__})
@@ -294,6 +299,7 @@ def namespace() -> dict[str, object]:
         ll_wb=[WATCHDOG_EVERY],  # the watchdog countdown of the running task (Watchdog, statements.py)
         ll_unset=UNSET,
         ll_virtual=virtual_call,
+        ll_attempt=attempt,
     )
     ns.update({names.std_fb(name): cls for name, cls in FB_CLASSES.items()})
     return ns
