@@ -2213,6 +2213,11 @@ export interface components {
        */
       final?: boolean;
       /**
+       * Implements
+       * @description Function blocks only: the INTERFACEs (declared in the types) it IMPLEMENTS.
+       */
+      implements?: string[];
+      /**
        * Kind
        * @enum {string}
        */
