@@ -163,7 +163,13 @@ def test_a_method_of_a_fb_derived_from_one_without_overrides_is_called_directly(
         ),
         (
             "FUNCTION_BLOCK ABSTRACT A\nEND_FUNCTION_BLOCK\nPROGRAM Main\nVAR a : A; END_VAR\nEND_PROGRAM\n",
-            [("ST-DECL", "Main/declarations", "A is ABSTRACT: declare an instance of a function block derived from it")],
+            [
+                (
+                    "ST-DECL",
+                    "Main/declarations",
+                    "A is ABSTRACT: declare an instance of a function block derived from it",
+                )
+            ],
         ),
         (
             "FUNCTION_BLOCK ABSTRACT A\nMETHOD ABSTRACT M : INT\nEND_METHOD\nEND_FUNCTION_BLOCK\n"
@@ -188,7 +194,13 @@ def test_a_method_of_a_fb_derived_from_one_without_overrides_is_called_directly(
         (
             "FUNCTION_BLOCK A\nVAR n : INT; END_VAR\nMETHOD PRIVATE Secret\nEND_METHOD\nEND_FUNCTION_BLOCK\n"
             "FUNCTION_BLOCK B EXTENDS A\nMETHOD M\nSecret();\nEND_METHOD\nEND_FUNCTION_BLOCK\n",
-            [("ST-NOT-ACCESSIBLE", "B.M/body", "the method A.Secret is PRIVATE: only its own function block may call it")],
+            [
+                (
+                    "ST-NOT-ACCESSIBLE",
+                    "B.M/body",
+                    "the method A.Secret is PRIVATE: only its own function block may call it",
+                )
+            ],
         ),
         (
             "FUNCTION x : INT\nx := THIS^.x;\nEND_FUNCTION\n",

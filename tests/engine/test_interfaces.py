@@ -130,7 +130,13 @@ def test_an_interface_as_a_function_block_input_and_a_null_call_is_a_located_run
         ),
         (
             "FUNCTION_BLOCK F IMPLEMENTS INamed\nMETHOD Id : INT\nEND_METHOD\nEND_FUNCTION_BLOCK\n",
-            [("ST-DECL", "F/declarations", "F.Id implements INamed.Id but its parameters differ (it takes VAR_INPUT offset)")],
+            [
+                (
+                    "ST-DECL",
+                    "F/declarations",
+                    "F.Id implements INamed.Id but its parameters differ (it takes VAR_INPUT offset)",
+                )
+            ],
         ),
         (
             "FUNCTION_BLOCK F IMPLEMENTS IShape\nMETHOD PRIVATE Area : INT\nEND_METHOD\nEND_FUNCTION_BLOCK\n",
@@ -138,7 +144,13 @@ def test_an_interface_as_a_function_block_input_and_a_null_call_is_a_located_run
         ),
         (
             "FUNCTION_BLOCK F IMPLEMENTS IShap\nEND_FUNCTION_BLOCK\n",
-            [("ST-UNKNOWN-TYPE", "F/declarations", "F IMPLEMENTS 'IShap', which is not an interface - did you mean 'IShape'?")],
+            [
+                (
+                    "ST-UNKNOWN-TYPE",
+                    "F/declarations",
+                    "F IMPLEMENTS 'IShap', which is not an interface - did you mean 'IShape'?",
+                )
+            ],
         ),
         (
             "PROGRAM Main\nVAR s : IShape; r : Rect; n : INamed; END_VAR\nn := s;\nEND_PROGRAM\n",

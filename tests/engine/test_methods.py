@@ -54,11 +54,7 @@ def run(text: str):
 
 
 def errors(text: str) -> list[tuple[str, str | None, int | None, int | None, str]]:
-    return [
-        (d.code, d.file, d.line, d.column, d.message)
-        for d in build(text).diagnostics
-        if d.severity == "error"
-    ]
+    return [(d.code, d.file, d.line, d.column, d.message) for d in build(text).diagnostics if d.severity == "error"]
 
 
 def test_a_method_call_in_an_expression_and_as_a_statement_scan_by_scan():
@@ -90,9 +86,7 @@ def test_each_instance_has_its_own_variables_and_the_method_sees_the_instance_in
 
 def test_a_private_method_is_called_by_a_sibling_method():
     sim = run(
-        COUNTER
-        + "PROGRAM Main\nVAR c : Counter; END_VAR\n"
-        + "c.Add(4);\nc.ClearAbove(limit := 10);\nEND_PROGRAM\n"
+        COUNTER + "PROGRAM Main\nVAR c : Counter; END_VAR\n" + "c.Add(4);\nc.ClearAbove(limit := 10);\nEND_PROGRAM\n"
     )
     expected = []
     count = 0
@@ -136,13 +130,7 @@ END_PROGRAM
 
 def test_access_specifiers_are_checked_at_compile_time_with_located_errors():
     text = COUNTER.replace("METHOD PRIVATE Clear", "METHOD PROTECTED Guarded\nEND_METHOD\nMETHOD PRIVATE Clear")
-    text += (
-        "PROGRAM Main\nVAR c : Counter; END_VAR\n"
-        "c.Clear();\n"
-        "   c.Guarded();\n"
-        "c.ClearAbove(1);\n"
-        "END_PROGRAM\n"
-    )
+    text += "PROGRAM Main\nVAR c : Counter; END_VAR\nc.Clear();\n   c.Guarded();\nc.ClearAbove(1);\nEND_PROGRAM\n"
     first = text.splitlines().index("c.Clear();") + 1  # the body's lines are the file's
     assert errors(text) == [
         (

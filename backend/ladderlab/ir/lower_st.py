@@ -109,7 +109,9 @@ def _assign(statement: ast.Assign, ctx: PouContext) -> list[Stmt]:
     lowered = lower_to(value, ctx, ctx.ir_type(target.ty))  # the value is computed before the target is stored
     if statement.attempt:  # ?=: NULL unless the instance's FB implements the target's interface
         blocks = ctx.checked.pous.values()
-        implementing = tuple(fb.name.upper() for fb in blocks if fb.kind == "FUNCTION_BLOCK" and fb.implements(target.ty.info))
+        implementing = tuple(
+            fb.name.upper() for fb in blocks if fb.kind == "FUNCTION_BLOCK" and fb.implements(target.ty.info)
+        )
         lowered = Attempt(lowered, implementing, lowered.type)
     return [Assign(lower_access(target, ctx), lowered, origin)]
 

@@ -35,7 +35,8 @@ def link_bases(checker: Any, project: Any) -> None:
             blocks = [p.name for p in pous.values() if p.kind == "FUNCTION_BLOCK" and p is not info]
             report(
                 "ST-UNKNOWN-TYPE",
-                f"{pou.name} EXTENDS '{pou.extends}', which is not a function block" + did_you_mean(pou.extends, blocks),
+                f"{pou.name} EXTENDS '{pou.extends}', which is not a function block"
+                + did_you_mean(pou.extends, blocks),
                 None,
             )
             continue

@@ -66,7 +66,9 @@ def declare_interfaces(checker: Any, decls: list[ast.InterfaceDecl]) -> None:
                     continue
                 checker.declare_block(block, prototype.symbols, checker_, prototype)
             if method.body:
-                report("ST-DECL", f"{decl.name}.{method.name} is a prototype: an interface's method has no body", method)
+                report(
+                    "ST-DECL", f"{decl.name}.{method.name} is a prototype: an interface's method has no body", method
+                )
             if set(method.modifiers) - {"PUBLIC"}:
                 report("ST-DECL", "an interface's methods are PUBLIC: they take no other modifier", method)
             info.methods[upper] = prototype
@@ -124,7 +126,9 @@ def check_attempt(checker: Any, stmt: ast.Assign) -> None:
     if not isinstance(target, t.InterfaceType):
         checker.report("ST-TYPE-MISMATCH", f"?= assigns to a variable of an interface's type, not to a {target}", stmt)
     elif not isinstance(value, (t.InterfaceType, t.FbType)) or (isinstance(value, t.FbType) and value.pou is None):
-        checker.report("ST-TYPE-MISMATCH", f"?= tries an FB instance or an interface variable, not a {value}", stmt.value)
+        checker.report(
+            "ST-TYPE-MISMATCH", f"?= tries an FB instance or an interface variable, not a {value}", stmt.value
+        )
 
 
 def interface_comparison(left: t.Type, right: t.Type) -> bool:

@@ -51,7 +51,9 @@ def declare_methods(checker: Any, fb: PouInfo, methods: list[Method]) -> list[tu
             continue
         info = PouInfo(f"{fb.name}.{method.name}", "FUNCTION", "st", None)
         info.method = MethodInfo(fb, method.name, method.access, method.final, method.abstract)
-        info.symbols[THIS] = Symbol(THIS, "VAR_IN_OUT", t.FbType(fb.name, pou=fb), ast.NamedType(fb.name), pou=info.name)
+        info.symbols[THIS] = Symbol(
+            THIS, "VAR_IN_OUT", t.FbType(fb.name, pou=fb), ast.NamedType(fb.name), pou=info.name
+        )
         fb.methods[upper] = info
         _declare(checker, info, method, report)
         declared.append((info, method))
@@ -75,7 +77,9 @@ def _declare(checker: Any, info: PouInfo, method: Method, report) -> None:
                 info.return_type = ERROR
         else:
             info.return_type = ERROR
-    parsed = parse_declarations(method.declarations, file=method_file(fb.name, method.name, "declarations"), pou=info.name)
+    parsed = parse_declarations(
+        method.declarations, file=method_file(fb.name, method.name, "declarations"), pou=info.name
+    )
     checker.result.diagnostics += parsed.diagnostics
     body_checker = BodyChecker(checker.result, info, report)
     for block in parsed.ast or []:
@@ -224,7 +228,11 @@ def check_method_call(checker: Any, node: ast.Call, method: PouInfo, instance: a
         )
     if instance is not None and isinstance(node.callee, ast.Member):
         node.callee.ref = method
-    if caller is not None and info.owner.kind != "INTERFACE" and (caller_fb is None or not caller_fb.derives_from(info.owner)):
+    if (
+        caller is not None
+        and info.owner.kind != "INTERFACE"
+        and (caller_fb is None or not caller_fb.derives_from(info.owner))
+    ):
         caller.calls.add(info.owner.name.upper())  # (its own FB's methods are no call of another POU)
     inputs = [Param(s.name, s.type, s.var_class == "VAR_IN_OUT") for s in method.parameters("VAR_INPUT", "VAR_IN_OUT")]
     name = f"{info.owner.name}.{info.name}" if instance is None else f"{print_expression(instance)}.{info.name}"

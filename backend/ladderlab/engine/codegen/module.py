@@ -6,8 +6,8 @@ from dataclasses import dataclass
 
 from ...ir import nodes as ir
 from ...model.diagnostics import Diagnostic
-from .context import CodegenError, ModuleContext, PausePoint, diagnostic
 from . import names
+from .context import CodegenError, ModuleContext, PausePoint, diagnostic
 from .layout import slots_source
 from .pou import emit_function, emit_inits, emit_instance_class, emit_located_inits, emit_reference_inits, emit_struct
 from .scope import global_owner

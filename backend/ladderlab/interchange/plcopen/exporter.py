@@ -30,8 +30,8 @@ from .blocks import Signatures
 from .body import NETWORK_GAP, Counter, write_network_list
 from .configuration import write_instances
 from .fbd_export import FbdExporter
-from .methods import oo_attributes, oo_texts, write_inheritance, write_methods
 from .ld_export import LdExporter
+from .methods import oo_attributes, oo_texts, write_inheritance, write_methods
 from .sfc_export import write_sfc_pou
 from .vars import parse_type_text, write_data_type, write_type, write_var_list
 from .xml_io import formatted_text, ladderlab_data, ladderlab_tests, q, sub, to_bytes
