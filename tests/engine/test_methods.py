@@ -179,7 +179,7 @@ def test_internal_and_public_methods_are_called_from_anywhere_in_the_project():
         (
             "METHOD n : INT\nEND_METHOD\n",
             "",
-            ("ST-DUPLICATE", "F.n/declarations", "'n' is both a variable and a method of F"),
+            ("ST-DUPLICATE", "F.n/declarations", "'n' is both a variable and a method or property of F"),
         ),
         (
             "METHOD M : INT\nM := n + undefined;\nEND_METHOD\n",

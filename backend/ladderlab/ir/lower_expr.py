@@ -35,7 +35,7 @@ from ..st.context_typing import FoldError, fold, literal_only
 from ..st.methods import is_self, is_super
 from ..st.printer import print_expression
 from ..st.rules import EnumValue
-from ..st.symbols import PouInfo, Symbol
+from ..st.symbols import PouInfo, PropertyRef, Symbol
 from .context import PouContext
 from .lower_types import LoweringError, byte_size, engine_value, ir_default
 from .nodes import AddressOf, Assign, Binary, Call, Const, Convert, Deref, Expr, FnCall, Index, Member, Unary, Var
@@ -97,6 +97,8 @@ def _lower(node: ast.Expr, ctx: PouContext, expected: IrType | None) -> Expr:
         return Const(None, ctx.ir_type(ty))
     if is_part(node):
         return _bit(node, ctx)
+    if isinstance(getattr(node, "ref", None), PropertyRef):
+        return property_call(node, ctx, None)
     if isinstance(node, (ast.Name, ast.DirectAddr, ast.Member, ast.Index, ast.Deref)):
         return lower_access(node, ctx)
     if isinstance(node, ast.Unary):
@@ -636,6 +638,25 @@ def _generic_type(function: stdlib.StdFunction, node: ast.Call, bound: dict[int,
     if shared is None:
         return ctx.ir_type(node.ty) if function.result == stdlib.T else Elementary("INT")
     return ctx.ir_type(t.concrete(shared))
+
+
+def property_call(node: ast.Name | ast.Member, ctx: PouContext, value: ast.Expr | None) -> Call:
+    """Reading a PROPERTY (``value`` None: its GET) or writing it (its SET with ``value``): a call of the accessor
+    on the instance (``inst.P``; ``P`` in its FB's own code: THIS), chosen by the instance's FB."""
+    prop: PropertyRef = node.ref
+    accessor = prop.setter if value is not None else prop.getter
+    if accessor is None:
+        raise LoweringError(
+            f"the property {prop.name} has no GET: it can be assigned, not read", node, code="ST-READONLY"
+        )
+    this = lower_access(node.base, ctx) if isinstance(node, ast.Member) else ctx.this_var()
+    if isinstance(this.type, Reference):
+        this = Var(this.scope, this.name, this.type.target, (*this.path, Deref()))
+    ty = ctx.types_for(accessor.name).type_of(prop.type)
+    args = (lower_to(value, ctx, ty),) if value is not None else ()
+    ctx.calls += 1
+    result = ty if value is None else BOOL
+    return Call(accessor.name.upper(), args, (ty,) if value is not None else (), result, True, (this,), True)
 
 
 def user_call(node: ast.Call, ctx: PouContext) -> Call:

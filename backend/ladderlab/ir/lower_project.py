@@ -102,7 +102,7 @@ def dispatch_tables(checked: CheckResult) -> dict[str, dict[str, str]]:
             table = {}
             for fb in blocks:
                 if fb.derives_from(owner) or fb.implements(owner):
-                    found = fb.find_method(method.method.name)
+                    found = fb.find_method(method.method.key)
                     if found is not None:
                         table[fb.name.upper()] = found.name.upper()
             if owner.kind == "INTERFACE" or any(name != method.name.upper() for name in table.values()):

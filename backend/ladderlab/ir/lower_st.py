@@ -14,7 +14,7 @@ from ..iec import stdlib
 from ..model.project import Pou as ModelPou
 from ..st import ast
 from ..st import types as t
-from ..st.symbols import PouInfo, Symbol
+from ..st.symbols import PouInfo, PropertyRef, Symbol
 from .context import PouContext
 from .lower_expr import (
     assign_part,
@@ -24,6 +24,7 @@ from .lower_expr import (
     lower_en_eno,
     lower_expr,
     lower_to,
+    property_call,
     refuse_unsupported_call,
     std_call,
     user_call,
@@ -102,6 +103,8 @@ def _assign(statement: ast.Assign, ctx: PouContext) -> list[Stmt]:
     target, value = statement.target, statement.value
     if is_part(target):
         return [_assign_bit(target, value, ctx, origin)]
+    if isinstance(getattr(target, "ref", None), PropertyRef):  # its SET
+        return [FnCall(property_call(target, ctx, value), None, origin)]
     if isinstance(value, ast.Call) and _has_en_eno(value) and _is_function(value.ref):
         call = _function_call(value, ctx)
         en, eno, after = lower_en_eno(value, ctx)

@@ -52,6 +52,30 @@ class Method(BaseModel):
     _normalise_texts = field_validator("declarations", "body", mode="before")(_strip_trailing_whitespace)
 
 
+class Accessor(BaseModel):
+    """A PROPERTY's GET or SET: its own variables and ST body (GET assigns the property's name, SET reads it)."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    declarations: str = Field(default="", description="ST text of its VAR...END_VAR blocks, as typed.")
+    body: str = Field(default="", description="ST statements.")
+
+    _normalise_texts = field_validator("declarations", "body", mode="before")(_strip_trailing_whitespace)
+
+
+class Property(BaseModel):
+    """A PROPERTY of a FUNCTION_BLOCK (CODESYS, IEC 61131-3 ed. 3 draft): read as ``inst.P`` through its GET,
+    written as ``inst.P := v`` through its SET; a missing accessor makes it write-only or read-only."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    name: str
+    type: str = Field(description="Its type, as written.")
+    access: MethodAccess = Field(default="PUBLIC", description="Who may read and write it.")
+    get: Accessor | None = None
+    set: Accessor | None = None
+
+
 class Pou(BaseModel):
     """A program organisation unit. ``body`` is ST or IL text, an ``LdBody``, an ``FbdBody`` or an ``SfcBody`` per
     ``language``."""
@@ -65,6 +89,7 @@ class Pou(BaseModel):
     declarations: str = Field(default="", description="ST text of the VAR...END_VAR blocks, as typed.")
     body: str | LdBody | FbdBody | SfcBody = ""
     methods: list[Method] = Field(default_factory=list, description="Function blocks only: their METHODs.")
+    properties: list[Property] = Field(default_factory=list, description="Function blocks only: their PROPERTYs.")
     extends: str | None = Field(default=None, description="Function blocks only: the function block it EXTENDS.")
     implements: list[str] = Field(
         default_factory=list, description="Function blocks only: the INTERFACEs (declared in the types) it IMPLEMENTS."

@@ -499,6 +499,27 @@ class MethodDecl:
 
 
 @dataclass(slots=True)
+class AccessorDecl:
+    """A PROPERTY's ``GET ... END_GET`` or ``SET ... END_SET``."""
+
+    kind: str  # GET or SET
+    var_blocks: list[VarBlock]
+    body: list[Stmt]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class PropertyDecl:
+    """``PROPERTY [access] name : type [GET ... END_GET] [SET ... END_SET] END_PROPERTY``."""
+
+    name: str
+    modifiers: list[str]
+    type: TypeSpec
+    accessors: list[AccessorDecl]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
 class InterfaceDecl:
     """``INTERFACE name [EXTENDS i, ...] METHOD prototypes END_INTERFACE``."""
 
@@ -518,6 +539,7 @@ class Pou:
     span: Span = _span()
     sfc: Sfc | None = None  # a body written in textual SFC (``body`` is then empty)
     methods: list[MethodDecl] = field(default_factory=list)  # a function block's METHODs
+    properties: list[PropertyDecl] = field(default_factory=list)  # a function block's PROPERTYs
     modifier: str | None = None  # a function block's FINAL or ABSTRACT
     extends: str | None = None  # the function block it EXTENDS
     implements: list[str] = field(default_factory=list)  # the INTERFACEs it IMPLEMENTS

@@ -19,9 +19,9 @@ from .calls import check_call
 from .cases import check_case
 from .context_typing import default_type, settle, untyped_leaves, untyped_result
 from .interfaces import check_attempt, interface_comparison
-from .methods import is_self, this_type, unknown_member_hint
+from .methods import check_property, is_self, own_property, this_type, unknown_member_hint
 from .rules import EnumValue, assignable_or_report, constant_value, root_name
-from .symbols import CheckResult, PouInfo, Symbol
+from .symbols import CheckResult, PouInfo, PropertyRef, Symbol
 from .types import ERROR, Type
 
 _PART_NAMES = {1: "bits", 8: "bytes", 16: "words", 32: "double words", 64: "long words"}
@@ -145,6 +145,9 @@ class BodyChecker:
         if self.pou is not None and self.pou.kind == "FUNCTION" and node.name.upper() == _result_name(self.pou):
             node.ref = self.pou
             return self.pou.return_type or ERROR
+        found = own_property(self, node)
+        if found is not None:
+            return found
         program = self.result.pous.get(node.name.upper())
         if program is not None and program.kind == "PROGRAM":  # its outputs and SFC steps are read (ST-60, SFC-06)
             node.ref = program
@@ -235,6 +238,10 @@ class BodyChecker:
             )
             return ERROR
         symbol = base.pou.symbols.get(upper)
+        if symbol is None:
+            found = check_property(self, node, base.pou)
+            if found is not None:
+                return found
         if symbol is None and base.pou.find_method(upper) is not None:
             self.report("ST-NOT-CALLABLE", f"'{node.name}' is a method of {base.name}: call it (add the ( ))", node)
             return ERROR
@@ -457,6 +464,8 @@ class BodyChecker:
             )
             return ERROR
         ty = self.expr(node)
+        if isinstance(getattr(node, "ref", None), PropertyRef) and node.ref.setter is None:
+            self.report("ST-READONLY", f"the property {node.ref.name} has no SET: it can be read, not assigned", node)
         root = root_name(node)
         if root is not None and root.ref is self.pou and self.pou is not None:  # F := ..., F[2] := ..., F.a := ...
             self.result_assigned = True

@@ -88,7 +88,7 @@ def check_overrides(checker: Any, fbs: list[PouInfo]) -> None:
             where = checker._reporter(f"{method.name}/declarations", method.name)
             if info.abstract and not fb.abstract:
                 where("ST-DECL", f"{fb.name} has the ABSTRACT method {info.name}, so it must be ABSTRACT too", None)
-            inherited = fb.base.find_method(info.name) if fb.base is not None else None
+            inherited = fb.base.find_method(info.key) if fb.base is not None else None
             if inherited is None:
                 continue
             if inherited.method.final:

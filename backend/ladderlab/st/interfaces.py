@@ -105,7 +105,7 @@ def check_implementations(checker: Any, blocks: list[PouInfo]) -> None:
         for interface in fb.all_interfaces():
             for prototype in interface.methods.values():
                 name = prototype.method.name
-                found = fb.find_method(name)
+                found = fb.find_method(prototype.method.key)
                 if found is None:
                     if not fb.abstract:
                         report("ST-DECL", f"{fb.name} implements {interface.name} but has no method {name}", None)

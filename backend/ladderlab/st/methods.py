@@ -13,12 +13,12 @@ import copy
 from typing import Any
 
 from ..iec.spelling import did_you_mean
-from ..model.project import Method
+from ..model.project import Method, Property
 from . import ast
 from . import types as t
 from .parser import parse_declarations, parse_statements, parse_type
 from .printer import print_expression
-from .symbols import THIS, MethodInfo, PouInfo, Symbol
+from .symbols import THIS, MethodInfo, PouInfo, PropertyRef, Symbol
 from .types import ERROR, VOID, Type
 
 # A method's variables are a function's: no memory between calls, so no VAR_EXTERNAL-free restriction beyond it.
@@ -30,31 +30,47 @@ def method_file(fb: str, method: str, part: str) -> str:
     return f"{fb}.{method}/{part}"
 
 
-def declare_methods(checker: Any, fb: PouInfo, methods: list[Method]) -> list[tuple[PouInfo, Method]]:
-    """Register and declare the methods of ``fb`` (``checker``: the ProjectChecker); their bodies are parsed and
-    checked later by ``check_method_body``, once every POU and method is declared."""
+def declare_methods(
+    checker: Any, fb: PouInfo, methods: list[Method], properties: list[Property] = ()
+) -> list[tuple[PouInfo, Method]]:
+    """Register and declare the methods of ``fb`` (``checker``: the ProjectChecker), and its PROPERTYs' accessors
+    as methods ``<P>.GET`` (returning the property's type) and ``<P>.SET`` (whose input is the property's name);
+    their bodies are parsed and checked later by ``check_method_body``, once every POU and method is declared."""
     declared = []
-    for method in methods:
-        report = checker._reporter(method_file(fb.name, method.name, "declarations"), f"{fb.name}.{method.name}")
-        upper = method.name.upper()
+    members = [(method, method.name, method.name) for method in methods]
+    for prop in properties:
+        for kind, accessor in (("GET", prop.get), ("SET", prop.set)):
+            if accessor is not None:
+                as_method = Method(
+                    name=prop.name,
+                    access=prop.access,
+                    return_type=prop.type if kind == "GET" else None,
+                    declarations=(f"VAR_INPUT {prop.name} : {prop.type}; END_VAR " if kind == "SET" else "")
+                    + accessor.declarations,
+                    body=accessor.body,
+                )
+                members.append((as_method, prop.name, f"{prop.name}.{kind}"))
+    for method, name, label in members:
+        report = checker._reporter(method_file(fb.name, label, "declarations"), f"{fb.name}.{label}")
+        key = label.upper()
         if fb.kind != "FUNCTION_BLOCK":
             report("ST-DECL", f"only a function block has methods, not a {fb.kind.lower().replace('_', ' ')}", None)
             continue
         from .checker import check_identifier  # the checker imports this module
 
-        check_identifier(method.name, None, report)
-        if upper in fb.methods:
-            report("ST-DUPLICATE", f"{fb.name} has two methods called '{method.name}'", None)
+        check_identifier(name, None, report)
+        if key in fb.methods or (key == name.upper() and any(k.startswith(f"{key}.") for k in fb.methods)):
+            report("ST-DUPLICATE", f"{fb.name} has two methods or properties called '{name}'", None)
             continue
-        if upper in fb.symbols:
-            report("ST-DUPLICATE", f"'{method.name}' is both a variable and a method of {fb.name}", None)
+        if name.upper() in fb.symbols:
+            report("ST-DUPLICATE", f"'{name}' is both a variable and a method or property of {fb.name}", None)
             continue
-        info = PouInfo(f"{fb.name}.{method.name}", "FUNCTION", "st", None)
-        info.method = MethodInfo(fb, method.name, method.access, method.final, method.abstract)
+        info = PouInfo(f"{fb.name}.{label}", "FUNCTION", "st", None)
+        info.method = MethodInfo(fb, name, method.access, method.final, method.abstract, key)
         info.symbols[THIS] = Symbol(
             THIS, "VAR_IN_OUT", t.FbType(fb.name, pou=fb), ast.NamedType(fb.name), pou=info.name
         )
-        fb.methods[upper] = info
+        fb.methods[key] = info
         _declare(checker, info, method, report)
         declared.append((info, method))
     return declared
@@ -64,8 +80,9 @@ def _declare(checker: Any, info: PouInfo, method: Method, report) -> None:
     from .body import BodyChecker
 
     fb = info.method.owner
+    label = info.name[len(fb.name) + 1 :]
     if method.return_type:
-        file = method_file(fb.name, method.name, "return_type")
+        file = method_file(fb.name, label, "return_type")
         parsed = parse_type(method.return_type, file=file, pou=info.name)
         checker.result.diagnostics += parsed.diagnostics
         if parsed.ast is not None:
@@ -77,9 +94,7 @@ def _declare(checker: Any, info: PouInfo, method: Method, report) -> None:
                 info.return_type = ERROR
         else:
             info.return_type = ERROR
-    parsed = parse_declarations(
-        method.declarations, file=method_file(fb.name, method.name, "declarations"), pou=info.name
-    )
+    parsed = parse_declarations(method.declarations, file=method_file(fb.name, label, "declarations"), pou=info.name)
     checker.result.diagnostics += parsed.diagnostics
     body_checker = BodyChecker(checker.result, info, report)
     for block in parsed.ast or []:
@@ -105,7 +120,7 @@ def check_method_body(checker: Any, info: PouInfo, method: Method) -> None:
     from .body import BodyChecker
 
     fb = info.method.owner
-    file = method_file(fb.name, method.name, "body")
+    file = method_file(fb.name, info.name[len(fb.name) + 1 :], "body")
     report = checker._reporter(file, info.name)
     parsed = parse_statements(method.body, file=file, pou=info.name)
     checker.result.diagnostics += parsed.diagnostics
@@ -186,6 +201,45 @@ def this_type(checker: Any, node: ast.Deref) -> Type | None:
     return base.ty
 
 
+def check_access(checker: Any, info: MethodInfo, node: ast.Expr, what: str, verb: str) -> None:
+    """PRIVATE: only the FB's own code may use it; PROTECTED: also the FBs derived from it (located error)."""
+    caller_fb = _own_fb(checker.pou)
+    if (info.access == "PRIVATE" and caller_fb is not info.owner) or (
+        info.access == "PROTECTED" and (caller_fb is None or not caller_fb.derives_from(info.owner))
+    ):
+        who = "its own function block" if info.access == "PRIVATE" else "its function block and those derived from it"
+        checker.report(
+            "ST-NOT-ACCESSIBLE",
+            f"{what} {info.owner.name}.{info.name} is {info.access}: only {who} may {verb} it",
+            node,
+        )
+
+
+def property_of(fb: PouInfo, name: str) -> PropertyRef | None:
+    """The PROPERTY ``name`` of ``fb`` (its own or inherited accessors), or None."""
+    getter, setter = fb.find_method(f"{name}.GET"), fb.find_method(f"{name}.SET")
+    if getter is None and setter is None:
+        return None
+    ty = getter.return_type if getter is not None else setter.symbols[name.upper()].type
+    return PropertyRef((getter or setter).method.name, ty, getter, setter)
+
+
+def check_property(checker: Any, node: ast.Name | ast.Member, fb: PouInfo) -> Type | None:
+    """A PROPERTY used by name (``inst.P``, or ``P`` in its FB's code): its type (None: no property)."""
+    found = property_of(fb, node.name)
+    if found is None:
+        return None
+    node.ref = found
+    check_access(checker, (found.getter or found.setter).method, node, "the property", "use")
+    return found.type or ERROR
+
+
+def own_property(checker: Any, node: ast.Name) -> Type | None:
+    """``P`` in the code of a function block (or its method) that has the PROPERTY ``P``."""
+    owner = _own_fb(checker.pou)
+    return check_property(checker, node, owner) if owner is not None else None
+
+
 def _own_fb(caller: PouInfo | None) -> PouInfo | None:
     """The function block whose instance ``THIS^`` is in ``caller``'s code: its own, or a method's FB."""
     if caller is not None and caller.method is not None:
@@ -210,18 +264,8 @@ def check_method_call(checker: Any, node: ast.Call, method: PouInfo, instance: a
     info = method.method
     node.ref = method
     caller = checker.pou
-    caller_fb = None
-    if caller is not None:
-        caller_fb = caller.method.owner if caller.method is not None else caller
-    if (info.access == "PRIVATE" and caller_fb is not info.owner) or (
-        info.access == "PROTECTED" and (caller_fb is None or not caller_fb.derives_from(info.owner))
-    ):
-        what = "its own function block" if info.access == "PRIVATE" else "its function block and those derived from it"
-        checker.report(
-            "ST-NOT-ACCESSIBLE",
-            f"the method {info.owner.name}.{info.name} is {info.access}: only {what} may call it",
-            node.callee,
-        )
+    caller_fb = _own_fb(caller)
+    check_access(checker, info, node.callee, "the method", "call")
     if info.abstract and instance is not None and is_super(instance):  # otherwise a derived FB's runs
         checker.report(
             "ST-NOT-CALLABLE", f"the method {info.owner.name}.{info.name} is ABSTRACT: it has no body to run", node

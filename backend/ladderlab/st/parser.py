@@ -87,6 +87,9 @@ _SOFT_KEYWORDS = {
     "EXTENDS",
     "IMPLEMENTS",
     "INTERFACE",
+    "PROPERTY",
+    "GET",
+    "SET",
 }
 # Keywords of test files only (start_tests): names like ``test`` or ``setup`` stay free in programs.
 TEST_KEYWORDS = frozenset(

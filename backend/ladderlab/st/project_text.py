@@ -8,7 +8,17 @@ examples can go through ``check_project`` exactly like edited projects.
 from __future__ import annotations
 
 from ..model.diagnostics import Diagnostic
-from ..model.project import Configuration, Method, Pou, ProgramInstance, Project, Resource, Task
+from ..model.project import (
+    Accessor,
+    Configuration,
+    Method,
+    Pou,
+    ProgramInstance,
+    Project,
+    Property,
+    Resource,
+    Task,
+)
 from . import ast
 from .il_parser import blank_il_bodies
 from .parser import parse_source
@@ -80,7 +90,8 @@ def source_to_project(
 
 def _pou(pou: ast.Pou, source: _Text, language: str) -> Pou:
     end = (pou.span.end_line, pou.span.end_column - len(f"END_{pou.kind}"))
-    declarations, body = _parts(pou, pou.var_blocks + pou.methods, end, source, language)
+    members = sorted(pou.methods + pou.properties, key=lambda m: (m.span.end_line, m.span.end_column))
+    declarations, body = _parts(pou, pou.var_blocks + members, end, source, language)
     return Pou(
         name=pou.name,
         kind=_KIND[pou.kind],
@@ -89,6 +100,7 @@ def _pou(pou: ast.Pou, source: _Text, language: str) -> Pou:
         declarations=_keep_lines(*declarations) if declarations[0] else "",
         body=_keep_lines(*body),
         methods=[_method(method, source) for method in pou.methods],
+        properties=[_property(prop, source) for prop in pou.properties],
         extends=pou.extends,
         implements=pou.implements,
         abstract=pou.modifier == "ABSTRACT",
@@ -125,6 +137,20 @@ def _method(method: ast.MethodDecl, source: _Text) -> Method:
         return_type=_type_text(method.return_type, source),
         declarations=_keep_lines(*declarations) if declarations[0] else "",
         body=_keep_lines(*body),
+    )
+
+
+def _property(prop: ast.PropertyDecl, source: _Text) -> Property:
+    accessors = {}
+    for accessor in prop.accessors:
+        end = (accessor.span.end_line, accessor.span.end_column - len(f"END_{accessor.kind}"))
+        declarations, body = _parts(accessor, accessor.var_blocks, end, source)
+        accessors[accessor.kind.lower()] = Accessor(
+            declarations=_keep_lines(*declarations) if declarations[0] else "", body=_keep_lines(*body)
+        )
+    access = [m for m in prop.modifiers if m in ("PUBLIC", "PRIVATE", "PROTECTED", "INTERNAL")]
+    return Property(
+        name=prop.name, type=_type_text(prop.type, source) or "", access=access[-1] if access else "PUBLIC", **accessors
     )
 
 

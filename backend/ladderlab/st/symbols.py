@@ -127,6 +127,21 @@ class MethodInfo:
     access: str = "PUBLIC"
     final: bool = False
     abstract: bool = False
+    key: str = ""  # its key in ``owner.methods``: the upper-case name; a PROPERTY's accessors ``<P>.GET`` / ``.SET``
+
+    def __post_init__(self) -> None:
+        self.key = self.key or self.name.upper()
+
+
+@dataclass(eq=False)
+class PropertyRef:
+    """A PROPERTY of a function block as ``Member.ref`` / ``Name.ref``: read through ``getter``, written through
+    ``setter`` (methods ``<FB>.<P>.GET`` / ``.SET``, st/properties.py; None: it has no such accessor)."""
+
+    name: str
+    type: Any
+    getter: PouInfo | None
+    setter: PouInfo | None
 
 
 @dataclass

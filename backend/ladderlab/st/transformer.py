@@ -158,10 +158,36 @@ class AstBuilder(Transformer):
         blocks = [x for x in rest if isinstance(x, ast.VarBlock)]
         methods = [x for x in rest if isinstance(x, ast.MethodDecl)]
         sfc = next((x for x in rest if isinstance(x, ast.Sfc)), None)
-        body = [x for x in rest if not isinstance(x, (ast.VarBlock, ast.Sfc, ast.MethodDecl))]
-        pou = ast.Pou("FUNCTION_BLOCK", name, None, blocks, body, span_of(c), sfc, methods, modifier, extends)
-        pou.implements = implements
-        return pou
+        properties = [x for x in rest if isinstance(x, ast.PropertyDecl)]
+        members = (ast.VarBlock, ast.Sfc, ast.MethodDecl, ast.PropertyDecl)
+        body = [x for x in rest if not isinstance(x, members)]
+        return ast.Pou(
+            "FUNCTION_BLOCK",
+            name,
+            None,
+            blocks,
+            body,
+            span_of(c),
+            sfc,
+            methods=methods,
+            properties=properties,
+            modifier=modifier,
+            extends=extends,
+            implements=implements,
+        )
+
+    def property_decl(self, c):
+        modifiers = [x for x in c[1:] if isinstance(x, str) and not isinstance(x, Token)]
+        name_at = 1 + len(modifiers)
+        accessors = [x for x in c[name_at + 2 :] if isinstance(x, ast.AccessorDecl)]
+        return ast.PropertyDecl(str(c[name_at]), modifiers, c[name_at + 1], accessors, span_of(c))
+
+    def property_get(self, c):
+        rest = c[1:-1]
+        blocks = [x for x in rest if isinstance(x, ast.VarBlock)]
+        return ast.AccessorDecl(c[0].type, blocks, [x for x in rest if not isinstance(x, ast.VarBlock)], span_of(c))
+
+    property_set = property_get
 
     def fb_modifier(self, c):
         return c[0].type

@@ -105,7 +105,7 @@ def test_path(name: str) -> str:
 
 
 #: The object orientation's fields of a POU, left out of its file when they hold their defaults.
-OO_KEYS = ("methods", "implements", "abstract", "final")
+OO_KEYS = ("methods", "properties", "implements", "abstract", "final")
 
 
 def pou_file(pou: Pou) -> tuple[str, str]:

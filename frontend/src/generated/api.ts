@@ -808,6 +808,24 @@ export type webhooks = Record<string, never>;
 export interface components {
   schemas: {
     /**
+     * Accessor
+     * @description A PROPERTY's GET or SET: its own variables and ST body (GET assigns the property's name, SET reads it).
+     */
+    Accessor: {
+      /**
+       * Body
+       * @description ST statements.
+       * @default
+       */
+      body?: string;
+      /**
+       * Declarations
+       * @description ST text of its VAR...END_VAR blocks, as typed.
+       * @default
+       */
+      declarations?: string;
+    };
+    /**
      * Bar
      * @description A level between ``min`` and ``max``, as a bar or a tank; red past an alarm limit.
      */
@@ -2235,6 +2253,11 @@ export interface components {
       /** Name */
       name: string;
       /**
+       * Properties
+       * @description Function blocks only: their PROPERTYs.
+       */
+      properties?: components["schemas"]["Property"][];
+      /**
        * Return Type
        * @description Functions only: the result type.
        */
@@ -2393,6 +2416,29 @@ export interface components {
       problems?: components["schemas"]["Diagnostic"][];
       /** Revision */
       revision: string | null;
+    };
+    /**
+     * Property
+     * @description A PROPERTY of a FUNCTION_BLOCK (CODESYS, IEC 61131-3 ed. 3 draft): read as ``inst.P`` through its GET,
+     *     written as ``inst.P := v`` through its SET; a missing accessor makes it write-only or read-only.
+     */
+    Property: {
+      /**
+       * Access
+       * @description Who may read and write it.
+       * @default PUBLIC
+       * @enum {string}
+       */
+      access?: "PUBLIC" | "PRIVATE" | "PROTECTED" | "INTERNAL";
+      get?: components["schemas"]["Accessor"] | null;
+      /** Name */
+      name: string;
+      set?: components["schemas"]["Accessor"] | null;
+      /**
+       * Type
+       * @description Its type, as written.
+       */
+      type: string;
     };
     /**
      * PushButton
@@ -3627,6 +3673,7 @@ export interface components {
   headers: never;
   pathItems: never;
 }
+export type Accessor = components["schemas"]["Accessor"];
 export type Bar = components["schemas"]["Bar"];
 export type Block = components["schemas"]["Block"];
 export type Box = components["schemas"]["Box"];
@@ -3689,6 +3736,7 @@ export type ProgramInstance = components["schemas"]["ProgramInstance"];
 export type Project = components["schemas"]["Project"];
 export type ProjectDocument = components["schemas"]["ProjectDocument"];
 export type ProjectSummary = components["schemas"]["ProjectSummary"];
+export type Property = components["schemas"]["Property"];
 export type PushButton = components["schemas"]["PushButton"];
 export type Reference = components["schemas"]["Reference"];
 export type ReferenceList = components["schemas"]["ReferenceList"];

@@ -14,7 +14,7 @@ import json
 import xml.etree.ElementTree as ET
 from collections.abc import Callable
 
-from ...model.project import Method, Pou
+from ...model.project import Method, Pou, Property
 from ...st.parser import parse_declarations
 from .vars import parse_type_text, write_type, write_var_list
 from .xml_io import Reader, formatted_text, info_text, local, sub, text_content
@@ -34,9 +34,19 @@ def oo_attributes(pou: Pou) -> dict[str, object]:
 
 
 def oo_texts(pou: Pou) -> dict[str, str]:
-    if not pou.methods:
-        return {}
-    return {"methods": json.dumps([m.model_dump(mode="json") for m in pou.methods])}
+    """The methods and properties as the model holds them (JSON), in LadderLab's ``<ll:info>``."""
+    texts = {}
+    if pou.methods:
+        texts["methods"] = json.dumps([m.model_dump(mode="json") for m in pou.methods])
+    if pou.properties:
+        texts["properties"] = json.dumps([p.model_dump(mode="json") for p in pou.properties])
+    return texts
+
+
+def read_properties(ours: ET.Element | None) -> list[Property]:
+    """LadderLab's own PROPERTYs (CODESYS's property data is not read yet)."""
+    carried = info_text(ours, "properties")
+    return [Property.model_validate(item) for item in json.loads(carried)] if carried else []
 
 
 def write_inheritance(interface_data: ET.Element, pou: Pou) -> None:
