@@ -793,9 +793,8 @@ class Simulation:
             else:
                 one = self._injections.pop(location.path, None)
                 lifted = [one] if one is not None else []
-            for where, fault in lifted:  # a plant's own variable gets its true value back
-                if self._plant_owned(where):
-                    where.set(self._roots, fault.lifted(where.get(self._roots)))
+            for where, fault in lifted:  # the signal as its writer (a plant, a panel, a test) last left it
+                where.set(self._roots, fault.lifted(where.get(self._roots)))
         scan = self.scan_count
         applied = (
             AppliedInput(event, scan, "halt", self._halt_pid, self._halts) if halted else AppliedInput(event, scan)

@@ -59,7 +59,7 @@ export function StPouView({ pou }: { pou: Pou }) {
           file={`${pou.name}/declarations`}
           diagnostics={diagnostics}
           completions={completions}
-          readOnly={readOnly}
+          readOnly={readOnly === null ? null : ""}
           label={`${pou.name} declarations`}
         />
       </div>

@@ -35,7 +35,8 @@ export interface StEditorProps {
   file: string;
   diagnostics: Diagnostic[];
   completions: StCompletions;
-  /** A reason the text cannot be edited now (online), or null. */
+  /** A reason the text cannot be edited now (online), shown above the text, or null; "" makes the text read-only
+   * without saying why again (a second editor of the same POU whose first one says it). */
   readOnly: string | null;
   label: string;
   /** Debugging (the body only): breakpoint lines, the halted line, and a gutter click. */

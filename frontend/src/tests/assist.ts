@@ -12,38 +12,14 @@ import { declaredSymbols, workingLibrary } from "../st/scope";
 import { CHECK_DELAY_MS } from "../st/useLiveCheck";
 import { useWorkspace } from "../project/store";
 import { testsApi, type TestsApi } from "./api";
+import { IEC } from "../generated/iec";
 
-/** The verbs of test files (docs/testing.md), with the signature shown in the completion list. */
-export const TEST_VERBS: readonly [string, string][] = [
-  ["ASSERT_EQ", "(actual, expected [, 'message'])"],
-  ["ASSERT_NEQ", "(actual, expected [, 'message'])"],
-  ["ASSERT_GT", "(actual, threshold [, 'message'])"],
-  ["ASSERT_LT", "(actual, threshold [, 'message'])"],
-  ["ASSERT_GE", "(actual, threshold [, 'message'])"],
-  ["ASSERT_LE", "(actual, threshold [, 'message'])"],
-  ["ASSERT_NEAR", "(actual, expected, tolerance [, 'message'])"],
-  ["ASSERT_TRUE", "(condition [, 'message'])"],
-  ["ASSERT_FALSE", "(condition [, 'message'])"],
-  ["ASSERT", "(condition)"],
-  ["ADVANCE_TIME", "(T#...)"],
-  ["RUN_SCANS", "(n)"],
-  ["RUN_FOR", "(T#...)"],
-  ["RUN_UNTIL", "(condition, T#timeout)"],
-  ["FORCE", "(variable, value)"],
-  ["RELEASE", "(variable)"],
-  ["WARM_START", ""],
-  ["COLD_START", ""],
-  ["MOCK", " instance"],
-  ["MOCK_FUNCTION", " f RETURNS value"],
-  ["MOCK_VERIFY_CALLED", "(instance)"],
-  ["MOCK_VERIFY_CALL_COUNT", "(instance, n)"],
-];
-
-const verbCompletions: Completion[] = TEST_VERBS.map(([label, args]) => ({
-  label,
+/** The verbs and MOCK statements of test files (docs/testing.md), from the backend's checker. */
+const verbCompletions: Completion[] = IEC.test_verbs.map(({ name, signature }) => ({
+  label: name,
   type: "keyword",
-  detail: args,
-  info: `test verb ${label}${args}`,
+  detail: signature,
+  info: `test verb ${name}${signature}`,
 }));
 
 /** Each PROGRAM of the working copy as a library entry whose members are all its variables. */
