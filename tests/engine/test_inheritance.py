@@ -12,6 +12,8 @@ from ladderlab.simulation.build import build_project
 from ladderlab.st.project_text import source_to_project
 from ladderlab.storage.workspace import Workspace
 
+from .oo_support import errors, run
+
 SHAPES = """
 FUNCTION_BLOCK ABSTRACT Shape
 VAR_INPUT scale : INT := 1; END_VAR
@@ -40,22 +42,6 @@ VAR_OUTPUT d : INT; END_VAR
 d := s.Describe();
 END_FUNCTION_BLOCK
 """
-
-
-def build(text: str):
-    project, diagnostics = source_to_project(text, "oo")
-    assert project is not None and [d.format() for d in diagnostics] == []
-    return build_project(project)
-
-
-def run(text: str):
-    result = build(text)
-    assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
-    return result.simulation()
-
-
-def errors(text: str) -> list[tuple[str, str | None, str]]:
-    return [(d.code, d.file, d.message) for d in build(text).diagnostics if d.severity == "error"]
 
 
 def test_dynamic_dispatch_through_a_base_in_out_and_from_the_base_methods_code_scan_by_scan():

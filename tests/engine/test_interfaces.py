@@ -12,6 +12,8 @@ from ladderlab.simulation.build import build_project
 from ladderlab.st.project_text import source_to_project
 from ladderlab.storage.workspace import Workspace
 
+from .oo_support import errors, run
+
 SHAPES = """
 INTERFACE IShape
 METHOD Area : INT
@@ -49,22 +51,6 @@ Volume := Area() * d;
 END_METHOD
 END_FUNCTION_BLOCK
 """
-
-
-def build(text: str):
-    project, diagnostics = source_to_project(text, "oo")
-    assert project is not None and [d.format() for d in diagnostics] == []
-    return build_project(project)
-
-
-def run(text: str):
-    result = build(text)
-    assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
-    return result.simulation()
-
-
-def errors(text: str) -> list[tuple[str, str | None, str]]:
-    return [(d.code, d.file, d.message) for d in build(text).diagnostics if d.severity == "error"]
 
 
 def test_calls_through_interface_variables_run_the_instances_methods_scan_by_scan():
@@ -163,7 +149,15 @@ def test_an_interface_as_a_function_block_input_and_a_null_call_is_a_located_run
         ),
         (
             "PROGRAM Main\nVAR s : IShape; x : INT; END_VAR\nx := s.Volume();\nEND_PROGRAM\n",
-            [("ST-UNKNOWN-MEMBER", "Main/body", "'Volume' cannot be selected from a IShape")],
+            [("ST-UNKNOWN-MEMBER", "Main/body", "IShape has no method 'Volume'")],
+        ),
+        (
+            "PROGRAM Main\nVAR s : ISolid; x : INT; END_VAR\nx := s.Aera();\nEND_PROGRAM\n",
+            [("ST-UNKNOWN-MEMBER", "Main/body", "ISolid has no method 'Aera' - did you mean 'Area'?")],
+        ),
+        (
+            "PROGRAM Main\nVAR s : IShape; x : INT; END_VAR\nx := s.Area;\nEND_PROGRAM\n",
+            [("ST-NOT-CALLABLE", "Main/body", "'Area' is a method of IShape: call it (add the ( ))")],
         ),
         (
             "PROGRAM Main\nVAR s : IShape; x : INT; END_VAR\nx ?= s;\nEND_PROGRAM\n",

@@ -13,6 +13,8 @@ from ladderlab.simulation.build import build_project
 from ladderlab.st.project_text import source_to_project
 from ladderlab.storage.workspace import Workspace
 
+from .oo_support import build, errors, run
+
 COUNTER = """
 FUNCTION_BLOCK Counter
 VAR_INPUT step : INT := 1; END_VAR
@@ -41,19 +43,7 @@ END_FUNCTION_BLOCK
 """
 
 
-def build(text: str):
-    project, diagnostics = source_to_project(text, "oo")
-    assert project is not None and [d.format() for d in diagnostics] == []
-    return build_project(project)
-
-
-def run(text: str):
-    result = build(text)
-    assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
-    return result.simulation()
-
-
-def errors(text: str) -> list[tuple[str, str | None, int | None, int | None, str]]:
+def located_errors(text: str) -> list[tuple[str, str | None, int | None, int | None, str]]:
     return [(d.code, d.file, d.line, d.column, d.message) for d in build(text).diagnostics if d.severity == "error"]
 
 
@@ -132,7 +122,7 @@ def test_access_specifiers_are_checked_at_compile_time_with_located_errors():
     text = COUNTER.replace("METHOD PRIVATE Clear", "METHOD PROTECTED Guarded\nEND_METHOD\nMETHOD PRIVATE Clear")
     text += "PROGRAM Main\nVAR c : Counter; END_VAR\nc.Clear();\n   c.Guarded();\nc.ClearAbove(1);\nEND_PROGRAM\n"
     first = text.splitlines().index("c.Clear();") + 1  # the body's lines are the file's
-    assert errors(text) == [
+    assert located_errors(text) == [
         (
             "ST-NOT-ACCESSIBLE",
             "Main/body",
@@ -203,7 +193,7 @@ def test_method_declaration_and_call_errors(method, call, expected):
         f"FUNCTION_BLOCK F\nVAR n : INT; END_VAR\n{method}END_FUNCTION_BLOCK\n"
         f"PROGRAM Main\nVAR f : F; x : INT; END_VAR\n{call}\nEND_PROGRAM\n"
     )
-    assert [(code, file, message) for code, file, _, _, message in errors(text)] == [expected]
+    assert errors(text) == [expected]
 
 
 def test_only_a_function_block_has_methods():

@@ -13,6 +13,8 @@ from ladderlab.interchange.st.project import export_project_st
 from ladderlab.simulation.build import build_project
 from ladderlab.st.project_text import source_to_project
 
+from .oo_support import build, errors
+
 TANK = """
 FUNCTION_BLOCK Tank
 VAR amount : INT; writes : INT; END_VAR
@@ -47,12 +49,6 @@ l := t.Level;
 f := t.Full;
 END_PROGRAM
 """
-
-
-def build(text: str):
-    project, diagnostics = source_to_project(text, "oo")
-    assert project is not None and [d.format() for d in diagnostics] == []
-    return build_project(project)
 
 
 def trace(project, scans: int) -> list[tuple]:
@@ -112,7 +108,7 @@ def test_a_derived_fb_overrides_a_property_and_the_base_code_uses_the_override()
 )
 def test_property_errors_are_located(program, expected):
     text = TANK + f"PROGRAM Main\nVAR t : Tank; END_VAR\n{program}\nEND_PROGRAM\n"
-    assert [(d.code, d.file, d.message) for d in build(text).diagnostics if d.severity == "error"] == [expected]
+    assert errors(text) == [expected]
 
 
 def test_a_private_property_is_refused_outside_its_fb():

@@ -201,6 +201,14 @@ class BodyChecker:
             return ERROR
         if isinstance(base, t.FbType):
             return self._fb_member(node, base)
+        if isinstance(base, t.InterfaceType):  # only its methods are called through it (st/interfaces.py)
+            if base.info.find_method(node.name) is not None:
+                self.report("ST-NOT-CALLABLE", f"'{node.name}' is a method of {base.name}: call it (add the ( ))", node)
+                return ERROR
+            names = [m.method.name for i in base.info.all_interfaces() for m in i.methods.values()]
+            message = f"{base.name} has no method '{node.name}'" + did_you_mean(node.name, names)
+            self.report("ST-UNKNOWN-MEMBER", message, node)
+            return ERROR
         part = partial_access(node.name)
         if part is not None and isinstance(base, t.Elementary) and base.category in ("bits", "int"):
             return self._part(node, base, *part)
