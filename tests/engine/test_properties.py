@@ -111,6 +111,23 @@ def test_property_errors_are_located(program, expected):
     assert errors(text) == [expected]
 
 
+def test_a_property_passed_by_reference_is_a_located_error():
+    text = TANK + (
+        "FUNCTION_BLOCK Inc\nVAR_IN_OUT x : INT; END_VAR\nx := x + 1;\nEND_FUNCTION_BLOCK\n"
+        "PROGRAM Main\nVAR t : Tank; i : Inc; END_VAR\ni(x := t.Level);\nEND_PROGRAM\n"
+    )
+    line = text.splitlines().index("i(x := t.Level);") + 1
+    assert [(d.code, d.file, d.line, d.message) for d in build(text).diagnostics if d.severity == "error"] == [
+        (
+            "IR-UNSUPPORTED",
+            "Main/body",
+            line,
+            "the property Level is not a variable: read it or assign it with ':=' in ST (its GET and SET run then), "
+            "it cannot be passed or written by reference here",
+        )
+    ]
+
+
 def test_a_private_property_is_refused_outside_its_fb():
     text = TANK.replace("PROPERTY Full : BOOL", "PROPERTY PRIVATE Full : BOOL") + (
         "PROGRAM Main\nVAR t : Tank; f : BOOL; END_VAR\nf := t.Full;\nEND_PROGRAM\n"

@@ -256,6 +256,12 @@ def lower_access(node: ast.Expr, ctx: PouContext) -> Var:
         if isinstance(node, ast.DirectAddr):  # used without a declaration: its size's default type (ST-13)
             return ctx.direct(node.address, ctx.ir_type(node.ty))
         raise LoweringError(None)
+    if isinstance(getattr(node, "ref", None), PropertyRef):  # read with lower_expr, assigned by lower_st._assign
+        raise LoweringError(
+            f"the property {node.ref.name} is not a variable: read it or assign it with ':=' in ST (its GET and SET "
+            "run then), it cannot be passed or written by reference here",
+            node,
+        )
     if isinstance(node, ast.Member) and not is_part(node):
         base = lower_access(node.base, ctx)
         return Var(base.scope, base.name, _member_type(node, base.type, ctx), (*base.path, Member(node.name.upper())))
