@@ -8,6 +8,8 @@ from __future__ import annotations
 
 import pytest
 
+from ladderlab.engine.simulation import Simulation
+from ladderlab.ir.lower_project import lower_project
 from ladderlab.simulation.build import build_project
 from ladderlab.st.project_text import source_to_project
 from ladderlab.storage.workspace import Workspace
@@ -227,3 +229,22 @@ def test_extends_abstract_and_final_survive_a_project_folder(tmp_path):
     sim = build_project(loaded).simulation()
     sim.cycle(1)
     assert sim.read("Main.d") == (1 * 1 * 1 * 6) * 10 + 1
+
+
+def test_a_breakpoint_inside_a_method_halts_there_also_when_reached_through_super():
+    """ON-03 inside methods (engine level): Square.Area runs for the square, and for the cube through SUPER^."""
+    text = SHAPES + (
+        "PROGRAM Main\nVAR sq : Square := (side := 2); cu : Cube := (side := 3); m : Measure; a, b : INT; END_VAR\n"
+        "m(s := sq, d => a);\nm(s := cu, d => b);\nEND_PROGRAM\n"
+    )
+    project, _ = source_to_project(text, "oo")
+    sim = Simulation(lower_project(project).program, variant="debug")
+    line = text.splitlines().index("Area := side * side * scale;") + 1
+    assert len(sim.set_breakpoint("SQUARE.AREA", line=line)) == 1  # one pause point: that statement
+    assert sim.cycle(1) == 0
+    halts = []
+    while sim.halted is not None:
+        halts.append((sim.halted.reason, sim.halted.origin.pou, sim.halted.origin.line))
+        sim.resume()
+    assert halts == [("breakpoint", "SQUARE.AREA", line)] * 2
+    assert (sim.read("MAIN.A"), sim.read("MAIN.B")) == (2 * 2 * 10 + 1, (3 * 3 * 6) * 10 + 1)
