@@ -219,3 +219,30 @@ def test_methods_survive_a_project_folder(tmp_path):
     sim = build_project(loaded).simulation()
     sim.cycle(2)
     assert sim.read("Main.c.count") == 6
+
+
+def test_an_ld_box_and_an_fbd_block_call_a_method_of_an_instance():
+    """In LD and FBD a method call is a box ``inst.Method`` (CODESYS): EN gates it, OUT is its result."""
+    from tests.ir.diagram_support import blk, box, contact, fbd_pou, inp, ld_pou, net, out, rung
+
+    project, _ = source_to_project(COUNTER, "ld")
+    adds = box("b1", "c.Add", en=True, n="5", outputs={"OUT": "r"})
+    ld_main = ld_pou("Main", "VAR c : Counter; go : BOOL; r : INT; END_VAR", rung("n1", contact("k", "go"), adds))
+    network = net(
+        "n1",
+        [inp("i", "3"), blk("a", "c.Add"), blk("b", "c.Twice"), out("o", "f")],
+        [("i.OUT", "a.n"), ("b.OUT", "o.IN")],
+        order=["a", "b", "o"],
+    )
+    project.pous += [ld_main, fbd_pou("Side", "VAR c : Counter; f : INT; END_VAR", network)]
+    result = build_project(project)
+    assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
+    sim = result.simulation()
+    sim.cycle(1)
+    assert (sim.read("Main.r"), sim.read("Main.c.count")) == (0, 0)  # EN FALSE: not called
+    sim.write("Main.go", True)
+    for count in (5, 10):
+        sim.cycle(1)
+        assert (sim.read("Main.r"), sim.read("Main.c.count")) == (count, count)
+    side = 3 * (3 + 2)  # each of the three scans: Add(3), then Twice (Add(1) twice), in the network's order
+    assert sim.read("Side.c.count") == side and sim.read("Side.f") == side
