@@ -246,3 +246,26 @@ def test_an_ld_box_and_an_fbd_block_call_a_method_of_an_instance():
         assert (sim.read("Main.r"), sim.read("Main.c.count")) == (count, count)
     side = 3 * (3 + 2)  # each of the three scans: Add(3), then Twice (Add(1) twice), in the network's order
     assert sim.read("Side.c.count") == side and sim.read("Side.f") == side
+
+
+def test_methods_that_call_themselves_are_refused_also_through_an_override():
+    """POU-02: through a sibling, and through the override a dispatched call may run."""
+    direct = (
+        "FUNCTION_BLOCK F\nMETHOD M : INT\nM := M2();\nEND_METHOD\nMETHOD M2 : INT\nM2 := M();\nEND_METHOD\n"
+        "END_FUNCTION_BLOCK\n"
+    )
+    assert errors(direct) == [
+        ("ST-RECURSION", "F.M/body", "recursive call F.M -> F.M2 -> F.M: methods must not call themselves (POU-02)")
+    ]
+    dispatched = (
+        "FUNCTION_BLOCK A\nMETHOD Area : INT\nEND_METHOD\nMETHOD Show : INT\nShow := Area();\nEND_METHOD\n"
+        "END_FUNCTION_BLOCK\n"
+        "FUNCTION_BLOCK B EXTENDS A\nMETHOD Area : INT\nArea := Show();\nEND_METHOD\nEND_FUNCTION_BLOCK\n"
+    )
+    assert errors(dispatched) == [
+        (
+            "ST-RECURSION",
+            "A.Show/body",
+            "recursive call A.Show -> B.Area -> A.Show: methods must not call themselves (POU-02)",
+        )
+    ]

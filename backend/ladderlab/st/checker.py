@@ -24,7 +24,7 @@ from .il_check import check_il_body
 from .il_parser import IlBody, parse_il
 from .inheritance import abstract_instance, check_overrides, link_bases
 from .interfaces import check_implementations, declare_interfaces, link_implements, register_interfaces
-from .methods import check_method_body, declare_methods
+from .methods import check_method_body, check_method_recursion, declare_methods
 from .parser import (
     keywords,
     parse_declarations,
@@ -130,6 +130,7 @@ class ProjectChecker:
             self._check_initial_values(pou)
         for info, method in methods:
             check_method_body(self, info, method)
+        check_method_recursion(self, [info for info, _ in methods], blocks)
         for pou in self.project.pous:
             info = self.result.pous.get(pou.name.upper())
             if info is not None and info.language in ("st", "il") and bodies.get(pou.name) is not None:

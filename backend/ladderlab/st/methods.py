@@ -272,6 +272,8 @@ def check_method_call(checker: Any, node: ast.Call, method: PouInfo, instance: a
         )
     if instance is not None and isinstance(node.callee, ast.Member):
         node.callee.ref = method
+    if caller is not None:
+        caller.methods_called.append(method)
     if (
         caller is not None
         and info.owner.kind != "INTERFACE"
@@ -287,3 +289,35 @@ def check_method_call(checker: Any, node: ast.Call, method: PouInfo, instance: a
 def unknown_member_hint(fb: PouInfo, name: str) -> str:
     """A did-you-mean over an FB's pins and methods."""
     return did_you_mean(name, [s.name for s in fb.parameters()] + [m.method.name for m in fb.methods.values()])
+
+
+def check_method_recursion(checker: Any, methods: list[PouInfo], blocks: list[PouInfo]) -> None:
+    """POU-02 for methods: no method may call itself, directly or through others - counting every method a
+    dispatched call may run (the overrides in derived FBs, the implementations of an interface's method)."""
+
+    def runs(called: PouInfo) -> list[PouInfo]:
+        owner, key = called.method.owner, called.method.key
+        found = [fb.find_method(key) for fb in blocks if fb.derives_from(owner) or fb.implements(owner)]
+        return [called, *(m for m in found if m is not None and m is not called)]
+
+    done: set[int] = set()
+
+    def visit(method: PouInfo, path: list[PouInfo]) -> bool:
+        """Depth first from ``method``; True once a cycle is reported (one report is enough)."""
+        for called in method.methods_called:
+            for target in runs(called):
+                if target in path:
+                    cycle = " -> ".join(m.name for m in [*path[path.index(target) :], target])
+                    fb = target.method.owner
+                    file = method_file(fb.name, target.name[len(fb.name) + 1 :], "body")
+                    message = f"recursive call {cycle}: methods must not call themselves (POU-02)"
+                    checker._reporter(file, target.name)("ST-RECURSION", message, None)
+                    return True
+                if id(target) not in done and visit(target, [*path, target]):
+                    return True
+        done.add(id(method))
+        return False
+
+    for method in methods:
+        if id(method) not in done and visit(method, [method]):
+            return
