@@ -80,7 +80,8 @@ def test_a_property_is_read_through_get_and_written_through_set_scan_by_scan():
 
 def test_a_derived_fb_overrides_a_property_and_the_base_code_uses_the_override():
     text = TANK + (
-        "FUNCTION_BLOCK BigTank EXTENDS Tank\nPROPERTY Full : BOOL\nGET\nFull := Level >= 50;\nEND_GET\n"
+        "FUNCTION_BLOCK BigTank EXTENDS Tank\nVAR_OUTPUT strict : BOOL; END_VAR\n"
+        "PROPERTY Full : BOOL\nGET\nFull := Level >= 50;\nstrict := SUPER^.Full;\nEND_GET\n"
         "END_PROPERTY\nEND_FUNCTION_BLOCK\n"
         "FUNCTION_BLOCK Watch\nVAR_IN_OUT t : Tank; END_VAR\nVAR_OUTPUT full : BOOL; END_VAR\nfull := t.Full;\n"
         "END_FUNCTION_BLOCK\n"
@@ -91,6 +92,7 @@ def test_a_derived_fb_overrides_a_property_and_the_base_code_uses_the_override()
     assert sim.read("Main.f") is False  # 30
     sim.cycle(1)
     assert sim.read("Main.f") is True  # 60 >= 50: BigTank's Full, though Watch sees a Tank
+    assert sim.read("Main.b.strict") is False  # SUPER^.Full: Tank's own (60 < 100)
 
 
 @pytest.mark.parametrize(
@@ -145,3 +147,13 @@ def test_properties_survive_the_st_export_and_plcopen():
     assert diagnostics == [] and trace(again, 3) == expected(3)
     imported = import_plcopen(export_plcopen(project), name="oo")
     assert imported.diagnostics == [] and imported.project == project
+
+
+def test_a_property_whose_get_calls_back_into_it_is_refused():
+    text = (
+        "FUNCTION_BLOCK F\nMETHOD M : INT\nM := P;\nEND_METHOD\n"
+        "PROPERTY P : INT\nGET\nP := M();\nEND_GET\nEND_PROPERTY\nEND_FUNCTION_BLOCK\n"
+    )
+    assert errors(text) == [
+        ("ST-RECURSION", "F.M/body", "recursive call F.M -> F.P.GET -> F.M: methods must not call themselves (POU-02)")
+    ]

@@ -662,7 +662,8 @@ def property_call(node: ast.Name | ast.Member, ctx: PouContext, value: ast.Expr 
     args = (lower_to(value, ctx, ty),) if value is not None else ()
     ctx.calls += 1
     result = ty if value is None else BOOL
-    return Call(accessor.name.upper(), args, (ty,) if value is not None else (), result, True, (this,), True)
+    virtual = not (isinstance(node, ast.Member) and is_super(node.base))  # SUPER^.P: the base's accessor
+    return Call(accessor.name.upper(), args, (ty,) if value is not None else (), result, True, (this,), virtual)
 
 
 def user_call(node: ast.Call, ctx: PouContext) -> Call:

@@ -231,6 +231,9 @@ def check_property(checker: Any, node: ast.Name | ast.Member, fb: PouInfo) -> Ty
         return None
     node.ref = found
     check_access(checker, (found.getter or found.setter).method, node, "the property", "use")
+    if checker.pou is not None:  # (reading or writing: either accessor may run; SUPER^.P is not dispatched)
+        dispatched = not (isinstance(node, ast.Member) and is_super(node.base))
+        checker.pou.methods_called += [(m, dispatched) for m in (found.getter, found.setter) if m is not None]
     return found.type or ERROR
 
 
@@ -272,8 +275,8 @@ def check_method_call(checker: Any, node: ast.Call, method: PouInfo, instance: a
         )
     if instance is not None and isinstance(node.callee, ast.Member):
         node.callee.ref = method
-    if caller is not None:
-        caller.methods_called.append(method)
+    if caller is not None:  # through SUPER^ exactly that method runs; otherwise any override may
+        caller.methods_called.append((method, instance is None or not is_super(instance)))
     if (
         caller is not None
         and info.owner.kind != "INTERFACE"
@@ -295,17 +298,19 @@ def check_method_recursion(checker: Any, methods: list[PouInfo], blocks: list[Po
     """POU-02 for methods: no method may call itself, directly or through others - counting every method a
     dispatched call may run (the overrides in derived FBs, the implementations of an interface's method)."""
 
-    def runs(called: PouInfo) -> list[PouInfo]:
+    def runs(called: PouInfo, dispatched: bool) -> list[PouInfo]:
         owner, key = called.method.owner, called.method.key
-        found = [fb.find_method(key) for fb in blocks if fb.derives_from(owner) or fb.implements(owner)]
+        found = [
+            fb.find_method(key) for fb in blocks if dispatched and (fb.derives_from(owner) or fb.implements(owner))
+        ]
         return [called, *(m for m in found if m is not None and m is not called)]
 
     done: set[int] = set()
 
     def visit(method: PouInfo, path: list[PouInfo]) -> bool:
         """Depth first from ``method``; True once a cycle is reported (one report is enough)."""
-        for called in method.methods_called:
-            for target in runs(called):
+        for called, dispatched in method.methods_called:
+            for target in runs(called, dispatched):
                 if target in path:
                     cycle = " -> ".join(m.name for m in [*path[path.index(target) :], target])
                     fb = target.method.owner

@@ -68,7 +68,7 @@ class PouInfo:
     abstract: bool = False  # an ABSTRACT function block: no instances, only FBs derived from it
     final: bool = False  # a FINAL function block: nothing EXTENDS it
     interfaces: list[PouInfo] = field(default_factory=list)  # an FB: those it IMPLEMENTS; an INTERFACE: it EXTENDS
-    methods_called: list[PouInfo] = field(default_factory=list)  # the METHODs its code calls (as written)
+    methods_called: list[tuple[PouInfo, bool]] = field(default_factory=list)  # METHODs it calls, dispatched or not
 
     def lineage(self) -> list[PouInfo]:
         """This function block, then the one it extends, and so on."""
