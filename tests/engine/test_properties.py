@@ -13,7 +13,7 @@ from ladderlab.interchange.st.project import export_project_st
 from ladderlab.simulation.build import build_project
 from ladderlab.st.project_text import source_to_project
 
-from .oo_support import build, errors
+from .oo_support import build, errors, run
 
 TANK = """
 FUNCTION_BLOCK Tank
@@ -156,4 +156,18 @@ def test_a_property_whose_get_calls_back_into_it_is_refused():
     )
     assert errors(text) == [
         ("ST-RECURSION", "F.M/body", "recursive call F.M -> F.P.GET -> F.M: methods must not call themselves (POU-02)")
+    ]
+
+
+def test_get_and_set_stay_usable_as_names_and_an_accessor_must_be_get_or_set():
+    sim = run(
+        "FUNCTION Get : INT\nGet := 7;\nEND_FUNCTION\nPROGRAM Main\nVAR set : INT; END_VAR\nset := Get();\nEND_PROGRAM\n"
+    )
+    sim.cycle(1)
+    assert sim.read("Main.set") == 7
+    project, diagnostics = source_to_project(
+        "FUNCTION_BLOCK F\nPROPERTY P : INT\nFETCH\nP := 1;\nEND_GET\nEND_PROPERTY\nEND_FUNCTION_BLOCK\n", "oo"
+    )
+    assert [(d.code, d.line, d.message) for d in diagnostics] == [
+        ("ST-PARSE", 3, "a property holds GET ... END_GET and SET ... END_SET, not 'FETCH'")
     ]

@@ -88,8 +88,6 @@ _SOFT_KEYWORDS = {
     "IMPLEMENTS",
     "INTERFACE",
     "PROPERTY",
-    "GET",
-    "SET",
 }
 # Keywords of test files only (start_tests): names like ``test`` or ``setup`` stay free in programs.
 TEST_KEYWORDS = frozenset(

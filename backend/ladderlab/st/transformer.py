@@ -182,12 +182,13 @@ class AstBuilder(Transformer):
         accessors = [x for x in c[name_at + 2 :] if isinstance(x, ast.AccessorDecl)]
         return ast.PropertyDecl(str(c[name_at]), modifiers, c[name_at + 1], accessors, span_of(c))
 
-    def property_get(self, c):
+    def property_accessor(self, c):
+        kind = str(c[0]).upper()
+        if kind not in ("GET", "SET") or c[-1].type != f"END_{kind}":
+            raise StSyntaxError(f"a property holds GET ... END_GET and SET ... END_SET, not '{c[0]}'", span_of(c))
         rest = c[1:-1]
         blocks = [x for x in rest if isinstance(x, ast.VarBlock)]
-        return ast.AccessorDecl(c[0].type, blocks, [x for x in rest if not isinstance(x, ast.VarBlock)], span_of(c))
-
-    property_set = property_get
+        return ast.AccessorDecl(kind, blocks, [x for x in rest if not isinstance(x, ast.VarBlock)], span_of(c))
 
     def fb_modifier(self, c):
         return c[0].type
