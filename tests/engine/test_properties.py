@@ -171,3 +171,8 @@ def test_get_and_set_stay_usable_as_names_and_an_accessor_must_be_get_or_set():
     assert [(d.code, d.line, d.message) for d in diagnostics] == [
         ("ST-PARSE", 3, "a property holds GET ... END_GET and SET ... END_SET, not 'FETCH'")
     ]
+
+
+def test_a_property_and_a_method_of_one_name_are_refused():
+    text = "FUNCTION_BLOCK F\nMETHOD P : INT\nEND_METHOD\nPROPERTY P : INT\nGET\nEND_GET\nEND_PROPERTY\nEND_FUNCTION_BLOCK\n"
+    assert errors(text) == [("ST-DUPLICATE", "F.P.GET/declarations", "F has two methods or properties called 'P'")]

@@ -21,7 +21,7 @@ from .printer import print_expression
 from .symbols import THIS, MethodInfo, PouInfo, PropertyRef, Symbol
 from .types import ERROR, VOID, Type
 
-# A method's variables are a function's: no memory between calls, so no VAR_EXTERNAL-free restriction beyond it.
+# The VAR blocks a method may declare (its VAR, like a function's, is fresh in every call; VAR_OUTPUT: not yet).
 _ALLOWED = {"VAR", "VAR_TEMP", "VAR_INPUT", "VAR_IN_OUT", "VAR_EXTERNAL"}
 
 
@@ -36,6 +36,8 @@ def declare_methods(
     """Register and declare the methods of ``fb`` (``checker``: the ProjectChecker), and its PROPERTYs' accessors
     as methods ``<P>.GET`` (returning the property's type) and ``<P>.SET`` (whose input is the property's name);
     their bodies are parsed and checked later by ``check_method_body``, once every POU and method is declared."""
+    from .checker import check_identifier  # the checker imports this module
+
     declared = []
     members = [(method, method.name, method.name) for method in methods]
     for prop in properties:
@@ -56,13 +58,12 @@ def declare_methods(
         if fb.kind != "FUNCTION_BLOCK":
             report("ST-DECL", f"only a function block has methods, not a {fb.kind.lower().replace('_', ' ')}", None)
             continue
-        from .checker import check_identifier  # the checker imports this module
-
         check_identifier(name, None, report)
-        if key in fb.methods or (key == name.upper() and any(k.startswith(f"{key}.") for k in fb.methods)):
+        upper = name.upper()
+        if key in fb.methods or (key != upper and upper in fb.methods):  # (methods are declared first)
             report("ST-DUPLICATE", f"{fb.name} has two methods or properties called '{name}'", None)
             continue
-        if name.upper() in fb.symbols:
+        if upper in fb.symbols:
             report("ST-DUPLICATE", f"'{name}' is both a variable and a method or property of {fb.name}", None)
             continue
         info = PouInfo(f"{fb.name}.{label}", "FUNCTION", "st", None)
