@@ -52,6 +52,8 @@ _OPERATORS = {
     "**": "EXPT",
     "AND": "AND",
     "OR": "OR",
+    "AND_THEN": "AND_THEN",
+    "OR_ELSE": "OR_ELSE",
     "XOR": "XOR",
     "=": "EQ",
     "<>": "NE",
@@ -243,7 +245,17 @@ def _program_instance(node: ast.Expr, program: PouInfo, ctx: PouContext) -> Var:
 
 
 def lower_access(node: ast.Expr, ctx: PouContext) -> Var:
-    """A variable access path: a declared variable, then ``[i]`` and ``.field`` / ``.PIN`` selectors."""
+    """A variable access path: a declared variable, then ``[i]`` and ``.field`` / ``.PIN`` selectors; a CODESYS
+    REFERENCE TO read through (the checker marked it ``deref``) gets the ``^`` it stands for."""
+    var = _access(node, ctx)
+    if getattr(node, "deref", None):
+        if not isinstance(var.type, Reference):
+            raise LoweringError(None)
+        return Var(var.scope, var.name, var.type.target, (*var.path, Deref()))
+    return var
+
+
+def _access(node: ast.Expr, ctx: PouContext) -> Var:
     if isinstance(node, (ast.Name, ast.DirectAddr)):
         ref = node.ref
         if isinstance(ref, Symbol):
@@ -378,6 +390,8 @@ def _binary(node: ast.Binary, ctx: PouContext) -> Expr:
     left_ty, right_ty = node.left.ty, node.right.ty
     if op == "EXPT":
         return _power(node, ctx)
+    if op in ("AND_THEN", "OR_ELSE"):
+        return _short_circuit(node, op, ctx)
     if t.category(left_ty) == "string" and op == "ADD":  # FUN-82: '+' concatenates
         return _function("CONCAT", [node.left, node.right], ctx, ctx.ir_type(node.ty))
     if op in ("ADD", "SUB", "MUL", "DIV") and {t.category(left_ty), t.category(right_ty)} & _TIME_CATEGORIES:
@@ -393,6 +407,18 @@ def _binary(node: ast.Binary, ctx: PouContext) -> Expr:
     else:
         operand = result = ctx.ir_type(node.ty)
     return Binary(op, lower_to(node.left, ctx, operand), lower_to(node.right, ctx, operand), result)  # type: ignore[arg-type]
+
+
+def _short_circuit(node: ast.Binary, op: str, ctx: PouContext) -> Expr:
+    """AND_THEN / OR_ELSE: the right operand may not run, so nothing of it is evaluated ahead of the statement
+    (a call with EN/ENO there is IR-EN-CALL, as in a WHILE condition)."""
+    left = lower_to(node.left, ctx, BOOL)
+    saved, ctx.lifts = ctx.lifts, None
+    try:
+        right = lower_to(node.right, ctx, BOOL)
+    finally:
+        ctx.lifts = saved
+    return Binary(op, left, right, BOOL)  # type: ignore[arg-type]  # op is AND_THEN or OR_ELSE
 
 
 def _reference_operation(node: ast.Binary, op: str, ctx: PouContext) -> Expr:
@@ -465,6 +491,9 @@ def _call(node: ast.Call, ctx: PouContext) -> Expr:
         return _sizeof(node, ctx, ctx.ir_type(node.ty))
     if node.ref is None and isinstance(node.callee, ast.Name) and node.callee.name.upper() in ("ADR", "REF"):
         return _address_of(node, ctx)
+    if node.ref is None and isinstance(node.callee, ast.Name) and node.callee.name.upper() == "__ISVALIDREF":
+        reference = lower_access(node.args[0].value, ctx)
+        return Binary("NE", reference, Const(None, reference.type), BOOL)
     refuse_unsupported_call(node)
     ref = node.ref
     en, eno = _en_eno(node)
@@ -482,13 +511,25 @@ def _call(node: ast.Call, ctx: PouContext) -> Expr:
     return _lift(node, call, before, ctx)
 
 
+def lower_input(value: ast.Expr, ctx: PouContext, ty: IrType) -> Expr:
+    """An input's value; a REFERENCE TO input given a variable (the checker bound it, CODESYS) gets a reference."""
+    references = (t.PointerType, t.NullType, t.InterfaceType, t.FbType)  # an interface input: lower_to (interfaces)
+    if isinstance(ty, Reference) and not isinstance(value.ty, references):
+        return address_of(value, ty, f"REF({print_expression(value)})", ctx)
+    return lower_to(value, ctx, ty)
+
+
+def address_of(value: ast.Expr, ty: IrType, text: str, ctx: PouContext) -> AddressOf:
+    """A reference of type ``ty`` to the variable ``value`` (the checker refused temporaries); ``text`` shows it."""
+    return AddressOf(lower_access(value, ctx), ty, text)
+
+
 def _address_of(node: ast.Call, ctx: PouContext) -> AddressOf:
     """``REF(x)`` / ``ADR(x)``: a reference to the variable ``x`` (the checker refused temporaries)."""
     if len(node.args) != 1:
         raise LoweringError(None)
-    var = lower_access(node.args[0].value, ctx)
-    ty = ctx.ir_type(node.ty)
-    return AddressOf(var, ty, f"{node.callee.name.upper()}({print_expression(node.args[0].value)})")  # type: ignore[union-attr]  # a Name
+    text = f"{node.callee.name.upper()}({print_expression(node.args[0].value)})"  # type: ignore[union-attr]  # a Name
+    return address_of(node.args[0].value, ctx.ir_type(node.ty), text, ctx)
 
 
 def _sizeof(node: ast.Call, ctx: PouContext, target: IrType) -> Const:
@@ -693,7 +734,7 @@ def user_call(node: ast.Call, ctx: PouContext) -> Call:
             in_outs.append(lower_access(value, ctx))
             continue
         initial = callee.initial(symbol.type, symbol.type_spec, symbol.init)
-        args.append(lower_to(value, ctx, ty) if value is not None else Const(initial, ty))
+        args.append(lower_input(value, ctx, ty) if value is not None else Const(initial, ty))
         types.append(ty)
     ctx.calls += 1
     if pou.method is None:

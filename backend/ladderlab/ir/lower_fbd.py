@@ -222,19 +222,21 @@ class _Network:
             return
         what = "the output"
         if node.mode == "normal":
-            target, target_type = self.ops.target(node.var, at.on(None), what)
+            target, target_type = self.ops.target(node.var, at.on(None), what, parts=True)
             if target is None:
                 return
             expr, ty = self.expr(value, at, what, target_type)
             if expr is None or (not isinstance(value, str) and not self.ops.assignable(target_type, ty, at, what)):
                 return
-            expr = convert(expr, target.type)
+            expr = convert(expr, target.type if isinstance(target, Var) else self.ctx.ir_type(target_type))
+            store = self.ops.store(target)
         else:
-            target = self.ops.bool_target(node.var, at.on(None), what)
+            bool_store = self.ops.bool_target(node.var, at.on(None), what)
             expr = self.bool_value(value, at, what)
-            if target is None or expr is None:
+            if bool_store is None or expr is None:
                 return
-        writes = coil(node.mode, target, expr, lambda: self.ctx.hidden(f"{node.id}_M", BOOL), origin)
+            store = bool_store
+        writes = coil(node.mode, store, expr, lambda: self.ctx.hidden(f"{node.id}_M", BOOL), origin)
         writes.append(Probe(node.id, expr, origin))
         source = self.graph.inputs[node.id]["IN"]
         enable = self.enables.get(source.node, TRUE) if source.pin != "ENO" else TRUE

@@ -14,15 +14,18 @@ from ..iec import stdlib
 from ..model.project import Pou as ModelPou
 from ..st import ast
 from ..st import types as t
+from ..st.printer import print_expression
 from ..st.symbols import PouInfo, PropertyRef, Symbol
 from .context import PouContext
 from .lower_expr import (
+    address_of,
     assign_part,
     convert,
     is_part,
     lower_access,
     lower_en_eno,
     lower_expr,
+    lower_input,
     lower_to,
     property_call,
     refuse_unsupported_call,
@@ -39,6 +42,7 @@ from .nodes import (
     Case,
     CaseLabel,
     Const,
+    Continue,
     Exit,
     Expr,
     FbCall,
@@ -119,6 +123,13 @@ def _assign(statement: ast.Assign, ctx: PouContext) -> list[Stmt]:
     return [Assign(lower_access(target, ctx), lowered, origin)]
 
 
+def _ref_assign(statement: ast.RefAssign, ctx: PouContext) -> list[Stmt]:
+    """``r REF= x``: the reference itself (not read through) gets a reference to x, as ``r := REF(x)`` would."""
+    target = lower_access(statement.target, ctx)
+    value = address_of(statement.value, target.type, f"REF({print_expression(statement.value)})", ctx)
+    return [Assign(target, value, ctx.origin(statement))]
+
+
 def _assign_bit(target: ast.Member, value: ast.Expr, ctx: PouContext, origin: Origin) -> Assign:
     """``x.3 := b`` and ``x.%B1 := v``: the variable gets its new pattern (lower_expr.assign_part)."""
     var, updated = assign_part(target, lower_to(value, ctx, ctx.ir_type(target.ty)), ctx)
@@ -175,7 +186,7 @@ def lower_fb_call(call: ast.Call, ctx: PouContext, origin: Origin) -> list[Stmt]
         if kind == "VAR_IN_OUT":
             inputs.append((name, lower_access(arg.value, ctx)))
         elif not arg.output:
-            inputs.append((name, lower_to(arg.value, ctx, pin_type)))
+            inputs.append((name, lower_input(arg.value, ctx, pin_type)))
         else:
             target = lower_access(arg.value, ctx)
             if not arg.negated and value_type(target.type) == value_type(pin_type):
@@ -278,6 +289,10 @@ def _exit(statement: ast.Exit, ctx: PouContext) -> list[Stmt]:
     return [Exit(ctx.origin(statement))]
 
 
+def _continue(statement: ast.Continue, ctx: PouContext) -> list[Stmt]:
+    return [Continue(ctx.origin(statement))]
+
+
 def _return(statement: ast.Return, ctx: PouContext) -> list[Stmt]:
     return [Return(ctx.origin(statement))]
 
@@ -288,6 +303,7 @@ def _empty(statement: ast.Empty, ctx: PouContext) -> list[Stmt]:
 
 _LOWER = {
     ast.Assign: _assign,
+    ast.RefAssign: _ref_assign,
     ast.CallStmt: lower_call_statement,
     ast.If: _if,
     ast.Case: _case,
@@ -295,6 +311,7 @@ _LOWER = {
     ast.While: _while,
     ast.Repeat: _repeat,
     ast.Exit: _exit,
+    ast.Continue: _continue,
     ast.Return: _return,
     ast.Empty: _empty,
 }

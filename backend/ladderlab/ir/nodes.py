@@ -104,7 +104,25 @@ class Unary:
 class Binary:
     """Arithmetic, comparison or boolean operator on operands of one type (after conversions)."""
 
-    op: Literal["ADD", "SUB", "MUL", "DIV", "MOD", "EXPT", "AND", "OR", "XOR", "EQ", "NE", "LT", "LE", "GT", "GE"]
+    op: Literal[
+        "ADD",
+        "SUB",
+        "MUL",
+        "DIV",
+        "MOD",
+        "EXPT",
+        "AND",
+        "OR",
+        "XOR",
+        "AND_THEN",
+        "OR_ELSE",
+        "EQ",
+        "NE",
+        "LT",
+        "LE",
+        "GT",
+        "GE",
+    ]
     left: Expr
     right: Expr
     type: IrType
@@ -213,6 +231,13 @@ class Exit:
 
 
 @dataclass
+class Continue:
+    """CONTINUE: on to the next iteration of the innermost loop (a REPEAT's UNTIL is tested first)."""
+
+    origin: Origin
+
+
+@dataclass
 class Return:
     origin: Origin
 
@@ -279,7 +304,7 @@ class Block:
     label: str | None = None
 
 
-Stmt = Assign | If | Case | For | While | Repeat | Exit | Return | FbCall | FnCall | Jump | Probe
+Stmt = Assign | If | Case | For | While | Repeat | Exit | Continue | Return | FbCall | FnCall | Jump | Probe
 
 # --------------------------------------------------------------------------- POUs
 

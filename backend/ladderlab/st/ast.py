@@ -99,6 +99,7 @@ class Name:
     span: Span = _span()
     ty: Any = _annotation()
     ref: Any = _annotation()
+    deref: Any = _annotation()  # True: a REFERENCE TO read through (the checker sets it)
 
 
 @dataclass(slots=True)
@@ -120,6 +121,7 @@ class Member:
     span: Span = _span()
     ty: Any = _annotation()
     ref: Any = _annotation()
+    deref: Any = _annotation()  # True: a REFERENCE TO read through (the checker sets it)
 
 
 @dataclass(slots=True)
@@ -128,6 +130,7 @@ class Index:
     indices: list[Expr]
     span: Span = _span()
     ty: Any = _annotation()
+    deref: Any = _annotation()  # True: a REFERENCE TO read through (the checker sets it)
 
 
 @dataclass(slots=True)
@@ -212,6 +215,15 @@ class Assign:
 
 
 @dataclass(slots=True)
+class RefAssign:
+    """CODESYS ``r REF= x``: the REFERENCE TO ``r`` now refers to the variable ``x``."""
+
+    target: Expr
+    value: Expr
+    span: Span = _span()
+
+
+@dataclass(slots=True)
 class CallStmt:
     """``inst(...);`` or ``f(...);``. The parser also accepts a bare ``x;`` here; the checker rejects it."""
 
@@ -278,6 +290,13 @@ class Exit:
 
 
 @dataclass(slots=True)
+class Continue:
+    """CONTINUE (IEC 61131-3 ed. 3): the rest of the innermost loop's body is skipped for this iteration."""
+
+    span: Span = _span()
+
+
+@dataclass(slots=True)
 class Return:
     span: Span = _span()
 
@@ -304,7 +323,9 @@ class Goto:
     span: Span = _span()
 
 
-Stmt = Assign | CallStmt | If | Case | For | While | Repeat | Exit | Return | Empty | Label | Goto
+Stmt = (
+    Assign | RefAssign | CallStmt | If | Case | For | While | Repeat | Exit | Continue | Return | Empty | Label | Goto
+)
 
 # ---------------------------------------------------------------- types and declarations
 
@@ -341,7 +362,7 @@ class ArrayType:
 
 @dataclass(slots=True)
 class PointerType:
-    kind: str  # "POINTER TO" or "REF_TO"
+    kind: str  # "POINTER TO", "REF_TO" or "REFERENCE TO" (CODESYS: dereferenced implicitly)
     target: TypeSpec
     span: Span = _span()
 
@@ -355,8 +376,11 @@ class EnumValue:
 
 @dataclass(slots=True)
 class EnumType:
+    """``(red, green)``; with ``base`` (an integer type name), ``INT (a := 0, b := 10)`` (IEC ed. 3 6.4.4.3)."""
+
     values: list[EnumValue]
     span: Span = _span()
+    base: str | None = None
 
 
 @dataclass(slots=True)

@@ -246,7 +246,7 @@ class ProjectChecker:
         if isinstance(spec, ast.ArrayType):
             return self._array(spec, checker)
         if isinstance(spec, ast.PointerType):
-            return t.PointerType(self.resolve(spec.target, checker))
+            return t.PointerType(self.resolve(spec.target, checker), spec.kind == "REFERENCE TO")
         if isinstance(spec, ast.EnumType):
             return self._enum(spec, checker, name or "enumeration")
         struct = t.StructType(name or "STRUCT")
@@ -307,6 +307,12 @@ class ProjectChecker:
 
     def _enum(self, spec: ast.EnumType, checker: BodyChecker, name: str) -> Type:
         enum = t.EnumType(name)
+        base = t.elementary(spec.base) if spec.base else None
+        if spec.base and not (base is not None and t.in_family(base, "ANY_INT")):
+            checker.report(
+                "ST-TYPE-MISMATCH", f"an enumeration's base type must be an integer type, not {spec.base}", spec
+            )
+            base = None
         following = 0
         for value in spec.values:
             if value.value is not None:
@@ -314,6 +320,8 @@ class ProjectChecker:
                 if not isinstance(number, int):
                     checker.report("ST-CONST-EXPR", "an enumeration value must be an integer constant", value.value)
                     number = following
+                elif base is not None and not t.literal_fits(base, number):
+                    checker.report("ST-RANGE", f"{number} does not fit the enumeration's base type {base}", value.value)
                 following = number
             if value.name.upper() in enum.values:
                 checker.report("ST-DUPLICATE", f"'{value.name}' appears twice in the enumeration", value)

@@ -267,11 +267,14 @@ class AstBuilder(Transformer):
         return None if isinstance(c[0], Token) and c[0].type == "STAR" else (c[0], c[1])
 
     def pointer_type(self, c):
-        kind = "POINTER TO" if c[0].type == "POINTER" else "REF_TO"
+        kind = {"POINTER": "POINTER TO", "REFERENCE": "REFERENCE TO"}.get(c[0].type, "REF_TO")
         return ast.PointerType(kind, c[1], span_of(c))
 
     def enum_type(self, c):
         return ast.EnumType(c[:-1], span_of(c))
+
+    def based_enum_type(self, c):
+        return ast.EnumType(c[1:-1], span_of(c), str(c[0]))
 
     def enum_value(self, c):
         return ast.EnumValue(str(c[0]), c[1], span_of(c))
@@ -356,6 +359,9 @@ class AstBuilder(Transformer):
     def assignment(self, c):
         return ast.Assign(c[0], c[1], span_of(c))
 
+    def ref_assignment(self, c):
+        return ast.RefAssign(c[0], c[2], span_of(c))
+
     def call_statement(self, c):
         return ast.CallStmt(c[0], span_of(c))
 
@@ -413,6 +419,9 @@ class AstBuilder(Transformer):
 
     def exit_statement(self, c):
         return ast.Exit(span_of(c))
+
+    def continue_statement(self, c):
+        return ast.Continue(span_of(c))
 
     def return_statement(self, c):
         return ast.Return(span_of(c))

@@ -63,10 +63,12 @@ class ArrayType(Type):
 @dataclass(frozen=True, eq=True)
 class PointerType(Type):
     target: Type
+    #: CODESYS REFERENCE TO: the checker reads and writes through it (``r := 5`` writes the target); REF= binds it
+    implicit: bool = False
 
     @property
     def name(self) -> str:  # type: ignore[override]
-        return f"REF_TO {self.target}"
+        return f"{'REFERENCE TO' if self.implicit else 'REF_TO'} {self.target}"
 
 
 @dataclass(eq=False)

@@ -5,6 +5,8 @@
 export const IEC = {
   aliases: {
     DT: "DATE_AND_TIME",
+    LDT: "LDATE_AND_TIME",
+    LTOD: "LTIME_OF_DAY",
     TOD: "TIME_OF_DAY",
   },
   conversions: {
@@ -31,9 +33,15 @@ export const IEC = {
       "DATE",
       "TIME_OF_DAY",
       "DATE_AND_TIME",
+      "LTIME",
+      "LDATE",
+      "LTIME_OF_DAY",
+      "LDATE_AND_TIME",
       "STRING",
       "TOD",
       "DT",
+      "LTOD",
+      "LDT",
     ],
   },
   elementary: [
@@ -149,6 +157,30 @@ export const IEC = {
       bits: 64,
       category: "dt",
       name: "DATE_AND_TIME",
+      signed: false,
+    },
+    {
+      bits: 64,
+      category: "time",
+      name: "LTIME",
+      signed: true,
+    },
+    {
+      bits: 64,
+      category: "date",
+      name: "LDATE",
+      signed: false,
+    },
+    {
+      bits: 64,
+      category: "tod",
+      name: "LTIME_OF_DAY",
+      signed: false,
+    },
+    {
+      bits: 64,
+      category: "dt",
+      name: "LDATE_AND_TIME",
       signed: false,
     },
     {
@@ -2213,6 +2245,234 @@ export const IEC = {
       result: "DATE_AND_TIME",
     },
     {
+      description: "T1 + T2",
+      extensible: false,
+      group: "date and time",
+      inputs: [
+        {
+          generic: false,
+          name: "IN1",
+          type: "LTIME",
+        },
+        {
+          generic: false,
+          name: "IN2",
+          type: "LTIME",
+        },
+      ],
+      name: "ADD_LTIME",
+      result: "LTIME",
+    },
+    {
+      description: "T1 - T2",
+      extensible: false,
+      group: "date and time",
+      inputs: [
+        {
+          generic: false,
+          name: "IN1",
+          type: "LTIME",
+        },
+        {
+          generic: false,
+          name: "IN2",
+          type: "LTIME",
+        },
+      ],
+      name: "SUB_LTIME",
+      result: "LTIME",
+    },
+    {
+      description: "duration times a number",
+      extensible: false,
+      group: "date and time",
+      inputs: [
+        {
+          generic: false,
+          name: "IN1",
+          type: "LTIME",
+        },
+        {
+          generic: false,
+          name: "IN2",
+          type: "ANY_NUM",
+        },
+      ],
+      name: "MUL_LTIME",
+      result: "LTIME",
+    },
+    {
+      description: "duration divided by a number",
+      extensible: false,
+      group: "date and time",
+      inputs: [
+        {
+          generic: false,
+          name: "IN1",
+          type: "LTIME",
+        },
+        {
+          generic: false,
+          name: "IN2",
+          type: "ANY_NUM",
+        },
+      ],
+      name: "DIV_LTIME",
+      result: "LTIME",
+    },
+    {
+      description: "time of day plus a duration (wraps at midnight)",
+      extensible: false,
+      group: "date and time",
+      inputs: [
+        {
+          generic: false,
+          name: "IN1",
+          type: "LTIME_OF_DAY",
+        },
+        {
+          generic: false,
+          name: "IN2",
+          type: "LTIME",
+        },
+      ],
+      name: "ADD_LTOD_LTIME",
+      result: "LTIME_OF_DAY",
+    },
+    {
+      description: "date and time plus a duration",
+      extensible: false,
+      group: "date and time",
+      inputs: [
+        {
+          generic: false,
+          name: "IN1",
+          type: "LDATE_AND_TIME",
+        },
+        {
+          generic: false,
+          name: "IN2",
+          type: "LTIME",
+        },
+      ],
+      name: "ADD_LDT_LTIME",
+      result: "LDATE_AND_TIME",
+    },
+    {
+      description: "duration between two dates",
+      extensible: false,
+      group: "date and time",
+      inputs: [
+        {
+          generic: false,
+          name: "IN1",
+          type: "LDATE",
+        },
+        {
+          generic: false,
+          name: "IN2",
+          type: "LDATE",
+        },
+      ],
+      name: "SUB_LDATE_LDATE",
+      result: "LTIME",
+    },
+    {
+      description: "time of day minus a duration",
+      extensible: false,
+      group: "date and time",
+      inputs: [
+        {
+          generic: false,
+          name: "IN1",
+          type: "LTIME_OF_DAY",
+        },
+        {
+          generic: false,
+          name: "IN2",
+          type: "LTIME",
+        },
+      ],
+      name: "SUB_LTOD_LTIME",
+      result: "LTIME_OF_DAY",
+    },
+    {
+      description: "duration between two times of day",
+      extensible: false,
+      group: "date and time",
+      inputs: [
+        {
+          generic: false,
+          name: "IN1",
+          type: "LTIME_OF_DAY",
+        },
+        {
+          generic: false,
+          name: "IN2",
+          type: "LTIME_OF_DAY",
+        },
+      ],
+      name: "SUB_LTOD_LTOD",
+      result: "LTIME",
+    },
+    {
+      description: "date and time minus a duration",
+      extensible: false,
+      group: "date and time",
+      inputs: [
+        {
+          generic: false,
+          name: "IN1",
+          type: "LDATE_AND_TIME",
+        },
+        {
+          generic: false,
+          name: "IN2",
+          type: "LTIME",
+        },
+      ],
+      name: "SUB_LDT_LTIME",
+      result: "LDATE_AND_TIME",
+    },
+    {
+      description: "duration between two dates and times",
+      extensible: false,
+      group: "date and time",
+      inputs: [
+        {
+          generic: false,
+          name: "IN1",
+          type: "LDATE_AND_TIME",
+        },
+        {
+          generic: false,
+          name: "IN2",
+          type: "LDATE_AND_TIME",
+        },
+      ],
+      name: "SUB_LDT_LDT",
+      result: "LTIME",
+    },
+    {
+      description: "a date and a time of day joined",
+      extensible: false,
+      group: "date and time",
+      inputs: [
+        {
+          generic: false,
+          name: "IN1",
+          type: "LDATE",
+        },
+        {
+          generic: false,
+          name: "IN2",
+          type: "LTIME_OF_DAY",
+        },
+      ],
+      name: "CONCAT_LDATE_LTOD",
+      result: "LDATE_AND_TIME",
+    },
+    {
       description: "duration times a number (= MUL_TIME)",
       extensible: false,
       group: "date and time",
@@ -2272,10 +2532,15 @@ export const IEC = {
       "DATE",
       "TIME_OF_DAY",
       "DATE_AND_TIME",
+      "LTIME",
+      "LDATE",
+      "LTIME_OF_DAY",
+      "LDATE_AND_TIME",
       "STRING",
     ],
     ANY_BIT: ["BOOL", "BYTE", "WORD", "DWORD", "LWORD"],
-    ANY_DATE: ["DATE", "TIME_OF_DAY", "DATE_AND_TIME"],
+    ANY_DATE: ["DATE", "TIME_OF_DAY", "DATE_AND_TIME", "LDATE", "LTIME_OF_DAY", "LDATE_AND_TIME"],
+    ANY_DURATION: ["TIME", "LTIME"],
     ANY_ELEMENTARY: [
       "BOOL",
       "SINT",
@@ -2296,6 +2561,10 @@ export const IEC = {
       "DATE",
       "TIME_OF_DAY",
       "DATE_AND_TIME",
+      "LTIME",
+      "LDATE",
+      "LTIME_OF_DAY",
+      "LDATE_AND_TIME",
       "STRING",
     ],
     ANY_INT: ["SINT", "INT", "DINT", "LINT", "USINT", "UINT", "UDINT", "ULINT"],
@@ -2311,6 +2580,7 @@ export const IEC = {
       "REAL",
       "LREAL",
       "TIME",
+      "LTIME",
     ],
     ANY_NUM: ["SINT", "INT", "DINT", "LINT", "USINT", "UINT", "UDINT", "ULINT", "REAL", "LREAL"],
     ANY_REAL: ["REAL", "LREAL"],
@@ -2320,12 +2590,14 @@ export const IEC = {
     "ABSTRACT",
     "ACTION",
     "AND",
+    "AND_THEN",
     "ARRAY",
     "AT",
     "BY",
     "CASE",
     "CONFIGURATION",
     "CONSTANT",
+    "CONTINUE",
     "DO",
     "ELSE",
     "ELSIF",
@@ -2359,7 +2631,6 @@ export const IEC = {
     "FUNCTION",
     "FUNCTION_BLOCK",
     "F_EDGE",
-    "GET",
     "IF",
     "IMPLEMENTS",
     "INITIAL_STEP",
@@ -2372,6 +2643,7 @@ export const IEC = {
     "OF",
     "ON",
     "OR",
+    "OR_ELSE",
     "OVERRIDE",
     "PERSISTENT",
     "POINTER",
@@ -2383,13 +2655,13 @@ export const IEC = {
     "PUBLIC",
     "READ_ONLY",
     "READ_WRITE",
+    "REFERENCE",
     "REF_TO",
     "REPEAT",
     "RESOURCE",
     "RETAIN",
     "RETURN",
     "R_EDGE",
-    "SET",
     "STEP",
     "STRUCT",
     "TASK",
@@ -2414,7 +2686,7 @@ export const IEC = {
   ],
   literal_patterns: {
     BASED_INTEGER: "(?:2#[01_]+|8#[0-7_]+|16#[0-9A-Fa-f_]+)",
-    DATE_LITERAL: "(?:LDATE|DATE|D)#\\d+-\\d+-\\d+",
+    DATE_LITERAL: "(?:LDATE|DATE|LD|D)#\\d+-\\d+-\\d+",
     DT_LITERAL:
       "(?:LDATE_AND_TIME|DATE_AND_TIME|LDT|DT)#\\d+-\\d+-\\d+-\\d+:\\d+(?::\\d+(?:\\.\\d+)?)?",
     DURATION:
@@ -2437,7 +2709,7 @@ export const IEC = {
     {
       examples: ["D#2024-05-01"],
       name: "DATE",
-      prefixes: ["D", "DATE", "LDATE"],
+      prefixes: ["D", "DATE", "LD", "LDATE"],
       rule: "a date is D# then year-month-day",
     },
     {
@@ -2715,6 +2987,51 @@ export const IEC = {
       text: "123456789.125",
       type: "LREAL",
       value: 123456789.125,
+    },
+    {
+      text: "LTIME#0s",
+      type: "LTIME",
+      value: 0,
+    },
+    {
+      text: "LTIME#1us500ns",
+      type: "LTIME",
+      value: 1500,
+    },
+    {
+      text: "LTIME#-1h30m1ns",
+      type: "LTIME",
+      value: -5400000000001,
+    },
+    {
+      text: "LTIME#1d1h1m1s1ms2us3ns",
+      type: "LTIME",
+      value: 90061001002003,
+    },
+    {
+      text: "LTOD#12:30:00.00000025",
+      type: "LTIME_OF_DAY",
+      value: 45000000000250,
+    },
+    {
+      text: "LTOD#23:59:59.999999999",
+      type: "LTIME_OF_DAY",
+      value: 86399999999999,
+    },
+    {
+      text: "LDATE#2024-01-01",
+      type: "LDATE",
+      value: 1704067200000000000,
+    },
+    {
+      text: "LDT#2024-01-01-12:30:00",
+      type: "LDATE_AND_TIME",
+      value: 1704112200000000000,
+    },
+    {
+      text: "LDT#2003-06-21-11:38:52.35",
+      type: "LDATE_AND_TIME",
+      value: 1056195532350000000,
     },
   ],
   widening: {

@@ -52,6 +52,7 @@ import { InstancePicker, OnlineActions } from "./InstancePicker";
 import { LOADING } from "./lazy";
 import { useHidden } from "./layout";
 import { KindPicker, PouActions } from "./PouActions";
+import { TestFileActions } from "../tests/TestFileActions";
 import { GlobalsView, TasksView, TypesView, useDeclarableTypes } from "./ProjectParts";
 import { isProjectPart, PROJECT_PARTS, type ProjectPart } from "./parts";
 import { PouMembers } from "./PouMembers";
@@ -226,6 +227,7 @@ function TestFilesTree() {
                     </span>
                   ) : null}
                 </button>
+                <TestFileActions name={t.name} />
               </li>
             );
           })}

@@ -24,7 +24,7 @@ import { stCompletionSource, type StCompletions } from "./completion";
 import { setCoverageLines, stCoverage } from "./coverage";
 import { setInlineMarks, stInlineValues, type InlineMark, type StOnlineView } from "./inlineValues";
 import { ilLanguage } from "./ilLanguage";
-import { stLanguage } from "./language";
+import { stLanguage, stTestLanguage } from "./language";
 import { stKeys } from "./keys";
 import { lintDiagnostics } from "./lint";
 
@@ -47,8 +47,8 @@ export interface StEditorProps {
   coverage?: readonly number[];
   /** A line to show and put the cursor on (a test failure or diagnostic was clicked); `seq` repeats a jump. */
   focusLine?: { line: number; seq: number } | null;
-  /** The text's language: ST (default) or an IL body (docs/il.md). */
-  language?: "st" | "il";
+  /** The text's language: ST (default), an IL body (docs/il.md) or a test file (docs/testing.md). */
+  language?: "st" | "il" | "test";
 }
 
 const NO_MARKS: readonly InlineMark[] = [];
@@ -92,7 +92,7 @@ export function StEditor({
           indentOnInput(),
           bracketMatching(),
           closeBrackets(),
-          language === "il" ? ilLanguage : [stLanguage, stBlocks],
+          language === "il" ? ilLanguage : [language === "test" ? stTestLanguage : stLanguage, stBlocks],
           codeFolding(),
           foldGutter(),
           syntaxHighlighting(defaultHighlightStyle),

@@ -8,6 +8,7 @@ import type { Diagnostic, LibraryEntry, SymbolInfo } from "../generated/api";
 import type { Project } from "../generated/api";
 import { memberCompletions, stCompletions, type StCompletions } from "../st/completion";
 import { structTypes } from "../st/members";
+import { tokenize } from "../st/language";
 import { declaredSymbols, workingLibrary } from "../st/scope";
 import { CHECK_DELAY_MS } from "../st/useLiveCheck";
 import { useWorkspace } from "../project/store";
@@ -39,7 +40,17 @@ function programEntries(project: Project): LibraryEntry[] {
     }));
 }
 
-export function useTestCompletions(project: Project | null): StCompletions {
+/** The variables the TESTs and the SETUP of a test file declare in their VAR blocks (comments skipped). */
+export function testLocals(text: string): SymbolInfo[] {
+  const code = tokenize(text)
+    .filter((t) => t.style !== "comment" && t.style !== "lineComment")
+    .map((t) => t.text)
+    .join(" ");
+  const blocks = code.match(/\bVAR(?:_[A-Z]+)?\b[\s\S]*?\bEND_VAR\b/gi) ?? [];
+  return blocks.flatMap((block) => declaredSymbols(block) ?? []);
+}
+
+export function useTestCompletions(project: Project | null, text = ""): StCompletions {
   const saved = useWorkspace((s) => s.library);
   const tables = useWorkspace((s) => s.symbols);
   return useMemo(() => {
@@ -58,12 +69,13 @@ export function useTestCompletions(project: Project | null): StCompletions {
         retain: false,
         constant: false,
       }));
-    const scope = { symbols: [...programs, ...globals], library, structs: structTypes(project.types ?? "") };
+    const symbols = [...testLocals(text), ...programs, ...globals];
+    const scope = { symbols, library, structs: structTypes(project.types ?? "") };
     return {
       options: [...verbCompletions, ...stCompletions([...scope.symbols], library)],
       members: (chain: readonly string[]) => memberCompletions(chain, scope),
     };
-  }, [project, saved, tables]);
+  }, [project, text, saved, tables]);
 }
 
 /** The diagnostics of one test file of the working copy, checked after the user pauses typing. */

@@ -30,6 +30,7 @@ _OPERATOR_FUNCTIONS = {
 }
 _ATOM = re.compile(r"(?:[A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z_][A-Za-z0-9_]*)*|\d+)\Z")
 _COMPARISONS = frozenset({"EQ", "NE", "LT", "LE", "GT", "GE"})
+_SHORT_CIRCUIT = {"AND_THEN": "and", "OR_ELSE": "or"}
 
 
 def _atom(code: str) -> bool:
@@ -136,12 +137,22 @@ class Expressions:
         raise CodegenError(f"NEG is not defined for {name}")
 
     def binary(self, b: ir.Binary) -> str:
+        if b.op in _SHORT_CIRCUIT:
+            return self.short_circuit(b)
         left, right = self.expr(b.left), self.expr(b.right)
         if isinstance(b.left.type, t.Reference):  # EQ / NE: one variable referred to (runtime.Ref), or both NULL
             return f"({left} {'==' if b.op == 'EQ' else '!='} {right})"
         types = (self.scalar(b.left.type, b.op), self.scalar(b.right.type, b.op))
         result = None if b.op in _COMPARISONS else self.scalar(b.type, b.op)
         return self.standard(_OPERATOR_FUNCTIONS[b.op], [left, right], types, result)
+
+    def short_circuit(self, b: ir.Binary) -> str:
+        """AND_THEN / OR_ELSE: Python's ``and`` / ``or`` evaluate the right operand only when the left does not
+        decide. A part of it computed on a line of its own (a very deep expression) would run regardless."""
+        left = self.expr(b.left)
+        if self.linear:
+            raise CodegenError(f"{b.op} nests too deeply: split the expression with a variable")
+        return f"({left} {_SHORT_CIRCUIT[b.op]} {self.expr(b.right)})"
 
     def call(self, c: ir.Call) -> str:
         if c.user:
@@ -194,6 +205,14 @@ class Expressions:
         return self.module.bind(
             ("checked", name.upper(), types, result), f"fn_{names.escape(name)}_eno", lambda: built.checked
         )
+
+    def wrapped(self, name: str, types: tuple[str, ...], result: str | None) -> tuple[str, str] | None:
+        """The checked form of a standard function as templates (exact value, its store), when its only warning
+        is a wrap (stdlib ``Specialised.wrapped``); None: call ``checked``."""
+        try:
+            return specialised(name, types, result).wrapped
+        except (ValueError, TypeError):
+            return None
 
     def user_call(self, c: ir.Call) -> str:
         callee = self.module.pous.get(c.function.upper())
