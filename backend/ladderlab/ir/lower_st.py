@@ -15,7 +15,7 @@ from ..model.project import Pou as ModelPou
 from ..st import ast
 from ..st import types as t
 from ..st.printer import print_expression
-from ..st.symbols import PouInfo, Symbol
+from ..st.symbols import PouInfo, PropertyRef, Symbol
 from .context import PouContext
 from .lower_expr import (
     address_of,
@@ -27,6 +27,7 @@ from .lower_expr import (
     lower_expr,
     lower_input,
     lower_to,
+    property_call,
     refuse_unsupported_call,
     std_call,
     user_call,
@@ -35,6 +36,7 @@ from .lower_expr import (
 from .lower_types import LoweringError
 from .nodes import (
     Assign,
+    Attempt,
     Block,
     Call,
     Case,
@@ -105,11 +107,19 @@ def _assign(statement: ast.Assign, ctx: PouContext) -> list[Stmt]:
     target, value = statement.target, statement.value
     if is_part(target):
         return [_assign_bit(target, value, ctx, origin)]
+    if isinstance(getattr(target, "ref", None), PropertyRef):  # its SET
+        return [FnCall(property_call(target, ctx, value), None, origin)]
     if isinstance(value, ast.Call) and _has_en_eno(value) and _is_function(value.ref):
         call = _function_call(value, ctx)
         en, eno, after = lower_en_eno(value, ctx)
         return [FnCall(call, lower_access(target, ctx), origin, en, eno), *after]
     lowered = lower_to(value, ctx, ctx.ir_type(target.ty))  # the value is computed before the target is stored
+    if statement.attempt:  # ?=: NULL unless the instance's FB implements the target's interface
+        blocks = ctx.checked.pous.values()
+        implementing = tuple(
+            fb.name.upper() for fb in blocks if fb.kind == "FUNCTION_BLOCK" and fb.implements(target.ty.info)
+        )
+        lowered = Attempt(lowered, implementing, lowered.type)
     return [Assign(lower_access(target, ctx), lowered, origin)]
 
 

@@ -71,6 +71,8 @@ class Deref:
 
 Selector = Index | Member | Deref
 Scope = Literal["local", "global"]
+#: The root of ``THIS^`` in a function block's body: the instance itself (no slot; a name no identifier can be)
+SELF = "__SELF"
 
 
 @dataclass(frozen=True)
@@ -128,7 +130,10 @@ class Binary:
 
 @dataclass(frozen=True)
 class Call:
-    """A function call: a standard function (by name, specialised to ``arg_types``) or a user function."""
+    """A function call: a standard function (by name, specialised to ``arg_types``) or a user function.
+
+    ``virtual``: a METHOD ``<FB>.<M>`` whose implementation is chosen when it runs, by the FB of the instance it is
+    called on (its first in-out, ``THIS``): ``Program.dispatch[function]`` maps each FB to the function it runs."""
 
     function: str
     args: tuple[Expr, ...]
@@ -136,6 +141,7 @@ class Call:
     type: IrType
     user: bool = False
     in_outs: tuple[Var, ...] = ()
+    virtual: bool = False
 
 
 @dataclass(frozen=True)
@@ -155,7 +161,17 @@ class AddressOf:
     text: str
 
 
-Expr = Const | Var | Unary | Binary | Call | Convert | AddressOf
+@dataclass(frozen=True)
+class Attempt:
+    """``?=``'s value: the reference ``value`` (to an FB instance) when the instance's FB is one of ``blocks`` (those
+    implementing the target's interface), else NULL (IEC 61131-3 ed. 3, 6.6.6.7)."""
+
+    value: Expr
+    blocks: tuple[str, ...]
+    type: IrType
+
+
+Expr = Const | Var | Unary | Binary | Call | Convert | AddressOf | Attempt
 
 # --------------------------------------------------------------------------- statements
 
@@ -382,6 +398,8 @@ class Program:
     access: dict[str, tuple[str, bool]] = field(default_factory=dict)
     #: the LD/FBD elements' names as the user sees them, for runtime faults (model/places.py)
     places: ProjectPlaces | None = field(default=None, repr=False, compare=False)
+    #: method ``<FB>.<M>`` -> {function block -> the method it runs for ``M``}: for calls with ``virtual`` set
+    dispatch: dict[str, dict[str, str]] = field(default_factory=dict)
 
     def program_instances(self) -> list[ProgramInstance]:
         """The instances to create: ``instances``, or one per PROGRAM named after it."""

@@ -36,6 +36,52 @@ def _strip_trailing_whitespace(value: Any) -> Any:
     return value.rstrip() if isinstance(value, str) else value
 
 
+#: Who may call a method (IEC 61131-3 ed. 3, 6.6.5): PUBLIC anyone, PRIVATE the FB itself, PROTECTED the FB and
+#: the FBs derived from it, INTERNAL the same namespace (a LadderLab project is one namespace).
+MethodAccess = Literal["PUBLIC", "PRIVATE", "PROTECTED", "INTERNAL"]
+
+
+class Method(BaseModel):
+    """A METHOD of a FUNCTION_BLOCK (IEC 61131-3 ed. 3, CODESYS): its own variables and ST body; it works on the
+    variables of the instance it is called on (docs/st.md, object orientation)."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    name: str
+    access: MethodAccess = Field(default="PUBLIC", description="Who may call it; CODESYS's default is PUBLIC.")
+    final: bool = Field(default=False, description="FINAL: an FB derived from this one cannot override it.")
+    abstract: bool = Field(default=False, description="ABSTRACT: no body; a derived FB must implement it.")
+    return_type: str | None = Field(default=None, description="The result type; None: a method without a value.")
+    declarations: str = Field(default="", description="ST text of its VAR...END_VAR blocks, as typed.")
+    body: str = Field(default="", description="ST statements.")
+
+    _normalise_texts = field_validator("declarations", "body", mode="before")(_strip_trailing_whitespace)
+
+
+class Accessor(BaseModel):
+    """A PROPERTY's GET or SET: its own variables and ST body (GET assigns the property's name, SET reads it)."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    declarations: str = Field(default="", description="ST text of its VAR...END_VAR blocks, as typed.")
+    body: str = Field(default="", description="ST statements.")
+
+    _normalise_texts = field_validator("declarations", "body", mode="before")(_strip_trailing_whitespace)
+
+
+class Property(BaseModel):
+    """A PROPERTY of a FUNCTION_BLOCK (CODESYS, IEC 61131-3 ed. 3 draft): read as ``inst.P`` through its GET,
+    written as ``inst.P := v`` through its SET; a missing accessor makes it write-only or read-only."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    name: str
+    type: str = Field(description="Its type, as written.")
+    access: MethodAccess = Field(default="PUBLIC", description="Who may read and write it.")
+    get: Accessor | None = None
+    set: Accessor | None = None
+
+
 class Pou(BaseModel):
     """A program organisation unit. ``body`` is ST or IL text, an ``LdBody``, an ``FbdBody``, a ``CfcBody`` (one
     FBD chart) or an ``SfcBody`` per ``language``."""
@@ -48,6 +94,14 @@ class Pou(BaseModel):
     return_type: str | None = Field(default=None, description="Functions only: the result type.")
     declarations: str = Field(default="", description="ST text of the VAR...END_VAR blocks, as typed.")
     body: str | LdBody | CfcBody | FbdBody | SfcBody = ""
+    methods: list[Method] = Field(default_factory=list, description="Function blocks only: their METHODs.")
+    properties: list[Property] = Field(default_factory=list, description="Function blocks only: their PROPERTYs.")
+    extends: str | None = Field(default=None, description="Function blocks only: the function block it EXTENDS.")
+    implements: list[str] = Field(
+        default_factory=list, description="Function blocks only: the INTERFACEs (declared in the types) it IMPLEMENTS."
+    )
+    abstract: bool = Field(default=False, description="Function blocks only: ABSTRACT, it cannot be instantiated.")
+    final: bool = Field(default=False, description="Function blocks only: FINAL, no function block extends it.")
 
     _normalise_texts = field_validator("declarations", "body", mode="before")(_strip_trailing_whitespace)
 

@@ -205,9 +205,13 @@ LITERALS = (IntLit, RealLit, BoolLit, StringLit, TimeLit, TypedLit)
 
 @dataclass(slots=True)
 class Assign:
+    """``target := value``; ``attempt``: ``target ?= value`` (IEC 61131-3 ed. 3: NULL when the value's instance
+    does not implement the target's interface)."""
+
     target: Expr
     value: Expr
     span: Span = _span()
+    attempt: bool = False
 
 
 @dataclass(slots=True)
@@ -507,6 +511,49 @@ class Sfc:
 
 
 @dataclass(slots=True)
+class MethodDecl:
+    """``METHOD [PUBLIC|PRIVATE|PROTECTED|INTERNAL] [FINAL|ABSTRACT] name [: type] ... END_METHOD``."""
+
+    name: str
+    modifiers: list[str]  # upper case, as written
+    return_type: TypeSpec | None
+    var_blocks: list[VarBlock]
+    body: list[Stmt]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class AccessorDecl:
+    """A PROPERTY's ``GET ... END_GET`` or ``SET ... END_SET``."""
+
+    kind: str  # GET or SET
+    var_blocks: list[VarBlock]
+    body: list[Stmt]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class PropertyDecl:
+    """``PROPERTY [access] name : type [GET ... END_GET] [SET ... END_SET] END_PROPERTY``."""
+
+    name: str
+    modifiers: list[str]
+    type: TypeSpec
+    accessors: list[AccessorDecl]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class InterfaceDecl:
+    """``INTERFACE name [EXTENDS i, ...] METHOD prototypes END_INTERFACE``."""
+
+    name: str
+    extends: list[str]
+    methods: list[MethodDecl]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
 class Pou:
     kind: str  # PROGRAM, FUNCTION_BLOCK, FUNCTION
     name: str
@@ -515,6 +562,11 @@ class Pou:
     body: list[Stmt]
     span: Span = _span()
     sfc: Sfc | None = None  # a body written in textual SFC (``body`` is then empty)
+    methods: list[MethodDecl] = field(default_factory=list)  # a function block's METHODs
+    properties: list[PropertyDecl] = field(default_factory=list)  # a function block's PROPERTYs
+    modifier: str | None = None  # a function block's FINAL or ABSTRACT
+    extends: str | None = None  # the function block it EXTENDS
+    implements: list[str] = field(default_factory=list)  # the INTERFACEs it IMPLEMENTS
 
 
 @dataclass(slots=True)
@@ -587,7 +639,7 @@ class Configuration:
 class Source:
     """A whole ST file: TYPE blocks, VAR_GLOBAL blocks, POUs and configurations in source order."""
 
-    items: list[TypeBlock | VarBlock | Pou | Configuration]
+    items: list[TypeBlock | VarBlock | Pou | Configuration | InterfaceDecl]
     span: Span = _span()
 
     @property

@@ -19,8 +19,10 @@ from . import types as t
 from .calls import check_call, unreferable
 from .cases import check_case
 from .context_typing import default_type, settle, untyped_leaves, untyped_result
+from .interfaces import check_attempt, interface_comparison
+from .methods import check_property, is_self, own_property, this_type, unknown_member_hint
 from .rules import EnumValue, assignable_or_report, constant_value, root_name
-from .symbols import CheckResult, PouInfo, Symbol
+from .symbols import CheckResult, PouInfo, PropertyRef, Symbol
 from .types import ERROR, Type
 
 _ACCESSES = (ast.Name, ast.Member, ast.Index)
@@ -75,6 +77,8 @@ class BodyChecker:
         upper = name.upper()
         if self.pou is not None and upper in self.pou.symbols:
             return self.pou.symbols[upper]
+        if self.pou is not None and self.pou.method is not None and upper in self.pou.method.owner.symbols:
+            return self.pou.method.owner.symbols[upper]  # a method works on its instance's variables
         return self.result.globals.get(upper)
 
     def enum_values(self, name: str) -> list[EnumValue]:
@@ -135,6 +139,9 @@ class BodyChecker:
             self.keep_reference = saved
 
     def _deref(self, node: ast.Deref) -> Type:
+        this = this_type(self, node)
+        if this is not None:
+            return this
         base = self.reference(node.base)  # r^ on a REFERENCE TO too, as IronPLC accepts
         if isinstance(base, t.PointerType):
             return base.target
@@ -170,9 +177,12 @@ class BodyChecker:
         if symbol is not None:
             node.ref = symbol
             return symbol.type
-        if self.pou is not None and self.pou.kind == "FUNCTION" and node.name.upper() == self.pou.name.upper():
+        if self.pou is not None and self.pou.kind == "FUNCTION" and node.name.upper() == _result_name(self.pou):
             node.ref = self.pou
             return self.pou.return_type or ERROR
+        found = own_property(self, node)
+        if found is not None:
+            return found
         program = self.result.pous.get(node.name.upper())
         if program is not None and program.kind == "PROGRAM":  # its outputs and SFC steps are read (ST-60, SFC-06)
             node.ref = program
@@ -226,6 +236,14 @@ class BodyChecker:
             return ERROR
         if isinstance(base, t.FbType):
             return self._fb_member(node, base)
+        if isinstance(base, t.InterfaceType):  # only its methods are called through it (st/interfaces.py)
+            if base.info.find_method(node.name) is not None:
+                self.report("ST-NOT-CALLABLE", f"'{node.name}' is a method of {base.name}: call it (add the ( ))", node)
+                return ERROR
+            names = [m.method.name for i in base.info.all_interfaces() for m in i.methods.values()]
+            message = f"{base.name} has no method '{node.name}'" + did_you_mean(node.name, names)
+            self.report("ST-UNKNOWN-MEMBER", message, node)
+            return ERROR
         part = partial_access(node.name)
         if part is not None and isinstance(base, t.Elementary) and base.category in ("bits", "int"):
             return self._part(node, base, *part)
@@ -264,10 +282,16 @@ class BodyChecker:
             return ERROR
         symbol = base.pou.symbols.get(upper)
         if symbol is None:
-            pins = [s.name for s in base.pou.parameters()]
+            found = check_property(self, node, base.pou)
+            if found is not None:
+                return found
+        if symbol is None and base.pou.find_method(upper) is not None:
+            self.report("ST-NOT-CALLABLE", f"'{node.name}' is a method of {base.name}: call it (add the ( ))", node)
+            return ERROR
+        if symbol is None:
             self.report(
                 "ST-UNKNOWN-MEMBER",
-                f"{base.name} has no input or output '{node.name}'" + did_you_mean(node.name, pins),
+                f"{base.name} has no input or output '{node.name}'" + unknown_member_hint(base.pou, node.name),
                 node,
             )
             return ERROR
@@ -279,7 +303,7 @@ class BodyChecker:
                 "only, so it cannot be read or written from outside (pass the variable in the call)",
                 node,
             )
-        elif symbol.var_class not in ("VAR_INPUT", "VAR_OUTPUT") and not _sfc_state(symbol):
+        elif symbol.var_class not in ("VAR_INPUT", "VAR_OUTPUT") and not _sfc_state(symbol) and not is_self(node.base):
             self.report(
                 "ST-NOT-ACCESSIBLE",
                 f"'{node.name}' is internal to {base.name}: only its inputs and outputs can be used from outside",
@@ -348,6 +372,8 @@ class BodyChecker:
             return right
         if op in ("+", "-") and isinstance(left, t.PointerType) and t.in_family(right, "ANY_INT"):
             return left  # pointer arithmetic in bytes (TYP-43)
+        if op in ("=", "<>") and interface_comparison(left, right):
+            return t.BOOL
         if op == "+" and isinstance(left, t.StringType) and isinstance(right, t.StringType):
             return left  # FUN-82 (Mosaic): '+' concatenates
         combined, verdict = t.common(left, right)
@@ -479,6 +505,9 @@ class BodyChecker:
             self.report("ST-TYPE-MISMATCH", f"the {keyword} condition must be BOOL, not {ty}", cond)
 
     def assign(self, stmt: ast.Assign) -> None:
+        if stmt.attempt:
+            check_attempt(self, stmt)
+            return
         target = self.target(stmt.target)
         value = self.expr(stmt.value, target)
         assignable_or_report(self, target, value, stmt.value, "assign")
@@ -511,6 +540,8 @@ class BodyChecker:
             )
             return ERROR
         ty = self.expr(node)
+        if isinstance(getattr(node, "ref", None), PropertyRef) and node.ref.setter is None:
+            self.report("ST-READONLY", f"the property {node.ref.name} has no SET: it can be read, not assigned", node)
         root = root_name(node)
         if root is not None and root.ref is self.pou and self.pou is not None:  # F := ..., F[2] := ..., F.a := ...
             self.result_assigned = True
@@ -614,6 +645,11 @@ def _implicit_in(node: ast.Expr) -> Symbol | None:
         node = node.base
     ref = getattr(node, "ref", None)
     return ref if isinstance(ref, Symbol) and ref.implicit in SFC_PUBLIC else None
+
+
+def _result_name(pou: PouInfo) -> str:
+    """The name a function's (or a method's) body assigns its result to."""
+    return (pou.method.name if pou.method is not None else pou.name).upper()
 
 
 def _is_output(node: ast.Member) -> bool:

@@ -16,12 +16,14 @@ from ..iec.spelling import did_you_mean
 from . import ast
 from . import types as t
 from .context_typing import default_type, untyped_leaves
+from .methods import check_method_call, method_callee
 from .printer import print_expression
 from .rules import assignable_or_report, root_name
 from .symbols import PouInfo, Symbol
 from .types import ERROR, VOID, Type
 
 _SYSTEM = {"ADR", "REF", "SIZEOF", "__ISVALIDREF"}
+_SELF = ("THIS", "SUPER")
 _WRITABLE = (ast.Name, ast.Member, ast.Index, ast.Deref, ast.DirectAddr)
 
 
@@ -34,6 +36,17 @@ class Param:
 
 def check_call(checker: Any, node: ast.Call, statement: bool) -> Type:
     callee = node.callee
+    method = method_callee(checker, callee)
+    if method is not None:
+        return check_method_call(checker, node, *method)
+    if isinstance(callee, ast.Deref) and isinstance(callee.base, ast.Name) and callee.base.name.upper() in _SELF:
+        _args_untyped(checker, node)
+        checker.report(
+            "ST-NOT-CALLABLE",
+            f"{callee.base.name.upper()}^() would run a function block's body from a method: not supported yet",
+            node,
+        )
+        return ERROR
     if not isinstance(callee, ast.Name):
         return _instance_call(checker, node, checker.expr(callee), statement)
     upper = callee.name.upper()
@@ -254,12 +267,23 @@ def _in_out(checker: Any, arg: ast.Arg, param: Param, callee: str) -> None:
             f"the CONSTANT '{root.ref.name}' cannot be passed as in-out parameter {param.name}",
             arg.value,
         )
-    elif not t.same(param.type, value) and not _open_array(param.type, value):
+    elif not t.same(param.type, value) and not _open_array(param.type, value) and not _derived(param.type, value):
         checker.report(
             "ST-TYPE-MISMATCH",
             f"in-out parameter {param.name} of {callee} needs a {param.type}, got {value}",
             arg.value,
         )
+
+
+def _derived(param: Type, value: Type) -> bool:
+    """An instance of a function block that EXTENDS the in-out's FB (st/inheritance.py) stands for one of it."""
+    return (
+        isinstance(param, t.FbType)
+        and isinstance(value, t.FbType)
+        and param.pou is not None
+        and value.pou is not None
+        and value.pou.derives_from(param.pou)
+    )
 
 
 def _open_array(param: Type, value: Type) -> bool:

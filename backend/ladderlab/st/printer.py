@@ -144,7 +144,7 @@ def _statement(stmt: ast.Stmt, level: int) -> str:
     if isinstance(stmt, ast.RefAssign):
         return f"{pad}{_expr(stmt.target, 0)} REF= {_expr(stmt.value, 0)};\n"
     if isinstance(stmt, ast.Assign):
-        return f"{pad}{_expr(stmt.target, 0)} := {_expr(stmt.value, 0)};\n"
+        return f"{pad}{_expr(stmt.target, 0)} {'?=' if stmt.attempt else ':='} {_expr(stmt.value, 0)};\n"
     if isinstance(stmt, ast.CallStmt):
         return f"{pad}{_expr(stmt.call, 0)};\n"
     if isinstance(stmt, ast.If):

@@ -104,12 +104,19 @@ def test_path(name: str) -> str:
     return f"{TESTS_DIR}/{name}{TEST_SUFFIX}"
 
 
+#: The object orientation's fields of a POU, left out of its file when they hold their defaults.
+OO_KEYS = ("methods", "properties", "implements", "abstract", "final")
+
+
 def pou_file(pou: Pou) -> tuple[str, str]:
     """The stored path and content of one POU."""
     if pou.language in TEXT_LANGUAGES and round_trips(pou):
         suffix = ".plant.st" if pou.kind == "plant" else f".{pou.language}"
         return f"{POUS_DIR}/{pou.name}{suffix}", compose_pou_text(pou)
     data = pou.model_dump(mode="json", by_alias=True, exclude_none=True)
+    for key in OO_KEYS:  # only FBs that use object orientation carry these: other POUs' files stay as they were
+        if not data[key]:
+            del data[key]
     return f"{POUS_DIR}/{pou.name}.{pou.language}.json", dump_json(data)
 
 

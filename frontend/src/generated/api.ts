@@ -832,6 +832,24 @@ export type webhooks = Record<string, never>;
 export interface components {
   schemas: {
     /**
+     * Accessor
+     * @description A PROPERTY's GET or SET: its own variables and ST body (GET assigns the property's name, SET reads it).
+     */
+    Accessor: {
+      /**
+       * Body
+       * @description ST statements.
+       * @default
+       */
+      body?: string;
+      /**
+       * Declarations
+       * @description ST text of its VAR...END_VAR blocks, as typed.
+       * @default
+       */
+      declarations?: string;
+    };
+    /**
      * Bar
      * @description A level between ``min`` and ``max``, as a bar or a tank; red past an alarm limit.
      */
@@ -1806,6 +1824,51 @@ export interface components {
       secret: string;
     };
     /**
+     * Method
+     * @description A METHOD of a FUNCTION_BLOCK (IEC 61131-3 ed. 3, CODESYS): its own variables and ST body; it works on the
+     *     variables of the instance it is called on (docs/st.md, object orientation).
+     */
+    Method: {
+      /**
+       * Abstract
+       * @description ABSTRACT: no body; a derived FB must implement it.
+       * @default false
+       */
+      abstract?: boolean;
+      /**
+       * Access
+       * @description Who may call it; CODESYS's default is PUBLIC.
+       * @default PUBLIC
+       * @enum {string}
+       */
+      access?: "PUBLIC" | "PRIVATE" | "PROTECTED" | "INTERNAL";
+      /**
+       * Body
+       * @description ST statements.
+       * @default
+       */
+      body?: string;
+      /**
+       * Declarations
+       * @description ST text of its VAR...END_VAR blocks, as typed.
+       * @default
+       */
+      declarations?: string;
+      /**
+       * Final
+       * @description FINAL: an FB derived from this one cannot override it.
+       * @default false
+       */
+      final?: boolean;
+      /** Name */
+      name: string;
+      /**
+       * Return Type
+       * @description The result type; None: a method without a value.
+       */
+      return_type?: string | null;
+    };
+    /**
      * Motion
      * @description A move by a variable's value: ``min`` leaves the widget where it is placed, ``max`` moves it by ``distance``
      *     pixels (negative: left or up), values in between in proportion, values outside held at the ends.
@@ -2187,6 +2250,12 @@ export interface components {
      */
     Pou: {
       /**
+       * Abstract
+       * @description Function blocks only: ABSTRACT, it cannot be instantiated.
+       * @default false
+       */
+      abstract?: boolean;
+      /**
        * Body
        * @default
        */
@@ -2203,6 +2272,22 @@ export interface components {
        */
       declarations?: string;
       /**
+       * Extends
+       * @description Function blocks only: the function block it EXTENDS.
+       */
+      extends?: string | null;
+      /**
+       * Final
+       * @description Function blocks only: FINAL, no function block extends it.
+       * @default false
+       */
+      final?: boolean;
+      /**
+       * Implements
+       * @description Function blocks only: the INTERFACEs (declared in the types) it IMPLEMENTS.
+       */
+      implements?: string[];
+      /**
        * Kind
        * @enum {string}
        */
@@ -2212,8 +2297,18 @@ export interface components {
        * @enum {string}
        */
       language: "st" | "ld" | "fbd" | "cfc" | "il" | "sfc";
+      /**
+       * Methods
+       * @description Function blocks only: their METHODs.
+       */
+      methods?: components["schemas"]["Method"][];
       /** Name */
       name: string;
+      /**
+       * Properties
+       * @description Function blocks only: their PROPERTYs.
+       */
+      properties?: components["schemas"]["Property"][];
       /**
        * Return Type
        * @description Functions only: the result type.
@@ -2373,6 +2468,29 @@ export interface components {
       problems?: components["schemas"]["Diagnostic"][];
       /** Revision */
       revision: string | null;
+    };
+    /**
+     * Property
+     * @description A PROPERTY of a FUNCTION_BLOCK (CODESYS, IEC 61131-3 ed. 3 draft): read as ``inst.P`` through its GET,
+     *     written as ``inst.P := v`` through its SET; a missing accessor makes it write-only or read-only.
+     */
+    Property: {
+      /**
+       * Access
+       * @description Who may read and write it.
+       * @default PUBLIC
+       * @enum {string}
+       */
+      access?: "PUBLIC" | "PRIVATE" | "PROTECTED" | "INTERNAL";
+      get?: components["schemas"]["Accessor"] | null;
+      /** Name */
+      name: string;
+      set?: components["schemas"]["Accessor"] | null;
+      /**
+       * Type
+       * @description Its type, as written.
+       */
+      type: string;
     };
     /**
      * PushButton
@@ -3607,6 +3725,7 @@ export interface components {
   headers: never;
   pathItems: never;
 }
+export type Accessor = components["schemas"]["Accessor"];
 export type Bar = components["schemas"]["Bar"];
 export type Block = components["schemas"]["Block"];
 export type Box = components["schemas"]["Box"];
@@ -3652,6 +3771,7 @@ export type LdBody = components["schemas"]["LdBody"];
 export type LdNetwork = components["schemas"]["LdNetwork"];
 export type LibraryEntry = components["schemas"]["LibraryEntry"];
 export type Login = components["schemas"]["Login"];
+export type Method = components["schemas"]["Method"];
 export type Motion = components["schemas"]["Motion"];
 export type Multistate = components["schemas"]["Multistate"];
 export type NumericDisplay = components["schemas"]["NumericDisplay"];
@@ -3670,6 +3790,7 @@ export type ProgramInstance = components["schemas"]["ProgramInstance"];
 export type Project = components["schemas"]["Project"];
 export type ProjectDocument = components["schemas"]["ProjectDocument"];
 export type ProjectSummary = components["schemas"]["ProjectSummary"];
+export type Property = components["schemas"]["Property"];
 export type PushButton = components["schemas"]["PushButton"];
 export type Reference = components["schemas"]["Reference"];
 export type ReferenceList = components["schemas"]["ReferenceList"];

@@ -4,6 +4,7 @@
 // toolbar, the bottom panels, Save (Ctrl+S) and the dialog for a save conflict (reload theirs or
 // overwrite deliberately).
 import {
+  Fragment,
   lazy,
   Suspense,
   useCallback,
@@ -54,6 +55,7 @@ import { KindPicker, PouActions } from "./PouActions";
 import { TestFileActions } from "../tests/TestFileActions";
 import { GlobalsView, TasksView, TypesView, useDeclarableTypes } from "./ProjectParts";
 import { isProjectPart, PROJECT_PARTS, type ProjectPart } from "./parts";
+import { PouMembers } from "./PouMembers";
 import { typeRows } from "./types";
 import { keepSession, restoreSession, type SessionStores } from "./session";
 import { traceStore } from "../trace/store";
@@ -264,23 +266,26 @@ function ProjectTree() {
             {group.length ? (
               <ul>
                 {group.map((p) => (
-                  <li key={p.name} className="tree-row">
-                    <button
-                      type="button"
-                      className="tree-item"
-                      aria-current={active === p.name ? "true" : undefined}
-                      onClick={() => openPou(p.name)}
-                    >
-                      <span className="tree-name">{p.name}</span>
-                      <span className={`lang lang-${p.language}`}>{LANGUAGE[p.language]}</span>
-                      {changed.includes(p.name) ? (
-                        <span className="unsaved" aria-label="unsaved changes">
-                          ●
-                        </span>
-                      ) : null}
-                    </button>
-                    <PouActions pou={p} />
-                  </li>
+                  <Fragment key={p.name}>
+                    <li className="tree-row">
+                      <button
+                        type="button"
+                        className="tree-item"
+                        aria-current={active === p.name ? "true" : undefined}
+                        onClick={() => openPou(p.name)}
+                      >
+                        <span className="tree-name">{p.name}</span>
+                        <span className={`lang lang-${p.language}`}>{LANGUAGE[p.language]}</span>
+                        {changed.includes(p.name) ? (
+                          <span className="unsaved" aria-label="unsaved changes">
+                            ●
+                          </span>
+                        ) : null}
+                      </button>
+                      <PouActions pou={p} />
+                    </li>
+                    <PouMembers pou={p} open={() => openPou(p.name)} />
+                  </Fragment>
                 ))}
               </ul>
             ) : (

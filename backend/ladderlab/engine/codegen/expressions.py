@@ -165,6 +165,11 @@ class Expressions:
         """``REF(x)``: a ``runtime.Ref`` to the variable's ``(container, key)``."""
         return f"ll_Ref(*{self.ref(a.var)}, {a.text!r})"
 
+    def attempt(self, a: ir.Attempt) -> str:
+        """``?=``: the reference when its instance's class is one of the FBs implementing the interface, else NULL."""
+        classes = "".join(f"{names.pou_class(fb)}, " for fb in a.blocks)
+        return f"ll_attempt({self.expr(a.value)}, ({classes}))"
+
     def convert(self, c: ir.Convert) -> str:
         operand = self.expr(c.operand)
         source, target = self.scalar(c.source, "conversion"), self.scalar(c.type, "conversion")
@@ -222,7 +227,10 @@ class Expressions:
             )
         args = [self.value_for(a, slot.type) for a, slot in zip(c.args, inputs)]
         args += [self.ref(v) for v in c.in_outs]
-        call = f"{names.function(callee.name)}({', '.join(args)})"
+        if c.virtual and c.function.upper() in self.module.program.dispatch:  # a method: by its instance's FB
+            call = f"ll_virtual({names.dispatch_table(callee.name)}, {len(inputs)}, {', '.join(args)})"
+        else:
+            call = f"{names.function(callee.name)}({', '.join(args)})"
         return f"(yield from {call})" if self.module.debug else call
 
     def value_for(self, e: ir.Expr, target: t.IrType) -> str:
@@ -354,6 +362,7 @@ _HANDLERS = {
     ir.Call: Expressions.call,
     ir.Convert: Expressions.convert,
     ir.AddressOf: Expressions.address_of,
+    ir.Attempt: Expressions.attempt,
 }
 
 

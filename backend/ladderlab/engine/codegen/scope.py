@@ -92,6 +92,8 @@ class Scope:
 
     def _root(self, var: ir.Var) -> tuple[str, t.IrType, int]:
         """``root``'s source and type, and the page its slot lives on (0: ``self``, a local or a global)."""
+        if self._self(var):
+            return "self", t.FbInstance(self.pou.name.upper()), 0
         slot = self.slot(var)
         if slot.address is not None:  # a located variable: its process image view (engine/process_image.py)
             view, key = self.module.image_view(slot, world=self.pou.live_clock)
@@ -129,6 +131,8 @@ class Scope:
 
     def root_ref(self, var: ir.Var) -> str:
         """Source of a ``(container, key)`` reference to the whole root slot of ``var``."""
+        if self._self(var):
+            return "((self,), 0)"
         slot = self.slot(var)
         if slot.address is not None:
             view, key = self.module.image_view(slot, world=self.pou.live_clock)
@@ -144,6 +148,10 @@ class Scope:
                 raise CodegenError(f"{slot.name} cannot be passed by reference")  # boxed() missed it: a bug
             return f"({attr}, 0)"
         return f"({self._owner(var)}, {attr!r})"
+
+    def _self(self, var: ir.Var) -> bool:
+        """``THIS^`` in a function block's body: the instance running it (ir.nodes.SELF)."""
+        return var.scope == "local" and var.name == ir.SELF and not self.function
 
     def result_slot(self) -> ir.Slot:
         """A FUNCTION's result: the slot named like the function."""
