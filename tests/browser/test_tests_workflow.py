@@ -39,7 +39,7 @@ def test_run_tests_see_a_failure_jump_to_it_open_it_online_and_see_coverage(page
     page.goto(server)
     page.get_by_role("navigation", name="Projects").get_by_role("button", name=re.compile("^motor")).click()
     tree = page.get_by_role("navigation", name="Project tree")
-    tree.get_by_role("button", name="tests/motor.st").wait_for()
+    tree.get_by_role("button", name="tests/motor.st", exact=True).wait_for()
 
     # The Tests panel lists the example's six tests; Run all: every result streams in, all pass.
     panels = page.get_by_role("region", name="Panels")
@@ -215,7 +215,7 @@ def test_a_test_file_highlights_verbs_completes_its_locals_and_is_renamed_and_de
     dialog.get_by_label("New test file name").fill("faults")
     dialog.get_by_role("button", name="Rename").click()
     page.get_by_role("textbox", name="tests/faults.st").wait_for()
-    assert tree.get_by_role("button", name="tests/draft.st").count() == 0
+    assert tree.get_by_role("button", name="tests/draft.st", exact=True).count() == 0
     page.keyboard.press("Control+s")
     saved = page.get_by_text("All changes saved")
     saved.wait_for()
@@ -226,7 +226,7 @@ def test_a_test_file_highlights_verbs_completes_its_locals_and_is_renamed_and_de
     tree.get_by_role("button", name="Actions for tests/faults.st").click()
     tree.get_by_role("menuitem", name="Delete…").click()
     page.get_by_role("dialog", name="Delete tests/faults.st").get_by_role("button", name="Delete").click()
-    tree.get_by_role("button", name="tests/faults.st").wait_for(state="detached")
+    tree.get_by_role("button", name="tests/faults.st", exact=True).wait_for(state="detached")
     assert page.get_by_role("textbox", name="tests/faults.st").count() == 0
     saved.wait_for(state="detached")  # the deletion is unsaved
     page.keyboard.press("Control+s")
