@@ -1,20 +1,23 @@
 // The panels under the editor: Diagnostics, Watch list, I/O, Online log, Breakpoints, Trace, Tests and Cross
 // references, one shown at a time.
+import { lazy, Suspense } from "react";
 import { useDebug } from "../debug/store";
 import type { Diagnostic } from "../generated/api";
 import { draggedOperand } from "../ld/editor/dragOperand";
 import { onlineStore, useOnline } from "../online/store";
-import { TestsPanel } from "../tests/TestsPanel";
 import { useTests } from "../tests/store";
-import { TracePanel } from "../trace/TracePanel";
-import { BreakpointsPanel } from "./BreakpointsPanel";
 import { DiagnosticsPanel } from "./DiagnosticsPanel";
 import { IoPanel } from "./IoPanel";
 import { LogPanel } from "./LogPanel";
 import { panelsStore, usePanels, type PanelId } from "./store";
 import { WatchPanel } from "./WatchPanel";
-import { XrefPanel } from "../xref/XrefPanel";
 import { ViewBoundary } from "../project/ViewBoundary";
+
+// The panels used now and then are loaded when first shown (issue 22 item 8: the initial chunk).
+const TracePanel = lazy(() => import("../trace/TracePanel").then((m) => ({ default: m.TracePanel })));
+const TestsPanel = lazy(() => import("../tests/TestsPanel").then((m) => ({ default: m.TestsPanel })));
+const XrefPanel = lazy(() => import("../xref/XrefPanel").then((m) => ({ default: m.XrefPanel })));
+const BreakpointsPanel = lazy(() => import("./BreakpointsPanel").then((m) => ({ default: m.BreakpointsPanel })));
 
 /** Each panel in the user's words, for the message when it fails. */
 const PANEL_NAMES: Record<PanelId, string> = {
@@ -83,7 +86,7 @@ export function BottomPanels({ onReveal, pathOfOperand }: BottomPanelsProps) {
       </div>
       <div className="panel-body" role="tabpanel">
         <ViewBoundary key={panel} name={`The ${PANEL_NAMES[panel]}`}>
-          {body[panel]}
+          <Suspense fallback={<p className="panel-empty">Loading…</p>}>{body[panel]}</Suspense>
         </ViewBoundary>
       </div>
     </section>

@@ -7,8 +7,7 @@ import { Suspense, useMemo, useState, type FormEvent } from "react";
 import type { Diagnostic } from "../generated/api";
 import type { Task } from "../generated/api";
 import { DeclarationsEditor } from "../declarations/DeclarationsEditor";
-import { userTypeNames } from "../declarations/model";
-import { DECLARABLE_TYPES } from "../iec/vocabulary";
+import { useDeclarableTypes } from "./declarableTypes";
 import { usePanels } from "../panels/store";
 import { LazyStEditor, LOADING } from "./lazy";
 import { useLiveCheck } from "../st/useLiveCheck";
@@ -19,24 +18,6 @@ import { useWorkspace } from "./store";
 
 const NO_COMPLETIONS = { options: [], members: () => null };
 const NO_TASKS: Task[] = [];
-
-/** The types a declaration may use: elementary, the project's own, and the function blocks. */
-export function useDeclarableTypes(): string[] {
-  const library = useWorkspace((s) => s.library);
-  const userTypes = useWorkspace((s) => s.project?.types ?? "");
-  const pous = useWorkspace((s) => s.project?.pous);
-  return useMemo(
-    () => [
-      ...new Set([
-        ...DECLARABLE_TYPES,
-        ...userTypeNames(userTypes),
-        ...library.filter((e) => e.kind === "function_block").map((e) => e.name),
-        ...(pous ?? []).filter((p) => p.kind === "function_block").map((p) => p.name),
-      ]),
-    ],
-    [userTypes, library, pous],
-  );
-}
 
 /** The live check of the working copy, for the diagnostics of one part. */
 function usePartDiagnostics(): Diagnostic[] {

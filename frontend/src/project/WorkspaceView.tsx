@@ -51,7 +51,7 @@ import { InstancePicker, OnlineActions } from "./InstancePicker";
 import { LOADING } from "./lazy";
 import { useHidden } from "./layout";
 import { KindPicker, PouActions } from "./PouActions";
-import { GlobalsView, TasksView, TypesView, useDeclarableTypes } from "./ProjectParts";
+import { useDeclarableTypes } from "./declarableTypes";
 import { isProjectPart, PROJECT_PARTS, type ProjectPart } from "./parts";
 import { typeRows } from "./types";
 import { keepSession, restoreSession, type SessionStores } from "./session";
@@ -62,6 +62,9 @@ const StPouView = lazy(() => import("./StViews").then((m) => ({ default: m.StPou
 const TestFileView = lazy(() => import("./StViews").then((m) => ({ default: m.TestFileView })));
 const FbdPouView = lazy(() => import("../fbd/FbdPouView").then((m) => ({ default: m.FbdPouView })));
 const ShellTab = lazy(() => import("../hmi/ShellTab").then((m) => ({ default: m.ShellTab })));
+const GlobalsView = lazy(() => import("./ProjectParts").then((m) => ({ default: m.GlobalsView })));
+const TypesView = lazy(() => import("./ProjectParts").then((m) => ({ default: m.TypesView })));
+const TasksView = lazy(() => import("./ProjectParts").then((m) => ({ default: m.TasksView })));
 const SfcPouView = lazy(() => import("../sfc/SfcPouView").then((m) => ({ default: m.SfcPouView })));
 
 /** The stores a project's session (project/session.ts) is kept from. */
@@ -434,7 +437,9 @@ type PouMode = "body" | "declarations" | "variables" | "st";
 function ProjectPartView({ part }: { part: ProjectPart }) {
   return (
     <ViewBoundary name={`The ${part} editor`}>
-      {part === "Global variables" ? <GlobalsView /> : part === "Types" ? <TypesView /> : <TasksView />}
+      <Suspense fallback={LOADING}>
+        {part === "Global variables" ? <GlobalsView /> : part === "Types" ? <TypesView /> : <TasksView />}
+      </Suspense>
     </ViewBoundary>
   );
 }
