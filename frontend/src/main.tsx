@@ -3,7 +3,9 @@ import { createRoot } from "react-dom/client";
 import App from "./App";
 import { panelTarget } from "./hmi/panelTarget";
 import "./styles.css";
+import { showInitialTheme } from "./ui/theme";
 
+showInitialTheme();
 const root = document.getElementById("root");
 if (!root) throw new Error("index.html has no #root element");
 

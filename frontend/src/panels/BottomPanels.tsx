@@ -12,6 +12,7 @@ import { LogPanel } from "./LogPanel";
 import { panelsStore, usePanels, type PanelId } from "./store";
 import { WatchPanel } from "./WatchPanel";
 import { ViewBoundary } from "../project/ViewBoundary";
+import { Splitter } from "../ui/Splitter";
 
 // The panels used now and then are loaded when first shown (issue 22 item 8: the initial chunk).
 const TracePanel = lazy(() => import("../trace/TracePanel").then((m) => ({ default: m.TracePanel })));
@@ -93,44 +94,21 @@ export function BottomPanels({ onReveal, pathOfOperand }: BottomPanelsProps) {
   );
 }
 
-/** Step of the keyboard resize (Arrow up/down on the separator). */
-const KEY_STEP_PX = 24;
-
 /**
  * The top edge of the panels: dragging it up or down (or Arrow up/down when focused) gives the
- * panels more or less of the height, e.g. for a trace chart.
+ * panels more or less of the height, e.g. for a trace chart; the height is kept after a reload.
  */
 function PanelResizer() {
   const height = usePanels((s) => s.height);
-  const current = (el: HTMLElement) =>
-    panelsStore.getState().height ?? el.parentElement!.getBoundingClientRect().height;
-  const setHeight = (px: number) => panelsStore.getState().setHeight(px, window.innerHeight);
   return (
-    <div
+    <Splitter
+      label="Resize the panels"
+      orientation="horizontal"
+      grow={-1}
       className="panel-resizer"
-      role="separator"
-      aria-orientation="horizontal"
-      aria-label="Resize the panels"
-      aria-valuenow={height ?? undefined}
-      tabIndex={0}
-      onPointerDown={(e) => {
-        e.preventDefault();
-        const startY = e.clientY;
-        const startHeight = current(e.currentTarget);
-        const move = (ev: PointerEvent) => setHeight(startHeight + startY - ev.clientY);
-        const up = () => {
-          window.removeEventListener("pointermove", move);
-          window.removeEventListener("pointerup", up);
-        };
-        window.addEventListener("pointermove", move);
-        window.addEventListener("pointerup", up);
-      }}
-      onKeyDown={(e) => {
-        const step = e.key === "ArrowUp" ? KEY_STEP_PX : e.key === "ArrowDown" ? -KEY_STEP_PX : 0;
-        if (!step) return;
-        e.preventDefault();
-        setHeight(current(e.currentTarget) + step);
-      }}
+      value={height}
+      size={(edge) => panelsStore.getState().height ?? edge.parentElement!.getBoundingClientRect().height}
+      onResize={(px) => panelsStore.getState().setHeight(px, window.innerHeight)}
     />
   );
 }
