@@ -397,7 +397,6 @@ function Tabs() {
   );
 }
 
-
 /** A POU by an IEC name in any case (the simulation reports halts with the compiled spelling). */
 const pouNamed = (project: Project | null, name: string) =>
   project?.pous?.find((p) => p.name.toUpperCase() === name.toUpperCase());
