@@ -42,9 +42,11 @@ def test_st_and_fbd_editors_load_on_first_use(page, server: str) -> None:
     page.on("request", lambda request: scripts.append(request.url) if request.resource_type == "script" else None)
     page.on(
         "response",
-        lambda response: sizes.__setitem__(response.url, len(response.body()))
-        if response.request.resource_type == "script"
-        else None,
+        lambda response: (
+            sizes.__setitem__(response.url, len(response.body()))
+            if response.request.resource_type == "script"
+            else None
+        ),
     )
     page.goto(server)
     open_pou(page, "lazy", "Lad")
