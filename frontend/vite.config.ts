@@ -38,5 +38,8 @@ export default defineConfig({
     setupFiles: ["src/test/setup.ts"],
     restoreMocks: true,
     unstubGlobals: true,
+    // jsdom renders of the whole app shell take 1-2 s alone and over 5 s (the default limit) on a busy
+    // 2-core machine; a hang still fails, after 30 s.
+    testTimeout: 30_000,
   },
 });

@@ -118,6 +118,10 @@ def test_new_user_writes_an_st_fb_fixes_a_typo_and_watches_it_run(page, server):
     # Online: values appear inline after the variables and n keeps counting.
     state = save_and_run(page)
     assert page.get_by_label("Show values inline").is_checked()
+    # Both texts are read-only online, and the POU says why once (not once per editor).
+    assert page.locator(".st-editor-readonly").all_inner_texts() == ["Online: go offline to edit."]
+    for part in ("Main declarations", "Main body"):
+        assert page.get_by_label(part).get_attribute("aria-readonly") == "true"
     # Run, n and c1.Count have values; c1 (an FB) and Enable (a formal parameter) do not.
     n_value = """() => Number(document.querySelectorAll('[aria-label="Main body"] .cm-st-value')[1]?.textContent)"""
     page.wait_for_function(f"() => ({n_value})() > 5")

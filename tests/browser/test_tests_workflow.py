@@ -140,3 +140,97 @@ def test_run_tests_see_a_failure_jump_to_it_open_it_online_and_see_coverage(page
     body.locator(".cm-coverage-never").first.wait_for(state="detached")
     assert status.is_visible()
     assert problems == []
+
+
+DRAFT = """TEST 'draft'
+  VAR count_me : INT; (* VAR in_comment : INT; END_VAR *) END_VAR
+  RUN_SCANS(1);
+  FAULT(Start, 'stuck_true');
+  ASSERT_TRUE(Motor);
+END_TEST
+"""
+
+
+def _colour(page, file: str, word: str) -> list:
+    """The colour of ``word``'s token in the editor of ``file`` and of plain text there."""
+    return page.evaluate(
+        """([file, word]) => {
+            const content = document.querySelector(`[aria-label="${file}"]`);
+            const span = [...content.querySelectorAll('.cm-line span')].find((s) => s.textContent === word);
+            return [span ? getComputedStyle(span).color : null, getComputedStyle(content).color];
+        }""",
+        [file, word],
+    )
+
+
+def test_a_test_file_highlights_verbs_completes_its_locals_and_is_renamed_and_deleted(page, server):
+    """Issue 20 item 5: test verbs are keywords of the test file's editor, its own VAR blocks are completed
+    (not those in comments), and the tree's menu renames a test file (saved under the new name only) and
+    deletes one."""
+    problems: list[str] = []
+    page.on("pageerror", lambda error: problems.append(f"page error: {error}"))
+    page.on("console", lambda m: problems.append(f"console {m.type}: {m.text}") if m.type == "error" else None)
+
+    page.goto(server)
+    page.get_by_role("navigation", name="Projects").get_by_role("button", name=re.compile("^motor")).click()
+    tree = page.get_by_role("navigation", name="Project tree")
+    tree.get_by_role("button", name="New test file").click()
+    page.get_by_label("Test file name").press_sequentially("draft")
+    page.get_by_role("form", name="New test file").get_by_role("button", name="Create").click()
+    editor = page.get_by_role("textbox", name="tests/draft.st")
+    editor.wait_for()
+    editor.click()
+    page.keyboard.press("Control+a")
+    page.keyboard.insert_text(DRAFT)
+
+    # Verbs and TEST are keywords; a variable is not.
+    for word in ("RUN_SCANS", "FAULT", "ASSERT_TRUE", "TEST"):
+        colour, plain = _colour(page, "tests/draft.st", word)
+        assert colour is not None and colour != plain, word
+    motor, plain = _colour(page, "tests/draft.st", "Motor")
+    assert motor in (None, plain)  # a variable is plain text (no span of its own)
+
+    # Completion offers the test's own variable, not the one in a comment.
+    page.keyboard.press("Control+End")
+    page.keyboard.type("cou")
+    options = page.locator(".cm-tooltip-autocomplete .cm-completionLabel")
+    options.first.wait_for()
+    assert "count_me" in options.all_inner_texts()
+    page.keyboard.type("n")
+    page.wait_for_function(
+        "() => [...document.querySelectorAll('.cm-tooltip-autocomplete .cm-completionLabel')]"
+        ".every((o) => o.textContent !== 'in_comment')"
+    )
+    page.keyboard.press("Escape")
+    page.keyboard.press("Control+a")
+    page.keyboard.insert_text(DRAFT)
+
+    # Rename through the tree's menu: the tab follows; saved, only the new file is there.
+    tree.get_by_role("button", name="Actions for tests/draft.st").click()
+    tree.get_by_role("menuitem", name="Rename…").click()
+    dialog = page.get_by_role("dialog", name="Rename tests/draft.st")
+    dialog.get_by_label("New test file name").fill("motor")
+    dialog.get_by_role("button", name="Rename").click()
+    assert dialog.get_by_role("alert").inner_text() == "There is already a test file called motor."
+    dialog.get_by_label("New test file name").fill("faults")
+    dialog.get_by_role("button", name="Rename").click()
+    page.get_by_role("textbox", name="tests/faults.st").wait_for()
+    assert tree.get_by_role("button", name="tests/draft.st").count() == 0
+    page.keyboard.press("Control+s")
+    saved = page.get_by_text("All changes saved")
+    saved.wait_for()
+    names = [t["name"] for t in page.request.get(f"{server}/api/projects/motor").json()["project"]["tests"]]
+    assert sorted(names) == ["faults", "motor"]
+
+    # Delete: gone from the tree and its tab closes; saved, gone from the project.
+    tree.get_by_role("button", name="Actions for tests/faults.st").click()
+    tree.get_by_role("menuitem", name="Delete…").click()
+    page.get_by_role("dialog", name="Delete tests/faults.st").get_by_role("button", name="Delete").click()
+    tree.get_by_role("button", name="tests/faults.st").wait_for(state="detached")
+    assert page.get_by_role("textbox", name="tests/faults.st").count() == 0
+    saved.wait_for(state="detached")  # the deletion is unsaved
+    page.keyboard.press("Control+s")
+    saved.wait_for()
+    names = [t["name"] for t in page.request.get(f"{server}/api/projects/motor").json()["project"]["tests"]]
+    assert names == ["motor"]
+    assert problems == []

@@ -12,11 +12,16 @@ from hypothesis import strategies as st
 
 from ladderlab.engine.inputs import InputEvent
 from ladderlab.engine.simulation import Simulation
+from ladderlab.model import ld
+from ladderlab.model.project import Pou
 from ladderlab.simulation.build import build_project
 from ladderlab.simulation.history import History, HistoryUnavailable
 from ladderlab.st.project_text import source_to_project
+from tests.interchange.st_support import as_st
+from tests.interchange.test_st_equivalence import RICH, rich_elements, rich_series
 from tests.interchange.test_st_fbd_equivalence import programs as fbd_programs
 from tests.ir.diagram_support import project as diagram_project
+from tests.ir.test_diagram_equivalence import _Ids
 from tests.support import fuzz_settings
 
 # Timers (TON, TOF, TP) on the virtual clock, edge triggers (R_TRIG, F_TRIG), a counter and arithmetic: the
@@ -269,21 +274,10 @@ def test_find_the_scan_where_a_variable_changed():
     assert history.changed("Main.Rises", 10, -1) is None
 
 
-@fuzz_settings(fast=15)
-@given(
-    pou=fbd_programs(),
-    writes=st.lists(
-        st.tuples(st.integers(0, 59), st.sampled_from(["i0", "i1", "i2", "c0", "c1"]), st.integers(-3, 3)),
-        max_size=25,
-    ),
-    interval=st.integers(1, 9),
-    seeks=st.lists(st.integers(0, 59), min_size=1, max_size=8),
-)
-def test_random_fbd_programs_seek_to_what_ran_live(pou, writes, interval, seeks):
-    """Issue 23 item 6 for generated programs: the FBD networks of the cross-language tests (BOOL, INT, compare
-    and select blocks, TON/CTU, edge and negated pins, feedback, jumps) with random writes over 60 scans; every
-    seeked scan shows the live variables and FBD power flow (each pin's value) of that scan."""
-    build = build_project(diagram_project(pou), "monitor")
+def _seeks_match_live(project, writes, interval: int, seeks: list[int], pou: str = "MAIN") -> None:
+    """Run ``project`` 60 scans with ``writes`` (scan, variable of Main, value) under a history; every seeked
+    scan shows the live variables and power flow of ``pou`` of that scan."""
+    build = build_project(project, "monitor")
     assert build.compiled is not None, build.diagnostics
     sim = Simulation(build.compiled)
     history = History(sim, min_interval=interval, clock=_Cost(sim, 1e-3, 1e-5))
@@ -294,10 +288,51 @@ def test_random_fbd_programs_seek_to_what_ran_live(pou, writes, interval, seeks)
             if at == scan:
                 sim.write(f"Main.{name}", value if name.startswith("c") else value > 0)
         sim.cycle(1)
-        seen.append((sim.snapshot(), sim.probes("MAIN")))
+        seen.append((sim.snapshot(), sim.probes(pou)))
     for scan in seeks:
         replay = history.seek(scan)
-        assert (replay.snapshot(), replay.probes("MAIN")) == seen[scan], f"scan {scan}"
+        assert (replay.snapshot(), replay.probes(pou)) == seen[scan], f"scan {scan}"
+
+
+_RICH_WRITES = st.lists(
+    st.tuples(st.integers(0, 59), st.sampled_from(["i0", "i1", "i2", "c0", "c1"]), st.integers(-3, 3)), max_size=25
+)
+
+
+@fuzz_settings(fast=15)
+@given(
+    pou=fbd_programs(),
+    writes=_RICH_WRITES,
+    interval=st.integers(1, 9),
+    seeks=st.lists(st.integers(0, 59), min_size=1, max_size=8),
+)
+def test_random_fbd_programs_seek_to_what_ran_live(pou, writes, interval, seeks):
+    """Issue 23 item 6 for generated programs: the FBD networks of the cross-language tests (BOOL, INT, compare
+    and select blocks, TON/CTU, edge and negated pins, feedback, jumps) with random writes over 60 scans; every
+    seeked scan shows the live variables and FBD power flow (each pin's value) of that scan."""
+    _seeks_match_live(diagram_project(pou), writes, interval, seeks)
+
+
+@fuzz_settings(fast=10)
+@given(
+    program=st.lists(rich_series(), min_size=1, max_size=4),
+    writes=_RICH_WRITES,
+    interval=st.integers(1, 9),
+    seeks=st.lists(st.integers(0, 59), min_size=1, max_size=8),
+    as_text=st.booleans(),
+)
+def test_random_ld_programs_and_their_st_seek_to_what_ran_live(program, writes, interval, seeks, as_text):
+    """Issue 23 item 6 for generated LD and ST programs: the rich LD rungs of the ST-export equivalence tests
+    (contacts of every mode, compares, coils of every mode anywhere, nested parallels, TON/CTU/ADD boxes) and,
+    as ST, their export: every seeked scan shows the live variables and power flow (LD rung states, ST line
+    probes) of that scan."""
+    ids = _Ids()
+    networks = [
+        ld.LdNetwork(id=f"n{index}", elements=rich_elements(series, ids)) for index, series in enumerate(program)
+    ]
+    pou = Pou(name="Main", kind="program", language="ld", declarations=RICH, body=ld.LdBody(networks=networks))
+    project = diagram_project(pou)
+    _seeks_match_live(as_st(project) if as_text else project, writes, interval, seeks)
 
 
 class _Quiet:

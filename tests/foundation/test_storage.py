@@ -320,3 +320,17 @@ def test_a_link_inside_the_project_folder_is_followed(tmp_path: Path) -> None:
     (folder / "pous" / "Blinker.st").unlink()
     (folder / "pous" / "Blinker.st").symlink_to(folder / "shared.st")
     assert load_project_path(folder) == load_project_path(EXAMPLES / "motor")
+
+
+def test_a_save_returns_the_revision_the_saved_folder_loads_with(ws: Workspace, motor: Project) -> None:
+    """Test files have no order of their own (a folder lists them by name): a browser that added 'faults' after
+    'motor' saves, and its next save, based on the revision the first returned, is no conflict."""
+    from ladderlab.model import TestFile
+
+    base = ws.create(motor)
+    added = motor.model_copy(update={"tests": [*motor.tests, TestFile(name="faults", text="TEST 'x'\nEND_TEST\n")]})
+    assert [t.name for t in added.tests][-1] == "faults" and len(added.tests) > 1
+    saved = ws.save(added, base)
+    assert ws.load("motor").revision == saved
+    without = added.model_copy(update={"tests": added.tests[:-1]})
+    assert ws.save(without, saved) == ws.load("motor").revision

@@ -601,6 +601,33 @@ def test_types_globals_and_tasks_fill_the_project():
     assert [(d.code, d.severity, d.message) for d in result.diagnostics] == []
 
 
+def test_configurations_a_project_cannot_hold_are_imported_with_warnings_saying_what_was_made_of_them():
+    """A project runs one configuration; a task needs an interval or a single trigger and a numeric priority."""
+    instances = """<instances><configurations><configuration name="C">
+      <resource name="R">
+        <task name="Bare" priority="high"><pouInstance name="i1" typeName="Main"/></task>
+      </resource>
+    </configuration><configuration name="D"/></configurations></instances>"""
+    result = imported(project_xml(pou_xml("Main", "<xhtml:p></xhtml:p>", language="ST"), instances=instances))
+    assert [(d.code, d.severity, d.message) for d in result.diagnostics] == [
+        (
+            "PLCOPEN-CONFIG",
+            "warning",
+            "2 configurations: a project runs one, so only the first was imported (the globals of all of them were)",
+        ),
+        (
+            "PLCOPEN-CONFIG",
+            "warning",
+            "task Bare has neither interval nor single; it is imported as a cyclic task of T#10ms",
+        ),
+        ("PLCOPEN-CONFIG", "warning", "task Bare: priority 'high' is not a number; 0 is used"),
+    ]
+    (resource,) = result.project.configuration.resources
+    assert resource.tasks == [
+        Task(name="Bare", interval="T#10ms", priority=0, programs=[ProgramInstance(name="i1", type="Main")])
+    ]
+
+
 def test_sfc_and_il_pous_import_actions_outside_sfc_and_foreign_add_data_are_reported_not_dropped_silently():
     """SFC imports as a chart (issue 24), IL as IL text kept as written (issue 26)."""
     pous = (

@@ -165,6 +165,17 @@ def test_the_model_rules_are_reported_with_the_project_and_stop_the_build():
     ]
 
 
+def test_a_function_without_a_return_type_is_reported_with_its_name():
+    """FUNCTION needs a result type (IEC 2.5.1); a model written by hand or by a tool can lack it.
+    Said once, at its declarations."""
+    project = _project([Pou(name="Twice", kind="function", language="st", body="Twice := 2;")], [])
+    result = lower_project(project)
+    assert result.program is None
+    assert [d.format() for d in result.diagnostics] == [
+        "Twice/declarations, POU Twice: error ST-DECL: the function Twice needs a return type"
+    ]
+
+
 def test_a_lowering_failure_nothing_explains_is_reported_never_dropped():
     """IR-INTERNAL: a statement the lowering gave up on without a message, while the checker found nothing wrong."""
     from ladderlab.ir.lower_types import LoweringError

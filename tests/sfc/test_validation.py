@@ -212,3 +212,25 @@ def test_a_bad_association_qualifier_is_refused_by_the_model():
     bad["qualifier"] = "X"
     with pytest.raises(ValidationError):
         sfc_pou("Main", DECLS, [{**step("S0"), "actions": [bad]}])
+
+
+def test_a_divergence_with_one_branch_is_no_divergence():
+    """SFC-07 (alternative) and SFC-08 (simultaneous): a divergence selects or starts two sequences or more."""
+    one_alt = alt([tr("go"), jump("S0")])
+    found = one([step("S0"), one_alt])
+    assert ("SFC-BRANCHES", one_alt["id"]) in codes(found)
+    assert "an alternative divergence needs two branches or more" in [m for c, _, e, m in found if e == one_alt["id"]]
+    one_par = par([step("S1"), tr("x")])
+    found = one([step("S0"), tr("go"), one_par, jump("S0")])
+    assert [m for c, _, e, m in found if c == "SFC-BRANCHES"] == [
+        "a simultaneous divergence needs two branches or more"
+    ]
+
+
+def test_an_alternative_branch_ending_with_a_step_is_a_warning():
+    """A branch that ends in a step stops the chart there: a warning naming the branch, the chart still runs."""
+    last = step("S2")
+    chart = [step("S0"), alt([tr("go"), last], [tr("x"), jump("S0")])]
+    warnings = problems(sfc_pou("Main", DECLS, chart), severity="warning")
+    assert [(c, e) for c, _, e, _ in warnings] == [("SFC-BRANCH-END", last["id"])]
+    assert warnings[0][3].startswith("branch 1 of the alternative ends with a step, so the chart stops there")

@@ -266,3 +266,66 @@ END_TEST
         "by address": None,
         "failing": f"ASSERT_EQ failed: %MW4 expected 4, got 3\nMessage: three scans @{at(text, 'ASSERT_EQ(%MW4, 4')}",
     }
+
+
+def test_fault_injects_a_stuck_or_noisy_signal_until_cleared():
+    """FAULT acts as the lab bench's faults do (docs/hmi.md): from the next scan on, where the program reads."""
+    text = """
+TEST 'stuck level'
+  Main.Fill := TRUE;
+  FAULT(Level, 'stuck', 0);
+  RUN_SCANS(10);
+  ASSERT_TRUE(Pump, 'every scan reads level 0, so the pump never stops');
+  CLEAR_FAULT(Level);
+  RUN_SCANS(10);
+  ASSERT_FALSE(Pump, 'without the fault the level reaches 5');
+  ASSERT_EQ(Level, 5);
+END_TEST
+TEST 'broken wire'
+  Main.Fill := TRUE;
+  FAULT(Main.Fill, 'stuck_false');
+  RUN_SCANS(3);
+  ASSERT_EQ(Level, 0, 'the program never saw Fill');
+END_TEST
+TEST 'always flipping'
+  Main.Fill := TRUE;
+  FAULT(Main.Fill, 'noisy', 1.0);
+  RUN_SCANS(3);
+  ASSERT_EQ(Level, 0, 'a flip rate of 1 turns every TRUE into FALSE');
+  CLEAR_FAULT(Main.Fill);
+  RUN_SCANS(2);
+  ASSERT_EQ(Level, 2);
+END_TEST
+TEST 'rate out of range'
+  FAULT(Main.Fill, 'noisy', 2.0);
+END_TEST
+"""
+    assert outcomes(run(PLANT, text)) == {
+        "stuck level": None,
+        "broken wire": None,
+        "always flipping": None,
+        "rate out of range": "FAULT on Main.Fill: a noisy fault's rate is a probability from 0 to 1, not 2.0 "
+        f"@{at(text, 'FAULT(Main.Fill, ' + chr(39) + 'noisy' + chr(39) + ', 2.0)')}",
+    }
+
+
+def test_faults_that_cannot_act_are_compile_errors():
+    text = """
+TEST 'bad faults'
+  VAR local : BOOL; END_VAR
+  FAULT(Level, 'stuck_true');
+  FAULT(Pump, 'stuck', TRUE);
+  FAULT(Level, 'broken');
+  FAULT(local, 'open');
+  FAULT(Level, 'open', 3);
+  CLEAR_FAULT(local);
+END_TEST
+"""
+    assert errors(PLANT, text) == [
+        "4:3 TEST-FORCE FAULT on Level: stuck_true is for BOOL signals; hold a number with stuck and a value",
+        "5:3 TEST-FORCE FAULT on Pump: hold a BOOL with stuck_true or stuck_false",
+        "6:16 TEST-VERB FAULT's mode is a STRING literal, one of 'stuck_true', 'stuck_false', 'stuck', 'open', 'noisy'",
+        "7:9 TEST-FORCE FAULT acts on a variable of a program or a global, not on a test variable",
+        "8:24 TEST-VERB FAULT 'open' takes no value: only 'stuck' and 'noisy' do",
+        "9:15 TEST-FORCE CLEAR_FAULT acts on a variable of a program or a global, not on a test variable",
+    ]

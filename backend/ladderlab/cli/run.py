@@ -15,10 +15,11 @@ import re
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 
-from ..engine.inputs import FAULT_MODES, InputEvent, InputRefused
+from ..engine.inputs import InputEvent, InputRefused
 from ..engine.simulation import Simulation
 from ..iec.literals import decode_duration, decode_string
 from ..ir.types import Elementary
+from ..model.faults import FAULT_MODES
 from ..simulation.conditions import Condition
 
 _DURATION = re.compile(r"(?:T|TIME)?#?((?:\d+(?:\.\d+)?(?:d|h|ms|m|s|us|ns)_?)+)", re.IGNORECASE)

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import itertools
 from dataclasses import dataclass
+from functools import cached_property
 from types import CodeType
 
 from ..collector import collector_paused
@@ -62,6 +63,12 @@ class CompiledProgram:
         """The variant-independent part of the source (classes, globals, probe lists)."""
         return self.generated.source[: self.generated.pieces[self.generated.code_from][1]]
 
+    @cached_property
+    def watched(self) -> bool:
+        """Whether the code checks the watchdog anywhere (a loop or a backward jump calls ``ll_wd``): without,
+        no scan can overrun it, and the engine does not read the CPU clock to arm it."""
+        return any(_calls_watchdog(code) for code in self.pieces)
+
     def namespace(self) -> dict[str, object]:
         """Execute the module in fresh globals: classes, functions and (uninitialised) globals objects."""
         ns = namespace()
@@ -76,6 +83,12 @@ class CompiledProgram:
         ns["ll_halt"] = [False] * len(self.generated.pauses)
         for code in self.pieces[self.generated.code_from :]:
             exec(code, ns)
+
+
+def _calls_watchdog(code: CodeType) -> bool:
+    return "ll_wd" in code.co_names or any(
+        _calls_watchdog(inner) for inner in code.co_consts if isinstance(inner, CodeType)
+    )
 
 
 def compile_program(program: ir.Program, variant: str = "fast") -> CompiledProgram:

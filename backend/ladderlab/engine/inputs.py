@@ -32,11 +32,10 @@ from dataclasses import dataclass, field
 from typing import Any, Literal, cast, get_args
 
 from ..ir import types as t
+from ..model.faults import FAULT_MODES, SignalKind, fault_refusal, signal_kind
 
 InputKind = Literal["write", "force", "release", "release_all", "panel", "fault", "clear_fault", "reset"]
 INPUT_KINDS: tuple[str, ...] = get_args(InputKind)
-FaultMode = Literal["stuck_true", "stuck_false", "stuck", "open", "noisy"]
-FAULT_MODES: tuple[str, ...] = get_args(FaultMode)
 
 #: A BOOL with a ``noisy`` fault flips with this probability per crossing unless the event says.
 DEFAULT_FLIP_RATE = 0.1
@@ -192,13 +191,9 @@ class Injection:
 
 def injection(event: InputEvent, ty: t.IrType, coerce: Callable[[object], object]) -> Injection:
     """The fault ``event`` injects into a variable of type ``ty``; InputRefused."""
-    kind = _kind(ty)
-    if kind is None:
-        raise InputRefused(f"faults act on BOOL and numeric signals, not on {_type_name(ty)}")
-    if kind != "bool" and event.mode in ("stuck_true", "stuck_false"):
-        raise InputRefused(f"{event.mode} is for BOOL signals; hold a number with stuck and a value")
-    if kind == "bool" and event.mode == "stuck":
-        raise InputRefused("hold a BOOL with stuck_true or stuck_false")
+    refused = fault_refusal(event.mode or "", _kind(ty), _type_name(ty))
+    if refused is not None:
+        raise InputRefused(refused)
     frozen = coerce(event.value) if event.mode == "stuck" else None
     return Injection(event, ty, coerce, frozen, random.Random(event.seed))
 
@@ -208,18 +203,13 @@ def _tuples(value: object) -> object:
     return tuple(_tuples(v) for v in value) if isinstance(value, (list, tuple)) else value
 
 
-def _kind(ty: t.IrType) -> str | None:
+def _kind(ty: t.IrType) -> SignalKind | None:
     """bool, int or real for the types a fault acts on; None for the others."""
     if isinstance(ty, t.Subrange):
         return "int"
     if not isinstance(ty, t.Elementary):
         return None
-    category = ty.info.category
-    if category == "bool":
-        return "bool"
-    if category in ("int", "bits"):
-        return "int"
-    return "real" if category == "real" else None
+    return signal_kind(ty.info.category)
 
 
 def _within(number: float, ty: t.IrType) -> float:

@@ -54,12 +54,17 @@ from .process_image import AREA_ORDER, IoPoint, ProcessImage, key_of, located_ad
 from .state import SimState, data_of, restore_into
 from .tasks import DEFAULT_WATCHDOG_S, Schedule, Task, task_table
 
+#: Scan times are sampled: the wall clock is read around every SAMPLE_EVERY-th scan (the first included), so a
+#: scan of a small program does not pay two clock readings (docs/runtime.md, "The scan loop").
+SAMPLE_EVERY = 16
+
 
 @dataclass
 class ScanStats:
-    """Wall time of the scans run so far (halted time excluded), in milliseconds."""
+    """Scans completed so far, and the wall time of the sampled ones (halted time excluded), in milliseconds."""
 
     count: int = 0
+    samples: int = 0
     total_ms: float = 0.0
     min_ms: float = 0.0
     max_ms: float = 0.0
@@ -67,12 +72,12 @@ class ScanStats:
 
     @property
     def avg_ms(self) -> float:
-        return self.total_ms / self.count if self.count else 0.0
+        return self.total_ms / self.samples if self.samples else 0.0
 
     def add(self, ms: float) -> None:
-        self.min_ms = ms if not self.count else min(self.min_ms, ms)
+        self.min_ms = ms if not self.samples else min(self.min_ms, ms)
         self.max_ms = max(self.max_ms, ms)
-        self.count += 1
+        self.samples += 1
         self.total_ms += ms
         self.last_ms = ms
 
@@ -182,9 +187,13 @@ class Simulation:
         return self._variants.get(variant)
 
     def _attach_debugger(self) -> None:
+        """The debugger of the debug variant, and what the scan loop may skip in the variant now installed."""
         self.debugger = (
             Debugger(self.compiled.generated.pauses, self._ns["ll_halt"]) if self.variant == "debug" else None
         )
+        self._watched = self.compiled.watched
+        lean = self.debugger is None and not self._triggers and not self._has_inputs and not self._has_outputs
+        self._lone = self._schedule.lone if lean else None
 
     # ------------------------------------------------------------------ state
 
@@ -239,6 +248,8 @@ class Simulation:
     def cycle(self, n: int = 1) -> int:
         """Run ``n`` scans of the task configuration; returns how many completed (fewer when one halts)."""
         self._not_halted()
+        if self._lone is not None:
+            return self._cycle_lone(n, self._lone)
         for done in range(n):
             now, due = self._schedule.advance()
             if not self._scan_now(now, due, scheduled=True):
@@ -267,6 +278,47 @@ class Simulation:
         if self.halted is not None:
             raise RuntimeError("the simulation is halted: resume(), step() or reset() first")
 
+    def _cycle_lone(self, n: int, task: Task) -> int:
+        """``cycle`` for the usual configuration, one cyclic task and nothing else to schedule (no plant, SINGLE
+        task, process image or debugger): the steps of ``_scan_now`` inline, each skipped when it has nothing to do
+        (inputs, forces, injected faults, the watchdog of a program without loops, an unsampled scan's clock)."""
+        ns, schedule, stats, period = self._ns, self._schedule, self.stats, cast(float, task.interval_ms)
+        self._scheduled = True
+        for done in range(n):
+            if self._pending:
+                self._apply_inputs()
+            if self._lone is None:  # a listener (on_input, on_scan) switched to the debug variant
+                return done + self.cycle(n - done)
+            if self._injections or self._forces:
+                self._cross()
+            now = task.next_due
+            task.next_due = now + period
+            schedule.time_ms = now
+            ns["ll_now"] = now
+            self._stamp += 1
+            ns["ll_scan"] = self._stamp
+            if not task.stopped:
+                sampled = not self.scan_count % SAMPLE_EVERY
+                start = self._clock() if sampled else 0.0
+                if self._watched:
+                    outer = self._watchdog.deadline, self._watchdog.limit_s  # a scan run from a test's body (call)
+                    self._watchdog.arm(task.watchdog_s)
+                try:
+                    ns[task.function]()
+                except Exception as error:
+                    self._fault(task, error, now)
+                if self._watched:
+                    self._watchdog.deadline, self._watchdog.limit_s = outer
+                if sampled:
+                    stats.add((self._clock() - start) * 1000.0)
+            if self._forces:
+                self._apply_forces()
+            stats.count += 1
+            self.scan_count += 1
+            if self.on_scan is not None:
+                self.on_scan(self.scan_count - 1, now, True)
+        return n
+
     def _scan_now(self, now: float, due: list[Task], scheduled: bool) -> bool:
         self._halts = 0
         self._scheduled = scheduled
@@ -283,12 +335,13 @@ class Simulation:
         self._ns["ll_scan"] = self._stamp
         if self.debugger is None:
             outer = self._watchdog.deadline, self._watchdog.limit_s  # a scan run from a test's body (call)
-            start = self._clock()
+            sampled = not self.scan_count % SAMPLE_EVERY
+            start = self._clock() if sampled else 0.0
             self._run_tasks(plants, now)
             if plants:
                 self._cross()
             self._run_tasks(control, now)
-            self._finish((self._clock() - start) * 1000.0)
+            self._finish((self._clock() - start) * 1000.0 if sampled else None)
             self._watchdog.deadline, self._watchdog.limit_s = outer
             return True
         self._scan, self._busy = self._debug_scan(now, plants, control), 0.0
@@ -297,7 +350,8 @@ class Simulation:
     def _run_tasks(self, tasks: list[Task], now: float) -> None:
         for task in tasks:
             if not task.stopped:
-                self._watchdog.arm(task.watchdog_s)
+                if self._watched:
+                    self._watchdog.arm(task.watchdog_s)
                 try:
                     self._ns[task.function]()
                 except Exception as error:
@@ -341,11 +395,15 @@ class Simulation:
         self.debugger.arm(None)  # type: ignore[union-attr]  # the debug variant is in use on this path
         return False
 
-    def _finish(self, elapsed_ms: float) -> None:
-        self._apply_forces()
+    def _finish(self, elapsed_ms: float | None) -> None:
+        """The end of a scan; ``elapsed_ms`` is its wall time when it was sampled (a debug scan always is)."""
+        if self._forces:
+            self._apply_forces()
         if self._has_outputs:
             self._image.publish()
-        self.stats.add(elapsed_ms)
+        if elapsed_ms is not None:
+            self.stats.add(elapsed_ms)
+        self.stats.count += 1
         self.scan_count += 1
         if self.on_scan is not None:
             self.on_scan(self.scan_count - 1, self.time_ms, self._scheduled)
@@ -793,9 +851,8 @@ class Simulation:
             else:
                 one = self._injections.pop(location.path, None)
                 lifted = [one] if one is not None else []
-            for where, fault in lifted:  # a plant's own variable gets its true value back
-                if self._plant_owned(where):
-                    where.set(self._roots, fault.lifted(where.get(self._roots)))
+            for where, fault in lifted:  # the signal as its writer (a plant, a panel, a test) last left it
+                where.set(self._roots, fault.lifted(where.get(self._roots)))
         scan = self.scan_count
         applied = (
             AppliedInput(event, scan, "halt", self._halt_pid, self._halts) if halted else AppliedInput(event, scan)

@@ -158,6 +158,9 @@ class Schedule:
         # (task, interval) of the cyclic tasks, in priority order: every scan walks it, so no lookups there
         self._periods = [(task, task.interval_ms) for task in clocks if task.interval_ms is not None]
         self._idle = not clocks or any(task.single for task in self.tasks)
+        lone = len(self.tasks) == 1 and len(self._periods) == 1 and not self._plants and not self._idle
+        #: The one cyclic task when it is the whole configuration: each scan runs it, at its next due time.
+        self.lone: Task | None = self._periods[0][0] if lone else None
 
     def next_time(self) -> float:
         due = min([task.next_due for task, _ in self._periods]) if self._periods else math.inf

@@ -48,6 +48,7 @@ from .types import BOOL, Elementary, IrType
 
 DINT = Elementary("DINT")
 LINT = Elementary("LINT")
+LREAL = Elementary("LREAL")
 TIME = Elementary("TIME")
 HOST = "TEST__HOST_{}"
 #: The Site number of the host call that tells the body whether it runs the TEARDOWN (TRUE) or the test.
@@ -58,7 +59,7 @@ PHASE_SITE = 0
 class Site:
     """One verb call in a test file: what it does (``verb``), where (1-based line and column of the file),
     the source text of its operands (for messages), the IEC types of the values it passes, and for FORCE /
-    RELEASE the variable's path, for MOCK_FUNCTION the function's name."""
+    RELEASE / FAULT / CLEAR_FAULT the variable's path, for FAULT its mode, for MOCK_FUNCTION the function's name."""
 
     verb: str
     line: int
@@ -67,6 +68,7 @@ class Site:
     types: tuple[IrType, ...] = ()
     path: str | None = None
     function: str | None = None
+    mode: str | None = None
 
 
 @dataclass(frozen=True)
@@ -224,6 +226,14 @@ class _Builder:
         site = self._site(use.verb, statement, operands, [a.type for a in args], path=use.path)
         return [self._call(site, args, origin)]
 
+    def _verb_fault(self, use: VerbUse, statement, ctx: PouContext, origin: Origin) -> list[Stmt]:
+        """FAULT passes its value when it has one: what ``stuck`` holds (the variable's type) or the noise (LREAL)."""
+        variable = lower_access(use.args[0], ctx).type
+        args = [lower_to(v, ctx, variable if use.mode == "stuck" else LREAL) for v in use.args[2:]]
+        operands = [print_expression(a) for a in use.args]
+        site = self._site("FAULT", statement, operands, [a.type for a in args], path=use.path, mode=use.mode)
+        return [self._call(site, args, origin)]
+
     def _verb_run_until(self, use: VerbUse, statement, ctx: PouContext, origin: Origin) -> list[Stmt]:
         """``start := now; WHILE NOT cond DO <one scan, failing once timeout has passed since start> END_WHILE``."""
         cond, timeout = use.args
@@ -260,6 +270,7 @@ _LOWERINGS = {
     "RUN_UNTIL": "run_until",
     "MOCK_VERIFY_CALLED": "instance",
     "MOCK_VERIFY_CALL_COUNT": "instance",
+    "FAULT": "fault",
 }
 
 

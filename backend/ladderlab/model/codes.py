@@ -55,7 +55,6 @@ _TABLE: list[tuple[str, str, Severity, str]] = [
     ("project", "DUPLICATE-INSTANCE", "error", "One program instance is run by two tasks."),
     ("project", "TASKS-AND-CONFIGURATION", "error", "A project has both a task list and a configuration."),
     ("project", "DUPLICATE-TEST-FILE", "error", "Two test files have the same name."),
-    ("project", "MISSING-RETURN-TYPE", "error", "A FUNCTION has no return type."),
     ("project", "UNEXPECTED-RETURN-TYPE", "error", "A PROGRAM or FUNCTION_BLOCK has a return type."),
     ("project", "BAD-INTERVAL", "error", "A task's interval is not a TIME literal."),
     ("project", "UNKNOWN-PROGRAM", "error", "A task runs a program the project does not have."),

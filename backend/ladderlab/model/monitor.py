@@ -17,6 +17,8 @@ from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
+from .faults import FaultMode
+
 #: A value a client may write or force: a JSON scalar, or IEC literal text (``'T#1s'``, ``'16#FF'``).
 WriteValue = bool | int | float | str
 #: A value the server reports: elementary values as JSON scalars (TIME and dates as integer ms, non-finite
@@ -182,7 +184,7 @@ class Inject(_Request):
 
     type: Literal["inject"]
     path: str
-    mode: Literal["stuck_true", "stuck_false", "stuck", "open", "noisy"]
+    mode: FaultMode
     value: WriteValue | None = None
     amplitude: float | None = Field(default=None, ge=0)
     rate: float | None = Field(default=None, ge=0, le=1)

@@ -30,10 +30,6 @@ def validate_project(project: Project) -> list[Diagnostic]:
                 )
             )
         seen.setdefault(key, pou.name)
-        if pou.kind == "function" and not pou.return_type:
-            out.append(
-                Diagnostic(code="MISSING-RETURN-TYPE", pou=pou.name, message=f"function {pou.name} needs a return type")
-            )
         if pou.kind != "function" and pou.return_type:
             out.append(
                 Diagnostic(

@@ -19,6 +19,7 @@ from lark.exceptions import UnexpectedInput
 from ..model.diagnostics import Diagnostic
 from . import ast
 from .comments import blank_nested_comments
+from .lark_cache import cached_lark
 from .parser import parse_expression, syntax_diagnostic
 
 GRAMMAR = pathlib.Path(__file__).with_name("il.lark")
@@ -109,7 +110,7 @@ class _Lines(Transformer):
 
 @functools.cache
 def _parser() -> Lark:
-    return Lark(GRAMMAR.read_text(encoding="utf-8"), parser="lalr", lexer="contextual", maybe_placeholders=True)
+    return cached_lark("il", GRAMMAR.read_text(encoding="utf-8"), lexer="contextual", maybe_placeholders=True)
 
 
 def parse_il(text: str, *, file: str | None = None, pou: str | None = None) -> IlParseResult:

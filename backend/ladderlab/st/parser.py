@@ -24,6 +24,7 @@ from ..model.diagnostics import Diagnostic
 from . import ast
 from .comments import attach_comments, blank_nested_comments
 from .errors import describe_unexpected, last_token, literal_problem, would_accept
+from .lark_cache import cached_lark
 from .nesting import too_deep
 from .quick_decls import quick_declarations
 from .transformer import AstBuilder, StSyntaxError
@@ -107,14 +108,13 @@ def reserved_words() -> frozenset[str]:
 @functools.cache
 def _parser(tests: bool = False) -> Lark:
     reserved = grammar_keywords() - {"TRUE", "FALSE"} - _SOFT_KEYWORDS - TEST_KEYWORDS
-    return Lark(
+    return cached_lark(
+        "st-tests" if tests else "st",
         GRAMMAR.read_text(encoding="utf-8"),
-        parser="lalr",
         lexer="contextual",
         start=_TEST_STARTS if tests else _STARTS,
         transformer=AstBuilder(reserved),
         maybe_placeholders=True,
-        cache=False,
     )
 
 

@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 
 from ..iec.spelling import did_you_mean
 from ..model.diagnostics import Diagnostic
+from ..model.faults import FAULT_MODES, fault_refusal, signal_kind
 from . import ast
 from . import types as t
 from .body import BodyChecker
@@ -44,6 +45,32 @@ VERBS: dict[str, tuple[int, int]] = {
     "COLD_START": (0, 0),
     "MOCK_VERIFY_CALLED": (1, 1),
     "MOCK_VERIFY_CALL_COUNT": (2, 2),
+    "FAULT": (2, 3),
+    "CLEAR_FAULT": (1, 1),
+}
+#: What the test file editor's completion shows after each verb and MOCK statement (docs/testing.md); the
+#: browser reads it from shared_schema/iec.json (``test_verbs``).
+SIGNATURES: dict[str, str] = {
+    **{verb: "(actual, expected [, 'message'])" for verb in ("ASSERT_EQ", "ASSERT_NEQ")},
+    **{verb: "(actual, threshold [, 'message'])" for verb in ("ASSERT_GT", "ASSERT_LT", "ASSERT_GE", "ASSERT_LE")},
+    "ASSERT_NEAR": "(actual, expected, tolerance [, 'message'])",
+    "ASSERT_TRUE": "(condition [, 'message'])",
+    "ASSERT_FALSE": "(condition [, 'message'])",
+    "ASSERT": "(condition)",
+    "ADVANCE_TIME": "(T#...)",
+    "RUN_SCANS": "(n)",
+    "RUN_FOR": "(T#...)",
+    "RUN_UNTIL": "(condition, T#timeout)",
+    "FORCE": "(variable, value)",
+    "RELEASE": "(variable)",
+    "WARM_START": "",
+    "COLD_START": "",
+    "MOCK": " instance",
+    "MOCK_FUNCTION": " f RETURNS value",
+    "MOCK_VERIFY_CALLED": "(instance)",
+    "MOCK_VERIFY_CALL_COUNT": "(instance, n)",
+    "FAULT": "(variable, 'mode' [, value])",
+    "CLEAR_FAULT": "(variable)",
 }
 #: The comparison each ASSERT_x checks, as the ST operator.
 COMPARISONS = {
@@ -216,6 +243,34 @@ class TestChecker(BodyChecker):
         if len(use.args) > 1:
             assignable_or_report(self, ty, self.expr(use.args[1], ty), use.args[1], "force")
 
+    def _verb_fault(self, use: VerbUse, node: ast.Call) -> None:
+        """FAULT(variable, 'mode' [, value]): the mode a constant of FAULT_MODES that fits the signal; the value
+        is what ``stuck`` holds (default: the value when the fault starts), or a noisy fault's flip rate (BOOL)
+        or amplitude (a number)."""
+        ty = self._path(use)
+        mode_arg = use.args[1]
+        self.expr(mode_arg)
+        mode = mode_arg.value if isinstance(mode_arg, ast.StringLit) else None
+        if mode not in FAULT_MODES:
+            modes = ", ".join(f"'{m}'" for m in FAULT_MODES)
+            self.report("TEST-VERB", f"FAULT's mode is a STRING literal, one of {modes}", mode_arg)
+            return
+        use.mode = mode
+        kind = signal_kind(ty.category) if isinstance(ty, t.Elementary) else None
+        refused = fault_refusal(mode, kind, str(ty)) if ty is not ERROR else None
+        if refused is not None:
+            self.report("TEST-FORCE", f"FAULT on {use.path}: {refused}", node)
+            return
+        if len(use.args) < 3:
+            return
+        value = use.args[2]
+        if mode == "stuck":
+            assignable_or_report(self, ty, self.expr(value, ty), value, "FAULT value")
+        elif mode == "noisy":
+            assignable_or_report(self, t.LREAL, self.expr(value, t.LREAL), value, "FAULT noise")
+        else:
+            self.report("TEST-VERB", f"FAULT '{mode}' takes no value: only 'stuck' and 'noisy' do", value)
+
     def _verb_restart(self, use: VerbUse, node: ast.Call) -> None:
         pass
 
@@ -233,7 +288,8 @@ class TestChecker(BodyChecker):
             self.report("TEST-MOCK", f"{verb} needs a function block instance, not {ty}", node)
 
     def _path(self, use: VerbUse) -> Type:
-        """FORCE and RELEASE name a variable of the configuration (a program's or a global) by constant indices."""
+        """FORCE, RELEASE, FAULT and CLEAR_FAULT name a variable of the configuration (a program's or a global)
+        by constant indices."""
         node = use.args[0]
         ty = self.expr(node)
         root = root_name(node)
@@ -265,6 +321,7 @@ _CHECKS = {
     "RUN_FOR": "time",
     "FORCE": "force",
     "RELEASE": "force",
+    "CLEAR_FAULT": "force",
     "WARM_START": "restart",
     "COLD_START": "restart",
     "MOCK_VERIFY_CALLED": "verify",

@@ -21,6 +21,7 @@ from ..iec.value_text import format_value
 from ..iec.values import f32
 from . import types as t
 from .parser import TEST_KEYWORDS, grammar_keywords, literal_patterns
+from .testfile import SIGNATURES
 
 #: Values the browser must write exactly as the engine does: (type, value in the value model).
 VALUE_SAMPLES: list[tuple[str, Any]] = [
@@ -118,6 +119,7 @@ def vocabulary() -> dict[str, Any]:
         ],
         "keywords": sorted(grammar_keywords() - TEST_KEYWORDS),
         "test_keywords": sorted(TEST_KEYWORDS),
+        "test_verbs": [{"name": verb, "signature": signature} for verb, signature in SIGNATURES.items()],
         "literals": [
             {"name": form.name, "prefixes": list(form.prefixes), "rule": form.rule, "examples": list(form.examples)}
             for form in LITERAL_FORMS

@@ -114,8 +114,12 @@ def pou_file(pou: Pou) -> tuple[str, str]:
 
 
 def revision_of(project: Project) -> str:
-    """A content hash: equal projects have equal revisions, whoever saved them."""
-    canonical = json.dumps(project.model_dump(mode="json", by_alias=True), sort_keys=True)
+    """A content hash: equal projects have equal revisions, whoever saved them. Test files are files, without
+    an order: they count in the order a load reads them (by file name), so a save returns the revision the
+    saved folder has (a browser that added ``b`` after ``c`` would otherwise conflict with its own save)."""
+    data = project.model_dump(mode="json", by_alias=True)
+    data["tests"] = sorted(data["tests"], key=lambda test: test_path(test["name"]))
+    canonical = json.dumps(data, sort_keys=True)
     return hashlib.sha256(canonical.encode()).hexdigest()[:16]
 
 

@@ -12,10 +12,11 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any, NoReturn
 
+from ..engine.inputs import InputEvent, InputRefused
 from ..engine.simulation import Simulation
 from ..iec.value_text import format_time
 from ..ir.lower_tests import Site
-from ..ir.types import Elementary
+from ..ir.types import BOOL, Elementary
 from .values import literal
 
 _OPERATORS: dict[str, tuple[str, Callable[[Any, Any], bool]]] = {
@@ -216,6 +217,32 @@ class Host:
 
     def _release(self, site: Site) -> bool:
         self.sim.unforce(site.path)  # type: ignore[arg-type]  # a RELEASE site has its path
+        return True
+
+    # ------------------------------------------------------------ faults
+    def _fault(self, site: Site, value: Any = None) -> bool:
+        """A fault on a signal from the next scan on, as the lab bench injects it; noise is seeded by the
+        verb's line, so a test sees the same noise on every run."""
+        mode, path = site.mode, site.path or ""  # a FAULT site has both
+        flips = self.sim.location(path).type == BOOL  # a BOOL's noise is a flip rate, a number's an amplitude
+        noise = {"rate" if flips else "amplitude": value} if mode == "noisy" and value is not None else {}
+        event = InputEvent(
+            "fault",
+            path,
+            value if mode == "stuck" else None,
+            source=f"test line {site.line}",
+            mode=mode,
+            seed=site.line if mode == "noisy" else None,
+            **noise,
+        )
+        try:
+            self.sim.submit(event)
+        except InputRefused as error:
+            self.fail(site, f"FAULT on {path}: {error}")
+        return True
+
+    def _clear_fault(self, site: Site) -> bool:
+        self.sim.submit(InputEvent("clear_fault", site.path, source=f"test line {site.line}"))
         return True
 
     # ------------------------------------------------------------ mocks

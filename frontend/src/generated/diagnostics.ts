@@ -836,16 +836,6 @@ export const DIAGNOSTICS = {
       severity: "error",
       summary: "The project is larger than a documented limit allows.",
     },
-    "MISSING-RETURN-TYPE": {
-      anchor: "missing-return-type",
-      area: "project",
-      example: "FUNCTION Scale\nVAR_INPUT x : REAL; END_VAR\nScale := x * 2.0;\nEND_FUNCTION",
-      example_language: "st",
-      example_note: "",
-      fix: "a FUNCTION returns a value of a declared type: `FUNCTION Scale : REAL`.",
-      severity: "error",
-      summary: "A FUNCTION has no return type.",
-    },
     "NOT-A-PROGRAM": {
       anchor: "not-a-program",
       area: "project",

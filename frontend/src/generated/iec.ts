@@ -2458,6 +2458,104 @@ export const IEC = {
     "TEARDOWN",
     "TEST",
   ],
+  test_verbs: [
+    {
+      name: "ASSERT_EQ",
+      signature: "(actual, expected [, 'message'])",
+    },
+    {
+      name: "ASSERT_NEQ",
+      signature: "(actual, expected [, 'message'])",
+    },
+    {
+      name: "ASSERT_GT",
+      signature: "(actual, threshold [, 'message'])",
+    },
+    {
+      name: "ASSERT_LT",
+      signature: "(actual, threshold [, 'message'])",
+    },
+    {
+      name: "ASSERT_GE",
+      signature: "(actual, threshold [, 'message'])",
+    },
+    {
+      name: "ASSERT_LE",
+      signature: "(actual, threshold [, 'message'])",
+    },
+    {
+      name: "ASSERT_NEAR",
+      signature: "(actual, expected, tolerance [, 'message'])",
+    },
+    {
+      name: "ASSERT_TRUE",
+      signature: "(condition [, 'message'])",
+    },
+    {
+      name: "ASSERT_FALSE",
+      signature: "(condition [, 'message'])",
+    },
+    {
+      name: "ASSERT",
+      signature: "(condition)",
+    },
+    {
+      name: "ADVANCE_TIME",
+      signature: "(T#...)",
+    },
+    {
+      name: "RUN_SCANS",
+      signature: "(n)",
+    },
+    {
+      name: "RUN_FOR",
+      signature: "(T#...)",
+    },
+    {
+      name: "RUN_UNTIL",
+      signature: "(condition, T#timeout)",
+    },
+    {
+      name: "FORCE",
+      signature: "(variable, value)",
+    },
+    {
+      name: "RELEASE",
+      signature: "(variable)",
+    },
+    {
+      name: "WARM_START",
+      signature: "",
+    },
+    {
+      name: "COLD_START",
+      signature: "",
+    },
+    {
+      name: "MOCK",
+      signature: " instance",
+    },
+    {
+      name: "MOCK_FUNCTION",
+      signature: " f RETURNS value",
+    },
+    {
+      name: "MOCK_VERIFY_CALLED",
+      signature: "(instance)",
+    },
+    {
+      name: "MOCK_VERIFY_CALL_COUNT",
+      signature: "(instance, n)",
+    },
+    {
+      name: "FAULT",
+      signature: "(variable, 'mode' [, value])",
+    },
+    {
+      name: "CLEAR_FAULT",
+      signature: "(variable)",
+    },
+  ],
   value_texts: [
     {
       text: "TRUE",

@@ -26,6 +26,12 @@ export const STANDARD_FBS: readonly string[] = IEC.function_blocks.map((fb) => f
 
 /** The keywords of the ST grammar, upper case (TRUE and FALSE among them). */
 export const KEYWORDS: ReadonlySet<string> = new Set(IEC.keywords);
+/** What a test file (tests/<name>.st) adds to the keywords: TEST, SETUP, MOCK, ... and the test verbs. */
+export const TEST_FILE_KEYWORDS: ReadonlySet<string> = new Set([
+  ...IEC.keywords,
+  ...IEC.test_keywords,
+  ...IEC.test_verbs.map((v) => v.name),
+]);
 
 /** Words shown as type names: elementary and string types, their short spellings and the standard FBs. */
 export const TYPE_WORDS: ReadonlySet<string> = new Set([...DECLARABLE_TYPES, ...Object.keys(ALIASES), ...STANDARD_FBS]);

@@ -35,7 +35,8 @@ export const KIND_HELP: Record<Pou["kind"], { label: string; help: string }> = {
 
 const message = (err: unknown) => (err instanceof Error ? err.message : String(err));
 
-function Dialog({ title, children, onClose }: { title: string; children: ReactNode; onClose(): void }) {
+/** A modal dialog of the project tree's menus (Escape closes it). */
+export function Dialog({ title, children, onClose }: { title: string; children: ReactNode; onClose(): void }) {
   return (
     <div className="ld-dialog-backdrop" onKeyDown={(e) => e.key === "Escape" && onClose()}>
       <div className="ld-dialog project-dialog" role="dialog" aria-label={title}>

@@ -59,7 +59,7 @@ export function StPouView({ pou }: { pou: Pou }) {
           file={`${pou.name}/declarations`}
           diagnostics={diagnostics}
           completions={completions}
-          readOnly={readOnly}
+          readOnly={readOnly === null ? null : ""}
           label={`${pou.name} declarations`}
         />
       </div>
@@ -93,7 +93,7 @@ export function TestFileView({ path }: { path: string }) {
   const test = useWorkspace((s) => testOf(s.project, path));
   const setTestText = useWorkspace((s) => s.setTestText);
   const diagnostics = useTestCheck(project, path);
-  const completions = useTestCompletions(project);
+  const completions = useTestCompletions(project, test?.text ?? "");
   const focus = usePanels((s) => (s.focus?.pou === path && s.focus.line != null ? s.focus : null));
   const running = useTests((s) => s.running !== null);
   if (!test || !project) return <p className="placeholder">{path} is no longer in this project.</p>;
@@ -120,6 +120,7 @@ export function TestFileView({ path }: { path: string }) {
           completions={completions}
           readOnly={null}
           label={path}
+          language="test"
           focusLine={focus ? { line: focus.line!, seq: focus.seq } : null}
         />
       </div>

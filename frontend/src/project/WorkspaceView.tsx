@@ -52,6 +52,7 @@ import { InstancePicker, OnlineActions } from "./InstancePicker";
 import { LOADING } from "./lazy";
 import { useHidden, useStoredSize } from "./layout";
 import { KindPicker, PouActions } from "./PouActions";
+import { TestFileActions } from "../tests/TestFileActions";
 import { isProjectPart, PROJECT_PARTS, type ProjectPart } from "./parts";
 import { typeRows } from "./types";
 import { keepSession, restoreSession, type SessionStores } from "./session";
@@ -229,6 +230,7 @@ function TestFilesTree() {
                     </span>
                   ) : null}
                 </button>
+                <TestFileActions name={t.name} />
               </li>
             );
           })}

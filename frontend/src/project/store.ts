@@ -136,6 +136,16 @@ export const testOf = (project: Project | null, path: string): TestFile | undefi
   project?.tests?.find((t) => testPath(t.name) === path);
 const TEST_NAME = /^[A-Za-z0-9][A-Za-z0-9_-]{0,63}$/;
 
+/** Why `name` cannot name a test file of `project` (another than `except`), or null when it can. */
+export function testNameProblem(project: Project | null, name: string, except?: string): string | null {
+  if (!TEST_NAME.test(name))
+    return `${name || "An empty name"} cannot name a test file (letters, digits, _ and -, starting with a letter or digit).`;
+  const lower = name.toLowerCase();
+  if (project?.tests?.some((t) => t.name !== except && t.name.toLowerCase() === lower))
+    return `There is already a test file called ${name}.`;
+  return null;
+}
+
 /** What a new test file starts with (docs/testing.md). */
 export const NEW_TEST_TEXT = `TEST 'first test'
   RUN_SCANS(1);
@@ -396,10 +406,8 @@ export function createWorkspaceStore(
 
       addTestFile(text) {
         const name = text.trim();
-        if (!TEST_NAME.test(name))
-          return `${name || "An empty name"} cannot name a test file (letters, digits, _ and -, starting with a letter or digit).`;
-        if (get().project?.tests?.some((t) => t.name.toLowerCase() === name.toLowerCase()))
-          return `There is already a test file called ${name}.`;
+        const problem = testNameProblem(get().project, name);
+        if (problem) return problem;
         replaceTests(testPath(name), (tests) => [...tests, { name, text: NEW_TEST_TEXT }]);
         get().openPou(testPath(name));
         return null;

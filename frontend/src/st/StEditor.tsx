@@ -24,7 +24,7 @@ import { setCoverageLines, stCoverage } from "./coverage";
 import { setInlineMarks, stInlineValues, type InlineMark, type StOnlineView } from "./inlineValues";
 import { ilLanguage } from "./ilLanguage";
 import { stHighlightStyle } from "./highlightStyle";
-import { stLanguage } from "./language";
+import { stLanguage, stTestLanguage } from "./language";
 import { stKeys } from "./keys";
 import { lintDiagnostics } from "./lint";
 
@@ -35,7 +35,8 @@ export interface StEditorProps {
   file: string;
   diagnostics: Diagnostic[];
   completions: StCompletions;
-  /** A reason the text cannot be edited now (online), or null. */
+  /** A reason the text cannot be edited now (online), shown above the text, or null; "" makes the text read-only
+   * without saying why again (a second editor of the same POU whose first one says it). */
   readOnly: string | null;
   label: string;
   /** Debugging (the body only): breakpoint lines, the halted line, and a gutter click. */
@@ -46,8 +47,8 @@ export interface StEditorProps {
   coverage?: readonly number[];
   /** A line to show and put the cursor on (a test failure or diagnostic was clicked); `seq` repeats a jump. */
   focusLine?: { line: number; seq: number } | null;
-  /** The text's language: ST (default) or an IL body (docs/il.md). */
-  language?: "st" | "il";
+  /** The text's language: ST (default), an IL body (docs/il.md) or a test file (docs/testing.md). */
+  language?: "st" | "il" | "test";
 }
 
 const NO_MARKS: readonly InlineMark[] = [];
@@ -91,7 +92,7 @@ export function StEditor({
           indentOnInput(),
           bracketMatching(),
           closeBrackets(),
-          language === "il" ? ilLanguage : [stLanguage, stBlocks],
+          language === "il" ? ilLanguage : [language === "test" ? stTestLanguage : stLanguage, stBlocks],
           codeFolding(),
           foldGutter(),
           syntaxHighlighting(stHighlightStyle),

@@ -4,7 +4,7 @@
 // The token names are CodeMirror's standard tags, so the editor's highlight style (highlightStyle.ts) colours them.
 // Keywords and type names are the backend's (iec/vocabulary.ts).
 import { StreamLanguage, StringStream, type StreamParser } from "@codemirror/language";
-import { KEYWORDS, TYPE_WORDS } from "../iec/vocabulary";
+import { KEYWORDS, TEST_FILE_KEYWORDS, TYPE_WORDS } from "../iec/vocabulary";
 
 const ATOMS = new Set(["TRUE", "FALSE"]);
 
@@ -27,51 +27,57 @@ function skipTo(stream: StringStream, closer: string): boolean {
   return true;
 }
 
-export const stParser: StreamParser<StState> = {
-  name: "iec-st",
-  startState: () => ({ open: null }),
-  copyState: (s) => ({ open: s.open }),
-  token(stream, state) {
-    if (state.open) {
-      const kind = state.open;
-      if (skipTo(stream, CLOSER[kind])) state.open = null;
-      return kind === "pragma" ? "meta" : "comment";
-    }
-    if (stream.eatSpace()) return null;
-    if (stream.match("//")) {
-      stream.skipToEnd();
-      return "lineComment";
-    }
-    for (const [opener, kind] of [
-      ["(*", "paren"],
-      ["/*", "slash"],
-      ["{", "pragma"],
-    ] as const) {
-      if (stream.match(opener)) {
-        if (!skipTo(stream, CLOSER[kind])) state.open = kind;
+/** The ST tokenizer with `keywords` as its keywords (test files add their verbs: docs/testing.md). */
+function makeStParser(name: string, keywords: ReadonlySet<string>): StreamParser<StState> {
+  return {
+    name,
+    startState: () => ({ open: null }),
+    copyState: (s) => ({ open: s.open }),
+    token(stream, state) {
+      if (state.open) {
+        const kind = state.open;
+        if (skipTo(stream, CLOSER[kind])) state.open = null;
         return kind === "pragma" ? "meta" : "comment";
       }
-    }
-    if (stream.match(/^'(\$.|[^'$])*'?/) || stream.match(/^"(\$.|[^"$])*"?/)) return "string";
-    if (stream.match(/^([A-Za-z_]+|\d+)#[A-Za-z0-9_.:+\-#]+/)) return "number";
-    if (stream.match(/^\d[\d_]*(\.\d[\d_]*)?([eE][+-]?\d+)?/)) return "number";
-    const word = stream.match(/^[A-Za-z_][A-Za-z0-9_]*/) as RegExpMatchArray | null;
-    if (word) {
-      const upper = word[0].toUpperCase();
-      if (ATOMS.has(upper)) return "atom";
-      if (KEYWORDS.has(upper)) return "keyword";
-      if (TYPE_WORDS.has(upper)) return "typeName";
-      return "variableName";
-    }
-    if (stream.match(/^(:=|=>|<=|>=|<>|\*\*|[-+*/=<>&^])/)) return "operator";
-    if (stream.match(/^[()[\]]/)) return "bracket";
-    stream.next();
-    return "punctuation";
-  },
-  languageData: { commentTokens: { line: "//", block: { open: "(*", close: "*)" } } },
-};
+      if (stream.eatSpace()) return null;
+      if (stream.match("//")) {
+        stream.skipToEnd();
+        return "lineComment";
+      }
+      for (const [opener, kind] of [
+        ["(*", "paren"],
+        ["/*", "slash"],
+        ["{", "pragma"],
+      ] as const) {
+        if (stream.match(opener)) {
+          if (!skipTo(stream, CLOSER[kind])) state.open = kind;
+          return kind === "pragma" ? "meta" : "comment";
+        }
+      }
+      if (stream.match(/^'(\$.|[^'$])*'?/) || stream.match(/^"(\$.|[^"$])*"?/)) return "string";
+      if (stream.match(/^([A-Za-z_]+|\d+)#[A-Za-z0-9_.:+\-#]+/)) return "number";
+      if (stream.match(/^\d[\d_]*(\.\d[\d_]*)?([eE][+-]?\d+)?/)) return "number";
+      const word = stream.match(/^[A-Za-z_][A-Za-z0-9_]*/) as RegExpMatchArray | null;
+      if (word) {
+        const upper = word[0].toUpperCase();
+        if (ATOMS.has(upper)) return "atom";
+        if (keywords.has(upper)) return "keyword";
+        if (TYPE_WORDS.has(upper)) return "typeName";
+        return "variableName";
+      }
+      if (stream.match(/^(:=|=>|<=|>=|<>|\*\*|[-+*/=<>&^])/)) return "operator";
+      if (stream.match(/^[()[\]]/)) return "bracket";
+      stream.next();
+      return "punctuation";
+    },
+    languageData: { commentTokens: { line: "//", block: { open: "(*", close: "*)" } } },
+  };
+}
 
+export const stParser = makeStParser("iec-st", KEYWORDS);
 export const stLanguage = StreamLanguage.define(stParser);
+/** Test files: ST with TEST, SETUP, MOCK, ... and the verbs (ASSERT_EQ, RUN_SCANS, ...) as keywords. */
+export const stTestLanguage = StreamLanguage.define(makeStParser("iec-st-test", TEST_FILE_KEYWORDS));
 
 /** One token of a text: document offsets, its style (null for spaces) and whether a block comment or pragma continues after it. */
 export interface Token {

@@ -8,42 +8,19 @@ import type { Diagnostic, LibraryEntry, SymbolInfo } from "../generated/api";
 import type { Project } from "../generated/api";
 import { memberCompletions, stCompletions, type StCompletions } from "../st/completion";
 import { structTypes } from "../st/members";
+import { tokenize } from "../st/language";
 import { declaredSymbols, workingLibrary } from "../st/scope";
 import { CHECK_DELAY_MS } from "../st/useLiveCheck";
 import { useWorkspace } from "../project/store";
 import { testsApi, type TestsApi } from "./api";
+import { IEC } from "../generated/iec";
 
-/** The verbs of test files (docs/testing.md), with the signature shown in the completion list. */
-export const TEST_VERBS: readonly [string, string][] = [
-  ["ASSERT_EQ", "(actual, expected [, 'message'])"],
-  ["ASSERT_NEQ", "(actual, expected [, 'message'])"],
-  ["ASSERT_GT", "(actual, threshold [, 'message'])"],
-  ["ASSERT_LT", "(actual, threshold [, 'message'])"],
-  ["ASSERT_GE", "(actual, threshold [, 'message'])"],
-  ["ASSERT_LE", "(actual, threshold [, 'message'])"],
-  ["ASSERT_NEAR", "(actual, expected, tolerance [, 'message'])"],
-  ["ASSERT_TRUE", "(condition [, 'message'])"],
-  ["ASSERT_FALSE", "(condition [, 'message'])"],
-  ["ASSERT", "(condition)"],
-  ["ADVANCE_TIME", "(T#...)"],
-  ["RUN_SCANS", "(n)"],
-  ["RUN_FOR", "(T#...)"],
-  ["RUN_UNTIL", "(condition, T#timeout)"],
-  ["FORCE", "(variable, value)"],
-  ["RELEASE", "(variable)"],
-  ["WARM_START", ""],
-  ["COLD_START", ""],
-  ["MOCK", " instance"],
-  ["MOCK_FUNCTION", " f RETURNS value"],
-  ["MOCK_VERIFY_CALLED", "(instance)"],
-  ["MOCK_VERIFY_CALL_COUNT", "(instance, n)"],
-];
-
-const verbCompletions: Completion[] = TEST_VERBS.map(([label, args]) => ({
-  label,
+/** The verbs and MOCK statements of test files (docs/testing.md), from the backend's checker. */
+const verbCompletions: Completion[] = IEC.test_verbs.map(({ name, signature }) => ({
+  label: name,
   type: "keyword",
-  detail: args,
-  info: `test verb ${label}${args}`,
+  detail: signature,
+  info: `test verb ${name}${signature}`,
 }));
 
 /** Each PROGRAM of the working copy as a library entry whose members are all its variables. */
@@ -63,7 +40,17 @@ function programEntries(project: Project): LibraryEntry[] {
     }));
 }
 
-export function useTestCompletions(project: Project | null): StCompletions {
+/** The variables the TESTs and the SETUP of a test file declare in their VAR blocks (comments skipped). */
+export function testLocals(text: string): SymbolInfo[] {
+  const code = tokenize(text)
+    .filter((t) => t.style !== "comment" && t.style !== "lineComment")
+    .map((t) => t.text)
+    .join(" ");
+  const blocks = code.match(/\bVAR(?:_[A-Z]+)?\b[\s\S]*?\bEND_VAR\b/gi) ?? [];
+  return blocks.flatMap((block) => declaredSymbols(block) ?? []);
+}
+
+export function useTestCompletions(project: Project | null, text = ""): StCompletions {
   const saved = useWorkspace((s) => s.library);
   const tables = useWorkspace((s) => s.symbols);
   return useMemo(() => {
@@ -82,12 +69,13 @@ export function useTestCompletions(project: Project | null): StCompletions {
         retain: false,
         constant: false,
       }));
-    const scope = { symbols: [...programs, ...globals], library, structs: structTypes(project.types ?? "") };
+    const symbols = [...testLocals(text), ...programs, ...globals];
+    const scope = { symbols, library, structs: structTypes(project.types ?? "") };
     return {
       options: [...verbCompletions, ...stCompletions([...scope.symbols], library)],
       members: (chain: readonly string[]) => memberCompletions(chain, scope),
     };
-  }, [project, saved, tables]);
+  }, [project, text, saved, tables]);
 }
 
 /** The diagnostics of one test file of the working copy, checked after the user pauses typing. */

@@ -190,6 +190,14 @@ class Expressions:
             ("checked", name.upper(), types, result), f"fn_{names.escape(name)}_eno", lambda: built.checked
         )
 
+    def wrapped(self, name: str, types: tuple[str, ...], result: str | None) -> tuple[str, str] | None:
+        """The checked form of a standard function as templates (exact value, its store), when its only warning
+        is a wrap (stdlib ``Specialised.wrapped``); None: call ``checked``."""
+        try:
+            return specialised(name, types, result).wrapped
+        except (ValueError, TypeError):
+            return None
+
     def user_call(self, c: ir.Call) -> str:
         callee = self.module.pous.get(c.function.upper())
         if callee is None or callee.kind != "function":

@@ -20,9 +20,8 @@ from ...model.places import ProjectPlaces
 from ..errors import OUT_OF_MEMORY, WATCHDOG, PlcRuntimeError
 from . import names
 from .context import ModuleContext, std_pin_type
-from .mentions import statement_vars, var_text
+from .mentions import referenced_locals, statement_vars, var_text
 from .module import Generated
-from .pou import boxed_locals
 from .runtime import WatchdogTimeout, reference_text
 from .scope import global_owner
 from .typeinfo import is_composite
@@ -166,7 +165,7 @@ class _FrameReader:
         self.context, self.locals, self.ns = context, frame.f_locals, ns
         self.pou = context.pous[pou.upper()]
         self.slots = {s.name.upper(): s for s in self.pou.slots}
-        self.boxed = boxed_locals(self.pou) if self.pou.kind == "function" else set()
+        self.boxed = referenced_locals(self.pou) if self.pou.kind == "function" else set()
 
     def read(self, var: ir.Var) -> object:
         value, ty = self.root(var)
@@ -207,6 +206,8 @@ class _FrameReader:
         if self.pou.kind == "function":
             value = self.locals[attr]
             return (value[0] if slot.name.upper() in self.boxed else value), slot.type
+        if f"ll_t_{key}" in self.locals:  # a temporary the fast variant keeps in a local (scope.temp_locals)
+            return self.locals[f"ll_t_{key}"], slot.type
         place = self.context.layouts[self.pou.name.upper()].get(slot.name)
         owner = self.locals["self"] if place.page == 0 else getattr(self.locals["self"], f"ll_p{place.page}")  # type: ignore[union-attr]
         return getattr(owner, place.attr), slot.type  # type: ignore[union-attr]

@@ -3,9 +3,10 @@ fault reports."""
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 
 from ...ir import nodes as ir
+from ...ir import types as t
 
 
 def expression_vars(e: ir.Expr | None) -> Iterator[ir.Var]:
@@ -124,3 +125,25 @@ def _index_text(e: ir.Expr) -> str:
     if isinstance(e, ir.Const):
         return repr(e.value)
     return "..."
+
+
+def referenced_locals(pou: ir.Pou, by_value: Callable[[str], bool] = lambda fb: False) -> set[str]:
+    """The POU's own slots passed whole by reference somewhere in its body (to a VAR_IN_OUT): a FUNCTION boxes
+    them in a 1-element list, the fast variant keeps none of them in a local (scope.temp_locals). The inputs of
+    an FB call count too, unless ``by_value(fb type)`` says the FB has no VAR_IN_OUT (a standard FB)."""
+    local = {s.name.upper() for s in pou.slots if s.var_class not in ("VAR_IN_OUT", "VAR_EXTERNAL")}
+
+    def whole_local(v: object) -> bool:
+        return isinstance(v, ir.Var) and v.scope == "local" and not v.path and v.name.upper() in local
+
+    found: set[str] = set()
+    for block in pou.blocks:
+        for s in walk(block.statements):
+            for e in own_expressions(s):
+                for call in calls_in(e):
+                    found.update(v.name.upper() for v in call.in_outs if whole_local(v))
+            if isinstance(s, ir.FbCall) and not (
+                isinstance(s.instance.type, t.FbInstance) and by_value(s.instance.type.fb)
+            ):  # a global FB instance's VAR_IN_OUT pin (boxing an input is harmless)
+                found.update(v.name.upper() for _, v in s.inputs if whole_local(v))
+    return found

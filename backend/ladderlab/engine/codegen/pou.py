@@ -26,7 +26,7 @@ from .constructors import construct
 from .context import CodegenError, ModuleContext, diagnostic
 from .deferred import deferred_probes
 from .layout import slots_source
-from .mentions import calls_in, own_expressions, walk
+from .mentions import referenced_locals
 from .scope import Scope, global_owner
 from .source import Source
 from .statements import Statements
@@ -234,11 +234,15 @@ def _emit_execute(module: ModuleContext, pou: ir.Pou, scope: Scope, src: Source)
         loaded: set[int] = set()
         for slot in scope.slots.values():
             if slot.var_class == "VAR_TEMP":
+                value = _init_value(module, slot, pou.name)
+                local = scope.temp_locals.get(slot.name.upper())
+                if local is not None and plan.inline:  # the body is right here: the local is the variable
+                    src.line(f"{local} = {value}")
+                    continue
                 place = scope.layout.get(slot.name)  # type: ignore[union-attr]
                 if place.page and place.page not in loaded:
                     loaded.add(place.page)
                     src.line(f"ll_p{place.page} = self.ll_p{place.page}")
-                value = _init_value(module, slot, pou.name)
                 if value is not None:
                     src.line(f"{_target(place)} = {value}")
         if plan.inline:
@@ -294,12 +298,20 @@ def _emit_chunk(
     module = scope.module
     body = Source()
     body.depth = src.depth + prologue_depth
-    scope.pages_used = set()
+    scope.pages_used, scope.temps_used = set(), set()
     statements = Statements(scope, body, plan, number, deferred)
     statements.body()
+    # a chunk function takes its temporaries from the slots and hands them on (scope.temp_locals); an inline
+    # body has them from the VAR_TEMP initialisation, and after it they are dead
+    handed = {name: scope.slot_source(name) for name in sorted(scope.temps_used)} if prologue_depth else {}
+    if number < len(plan.chunks) - 1:
+        for name, slot in handed.items():
+            body.line(f"{slot} = {scope.temp_locals[name]}")
     with src.indent() if prologue_depth else nullcontext():
         for page in sorted(scope.pages_used):
             src.line(f"ll_p{page} = self.ll_p{page}")
+        for name, slot in handed.items():
+            src.line(f"{scope.temp_locals[name]} = {slot}")
         for slot in scope.in_outs:
             src.line(f"r_{names.escape(slot.name)} = self.{_slot_attr(scope, slot)}")
             _unpack_reference(slot, src)
@@ -342,28 +354,10 @@ def _unpack_reference(slot: ir.Slot, src: Source) -> None:
         src.line(f"ll_c_{key}, ll_k_{key} = r_{key}")
 
 
-def boxed_locals(pou: ir.Pou) -> set[str]:
-    """Locals of a FUNCTION passed whole by reference somewhere in its body: they live in a 1-element list."""
-    local = {s.name.upper() for s in pou.slots if s.var_class not in ("VAR_IN_OUT", "VAR_EXTERNAL")}
-
-    def whole_local(v: object) -> bool:
-        return isinstance(v, ir.Var) and v.scope == "local" and not v.path and v.name.upper() in local
-
-    found: set[str] = set()
-    for block in pou.blocks:
-        for s in walk(block.statements):
-            for e in own_expressions(s):
-                for call in calls_in(e):
-                    found.update(v.name.upper() for v in call.in_outs if whole_local(v))
-            if isinstance(s, ir.FbCall):  # a global FB instance's VAR_IN_OUT pin (boxing an input is harmless)
-                found.update(v.name.upper() for _, v in s.inputs if whole_local(v))
-    return found
-
-
 def emit_function(module: ModuleContext, pou: ir.Pou, decls: Source, code: Source) -> None:
     """The function into ``code`` (never chunked: its variables are locals); its probe lists into ``decls``."""
     scope = Scope(module, pou)
-    scope.boxed = boxed_locals(pou)
+    scope.boxed = referenced_locals(pou)
     scope.result_slot()  # raises when missing
     inputs = [s for s in pou.slots if s.var_class == "VAR_INPUT"]
     params = [names.slot(s.name) for s in inputs] + [f"r_{names.escape(s.name)}" for s in scope.in_outs]

@@ -8,6 +8,12 @@ be referenced. Globals are ``G.v_X`` (``G1``, ``G2``.. for further pages).
 A VAR_IN_OUT slot holds a reference ``(container, key)``: scalars are read and
 written as ``ll_c_X[ll_k_X]``; an array or structure is fetched once at entry
 into ``v_X`` (composite values never change identity).
+
+In the fast and monitor variants a hidden elementary VAR_TEMP of a PROGRAM / FUNCTION_BLOCK (a power-flow or ENO
+temporary of the LD/FBD lowering) is a Python local ``ll_t_X`` of each chunk function that uses it: loaded
+from its slot at the chunk's start, stored back at its end (``temp_locals``; docs/runtime.md, "Temporaries
+as locals"). Nothing outside the POU's own code reads such a slot (hidden slots have no path) and its value
+is dead when ``execute`` ends, so only the hand-over between chunks goes through the slot.
 """
 
 from __future__ import annotations
@@ -15,8 +21,9 @@ from __future__ import annotations
 from ...ir import nodes as ir
 from ...ir import types as t
 from . import names
-from .context import CodegenError, ModuleContext
+from .context import CodegenError, ModuleContext, std_fb_class
 from .layout import Layout
+from .mentions import referenced_locals, walk
 from .typeinfo import is_composite
 
 
@@ -41,6 +48,9 @@ class Scope:
         self.pages_used: set[int] = set()
         self._temps = 0
         self._roots: dict[tuple[str, str], tuple[str, t.IrType, int]] = {}
+        #: upper-case slot name -> the local it lives in (fast variant; ``temp_locals``)
+        self.temp_locals: dict[str, str] = {} if self.function else temp_locals(module, pou)
+        self.temps_used: set[str] = set()  # of ``temp_locals``, by the chunk being generated
 
     def temp(self, prefix: str) -> str:
         self._temps += 1
@@ -76,6 +86,8 @@ class Scope:
         code, ty, page = found
         if page:  # every chunk function loads the pages its own statements use
             self.pages_used.add(page)
+        if var.scope == "local" and self.temp_locals and var.name.upper() in self.temp_locals:
+            self.temps_used.add(var.name.upper())  # ... and the temporaries they use
         return code, ty
 
     def _root(self, var: ir.Var) -> tuple[str, t.IrType, int]:
@@ -95,8 +107,18 @@ class Scope:
             return f"ll_c_{key}[ll_k_{key}]", slot.type, 0
         if self.function:
             return (f"{attr}[0]" if slot.name.upper() in self.boxed else attr), slot.type, 0
+        local = self.temp_locals.get(slot.name.upper())
+        if local is not None:
+            return local, slot.type, 0
         place = self.layout.get(var.name)  # type: ignore[union-attr]
         return f"{_page_owner(place.page)}.{place.attr}", slot.type, place.page  # type: ignore[union-attr]
+
+    def slot_source(self, name: str) -> str:
+        """Where the slot ``name`` of this PROGRAM / FUNCTION_BLOCK lives (its page noted as used)."""
+        place = self.layout.get(name)  # type: ignore[union-attr]
+        if place.page:  # type: ignore[union-attr]
+            self.pages_used.add(place.page)  # type: ignore[union-attr]
+        return f"{_page_owner(place.page)}.{place.attr}"  # type: ignore[union-attr]
 
     def root_ref(self, var: ir.Var) -> str:
         """Source of a ``(container, key)`` reference to the whole root slot of ``var``."""
@@ -128,3 +150,21 @@ class Scope:
             return "return"
         name = self.result_slot().name
         return f"return {names.slot(name)}{'[0]' if name.upper() in self.boxed else ''}"
+
+
+def temp_locals(module: ModuleContext, pou: ir.Pou) -> dict[str, str]:
+    """The hidden elementary VAR_TEMP slots of a PROGRAM / FUNCTION_BLOCK that the fast and monitor variants keep
+    in locals
+    (upper-case name -> local), none when the body jumps (a chunk is then re-entered mid-way) or a slot is passed
+    by reference (a VAR_IN_OUT needs a container)."""
+    if module.debug or pou.kind == "function":  # (no probe is deferred to after the scan: not VAR_TEMP ones)
+        return {}
+    candidates = {
+        s.name.upper(): f"ll_t_{names.escape(s.name)}"
+        for s in pou.slots
+        if s.hidden and s.var_class == "VAR_TEMP" and s.address is None and isinstance(s.type, t.Elementary)
+    }
+    if not candidates or any(type(s) is ir.Jump for block in pou.blocks for s in walk(block.statements)):
+        return {}
+    referenced = referenced_locals(pou, by_value=lambda fb: std_fb_class(fb) is not None)
+    return {name: local for name, local in candidates.items() if name not in referenced}

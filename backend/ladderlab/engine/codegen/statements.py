@@ -29,6 +29,7 @@ from . import names
 from .chunks import ChunkPlan
 from .context import CodegenError, diagnostic, std_fb_class
 from .expressions import Expressions, literal
+from .inline_fbs import inline_body
 from .mentions import calls_in, expression_vars, walk
 from .runtime import UNSET
 from .scope import Scope
@@ -521,7 +522,17 @@ class Statements:
             for pin, value in s.inputs:
                 self._fb_input(fb, ty, user, pin, value)
             call = f"{fb}.execute({self.now})"
-            self.src.line(f"yield from {call}" if user is not None and self.module.debug else call)
+            inline = None if user is not None or self.module.debug else inline_body(ty.fb, fb, self.now)
+            if inline is not None:  # the body of the standard FB's execute, for its own class (inline_fbs.py)
+                self.src.line(f"if {fb}.__class__ is {names.std_fb(ty.fb.upper())}:")
+                with self.src.indent():
+                    for line in inline:
+                        self.src.line(line)
+                self.src.line("else:")
+                with self.src.indent():
+                    self.src.line(call)
+            else:
+                self.src.line(f"yield from {call}" if user is not None and self.module.debug else call)
             for pin, target in s.outputs:
                 owner, attr = self.x.member_parts(fb, ty, pin)
                 pin_type = self.x.member_type(ty, pin)
@@ -567,6 +578,15 @@ class Statements:
         def emit() -> None:
             if s.eno is not None and not call.user:
                 types = tuple(self.x.scalar(ty, call.function) for ty in call.arg_types)
+                wrapped = self.x.wrapped(call.function, types, runtime_name(call.type))
+                if wrapped is not None:  # typed arithmetic inline: ENO is "the result fits"
+                    exact, value = self.scope.temp("x"), self.scope.temp("v")
+                    self.src.line(f"{exact} = {wrapped[0].format(*(self.x.expr(a) for a in call.args))}")
+                    self.src.line(f"{value} = {wrapped[1].format(exact)}")
+                    if s.target is not None:
+                        self._copy_out(value, call.type, s.target, checked=False)
+                    self.src.line(f"{self.x.var(s.eno)} = {exact} == {value}")
+                    return
                 fn = self.x.checked(call.function, types, runtime_name(call.type))
                 value, warning = self.scope.temp("v"), self.scope.temp("warn")
                 args = ", ".join(self.x.expr(a) for a in call.args)

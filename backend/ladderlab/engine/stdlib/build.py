@@ -75,13 +75,25 @@ class Specialised:
     fast: Callable
     checked: Callable
     template: str | None
+    #: The checked form inline, when its only warning is a wrap (an integer, bit string or time result): templates
+    #: of the exact value over ``{0}``.. and of its store over ``{0}``; ENO is "the store kept the value".
+    wrapped: tuple[str, str] | None = None
 
 
 def specialise(name: str, impl: Impl, arity: int) -> Specialised:
     body = impl.body()
     fast = compile_expr(body, arity, impl.names)
     template = None if impl.names else inline_template(body, arity)
-    return Specialised(fast, _checked(name, impl, arity, fast), template)
+    return Specialised(fast, _checked(name, impl, arity, fast), template, _wrapped_templates(impl, arity))
+
+
+def _wrapped_templates(impl: Impl, arity: int) -> tuple[str, str] | None:
+    if impl.names or impl.precheck is not None or impl.result is None:
+        return None
+    if _PROBLEMS.get(resolve(impl.result).category) is not _wrapped:
+        return None
+    exact, store = inline_template(impl.exact, arity), inline_template(_store_of(impl), 1)
+    return (exact, store) if exact is not None and store is not None else None
 
 
 def _checked(name: str, impl: Impl, arity: int, fast: Callable) -> Callable:

@@ -1,0 +1,89 @@
+"""Standard FB calls inlined: the body of the FB's own ``execute`` pasted where the call is.
+
+A method call costs as much as a timer's whole body, so the fast and monitor variants paste the body of a standard
+FB's ``execute`` (engine/stdlib/fbs.py, the one definition of its behaviour) in place of the call, guarded by the
+instance's class (a mocked instance, docs/testing.md, has another class and is called as before)::
+
+    ll_fb = self.v_T1
+    ll_fb.IN = ...
+    if ll_fb.__class__ is fb_TON:
+        if not ll_fb.IN:
+            ...
+    else:
+        ll_fb.execute(now)
+
+The body is taken from the method's source with ``ast``, not copied: ``self`` becomes the instance's local,
+the clock argument the scan's clock, the method's locals ``ll_s_<name>``, and an early ``return`` becomes the
+``else`` of its ``if`` (the statements after it go into both branches). A body that needs anything else (a
+``return`` in a loop, a global other than a builtin) is not inlined.
+"""
+
+from __future__ import annotations
+
+import ast
+import builtins
+import copy
+import functools
+import inspect
+import textwrap
+
+from ..stdlib import STANDARD_FBS
+
+
+class _NotInlinable(Exception):
+    pass
+
+
+@functools.cache
+def inline_body(fb: str, instance: str, now: str) -> tuple[str, ...] | None:
+    """The lines of standard FB ``fb``'s ``execute`` acting on the local ``instance`` at clock ``now`` (None: not
+    inlinable), indented from column 0."""
+    cls = STANDARD_FBS.get(fb.upper())
+    if cls is None:
+        return None
+    function = ast.parse(textwrap.dedent(inspect.getsource(cls.execute))).body[0]
+    assert isinstance(function, ast.FunctionDef)
+    this, clock = (a.arg for a in function.args.args)
+    assigned = {n.id for n in ast.walk(function) if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Store)}
+    renames = {this: instance, clock: now} | {name: f"ll_s_{name}" for name in assigned}
+    try:
+        for node in ast.walk(function):
+            if isinstance(node, ast.Name):
+                if node.id in renames:
+                    node.id = renames[node.id]
+                elif not hasattr(builtins, node.id):
+                    raise _NotInlinable(node.id)
+        body = _without_returns([s for s in function.body if not _docstring(s)])
+    except _NotInlinable:
+        return None
+    return tuple(ast.unparse(ast.Module(body=body or [ast.Pass()], type_ignores=[])).splitlines())
+
+
+def _docstring(statement: ast.stmt) -> bool:
+    return isinstance(statement, ast.Expr) and isinstance(statement.value, ast.Constant)
+
+
+def _without_returns(statements: list[ast.stmt]) -> list[ast.stmt]:
+    """The same statements with every ``return`` (of nothing) turned into control flow: the statements after an
+    ``if`` that may return move into both of its branches, and a branch ends where it returned."""
+    done: list[ast.stmt] = []
+    for index, statement in enumerate(statements):
+        if isinstance(statement, ast.Return):
+            if statement.value is not None:
+                raise _NotInlinable("return with a value")
+            return done
+        if not _returns(statement):
+            done.append(statement)
+            continue
+        if not isinstance(statement, ast.If):
+            raise _NotInlinable("return in a loop")
+        rest = statements[index + 1 :]
+        statement.body = _without_returns(statement.body + copy.deepcopy(rest)) or [ast.Pass()]
+        statement.orelse = _without_returns(statement.orelse + rest)
+        done.append(statement)
+        return done
+    return done
+
+
+def _returns(statement: ast.stmt) -> bool:
+    return any(isinstance(node, ast.Return) for node in ast.walk(statement))

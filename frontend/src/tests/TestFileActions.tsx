@@ -1,0 +1,106 @@
+// The project tree's menu of a test file: rename and delete, each one undoable step of the working copy
+// (workspace store's applyOperation), saved with the project (the old tests/<name>.st goes on save).
+import { useState, type FormEvent } from "react";
+import { Dialog } from "../project/PouActions";
+import { testNameProblem, testPath, workspaceStore } from "../project/store";
+
+function RenameTestDialog({ name, onClose }: { name: string; onClose(): void }) {
+  const [text, setText] = useState(name);
+  const [error, setError] = useState<string | null>(null);
+  const submit = (e: FormEvent) => {
+    e.preventDefault();
+    const ws = workspaceStore.getState();
+    const next = text.trim();
+    const problem = testNameProblem(ws.project, next, name);
+    if (problem) return setError(problem);
+    if (!ws.project || next === name) return onClose();
+    const tests = (ws.project.tests ?? []).map((t) => (t.name === name ? { ...t, name: next } : t));
+    ws.applyOperation(`rename test file ${name} to ${next}`, { ...ws.project, tests }, [testPath(next)], {
+      renamed: { [testPath(name)]: testPath(next) },
+    });
+    onClose();
+  };
+  return (
+    <Dialog title={`Rename ${testPath(name)}`} onClose={onClose}>
+      <form onSubmit={submit}>
+        <label>
+          New name{" "}
+          <input aria-label="New test file name" value={text} onChange={(e) => setText(e.target.value)} autoFocus />
+        </label>
+        {error ? (
+          <p className="new-pou-error" role="alert">
+            {error}
+          </p>
+        ) : null}
+        <div className="dialog-buttons">
+          <button type="submit">Rename</button>
+          <button type="button" onClick={onClose}>
+            Cancel
+          </button>
+        </div>
+      </form>
+    </Dialog>
+  );
+}
+
+function DeleteTestDialog({ name, onClose }: { name: string; onClose(): void }) {
+  const remove = () => {
+    const ws = workspaceStore.getState();
+    if (!ws.project) return;
+    const tests = (ws.project.tests ?? []).filter((t) => t.name !== name);
+    ws.applyOperation(`delete test file ${name}`, { ...ws.project, tests }, [testPath(name)], {
+      closed: [testPath(name)],
+    });
+    onClose();
+  };
+  return (
+    <Dialog title={`Delete ${testPath(name)}`} onClose={onClose}>
+      <p>The file and its tests leave the project when you save (Undo takes it back until then).</p>
+      <div className="dialog-buttons">
+        <button type="button" onClick={remove} autoFocus>
+          Delete
+        </button>
+        <button type="button" onClick={onClose}>
+          Cancel
+        </button>
+      </div>
+    </Dialog>
+  );
+}
+
+/** The "⋯" button of a test file in the tree and its menu. */
+export function TestFileActions({ name }: { name: string }) {
+  const [menu, setMenu] = useState(false);
+  const [action, setAction] = useState<"rename" | "delete" | null>(null);
+  const choose = (a: "rename" | "delete") => {
+    setMenu(false);
+    setAction(a);
+  };
+  const close = () => setAction(null);
+  return (
+    <span className="tree-actions">
+      <button
+        type="button"
+        className="tree-actions-button"
+        aria-label={`Actions for ${testPath(name)}`}
+        aria-haspopup="menu"
+        aria-expanded={menu}
+        onClick={() => setMenu((m) => !m)}
+      >
+        ⋯
+      </button>
+      {menu ? (
+        <div className="tree-menu" role="menu" aria-label={`${testPath(name)} actions`}>
+          <button type="button" role="menuitem" onClick={() => choose("rename")}>
+            Rename…
+          </button>
+          <button type="button" role="menuitem" onClick={() => choose("delete")}>
+            Delete…
+          </button>
+        </div>
+      ) : null}
+      {action === "rename" ? <RenameTestDialog name={name} onClose={close} /> : null}
+      {action === "delete" ? <DeleteTestDialog name={name} onClose={close} /> : null}
+    </span>
+  );
+}

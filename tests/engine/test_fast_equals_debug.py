@@ -1,0 +1,156 @@
+"""The fast and monitor variants against the debug variant over random LD programs (issue 27).
+
+The fast variant keeps the lowering's power-flow and ENO temporaries in Python locals of each chunk function
+(codegen/scope.py, ``temp_locals``); the debug variant keeps every variable in its slot and shares nothing with
+it but the IR, so it is the reference. Random LD networks (contacts NO/NC/edges in series and parallel, coils of
+every mode, TON/CTU/R_TRIG boxes, ADD with EN, compares) run scan by scan under random writes, with the chunk
+size lowered so the temporaries cross chunk boundaries; every variable (and every probe of the monitor variant)
+must agree after every scan.
+"""
+
+from __future__ import annotations
+
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from ladderlab.engine.codegen import chunks
+from ladderlab.model import ld
+from ladderlab.model.project import Pou, Project, Task
+from ladderlab.simulation.build import build_project
+from tests.support import fuzz_settings
+
+BOOLS = [f"B{i}" for i in range(6)]
+INTS = ["X", "Y"]
+DECLARATIONS = f"VAR {', '.join(BOOLS)} : BOOL; {', '.join(INTS)} : INT; T1, T2 : TON; K1 : CTU; E1 : R_TRIG; END_VAR"
+
+
+class _Ids:
+    def __init__(self) -> None:
+        self.n = 0
+
+    def __call__(self, stem: str) -> str:
+        self.n += 1
+        return f"{stem}{self.n}"
+
+
+def _contact(draw, ids: _Ids) -> ld.Contact:
+    return ld.Contact(id=ids("c"), var=draw(st.sampled_from(BOOLS)), mode=draw(st.sampled_from(["no", "nc", "p", "n"])))
+
+
+def _series(draw, ids: _Ids, depth: int) -> list:
+    elements: list = []
+    for _ in range(draw(st.integers(1, 3))):
+        if depth > 0 and draw(st.integers(0, 3)) == 0:
+            branches = [_series(draw, ids, depth - 1) for _ in range(draw(st.integers(2, 3)))]
+            elements.append(ld.Parallel(id=ids("p"), branches=branches))
+        elif draw(st.integers(0, 5)) == 0:
+            op = draw(st.sampled_from(["GT", "GE", "EQ", "LE", "LT", "NE"]))
+            right = str(draw(st.integers(-3, 40)))
+            elements.append(ld.Compare(id=ids("q"), op=op, left=draw(st.sampled_from(INTS)), right=right))
+        else:
+            elements.append(_contact(draw, ids))
+    return elements
+
+
+def _end(draw, ids: _Ids) -> list:
+    kind = draw(st.sampled_from(["coil", "coil", "ton", "ctu", "trig", "add"]))
+    if kind == "coil":
+        mode = draw(st.sampled_from(["normal", "negated", "set", "reset", "p", "n"]))
+        return [ld.Coil(id=ids("o"), var=draw(st.sampled_from(BOOLS)), mode=mode)]
+    if kind == "ton":
+        instance = draw(st.sampled_from(["T1", "T2"]))
+        box = ld.Box(id=ids("t"), call="TON", instance=instance, inputs={"PT": f"T#{draw(st.integers(0, 40))}ms"})
+        return [box, ld.Coil(id=ids("o"), var=draw(st.sampled_from(BOOLS)))]
+    if kind == "ctu":
+        box = ld.Box(id=ids("k"), call="CTU", instance="K1", inputs={"PV": str(draw(st.integers(0, 4)))})
+        return [box, ld.Coil(id=ids("o"), var=draw(st.sampled_from(BOOLS)))]
+    if kind == "trig":
+        return [
+            ld.Box(id=ids("e"), call="R_TRIG", instance="E1"),
+            ld.Coil(id=ids("o"), var=draw(st.sampled_from(BOOLS))),
+        ]
+    target = draw(st.sampled_from(INTS))
+    step = str(draw(st.sampled_from([1, 7, 16000, -9])))
+    box = ld.Box(id=ids("a"), call="ADD", en=True, inputs={"IN1": target, "IN2": step}, outputs={"OUT": target})
+    return [box, ld.Coil(id=ids("o"), var=draw(st.sampled_from(BOOLS)))]
+
+
+@st.composite
+def ld_programs(draw) -> Project:
+    ids = _Ids()
+    networks = [
+        ld.LdNetwork(id=ids("n"), elements=[*_series(draw, ids, 2), *_end(draw, ids)])
+        for _ in range(draw(st.integers(1, 8)))
+    ]
+    pou = Pou(name="Main", kind="program", language="ld", declarations=DECLARATIONS, body=ld.LdBody(networks=networks))
+    return Project(name="p", pous=[pou], tasks=[Task(name="main", interval="T#10ms", programs=["Main"])])
+
+
+_writes = st.lists(st.lists(st.tuples(st.sampled_from(BOOLS), st.booleans()), max_size=3), min_size=1, max_size=8)
+
+
+@pytest.mark.parametrize("chunk_statements", [3, chunks.CHUNK_STATEMENTS])
+@fuzz_settings(fast=30)
+@given(project=ld_programs(), writes=_writes)
+def test_the_fast_variant_computes_what_the_debug_variant_does(chunk_statements, project, writes):
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(chunks, "CHUNK_STATEMENTS", chunk_statements)
+        builds = [build_project(project, variant) for variant in ("fast", "monitor", "debug")]
+    assert all(build.compiled is not None for build in builds), [d.message for d in builds[0].diagnostics]
+    fast, monitor, debug = (build.simulation() for build in builds)
+    for scan, scan_writes in enumerate(writes):
+        for name, value in scan_writes:
+            for sim in (fast, monitor, debug):
+                sim.write(f"Main.{name}", value)
+        assert fast.cycle(1) == monitor.cycle(1) == debug.cycle(1) == 1
+        assert fast.snapshot() == debug.snapshot() == monitor.snapshot(), f"scan {scan}"
+        assert monitor.probes("Main") == debug.probes("Main"), f"scan {scan}"
+        assert (fast.fault is None) == (monitor.fault is None) == (debug.fault is None)
+
+
+def test_power_flow_temporaries_are_locals_of_the_fast_code_only():
+    """The shape the property relies on: the fast code names no ``v___P`` slot inside a network (only where a
+    chunk takes or hands on its temporaries); the debug code keeps them in their slots."""
+    networks = [
+        ld.LdNetwork(
+            id=f"n{n}",
+            elements=[
+                ld.Contact(id=f"a{n}", var="B0"),
+                ld.Contact(id=f"b{n}", var="B1", mode="nc"),
+                ld.Coil(id=f"c{n}", var="B2"),
+            ],
+        )
+        for n in range(3)
+    ]
+    pou = Pou(name="Main", kind="program", language="ld", declarations=DECLARATIONS, body=ld.LdBody(networks=networks))
+    project = Project(name="p", pous=[pou])
+    fast = build_project(project, "fast").compiled
+    debug = build_project(project, "debug").compiled
+    assert fast is not None and debug is not None
+    body = fast.source[fast.source.index("def ll_x_MAIN") :]
+    assert "ll_t___P_1 = (ll_t___P & ((not self.v_B1)))" in body and "self.v___P" not in body
+    assert "self.v___P_1 = (self.v___P & ((not self.v_B1)))" in debug.source
+
+
+def test_a_fault_report_shows_the_temporaries_as_the_debug_variant_does():
+    """A fault's report lists the values of the variables its statement mentions, power flow included: the fast
+    variant reads its local temporaries from the faulting frame (codegen/faults.py)."""
+    net = ld.LdNetwork(
+        id="n1",
+        elements=[
+            ld.Contact(id="a", var="B0"),
+            ld.Box(id="d", call="DIV", en=True, inputs={"IN1": "X", "IN2": "Y"}, outputs={"OUT": "X"}),
+            ld.Coil(id="c", var="B1"),
+        ],
+    )
+    declarations = "VAR B0 : BOOL := TRUE; B1 : BOOL; X : INT := 7; Y : INT; END_VAR"
+    pou = Pou(name="Main", kind="program", language="ld", declarations=declarations, body=ld.LdBody(networks=[net]))
+    reports = []
+    for variant in ("fast", "debug"):
+        sim = build_project(Project(name="p", pous=[pou]), variant).simulation()
+        sim.cycle(1)
+        assert sim.fault is not None
+        reports.append(sim.fault.diagnostic().message)
+    assert reports[0] == reports[1]
+    assert "division by zero: 7 / 0" in reports[0] and "__P = True" in reports[0]
