@@ -39,7 +39,7 @@ def test_run_tests_see_a_failure_jump_to_it_open_it_online_and_see_coverage(page
     page.goto(server)
     page.get_by_role("navigation", name="Projects").get_by_role("button", name=re.compile("^motor")).click()
     tree = page.get_by_role("navigation", name="Project tree")
-    tree.get_by_role("button", name="tests/motor.st").wait_for()
+    tree.get_by_role("button", name="tests/motor.st", exact=True).wait_for()
 
     # The Tests panel lists the example's six tests; Run all: every result streams in, all pass.
     panels = page.get_by_role("region", name="Panels")
