@@ -9,7 +9,7 @@ import pytest
 
 from ladderlab.simulation.build import build_project
 from ladderlab.st.project_text import source_to_project
-from tests.ir.diagram_support import box, coil, contact, ld_pou, project, rung
+from tests.ir.diagram_support import box, coil, contact, fbd_pou, inp, ld_pou, net, out, project, rung
 
 D = 0x11223344
 L = 0x0102030405060708
@@ -121,3 +121,48 @@ def test_a_part_is_an_operand_of_an_ld_box():
     sim = build.simulation()
     sim.cycle(1)
     assert sim.read("Main.b") == part(D, 8, 2)
+
+
+def test_ld_coils_write_a_bit_and_keep_the_others():
+    """IEC ed. 3 6.5.6 and CODESYS' short form: a coil on ``w.3`` / ``w.%X5`` (set, negated too) writes that bit."""
+    pou = ld_pou(
+        "Main",
+        "VAR w : WORD := 16#8001; d : DWORD := 16#F0; run : BOOL := TRUE; k : INT := 1; END_VAR",
+        rung("N1", contact("C1", "run"), coil("Q1", "w.3")),
+        rung("N2", contact("C2", "d.4"), coil("Q2", "w.%X5", "set")),
+        rung("N3", contact("C3", "d.0"), coil("Q3", "k.1", "negated")),
+        rung("N4", contact("C4", "run"), coil("Q4", "w.0", "reset")),
+    )
+    build = build_project(project(pou))
+    assert [d.format() for d in build.diagnostics if d.severity == "error"] == []
+    sim = build.simulation()
+    sim.cycle(1)
+    w = put(put(put(0x8001, 1, 3, 1), 1, 5, 1), 1, 0, 0)
+    assert [sim.read("Main.w"), sim.read("Main.k")] == [w, put(1, 1, 1, 1)]
+
+
+def test_fbd_output_nodes_write_a_bit_or_a_part():
+    pou = fbd_pou(
+        "Main",
+        "VAR d : DWORD := 16#11223344; flag : BOOL := TRUE; END_VAR",
+        net("n1", [inp("v1", "16#AB"), out("o1", "d.%B2")], [("v1.OUT", "o1.IN")]),
+        net("n2", [inp("v2", "flag"), out("o2", "d.31")], [("v2.OUT", "o2.IN")]),
+    )
+    build = build_project(project(pou))
+    assert [d.format() for d in build.diagnostics if d.severity == "error"] == []
+    sim = build.simulation()
+    sim.cycle(1)
+    assert sim.read("Main.d") == put(put(0x11223344, 8, 2, 0xAB), 1, 31, 1)
+
+
+def test_a_box_output_into_a_part_is_still_a_located_error():
+    pou = ld_pou(
+        "Main",
+        "VAR w : WORD; run : BOOL := TRUE; END_VAR",
+        rung("N1", contact("C1", "run"), box("B1", "MOVE", en=True, IN="16#AB", outputs={"OUT": "w.%B1"})),
+    )
+    found = [d.format() for d in build_project(project(pou)).diagnostics if d.severity == "error"]
+    assert found == [
+        "POU Main, network 1, MOVE.OUT: error LD-BIT-TARGET: output OUT of MOVE cannot write a single bit or part "
+        "('w.%B1') yet: write a variable and copy it into the bit in ST"
+    ]

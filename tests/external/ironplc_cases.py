@@ -2,7 +2,7 @@
 
 The case format and value conventions are the MANIFEST's: scans with ``set`` and
 absolute ``time_ms``, ``expect`` after the last scan or ``expect_after_scan``,
-DATE/DT in seconds, enums as ordinals, ``tolerance`` / ``float_compare`` for REALs,
+DATE/DT in seconds, TIME/TOD in ms (our LTIME/LTOD/LDATE/LDT count ns), enums as ordinals, ``tolerance`` / ``float_compare`` for REALs,
 and ``{"op": ...}`` matchers. ``run_case`` returns None on success or why it failed.
 """
 
@@ -15,7 +15,12 @@ from ladderlab.engine.simulation import Simulation
 from ladderlab.simulation.build import build_project
 from ladderlab.st.project_text import source_to_project
 
-_SECONDS = ("DATE", "DT", "DATE_AND_TIME", "LDATE", "LDT")
+#: The case's unit for a type -> ours: DATE/DT are seconds there and ms here, the long forms ms/seconds there and ns here.
+_SCALE = {
+    **dict.fromkeys(("DATE", "DT", "DATE_AND_TIME"), 1000),
+    **dict.fromkeys(("LDATE", "LDT", "LDATE_AND_TIME"), 1_000_000_000),
+    **dict.fromkeys(("LTIME", "LTOD", "LTIME_OF_DAY"), 1_000_000),
+}
 
 
 def run_case(case: dict) -> str | None:
@@ -78,15 +83,15 @@ def _program_prefix(sim: Simulation, project):
 
 
 def _to_engine(value, type_text: str | None):
-    if type_text and type_text.split()[0].upper() in _SECONDS and isinstance(value, (int, float)):
-        return int(value * 1000)
+    if type_text and type_text.split()[0].upper() in _SCALE and isinstance(value, (int, float)):
+        return int(value * _SCALE[type_text.split()[0].upper()])
     return value
 
 
 def _compare(actual, expected, case: dict, name: str) -> str | None:
     type_text = (case.get("var_types", {}).get(name) or "").split()[0].upper() if case.get("var_types") else ""
-    if type_text in _SECONDS and isinstance(expected, (int, float)):
-        expected = expected * 1000
+    if type_text in _SCALE and isinstance(expected, (int, float)):
+        expected = expected * _SCALE[type_text]
     if isinstance(expected, dict) and "op" in expected:
         return _matcher(actual, expected)
     if isinstance(expected, float) or (

@@ -85,6 +85,18 @@ def test_unsplittable_st_text_is_kept_as_json(ws: Workspace) -> None:
     assert sorted(p.name for p in (ws.folder("p") / "pous").iterdir()) == ["Draft.st"]
 
 
+def test_cfc_chart_is_stored_as_cfc_json_and_comes_back_a_chart(ws: Workspace) -> None:
+    """Issue 26: a CFC POU is pous/<name>.cfc.json, its one chart with its execution order (CFC-01, CFC-02)."""
+    from ladderlab.model.cfc import CfcBody
+
+    chart = {"id": "chart", "nodes": [{"type": "return", "id": "r"}], "order": ["r"]}
+    pou = Pou(name="Chart", kind="program", language="cfc", body={"networks": [chart]})
+    ws.create(Project(name="p", pous=[pou]))
+    assert sorted(p.name for p in (ws.folder("p") / "pous").iterdir()) == ["Chart.cfc.json"]
+    loaded = ws.load("p").project.pous
+    assert loaded == [pou] and isinstance(loaded[0].body, CfcBody)
+
+
 def test_removed_pou_file_is_deleted(ws: Workspace, motor: Project) -> None:
     revision = ws.create(motor)
     ws.save(motor.model_copy(update={"pous": motor.pous[:1]}), revision)

@@ -40,10 +40,11 @@ def check_source_map(project: Project, name: str, result: StExport) -> None:
     """Issue 28: every line from the first network's comment to the POU's end (the state machine's closing lines
     apart) maps to a network of the POU and, if to an element, to one of that network's elements. (An SFC POU's
     source map is not written: its networks are those of its actions.)"""
-    if project.pou(name).language not in ("ld", "fbd"):
+    if project.pou(name).language not in ("ld", "fbd", "cfc"):
         return
     lines = result.text.splitlines()
-    first = next((i for i, line in enumerate(lines, 1) if line.lstrip().startswith("(* Network")), None)
+    headings = ("(* Network", "(* CFC chart")
+    first = next((i for i, line in enumerate(lines, 1) if line.lstrip().startswith(headings)), None)
     if first is None:
         return
     mapped = {line: (network, element) for line, network, element in result.source_map}

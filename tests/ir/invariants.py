@@ -175,6 +175,9 @@ class _Checker:
             if s.cond is not None:
                 self.expr(s.cond)
                 assert s.cond.type == t.BOOL, s  # type: ignore[union-attr]
+        elif isinstance(s, ir.Probe) and self.pou.language == "il":  # the accumulator after a line (online)
+            assert s.element.startswith("L") and ":" in s.element, s
+            self.expr(s.value)
         else:
             assert isinstance(s, (ir.Exit, ir.Return)), f"unexpected statement in ST: {s}"
 

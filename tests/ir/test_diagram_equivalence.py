@@ -44,24 +44,25 @@ class Rung:
     counter: str | None
 
 
-leaves = st.builds(Leaf, st.sampled_from(INPUTS + OUTPUTS), st.sampled_from(["no", "nc", "p", "n"]))
-trees = st.recursive(
-    leaves,
-    lambda inner: st.builds(
-        Gate, st.sampled_from(["series", "parallel"]), st.lists(inner, min_size=2, max_size=3).map(tuple)
-    ),
-    max_leaves=6,
-)
-rungs = st.builds(
-    Rung,
-    trees,
-    st.lists(
-        st.tuples(st.sampled_from(["normal", "negated", "set", "reset", "p", "n"]), st.sampled_from(OUTPUTS)),
-        min_size=1,
-        max_size=3,
-    ).map(tuple),
-    st.sampled_from([None, *COUNTERS]),
-)
+def rung_strategy(
+    contacts: tuple[str, ...] = ("no", "nc", "p", "n"),
+    coils: tuple[str, ...] = ("normal", "negated", "set", "reset", "p", "n"),
+    counters: tuple[str | None, ...] = (None, *COUNTERS),
+):
+    """Rungs with contacts and coils of the given modes (test_ld_il.py draws those IL can express)."""
+    leaves = st.builds(Leaf, st.sampled_from(INPUTS + OUTPUTS), st.sampled_from(contacts))
+    trees = st.recursive(
+        leaves,
+        lambda inner: st.builds(
+            Gate, st.sampled_from(["series", "parallel"]), st.lists(inner, min_size=2, max_size=3).map(tuple)
+        ),
+        max_leaves=6,
+    )
+    outputs = st.tuples(st.sampled_from(coils), st.sampled_from(OUTPUTS))
+    return st.builds(Rung, trees, st.lists(outputs, min_size=1, max_size=3).map(tuple), st.sampled_from(counters))
+
+
+rungs = rung_strategy()
 
 
 # ------------------------------------------------------------------ LD

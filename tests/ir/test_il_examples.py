@@ -215,6 +215,35 @@ def test_informal_call_does_not_use_the_accumulator_il31():
     assert sim.read("P.r") == 500
 
 
+LIM_RET = """
+FUNCTION Lim : INT
+  VAR_INPUT val, lo, hi : INT; END_VAR
+      LD      val
+      ST      Lim
+      LT      lo
+      JMPCN   NOT_LOW
+      LD      lo
+      ST      Lim
+      RET
+NOT_LOW:
+      LD      val
+      GT      hi
+      RETCN
+      LD      hi
+      ST      Lim
+END_FUNCTION
+"""
+
+
+@pytest.mark.parametrize("count, result", [(50, 101), (500, 501), (2000, 1001)])
+def test_the_value_stored_in_the_function_name_is_the_new_cr_after_ret_or_the_end_il32(count, result):
+    """IL-32: inside an IL function ``ST Lim`` sets the return value; ``RET``/``RETCN`` and the physical end
+    return it, and it becomes the caller's CR (``ADD 1`` works on it): 50 -> 100 (RET), 500 -> 500 (RETCN),
+    2000 -> 1000 (end), each plus 1."""
+    sim = scan(program("count, r : INT;", "LD count\nLim 100, 1000\nADD 1\nST r", LIM_RET), count=count)
+    assert sim.read("P.r") == result
+
+
 EX_34_STYLES = {
     "instance memory": """
   LD   in1
@@ -364,12 +393,13 @@ def test_not_and_fb_set_reset_input_operators_il24():
 
 def test_breakpoints_and_single_steps_stop_on_il_lines_il09():
     """IL-09 / IL-26: every IL line is a pause point (the engine's statement points): a breakpoint on a line
-    halts before it with the accumulator readable, and single steps visit the lines in execution order,
-    jumps included (``JMPC`` taken in the second scan: lines 8 and 9 are skipped)."""
+    halts before it with the accumulator readable. Single steps (ON-04) stop at the next load, jump or call in
+    execution order - the JMPC on line 7, the loads on lines 8 and 10 - jumps included (``JMPC`` taken in the
+    second scan: line 8 is skipped)."""
     body = "LD a\nADD 1\nST a\nGT 1\nJMPC done\nLD a\nST r\ndone: LD a\nST s"
     sim = Simulation(lower_ok(f"PROGRAM P\nVAR a, r, s : INT; END_VAR\n{body}\nEND_PROGRAM\n"), variant="debug")
     sim.set_breakpoint("P", line=5)
-    for expected_lines, r in (([5, 6, 7, 8, 9, 10, 11], 1), ([5, 6, 7, 10, 11], 1)):
+    for expected_lines, r in (([5, 7, 8, 10], 1), ([5, 7, 10], 1)):
         sim.cycle()
         assert (sim.halted.origin.line, sim.read("P.__CR_INT")) == (5, sim.read("P.a") + 1)
         lines = []

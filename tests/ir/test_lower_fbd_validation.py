@@ -241,7 +241,8 @@ def test_property_any_fbd_lowers_or_reports_located_diagnostics(networks):
 
 
 def test_a_program_in_a_block_a_bit_as_output_and_a_malformed_label():
-    """The diagram checks FBD shares with LD (docs/diagnostics.md): each reported at its block, output or network."""
+    """The diagram checks FBD shares with LD (docs/diagnostics.md): each reported at its block, output or network.
+    An output node writing a bit (``w.3``) is accepted since issue 25 (tests/engine/test_partial_access.py)."""
     other = fbd_pou("Other", "")
     main = fbd_pou(
         "Main",
@@ -255,6 +256,4 @@ def test_a_program_in_a_block_a_bit_as_output_and_a_malformed_label():
         "integer",
         "POU Main, network 1, Other: error FBD-NOT-CALLABLE: Other is a program: programs are run by tasks, not called "
         "from a diagram",
-        "POU Main, network 2, output w.3: error FBD-BIT-TARGET: the output cannot write a single bit or part ('w.3') "
-        "yet: write a variable and copy it into the bit in ST",
     ]

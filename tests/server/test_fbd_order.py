@@ -56,3 +56,12 @@ def test_bad_network_is_a_located_422(client: TestClient) -> None:
     response = client.post("/api/fbd/order", json={"id": "n1", "nodes": [{"type": "blob", "id": "x"}]})
     assert response.status_code == 422
     assert "nodes" in response.text
+
+
+def test_a_chart_runs_its_order_list_even_against_the_wiring_CFC_02(client: TestClient) -> None:
+    """A CFC chart: SUB numbered before the ADD feeding it runs first; unlisted elements follow in FBD order."""
+    chart = client.post("/api/fbd/order?chart=true", json=network(["sub", "r", "add"])).json()["order"]
+    assert chart == ["c", "sub", "r", "a", "b", "add", "mv"]
+    # "Order by data flow" is the FBD order of the same chart: the ADD goes back before the SUB
+    by_data_flow = client.post("/api/fbd/order", json=network(["sub", "r", "add"])).json()["order"]
+    assert by_data_flow == ["a", "b", "add", "c", "sub", "r", "mv"]

@@ -374,7 +374,15 @@ def test_save_new_pou_appends_it(client: TestClient, motor: str) -> None:
     assert response.status_code == 200
     pous = client.get("/api/projects/motor").json()["project"]["pous"]
     assert [p["name"] for p in pous] == ["Main", "Blinker", "Scaling", "Extra"]
-    assert pous[3] == {**new, "return_type": None}
+    oo_defaults = {
+        "methods": [],
+        "properties": [],
+        "extends": None,
+        "implements": [],
+        "abstract": False,
+        "final": False,
+    }
+    assert pous[3] == {**new, "return_type": None, **oo_defaults}
 
 
 def test_save_pou_error_paths(client: TestClient, workspace: Workspace, motor: str) -> None:

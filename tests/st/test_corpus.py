@@ -17,7 +17,6 @@ from tests.support import PASS_RATES, external
 
 IRONPLC_UNSUPPORTED = {
     "program.st": "VAR_ACCESS inside a PROGRAM (a configuration's VAR_ACCESS is supported, CFG-08)",
-    "reference_to.st": "REFERENCE TO (a CODESYS dialect; REF_TO and POINTER TO are supported)",
     "oscat.st": "CODESYS export header with text outside any comment",
     "if.st": "missing ';' after END_IF followed by another statement (ST-40 makes it an error)",
     "first_steps_syntax_error.st": "deliberately invalid (missing ';')",
@@ -60,8 +59,7 @@ def test_ironplc_end_to_end_programs():
     runnable = [c for c in cases if c["kind"] != "compile_error"]
     failing = [c for c in runnable if not parse_source(c["source"]).ok]
     PASS_RATES["ironplc end_to_end_cases (programs)"] = (len(runnable) - len(failing), len(runnable))
-    assert all("allow_reference_to=true" in c.get("options", "") for c in failing)  # REFERENCE TO only
-    assert len(failing) <= 9
+    assert [c["id"] for c in failing] == []  # REFERENCE TO, the last refused, is read since issue 25
 
 
 def test_ironplc_benchmark_programs_all_parse():

@@ -9,7 +9,8 @@ which pause points are armed in ``ll_halt``:
 
 * breakpoints, always;
 * while stepping ``statement`` (step into), ``over`` and ``out``: every ST statement and
-  every network boundary (LD/FBD step by network, ON-04); ``network``: every network
+  every network boundary (LD/FBD step by network, ON-04) - in IL every load, jump and call
+  (the other lines are ``line`` points, which only breakpoints arm); ``network``: every network
   boundary; ``transition``: every SFC transition that fires, in this scan and the
   following ones until one does (``waiting_for_transition``); ``cycle``: nothing more
   (run to the end of the scan, or the next breakpoint).
@@ -41,6 +42,7 @@ _STEP_KINDS = {
     "cycle": (),
 }
 _ELEMENT_KINDS = ("element", "transition")
+_LINE_KINDS = ("statement", "line")  # a breakpoint on a line: any statement of it, in IL the stepped-over ones too
 
 
 def _within(frames: tuple, start: tuple) -> bool:
@@ -101,10 +103,10 @@ class Debugger:
             known = sorted({p.origin.pou for p in self.points})
             raise ValueError(f"no POU {pou!r} with pause points (known: {', '.join(known) or 'none'})")
         if line is not None:
-            found = [p.id for p in points if p.kind == "statement" and p.origin.line == line]
+            found = [p.id for p in points if p.kind in _LINE_KINDS and p.origin.line == line]
             what, options = (
                 f"statement at line {line}",
-                sorted({p.origin.line for p in points if p.kind == "statement"}),
+                sorted({p.origin.line for p in points if p.kind in _LINE_KINDS}),
             )
         elif network is not None:
             found = [p.id for p in points if p.kind == "network" and p.origin.network == network]

@@ -5,6 +5,9 @@ their width; REAL is a float rounded to IEEE float32 on every store, LREAL a
 float; TIME is signed 32-bit milliseconds; TIME_OF_DAY is milliseconds since
 midnight; DATE and DATE_AND_TIME are milliseconds since 1970-01-01 00:00:00
 (DATE at day resolution); STRING is a str of at most its declared length.
+The IEC 3rd edition long forms LTIME, LTIME_OF_DAY, LDATE and LDATE_AND_TIME are
+the same quantities in 64-bit integer nanoseconds (``unit_ns`` says which unit a
+time-like type counts in).
 """
 
 from __future__ import annotations
@@ -22,6 +25,8 @@ class ElementaryType:
     bits: int = 0
     signed: bool = False
     default: object = 0
+    #: Nanoseconds per stored unit of a time-like type: 1_000_000 (ms) for TIME and the dates, 1 for the L forms.
+    unit_ns: int = 0
 
     @property
     def min(self) -> int | None:
@@ -37,7 +42,13 @@ class ElementaryType:
 
 
 def _t(name: str, category: Category, bits: int = 0, signed: bool = False, default: object = 0) -> ElementaryType:
-    return ElementaryType(name, category, bits, signed, default)
+    unit_ns = 1_000_000 if category in ("time", "date", "tod", "dt") else 0
+    return ElementaryType(name, category, bits, signed, default, unit_ns)
+
+
+def _long(name: str, category: Category, signed: bool = False) -> ElementaryType:
+    """An IEC 3rd edition long time type (LTIME, LDATE, ...): 64-bit nanoseconds."""
+    return ElementaryType(name, category, 64, signed, 0, 1)
 
 
 ELEMENTARY: dict[str, ElementaryType] = {
@@ -62,12 +73,23 @@ ELEMENTARY: dict[str, ElementaryType] = {
         _t("DATE", "date", 64),
         _t("TIME_OF_DAY", "tod", 32),
         _t("DATE_AND_TIME", "dt", 64),
+        _long("LTIME", "time", signed=True),
+        _long("LDATE", "date"),
+        _long("LTIME_OF_DAY", "tod"),
+        _long("LDATE_AND_TIME", "dt"),
         _t("STRING", "string", default=""),
     )
 }
 
-#: Short spellings accepted wherever a type name is (TOD, DT) - spec TYP-01.
-ALIASES: dict[str, str] = {"TOD": "TIME_OF_DAY", "DT": "DATE_AND_TIME"}
+#: Short spellings accepted wherever a type name is (TOD, DT) - spec TYP-01; LTOD, LDT (IEC 3rd edition).
+ALIASES: dict[str, str] = {"TOD": "TIME_OF_DAY", "DT": "DATE_AND_TIME", "LTOD": "LTIME_OF_DAY", "LDT": "LDATE_AND_TIME"}
+
+#: The IEC 3rd edition long time types and the 2nd edition type each is the nanosecond form of.
+LONG_TIME_TYPES = {"LTIME": "TIME", "LDATE": "DATE", "LTIME_OF_DAY": "TIME_OF_DAY", "LDATE_AND_TIME": "DATE_AND_TIME"}
+SHORT_TO_LONG = {short: long for long, short in LONG_TIME_TYPES.items()}
+
+#: Nanoseconds in a day: the time of day wraps at it, a date is a multiple of it.
+NS_PER_DAY = 86_400_000_000_000
 
 #: The character string types: STRING (one byte a character) and WSTRING (two); both take a length, ``[n]``.
 STRING_TYPES: tuple[str, ...] = ("STRING", "WSTRING")
@@ -82,8 +104,9 @@ GENERIC["ANY_INT"] = frozenset(n for n, t in ELEMENTARY.items() if t.category ==
 GENERIC["ANY_REAL"] = frozenset({"REAL", "LREAL"})
 GENERIC["ANY_NUM"] = GENERIC["ANY_INT"] | GENERIC["ANY_REAL"]
 GENERIC["ANY_BIT"] = frozenset({"BOOL", "BYTE", "WORD", "DWORD", "LWORD"})
-GENERIC["ANY_DATE"] = frozenset({"DATE", "TIME_OF_DAY", "DATE_AND_TIME"})
-GENERIC["ANY_MAGNITUDE"] = GENERIC["ANY_NUM"] | {"TIME"}
+GENERIC["ANY_DATE"] = frozenset(n for n, t in ELEMENTARY.items() if t.category in ("date", "tod", "dt"))
+GENERIC["ANY_DURATION"] = frozenset({"TIME", "LTIME"})
+GENERIC["ANY_MAGNITUDE"] = GENERIC["ANY_NUM"] | GENERIC["ANY_DURATION"]
 GENERIC["ANY_ELEMENTARY"] = frozenset(ELEMENTARY)
 GENERIC["ANY"] = GENERIC["ANY_ELEMENTARY"]
 
@@ -96,3 +119,8 @@ def canonical_type_name(name: str) -> str:
 
 def elementary(name: str) -> ElementaryType | None:
     return ELEMENTARY.get(canonical_type_name(name))
+
+
+def per_day(elem: ElementaryType) -> int:
+    """Stored units of a time-like type in one day (86_400_000 ms, or NS_PER_DAY for the L forms)."""
+    return NS_PER_DAY // elem.unit_ns

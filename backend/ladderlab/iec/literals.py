@@ -9,9 +9,12 @@ from __future__ import annotations
 import datetime as _dt
 import re
 from dataclasses import dataclass
+from fractions import Fraction
+
+from .elementary import LONG_TIME_TYPES, NS_PER_DAY
 
 _EPOCH = _dt.datetime(1970, 1, 1)
-_MS_PER_UNIT = {"d": 86_400_000, "h": 3_600_000, "m": 60_000, "s": 1000, "ms": 1, "us": 0.001, "ns": 0.000001}
+_MS_PER_UNIT = {"d": 86_400_000, "h": 3_600_000, "m": 60_000, "s": 1000, "ms": 1}
 _UNIT_RE = re.compile(r"(\d[\d_]*(?:\.\d+)?)(ms|us|ns|d|h|m|s)_?", re.IGNORECASE)
 _ESCAPES = {"$": "$", "'": "'", '"': '"', "L": "\n", "N": "\n", "P": "\f", "R": "\r", "T": "\t"}
 _ESCAPE_RE = {False: re.compile(r"\$([0-9A-Fa-f]{2}|.)"), True: re.compile(r"\$([0-9A-Fa-f]{4}|.)")}
@@ -46,7 +49,7 @@ LITERAL_FORMS = (
         "a time of day is TOD# then hours:minutes:seconds",
         ("TOD#08:30:00", "TOD#23:59:59.5"),
     ),
-    LiteralForm("DATE", ("D", "DATE", "LDATE"), "a date is D# then year-month-day", ("D#2024-05-01",)),
+    LiteralForm("DATE", ("D", "DATE", "LD", "LDATE"), "a date is D# then year-month-day", ("D#2024-05-01",)),
     LiteralForm(
         "DATE_AND_TIME",
         ("DT", "DATE_AND_TIME", "LDT", "LDATE_AND_TIME"),
@@ -126,22 +129,31 @@ def _normalise_ms(value: float) -> int | float:
 
 def decode_duration(text: str) -> int | float:
     """``T#1h30m`` -> 5_400_000 ms; ``T#-14ms`` -> -14; clock style ``TIME#12:00:00`` (LEX-46) too."""
+    return _normalise_ms(float(Fraction(decode_duration_ns(text), _NS_PER_MS)))
+
+
+def decode_duration_ns(text: str) -> int:
+    """``LTIME#1.5us`` -> 1500: a duration in whole nanoseconds, exactly (fractions below 1 ns round, ties to even)."""
     _, body = _prefix_and_body(text)
     sign = -1 if body.startswith("-") else 1
     body = body.lstrip("+-")
     if ":" in body:
-        return sign * _clock_ms(body)
-    total = sum(float(n.replace("_", "")) * _MS_PER_UNIT[unit.lower()] for n, unit in _UNIT_RE.findall(body))
-    return _normalise_ms(sign * total)
+        return sign * _clock_ns(body)
+    total = sum(Fraction(n.replace("_", "")) * _NS_PER_UNIT[unit.lower()] for n, unit in _UNIT_RE.findall(body))
+    return sign * round(total)
+
+
+def _clock_ns(body: str) -> int:
+    parts = body.split(":")
+    hours, minutes = int(parts[0]), int(parts[1])
+    seconds = Fraction(parts[2]) if len(parts) > 2 else Fraction(0)
+    if not (0 <= hours < 24 and 0 <= minutes < 60 and 0 <= seconds < 60):
+        raise ValueError("the time of day must lie between 00:00:00 and 23:59:59.999")
+    return round(((hours * 60 + minutes) * 60 + seconds) * 1_000_000_000)
 
 
 def _clock_ms(body: str) -> int:
-    parts = body.split(":")
-    hours, minutes = int(parts[0]), int(parts[1])
-    seconds = float(parts[2]) if len(parts) > 2 else 0.0
-    if not (0 <= hours < 24 and 0 <= minutes < 60 and 0 <= seconds < 60):
-        raise ValueError("the time of day must lie between 00:00:00 and 23:59:59.999")
-    return round(((hours * 60 + minutes) * 60 + seconds) * 1000)
+    return round(Fraction(_clock_ns(body), _NS_PER_MS))
 
 
 def decode_date(text: str) -> int:
@@ -167,16 +179,59 @@ def _ms_since_epoch(moment: _dt.datetime) -> int:
     return (delta.days * 86_400 + delta.seconds) * 1000 + delta.microseconds // 1000
 
 
+#: Literal prefix -> the type it makes (IEC 61131-3 ed. 3, 6.3.4-6.3.5: the L prefixes make the long types).
+_KINDS = {
+    **dict.fromkeys(("T", "TIME"), "TIME"),
+    **dict.fromkeys(("LT", "LTIME"), "LTIME"),
+    **dict.fromkeys(("D", "DATE"), "DATE"),
+    **dict.fromkeys(("LD", "LDATE"), "LDATE"),
+    **dict.fromkeys(("TOD", "TIME_OF_DAY"), "TIME_OF_DAY"),
+    **dict.fromkeys(("LTOD", "LTIME_OF_DAY"), "LTIME_OF_DAY"),
+    **dict.fromkeys(("DT", "DATE_AND_TIME"), "DATE_AND_TIME"),
+    **dict.fromkeys(("LDT", "LDATE_AND_TIME"), "LDATE_AND_TIME"),
+}
+_NS_PER_MS = 1_000_000
+_NS_PER_UNIT = {"d": 86_400 * 10**9, "h": 3_600 * 10**9, "m": 60 * 10**9, "s": 10**9, "ms": 10**6, "us": 1000, "ns": 1}
+#: The prefix each type's literal is written with (``encode_time_literal``).
+_WRITTEN = {
+    "TIME": "T",
+    "LTIME": "LTIME",
+    "DATE": "D",
+    "LDATE": "LDATE",
+    "TIME_OF_DAY": "TOD",
+    "LTIME_OF_DAY": "LTOD",
+    "DATE_AND_TIME": "DT",
+    "LDATE_AND_TIME": "LDT",
+}
+
+
+def literal_type(prefix: str) -> str | None:
+    """The type a date/time literal prefix makes (``LTOD`` -> LTIME_OF_DAY), None for any other prefix."""
+    return _KINDS.get(prefix.upper())
+
+
 def decode_time_literal(text: str) -> tuple[str, int | float]:
-    """Any of the four date/time literal forms -> (canonical type name, milliseconds)."""
-    prefix = text.split("#", 1)[0].upper()
-    if prefix in ("T", "TIME", "LT", "LTIME"):
-        return "TIME", decode_duration(text)
-    if prefix in ("D", "DATE", "LDATE"):
-        return "DATE", decode_date(text)
-    if prefix in ("TOD", "TIME_OF_DAY", "LTOD", "LTIME_OF_DAY"):
-        return "TIME_OF_DAY", decode_tod(text)
-    return "DATE_AND_TIME", decode_dt(text)
+    """Any of the date/time literal forms -> (canonical type name, value): milliseconds for TIME, DATE,
+    TIME_OF_DAY and DATE_AND_TIME, whole nanoseconds for their long forms."""
+    kind = _KINDS[text.split("#", 1)[0].upper()]
+    short = LONG_TIME_TYPES.get(kind)
+    if short == "TIME":
+        return kind, decode_duration_ns(text)
+    if short == "TIME_OF_DAY":
+        return kind, _clock_ns(_prefix_and_body(text)[1])
+    if short == "DATE_AND_TIME":
+        _, body = _prefix_and_body(text)
+        year, month, day, clock = body.split("-", 3)
+        return kind, _ms_since_epoch(_dt.datetime(int(year), int(month), int(day))) * _NS_PER_MS + _clock_ns(clock)
+    if short == "DATE":
+        return kind, decode_date(text) * _NS_PER_MS
+    if kind == "TIME":
+        return kind, decode_duration(text)
+    if kind == "DATE":
+        return kind, decode_date(text)
+    if kind == "TIME_OF_DAY":
+        return kind, decode_tod(text)
+    return kind, decode_dt(text)
 
 
 def _clock_text(ms: int) -> str:
@@ -187,16 +242,53 @@ def _clock_text(ms: int) -> str:
     return text + f".{millis:03d}" if millis else text
 
 
+def clock_text_ns(ns: int) -> str:
+    """Nanoseconds since midnight -> ``12:30:00``, ``12:30:00.000000250`` (the fraction only when there is one)."""
+    seconds, nanos = divmod(ns, 1_000_000_000)
+    text = _clock_text(seconds * 1000)
+    return text + f".{nanos:09d}".rstrip("0") if nanos else text
+
+
+def date_text(ms: int) -> str:
+    """Milliseconds since 1970-01-01 -> ``2024-05-01`` (the day it falls in)."""
+    moment = _EPOCH + _dt.timedelta(milliseconds=ms)
+    return f"{moment.year:04d}-{moment.month:02d}-{moment.day:02d}"
+
+
 def encode_time_literal(kind: str, value: int | float) -> str:
+    """The literal text of a TimeLit: ``T#1h30m``, ``LTIME#1s250ns``, ``LDT#2024-01-01-12:30:00``."""
+    prefix = _WRITTEN[kind] + "#"
+    short = LONG_TIME_TYPES.get(kind)
+    if short is not None:  # nanoseconds
+        ns = int(value)
+        if short == "TIME":
+            return prefix + encode_duration_ns(ns)
+        if short == "TIME_OF_DAY":
+            return prefix + clock_text_ns(ns)
+        day = ns - ns % NS_PER_DAY
+        if short == "DATE":
+            return prefix + date_text(day // _NS_PER_MS)
+        return prefix + date_text(day // _NS_PER_MS) + "-" + clock_text_ns(ns - day)
     if kind == "TIME":
-        return "T#" + encode_duration(value)
+        return prefix + encode_duration(value)
     if kind == "TIME_OF_DAY":
-        return "TOD#" + _clock_text(int(value))
-    moment = _EPOCH + _dt.timedelta(milliseconds=int(value))
+        return prefix + _clock_text(int(value))
+    day_ms = int(value) - int(value) % 86_400_000
     if kind == "DATE":
-        return f"D#{moment.year:04d}-{moment.month:02d}-{moment.day:02d}"
-    day_ms = int(value) - _ms_since_epoch(_dt.datetime(moment.year, moment.month, moment.day))
-    return f"DT#{moment.year:04d}-{moment.month:02d}-{moment.day:02d}-" + _clock_text(day_ms)
+        return prefix + date_text(day_ms)
+    return prefix + date_text(day_ms) + "-" + _clock_text(int(value) - day_ms)
+
+
+def encode_duration_ns(ns: int) -> str:
+    """Nanoseconds -> ``1h30m``, ``-1s500us``, ``0s`` (every non-zero unit from d to ns, largest first)."""
+    if ns == 0:
+        return "0s"
+    rest, parts = abs(ns), []
+    for unit, size in _NS_PER_UNIT.items():
+        count, rest = divmod(rest, size)
+        if count:
+            parts.append(f"{count}{unit}")
+    return ("-" if ns < 0 else "") + "".join(parts)
 
 
 def encode_duration(value: int | float) -> str:

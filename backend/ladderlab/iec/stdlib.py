@@ -17,7 +17,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 
-from .elementary import ALIASES, ELEMENTARY, canonical_type_name
+from .elementary import ALIASES, ELEMENTARY, SHORT_TO_LONG, canonical_type_name
 
 T = "T"
 
@@ -88,8 +88,12 @@ def _fn(
     return StdFunction(name, tuple(inputs), result, group, description, spec, extensible)
 
 
+#: Every type name a <SRC>_TO_<DST> conversion may name: the elementary types, their short spellings and WSTRING.
+CONVERSION_SPELLINGS = [*ELEMENTARY, *ALIASES, "WSTRING"]
+
+
 def _conversions() -> list[StdFunction]:
-    spellings = [*ELEMENTARY, *ALIASES]
+    spellings = CONVERSION_SPELLINGS
     rows = [
         _fn(
             f"{a}_TO_{b}",
@@ -104,6 +108,59 @@ def _conversions() -> list[StdFunction]:
         if canonical_type_name(a) != canonical_type_name(b)
     ]
     rows.append(_fn("TRUNC", [Pin("IN", "ANY_REAL")], "DINT", "conversion", "truncate toward zero", "FUN-11"))
+    return rows
+
+
+_INTEGERS = [name for name, t in ELEMENTARY.items() if t.category == "int"]
+_BIT_STRINGS = [name for name, t in ELEMENTARY.items() if t.category == "bits"]
+#: The bit string as wide as each integer type: what ``<int>_TO_BCD`` writes into.
+BCD_WIDTH = {
+    name: _BIT_STRINGS[_BIT_STRINGS.index("BYTE") + (ELEMENTARY[name].bits // 16).bit_length()] for name in _INTEGERS
+}
+
+
+def bcd_digits(bit_string: str) -> int:
+    """Decimal digits a bit string holds in BCD (4 bits a digit): BYTE 2, WORD 4, DWORD 8, LWORD 16."""
+    return ELEMENTARY[bit_string].bits // 4
+
+
+def _ed3_table() -> dict[str, tuple[str, str | None, str]]:
+    table: dict[str, tuple[str, str | None, str]] = {}
+    for bits in _BIT_STRINGS:
+        for integer in _INTEGERS:
+            if 10 ** bcd_digits(bits) - 1 <= (ELEMENTARY[integer].max or 0):  # every BCD value of the bits fits
+                table[f"{bits}_BCD_TO_{integer}"] = ("bcd_to", bits, integer)
+            table[f"{integer}_TO_BCD_{bits}"] = ("to_bcd", integer, bits)
+        table[f"TO_BCD_{bits}"] = ("to_bcd", None, bits)
+    for integer in _INTEGERS:
+        table[f"BCD_TO_{integer}"] = ("bcd_to", None, integer)
+        table[f"{integer}_TO_BCD"] = ("to_bcd", integer, BCD_WIDTH[integer])
+        for real in ("REAL", "LREAL"):
+            table[f"{real}_TRUNC_{integer}"] = ("trunc", real, integer)
+    for name in CONVERSION_SPELLINGS:
+        table[f"TO_{name}"] = ("to", None, canonical_type_name(name))
+    return table
+
+
+#: IEC 61131-3 ed. 3 Table 22 conversions besides <SRC>_TO_<DST> (FUN-10): name -> (kind, source or None, target).
+#: kind: "bcd_to" (BCD bit string -> integer), "to_bcd" (integer -> BCD bit string), "trunc" (real -> integer,
+#: toward zero), "to" (the overloaded TO_<type>: any elementary source). A None source is generic.
+ED3_CONVERSIONS = _ed3_table()
+
+_CONVERSION_TEXT = {
+    "bcd_to": ("ANY_BIT", "the BCD number IN as an integer (an invalid BCD digit stops the task)"),
+    "to_bcd": ("ANY_INT", "IN in BCD (a negative IN or one with too many digits stops the task)"),
+    "trunc": ("ANY_REAL", "IN truncated toward zero"),
+    "to": ("ANY_ELEMENTARY", "IN converted (as <type>_TO_"),
+}
+
+
+def _ed3_conversions() -> list[StdFunction]:
+    rows = []
+    for name, (kind, source, target) in ED3_CONVERSIONS.items():
+        family, text = _CONVERSION_TEXT[kind]
+        text = f"{text}{target})" if kind == "to" else text
+        rows.append(_fn(name, [Pin("IN", source or family)], target, "conversion", text, "FUN-10"))
     return rows
 
 
@@ -261,6 +318,19 @@ def _strings() -> list[StdFunction]:
     ]
 
 
+_LONG_WORDS = {"TIME": "LTIME", "TOD": "LTOD", "DT": "LDT", "DATE": "LDATE"}
+
+
+def long_time_name(name: str) -> str:
+    """The IEC 3rd edition name of a date and time function on the long types: ADD_TOD_TIME -> ADD_LTOD_LTIME."""
+    operation, *operands = name.split("_")
+    return "_".join([operation, *(_LONG_WORDS[word] for word in operands)])
+
+
+def _long(type_name: str) -> str:
+    return SHORT_TO_LONG.get(type_name, type_name)
+
+
 def _date_and_time() -> list[StdFunction]:
     tod, dt = "TIME_OF_DAY", "DATE_AND_TIME"
     table = [
@@ -279,6 +349,17 @@ def _date_and_time() -> list[StdFunction]:
     ]
     rows = [
         _fn(name, [Pin("IN1", a), Pin("IN2", b)], result, "date and time", text, "FUN-85")
+        for name, a, b, result, text in table
+    ]
+    rows += [  # IEC 61131-3 ed. 3 Table 35: the same functions on the long types (ADD_LTOD_LTIME ...)
+        _fn(
+            long_time_name(name),
+            [Pin("IN1", _long(a)), Pin("IN2", _long(b))],
+            _long(result),
+            "date and time",
+            text,
+            "FUN-85",
+        )
         for name, a, b, result, text in table
     ]
     rows += [
@@ -383,7 +464,15 @@ def _sfc_blocks() -> list[StdFunctionBlock]:
 #: Every standard function by upper-case name.
 FUNCTIONS: dict[str, StdFunction] = {
     f.name: f
-    for f in (*_conversions(), *_numeric(), *_bits(), *_selection_and_comparison(), *_strings(), *_date_and_time())
+    for f in (
+        *_conversions(),
+        *_ed3_conversions(),
+        *_numeric(),
+        *_bits(),
+        *_selection_and_comparison(),
+        *_strings(),
+        *_date_and_time(),
+    )
 }
 #: Every standard function block by upper-case name.
 FUNCTION_BLOCKS: dict[str, StdFunctionBlock] = {fb.name: fb for fb in _function_blocks()}

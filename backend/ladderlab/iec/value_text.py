@@ -14,8 +14,18 @@ import datetime as _dt
 import math
 import re
 
-from .elementary import ALIASES
-from .literals import decode_date, decode_duration, decode_integer, decode_tod, encode_duration, literal_form
+from .elementary import ALIASES, LONG_TIME_TYPES
+from .literals import (
+    decode_date,
+    decode_duration,
+    decode_integer,
+    decode_time_literal,
+    decode_tod,
+    encode_duration,
+    encode_time_literal,
+    literal_form,
+    literal_type,
+)
 from .values import MS_PER_DAY, f32, resolve
 
 _EPOCH = _dt.date(1970, 1, 1).toordinal()
@@ -29,7 +39,7 @@ _PREFIXES = {  # category -> prefixes accepted besides the type's own name
 _PREFIX_RE = re.compile(r"([A-Z_]+)#(.*)\Z", re.S)
 _INT_RE = re.compile(r"(?:([+-]?)([0-9][0-9_]*)|(2|8|16)#([0-9A-F][0-9A-F_]*))\Z")
 _REAL_RE = re.compile(r"[+-]?[0-9][0-9_]*(?:\.[0-9][0-9_]*)?(?:E[+-]?[0-9]+)?\Z")
-_TIME_RE = re.compile(r"(-?)((?:[0-9][0-9_]*(?:\.[0-9]+)?(?:MS|D|H|M|S)_?)+)\Z")
+_TIME_RE = re.compile(r"(-?)((?:[0-9][0-9_]*(?:\.[0-9]+)?(?:MS|US|NS|D|H|M|S)_?)+)\Z")
 _TOD_RE = re.compile(r"([0-9]{1,2}):([0-9]{1,2})(?::([0-9]{1,2})(?:\.([0-9]+))?)?\Z")
 _DATE_RE = re.compile(r"([0-9]{4})-([0-9]{1,2})-([0-9]{1,2})\Z")
 _DT_RE = re.compile(r"([0-9]{4}-[0-9]{1,2}-[0-9]{1,2})-(.+)\Z")
@@ -42,6 +52,8 @@ def parse(text: str, type_name: str) -> object:
         return text
     body = _strip_prefix(text.strip().upper(), ref.name, ref.category)
     result = _PARSERS[ref.category](body) if body else None
+    if result is not None and ref.name in LONG_TIME_TYPES:
+        result = _long(body, ref.name)
     if result is None:
         from .values import article
 
@@ -55,7 +67,7 @@ def _strip_prefix(text: str, name: str, category: str) -> str:
     if not match:  # also 16#FF: a base, not a type prefix
         return text
     prefix = ALIASES.get(match.group(1), match.group(1))
-    if prefix == name or match.group(1) in _PREFIXES.get(category, ()):
+    if prefix == name or match.group(1) in _PREFIXES.get(category, ()) or literal_type(match.group(1)) == name:
         return match.group(2)
     return ""  # a prefix naming another type
 
@@ -122,6 +134,13 @@ def _parse_dt(text: str) -> int | None:
     return None if day is None or tod is None else day + tod
 
 
+def _long(body: str, name: str) -> int:
+    """A valid LTIME/LDATE/LTIME_OF_DAY/LDATE_AND_TIME text (checked by the short type's parser) in nanoseconds."""
+    if LONG_TIME_TYPES[name] == "TIME" and body.lstrip("-").isdigit():  # bare milliseconds, as for TIME
+        return int(body) * 1_000_000
+    return int(decode_time_literal(f"{name}#{body}")[1])
+
+
 _PARSERS = {
     "bool": _parse_bool,
     "int": _parse_int,
@@ -144,6 +163,8 @@ def format_value(value: object, type_name: str) -> str:
         return str(value)
     if cat == "real":
         return format_real(float(value), ref.name == "REAL")
+    if ref.name in LONG_TIME_TYPES:
+        return encode_time_literal(ref.name, int(value))
     ms = int(value)  # every other category is a whole number of milliseconds or an integer
     if cat == "time":
         return format_time(ms)

@@ -5,10 +5,12 @@ elementary types). "Storing" a value in a type is what every assignment and
 every function result goes through:
 
 * integers and bit strings wrap in two's complement to the type's width (FUN-90);
-* TIME wraps to signed 32 bits; TIME_OF_DAY is taken modulo 24 h (FUN-86);
+* TIME wraps to signed 32 bits, LTIME to signed 64 bits; TIME_OF_DAY and
+  LTIME_OF_DAY are taken modulo 24 h (FUN-86);
 * DATE and DATE_AND_TIME saturate to [1970-01-01, 9999-12-31 23:59:59.999]
   (the value model starts at the epoch; the upper end is where the text form
-  D#/DT# stops; cf. FUN-87 "saturated");
+  D#/DT# stops; cf. FUN-87 "saturated"); LDATE and LDATE_AND_TIME, 64-bit
+  nanoseconds, to [1970-01-01, 2262-04-11 23:47:16.854775807];
 * REAL rounds to IEEE float32 (TYP-03), LREAL is a Python float;
 * STRING is cut to its declared length (TYP-04).
 
@@ -32,11 +34,14 @@ from .elementary import (
     ELEMENTARY,
     ElementaryType,
     elementary,
+    per_day,
 )
 
 MS_PER_DAY = 86_400_000
 #: Last millisecond of 9999-12-31, the largest DATE_AND_TIME the DT# text form can show.
 DT_MAX = 253_402_300_799_999
+#: The largest LDATE_AND_TIME: the last nanosecond a signed 64-bit count from 1970 reaches (2262-04-11).
+LDT_MAX = (1 << 63) - 1
 
 _F32 = struct.Struct("<f")
 _pack, _unpack = _F32.pack, _F32.unpack
@@ -57,8 +62,13 @@ def clamp_dt(x: int) -> int:
     return 0 if x < 0 else DT_MAX if x > DT_MAX else x
 
 
+def clamp_ldt(x: int) -> int:
+    """Saturate an LDATE / LDATE_AND_TIME nanosecond count to [1970-01-01, LDT_MAX]."""
+    return 0 if x < 0 else LDT_MAX if x > LDT_MAX else x
+
+
 #: Globals that inlined store / function source may reference (add them to the generated module).
-INLINE_NAMES: dict[str, object] = {"ll__f32": f32, "ll__clamp_dt": clamp_dt}
+INLINE_NAMES: dict[str, object] = {"ll__f32": f32, "ll__clamp_dt": clamp_dt, "ll__clamp_ldt": clamp_ldt}
 
 
 class TypeRef(NamedTuple):
@@ -100,9 +110,9 @@ def value_range(type_name: str) -> tuple[int, int] | None:
     ref = resolve(type_name)
     cat = ref.category
     if cat == "tod":
-        return 0, MS_PER_DAY - 1
+        return 0, per_day(ref.elem) - 1
     if cat in ("date", "dt"):
-        return 0, DT_MAX
+        return 0, DT_MAX if ref.elem.unit_ns > 1 else LDT_MAX
     if cat in ("int", "bits", "time", "bool"):
         lo, hi = ref.elem.min, ref.elem.max
         assert lo is not None and hi is not None  # these categories have integer ranges
@@ -129,9 +139,9 @@ def store_expr(expr: str, type_name: str) -> str:
     if cat in ("int", "bits", "time"):
         return wrap_expr(expr, type_name)
     if cat == "tod":
-        return f"({expr}) % {MS_PER_DAY}"
+        return f"({expr}) % {per_day(ref.elem)}"
     if cat in ("date", "dt"):
-        return f"ll__clamp_dt({expr})"
+        return f"ll__clamp_dt({expr})" if ref.elem.unit_ns > 1 else f"ll__clamp_ldt({expr})"
     if cat == "string":
         return f"({expr})[:{ref.length}]"
     if ref.name == "REAL":
@@ -235,6 +245,6 @@ def _check_int(value: object, raw: int | float, ref: TypeRef) -> int:
         raise ValueError(
             f"{shown} is out of range for {ref.name} ({format_value(lo, ref.name)}..{format_value(hi, ref.name)})"
         )
-    if ref.category == "date" and raw % MS_PER_DAY:
+    if ref.category == "date" and raw % per_day(ref.elem):
         raise ValueError(f"{value!r} is not at a day boundary, as a DATE must be")
     return raw

@@ -15,10 +15,10 @@ from ..st import ast
 from ..st import types as t
 from ..st.body import BodyChecker
 from ..st.rules import assignable_or_report
-from ..st.symbols import CheckResult, PouInfo, Symbol
+from ..st.symbols import THIS, CheckResult, PouInfo, Symbol
 from .lower_types import LoweringError, TypeLowering, ir_default
-from .nodes import Origin, Slot, Stmt, Var, VarClass
-from .types import IrType
+from .nodes import SELF, Member, Origin, Slot, Stmt, Var, VarClass
+from .types import FbInstance, IrType
 
 #: Hidden slot names start with two underscores, which an IEC identifier must not contain (LEX-13); they
 #: get a number suffix if a declared name (the parser does not refuse ``__x``) or another hidden one is taken.
@@ -222,7 +222,7 @@ class PouContext:
         if key == self.name:
             return self.types
         if key not in self._callees:
-            self._callees[key] = TypeLowering(self.checked, self.checked.pous.get(key))
+            self._callees[key] = TypeLowering(self.checked, self.checked.pou(key))
         return self._callees[key]
 
     def add_slot(self, slot: Slot) -> None:
@@ -264,7 +264,19 @@ class PouContext:
             return Var("global", upper, self.types.type_of(target.type, target.type_spec))
         if upper in self.edges and self.info is not None and symbol.pou.upper() == self.name:
             return self.edges[upper]
+        method = self.info.method if self.info is not None else None
+        if method is not None and method.owner.symbols.get(upper) is symbol:  # the instance's (inherited too), via THIS
+            this = self.var_for(self.info.symbols[THIS])
+            owner = self.types_for(method.owner.name)
+            return Var("local", this.name, owner.type_of(symbol.type, symbol.type_spec), (Member(upper),))
         return Var("local", upper, self.types.type_of(symbol.type, symbol.type_spec))
+
+    def this_var(self) -> Var:
+        """``THIS^``: in a METHOD its in-out ``THIS``; in a function block's body the instance running it
+        (``SELF``, a root without a slot: the engine's ``self``)."""
+        if self.info is not None and self.info.method is not None:
+            return self.var_for(self.info.symbols[THIS])
+        return Var("local", SELF, FbInstance(self.name))
 
     def direct(self, address: str, type: IrType) -> Var:
         """An address used without a declaration (``q := %IX0.1``): a located global of its default type, one per

@@ -20,6 +20,7 @@ from ..iec import stdlib
 from ..iec.spelling import did_you_mean
 from ..st import ast
 from ..st import types as t
+from ..st.body import BodyChecker
 from ..st.symbols import PouInfo
 from .diagram_operands import At, Operands
 from .diagram_shapes import Leaf, Shape, Template
@@ -168,6 +169,10 @@ def resolve_callee(ops: Operands, call: str, instance: str | None, at: At) -> tu
 
 def _callee(ops: Operands, name: str, at: At) -> Callee | None:
     """What ``name`` calls, or None (reported): a program or an unknown name."""
+    if "." in name:  # ``inst.Method`` (CODESYS): a method of an instance or an interface variable
+        method = _method(ops, name, at)
+        if method is not None:
+            return Callee(name, pou=method)
     pou = ops.ctx.checked.pou(name)
     if pou is not None and pou.plant:
         ops.report(
@@ -195,6 +200,26 @@ def _callee(ops: Operands, name: str, at: At) -> Callee | None:
         at, f"{ops.lang}-UNKNOWN-CALL", f"unknown function or function block '{name}'" + did_you_mean(name, known)
     )
     return None
+
+
+def _method(ops: Operands, name: str, at: At) -> PouInfo | None:
+    """The METHOD a box ``inst.M`` calls (st/methods.py), or None when ``name`` names none."""
+    with ops.muted():
+        node = ops.parse(name, at, "the method")
+    if not isinstance(node, ast.Member):
+        return None
+    base = BodyChecker(ops.ctx.checked, ops.ctx.info, lambda *args, **kwargs: None).expr(node.base)
+    owner = base.pou if isinstance(base, t.FbType) else base.info if isinstance(base, t.InterfaceType) else None
+    return owner.find_method(node.name) if owner is not None else None
+
+
+def _target(ops: Operands, callee: Callee, instance: str | None, at: At) -> ast.Expr | None:
+    """What the box's ST call calls: its instance (FBs), ``inst.M`` (a method), else the function's name."""
+    if instance is not None:
+        return ops.parse(instance, at, "the instance")
+    if callee.pou is not None and callee.pou.method is not None:
+        return ops.parse(callee.name, at, "the method")
+    return ast.Name(callee.name)
 
 
 class CheckedCall(NamedTuple):
@@ -230,7 +255,7 @@ def check_call(
         if template is not None:
             return CheckedCall(template.ty, template.fb, None, template, shape.leaves)
     before = len(ops.ctx.diagnostics)
-    target = ops.parse(instance, at, "the instance") if instance is not None else ast.Name(callee.name)
+    target = _target(ops, callee, instance, at)
     node = _check(ops, callee, target, inputs, outputs, at, en, eno, context)
     if node is None:
         return None
@@ -312,7 +337,7 @@ def type_call(
     """Type the box's call as ST types it, reporting nothing: the calls nested in ``inputs`` (``call_ast``: the
     blocks chained into it) get the types their place in it gives them (st/context_typing.py)."""
     with ops.muted():
-        target = ops.parse(instance, at, "the instance") if instance is not None else ast.Name(callee.name)
+        target = _target(ops, callee, instance, at)
         _check(ops, callee, target, inputs, {}, at, en, None, context)
 
 

@@ -17,7 +17,7 @@ import contextlib
 import dataclasses
 import functools
 import re
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from typing import Any, NamedTuple
 
 from ..iec.addresses import partial_access
@@ -30,10 +30,13 @@ from ..st.rules import assignable_or_report
 from ..st.symbols import Symbol
 from .context import HIDDEN_PREFIX, PouContext
 from .diagram_shapes import CallShapes
-from .lower_expr import lower_access, lower_expr, lower_to
+from .lower_expr import assign_part, lower_access, lower_expr, lower_to
 from .lower_types import LoweringError
-from .nodes import Const, Expr, Var
+from .nodes import Assign, Const, Expr, Origin, Var
 from .types import BOOL, IrType
+
+#: Writes a value into a written operand: the assignment a coil or output node makes.
+Store = Callable[[Expr, Origin], Assign]
 
 _QUICK = re.compile(r"([0-9]+)|([A-Za-z_][A-Za-z0-9_]*)(?:\.([A-Za-z_][A-Za-z0-9_]*))?")  # integer | name[.member]
 
@@ -319,8 +322,9 @@ class Operands:
             return None
         return value
 
-    def target(self, text: str, at: At, what: str) -> tuple[Var | None, t.Type]:
-        """A written operand (coil, output node, box output): a variable that may be assigned.
+    def target(self, text: str, at: At, what: str, parts: bool = False) -> tuple[Var | ast.Member | None, t.Type]:
+        """A written operand (coil, output node, box output): a variable that may be assigned; with ``parts``
+        also a bit or part of one (``w.3``, ``w.%X3``), returned as its checked AST for ``store``.
 
         The checker's verdict on writing a plain variable name depends only on the variable's type, class and
         constness; once one such variable was written without a word, alike ones are not checked again (some
@@ -342,9 +346,11 @@ class Operands:
         if ty is t.ERROR or self.errors_since(before):
             return None, t.ERROR
         if isinstance(node, ast.Member) and partial_access(node.name) is not None:
-            self.report(
+            if parts:
+                return node, ty
+            self.report(  # only an LD box's output gets here: coils and FBD output nodes take parts
                 at,
-                f"{self.lang}-BIT-TARGET",
+                "LD-BIT-TARGET",
                 f"{what} cannot write a single bit or part ('{text.strip()}') yet: "
                 "write a variable and copy it into the bit in ST",
             )
@@ -353,16 +359,26 @@ class Operands:
             self._clean_targets.add(kind)
         return self.access(node, at), ty
 
-    def bool_target(self, text: str, at: At, what: str) -> Var | None:
-        var, ty = self.target(text, at, what)
+    def bool_target(self, text: str, at: At, what: str) -> Store | None:
+        """A coil's or BOOL output node's operand: a BOOL variable or a bit of one (``w.3``, ``w.%X3``), as the
+        store of a value."""
+        var, ty = self.target(text, at, what, parts=True)
         if var is not None and not t.same(ty, t.BOOL):
             self.report(at, f"{self.lang}-NOT-BOOL", f"{what} needs a BOOL variable; '{text.strip()}' is {ty}")
             return None
-        return var
+        return None if var is None else self.store(var)
+
+    def store(self, target: Var | ast.Member) -> Store:
+        """Writing a value into a variable, or into a bit of one: the variable gets its new bit pattern, as ST's
+        ``w.3 := v`` (lower_expr.assign_part)."""
+        if isinstance(target, Var):
+            return lambda value, origin: Assign(target, value, origin)
+        return lambda value, origin: Assign(*assign_part(target, value, self.ctx), origin)
 
     def value_target(self, text: str, at: At, what: str, value: t.Type) -> Var | None:
         """A written operand that receives a ``value``-typed result (output node, box output pin)."""
         var, ty = self.target(text, at, what)
+        assert not isinstance(var, ast.Member)  # parts only when asked for
         return var if var is not None and self.assignable(ty, value, at, f"{what} ('{text.strip()}')") else None
 
     def assignable(self, target: t.Type, value: t.Type, at: At, what: str) -> bool:

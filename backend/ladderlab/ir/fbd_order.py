@@ -15,6 +15,10 @@ IEC 61131-3 8.1.5 (GR-05, GR-06) and 8.3 (GR-30) as LadderLab applies them:
 * Output nodes run after their source; input nodes are read just before their
   first consumer; jumps and returns run last, once every other node of the
   network is evaluated (GR-05 c).
+* A CFC chart (``explicit=True``, CFC-02) runs its blocks, outputs, jumps and
+  returns in the ``order`` list's order whatever the wiring (elements it leaves
+  out follow in the FBD order above); every wire into an element that runs
+  before the wire's producer is feedback.
 
 The result is data only (``NetworkGraph``); lower_fbd turns it into IR and the
 editor shows ``order`` as execution-order badges.
@@ -99,8 +103,9 @@ def wire_text(wire: fbd.Wire, names: NetworkNames) -> str:
     return f"from {names(wire.from_.node, wire.from_.pin.upper())} to {names(wire.to.node, wire.to.pin.upper())}"
 
 
-def analyse(network: fbd.FbdNetwork, report: Report) -> NetworkGraph:
-    """Resolve the wires of ``network`` and fix its evaluation order, reporting structural errors."""
+def analyse(network: fbd.FbdNetwork, report: Report, explicit: bool = False) -> NetworkGraph:
+    """Resolve the wires of ``network`` and fix its evaluation order, reporting structural errors;
+    ``explicit``: a CFC chart, whose ``order`` list is the order (CFC-02)."""
     nodes: dict[str, fbd.FbdNode] = {}
     named = False  # any connector or continuation? (most networks have none)
     for node in network.nodes:
@@ -112,6 +117,8 @@ def analyse(network: fbd.FbdNetwork, report: Report) -> NetworkGraph:
     connectors = _connectors(network, nodes, report) if named else {}
     _resolve(graph, network, wires, connectors, report)
     graph.order = _order(graph, network, report)
+    if explicit:
+        graph.order = _explicit_order(graph, network)
     return graph
 
 
@@ -318,6 +325,34 @@ def _order(graph: NetworkGraph, network: fbd.FbdNetwork, report: Report) -> list
 
 
 _NONE: dict[str, Source] = {}  # no inputs (read only)
+
+#: The elements of a CFC chart that have an execution order number (input nodes are read where used).
+EXECUTED = frozenset({"block", "output", "jump", "return"})
+
+
+def _explicit_order(graph: NetworkGraph, network: fbd.FbdNetwork) -> list[str]:
+    """CFC-02: the executed elements in ``order`` list order, then the unlisted ones in the data-flow order
+    ``graph.order`` holds; a wire from an element that runs later (or from the element itself) is feedback.
+    Unknown ids in the list were reported by ``_order``."""
+    nodes = graph.nodes
+    listed = [
+        node_id
+        for node_id in dict.fromkeys(network.order or [])
+        if node_id in nodes and nodes[node_id].type in EXECUTED
+    ]
+    chosen = set(listed)
+    executed = listed + [n for n in graph.order if nodes[n].type in EXECUTED and n not in chosen]
+    graph.feedback = set()
+    done: set[str] = set()
+    for node_id in executed:
+        for pin, source in graph.inputs.get(node_id, _NONE).items():
+            if nodes[source.node].type == "block" and source.node not in done:
+                graph.feedback.add((node_id, pin))
+        done.add(node_id)
+    fed = {source.node for sources in graph.inputs.values() for source in sources.values()}
+    unused = [n for n in graph.order if nodes[n].type == "input" and n not in fed]
+    position = {node_id: i for i, node_id in enumerate(graph.order)}
+    return _place_inputs(graph, executed + unused, position.__getitem__)
 
 
 def _priorities(network: fbd.FbdNetwork, nodes: dict[str, fbd.FbdNode], report: Report) -> dict[str, tuple]:

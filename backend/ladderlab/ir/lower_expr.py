@@ -32,9 +32,10 @@ from ..iec.values import article
 from ..st import ast
 from ..st import types as t
 from ..st.context_typing import FoldError, fold, literal_only
+from ..st.methods import is_self, is_super
 from ..st.printer import print_expression
 from ..st.rules import EnumValue
-from ..st.symbols import PouInfo, Symbol
+from ..st.symbols import PouInfo, PropertyRef, Symbol
 from .context import PouContext
 from .lower_types import LoweringError, byte_size, engine_value, ir_default
 from .nodes import AddressOf, Assign, Binary, Call, Const, Convert, Deref, Expr, FnCall, Index, Member, Unary, Var
@@ -51,6 +52,8 @@ _OPERATORS = {
     "**": "EXPT",
     "AND": "AND",
     "OR": "OR",
+    "AND_THEN": "AND_THEN",
+    "OR_ELSE": "OR_ELSE",
     "XOR": "XOR",
     "=": "EQ",
     "<>": "NE",
@@ -96,6 +99,8 @@ def _lower(node: ast.Expr, ctx: PouContext, expected: IrType | None) -> Expr:
         return Const(None, ctx.ir_type(ty))
     if is_part(node):
         return _bit(node, ctx)
+    if isinstance(getattr(node, "ref", None), PropertyRef):
+        return property_call(node, ctx, None)
     if isinstance(node, (ast.Name, ast.DirectAddr, ast.Member, ast.Index, ast.Deref)):
         return lower_access(node, ctx)
     if isinstance(node, ast.Unary):
@@ -107,10 +112,20 @@ def _lower(node: ast.Expr, ctx: PouContext, expected: IrType | None) -> Expr:
 
 def lower_to(node: ast.Expr, ctx: PouContext, target: IrType) -> Expr:
     """``node`` as a value of ``target``: untyped literals take it, accepted widenings get a ``Convert``."""
+    if isinstance(target, Reference) and isinstance(node.ty, (t.FbType, t.InterfaceType)):
+        return interface_value(node, ctx, target)
     expr = lower_expr(node, ctx, target)
     if isinstance(target, Reference):
         return _reference_to(expr, target, node)
     return convert(expr, target)
+
+
+def interface_value(node: ast.Expr, ctx: PouContext, target: Reference) -> Expr:
+    """An instance (a reference to it) or an interface variable's reference, stored in an interface variable (the
+    checker accepted it: st/interfaces.py)."""
+    if isinstance(node.ty, t.InterfaceType):
+        return lower_expr(node, ctx, target)
+    return AddressOf(lower_access(node, ctx), target, print_expression(node))
 
 
 def _reference_to(expr: Expr, target: Reference, node: ast.Expr) -> Expr:
@@ -230,7 +245,17 @@ def _program_instance(node: ast.Expr, program: PouInfo, ctx: PouContext) -> Var:
 
 
 def lower_access(node: ast.Expr, ctx: PouContext) -> Var:
-    """A variable access path: a declared variable, then ``[i]`` and ``.field`` / ``.PIN`` selectors."""
+    """A variable access path: a declared variable, then ``[i]`` and ``.field`` / ``.PIN`` selectors; a CODESYS
+    REFERENCE TO read through (the checker marked it ``deref``) gets the ``^`` it stands for."""
+    var = _access(node, ctx)
+    if getattr(node, "deref", None):
+        if not isinstance(var.type, Reference):
+            raise LoweringError(None)
+        return Var(var.scope, var.name, var.type.target, (*var.path, Deref()))
+    return var
+
+
+def _access(node: ast.Expr, ctx: PouContext) -> Var:
     if isinstance(node, (ast.Name, ast.DirectAddr)):
         ref = node.ref
         if isinstance(ref, Symbol):
@@ -243,11 +268,19 @@ def lower_access(node: ast.Expr, ctx: PouContext) -> Var:
         if isinstance(node, ast.DirectAddr):  # used without a declaration: its size's default type (ST-13)
             return ctx.direct(node.address, ctx.ir_type(node.ty))
         raise LoweringError(None)
+    if isinstance(getattr(node, "ref", None), PropertyRef):  # read with lower_expr, assigned by lower_st._assign
+        raise LoweringError(
+            f"the property {node.ref.name} is not a variable: read it or assign it with ':=' in ST (its GET and SET "
+            "run then), it cannot be passed or written by reference here",
+            node,
+        )
     if isinstance(node, ast.Member) and not is_part(node):
         base = lower_access(node.base, ctx)
         return Var(base.scope, base.name, _member_type(node, base.type, ctx), (*base.path, Member(node.name.upper())))
     if isinstance(node, ast.Index):
         return _index(node, ctx)
+    if is_self(node):  # THIS^ / SUPER^ (st/methods.py)
+        return ctx.this_var()
     if isinstance(node, ast.Deref):
         base = lower_access(node.base, ctx)
         if not isinstance(base.type, Reference):
@@ -357,13 +390,16 @@ def _binary(node: ast.Binary, ctx: PouContext) -> Expr:
     left_ty, right_ty = node.left.ty, node.right.ty
     if op == "EXPT":
         return _power(node, ctx)
+    if op in ("AND_THEN", "OR_ELSE"):
+        return _short_circuit(node, op, ctx)
     if t.category(left_ty) == "string" and op == "ADD":  # FUN-82: '+' concatenates
         return _function("CONCAT", [node.left, node.right], ctx, ctx.ir_type(node.ty))
     if op in ("ADD", "SUB", "MUL", "DIV") and {t.category(left_ty), t.category(right_ty)} & _TIME_CATEGORIES:
         mixed = _time_operator(node, op, ctx)
         if mixed is not None:
             return mixed
-    if isinstance(left_ty, (t.PointerType, t.NullType)) or isinstance(right_ty, (t.PointerType, t.NullType)):
+    references = (t.PointerType, t.NullType, t.InterfaceType)
+    if isinstance(left_ty, references) or isinstance(right_ty, references):
         return _reference_operation(node, op, ctx)
     if op in _COMPARISONS:  # the checker settled both operands to types whose lub is the one compared in
         operand = ctx.ir_type(t.lub(left_ty, right_ty) or t.concrete(t.common(left_ty, right_ty)[0]))
@@ -371,6 +407,18 @@ def _binary(node: ast.Binary, ctx: PouContext) -> Expr:
     else:
         operand = result = ctx.ir_type(node.ty)
     return Binary(op, lower_to(node.left, ctx, operand), lower_to(node.right, ctx, operand), result)  # type: ignore[arg-type]
+
+
+def _short_circuit(node: ast.Binary, op: str, ctx: PouContext) -> Expr:
+    """AND_THEN / OR_ELSE: the right operand may not run, so nothing of it is evaluated ahead of the statement
+    (a call with EN/ENO there is IR-EN-CALL, as in a WHILE condition)."""
+    left = lower_to(node.left, ctx, BOOL)
+    saved, ctx.lifts = ctx.lifts, None
+    try:
+        right = lower_to(node.right, ctx, BOOL)
+    finally:
+        ctx.lifts = saved
+    return Binary(op, left, right, BOOL)  # type: ignore[arg-type]  # op is AND_THEN or OR_ELSE
 
 
 def _reference_operation(node: ast.Binary, op: str, ctx: PouContext) -> Expr:
@@ -381,9 +429,9 @@ def _reference_operation(node: ast.Binary, op: str, ctx: PouContext) -> Expr:
             POINTER_ARITHMETIC if op in ("ADD", "SUB") else f"references cannot be compared by '{node.op}'", node
         )
     left, right = lower_expr(node.left, ctx), lower_expr(node.right, ctx)
-    if isinstance(left, Const) and left.value is None:  # NULL takes the other reference's type
+    if isinstance(left, Const) and left.value in (None, 0):  # NULL (an interface's 0) takes the other's type
         left = Const(None, right.type)
-    if isinstance(right, Const) and right.value is None:
+    if isinstance(right, Const) and right.value in (None, 0):
         right = Const(None, left.type)
     return Binary(op, left, right, BOOL)  # type: ignore[arg-type]  # EQ/NE
 
@@ -443,6 +491,9 @@ def _call(node: ast.Call, ctx: PouContext) -> Expr:
         return _sizeof(node, ctx, ctx.ir_type(node.ty))
     if node.ref is None and isinstance(node.callee, ast.Name) and node.callee.name.upper() in ("ADR", "REF"):
         return _address_of(node, ctx)
+    if node.ref is None and isinstance(node.callee, ast.Name) and node.callee.name.upper() == "__ISVALIDREF":
+        reference = lower_access(node.args[0].value, ctx)
+        return Binary("NE", reference, Const(None, reference.type), BOOL)
     refuse_unsupported_call(node)
     ref = node.ref
     en, eno = _en_eno(node)
@@ -460,13 +511,25 @@ def _call(node: ast.Call, ctx: PouContext) -> Expr:
     return _lift(node, call, before, ctx)
 
 
+def lower_input(value: ast.Expr, ctx: PouContext, ty: IrType) -> Expr:
+    """An input's value; a REFERENCE TO input given a variable (the checker bound it, CODESYS) gets a reference."""
+    references = (t.PointerType, t.NullType, t.InterfaceType, t.FbType)  # an interface input: lower_to (interfaces)
+    if isinstance(ty, Reference) and not isinstance(value.ty, references):
+        return address_of(value, ty, f"REF({print_expression(value)})", ctx)
+    return lower_to(value, ctx, ty)
+
+
+def address_of(value: ast.Expr, ty: IrType, text: str, ctx: PouContext) -> AddressOf:
+    """A reference of type ``ty`` to the variable ``value`` (the checker refused temporaries); ``text`` shows it."""
+    return AddressOf(lower_access(value, ctx), ty, text)
+
+
 def _address_of(node: ast.Call, ctx: PouContext) -> AddressOf:
     """``REF(x)`` / ``ADR(x)``: a reference to the variable ``x`` (the checker refused temporaries)."""
     if len(node.args) != 1:
         raise LoweringError(None)
-    var = lower_access(node.args[0].value, ctx)
-    ty = ctx.ir_type(node.ty)
-    return AddressOf(var, ty, f"{node.callee.name.upper()}({print_expression(node.args[0].value)})")  # type: ignore[union-attr]  # a Name
+    text = f"{node.callee.name.upper()}({print_expression(node.args[0].value)})"  # type: ignore[union-attr]  # a Name
+    return address_of(node.args[0].value, ctx.ir_type(node.ty), text, ctx)
 
 
 def _sizeof(node: ast.Call, ctx: PouContext, target: IrType) -> Const:
@@ -624,17 +687,44 @@ def _generic_type(function: stdlib.StdFunction, node: ast.Call, bound: dict[int,
     return ctx.ir_type(t.concrete(shared))
 
 
+def property_call(node: ast.Name | ast.Member, ctx: PouContext, value: ast.Expr | None) -> Call:
+    """Reading a PROPERTY (``value`` None: its GET) or writing it (its SET with ``value``): a call of the accessor
+    on the instance (``inst.P``; ``P`` in its FB's own code: THIS), chosen by the instance's FB."""
+    prop: PropertyRef = node.ref
+    accessor = prop.setter if value is not None else prop.getter
+    if accessor is None:
+        raise LoweringError(
+            f"the property {prop.name} has no GET: it can be assigned, not read", node, code="ST-READONLY"
+        )
+    this = lower_access(node.base, ctx) if isinstance(node, ast.Member) else ctx.this_var()
+    if isinstance(this.type, Reference):
+        this = Var(this.scope, this.name, this.type.target, (*this.path, Deref()))
+    ty = ctx.types_for(accessor.name).type_of(prop.type)
+    args = (lower_to(value, ctx, ty),) if value is not None else ()
+    ctx.calls += 1
+    result = ty if value is None else BOOL
+    virtual = not (isinstance(node, ast.Member) and is_super(node.base))  # SUPER^.P: the base's accessor
+    return Call(accessor.name.upper(), args, (ty,) if value is not None else (), result, True, (this,), virtual)
+
+
 def user_call(node: ast.Call, ctx: PouContext) -> Call:
     """A user function: inputs in VAR_INPUT order (omitted ones as their initial values), then the in-outs."""
     pou: PouInfo = node.ref
     callee = ctx.types_for(pou.name)
     parameters = pou.parameters("VAR_INPUT", "VAR_IN_OUT")
     given: dict[str, ast.Expr] = {}
+    in_outs: list[Var] = []
+    if pou.method is not None:  # the instance it is called on; a bare ``M()``: the caller's own
+        instance = node.callee.base if isinstance(node.callee, ast.Member) else None
+        this = lower_access(instance, ctx) if instance is not None else ctx.this_var()
+        if isinstance(this.type, Reference):  # an interface variable: the instance it refers to
+            this = Var(this.scope, this.name, this.type.target, (*this.path, Deref()))
+        in_outs.append(this)
     for position, arg in enumerate(_arguments(node)):
         if arg.name is None and position >= len(parameters):
             raise LoweringError(None)
         given[(arg.name or parameters[position].name).upper()] = arg.value
-    args, types, in_outs = [], [], []
+    args, types = [], []
     for symbol in parameters:
         ty = callee.type_of(symbol.type, symbol.type_spec)
         value = given.get(symbol.name.upper())
@@ -644,8 +734,13 @@ def user_call(node: ast.Call, ctx: PouContext) -> Call:
             in_outs.append(lower_access(value, ctx))
             continue
         initial = callee.initial(symbol.type, symbol.type_spec, symbol.init)
-        args.append(lower_to(value, ctx, ty) if value is not None else Const(initial, ty))
+        args.append(lower_input(value, ctx, ty) if value is not None else Const(initial, ty))
         types.append(ty)
     ctx.calls += 1
-    result = callee.type_of(pou.return_type, pou.return_spec)
-    return Call(pou.name.upper(), tuple(args), tuple(types), result, True, tuple(in_outs))
+    if pou.method is None:
+        result = callee.type_of(pou.return_type, pou.return_spec)
+        return Call(pou.name.upper(), tuple(args), tuple(types), result, True, tuple(in_outs))
+    # a method without a value returns an unused BOOL (lower_project.lower_pou); SUPER^.M() runs the base's M
+    result = callee.type_of(pou.return_type, pou.return_spec) if pou.return_type is not None else BOOL
+    virtual = not is_super(node.callee.base) if isinstance(node.callee, ast.Member) else True
+    return Call(pou.name.upper(), tuple(args), tuple(types), result, True, tuple(in_outs), virtual)

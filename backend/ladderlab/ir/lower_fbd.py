@@ -19,6 +19,7 @@ from dataclasses import dataclass
 
 from ..iec.spelling import did_you_mean
 from ..model import fbd
+from ..model.cfc import CfcBody
 from ..model.places import NetworkNames, Places
 from ..model.project import Pou as ModelPou
 from ..st import ast
@@ -67,9 +68,28 @@ def lower_fbd_body(pou: ModelPou, ctx: PouContext) -> list[Block]:
     return [_Network(ctx, ops, labels, network).lower(analyses) for network in body.networks]
 
 
-def evaluation_order(network: fbd.FbdNetwork) -> list[str]:
-    """The node ids of ``network`` in the order they run, for the editor's execution-order badges."""
-    return analyse(network, lambda *_args, **_kwargs: None).order
+def lower_cfc_body(pou: ModelPou, ctx: PouContext) -> list[Block]:
+    """A CFC chart as one IR block: its elements in their execution order numbers' order (CFC-02,
+    fbd_order), otherwise lowered exactly as an FBD network."""
+    body: CfcBody = pou.body  # type: ignore[assignment]  # language "cfc": the model made the body a CfcBody
+    ctx.places = Places(body)
+    check_unique_ids(((1, body.chart.id, node.id) for node in body.chart.nodes), ctx.report, "FBD")
+    for node in body.chart.nodes:
+        if isinstance(node, fbd.FbdJump):
+            ctx.report(
+                "CFC-JUMP",
+                f"jump to '{node.target}': a CFC chart has no networks or labels to jump to; use a conditional "
+                "return, or EN inputs to skip blocks",
+                network=body.chart.id,
+                element=node.id,
+            )
+    return [_Network(ctx, Operands(ctx, "FBD"), {}, body.chart, explicit=True).lower(Analyses())]
+
+
+def evaluation_order(network: fbd.FbdNetwork, explicit: bool = False) -> list[str]:
+    """The node ids of ``network`` in the order they run, for the editor's execution-order badges;
+    ``explicit``: a CFC chart (its ``order`` list decides, CFC-02)."""
+    return analyse(network, lambda *_args, **_kwargs: None, explicit).order
 
 
 @dataclass
@@ -87,8 +107,11 @@ class _Chained:
 
 
 class _Network:
-    def __init__(self, ctx: PouContext, ops: Operands, labels: dict[str, str], network: fbd.FbdNetwork):
+    def __init__(
+        self, ctx: PouContext, ops: Operands, labels: dict[str, str], network: fbd.FbdNetwork, explicit: bool = False
+    ):
         self.ctx, self.ops, self.labels, self.network = ctx, ops, labels, network
+        self.explicit = explicit  # a CFC chart: its order list is the order (CFC-02)
         self.out: list[Stmt | list[Stmt]] = []  # a block's statements are a list in its place (_Chained)
         self.chained: dict[str, _Chained] = {}  # chained blocks waiting for the block they feed
         #: (producer id, PIN) -> what its consumers read; missing when the producer could not be lowered
@@ -104,7 +127,10 @@ class _Network:
 
     def lower(self, analyses: Analyses) -> Block:
         self.ops.new_network()
-        self.graph = graph = analyses.analyse(self.network, self.ctx.report)
+        if self.explicit:
+            self.graph = graph = analyse(self.network, self.ctx.report, explicit=True)
+        else:
+            self.graph = graph = analyses.analyse(self.network, self.ctx.report)
         for consumer, sources in graph.inputs.items():  # once per network, not a scan of all wires per block
             for source in sources.values():
                 self.used_pins.setdefault(source.node, set()).add(source.pin)
@@ -174,10 +200,11 @@ class _Network:
                 and (fed.node, fed.pin) == (source.node, source.pin)
             ):
                 return target.var
+        how = "runs against the execution order" if self.explicit else "closes a loop"
         self.ops.report(
             self.at(node, pin),
             "FBD-FEEDBACK",
-            f"the wire {wire_text(source.via, self.names)} closes a loop: it carries "
+            f"the wire {wire_text(source.via, self.names)} {how}: it carries "
             f"{self.names(source.node, source.pin)} of the previous scan, and a function's result has none before its "
             f"first call; also connect {self.names(source.node, source.pin)} to an output variable, whose declared "
             "initial value then starts the loop",
@@ -222,19 +249,21 @@ class _Network:
             return
         what = "the output"
         if node.mode == "normal":
-            target, target_type = self.ops.target(node.var, at.on(None), what)
+            target, target_type = self.ops.target(node.var, at.on(None), what, parts=True)
             if target is None:
                 return
             expr, ty = self.expr(value, at, what, target_type)
             if expr is None or (not isinstance(value, str) and not self.ops.assignable(target_type, ty, at, what)):
                 return
-            expr = convert(expr, target.type)
+            expr = convert(expr, target.type if isinstance(target, Var) else self.ctx.ir_type(target_type))
+            store = self.ops.store(target)
         else:
-            target = self.ops.bool_target(node.var, at.on(None), what)
+            bool_store = self.ops.bool_target(node.var, at.on(None), what)
             expr = self.bool_value(value, at, what)
-            if target is None or expr is None:
+            if bool_store is None or expr is None:
                 return
-        writes = coil(node.mode, target, expr, lambda: self.ctx.hidden(f"{node.id}_M", BOOL), origin)
+            store = bool_store
+        writes = coil(node.mode, store, expr, lambda: self.ctx.hidden(f"{node.id}_M", BOOL), origin)
         writes.append(Probe(node.id, expr, origin))
         source = self.graph.inputs[node.id]["IN"]
         enable = self.enables.get(source.node, TRUE) if source.pin != "ENO" else TRUE
@@ -251,7 +280,7 @@ class _Network:
         if condition is None:
             return
         self.out.append(Probe(node.id, condition, origin))
-        if isinstance(node, fbd.FbdJump):
+        if isinstance(node, fbd.FbdJump) and not self.explicit:  # a chart's jumps are reported (CFC-JUMP)
             label = check_jump_target(
                 node.target, self.labels, self.ctx.report, "FBD", network=self.network.id, element=node.id
             )

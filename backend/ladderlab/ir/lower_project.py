@@ -29,7 +29,7 @@ from ..st.symbols import CheckResult, PouInfo, Symbol
 from .build_limits import data_too_large, source_too_large
 from .context import PouContext
 from .lower_configuration import lower_configuration
-from .lower_fbd import lower_fbd_body
+from .lower_fbd import lower_cfc_body, lower_fbd_body
 from .lower_il import lower_il_body
 from .lower_ld import lower_ld_body
 from .lower_sfc import lower_sfc_body
@@ -43,6 +43,7 @@ LOWER_BODY: dict[str, Callable[[ModelPou, PouContext], list[Block]]] = {
     "st": lower_st_body,
     "ld": lower_ld_body,
     "fbd": lower_fbd_body,
+    "cfc": lower_cfc_body,
     "sfc": lower_sfc_body,
     "il": lower_il_body,
 }
@@ -76,13 +77,38 @@ def _lower_project(project: Project, checked: CheckResult | None) -> LoweringRes
         info = checked.pou(pou.name)
         if info is not None and info.name == pou.name:  # not a duplicate (reported by the checker)
             pous[pou.name.upper()] = lower_pou(pou, info, checked, diagnostics, image)
+            for method in info.methods.values():
+                pous[method.name.upper()] = lower_pou(None, method, checked, diagnostics, image)
+    for interface in checked.interfaces.values():  # prototypes: what a call through an interface passes
+        for prototype in interface.methods.values():
+            pous[prototype.name.upper()] = lower_pou(None, prototype, checked, diagnostics, image)
     instances, tasks, access = lower_configuration(checked, diagnostics, image)
     diagrams = [(pou.name, pou.body) for pou in project.pous if not isinstance(pou.body, str)]
     program = Program(pous, globals_ + list(image.values()), tasks, instances, access, ProjectPlaces(diagrams))
+    program.dispatch = dispatch_tables(checked)
     too_much = data_too_large(program)
     if too_much is not None:
         diagnostics.append(too_much)
     return LoweringResult(None if has_errors(diagnostics) else program, diagnostics)
+
+
+def dispatch_tables(checked: CheckResult) -> dict[str, dict[str, str]]:
+    """For each method that a derived function block overrides, and each INTERFACE's: which method each FB
+    descending from its own (implementing the interface) runs for that name (dynamic dispatch, st/inheritance.py,
+    st/interfaces.py). Methods nobody overrides are called directly."""
+    blocks = [info for info in checked.pous.values() if info.kind == "FUNCTION_BLOCK"]
+    tables: dict[str, dict[str, str]] = {}
+    for owner in [*blocks, *checked.interfaces.values()]:
+        for method in owner.methods.values():
+            table = {}
+            for fb in blocks:
+                if fb.derives_from(owner) or fb.implements(owner):
+                    found = fb.find_method(method.method.key)
+                    if found is not None:
+                        table[fb.name.upper()] = found.name.upper()
+            if owner.kind == "INTERFACE" or any(name != method.name.upper() for name in table.values()):
+                tables[method.name.upper()] = table
+    return tables
 
 
 def lower_globals(checked: CheckResult, diagnostics: list[Diagnostic]) -> list[Slot]:
@@ -92,14 +118,15 @@ def lower_globals(checked: CheckResult, diagnostics: list[Diagnostic]) -> list[S
 
 
 def lower_pou(
-    pou: ModelPou,
+    pou: ModelPou | None,
     info: PouInfo,
     checked: CheckResult,
     diagnostics: list[Diagnostic],
     image: dict[str, Slot] | None = None,
 ) -> Pou:
     """One POU: a slot per declared variable (not VAR_EXTERNAL), the function result, the body blocks.
-    ``image`` collects the addresses the body uses without a declaration (PouContext.direct)."""
+    ``image`` collects the addresses the body uses without a declaration (PouContext.direct). ``pou`` None: a
+    METHOD (``info.method``), lowered as a function of ST whose in-out ``THIS`` is its instance."""
     ctx = PouContext(checked, info, diagnostics, image)
     for symbol in info.symbols.values():
         if symbol.var_class != "VAR_EXTERNAL":
@@ -114,20 +141,25 @@ def lower_pou(
             ctx.add_slot(Slot(ctx.name, "VAR_OUTPUT", return_type, initial))
         except LoweringError as error:
             ctx.report_error(error, file=f"{info.name}/return_type")
+    elif info.method is not None:  # a method without a value: the engine's functions all return one, never read
+        return_type = BOOL
+        ctx.add_slot(Slot(ctx.name, "VAR_OUTPUT", BOOL, False, hidden=True))
     preamble = edge_preamble(ctx)
-    lower = LOWER_BODY.get(pou.language)
+    language, plant = (pou.language, pou.kind == "plant") if pou is not None else ("st", False)
+    lower = LOWER_BODY.get(language)
     blocks: list[Block] = []
     if lower is None:
-        ctx.report("IR-UNSUPPORTED", f"{pou.language.upper()} POUs cannot be run yet")
+        ctx.report("IR-UNSUPPORTED", f"{language.upper()} POUs cannot be run yet")
     else:
         blocks = lower(pou, ctx)
     if preamble:
-        if pou.language == "st" and blocks:
+        if language == "st" and blocks:
             blocks[0].statements[:0] = preamble
         else:
             blocks.insert(0, Block(preamble, Origin(ctx.name)))
     kind = _KIND[info.kind]
-    return Pou(ctx.name, kind, ctx.slots, blocks, return_type, pou.language, pou.kind == "plant")  # type: ignore[arg-type]
+    step_lines = info.il_step_lines if language == "il" else None
+    return Pou(ctx.name, kind, ctx.slots, blocks, return_type, language, plant, step_lines=step_lines)  # type: ignore[arg-type]
 
 
 def _slot(symbol: Symbol, ctx: PouContext, file: str) -> Slot | None:

@@ -14,16 +14,20 @@ from ..iec import stdlib
 from ..model.project import Pou as ModelPou
 from ..st import ast
 from ..st import types as t
-from ..st.symbols import PouInfo, Symbol
+from ..st.printer import print_expression
+from ..st.symbols import PouInfo, PropertyRef, Symbol
 from .context import PouContext
 from .lower_expr import (
+    address_of,
     assign_part,
     convert,
     is_part,
     lower_access,
     lower_en_eno,
     lower_expr,
+    lower_input,
     lower_to,
+    property_call,
     refuse_unsupported_call,
     std_call,
     user_call,
@@ -32,11 +36,13 @@ from .lower_expr import (
 from .lower_types import LoweringError
 from .nodes import (
     Assign,
+    Attempt,
     Block,
     Call,
     Case,
     CaseLabel,
     Const,
+    Continue,
     Exit,
     Expr,
     FbCall,
@@ -101,12 +107,27 @@ def _assign(statement: ast.Assign, ctx: PouContext) -> list[Stmt]:
     target, value = statement.target, statement.value
     if is_part(target):
         return [_assign_bit(target, value, ctx, origin)]
+    if isinstance(getattr(target, "ref", None), PropertyRef):  # its SET
+        return [FnCall(property_call(target, ctx, value), None, origin)]
     if isinstance(value, ast.Call) and _has_en_eno(value) and _is_function(value.ref):
         call = _function_call(value, ctx)
         en, eno, after = lower_en_eno(value, ctx)
         return [FnCall(call, lower_access(target, ctx), origin, en, eno), *after]
     lowered = lower_to(value, ctx, ctx.ir_type(target.ty))  # the value is computed before the target is stored
+    if statement.attempt:  # ?=: NULL unless the instance's FB implements the target's interface
+        blocks = ctx.checked.pous.values()
+        implementing = tuple(
+            fb.name.upper() for fb in blocks if fb.kind == "FUNCTION_BLOCK" and fb.implements(target.ty.info)
+        )
+        lowered = Attempt(lowered, implementing, lowered.type)
     return [Assign(lower_access(target, ctx), lowered, origin)]
+
+
+def _ref_assign(statement: ast.RefAssign, ctx: PouContext) -> list[Stmt]:
+    """``r REF= x``: the reference itself (not read through) gets a reference to x, as ``r := REF(x)`` would."""
+    target = lower_access(statement.target, ctx)
+    value = address_of(statement.value, target.type, f"REF({print_expression(statement.value)})", ctx)
+    return [Assign(target, value, ctx.origin(statement))]
 
 
 def _assign_bit(target: ast.Member, value: ast.Expr, ctx: PouContext, origin: Origin) -> Assign:
@@ -165,7 +186,7 @@ def lower_fb_call(call: ast.Call, ctx: PouContext, origin: Origin) -> list[Stmt]
         if kind == "VAR_IN_OUT":
             inputs.append((name, lower_access(arg.value, ctx)))
         elif not arg.output:
-            inputs.append((name, lower_to(arg.value, ctx, pin_type)))
+            inputs.append((name, lower_input(arg.value, ctx, pin_type)))
         else:
             target = lower_access(arg.value, ctx)
             if not arg.negated and value_type(target.type) == value_type(pin_type):
@@ -268,6 +289,10 @@ def _exit(statement: ast.Exit, ctx: PouContext) -> list[Stmt]:
     return [Exit(ctx.origin(statement))]
 
 
+def _continue(statement: ast.Continue, ctx: PouContext) -> list[Stmt]:
+    return [Continue(ctx.origin(statement))]
+
+
 def _return(statement: ast.Return, ctx: PouContext) -> list[Stmt]:
     return [Return(ctx.origin(statement))]
 
@@ -278,6 +303,7 @@ def _empty(statement: ast.Empty, ctx: PouContext) -> list[Stmt]:
 
 _LOWER = {
     ast.Assign: _assign,
+    ast.RefAssign: _ref_assign,
     ast.CallStmt: lower_call_statement,
     ast.If: _if,
     ast.Case: _case,
@@ -285,6 +311,7 @@ _LOWER = {
     ast.While: _while,
     ast.Repeat: _repeat,
     ast.Exit: _exit,
+    ast.Continue: _continue,
     ast.Return: _return,
     ast.Empty: _empty,
 }

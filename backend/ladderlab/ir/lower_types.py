@@ -115,6 +115,8 @@ class TypeLowering:
             return self._struct(ty, spec)
         if isinstance(ty, t.FbType):
             return FbInstance(ty.name.upper())
+        if isinstance(ty, t.InterfaceType):  # a reference to the instance of an FB implementing it (or NULL)
+            return Reference(FbInstance(ty.name.upper()))
         if isinstance(ty, t.PointerType):
             target_spec = spec.target if isinstance(spec, ast.PointerType) else None
             return Reference(self.type_of(ty.target, target_spec))

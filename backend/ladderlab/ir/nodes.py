@@ -71,6 +71,8 @@ class Deref:
 
 Selector = Index | Member | Deref
 Scope = Literal["local", "global"]
+#: The root of ``THIS^`` in a function block's body: the instance itself (no slot; a name no identifier can be)
+SELF = "__SELF"
 
 
 @dataclass(frozen=True)
@@ -102,7 +104,25 @@ class Unary:
 class Binary:
     """Arithmetic, comparison or boolean operator on operands of one type (after conversions)."""
 
-    op: Literal["ADD", "SUB", "MUL", "DIV", "MOD", "EXPT", "AND", "OR", "XOR", "EQ", "NE", "LT", "LE", "GT", "GE"]
+    op: Literal[
+        "ADD",
+        "SUB",
+        "MUL",
+        "DIV",
+        "MOD",
+        "EXPT",
+        "AND",
+        "OR",
+        "XOR",
+        "AND_THEN",
+        "OR_ELSE",
+        "EQ",
+        "NE",
+        "LT",
+        "LE",
+        "GT",
+        "GE",
+    ]
     left: Expr
     right: Expr
     type: IrType
@@ -110,7 +130,10 @@ class Binary:
 
 @dataclass(frozen=True)
 class Call:
-    """A function call: a standard function (by name, specialised to ``arg_types``) or a user function."""
+    """A function call: a standard function (by name, specialised to ``arg_types``) or a user function.
+
+    ``virtual``: a METHOD ``<FB>.<M>`` whose implementation is chosen when it runs, by the FB of the instance it is
+    called on (its first in-out, ``THIS``): ``Program.dispatch[function]`` maps each FB to the function it runs."""
 
     function: str
     args: tuple[Expr, ...]
@@ -118,6 +141,7 @@ class Call:
     type: IrType
     user: bool = False
     in_outs: tuple[Var, ...] = ()
+    virtual: bool = False
 
 
 @dataclass(frozen=True)
@@ -137,7 +161,17 @@ class AddressOf:
     text: str
 
 
-Expr = Const | Var | Unary | Binary | Call | Convert | AddressOf
+@dataclass(frozen=True)
+class Attempt:
+    """``?=``'s value: the reference ``value`` (to an FB instance) when the instance's FB is one of ``blocks`` (those
+    implementing the target's interface), else NULL (IEC 61131-3 ed. 3, 6.6.6.7)."""
+
+    value: Expr
+    blocks: tuple[str, ...]
+    type: IrType
+
+
+Expr = Const | Var | Unary | Binary | Call | Convert | AddressOf | Attempt
 
 # --------------------------------------------------------------------------- statements
 
@@ -193,6 +227,13 @@ class Repeat:
 
 @dataclass
 class Exit:
+    origin: Origin
+
+
+@dataclass
+class Continue:
+    """CONTINUE: on to the next iteration of the innermost loop (a REPEAT's UNTIL is tested first)."""
+
     origin: Origin
 
 
@@ -263,7 +304,7 @@ class Block:
     label: str | None = None
 
 
-Stmt = Assign | If | Case | For | While | Repeat | Exit | Return | FbCall | FnCall | Jump | Probe
+Stmt = Assign | If | Case | For | While | Repeat | Exit | Continue | Return | FbCall | FnCall | Jump | Probe
 
 # --------------------------------------------------------------------------- POUs
 
@@ -302,8 +343,10 @@ class Pou:
     slots: list[Slot]
     blocks: list[Block]
     return_type: IrType | None = None
-    language: Literal["st", "ld", "fbd", "il", "sfc"] = "st"
+    language: Literal["st", "ld", "fbd", "cfc", "il", "sfc"] = "st"
     plant: bool = False  # a program that models the process: run by the plant task, never called
+    #: IL: the body lines a single step stops at - loads, jumps, calls (ON-04); None: every statement's line.
+    step_lines: frozenset[int] | None = None
     #: False: FB calls in the body see the time the POU was called with (a scan's clock, frozen in the scan).
     #: True: each FB call reads the engine's clock as it is then - a test's body, whose ADVANCE_TIME and
     #: RUN_SCANS move the clock between its statements (docs/testing.md).
@@ -355,6 +398,8 @@ class Program:
     access: dict[str, tuple[str, bool]] = field(default_factory=dict)
     #: the LD/FBD elements' names as the user sees them, for runtime faults (model/places.py)
     places: ProjectPlaces | None = field(default=None, repr=False, compare=False)
+    #: method ``<FB>.<M>`` -> {function block -> the method it runs for ``M``}: for calls with ``virtual`` set
+    dispatch: dict[str, dict[str, str]] = field(default_factory=dict)
 
     def program_instances(self) -> list[ProgramInstance]:
         """The instances to create: ``instances``, or one per PROGRAM named after it."""

@@ -54,17 +54,20 @@ def edge(rising: bool, value: Expr, memory: Var, origin: Origin) -> tuple[Expr, 
     return detected, Assign(memory, value, origin)
 
 
-def coil(mode: str, target: Var, power: Expr, memory: Callable[[], Var], origin: Origin) -> list[Stmt]:
-    """The write of an LD coil or FBD output node in ``mode`` (normal, negated, set, reset, p, n).
+def coil(
+    mode: str, store: Callable[[Expr, Origin], Stmt], power: Expr, memory: Callable[[], Var], origin: Origin
+) -> list[Stmt]:
+    """The write of an LD coil or FBD output node in ``mode`` (normal, negated, set, reset, p, n); ``store``
+    makes the assignment (a variable, or a bit of one).
 
     ``memory`` makes the hidden slot an edge coil needs (GR-24, GR-25).
     """
     if mode == "normal":
-        return [Assign(target, power, origin)]
+        return [store(power, origin)]
     if mode == "negated":
-        return [Assign(target, not_(power), origin)]
+        return [store(not_(power), origin)]
     if mode in ("set", "reset"):  # LD-06: IF power THEN x := TRUE / FALSE
-        write = Assign(target, Const(mode == "set", BOOL), origin)
+        write = store(Const(mode == "set", BOOL), origin)
         return [write] if power == TRUE else [If([(power, [write])], [], origin)]
     detected, remember = edge(mode == "p", power, memory(), origin)
-    return [Assign(target, detected, origin), remember]
+    return [store(detected, origin), remember]

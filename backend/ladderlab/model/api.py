@@ -289,6 +289,13 @@ class FbdOrder(BaseModel):
     order: list[str] = Field(description="Blocks, input, output, jump and return nodes; connectors have no place.")
 
 
+class LdAsIl(BaseModel):
+    """``POST /api/ld/il``: an LD network as IL ("View as IL", read-only), or why it has no IL equivalent."""
+
+    text: str | None = Field(description="The IL text; null when the network has no plain IL equivalent.")
+    reason: str | None = Field(default=None, description="Why there is no IL (the element and what it needs).")
+
+
 class TestCaseInfo(BaseModel):
     name: str
     line: int = Field(description="Line of its TEST keyword in the test file.")

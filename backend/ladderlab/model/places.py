@@ -2,13 +2,14 @@
 
 Diagnostics keep the machine location (network, element and pin ids) for click-to-reveal; people read
 ``network 2 "Motor timer", TON RunTimer.PT``: the network by its number and label, an element by what
-is written on it (operand, instance, call) and a box's pin after a dot - never an internal id
+is written on it (operand, instance, call; a CFC chart is "chart") and a box's pin after a dot - never an internal id
 (issue 22, "Messages in the user's words").
 """
 
 from __future__ import annotations
 
 from . import fbd, ld
+from .cfc import CfcBody
 
 _COIL_WORDS = {"normal": "", "negated": "negated ", "set": "set ", "reset": "reset ", "p": "P ", "n": "N "}
 _CONTACT_WORDS = {"no": "", "nc": "NC ", "p": "P ", "n": "N "}
@@ -130,7 +131,7 @@ class Places:
             self._networks = {}
             networks: list[ld.LdNetwork | fbd.FbdNetwork] = list(self.body.networks)
             for number, network in enumerate(networks, 1):
-                name = network_name(number, network.label)
+                name = "chart" if isinstance(self.body, CfcBody) else network_name(number, network.label)
                 if network.id in self._networks:  # a file edited by hand: say which networks share the id
                     name = f"{self._networks[network.id][0]} or {name} (the same id '{network.id}')"
                 self._networks[network.id] = (name, NetworkNames(network))

@@ -6,6 +6,7 @@ from typing import Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validator, model_validator
 
+from .cfc import CfcBody
 from .fbd import FbdBody
 from .hmi import Panel
 from .ld import LdBody
@@ -17,12 +18,17 @@ PROJECT_FORMAT: ProjectFormat = "ladderlab/1"
 #: ``plant``: a program that models the process (reads the control program's outputs, writes its inputs); it
 #: runs in the plant task before the control tasks of every scan and cannot be called from control code.
 PouKind = Literal["program", "function_block", "function", "plant"]
-Language = Literal["st", "ld", "fbd", "il", "sfc"]
+Language = Literal["st", "ld", "fbd", "cfc", "il", "sfc"]
 
 #: Languages whose body is text (ST statements, IL instructions).
 TEXT_LANGUAGES = frozenset({"st", "il"})
 #: The body model of each graphical language (an ST POU's body is its text).
-DIAGRAM_BODY: dict[str, type[LdBody] | type[FbdBody] | type[SfcBody]] = {"ld": LdBody, "fbd": FbdBody, "sfc": SfcBody}
+DIAGRAM_BODY: dict[str, type[LdBody] | type[FbdBody] | type[SfcBody]] = {
+    "ld": LdBody,
+    "fbd": FbdBody,
+    "cfc": CfcBody,
+    "sfc": SfcBody,
+}
 
 
 def _strip_trailing_whitespace(value: Any) -> Any:
@@ -30,9 +36,55 @@ def _strip_trailing_whitespace(value: Any) -> Any:
     return value.rstrip() if isinstance(value, str) else value
 
 
+#: Who may call a method (IEC 61131-3 ed. 3, 6.6.5): PUBLIC anyone, PRIVATE the FB itself, PROTECTED the FB and
+#: the FBs derived from it, INTERNAL the same namespace (a LadderLab project is one namespace).
+MethodAccess = Literal["PUBLIC", "PRIVATE", "PROTECTED", "INTERNAL"]
+
+
+class Method(BaseModel):
+    """A METHOD of a FUNCTION_BLOCK (IEC 61131-3 ed. 3, CODESYS): its own variables and ST body; it works on the
+    variables of the instance it is called on (docs/st.md, object orientation)."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    name: str
+    access: MethodAccess = Field(default="PUBLIC", description="Who may call it; CODESYS's default is PUBLIC.")
+    final: bool = Field(default=False, description="FINAL: an FB derived from this one cannot override it.")
+    abstract: bool = Field(default=False, description="ABSTRACT: no body; a derived FB must implement it.")
+    return_type: str | None = Field(default=None, description="The result type; None: a method without a value.")
+    declarations: str = Field(default="", description="ST text of its VAR...END_VAR blocks, as typed.")
+    body: str = Field(default="", description="ST statements.")
+
+    _normalise_texts = field_validator("declarations", "body", mode="before")(_strip_trailing_whitespace)
+
+
+class Accessor(BaseModel):
+    """A PROPERTY's GET or SET: its own variables and ST body (GET assigns the property's name, SET reads it)."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    declarations: str = Field(default="", description="ST text of its VAR...END_VAR blocks, as typed.")
+    body: str = Field(default="", description="ST statements.")
+
+    _normalise_texts = field_validator("declarations", "body", mode="before")(_strip_trailing_whitespace)
+
+
+class Property(BaseModel):
+    """A PROPERTY of a FUNCTION_BLOCK (CODESYS, IEC 61131-3 ed. 3 draft): read as ``inst.P`` through its GET,
+    written as ``inst.P := v`` through its SET; a missing accessor makes it write-only or read-only."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    name: str
+    type: str = Field(description="Its type, as written.")
+    access: MethodAccess = Field(default="PUBLIC", description="Who may read and write it.")
+    get: Accessor | None = None
+    set: Accessor | None = None
+
+
 class Pou(BaseModel):
-    """A program organisation unit. ``body`` is ST or IL text, an ``LdBody``, an ``FbdBody`` or an ``SfcBody`` per
-    ``language``."""
+    """A program organisation unit. ``body`` is ST or IL text, an ``LdBody``, an ``FbdBody``, a ``CfcBody`` (one
+    FBD chart) or an ``SfcBody`` per ``language``."""
 
     model_config = ConfigDict(extra="forbid")
 
@@ -41,7 +93,15 @@ class Pou(BaseModel):
     language: Language
     return_type: str | None = Field(default=None, description="Functions only: the result type.")
     declarations: str = Field(default="", description="ST text of the VAR...END_VAR blocks, as typed.")
-    body: str | LdBody | FbdBody | SfcBody = ""
+    body: str | LdBody | CfcBody | FbdBody | SfcBody = ""
+    methods: list[Method] = Field(default_factory=list, description="Function blocks only: their METHODs.")
+    properties: list[Property] = Field(default_factory=list, description="Function blocks only: their PROPERTYs.")
+    extends: str | None = Field(default=None, description="Function blocks only: the function block it EXTENDS.")
+    implements: list[str] = Field(
+        default_factory=list, description="Function blocks only: the INTERFACEs (declared in the types) it IMPLEMENTS."
+    )
+    abstract: bool = Field(default=False, description="Function blocks only: ABSTRACT, it cannot be instantiated.")
+    final: bool = Field(default=False, description="Function blocks only: FINAL, no function block extends it.")
 
     _normalise_texts = field_validator("declarations", "body", mode="before")(_strip_trailing_whitespace)
 
@@ -57,8 +117,10 @@ class Pou(BaseModel):
         if not isinstance(language, str) or language not in DIAGRAM_BODY:
             return handler(value)
         expected = DIAGRAM_BODY[language]
-        if isinstance(value, expected):
+        if type(value) is expected:
             return value
+        if isinstance(value, FbdBody) and expected in (FbdBody, CfcBody):  # a chart made FBD, or FBD made a chart
+            return expected.model_validate(value.model_dump(by_alias=True))
         if not isinstance(value, dict):
             shape = "'chart'" if language == "sfc" else "'networks'"
             raise ValueError(f"an {language.upper()} POU's body must be an object with {shape}")

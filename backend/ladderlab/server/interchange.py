@@ -1,4 +1,5 @@
-"""Export (ST text, PLCopen XML) and PLCopen import over HTTP: thin routes over ``export/``.
+"""Export (ST text, PLCopen XML), PLCopen import and an LD network as IL over HTTP: thin routes over
+``interchange/``.
 
 The import body is the raw XML document (bounded by the body-size limit, which
 also keeps oversize documents from reaching the parser).
@@ -10,13 +11,15 @@ from typing import Annotated
 
 from fastapi import APIRouter, Query, Request, Response, status
 
+from ..interchange.ld_il import network_il
 from ..interchange.plants import for_export
 from ..interchange.plcopen.exporter import PlcopenExportError, export_plcopen
 from ..interchange.plcopen.importer import import_plcopen
 from ..interchange.st.export import export_pou_st
 from ..interchange.st.project import export_project_st
 from ..model import has_errors
-from ..model.api import ImportReport, ProjectSummary, SourceMapEntry, StExport
+from ..model.api import ImportReport, LdAsIl, ProjectSummary, SourceMapEntry, StExport
+from ..model.ld import LdNetwork
 from ..storage.names import check_project_name
 from .context import WorkspaceDep, etag, modified_at
 from .errors import ApiError, responses
@@ -69,6 +72,13 @@ def export_xml(
     return Response(
         data, media_type="application/xml", headers={"Content-Disposition": f'attachment; filename="{name}.xml"'}
     )
+
+
+@router.post("/api/ld/il", response_model=LdAsIl, responses=responses(422))
+def ld_as_il(network: LdNetwork) -> LdAsIl:
+    """One LD network as IL, for the editor's read-only "View as IL" (issue 26); stateless."""
+    made = network_il(network)
+    return LdAsIl(text=made.text, reason=made.reason)
 
 
 @router.post(

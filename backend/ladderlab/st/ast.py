@@ -99,6 +99,7 @@ class Name:
     span: Span = _span()
     ty: Any = _annotation()
     ref: Any = _annotation()
+    deref: Any = _annotation()  # True: a REFERENCE TO read through (the checker sets it)
 
 
 @dataclass(slots=True)
@@ -120,6 +121,7 @@ class Member:
     span: Span = _span()
     ty: Any = _annotation()
     ref: Any = _annotation()
+    deref: Any = _annotation()  # True: a REFERENCE TO read through (the checker sets it)
 
 
 @dataclass(slots=True)
@@ -128,6 +130,7 @@ class Index:
     indices: list[Expr]
     span: Span = _span()
     ty: Any = _annotation()
+    deref: Any = _annotation()  # True: a REFERENCE TO read through (the checker sets it)
 
 
 @dataclass(slots=True)
@@ -202,6 +205,19 @@ LITERALS = (IntLit, RealLit, BoolLit, StringLit, TimeLit, TypedLit)
 
 @dataclass(slots=True)
 class Assign:
+    """``target := value``; ``attempt``: ``target ?= value`` (IEC 61131-3 ed. 3: NULL when the value's instance
+    does not implement the target's interface)."""
+
+    target: Expr
+    value: Expr
+    span: Span = _span()
+    attempt: bool = False
+
+
+@dataclass(slots=True)
+class RefAssign:
+    """CODESYS ``r REF= x``: the REFERENCE TO ``r`` now refers to the variable ``x``."""
+
     target: Expr
     value: Expr
     span: Span = _span()
@@ -274,6 +290,13 @@ class Exit:
 
 
 @dataclass(slots=True)
+class Continue:
+    """CONTINUE (IEC 61131-3 ed. 3): the rest of the innermost loop's body is skipped for this iteration."""
+
+    span: Span = _span()
+
+
+@dataclass(slots=True)
 class Return:
     span: Span = _span()
 
@@ -300,7 +323,9 @@ class Goto:
     span: Span = _span()
 
 
-Stmt = Assign | CallStmt | If | Case | For | While | Repeat | Exit | Return | Empty | Label | Goto
+Stmt = (
+    Assign | RefAssign | CallStmt | If | Case | For | While | Repeat | Exit | Continue | Return | Empty | Label | Goto
+)
 
 # ---------------------------------------------------------------- types and declarations
 
@@ -337,7 +362,7 @@ class ArrayType:
 
 @dataclass(slots=True)
 class PointerType:
-    kind: str  # "POINTER TO" or "REF_TO"
+    kind: str  # "POINTER TO", "REF_TO" or "REFERENCE TO" (CODESYS: dereferenced implicitly)
     target: TypeSpec
     span: Span = _span()
 
@@ -351,8 +376,11 @@ class EnumValue:
 
 @dataclass(slots=True)
 class EnumType:
+    """``(red, green)``; with ``base`` (an integer type name), ``INT (a := 0, b := 10)`` (IEC ed. 3 6.4.4.3)."""
+
     values: list[EnumValue]
     span: Span = _span()
+    base: str | None = None
 
 
 @dataclass(slots=True)
@@ -483,6 +511,49 @@ class Sfc:
 
 
 @dataclass(slots=True)
+class MethodDecl:
+    """``METHOD [PUBLIC|PRIVATE|PROTECTED|INTERNAL] [FINAL|ABSTRACT] name [: type] ... END_METHOD``."""
+
+    name: str
+    modifiers: list[str]  # upper case, as written
+    return_type: TypeSpec | None
+    var_blocks: list[VarBlock]
+    body: list[Stmt]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class AccessorDecl:
+    """A PROPERTY's ``GET ... END_GET`` or ``SET ... END_SET``."""
+
+    kind: str  # GET or SET
+    var_blocks: list[VarBlock]
+    body: list[Stmt]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class PropertyDecl:
+    """``PROPERTY [access] name : type [GET ... END_GET] [SET ... END_SET] END_PROPERTY``."""
+
+    name: str
+    modifiers: list[str]
+    type: TypeSpec
+    accessors: list[AccessorDecl]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
+class InterfaceDecl:
+    """``INTERFACE name [EXTENDS i, ...] METHOD prototypes END_INTERFACE``."""
+
+    name: str
+    extends: list[str]
+    methods: list[MethodDecl]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
 class Pou:
     kind: str  # PROGRAM, FUNCTION_BLOCK, FUNCTION
     name: str
@@ -491,6 +562,11 @@ class Pou:
     body: list[Stmt]
     span: Span = _span()
     sfc: Sfc | None = None  # a body written in textual SFC (``body`` is then empty)
+    methods: list[MethodDecl] = field(default_factory=list)  # a function block's METHODs
+    properties: list[PropertyDecl] = field(default_factory=list)  # a function block's PROPERTYs
+    modifier: str | None = None  # a function block's FINAL or ABSTRACT
+    extends: str | None = None  # the function block it EXTENDS
+    implements: list[str] = field(default_factory=list)  # the INTERFACEs it IMPLEMENTS
 
 
 @dataclass(slots=True)
@@ -563,7 +639,7 @@ class Configuration:
 class Source:
     """A whole ST file: TYPE blocks, VAR_GLOBAL blocks, POUs and configurations in source order."""
 
-    items: list[TypeBlock | VarBlock | Pou | Configuration]
+    items: list[TypeBlock | VarBlock | Pou | Configuration | InterfaceDecl]
     span: Span = _span()
 
     @property

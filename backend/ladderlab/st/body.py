@@ -12,16 +12,20 @@ from typing import Any
 
 from ..iec import stdlib
 from ..iec.addresses import parse_address, part_type, partial_access, same_location
+from ..iec.elementary import LONG_TIME_TYPES, SHORT_TO_LONG
 from ..iec.spelling import did_you_mean
 from . import ast
 from . import types as t
-from .calls import check_call
+from .calls import check_call, unreferable
 from .cases import check_case
 from .context_typing import default_type, settle, untyped_leaves, untyped_result
+from .interfaces import check_attempt, interface_comparison
+from .methods import check_property, is_self, own_property, this_type, unknown_member_hint
 from .rules import EnumValue, assignable_or_report, constant_value, root_name
-from .symbols import CheckResult, PouInfo, Symbol
+from .symbols import CheckResult, PouInfo, PropertyRef, Symbol
 from .types import ERROR, Type
 
+_ACCESSES = (ast.Name, ast.Member, ast.Index)
 _PART_NAMES = {1: "bits", 8: "bytes", 16: "words", 32: "double words", 64: "long words"}
 
 Report = Callable[..., None]  # report(code, message, node, severity="error")
@@ -29,6 +33,8 @@ Report = Callable[..., None]  # report(code, message, node, severity="error")
 _ARITHMETIC = {"+", "-", "*", "/"}
 _COMPARISON = {"=", "<>", "<", ">", "<=", ">="}
 _LOGIC = {"AND", "OR", "XOR"}
+#: CODESYS' short-circuit operators: the right operand is evaluated only when the left does not decide.
+_SHORT_CIRCUIT = {"AND_THEN", "OR_ELSE"}
 # TIME and date arithmetic (ST-21, ST-22, FUN-85): (op, left category, right category) -> result type name
 _TIME_RULES = {
     ("+", "time", "time"): "TIME",
@@ -43,6 +49,18 @@ _TIME_RULES = {
 }
 
 
+def time_rule(op: str, left: Type, right: Type) -> t.Type | None:
+    """The result type of a TIME/date operation (_TIME_RULES), in the long forms (LTIME, LDT ...) when both operands
+    are long; None when the operands mix a long and a short type (an explicit conversion is needed)."""
+    rule = _TIME_RULES.get((op, t.category(left), t.category(right)))
+    if rule is None:
+        return None
+    longs = {isinstance(x, t.Elementary) and x.name in LONG_TIME_TYPES for x in (left, right)}
+    if len(longs) > 1:
+        return None
+    return t.Elementary(SHORT_TO_LONG[rule] if True in longs else rule)
+
+
 class BodyChecker:
     def __init__(self, result: CheckResult, pou: PouInfo | None, report: Report):
         self.result = result
@@ -51,12 +69,16 @@ class BodyChecker:
         self.loop_depth = 0
         self.loop_vars: list[Symbol] = []
         self.result_assigned = False
+        #: The access typed as the REFERENCE TO itself, not read through (REF='s target, ^'s base, __ISVALIDREF)
+        self.keep_reference: ast.Expr | None = None
 
     # ------------------------------------------------------------ names
     def lookup(self, name: str) -> Symbol | None:
         upper = name.upper()
         if self.pou is not None and upper in self.pou.symbols:
             return self.pou.symbols[upper]
+        if self.pou is not None and self.pou.method is not None and upper in self.pou.method.owner.symbols:
+            return self.pou.method.owner.symbols[upper]  # a method works on its instance's variables
         return self.result.globals.get(upper)
 
     def enum_values(self, name: str) -> list[EnumValue]:
@@ -97,10 +119,30 @@ class BodyChecker:
 
     def _expr(self, node: ast.Expr, expected: Type | None) -> Type:
         check = _EXPRESSION_CHECKS.get(type(node))
-        return check(self, node, expected) if check is not None else self._binary(node)
+        ty = check(self, node, expected) if check is not None else self._binary(node)
+        if (
+            isinstance(ty, t.PointerType)
+            and ty.implicit
+            and type(node) in _ACCESSES
+            and node is not self.keep_reference
+        ):
+            node.deref = True  # a CODESYS REFERENCE TO stands for its target (lowered as r^)
+            return ty.target
+        return ty
+
+    def reference(self, node: ast.Expr) -> Type:
+        """Type an access as the reference itself: a REFERENCE TO is not read through here."""
+        saved, self.keep_reference = self.keep_reference, node
+        try:
+            return self.expr(node)
+        finally:
+            self.keep_reference = saved
 
     def _deref(self, node: ast.Deref) -> Type:
-        base = self.expr(node.base)
+        this = this_type(self, node)
+        if this is not None:
+            return this
+        base = self.reference(node.base)  # r^ on a REFERENCE TO too, as IronPLC accepts
         if isinstance(base, t.PointerType):
             return base.target
         if base is not ERROR:
@@ -135,9 +177,12 @@ class BodyChecker:
         if symbol is not None:
             node.ref = symbol
             return symbol.type
-        if self.pou is not None and self.pou.kind == "FUNCTION" and node.name.upper() == self.pou.name.upper():
+        if self.pou is not None and self.pou.kind == "FUNCTION" and node.name.upper() == _result_name(self.pou):
             node.ref = self.pou
             return self.pou.return_type or ERROR
+        found = own_property(self, node)
+        if found is not None:
+            return found
         program = self.result.pous.get(node.name.upper())
         if program is not None and program.kind == "PROGRAM":  # its outputs and SFC steps are read (ST-60, SFC-06)
             node.ref = program
@@ -191,6 +236,14 @@ class BodyChecker:
             return ERROR
         if isinstance(base, t.FbType):
             return self._fb_member(node, base)
+        if isinstance(base, t.InterfaceType):  # only its methods are called through it (st/interfaces.py)
+            if base.info.find_method(node.name) is not None:
+                self.report("ST-NOT-CALLABLE", f"'{node.name}' is a method of {base.name}: call it (add the ( ))", node)
+                return ERROR
+            names = [m.method.name for i in base.info.all_interfaces() for m in i.methods.values()]
+            message = f"{base.name} has no method '{node.name}'" + did_you_mean(node.name, names)
+            self.report("ST-UNKNOWN-MEMBER", message, node)
+            return ERROR
         part = partial_access(node.name)
         if part is not None and isinstance(base, t.Elementary) and base.category in ("bits", "int"):
             return self._part(node, base, *part)
@@ -229,10 +282,16 @@ class BodyChecker:
             return ERROR
         symbol = base.pou.symbols.get(upper)
         if symbol is None:
-            pins = [s.name for s in base.pou.parameters()]
+            found = check_property(self, node, base.pou)
+            if found is not None:
+                return found
+        if symbol is None and base.pou.find_method(upper) is not None:
+            self.report("ST-NOT-CALLABLE", f"'{node.name}' is a method of {base.name}: call it (add the ( ))", node)
+            return ERROR
+        if symbol is None:
             self.report(
                 "ST-UNKNOWN-MEMBER",
-                f"{base.name} has no input or output '{node.name}'" + did_you_mean(node.name, pins),
+                f"{base.name} has no input or output '{node.name}'" + unknown_member_hint(base.pou, node.name),
                 node,
             )
             return ERROR
@@ -244,7 +303,7 @@ class BodyChecker:
                 "only, so it cannot be read or written from outside (pass the variable in the call)",
                 node,
             )
-        elif symbol.var_class not in ("VAR_INPUT", "VAR_OUTPUT") and not _sfc_state(symbol):
+        elif symbol.var_class not in ("VAR_INPUT", "VAR_OUTPUT") and not _sfc_state(symbol) and not is_self(node.base):
             self.report(
                 "ST-NOT-ACCESSIBLE",
                 f"'{node.name}' is internal to {base.name}: only its inputs and outputs can be used from outside",
@@ -302,15 +361,19 @@ class BodyChecker:
         op = node.op
         if op == "**":
             return self._power(node, left, right)
-        time_rule = _TIME_RULES.get((op, t.category(left), t.category(right)))
-        if time_rule:
-            return t.Elementary(time_rule)
+        if op in _SHORT_CIRCUIT:
+            return self._short_circuit(node, left, right)
+        time_result = time_rule(op, left, right)
+        if time_result:
+            return time_result
         if op in ("*", "/") and t.category(left) == "time" and t.in_family(right, "ANY_NUM"):
-            return t.TIME  # ST-21: TIME * ANY_NUM, TIME / ANY_NUM (the number keeps its own type)
+            return left  # ST-21: TIME * ANY_NUM, TIME / ANY_NUM (the number keeps its own type); LTIME alike
         if op == "*" and t.category(right) == "time" and t.in_family(left, "ANY_NUM"):
-            return t.TIME
+            return right
         if op in ("+", "-") and isinstance(left, t.PointerType) and t.in_family(right, "ANY_INT"):
             return left  # pointer arithmetic in bytes (TYP-43)
+        if op in ("=", "<>") and interface_comparison(left, right):
+            return t.BOOL
         if op == "+" and isinstance(left, t.StringType) and isinstance(right, t.StringType):
             return left  # FUN-82 (Mosaic): '+' concatenates
         combined, verdict = t.common(left, right)
@@ -332,6 +395,14 @@ class BodyChecker:
                 severity="warning",
             )
         return self._operator_result(node, combined)
+
+    def _short_circuit(self, node: ast.Binary, left: Type, right: Type) -> Type:
+        """AND_THEN / OR_ELSE take BOOL operands only (CODESYS), and give a BOOL."""
+        for side, operand in ((left, node.left), (right, node.right)):
+            if side != t.BOOL:
+                self.report("ST-TYPE-MISMATCH", f"{node.op} needs BOOL operands, not {side}", operand)
+                return ERROR
+        return t.BOOL
 
     def _operator_result(self, node: ast.Binary, combined: Type) -> Type:
         op = node.op
@@ -387,6 +458,8 @@ class BodyChecker:
     def statement(self, stmt: ast.Stmt) -> None:
         if isinstance(stmt, ast.Assign):
             self.assign(stmt)
+        elif isinstance(stmt, ast.RefAssign):
+            self.ref_assign(stmt)
         elif isinstance(stmt, ast.CallStmt):
             if isinstance(stmt.call, ast.Call):
                 self.call(stmt.call, statement=True)
@@ -418,6 +491,8 @@ class BodyChecker:
             self.condition(stmt.until, "UNTIL")
         elif isinstance(stmt, ast.Exit) and self.loop_depth == 0:
             self.report("ST-EXIT-OUTSIDE-LOOP", "EXIT is only allowed inside FOR, WHILE or REPEAT", stmt)
+        elif isinstance(stmt, ast.Continue) and self.loop_depth == 0:
+            self.report("ST-EXIT-OUTSIDE-LOOP", "CONTINUE is only allowed inside FOR, WHILE or REPEAT", stmt)
 
     def loop(self, body: list[ast.Stmt]) -> None:
         self.loop_depth += 1
@@ -430,9 +505,31 @@ class BodyChecker:
             self.report("ST-TYPE-MISMATCH", f"the {keyword} condition must be BOOL, not {ty}", cond)
 
     def assign(self, stmt: ast.Assign) -> None:
+        if stmt.attempt:
+            check_attempt(self, stmt)
+            return
         target = self.target(stmt.target)
         value = self.expr(stmt.value, target)
         assignable_or_report(self, target, value, stmt.value, "assign")
+
+    def ref_assign(self, stmt: ast.RefAssign) -> None:
+        """``r REF= x`` (CODESYS): r, a REFERENCE TO T, refers to the variable x of type T from now on."""
+        target = self.reference(stmt.target)
+        value = self.expr(stmt.value)
+        if target is ERROR or value is ERROR:
+            return
+        if not (isinstance(target, t.PointerType) and target.implicit):
+            self.report("ST-TYPE-MISMATCH", f"REF= binds a REFERENCE TO variable, not {target}", stmt.target)
+        elif not isinstance(stmt.value, (ast.Name, ast.Member, ast.Index, ast.Deref)):
+            self.report(
+                "ST-NOT-LVALUE", "REF= needs a variable on its right: the one the reference will refer to", stmt.value
+            )
+        elif not t.same(target.target, value):
+            self.report("ST-TYPE-MISMATCH", f"a {target} cannot refer to a {value}", stmt.value)
+        else:
+            problem = unreferable(self, stmt.value)
+            if problem is not None:
+                self.report("ST-REF", f"REF= cannot refer to {problem}", stmt.value)
 
     def target(self, node: ast.Expr) -> Type:
         """Type an assignment target and check it may be written (ST-20, POU-23, VAR-21, ST-73)."""
@@ -443,6 +540,8 @@ class BodyChecker:
             )
             return ERROR
         ty = self.expr(node)
+        if isinstance(getattr(node, "ref", None), PropertyRef) and node.ref.setter is None:
+            self.report("ST-READONLY", f"the property {node.ref.name} has no SET: it can be read, not assigned", node)
         root = root_name(node)
         if root is not None and root.ref is self.pou and self.pou is not None:  # F := ..., F[2] := ..., F.a := ...
             self.result_assigned = True
@@ -470,7 +569,7 @@ class BodyChecker:
                     f"'{symbol.name}' is the FOR loop variable: it must not be changed inside the loop",
                     node,
                 )
-            if symbol.var_class == "VAR_INPUT" and node is root and self.pou is not None:
+            if symbol.var_class == "VAR_INPUT" and node is root and self.pou is not None and not root.deref:
                 self.report(
                     "ST-INPUT-WRITE",
                     f"'{symbol.name}' is an input of {self.pou.name}: assigning it overwrites the caller's value",
@@ -548,6 +647,11 @@ def _implicit_in(node: ast.Expr) -> Symbol | None:
     return ref if isinstance(ref, Symbol) and ref.implicit in SFC_PUBLIC else None
 
 
+def _result_name(pou: PouInfo) -> str:
+    """The name a function's (or a method's) body assigns its result to."""
+    return (pou.method.name if pou.method is not None else pou.name).upper()
+
+
 def _is_output(node: ast.Member) -> bool:
     ref = node.ref
     if isinstance(ref, Symbol):
@@ -564,8 +668,10 @@ def _enums_in(ty: Type):
 
 
 def _hint(left: Type, right: Type) -> str:
-    return (
-        f"{right.name}_TO_{left.name}"
-        if isinstance(left, t.Elementary) and isinstance(right, t.Elementary)
-        else "a *_TO_* conversion"
-    )
+    if not (isinstance(left, t.Elementary) and isinstance(right, t.Elementary)):
+        return "a *_TO_* conversion"
+    if left.name in LONG_TIME_TYPES and right.category == "time":  # LTOD + TIME: the duration becomes an LTIME
+        return f"{right.name}_TO_LTIME"
+    if right.name in LONG_TIME_TYPES and left.category == "time":
+        return f"{left.name}_TO_LTIME"
+    return f"{right.name}_TO_{left.name}"

@@ -16,12 +16,14 @@ from ..iec.spelling import did_you_mean
 from . import ast
 from . import types as t
 from .context_typing import default_type, untyped_leaves
+from .methods import check_method_call, method_callee
 from .printer import print_expression
 from .rules import assignable_or_report, root_name
 from .symbols import PouInfo, Symbol
 from .types import ERROR, VOID, Type
 
-_SYSTEM = {"ADR", "REF", "SIZEOF"}
+_SYSTEM = {"ADR", "REF", "SIZEOF", "__ISVALIDREF"}
+_SELF = ("THIS", "SUPER")
 _WRITABLE = (ast.Name, ast.Member, ast.Index, ast.Deref, ast.DirectAddr)
 
 
@@ -34,6 +36,17 @@ class Param:
 
 def check_call(checker: Any, node: ast.Call, statement: bool) -> Type:
     callee = node.callee
+    method = method_callee(checker, callee)
+    if method is not None:
+        return check_method_call(checker, node, *method)
+    if isinstance(callee, ast.Deref) and isinstance(callee.base, ast.Name) and callee.base.name.upper() in _SELF:
+        _args_untyped(checker, node)
+        checker.report(
+            "ST-NOT-CALLABLE",
+            f"{callee.base.name.upper()}^() would run a function block's body from a method: not supported yet",
+            node,
+        )
+        return ERROR
     if not isinstance(callee, ast.Name):
         return _instance_call(checker, node, checker.expr(callee), statement)
     upper = callee.name.upper()
@@ -214,8 +227,29 @@ def _input(checker: Any, arg: ast.Arg, param: Param, callee: str) -> None:
     if param.in_out:
         _in_out(checker, arg, param, callee)
         return
+    if isinstance(param.type, t.PointerType) and param.type.implicit:
+        _bind(checker, arg, param, callee)
+        return
     value = checker.expr(arg.value, param.type)
     assignable_or_report(checker, param.type, value, arg.value, f"input {param.name} of {callee}")
+
+
+def _bind(checker: Any, arg: ast.Arg, param: Param, callee: str) -> None:
+    """A REFERENCE TO input given a variable is bound to it for the call (CODESYS), as ``REF=`` binds."""
+    value = checker.expr(arg.value)
+    reference: t.PointerType = param.type  # type: ignore[assignment]  # _input checked it is one
+    if value is ERROR:
+        return
+    if not isinstance(arg.value, _WRITABLE):
+        checker.report("ST-NOT-LVALUE", f"{reference} input {param.name} of {callee} needs a variable", arg.value)
+    elif not t.same(reference.target, value):
+        checker.report(
+            "ST-TYPE-MISMATCH", f"input {param.name} of {callee}: a {reference} cannot refer to a {value}", arg.value
+        )
+    else:
+        problem = unreferable(checker, arg.value)
+        if problem is not None:
+            checker.report("ST-REF", f"input {param.name} of {callee} cannot refer to {problem}", arg.value)
 
 
 def _in_out(checker: Any, arg: ast.Arg, param: Param, callee: str) -> None:
@@ -233,12 +267,23 @@ def _in_out(checker: Any, arg: ast.Arg, param: Param, callee: str) -> None:
             f"the CONSTANT '{root.ref.name}' cannot be passed as in-out parameter {param.name}",
             arg.value,
         )
-    elif not t.same(param.type, value) and not _open_array(param.type, value):
+    elif not t.same(param.type, value) and not _open_array(param.type, value) and not _derived(param.type, value):
         checker.report(
             "ST-TYPE-MISMATCH",
             f"in-out parameter {param.name} of {callee} needs a {param.type}, got {value}",
             arg.value,
         )
+
+
+def _derived(param: Type, value: Type) -> bool:
+    """An instance of a function block that EXTENDS the in-out's FB (st/inheritance.py) stands for one of it."""
+    return (
+        isinstance(param, t.FbType)
+        and isinstance(value, t.FbType)
+        and param.pou is not None
+        and value.pou is not None
+        and value.pou.derives_from(param.pou)
+    )
 
 
 def _open_array(param: Type, value: Type) -> bool:
@@ -356,12 +401,17 @@ def _generic_type(checker: Any, node: ast.Call, function: stdlib.StdFunction, bo
 
 
 def _system_call(checker: Any, node: ast.Call, name: str) -> Type:
-    """ADR / REF (pointer to a variable, TYP-42) and SIZEOF (size in bytes, TYP-45)."""
+    """ADR / REF (pointer to a variable, TYP-42), SIZEOF (size in bytes, TYP-45) and CODESYS __ISVALIDREF."""
     if len(node.args) != 1 or node.args[0].name is not None:
         _args_untyped(checker, node)
         checker.report("ST-CALL-ARGS", f"{name} takes exactly one argument", node)
         return ERROR
     value = node.args[0].value
+    if name == "__ISVALIDREF":  # CODESYS: whether a REFERENCE TO (or any reference) refers to a variable
+        ty = checker.reference(value)
+        if ty is not ERROR and not isinstance(ty, t.PointerType):
+            checker.report("ST-TYPE-MISMATCH", f"__ISVALIDREF needs a reference, not {ty}", value)
+        return t.BOOL
     if name == "SIZEOF":
         if isinstance(value, ast.Name) and (t.elementary(value.name) or value.name.upper() in checker.result.types):
             return t.UntypedInt()
@@ -371,13 +421,13 @@ def _system_call(checker: Any, node: ast.Call, name: str) -> Type:
     if not isinstance(value, _WRITABLE):
         checker.report("ST-NOT-LVALUE", f"{name} needs a variable", value)
         return t.PointerType(ty)
-    problem = _unreferable(checker, value)
+    problem = unreferable(checker, value)
     if problem is not None:
         checker.report("ST-REF", f"{name} cannot refer to {problem}", value)
     return t.PointerType(ty)
 
 
-def _unreferable(checker: Any, value: ast.Expr) -> str | None:
+def unreferable(checker: Any, value: ast.Expr) -> str | None:
     """Why a reference to ``value`` would outlive its variable or break a rule (None: it may be referred to).
     IEC 61131-3 ed. 3 6.4.4.10: no reference to a temporary - a VAR_TEMP or a function's variable lives only
     while the call runs - so a reference never dangles; and none to a CONSTANT, which could then be written."""

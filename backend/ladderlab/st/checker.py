@@ -22,6 +22,9 @@ from .body import BodyChecker
 from .configuration import check_configuration, configuration_globals
 from .il_check import check_il_body
 from .il_parser import IlBody, parse_il
+from .inheritance import abstract_instance, check_overrides, link_bases
+from .interfaces import check_implementations, declare_interfaces, link_implements, register_interfaces
+from .methods import check_method_body, check_method_recursion, declare_methods
 from .parser import (
     keywords,
     parse_declarations,
@@ -100,9 +103,12 @@ class ProjectChecker:
                 self.result.diagnostics += parsed.diagnostics
                 bodies[pou.name] = parsed.body
         self._register_pous()
+        interfaces = [item for item in types or [] if isinstance(item, ast.InterfaceDecl)]
+        register_interfaces(self, interfaces)
         constants = [(b, f) for b, f in globals_ if b.constant and all(_elementary_decl(d) for d in b.decls)]
         self._declare_globals(constants)  # first, so array bounds in TYPEs may name them (TYP-22)
-        self._register_types(types or [])
+        self._register_types([item for item in types or [] if isinstance(item, ast.TypeBlock)])
+        declare_interfaces(self, interfaces)
         self._declare_globals([(b, f) for b, f in globals_ if (b, f) not in constants])
         for pou in self.project.pous:
             self._declare_pou(pou, declarations[pou.name])
@@ -110,8 +116,21 @@ class ProjectChecker:
             info = self.result.pous.get(pou.name.upper())
             if pou.language == "sfc" and info is not None and info.name == pou.name:
                 declare_implicit(pou, info, self.result.diagnostics)
+        link_bases(self, self.project)
+        link_implements(self, self.project)
+        methods = []
+        for pou in self.project.pous:
+            info = self.result.pous.get(pou.name.upper())
+            if (pou.methods or pou.properties) and info is not None and info.name == pou.name:
+                methods += declare_methods(self, info, pou.methods, pou.properties)
+        blocks = [info for info in self.result.pous.values() if info.kind == "FUNCTION_BLOCK"]
+        check_overrides(self, blocks)
+        check_implementations(self, blocks)
         for pou in self.project.pous:
             self._check_initial_values(pou)
+        for info, method in methods:
+            check_method_body(self, info, method)
+        check_method_recursion(self, [info for info, _ in methods], blocks)
         for pou in self.project.pous:
             info = self.result.pous.get(pou.name.upper())
             if info is not None and info.language in ("st", "il") and bodies.get(pou.name) is not None:
@@ -156,6 +175,7 @@ class ProjectChecker:
                 where("ST-NAME", f"'{pou.name}' is a keyword and cannot name a POU (KW-02)", None)
             info = self.result.pous[upper] = PouInfo(pou.name, _KIND[pou.kind], pou.language, None)
             info.plant = pou.kind == "plant"
+            info.abstract, info.final = pou.abstract, pou.final
             if not isinstance(pou.body, str):  # LD boxes and FBD blocks: edges of the call graph (POU-02)
                 info.calls |= pou.body.calls()
 
@@ -226,7 +246,7 @@ class ProjectChecker:
         if isinstance(spec, ast.ArrayType):
             return self._array(spec, checker)
         if isinstance(spec, ast.PointerType):
-            return t.PointerType(self.resolve(spec.target, checker))
+            return t.PointerType(self.resolve(spec.target, checker), spec.kind == "REFERENCE TO")
         if isinstance(spec, ast.EnumType):
             return self._enum(spec, checker, name or "enumeration")
         struct = t.StructType(name or "STRUCT")
@@ -248,6 +268,8 @@ class ProjectChecker:
         typedef = self._typedef(upper)
         if typedef is not None:
             return typedef.type
+        if upper in self.result.interfaces:
+            return t.InterfaceType(self.result.interfaces[upper].name, self.result.interfaces[upper])
         if upper in self.result.pous and self.result.pous[upper].kind != "FUNCTION":
             return t.FbType(self.result.pous[upper].name, pou=self.result.pous[upper])
         std = stdlib.function_block(upper)
@@ -285,6 +307,12 @@ class ProjectChecker:
 
     def _enum(self, spec: ast.EnumType, checker: BodyChecker, name: str) -> Type:
         enum = t.EnumType(name)
+        base = t.elementary(spec.base) if spec.base else None
+        if spec.base and not (base is not None and t.in_family(base, "ANY_INT")):
+            checker.report(
+                "ST-TYPE-MISMATCH", f"an enumeration's base type must be an integer type, not {spec.base}", spec
+            )
+            base = None
         following = 0
         for value in spec.values:
             if value.value is not None:
@@ -292,6 +320,8 @@ class ProjectChecker:
                 if not isinstance(number, int):
                     checker.report("ST-CONST-EXPR", "an enumeration value must be an integer constant", value.value)
                     number = following
+                elif base is not None and not t.literal_fits(base, number):
+                    checker.report("ST-RANGE", f"{number} does not fit the enumeration's base type {base}", value.value)
                 following = number
             if value.name.upper() in enum.values:
                 checker.report("ST-DUPLICATE", f"'{value.name}' appears twice in the enumeration", value)
@@ -456,6 +486,9 @@ class ProjectChecker:
                 "declared as a variable",
                 decl,
             )
+        abstract = abstract_instance(ty, block.kind)
+        if abstract:
+            report("ST-DECL", abstract, decl)
         if isinstance(ty, t.FbType) and pou is not None and pou.kind == "FUNCTION":
             report("ST-DECL", f"a function has no memory, so it cannot contain the instance of {ty.name} (ST-57)", decl)
         if isinstance(ty, t.PointerType) and block.retain:
@@ -491,6 +524,7 @@ class ProjectChecker:
         if isinstance(body, IlBody):
             il = check_il_body(self.result, info, body, report)
             info.body, info.accumulators, assigned = il.statements, il.accumulators, il.result_assigned
+            info.il_values, info.il_step_lines = il.values, il.step_lines
         else:
             checker = BodyChecker(self.result, info, report)
             checker.statements(body)
@@ -536,21 +570,21 @@ def _elementary_decl(decl: ast.VarDecl) -> bool:
 
 
 def _parse_types(text: str, *, file: str, pou: None = None):
-    """The model's ``types`` text holds TYPE blocks only."""
+    """The model's ``types`` text holds TYPE blocks and INTERFACEs (st/interfaces.py) only."""
     result = parse_source(text, file=file)
     if result.ast is not None:
-        stray = [item for item in result.ast.items if not isinstance(item, ast.TypeBlock)]
+        stray = [item for item in result.ast.items if not isinstance(item, (ast.TypeBlock, ast.InterfaceDecl))]
         for item in stray:
             result.diagnostics.append(
                 Diagnostic(
                     code="ST-DECL",
-                    message="only TYPE ... END_TYPE blocks belong here",
+                    message="only TYPE ... END_TYPE blocks and INTERFACEs belong here",
                     file=file,
                     line=item.span.line,
                     column=item.span.column,
                 )
             )
-        result.ast = [item for item in result.ast.items if isinstance(item, ast.TypeBlock)]
+        result.ast = [item for item in result.ast.items if isinstance(item, (ast.TypeBlock, ast.InterfaceDecl))]
     return result
 
 

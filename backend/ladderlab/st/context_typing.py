@@ -331,7 +331,9 @@ def _apply(node: ast.Binary, left: Any, right: Any, target: Type) -> Any:
             raise FoldError("division by zero in a constant expression", node)
         return value
     if isinstance(left, bool) or isinstance(right, bool):
-        return {"AND": left and right, "OR": left or right, "XOR": left != right}[op]
+        return {"AND": left and right, "OR": left or right, "XOR": left != right, "AND_THEN": left and right}.get(
+            op, left or right
+        )  # OR_ELSE
     return {"AND": left & right, "OR": left | right, "XOR": left ^ right}[op]
 
 

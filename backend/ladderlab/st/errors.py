@@ -78,6 +78,8 @@ _OPERATORS = {
     "OR",
     "XOR",
     "AND",
+    "AND_THEN",
+    "OR_ELSE",
     "MOD",
 }
 _EXPRESSION_START = {

@@ -57,10 +57,27 @@ class _Frame:
 
 
 @dataclass
+class IlValue:
+    """The accumulator after the instruction on ``line`` (body-relative): ``value`` (an accumulator variable or a
+    constant, typed ``type``) as it stands before ``statements[index]`` - online mode shows it on the line."""
+
+    line: int
+    index: int
+    value: ast.Expr
+    type: Type
+
+
+#: Where a single step stops in IL (ON-04): the next load, jump or call (an FB input operator calls too).
+STEP_OPERATORS = frozenset({"LD", "LDN", "JMP", "JMPC", "JMPCN", "CAL", "CALC", "CALCN"}) | FB_INPUT_OPERATORS
+
+
+@dataclass
 class IlResult:
     statements: list[ast.Stmt]
     accumulators: list[Symbol] = field(default_factory=list)
     result_assigned: bool = False
+    values: list[IlValue] = field(default_factory=list)
+    step_lines: frozenset[int] = frozenset()
 
 
 class _AccumulatorChecker(BodyChecker):
@@ -93,13 +110,17 @@ class _Translator:
         self.labels: dict[str, tuple[Cr | Conflict | None, ast.Span]] = {}
         self.forward: dict[str, list[Cr | None]] = {}
         self.jumps: list[tuple[str, Cr | None, IlInstruction]] = []
+        self.values: list[IlValue] = []
+        self.step_lines: set[int] = set()
 
     # ------------------------------------------------------------ driver
     def run(self, body: IlBody) -> IlResult:
         for instruction in body.instructions:
             for label, span in instruction.labels:
                 self._label(label, span)
+            start = len(self.out)
             self.instruction(instruction)
+            self._record(instruction, start)
         for label, span in body.trailing_labels:
             self._label(label, span)
         if self.stack:
@@ -116,7 +137,25 @@ class _Translator:
             else:
                 self._check_back_edge(label, state, instruction)
         symbols = list(self.accumulators.values())
-        return IlResult(self.out, symbols, self.checker.result_assigned)
+        return IlResult(self.out, symbols, self.checker.result_assigned, self.values, frozenset(self.step_lines))
+
+    def _record(self, instruction: IlInstruction, start: int) -> None:
+        """The accumulator after ``instruction`` for online mode, and whether a single step stops at its line.
+        A jump's or return's value stands before the jump (the CR is what it was; after it nothing runs)."""
+        line = instruction.span.line
+        word = instruction.operator
+        if word in STEP_OPERATORS or (word == "R" and self._is_instance(instruction)):
+            self.step_lines.add(line)
+        cr = self.cr
+        if not isinstance(cr, Cr) or cr.type is ERROR or instruction.broken:
+            return
+        index = len(self.out)
+        if index > start and isinstance(self.out[-1], (ast.Goto, ast.Return)):
+            index -= 1
+        value = self._value(cr, instruction.span)
+        ty = self.silent.expr(value)  # typed like every statement the lowering reads
+        if ty is not ERROR:
+            self.values.append(IlValue(line, index, value, t.concrete(ty)))
 
     def instruction(self, instruction: IlInstruction) -> None:
         word = instruction.operator

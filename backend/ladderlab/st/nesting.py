@@ -18,7 +18,7 @@ from .. import limits
 from . import ast
 
 COMPOUND = (ast.If, ast.Case, ast.For, ast.While, ast.Repeat)
-_STATEMENTS = (*COMPOUND, ast.Assign, ast.CallStmt, ast.Exit, ast.Return, ast.Empty)
+_STATEMENTS = (*COMPOUND, ast.Assign, ast.RefAssign, ast.CallStmt, ast.Exit, ast.Continue, ast.Return, ast.Empty)
 _SKIPPED = frozenset({"span", "ty", "ref"})
 _CHILD_FIELDS: dict[type, tuple[str, ...]] = {}
 

@@ -65,6 +65,7 @@ _SOFT_KEYWORDS = {
     "NON_RETAIN",
     "PERSISTENT",
     "POINTER",
+    "REFERENCE",
     "AND",
     "OR",
     "XOR",
@@ -76,6 +77,19 @@ _SOFT_KEYWORDS = {
     "FROM",
     "PRIORITY",
     "ACTION",
+    # object orientation's words (IEC 61131-3 ed. 3): reserved there, but edition 2 programs use them as names
+    "METHOD",
+    "PUBLIC",
+    "PRIVATE",
+    "PROTECTED",
+    "INTERNAL",
+    "FINAL",
+    "ABSTRACT",
+    "OVERRIDE",
+    "EXTENDS",
+    "IMPLEMENTS",
+    "INTERFACE",
+    "PROPERTY",
 }
 # Keywords of test files only (start_tests): names like ``test`` or ``setup`` stay free in programs.
 TEST_KEYWORDS = frozenset(

@@ -15,8 +15,10 @@ INDENT = "    "
 # Binding strength, loosest first (ST-02): OR < XOR < AND < = <> < comparisons < + - < * / MOD < unary < **.
 _PRECEDENCE = {
     "OR": 1,
+    "OR_ELSE": 1,
     "XOR": 2,
     "AND": 3,
+    "AND_THEN": 3,
     "=": 4,
     "<>": 4,
     "<": 5,
@@ -139,8 +141,10 @@ def print_statements(statements: list[ast.Stmt], level: int = 0) -> str:
 
 def _statement(stmt: ast.Stmt, level: int) -> str:
     pad = INDENT * level
+    if isinstance(stmt, ast.RefAssign):
+        return f"{pad}{_expr(stmt.target, 0)} REF= {_expr(stmt.value, 0)};\n"
     if isinstance(stmt, ast.Assign):
-        return f"{pad}{_expr(stmt.target, 0)} := {_expr(stmt.value, 0)};\n"
+        return f"{pad}{_expr(stmt.target, 0)} {'?=' if stmt.attempt else ':='} {_expr(stmt.value, 0)};\n"
     if isinstance(stmt, ast.CallStmt):
         return f"{pad}{_expr(stmt.call, 0)};\n"
     if isinstance(stmt, ast.If):
@@ -169,6 +173,8 @@ def _statement(stmt: ast.Stmt, level: int) -> str:
         return f"{pad}REPEAT\n{body}{pad}UNTIL {_expr(stmt.until, 0)}\n{pad}END_REPEAT;\n"
     if isinstance(stmt, ast.Exit):
         return f"{pad}EXIT;\n"
+    if isinstance(stmt, ast.Continue):
+        return f"{pad}CONTINUE;\n"
     if isinstance(stmt, ast.Return):
         return f"{pad}RETURN;\n"
     if isinstance(stmt, ast.Empty):
@@ -199,7 +205,7 @@ def print_type(spec: ast.TypeSpec, level: int = 0) -> str:
         return f"{spec.kind} {print_type(spec.target, level)}"
     if isinstance(spec, ast.EnumType):
         return (
-            "("
+            (f"{spec.base} (" if spec.base else "(")
             + ", ".join(v.name + (f" := {_expr(v.value, 0)}" if v.value is not None else "") for v in spec.values)
             + ")"
         )

@@ -8,7 +8,17 @@ examples can go through ``check_project`` exactly like edited projects.
 from __future__ import annotations
 
 from ..model.diagnostics import Diagnostic
-from ..model.project import Configuration, Pou, ProgramInstance, Project, Resource, Task
+from ..model.project import (
+    Accessor,
+    Configuration,
+    Method,
+    Pou,
+    ProgramInstance,
+    Project,
+    Property,
+    Resource,
+    Task,
+)
 from . import ast
 from .il_parser import blank_il_bodies
 from .parser import parse_source
@@ -57,7 +67,7 @@ def source_to_project(
     diagnostics = list(parsed.diagnostics)
     types, globals_, pous, configurations = [], [], [], []
     for item in parsed.ast.items:
-        if isinstance(item, ast.TypeBlock):
+        if isinstance(item, (ast.TypeBlock, ast.InterfaceDecl)):  # INTERFACEs live in the types text
             types.append(source.of(item))
         elif isinstance(item, ast.VarBlock):
             globals_.append(source.of(item))
@@ -80,30 +90,76 @@ def source_to_project(
 
 def _pou(pou: ast.Pou, source: _Text, language: str) -> Pou:
     end = (pou.span.end_line, pou.span.end_column - len(f"END_{pou.kind}"))
-    if pou.var_blocks:
-        first, last = pou.var_blocks[0].span, pou.var_blocks[-1].span
-        declarations = _keep_lines(
-            source.between((first.line, first.column), (last.end_line, last.end_column)), (first.line, first.column)
-        )
-        body_start = (last.end_line, last.end_column)
-    else:
-        declarations = ""
-        body_start = (pou.body[0].span.line, pou.body[0].span.column) if pou.body else end
-        if language == "il":  # the blanked IL body left no statements: it starts on the line after the header
-            body_start = min((pou.span.line + 1, 1), end)
-    body = source.between(body_start, end)
-    return_type = None
-    if pou.return_type is not None:  # as written: STRING[20], ARRAY [1..3] OF INT, INT (0..100) ...
-        span = pou.return_type.span
-        return_type = source.between((span.line, span.column), (span.end_line, span.end_column)).strip()
+    members = sorted(pou.methods + pou.properties, key=lambda m: (m.span.end_line, m.span.end_column))
+    declarations, body = _parts(pou, pou.var_blocks + members, end, source, language)
     return Pou(
         name=pou.name,
         kind=_KIND[pou.kind],
         language=language,
-        return_type=return_type,
-        declarations=declarations,
-        body=_keep_lines(body, body_start),
+        return_type=_type_text(pou.return_type, source),
+        declarations=_keep_lines(*declarations) if declarations[0] else "",
+        body=_keep_lines(*body),
+        methods=[_method(method, source) for method in pou.methods],
+        properties=[_property(prop, source) for prop in pou.properties],
+        extends=pou.extends,
+        implements=pou.implements,
+        abstract=pou.modifier == "ABSTRACT",
+        final=pou.modifier == "FINAL",
     )
+
+
+def _parts(pou, leading: list, end: tuple[int, int], source: _Text, language: str = "st"):
+    """A POU's or a method's declarations and body texts with where each starts: the VAR blocks, then the body
+    after whatever ``leading`` holds (VAR blocks, then a function block's METHODs) up to ``end``."""
+    declarations = ("", (1, 1))
+    if pou.var_blocks:
+        first, last = pou.var_blocks[0].span, pou.var_blocks[-1].span
+        start = (first.line, first.column)
+        declarations = (source.between(start, (last.end_line, last.end_column)), start)
+    if leading:
+        body_start = (leading[-1].span.end_line, leading[-1].span.end_column)
+    else:
+        body_start = (pou.body[0].span.line, pou.body[0].span.column) if pou.body else end
+        if language == "il":  # the blanked IL body left no statements: it starts on the line after the header
+            body_start = min((pou.span.line + 1, 1), end)
+    return declarations, (source.between(body_start, end), body_start)
+
+
+def _method(method: ast.MethodDecl, source: _Text) -> Method:
+    end = (method.span.end_line, method.span.end_column - len("END_METHOD"))
+    declarations, body = _parts(method, method.var_blocks, end, source)
+    access = [m for m in method.modifiers if m in ("PUBLIC", "PRIVATE", "PROTECTED", "INTERNAL")]
+    return Method(
+        name=method.name,
+        access=access[-1] if access else "PUBLIC",
+        final="FINAL" in method.modifiers,
+        abstract="ABSTRACT" in method.modifiers,
+        return_type=_type_text(method.return_type, source),
+        declarations=_keep_lines(*declarations) if declarations[0] else "",
+        body=_keep_lines(*body),
+    )
+
+
+def _property(prop: ast.PropertyDecl, source: _Text) -> Property:
+    accessors = {}
+    for accessor in prop.accessors:
+        end = (accessor.span.end_line, accessor.span.end_column - len(f"END_{accessor.kind}"))
+        declarations, body = _parts(accessor, accessor.var_blocks, end, source)
+        accessors[accessor.kind.lower()] = Accessor(
+            declarations=_keep_lines(*declarations) if declarations[0] else "", body=_keep_lines(*body)
+        )
+    access = [m for m in prop.modifiers if m in ("PUBLIC", "PRIVATE", "PROTECTED", "INTERNAL")]
+    return Property(
+        name=prop.name, type=_type_text(prop.type, source) or "", access=access[-1] if access else "PUBLIC", **accessors
+    )
+
+
+def _type_text(spec: ast.TypeSpec | None, source: _Text) -> str | None:
+    """A result type as written: STRING[20], ARRAY [1..3] OF INT, INT (0..100) ..."""
+    if spec is None:
+        return None
+    span = spec.span
+    return source.between((span.line, span.column), (span.end_line, span.end_column)).strip()
 
 
 def _sfc_pou(pou: ast.Pou, source: _Text) -> tuple[Pou, list[Diagnostic]]:

@@ -52,7 +52,7 @@ class PouInfo:
     """
 
     name: str
-    kind: str  # PROGRAM, FUNCTION_BLOCK, FUNCTION
+    kind: str  # PROGRAM, FUNCTION_BLOCK, FUNCTION (also a METHOD), INTERFACE (in CheckResult.interfaces only)
     language: str
     return_type: Type | None
     symbols: dict[str, Symbol] = field(default_factory=dict)
@@ -62,10 +62,89 @@ class PouInfo:
     plant: bool = False  # a PROGRAM that models the process: run by the plant task, never called
     actions: dict[str, list[ast.Stmt] | None] = field(default_factory=dict)
     accumulators: list[Symbol] = field(default_factory=list)  # IL POUs: the hidden current-result variables
+    il_values: list = field(default_factory=list)  # IL POUs: the accumulator after each line (il_check.IlValue)
+    il_step_lines: frozenset[int] = frozenset()  # IL POUs: the lines a single step stops at (ON-04)
+    methods: dict[str, PouInfo] = field(default_factory=dict)  # a function block's METHODs by upper-case name
+    method: MethodInfo | None = None  # set on a METHOD: its FB, name as written and modifiers
+    base: PouInfo | None = None  # the function block this one EXTENDS (st/inheritance.py)
+    abstract: bool = False  # an ABSTRACT function block: no instances, only FBs derived from it
+    final: bool = False  # a FINAL function block: nothing EXTENDS it
+    interfaces: list[PouInfo] = field(default_factory=list)  # an FB: those it IMPLEMENTS; an INTERFACE: it EXTENDS
+    methods_called: list[tuple[PouInfo, bool]] = field(default_factory=list)  # METHODs it calls, dispatched or not
+
+    def lineage(self) -> list[PouInfo]:
+        """This function block, then the one it extends, and so on."""
+        chain, seen = [], set()
+        pou: PouInfo | None = self
+        while pou is not None and id(pou) not in seen:
+            seen.add(id(pou))
+            chain.append(pou)
+            pou = pou.base
+        return chain
+
+    def derives_from(self, other: PouInfo) -> bool:
+        return any(pou is other for pou in self.lineage())
+
+    def find_method(self, name: str) -> PouInfo | None:
+        """The method ``name`` of this FB, its own or the nearest inherited one; of an INTERFACE, its own or one
+        of an interface it extends."""
+        upper = name.upper()
+        if self.kind == "INTERFACE":
+            return next((i.methods[upper] for i in self.all_interfaces() if upper in i.methods), None)
+        return next((pou.methods[upper] for pou in self.lineage() if upper in pou.methods), None)
+
+    def all_interfaces(self) -> list[PouInfo]:
+        """An INTERFACE and every one it extends; of an FB, every interface it or a base of it IMPLEMENTS."""
+        found: list[PouInfo] = [self] if self.kind == "INTERFACE" else []
+        pending = [i for pou in self.lineage() for i in pou.interfaces]
+        while pending:
+            interface = pending.pop(0)
+            if all(interface is not known for known in found):
+                found.append(interface)
+                pending += interface.interfaces
+        return found
+
+    def implements(self, interface: PouInfo) -> bool:
+        return any(known is interface for known in self.all_interfaces())
 
     def parameters(self, *classes: str) -> list[Symbol]:
-        wanted = classes or PARAMETER_CLASSES
-        return [s for s in self.symbols.values() if s.var_class in wanted]
+        """The parameters of ``classes`` (default: all) in declaration order; a METHOD's ``THIS`` is none."""
+        wanted, this = classes or PARAMETER_CLASSES, self.this()
+        return [s for s in self.symbols.values() if s.var_class in wanted and s is not this]
+
+    def this(self) -> Symbol | None:
+        """A METHOD's hidden first in-out ``THIS``: the instance it is called on (st/methods.py)."""
+        return self.symbols.get(THIS) if self.method is not None else None
+
+
+THIS = "THIS"
+
+
+@dataclass(eq=False)
+class MethodInfo:
+    """What makes a FUNCTION-like PouInfo a METHOD (``<FB>.<name>``): the function block it belongs to, its name
+    as written, who may call it (PUBLIC, PRIVATE, PROTECTED, INTERNAL), FINAL and ABSTRACT."""
+
+    owner: PouInfo
+    name: str
+    access: str = "PUBLIC"
+    final: bool = False
+    abstract: bool = False
+    key: str = ""  # its key in ``owner.methods``: the upper-case name; a PROPERTY's accessors ``<P>.GET`` / ``.SET``
+
+    def __post_init__(self) -> None:
+        self.key = self.key or self.name.upper()
+
+
+@dataclass(eq=False)
+class PropertyRef:
+    """A PROPERTY of a function block as ``Member.ref`` / ``Name.ref``: read through ``getter``, written through
+    ``setter`` (methods ``<FB>.<P>.GET`` / ``.SET``, st/properties.py; None: it has no such accessor)."""
+
+    name: str
+    type: Any
+    getter: PouInfo | None
+    setter: PouInfo | None
 
 
 @dataclass
@@ -74,6 +153,7 @@ class CheckResult:
     types: dict[str, TypeDef] = field(default_factory=dict)
     globals: dict[str, Symbol] = field(default_factory=dict)
     pous: dict[str, PouInfo] = field(default_factory=dict)
+    interfaces: dict[str, PouInfo] = field(default_factory=dict)  # INTERFACEs (kind INTERFACE) by upper-case name
     configuration: Any = None  # configuration.ConfigurationInfo: the instances and tasks the project runs
 
     @property
@@ -81,4 +161,11 @@ class CheckResult:
         return not any(d.severity == "error" for d in self.diagnostics)
 
     def pou(self, name: str) -> PouInfo | None:
-        return self.pous.get(name.upper())
+        """A POU by name, or a METHOD by ``<FB>.<method>``."""
+        upper = name.upper()
+        found = self.pous.get(upper)
+        if found is None and "." in upper:
+            owner, _, method = upper.partition(".")
+            fb = self.pous.get(owner) or self.interfaces.get(owner)
+            found = fb.methods.get(method) if fb is not None else None
+        return found

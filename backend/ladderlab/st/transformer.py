@@ -142,12 +142,83 @@ class AstBuilder(Transformer):
     # ------------------------------------------------------------ POUs and types
     def pou(self, c):
         kind = c[0].type
+        if kind == "FUNCTION_BLOCK":
+            return self._function_block(c)
         return_type = c[2] if kind == "FUNCTION" else None
         rest = c[3:-1] if kind == "FUNCTION" else c[2:-1]
         blocks = [x for x in rest if isinstance(x, ast.VarBlock)]
         sfc = next((x for x in rest if isinstance(x, ast.Sfc)), None)
         body = [x for x in rest if not isinstance(x, (ast.VarBlock, ast.Sfc))]
         return ast.Pou(kind, str(c[1]), return_type, blocks, body, span_of(c), sfc)
+
+    def _function_block(self, c):
+        """``FUNCTION_BLOCK [FINAL|ABSTRACT] name [EXTENDS base] [IMPLEMENTS i, ...] VARs METHODs body``."""
+        modifier, name, extends, implements = c[1], str(c[2]), c[3], c[4] or []
+        rest = c[5:-1]
+        blocks = [x for x in rest if isinstance(x, ast.VarBlock)]
+        methods = [x for x in rest if isinstance(x, ast.MethodDecl)]
+        sfc = next((x for x in rest if isinstance(x, ast.Sfc)), None)
+        properties = [x for x in rest if isinstance(x, ast.PropertyDecl)]
+        members = (ast.VarBlock, ast.Sfc, ast.MethodDecl, ast.PropertyDecl)
+        body = [x for x in rest if not isinstance(x, members)]
+        return ast.Pou(
+            "FUNCTION_BLOCK",
+            name,
+            None,
+            blocks,
+            body,
+            span_of(c),
+            sfc,
+            methods=methods,
+            properties=properties,
+            modifier=modifier,
+            extends=extends,
+            implements=implements,
+        )
+
+    def property_decl(self, c):
+        modifiers = [x for x in c[1:] if isinstance(x, str) and not isinstance(x, Token)]
+        name_at = 1 + len(modifiers)
+        accessors = [x for x in c[name_at + 2 :] if isinstance(x, ast.AccessorDecl)]
+        return ast.PropertyDecl(str(c[name_at]), modifiers, c[name_at + 1], accessors, span_of(c))
+
+    def property_accessor(self, c):
+        kind = str(c[0]).upper()
+        if kind not in ("GET", "SET") or c[-1].type != f"END_{kind}":
+            raise StSyntaxError(f"a property holds GET ... END_GET and SET ... END_SET, not '{c[0]}'", span_of(c))
+        rest = c[1:-1]
+        blocks = [x for x in rest if isinstance(x, ast.VarBlock)]
+        return ast.AccessorDecl(kind, blocks, [x for x in rest if not isinstance(x, ast.VarBlock)], span_of(c))
+
+    def fb_modifier(self, c):
+        return c[0].type
+
+    def fb_extends(self, c):
+        return str(c[1])
+
+    def fb_implements(self, c):
+        return [str(x) for x in c[1:]]
+
+    def interface_decl(self, c):
+        methods = [x for x in c if isinstance(x, ast.MethodDecl)]
+        return ast.InterfaceDecl(str(c[1]), c[2] or [], methods, span_of(c))
+
+    def fb_extends_interfaces(self, c):
+        return [str(x) for x in c[1:]]
+
+    def assignment_attempt(self, c):
+        return ast.Assign(c[0], c[1], span_of(c), attempt=True)
+
+    def method_modifier(self, c):
+        return c[0].type
+
+    def method_decl(self, c):
+        modifiers = [x for x in c[1:] if isinstance(x, str) and not isinstance(x, Token)]
+        name_at = 1 + len(modifiers)
+        rest = c[name_at + 2 : -1]
+        blocks = [x for x in rest if isinstance(x, ast.VarBlock)]
+        body = [x for x in rest if not isinstance(x, ast.VarBlock)]
+        return ast.MethodDecl(str(c[name_at]), modifiers, c[name_at + 1], blocks, body, span_of(c))
 
     def sfc(self, c):
         return ast.Sfc(list(c), span_of(c))
@@ -196,11 +267,14 @@ class AstBuilder(Transformer):
         return None if isinstance(c[0], Token) and c[0].type == "STAR" else (c[0], c[1])
 
     def pointer_type(self, c):
-        kind = "POINTER TO" if c[0].type == "POINTER" else "REF_TO"
+        kind = {"POINTER": "POINTER TO", "REFERENCE": "REFERENCE TO"}.get(c[0].type, "REF_TO")
         return ast.PointerType(kind, c[1], span_of(c))
 
     def enum_type(self, c):
         return ast.EnumType(c[:-1], span_of(c))
+
+    def based_enum_type(self, c):
+        return ast.EnumType(c[1:-1], span_of(c), str(c[0]))
 
     def enum_value(self, c):
         return ast.EnumValue(str(c[0]), c[1], span_of(c))
@@ -285,6 +359,9 @@ class AstBuilder(Transformer):
     def assignment(self, c):
         return ast.Assign(c[0], c[1], span_of(c))
 
+    def ref_assignment(self, c):
+        return ast.RefAssign(c[0], c[2], span_of(c))
+
     def call_statement(self, c):
         return ast.CallStmt(c[0], span_of(c))
 
@@ -342,6 +419,9 @@ class AstBuilder(Transformer):
 
     def exit_statement(self, c):
         return ast.Exit(span_of(c))
+
+    def continue_statement(self, c):
+        return ast.Continue(span_of(c))
 
     def return_statement(self, c):
         return ast.Return(span_of(c))

@@ -63,10 +63,12 @@ class ArrayType(Type):
 @dataclass(frozen=True, eq=True)
 class PointerType(Type):
     target: Type
+    #: CODESYS REFERENCE TO: the checker reads and writes through it (``r := 5`` writes the target); REF= binds it
+    implicit: bool = False
 
     @property
     def name(self) -> str:  # type: ignore[override]
-        return f"REF_TO {self.target}"
+        return f"{'REFERENCE TO' if self.implicit else 'REF_TO'} {self.target}"
 
 
 @dataclass(eq=False)
@@ -88,6 +90,15 @@ class FbType(Type):
     name: str
     pou: Any = None
     std: Any = None
+
+
+@dataclass(frozen=True)
+class InterfaceType(Type):
+    """A variable of an INTERFACE's type: a reference to an instance of an FB implementing it, or NULL
+    (st/interfaces.py); ``info`` is the interface's PouInfo (kind INTERFACE)."""
+
+    name: str
+    info: Any = None
 
 
 @dataclass(frozen=True)
@@ -257,6 +268,8 @@ def assignable(target: Type, source: Type) -> str | None:
     """None when ``source`` may be stored in ``target``; "widen" for a lossless implicit conversion; else "error"."""
     if same(target, source):
         return None
+    if isinstance(target, InterfaceType):  # an instance (or interface) that implements it, or NULL
+        return None if isinstance(source, NullType) or implements(source, target) else "error"
     if isinstance(source, UNTYPED):
         return None if takes_literal(target, source) and literal_fits(target, source.value) else "error"
     if isinstance(target, Elementary) and isinstance(source, Elementary) and _widens(source, target):
@@ -314,3 +327,12 @@ def conversion_hint(target: Type, source: Type) -> str:
     if isinstance(target, (Elementary, StringType)) and isinstance(source, (Elementary, StringType)):
         return f" without a conversion such as {source.name}_TO_{target.name}"
     return ""
+
+
+def implements(source: Type, interface: InterfaceType) -> bool:
+    """Whether an instance of ``source`` (an FB, or any implementer of an interface) implements ``interface``."""
+    if isinstance(source, FbType) and source.pou is not None:
+        return source.pou.implements(interface.info)
+    if isinstance(source, InterfaceType):
+        return source.info.implements(interface.info)
+    return False

@@ -8,7 +8,7 @@ Layout::
     pous/<name>.st      ST POUs as complete IEC text (PROGRAM ... END_PROGRAM)
     pous/<name>.plant.st ST plants (a PROGRAM in IEC text; the file name makes it a plant)
     pous/<name>.il      IL POUs as complete IEC text, the body in IL (docs/il.md)
-    pous/<name>.ld.json / pous/<name>.fbd.json / pous/<name>.sfc.json   graphical POUs
+    pous/<name>.ld.json / .fbd.json / .cfc.json / .sfc.json   graphical POUs
     pous/<name>.st.json ST (.il.json: IL) POUs whose text cannot be split back exactly (e.g. a VAR block
                         without END_VAR while the user is still typing); never loses a character
     hmi/<name>.json     operator panels (project.json lists their order)
@@ -42,7 +42,7 @@ PROJECT_FILE = "project.json"
 TYPES_FILE = "types.st"
 GLOBALS_FILE = "globals.st"
 POUS_DIR = "pous"
-POU_SUFFIXES = (".st", ".plant.st", ".st.json", ".il", ".il.json", ".ld.json", ".fbd.json", ".sfc.json")
+POU_SUFFIXES = (".st", ".plant.st", ".st.json", ".il", ".il.json", ".ld.json", ".fbd.json", ".cfc.json", ".sfc.json")
 HMI_DIR = "hmi"
 EXERCISE_FILE = "EXERCISE.md"
 TESTS_DIR = "tests"
@@ -104,12 +104,19 @@ def test_path(name: str) -> str:
     return f"{TESTS_DIR}/{name}{TEST_SUFFIX}"
 
 
+#: The object orientation's fields of a POU, left out of its file when they hold their defaults.
+OO_KEYS = ("methods", "properties", "implements", "abstract", "final")
+
+
 def pou_file(pou: Pou) -> tuple[str, str]:
     """The stored path and content of one POU."""
     if pou.language in TEXT_LANGUAGES and round_trips(pou):
         suffix = ".plant.st" if pou.kind == "plant" else f".{pou.language}"
         return f"{POUS_DIR}/{pou.name}{suffix}", compose_pou_text(pou)
     data = pou.model_dump(mode="json", by_alias=True, exclude_none=True)
+    for key in OO_KEYS:  # only FBs that use object orientation carry these: other POUs' files stay as they were
+        if not data[key]:
+            del data[key]
     return f"{POUS_DIR}/{pou.name}.{pou.language}.json", dump_json(data)
 
 
@@ -309,7 +316,9 @@ def read_pou_file(path: Path) -> Pou:
     name = _pou_name_of(path.name)
     pou = _read_pou(path.parent.parent, name, _Reader(path.parent.parent, None, HINT, problems)) if name else None
     if pou is None:
-        message = f"{path.name} is not a POU file (.st, .plant.st, .ld.json, .fbd.json, .st.json)"
+        message = (
+            f"{path.name} is not a POU file (.st, .plant.st, .il, .ld.json, .fbd.json, .cfc.json, .sfc.json, .st.json)"
+        )
         raise ProjectLoadError(problems or [Diagnostic(code="BAD-FILE", file=path.name, message=message)])
     return pou
 
@@ -324,8 +333,8 @@ def _read_pou(folder: Path, name: str, read: _Reader) -> Pou | None:
     if len(paths) != 1:
         message = (
             (
-                f"POU {name!r} is listed in project.json but has no file pous/{name}.st, .il, .ld.json, .fbd.json "
-                "or .sfc.json"
+                f"POU {name!r} is listed in project.json but has no file pous/{name}.st, .il, .ld.json, .fbd.json, "
+                ".cfc.json or .sfc.json"
             )
             if not paths
             else (f"POU {name!r} has several files: {', '.join(p.name for p in paths)}; keep one")

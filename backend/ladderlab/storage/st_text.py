@@ -12,7 +12,7 @@ import re
 from dataclasses import dataclass
 
 from ..model import Pou
-from ..model.project import Language, PouKind
+from ..model.project import Language, Method, PouKind, Property
 from ..st.il_parser import looks_like_il
 
 _TOKEN = re.compile(
@@ -173,18 +173,45 @@ def _split_pou(text: str, words: list[Word]) -> Pou:
 
 
 def compose_pou_text(pou: Pou) -> str:
-    """The complete IEC text of an ST or IL POU, as stored in ``pous/<name>.st`` / ``.il``."""
-    header = f"{POU_HEADER[pou.kind]} {pou.name}"
+    """The complete IEC text of an ST or IL POU, as stored in ``pous/<name>.st`` / ``.il``; a function block's
+    ABSTRACT / FINAL, EXTENDS, IMPLEMENTS and METHODs (after its VAR blocks, IEC 61131-3 ed. 3) included."""
+    modifier = "ABSTRACT " if pou.abstract else "FINAL " if pou.final else ""
+    header = f"{POU_HEADER[pou.kind]} {modifier}{pou.name}"
     if pou.kind == "function":
         header += f" : {pou.return_type}"
+    if pou.extends:
+        header += f" EXTENDS {pou.extends}"
+    if pou.implements:
+        header += f" IMPLEMENTS {', '.join(pou.implements)}"
     assert isinstance(pou.body, str), "only ST POUs are stored as text"
     parts = [header]
     if pou.declarations:
         parts.append(pou.declarations)
+    parts += [_method_text(method) for method in pou.methods]
+    parts += [_property_text(prop) for prop in pou.properties]
     if pou.body:
         parts.append(pou.body)
     parts.append(POU_END[pou.kind])
     return "\n".join(parts) + "\n"
+
+
+def _method_text(method: Method) -> str:
+    modifiers = [method.access, *(["FINAL"] if method.final else []), *(["ABSTRACT"] if method.abstract else [])]
+    header = f"METHOD {' '.join(modifiers)} {method.name}" + (f" : {method.return_type}" if method.return_type else "")
+    return "\n".join([header, *_texts(method.declarations, method.body), "END_METHOD"])
+
+
+def _property_text(prop: Property) -> str:
+    parts = [f"PROPERTY {prop.access} {prop.name} : {prop.type}"]
+    for kind, accessor in (("GET", prop.get), ("SET", prop.set)):
+        if accessor is not None:
+            parts += [kind, *_texts(accessor.declarations, accessor.body), f"END_{kind}"]
+    return "\n".join([*parts, "END_PROPERTY"])
+
+
+def _texts(*texts: str) -> list[str]:
+    """A method's or accessor's declarations and body, without the blank lines a ``.st`` import pads them with."""
+    return [text.strip("\n") for text in texts if text.strip()]
 
 
 def round_trips(pou: Pou) -> bool:

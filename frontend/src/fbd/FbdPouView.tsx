@@ -1,4 +1,4 @@
-// An FBD POU in the workspace: the FBD editor with the project's library and symbols, the
+// An FBD or CFC POU in the workspace: the FBD editor with the project's library and symbols, the
 // check's diagnostics, online mode, the POU's breakpoints (debug/store.ts) and the tests' coverage tint.
 import { useCallback, useMemo, type ReactNode } from "react";
 import type { FbdBody, Pou } from "../generated/api";
@@ -65,6 +65,7 @@ export function FbdPouView({
       debug={debug}
       onVisibleChange={live.onVisibleChange}
       focus={focus}
+      chart={pou.language === "cfc"}
     />
   );
 }

@@ -3,6 +3,7 @@
 import type { SymbolInfo } from "../generated/api";
 import { freshId } from "../ld/ids";
 import { arranged } from "./arrange";
+import { ordered } from "./order";
 import { refusal, type Connection } from "./compat";
 import {
   findNode,
@@ -308,13 +309,13 @@ export function arrangeNetwork(
   network: string,
   height: (node: FbdNode) => number,
   order: readonly string[] | null,
+  chart = false,
 ): EditResult {
   const net = networksOf(body).find((n) => n.id === network);
   if (!net) return fail(`There is no network ${network}.`);
   const laid = arranged(net, height);
-  const kept = order?.filter((id) =>
-    nodesOf(net).some((n) => n.id === id && (kindOf(n) === "block" || kindOf(n) === "output")),
-  );
+  // the order pinned: a chart's execution order numbers (returns too) stay as they were
+  const kept = order?.filter((id) => ordered(net, id, chart));
   const next = kept?.length ? { ...laid, order: kept } : laid;
   return done(
     updateNetwork(body, network, () => next),

@@ -1,14 +1,52 @@
 // Changing the execution order where the wiring leaves it open (the network's `order` list,
 // docs/diagrams.md "Evaluation order"): "run earlier/later" swaps a block or output node with its
 // neighbour in the order the lowering reports, unless one feeds the other - data flow always wins.
+// On a CFC chart (docs/diagrams.md "CFC") the order list is the order: every executed element
+// (blocks, outputs, returns) moves freely, and a wire against the order carries the previous scan.
 import { kindOf, networksOf, nodesOf, wiresOf, type FbdBody, type FbdNetwork, type PinRef } from "./model";
 import type { EditResult } from "./ops";
 
-/** Nodes whose place the `order` list decides (inputs follow their consumer, jumps and returns run last). */
-const ordered = (network: FbdNetwork, id: string): boolean => {
+/** Elements with an execution order number on a CFC chart (inputs are read where they are used). */
+const EXECUTED = new Set(["block", "output", "jump", "return"]);
+
+/** Nodes whose place the `order` list decides (inputs follow their consumer; in FBD jumps and returns run last). */
+export const ordered = (network: FbdNetwork, id: string, chart = false): boolean => {
   const node = nodesOf(network).find((n) => n.id === id);
-  return node !== undefined && (kindOf(node) === "block" || kindOf(node) === "output");
+  if (node === undefined) return false;
+  return chart ? EXECUTED.has(kindOf(node)) : kindOf(node) === "block" || kindOf(node) === "output";
 };
+
+/** A chart's execution order numbers (CFC-02): node id -> 1, 2, ... over its executed elements in `order`. */
+export function orderNumbers(network: FbdNetwork, order: readonly string[]): Map<string, number> {
+  const numbers = new Map<string, number>();
+  for (const id of order) if (ordered(network, id, true)) numbers.set(id, numbers.size + 1);
+  return numbers;
+}
+
+/**
+ * A chart's input pins fed against the execution order (by an element with the same or a higher number):
+ * they read the previous scan's value, so the producer's value of this scan is not theirs to show online.
+ * Keys are `<node id>/in:<PIN>`.
+ */
+export function feedbackPins(network: FbdNetwork, numbers: ReadonlyMap<string, number>): Set<string> {
+  const found = new Set<string>();
+  for (const wire of wiresOf(network)) {
+    const from = numbers.get(wire.from.node);
+    const to = numbers.get(wire.to.node);
+    if (from !== undefined && to !== undefined && from >= to)
+      found.add(`${wire.to.node}/in:${wire.to.pin.toUpperCase()}`);
+  }
+  return found;
+}
+
+/** "Order by data flow" on a chart: its executed elements in `flow`, the FBD order the backend reported. */
+export function orderByDataFlow(body: FbdBody, networkId: string, flow: readonly string[]): EditResult {
+  const network = networksOf(body).find((n) => n.id === networkId);
+  if (!network) return { ok: false, error: `There is no network ${networkId}.` };
+  const order = flow.filter((id) => ordered(network, id, true));
+  const networks = networksOf(body).map((n) => (n.id === networkId ? { ...n, order } : n));
+  return { ok: true, body: { ...body, networks }, select: [] };
+}
 
 /** The node really producing what `ref` carries: a continuation stands for the wire into its connector. */
 function producer(network: FbdNetwork, ref: PinRef, seen = new Set<string>()): string | undefined {
@@ -32,6 +70,7 @@ export function feeds(network: FbdNetwork, a: string, b: string): boolean {
 /**
  * Moves `id` one place earlier (-1) or later (+1) among the blocks and output nodes of `order`
  * (the evaluation order the backend reported) and stores the result as the network's order list.
+ * On a `chart` (CFC) returns and jumps move too, and a move against the wiring is allowed.
  */
 export function moveInOrder(
   body: FbdBody,
@@ -39,23 +78,25 @@ export function moveInOrder(
   order: readonly string[],
   id: string,
   delta: -1 | 1,
+  chart = false,
 ): EditResult {
   const network = networksOf(body).find((n) => n.id === networkId);
   if (!network) return { ok: false, error: `There is no network ${networkId}.` };
-  if (!ordered(network, id))
+  if (!ordered(network, id, chart))
     return {
       ok: false,
-      error:
-        "Only blocks and output nodes have an order to change: inputs run just before their first consumer, jumps and returns last.",
+      error: chart
+        ? "Inputs have no execution order number: they are read where their consumer runs."
+        : "Only blocks and output nodes have an order to change: inputs run just before their first consumer, jumps and returns last.",
     };
-  const sequence = order.filter((n) => ordered(network, n));
+  const sequence = order.filter((n) => ordered(network, n, chart));
   const at = sequence.indexOf(id);
   if (at < 0) return { ok: false, error: "The execution order is not known yet; try again in a moment." };
   const other = sequence[at + delta];
   if (other === undefined)
     return { ok: false, error: delta < 0 ? `${id} already runs first.` : `${id} already runs last.` };
   const [first, second] = delta < 0 ? [other, id] : [id, other];
-  if (feeds(network, first, second))
+  if (!chart && feeds(network, first, second))
     return { ok: false, error: `${first} feeds ${second}: data flow makes ${first} run first.` };
   const next = [...sequence];
   [next[at], next[at + delta]] = [next[at + delta]!, next[at]!];

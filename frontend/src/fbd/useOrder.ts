@@ -10,6 +10,10 @@ export const ORDER_DEBOUNCE_MS = 250;
 export const fetchOrder = (network: FbdNetwork): Promise<FbdOrder> =>
   unwrap(http.POST("/api/fbd/order", { body: network }));
 
+/** A CFC chart's execution order (its order list decides, CFC-02). */
+export const fetchChartOrder = (network: FbdNetwork): Promise<FbdOrder> =>
+  unwrap(http.POST("/api/fbd/order", { body: network, params: { query: { chart: true } } }));
+
 /** Network id -> node ids in execution order, for the networks in `only` (missing until the server has answered). */
 export function useEvaluationOrder(
   body: FbdBody,

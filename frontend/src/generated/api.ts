@@ -50,7 +50,11 @@ export interface paths {
     };
     get?: never;
     put?: never;
-    /** Network Order */
+    /**
+     * Network Order
+     * @description ``chart``: a CFC chart, whose order list is the order (CFC-02); without it, the FBD order - data flow
+     *     first, the order list among what the wiring leaves open - which is also a chart's "order by data flow".
+     */
     post: operations["network_order_api_fbd_order_post"];
     delete?: never;
     options?: never;
@@ -89,6 +93,26 @@ export interface paths {
      * @description Store a PLCopen XML document (the request body) as a new project; warnings come back with it.
      */
     post: operations["import_xml_api_import_plcopen_post"];
+    delete?: never;
+    options?: never;
+    head?: never;
+    patch?: never;
+    trace?: never;
+  };
+  "/api/ld/il": {
+    parameters: {
+      query?: never;
+      header?: never;
+      path?: never;
+      cookie?: never;
+    };
+    get?: never;
+    put?: never;
+    /**
+     * Ld As Il
+     * @description One LD network as IL, for the editor's read-only "View as IL" (issue 26); stateless.
+     */
+    post: operations["ld_as_il_api_ld_il_post"];
     delete?: never;
     options?: never;
     head?: never;
@@ -808,6 +832,24 @@ export type webhooks = Record<string, never>;
 export interface components {
   schemas: {
     /**
+     * Accessor
+     * @description A PROPERTY's GET or SET: its own variables and ST body (GET assigns the property's name, SET reads it).
+     */
+    Accessor: {
+      /**
+       * Body
+       * @description ST statements.
+       * @default
+       */
+      body?: string;
+      /**
+       * Declarations
+       * @description ST text of its VAR...END_VAR blocks, as typed.
+       * @default
+       */
+      declarations?: string;
+    };
+    /**
      * Bar
      * @description A level between ``min`` and ``max``, as a bar or a tank; red past an alarm limit.
      */
@@ -952,6 +994,17 @@ export interface components {
        * @enum {string}
        */
       type: "box";
+    };
+    /**
+     * CfcBody
+     * @description A CFC POU's body: ``networks`` holds exactly one network, the chart.
+     */
+    CfcBody: {
+      /**
+       * Networks
+       * @description The chart.
+       */
+      networks?: components["schemas"]["FbdNetwork"][];
     };
     /**
      * CheckReport
@@ -1686,6 +1739,22 @@ export interface components {
       /** Y */
       y: number;
     };
+    /**
+     * LdAsIl
+     * @description ``POST /api/ld/il``: an LD network as IL ("View as IL", read-only), or why it has no IL equivalent.
+     */
+    LdAsIl: {
+      /**
+       * Reason
+       * @description Why there is no IL (the element and what it needs).
+       */
+      reason?: string | null;
+      /**
+       * Text
+       * @description The IL text; null when the network has no plain IL equivalent.
+       */
+      text: string | null;
+    };
     /** LdBody */
     LdBody: {
       /** Networks */
@@ -1753,6 +1822,51 @@ export interface components {
     Login: {
       /** Secret */
       secret: string;
+    };
+    /**
+     * Method
+     * @description A METHOD of a FUNCTION_BLOCK (IEC 61131-3 ed. 3, CODESYS): its own variables and ST body; it works on the
+     *     variables of the instance it is called on (docs/st.md, object orientation).
+     */
+    Method: {
+      /**
+       * Abstract
+       * @description ABSTRACT: no body; a derived FB must implement it.
+       * @default false
+       */
+      abstract?: boolean;
+      /**
+       * Access
+       * @description Who may call it; CODESYS's default is PUBLIC.
+       * @default PUBLIC
+       * @enum {string}
+       */
+      access?: "PUBLIC" | "PRIVATE" | "PROTECTED" | "INTERNAL";
+      /**
+       * Body
+       * @description ST statements.
+       * @default
+       */
+      body?: string;
+      /**
+       * Declarations
+       * @description ST text of its VAR...END_VAR blocks, as typed.
+       * @default
+       */
+      declarations?: string;
+      /**
+       * Final
+       * @description FINAL: an FB derived from this one cannot override it.
+       * @default false
+       */
+      final?: boolean;
+      /** Name */
+      name: string;
+      /**
+       * Return Type
+       * @description The result type; None: a method without a value.
+       */
+      return_type?: string | null;
     };
     /**
      * Motion
@@ -2131,10 +2245,16 @@ export interface components {
     };
     /**
      * Pou
-     * @description A program organisation unit. ``body`` is ST or IL text, an ``LdBody``, an ``FbdBody`` or an ``SfcBody`` per
-     *     ``language``.
+     * @description A program organisation unit. ``body`` is ST or IL text, an ``LdBody``, an ``FbdBody``, a ``CfcBody`` (one
+     *     FBD chart) or an ``SfcBody`` per ``language``.
      */
     Pou: {
+      /**
+       * Abstract
+       * @description Function blocks only: ABSTRACT, it cannot be instantiated.
+       * @default false
+       */
+      abstract?: boolean;
       /**
        * Body
        * @default
@@ -2142,6 +2262,7 @@ export interface components {
       body?:
         | string
         | components["schemas"]["LdBody"]
+        | components["schemas"]["CfcBody"]
         | components["schemas"]["FbdBody"]
         | components["schemas"]["SfcBody"];
       /**
@@ -2151,6 +2272,22 @@ export interface components {
        */
       declarations?: string;
       /**
+       * Extends
+       * @description Function blocks only: the function block it EXTENDS.
+       */
+      extends?: string | null;
+      /**
+       * Final
+       * @description Function blocks only: FINAL, no function block extends it.
+       * @default false
+       */
+      final?: boolean;
+      /**
+       * Implements
+       * @description Function blocks only: the INTERFACEs (declared in the types) it IMPLEMENTS.
+       */
+      implements?: string[];
+      /**
        * Kind
        * @enum {string}
        */
@@ -2159,9 +2296,19 @@ export interface components {
        * Language
        * @enum {string}
        */
-      language: "st" | "ld" | "fbd" | "il" | "sfc";
+      language: "st" | "ld" | "fbd" | "cfc" | "il" | "sfc";
+      /**
+       * Methods
+       * @description Function blocks only: their METHODs.
+       */
+      methods?: components["schemas"]["Method"][];
       /** Name */
       name: string;
+      /**
+       * Properties
+       * @description Function blocks only: their PROPERTYs.
+       */
+      properties?: components["schemas"]["Property"][];
       /**
        * Return Type
        * @description Functions only: the result type.
@@ -2321,6 +2468,29 @@ export interface components {
       problems?: components["schemas"]["Diagnostic"][];
       /** Revision */
       revision: string | null;
+    };
+    /**
+     * Property
+     * @description A PROPERTY of a FUNCTION_BLOCK (CODESYS, IEC 61131-3 ed. 3 draft): read as ``inst.P`` through its GET,
+     *     written as ``inst.P := v`` through its SET; a missing accessor makes it write-only or read-only.
+     */
+    Property: {
+      /**
+       * Access
+       * @description Who may read and write it.
+       * @default PUBLIC
+       * @enum {string}
+       */
+      access?: "PUBLIC" | "PRIVATE" | "PROTECTED" | "INTERNAL";
+      get?: components["schemas"]["Accessor"] | null;
+      /** Name */
+      name: string;
+      set?: components["schemas"]["Accessor"] | null;
+      /**
+       * Type
+       * @description Its type, as written.
+       */
+      type: string;
     };
     /**
      * PushButton
@@ -3555,9 +3725,11 @@ export interface components {
   headers: never;
   pathItems: never;
 }
+export type Accessor = components["schemas"]["Accessor"];
 export type Bar = components["schemas"]["Bar"];
 export type Block = components["schemas"]["Block"];
 export type Box = components["schemas"]["Box"];
+export type CfcBody = components["schemas"]["CfcBody"];
 export type CheckReport = components["schemas"]["CheckReport"];
 export type Coil = components["schemas"]["Coil"];
 export type Compare = components["schemas"]["Compare"];
@@ -3594,10 +3766,12 @@ export type IoPoint = components["schemas"]["IoPoint"];
 export type Jump = components["schemas"]["Jump"];
 export type Label = components["schemas"]["Label"];
 export type Lamp = components["schemas"]["Lamp"];
+export type LdAsIl = components["schemas"]["LdAsIl"];
 export type LdBody = components["schemas"]["LdBody"];
 export type LdNetwork = components["schemas"]["LdNetwork"];
 export type LibraryEntry = components["schemas"]["LibraryEntry"];
 export type Login = components["schemas"]["Login"];
+export type Method = components["schemas"]["Method"];
 export type Motion = components["schemas"]["Motion"];
 export type Multistate = components["schemas"]["Multistate"];
 export type NumericDisplay = components["schemas"]["NumericDisplay"];
@@ -3616,6 +3790,7 @@ export type ProgramInstance = components["schemas"]["ProgramInstance"];
 export type Project = components["schemas"]["Project"];
 export type ProjectDocument = components["schemas"]["ProjectDocument"];
 export type ProjectSummary = components["schemas"]["ProjectSummary"];
+export type Property = components["schemas"]["Property"];
 export type PushButton = components["schemas"]["PushButton"];
 export type Reference = components["schemas"]["Reference"];
 export type ReferenceList = components["schemas"]["ReferenceList"];
@@ -3735,7 +3910,9 @@ export interface operations {
   };
   network_order_api_fbd_order_post: {
     parameters: {
-      query?: never;
+      query?: {
+        chart?: boolean;
+      };
       header?: never;
       path?: never;
       cookie?: never;
@@ -3841,6 +4018,39 @@ export interface operations {
       };
       /** @description Too many projects in the workspace. */
       429: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["ErrorResponse"];
+        };
+      };
+    };
+  };
+  ld_as_il_api_ld_il_post: {
+    parameters: {
+      query?: never;
+      header?: never;
+      path?: never;
+      cookie?: never;
+    };
+    requestBody: {
+      content: {
+        "application/json": components["schemas"]["LdNetwork"];
+      };
+    };
+    responses: {
+      /** @description Successful Response */
+      200: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["LdAsIl"];
+        };
+      };
+      /** @description Bad name, invalid model or a project that does not load; see the diagnostics. */
+      422: {
         headers: {
           [name: string]: unknown;
         };

@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { markOffset, shownScan, stepScan } from "./HistoryBar";
+import { findPlaceholder, markOffset, shownScan, stepScan } from "./HistoryBar";
 import { applyMessage, emptyMonitor } from "./monitor";
 
 describe("scan history in the monitor state (issue 23)", () => {
@@ -33,5 +33,11 @@ describe("scan history in the monitor state (issue 23)", () => {
     expect(markOffset(6, 1, 11)).toBe(50);
     expect(markOffset(11, 1, 11)).toBe(100);
     expect(markOffset(3, 3, 3)).toBe(0);
+  });
+
+  it("suggests the first watched variable in the find field, a generic hint when nothing is watched", () => {
+    expect(findPlaceholder("changed", "Main.Motor")).toBe("Main.Motor");
+    expect(findPlaceholder("true", "Main.Motor")).toBe("a condition, e.g. on Main.Motor");
+    expect(findPlaceholder("changed", undefined)).toBe("a variable, e.g. Main.Motor");
   });
 });

@@ -125,11 +125,18 @@ function HistoryMarks({ first, last, marked }: { first: number; last: number; ma
   );
 }
 
+/** What the find field suggests: the first watched variable (or a condition on it), else a generic hint. */
+export function findPlaceholder(what: "changed" | "true", watched: string | undefined): string {
+  if (!watched) return what === "changed" ? "a variable, e.g. Main.Motor" : "a condition, e.g. Main.Level >= 80";
+  return what === "changed" ? watched : `a condition, e.g. on ${watched}`;
+}
+
 /** Jump to the previous or next scan where a variable changed or a condition became TRUE. */
 function HistoryFind({ scan }: { scan: number }) {
   const [text, setText] = useState("");
   const [what, setWhat] = useState<"changed" | "true">("changed");
   const [note, setNote] = useState<string | null>(null);
+  const watched = useOnline((s) => s.watch[0]);
   const find = async (direction: 1 | -1) => {
     const s = onlineStore.getState();
     if (!s.simulation || !text.trim()) return;
@@ -146,7 +153,7 @@ function HistoryFind({ scan }: { scan: number }) {
     <span className="history-find">
       <input
         aria-label="Find in history"
-        placeholder="Motor, Tank.Level >= 80"
+        placeholder={findPlaceholder(what, watched)}
         value={text}
         onChange={(event) => setText(event.target.value)}
         onKeyDown={(event) => {

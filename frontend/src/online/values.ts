@@ -87,14 +87,53 @@ const dateOf = (ms: number) => {
   return `${day.getUTCFullYear()}-${pad(day.getUTCMonth() + 1)}-${pad(day.getUTCDate())}`;
 };
 
-/** TIME and the date types, from the server's ms (dates since 1970-01-01 UTC), as IEC literals. */
-const TIME_LITERALS: Record<string, (ms: number) => string> = {
+/** `LTIME#1h2m3s4ms5us6ns`: an LTIME (the server sends ns) with its non-zero units, largest first. */
+function ltimeLiteral(ns: number): string {
+  const units: [string, number][] = [
+    ["d", 86_400e9],
+    ["h", 3_600e9],
+    ["m", 60e9],
+    ["s", 1e9],
+    ["ms", 1e6],
+    ["us", 1e3],
+    ["ns", 1],
+  ];
+  let rest = Math.abs(ns);
+  let text = "";
+  for (const [unit, size] of units) {
+    const count = Math.floor(rest / size);
+    if (count) text += `${count}${unit}`;
+    rest -= count * size;
+  }
+  return `LTIME#${ns < 0 ? "-" : ""}${text || "0s"}`;
+}
+
+/** Nanoseconds since midnight as `12:30:00` or `12:30:00.00000025` (the fraction only when there is one). */
+function clockNs(ns: number): string {
+  const inDay = ns % 86_400e9;
+  const nanos = inDay % 1e9;
+  const fraction = nanos ? `.${pad(nanos, 9).replace(/0+$/, "")}` : "";
+  return `${clock(Math.floor(inDay / 1e9) * 1000)}${fraction}`;
+}
+
+/**
+ * TIME and the date types, from the server's ms (dates since 1970-01-01 UTC), and their IEC 3rd edition long
+ * forms, from ns, as IEC literals. A long value beyond 2^53 ns (an LTIME over 104 days, any LDATE_AND_TIME) reaches
+ * the browser as the nearest double: shown to about a microsecond.
+ */
+const TIME_LITERALS: Record<string, (value: number) => string> = {
   TIME: timeLiteral,
   DATE: (ms) => `D#${dateOf(ms)}`,
   TIME_OF_DAY: (ms) => `TOD#${clock(ms)}`,
   TOD: (ms) => `TOD#${clock(ms)}`,
   DATE_AND_TIME: (ms) => `DT#${dateOf(ms)}-${clock(ms)}`,
   DT: (ms) => `DT#${dateOf(ms)}-${clock(ms)}`,
+  LTIME: ltimeLiteral,
+  LDATE: (ns) => `LDATE#${dateOf(ns / 1e6)}`,
+  LTIME_OF_DAY: (ns) => `LTOD#${clockNs(ns)}`,
+  LTOD: (ns) => `LTOD#${clockNs(ns)}`,
+  LDATE_AND_TIME: (ns) => `LDT#${dateOf(ns / 1e6)}-${clockNs(ns)}`,
+  LDT: (ns) => `LDT#${dateOf(ns / 1e6)}-${clockNs(ns)}`,
 };
 
 /**

@@ -28,6 +28,7 @@ const LANGUAGE = {
   st: "Structured Text",
   ld: "Ladder Diagram",
   fbd: "Function Block Diagram",
+  cfc: "Continuous Function Chart",
   sfc: "Sequential Function Chart",
   il: "Instruction List",
 } as const;
@@ -143,7 +144,7 @@ function PouSection({
     <section className="print-pou" aria-label={title} data-pou={pou.name}>
       <h2>
         {title} <small>{LANGUAGE[pou.language]}</small>
-        {pou.language === "ld" || pou.language === "fbd" ? (
+        {pou.language === "ld" || pou.language === "fbd" || pou.language === "cfc" ? (
           <button type="button" className="print-screen-only" onClick={saveSvg}>
             Save diagram as SVG
           </button>
@@ -151,11 +152,17 @@ function PouSection({
       </h2>
       <h3>Declarations</h3>
       <DeclarationTable symbols={symbols} />
-      <h3>{pou.language === "st" || pou.language === "il" ? "Body" : pou.language === "sfc" ? "Chart" : "Networks"}</h3>
+      <h3>
+        {pou.language === "st" || pou.language === "il"
+          ? "Body"
+          : pou.language === "sfc" || pou.language === "cfc"
+            ? "Chart"
+            : "Networks"}
+      </h3>
       <div ref={diagram}>
         {pou.language === "ld" ? (
           <LdPrint body={pou.body as LdBody} library={library} />
-        ) : pou.language === "fbd" ? (
+        ) : pou.language === "fbd" || pou.language === "cfc" ? (
           <FbdPrint body={pou.body as FbdBody} library={library} symbols={[...symbols, ...globals]} />
         ) : pou.language === "sfc" ? (
           <SfcPrint

@@ -4,6 +4,7 @@
 // toolbar, the bottom panels, Save (Ctrl+S) and the dialog for a save conflict (reload theirs or
 // overwrite deliberately).
 import {
+  Fragment,
   lazy,
   Suspense,
   useCallback,
@@ -54,6 +55,7 @@ import { useHidden, useStoredSize } from "./layout";
 import { KindPicker, PouActions } from "./PouActions";
 import { TestFileActions } from "../tests/TestFileActions";
 import { isProjectPart, PROJECT_PARTS, type ProjectPart } from "./parts";
+import { PouMembers } from "./PouMembers";
 import { typeRows } from "./types";
 import { keepSession, restoreSession, type SessionStores } from "./session";
 import { traceStore } from "../trace/store";
@@ -79,7 +81,7 @@ const KINDS: { kind: Pou["kind"]; title: string }[] = [
   { kind: "function", title: "Functions" },
   { kind: "plant", title: "Plants" },
 ];
-const LANGUAGE = { st: "ST", ld: "LD", fbd: "FBD", il: "IL", sfc: "SFC" } as const;
+const LANGUAGE = { st: "ST", ld: "LD", fbd: "FBD", cfc: "CFC", il: "IL", sfc: "SFC" } as const;
 /** Languages whose body is text, edited in the text editor (docs/il.md). */
 const TEXT_LANGUAGES: readonly Pou["language"][] = ["st", "il"];
 
@@ -269,23 +271,26 @@ function ProjectTree() {
             {group.length ? (
               <ul>
                 {group.map((p) => (
-                  <li key={p.name} className="tree-row">
-                    <button
-                      type="button"
-                      className="tree-item"
-                      aria-current={active === p.name ? "true" : undefined}
-                      onClick={() => openPou(p.name)}
-                    >
-                      <span className="tree-name">{p.name}</span>
-                      <span className={`lang lang-${p.language}`}>{LANGUAGE[p.language]}</span>
-                      {changed.includes(p.name) ? (
-                        <span className="unsaved" aria-label="unsaved changes">
-                          ●
-                        </span>
-                      ) : null}
-                    </button>
-                    <PouActions pou={p} />
-                  </li>
+                  <Fragment key={p.name}>
+                    <li className="tree-row">
+                      <button
+                        type="button"
+                        className="tree-item"
+                        aria-current={active === p.name ? "true" : undefined}
+                        onClick={() => openPou(p.name)}
+                      >
+                        <span className="tree-name">{p.name}</span>
+                        <span className={`lang lang-${p.language}`}>{LANGUAGE[p.language]}</span>
+                        {changed.includes(p.name) ? (
+                          <span className="unsaved" aria-label="unsaved changes">
+                            ●
+                          </span>
+                        ) : null}
+                      </button>
+                      <PouActions pou={p} />
+                    </li>
+                    <PouMembers pou={p} open={() => openPou(p.name)} />
+                  </Fragment>
                 ))}
               </ul>
             ) : (
@@ -501,7 +506,7 @@ function PouView({ name }: { name: string }) {
     content = <StPouView pou={pou} />;
   } else if (pou.language === "ld" && history) {
     content = <LdPouView pou={pou} history={history} />;
-  } else if (pou.language === "fbd" && fbdHistory) {
+  } else if ((pou.language === "fbd" || pou.language === "cfc") && fbdHistory) {
     content = <FbdPouView pou={pou} history={fbdHistory} onlineActions={<OnlineActions pou={pou} />} />;
   } else if (pou.language === "sfc" && sfcHistory) {
     content = <SfcPouView pou={pou} history={sfcHistory} onlineActions={<OnlineActions pou={pou} />} />;

@@ -207,7 +207,7 @@ function diagramHistories(project: Project, tabs: string[], active: string | nul
   for (const tab of tabs) {
     const pou = pouOf(project, tab);
     if (pou?.language === "ld") histories[tab] = historyOf(ldBodyOf(pou));
-    if (pou?.language === "fbd") fbdHistories[tab] = historyOf(fbdBodyOf(pou));
+    if (pou?.language === "fbd" || pou?.language === "cfc") fbdHistories[tab] = historyOf(fbdBodyOf(pou));
   }
   return { tabs, active, histories, fbdHistories };
 }
@@ -314,7 +314,7 @@ export function createWorkspaceStore(
         const patch: Partial<WorkspaceData> = { active: pou, tabs: tabs.includes(pou) ? tabs : [...tabs, pou] };
         if (found.language === "ld" && !histories[pou])
           patch.histories = { ...histories, [pou]: historyOf(ldBodyOf(found)) };
-        if (found.language === "fbd" && !get().fbdHistories[pou])
+        if ((found.language === "fbd" || found.language === "cfc") && !get().fbdHistories[pou])
           patch.fbdHistories = { ...get().fbdHistories, [pou]: historyOf(fbdBodyOf(found)) };
         if (found.language === "sfc" && !get().sfcHistories[pou])
           patch.sfcHistories = { ...get().sfcHistories, [pou]: historyOf(sfcBodyOf(found)) };
@@ -379,7 +379,14 @@ export function createWorkspaceStore(
           kind,
           language,
           declarations: emptyDeclarations(kind),
-          body: language === "st" || language === "il" ? "" : language === "sfc" ? sfcStart() : { networks: [] },
+          body:
+            language === "st" || language === "il"
+              ? ""
+              : language === "sfc"
+                ? sfcStart()
+                : language === "cfc"
+                  ? { networks: [{ id: "chart", nodes: [], wires: [] }] } // one chart, no networks (CFC-01)
+                  : { networks: [] },
           ...(kind === "function" ? { return_type: "BOOL" } : {}),
         };
         replacePous(name, (pous) => [...pous, pou]);

@@ -118,6 +118,8 @@ export interface InlineMark {
   /** Document offset the value is shown at (the end of the occurrence). */
   pos: number;
   shown: ValueShown;
+  /** IL: the accumulator after the line that ends at `pos` (shown as "CR value"). */
+  accumulator?: boolean;
 }
 
 /** The numbers an element's indices stand for now; null while one is unknown. */
@@ -182,13 +184,20 @@ class ValueWidget extends WidgetType {
   }
   override eq(other: ValueWidget) {
     const [a, b] = [this.mark.shown, other.mark.shown];
-    return a.text === b.text && a.bool === b.bool && a.forced === b.forced && a.prepared === b.prepared;
+    return (
+      a.text === b.text &&
+      a.bool === b.bool &&
+      a.forced === b.forced &&
+      a.prepared === b.prepared &&
+      this.mark.accumulator === other.mark.accumulator
+    );
   }
   override toDOM() {
     const { shown } = this.mark;
     const span = document.createElement("span");
-    span.className = `cm-st-value ${valueTagClass(shown)}`;
-    span.dataset.pos = String(this.mark.pos);
+    span.className = `cm-st-value ${valueTagClass(shown)}${this.mark.accumulator ? " cm-il-accumulator" : ""}`;
+    if (this.mark.accumulator) span.title = "The accumulator (current result) after this line";
+    if (!this.mark.accumulator) span.dataset.pos = String(this.mark.pos); // no variable's menu on the CR
     span.textContent = shown.text;
     if (shown.forced) {
       const mark = document.createElement("span");
@@ -242,6 +251,8 @@ const occurrenceAt = (view: StOnlineView | undefined, pos: number) =>
 /** Values as small tags after their variable, in the classes of every other view (styles.css, value-tag). */
 const valueTheme = EditorView.baseTheme({
   ".cm-st-value": { marginLeft: "2px", fontSize: "85%" },
+  ".cm-il-accumulator": { marginLeft: "1.5em" },
+  ".cm-il-accumulator::before": { content: '"CR "', opacity: 0.7 },
   ".cm-st-value-tooltip": { padding: "2px 6px", fontFamily: "ui-monospace, monospace" },
 });
 

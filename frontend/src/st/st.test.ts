@@ -152,8 +152,10 @@ describe("ST autocomplete (issue 9: variables, standard functions with a formal 
     ]);
     // Then the backend's keywords and types (issue 22 item 3): none the checker would reject.
     const words = options.filter((o) => !own.includes(o)).map((o) => o.label);
-    expect(words).toEqual(expect.arrayContaining(["IF", "END_IF", "VAR_INPUT", "WSTRING", "TOD", "LREAL"]));
-    expect(words.filter((w) => ["CHAR", "WCHAR", "LTIME", "CONTINUE"].includes(w))).toEqual([]);
+    expect(words).toEqual(
+      expect.arrayContaining(["IF", "END_IF", "VAR_INPUT", "WSTRING", "TOD", "LREAL", "LTIME", "CONTINUE"]),
+    );
+    expect(words.filter((w) => ["CHAR", "WCHAR"].includes(w))).toEqual([]);
     expect(options.slice(0, own.length)).toEqual(own); // the POU's own names first
   });
 

@@ -3,6 +3,7 @@
 // halt), turns the monitor's values into inline marks and hover text, prepares a value on a
 // double-click (CODESYS) and offers write / force / release from a right click with the LD
 // editor's menu and value prompt. An array element `a[i]` acts on the element `i` names now.
+// An IL body also shows the accumulator after each line (ilOnline.ts), from the instance's probes.
 import { useEffect, useMemo, useState, type ReactNode } from "react";
 import type { Pou } from "../generated/api";
 import { ContextMenu } from "../ld/editor/ContextMenu";
@@ -19,6 +20,7 @@ import {
   type Occurrence,
   type StOnlineView,
 } from "./inlineValues";
+import { accumulatorMarks } from "./ilOnline";
 import type { Scope } from "./members";
 
 export interface StOnline {
@@ -52,9 +54,12 @@ export function useStOnline(pou: Pou, body: string, scope: Scope): StOnline {
     [live, instance, body, scope],
   );
   const paths = useMemo(() => [...new Set(occurrences.map((o) => o.path))], [occurrences]);
+  const il = pou.language === "il";
   useEffect(() => {
-    onlineStore.getState().subscribe(key, live && paths.length ? { paths, elements: [] } : null);
-  }, [key, live, paths]);
+    // IL: every probe of the instance - the accumulator after each line (`L<line>:<type>`)
+    const elements = il && instance ? [{ pou_instance: instance, ids: null }] : [];
+    onlineStore.getState().subscribe(key, live && (paths.length || elements.length) ? { paths, elements } : null);
+  }, [key, live, paths, il, instance]);
   useEffect(() => () => onlineStore.getState().subscribe(key, null), [key]);
 
   // An element `a[i]` acts on the element `i` names when the command runs.
@@ -69,10 +74,13 @@ export function useStOnline(pou: Pou, body: string, scope: Scope): StOnline {
       ),
     [occurrences],
   );
-  const marks = useMemo(
-    () => (showValues ? inlineMarks(occurrences, monitor, prepared) : []),
-    [showValues, occurrences, monitor, prepared],
-  );
+  const marks = useMemo(() => {
+    if (!showValues) return [];
+    const values = inlineMarks(occurrences, monitor, prepared);
+    if (!il || !instance) return values;
+    const accumulators = accumulatorMarks(body, monitor, instance).map((m) => ({ ...m, accumulator: true }));
+    return [...values, ...accumulators].sort((a, b) => a.pos - b.pos);
+  }, [showValues, occurrences, monitor, prepared, il, instance, body]);
   const view = useMemo(
     () =>
       live && instance

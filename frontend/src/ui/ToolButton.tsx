@@ -9,18 +9,20 @@ export interface ToolButtonProps extends Omit<ButtonHTMLAttributes<HTMLButtonEle
   label: string;
   /** The shortcut, as the tooltip shows it ("Ctrl+Z"). */
   keys?: string;
+  /** What the tool does in more words, after its name in the tooltip. */
+  hint?: string;
 }
 
 /** The tooltip of a tool: its name, and its shortcut when it has one. */
 export const toolTitle = (label: string, keys?: string) => (keys ? `${label} (${keys})` : label);
 
-export function ToolButton({ icon: IconOf, label, keys, className, ...button }: ToolButtonProps) {
+export function ToolButton({ icon: IconOf, label, keys, hint, className, ...button }: ToolButtonProps) {
   return (
     <button
       type="button"
       className={className ? `tool-button ${className}` : "tool-button"}
       aria-label={label}
-      title={toolTitle(label, keys)}
+      title={hint ? `${toolTitle(label, keys)}: ${hint}` : toolTitle(label, keys)}
       {...button}
     >
       <IconOf size={16} aria-hidden="true" />

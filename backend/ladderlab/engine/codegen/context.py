@@ -44,7 +44,8 @@ def diagnostic(message: str, origin: ir.Origin | None, code: str = COMPILE_ERROR
 @dataclass(frozen=True)
 class PausePoint:
     """Where the debug variant may halt: before a network (``network``), an ST statement (``statement``)
-    or at an element's probe (``element``)."""
+    or at an element's probe (``element``); ``line``: an IL line a single step passes (not a load, jump or
+    call, ON-04), which a breakpoint on the line still halts at."""
 
     id: int
     kind: str

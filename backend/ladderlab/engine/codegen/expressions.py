@@ -30,6 +30,7 @@ _OPERATOR_FUNCTIONS = {
 }
 _ATOM = re.compile(r"(?:[A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z_][A-Za-z0-9_]*)*|\d+)\Z")
 _COMPARISONS = frozenset({"EQ", "NE", "LT", "LE", "GT", "GE"})
+_SHORT_CIRCUIT = {"AND_THEN": "and", "OR_ELSE": "or"}
 
 
 def _atom(code: str) -> bool:
@@ -136,12 +137,22 @@ class Expressions:
         raise CodegenError(f"NEG is not defined for {name}")
 
     def binary(self, b: ir.Binary) -> str:
+        if b.op in _SHORT_CIRCUIT:
+            return self.short_circuit(b)
         left, right = self.expr(b.left), self.expr(b.right)
         if isinstance(b.left.type, t.Reference):  # EQ / NE: one variable referred to (runtime.Ref), or both NULL
             return f"({left} {'==' if b.op == 'EQ' else '!='} {right})"
         types = (self.scalar(b.left.type, b.op), self.scalar(b.right.type, b.op))
         result = None if b.op in _COMPARISONS else self.scalar(b.type, b.op)
         return self.standard(_OPERATOR_FUNCTIONS[b.op], [left, right], types, result)
+
+    def short_circuit(self, b: ir.Binary) -> str:
+        """AND_THEN / OR_ELSE: Python's ``and`` / ``or`` evaluate the right operand only when the left does not
+        decide. A part of it computed on a line of its own (a very deep expression) would run regardless."""
+        left = self.expr(b.left)
+        if self.linear:
+            raise CodegenError(f"{b.op} nests too deeply: split the expression with a variable")
+        return f"({left} {_SHORT_CIRCUIT[b.op]} {self.expr(b.right)})"
 
     def call(self, c: ir.Call) -> str:
         if c.user:
@@ -153,6 +164,11 @@ class Expressions:
     def address_of(self, a: ir.AddressOf) -> str:
         """``REF(x)``: a ``runtime.Ref`` to the variable's ``(container, key)``."""
         return f"ll_Ref(*{self.ref(a.var)}, {a.text!r})"
+
+    def attempt(self, a: ir.Attempt) -> str:
+        """``?=``: the reference when its instance's class is one of the FBs implementing the interface, else NULL."""
+        classes = "".join(f"{names.pou_class(fb)}, " for fb in a.blocks)
+        return f"ll_attempt({self.expr(a.value)}, ({classes}))"
 
     def convert(self, c: ir.Convert) -> str:
         operand = self.expr(c.operand)
@@ -211,7 +227,10 @@ class Expressions:
             )
         args = [self.value_for(a, slot.type) for a, slot in zip(c.args, inputs)]
         args += [self.ref(v) for v in c.in_outs]
-        call = f"{names.function(callee.name)}({', '.join(args)})"
+        if c.virtual and c.function.upper() in self.module.program.dispatch:  # a method: by its instance's FB
+            call = f"ll_virtual({names.dispatch_table(callee.name)}, {len(inputs)}, {', '.join(args)})"
+        else:
+            call = f"{names.function(callee.name)}({', '.join(args)})"
         return f"(yield from {call})" if self.module.debug else call
 
     def value_for(self, e: ir.Expr, target: t.IrType) -> str:
@@ -343,6 +362,7 @@ _HANDLERS = {
     ir.Call: Expressions.call,
     ir.Convert: Expressions.convert,
     ir.AddressOf: Expressions.address_of,
+    ir.Attempt: Expressions.attempt,
 }
 
 

@@ -30,6 +30,8 @@ def expression_vars(e: ir.Expr | None) -> Iterator[ir.Var]:
         yield from expression_vars(e.operand)
     elif isinstance(e, ir.AddressOf):
         yield from expression_vars(e.var)
+    elif isinstance(e, ir.Attempt):
+        yield from expression_vars(e.value)
 
 
 def calls_in(e: ir.Expr | None) -> Iterator[ir.Call]:
@@ -50,6 +52,8 @@ def calls_in(e: ir.Expr | None) -> Iterator[ir.Call]:
         yield from calls_in(e.operand)
     elif isinstance(e, ir.AddressOf):
         yield from calls_in(e.var)
+    elif isinstance(e, ir.Attempt):
+        yield from calls_in(e.value)
 
 
 def own_expressions(s: ir.Stmt) -> Iterable[ir.Expr | None]:
@@ -95,7 +99,7 @@ def nested(s: ir.Stmt) -> Iterator[list[ir.Stmt]]:
         yield s.body
 
 
-_LEAVES = (ir.Assign, ir.Probe, ir.FbCall, ir.FnCall, ir.Exit, ir.Return, ir.Jump)  # no nested statements
+_LEAVES = (ir.Assign, ir.Probe, ir.FbCall, ir.FnCall, ir.Exit, ir.Continue, ir.Return, ir.Jump)  # no nested statements
 
 
 def walk(statements: list[ir.Stmt]) -> Iterator[ir.Stmt]:

@@ -6,6 +6,7 @@ from dataclasses import dataclass
 
 from ...ir import nodes as ir
 from ...model.diagnostics import Diagnostic
+from . import names
 from .context import CodegenError, ModuleContext, PausePoint, diagnostic
 from .layout import slots_source
 from .pou import emit_function, emit_inits, emit_instance_class, emit_located_inits, emit_reference_inits, emit_struct
@@ -66,6 +67,7 @@ def generate(program: ir.Program, variant: str = "fast") -> Generated:
     decls.piece()
     _emit_globals(module, decls)
     emit_tasks(module, code)
+    _emit_dispatch(module, code)
     emitted: set[object] = set()  # by structure, not class name: each round emits at least one, so it ends
     while pending := [(struct, cls) for struct, cls in module.structs.items() if struct not in emitted]:
         for struct, cls in pending:  # emitting one may register the structures of its fields
@@ -89,6 +91,17 @@ def generate(program: ir.Program, variant: str = "fast") -> Generated:
         context=module,
         diagnostics=module.diagnostics,
     )
+
+
+def _emit_dispatch(module: ModuleContext, code: Source) -> None:
+    """Each overridden method's table: instance class -> the variant's function that implements it for that FB."""
+    if not module.program.dispatch:
+        return
+    code.piece()
+    for method, table in module.program.dispatch.items():
+        entries = ", ".join(f"{names.pou_class(fb)}: {names.function(impl)}" for fb, impl in table.items())
+        code.line(f"{names.dispatch_table(method)} = {{{entries}}}")
+    code.line()
 
 
 def _pieces(src: Source) -> list[tuple[int, int, int]]:

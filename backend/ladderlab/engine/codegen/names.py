@@ -56,6 +56,11 @@ def function(name: str) -> str:
     return "f_" + escape(name)
 
 
+def dispatch_table(method: str) -> str:
+    """The table of a method's implementations by instance class (``ll_virtual``, a METHOD's dynamic dispatch)."""
+    return "ll_vt_" + escape(method)
+
+
 def struct_class(name: str) -> str:
     return "S_" + escape(name)
 

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from typing import Any
 
 from ..errors import WATCHDOG, PlcRuntimeError, check_index, check_subrange, for_step_zero, null_dereference
 from ..process_image import ProcessImage
@@ -251,6 +252,18 @@ class _Unset:
 UNSET = _Unset()
 
 
+def virtual_call(table: dict[type, Callable], inputs: int, *args: Any) -> object:
+    """Call a METHOD as implemented by the function block of the instance it is called on: that instance is the
+    method's first in-out (``THIS``, a ``(container, key)`` reference after its ``inputs`` input values)."""
+    container, key = args[inputs]
+    return table[type(container[key])](*args)
+
+
+def attempt(reference: Ref | None, classes: tuple[type, ...]) -> Ref | None:
+    """``?=``: ``reference`` when the instance it refers to is of one of ``classes``, else NULL (None)."""
+    return reference if reference is not None and type(reference.v) in classes else None
+
+
 def _addressable_fbs() -> dict[str, type]:
     return {
         name: type(name, (Addressable, cls), {"__slots__": (), "__doc__": cls.__doc__})
@@ -285,6 +298,8 @@ def namespace() -> dict[str, object]:
         ll_scan=0,  # the stamp of the running scan, for probe groups (context.ProbeTable)
         ll_wb=[WATCHDOG_EVERY],  # the watchdog countdown of the running task (Watchdog, statements.py)
         ll_unset=UNSET,
+        ll_virtual=virtual_call,
+        ll_attempt=attempt,
     )
     ns.update({names.std_fb(name): cls for name, cls in FB_CLASSES.items()})
     return ns

@@ -22,7 +22,7 @@ from ...ir import nodes as ir
 from ...ir import types as t
 from . import names
 from .context import CodegenError, ModuleContext, std_fb_class
-from .layout import Layout
+from .layout import Layout, Place
 from .mentions import referenced_locals, walk
 from .typeinfo import is_composite
 
@@ -72,10 +72,10 @@ class Scope:
 
     def _owner(self, var: ir.Var) -> str:
         """``self`` or the local holding the page of a method's slot (loaded at entry)."""
-        place = self.layout.get(var.name)  # type: ignore[union-attr]
-        if place.page:  # type: ignore[union-attr]
-            self.pages_used.add(place.page)  # type: ignore[union-attr]
-        return _page_owner(place.page)  # type: ignore[union-attr]
+        place = self._place(var.name)
+        if place.page:
+            self.pages_used.add(place.page)
+        return _page_owner(place.page)
 
     def root(self, var: ir.Var) -> tuple[str, t.IrType]:
         """Source reading (and assignable as) the root slot of ``var``, and the slot's type."""
@@ -92,6 +92,8 @@ class Scope:
 
     def _root(self, var: ir.Var) -> tuple[str, t.IrType, int]:
         """``root``'s source and type, and the page its slot lives on (0: ``self``, a local or a global)."""
+        if self._self(var):
+            return "self", t.FbInstance(self.pou.name.upper()), 0
         slot = self.slot(var)
         if slot.address is not None:  # a located variable: its process image view (engine/process_image.py)
             view, key = self.module.image_view(slot, world=self.pou.live_clock)
@@ -110,18 +112,27 @@ class Scope:
         local = self.temp_locals.get(slot.name.upper())
         if local is not None:
             return local, slot.type, 0
-        place = self.layout.get(var.name)  # type: ignore[union-attr]
-        return f"{_page_owner(place.page)}.{place.attr}", slot.type, place.page  # type: ignore[union-attr]
+        place = self._place(var.name)
+        return f"{_page_owner(place.page)}.{place.attr}", slot.type, place.page
 
     def slot_source(self, name: str) -> str:
         """Where the slot ``name`` of this PROGRAM / FUNCTION_BLOCK lives (its page noted as used)."""
-        place = self.layout.get(name)  # type: ignore[union-attr]
-        if place.page:  # type: ignore[union-attr]
-            self.pages_used.add(place.page)  # type: ignore[union-attr]
-        return f"{_page_owner(place.page)}.{place.attr}"  # type: ignore[union-attr]
+        place = self._place(name)
+        if place.page:
+            self.pages_used.add(place.page)
+        return f"{_page_owner(place.page)}.{place.attr}"
+
+    def _place(self, name: str) -> Place:
+        """Where slot ``name`` lives in this PROGRAM's / FUNCTION_BLOCK's layout (a FUNCTION has none)."""
+        assert self.layout is not None, "a function's slots are locals"
+        place = self.layout.get(name)
+        assert place is not None, f"{name} is a slot of this POU"
+        return place
 
     def root_ref(self, var: ir.Var) -> str:
         """Source of a ``(container, key)`` reference to the whole root slot of ``var``."""
+        if self._self(var):
+            return "((self,), 0)"
         slot = self.slot(var)
         if slot.address is not None:
             view, key = self.module.image_view(slot, world=self.pou.live_clock)
@@ -137,6 +148,10 @@ class Scope:
                 raise CodegenError(f"{slot.name} cannot be passed by reference")  # boxed() missed it: a bug
             return f"({attr}, 0)"
         return f"({self._owner(var)}, {attr!r})"
+
+    def _self(self, var: ir.Var) -> bool:
+        """``THIS^`` in a function block's body: the instance running it (ir.nodes.SELF)."""
+        return var.scope == "local" and var.name == ir.SELF and not self.function
 
     def result_slot(self) -> ir.Slot:
         """A FUNCTION's result: the slot named like the function."""

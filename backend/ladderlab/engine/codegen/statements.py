@@ -30,7 +30,7 @@ from .chunks import ChunkPlan
 from .context import CodegenError, diagnostic, std_fb_class
 from .expressions import Expressions, literal
 from .inline_fbs import inline_body
-from .mentions import calls_in, expression_vars, walk
+from .mentions import calls_in, expression_vars, nested, walk
 from .runtime import UNSET
 from .scope import Scope
 from .source import Source
@@ -164,7 +164,8 @@ class Statements:
         self.x.sink = self.src  # a deep expression's parts are computed on lines before the statement
         try:
             if self.debug and origin.line is not None and not isinstance(s, ir.Probe):
-                self.pause("statement", origin)
+                stops = self.scope.pou.step_lines  # IL: a step stops at loads, jumps and calls only (ON-04)
+                self.pause("statement" if stops is None or origin.line in stops else "line", origin)
             handler = self._HANDLERS.get(type(s))
             if handler is None:
                 raise CodegenError(f"unknown statement {type(s).__name__}")
@@ -330,7 +331,7 @@ class Statements:
         """Emit a deeply nested body as a nested function defined at the top of the function being written
         and call it here: CPython's tokenizer allows 100 levels of indentation and its compiler 20 nested
         loops per function. The function sees the POU's variables as the body would (a FUNCTION's locals
-        through ``nonlocal``); it returns 1 for an EXIT of a loop around it, 2 for a RETURN."""
+        through ``nonlocal``); it returns 1 for an EXIT of a loop around it, 2 for a RETURN, 3 for a CONTINUE."""
         name = self.scope.temp("o")
         body = Source()
         body.depth, body.origin = self.outlines.depth + 1, self.src.origin
@@ -362,6 +363,8 @@ class Statements:
         kinds = {type(x) for x in walk(statements)}
         if exits and ir.Exit in kinds:
             self.src.line(f"if {signal} == 1: break")
+        if exits and ir.Continue in kinds:
+            self.src.line(f"if {signal} == 3: continue")
         if ir.Return in kinds:
             self.src.line(f"if {signal} == 2: {self._return_text()}")
 
@@ -412,6 +415,9 @@ class Statements:
                 self._loop_body(s.body)
 
     def _repeat(self, s: ir.Repeat, oid: int) -> None:
+        if _continues(s.body):
+            self._repeat_continued(s, oid)
+            return
         with self._counted():
             self.src.line("while True:")
             with self.src.indent():
@@ -422,10 +428,31 @@ class Statements:
                     with self.src.indent():
                         self.src.line("break")
 
+    def _repeat_continued(self, s: ir.Repeat, oid: int) -> None:
+        """A REPEAT whose body CONTINUEs: the UNTIL test opens every iteration but the first, so ``continue`` (the
+        next iteration) tests it as IEC says, and EXIT's ``break`` still leaves the loop."""
+        first = self.scope.temp("f")
+        self.src.line(f"{first} = True")
+        with self._counted():
+            self.src.line("while True:")
+            with self.src.indent():
+                with self.src.at(oid):
+                    self.src.line(f"if not {first} and {self.x.expr(s.until)}:")
+                    with self.src.indent():
+                        self.src.line("break")
+                self.src.line(f"{first} = False")
+                self._back_edge(oid)
+                self._loop_body(s.body)
+
     def _exit(self, s: ir.Exit, oid: int) -> None:
         if not self.loops:
             raise CodegenError("EXIT outside a loop")
         self.src.line("return 1" if self.outlined and not self.blocks else "break")
+
+    def _continue(self, s: ir.Continue, oid: int) -> None:
+        if not self.loops:
+            raise CodegenError("CONTINUE outside a loop")
+        self.src.line("return 3" if self.outlined and not self.blocks else "continue")
 
     def _return(self, s: ir.Return, oid: int) -> None:
         if self.counting:
@@ -613,6 +640,7 @@ class Statements:
         ir.While: _while,
         ir.Repeat: _repeat,
         ir.Exit: _exit,
+        ir.Continue: _continue,
         ir.Return: _return,
         ir.Jump: _jump,
         ir.Probe: _probe,
@@ -639,9 +667,21 @@ def _straight(s: ir.Stmt) -> bool:
     """The next statement runs whenever this one did (faults aside), so probes around it share a group."""
     if isinstance(s, _STRAIGHT):
         return True
-    return not isinstance(s, (ir.Jump, ir.Return, ir.Exit)) and not any(
-        isinstance(x, (ir.Jump, ir.Return, ir.Exit)) for x in walk([s])
+    return not isinstance(s, _LEAVING) and not any(isinstance(x, _LEAVING) for x in walk([s]))
+
+
+_LEAVING = (ir.Jump, ir.Return, ir.Exit, ir.Continue)
+
+
+def _continues(body: list[ir.Stmt]) -> bool:
+    """Whether a CONTINUE in ``body`` belongs to the loop around it (not to a loop nested in it)."""
+    return any(
+        isinstance(s, ir.Continue) or (not isinstance(s, _LOOPS) and any(_continues(b) for b in nested(s)))
+        for s in body
     )
+
+
+_LOOPS = (ir.For, ir.While, ir.Repeat)
 
 
 def _only_probes(s: ir.If) -> bool:

@@ -20,14 +20,16 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cache
 
-from ...iec.stdlib import OPERATOR_OVERLOADS
+from ...iec import values
+from ...iec.stdlib import OPERATOR_OVERLOADS, long_time_name
 from ..errors import PlcRuntimeError, PlcWarning
 from . import functions as f
 from .build import HELPERS, Impl, Specialised, specialise
 from .conversions import conversion_function, conversion_names, convert, converter
+from .ed3_conversions import ed3_conversions
 from .fbs import STANDARD_FBS, FunctionBlock, pins
 from .strings import concat, find_position, length, positional
-from .timefuncs import TIME_FUNCTIONS
+from .timefuncs import TIME_FUNCTIONS, time_lengths
 
 Implement = Callable[[tuple[str, ...], "str | None"], Impl]
 
@@ -58,8 +60,8 @@ def _operator(name: str, numeric: Implement) -> Implement:
         overload = OPERATOR_OVERLOADS.get((name, cats))
         if overload:
             return TIME_FUNCTIONS[overload](types, result)
-        if name == "ADD" and set(cats) == {"time"}:
-            return f.chain("+", types, "TIME")
+        if name == "ADD" and set(cats) == {"time"} and time_lengths(types) is not None:
+            return f.chain("+", types, values.resolve(types[0]).name)
         if name == "ADD" and set(cats) == {"string"}:
             return concat(types, result)
         return numeric(types, result)
@@ -108,11 +110,13 @@ def _table() -> dict[str, StandardFunction]:
         for name, inputs in (("LEFT", 2), ("RIGHT", 2), ("MID", 3), ("INSERT", 3), ("DELETE", 3), ("REPLACE", 4))
     ]
     rows += [(name, 2, False, implement, "FUN-85") for name, implement in TIME_FUNCTIONS.items()]
+    rows += [(long_time_name(name), 2, False, implement, "FUN-85") for name, implement in TIME_FUNCTIONS.items()]
     rows += [
         ("MULTIME", 2, False, TIME_FUNCTIONS["MUL_TIME"], "FUN-85"),
         ("DIVTIME", 2, False, TIME_FUNCTIONS["DIV_TIME"], "FUN-85"),
     ]
     rows += [(name, 1, False, conversion_function(*pair), "FUN-10") for name, pair in conversion_names().items()]
+    rows += [(name, 1, False, implement, "FUN-10") for name, implement in ed3_conversions().items()]
     return {name: StandardFunction(name, inputs, ext, implement, spec) for name, inputs, ext, implement, spec in rows}
 
 

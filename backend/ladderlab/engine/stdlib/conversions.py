@@ -6,9 +6,12 @@
 * Integer narrowing wraps in two's complement (FUN-11: INT_TO_SINT(200) = -56;
   checked form reports the overflow). Widening is the identity.
 * x_TO_BOOL is x <> 0; BOOL_TO_x gives 0 or 1.
-* Time-like types convert through their millisecond count: TIME_TO_DINT gives
-  ms, TIME_TO_TOD / DT_TO_TOD take it modulo 24 h, DT_TO_DATE drops the time
-  of day, DATE/DT saturate at the epoch.
+* Time-like types convert through their count: TIME_TO_DINT gives ms,
+  LTIME_TO_LINT ns; TIME_TO_TOD / DT_TO_TOD take it modulo 24 h, DT_TO_DATE
+  drops the time of day, DATE/DT saturate at the epoch. Between a short (ms)
+  and a long (ns) form the count is scaled: TIME_TO_LTIME multiplies by
+  1_000_000, LTIME_TO_TIME divides and truncates toward zero (as integer DIV),
+  then the target's store rule applies (TIME wraps to 32 bits).
 * x_TO_STRING writes the IEC literal text (INT_TO_STRING(-25) = '-25',
   T#1h30m, TOD#11:38:52.35, REAL 11.2 -> '11.2'); STRING_TO_x reads it back.
   Invalid text gives the type's default (FUN-11: 0) with ENO FALSE.
@@ -19,7 +22,8 @@ from __future__ import annotations
 from collections.abc import Callable
 from functools import cache
 
-from ...iec.elementary import ALIASES, ELEMENTARY
+from ...iec.elementary import canonical_type_name, per_day
+from ...iec.stdlib import CONVERSION_SPELLINGS
 from ...iec.value_text import format_value, parse
 from ...iec.values import MS_PER_DAY, TypeRef, default_value, resolve, value_range
 from ..errors import NOT_A_NUMBER, PlcWarning
@@ -27,8 +31,8 @@ from .build import HELPERS, Impl, finite_args, specialise
 from .functions import reject
 
 
-def floor_day(ms: int) -> int:
-    return ms - ms % MS_PER_DAY
+def floor_day(ms: int, per_day: int = MS_PER_DAY) -> int:
+    return ms - ms % per_day
 
 
 HELPERS["ll__day"] = floor_day
@@ -57,9 +61,16 @@ def _to_integer_like(s: TypeRef, d: TypeRef) -> Impl:
         exact, precheck = "ll__round(a0)", finite_args(name)
     else:
         exact = "int(a0)" if s.category == "bool" else "a0"
-    if d.category == "date":
-        exact = f"ll__day({exact})"
     src_range, dst_range = value_range(s.name), value_range(d.name)
+    if s.elem.unit_ns and d.elem.unit_ns and s.elem.unit_ns != d.elem.unit_ns:  # ms <-> ns
+        factor = max(s.elem.unit_ns, d.elem.unit_ns) // min(s.elem.unit_ns, d.elem.unit_ns)
+        if s.elem.unit_ns > d.elem.unit_ns:
+            exact = f"({exact}) * {factor}"
+            src_range = (src_range[0] * factor, src_range[1] * factor)  # type: ignore[index]  # time types have ranges
+        else:
+            exact = f"ll__idiv({exact}, {factor})"
+    if d.category == "date":
+        exact = f"ll__day({exact}, {per_day(d.elem)})"
     if src_range and dst_range[0] <= src_range[0] and src_range[1] <= dst_range[1]:  # type: ignore[index]
         return Impl(exact)  # widening: the value always fits
     return Impl(exact, d.name, precheck=precheck)
@@ -98,9 +109,19 @@ def conversion_function(src: str, dst: str):
 
 
 def conversion_names() -> dict[str, tuple[str, str]]:
-    """Every SRC_TO_DST name with long and short spellings (FUN-10: DT_TO_TOD = DATE_AND_TIME_TO_TIME_OF_DAY)."""
-    spellings = [*ELEMENTARY, *ALIASES]
-    return {f"{a}_TO_{b}": (a, b) for a in spellings for b in spellings if resolve(a).name != resolve(b).name}
+    """Every SRC_TO_DST name with long and short spellings (FUN-10: DT_TO_TOD = DATE_AND_TIME_TO_TIME_OF_DAY), and
+    WSTRING's, which the value model holds as a STRING (a Python str)."""
+    return {
+        f"{a}_TO_{b}": (value_type_name(a), value_type_name(b))
+        for a in CONVERSION_SPELLINGS
+        for b in CONVERSION_SPELLINGS
+        if canonical_type_name(a) != canonical_type_name(b)
+    }
+
+
+def value_type_name(name: str) -> str:
+    """The value model's type of a type name: WSTRING is held as STRING, every other name is its own."""
+    return "STRING" if name.upper() == "WSTRING" else name
 
 
 @cache

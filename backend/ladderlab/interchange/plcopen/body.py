@@ -72,9 +72,12 @@ def write_header(
     return top
 
 
-def write_network_list(body: ET.Element, networks: list[tuple[str, float | Decimal, list[str] | None]]) -> None:
-    """The body's addData: network ids in order, the y offset each was drawn at, an FBD network's ``order``."""
-    add = ladderlab_data(body)
+def write_network_list(
+    body: ET.Element, networks: list[tuple[str, float | Decimal, list[str] | None]], chart: bool = False
+) -> None:
+    """The body's addData: network ids in order, the y offset each was drawn at, an FBD network's ``order``;
+    ``chart``: the body is a CFC chart (its one network), not FBD networks."""
+    add = ladderlab_data(body, {"language": "cfc"} if chart else None)
     listing = add[0][0]
     for network_id, top, order in networks:
         attrs = {"id": network_id, "top": decimal_text(top)}
@@ -90,13 +93,14 @@ class NetworkList:
     ids: list[str] = field(default_factory=list)
     tops: dict[str, Decimal] = field(default_factory=dict)
     orders: dict[str, list[str] | None] = field(default_factory=dict)
+    chart: bool = False  # a CFC chart (issue 26)
 
 
 def read_network_list(body: ET.Element, reader: Reader) -> NetworkList | None:
     node = info(body, reader)
     if node is None:
         return None
-    listing = NetworkList()
+    listing = NetworkList(chart=node.get("language") == "cfc")
     for entry in node.findall(f"{{{LADDERLAB_NS}}}network"):
         network_id = entry.get("id")
         if network_id and network_id not in listing.tops:

@@ -19,6 +19,7 @@ import xml.etree.ElementTree as ET
 from datetime import UTC, datetime
 
 from ... import __version__
+from ...model.cfc import CfcBody
 from ...model.diagnostics import Diagnostic
 from ...model.fbd import FbdBody
 from ...model.ld import LdBody
@@ -31,6 +32,7 @@ from .body import NETWORK_GAP, Counter, write_network_list
 from .configuration import write_instances
 from .fbd_export import FbdExporter
 from .ld_export import LdExporter
+from .methods import oo_attributes, oo_texts, write_inheritance, write_methods
 from .sfc_export import write_sfc_pou
 from .vars import parse_type_text, write_data_type, write_type, write_var_list
 from .xml_io import formatted_text, ladderlab_data, ladderlab_tests, q, sub, to_bytes
@@ -122,7 +124,12 @@ class _Exporter:
                 write_type(sub(interface, "returnType"), spec)
         for block in self.var_blocks(pou.declarations, pou.name):
             write_var_list(interface, block)
-        ladderlab_data(interface, {"returnType": pou.return_type}, {"declarations": pou.declarations})
+        add = ladderlab_data(
+            interface,
+            {"returnType": pou.return_type, **oo_attributes(pou)},
+            {"declarations": pou.declarations, **oo_texts(pou)},
+        )
+        write_inheritance(add, pou)
         if isinstance(pou.body, SfcBody):
             write_sfc_pou(node, pou.body, lambda holder, networks: self.diagram(holder, networks, pou.name))
             return
@@ -131,6 +138,7 @@ class _Exporter:
             self.diagram(body, pou.body, pou.name)
         else:
             formatted_text(body, pou.language.upper(), pou.body)  # ST or IL text
+        write_methods(node, pou)
 
     def diagram(self, body: ET.Element, networks: LdBody | FbdBody, pou: str) -> None:
         """The ``<LD>`` or ``<FBD>`` of a POU's body, or of an SFC action's or transition's."""
@@ -155,9 +163,10 @@ def diagram_writer(body: ET.Element, networks: LdBody | FbdBody, signatures: Sig
         write_network_list(body, listing)
         return []
     fbd = FbdExporter(sub(body, "FBD"), signatures, Counter(), pou)
+    chart = isinstance(networks, CfcBody)  # IEC 61131-10 style: an FBD whose executionOrderIds are the order
     for fbd_network in networks.networks:
-        offset, bottom = fbd.network(fbd_network, top)
+        offset, bottom = fbd.network(fbd_network, top, explicit=chart)
         listing.append((fbd_network.id, offset, fbd_network.order))
         top = bottom + NETWORK_GAP
-    write_network_list(body, listing)
+    write_network_list(body, listing, chart)
     return fbd.problems

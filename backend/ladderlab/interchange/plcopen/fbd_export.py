@@ -8,8 +8,8 @@ returns, connectors and continuations their namesakes. Networks are drawn one
 below the other; nodes without a position get one from a small column layout
 (column = longest path from a source). ``executionOrderId`` is the order the FBD
 lowering runs the nodes in (``ir/fbd_order.py``), so CFC-style readers such as
-RuSTy execute the same order; the network's own ``order`` list travels in
-LadderLab's addData.
+RuSTy execute the same order (for a CFC chart, the chart's execution order
+numbers, CFC-02); the network's own ``order`` list travels in LadderLab's addData.
 """
 
 from __future__ import annotations
@@ -86,8 +86,9 @@ class FbdExporter:
         self.pou = pou
         self.problems: list[Diagnostic] = []
 
-    def network(self, network: FbdNetwork, top: float) -> tuple[Decimal, float]:
+    def network(self, network: FbdNetwork, top: float, explicit: bool = False) -> tuple[Decimal, float]:
         """Write one network below ``top``; returns (the y offset its positions were drawn at, its bottom).
+        ``explicit``: a CFC chart, whose execution order numbers are its order list's (CFC-02).
 
         Element y = position y + offset, added exactly (decimal) so the import subtracts it back exactly.
         """
@@ -100,7 +101,7 @@ class FbdExporter:
         offset = Decimal(repr(float(top))) - Decimal(repr(min_y))
         nodes = {n.id: n for n in network.nodes}
         local_ids = {n.id: self.counter.next_local() for n in network.nodes}
-        order = {node_id: self.counter.next_order() for node_id in analyse(network, _ignore).order}
+        order = {node_id: self.counter.next_order() for node_id in analyse(network, _ignore, explicit).order}
         incoming: dict[tuple[str, str], list] = defaultdict(list)
         self.wire_index = {id(wire): i for i, wire in enumerate(network.wires)}
         for wire in network.wires:

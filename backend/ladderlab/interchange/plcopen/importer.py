@@ -22,6 +22,7 @@ from collections import Counter as Tally
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
+from ...model.cfc import CfcBody
 from ...model.diagnostics import Diagnostic
 from ...model.fbd import FbdBody
 from ...model.ld import LdBody
@@ -44,6 +45,7 @@ from .exporter import diagram_writer
 from .fbd_import import FbdImporter, fbd_groups, place_comments
 from .graph import read_graph, resolve_continuations
 from .ld_import import LdImporter, ld_groups
+from .methods import INHERITANCE_DATA, METHOD_DATA, read_extends, read_methods, read_properties
 from .sfc_import import SfcImporter
 from .vars import KIND_BY_LIST, VarReader, parse_type_text, write_data_type, write_type, write_var_list
 from .xml_io import (
@@ -64,7 +66,24 @@ from .xml_safety import XmlInputError, parse_untrusted_xml
 KIND = {"program": "program", "functionBlock": "function_block", "function": "function"}
 _HEADER = re.compile(r"^(PROGRAM|FUNCTION_BLOCK|FUNCTION)\s", re.IGNORECASE)
 BACHMANN = "www.bachmann.at/plc/plcopenxml"
-_UNDERSTOOD = {(BACHMANN, "textDeclaration"), (BACHMANN, "negated")}
+_UNDERSTOOD = {
+    (BACHMANN, "textDeclaration"),
+    (BACHMANN, "negated"),
+    (METHOD_DATA, "Method"),
+    (INHERITANCE_DATA, "Inheritance"),
+}
+
+
+def _declarations(r, reader: VarReader, interface: ET.Element | None) -> str:
+    """The ST text of an interface's typed variable lists."""
+    lists = [c for c in r.elements(interface) if local(c) in KIND_BY_LIST]
+    return print_declarations([reader.var_block(c) for c in lists]).rstrip()
+
+
+def _method_interface(r, reader: VarReader, interface: ET.Element) -> tuple[str, str | None]:
+    """A CODESYS method's declarations and result type."""
+    holder = r.child(interface, "returnType")
+    return _declarations(r, reader, interface), print_type(reader.type(holder)) if holder is not None else None
 
 
 @dataclass
@@ -181,8 +200,7 @@ class _Importer:
         reader = VarReader(r, name)
         ours = info(interface, r)
         lists = [c for c in r.elements(interface) if local(c) in KIND_BY_LIST]
-        blocks = [reader.var_block(c) for c in lists]
-        declarations = print_declarations(blocks).rstrip()
+        declarations = _declarations(r, reader, interface)
         carried = info_text(ours, "declarations")
         if carried is not None and self.same(lists, carried, _declaration_elements):
             declarations = carried
@@ -197,7 +215,20 @@ class _Importer:
             declarations, return_type = self.text_declaration(interface, declarations, return_type)
         if KIND[pou_type] == "function" and return_type is None:
             r.report("PLCOPEN-POU", f"function '{name}' has no return type", node, pou=name)
-        return Pou(name=name, kind=KIND[pou_type], language="st", return_type=return_type, declarations=declarations)
+        oo = ours.attrib if ours is not None else {}
+        return Pou(
+            name=name,
+            kind=KIND[pou_type],
+            language="st",
+            return_type=return_type,
+            declarations=declarations,
+            methods=read_methods(node, ours, r, lambda holder: _method_interface(r, reader, holder)),
+            properties=read_properties(ours),
+            extends=oo.get("extends") or read_extends(interface, r),
+            implements=[i.strip() for i in oo.get("implements", "").split(",") if i.strip()],
+            abstract=oo.get("abstract") == "true",
+            final=oo.get("final") == "true",
+        )
 
     def text_declaration(
         self, interface: ET.Element | None, declarations: str, return_type: str | None
@@ -281,7 +312,10 @@ class _Importer:
         if groups is None:
             groups, orders = fbd_groups(graph, r)
             place_comments(groups, graph)
-        return "fbd", FbdImporter(graph, r, pou, ids).body(groups, orders, relative=relative)
+        made = FbdImporter(graph, r, pou, ids).body(groups, orders, relative=relative)
+        if relative and listing is not None and listing.chart and len(made.networks) == 1:
+            return "cfc", CfcBody(networks=made.networks)  # a chart LadderLab wrote (issue 26)
+        return "fbd", made
 
     # ------------------------------------------------------------ project texts
 
@@ -322,11 +356,12 @@ def _declaration_elements(text: str) -> list[ET.Element] | None:
 
 def _type_elements(text: str) -> list[ET.Element] | None:
     parsed = parse_source(text)
-    if parsed.ast is None or not parsed.ok or any(not isinstance(i, ast.TypeBlock) for i in parsed.ast.items):
+    allowed = (ast.TypeBlock, ast.InterfaceDecl)  # INTERFACEs have no dataType: only the carried text has them
+    if parsed.ast is None or not parsed.ok or any(not isinstance(i, allowed) for i in parsed.ast.items):
         return None
     holder = ET.Element("dataTypes")
     for item in parsed.ast.items:
-        for decl in item.decls:
+        for decl in item.decls if isinstance(item, ast.TypeBlock) else []:
             write_data_type(holder, decl)
     return list(holder)
 

@@ -15,7 +15,7 @@ import xml.etree.ElementTree as ET
 from ...iec.elementary import canonical_type_name, elementary
 from ...st import ast
 from ...st.parser import parse_expression, parse_type
-from ...st.printer import print_expression
+from ...st.printer import print_expression, print_type
 from .xml_io import Reader, formatted_text, info, ladderlab_data, local, sub, text_content
 
 #: Elementary types the XSD names directly (TIME_OF_DAY and DATE_AND_TIME are spelled TOD and DT there).
@@ -97,16 +97,22 @@ def write_type(parent: ET.Element, spec: ast.TypeSpec) -> None:
             low, high = ("*", "*") if bounds is None else (print_expression(bounds[0]), print_expression(bounds[1]))
             sub(node, "dimension", {"lower": low, "upper": high})
         write_type(sub(node, "baseType"), spec.element)
+    elif isinstance(spec, ast.PointerType) and spec.kind == "REFERENCE TO":
+        # TC6 XML has no implicitly dereferenced reference: its ST text as a derived type, which reads back
+        sub(parent, "derived", {"name": print_type(spec)})
     elif isinstance(spec, ast.PointerType):
         write_type(sub(sub(parent, "pointer"), "baseType"), spec.target)
     elif isinstance(spec, ast.EnumType):
-        values = sub(sub(parent, "enum"), "values")
+        enum = sub(parent, "enum")
+        values = sub(enum, "values")
         for value in spec.values:
             sub(
                 values,
                 "value",
                 {"name": value.name, "value": None if value.value is None else print_expression(value.value)},
             )
+        if spec.base:  # TC6 XML: enum's optional baseType
+            write_type(sub(enum, "baseType"), ast.NamedType(spec.base))
     elif isinstance(spec, ast.StructType):
         node = sub(parent, "struct")
         for decl in spec.members:
@@ -205,6 +211,10 @@ class VarReader:
             if length:
                 return ast.SizedType(upper, self.expression(length, choice))
             return ast.NamedType(upper)
+        if tag == "derived" and choice.get("name", "").upper().startswith("REFERENCE "):
+            spec = parse_type(choice.get("name", "")).ast
+            if isinstance(spec, ast.PointerType):
+                return spec
         if tag == "derived":
             return ast.NamedType(choice.get("name", ""))
         if tag == "array":
@@ -226,7 +236,9 @@ class VarReader:
                 ast.EnumValue(v.get("name", ""), self.expression(v.get("value"), v) if v.get("value") else None)
                 for v in self.reader.children(self.reader.child(choice, "values"), "value")
             ]
-            return ast.EnumType(values)
+            base_type = self.reader.child(choice, "baseType")
+            base = self.type(base_type) if base_type is not None else None
+            return ast.EnumType(values, base=base.name if isinstance(base, ast.NamedType) else None)
         if tag == "struct":
             return ast.StructType(self.declarations(choice))
         self._problem(f"unknown type element <{tag}>; kept as the type name {tag}", choice, "error")

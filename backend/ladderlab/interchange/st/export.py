@@ -99,8 +99,14 @@ def st_pou(project: Project, pou: Pou, checked: CheckResult) -> ExportedPou:
     scope = PouScope(checked, info, declarations)
     networks: list[Network] = []
     for index, network in enumerate(pou.body.networks):
-        code = ld_network(scope, network, index + 1) if pou.language == "ld" else fbd_network(scope, network, lowered)
-        lines = network_title(index + 1, network.label, network.comment)
+        if pou.language == "ld":
+            code = ld_network(scope, network, index + 1)
+        else:
+            code = fbd_network(scope, network, lowered, explicit=pou.language == "cfc")
+        if pou.language == "cfc":
+            lines = [comment("CFC chart: its elements in their execution order (CFC-02)")]
+        else:
+            lines = network_title(index + 1, network.label, network.comment)
         controls = [(c.label, c.element) for c in code.controls]
         networks.append(Network(network.id, lines, plan(code, declarations), controls))
     labels = {canonical_label(n.label): index for index, n in enumerate(pou.body.networks) if n.label}

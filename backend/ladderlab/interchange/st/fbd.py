@@ -37,15 +37,16 @@ class Text:
 PinValue = Text | Value
 
 
-def fbd_network(scope: PouScope, network: fbd.FbdNetwork, lowered: ir.Pou) -> NetworkCode:
-    return _Network(scope, network, lowered).code
+def fbd_network(scope: PouScope, network: fbd.FbdNetwork, lowered: ir.Pou, explicit: bool = False) -> NetworkCode:
+    """``explicit``: a CFC chart - its elements in its execution order (CFC-02), a return where it stands."""
+    return _Network(scope, network, lowered, explicit).code
 
 
 class _Network:
-    def __init__(self, scope: PouScope, network: fbd.FbdNetwork, lowered: ir.Pou):
-        self.scope, self.network = scope, network
+    def __init__(self, scope: PouScope, network: fbd.FbdNetwork, lowered: ir.Pou, explicit: bool = False):
+        self.scope, self.network, self.explicit = scope, network, explicit
         self.code = NetworkCode()
-        self.graph = graph = analyse(network, lambda *args, **kwargs: None)
+        self.graph = graph = analyse(network, lambda *args, **kwargs: None, explicit)
         self.values: dict[tuple[str, str], PinValue] = {}
         self.enables: dict[str, PinValue] = {}
         self.result_types = _result_types(lowered, network.id)
@@ -116,6 +117,12 @@ class _Network:
         self.scope.coil(self.code, node.mode, operand(node.var), self.read(value), node.id, guard, target_type)
 
     def control(self, node: fbd.FbdJump | fbd.FbdReturn) -> None:
+        if self.explicit:  # a CFC return acts at its place in the order (a chart has no jumps: CFC-JUMP)
+            statement = ast.Return()
+            if "IN" in self.graph.inputs.get(node.id, {}):
+                statement = ast.If([(self.read(self.source(node.id, "IN")), [statement])])
+            self.code.step([statement], node.id, None)
+            return
         condition = None
         hint = f"jump_{node.target}" if isinstance(node, fbd.FbdJump) else "return_now"
         if "IN" in self.graph.inputs.get(node.id, {}):

@@ -4,6 +4,8 @@
 // pin's context menu, execution-order badges from the backend with "run earlier/later",
 // auto-arrange, undo/redo, copy/paste, diagnostics on nodes and pins, online values on wires,
 // write/force from the context menu, and breakpoints. The undo history is the caller's (one per POU).
+// With `chart` it edits a CFC POU's one chart (docs/diagrams.md "CFC"): no networks, an execution
+// order number on every executed element that "run earlier/later" moves freely, "Order by data flow".
 import "@xyflow/react/dist/style.css";
 import "../../ld/ld.css";
 import { useNodeLayout } from "./useNodeLayout";
@@ -55,8 +57,8 @@ import {
 import type { FbdOnlineView } from "../online";
 import { operandOf } from "../online";
 import * as ops from "../ops";
-import { moveInOrder } from "../order";
-import { fetchOrder, useEvaluationOrder } from "../useOrder";
+import { feedbackPins, moveInOrder, orderByDataFlow, orderNumbers, ordered } from "../order";
+import { fetchChartOrder, fetchOrder, useEvaluationOrder } from "../useOrder";
 import { FbdEditorContext, type FbdEditorApi, type NodeView } from "./context";
 import { pinOfHandle } from "./FbdNodeView";
 import { DRAG_FORMAT, NetworkCanvas, type NetworkSelection } from "./NetworkCanvas";
@@ -97,8 +99,12 @@ export interface FbdEditorProps {
   focus?: { network?: string | null; element?: string | null; seq: number } | null;
   /** Told which networks are near the viewport, so online mode subscribes only to those. */
   onVisibleChange?(networks: readonly string[]): void;
-  /** POST /api/fbd/order (replaced in tests). */
+  /** POST /api/fbd/order (replaced in tests); on a chart, its execution order (?chart=true). */
   orderOf?(network: FbdNetwork): Promise<FbdOrder>;
+  /** A CFC POU: the body's one network is a free chart whose order list is the execution order (CFC-01/02). */
+  chart?: boolean;
+  /** On a chart: the FBD (data-flow) order of the chart, for "Order by data flow" (replaced in tests). */
+  dataFlowOf?(network: FbdNetwork): Promise<FbdOrder>;
 }
 
 type Selection = NetworkSelection & { network: string };
@@ -108,7 +114,7 @@ const PALETTE: { kind: PaletteKind; label: string }[] = [
   { kind: "input", label: "Input" },
   { kind: "output", label: "Output" },
   { kind: "block", label: "Block…" },
-  { kind: "jump", label: "Jump" },
+  { kind: "jump", label: "Jump" }, // not on a CFC chart: it has no labels to jump to (CFC-JUMP)
   { kind: "return", label: "Return" },
   { kind: "connector", label: "Connector" },
   { kind: "continuation", label: "Continuation" },
@@ -151,7 +157,9 @@ export function FbdEditor({
   onlineActions,
   debug,
   focus,
-  orderOf = fetchOrder,
+  chart = false,
+  orderOf = chart ? fetchChartOrder : fetchOrder,
+  dataFlowOf = fetchOrder,
   onVisibleChange,
 }: FbdEditorProps) {
   const body = history.present;
@@ -347,13 +355,23 @@ export function FbdEditor({
     const id = selectedNodes[0];
     const network = selection?.network;
     if (!id || !network) return;
-    apply(moveInOrder(body, network, orders.get(network) ?? [], id, delta));
+    apply(moveInOrder(body, network, orders.get(network) ?? [], id, delta, chart));
+  };
+
+  /** A chart's "Order by data flow": each element after those feeding it, the current numbers breaking ties. */
+  const orderChartByDataFlow = () => {
+    const network = networks[0];
+    if (!network) return;
+    dataFlowOf(network).then(
+      ({ order }) => apply(orderByDataFlow(body, network.id, order)),
+      () => setMessage("The data-flow order could not be computed; try again in a moment."),
+    );
   };
 
   const autoArrange = () => {
     const network = targetNetwork();
     const net = network && networks.find((n) => n.id === network);
-    if (net) apply(ops.arrangeNetwork(body, net.id, heightOf(net), orders.get(net.id) ?? null));
+    if (net) apply(ops.arrangeNetwork(body, net.id, heightOf(net), orders.get(net.id) ?? null, chart));
   };
 
   const addInput = (id: string) => apply(ops.addInput(body, id, lookup));
@@ -406,20 +424,20 @@ export function FbdEditor({
             : []),
         ];
     const order: MenuItem[] =
-      locked || !(kind === "block" || kind === "output")
+      locked || !ordered(net, node.id, chart)
         ? []
         : [
             {
               id: "earlier",
               label: "Run earlier",
               keys: keysOf("fbd", "run-earlier"),
-              run: () => apply(moveInOrder(body, network, orders.get(network) ?? [], node.id, -1)),
+              run: () => apply(moveInOrder(body, network, orders.get(network) ?? [], node.id, -1, chart)),
             },
             {
               id: "later",
               label: "Run later",
               keys: keysOf("fbd", "run-later"),
-              run: () => apply(moveInOrder(body, network, orders.get(network) ?? [], node.id, 1)),
+              run: () => apply(moveInOrder(body, network, orders.get(network) ?? [], node.id, 1, chart)),
             },
           ];
     const debugItems: MenuItem[] = debug
@@ -483,9 +501,29 @@ export function FbdEditor({
   };
 
   // ------------------------------------------------------------ views
+  const chartNumbers = useMemo(() => {
+    const network = networks[0];
+    const order = chart && network ? orders.get(network.id) : undefined;
+    return network && order ? orderNumbers(network, order) : null;
+  }, [chart, networks, orders]);
+  // Online on a chart: an input fed against the order read the previous scan's value; show none rather
+  // than the producer's value of this scan.
+  const shownOnline = useMemo(() => {
+    const network = networks[0];
+    if (!online || !chartNumbers || !network) return online;
+    const hidden = feedbackPins(network, chartNumbers);
+    if (hidden.size === 0) return online;
+    const pins = Object.fromEntries(
+      Object.entries(online.pins).map(([id, values]) => [
+        id,
+        Object.fromEntries(Object.entries(values).filter(([key]) => !hidden.has(`${id}/${key}`))),
+      ]),
+    );
+    return { ...online, pins };
+  }, [online, chartNumbers, networks]);
   const view = useCallback(
     (network: FbdNetwork, node: FbdNode): NodeView => {
-      const order = orders.get(network.id)?.indexOf(node.id);
+      const order = chartNumbers ? (chartNumbers.get(node.id) ?? -1) - 1 : orders.get(network.id)?.indexOf(node.id);
       return {
         pins: nodePins(node, network, lookup, symbols),
         order: order !== undefined && order >= 0 ? order + 1 : undefined,
@@ -496,7 +534,7 @@ export function FbdEditor({
         coverage: debug?.coverage?.get(node.id),
       };
     },
-    [orders, lookup, symbols, byElement, debug],
+    [orders, chartNumbers, lookup, symbols, byElement, debug],
   );
 
   /** Prepares a value for `operand` (CODESYS double-click): a BOOL toggles, others ask for the value. */
@@ -525,7 +563,7 @@ export function FbdEditor({
   const api: FbdEditorApi = {
     readOnly: locked,
     symbols,
-    online,
+    online: shownOnline,
     editing,
     view,
     startEdit: (id) => !locked && setEditing(id),
@@ -661,11 +699,12 @@ export function FbdEditor({
 
   const selectedBlock = selectedNodes.length === 1 ? findNode(body, selectedNodes[0]!)?.node : undefined;
   const netIndex = networks.findIndex((n) => n.id === (networkSelected ?? selection?.network));
-  const tool = (id: string, label: string, run: () => void, enabled = !locked, keys?: string) => (
+  const tool = (id: string, label: string, run: () => void, enabled = !locked, keys?: string, hint?: string) => (
     <ToolButton
       icon={COMMAND_ICONS[id]!}
       label={label}
       keys={keys}
+      hint={hint}
       disabled={!enabled}
       onMouseDown={(e) => e.preventDefault()}
       onClick={run}
@@ -679,13 +718,13 @@ export function FbdEditor({
         ref={root}
         tabIndex={0}
         role="application"
-        aria-label="Function block diagram editor"
+        aria-label={chart ? "Continuous function chart editor" : "Function block diagram editor"}
         onKeyDown={onKeyDown}
         {...clipboard.events}
       >
         <div className="ld-toolbar fbd-toolbar" role="toolbar" aria-label="FBD editing">
           <div className="ld-toolbar-group fbd-palette" aria-label="Add (click, or drag onto a network)">
-            {PALETTE.map(({ kind, label }) => (
+            {PALETTE.filter(({ kind }) => !chart || kind !== "jump").map(({ kind, label }) => (
               <button
                 key={kind}
                 type="button"
@@ -720,38 +759,50 @@ export function FbdEditor({
             )}
             {tool("run-earlier", "Run earlier", () => reorder(-1), !locked && !!selectedBlock, keyed("run-earlier"))}
             {tool("run-later", "Run later", () => reorder(1), !locked && !!selectedBlock, keyed("run-later"))}
+            {chart
+              ? tool(
+                  "order-by-flow",
+                  "Order by data flow",
+                  orderChartByDataFlow,
+                  !locked && networks.length > 0,
+                  undefined,
+                  "Number every element after the elements feeding it (the current numbers break ties)",
+                )
+              : null}
             {tool("arrange", "Auto-arrange", autoArrange, !locked && networks.length > 0)}
             {tool("delete", "Delete", deleteSelection, !locked && (!!selection || !!networkSelected), keyed("delete"))}
           </div>
-          <div className="ld-toolbar-group">
-            {tool("network-add", "Add network", () =>
-              apply(ops.addNetwork(body, netIndex < 0 ? networks.length : netIndex + 1)),
-            )}
-            {tool(
-              "network-up",
-              "Network up",
-              () => apply(ops.moveNetwork(body, networks[netIndex]!.id, -1)),
-              !locked && netIndex > 0,
-            )}
-            {tool(
-              "network-down",
-              "Network down",
-              () => apply(ops.moveNetwork(body, networks[netIndex]!.id, 1)),
-              !locked && netIndex >= 0 && netIndex < networks.length - 1,
-            )}
-            {tool(
-              "network-label",
-              "Label",
-              () => setNetworkText({ network: networks[netIndex]!.id, field: "label" }),
-              !locked && netIndex >= 0,
-            )}
-            {tool(
-              "network-comment",
-              "Comment",
-              () => setNetworkText({ network: networks[netIndex]!.id, field: "comment" }),
-              !locked && netIndex >= 0,
-            )}
-          </div>
+          {chart ? null : (
+            <div className="ld-toolbar-group">
+              {tool("network-add", "Add network", () =>
+                apply(ops.addNetwork(body, netIndex < 0 ? networks.length : netIndex + 1)),
+              )}
+              {tool(
+                "network-up",
+                "Network up",
+                () => apply(ops.moveNetwork(body, networks[netIndex]!.id, -1)),
+                !locked && netIndex > 0,
+              )}
+              {tool(
+                "network-down",
+                "Network down",
+                () => apply(ops.moveNetwork(body, networks[netIndex]!.id, 1)),
+                !locked && netIndex >= 0 && netIndex < networks.length - 1,
+              )}
+              {tool(
+                "network-label",
+                "Label",
+                () => setNetworkText({ network: networks[netIndex]!.id, field: "label" }),
+                !locked && netIndex >= 0,
+              )}
+              {tool(
+                "network-comment",
+                "Comment",
+                () => setNetworkText({ network: networks[netIndex]!.id, field: "comment" }),
+                !locked && netIndex >= 0,
+              )}
+            </div>
+          )}
           <div className="ld-toolbar-group">
             {tool("copy", "Copy", () => clipboard.copy(false), selectedNodes.length > 0, keyed("copy"))}
             {tool("paste", "Paste", clipboard.paste, !locked, keyed("paste"))}
@@ -786,6 +837,7 @@ export function FbdEditor({
               key={network.id}
               network={network}
               index={index}
+              chart={chart}
               readOnly={locked}
               selected={selection?.network === network.id ? selection : null}
               networkSelected={networkSelected === network.id}

@@ -30,6 +30,7 @@ const MIN_HEIGHT = 170;
 /** Room above and left of the diagram, so badges above a node at y = 0 (order, breakpoint) stay in view. */
 const ORIGIN = { x: 12, y: 16, zoom: 1 };
 const MAX_HEIGHT = 560;
+const CHART_HEIGHT = 420;
 
 export interface NetworkSelection {
   nodes: readonly string[];
@@ -39,6 +40,8 @@ export interface NetworkSelection {
 export interface NetworkCanvasProps {
   network: FbdNetwork;
   index: number;
+  /** The one chart of a CFC POU: no network number, label or comment; drawn at least CHART_HEIGHT high. */
+  chart?: boolean;
   readOnly: boolean;
   selected: NetworkSelection | null;
   /** The whole network is selected (its header was clicked). */
@@ -307,8 +310,8 @@ export function NetworkCanvas(props: NetworkCanvasProps) {
   }, [onNear, network.id, near]);
   useEffect(() => () => onNear(network.id, false), [onNear, network.id]);
   const [printHeight, setPrintHeight] = useState<number | null>(null);
-  const height =
-    printHeight ?? canvasHeight(network, props.fallback, props.height, props.print ? Infinity : MAX_HEIGHT);
+  const fitted = canvasHeight(network, props.fallback, props.height, props.print ? Infinity : MAX_HEIGHT);
+  const height = printHeight ?? (props.chart ? Math.max(CHART_HEIGHT, fitted) : fitted);
   const classes = [
     "fbd-network",
     props.networkSelected ? "fbd-network-selected" : "",
@@ -317,23 +320,32 @@ export function NetworkCanvas(props: NetworkCanvasProps) {
     .filter(Boolean)
     .join(" ");
   return (
-    <section className={classes} ref={ref} data-network={network.id} aria-label={`Network ${index + 1}`}>
+    <section
+      className={classes}
+      ref={ref}
+      data-network={network.id}
+      aria-label={props.chart ? "CFC chart" : `Network ${index + 1}`}
+    >
       <header className="fbd-network-header" onMouseDown={() => props.onSelectNetwork(network.id)}>
         <button
           type="button"
           className={`fbd-network-number${props.breakpoint ? " fbd-has-breakpoint" : ""}`}
-          title="Toggle a breakpoint on this network"
+          title={props.chart ? "Toggle a breakpoint on the chart" : "Toggle a breakpoint on this network"}
           aria-pressed={props.breakpoint}
           onClick={() => props.onToggleBreakpoint(network.id)}
         >
-          {index + 1}
+          {props.chart ? "CFC" : index + 1}
         </button>
-        <span className="fbd-network-label" onDoubleClick={() => props.onEditText(network.id, "label")}>
-          {network.label ? `${network.label}:` : ""}
-        </span>
-        <span className="fbd-network-comment" onDoubleClick={() => props.onEditText(network.id, "comment")}>
-          {network.comment ?? ""}
-        </span>
+        {props.chart ? null : (
+          <>
+            <span className="fbd-network-label" onDoubleClick={() => props.onEditText(network.id, "label")}>
+              {network.label ? `${network.label}:` : ""}
+            </span>
+            <span className="fbd-network-comment" onDoubleClick={() => props.onEditText(network.id, "comment")}>
+              {network.comment ?? ""}
+            </span>
+          </>
+        )}
         {props.problems.map((d, i) => (
           <span key={i} className="fbd-network-problem" role="note">
             {d.code}: {d.message}

@@ -33,6 +33,7 @@ import {
   type CommandGroup,
 } from "./commands";
 import { ContextMenu, type MenuItem } from "./ContextMenu";
+import { IlView } from "./IlView";
 import { guessType, instanceName, symbolNames, undeclared, type VariableDeclaration } from "./declare";
 import { extend, navigate, type Direction } from "./navigation";
 import { OperandEditor } from "./OperandEditor";
@@ -257,6 +258,8 @@ export function LdEditor({
   /** An element whose operand editor opens once the edit that created it has been laid out. */
   const [pendingEdit, setPendingEdit] = useState<string | null>(null);
   const [valuePrompt, setValuePrompt] = useState<ValueRequest | null>(null);
+  /** The network shown as IL ("View as IL"), or null. */
+  const [asIl, setAsIl] = useState<string | null>(null);
 
   const byName = useMemo(() => new Map(library.map((e) => [e.name.toUpperCase(), e])), [library]);
   const lookup = useCallback((call: string) => byName.get(call.toUpperCase()), [byName]);
@@ -632,12 +635,15 @@ export function LdEditor({
             },
           ]
         : [];
+    const network = selectedNetwork({ body, selection: liveSelection });
+    const il: MenuItem[] = network ? [{ id: "view-il", label: "View as IL", run: () => setAsIl(network) }] : [];
     const selected = liveSelection?.kind === "elements" ? variableOf(body, liveSelection.ids[0]!) : null;
     const references = selected ? [referencesItem(selected)] : [];
     const operand = onlineActions ? selected : null;
-    if (!onlineActions || !operand) return [...breakpoint, ...references];
+    if (!onlineActions || !operand) return [...breakpoint, ...il, ...references];
     return [
       ...breakpoint,
+      ...il,
       ...onlineOperandItems(operand, onlineActions, (action) => setValuePrompt({ operand, action })),
       ...references,
     ];
@@ -771,6 +777,16 @@ export function LdEditor({
           commands={onlineActions}
           onDone={() => {
             setValuePrompt(null);
+            root.current?.focus();
+          }}
+        />
+      ) : null}
+      {asIl && networksOf(body).some((n) => n.id === asIl) ? (
+        <IlView
+          network={networksOf(body).find((n) => n.id === asIl)!}
+          number={networksOf(body).findIndex((n) => n.id === asIl) + 1}
+          onClose={() => {
+            setAsIl(null);
             root.current?.focus();
           }}
         />

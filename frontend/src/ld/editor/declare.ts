@@ -27,6 +27,7 @@ export const FAMILY_DEFAULT: Readonly<Record<string, string>> = {
   ANY_BIT: "WORD",
   ANY_STRING: "STRING",
   ANY_DATE: "DATE_AND_TIME",
+  ANY_DURATION: "TIME",
 };
 
 export const concrete = (type: string): string => FAMILY_DEFAULT[type.toUpperCase()] ?? type;

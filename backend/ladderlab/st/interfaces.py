@@ -1,0 +1,140 @@
+"""INTERFACEs (IEC 61131-3 ed. 3, 6.6.6; CODESYS): method prototypes a function block IMPLEMENTS, variables of an
+interface's type (a reference to an implementing instance, or NULL), calls through them dispatched by the instance's
+FB, and the assignment attempt ``?=``.
+
+An INTERFACE is declared among the TYPEs (the project's types text); its methods are checked like an FB's
+(st/methods.py), without a body: a call ``i.M()`` runs the method of the FB of the instance ``i`` refers to.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from ..iec.spelling import did_you_mean
+from . import ast
+from . import types as t
+from .inheritance import signature_difference
+from .symbols import THIS, MethodInfo, PouInfo, Symbol
+
+_ALLOWED = {"VAR_INPUT", "VAR_IN_OUT"}
+
+
+def register_interfaces(checker: Any, decls: list[ast.InterfaceDecl]) -> None:
+    """Their names first (so TYPEs, globals and POUs may declare variables of them)."""
+    report = checker._reporter("types", None)
+    for decl in decls:
+        upper = decl.name.upper()
+        if upper in checker.result.interfaces or upper in checker.type_decls or upper in checker.result.pous:
+            report("ST-DUPLICATE", f"the name '{decl.name}' is already in use", decl)
+            continue
+        checker.result.interfaces[upper] = PouInfo(decl.name, "INTERFACE", "st", None)
+
+
+def declare_interfaces(checker: Any, decls: list[ast.InterfaceDecl]) -> None:
+    """The interfaces they extend and their method prototypes, once the TYPEs are resolved."""
+    from .body import BodyChecker
+
+    report = checker._reporter("types", None)
+    for decl in decls:
+        info = checker.result.interfaces.get(decl.name.upper())
+        if info is None or info.name != decl.name:
+            continue
+        for name in decl.extends:
+            base = checker.result.interfaces.get(name.upper())
+            if base is None:
+                report("ST-UNKNOWN-TYPE", f"{decl.name} EXTENDS '{name}', which is not an interface", decl)
+            elif base.implements(info):
+                report("ST-RECURSION", f"{decl.name} EXTENDS {name}, which extends {decl.name}", decl)
+            else:
+                info.interfaces.append(base)
+        for method in decl.methods:
+            upper = method.name.upper()
+            if upper in info.methods:
+                report("ST-DUPLICATE", f"{decl.name} has two methods called '{method.name}'", method)
+                continue
+            prototype = PouInfo(f"{decl.name}.{method.name}", "FUNCTION", "st", None)
+            prototype.method = MethodInfo(info, method.name, abstract=True)
+            this = t.InterfaceType(info.name, info)
+            prototype.symbols[THIS] = Symbol(THIS, "VAR_IN_OUT", this, ast.NamedType(info.name), pou=prototype.name)
+            checker_ = BodyChecker(checker.result, prototype, report)
+            if method.return_type is not None:
+                prototype.return_spec = method.return_type
+                prototype.return_type = checker.resolve(method.return_type, checker_)
+            for block in method.var_blocks:
+                if block.kind not in _ALLOWED:
+                    report("ST-DECL", f"an interface's method declares its parameters only, not {block.kind}", block)
+                    continue
+                checker.declare_block(block, prototype.symbols, checker_, prototype)
+            if method.body:
+                report(
+                    "ST-DECL", f"{decl.name}.{method.name} is a prototype: an interface's method has no body", method
+                )
+            if set(method.modifiers) - {"PUBLIC"}:
+                report("ST-DECL", "an interface's methods are PUBLIC: they take no other modifier", method)
+            info.methods[upper] = prototype
+
+
+def link_implements(checker: Any, project: Any) -> None:
+    """Each function block's IMPLEMENTS list."""
+    for pou in project.pous:
+        info = checker.result.pous.get(pou.name.upper())
+        if not pou.implements or info is None or info.name != pou.name:
+            continue
+        report = checker._reporter(f"{pou.name}/declarations", pou.name)
+        if info.kind != "FUNCTION_BLOCK":
+            report("ST-DECL", f"only a function block IMPLEMENTS interfaces, not a {pou.kind}", None)
+            continue
+        for name in pou.implements:
+            interface = checker.result.interfaces.get(name.upper())
+            if interface is None:
+                known = [i.name for i in checker.result.interfaces.values()]
+                report(
+                    "ST-UNKNOWN-TYPE",
+                    f"{pou.name} IMPLEMENTS '{name}', which is not an interface" + did_you_mean(name, known),
+                    None,
+                )
+            else:
+                info.interfaces.append(interface)
+
+
+def check_implementations(checker: Any, blocks: list[PouInfo]) -> None:
+    """Every method of every interface a function block implements (directly or through its base) is one of its
+    methods, its own or inherited, with the same parameters and result."""
+    for fb in blocks:
+        report = checker._reporter(f"{fb.name}/declarations", fb.name)
+        for interface in fb.all_interfaces():
+            for prototype in interface.methods.values():
+                name = prototype.method.name
+                found = fb.find_method(prototype.method.key)
+                if found is None:
+                    if not fb.abstract:
+                        report("ST-DECL", f"{fb.name} implements {interface.name} but has no method {name}", None)
+                    continue
+                difference = signature_difference(prototype, found)
+                if difference:
+                    report("ST-DECL", f"{found.name} implements {prototype.name} but {difference}", None)
+                elif found.method.access != "PUBLIC":
+                    report("ST-DECL", f"{found.name} implements {prototype.name}, so it must be PUBLIC", None)
+
+
+def check_attempt(checker: Any, stmt: ast.Assign) -> None:
+    """``target ?= value``: the target an interface variable, the value an instance or an interface variable."""
+    target = checker.target(stmt.target)
+    value = checker.expr(stmt.value)
+    if target is t.ERROR or value is t.ERROR:
+        return
+    if not isinstance(target, t.InterfaceType):
+        checker.report("ST-TYPE-MISMATCH", f"?= assigns to a variable of an interface's type, not to a {target}", stmt)
+    elif not isinstance(value, (t.InterfaceType, t.FbType)) or (isinstance(value, t.FbType) and value.pou is None):
+        checker.report(
+            "ST-TYPE-MISMATCH", f"?= tries an FB instance or an interface variable, not a {value}", stmt.value
+        )
+
+
+def interface_comparison(left: t.Type, right: t.Type) -> bool:
+    """``i = j``, ``i <> NULL`` and CODESYS's ``i <> 0``: whether interface variables refer to one instance."""
+    if not isinstance(left, t.InterfaceType):
+        left, right = right, left
+    return isinstance(left, t.InterfaceType) and (
+        isinstance(right, (t.InterfaceType, t.NullType)) or (isinstance(right, t.UntypedInt) and right.value == 0)
+    )

@@ -1,0 +1,59 @@
+// A CFC chart's execution order (docs/diagrams.md "CFC", CFC-02): numbers over the executed elements,
+// moves that may go against the wiring, and "order by data flow" from the backend's FBD order.
+import { describe, expect, it } from "vitest";
+import { arithmetic, bodyOf } from "./fixtures";
+import type { FbdBody } from "./model";
+import { arrangeNetwork } from "./ops";
+import { feedbackPins, moveInOrder, orderByDataFlow, orderNumbers } from "./order";
+
+// arithmetic(): inputs a, b -> add -> sub (with input c) -> output r
+const chart = (): FbdBody =>
+  bodyOf({ ...arithmetic(), nodes: [...(arithmetic().nodes ?? []), { type: "return", id: "ret" }] });
+const network = () => chart().networks![0]!;
+const reported = ["a", "b", "add", "c", "sub", "r", "ret"];
+
+describe("CFC execution order", () => {
+  it("numbers the executed elements only: inputs are read where used (CFC-02)", () => {
+    expect([...orderNumbers(network(), reported)]).toEqual([
+      ["add", 1],
+      ["sub", 2],
+      ["r", 3],
+      ["ret", 4],
+    ]);
+  });
+
+  it("moves an element before the block feeding it, which FBD refuses", () => {
+    expect(moveInOrder(chart(), "n1", reported, "sub", -1).ok).toBe(false);
+    const moved = moveInOrder(chart(), "n1", reported, "sub", -1, true);
+    expect(moved.ok && moved.body.networks![0]!.order).toEqual(["sub", "add", "r", "ret"]);
+    const ret = moveInOrder(chart(), "n1", reported, "ret", -1, true);
+    expect(ret.ok && ret.body.networks![0]!.order).toEqual(["add", "sub", "ret", "r"]);
+    expect(moveInOrder(chart(), "n1", reported, "a", 1, true)).toEqual({
+      ok: false,
+      error: "Inputs have no execution order number: they are read where their consumer runs.",
+    });
+  });
+
+  it("orders by data flow: the executed elements of the FBD order, stored as the chart's order", () => {
+    const result = orderByDataFlow(chart(), "n1", ["a", "b", "add", "c", "sub", "r", "ret"]);
+    expect(result.ok && result.body.networks![0]!.order).toEqual(["add", "sub", "r", "ret"]);
+  });
+});
+
+describe("auto-arrange on a chart", () => {
+  it("keeps every execution order number, the return's too", () => {
+    const order = ["a", "b", "c", "sub", "add", "ret", "r"];
+    const result = arrangeNetwork(chart(), "n1", () => 60, order, true);
+    expect(result.ok && result.body.networks![0]!.order).toEqual(["sub", "add", "ret", "r"]);
+    const fbd = arrangeNetwork(chart(), "n1", () => 60, order);
+    expect(fbd.ok && fbd.body.networks![0]!.order).toEqual(["sub", "add", "r"]);
+  });
+});
+
+describe("feedback pins online", () => {
+  it("are the inputs fed by an element with the same or a higher number", () => {
+    // add feeds sub.IN1; with sub numbered before add that wire runs against the order
+    expect([...feedbackPins(network(), orderNumbers(network(), ["sub", "add", "r"]))]).toEqual(["sub/in:IN1"]);
+    expect([...feedbackPins(network(), orderNumbers(network(), ["add", "sub", "r"]))]).toEqual([]);
+  });
+});

@@ -1,0 +1,44 @@
+import type { Pou } from "../generated/api";
+
+/** What a member row says: `Name : TYPE`, and the access specifier when it is not PUBLIC (CODESYS's tree). */
+function memberLabel(name: string, type: string | null | undefined, access: string | undefined): string {
+  const typed = type ? `${name} : ${type}` : name;
+  return access && access !== "PUBLIC" ? `${typed} (${access})` : typed;
+}
+
+/**
+ * A function block's methods and properties under it in the project tree (docs/st.md, object orientation), with
+ * the FB it extends; choosing one opens the FB, whose file holds them.
+ */
+export function PouMembers({ pou, open }: { pou: Pou; open(): void }) {
+  const methods = pou.methods ?? [];
+  const properties = pou.properties ?? [];
+  if (!methods.length && !properties.length && !pou.extends && !pou.implements?.length) return null;
+  const heritage = [
+    pou.extends ? `EXTENDS ${pou.extends}` : "",
+    pou.implements?.length ? `IMPLEMENTS ${pou.implements.join(", ")}` : "",
+  ].filter(Boolean);
+  return (
+    <li className="tree-members-row">
+      <ul className="tree-members" aria-label={`${pou.name} members`}>
+        {heritage.length ? <li className="tree-meta">{heritage.join(" ")}</li> : null}
+        {methods.map((m) => (
+          <li key={`m-${m.name}`}>
+            <button type="button" className="tree-item tree-member" onClick={open}>
+              <span className="tree-kind">M</span>
+              <span className="tree-name">{memberLabel(m.name, m.return_type, m.access)}</span>
+            </button>
+          </li>
+        ))}
+        {properties.map((p) => (
+          <li key={`p-${p.name}`}>
+            <button type="button" className="tree-item tree-member" onClick={open}>
+              <span className="tree-kind">P</span>
+              <span className="tree-name">{memberLabel(p.name, p.type, p.access)}</span>
+            </button>
+          </li>
+        ))}
+      </ul>
+    </li>
+  );
+}
