@@ -1,4 +1,4 @@
-import { useEffect, useState, type FormEvent } from "react";
+import { useEffect, useState, type CSSProperties, type FormEvent } from "react";
 import type { ProjectSummary } from "./api/client";
 import { appStore, useAppStore } from "./store";
 import { lastProject, rememberProject } from "./project/session";
@@ -6,9 +6,16 @@ import { useWorkspace } from "./project/store";
 import { WorkspaceView } from "./project/WorkspaceView";
 import { NewFromExample } from "./hmi/NewFromExample";
 import { ViewBoundary } from "./project/ViewBoundary";
-import { useHidden } from "./project/layout";
+import { useHidden, useStoredSize } from "./project/layout";
+import { PanelLeftClose, PanelLeftOpen } from "lucide-react";
+import { Splitter } from "./ui/Splitter";
+import { ThemeToggle } from "./ui/ThemeToggle";
+import { ToolButton } from "./ui/ToolButton";
 
 const HEALTH_POLL_MS = 15_000;
+/** The project list and the project tree may be dragged between these widths (px). */
+const SIDE_MIN_PX = 160;
+const SIDE_MAX_PX = 520;
 
 function HealthIndicator() {
   const status = useAppStore((s) => s.healthStatus);
@@ -188,6 +195,7 @@ export default function App() {
   const selected = useAppStore((s) => s.selectedProject);
   const listed = useAppStore((s) => s.projectsStatus === "ready");
   const [projectsHidden, toggleProjects] = useHidden("projects");
+  const [projectsWidth, resizeProjects] = useStoredSize("projects", SIDE_MIN_PX, SIDE_MAX_PX);
 
   useEffect(() => {
     void loadProjects();
@@ -212,18 +220,39 @@ export default function App() {
 
   return (
     <ViewBoundary name="LadderLab">
-      <div className={`app${projectsHidden ? " projects-hidden" : ""}`}>
+      <div
+        className={`app${projectsHidden ? " projects-hidden" : ""}`}
+        style={projectsWidth ? ({ "--projects-width": `${projectsWidth}px` } as CSSProperties) : undefined}
+      >
         <header className="header">
-          <button type="button" className="panel-toggle" aria-pressed={!projectsHidden} onClick={toggleProjects}>
-            {projectsHidden ? "Show projects" : "Hide projects"}
-          </button>
+          <ToolButton
+            icon={projectsHidden ? PanelLeftOpen : PanelLeftClose}
+            label={projectsHidden ? "Show projects" : "Hide projects"}
+            className="panel-toggle"
+            aria-pressed={!projectsHidden}
+            onClick={toggleProjects}
+          />
           <h1>LadderLab</h1>
-          <HealthIndicator />
+          <span className="header-end">
+            <HealthIndicator />
+            <ThemeToggle />
+          </span>
         </header>
         {projectsHidden ? null : (
-          <ViewBoundary name="The project list" gridArea="sidebar">
-            <ProjectList />
-          </ViewBoundary>
+          <>
+            <ViewBoundary name="The project list" gridArea="sidebar">
+              <ProjectList />
+            </ViewBoundary>
+            <Splitter
+              label="Resize the project list"
+              orientation="vertical"
+              grow={1}
+              className="side-splitter projects-splitter"
+              value={projectsWidth}
+              size={(edge) => projectsWidth ?? edge.previousElementSibling!.getBoundingClientRect().width}
+              onResize={resizeProjects}
+            />
+          </>
         )}
         <MainArea />
       </div>

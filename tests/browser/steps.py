@@ -79,6 +79,12 @@ def go_online(page, *, run: bool = True) -> None:
         state.filter(has_text="Online · running").wait_for()
 
 
+def export_menu(page):
+    """Opens the workspace bar's Export menu; returns its group of entries (exports and print)."""
+    page.locator(".workspace-bar details.menu > summary").click()
+    return page.get_by_role("group", name="Export")
+
+
 def panel_tab(page, name: str):
     """Shows the bottom panel whose tab starts with ``name`` ("Watch list", "Online log") and returns the panels."""
     panels = page.get_by_role("region", name="Panels")

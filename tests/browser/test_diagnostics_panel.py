@@ -9,6 +9,7 @@ The requests go through the generated API client (check, project load).
 from __future__ import annotations
 
 import pytest
+from playwright.sync_api import expect
 
 from .conftest import ARTIFACTS
 from .steps import open_pou, panel_tab, store_project
@@ -54,7 +55,8 @@ def test_diagnostics_name_elements_in_the_users_words_and_open_their_catalogue_e
     assert "contact3" not in text and "coil9" not in text and "net7" not in text
 
     code = panels.get_by_role("button", name="ST-UNKNOWN-VAR")
-    assert code.get_attribute("title") == "A name is used that is not declared."
+    # the catalogue is loaded when the panel first lists a problem (issue 22 item 8): the summary comes with it
+    expect(code).to_have_attribute("title", "A name is used that is not declared.")
     code.click()
     entry = panels.get_by_role("note", name="About ST-UNKNOWN-VAR")
     entry.wait_for()

@@ -4,7 +4,7 @@ Each test drives the example project the server seeds (``motor``: Main in LD wit
 ``Motor := (Start OR Motor) AND NOT Stop``, a TON ``RunTimer`` (PT = T#5s) timing Motor, a CTU counting
 starts, a Blinker FB ``Blink`` in ST; Scaling in FBD) against a real server, and fails on any page error
 or console error (conftest.py); a test that provokes an error on purpose allows exactly that one.
-Screenshots go to tests/browser/artifacts/ (readme.png is docs/screenshot.png).
+Screenshots go to tests/browser/artifacts/ (README's docs/screenshot.png comes from test_walkthrough.py).
 """
 
 from __future__ import annotations
@@ -176,7 +176,7 @@ def test_values_on_every_pin_and_the_instance_tree(page, server):
     assert panels.locator('tr[data-path="MAIN.RUNTIMER.PT"] td.watch-value').inner_text() == "T#5s"
     assert panels.locator('tr[data-path="MAIN.RUNTIMER.PT"] td.watch-type').inner_text() == "TIME"
     assert "{" not in panels.locator("table").inner_text()  # no raw JSON anywhere
-    page.screenshot(path=str(ARTIFACTS / "readme.png"))  # docs/screenshot.png
+    page.screenshot(path=str(ARTIFACTS / "online-values.png"))
 
     # The Variables view: Main's variables, the Blinker instance expands into its own and its TON.
     page.get_by_role("tab", name="Variables").click()

@@ -22,6 +22,7 @@ from pathlib import Path
 import pytest
 
 from .conftest import ARTIFACTS
+from .steps import export_menu
 
 expect = pytest.importorskip("playwright.sync_api", reason="playwright is not installed").expect
 
@@ -68,7 +69,7 @@ def test_print_a_project_to_pdf_and_find_its_cross_references(page, server: str)
 
     # Print the whole project: the print view opens in a new tab.
     with page.context.expect_page() as opened:
-        page.get_by_role("button", name="Print project…").click()
+        export_menu(page).get_by_role("button", name="Print project…").click()
     printed = opened.value
     errors += watch_errors(printed)
     printed.get_by_role("region", name="Title page").wait_for()
@@ -119,7 +120,7 @@ def test_print_a_project_to_pdf_and_find_its_cross_references(page, server: str)
 
     # One POU: "Print Main…" prints the open POU alone (and the cross references of its variables).
     with page.context.expect_page() as opened:
-        page.get_by_role("button", name="Print Main…").click()
+        export_menu(page).get_by_role("button", name="Print Main…").click()
     alone = opened.value
     errors += watch_errors(alone)
     alone.get_by_role("region", name="PROGRAM Main").wait_for()

@@ -29,6 +29,7 @@ from ladderlab.storage.project_folder import read_project_folder
 
 from .conftest import ARTIFACTS
 from .steps import (
+    export_menu,
     go_online,
     new_pou,
     new_project,
@@ -374,7 +375,7 @@ def test_the_car_wash_prints_its_chart_and_its_actions(page, server):
     open_pou(page, "car_wash_sfc", "Wash")
     page.get_by_role("application", name="Sequential function chart editor").wait_for()
     with page.context.expect_page() as opened:
-        page.get_by_role("button", name="Print project…").click()
+        export_menu(page).get_by_role("button", name="Print project…").click()
     printed = opened.value
     errors: list[str] = []
     printed.on("pageerror", lambda error: errors.append(f"page error: {error}"))

@@ -114,6 +114,44 @@ def test_renaming_a_program_changes_tasks_and_test_files_not_members() -> None:
     ]
 
 
+def test_renaming_a_global_or_a_program_changes_task_triggers_and_program_instances() -> None:
+    """A global used as a task's SINGLE trigger and in a program instance's bindings (CFG-06), and the program
+    an instance runs, are renamed like every other use; nothing else in the task changes."""
+    project = Project.model_validate(
+        {
+            "name": "cfg",
+            "globals": "VAR_GLOBAL Go : BOOL; Level : INT; END_VAR",
+            "pous": [
+                {
+                    "name": "Main",
+                    "kind": "program",
+                    "language": "st",
+                    "declarations": "VAR_INPUT lvl : INT; END_VAR VAR_OUTPUT full : BOOL; END_VAR",
+                    "body": "full := lvl > 10;",
+                }
+            ],
+            "tasks": [
+                {
+                    "name": "OnGo",
+                    "interval": None,
+                    "single": "Go",
+                    "programs": [{"name": "Tank1", "type": "Main", "inputs": {"lvl": "Level + 1"}, "outputs": {}}],
+                }
+            ],
+        }
+    )
+    renamed, changes = rename(project, "go", "Start")
+    assert renamed.tasks[0].single == "Start"
+    assert [(c.part, c.task, c.text) for c in changes if c.part == "task"] == [("task", "OnGo", "Go")]
+    renamed, changes = rename(project, "LEVEL", "Height")
+    assert renamed.tasks[0].programs[0].inputs == {"lvl": "Height + 1"}
+    assert [(c.part, c.text) for c in changes if c.part == "task"] == [("task", "Tank1.lvl := Level + 1")]
+    renamed, changes = rename(project, "Main", "Filler")
+    assert (renamed.tasks[0].programs[0].name, renamed.tasks[0].programs[0].type) == ("Tank1", "Filler")
+    assert renamed.pous[0].name == "Filler"
+    assert [(c.part, c.text) for c in changes] == [("task", "Tank1 : Main")]
+
+
 def test_references_leave_out_the_definition() -> None:
     found = references(_project(), "Main")
     assert [(r.part, r.task, r.file) for r in found] == [("task", "Fast", None), ("test", None, "tests/t.st")]

@@ -109,14 +109,34 @@ def _visit(data: dict[str, Any], old: str, new: str, found: list[Reference], ski
         if pou.get("return_type"):
             pou["return_type"] = _text(pou["return_type"], old, new, found, Reference(pou=name, part="return type"))
     for task in data["tasks"]:
-        programs = task["programs"]
-        for i, program in enumerate(programs):
-            if program.upper() == old.upper():
-                programs[i] = new
-                found.append(Reference(part="task", task=task["name"], text=program))
+        _task(task, old, new, found)
     for test in data["tests"]:
         path = f"tests/{test['name']}.st"
         test["text"] = _text(test["text"], old, new, found, Reference(part="test", file=path))
+
+
+def _task(task: dict[str, Any], old: str, new: str, found: list[Reference]) -> None:
+    """A dumped task renamed in place: its SINGLE trigger, the programs it runs, and each program instance's
+    program and parameter bindings (ST expressions over globals)."""
+    where = Reference(part="task", task=task["name"])
+    if task.get("single") and name_spans(task["single"], old):
+        found.append(where.model_copy(update={"text": task["single"]}))
+        task["single"] = rename_in_text(task["single"], old, new)
+    programs = task["programs"]
+    for i, program in enumerate(programs):
+        if isinstance(program, str):
+            if program.upper() == old.upper():
+                programs[i] = new
+                found.append(where.model_copy(update={"text": program}))
+            continue
+        if program["type"].upper() == old.upper():
+            found.append(where.model_copy(update={"text": f"{program['name']} : {program['type']}"}))
+            program["type"] = new
+        for pins in (program["inputs"], program["outputs"]):
+            for pin, value in pins.items():
+                if name_spans(value, old):
+                    found.append(where.model_copy(update={"text": f"{program['name']}.{pin} := {value}"}))
+                    pins[pin] = rename_in_text(value, old, new)
 
 
 def _body(body: Any, old: str, new: str, found: list[Reference], pou: str) -> Any:

@@ -2,6 +2,7 @@
 // change in one shows in the other. Table rows: name, class, type (autocomplete of elementary,
 // user and FB types), initial value, address, comment; add, remove, move up/down. Problems the
 // backend reports for a line appear on its row. Text the table cannot hold keeps it read-only.
+import { PencilLine } from "lucide-react";
 import { useEffect, useId, useMemo, useRef, useState } from "react";
 import type { Diagnostic } from "../generated/api";
 import { freeName, parseDeclarations, printDeclarations, VAR_CLASSES, type DeclRow } from "./model";
@@ -19,6 +20,8 @@ export interface DeclarationsEditorProps {
   readOnly?: string | null;
   /** Class of a new row (VAR for POUs, VAR_GLOBAL for the globals). */
   newClass?: string;
+  /** Offers "Rename everywhere" on each row (the globals: a project-level name, see project/refactor.ts). */
+  onRename?(name: string): void;
 }
 
 type Mode = "table" | "text";
@@ -40,6 +43,7 @@ export function DeclarationsEditor({
   focus = null,
   readOnly = null,
   newClass = "VAR",
+  onRename,
 }: DeclarationsEditorProps) {
   const focusLine = focus?.line ?? null;
   const [mode, setMode] = useState<Mode>("table");
@@ -196,6 +200,17 @@ export function DeclarationsEditor({
                     </td>
                   ))}
                   <td className="row-actions">
+                    {onRename ? (
+                      <button
+                        type="button"
+                        aria-label={`Rename ${r.name} everywhere`}
+                        title="Rename everywhere (every use in the project)"
+                        disabled={!editable || !r.name}
+                        onClick={() => onRename(r.name)}
+                      >
+                        <PencilLine size={14} aria-hidden="true" />
+                      </button>
+                    ) : null}
                     <button
                       type="button"
                       aria-label={`Move ${r.name} up`}

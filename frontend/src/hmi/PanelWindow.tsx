@@ -10,15 +10,6 @@ import { parseServerMessage, type ClientMessage } from "../online/protocol";
 import { bindingsOf } from "./model";
 import { PANEL_INTERVAL_MS, PanelRun } from "./PanelRun";
 
-/** The panel a window was opened for, from its address; null when it is the app's address. */
-export function panelTarget(search: string): { project: string; panel: string; simulation: string | null } | null {
-  const params = new URLSearchParams(search);
-  const target = params.get("panel");
-  if (!target || !target.includes("/")) return null;
-  const [project, panel] = [target.slice(0, target.lastIndexOf("/")), target.slice(target.lastIndexOf("/") + 1)];
-  return { project, panel, simulation: params.get("simulation") || null };
-}
-
 function useConnection(simulation: string | null, paths: string[]) {
   const [monitor, setMonitor] = useState<MonitorState>(emptyMonitor);
   const [open, setOpen] = useState(false);

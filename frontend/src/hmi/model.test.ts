@@ -21,7 +21,7 @@ import {
   typedValue,
   type Widget,
 } from "./model";
-import { panelTarget } from "./PanelWindow";
+import { panelTarget } from "./panelTarget";
 import { appendSample } from "./trend";
 import { durationMs, parseUntil } from "./until";
 

@@ -1,6 +1,8 @@
 // "Import PLCopen XML": pick a file, optionally name the new project, POST it, then show what the
 // import reported (warnings about what it converted or dropped) and offer to open the project.
+import { FileUp } from "lucide-react";
 import { useState, type FormEvent } from "react";
+import { ToolButton } from "../ui/ToolButton";
 import type { ImportReport } from "../generated/api";
 import { interchangeApi, type InterchangeApi } from "./api";
 import { failure } from "./outcome";
@@ -40,9 +42,7 @@ export function ImportPlcopen({ onStored, onOpen, api = interchangeApi }: Import
   const [imported, setImported] = useState<string | null>(null);
   if (!open) {
     return (
-      <button type="button" className="import-button" onClick={() => setOpen(true)}>
-        Import PLCopen XML…
-      </button>
+      <ToolButton icon={FileUp} label="Import PLCopen XML…" className="import-button" onClick={() => setOpen(true)} />
     );
   }
   const submit = async (e: FormEvent) => {

@@ -339,7 +339,7 @@ describe("Check and the Diagnostics panel", () => {
     expect(element(editor, "lamp_coil").getAttribute("class")).toContain("ld-selected");
 
     fireEvent.click(items[0]!);
-    const row = (screen.getByLabelText("Name of Stop") as HTMLInputElement).closest("tr")!;
+    const row = ((await screen.findByLabelText("Name of Stop")) as HTMLInputElement).closest("tr")!; // the Declarations tab loads on first use
     expect(row.className).toContain("focused");
     expect(within(row).getByRole("alert").textContent).toBe("unknown type 'NOPE'");
   });

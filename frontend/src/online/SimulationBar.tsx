@@ -12,6 +12,8 @@ import { useStore } from "zustand";
 import { createStore } from "zustand/vanilla";
 import { HistoryBar } from "./HistoryBar";
 import { keysOf, type CommandOf } from "../keys/keymap";
+import { CheckCheck, Cpu, LockOpen, Play, RotateCcw, Square, StepForward, Unplug } from "lucide-react";
+import { ToolButton } from "../ui/ToolButton";
 
 /** Saves pending changes; the project's name once it is saved, else null (the save's message is shown). */
 async function savedProject(): Promise<string | null> {
@@ -108,7 +110,7 @@ export function SimulationBar() {
         disabled={checking}
         title={titled("Check the project as it is (nothing is saved)", "check")}
       >
-        Check
+        <CheckCheck size={16} aria-hidden="true" /> Check
       </button>
       <button
         type="button"
@@ -116,38 +118,31 @@ export function SimulationBar() {
         disabled={phase === "compiling" || phase === "connecting"}
         title={titled("Compile & simulate", "go-online")}
       >
-        Compile &amp; simulate
+        <Cpu size={16} aria-hidden="true" /> Compile &amp; simulate
       </button>
-      <button type="button" onClick={s.run} disabled={!online || running} title={titled("Run", "run")}>
-        Run
-      </button>
-      <button
-        type="button"
+      <ToolButton icon={Play} label="Run" keys={keysOf("app", "run")} onClick={s.run} disabled={!online || running} />
+      <ToolButton
+        icon={Square}
+        label="Stop"
+        keys={keysOf("app", "stop")}
         onClick={s.stop}
         disabled={!online || !(running || state === "halted")}
-        title={titled("Stop", "stop")}
-      >
-        Stop
-      </button>
-      <button
-        type="button"
+      />
+      <ToolButton
+        icon={StepForward}
+        label="Single cycle"
+        keys={keysOf("app", "single-cycle")}
         onClick={s.singleCycle}
         disabled={!online}
-        title={titled("Single cycle: one scan, then stopped", "single-cycle")}
-      >
-        Single cycle
-      </button>
-      <button type="button" onClick={() => void s.reset()} disabled={!online} title="Warm reset">
-        Reset
-      </button>
-      <button
-        type="button"
+      />
+      <ToolButton icon={RotateCcw} label="Reset" onClick={() => void s.reset()} disabled={!online} />
+      <ToolButton
+        icon={Unplug}
+        label="Go offline"
+        keys={keysOf("app", "go-offline")}
         onClick={() => void s.goOffline()}
         disabled={phase === "offline"}
-        title={titled("Go offline", "go-offline")}
-      >
-        Go offline
-      </button>
+      />
       <span className="online-state" role="status" aria-label="Online state">
         <span className="online-dot" aria-hidden="true" />
         {label}
@@ -155,14 +150,13 @@ export function SimulationBar() {
       <span className={`force-count${forces ? " forcing" : ""}`} role="status" aria-label="Active forces">
         {forces} forced
       </span>
-      <button
-        type="button"
+      <ToolButton
+        icon={LockOpen}
+        label="Release all forces"
+        keys={keysOf("app", "release-forces")}
         onClick={s.unforceAll}
         disabled={!online || forces === 0}
-        title={titled("Release all forces", "release-forces")}
-      >
-        Release all forces
-      </button>
+      />
       {prepared ? (
         <span className="prepared" role="group" aria-label="Prepared values">
           {prepared} prepared

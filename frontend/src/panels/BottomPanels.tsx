@@ -1,20 +1,24 @@
 // The panels under the editor: Diagnostics, Watch list, I/O, Online log, Breakpoints, Trace, Tests and Cross
 // references, one shown at a time.
+import { lazy, Suspense } from "react";
 import { useDebug } from "../debug/store";
 import type { Diagnostic } from "../generated/api";
 import { draggedOperand } from "../ld/editor/dragOperand";
 import { onlineStore, useOnline } from "../online/store";
-import { TestsPanel } from "../tests/TestsPanel";
 import { useTests } from "../tests/store";
-import { TracePanel } from "../trace/TracePanel";
-import { BreakpointsPanel } from "./BreakpointsPanel";
 import { DiagnosticsPanel } from "./DiagnosticsPanel";
 import { IoPanel } from "./IoPanel";
 import { LogPanel } from "./LogPanel";
 import { panelsStore, usePanels, type PanelId } from "./store";
 import { WatchPanel } from "./WatchPanel";
-import { XrefPanel } from "../xref/XrefPanel";
 import { ViewBoundary } from "../project/ViewBoundary";
+import { Splitter } from "../ui/Splitter";
+
+// The panels used now and then are loaded when first shown (issue 22 item 8: the initial chunk).
+const TracePanel = lazy(() => import("../trace/TracePanel").then((m) => ({ default: m.TracePanel })));
+const TestsPanel = lazy(() => import("../tests/TestsPanel").then((m) => ({ default: m.TestsPanel })));
+const XrefPanel = lazy(() => import("../xref/XrefPanel").then((m) => ({ default: m.XrefPanel })));
+const BreakpointsPanel = lazy(() => import("./BreakpointsPanel").then((m) => ({ default: m.BreakpointsPanel })));
 
 /** Each panel in the user's words, for the message when it fails. */
 const PANEL_NAMES: Record<PanelId, string> = {
@@ -83,51 +87,28 @@ export function BottomPanels({ onReveal, pathOfOperand }: BottomPanelsProps) {
       </div>
       <div className="panel-body" role="tabpanel">
         <ViewBoundary key={panel} name={`The ${PANEL_NAMES[panel]}`}>
-          {body[panel]}
+          <Suspense fallback={<p className="panel-empty">Loading…</p>}>{body[panel]}</Suspense>
         </ViewBoundary>
       </div>
     </section>
   );
 }
 
-/** Step of the keyboard resize (Arrow up/down on the separator). */
-const KEY_STEP_PX = 24;
-
 /**
  * The top edge of the panels: dragging it up or down (or Arrow up/down when focused) gives the
- * panels more or less of the height, e.g. for a trace chart.
+ * panels more or less of the height, e.g. for a trace chart; the height is kept after a reload.
  */
 function PanelResizer() {
   const height = usePanels((s) => s.height);
-  const current = (el: HTMLElement) =>
-    panelsStore.getState().height ?? el.parentElement!.getBoundingClientRect().height;
-  const setHeight = (px: number) => panelsStore.getState().setHeight(px, window.innerHeight);
   return (
-    <div
+    <Splitter
+      label="Resize the panels"
+      orientation="horizontal"
+      grow={-1}
       className="panel-resizer"
-      role="separator"
-      aria-orientation="horizontal"
-      aria-label="Resize the panels"
-      aria-valuenow={height ?? undefined}
-      tabIndex={0}
-      onPointerDown={(e) => {
-        e.preventDefault();
-        const startY = e.clientY;
-        const startHeight = current(e.currentTarget);
-        const move = (ev: PointerEvent) => setHeight(startHeight + startY - ev.clientY);
-        const up = () => {
-          window.removeEventListener("pointermove", move);
-          window.removeEventListener("pointerup", up);
-        };
-        window.addEventListener("pointermove", move);
-        window.addEventListener("pointerup", up);
-      }}
-      onKeyDown={(e) => {
-        const step = e.key === "ArrowUp" ? KEY_STEP_PX : e.key === "ArrowDown" ? -KEY_STEP_PX : 0;
-        if (!step) return;
-        e.preventDefault();
-        setHeight(current(e.currentTarget) + step);
-      }}
+      value={height}
+      size={(edge) => panelsStore.getState().height ?? edge.parentElement!.getBoundingClientRect().height}
+      onResize={(px) => panelsStore.getState().setHeight(px, window.innerHeight)}
     />
   );
 }

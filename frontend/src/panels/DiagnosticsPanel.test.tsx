@@ -1,6 +1,6 @@
 // The Diagnostics panel: places in the user's words (issue 22 item 5) and each code's catalogue entry
 // (issue 19 item 5: docs/diagnostics.md through src/generated/diagnostics.ts).
-import { fireEvent, render, screen } from "@testing-library/react";
+import { fireEvent, render, screen, waitFor } from "@testing-library/react";
 import { beforeEach, describe, expect, it } from "vitest";
 import type { Diagnostic } from "../generated/api";
 import { DiagnosticsPanel, placeOf } from "./DiagnosticsPanel";
@@ -26,11 +26,12 @@ describe("the Diagnostics panel", () => {
     expect(placeOf(typo)).toBe("Main, line 1:10");
   });
 
-  it("opens the catalogue entry of a code: what it means, an example and the fix", () => {
+  it("opens the catalogue entry of a code: what it means, an example and the fix", async () => {
     panelsStore.setState({ diagnostics: [typo] });
     render(<DiagnosticsPanel onReveal={() => undefined} />);
     const code = screen.getByRole("button", { name: "ST-UNKNOWN-VAR" });
-    expect(code.getAttribute("title")).toBe("A name is used that is not declared.");
+    // the catalogue is loaded on first use (issue 22 item 8): the summary arrives with it
+    await waitFor(() => expect(code.getAttribute("title")).toBe("A name is used that is not declared."));
     expect(screen.queryByRole("note")).toBeNull();
     fireEvent.click(code);
     const entry = screen.getByRole("note", { name: "About ST-UNKNOWN-VAR" });

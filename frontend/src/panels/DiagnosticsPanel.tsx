@@ -1,23 +1,11 @@
 // The Diagnostics panel: the last Check (or a refused compile), errors first; a click opens the
 // POU and reveals the network, element or line the diagnostic names (or opens the operator panel). Each code opens its entry of
-// the diagnostics catalogue (docs/diagnostics.md, src/generated/diagnostics.ts): what it means, an
+// the diagnostics catalogue (docs/diagnostics.md, loaded on first use by ./catalogue): what it means, an
 // example that triggers it and how to fix it.
 import { useState } from "react";
 import type { Diagnostic } from "../generated/api";
-import { DIAGNOSTICS } from "../generated/diagnostics";
+import { useCatalogue, type Catalogue } from "./catalogue";
 import { focusOf, panelOf, usePanels } from "./store";
-
-interface CatalogueEntry {
-  summary: string;
-  example?: string;
-  example_note?: string;
-  fix?: string;
-}
-
-const CATALOGUE: Readonly<Record<string, CatalogueEntry>> = DIAGNOSTICS.codes;
-
-/** The catalogue's entry of a code (undefined for a code the catalogue does not know). */
-export const entryOf = (code: string): CatalogueEntry | undefined => CATALOGUE[code];
 
 const RANK = { error: 0, warning: 1, info: 2 } as const;
 
@@ -37,8 +25,9 @@ export function placeOf(d: Diagnostic): string {
 }
 
 /** A code's catalogue entry, shown under the diagnostic. */
-function Entry({ code }: { code: string }) {
-  const entry = entryOf(code);
+function Entry({ code, catalogue }: { code: string; catalogue: Catalogue | null }) {
+  if (!catalogue) return <p className="diagnostic-entry">Loading the catalogue…</p>;
+  const entry = catalogue[code];
   if (!entry) return <p className="diagnostic-entry">No entry for {code} in the catalogue.</p>;
   return (
     <div className="diagnostic-entry" role="note" aria-label={`About ${code}`}>
@@ -51,7 +40,6 @@ function Entry({ code }: { code: string }) {
 }
 
 export function DiagnosticsPanel({ onReveal }: { onReveal(d: Diagnostic): void }) {
-  const [open, setOpen] = useState<number | null>(null);
   const diagnostics = usePanels((s) => s.diagnostics);
   const checking = usePanels((s) => s.checking);
   const error = usePanels((s) => s.checkError);
@@ -66,6 +54,19 @@ export function DiagnosticsPanel({ onReveal }: { onReveal(d: Diagnostic): void }
   if (diagnostics === null)
     return <p className="panel-empty">Press Check to list the problems of the saved project.</p>;
   if (!diagnostics.length) return <p className="panel-empty">No problems found.</p>;
+  return <DiagnosticsList diagnostics={diagnostics} onReveal={onReveal} />;
+}
+
+/** The problems, each with its code's catalogue entry (the catalogue is loaded when a list first shows). */
+function DiagnosticsList({
+  diagnostics,
+  onReveal,
+}: {
+  diagnostics: readonly Diagnostic[];
+  onReveal(d: Diagnostic): void;
+}) {
+  const [open, setOpen] = useState<number | null>(null);
+  const catalogue = useCatalogue();
   const sorted = [...diagnostics].sort((a, b) => RANK[a.severity ?? "error"] - RANK[b.severity ?? "error"]);
   return (
     <ul className="diagnostics" aria-label="Diagnostics">
@@ -87,12 +88,12 @@ export function DiagnosticsPanel({ onReveal }: { onReveal(d: Diagnostic): void }
               type="button"
               className="diagnostic-code"
               aria-expanded={open === i}
-              title={entryOf(d.code)?.summary ?? d.code}
+              title={catalogue?.[d.code]?.summary ?? d.code}
               onClick={() => setOpen(open === i ? null : i)}
             >
               {d.code}
             </button>
-            {open === i ? <Entry code={d.code} /> : null}
+            {open === i ? <Entry code={d.code} catalogue={catalogue} /> : null}
           </li>
         );
       })}

@@ -5,6 +5,7 @@ import { createStore, type StoreApi } from "zustand/vanilla";
 import { checkUnsaved } from "../api/client";
 import type { CheckReport, Diagnostic } from "../generated/api";
 import type { Project } from "../generated/api";
+import { storedSize, storeSize } from "../project/layout";
 import { partOf } from "../project/parts";
 
 export type PanelId = "diagnostics" | "watch" | "io" | "log" | "breakpoints" | "trace" | "tests" | "xref";
@@ -84,6 +85,7 @@ export function createPanelsStore(
   let call = 0;
   return createStore<PanelsState>()((set, get) => ({
     ...emptyPanels,
+    height: storedSize("panels"),
     show: (panel) => set({ panel }),
     async check(project) {
       const mine = ++call;
@@ -97,7 +99,11 @@ export function createPanelsStore(
     },
     showDiagnostics: (diagnostics) => set({ diagnostics, checkError: null, panel: "diagnostics" }),
     reveal: (target) => set({ focus: { ...target, seq: (get().focus?.seq ?? 0) + 1 } }),
-    setHeight: (px, windowHeight) => set({ height: clampHeight(px, windowHeight) }),
+    setHeight: (px, windowHeight) => {
+      const height = clampHeight(px, windowHeight);
+      storeSize("panels", height);
+      set({ height });
+    },
     clear: () => set({ ...emptyPanels, height: get().height }),
   }));
 }

@@ -6,6 +6,7 @@ import type { Reference } from "../generated/api";
 import type { Pou } from "../generated/api";
 import { onlineStore } from "../online/store";
 import {
+  changedParts,
   copyName,
   describeReference,
   duplicated,
@@ -59,9 +60,12 @@ function ReferenceList({ references, empty }: { references: Reference[]; empty: 
   );
 }
 
-/** Rename: the new name, a preview of every change the server's refactoring makes, then one step. */
-function RenameDialog({ pou, onClose }: { pou: Pou; onClose(): void }) {
-  const [name, setName] = useState(pou.name);
+/**
+ * Rename a project-level name (a POU, a user type, a global variable) everywhere: the new name, a preview
+ * of every change the server's refactoring makes, then one undoable step. A POU's open tab follows it.
+ */
+export function RenameDialog({ current, isPou, onClose }: { current: string; isPou: boolean; onClose(): void }) {
+  const [name, setName] = useState(current);
   const [preview, setPreview] = useState<{ name: string; changes: Reference[] } | null>(null);
   const [error, setError] = useState<string | null>(null);
   const [result, setResult] = useState<Awaited<ReturnType<typeof renameEverywhere>> | null>(null);
@@ -70,26 +74,30 @@ function RenameDialog({ pou, onClose }: { pou: Pou; onClose(): void }) {
     const project = workspaceStore.getState().project;
     if (!project) return;
     if (preview && result && preview.name === name.trim()) {
-      const renamed = { [pou.name]: preview.name };
+      const renamed: Record<string, string> = isPou ? { [current]: preview.name } : {};
       const changedPous = new Set(preview.changes.map((c) => c.pou).filter((p): p is string => !!p));
       workspaceStore
         .getState()
         .applyOperation(
-          `rename ${pou.name} to ${preview.name}`,
+          `rename ${current} to ${preview.name}`,
           result.project,
-          [preview.name, ...[...changedPous].map((p) => (p === pou.name ? preview.name : p))],
+          [
+            ...(isPou ? [preview.name] : []),
+            ...[...changedPous].map((p) => renamed[p] ?? p),
+            ...changedParts(preview.changes),
+          ],
           { renamed },
         );
       const online = onlineStore.getState();
       online.restoreWatch(
-        online.watch.map((p) => renamedPath(p, pou.name, preview.name)),
-        online.watchExpanded.map((p) => renamedPath(p, pou.name, preview.name)),
+        online.watch.map((p) => renamedPath(p, current, preview.name)),
+        online.watchExpanded.map((p) => renamedPath(p, current, preview.name)),
       );
       onClose();
       return;
     }
     try {
-      const answer = await renameEverywhere(project, pou.name, name.trim());
+      const answer = await renameEverywhere(project, current, name.trim());
       setResult(answer);
       setPreview({ name: name.trim(), changes: answer.changes });
       setError(null);
@@ -100,7 +108,7 @@ function RenameDialog({ pou, onClose }: { pou: Pou; onClose(): void }) {
   };
   const ready = preview !== null && preview.name === name.trim();
   return (
-    <Dialog title={`Rename ${pou.name}`} onClose={onClose}>
+    <Dialog title={`Rename ${current}`} onClose={onClose}>
       <form onSubmit={(e) => void submit(e)}>
         <input
           aria-label="New name"
@@ -298,7 +306,7 @@ export function PouActions({ pou }: { pou: Pou }) {
           </button>
         </div>
       ) : null}
-      {action === "rename" ? <RenameDialog pou={pou} onClose={close} /> : null}
+      {action === "rename" ? <RenameDialog current={pou.name} isPou onClose={close} /> : null}
       {action === "duplicate" ? <DuplicateDialog pou={pou} onClose={close} /> : null}
       {action === "kind" ? <KindDialog pou={pou} onClose={close} /> : null}
       {action === "delete" ? <DeleteDialog pou={pou} onClose={close} /> : null}

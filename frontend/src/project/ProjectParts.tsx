@@ -3,40 +3,24 @@
 // subrange or alias) and the tasks (cyclic interval or SINGLE event, priority, watchdog, the programs each
 // runs in order; program instances are listed as they are).
 // Each shows the live check of the working copy where it applies, like the POU editors.
+import { PencilLine } from "lucide-react";
 import { Suspense, useMemo, useState, type FormEvent } from "react";
 import type { Diagnostic } from "../generated/api";
 import type { Task } from "../generated/api";
 import { DeclarationsEditor } from "../declarations/DeclarationsEditor";
-import { userTypeNames } from "../declarations/model";
-import { DECLARABLE_TYPES } from "../iec/vocabulary";
+import { useDeclarableTypes } from "./declarableTypes";
+import { RenameDialog } from "./PouActions";
 import { usePanels } from "../panels/store";
 import { LazyStEditor, LOADING } from "./lazy";
 import { useLiveCheck } from "../st/useLiveCheck";
 import { useOnline } from "../online/store";
 import { taskIndexOf, type ProjectPart } from "./parts";
-import { TYPE_KINDS, typeRows, withNewType, type TypeKind } from "./types";
+import { structMembers, TYPE_KINDS, typeRows, withNewType, withStructMembers, type TypeKind } from "./types";
+import type { DeclRow } from "../declarations/model";
 import { useWorkspace } from "./store";
 
 const NO_COMPLETIONS = { options: [], members: () => null };
 const NO_TASKS: Task[] = [];
-
-/** The types a declaration may use: elementary, the project's own, and the function blocks. */
-export function useDeclarableTypes(): string[] {
-  const library = useWorkspace((s) => s.library);
-  const userTypes = useWorkspace((s) => s.project?.types ?? "");
-  const pous = useWorkspace((s) => s.project?.pous);
-  return useMemo(
-    () => [
-      ...new Set([
-        ...DECLARABLE_TYPES,
-        ...userTypeNames(userTypes),
-        ...library.filter((e) => e.kind === "function_block").map((e) => e.name),
-        ...(pous ?? []).filter((p) => p.kind === "function_block").map((p) => p.name),
-      ]),
-    ],
-    [userTypes, library, pous],
-  );
-}
 
 /** The live check of the working copy, for the diagnostics of one part. */
 function usePartDiagnostics(): Diagnostic[] {
@@ -54,6 +38,7 @@ function usePartFocus(part: ProjectPart) {
 const readOnlyWhenOnline = (phase: string) => (phase === "offline" ? null : "Online: go offline to edit.");
 
 export function GlobalsView() {
+  const [renaming, setRenaming] = useState<string | null>(null);
   const text = useWorkspace((s) => s.project?.globals ?? "");
   const setGlobals = useWorkspace((s) => s.setGlobals);
   const types = useDeclarableTypes();
@@ -70,7 +55,9 @@ export function GlobalsView() {
         focus={focus}
         readOnly={readOnlyWhenOnline(phase)}
         newClass="VAR_GLOBAL"
+        onRename={setRenaming}
       />
+      {renaming ? <RenameDialog current={renaming} isPou={false} onClose={() => setRenaming(null)} /> : null}
     </div>
   );
 }
@@ -85,7 +72,10 @@ export function TypesView() {
   const [name, setName] = useState("");
   const [kind, setKind] = useState<TypeKind>("struct");
   const [error, setError] = useState<string | null>(null);
+  const [renaming, setRenaming] = useState<string | null>(null);
+  const [selected, setSelected] = useState<string | null>(null);
   const rows = useMemo(() => typeRows(text), [text]);
+  const struct = rows.find((r) => r.kind === "struct" && r.name === selected)?.name ?? null;
   const add = (e: FormEvent) => {
     e.preventDefault();
     const wanted = name.trim();
@@ -115,21 +105,44 @@ export function TypesView() {
             <tr>
               <th>Type</th>
               <th>Kind</th>
+              <th />
             </tr>
           </thead>
           <tbody>
             {rows.map((r) => (
               <tr key={`${r.name}:${r.line}`}>
                 <td>
-                  <button type="button" className="link" onClick={() => setJump({ line: r.line, seq: Date.now() })}>
+                  <button
+                    type="button"
+                    className="link"
+                    aria-pressed={selected === r.name}
+                    onClick={() => {
+                      setSelected(r.name);
+                      setJump({ line: r.line, seq: Date.now() });
+                    }}
+                  >
                     {r.name}
                   </button>
                 </td>
                 <td>{TYPE_KINDS.find((k) => k.kind === r.kind)!.label}</td>
+                <td>
+                  <button
+                    type="button"
+                    aria-label={`Rename ${r.name} everywhere`}
+                    title="Rename everywhere (every use in the project)"
+                    disabled={readOnly !== null}
+                    onClick={() => setRenaming(r.name)}
+                  >
+                    <PencilLine size={14} aria-hidden="true" />
+                  </button>
+                </td>
               </tr>
             ))}
           </tbody>
         </table>
+        {struct ? (
+          <StructMembers key={struct} text={text} name={struct} onChange={setTypes} readOnly={readOnly !== null} />
+        ) : null}
         {readOnly ? null : (
           <form className="new-type" aria-label="New type" onSubmit={add}>
             <input aria-label="Type name" value={name} onChange={(e) => setName(e.target.value)} placeholder="name" />
@@ -149,6 +162,7 @@ export function TypesView() {
           </form>
         )}
       </div>
+      {renaming ? <RenameDialog current={renaming} isPou={false} onClose={() => setRenaming(null)} /> : null}
       <div className="types-text">
         <Suspense fallback={LOADING}>
           <LazyStEditor
@@ -163,6 +177,107 @@ export function TypesView() {
           />
         </Suspense>
       </div>
+    </div>
+  );
+}
+
+const MEMBER_COLUMNS = [
+  ["name", "Name"],
+  ["type", "Type"],
+  ["initial", "Initial value"],
+  ["comment", "Comment"],
+] as const;
+
+/**
+ * The members of one STRUCT as an editable table (name, type, initial value, comment): each edit rewrites the
+ * STRUCT in the types text. The table keeps its own rows while the user types (a half-typed member need not
+ * parse); a STRUCT the table cannot hold (e.g. comments between members) is edited in the text.
+ */
+function StructMembers({
+  text,
+  name,
+  onChange,
+  readOnly,
+}: {
+  text: string;
+  name: string;
+  onChange(text: string): void;
+  readOnly: boolean;
+}) {
+  const read = useMemo(() => structMembers(text, name), [text, name]);
+  const [rows, setRows] = useState<DeclRow[]>(read ?? []);
+  const [written, setWritten] = useState<string | null>(null);
+  const [seen, setSeen] = useState(text);
+  if (text !== seen) {
+    setSeen(text);
+    if (text !== written && read) setRows(read); // changed elsewhere (the text view): the text wins
+  }
+  if (!read && text !== written) {
+    return <p className="tree-empty">The members of {name} are edited in the text (the table cannot hold them).</p>;
+  }
+  const update = (next: DeclRow[]) => {
+    setRows(next);
+    const printed = withStructMembers(text, name, next);
+    setWritten(printed);
+    onChange(printed);
+  };
+  const free = (base: string) => {
+    const taken = new Set(rows.map((r) => r.name.toUpperCase()));
+    let n = rows.length + 1;
+    while (taken.has(`${base}${n}`.toUpperCase())) n += 1;
+    return `${base}${n}`;
+  };
+  return (
+    <div className="struct-members">
+      <table className="types-table" aria-label={`Members of ${name}`}>
+        <thead>
+          <tr>
+            {MEMBER_COLUMNS.map(([, heading]) => (
+              <th key={heading}>{heading}</th>
+            ))}
+            <th />
+          </tr>
+        </thead>
+        <tbody>
+          {rows.map((row, i) => (
+            <tr key={i}>
+              {MEMBER_COLUMNS.map(([field, heading]) => (
+                <td key={field}>
+                  <input
+                    aria-label={`${heading} of member ${i + 1}`}
+                    value={row[field]}
+                    disabled={readOnly}
+                    spellCheck={false}
+                    onChange={(e) => update(rows.map((r, k) => (k === i ? { ...r, [field]: e.target.value } : r)))}
+                  />
+                </td>
+              ))}
+              <td>
+                <button
+                  type="button"
+                  aria-label={`Remove member ${row.name}`}
+                  disabled={readOnly}
+                  onClick={() => update(rows.filter((_, k) => k !== i))}
+                >
+                  ×
+                </button>
+              </td>
+            </tr>
+          ))}
+        </tbody>
+      </table>
+      <button
+        type="button"
+        disabled={readOnly}
+        onClick={() =>
+          update([
+            ...rows,
+            { name: free("Member"), varClass: "VAR", type: "BOOL", initial: "", address: "", comment: "" },
+          ])
+        }
+      >
+        Add member
+      </button>
     </div>
   );
 }

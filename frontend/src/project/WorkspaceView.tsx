@@ -26,8 +26,6 @@ import { HistoryBanner } from "../online/HistoryBar";
 import { instanceOf, useLdOnline } from "../online/useLdOnline";
 import { BottomPanels } from "../panels/BottomPanels";
 import { focusOf, panelOf, panelsStore, usePanels } from "../panels/store";
-import { StView } from "../stview/StView";
-import { DeclarationsEditor } from "../declarations/DeclarationsEditor";
 import { parseDeclarations } from "../declarations/model";
 import { isTestPath, pouOf, symbolsOf, testPath, useWorkspace, workspaceStore } from "./store";
 import { coverageMarks, coverageOf } from "../tests/coverage";
@@ -36,6 +34,9 @@ import { runsOf } from "./tasks";
 import { useDiagramPou } from "./useDiagramPou";
 import { elementText as sfcElementText, type SfcBody } from "../sfc/model";
 import { ExportMenu } from "../interchange/ExportMenu";
+import { Keyboard, PanelBottomClose, PanelBottomOpen, PanelLeftClose, PanelLeftOpen, Save } from "lucide-react";
+import { Splitter } from "../ui/Splitter";
+import { ToolButton } from "../ui/ToolButton";
 import { ImportPlcopen } from "../interchange/ImportPlcopen";
 import { appStore } from "../store";
 import { DebugBar } from "../debug/DebugBar";
@@ -50,10 +51,9 @@ import { keysOf } from "../keys/keymap";
 import { VariablesView } from "./VariablesView";
 import { InstancePicker, OnlineActions } from "./InstancePicker";
 import { LOADING } from "./lazy";
-import { useHidden } from "./layout";
+import { useHidden, useStoredSize } from "./layout";
 import { KindPicker, PouActions } from "./PouActions";
 import { TestFileActions } from "../tests/TestFileActions";
-import { GlobalsView, TasksView, TypesView, useDeclarableTypes } from "./ProjectParts";
 import { isProjectPart, PROJECT_PARTS, type ProjectPart } from "./parts";
 import { PouMembers } from "./PouMembers";
 import { typeRows } from "./types";
@@ -65,6 +65,11 @@ const StPouView = lazy(() => import("./StViews").then((m) => ({ default: m.StPou
 const TestFileView = lazy(() => import("./StViews").then((m) => ({ default: m.TestFileView })));
 const FbdPouView = lazy(() => import("../fbd/FbdPouView").then((m) => ({ default: m.FbdPouView })));
 const ShellTab = lazy(() => import("../hmi/ShellTab").then((m) => ({ default: m.ShellTab })));
+const GlobalsView = lazy(() => import("./ProjectParts").then((m) => ({ default: m.GlobalsView })));
+const TypesView = lazy(() => import("./ProjectParts").then((m) => ({ default: m.TypesView })));
+const TasksView = lazy(() => import("./ProjectParts").then((m) => ({ default: m.TasksView })));
+const PouDeclarations = lazy(() => import("./PouDeclarations").then((m) => ({ default: m.PouDeclarations })));
+const StView = lazy(() => import("../stview/StView").then((m) => ({ default: m.StView })));
 const SfcPouView = lazy(() => import("../sfc/SfcPouView").then((m) => ({ default: m.SfcPouView })));
 
 /** The stores a project's session (project/session.ts) is kept from. */
@@ -399,8 +404,6 @@ function Tabs() {
   );
 }
 
-const NO_DIAGNOSTICS: Diagnostic[] = [];
-
 /** A POU by an IEC name in any case (the simulation reports halts with the compiled spelling). */
 const pouNamed = (project: Project | null, name: string) =>
   project?.pous?.find((p) => p.name.toUpperCase() === name.toUpperCase());
@@ -436,48 +439,19 @@ function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
   );
 }
 
+/** The project tree may be dragged between these widths (px). */
+const TREE_MIN_PX = 160;
+const TREE_MAX_PX = 480;
+
 type PouMode = "body" | "declarations" | "variables" | "st";
 
 function ProjectPartView({ part }: { part: ProjectPart }) {
   return (
     <ViewBoundary name={`The ${part} editor`}>
-      {part === "Global variables" ? <GlobalsView /> : part === "Types" ? <TypesView /> : <TasksView />}
+      <Suspense fallback={LOADING}>
+        {part === "Global variables" ? <GlobalsView /> : part === "Types" ? <TypesView /> : <TasksView />}
+      </Suspense>
     </ViewBoundary>
-  );
-}
-
-/** Declarations of one POU with the types to offer and the problems of its declaration text. */
-function PouDeclarations({
-  pou,
-  readOnly,
-  focus,
-}: {
-  pou: Pou;
-  readOnly: string | null;
-  focus: { line: number; seq: number } | null;
-}) {
-  const setDeclarations = useWorkspace((s) => s.setDeclarations);
-  const types = useDeclarableTypes();
-  const table = useWorkspace((s) => s.symbols[pou.name]);
-  const checked = usePanels((s) => s.diagnostics) ?? NO_DIAGNOSTICS;
-  const file = `${pou.name}/declarations`.toUpperCase();
-  const diagnostics = useMemo(() => {
-    const all = [...(table?.diagnostics ?? []), ...checked].filter((d) => d.file?.toUpperCase() === file);
-    const seen = new Set<string>();
-    return all.filter((d) => {
-      const key = `${d.line}:${d.column}:${d.code}:${d.message}`;
-      return seen.has(key) ? false : (seen.add(key), true);
-    });
-  }, [table, checked, file]);
-  return (
-    <DeclarationsEditor
-      text={pou.declarations ?? ""}
-      onChange={(text) => setDeclarations(pou.name, text)}
-      diagnostics={diagnostics}
-      types={types}
-      focus={focus}
-      readOnly={readOnly}
-    />
   );
 }
 
@@ -615,6 +589,7 @@ export function WorkspaceView() {
   const panelsHeight = usePanels((s) => s.height);
   const undo = useWorkspace((s) => s.undo);
   const [treeHidden, toggleTree] = useHidden("tree");
+  const [treeWidth, resizeTree] = useStoredSize("tree", TREE_MIN_PX, TREE_MAX_PX);
   const [panelsHidden, togglePanels] = useHidden("panels");
   const [help, setHelp] = useState(false);
 
@@ -697,24 +672,32 @@ export function WorkspaceView() {
   return (
     <div
       className={`workspace${treeHidden ? " tree-hidden" : ""}${panelsHidden ? " panels-hidden" : ""}`}
-      style={panelsHeight ? ({ "--panels-height": `${panelsHeight}px` } as CSSProperties) : undefined}
+      style={
+        {
+          ...(panelsHeight ? { "--panels-height": `${panelsHeight}px` } : {}),
+          ...(treeWidth ? { "--tree-width": `${treeWidth}px` } : {}),
+        } as CSSProperties
+      }
     >
       <div className="workspace-bar">
-        <button type="button" className="panel-toggle" aria-pressed={!treeHidden} onClick={toggleTree}>
-          {treeHidden ? "Show project tree" : "Hide project tree"}
-        </button>
+        <ToolButton
+          icon={treeHidden ? PanelLeftOpen : PanelLeftClose}
+          label={treeHidden ? "Show project tree" : "Hide project tree"}
+          className="panel-toggle"
+          aria-pressed={!treeHidden}
+          onClick={toggleTree}
+        />
         <h2>{name}</h2>
         <span className={`save-state${changed.length ? " dirty" : ""}`} role="status">
           {saving ? "Saving…" : changed.length ? `Unsaved changes in ${changed.join(", ")}` : "All changes saved"}
         </span>
-        <button
-          type="button"
+        <ToolButton
+          icon={Save}
+          label="Save"
+          keys={keysOf("app", "save")}
           onClick={() => void save()}
           disabled={saving || changed.length === 0}
-          title={`Save (${keysOf("app", "save")})`}
-        >
-          Save
-        </button>
+        />
         {undo ? (
           <button type="button" onClick={() => workspaceStore.getState().undoOperation()}>
             Undo {undo.label}
@@ -740,12 +723,20 @@ export function WorkspaceView() {
             unsaved={changed.length > 0}
           />
         ) : null}
-        <button type="button" aria-expanded={help} onClick={() => setHelp((h) => !h)}>
-          Keyboard shortcuts
-        </button>
-        <button type="button" className="panel-toggle" aria-pressed={!panelsHidden} onClick={togglePanels}>
-          {panelsHidden ? "Show panels" : "Hide panels"}
-        </button>
+        <ToolButton
+          icon={Keyboard}
+          label="Keyboard shortcuts"
+          aria-expanded={help}
+          onClick={() => setHelp((h) => !h)}
+        />
+        <ToolButton
+          icon={panelsHidden ? PanelBottomOpen : PanelBottomClose}
+          label={panelsHidden ? "Show panels" : "Hide panels"}
+          className="panel-toggle"
+          aria-pressed={!panelsHidden}
+          onClick={togglePanels}
+        />
+
         {help ? <ShortcutHelp scopes={["app", "ld", "fbd", "st"]} onClose={() => setHelp(false)} /> : null}
         <ImportPlcopen
           onStored={() => void appStore.getState().loadProjects()}
@@ -756,9 +747,20 @@ export function WorkspaceView() {
         <SimulationBar />
       </ViewBoundary>
       {treeHidden ? null : (
-        <ViewBoundary name="The project tree" gridArea="tree">
-          <ProjectTree />
-        </ViewBoundary>
+        <>
+          <ViewBoundary name="The project tree" gridArea="tree">
+            <ProjectTree />
+          </ViewBoundary>
+          <Splitter
+            label="Resize the project tree"
+            orientation="vertical"
+            grow={1}
+            className="side-splitter tree-splitter"
+            value={treeWidth}
+            size={(edge) => treeWidth ?? edge.previousElementSibling!.getBoundingClientRect().width}
+            onResize={resizeTree}
+          />
+        </>
       )}
       <div className="editor-area">
         <HistoryBanner />

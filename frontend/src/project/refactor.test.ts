@@ -1,6 +1,6 @@
 import { describe, expect, it } from "vitest";
 import type { Pou } from "../generated/api";
-import { copyName, describeReference, isEmptyPou, renamedPath } from "./refactor";
+import { changedParts, copyName, describeReference, isEmptyPou, renamedPath } from "./refactor";
 
 const pou = (declarations: string, body: Pou["body"], language: Pou["language"] = "st"): Pou => ({
   name: "P",
@@ -39,5 +39,20 @@ describe("project operations' pure facts", () => {
       "Main, declarations line 3",
     );
     expect(describeReference({ part: "task", task: "Fast", text: "Main" })).toBe("task Fast");
+  });
+});
+
+describe("the parts a rename marks unsaved (issue 22 item 1)", () => {
+  it("names the globals, types, tasks and test files a rename changed, once each; POUs are named elsewhere", () => {
+    expect(
+      changedParts([
+        { part: "globals", line: 2, text: "Go : BOOL;" },
+        { part: "declarations", pou: "Main", line: 1, text: "x" },
+        { part: "task", task: "Fast", text: "Go" },
+        { part: "task", task: "Slow", text: "Go" },
+        { part: "types", line: 3, text: "T" },
+        { part: "test", file: "tests/t.st", line: 1, text: "Go" },
+      ]),
+    ).toEqual(["Global variables", "Tasks", "Types", "tests/t.st"]);
   });
 });

@@ -60,3 +60,15 @@ export function copyName(project: Project, name: string): string {
     if (!taken.has(candidate.toUpperCase())) return candidate;
   }
 }
+
+/** The project parts (as the unsaved-changes list names them) a rename's changes touch outside the POUs. */
+export function changedParts(changes: readonly Reference[]): string[] {
+  const parts = new Set<string>();
+  for (const c of changes) {
+    if (c.part === "globals") parts.add("Global variables");
+    else if (c.part === "types") parts.add("Types");
+    else if (c.part === "task") parts.add("Tasks");
+    else if (c.part === "test" && c.file) parts.add(c.file);
+  }
+  return [...parts];
+}

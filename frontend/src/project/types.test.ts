@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { typeRows, withNewType } from "./types";
+import { structMembers, typeRows, withNewType, withStructMembers } from "./types";
 
 describe("the Types editor's list", () => {
   it("lists every top-level type with its kind and line, not STRUCT members or comments", () => {
@@ -29,5 +29,51 @@ describe("the Types editor's list", () => {
       ["Cell", "struct"],
       ["State", "enum"],
     ]);
+  });
+});
+
+describe("a STRUCT's members as a table (issue 22 item 2)", () => {
+  const text = [
+    "TYPE",
+    "    Mode : (Idle, Run);",
+    "    Point : STRUCT",
+    "        x : INT := 1;  (* across *)",
+    "        y : INT;",
+    "    END_STRUCT;",
+    "END_TYPE",
+  ].join("\n");
+  const row = (name: string, type: string, initial = "", comment = "") => ({
+    name,
+    varClass: "VAR",
+    type,
+    initial,
+    address: "",
+    comment,
+  });
+
+  it("reads the members with their types, initial values and comments; no STRUCT, no table", () => {
+    expect(structMembers(text, "point")).toEqual([
+      { ...row("x", "INT", "1", "across"), line: undefined },
+      { ...row("y", "INT"), line: undefined },
+    ]);
+    expect(structMembers(text, "Mode")).toBeNull();
+    expect(structMembers(text, "Missing")).toBeNull();
+  });
+
+  it("writes edited members back in columns, leaving the other types as they were", () => {
+    const edited = withStructMembers(text, "Point", [row("x", "REAL", "1.5", "across"), row("Label", "STRING")]);
+    expect(edited).toBe(
+      [
+        "TYPE",
+        "    Mode : (Idle, Run);",
+        "    Point : STRUCT",
+        "        x     : REAL := 1.5;    (* across *)",
+        "        Label : STRING;",
+        "    END_STRUCT;",
+        "END_TYPE",
+      ].join("\n"),
+    );
+    expect(structMembers(edited, "Point")?.map((m) => m.name)).toEqual(["x", "Label"]);
+    expect(withStructMembers(text, "Point", [])).toContain("Point : STRUCT\n    END_STRUCT;");
   });
 });

@@ -1,5 +1,6 @@
 // The user types of a project's TYPE text, as the Types editor lists them, and the templates it adds
-// (STRUCT, enumeration, array, subrange, alias: IEC 61131-3 2.3.3).
+// (STRUCT, enumeration, array, subrange, alias: IEC 61131-3 2.3.3), and the members of a STRUCT as table rows.
+import { parseDeclarations, printDeclarations, type DeclRow } from "../declarations/model";
 
 export type TypeKind = "struct" | "enum" | "array" | "subrange" | "alias";
 
@@ -46,4 +47,32 @@ export function withNewType(text: string, name: string, kind: TypeKind): string 
   const template = TYPE_KINDS.find((k) => k.kind === kind)!.template(name);
   const block = `TYPE\n    ${template}\nEND_TYPE`;
   return text.trim() ? `${text.trimEnd()}\n\n${block}` : block;
+}
+
+/** Where the members of STRUCT type `name` are in `text` (after STRUCT, up to END_STRUCT), or null. */
+function structSpan(text: string, name: string): { start: number; end: number } | null {
+  const body = blankComments(text);
+  const head = new RegExp(`(?:^|[;\\s])${name}\\s*:\\s*STRUCT\\b`, "i").exec(body);
+  if (!head) return null;
+  const start = head.index + head[0].length;
+  const end = body.slice(start).search(/\bEND_STRUCT\b/i);
+  return end < 0 ? null : { start, end: start + end };
+}
+
+/** The members of STRUCT type `name` as declaration rows, or null when it is no STRUCT the table can hold. */
+export function structMembers(text: string, name: string): DeclRow[] | null {
+  const span = structSpan(text, name);
+  if (!span) return null;
+  // Members are declared as variables are (IEC 61131-3 2.3.3.1): read them as one VAR block.
+  const parsed = parseDeclarations(`VAR\n${text.slice(span.start, span.end)}\nEND_VAR`);
+  return parsed.ok ? parsed.rows.map((r) => ({ ...r, line: undefined })) : null;
+}
+
+/** `text` with the members of STRUCT type `name` replaced by `members`, aligned in columns. */
+export function withStructMembers(text: string, name: string, members: readonly DeclRow[]): string {
+  const span = structSpan(text, name);
+  if (!span) return text;
+  const printed = printDeclarations(members.map((m) => ({ ...m, varClass: "VAR", address: "" })));
+  const lines = members.length ? printed.split("\n").slice(1, -1) : [];
+  return `${text.slice(0, span.start)}\n${lines.map((l) => `    ${l}\n`).join("")}    ${text.slice(span.end)}`;
 }

@@ -7,7 +7,6 @@ import { defaultKeymap, history, historyKeymap } from "@codemirror/commands";
 import {
   bracketMatching,
   codeFolding,
-  defaultHighlightStyle,
   foldGutter,
   foldKeymap,
   indentOnInput,
@@ -24,6 +23,7 @@ import { stCompletionSource, type StCompletions } from "./completion";
 import { setCoverageLines, stCoverage } from "./coverage";
 import { setInlineMarks, stInlineValues, type InlineMark, type StOnlineView } from "./inlineValues";
 import { ilLanguage } from "./ilLanguage";
+import { stHighlightStyle } from "./highlightStyle";
 import { stLanguage, stTestLanguage } from "./language";
 import { stKeys } from "./keys";
 import { lintDiagnostics } from "./lint";
@@ -95,7 +95,7 @@ export function StEditor({
           language === "il" ? ilLanguage : [language === "test" ? stTestLanguage : stLanguage, stBlocks],
           codeFolding(),
           foldGutter(),
-          syntaxHighlighting(defaultHighlightStyle),
+          syntaxHighlighting(stHighlightStyle),
           autocompletion({ override: [stCompletionSource(() => latest.current.completions)] }),
           lintGutter(),
           debugging ? stDebugging((line) => latest.current.debug?.onToggle(line)) : [],

@@ -1,7 +1,7 @@
 // IEC 61131-3 Structured Text for CodeMirror 6 as a StreamLanguage (no Lezer grammar): comments
 // ((* *), /* */ and //, block comments span lines), pragmas ({...}), strings, typed and time
 // literals (16#FF, T#5s, INT#3), numbers, keywords, elementary/standard FB types, operators.
-// The token names are CodeMirror's standard tags, so the default highlight style colours them.
+// The token names are CodeMirror's standard tags, so the editor's highlight style (highlightStyle.ts) colours them.
 // Keywords and type names are the backend's (iec/vocabulary.ts).
 import { StreamLanguage, StringStream, type StreamParser } from "@codemirror/language";
 import { KEYWORDS, TEST_FILE_KEYWORDS, TYPE_WORDS } from "../iec/vocabulary";

@@ -10,6 +10,8 @@ import "@xyflow/react/dist/style.css";
 import "../../ld/ld.css";
 import { useNodeLayout } from "./useNodeLayout";
 import "./fbd.css";
+import { COMMAND_ICONS } from "../../ui/icons";
+import { ToolButton } from "../../ui/ToolButton";
 import type { Connection } from "@xyflow/react";
 import {
   useCallback,
@@ -64,7 +66,13 @@ import { dispatchKey, keysOf, type CommandOf } from "../../keys/keymap";
 import { ShortcutHelp } from "../../keys/ShortcutHelp";
 
 /** A toolbar tooltip: the action and its key from the keymap. */
-const keyed = (label: string, command: CommandOf<"fbd">) => `${label} (${keysOf("fbd", command)})`;
+/** A palette entry's icon (the symbol it adds). */
+function PaletteIcon({ kind }: { kind: PaletteKind }) {
+  const Icon = COMMAND_ICONS[kind]!;
+  return <Icon size={16} aria-hidden="true" />;
+}
+
+const keyed = (command: CommandOf<"fbd">) => keysOf("fbd", command);
 
 /** Breakpoints and the halt, for this POU (debug/store.ts holds them). */
 export interface FbdDebug {
@@ -691,16 +699,16 @@ export function FbdEditor({
 
   const selectedBlock = selectedNodes.length === 1 ? findNode(body, selectedNodes[0]!)?.node : undefined;
   const netIndex = networks.findIndex((n) => n.id === (networkSelected ?? selection?.network));
-  const tool = (label: string, run: () => void, enabled = !locked, title?: string) => (
-    <button
-      type="button"
+  const tool = (id: string, label: string, run: () => void, enabled = !locked, keys?: string, hint?: string) => (
+    <ToolButton
+      icon={COMMAND_ICONS[id]!}
+      label={label}
+      keys={keys}
+      hint={hint}
       disabled={!enabled}
-      title={title ?? label}
       onMouseDown={(e) => e.preventDefault()}
       onClick={run}
-    >
-      {label}
-    </button>
+    />
   );
 
   return (
@@ -720,6 +728,8 @@ export function FbdEditor({
               <button
                 key={kind}
                 type="button"
+                className="tool-button"
+                aria-label={label}
                 draggable={!locked}
                 disabled={locked}
                 title={`Add ${label.replace("…", "")} (or drag it onto a network)`}
@@ -729,12 +739,13 @@ export function FbdEditor({
                 }}
                 onClick={() => paletteAdd(kind, targetNetwork(), null)}
               >
-                {label}
+                <PaletteIcon kind={kind} />
               </button>
             ))}
           </div>
           <div className="ld-toolbar-group">
             {tool(
+              "add-input",
               "Add input",
               () => selectedBlock && addInput(selectedBlock.id),
               !locked &&
@@ -746,38 +757,46 @@ export function FbdEditor({
                   wiresOf(findNode(body, selectedBlock.id)!.network),
                 ),
             )}
-            {tool("Run earlier", () => reorder(-1), !locked && !!selectedBlock, keyed("Run earlier", "run-earlier"))}
-            {tool("Run later", () => reorder(1), !locked && !!selectedBlock, keyed("Run later", "run-later"))}
+            {tool("run-earlier", "Run earlier", () => reorder(-1), !locked && !!selectedBlock, keyed("run-earlier"))}
+            {tool("run-later", "Run later", () => reorder(1), !locked && !!selectedBlock, keyed("run-later"))}
             {chart
               ? tool(
+                  "order-by-flow",
                   "Order by data flow",
                   orderChartByDataFlow,
                   !locked && networks.length > 0,
+                  undefined,
                   "Number every element after the elements feeding it (the current numbers break ties)",
                 )
               : null}
-            {tool("Auto-arrange", autoArrange, !locked && networks.length > 0)}
-            {tool("Delete", deleteSelection, !locked && (!!selection || !!networkSelected), keyed("Delete", "delete"))}
+            {tool("arrange", "Auto-arrange", autoArrange, !locked && networks.length > 0)}
+            {tool("delete", "Delete", deleteSelection, !locked && (!!selection || !!networkSelected), keyed("delete"))}
           </div>
           {chart ? null : (
             <div className="ld-toolbar-group">
-              {tool("Add network", () => apply(ops.addNetwork(body, netIndex < 0 ? networks.length : netIndex + 1)))}
+              {tool("network-add", "Add network", () =>
+                apply(ops.addNetwork(body, netIndex < 0 ? networks.length : netIndex + 1)),
+              )}
               {tool(
+                "network-up",
                 "Network up",
                 () => apply(ops.moveNetwork(body, networks[netIndex]!.id, -1)),
                 !locked && netIndex > 0,
               )}
               {tool(
+                "network-down",
                 "Network down",
                 () => apply(ops.moveNetwork(body, networks[netIndex]!.id, 1)),
                 !locked && netIndex >= 0 && netIndex < networks.length - 1,
               )}
               {tool(
+                "network-label",
                 "Label",
                 () => setNetworkText({ network: networks[netIndex]!.id, field: "label" }),
                 !locked && netIndex >= 0,
               )}
               {tool(
+                "network-comment",
                 "Comment",
                 () => setNetworkText({ network: networks[netIndex]!.id, field: "comment" }),
                 !locked && netIndex >= 0,
@@ -785,14 +804,18 @@ export function FbdEditor({
             </div>
           )}
           <div className="ld-toolbar-group">
-            {tool("Copy", () => clipboard.copy(false), selectedNodes.length > 0, keyed("Copy", "copy"))}
-            {tool("Paste", clipboard.paste, !locked, keyed("Paste", "paste"))}
-            {tool("Undo", () => onHistoryChange(undo(history)), !locked && canUndo(history), keyed("Undo", "undo"))}
-            {tool("Redo", () => onHistoryChange(redo(history)), !locked && canRedo(history), keyed("Redo", "redo"))}
+            {tool("copy", "Copy", () => clipboard.copy(false), selectedNodes.length > 0, keyed("copy"))}
+            {tool("paste", "Paste", clipboard.paste, !locked, keyed("paste"))}
+            {tool("undo", "Undo", () => onHistoryChange(undo(history)), !locked && canUndo(history), keyed("undo"))}
+            {tool("redo", "Redo", () => onHistoryChange(redo(history)), !locked && canRedo(history), keyed("redo"))}
           </div>
-          <button type="button" className="ld-help-button" aria-expanded={help} onClick={() => setHelp((h) => !h)}>
-            Shortcuts
-          </button>
+          <ToolButton
+            icon={COMMAND_ICONS.shortcuts!}
+            label="Shortcuts"
+            className="ld-help-button"
+            aria-expanded={help}
+            onClick={() => setHelp((h) => !h)}
+          />
         </div>
         {help ? <ShortcutHelp scopes={["fbd", "app"]} onClose={() => setHelp(false)} /> : null}
         <EditorNotices

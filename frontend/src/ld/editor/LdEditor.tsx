@@ -46,6 +46,9 @@ import { referencesItem } from "../../xref/store";
 import { commandsFor, keysOf } from "../../keys/keymap";
 import { ShortcutHelp } from "../../keys/ShortcutHelp";
 import "../ld.css";
+import { Keyboard, ZoomIn, ZoomOut } from "lucide-react";
+import { COMMAND_ICONS } from "../../ui/icons";
+import { ToolButton } from "../../ui/ToolButton";
 
 export interface LdEditorProps {
   history: History<LdBody>;
@@ -583,6 +586,20 @@ export function LdEditor({
     },
   });
 
+  // Ctrl+wheel zooms the diagram, not the page: a native listener, since React's wheel listeners are
+  // passive and cannot stop the browser's page zoom.
+  useEffect(() => {
+    const editor = root.current;
+    if (!editor) return;
+    const onWheel = (event: WheelEvent) => {
+      if (!event.ctrlKey || event.deltaY === 0) return;
+      event.preventDefault();
+      setZoom(event.deltaY < 0 ? zoomIn : zoomOut);
+    };
+    editor.addEventListener("wheel", onWheel, { passive: false });
+    return () => editor.removeEventListener("wheel", onWheel);
+  }, []);
+
   const onKeyDown = (event: KeyboardEvent<HTMLDivElement>) => {
     if (editing || picker || (event.target as HTMLElement).closest("input, textarea, .ld-context-menu")) return;
     const zoomTo = event.ctrlKey && !event.altKey ? ZOOM_KEYS[event.key] : undefined;
@@ -694,34 +711,33 @@ export function LdEditor({
             {ids.map((id) => {
               const command = COMMANDS.find((c) => c.id === id)!;
               return (
-                <button
+                <ToolButton
                   key={id}
-                  type="button"
+                  icon={COMMAND_ICONS[id]!}
+                  label={command.label}
+                  keys={commandKeys(command) || undefined}
                   disabled={!available(command, ctx)}
-                  title={commandKeys(command) ? `${command.label} (${commandKeys(command)})` : command.label}
                   onMouseDown={(e) => e.preventDefault()}
                   onClick={() => command.run(ctx)}
-                >
-                  {command.label}
-                </button>
+                />
               );
             })}
           </div>
         ))}
         <div className="ld-toolbar-group" role="group" aria-label="Zoom">
-          <button type="button" title="Zoom out (Ctrl+-)" onClick={() => setZoom(zoomOut)}>
-            −
-          </button>
+          <ToolButton icon={ZoomOut} label="Zoom out" keys="Ctrl+- or Ctrl+wheel" onClick={() => setZoom(zoomOut)} />
           <button type="button" title="Actual size (Ctrl+0)" aria-label="Zoom" onClick={() => setZoom(1)}>
             {Math.round(zoom * 100)}%
           </button>
-          <button type="button" title="Zoom in (Ctrl++)" onClick={() => setZoom(zoomIn)}>
-            +
-          </button>
+          <ToolButton icon={ZoomIn} label="Zoom in" keys="Ctrl++ or Ctrl+wheel" onClick={() => setZoom(zoomIn)} />
         </div>
-        <button type="button" className="ld-help-button" aria-expanded={help} onClick={() => setHelp((h) => !h)}>
-          Shortcuts
-        </button>
+        <ToolButton
+          icon={Keyboard}
+          label="Shortcuts"
+          className="ld-help-button"
+          aria-expanded={help}
+          onClick={() => setHelp((h) => !h)}
+        />
       </div>
       {help ? <ShortcutHelp scopes={["ld", "app"]} onClose={() => setHelp(false)} /> : null}
       <EditorNotices
