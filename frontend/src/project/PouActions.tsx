@@ -125,17 +125,7 @@ export function RenameDialog({ current, isPou, onClose }: { current: string; isP
             <ReferenceList references={preview.changes} empty="Nothing else uses this name." />
           </>
         ) : null}
-        {error ? (
-          <p className="new-pou-error" role="alert">
-            {error}
-          </p>
-        ) : null}
-        <div className="dialog-buttons">
-          <button type="submit">{ready ? "Rename" : "Preview"}</button>
-          <button type="button" onClick={onClose}>
-            Cancel
-          </button>
-        </div>
+        <DialogFooter error={error} submit={ready ? "Rename" : "Preview"} onClose={onClose} />
       </form>
     </Dialog>
   );
@@ -198,17 +188,7 @@ function DuplicateDialog({ pou, onClose }: { pou: Pou; onClose(): void }) {
     <Dialog title={`Duplicate ${pou.name}`} onClose={onClose}>
       <form onSubmit={(e) => void submit(e)}>
         <input aria-label="Name of the copy" autoFocus value={name} onChange={(e) => setName(e.target.value)} />
-        {error ? (
-          <p className="new-pou-error" role="alert">
-            {error}
-          </p>
-        ) : null}
-        <div className="dialog-buttons">
-          <button type="submit">Duplicate</button>
-          <button type="button" onClick={onClose}>
-            Cancel
-          </button>
-        </div>
+        <DialogFooter error={error} submit="Duplicate" onClose={onClose} />
       </form>
     </Dialog>
   );
@@ -262,22 +242,33 @@ export function KindPicker({ kind, onChange }: { kind: Pou["kind"]; onChange(kin
   );
 }
 
-/** The "⋯" button of a POU in the tree and its menu. */
-export function PouActions({ pou }: { pou: Pou }) {
+/** One entry of a tree item's menu: the action it opens, its label, and why it is disabled (if it is). */
+export interface MenuEntry<A extends string> {
+  action: A;
+  label: string;
+  disabledBecause?: string;
+}
+
+/** The "⋯" button of an item of the project tree (a POU, a test file) and its menu; a chosen entry opens the
+ * dialog `dialog` returns for it, which calls `close` when done. */
+export function TreeActions<A extends string>({
+  item,
+  entries,
+  dialog,
+}: {
+  item: string;
+  entries: readonly MenuEntry<A>[];
+  dialog(action: A, close: () => void): ReactNode;
+}) {
   const [menu, setMenu] = useState(false);
-  const [action, setAction] = useState<Action | null>(null);
-  const empty = isEmptyPou(pou);
-  const choose = (a: Action) => {
-    setMenu(false);
-    setAction(a);
-  };
+  const [action, setAction] = useState<A | null>(null);
   const close = () => setAction(null);
   return (
     <span className="tree-actions">
       <button
         type="button"
         className="tree-actions-button"
-        aria-label={`Actions for ${pou.name}`}
+        aria-label={`Actions for ${item}`}
         aria-haspopup="menu"
         aria-expanded={menu}
         onClick={() => setMenu((m) => !m)}
@@ -285,31 +276,76 @@ export function PouActions({ pou }: { pou: Pou }) {
         ⋯
       </button>
       {menu ? (
-        <div className="tree-menu" role="menu" aria-label={`${pou.name} actions`}>
-          <button type="button" role="menuitem" onClick={() => choose("rename")}>
-            Rename…
-          </button>
-          <button type="button" role="menuitem" onClick={() => choose("duplicate")}>
-            Duplicate…
-          </button>
-          <button
-            type="button"
-            role="menuitem"
-            disabled={!empty}
-            title={empty ? undefined : "Only an empty POU (no variables, no body) can change its kind."}
-            onClick={() => choose("kind")}
-          >
-            Change kind…
-          </button>
-          <button type="button" role="menuitem" onClick={() => choose("delete")}>
-            Delete…
-          </button>
+        <div className="tree-menu" role="menu" aria-label={`${item} actions`}>
+          {entries.map((entry) => (
+            <button
+              key={entry.action}
+              type="button"
+              role="menuitem"
+              disabled={entry.disabledBecause !== undefined}
+              title={entry.disabledBecause}
+              onClick={() => {
+                setMenu(false);
+                setAction(entry.action);
+              }}
+            >
+              {entry.label}
+            </button>
+          ))}
         </div>
       ) : null}
-      {action === "rename" ? <RenameDialog current={pou.name} isPou onClose={close} /> : null}
-      {action === "duplicate" ? <DuplicateDialog pou={pou} onClose={close} /> : null}
-      {action === "kind" ? <KindDialog pou={pou} onClose={close} /> : null}
-      {action === "delete" ? <DeleteDialog pou={pou} onClose={close} /> : null}
+      {action !== null ? dialog(action, close) : null}
     </span>
+  );
+}
+
+/** The end of a dialog's form: the error of the last attempt (if any), the submit button and Cancel. */
+export function DialogFooter({ error, submit, onClose }: { error: string | null; submit: string; onClose(): void }) {
+  return (
+    <>
+      {error ? (
+        <p className="new-pou-error" role="alert">
+          {error}
+        </p>
+      ) : null}
+      <div className="dialog-buttons">
+        <button type="submit">{submit}</button>
+        <button type="button" onClick={onClose}>
+          Cancel
+        </button>
+      </div>
+    </>
+  );
+}
+
+/** The "⋯" button of a POU in the tree and its menu. */
+export function PouActions({ pou }: { pou: Pou }) {
+  const empty = isEmptyPou(pou);
+  const entries: MenuEntry<Action>[] = [
+    { action: "rename", label: "Rename…" },
+    { action: "duplicate", label: "Duplicate…" },
+    {
+      action: "kind",
+      label: "Change kind…",
+      disabledBecause: empty ? undefined : "Only an empty POU (no variables, no body) can change its kind.",
+    },
+    { action: "delete", label: "Delete…" },
+  ];
+  return (
+    <TreeActions
+      item={pou.name}
+      entries={entries}
+      dialog={(action, close) =>
+        action === "rename" ? (
+          <RenameDialog current={pou.name} isPou onClose={close} />
+        ) : action === "duplicate" ? (
+          <DuplicateDialog pou={pou} onClose={close} />
+        ) : action === "kind" ? (
+          <KindDialog pou={pou} onClose={close} />
+        ) : (
+          <DeleteDialog pou={pou} onClose={close} />
+        )
+      }
+    />
   );
 }

@@ -1,7 +1,7 @@
 // The project tree's menu of a test file: rename and delete, each one undoable step of the working copy
 // (workspace store's applyOperation), saved with the project (the old tests/<name>.st goes on save).
 import { useState, type FormEvent } from "react";
-import { Dialog } from "../project/PouActions";
+import { Dialog, DialogFooter, TreeActions } from "../project/PouActions";
 import { testNameProblem, testPath, workspaceStore } from "../project/store";
 
 function RenameTestDialog({ name, onClose }: { name: string; onClose(): void }) {
@@ -27,17 +27,7 @@ function RenameTestDialog({ name, onClose }: { name: string; onClose(): void }) 
           New name{" "}
           <input aria-label="New test file name" value={text} onChange={(e) => setText(e.target.value)} autoFocus />
         </label>
-        {error ? (
-          <p className="new-pou-error" role="alert">
-            {error}
-          </p>
-        ) : null}
-        <div className="dialog-buttons">
-          <button type="submit">Rename</button>
-          <button type="button" onClick={onClose}>
-            Cancel
-          </button>
-        </div>
+        <DialogFooter error={error} submit="Rename" onClose={onClose} />
       </form>
     </Dialog>
   );
@@ -70,37 +60,20 @@ function DeleteTestDialog({ name, onClose }: { name: string; onClose(): void }) 
 
 /** The "⋯" button of a test file in the tree and its menu. */
 export function TestFileActions({ name }: { name: string }) {
-  const [menu, setMenu] = useState(false);
-  const [action, setAction] = useState<"rename" | "delete" | null>(null);
-  const choose = (a: "rename" | "delete") => {
-    setMenu(false);
-    setAction(a);
-  };
-  const close = () => setAction(null);
   return (
-    <span className="tree-actions">
-      <button
-        type="button"
-        className="tree-actions-button"
-        aria-label={`Actions for ${testPath(name)}`}
-        aria-haspopup="menu"
-        aria-expanded={menu}
-        onClick={() => setMenu((m) => !m)}
-      >
-        ⋯
-      </button>
-      {menu ? (
-        <div className="tree-menu" role="menu" aria-label={`${testPath(name)} actions`}>
-          <button type="button" role="menuitem" onClick={() => choose("rename")}>
-            Rename…
-          </button>
-          <button type="button" role="menuitem" onClick={() => choose("delete")}>
-            Delete…
-          </button>
-        </div>
-      ) : null}
-      {action === "rename" ? <RenameTestDialog name={name} onClose={close} /> : null}
-      {action === "delete" ? <DeleteTestDialog name={name} onClose={close} /> : null}
-    </span>
+    <TreeActions
+      item={testPath(name)}
+      entries={[
+        { action: "rename", label: "Rename…" },
+        { action: "delete", label: "Delete…" },
+      ]}
+      dialog={(action, close) =>
+        action === "rename" ? (
+          <RenameTestDialog name={name} onClose={close} />
+        ) : (
+          <DeleteTestDialog name={name} onClose={close} />
+        )
+      }
+    />
   );
 }
