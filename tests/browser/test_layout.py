@@ -73,14 +73,19 @@ ZOOMED = {
 }
 
 
-def test_ld_zooms_with_ctrl_plus_minus_and_the_toolbar(page, server: str) -> None:
+def _open_zoomed(page, server: str):
+    """The ZOOMED project's Main open: its contact's hit area, that area's width at 100 %, the zoom button."""
     store_project(server, ZOOMED)
     page.goto(server)
     open_pou(page, "zoom", "Main")
     contact = page.locator('g.ld-element[data-id="c1"] rect.ld-hit')
     contact.wait_for()
-    width = contact.bounding_box()["width"]
     zoom = page.get_by_role("group", name="Zoom").get_by_role("button", name="Zoom", exact=True)
+    return contact, contact.bounding_box()["width"], zoom
+
+
+def test_ld_zooms_with_ctrl_plus_minus_and_the_toolbar(page, server: str) -> None:
+    contact, width, zoom = _open_zoomed(page, server)
     assert zoom.inner_text() == "100%"
 
     contact.click()  # the editor has the keyboard
@@ -96,13 +101,7 @@ def test_ld_zooms_with_ctrl_plus_minus_and_the_toolbar(page, server: str) -> Non
 
 
 def test_ld_zooms_with_ctrl_wheel_and_the_page_does_not(page, server: str) -> None:
-    store_project(server, ZOOMED)
-    page.goto(server)
-    open_pou(page, "zoom", "Main")
-    contact = page.locator('g.ld-element[data-id="c1"] rect.ld-hit')
-    contact.wait_for()
-    width = contact.bounding_box()["width"]
-    zoom = page.get_by_role("group", name="Zoom").get_by_role("button", name="Zoom", exact=True)
+    contact, width, zoom = _open_zoomed(page, server)
     contact.hover()
     page.keyboard.down("Control")
     page.mouse.wheel(0, -100)
@@ -118,29 +117,27 @@ def test_ld_zooms_with_ctrl_wheel_and_the_page_does_not(page, server: str) -> No
     expect(zoom).to_have_text("120%")
 
 
-FBD = {
-    "name": "fbdzoom",
-    "pous": [
-        {
-            "name": "Blocks",
-            "kind": "program",
-            "language": "fbd",
-            "declarations": "VAR a : BOOL; q : BOOL; END_VAR",
-            "body": {
-                "networks": [
-                    {
-                        "id": "n1",
-                        "nodes": [
-                            {"type": "input", "id": "in1", "expr": "a", "pos": {"x": 20, "y": 20}},
-                            {"type": "output", "id": "out1", "var": "q", "pos": {"x": 220, "y": 20}},
-                        ],
-                        "wires": [{"from": {"node": "in1", "pin": "OUT"}, "to": {"node": "out1", "pin": "IN"}}],
-                    }
-                ]
-            },
-        }
-    ],
+#: An FBD program of one input wired to one output (also the dark theme's FBD view, test_theme.py).
+BLOCKS = {
+    "name": "Blocks",
+    "kind": "program",
+    "language": "fbd",
+    "declarations": "VAR a : BOOL; q : BOOL; END_VAR",
+    "body": {
+        "networks": [
+            {
+                "id": "n1",
+                "nodes": [
+                    {"type": "input", "id": "in1", "expr": "a", "pos": {"x": 20, "y": 20}},
+                    {"type": "output", "id": "out1", "var": "q", "pos": {"x": 220, "y": 20}},
+                ],
+                "wires": [{"from": {"node": "in1", "pin": "OUT"}, "to": {"node": "out1", "pin": "IN"}}],
+            }
+        ]
+    },
 }
+
+FBD = {"name": "fbdzoom", "pous": [BLOCKS]}
 
 
 def test_an_fbd_network_zooms_with_ctrl_wheel(page, server: str) -> None:

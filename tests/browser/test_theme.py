@@ -12,6 +12,7 @@ from playwright.sync_api import expect
 
 from .conftest import ARTIFACTS
 from .steps import store_project
+from .test_layout import BLOCKS
 
 pytestmark = pytest.mark.browser
 
@@ -43,24 +44,7 @@ PROJECT = {
             "declarations": "VAR n : INT; END_VAR",
             "body": "n := n + 1; (* count *)",
         },
-        {
-            "name": "Blocks",
-            "kind": "program",
-            "language": "fbd",
-            "declarations": "VAR a : BOOL; q : BOOL; END_VAR",
-            "body": {
-                "networks": [
-                    {
-                        "id": "n1",
-                        "nodes": [
-                            {"type": "input", "id": "in1", "expr": "a", "pos": {"x": 20, "y": 20}},
-                            {"type": "output", "id": "out1", "var": "q", "pos": {"x": 220, "y": 20}},
-                        ],
-                        "wires": [{"from": {"node": "in1", "pin": "OUT"}, "to": {"node": "out1", "pin": "IN"}}],
-                    }
-                ]
-            },
-        },
+        BLOCKS,
     ],
 }
 
