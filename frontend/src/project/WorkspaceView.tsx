@@ -213,7 +213,7 @@ function TestFilesTree() {
             const mine = Object.values(results).filter((r) => r.file === path);
             const failed = mine.filter((r) => r.outcome === "failed").length;
             return (
-              <li key={t.name}>
+              <li key={t.name} className="tree-row">
                 <button
                   type="button"
                   className="tree-item"
