@@ -3,7 +3,7 @@
 import { useEffect, useState, type FormEvent } from "react";
 import { http, unwrap } from "../api/client";
 import type { ExampleInfo } from "../generated/api";
-import { appStore } from "../store";
+import { appStore } from "../store/workspace";
 
 export function NewFromExample() {
   const [open, setOpen] = useState(false);

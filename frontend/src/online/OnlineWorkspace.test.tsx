@@ -1,12 +1,12 @@
 // The app with online mode, the bottom panels and the ST view, over a faked server and websocket.
 import { act, fireEvent, render, screen, waitFor, within } from "@testing-library/react";
 import { beforeEach, describe, expect, it, vi } from "vitest";
-import App from "../App";
+import App from "../app/App";
 import type { Diagnostic, SymbolInfo } from "../generated/api";
 import { motorMain } from "../ld/fixtures";
 import { emptyPanels, panelsStore } from "../panels/store";
-import { emptyWorkspace, workspaceStore } from "../project/store";
-import { appStore, initialData } from "../store";
+import { emptyWorkspace, workspaceStore } from "../store/project";
+import { appStore, initialData } from "../store/workspace";
 import { offline, onlineStore } from "./store";
 import { stubFetch, type SentRequest } from "../test/fetchStub";
 

@@ -3,7 +3,7 @@ import { useState } from "react";
 import { describe, expect, it, vi } from "vitest";
 import type { SymbolInfo } from "../../generated/api";
 import { bodyOf, c, LIBRARY, motorMain, net, q } from "../fixtures";
-import { historyOf, type History } from "../history";
+import { historyOf, type History } from "../../store/history";
 import { locate, networksOf, type LdBody, type LdElement } from "../model";
 import { LdEditor, type LdEditorProps } from "./LdEditor";
 

@@ -15,7 +15,7 @@ import {
 } from "react";
 import type { Diagnostic, LibraryEntry, SymbolInfo } from "../../generated/api";
 import { parseClip, serializeClip, type Clip } from "../clipboard";
-import { canRedo, canUndo, record, redo, undo, type History } from "../history";
+import { canRedo, canUndo, record, redo, undo, type History } from "../../store/history";
 import { layoutBody } from "../layout";
 import { locate, networksOf, walk, type LdBody, type Place } from "../model";
 import * as ops from "../ops";

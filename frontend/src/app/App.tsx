@@ -1,16 +1,16 @@
 import { useEffect, useState, type CSSProperties, type FormEvent } from "react";
-import type { ProjectSummary } from "./api/client";
-import { appStore, useAppStore } from "./store";
-import { lastProject, rememberProject } from "./project/session";
-import { useWorkspace } from "./project/store";
-import { WorkspaceView } from "./project/WorkspaceView";
-import { NewFromExample } from "./hmi/NewFromExample";
-import { ViewBoundary } from "./project/ViewBoundary";
-import { useHidden, useStoredSize } from "./project/layout";
+import type { ProjectSummary } from "../api/client";
+import { appStore, useAppStore } from "../store/workspace";
+import { lastProject, rememberProject } from "./session";
+import { useWorkspace } from "../store/project";
+import { WorkspaceView } from "./WorkspaceView";
+import { NewFromExample } from "../hmi/NewFromExample";
+import { ViewBoundary } from "../ui/ViewBoundary";
+import { useHidden, useStoredSize } from "../store/layout";
 import { PanelLeftClose, PanelLeftOpen } from "lucide-react";
-import { Splitter } from "./ui/Splitter";
-import { ThemeToggle } from "./ui/ThemeToggle";
-import { ToolButton } from "./ui/ToolButton";
+import { Splitter } from "../ui/Splitter";
+import { ThemeToggle } from "../ui/ThemeToggle";
+import { ToolButton } from "../ui/ToolButton";
 
 const HEALTH_POLL_MS = 15_000;
 /** The project list and the project tree may be dragged between these widths (px). */
@@ -201,7 +201,7 @@ export default function App() {
     void loadProjects();
   }, [loadProjects]);
 
-  // After a reload the project open last opens again (project/session.ts keeps the rest of the session).
+  // After a reload the project open last opens again (app/session.ts keeps the rest of the session).
   useEffect(() => {
     if (listed && appStore.getState().selectedProject === null) {
       const last = lastProject(localStorage);

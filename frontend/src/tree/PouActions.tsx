@@ -15,7 +15,7 @@ import {
   renamedPath,
   renameEverywhere,
 } from "./refactor";
-import { emptyDeclarations, workspaceStore } from "./store";
+import { emptyDeclarations, workspaceStore } from "../store/project";
 
 type Action = "rename" | "duplicate" | "kind" | "delete";
 
