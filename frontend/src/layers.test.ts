@@ -10,7 +10,7 @@ const eslint = new ESLint({ cwd: new URL("..", import.meta.url).pathname });
 /** The layer-rule messages ESLint gives for `code` placed at `file` (relative to frontend/). */
 async function layerErrors(file: string, code: string): Promise<string[]> {
   const [result] = await eslint.lintText(`${code}\nexport const used = imported;\n`, { filePath: file });
-  return result.messages.filter((m) => m.ruleId === "import-x/no-restricted-paths").map((m) => m.message);
+  return result!.messages.filter((m) => m.ruleId === "import-x/no-restricted-paths").map((m) => m.message);
 }
 
 const WRONG_WAY: [string, string, string, string][] = [
