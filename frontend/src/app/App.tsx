@@ -11,6 +11,7 @@ import { PanelLeftClose, PanelLeftOpen } from "lucide-react";
 import { Splitter } from "../ui/Splitter";
 import { ThemeToggle } from "../ui/ThemeToggle";
 import { ToolButton } from "../ui/ToolButton";
+import { FormError } from "../ui/FormError";
 
 const HEALTH_POLL_MS = 15_000;
 /** The project list and the project tree may be dragged between these widths (px). */
@@ -118,11 +119,7 @@ function NewProject() {
       <button type="button" onClick={() => setOpen(false)}>
         Cancel
       </button>
-      {error ? (
-        <p className="new-project-error" role="alert">
-          {error}
-        </p>
-      ) : null}
+      <FormError error={error} className="new-project-error" />
     </form>
   );
 }

@@ -18,6 +18,7 @@ import { taskIndexOf, type ProjectPart } from "../store/parts";
 import { structMembers, TYPE_KINDS, typeRows, withNewType, withStructMembers, type TypeKind } from "../store/types";
 import type { DeclRow } from "../iec/declarations";
 import { useWorkspace } from "../store/project";
+import { FormError } from "../ui/FormError";
 
 const NO_COMPLETIONS = { options: [], members: () => null };
 const NO_TASKS: Task[] = [];
@@ -154,11 +155,7 @@ export function TypesView() {
               ))}
             </select>
             <button type="submit">Add type</button>
-            {error ? (
-              <p className="new-pou-error" role="alert">
-                {error}
-              </p>
-            ) : null}
+            <FormError error={error} />
           </form>
         )}
       </div>

@@ -59,6 +59,7 @@ import { PouMembers } from "../tree/PouMembers";
 import { typeRows } from "../store/types";
 import { keepSession, restoreSession, type SessionStores } from "./session";
 import { traceStore } from "../trace/store";
+import { FormError } from "../ui/FormError";
 
 // Loaded on first use, each in its own chunk: the ST views (CodeMirror) and the FBD editor (@xyflow).
 const StPouView = lazy(() => import("./StViews").then((m) => ({ default: m.StPouView })));
@@ -150,11 +151,7 @@ function NewItemForm({
       <button type="button" onClick={() => setOpen(false)}>
         Cancel
       </button>
-      {error ? (
-        <p className="new-pou-error" role="alert">
-          {error}
-        </p>
-      ) : null}
+      <FormError error={error} />
     </form>
   );
 }
