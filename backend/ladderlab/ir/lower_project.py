@@ -35,6 +35,7 @@ from .lower_ld import lower_ld_body
 from .lower_sfc import lower_sfc_body
 from .lower_st import lower_st_body
 from .lower_types import LoweringError
+from .method_outputs import declare_output_references
 from .nodes import Assign, Binary, Block, Origin, Pou, Program, Slot, Stmt, Unary, Var
 from .types import BOOL
 
@@ -133,6 +134,7 @@ def lower_pou(
             slot = _slot(symbol, ctx, f"{info.name}/declarations")
             if slot is not None:
                 ctx.add_slot(slot)
+    ctx.before_return = declare_output_references(ctx)
     return_type = None
     if info.kind == "FUNCTION" and info.return_type is not None:
         try:
@@ -152,6 +154,11 @@ def lower_pou(
         ctx.report("IR-UNSUPPORTED", f"{language.upper()} POUs cannot be run yet")
     else:
         blocks = lower(pou, ctx)
+    if ctx.before_return:  # (a method: ST, one block)
+        if blocks:
+            blocks[-1].statements.extend(ctx.before_return)
+        else:
+            blocks.append(Block(list(ctx.before_return), Origin(ctx.name)))
     if preamble:
         if language == "st" and blocks:
             blocks[0].statements[:0] = preamble
