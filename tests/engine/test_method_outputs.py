@@ -170,3 +170,37 @@ def test_an_override_and_an_implementation_must_declare_the_same_outputs():
         ("ST-DECL", "Rect.Measure/declarations", f"Rect.Measure overrides Square.Measure but {expected}"),
         ("ST-DECL", "Rect/declarations", f"Rect.Measure implements IShape.Measure but {expected}"),
     ]
+
+
+def test_an_ld_box_writes_a_methods_outputs_to_the_variables_at_its_pins():
+    """In LD a method box ``d.DivMod`` (CODESYS) writes its outputs like ``q => x``: the same type directly, a wider
+    one converted; EN gates the call, so with the rung open nothing is written."""
+    from ladderlab.simulation.build import build_project
+    from ladderlab.st.project_text import source_to_project
+    from tests.ir.diagram_support import box, contact, ld_pou, rung
+
+    project, _ = source_to_project(DIVIDER, "ld")
+    divide = box("b1", "d.DivMod", en=True, a="n", b="4", outputs={"OUT": "ok", "Q": "q", "R": "wide"})
+    declarations = "VAR d : Divider; go : BOOL; n : INT := 14; ok : BOOL; q : INT := -1; wide : DINT := -1; END_VAR"
+    project.pous.append(ld_pou("Main", declarations, rung("n1", contact("k", "go"), divide)))
+    result = build_project(project)
+    assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
+    sim = result.simulation()
+    sim.cycle(1)
+    assert (sim.read("Main.ok"), sim.read("Main.q"), sim.read("Main.wide")) == (False, -1, -1)
+    sim.write("Main.go", True)
+    sim.cycle(1)
+    assert (sim.read("Main.ok"), sim.read("Main.q"), sim.read("Main.wide")) == (True, 3, 2)  # 14 = 3 * 4 + 2
+
+
+def test_an_ld_box_pin_that_is_no_output_of_the_method_is_refused():
+    from ladderlab.simulation.build import build_project
+    from ladderlab.st.project_text import source_to_project
+    from tests.ir.diagram_support import box, contact, ld_pou, rung
+
+    project, _ = source_to_project(DIVIDER, "ld")
+    divide = box("b1", "d.DivMod", en=True, a="1", b="4", outputs={"REST": "q"})
+    project.pous.append(ld_pou("Main", "VAR d : Divider; q : INT; END_VAR", rung("n1", contact("k", "TRUE"), divide)))
+    assert [(d.code, d.message) for d in build_project(project).diagnostics if d.severity == "error"] == [
+        ("LD-UNKNOWN-PIN", "d.DivMod is a method: its outputs are OUT, Q, R, EXACT, CODE")
+    ]

@@ -113,7 +113,7 @@ def _assign(statement: ast.Assign, ctx: PouContext) -> list[Stmt]:
         copies: list[Stmt] = []
         call = _function_call(value, ctx, copies)
         en, eno, after = lower_en_eno(value, ctx)
-        en, eno, copies = _gated(en, eno, copies, origin, ctx)
+        en, eno, copies = gated(en, eno, copies, origin, ctx)
         return [FnCall(call, lower_access(target, ctx), origin, en, eno), *copies, *after]
     lowered = lower_to(value, ctx, ctx.ir_type(target.ty))  # the value is computed before the target is stored
     if statement.attempt:  # ?=: NULL unless the instance's FB implements the target's interface
@@ -151,7 +151,7 @@ def lower_call_statement(statement: ast.CallStmt, ctx: PouContext) -> list[Stmt]
     lowered = _function_call(call, ctx, copies)
     en, eno, after = lower_en_eno(call, ctx)
     origin = ctx.origin(statement)
-    en, eno, copies = _gated(en, eno, copies, origin, ctx)
+    en, eno, copies = gated(en, eno, copies, origin, ctx)
     return [FnCall(lowered, None, origin, en, eno), *copies, *after]
 
 
@@ -169,7 +169,7 @@ def _function_call(call: ast.Call, ctx: PouContext, after: list[Stmt]) -> Call:
     return std_call(call, ctx) if isinstance(call.ref, stdlib.StdFunction) else user_call(call, ctx, after)
 
 
-def _gated(
+def gated(
     en: Expr | None, eno: Var | None, copies: list[Stmt], origin: Origin, ctx: PouContext
 ) -> tuple[Expr | None, Var | None, list[Stmt]]:
     """EN and ENO of a call and the ``copies`` after it, which run only when the call ran (ENO) if it has an EN."""
@@ -214,7 +214,7 @@ def lower_fb_call(call: ast.Call, ctx: PouContext, origin: Origin) -> list[Stmt]
                 pin = Unary("NOT", pin, pin_type)
             copies.append(Assign(target, convert(pin, target.type), ctx.origin(arg)))
     en, eno, after = lower_en_eno(call, ctx)
-    en, eno, copies = _gated(en, eno, copies, origin, ctx)
+    en, eno, copies = gated(en, eno, copies, origin, ctx)
     return [FbCall(instance, inputs, outputs, origin, en, eno), *copies, *after]
 
 
