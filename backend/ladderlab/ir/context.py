@@ -231,6 +231,10 @@ class PouContext:
         self.slots.append(slot)
         self._taken.add(slot.name)
 
+    def reserve(self, slots: list[Slot]) -> None:
+        """Keep ``hidden`` from naming a slot like one of ``slots`` (a base's, which SUPER^() shares)."""
+        self._taken.update(slot.name for slot in slots)
+
     def hidden(self, hint: str, type: IrType, initial: object = None, var_class: VarClass = "VAR") -> Var:
         """A new hidden slot (unique name from ``hint``), e.g. an edge memory or a power-flow temporary.
 

@@ -14,6 +14,7 @@ from ..iec import stdlib
 from ..model.project import Pou as ModelPou
 from ..st import ast
 from ..st import types as t
+from ..st.methods import is_self
 from ..st.printer import print_expression
 from ..st.symbols import PouInfo, PropertyRef, Symbol
 from .context import PouContext
@@ -144,6 +145,10 @@ def lower_call_statement(statement: ast.CallStmt, ctx: PouContext) -> list[Stmt]
         raise LoweringError(None)
     if isinstance(call.ref, Symbol):
         return lower_fb_call(call, ctx, ctx.origin(statement))
+    if is_self(call.callee):  # SUPER^(): the base's body on this instance (st/calls.py)
+        statements = lower_fb_call(call, ctx, ctx.origin(statement))
+        statements[0].body = call.callee.ty.name.upper()
+        return statements
     if not _is_function(call.ref):
         refuse_unsupported_call(call)
         raise LoweringError(None)

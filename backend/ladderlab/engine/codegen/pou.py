@@ -90,6 +90,10 @@ def emit_instance_class(module: ModuleContext, pou: ir.Pou, decls: Source, code:
         decls.line()
         _emit_init(module, pou, scope, decls)
     decls.line()
+    if module.probes and pou.name.upper() in module.program.base_bodies:  # (statements.py, SUPER^())
+        table = module.probe_table(pou.name)
+        decls.line(f"{cls}.ll_super_probes = [ll_unset] * {len(table.elements)}, [-1] * {table.group_count}")
+        decls.line()
 
 
 def _emit_init(module: ModuleContext, pou: ir.Pou, scope: Scope, src: Source) -> None:
