@@ -423,8 +423,12 @@ def _short_circuit(node: ast.Binary, op: str, ctx: PouContext) -> Expr:
 
 
 def _reference_operation(node: ast.Binary, op: str, ctx: PouContext) -> Expr:
-    """``r1 = r2``, ``r <> NULL``: whether two references refer to one variable. Pointer arithmetic (``p + 1``)
-    and ordering would reach memory next to a variable, which the engine's references have not got."""
+    """``r1 = r2``, ``r <> NULL``: whether two references refer to one variable. ``p + n`` / ``p - n`` (bytes,
+    CODESYS): the pointer moved along the array it points into (the engine checks it stays there). Ordering
+    would compare memory addresses, which the engine's references have not got."""
+    if op in ("ADD", "SUB") and isinstance(node.left.ty, t.PointerType) and t.in_family(node.right.ty, "ANY_INT"):
+        pointer = lower_expr(node.left, ctx)
+        return Binary(op, pointer, lower_expr(node.right, ctx, Elementary("DINT")), pointer.type)  # type: ignore[arg-type]
     if op not in ("EQ", "NE"):
         raise LoweringError(
             POINTER_ARITHMETIC if op in ("ADD", "SUB") else f"references cannot be compared by '{node.op}'", node
