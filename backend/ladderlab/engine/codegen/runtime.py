@@ -194,7 +194,7 @@ class ElementRef(Ref):
     """A pointer moved by arithmetic (``p + SIZEOF(x)``) along the array (a list) its element belongs to: it may
     point one past the last element (a loop's end), but reading or writing there is a fault, never a Python error."""
 
-    __slots__ = ("origin", "moved")
+    __slots__ = ("moved", "origin")
 
     def __init__(self, container: list, key: int, origin: str, moved: int) -> None:
         sign = "+" if moved >= 0 else "-"
