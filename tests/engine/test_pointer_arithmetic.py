@@ -105,3 +105,21 @@ def test_any_walk_stays_inside_or_faults_where_it_leaves(steps):
             assert sim.fault is not None and sim.fault.code == "index_out_of_range"
             return
     assert sim.fault is None and sim.read("Main.seen") == (position if position < 5 else -1)
+
+
+def test_a_state_with_a_moved_pointer_pickles_and_restores():
+    """A moved pointer is a reference like any other: left out of a captured state (docs/runtime.md), which
+    pickles; the restored simulation sets it again when its body runs."""
+    import pickle
+
+    text = "a : ARRAY [0..2] OF INT := [5, 6, 7]; p : POINTER TO INT; y : INT;"
+    body = "p := ADR(a[0]) + 4;\ny := p^;\na[2] := a[2] + 1;"
+    first = simulation(text, body)
+    first.cycle(2)
+    assert (first.read("Main.p"), first.read("Main.y")) == ("ADR(a[0]) + 4", 8)
+    state = pickle.loads(pickle.dumps(first.state()))
+    second = simulation(text, body)
+    second.restore(state)
+    assert (second.read("Main.a"), second.read("Main.p")) == ([5, 6, 9], "NULL")
+    second.cycle(1)
+    assert (second.read("Main.y"), second.read("Main.a")) == (9, [5, 6, 10])
