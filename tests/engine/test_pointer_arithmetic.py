@@ -123,3 +123,57 @@ def test_a_state_with_a_moved_pointer_pickles_and_restores():
     assert (second.read("Main.a"), second.read("Main.p")) == ([5, 6, 9], "NULL")
     second.cycle(1)
     assert (second.read("Main.y"), second.read("Main.a")) == (9, [5, 6, 10])
+
+
+SEED_GLOBALS = "VAR_GLOBAL\n  arrayINT : ARRAY[0..10] OF INT;\nEND_VAR\n"
+
+
+def _seed_program(name: str, declarations: str) -> str:
+    return (
+        f"{SEED_GLOBALS}PROGRAM {name}\n  VAR\n{declarations}\n    varINT : INT;\n  END_VAR\n"
+        "  intPTR^ := 11;\n  intPTR := intPTR + sizeof( INT);\n  intPTR^ := 22;\n"
+        "  intPTR := intPTR + sizeof( INT);\n  varINT := intPTR^;\nEND_PROGRAM\n"
+    )
+
+
+def test_seed_000_ex_3_12_ptr_to_walks_the_global_array_ex_15():
+    """EX-15 (TYP-40, TYP-42..45): Mosaic ``PTR_TO``; every scan: arrayINT[0] = 11, [1] = 22, varINT = [2] = 0."""
+    from ladderlab.simulation.build import build_project
+    from ladderlab.st.project_text import source_to_project
+
+    text = _seed_program("ExamplePtr", "    intPTR : PTR_TO INT;").replace(
+        "  intPTR^ := 11;", "  intPTR := ADR( arrayINT[0]);\n  intPTR^ := 11;"
+    )
+    project, diagnostics = source_to_project(text, "seed")
+    assert diagnostics == []
+    sim = build_project(project).simulation()
+    for _ in range(3):
+        sim.cycle(1)
+        assert sim.read("arrayINT")[:3] == [11, 22, 0] and sim.read("ExamplePtr.varINT") == 0
+
+
+def test_seed_000_ex_3_13_a_pointer_initialised_once_faults_when_it_leaves_the_array_ex_16():
+    """EX-16 (TYP-46, TYP-47): the initialiser runs once, so the pointer moves two elements per scan; in scan 6 the
+    write of 22 would reach element 11 of ARRAY[0..10]: the located fault, nothing written outside."""
+    from ladderlab.simulation.build import build_project
+    from ladderlab.st.project_text import source_to_project
+
+    text = _seed_program("ExamplePtrErr", "    intPTR : PTR_TO INT := ADR( arrayINT[0]);")
+    project, diagnostics = source_to_project(text, "seed")
+    assert diagnostics == []
+    sim = build_project(project).simulation()
+    expected = [0] * 11
+    for scan in range(5):
+        sim.cycle(1)
+        expected[2 * scan], expected[2 * scan + 1] = 11, 22
+        assert sim.fault is None and sim.read("arrayINT") == expected
+        assert sim.read("ExamplePtrErr.varINT") == 0  # element 2 * scan + 2, not written yet
+    sim.cycle(1)
+    expected[10] = 11
+    fault = sim.fault
+    assert fault is not None and fault.code == "index_out_of_range" and fault.scan == 5
+    assert fault.message == (
+        "the pointer ADR(arrayINT[0]) + 22 reaches element 11 of 11 element(s): outside the variable it points into"
+    )
+    assert (fault.pou, fault.origin.line) == ("EXAMPLEPTRERR", text.splitlines().index("  intPTR^ := 22;") + 1)
+    assert sim.read("arrayINT") == expected

@@ -317,11 +317,13 @@ VarClass = Literal["VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_EXTERNAL
 @dataclass(frozen=True)
 class ReferenceInit:
     """The initial value ``REF(x)`` of a reference slot: the whole variable ``name`` of this POU (``local``) or a
-    global, made after every other slot is initialised (``text`` as written, shown online)."""
+    global, or its array element ``x[index]`` (constant indices, as declared), made after every other slot is
+    initialised (``text`` as written, shown online)."""
 
     name: str
     scope: Scope
     text: str
+    index: tuple[int, ...] = ()
 
 
 @dataclass
