@@ -2407,6 +2407,11 @@ export interface components {
        * @default
        */
       globals?: string;
+      /**
+       * Libraries
+       * @description Vendor compatibility libraries the project uses; a POU of the project shadows a library function of the same name.
+       */
+      libraries?: ("Tc2_Math" | "Tc2_Utilities")[];
       /** Name */
       name: string;
       /**
