@@ -117,6 +117,7 @@ def _accesses(project: Project, checked: CheckResult, pou: Pou, entries: dict[Ke
 def _method_accesses(checked: CheckResult, method: PouInfo, entries: dict[Key, XrefEntry]) -> None:
     """What a METHOD reads, writes and calls (lines of its body): its own variables under ``F.M``, the instance's
     (``THIS`` member paths in the IR, docs/ir.md) under its function block, the globals under theirs."""
+    assert method.method is not None  # (a function block's ``methods`` holds methods only)
     fb = method.method.owner
     lowered = lower_pou(None, method, checked, [])
     own = {name: entry.name for (owner, name), entry in entries.items() if owner in (None, method.name.upper())}
