@@ -18,11 +18,14 @@ from hypothesis import strategies as st
 
 from ladderlab.cli import main
 from ladderlab.engine.simulation import Simulation
+from ladderlab.interchange.st.project import export_project_st
 from ladderlab.model import Project
 from ladderlab.simulation.build import build_project
+from ladderlab.simulation.library import user_entries
 from ladderlab.st.project_text import source_to_project
 from ladderlab.storage import load_project_path
 from ladderlab.storage.project_folder import project_files
+from tests.ir.diagram_support import box, contact, ld_pou, rung
 
 LIBRARIES = ["Tc2_Math", "Tc2_Utilities"]
 
@@ -186,7 +189,7 @@ def test_a_library_function_the_project_does_not_use_is_unknown_with_a_hint() ->
     build = build_project(_project("PROGRAM Main\nVAR r : LREAL; END_VAR\nr := FRAC(2.5);\nEND_PROGRAM\n", []))
     assert [d.format() for d in build.diagnostics] == [
         "Main/body:3:6, POU Main: error ST-UNKNOWN-POU: unknown function 'FRAC': it is in the Tc2_Math library, "
-        "which the project does not use: add it to the project's libraries (--library Tc2_Math for a .st file)"
+        "which the project does not use: add it in the project's Library manager (--library Tc2_Math for a .st file)"
     ]
 
 
@@ -212,3 +215,36 @@ def test_the_command_line_adds_a_library_to_a_st_file(tmp_path: Path, capsys: py
     path.write_text("PROGRAM Main\nVAR s : STRING; END_VAR\ns := LREAL_TO_FMTSTR(2.5, 1, TRUE);\nEND_PROGRAM\n")
     assert main(["run", str(path), "--library", "Tc2_Utilities", "--watch", "Main.s"]) == 0
     assert capsys.readouterr().out.splitlines()[-1].split() == ["0", "10", '"2.5"']
+
+
+def test_an_ld_box_calls_a_library_function_and_the_box_picker_offers_it() -> None:
+    pou = ld_pou(
+        "Main",
+        "VAR run : BOOL := TRUE; r : LREAL; END_VAR",
+        rung(
+            "N1", contact("C1", "run"), box("B1", "MODABS", en=True, outputs={"OUT": "r"}, value="-1.5", modulo="1.0")
+        ),
+    )
+    project = Project(name="p", pous=[pou], libraries=["Tc2_Math"])
+    build = build_project(project)
+    assert build.compiled is not None, [d.format() for d in build.diagnostics]
+    sim = build.simulation()
+    sim.cycle(1)
+    assert sim.read("Main.r") == 0.5  # -1.5 wrapped into [0, 1)
+    offered = {(e.name, e.source) for e in user_entries(project)}
+    assert {("LTRUNC", "library"), ("MODABS", "library"), ("FRAC", "library"), ("LMOD", "library")} <= offered
+
+
+def test_the_st_export_names_the_libraries_and_runs_with_them(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    project = _project("PROGRAM Main\nVAR r : LREAL; END_VAR\nr := LMOD(-7.5, 2.0);\nEND_PROGRAM\n", LIBRARIES)
+    text = export_project_st(project).text
+    assert text.splitlines()[0] == (
+        "(* Uses the vendor libraries Tc2_Math, Tc2_Utilities: ladderlab check/run ... --library Tc2_Math "
+        "--library Tc2_Utilities *)"
+    )
+    path = tmp_path / "exported.st"
+    path.write_text(text, encoding="utf-8")
+    assert main(["run", str(path), "--library", "Tc2_Math", "--watch", "Main.r"]) == 0
+    assert capsys.readouterr().out.splitlines()[-1].split() == ["0", "10", "-1.5"]  # the sign of the dividend

@@ -70,7 +70,7 @@ def check_call(checker: Any, node: ast.Call, statement: bool) -> Type:
     library = library_of(callee.name)
     if library is not None:
         hint = (
-            f": it is in the {library} library, which the project does not use: add it to the project's libraries"
+            f": it is in the {library} library, which the project does not use: add it in the project's Library manager"
             f" (--library {library} for a .st file)"
         )
     else:

@@ -1811,9 +1811,10 @@ export interface components {
       return_type: string | null;
       /**
        * Source
+       * @description standard: IEC; user: a POU of the project; library: of a vendor library the project uses.
        * @enum {string}
        */
-      source: "standard" | "user";
+      source: "standard" | "user" | "library";
     };
     /**
      * Login
