@@ -2,12 +2,12 @@ import { diagnosticCount } from "@codemirror/lint";
 import { EditorView } from "@codemirror/view";
 import { act, fireEvent, render, screen, waitFor, within } from "@testing-library/react";
 import { beforeEach, describe, expect, it } from "vitest";
-import App from "../App";
-import { appStore, initialData } from "../store";
+import App from "./App";
+import { appStore, initialData } from "../store/workspace";
 import { stubFetch } from "../test/fetchStub";
 import { motorMain } from "../ld/fixtures";
 import { debugStore } from "../debug/store";
-import { emptyWorkspace, workspaceStore } from "./store";
+import { emptyWorkspace, workspaceStore } from "../store/project";
 
 const json = (body: unknown, status = 200) =>
   new Response(JSON.stringify(body), { status, headers: { "Content-Type": "application/json" } });
