@@ -17,7 +17,8 @@ describe("online FBD", () => {
   it("subscribes every block output pin, the variable nodes and their variables", () => {
     const binding = bindFbd(body, "MAIN", lookup, SYMBOLS);
     expect(binding.elements).toEqual([
-      { pou_instance: "MAIN", ids: ["a", "b", "c", "add.OUT", "sub.OUT", "r", "t.ENO", "t.Q", "t.ET", "j"] },
+      // sub.IN1: the value SUB read from ADD, recorded by the engine only if that wire is a feedback wire
+      { pou_instance: "MAIN", ids: ["a", "b", "c", "add.OUT", "sub.OUT", "sub.IN1", "r", "t.ENO", "t.Q", "t.ET", "j"] },
     ]);
     expect([...binding.paths].sort()).toEqual(
       [
@@ -32,6 +33,29 @@ describe("online FBD", () => {
       "t.ET",
       "j",
     ]);
+  });
+
+  it("shows on a block input fed over a feedback wire the value the block read, not its producer's new one", () => {
+    // ADD's OUT wired back into its own IN1 (issue 22 item 6): the engine probes add.IN1 before the call
+    const loop = bodyOf({
+      id: "n",
+      nodes: [
+        { type: "block", id: "add", call: "ADD" },
+        { type: "input", id: "one", expr: "1" },
+      ],
+      wires: [wire("add", "OUT", "add", "IN1"), wire("one", "OUT", "add", "IN2")],
+    });
+    const binding = bindFbd(loop, "MAIN", lookup, SYMBOLS);
+    expect(binding.elements[0]!.ids).toEqual(["add.OUT", "add.IN1", "one"]);
+    const monitor = {
+      ...emptyMonitor,
+      power: { [powerKey("MAIN", "add.OUT")]: 4, [powerKey("MAIN", "add.IN1")]: 3 },
+    };
+    const view = fbdOnlineView(monitor, binding);
+    expect([view.pins.add!["in:IN1"]!.text, view.pins.add!["out:OUT"]!.text]).toEqual(["3", "4"]);
+    // an input the engine records no read value for shows its producer's value
+    const plain = { ...monitor, power: { [powerKey("MAIN", "add.OUT")]: 4 } };
+    expect(fbdOnlineView(plain, binding).pins.add!["in:IN1"]!.text).toBe("4");
   });
 
   it("reads wire values from the producer's probe, through continuations", () => {

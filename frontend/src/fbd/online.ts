@@ -95,11 +95,18 @@ function bindBlock(
     if (!probe) return null;
     const source = nodesOf(network).find((n) => n.id === wire!.from.node);
     const operand = source && kindOf(source) === "input" ? operandOf(source) : null;
-    return { probe, typeOf: (operand && path(operand)) ?? undefined };
+    const read = source && kindOf(source) === "block" ? readProbe(block.id, pin.name) : undefined;
+    return { probe, read, typeOf: (operand && path(operand)) ?? undefined };
   });
 }
 
-/** The probe ids of one node: its output pins (blocks) or the node itself. */
+/**
+ * The probe of what a block's input read over a wire from a block: the engine records it only for a feedback
+ * wire (the previous scan's value; any other input reads what its producer's probe shows).
+ */
+const readProbe = (block: string, pin: string) => `${block}.${pin.toUpperCase()}`;
+
+/** The probe ids of one node: its output pins (blocks), the inputs a loop may feed, or the node itself. */
 function probesOfNode(
   node: ReturnType<typeof nodesOf>[number],
   network: FbdNetwork,
@@ -107,10 +114,16 @@ function probesOfNode(
   symbols: readonly SymbolInfo[],
 ): string[] {
   switch (kindOf(node)) {
-    case "block":
-      return lookup((node as { call: string }).call)
-        ? nodePins(node, network, lookup, symbols).outputs.map((p) => `${node.id}.${p.name.toUpperCase()}`)
-        : [];
+    case "block": {
+      if (!lookup((node as { call: string }).call)) return [];
+      const fromBlocks = wiresOf(network).filter(
+        (w) => w.to.node === node.id && nodesOf(network).some((n) => n.id === w.from.node && kindOf(n) === "block"),
+      );
+      return [
+        ...nodePins(node, network, lookup, symbols).outputs.map((p) => `${node.id}.${p.name.toUpperCase()}`),
+        ...fromBlocks.map((w) => readProbe(node.id, w.to.pin)),
+      ];
+    }
     case "input":
     case "output":
     case "jump":

@@ -23,22 +23,6 @@ export function orderNumbers(network: FbdNetwork, order: readonly string[]): Map
   return numbers;
 }
 
-/**
- * A chart's input pins fed against the execution order (by an element with the same or a higher number):
- * they read the previous scan's value, so the producer's value of this scan is not theirs to show online.
- * Keys are `<node id>/in:<PIN>`.
- */
-export function feedbackPins(network: FbdNetwork, numbers: ReadonlyMap<string, number>): Set<string> {
-  const found = new Set<string>();
-  for (const wire of wiresOf(network)) {
-    const from = numbers.get(wire.from.node);
-    const to = numbers.get(wire.to.node);
-    if (from !== undefined && to !== undefined && from >= to)
-      found.add(`${wire.to.node}/in:${wire.to.pin.toUpperCase()}`);
-  }
-  return found;
-}
-
 /** "Order by data flow" on a chart: its executed elements in `flow`, the FBD order the backend reported. */
 export function orderByDataFlow(body: FbdBody, networkId: string, flow: readonly string[]): EditResult {
   const network = networksOf(body).find((n) => n.id === networkId);

@@ -57,7 +57,7 @@ import {
 import type { FbdOnlineView } from "../online";
 import { operandOf } from "../online";
 import * as ops from "../ops";
-import { feedbackPins, moveInOrder, orderByDataFlow, orderNumbers, ordered } from "../order";
+import { moveInOrder, orderByDataFlow, orderNumbers, ordered } from "../order";
 import { fetchChartOrder, fetchOrder, useEvaluationOrder } from "../useOrder";
 import { FbdEditorContext, type FbdEditorApi, type NodeView } from "./context";
 import { pinOfHandle } from "./FbdNodeView";
@@ -506,21 +506,6 @@ export function FbdEditor({
     const order = chart && network ? orders.get(network.id) : undefined;
     return network && order ? orderNumbers(network, order) : null;
   }, [chart, networks, orders]);
-  // Online on a chart: an input fed against the order read the previous scan's value; show none rather
-  // than the producer's value of this scan.
-  const shownOnline = useMemo(() => {
-    const network = networks[0];
-    if (!online || !chartNumbers || !network) return online;
-    const hidden = feedbackPins(network, chartNumbers);
-    if (hidden.size === 0) return online;
-    const pins = Object.fromEntries(
-      Object.entries(online.pins).map(([id, values]) => [
-        id,
-        Object.fromEntries(Object.entries(values).filter(([key]) => !hidden.has(`${id}/${key}`))),
-      ]),
-    );
-    return { ...online, pins };
-  }, [online, chartNumbers, networks]);
   const view = useCallback(
     (network: FbdNetwork, node: FbdNode): NodeView => {
       const order = chartNumbers ? (chartNumbers.get(node.id) ?? -1) - 1 : orders.get(network.id)?.indexOf(node.id);
@@ -563,7 +548,7 @@ export function FbdEditor({
   const api: FbdEditorApi = {
     readOnly: locked,
     symbols,
-    online: shownOnline,
+    online,
     editing,
     view,
     startEdit: (id) => !locked && setEditing(id),
