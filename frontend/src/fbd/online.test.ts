@@ -17,8 +17,7 @@ describe("online FBD", () => {
   it("subscribes every block output pin, the variable nodes and their variables", () => {
     const binding = bindFbd(body, "MAIN", lookup, SYMBOLS);
     expect(binding.elements).toEqual([
-      // sub.IN1: the value SUB read from ADD, recorded by the engine only if that wire is a feedback wire
-      { pou_instance: "MAIN", ids: ["a", "b", "c", "add.OUT", "sub.OUT", "sub.IN1", "r", "t.ENO", "t.Q", "t.ET", "j"] },
+      { pou_instance: "MAIN", ids: ["a", "b", "c", "add.OUT", "sub.OUT", "r", "t.ENO", "t.Q", "t.ET", "j"] },
     ]);
     expect([...binding.paths].sort()).toEqual(
       [
@@ -45,8 +44,10 @@ describe("online FBD", () => {
       ],
       wires: [wire("add", "OUT", "add", "IN1"), wire("one", "OUT", "add", "IN2")],
     });
-    const binding = bindFbd(loop, "MAIN", lookup, SYMBOLS);
+    const binding = bindFbd(loop, "MAIN", lookup, SYMBOLS, undefined, new Set(["add/in:IN1"]));
     expect(binding.elements[0]!.ids).toEqual(["add.OUT", "add.IN1", "one"]);
+    // not (yet) known as a feedback pin: no read probe subscribed (the engine has none for other inputs)
+    expect(bindFbd(loop, "MAIN", lookup, SYMBOLS).elements[0]!.ids).toEqual(["add.OUT", "one"]);
     const monitor = {
       ...emptyMonitor,
       power: { [powerKey("MAIN", "add.OUT")]: 4, [powerKey("MAIN", "add.IN1")]: 3 },

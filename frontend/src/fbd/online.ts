@@ -78,6 +78,7 @@ function bindBlock(
   lookup: Lookup,
   symbols: readonly SymbolInfo[],
   path: (operand: string) => string | null,
+  feedback: ReadonlySet<string>,
 ): PinBinding[] {
   const block = node as { id: string; call: string; instance?: string | null };
   const { inputs, outputs } = nodePins(node, network, lookup, symbols);
@@ -95,33 +96,29 @@ function bindBlock(
     if (!probe) return null;
     const source = nodesOf(network).find((n) => n.id === wire!.from.node);
     const operand = source && kindOf(source) === "input" ? operandOf(source) : null;
-    const read = source && kindOf(source) === "block" ? readProbe(block.id, pin.name) : undefined;
+    const read = feedback.has(`${block.id}/in:${pin.name.toUpperCase()}`) ? readProbe(block.id, pin.name) : undefined;
     return { probe, read, typeOf: (operand && path(operand)) ?? undefined };
   });
 }
 
-/**
- * The probe of what a block's input read over a wire from a block: the engine records it only for a feedback
- * wire (the previous scan's value; any other input reads what its producer's probe shows).
- */
+/** The probe of what a block's input read over a feedback wire (the previous scan's value, lower_fbd.py). */
 const readProbe = (block: string, pin: string) => `${block}.${pin.toUpperCase()}`;
 
-/** The probe ids of one node: its output pins (blocks), the inputs a loop may feed, or the node itself. */
+/** The probe ids of one node: its output pins and feedback inputs (blocks), or the node itself. */
 function probesOfNode(
   node: ReturnType<typeof nodesOf>[number],
   network: FbdNetwork,
   lookup: Lookup,
   symbols: readonly SymbolInfo[],
+  feedback: ReadonlySet<string>,
 ): string[] {
   switch (kindOf(node)) {
     case "block": {
       if (!lookup((node as { call: string }).call)) return [];
-      const fromBlocks = wiresOf(network).filter(
-        (w) => w.to.node === node.id && nodesOf(network).some((n) => n.id === w.from.node && kindOf(n) === "block"),
-      );
+      const looped = wiresOf(network).filter((w) => feedback.has(`${node.id}/in:${w.to.pin.toUpperCase()}`));
       return [
         ...nodePins(node, network, lookup, symbols).outputs.map((p) => `${node.id}.${p.name.toUpperCase()}`),
-        ...fromBlocks.map((w) => readProbe(node.id, w.to.pin)),
+        ...looped.filter((w) => w.to.node === node.id).map((w) => readProbe(node.id, w.to.pin)),
       ];
     }
     case "input":
@@ -141,6 +138,8 @@ export function bindFbd(
   lookup: Lookup,
   symbols: readonly SymbolInfo[],
   networks?: ReadonlySet<string>,
+  /** Input pins fed over feedback wires (`<node>/in:<PIN>`, order.ts feedbackPins): they show what they read. */
+  feedback: ReadonlySet<string> = new Set(),
 ): FbdBinding {
   const pathOf = new Map<string, string>();
   const pins = new Map<string, PinBinding[]>();
@@ -149,11 +148,11 @@ export function bindFbd(
   for (const network of networksOf(body)) {
     if (networks && !networks.has(network.id)) continue;
     for (const node of nodesOf(network)) {
-      ids.push(...probesOfNode(node, network, lookup, symbols));
+      ids.push(...probesOfNode(node, network, lookup, symbols, feedback));
       const operand = operandOf(node);
       const p = operand ? path(operand) : null;
       if (operand && p) pathOf.set(operand.toUpperCase(), p);
-      if (kindOf(node) === "block") pins.set(node.id, bindBlock(node, network, lookup, symbols, path));
+      if (kindOf(node) === "block") pins.set(node.id, bindBlock(node, network, lookup, symbols, path, feedback));
     }
   }
   return diagramBinding(instance, ids, pathOf, pins);

@@ -4,7 +4,7 @@ import { describe, expect, it } from "vitest";
 import { arithmetic, bodyOf } from "./fixtures";
 import type { FbdBody } from "./model";
 import { arrangeNetwork } from "./ops";
-import { moveInOrder, orderByDataFlow, orderNumbers } from "./order";
+import { feedbackPins, moveInOrder, orderByDataFlow, orderNumbers } from "./order";
 
 // arithmetic(): inputs a, b -> add -> sub (with input c) -> output r
 const chart = (): FbdBody =>
@@ -47,5 +47,19 @@ describe("auto-arrange on a chart", () => {
     expect(result.ok && result.body.networks![0]!.order).toEqual(["sub", "add", "ret", "r"]);
     const fbd = arrangeNetwork(chart(), "n1", () => 60, order);
     expect(fbd.ok && fbd.body.networks![0]!.order).toEqual(["sub", "add", "r"]);
+  });
+});
+
+describe("feedback pins online", () => {
+  it("are the inputs fed by an element with the same or a later place in the order", () => {
+    // add feeds sub.IN1; with sub before add (a chart's numbers) that wire runs against the order
+    expect([...feedbackPins(network(), ["sub", "add", "r"])]).toEqual(["sub/in:IN1"]);
+    expect([...feedbackPins(network(), ["a", "b", "add", "c", "sub", "r"])]).toEqual([]);
+    // a block's output into its own input (FBD loop)
+    const loop = {
+      ...network(),
+      wires: [...(network().wires ?? []), { from: { node: "sub", pin: "OUT" }, to: { node: "sub", pin: "IN2" } }],
+    };
+    expect([...feedbackPins(loop, ["add", "sub", "r"])]).toEqual(["sub/in:IN2"]);
   });
 });

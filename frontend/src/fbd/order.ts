@@ -23,6 +23,23 @@ export function orderNumbers(network: FbdNetwork, order: readonly string[]): Map
   return numbers;
 }
 
+/**
+ * The input pins fed over a feedback wire, by the execution order the backend reported (`order`): a wire from
+ * an element that runs at the same place or later (a loop in FBD, a wire against the numbers in CFC). They read
+ * the previous scan's value; the engine records what they read (probe `<block>.<PIN>`). Keys `<node>/in:<PIN>`.
+ */
+export function feedbackPins(network: FbdNetwork, order: readonly string[]): Set<string> {
+  const numbers = orderNumbers(network, order);
+  const found = new Set<string>();
+  for (const wire of wiresOf(network)) {
+    const from = numbers.get(wire.from.node);
+    const to = numbers.get(wire.to.node);
+    if (from !== undefined && to !== undefined && from >= to)
+      found.add(`${wire.to.node}/in:${wire.to.pin.toUpperCase()}`);
+  }
+  return found;
+}
+
 /** "Order by data flow" on a chart: its executed elements in `flow`, the FBD order the backend reported. */
 export function orderByDataFlow(body: FbdBody, networkId: string, flow: readonly string[]): EditResult {
   const network = networksOf(body).find((n) => n.id === networkId);

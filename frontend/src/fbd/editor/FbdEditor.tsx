@@ -57,7 +57,7 @@ import {
 import type { FbdOnlineView } from "../online";
 import { operandOf } from "../online";
 import * as ops from "../ops";
-import { moveInOrder, orderByDataFlow, orderNumbers, ordered } from "../order";
+import { feedbackPins, moveInOrder, orderByDataFlow, orderNumbers, ordered } from "../order";
 import { fetchChartOrder, fetchOrder, useEvaluationOrder } from "../useOrder";
 import { FbdEditorContext, type FbdEditorApi, type NodeView } from "./context";
 import { pinOfHandle } from "./FbdNodeView";
@@ -99,6 +99,8 @@ export interface FbdEditorProps {
   focus?: { network?: string | null; element?: string | null; seq: number } | null;
   /** Told which networks are near the viewport, so online mode subscribes only to those. */
   onVisibleChange?(networks: readonly string[]): void;
+  /** Told the input pins fed over feedback wires (order.ts feedbackPins), whose online values are what they read. */
+  onFeedbackChange?(pins: ReadonlySet<string>): void;
   /** POST /api/fbd/order (replaced in tests); on a chart, its execution order (?chart=true). */
   orderOf?(network: FbdNetwork): Promise<FbdOrder>;
   /** A CFC POU: the body's one network is a free chart whose order list is the execution order (CFC-01/02). */
@@ -161,6 +163,7 @@ export function FbdEditor({
   orderOf = chart ? fetchChartOrder : fetchOrder,
   dataFlowOf = fetchOrder,
   onVisibleChange,
+  onFeedbackChange,
 }: FbdEditorProps) {
   const body = history.present;
   const root = useRef<HTMLDivElement>(null);
@@ -193,6 +196,14 @@ export function FbdEditor({
   }, [near, onVisibleChange]);
   const orders = useEvaluationOrder(body, orderOf, near);
   const networks = networksOf(body);
+  useEffect(() => {
+    const pins = new Set<string>();
+    for (const network of networksOf(body)) {
+      const order = orders.get(network.id);
+      if (order) for (const pin of feedbackPins(network, order)) pins.add(pin);
+    }
+    onFeedbackChange?.(pins);
+  }, [body, orders, onFeedbackChange]);
   const locked = readOnly !== null;
 
   // Nodes without a stored position (imported, hand-written) are drawn where auto-arrange would put them.
