@@ -61,14 +61,11 @@ def test_draw_a_counter_loop_and_see_the_value_the_block_read(page, server):
 
     # The loop wire leaves right of the ADD and comes back around it: no corner and no segment inside the block.
     add = editor.locator('.fbd-node[data-node="blk1"]').bounding_box()
-    loop = editor.locator('.react-flow__edge[data-id$="blk1-out:OUT-blk1-in:IN1"], .react-flow__edge').filter(
-        has=page.locator("path")
-    )
-    paths = [p.get_attribute("d") for p in loop.locator("path.react-flow__edge-path").all()]
+    paths = [p.get_attribute("d") for p in edges.locator("path.react-flow__edge-path").all()]
     viewport = editor.locator(".react-flow__viewport").first.bounding_box()
     transform = editor.locator(".react-flow__viewport").first.get_attribute("style") or ""
     scale = float(m.group(1)) if (m := re.search(r"scale\(([\d.]+)\)", transform)) else 1.0
-    # the loop is the one wire whose both ends are at the ADD's height and that turns back left
+    # the loop is the one wire that ends left of where it starts
     loops = [c for c in map(corners, paths) if c[-1][0] < c[0][0]]
     assert len(loops) == 1, paths
     for x, y in loops[0]:
