@@ -459,3 +459,38 @@ def test_function_with_the_cr_as_first_argument_il30_il04():
     fct = "FUNCTION Fct : INT\nVAR_INPUT P1, P2, P3 : INT; END_VAR\nLD P1\nMUL P2\nDIV P3\nST Fct\nEND_FUNCTION\n"
     sim = scan(program("A, X, Result : INT;", "LD -8\nLIMIT A, 5\nST X\nLD 7\nFct 2, 4\nST Result", fct), A=-20)
     assert (sim.read("P.X"), sim.read("P.Result")) == (-8, 3)
+
+
+def test_il_bodies_use_the_declaration_sections_of_st_seed000_il04():
+    """Seed 000 IL-04 (Ex 4.1, 4.2): an IL FB with VAR_INPUT, VAR_IN_OUT, VAR_OUTPUT, VAR, VAR CONSTANT and
+    VAR_TEMP, called from an IL program through VAR_EXTERNAL: scan k adds 3 * 2 to g (10 + 6k) and counts k."""
+    source = """
+VAR_GLOBAL g : INT := 10; END_VAR
+FUNCTION_BLOCK Acc
+VAR_INPUT step : INT; END_VAR
+VAR_IN_OUT total : INT; END_VAR
+VAR_OUTPUT calls : INT; END_VAR
+VAR n : INT; END_VAR
+VAR CONSTANT k : INT := 2; END_VAR
+VAR_TEMP t : INT; END_VAR
+LD step
+MUL k
+ST t
+LD total
+ADD t
+ST total
+LD n
+ADD 1
+ST n
+ST calls
+END_FUNCTION_BLOCK
+PROGRAM P
+VAR_EXTERNAL g : INT; END_VAR
+VAR a : Acc; c : INT; END_VAR
+CAL a(step := 3, total := g, calls => c)
+END_PROGRAM
+"""
+    sim = Simulation(lower_ok(source))
+    for k in range(1, 4):
+        scan(sim)
+        assert (sim.read("g"), sim.read("P.c")) == (10 + 6 * k, k)
