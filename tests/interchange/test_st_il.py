@@ -77,7 +77,8 @@ IL_PROGRAMS = {
     "IL-08 program calls": "PROGRAM P\nVAR a, erg, erg2 : INT; END_VAR\n"
     "LD a\nST PRGexample2.in_var\nCAL PRGexample2\nLD PRGexample2.out_var\nST erg\n"
     "CAL PRGexample2(in_var := erg, out_var => erg2)\nEND_PROGRAM\n"
-    + "PROGRAM PRGexample2" + examples.FUB.split("PROGRAM PRGexample2")[1],
+    + "PROGRAM PRGexample2"
+    + examples.FUB.split("PROGRAM PRGexample2")[1],
 }
 
 
