@@ -20,7 +20,7 @@ from playwright.sync_api import expect
 
 from .conftest import ARTIFACTS
 from .steps import go_online, new_pou, new_project, settled_scan_count
-from .test_fbd_workflow import drag_to, drop_from_palette, handle, name_and_declare
+from .test_fbd_workflow import drag_to, drop_from_palette, handle, insert_block, name_and_declare
 
 pytestmark = pytest.mark.browser
 
@@ -56,11 +56,7 @@ def test_draw_reorder_and_run_a_cfc_chart(page, server):
     drop_from_palette(page, "Input", canvas, 260, 160)
     name_and_declare(page, "Input operand", "2", None)
     for call, x, y in (("ADD", 260, 30), ("MUL", 460, 160)):
-        drop_from_palette(page, "Block…", canvas, x, y)
-        picker = page.get_by_role("dialog", name="Insert block")
-        picker.get_by_label("Search functions and function blocks").press_sequentially(call)
-        picker.get_by_role("option", name=f"{call} ").first.wait_for()
-        page.keyboard.press("Enter")
+        insert_block(page, canvas, call, x, y)
     drop_from_palette(page, "Output", canvas, 480, 30)
     name_and_declare(page, "Output variable", "count", None)
     drop_from_palette(page, "Output", canvas, 680, 170)

@@ -14,9 +14,9 @@ import re
 import pytest
 
 from .conftest import ARTIFACTS
-from .steps import go_online, new_pou, new_project
+from .steps import go_online
 from .test_cfc_workflow import cycles
-from .test_fbd_workflow import drag_to, drop_from_palette, handle, name_and_declare
+from .test_fbd_workflow import drag_to, drop_from_palette, handle, insert_block, name_and_declare, new_fbd_network
 
 pytestmark = pytest.mark.browser
 
@@ -28,23 +28,14 @@ def corners(path: str) -> list[tuple[float, float]]:
 
 
 def test_draw_a_counter_loop_and_see_the_value_the_block_read(page, server):
-    new_project(page, server, "loop")
-    new_pou(page, "Main", language="fbd")
-    editor = page.get_by_role("application", name="Function block diagram editor")
-    editor.get_by_role("button", name="Add network").click()
-    canvas = editor.locator(".fbd-network .react-flow__pane").first
-    canvas.wait_for()
+    editor, canvas = new_fbd_network(page, server, "loop")
 
     drop_from_palette(page, "Input", canvas, 60, 110)
     name_and_declare(page, "Input operand", "1", None)
     drop_from_palette(page, "Input", canvas, 300, 150)
     name_and_declare(page, "Input operand", "2", None)
     for call, x, y in (("ADD", 200, 60), ("MUL", 440, 60)):
-        drop_from_palette(page, "Block…", canvas, x, y)
-        picker = page.get_by_role("dialog", name="Insert block")
-        picker.get_by_label("Search functions and function blocks").press_sequentially(call)
-        picker.get_by_role("option", name=f"{call} ").first.wait_for()
-        page.keyboard.press("Enter")
+        insert_block(page, canvas, call, x, y)
     drop_from_palette(page, "Output", canvas, 660, 70)
     name_and_declare(page, "Output variable", "r", "INT")
     for src, dst in (
