@@ -54,6 +54,9 @@ describe("online FBD", () => {
     };
     const view = fbdOnlineView(monitor, binding);
     expect([view.pins.add!["in:IN1"]!.text, view.pins.add!["out:OUT"]!.text]).toEqual(["3", "4"]);
+    // the read value is a pin's, not a sign the block ran: with its output not executed (EN FALSE) it is dimmed
+    const skipped = { ...monitor, power: { [powerKey("MAIN", "add.OUT")]: null, [powerKey("MAIN", "add.IN1")]: 3 } };
+    expect(executed(fbdOnlineView(skipped, binding), "add")).toBe(false);
     // an input the engine records no read value for shows its producer's value
     const plain = { ...monitor, power: { [powerKey("MAIN", "add.OUT")]: 4 } };
     expect(fbdOnlineView(plain, binding).pins.add!["in:IN1"]!.text).toBe("4");

@@ -171,11 +171,18 @@ export interface FbdOnlineView {
 }
 
 export function fbdOnlineView(monitor: MonitorState, binding: FbdBinding, prepared: Prepared = {}): FbdOnlineView {
+  // what a block read over a feedback wire is a pin value only: it is read before the block's EN is looked at,
+  // so it must not make a block that EN skipped look executed
+  const reads = new Set(
+    [...binding.pins.values()].flatMap((pins) =>
+      pins.flatMap((p) => (p.source && "read" in p.source && p.source.read ? [p.source.read] : [])),
+    ),
+  );
   const probes: Record<string, PowerState> = {};
   for (const { pou_instance, ids } of binding.elements) {
     for (const id of ids ?? []) {
       const state = monitor.power[powerKey(pou_instance, id)];
-      if (state !== undefined) probes[id] = state;
+      if (state !== undefined && !reads.has(id)) probes[id] = state;
     }
   }
   return { probes, ...diagramValues(monitor, binding, prepared) };
