@@ -168,7 +168,7 @@ describe("app shell", () => {
     fireEvent.click(screen.getByRole("button", { name: "Toggle breakpoint on network 3" }));
     fireEvent.click(screen.getByRole("tab", { name: "Breakpoints (1)" }));
     // the panel is loaded when first shown (issue 22 item 8)
-    expect((await screen.findByRole("table", { name: "Breakpoints" })).textContent).toContain(
+    expect((await screen.findByRole("table", { name: "Breakpoints" }, { timeout: 5000 })).textContent).toContain(
       "Main network 3 Count rising edges of Start",
     );
     expect(JSON.parse(localStorage.getItem("ladderlab:breakpoints:plant")!).breakpoints).toEqual([
