@@ -233,15 +233,20 @@ def _literal(node: ast.Expr, ctx: PouContext) -> Const:
 # ---------------------------------------------------------------- variables
 
 
-def _program_instance(node: ast.Expr, program: PouInfo, ctx: PouContext) -> Var:
-    """``Prog.x`` read from another POU: the instance named after the program (the engine keeps program instances
-    among the globals); a configuration that names its instances otherwise is read through those names."""
+def program_instance(node: ast.Expr, program: PouInfo, ctx: PouContext, use: str = "read") -> Var:
+    """``Prog.x`` read or ``Prog(...)`` called from another POU: the instance named after the program (the engine
+    keeps program instances among the globals, CODESYS's one instance of a program); a configuration that names
+    its instances otherwise is read through those names."""
     configuration = ctx.checked.configuration
     name = program.name.upper()
     if configuration is not None and name not in configuration.instances:
         names = [i.name for i in configuration.instances.values() if i.pou is program]
         where = f"its instance{'s' if len(names) > 1 else ''} {', '.join(names)}" if names else "no instance"
-        raise LoweringError(f"the program {program.name} runs as {where}: read the members through an instance", node)
+        raise LoweringError(
+            f"the program {program.name} runs as {where}: other POUs {use} the instance named like the program "
+            f"(PROGRAM {program.name} : {program.name} in the configuration)",
+            node,
+        )
     return Var("global", name, FbInstance(name))
 
 
@@ -263,7 +268,7 @@ def _access(node: ast.Expr, ctx: PouContext) -> Var:
             ctx.reads += 1
             return ctx.var_for(ref)
         if isinstance(ref, PouInfo) and ref.kind == "PROGRAM":  # another program's outputs or SFC steps (ST-60)
-            return _program_instance(node, ref, ctx)
+            return program_instance(node, ref, ctx)
         if isinstance(ref, PouInfo):
             return ctx.result_var()
         if isinstance(node, ast.DirectAddr):  # used without a declaration: its size's default type (ST-13)
@@ -482,15 +487,6 @@ def _function(
 # ---------------------------------------------------------------- calls
 
 
-def refuse_unsupported_call(node: ast.Call) -> None:
-    """Program calls cannot be lowered yet: raise the located error."""
-    ref = node.ref
-    if isinstance(ref, PouInfo) and ref.kind == "PROGRAM":
-        raise LoweringError(
-            f"calling the program {ref.name} from ST is not supported by the engine yet: run it from a task", node
-        )
-
-
 def _call(node: ast.Call, ctx: PouContext) -> Expr:
     if node.ref is None and isinstance(node.callee, ast.Name) and node.callee.name.upper() == "SIZEOF":
         return _sizeof(node, ctx, ctx.ir_type(node.ty))
@@ -499,7 +495,6 @@ def _call(node: ast.Call, ctx: PouContext) -> Expr:
     if node.ref is None and isinstance(node.callee, ast.Name) and node.callee.name.upper() == "__ISVALIDREF":
         reference = lower_access(node.args[0].value, ctx)
         return Binary("NE", reference, Const(None, reference.type), BOOL)
-    refuse_unsupported_call(node)
     ref = node.ref
     en, eno = _en_eno(node)
     before = (ctx.reads, ctx.calls)

@@ -28,8 +28,8 @@ from .lower_expr import (
     lower_expr,
     lower_input,
     lower_to,
+    program_instance,
     property_call,
-    refuse_unsupported_call,
     std_call,
     user_call,
     value_type,
@@ -145,12 +145,13 @@ def lower_call_statement(statement: ast.CallStmt, ctx: PouContext) -> list[Stmt]
         raise LoweringError(None)
     if isinstance(call.ref, Symbol):
         return lower_fb_call(call, ctx, ctx.origin(statement))
+    if isinstance(call.ref, PouInfo) and call.ref.kind == "PROGRAM":
+        return _program_call(call, call.ref, ctx, ctx.origin(statement))
     if is_self(call.callee):  # SUPER^(): the base's body on this instance (st/calls.py)
         statements = lower_fb_call(call, ctx, ctx.origin(statement))
         statements[0].body = call.callee.ty.name.upper()
         return statements
     if not _is_function(call.ref):
-        refuse_unsupported_call(call)
         raise LoweringError(None)
     copies: list[Stmt] = []
     lowered = _function_call(call, ctx, copies)
@@ -193,8 +194,20 @@ def lower_fb_call(call: ast.Call, ctx: PouContext, origin: Origin) -> list[Stmt]
     fb = call.callee.ty
     if not isinstance(fb, t.FbType):
         raise LoweringError(None)
-    instance = lower_access(call.callee, ctx)
-    pins = fb_pins(fb, ctx)
+    return _instance_call(call, lower_access(call.callee, ctx), fb_pins(fb, ctx), ctx, origin)
+
+
+def _program_call(call: ast.Call, program: PouInfo, ctx: PouContext, origin: Origin) -> list[Stmt]:
+    """``Prog(in := x, out => y)`` from another program (IL-08, seed 003 "PRGexample2"): the program's one
+    instance runs now, like an FB instance; a task that runs it too runs it again (docs/st.md)."""
+    instance = program_instance(call.callee, program, ctx, "call")
+    return _instance_call(call, instance, _pou_pins(program, ctx), ctx, origin)
+
+
+def _instance_call(
+    call: ast.Call, instance: Var, pins: dict[str, tuple[IrType, str]], ctx: PouContext, origin: Origin
+) -> list[Stmt]:
+    """The call of an FB or program ``instance`` with ``pins`` (fb_pins): inputs, ``=>`` outputs, EN/ENO."""
     order = [name for name, (_, kind) in pins.items() if kind != "VAR_OUTPUT"]
     inputs: list[tuple[str, Expr]] = []
     outputs: list[tuple[str, Var]] = []
@@ -244,10 +257,14 @@ def _fb_pins(fb: t.FbType, ctx: PouContext) -> dict[str, tuple[IrType, str]]:
             **{p.name: (ctx.ir_type(t.elementary(p.type)), "VAR_INPUT") for p in fb.std.inputs},
             **{p.name: (ctx.ir_type(t.elementary(p.type)), "VAR_OUTPUT") for p in fb.std.outputs},
         }
-    callee = ctx.types_for(fb.pou.name)
+    return _pou_pins(fb.pou, ctx)
+
+
+def _pou_pins(pou: PouInfo, ctx: PouContext) -> dict[str, tuple[IrType, str]]:
+    callee = ctx.types_for(pou.name)
     return {
         s.name.upper(): (callee.type_of(s.type, s.type_spec), s.var_class)
-        for s in fb.pou.parameters("VAR_INPUT", "VAR_IN_OUT", "VAR_OUTPUT")
+        for s in pou.parameters("VAR_INPUT", "VAR_IN_OUT", "VAR_OUTPUT")
     }
 
 

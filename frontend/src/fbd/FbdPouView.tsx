@@ -64,6 +64,7 @@ export function FbdPouView({
       onDeclareVariable={declare}
       debug={debug}
       onVisibleChange={live.onVisibleChange}
+      onFeedbackChange={live.onFeedbackChange}
       focus={focus}
       chart={pou.language === "cfc"}
     />

@@ -335,6 +335,7 @@ function FbdPart(
       online={live.online}
       onlineActions={live.actions}
       onVisibleChange={live.onVisibleChange}
+      onFeedbackChange={live.onFeedbackChange}
       debug={{
         networks: props.breakpoints,
         elements: new Set(),

@@ -4,6 +4,9 @@
 import { useEffect, useState, type FormEvent, type ReactNode } from "react";
 import type { Reference } from "../generated/api";
 import type { Pou } from "../generated/api";
+import { cfcToFbd, fbdToCfc } from "../fbd/convert";
+import { networksOf, nodesOf, type FbdBody, type FbdNetwork } from "../fbd/model";
+import { fetchChartOrder, fetchOrder } from "../fbd/useOrder";
 import { onlineStore } from "../online/store";
 import {
   changedParts,
@@ -18,7 +21,7 @@ import {
 import { emptyDeclarations, workspaceStore } from "../store/project";
 import { FormError } from "../ui/FormError";
 
-type Action = "rename" | "duplicate" | "kind" | "delete";
+type Action = "rename" | "duplicate" | "kind" | "convert" | "delete";
 
 /** What each kind of POU is, for the New POU form and the kind dialog. */
 export const KIND_HELP: Record<Pou["kind"], { label: string; help: string }> = {
@@ -223,6 +226,55 @@ function KindDialog({ pou, onClose }: { pou: Pou; onClose(): void }) {
   );
 }
 
+/** A stacked network's height on the chart: below its lowest node (positions are layout hints, px). */
+const heightOf = (network: FbdNetwork) => Math.max(0, ...nodesOf(network).map((n) => n.pos?.y ?? 0)) + 120;
+
+/** FBD <-> CFC (fbd/convert.ts), with the execution orders the backend reports for the body. */
+async function converted(pou: Pou) {
+  const body = pou.body as FbdBody;
+  if (pou.language === "fbd") {
+    const pairs = await Promise.all(
+      networksOf(body).map(async (n): Promise<[string, readonly string[]]> => [n.id, (await fetchOrder(n)).order]),
+    );
+    return fbdToCfc(body, new Map(pairs), heightOf);
+  }
+  const chart = networksOf(body)[0] ?? { id: "chart" };
+  const [numbers, flow] = await Promise.all([fetchChartOrder(chart), fetchOrder(chart)]);
+  return cfcToFbd(body, numbers.order, flow.order);
+}
+
+function ConvertDialog({ pou, onClose }: { pou: Pou; onClose(): void }) {
+  const target = pou.language === "fbd" ? "CFC" : "FBD";
+  const [error, setError] = useState<string | null>(null);
+  const submit = async (e: FormEvent) => {
+    e.preventDefault();
+    try {
+      const result = await converted(pou);
+      if (!result.ok) return setError(result.error);
+      const ws = workspaceStore.getState();
+      if (!ws.project) return;
+      const next: Pou = { ...pou, language: pou.language === "fbd" ? "cfc" : "fbd", body: result.body };
+      const pous = (ws.project.pous ?? []).map((p) => (p.name === pou.name ? next : p));
+      ws.applyOperation(`convert ${pou.name} to ${target}`, { ...ws.project, pous }, [pou.name]);
+      onClose();
+    } catch (err) {
+      setError(message(err));
+    }
+  };
+  return (
+    <Dialog title={`Convert ${pou.name} to ${target}`} onClose={onClose}>
+      <form onSubmit={(e) => void submit(e)}>
+        <p className="kind-help">
+          {target === "CFC"
+            ? "The networks go onto one chart, top to bottom; each element's number is the place FBD ran it in, so the chart computes the same."
+            : "The chart becomes one network. This works only when its numbers are the data-flow order (FBD cannot run an element before the block feeding it)."}
+        </p>
+        <DialogFooter error={error} submit={`Convert to ${target}`} onClose={onClose} />
+      </form>
+    </Dialog>
+  );
+}
+
 /** The kind select with a sentence saying what the chosen kind is. */
 export function KindPicker({ kind, onChange }: { kind: Pou["kind"]; onChange(kind: Pou["kind"]): void }) {
   return (
@@ -322,6 +374,9 @@ export function PouActions({ pou }: { pou: Pou }) {
       label: "Change kind…",
       disabledBecause: empty ? undefined : "Only an empty POU (no variables, no body) can change its kind.",
     },
+    ...(pou.language === "fbd" || pou.language === "cfc"
+      ? [{ action: "convert" as const, label: pou.language === "fbd" ? "Convert to CFC…" : "Convert to FBD…" }]
+      : []),
     { action: "delete", label: "Delete…" },
   ];
   return (
@@ -335,6 +390,8 @@ export function PouActions({ pou }: { pou: Pou }) {
           <DuplicateDialog pou={pou} onClose={close} />
         ) : action === "kind" ? (
           <KindDialog pou={pou} onClose={close} />
+        ) : action === "convert" ? (
+          <ConvertDialog pou={pou} onClose={close} />
         ) : (
           <DeleteDialog pou={pou} onClose={close} />
         )
