@@ -61,6 +61,7 @@ from .nodes import (
     Var,
     While,
 )
+from .sfc_analysis import Analysis, table_problem
 from .types import BOOL, Elementary, FbInstance, IrType
 
 TIME = Elementary("TIME")
@@ -79,7 +80,9 @@ BOOL_FLAGS = (
     "SFCTIP",
     "SFCTIPMODE",
 )
-STRING_FLAGS = ("SFCERRORSTEP", "SFCERRORPOU", "SFCCURRENTSTEP")
+STRING_FLAGS = ("SFCERRORSTEP", "SFCERRORPOU", "SFCCURRENTSTEP", "SFCERRORANALYZATION")
+#: ARRAY [0..n] OF ExpressionResult: the parts of the conditions that held a timed-out step (ir/sfc_analysis.py).
+TABLE_FLAG = "SFCERRORANALYZATIONTABLE"
 
 #: The inputs of ACTION_CONTROL by qualifier (S is S0 there).
 PIN = {
@@ -179,6 +182,7 @@ class SfcLowering:
         self.steps: dict[str, StepSlots] = {}
         self.controls: dict[str, Control] = {}
         self.flags: dict[str, Var] = {}
+        self.analysis: Analysis | None = None
         self.jumps_to_end = False
         self.refused = False
         self.graph_made: ChartGraph | None = None
@@ -297,6 +301,16 @@ class SfcLowering:
                 )
                 continue
             self.flags[name] = self.ctx.var_for(symbol)
+        symbol = self.info.symbols.get(TABLE_FLAG) or self.ctx.checked.globals.get(TABLE_FLAG)
+        if symbol is not None and symbol.implicit is None:
+            problem = table_problem(symbol)
+            if problem is not None:
+                self.report("SFC-FLAG", problem, file=f"{self.pou.name}/declarations" if symbol.pou else "globals")
+            else:
+                self.flags[TABLE_FLAG] = self.ctx.var_for(symbol)
+        table, text = self.flag(TABLE_FLAG), self.flag("SFCERRORANALYZATION")
+        if table is not None or text is not None:
+            self.analysis = Analysis(self.ctx, self.info, self.ops, table, text)
 
     def associate(self, graph: ChartGraph) -> None:
         for action in sorted(self.body.actions, key=lambda a: a.name.upper()):
@@ -412,6 +426,8 @@ class SfcLowering:
         for name in ("SFCERRORSTEP", "SFCERRORPOU"):
             if (flag := self.flag(name)) is not None:
                 out.append(Assign(flag, Const("", flag.type), origin))
+        if self.analysis is not None:
+            out += self.analysis.clear(origin)
         return out
 
     def reset_chart(self, graph: ChartGraph) -> list[Stmt]:
@@ -480,6 +496,10 @@ class SfcLowering:
             record.append(Assign(where, Const(slots.step.name, where.type), origin))
         if (pou := self.flag("SFCERRORPOU")) is not None:
             record.append(Assign(pou, Const(self.pou.name, pou.type), origin))
+        if self.analysis is not None and self.graph_made is not None:
+            key = slots.step.name.upper()
+            leaving = [t.transition for t in self.graph_made.evaluation_order() if key in t.sources]
+            record += self.analysis.record([(t.condition, t.id) for t in leaving], origin)
         return If([(_and(*terms), record)], [], origin)
 
     # ------------------------------------------------------------ 3. action control
