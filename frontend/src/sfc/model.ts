@@ -113,4 +113,14 @@ export function elementText(body: SfcBody, id: string): string | null {
 }
 
 /** The id of the element (or association) a probe or breakpoint names: "t3.COND" is transition t3's condition. */
+/** The action or named transition a path names ("actions/Fill", as breakpoints and halts name them), with its
+ * language; null when the chart has no such part. */
+export function partAt(body: SfcBody, path: string): { body: unknown; language: string } | null {
+  const [kind, name] = path.split("/", 2);
+  const parts: readonly { name: string; language?: string | null; body?: unknown }[] =
+    (kind === "actions" ? body.actions : kind === "transitions" ? body.transitions : null) ?? [];
+  const part = parts.find((p) => p.name.toUpperCase() === (name ?? "").toUpperCase());
+  return part ? { body: part.body, language: part.language ?? "st" } : null;
+}
+
 export const conditionProbe = (transition: string): string => `${transition}.COND`;
