@@ -90,3 +90,16 @@ def test_the_error_analysis_flags_export_and_run_alike():
     assert f"IF NOT ({CONDITION}) AND NOT (b OR NOT c) THEN" in text
     assert "SFCErrorAnalyzationTable[sfc_analysis_n + 1].address := '%IX0.1';" in text
     same_traces(proj, scans=300, seed=5)
+
+
+def test_an_action_written_in_sfc_is_refused_by_name():
+    from .test_sfc_actions import chart
+
+    result = export_pou_st(chart(), "Main")
+    assert result.text == ""
+    assert (
+        "EXPORT-UNSUPPORTED",
+        "Main/actions/Seq",
+        "the action Seq is written in SFC; the ST export writes one chart per POU: move its chart into a "
+        "function block written in SFC and call that in an action",
+    ) in [(d.code, d.file, d.message) for d in result.diagnostics]

@@ -28,7 +28,7 @@ from ...ir.diagram_checks import canonical_label
 from ...ir.lower_sfc import ACTIVE_PASS, EXIT_PASS, FINAL_PASS, PIN, TABLE_FLAG, SfcLowering
 from ...ir.sfc_analysis import BOOL_FIELDS, STRING_FIELDS, Part, condition_parts
 from ...model import Diagnostic, Pou, Project, fbd, ld
-from ...model.sfc import SfcBody
+from ...model.sfc import SfcBody, SfcChart
 from ...st import ast
 from ...st import types as st_types
 from ...st.nesting import nodes
@@ -61,6 +61,19 @@ def st_sfc_pou(project: Project, pou: Pou, checked: CheckResult, diagnostics: li
     blocks = lowering.blocks()
     if any(d.severity == "error" for d in diagnostics):
         return SfcExport(None, diagnostics)
+    nested = [
+        Diagnostic(
+            code="EXPORT-UNSUPPORTED",
+            message=f"the action {action.name} is written in SFC; the ST export writes one chart per POU: "
+            "move its chart into a function block written in SFC and call that in an action",
+            pou=pou.name,
+            file=action_file(pou.name, action.name),
+        )
+        for action in pou.body.actions
+        if isinstance(action.body, SfcChart)
+    ]
+    if nested:
+        return SfcExport(None, diagnostics + nested)
     writer = _Writer(pou, checked, lowering, ir.Pou(ctx.name, "program", ctx.slots, blocks))
     text = writer.body()
     if writer.problems:
