@@ -44,9 +44,32 @@ export function SfcPouView({
     () => checked.filter((d) => (d.pou ?? "").toUpperCase() === name.toUpperCase()),
     [checked, name],
   );
+
+  // The chart shown: the POU's, or the chart of an action written in SFC (edited as a body of its own whose
+  // actions and named transitions are the POU's; its edits are written back into the action).
+  const sfcAction =
+    part?.kind === "action" ? body.actions?.find((a) => a.name === part.name && a.language === "sfc") : undefined;
+  const [innerHistory, setInnerHistory] = useState<History<SfcBody> | null>(null);
+  const chartHistory = useMemo(() => {
+    if (!sfcAction) return history;
+    if (innerHistory && innerHistory.present.chart === sfcAction.body) return innerHistory;
+    return historyOf<SfcBody>({ ...body, chart: sfcAction.body as SfcBody["chart"] });
+  }, [sfcAction, innerHistory, history, body]);
+  const shown = chartHistory.present;
+  const onChartChange = (h: History<SfcBody>) => {
+    if (!sfcAction) return setHistory(name, h);
+    setInnerHistory(h);
+    setHistory(name, record(history, withActionChart(body, h.present, sfcAction.name)));
+  };
+  const chartFile = sfcAction ? `${name}/actions/${sfcAction.name}` : `${name}/chart`;
   const chartDiagnostics = useMemo(
-    () => diagnostics.filter((d) => !d.file || d.file.toUpperCase() === `${name}/chart`.toUpperCase()),
-    [diagnostics, name],
+    () =>
+      diagnostics.filter((d) =>
+        sfcAction
+          ? d.file?.toUpperCase() === chartFile.toUpperCase()
+          : !d.file || d.file.toUpperCase() === chartFile.toUpperCase(),
+      ),
+    [diagnostics, sfcAction, chartFile],
   );
   const variables = useMemo(
     () => (table?.symbols ?? []).filter((s) => s.type.toUpperCase() === "BOOL").map((s) => s.name),
@@ -59,7 +82,7 @@ export function SfcPouView({
   const instance = useShownInstance(pou);
   const live = phase !== "offline";
   const key = `sfc:${name}`;
-  const binding = useMemo(() => (instance ? bindSfc(body, instance) : null), [body, instance]);
+  const binding = useMemo(() => (instance ? bindSfc(shown, instance) : null), [shown, instance]);
   useEffect(() => {
     onlineStore
       .getState()
@@ -121,7 +144,7 @@ export function SfcPouView({
     </button>
   ) : null;
 
-  if (part) {
+  if (part && !sfcAction) {
     const item =
       part.kind === "action"
         ? body.actions?.find((a) => a.name === part.name)
@@ -160,11 +183,11 @@ export function SfcPouView({
       </div>
     );
   }
-  return (
+  const editor = (
     <SfcEditor
-      key={name}
-      history={history}
-      onHistoryChange={(h) => setHistory(name, h)}
+      key={chartFile}
+      history={chartHistory}
+      onHistoryChange={onChartChange}
       variables={variables}
       diagnostics={chartDiagnostics}
       online={online}
@@ -176,6 +199,31 @@ export function SfcPouView({
       onlineActions={flagCommands}
     />
   );
+  if (!sfcAction) return editor;
+  return (
+    <div className="sfc-pou">
+      <div className="sfc-part-bar" role="navigation" aria-label="SFC parts">
+        <button type="button" onClick={() => setPart(null)}>
+          Chart
+        </button>
+        <span>
+          Action <strong>{sfcAction.name}</strong> (SFC)
+        </span>
+      </div>
+      <div className="sfc-part">{editor}</div>
+    </div>
+  );
+}
+
+/** The POU's body `outer` after an edit of an action's chart: `edited` is the action's chart as a body of its own
+ * (its actions and named transitions are the POU's, perhaps edited too). */
+function withActionChart(outer: SfcBody, edited: SfcBody, action: string): SfcBody {
+  const chart = edited.chart ?? { elements: [] };
+  return {
+    ...outer,
+    actions: (edited.actions ?? []).map((a) => (a.name === action ? { ...a, body: chart } : a)),
+    transitions: edited.transitions,
+  };
 }
 
 function PartEditor(props: {

@@ -66,20 +66,35 @@ export function locate(body: SfcBody, id: string): Place | undefined {
 export const steps = (body: SfcBody): SfcStep[] =>
   [...walk(chartOf(body))].map((p) => p.element).filter((e): e is SfcStep => kindOf(e) === "step");
 
-/** Every id of the body (elements and associations): new ones must differ. */
+/** The charts of actions written in SFC (docs/sfc.md "Actions written in SFC"). */
+export const actionCharts = (body: SfcBody): Sequence[] =>
+  (body.actions ?? []).flatMap((a) =>
+    a.language === "sfc" && a.body && typeof a.body === "object" && "elements" in a.body
+      ? [(a.body.elements ?? []) as Sequence]
+      : [],
+  );
+
+/** Every chart of the POU: its own, then its SFC actions'. Steps and element ids are unique across all of them. */
+const allCharts = (body: SfcBody): Sequence[] => [chartOf(body), ...actionCharts(body)];
+
+/** Every id of the POU's charts (elements and associations): new ones must differ. */
 export function usedIds(body: SfcBody): Set<string> {
   const ids = new Set<string>();
-  for (const { element } of walk(chartOf(body))) {
-    ids.add(element.id);
-    if (kindOf(element) === "step") for (const a of (element as SfcStep).actions ?? []) ids.add(a.id);
-  }
+  for (const chart of allCharts(body))
+    for (const { element } of walk(chart)) {
+      ids.add(element.id);
+      if (kindOf(element) === "step") for (const a of (element as SfcStep).actions ?? []) ids.add(a.id);
+    }
   return ids;
 }
 
-/** Names taken by steps, actions and named transitions (upper case): a new one must differ. */
+/** Names taken by steps (of every chart), actions and named transitions (upper case): a new one must differ. */
 export function usedNames(body: SfcBody): Set<string> {
+  const stepNames = allCharts(body).flatMap((chart) =>
+    [...walk(chart)].flatMap(({ element }) => (kindOf(element) === "step" ? [(element as SfcStep).name] : [])),
+  );
   return new Set([
-    ...steps(body).map((s) => s.name.toUpperCase()),
+    ...stepNames.map((name) => name.toUpperCase()),
     ...(body.actions ?? []).map((a) => a.name.toUpperCase()),
     ...(body.transitions ?? []).map((t) => t.name.toUpperCase()),
   ]);
@@ -105,7 +120,9 @@ export function freshId(prefix: string, used: Set<string>): string {
 
 /** A step or transition in the user's words ("step Rinse", "transition Rinse.T >= T#2s"); null for other ids. */
 export function elementText(body: SfcBody, id: string): string | null {
-  const element = locate(body, id)?.element;
+  const element = allCharts(body)
+    .map((chart) => locate({ chart: { elements: chart } }, id)?.element)
+    .find(Boolean);
   if (!element) return null;
   if (kindOf(element) === "step") return `step ${(element as SfcStep).name}`;
   if (kindOf(element) === "transition") return `transition ${(element as SfcTransition).condition}`;

@@ -133,3 +133,24 @@ describe("SFC layout", () => {
     expect(neighbour(layout, left!, "up")).toBe(chartOf(body)[1]!.id);
   });
 });
+
+describe("actions written in SFC (issue 24 item 1)", () => {
+  it("a new SFC action gets a chart of its own whose step and ids are unique across the POU's charts", () => {
+    let body = chart(); // Init, t, Step1 with ids s1, t1, s2 ...
+    body = ok(ops.addAction(body, "Seq", "sfc")).body;
+    const seq = body.actions!.find((a) => a.name === "Seq")!;
+    expect(seq.language).toBe("sfc");
+    const inner = (seq.body as { elements: Sequence }).elements;
+    expect(shape(inner)).toEqual(["Seq_Init1", "transition", "jump"]);
+    const outerIds = new Set([...walk(chartOf(body))].map((p) => p.element.id));
+    expect(inner.map((e) => e.id).filter((id) => outerIds.has(id))).toEqual([]);
+    // a second one does not reuse the first one's ids or step name
+    body = ok(ops.addAction(body, "Seq2", "sfc")).body;
+    const second = (body.actions!.find((a) => a.name === "Seq2")!.body as { elements: Sequence }).elements;
+    expect(second.map((e) => e.id).filter((id) => inner.some((e) => e.id === id))).toEqual([]);
+    // a step added to the POU's chart gets an id no action chart uses
+    const step = ok(ops.insertBelow(body, chartOf(body)[0]!.id));
+    const added = [...walk(chartOf(step.body))].map((p) => p.element.id).filter((id) => !outerIds.has(id));
+    expect(added.filter((id) => [...inner, ...second].some((e) => e.id === id))).toEqual([]);
+  });
+});
