@@ -23,7 +23,7 @@ from ladderlab.model import Pou, Project
 from .conftest import ARTIFACTS
 from .steps import go_online, open_pou, panel_tab, scan_count, store_project, watch
 from .test_fbd_workflow import drag_to, drop_from_palette, handle, name_and_declare
-from .test_sfc_workflow import item, saved_pou, step_named, write
+from .test_sfc_workflow import chart_kinds, commit_field, item, saved_pou, step_named, write
 
 pytestmark = pytest.mark.browser
 
@@ -232,3 +232,73 @@ def test_breakpoints_on_an_st_action_line_and_an_ld_action_network_halt_and_step
     panel_tab(page, "Watch list")
     expect(watch(page, "Main.on")).to_have_text("TRUE")  # the NC contact on FALSE set it in network 1
     expect(watch(page, "Main.shown")).to_have_text("FALSE")  # network 2 has not run yet
+
+
+def test_an_sfc_action_is_drawn_and_its_chart_runs_online_while_the_action_is_active(page, server):
+    """Issue 24 item 1: an action written in SFC, made and edited in the browser, highlighted online."""
+    chart = [
+        {"type": "step", "id": "s1", "name": "M0"},
+        {"type": "transition", "id": "t1", "condition": "go"},
+        {"type": "step", "id": "s2", "name": "M1"},
+        {"type": "transition", "id": "t2", "condition": "FALSE"},
+        {"type": "jump", "id": "j1", "target": "M0"},
+    ]
+    declarations = "VAR\n    go, next : BOOL;\n    a : INT;\nEND_VAR"
+    actions = [{"name": "IncA", "language": "st", "body": "a := a + 1;"}]
+    store_project(server, sfc_project("sfcact", declarations, chart, actions))
+    page.goto(server)
+    open_pou(page, "sfcact", "Main")
+    editor = chart_editor(page)
+
+    # A new action Seq in SFC, associated with M0 (N); opened, it is a chart of its own with its initial step.
+    editor.get_by_label("New action name").fill("Seq")
+    editor.get_by_label("New action language").select_option("sfc")
+    editor.get_by_role("button", name="Add action").click()
+    step_named(editor, "M0").locator("rect.sfc-box").click(force=True)
+    editor.press("q")
+    picker = editor.get_by_role("form", name="New action association")
+    picker.get_by_label("Action or BOOL variable").fill("Seq")
+    picker.get_by_role("button", name="Add").click()
+    open_action(page, editor, "Seq", "SFC")
+    inner = chart_editor(page)
+    assert chart_kinds(inner) == ["Seq_Init1", ":FALSE", "->Seq_Init1"]
+
+    # Its transition waits for next; a step Second below it; IncA associated with the initial step.
+    inner.locator("g.sfc-transition > g").first.click()
+    inner.press("Enter")
+    condition = inner.get_by_label("Condition", exact=True)
+    condition.fill("next")
+    condition.press("Enter")
+    inner.get_by_role("button", name="Step + transition").click()
+    commit_field(inner, "Step name", "Second")
+    step_named(inner, "Seq_Init1").locator("rect.sfc-box").click(force=True)
+    inner.press("q")
+    picker = inner.get_by_role("form", name="New action association")
+    picker.get_by_label("Action or BOOL variable").fill("IncA")
+    picker.get_by_role("button", name="Add").click()
+    assert chart_kinds(inner) == ["Seq_Init1", ":next", "Second", ":FALSE", "->Seq_Init1"]
+
+    # Online: M0 runs Seq, whose initial step is active (blue) and runs IncA; next moves the inner chart.
+    count = watch(page, "Main.a")
+    go_online(page)
+    main = saved_pou(server, "sfcact", "Main")
+    seq = next(a for a in main["body"]["actions"] if a["name"] == "Seq")
+    assert seq["language"] == "sfc"
+    assert [e.get("name") or e.get("condition") or e["target"] for e in seq["body"]["elements"]] == [
+        "Seq_Init1",
+        "next",
+        "Second",
+        "FALSE",
+        "Seq_Init1",
+    ]
+    active = re.compile(r"\bsfc-active\b")
+    expect(step_named(inner, "Seq_Init1")).to_have_class(active)
+    expect(step_named(inner, "Second")).not_to_have_class(active)
+    expect(count).to_have_text(re.compile(r"^[1-9]\d*$"))
+    page.screenshot(path=str(ARTIFACTS / "sfc-action-sfc-online.png"))
+    write(page, "Main.next", "TRUE")
+    expect(step_named(inner, "Second")).to_have_class(active)
+    expect(step_named(inner, "Seq_Init1")).not_to_have_class(active)
+    # the POU's chart: M0 active, its association with Seq active
+    editor = back_to_chart(page)
+    expect(step_named(editor, "M0")).to_have_class(active)

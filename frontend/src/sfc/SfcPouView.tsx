@@ -18,7 +18,7 @@ import { useFbdOnline } from "../fbd/useFbdOnline";
 import { useWorkspace } from "../project/store";
 import { StEditor } from "../st/StEditor";
 import { useStAssist } from "../st/useStAssist";
-import type { SfcBody } from "./model";
+import type { ActionChartBody, SfcBody } from "./model";
 import { bindSfc, sfcOnlineView } from "./online";
 import { setPartBody } from "./ops";
 import { SfcEditor, type SfcPart } from "./SfcEditor";
@@ -53,7 +53,8 @@ export function SfcPouView({
   const chartHistory = useMemo(() => {
     if (!sfcAction) return history;
     if (innerHistory && innerHistory.present.chart === sfcAction.body) return innerHistory;
-    return historyOf<SfcBody>({ ...body, chart: sfcAction.body as SfcBody["chart"] });
+    const inner: ActionChartBody = { ...body, chart: sfcAction.body as SfcBody["chart"], enclosing: body.chart };
+    return historyOf<SfcBody>(inner);
   }, [sfcAction, innerHistory, history, body]);
   const shown = chartHistory.present;
   const onChartChange = (h: History<SfcBody>) => {

@@ -74,8 +74,17 @@ export const actionCharts = (body: SfcBody): Sequence[] =>
       : [],
   );
 
-/** Every chart of the POU: its own, then its SFC actions'. Steps and element ids are unique across all of them. */
-const allCharts = (body: SfcBody): Sequence[] => [chartOf(body), ...actionCharts(body)];
+/** An action's chart edited as a body of its own: `enclosing` is the POU's chart, whose names and ids it must not
+ * reuse (never saved: the edit is written back into the action). */
+export type ActionChartBody = SfcBody & { enclosing?: SfcBody["chart"] };
+
+/** Every chart of the POU: its own (or the one being edited and the POU's), then its SFC actions'. Steps and
+ * element ids are unique across all of them. */
+const allCharts = (body: ActionChartBody): Sequence[] => [
+  chartOf(body),
+  ...(body.enclosing ? [body.enclosing.elements ?? []] : []),
+  ...actionCharts(body),
+];
 
 /** Every id of the POU's charts (elements and associations): new ones must differ. */
 export function usedIds(body: SfcBody): Set<string> {

@@ -152,5 +152,11 @@ describe("actions written in SFC (issue 24 item 1)", () => {
     const step = ok(ops.insertBelow(body, chartOf(body)[0]!.id));
     const added = [...walk(chartOf(step.body))].map((p) => p.element.id).filter((id) => !outerIds.has(id));
     expect(added.filter((id) => [...inner, ...second].some((e) => e.id === id))).toEqual([]);
+    // edited as a body of its own, an action's chart keeps off the POU's chart (its `enclosing`)
+    const edited = { ...body, chart: { elements: inner }, enclosing: body.chart };
+    const grown = ok(ops.insertBelow(edited, inner[1]!.id)).body;
+    const fresh = [...walk(chartOf(grown))].map((p) => p.element.id).filter((id) => !inner.some((e) => e.id === id));
+    expect(fresh).toHaveLength(2);
+    expect(fresh.filter((id) => outerIds.has(id))).toEqual([]);
   });
 });
