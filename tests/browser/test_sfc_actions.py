@@ -51,6 +51,25 @@ def open_action(page, editor, name: str, language: str) -> None:
     page.get_by_role("navigation", name="SFC parts").get_by_text(f"Action {name} ({language})").wait_for()
 
 
+def add_action(page, editor, name: str, language: str, step: str) -> None:
+    """Adds the action ``name`` in ``language`` (the parts list) and associates it (N) with ``step`` (the picker)."""
+    editor.get_by_label("New action name").fill(name)
+    editor.get_by_label("New action language").select_option(language)
+    editor.get_by_role("button", name="Add action").click()
+    associate(editor, step, name)
+
+
+def associate(editor, step: str, name: str) -> None:
+    """Associates the action ``name`` (N) with ``step`` through the qualifier picker."""
+    step_named(editor, step).locator("rect.sfc-box").click(force=True)
+    editor.press("q")
+    picker = editor.get_by_role("form", name="New action association")
+    picker.get_by_label("Qualifier").select_option("N")
+    picker.get_by_label("Action or BOOL variable").fill(name)
+    picker.get_by_role("button", name="Add").click()
+    expect(step_named(editor, step).locator("g.sfc-association", has_text=name)).to_have_count(1)
+
+
 def back_to_chart(page):
     page.get_by_role("navigation", name="SFC parts").get_by_role("button", name="Chart").click()
     return chart_editor(page)
@@ -70,16 +89,7 @@ def test_an_fbd_action_is_drawn_and_counts_online_while_its_step_is_active(page,
     editor = chart_editor(page)
 
     # A new action in FBD, associated with Init (N) through the qualifier picker.
-    editor.get_by_label("New action name").fill("Count")
-    editor.get_by_label("New action language").select_option("fbd")
-    editor.get_by_role("button", name="Add action").click()
-    step_named(editor, "Init").locator("rect.sfc-box").click(force=True)
-    editor.press("q")
-    picker = editor.get_by_role("form", name="New action association")
-    picker.get_by_label("Qualifier").select_option("N")
-    picker.get_by_label("Action or BOOL variable").fill("Count")
-    picker.get_by_role("button", name="Add").click()
-    expect(step_named(editor, "Init").locator("g.sfc-association")).to_have_count(1)
+    add_action(page, editor, "Count", "fbd", "Init")
 
     # Opened, it is an FBD editor: n := n + 1 drawn from the palette and wired with the mouse.
     open_action(page, editor, "Count", "FBD")
@@ -251,14 +261,7 @@ def test_an_sfc_action_is_drawn_and_its_chart_runs_online_while_the_action_is_ac
     editor = chart_editor(page)
 
     # A new action Seq in SFC, associated with M0 (N); opened, it is a chart of its own with its initial step.
-    editor.get_by_label("New action name").fill("Seq")
-    editor.get_by_label("New action language").select_option("sfc")
-    editor.get_by_role("button", name="Add action").click()
-    step_named(editor, "M0").locator("rect.sfc-box").click(force=True)
-    editor.press("q")
-    picker = editor.get_by_role("form", name="New action association")
-    picker.get_by_label("Action or BOOL variable").fill("Seq")
-    picker.get_by_role("button", name="Add").click()
+    add_action(page, editor, "Seq", "sfc", "M0")
     open_action(page, editor, "Seq", "SFC")
     inner = chart_editor(page)
     assert chart_kinds(inner) == ["Seq_Init1", ":FALSE", "->Seq_Init1"]
@@ -271,11 +274,7 @@ def test_an_sfc_action_is_drawn_and_its_chart_runs_online_while_the_action_is_ac
     condition.press("Enter")
     inner.get_by_role("button", name="Step + transition").click()
     commit_field(inner, "Step name", "Second")
-    step_named(inner, "Seq_Init1").locator("rect.sfc-box").click(force=True)
-    inner.press("q")
-    picker = inner.get_by_role("form", name="New action association")
-    picker.get_by_label("Action or BOOL variable").fill("IncA")
-    picker.get_by_role("button", name="Add").click()
+    associate(inner, "Seq_Init1", "IncA")
     assert chart_kinds(inner) == ["Seq_Init1", ":next", "Second", ":FALSE", "->Seq_Init1"]
 
     # Online: M0 runs Seq, whose initial step is active (blue) and runs IncA; next moves the inner chart.

@@ -151,37 +151,32 @@ export function SfcPouView({
         ? body.actions?.find((a) => a.name === part.name)
         : body.transitions?.find((t) => t.name === part.name);
     return (
-      <div className="sfc-pou">
-        <div className="sfc-part-bar" role="navigation" aria-label="SFC parts">
-          <button type="button" onClick={() => setPart(null)}>
-            Chart
-          </button>
-          <span>
+      <PartFrame
+        title={
+          <>
             {part.kind === "action" ? "Action" : "Transition"} <strong>{part.name}</strong>
             {item ? ` (${(item.language ?? "st").toUpperCase()})` : ""}
-          </span>
-          {stepToTransition}
-        </div>
-        <div className="sfc-part">
-          {item ? (
-            <PartEditor
-              pou={pou}
-              part={part}
-              item={item}
-              diagnostics={diagnostics}
-              completions={completions}
-              readOnly={readOnly}
-              onChange={(content) =>
-                setHistory(name, record(history, setPartBody(body, part.kind, part.name, content)))
-              }
-            />
-          ) : (
-            <p className="placeholder">
-              {part.name} is no longer part of {name}.
-            </p>
-          )}
-        </div>
-      </div>
+          </>
+        }
+        extra={stepToTransition}
+        onClose={() => setPart(null)}
+      >
+        {item ? (
+          <PartEditor
+            pou={pou}
+            part={part}
+            item={item}
+            diagnostics={diagnostics}
+            completions={completions}
+            readOnly={readOnly}
+            onChange={(content) => setHistory(name, record(history, setPartBody(body, part.kind, part.name, content)))}
+          />
+        ) : (
+          <p className="placeholder">
+            {part.name} is no longer part of {name}.
+          </p>
+        )}
+      </PartFrame>
     );
   }
   const editor = (
@@ -202,16 +197,31 @@ export function SfcPouView({
   );
   if (!sfcAction) return editor;
   return (
+    <PartFrame
+      title={
+        <>
+          Action <strong>{sfcAction.name}</strong> (SFC)
+        </>
+      }
+      onClose={() => setPart(null)}
+    >
+      {editor}
+    </PartFrame>
+  );
+}
+
+/** An action or named transition opened: the bar back to the chart with what is open, then its editor. */
+function PartFrame(props: { title: ReactNode; extra?: ReactNode; onClose(): void; children: ReactNode }) {
+  return (
     <div className="sfc-pou">
       <div className="sfc-part-bar" role="navigation" aria-label="SFC parts">
-        <button type="button" onClick={() => setPart(null)}>
+        <button type="button" onClick={props.onClose}>
           Chart
         </button>
-        <span>
-          Action <strong>{sfcAction.name}</strong> (SFC)
-        </span>
+        <span>{props.title}</span>
+        {props.extra}
       </div>
-      <div className="sfc-part">{editor}</div>
+      <div className="sfc-part">{props.children}</div>
     </div>
   );
 }
