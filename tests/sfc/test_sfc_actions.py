@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from ladderlab.ir.lower_project import lower_project
 
-from .support import jump, project, run_table, sfc_pou, step, tr
+from .support import build, jump, project, run_table, sfc_pou, step, tr
 
 DECLS = "VAR go, next, back : BOOL; a, b : INT; END_VAR"
 
@@ -112,3 +112,19 @@ def test_an_element_id_of_an_action_chart_must_differ_from_the_pou_chart():
     assert errors(chart(inner=inner, main=main)) == [
         ("SFC-DUPLICATE", "Main/actions/Seq", "the id 'm0' is used in another chart of the POU")
     ]
+
+
+def test_a_breakpoint_on_a_step_of_an_action_chart_halts_while_the_action_runs_it():
+    """ON-17 inside an SFC action: the step's breakpoint halts in the scan its action runs the chart, before the
+    inner step's actions (I1 active from scan 2: IncB has not run, b = 0)."""
+    proj = chart()
+    i1 = proj.pous[0].body.action("Seq").body.elements[2].id
+    sim = build(proj, "debug")
+    sim.set_breakpoint("Main", element=i1)
+    assert sim.cycle(1) == 1 and sim.halted is None
+    sim.write("Main.next", True)
+    assert sim.cycle(1) == 1 and sim.halted is None  # I0 -> I1 at the end of this scan
+    sim.write("Main.next", False)
+    assert sim.cycle(1) == 0
+    assert sim.halted.point.element == i1 and sim.halted.origin.body is None
+    assert (sim.read("Main.I1.X"), sim.read("Main.b")) == (True, 0)
