@@ -21,7 +21,7 @@ from playwright.sync_api import expect
 from ladderlab.model import Pou, Project
 
 from .conftest import ARTIFACTS
-from .steps import go_online, open_pou, panel_tab, scan_count, store_project, watch
+from .steps import export_menu, go_online, open_pou, panel_tab, scan_count, store_project, watch
 from .test_fbd_workflow import drag_to, drop_from_palette, handle, name_and_declare
 from .test_sfc_workflow import chart_kinds, commit_field, item, saved_pou, step_named, write
 
@@ -301,3 +301,15 @@ def test_an_sfc_action_is_drawn_and_its_chart_runs_online_while_the_action_is_ac
     # the POU's chart: M0 active, its association with Seq active
     editor = back_to_chart(page)
     expect(step_named(editor, "M0")).to_have_class(active)
+
+    # Printed: the action's chart is drawn in its section, after the POU's chart.
+    with page.context.expect_page() as opened:
+        export_menu(page).get_by_role("button", name="Print project…").click()
+    printed = opened.value
+    problems: list[str] = []
+    printed.on("pageerror", lambda error: problems.append(f"page error: {error}"))
+    printed.on("console", lambda message: problems.append(message.text) if message.type == "error" else None)
+    section = printed.get_by_role("region", name="Action Seq")
+    section.locator("svg.sfc-canvas").wait_for()
+    assert section.locator("text.sfc-name").all_text_contents() == ["Seq_Init1", "Second"]
+    assert problems == []
