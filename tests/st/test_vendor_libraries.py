@@ -18,6 +18,7 @@ from hypothesis import strategies as st
 
 from ladderlab.cli import main
 from ladderlab.engine.simulation import Simulation
+from ladderlab.interchange.st.project import export_project_st
 from ladderlab.model import Project
 from ladderlab.simulation.build import build_project
 from ladderlab.simulation.library import user_entries
@@ -232,3 +233,18 @@ def test_an_ld_box_calls_a_library_function_and_the_box_picker_offers_it() -> No
     assert sim.read("Main.r") == 0.5  # -1.5 wrapped into [0, 1)
     offered = {(e.name, e.source) for e in user_entries(project)}
     assert {("LTRUNC", "library"), ("MODABS", "library"), ("FRAC", "library"), ("LMOD", "library")} <= offered
+
+
+def test_the_st_export_names_the_libraries_and_runs_with_them(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    project = _project("PROGRAM Main\nVAR r : LREAL; END_VAR\nr := LMOD(-7.5, 2.0);\nEND_PROGRAM\n", LIBRARIES)
+    text = export_project_st(project).text
+    assert text.splitlines()[0] == (
+        "(* Uses the vendor libraries Tc2_Math, Tc2_Utilities: ladderlab check/run ... --library Tc2_Math "
+        "--library Tc2_Utilities *)"
+    )
+    path = tmp_path / "exported.st"
+    path.write_text(text, encoding="utf-8")
+    assert main(["run", str(path), "--library", "Tc2_Math", "--watch", "Main.r"]) == 0
+    assert capsys.readouterr().out.splitlines()[-1].split() == ["0", "10", "-1.5"]  # the sign of the dividend
