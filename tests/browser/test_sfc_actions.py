@@ -23,7 +23,7 @@ from ladderlab.model import Pou, Project
 from .conftest import ARTIFACTS
 from .steps import export_menu, go_online, open_pou, panel_tab, scan_count, store_project, watch
 from .test_fbd_workflow import drag_to, drop_from_palette, handle, name_and_declare
-from .test_sfc_workflow import chart_kinds, commit_field, item, saved_pou, step_named, write
+from .test_sfc_workflow import chart_kinds, commit_field, context_menu, item, saved_pou, step_named, write
 
 pytestmark = pytest.mark.browser
 
@@ -301,6 +301,20 @@ def test_an_sfc_action_is_drawn_and_its_chart_runs_online_while_the_action_is_ac
     # the POU's chart: M0 active, its association with Seq active
     editor = back_to_chart(page)
     expect(step_named(editor, "M0")).to_have_class(active)
+
+    # A breakpoint on Second (the step's menu, in the action's chart) halts the running scan there at once; back
+    # on the POU's chart, Continue halts at it in the next scan, which opens the action's chart and marks the step.
+    second = seq["body"]["elements"][2]["id"]
+    open_action(page, editor, "Seq", "SFC")
+    context_menu(chart_editor(page), second, "Set breakpoint")
+    debug = page.get_by_role("region", name="Debugging")
+    expect(debug.get_by_role("status")).to_have_text(re.compile(r"^Halted at Main, step Second$", re.I))
+    back_to_chart(page)
+    debug.get_by_role("button", name="Continue").click()
+    page.get_by_role("navigation", name="SFC parts").get_by_text("Action Seq (SFC)").wait_for()
+    expect(debug.get_by_role("status")).to_have_text(re.compile(r"^Halted at Main, step Second$", re.I))
+    expect(item(chart_editor(page), second)).to_have_class(re.compile(r"\bsfc-halted\b"))
+    page.screenshot(path=str(ARTIFACTS / "sfc-action-sfc-halted.png"))
 
     # Printed: the action's chart is drawn in its section, after the POU's chart.
     with page.context.expect_page() as opened:

@@ -18,7 +18,7 @@ import { useFbdOnline } from "../fbd/useFbdOnline";
 import { useWorkspace } from "../project/store";
 import { StEditor } from "../st/StEditor";
 import { useStAssist } from "../st/useStAssist";
-import type { ActionChartBody, SfcBody } from "./model";
+import { actionChartOf, type ActionChartBody, type SfcBody } from "./model";
 import { bindSfc, sfcOnlineView } from "./online";
 import { setPartBody } from "./ops";
 import { SfcEditor, type SfcPart } from "./SfcEditor";
@@ -117,8 +117,10 @@ export function SfcPouView({
       halted: at && at.pou.toUpperCase() === upper && !at.body ? (at.element ?? null) : null,
     };
   }, [breakpoints, at, upper]);
-  // A halt inside an action or named transition shows it.
-  const haltedPart = at && at.pou.toUpperCase() === upper && at.body ? at.body : null;
+  // A halt inside an action or named transition shows it; so does a halt at an element of an action's chart.
+  const mineHalt = at && at.pou.toUpperCase() === upper ? at : null;
+  const haltedPart =
+    mineHalt?.body ?? (mineHalt?.element ? actionChartOf(history.present, mineHalt.element) : null) ?? null;
   const [haltSeen, setHaltSeen] = useState<string | null>(null);
   if (haltedPart !== haltSeen) {
     setHaltSeen(haltedPart);

@@ -78,6 +78,19 @@ export const actionCharts = (body: SfcBody): Sequence[] =>
  * reuse (never saved: the edit is written back into the action). */
 export type ActionChartBody = SfcBody & { enclosing?: SfcBody["chart"] };
 
+/** The part path ("actions/Seq") of the SFC action whose chart holds element `id`; null if none does. */
+export function actionChartOf(body: SfcBody, id: string): string | null {
+  const action = (body.actions ?? []).find(
+    (a) =>
+      a.language === "sfc" &&
+      a.body &&
+      typeof a.body === "object" &&
+      "elements" in a.body &&
+      locate({ chart: a.body as SfcBody["chart"] }, id) !== undefined,
+  );
+  return action ? `actions/${action.name}` : null;
+}
+
 /** Every chart of the POU: its own (or the one being edited and the POU's), then its SFC actions'. Steps and
  * element ids are unique across all of them. */
 const allCharts = (body: ActionChartBody): Sequence[] => [

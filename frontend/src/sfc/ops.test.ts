@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { chartOf, isStepLike, kindOf, locate, walk, type Sequence, type SfcBody } from "./model";
+import { actionChartOf, chartOf, isStepLike, kindOf, locate, walk, type Sequence, type SfcBody } from "./model";
 import { layoutChart, neighbour } from "./layout";
 import * as ops from "./ops";
 
@@ -158,5 +158,9 @@ describe("actions written in SFC (issue 24 item 1)", () => {
     const fresh = [...walk(chartOf(grown))].map((p) => p.element.id).filter((id) => !inner.some((e) => e.id === id));
     expect(fresh).toHaveLength(2);
     expect(fresh.filter((id) => outerIds.has(id))).toEqual([]);
+    // a halt at an element of an action's chart names that action (the view opens it)
+    expect(actionChartOf(body, inner[0]!.id)).toBe("actions/Seq");
+    expect(actionChartOf(body, second[0]!.id)).toBe("actions/Seq2");
+    expect(actionChartOf(body, chartOf(body)[0]!.id)).toBeNull();
   });
 });
