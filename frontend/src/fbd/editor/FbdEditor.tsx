@@ -34,7 +34,7 @@ import { clipboardActions, type LastClip } from "../../ld/editor/systemClipboard
 import { OperandValuePrompt, type ValueRequest } from "../../ld/editor/ValuePrompt";
 import { onlineOperandItems } from "../../online/operandCommands";
 import { referencesItem } from "../../xref/store";
-import { canRedo, canUndo, record, redo, undo, type History } from "../../ld/history";
+import { canRedo, canUndo, record, redo, undo, type History } from "../../store/history";
 
 import { clipOf, parseClip, pasteClip, serializeClip } from "../clipboard";
 import { outputType, refusal } from "../compat";

@@ -9,15 +9,16 @@ import type { Diagnostic } from "../generated/api";
 import type { Task } from "../generated/api";
 import { DeclarationsEditor } from "../declarations/DeclarationsEditor";
 import { useDeclarableTypes } from "./declarableTypes";
-import { RenameDialog } from "./PouActions";
+import { RenameDialog } from "../tree/PouActions";
 import { usePanels } from "../panels/store";
 import { LazyStEditor, LOADING } from "./lazy";
 import { useLiveCheck } from "../st/useLiveCheck";
 import { useOnline } from "../online/store";
-import { taskIndexOf, type ProjectPart } from "./parts";
-import { structMembers, TYPE_KINDS, typeRows, withNewType, withStructMembers, type TypeKind } from "./types";
-import type { DeclRow } from "../declarations/model";
-import { useWorkspace } from "./store";
+import { taskIndexOf, type ProjectPart } from "../store/parts";
+import { structMembers, TYPE_KINDS, typeRows, withNewType, withStructMembers, type TypeKind } from "../store/types";
+import type { DeclRow } from "../iec/declarations";
+import { useWorkspace } from "../store/project";
+import { FormError } from "../ui/FormError";
 
 const NO_COMPLETIONS = { options: [], members: () => null };
 const NO_TASKS: Task[] = [];
@@ -154,11 +155,7 @@ export function TypesView() {
               ))}
             </select>
             <button type="submit">Add type</button>
-            {error ? (
-              <p className="new-pou-error" role="alert">
-                {error}
-              </p>
-            ) : null}
+            <FormError error={error} />
           </form>
         )}
       </div>

@@ -15,7 +15,8 @@ import {
   renamedPath,
   renameEverywhere,
 } from "./refactor";
-import { emptyDeclarations, workspaceStore } from "./store";
+import { emptyDeclarations, workspaceStore } from "../store/project";
+import { FormError } from "../ui/FormError";
 
 type Action = "rename" | "duplicate" | "kind" | "delete";
 
@@ -151,11 +152,7 @@ function DeleteDialog({ pou, onClose }: { pou: Pou; onClose(): void }) {
       {references === null && !error ? <p>Looking for uses of {pou.name}…</p> : null}
       {references?.length ? <p>These places use {pou.name} and will no longer compile:</p> : null}
       {references ? <ReferenceList references={references} empty={`Nothing refers to ${pou.name}.`} /> : null}
-      {error ? (
-        <p className="new-pou-error" role="alert">
-          {error}
-        </p>
-      ) : null}
+      <FormError error={error} />
       <div className="dialog-buttons">
         <button type="button" onClick={remove} disabled={references === null && !error} autoFocus>
           Delete {pou.name}
@@ -303,11 +300,7 @@ export function TreeActions<A extends string>({
 export function DialogFooter({ error, submit, onClose }: { error: string | null; submit: string; onClose(): void }) {
   return (
     <>
-      {error ? (
-        <p className="new-pou-error" role="alert">
-          {error}
-        </p>
-      ) : null}
+      <FormError error={error} />
       <div className="dialog-buttons">
         <button type="submit">{submit}</button>
         <button type="button" onClick={onClose}>

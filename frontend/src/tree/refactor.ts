@@ -28,8 +28,10 @@ export function describeReference(r: Reference): string {
     const label = r.network_label ? ` "${r.network_label}"` : "";
     return `${r.pou}, network ${r.network_number}${label}`;
   }
-  if (r.part === "return type") return `${r.pou}, result type`;
-  return `${r.pou}, ${r.part} line ${r.line}`;
+  if (r.part === "extends" || r.part === "implements") return `${r.pou}`; // listed with its text: "F EXTENDS B"
+  const owner = r.member ? `${r.pou}.${r.member}` : r.pou;
+  if (r.part === "return type") return `${owner}, ${r.member ? "type" : "result type"}`;
+  return `${owner}, ${r.part} line ${r.line}`;
 }
 
 /** A POU with no variables and no body yet: it may change its kind freely. */

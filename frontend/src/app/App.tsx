@@ -1,16 +1,17 @@
 import { useEffect, useState, type CSSProperties, type FormEvent } from "react";
-import type { ProjectSummary } from "./api/client";
-import { appStore, useAppStore } from "./store";
-import { lastProject, rememberProject } from "./project/session";
-import { useWorkspace } from "./project/store";
-import { WorkspaceView } from "./project/WorkspaceView";
-import { NewFromExample } from "./hmi/NewFromExample";
-import { ViewBoundary } from "./project/ViewBoundary";
-import { useHidden, useStoredSize } from "./project/layout";
+import type { ProjectSummary } from "../api/client";
+import { appStore, useAppStore } from "../store/workspace";
+import { lastProject, rememberProject } from "./session";
+import { useWorkspace } from "../store/project";
+import { WorkspaceView } from "./WorkspaceView";
+import { NewFromExample } from "../hmi/NewFromExample";
+import { ViewBoundary } from "../ui/ViewBoundary";
+import { useHidden, useStoredSize } from "../store/layout";
 import { PanelLeftClose, PanelLeftOpen } from "lucide-react";
-import { Splitter } from "./ui/Splitter";
-import { ThemeToggle } from "./ui/ThemeToggle";
-import { ToolButton } from "./ui/ToolButton";
+import { Splitter } from "../ui/Splitter";
+import { ThemeToggle } from "../ui/ThemeToggle";
+import { ToolButton } from "../ui/ToolButton";
+import { FormError } from "../ui/FormError";
 
 const HEALTH_POLL_MS = 15_000;
 /** The project list and the project tree may be dragged between these widths (px). */
@@ -118,11 +119,7 @@ function NewProject() {
       <button type="button" onClick={() => setOpen(false)}>
         Cancel
       </button>
-      {error ? (
-        <p className="new-project-error" role="alert">
-          {error}
-        </p>
-      ) : null}
+      <FormError error={error} className="new-project-error" />
     </form>
   );
 }
@@ -201,7 +198,7 @@ export default function App() {
     void loadProjects();
   }, [loadProjects]);
 
-  // After a reload the project open last opens again (project/session.ts keeps the rest of the session).
+  // After a reload the project open last opens again (app/session.ts keeps the rest of the session).
   useEffect(() => {
     if (listed && appStore.getState().selectedProject === null) {
       const last = lastProject(localStorage);

@@ -2,12 +2,12 @@ import { diagnosticCount } from "@codemirror/lint";
 import { EditorView } from "@codemirror/view";
 import { act, fireEvent, render, screen, waitFor, within } from "@testing-library/react";
 import { beforeEach, describe, expect, it } from "vitest";
-import App from "../App";
-import { appStore, initialData } from "../store";
+import App from "./App";
+import { appStore, initialData } from "../store/workspace";
 import { stubFetch } from "../test/fetchStub";
 import { motorMain } from "../ld/fixtures";
 import { debugStore } from "../debug/store";
-import { emptyWorkspace, workspaceStore } from "./store";
+import { emptyWorkspace, workspaceStore } from "../store/project";
 
 const json = (body: unknown, status = 200) =>
   new Response(JSON.stringify(body), { status, headers: { "Content-Type": "application/json" } });
@@ -168,7 +168,7 @@ describe("app shell", () => {
     fireEvent.click(screen.getByRole("button", { name: "Toggle breakpoint on network 3" }));
     fireEvent.click(screen.getByRole("tab", { name: "Breakpoints (1)" }));
     // the panel is loaded when first shown (issue 22 item 8)
-    expect((await screen.findByRole("table", { name: "Breakpoints" })).textContent).toContain(
+    expect((await screen.findByRole("table", { name: "Breakpoints" }, { timeout: 5000 })).textContent).toContain(
       "Main network 3 Count rising edges of Start",
     );
     expect(JSON.parse(localStorage.getItem("ladderlab:breakpoints:plant")!).breakpoints).toEqual([

@@ -39,6 +39,14 @@ describe("project operations' pure facts", () => {
       "Main, declarations line 3",
     );
     expect(describeReference({ part: "task", task: "Fast", text: "Main" })).toBe("task Fast");
+    // issue 25: a function block's EXTENDS / IMPLEMENTS and the texts of its methods and properties
+    expect(describeReference({ part: "extends", pou: "Square", text: "EXTENDS Base" })).toBe("Square");
+    expect(describeReference({ part: "body", pou: "Square", member: "Area", line: 4, text: "" })).toBe(
+      "Square.Area, body line 4",
+    );
+    expect(describeReference({ part: "return type", pou: "Square", member: "Form", text: "Shape" })).toBe(
+      "Square.Form, type",
+    );
   });
 });
 

@@ -1,6 +1,6 @@
 import { describe, expect, it, vi } from "vitest";
-import { ApiError, type Api, type Health, type ProjectSummary } from "./api/client";
-import { createAppStore } from "./store";
+import { ApiError, type Api, type Health, type ProjectSummary } from "../api/client";
+import { createAppStore } from "./workspace";
 
 const demo: ProjectSummary = { name: "demo", revision: "r1", modified: "2024-01-01T00:00:00Z", pou_count: 2 };
 const alpha: ProjectSummary = { name: "alpha", revision: "r7", modified: "2024-02-01T00:00:00Z", pou_count: 1 };

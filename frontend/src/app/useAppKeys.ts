@@ -6,7 +6,7 @@ import { debugStore } from "../debug/store";
 import { commandsFor, RESERVED_KEYS, type CommandOf } from "../keys/keymap";
 import { checkWorkingCopy, compileSaved } from "../online/SimulationBar";
 import { onlineStore } from "../online/store";
-import { workspaceStore } from "./store";
+import { workspaceStore } from "../store/project";
 
 /** What each app key does now; false when it does not apply (e.g. a step while offline). */
 export function appKeyActions(): Record<CommandOf<"app">, () => boolean> {

@@ -5,7 +5,7 @@ import type { Diagnostic, Pou } from "../generated/api";
 import { DeclarationsEditor } from "../declarations/DeclarationsEditor";
 import { usePanels } from "../panels/store";
 import { useDeclarableTypes } from "./declarableTypes";
-import { useWorkspace } from "./store";
+import { useWorkspace } from "../store/project";
 
 const NO_DIAGNOSTICS: Diagnostic[] = [];
 

@@ -8,7 +8,7 @@ import { createOnlineStore, type SocketLike } from "../online/store";
 import { MemoryStorage } from "../test/memoryStorage";
 import { traceStoreFor } from "../trace/store";
 import { keepSession, lastProject, loadSession, rememberProject, restoreSession } from "./session";
-import { createWorkspaceStore } from "./store";
+import { createWorkspaceStore } from "../store/project";
 
 const project: Project = {
   name: "demo",

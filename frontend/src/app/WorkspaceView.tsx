@@ -18,7 +18,7 @@ import {
 import type { Diagnostic } from "../generated/api";
 import type { LdBody, Pou, Project, TestFile } from "../generated/api";
 import { LdEditor } from "../ld/editor/LdEditor";
-import type { History } from "../ld/history";
+import type { History } from "../store/history";
 import { operandPath } from "../online/ldBinding";
 import { onlineStore, useOnline } from "../online/store";
 import { SimulationBar } from "../online/SimulationBar";
@@ -26,39 +26,40 @@ import { HistoryBanner } from "../online/HistoryBar";
 import { instanceOf, useLdOnline } from "../online/useLdOnline";
 import { BottomPanels } from "../panels/BottomPanels";
 import { focusOf, panelOf, panelsStore, usePanels } from "../panels/store";
-import { parseDeclarations } from "../declarations/model";
-import { isTestPath, pouOf, symbolsOf, testPath, useWorkspace, workspaceStore } from "./store";
+import { parseDeclarations } from "../iec/declarations";
+import { isTestPath, pouOf, symbolsOf, testPath, useWorkspace, workspaceStore } from "../store/project";
 import { coverageMarks, coverageOf } from "../tests/coverage";
 import { testsStore, useTests } from "../tests/store";
-import { runsOf } from "./tasks";
-import { useDiagramPou } from "./useDiagramPou";
+import { runsOf } from "../store/tasks";
+import { useDiagramPou } from "../ld/useDiagramPou";
 import { partAt, elementText as sfcElementText, type SfcBody } from "../sfc/model";
 import { ExportMenu } from "../interchange/ExportMenu";
 import { Keyboard, PanelBottomClose, PanelBottomOpen, PanelLeftClose, PanelLeftOpen, Save } from "lucide-react";
 import { Splitter } from "../ui/Splitter";
 import { ToolButton } from "../ui/ToolButton";
 import { ImportPlcopen } from "../interchange/ImportPlcopen";
-import { appStore } from "../store";
+import { appStore } from "../store/workspace";
 import { DebugBar } from "../debug/DebugBar";
 import { useLdDebugging } from "../debug/ldDebugging";
 import { revealPlace } from "../debug/reveal";
 import { debugStore } from "../debug/store";
 import { isShellTab, PanelsTree, revealWidget, tabLabel } from "../hmi/shell";
-import { ViewBoundary } from "./ViewBoundary";
+import { ViewBoundary } from "../ui/ViewBoundary";
 import { useAppKeys } from "./useAppKeys";
 import { ShortcutHelp } from "../keys/ShortcutHelp";
 import { keysOf } from "../keys/keymap";
 import { VariablesView } from "./VariablesView";
 import { InstancePicker, OnlineActions } from "./InstancePicker";
 import { LOADING } from "./lazy";
-import { useHidden, useStoredSize } from "./layout";
-import { KindPicker, PouActions } from "./PouActions";
+import { useHidden, useStoredSize } from "../store/layout";
+import { KindPicker, PouActions } from "../tree/PouActions";
 import { TestFileActions } from "../tests/TestFileActions";
-import { isProjectPart, PROJECT_PARTS, type ProjectPart } from "./parts";
-import { PouMembers } from "./PouMembers";
-import { typeRows } from "./types";
+import { isProjectPart, PROJECT_PARTS, type ProjectPart } from "../store/parts";
+import { PouMembers } from "../tree/PouMembers";
+import { typeRows } from "../store/types";
 import { keepSession, restoreSession, type SessionStores } from "./session";
 import { traceStore } from "../trace/store";
+import { FormError } from "../ui/FormError";
 
 // Loaded on first use, each in its own chunk: the ST views (CodeMirror) and the FBD editor (@xyflow).
 const StPouView = lazy(() => import("./StViews").then((m) => ({ default: m.StPouView })));
@@ -73,7 +74,7 @@ const PouDeclarations = lazy(() => import("./PouDeclarations").then((m) => ({ de
 const StView = lazy(() => import("../stview/StView").then((m) => ({ default: m.StView })));
 const SfcPouView = lazy(() => import("../sfc/SfcPouView").then((m) => ({ default: m.SfcPouView })));
 
-/** The stores a project's session (project/session.ts) is kept from. */
+/** The stores a project's session (app/session.ts) is kept from. */
 const SESSION_STORES: SessionStores = { workspace: workspaceStore, online: onlineStore, trace: traceStore };
 
 const KINDS: { kind: Pou["kind"]; title: string }[] = [
@@ -151,11 +152,7 @@ function NewItemForm({
       <button type="button" onClick={() => setOpen(false)}>
         Cancel
       </button>
-      {error ? (
-        <p className="new-pou-error" role="alert">
-          {error}
-        </p>
-      ) : null}
+      <FormError error={error} />
     </form>
   );
 }

@@ -3,11 +3,11 @@ import { SaveConflictError, type ProjectApi } from "../api/client";
 import type { ProjectDocument } from "../generated/api";
 import type { Project } from "../generated/api";
 import { motorMain } from "../ld/fixtures";
-import { record } from "../ld/history";
+import { record } from "./history";
 import { deleteElements } from "../ld/ops";
 import { addNetwork } from "../fbd/ops";
 import { loadDraft, saveDraft } from "./drafts";
-import { createWorkspaceStore } from "./store";
+import { createWorkspaceStore } from "./project";
 import { MemoryStorage } from "../test/memoryStorage";
 
 const project: Project = {

@@ -3,10 +3,10 @@
 // clicked diagnostic asks to reveal, and declaring a variable typed but not declared.
 import { useMemo } from "react";
 import type { Diagnostic, LibraryEntry, SymbolInfo } from "../generated/api";
-import type { VariableDeclaration } from "../ld/editor/declare";
+import type { VariableDeclaration } from "./editor/declare";
 import { usePanels, type Focus } from "../panels/store";
 import { useLiveCheck } from "../st/useLiveCheck";
-import { diagramDiagnostics, symbolsOf, useWorkspace } from "./store";
+import { diagramDiagnostics, symbolsOf, useWorkspace } from "../store/project";
 
 export interface DiagramPou {
   library: LibraryEntry[];

@@ -1,8 +1,8 @@
 // The types a declarations table offers, shared by the POU and global variable editors.
 import { useMemo } from "react";
-import { userTypeNames } from "../declarations/model";
+import { userTypeNames } from "../iec/declarations";
 import { DECLARABLE_TYPES } from "../iec/vocabulary";
-import { useWorkspace } from "./store";
+import { useWorkspace } from "../store/project";
 
 /** The types a declaration may use: elementary, the project's own, and the function blocks. */
 export function useDeclarableTypes(): string[] {

@@ -14,7 +14,7 @@ import { useTestCheck, useTestCompletions } from "../tests/assist";
 import { coverageLines, coverageOf } from "../tests/coverage";
 import { testsStore, useTests } from "../tests/store";
 import { InstancePicker } from "./InstancePicker";
-import { testOf, useWorkspace } from "./store";
+import { testOf, useWorkspace } from "../store/project";
 
 /**
  * An ST or IL POU as text: its declarations above its body, each in the text editor, with the live check

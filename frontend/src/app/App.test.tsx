@@ -1,8 +1,8 @@
 import { render, screen, within } from "@testing-library/react";
 import { beforeEach, describe, expect, it } from "vitest";
 import App from "./App";
-import { appStore, initialData } from "./store";
-import { stubFetch } from "./test/fetchStub";
+import { appStore, initialData } from "../store/workspace";
+import { stubFetch } from "../test/fetchStub";
 
 function respond(routes: Record<string, () => Response>) {
   stubFetch(({ path }) => {

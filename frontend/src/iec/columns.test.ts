@@ -3,7 +3,7 @@
 import { readFileSync } from "node:fs";
 import { resolve } from "node:path";
 import { describe, expect, it } from "vitest";
-import { alignDeclarations } from "./model";
+import { alignDeclarations } from "./declarations";
 
 const fixture = JSON.parse(
   readFileSync(resolve(__dirname, "../../../tests/fixtures/declaration_columns.json"), "utf8"),

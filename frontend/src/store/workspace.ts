@@ -2,7 +2,7 @@
 // the app uses the `appStore` singleton through the `useAppStore` hook.
 import { useStore } from "zustand";
 import { createStore, type StoreApi } from "zustand/vanilla";
-import { api as defaultApi, type Api, type Health, type ProjectSummary } from "./api/client";
+import { api as defaultApi, type Api, type Health, type ProjectSummary } from "../api/client";
 
 export type LoadStatus = "idle" | "loading" | "ready" | "error";
 export type HealthStatus = "unknown" | "ok" | "down";

@@ -1,7 +1,14 @@
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
 import main from "../../../examples/motor/pous/Main.ld.json";
-import { freeName, parseDeclarations, printDeclarations, userTypeNames, VAR_CLASSES, type DeclRow } from "./model";
+import {
+  freeName,
+  parseDeclarations,
+  printDeclarations,
+  userTypeNames,
+  VAR_CLASSES,
+  type DeclRow,
+} from "./declarations";
 
 const row = (name: string, type: string, extra: Partial<DeclRow> = {}): DeclRow => ({
   name,

@@ -1,6 +1,6 @@
 // The user types of a project's TYPE text, as the Types editor lists them, and the templates it adds
 // (STRUCT, enumeration, array, subrange, alias: IEC 61131-3 2.3.3), and the members of a STRUCT as table rows.
-import { parseDeclarations, printDeclarations, type DeclRow } from "../declarations/model";
+import { parseDeclarations, printDeclarations, type DeclRow } from "../iec/declarations";
 
 export type TypeKind = "struct" | "enum" | "array" | "subrange" | "alias";
 

@@ -2,7 +2,13 @@
 // One line goes into the first plain VAR block, or a new VAR block is appended; then the declarations
 // are aligned in columns like the table prints them, when the table can read them (otherwise the text
 // stays as the user typed it). The backend's checker reads the result like any other declaration.
-import { alignDeclarations } from "../declarations/model";
+import { alignDeclarations } from "../iec/declarations";
+
+/** A variable to declare: the editors' "declare variable" offer. */
+export interface VariableDeclaration {
+  name: string;
+  type: string;
+}
 
 const VAR_LINE = /^[ \t]*VAR[ \t]*(\(\*.*\*\))?[ \t]*$/i;
 const END_VAR_LINE = /^[ \t]*END_VAR\b/i;

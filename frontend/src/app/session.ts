@@ -6,7 +6,7 @@ import type { StoreApi } from "zustand/vanilla";
 import type { OnlineState } from "../online/store";
 import type { TraceState } from "../trace/store";
 import type { TriggerForm } from "../trace/trigger";
-import type { WorkspaceState } from "./store";
+import type { WorkspaceState } from "../store/project";
 
 export interface TraceSetup {
   paths: string[];

@@ -6,9 +6,8 @@ import { createStore, type StoreApi } from "zustand/vanilla";
 import { ApiError, projectApi, SaveConflictError, type ProjectApi } from "../api/client";
 import type { ConflictDetail, Diagnostic, LibraryEntry, SymbolInfo, SymbolTable } from "../generated/api";
 import type { FbdBody, LdBody, Pou, Project, SfcBody, Task, TestFile } from "../generated/api";
-import { historyOf, type History } from "../ld/history";
-import type { VariableDeclaration } from "../ld/editor/declare";
-import { addDeclaration } from "./declarations";
+import { historyOf, type History } from "./history";
+import { addDeclaration, type VariableDeclaration } from "./declarations";
 import { isProjectPart } from "./parts";
 import { loadDraft, removeDraft, saveDraft } from "./drafts";
 
