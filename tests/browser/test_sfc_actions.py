@@ -21,7 +21,7 @@ from playwright.sync_api import expect
 from ladderlab.model import Pou, Project
 
 from .conftest import ARTIFACTS
-from .steps import export_menu, go_online, open_pou, panel_tab, scan_count, store_project, watch
+from .steps import go_online, open_pou, open_print, panel_tab, scan_count, store_project, watch
 from .test_fbd_workflow import drag_to, drop_from_palette, handle, name_and_declare
 from .test_sfc_workflow import chart_kinds, commit_field, context_menu, item, saved_pou, step_named, write
 
@@ -317,12 +317,7 @@ def test_an_sfc_action_is_drawn_and_its_chart_runs_online_while_the_action_is_ac
     page.screenshot(path=str(ARTIFACTS / "sfc-action-sfc-halted.png"))
 
     # Printed: the action's chart is drawn in its section, after the POU's chart.
-    with page.context.expect_page() as opened:
-        export_menu(page).get_by_role("button", name="Print project…").click()
-    printed = opened.value
-    problems: list[str] = []
-    printed.on("pageerror", lambda error: problems.append(f"page error: {error}"))
-    printed.on("console", lambda message: problems.append(message.text) if message.type == "error" else None)
+    printed, problems = open_print(page)
     section = printed.get_by_role("region", name="Action Seq")
     section.locator("svg.sfc-canvas").wait_for()
     assert section.locator("text.sfc-name").all_text_contents() == ["Seq_Init1", "Second"]
