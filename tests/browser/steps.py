@@ -114,3 +114,15 @@ def settled_scan_count(page) -> int:
         if current == previous:
             return current
         previous = current
+
+
+def open_print(page):
+    """Opens the project's print view (Export menu) in its own page; returns it and the list of the errors it reports
+    (page errors, console errors), for the test to assert empty."""
+    with page.context.expect_page() as opened:
+        export_menu(page).get_by_role("button", name="Print project…").click()
+    printed = opened.value
+    errors: list[str] = []
+    printed.on("pageerror", lambda error: errors.append(f"page error: {error}"))
+    printed.on("console", lambda message: errors.append(message.text) if message.type == "error" else None)
+    return printed, errors

@@ -29,11 +29,11 @@ from ladderlab.storage.project_folder import read_project_folder
 
 from .conftest import ARTIFACTS
 from .steps import (
-    export_menu,
     go_online,
     new_pou,
     new_project,
     open_pou,
+    open_print,
     panel_tab,
     scan_count,
     settled_scan_count,
@@ -374,12 +374,7 @@ def test_the_car_wash_prints_its_chart_and_its_actions(page, server):
     page.goto(server)
     open_pou(page, "car_wash_sfc", "Wash")
     page.get_by_role("application", name="Sequential function chart editor").wait_for()
-    with page.context.expect_page() as opened:
-        export_menu(page).get_by_role("button", name="Print project…").click()
-    printed = opened.value
-    errors: list[str] = []
-    printed.on("pageerror", lambda error: errors.append(f"page error: {error}"))
-    printed.on("console", lambda message: errors.append(message.text) if message.type == "error" else None)
+    printed, errors = open_print(page)
     wash = printed.get_by_role("region", name="PROGRAM Wash")
     wash.locator("svg.sfc-canvas").wait_for()
     names = wash.locator("svg.sfc-canvas text.sfc-name").all_text_contents()

@@ -188,3 +188,28 @@ def test_a_foreign_chart_imports_with_inline_actions_named_references_and_a_draw
     sim = build(project)
     sim.cycle(3)  # Init: n + 1 every scan, Blink (D 20 ms) from its third scan: + 10
     assert sim.read("Seq.n") == 13
+
+
+def test_an_action_written_in_sfc_comes_back_and_runs_the_same_without_ladderlab_data():
+    """Issue 24 item 1: an SFC action body is written as the action's <SFC> and read back as a chart."""
+    from .test_sfc_actions import chart
+
+    project = chart()
+    data = export_plcopen(project)
+    assert xsd_errors(data) == []
+    assert import_plcopen(data).project == project
+    stripped = import_plcopen(strip_ladderlab(data))
+    assert [d.format() for d in stripped.diagnostics if d.severity == "error"] == []
+    seq = stripped.project.pou("Main").body.action("Seq")
+    assert seq is not None and seq.language == "sfc"
+    assert semantics(SfcBody(chart=seq.body)) == semantics(SfcBody(chart=project.pou("Main").body.action("Seq").body))
+    assert all(e.id.startswith("Seq_") for e in steps(seq.body.elements))  # unique beside the POU chart's ids
+    sims = [build(p) for p in (project, stripped.project)]
+    for scan in range(8):
+        for sim in sims:
+            for name, value in (("go", scan == 3), ("next", scan == 1), ("back", scan == 6)):
+                sim.write(f"Main.{name}", value)
+            sim.cycle(1)
+        assert [tuple(sim.read(f"Main.{v}") for v in ("a", "b", "I0.X", "I1.X", "M0.X")) for sim in sims] == [
+            tuple(sims[0].read(f"Main.{v}") for v in ("a", "b", "I0.X", "I1.X", "M0.X"))
+        ] * 2

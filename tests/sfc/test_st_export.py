@@ -78,3 +78,28 @@ def test_the_project_export_reads_back_with_other_pous_reading_the_steps():
     """Status reads Wash.Idle.X: in the exported project Idle is an SFC_STEP variable, still readable."""
     result = export_project_st(load_project_path(EXAMPLES / "car_wash_sfc"))
     assert [d.format() for d in result.diagnostics] == [] and "Busy := NOT Wash.Idle.X;" in result.text
+
+
+def test_the_error_analysis_flags_export_and_run_alike():
+    """SFCErrorAnalyzationTable and SFCErrorAnalyzation (tests/sfc/test_error_analysis.py) in the exported ST."""
+    from .test_error_analysis import CONDITION, LIMIT, chart
+
+    flags = LIMIT + " SFCErrorAnalyzation : STRING; SFCErrorAnalyzationTable : ARRAY [1..3] OF ExpressionResult;"
+    proj = chart(flags)
+    text = exported(proj, "Main").text
+    assert f"IF NOT ({CONDITION}) AND NOT (b OR NOT c) THEN" in text
+    assert "SFCErrorAnalyzationTable[sfc_analysis_n + 1].address := '%IX0.1';" in text
+    same_traces(proj, scans=300, seed=5)
+
+
+def test_an_action_written_in_sfc_is_refused_by_name():
+    from .test_sfc_actions import chart
+
+    result = export_pou_st(chart(), "Main")
+    assert result.text == ""
+    assert (
+        "EXPORT-UNSUPPORTED",
+        "Main/actions/Seq",
+        "the action Seq is written in SFC; the ST export writes one chart per POU: move its chart into a "
+        "function block written in SFC and call that in an action",
+    ) in [(d.code, d.file, d.message) for d in result.diagnostics]

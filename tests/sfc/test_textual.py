@@ -154,3 +154,13 @@ END_PROGRAM
     assert [(d.code, d.pou, d.line) for d in diagnostics] == [("ST-SFC", "P", 3)]
     assert "do not join at one transition" in diagnostics[0].message
     assert isinstance(project_.pou("P"), Pou)
+
+
+def test_an_action_written_in_sfc_has_no_textual_form_here_and_is_refused_by_name():
+    from .test_sfc_actions import chart
+
+    result = export_pou_st(chart(), "Main", sfc_text=True)
+    assert result.text == ""
+    assert ("EXPORT-UNSUPPORTED", "the action Seq is written in SFC: textual SFC has ST actions") in [
+        (d.code, d.message) for d in result.diagnostics
+    ]

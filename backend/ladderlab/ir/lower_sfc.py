@@ -28,7 +28,7 @@ from collections.abc import Iterable
 
 from ..model import fbd, ld
 from ..model.project import Pou as ModelPou
-from ..model.sfc import TIMED_QUALIFIERS, SfcAction, SfcBody, SfcChart, SfcNamedTransition, SfcStep
+from ..model.sfc import TIMED_QUALIFIERS, SfcAction, SfcBody, SfcChart, SfcNamedTransition, SfcStep, walk
 from ..model.sfc_graph import ChartGraph, chart_graph
 from ..st import ast
 from ..st import types as st_types
@@ -61,6 +61,7 @@ from .nodes import (
     Var,
     While,
 )
+from .sfc_analysis import Analysis, table_problem
 from .types import BOOL, Elementary, FbInstance, IrType
 
 TIME = Elementary("TIME")
@@ -79,7 +80,9 @@ BOOL_FLAGS = (
     "SFCTIP",
     "SFCTIPMODE",
 )
-STRING_FLAGS = ("SFCERRORSTEP", "SFCERRORPOU", "SFCCURRENTSTEP")
+STRING_FLAGS = ("SFCERRORSTEP", "SFCERRORPOU", "SFCCURRENTSTEP", "SFCERRORANALYZATION")
+#: ARRAY [0..n] OF ExpressionResult: the parts of the conditions that held a timed-out step (ir/sfc_analysis.py).
+TABLE_FLAG = "SFCERRORANALYZATIONTABLE"
 
 #: The inputs of ACTION_CONTROL by qualifier (S is S0 there).
 PIN = {
@@ -136,6 +139,7 @@ class StepSlots:
     step: SfcStep
     var: Var
     initial: bool
+    owner: str | None = None  # the SFC action whose chart it is in (upper case), None: the POU's chart
     entered: Var | None = None  # set by the transition that activates it, read in the next scan
     left: Var | None = None
     memory: Var | None = None  # X in the previous scan (an activation by a write online)
@@ -161,6 +165,7 @@ class Control:
         self.target = target  # the BOOL variable that takes Q
         self.inputs: dict[str, list[str]] = {}  # ACTION_CONTROL pin -> the steps (upper-case names) feeding it
         self.times: list[tuple[str, Expr, str, str]] = []  # (step, time, its text, association id)
+        self.owner: str | None = None  # the chart whose steps feed it: None (the POU's) or an SFC action's
 
     def member(self, pin: str) -> Var:
         return _member(self.var, pin, BOOL)
@@ -179,9 +184,16 @@ class SfcLowering:
         self.steps: dict[str, StepSlots] = {}
         self.controls: dict[str, Control] = {}
         self.flags: dict[str, Var] = {}
+        self.analysis: Analysis | None = None
         self.jumps_to_end = False
         self.refused = False
         self.graph_made: ChartGraph | None = None
+        #: the charts of the actions written in SFC, by upper-case action name (run as their action's body)
+        self.inner: dict[str, ChartGraph] = {}
+        self.inner_conditions: dict[str, list[Stmt]] = {}
+        #: the chart each action is used in (associated, entry or exit): None (the POU's) or an SFC action's name
+        self.used_in: dict[str, str | None] = {}
+        self.condition_vars: dict[int, Var] = {}  # id of a graph transition -> its condition's flag
 
     # ------------------------------------------------------------ helpers
     def origin(self, element: str | None = None) -> Origin:
@@ -207,21 +219,32 @@ class SfcLowering:
         self.ctx.default_file = self.chart
         try:
             self.declare_steps(graph)
+            for owner, inner in self.inner.items():
+                self.declare_steps(inner, owner)
             if self.refused:
                 return []
             self.find_flags()
+            self.make_controls()
             self.associate(graph)
+            for owner, inner in self.inner.items():
+                self.ctx.default_file = self.inner_file(owner)
+                self.associate(inner, owner)
+            self.ctx.default_file = self.chart
+            self.check_nesting()
             transitions = self.conditions(graph)
+            for owner, inner in self.inner.items():
+                self.ctx.default_file = self.inner_file(owner)
+                self.inner_conditions[owner] = self.conditions(inner)
         finally:
             self.ctx.default_file = None
-        actions = self.action_blocks()
+        actions = self.action_blocks(None)
         named = self.named_transition_blocks()
         if self.ops.errors_since(before) or any(d.severity == "error" for d in self.ctx.diagnostics[before:]):
             return []
         out = [
             Block(self.prologue(graph), self.origin()),
-            Block(self.step_phase(), self.origin()),
-            Block(self.control_phase(), self.origin()),
+            Block(self.step_phase(None), self.origin()),
+            Block(self.control_phase(None), self.origin()),
             *actions,
             *named,
             Block(transitions + self.evolution(graph), self.origin()),
@@ -234,26 +257,58 @@ class SfcLowering:
         graph = self.graph_made = chart_graph(self.body.chart)
         for problem in graph.problems:
             self.report(problem.code, problem.message, problem.element or None, severity=problem.severity)
+        failed = any(p.severity == "error" for p in graph.problems)
+        seen = {e.id for e in walk(self.body.chart.elements)}
         for action in self.body.actions:
-            if isinstance(action.body, SfcChart):
-                self.report(
-                    "IR-UNSUPPORTED",
-                    f"the action {action.name} is written in SFC, which actions cannot run in yet: "
-                    "write it in ST, LD or FBD",
-                    file=action_file(self.pou.name, action.name),
-                )
-        if any(p.severity == "error" for p in graph.problems):
-            return None
-        return graph
+            if not isinstance(action.body, SfcChart):
+                continue
+            inner = chart_graph(action.body)
+            file = action_file(self.pou.name, action.name)
+            for problem in inner.problems:
+                self.report(problem.code, problem.message, problem.element or None, file, problem.severity)
+            failed = failed or any(p.severity == "error" for p in inner.problems)
+            for element in walk(action.body.elements):
+                if element.id in seen:
+                    message = f"the id {element.id!r} is used in another chart of the POU"
+                    self.report("SFC-DUPLICATE", message, element.id, file)
+                    failed = True
+                seen.add(element.id)
+            self.inner[action.name.upper()] = inner
+        return None if failed else graph
+
+    def inner_name(self, owner: str) -> str:
+        """An SFC action's name as written (``owner`` is upper case)."""
+        action = self.body.action(owner)
+        return action.name if action else owner
+
+    def inner_file(self, owner: str) -> str:
+        return action_file(self.pou.name, self.inner_name(owner))
+
+    def check_nesting(self) -> None:
+        """An action is used in one chart only (its body is in the code once); an SFC action is not used as an entry
+        or exit action (it runs while its Q is TRUE) and not inside its own chart, however deep."""
+        for owner in self.inner:
+            seen = {owner}
+            parent = self.used_in.get(owner, "")
+            while parent:
+                if parent in seen:
+                    self.report(
+                        "SFC-ACTION",
+                        f"the action {self.inner_name(owner)} is written in SFC and is used inside its own chart",
+                        file=self.inner_file(owner),
+                    )
+                    break
+                seen.add(parent)
+                parent = self.used_in.get(parent, "")
 
     # ------------------------------------------------------------ steps, flags, associations
-    def declare_steps(self, graph: ChartGraph) -> None:
+    def declare_steps(self, graph: ChartGraph, owner: str | None = None) -> None:
         for key, node in graph.steps.items():
             symbol = self.info.symbols.get(key)
             if symbol is None or symbol.implicit != "step":
                 self.refused = True  # its name was refused (reported by the checker): the chart cannot be built
                 continue
-            slots = StepSlots(node.step, self.ctx.var_for(symbol), node.initial)
+            slots = StepSlots(node.step, self.ctx.var_for(symbol), node.initial, owner)
             if node.step.entry or node.step.exit:
                 hint = f"SFC_{key}"
                 slots.entered = self.ctx.hidden(f"{hint}_IN", BOOL)
@@ -264,12 +319,24 @@ class SfcLowering:
             self.steps[key] = slots
             for which in ("entry", "exit"):
                 name = getattr(node.step, which)
-                if name and self.body.action(name) is None:
+                action = self.body.action(name) if name else None
+                if name and action is None:
                     self.report(
                         "SFC-ACTION",
                         f"the {which} action of step {node.step.name} is {name!r}, which is no action of this POU",
                         node.step.id,
+                        None if owner is None else self.inner_file(owner),
                     )
+                elif action is not None:
+                    if isinstance(action.body, SfcChart):
+                        self.report(
+                            "SFC-ACTION",
+                            f"the {which} action of step {node.step.name} is {action.name}, which is written in SFC: "
+                            "a chart runs while its action is active, so associate it (N) instead",
+                            node.step.id,
+                            None if owner is None else self.inner_file(owner),
+                        )
+                    self.use(action.name, owner, node.step.id)
         fan_out: dict[str, int] = {}
         for transition in graph.transitions:
             for source in transition.sources:
@@ -297,12 +364,39 @@ class SfcLowering:
                 )
                 continue
             self.flags[name] = self.ctx.var_for(symbol)
+        symbol = self.info.symbols.get(TABLE_FLAG) or self.ctx.checked.globals.get(TABLE_FLAG)
+        if symbol is not None and symbol.implicit is None:
+            problem = table_problem(symbol)
+            if problem is not None:
+                self.report("SFC-FLAG", problem, file=f"{self.pou.name}/declarations" if symbol.pou else "globals")
+            else:
+                self.flags[TABLE_FLAG] = self.ctx.var_for(symbol)
+        table, text = self.flag(TABLE_FLAG), self.flag("SFCERRORANALYZATION")
+        if table is not None or text is not None:
+            self.analysis = Analysis(self.ctx, self.info, self.ops, table, text)
 
-    def associate(self, graph: ChartGraph) -> None:
+    def use(self, action: str, owner: str | None, element: str) -> None:
+        """Records the chart an action is used in; a second chart is a located error."""
+        key = action.upper()
+        if key in self.used_in and self.used_in[key] != owner:
+            where = lambda o: "the POU's chart" if o is None else f"the chart of action {self.inner_name(o)}"  # noqa: E731
+            self.report(
+                "SFC-ACTION",
+                f"the action {action} is used in {where(self.used_in[key])} and in {where(owner)}: an action belongs "
+                "to one chart",
+                element,
+                None if owner is None else self.inner_file(owner),
+            )
+            return
+        self.used_in[key] = owner
+
+    def make_controls(self) -> None:
         for action in sorted(self.body.actions, key=lambda a: a.name.upper()):
             symbol = self.info.symbols.get(action.name.upper())
             if symbol is not None and symbol.implicit == "action":
                 self.controls[action.name.upper()] = Control(action.name, self.ctx.var_for(symbol))
+
+    def associate(self, graph: ChartGraph, owner: str | None = None) -> None:
         for node in graph.steps.values():
             slots = self.steps.get(node.step.name.upper())
             if slots is None:
@@ -311,6 +405,8 @@ class SfcLowering:
                 control = self.control_for(association.action, association.id)
                 if control is None:
                     continue
+                self.use(control.name, owner, association.id)
+                control.owner = owner
                 pin = PIN[association.qualifier]
                 control.inputs.setdefault(pin, []).append(node.step.name.upper())
                 timed = association.qualifier in TIMED_QUALIFIERS
@@ -332,7 +428,7 @@ class SfcLowering:
                     self.ops.read(
                         text, At(None, node.step.id), f"the {which.replace('_', ' ')}", st_types.Elementary("TIME")
                     )
-        if any(s.step.max_time for s in self.steps.values()) and "SFCERROR" not in self.flags:
+        if owner is None and any(s.step.max_time for s in self.steps.values()) and "SFCERROR" not in self.flags:
             self.report(
                 "SFC-FLAG",
                 "a step has a maximum time, but the POU declares no SFCError: the limit is not checked "
@@ -412,6 +508,8 @@ class SfcLowering:
         for name in ("SFCERRORSTEP", "SFCERRORPOU"):
             if (flag := self.flag(name)) is not None:
                 out.append(Assign(flag, Const("", flag.type), origin))
+        if self.analysis is not None:
+            out += self.analysis.clear(origin)
         return out
 
     def reset_chart(self, graph: ChartGraph) -> list[Stmt]:
@@ -424,9 +522,10 @@ class SfcLowering:
             for flag in (slots.memory, slots.entered, slots.left):
                 if flag is not None:
                     out.append(Assign(flag, FALSE, origin))
-        initial = next((s for s in self.steps.values() if s.initial), None)
-        if initial is not None:
-            out.append(Assign(initial.x, TRUE, origin))
+        for slots in self.steps.values():
+            if slots.initial:  # of the POU's chart and of every action's chart
+                out.append(Assign(slots.x, TRUE, origin))
+        initial = next((s for s in self.steps.values() if s.initial and s.owner is None), None)
         for control in self.controls.values():
             inputs = [(pin, FALSE) for pin in PIN.values() if pin in control.inputs and pin != "R"] + [("R", TRUE)]
             out.append(FbCall(control.var, inputs, [], origin))
@@ -442,9 +541,11 @@ class SfcLowering:
         return FbCall(slots.var, inputs, [], self.origin(slots.step.id))
 
     # ------------------------------------------------------------ 2. the steps
-    def step_phase(self) -> list[Stmt]:
+    def step_phase(self, owner: str | None) -> list[Stmt]:
         out: list[Stmt] = []
         for slots in self.steps.values():
+            if slots.owner != owner:
+                continue
             origin = self.origin(slots.step.id)
             out.append(self.call_step(slots))
             if slots.memory is not None:
@@ -480,14 +581,19 @@ class SfcLowering:
             record.append(Assign(where, Const(slots.step.name, where.type), origin))
         if (pou := self.flag("SFCERRORPOU")) is not None:
             record.append(Assign(pou, Const(self.pou.name, pou.type), origin))
+        graph = self.graph_made if slots.owner is None else self.inner.get(slots.owner)
+        if self.analysis is not None and graph is not None:
+            key = slots.step.name.upper()
+            leaving = [t.transition for t in graph.evaluation_order() if key in t.sources]
+            record += self.analysis.record([(t.condition, t.id) for t in leaving], origin)
         return If([(_and(*terms), record)], [], origin)
 
     # ------------------------------------------------------------ 3. action control
-    def control_phase(self) -> list[Stmt]:
+    def control_phase(self, owner: str | None) -> list[Stmt]:
         out: list[Stmt] = []
         origin = self.origin()
         for control in self.controls.values():
-            if not control.inputs:
+            if not control.inputs or control.owner != owner:
                 continue
             for step, time, _, element in control.times:
                 assign = Assign(_member(control.var, "T", TIME), time, self.origin(element))
@@ -505,13 +611,15 @@ class SfcLowering:
         return out
 
     # ------------------------------------------------------------ 4. the actions
-    def action_passes(self) -> list[tuple[SfcAction, dict[int, list[str]]]]:
-        """Every action (alphabetical) with the passes it runs in: EXIT_PASS and ENTRY_PASS with the steps (upper
-        case) whose leaving or entering runs it, FINAL_PASS and ACTIVE_PASS (no steps) when steps associate it.
-        (The ST export writes the same passes.)"""
+    def action_passes(self, owner: str | None = None) -> list[tuple[SfcAction, dict[int, list[str]]]]:
+        """Every action of one chart (``owner``: None for the POU's, else the SFC action's; alphabetical) with the
+        passes it runs in: EXIT_PASS and ENTRY_PASS with the steps (upper case) whose leaving or entering runs it,
+        FINAL_PASS and ACTIVE_PASS (no steps) when steps associate it. (The ST export writes the same passes.)"""
         out = []
         for action in sorted(self.body.actions, key=lambda a: a.name.upper()):
             key = action.name.upper()
+            if self.used_in.get(key) != owner:
+                continue
             passes: dict[int, list[str]] = {}
             for name, slots in self.steps.items():
                 if slots.leaving is not None and (slots.step.exit or "").upper() == key:
@@ -531,12 +639,15 @@ class SfcLowering:
             out.append((action, passes))
         return out
 
-    def action_blocks(self) -> list[Block]:
-        """Each action's body once, behind a jump that skips it unless this pass runs it; the passes loop."""
-        counter = self.ctx.hidden("SFC_PASS", INT, var_class="VAR_TEMP")
+    def action_blocks(self, owner: str | None) -> list[Block]:
+        """Each action's body once, behind a jump that skips it unless this pass runs it; the passes loop (one loop
+        per chart: the POU's, and inside an SFC action's body its own)."""
+        suffix = "" if owner is None else f"_{owner}"
+        counter = self.ctx.hidden(f"SFC_PASS{suffix}", INT, var_class="VAR_TEMP")
+        loop = f"{PASS_LABEL}{suffix}"
         runs: list[tuple[SfcAction, Expr]] = []
         passes: set[int] = set()
-        for action, wanted in self.action_passes():
+        for action, wanted in self.action_passes(owner):
             passes |= set(wanted)
             control = self.controls.get(action.name.upper())
             terms: list[Expr] = []
@@ -556,7 +667,7 @@ class SfcLowering:
             return []
         first, last = min(passes), max(passes)
         origin = self.origin()
-        blocks = [Block([Assign(counter, Const(first, INT), origin)], origin), Block([], origin, PASS_LABEL)]
+        blocks = [Block([Assign(counter, Const(first, INT), origin)], origin), Block([], origin, loop)]
         for action, run in runs:
             skip = f"__SFC_SKIP_{action.name.upper()}"
             body = self.action_body(action, skip)
@@ -568,7 +679,7 @@ class SfcLowering:
         more = Binary("LE", counter, Const(last, INT), BOOL)
         blocks.append(
             Block(
-                [Assign(counter, Binary("ADD", counter, Const(1, INT), INT), origin), Jump(PASS_LABEL, more, origin)],
+                [Assign(counter, Binary("ADD", counter, Const(1, INT), INT), origin), Jump(loop, more, origin)],
                 origin,
             )
         )
@@ -590,9 +701,34 @@ class SfcLowering:
                 ]
             if isinstance(action.body, (ld.LdBody, fbd.FbdBody)):
                 return self.diagram(action.body, action.language, body, skip)
+            if isinstance(action.body, SfcChart):
+                return self.inner_chart(action)
             return []
         finally:
             self.ctx.default_file = None
+
+    def inner_chart(self, action: SfcAction) -> list[Block]:
+        """The body of an action written in SFC: its chart's scan while the action is active (Q); in its final run
+        (Q FALSE) the chart closes: its steps are left (their exit actions and the final runs of their actions
+        run), no transition fires, and its initial step is set again for the next activation (docs/sfc.md)."""
+        owner = action.name.upper()
+        graph = self.inner.get(owner)
+        control = self.controls.get(owner)
+        if graph is None or control is None:
+            return []
+        origin = Origin(self.name, body=f"actions/{action.name}")
+        closing = self.ctx.hidden(f"SFC_{owner}_CLOSING", BOOL, var_class="VAR_TEMP")
+        mine = [slots for slots in self.steps.values() if slots.owner == owner]
+        start: list[Stmt] = [Assign(closing, _not(control.member("Q")), origin)]
+        start.append(If([(closing, [self.call_step(slots, False) for slots in mine])], [], origin))
+        blocks = [Block(start + self.step_phase(owner) + self.control_phase(owner), origin)]
+        blocks += self.action_blocks(owner)
+        closed = f"__SFC_CLOSED_{owner}"
+        blocks.append(Block([Jump(closed, closing, origin)], origin))
+        blocks.append(Block(self.inner_conditions.get(owner, []) + self.evolution(graph, owner), origin))
+        reopen = [Assign(slots.x, TRUE, origin) for slots in mine if slots.initial]
+        blocks.append(Block([If([(closing, reopen)], [], origin)], origin, closed))
+        return blocks
 
     def diagram(self, networks: ld.LdBody | fbd.FbdBody, language: str, body: str, skip: str) -> list[Block]:
         stand_in = self.pou.model_copy(update={"language": language, "body": networks})
@@ -699,7 +835,6 @@ class SfcLowering:
     def conditions(self, graph: ChartGraph) -> list[Stmt]:
         """Every chart transition's condition into a hidden flag, with a probe: its value for the online view."""
         out: list[Stmt] = []
-        self.condition_vars: dict[int, Var] = {}
         for transition in graph.transitions:
             element = transition.transition
             value = self.condition(element.condition, element.id, "the condition")
@@ -711,7 +846,7 @@ class SfcLowering:
                 out.append(Probe(f"{element.id}.COND", flag, self.origin()))
         return out
 
-    def evolution(self, graph: ChartGraph) -> list[Stmt]:
+    def evolution(self, graph: ChartGraph, owner: str | None = None) -> list[Stmt]:
         out: list[Stmt] = []
         fired: dict[int, Var] = {}
         tip = self.flag("SFCTIP")
@@ -758,11 +893,13 @@ class SfcLowering:
                     enter.append(Assign(slots.entered, TRUE, origin))
             out.append(If([(fired[id(transition)], enter)], [], origin))
         origin = self.origin()
+        if owner is not None:  # the flags are about the POU's chart
+            return out
         if (trans := self.flag("SFCTRANS")) is not None and fired:
             out.append(Assign(trans, _or(fired.values()), origin))
         if (current := self.flag("SFCCURRENTSTEP")) is not None:
             out.append(Assign(current, Const("", current.type), origin))
-            for slots in self.steps.values():  # drawing order: the right-most active step is the last one
+            for slots in (s for s in self.steps.values() if s.owner is None):  # drawing order: right-most last
                 out.append(If([(slots.x, [Assign(current, Const(slots.step.name, current.type), origin)])], [], origin))
         return out
 

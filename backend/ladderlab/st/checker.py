@@ -276,6 +276,8 @@ class ProjectChecker:
         std = stdlib.function_block(upper)
         if std is not None:
             return t.FbType(std.name, std=std)
+        if upper == t.EXPRESSION_RESULT:
+            return t.expression_result()
         if upper.startswith("ANY"):
             report("ST-UNKNOWN-TYPE", f"'{spec.name}' is a generic type: it is only used by standard functions", spec)
             return ERROR

@@ -156,6 +156,27 @@ def elementary(name: str) -> Type | None:
     return Elementary(canonical) if canonical in ELEMENTARY else None
 
 
+#: CODESYS's ``ExpressionResult`` (library Analyzation), the element type of the SFC flag
+#: ``SFCErrorAnalyzationTable`` (docs/sfc.md): one part of a transition condition that holds the transition.
+#: Built in, so a chart declares the flag as in CODESYS; a user TYPE of the same name takes precedence.
+EXPRESSION_RESULT = "EXPRESSIONRESULT"
+
+
+@functools.cache  # one type: StructType compares by identity
+def expression_result() -> StructType:
+    string = StringType(False)
+    return StructType(
+        "ExpressionResult",
+        {
+            "NAME": ("name", string),
+            "ADDRESS": ("address", string),
+            "COMMENT": ("comment", string),
+            "VALUE": ("value", BOOL),
+            "FAILED": ("failed", BOOL),
+        },
+    )
+
+
 def category(t: Type) -> str | None:
     if isinstance(t, Elementary):
         return t.category

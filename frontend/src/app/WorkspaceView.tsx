@@ -32,7 +32,7 @@ import { coverageMarks, coverageOf } from "../tests/coverage";
 import { testsStore, useTests } from "../tests/store";
 import { runsOf } from "../store/tasks";
 import { useDiagramPou } from "../ld/useDiagramPou";
-import { elementText as sfcElementText, type SfcBody } from "../sfc/model";
+import { partAt, elementText as sfcElementText, type SfcBody } from "../sfc/model";
 import { ExportMenu } from "../interchange/ExportMenu";
 import { Keyboard, PanelBottomClose, PanelBottomOpen, PanelLeftClose, PanelLeftOpen, Save } from "lucide-react";
 import { Splitter } from "../ui/Splitter";
@@ -626,9 +626,12 @@ export function WorkspaceView() {
   );
 
   const networksOf = useCallback(
-    (pouName: string) => {
-      const body = pouNamed(project, pouName)?.body;
-      return body && typeof body === "object" && "networks" in body ? (body.networks ?? []).map((n) => n.id) : [];
+    (pouName: string, part?: string | null) => {
+      const pou = pouNamed(project, pouName);
+      const body = part && pou?.language === "sfc" ? partAt(pou.body as SfcBody, part)?.body : pou?.body;
+      return body && typeof body === "object" && "networks" in body
+        ? ((body as { networks?: { id: string }[] }).networks ?? []).map((n) => n.id)
+        : [];
     },
     [project],
   );

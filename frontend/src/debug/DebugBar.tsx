@@ -10,8 +10,9 @@ import type { Place } from "./reveal";
 import { useDebug } from "./store";
 
 export interface DebugBarProps {
-  /** Network ids of a POU in order (for "network 2"), empty when it has no diagram. */
-  networksOf(pou: string): string[];
+  /** Network ids of a POU (or of its SFC action or transition `part`, "actions/Fill") in order (for "network 2"),
+   * empty when it has no diagram. */
+  networksOf(pou: string, part?: string | null): string[];
   /** An element of a POU in words when its editor knows it ("step Rinse"), else null. */
   elementText?(pou: string, id: string): string | null;
   /** Shows a location in its editor (opens the POU, selects the network or element, or the line). */
@@ -36,7 +37,7 @@ export function DebugBar({ networksOf, elementText, reveal }: DebugBarProps) {
         Halted at{" "}
         {describeHalt(
           halted,
-          networksOf(halted.pou),
+          networksOf(halted.pou, halted.body),
           halted.element && !halted.body ? elementText?.(halted.pou, halted.element) : null,
         )}
       </span>

@@ -65,15 +65,16 @@ export function describeBreakpoint(bp: Breakpoint, networkIds: readonly string[]
 export const partName = (body: string): string =>
   body.replace(/^actions\//, "action ").replace(/^transitions\//, "transition ");
 
-/** Where a halt is, in words: POU (instance), network/element/line; `elementText` names the element when known
- * ("step Rinse"). */
+/** Where a halt is, in words: POU (instance), network/element/line; `networkIds` are those of the body halted in
+ * (the POU's, or its SFC action's or transition's when `at.body` names one); `elementText` names the element when
+ * known ("step Rinse"). */
 export function describeHalt(at: At, networkIds: readonly string[] = [], elementText?: string | null): string {
   const parts = [
     at.instance && at.instance.toUpperCase() !== at.pou.toUpperCase() ? `${at.pou} (${at.instance})` : at.pou,
   ];
   if (at.body) parts.push(partName(at.body));
   if (at.network) {
-    const index = at.body ? -1 : networkIds.indexOf(at.network);
+    const index = networkIds.indexOf(at.network);
     parts.push(`network ${index >= 0 ? index + 1 : at.network}`);
   }
   if (at.element) parts.push(elementText ?? `element ${at.element}`);

@@ -65,6 +65,10 @@ describe("breakpoint list (issue 9: toggle a breakpoint on a network or element)
       "Blink (MAIN.B1), network 1, element c2",
     );
     expect(describeHalt({ pou: "Main", instance: "MAIN", line: 4 })).toBe("Main, line 4");
+    // in an SFC action: the network's position among the action's networks
+    expect(describeHalt({ pou: "Seq", body: "actions/Lamp", network: "copy" }, ["blink", "copy"])).toBe(
+      "Seq, action Lamp, network 2",
+    );
   });
 });
 

@@ -982,10 +982,11 @@ export const DIAGNOSTICS = {
     "PLCOPEN-UNSUPPORTED": {
       anchor: "plcopen-unsupported",
       area: "plcopen",
-      example: "a POU written in IL or SFC",
+      example:
+        "action 'Blink' of POU Main was not imported: only SFC POUs have actions in LadderLab",
       example_language: "text",
       example_note: "",
-      fix: "the POU was imported with its interface and an empty body (its text kept as comments): rewrite it in ST, LD or FBD.",
+      fix: "a POU written in ST, IL, LD or FBD carries named actions (a CODESYS/TwinCAT habit the standard keeps for SFC); LadderLab gives actions to SFC POUs only, so the action is left out and the rest of the POU imported. Move its code into the POU's body (e.g. behind an IF), into a function block called there, or write the POU in SFC.",
       severity: "warning",
       summary: "A part of the document uses what LadderLab does not support.",
     },

@@ -2,13 +2,13 @@ import { act, fireEvent, render, screen, within } from "@testing-library/react";
 import { afterEach, beforeEach, describe, expect, it, vi } from "vitest";
 import { debugStore } from "../debug/store";
 import type { SymbolTable } from "../generated/api";
-import type { Project } from "../generated/api";
+import type { Pou, Project } from "../generated/api";
 import { motorMain } from "../ld/fixtures";
 import type { ClientMessage } from "../online/protocol";
 import { emptyMonitor } from "../online/monitor";
 import { offline, onlineStore } from "../online/store";
 import { emptyWorkspace, workspaceStore } from "../store/project";
-import { BreakpointsPanel, describePlace } from "./BreakpointsPanel";
+import { BreakpointsPanel, breakpointBody, describePlace } from "./BreakpointsPanel";
 import { emptyPanels, panelsStore } from "./store";
 
 const project: Project = {
@@ -67,6 +67,35 @@ describe("Breakpoints panel (issue 9: every breakpoint of the project, enable/di
     expect(describePlace({ pou: "Main", network: "gone" }, project.pous![0], motorMain)).toBe(
       "network gone (not in the POU)",
     );
+  });
+
+  it("names the SFC action or transition a line, network or element is in, and describes it in its language", () => {
+    const seq: Pou = {
+      name: "Seq",
+      kind: "program",
+      language: "sfc",
+      declarations: "",
+      body: {
+        chart: { elements: [] },
+        actions: [
+          { name: "Fill", language: "st", body: "n := n + 1;\nm := m + n;" },
+          { name: "Lamp", language: "ld", body: motorMain },
+        ],
+        transitions: [],
+      },
+    };
+    const place = (bp: Parameters<typeof describePlace>[0]) => {
+      const { body, language } = breakpointBody(bp, seq);
+      return describePlace(bp, seq, body, language);
+    };
+    expect(place({ pou: "Seq", body: "actions/Fill", line: 2 })).toBe("action Fill, line 2: m := m + n;");
+    expect(place({ pou: "Seq", body: "actions/Lamp", element: "motor" })).toBe(
+      "action Lamp, element motor (coil Motor)",
+    );
+    expect(place({ pou: "Seq", body: "actions/Lamp", network: "gone" })).toBe(
+      "action Lamp, network gone (not in the action)",
+    );
+    expect(place({ pou: "Seq", body: "actions/Gone", line: 1 })).toBe("action Gone, line 1");
   });
 
   it("disables and enables (the simulation is told), removes one and all", () => {

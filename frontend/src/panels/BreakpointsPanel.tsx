@@ -2,11 +2,11 @@
 // enable/disable, remove, remove all, and a click shows the place in its editor. The row where the
 // scan is halted is marked.
 import type { LdBody, Pou } from "../generated/api";
-import { breakpointKey, type Breakpoint } from "../debug/breakpoints";
+import { breakpointKey, partName, type Breakpoint } from "../debug/breakpoints";
 import { revealPlace } from "../debug/reveal";
 import { debugStore, isEnabled, useDebug } from "../debug/store";
 import { locate } from "../ld/model";
-import { elementText as sfcElementText, type SfcBody } from "../sfc/model";
+import { partAt, elementText as sfcElementText, type SfcBody } from "../sfc/model";
 import type { At } from "../online/protocol";
 import { useOnline } from "../online/store";
 import { useWorkspace } from "../store/project";
@@ -33,8 +33,30 @@ function ldElementText(body: LdBody, id: string): string | null {
   }
 }
 
-/** Where a breakpoint is, in words: "network 2 seal_in: comment", "element motor (coil Motor)", "line 3: Count := Count + 1;". */
-export function describePlace(bp: Breakpoint, pou: Pou | undefined, body: Pou["body"] | undefined): string {
+/** The body a breakpoint is in and its language: the POU's, or in an SFC POU the action or named transition
+ * `bp.body` names ("actions/Fill"). */
+export function breakpointBody(
+  bp: Breakpoint,
+  pou: Pou | undefined,
+): { body: Pou["body"] | undefined; language: string | undefined } {
+  if (!bp.body || pou?.language !== "sfc") return { body: pou?.body, language: pou?.language };
+  const part = partAt(pou.body as SfcBody, bp.body);
+  return { body: part?.body as Pou["body"] | undefined, language: part?.language };
+}
+
+/** Where a breakpoint is, in words: "network 2 seal_in: comment", "element motor (coil Motor)", "line 3: Count := Count + 1;";
+ * in an SFC action or named transition, that part first ("action Fill, line 2: m := m + n;"). */
+export function describePlace(
+  bp: Breakpoint,
+  pou: Pou | undefined,
+  body: Pou["body"] | undefined,
+  language: string | undefined = pou?.language,
+): string {
+  const place = describeIn(bp, body, language);
+  return bp.body ? `${partName(bp.body)}, ${place}` : place;
+}
+
+function describeIn(bp: Breakpoint, body: Pou["body"] | undefined, language: string | undefined): string {
   const networks: Networks = body && typeof body === "object" && "networks" in body ? (body.networks ?? []) : [];
   if ("line" in bp) {
     const text = typeof body === "string" ? body.split("\n")[bp.line - 1]?.trim() : undefined;
@@ -42,16 +64,16 @@ export function describePlace(bp: Breakpoint, pou: Pou | undefined, body: Pou["b
   }
   if ("network" in bp) {
     const index = networks.findIndex((n) => n.id === bp.network);
-    if (index < 0) return `network ${bp.network} (not in the POU)`;
+    if (index < 0) return `network ${bp.network} (not in the ${bp.body ? partName(bp.body).split(" ")[0] : "POU"})`;
     const n = networks[index]!;
     const comment = n.comment?.split("\n")[0];
     return [`network ${index + 1}`, n.label ? `${n.label}:` : null, comment].filter(Boolean).join(" ");
   }
   const what =
     body && typeof body === "object"
-      ? pou?.language === "ld"
+      ? language === "ld"
         ? ldElementText(body as LdBody, bp.element)
-        : pou?.language === "sfc"
+        : language === "sfc"
           ? sfcElementText(body as SfcBody, bp.element)
           : null
       : null;
@@ -60,7 +82,7 @@ export function describePlace(bp: Breakpoint, pou: Pou | undefined, body: Pou["b
 
 /** Whether the scan halted at this breakpoint. */
 function hitBy(bp: Breakpoint, at: At | null): boolean {
-  if (!at || at.pou.toUpperCase() !== bp.pou.toUpperCase()) return false;
+  if (!at || at.pou.toUpperCase() !== bp.pou.toUpperCase() || (at.body ?? null) !== (bp.body ?? null)) return false;
   if ("network" in bp) return at.network === bp.network && !at.element;
   return "element" in bp ? at.element === bp.element : at.line === bp.line;
 }
@@ -69,17 +91,16 @@ function BreakpointRow({
   bp,
   enabled,
   pou,
-  body,
   hit,
 }: {
   bp: Breakpoint;
   enabled: boolean;
   pou: Pou | undefined;
-  body: Pou["body"] | undefined;
   hit: boolean;
 }) {
   const name = pou?.name ?? bp.pou;
-  const place = describePlace(bp, pou, body);
+  const { body, language } = breakpointBody(bp, pou);
+  const place = describePlace(bp, pou, body, language);
   const label = `${name}, ${place}`;
   const debug = debugStore.getState();
   return (
@@ -150,7 +171,6 @@ export function BreakpointsPanel() {
                 bp={bp}
                 enabled={isEnabled({ disabled }, bp)}
                 pou={pou}
-                body={pou?.body}
                 hit={hitBy(bp, at)}
               />
             );

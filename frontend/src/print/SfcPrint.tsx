@@ -1,5 +1,5 @@
 // An SFC POU on paper: the chart as the editor draws it (SfcDiagram), then each action and named transition with
-// its body (ST text, or its LD/FBD networks as the other print views draw them).
+// its body (ST text, its LD/FBD networks as the other print views draw them, or an SFC action's chart).
 import type { ReactNode } from "react";
 import type { LibraryEntry, SymbolInfo } from "../generated/api";
 import type { FbdBody } from "../fbd/model";
@@ -31,6 +31,8 @@ export function SfcPrint(props: {
           </h4>
           {typeof part.body === "string" || part.body === undefined ? (
             props.text(typeof part.body === "string" ? part.body : "")
+          ) : part.language === "sfc" ? (
+            <SfcDiagram elements={chartOf({ chart: part.body as SfcBody["chart"] })} selected={null} />
           ) : part.language === "ld" ? (
             <LdPrint body={part.body as LdBody} library={props.library} />
           ) : (

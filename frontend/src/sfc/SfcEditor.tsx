@@ -856,6 +856,7 @@ function NewPart(props: { kind: "action" | "transition"; body: SfcBody; apply(re
         <option value="st">ST</option>
         <option value="ld">LD</option>
         <option value="fbd">FBD</option>
+        {props.kind === "action" ? <option value="sfc">SFC</option> : null}
       </select>
       <button type="submit">Add {props.kind}</button>
     </form>

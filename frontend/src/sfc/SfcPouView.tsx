@@ -18,7 +18,7 @@ import { useFbdOnline } from "../fbd/useFbdOnline";
 import { useWorkspace } from "../store/project";
 import { StEditor } from "../st/StEditor";
 import { useStAssist } from "../st/useStAssist";
-import type { SfcBody } from "./model";
+import { actionChartOf, type ActionChartBody, type SfcBody } from "./model";
 import { bindSfc, sfcOnlineView } from "./online";
 import { setPartBody } from "./ops";
 import { SfcEditor, type SfcPart } from "./SfcEditor";
@@ -44,9 +44,33 @@ export function SfcPouView({
     () => checked.filter((d) => (d.pou ?? "").toUpperCase() === name.toUpperCase()),
     [checked, name],
   );
+
+  // The chart shown: the POU's, or the chart of an action written in SFC (edited as a body of its own whose
+  // actions and named transitions are the POU's; its edits are written back into the action).
+  const sfcAction =
+    part?.kind === "action" ? body.actions?.find((a) => a.name === part.name && a.language === "sfc") : undefined;
+  const [innerHistory, setInnerHistory] = useState<History<SfcBody> | null>(null);
+  const chartHistory = useMemo(() => {
+    if (!sfcAction) return history;
+    if (innerHistory && innerHistory.present.chart === sfcAction.body) return innerHistory;
+    const inner: ActionChartBody = { ...body, chart: sfcAction.body as SfcBody["chart"], enclosing: body.chart };
+    return historyOf<SfcBody>(inner);
+  }, [sfcAction, innerHistory, history, body]);
+  const shown = chartHistory.present;
+  const onChartChange = (h: History<SfcBody>) => {
+    if (!sfcAction) return setHistory(name, h);
+    setInnerHistory(h);
+    setHistory(name, record(history, withActionChart(body, h.present, sfcAction.name)));
+  };
+  const chartFile = sfcAction ? `${name}/actions/${sfcAction.name}` : `${name}/chart`;
   const chartDiagnostics = useMemo(
-    () => diagnostics.filter((d) => !d.file || d.file.toUpperCase() === `${name}/chart`.toUpperCase()),
-    [diagnostics, name],
+    () =>
+      diagnostics.filter((d) =>
+        sfcAction
+          ? d.file?.toUpperCase() === chartFile.toUpperCase()
+          : !d.file || d.file.toUpperCase() === chartFile.toUpperCase(),
+      ),
+    [diagnostics, sfcAction, chartFile],
   );
   const variables = useMemo(
     () => (table?.symbols ?? []).filter((s) => s.type.toUpperCase() === "BOOL").map((s) => s.name),
@@ -59,7 +83,7 @@ export function SfcPouView({
   const instance = useShownInstance(pou);
   const live = phase !== "offline";
   const key = `sfc:${name}`;
-  const binding = useMemo(() => (instance ? bindSfc(body, instance) : null), [body, instance]);
+  const binding = useMemo(() => (instance ? bindSfc(shown, instance) : null), [shown, instance]);
   useEffect(() => {
     onlineStore
       .getState()
@@ -93,8 +117,10 @@ export function SfcPouView({
       halted: at && at.pou.toUpperCase() === upper && !at.body ? (at.element ?? null) : null,
     };
   }, [breakpoints, at, upper]);
-  // A halt inside an action or named transition shows it.
-  const haltedPart = at && at.pou.toUpperCase() === upper && at.body ? at.body : null;
+  // A halt inside an action or named transition shows it; so does a halt at an element of an action's chart.
+  const mineHalt = at && at.pou.toUpperCase() === upper ? at : null;
+  const haltedPart =
+    mineHalt?.body ?? (mineHalt?.element ? actionChartOf(history.present, mineHalt.element) : null) ?? null;
   const [haltSeen, setHaltSeen] = useState<string | null>(null);
   if (haltedPart !== haltSeen) {
     setHaltSeen(haltedPart);
@@ -121,50 +147,45 @@ export function SfcPouView({
     </button>
   ) : null;
 
-  if (part) {
+  if (part && !sfcAction) {
     const item =
       part.kind === "action"
         ? body.actions?.find((a) => a.name === part.name)
         : body.transitions?.find((t) => t.name === part.name);
     return (
-      <div className="sfc-pou">
-        <div className="sfc-part-bar" role="navigation" aria-label="SFC parts">
-          <button type="button" onClick={() => setPart(null)}>
-            Chart
-          </button>
-          <span>
+      <PartFrame
+        title={
+          <>
             {part.kind === "action" ? "Action" : "Transition"} <strong>{part.name}</strong>
             {item ? ` (${(item.language ?? "st").toUpperCase()})` : ""}
-          </span>
-          {stepToTransition}
-        </div>
-        <div className="sfc-part">
-          {item ? (
-            <PartEditor
-              pou={pou}
-              part={part}
-              item={item}
-              diagnostics={diagnostics}
-              completions={completions}
-              readOnly={readOnly}
-              onChange={(content) =>
-                setHistory(name, record(history, setPartBody(body, part.kind, part.name, content)))
-              }
-            />
-          ) : (
-            <p className="placeholder">
-              {part.name} is no longer part of {name}.
-            </p>
-          )}
-        </div>
-      </div>
+          </>
+        }
+        extra={stepToTransition}
+        onClose={() => setPart(null)}
+      >
+        {item ? (
+          <PartEditor
+            pou={pou}
+            part={part}
+            item={item}
+            diagnostics={diagnostics}
+            completions={completions}
+            readOnly={readOnly}
+            onChange={(content) => setHistory(name, record(history, setPartBody(body, part.kind, part.name, content)))}
+          />
+        ) : (
+          <p className="placeholder">
+            {part.name} is no longer part of {name}.
+          </p>
+        )}
+      </PartFrame>
     );
   }
-  return (
+  const editor = (
     <SfcEditor
-      key={name}
-      history={history}
-      onHistoryChange={(h) => setHistory(name, h)}
+      key={chartFile}
+      history={chartHistory}
+      onHistoryChange={onChartChange}
       variables={variables}
       diagnostics={chartDiagnostics}
       online={online}
@@ -176,6 +197,46 @@ export function SfcPouView({
       onlineActions={flagCommands}
     />
   );
+  if (!sfcAction) return editor;
+  return (
+    <PartFrame
+      title={
+        <>
+          Action <strong>{sfcAction.name}</strong> (SFC)
+        </>
+      }
+      onClose={() => setPart(null)}
+    >
+      {editor}
+    </PartFrame>
+  );
+}
+
+/** An action or named transition opened: the bar back to the chart with what is open, then its editor. */
+function PartFrame(props: { title: ReactNode; extra?: ReactNode; onClose(): void; children: ReactNode }) {
+  return (
+    <div className="sfc-pou">
+      <div className="sfc-part-bar" role="navigation" aria-label="SFC parts">
+        <button type="button" onClick={props.onClose}>
+          Chart
+        </button>
+        <span>{props.title}</span>
+        {props.extra}
+      </div>
+      <div className="sfc-part">{props.children}</div>
+    </div>
+  );
+}
+
+/** The POU's body `outer` after an edit of an action's chart: `edited` is the action's chart as a body of its own
+ * (its actions and named transitions are the POU's, perhaps edited too). */
+function withActionChart(outer: SfcBody, edited: SfcBody, action: string): SfcBody {
+  const chart = edited.chart ?? { elements: [] };
+  return {
+    ...outer,
+    actions: (edited.actions ?? []).map((a) => (a.name === action ? { ...a, body: chart } : a)),
+    transitions: edited.transitions,
+  };
 }
 
 function PartEditor(props: {

@@ -66,20 +66,57 @@ export function locate(body: SfcBody, id: string): Place | undefined {
 export const steps = (body: SfcBody): SfcStep[] =>
   [...walk(chartOf(body))].map((p) => p.element).filter((e): e is SfcStep => kindOf(e) === "step");
 
-/** Every id of the body (elements and associations): new ones must differ. */
+/** The charts of actions written in SFC (docs/sfc.md "Actions written in SFC"). */
+export const actionCharts = (body: SfcBody): Sequence[] =>
+  (body.actions ?? []).flatMap((a) =>
+    a.language === "sfc" && a.body && typeof a.body === "object" && "elements" in a.body
+      ? [(a.body.elements ?? []) as Sequence]
+      : [],
+  );
+
+/** An action's chart edited as a body of its own: `enclosing` is the POU's chart, whose names and ids it must not
+ * reuse (never saved: the edit is written back into the action). */
+export type ActionChartBody = SfcBody & { enclosing?: SfcBody["chart"] };
+
+/** The part path ("actions/Seq") of the SFC action whose chart holds element `id`; null if none does. */
+export function actionChartOf(body: SfcBody, id: string): string | null {
+  const action = (body.actions ?? []).find(
+    (a) =>
+      a.language === "sfc" &&
+      a.body &&
+      typeof a.body === "object" &&
+      "elements" in a.body &&
+      locate({ chart: a.body as SfcBody["chart"] }, id) !== undefined,
+  );
+  return action ? `actions/${action.name}` : null;
+}
+
+/** Every chart of the POU: its own (or the one being edited and the POU's), then its SFC actions'. Steps and
+ * element ids are unique across all of them. */
+const allCharts = (body: ActionChartBody): Sequence[] => [
+  chartOf(body),
+  ...(body.enclosing ? [body.enclosing.elements ?? []] : []),
+  ...actionCharts(body),
+];
+
+/** Every id of the POU's charts (elements and associations): new ones must differ. */
 export function usedIds(body: SfcBody): Set<string> {
   const ids = new Set<string>();
-  for (const { element } of walk(chartOf(body))) {
-    ids.add(element.id);
-    if (kindOf(element) === "step") for (const a of (element as SfcStep).actions ?? []) ids.add(a.id);
-  }
+  for (const chart of allCharts(body))
+    for (const { element } of walk(chart)) {
+      ids.add(element.id);
+      if (kindOf(element) === "step") for (const a of (element as SfcStep).actions ?? []) ids.add(a.id);
+    }
   return ids;
 }
 
-/** Names taken by steps, actions and named transitions (upper case): a new one must differ. */
+/** Names taken by steps (of every chart), actions and named transitions (upper case): a new one must differ. */
 export function usedNames(body: SfcBody): Set<string> {
+  const stepNames = allCharts(body).flatMap((chart) =>
+    [...walk(chart)].flatMap(({ element }) => (kindOf(element) === "step" ? [(element as SfcStep).name] : [])),
+  );
   return new Set([
-    ...steps(body).map((s) => s.name.toUpperCase()),
+    ...stepNames.map((name) => name.toUpperCase()),
     ...(body.actions ?? []).map((a) => a.name.toUpperCase()),
     ...(body.transitions ?? []).map((t) => t.name.toUpperCase()),
   ]);
@@ -105,7 +142,9 @@ export function freshId(prefix: string, used: Set<string>): string {
 
 /** A step or transition in the user's words ("step Rinse", "transition Rinse.T >= T#2s"); null for other ids. */
 export function elementText(body: SfcBody, id: string): string | null {
-  const element = locate(body, id)?.element;
+  const element = allCharts(body)
+    .map((chart) => locate({ chart: { elements: chart } }, id)?.element)
+    .find(Boolean);
   if (!element) return null;
   if (kindOf(element) === "step") return `step ${(element as SfcStep).name}`;
   if (kindOf(element) === "transition") return `transition ${(element as SfcTransition).condition}`;
@@ -113,4 +152,14 @@ export function elementText(body: SfcBody, id: string): string | null {
 }
 
 /** The id of the element (or association) a probe or breakpoint names: "t3.COND" is transition t3's condition. */
+/** The action or named transition a path names ("actions/Fill", as breakpoints and halts name them), with its
+ * language; null when the chart has no such part. */
+export function partAt(body: SfcBody, path: string): { body: unknown; language: string } | null {
+  const [kind, name] = path.split("/", 2);
+  const parts: readonly { name: string; language?: string | null; body?: unknown }[] =
+    (kind === "actions" ? body.actions : kind === "transitions" ? body.transitions : null) ?? [];
+  const part = parts.find((p) => p.name.toUpperCase() === (name ?? "").toUpperCase());
+  return part ? { body: part.body, language: part.language ?? "st" } : null;
+}
+
 export const conditionProbe = (transition: string): string => `${transition}.COND`;

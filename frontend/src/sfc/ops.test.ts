@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { chartOf, isStepLike, kindOf, locate, walk, type Sequence, type SfcBody } from "./model";
+import { actionChartOf, chartOf, isStepLike, kindOf, locate, walk, type Sequence, type SfcBody } from "./model";
 import { layoutChart, neighbour } from "./layout";
 import * as ops from "./ops";
 
@@ -131,5 +131,36 @@ describe("SFC layout", () => {
     expect(layout.lines.filter((line) => line.double)).toHaveLength(2); // the divergence and the convergence
     expect(neighbour(layout, left!, "right")).toBe(right);
     expect(neighbour(layout, left!, "up")).toBe(chartOf(body)[1]!.id);
+  });
+});
+
+describe("actions written in SFC (issue 24 item 1)", () => {
+  it("a new SFC action gets a chart of its own whose step and ids are unique across the POU's charts", () => {
+    let body = chart(); // Init, t, Step1 with ids s1, t1, s2 ...
+    body = ok(ops.addAction(body, "Seq", "sfc")).body;
+    const seq = body.actions!.find((a) => a.name === "Seq")!;
+    expect(seq.language).toBe("sfc");
+    const inner = (seq.body as { elements: Sequence }).elements;
+    expect(shape(inner)).toEqual(["Seq_Init1", "transition", "jump"]);
+    const outerIds = new Set([...walk(chartOf(body))].map((p) => p.element.id));
+    expect(inner.map((e) => e.id).filter((id) => outerIds.has(id))).toEqual([]);
+    // a second one does not reuse the first one's ids or step name
+    body = ok(ops.addAction(body, "Seq2", "sfc")).body;
+    const second = (body.actions!.find((a) => a.name === "Seq2")!.body as { elements: Sequence }).elements;
+    expect(second.map((e) => e.id).filter((id) => inner.some((e) => e.id === id))).toEqual([]);
+    // a step added to the POU's chart gets an id no action chart uses
+    const step = ok(ops.insertBelow(body, chartOf(body)[0]!.id));
+    const added = [...walk(chartOf(step.body))].map((p) => p.element.id).filter((id) => !outerIds.has(id));
+    expect(added.filter((id) => [...inner, ...second].some((e) => e.id === id))).toEqual([]);
+    // edited as a body of its own, an action's chart keeps off the POU's chart (its `enclosing`)
+    const edited = { ...body, chart: { elements: inner }, enclosing: body.chart };
+    const grown = ok(ops.insertBelow(edited, inner[1]!.id)).body;
+    const fresh = [...walk(chartOf(grown))].map((p) => p.element.id).filter((id) => !inner.some((e) => e.id === id));
+    expect(fresh).toHaveLength(2);
+    expect(fresh.filter((id) => outerIds.has(id))).toEqual([]);
+    // a halt at an element of an action's chart names that action (the view opens it)
+    expect(actionChartOf(body, inner[0]!.id)).toBe("actions/Seq");
+    expect(actionChartOf(body, second[0]!.id)).toBe("actions/Seq2");
+    expect(actionChartOf(body, chartOf(body)[0]!.id)).toBeNull();
   });
 });

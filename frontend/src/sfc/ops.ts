@@ -292,15 +292,32 @@ export function removeAssociation(body: SfcBody, stepId: string, associationId: 
 
 // ------------------------------------------------------------------ actions and named transitions
 
-export type PartLanguage = "st" | "ld" | "fbd";
+export type PartLanguage = "st" | "ld" | "fbd" | "sfc";
 
 const emptyBody = (language: PartLanguage, st: string) => (language === "st" ? st : { networks: [] });
+
+/** A new action chart: an initial step, a transition FALSE and the jump back, named and numbered to be unique in
+ * the POU (steps and element ids are shared by all of its charts). */
+function emptyChart(body: SfcBody, action: string): { elements: SfcElement[] } {
+  const ids = usedIds(body);
+  const names = usedNames(body);
+  names.add(action.toUpperCase());
+  const name = freshName(`${action}_Init`, names);
+  return {
+    elements: [
+      { type: "step", id: freshId("s", ids), name, actions: [] },
+      { type: "transition", id: freshId("t", ids), condition: "FALSE" },
+      { type: "jump", id: freshId("j", ids), target: name },
+    ] as SfcElement[],
+  };
+}
 
 export function addAction(body: SfcBody, name: string, language: PartLanguage): EditResult {
   const copy = clone(body);
   const problem = nameProblem(copy, name);
   if (problem) return { error: problem };
-  (copy.actions ??= []).push({ name, language, body: emptyBody(language, "") } as SfcAction);
+  const made = language === "sfc" ? emptyChart(copy, name) : emptyBody(language, "");
+  (copy.actions ??= []).push({ name, language, body: made } as SfcAction);
   return { body: copy };
 }
 

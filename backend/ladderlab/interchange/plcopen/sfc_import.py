@@ -30,6 +30,7 @@ from ...model.sfc import (
     SfcNamedTransition,
     SfcStep,
     SfcTransition,
+    walk,
 )
 from ...model.sfc_graph import ImportedStep, ImportedTransition, UnstructuredChart, graph_chart
 from ...st import ast
@@ -118,7 +119,7 @@ class SfcImporter:
 
     def named_action(self, holder: ET.Element) -> None:
         name = holder.get("name", "")
-        made = self.body_of(self.r.child(holder, "body"), f"action {name}")
+        made = self.body_of(self.r.child(holder, "body"), f"action {name}", action=name)
         if made is not None:
             self.actions.append(SfcAction(name=name, language=made[0], body=made[1]))
 
@@ -151,13 +152,28 @@ class SfcImporter:
         self.report(f"transition {name}: its ST is neither a condition nor '{name} := condition;'", node)
         return stripped
 
-    def body_of(self, body: ET.Element | None, what: str) -> tuple[str, str | LdBody | FbdBody] | None:
+    def body_of(
+        self, body: ET.Element | None, what: str, action: str | None = None
+    ) -> tuple[str, str | LdBody | FbdBody | SfcChart] | None:
+        """An action's or named transition's body; an action's (``action``: its name) may be written in SFC."""
         language = next(self.r.elements(body), None)
         tag = local(language) if language is not None else "ST"
         if tag == "ST":
             return "st", text_content(language)
         if tag in ("LD", "FBD") and body is not None:
             return self.diagram(body, what)
+        if tag == "SFC" and action is not None and language is not None:
+            drawn = self.chart(language)
+            if drawn is None:
+                return None
+            # local ids restart in every body: the chart's element ids get the action's name, so they stay unique
+            # in the POU (probes and breakpoints name elements by id)
+            prefix = f"{action}_"
+            for element in walk(drawn.elements):
+                element.id = prefix + element.id
+                for association in element.actions if isinstance(element, SfcStep) else []:
+                    association.id = prefix + association.id
+            return "sfc", drawn
         self.report(f"{what} is written in {tag}, which LadderLab cannot import here", language)
         return None
 

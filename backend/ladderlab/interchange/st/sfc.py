@@ -25,14 +25,17 @@ from dataclasses import dataclass, field
 from ...ir import nodes as ir
 from ...ir.context import PouContext
 from ...ir.diagram_checks import canonical_label
-from ...ir.lower_sfc import ACTIVE_PASS, EXIT_PASS, FINAL_PASS, PIN, SfcLowering
+from ...ir.lower_sfc import ACTIVE_PASS, EXIT_PASS, FINAL_PASS, PIN, TABLE_FLAG, SfcLowering
+from ...ir.sfc_analysis import BOOL_FIELDS, STRING_FIELDS, Part, condition_parts
 from ...model import Diagnostic, Pou, Project, fbd, ld
-from ...model.sfc import SfcBody
+from ...model.sfc import SfcBody, SfcChart
 from ...st import ast
+from ...st import types as st_types
 from ...st.nesting import nodes
 from ...st.parser import parse_statements
+from ...st.printer import print_expression
 from ...st.sfc import action_file
-from ...st.symbols import CheckResult
+from ...st.symbols import CheckResult, Symbol
 from .body import Network, body_lines, comment, network_title
 from .elements import PouScope
 from .fbd import fbd_network
@@ -58,6 +61,19 @@ def st_sfc_pou(project: Project, pou: Pou, checked: CheckResult, diagnostics: li
     blocks = lowering.blocks()
     if any(d.severity == "error" for d in diagnostics):
         return SfcExport(None, diagnostics)
+    nested = [
+        Diagnostic(
+            code="EXPORT-UNSUPPORTED",
+            message=f"the action {action.name} is written in SFC; the ST export writes one chart per POU: "
+            "move its chart into a function block written in SFC and call that in an action",
+            pou=pou.name,
+            file=action_file(pou.name, action.name),
+        )
+        for action in pou.body.actions
+        if isinstance(action.body, SfcChart)
+    ]
+    if nested:
+        return SfcExport(None, diagnostics + nested)
     writer = _Writer(pou, checked, lowering, ir.Pou(ctx.name, "program", ctx.slots, blocks))
     text = writer.body()
     if writer.problems:
@@ -117,6 +133,15 @@ class _Writer:
             self.names[(element.id, "f")] = self.declarations.declare(f"{element.id}_fires", "BOOL", "VAR_TEMP")
         self.quit_memory = (
             self.declarations.declare("sfc_quit_mem", "BOOL", "VAR") if "SFCQUITERROR" in lowering.flags else None
+        )
+        self.analysis = lowering.analysis
+        self.analysis_count = (
+            self.declarations.declare("sfc_analysis_n", "INT", "VAR_TEMP") if self.analysis is not None else None
+        )
+        self.analysis_index = (
+            self.declarations.declare("sfc_analysis_i", "INT", "VAR_TEMP")
+            if self.analysis is not None and self.analysis.table is not None
+            else None
         )
         self.passes = lowering.action_passes()
         self.counter = (
@@ -238,6 +263,65 @@ class _Writer:
         for name in ("SFCERRORSTEP", "SFCERRORPOU"):
             if flag := self.flag(name):
                 self.line(f"{flag} := '';")
+        self.clear_analysis()
+
+    def clear_analysis(self) -> None:
+        """SFCErrorAnalyzation and every entry of SFCErrorAnalyzationTable back to empty (ir/sfc_analysis.py)."""
+        if text := self.flag("SFCERRORANALYZATION"):
+            self.line(f"{text} := '';")
+        table = self.flags.get(TABLE_FLAG)
+        if table is None or self.analysis_index is None:
+            return
+        low, high, fields = _table_shape(table)
+        index = self.analysis_index
+        self.line(f"FOR {index} := {low} TO {high} DO")
+        for upper, (name, _) in fields.items():
+            if upper in STRING_FIELDS or upper in BOOL_FIELDS:
+                empty = "''" if upper in STRING_FIELDS else "FALSE"
+                self.line(f"{INDENT}{table.name}[{index}].{name} := {empty};")
+        self.line("END_FOR;")
+
+    def record_analysis(self, key: str) -> None:
+        """The parts of the conditions leaving the step that hold them, into the table and the string."""
+        if self.analysis is None or self.analysis_count is None:
+            return
+        self.clear_analysis()
+        count = self.analysis_count
+        self.line(f"{count} := 0;")
+        table, text = self.flags.get(TABLE_FLAG), self.flag("SFCERRORANALYZATION")
+        for transition in self.graph.evaluation_order():
+            if key not in transition.sources:
+                continue
+            condition = transition.transition.condition.strip()
+            for part in condition_parts(condition, self.analysis.symbol):
+                terms = [f"NOT ({condition})", *(f"({t})" if v else f"NOT ({t})" for t, v in part.terms)]
+                self.line(f"IF {' AND '.join(terms)} THEN")
+                self.depth += 1
+                if table is not None:
+                    self.table_entry(table, part, count)
+                if text:
+                    self.line(f"IF {count} = 0 THEN")
+                    self.line(f"{INDENT}{text} := {_string(part.text)};")
+                    self.line("ELSE")
+                    self.line(f"{INDENT}{text} := CONCAT({text}, {_string(' | ' + part.text)});")
+                    self.line("END_IF;")
+                self.line(f"{count} := {count} + 1;")
+                self.depth -= 1
+                self.line("END_IF;")
+
+    def table_entry(self, table: Symbol, part: Part, count: str) -> None:
+        low, high, fields = _table_shape(table)
+        texts = {"NAME": part.text, "ADDRESS": part.address, "COMMENT": part.comment}
+        self.line(f"IF {count} <= {high - low} THEN")
+        for upper, (name, _) in fields.items():
+            target = f"{INDENT}{table.name}[{count} + {low}].{name}"
+            if upper in texts:
+                self.line(f"{target} := {_string(texts[upper])};")
+            elif upper == "VALUE":
+                self.line(f"{target} := {part.text};")
+            elif upper == "FAILED":
+                self.line(f"{target} := TRUE;")
+        self.line("END_IF;")
 
     # ------------------------------------------------------------ 2. steps
     def steps_part(self) -> None:
@@ -266,6 +350,9 @@ class _Writer:
                     self.line(f"{INDENT}{where} := '{name}';")
                 if pou:
                     self.line(f"{INDENT}{pou} := '{self.pou.name}';")
+                self.depth += 1
+                self.record_analysis(key)
+                self.depth -= 1
                 self.line("END_IF;")
 
     # ------------------------------------------------------------ 3. action control
@@ -445,3 +532,16 @@ def _items(network: ld.LdNetwork | fbd.FbdNetwork) -> list[object]:
 
 def _is_return(item: object) -> bool:
     return getattr(item, "type", None) == "return"
+
+
+def _string(text: str) -> str:
+    return print_expression(ast.StringLit(text))
+
+
+def _table_shape(table: Symbol) -> tuple[int, int, dict[str, tuple[str, st_types.Type]]]:
+    """The bounds and fields of an SFCErrorAnalyzationTable the lowering accepted (ir/sfc_analysis.table_problem)."""
+    ty = table.type
+    assert isinstance(ty, st_types.ArrayType) and ty.dims[0] is not None
+    assert isinstance(ty.element, st_types.StructType)
+    low, high = ty.dims[0]
+    return low, high, ty.element.fields
