@@ -32,7 +32,7 @@ from dataclasses import dataclass, replace
 
 from ..engine.inputs import AppliedInput, InputEvent
 from ..engine.simulation import Simulation
-from ..engine.state import SimState
+from ..engine.state import PathTable, SimState
 
 #: The default memory budget of one simulation's history.
 DEFAULT_BUDGET_BYTES = 256 * 1024 * 1024
@@ -47,11 +47,11 @@ class Checkpoint:
     """The state before scan ``scan`` (after scan ``scan - 1``), pickled and compressed."""
 
     scan: int
-    blob: bytes
+    blob: bytes  # the state, its slot paths numbered in the history's PathTable
 
-    def state(self) -> SimState:
+    def state(self, paths: PathTable) -> SimState:
         state: SimState = pickle.loads(zlib.decompress(self.blob))
-        return state
+        return paths.unshared(state)
 
 
 class History:
@@ -78,6 +78,7 @@ class History:
         self.log_bytes = log_bytes
         self._clock = clock
         self.checkpoints: list[Checkpoint] = []
+        self._paths = PathTable()
         self._inputs: dict[int, list[bytes]] = {}  # scan -> the inputs applied for it, as JSON, in order
         self._times: dict[int, float] = {}  # scan -> its virtual time, for scans the schedule did not choose
         self._barriers: set[int] = set()  # scans a replay cannot redo: viewed from the checkpoint after them
@@ -165,7 +166,7 @@ class History:
         start = self._clock()
         if self._after is not None and self._since:
             self._scan_s = (start - self._after) / self._since
-        state = replace(self.live.state(), pending=())  # the waiting inputs are in the log when they apply
+        state = self._paths.shared(replace(self.live.state(), pending=()))  # waiting inputs: in the log when applied
         blob = zlib.compress(pickle.dumps(state, pickle.HIGHEST_PROTOCOL), 1)
         self._after = self._clock()
         self._capture_s = self._after - start
@@ -301,7 +302,7 @@ class History:
         return self.checkpoints[index]
 
     def _restore(self, checkpoint: Checkpoint) -> None:
-        self._replay_sim().restore(checkpoint.state())
+        self._replay_sim().restore(checkpoint.state(self._paths))
         self._replay_at = checkpoint.scan
 
     def _replay_sim(self) -> Simulation:
