@@ -51,7 +51,7 @@ from .doubles import Mocks
 from .inputs import AppliedInput, Injection, InputEvent, InputRefused, immediate, injection
 from .paths import Location, LocationReader, Resolver, Roots, UnknownPath, coerce_for, leaves, plain
 from .process_image import AREA_ORDER, IoPoint, ProcessImage, key_of, located_address, view_kind
-from .state import SimState, data_of, holds_references, restore_into
+from .state import SimState, data_of, holds_references, restore_into, restore_list
 from .tasks import DEFAULT_WATCHDOG_S, Schedule, Task, task_table
 
 #: Scan times are sampled: the wall clock is read around every SAMPLE_EVERY-th scan (the first included), so a
@@ -905,7 +905,14 @@ class Simulation:
             {name: (pou, dict(self._links.get(name, {}))) for name, (_obj, pou) in self._attached.items()},
             {path: (fault.event.to_json(), fault.state()) for path, (_, fault) in self._injections.items()},
             tuple(event.to_json() for event, _, _ in self._pending),
+            {name: data_of(self._ns[name]) for name in self._function_probe_lists()},
         )
+
+    def _function_probe_lists(self) -> list[str]:
+        """The module-level probe lists of the FUNCTION POUs (values and stamps; a function has no instance to hold
+        them), in the monitor and debug variants: a restored scan shows the power flow of the functions it ran."""
+        escaped = [names.escape(pou.name) for pou in self._context.pous.values() if pou.kind == "function"]
+        return [name for key in escaped for name in (f"ll_pr_{key}", f"ll_px_{key}") if name in self._ns]
 
     def restore(self, state: SimState) -> None:
         """Make this simulation's state ``state`` (captured from a simulation of the same program): variables,
@@ -923,6 +930,8 @@ class Simulation:
             restore_into(self._attached[name][0], data)  # type: ignore[arg-type]  # captured slot data is a dict
         for page, data in state.globals.items():
             restore_into(self._ns[page], data)  # type: ignore[arg-type]  # captured slot data is a dict
+        for name, data in state.functions.items():
+            restore_list(self._ns[name], data)  # type: ignore[arg-type]  # captured probe lists are lists
         self._image.restore(state.image)
         self._schedule.time_ms = state.time_ms
         for task, (due, stopped, trigger) in zip(self._tasks, state.tasks):

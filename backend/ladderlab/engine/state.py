@@ -61,6 +61,7 @@ class SimState:
     #: canonical path -> (the fault's event as JSON, what it carries between scans: Injection.state())
     injections: dict[str, tuple[dict, object]] = field(default_factory=dict)
     pending: tuple[dict, ...] = ()  # inputs waiting for the next scan start, as JSON, in order
+    functions: dict[str, object] = field(default_factory=dict)  # FUNCTION POUs' probe lists by name (monitoring)
 
 
 def capture(sim: Simulation) -> SimState:
@@ -242,13 +243,14 @@ def restore_into(target: object, data: object) -> None:
         if isinstance(value, (tuple, dict)):
             restore_into(operator.attrgetter(path)(target), value)
         elif isinstance(value, list):
-            _restore_list(operator.attrgetter(path)(target), value)
+            restore_list(operator.attrgetter(path)(target), value)
         else:
             owner, _, name = path.rpartition(".")
             setattr(operator.attrgetter(owner)(target) if owner else target, name, value)
 
 
-def _restore_list(target: list, data: list) -> None:
+def restore_list(target: list, data: list) -> None:
+    """Write captured list data (an array, a probe list) into an existing list, in place."""
     if _SCALAR_TYPES.issuperset(map(type, data)):
         target[:] = data  # in place: references into the list stay valid
         return
@@ -256,7 +258,7 @@ def _restore_list(target: list, data: list) -> None:
         if isinstance(value, (tuple, dict)):
             restore_into(target[index], value)
         elif isinstance(value, list):
-            _restore_list(target[index], value)
+            restore_list(target[index], value)
         elif value is not REFERENCE:
             target[index] = value
 
