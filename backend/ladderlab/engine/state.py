@@ -6,8 +6,9 @@ program (another one included: a test's failure opened online, a later scan hist
                                   # the clock, the tasks' next due times and stopped flags, the forces, the
                                   # attached instances
 
-The data holds no object of the simulation's generated module: instances are dicts of their slots, arrays
-lists, scalars as stored; VAR_IN_OUT references are left out (a call binds them again; an attached
+The data holds no object of the simulation's generated module: instances are their slots' paths and values
+(read and written by code generated per class: ``_Plan``, ``_setter``), arrays lists, scalars as stored, and
+the FUNCTION POUs' probe lists; VAR_IN_OUT references are left out (a call binds them again; an attached
 instance's links are bound again by ``attach``), and so are REF_TO / POINTER TO values (restoring starts them as
 declared, NULL or ``REF(x)`` of the target's own ``x``; one set by the body is set again when the body runs).
 So a state pickles, and restoring needs a simulation of the same compiled program (same declarations), not the
@@ -17,11 +18,13 @@ valid.
 
 from __future__ import annotations
 
+import functools
 import keyword
 import operator
+import weakref
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field, replace
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from .codegen.runtime import UNSET, Ref
 
@@ -121,15 +124,16 @@ def holds_references(data: object) -> bool:
 
 class _Plan:
     """How to read an instance class's state fast: ``leaves``, the paths of its scalar slots and of the scalar
-    slots of the instances nested in it (``T1.Q``: an FB instance's outputs), all read by one
-    ``operator.attrgetter`` (in C; no Python call per FB instance, which made a checkpoint of 10,000 LD networks
-    cost 50 ms), and ``structured``, the paths read one by one (arrays, references, slots never assigned).
+    slots of the instances nested in it (``T1.Q``: an FB instance's outputs), all read by one generated
+    function (``_generated``; no Python call per FB instance: the generic walk made a checkpoint of 10,000 LD
+    networks cost 50 ms), and ``structured``, the paths read one by one (arrays, references, slots never
+    assigned).
 
     The plan is learnt from the values met: when a leaf holds something else than a scalar, the plan is learnt
     again with that path structured, so plans only widen and every instance of a class soon shares one
     (and one ``leaves`` tuple, which a history pickles once: simulation/history.py)."""
 
-    __slots__ = ("leaves", "structured", "_get")
+    __slots__ = ("_get", "leaves", "structured")
 
     def __init__(self, leaves: list[str], structured: list[str]) -> None:
         self.leaves = tuple(leaves)
@@ -263,25 +267,23 @@ def restore_list(target: list, data: list) -> None:
             target[index] = value
 
 
+@functools.lru_cache(maxsize=4096)  # one per class of the programs restored lately
 def _setter(paths: tuple[str, ...]) -> Callable[[object, tuple[object, ...]], None]:
     """A function assigning ``values`` to the slot paths ``paths`` in one statement (``o.a, o.T1.Q, ... =
-    values``), generated once per tuple of paths: ten times faster than a setattr per slot."""
-    setter = _SETTERS.get(paths)
-    if setter is None:
-        body = "".join(f"o.{path}, " for path in paths) + "= values" if paths else "pass"
-        setter = _SETTERS[paths] = _generated(f"def set(o, values):\n    {body}\n", paths)  # type: ignore[assignment]
-    return setter
+    values``): ten times faster than a setattr per slot."""
+    body = "".join(f"o.{path}, " for path in paths) + "= values" if paths else "pass"
+    return _generated(f"def set(o, values):\n    {body}\n", paths)
 
 
-def _generated(source: str, paths: Iterable[str]) -> Callable[..., object]:
+def _generated(source: str, paths: Iterable[str]) -> Callable[..., Any]:
     """The function ``source`` defines, reading or writing slots by their paths: generated code, because
     CPython specialises each attribute access of it (the inline caches of 3.11), where ``getattr`` by name
     misses the type attribute cache on a program of thousands of slots and costs ten times more."""
     if not all(part.isidentifier() and not keyword.iskeyword(part) for path in paths for part in path.split(".")):
         raise ValueError("a captured state's slot paths are not identifiers")
     namespace: dict[str, object] = {}
-    exec(source, namespace)  # noqa: S102  # attribute paths checked above
-    function: Callable[..., object] = next(v for k, v in namespace.items() if k != "__builtins__")  # type: ignore[assignment]
+    exec(source, namespace)  # the paths are identifiers (checked above)
+    function: Callable[..., Any] = next(v for k, v in namespace.items() if k != "__builtins__")  # type: ignore[assignment]
     return function
 
 
@@ -291,8 +293,7 @@ class _Missing:
 
 _MISSING = _Missing()
 _SCALAR_TYPES = frozenset({bool, int, float, str, bytes, type(None), type(UNSET)})
-_PLANS: dict[type, _Plan] = {}
-_SETTERS: dict[tuple[str, ...], Callable[[object, tuple[object, ...]], None]] = {}
+_PLANS: weakref.WeakKeyDictionary[type, _Plan] = weakref.WeakKeyDictionary()  # a recompiled program's go
 
 
 def _slot_names(cls: type) -> list[str]:
