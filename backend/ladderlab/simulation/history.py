@@ -83,6 +83,7 @@ class History:
         self._times: dict[int, float] = {}  # scan -> its virtual time, for scans the schedule did not choose
         self._barriers: set[int] = set()  # scans a replay cannot redo: viewed from the checkpoint after them
         self._errors: set[int] = set()  # scans that ended with a runtime error or a watchdog trip
+        self._marks: dict[int, set[str]] = {}  # scan -> what else happened in it: a breakpoint hit, a trace trigger
         self.marked = 0  # grows with every newly marked scan (an input, an error): the timeline refetches marks
         self.log_size = 0  # bytes of _inputs and _times
         self.checkpoint_size = 0
@@ -140,6 +141,13 @@ class History:
             self._barriers.add(applied.scan)
             if applied.event.kind == "reset":  # it ended the halted scan: what follows starts from here
                 self._checkpoint()
+
+    def mark(self, scan: int, kind: str) -> None:
+        """Mark ``scan`` on the timeline with something the runner saw (``breakpoint``: it halted there, ``trigger``:
+        a trace's trigger fired at its end); no input, so nothing to replay."""
+        if kind not in self._marks.setdefault(scan, set()):
+            self._marks[scan].add(kind)
+            self.marked += 1
 
     def _scanned(self, scan: int, time_ms: float, scheduled: bool) -> None:
         if not scheduled:
@@ -204,21 +212,24 @@ class History:
                 self.log_size -= 16
             self._barriers = {scan for scan in self._barriers if scan >= first}
             self._errors = {scan for scan in self._errors if scan >= first}
+            self._marks = {scan: kinds for scan, kinds in self._marks.items() if scan >= first}
             if self._replay_at is not None and self._replay_at < first:
                 self._replay_at = None
 
     # ------------------------------------------------------------------ seeking
 
     def marks(self, limit: int = 1000) -> list[tuple[int, list[str]]]:
-        """The newest ``limit`` scans with an input or an error, for the timeline: (scan, what happened in it:
-        the inputs' kinds - write, force, release, panel, fault, reset... - and ``error``)."""
-        scans = sorted(self._inputs.keys() | self._errors)[-limit:]
+        """The newest ``limit`` scans with an input, an error or a mark, for the timeline: (scan, what happened in
+        it: the inputs' kinds - write, force, release, panel, fault, reset... -, ``error``, ``breakpoint``,
+        ``trigger``)."""
+        scans = sorted(self._inputs.keys() | self._errors | self._marks.keys())[-limit:]
         return [
             (
                 scan,
                 sorted(
                     {str(line["kind"]) for line in self.inputs_of(scan)}
                     | ({"error"} if scan in self._errors else set())
+                    | self._marks.get(scan, set())
                 ),
             )
             for scan in scans
