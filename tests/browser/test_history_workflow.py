@@ -135,3 +135,33 @@ def test_go_back_to_a_scan_and_see_the_diagram_as_it_was(page, server):
     cycle.click()
     scan.filter(has_text=re.compile("^3$")).wait_for()
     _coil(page, "off")  # this branch never had the write of Start
+
+
+def test_the_timeline_marks_the_scan_a_breakpoint_halted_in(page, server):
+    """Issue 23 item 3: a breakpoint on network 2 halts the third scan; once that scan completes, the timeline
+    marks it as a breakpoint hit (its own colour), and a click on the mark shows that scan."""
+    page.goto(server)
+    open_pou(page, "motor", "Main")
+    page.locator('g.ld-element[data-id="motor"]').wait_for()
+    go_online(page, run=False)
+    scan = page.get_by_test_id("scan-count")
+    cycle = page.get_by_role("button", name="Single cycle")
+    for number in (1, 2):
+        cycle.click()
+        scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
+    page.get_by_role("button", name="Toggle breakpoint on network 2").click()
+    cycle.click()
+    page.get_by_role("region", name="Debugging").get_by_text("Halted at MAIN, network 2").wait_for()
+    page.get_by_role("button", name="Toggle breakpoint on network 2").click()
+    cycle.click()  # the rest of the halted scan
+    page.get_by_role("status", name="Online state").filter(has_text="Online · stopped").wait_for()
+    scan.filter(has_text=re.compile("^3$")).wait_for()
+    cycle.click()
+    scan.filter(has_text=re.compile("^4$")).wait_for()
+
+    timeline = page.get_by_role("group", name="Scan history")
+    mark = timeline.get_by_role("button", name="scan 3: breakpoint")
+    mark.wait_for()
+    assert mark.get_attribute("class") == "history-mark breakpoint"
+    mark.click()
+    page.get_by_role("status", name="History view").filter(has_text="Viewing scan 3 (history)").wait_for()
