@@ -165,3 +165,50 @@ def test_the_timeline_marks_the_scan_a_breakpoint_halted_in(page, server):
     assert mark.get_attribute("class") == "history-mark breakpoint"
     mark.click()
     page.get_by_role("status", name="History view").filter(has_text="Viewing scan 3 (history)").wait_for()
+
+
+def test_the_trace_chart_and_the_timeline_move_together(page, server):
+    """Issue 23 item 3: Motor traced over six single cycles (off in scans 1-3, on from scan 4, Start written
+    before it); a click on the chart's second sample shows scan 2 from the history (the coil off, the legend
+    FALSE), and the timeline moved to scan 5 puts the chart's cursor on scan 5's sample (legend TRUE)."""
+    page.goto(server)
+    open_pou(page, "motor", "Main")
+    page.locator('g.ld-element[data-id="motor"]').wait_for()
+    go_online(page, run=False)
+    page.get_by_role("tab", name="Trace").click()
+    page.get_by_label("Variable to trace").fill("Motor")
+    page.keyboard.press("Enter")
+    page.get_by_role("button", name="Start trace").click()
+    status = page.get_by_role("status", name="Trace state")
+    status.filter(has_text="Recording").wait_for()
+    scan = page.get_by_test_id("scan-count")
+    cycle = page.get_by_role("button", name="Single cycle")
+    for number in (1, 2, 3):
+        cycle.click()
+        scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
+    start = page.locator('g.ld-element[data-id="start"]')
+    start.locator(".ld-hit").dblclick()
+    start.locator(".ld-prepared").filter(has_text="<TRUE>").wait_for()
+    page.keyboard.press("Control+F7")
+    for number in (4, 5, 6):
+        cycle.click()
+        scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
+    status.filter(has_text="Recording · 6 samples").wait_for()
+    _coil(page, "on")
+
+    plot = page.locator(".trace-plot .u-over")
+    box = plot.bounding_box()
+    plot.click(position={"x": box["width"] * 1 / 5, "y": box["height"] / 2})  # the 2nd of 6 samples: scan 2
+    banner = page.get_by_role("status", name="History view")
+    banner.filter(has_text="Viewing scan 2 (history)").wait_for()
+    _coil(page, "off")
+    chart = page.locator(".trace-plot")
+    motor = chart.locator(".u-legend tr.u-series", has_text=re.compile("MOTOR", re.I)).locator(".u-value")
+    page.wait_for_function("() => document.querySelector('.trace-plot')?.dataset.viewingScan === '2'")
+    motor.filter(has_text=re.compile("^FALSE$")).wait_for()
+
+    slider = page.get_by_role("group", name="Scan history").get_by_role("slider", name="Scan")
+    slider.fill("5")
+    banner.filter(has_text="Viewing scan 5 (history)").wait_for()
+    page.wait_for_function("() => document.querySelector('.trace-plot')?.dataset.viewingScan === '5'")
+    motor.filter(has_text=re.compile("^TRUE$")).wait_for()
