@@ -132,11 +132,11 @@ def test_the_timeline_marks_trace_triggers_and_breakpoint_hits(client: TestClien
         subscribe(ws, ["Main.Count"])
         trigger = {"path": "Main.Count", "condition": "cross_up", "level": 3}
         ws.send_json({"type": "trace_start", "paths": ["Main.Count"], "samples": 2, "trigger": trigger})
+        recv_until(ws, of_type("trace_data", state="waiting"))  # the trace is armed before the scans run
         for _ in range(5):
             ws.send_json({"type": "single_cycle"})
         traced = recv_until(ws, lambda m: m["type"] == "trace_data" and m["triggered"] is not None)[0]
         assert traced["triggered"]["scan"] == 3
-        recv_until(ws, lambda m: m["type"] == "values" and m["scan"] == 5)
         ws.send_json({"type": "breakpoint_set", "pou": "Main", "line": 2})
         ws.send_json({"type": "single_cycle"})
         recv_until(ws, of_type("status", state="halted"))
