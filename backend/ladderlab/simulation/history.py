@@ -25,8 +25,10 @@ import bisect
 import json
 import math
 import pickle
+import statistics
 import time
 import zlib
+from collections import deque
 from collections.abc import Callable
 from dataclasses import dataclass, replace
 
@@ -92,6 +94,7 @@ class History:
         self._log_since = 0  # log bytes since the last checkpoint
         self._faults = len(sim.faults)
         self._capture_s = 0.0
+        self._captures: deque[float] = deque(maxlen=9)  # the CPU times of the latest captures
         self._scan_s: float | None = None  # CPU time per scan since the previous checkpoint (scans, the runner)
         self._after: float | None = None  # the clock when the previous checkpoint was taken
         self._replay: Simulation | None = None
@@ -178,6 +181,7 @@ class History:
         blob = zlib.compress(pickle.dumps(state, pickle.HIGHEST_PROTOCOL), 1)
         self._after = self._clock()
         self._capture_s = self._after - start
+        self._captures.append(self._capture_s)
         scan = self.live.scan_count
         if self.checkpoints and self.checkpoints[-1].scan == scan:
             self.checkpoint_size -= len(self.checkpoints.pop().blob)
@@ -195,7 +199,7 @@ class History:
             self.interval = self.min_interval
             return
         scan_ms = max(self._scan_s * 1000.0, 1e-3)
-        capture_ms = self._capture_s * 1000.0
+        capture_ms = statistics.median(self._captures) * 1000.0  # one slow capture (a full GC in it) is no rule
         cheap = math.ceil(capture_ms / (self.overhead * scan_ms))
         bounded = max(self.min_interval, math.floor(self.seek_ms / scan_ms))
         self.interval = max(self.min_interval, min(cheap, bounded))
