@@ -25,7 +25,6 @@ import bisect
 import json
 import math
 import pickle
-import statistics
 import time
 import zlib
 from collections import deque
@@ -199,7 +198,9 @@ class History:
             self.interval = self.min_interval
             return
         scan_ms = max(self._scan_s * 1000.0, 1e-3)
-        capture_ms = statistics.median(self._captures) * 1000.0  # one slow capture (a full GC in it) is no rule
+        # The cheapest of the latest captures: the cost of one is the same every time but for noise (a full GC in
+        # it) and the first few, before CPython specialises the generated code that reads the slots (state.py).
+        capture_ms = min(self._captures) * 1000.0
         cheap = math.ceil(capture_ms / (self.overhead * scan_ms))
         bounded = max(self.min_interval, math.floor(self.seek_ms / scan_ms))
         self.interval = max(self.min_interval, min(cheap, bounded))
