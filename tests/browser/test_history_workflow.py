@@ -25,13 +25,17 @@ def _coil(page, state: str) -> None:
     )
 
 
-def test_go_back_to_a_scan_and_see_the_diagram_as_it_was(page, server):
+def _online_motor(page, server):
+    """The example motor's Main online, stopped: its scan counter and the Single cycle button."""
     page.goto(server)
     open_pou(page, "motor", "Main")
     page.locator('g.ld-element[data-id="motor"]').wait_for()
     go_online(page, run=False)
-    scan = page.get_by_test_id("scan-count")
-    cycle = page.get_by_role("button", name="Single cycle")
+    return page.get_by_test_id("scan-count"), page.get_by_role("button", name="Single cycle")
+
+
+def test_go_back_to_a_scan_and_see_the_diagram_as_it_was(page, server):
+    scan, cycle = _online_motor(page, server)
     for number in (1, 2, 3):
         cycle.click()
         scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
@@ -140,12 +144,7 @@ def test_go_back_to_a_scan_and_see_the_diagram_as_it_was(page, server):
 def test_the_timeline_marks_the_scan_a_breakpoint_halted_in(page, server):
     """Issue 23 item 3: a breakpoint on network 2 halts the third scan; once that scan completes, the timeline
     marks it as a breakpoint hit (its own colour), and a click on the mark shows that scan."""
-    page.goto(server)
-    open_pou(page, "motor", "Main")
-    page.locator('g.ld-element[data-id="motor"]').wait_for()
-    go_online(page, run=False)
-    scan = page.get_by_test_id("scan-count")
-    cycle = page.get_by_role("button", name="Single cycle")
+    scan, cycle = _online_motor(page, server)
     for number in (1, 2):
         cycle.click()
         scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
@@ -171,18 +170,13 @@ def test_the_trace_chart_and_the_timeline_move_together(page, server):
     """Issue 23 item 3: Motor traced over six single cycles (off in scans 1-3, on from scan 4, Start written
     before it); a click on the chart's second sample shows scan 2 from the history (the coil off, the legend
     FALSE), and the timeline moved to scan 5 puts the chart's cursor on scan 5's sample (legend TRUE)."""
-    page.goto(server)
-    open_pou(page, "motor", "Main")
-    page.locator('g.ld-element[data-id="motor"]').wait_for()
-    go_online(page, run=False)
+    scan, cycle = _online_motor(page, server)
     page.get_by_role("tab", name="Trace").click()
     page.get_by_label("Variable to trace").fill("Motor")
     page.keyboard.press("Enter")
     page.get_by_role("button", name="Start trace").click()
     status = page.get_by_role("status", name="Trace state")
     status.filter(has_text="Recording").wait_for()
-    scan = page.get_by_test_id("scan-count")
-    cycle = page.get_by_role("button", name="Single cycle")
     for number in (1, 2, 3):
         cycle.click()
         scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
