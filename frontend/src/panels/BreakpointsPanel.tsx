@@ -9,7 +9,7 @@ import { locate } from "../ld/model";
 import { elementText as sfcElementText, type SfcBody } from "../sfc/model";
 import type { At } from "../online/protocol";
 import { useOnline } from "../online/store";
-import { useWorkspace } from "../project/store";
+import { useWorkspace } from "../store/project";
 
 /** The networks of a diagram body (LD or FBD), enough to number and name them. */
 type Networks = readonly { id: string; label?: string | null; comment?: string | null }[];

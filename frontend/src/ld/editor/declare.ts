@@ -5,10 +5,7 @@ import { locate, type LdBody } from "../model";
 import type { OperandField } from "../ops";
 import { RESULT_PIN } from "../pins";
 
-export interface VariableDeclaration {
-  name: string;
-  type: string;
-}
+export type { VariableDeclaration } from "../../store/declarations";
 
 const IDENTIFIER = /^[A-Za-z_][A-Za-z0-9_]*$/;
 const BOOL_LITERALS = new Set(["TRUE", "FALSE"]);
