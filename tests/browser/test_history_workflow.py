@@ -25,13 +25,17 @@ def _coil(page, state: str) -> None:
     )
 
 
-def test_go_back_to_a_scan_and_see_the_diagram_as_it_was(page, server):
+def _online_motor(page, server):
+    """The example motor's Main online, stopped: its scan counter and the Single cycle button."""
     page.goto(server)
     open_pou(page, "motor", "Main")
     page.locator('g.ld-element[data-id="motor"]').wait_for()
     go_online(page, run=False)
-    scan = page.get_by_test_id("scan-count")
-    cycle = page.get_by_role("button", name="Single cycle")
+    return page.get_by_test_id("scan-count"), page.get_by_role("button", name="Single cycle")
+
+
+def test_go_back_to_a_scan_and_see_the_diagram_as_it_was(page, server):
+    scan, cycle = _online_motor(page, server)
     for number in (1, 2, 3):
         cycle.click()
         scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
@@ -135,3 +139,70 @@ def test_go_back_to_a_scan_and_see_the_diagram_as_it_was(page, server):
     cycle.click()
     scan.filter(has_text=re.compile("^3$")).wait_for()
     _coil(page, "off")  # this branch never had the write of Start
+
+
+def test_the_timeline_marks_the_scan_a_breakpoint_halted_in(page, server):
+    """Issue 23 item 3: a breakpoint on network 2 halts the third scan; once that scan completes, the timeline
+    marks it as a breakpoint hit (its own colour), and a click on the mark shows that scan."""
+    scan, cycle = _online_motor(page, server)
+    for number in (1, 2):
+        cycle.click()
+        scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
+    page.get_by_role("button", name="Toggle breakpoint on network 2").click()
+    cycle.click()
+    page.get_by_role("region", name="Debugging").get_by_text("Halted at MAIN, network 2").wait_for()
+    page.get_by_role("button", name="Toggle breakpoint on network 2").click()
+    cycle.click()  # the rest of the halted scan
+    page.get_by_role("status", name="Online state").filter(has_text="Online · stopped").wait_for()
+    scan.filter(has_text=re.compile("^3$")).wait_for()
+    cycle.click()
+    scan.filter(has_text=re.compile("^4$")).wait_for()
+
+    timeline = page.get_by_role("group", name="Scan history")
+    mark = timeline.get_by_role("button", name="scan 3: breakpoint")
+    mark.wait_for()
+    assert mark.get_attribute("class") == "history-mark breakpoint"
+    mark.click()
+    page.get_by_role("status", name="History view").filter(has_text="Viewing scan 3 (history)").wait_for()
+
+
+def test_the_trace_chart_and_the_timeline_move_together(page, server):
+    """Issue 23 item 3: Motor traced over six single cycles (off in scans 1-3, on from scan 4, Start written
+    before it); a click on the chart's second sample shows scan 2 from the history (the coil off, the legend
+    FALSE), and the timeline moved to scan 5 puts the chart's cursor on scan 5's sample (legend TRUE)."""
+    scan, cycle = _online_motor(page, server)
+    page.get_by_role("tab", name="Trace").click()
+    page.get_by_label("Variable to trace").fill("Motor")
+    page.keyboard.press("Enter")
+    page.get_by_role("button", name="Start trace").click()
+    status = page.get_by_role("status", name="Trace state")
+    status.filter(has_text="Recording").wait_for()
+    for number in (1, 2, 3):
+        cycle.click()
+        scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
+    start = page.locator('g.ld-element[data-id="start"]')
+    start.locator(".ld-hit").dblclick()
+    start.locator(".ld-prepared").filter(has_text="<TRUE>").wait_for()
+    page.keyboard.press("Control+F7")
+    for number in (4, 5, 6):
+        cycle.click()
+        scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
+    status.filter(has_text="Recording · 6 samples").wait_for()
+    _coil(page, "on")
+
+    plot = page.locator(".trace-plot .u-over")
+    box = plot.bounding_box()
+    plot.click(position={"x": box["width"] * 1 / 5, "y": box["height"] / 2})  # the 2nd of 6 samples: scan 2
+    banner = page.get_by_role("status", name="History view")
+    banner.filter(has_text="Viewing scan 2 (history)").wait_for()
+    _coil(page, "off")
+    chart = page.locator(".trace-plot")
+    motor = chart.locator(".u-legend tr.u-series", has_text=re.compile("MOTOR", re.I)).locator(".u-value")
+    page.wait_for_function("() => document.querySelector('.trace-plot')?.dataset.viewingScan === '2'")
+    motor.filter(has_text=re.compile("^FALSE$")).wait_for()
+
+    slider = page.get_by_role("group", name="Scan history").get_by_role("slider", name="Scan")
+    slider.fill("5")
+    banner.filter(has_text="Viewing scan 5 (history)").wait_for()
+    page.wait_for_function("() => document.querySelector('.trace-plot')?.dataset.viewingScan === '5'")
+    motor.filter(has_text=re.compile("^TRUE$")).wait_for()

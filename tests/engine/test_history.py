@@ -274,6 +274,59 @@ def test_find_the_scan_where_a_variable_changed():
     assert history.changed("Main.Rises", 10, -1) is None
 
 
+# An LD FUNCTION (its power flow is probed; it has no instance to hold the probes), called every third scan
+# with a value above 10 or not.
+FUNCTIONS = diagram_project(
+    Pou(
+        name="Big",
+        kind="function",
+        language="ld",
+        return_type="BOOL",
+        declarations="VAR_INPUT x : INT; END_VAR",
+        body=ld.LdBody(
+            networks=[
+                ld.LdNetwork(
+                    id="n1",
+                    elements=[ld.Compare(id="gt", op="GT", left="x", right="10"), ld.Coil(id="big", var="Big")],
+                )
+            ]
+        ),
+    ),
+    Pou(
+        name="Main",
+        kind="program",
+        language="st",
+        declarations="VAR n : INT; y : BOOL; END_VAR",
+        body="n := n + 1;\nIF n MOD 3 = 0 THEN\n    y := Big(n MOD 20);\nEND_IF;",
+    ),
+)
+
+
+def test_a_restored_scan_shows_the_power_flow_of_its_functions():
+    """Issue 23: a FUNCTION has no instance, its probes (ST line values, LD power flow) live beside the program's;
+    a seek to a scan just after a checkpoint (which may not call the function: its values are the last ones it
+    computed) and to the oldest viewable scan (restored, not replayed) shows the function as it was live,
+    whatever the replay simulation showed before (here: the newest scan)."""
+    compiled = build_project(FUNCTIONS, "monitor").compiled
+    sizer = History(Simulation(compiled))
+    sim = Simulation(compiled)
+    budget = 6 * len(sizer.checkpoints[0].blob)  # a few checkpoints: the oldest are evicted
+    history = History(sim, min_interval=5, seek_ms=1e9, clock=_Cost(sim, 1e-3, 1e-5), budget_bytes=budget)
+    _record(sim, history)
+    seen = []
+    for _ in range(60):
+        sim.cycle(1)
+        seen.append((sim.snapshot(), sim.probes("BIG")))
+    assert history.first > 0 and history.first == history.checkpoints[0].scan - 1
+    checkpointed = [c.scan for c in history.checkpoints if c.scan <= history.last]
+    assert any(scan % 3 != 2 for scan in checkpointed)  # scans (numbered from 0) where Scale did not run
+    for scan in [history.first, *checkpointed]:
+        history.seek(history.last)
+        replay = history.seek(scan)
+        assert (replay.snapshot(), replay.probes("BIG")) == seen[scan], f"scan {scan}"
+    assert seen[history.first][1].values  # the function ran before the oldest scan: it has values to show
+
+
 def _seeks_match_live(project, writes, interval: int, seeks: list[int], pou: str = "MAIN") -> None:
     """Run ``project`` 60 scans with ``writes`` (scan, variable of Main, value) under a history; every seeked
     scan shows the live variables and power flow of ``pou`` of that scan."""

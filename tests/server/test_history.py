@@ -124,6 +124,28 @@ def test_the_timeline_marks_inputs_and_runtime_errors(client: TestClient, counte
     assert client.get(f"/api/simulations/{counter}").json()["history"]["marked"] == 4
 
 
+def test_the_timeline_marks_trace_triggers_and_breakpoint_hits(client: TestClient, counter: str) -> None:
+    """Issue 23 item 3: a trace's trigger marks the scan it fired at (Count crosses 3 upwards at the end of scan
+    3, the trace's ``triggered`` scan), a breakpoint the scan halted in (scan 6: five scans completed, halted at
+    line 2 of the sixth); both over REST and, through ``marked``, the websocket."""
+    with client.websocket_connect(f"/api/simulations/{counter}/ws") as ws:
+        subscribe(ws, ["Main.Count"])
+        trigger = {"path": "Main.Count", "condition": "cross_up", "level": 3}
+        ws.send_json({"type": "trace_start", "paths": ["Main.Count"], "samples": 2, "trigger": trigger})
+        recv_until(ws, of_type("trace_data", state="waiting"))  # the trace is armed before the scans run
+        for _ in range(5):
+            ws.send_json({"type": "single_cycle"})
+        traced = recv_until(ws, lambda m: m["type"] == "trace_data" and m["triggered"] is not None)[0]
+        assert traced["triggered"]["scan"] == 3
+        ws.send_json({"type": "breakpoint_set", "pou": "Main", "line": 2})
+        ws.send_json({"type": "single_cycle"})
+        recv_until(ws, of_type("status", state="halted"))
+        marked = recv_until(ws, _values(marked=2))[0]
+        assert marked["history"]["last"] == 5
+    marks = client.get(f"/api/simulations/{counter}/history/marks").json()
+    assert marks == [{"scan": 3, "kinds": ["trigger"]}, {"scan": 6, "kinds": ["breakpoint"]}]
+
+
 def test_continue_from_a_past_scan_starts_a_branch_and_keeps_the_old_one(
     client: TestClient, counter: str, registry: SimulationRegistry
 ) -> None:

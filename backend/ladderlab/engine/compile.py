@@ -16,6 +16,7 @@ locations name lines of ``source``.
 
 from __future__ import annotations
 
+import hashlib
 import itertools
 from dataclasses import dataclass
 from functools import cached_property
@@ -62,6 +63,12 @@ class CompiledProgram:
     def declarations(self) -> str:
         """The variant-independent part of the source (classes, globals, probe lists)."""
         return self.generated.source[: self.generated.pieces[self.generated.code_from][1]]
+
+    @cached_property
+    def declarations_digest(self) -> str:
+        """A digest of ``declarations``: what a captured state (engine/state.py) keeps of them, so a state only
+        restores into a simulation of the same program without carrying a large program's whole text."""
+        return hashlib.sha256(self.declarations.encode()).hexdigest()
 
     @cached_property
     def watched(self) -> bool:

@@ -51,7 +51,7 @@ from .doubles import Mocks
 from .inputs import AppliedInput, Injection, InputEvent, InputRefused, immediate, injection
 from .paths import Location, LocationReader, Resolver, Roots, UnknownPath, coerce_for, leaves, plain
 from .process_image import AREA_ORDER, IoPoint, ProcessImage, key_of, located_address, view_kind
-from .state import SimState, data_of, restore_into
+from .state import SimState, data_of, holds_references, restore_into, restore_list
 from .tasks import DEFAULT_WATCHDOG_S, Schedule, Task, task_table
 
 #: Scan times are sampled: the wall clock is read around every SAMPLE_EVERY-th scan (the first included), so a
@@ -229,7 +229,7 @@ class Simulation:
         Forces, injected faults and inputs waiting for the next scan stay."""
         self.submit(InputEvent("reset", cold=cold))
 
-    def _reset(self, cold: bool) -> None:
+    def _reset(self, cold: bool, initialise: bool = True) -> None:
         if self._scan is not None:
             self._scan.close()  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
             self.scan_count += 1  # the abandoned scan keeps its number: the next scan has the next one
@@ -240,7 +240,8 @@ class Simulation:
         self.faults.clear()
         for task in self._tasks:
             task.stopped = False
-        self._initialise(warm=not cold)
+        if initialise:
+            self._initialise(warm=not cold)
         self._apply_forces()
 
     # ------------------------------------------------------------------ running
@@ -891,7 +892,7 @@ class Simulation:
         self._not_halted()
         pages = sorted({global_owner(p.page) for p in self._context.globals.places.values()})
         return SimState(
-            self.compiled.declarations,
+            self.compiled.declarations_digest,
             self.time_ms,
             self._ns["ll_now"],
             self.scan_count,
@@ -904,15 +905,24 @@ class Simulation:
             {name: (pou, dict(self._links.get(name, {}))) for name, (_obj, pou) in self._attached.items()},
             {path: (fault.event.to_json(), fault.state()) for path, (_, fault) in self._injections.items()},
             tuple(event.to_json() for event, _, _ in self._pending),
+            {name: data_of(self._ns[name]) for name in self._function_probe_lists()},
         )
+
+    def _function_probe_lists(self) -> list[str]:
+        """The module-level probe lists of the FUNCTION POUs (values and stamps; a function has no instance to hold
+        them), in the monitor and debug variants: a restored scan shows the power flow of the functions it ran."""
+        escaped = [names.escape(pou.name) for pou in self._context.pous.values() if pou.kind == "function"]
+        return [name for key in escaped for name in (f"ll_pr_{key}", f"ll_px_{key}") if name in self._ns]
 
     def restore(self, state: SimState) -> None:
         """Make this simulation's state ``state`` (captured from a simulation of the same program): variables,
         instances, probes, clock, tasks, forces, injected faults, waiting inputs, attached instances. Faults
         are cleared, a halted scan ended. A restore is no input: ``on_input`` hears nothing of it."""
-        if state.declarations != self.compiled.declarations:
+        if state.declarations != self.compiled.declarations_digest:
             raise ValueError("that state was captured from another program")
-        self._reset(cold=True)
+        data = [*state.instances.values(), *state.globals.values()]
+        # a state that holds every value overwrites all an initialisation would set (about half a restore's time)
+        self._reset(cold=True, initialise=any(holds_references(item) for item in data))
         for name, (pou, links) in state.attached.items():
             if name not in self._attached:
                 self.attach(name, pou, links)
@@ -920,6 +930,8 @@ class Simulation:
             restore_into(self._attached[name][0], data)  # type: ignore[arg-type]  # captured slot data is a dict
         for page, data in state.globals.items():
             restore_into(self._ns[page], data)  # type: ignore[arg-type]  # captured slot data is a dict
+        for name, data in state.functions.items():
+            restore_list(self._ns[name], data)  # type: ignore[arg-type]  # captured probe lists are lists
         self._image.restore(state.image)
         self._schedule.time_ms = state.time_ms
         for task, (due, stopped, trigger) in zip(self._tasks, state.tasks):

@@ -237,8 +237,9 @@ class HistoryFound(BaseModel):
 
 
 class HistoryMark(BaseModel):
-    """A scan with something from outside (the inputs' kinds: write, force, release, panel, fault, reset...)
-    or a runtime error (``error``)."""
+    """A scan with something from outside (the inputs' kinds: write, force, release, panel, fault, reset...),
+    a runtime error (``error``), a breakpoint hit (``breakpoint``: the scan halted there) or a trace's trigger
+    (``trigger``: it fired at the end of that scan)."""
 
     scan: int
     kinds: list[str]

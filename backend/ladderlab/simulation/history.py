@@ -27,12 +27,13 @@ import math
 import pickle
 import time
 import zlib
+from collections import deque
 from collections.abc import Callable
 from dataclasses import dataclass, replace
 
 from ..engine.inputs import AppliedInput, InputEvent
 from ..engine.simulation import Simulation
-from ..engine.state import SimState
+from ..engine.state import PathTable, SimState
 
 #: The default memory budget of one simulation's history.
 DEFAULT_BUDGET_BYTES = 256 * 1024 * 1024
@@ -47,11 +48,11 @@ class Checkpoint:
     """The state before scan ``scan`` (after scan ``scan - 1``), pickled and compressed."""
 
     scan: int
-    blob: bytes
+    blob: bytes  # the state, its slot paths numbered in the history's PathTable
 
-    def state(self) -> SimState:
+    def state(self, paths: PathTable) -> SimState:
         state: SimState = pickle.loads(zlib.decompress(self.blob))
-        return state
+        return paths.unshared(state)
 
 
 class History:
@@ -78,10 +79,12 @@ class History:
         self.log_bytes = log_bytes
         self._clock = clock
         self.checkpoints: list[Checkpoint] = []
+        self._paths = PathTable()
         self._inputs: dict[int, list[bytes]] = {}  # scan -> the inputs applied for it, as JSON, in order
         self._times: dict[int, float] = {}  # scan -> its virtual time, for scans the schedule did not choose
         self._barriers: set[int] = set()  # scans a replay cannot redo: viewed from the checkpoint after them
         self._errors: set[int] = set()  # scans that ended with a runtime error or a watchdog trip
+        self._marks: dict[int, set[str]] = {}  # scan -> what else happened in it: a breakpoint hit, a trace trigger
         self.marked = 0  # grows with every newly marked scan (an input, an error): the timeline refetches marks
         self.log_size = 0  # bytes of _inputs and _times
         self.checkpoint_size = 0
@@ -90,6 +93,7 @@ class History:
         self._log_since = 0  # log bytes since the last checkpoint
         self._faults = len(sim.faults)
         self._capture_s = 0.0
+        self._captures: deque[float] = deque(maxlen=9)  # the CPU times of the latest captures
         self._scan_s: float | None = None  # CPU time per scan since the previous checkpoint (scans, the runner)
         self._after: float | None = None  # the clock when the previous checkpoint was taken
         self._replay: Simulation | None = None
@@ -140,6 +144,13 @@ class History:
             if applied.event.kind == "reset":  # it ended the halted scan: what follows starts from here
                 self._checkpoint()
 
+    def mark(self, scan: int, kind: str) -> None:
+        """Mark ``scan`` on the timeline with something the runner saw (``breakpoint``: it halted there, ``trigger``:
+        a trace's trigger fired at its end); no input, so nothing to replay."""
+        if kind not in self._marks.setdefault(scan, set()):
+            self._marks[scan].add(kind)
+            self.marked += 1
+
     def _scanned(self, scan: int, time_ms: float, scheduled: bool) -> None:
         if not scheduled:
             self._times[scan] = time_ms
@@ -165,10 +176,11 @@ class History:
         start = self._clock()
         if self._after is not None and self._since:
             self._scan_s = (start - self._after) / self._since
-        state = replace(self.live.state(), pending=())  # the waiting inputs are in the log when they apply
+        state = self._paths.shared(replace(self.live.state(), pending=()))  # waiting inputs: in the log when applied
         blob = zlib.compress(pickle.dumps(state, pickle.HIGHEST_PROTOCOL), 1)
         self._after = self._clock()
         self._capture_s = self._after - start
+        self._captures.append(self._capture_s)
         scan = self.live.scan_count
         if self.checkpoints and self.checkpoints[-1].scan == scan:
             self.checkpoint_size -= len(self.checkpoints.pop().blob)
@@ -186,7 +198,9 @@ class History:
             self.interval = self.min_interval
             return
         scan_ms = max(self._scan_s * 1000.0, 1e-3)
-        capture_ms = self._capture_s * 1000.0
+        # The cheapest of the latest captures: the cost of one is the same every time but for noise (a full GC in
+        # it) and the first few, before CPython specialises the generated code that reads the slots (state.py).
+        capture_ms = min(self._captures) * 1000.0
         cheap = math.ceil(capture_ms / (self.overhead * scan_ms))
         bounded = max(self.min_interval, math.floor(self.seek_ms / scan_ms))
         self.interval = max(self.min_interval, min(cheap, bounded))
@@ -203,21 +217,24 @@ class History:
                 self.log_size -= 16
             self._barriers = {scan for scan in self._barriers if scan >= first}
             self._errors = {scan for scan in self._errors if scan >= first}
+            self._marks = {scan: kinds for scan, kinds in self._marks.items() if scan >= first}
             if self._replay_at is not None and self._replay_at < first:
                 self._replay_at = None
 
     # ------------------------------------------------------------------ seeking
 
     def marks(self, limit: int = 1000) -> list[tuple[int, list[str]]]:
-        """The newest ``limit`` scans with an input or an error, for the timeline: (scan, what happened in it:
-        the inputs' kinds - write, force, release, panel, fault, reset... - and ``error``)."""
-        scans = sorted(self._inputs.keys() | self._errors)[-limit:]
+        """The newest ``limit`` scans with an input, an error or a mark, for the timeline: (scan, what happened in
+        it: the inputs' kinds - write, force, release, panel, fault, reset... -, ``error``, ``breakpoint``,
+        ``trigger``)."""
+        scans = sorted(self._inputs.keys() | self._errors | self._marks.keys())[-limit:]
         return [
             (
                 scan,
                 sorted(
                     {str(line["kind"]) for line in self.inputs_of(scan)}
                     | ({"error"} if scan in self._errors else set())
+                    | self._marks.get(scan, set())
                 ),
             )
             for scan in scans
@@ -301,7 +318,7 @@ class History:
         return self.checkpoints[index]
 
     def _restore(self, checkpoint: Checkpoint) -> None:
-        self._replay_sim().restore(checkpoint.state())
+        self._replay_sim().restore(checkpoint.state(self._paths))
         self._replay_at = checkpoint.scan
 
     def _replay_sim(self) -> Simulation:

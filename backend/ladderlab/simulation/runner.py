@@ -297,7 +297,8 @@ class SimRunner:
         self._fit_variant()
         if sim.scan_count != self._seen_scans:
             self._seen_scans = sim.scan_count
-            self.traces.sample(sim)
+            if self.traces.sample(sim) and self.history is not None:
+                self.history.mark(sim.scan_count - 1, "trigger")  # the scan that completed last
         if len(sim.faults) > self._seen_faults:
             for fault in sim.faults[self._seen_faults :]:
                 self._fault_log(fault)
@@ -317,6 +318,8 @@ class SimRunner:
             at = status[1].model_dump() if status[1] is not None else None
             if sim.halted is not None and sim.halted.reason == "breakpoint":
                 self._log("breakpoint", "info", f"halted at the breakpoint at {_where(status[1])}", at=at)
+                if self.history is not None:
+                    self.history.mark(sim.scan_count, "breakpoint")  # the scan halted in (not completed yet)
             self.sink.status(state, at)
         # A new state (above all a halt) is followed at once by the values of that moment, so a client
         # shows the values at the halt point, not those of the last periodic frame.

@@ -168,11 +168,15 @@ class TraceBook:
         recorder.state, recorder.unreported = "done", True
         return True
 
-    def sample(self, sim: Simulation) -> None:
-        """After every scan: one sample per recording trace."""
+    def sample(self, sim: Simulation) -> bool:
+        """After every scan: one sample per recording trace. Whether a trace's trigger fired at this scan."""
+        fired = False
         for recorder in self._traces.values():
             if recorder.state != "done":
+                waiting = recorder.state == "waiting"
                 recorder.sample(sim)
+                fired |= waiting and recorder.state != "waiting"
+        return fired
 
     def take_all(self) -> dict[object, dict[str, Any]]:
         """Every owner's new samples (a finished trace is forgotten with its last chunk)."""

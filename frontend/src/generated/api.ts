@@ -1483,8 +1483,9 @@ export interface components {
     };
     /**
      * HistoryMark
-     * @description A scan with something from outside (the inputs' kinds: write, force, release, panel, fault, reset...)
-     *     or a runtime error (``error``).
+     * @description A scan with something from outside (the inputs' kinds: write, force, release, panel, fault, reset...),
+     *     a runtime error (``error``), a breakpoint hit (``breakpoint``: the scan halted there) or a trace's trigger
+     *     (``trigger``: it fired at the end of that scan).
      */
     HistoryMark: {
       /** Kinds */

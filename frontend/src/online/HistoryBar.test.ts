@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { findPlaceholder, markOffset, shownScan, stepScan } from "./HistoryBar";
+import { findPlaceholder, markClass, markOffset, shownScan, stepScan } from "./HistoryBar";
 import { applyMessage, emptyMonitor } from "./monitor";
 
 describe("scan history in the monitor state (issue 23)", () => {
@@ -33,6 +33,13 @@ describe("scan history in the monitor state (issue 23)", () => {
     expect(markOffset(6, 1, 11)).toBe(50);
     expect(markOffset(11, 1, 11)).toBe(100);
     expect(markOffset(3, 3, 3)).toBe(0);
+  });
+
+  it("colours a mark by the most telling thing in its scan: an error, a breakpoint hit, a trace trigger, an input", () => {
+    expect(markClass(["error", "trigger", "write"])).toBe("history-mark error");
+    expect(markClass(["breakpoint", "trigger"])).toBe("history-mark breakpoint");
+    expect(markClass(["trigger", "write"])).toBe("history-mark trigger");
+    expect(markClass(["force", "write"])).toBe("history-mark");
   });
 
   it("suggests the first watched variable in the find field, a generic hint when nothing is watched", () => {

@@ -90,8 +90,16 @@ export function markOffset(scan: number, first: number, last: number): number {
   return last > first ? ((scan - first) / (last - first)) * 100 : 0;
 }
 
-/** Ticks under the slider at the scans with an input (write, force, panel, fault...) or a runtime error;
- * fetched again when the history's `marked` counter grows. A click shows that scan. */
+/** A mark's class: its colour says the most telling thing that happened in its scan (a runtime error, then a
+ * breakpoint hit, then a trace trigger; else an input). */
+export function markClass(kinds: string[]): string {
+  const kind = ["error", "breakpoint", "trigger"].find((k) => kinds.includes(k));
+  return kind ? `history-mark ${kind}` : "history-mark";
+}
+
+/** Ticks under the slider at the scans with an input (write, force, panel, fault...), a runtime error, a
+ * breakpoint hit or a trace trigger; fetched again when the history's `marked` counter grows. A click shows that
+ * scan. */
 function HistoryMarks({ first, last, marked }: { first: number; last: number; marked: number }) {
   const simulation = useOnline((s) => s.simulation);
   const [marks, setMarks] = useState<HistoryMark[]>([]);
@@ -113,7 +121,7 @@ function HistoryMarks({ first, last, marked }: { first: number; last: number; ma
           <button
             type="button"
             key={mark.scan}
-            className={`history-mark${mark.kinds.includes("error") ? " error" : ""}`}
+            className={markClass(mark.kinds)}
             data-mark-scan={mark.scan}
             style={{ left: `${markOffset(mark.scan, first, last)}%` }}
             title={`scan ${mark.scan}: ${mark.kinds.join(", ")}`}

@@ -1,6 +1,7 @@
 // The trace as a uPlot time chart: drag to zoom (x), double click to reset, Shift+drag or the
 // buttons to pan, Ctrl+wheel to zoom around the cursor; the legend shows the values under the
-// cursor. While the user has not zoomed, the chart follows new samples; a zoom holds still.
+// cursor. While the user has not zoomed, the chart follows new samples; a zoom holds still. A click shows the
+// scan under the cursor from the scan history, and the scan the history shows holds the cursor (a line marks it).
 import { useEffect, useEffectEvent, useRef, useState } from "react";
 import uPlot from "uplot";
 import "uplot/dist/uPlot.min.css";
@@ -8,6 +9,7 @@ import { usePanels } from "../panels/store";
 import { chartData, legendValue, LANE, type ChartData } from "./chartData";
 import type { Kind } from "./csv";
 import type { SampleRing } from "./ring";
+import { sampleOfScan } from "./scrub";
 
 const COLORS = [
   "#1f77b4",
@@ -34,7 +36,16 @@ export interface TraceChartProps {
   version: number;
   origin: number;
   laneView: boolean;
+  /** The past scan the scan history shows (null: live): the cursor stays on its sample. */
+  viewing: number | null;
+  /** A click on the chart: show this scan from the history. */
+  onPick: (scan: number) => void;
 }
+
+/** How long a click waits for a second one (a double click resets the zoom, it shows no scan). */
+const CLICK_MS = 250;
+/** The colour of the history's viewing banner, for the line at the scan it shows. */
+const VIEWING = "#bf8700";
 
 /** Moves the x range by `fraction` of its width (negative: back in time). */
 function panX(u: uPlot, fraction: number): void {
@@ -67,6 +78,8 @@ function options(
   height: number,
   onUserZoom: () => void,
   onReset: () => void,
+  onPick: (index: number) => void,
+  marked: () => number | null,
 ): uPlot.Options {
   const numbers = chart.series.some((s) => s.scale === "y");
   const steps = uPlot.paths.stepped!({ align: 1 });
@@ -95,7 +108,34 @@ function options(
       onUserZoom();
       zoomX(u, e.deltaY > 0 ? 1.25 : 0.8, e.offsetX / u.over.clientWidth);
     });
-    u.over.addEventListener("dblclick", onReset);
+    let pressed: number | null = null;
+    let pending: number | undefined;
+    u.over.addEventListener("mousedown", (e) => void (pressed = e.clientX));
+    u.over.addEventListener("click", (e) => {
+      const dragged = pressed === null || Math.abs(e.clientX - pressed) > 3; // a zoom or a pan, not a pick
+      window.clearTimeout(pending);
+      if (dragged || e.shiftKey || e.detail > 1) return;
+      const index = u.posToIdx(e.offsetX);
+      pending = window.setTimeout(() => onPick(index), CLICK_MS);
+    });
+    u.over.addEventListener("dblclick", () => {
+      window.clearTimeout(pending);
+      onReset();
+    });
+  };
+  const line = (u: uPlot) => {
+    const x = marked();
+    if (x === null) return;
+    const left = Math.round(u.valToPos(x, "x", true));
+    const { ctx } = u;
+    ctx.save();
+    ctx.strokeStyle = VIEWING;
+    ctx.lineWidth = 2;
+    ctx.beginPath();
+    ctx.moveTo(left, u.bbox.top);
+    ctx.lineTo(left, u.bbox.top + u.bbox.height);
+    ctx.stroke();
+    ctx.restore();
   };
   return {
     width,
@@ -145,6 +185,7 @@ function options(
     },
     hooks: {
       ready: [pan],
+      draw: [line],
       destroy: [
         () => {
           window.removeEventListener("mousemove", move);
@@ -157,10 +198,12 @@ function options(
   };
 }
 
-export function TraceChart({ paths, kinds, ring, version, origin, laneView }: TraceChartProps) {
+export function TraceChart({ paths, kinds, ring, version, origin, laneView, viewing, onPick }: TraceChartProps) {
   const host = useRef<HTMLDivElement>(null);
   const plot = useRef<uPlot | null>(null);
   const zoomed = useRef(false);
+  /** The x (ms) of the sample of the scan the history shows, for the line the chart draws there. */
+  const marked = useRef<number | null>(null);
   const [width, setWidth] = useState(640);
   const panelHeight = usePanels((s) => s.height);
   const height = Math.max(HEIGHT, (panelHeight ?? 0) - PANEL_CHROME);
@@ -180,7 +223,26 @@ export function TraceChart({ paths, kinds, ring, version, origin, laneView }: Tr
     const chart = chartData(paths, kinds, ring.columnsInOrder(), origin, laneView);
     const onZoom = () => void (zoomed.current = true);
     const onReset = () => void (zoomed.current = false);
-    return new uPlot(options(chart, width, height, onZoom, onReset), chart.data as uPlot.AlignedData, el);
+    const pick = (index: number) => {
+      const scan = ring.columnsInOrder().scans[index];
+      if (scan !== undefined) onPick(scan);
+    };
+    const u = new uPlot(
+      options(chart, width, height, onZoom, onReset, pick, () => marked.current),
+      chart.data as uPlot.AlignedData,
+      el,
+    );
+    return u;
+  });
+  /** The cursor and the line on the sample of the scan the history shows (none while live). */
+  const follow = useEffectEvent((u: uPlot) => {
+    const scans = ring.columnsInOrder().scans;
+    const index = viewing === null ? null : sampleOfScan(scans, viewing);
+    const x = index === null ? null : (u.data[0][index] ?? null);
+    marked.current = x;
+    if (host.current) host.current.dataset.viewingScan = index === null ? "" : String(scans[index]);
+    if (x !== null) u.setCursor({ left: u.valToPos(x, "x"), top: u.over.clientHeight / 2 });
+    u.redraw(false);
   });
   const refresh = useEffectEvent((u: uPlot) => {
     const chart = chartData(paths, kinds, ring.columnsInOrder(), origin, laneView);
@@ -192,6 +254,7 @@ export function TraceChart({ paths, kinds, ring, version, origin, laneView }: Tr
     if (!host.current) return;
     const u = build(host.current);
     plot.current = u;
+    follow(u);
     return () => {
       u.destroy();
       plot.current = null;
@@ -206,6 +269,10 @@ export function TraceChart({ paths, kinds, ring, version, origin, laneView }: Tr
   useEffect(() => {
     if (plot.current) refresh(plot.current);
   }, [version, origin]);
+
+  useEffect(() => {
+    if (plot.current) follow(plot.current);
+  }, [viewing]);
 
   const act = (action: (u: uPlot) => void) => {
     const u = plot.current;

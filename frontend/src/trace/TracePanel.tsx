@@ -5,7 +5,7 @@ import { lazy, Suspense, useEffect, useMemo, useState, type FormEvent } from "re
 import { projectApi } from "../api/client";
 import { downloadText } from "../interchange/download";
 import { pathKey } from "../online/monitor";
-import { useOnline } from "../online/store";
+import { onlineStore, useOnline } from "../online/store";
 import { useWorkspace } from "../store/project";
 import { traceCandidates } from "./candidates";
 import { formatSample, traceCsv, type Kind } from "./csv";
@@ -261,6 +261,13 @@ export function TracePanel() {
   const [view, setView] = useState<"chart" | "table">("chart");
   const busy = state.phase === "starting" || state.phase === "waiting" || state.phase === "recording";
   const { ring, recorded, kinds, origin } = state;
+  const viewing = useOnline((s) => s.monitor.history?.viewing ?? null);
+  /** A click on the chart: that scan from the history, when the history still holds it. */
+  const showScan = (scan: number) => {
+    const online = onlineStore.getState();
+    const history = online.monitor.history;
+    if (history && scan >= history.first && scan <= history.last) online.seek(scan);
+  };
   const exportCsv = () => {
     if (!ring) return;
     downloadText(
@@ -321,6 +328,8 @@ export function TracePanel() {
                 version={state.version}
                 origin={origin}
                 laneView={state.laneView}
+                viewing={viewing}
+                onPick={showScan}
               />
             </Suspense>
           ) : (
