@@ -411,7 +411,7 @@ const pouNamed = (project: Project | null, name: string) =>
 function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
   const name = pou.name;
   const setLdHistory = useWorkspace((s) => s.setLdHistory);
-  const { library, symbols, symbolsLoaded, diagnostics, focus, declare } = useDiagramPou(name);
+  const { library, symbols, symbolsLoaded, diagnostics, focus, declare, declarableTypes } = useDiagramPou(name);
   const live = useLdOnline(pou, history.present, symbolsLoaded ? symbols : null, library);
   const stepping = useLdDebugging(name, history.present);
   const covered = useTests((s) => coverageOf(s.coverage, name));
@@ -428,6 +428,7 @@ function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
       symbols={symbols}
       diagnostics={diagnostics}
       onDeclareVariable={declare}
+      declarableTypes={declarableTypes}
       online={live.online}
       readOnly={live.readOnly}
       readOnlyActions={live.readOnly ? <OnlineActions pou={pou} /> : undefined}
