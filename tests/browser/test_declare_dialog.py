@@ -126,3 +126,36 @@ def test_fbd_input_opens_the_same_dialog(page, server):
     assert saved(server, "autofbd")["pous"][0]["declarations"] == (
         "VAR\nEND_VAR\nVAR_INPUT\n    Setpoint : REAL;\nEND_VAR"  # the new POU's empty VAR block stays
     )
+
+
+def test_st_quick_fix_opens_the_same_dialog(page, server):
+    """Shift+F2 on an unknown variable in the ST body (the live check's mark) declares it through the dialog."""
+    new_project(page, server, "autost")
+    new_pou(page, "Main", language="st")
+    body = page.get_by_label("Main body")
+    body.focus()
+    page.keyboard.press("Control+a")
+    page.keyboard.insert_text("Count := Count + Step;")
+    expect(body.locator(".cm-lintRange-error")).to_have_count(3)  # Count, Count, Step: unknown
+    page.keyboard.press("Home")
+    for _ in range(18):  # into "Step"
+        page.keyboard.press("ArrowRight")
+    page.keyboard.press("Shift+F2")
+    dialog = page.get_by_role("dialog", name="Declare variable Step")
+    expect(dialog).to_be_visible()
+    assert focused_label(page) == "Type of the new variable"
+    page.keyboard.type("IN")
+    page.keyboard.press("Enter")  # INT, the highlighted completion
+    page.keyboard.press("Tab")
+    page.keyboard.type("2")
+    page.keyboard.press("Enter")
+    expect(dialog).to_have_count(0)
+    assert focused_label(page) == "Main body"
+    expect(body.locator(".cm-lintRange-error")).to_have_count(2)  # Step is declared now; Count is not
+    page.keyboard.press("Shift+F2")  # the cursor is on Step, which has no mark any more: nothing opens
+    expect(page.get_by_role("dialog")).to_have_count(0)
+    assert page.get_by_label("Main declarations").inner_text().replace("\u00a0", " ").splitlines() == [
+        "VAR",
+        "    Step : INT := 2;",
+        "END_VAR",
+    ]

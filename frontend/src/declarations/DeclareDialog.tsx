@@ -35,11 +35,13 @@ export function DeclareDialog({ offer, types, onDeclare, onCancel }: DeclareDial
     };
   }, []);
 
-  // Type completion: shown once the user types, closed by picking one or by Escape.
+  // Type completion: shown once the user types, closed by picking one, by Escape or by leaving the field.
   const [completing, setCompleting] = useState(false);
   const [active, setActive] = useState(-1);
   const named = useMemo(() => types.map((name) => ({ name })), [types]);
-  const list = useMemo(() => (completing ? suggest(type, named) : []), [completing, type, named]);
+  // Closed as well once the text names a type exactly: the answer is complete.
+  const exact = useMemo(() => new Set(types.map((t) => t.toUpperCase())).has(type.trim().toUpperCase()), [types, type]);
+  const list = useMemo(() => (completing && !exact ? suggest(type, named) : []), [completing, exact, type, named]);
   const highlighted = active >= 0 ? active : defaultSuggestion(type, list, named);
   const pick = (name: string) => {
     setType(name);
@@ -93,56 +95,58 @@ export function DeclareDialog({ offer, types, onDeclare, onCancel }: DeclareDial
       </label>
       <label>
         Type
-        <input
-          ref={typeField}
-          aria-label="Type of the new variable"
-          role="combobox"
-          aria-expanded={list.length > 0}
-          aria-autocomplete="list"
-          value={type}
-          spellCheck={false}
-          onChange={(e) => {
-            setType(e.target.value);
-            setCompleting(true);
-            setActive(-1);
-          }}
-          onKeyDown={(e) => {
-            if (!list.length) return;
-            if (e.key === "ArrowDown") {
-              e.preventDefault();
-              setActive((highlighted + 1) % list.length);
-            } else if (e.key === "ArrowUp") {
-              e.preventDefault();
-              setActive(highlighted <= 0 ? list.length - 1 : highlighted - 1);
-            } else if ((e.key === "Enter" || e.key === "Tab") && highlighted >= 0) {
-              e.preventDefault();
-              e.stopPropagation();
-              pick(list[highlighted]!.name);
-            } else if (e.key === "Escape") {
-              e.preventDefault();
-              e.stopPropagation();
-              setCompleting(false);
-            }
-          }}
-          onBlur={() => setCompleting(false)}
-        />
-        {list.length ? (
-          <ul role="listbox" className="ld-suggestions" aria-label="Types">
-            {list.map((t, i) => (
-              <li
-                key={t.name}
-                role="option"
-                aria-selected={i === highlighted}
-                onMouseDown={(e) => {
-                  e.preventDefault();
-                  pick(t.name);
-                }}
-              >
-                {t.name}
-              </li>
-            ))}
-          </ul>
-        ) : null}
+        <span className="declare-type">
+          <input
+            ref={typeField}
+            aria-label="Type of the new variable"
+            role="combobox"
+            aria-expanded={list.length > 0}
+            aria-autocomplete="list"
+            value={type}
+            spellCheck={false}
+            onChange={(e) => {
+              setType(e.target.value);
+              setCompleting(true);
+              setActive(-1);
+            }}
+            onKeyDown={(e) => {
+              if (!list.length) return;
+              if (e.key === "ArrowDown") {
+                e.preventDefault();
+                setActive((highlighted + 1) % list.length);
+              } else if (e.key === "ArrowUp") {
+                e.preventDefault();
+                setActive(highlighted <= 0 ? list.length - 1 : highlighted - 1);
+              } else if ((e.key === "Enter" || e.key === "Tab") && highlighted >= 0) {
+                e.preventDefault();
+                e.stopPropagation();
+                pick(list[highlighted]!.name);
+              } else if (e.key === "Escape") {
+                e.preventDefault();
+                e.stopPropagation();
+                setCompleting(false);
+              }
+            }}
+            onBlur={() => setCompleting(false)}
+          />
+          {list.length ? (
+            <ul role="listbox" className="ld-suggestions" aria-label="Types">
+              {list.map((t, i) => (
+                <li
+                  key={t.name}
+                  role="option"
+                  aria-selected={i === highlighted}
+                  onMouseDown={(e) => {
+                    e.preventDefault();
+                    pick(t.name);
+                  }}
+                >
+                  {t.name}
+                </li>
+              ))}
+            </ul>
+          ) : null}
+        </span>
       </label>
       <label>
         Initial value

@@ -49,6 +49,8 @@ export interface StEditorProps {
   focusLine?: { line: number; seq: number } | null;
   /** The text's language: ST (default), an IL body (docs/il.md) or a test file (docs/testing.md). */
   language?: "st" | "il" | "test";
+  /** The quick fix of an unknown variable (its mark's "Declare NAME", Shift+F2): opens the declare dialog. */
+  onDeclare?(name: string): void;
 }
 
 const NO_MARKS: readonly InlineMark[] = [];
@@ -67,13 +69,14 @@ export function StEditor({
   coverage = NO_LINES,
   focusLine,
   language = "st",
+  onDeclare,
 }: StEditorProps) {
   const host = useRef<HTMLDivElement>(null);
   const view = useRef<EditorView | null>(null);
   // What the editor's callbacks read: the props of the last render (kept after rendering, not during it).
-  const latest = useRef({ onChange, completions, debug, online });
+  const latest = useRef({ onChange, completions, debug, online, onDeclare });
   useLayoutEffect(() => {
-    latest.current = { onChange, completions, debug, online };
+    latest.current = { onChange, completions, debug, online, onDeclare };
   });
   const editable = useRef(new Compartment());
   /** The props the view is created with; later ones arrive through the effects below. */
@@ -158,6 +161,7 @@ export function StEditor({
     view.current?.dispatch({ effects: setCoverageLines.of(coverage) });
   }, [coverage]);
 
+  const declaring = onDeclare !== undefined;
   const focusSeq = focusLine?.seq;
   useEffect(() => {
     const v = view.current;
@@ -175,8 +179,9 @@ export function StEditor({
 
   useEffect(() => {
     const v = view.current;
-    if (v) v.dispatch(setDiagnostics(v.state, lintDiagnostics(diagnostics, file, v.state.doc)));
-  }, [diagnostics, file]);
+    const declare = declaring ? (name: string) => latest.current.onDeclare?.(name) : undefined;
+    if (v) v.dispatch(setDiagnostics(v.state, lintDiagnostics(diagnostics, file, v.state.doc, declare)));
+  }, [diagnostics, file, declaring]);
 
   return (
     <div className="st-editor" style={{ display: "flex", flexDirection: "column", height: "100%", minHeight: 0 }}>
