@@ -1,9 +1,9 @@
 // Editors of the project's own parts: the global variables (the declarations table and text of the
 // POUs), the types (text with a list of the types and a form that adds a STRUCT, enumeration, array,
 // subrange or alias) and the tasks (cyclic interval or SINGLE event, priority, watchdog, the programs each
-// runs in order; program instances are listed as they are).
+// runs in order, each run's instance name and parameter bindings).
 // Each shows the live check of the working copy where it applies, like the POU editors.
-import { PencilLine } from "lucide-react";
+import { PencilLine, SlidersHorizontal } from "lucide-react";
 import { Suspense, useMemo, useState, type FormEvent } from "react";
 import type { Diagnostic } from "../generated/api";
 import type { Task } from "../generated/api";
@@ -15,6 +15,8 @@ import { LazyStEditor, LOADING } from "./lazy";
 import { useLiveCheck } from "../st/useLiveCheck";
 import { useOnline } from "../online/store";
 import { taskIndexOf, type ProjectPart } from "./parts";
+import { asInstance, runField } from "./bindings";
+import { RunBindings } from "./RunBindings";
 import { structMembers, TYPE_KINDS, typeRows, withNewType, withStructMembers, type TypeKind } from "./types";
 import type { DeclRow } from "../declarations/model";
 import { useWorkspace } from "./store";
@@ -299,11 +301,14 @@ export function TasksView() {
   const programs = useMemo(() => (pous ?? []).filter((p) => p.kind === "program").map((p) => p.name), [pous]);
   const setTasks = useWorkspace((s) => s.setTasks);
   const diagnostics = usePartDiagnostics();
+  /** The run whose parameters are shown: [task index, run index]. */
+  const [opened, setOpened] = useState<[number, number] | null>(null);
   const phase = useOnline((s) => s.phase);
   const disabled = phase !== "offline";
   const update = (index: number, patch: Partial<Task>) =>
     setTasks(tasks.map((t, i) => (i === index ? { ...t, ...patch } : t)));
   const move = (index: number, program: number, by: number) => {
+    setOpened(null);
     const list = [...(tasks[index]!.programs ?? [])];
     const [moved] = list.splice(program, 1);
     list.splice(program + by, 0, moved!);
@@ -328,7 +333,11 @@ export function TasksView() {
         </thead>
         <tbody>
           {tasks.map((task, index) => {
-            const problems = diagnostics.filter((d) => taskIndexOf(d) === index);
+            const openRun = opened?.[0] === index ? opened[1] : null;
+            // A problem of the run whose parameters are shown is shown there, at its field.
+            const problems = diagnostics.filter(
+              (d) => taskIndexOf(d) === index && (openRun === null || runField(d, index, openRun) === undefined),
+            );
             const runs = task.programs ?? [];
             return (
               <tr key={index} aria-label={`Task ${task.name}`} className={problems.length ? "task-invalid" : undefined}>
@@ -382,8 +391,17 @@ export function TasksView() {
                 <td>
                   <ol className="task-programs" aria-label={`Programs of ${task.name}`}>
                     {runs.map((program, p) => (
-                      <li key={`${runName(program)}:${p}`}>
+                      <li key={p /* not its name: renaming the instance keeps the field focused */}>
                         {runName(program)}
+                        <button
+                          type="button"
+                          aria-label={`Parameters of ${runName(program)}`}
+                          aria-expanded={openRun === p}
+                          title="Instance name and parameter bindings"
+                          onClick={() => setOpened(openRun === p ? null : [index, p])}
+                        >
+                          <SlidersHorizontal size={14} aria-hidden />
+                        </button>
                         <button
                           type="button"
                           aria-label={`Run ${runName(program)} earlier`}
@@ -404,10 +422,27 @@ export function TasksView() {
                           type="button"
                           aria-label={`Remove ${runName(program)} from ${task.name}`}
                           disabled={disabled}
-                          onClick={() => update(index, { programs: runs.filter((_, i) => i !== p) })}
+                          onClick={() => {
+                            setOpened(null);
+                            update(index, { programs: runs.filter((_, i) => i !== p) });
+                          }}
                         >
                           ×
                         </button>
+                        {openRun === p ? (
+                          <RunBindings
+                            run={program}
+                            task={task.name}
+                            taskIndex={index}
+                            runIndex={p}
+                            program={pous?.find(
+                              (pou) => pou.name.toUpperCase() === asInstance(program).type.toUpperCase(),
+                            )}
+                            diagnostics={diagnostics}
+                            disabled={disabled}
+                            onChange={(next) => update(index, { programs: runs.map((r, i) => (i === p ? next : r)) })}
+                          />
+                        ) : null}
                       </li>
                     ))}
                   </ol>
