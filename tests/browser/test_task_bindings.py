@@ -69,3 +69,30 @@ def test_program_instance_bindings_edited_validated_and_run(page, server: str) -
     go_online(page)
     expect(watch(page, "P1.Level")).to_have_text("5")
     expect(watch(page, "Out")).to_have_text("TRUE")
+
+
+def test_a_task_renamed_from_the_project_tree(page, server: str) -> None:
+    """Issue 22 item 1 for tasks: the tree's task has a ⋯ menu whose Rename refuses another task's name."""
+    store_project(
+        server,
+        {**PROJECT, "name": "retask", "tasks": [*PROJECT["tasks"], {"name": "Slow", "interval": "T#100ms"}]},
+    )
+    page.goto(server)
+    page.get_by_role("navigation", name="Projects").get_by_role("button", name=re.compile("^retask")).click()
+    tree = page.get_by_role("navigation", name="Project tree")
+    tree.get_by_role("button", name="Actions for task Fast").click()
+    tree.get_by_role("menuitem", name="Rename…").click()
+    dialog = page.get_by_role("dialog", name="Rename task Fast")
+    dialog.get_by_label("New name").fill("slow")
+    dialog.get_by_label("New name").press("Enter")
+    expect(dialog.get_by_role("alert")).to_have_text("There is already a task called slow.")
+    dialog.get_by_label("New name").fill("Quick")
+    dialog.get_by_label("New name").press("Enter")
+    expect(dialog).to_have_count(0)
+    expect(tree.get_by_role("region", name="Tasks").get_by_role("listitem")).to_have_text(
+        [re.compile(r"^Quick every T#10ms · priority 0 · Pump"), re.compile(r"^Slow every T#100ms")]
+    )
+    page.keyboard.press("Control+s")
+    page.get_by_text("All changes saved").wait_for()
+    tasks = _request("GET", f"{server}/api/projects/retask")["project"]["tasks"]
+    assert [(t["name"], t["programs"]) for t in tasks] == [("Quick", ["Pump"]), ("Slow", [])]

@@ -31,6 +31,7 @@ import { isTestPath, pouOf, symbolsOf, testPath, useWorkspace, workspaceStore } 
 import { coverageMarks, coverageOf } from "../tests/coverage";
 import { testsStore, useTests } from "../tests/store";
 import { runsOf } from "./tasks";
+import { TaskActions } from "./TaskActions";
 import { useDiagramPou } from "./useDiagramPou";
 import { elementText as sfcElementText, type SfcBody } from "../sfc/model";
 import { ExportMenu } from "../interchange/ExportMenu";
@@ -349,11 +350,14 @@ function TasksSection({ project }: { project: Project }) {
             ) : null}
             <ul>
               {resource.tasks.map((t) => (
-                <li key={t.name} className="tree-task">
-                  {t.name}{" "}
-                  <span className="tree-meta">
-                    {t.timing} · priority {t.priority} · {t.instances.join(", ") || "no programs"}
+                <li key={t.name} className="tree-task tree-row">
+                  <span>
+                    {t.name}{" "}
+                    <span className="tree-meta">
+                      {t.timing} · priority {t.priority} · {t.instances.join(", ") || "no programs"}
+                    </span>
                   </span>
+                  <TaskActions task={t.name} />
                 </li>
               ))}
               {resource.unscheduled.length ? (

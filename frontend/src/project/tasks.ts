@@ -59,3 +59,30 @@ export function runsOf(project: Project): RunsView {
     })),
   };
 }
+
+const IDENTIFIER = /^[A-Za-z_][A-Za-z0-9_]*$/;
+
+/** The project with task `oldName` called `newName` (wherever it is: the project's tasks or a resource's), or why
+ * not. Nothing else names a task (a program instance runs in the task that lists it), so nothing else changes. */
+export function renameTask(project: Project, oldName: string, newName: string): Project | string {
+  const name = newName.trim();
+  if (!IDENTIFIER.test(name))
+    return `${name || "An empty name"} is not an IEC identifier (letters, digits and _, not starting with a digit).`;
+  const resources = project.configuration?.resources ?? [];
+  const all = [...(project.tasks ?? []), ...resources.flatMap((r) => r.tasks ?? [])];
+  if (all.some((t) => t.name !== oldName && t.name.toUpperCase() === name.toUpperCase()))
+    return `There is already a task called ${name}.`;
+  const renamed = (tasks: Task[] | undefined) => tasks?.map((t) => (t.name === oldName ? { ...t, name } : t));
+  return {
+    ...project,
+    ...(project.tasks ? { tasks: renamed(project.tasks) } : {}),
+    ...(project.configuration
+      ? {
+          configuration: {
+            ...project.configuration,
+            resources: resources.map((r) => ({ ...r, tasks: renamed(r.tasks) })),
+          },
+        }
+      : {}),
+  };
+}
