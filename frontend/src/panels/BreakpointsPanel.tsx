@@ -127,16 +127,29 @@ export function BreakpointsPanel() {
   const disabled = useDebug((s) => s.disabled);
   const project = useWorkspace((s) => s.project);
   const at = useOnline((s) => (s.monitor.state === "halted" ? s.monitor.at : null));
+  const notice = useDebug((s) => s.notice);
+  const noticed = notice ? (
+    <p className="breakpoints-notice" role="status">
+      {notice}{" "}
+      <button type="button" aria-label="Dismiss" onClick={() => debugStore.getState().dismissNotice()}>
+        ×
+      </button>
+    </p>
+  ) : null;
   if (!breakpoints.length) {
     return (
-      <p className="panel-empty">
-        No breakpoints. Click a network number in a diagram, Alt+click an element (or select it and press F9), or click
-        the gutter of an ST line.
-      </p>
+      <>
+        {noticed}
+        <p className="panel-empty">
+          No breakpoints. Click a network number in a diagram, Alt+click an element (or select it and press F9), or
+          click the gutter of an ST line.
+        </p>
+      </>
     );
   }
   return (
     <div className="breakpoints-panel">
+      {noticed}
       <button type="button" onClick={() => debugStore.getState().clearAll()}>
         Remove all breakpoints
       </button>

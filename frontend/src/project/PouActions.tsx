@@ -5,6 +5,8 @@ import { useEffect, useState, type FormEvent, type ReactNode } from "react";
 import type { Reference } from "../generated/api";
 import type { Pou } from "../generated/api";
 import { onlineStore } from "../online/store";
+import { debugStore } from "../debug/store";
+import { renamedPou } from "../debug/follow";
 import {
   changedParts,
   copyName,
@@ -76,6 +78,12 @@ export function RenameDialog({ current, isPou, onClose }: { current: string; isP
     if (preview && result && preview.name === name.trim()) {
       const renamed: Record<string, string> = isPou ? { [current]: preview.name } : {};
       const changedPous = new Set(preview.changes.map((c) => c.pou).filter((p): p is string => !!p));
+      // The POU's breakpoints take its new name before the project changes (else they would be dropped as gone).
+      if (isPou)
+        debugStore.getState().follow(
+          (bp) => renamedPou(bp, current, preview.name),
+          () => "",
+        );
       workspaceStore
         .getState()
         .applyOperation(

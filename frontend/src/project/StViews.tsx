@@ -11,6 +11,8 @@ import { StEditor } from "../st/StEditor";
 import { StOnlineBar } from "../st/StOnlineBar";
 import { useStAssist } from "../st/useStAssist";
 import { useStOnline } from "../st/useStOnline";
+import { describeBreakpoint } from "../debug/breakpoints";
+import { movedLine } from "../debug/follow";
 import { debugStore, useDebug } from "../debug/store";
 import { useTestCheck, useTestCompletions } from "../tests/assist";
 import { coverageLines, coverageOf } from "../tests/coverage";
@@ -53,6 +55,11 @@ export function StPouView({ pou }: { pou: Pou }) {
     breakpoints: lines,
     halted: at && same(at.pou) && at.line != null ? at.line : null,
     onToggle: (line: number) => debugStore.getState().toggle({ pou: pou.name, line }),
+    onLinesMoved: (move: (line: number) => number | null) =>
+      debugStore.getState().follow(
+        (bp) => movedLine(bp, pou.name, move),
+        (bp) => `The breakpoint at ${describeBreakpoint(bp)} was removed: the text of its line was deleted.`,
+      ),
   };
   return (
     <div

@@ -33,6 +33,7 @@ import { testsStore, useTests } from "../tests/store";
 import { runsOf } from "./tasks";
 import { TaskActions } from "./TaskActions";
 import { useDiagramPou } from "./useDiagramPou";
+import { followBreakpoints } from "./followBreakpoints";
 import { elementText as sfcElementText, type SfcBody } from "../sfc/model";
 import { ExportMenu } from "../interchange/ExportMenu";
 import { Keyboard, PanelBottomClose, PanelBottomOpen, PanelLeftClose, PanelLeftOpen, Save } from "lucide-react";
@@ -638,6 +639,9 @@ export function WorkspaceView() {
     },
     [project],
   );
+
+  // Breakpoints stay on what they are on, or are dropped with a message when it is gone.
+  useEffect(() => followBreakpoints(), []);
 
   // A different project: the old one's simulation and check results do not apply; its own breakpoints do.
   useEffect(() => {

@@ -14,7 +14,7 @@ import {
 } from "@codemirror/language";
 import { lintGutter, setDiagnostics } from "@codemirror/lint";
 import { Compartment, EditorState } from "@codemirror/state";
-import { EditorView, highlightActiveLine, keymap, lineNumbers } from "@codemirror/view";
+import { EditorView, highlightActiveLine, keymap, lineNumbers, type ViewUpdate } from "@codemirror/view";
 import { useEffect, useLayoutEffect, useRef } from "react";
 import type { Diagnostic } from "../generated/api";
 import { stBlocks } from "./blocks";
@@ -39,8 +39,14 @@ export interface StEditorProps {
    * without saying why again (a second editor of the same POU whose first one says it). */
   readOnly: string | null;
   label: string;
-  /** Debugging (the body only): breakpoint lines, the halted line, and a gutter click. */
-  debug?: { breakpoints: readonly number[]; halted: number | null; onToggle(line: number): void };
+  /** Debugging (the body only): breakpoint lines, the halted line, a gutter click, and an edit that moved lines
+   * (`move`: a line before the edit -> its line after it, null when its text was deleted). */
+  debug?: {
+    breakpoints: readonly number[];
+    halted: number | null;
+    onToggle(line: number): void;
+    onLinesMoved?(move: (line: number) => number | null): void;
+  };
   /** Online (the body only): values shown after their variables (none when hidden), hover and right-click. */
   online?: StOnlineView & { marks: readonly InlineMark[] };
   /** Lines the last test run with coverage never executed (tinted). */
@@ -54,6 +60,16 @@ export interface StEditorProps {
 }
 
 const NO_MARKS: readonly InlineMark[] = [];
+
+/** Where line `line` went in an edit: the line its start is on now, or null when all of its text was deleted. */
+function lineAfter(u: ViewUpdate, line: number): number | null {
+  const before = u.startState.doc;
+  if (line < 1 || line > before.lines) return line;
+  const { from, to, length } = before.line(line);
+  const start = u.changes.mapPos(from, 1);
+  if (length > 0 && u.changes.mapPos(to, -1) <= start && u.changes.touchesRange(from, to)) return null;
+  return u.state.doc.lineAt(start).number;
+}
 const NO_LINES: readonly number[] = [];
 
 export function StEditor({
@@ -119,7 +135,11 @@ export function StEditor({
             ".cm-scroller": { overflow: "auto", fontFamily: "ui-monospace, monospace" },
           }),
           EditorView.updateListener.of((u) => {
-            if (u.docChanged) latest.current.onChange(u.state.doc.toString());
+            if (!u.docChanged) return;
+            const debugging = latest.current.debug;
+            if (debugging?.breakpoints.length && debugging.onLinesMoved)
+              debugging.onLinesMoved((line) => lineAfter(u, line));
+            latest.current.onChange(u.state.doc.toString());
           }),
         ],
       }),
