@@ -4,7 +4,8 @@ Each test drives the example project the server seeds (``motor``: Main in LD wit
 ``Motor := (Start OR Motor) AND NOT Stop``, a TON ``RunTimer`` (PT = T#5s) timing Motor, a CTU counting
 starts, a Blinker FB ``Blink`` in ST; Scaling in FBD) against a real server, and fails on any page error
 or console error (conftest.py); a test that provokes an error on purpose allows exactly that one.
-Screenshots go to tests/browser/artifacts/ (README's docs/screenshot.png comes from test_walkthrough.py).
+Screenshots go to tests/browser/artifacts/ (README's docs/screenshot.png comes from test_walkthrough.py, its
+docs/online-ton.png from online-ton.png here).
 """
 
 from __future__ import annotations

@@ -25,6 +25,8 @@ _SCALE = {
 
 def run_case(case: dict) -> str | None:
     project, diagnostics = source_to_project(case["source"], "case")
+    if project is not None and _libraries(case):  # ``library=Tc2_Math``: the project uses that vendor library
+        project = project.model_copy(update={"libraries": _libraries(case)})
     refused = any(d.severity == "error" for d in diagnostics)  # a POU that does not parse is not in ``project``
     build = build_project(project) if project is not None and not refused else None
     compiled = build is not None and build.compiled is not None
@@ -56,6 +58,11 @@ def run_case(case: dict) -> str | None:
     if case["kind"] == "runtime_error":
         return f"no fault, expected {case['error']}"
     return None
+
+
+def _libraries(case: dict) -> list[str]:
+    options = (case.get("options") or "").split(",")
+    return [option.strip().removeprefix("library=") for option in options if option.strip().startswith("library=")]
 
 
 def _program_prefix(sim: Simulation, project):

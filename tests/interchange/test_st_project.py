@@ -130,7 +130,7 @@ def test_an_export_that_would_not_check_is_refused_never_handed_out():
         "ST-UNKNOWN-VAR: unknown variable 'b'"
     ]
     text = "PROGRAM Main\nVAR a : BOOL; END_VAR\na := 1.5;\nEND_PROGRAM\n"
-    assert [d.format() for d in verify_text(text, "p")] == [
+    assert [d.format() for d in verify_text(text, project)] == [
         "POU Main: error EXPORT-INTERNAL: the exported ST does not check: Main/body:3:6, POU Main: error "
         "ST-TYPE-MISMATCH: cannot assign ANY_REAL literal to BOOL"
     ]

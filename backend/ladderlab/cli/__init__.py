@@ -25,6 +25,7 @@ from ..storage.project_folder import revision_of
 from ..storage.text_files import CLI_HINT, xml_for_parser
 from .doc import add_doc_command
 from .encoding import add_encoding_option, encoding_of
+from .libraries import add_library_option, using_libraries
 from .run import Row, jsonl_line, parse_duration, parse_events, parse_fault, parse_set, run_scans, table_lines
 from .test import add_test_command
 
@@ -111,12 +112,14 @@ def _parser() -> argparse.ArgumentParser:
     check = sub.add_parser("check", help="load and check a project, print diagnostics")
     check.add_argument("project", type=Path, help="project folder, project .json file or .st / .il file")
     add_encoding_option(check)
+    add_library_option(check)
     check.add_argument("--format", choices=["text", "json"], default="text")
     check.set_defaults(func=_check)
 
     run = sub.add_parser("run", help="run a project on the virtual clock and print watched values per scan")
     run.add_argument("project", type=Path, help="project folder, project .json file or .st / .il file")
     add_encoding_option(run)
+    add_library_option(run)
     length = run.add_mutually_exclusive_group()
     length.add_argument("--cycles", type=int, default=None, metavar="N", help="number of scans (default 1)")
     length.add_argument(
@@ -190,6 +193,7 @@ def _parser() -> argparse.ArgumentParser:
     compile_ = sub.add_parser("compile", help="check and compile a project; optionally print the generated Python")
     compile_.add_argument("project", type=Path, help="project folder, project .json file or .st / .il file")
     add_encoding_option(compile_)
+    add_library_option(compile_)
     compile_.add_argument("--emit-python", action="store_true", help="print the generated Python module")
     compile_.add_argument("--variant", choices=list(VARIANTS), default="fast")
     compile_.set_defaults(func=_compile)
@@ -198,6 +202,7 @@ def _parser() -> argparse.ArgumentParser:
     export.add_argument("format", choices=["plcopen", "st"])
     export.add_argument("project", type=Path, help="project folder, project .json file or .st / .il file")
     add_encoding_option(export)
+    add_library_option(export)
     export.add_argument("--pou", default=None, help="st: only this POU (default: the whole project)")
     export.add_argument(
         "--sfc-text",
@@ -231,8 +236,8 @@ def _parser() -> argparse.ArgumentParser:
 
 
 def _load(args: argparse.Namespace) -> Project:
-    """The PROJECT argument, its files read in ``--encoding``."""
-    return load_project_path(args.project, encoding_of(args))
+    """The PROJECT argument, its files read in ``--encoding``, with the ``--library`` options."""
+    return using_libraries(load_project_path(args.project, encoding_of(args)), args)
 
 
 def _check(args: argparse.Namespace) -> int:

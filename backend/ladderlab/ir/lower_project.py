@@ -25,6 +25,7 @@ from ..model.project import Project
 from ..model.validate import validate_project
 from ..st import types as st_types
 from ..st.checker import check_project
+from ..st.libraries import with_libraries
 from ..st.symbols import CheckResult, PouInfo, Symbol
 from .build_limits import data_too_large, source_too_large
 from .context import PouContext
@@ -64,6 +65,7 @@ def lower_project(project: Project, checked: CheckResult | None = None) -> Lower
 
 
 def _lower_project(project: Project, checked: CheckResult | None) -> LoweringResult:
+    project = with_libraries(project)
     too_large = source_too_large(project)
     if too_large is not None:  # refused before it is parsed: a build needs ~800 MB per MB of ST
         return LoweringResult(None, [too_large])

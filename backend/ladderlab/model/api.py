@@ -144,7 +144,9 @@ class LibraryEntry(BaseModel):
 
     name: str
     kind: Literal["function", "function_block"]
-    source: Literal["standard", "user"]
+    source: Literal["standard", "user", "library"] = Field(
+        description="standard: IEC; user: a POU of the project; library: of a vendor library the project uses."
+    )
     inputs: list[Pin]
     outputs: list[Pin]
     in_outs: list[Pin]

@@ -19,6 +19,9 @@ PROJECT_FORMAT: ProjectFormat = "ladderlab/1"
 #: runs in the plant task before the control tasks of every scan and cannot be called from control code.
 PouKind = Literal["program", "function_block", "function", "plant"]
 Language = Literal["st", "ld", "fbd", "cfc", "il", "sfc"]
+#: Vendor compatibility libraries a project may use, as a TwinCAT project adds them in its library manager; their
+#: functions are ST source shipped with LadderLab (st/library_sources/, docs/st.md "Vendor libraries").
+LibraryName = Literal["Tc2_Math", "Tc2_Utilities"]
 
 #: Languages whose body is text (ST statements, IL instructions).
 TEXT_LANGUAGES = frozenset({"st", "il"})
@@ -241,6 +244,11 @@ class Project(BaseModel):
         default="", description="Markdown: the statement of the exercise this project is (stored as EXERCISE.md)."
     )
     tests: list[TestFile] = Field(default_factory=list, description="Unit test files (tests/<name>.st).")
+    libraries: list[LibraryName] = Field(
+        default_factory=list,
+        description="Vendor compatibility libraries the project uses; a POU of the project shadows a library "
+        "function of the same name.",
+    )
 
     _normalise_texts = field_validator("types", "globals", "exercise", mode="before")(_strip_trailing_whitespace)
 

@@ -14,6 +14,7 @@ from ..iec import stdlib
 from ..model import Project
 from ..model.api import LibraryEntry, Pin
 from ..st.checker import check_project as check_st
+from ..st.libraries import with_libraries
 from ..st.printer import print_type
 from ..st.symbols import Symbol
 
@@ -73,7 +74,10 @@ def standard_entries() -> tuple[LibraryEntry, ...]:
 
 
 def user_entries(project: Project) -> list[LibraryEntry]:
-    """The project's functions and function blocks in project order, with their declared parameters."""
+    """The project's functions and function blocks in project order, with their declared parameters, then those
+    of the vendor libraries it uses (st/libraries.py)."""
+    own = {p.name.upper() for p in project.pous}
+    project = with_libraries(project)
     result = check_st(project)
     by_name = {p.name.upper(): p for p in reversed(project.pous)}  # the first of duplicates, as the checker
     entries = []
@@ -85,7 +89,7 @@ def user_entries(project: Project) -> list[LibraryEntry]:
             LibraryEntry(
                 name=info.name,
                 kind=kind,
-                source="user",
+                source="user" if info.name.upper() in own else "library",
                 inputs=[_user_pin(s) for s in info.parameters("VAR_INPUT")],
                 outputs=[_user_pin(s) for s in info.parameters("VAR_OUTPUT")],
                 in_outs=[_user_pin(s) for s in info.parameters("VAR_IN_OUT")],

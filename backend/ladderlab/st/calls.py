@@ -16,6 +16,7 @@ from ..iec.spelling import did_you_mean
 from . import ast
 from . import types as t
 from .context_typing import default_type, untyped_leaves
+from .libraries import library_of
 from .methods import check_method_call, method_callee
 from .printer import print_expression
 from .rules import assignable_or_report, root_name
@@ -72,8 +73,15 @@ def check_call(checker: Any, node: ast.Call, statement: bool) -> Type:
         )
         return ERROR
     _args_untyped(checker, node)
-    known = [*checker.result.pous, *stdlib.FUNCTIONS]
-    checker.report("ST-UNKNOWN-POU", f"unknown function '{callee.name}'" + did_you_mean(callee.name, known), callee)
+    library = library_of(callee.name)
+    if library is not None:
+        hint = (
+            f": it is in the {library} library, which the project does not use: add it in the project's Library manager"
+            f" (--library {library} for a .st file)"
+        )
+    else:
+        hint = did_you_mean(callee.name, [*checker.result.pous, *stdlib.FUNCTIONS])
+    checker.report("ST-UNKNOWN-POU", f"unknown function '{callee.name}'" + hint, callee)
     return ERROR
 
 

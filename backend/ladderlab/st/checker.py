@@ -24,6 +24,7 @@ from .il_check import check_il_body
 from .il_parser import IlBody, parse_il
 from .inheritance import abstract_instance, check_overrides, link_bases
 from .interfaces import check_implementations, declare_interfaces, link_implements, register_interfaces
+from .libraries import with_libraries
 from .methods import check_method_body, check_method_recursion, declare_methods
 from .parser import (
     keywords,
@@ -589,8 +590,9 @@ def _parse_types(text: str, *, file: str, pou: None = None):
 
 
 def check_project(project: Project) -> CheckResult:
-    """Parse and check every text of ``project``; see ``CheckResult`` for what is resolved."""
-    return ProjectChecker(project).run()
+    """Parse and check every text of ``project`` and of the libraries it uses; see ``CheckResult`` for what is
+    resolved."""
+    return ProjectChecker(with_libraries(project)).run()
 
 
 def check_identifier(name: str, node: Any, report: Reporter) -> None:

@@ -20,6 +20,7 @@ from ..iec.literals import LITERAL_FORMS
 from ..iec.value_text import format_value
 from ..iec.values import f32
 from . import types as t
+from .libraries import library_catalogue
 from .parser import TEST_KEYWORDS, grammar_keywords, literal_patterns
 from .testfile import SIGNATURES
 
@@ -126,6 +127,7 @@ def vocabulary() -> dict[str, Any]:
             }
             for fb in stdlib.FUNCTION_BLOCKS.values()
         ],
+        "libraries": library_catalogue(),
         "keywords": sorted(grammar_keywords() - TEST_KEYWORDS),
         "test_keywords": sorted(TEST_KEYWORDS),
         "test_verbs": [{"name": verb, "signature": signature} for verb, signature in SIGNATURES.items()],

@@ -2,7 +2,7 @@
 
 Layout::
 
-    project.json        name, format, POU order, tasks, configuration
+    project.json        name, format, POU order, tasks, configuration, vendor libraries used
     types.st            TYPE ... END_TYPE blocks
     globals.st          VAR_GLOBAL ... END_VAR blocks
     pous/<name>.st      ST POUs as complete IEC text (PROGRAM ... END_PROGRAM)
@@ -84,6 +84,8 @@ def project_files(project: Project) -> dict[str, str]:
         meta["configuration"] = configuration
     if project.panels:
         meta["panels"] = [p.name for p in project.panels]
+    if project.libraries:
+        meta["libraries"] = list(project.libraries)
     files = {
         PROJECT_FILE: dump_json(meta),
         TYPES_FILE: _text_file(project.types),
@@ -192,6 +194,7 @@ def read_project_folder(folder: Path, encoding: str | None = None, hint: str = H
         "types": read.text(folder / TYPES_FILE, TYPES_FILE) or "",
         "globals": read.text(folder / GLOBALS_FILE, GLOBALS_FILE) or "",
         "exercise": read.text(folder / EXERCISE_FILE, EXERCISE_FILE) or "",
+        "libraries": meta.get("libraries", []),
     }
     project = None
     try:

@@ -1811,9 +1811,10 @@ export interface components {
       return_type: string | null;
       /**
        * Source
+       * @description standard: IEC; user: a POU of the project; library: of a vendor library the project uses.
        * @enum {string}
        */
-      source: "standard" | "user";
+      source: "standard" | "user" | "library";
     };
     /**
      * Login
@@ -2407,6 +2408,11 @@ export interface components {
        * @default
        */
       globals?: string;
+      /**
+       * Libraries
+       * @description Vendor compatibility libraries the project uses; a POU of the project shadows a library function of the same name.
+       */
+      libraries?: ("Tc2_Math" | "Tc2_Utilities")[];
       /** Name */
       name: string;
       /**

@@ -2684,6 +2684,48 @@ export const IEC = {
     "WITH",
     "XOR",
   ],
+  libraries: [
+    {
+      functions: [
+        {
+          description:
+            "in truncated toward zero; -0.9 gives -0.0; NaN, infinities and integers are returned unchanged",
+          name: "LTRUNC",
+          signature: "LTRUNC(in : LREAL) : LREAL",
+        },
+        {
+          description:
+            "the remainder of value / modulo with the sign of value; NaN when modulo is 0",
+          name: "LMOD",
+          signature: "LMOD(value : LREAL, modulo : LREAL) : LREAL",
+        },
+        {
+          description:
+            "the remainder of value / ABS(modulo) in [0, ABS(modulo)); NaN when modulo is 0",
+          name: "MODABS",
+          signature: "MODABS(value : LREAL, modulo : LREAL) : LREAL",
+        },
+        {
+          description:
+            "the fractional part of in, with the sign of in; NaN for NaN and the infinities",
+          name: "FRAC",
+          signature: "FRAC(in : LREAL) : LREAL",
+        },
+      ],
+      name: "Tc2_Math",
+    },
+    {
+      functions: [
+        {
+          description:
+            "in as [-]dddd.dddd with iPrecision decimals (0 to 15), rounded half away from zero when bRound, else cut; '#QNAN' for NaN, '#INF' / '-#INF' for the infinities, '#OVF' / '-#OVF' from 2^64 on",
+          name: "LREAL_TO_FMTSTR",
+          signature: "LREAL_TO_FMTSTR(in : LREAL, iPrecision : INT, bRound : BOOL) : STRING",
+        },
+      ],
+      name: "Tc2_Utilities",
+    },
+  ],
   literal_patterns: {
     BASED_INTEGER: "(?:2#[01_]+|8#[0-7_]+|16#[0-9A-Fa-f_]+)",
     DATE_LITERAL: "(?:LDATE|DATE|LD|D)#\\d+-\\d+-\\d+",

@@ -70,6 +70,7 @@ const ShellTab = lazy(() => import("../hmi/ShellTab").then((m) => ({ default: m.
 const GlobalsView = lazy(() => import("./ProjectParts").then((m) => ({ default: m.GlobalsView })));
 const TypesView = lazy(() => import("./ProjectParts").then((m) => ({ default: m.TypesView })));
 const TasksView = lazy(() => import("./ProjectParts").then((m) => ({ default: m.TasksView })));
+const LibrariesView = lazy(() => import("../libraries/LibrariesView").then((m) => ({ default: m.LibrariesView })));
 const PouDeclarations = lazy(() => import("./PouDeclarations").then((m) => ({ default: m.PouDeclarations })));
 const StView = lazy(() => import("../stview/StView").then((m) => ({ default: m.StView })));
 const SfcPouView = lazy(() => import("../sfc/SfcPouView").then((m) => ({ default: m.SfcPouView })));
@@ -250,6 +251,7 @@ function TestFilesTree() {
 /** What the tree says of a project part: how many types, globals, tasks it has. */
 function partSummary(project: Project, part: ProjectPart): string {
   if (part === "Tasks") return project.tasks?.length ? `${project.tasks.length}` : "default";
+  if (part === "Library manager") return project.libraries?.length ? `${project.libraries.length}` : "none";
   if (part === "Types") return `${typeRows(project.types ?? "").length}`;
   const parsed = parseDeclarations(project.globals ?? "");
   return parsed.ok ? `${parsed.rows.length}` : "";
@@ -455,7 +457,15 @@ function ProjectPartView({ part }: { part: ProjectPart }) {
   return (
     <ViewBoundary name={`The ${part} editor`}>
       <Suspense fallback={LOADING}>
-        {part === "Global variables" ? <GlobalsView /> : part === "Types" ? <TypesView /> : <TasksView />}
+        {part === "Global variables" ? (
+          <GlobalsView />
+        ) : part === "Types" ? (
+          <TypesView />
+        ) : part === "Library manager" ? (
+          <LibrariesView />
+        ) : (
+          <TasksView />
+        )}
       </Suspense>
     </ViewBoundary>
   );

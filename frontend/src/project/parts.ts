@@ -1,9 +1,10 @@
-// The project's own parts besides POUs and test files: the global variables, the types and the tasks.
+// The project's own parts besides POUs and test files: the global variables, the types, the tasks and the
+// vendor libraries it uses.
 // Each opens in a tab of its name (no POU is called so: POU names have no space), and a diagnostic
 // of one (file "globals" or "types", or a JSON path into the tasks) reveals that tab.
 import type { Diagnostic } from "../generated/api";
 
-export const PROJECT_PARTS = ["Global variables", "Types", "Tasks"] as const;
+export const PROJECT_PARTS = ["Global variables", "Types", "Tasks", "Library manager"] as const;
 export type ProjectPart = (typeof PROJECT_PARTS)[number];
 
 export const isProjectPart = (tab: string): tab is ProjectPart => (PROJECT_PARTS as readonly string[]).includes(tab);
@@ -13,6 +14,7 @@ export function partOf(d: Diagnostic): ProjectPart | null {
   if (d.file === "globals") return "Global variables";
   if (d.file === "types") return "Types";
   if (d.json_path?.startsWith("$.tasks")) return "Tasks";
+  if (d.json_path?.startsWith("$.libraries")) return "Library manager";
   return null;
 }
 

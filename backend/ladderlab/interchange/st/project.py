@@ -32,6 +32,10 @@ def export_project_st(project: Project, *, sfc_text: bool = False) -> StExport:
     parts: list[str] = []
     source_map: list[tuple[int, str, str | None]] = []
     diagnostics: list[Diagnostic] = []
+    if project.libraries:  # a .st file has no project.json to list them (docs/st.md "Vendor libraries")
+        names = ", ".join(project.libraries)
+        options = " ".join(f"--library {name}" for name in project.libraries)
+        parts.append(f"(* Uses the vendor libraries {names}: ladderlab check/run ... {options} *)")
     if project.types.strip():
         parts.append(project.types.strip("\n"))
     if project.globals.strip():
@@ -62,14 +66,16 @@ def export_project_st(project: Project, *, sfc_text: bool = False) -> StExport:
     if has_errors(diagnostics):
         return StExport("", [], diagnostics)
     text = "\n\n".join(parts) + "\n"
-    problems = verify_text(text, project.name)
+    problems = verify_text(text, project)
     return StExport("" if problems else text, [] if problems else source_map, diagnostics + problems)
 
 
-def verify_text(text: str, name: str) -> list[Diagnostic]:
-    """The exported file must read back into a project that checks without errors; else say so."""
-    read, diagnostics = source_to_project(text, name)
+def verify_text(text: str, project: Project) -> list[Diagnostic]:
+    """The exported file must read back into a project (with the same vendor libraries, which the text names in a
+    comment) that checks without errors; else say so."""
+    read, diagnostics = source_to_project(text, project.name)
     if read is not None:
+        read = read.model_copy(update={"libraries": project.libraries})
         diagnostics = diagnostics + check_project(read).diagnostics
     return [
         Diagnostic(

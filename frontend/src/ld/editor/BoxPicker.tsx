@@ -78,7 +78,7 @@ export function BoxPicker({ library, onPick, onCancel, title = "Insert box", def
               <span className="ld-entry-signature">{signature(entry)}</span>
               <span className="ld-entry-kind">
                 {entry.kind === "function_block" ? "FB" : "FUN"}
-                {entry.source === "user" ? " · user" : ""}
+                {entry.source === "standard" ? "" : ` · ${entry.source}`}
               </span>
               {entry.comment ? <span className="ld-entry-comment">{entry.comment}</span> : null}
             </li>

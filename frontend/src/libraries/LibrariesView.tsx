@@ -1,0 +1,55 @@
+// The project's vendor compatibility libraries (Tc2_Math, Tc2_Utilities), as TwinCAT's library manager adds
+// them: a checkbox per library and its functions' signatures. The list and the signatures come from the
+// backend's library sources through the vocabulary (src/generated/iec.ts), so they cannot disagree with
+// what the checker accepts; docs/st.md "Vendor libraries" says what each function does.
+import { IEC } from "../generated/iec";
+import type { Project } from "../generated/api";
+import { useOnline } from "../online/store";
+import { useWorkspace } from "../project/store";
+
+type LibraryName = NonNullable<Project["libraries"]>[number];
+const NONE: readonly LibraryName[] = [];
+
+/** ``libraries`` with ``name`` added or removed, in the catalogue's order (project.json diffs stay small). */
+export function toggled(libraries: readonly LibraryName[], name: LibraryName, on: boolean): LibraryName[] {
+  return IEC.libraries.map((l) => l.name as LibraryName).filter((l) => (l === name ? on : libraries.includes(l)));
+}
+
+export function LibrariesView() {
+  const libraries = useWorkspace((s) => s.project?.libraries ?? NONE);
+  const setProjectPart = useWorkspace((s) => s.setProjectPart);
+  const online = useOnline((s) => s.phase) !== "offline";
+  const use = (name: LibraryName, on: boolean) =>
+    setProjectPart("Library manager", (project) => ({ ...project, libraries: toggled(libraries, name, on) }));
+  return (
+    <div className="pou-view part-view" role="region" aria-label="Library manager">
+      <p className="tree-empty">
+        Vendor compatibility libraries for code brought from TwinCAT. A POU of the project with the same name as a
+        library function is used instead of it.
+      </p>
+      {IEC.libraries.map((library) => {
+        const name = library.name as LibraryName;
+        return (
+          <section key={name} aria-label={name}>
+            <label>
+              <input
+                type="checkbox"
+                checked={libraries.includes(name)}
+                disabled={online}
+                onChange={(e) => use(name, e.target.checked)}
+              />{" "}
+              <strong>{name}</strong>
+            </label>
+            <ul>
+              {library.functions.map((f) => (
+                <li key={f.name}>
+                  <code>{f.signature}</code> - {f.description}
+                </li>
+              ))}
+            </ul>
+          </section>
+        );
+      })}
+    </div>
+  );
+}
