@@ -651,7 +651,10 @@ export function WorkspaceView() {
   );
 
   // Breakpoints stay on what they are on, or are dropped with a message when it is gone.
-  useEffect(() => followBreakpoints(), []);
+  useEffect(() => {
+    const stop = followBreakpoints();
+    return stop;
+  }, []);
 
   // A different project: the old one's simulation and check results do not apply; its own breakpoints do.
   useEffect(() => {
