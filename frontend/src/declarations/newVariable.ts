@@ -1,5 +1,6 @@
 // What the declare dialog (LD, FBD and ST alike) asks of a new variable, and whether the answers make a
 // declaration. Pure, so the dialog and the store share one notion of a "new variable".
+import { identifierProblem } from "../iec/identifier";
 
 /** A variable the user declares from an editor: `varClass` is the block keyword (VAR when absent). */
 export interface NewVariable {
@@ -27,12 +28,10 @@ export const DECLARE_CLASSES: readonly string[] = [
 /** Whether a variable of `varClass` belongs in the global variable list rather than the POU. */
 export const isGlobalClass = (varClass: string | undefined): boolean => /^VAR_GLOBAL\b/i.test(varClass?.trim() ?? "");
 
-const IDENTIFIER = /^[A-Za-z_][A-Za-z0-9_]*$/;
-
 /** Why `v` cannot be declared (in the user's words), or null when it can. */
 export function declareProblem(v: NewVariable): string | null {
-  if (!IDENTIFIER.test(v.name.trim()))
-    return `${v.name.trim() || "An empty name"} is not an IEC identifier (letters, digits and _, not starting with a digit).`;
+  const notIdentifier = identifierProblem(v.name);
+  if (notIdentifier) return notIdentifier;
   if (!v.type.trim()) return `${v.name.trim()} needs a type, e.g. BOOL, INT or TIME.`;
   if (/^VAR(_GLOBAL)? CONSTANT$/i.test(v.varClass?.trim() ?? "") && !v.initial?.trim())
     return `A constant needs an initial value: ${v.name.trim()} : ${v.type.trim()} := ...`;

@@ -20,6 +20,7 @@ import { RunBindings } from "./RunBindings";
 import { structMembers, TYPE_KINDS, typeRows, withNewType, withStructMembers, type TypeKind } from "./types";
 import type { DeclRow } from "../declarations/model";
 import { useWorkspace } from "./store";
+import { identifierProblem } from "../iec/identifier";
 
 const NO_COMPLETIONS = { options: [], members: () => null };
 const NO_TASKS: Task[] = [];
@@ -81,10 +82,9 @@ export function TypesView() {
   const add = (e: FormEvent) => {
     e.preventDefault();
     const wanted = name.trim();
-    if (!/^[A-Za-z_][A-Za-z0-9_]*$/.test(wanted)) {
-      setError(
-        `${wanted || "An empty name"} is not an IEC identifier (letters, digits and _, not starting with a digit).`,
-      );
+    const notIdentifier = identifierProblem(wanted);
+    if (notIdentifier) {
+      setError(notIdentifier);
       return;
     }
     if (rows.some((r) => r.name.toUpperCase() === wanted.toUpperCase())) {

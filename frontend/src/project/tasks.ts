@@ -1,6 +1,7 @@
 // What a project runs, as the project tree lists it: its own tasks, or its configuration's resources with
 // their tasks and the program instances each runs (issue 16; the model is backend/ladderlab/model/project.py).
 import type { ProgramInstance, Project, Task } from "../generated/api";
+import { identifierProblem } from "../iec/identifier";
 
 export interface TaskLine {
   name: string;
@@ -60,14 +61,12 @@ export function runsOf(project: Project): RunsView {
   };
 }
 
-const IDENTIFIER = /^[A-Za-z_][A-Za-z0-9_]*$/;
-
 /** The project with task `oldName` called `newName` (wherever it is: the project's tasks or a resource's), or why
  * not. Nothing else names a task (a program instance runs in the task that lists it), so nothing else changes. */
 export function renameTask(project: Project, oldName: string, newName: string): Project | string {
   const name = newName.trim();
-  if (!IDENTIFIER.test(name))
-    return `${name || "An empty name"} is not an IEC identifier (letters, digits and _, not starting with a digit).`;
+  const notIdentifier = identifierProblem(name);
+  if (notIdentifier) return notIdentifier;
   const resources = project.configuration?.resources ?? [];
   const all = [...(project.tasks ?? []), ...resources.flatMap((r) => r.tasks ?? [])];
   if (all.some((t) => t.name !== oldName && t.name.toUpperCase() === name.toUpperCase()))
