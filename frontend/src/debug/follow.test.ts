@@ -61,6 +61,9 @@ describe("breakpoints follow what they are on (issue 22)", () => {
     expect(goneBecause({ pou: "Lad", element: "q1" }, without as Project)).toBe(
       "The breakpoint at Lad, element q1 was removed: its element was deleted.",
     );
+    expect(goneBecause({ pou: "Lad", element: "q1" }, without as Project, project)).toBe(
+      "The breakpoint at Lad, element q1 (coil x) was removed: its element was deleted.",
+    );
   });
 
   it("the store moves them, keeps each one's enabled state, drops the gone ones with a notice and tells the simulation", () => {

@@ -4,6 +4,7 @@
 // applies the results and the workspace says when the project changed.
 import type { Pou, Project } from "../generated/api";
 import { describeBreakpoint, type Breakpoint } from "./breakpoints";
+import { describePlace } from "./place";
 
 /** `bp` of POU `oldName` (case-insensitive) as a breakpoint of `newName`; others unchanged. */
 export const renamedPou = (bp: Breakpoint, oldName: string, newName: string): Breakpoint =>
@@ -34,12 +35,9 @@ export function goneBecause(bp: Breakpoint, project: Project, before?: Project):
   const find = (p: Project | undefined): Pou | undefined =>
     (p?.pous ?? []).find((x) => x.name.toUpperCase() === bp.pou.toUpperCase());
   const pou = find(project);
-  const old = find(before)?.body;
-  const networks = old && typeof old === "object" && "networks" in old ? (old.networks ?? []) : [];
-  const where = describeBreakpoint(
-    bp,
-    networks.map((n) => n.id),
-  ); // numbered as the user last saw it
+  const old = find(before);
+  // Named as the user last saw it: the network's number and label, the element's operand, the line's text.
+  const where = old ? `${old.name}, ${describePlace(bp, old, old.body)}` : describeBreakpoint(bp);
   if (!pou) return `The breakpoint at ${where} was removed: there is no POU ${bp.pou} any more.`;
   if (bp.body) return null;
   if ("line" in bp) {
