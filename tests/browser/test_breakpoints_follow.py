@@ -1,6 +1,7 @@
 """Breakpoints follow what they are on (issue 22): an ST line's breakpoint moves down when a line is inserted
 above it and is dropped with a message when its line's text is deleted; a POU's breakpoints take its new name
-when it is renamed from the tree; an LD element's breakpoint is dropped with a message when the element is deleted.
+when it is renamed from the tree; an LD element's breakpoint is dropped with a message naming it by its operand when
+the element is deleted.
 Never a breakpoint silently on another line.
 """
 
@@ -83,3 +84,44 @@ def test_st_breakpoints_follow_their_lines_and_their_pou(page, server):
     expect(dialog).to_have_count(0)
     expect(page.locator("tr.breakpoint-row")).to_have_attribute("data-breakpoint", "PLANT|line:3")
     assert rows(page, 1) == [("PLANT|line:3", "Plant line 3: b := 2;")]
+
+
+def test_an_ld_element_breakpoint_is_dropped_with_a_message_when_the_element_is_deleted(page, server):
+    store_project(
+        server,
+        {
+            "name": "followld",
+            "pous": [
+                {
+                    "name": "Lad",
+                    "kind": "program",
+                    "language": "ld",
+                    "declarations": "VAR\n    Go : BOOL;\n    Lamp : BOOL;\nEND_VAR",
+                    "body": {
+                        "networks": [
+                            {
+                                "id": "n1",
+                                "elements": [
+                                    {"type": "contact", "id": "c1", "var": "Go"},
+                                    {"type": "coil", "id": "q1", "var": "Lamp"},
+                                ],
+                            }
+                        ]
+                    },
+                }
+            ],
+        },
+    )
+    page.goto(server)
+    open_pou(page, "followld", "Lad")
+    page.locator('g.ld-element[data-id="q1"] .ld-hit').click()
+    page.keyboard.press("F9")
+    assert rows(page, 1) == [("LAD|element:q1", "Lad element q1 (coil Lamp)")]
+    page.locator('g.ld-element[data-id="q1"] .ld-hit').click()
+    page.keyboard.press("Delete")
+    expect(page.locator('g.ld-element[data-id="q1"]')).to_have_count(0)
+    notice = page.get_by_role("region", name="Panels").get_by_role("status").filter(has_text="breakpoint")
+    expect(notice).to_have_text(
+        re.compile(r"^The breakpoint at Lad, element q1 \(coil Lamp\) was removed: its element was deleted\.")
+    )
+    assert rows(page, 0) == []
