@@ -91,6 +91,16 @@ def test_ld_declare_dialog_is_driven_by_the_keyboard(page, server):
     page.keyboard.press("Escape")
     expect(dialog).to_have_count(0)
     assert focused_label(page) == "Ladder diagram editor"
+    # Brought back from the element's menu (issue 22 item 7), and cancelled again.
+    limit = page.locator("g.ld-element.ld-coil").filter(
+        has=page.locator("g.ld-operand > text", has_text=re.compile("^Limit$"))
+    )
+    limit.locator(".ld-hit").click(button="right")
+    page.get_by_role("menuitem", name=re.compile("^Declare Limit…")).click()
+    expect(dialog).to_be_visible()
+    expect(dialog.get_by_label("Type of the new variable")).to_have_value("BOOL")
+    page.keyboard.press("Escape")
+    expect(dialog).to_have_count(0)
 
     page.keyboard.press("Control+s")
     page.get_by_text("All changes saved").wait_for()
