@@ -1,6 +1,6 @@
 import { lazy, StrictMode, Suspense } from "react";
 import { createRoot } from "react-dom/client";
-import App from "./App";
+import App from "./app/App";
 import { panelTarget } from "./hmi/panelTarget";
 import "./styles.css";
 import { showInitialTheme } from "./ui/theme";

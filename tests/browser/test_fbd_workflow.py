@@ -41,6 +41,26 @@ def drop_from_palette(page, label: str, canvas, x: int, y: int) -> None:
     )
 
 
+def insert_block(page, canvas, call: str, x: int, y: int) -> None:
+    """Drops a block from the palette at (x, y) and picks ``call`` in the block picker."""
+    drop_from_palette(page, "Block…", canvas, x, y)
+    picker = page.get_by_role("dialog", name="Insert block")
+    picker.get_by_label("Search functions and function blocks").press_sequentially(call)
+    picker.get_by_role("option", name=f"{call} ").first.wait_for()
+    page.keyboard.press("Enter")
+
+
+def new_fbd_network(page, server: str, project: str):
+    """A new project with an FBD program Main and one network: (editor, the network's canvas)."""
+    new_project(page, server, project)
+    new_pou(page, "Main", language="fbd")
+    editor = page.get_by_role("application", name="Function block diagram editor")
+    editor.get_by_role("button", name="Add network").click()
+    canvas = editor.locator(".fbd-network .react-flow__pane").first
+    canvas.wait_for()
+    return editor, canvas
+
+
 def name_and_declare(page, label: str, name: str, declare_as: str | None) -> None:
     page.get_by_role("combobox", name=label).press_sequentially(name)
     page.keyboard.press("Enter")
@@ -50,23 +70,14 @@ def name_and_declare(page, label: str, name: str, declare_as: str | None) -> Non
 
 
 def test_new_user_builds_and_runs_an_fbd_calculation(page, server):
-    new_project(page, server, "calc")
-    new_pou(page, "Main", language="fbd")
-    editor = page.get_by_role("application", name="Function block diagram editor")
-    editor.get_by_role("button", name="Add network").click()
-    canvas = editor.locator(".fbd-network .react-flow__pane").first
-    canvas.wait_for()
+    editor, canvas = new_fbd_network(page, server, "calc")
 
     # Three inputs, ADD, SUB and the output, each dragged from the palette onto the network.
     for i, name in enumerate(("var1", "var2", "var3")):
         drop_from_palette(page, "Input", canvas, 60, 30 + 55 * i)
         name_and_declare(page, "Input operand", name, "INT")
     for call, x in (("ADD", 260), ("SUB", 460)):
-        drop_from_palette(page, "Block…", canvas, x, 30)
-        picker = page.get_by_role("dialog", name="Insert block")
-        picker.get_by_label("Search functions and function blocks").press_sequentially(call)
-        picker.get_by_role("option", name=f"{call} ").first.wait_for()
-        page.keyboard.press("Enter")
+        insert_block(page, canvas, call, x, 30)
     drop_from_palette(page, "Output", canvas, 660, 40)
     name_and_declare(page, "Output variable", "result", "INT")
     nodes = {n.get_attribute("data-node"): n.inner_text() for n in editor.locator(".fbd-node").all()}

@@ -75,3 +75,25 @@ def test_methods_and_properties_in_the_tree_and_online(page, server) -> None:
         )
         # each scan adds 2 through the interface; the inherited property reads the base's variable
         expect(seen).to_have_text(str(2 * (start + done)))
+
+
+def test_renaming_a_base_lists_and_rewrites_extends_and_what_methods_use(page, server) -> None:
+    """Issue 25 item 5 of the brief: the rename preview lists the EXTENDS and IMPLEMENTS that name the renamed function
+    block or interface, and a method's own texts, in the tree's words; applying it rewrites them."""
+    project, diagnostics = source_to_project(SOURCE, "oop")
+    assert project is not None and diagnostics == []
+    store_project(server, project.model_dump(mode="json", exclude_none=True))
+    page.goto(server)
+    open_pou(page, "oop", "Main")
+    page.keyboard.press("Escape")
+    tree = page.get_by_role("navigation", name="Project tree")
+    tree.get_by_role("button", name="Actions for Base", exact=True).click()
+    page.get_by_role("menu", name="Base actions", exact=True).get_by_role("menuitem", name="Rename…").click()
+    dialog = page.get_by_role("dialog", name="Rename Base")
+    dialog.get_by_label("New name").fill("Root")
+    dialog.get_by_role("button", name="Preview").click()
+    references = dialog.get_by_role("list", name="References")
+    references.wait_for()
+    assert references.get_by_role("listitem").all_inner_texts() == ["Counter EXTENDS Base"]
+    dialog.get_by_role("button", name="Rename").click()
+    expect(tree.get_by_role("list", name="Counter members")).to_have_text("EXTENDS Root IMPLEMENTS ICount")

@@ -175,7 +175,7 @@ def test_a_method_of_a_fb_derived_from_one_without_overrides_is_called_directly(
                 (
                     "ST-NOT-CALLABLE",
                     "B.M/body",
-                    "SUPER^() would run a function block's body from a method: not supported yet",
+                    "SUPER^() runs the base function block's body: call it in the derived block's body, not a method",
                 )
             ],
         ),

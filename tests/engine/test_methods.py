@@ -158,13 +158,23 @@ def test_internal_and_public_methods_are_called_from_anywhere_in_the_project():
             ("ST-DECL", "F.M/declarations", "F has the ABSTRACT method M, so it must be ABSTRACT too"),
         ),
         (
-            "METHOD M : INT\nVAR_OUTPUT o : INT; END_VAR\nEND_METHOD\n",
+            "METHOD M : INT\nVAR_GLOBAL g : INT; END_VAR\nEND_METHOD\n",
             "",
+            ("ST-DECL", "F.M/declarations", "VAR_GLOBAL is not allowed in a method"),
+        ),
+        (
+            "METHOD M : INT\nVAR_OUTPUT o : INT; END_VAR\nEND_METHOD\n",
+            "x := f.M(o => b);",
             (
-                "ST-DECL",
-                "F.M/declarations",
-                "VAR_OUTPUT in a method is not supported yet: return the value, or use VAR_IN_OUT",
+                "ST-TYPE-MISMATCH",
+                "Main/body",
+                "output o is INT and cannot be stored in BOOL without a conversion such as INT_TO_BOOL",
             ),
+        ),
+        (
+            "METHOD M : INT\nVAR_OUTPUT o : INT; END_VAR\nEND_METHOD\n",
+            "x := f.M(o := x);",
+            ("ST-CALL-ARGS", "Main/body", "'o' is an output of f.M: write o => variable"),
         ),
         (
             "METHOD n : INT\nEND_METHOD\n",
@@ -191,7 +201,7 @@ def test_internal_and_public_methods_are_called_from_anywhere_in_the_project():
 def test_method_declaration_and_call_errors(method, call, expected):
     text = (
         f"FUNCTION_BLOCK F\nVAR n : INT; END_VAR\n{method}END_FUNCTION_BLOCK\n"
-        f"PROGRAM Main\nVAR f : F; x : INT; END_VAR\n{call}\nEND_PROGRAM\n"
+        f"PROGRAM Main\nVAR f : F; x : INT; b : BOOL; END_VAR\n{call}\nEND_PROGRAM\n"
     )
     assert errors(text) == [expected]
 

@@ -106,3 +106,54 @@ def test_plcopen_methods_and_extends_as_codesys_writes_them_are_read_without_lad
     assert (by_name["Square"].extends, by_name["Cube"].extends) == ("Shape", "Square")
     assert by_name["Square"].methods[0].return_type == "INT"
     assert "Area := side * side;" in by_name["Square"].methods[0].body
+
+
+def test_plcopen_properties_and_implements_as_codesys_writes_them_are_read_without_ladderlabs_data():
+    """CODESYS's property entries (``.../plcopenxml/property``: type, GET and SET with their variables and bodies) and
+    the IMPLEMENTS of its declaration text (``.../interfaceasplaintext``) come back without LadderLab's data."""
+    text = """
+INTERFACE IGauge
+METHOD Read : INT
+END_METHOD
+END_INTERFACE
+FUNCTION_BLOCK Gauge IMPLEMENTS IGauge
+VAR raw : INT; END_VAR
+METHOD Read : INT
+Read := raw;
+END_METHOD
+PROPERTY Level : INT
+GET
+VAR twice : INT; END_VAR
+twice := raw * 2;
+Level := twice;
+END_GET
+SET
+raw := Level;
+END_SET
+END_PROPERTY
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR g : Gauge; i : IGauge; l : INT; r : INT; END_VAR
+g.Level := 21;
+l := g.Level;
+i := g;
+r := i.Read();
+END_PROGRAM
+"""
+    original, _ = source_to_project(text, "oo")
+    document = ET.fromstring(export_plcopen(original))
+    interfaces = [e for e in document.iter() if e.tag.endswith("}interface")]  # the POUs' (the types text stays)
+    for add in (child for interface in interfaces for child in interface if child.tag.endswith("}addData")):
+        for data in [d for d in add if d.get("name") == LADDERLAB_DATA]:
+            add.remove(data)
+    result = import_plcopen(ET.tostring(document), name="oo")
+    assert [d.format() for d in result.diagnostics] == []
+    gauge = next(p for p in result.project.pous if p.name == "Gauge")
+    assert gauge.implements == ["IGauge"]
+    [level] = gauge.properties
+    assert (level.name, level.type) == ("Level", "INT")
+    assert "twice : INT;" in level.get.declarations and "Level := twice;" in level.get.body
+    assert "raw := Level;" in level.set.body
+    sim = build_project(result.project).simulation()
+    sim.cycle(1)
+    assert (sim.read("Main.l"), sim.read("Main.r")) == (42, 21)

@@ -89,6 +89,20 @@ def test_gr06_feedback_from_a_function_reads_the_variable_its_result_goes_to():
     )
 
 
+def test_gr06_feedback_from_a_function_without_variable_gets_a_declared_feedback_variable():
+    """Issue 22 item 6: ADD's result in no variable - the export declares the lowering's feedback variable."""
+    text = check(
+        net(
+            "n1",
+            [inp("one", "1"), blk("add", "ADD", x=0, y=0), inp("three", "3"), blk("ge", "GE"), out("o", "ok")],
+            [("add.OUT", "add.IN1"), ("one.OUT", "add.IN2"), ("add.OUT", "ge.IN1"), ("three.OUT", "ge.IN2")]
+            + [("ge.OUT", "o.IN")],
+        ),
+        expected="(* Network 1 *)\nADD_OUT := ADD_OUT_prev + 1;\nADD_OUT_prev := ADD_OUT;\nok := ADD_OUT >= 3;\n",
+    )
+    assert "ADD_OUT_prev : INT;" in text
+
+
 def test_gr06_feedback_from_an_fb_output_reads_the_instance_before_the_call():
     check(
         net(

@@ -74,6 +74,11 @@ IL_PROGRAMS = {
     "LD a\nST INSTANZ.PAR1\nLD b\nST INSTANZ.PAR2\nCAL INSTANZ\nLD INSTANZ.MULERG\nST ERG\nLD INSTANZ.VERGL\n"
     "ST QUAD\nLD a\nFct b, 3\nST F\nLD QUAD\nRETC\nLD 5\nST a\nEND_PROGRAM\n"
     + examples.FUB.split("PROGRAM PRGexample2")[0],
+    "IL-08 program calls": "PROGRAM P\nVAR a, erg, erg2 : INT; END_VAR\n"
+    "LD a\nST PRGexample2.in_var\nCAL PRGexample2\nLD PRGexample2.out_var\nST erg\n"
+    "CAL PRGexample2(in_var := erg, out_var => erg2)\nEND_PROGRAM\n"
+    + "PROGRAM PRGexample2"
+    + examples.FUB.split("PROGRAM PRGexample2")[1],
 }
 
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 from ladderlab.ir import nodes as ir
 from ladderlab.ir.lower_project import LoweringResult, lower_project
 from ladderlab.ir.types import Elementary
+from ladderlab.model import Task
 from ladderlab.st.project_text import source_to_project
 from tests.ir.invariants import check_program
 
@@ -22,6 +23,18 @@ def lower_source(text: str) -> LoweringResult:
 def lower_ok(text: str) -> ir.Program:
     """Lower ``text``; it must have no errors, and the IR must satisfy the invariants of docs/ir.md."""
     result = lower_source(text)
+    assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
+    assert result.program is not None
+    check_program(result.program)
+    return result.program
+
+
+def lower_with_tasks(text: str, tasks: dict[str, list[str]]) -> ir.Program:
+    """``text`` lowered with the project's tasks ``{task: [programs]}`` (10 ms each), checked like lower_ok."""
+    project, diagnostics = source_to_project(text, "test")
+    assert project is not None, [d.format() for d in diagnostics]
+    project.tasks = [Task(name=name, interval="T#10ms", programs=programs) for name, programs in tasks.items()]
+    result = lower_project(project)
     assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
     assert result.program is not None
     check_program(result.program)

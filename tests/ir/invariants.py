@@ -58,6 +58,9 @@ class _Checker:
         self.program, self.pou = program, pou
         self.locals = {s.name: s for s in pou.slots}
         self.globals = {s.name: s for s in program.globals}
+        for instance in program.program_instances():  # the engine keeps program instances among the globals
+            fb = t.FbInstance(instance.pou)
+            self.globals[instance.name] = ir.Slot(instance.name, "VAR_GLOBAL", fb, None)
 
     def var(self, v: ir.Var) -> None:
         assert v.name == v.name.upper(), v

@@ -9,7 +9,7 @@ from __future__ import annotations
 import pytest
 
 from ladderlab.engine.simulation import Simulation
-from tests.ir.helpers import errors, lower_ok
+from tests.ir.helpers import errors, lower_ok, lower_with_tasks
 
 
 def program(declarations: str, body: str, extra: str = "") -> Simulation:
@@ -341,16 +341,44 @@ ST F
     assert [sim.read(f"P.{n}") for n in ("ERG", "QUAD", "F")] == [51, False, 14]
 
 
-def test_program_call_is_refused_like_st_il08():
-    """IL-08's ``CAL PRGexample2(in_var := 33, out_var => erg)``: the engine runs programs from tasks only, so IL
-    gets ST's located refusal on the CAL line (not a silent stand-in)."""
-    found = errors(
-        f"PROGRAM P\nVAR erg : INT; END_VAR\nCAL PRGexample2(in_var := 33, out_var => erg)\nEND_PROGRAM\n{FUB}"
-    )
-    assert found == [
-        "P/body:3:5, POU P: error IR-UNSUPPORTED: calling the program PRGexample2 from ST is not supported by the "
-        "engine yet: run it from a task"
-    ]
+def test_program_calls_run_the_programs_one_instance_il08():
+    """IL-08 (seed 003, example of a program call): ``CAL PRGexample2(in_var := 33, out_var => erg)`` gives
+    erg = 33 + 1 = 34; ``LD 5 / ST PRGexample2.in_var / CAL PRGexample2 / LD PRGexample2.out_var / ST ERG`` gives
+    6. One instance: the program's variables keep the last call's values for the next caller (seed 003: "at the
+    next call its variables have the same values, even when another POU calls it")."""
+    body = """
+CAL PRGexample2(in_var := 33, out_var => erg)
+LD PRGexample2.out_var
+ST after_formal
+LD 5
+ST PRGexample2.in_var
+CAL PRGexample2
+LD PRGexample2.out_var
+ST ERG2
+"""
+    sim = scan(program("erg, after_formal, ERG2 : INT;", body, FUB))
+    assert [sim.read(f"P.{n}") for n in ("erg", "after_formal", "ERG2")] == [34, 34, 6]
+    # the DEFAULT task runs PRGexample2 too (after P): in_var is still 5, the value P's last call left
+    assert (sim.read("PRGexample2.in_var"), sim.read("PRGexample2.out_var")) == (5, 6)
+
+
+def test_conditional_program_call_il08_il14():
+    """``CALC PRGexample2`` runs the program only with a TRUE CR (IL-14): a counting program counts the scans
+    with go = TRUE (the project's one task runs only P, so P's calls are the program's only runs)."""
+    counter = "PROGRAM Counter\nVAR_OUTPUT n : INT; END_VAR\nLD n\nADD 1\nST n\nEND_PROGRAM\n"
+    source = f"PROGRAM P\nVAR go : BOOL; END_VAR\nLD go\nCALC Counter\nEND_PROGRAM\n{counter}"
+    sim = Simulation(lower_with_tasks(source, {"T": ["P"]}))
+    counts = []
+    for go in (True, False, True, True, False):
+        scan(sim, go=go)
+        counts.append(sim.read("Counter.n"))
+    assert counts == [1, 1, 2, 3, 3]
+
+
+def test_program_called_from_il_and_st_by_a_function_is_refused_il08():
+    """Seed 003: "Нельзя вызывать программу из функции" (a function cannot call a program), POU-32."""
+    found = errors(f"FUNCTION G : INT\nCAL PRGexample2\nEND_FUNCTION\nPROGRAM P\nEND_PROGRAM\n{FUB}")
+    assert found == ["G/body:2:5, POU G: error ST-NOT-CALLABLE: a function cannot call the program PRGexample2"]
 
 
 def test_conditional_call_and_return_il14_il23():
@@ -431,3 +459,38 @@ def test_function_with_the_cr_as_first_argument_il30_il04():
     fct = "FUNCTION Fct : INT\nVAR_INPUT P1, P2, P3 : INT; END_VAR\nLD P1\nMUL P2\nDIV P3\nST Fct\nEND_FUNCTION\n"
     sim = scan(program("A, X, Result : INT;", "LD -8\nLIMIT A, 5\nST X\nLD 7\nFct 2, 4\nST Result", fct), A=-20)
     assert (sim.read("P.X"), sim.read("P.Result")) == (-8, 3)
+
+
+def test_il_bodies_use_the_declaration_sections_of_st_seed000_il04():
+    """Seed 000 IL-04 (Ex 4.1, 4.2): an IL FB with VAR_INPUT, VAR_IN_OUT, VAR_OUTPUT, VAR, VAR CONSTANT and
+    VAR_TEMP, called from an IL program through VAR_EXTERNAL: scan k adds 3 * 2 to g (10 + 6k) and counts k."""
+    source = """
+VAR_GLOBAL g : INT := 10; END_VAR
+FUNCTION_BLOCK Acc
+VAR_INPUT step : INT; END_VAR
+VAR_IN_OUT total : INT; END_VAR
+VAR_OUTPUT calls : INT; END_VAR
+VAR n : INT; END_VAR
+VAR CONSTANT k : INT := 2; END_VAR
+VAR_TEMP t : INT; END_VAR
+LD step
+MUL k
+ST t
+LD total
+ADD t
+ST total
+LD n
+ADD 1
+ST n
+ST calls
+END_FUNCTION_BLOCK
+PROGRAM P
+VAR_EXTERNAL g : INT; END_VAR
+VAR a : Acc; c : INT; END_VAR
+CAL a(step := 3, total := g, calls => c)
+END_PROGRAM
+"""
+    sim = Simulation(lower_ok(source))
+    for k in range(1, 4):
+        scan(sim)
+        assert (sim.read("g"), sim.read("P.c")) == (10 + 6 * k, k)

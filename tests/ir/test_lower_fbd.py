@@ -211,8 +211,9 @@ def test_gr06_feedback_from_an_fb_output_reads_the_instance_before_it_runs():
     )
     body = statements(program, "Main", "n")
     q = var("T1", BOOL, ir.Member("Q"))
-    assert body[0] == ir.FnCall(ir.Call("NOT", (q,), (BOOL,), BOOL), var("__P"), at("not"))
-    assert isinstance(body[3], ir.FbCall) and body[3].inputs[0] == ("IN", var("__P"))
+    assert body[0] == ir.Probe("not.IN", q, at("not"))  # online: the value NOT read (issue 22 item 6)
+    assert body[1] == ir.FnCall(ir.Call("NOT", (q,), (BOOL,), BOOL), var("__P"), at("not"))
+    assert isinstance(body[4], ir.FbCall) and body[4].inputs[0] == ("IN", var("__P"))
 
 
 def test_gr06_feedback_from_a_function_reads_the_output_variable_it_writes():
@@ -228,8 +229,9 @@ def test_gr06_feedback_from_a_function_reads_the_output_variable_it_writes():
             ),
         )
     )
-    call = statements(program, "Main", "n")[1]
-    assert call.call.args == (var("COUNT", INT), ir.Const(1, INT))
+    body = statements(program, "Main", "n")
+    assert body[1] == ir.Probe("add.IN1", var("COUNT", INT), at("add"))  # online: the value ADD read
+    assert body[2].call.args == (var("COUNT", INT), ir.Const(1, INT))
 
 
 def test_output_node_modes_write_like_coils():

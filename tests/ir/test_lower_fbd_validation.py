@@ -122,8 +122,8 @@ CASES = {
         "POU Main, network 1, TON t1.ZZ: error FBD-UNKNOWN-PIN: TON has no pin 'ZZ' for the flags",
     ),
     "cycle without a feedback value": (
-        net("n1", [inp("one", "1"), blk("c", "ADD")], [("c.OUT", "c.IN1"), ("one.OUT", "c.IN2")]),
-        "POU Main, network 1, ADD.IN1: error FBD-FEEDBACK: the wire from ADD.OUT to ADD.IN1 closes a loop: it carries ADD.OUT of the previous scan, and a function's result has none before its first call; also connect ADD.OUT to an output variable, whose declared initial value then starts the loop",
+        net("n1", [blk("c", "ABS")], [("c.OUT", "c.IN")]),
+        "POU Main, network 1, ABS.IN: error FBD-FEEDBACK: the wire from ABS.OUT to ABS.IN closes a loop, and nothing outside the loop gives ABS.OUT a type: connect a typed variable to one of its inputs, or its output to an output variable",
     ),
     "wired OR": (
         net("n1", [inp("i", "a"), inp("k", "b"), out("o", "a")], [("i.OUT", "o.IN"), ("k.OUT", "o.IN")]),

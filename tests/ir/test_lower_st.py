@@ -297,11 +297,3 @@ def test_a_bad_statement_is_dropped_with_a_diagnostic_and_the_rest_lowers():
         "P/body:4:25, POU P: error IR-EN-CALL: a call with EN or ENO cannot be evaluated here in "
         "the right order: assign its result to a variable in a statement of its own first"
     ]
-
-
-def test_program_call_from_st_is_unsupported():
-    text = "PROGRAM Helper\nEND_PROGRAM\nPROGRAM P\nHelper();\nEND_PROGRAM\n"
-    assert errors(text) == [
-        "P/body:4:1, POU P: error IR-UNSUPPORTED: calling the program Helper from ST is not supported "
-        "by the engine yet: run it from a task"
-    ]

@@ -198,14 +198,17 @@ def test_non_constant_initial_value_is_a_located_error():
     ]
 
 
-def test_references_start_as_null_or_as_ref_of_a_whole_variable():
+def test_references_start_as_null_or_as_ref_of_a_whole_variable_or_an_array_element():
+    """An element with literal indices (seed 000 TYP-46: ``ADR(arrayINT[0])``) is accepted; a field is not yet."""
     text = (
+        "TYPE Pair : STRUCT f : INT; END_STRUCT; END_TYPE\n"
         "PROGRAM P\nVAR\n  x : INT;\n  a : ARRAY [1..2] OF INT;\n  p : POINTER TO INT;\n  q : REF_TO INT := NULL;\n"
-        "  r : REF_TO INT := REF(x);\n  s : REF_TO INT := REF(a[1]);\nEND_VAR\nEND_PROGRAM\n"
+        "  r : REF_TO INT := REF(x);\n  s : REF_TO INT := REF(a[1]);\n  pr : Pair;\n  t : REF_TO INT := REF(pr.f);\n"
+        "END_VAR\nEND_PROGRAM\n"
     )
     assert errors(text) == [
-        "P/declarations:8:21, POU P: error IR-INIT: a reference starts as NULL or as REF(x) of a whole variable x "
-        "(assign REF(a[i]) or REF(s.f) in the body)"
+        "P/declarations:11:21, POU P: error IR-INIT: a reference starts as NULL or as REF(x) of a whole variable x "
+        "or of an array element x[3] (assign REF(a[i]) or REF(s.f) in the body)"
     ]
 
 

@@ -149,3 +149,39 @@ def test_externals_array_indices_in_outs_and_a_pou_with_errors() -> None:
     ]
     assert table[("P", "a")] == [("declared", "P", None, None, 5, "a"), ("write", "P", None, None, 2, "a[]")]
     assert table[("Broken", "x")][0] == ("declared", "Broken", None, None, 2, "x")
+
+
+def test_what_methods_use_is_listed_under_the_method_and_its_function_block() -> None:
+    """Issue 25: a method's own variables are entries of ``F.M``; the instance variables it reads and writes are
+    accesses of the FB's entries, located at the method's body lines; a call of the method is a call of the
+    instance it is called on."""
+    from ladderlab.st.project_text import source_to_project
+
+    text = (
+        "FUNCTION_BLOCK Counter\nVAR count : INT; END_VAR\n"
+        "METHOD Add : INT\nVAR_INPUT n : INT; END_VAR\nVAR tmp : INT; END_VAR\n"
+        "tmp := n * 2;\ncount := count + tmp;\nAdd := count;\nEND_METHOD\nEND_FUNCTION_BLOCK\n"
+        "PROGRAM Main\nVAR c : Counter; r : INT; END_VAR\nr := c.Add(n := 1);\nEND_PROGRAM\n"
+    )
+    project, _ = source_to_project(text, "oo")
+    table = _table([e.model_dump() for e in cross_reference(project).entries])
+    line = {s: n for n, s in enumerate(text.splitlines(), 1)}
+    assert table[("Counter.Add", "tmp")] == [
+        ("declared", "Counter.Add", None, None, line["VAR tmp : INT; END_VAR"], "tmp"),
+        ("write", "Counter.Add", None, None, line["tmp := n * 2;"], "tmp"),
+        ("read", "Counter.Add", None, None, line["count := count + tmp;"], "tmp"),
+    ]
+    assert table[("Counter.Add", "n")] == [
+        ("declared", "Counter.Add", None, None, line["VAR_INPUT n : INT; END_VAR"], "n"),
+        ("read", "Counter.Add", None, None, line["tmp := n * 2;"], "n"),
+    ]
+    assert table[("Counter", "count")] == [
+        ("declared", "Counter", None, None, line["FUNCTION_BLOCK Counter"] + 1, "count"),
+        ("read", "Counter.Add", None, None, line["count := count + tmp;"], "count"),
+        ("write", "Counter.Add", None, None, line["count := count + tmp;"], "count"),
+        ("read", "Counter.Add", None, None, line["Add := count;"], "count"),
+    ]
+    assert table[("Main", "c")] == [
+        ("declared", "Main", None, None, line["VAR c : Counter; r : INT; END_VAR"], "c"),
+        ("call", "Main", None, None, line["r := c.Add(n := 1);"], "c"),
+    ]

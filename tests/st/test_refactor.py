@@ -212,3 +212,86 @@ def test_an_sfc_chart_is_renamed_in_its_conditions_and_associations() -> None:
     renamed, found = rename(project, "Water", "Shower")
     assert sum(r.part == "step" for r in found) == 3
     assert [d.format() for d in check_project(renamed) if d.severity == "error"] == []
+
+
+OO_TEXT = """TYPE
+  Shape : STRUCT w : INT; END_STRUCT;
+END_TYPE
+INTERFACE IArea
+METHOD Area : INT
+END_METHOD
+END_INTERFACE
+FUNCTION_BLOCK Base
+VAR s : Shape; END_VAR
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK Square EXTENDS Base IMPLEMENTS IArea
+VAR side : INT := 2; END_VAR
+METHOD Area : INT
+VAR tmp : Shape; END_VAR
+tmp.w := side;
+Area := tmp.w * s.w;
+END_METHOD
+METHOD Copy : Shape
+Copy := s;
+END_METHOD
+PROPERTY Form : Shape
+GET
+VAR last : Shape; END_VAR
+Form := s;
+END_GET
+SET
+s := Form;
+END_SET
+END_PROPERTY
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR q : Square; a : IArea; n : INT; END_VAR
+a := q;
+n := a.Area();
+END_PROGRAM
+"""
+
+
+def test_renaming_rewrites_extends_implements_and_method_and_property_texts() -> None:
+    """Issue 25: a POU, an interface and a type used by EXTENDS, IMPLEMENTS and inside methods and properties are
+    renamed there too, and each place is listed with its method or property; the renamed project builds and runs."""
+    from ladderlab.simulation.build import build_project
+    from ladderlab.st.project_text import source_to_project
+
+    def line(start: str) -> int:  # (the texts keep the lines of the file they were read from)
+        return next(n for n, text in enumerate(OO_TEXT.splitlines(), 1) if text.startswith(start))
+
+    project, _ = source_to_project(OO_TEXT, "oo")
+    renamed, changes = rename(project, "Base", "Root")
+    square = renamed.pou("Square")
+    assert square.extends == "Root" and renamed.pou("Root") is not None
+    assert [(c.part, c.pou, c.text) for c in changes] == [("extends", "Square", "EXTENDS Base")]
+
+    renamed, changes = rename(renamed, "IArea", "IMeasured")
+    assert renamed.pou("Square").implements == ["IMeasured"]
+    assert "INTERFACE IMeasured" in renamed.types
+    assert [(c.part, c.pou, c.member, c.line, c.text) for c in changes] == [
+        ("types", None, None, 4, "INTERFACE IArea"),
+        ("implements", "Square", None, None, "IMPLEMENTS IArea"),
+        ("declarations", "Main", None, line("VAR q : Square;"), "VAR q : Square; a : IArea; n : INT; END_VAR"),
+    ]
+
+    renamed, changes = rename(renamed, "Shape", "Form2D")
+    square = renamed.pou("Square")
+    assert square.methods[0].declarations.strip() == "VAR tmp : Form2D; END_VAR"
+    assert square.methods[1].return_type == "Form2D"
+    assert square.properties[0].type == "Form2D"
+    assert square.properties[0].get.declarations.strip() == "VAR last : Form2D; END_VAR"
+    assert [(c.part, c.pou, c.member, c.line) for c in changes] == [
+        ("types", None, None, line("  Shape : STRUCT")),
+        ("declarations", "Root", None, line("VAR s : Shape;")),
+        ("declarations", "Square", "Area", line("VAR tmp : Shape;")),
+        ("return type", "Square", "Copy", 1),  # (a result type is a text of its own)
+        ("return type", "Square", "Form", 1),
+        ("declarations", "Square", "Form.GET", line("VAR last : Shape;")),
+    ]
+    assert "Form2D" not in square.methods[0].body  # tmp.w: a member, never renamed
+    sim = build_project(renamed).simulation()
+    sim.write("Main.q.s.w", 3)
+    sim.cycle(1)
+    assert sim.read("Main.n") == 2 * 3

@@ -73,6 +73,15 @@ def null_dereference(what: str) -> PlcRuntimeError:
     return PlcRuntimeError(NULL_DEREFERENCE, f"{what} is NULL: it refers to no variable, so '^' has nothing to reach")
 
 
+def pointer_outside(what: str, position: int, length: int, size: int | None = None) -> PlcRuntimeError:
+    """Pointer arithmetic or a dereference that would leave the array the pointer points into (or the single
+    variable: ``length`` 1); ``position`` counts elements (of ``size`` bytes) from the array's first one."""
+    elements = f"{length} element(s)" + (f" of {size} byte(s)" if size is not None else "")
+    return PlcRuntimeError(
+        INDEX_RANGE, f"{what} reaches element {position} of {elements}: outside the variable it points into"
+    )
+
+
 def for_step_zero() -> PlcRuntimeError:
     """A FOR loop whose BY value is 0 at run time would never end (ST-31, ST-70)."""
     return PlcRuntimeError(FOR_STEP_ZERO, "FOR loop step (BY) is 0")

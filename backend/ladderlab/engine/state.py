@@ -74,7 +74,7 @@ def data_of(value: object) -> object:
         return value
     if value.__class__ is list:
         return [data_of(item) for item in value]
-    if value.__class__ is tuple or value.__class__ is Ref:  # a VAR_IN_OUT reference (container, key), a REF_TO
+    if value.__class__ is tuple or isinstance(value, Ref):  # a VAR_IN_OUT reference (container, key), a REF_TO
         return REFERENCE
     names = [*_slot_names(type(value)), *getattr(value, "__dict__", ())]
     return {name: data_of(getattr(value, name)) for name in names if hasattr(value, name)}

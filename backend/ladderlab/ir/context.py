@@ -72,6 +72,8 @@ class PouContext:
         # The text being lowered when it is not the POU's body: an SFC POU's chart or one of its actions or named
         # transitions (``<POU>/chart``, ``<POU>/actions/<name>``): where diagnostics without a file of their own go.
         self.default_file: str | None = None
+        # What runs before the POU returns (a METHOD's outputs copied to its caller: ir/method_outputs.py)
+        self.before_return: list[Stmt] = []
         # A front end's own statements, lowered before the ST ones (test files' verbs: ir/lower_tests.py)
         self.extra_statements: dict[type, Any] = {}
 
@@ -228,6 +230,10 @@ class PouContext:
     def add_slot(self, slot: Slot) -> None:
         self.slots.append(slot)
         self._taken.add(slot.name)
+
+    def reserve(self, slots: list[Slot]) -> None:
+        """Keep ``hidden`` from naming a slot like one of ``slots`` (a base's, which SUPER^() shares)."""
+        self._taken.update(slot.name for slot in slots)
 
     def hidden(self, hint: str, type: IrType, initial: object = None, var_class: VarClass = "VAR") -> Var:
         """A new hidden slot (unique name from ``hint``), e.g. an edge memory or a power-flow temporary.

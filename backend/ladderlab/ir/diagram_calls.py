@@ -25,7 +25,7 @@ from ..st.symbols import PouInfo
 from .diagram_operands import At, Operands
 from .diagram_shapes import Leaf, Shape, Template
 from .lower_expr import lower_en_eno, std_call, user_call
-from .lower_st import lower_fb_call  # a box is lowered exactly like the FB call of an ST statement
+from .lower_st import gated, lower_fb_call  # a box is lowered exactly like the call of an ST statement
 from .lower_types import LoweringError
 from .nodes import Expr, FnCall, If, Origin, Stmt, Var
 
@@ -57,6 +57,12 @@ class Callee:
         if self.std_fb is not None:
             return tuple(p.name for p in self.std_fb.inputs)
         return tuple(s.name.upper() for s in self.pou.parameters("VAR_INPUT", "VAR_IN_OUT"))
+
+    def method_outputs(self) -> list[str]:
+        """A method's VAR_OUTPUTs (``inst.M`` boxes: written to the variables at their pins, as ``q => x``)."""
+        if self.pou is None or self.pou.method is None:
+            return []
+        return [s.name.upper() for s in self.pou.parameters("VAR_OUTPUT")]
 
     def output_names(self) -> list[str]:
         if self.std_fb is not None:
@@ -407,13 +413,15 @@ def _lower(
     try:
         if callee.is_fb:
             return [_located(s, origin) for s in lower_fb_call(node, ops.ctx, origin)]
-        call = std_call(node, ops.ctx) if callee.std_function is not None else user_call(node, ops.ctx)
+        copies: list[Stmt] = []  # a method's outputs that need a conversion
+        call = std_call(node, ops.ctx) if callee.std_function is not None else user_call(node, ops.ctx, copies)
         en, eno, after = lower_en_eno(node, ops.ctx)
+        en, eno, copies = gated(en, eno, copies, origin, ops.ctx)
     except LoweringError as error:
         if error.message is not None:
             ops.report(at, error.code, error.message)
         return None
-    return [FnCall(call, result, origin, en, eno), *(_located(s, origin) for s in after)]
+    return [FnCall(call, result, origin, en, eno), *(_located(s, origin) for s in (*copies, *after))]
 
 
 def _located(statement: Stmt, origin: Origin) -> Stmt:

@@ -38,7 +38,8 @@ from ..st.rules import EnumValue
 from ..st.symbols import PouInfo, PropertyRef, Symbol
 from .context import PouContext
 from .lower_types import LoweringError, byte_size, engine_value, ir_default
-from .nodes import AddressOf, Assign, Binary, Call, Const, Convert, Deref, Expr, FnCall, Index, Member, Unary, Var
+from .method_outputs import output_arguments
+from .nodes import AddressOf, Assign, Binary, Call, Const, Convert, Deref, Expr, FnCall, Index, Member, Stmt, Unary, Var
 from .types import BOOL, Array, Elementary, FbInstance, IrType, Reference, Struct, Subrange, describe
 
 POINTER_ARITHMETIC = "pointer arithmetic is not supported: a reference reaches its variable only"
@@ -232,15 +233,20 @@ def _literal(node: ast.Expr, ctx: PouContext) -> Const:
 # ---------------------------------------------------------------- variables
 
 
-def _program_instance(node: ast.Expr, program: PouInfo, ctx: PouContext) -> Var:
-    """``Prog.x`` read from another POU: the instance named after the program (the engine keeps program instances
-    among the globals); a configuration that names its instances otherwise is read through those names."""
+def program_instance(node: ast.Expr, program: PouInfo, ctx: PouContext, use: str = "read") -> Var:
+    """``Prog.x`` read or ``Prog(...)`` called from another POU: the instance named after the program (the engine
+    keeps program instances among the globals, CODESYS's one instance of a program); a configuration that names
+    its instances otherwise is read through those names."""
     configuration = ctx.checked.configuration
     name = program.name.upper()
     if configuration is not None and name not in configuration.instances:
         names = [i.name for i in configuration.instances.values() if i.pou is program]
         where = f"its instance{'s' if len(names) > 1 else ''} {', '.join(names)}" if names else "no instance"
-        raise LoweringError(f"the program {program.name} runs as {where}: read the members through an instance", node)
+        raise LoweringError(
+            f"the program {program.name} runs as {where}: other POUs {use} the instance named like the program "
+            f"(PROGRAM {program.name} : {program.name} in the configuration)",
+            node,
+        )
     return Var("global", name, FbInstance(name))
 
 
@@ -262,7 +268,7 @@ def _access(node: ast.Expr, ctx: PouContext) -> Var:
             ctx.reads += 1
             return ctx.var_for(ref)
         if isinstance(ref, PouInfo) and ref.kind == "PROGRAM":  # another program's outputs or SFC steps (ST-60)
-            return _program_instance(node, ref, ctx)
+            return program_instance(node, ref, ctx)
         if isinstance(ref, PouInfo):
             return ctx.result_var()
         if isinstance(node, ast.DirectAddr):  # used without a declaration: its size's default type (ST-13)
@@ -422,8 +428,12 @@ def _short_circuit(node: ast.Binary, op: str, ctx: PouContext) -> Expr:
 
 
 def _reference_operation(node: ast.Binary, op: str, ctx: PouContext) -> Expr:
-    """``r1 = r2``, ``r <> NULL``: whether two references refer to one variable. Pointer arithmetic (``p + 1``)
-    and ordering would reach memory next to a variable, which the engine's references have not got."""
+    """``r1 = r2``, ``r <> NULL``: whether two references refer to one variable. ``p + n`` / ``p - n`` (bytes,
+    CODESYS): the pointer moved along the array it points into (the engine checks it stays there). Ordering
+    would compare memory addresses, which the engine's references have not got."""
+    if op in ("ADD", "SUB") and isinstance(node.left.ty, t.PointerType) and t.in_family(node.right.ty, "ANY_INT"):
+        pointer = lower_expr(node.left, ctx)
+        return Binary(op, pointer, lower_expr(node.right, ctx, Elementary("DINT")), pointer.type)  # type: ignore[arg-type]
     if op not in ("EQ", "NE"):
         raise LoweringError(
             POINTER_ARITHMETIC if op in ("ADD", "SUB") else f"references cannot be compared by '{node.op}'", node
@@ -477,15 +487,6 @@ def _function(
 # ---------------------------------------------------------------- calls
 
 
-def refuse_unsupported_call(node: ast.Call) -> None:
-    """Program calls cannot be lowered yet: raise the located error."""
-    ref = node.ref
-    if isinstance(ref, PouInfo) and ref.kind == "PROGRAM":
-        raise LoweringError(
-            f"calling the program {ref.name} from ST is not supported by the engine yet: run it from a task", node
-        )
-
-
 def _call(node: ast.Call, ctx: PouContext) -> Expr:
     if node.ref is None and isinstance(node.callee, ast.Name) and node.callee.name.upper() == "SIZEOF":
         return _sizeof(node, ctx, ctx.ir_type(node.ty))
@@ -494,7 +495,6 @@ def _call(node: ast.Call, ctx: PouContext) -> Expr:
     if node.ref is None and isinstance(node.callee, ast.Name) and node.callee.name.upper() == "__ISVALIDREF":
         reference = lower_access(node.args[0].value, ctx)
         return Binary("NE", reference, Const(None, reference.type), BOOL)
-    refuse_unsupported_call(node)
     ref = node.ref
     en, eno = _en_eno(node)
     before = (ctx.reads, ctx.calls)
@@ -707,8 +707,9 @@ def property_call(node: ast.Name | ast.Member, ctx: PouContext, value: ast.Expr 
     return Call(accessor.name.upper(), args, (ty,) if value is not None else (), result, True, (this,), virtual)
 
 
-def user_call(node: ast.Call, ctx: PouContext) -> Call:
-    """A user function: inputs in VAR_INPUT order (omitted ones as their initial values), then the in-outs."""
+def user_call(node: ast.Call, ctx: PouContext, after: list[Stmt] | None = None) -> Call:
+    """A user function: inputs in VAR_INPUT order (omitted ones as their initial values), then the in-outs; a
+    method's outputs follow as in-outs (ir/method_outputs.py), the copies they need after the call go to ``after``."""
     pou: PouInfo = node.ref
     callee = ctx.types_for(pou.name)
     parameters = pou.parameters("VAR_INPUT", "VAR_IN_OUT")
@@ -740,6 +741,7 @@ def user_call(node: ast.Call, ctx: PouContext) -> Call:
     if pou.method is None:
         result = callee.type_of(pou.return_type, pou.return_spec)
         return Call(pou.name.upper(), tuple(args), tuple(types), result, True, tuple(in_outs))
+    in_outs += output_arguments(node, pou, ctx, after)
     # a method without a value returns an unused BOOL (lower_project.lower_pou); SUPER^.M() runs the base's M
     result = callee.type_of(pou.return_type, pou.return_spec) if pou.return_type is not None else BOOL
     virtual = not is_super(node.callee.base) if isinstance(node.callee, ast.Member) else True

@@ -124,6 +124,8 @@ class _Network:
         self.used_pins: dict[str, set[str]] = {}  # producer id -> its output pins that feed something
         self.names = NetworkNames(network)  # its elements as messages name them
         self.consumers: dict[tuple[str, str], list[str]] = {}  # (producer id, PIN) -> the nodes it feeds
+        #: (producer id, PIN) -> the feedback variable a function's loop reads (GR-06), written after the producer
+        self.loops: dict[tuple[str, str], tuple[Var, t.Type]] = {}
 
     def lower(self, analyses: Analyses) -> Block:
         self.ops.new_network()
@@ -177,12 +179,19 @@ class _Network:
         if source is None:
             return None
         if (node, pin) in self.graph.feedback:
-            return self.feedback(node, pin, source)
+            value = self.feedback(node, pin, source)
+            if value is not None and isinstance(self.graph.nodes[node], fbd.Block):  # online: what the block read
+                expr, _ = self.expr(value, self.at(node, pin), f"input {pin}")
+                if expr is not None:
+                    self.out.append(Probe(f"{node}.{pin}", expr, self.origin(node)))
+            return value
         return self.values.get((source.node, source.pin))
 
     def feedback(self, node: str, pin: str, source: Source) -> PinValue | None:
-        """GR-06: a wire that closes a loop carries the producer's value of the previous scan. An FB output
-        keeps it in the instance; a function result only in a variable it writes (an output node)."""
+        """GR-06 (IEC 61131-3 ed. 3 "feedback paths"): a wire that closes a loop carries the producer's value of
+        the previous scan. An FB output keeps it in the instance; a function's result is kept in the variable it
+        writes (an output node), else in a hidden feedback variable (``loops``) that starts with its type's
+        default and takes the result after every call."""
         resolved = self.callees.get(source.node)
         if resolved is None:
             return None
@@ -200,16 +209,51 @@ class _Network:
                 and (fed.node, fed.pin) == (source.node, source.pin)
             ):
                 return target.var
-        how = "runs against the execution order" if self.explicit else "closes a loop"
-        self.ops.report(
-            self.at(node, pin),
-            "FBD-FEEDBACK",
-            f"the wire {wire_text(source.via, self.names)} {how}: it carries "
-            f"{self.names(source.node, source.pin)} of the previous scan, and a function's result has none before its "
-            f"first call; also connect {self.names(source.node, source.pin)} to an output variable, whose declared "
-            "initial value then starts the loop",
-        )
-        return None
+        loop = self.loops.get((source.node, source.pin))
+        if loop is not None:
+            return loop
+        ty = self._loop_type(source.node, source.pin, callee)
+        if ty is None:
+            how = "runs against the execution order" if self.explicit else "closes a loop"
+            self.ops.report(
+                self.at(node, pin),
+                "FBD-FEEDBACK",
+                f"the wire {wire_text(source.via, self.names)} {how}, and "
+                f"nothing outside the loop gives {self.names(source.node, source.pin)} a type: connect a typed "
+                "variable to one of its inputs, or its output to an output variable",
+            )
+            return None
+        slot = self.ctx.hidden(f"{source.node}_{source.pin}_FEEDBACK", self.ctx.ir_type(ty))
+        self.loops[(source.node, source.pin)] = (slot, ty)
+        return slot, ty
+
+    def _loop_type(self, producer: str, pin: str, callee: Callee) -> t.Type | None:
+        """The type of a function's result read around a loop before the function runs: its declared result,
+        else (a generic function) the type of its first input fed from outside the loop, a literal's default
+        type (INT for ``1``) last."""
+        if pin == "ENO":
+            return t.BOOL
+        if callee.pou is not None:
+            return callee.pou.return_type
+        declared = t.elementary(callee.std_function.result) if callee.std_function is not None else None
+        if declared is not None:
+            return declared
+        found: list[t.Type] = []
+        for into, source in self.graph.inputs.get(producer, {}).items():
+            if into == "EN" or (producer, into) in self.graph.feedback:
+                continue
+            value = self.values.get((source.node, source.pin))
+            node = self.graph.nodes[source.node]
+            if value is None and isinstance(node, fbd.InputNode):
+                value = node.expr
+            if value is None:
+                continue
+            with self.ops.muted():
+                expr, ty = self.expr(value, self.at(producer, into), f"input {into}")
+            if expr is not None and ty is not t.ERROR:
+                found.append(ty)
+        typed = [ty for ty in found if t.concrete(ty) is ty]
+        return typed[0] if typed else t.concrete(found[0]) if found else None
 
     def connector_name(self, node: fbd.Connector) -> None:
         """GR-02: a connector may not take the name of another named element of the POU."""
@@ -533,6 +577,9 @@ class _Network:
                 value, expr = (negated, t.BOOL), negated
             self.values[(node.id, pin)] = value
             probes.append(Probe(f"{node.id}.{pin}", expr, origin))
+            loop = self.loops.get((node.id, pin))
+            if loop is not None:  # the feedback variable a consumer before it read: this scan's value, for the next
+                self.out.append(Assign(loop[0], convert(expr, loop[0].type), origin))
         if en is None:
             self.out += probes
             return

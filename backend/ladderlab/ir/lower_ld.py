@@ -233,10 +233,11 @@ class _Rung:
             if pin in inputs or pin in outputs
         ]
         if not callee.is_fb:
+            known = ("OUT", *callee.method_outputs())
+            what = f"its outputs are {', '.join(known)}" if len(known) > 1 else "its only output is OUT"
+            kind = "method" if callee.pou is not None and callee.pou.method is not None else "function"
             problems += [
-                (pin, f"{callee.name} is a function: its only output is OUT")
-                for pin in outputs
-                if pin not in ("OUT", "EN", "ENO")
+                (pin, f"{callee.name} is a {kind}: {what}") for pin in outputs if pin not in (*known, "EN", "ENO")
             ]
         for pin, message in problems:
             self.ops.report(at.on(pin), "LD-UNKNOWN-PIN", message)

@@ -36,6 +36,7 @@ from .lower_ld import lower_ld_body
 from .lower_sfc import lower_sfc_body
 from .lower_st import lower_st_body
 from .lower_types import LoweringError
+from .method_outputs import declare_output_references
 from .nodes import Assign, Binary, Block, Origin, Pou, Program, Slot, Stmt, Unary, Var
 from .types import BOOL
 
@@ -75,12 +76,22 @@ def _lower_project(project: Project, checked: CheckResult | None) -> LoweringRes
     image: dict[str, Slot] = {}  # addresses the bodies use without a declaration: located globals (ST-13)
     globals_ = lower_globals(checked, diagnostics)
     pous: dict[str, Pou] = {}
+    models = {pou.name.upper(): pou for pou in project.pous}
+
+    def lower(pou: ModelPou, info: PouInfo) -> None:
+        """``pou`` and its methods; a base whose body ``pou`` runs (SUPER^()) first, as its slots are ``pou``'s."""
+        base = info.base if info.runs_base_body else None
+        if base is not None and base.name.upper() not in pous and base.name.upper() in models:
+            lower(models[base.name.upper()], base)
+        base_ir = pous.get(base.name.upper()) if base is not None else None
+        pous[pou.name.upper()] = lower_pou(pou, info, checked, diagnostics, image, base_ir)
+        for method in info.methods.values():
+            pous[method.name.upper()] = lower_pou(None, method, checked, diagnostics, image)
+
     for pou in project.pous:
         info = checked.pou(pou.name)
-        if info is not None and info.name == pou.name:  # not a duplicate (reported by the checker)
-            pous[pou.name.upper()] = lower_pou(pou, info, checked, diagnostics, image)
-            for method in info.methods.values():
-                pous[method.name.upper()] = lower_pou(None, method, checked, diagnostics, image)
+        if info is not None and info.name == pou.name and pou.name.upper() not in pous:  # (a duplicate: reported)
+            lower(pou, info)
     for interface in checked.interfaces.values():  # prototypes: what a call through an interface passes
         for prototype in interface.methods.values():
             pous[prototype.name.upper()] = lower_pou(None, prototype, checked, diagnostics, image)
@@ -88,6 +99,9 @@ def _lower_project(project: Project, checked: CheckResult | None) -> LoweringRes
     diagrams = [(pou.name, pou.body) for pou in project.pous if not isinstance(pou.body, str)]
     program = Program(pous, globals_ + list(image.values()), tasks, instances, access, ProjectPlaces(diagrams))
     program.dispatch = dispatch_tables(checked)
+    program.base_bodies = frozenset(
+        info.base.name.upper() for info in checked.pous.values() if info.runs_base_body and info.base is not None
+    )
     too_much = data_too_large(program)
     if too_much is not None:
         diagnostics.append(too_much)
@@ -125,16 +139,22 @@ def lower_pou(
     checked: CheckResult,
     diagnostics: list[Diagnostic],
     image: dict[str, Slot] | None = None,
+    base: Pou | None = None,
 ) -> Pou:
     """One POU: a slot per declared variable (not VAR_EXTERNAL), the function result, the body blocks.
     ``image`` collects the addresses the body uses without a declaration (PouContext.direct). ``pou`` None: a
-    METHOD (``info.method``), lowered as a function of ST whose in-out ``THIS`` is its instance."""
+    METHOD (``info.method``), lowered as a function of ST whose in-out ``THIS`` is its instance. ``base``: the
+    lowered base of a function block that runs its body (SUPER^()): its slots, hidden ones too, come first, in its
+    order, so the base's body runs on an instance of this one."""
     ctx = PouContext(checked, info, diagnostics, image)
+    if base is not None:
+        ctx.reserve(base.slots)
     for symbol in info.symbols.values():
         if symbol.var_class != "VAR_EXTERNAL":
             slot = _slot(symbol, ctx, f"{info.name}/declarations")
             if slot is not None:
                 ctx.add_slot(slot)
+    ctx.before_return = declare_output_references(ctx)
     return_type = None
     if info.kind == "FUNCTION" and info.return_type is not None:
         try:
@@ -154,14 +174,28 @@ def lower_pou(
         ctx.report("IR-UNSUPPORTED", f"{language.upper()} POUs cannot be run yet")
     else:
         blocks = lower(pou, ctx)
+    if ctx.before_return:  # (a method: ST, one block)
+        if blocks:
+            blocks[-1].statements.extend(ctx.before_return)
+        else:
+            blocks.append(Block(list(ctx.before_return), Origin(ctx.name)))
     if preamble:
         if language == "st" and blocks:
             blocks[0].statements[:0] = preamble
         else:
             blocks.insert(0, Block(preamble, Origin(ctx.name)))
+    if base is not None:
+        ctx.slots = base_slots_first(base.slots, ctx.slots)
     kind = _KIND[info.kind]
     step_lines = info.il_step_lines if language == "il" else None
     return Pou(ctx.name, kind, ctx.slots, blocks, return_type, language, plant, step_lines=step_lines)  # type: ignore[arg-type]
+
+
+def base_slots_first(base: list[Slot], own: list[Slot]) -> list[Slot]:
+    """The slots of a function block that runs its base's body: the base's (its inherited variables, its hidden
+    ones) in the base's order - the engine places each at the same attribute and page - then its own."""
+    names = {slot.name.upper() for slot in base}
+    return [*base, *(slot for slot in own if slot.name.upper() not in names)]
 
 
 def _slot(symbol: Symbol, ctx: PouContext, file: str) -> Slot | None:

@@ -14,6 +14,7 @@ from ..iec import stdlib
 from ..model.project import Pou as ModelPou
 from ..st import ast
 from ..st import types as t
+from ..st.methods import is_self
 from ..st.printer import print_expression
 from ..st.symbols import PouInfo, PropertyRef, Symbol
 from .context import PouContext
@@ -27,8 +28,8 @@ from .lower_expr import (
     lower_expr,
     lower_input,
     lower_to,
+    program_instance,
     property_call,
-    refuse_unsupported_call,
     std_call,
     user_call,
     value_type,
@@ -109,10 +110,12 @@ def _assign(statement: ast.Assign, ctx: PouContext) -> list[Stmt]:
         return [_assign_bit(target, value, ctx, origin)]
     if isinstance(getattr(target, "ref", None), PropertyRef):  # its SET
         return [FnCall(property_call(target, ctx, value), None, origin)]
-    if isinstance(value, ast.Call) and _has_en_eno(value) and _is_function(value.ref):
-        call = _function_call(value, ctx)
+    if isinstance(value, ast.Call) and _has_en_eno_or_outputs(value) and _is_function(value.ref):
+        copies: list[Stmt] = []
+        call = _function_call(value, ctx, copies)
         en, eno, after = lower_en_eno(value, ctx)
-        return [FnCall(call, lower_access(target, ctx), origin, en, eno), *after]
+        en, eno, copies = gated(en, eno, copies, origin, ctx)
+        return [FnCall(call, lower_access(target, ctx), origin, en, eno), *copies, *after]
     lowered = lower_to(value, ctx, ctx.ir_type(target.ty))  # the value is computed before the target is stored
     if statement.attempt:  # ?=: NULL unless the instance's FB implements the target's interface
         blocks = ctx.checked.pous.values()
@@ -142,24 +145,44 @@ def lower_call_statement(statement: ast.CallStmt, ctx: PouContext) -> list[Stmt]
         raise LoweringError(None)
     if isinstance(call.ref, Symbol):
         return lower_fb_call(call, ctx, ctx.origin(statement))
+    if isinstance(call.ref, PouInfo) and call.ref.kind == "PROGRAM":
+        return _program_call(call, call.ref, ctx, ctx.origin(statement))
+    if is_self(call.callee):  # SUPER^(): the base's body on this instance (st/calls.py)
+        statements = lower_fb_call(call, ctx, ctx.origin(statement))
+        statements[0].body = call.callee.ty.name.upper()
+        return statements
     if not _is_function(call.ref):
-        refuse_unsupported_call(call)
         raise LoweringError(None)
-    lowered = _function_call(call, ctx)
+    copies: list[Stmt] = []
+    lowered = _function_call(call, ctx, copies)
     en, eno, after = lower_en_eno(call, ctx)
-    return [FnCall(lowered, None, ctx.origin(statement), en, eno), *after]
+    origin = ctx.origin(statement)
+    en, eno, copies = gated(en, eno, copies, origin, ctx)
+    return [FnCall(lowered, None, origin, en, eno), *copies, *after]
 
 
 def _is_function(ref: object) -> bool:
     return isinstance(ref, stdlib.StdFunction) or (isinstance(ref, PouInfo) and ref.kind == "FUNCTION")
 
 
-def _has_en_eno(call: ast.Call) -> bool:
-    return any(a.name is not None and a.name.upper() in ("EN", "ENO") for a in call.args)
+def _has_en_eno_or_outputs(call: ast.Call) -> bool:
+    """EN, ENO or a method's ``=>`` outputs: the call is a statement of its own (``FnCall``) with copies after it."""
+    return any(a.output or (a.name is not None and a.name.upper() == "EN") for a in call.args)
 
 
-def _function_call(call: ast.Call, ctx: PouContext) -> Call:
-    return std_call(call, ctx) if isinstance(call.ref, stdlib.StdFunction) else user_call(call, ctx)
+def _function_call(call: ast.Call, ctx: PouContext, after: list[Stmt]) -> Call:
+    """The call; the copies a method's ``=>`` outputs need after it go to ``after`` (ir/method_outputs.py)."""
+    return std_call(call, ctx) if isinstance(call.ref, stdlib.StdFunction) else user_call(call, ctx, after)
+
+
+def gated(
+    en: Expr | None, eno: Var | None, copies: list[Stmt], origin: Origin, ctx: PouContext
+) -> tuple[Expr | None, Var | None, list[Stmt]]:
+    """EN and ENO of a call and the ``copies`` after it, which run only when the call ran (ENO) if it has an EN."""
+    if en is not None and copies:
+        eno = eno or ctx.hidden("ENO", BOOL, var_class="VAR_TEMP")
+        copies = [If([(eno, copies)], [], origin)]
+    return en, eno, copies
 
 
 def lower_fb_call(call: ast.Call, ctx: PouContext, origin: Origin) -> list[Stmt]:
@@ -171,8 +194,20 @@ def lower_fb_call(call: ast.Call, ctx: PouContext, origin: Origin) -> list[Stmt]
     fb = call.callee.ty
     if not isinstance(fb, t.FbType):
         raise LoweringError(None)
-    instance = lower_access(call.callee, ctx)
-    pins = fb_pins(fb, ctx)
+    return _instance_call(call, lower_access(call.callee, ctx), fb_pins(fb, ctx), ctx, origin)
+
+
+def _program_call(call: ast.Call, program: PouInfo, ctx: PouContext, origin: Origin) -> list[Stmt]:
+    """``Prog(in := x, out => y)`` from another program (IL-08, seed 003 "PRGexample2"): the program's one
+    instance runs now, like an FB instance; a task that runs it too runs it again (docs/st.md)."""
+    instance = program_instance(call.callee, program, ctx, "call")
+    return _instance_call(call, instance, _pou_pins(program, ctx), ctx, origin)
+
+
+def _instance_call(
+    call: ast.Call, instance: Var, pins: dict[str, tuple[IrType, str]], ctx: PouContext, origin: Origin
+) -> list[Stmt]:
+    """The call of an FB or program ``instance`` with ``pins`` (fb_pins): inputs, ``=>`` outputs, EN/ENO."""
     order = [name for name, (_, kind) in pins.items() if kind != "VAR_OUTPUT"]
     inputs: list[tuple[str, Expr]] = []
     outputs: list[tuple[str, Var]] = []
@@ -197,9 +232,7 @@ def lower_fb_call(call: ast.Call, ctx: PouContext, origin: Origin) -> list[Stmt]
                 pin = Unary("NOT", pin, pin_type)
             copies.append(Assign(target, convert(pin, target.type), ctx.origin(arg)))
     en, eno, after = lower_en_eno(call, ctx)
-    if en is not None and copies:
-        eno = eno or ctx.hidden("ENO", BOOL, var_class="VAR_TEMP")
-        copies = [If([(eno, copies)], [], origin)]
+    en, eno, copies = gated(en, eno, copies, origin, ctx)
     return [FbCall(instance, inputs, outputs, origin, en, eno), *copies, *after]
 
 
@@ -224,10 +257,14 @@ def _fb_pins(fb: t.FbType, ctx: PouContext) -> dict[str, tuple[IrType, str]]:
             **{p.name: (ctx.ir_type(t.elementary(p.type)), "VAR_INPUT") for p in fb.std.inputs},
             **{p.name: (ctx.ir_type(t.elementary(p.type)), "VAR_OUTPUT") for p in fb.std.outputs},
         }
-    callee = ctx.types_for(fb.pou.name)
+    return _pou_pins(fb.pou, ctx)
+
+
+def _pou_pins(pou: PouInfo, ctx: PouContext) -> dict[str, tuple[IrType, str]]:
+    callee = ctx.types_for(pou.name)
     return {
         s.name.upper(): (callee.type_of(s.type, s.type_spec), s.var_class)
-        for s in fb.pou.parameters("VAR_INPUT", "VAR_IN_OUT", "VAR_OUTPUT")
+        for s in pou.parameters("VAR_INPUT", "VAR_IN_OUT", "VAR_OUTPUT")
     }
 
 
@@ -294,7 +331,8 @@ def _continue(statement: ast.Continue, ctx: PouContext) -> list[Stmt]:
 
 
 def _return(statement: ast.Return, ctx: PouContext) -> list[Stmt]:
-    return [Return(ctx.origin(statement))]
+    """RETURN; a method first hands its outputs to its caller (ir/method_outputs.py)."""
+    return [*ctx.before_return, Return(ctx.origin(statement))]
 
 
 def _empty(statement: ast.Empty, ctx: PouContext) -> list[Stmt]:

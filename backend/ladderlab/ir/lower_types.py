@@ -27,6 +27,7 @@ from ..iec.values import default_value, f32, store_fn
 from ..st import ast
 from ..st import types as t
 from ..st.body import BodyChecker
+from ..st.printer import print_expression
 from ..st.rules import EnumValue, constant_value
 from ..st.symbols import CheckResult, PouInfo, Symbol, TypeDef
 from .nodes import ReferenceInit, Slot
@@ -295,20 +296,34 @@ class TypeLowering:
 
 
 def _reference_initial(node: ast.Expr) -> ReferenceInit | None:
-    """A reference starts as NULL (None) or as ``REF(x)`` / ``ADR(x)`` of a whole variable."""
+    """A reference starts as NULL (None) or as ``REF(x)`` / ``ADR(x)`` of a whole variable or of an element of an
+    array variable with literal indices (``ADR(arrayINT[0])``, seed 000 TYP-46)."""
     if node.ty is t.NULL:
         return None
     if isinstance(node, ast.Call) and isinstance(node.callee, ast.Name) and len(node.args) == 1:
         value = node.args[0].value
+        indices: tuple[int | None, ...] = ()
+        if isinstance(value, ast.Index):
+            indices = tuple(_literal_int(i) for i in value.indices)
+            value = value.base if None not in indices else value
         if isinstance(value, ast.Name) and isinstance(value.ref, Symbol):
             symbol: Symbol = value.ref
             scope = "global" if symbol.pou is None or symbol.var_class == "VAR_EXTERNAL" else "local"
-            return ReferenceInit(symbol.name.upper(), scope, f"{node.callee.name.upper()}({value.name})")
+            text = f"{node.callee.name.upper()}({print_expression(node.args[0].value)})"
+            return ReferenceInit(symbol.name.upper(), scope, text, indices)  # type: ignore[arg-type]  # no None
     raise LoweringError(
-        "a reference starts as NULL or as REF(x) of a whole variable x (assign REF(a[i]) or REF(s.f) in the body)",
+        "a reference starts as NULL or as REF(x) of a whole variable x or of an array element x[3] "
+        "(assign REF(a[i]) or REF(s.f) in the body)",
         node,
         code="IR-INIT",
     )
+
+
+def _literal_int(node: ast.Expr) -> int | None:
+    """An index written as an integer literal (``3``, ``-1``), else None."""
+    if isinstance(node, ast.Unary) and node.op == "-" and isinstance(node.operand, ast.IntLit):
+        return -node.operand.value
+    return node.value if isinstance(node, ast.IntLit) else None
 
 
 @functools.cache

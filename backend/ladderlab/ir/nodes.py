@@ -246,7 +246,8 @@ class Return:
 class FbCall:
     """Call an FB instance: set inputs, run one call with the scan's clock, copy outputs out.
 
-    ``en`` (when not None) guards the call; ``eno`` receives whether it ran.
+    ``en`` (when not None) guards the call; ``eno`` receives whether it ran. ``body`` names the function block
+    whose body runs (``SUPER^()``: the base's, on the derived instance running it); None: the instance's own.
     """
 
     instance: Var
@@ -255,6 +256,7 @@ class FbCall:
     origin: Origin
     en: Expr | None = None
     eno: Var | None = None
+    body: str | None = None
 
 
 @dataclass
@@ -315,11 +317,13 @@ VarClass = Literal["VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_EXTERNAL
 @dataclass(frozen=True)
 class ReferenceInit:
     """The initial value ``REF(x)`` of a reference slot: the whole variable ``name`` of this POU (``local``) or a
-    global, made after every other slot is initialised (``text`` as written, shown online)."""
+    global, or its array element ``x[index]`` (constant indices, as declared), made after every other slot is
+    initialised (``text`` as written, shown online)."""
 
     name: str
     scope: Scope
     text: str
+    index: tuple[int, ...] = ()
 
 
 @dataclass
@@ -400,6 +404,8 @@ class Program:
     places: ProjectPlaces | None = field(default=None, repr=False, compare=False)
     #: method ``<FB>.<M>`` -> {function block -> the method it runs for ``M``}: for calls with ``virtual`` set
     dispatch: dict[str, dict[str, str]] = field(default_factory=dict)
+    #: function blocks whose body a derived one runs with ``SUPER^()`` (``FbCall.body``), upper case
+    base_bodies: frozenset[str] = frozenset()
 
     def program_instances(self) -> list[ProgramInstance]:
         """The instances to create: ``instances``, or one per PROGRAM named after it."""

@@ -405,8 +405,24 @@ class Reference(BaseModel):
 
     pou: str | None = None
     part: Literal[
-        "declarations", "body", "network", "transition", "step", "return type", "globals", "types", "task", "test"
+        "declarations",
+        "body",
+        "network",
+        "transition",
+        "step",
+        "return type",
+        "globals",
+        "types",
+        "task",
+        "test",
+        "extends",
+        "implements",
     ]
+    member: str | None = Field(
+        default=None,
+        description="A text of the POU's METHOD or PROPERTY: its name (`M`, or `P.GET` / `P.SET` / `P` for the "
+        "property's type).",
+    )
     line: int | None = None
     network: str | None = None
     network_number: int | None = None

@@ -139,7 +139,7 @@ _TABLE: list[tuple[str, str, Severity, str]] = [
         "fbd",
         "FBD-FEEDBACK",
         "error",
-        "A loop or a CFC wire against the order carries a function's result (no value yet).",
+        "A loop carries a generic function's result whose type nothing outside the loop gives.",
     ),
     ("fbd", "FBD-UNKNOWN-PIN", "error", "A wire or flag uses a pin the block does not have."),
     ("fbd", "FBD-PIN-FLAG", "error", "An output pin has an edge flag."),

@@ -24,7 +24,7 @@ from ..model import ld as ld_model
 from ..model.xref import AccessKind, XrefAccess, XrefEntry, XrefList
 from ..st.checker import check_project
 from ..st.printer import print_type
-from ..st.symbols import CheckResult, PouInfo, Symbol
+from ..st.symbols import THIS, CheckResult, PouInfo, Symbol
 
 Key = tuple[str | None, str]
 _ROOT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")  # (upper-case POU or None for a global, upper-case name)
@@ -45,11 +45,17 @@ def cross_reference(project: Project) -> XrefList:
                 entries[(None, symbol.name.upper())].accesses.append(_declared(symbol, pou.name))
             else:
                 entries[(pou.name.upper(), symbol.name.upper())] = _entry(symbol, pou.name)
+        for method in info.methods.values():  # a METHOD's (or PROPERTY accessor's) own variables: ``F.M``
+            for symbol in method.symbols.values():
+                if symbol is not method.this() and symbol.var_class != "VAR_EXTERNAL":
+                    entries[(method.name.upper(), symbol.name.upper())] = _entry(symbol, method.name)
     for pou in project.pous:
         info = checked.pou(pou.name)
         if info is None or info.name != pou.name:
             continue
         _accesses(project, checked, pou, entries)
+        for method in info.methods.values():
+            _method_accesses(checked, method, entries)
     for entry in entries.values():
         entry.accesses = _unique(entry.accesses)
     return XrefList(entries=list(entries.values()))
@@ -106,6 +112,29 @@ def _accesses(project: Project, checked: CheckResult, pou: Pou, entries: dict[Ke
                     path=_path(var, names, checked, info),
                 )
             )
+
+
+def _method_accesses(checked: CheckResult, method: PouInfo, entries: dict[Key, XrefEntry]) -> None:
+    """What a METHOD reads, writes and calls (lines of its body): its own variables under ``F.M``, the instance's
+    (``THIS`` member paths in the IR, docs/ir.md) under its function block, the globals under theirs."""
+    assert method.method is not None  # (a function block's ``methods`` holds methods only)
+    fb = method.method.owner
+    lowered = lower_pou(None, method, checked, [])
+    own = {name: entry.name for (owner, name), entry in entries.items() if owner in (None, method.name.upper())}
+    instance = {name: entry.name for (owner, name), entry in entries.items() if owner == fb.name.upper()}
+    for block in lowered.blocks:
+        for kind, var, origin in _statement_accesses(block.statements):
+            if var.scope == "local" and var.name == THIS and var.path and isinstance(var.path[0], ir.Member):
+                name, rest = var.path[0].name, var.path[1:]
+                key: Key = (fb.name.upper(), name)
+                path = _path(ir.Var("local", name, var.type, rest), instance, checked, fb)
+            else:
+                key = (None, var.name) if var.scope == "global" else (method.name.upper(), var.name)
+                path = _path(var, own, checked, method)
+            entry = entries.get(key)
+            if entry is not None:  # (else a hidden temporary, the result, or THIS itself)
+                access = XrefAccess(kind=kind, pou=method.name, line=origin.line, column=origin.column, path=path)
+                entry.accesses.append(access)
 
 
 def _places(pou: Pou) -> dict[tuple[str | None, str | None], tuple[int, str | None]]:
@@ -249,8 +278,9 @@ def _reads(expr: Any, origin: ir.Origin) -> Iterator[tuple[AccessKind, ir.Var, i
     if isinstance(expr, ir.Call):
         for argument in expr.args:
             yield from _reads(argument, origin)
-        for in_out in expr.in_outs:
-            yield from _written(in_out, origin)
+        method = expr.user and "." in expr.function  # ``F.M`` (no POU name has a dot): its first in-out is THIS
+        for number, in_out in enumerate(expr.in_outs):
+            yield from _written(in_out, origin, "call" if method and number == 0 else "write")
         return
     if dataclasses.is_dataclass(expr):
         for field in dataclasses.fields(expr):

@@ -362,7 +362,7 @@ class ArrayType:
 
 @dataclass(slots=True)
 class PointerType:
-    kind: str  # "POINTER TO", "REF_TO" or "REFERENCE TO" (CODESYS: dereferenced implicitly)
+    kind: str  # "POINTER TO", "REF_TO", Mosaic "PTR_TO" or "REFERENCE TO" (CODESYS: dereferenced implicitly)
     target: TypeSpec
     span: Span = _span()
 

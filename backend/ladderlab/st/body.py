@@ -455,12 +455,21 @@ class BodyChecker:
         for stmt in body:
             self.statement(stmt)
 
+    def _names_program(self, node: ast.Expr) -> bool:
+        """Whether ``node`` is a bare name that means a PROGRAM POU (no variable of that name hides it)."""
+        if not isinstance(node, ast.Name):
+            return False
+        program = self.result.pous.get(node.name.upper())
+        return program is not None and program.kind == "PROGRAM" and self.lookup(node.name) is None
+
     def statement(self, stmt: ast.Stmt) -> None:
         if isinstance(stmt, ast.Assign):
             self.assign(stmt)
         elif isinstance(stmt, ast.RefAssign):
             self.ref_assign(stmt)
         elif isinstance(stmt, ast.CallStmt):
+            if self._names_program(stmt.call):  # ``PRGexample2;`` calls the program (seed 003, CODESYS)
+                stmt.call = ast.Call(stmt.call, [], stmt.call.span)
             if isinstance(stmt.call, ast.Call):
                 self.call(stmt.call, statement=True)
                 ref = stmt.call.ref
@@ -546,12 +555,6 @@ class BodyChecker:
         if root is not None and root.ref is self.pou and self.pou is not None:  # F := ..., F[2] := ..., F.a := ...
             self.result_assigned = True
         symbol = root.ref if root is not None else None
-        if root is not None and isinstance(root.ref, PouInfo) and root.ref.kind == "PROGRAM" and node is not root:
-            self.report(
-                "ST-NOT-LVALUE",
-                f"the variables of the program {root.ref.name} can be read from other POUs, not assigned",
-                node,
-            )
         read_only = _implicit_in(node)
         if read_only is not None:
             self.report(

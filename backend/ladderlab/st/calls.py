@@ -17,10 +17,10 @@ from . import ast
 from . import types as t
 from .context_typing import default_type, untyped_leaves
 from .libraries import library_of
-from .methods import check_method_call, method_callee
+from .methods import check_method_call, method_callee, this_type
 from .printer import print_expression
 from .rules import assignable_or_report, root_name
-from .symbols import PouInfo, Symbol
+from .symbols import THIS, PouInfo, Symbol
 from .types import ERROR, VOID, Type
 
 _SYSTEM = {"ADR", "REF", "SIZEOF", "__ISVALIDREF"}
@@ -41,13 +41,7 @@ def check_call(checker: Any, node: ast.Call, statement: bool) -> Type:
     if method is not None:
         return check_method_call(checker, node, *method)
     if isinstance(callee, ast.Deref) and isinstance(callee.base, ast.Name) and callee.base.name.upper() in _SELF:
-        _args_untyped(checker, node)
-        checker.report(
-            "ST-NOT-CALLABLE",
-            f"{callee.base.name.upper()}^() would run a function block's body from a method: not supported yet",
-            node,
-        )
-        return ERROR
+        return _body_call(checker, node, statement)
     if not isinstance(callee, ast.Name):
         return _instance_call(checker, node, checker.expr(callee), statement)
     upper = callee.name.upper()
@@ -83,6 +77,41 @@ def check_call(checker: Any, node: ast.Call, statement: bool) -> Type:
         hint = did_you_mean(callee.name, [*checker.result.pous, *stdlib.FUNCTIONS])
     checker.report("ST-UNKNOWN-POU", f"unknown function '{callee.name}'" + hint, callee)
     return ERROR
+
+
+def _body_call(checker: Any, node: ast.Call, statement: bool) -> Type:
+    """``SUPER^(...)`` in a derived function block's body: runs its base's body on the same instance (CODESYS),
+    the arguments set the (inherited) inputs and read the outputs as in any FB call. ``THIS^()`` (an FB's body from
+    its methods) is refused: a method called from the body would run the body again."""
+    callee: ast.Deref = node.callee
+    caller = checker.pou
+    word = callee.base.name.upper()
+    if word == THIS or caller is None or caller.kind != "FUNCTION_BLOCK" or caller.method is not None:
+        _args_untyped(checker, node)
+        where = "a method" if caller is not None and caller.method is not None else "here"
+        reason = (
+            "THIS^() would run the function block's body again from inside it"
+            if word == THIS
+            else f"SUPER^() runs the base function block's body: call it in the derived block's body, not {where}"
+        )
+        checker.report("ST-NOT-CALLABLE", reason, node)
+        return ERROR
+    base = this_type(checker, callee)
+    if base is None or base is ERROR:
+        _args_untyped(checker, node)
+        return ERROR
+    callee.ty = base
+    if not statement:
+        _args_untyped(checker, node)
+        checker.report("ST-NOT-CALLABLE", "SUPER^() runs the base's body: call it as a statement", node)
+        return ERROR
+    caller.runs_base_body = True
+    inputs = [
+        Param(s.name, s.type, s.var_class == "VAR_IN_OUT") for s in base.pou.parameters("VAR_INPUT", "VAR_IN_OUT")
+    ]
+    outputs = [Param(s.name, s.type) for s in base.pou.parameters("VAR_OUTPUT")]
+    check_arguments(checker, node, "SUPER^", inputs, outputs, function=False)
+    return VOID
 
 
 def _args_untyped(checker: Any, node: ast.Call) -> None:

@@ -16,7 +16,7 @@ from . import types as t
 from .inheritance import signature_difference
 from .symbols import THIS, MethodInfo, PouInfo, Symbol
 
-_ALLOWED = {"VAR_INPUT", "VAR_IN_OUT"}
+_ALLOWED = {"VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT"}
 
 
 def register_interfaces(checker: Any, decls: list[ast.InterfaceDecl]) -> None:

@@ -21,8 +21,9 @@ from .printer import print_expression
 from .symbols import THIS, MethodInfo, PouInfo, PropertyRef, Symbol
 from .types import ERROR, VOID, Type
 
-# The VAR blocks a method may declare (its VAR, like a function's, is fresh in every call; VAR_OUTPUT: not yet).
-_ALLOWED = {"VAR", "VAR_TEMP", "VAR_INPUT", "VAR_IN_OUT", "VAR_EXTERNAL"}
+# The VAR blocks a method may declare (its VAR and VAR_OUTPUT, like a function's variables, are fresh in every call;
+# the outputs are copied to the call's ``=>`` targets when it returns: ir/method_outputs.py).
+_ALLOWED = {"VAR", "VAR_TEMP", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_EXTERNAL"}
 
 
 def method_file(fb: str, method: str, part: str) -> str:
@@ -99,9 +100,6 @@ def _declare(checker: Any, info: PouInfo, method: Method, report) -> None:
     checker.result.diagnostics += parsed.diagnostics
     body_checker = BodyChecker(checker.result, info, report)
     for block in parsed.ast or []:
-        if block.kind == "VAR_OUTPUT":
-            report("ST-DECL", "VAR_OUTPUT in a method is not supported yet: return the value, or use VAR_IN_OUT", block)
-            continue
         if block.kind not in _ALLOWED:
             report("ST-DECL", f"{block.kind} is not allowed in a method", block)
             continue
@@ -285,8 +283,9 @@ def check_method_call(checker: Any, node: ast.Call, method: PouInfo, instance: a
     ):
         caller.calls.add(info.owner.name.upper())  # (its own FB's methods are no call of another POU)
     inputs = [Param(s.name, s.type, s.var_class == "VAR_IN_OUT") for s in method.parameters("VAR_INPUT", "VAR_IN_OUT")]
+    outputs = [Param(s.name, s.type) for s in method.parameters("VAR_OUTPUT")]
     name = f"{info.owner.name}.{info.name}" if instance is None else f"{print_expression(instance)}.{info.name}"
-    check_arguments(checker, node, name, inputs, [], function=True)
+    check_arguments(checker, node, name, inputs, outputs, function=True)
     return method.return_type or VOID
 
 

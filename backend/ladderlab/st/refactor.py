@@ -1,7 +1,8 @@
 """Project-wide rename refactoring and "what refers to this name" for POUs, types, globals.
 
 A project-level name (a POU, a user type, a global variable) is used by ST texts (declarations,
-bodies, globals, types, test files), by LD/FBD operands (contacts, coils, compares, box calls,
+bodies, globals, types, test files, a function block's methods and properties), by its EXTENDS and IMPLEMENTS,
+by LD/FBD operands (contacts, coils, compares, box calls,
 instances and pin operands, FBD blocks and nodes) and by tasks (the programs they run). Renaming
 finds every use as an ST identifier token: comments, strings, literals (``T#5s``, ``16#FF``),
 direct addresses (``%IX0.1``) and member names after a ``.`` are never touched, so ``x.Main`` or
@@ -108,11 +109,42 @@ def _visit(data: dict[str, Any], old: str, new: str, found: list[Reference], ski
         pou["body"] = _body(pou["body"], old, new, found, name)
         if pou.get("return_type"):
             pou["return_type"] = _text(pou["return_type"], old, new, found, Reference(pou=name, part="return type"))
+        _object_orientation(pou, old, new, found)
     for task in data["tasks"]:
         _task(task, old, new, found)
     for test in data["tests"]:
         path = f"tests/{test['name']}.st"
         test["text"] = _text(test["text"], old, new, found, Reference(part="test", file=path))
+
+
+def _object_orientation(pou: dict[str, Any], old: str, new: str, found: list[Reference]) -> None:
+    """A dumped function block's EXTENDS, IMPLEMENTS, METHOD texts (declarations, result type, body) and PROPERTY
+    texts (type, GET and SET) renamed in place."""
+    name = pou["name"]
+    if pou.get("extends") and pou["extends"].upper() == old.upper():
+        found.append(Reference(pou=name, part="extends", text=f"EXTENDS {pou['extends']}"))
+        pou["extends"] = new
+    for i, interface in enumerate(pou.get("implements") or []):
+        if interface.upper() == old.upper():
+            found.append(Reference(pou=name, part="implements", text=f"IMPLEMENTS {interface}"))
+            pou["implements"][i] = new
+    for method in pou.get("methods") or []:
+        where = Reference(pou=name, part="declarations", member=method["name"])
+        method["declarations"] = _text(method["declarations"], old, new, found, where)
+        if method.get("return_type"):
+            where = Reference(pou=name, part="return type", member=method["name"])
+            method["return_type"] = _text(method["return_type"], old, new, found, where)
+        method["body"] = _text(method["body"], old, new, found, Reference(pou=name, part="body", member=method["name"]))
+    for prop in pou.get("properties") or []:
+        where = Reference(pou=name, part="return type", member=prop["name"])
+        prop["type"] = _text(prop["type"], old, new, found, where)
+        for kind in ("get", "set"):
+            accessor = prop.get(kind)
+            if accessor is None:
+                continue
+            member = f"{prop['name']}.{kind.upper()}"
+            for part in ("declarations", "body"):
+                accessor[part] = _text(accessor[part], old, new, found, Reference(pou=name, part=part, member=member))
 
 
 def _task(task: dict[str, Any], old: str, new: str, found: list[Reference]) -> None:

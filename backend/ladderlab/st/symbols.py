@@ -71,6 +71,7 @@ class PouInfo:
     final: bool = False  # a FINAL function block: nothing EXTENDS it
     interfaces: list[PouInfo] = field(default_factory=list)  # an FB: those it IMPLEMENTS; an INTERFACE: it EXTENDS
     methods_called: list[tuple[PouInfo, bool]] = field(default_factory=list)  # METHODs it calls, dispatched or not
+    runs_base_body: bool = False  # a function block whose body calls SUPER^(): runs its base's body on itself
 
     def lineage(self) -> list[PouInfo]:
         """This function block, then the one it extends, and so on."""

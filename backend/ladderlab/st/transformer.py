@@ -267,7 +267,7 @@ class AstBuilder(Transformer):
         return None if isinstance(c[0], Token) and c[0].type == "STAR" else (c[0], c[1])
 
     def pointer_type(self, c):
-        kind = {"POINTER": "POINTER TO", "REFERENCE": "REFERENCE TO"}.get(c[0].type, "REF_TO")
+        kind = {"POINTER": "POINTER TO", "REFERENCE": "REFERENCE TO", "PTR_TO": "PTR_TO"}.get(c[0].type, "REF_TO")
         return ast.PointerType(kind, c[1], span_of(c))
 
     def enum_type(self, c):

@@ -1,6 +1,6 @@
 // The halted scan: where it stands (revealed in its editor when it halts) and what to do next:
 // Continue, Step over, Step into, Step out, Step network, Step cycle, Stop (the keys of the keymap,
-// CODESYS's, handled by project/useAppKeys.ts). Breakpoints are set in the editors and listed in the
+// CODESYS's, handled by app/useAppKeys.ts). Breakpoints are set in the editors and listed in the
 // Breakpoints panel.
 import { useEffect } from "react";
 import { onlineStore, useOnline } from "../online/store";

@@ -3,7 +3,7 @@ import { useState } from "react";
 import { afterEach, beforeEach, describe, expect, it, vi } from "vitest";
 import { LdEditor } from "../ld/editor/LdEditor";
 import { LIBRARY, motorMain } from "../ld/fixtures";
-import { historyOf } from "../ld/history";
+import { historyOf } from "../store/history";
 import type { LdBody } from "../ld/model";
 import { emptyMonitor } from "../online/monitor";
 import type { ClientMessage } from "../online/protocol";

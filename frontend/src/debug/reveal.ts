@@ -1,7 +1,7 @@
 // Shows a place of the project in its editor: opens the POU (named in any case: the simulation
 // reports halts in the compiled spelling) and asks the editor to select and scroll to the place.
 import { panelsStore } from "../panels/store";
-import { workspaceStore } from "../project/store";
+import { workspaceStore } from "../store/project";
 
 export interface Place {
   pou: string;

@@ -5,7 +5,7 @@
 import { PencilLine } from "lucide-react";
 import { useEffect, useId, useMemo, useRef, useState } from "react";
 import type { Diagnostic } from "../generated/api";
-import { freeName, parseDeclarations, printDeclarations, VAR_CLASSES, type DeclRow } from "./model";
+import { freeName, parseDeclarations, printDeclarations, VAR_CLASSES, type DeclRow } from "../iec/declarations";
 
 export interface DeclarationsEditorProps {
   text: string;
@@ -20,7 +20,7 @@ export interface DeclarationsEditorProps {
   readOnly?: string | null;
   /** Class of a new row (VAR for POUs, VAR_GLOBAL for the globals). */
   newClass?: string;
-  /** Offers "Rename everywhere" on each row (the globals: a project-level name, see project/refactor.ts). */
+  /** Offers "Rename everywhere" on each row (the globals: a project-level name, see tree/refactor.ts). */
   onRename?(name: string): void;
 }
 

@@ -5,7 +5,7 @@
 // suggestions). It floats over the editor, so opening it never shifts the diagram under the pointer.
 import { useEffect, useMemo, useRef, useState } from "react";
 import { defaultSuggestion, suggest } from "../ld/editor/OperandEditor";
-import { DECLARE_CLASSES, declareProblem, type NewVariable } from "./newVariable";
+import { DECLARE_CLASSES, declareProblem, type NewVariable } from "../store/newVariable";
 import "./declare.css";
 
 export interface DeclareDialogProps {

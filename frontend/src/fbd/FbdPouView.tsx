@@ -2,11 +2,11 @@
 // check's diagnostics, online mode, the POU's breakpoints (debug/store.ts) and the tests' coverage tint.
 import { useCallback, useMemo, type ReactNode } from "react";
 import type { FbdBody, Pou } from "../generated/api";
-import type { History } from "../ld/history";
+import type { History } from "../store/history";
 import { debugStore, useDebug } from "../debug/store";
 import { useOnline } from "../online/store";
-import { useWorkspace } from "../project/store";
-import { useDiagramPou } from "../project/useDiagramPou";
+import { useWorkspace } from "../store/project";
+import { useDiagramPou } from "../ld/useDiagramPou";
 import { FbdEditor, type FbdDebug } from "./editor/FbdEditor";
 import { nodeOfProbe } from "./online";
 import { useFbdOnline } from "./useFbdOnline";
@@ -65,6 +65,7 @@ export function FbdPouView({
       declarableTypes={declarableTypes}
       debug={debug}
       onVisibleChange={live.onVisibleChange}
+      onFeedbackChange={live.onFeedbackChange}
       focus={focus}
       chart={pou.language === "cfc"}
     />

@@ -79,6 +79,18 @@ describe("refusal of a wire", () => {
     );
   });
 
+  it("accepts a block's output back into its own input (a feedback loop), not a node wired to itself", () => {
+    const loop = { from: { node: "add", pin: "OUT" }, to: { node: "add", pin: "IN1" } };
+    const own = net();
+    own.wires = own.wires!.filter((w) => !(w.to.node === "add" && w.to.pin === "IN1"));
+    expect(refusal(own, loop, lookup, SYMBOLS)).toBeNull();
+    expect(outputType(own, { node: "add", pin: "OUT" }, lookup, SYMBOLS)).toBe("INT"); // from IN2, around the loop
+    const connector = { ...own, nodes: [...own.nodes!, { type: "connector" as const, id: "k", name: "x" }] };
+    expect(refusal(connector, { from: { node: "k", pin: "OUT" }, to: { node: "k", pin: "IN" } }, lookup, SYMBOLS)).toBe(
+      "A wire cannot connect a node to itself.",
+    );
+  });
+
   it("follows a generic result back to its inputs: ADD of two INTs is an INT", () => {
     expect(outputType(net(), { node: "add", pin: "OUT" }, lookup, SYMBOLS)).toBe("INT");
     expect(

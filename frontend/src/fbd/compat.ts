@@ -83,10 +83,11 @@ export function refusal(
   lookup: Lookup,
   symbols: readonly SymbolInfo[],
 ): string | null {
-  if (c.from.node === c.to.node) return "A wire cannot connect a node to itself.";
   const target = nodesOf(network).find((n) => n.id === c.to.node);
   const source = nodesOf(network).find((n) => n.id === c.from.node);
   if (!target || !source) return "Both ends of a wire must be nodes of this network.";
+  // a block's output back into its own input is a feedback loop (the previous scan's value, issue 22 item 6)
+  if (c.from.node === c.to.node && kindOf(source) !== "block") return "A wire cannot connect a node to itself.";
   const occupied = wiresOf(network).find(
     (w) => w.to.node === c.to.node && w.to.pin.toUpperCase() === c.to.pin.toUpperCase(),
   );

@@ -2,6 +2,7 @@
 // network builder (the `result := (var1 + var2) - var3` network of the browser test).
 import type { LibraryEntry, SymbolInfo } from "../generated/api";
 import { entry } from "../ld/fixtures";
+import { plainSymbol } from "../store/project";
 import type { FbdBody, FbdNetwork, Wire } from "./model";
 
 export const LIBRARY: LibraryEntry[] = [
@@ -72,16 +73,7 @@ export const LIBRARY: LibraryEntry[] = [
 
 export const lookup = (call: string): LibraryEntry | undefined => LIBRARY.find((e) => e.name === call.toUpperCase());
 
-const symbol = (name: string, type: string): SymbolInfo => ({
-  name,
-  type,
-  var_class: "VAR",
-  initial: null,
-  address: null,
-  comment: null,
-  retain: false,
-  constant: false,
-});
+const symbol = plainSymbol;
 export const SYMBOLS: SymbolInfo[] = [
   symbol("var1", "INT"),
   symbol("var2", "INT"),

@@ -34,6 +34,34 @@ describe("online FBD", () => {
     ]);
   });
 
+  it("shows on a block input fed over a feedback wire the value the block read, not its producer's new one", () => {
+    // ADD's OUT wired back into its own IN1 (issue 22 item 6): the engine probes add.IN1 before the call
+    const loop = bodyOf({
+      id: "n",
+      nodes: [
+        { type: "block", id: "add", call: "ADD" },
+        { type: "input", id: "one", expr: "1" },
+      ],
+      wires: [wire("add", "OUT", "add", "IN1"), wire("one", "OUT", "add", "IN2")],
+    });
+    const binding = bindFbd(loop, "MAIN", lookup, SYMBOLS, undefined, new Set(["add/in:IN1"]));
+    expect(binding.elements[0]!.ids).toEqual(["add.OUT", "add.IN1", "one"]);
+    // not (yet) known as a feedback pin: no read probe subscribed (the engine has none for other inputs)
+    expect(bindFbd(loop, "MAIN", lookup, SYMBOLS).elements[0]!.ids).toEqual(["add.OUT", "one"]);
+    const monitor = {
+      ...emptyMonitor,
+      power: { [powerKey("MAIN", "add.OUT")]: 4, [powerKey("MAIN", "add.IN1")]: 3 },
+    };
+    const view = fbdOnlineView(monitor, binding);
+    expect([view.pins.add!["in:IN1"]!.text, view.pins.add!["out:OUT"]!.text]).toEqual(["3", "4"]);
+    // the read value is a pin's, not a sign the block ran: with its output not executed (EN FALSE) it is dimmed
+    const skipped = { ...monitor, power: { [powerKey("MAIN", "add.OUT")]: null, [powerKey("MAIN", "add.IN1")]: 3 } };
+    expect(executed(fbdOnlineView(skipped, binding), "add")).toBe(false);
+    // an input the engine records no read value for shows its producer's value
+    const plain = { ...monitor, power: { [powerKey("MAIN", "add.OUT")]: 4 } };
+    expect(fbdOnlineView(plain, binding).pins.add!["in:IN1"]!.text).toBe("4");
+  });
+
   it("reads wire values from the producer's probe, through continuations", () => {
     const n: FbdNetwork = {
       id: "n",

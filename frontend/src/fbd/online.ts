@@ -78,6 +78,7 @@ function bindBlock(
   lookup: Lookup,
   symbols: readonly SymbolInfo[],
   path: (operand: string) => string | null,
+  feedback: ReadonlySet<string>,
 ): PinBinding[] {
   const block = node as { id: string; call: string; instance?: string | null };
   const { inputs, outputs } = nodePins(node, network, lookup, symbols);
@@ -95,22 +96,31 @@ function bindBlock(
     if (!probe) return null;
     const source = nodesOf(network).find((n) => n.id === wire!.from.node);
     const operand = source && kindOf(source) === "input" ? operandOf(source) : null;
-    return { probe, typeOf: (operand && path(operand)) ?? undefined };
+    const read = feedback.has(`${block.id}/in:${pin.name.toUpperCase()}`) ? readProbe(block.id, pin.name) : undefined;
+    return { probe, read, typeOf: (operand && path(operand)) ?? undefined };
   });
 }
 
-/** The probe ids of one node: its output pins (blocks) or the node itself. */
+/** The probe of what a block's input read over a feedback wire (the previous scan's value, lower_fbd.py). */
+const readProbe = (block: string, pin: string) => `${block}.${pin.toUpperCase()}`;
+
+/** The probe ids of one node: its output pins and feedback inputs (blocks), or the node itself. */
 function probesOfNode(
   node: ReturnType<typeof nodesOf>[number],
   network: FbdNetwork,
   lookup: Lookup,
   symbols: readonly SymbolInfo[],
+  feedback: ReadonlySet<string>,
 ): string[] {
   switch (kindOf(node)) {
-    case "block":
-      return lookup((node as { call: string }).call)
-        ? nodePins(node, network, lookup, symbols).outputs.map((p) => `${node.id}.${p.name.toUpperCase()}`)
-        : [];
+    case "block": {
+      if (!lookup((node as { call: string }).call)) return [];
+      const looped = wiresOf(network).filter((w) => feedback.has(`${node.id}/in:${w.to.pin.toUpperCase()}`));
+      return [
+        ...nodePins(node, network, lookup, symbols).outputs.map((p) => `${node.id}.${p.name.toUpperCase()}`),
+        ...looped.filter((w) => w.to.node === node.id).map((w) => readProbe(node.id, w.to.pin)),
+      ];
+    }
     case "input":
     case "output":
     case "jump":
@@ -128,6 +138,8 @@ export function bindFbd(
   lookup: Lookup,
   symbols: readonly SymbolInfo[],
   networks?: ReadonlySet<string>,
+  /** Input pins fed over feedback wires (`<node>/in:<PIN>`, order.ts feedbackPins): they show what they read. */
+  feedback: ReadonlySet<string> = new Set(),
 ): FbdBinding {
   const pathOf = new Map<string, string>();
   const pins = new Map<string, PinBinding[]>();
@@ -136,11 +148,11 @@ export function bindFbd(
   for (const network of networksOf(body)) {
     if (networks && !networks.has(network.id)) continue;
     for (const node of nodesOf(network)) {
-      ids.push(...probesOfNode(node, network, lookup, symbols));
+      ids.push(...probesOfNode(node, network, lookup, symbols, feedback));
       const operand = operandOf(node);
       const p = operand ? path(operand) : null;
       if (operand && p) pathOf.set(operand.toUpperCase(), p);
-      if (kindOf(node) === "block") pins.set(node.id, bindBlock(node, network, lookup, symbols, path));
+      if (kindOf(node) === "block") pins.set(node.id, bindBlock(node, network, lookup, symbols, path, feedback));
     }
   }
   return diagramBinding(instance, ids, pathOf, pins);
@@ -159,11 +171,18 @@ export interface FbdOnlineView {
 }
 
 export function fbdOnlineView(monitor: MonitorState, binding: FbdBinding, prepared: Prepared = {}): FbdOnlineView {
+  // what a block read over a feedback wire is a pin value only: it is read before the block's EN is looked at,
+  // so it must not make a block that EN skipped look executed
+  const reads = new Set(
+    [...binding.pins.values()].flatMap((pins) =>
+      pins.flatMap((p) => (p.source && "read" in p.source && p.source.read ? [p.source.read] : [])),
+    ),
+  );
   const probes: Record<string, PowerState> = {};
   for (const { pou_instance, ids } of binding.elements) {
     for (const id of ids ?? []) {
       const state = monitor.power[powerKey(pou_instance, id)];
-      if (state !== undefined) probes[id] = state;
+      if (state !== undefined && !reads.has(id)) probes[id] = state;
     }
   }
   return { probes, ...diagramValues(monitor, binding, prepared) };

@@ -1,7 +1,7 @@
 // FBD model operations (issue 9 "FBD editor"): nodes, wires, pins, order, arrange, undo, clipboard.
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
-import { historyOf, record, redo, undo } from "../ld/history";
+import { historyOf, record, redo, undo } from "../store/history";
 import { serializeClip as serializeLdClip } from "../ld/clipboard";
 import { arrange } from "./arrange";
 import { clipOf, parseClip, pasteClip, PASTE_OFFSET, serializeClip } from "./clipboard";

@@ -24,11 +24,12 @@ export function orderNumbers(network: FbdNetwork, order: readonly string[]): Map
 }
 
 /**
- * A chart's input pins fed against the execution order (by an element with the same or a higher number):
- * they read the previous scan's value, so the producer's value of this scan is not theirs to show online.
- * Keys are `<node id>/in:<PIN>`.
+ * The input pins fed over a feedback wire, by the execution order the backend reported (`order`): a wire from
+ * an element that runs at the same place or later (a loop in FBD, a wire against the numbers in CFC). They read
+ * the previous scan's value; the engine records what they read (probe `<block>.<PIN>`). Keys `<node>/in:<PIN>`.
  */
-export function feedbackPins(network: FbdNetwork, numbers: ReadonlyMap<string, number>): Set<string> {
+export function feedbackPins(network: FbdNetwork, order: readonly string[]): Set<string> {
+  const numbers = orderNumbers(network, order);
   const found = new Set<string>();
   for (const wire of wiresOf(network)) {
     const from = numbers.get(wire.from.node);

@@ -54,6 +54,28 @@ describe("orthogonal FBD wires", () => {
     expect(points[points.length - 2]!.x).toBeLessThanOrEqual(100 - STUB);
   });
 
+  it("a loop from a later block back to an earlier one goes around both (property, issue 22 item 6)", () => {
+    fc.assert(
+      fc.property(
+        fc.integer({ min: 0, max: 20 }).map((n) => n * 10),
+        fc.integer({ min: 0, max: 20 }).map((n) => n * 10),
+        fc.integer({ min: 8, max: 30 }).map((n) => n * 10),
+        fc.integer({ min: 0, max: 1 }),
+        (y1, y2, gap, pin) => {
+          const earlier = { x: 100, y: y1, width: 60, height: 50 };
+          const later = { x: 100 + 60 + gap, y: y2, width: 60, height: 50 };
+          const source = { x: later.x + later.width, y: later.y + 20 }; // the later block's output
+          const target = { x: earlier.x, y: earlier.y + 15 + 20 * pin }; // an input of the earlier block
+          const points = route(source, target, [earlier, later]);
+          expect(orthogonal(points)).toBe(true);
+          expect(hits(points, earlier) || hits(points, later)).toBe(false);
+          expect(points[1]!.x).toBeGreaterThanOrEqual(source.x + STUB); // leaves to the right
+          expect(points[points.length - 2]!.x).toBeLessThanOrEqual(target.x - STUB); // enters from the left
+        },
+      ),
+    );
+  });
+
   it("never crosses a node when there is room around them (property)", () => {
     const box = fc.record({
       x: fc.integer({ min: 0, max: 40 }).map((n) => n * 10),

@@ -16,6 +16,8 @@ export interface FbdOnline {
   readOnly: string | null;
   actions?: LdOnlineActions;
   onVisibleChange(networks: readonly string[]): void;
+  /** The editor's feedback pins (order.ts feedbackPins over the reported order), shown with what they read. */
+  onFeedbackChange(pins: ReadonlySet<string>): void;
 }
 
 /** `symbols` null: not arrived yet, nothing is bound (see useLdOnline). */
@@ -36,9 +38,15 @@ export function useFbdOnline(
 
   const [visible, setVisible] = useState<ReadonlySet<string> | null>(null);
   const onVisibleChange = useCallback((networks: readonly string[]) => setVisible(new Set(networks)), []);
+  const [feedback, setFeedback] = useState<ReadonlySet<string>>(new Set());
+  const onFeedbackChange = useCallback(
+    (pins: ReadonlySet<string>) =>
+      setFeedback((old) => (old.size === pins.size && [...pins].every((p) => old.has(p)) ? old : pins)),
+    [],
+  );
   const binding = useMemo(
-    () => (instance && symbols ? bindFbd(body, instance, lookup, symbols, visible ?? undefined) : null),
-    [body, instance, lookup, symbols, visible],
+    () => (instance && symbols ? bindFbd(body, instance, lookup, symbols, visible ?? undefined, feedback) : null),
+    [body, instance, lookup, symbols, visible, feedback],
   );
   useEffect(() => {
     onlineStore
@@ -58,5 +66,5 @@ export function useFbdOnline(
     () => (live && instance && symbols ? operandActions(instance, symbols) : undefined),
     [live, instance, symbols],
   );
-  return { online, readOnly: onlineReadOnly(pou, live, instance), actions, onVisibleChange };
+  return { online, readOnly: onlineReadOnly(pou, live, instance), actions, onVisibleChange, onFeedbackChange };
 }

@@ -2562,6 +2562,11 @@ export interface components {
       file?: string | null;
       /** Line */
       line?: number | null;
+      /**
+       * Member
+       * @description A text of the POU's METHOD or PROPERTY: its name (`M`, or `P.GET` / `P.SET` / `P` for the property's type).
+       */
+      member?: string | null;
       /** Network */
       network?: string | null;
       /** Network Label */
@@ -2582,7 +2587,9 @@ export interface components {
         | "globals"
         | "types"
         | "task"
-        | "test";
+        | "test"
+        | "extends"
+        | "implements";
       /** Pou */
       pou?: string | null;
       /** Task */

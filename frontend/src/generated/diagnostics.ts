@@ -338,12 +338,13 @@ export const DIAGNOSTICS = {
     "FBD-FEEDBACK": {
       anchor: "fbd-feedback",
       area: "fbd",
-      example: "the OUT of an ADD wired back into its own IN1",
+      example: "the OUT of an ABS wired back into its own IN (nothing else feeds it)",
       example_language: "text",
       example_note: "",
-      fix: "a loop carries last scan's value, and a function's result has none before its first call: also wire the result to an output variable, whose initial value then starts the loop. In a CFC chart the same holds for any wire into an element with a lower execution order number than the block feeding it: give the consumer a higher number (or \"Order by data flow\"), or wire the result to an output variable too.",
+      fix: "a loop carries last scan's value in a feedback variable of the result's type (docs/diagrams.md, \"Feedback loops\"); a generic function (ABS, ADD, MAX ...) takes that type from an input fed from outside the loop. Wire a typed variable to one of its inputs, or its output to an output variable (whose declared type and initial value then carry the loop). In a CFC chart the same holds for a wire against the execution order.",
       severity: "error",
-      summary: "A loop or a CFC wire against the order carries a function's result (no value yet).",
+      summary:
+        "A loop carries a generic function's result whose type nothing outside the loop gives.",
     },
     "FBD-IN-OUT": {
       anchor: "ld-in-out-fbd-in-out",

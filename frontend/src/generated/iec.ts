@@ -2652,6 +2652,7 @@ export const IEC = {
     "PROGRAM",
     "PROPERTY",
     "PROTECTED",
+    "PTR_TO",
     "PUBLIC",
     "READ_ONLY",
     "READ_WRITE",

@@ -2,7 +2,7 @@
 // markdown-it with HTML off escapes any markup in the text, so a statement cannot run script in the page.
 import MarkdownIt from "markdown-it";
 import { useMemo, useState } from "react";
-import { useWorkspace, workspaceStore } from "../project/store";
+import { useWorkspace, workspaceStore } from "../store/project";
 
 const markdown = new MarkdownIt({ html: false, linkify: true });
 

@@ -3,7 +3,8 @@
 import { useEffect, useState, type FormEvent } from "react";
 import { http, unwrap } from "../api/client";
 import type { ExampleInfo } from "../generated/api";
-import { appStore } from "../store";
+import { appStore } from "../store/workspace";
+import { FormError } from "../ui/FormError";
 
 export function NewFromExample() {
   const [open, setOpen] = useState(false);
@@ -86,11 +87,7 @@ export function NewFromExample() {
       <button type="button" onClick={() => setOpen(false)}>
         Cancel
       </button>
-      {error ? (
-        <p className="new-project-error" role="alert">
-          {error}
-        </p>
-      ) : null}
+      <FormError error={error} className="new-project-error" />
     </form>
   );
 }

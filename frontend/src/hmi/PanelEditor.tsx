@@ -5,7 +5,7 @@
 // Every edit is one step of the panel's undo history (hmi/history.ts) and marks the project unsaved.
 import { useRef, useState, type PointerEvent as ReactPointerEvent } from "react";
 import type { Panel } from "../generated/api";
-import { canRedo, canUndo } from "../ld/history";
+import { canRedo, canUndo } from "../store/history";
 import {
   addWidget,
   alignWidgets,

@@ -3,7 +3,7 @@
 import { useEffect, useMemo, useState } from "react";
 import { useStore } from "zustand";
 import { onlineStore, useOnline } from "../online/store";
-import { useWorkspace } from "../project/store";
+import { useWorkspace } from "../store/project";
 import { ExerciseView } from "./ExerciseView";
 import { bindingsOf } from "./model";
 import { PanelEditor } from "./PanelEditor";

@@ -3,8 +3,8 @@
 import { useStore } from "zustand";
 import { createStore } from "zustand/vanilla";
 import type { Panel, Project } from "../generated/api";
-import { historyOf, record, redo, undo, type History } from "../ld/history";
-import { useWorkspace, workspaceStore } from "../project/store";
+import { historyOf, record, redo, undo, type History } from "../store/history";
+import { useWorkspace, workspaceStore } from "../store/project";
 
 const histories = createStore<Record<string, History<Panel>>>()(() => ({}));
 

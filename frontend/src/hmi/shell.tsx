@@ -5,7 +5,7 @@
 import { useState, type FormEvent } from "react";
 import { createStore } from "zustand/vanilla";
 import type { Panel } from "../generated/api";
-import { useWorkspace, workspaceStore } from "../project/store";
+import { useWorkspace, workspaceStore } from "../store/project";
 import { panelChange, withPanel } from "./history";
 import { newPanel } from "./model";
 

@@ -5,7 +5,7 @@
 import { IEC } from "../generated/iec";
 import type { Project } from "../generated/api";
 import { useOnline } from "../online/store";
-import { useWorkspace } from "../project/store";
+import { useWorkspace } from "../store/project";
 
 type LibraryName = NonNullable<Project["libraries"]>[number];
 const NONE: readonly LibraryName[] = [];

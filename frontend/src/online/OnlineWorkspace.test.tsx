@@ -1,27 +1,18 @@
 // The app with online mode, the bottom panels and the ST view, over a faked server and websocket.
 import { act, fireEvent, render, screen, waitFor, within } from "@testing-library/react";
 import { beforeEach, describe, expect, it, vi } from "vitest";
-import App from "../App";
-import type { Diagnostic, SymbolInfo } from "../generated/api";
+import App from "../app/App";
+import type { Diagnostic } from "../generated/api";
 import { motorMain } from "../ld/fixtures";
 import { emptyPanels, panelsStore } from "../panels/store";
-import { emptyWorkspace, workspaceStore } from "../project/store";
-import { appStore, initialData } from "../store";
+import { emptyWorkspace, plainSymbol, workspaceStore } from "../store/project";
+import { appStore, initialData } from "../store/workspace";
 import { offline, onlineStore } from "./store";
 import { stubFetch, type SentRequest } from "../test/fetchStub";
 
 const json = (body: unknown, status = 200) =>
   new Response(JSON.stringify(body), { status, headers: { "Content-Type": "application/json" } });
-const sym = (name: string, type = "BOOL"): SymbolInfo => ({
-  name,
-  type,
-  var_class: "VAR",
-  initial: null,
-  address: null,
-  comment: null,
-  retain: false,
-  constant: false,
-});
+const sym = (name: string, type = "BOOL") => plainSymbol(name, type);
 const project = {
   name: "plant",
   pous: [

@@ -3,9 +3,9 @@
 // Release all forces; the prepared values (force / write / clear); scan counter, virtual time and
 // the last scan time; the scan history's timeline (HistoryBar.tsx). Check checks the working copy and never saves;
 // Compile & simulate compiles the saved project, so with unsaved changes it asks: save and compile, compile the
-// saved version, or cancel. Keys (CODESYS's) come from the keymap and are handled by project/useAppKeys.ts.
+// saved version, or cancel. Keys (CODESYS's) come from the keymap and are handled by app/useAppKeys.ts.
 import { panelsStore, usePanels } from "../panels/store";
-import { workspaceStore } from "../project/store";
+import { workspaceStore } from "../store/project";
 import { onlineStore, useOnline } from "./store";
 import { formatClock } from "./values";
 import { useStore } from "zustand";

@@ -13,8 +13,12 @@ import { preparedText, shownOf, shownPath, type Prepared, type ValueShown } from
 export type PinSource =
   /** A variable: an FB instance's pin, or an operand. */
   | { path: string }
-  /** An engine probe (an element id); its type when known, or a path whose value has the same type. */
-  | { probe: string; type?: string; typeOf?: string }
+  /**
+   * An engine probe (an element id); its type when known, or a path whose value has the same type. `read`:
+   * the probe of the value a block read over a feedback wire (the previous scan's), shown instead of `probe`
+   * when the engine records it (FBD `<block>.<PIN>`, docs/diagrams.md "Feedback").
+   */
+  | { probe: string; read?: string; type?: string; typeOf?: string }
   /** A value that never changes (LD: the power of the left rail). */
   | { constant: boolean }
   /** Nothing to show: a literal or an expression is its own text. */
@@ -103,7 +107,8 @@ export function pinValues(
     if ("path" in source) value = shownPath(monitor, source.path, prepared);
     else if ("constant" in source) value = { ...shownOf(source.constant), forced: false, prepared: null };
     else {
-      const probe = monitor.power[powerKey(instance, source.probe)];
+      const read = source.read === undefined ? undefined : monitor.power[powerKey(instance, source.read)];
+      const probe = read !== undefined ? read : monitor.power[powerKey(instance, source.probe)];
       if (probe !== undefined && probe !== null)
         value = { ...shownOf(probe, probeType(pin, pins, monitor)), forced: false, prepared: preparedText(undefined) };
     }

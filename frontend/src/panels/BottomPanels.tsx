@@ -11,7 +11,7 @@ import { IoPanel } from "./IoPanel";
 import { LogPanel } from "./LogPanel";
 import { panelsStore, usePanels, type PanelId } from "./store";
 import { WatchPanel } from "./WatchPanel";
-import { ViewBoundary } from "../project/ViewBoundary";
+import { ViewBoundary } from "../ui/ViewBoundary";
 import { Splitter } from "../ui/Splitter";
 
 // The panels used now and then are loaded when first shown (issue 22 item 8: the initial chunk).

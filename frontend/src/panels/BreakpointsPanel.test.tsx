@@ -7,7 +7,7 @@ import { motorMain } from "../ld/fixtures";
 import type { ClientMessage } from "../online/protocol";
 import { emptyMonitor } from "../online/monitor";
 import { offline, onlineStore } from "../online/store";
-import { emptyWorkspace, workspaceStore } from "../project/store";
+import { emptyWorkspace, workspaceStore } from "../store/project";
 import { describePlace } from "../debug/place";
 import { BreakpointsPanel } from "./BreakpointsPanel";
 import { emptyPanels, panelsStore } from "./store";

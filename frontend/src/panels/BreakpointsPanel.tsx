@@ -8,7 +8,7 @@ import { debugStore, isEnabled, useDebug } from "../debug/store";
 import { describePlace } from "../debug/place";
 import type { At } from "../online/protocol";
 import { useOnline } from "../online/store";
-import { useWorkspace } from "../project/store";
+import { useWorkspace } from "../store/project";
 
 /** Whether the scan halted at this breakpoint. */
 function hitBy(bp: Breakpoint, at: At | null): boolean {

@@ -1,7 +1,7 @@
 // The watch list: variables by path (typed, dragged from a diagram, or added from a box or the
 // Variables view) with their live values. Programs, FB instances, structures and arrays expand into
 // their members (ON-10); every row writes, forces, releases and prepares values in place. The list and
-// what is expanded are kept per project (project/session.ts).
+// what is expanded are kept per project (app/session.ts).
 import { useState, type FormEvent } from "react";
 import { pathKey } from "../online/monitor";
 import { onlineStore, useOnline } from "../online/store";

@@ -4,7 +4,7 @@
 import { useEffect, useState } from "react";
 import { getVariables } from "../api/client";
 import type { VariableChildren } from "../generated/api";
-import { useWorkspace } from "../project/store";
+import { useWorkspace } from "../store/project";
 import { pathKey } from "../online/monitor";
 import { onlineStore } from "../online/store";
 

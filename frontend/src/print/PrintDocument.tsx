@@ -9,7 +9,7 @@ import type { Pou } from "../generated/api";
 import { downloadText } from "../interchange/download";
 import type { FbdBody } from "../fbd/model";
 import type { LdBody } from "../ld/model";
-import { tokenize } from "../stview/highlight";
+import { highlightLines, Tokens } from "../stview/highlight";
 import { placeOf, XREF_COLUMNS } from "../xref/model";
 import { FbdPrint } from "./FbdPrint";
 import { LdPrint } from "./LdPrint";
@@ -216,14 +216,10 @@ function DeclarationTable({ symbols }: { symbols: readonly SymbolInfo[] }) {
 function StBody({ text }: { text: string }) {
   return (
     <pre className="print-st">
-      {text.split("\n").map((line, i) => (
+      {highlightLines(text).map((tokens, i) => (
         <div key={i} className="print-st-line">
           <span className="print-st-number">{i + 1}</span>
-          {tokenize(line).map((t, j) => (
-            <span key={j} className={`st-${t.kind}`}>
-              {t.text}
-            </span>
-          ))}
+          <Tokens tokens={tokens} />
         </div>
       ))}
     </pre>

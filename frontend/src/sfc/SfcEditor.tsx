@@ -21,7 +21,7 @@ import { MenuList, type MenuItem } from "../ld/editor/ContextMenu";
 import { clipboardActions, type LastClip } from "../ld/editor/systemClipboard";
 import type { LdOnlineActions } from "../ld/editor/LdEditor";
 import { OperandValuePrompt, type ValueRequest } from "../ld/editor/ValuePrompt";
-import { canRedo, canUndo, record, redo, undo, type History } from "../ld/history";
+import { canRedo, canUndo, record, redo, undo, type History } from "../store/history";
 import { onlineOperandItems } from "../online/operandCommands";
 import { dispatchKey, keysOf, type CommandOf } from "../keys/keymap";
 import { ShortcutHelp } from "../keys/ShortcutHelp";

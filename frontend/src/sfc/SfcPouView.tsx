@@ -10,12 +10,12 @@ import { debugStore, useDebug } from "../debug/store";
 import { FbdEditor } from "../fbd/editor/FbdEditor";
 import { keysOf } from "../keys/keymap";
 import { LdEditor } from "../ld/editor/LdEditor";
-import { historyOf, record, type History } from "../ld/history";
+import { historyOf, record, type History } from "../store/history";
 import { operandCommands } from "../online/operandCommands";
 import { onlineStore, useOnline } from "../online/store";
 import { onlineReadOnly, useLdOnline, useShownInstance } from "../online/useLdOnline";
 import { useFbdOnline } from "../fbd/useFbdOnline";
-import { useWorkspace } from "../project/store";
+import { useWorkspace } from "../store/project";
 import { StEditor } from "../st/StEditor";
 import { useStAssist } from "../st/useStAssist";
 import type { SfcBody } from "./model";
@@ -335,6 +335,7 @@ function FbdPart(
       online={live.online}
       onlineActions={live.actions}
       onVisibleChange={live.onVisibleChange}
+      onFeedbackChange={live.onFeedbackChange}
       debug={{
         networks: props.breakpoints,
         elements: new Set(),

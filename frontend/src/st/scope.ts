@@ -2,7 +2,7 @@
 // working copy when they read as a table (so a variable declared a moment ago completes and shows
 // online before a save), else the saved symbol table; the globals; the library, with the working
 // copy's function blocks in their current form; the STRUCT types.
-import { parseDeclarations } from "../declarations/model";
+import { parseDeclarations } from "../iec/declarations";
 import type { LibraryEntry, SymbolInfo, SymbolTable } from "../generated/api";
 import type { Pou } from "../generated/api";
 import { structTypes, type Scope } from "./members";

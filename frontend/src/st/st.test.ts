@@ -4,11 +4,12 @@ import { CompletionContext } from "@codemirror/autocomplete";
 import { EditorState } from "@codemirror/state";
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
-import type { Diagnostic, LibraryEntry, SymbolInfo } from "../generated/api";
+import type { Diagnostic, LibraryEntry } from "../generated/api";
 import { callTemplate, stCompletionSource, stCompletions } from "./completion";
 import { stParser, type StState } from "./language";
 import { lintDiagnostics } from "./lint";
 import { linesIn } from "./breakpoints";
+import { plainSymbol } from "../store/project";
 
 /** [text, style] tokens of each line, carrying the parser state across lines as CodeMirror does. */
 function tokens(text: string): [string, string | null][][] {
@@ -52,16 +53,7 @@ const LIMIT: LibraryEntry = {
   outputs: [],
   return_type: "ANY_ELEMENTARY",
 };
-const symbol = (name: string, type: string): SymbolInfo => ({
-  name,
-  type,
-  var_class: "VAR",
-  initial: null,
-  address: null,
-  comment: null,
-  retain: false,
-  constant: false,
-});
+const symbol = plainSymbol;
 
 describe("ST highlighting (issue 9: keywords, types, literals, comments, pragmas)", () => {
   it("classifies each kind of token", () => {

@@ -4,7 +4,7 @@
 import { useMemo } from "react";
 import type { Diagnostic } from "../generated/api";
 import type { Pou } from "../generated/api";
-import { useWorkspace } from "../project/store";
+import { useWorkspace } from "../store/project";
 import { memberCompletions, stCompletions, type StCompletions } from "./completion";
 import type { Scope } from "./members";
 import { stScope, workingLibrary } from "./scope";

@@ -6,7 +6,7 @@ import { ApiError, exportSt } from "../api/client";
 import type { Diagnostic, StExport } from "../generated/api";
 import { downloadText } from "../interchange/download";
 import { placeOf } from "../panels/DiagnosticsPanel";
-import { tokenize } from "./highlight";
+import { highlightLines, Tokens } from "./highlight";
 
 export interface StViewProps {
   project: string;
@@ -72,6 +72,7 @@ export function StView({ project, pou, unsaved, onRevealNetwork, load = exportSt
   const result = current && "result" in current ? current.result : null;
   const error = current && "error" in current ? current.error : null;
   const blocks = useMemo(() => (result ? blocksOf(result.text, result.source_map) : []), [result]);
+  const tokens = useMemo(() => (result ? highlightLines(result.text) : []), [result]);
 
   return (
     <div className="st-view" aria-label={`${pou} as ST`}>
@@ -112,11 +113,7 @@ export function StView({ project, pou, unsaved, onRevealNetwork, load = exportSt
                 <div key={i} className="st-line">
                   <span className="st-line-number">{block.start + i}</span>
                   <code>
-                    {tokenize(line).map((t, j) => (
-                      <span key={j} className={`st-${t.kind}`}>
-                        {t.text}
-                      </span>
-                    ))}
+                    <Tokens tokens={tokens[block.start - 1 + i] ?? [{ text: line, className: "" }]} />
                   </code>
                 </div>
               ))}

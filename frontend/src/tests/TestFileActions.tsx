@@ -1,8 +1,8 @@
 // The project tree's menu of a test file: rename and delete, each one undoable step of the working copy
 // (workspace store's applyOperation), saved with the project (the old tests/<name>.st goes on save).
 import { useState, type FormEvent } from "react";
-import { Dialog, DialogFooter, TreeActions } from "../project/PouActions";
-import { testNameProblem, testPath, workspaceStore } from "../project/store";
+import { Dialog, DialogFooter, TreeActions } from "../tree/PouActions";
+import { testNameProblem, testPath, workspaceStore } from "../store/project";
 
 function RenameTestDialog({ name, onClose }: { name: string; onClose(): void }) {
   const [text, setText] = useState(name);

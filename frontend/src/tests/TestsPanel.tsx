@@ -6,7 +6,7 @@ import { useEffect } from "react";
 import type { Diagnostic, TestFailureInfo, TestResultInfo } from "../generated/api";
 import type { Project } from "../generated/api";
 import { panelsStore } from "../panels/store";
-import { useWorkspace, workspaceStore } from "../project/store";
+import { useWorkspace, workspaceStore } from "../store/project";
 import { CHECK_DELAY_MS } from "../st/useLiveCheck";
 import { resultKey, testsStore, useTests } from "./store";
 

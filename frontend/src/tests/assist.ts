@@ -11,7 +11,7 @@ import { structTypes } from "../st/members";
 import { tokenize } from "../st/language";
 import { declaredSymbols, workingLibrary } from "../st/scope";
 import { CHECK_DELAY_MS } from "../st/useLiveCheck";
-import { useWorkspace } from "../project/store";
+import { useWorkspace } from "../store/project";
 import { testsApi, type TestsApi } from "./api";
 import { IEC } from "../generated/iec";
 

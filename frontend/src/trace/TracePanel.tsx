@@ -6,7 +6,7 @@ import { projectApi } from "../api/client";
 import { downloadText } from "../interchange/download";
 import { pathKey } from "../online/monitor";
 import { useOnline } from "../online/store";
-import { useWorkspace } from "../project/store";
+import { useWorkspace } from "../store/project";
 import { traceCandidates } from "./candidates";
 import { formatSample, traceCsv, type Kind } from "./csv";
 import type { SampleRing } from "./ring";

@@ -4,7 +4,7 @@
 // it on one variable.
 import { useEffect, useState } from "react";
 import type { Diagnostic, XrefEntry } from "../generated/api";
-import { useWorkspace } from "../project/store";
+import { useWorkspace } from "../store/project";
 import { entryKey, filterEntries, placeOf, placeToReveal, XREF_COLUMNS } from "./model";
 import { useXref, xrefStore } from "./store";
 import "./xref.css";

@@ -4,7 +4,7 @@ import { useStore } from "zustand";
 import { createStore, type StoreApi } from "zustand/vanilla";
 import type { XrefEntry, XrefList } from "../generated/api";
 import { panelsStore } from "../panels/store";
-import { workspaceStore } from "../project/store";
+import { workspaceStore } from "../store/project";
 import { getXref } from "./api";
 import { entryKey, entryOf, rootOf } from "./model";
 

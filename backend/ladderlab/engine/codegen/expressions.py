@@ -16,6 +16,7 @@ from functools import cache, lru_cache
 from ...iec import values
 from ...ir import nodes as ir
 from ...ir import types as t
+from ...ir.lower_types import byte_size
 from ...ir.types import describe
 from ..stdlib import specialised
 from . import names
@@ -140,6 +141,10 @@ class Expressions:
         if b.op in _SHORT_CIRCUIT:
             return self.short_circuit(b)
         left, right = self.expr(b.left), self.expr(b.right)
+        if isinstance(b.type, t.Reference):  # p + n, p - n: bytes along the array p points into (runtime.pointer_add)
+            offset = right if b.op == "ADD" else f"-({right})"
+            what = f"the pointer {var_text(b.left)}" if isinstance(b.left, ir.Var) else "the pointer"
+            return f"ll_ptr_add({left}, {offset}, {byte_size(b.type.target)}, {what!r})"
         if isinstance(b.left.type, t.Reference):  # EQ / NE: one variable referred to (runtime.Ref), or both NULL
             return f"({left} {'==' if b.op == 'EQ' else '!='} {right})"
         types = (self.scalar(b.left.type, b.op), self.scalar(b.right.type, b.op))

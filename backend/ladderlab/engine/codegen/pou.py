@@ -90,6 +90,10 @@ def emit_instance_class(module: ModuleContext, pou: ir.Pou, decls: Source, code:
         decls.line()
         _emit_init(module, pou, scope, decls)
     decls.line()
+    if module.probes and pou.name.upper() in module.program.base_bodies:  # (statements.py, SUPER^())
+        table = module.probe_table(pou.name)
+        decls.line(f"{cls}.ll_super_probes = [ll_unset] * {len(table.elements)}, [-1] * {table.group_count}")
+        decls.line()
 
 
 def _emit_init(module: ModuleContext, pou: ir.Pou, scope: Scope, src: Source) -> None:
@@ -117,7 +121,19 @@ def emit_reference_inits(module: ModuleContext, layout, holder, src: Source) -> 
         else:
             target = module.globals.get(initial.name)
             owner = global_owner(target.page)
-        src.line(f"{holder(place.page)}.{place.attr} = ll_Ref({owner}, {target.attr!r}, {initial.text!r})")
+        container, key = owner, repr(target.attr)
+        if initial.index:  # an array element: the list of its last dimension and its offset there
+            container = f"{owner}.{target.attr}" + "".join(f"[{o}]" for o in _offsets(target.slot, initial)[:-1])
+            key = str(_offsets(target.slot, initial)[-1])
+        src.line(f"{holder(place.page)}.{place.attr} = ll_Ref({container}, {key}, {initial.text!r})")
+
+
+def _offsets(array: ir.Slot, initial: ir.ReferenceInit) -> list[int]:
+    """The list offsets of ``initial``'s element in the array slot (CodegenError: outside its bounds)."""
+    dims = array.type.dims if isinstance(array.type, t.Array) else ()
+    if len(dims) != len(initial.index) or any(not lo <= i <= hi for i, (lo, hi) in zip(initial.index, dims)):
+        raise CodegenError(f"{initial.text}: the index is outside the array {array.name}")
+    return [i - lo for i, (lo, _) in zip(initial.index, dims)]
 
 
 def emit_located_inits(module: ModuleContext, slots: list[ir.Slot], src: Source) -> None:
@@ -133,15 +149,10 @@ def emit_inits(
 ) -> None:
     """The body of an ``ll_init(warm)``: RETAIN slots only when cold, user FB instances in place when warm. The
     instances named in ``kept`` (upper case, None until made) are made once and then initialised in place, so
-    references to them stay valid across restarts (program instances: a test's links to them)."""
+    references to them stay valid across restarts (program instances: a test's links to them). They come last: a
+    program's reference to an element of a global array (``p : PTR_TO INT := ADR(arr[0])``) needs the array."""
     before = len(src.lines)
-    for place in [p for p in places if p.slot.name.upper() in kept]:
-        src.line(f"if {target(place)} is None:")
-        with src.indent():
-            src.line(f"{target(place)} = {_init_value(module, place.slot, owner)}")
-        src.line("elif not warm:" if place.slot.retain else "else:")
-        with src.indent():
-            src.line(f"{target(place)}.ll_init({'False' if place.slot.retain else 'warm'})")
+    instances = [p for p in places if p.slot.name.upper() in kept]
     places = [p for p in places if p.slot.name.upper() not in kept]
     retained = [p for p in places if p.slot.retain]
     if retained:
@@ -165,6 +176,13 @@ def emit_inits(
             value = _init_value(module, place.slot, owner)
             src.line(f"{target(place)} = {value}" if value is not None else "pass")
     _plain_inits(module, fresh, target, owner, src)
+    for place in instances:
+        src.line(f"if {target(place)} is None:")
+        with src.indent():
+            src.line(f"{target(place)} = {_init_value(module, place.slot, owner)}")
+        src.line("elif not warm:" if place.slot.retain else "else:")
+        with src.indent():
+            src.line(f"{target(place)}.ll_init({'False' if place.slot.retain else 'warm'})")
     if len(src.lines) == before:
         src.line("pass")
 

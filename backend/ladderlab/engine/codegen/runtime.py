@@ -20,7 +20,15 @@ import math
 from collections.abc import Callable
 from typing import Any
 
-from ..errors import WATCHDOG, PlcRuntimeError, check_index, check_subrange, for_step_zero, null_dereference
+from ..errors import (
+    WATCHDOG,
+    PlcRuntimeError,
+    check_index,
+    check_subrange,
+    for_step_zero,
+    null_dereference,
+    pointer_outside,
+)
 from ..process_image import ProcessImage
 from ..stdlib import INLINE_NAMES, STANDARD_FBS
 from . import names
@@ -182,6 +190,56 @@ def reference_text(value: object) -> str:
     return "NULL" if value is None else str(value.text if isinstance(value, Ref) else value)
 
 
+class ElementRef(Ref):
+    """A pointer moved by arithmetic (``p + SIZEOF(x)``) along the array (a list) its element belongs to: it may
+    point one past the last element (a loop's end), but reading or writing there is a fault, never a Python error."""
+
+    __slots__ = ("moved", "origin")
+
+    def __init__(self, container: list, key: int, origin: str, moved: int) -> None:
+        sign = "+" if moved >= 0 else "-"
+        super().__init__(container, key, f"{origin} {sign} {abs(moved)}")
+        self.origin, self.moved = origin, moved  # the REF()/ADR() it started from and the bytes it moved since
+
+    @property
+    def v(self) -> object:
+        return self.c[self._checked()]  # type: ignore[index]  # a list
+
+    @v.setter
+    def v(self, value: object) -> None:
+        self.c[self._checked()] = value  # type: ignore[index]  # a list
+
+    @property
+    def pair(self) -> tuple[object, object]:
+        return self.c, self._checked()
+
+    def _checked(self) -> int:
+        length = len(self.c)  # type: ignore[arg-type]  # a list
+        if not 0 <= self.k < length:  # type: ignore[operator]  # an int key
+            raise pointer_outside(f"the pointer {self.text}", self.k, length)  # type: ignore[arg-type]
+        return self.k  # type: ignore[return-value]
+
+
+def pointer_add(ref: Ref | None, offset: int, size: int, what: str) -> Ref:
+    """``p + offset`` (bytes, CODESYS): ``offset / size`` elements further along the array p points into; a NULL
+    ``p``, an offset that is no whole number of elements, or a result outside the array (one past its end is
+    allowed) is a fault. A pointer to a variable that is no array element moves nowhere: only ``p + 0``."""
+    if ref is None:
+        raise null_dereference(what)
+    if offset == 0:
+        return ref
+    steps, rest = divmod(offset, size)
+    in_array = isinstance(ref.c, list) and isinstance(ref.k, int)
+    length = len(ref.c) if in_array else 1  # type: ignore[arg-type]  # a list
+    position = (ref.k if in_array else 0) + steps  # type: ignore[operator]  # an int key
+    if rest or not in_array or not 0 <= position <= length:
+        whole = f"{offset} bytes (not a whole number of elements)" if rest else f"{offset} bytes"
+        raise pointer_outside(f"{what} moved by {whole}", position, length, size)
+    if isinstance(ref, ElementRef):
+        return ElementRef(ref.c, position, ref.origin, ref.moved + offset)
+    return ElementRef(ref.c, position, ref.text, offset)
+
+
 def deref(ref: Ref | None, what: str) -> Ref:
     """``ref`` itself, to be read or written through; a NULL ``ref`` is a fault naming ``what``."""
     if ref is None:
@@ -289,6 +347,7 @@ def namespace() -> dict[str, object]:
         ll_ref=dummy_reference,
         ll_Ref=Ref,
         ll_deref=deref,
+        ll_ptr_add=pointer_add,
         ll_inf=math.inf,
         ll_nan=math.nan,
         ll_Addressable=Addressable,

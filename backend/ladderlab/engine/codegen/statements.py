@@ -550,7 +550,9 @@ class Statements:
                 self._fb_input(fb, ty, user, pin, value)
             call = f"{fb}.execute({self.now})"
             inline = None if user is not None or self.module.debug else inline_body(ty.fb, fb, self.now)
-            if inline is not None:  # the body of the standard FB's execute, for its own class (inline_fbs.py)
+            if s.body is not None:
+                self._base_body(fb, s.body)
+            elif inline is not None:  # the body of the standard FB's execute, for its own class (inline_fbs.py)
                 self.src.line(f"if {fb}.__class__ is {names.std_fb(ty.fb.upper())}:")
                 with self.src.indent():
                     for line in inline:
@@ -568,6 +570,24 @@ class Statements:
                 self.src.line(f"{self.x.var(s.eno)} = True")
 
         self._guarded(s.en, s.eno, emit)
+
+    def _base_body(self, fb: str, base: str) -> None:
+        """``SUPER^()``: the base's body on the instance ``fb``; its probes go to the base class's
+        ``ll_super_probes`` meanwhile, not into the instance's own (numbered for its own body)."""
+        run = f"ll_x_{names.escape(base)}({fb}, {self.now})"
+        run = f"yield from {run}" if self.module.debug else run
+        if not self.module.probes:
+            self.src.line(run)
+            return
+        saved = self.scope.temp("own_probes")
+        self.src.line(f"{saved} = {fb}.ll_pr, {fb}.ll_px")
+        self.src.line(f"{fb}.ll_pr, {fb}.ll_px = {names.pou_class(base)}.ll_super_probes")
+        self.src.line("try:")
+        with self.src.indent():
+            self.src.line(run)
+        self.src.line("finally:")
+        with self.src.indent():
+            self.src.line(f"{fb}.ll_pr, {fb}.ll_px = {saved}")
 
     def _fb_input(self, fb: str, ty: t.FbInstance, user: ir.Pou | None, pin: str, value: ir.Expr) -> None:
         owner, attr = self.x.member_parts(fb, ty, pin)

@@ -45,7 +45,16 @@ from .exporter import diagram_writer
 from .fbd_import import FbdImporter, fbd_groups, place_comments
 from .graph import read_graph, resolve_continuations
 from .ld_import import LdImporter, ld_groups
-from .methods import INHERITANCE_DATA, METHOD_DATA, read_extends, read_methods, read_properties
+from .methods import (
+    INHERITANCE_DATA,
+    METHOD_DATA,
+    PLAINTEXT_DATA,
+    PROPERTY_DATA,
+    read_extends,
+    read_implements,
+    read_methods,
+    read_properties,
+)
 from .sfc_import import SfcImporter
 from .vars import KIND_BY_LIST, VarReader, parse_type_text, write_data_type, write_type, write_var_list
 from .xml_io import (
@@ -71,6 +80,8 @@ _UNDERSTOOD = {
     (BACHMANN, "negated"),
     (METHOD_DATA, "Method"),
     (INHERITANCE_DATA, "Inheritance"),
+    (PROPERTY_DATA, "Property"),
+    (PLAINTEXT_DATA, "InterfaceAsPlainText"),
 }
 
 
@@ -223,9 +234,10 @@ class _Importer:
             return_type=return_type,
             declarations=declarations,
             methods=read_methods(node, ours, r, lambda holder: _method_interface(r, reader, holder)),
-            properties=read_properties(ours),
+            properties=read_properties(node, ours, r, lambda holder: _method_interface(r, reader, holder)),
             extends=oo.get("extends") or read_extends(interface, r),
-            implements=[i.strip() for i in oo.get("implements", "").split(",") if i.strip()],
+            implements=[i.strip() for i in oo.get("implements", "").split(",") if i.strip()]
+            or read_implements(node, r),
             abstract=oo.get("abstract") == "true",
             final=oo.get("final") == "true",
         )

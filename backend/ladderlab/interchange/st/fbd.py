@@ -7,7 +7,8 @@ computed at the producer (a function's result, a negated output, an edge, an
 input node whose variable an output node of the same network writes). Pin flags
 put ``NOT`` or an R_TRIG/F_TRIG in front of an input; output nodes write like LD
 coils, under ``IF`` when fed by a block with EN; a feedback wire reads what the
-previous scan left (the FB's output, or the variable a function's result goes to).
+previous scan left (the FB's output, the variable a function's result goes to, or else a feedback variable
+declared for it, ``ADD_OUT_prev``, assigned after the function's call).
 """
 
 from __future__ import annotations
@@ -54,6 +55,7 @@ class _Network:
             name for node in graph.nodes.values() if isinstance(node, fbd.OutputNode) for name in root_names(node.var)
         }
         self.consumed = {(s.node, s.pin) for sources in graph.inputs.values() for s in sources.values()}
+        self.loops: dict[tuple[str, str], str] = {}  # (producer, PIN) -> its feedback variable (lower_fbd.loops)
         graph.visit(self)
 
     # ------------------------------------------------------------ wires
@@ -67,8 +69,8 @@ class _Network:
         return self.values[(source.node, source.pin)]
 
     def feedback(self, source) -> PinValue:
-        """GR-06: the previous scan's value - the FB's output pin, or the variable the function's result is
-        written to (the lowering accepts a function's feedback only through such an output node)."""
+        """GR-06: the previous scan's value - the FB's output pin, the variable the function's result is written
+        to, or a feedback variable that ``block`` assigns after the call."""
         producer = self.graph.nodes[source.node]
         callee = callee_of(self.scope.checked, producer.call)
         if callee.is_fb and source.pin in callee.output_names():
@@ -84,7 +86,12 @@ class _Network:
                 and (fed.node, fed.pin) == (source.node, source.pin)
             ):
                 return Text(operand(target.var))
-        raise ValueError(f"feedback from {source.node}.{source.pin} without a variable")  # refused by the lowering
+        name = self.loops.get((source.node, source.pin))
+        if name is None:  # the lowering's hidden feedback variable, declared: it keeps the previous scan's result
+            type_text = "BOOL" if source.pin == "ENO" else self.result_type(producer, callee)
+            hint = f"{owner(callee, None)}_{source.pin}_prev"
+            name = self.loops[(source.node, source.pin)] = self.scope.declarations.declare(hint, type_text, "VAR")
+        return Text(ast.Name(name))
 
     def as_value(self, value: PinValue, element: str, hint: str) -> Value:
         """``value`` as read at this position (the planner moves it to its users when nothing in between
@@ -191,6 +198,9 @@ class _Network:
             if flag is not None and flag.negated:
                 value = code.value(ast.Unary("NOT", self.read(value)), node.id, f"{name}_not_{pin}")
             self.values[(node.id, pin)] = value
+            loop = self.loops.get((node.id, pin))
+            if loop is not None:
+                code.step([ast.Assign(ast.Name(loop), self.read(value))], node.id, frozenset({loop.upper()}))
 
     def result_type(self, node: fbd.Block, callee) -> str:
         """A function block's result type: a user function's declared type, else what the lowering typed."""

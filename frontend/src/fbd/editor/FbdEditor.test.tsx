@@ -3,7 +3,7 @@
 import { act, fireEvent, render, screen, waitFor, within } from "@testing-library/react";
 import { useState } from "react";
 import { beforeAll, describe, expect, it, vi } from "vitest";
-import { historyOf, type History } from "../../ld/history";
+import { historyOf, type History } from "../../store/history";
 import { arithmetic, bodyOf, LIBRARY, SYMBOLS } from "../fixtures";
 import { nodesOf, type Block, type FbdBody, type FbdNetwork } from "../model";
 import { FbdEditor, type FbdEditorProps } from "./FbdEditor";

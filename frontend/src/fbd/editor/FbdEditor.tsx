@@ -34,7 +34,7 @@ import { clipboardActions, type LastClip } from "../../ld/editor/systemClipboard
 import { OperandValuePrompt, type ValueRequest } from "../../ld/editor/ValuePrompt";
 import { onlineOperandItems } from "../../online/operandCommands";
 import { referencesItem } from "../../xref/store";
-import { canRedo, canUndo, record, redo, undo, type History } from "../../ld/history";
+import { canRedo, canUndo, record, redo, undo, type History } from "../../store/history";
 
 import { clipOf, parseClip, pasteClip, serializeClip } from "../clipboard";
 import { outputType, refusal } from "../compat";
@@ -101,6 +101,8 @@ export interface FbdEditorProps {
   focus?: { network?: string | null; element?: string | null; seq: number } | null;
   /** Told which networks are near the viewport, so online mode subscribes only to those. */
   onVisibleChange?(networks: readonly string[]): void;
+  /** Told the input pins fed over feedback wires (order.ts feedbackPins), whose online values are what they read. */
+  onFeedbackChange?(pins: ReadonlySet<string>): void;
   /** POST /api/fbd/order (replaced in tests); on a chart, its execution order (?chart=true). */
   orderOf?(network: FbdNetwork): Promise<FbdOrder>;
   /** A CFC POU: the body's one network is a free chart whose order list is the execution order (CFC-01/02). */
@@ -164,6 +166,7 @@ export function FbdEditor({
   orderOf = chart ? fetchChartOrder : fetchOrder,
   dataFlowOf = fetchOrder,
   onVisibleChange,
+  onFeedbackChange,
 }: FbdEditorProps) {
   const body = history.present;
   const root = useRef<HTMLDivElement>(null);
@@ -196,6 +199,14 @@ export function FbdEditor({
   }, [near, onVisibleChange]);
   const orders = useEvaluationOrder(body, orderOf, near);
   const networks = networksOf(body);
+  useEffect(() => {
+    const pins = new Set<string>();
+    for (const network of networksOf(body)) {
+      const order = orders.get(network.id);
+      if (order) for (const pin of feedbackPins(network, order)) pins.add(pin);
+    }
+    onFeedbackChange?.(pins);
+  }, [body, orders, onFeedbackChange]);
   const locked = readOnly !== null;
 
   // Nodes without a stored position (imported, hand-written) are drawn where auto-arrange would put them.
@@ -509,21 +520,6 @@ export function FbdEditor({
     const order = chart && network ? orders.get(network.id) : undefined;
     return network && order ? orderNumbers(network, order) : null;
   }, [chart, networks, orders]);
-  // Online on a chart: an input fed against the order read the previous scan's value; show none rather
-  // than the producer's value of this scan.
-  const shownOnline = useMemo(() => {
-    const network = networks[0];
-    if (!online || !chartNumbers || !network) return online;
-    const hidden = feedbackPins(network, chartNumbers);
-    if (hidden.size === 0) return online;
-    const pins = Object.fromEntries(
-      Object.entries(online.pins).map(([id, values]) => [
-        id,
-        Object.fromEntries(Object.entries(values).filter(([key]) => !hidden.has(`${id}/${key}`))),
-      ]),
-    );
-    return { ...online, pins };
-  }, [online, chartNumbers, networks]);
   const view = useCallback(
     (network: FbdNetwork, node: FbdNode): NodeView => {
       const order = chartNumbers ? (chartNumbers.get(node.id) ?? -1) - 1 : orders.get(network.id)?.indexOf(node.id);
@@ -566,7 +562,7 @@ export function FbdEditor({
   const api: FbdEditorApi = {
     readOnly: locked,
     symbols,
-    online: shownOnline,
+    online,
     editing,
     view,
     startEdit: (id) => !locked && setEditing(id),

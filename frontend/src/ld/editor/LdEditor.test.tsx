@@ -1,22 +1,13 @@
 import { act, fireEvent, render, screen, within } from "@testing-library/react";
 import { useState } from "react";
 import { describe, expect, it, vi } from "vitest";
-import type { SymbolInfo } from "../../generated/api";
 import { bodyOf, c, LIBRARY, motorMain, net, q } from "../fixtures";
-import { historyOf, type History } from "../history";
+import { historyOf, type History } from "../../store/history";
 import { locate, networksOf, type LdBody, type LdElement } from "../model";
 import { LdEditor, type LdEditorProps } from "./LdEditor";
+import { plainSymbol } from "../../store/project";
 
-const sym = (name: string, type = "BOOL"): SymbolInfo => ({
-  name,
-  type,
-  var_class: "VAR",
-  initial: null,
-  address: null,
-  comment: null,
-  retain: false,
-  constant: false,
-});
+const sym = (name: string, type = "BOOL") => plainSymbol(name, type);
 const SYMBOLS = [sym("Start"), sym("Stop"), sym("Motor"), sym("MotorRunning"), sym("Level", "INT")];
 
 /** Renders the editor with its history in state, like a tab of the app; `current()` is the live body. */

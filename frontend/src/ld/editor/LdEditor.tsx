@@ -7,15 +7,15 @@ import {
   useCallback,
   useEffect,
   useMemo,
+  useReducer,
   useRef,
-  useState,
   type KeyboardEvent,
   type MouseEvent,
   type ReactNode,
 } from "react";
 import type { Diagnostic, LibraryEntry, SymbolInfo } from "../../generated/api";
-import { parseClip, serializeClip, type Clip } from "../clipboard";
-import { canRedo, canUndo, record, redo, undo, type History } from "../history";
+import { parseClip, serializeClip } from "../clipboard";
+import { canRedo, canUndo, record, redo, undo, type History } from "../../store/history";
 import { layoutBody } from "../layout";
 import { locate, networksOf, walk, type LdBody, type Place } from "../model";
 import * as ops from "../ops";
@@ -41,6 +41,20 @@ import { setDraggedOperand } from "./dragOperand";
 import { EditorNotices } from "./EditorNotices";
 import { clipboardActions, type LastClip } from "./systemClipboard";
 import { OperandValuePrompt, type ValueRequest } from "./ValuePrompt";
+import {
+  clipOf,
+  fieldLabel,
+  INITIAL_STATE,
+  ldEditorReducer,
+  liveSelection as liveSelectionOf,
+  mainField,
+  operandText,
+  pastePlace,
+  valueOperand,
+  variableOf,
+  type Editing,
+  type ZoomStep,
+} from "./editorState";
 import { onlineOperandItems } from "../../online/operandCommands";
 import { referencesItem } from "../../xref/store";
 import { commandsFor, keysOf } from "../../keys/keymap";
@@ -96,10 +110,6 @@ export interface LdOnlineActions {
   watch(operand: string): void;
 }
 
-type Editing =
-  | { kind: "operand"; id: string; field: OperandField; x: number; y: number }
-  | { kind: "network"; id: string; field: "label" | "comment"; x: number; y: number };
-
 const TOOLBAR: { group: CommandGroup; ids: string[] }[] = [
   { group: "insert", ids: ["contact", "contact-nc", "coil", "compare", "box", "parallel", "jump", "return"] },
   { group: "edit", ids: ["cycle-mode", "toggle-en", "delete"] },
@@ -116,18 +126,8 @@ export const LD_EDITOR_KEYS = ["move-selection", "extend-selection", "clear-sele
 type LdEditorKey = (typeof LD_EDITOR_KEYS)[number];
 const CLIPBOARD_COMMANDS: ReadonlySet<string> = new Set(["copy", "cut", "paste"]);
 
-/** Zoom steps of the diagram: 50 % to 200 %. */
-const ZOOM_MIN = 0.5;
-const ZOOM_MAX = 2;
-const zoomIn = (z: number) => Math.min(ZOOM_MAX, Math.round((z + 0.1) * 10) / 10);
-const zoomOut = (z: number) => Math.max(ZOOM_MIN, Math.round((z - 0.1) * 10) / 10);
 /** Ctrl + these keys zoom (as in browsers and CODESYS). */
-const ZOOM_KEYS: Record<string, number | ((z: number) => number)> = {
-  "+": zoomIn,
-  "=": zoomIn,
-  "-": zoomOut,
-  "0": 1,
-};
+const ZOOM_KEYS: Record<string, ZoomStep> = { "+": "in", "=": "in", "-": "out", "0": "reset" };
 
 const NO_LIBRARY: readonly LibraryEntry[] = [];
 const NO_SYMBOLS: readonly SymbolInfo[] = [];
@@ -135,99 +135,6 @@ const ARROWS: Record<string, Direction> = { ArrowLeft: "left", ArrowRight: "righ
 
 /** The last clip copied in this tab, for toolbar paste when the browser keeps the clipboard closed. */
 const lastClip: LastClip = { text: null };
-
-/** The operand Enter edits: the variable, a compare's left side, a box's instance or first free input, a jump's target. */
-function mainField(
-  body: LdBody,
-  id: string,
-  library: (call: string) => LibraryEntry | undefined,
-): OperandField | undefined {
-  const e = locate(body, id)?.element;
-  switch (e?.type) {
-    case "contact":
-    case "coil":
-      return { kind: "var" };
-    case "compare":
-      return { kind: "left" };
-    case "jump":
-      return { kind: "target" };
-    case "box": {
-      const entry = library(e.call);
-      if (!entry || entry.kind === "function_block") return { kind: "instance" };
-      const pin = entry.inputs.find((p) => p.type.toUpperCase() !== "BOOL") ?? entry.inputs[0];
-      return pin ? { kind: "input", pin: pin.name } : undefined;
-    }
-    default:
-      return undefined;
-  }
-}
-
-function operandText(body: LdBody, id: string, field: OperandField): string {
-  const e = locate(body, id)?.element;
-  if (!e) return "";
-  if (field.kind === "var" && (e.type === "contact" || e.type === "coil")) return e.var;
-  if (field.kind === "left" && e.type === "compare") return e.left;
-  if (field.kind === "right" && e.type === "compare") return e.right;
-  if (field.kind === "target" && e.type === "jump") return e.target;
-  if (e.type === "box") {
-    if (field.kind === "instance") return e.instance ?? "";
-    if (field.kind === "input") {
-      const value = e.inputs?.[field.pin];
-      return typeof value === "string" ? value : "";
-    }
-    if (field.kind === "output") return e.outputs?.[field.pin] ?? "";
-  }
-  return "";
-}
-
-/** The variable an element is about, for online commands and dragging to the watch list. */
-function variableOf(body: LdBody, id: string): string | null {
-  const e = locate(body, id)?.element;
-  const text =
-    e?.type === "contact" || e?.type === "coil"
-      ? e.var
-      : e?.type === "compare"
-        ? e.left
-        : e?.type === "box"
-          ? (e.instance ?? "")
-          : "";
-  return text.trim() || null;
-}
-
-/**
- * The variable a double-click online prepares a value for, with its type when the diagram knows it:
- * a contact's or coil's (a BOOL), a compare's left side, or at a box pin's value (`pin`: its key,
- * `in:PT`) the FB instance's pin or the pin's variable (the pin's declared type).
- */
-export function valueOperand(
-  body: LdBody,
-  id: string,
-  pin: string | null,
-  library: (call: string) => LibraryEntry | undefined,
-): { operand: string; type?: string } | null {
-  const e = locate(body, id)?.element;
-  if (e?.type !== "box" || !pin) {
-    const operand = variableOf(body, id);
-    return operand ? { operand, type: e?.type === "contact" || e?.type === "coil" ? "BOOL" : undefined } : null;
-  }
-  const [side, name] = pin.split(":") as ["in" | "out", string];
-  const entry = library(e.call);
-  const declared = entry
-    ? [...entry.inputs, ...entry.in_outs, ...entry.outputs].find((p) => p.name.toUpperCase() === name)
-    : undefined;
-  if (entry?.kind === "function_block" && e.instance?.trim() && declared)
-    return { operand: `${e.instance.trim()}.${name}`, type: declared.type };
-  const pins = side === "in" ? (e.inputs ?? {}) : (e.outputs ?? {});
-  const operand = Object.entries(pins).find(([n]) => n.toUpperCase() === name)?.[1];
-  return typeof operand === "string" && operand.trim() ? { operand: operand.trim(), type: declared?.type } : null;
-}
-
-const fieldLabel = (field: OperandField) =>
-  field.kind === "input" || field.kind === "output"
-    ? `Pin ${field.pin}`
-    : { var: "Variable", left: "Left operand", right: "Right operand", instance: "Instance", target: "Jump target" }[
-        field.kind
-      ];
 
 export function LdEditor({
   history,
@@ -247,22 +154,16 @@ export function LdEditor({
 }: LdEditorProps) {
   const body = history.present;
   const root = useRef<HTMLDivElement>(null);
-  const [selection, setSelection] = useState<Selection | null>(null);
-  const [anchor, setAnchor] = useState<string | null>(null);
-  const [editing, setEditing] = useState<Editing | null>(null);
-  const [picker, setPicker] = useState(false);
-  const [menu, setMenu] = useState<{ x: number; y: number } | null>(null);
-  const [message, setMessage] = useState<string | null>(null);
-  const [offer, setOffer] = useState<VariableDeclaration | null>(null);
-  const [dropping, setDropping] = useState(false);
-  const [help, setHelp] = useState(false);
-  const [zoom, setZoom] = useState(1);
+  const [state, dispatch] = useReducer(ldEditorReducer, INITIAL_STATE);
+  const { anchor, editing, picker, menu, message, offer, dropping, help, zoom, pendingEdit, valuePrompt, asIl } = state;
   const drag = useRef<{ ids: string[]; x: number; y: number } | null>(null);
-  /** An element whose operand editor opens once the edit that created it has been laid out. */
-  const [pendingEdit, setPendingEdit] = useState<string | null>(null);
-  const [valuePrompt, setValuePrompt] = useState<ValueRequest | null>(null);
-  /** The network shown as IL ("View as IL"), or null. */
-  const [asIl, setAsIl] = useState<string | null>(null);
+  const setMessage = (text: string | null) => dispatch({ type: "message", text });
+  const setEditing = (next: Editing | null) => dispatch({ type: "edit", editing: next });
+  const setPicker = (open: boolean) => dispatch({ type: "picker", open });
+  const setMenu = (at: { x: number; y: number } | null) => dispatch({ type: "menu", at });
+  const setOffer = (next: VariableDeclaration | null) => dispatch({ type: "offer", offer: next });
+  const setZoom = (step: ZoomStep) => dispatch({ type: "zoom", step });
+  const setValuePrompt = (request: ValueRequest | null) => dispatch({ type: "valuePrompt", request });
 
   const byName = useMemo(() => new Map(library.map((e) => [e.name.toUpperCase(), e])), [library]);
   const lookup = useCallback((call: string) => byName.get(call.toUpperCase()), [byName]);
@@ -270,64 +171,25 @@ export function LdEditor({
   const layout = useMemo(() => layoutBody(body, { library: lookup, values }), [body, lookup, values]);
   const known = useMemo(() => symbolNames(symbols), [symbols]);
 
-  // A selection naming elements an undo removed is dropped rather than left dangling.
-  const liveSelection = useMemo((): Selection | null => {
-    if (!selection) return null;
-    if (selection.kind === "elements") {
-      const ids = selection.ids.filter((id) => locate(body, id));
-      return ids.length ? { kind: "elements", ids } : null;
-    }
-    if (selection.kind === "network") return networksOf(body).some((n) => n.id === selection.id) ? selection : null;
-    return selection;
-  }, [body, selection]);
-
-  const select = useCallback((next: Selection | null, newAnchor?: string | null) => {
-    setSelection(next);
-    setAnchor(newAnchor !== undefined ? newAnchor : next?.kind === "elements" ? next.ids[0]! : null);
-  }, []);
-  /**
-   * The network to scroll into view: where the keyboard, an edit or a focus request moved the
-   * selection. A click does not scroll (the diagram would move under the pointer between the two
-   * clicks of a double-click).
-   */
-  const [reveal, setReveal] = useState<string | null>(null);
-  const selectAndReveal = useCallback(
-    (next: Selection | null, of: LdBody, newAnchor?: string | null) => {
-      select(next, newAnchor);
-      setReveal(selectedNetwork({ body: of, selection: next }) ?? null);
-    },
-    [select],
-  );
+  const liveSelection = useMemo(() => liveSelectionOf(body, state.selection), [body, state.selection]);
+  const select = (selection: Selection | null, newAnchor?: string | null) =>
+    dispatch({ type: "select", selection, anchor: newAnchor });
+  const selectAndReveal = (selection: Selection | null, of: LdBody, newAnchor?: string | null) =>
+    dispatch({ type: "reveal", selection, body: of, anchor: newAnchor });
 
   // Only a new focus request moves the selection (while rendering, as it arrives), not later edits of the body.
   const focusSeq = focus?.seq ?? null;
-  const [focusSeen, setFocusSeen] = useState<number | null>(null);
-  if (focus && focusSeq !== focusSeen) {
-    setFocusSeen(focusSeq);
-    if (focus.element && locate(body, focus.element)) selectAndReveal({ kind: "elements", ids: [focus.element] }, body);
-    else if (focus.network && networksOf(body).some((n) => n.id === focus.network))
-      selectAndReveal({ kind: "network", id: focus.network }, body);
-  }
+  if (focus && focusSeq !== state.focusSeen) dispatch({ type: "focus", focus, body });
   useEffect(() => {
     if (focusSeq !== null) root.current?.focus();
   }, [focusSeq]);
 
   const apply = useCallback(
     (result: EditResult, then?: "edit") => {
-      if (!result.ok) {
-        setMessage(result.error);
-        return;
-      }
-      setMessage(null);
-      setPendingEdit(then === "edit" ? (result.select[0] ?? null) : null);
-      onHistoryChange(record(history, result.body));
-      const networkIds = new Set(networksOf(result.body).map((n) => n.id));
-      const [first] = result.select;
-      if (first === undefined) select(null);
-      else if (networkIds.has(first)) selectAndReveal({ kind: "network", id: first }, result.body);
-      else selectAndReveal({ kind: "elements", ids: result.select }, result.body);
+      if (result.ok) onHistoryChange(record(history, result.body));
+      dispatch({ type: "edited", result, then });
     },
-    [history, onHistoryChange, select, selectAndReveal],
+    [history, onHistoryChange],
   );
 
   /** Opens the operand editor over `field` of element `id`. */
@@ -343,14 +205,14 @@ export function LdEditor({
         );
         if (pin) ({ x, y } = { x: field.kind === "input" ? pin.x - 150 : pin.x + 4, y: n.top + pin.y - 22 });
       } else if (field.kind === "right") y = n.top + placed.y + 36;
-      setEditing({ kind: "operand", id, field, x: Math.max(0, x), y });
+      dispatch({ type: "edit", editing: { kind: "operand", id, field, x: Math.max(0, x), y } });
     },
     [layout],
   );
 
   // The new element is laid out in this render: its operand editor opens now.
   if (pendingEdit && locate(body, pendingEdit)) {
-    setPendingEdit(null);
+    dispatch({ type: "pendingEditDone" });
     const field = mainField(body, pendingEdit, lookup);
     if (field) editField(pendingEdit, field);
   }
@@ -373,18 +235,6 @@ export function LdEditor({
     setEditing({ kind: "network", id, field, x: n.leftRailX, y: n.top + (field === "label" ? 0 : 18) });
   };
 
-  const clipOfSelection = (): Clip | null => {
-    if (liveSelection?.kind === "network") {
-      const network = networksOf(body).find((n) => n.id === liveSelection.id);
-      return network ? { kind: "networks", networks: [network] } : null;
-    }
-    if (liveSelection?.kind === "elements") {
-      const elements = liveSelection.ids.map((id) => locate(body, id)?.element).filter((e) => e !== undefined);
-      return elements.length ? { kind: "elements", elements } : null;
-    }
-    return null;
-  };
-
   const pasteText = (text: string | null) => {
     const clip = text ? parseClip(text) : null;
     if (!clip) {
@@ -397,13 +247,7 @@ export function LdEditor({
       apply(ops.pasteNetworks(body, index < 0 ? networks.length : index + 1, clip.networks));
       return;
     }
-    let place: Place | undefined;
-    if (liveSelection?.kind === "place") place = liveSelection.place;
-    else if (liveSelection?.kind === "elements") {
-      const at = locate(body, liveSelection.ids[liveSelection.ids.length - 1]!);
-      if (at) place = { series: at.series, index: at.index + 1 };
-    } else if (liveSelection?.kind === "network")
-      place = { series: { kind: "network", network: liveSelection.id }, index: 0 };
+    const place = pastePlace(body, liveSelection);
     if (!place) {
       setMessage("Select where to paste: an element, a wire or a network.");
       return;
@@ -412,7 +256,7 @@ export function LdEditor({
   };
 
   const take = (cut: boolean): string | null => {
-    const clip = clipOfSelection();
+    const clip = clipOf(body, liveSelection);
     if (!clip) return null;
     if (cut && !readOnly) {
       apply(
@@ -475,11 +319,12 @@ export function LdEditor({
   useEffect(() => {
     const move = (e: globalThis.MouseEvent) => {
       const d = drag.current;
-      if (d && !dropping && Math.hypot(e.clientX - d.x, e.clientY - d.y) > 5) setDropping(true);
+      if (d && !dropping && Math.hypot(e.clientX - d.x, e.clientY - d.y) > 5)
+        dispatch({ type: "dropping", dropping: true });
     };
     const up = () => {
       drag.current = null;
-      setDropping(false);
+      dispatch({ type: "dropping", dropping: false });
     };
     window.addEventListener("mousemove", move);
     window.addEventListener("mouseup", up);
@@ -517,7 +362,7 @@ export function LdEditor({
       const d = drag.current;
       if (!d || !dropping) return;
       drag.current = null;
-      setDropping(false);
+      dispatch({ type: "dropping", dropping: false });
       apply(ops.moveElements(body, d.ids, place));
     },
     onOperand: (id, field, event) => {
@@ -596,7 +441,7 @@ export function LdEditor({
     const onWheel = (event: WheelEvent) => {
       if (!event.ctrlKey || event.deltaY === 0) return;
       event.preventDefault();
-      setZoom(event.deltaY < 0 ? zoomIn : zoomOut);
+      dispatch({ type: "zoom", step: event.deltaY < 0 ? "in" : "out" });
     };
     editor.addEventListener("wheel", onWheel, { passive: false });
     return () => editor.removeEventListener("wheel", onWheel);
@@ -638,7 +483,9 @@ export function LdEditor({
           ]
         : [];
     const network = selectedNetwork({ body, selection: liveSelection });
-    const il: MenuItem[] = network ? [{ id: "view-il", label: "View as IL", run: () => setAsIl(network) }] : [];
+    const il: MenuItem[] = network
+      ? [{ id: "view-il", label: "View as IL", run: () => dispatch({ type: "asIl", network }) }]
+      : [];
     const selected = liveSelection?.kind === "elements" ? variableOf(body, liveSelection.ids[0]!) : null;
     const references = selected ? [referencesItem(selected)] : [];
     // The declare dialog again (after Escape): the selected element's undeclared operand.
@@ -735,21 +582,21 @@ export function LdEditor({
           </div>
         ))}
         <div className="ld-toolbar-group" role="group" aria-label="Zoom">
-          <ToolButton icon={ZoomOut} label="Zoom out" keys="Ctrl+- or Ctrl+wheel" onClick={() => setZoom(zoomOut)} />
-          <button type="button" title="Actual size (Ctrl+0)" aria-label="Zoom" onClick={() => setZoom(1)}>
+          <ToolButton icon={ZoomOut} label="Zoom out" keys="Ctrl+- or Ctrl+wheel" onClick={() => setZoom("out")} />
+          <button type="button" title="Actual size (Ctrl+0)" aria-label="Zoom" onClick={() => setZoom("reset")}>
             {Math.round(zoom * 100)}%
           </button>
-          <ToolButton icon={ZoomIn} label="Zoom in" keys="Ctrl++ or Ctrl+wheel" onClick={() => setZoom(zoomIn)} />
+          <ToolButton icon={ZoomIn} label="Zoom in" keys="Ctrl++ or Ctrl+wheel" onClick={() => setZoom("in")} />
         </div>
         <ToolButton
           icon={Keyboard}
           label="Shortcuts"
           className="ld-help-button"
           aria-expanded={help}
-          onClick={() => setHelp((h) => !h)}
+          onClick={() => dispatch({ type: "help", open: "toggle" })}
         />
       </div>
-      {help ? <ShortcutHelp scopes={["ld", "app"]} onClose={() => setHelp(false)} /> : null}
+      {help ? <ShortcutHelp scopes={["ld", "app"]} onClose={() => dispatch({ type: "help", open: false })} /> : null}
       <EditorNotices
         readOnly={readOnly}
         readOnlyActions={readOnlyActions}
@@ -772,7 +619,7 @@ export function LdEditor({
         online={online}
         dropping={dropping}
         handlers={handlers}
-        reveal={reveal}
+        reveal={state.reveal}
         overlay={editorOverlay}
         onVisibleChange={onVisibleChange}
         debug={debugging?.marks}
@@ -797,7 +644,7 @@ export function LdEditor({
           network={networksOf(body).find((n) => n.id === asIl)!}
           number={networksOf(body).findIndex((n) => n.id === asIl) + 1}
           onClose={() => {
-            setAsIl(null);
+            dispatch({ type: "asIl", network: null });
             root.current?.focus();
           }}
         />

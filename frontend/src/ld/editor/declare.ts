@@ -1,13 +1,12 @@
 // The "declare variable" offer: is an operand an undeclared plain name, and which type to propose
 // (BOOL for contacts and coils, the pin's type for box pins, the block for an instance).
-import type { NewVariable } from "../../declarations/newVariable";
 import type { LibraryEntry, SymbolInfo } from "../../generated/api";
 import { locate, type LdBody } from "../model";
 import type { OperandField } from "../ops";
 import { RESULT_PIN } from "../pins";
 
-/** The offer an editor makes (name and proposed type); the declare dialog completes it. */
-export type VariableDeclaration = NewVariable;
+import type { VariableDeclaration } from "../../store/declarations";
+export type { VariableDeclaration };
 
 const IDENTIFIER = /^[A-Za-z_][A-Za-z0-9_]*$/;
 const BOOL_LITERALS = new Set(["TRUE", "FALSE"]);

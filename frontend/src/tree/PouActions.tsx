@@ -1,0 +1,409 @@
+// The project tree's menu of a POU: rename (everywhere, with a preview), duplicate, change the kind of an
+// empty POU, delete (listing what refers to it). Each is one undoable step of the working copy
+// (workspace store's applyOperation); nothing is saved until the user saves.
+import { useEffect, useState, type FormEvent, type ReactNode } from "react";
+import type { Reference } from "../generated/api";
+import type { Pou } from "../generated/api";
+import { cfcToFbd, fbdToCfc } from "../fbd/convert";
+import { networksOf, nodesOf, type FbdBody, type FbdNetwork } from "../fbd/model";
+import { fetchChartOrder, fetchOrder } from "../fbd/useOrder";
+import { onlineStore } from "../online/store";
+import { debugStore } from "../debug/store";
+import { renamedPou } from "../debug/follow";
+import {
+  changedParts,
+  copyName,
+  describeReference,
+  duplicated,
+  isEmptyPou,
+  referencesTo,
+  renamedPath,
+  renameEverywhere,
+} from "./refactor";
+import { emptyDeclarations, workspaceStore } from "../store/project";
+import { FormError } from "../ui/FormError";
+
+type Action = "rename" | "duplicate" | "kind" | "convert" | "delete";
+
+/** What each kind of POU is, for the New POU form and the kind dialog. */
+export const KIND_HELP: Record<Pou["kind"], { label: string; help: string }> = {
+  program: { label: "program", help: "Runs in a task every cycle; its variables keep their values (like MAIN)." },
+  function_block: {
+    label: "function block",
+    help: "A block with memory (like TON): declare instances of it in programs and call them.",
+  },
+  function: { label: "function", help: "Computes a result from its inputs (like ADD); no memory between calls." },
+  plant: {
+    label: "plant",
+    help: "A model of the machine (lab bench): runs before the control program in every scan, reads its outputs, writes its inputs.",
+  },
+};
+
+const message = (err: unknown) => (err instanceof Error ? err.message : String(err));
+
+/** A modal dialog of the project tree's menus (Escape closes it). */
+export function Dialog({ title, children, onClose }: { title: string; children: ReactNode; onClose(): void }) {
+  return (
+    <div className="ld-dialog-backdrop" onKeyDown={(e) => e.key === "Escape" && onClose()}>
+      <div className="ld-dialog project-dialog" role="dialog" aria-label={title}>
+        <h2>{title}</h2>
+        {children}
+      </div>
+    </div>
+  );
+}
+
+function ReferenceList({ references, empty }: { references: Reference[]; empty: string }) {
+  if (!references.length) return <p className="tree-empty">{empty}</p>;
+  return (
+    <ul className="reference-list" aria-label="References">
+      {references.map((r, i) => (
+        <li key={i}>
+          <span className="reference-where">{describeReference(r)}</span> <code>{r.text}</code>
+        </li>
+      ))}
+    </ul>
+  );
+}
+
+/**
+ * Rename a project-level name (a POU, a user type, a global variable) everywhere: the new name, a preview
+ * of every change the server's refactoring makes, then one undoable step. A POU's open tab follows it.
+ */
+export function RenameDialog({ current, isPou, onClose }: { current: string; isPou: boolean; onClose(): void }) {
+  const [name, setName] = useState(current);
+  const [preview, setPreview] = useState<{ name: string; changes: Reference[] } | null>(null);
+  const [error, setError] = useState<string | null>(null);
+  const [result, setResult] = useState<Awaited<ReturnType<typeof renameEverywhere>> | null>(null);
+  const submit = async (e: FormEvent) => {
+    e.preventDefault();
+    const project = workspaceStore.getState().project;
+    if (!project) return;
+    if (preview && result && preview.name === name.trim()) {
+      const renamed: Record<string, string> = isPou ? { [current]: preview.name } : {};
+      const changedPous = new Set(preview.changes.map((c) => c.pou).filter((p): p is string => !!p));
+      // The POU's breakpoints take its new name before the project changes (else they would be dropped as gone).
+      if (isPou)
+        debugStore.getState().follow(
+          (bp) => renamedPou(bp, current, preview.name),
+          () => "",
+        );
+      workspaceStore
+        .getState()
+        .applyOperation(
+          `rename ${current} to ${preview.name}`,
+          result.project,
+          [
+            ...(isPou ? [preview.name] : []),
+            ...[...changedPous].map((p) => renamed[p] ?? p),
+            ...changedParts(preview.changes),
+          ],
+          { renamed },
+        );
+      const online = onlineStore.getState();
+      online.restoreWatch(
+        online.watch.map((p) => renamedPath(p, current, preview.name)),
+        online.watchExpanded.map((p) => renamedPath(p, current, preview.name)),
+      );
+      onClose();
+      return;
+    }
+    try {
+      const answer = await renameEverywhere(project, current, name.trim());
+      setResult(answer);
+      setPreview({ name: name.trim(), changes: answer.changes });
+      setError(null);
+    } catch (err) {
+      setError(message(err));
+      setPreview(null);
+    }
+  };
+  const ready = preview !== null && preview.name === name.trim();
+  return (
+    <Dialog title={`Rename ${current}`} onClose={onClose}>
+      <form onSubmit={(e) => void submit(e)}>
+        <input
+          aria-label="New name"
+          autoFocus
+          value={name}
+          onChange={(e) => setName(e.target.value)}
+          spellCheck={false}
+        />
+        {ready ? (
+          <>
+            <p>
+              {preview.changes.length} place{preview.changes.length === 1 ? "" : "s"} will change:
+            </p>
+            <ReferenceList references={preview.changes} empty="Nothing else uses this name." />
+          </>
+        ) : null}
+        <DialogFooter error={error} submit={ready ? "Rename" : "Preview"} onClose={onClose} />
+      </form>
+    </Dialog>
+  );
+}
+
+/** Delete: what still refers to the POU (those places will no longer compile), then one step. */
+function DeleteDialog({ pou, onClose }: { pou: Pou; onClose(): void }) {
+  const [references, setReferences] = useState<Reference[] | null>(null);
+  const [error, setError] = useState<string | null>(null);
+  useEffect(() => {
+    const project = workspaceStore.getState().project;
+    if (project) referencesTo(project, pou.name).then(setReferences, (err) => setError(message(err)));
+  }, [pou.name]);
+  const remove = () => {
+    const ws = workspaceStore.getState();
+    if (!ws.project) return;
+    const pous = (ws.project.pous ?? []).filter((p) => p.name !== pou.name);
+    ws.applyOperation(`delete ${pou.name}`, { ...ws.project, pous }, [pou.name], { closed: [pou.name] });
+    onClose();
+  };
+  return (
+    <Dialog title={`Delete ${pou.name}`} onClose={onClose}>
+      {references === null && !error ? <p>Looking for uses of {pou.name}…</p> : null}
+      {references?.length ? <p>These places use {pou.name} and will no longer compile:</p> : null}
+      {references ? <ReferenceList references={references} empty={`Nothing refers to ${pou.name}.`} /> : null}
+      <FormError error={error} />
+      <div className="dialog-buttons">
+        <button type="button" onClick={remove} disabled={references === null && !error} autoFocus>
+          Delete {pou.name}
+        </button>
+        <button type="button" onClick={onClose}>
+          Cancel
+        </button>
+      </div>
+    </Dialog>
+  );
+}
+
+function DuplicateDialog({ pou, onClose }: { pou: Pou; onClose(): void }) {
+  const [name, setName] = useState(() => copyName(workspaceStore.getState().project ?? { name: "" }, pou.name));
+  const [error, setError] = useState<string | null>(null);
+  const submit = async (e: FormEvent) => {
+    e.preventDefault();
+    const ws = workspaceStore.getState();
+    if (!ws.project) return;
+    try {
+      const next = await duplicated(ws.project, pou.name, name.trim());
+      ws.applyOperation(`duplicate ${pou.name}`, next, [name.trim()]);
+      ws.openPou(name.trim());
+      onClose();
+    } catch (err) {
+      setError(message(err));
+    }
+  };
+  return (
+    <Dialog title={`Duplicate ${pou.name}`} onClose={onClose}>
+      <form onSubmit={(e) => void submit(e)}>
+        <input aria-label="Name of the copy" autoFocus value={name} onChange={(e) => setName(e.target.value)} />
+        <DialogFooter error={error} submit="Duplicate" onClose={onClose} />
+      </form>
+    </Dialog>
+  );
+}
+
+function KindDialog({ pou, onClose }: { pou: Pou; onClose(): void }) {
+  const [kind, setKind] = useState<Pou["kind"]>(pou.kind);
+  const change = (e: FormEvent) => {
+    e.preventDefault();
+    const ws = workspaceStore.getState();
+    if (!ws.project) return;
+    const { return_type: _unused, ...rest } = pou;
+    const next: Pou = {
+      ...rest,
+      kind,
+      declarations: emptyDeclarations(kind),
+      ...(kind === "function" ? { return_type: pou.return_type ?? "BOOL" } : {}),
+    };
+    const pous = (ws.project.pous ?? []).map((p) => (p.name === pou.name ? next : p));
+    ws.applyOperation(`make ${pou.name} a ${KIND_HELP[kind].label}`, { ...ws.project, pous }, [pou.name]);
+    onClose();
+  };
+  return (
+    <Dialog title={`Kind of ${pou.name}`} onClose={onClose}>
+      <form onSubmit={change}>
+        <KindPicker kind={kind} onChange={setKind} />
+        <div className="dialog-buttons">
+          <button type="submit">Change kind</button>
+          <button type="button" onClick={onClose}>
+            Cancel
+          </button>
+        </div>
+      </form>
+    </Dialog>
+  );
+}
+
+/** A stacked network's height on the chart: below its lowest node (positions are layout hints, px). */
+const heightOf = (network: FbdNetwork) => Math.max(0, ...nodesOf(network).map((n) => n.pos?.y ?? 0)) + 120;
+
+/** FBD <-> CFC (fbd/convert.ts), with the execution orders the backend reports for the body. */
+async function converted(pou: Pou) {
+  const body = pou.body as FbdBody;
+  if (pou.language === "fbd") {
+    const pairs = await Promise.all(
+      networksOf(body).map(async (n): Promise<[string, readonly string[]]> => [n.id, (await fetchOrder(n)).order]),
+    );
+    return fbdToCfc(body, new Map(pairs), heightOf);
+  }
+  const chart = networksOf(body)[0] ?? { id: "chart" };
+  const [numbers, flow] = await Promise.all([fetchChartOrder(chart), fetchOrder(chart)]);
+  return cfcToFbd(body, numbers.order, flow.order);
+}
+
+function ConvertDialog({ pou, onClose }: { pou: Pou; onClose(): void }) {
+  const target = pou.language === "fbd" ? "CFC" : "FBD";
+  const [error, setError] = useState<string | null>(null);
+  const submit = async (e: FormEvent) => {
+    e.preventDefault();
+    try {
+      const result = await converted(pou);
+      if (!result.ok) return setError(result.error);
+      const ws = workspaceStore.getState();
+      if (!ws.project) return;
+      const next: Pou = { ...pou, language: pou.language === "fbd" ? "cfc" : "fbd", body: result.body };
+      const pous = (ws.project.pous ?? []).map((p) => (p.name === pou.name ? next : p));
+      ws.applyOperation(`convert ${pou.name} to ${target}`, { ...ws.project, pous }, [pou.name]);
+      onClose();
+    } catch (err) {
+      setError(message(err));
+    }
+  };
+  return (
+    <Dialog title={`Convert ${pou.name} to ${target}`} onClose={onClose}>
+      <form onSubmit={(e) => void submit(e)}>
+        <p className="kind-help">
+          {target === "CFC"
+            ? "The networks go onto one chart, top to bottom; each element's number is the place FBD ran it in, so the chart computes the same."
+            : "The chart becomes one network. This works only when its numbers are the data-flow order (FBD cannot run an element before the block feeding it)."}
+        </p>
+        <DialogFooter error={error} submit={`Convert to ${target}`} onClose={onClose} />
+      </form>
+    </Dialog>
+  );
+}
+
+/** The kind select with a sentence saying what the chosen kind is. */
+export function KindPicker({ kind, onChange }: { kind: Pou["kind"]; onChange(kind: Pou["kind"]): void }) {
+  return (
+    <>
+      <select aria-label="POU kind" value={kind} onChange={(e) => onChange(e.target.value as Pou["kind"])}>
+        {Object.entries(KIND_HELP).map(([value, { label }]) => (
+          <option key={value} value={value}>
+            {label}
+          </option>
+        ))}
+      </select>
+      <p className="kind-help">{KIND_HELP[kind].help}</p>
+    </>
+  );
+}
+
+/** One entry of a tree item's menu: the action it opens, its label, and why it is disabled (if it is). */
+export interface MenuEntry<A extends string> {
+  action: A;
+  label: string;
+  disabledBecause?: string;
+}
+
+/** The "⋯" button of an item of the project tree (a POU, a test file) and its menu; a chosen entry opens the
+ * dialog `dialog` returns for it, which calls `close` when done. */
+export function TreeActions<A extends string>({
+  item,
+  entries,
+  dialog,
+}: {
+  item: string;
+  entries: readonly MenuEntry<A>[];
+  dialog(action: A, close: () => void): ReactNode;
+}) {
+  const [menu, setMenu] = useState(false);
+  const [action, setAction] = useState<A | null>(null);
+  const close = () => setAction(null);
+  return (
+    <span className="tree-actions">
+      <button
+        type="button"
+        className="tree-actions-button"
+        aria-label={`Actions for ${item}`}
+        aria-haspopup="menu"
+        aria-expanded={menu}
+        onClick={() => setMenu((m) => !m)}
+      >
+        ⋯
+      </button>
+      {menu ? (
+        <div className="tree-menu" role="menu" aria-label={`${item} actions`}>
+          {entries.map((entry) => (
+            <button
+              key={entry.action}
+              type="button"
+              role="menuitem"
+              disabled={entry.disabledBecause !== undefined}
+              title={entry.disabledBecause}
+              onClick={() => {
+                setMenu(false);
+                setAction(entry.action);
+              }}
+            >
+              {entry.label}
+            </button>
+          ))}
+        </div>
+      ) : null}
+      {action !== null ? dialog(action, close) : null}
+    </span>
+  );
+}
+
+/** The end of a dialog's form: the error of the last attempt (if any), the submit button and Cancel. */
+export function DialogFooter({ error, submit, onClose }: { error: string | null; submit: string; onClose(): void }) {
+  return (
+    <>
+      <FormError error={error} />
+      <div className="dialog-buttons">
+        <button type="submit">{submit}</button>
+        <button type="button" onClick={onClose}>
+          Cancel
+        </button>
+      </div>
+    </>
+  );
+}
+
+/** The "⋯" button of a POU in the tree and its menu. */
+export function PouActions({ pou }: { pou: Pou }) {
+  const empty = isEmptyPou(pou);
+  const entries: MenuEntry<Action>[] = [
+    { action: "rename", label: "Rename…" },
+    { action: "duplicate", label: "Duplicate…" },
+    {
+      action: "kind",
+      label: "Change kind…",
+      disabledBecause: empty ? undefined : "Only an empty POU (no variables, no body) can change its kind.",
+    },
+    ...(pou.language === "fbd" || pou.language === "cfc"
+      ? [{ action: "convert" as const, label: pou.language === "fbd" ? "Convert to CFC…" : "Convert to FBD…" }]
+      : []),
+    { action: "delete", label: "Delete…" },
+  ];
+  return (
+    <TreeActions
+      item={pou.name}
+      entries={entries}
+      dialog={(action, close) =>
+        action === "rename" ? (
+          <RenameDialog current={pou.name} isPou onClose={close} />
+        ) : action === "duplicate" ? (
+          <DuplicateDialog pou={pou} onClose={close} />
+        ) : action === "kind" ? (
+          <KindDialog pou={pou} onClose={close} />
+        ) : action === "convert" ? (
+          <ConvertDialog pou={pou} onClose={close} />
+        ) : (
+          <DeleteDialog pou={pou} onClose={close} />
+        )
+      }
+    />
+  );
+}

@@ -1,0 +1,66 @@
+import { describe, expect, it } from "vitest";
+import type { Pou } from "../generated/api";
+import { changedParts, copyName, describeReference, isEmptyPou, renamedPath } from "./refactor";
+
+const pou = (declarations: string, body: Pou["body"], language: Pou["language"] = "st"): Pou => ({
+  name: "P",
+  kind: "program",
+  language,
+  declarations,
+  body,
+});
+
+describe("project operations' pure facts", () => {
+  it("knows an empty POU: only empty VAR blocks and comments, no body or networks", () => {
+    expect(isEmptyPou(pou("VAR\nEND_VAR", ""))).toBe(true);
+    expect(isEmptyPou(pou("VAR_INPUT (* none yet *)\nEND_VAR", "  "))).toBe(true);
+    expect(isEmptyPou(pou("VAR\n  x : BOOL;\nEND_VAR", ""))).toBe(false);
+    expect(isEmptyPou(pou("VAR\nEND_VAR", "x := 1;"))).toBe(false);
+    expect(isEmptyPou(pou("", { networks: [] }, "ld"))).toBe(true);
+    expect(isEmptyPou(pou("", { networks: [{ id: "n1", elements: [] }] }, "ld"))).toBe(false);
+  });
+
+  it("renames the first part of a watch path only, in any case", () => {
+    expect(renamedPath("MAIN.b.Q", "Main", "Plant")).toBe("Plant.b.Q");
+    expect(renamedPath("Other.Main", "Main", "Plant")).toBe("Other.Main");
+    expect(renamedPath("MainX.a", "Main", "Plant")).toBe("MainX.a");
+  });
+
+  it("names the next free copy", () => {
+    const project = { name: "p", pous: [pou("", ""), { ...pou("", ""), name: "P_copy" }] };
+    expect(copyName(project, "P")).toBe("P_copy2");
+  });
+
+  it("says where a reference is in the tree's words", () => {
+    expect(
+      describeReference({ part: "network", pou: "Lad", network_number: 2, network_label: "Timer", text: "" }),
+    ).toBe('Lad, network 2 "Timer"');
+    expect(describeReference({ part: "declarations", pou: "Main", line: 3, text: "" })).toBe(
+      "Main, declarations line 3",
+    );
+    expect(describeReference({ part: "task", task: "Fast", text: "Main" })).toBe("task Fast");
+    // issue 25: a function block's EXTENDS / IMPLEMENTS and the texts of its methods and properties
+    expect(describeReference({ part: "extends", pou: "Square", text: "EXTENDS Base" })).toBe("Square");
+    expect(describeReference({ part: "body", pou: "Square", member: "Area", line: 4, text: "" })).toBe(
+      "Square.Area, body line 4",
+    );
+    expect(describeReference({ part: "return type", pou: "Square", member: "Form", text: "Shape" })).toBe(
+      "Square.Form, type",
+    );
+  });
+});
+
+describe("the parts a rename marks unsaved (issue 22 item 1)", () => {
+  it("names the globals, types, tasks and test files a rename changed, once each; POUs are named elsewhere", () => {
+    expect(
+      changedParts([
+        { part: "globals", line: 2, text: "Go : BOOL;" },
+        { part: "declarations", pou: "Main", line: 1, text: "x" },
+        { part: "task", task: "Fast", text: "Go" },
+        { part: "task", task: "Slow", text: "Go" },
+        { part: "types", line: 3, text: "T" },
+        { part: "test", file: "tests/t.st", line: 1, text: "Go" },
+      ]),
+    ).toEqual(["Global variables", "Tasks", "Types", "tests/t.st"]);
+  });
+});

@@ -1,0 +1,206 @@
+"""VAR_OUTPUT of a METHOD (issue 25, item 5; IEC 61131-3 ed. 3, 6.6.5 and CODESYS "Method" help): outputs are
+variables of the call, fresh (their declared initial value) in every call, and the call's ``=>`` targets get their
+values when the method returns - at its end or at a RETURN; an output left unconnected is simply lost. With EN
+FALSE the method does not run and no target is written. Expected values are worked out by hand from the texts.
+"""
+
+from __future__ import annotations
+
+from .oo_support import build, run
+
+DIVIDER = """
+FUNCTION_BLOCK Divider
+VAR calls : INT; END_VAR
+METHOD PUBLIC DivMod : BOOL
+VAR_INPUT a : INT; b : INT; END_VAR
+VAR_OUTPUT q : INT; r : INT := 7; exact : BOOL; code : BYTE; END_VAR
+calls := calls + 1;
+IF b = 0 THEN
+    DivMod := FALSE;
+    code := 16#E1;
+    RETURN;
+END_IF;
+q := a / b;
+r := a MOD b;
+exact := r = 0;
+DivMod := TRUE;
+END_METHOD
+END_FUNCTION_BLOCK
+"""
+
+
+def test_outputs_reach_their_targets_at_the_end_and_at_a_return_scan_by_scan():
+    sim = run(
+        DIVIDER
+        + """PROGRAM Main
+VAR d : Divider; ok : BOOL; q : INT := -1; r : INT := -1; r0 : INT; w : WORD; z : BOOL := TRUE; q0 : INT := 5;
+    a : INT := 17; END_VAR
+ok := d.DivMod(a := a, b := 5, q => q, r => r);
+d.DivMod(a := 1, b := 0, q => q0, r => r0, code => w.%B1, exact => z);
+a := a + 1;
+END_PROGRAM
+"""
+    )
+    for scan in range(1, 4):
+        sim.cycle(1)
+        a = 16 + scan
+        assert (sim.read("Main.ok"), sim.read("Main.q"), sim.read("Main.r")) == (True, a // 5, a % 5)
+        # b = 0: RETURN before q, r, exact are set; they still go out, with their initial values (0, 7, FALSE)
+        assert (sim.read("Main.q0"), sim.read("Main.r0"), sim.read("Main.z")) == (0, 7, False)
+        assert sim.read("Main.w") == 0xE100  # code 16#E1 into the high byte of w
+        assert sim.read("Main.d.calls") == 2 * scan
+
+
+def test_outputs_converted_negated_and_left_out():
+    """``q => wide`` widens INT to DINT, ``NOT exact => odd`` negates, an output with no ``=>`` is dropped; the
+    method's outputs start from their initial values in every call (r := 7), not from the last call's."""
+    sim = run(
+        DIVIDER
+        + """PROGRAM Main
+VAR d : Divider; wide : DINT; odd : BOOL; n : INT := 9; r : INT; END_VAR
+d.DivMod(a := n, b := 2, q => wide, NOT exact => odd);
+d.DivMod(a := 0, b := 0, r => r);
+n := n + 1;
+END_PROGRAM
+"""
+    )
+    for n in (9, 10, 11):
+        sim.cycle(1)
+        assert (sim.read("Main.wide"), sim.read("Main.odd"), sim.read("Main.r")) == (n // 2, n % 2 == 1, 7)
+
+
+def test_en_false_writes_no_output():
+    sim = run(
+        DIVIDER
+        + """PROGRAM Main
+VAR d : Divider; go : BOOL; q : INT := 99; wide : DINT := 99; done : BOOL; END_VAR
+d.DivMod(EN := go, a := 8, b := 3, q => q, ENO => done);
+d.DivMod(EN := go, a := 9, b := 3, q => wide);
+END_PROGRAM
+"""
+    )
+    sim.cycle(1)
+    assert (sim.read("Main.q"), sim.read("Main.wide"), sim.read("Main.done")) == (99, 99, False)
+    sim.write("Main.go", True)
+    sim.cycle(1)
+    assert (sim.read("Main.q"), sim.read("Main.wide"), sim.read("Main.done")) == (2, 3, True)
+
+
+SHAPES = """
+INTERFACE IShape
+METHOD Measure : BOOL
+VAR_INPUT scale : INT; END_VAR
+VAR_OUTPUT area : INT; name : STRING[10]; END_VAR
+END_METHOD
+END_INTERFACE
+FUNCTION_BLOCK Square IMPLEMENTS IShape
+VAR side : INT := 3; END_VAR
+METHOD Measure : BOOL
+VAR_INPUT scale : INT; END_VAR
+VAR_OUTPUT area : INT; name : STRING[10]; END_VAR
+area := side * side * scale;
+name := 'square';
+Measure := TRUE;
+END_METHOD
+METHOD Doubled : INT
+VAR a : INT; n : STRING[10]; END_VAR
+Measure(scale := 2, area => a, name => n);
+Doubled := a;
+END_METHOD
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK Rect EXTENDS Square
+VAR other : INT := 4; END_VAR
+METHOD Measure : BOOL
+VAR_INPUT scale : INT; END_VAR
+VAR_OUTPUT area : INT; name : STRING[10]; END_VAR
+area := side * other * scale;
+name := 'rectangle';
+END_METHOD
+END_FUNCTION_BLOCK
+"""
+
+
+def test_outputs_through_an_interface_an_override_and_a_bare_call_in_a_method():
+    """Dispatch picks the instance's own Measure; a shorter STRING target is cut to its length (STRING[4])."""
+    sim = run(
+        SHAPES
+        + """PROGRAM Main
+VAR s : Square; r : Rect; i : IShape; a1 : INT; n1 : STRING[4]; a2 : INT; n2 : STRING; d1 : INT; d2 : INT;
+    ok : BOOL := TRUE; n3 : STRING[4]; END_VAR
+i := s;
+i.Measure(scale := 1, area => a1, name => n1);
+i := r;
+i.Measure(scale := 1, area => a2, name => n2);
+d1 := s.Doubled();
+d2 := r.Doubled();
+ok := r.Measure(scale := 1, name => n3);
+END_PROGRAM
+"""
+    )
+    sim.cycle(1)
+    assert (sim.read("Main.a1"), sim.read("Main.n1")) == (9, "squa")
+    assert (sim.read("Main.a2"), sim.read("Main.n2")) == (12, "rectangle")
+    assert (sim.read("Main.d1"), sim.read("Main.d2")) == (18, 24)
+    assert (sim.read("Main.ok"), sim.read("Main.n3")) == (False, "rect")  # Rect.Measure leaves its result FALSE
+
+
+def test_an_output_that_needs_a_copy_inside_an_expression_is_a_located_error():
+    statement = "ok := r.Measure(scale := 1, name => n) AND TRUE;"
+    text = SHAPES + f"PROGRAM Main\nVAR r : Rect; ok : BOOL; n : STRING[4]; END_VAR\n{statement}\nEND_PROGRAM\n"
+    result = build(text)
+    assert [(d.code, d.file, d.line, d.column, d.message) for d in result.diagnostics if d.severity == "error"] == [
+        (
+            "IR-UNSUPPORTED",
+            "Main/body",
+            text.splitlines().index(statement) + 1,  # (the lines of the file the project was read from)
+            statement.index("name") + 1,
+            "the output name => n is converted after the call, which cannot happen inside an expression: call the "
+            "method as a statement, or assign its result directly (x := inst.M(...))",
+        )
+    ]
+
+
+def test_an_override_and_an_implementation_must_declare_the_same_outputs():
+    own = "VAR_OUTPUT area : INT; name : STRING[10]; END_VAR\narea := side * other"
+    text = SHAPES.replace(own, "VAR_OUTPUT area : INT; END_VAR\narea := side * other").replace(
+        "name := 'rectangle';\n", ""
+    )
+    expected = "its parameters differ (it takes VAR_INPUT scale, VAR_OUTPUT area, VAR_OUTPUT name)"
+    assert [(d.code, d.file, d.message) for d in build(text).diagnostics if d.severity == "error"] == [
+        ("ST-DECL", "Rect.Measure/declarations", f"Rect.Measure overrides Square.Measure but {expected}"),
+        ("ST-DECL", "Rect/declarations", f"Rect.Measure implements IShape.Measure but {expected}"),
+    ]
+
+
+def test_an_ld_box_writes_a_methods_outputs_to_the_variables_at_its_pins():
+    """In LD a method box ``d.DivMod`` (CODESYS) writes its outputs like ``q => x``: the same type directly, a wider
+    one converted; EN gates the call, so with the rung open nothing is written."""
+    from ladderlab.simulation.build import build_project
+    from ladderlab.st.project_text import source_to_project
+    from tests.ir.diagram_support import box, contact, ld_pou, rung
+
+    project, _ = source_to_project(DIVIDER, "ld")
+    divide = box("b1", "d.DivMod", en=True, a="n", b="4", outputs={"OUT": "ok", "Q": "q", "R": "wide"})
+    declarations = "VAR d : Divider; go : BOOL; n : INT := 14; ok : BOOL; q : INT := -1; wide : DINT := -1; END_VAR"
+    project.pous.append(ld_pou("Main", declarations, rung("n1", contact("k", "go"), divide)))
+    result = build_project(project)
+    assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
+    sim = result.simulation()
+    sim.cycle(1)
+    assert (sim.read("Main.ok"), sim.read("Main.q"), sim.read("Main.wide")) == (False, -1, -1)
+    sim.write("Main.go", True)
+    sim.cycle(1)
+    assert (sim.read("Main.ok"), sim.read("Main.q"), sim.read("Main.wide")) == (True, 3, 2)  # 14 = 3 * 4 + 2
+
+
+def test_an_ld_box_pin_that_is_no_output_of_the_method_is_refused():
+    from ladderlab.simulation.build import build_project
+    from ladderlab.st.project_text import source_to_project
+    from tests.ir.diagram_support import box, contact, ld_pou, rung
+
+    project, _ = source_to_project(DIVIDER, "ld")
+    divide = box("b1", "d.DivMod", en=True, a="1", b="4", outputs={"REST": "q"})
+    project.pous.append(ld_pou("Main", "VAR d : Divider; q : INT; END_VAR", rung("n1", contact("k", "TRUE"), divide)))
+    assert [(d.code, d.message) for d in build_project(project).diagnostics if d.severity == "error"] == [
+        ("LD-UNKNOWN-PIN", "d.DivMod is a method: its outputs are OUT, Q, R, EXACT, CODE")
+    ]
