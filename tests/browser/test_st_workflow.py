@@ -83,7 +83,12 @@ def test_new_user_writes_an_st_fb_fixes_a_typo_and_watches_it_run(page, server):
     underline.hover()
     tooltip = page.locator(".cm-tooltip-lint")
     tooltip.wait_for()
-    assert tooltip.inner_text() == "ST-UNKNOWN-VAR: unknown variable 'Cuont' - did you mean 'Count'?"
+    assert (
+        tooltip.locator(".cm-diagnosticText").inner_text()
+        == "ST-UNKNOWN-VAR: unknown variable 'Cuont' - did you mean 'Count'?"
+    )
+    # The quick fix (issue 22): the declare dialog for the unknown name, offered on the mark.
+    assert tooltip.get_by_role("button", name="Declare Cuont").is_visible()
     page.screenshot(path=str(ARTIFACTS / "st-typo.png"))
 
     # Fix it by typing: the underline goes away without a save.

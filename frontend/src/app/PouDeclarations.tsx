@@ -4,7 +4,7 @@ import { useMemo } from "react";
 import type { Diagnostic, Pou } from "../generated/api";
 import { DeclarationsEditor } from "../declarations/DeclarationsEditor";
 import { usePanels } from "../panels/store";
-import { useDeclarableTypes } from "./declarableTypes";
+import { useDeclarableTypes } from "../store/declarableTypes";
 import { useWorkspace } from "../store/project";
 
 const NO_DIAGNOSTICS: Diagnostic[] = [];

@@ -1,14 +1,14 @@
 // Editors of the project's own parts: the global variables (the declarations table and text of the
 // POUs), the types (text with a list of the types and a form that adds a STRUCT, enumeration, array,
 // subrange or alias) and the tasks (cyclic interval or SINGLE event, priority, watchdog, the programs each
-// runs in order; program instances are listed as they are).
+// runs in order, each run's instance name and parameter bindings).
 // Each shows the live check of the working copy where it applies, like the POU editors.
-import { PencilLine } from "lucide-react";
+import { PencilLine, SlidersHorizontal } from "lucide-react";
 import { Suspense, useMemo, useState, type FormEvent } from "react";
 import type { Diagnostic } from "../generated/api";
 import type { Task } from "../generated/api";
 import { DeclarationsEditor } from "../declarations/DeclarationsEditor";
-import { useDeclarableTypes } from "./declarableTypes";
+import { useDeclarableTypes } from "../store/declarableTypes";
 import { RenameDialog } from "../tree/PouActions";
 import { usePanels } from "../panels/store";
 import { LazyStEditor, LOADING } from "./lazy";
@@ -19,6 +19,9 @@ import { structMembers, TYPE_KINDS, typeRows, withNewType, withStructMembers, ty
 import type { DeclRow } from "../iec/declarations";
 import { useWorkspace } from "../store/project";
 import { FormError } from "../ui/FormError";
+import { asInstance, runField } from "../store/bindings";
+import { RunBindings } from "./RunBindings";
+import { identifierProblem } from "../iec/identifier";
 
 const NO_COMPLETIONS = { options: [], members: () => null };
 const NO_TASKS: Task[] = [];
@@ -80,10 +83,9 @@ export function TypesView() {
   const add = (e: FormEvent) => {
     e.preventDefault();
     const wanted = name.trim();
-    if (!/^[A-Za-z_][A-Za-z0-9_]*$/.test(wanted)) {
-      setError(
-        `${wanted || "An empty name"} is not an IEC identifier (letters, digits and _, not starting with a digit).`,
-      );
+    const notIdentifier = identifierProblem(wanted);
+    if (notIdentifier) {
+      setError(notIdentifier);
       return;
     }
     if (rows.some((r) => r.name.toUpperCase() === wanted.toUpperCase())) {
@@ -296,11 +298,14 @@ export function TasksView() {
   const programs = useMemo(() => (pous ?? []).filter((p) => p.kind === "program").map((p) => p.name), [pous]);
   const setTasks = useWorkspace((s) => s.setTasks);
   const diagnostics = usePartDiagnostics();
+  /** The run whose parameters are shown: [task index, run index]. */
+  const [opened, setOpened] = useState<[number, number] | null>(null);
   const phase = useOnline((s) => s.phase);
   const disabled = phase !== "offline";
   const update = (index: number, patch: Partial<Task>) =>
     setTasks(tasks.map((t, i) => (i === index ? { ...t, ...patch } : t)));
   const move = (index: number, program: number, by: number) => {
+    setOpened(null);
     const list = [...(tasks[index]!.programs ?? [])];
     const [moved] = list.splice(program, 1);
     list.splice(program + by, 0, moved!);
@@ -325,7 +330,11 @@ export function TasksView() {
         </thead>
         <tbody>
           {tasks.map((task, index) => {
-            const problems = diagnostics.filter((d) => taskIndexOf(d) === index);
+            const openRun = opened?.[0] === index ? opened[1] : null;
+            // A problem of the run whose parameters are shown is shown there, at its field.
+            const problems = diagnostics.filter(
+              (d) => taskIndexOf(d) === index && (openRun === null || runField(d, index, openRun) === undefined),
+            );
             const runs = task.programs ?? [];
             return (
               <tr key={index} aria-label={`Task ${task.name}`} className={problems.length ? "task-invalid" : undefined}>
@@ -379,8 +388,17 @@ export function TasksView() {
                 <td>
                   <ol className="task-programs" aria-label={`Programs of ${task.name}`}>
                     {runs.map((program, p) => (
-                      <li key={`${runName(program)}:${p}`}>
+                      <li key={p /* not its name: renaming the instance keeps the field focused */}>
                         {runName(program)}
+                        <button
+                          type="button"
+                          aria-label={`Parameters of ${runName(program)}`}
+                          aria-expanded={openRun === p}
+                          title="Instance name and parameter bindings"
+                          onClick={() => setOpened(openRun === p ? null : [index, p])}
+                        >
+                          <SlidersHorizontal size={14} aria-hidden />
+                        </button>
                         <button
                           type="button"
                           aria-label={`Run ${runName(program)} earlier`}
@@ -401,10 +419,27 @@ export function TasksView() {
                           type="button"
                           aria-label={`Remove ${runName(program)} from ${task.name}`}
                           disabled={disabled}
-                          onClick={() => update(index, { programs: runs.filter((_, i) => i !== p) })}
+                          onClick={() => {
+                            setOpened(null);
+                            update(index, { programs: runs.filter((_, i) => i !== p) });
+                          }}
                         >
                           ×
                         </button>
+                        {openRun === p ? (
+                          <RunBindings
+                            run={program}
+                            task={task.name}
+                            taskIndex={index}
+                            runIndex={p}
+                            program={pous?.find(
+                              (pou) => pou.name.toUpperCase() === asInstance(program).type.toUpperCase(),
+                            )}
+                            diagnostics={diagnostics}
+                            disabled={disabled}
+                            onChange={(next) => update(index, { programs: runs.map((r, i) => (i === p ? next : r)) })}
+                          />
+                        ) : null}
                       </li>
                     ))}
                   </ol>

@@ -1,6 +1,8 @@
 // The text views of the app, loaded on first use with CodeMirror (their own chunk): an ST or IL POU's
 // declarations and body, and a test file.
-import { useMemo } from "react";
+import { useMemo, useState } from "react";
+import { DeclareDialog } from "../declarations/DeclareDialog";
+import type { NewVariable } from "../store/newVariable";
 import type { Pou } from "../generated/api";
 import { useOnline } from "../online/store";
 import { panelsStore, usePanels } from "../panels/store";
@@ -9,10 +11,13 @@ import { StEditor } from "../st/StEditor";
 import { StOnlineBar } from "../st/StOnlineBar";
 import { useStAssist } from "../st/useStAssist";
 import { useStOnline } from "../st/useStOnline";
+import { describeBreakpoint } from "../debug/breakpoints";
+import { movedLine } from "../debug/follow";
 import { debugStore, useDebug } from "../debug/store";
 import { useTestCheck, useTestCompletions } from "../tests/assist";
 import { coverageLines, coverageOf } from "../tests/coverage";
 import { testsStore, useTests } from "../tests/store";
+import { useDeclarableTypes } from "../store/declarableTypes";
 import { InstancePicker } from "./InstancePicker";
 import { testOf, useWorkspace } from "../store/project";
 
@@ -23,6 +28,10 @@ import { testOf, useWorkspace } from "../store/project";
 export function StPouView({ pou }: { pou: Pou }) {
   const setStBody = useWorkspace((s) => s.setStBody);
   const setDeclarations = useWorkspace((s) => s.setDeclarations);
+  const declare = useWorkspace((s) => s.declare);
+  const types = useDeclarableTypes();
+  // The quick fix of an unknown variable opens the declare dialog (BOOL proposed, as CODESYS's Auto Declare does).
+  const [offer, setOffer] = useState<NewVariable | null>(null);
   const phase = useOnline((s) => s.phase);
   const body = typeof pou.body === "string" ? pou.body : "";
   const { diagnostics, completions: stCompletions, scope } = useStAssist(pou);
@@ -46,12 +55,36 @@ export function StPouView({ pou }: { pou: Pou }) {
     breakpoints: lines,
     halted: at && same(at.pou) && at.line != null ? at.line : null,
     onToggle: (line: number) => debugStore.getState().toggle({ pou: pou.name, line }),
+    onLinesMoved: (move: (line: number) => number | null) =>
+      debugStore.getState().follow(
+        (bp) => movedLine(bp, pou.name, move),
+        (bp) => `The breakpoint at ${describeBreakpoint(bp)} was removed: the text of its line was deleted.`,
+      ),
   };
   return (
     <div
       className="st-pou"
-      style={{ display: "flex", flexDirection: "column", gap: "0.25rem", height: "100%", minHeight: 0 }}
+      style={{
+        position: "relative",
+        display: "flex",
+        flexDirection: "column",
+        gap: "0.25rem",
+        height: "100%",
+        minHeight: 0,
+      }}
     >
+      {offer ? (
+        <DeclareDialog
+          key={offer.name}
+          offer={offer}
+          types={types}
+          onDeclare={(variable) => {
+            setOffer(null);
+            declare(pou.name, variable);
+          }}
+          onCancel={() => setOffer(null)}
+        />
+      ) : null}
       <div style={{ flex: "0 0 35%", minHeight: "6rem", overflow: "hidden", borderBottom: "1px solid #ccc" }}>
         <StEditor
           text={pou.declarations ?? ""}
@@ -61,6 +94,7 @@ export function StPouView({ pou }: { pou: Pou }) {
           completions={completions}
           readOnly={readOnly === null ? null : ""}
           label={`${pou.name} declarations`}
+          onDeclare={readOnly === null ? (name) => setOffer({ name, type: "BOOL" }) : undefined}
         />
       </div>
       <StOnlineBar
@@ -77,6 +111,7 @@ export function StPouView({ pou }: { pou: Pou }) {
           readOnly={readOnly}
           label={`${pou.name} body`}
           language={il ? "il" : "st"}
+          onDeclare={readOnly === null ? (name) => setOffer({ name, type: "BOOL" }) : undefined}
           debug={debug}
           online={online.view}
           coverage={coverageLines(covered)}

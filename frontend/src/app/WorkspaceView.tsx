@@ -32,6 +32,8 @@ import { coverageMarks, coverageOf } from "../tests/coverage";
 import { testsStore, useTests } from "../tests/store";
 import { runsOf } from "../store/tasks";
 import { useDiagramPou } from "../ld/useDiagramPou";
+import { TaskActions } from "../tree/TaskActions";
+import { followBreakpoints } from "./followBreakpoints";
 import { partAt, elementText as sfcElementText, type SfcBody } from "../sfc/model";
 import { ExportMenu } from "../interchange/ExportMenu";
 import { Keyboard, PanelBottomClose, PanelBottomOpen, PanelLeftClose, PanelLeftOpen, Save } from "lucide-react";
@@ -348,11 +350,14 @@ function TasksSection({ project }: { project: Project }) {
             ) : null}
             <ul>
               {resource.tasks.map((t) => (
-                <li key={t.name} className="tree-task">
-                  {t.name}{" "}
-                  <span className="tree-meta">
-                    {t.timing} · priority {t.priority} · {t.instances.join(", ") || "no programs"}
+                <li key={t.name} className="tree-task tree-row">
+                  <span>
+                    {t.name}{" "}
+                    <span className="tree-meta">
+                      {t.timing} · priority {t.priority} · {t.instances.join(", ") || "no programs"}
+                    </span>
                   </span>
+                  <TaskActions task={t.name} />
                 </li>
               ))}
               {resource.unscheduled.length ? (
@@ -410,7 +415,7 @@ const pouNamed = (project: Project | null, name: string) =>
 function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
   const name = pou.name;
   const setLdHistory = useWorkspace((s) => s.setLdHistory);
-  const { library, symbols, symbolsLoaded, diagnostics, focus, declare } = useDiagramPou(name);
+  const { library, symbols, symbolsLoaded, diagnostics, focus, declare, declarableTypes } = useDiagramPou(name);
   const live = useLdOnline(pou, history.present, symbolsLoaded ? symbols : null, library);
   const stepping = useLdDebugging(name, history.present);
   const covered = useTests((s) => coverageOf(s.coverage, name));
@@ -427,6 +432,7 @@ function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
       symbols={symbols}
       diagnostics={diagnostics}
       onDeclareVariable={declare}
+      declarableTypes={declarableTypes}
       online={live.online}
       readOnly={live.readOnly}
       readOnlyActions={live.readOnly ? <OnlineActions pou={pou} /> : undefined}
@@ -643,6 +649,12 @@ export function WorkspaceView() {
     },
     [project],
   );
+
+  // Breakpoints stay on what they are on, or are dropped with a message when it is gone.
+  useEffect(() => {
+    const stop = followBreakpoints();
+    return stop;
+  }, []);
 
   // A different project: the old one's simulation and check results do not apply; its own breakpoints do.
   useEffect(() => {

@@ -35,6 +35,12 @@ export interface DebugState {
   setEnabled(bp: Breakpoint, enabled: boolean): void;
   resume(): void;
   step(granularity: StepGranularity): void;
+  /** Why breakpoints were removed without the user asking (their POU, network, element or line is gone). */
+  notice: string | null;
+  dismissNotice(): void;
+  /** Rewrites every breakpoint by `follow` (null: it is gone, `why` says so in the notice), keeping each one's
+   * enabled state; the simulation is told of those that changed. */
+  follow(follow: (bp: Breakpoint) => Breakpoint | null, why: (bp: Breakpoint) => string): void;
 }
 
 /** Whether a listed breakpoint is enabled (one not listed counts as enabled: it has no state yet). */
@@ -143,6 +149,33 @@ export function createDebugStore(
         const key = breakpointKey(found);
         set({ disabled: enabled ? get().disabled.filter((k) => k !== key) : [...get().disabled, key] });
         send(enabled ? setMessage(found) : clearMessage(found));
+      },
+      notice: null,
+      dismissNotice: () => set({ notice: null }),
+      follow(follow, why) {
+        const { breakpoints } = get();
+        const next: Breakpoint[] = [];
+        const disabled: string[] = [];
+        const reasons: string[] = [];
+        let changed = false;
+        for (const bp of breakpoints) {
+          const enabled = isEnabled(get(), bp);
+          const moved = follow(bp);
+          const same = moved !== null && sameBreakpoint(moved, bp) && moved.pou === bp.pou;
+          if (!same) {
+            changed = true;
+            if (enabled) send(clearMessage(bp));
+          }
+          if (!moved) reasons.push(why(bp));
+          // moved onto another one: one is enough
+          if (!moved || next.some((b) => sameBreakpoint(b, moved))) continue;
+          const kept = same ? bp : moved;
+          next.push(kept);
+          if (!enabled) disabled.push(breakpointKey(kept));
+          else if (!same) send(setMessage(kept));
+        }
+        if (!changed) return;
+        set({ breakpoints: next, disabled, ...(reasons.length ? { notice: reasons.join(" ") } : {}) });
       },
       resume: () => void send({ type: "continue" }),
       step: (granularity) => void send({ type: "step", granularity }),

@@ -167,6 +167,12 @@ const ST = [
     keys: "Shift+F12",
     label: "Find all references of the variable at the cursor",
   },
+  {
+    scope: "st",
+    command: "declare",
+    keys: "Shift+F2",
+    label: "Declare the undeclared variable at the cursor (the declare dialog)",
+  },
 ] as const;
 
 export const KEYMAP = [...APP, ...LD, ...FBD, ...SFC, ...ST] as const satisfies readonly KeyBinding[];

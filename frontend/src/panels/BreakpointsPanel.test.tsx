@@ -8,7 +8,8 @@ import type { ClientMessage } from "../online/protocol";
 import { emptyMonitor } from "../online/monitor";
 import { offline, onlineStore } from "../online/store";
 import { emptyWorkspace, workspaceStore } from "../store/project";
-import { BreakpointsPanel, breakpointBody, describePlace } from "./BreakpointsPanel";
+import { breakpointBody, describePlace } from "../debug/place";
+import { BreakpointsPanel } from "./BreakpointsPanel";
 import { emptyPanels, panelsStore } from "./store";
 
 const project: Project = {

@@ -1,84 +1,14 @@
 // Every breakpoint of the project (LD/FBD networks and elements, ST lines, wherever they were set):
 // enable/disable, remove, remove all, and a click shows the place in its editor. The row where the
 // scan is halted is marked.
-import type { LdBody, Pou } from "../generated/api";
-import { breakpointKey, partName, type Breakpoint } from "../debug/breakpoints";
+import type { Pou } from "../generated/api";
+import { breakpointKey, type Breakpoint } from "../debug/breakpoints";
 import { revealPlace } from "../debug/reveal";
 import { debugStore, isEnabled, useDebug } from "../debug/store";
-import { locate } from "../ld/model";
-import { partAt, elementText as sfcElementText, type SfcBody } from "../sfc/model";
+import { breakpointBody, describePlace } from "../debug/place";
 import type { At } from "../online/protocol";
 import { useOnline } from "../online/store";
 import { useWorkspace } from "../store/project";
-
-/** The networks of a diagram body (LD or FBD), enough to number and name them. */
-type Networks = readonly { id: string; label?: string | null; comment?: string | null }[];
-
-/** What an LD element is, in a few words ("coil Motor", "TON RunTimer"); null for unknown ids. */
-function ldElementText(body: LdBody, id: string): string | null {
-  const e = locate(body, id)?.element;
-  if (!e) return null;
-  switch (e.type) {
-    case "contact":
-    case "coil":
-      return `${e.type} ${e.var}`;
-    case "compare":
-      return `${e.left} ${e.op} ${e.right}`;
-    case "box":
-      return [e.call, e.instance].filter(Boolean).join(" ");
-    case "jump":
-      return `jump to ${e.target}`;
-    default:
-      return e.type ?? "contact";
-  }
-}
-
-/** The body a breakpoint is in and its language: the POU's, or in an SFC POU the action or named transition
- * `bp.body` names ("actions/Fill"). */
-export function breakpointBody(
-  bp: Breakpoint,
-  pou: Pou | undefined,
-): { body: Pou["body"] | undefined; language: string | undefined } {
-  if (!bp.body || pou?.language !== "sfc") return { body: pou?.body, language: pou?.language };
-  const part = partAt(pou.body as SfcBody, bp.body);
-  return { body: part?.body as Pou["body"] | undefined, language: part?.language };
-}
-
-/** Where a breakpoint is, in words: "network 2 seal_in: comment", "element motor (coil Motor)", "line 3: Count := Count + 1;";
- * in an SFC action or named transition, that part first ("action Fill, line 2: m := m + n;"). */
-export function describePlace(
-  bp: Breakpoint,
-  pou: Pou | undefined,
-  body: Pou["body"] | undefined,
-  language: string | undefined = pou?.language,
-): string {
-  const place = describeIn(bp, body, language);
-  return bp.body ? `${partName(bp.body)}, ${place}` : place;
-}
-
-function describeIn(bp: Breakpoint, body: Pou["body"] | undefined, language: string | undefined): string {
-  const networks: Networks = body && typeof body === "object" && "networks" in body ? (body.networks ?? []) : [];
-  if ("line" in bp) {
-    const text = typeof body === "string" ? body.split("\n")[bp.line - 1]?.trim() : undefined;
-    return text ? `line ${bp.line}: ${text}` : `line ${bp.line}`;
-  }
-  if ("network" in bp) {
-    const index = networks.findIndex((n) => n.id === bp.network);
-    if (index < 0) return `network ${bp.network} (not in the ${bp.body ? partName(bp.body).split(" ")[0] : "POU"})`;
-    const n = networks[index]!;
-    const comment = n.comment?.split("\n")[0];
-    return [`network ${index + 1}`, n.label ? `${n.label}:` : null, comment].filter(Boolean).join(" ");
-  }
-  const what =
-    body && typeof body === "object"
-      ? language === "ld"
-        ? ldElementText(body as LdBody, bp.element)
-        : language === "sfc"
-          ? sfcElementText(body as SfcBody, bp.element)
-          : null
-      : null;
-  return what ? `element ${bp.element} (${what})` : `element ${bp.element}`;
-}
 
 /** Whether the scan halted at this breakpoint. */
 function hitBy(bp: Breakpoint, at: At | null): boolean {
@@ -148,16 +78,29 @@ export function BreakpointsPanel() {
   const disabled = useDebug((s) => s.disabled);
   const project = useWorkspace((s) => s.project);
   const at = useOnline((s) => (s.monitor.state === "halted" ? s.monitor.at : null));
+  const notice = useDebug((s) => s.notice);
+  const noticed = notice ? (
+    <p className="breakpoints-notice" role="status">
+      {notice}{" "}
+      <button type="button" aria-label="Dismiss" onClick={() => debugStore.getState().dismissNotice()}>
+        ×
+      </button>
+    </p>
+  ) : null;
   if (!breakpoints.length) {
     return (
-      <p className="panel-empty">
-        No breakpoints. Click a network number in a diagram, Alt+click an element (or select it and press F9), or click
-        the gutter of an ST line.
-      </p>
+      <>
+        {noticed}
+        <p className="panel-empty">
+          No breakpoints. Click a network number in a diagram, Alt+click an element (or select it and press F9), or
+          click the gutter of an ST line.
+        </p>
+      </>
     );
   }
   return (
     <div className="breakpoints-panel">
+      {noticed}
       <button type="button" onClick={() => debugStore.getState().clearAll()}>
         Remove all breakpoints
       </button>

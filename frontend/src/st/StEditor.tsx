@@ -14,7 +14,7 @@ import {
 } from "@codemirror/language";
 import { lintGutter, setDiagnostics } from "@codemirror/lint";
 import { Compartment, EditorState } from "@codemirror/state";
-import { EditorView, highlightActiveLine, keymap, lineNumbers } from "@codemirror/view";
+import { EditorView, highlightActiveLine, keymap, lineNumbers, type ViewUpdate } from "@codemirror/view";
 import { useEffect, useLayoutEffect, useRef } from "react";
 import type { Diagnostic } from "../generated/api";
 import { stBlocks } from "./blocks";
@@ -39,8 +39,14 @@ export interface StEditorProps {
    * without saying why again (a second editor of the same POU whose first one says it). */
   readOnly: string | null;
   label: string;
-  /** Debugging (the body only): breakpoint lines, the halted line, and a gutter click. */
-  debug?: { breakpoints: readonly number[]; halted: number | null; onToggle(line: number): void };
+  /** Debugging (the body only): breakpoint lines, the halted line, a gutter click, and an edit that moved lines
+   * (`move`: a line before the edit -> its line after it, null when its text was deleted). */
+  debug?: {
+    breakpoints: readonly number[];
+    halted: number | null;
+    onToggle(line: number): void;
+    onLinesMoved?(move: (line: number) => number | null): void;
+  };
   /** Online (the body only): values shown after their variables (none when hidden), hover and right-click. */
   online?: StOnlineView & { marks: readonly InlineMark[] };
   /** Lines the last test run with coverage never executed (tinted). */
@@ -49,9 +55,21 @@ export interface StEditorProps {
   focusLine?: { line: number; seq: number } | null;
   /** The text's language: ST (default), an IL body (docs/il.md) or a test file (docs/testing.md). */
   language?: "st" | "il" | "test";
+  /** The quick fix of an unknown variable (its mark's "Declare NAME", Shift+F2): opens the declare dialog. */
+  onDeclare?(name: string): void;
 }
 
 const NO_MARKS: readonly InlineMark[] = [];
+
+/** Where line `line` went in an edit: the line its start is on now, or null when all of its text was deleted. */
+function lineAfter(u: ViewUpdate, line: number): number | null {
+  const before = u.startState.doc;
+  if (line < 1 || line > before.lines) return line;
+  const { from, to, length } = before.line(line);
+  const start = u.changes.mapPos(from, 1);
+  if (length > 0 && u.changes.mapPos(to, -1) <= start && u.changes.touchesRange(from, to)) return null;
+  return u.state.doc.lineAt(start).number;
+}
 const NO_LINES: readonly number[] = [];
 
 export function StEditor({
@@ -67,13 +85,14 @@ export function StEditor({
   coverage = NO_LINES,
   focusLine,
   language = "st",
+  onDeclare,
 }: StEditorProps) {
   const host = useRef<HTMLDivElement>(null);
   const view = useRef<EditorView | null>(null);
   // What the editor's callbacks read: the props of the last render (kept after rendering, not during it).
-  const latest = useRef({ onChange, completions, debug, online });
+  const latest = useRef({ onChange, completions, debug, online, onDeclare });
   useLayoutEffect(() => {
-    latest.current = { onChange, completions, debug, online };
+    latest.current = { onChange, completions, debug, online, onDeclare };
   });
   const editable = useRef(new Compartment());
   /** The props the view is created with; later ones arrive through the effects below. */
@@ -116,7 +135,11 @@ export function StEditor({
             ".cm-scroller": { overflow: "auto", fontFamily: "ui-monospace, monospace" },
           }),
           EditorView.updateListener.of((u) => {
-            if (u.docChanged) latest.current.onChange(u.state.doc.toString());
+            if (!u.docChanged) return;
+            const debugging = latest.current.debug;
+            if (debugging?.breakpoints.length && debugging.onLinesMoved)
+              debugging.onLinesMoved((line) => lineAfter(u, line));
+            latest.current.onChange(u.state.doc.toString());
           }),
         ],
       }),
@@ -158,6 +181,7 @@ export function StEditor({
     view.current?.dispatch({ effects: setCoverageLines.of(coverage) });
   }, [coverage]);
 
+  const declaring = onDeclare !== undefined;
   const focusSeq = focusLine?.seq;
   useEffect(() => {
     const v = view.current;
@@ -175,8 +199,9 @@ export function StEditor({
 
   useEffect(() => {
     const v = view.current;
-    if (v) v.dispatch(setDiagnostics(v.state, lintDiagnostics(diagnostics, file, v.state.doc)));
-  }, [diagnostics, file]);
+    const declare = declaring ? (name: string) => latest.current.onDeclare?.(name) : undefined;
+    if (v) v.dispatch(setDiagnostics(v.state, lintDiagnostics(diagnostics, file, v.state.doc, declare)));
+  }, [diagnostics, file, declaring]);
 
   return (
     <div className="st-editor" style={{ display: "flex", flexDirection: "column", height: "100%", minHeight: 0 }}>

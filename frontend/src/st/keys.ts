@@ -5,6 +5,7 @@ import { findReferencesAtCursor } from "../xref/stReferences";
 import { startCompletion } from "@codemirror/autocomplete";
 import { indentLess, indentMore, redo, undo } from "@codemirror/commands";
 import { foldCode, unfoldCode } from "@codemirror/language";
+import { forEachDiagnostic } from "@codemirror/lint";
 import type { Command, KeyBinding } from "@codemirror/view";
 import { codeMirrorKeys, KEYMAP, type CommandOf } from "../keys/keymap";
 
@@ -24,8 +25,22 @@ export function stKeys(toggleBreakpoint: ((line: number) => void) | null): KeyBi
     indent: indentMore,
     unindent: indentLess,
     "find-references": findReferencesAtCursor,
+    declare: declareAtCursor,
   };
   return KEYMAP.filter((b) => b.scope === "st").flatMap((b) =>
     codeMirrorKeys(b.keys).map((key) => ({ key, run: commands[b.command as CommandOf<"st">], preventDefault: true })),
   );
 }
+
+/** Runs the "Declare ..." quick fix of the diagnostic under the cursor (an unknown variable), if there is one. */
+const declareAtCursor: Command = (view) => {
+  const head = view.state.selection.main.head;
+  let fix: (() => void) | null = null;
+  forEachDiagnostic(view.state, (d, from, to) => {
+    const action = d.actions?.find((a) => a.name.startsWith("Declare "));
+    if (!fix && action && from <= head && head <= to) fix = () => action.apply(view, from, to);
+  });
+  if (!fix) return false;
+  (fix as () => void)();
+  return true;
+};

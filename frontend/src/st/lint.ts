@@ -5,8 +5,21 @@ import type { Diagnostic as LintDiagnostic } from "@codemirror/lint";
 import type { Text } from "@codemirror/state";
 import type { Diagnostic } from "../generated/api";
 
-/** The diagnostics whose `file` is `file` (case-insensitive, e.g. "Main/body"), as lint marks. */
-export function lintDiagnostics(diagnostics: Diagnostic[], file: string, doc: Text): LintDiagnostic[] {
+const UNKNOWN_VARIABLE = /^unknown variable '([A-Za-z_][A-Za-z0-9_]*)'/;
+
+/** The name an "unknown variable" diagnostic is about (the ST quick fix declares it), else null. */
+export function undeclaredName(d: Diagnostic): string | null {
+  return d.code === "ST-UNKNOWN-VAR" ? (UNKNOWN_VARIABLE.exec(d.message)?.[1] ?? null) : null;
+}
+
+/** The diagnostics whose `file` is `file` (case-insensitive, e.g. "Main/body"), as lint marks; with `declare`, an
+ * unknown variable's mark has the quick fix "Declare NAME" (Shift+F2 at the cursor runs it). */
+export function lintDiagnostics(
+  diagnostics: Diagnostic[],
+  file: string,
+  doc: Text,
+  declare?: (name: string) => void,
+): LintDiagnostic[] {
   const wanted = file.toUpperCase();
   return diagnostics
     .filter((d) => d.file?.toUpperCase() === wanted)
@@ -19,6 +32,14 @@ export function lintDiagnostics(diagnostics: Diagnostic[], file: string, doc: Te
         to = Math.max(from, end.from + Math.min(Math.max(d.end_column - 1, 0), end.length));
       }
       if (to === from) to = d.column == null ? line.to : Math.min(from + 1, line.to);
-      return { from, to: Math.max(to, from), severity: d.severity ?? "error", message: `${d.code}: ${d.message}` };
+      const name = declare ? undeclaredName(d) : null;
+      const actions = name ? [{ name: `Declare ${name}`, apply: () => declare!(name) }] : undefined;
+      return {
+        from,
+        to: Math.max(to, from),
+        severity: d.severity ?? "error",
+        message: `${d.code}: ${d.message}`,
+        ...(actions ? { actions } : {}),
+      };
     });
 }

@@ -8,6 +8,7 @@ import type { ConflictDetail, Diagnostic, LibraryEntry, SymbolInfo, SymbolTable 
 import type { FbdBody, LdBody, Pou, Project, SfcBody, Task, TestFile } from "../generated/api";
 import { historyOf, type History } from "./history";
 import { addDeclaration, type VariableDeclaration } from "./declarations";
+import { isGlobalClass } from "./newVariable";
 import { isProjectPart } from "./parts";
 import { loadDraft, removeDraft, saveDraft } from "./drafts";
 
@@ -350,11 +351,16 @@ export function createWorkspaceStore(
         replacePou(pou, (p) => ({ ...p, body: history.present }));
       },
 
-      declare(pou, { name, type }) {
-        replacePou(pou, (p) => ({ ...p, declarations: addDeclaration(p.declarations ?? "", name, type) }));
+      declare(pou, variable) {
+        const global = isGlobalClass(variable.varClass);
+        if (global) get().setGlobals(addDeclaration(get().project?.globals ?? "", variable));
+        else replacePou(pou, (p) => ({ ...p, declarations: addDeclaration(p.declarations ?? "", variable) }));
         const table = get().symbols[pou] ?? { pou, symbols: [], globals: [], diagnostics: [] };
-        const symbol = plainSymbol(name, type);
-        set({ symbols: { ...get().symbols, [pou]: { ...table, symbols: [...table.symbols, symbol] } } });
+        const symbol = plainSymbol(variable.name, variable.type);
+        const next = global
+          ? { ...table, globals: [...table.globals, symbol] }
+          : { ...table, symbols: [...table.symbols, symbol] };
+        set({ symbols: { ...get().symbols, [pou]: next } });
       },
 
       setDeclarations(pou, text) {

@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { instanceLabel, runsOf } from "./tasks";
+import { instanceLabel, renameTask, runsOf } from "./tasks";
 
 describe("runsOf", () => {
   it("lists a project's own tasks with the programs they run", () => {
@@ -46,5 +46,34 @@ describe("runsOf", () => {
 
   it("names an instance by its program when they share the name", () => {
     expect(instanceLabel({ name: "Main", type: "Main" })).toBe("Main");
+  });
+});
+
+describe("renameTask (issue 22: rename a task from the tree)", () => {
+  const fast = { name: "Fast", interval: "T#10ms", priority: 0, programs: ["Main"] };
+  const slow = { name: "Slow", interval: "T#100ms", priority: 1, programs: [] };
+
+  it("renames the project's task and keeps everything else", () => {
+    expect(renameTask({ name: "p", tasks: [fast, slow] }, "Fast", " Quick ")).toEqual({
+      name: "p",
+      tasks: [{ ...fast, name: "Quick" }, slow],
+    });
+  });
+
+  it("renames a task of a configuration's resource", () => {
+    const project = { name: "p", configuration: { name: "C", resources: [{ name: "R", tasks: [slow] }] } };
+    expect(renameTask(project, "Slow", "Background")).toEqual({
+      name: "p",
+      configuration: { name: "C", resources: [{ name: "R", tasks: [{ ...slow, name: "Background" }] }] },
+    });
+  });
+
+  it("refuses a name that is no identifier or another task's (case-insensitive), but allows a change of case", () => {
+    const project = { name: "p", tasks: [fast, slow] };
+    expect(renameTask(project, "Fast", "2fast")).toBe(
+      "2fast is not an IEC identifier (letters, digits and _, not starting with a digit).",
+    );
+    expect(renameTask(project, "Fast", "SLOW")).toBe("There is already a task called SLOW.");
+    expect(renameTask(project, "Fast", "FAST")).toEqual({ name: "p", tasks: [{ ...fast, name: "FAST" }, slow] });
   });
 });

@@ -1,6 +1,7 @@
 // What a project runs, as the project tree lists it: its own tasks, or its configuration's resources with
 // their tasks and the program instances each runs (issue 16; the model is backend/ladderlab/model/project.py).
 import type { ProgramInstance, Project, Task } from "../generated/api";
+import { identifierProblem } from "../iec/identifier";
 
 export interface TaskLine {
   name: string;
@@ -57,5 +58,30 @@ export function runsOf(project: Project): RunsView {
       tasks: (r.tasks ?? []).map(taskLine),
       unscheduled: (r.programs ?? []).map(instanceLabel),
     })),
+  };
+}
+
+/** The project with task `oldName` called `newName` (wherever it is: the project's tasks or a resource's), or why
+ * not. Nothing else names a task (a program instance runs in the task that lists it), so nothing else changes. */
+export function renameTask(project: Project, oldName: string, newName: string): Project | string {
+  const name = newName.trim();
+  const notIdentifier = identifierProblem(name);
+  if (notIdentifier) return notIdentifier;
+  const resources = project.configuration?.resources ?? [];
+  const all = [...(project.tasks ?? []), ...resources.flatMap((r) => r.tasks ?? [])];
+  if (all.some((t) => t.name !== oldName && t.name.toUpperCase() === name.toUpperCase()))
+    return `There is already a task called ${name}.`;
+  const renamed = (tasks: Task[] | undefined) => tasks?.map((t) => (t.name === oldName ? { ...t, name } : t));
+  return {
+    ...project,
+    ...(project.tasks ? { tasks: renamed(project.tasks) } : {}),
+    ...(project.configuration
+      ? {
+          configuration: {
+            ...project.configuration,
+            resources: resources.map((r) => ({ ...r, tasks: renamed(r.tasks) })),
+          },
+        }
+      : {}),
   };
 }

@@ -8,6 +8,8 @@ import { cfcToFbd, fbdToCfc } from "../fbd/convert";
 import { networksOf, nodesOf, type FbdBody, type FbdNetwork } from "../fbd/model";
 import { fetchChartOrder, fetchOrder } from "../fbd/useOrder";
 import { onlineStore } from "../online/store";
+import { debugStore } from "../debug/store";
+import { renamedPou } from "../debug/follow";
 import {
   changedParts,
   copyName,
@@ -80,6 +82,12 @@ export function RenameDialog({ current, isPou, onClose }: { current: string; isP
     if (preview && result && preview.name === name.trim()) {
       const renamed: Record<string, string> = isPou ? { [current]: preview.name } : {};
       const changedPous = new Set(preview.changes.map((c) => c.pou).filter((p): p is string => !!p));
+      // The POU's breakpoints take its new name before the project changes (else they would be dropped as gone).
+      if (isPou)
+        debugStore.getState().follow(
+          (bp) => renamedPou(bp, current, preview.name),
+          () => "",
+        );
       workspaceStore
         .getState()
         .applyOperation(

@@ -94,6 +94,8 @@ export interface FbdEditorProps {
   readOnly?: string | null;
   readOnlyActions?: ReactNode;
   onDeclareVariable?(declaration: VariableDeclaration): void;
+  /** The types the declare dialog completes from. */
+  declarableTypes?: readonly string[];
   onlineActions?: LdOnlineActions;
   debug?: FbdDebug;
   focus?: { network?: string | null; element?: string | null; seq: number } | null;
@@ -156,6 +158,7 @@ export function FbdEditor({
   readOnly = null,
   readOnlyActions,
   onDeclareVariable,
+  declarableTypes,
   onlineActions,
   debug,
   focus,
@@ -820,6 +823,7 @@ export function FbdEditor({
           message={message}
           onDismissMessage={() => setMessage(null)}
           offer={offer}
+          declarableTypes={declarableTypes}
           onDeclare={(declaration) => {
             setOffer(null);
             onDeclareVariable?.(declaration);

@@ -1,6 +1,7 @@
 // The notices above a diagram editor (LD and FBD alike): why it is read-only, with what to do about
-// it; a dismissible message (a refused edit); the offer to declare a variable typed but not declared.
-import { useState, type ReactNode } from "react";
+// it; a dismissible message (a refused edit); the declare dialog for a variable typed but not declared.
+import type { ReactNode } from "react";
+import { DeclareDialog } from "../../declarations/DeclareDialog";
 import type { VariableDeclaration } from "./declare";
 
 export interface EditorNoticesProps {
@@ -9,6 +10,8 @@ export interface EditorNoticesProps {
   message: string | null;
   onDismissMessage(): void;
   offer: VariableDeclaration | null;
+  /** The types the declare dialog completes from (the IEC vocabulary's and the project's). */
+  declarableTypes?: readonly string[];
   onDeclare(declaration: VariableDeclaration): void;
   onDismissOffer(): void;
 }
@@ -19,6 +22,7 @@ export function EditorNotices({
   message,
   onDismissMessage,
   offer,
+  declarableTypes = [],
   onDeclare,
   onDismissOffer,
 }: EditorNoticesProps) {
@@ -38,41 +42,15 @@ export function EditorNotices({
           </button>
         </div>
       ) : null}
-      {offer ? <DeclareOffer key={offer.name} offer={offer} onDeclare={onDeclare} onDismiss={onDismissOffer} /> : null}
-    </>
-  );
-}
-
-export function DeclareOffer({
-  offer,
-  onDeclare,
-  onDismiss,
-}: {
-  offer: VariableDeclaration;
-  onDeclare(d: VariableDeclaration): void;
-  onDismiss(): void;
-}) {
-  const [type, setType] = useState(offer.type);
-  return (
-    <div className="ld-declare" role="status">
-      <span>
-        <code>{offer.name}</code> is not declared.
-      </span>
-      <label>
-        Type{" "}
-        <input
-          aria-label="Type of the new variable"
-          value={type}
-          onChange={(e) => setType(e.target.value)}
-          spellCheck={false}
+      {offer ? (
+        <DeclareDialog
+          key={offer.name}
+          offer={offer}
+          types={declarableTypes}
+          onDeclare={onDeclare}
+          onCancel={onDismissOffer}
         />
-      </label>
-      <button type="button" onClick={() => onDeclare({ name: offer.name, type: type.trim() || offer.type })}>
-        Declare {offer.name}
-      </button>
-      <button type="button" onClick={onDismiss}>
-        Not now
-      </button>
-    </div>
+      ) : null}
+    </>
   );
 }

@@ -90,10 +90,18 @@ describe("editing by keyboard", () => {
     const input = screen.getByRole("combobox", { name: "Variable" });
     fireEvent.change(input, { target: { value: "Pump" } });
     fireEvent.keyDown(input, { key: "Enter" });
-    expect(screen.getByRole("status").textContent).toContain("Pump is not declared.");
-    expect((screen.getByRole("textbox", { name: "Type of the new variable" }) as HTMLInputElement).value).toBe("BOOL");
+    expect(screen.getByRole("dialog", { name: "Declare variable Pump" }).textContent).toContain(
+      "Pump is not declared.",
+    );
+    expect((screen.getByRole("combobox", { name: "Type of the new variable" }) as HTMLInputElement).value).toBe("BOOL");
     fireEvent.click(screen.getByRole("button", { name: "Declare Pump" }));
-    expect(onDeclareVariable).toHaveBeenCalledWith({ name: "Pump", type: "BOOL" });
+    expect(onDeclareVariable).toHaveBeenCalledWith({
+      name: "Pump",
+      type: "BOOL",
+      varClass: "VAR",
+      initial: "",
+      comment: "",
+    });
   });
 
   it("guesses the pin type for a box input and does not offer literals", () => {
@@ -103,7 +111,7 @@ describe("editing by keyboard", () => {
     const input = screen.getByRole("combobox", { name: "Pin PT" });
     fireEvent.change(input, { target: { value: "Delay" } });
     fireEvent.keyDown(input, { key: "Enter" });
-    expect((screen.getByRole("textbox", { name: "Type of the new variable" }) as HTMLInputElement).value).toBe("TIME");
+    expect((screen.getByRole("combobox", { name: "Type of the new variable" }) as HTMLInputElement).value).toBe("TIME");
     fireEvent.click(t.container.querySelector('[data-id="ton"] [data-field="input:PT"] text')!);
     const again = screen.getByRole("combobox", { name: "Pin PT" });
     fireEvent.change(again, { target: { value: "T#3s" } });
@@ -219,7 +227,13 @@ describe("box picker", () => {
     const [, box] = networksOf(t.current())[0]!.elements!;
     expect(box).toMatchObject({ type: "box", call: "TON", instance: "TON_1", en: false });
     fireEvent.click(screen.getByRole("button", { name: "Declare TON_1" }));
-    expect(onDeclareVariable).toHaveBeenCalledWith({ name: "TON_1", type: "TON" });
+    expect(onDeclareVariable).toHaveBeenCalledWith({
+      name: "TON_1",
+      type: "TON",
+      varClass: "VAR",
+      initial: "",
+      comment: "",
+    });
   });
 
   it("turns EN/ENO on for a block without BOOL inputs (GR-27)", () => {

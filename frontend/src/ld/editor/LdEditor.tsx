@@ -34,7 +34,7 @@ import {
 } from "./commands";
 import { ContextMenu, type MenuItem } from "./ContextMenu";
 import { IlView } from "./IlView";
-import { guessType, instanceName, symbolNames, undeclared, type VariableDeclaration } from "./declare";
+import { declareOffer, instanceName, symbolNames, type VariableDeclaration } from "./declare";
 import { extend, navigate, type Direction } from "./navigation";
 import { OperandEditor } from "./OperandEditor";
 import { setDraggedOperand } from "./dragOperand";
@@ -78,6 +78,8 @@ export interface LdEditorProps {
   /** Controls next to the read-only reason (online: "Go offline to edit", the instance shown). */
   readOnlyActions?: ReactNode;
   onDeclareVariable?(declaration: VariableDeclaration): void;
+  /** The types the declare dialog completes from. */
+  declarableTypes?: readonly string[];
   /** Online commands on operands (double-click prepares a value, the context menu writes and forces). */
   onlineActions?: LdOnlineActions;
   /** Told which networks are rendered, so online mode subscribes only to those. */
@@ -144,6 +146,7 @@ export function LdEditor({
   readOnly = null,
   readOnlyActions,
   onDeclareVariable,
+  declarableTypes,
   onlineActions,
   onVisibleChange,
   focus,
@@ -221,9 +224,8 @@ export function LdEditor({
     const result = ops.setOperand(body, id, field, text);
     apply(result);
     if (!result.ok) return;
-    const name = undeclared(text, known);
-    const type = name ? guessType(result.body, id, field, lookup, symbols) : null;
-    setOffer(name && type && onDeclareVariable ? { name, type } : null);
+    const declaration = declareOffer(result.body, id, field, text, known, lookup, symbols);
+    setOffer(declaration && onDeclareVariable ? declaration : null);
   };
 
   const editNetwork = (field: "label" | "comment") => {
@@ -486,8 +488,16 @@ export function LdEditor({
       : [];
     const selected = liveSelection?.kind === "elements" ? variableOf(body, liveSelection.ids[0]!) : null;
     const references = selected ? [referencesItem(selected)] : [];
+    // The declare dialog again (after Escape): the selected element's undeclared operand.
+    const id = liveSelection?.kind === "elements" && liveSelection.ids.length === 1 ? liveSelection.ids[0]! : null;
+    const field = id && onDeclareVariable && !readOnly ? mainField(body, id, lookup) : undefined;
+    const offered =
+      id && field ? declareOffer(body, id, field, operandText(body, id, field), known, lookup, symbols) : null;
+    const declare: MenuItem[] = offered
+      ? [{ id: "declare", label: `Declare ${offered.name}…`, run: () => setOffer(offered) }]
+      : [];
     const operand = onlineActions ? selected : null;
-    if (!onlineActions || !operand) return [...breakpoint, ...il, ...references];
+    if (!onlineActions || !operand) return [...declare, ...breakpoint, ...il, ...references];
     return [
       ...breakpoint,
       ...il,
@@ -593,6 +603,7 @@ export function LdEditor({
         message={message}
         onDismissMessage={() => setMessage(null)}
         offer={offer}
+        declarableTypes={declarableTypes}
         onDeclare={(declaration) => {
           setOffer(null);
           onDeclareVariable?.(declaration);

@@ -13,17 +13,21 @@ export interface OperandEditorProps {
 
 const MAX_SUGGESTIONS = 8;
 
-/** Symbols whose name contains the text (case-insensitive), those starting with it first. */
-export function suggest(text: string, symbols: readonly SymbolInfo[]): SymbolInfo[] {
+/** Symbols (or types) whose name contains the text (case-insensitive), those starting with it first. */
+export function suggest<T extends { name: string }>(text: string, symbols: readonly T[]): T[] {
   const needle = text.trim().toUpperCase();
   const hits = symbols.filter((s) => s.name.toUpperCase().includes(needle) && s.name.toUpperCase() !== needle);
-  const starts = (s: SymbolInfo) => (s.name.toUpperCase().startsWith(needle) ? 0 : 1);
+  const starts = (s: T) => (s.name.toUpperCase().startsWith(needle) ? 0 : 1);
   return hits.sort((a, b) => starts(a) - starts(b) || a.name.localeCompare(b.name)).slice(0, MAX_SUGGESTIONS);
 }
 
 /** The suggestion highlighted before the user picks one: the first, if it starts with the typed text
  * and the text names no symbol already (typing "Start" keeps Start even when StartCount exists). */
-export function defaultSuggestion(text: string, list: readonly SymbolInfo[], symbols: readonly SymbolInfo[]): number {
+export function defaultSuggestion(
+  text: string,
+  list: readonly { name: string }[],
+  symbols: readonly { name: string }[],
+): number {
   const needle = text.trim().toUpperCase();
   if (!needle || symbols.some((s) => s.name.toUpperCase() === needle)) return -1;
   return list[0]?.name.toUpperCase().startsWith(needle) ? 0 : -1;

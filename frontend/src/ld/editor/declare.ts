@@ -5,7 +5,8 @@ import { locate, type LdBody } from "../model";
 import type { OperandField } from "../ops";
 import { RESULT_PIN } from "../pins";
 
-export type { VariableDeclaration } from "../../store/declarations";
+import type { VariableDeclaration } from "../../store/declarations";
+export type { VariableDeclaration };
 
 const IDENTIFIER = /^[A-Za-z_][A-Za-z0-9_]*$/;
 const BOOL_LITERALS = new Set(["TRUE", "FALSE"]);
@@ -79,4 +80,20 @@ export function instanceName(call: string, known: ReadonlySet<string>): string {
   let n = 1;
   while (known.has(`${call}_${n}`.toUpperCase())) n += 1;
   return `${call}_${n}`;
+}
+
+/** What the declare dialog offers for `text` typed into `field` of element `id`: an undeclared plain name with
+ * its guessed type, or null (a declared name, a literal, no variable). After an edit and from the element's menu. */
+export function declareOffer(
+  body: LdBody,
+  id: string,
+  field: OperandField,
+  text: string,
+  known: ReadonlySet<string>,
+  library: (call: string) => LibraryEntry | undefined,
+  symbols: readonly SymbolInfo[],
+): VariableDeclaration | null {
+  const name = undeclared(text, known);
+  const type = name ? guessType(body, id, field, library, symbols) : null;
+  return name && type ? { name, type } : null;
 }

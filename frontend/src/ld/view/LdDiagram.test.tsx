@@ -201,11 +201,10 @@ describe("virtualisation", () => {
     ),
   );
 
-  // The 1 s target is the browser's; jsdom with the other test files in parallel gets twice that.
-  it("opens a 1,000-network POU quickly, rendering only what is in view", () => {
-    const start = performance.now();
+  // Its speed (the 1 s target) is measured in the real browser (tests/browser/test_ld_large.py, benchmarks/RESULTS.md),
+  // not timed here: what makes it fast is that only the networks in view are drawn.
+  it("opens a 1,000-network POU rendering only what is in view", () => {
     const { all, layout } = draw(big, { fallbackHeight: 800 });
-    expect(performance.now() - start).toBeLessThan(2000);
     const shown = all("svg.ld-network");
     expect(shown.length).toBeGreaterThan(3);
     expect(shown.length).toBeLessThan(20);
