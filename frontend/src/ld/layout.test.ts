@@ -191,15 +191,15 @@ describe("diagram", () => {
     expect(third.networks[1]!.top).toBe(third.networks[0]!.height);
   });
 
-  // Generous bounds: cold JIT, jsdom and the other test files running in parallel on 2 cores.
-  it("lays out 1,000 networks quickly", () => {
+  // How fast is measured in the browser (tests/browser/test_ld_large.py, benchmarks/RESULTS.md), not timed here.
+  it("lays out 1,000 networks one below the other", () => {
     const networks = Array.from({ length: 1000 }, (_, i) =>
       net(`n${i}`, par(`p${i}`, [c(`a${i}`)], [c(`b${i}`)]), c(`d${i}`), q(`m${i}`)),
     );
-    const start = performance.now();
     const layout = layoutBody(bodyOf(...networks));
-    expect(performance.now() - start).toBeLessThan(1500);
     expect(layout.networks).toHaveLength(1000);
+    for (let i = 1; i < 1000; i++)
+      expect(layout.networks[i]!.top).toBe(layout.networks[i - 1]!.top + layout.networks[i - 1]!.height);
   });
 });
 
