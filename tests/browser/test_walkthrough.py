@@ -4,7 +4,8 @@ coil through the editor's prompt), save, compile and run, force Start from the d
 and trace it with Motor. What the scan computes is checked against the rung itself: Start forced TRUE seals
 Motor in (Motor := (Start OR Motor) AND NOT Stop), and the new rung copies Motor to Busy, so Busy is TRUE in
 the watch list and in the trace's last samples, energised in the diagram. The last screenshot is README's
-(docs/screenshot.png, copied from tests/browser/artifacts/walkthrough-1024x768.png).
+(docs/screenshot.png, copied from tests/browser/artifacts/walkthrough-1024x768.png). The second walkthrough
+builds a whole project from an empty one through the UI and steps it scan by scan (issue 22's "Done when").
 """
 
 from __future__ import annotations
@@ -15,7 +16,7 @@ import pytest
 from playwright.sync_api import expect
 
 from .conftest import ARTIFACTS
-from .steps import panel_tab, watch
+from .steps import new_pou, new_project, panel_tab, watch
 
 pytestmark = pytest.mark.browser
 
@@ -93,3 +94,94 @@ def test_a_first_session_at_1024x768(page, server: str) -> None:
     for _ in range(4):
         page.keyboard.press("ArrowUp")
     page.screenshot(path=str(ARTIFACTS / "walkthrough-1024x768.png"))
+
+
+def _replace_text(page, label: str, text: str) -> None:
+    page.get_by_label(label).focus()
+    page.keyboard.press("Control+a")
+    page.keyboard.insert_text(text)
+
+
+def _single_cycles(page, count: int) -> None:
+    for _ in range(count):
+        before = int(page.get_by_test_id("scan-count").inner_text())
+        page.get_by_role("button", name="Single cycle").click()
+        page.wait_for_function(
+            "n => Number(document.querySelector('[data-testid=scan-count]').textContent) === n", arg=before + 1
+        )
+
+
+def test_a_project_built_from_empty_at_1024x768(page, server: str) -> None:
+    """Issue 22's walkthrough: from an empty project, entirely through the UI at 1024x768, a global variable
+    list, a STRUCT type, three ST programs using the global, a task running two of them; the global renamed in
+    the three POUs at once, the third POU deleted; compiled and stepped scan by scan. Expected values from the
+    programs: Main counts Velocity up and notes Velocity > 3 in its STRUCT, Reset (after Main in the task) sets
+    it back to 0 once it exceeds 5."""
+    page.set_viewport_size({"width": 1024, "height": 768})
+    new_project(page, server, "plant")
+    tree = page.get_by_role("navigation", name="Project tree")
+
+    tree.get_by_role("button", name="Global variables").click()
+    globals_editor = page.get_by_role("region", name="Global variables editor")
+    globals_editor.get_by_role("button", name="Add variable").click()
+    globals_editor.get_by_label("Name of NewVar").fill("Speed")
+    globals_editor.get_by_label("Type of Speed").fill("INT")
+
+    tree.get_by_role("button", name="Types").click()
+    types_editor = page.get_by_role("region", name="Types editor")
+    types_editor.get_by_label("Type name").fill("Reading")
+    types_editor.get_by_label("Type kind").select_option(label="STRUCT")
+    types_editor.get_by_role("button", name="Add type").click()  # one member: Member : BOOL
+
+    programs = {
+        "Main": ("VAR\n    r : Reading;\nEND_VAR", "Speed := Speed + 1;\nr.Member := Speed > 3;"),
+        "Reset": ("", "IF Speed > 5 THEN\n    Speed := 0;\nEND_IF;"),
+        "Spare": ("", "Speed := Speed;"),
+    }
+    for name, (declarations, body) in programs.items():
+        new_pou(page, name, language="st", kind="program")
+        page.get_by_label(f"{name} body").wait_for()
+        if declarations:
+            _replace_text(page, f"{name} declarations", declarations)
+        _replace_text(page, f"{name} body", body)
+
+    tree.get_by_role("button", name=re.compile("^Tasks")).click()
+    tasks_editor = page.get_by_role("region", name="Tasks editor")
+    tasks_editor.get_by_role("button", name="New task").click()
+    task = tasks_editor.get_by_role("row", name="Task Task1")
+    task.get_by_label("Interval").fill("T#10ms")
+    task.get_by_label("Add a program to Task1").select_option("Main")
+    task.get_by_label("Add a program to Task1").select_option("Reset")
+
+    tree.get_by_role("button", name="Global variables").click()
+    globals_editor.get_by_role("button", name="Rename Speed everywhere").click()
+    dialog = page.get_by_role("dialog", name="Rename Speed")
+    dialog.get_by_label("New name").fill("Velocity")
+    dialog.get_by_role("button", name="Preview").click()
+    places = dialog.get_by_role("list", name="References").locator("li")
+    places.first.wait_for()
+    assert {text.split(",")[0].split(" line")[0] for text in places.all_inner_texts()} == {
+        "Global variables",
+        "Main",
+        "Reset",
+        "Spare",
+    }
+    dialog.get_by_role("button", name="Rename").click()
+    expect(dialog).to_have_count(0)
+
+    tree.get_by_role("button", name="Actions for Spare", exact=True).click()
+    page.get_by_role("menu", name="Spare actions", exact=True).get_by_role("menuitem", name="Delete…").click()
+    page.get_by_role("dialog", name="Delete Spare").get_by_role("button", name="Delete Spare").click()
+    expect(tree.get_by_role("button", name=re.compile("^Spare"))).to_have_count(0)
+
+    page.keyboard.press("Control+s")
+    page.get_by_text("All changes saved").wait_for()
+    page.get_by_role("button", name="Compile & simulate").click()
+    page.get_by_role("status", name="Online state").filter(has_text="Online · stopped").wait_for()
+    velocity = watch(page, "Velocity")
+    member = watch(page, "Main.r.Member")
+    for scans, (value, flag) in [(1, ("1", "FALSE")), (3, ("4", "TRUE")), (2, ("0", "TRUE")), (1, ("1", "FALSE"))]:
+        _single_cycles(page, scans)
+        expect(velocity).to_have_text(value)
+        expect(member).to_have_text(flag)
+    page.screenshot(path=str(ARTIFACTS / "walkthrough-from-empty.png"))
