@@ -12,8 +12,9 @@ export default defineConfig({
     emptyOutDir: true,
     cssCodeSplit: false,
     // One file by design (above): it loads only when a document is printed, so the app's 500 kB chunk
-    // warning (issue 22 item 8) does not apply; 600 kB still flags an unexpected growth.
-    chunkSizeWarningLimit: 600,
+    // warning (issue 22 item 8) does not apply. It grew from 500 to 750 kB when the printed ST came to be
+    // highlighted by the ST editor's own language (one tokenizer, issue 19); 800 kB still flags an unexpected growth.
+    chunkSizeWarningLimit: 800,
     assetsInlineLimit: 100_000_000,
     rollupOptions: {
       input: "print.html",

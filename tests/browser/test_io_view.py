@@ -77,7 +77,7 @@ def test_the_io_view_shows_and_drives_the_process_image_of_a_configuration(page,
     tasks = page.get_by_role("region", name="Tasks")
     assert tasks.get_by_role("heading").text_content() == "Configuration Plant"
     assert tasks.locator(".tree-resource-name").inner_text() == "Resource Cpu on PLC"
-    assert tasks.locator(".tree-task").inner_text() == (
+    assert tasks.locator(".tree-task > span").first.inner_text() == (  # its ⋯ menu button beside it
         "Fast every T#10ms · priority 1 · Line1 : Conveyor, Line2 : Conveyor"
     )
 

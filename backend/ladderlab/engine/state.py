@@ -178,7 +178,7 @@ def _walk(value: object, prefix: str, varying: set[str], leaves: list[str], stru
 def _nestable(item: object) -> bool:
     """An instance whose slots can be leaves of the one holding it (an FB instance, a structure)."""
     return not (
-        item.__class__ in (list, tuple, Ref) or isinstance(item, _SCALARS) or hasattr(item, "__dict__")
+        isinstance(item, (list, tuple, Ref, *_SCALARS)) or hasattr(item, "__dict__")  # Ref: and a moved pointer
     ) and bool(_slot_names(type(item)))
 
 
@@ -283,7 +283,8 @@ def _generated(source: str, paths: Iterable[str]) -> Callable[..., Any]:
         raise ValueError("a captured state's slot paths are not identifiers")
     namespace: dict[str, object] = {}
     exec(source, namespace)  # the paths are identifiers (checked above)
-    function: Callable[..., Any] = next(v for k, v in namespace.items() if k != "__builtins__")  # type: ignore[assignment]
+    # the one function the generated source defines (exec's namespace is typed dict[str, object])
+    function: Callable[..., Any] = next(v for k, v in namespace.items() if k != "__builtins__")  # type: ignore[assignment]  # see above
     return function
 
 

@@ -433,7 +433,8 @@ def _reference_operation(node: ast.Binary, op: str, ctx: PouContext) -> Expr:
     would compare memory addresses, which the engine's references have not got."""
     if op in ("ADD", "SUB") and isinstance(node.left.ty, t.PointerType) and t.in_family(node.right.ty, "ANY_INT"):
         pointer = lower_expr(node.left, ctx)
-        return Binary(op, pointer, lower_expr(node.right, ctx, Elementary("DINT")), pointer.type)  # type: ignore[arg-type]
+        offset = lower_expr(node.right, ctx, Elementary("DINT"))
+        return Binary(op, pointer, offset, pointer.type)  # type: ignore[arg-type]  # a Reference is a value type here
     if op not in ("EQ", "NE"):
         raise LoweringError(
             POINTER_ARITHMETIC if op in ("ADD", "SUB") else f"references cannot be compared by '{node.op}'", node

@@ -8,7 +8,7 @@ import { NewFromExample } from "../hmi/NewFromExample";
 import { ViewBoundary } from "../ui/ViewBoundary";
 import { useHidden, useStoredSize } from "../store/layout";
 import { PanelLeftClose, PanelLeftOpen } from "lucide-react";
-import { Splitter } from "../ui/Splitter";
+import { SidePanel } from "../ui/SidePanel";
 import { ThemeToggle } from "../ui/ThemeToggle";
 import { ToolButton } from "../ui/ToolButton";
 import { FormError } from "../ui/FormError";
@@ -236,20 +236,16 @@ export default function App() {
           </span>
         </header>
         {projectsHidden ? null : (
-          <>
-            <ViewBoundary name="The project list" gridArea="sidebar">
-              <ProjectList />
-            </ViewBoundary>
-            <Splitter
-              label="Resize the project list"
-              orientation="vertical"
-              grow={1}
-              className="side-splitter projects-splitter"
-              value={projectsWidth}
-              size={(edge) => projectsWidth ?? edge.previousElementSibling!.getBoundingClientRect().width}
-              onResize={resizeProjects}
-            />
-          </>
+          <SidePanel
+            name="The project list"
+            gridArea="sidebar"
+            resizeLabel="Resize the project list"
+            splitterClass="projects-splitter"
+            width={projectsWidth}
+            onResize={resizeProjects}
+          >
+            <ProjectList />
+          </SidePanel>
         )}
         <MainArea />
       </div>

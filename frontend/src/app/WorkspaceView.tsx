@@ -37,7 +37,7 @@ import { followBreakpoints } from "./followBreakpoints";
 import { partAt, elementText as sfcElementText, type SfcBody } from "../sfc/model";
 import { ExportMenu } from "../interchange/ExportMenu";
 import { Keyboard, PanelBottomClose, PanelBottomOpen, PanelLeftClose, PanelLeftOpen, Save } from "lucide-react";
-import { Splitter } from "../ui/Splitter";
+import { SidePanel } from "../ui/SidePanel";
 import { ToolButton } from "../ui/ToolButton";
 import { ImportPlcopen } from "../interchange/ImportPlcopen";
 import { appStore } from "../store/workspace";
@@ -415,7 +415,7 @@ const pouNamed = (project: Project | null, name: string) =>
 function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
   const name = pou.name;
   const setLdHistory = useWorkspace((s) => s.setLdHistory);
-  const { library, symbols, symbolsLoaded, diagnostics, focus, declare, declarableTypes } = useDiagramPou(name);
+  const { library, symbols, symbolsLoaded, diagnostics, focus, declare } = useDiagramPou(name);
   const live = useLdOnline(pou, history.present, symbolsLoaded ? symbols : null, library);
   const stepping = useLdDebugging(name, history.present);
   const covered = useTests((s) => coverageOf(s.coverage, name));
@@ -432,7 +432,6 @@ function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
       symbols={symbols}
       diagnostics={diagnostics}
       onDeclareVariable={declare}
-      declarableTypes={declarableTypes}
       online={live.online}
       readOnly={live.readOnly}
       readOnlyActions={live.readOnly ? <OnlineActions pou={pou} /> : undefined}
@@ -769,20 +768,16 @@ export function WorkspaceView() {
         <SimulationBar />
       </ViewBoundary>
       {treeHidden ? null : (
-        <>
-          <ViewBoundary name="The project tree" gridArea="tree">
-            <ProjectTree />
-          </ViewBoundary>
-          <Splitter
-            label="Resize the project tree"
-            orientation="vertical"
-            grow={1}
-            className="side-splitter tree-splitter"
-            value={treeWidth}
-            size={(edge) => treeWidth ?? edge.previousElementSibling!.getBoundingClientRect().width}
-            onResize={resizeTree}
-          />
-        </>
+        <SidePanel
+          name="The project tree"
+          gridArea="tree"
+          resizeLabel="Resize the project tree"
+          splitterClass="tree-splitter"
+          width={treeWidth}
+          onResize={resizeTree}
+        >
+          <ProjectTree />
+        </SidePanel>
       )}
       <div className="editor-area">
         <HistoryBanner />

@@ -24,7 +24,7 @@ export function FbdPouView({
 }) {
   const name = pou.name;
   const setHistory = useWorkspace((s) => s.setFbdHistory);
-  const { library, symbols, symbolsLoaded, diagnostics, focus, declare, declarableTypes } = useDiagramPou(name);
+  const { library, symbols, symbolsLoaded, diagnostics, focus, declare } = useDiagramPou(name);
   const byName = useMemo(() => new Map(library.map((e) => [e.name.toUpperCase(), e])), [library]);
   const lookup = useCallback((call: string) => byName.get(call.toUpperCase()), [byName]);
   const body = history.present;
@@ -62,7 +62,6 @@ export function FbdPouView({
       readOnlyActions={live.readOnly ? onlineActions : undefined}
       onlineActions={live.actions}
       onDeclareVariable={declare}
-      declarableTypes={declarableTypes}
       debug={debug}
       onVisibleChange={live.onVisibleChange}
       onFeedbackChange={live.onFeedbackChange}

@@ -4,7 +4,6 @@
 import { useMemo } from "react";
 import type { Diagnostic, LibraryEntry, SymbolInfo } from "../generated/api";
 import type { VariableDeclaration } from "./editor/declare";
-import { useDeclarableTypes } from "../store/declarableTypes";
 import { usePanels, type Focus } from "../panels/store";
 import { useLiveCheck } from "../st/useLiveCheck";
 import { diagramDiagnostics, symbolsOf, useWorkspace } from "../store/project";
@@ -17,8 +16,6 @@ export interface DiagramPou {
   diagnostics: Diagnostic[];
   focus: Focus | null;
   declare(declaration: VariableDeclaration): void;
-  /** The types the declare dialog completes from. */
-  declarableTypes: string[];
 }
 
 export function useDiagramPou(name: string): DiagramPou {
@@ -30,7 +27,6 @@ export function useDiagramPou(name: string): DiagramPou {
   const live = useLiveCheck(project);
   const focus = usePanels((s) => (s.focus?.pou.toUpperCase() === name.toUpperCase() ? s.focus : null));
   const symbols = useMemo(() => symbolsOf(table), [table]);
-  const declarableTypes = useDeclarableTypes();
   const diagnostics = useMemo(() => diagramDiagnostics(table, live, name), [table, live, name]);
   return {
     library,
@@ -39,6 +35,5 @@ export function useDiagramPou(name: string): DiagramPou {
     diagnostics,
     focus,
     declare: (declaration) => declareIn(name, declaration),
-    declarableTypes,
   };
 }

@@ -216,8 +216,8 @@ class ElementRef(Ref):
     def _checked(self) -> int:
         length = len(self.c)  # type: ignore[arg-type]  # a list
         if not 0 <= self.k < length:  # type: ignore[operator]  # an int key
-            raise pointer_outside(f"the pointer {self.text}", self.k, length)  # type: ignore[arg-type]
-        return self.k  # type: ignore[return-value]
+            raise pointer_outside(f"the pointer {self.text}", self.k, length)  # type: ignore[arg-type]  # an int key
+        return self.k  # type: ignore[return-value]  # an int key
 
 
 def pointer_add(ref: Ref | None, offset: int, size: int, what: str) -> Ref:

@@ -49,7 +49,7 @@ describe("FBD editor", () => {
     expect(t.node("add").querySelector(".fbd-order")?.textContent).toBe("4");
   });
 
-  it("adds an input from the palette, takes its operand and offers to declare it", () => {
+  it("adds an input from the palette, takes its operand and offers to declare it", async () => {
     const t = setup(bodyOf(arithmetic()));
     fireEvent.click(within(t.editor).getByRole("button", { name: "Input" }));
     // (xyflow keeps a node invisible until it has measured it, which jsdom never does.)
@@ -57,7 +57,7 @@ describe("FBD editor", () => {
     fireEvent.change(field, { target: { value: "speed" } });
     fireEvent.keyDown(field, { key: "Enter" });
     expect(nodesOf(t.current().networks![0]!).at(-1)).toMatchObject({ type: "input", id: "in1", expr: "speed" });
-    expect(screen.getByRole("button", { name: "Declare speed" })).toBeTruthy();
+    expect(await screen.findByRole("button", { name: "Declare speed" })).toBeTruthy();
     expect((screen.getByLabelText("Type of the new variable") as HTMLInputElement).value).toBe("BOOL");
     // Double-clicking a node's text edits it again.
     fireEvent.doubleClick(t.node("a").querySelector(".fbd-text")!);

@@ -94,8 +94,6 @@ export interface FbdEditorProps {
   readOnly?: string | null;
   readOnlyActions?: ReactNode;
   onDeclareVariable?(declaration: VariableDeclaration): void;
-  /** The types the declare dialog completes from. */
-  declarableTypes?: readonly string[];
   onlineActions?: LdOnlineActions;
   debug?: FbdDebug;
   focus?: { network?: string | null; element?: string | null; seq: number } | null;
@@ -158,7 +156,6 @@ export function FbdEditor({
   readOnly = null,
   readOnlyActions,
   onDeclareVariable,
-  declarableTypes,
   onlineActions,
   debug,
   focus,
@@ -823,7 +820,6 @@ export function FbdEditor({
           message={message}
           onDismissMessage={() => setMessage(null)}
           offer={offer}
-          declarableTypes={declarableTypes}
           onDeclare={(declaration) => {
             setOffer(null);
             onDeclareVariable?.(declaration);

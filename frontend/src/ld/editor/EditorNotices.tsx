@@ -1,8 +1,9 @@
 // The notices above a diagram editor (LD and FBD alike): why it is read-only, with what to do about
 // it; a dismissible message (a refused edit); the declare dialog for a variable typed but not declared.
-import type { ReactNode } from "react";
-import { DeclareDialog } from "../../declarations/DeclareDialog";
+import { lazy, Suspense, type ReactNode } from "react";
 import type { VariableDeclaration } from "./declare";
+
+const ProjectDeclareDialog = lazy(() => import("../../declarations/ProjectDeclareDialog"));
 
 export interface EditorNoticesProps {
   readOnly: string | null;
@@ -10,8 +11,6 @@ export interface EditorNoticesProps {
   message: string | null;
   onDismissMessage(): void;
   offer: VariableDeclaration | null;
-  /** The types the declare dialog completes from (the IEC vocabulary's and the project's). */
-  declarableTypes?: readonly string[];
   onDeclare(declaration: VariableDeclaration): void;
   onDismissOffer(): void;
 }
@@ -22,7 +21,6 @@ export function EditorNotices({
   message,
   onDismissMessage,
   offer,
-  declarableTypes = [],
   onDeclare,
   onDismissOffer,
 }: EditorNoticesProps) {
@@ -43,13 +41,9 @@ export function EditorNotices({
         </div>
       ) : null}
       {offer ? (
-        <DeclareDialog
-          key={offer.name}
-          offer={offer}
-          types={declarableTypes}
-          onDeclare={onDeclare}
-          onCancel={onDismissOffer}
-        />
+        <Suspense fallback={null}>
+          <ProjectDeclareDialog key={offer.name} offer={offer} onDeclare={onDeclare} onCancel={onDismissOffer} />
+        </Suspense>
       ) : null}
     </>
   );

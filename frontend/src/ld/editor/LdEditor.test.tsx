@@ -82,7 +82,7 @@ describe("editing by keyboard", () => {
     expect(screen.queryByText(/is not declared/)).toBeNull();
   });
 
-  it("offers to declare an unknown name with a guessed type", () => {
+  it("offers to declare an unknown name with a guessed type", async () => {
     const onDeclareVariable = vi.fn();
     const t = setup(bodyOf(net("n1", c("a"), q("m"))), { onDeclareVariable });
     fireEvent.mouseDown(t.hit("m"));
@@ -90,7 +90,7 @@ describe("editing by keyboard", () => {
     const input = screen.getByRole("combobox", { name: "Variable" });
     fireEvent.change(input, { target: { value: "Pump" } });
     fireEvent.keyDown(input, { key: "Enter" });
-    expect(screen.getByRole("dialog", { name: "Declare variable Pump" }).textContent).toContain(
+    expect((await screen.findByRole("dialog", { name: "Declare variable Pump" })).textContent).toContain(
       "Pump is not declared.",
     );
     expect((screen.getByRole("combobox", { name: "Type of the new variable" }) as HTMLInputElement).value).toBe("BOOL");
@@ -104,14 +104,16 @@ describe("editing by keyboard", () => {
     });
   });
 
-  it("guesses the pin type for a box input and does not offer literals", () => {
+  it("guesses the pin type for a box input and does not offer literals", async () => {
     const onDeclareVariable = vi.fn();
     const t = setup(motorMain, { onDeclareVariable });
     fireEvent.click(t.container.querySelector('[data-id="ton"] [data-field="input:PT"] text')!);
     const input = screen.getByRole("combobox", { name: "Pin PT" });
     fireEvent.change(input, { target: { value: "Delay" } });
     fireEvent.keyDown(input, { key: "Enter" });
-    expect((screen.getByRole("combobox", { name: "Type of the new variable" }) as HTMLInputElement).value).toBe("TIME");
+    expect(
+      ((await screen.findByRole("combobox", { name: "Type of the new variable" })) as HTMLInputElement).value,
+    ).toBe("TIME");
     fireEvent.click(t.container.querySelector('[data-id="ton"] [data-field="input:PT"] text')!);
     const again = screen.getByRole("combobox", { name: "Pin PT" });
     fireEvent.change(again, { target: { value: "T#3s" } });
@@ -204,7 +206,7 @@ describe("networks", () => {
 });
 
 describe("box picker", () => {
-  it("searches the library, inserts the block with an instance and offers to declare it", () => {
+  it("searches the library, inserts the block with an instance and offers to declare it", async () => {
     const onDeclareVariable = vi.fn();
     const t = setup(bodyOf(net("n1", c("a"), q("m"))), { onDeclareVariable });
     fireEvent.mouseDown(t.hit("a"));
@@ -226,7 +228,7 @@ describe("box picker", () => {
     fireEvent.keyDown(search, { key: "Enter" });
     const [, box] = networksOf(t.current())[0]!.elements!;
     expect(box).toMatchObject({ type: "box", call: "TON", instance: "TON_1", en: false });
-    fireEvent.click(screen.getByRole("button", { name: "Declare TON_1" }));
+    fireEvent.click(await screen.findByRole("button", { name: "Declare TON_1" }));
     expect(onDeclareVariable).toHaveBeenCalledWith({
       name: "TON_1",
       type: "TON",

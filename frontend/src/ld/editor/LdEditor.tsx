@@ -78,8 +78,6 @@ export interface LdEditorProps {
   /** Controls next to the read-only reason (online: "Go offline to edit", the instance shown). */
   readOnlyActions?: ReactNode;
   onDeclareVariable?(declaration: VariableDeclaration): void;
-  /** The types the declare dialog completes from. */
-  declarableTypes?: readonly string[];
   /** Online commands on operands (double-click prepares a value, the context menu writes and forces). */
   onlineActions?: LdOnlineActions;
   /** Told which networks are rendered, so online mode subscribes only to those. */
@@ -146,7 +144,6 @@ export function LdEditor({
   readOnly = null,
   readOnlyActions,
   onDeclareVariable,
-  declarableTypes,
   onlineActions,
   onVisibleChange,
   focus,
@@ -603,7 +600,6 @@ export function LdEditor({
         message={message}
         onDismissMessage={() => setMessage(null)}
         offer={offer}
-        declarableTypes={declarableTypes}
         onDeclare={(declaration) => {
           setOffer(null);
           onDeclareVariable?.(declaration);
