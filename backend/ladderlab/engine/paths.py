@@ -1,4 +1,6 @@
-"""Variable paths of a running simulation: ``MAIN.T1.Q``, ``GVL.START`` or ``START``, ``MAIN.ARR[3]``, ``MAIN.S.F``.
+"""Variable paths of a running simulation: ``MAIN.T1.Q``, ``GVL.START`` or ``START``, ``MAIN.ARR[3]``, ``MAIN.S.F``,
+``MAIN.P^`` / ``MAIN.P^.X`` through a pointer or reference (ON-11; a member after a reference steps through it
+too, as CODESYS ``REFERENCE TO`` reads: ``MAIN.R.X``).
 
 Names are matched case-insensitively against the IR's canonical names; the
 first segment is a VAR_ACCESS name, else ``GVL`` (the globals), else a global:
@@ -27,17 +29,48 @@ from .codegen.context import ModuleContext, std_fb_class, std_pin_type
 from .codegen.runtime import reference_text
 from .codegen.scope import global_owner
 from .codegen.typeinfo import is_composite, runtime_name
+from .errors import PlcRuntimeError
 from .process_image import ProcessImage, image_view_name, key_of, located_address, view_kind
 
 GLOBALS_PREFIX = "GVL"
 VIEW_PREFIX = "ll_io_"
 _DEREF = object()  # step into a VAR_IN_OUT reference
-_TOKEN = re.compile(r"\s*(?:(?P<name>[A-Za-z_][A-Za-z0-9_]*)|(?P<int>[+-]?\d+)|(?P<punct>[.\[\],]))")
+_TOKEN = re.compile(r"\s*(?:(?P<name>[A-Za-z_][A-Za-z0-9_]*)|(?P<int>[+-]?\d+)|(?P<punct>[.\[\],^]))")
 
 
 class UnknownPath(KeyError):
     def __str__(self) -> str:
         return str(self.args[0])
+
+
+class NoTarget(ValueError):
+    """A path through a pointer that is NULL (or points outside its array) now: it names no variable."""
+
+
+@dataclass(frozen=True)
+class _Pointee:
+    """A key that steps through the REF_TO / POINTER TO value at ``pointer`` (a path) to what it points to."""
+
+    pointer: str
+
+
+def _target(ref: object, step: _Pointee) -> tuple[object, object]:
+    """The ``(container, key)`` a pointer value points to; NoTarget when it is NULL or outside its array."""
+    if ref is None:
+        raise NoTarget(f"{step.pointer} is NULL: {step.pointer}^ is no variable now")
+    try:
+        return ref.pair  # type: ignore[attr-defined, no-any-return]  # a Ref (engine/codegen/runtime.py)
+    except PlcRuntimeError as error:  # a moved pointer beyond its array
+        raise NoTarget(f"{step.pointer}^: {error.message}") from None
+
+
+def _step(obj: object, key: object) -> object:
+    if key is _DEREF:
+        return obj[0][obj[1]]  # type: ignore[index]  # a VAR_IN_OUT's (container, key)
+    if isinstance(key, _Pointee):
+        container, inner = _target(obj, key)
+        return container[inner]  # type: ignore[index]  # what the Ref's container holds
+    return obj[key]  # type: ignore[index]  # an instance, a structure, a list or a view
 
 
 @dataclass(frozen=True)
@@ -55,14 +88,21 @@ class Location:
     def elementary(self) -> bool:
         return not is_composite(self.type)
 
+    @property
+    def through_pointer(self) -> bool:
+        """It is reached through a pointer or reference (``p^``), so it may name no variable at times."""
+        return any(isinstance(key, _Pointee) for key in self.keys)
+
     def _container(self, roots: Roots, writing: bool = False) -> tuple[object, object]:
         obj = roots.get(self.write_root if writing and self.write_root is not None else self.root)
         keys = list(self.keys)
         last = keys.pop()
         for key in keys:
-            obj = obj[0][obj[1]] if key is _DEREF else obj[key]  # type: ignore[index]
+            obj = _step(obj, key)
         if last is _DEREF:
             return obj  # type: ignore[return-value]  # the reference itself is (container, key)
+        if isinstance(last, _Pointee):
+            return _target(obj, last)
         return obj, last
 
     def get(self, roots: Roots) -> object:
@@ -219,6 +259,8 @@ class Resolver:
     def _walk(self, text, path, root, ty: t.IrType, keys, rest) -> Location:
         while rest:
             kind, value = rest[0]
+            if isinstance(ty, t.Reference) and (kind, value) == ("punct", "."):
+                ty, keys = ty.target, (*keys, _Pointee(path))  # CODESYS REFERENCE TO: r.x reads through r
             if (kind, value) == ("punct", "."):
                 member, rest = self._member_name(rest, text)
                 path, ty, keys = self._member(path, ty, keys, member)
@@ -229,6 +271,10 @@ class Resolver:
             elif (kind, value) == ("punct", "["):
                 indices, rest = self._indices(rest[1:], text)
                 path, ty, keys = self._index(path, ty, keys, indices)
+            elif (kind, value) == ("punct", "^"):
+                if not isinstance(ty, t.Reference):
+                    raise ValueError(f"{path} is {_a(ty)}, not a pointer or reference: '^' cannot follow it")
+                path, ty, keys, rest = f"{path}^", ty.target, (*keys, _Pointee(path)), rest[1:]
             else:
                 raise ValueError(f"{text!r} is not a variable path (unexpected {value!r})")
         return Location(path, ty, root, keys)

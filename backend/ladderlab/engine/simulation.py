@@ -49,7 +49,7 @@ from .compile import CompiledProgram, compile_program
 from .debug import STEP_ENDS, Debugger, Halt
 from .doubles import Mocks
 from .inputs import AppliedInput, Injection, InputEvent, InputRefused, immediate, injection
-from .paths import Location, LocationReader, Resolver, Roots, UnknownPath, coerce_for, leaves, plain
+from .paths import Location, LocationReader, NoTarget, Resolver, Roots, UnknownPath, coerce_for, leaves, plain
 from .process_image import AREA_ORDER, IoPoint, ProcessImage, key_of, located_address, view_kind
 from .state import SimState, data_of, holds_references, restore_into, restore_list
 from .tasks import DEFAULT_WATCHDOG_S, Schedule, Task, task_table
@@ -804,10 +804,14 @@ class Simulation:
         fault without a value gets the variable's value now, so the event alone says what it holds."""
         if event.kind in ("write", "force", "panel"):
             assert location is not None  # ``check`` made sure these kinds name a variable
+            if location.through_pointer:
+                location.get(self._roots)  # NoTarget (a ValueError: refused) while the pointer is NULL
             return event, coerce_for(location, event.value)
         if event.kind != "fault":
             return event, None
         assert location is not None
+        if location.through_pointer:
+            raise InputRefused(f"{location.path}: inject faults on the variable itself, not through a pointer")
         if not location.elementary:
             raise InputRefused(f"{location.path}: faults act on one BOOL or numeric signal at a time")
         if event.mode == "stuck" and event.value is None:
@@ -835,10 +839,10 @@ class Simulation:
     def _apply(self, event: InputEvent, location: Location | None, prepared: object, halted: bool) -> None:
         kind = event.kind
         if kind in ("write", "panel") and location is not None:
-            location.set(self._roots, prepared)
+            _set(location, self._roots, prepared)
         elif kind == "force" and location is not None:
             self._forces[location.path] = (location, prepared)
-            location.set(self._roots, prepared)
+            _set(location, self._roots, prepared)
         elif kind == "release" and location is not None:
             self._forces.pop(location.path, None)
         elif kind == "release_all":
@@ -883,7 +887,7 @@ class Simulation:
 
     def _apply_forces(self) -> None:
         for location, value in self._forces.values():
-            location.set(self._roots, value)
+            _set(location, self._roots, value)
 
     # ------------------------------------------------------------------ state (engine/state.py)
 
@@ -961,6 +965,15 @@ class Simulation:
     def snapshot(self) -> dict[str, object]:
         """Every elementary variable of every program instance and every global: path -> value."""
         return dict(leaves(self._context, self._roots))
+
+
+def _set(location: Location, roots: Roots, value: object) -> None:
+    """Write a user's value; through a pointer that is NULL now (``p^``) there is no variable and nothing is
+    written: a force through a pointer holds whatever the pointer points to, scan by scan (ON-11)."""
+    try:
+        location.set(roots, value)
+    except NoTarget:
+        pass
 
 
 def _indices(table: ProbeTable, elements: Iterable[str] | None) -> Iterable[int]:
