@@ -118,7 +118,14 @@ class VariableNode(BaseModel):
     var_class: str | None = Field(
         default=None, description="VAR, VAR_INPUT, VAR_OUTPUT... of a variable; null for fields and array elements."
     )
-    expandable: bool = Field(description="It has members: an FB instance, a structure or an array.")
+    expandable: bool = Field(
+        description="It has members: an FB instance, a structure, an array, or a pointer (its target 'p^', ON-11)."
+    )
+    pointer: bool = Field(
+        default=False,
+        description="A REF_TO, POINTER TO or REFERENCE TO: it has a value of its own (the REF()/ADR() it holds) "
+        "and expands to what it points to.",
+    )
 
 
 class VariableChildren(BaseModel):

@@ -63,17 +63,22 @@ _INSTANCE_CLASSES = ("VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_STAT")
 
 
 def _expandable(ty: t.Type) -> bool:
-    return isinstance(ty, (t.FbType, t.StructType, t.ArrayType))
+    return isinstance(ty, (t.FbType, t.StructType, t.ArrayType, t.PointerType))
+
+
+def _node(name: str, path: str, type_text: str, ty: t.Type, var_class: str | None = None) -> VariableNode:
+    return VariableNode(
+        name=name,
+        path=path,
+        type=type_text,
+        var_class=var_class,
+        expandable=_expandable(ty),
+        pointer=isinstance(ty, t.PointerType),
+    )
 
 
 def _variable(symbol: Symbol, path: str) -> VariableNode:
-    return VariableNode(
-        name=symbol.name,
-        path=path,
-        type=print_type(symbol.type_spec),
-        var_class=symbol.var_class,
-        expandable=_expandable(symbol.type),
-    )
+    return _node(symbol.name, path, print_type(symbol.type_spec), symbol.type, symbol.var_class)
 
 
 def _members(ty: t.Type, path: str, indices: tuple[int, ...]) -> tuple[list[VariableNode], int]:
@@ -88,22 +93,17 @@ def _members(ty: t.Type, path: str, indices: tuple[int, ...]) -> tuple[list[Vari
             for p, c in pins
         ], 0
     if isinstance(ty, t.StructType):
-        return [
-            VariableNode(name=name, path=f"{path}.{name}", type=str(field), expandable=_expandable(field))
-            for name, field in ty.fields.values()
-        ], 0
+        return [_node(name, f"{path}.{name}", str(field), field) for name, field in ty.fields.values()], 0
+    if isinstance(ty, t.PointerType):  # ON-11: what it points to, as CODESYS expands a pointer online
+        name = f"{path.rsplit('.', 1)[-1]}^"
+        return [_node(name, f"{path}^", str(ty.target), ty.target)], 0
     if isinstance(ty, t.ArrayType) and ty.dims and ty.dims[0] is not None:
         (low, high), rest = ty.dims[0], ty.dims[1:]
         inner = t.ArrayType(rest, ty.element) if rest else ty.element
         base = path[: path.rindex("[")] if indices else path
         last = min(high, low + MAX_ELEMENTS - 1)
         return [
-            VariableNode(
-                name=f"[{i}]",
-                path=f"{base}[{', '.join(map(str, (*indices, i)))}]",
-                type=str(inner),
-                expandable=_expandable(inner),
-            )
+            _node(f"[{i}]", f"{base}[{', '.join(map(str, (*indices, i)))}]", str(inner), inner)
             for i in range(low, last + 1)
         ], high - last
     return [], 0
@@ -127,7 +127,11 @@ def _walk(result: CheckResult, path: str) -> tuple[t.Type, tuple[int, ...]]:
         ty = symbol.type
     indices: tuple[int, ...] = ()
     while rest:
-        if rest[0] == ("punct", ".") and len(rest) > 1 and rest[1][0] == "name":
+        if isinstance(ty, t.PointerType) and rest[0] in (("punct", "^"), ("punct", ".")):
+            ty, indices = ty.target, ()  # p^, or r.x through a REFERENCE TO (engine/paths.py)
+            if rest[0] == ("punct", "^"):
+                rest = rest[1:]
+        elif rest[0] == ("punct", ".") and len(rest) > 1 and rest[1][0] == "name":
             member = rest[1][1]
             children, _ = _members(ty, path, ())
             found = next((c for c in children if c.name.upper() == member.upper()), None)

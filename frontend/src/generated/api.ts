@@ -3624,7 +3624,7 @@ export interface components {
     VariableNode: {
       /**
        * Expandable
-       * @description It has members: an FB instance, a structure or an array.
+       * @description It has members: an FB instance, a structure, an array, or a pointer (its target 'p^', ON-11).
        */
       expandable: boolean;
       /**
@@ -3637,6 +3637,12 @@ export interface components {
        * @description The path that reads, writes and forces it: 'MAIN.RunTimer.ET', 'MAIN.arr[3]'.
        */
       path: string;
+      /**
+       * Pointer
+       * @description A REF_TO, POINTER TO or REFERENCE TO: it has a value of its own (the REF()/ADR() it holds) and expands to what it points to.
+       * @default false
+       */
+      pointer?: boolean;
       /**
        * Type
        * @description Its type as IEC text: 'TIME', 'TON', 'ARRAY [1..3] OF INT'.

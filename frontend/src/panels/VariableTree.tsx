@@ -1,6 +1,7 @@
 // Variables as rows of a tree table (the watch list and the Variables view, ON-10): name (programs,
-// FB instances, structures and arrays expand), value (forced and prepared marked), type, and in-place
-// write / force / release. Double-clicking a value prepares one (CODESYS): a BOOL toggles, another
+// FB instances, structures and arrays expand; a pointer shows its own value, ADR(a[1]), and expands to
+// what it points to, p^, as CODESYS shows it online: ON-11), value (forced and prepared marked), type, and
+// in-place write / force / release. Double-clicking a value prepares one (CODESYS): a BOOL toggles, another
 // value is typed into the row's field.
 import { useRef, useState, type FormEvent, type ReactNode } from "react";
 import { useShallow } from "zustand/react/shallow";
@@ -10,7 +11,7 @@ import { shownPath } from "../online/shown";
 import { onlineStore, useOnline } from "../online/store";
 import { ValueTag } from "../online/ValueTag";
 import { parseValue } from "../online/values";
-import { useChildren, useSubscribedPaths } from "./variables";
+import { hasValue, useChildren, useSubscribedPaths } from "./variables";
 
 export interface TreeNode {
   name: string;
@@ -18,6 +19,8 @@ export interface TreeNode {
   /** IEC type text; null when not known yet (a watched path before its first value). */
   type: string | null;
   expandable: boolean;
+  /** A REF_TO / POINTER TO / REFERENCE TO: it has a value (set by the program only) and expands to `p^`. */
+  pointer?: boolean;
 }
 
 /** Which rows of a tree are expanded, by upper-case path. */
@@ -59,7 +62,7 @@ export function VariableRow({
     setText("");
   };
   const prepare = () => {
-    if (!online || node.expandable) return;
+    if (!online || node.expandable) return; // a pointer is set by the program, not online
     if (!commands.prepare(node.path)) input.current?.focus(); // not a BOOL: type the value, Enter prepares
   };
   return (
@@ -83,7 +86,7 @@ export function VariableRow({
           {node.name}
         </td>
         <td className="watch-value" aria-label={`Value of ${node.path}`} onDoubleClick={prepare}>
-          {!online ? "—" : node.expandable ? "" : shown ? <ValueTag shown={shown} /> : "…"}
+          {!online ? "—" : !hasValue(node) ? "" : shown ? <ValueTag shown={shown} /> : "…"}
         </td>
         <td className="watch-type">{node.type ?? type ?? ""}</td>
         <td>
@@ -132,7 +135,7 @@ export function ChildRows({ path, depth, expansion }: { path: string; depth: num
   const children = loaded?.state === "ready" ? loaded.children : [];
   useSubscribedPaths(
     `tree:${pathKey(path)}`,
-    children.filter((c) => !c.expandable).map((c) => c.path),
+    children.filter(hasValue).map((c) => c.path),
   );
   if (!loaded || loaded.state === "loading")
     return (

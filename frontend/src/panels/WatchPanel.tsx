@@ -12,9 +12,10 @@ function WatchRoot({ path, expansion }: { path: string; expansion: Expansion }) 
     const value = s.monitor.values[pathKey(path)];
     return typeof value === "object" && value !== null;
   });
+  const pointer = useOnline((s) => s.monitor.types[pathKey(path)]?.name === "REF_TO");
   return (
     <VariableRow
-      node={{ name: path, path, type: null, expandable: composite }}
+      node={{ name: path, path, type: null, expandable: composite || pointer, pointer }}
       depth={0}
       expansion={expansion}
       actions={

@@ -62,3 +62,8 @@ export function useSubscribedPaths(view: string, paths: readonly string[]): void
   }, [view, joined]);
   useEffect(() => () => onlineStore.getState().subscribe(view, null), [view]);
 }
+
+/** A row with a value of its own: an elementary variable, or a pointer (its ADR()/REF() text, ON-11). */
+export function hasValue(node: { expandable: boolean; pointer?: boolean }): boolean {
+  return !node.expandable || !!node.pointer;
+}
