@@ -39,18 +39,18 @@ def test_a_pointer_expands_to_its_target_and_paths_take_carets(page, server: str
     value = lambda path: table.locator(f'tr[data-path="{path}"] td.watch-value')  # noqa: E731
     expect(value("MAIN.P")).to_have_text("ADR(a[2])")
     expect(value("MAIN.RP")).to_have_text("REF(pt)")
-    table.get_by_role("button", name="Expand Main.p").click()
+    table.get_by_role("button", name="Expand MAIN.p", exact=True).click()
     expect(value("MAIN.P^")).to_have_text("20")
     expect(table.locator('tr[data-path="MAIN.P^"] td.watch-type')).to_have_text("INT")
-    table.get_by_role("button", name="Expand Main.rp").click()
-    table.get_by_role("button", name="Expand Main.rp^").click()
+    table.get_by_role("button", name="Expand MAIN.rp", exact=True).click()
+    table.get_by_role("button", name="Expand MAIN.rp^", exact=True).click()
     expect(value("MAIN.RP^.X")).to_have_text("4")
-    expect(table.get_by_label("New value for Main.p")).to_have_count(0)  # a pointer is set by the program
+    expect(table.get_by_label("New value for MAIN.p", exact=True)).to_have_count(0)  # a pointer is set by the program
 
-    page.get_by_label("New value for Main.p^").fill("77")
+    page.get_by_label("New value for MAIN.p^").fill("77")
     table.locator('tr[data-path="MAIN.P^"]').get_by_role("button", name="Write").click()
     expect(value("MAIN.P^")).to_have_text("77")
-    table.get_by_role("button", name="Expand Main.a").click()
+    table.get_by_role("button", name="Expand MAIN.a", exact=True).click()
     expect(value("MAIN.A[2]")).to_have_text("77")  # the element p points to
     page.screenshot(path=str(ARTIFACTS / "online-pointer.png"))
 
