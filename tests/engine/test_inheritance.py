@@ -170,14 +170,8 @@ def test_a_method_of_a_fb_derived_from_one_without_overrides_is_called_directly(
         ),
         (
             "FUNCTION_BLOCK A\nEND_FUNCTION_BLOCK\n"
-            "FUNCTION_BLOCK B EXTENDS A\nMETHOD M\nSUPER^();\nEND_METHOD\nEND_FUNCTION_BLOCK\n",
-            [
-                (
-                    "ST-NOT-CALLABLE",
-                    "B.M/body",
-                    "SUPER^() runs the base function block's body: call it in the derived block's body, not a method",
-                )
-            ],
+            "FUNCTION_BLOCK B EXTENDS A\nVAR x : BOOL; END_VAR\nMETHOD M\nx := SUPER^();\nEND_METHOD\nEND_FUNCTION_BLOCK\n",
+            [("ST-NOT-CALLABLE", "B.M/body", "SUPER^() runs a body: call it as a statement")],
         ),
         (
             "FUNCTION_BLOCK A\nVAR n : INT; END_VAR\nMETHOD PRIVATE Secret\nEND_METHOD\nEND_FUNCTION_BLOCK\n"

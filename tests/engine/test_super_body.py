@@ -151,25 +151,11 @@ def test_a_breakpoint_in_the_base_body_halts_also_when_run_through_super():
             ("ST-UNKNOWN-VAR", "F/body", "SUPER^: F does not extend another function block"),
         ),
         (
-            COUNTING.replace("SUPER^();", "")
-            + "FUNCTION_BLOCK G EXTENDS Base\nMETHOD M\nSUPER^();\nEND_METHOD\nEND_FUNCTION_BLOCK\n",
-            (
-                "ST-NOT-CALLABLE",
-                "G.M/body",
-                "SUPER^() runs the base function block's body: call it in the derived block's body, not a method",
-            ),
-        ),
-        (
-            COUNTING.replace("SUPER^();", "")
-            + "FUNCTION_BLOCK G EXTENDS Base\nMETHOD M\nTHIS^();\nEND_METHOD\nEND_FUNCTION_BLOCK\n",
-            ("ST-NOT-CALLABLE", "G.M/body", "THIS^() would run the function block's body again from inside it"),
-        ),
-        (
             "PROGRAM P\nSUPER^();\nEND_PROGRAM\n",
             (
                 "ST-NOT-CALLABLE",
                 "P/body",
-                "SUPER^() runs the base function block's body: call it in the derived block's body, not here",
+                "SUPER^() runs a function block's body: call it in a function block's body or methods, not here",
             ),
         ),
     ],

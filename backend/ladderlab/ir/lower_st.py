@@ -14,7 +14,7 @@ from ..iec import stdlib
 from ..model.project import Pou as ModelPou
 from ..st import ast
 from ..st import types as t
-from ..st.methods import is_self
+from ..st.methods import SUPER, is_self
 from ..st.printer import print_expression
 from ..st.symbols import PouInfo, PropertyRef, Symbol
 from .context import PouContext
@@ -147,9 +147,10 @@ def lower_call_statement(statement: ast.CallStmt, ctx: PouContext) -> list[Stmt]
         return lower_fb_call(call, ctx, ctx.origin(statement))
     if isinstance(call.ref, PouInfo) and call.ref.kind == "PROGRAM":
         return _program_call(call, call.ref, ctx, ctx.origin(statement))
-    if is_self(call.callee):  # SUPER^(): the base's body on this instance (st/calls.py)
+    if is_self(call.callee):  # SUPER^(): the base's body on this instance; THIS^(): its own class's (st/calls.py)
         statements = lower_fb_call(call, ctx, ctx.origin(statement))
-        statements[0].body = call.callee.ty.name.upper()
+        if call.callee.base.name.upper() == SUPER:
+            statements[0].body = call.callee.ty.name.upper()
         return statements
     if not _is_function(call.ref):
         raise LoweringError(None)

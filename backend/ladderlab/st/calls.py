@@ -17,7 +17,7 @@ from . import ast
 from . import types as t
 from .context_typing import default_type, untyped_leaves
 from .libraries import library_of
-from .methods import check_method_call, method_callee, this_type
+from .methods import SUPER, check_method_call, method_callee, this_type
 from .printer import print_expression
 from .rules import assignable_or_report, root_name
 from .symbols import THIS, PouInfo, Symbol
@@ -80,21 +80,27 @@ def check_call(checker: Any, node: ast.Call, statement: bool) -> Type:
 
 
 def _body_call(checker: Any, node: ast.Call, statement: bool) -> Type:
-    """``SUPER^(...)`` in a derived function block's body: runs its base's body on the same instance (CODESYS),
-    the arguments set the (inherited) inputs and read the outputs as in any FB call. ``THIS^()`` (an FB's body from
-    its methods) is refused: a method called from the body would run the body again."""
+    """``SUPER^(...)`` runs the base's body on the same instance (CODESYS), in a derived function block's body or
+    in its methods; ``THIS^(...)`` in a method runs the instance's own body (its class's: a derived FB's body for a
+    derived instance). The arguments set the (inherited) inputs and read the outputs as in any FB call. A body that
+    would run itself again (``THIS^()`` in the body, or through methods) is ST-RECURSION (POU-02, methods.py)."""
     callee: ast.Deref = node.callee
     caller = checker.pou
     word = callee.base.name.upper()
-    if word == THIS or caller is None or caller.kind != "FUNCTION_BLOCK" or caller.method is not None:
+    in_method = caller is not None and caller.method is not None
+    owner = caller.method.owner if in_method else caller
+    if caller is None or owner.kind != "FUNCTION_BLOCK":
         _args_untyped(checker, node)
-        where = "a method" if caller is not None and caller.method is not None else "here"
-        reason = (
-            "THIS^() would run the function block's body again from inside it"
-            if word == THIS
-            else f"SUPER^() runs the base function block's body: call it in the derived block's body, not {where}"
+        checker.report(
+            "ST-NOT-CALLABLE",
+            f"{word}^() runs a function block's body: call it in a function block's body or methods, not here",
+            node,
         )
-        checker.report("ST-NOT-CALLABLE", reason, node)
+        return ERROR
+    if word == THIS and not in_method:
+        _args_untyped(checker, node)
+        message = f"THIS^() in {owner.name}'s own body would run the body again from inside itself (POU-02)"
+        checker.report("ST-RECURSION", message, node)
         return ERROR
     base = this_type(checker, callee)
     if base is None or base is ERROR:
@@ -103,9 +109,11 @@ def _body_call(checker: Any, node: ast.Call, statement: bool) -> Type:
     callee.ty = base
     if not statement:
         _args_untyped(checker, node)
-        checker.report("ST-NOT-CALLABLE", "SUPER^() runs the base's body: call it as a statement", node)
+        checker.report("ST-NOT-CALLABLE", f"{word}^() runs a body: call it as a statement", node)
         return ERROR
-    caller.runs_base_body = True
+    if word == SUPER:
+        owner.runs_base_body = True
+    caller.bodies_called.append((base.pou, word == THIS, node))
     inputs = [
         Param(s.name, s.type, s.var_class == "VAR_IN_OUT") for s in base.pou.parameters("VAR_INPUT", "VAR_IN_OUT")
     ]

@@ -131,7 +131,6 @@ class ProjectChecker:
             self._check_initial_values(pou)
         for info, method in methods:
             check_method_body(self, info, method)
-        check_method_recursion(self, [info for info, _ in methods], blocks)
         for pou in self.project.pous:
             info = self.result.pous.get(pou.name.upper())
             if info is not None and info.language in ("st", "il") and bodies.get(pou.name) is not None:
@@ -143,6 +142,7 @@ class ProjectChecker:
                     info,
                     actions[pou.name],
                 )
+        check_method_recursion(self, [info for info, _ in methods], blocks)  # the bodies' calls counted too
         self._check_recursion()
         self.result.configuration = check_configuration(self.result, self.project, self.resolve, self._reporter_for)
         return self.result

@@ -296,7 +296,9 @@ def unknown_member_hint(fb: PouInfo, name: str) -> str:
 
 def check_method_recursion(checker: Any, methods: list[PouInfo], blocks: list[PouInfo]) -> None:
     """POU-02 for methods: no method may call itself, directly or through others - counting every method a
-    dispatched call may run (the overrides in derived FBs, the implementations of an interface's method)."""
+    dispatched call may run (the overrides in derived FBs, the implementations of an interface's method) and the
+    bodies ``THIS^()`` (the instance's class's: the FB's or a derived one's) and ``SUPER^()`` run, with the methods
+    those call (a body that calls the method whose ``THIS^()`` runs it)."""
 
     def runs(called: PouInfo, dispatched: bool) -> list[PouInfo]:
         owner, key = called.method.owner, called.method.key
@@ -305,24 +307,47 @@ def check_method_recursion(checker: Any, methods: list[PouInfo], blocks: list[Po
         ]
         return [called, *(m for m in found if m is not None and m is not called)]
 
+    def edges(pou: PouInfo) -> list[tuple[PouInfo, Any]]:
+        """What ``pou`` (a method or an FB body) runs, each with the call to locate a cycle at (None: the method)."""
+        found = [(target, None) for called, dispatched in pou.methods_called for target in runs(called, dispatched)]
+        for fb, dispatched, call in pou.bodies_called:
+            derived = [b for b in blocks if dispatched and b is not fb and b.derives_from(fb)]
+            found += [(body, call) for body in (fb, *derived)]
+        return found
+
+    def name(pou: PouInfo) -> str:
+        return pou.name if pou.method is not None else f"{pou.name} (body)"
+
     done: set[int] = set()
 
-    def visit(method: PouInfo, path: list[PouInfo]) -> bool:
-        """Depth first from ``method``; True once a cycle is reported (one report is enough)."""
-        for called, dispatched in method.methods_called:
-            for target in runs(called, dispatched):
-                if target in path:
-                    cycle = " -> ".join(m.name for m in [*path[path.index(target) :], target])
-                    fb = target.method.owner
-                    file = method_file(fb.name, target.name[len(fb.name) + 1 :], "body")
-                    message = f"recursive call {cycle}: methods must not call themselves (POU-02)"
-                    checker._reporter(file, target.name)("ST-RECURSION", message, None)
-                    return True
-                if id(target) not in done and visit(target, [*path, target]):
-                    return True
-        done.add(id(method))
+    def report(cycle: list[PouInfo], calls: list[tuple[PouInfo, Any]]) -> None:
+        """At the first THIS^() / SUPER^() of the cycle (``calls``: each caller with its body call, or None), else
+        at the method the cycle comes back to."""
+        message = f"recursive call {' -> '.join(name(m) for m in cycle)}: methods must not call themselves (POU-02)"
+        caller, call = next(((c, n) for c, n in calls if n is not None), (None, None))
+        if caller is not None:
+            owner = caller.method
+            file = method_file(owner.owner.name, owner.name, "body") if owner else f"{caller.name}/body"
+            checker._reporter(file, caller.name)("ST-RECURSION", message, call)
+            return
+        target = cycle[-1]
+        fb = target.method.owner
+        file = method_file(fb.name, target.name[len(fb.name) + 1 :], "body")
+        checker._reporter(file, target.name)("ST-RECURSION", message, None)
+
+    def visit(pou: PouInfo, path: list[PouInfo], calls: list[tuple[PouInfo, Any]]) -> bool:
+        """Depth first from ``pou`` (``calls``: the call into each of ``path`` after the first); True once a cycle
+        is reported (one report is enough)."""
+        for target, call in edges(pou):
+            if target in path:
+                start = path.index(target)
+                report([*path[start:], target], [*calls[start:], (pou, call)])
+                return True
+            if id(target) not in done and visit(target, [*path, target], [*calls, (pou, call)]):
+                return True
+        done.add(id(pou))
         return False
 
     for method in methods:
-        if id(method) not in done and visit(method, [method]):
+        if id(method) not in done and visit(method, [method], []):
             return

@@ -71,7 +71,10 @@ class PouInfo:
     final: bool = False  # a FINAL function block: nothing EXTENDS it
     interfaces: list[PouInfo] = field(default_factory=list)  # an FB: those it IMPLEMENTS; an INTERFACE: it EXTENDS
     methods_called: list[tuple[PouInfo, bool]] = field(default_factory=list)  # METHODs it calls, dispatched or not
-    runs_base_body: bool = False  # a function block whose body calls SUPER^(): runs its base's body on itself
+    runs_base_body: bool = False  # a function block whose body or a method calls SUPER^(): runs its base's body
+    #: the FB bodies its code runs (``SUPER^()``: the base's; ``THIS^()`` in a method: dispatched, the instance's own
+    #: class's) with the call, for POU-02 (methods.check_method_recursion)
+    bodies_called: list[tuple[PouInfo, bool, Any]] = field(default_factory=list)
 
     def lineage(self) -> list[PouInfo]:
         """This function block, then the one it extends, and so on."""
