@@ -7,8 +7,8 @@ from __future__ import annotations
 
 import pytest
 
-from ladderlab.engine.paths import NoTarget, UnknownPath
 from ladderlab.engine.inputs import InputEvent, InputRefused
+from ladderlab.engine.paths import NoTarget, UnknownPath
 
 from .test_references import simulation
 
@@ -73,7 +73,7 @@ def test_a_null_pointer_names_no_variable():
     assert sim.read("Main.n") == "NULL"
     with pytest.raises(NoTarget, match=r"MAIN.N is NULL: MAIN.N\^ is no variable now"):
         sim.read("Main.n^")
-    with pytest.raises(ValueError, match="MAIN.N is NULL"):
+    with pytest.raises(ValueError, match=r"MAIN\.N is NULL"):
         sim.write("Main.n^", 3)  # refused at once: nothing waits for the next scan
     assert sim.pending == []
     with pytest.raises(InputRefused, match="not through a pointer"):

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import pytest
 
-from .oo_support import errors, run
+from .oo_support import build, run
 
 COUNTER = """
 FUNCTION_BLOCK Counter
@@ -51,14 +51,13 @@ def test_this_body_call_in_a_method_runs_the_instances_own_class_body_scan_by_sc
 
 def test_super_body_call_in_a_method_runs_the_base_body_on_the_instance():
     sim = run(COUNTER + "PROGRAM Main\nVAR l : Loud; END_VAR\nl.Base_only();\nl();\nEND_PROGRAM\n")
-    n = m = 0
+    n = 0
     for scan in range(1, 4):
         sim.cycle(1)
         n += 100  # Base_only: step := 100, the base body adds it (Loud's m is not counted)
         last = n
-        m += 1  # l(): Loud's body, then the base body again with step still 100
-        n += 100
-        assert (sim.read("Main.l.n"), sim.read("Main.l.last"), sim.read("Main.l.m")) == (n, last, m), scan
+        n += 100  # l(): Loud's body (m + 1), then the base body again with step still 100
+        assert (sim.read("Main.l.n"), sim.read("Main.l.last"), sim.read("Main.l.m")) == (n, last, scan), scan
 
 
 @pytest.mark.parametrize("variant", ["monitor", "debug"])
@@ -170,6 +169,4 @@ def test_body_calls_that_could_recurse_or_have_no_body_are_located_errors(source
 
 
 def located(text: str) -> list[tuple[str, str | None, int | None, str]]:
-    from .oo_support import build
-
     return [(d.code, d.file, d.line, d.message) for d in build(text).diagnostics if d.severity == "error"]

@@ -138,7 +138,14 @@ END_VAR"""
 
 
 def node(name: str, path: str, type_: str, var_class: str | None = None, expandable: bool = False) -> dict:
-    return {"name": name, "path": path, "type": type_, "var_class": var_class, "expandable": expandable, "pointer": False}
+    return {
+        "name": name,
+        "path": path,
+        "type": type_,
+        "var_class": var_class,
+        "expandable": expandable,
+        "pointer": False,
+    }
 
 
 def children(client: TestClient, project: str, path: str) -> list[dict]:

@@ -30,6 +30,7 @@ one thread (see docs/runtime.md).
 
 from __future__ import annotations
 
+import contextlib
 import time
 from collections.abc import Callable, Generator, Iterable, Iterator
 from dataclasses import dataclass, replace
@@ -970,10 +971,8 @@ class Simulation:
 def _set(location: Location, roots: Roots, value: object) -> None:
     """Write a user's value; through a pointer that is NULL now (``p^``) there is no variable and nothing is
     written: a force through a pointer holds whatever the pointer points to, scan by scan (ON-11)."""
-    try:
+    with contextlib.suppress(NoTarget):
         location.set(roots, value)
-    except NoTarget:
-        pass
 
 
 def _indices(table: ProbeTable, elements: Iterable[str] | None) -> Iterable[int]:
