@@ -204,3 +204,83 @@ def test_an_ld_box_pin_that_is_no_output_of_the_method_is_refused():
     assert [(d.code, d.message) for d in build_project(project).diagnostics if d.severity == "error"] == [
         ("LD-UNKNOWN-PIN", "d.DivMod is a method: its outputs are OUT, Q, R, EXACT, CODE")
     ]
+
+
+def _fbd_divider(*nodes, wires, en=False, declarations=None):
+    from ladderlab.simulation.build import build_project
+    from ladderlab.st.project_text import source_to_project
+    from tests.ir.diagram_support import fbd_pou, net
+
+    project, _ = source_to_project(DIVIDER, "fbd")
+    declarations = declarations or (
+        "VAR d : Divider; n : INT := 14; go : BOOL; ok : BOOL; q : INT := -1; wide : DINT := -1; odd : BOOL; "
+        "doubled : INT := -1; END_VAR"
+    )
+    project.pous.append(fbd_pou("Main", declarations, net("n1", list(nodes), wires)))
+    return build_project(project)
+
+
+def test_an_fbd_block_wires_a_methods_outputs_to_variables_and_other_blocks():
+    """In FBD the block ``d.DivMod`` has the method's outputs as output pins beside OUT (as LD's box and ST's
+    ``q => x``): wired to a variable (converted INT -> DINT), into another block (MUL), negated; EN gates the
+    call: with EN FALSE the pins hold the last call's values (as its OUT does) and the variables at them are not
+    written."""
+    from tests.ir.diagram_support import blk, inp, out
+
+    nodes = [
+        inp("a", "n"),
+        inp("b", "4"),
+        inp("g", "go"),
+        blk("b1", "d.DivMod", en=True, EXACT={"negated": True}),
+        blk("m", "MUL"),
+        inp("two", "2"),
+        out("o_ok", "ok"),
+        out("o_q", "q"),
+        out("o_r", "wide"),
+        out("o_odd", "odd"),
+        out("o_d", "doubled"),
+    ]
+    wires = [
+        ("a.OUT", "b1.A"),
+        ("b.OUT", "b1.B"),
+        ("g.OUT", "b1.EN"),
+        ("b1.OUT", "o_ok.IN"),
+        ("b1.Q", "o_q.IN"),
+        ("b1.R", "o_r.IN"),
+        ("b1.EXACT", "o_odd.IN"),
+        ("b1.Q", "m.IN1"),
+        ("two.OUT", "m.IN2"),
+        ("m.OUT", "o_d.IN"),
+    ]
+    result = _fbd_divider(*nodes, wires=wires)
+    assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
+    sim = result.simulation()
+    sim.cycle(1)  # EN FALSE: the method does not run; the variables at its pins are not written, and MUL reads
+    # the pin's held value (its initial 0), as a block reads a gated block's OUT
+    assert (sim.read("Main.q"), sim.read("Main.wide"), sim.read("Main.doubled"), sim.read("Main.d.calls")) == (
+        -1,
+        -1,
+        0,
+        0,
+    )
+    sim.write("Main.go", True)
+    for scan, n in ((1, 14), (2, 16)):
+        sim.write("Main.n", n)
+        sim.cycle(1)
+        q, r = divmod(n, 4)
+        assert (sim.read("Main.ok"), sim.read("Main.q"), sim.read("Main.wide")) == (True, q, r)
+        assert (sim.read("Main.odd"), sim.read("Main.doubled"), sim.read("Main.d.calls")) == (r != 0, 2 * q, scan)
+    sim.write("Main.go", False)
+    sim.write("Main.n", 9)
+    sim.cycle(1)  # EN FALSE again: the variables keep the last call's values (16 / 4)
+    assert (sim.read("Main.q"), sim.read("Main.wide"), sim.read("Main.doubled")) == (4, 0, 8)
+
+
+def test_an_fbd_wire_from_a_pin_the_method_lacks_names_its_outputs():
+    from tests.ir.diagram_support import blk, inp, out
+
+    nodes = [inp("a", "1"), inp("b", "4"), blk("b1", "d.DivMod"), out("o", "q")]
+    result = _fbd_divider(*nodes, wires=[("a.OUT", "b1.A"), ("b.OUT", "b1.B"), ("b1.REST", "o.IN")])
+    assert [(d.code, d.message) for d in result.diagnostics if d.severity == "error"] == [
+        ("FBD-UNKNOWN-PIN", "d.DivMod has no output 'REST': its outputs are OUT, Q, R, EXACT, CODE")
+    ]

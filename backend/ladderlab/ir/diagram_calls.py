@@ -244,17 +244,17 @@ def check_call(
     callee: Callee,
     instance: str | None,
     inputs: dict[str, PinValue],
-    outputs: dict[str, str],
+    outputs: dict[str, str | Wired],
     at: At,
     en: PinValue | None = None,
     eno: Var | None = None,
     context: t.Type | None = None,
 ) -> CheckedCall | None:
     """The box as a checked ST call (None when reported). ``inputs``/``outputs`` map upper-case pin names
-    to what feeds them / the variable they write (FB outputs); ``context`` is the type of the variable a
-    function's result is written to, which its literals and generic type adapt to as in ``y := F(...)``
-    (st/context_typing.py). The first box of a shape that checks without a word also gives that shape its
-    template (diagram_shapes); later boxes of the shape use it."""
+    to what feeds them / the variable they write (FB or method outputs: an operand, or an FBD block's slot);
+    ``context`` is the type of the variable a function's result is written to, which its literals and generic
+    type adapt to as in ``y := F(...)`` (st/context_typing.py). The first box of a shape that checks without a
+    word also gives that shape its template (diagram_shapes); later boxes of the shape use it."""
     shape = ops.shapes.shape(callee.name, instance, inputs, outputs, en, eno, context)
     if shape is not None:
         template = ops.shapes.templates.get(shape.key)
@@ -309,7 +309,7 @@ def _check(
     callee: Callee,
     target: ast.Expr | None,
     inputs: dict[str, PinValue],
-    outputs: dict[str, str],
+    outputs: dict[str, str | Wired],
     at: At,
     en: PinValue | None,
     eno: Var | None,
@@ -352,7 +352,7 @@ def call_ast(
     callee: Callee,
     target: ast.Expr | None,
     inputs: dict[str, PinValue],
-    outputs: dict[str, str],
+    outputs: dict[str, str | Wired],
     at: At,
     en: PinValue | None = None,
     eno: Var | None = None,
@@ -379,8 +379,11 @@ def call_ast(
         failed |= node is None
         if node is not None:
             args.append(ast.Arg(pin, node))
-    for pin, text in outputs.items():
-        node = ops.parse(text, at.on(pin), f"output {pin} of {callee.name}")
+    for pin, written in outputs.items():
+        if isinstance(written, str):
+            node = ops.parse(written, at.on(pin), f"output {pin} of {callee.name}")
+        else:
+            node = ops.wire_node(*written)
         failed |= node is None
         if node is not None:
             args.append(ast.Arg(pin, node, output=True))

@@ -98,7 +98,7 @@ class CallShapes:
         callee: str,
         instance: str | None,
         inputs: dict[str, Any],
-        outputs: dict[str, str],
+        outputs: dict[str, Any],
         en: Any,
         eno: Var | None,
         context: t.Type | None = None,

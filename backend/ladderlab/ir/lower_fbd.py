@@ -447,7 +447,8 @@ class _Network:
         saved, self.out = self.out, block.statements
         try:
             eno = self.ops.temp() if node.en else None
-            call = check_call(self.ops, callee, instance, inputs, {}, at, en, eno, context)
+            outputs = self._method_outputs(node, callee)
+            call = check_call(self.ops, callee, instance, inputs, dict(outputs), at, en, eno, context)
             if call is None:
                 return
             result = None if callee.is_fb else self._result(node, call.ty)
@@ -455,9 +456,21 @@ class _Network:
             if statements is None:
                 return
             self.out += statements
-            self._outputs(node, callee, instance, call, statements[0], result, eno, _flags(node), en)
+            self._outputs(node, callee, instance, call, statements[0], result, eno, _flags(node), en, outputs)
         finally:
             self.out = saved
+
+    def _method_outputs(self, node: fbd.Block, callee: Callee) -> dict[str, tuple[Var, t.Type]]:
+        """The VAR_OUTPUTs of an ``inst.M`` block that are wired: the call writes each (``q => slot``, as LD's box
+        and ST do) to a slot its consumers read, kept between scans when the block has EN (as its OUT)."""
+        used = self.used_pins.get(node.id, set())
+        found = {}
+        for pin in callee.method_outputs():
+            if pin in used:
+                ty = callee.output_type(pin)
+                ir_type = self.ctx.ir_type(ty)
+                found[pin] = (self.ctx.hidden(f"{node.id}_{pin}", ir_type) if node.en else self.ops.temp(ir_type), ty)
+        return found
 
     def _result_context(self, node: fbd.Block) -> t.Type | None:
         """The type of the one variable a function block's result is written to (an output node, as in
@@ -479,7 +492,7 @@ class _Network:
     def _pins_known(self, node: fbd.Block, callee: Callee, flags: dict[str, fbd.PinFlags]) -> bool:
         """Wires from the block and pin flags name pins it has; EN/ENO need ``en``; edges are for inputs.
         (Wires into unknown inputs are reported by the call check, with ST's messages.)"""
-        outputs = callee.output_names() + (["ENO"] if node.en else [])
+        outputs = callee.output_names() + callee.method_outputs() + (["ENO"] if node.en else [])
         used = self.used_pins.get(node.id, set())
         into = self.graph.inputs.get(node.id, {})
         if (
@@ -490,10 +503,10 @@ class _Network:
             return True  # the common case: every wire from a real output, flags on inputs only (nothing below applies)
         wired = set(self.graph.inputs.get(node.id, {}))
         problems: list[tuple[str, str, str]] = []
+        method = callee.method_outputs()
         for pin in sorted(used - set(outputs) - {"ENO"}):
-            problems.append(
-                (pin, "FBD-UNKNOWN-PIN", f"{callee.name} has no output '{pin}'" + did_you_mean(pin, outputs))
-            )
+            hint = f": its outputs are {', '.join(['OUT', *method])}" if method else did_you_mean(pin, outputs)
+            problems.append((pin, "FBD-UNKNOWN-PIN", f"{callee.name} has no output '{pin}'" + hint))
         for pin in ("EN", "ENO"):
             if not node.en and pin in wired | used | set(flags):
                 problems.append((pin, "FBD-UNKNOWN-PIN", f"the block has no {pin}: switch on EN/ENO to use it"))
@@ -548,10 +561,11 @@ class _Network:
         eno: Var | None,
         flags: dict,
         en: PinValue | None,
+        method_outputs: dict[str, tuple[Var, t.Type]],
     ) -> None:
         """Record what each output pin carries (after its negation flag) and probe it. An FB's outputs are
         carried as their operand text (``inst.Q``: each consumer reads it in its own context); the probes read
-        them from the instance the FbCall (``first``) called."""
+        them from the instance the FbCall (``first``) called. A method's outputs are the slots its call wrote."""
         at, origin = self.at(node.id), self.origin(node.id)
         pins: dict[str, PinValue] = {}  # what the consumers read
         probed: dict[str, tuple[Expr, t.Type]] = {}  # what the probes read
@@ -562,6 +576,8 @@ class _Network:
                 probed[pin] = fb_output(first.instance, pin, types[pin][0]), callee.output_type(pin)
         else:
             pins["OUT"] = probed["OUT"] = (result, call.ty)
+            for pin, wired in method_outputs.items():
+                pins[pin] = probed[pin] = wired
         if eno is not None:
             pins["ENO"] = probed["ENO"] = (eno, t.BOOL)
         probes: list[Stmt] = []
