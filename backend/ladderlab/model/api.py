@@ -160,6 +160,11 @@ class LibraryEntry(BaseModel):
     extensible: bool = Field(description="More inputs like the last one may be added (IN3, IN4, ...).")
     return_type: str | None = Field(description="Functions only: the result type (a family for generic ones).")
     comment: str | None
+    methods: list[LibraryEntry] = Field(
+        default_factory=list,
+        description="A user function block's PUBLIC METHODs (own and inherited), each as a function entry: what an "
+        "FBD block 'inst.M' draws as its pins.",
+    )
 
 
 class ErrorDetail(BaseModel):

@@ -16,7 +16,7 @@ from ..model.api import LibraryEntry, Pin
 from ..st.checker import check_project as check_st
 from ..st.libraries import with_libraries
 from ..st.printer import print_type
-from ..st.symbols import Symbol
+from ..st.symbols import PouInfo, Symbol
 
 _USER_KINDS: dict[str, Literal["function", "function_block"]] = {
     "FUNCTION": "function",
@@ -96,6 +96,31 @@ def user_entries(project: Project) -> list[LibraryEntry]:
                 extensible=False,
                 return_type=by_name[info.name.upper()].return_type,
                 comment=None,
+                methods=_methods(info) if info.kind == "FUNCTION_BLOCK" else [],
             )
         )
     return entries
+
+
+def _methods(fb: PouInfo) -> list[LibraryEntry]:
+    """``fb``'s PUBLIC methods, its own then inherited ones not overridden (a PROPERTY's accessors left out), as an
+    FBD block ``inst.M`` calls them: inputs, VAR_OUTPUTs and the result as OUT."""
+    found: dict[str, tuple[str, PouInfo]] = {}  # upper-case name -> (name as written, the method)
+    for owner in fb.lineage():
+        for key, method in owner.methods.items():
+            if key not in found and "." not in key and method.method is not None and method.method.access == "PUBLIC":
+                found[key] = method.method.name, method
+    return [
+        LibraryEntry(
+            name=name,
+            kind="function",
+            source="user",
+            inputs=[_user_pin(s) for s in method.parameters("VAR_INPUT")],
+            outputs=[_user_pin(s) for s in method.parameters("VAR_OUTPUT")],
+            in_outs=[_user_pin(s) for s in method.parameters("VAR_IN_OUT")],
+            extensible=False,
+            return_type=print_type(method.return_spec) if method.return_spec is not None else None,
+            comment=None,
+        )
+        for name, method in found.values()
+    ]

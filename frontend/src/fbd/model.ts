@@ -112,12 +112,32 @@ export function operandType(text: string, symbols: readonly SymbolInfo[]): strin
   return symbolType(t, symbols);
 }
 
+/**
+ * The method a block `inst.M` calls (CODESYS): `M` among the methods of the function block `inst` is declared
+ * as (the library lists a user FB's PUBLIC methods); undefined when `call` names none.
+ */
+export function methodEntry(call: string, lookup: Lookup, symbols: readonly SymbolInfo[]): LibraryEntry | undefined {
+  const dot = call.lastIndexOf(".");
+  if (dot < 0) return undefined;
+  const fb = symbolType(call.slice(0, dot), symbols);
+  const method = call
+    .slice(dot + 1)
+    .trim()
+    .toUpperCase();
+  return (fb ? lookup(fb) : undefined)?.methods?.find((m) => m.name.toUpperCase() === method);
+}
+
+/** What a block calls: a function or function block of the library, else a method (`inst.M`). */
+export function blockEntry(call: string, lookup: Lookup, symbols: readonly SymbolInfo[]): LibraryEntry | undefined {
+  return lookup(call) ?? methodEntry(call, lookup, symbols);
+}
+
 /** The pins of `node`, in drawing order (EN first and ENO first when a block has them). */
 export function nodePins(node: FbdNode, network: FbdNetwork, lookup: Lookup, symbols: readonly SymbolInfo[]): NodePins {
   switch (kindOf(node)) {
     case "block": {
       const block = node as Block;
-      const entry = lookup(block.call);
+      const entry = blockEntry(block.call, lookup, symbols);
       const en = block.en ? [{ name: "EN", type: "BOOL" }] : [];
       const eno = block.en ? [{ name: "ENO", type: "BOOL" }] : [];
       if (!entry) {

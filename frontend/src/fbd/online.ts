@@ -18,6 +18,7 @@ import {
 import type { PowerState } from "../online/protocol";
 import type { Prepared, ValueShown } from "../online/shown";
 import {
+  blockEntry,
   findNode,
   kindOf,
   networksOf,
@@ -87,7 +88,7 @@ function bindBlock(
     ...outputs.map((p) => ({ side: "out" as const, name: p.name, type: p.type })),
   ];
   const instance = block.instance?.trim() ? path(block.instance) : null;
-  return bindBoxPins(lookup(block.call), instance, pins, (pin): PinSource => {
+  return bindBoxPins(blockEntry(block.call, lookup, symbols), instance, pins, (pin): PinSource => {
     if (pin.side === "out") return { probe: `${block.id}.${pin.name.toUpperCase()}` };
     const wire = wiresOf(network).find(
       (w) => w.to.node === block.id && w.to.pin.toUpperCase() === pin.name.toUpperCase(),
@@ -114,7 +115,7 @@ function probesOfNode(
 ): string[] {
   switch (kindOf(node)) {
     case "block": {
-      if (!lookup((node as { call: string }).call)) return [];
+      if (!blockEntry((node as { call: string }).call, lookup, symbols)) return [];
       const looped = wiresOf(network).filter((w) => feedback.has(`${node.id}/in:${w.to.pin.toUpperCase()}`));
       return [
         ...nodePins(node, network, lookup, symbols).outputs.map((p) => `${node.id}.${p.name.toUpperCase()}`),

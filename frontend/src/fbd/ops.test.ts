@@ -6,7 +6,9 @@ import { serializeClip as serializeLdClip } from "../ld/clipboard";
 import { arrange } from "./arrange";
 import { clipOf, parseClip, pasteClip, PASTE_OFFSET, serializeClip } from "./clipboard";
 import { arithmetic, bodyOf, lookup, SYMBOLS, wire } from "./fixtures";
-import { nodePins, nodesOf, wiresOf, type Block, type FbdBody, type FbdNetwork } from "./model";
+import type { LibraryEntry } from "../generated/api";
+import { plainSymbol } from "../store/project";
+import { methodEntry, nodePins, nodesOf, wiresOf, type Block, type FbdBody, type FbdNetwork } from "./model";
 import * as ops from "./ops";
 import { moveInOrder } from "./order";
 
@@ -125,6 +127,43 @@ describe("pins", () => {
         (p) => p.name,
       ),
     ).toEqual(["K", "IN0", "IN1", "IN2"]);
+  });
+
+  it("draws a method block inst.M with the method's inputs, its result as OUT and its VAR_OUTPUTs", () => {
+    const pin = (name: string, type: string) => ({ name, type });
+    const divider: LibraryEntry = {
+      name: "Divider",
+      kind: "function_block",
+      source: "user",
+      inputs: [],
+      outputs: [],
+      in_outs: [],
+      extensible: false,
+      return_type: null,
+      comment: null,
+      methods: [
+        {
+          name: "DivMod",
+          kind: "function",
+          source: "user",
+          inputs: [pin("a", "INT"), pin("b", "INT")],
+          outputs: [pin("q", "INT"), pin("r", "INT")],
+          in_outs: [],
+          extensible: false,
+          return_type: "BOOL",
+          comment: null,
+        },
+      ],
+    };
+    const withDivider = (call: string) => (call.toUpperCase() === "DIVIDER" ? divider : lookup(call));
+    const symbols = [...SYMBOLS, plainSymbol("d", "Divider")];
+    const body = ok(ops.addNode(bodyOf(arithmetic()), "n1", { type: "block", call: "d.DivMod" }, { x: 0, y: 0 }));
+    const added = nodesOf(net(body)).find((n) => (n as Block).call === "d.DivMod")!;
+    const pins = nodePins(added, net(body), withDivider, symbols);
+    expect(pins.inputs.map((p) => `${p.name}:${p.type}`)).toEqual(["a:INT", "b:INT"]);
+    expect(pins.outputs.map((p) => `${p.name}:${p.type}`)).toEqual(["OUT:BOOL", "q:INT", "r:INT"]);
+    expect(methodEntry("d.Nope", withDivider, symbols)).toBeUndefined();
+    expect(methodEntry("var1.DivMod", withDivider, symbols)).toBeUndefined(); // an INT has no methods
   });
 
   it("toggles negation bubbles and exclusive edge markers; no edges on outputs", () => {

@@ -1801,6 +1801,11 @@ export interface components {
        * @enum {string}
        */
       kind: "function" | "function_block";
+      /**
+       * Methods
+       * @description A user function block's PUBLIC METHODs (own and inherited), each as a function entry: what an FBD block 'inst.M' draws as its pins.
+       */
+      methods?: components["schemas"]["LibraryEntry"][];
       /** Name */
       name: string;
       /** Outputs */
