@@ -33,6 +33,7 @@ def test_standard_library_has_ton_with_its_pins(client: TestClient) -> None:
         "extensible": False,
         "return_type": None,
         "comment": "on-delay timer: Q TRUE once IN has been TRUE for PT",
+        "methods": [],
     }
 
 
@@ -55,6 +56,7 @@ def test_generic_functions_show_their_family_as_result(client: TestClient) -> No
         "extensible": True,
         "return_type": "ANY_NUM",
         "comment": "sum IN1 + IN2 + ... (operator +)",
+        "methods": [],
     }
     assert (library["GT"]["return_type"], library["SEL"]["return_type"], library["INT_TO_REAL"]["return_type"]) == (
         "BOOL",
@@ -76,6 +78,7 @@ def test_library_with_project_adds_the_user_fb(client: TestClient, motor: str) -
         "extensible": False,
         "return_type": None,
         "comment": None,
+        "methods": [],
     }
     assert [r["name"] for r in rows if r["source"] == "user"] == ["Blinker"]  # programs are not boxes
 
@@ -102,7 +105,61 @@ def test_user_function_with_in_out_and_return_type(client: TestClient, motor: st
         "extensible": False,
         "return_type": "REAL",
         "comment": None,
+        "methods": [],
     }
+
+
+def test_a_user_fb_lists_its_public_methods_own_and_inherited(client: TestClient, motor: str) -> None:
+    """What an FBD block ``inst.M`` draws (issue 25): the PUBLIC methods, an override once, no PRIVATE ones, no
+    PROPERTY accessors; each with its inputs, VAR_OUTPUTs and result."""
+    base = {
+        "name": "Base",
+        "kind": "function_block",
+        "language": "st",
+        "methods": [
+            {"name": "Reset", "declarations": "VAR_INPUT to : INT; END_VAR"},
+            {"name": "Hidden", "access": "PRIVATE"},
+            {
+                "name": "Twice",
+                "return_type": "INT",
+                "declarations": "VAR_INPUT x : INT; END_VAR\nVAR_OUTPUT ok : BOOL; END_VAR",
+            },
+        ],
+        "properties": [{"name": "Level", "type": "INT", "get": {"body": "Level := 1;"}}],
+    }
+    derived = {
+        "name": "Derived",
+        "kind": "function_block",
+        "language": "st",
+        "extends": "Base",
+        "methods": [
+            {
+                "name": "Twice",
+                "return_type": "INT",
+                "declarations": "VAR_INPUT x : INT; END_VAR\nVAR_OUTPUT ok : BOOL; END_VAR",
+            }
+        ],
+    }
+    for pou in (base, derived):
+        revision = client.get("/api/projects/motor").json()["revision"]
+        response = client.put(f"/api/projects/motor/pous/{pou['name']}", json=pou, headers={"If-Match": revision})
+        assert response.status_code == 200, response.text
+    library = entries_by_name(client, "/api/library?project=motor")
+    twice = {
+        "name": "Twice",
+        "kind": "function",
+        "source": "user",
+        "inputs": pins(("x", "INT")),
+        "outputs": pins(("ok", "BOOL")),
+        "in_outs": [],
+        "extensible": False,
+        "return_type": "INT",
+        "comment": None,
+        "methods": [],
+    }
+    reset = {**twice, "name": "Reset", "inputs": pins(("to", "INT")), "outputs": [], "return_type": None}
+    assert library["Base"]["methods"] == [reset, twice]
+    assert library["Derived"]["methods"] == [twice, reset]  # its own first, then the inherited ones
 
 
 def test_library_of_unknown_project_is_404(client: TestClient) -> None:

@@ -1,0 +1,87 @@
+"""Issue 25: an FBD block ``d.DivMod`` (a METHOD of the FB instance d, CODESYS) is drawn with the method's pins - its
+inputs, its result as OUT and its VAR_OUTPUTs - and online those pins show what the call gave: 14 / 4 is 3 rest 2,
+also through a MUL fed by the method's output (2 * 3 = 6)."""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+from playwright.sync_api import expect
+
+from .conftest import ARTIFACTS
+from .steps import go_online, open_pou, store_project
+from .test_cfc_workflow import cycles
+from .test_fbd_cfc_convert import wire
+
+pytestmark = pytest.mark.browser
+
+DIVIDER = {
+    "name": "Divider",
+    "kind": "function_block",
+    "language": "st",
+    "declarations": "VAR calls : INT; END_VAR",
+    "body": "",
+    "methods": [
+        {
+            "name": "DivMod",
+            "return_type": "BOOL",
+            "declarations": "VAR_INPUT a : INT; b : INT; END_VAR\nVAR_OUTPUT q : INT; r : INT; END_VAR",
+            "body": "calls := calls + 1;\nq := a / b;\nr := a MOD b;\nDivMod := r = 0;",
+        }
+    ],
+}
+NETWORK = {
+    "id": "n1",
+    "nodes": [
+        {"type": "input", "id": "ia", "expr": "n", "pos": {"x": 20, "y": 20}},
+        {"type": "input", "id": "ib", "expr": "4", "pos": {"x": 20, "y": 80}},
+        {"type": "block", "id": "dm", "call": "d.DivMod", "pos": {"x": 200, "y": 20}},
+        {"type": "output", "id": "oq", "var": "q", "pos": {"x": 420, "y": 20}},
+        {"type": "output", "id": "or", "var": "r", "pos": {"x": 420, "y": 90}},
+        {"type": "input", "id": "two", "expr": "2", "pos": {"x": 420, "y": 220}},
+        {"type": "block", "id": "mul", "call": "MUL", "pos": {"x": 600, "y": 160}},
+        {"type": "output", "id": "od", "var": "doubled", "pos": {"x": 800, "y": 170}},
+    ],
+    "wires": [
+        wire("ia.OUT", "dm.a"),
+        wire("ib.OUT", "dm.b"),
+        wire("dm.q", "oq.IN"),
+        wire("dm.r", "or.IN"),
+        wire("dm.q", "mul.IN1"),
+        wire("two.OUT", "mul.IN2"),
+        wire("mul.OUT", "od.IN"),
+    ],
+}
+PROJECT = {
+    "name": "fbdmethod",
+    "pous": [
+        DIVIDER,
+        {
+            "name": "Main",
+            "kind": "program",
+            "language": "fbd",
+            "declarations": "VAR d : Divider; n : INT := 14; q, r, doubled : INT; END_VAR",
+            "body": {"networks": [NETWORK]},
+        },
+    ],
+}
+
+
+def test_a_method_block_shows_the_methods_pins_and_their_values_online(page, server):
+    store_project(server, PROJECT)
+    page.goto(server)
+    open_pou(page, "fbdmethod", "Main")
+    block = page.locator('.fbd-node[data-node="dm"]')
+    for pin in ("A", "B", "OUT", "Q", "R"):  # the method's pins, as its declaration gives them
+        expect(block.get_by_text(re.compile(f"^{pin}$", re.IGNORECASE))).to_have_count(1)
+    go_online(page, run=False)
+    cycles(page, 1)
+    page.get_by_test_id("value-oq").filter(has_text=re.compile("^3$")).wait_for()
+    page.get_by_test_id("value-or").filter(has_text=re.compile("^2$")).wait_for()
+    page.get_by_test_id("value-od").filter(has_text=re.compile("^6$")).wait_for()
+    expect(block.locator('[data-pin-value="out:Q"]')).to_have_text("3")
+    expect(block.locator('[data-pin-value="out:R"]')).to_have_text("2")
+    expect(block.locator('[data-pin-value="out:OUT"]')).to_have_text("FALSE")  # 14 MOD 4 <> 0
+    expect(page.locator(".react-flow__edge")).to_have_count(7)  # every wire drawn, to the method's pins too
+    page.screenshot(path=str(ARTIFACTS / "fbd-method-block.png"))
