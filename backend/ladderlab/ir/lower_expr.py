@@ -319,12 +319,35 @@ def _index(node: ast.Index, ctx: PouContext) -> Var:
     if isinstance(node.base.ty, t.StringType):
         raise LoweringError("indexing a STRING is not supported: use MID(s, 1, i) to get one character", node)
     if isinstance(node.base.ty, t.PointerType):
-        raise LoweringError(POINTER_ARITHMETIC + ": write p^[i] for an element of the array p refers to", node)
+        return _pointer_index(node, ctx)
     base = lower_access(node.base, ctx)
     if not isinstance(base.type, Array):
         raise LoweringError(None)
     indices = tuple(lower_expr(index, ctx) for index in node.indices)
     return Var(base.scope, base.name, base.type.element, (*base.path, Index(indices)))
+
+
+def _pointer_index(node: ast.Index, ctx: PouContext) -> Var:
+    """CODESYS ``p[i]``: ``(p + i * SIZEOF(p^))^``, the i-th element on from the one p points to (the engine faults
+    when it leaves the array p points into, as for ``p + n``). The moved pointer is computed before the statement,
+    into a hidden temporary, like a lifted call: so only where such a call could be (ctx.lifts)."""
+    if len(node.indices) != 1:
+        raise LoweringError("a pointer takes one index: p[i] is (p + i * SIZEOF(p^))^", node)
+    if ctx.lifts is None or ctx.calls:
+        raise LoweringError(
+            "p[i] cannot be evaluated here in the right order: assign p[i] to a variable in a statement of its own "
+            "first",
+            node,
+        )
+    pointer = lower_expr(node.base, ctx)
+    reference = pointer.type
+    if not isinstance(reference, Reference):
+        raise LoweringError(None)
+    dint = Elementary("DINT")
+    offset = Binary("MUL", lower_to(node.indices[0], ctx, dint), Const(byte_size(reference.target), dint), dint)
+    moved = ctx.hidden("POINTER_INDEX", reference, var_class="VAR_TEMP")
+    ctx.lifts.append(Assign(moved, Binary("ADD", pointer, offset, reference), ctx.origin(node)))
+    return Var(moved.scope, moved.name, reference.target, (*moved.path, Deref()))
 
 
 _BITS_OF_WIDTH = {8: "BYTE", 16: "WORD", 32: "DWORD", 64: "LWORD"}

@@ -19,7 +19,7 @@ from . import types as t
 from .calls import check_call, unreferable
 from .cases import check_case
 from .context_typing import default_type, settle, untyped_leaves, untyped_result
-from .interfaces import check_attempt, interface_comparison
+from .interfaces import check_attempt, reference_comparison
 from .methods import check_property, is_self, own_property, this_type, unknown_member_hint
 from .rules import EnumValue, assignable_or_report, constant_value, root_name
 from .symbols import CheckResult, PouInfo, PropertyRef, Symbol
@@ -372,7 +372,7 @@ class BodyChecker:
             return right
         if op in ("+", "-") and isinstance(left, t.PointerType) and t.in_family(right, "ANY_INT"):
             return left  # pointer arithmetic in bytes (TYP-43)
-        if op in ("=", "<>") and interface_comparison(left, right):
+        if op in ("=", "<>") and reference_comparison(left, right):
             return t.BOOL
         if op == "+" and isinstance(left, t.StringType) and isinstance(right, t.StringType):
             return left  # FUN-82 (Mosaic): '+' concatenates

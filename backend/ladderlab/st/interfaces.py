@@ -131,10 +131,12 @@ def check_attempt(checker: Any, stmt: ast.Assign) -> None:
         )
 
 
-def interface_comparison(left: t.Type, right: t.Type) -> bool:
-    """``i = j``, ``i <> NULL`` and CODESYS's ``i <> 0``: whether interface variables refer to one instance."""
-    if not isinstance(left, t.InterfaceType):
+def reference_comparison(left: t.Type, right: t.Type) -> bool:
+    """``i = j``, ``i <> NULL`` and CODESYS's ``i <> 0`` / ``p <> 0``: whether interface variables refer to one
+    instance, whether a pointer or interface variable is NULL (CODESYS's 0: no other number is an address here)."""
+    if not isinstance(left, (t.InterfaceType, t.PointerType)):
         left, right = right, left
-    return isinstance(left, t.InterfaceType) and (
-        isinstance(right, (t.InterfaceType, t.NullType)) or (isinstance(right, t.UntypedInt) and right.value == 0)
-    )
+    zero = isinstance(right, t.UntypedInt) and right.value == 0
+    if isinstance(left, t.PointerType):
+        return zero and not left.implicit  # a REFERENCE TO compares its target's value
+    return isinstance(left, t.InterfaceType) and (isinstance(right, (t.InterfaceType, t.NullType)) or zero)
