@@ -72,6 +72,7 @@ const GlobalsView = lazy(() => import("./ProjectParts").then((m) => ({ default: 
 const TypesView = lazy(() => import("./ProjectParts").then((m) => ({ default: m.TypesView })));
 const TasksView = lazy(() => import("./ProjectParts").then((m) => ({ default: m.TasksView })));
 const LibrariesView = lazy(() => import("../libraries/LibrariesView").then((m) => ({ default: m.LibrariesView })));
+const MethodsView = lazy(() => import("../methods/MethodsView").then((m) => ({ default: m.MethodsView })));
 const PouDeclarations = lazy(() => import("./PouDeclarations").then((m) => ({ default: m.PouDeclarations })));
 const StView = lazy(() => import("../stview/StView").then((m) => ({ default: m.StView })));
 const SfcPouView = lazy(() => import("../sfc/SfcPouView").then((m) => ({ default: m.SfcPouView })));
@@ -447,7 +448,7 @@ function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
 const TREE_MIN_PX = 160;
 const TREE_MAX_PX = 480;
 
-type PouMode = "body" | "declarations" | "variables" | "st";
+type PouMode = "body" | "declarations" | "variables" | "st" | "methods";
 
 function ProjectPartView({ part }: { part: ProjectPart }) {
   return (
@@ -491,6 +492,7 @@ function PouView({ name }: { name: string }) {
     },
     { id: "declarations", label: "Declarations" },
     { id: "variables", label: "Variables" },
+    ...(pou.kind === "function_block" ? [{ id: "methods" as const, label: "Methods" }] : []),
     ...(pou.language !== "st" ? [{ id: "st" as const, label: "View as ST" }] : []),
   ];
   let content;
@@ -505,6 +507,8 @@ function PouView({ name }: { name: string }) {
     );
   } else if (mode === "variables") {
     content = <VariablesView pou={pou} instancePicker={<InstancePicker pou={pou.name} />} />;
+  } else if (mode === "methods") {
+    content = <MethodsView pou={pou} />;
   } else if (mode === "st") {
     content = (
       <StView
@@ -534,9 +538,11 @@ function PouView({ name }: { name: string }) {
       ? `The declarations of ${name}`
       : mode === "variables"
         ? `The variables of ${name}`
-        : mode === "st"
-          ? `The ST view of ${name}`
-          : `The ${LANGUAGE[pou.language]} editor of ${name}`;
+        : mode === "methods"
+          ? `The methods and properties of ${name}`
+          : mode === "st"
+            ? `The ST view of ${name}`
+            : `The ${LANGUAGE[pou.language]} editor of ${name}`;
   return (
     <div className="pou-view">
       <div className="pou-modes" role="tablist" aria-label={`${name} views`}>

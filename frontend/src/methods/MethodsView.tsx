@@ -1,0 +1,261 @@
+// The Methods tab of a function block (issue 25, CODESYS's objects under an FB): its methods and properties listed,
+// added, renamed and deleted; a method's result type, declarations and body, and a property's type and GET / SET
+// texts, edited in the ST editor with the live check's diagnostics; breakpoints in a method's body.
+import { useState, type FormEvent } from "react";
+import type { Accessor, Method, Pou, Property } from "../generated/api";
+import { describeBreakpoint } from "../debug/breakpoints";
+import { movedLine } from "../debug/follow";
+import { debugStore, useDebug } from "../debug/store";
+import { useOnline } from "../online/store";
+import { StEditor } from "../st/StEditor";
+import { useStAssist } from "../st/useStAssist";
+import { workspaceStore } from "../store/project";
+import { FormError } from "../ui/FormError";
+import {
+  addMember,
+  changeMember,
+  deleteMember,
+  memberFile,
+  memberOf,
+  renameMember,
+  type Edited,
+  type MemberKind,
+} from "./members";
+
+export function MethodsView({ pou }: { pou: Pou }) {
+  const [selected, setSelected] = useState<string | null>(pou.methods?.[0]?.name ?? pou.properties?.[0]?.name ?? null);
+  const [name, setName] = useState("");
+  const [error, setError] = useState<string | null>(null);
+  const online = useOnline((s) => s.phase !== "offline");
+  const found = selected ? memberOf(pou, selected) : null;
+  /** An edit of the FB as one undoable step (add, rename, delete); a refusal is shown instead. */
+  const operate = (label: string, edited: Edited, select: string | null) => {
+    if (!edited.ok) return setError(edited.error);
+    setError(null);
+    const project = workspaceStore.getState().project;
+    if (!project) return;
+    const next = { ...project, pous: (project.pous ?? []).map((p) => (p.name === pou.name ? edited.pou : p)) };
+    workspaceStore.getState().applyOperation(label, next, [pou.name]);
+    setSelected(select);
+  };
+  const add = (kind: MemberKind) => (e: FormEvent) => {
+    e.preventDefault();
+    operate(`Add ${kind} ${name.trim()}`, addMember(pou, kind, name), name.trim());
+    setName("");
+  };
+  return (
+    <div className="methods-view" style={{ display: "flex", gap: "0.75rem", height: "100%", minHeight: 0 }}>
+      <div style={{ flex: "0 0 14rem", display: "flex", flexDirection: "column", gap: "0.5rem" }}>
+        <ul className="tree-members" aria-label={`Methods and properties of ${pou.name}`}>
+          {(pou.methods ?? []).map((m) => (
+            <MemberRow key={`m-${m.name}`} kind="M" name={m.name} selected={selected} onSelect={setSelected} />
+          ))}
+          {(pou.properties ?? []).map((p) => (
+            <MemberRow key={`p-${p.name}`} kind="P" name={p.name} selected={selected} onSelect={setSelected} />
+          ))}
+        </ul>
+        {online ? null : (
+          <form onSubmit={add("method")}>
+            <input
+              aria-label="New method or property name"
+              value={name}
+              onChange={(e) => setName(e.target.value)}
+              spellCheck={false}
+            />
+            <button type="submit">Add method</button>
+            <button type="button" onClick={add("property")}>
+              Add property
+            </button>
+          </form>
+        )}
+        <FormError error={error} />
+      </div>
+      <div style={{ flex: "1 1 auto", minWidth: 0, display: "flex", flexDirection: "column", gap: "0.25rem" }}>
+        {found ? (
+          <MemberEditor
+            key={found.member.name}
+            pou={pou}
+            kind={found.kind}
+            member={found.member}
+            readOnly={online ? "Online: go offline to edit." : null}
+            onRename={(text) =>
+              operate(`Rename ${found.member.name}`, renameMember(pou, found.member.name, text), text.trim())
+            }
+            onDelete={() =>
+              operate(`Delete ${found.member.name}`, { ok: true, pou: deleteMember(pou, found.member.name) }, null)
+            }
+          />
+        ) : (
+          <p className="panel-empty">{pou.name} has no methods or properties yet: name one and add it.</p>
+        )}
+      </div>
+    </div>
+  );
+}
+
+/** Breakpoints in a method's body (the engine's POU ``FB.M``: ``Simulation.set_breakpoint``), as StPouView's. */
+function useBodyDebug(method: string) {
+  const upper = method.toUpperCase();
+  const breakpoints = useDebug((s) => s.breakpoints);
+  const lines = breakpoints.flatMap((b) => ("line" in b && b.pou.toUpperCase() === upper ? [b.line] : []));
+  const at = useOnline((s) => (s.monitor.state === "halted" ? s.monitor.at : null));
+  return {
+    breakpoints: lines,
+    halted: at && at.pou.toUpperCase() === upper && at.line != null ? at.line : null,
+    onToggle: (line: number) => debugStore.getState().toggle({ pou: method, line }),
+    onLinesMoved: (move: (line: number) => number | null) =>
+      debugStore.getState().follow(
+        (bp) => movedLine(bp, method, move),
+        (bp) => `The breakpoint at ${describeBreakpoint(bp)} was removed: the text of its line was deleted.`,
+      ),
+  };
+}
+
+function MemberRow({
+  kind,
+  name,
+  selected,
+  onSelect,
+}: {
+  kind: "M" | "P";
+  name: string;
+  selected: string | null;
+  onSelect(name: string): void;
+}) {
+  return (
+    <li>
+      <button
+        type="button"
+        className="tree-item tree-member"
+        aria-pressed={selected === name}
+        onClick={() => onSelect(name)}
+      >
+        <span className="tree-kind">{kind}</span>
+        <span className="tree-name">{name}</span>
+      </button>
+    </li>
+  );
+}
+
+function MemberEditor({
+  pou,
+  kind,
+  member,
+  readOnly,
+  onRename,
+  onDelete,
+}: {
+  pou: Pou;
+  kind: MemberKind;
+  member: Method | Property;
+  readOnly: string | null;
+  onRename(name: string): void;
+  onDelete(): void;
+}) {
+  const [rename, setRename] = useState(member.name);
+  const { diagnostics, completions } = useStAssist(pou);
+  /** A text or field of the member changed: the FB is unsaved (a draft is kept), as any edit of a POU's text. */
+  const change = <T extends Method | Property>(update: (m: T) => T) => {
+    const edited = changeMember<T>(pou, member.name, update);
+    if (edited.ok)
+      workspaceStore.getState().setProjectPart(pou.name, (project) => ({
+        ...project,
+        pous: (project.pous ?? []).map((p) => (p.name === pou.name ? edited.pou : p)),
+      }));
+  };
+  const typeField = kind === "method" ? ((member as Method).return_type ?? "") : (member as Property).type;
+  const debug = useBodyDebug(`${pou.name}.${member.name}`);
+  const text = (label: string, value: string, file: string, onChange: (text: string) => void, debugged = false) => (
+    <div key={file} style={{ flex: "1 1 0", minHeight: "6rem", overflow: "hidden", borderBottom: "1px solid #ccc" }}>
+      <StEditor
+        text={value}
+        onChange={onChange}
+        file={file}
+        diagnostics={diagnostics}
+        completions={completions}
+        readOnly={readOnly}
+        label={label}
+        debug={debugged ? debug : undefined}
+      />
+    </div>
+  );
+  return (
+    <>
+      <div className="methods-header" style={{ display: "flex", gap: "0.5rem", alignItems: "center" }}>
+        <strong>
+          {kind === "method" ? "METHOD" : "PROPERTY"} {pou.name}.{member.name}
+        </strong>
+        <label>
+          {kind === "method" ? "Result type" : "Type"}{" "}
+          <input
+            aria-label={`${kind === "method" ? "Result type" : "Type"} of ${member.name}`}
+            value={typeField}
+            disabled={readOnly !== null}
+            spellCheck={false}
+            onChange={(e) =>
+              kind === "method"
+                ? change<Method>((m) => ({ ...m, return_type: e.target.value.trim() ? e.target.value : null }))
+                : change<Property>((p) => ({ ...p, type: e.target.value }))
+            }
+          />
+        </label>
+        {readOnly === null ? (
+          <>
+            <input
+              aria-label={`New name of ${member.name}`}
+              value={rename}
+              onChange={(e) => setRename(e.target.value)}
+              spellCheck={false}
+            />
+            <button type="button" onClick={() => onRename(rename)} disabled={rename.trim() === member.name}>
+              Rename
+            </button>
+            <button type="button" onClick={onDelete}>
+              Delete {member.name}
+            </button>
+          </>
+        ) : null}
+      </div>
+      {kind === "method"
+        ? [
+            text(
+              `${pou.name}.${member.name} declarations`,
+              (member as Method).declarations ?? "",
+              memberFile(pou.name, member.name, "declarations"),
+              (t) => change<Method>((m) => ({ ...m, declarations: t })),
+            ),
+            text(
+              `${pou.name}.${member.name} body`,
+              (member as Method).body ?? "",
+              memberFile(pou.name, member.name, "body"),
+              (t) => change<Method>((m) => ({ ...m, body: t })),
+              true,
+            ),
+          ]
+        : (["get", "set"] as const).flatMap((which) => {
+            const accessor = (member as Property)[which];
+            const update = (part: keyof Accessor) => (t: string) =>
+              change<Property>((p) => ({
+                ...p,
+                [which]: { ...(p[which] ?? { declarations: "", body: "" }), [part]: t },
+              }));
+            return accessor
+              ? [
+                  text(
+                    `${pou.name}.${member.name}.${which.toUpperCase()} declarations`,
+                    accessor.declarations ?? "",
+                    memberFile(pou.name, member.name, "declarations", which),
+                    update("declarations"),
+                  ),
+                  text(
+                    `${pou.name}.${member.name}.${which.toUpperCase()} body`,
+                    accessor.body ?? "",
+                    memberFile(pou.name, member.name, "body", which),
+                    update("body"),
+                  ),
+                ]
+              : [];
+          })}
+    </>
+  );
+}
