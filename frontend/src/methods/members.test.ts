@@ -1,0 +1,65 @@
+// The method and property operations of the Methods tab (issue 25): pure edits of a function block.
+import { describe, expect, it } from "vitest";
+import type { Pou } from "../generated/api";
+import { addMember, changeMember, deleteMember, memberFile, memberOf, renameMember, type Edited } from "./members";
+
+const fb: Pou = {
+  name: "Counter",
+  kind: "function_block",
+  language: "st",
+  declarations: "",
+  body: "",
+  methods: [
+    { name: "Bump", access: "PUBLIC", final: false, abstract: false, return_type: null, declarations: "", body: "" },
+  ],
+  properties: [
+    { name: "Level", type: "INT", access: "PUBLIC", get: { declarations: "", body: "Level := 1;" }, set: null },
+  ],
+};
+const ok = (edited: Edited): Pou => {
+  if (!edited.ok) throw new Error(edited.error);
+  return edited.pou;
+};
+
+describe("methods and properties of a function block", () => {
+  it("adds a method and a property with unique IEC names", () => {
+    const added = ok(addMember(ok(addMember(fb, "method", " Scaled ")), "property", "Speed"));
+    expect(added.methods!.map((m) => m.name)).toEqual(["Bump", "Scaled"]);
+    expect(added.properties!.map((p) => [p.name, p.type, p.get?.body, p.set?.body])).toEqual([
+      ["Level", "INT", "Level := 1;", undefined],
+      ["Speed", "INT", "", ""],
+    ]);
+    expect(addMember(fb, "method", "level")).toEqual({
+      ok: false,
+      error: "Counter already has a property called Level.",
+    });
+    expect(addMember(fb, "property", "2x")).toMatchObject({
+      ok: false,
+      error: expect.stringMatching(/^2x is not an IEC/),
+    });
+    expect(addMember({ ...fb, kind: "program" }, "method", "M")).toEqual({
+      ok: false,
+      error: "Only a function block has methods and properties.",
+    });
+  });
+
+  it("renames (also in another case), changes and deletes one member", () => {
+    expect(ok(renameMember(fb, "Bump", "BUMP")).methods![0]!.name).toBe("BUMP");
+    expect(renameMember(fb, "Bump", "Level")).toEqual({
+      ok: false,
+      error: "Counter already has a property called Level.",
+    });
+    const changed = ok(changeMember(fb, "bump", (m) => ({ ...m, body: "n := n + 1;" })));
+    expect(memberOf(changed, "BUMP")).toMatchObject({ kind: "method", member: { body: "n := n + 1;" } });
+    expect(deleteMember(fb, "LEVEL").properties).toEqual([]);
+    expect(changeMember(fb, "Nope", (m) => m)).toEqual({
+      ok: false,
+      error: "Counter has no method or property called Nope.",
+    });
+  });
+
+  it("names a member's texts as the checker's diagnostics do", () => {
+    expect(memberFile("Counter", "Bump", "body")).toBe("Counter.Bump/body");
+    expect(memberFile("Counter", "Level", "declarations", "get")).toBe("Counter.Level.GET/declarations");
+  });
+});

@@ -1,0 +1,102 @@
+"""Issue 25: methods and properties of a function block edited in the browser (CODESYS's objects under an FB). In
+the FB's Methods tab a method is added, given a result type, declarations and a body in the ST editor, saved and
+run: Main's call of it gives the value the method computes; a property's GET is edited; a method is renamed and
+another deleted; a breakpoint in the method's body halts there online. Expected values follow from the texts."""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+from playwright.sync_api import expect
+
+from .conftest import ARTIFACTS
+from .steps import _request, go_online, open_pou, store_project, watch
+from .test_cfc_workflow import cycles
+
+pytestmark = pytest.mark.browser
+
+PROJECT = {
+    "name": "methods",
+    "pous": [
+        {
+            "name": "Counter",
+            "kind": "function_block",
+            "language": "st",
+            "declarations": "VAR\n    n : INT;\nEND_VAR",
+            "body": "n := n + 1;",
+            "methods": [{"name": "Old", "body": ""}, {"name": "Unused", "body": ""}],
+            "properties": [{"name": "Level", "type": "INT", "get": {"body": "Level := 0;"}}],
+        },
+        {
+            "name": "Main",
+            "kind": "program",
+            "language": "st",
+            "declarations": "VAR\n    c : Counter;\n    y : INT;\n    lv : INT;\nEND_VAR",
+            "body": "c();\ny := c.Scaled(k := 3);\nlv := c.Level;\nc.Bump();",
+        },
+    ],
+}
+
+
+def editor(page, label: str):
+    return page.get_by_role("textbox", name=label)
+
+
+def test_add_edit_rename_and_delete_methods_then_run_and_halt_in_one(page, server):
+    store_project(server, PROJECT)
+    page.goto(server)
+    open_pou(page, "methods", "Counter")
+    page.get_by_role("tab", name="Methods").click()
+    members = page.get_by_role("list", name="Methods and properties of Counter")
+    expect(members.get_by_role("button")).to_have_text(["MOld", "MUnused", "PLevel"])
+
+    name = page.get_by_label("New method or property name")
+    name.fill("Scaled")
+    page.get_by_role("button", name="Add method", exact=True).click()
+    page.get_by_label("Result type of Scaled").fill("INT")
+    editor(page, "Counter.Scaled declarations").fill("VAR_INPUT\n    k : INT;\nEND_VAR")
+    editor(page, "Counter.Scaled body").fill("Scaled := n * k;")
+    name.fill("Scaled")
+    page.get_by_role("button", name="Add method", exact=True).click()
+    expect(page.get_by_text("Counter already has a method called Scaled.")).to_be_visible()
+
+    members.get_by_role("button", name="Old").click()
+    page.get_by_label("New name of Old").fill("Bump")
+    page.get_by_role("button", name="Rename", exact=True).click()
+    editor(page, "Counter.Bump body").fill("n := n + 10;")
+    members.get_by_role("button", name="Unused").click()
+    page.get_by_role("button", name="Delete Unused", exact=True).click()
+    members.get_by_role("button", name="Level").click()
+    editor(page, "Counter.Level.GET body").fill("Level := n * 2;")
+    expect(members.get_by_role("button")).to_have_text(["MBump", "MScaled", "PLevel"])
+    page.screenshot(path=str(ARTIFACTS / "methods-editor.png"))
+
+    page.keyboard.press("Control+s")
+    page.get_by_text("All changes saved").wait_for()
+    counter = _request("GET", f"{server}/api/projects/methods")["project"]["pous"][0]
+    assert [(m["name"], m["return_type"], m["body"]) for m in counter["methods"]] == [
+        ("Bump", None, "n := n + 10;"),
+        ("Scaled", "INT", "Scaled := n * k;"),
+    ]
+
+    # Online: one cycle gives what the texts compute. Scan 1: c() makes n 1, Scaled gives 1 * 3, Level 1 * 2,
+    # then Bump adds 10 (n = 11).
+    go_online(page, run=False)
+    cycles(page, 1)
+    expect(watch(page, "Main.y")).to_have_text("3")
+    expect(watch(page, "Main.lv")).to_have_text("2")
+    expect(watch(page, "Main.c.n")).to_have_text("11")
+
+    # A breakpoint on the first line of Scaled's body (F9 there): the next scan halts in the method.
+    page.get_by_role("tab", name="Methods").click()
+    members.get_by_role("button", name="Scaled").click()
+    editor(page, "Counter.Scaled body").focus()
+    page.keyboard.press("Control+Home")
+    page.keyboard.press("F9")
+    expect(page.get_by_role("tab", name="Breakpoints (1)")).to_be_visible()
+    page.keyboard.press("F5")
+    debug = page.get_by_role("region", name="Debugging")
+    debug.get_by_text("Halted at COUNTER.SCALED, line 1").wait_for()
+    expect(editor(page, "Counter.Scaled body").locator(".cm-halted-line")).to_have_text("Scaled := n * k;")
+    page.screenshot(path=str(ARTIFACTS / "methods-breakpoint.png"))
