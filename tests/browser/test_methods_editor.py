@@ -5,8 +5,6 @@ another deleted; a breakpoint in the method's body halts there online. Expected 
 
 from __future__ import annotations
 
-import re
-
 import pytest
 from playwright.sync_api import expect
 
