@@ -87,8 +87,10 @@ def test_add_edit_rename_and_delete_methods_then_run_and_halt_in_one(page, serve
     expect(watch(page, "Main.c.n")).to_have_text("11")
 
     # A breakpoint on the first line of Scaled's body (F9 there): the next scan halts in the method.
-    page.get_by_role("tab", name="Methods").click()
-    members.get_by_role("button", name="Scaled").click()
+    page.get_by_role("tab", name="Body").click()
+    tree = page.get_by_role("navigation", name="Project tree")
+    tree.get_by_role("button", name="Scaled : INT").click()  # opens the member in its FB's Methods tab
+    expect(page.get_by_role("tab", name="Methods")).to_have_attribute("aria-selected", "true")
     editor(page, "Counter.Scaled body").focus()
     page.keyboard.press("Control+Home")
     page.keyboard.press("F9")

@@ -291,7 +291,13 @@ function ProjectTree() {
                       </button>
                       <PouActions pou={p} />
                     </li>
-                    <PouMembers pou={p} open={() => openPou(p.name)} />
+                    <PouMembers
+                      pou={p}
+                      open={(member) => {
+                        openPou(p.name);
+                        panelsStore.getState().reveal({ pou: p.name, member });
+                      }}
+                    />
                   </Fragment>
                 ))}
               </ul>
@@ -482,7 +488,7 @@ function PouView({ name }: { name: string }) {
   const [focusSeen, setFocusSeen] = useState(focus);
   if (focus !== focusSeen) {
     setFocusSeen(focus);
-    if (focus) setMode(focus.part === "declarations" ? "declarations" : "body");
+    if (focus) setMode(focus.member ? "methods" : focus.part === "declarations" ? "declarations" : "body");
   }
   if (!pou || !project) return <p className="placeholder">{name} is no longer in this project.</p>;
   const modes: { id: PouMode; label: string }[] = [
@@ -508,7 +514,7 @@ function PouView({ name }: { name: string }) {
   } else if (mode === "variables") {
     content = <VariablesView pou={pou} instancePicker={<InstancePicker pou={pou.name} />} />;
   } else if (mode === "methods") {
-    content = <MethodsView pou={pou} />;
+    content = <MethodsView pou={pou} focus={focus?.member ? focus : null} />;
   } else if (mode === "st") {
     content = (
       <StView

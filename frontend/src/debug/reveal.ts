@@ -1,6 +1,6 @@
 // Shows a place of the project in its editor: opens the POU (named in any case: the simulation
 // reports halts in the compiled spelling) and asks the editor to select and scroll to the place.
-import { panelsStore } from "../panels/store";
+import { methodPlace, panelsStore } from "../panels/store";
 import { workspaceStore } from "../store/project";
 
 export interface Place {
@@ -12,7 +12,9 @@ export interface Place {
 
 export function revealPlace(target: Place): void {
   const ws = workspaceStore.getState();
-  const pou = ws.project?.pous?.find((p) => p.name.toUpperCase() === target.pou.toUpperCase())?.name ?? target.pou;
+  const named = (name: string) => ws.project?.pous?.find((p) => p.name.toUpperCase() === name.toUpperCase())?.name;
+  const method = named(target.pou) ? null : methodPlace(target.pou); // a method's code: its FB's Methods tab
+  const pou = named(method?.pou ?? target.pou) ?? target.pou;
   ws.openPou(pou);
-  panelsStore.getState().reveal({ ...target, pou, part: "body" });
+  panelsStore.getState().reveal({ ...target, pou, part: "body", member: method?.member ?? null });
 }

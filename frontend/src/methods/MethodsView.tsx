@@ -7,6 +7,7 @@ import { describeBreakpoint } from "../debug/breakpoints";
 import { movedLine } from "../debug/follow";
 import { debugStore, useDebug } from "../debug/store";
 import { useOnline } from "../online/store";
+import type { Focus } from "../panels/store";
 import { StEditor } from "../st/StEditor";
 import { useStAssist } from "../st/useStAssist";
 import { workspaceStore } from "../store/project";
@@ -22,8 +23,16 @@ import {
   type MemberKind,
 } from "./members";
 
-export function MethodsView({ pou }: { pou: Pou }) {
-  const [selected, setSelected] = useState<string | null>(pou.methods?.[0]?.name ?? pou.properties?.[0]?.name ?? null);
+export function MethodsView({ pou, focus }: { pou: Pou; focus: Focus | null }) {
+  const [selected, setSelected] = useState<string | null>(
+    focus?.member ?? pou.methods?.[0]?.name ?? pou.properties?.[0]?.name ?? null,
+  );
+  // A member chosen in the tree, or a diagnostic or halt in its text, selects it (as the request arrives).
+  const [focusSeen, setFocusSeen] = useState(focus);
+  if (focus !== focusSeen) {
+    setFocusSeen(focus);
+    if (focus?.member) setSelected(memberOf(pou, focus.member)?.member.name ?? focus.member);
+  }
   const [name, setName] = useState("");
   const [error, setError] = useState<string | null>(null);
   const online = useOnline((s) => s.phase !== "offline");
@@ -74,6 +83,7 @@ export function MethodsView({ pou }: { pou: Pou }) {
         {found ? (
           <MemberEditor
             key={found.member.name}
+            focus={focus?.member?.toUpperCase() === found.member.name.toUpperCase() ? focus : null}
             pou={pou}
             kind={found.kind}
             member={found.member}
@@ -144,7 +154,9 @@ function MemberEditor({
   readOnly,
   onRename,
   onDelete,
+  focus,
 }: {
+  focus: Focus | null;
   pou: Pou;
   kind: MemberKind;
   member: Method | Property;
@@ -176,6 +188,9 @@ function MemberEditor({
         readOnly={readOnly}
         label={label}
         debug={debugged ? debug : undefined}
+        focusLine={
+          focus?.line != null && file.endsWith(`/${focus.part ?? "body"}`) ? { line: focus.line, seq: focus.seq } : null
+        }
       />
     </div>
   );

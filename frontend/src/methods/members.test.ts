@@ -1,6 +1,7 @@
 // The method and property operations of the Methods tab (issue 25): pure edits of a function block.
 import { describe, expect, it } from "vitest";
 import type { Pou } from "../generated/api";
+import { focusOf, methodPlace } from "../panels/store";
 import { addMember, changeMember, deleteMember, memberFile, memberOf, renameMember, type Edited } from "./members";
 
 const fb: Pou = {
@@ -61,5 +62,23 @@ describe("methods and properties of a function block", () => {
   it("names a member's texts as the checker's diagnostics do", () => {
     expect(memberFile("Counter", "Bump", "body")).toBe("Counter.Bump/body");
     expect(memberFile("Counter", "Level", "declarations", "get")).toBe("Counter.Level.GET/declarations");
+  });
+});
+
+describe("places in a member's texts", () => {
+  it("a diagnostic in a method or accessor text reveals the member in its FB's Methods tab", () => {
+    const inMethod = { code: "ST-TYPE", message: "", file: "Counter.Scaled/body", pou: "Counter.Scaled", line: 2 };
+    expect(focusOf(inMethod)).toEqual({ pou: "Counter", member: "Scaled", line: 2, part: "body" });
+    const inGet = { code: "X", message: "", file: "Counter.Level.GET/declarations", pou: "Counter.Level.GET", line: 1 };
+    expect(focusOf(inGet)).toEqual({ pou: "Counter", member: "Level", line: 1, part: "declarations" });
+    expect(focusOf({ code: "X", message: "", file: "Main/body", pou: "Main", line: 3 })).toMatchObject({
+      pou: "Main",
+      part: "body",
+    });
+  });
+
+  it("a halt in a method, named as the engine names it, is its FB and the member", () => {
+    expect(methodPlace("COUNTER.SCALED")).toEqual({ pou: "COUNTER", member: "SCALED" });
+    expect(methodPlace("MAIN")).toBeNull();
   });
 });

@@ -18,6 +18,8 @@ export interface Focus {
   line?: number | null;
   /** The declarations or the body (diagnostics name the file `<POU>/declarations` or `<POU>/body`). */
   part?: "declarations" | "body" | null;
+  /** A method or property of the function block `pou` (its texts are the files `<FB>.<member>/...`). */
+  member?: string | null;
   /** Increases with every request, so revealing the same place twice still moves the editor. */
   seq: number;
 }
@@ -61,7 +63,15 @@ export function focusOf(d: Diagnostic): Omit<Focus, "seq"> | null {
   if (projectPart) return { pou: projectPart, network: null, element: null, line: d.line ?? null, part: null };
   if (!d.pou) return null;
   const part = d.file?.endsWith("/declarations") ? "declarations" : d.file?.endsWith("/body") ? "body" : null;
+  const method = /^([A-Za-z_][A-Za-z0-9_]*)\.([A-Za-z_][A-Za-z0-9_]*)[^/]*\/(declarations|body)$/.exec(d.file ?? "");
+  if (method) return { pou: method[1]!, member: method[2]!, line: d.line ?? null, part };
   return { pou: d.pou, network: d.network ?? null, element: d.element ?? null, line: d.line ?? null, part };
+}
+
+/** A POU named as the engine names a method's code (`COUNTER.SCALED`, a halt's place): its FB and the member. */
+export function methodPlace(pou: string): { pou: string; member: string } | null {
+  const match = /^([A-Za-z_][A-Za-z0-9_]*)\.([A-Za-z_][A-Za-z0-9_]*)/.exec(pou);
+  return match ? { pou: match[1]!, member: match[2]! } : null;
 }
 
 export const emptyPanels: PanelsData = {

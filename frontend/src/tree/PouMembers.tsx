@@ -8,9 +8,9 @@ function memberLabel(name: string, type: string | null | undefined, access: stri
 
 /**
  * A function block's methods and properties under it in the project tree (docs/st.md, object orientation), with
- * the FB it extends; choosing one opens the FB, whose file holds them.
+ * the FB it extends; choosing one opens it in the FB's Methods tab.
  */
-export function PouMembers({ pou, open }: { pou: Pou; open(): void }) {
+export function PouMembers({ pou, open }: { pou: Pou; open(member: string): void }) {
   const methods = pou.methods ?? [];
   const properties = pou.properties ?? [];
   if (!methods.length && !properties.length && !pou.extends && !pou.implements?.length) return null;
@@ -24,7 +24,7 @@ export function PouMembers({ pou, open }: { pou: Pou; open(): void }) {
         {heritage.length ? <li className="tree-meta">{heritage.join(" ")}</li> : null}
         {methods.map((m) => (
           <li key={`m-${m.name}`}>
-            <button type="button" className="tree-item tree-member" onClick={open}>
+            <button type="button" className="tree-item tree-member" onClick={() => open(m.name)}>
               <span className="tree-kind">M</span>
               <span className="tree-name">{memberLabel(m.name, m.return_type, m.access)}</span>
             </button>
@@ -32,7 +32,7 @@ export function PouMembers({ pou, open }: { pou: Pou; open(): void }) {
         ))}
         {properties.map((p) => (
           <li key={`p-${p.name}`}>
-            <button type="button" className="tree-item tree-member" onClick={open}>
+            <button type="button" className="tree-item tree-member" onClick={() => open(p.name)}>
               <span className="tree-kind">P</span>
               <span className="tree-name">{memberLabel(p.name, p.type, p.access)}</span>
             </button>
