@@ -11,9 +11,7 @@ import { StEditor } from "../st/StEditor";
 import { StOnlineBar } from "../st/StOnlineBar";
 import { useStAssist } from "../st/useStAssist";
 import { useStOnline } from "../st/useStOnline";
-import { describeBreakpoint } from "../debug/breakpoints";
-import { movedLine } from "../debug/follow";
-import { debugStore, useDebug } from "../debug/store";
+import { useTextDebug } from "../debug/useTextDebug";
 import { useTestCheck, useTestCompletions } from "../tests/assist";
 import { coverageLines, coverageOf } from "../tests/coverage";
 import { testsStore, useTests } from "../tests/store";
@@ -42,25 +40,8 @@ export function StPouView({ pou }: { pou: Pou }) {
   );
   const online = useStOnline(pou, body, scope);
   const readOnly = phase === "offline" ? null : "Online: go offline to edit.";
-  const allBreakpoints = useDebug((s) => s.breakpoints);
-  const upper = pou.name.toUpperCase();
-  const same = (name: string) => name.toUpperCase() === upper;
-  const lines = useMemo(
-    () => allBreakpoints.flatMap((b) => ("line" in b && b.pou.toUpperCase() === upper ? [b.line] : [])),
-    [allBreakpoints, upper],
-  );
-  const at = useOnline((s) => (s.monitor.state === "halted" ? s.monitor.at : null));
   const covered = useTests((s) => coverageOf(s.coverage, pou.name));
-  const debug = {
-    breakpoints: lines,
-    halted: at && same(at.pou) && at.line != null ? at.line : null,
-    onToggle: (line: number) => debugStore.getState().toggle({ pou: pou.name, line }),
-    onLinesMoved: (move: (line: number) => number | null) =>
-      debugStore.getState().follow(
-        (bp) => movedLine(bp, pou.name, move),
-        (bp) => `The breakpoint at ${describeBreakpoint(bp)} was removed: the text of its line was deleted.`,
-      ),
-  };
+  const debug = useTextDebug(pou.name);
   return (
     <div
       className="st-pou"

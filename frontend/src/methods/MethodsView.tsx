@@ -3,9 +3,7 @@
 // texts, edited in the ST editor with the live check's diagnostics; breakpoints in a method's body.
 import { useState, type FormEvent } from "react";
 import type { Accessor, Method, Pou, Property } from "../generated/api";
-import { describeBreakpoint } from "../debug/breakpoints";
-import { movedLine } from "../debug/follow";
-import { debugStore, useDebug } from "../debug/store";
+import { useTextDebug } from "../debug/useTextDebug";
 import { useOnline } from "../online/store";
 import type { Focus } from "../panels/store";
 import { StEditor } from "../st/StEditor";
@@ -103,24 +101,6 @@ export function MethodsView({ pou, focus }: { pou: Pou; focus: Focus | null }) {
   );
 }
 
-/** Breakpoints in a method's body (the engine's POU ``FB.M``: ``Simulation.set_breakpoint``), as StPouView's. */
-function useBodyDebug(method: string) {
-  const upper = method.toUpperCase();
-  const breakpoints = useDebug((s) => s.breakpoints);
-  const lines = breakpoints.flatMap((b) => ("line" in b && b.pou.toUpperCase() === upper ? [b.line] : []));
-  const at = useOnline((s) => (s.monitor.state === "halted" ? s.monitor.at : null));
-  return {
-    breakpoints: lines,
-    halted: at && at.pou.toUpperCase() === upper && at.line != null ? at.line : null,
-    onToggle: (line: number) => debugStore.getState().toggle({ pou: method, line }),
-    onLinesMoved: (move: (line: number) => number | null) =>
-      debugStore.getState().follow(
-        (bp) => movedLine(bp, method, move),
-        (bp) => `The breakpoint at ${describeBreakpoint(bp)} was removed: the text of its line was deleted.`,
-      ),
-  };
-}
-
 function MemberRow({
   kind,
   name,
@@ -176,7 +156,7 @@ function MemberEditor({
       }));
   };
   const typeField = kind === "method" ? ((member as Method).return_type ?? "") : (member as Property).type;
-  const debug = useBodyDebug(`${pou.name}.${member.name}`);
+  const debug = useTextDebug(`${pou.name}.${member.name}`); // the engine's POU of a method: FB.M
   const text = (label: string, value: string, file: string, onChange: (text: string) => void, debugged = false) => (
     <div key={file} style={{ flex: "1 1 0", minHeight: "6rem", overflow: "hidden", borderBottom: "1px solid #ccc" }}>
       <StEditor
