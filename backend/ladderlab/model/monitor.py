@@ -346,6 +346,11 @@ class HistoryRange(BaseModel):
     marked: int = Field(default=0, description="Grows when a scan gets a mark: fetch history/marks again.")
     branch: int = Field(default=1, description="The live branch (a fork, continue from here, starts a new one).")
     viewing_branch: int | None = Field(default=None, description="The branch of the scan shown; null: live.")
+    recording: bool = Field(
+        default=False,
+        description="An opened recording, history only: no scan runs and no input applies until a continue from "
+        "one of its scans (fork).",
+    )
 
 
 class Values(BaseModel):

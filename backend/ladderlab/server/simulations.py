@@ -12,7 +12,8 @@ from __future__ import annotations
 import json
 from typing import Annotated, Any
 
-from fastapi import APIRouter, Body, Depends, Request, Response, status
+from fastapi import APIRouter, Body, Depends, Query, Request, Response, status
+from starlette.concurrency import run_in_threadpool
 
 from ..model.api import (
     HistoryDiff,
@@ -24,10 +25,11 @@ from ..model.api import (
     SeekScan,
     SimulationInfo,
 )
-from ..simulation.recording import Recording
+from ..simulation.recording import Recording, parse_recording
 from ..simulation.registry import SimulationEntry, SimulationRegistry
 from ..simulation.remote import BuildFailed
 from ..simulation.runner import CommandError
+from ..storage.workspace import StoredProject, Workspace
 from .context import WorkspaceDep, modified_at, registry_of
 from .errors import ApiError, responses, summarise
 
@@ -52,15 +54,73 @@ _DESCRIBED = responses(404, 409, 422)
 def create_simulation(name: str, workspace: WorkspaceDep, registry: RegistryDep, response: Response) -> SimulationInfo:
     """Build the saved project (monitor variant) into a stopped simulation, in a process of its own."""
     registry.check_room()
-    stored = workspace.load(name)
+    entry = _built(name, workspace.load(name), registry)
+    response.headers["Location"] = f"/api/simulations/{entry.id}"
+    return simulation_info(entry)
+
+
+def _built(name: str, stored: StoredProject, registry: SimulationRegistry) -> SimulationEntry:
+    """A new simulation of the saved project ``stored``; 422 with the diagnostics when it does not compile."""
     try:
-        entry = registry.create(stored.project, stored.revision)
+        return registry.create(stored.project, stored.revision)
     except BuildFailed as failure:
         errors = [d for d in failure.diagnostics if d.severity == "error"]
         reason = summarise(errors) if errors else failure.message
         raise ApiError(422, f"project {name!r} does not compile: {reason}", failure.diagnostics) from None
+
+
+@router.post(
+    "/api/projects/{name}/recordings",
+    status_code=status.HTTP_201_CREATED,
+    response_model=SimulationInfo,
+    responses=responses(404, 409, 413, 422, 429),
+    openapi_extra={
+        "requestBody": {
+            "required": True,
+            "content": {"application/json": {"schema": {"type": "string", "description": "a recording file"}}},
+        }
+    },
+)
+async def open_recording(
+    name: str,
+    request: Request,
+    workspace: WorkspaceDep,
+    registry: RegistryDep,
+    response: Response,
+    file: Annotated[str, Query(description="the file's name, for the messages")] = "the recording",
+) -> SimulationInfo:
+    """Open a recording (the file ``ladderlab run --record`` writes or "Download recording" gives) as a
+    history-only simulation of the saved project: its scans are run at once with their recorded inputs, as
+    ``ladderlab replay`` runs them, so every one can be viewed, compared and continued from. 409 when the project
+    is not at the recording's revision, 422 when the file is not a recording."""
+    data = await request.body()
+    return await run_in_threadpool(_open_recording, name, data, file, workspace, registry, response)
+
+
+def _open_recording(
+    name: str, data: bytes, file: str, workspace: Workspace, registry: SimulationRegistry, response: Response
+) -> SimulationInfo:
+    registry.check_room()
+    stored = workspace.load(name)
+    try:
+        record = parse_recording(data, file)
+    except ValueError as error:
+        raise ApiError(422, str(error)) from None
+    if record.revision != stored.revision:
+        raise ApiError(
+            409,
+            f"{file} was recorded with revision {record.revision} of {record.project}; project {name!r} is now at "
+            f"revision {stored.revision}: open it in the project as it was when it was recorded",
+        )
+    entry = _built(name, stored, registry)
+    try:
+        timeout = entry.handle.settings.build_timeout_s  # the scans run at once: as long as a history question
+        info = _command(entry, "open_recording", timeout=timeout, inputs=record.inputs, scans=record.scans)
+    except ApiError:
+        registry.delete(entry.id)
+        raise
     response.headers["Location"] = f"/api/simulations/{entry.id}"
-    return simulation_info(entry)
+    return info
 
 
 @router.get("/api/simulations", response_model=list[SimulationInfo])

@@ -54,6 +54,7 @@ from ..ir import nodes as ir
 from ..ir import types as t
 from ..model.monitor import MAX_SPEED, MIN_SPEED, At, DisplayType, ErrorCode, Log, LogKind, LogLevel, TraceTrigger
 from .conditions import BadCondition, Condition, parse_condition
+from .events import events_text, parse_events, scan_inputs
 from .history import History, HistoryUnavailable
 from .trace import TraceBook, TraceRefused, plan_trace
 
@@ -214,6 +215,7 @@ class SimRunner:
         self._view_reader = self._reader
         self._until: Condition | None = None
         self._until_ms: float | None = None
+        self._recording_only = False  # an opened recording: history only until a fork (open_recording)
 
     # ------------------------------------------------------------------ other threads
 
@@ -251,6 +253,12 @@ class SimRunner:
         try:
             if handler is None:
                 raise CommandError("bad_state", f"unknown command {op!r}")
+            if self._recording_only and op in self._LIVE_OPS:
+                raise CommandError(
+                    "bad_state",
+                    "this simulation shows a recording, history only: go to one of its scans and continue from "
+                    "there (Continue from here) to run it or change its inputs",
+                )
             result = handler(self, **args)
         except CommandError as error:
             failure = error
@@ -644,7 +652,32 @@ class SimRunner:
             "marked": history.marked,
             "branch": len(self.branches) + 1,
             "viewing_branch": self._branch_number(viewed) if viewed is not None else None,
+            "recording": self._recording_only,
         }
+
+    def open_recording(self, inputs: list[dict[str, Any]], scans: int) -> dict[str, Any] | None:
+        """Run a recording's ``scans`` at once, each one's recorded ``inputs`` (``AppliedInput.to_json()`` lines)
+        submitted before it as ``ladderlab replay`` does, into the history of this new simulation; then show its
+        last scan. The simulation stays history only (``_LIVE_OPS`` are refused) until a ``fork``."""
+        history = self._recorded()
+        if self.sim.scan_count != 0 or self.journal:
+            raise CommandError("bad_state", "a recording opens in a new simulation, before its first scan")
+        try:
+            scheduled = parse_events(events_text(inputs), "the recording's inputs")
+        except ValueError as error:
+            raise CommandError("bad_value", str(error)) from None
+        try:
+            for _ in scan_inputs(self.sim, scheduled, cycles=scans):
+                self._settle()
+                if self.sim.fault is not None:
+                    break  # as ladderlab replay: the scan that faulted is the recording's last
+        except (UnknownPath, InputRefused, ValueError) as error:
+            raise CommandError("bad_value", f"the recording's inputs do not fit this project: {error}") from None
+        self._recording_only = True
+        self._log("state", "info", f"opened a recording of {self.sim.scan_count} scans: history only")
+        if history.last < history.first:
+            return self.history_range()  # no scan: nothing to show
+        return self.seek(history.last + 1)
 
     def _branch_number(self, history: History) -> int:
         return self.branches.index(history) + 1 if history in self.branches else len(self.branches) + 1
@@ -705,6 +738,7 @@ class SimRunner:
             self.branches.pop(0)  # the oldest branch goes: all branches share the one budget
         self.history = History(self.sim, budget_bytes=budget - sum(b.size for b in self.branches))
         self._seen_scans, self._seen_faults, self._faulted = self.sim.scan_count, 0, False
+        self._recording_only = False
         self.live()
         self._log(
             "state", "info", f"continued from scan {scan} of branch {origin}: branch {len(self.branches) + 1} is live"
@@ -939,7 +973,14 @@ class SimRunner:
         "history_diff": history_diff,
         "history_marks": history_marks,
         "fork": fork,
+        "open_recording": open_recording,
     }
+
+    #: What runs scans or applies inputs: refused while an opened recording is shown (history only).
+    _LIVE_OPS: ClassVar[frozenset[str]] = frozenset(
+        {"run", "reset", "single_cycle", "continue", "step", "write", "force", "unforce", "unforce_all", "panel"}
+        | {"inject", "inject_clear", "run_until"}
+    )
 
 
 def _shown_numbers(scan: int, history: History) -> str:

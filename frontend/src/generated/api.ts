@@ -339,6 +339,29 @@ export interface paths {
     patch?: never;
     trace?: never;
   };
+  "/api/projects/{name}/recordings": {
+    parameters: {
+      query?: never;
+      header?: never;
+      path?: never;
+      cookie?: never;
+    };
+    get?: never;
+    put?: never;
+    /**
+     * Open Recording
+     * @description Open a recording (the file ``ladderlab run --record`` writes or "Download recording" gives) as a
+     *     history-only simulation of the saved project: its scans are run at once with their recorded inputs, as
+     *     ``ladderlab replay`` runs them, so every one can be viewed, compared and continued from. 409 when the project
+     *     is not at the recording's revision, 422 when the file is not a recording.
+     */
+    post: operations["open_recording_api_projects__name__recordings_post"];
+    delete?: never;
+    options?: never;
+    head?: never;
+    patch?: never;
+    trace?: never;
+  };
   "/api/projects/{name}/rename": {
     parameters: {
       query?: never;
@@ -1532,6 +1555,12 @@ export interface components {
        * @default 0
        */
       marked?: number;
+      /**
+       * Recording
+       * @description An opened recording, history only: no scan runs and no input applies until a continue from one of its scans (fork).
+       * @default false
+       */
+      recording?: boolean;
       /**
        * Viewing
        * @description The scan shown instead of the live one; null: live.
@@ -4752,6 +4781,81 @@ export interface operations {
       };
       /** @description Bad name, invalid model or a project that does not load; see the diagnostics. */
       422: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["ErrorResponse"];
+        };
+      };
+    };
+  };
+  open_recording_api_projects__name__recordings_post: {
+    parameters: {
+      query?: {
+        /** @description the file's name, for the messages */
+        file?: string;
+      };
+      header?: never;
+      path: {
+        name: string;
+      };
+      cookie?: never;
+    };
+    requestBody: {
+      content: {
+        "application/json": string;
+      };
+    };
+    responses: {
+      /** @description Successful Response */
+      201: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["SimulationInfo"];
+        };
+      };
+      /** @description No such project or POU. */
+      404: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["ErrorResponse"];
+        };
+      };
+      /** @description The project already exists, or a save is based on an old revision (ConflictDetail). */
+      409: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json":
+            components["schemas"]["ErrorResponse"] | components["schemas"]["ConflictResponse"];
+        };
+      };
+      /** @description The request body or the project is too large. */
+      413: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["ErrorResponse"];
+        };
+      };
+      /** @description Bad name, invalid model or a project that does not load; see the diagnostics. */
+      422: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["ErrorResponse"];
+        };
+      };
+      /** @description Too many projects in the workspace. */
+      429: {
         headers: {
           [name: string]: unknown;
         };

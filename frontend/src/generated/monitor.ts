@@ -590,6 +590,10 @@ export interface HistoryRange {
    */
   marked?: number;
   /**
+   * An opened recording, history only: no scan runs and no input applies until a continue from one of its scans (fork).
+   */
+  recording?: boolean;
+  /**
    * The scan shown instead of the live one; null: live.
    */
   viewing?: number | null;
