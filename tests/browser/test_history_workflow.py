@@ -206,3 +206,39 @@ def test_the_trace_chart_and_the_timeline_move_together(page, server):
     banner.filter(has_text="Viewing scan 5 (history)").wait_for()
     page.wait_for_function("() => document.querySelector('.trace-plot')?.dataset.viewingScan === '5'")
     motor.filter(has_text=re.compile("^TRUE$")).wait_for()
+
+
+def test_the_timeline_marks_the_scan_a_trace_trigger_fired_at(page, server):
+    """Issue 23 item 3: a trace of Motor triggered on its rising edge; Start is written before scan 4, so Motor
+    rises at the end of scan 4 and the trace says so; the timeline marks scan 4 in the trigger's colour (a trigger
+    outranks the write of the same scan), and a click on the mark shows scan 4 with the coil on."""
+    scan, cycle = _online_motor(page, server)
+    page.get_by_role("tab", name="Trace").click()
+    page.get_by_label("Variable to trace").fill("Motor")
+    page.keyboard.press("Enter")
+    page.get_by_label("Trigger variable").fill("Motor")
+    page.get_by_label("Trigger condition").select_option("rising")
+    page.get_by_role("button", name="Start trace").click()
+    status = page.get_by_role("status", name="Trace state")
+    status.filter(has_text="Waiting for the trigger").wait_for()
+    for number in (1, 2, 3):
+        cycle.click()
+        scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
+    start = page.locator('g.ld-element[data-id="start"]')
+    start.locator(".ld-hit").dblclick()
+    start.locator(".ld-prepared").filter(has_text="<TRUE>").wait_for()
+    page.keyboard.press("Control+F7")
+    for number in (4, 5):
+        cycle.click()
+        scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
+    status.filter(has_text="triggered at scan 4").wait_for()
+
+    timeline = page.get_by_role("group", name="Scan history")
+    mark = timeline.locator('.history-mark[data-mark-scan="4"]')
+    mark.wait_for()
+    assert mark.get_attribute("class") == "history-mark trigger"
+    assert mark.get_attribute("aria-label") == "scan 4: trigger, write"
+    assert timeline.locator(".history-mark").count() == 1  # nothing else happened in scans 1 to 5
+    mark.click()
+    page.get_by_role("status", name="History view").filter(has_text="Viewing scan 4 (history)").wait_for()
+    _coil(page, "on")

@@ -67,7 +67,7 @@ export function HistoryBar() {
         Live
       </button>
       <span className="history-range" aria-label="History kept">
-        from scan {history.first}
+        {history.recording ? "recording · history only · " : ""}from scan {history.first}
         {(history.branch ?? 1) > 1 ? ` · branch ${history.branch} live` : ""}
       </span>
       <HistoryFind scan={scan} />
