@@ -7,6 +7,7 @@ exactly the same, whatever the inputs, checkpoints and evictions in between."""
 
 from __future__ import annotations
 
+import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
@@ -434,3 +435,60 @@ def test_seeks_equal_the_live_scans_of_every_branch_after_forks(branches, forks)
                 continue
             runner.seek(scan, branch=number)
             assert runner.shown.snapshot() == values, f"branch {number}, scan {scan}"
+
+
+STEPPED = source_to_project(
+    """
+PROGRAM Main
+VAR
+    A, B, C : INT;
+END_VAR
+A := A + 1;
+B := A * 10;
+C := B + A;
+END_PROGRAM
+
+CONFIGURATION Cfg
+    RESOURCE Res ON PLC
+        TASK Fast (INTERVAL := T#10ms, PRIORITY := 1);
+        PROGRAM Main WITH Fast : Main;
+    END_RESOURCE
+END_CONFIGURATION
+"""
+)[0]
+
+
+def test_step_through_a_past_scan_line_by_line_without_changing_the_history():
+    """Issue 23 item 3 ("one network within a scan"): scan 2 (the third) replayed in the debug variant from the
+    state scan 1 left (A = 2, B = 20, C = 22), its recorded write A := 100 applied at its start; each step halts
+    before the next line, so the values are those of the lines run so far: line 6 (A := A + 1) halts with
+    A = 100, line 7 after it with A = 101, line 8 with B = 1010, and the end of the scan has C = 1111, which is
+    what a seek to scan 2 shows. The live simulation and the recorded scans are untouched."""
+    sim = Simulation(build_project(STEPPED, "monitor").compiled)
+    history = History(sim, min_interval=1)
+    _record(sim, history)
+    sim.cycle(2)
+    sim.write("Main.A", 100)
+    sim.cycle(2)
+    live = sim.snapshot()
+    debug = build_project(STEPPED, "debug").compiled
+
+    stepper = history.stepper(2, debug)
+    seen = []
+    halt = stepper.step("statement")
+    while halt is not None:
+        values = stepper.snapshot()
+        seen.append((halt.origin.line, values["MAIN.A"], values["MAIN.B"], values["MAIN.C"]))
+        halt = stepper.step("statement")
+    assert seen == [(6, 100, 20, 22), (7, 101, 20, 22), (8, 101, 1010, 22)]
+    end = stepper.snapshot()
+    assert (end["MAIN.A"], end["MAIN.B"], end["MAIN.C"]) == (101, 1010, 1111)
+    assert end == history.seek(2).snapshot()
+    assert stepper.scan_count == 3 and stepper.time_ms == 30.0
+
+    assert sim.snapshot() == live and sim.scan_count == 4  # the live simulation did not move
+    assert history.seek(3).snapshot()["MAIN.C"] == 1122  # A 102, B 1020: the scans after it stay as recorded
+    first = history.stepper(0, debug)  # the first scan starts from the initial checkpoint
+    assert first.step("statement").origin.line == 6 and first.snapshot()["MAIN.A"] == 0
+    with pytest.raises(HistoryUnavailable, match=r"^scan 4 has not run yet \(the last scan is 3\)$"):
+        history.stepper(4, debug)
