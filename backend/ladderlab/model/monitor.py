@@ -335,6 +335,13 @@ class DisplayType(BaseModel):
     names: dict[str, str] | None = Field(default=None, description="An enumeration's value names by value.")
 
 
+class HistoryStepPoint(BaseModel):
+    """Where a step through the scan shown (``POST .../history/step``) stands."""
+
+    at: At | None = Field(default=None, description="The network or line it halted before; null: the scan ended.")
+    where: str | None = Field(default=None, description="The same in words: MAIN, network 2 / MAIN, line 7.")
+
+
 class HistoryRange(BaseModel):
     """The scans the scan history can show (numbered as ``values.scan``), and the one shown (null: live)."""
 
@@ -350,6 +357,9 @@ class HistoryRange(BaseModel):
         default=False,
         description="An opened recording, history only: no scan runs and no input applies until a continue from "
         "one of its scans (fork).",
+    )
+    stepping: HistoryStepPoint | None = Field(
+        default=None, description="The scan shown is being stepped through; null: it is shown complete."
     )
 
 

@@ -19,6 +19,7 @@ from ..model.api import (
     HistoryDiff,
     HistoryFound,
     HistoryMark,
+    HistoryStep,
     IoPoint,
     ResetSimulation,
     ScanTimes,
@@ -240,6 +241,18 @@ def seek(sim_id: str, registry: RegistryDep, body: Annotated[SeekScan, Body()]) 
 def live(sim_id: str, registry: RegistryDep) -> SimulationInfo:
     """Show the live scans again after a seek."""
     return _command(registry.get(sim_id), "live")
+
+
+@router.post("/api/simulations/{sim_id}/history/step", response_model=SimulationInfo, responses=_DESCRIBED)
+def history_step(
+    sim_id: str, registry: RegistryDep, body: Annotated[HistoryStep | None, Body()] = None
+) -> SimulationInfo:
+    """Step through the scan shown (after a seek): the first step replays it in the debug variant from the scan
+    before it and halts at its first network or line, each next one at the next; the values and power flow are
+    those of that point (``history.stepping`` says where). The history and the live simulation stay as they are."""
+    granularity = body.granularity if body is not None else "statement"
+    entry = registry.get(sim_id)
+    return _command(entry, "history_step", timeout=entry.handle.settings.build_timeout_s, granularity=granularity)
 
 
 @router.get("/api/simulations/{sim_id}/history/find", response_model=HistoryFound, responses=_DESCRIBED)

@@ -274,18 +274,19 @@ class History:
         """A new simulation of ``debug`` (the program's debug variant) at the start of ``scan``: the state the scan
         before it left, with ``scan``'s recorded inputs waiting, so ``step`` goes through that scan network by
         network or line by line and its end is what ``seek(scan)`` shows. Neither the live simulation nor the
-        replay is touched, so the history stays as recorded. HistoryUnavailable for a scan that cannot be redone
-        (changed at a breakpoint, ended with a fault, at a time the schedule did not choose) or whose previous
-        state is no longer kept."""
+        replay is touched, so the history stays as recorded. HistoryUnavailable outside the history (a seek's
+        words), or saying why (``it ...``) for a scan that cannot be redone (changed at a breakpoint, ended with a
+        fault, at a time the schedule did not choose) or whose previous state is no longer kept."""
         if not self.first <= scan <= self.last:
             self.seek(scan)  # raises HistoryUnavailable with the words of a seek
         if scan < self.checkpoints[0].scan:
-            raise HistoryUnavailable(f"scan {scan} is the oldest kept: the state before it is no longer in the history")
-        if scan in self._barriers or scan in self._times:
-            why = "ended with a runtime error" if scan in self._errors else "was changed while it was halted"
-            if scan in self._times:
-                why = "ran at a time of its caller's choosing"
-            raise HistoryUnavailable(f"scan {scan} cannot be stepped through again: it {why}")
+            raise HistoryUnavailable("it is the oldest scan kept: the state before it is no longer in the history")
+        if scan in self._times:
+            raise HistoryUnavailable("it ran at a time of its caller's choosing")
+        if scan in self._barriers:
+            raise HistoryUnavailable(
+                "it ended with a runtime error" if scan in self._errors else "it was changed while halted"
+            )
         checkpoint = self._checkpoint_at(scan)
         state = checkpoint.state(self._paths) if checkpoint.scan == scan else self.seek(scan - 1).state()
         stepper = Simulation(debug)

@@ -44,7 +44,7 @@ from dataclasses import dataclass
 from typing import Any, ClassVar, Protocol
 
 from ..engine.codegen.faults import Fault
-from ..engine.compile import CompileError
+from ..engine.compile import CompiledProgram, CompileError, compile_program
 from ..engine.debug import Halt
 from ..engine.inputs import AppliedInput, InputEvent, InputRefused
 from ..engine.paths import Location, UnknownPath
@@ -211,6 +211,8 @@ class SimRunner:
         self._view_history: History | None = None  # the history the scan shown comes from
         self._view: Simulation | None = None
         self._viewing: int | None = None  # the scan shown, numbered as frames number them (scans completed)
+        self._stepping = False  # the scan shown is being stepped through (history_step): the view is its stepper
+        self._debug_program: CompiledProgram | None = None  # what a step through a past scan runs (compiled once)
         self._union_locations: dict[str, Location] = {}
         self._view_reader = self._reader
         self._until: Condition | None = None
@@ -416,7 +418,7 @@ class SimRunner:
         self.sink.frame(
             {
                 "seq": self._seq,
-                "scan": sim.scan_count,
+                "scan": self._viewing if self._stepping else sim.scan_count,  # halted within the scan shown
                 "time_ms": sim.time_ms,
                 "history": self.history_range(),
                 "wall": time.time(),  # when these values were read (latency measurements)
@@ -653,7 +655,16 @@ class SimRunner:
             "branch": len(self.branches) + 1,
             "viewing_branch": self._branch_number(viewed) if viewed is not None else None,
             "recording": self._recording_only,
+            "stepping": self._step_point(),
         }
+
+    def _step_point(self) -> dict[str, Any] | None:
+        """Where the step through the scan shown stands (``at`` null: the scan ran to its end); None: no step."""
+        if not self._stepping or self._view is None:
+            return None
+        halted = self._view.halted
+        at = at_halt(halted) if halted is not None else None
+        return {"at": at.model_dump() if at is not None else None, "where": _where(at) if at is not None else None}
 
     def open_recording(self, inputs: list[dict[str, Any]], scans: int) -> dict[str, Any] | None:
         """Run a recording's ``scans`` at once, each one's recorded ``inputs`` (``AppliedInput.to_json()`` lines)
@@ -706,11 +717,46 @@ class SimRunner:
             raise CommandError("bad_value", _shown_numbers(scan, history)) from None
         self._view, self._viewing, self._view_history, self._full = view, scan, history, True
         self._view_reader = view.reader(self._union_locations)
+        self._stepping = False
         return self.history_range()
 
     def live(self) -> None:
         """Show the live scans again."""
         self._view, self._viewing, self._view_history, self._full = None, None, None, True
+        self._stepping = False
+
+    def history_step(self, granularity: str = "statement") -> dict[str, Any] | None:
+        """Step through the scan shown: the first step replays it in the debug variant from the state the scan
+        before it left, its recorded inputs applied at its start (``History.stepper``), and halts at its first
+        network or line (``statement``; ``over`` and ``out`` as live); each further step halts at the next one,
+        and after the last the scan is complete, as the seek showed it. The frames show the values and power flow
+        of the point reached; the history and the live simulation stay as they are. A seek or live leaves."""
+        history, scan = self._view_history, self._viewing
+        if history is None or scan is None:
+            raise CommandError("bad_state", "go to a past scan first: a step goes through the scan shown")
+        if granularity not in ("statement", "over", "out", "network"):
+            raise CommandError(
+                "bad_value", f"a step through a past scan is statement, over, out or network, not {granularity!r}"
+            )
+        view = self._view
+        if not self._stepping:
+            try:
+                view = history.stepper(scan - 1, self._debug_variant())
+            except HistoryUnavailable as error:
+                raise CommandError("bad_state", f"scan {scan} cannot be stepped through: {error}") from None
+        elif view is None or view.halted is None:
+            raise CommandError("bad_state", f"scan {scan} ran to its end: go to a scan to step through it")
+        assert view is not None
+        view.step(granularity)
+        self._view, self._stepping, self._full = view, True, True
+        self._view_reader = view.reader(self._union_locations)
+        return self.history_range()
+
+    def _debug_variant(self) -> CompiledProgram:
+        if self._debug_program is None:
+            program = self.sim.variant_program("debug")
+            self._debug_program = program or compile_program(self.sim.compiled.program, "debug")
+        return self._debug_program
 
     #: Earlier branches kept beside the live one; a fork beyond them drops the oldest.
     MAX_BRANCHES = 3
@@ -721,6 +767,8 @@ class SimRunner:
         history, view = self._recorded(), self._view
         if view is None or self._viewing is None:
             raise CommandError("bad_state", "go to a past scan first: continue from here starts from the scan shown")
+        if view.halted is not None:
+            raise CommandError("bad_state", "the scan shown is halted in a step through it: step to its end first")
         if self.sim.halted is not None:
             raise CommandError(
                 "bad_state", "the live scan is halted: continue or reset it before continuing from another"
@@ -791,7 +839,7 @@ class SimRunner:
 
     def _back_to_view(self) -> None:
         """A search moved the replay: back to the scan shown."""
-        if self._viewing is not None and self._view_history is not None:
+        if self._viewing is not None and self._view_history is not None and not self._stepping:
             self._view = self._view_history.seek(self._viewing - 1)
 
     def set_speed(self, scale: float) -> None:
@@ -974,6 +1022,7 @@ class SimRunner:
         "history_marks": history_marks,
         "fork": fork,
         "open_recording": open_recording,
+        "history_step": history_step,
     }
 
     #: What runs scans or applies inputs: refused while an opened recording is shown (history only).

@@ -622,6 +622,28 @@ export interface paths {
     patch?: never;
     trace?: never;
   };
+  "/api/simulations/{sim_id}/history/step": {
+    parameters: {
+      query?: never;
+      header?: never;
+      path?: never;
+      cookie?: never;
+    };
+    get?: never;
+    put?: never;
+    /**
+     * History Step
+     * @description Step through the scan shown (after a seek): the first step replays it in the debug variant from the scan
+     *     before it and halts at its first network or line, each next one at the next; the values and power flow are
+     *     those of that point (``history.stepping`` says where). The history and the live simulation stay as they are.
+     */
+    post: operations["history_step_api_simulations__sim_id__history_step_post"];
+    delete?: never;
+    options?: never;
+    head?: never;
+    patch?: never;
+    trace?: never;
+  };
   "/api/simulations/{sim_id}/inputs": {
     parameters: {
       query?: never;
@@ -871,6 +893,32 @@ export interface components {
        * @default
        */
       declarations?: string;
+    };
+    /**
+     * At
+     * @description Where the scan halted or a fault happened.
+     */
+    At: {
+      /**
+       * Body
+       * @description In an SFC POU: actions/<name> or transitions/<name>.
+       */
+      body?: string | null;
+      /** Column */
+      column?: number | null;
+      /** Element */
+      element?: string | null;
+      /**
+       * Instance
+       * @description POU instance path; null inside a FUNCTION.
+       */
+      instance?: string | null;
+      /** Line */
+      line?: number | null;
+      /** Network */
+      network?: string | null;
+      /** Pou */
+      pou: string;
     };
     /**
      * Bar
@@ -1561,6 +1609,8 @@ export interface components {
        * @default false
        */
       recording?: boolean;
+      /** @description The scan shown is being stepped through; null: it is shown complete. */
+      stepping?: components["schemas"]["HistoryStepPoint"] | null;
       /**
        * Viewing
        * @description The scan shown instead of the live one; null: live.
@@ -1571,6 +1621,32 @@ export interface components {
        * @description The branch of the scan shown; null: live.
        */
       viewing_branch?: number | null;
+    };
+    /**
+     * HistoryStep
+     * @description Body of ``POST /api/simulations/{id}/history/step``: how far one step through the scan shown goes
+     *     (``statement``: the next network or line, into calls; ``over`` past the calls; ``out`` of the POU).
+     */
+    HistoryStep: {
+      /**
+       * Granularity
+       * @default statement
+       * @enum {string}
+       */
+      granularity?: "statement" | "over" | "out" | "network";
+    };
+    /**
+     * HistoryStepPoint
+     * @description Where a step through the scan shown (``POST .../history/step``) stands.
+     */
+    HistoryStepPoint: {
+      /** @description The network or line it halted before; null: the scan ended. */
+      at?: components["schemas"]["At"] | null;
+      /**
+       * Where
+       * @description The same in words: MAIN, network 2 / MAIN, line 7.
+       */
+      where?: string | null;
     };
     /**
      * ImportReport
@@ -3769,6 +3845,7 @@ export interface components {
   pathItems: never;
 }
 export type Accessor = components["schemas"]["Accessor"];
+export type At = components["schemas"]["At"];
 export type Bar = components["schemas"]["Bar"];
 export type Block = components["schemas"]["Block"];
 export type Box = components["schemas"]["Box"];
@@ -3802,6 +3879,8 @@ export type HistoryDiff = components["schemas"]["HistoryDiff"];
 export type HistoryFound = components["schemas"]["HistoryFound"];
 export type HistoryMark = components["schemas"]["HistoryMark"];
 export type HistoryRange = components["schemas"]["HistoryRange"];
+export type HistoryStep = components["schemas"]["HistoryStep"];
+export type HistoryStepPoint = components["schemas"]["HistoryStepPoint"];
 export type ImportReport = components["schemas"]["ImportReport"];
 export type IndicatorState = components["schemas"]["IndicatorState"];
 export type InputNode = components["schemas"]["InputNode"];
@@ -5462,6 +5541,60 @@ export interface operations {
         };
         content: {
           "application/json": components["schemas"]["HistoryMark"][];
+        };
+      };
+      /** @description No such project or POU. */
+      404: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["ErrorResponse"];
+        };
+      };
+      /** @description The project already exists, or a save is based on an old revision (ConflictDetail). */
+      409: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json":
+            components["schemas"]["ErrorResponse"] | components["schemas"]["ConflictResponse"];
+        };
+      };
+      /** @description Bad name, invalid model or a project that does not load; see the diagnostics. */
+      422: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["ErrorResponse"];
+        };
+      };
+    };
+  };
+  history_step_api_simulations__sim_id__history_step_post: {
+    parameters: {
+      query?: never;
+      header?: never;
+      path: {
+        sim_id: string;
+      };
+      cookie?: never;
+    };
+    requestBody?: {
+      content: {
+        "application/json": components["schemas"]["HistoryStep"] | null;
+      };
+    };
+    responses: {
+      /** @description Successful Response */
+      200: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["SimulationInfo"];
         };
       };
       /** @description No such project or POU. */
