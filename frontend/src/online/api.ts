@@ -61,6 +61,12 @@ export async function findInHistory(
 }
 
 /** The newest scans of the history with an input or a runtime error: the timeline's marks. */
+/** One step through the scan shown: the first replays it from the scan before and halts at its first network or
+ * line, each next at the next one (the values come with the frames; `history.stepping` says where). */
+export function historyStep(id: string, granularity: "statement" | "over" = "statement"): Promise<SimulationInfo> {
+  return unwrap(http.POST("/api/simulations/{sim_id}/history/step", { ...simulation(id), body: { granularity } }));
+}
+
 export function historyMarks(id: string): Promise<HistoryMark[]> {
   return unwrap(http.GET("/api/simulations/{sim_id}/history/marks", simulation(id)));
 }
