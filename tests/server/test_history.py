@@ -265,20 +265,20 @@ def test_step_through_a_past_scan_line_by_line(client: TestClient, counter: str,
         for _ in range(4):
             info = client.post(step, json={"granularity": "statement"}).json()
             stepping = info["history"]["stepping"]
-            found = recv_until(ws, lambda m: m["type"] == "values" and m["history"]["stepping"] == stepping)
+            found = recv_until(
+                ws, lambda m, point=stepping: m["type"] == "values" and m["history"]["stepping"] == point
+            )
             for m in [*found[1], found[0]]:
                 if m["type"] == "values":
                     seen.update(m["changed"])
             assert found[0]["scan"] == 3
             at = stepping["at"]
-            points.append(
-                (at and at["line"], stepping["where"], seen["MAIN.COUNT"], seen["MAIN.FLAG"], seen["MAIN.RESULT"])
-            )
+            points.append((at and (at["pou"], at["line"]), seen["MAIN.COUNT"], seen["MAIN.FLAG"], seen["MAIN.RESULT"]))
         assert points == [
-            (1, "MAIN, line 1", 2, False, 100),
-            (2, "MAIN, line 2", 3, False, 100),
-            (3, "MAIN, line 3", 3, True, 100),
-            (None, None, 3, True, 25),
+            (("MAIN", 1), 2, False, 100),
+            (("MAIN", 2), 3, False, 100),
+            (("MAIN", 3), 3, True, 100),
+            (None, 3, True, 25),
         ]
         ended = client.post(step, json={})
         assert ended.json()["detail"]["message"] == "scan 3 ran to its end: go to a scan to step through it"

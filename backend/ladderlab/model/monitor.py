@@ -339,7 +339,6 @@ class HistoryStepPoint(BaseModel):
     """Where a step through the scan shown (``POST .../history/step``) stands."""
 
     at: At | None = Field(default=None, description="The network or line it halted before; null: the scan ended.")
-    where: str | None = Field(default=None, description="The same in words: MAIN, network 2 / MAIN, line 7.")
 
 
 class HistoryRange(BaseModel):

@@ -664,7 +664,7 @@ class SimRunner:
             return None
         halted = self._view.halted
         at = at_halt(halted) if halted is not None else None
-        return {"at": at.model_dump() if at is not None else None, "where": _where(at) if at is not None else None}
+        return {"at": at.model_dump() if at is not None else None}
 
     def open_recording(self, inputs: list[dict[str, Any]], scans: int) -> dict[str, Any] | None:
         """Run a recording's ``scans`` at once, each one's recorded ``inputs`` (``AppliedInput.to_json()`` lines)

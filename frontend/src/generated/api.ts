@@ -1642,11 +1642,6 @@ export interface components {
     HistoryStepPoint: {
       /** @description The network or line it halted before; null: the scan ended. */
       at?: components["schemas"]["At"] | null;
-      /**
-       * Where
-       * @description The same in words: MAIN, network 2 / MAIN, line 7.
-       */
-      where?: string | null;
     };
     /**
      * ImportReport

@@ -617,10 +617,6 @@ export interface HistoryStepPoint {
    * The network or line it halted before; null: the scan ended.
    */
   at?: At | null;
-  /**
-   * The same in words: MAIN, network 2 / MAIN, line 7.
-   */
-  where?: string | null;
 }
 /**
  * Where the scan halted or a fault happened.

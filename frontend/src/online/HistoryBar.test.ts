@@ -55,19 +55,17 @@ describe("stepping through a past scan (issue 23)", () => {
   const history = { first: 1, last: 9, viewing: 4 };
 
   it("marks the step's point while one runs, the live halt otherwise", () => {
-    expect(
-      haltedAt({ state: "halted", at: live, history: { ...history, stepping: { at, where: "MAIN, network 2" } } }),
-    ).toBe(at);
-    expect(
-      haltedAt({ state: "halted", at: live, history: { ...history, stepping: { at: null, where: null } } }),
-    ).toBeNull();
+    expect(haltedAt({ state: "halted", at: live, history: { ...history, stepping: { at } } })).toBe(at);
+    expect(haltedAt({ state: "halted", at: live, history: { ...history, stepping: { at: null } } })).toBeNull();
     expect(haltedAt({ state: "halted", at: live, history })).toBe(live);
     expect(haltedAt({ state: "running", at: live, history: null })).toBeNull();
   });
 
   it("says where the step stands", () => {
-    expect(steppingText(4, null)).toBe("Step through scan 4: network by network (LD, FBD), line by line (ST, IL)");
-    expect(steppingText(4, { where: "MAIN, network 2" })).toBe("Scan 4, halted before MAIN, network 2");
-    expect(steppingText(4, { where: null })).toBe("Scan 4 ran to its end");
+    expect(steppingText(4, null, null)).toBe(
+      "Step through scan 4: network by network (LD, FBD), line by line (ST, IL)",
+    );
+    expect(steppingText(4, { at }, "MAIN, network 2")).toBe("Scan 4, halted before MAIN, network 2");
+    expect(steppingText(4, { at: null }, null)).toBe("Scan 4 ran to its end");
   });
 });

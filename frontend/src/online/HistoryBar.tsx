@@ -8,7 +8,7 @@
 import { useEffect, useState } from "react";
 import type { HistoryMark } from "../generated/api";
 import { findInHistory, historyDiff, historyMarks, historyStep } from "./api";
-import type { Value } from "./protocol";
+import type { Value, Where } from "./protocol";
 import { formatValue } from "./values";
 import { onlineStore, useOnline } from "./store";
 
@@ -193,7 +193,14 @@ function HistoryFind({ scan }: { scan: number }) {
 }
 
 /** Over the editors while a past scan is shown: the diagrams' values are that scan's, not live. */
-export function HistoryBanner() {
+export interface HistoryBannerProps {
+  /** A halt point in words ("MAIN, network 2"), as the debug bar says it. */
+  describe(at: Where): string;
+  /** Shows a location in its editor (opens the POU, selects the network or the line). */
+  reveal(place: { pou: string; network?: string | null; element?: string | null; line?: number | null }): void;
+}
+
+export function HistoryBanner({ describe, reveal }: HistoryBannerProps) {
   const viewing = useOnline((s) => (s.phase === "online" ? (s.monitor.history?.viewing ?? null) : null));
   const recording = useOnline((s) => s.monitor.history?.recording ?? false);
   const timeMs = useOnline((s) => s.monitor.timeMs);
@@ -214,22 +221,26 @@ export function HistoryBanner() {
           Continue from here
         </button>
       </div>
-      <HistoryStepping viewing={viewing} />
+      <HistoryStepping viewing={viewing} describe={describe} reveal={reveal} />
       <HistoryCompare viewing={viewing} />
     </div>
   );
 }
 
-/** What the step through the scan shown says: where it halted, or that the scan ran to its end. */
-export function steppingText(viewing: number, stepping: { where?: string | null } | null | undefined): string {
+/** What the step through the scan shown says: where it halted (`where`, in words), or that the scan ran to its end. */
+export function steppingText(viewing: number, stepping: object | null | undefined, where: string | null): string {
   if (!stepping) return `Step through scan ${viewing}: network by network (LD, FBD), line by line (ST, IL)`;
-  return stepping.where ? `Scan ${viewing}, halted before ${stepping.where}` : `Scan ${viewing} ran to its end`;
+  return where ? `Scan ${viewing}, halted before ${where}` : `Scan ${viewing} ran to its end`;
 }
 
 /** Step through the scan shown (replayed from the scan before it, in the debug code): the diagrams and values show
- * the point reached, the network or line about to run is marked; the recorded history does not change. */
-function HistoryStepping({ viewing }: { viewing: number }) {
+ * the point reached, the network or line about to run is marked and shown; the recorded history does not change. */
+function HistoryStepping({ viewing, describe, reveal }: { viewing: number } & HistoryBannerProps) {
   const stepping = useOnline((s) => s.monitor.history?.stepping ?? null);
+  const at = stepping?.at ?? null;
+  useEffect(() => {
+    if (at) reveal({ pou: at.pou, network: at.network, element: at.element, line: at.line });
+  }, [at, reveal]);
   const [note, setNote] = useState<string | null>(null);
   const ended = stepping != null && !stepping.at;
   const step = async (granularity: "statement" | "over") => {
@@ -244,7 +255,7 @@ function HistoryStepping({ viewing }: { viewing: number }) {
   };
   return (
     <div className="history-stepping" role="group" aria-label="Step through the scan">
-      <span aria-label="Step point">{steppingText(viewing, stepping)}</span>
+      <span aria-label="Step point">{steppingText(viewing, stepping, at ? describe(at) : null)}</span>
       <button
         type="button"
         onClick={() => void step("statement")}
