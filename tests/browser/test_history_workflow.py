@@ -241,7 +241,7 @@ def _halted_networks(page) -> list[str]:
 
 def test_step_through_a_past_scan_network_by_network(page, server):
     """Issue 23 item 3 ("one network within a scan"): scan 4 (the first after Start was written) shown, then
-    stepped through: before network 1 runs, the Motor coil has not run in this scan (off) and network 1 is
+    stepped through: before network 1 runs, the Motor coil has not run in this scan (drawn as not executed) and network 1 is
     marked; one step later network 2 is marked and the seal-in has switched the coil on; the last step ends the
     scan; "Whole scan" shows scan 4 complete again. The live simulation and its history are not changed: scan 5
     still shows the coil on, and the counter of the live scans stays at 6."""
@@ -258,7 +258,10 @@ def test_step_through_a_past_scan_network_by_network(page, server):
     stepping.get_by_role("button", name="Step into this scan").click()
     point.filter(has_text="Scan 4, halted before MAIN, network 1").wait_for()
     page.wait_for_function("() => document.querySelector('svg.ld-network.ld-halted')?.dataset.network === 'seal_in'")
-    _coil(page, "off")  # not run yet in this scan
+    page.wait_for_function(  # not run yet in this scan: drawn neither energised nor off
+        "() => { const c = document.querySelector('g.ld-coil[data-id=motor]')?.classList;"
+        " return c && !c.contains('ld-on') && !c.contains('ld-off'); }"
+    )
     assert scan.inner_text() == "4"
     page.screenshot(path=str(ARTIFACTS / "history-step-network-1.png"))
 
@@ -266,18 +269,28 @@ def test_step_through_a_past_scan_network_by_network(page, server):
     point.filter(has_text="Scan 4, halted before MAIN, network 2").wait_for()
     page.wait_for_function("() => document.querySelector('svg.ld-network.ld-halted')?.dataset.network === 'run_timer'")
     _coil(page, "on")  # network 1 ran: Start OR Motor, AND NOT Stop
-    for _ in range(40):  # the rest of the scan: Main's networks, the FBD Scaling, the ST Blinker's lines
-        if point.inner_text() == "Scan 4 ran to its end":
-            break
+    points = []
+    for _ in range(40):  # the rest of the scan: Main's networks, then the lines of the ST Blinker it calls
         text = point.inner_text()
+        if text == "Scan 4 ran to its end":
+            break
+        points.append(text.removeprefix("Scan 4, halted before "))
         stepping.get_by_role("button", name="Next step").click()
         page.wait_for_function(
             "(text) => document.querySelector('[aria-label=\"Step point\"]')?.textContent !== text", arg=text
         )
+    assert points[:5] == [
+        "MAIN, network 2",
+        "MAIN, network 3",
+        "MAIN, network 4",
+        "BLINKER (MAIN.BLINK), line 1",
+        "BLINKER (MAIN.BLINK), line 2",
+    ]
     assert point.inner_text() == "Scan 4 ran to its end"
-    assert _halted_networks(page) == []
     assert stepping.get_by_role("button", name="Next step").is_disabled()
-    _coil(page, "on")
+    page.get_by_role("navigation", name="Project tree").get_by_role("button", name=re.compile("^Main")).click()
+    _coil(page, "on")  # the step showed Blinker's lines in its editor; Main at the scan's end
+    assert _halted_networks(page) == []
 
     stepping.get_by_role("button", name="Whole scan").click()
     point.filter(has_text="Step through scan 4").wait_for()
