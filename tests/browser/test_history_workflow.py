@@ -177,16 +177,7 @@ def test_the_trace_chart_and_the_timeline_move_together(page, server):
     page.get_by_role("button", name="Start trace").click()
     status = page.get_by_role("status", name="Trace state")
     status.filter(has_text="Recording").wait_for()
-    for number in (1, 2, 3):
-        cycle.click()
-        scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
-    start = page.locator('g.ld-element[data-id="start"]')
-    start.locator(".ld-hit").dblclick()
-    start.locator(".ld-prepared").filter(has_text="<TRUE>").wait_for()
-    page.keyboard.press("Control+F7")
-    for number in (4, 5, 6):
-        cycle.click()
-        scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
+    _start_written_before_scan_4(page, scan, cycle)
     status.filter(has_text="Recording · 6 samples").wait_for()
     _coil(page, "on")
 
@@ -303,7 +294,7 @@ def test_step_through_a_past_scan_network_by_network(page, server):
 
 
 def _start_written_before_scan_4(page, scan, cycle) -> None:
-    """Three single cycles, Start prepared TRUE and written (Ctrl+F7: before the next scan), two more cycles."""
+    """Three single cycles, Start prepared TRUE and written (Ctrl+F7: before the next scan), three more cycles."""
     for number in (1, 2, 3):
         cycle.click()
         scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
