@@ -10,6 +10,7 @@ before the third scan)."""
 
 from __future__ import annotations
 
+import dataclasses
 import json
 
 from fastapi.testclient import TestClient
@@ -17,7 +18,7 @@ from fastapi.testclient import TestClient
 from ladderlab.simulation.registry import SimulationRegistry
 from ladderlab.storage import Workspace
 
-from .test_simulations_support import counter_project, of_type, recv_until, registry, subscribe
+from .test_simulations_support import FAST, counter_project, install, of_type, recv_until, registry, subscribe
 
 __all__ = ["registry"]  # fixture
 
@@ -185,3 +186,21 @@ def test_a_recording_of_another_revision_or_no_recording_is_refused_in_words(
     )
     assert client.get("/api/simulations").json() == []  # nothing is left running of a refused recording
     assert _open(client, _recording(revision), name="nope").status_code == 404
+
+
+def test_a_recording_too_long_to_run_in_time_is_refused_and_left_behind(
+    client: TestClient, workspace: Workspace
+) -> None:
+    """A recording of more scans than the server runs within its build_timeout_s: refused in words, and the
+    simulation it started is gone (it would otherwise go on scanning)."""
+    registry = install(client, dataclasses.replace(FAST, build_timeout_s=4.0))
+    try:
+        revision = workspace.create(counter_project())
+        response = _open(client, _recording(revision, scans=10**9))
+        assert response.status_code == 422
+        assert response.json()["detail"]["message"] == (
+            "run.json: its 1000000000 scans did not run within 4 s (the server's build_timeout_s)"
+        )
+        assert client.get("/api/simulations").json() == []
+    finally:
+        registry.close()

@@ -114,12 +114,17 @@ def _open_recording(
             f"revision {stored.revision}: open it in the project as it was when it was recorded",
         )
     entry = _built(name, stored, registry)
+    timeout = entry.handle.settings.build_timeout_s  # the scans run at once: as long as a history question
     try:
-        timeout = entry.handle.settings.build_timeout_s  # the scans run at once: as long as a history question
         info = _command(entry, "open_recording", timeout=timeout, inputs=record.inputs, scans=record.scans)
     except ApiError:
         registry.delete(entry.id)
         raise
+    except TimeoutError:
+        registry.delete(entry.id)
+        raise ApiError(
+            422, f"{file}: its {record.scans} scans did not run within {timeout:g} s (the server's build_timeout_s)"
+        ) from None
     response.headers["Location"] = f"/api/simulations/{entry.id}"
     return info
 
@@ -252,7 +257,13 @@ def history_step(
     those of that point (``history.stepping`` says where). The history and the live simulation stay as they are."""
     granularity = body.granularity if body is not None else "statement"
     entry = registry.get(sim_id)
-    return _command(entry, "history_step", timeout=entry.handle.settings.build_timeout_s, granularity=granularity)
+    timeout = entry.handle.settings.build_timeout_s  # the first step compiles the debug variant
+    try:
+        return _command(entry, "history_step", timeout=timeout, granularity=granularity)
+    except TimeoutError:
+        raise ApiError(
+            409, f"the step did not end within {timeout:g} s: the scan shown shows where it stands"
+        ) from None
 
 
 @router.get("/api/simulations/{sim_id}/history/find", response_model=HistoryFound, responses=_DESCRIBED)
