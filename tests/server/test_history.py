@@ -284,5 +284,35 @@ def test_step_through_a_past_scan_line_by_line(client: TestClient, counter: str,
         assert ended.json()["detail"]["message"] == "scan 3 ran to its end: go to a scan to step through it"
         live = entry(registry, counter).handle
         assert live.read("Main.Count") == 5
+        ws.send_json({"type": "fork"})  # from the end of the stepped scan: its state, as the seek had it
+        recv_until(ws, lambda m: m["type"] == "values" and m["history"]["branch"] == 2)
+        assert (live.read("Main.Count"), live.read("Main.Result")) == (3, 25)
         info = client.post(f"/api/simulations/{counter}/seek", json={"scan": 3}).json()
         assert info["history"]["stepping"] is None
+
+
+def test_a_step_through_refuses_what_it_cannot_redo(client: TestClient, counter: str) -> None:
+    """A scan that ended with a runtime error (Divisor 0 at scan 3) cannot be stepped through again (its view is
+    the checkpoint after it); a continue from a scan halted in a step waits for the step to end."""
+    cycle = f"/api/simulations/{counter}/cycle"
+    step = f"/api/simulations/{counter}/history/step"
+    client.post(cycle)
+    client.post(cycle)
+    with client.websocket_connect(f"/api/simulations/{counter}/ws") as ws:
+        subscribe(ws, ["Main.Count"])
+        ws.send_json({"type": "write", "path": "Main.Divisor", "value": 0})
+        ws.send_json({"type": "single_cycle"})
+        recv_until(ws, of_type("status", state="faulted"))
+    client.post(f"/api/simulations/{counter}/seek", json={"scan": 3})
+    refused = client.post(step, json={})
+    assert refused.status_code == 409
+    assert refused.json()["detail"]["message"] == "scan 3 cannot be stepped through: it ended with a runtime error"
+
+    client.post(f"/api/simulations/{counter}/seek", json={"scan": 2})
+    halted = client.post(step, json={}).json()["history"]["stepping"]
+    assert halted["at"]["line"] == 1
+    with client.websocket_connect(f"/api/simulations/{counter}/ws") as ws:
+        subscribe(ws, ["Main.Count"])
+        ws.send_json({"type": "fork"})
+        error = recv_until(ws, of_type("error"))[0]
+        assert error["message"] == "the scan shown is halted in a step through it: step to its end first"
