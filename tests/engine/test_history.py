@@ -11,6 +11,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
+from ladderlab.engine.compile import compile_program
 from ladderlab.engine.inputs import InputEvent
 from ladderlab.engine.simulation import Simulation
 from ladderlab.model import ld
@@ -21,8 +22,10 @@ from ladderlab.st.project_text import source_to_project
 from tests.interchange.st_support import as_st
 from tests.interchange.test_st_equivalence import RICH, rich_elements, rich_series
 from tests.interchange.test_st_fbd_equivalence import programs as fbd_programs
+from tests.ir.diagram_support import lower_ok
 from tests.ir.diagram_support import project as diagram_project
 from tests.ir.test_diagram_equivalence import _Ids
+from tests.ir.test_il_online import il_pou
 from tests.support import fuzz_settings
 
 # Timers (TON, TOF, TP) on the virtual clock, edge triggers (R_TRIG, F_TRIG), a counter and arithmetic: the
@@ -492,3 +495,26 @@ def test_step_through_a_past_scan_line_by_line_without_changing_the_history():
     assert first.step("statement").origin.line == 6 and first.snapshot()["MAIN.A"] == 0
     with pytest.raises(HistoryUnavailable, match=r"^scan 4 has not run yet \(the last scan is 3\)$"):
         history.stepper(4, debug)
+
+
+def test_step_through_a_past_scan_of_il_from_load_to_load():
+    """IL (tests/ir/test_il_online.py's program): scan 1 replayed with its recorded write a := 5; a step halts at
+    each load, jump or call (ON-04): LD a (line 1, a = 5), LD a (line 4, after a := a + 1: 6), JMPC done (line 6,
+    6 > 2), then the jump skips the CAL and lands on LD a (line 11) with b still 10 from scan 0; the scan ends
+    with b = 60."""
+    program = lower_ok(il_pou())
+    sim = Simulation(program, variant="monitor")
+    history = History(sim, min_interval=1)
+    _record(sim, history)
+    sim.cycle(1)
+    sim.write("Main.a", 5)
+    sim.cycle(1)
+    stepper = history.stepper(1, compile_program(program, "debug"))
+    seen = []
+    halt = stepper.step("statement")
+    while halt is not None:
+        seen.append((halt.origin.line, stepper.read("Main.a"), stepper.read("Main.b")))
+        halt = stepper.step("statement")
+    assert seen == [(1, 5, 10), (4, 6, 10), (6, 6, 10), (11, 6, 10)]
+    assert (stepper.read("Main.a"), stepper.read("Main.b")) == (6, 60)
+    assert stepper.snapshot() == history.seek(1).snapshot()
