@@ -233,8 +233,9 @@ def _halted_networks(page) -> list[str]:
 def test_step_through_a_past_scan_network_by_network(page, server):
     """Issue 23 item 3 ("one network within a scan"): scan 4 (the first after Start was written) shown, then
     stepped through: before network 1 runs, the Motor coil has not run in this scan (drawn as not executed) and network 1 is
-    marked; one step later network 2 is marked and the seal-in has switched the coil on; the last step ends the
-    scan; "Whole scan" shows scan 4 complete again. The live simulation and its history are not changed: scan 5
+    marked; one step later network 2 is marked and the seal-in has switched the coil on; the steps go on through
+    networks 3 and 4, the lines of the ST block Blinker that network 4 calls and the FBD program Scaling's network
+    (each shown in its editor, the point marked), and the last step ends the scan; "Whole scan" shows scan 4 complete again. The live simulation and its history are not changed: scan 5
     still shows the coil on, and the counter of the live scans stays at 6."""
     scan, cycle = _online_motor(page, server)
     _start_written_before_scan_4(page, scan, cycle)
@@ -261,26 +262,28 @@ def test_step_through_a_past_scan_network_by_network(page, server):
     page.wait_for_function("() => document.querySelector('svg.ld-network.ld-halted')?.dataset.network === 'run_timer'")
     _coil(page, "on")  # network 1 ran: Start OR Motor, AND NOT Stop
     points = []
-    for _ in range(40):  # the rest of the scan: Main's networks, then the lines of the ST Blinker it calls
+    for _ in range(40):  # the rest of the scan
         text = point.inner_text()
         if text == "Scan 4 ran to its end":
             break
         points.append(text.removeprefix("Scan 4, halted before "))
+        if text.endswith("SCALING, network 1"):  # the FBD program, shown in its editor with the network marked
+            page.locator('.fbd-network.fbd-network-halted[data-network="speed"]').wait_for()
         stepping.get_by_role("button", name="Next step").click()
         page.wait_for_function(
             "(text) => document.querySelector('[aria-label=\"Step point\"]')?.textContent !== text", arg=text
         )
-    assert points[:5] == [
+    assert points == [
         "MAIN, network 2",
         "MAIN, network 3",
         "MAIN, network 4",
-        "BLINKER (MAIN.BLINK), line 1",
-        "BLINKER (MAIN.BLINK), line 2",
+        *[f"BLINKER (MAIN.BLINK), line {line}" for line in (1, 2, 3, 4)],  # the ST block network 4 calls
+        "SCALING, network 1",  # the task's second program, in FBD
     ]
     assert point.inner_text() == "Scan 4 ran to its end"
     assert stepping.get_by_role("button", name="Next step").is_disabled()
     page.get_by_role("navigation", name="Project tree").get_by_role("button", name=re.compile("^Main")).click()
-    _coil(page, "on")  # the step showed Blinker's lines in its editor; Main at the scan's end
+    _coil(page, "on")  # the steps showed Blinker and Scaling in their editors; Main at the scan's end
     assert _halted_networks(page) == []
 
     stepping.get_by_role("button", name="Whole scan").click()
