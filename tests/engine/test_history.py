@@ -19,6 +19,7 @@ from ladderlab.model.project import Pou
 from ladderlab.simulation.build import build_project
 from ladderlab.simulation.history import History, HistoryUnavailable
 from ladderlab.st.project_text import source_to_project
+from ladderlab.storage.load import load_project_path
 from tests.interchange.st_support import as_st
 from tests.interchange.test_st_equivalence import RICH, rich_elements, rich_series
 from tests.interchange.test_st_fbd_equivalence import programs as fbd_programs
@@ -26,7 +27,7 @@ from tests.ir.diagram_support import lower_ok
 from tests.ir.diagram_support import project as diagram_project
 from tests.ir.test_diagram_equivalence import _Ids
 from tests.ir.test_il_online import il_pou
-from tests.support import fuzz_settings
+from tests.support import EXAMPLES, fuzz_settings
 
 # Timers (TON, TOF, TP) on the virtual clock, edge triggers (R_TRIG, F_TRIG), a counter and arithmetic: the
 # state a replay must carry exactly. Two tasks at different intervals so some scans run one task only.
@@ -518,3 +519,31 @@ def test_step_through_a_past_scan_of_il_from_load_to_load():
     assert seen == [(1, 5, 10), (4, 6, 10), (6, 6, 10), (11, 6, 10)]
     assert (stepper.read("Main.a"), stepper.read("Main.b")) == (6, 60)
     assert stepper.snapshot() == history.seek(1).snapshot()
+
+
+def test_step_over_a_call_in_a_past_scan():
+    """The example motor, scan 3 (0-based; Start written before it): "statement" steps into the ST block
+    Blinker that LD network lamp calls and on into the FBD program Scaling; "over" stays in the POU it started in
+    and its callers, as a live step over does (engine/debug.py STEP_ENDS): Main's four networks, then the scan's
+    end. Both end where a seek to that scan ends."""
+    project = load_project_path(EXAMPLES / "motor")
+    sim = Simulation(build_project(project, "monitor").compiled)
+    history = History(sim)
+    _record(sim, history)
+    sim.cycle(3)
+    sim.write("Start", True)
+    sim.cycle(3)
+    debug = build_project(project, "debug").compiled
+    walked = {}
+    for granularity in ("statement", "over"):
+        stepper = history.stepper(3, debug)
+        points = []
+        halt = stepper.step(granularity)
+        while halt is not None:
+            points.append((halt.origin.pou.upper(), halt.origin.network or halt.origin.line))
+            halt = stepper.step(granularity)
+        assert stepper.snapshot() == history.seek(3).snapshot()
+        walked[granularity] = points
+    main = [("MAIN", network) for network in ("seal_in", "run_timer", "count_starts", "lamp")]
+    assert walked["statement"] == [*main, *[("BLINKER", line) for line in (1, 2, 3, 4)], ("SCALING", "speed")]
+    assert walked["over"] == main
