@@ -194,6 +194,7 @@ class SfcLowering:
         #: the chart each action is used in (associated, entry or exit): None (the POU's) or an SFC action's name
         self.used_in: dict[str, str | None] = {}
         self.condition_vars: dict[int, Var] = {}  # id of a graph transition -> its condition's flag
+        self.passes_made: dict[str | None, list[tuple[SfcAction, dict[int, list[str]]]]] = {}
 
     # ------------------------------------------------------------ helpers
     def origin(self, element: str | None = None) -> Origin:
@@ -614,8 +615,11 @@ class SfcLowering:
     def action_passes(self, owner: str | None = None) -> list[tuple[SfcAction, dict[int, list[str]]]]:
         """Every action of one chart (``owner``: None for the POU's, else the SFC action's; alphabetical) with the
         passes it runs in: EXIT_PASS and ENTRY_PASS with the steps (upper case) whose leaving or entering runs it,
-        FINAL_PASS and ACTIVE_PASS (no steps) when steps associate it. (The ST export writes the same passes.)"""
-        out = []
+        FINAL_PASS and ACTIVE_PASS (no steps) when steps associate it. (The ST export writes the same passes: made
+        once per chart, so an unused action is reported once.)"""
+        if owner in self.passes_made:
+            return self.passes_made[owner]
+        out = self.passes_made[owner] = []
         for action in sorted(self.body.actions, key=lambda a: a.name.upper()):
             key = action.name.upper()
             if self.used_in.get(key) != owner:
