@@ -13,7 +13,6 @@ from hypothesis import strategies as st
 
 from ladderlab.interchange.st.export import export_pou_st
 from ladderlab.interchange.st.project import export_project_st
-from ladderlab.model import Pou, Project, Task
 from ladderlab.storage import load_project_path
 from tests.interchange.st_support import exported, same_traces
 from tests.support import EXAMPLES
@@ -21,7 +20,7 @@ from tests.support import EXAMPLES
 from .strategies import sfc_bodies
 from .support import jump, par, project, sfc_pou, step, tr
 from .test_flags import chart_with
-from .test_plcopen import _transitions, sfc_project
+from .test_plcopen import sfc_project
 
 ALL_FLAGS = (
     "SFCInit, SFCReset, SFCPause, SFCError, SFCEnableLimit, SFCTrans, SFCQuitError, SFCTip, SFCTipMode : BOOL; "
@@ -93,24 +92,12 @@ def test_the_error_analysis_flags_export_and_run_alike():
     same_traces(proj, scans=300, seed=5)
 
 
-def _nested_project(body: dict) -> Project:
-    """The random body with the conditions of both charts and the counters ``n`` (outer actions), ``m`` (inner)."""
-    elements = [
-        *body["chart"]["elements"],
-        *(e for a in body["actions"] if a["language"] == "sfc" for e in a["body"]["elements"]),
-    ]
-    conditions = sorted({t["condition"] for t in _transitions(elements)})
-    declarations = f"VAR {', '.join([*conditions, 'go'])} : BOOL; n, m : INT; END_VAR"
-    pou = Pou(name="Seq", kind="program", language="sfc", declarations=declarations, body=body)
-    return Project(name="sfc", pous=[pou], tasks=[Task(name="t", interval="T#10ms", programs=["Seq"])])
-
-
 @given(sfc_bodies(nested=True), st.integers(0, 1000))
 @settings(max_examples=20)
 def test_random_charts_with_an_action_written_in_sfc_export_to_st_that_runs_identically(body, seed):
     """SFC-02 in the ST export: a random chart whose initial step associates ``Sub``, an action written in SFC (a
     random chart of its own), with a random qualifier; both run scan by scan alike under random writes."""
-    same_traces(_nested_project(body), scans=60, seed=seed)
+    same_traces(sfc_project(body), scans=60, seed=seed)
 
 
 def test_an_action_written_in_sfc_exports_its_chart_final_run_and_restart():

@@ -221,6 +221,17 @@ def steps(elements: list[SfcElement]) -> Iterator[SfcStep]:
     return (e for e in walk(elements) if isinstance(e, SfcStep))
 
 
+def prefix_ids(chart: SfcChart, prefix: str) -> SfcChart:
+    """``chart`` with ``prefix`` before every element and association id: an action's chart read from a file whose
+    ids restart in every body (PLCopen, textual SFC) keeps ids unique in the POU (probes and breakpoints name
+    elements by id)."""
+    for element in walk(chart.elements):
+        element.id = prefix + element.id
+        for association in element.actions if isinstance(element, SfcStep) else []:
+            association.id = prefix + association.id
+    return chart
+
+
 def _deepest(elements: Any) -> str | None:
     """The id of the first element (in raw data) whose branches cross the nesting limit."""
     limit = limits.DIAGRAM_DEPTH.value

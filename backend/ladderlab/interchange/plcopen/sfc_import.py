@@ -30,7 +30,7 @@ from ...model.sfc import (
     SfcNamedTransition,
     SfcStep,
     SfcTransition,
-    walk,
+    prefix_ids,
 )
 from ...model.sfc_graph import ImportedStep, ImportedTransition, UnstructuredChart, graph_chart
 from ...st import ast
@@ -166,14 +166,7 @@ class SfcImporter:
             drawn = self.chart(language)
             if drawn is None:
                 return None
-            # local ids restart in every body: the chart's element ids get the action's name, so they stay unique
-            # in the POU (probes and breakpoints name elements by id)
-            prefix = f"{action}_"
-            for element in walk(drawn.elements):
-                element.id = prefix + element.id
-                for association in element.actions if isinstance(element, SfcStep) else []:
-                    association.id = prefix + association.id
-            return "sfc", drawn
+            return "sfc", prefix_ids(drawn, f"{action}_")  # local ids restart in every body
         self.report(f"{what} is written in {tag}, which LadderLab cannot import here", language)
         return None
 
