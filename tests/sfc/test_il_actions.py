@@ -24,7 +24,9 @@ from __future__ import annotations
 
 import pytest
 
+from ladderlab.interchange.st.export import export_pou_st
 from ladderlab.ir.lower_project import lower_project
+from tests.interchange.st_support import exported, same_traces
 
 from .support import build, jump, project, run_table, sfc_pou, step, tr
 
@@ -130,3 +132,29 @@ def test_online_the_accumulator_of_every_line_of_an_il_action_and_transition():
     }  # fmt: skip
     t1 = {key.split("/", 2)[2]: v for key, v in values.items() if key.startswith("transitions/T1/L")}
     assert t1 == {"L1:INT": 1, "L2:BOOL": False, "L3:BOOL": False}
+
+
+def test_il_actions_and_transitions_export_to_st_that_runs_alike():
+    """The ST export of an SFC POU with an IL action (a jump, a RET that ends only the action) and an IL
+    transition: readable ST (RET becomes the skip of the rest, the transition its accumulator's expression) that
+    runs scan by scan like the chart under random writes (tests/interchange/st_support.py)."""
+    proj = il_chart()
+    text = exported(proj, "Main").text
+    assert "T1 := n >= 2 AND go;" in text
+    indent = " " * 8
+    action = ["IF n >= 3 THEN", "    full := TRUE;", "ELSE", "    n := n + 1;", "END_IF;"]
+    assert "\n".join(indent + line for line in action) in text  # JMPC Done ... RET ... Done: as IF/ELSE
+    same_traces(proj, scans=300, seed=17)
+
+
+def test_an_il_action_with_a_backward_jump_is_refused_by_the_st_export_with_its_line():
+    proj = il_chart(count="Again:\nLD   n\nADD  1\nST   n\nLT   3\nJMPC Again")
+    result = export_pou_st(proj, "Main")
+    assert result.text == ""
+    assert (
+        "EXPORT-IL-JUMP",
+        "Main/actions/Count",
+        6,
+        "the jump to Again goes backwards or out of an enclosing jump: ST has no jumps, so the IL action Count "
+        "cannot be exported as ST",
+    ) in [(d.code, d.file, d.line, d.message) for d in result.diagnostics]

@@ -13,9 +13,10 @@ steps, action controls, passes and transition order are the lowering's own):
   condition into a flag, the transitions that fire (priority, then drawing order; a step is taken once), then
   the steps they leave (``Fill(X := FALSE);``) and enter (``Drain.X := TRUE;``).
 
-ST actions are written as typed; LD and FBD actions and transitions through the network exporters. A RETURN in an
-action (ending the action, not the POU) has no ST form inside the loop: such a POU is refused with a located
-diagnostic.
+ST actions are written as typed; IL actions and transitions through the IL export (``il.py``: a RET ends the
+action, an IL transition's value is its accumulator at the end); LD and FBD actions and transitions through the
+network exporters; an action written in SFC as its chart, the same way. A RETURN in an ST action (ending the action,
+not the POU) has no ST form inside the loop: such a POU is refused with a located diagnostic.
 """
 
 from __future__ import annotations
@@ -34,12 +35,13 @@ from ...st import ast
 from ...st import types as st_types
 from ...st.nesting import nodes
 from ...st.parser import parse_statements
-from ...st.printer import print_expression
-from ...st.sfc import action_file
+from ...st.printer import print_expression, print_statements
+from ...st.sfc import action_file, il_key
 from ...st.symbols import CheckResult, Symbol
 from .body import Network, body_lines, comment, network_title
 from .elements import PouScope
 from .fbd import fbd_network
+from .il import IlRefused, il_as_st, il_refused
 from .ld import ld_network
 from .names import Names
 from .network import Declarations, plan
@@ -82,6 +84,7 @@ def st_sfc_pou(project: Project, pou: Pou, checked: CheckResult, diagnostics: li
 class _Writer:
     def __init__(self, pou: Pou, checked: CheckResult, lowering: SfcLowering, lowered: ir.Pou):
         self.pou = pou
+        self.info = lowering.info
         self.body_model: SfcBody = lowering.body
         self.checked = checked
         self.plan = lowering
@@ -415,6 +418,8 @@ class _Writer:
             self.line(comment(f"action {action.name}"))
             if isinstance(action.body, SfcChart):
                 self.inner_chart(action.name.upper())
+            elif action.language == "il":
+                self.il_part("actions", action.name)
             else:
                 self.text_or_networks(action.body, f"actions/{action.name}", action_file(self.pou.name, action.name))
             self.depth -= 1
@@ -446,6 +451,28 @@ class _Writer:
             if slots.initial:
                 self.line(f"{INDENT}{slots.step.name}.X := TRUE;")
         self.line("END_IF;")
+
+    def il_part(self, part: str, name: str) -> None:
+        """An IL action (a RET ends it) or IL named transition (the accumulator at its end is its value) as ST, through
+        the IL POU export (``il.py``); its accumulators are variables of the POU."""
+        il = self.info.il_parts[il_key(part, name)]
+        statements = list(il.statements)
+        if part == "transitions":
+            assert il.end is not None  # the lowering refused the transition otherwise
+            statements.append(ast.Assign(ast.Name(name), il.end.value))
+        file = f"{self.pou.name}/{part}/{name}"
+        what = f"the IL {'action' if part == 'actions' else 'transition'} {name}"
+        try:
+            body, kept = il_as_st(statements, il.accumulators, self.declarations.names, returns=part == "actions")
+        except IlRefused as refused:
+            self.problems.append(il_refused(refused, self.pou.name, file, what))
+            return
+        if _returns(body):
+            self.refuse(f"a RET inside a loop or branch of {what} ends only the action; ST has no such statement", file)
+        for name_, acc in kept:
+            self.declarations.add(name_, str(acc.type), "VAR")
+        for text_line in print_statements(body).rstrip("\n").splitlines():
+            self.line(text_line)
 
     def text_or_networks(self, body: object, part: str, file: str) -> None:
         if isinstance(body, str):
@@ -494,7 +521,9 @@ class _Writer:
     def named_transitions_part(self) -> None:
         for transition in self.body_model.transitions:
             self.line(comment(f"transition {transition.name}"))
-            if isinstance(transition.body, str):
+            if transition.language == "il":
+                self.il_part("transitions", transition.name)
+            elif isinstance(transition.body, str):
                 self.line(f"{transition.name} := {transition.body.strip()};")
             else:
                 self.line(f"{transition.name} := FALSE;")
