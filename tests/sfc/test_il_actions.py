@@ -24,8 +24,11 @@ from __future__ import annotations
 
 import pytest
 
+from ladderlab.interchange.plcopen.exporter import export_plcopen
+from ladderlab.interchange.plcopen.importer import import_plcopen
 from ladderlab.interchange.st.export import export_pou_st
 from ladderlab.ir.lower_project import lower_project
+from tests.interchange.plcopen_helpers import strip_ladderlab, xsd_errors
 from tests.interchange.st_support import exported, same_traces
 
 from .support import build, jump, project, run_table, sfc_pou, step, tr
@@ -48,18 +51,18 @@ def il_chart(count: str = COUNT, t1: str = T1, main: list | None = None):
     )
 
 
+TABLE = """
+scan go back || n full S0.X S1.X T1 Count.Q
+0    0  0    || 1 0    1    0    0  1       # S0 initial: Count runs (n 0 -> 1, RET before Done)
+1    1  0    || 2 0    0    1    1  1       # Count: n = 2; then T1 = (2 >= 2) AND go fires
+2    0  0    || 3 0    0    1    0  0       # Count's final run: n = 3; T1 = 3 >= 2 AND FALSE
+3    0  1    || 3 0    1    0    0  0       # S1 -> S0 (S1 has no actions)
+4    0  0    || 3 1    1    0    0  1       # Count: n >= 3 jumps to Done: full := TRUE, n stays 3
+"""
+
+
 def test_an_il_action_and_an_il_transition_run_scan_by_scan():
-    run_table(
-        il_chart(),
-        """
-        scan go back || n full S0.X S1.X T1 Count.Q
-        0    0  0    || 1 0    1    0    0  1       # S0 initial: Count runs (n 0 -> 1, RET before Done)
-        1    1  0    || 2 0    0    1    1  1       # Count: n = 2; then T1 = (2 >= 2) AND go fires
-        2    0  0    || 3 0    0    1    0  0       # Count's final run: n = 3; T1 = 3 >= 2 AND FALSE
-        3    0  1    || 3 0    1    0    0  0       # S1 -> S0 (S1 has no actions)
-        4    0  0    || 3 1    1    0    0  1       # Count: n >= 3 jumps to Done: full := TRUE, n stays 3
-        """,
-    )
+    run_table(il_chart(), TABLE)
 
 
 def errors(proj) -> list[tuple[str, str | None, int | None, int | None, str]]:
@@ -158,3 +161,19 @@ def test_an_il_action_with_a_backward_jump_is_refused_by_the_st_export_with_its_
         "the jump to Again goes backwards or out of an enclosing jump: ST has no jumps, so the IL action Count "
         "cannot be exported as ST",
     ) in [(d.code, d.file, d.line, d.message) for d in result.diagnostics]
+
+
+def test_il_actions_and_transitions_travel_through_plcopen_as_il_bodies():
+    """PLCopen TC6: the action's and the named transition's <body><IL> text; the file validates, comes back equal,
+    and without LadderLab's addData still has IL parts that run the scan table above."""
+    proj = il_chart()
+    data = export_plcopen(proj)
+    assert xsd_errors(data) == []
+    assert b"<IL>" in data
+    assert import_plcopen(data).project == proj
+    stripped = import_plcopen(strip_ladderlab(data))
+    assert [d.format() for d in stripped.diagnostics if d.severity == "error"] == []
+    body = stripped.project.pou("Main").body
+    assert (body.action("Count").language, body.action("Count").body) == ("il", COUNT)
+    assert (body.transition("T1").language, body.transition("T1").body) == ("il", T1)
+    run_table(stripped.project, TABLE)
