@@ -2824,7 +2824,7 @@ export interface components {
     };
     /**
      * SfcAction
-     * @description A named action (SFC-02): ST statements, LD or FBD networks, or a chart of its own.
+     * @description A named action (SFC-02): ST statements, IL instructions (text), LD or FBD networks, or a chart of its own.
      */
     SfcAction: {
       /**
@@ -2843,7 +2843,7 @@ export interface components {
        * @default st
        * @enum {string}
        */
-      language?: "st" | "ld" | "fbd" | "sfc";
+      language?: "st" | "il" | "ld" | "fbd" | "sfc";
       /** Name */
       name: string;
     };
@@ -2946,8 +2946,9 @@ export interface components {
     };
     /**
      * SfcNamedTransition
-     * @description A transition condition written on its own (SFC-03): an ST expression, or LD/FBD networks whose coil or output
-     *     named like the transition gives its value. A chart transition whose condition is this name reads it.
+     * @description A transition condition written on its own (SFC-03): an ST expression, IL instructions whose accumulator at the
+     *     end gives its value (as in CODESYS), or LD/FBD networks whose coil or output named like the transition gives its
+     *     value. A chart transition whose condition is this name reads it.
      */
     SfcNamedTransition: {
       /**
@@ -2962,7 +2963,7 @@ export interface components {
        * @default st
        * @enum {string}
        */
-      language?: "st" | "ld" | "fbd";
+      language?: "st" | "il" | "ld" | "fbd";
       /** Name */
       name: string;
     };
