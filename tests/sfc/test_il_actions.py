@@ -28,6 +28,7 @@ from ladderlab.interchange.plcopen.exporter import export_plcopen
 from ladderlab.interchange.plcopen.importer import import_plcopen
 from ladderlab.interchange.st.export import export_pou_st
 from ladderlab.ir.lower_project import lower_project
+from ladderlab.st.project_text import source_to_project
 from tests.interchange.plcopen_helpers import strip_ladderlab, xsd_errors
 from tests.interchange.st_support import exported, same_traces
 
@@ -38,15 +39,17 @@ COUNT = "LD   n\nGE   3\nJMPC Done\nLD   n\nADD  1\nST   n\nRET\nDone:\nLD   TRU
 T1 = "LD   n\nGE   2\nAND  go"
 
 
-def il_chart(count: str = COUNT, t1: str = T1, main: list | None = None):
-    main = main or [step("S0", "N Count"), tr("T1"), step("S1"), tr("back"), jump("S0")]
+def il_chart(count: str = COUNT, t1: str | None = T1):
+    """The chart above; ``t1`` None: T1's condition written in the chart (``n >= 2 AND go``, the same value)."""
+    condition = "T1" if t1 is not None else "n >= 2 AND go"
+    main = [step("S0", "N Count"), tr(condition), step("S1"), tr("back"), jump("S0")]
     return project(
         sfc_pou(
             "Main",
             DECLS,
             main,
             extra_actions=[{"name": "Count", "language": "il", "body": count}],
-            transitions=[{"name": "T1", "language": "il", "body": t1}],
+            transitions=[{"name": "T1", "language": "il", "body": t1}] if t1 is not None else [],
         )
     )
 
@@ -177,3 +180,29 @@ def test_il_actions_and_transitions_travel_through_plcopen_as_il_bodies():
     assert (body.action("Count").language, body.action("Count").body) == ("il", COUNT)
     assert (body.transition("T1").language, body.transition("T1").body) == ("il", T1)
     run_table(stripped.project, TABLE)
+
+
+def test_textual_sfc_writes_an_il_action_inside_its_action_and_reads_it_back_as_il():
+    """IEC's ``ACTION name: function_block_body END_ACTION`` takes an instruction list too (B.1.6): the IL action
+    is written as its instructions, read back as an IL action (the .st reader blanks it for the ST parser, as it
+    does IL POU bodies), and the read project runs the same scan table (without T1's columns: its condition is
+    written in the chart)."""
+    proj = il_chart(t1=None)
+    result = export_pou_st(proj, "Main", sfc_text=True)
+    assert [d.format() for d in result.diagnostics] == []
+    assert "    ACTION Count:\n        LD   n\n        GE   3\n        JMPC Done\n" in result.text
+    again, diagnostics = source_to_project(result.text, "again")
+    assert [d.format() for d in diagnostics] == []
+    action = again.pou("Main").body.action("Count")
+    assert (action.language, action.body) == ("il", COUNT)
+    run_table(
+        again,
+        """
+        scan go back || n full S0.X S1.X Count.Q
+        0    0  0    || 1 0    1    0    1
+        1    1  0    || 2 0    0    1    1
+        2    0  0    || 3 0    0    1    0
+        3    0  1    || 3 0    1    0    0
+        4    0  0    || 3 1    1    0    1
+        """,
+    )

@@ -11,6 +11,8 @@ actions, time limits, actions in LD or FBD - is refused or named, see ``sfc_to_t
 
 from __future__ import annotations
 
+import textwrap
+
 from ..model.diagnostics import Diagnostic
 from ..model.sfc import (
     QUALIFIERS,
@@ -25,6 +27,7 @@ from ..model.sfc import (
 )
 from ..model.sfc_graph import ImportedStep, ImportedTransition, UnstructuredChart, chart_graph, graph_chart
 from . import ast
+from .il_parser import looks_like_il
 
 
 def sfc_from_text(pou: ast.Pou, between, file: str | None = None) -> tuple[SfcBody, list[Diagnostic]]:
@@ -73,6 +76,8 @@ def _chart(sfc: ast.Sfc, owner: str, actions: list[SfcAction], report, text, bet
             inner = _chart(item.body, item.name, actions, report, text, between)
             body = prefix_ids(inner, f"{item.name}_") if inner is not None else SfcChart()
             actions.append(SfcAction(name=item.name, language="sfc", body=body))
+        elif not item.body and looks_like_il(written := _action_text(item, between)):  # blanked for the ST parser
+            actions.append(SfcAction(name=item.name, language="il", body=written))
         else:
             body = ""
             if item.body:  # to END_ACTION: a statement's span ends before its ';'
@@ -88,6 +93,14 @@ def _chart(sfc: ast.Sfc, owner: str, actions: list[SfcAction], report, text, bet
     for name in unreachable:
         report(f"step {name} is reached from no initial step: it was left out", sfc, "warning")
     return chart
+
+
+def _action_text(item: ast.SfcAction, between) -> str:
+    """What an ``ACTION name: ... END_ACTION`` holds in the original text, dedented (an IL action's instructions)."""
+    span = item.span
+    text = between((span.line, span.column), (span.end_line, span.end_column - len("END_ACTION")))
+    inner = text.split(":", 1)[1] if ":" in text else ""
+    return textwrap.dedent(inner.strip("\n").rstrip()).strip("\n")
 
 
 def _association(item: ast.SfcAssociation, number: int, report, text) -> SfcAssociation | None:
@@ -118,7 +131,10 @@ def sfc_to_text(name: str, body: SfcBody, indent: str = "    ") -> tuple[str, li
             lines.append(f"{indent}END_ACTION")
             continue
         if not isinstance(action.body, str):
-            refuse(f"the action {action.name} is written in {action.language.upper()}: textual SFC has ST actions")
+            refuse(
+                f"the action {action.name} is written in {action.language.upper()}: textual SFC has ST, IL and SFC "
+                "actions"
+            )
             continue
         lines.append(f"{indent}ACTION {action.name}:")
         lines += [f"{indent * 2}{line}".rstrip() for line in action.body.splitlines()]
