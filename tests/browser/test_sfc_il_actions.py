@@ -44,7 +44,7 @@ def test_an_il_action_is_written_run_online_and_halts_on_a_breakpoint_on_its_lin
     add_action(page, editor, "Count", "il", "Init")
     open_action(page, editor, "Count", "IL")
     text = page.get_by_label("Main action Count")
-    text.locator(".cm-content").click()
+    text.click()
     for number, line in enumerate(("LD n", "ADD 1", "ST n")):
         if number:
             page.keyboard.press("Enter")
