@@ -1,7 +1,8 @@
 """An SFC action written in IL in a real browser against a real server (issue 24 item 2, SFC-02, ON-17).
 
 The user adds the action Count in IL to a chart, associates it (N) with the initial step, opens it, types
-``LD n / ADD 1 / ST n`` in the text editor, sets a breakpoint on line 3 and runs: the first scan halts before line
+``LD n / ADD 1 / ST n`` in the text editor, sets a breakpoint on line 3 (from the chart, the Breakpoints panel's
+"Show in the editor" opens the action again) and runs: the first scan halts before line
 3 of the action (n still 0) with the accumulator of lines 1 and 2 shown at their ends (0, then 1); Continue runs
 the store and the next scan halts there again with n = 1. The page must log no error (conftest).
 """
@@ -15,7 +16,7 @@ from playwright.sync_api import expect
 
 from .conftest import ARTIFACTS
 from .steps import go_online, open_pou, panel_tab, store_project, watch
-from .test_sfc_actions import add_action, chart_editor, open_action, sfc_project
+from .test_sfc_actions import add_action, back_to_chart, chart_editor, open_action, sfc_project
 from .test_sfc_workflow import saved_pou
 
 pytestmark = pytest.mark.browser
@@ -58,6 +59,12 @@ def test_an_il_action_is_written_run_online_and_halts_on_a_breakpoint_on_its_lin
     page.mouse.click(gutter_box["x"] + gutter_box["width"] / 2, line_box["y"] + line_box["height"] / 2)
     panels = panel_tab(page, "Breakpoints")
     expect(panels.locator("tr.breakpoint-row")).to_have_text("Main action Count, line 3: ST n×")
+
+    # Back on the chart, "Show in the editor" of the breakpoint opens the action it is in (issue 24 item 3).
+    back_to_chart(page)
+    panels.get_by_role("button", name=re.compile(r"^Main action Count, line 3")).click()
+    page.get_by_role("navigation", name="SFC parts").get_by_text("Action Count (IL)").wait_for()
+    expect(text.locator(".cm-line")).to_have_count(3)
 
     # Saved and compiled: the action is IL text; Run halts the first scan before line 3: n is still 0, the
     # accumulator after LD n is 0 and after ADD 1 is 1.

@@ -109,6 +109,14 @@ PASS_LABEL = "__SFC_PASS"
 EXIT_PASS, ENTRY_PASS, FINAL_PASS, ACTIVE_PASS = 0, 1, 2, 3
 
 
+#: The suffix of the probe of a transition's condition (``t3.COND``), computed every scan.
+CONDITION_PROBE = ".COND"
+
+
+def condition_probe(element: str) -> str:
+    return f"{element}{CONDITION_PROBE}"
+
+
 def lower_sfc_body(pou: ModelPou, ctx: PouContext) -> list[Block]:
     """The chart, actions and transitions of an SFC POU as IR blocks; problems are reported on ``ctx``."""
     return SfcLowering(pou, ctx).blocks()
@@ -893,7 +901,7 @@ class SfcLowering:
             origin = self.origin(element.id)
             if value is not None:
                 out.append(Assign(flag, value, origin))
-                out.append(Probe(f"{element.id}.COND", flag, self.origin()))
+                out.append(Probe(condition_probe(element.id), flag, self.origin()))
         return out
 
     def evolution(self, graph: ChartGraph, owner: str | None = None) -> list[Stmt]:

@@ -15,6 +15,7 @@ import { operandCommands } from "../online/operandCommands";
 import { onlineStore, useOnline } from "../online/store";
 import { onlineReadOnly, useLdOnline, useShownInstance } from "../online/useLdOnline";
 import { useFbdOnline } from "../fbd/useFbdOnline";
+import { usePanels } from "../panels/store";
 import { useWorkspace } from "../store/project";
 import { StEditor, type StEditorProps } from "../st/StEditor";
 import { accumulatorMarks } from "../st/ilOnline";
@@ -132,6 +133,20 @@ export function SfcPouView({
     }
   }
 
+  // A place revealed in this POU (the Breakpoints panel's "Show in the editor", a diagnostic, a halt) opens the
+  // action or named transition it is in, or the chart (an element of an action's chart opens that action).
+  const focus = usePanels((s) => (s.focus?.pou.toUpperCase() === upper ? s.focus : null));
+  // (null at first: "Show in the editor" opens the POU and reveals the place at once, before this view is made)
+  const [focusSeen, setFocusSeen] = useState<typeof focus>(null);
+  if (focus !== focusSeen) {
+    setFocusSeen(focus);
+    if (focus) {
+      const target = focus.body ?? (focus.element ? actionChartOf(history.present, focus.element) : null);
+      const [kind, partName] = target ? target.split("/", 2) : [];
+      setPart(target ? { kind: kind === "actions" ? "action" : "transition", name: partName! } : null);
+    }
+  }
+
   // The server steps to a transition from a stopped or halted scan (a running one is stopped first).
   const running = useOnline((s) => s.monitor.state === "running");
   const stepToTransition = live ? (
@@ -173,6 +188,7 @@ export function SfcPouView({
             diagnostics={diagnostics}
             completions={completions}
             readOnly={readOnly}
+            focusLine={focus?.body && focus.line != null ? { line: focus.line, seq: focus.seq } : null}
             onChange={(content) => setHistory(name, record(history, setPartBody(body, part.kind, part.name, content)))}
           />
         ) : (
@@ -194,6 +210,7 @@ export function SfcPouView({
       readOnly={readOnly}
       readOnlyActions={readOnly ? onlineActions : undefined}
       onOpen={setPart}
+      focus={focus?.element && !focus.body ? { element: focus.element, seq: focus.seq } : null}
       debugging={{ marks, toggle: (element) => debugStore.getState().toggle({ pou: name, element }) }}
       toolbarExtra={stepToTransition}
       onlineActions={flagCommands}
@@ -248,6 +265,7 @@ function PartEditor(props: {
   diagnostics: Diagnostic[];
   completions: ReturnType<typeof useStAssist>["completions"];
   readOnly: string | null;
+  focusLine: { line: number; seq: number } | null;
   onChange(content: SfcAction["body"]): void;
 }) {
   const { pou, part, item } = props;
@@ -289,6 +307,7 @@ function PartEditor(props: {
         label={`${pou.name} ${part.kind} ${part.name}`}
         language={il ? "il" : "st"}
         online={ilOnline}
+        focusLine={props.focusLine}
         debug={{
           breakpoints: lines,
           halted: at && inPart({ pou: at.pou, body: at.body ?? undefined }) && at.line != null ? at.line : null,
