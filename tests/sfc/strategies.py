@@ -103,22 +103,17 @@ def charts(draw) -> list:
 
 @st.composite
 def sfc_bodies(draw, nested: bool = False) -> dict:
-    """A random SFC body: a chart, the ST actions it names and the BOOL conditions it reads. ``nested``: also an
+    """A random SFC body: a chart, the ST or IL actions it names and the BOOL conditions it reads. ``nested``: also an
     action ``Sub`` written in SFC (a random chart whose steps associate In1, In2), associated with the initial step
     with a random qualifier (SFC-02, docs/sfc.md "Actions written in SFC")."""
     drawer = _Drawer(draw)
     chart = drawer.chart()
-    actions = [
-        {"name": name, "language": "st", "body": f"n := n + {i + 1};"} for i, name in enumerate(sorted(drawer.actions))
-    ]
+    actions = [_action(draw, name, "n", i + 1) for i, name in enumerate(sorted(drawer.actions))]
     if nested:
         outer = drawer.actions
         drawer.actions, drawer.pool = set(), ["In1", "In2"]
         inner = drawer.chart(root=("Sub",))
-        actions += [
-            {"name": name, "language": "st", "body": f"m := m + {i + 1};"}
-            for i, name in enumerate(sorted(drawer.actions))
-        ]
+        actions += [_action(draw, name, "m", i + 1) for i, name in enumerate(sorted(drawer.actions))]
         actions.append({"name": "Sub", "language": "sfc", "body": {"elements": inner}})
         qualifier = draw(st.sampled_from(QUALIFIERS))
         association = {"id": drawer.new("a"), "qualifier": qualifier, "action": "Sub"}
@@ -127,3 +122,10 @@ def sfc_bodies(draw, nested: bool = False) -> dict:
         chart[0]["actions"].append(association)
         drawer.actions = outer
     return {"chart": {"elements": chart}, "actions": actions}
+
+
+def _action(draw, name: str, counter: str, step: int) -> dict:
+    """An action adding ``step`` to ``counter``, written in ST or in IL (SFC-02) as drawn."""
+    if draw(st.booleans()):
+        return {"name": name, "language": "il", "body": f"LD {counter}\nADD {step}\nST {counter}"}
+    return {"name": name, "language": "st", "body": f"{counter} := {counter} + {step};"}
