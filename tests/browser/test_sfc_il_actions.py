@@ -15,8 +15,8 @@ import pytest
 from playwright.sync_api import expect
 
 from .conftest import ARTIFACTS
-from .steps import go_online, open_pou, panel_tab, store_project, watch
-from .test_sfc_actions import add_action, back_to_chart, chart_editor, open_action, sfc_project
+from .steps import go_online, panel_tab, watch
+from .test_sfc_actions import add_action, back_to_chart, open_action, open_chart
 from .test_sfc_workflow import saved_pou
 
 pytestmark = pytest.mark.browser
@@ -36,10 +36,7 @@ def test_an_il_action_is_written_run_online_and_halts_on_a_breakpoint_on_its_lin
         {"type": "transition", "id": "t1", "condition": "FALSE"},
         {"type": "jump", "id": "j1", "target": "Init"},
     ]
-    store_project(server, sfc_project("ilact", "VAR\n    n : INT;\nEND_VAR", chart, []))
-    page.goto(server)
-    open_pou(page, "ilact", "Main")
-    editor = chart_editor(page)
+    editor = open_chart(page, server, "ilact", "VAR\n    n : INT;\nEND_VAR", chart, [])
 
     # A new action in IL, associated with Init (N); opened, it is the text editor: three IL lines typed.
     add_action(page, editor, "Count", "il", "Init")
