@@ -120,21 +120,9 @@ export function SfcPouView({
       halted: at && at.pou.toUpperCase() === upper && !at.body ? (at.element ?? null) : null,
     };
   }, [breakpoints, at, upper]);
-  // A halt inside an action or named transition shows it; so does a halt at an element of an action's chart.
-  const mineHalt = at && at.pou.toUpperCase() === upper ? at : null;
-  const haltedPart =
-    mineHalt?.body ?? (mineHalt?.element ? actionChartOf(history.present, mineHalt.element) : null) ?? null;
-  const [haltSeen, setHaltSeen] = useState<string | null>(null);
-  if (haltedPart !== haltSeen) {
-    setHaltSeen(haltedPart);
-    if (haltedPart) {
-      const [kind, partName] = haltedPart.split("/", 2);
-      setPart({ kind: kind === "actions" ? "action" : "transition", name: partName! });
-    }
-  }
-
-  // A place revealed in this POU (the Breakpoints panel's "Show in the editor", a diagnostic, a halt) opens the
-  // action or named transition it is in, or the chart (an element of an action's chart opens that action).
+  // A place revealed in this POU (the Breakpoints panel's "Show in the editor", a diagnostic, a halt: the debug
+  // bar reveals it) opens the action or named transition it is in, or the chart (an element of an action's chart
+  // opens that action).
   const focus = usePanels((s) => (s.focus?.pou.toUpperCase() === upper ? s.focus : null));
   // (null at first: "Show in the editor" opens the POU and reveals the place at once, before this view is made)
   const [focusSeen, setFocusSeen] = useState<typeof focus>(null);
