@@ -52,6 +52,7 @@ from ..engine.simulation import Simulation
 from ..engine.tasks import Pacer
 from ..ir import nodes as ir
 from ..ir import types as t
+from ..ir.lower_sfc import CONDITION_PROBE
 from ..model.monitor import MAX_SPEED, MIN_SPEED, At, DisplayType, ErrorCode, Log, LogKind, LogLevel, TraceTrigger
 from .conditions import BadCondition, Condition, parse_condition
 from .events import events_text, parse_events, scan_inputs
@@ -433,10 +434,14 @@ class SimRunner:
         )
 
     def _states(self, instance: str, every: bool, ids: tuple[str, ...]) -> dict[str, object]:
-        """Each watched element's state: its value when it ran in the last scan, else None."""
+        """Each watched element's state: its value when it ran in the last scan, else None. An SFC transition's
+        condition is its last computed value: a scan halted before the transitions has not computed it yet, and the
+        chart shows the value of the scan before, not "?" (docs/sfc.md)."""
         view = self.shown.probes(instance, None if every else ids)
         elements = sorted((view.values.keys() | view.executed).union(ids)) if every else ids
-        return {e: (view.values.get(e) if e in view.executed else None) for e in elements}
+        return {
+            e: (view.values.get(e) if e in view.executed or e.endswith(CONDITION_PROBE) else None) for e in elements
+        }
 
     # ------------------------------------------------------------------ run control
 

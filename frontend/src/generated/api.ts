@@ -2924,7 +2924,7 @@ export interface components {
     };
     /**
      * SfcAction
-     * @description A named action (SFC-02): ST statements, LD or FBD networks, or a chart of its own.
+     * @description A named action (SFC-02): ST statements, IL instructions (text), LD or FBD networks, or a chart of its own.
      */
     SfcAction: {
       /**
@@ -2943,7 +2943,7 @@ export interface components {
        * @default st
        * @enum {string}
        */
-      language?: "st" | "ld" | "fbd" | "sfc";
+      language?: "st" | "il" | "ld" | "fbd" | "sfc";
       /** Name */
       name: string;
     };
@@ -3046,8 +3046,9 @@ export interface components {
     };
     /**
      * SfcNamedTransition
-     * @description A transition condition written on its own (SFC-03): an ST expression, or LD/FBD networks whose coil or output
-     *     named like the transition gives its value. A chart transition whose condition is this name reads it.
+     * @description A transition condition written on its own (SFC-03): an ST expression, IL instructions whose accumulator at the
+     *     end gives its value (as in CODESYS), or LD/FBD networks whose coil or output named like the transition gives its
+     *     value. A chart transition whose condition is this name reads it.
      */
     SfcNamedTransition: {
       /**
@@ -3062,7 +3063,7 @@ export interface components {
        * @default st
        * @enum {string}
        */
-      language?: "st" | "ld" | "fbd";
+      language?: "st" | "il" | "ld" | "fbd";
       /** Name */
       name: string;
     };
