@@ -137,10 +137,7 @@ class ProjectChecker:
                 self._check_body(info, bodies[pou.name])
             if info is not None and info.name == pou.name and pou.name in actions:
                 check_actions(
-                    lambda file, info=info: BodyChecker(self.result, info, self._reporter(file, info.name)),
-                    pou,
-                    info,
-                    actions[pou.name],
+                    self.result, lambda file, info=info: self._reporter(file, info.name), pou, info, actions[pou.name]
                 )
         check_method_recursion(self, [info for info, _ in methods], blocks)  # the bodies' calls counted too
         self._check_recursion()

@@ -2,6 +2,7 @@
 // engine (`Main`, or a method's `Counter.Scaled`), the line it is halted at, toggling, and breakpoints that follow
 // an edit that moves their lines.
 import { useMemo } from "react";
+import { haltedAt } from "../online/monitor";
 import { useOnline } from "../online/store";
 import { describeBreakpoint } from "./breakpoints";
 import { movedLine } from "./follow";
@@ -14,7 +15,7 @@ export function useTextDebug(pou: string) {
     () => all.flatMap((b) => ("line" in b && b.pou.toUpperCase() === upper ? [b.line] : [])),
     [all, upper],
   );
-  const at = useOnline((s) => (s.monitor.state === "halted" ? s.monitor.at : null));
+  const at = useOnline((s) => haltedAt(s.monitor)); // also a halt in a past scan the history shows
   return {
     breakpoints: lines,
     halted: at && at.pou.toUpperCase() === upper && at.line != null ? at.line : null,

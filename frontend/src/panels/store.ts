@@ -20,6 +20,8 @@ export interface Focus {
   part?: "declarations" | "body" | null;
   /** A method or property of the function block `pou` (its texts are the files `<FB>.<member>/...`). */
   member?: string | null;
+  /** An action or named transition of an SFC POU the place is in ("actions/Fill"; the file `<POU>/actions/Fill`). */
+  body?: string | null;
   /** Increases with every request, so revealing the same place twice still moves the editor. */
   seq: number;
 }
@@ -65,7 +67,15 @@ export function focusOf(d: Diagnostic): Omit<Focus, "seq"> | null {
   const part = d.file?.endsWith("/declarations") ? "declarations" : d.file?.endsWith("/body") ? "body" : null;
   const method = /^([A-Za-z_][A-Za-z0-9_]*)\.([A-Za-z_][A-Za-z0-9_]*)[^/]*\/(declarations|body)$/.exec(d.file ?? "");
   if (method) return { pou: method[1]!, member: method[2]!, line: d.line ?? null, part };
-  return { pou: d.pou, network: d.network ?? null, element: d.element ?? null, line: d.line ?? null, part };
+  const sfcPart = /^[^/]+\/((?:actions|transitions)\/[^/]+)$/.exec(d.file ?? "")?.[1] ?? null;
+  return {
+    pou: d.pou,
+    network: d.network ?? null,
+    element: d.element ?? null,
+    line: d.line ?? null,
+    part: part ?? (sfcPart ? "body" : null),
+    body: sfcPart,
+  };
 }
 
 /** A POU named as the engine names a method's code (`COUNTER.SCALED`, a halt's place): its FB and the member. */
