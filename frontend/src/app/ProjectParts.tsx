@@ -47,7 +47,7 @@ export function GlobalsView() {
   const setGlobals = useWorkspace((s) => s.setGlobals);
   const types = useDeclarableTypes();
   const diagnostics = usePartDiagnostics().filter((d) => d.file === "globals");
-  const focus = usePartFocus("Global variables");
+  const focus = usePartFocus("part:globals");
   const phase = useOnline((s) => s.phase);
   return (
     <div className="pou-view part-view" aria-label="Global variables editor" role="region">
@@ -70,7 +70,7 @@ export function TypesView() {
   const text = useWorkspace((s) => s.project?.types ?? "");
   const setTypes = useWorkspace((s) => s.setTypes);
   const diagnostics = usePartDiagnostics();
-  const focus = usePartFocus("Types");
+  const focus = usePartFocus("part:types");
   const phase = useOnline((s) => s.phase);
   const [jump, setJump] = useState<{ line: number; seq: number } | null>(null);
   const [name, setName] = useState("");

@@ -56,7 +56,7 @@ import { LOADING } from "./lazy";
 import { useHidden, useStoredSize } from "../store/layout";
 import { KindPicker, PouActions } from "../tree/PouActions";
 import { TestFileActions } from "../tests/TestFileActions";
-import { isProjectPart, PROJECT_PARTS, type ProjectPart } from "../store/parts";
+import { isProjectPart, PART_LABELS, PROJECT_PARTS, type ProjectPart } from "../store/parts";
 import { PouMembers } from "../tree/PouMembers";
 import { typeRows } from "../store/types";
 import { keepSession, restoreSession, type SessionStores } from "./session";
@@ -247,9 +247,9 @@ function TestFilesTree() {
 
 /** What the tree says of a project part: how many types, globals, tasks it has. */
 function partSummary(project: Project, part: ProjectPart): string {
-  if (part === "Tasks") return project.tasks?.length ? `${project.tasks.length}` : "default";
-  if (part === "Library manager") return project.libraries?.length ? `${project.libraries.length}` : "none";
-  if (part === "Types") return `${typeRows(project.types ?? "").length}`;
+  if (part === "part:tasks") return project.tasks?.length ? `${project.tasks.length}` : "default";
+  if (part === "part:libraries") return project.libraries?.length ? `${project.libraries.length}` : "none";
+  if (part === "part:types") return `${typeRows(project.types ?? "").length}`;
   const parsed = parseDeclarations(project.globals ?? "");
   return parsed.ok ? `${parsed.rows.length}` : "";
 }
@@ -312,7 +312,7 @@ function ProjectTree() {
                 aria-current={active === part ? "true" : undefined}
                 onClick={() => openPou(part)}
               >
-                <span className="tree-name">{part}</span>
+                <span className="tree-name">{PART_LABELS[part]}</span>
                 <span className="tree-meta">{partSummary(project, part)}</span>
                 {changed.includes(part) ? (
                   <span className="unsaved" aria-label="unsaved changes">
@@ -399,7 +399,12 @@ function Tabs() {
               </span>
             ) : null}
           </button>
-          <button type="button" className="tab-close" aria-label={`Close ${pou}`} onClick={() => closeTab(pou)}>
+          <button
+            type="button"
+            className="tab-close"
+            aria-label={`Close ${tabLabel(pou)}`}
+            onClick={() => closeTab(pou)}
+          >
             ×
           </button>
         </div>
@@ -451,13 +456,13 @@ type PouMode = "body" | "declarations" | "variables" | "st";
 
 function ProjectPartView({ part }: { part: ProjectPart }) {
   return (
-    <ViewBoundary name={`The ${part} editor`}>
+    <ViewBoundary name={`The ${PART_LABELS[part]} editor`}>
       <Suspense fallback={LOADING}>
-        {part === "Global variables" ? (
+        {part === "part:globals" ? (
           <GlobalsView />
-        ) : part === "Types" ? (
+        ) : part === "part:types" ? (
           <TypesView />
-        ) : part === "Library manager" ? (
+        ) : part === "part:libraries" ? (
           <LibrariesView />
         ) : (
           <TasksView />
@@ -710,7 +715,11 @@ export function WorkspaceView() {
         />
         <h2>{name}</h2>
         <span className={`save-state${changed.length ? " dirty" : ""}`} role="status">
-          {saving ? "Saving…" : changed.length ? `Unsaved changes in ${changed.join(", ")}` : "All changes saved"}
+          {saving
+            ? "Saving…"
+            : changed.length
+              ? `Unsaved changes in ${changed.map(tabLabel).join(", ")}`
+              : "All changes saved"}
         </span>
         <ToolButton
           icon={Save}

@@ -400,15 +400,15 @@ export function createWorkspaceStore(
       },
 
       setGlobals(text) {
-        if (get().project?.globals !== text) replaceProject("Global variables", (p) => ({ ...p, globals: text }));
+        if (get().project?.globals !== text) replaceProject("part:globals", (p) => ({ ...p, globals: text }));
       },
 
       setTypes(text) {
-        if (get().project?.types !== text) replaceProject("Types", (p) => ({ ...p, types: text }));
+        if (get().project?.types !== text) replaceProject("part:types", (p) => ({ ...p, types: text }));
       },
 
       setTasks(tasks) {
-        replaceProject("Tasks", (p) => ({ ...p, tasks }));
+        replaceProject("part:tasks", (p) => ({ ...p, tasks }));
       },
 
       setTestText(path, text) {

@@ -16,7 +16,7 @@ function RenameTaskDialog({ task, onClose }: { task: string; onClose(): void }) 
       setError(next);
       return;
     }
-    ws.applyOperation(`rename task ${task} to ${name.trim()}`, next, ["Tasks"]);
+    ws.applyOperation(`rename task ${task} to ${name.trim()}`, next, ["part:tasks"]);
     onClose();
   };
   return (

@@ -61,6 +61,6 @@ describe("the parts a rename marks unsaved (issue 22 item 1)", () => {
         { part: "types", line: 3, text: "T" },
         { part: "test", file: "tests/t.st", line: 1, text: "Go" },
       ]),
-    ).toEqual(["Global variables", "Tasks", "Types", "tests/t.st"]);
+    ).toEqual(["part:globals", "part:tasks", "part:types", "tests/t.st"]);
   });
 });

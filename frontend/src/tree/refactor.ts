@@ -67,9 +67,9 @@ export function copyName(project: Project, name: string): string {
 export function changedParts(changes: readonly Reference[]): string[] {
   const parts = new Set<string>();
   for (const c of changes) {
-    if (c.part === "globals") parts.add("Global variables");
-    else if (c.part === "types") parts.add("Types");
-    else if (c.part === "task") parts.add("Tasks");
+    if (c.part === "globals") parts.add("part:globals");
+    else if (c.part === "types") parts.add("part:types");
+    else if (c.part === "task") parts.add("part:tasks");
     else if (c.part === "test" && c.file) parts.add(c.file);
   }
   return [...parts];
