@@ -10,6 +10,7 @@ import type { Task } from "../generated/api";
 import { DeclarationsEditor } from "../declarations/DeclarationsEditor";
 import { useDeclarableTypes } from "../store/declarableTypes";
 import { RenameDialog } from "../tree/PouActions";
+import { TypeActions } from "../tree/TypeActions";
 import { usePanels } from "../panels/store";
 import { LazyStEditor, LOADING } from "./lazy";
 import { useLiveCheck } from "../st/useLiveCheck";
@@ -138,6 +139,7 @@ export function TypesView() {
                   >
                     <PencilLine size={14} aria-hidden="true" />
                   </button>
+                  <TypeActions type={r.name} disabledBecause={readOnly ?? undefined} />
                 </td>
               </tr>
             ))}

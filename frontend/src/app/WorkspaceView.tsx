@@ -33,6 +33,7 @@ import { testsStore, useTests } from "../tests/store";
 import { runsOf } from "../store/tasks";
 import { useDiagramPou } from "../ld/useDiagramPou";
 import { TaskActions } from "../tree/TaskActions";
+import { TypesInTree } from "../tree/TypeActions";
 import { followBreakpoints } from "./followBreakpoints";
 import { partAt, elementText as sfcElementText, type SfcBody } from "../sfc/model";
 import { ExportMenu } from "../interchange/ExportMenu";
@@ -320,6 +321,7 @@ function ProjectTree() {
                   </span>
                 ) : null}
               </button>
+              {part === "part:types" ? <TypesInTree text={project.types ?? ""} /> : null}
             </li>
           ))}
         </ul>
