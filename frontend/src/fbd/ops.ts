@@ -313,7 +313,7 @@ export function arrangeNetwork(
 ): EditResult {
   const net = networksOf(body).find((n) => n.id === network);
   if (!net) return fail(`There is no network ${network}.`);
-  const laid = arranged(net, height);
+  const laid = arranged(net, height, order);
   // the order pinned: a chart's execution order numbers (returns too) stay as they were
   const kept = order?.filter((id) => ordered(net, id, chart));
   const next = kept?.length ? { ...laid, order: kept } : laid;
