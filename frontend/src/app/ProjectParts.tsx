@@ -35,8 +35,11 @@ function usePartDiagnostics(): Diagnostic[] {
 
 /** The line a clicked diagnostic of this part asks to reveal. */
 function usePartFocus(part: ProjectPart) {
-  return usePanels((s) =>
-    s.focus?.pou === part && s.focus.line != null ? { line: s.focus.line, seq: s.focus.seq } : null,
+  const focus = usePanels((s) => s.focus);
+  // derived outside the selector: a selector returning a new object every time renders without end
+  return useMemo(
+    () => (focus?.pou === part && focus.line != null ? { line: focus.line, seq: focus.seq } : null),
+    [focus, part],
   );
 }
 

@@ -13,7 +13,7 @@ const loop = (): FbdNetwork => ({
   id: "n1",
   nodes: [
     { type: "block", id: "add", call: "ADD" },
-    { type: "output", id: "out", expr: "Total" },
+    { type: "output", id: "out", var: "Total" },
     { type: "block", id: "mul", call: "MUL" },
     { type: "input", id: "in", expr: "Step" },
     { type: "input", id: "k", expr: "2" },
