@@ -317,7 +317,7 @@ export function TasksView() {
     update(index, { programs: list });
   };
   return (
-    <div className="pou-view part-view" role="region" aria-label="Tasks editor">
+    <div className="pou-view part-view tasks-view" role="region" aria-label="Tasks editor">
       {tasks.length === 0 ? (
         <p className="tree-empty">No tasks: every program runs in the default task every 10 ms.</p>
       ) : null}
@@ -343,7 +343,7 @@ export function TasksView() {
             const runs = task.programs ?? [];
             return (
               <tr key={index} aria-label={`Task ${task.name}`} className={problems.length ? "task-invalid" : undefined}>
-                <td>
+                <td data-label="Name">
                   <input
                     aria-label="Task name"
                     value={task.name}
@@ -351,7 +351,7 @@ export function TasksView() {
                     onChange={(e) => update(index, { name: e.target.value })}
                   />
                 </td>
-                <td>
+                <td data-label="Interval">
                   <input
                     aria-label="Interval"
                     value={task.interval ?? ""}
@@ -360,7 +360,7 @@ export function TasksView() {
                     onChange={(e) => update(index, { interval: e.target.value || null })}
                   />
                 </td>
-                <td>
+                <td data-label="SINGLE (event)">
                   <input
                     aria-label="SINGLE"
                     value={task.single ?? ""}
@@ -369,7 +369,7 @@ export function TasksView() {
                     onChange={(e) => update(index, { single: e.target.value || null })}
                   />
                 </td>
-                <td>
+                <td data-label="Priority">
                   <input
                     aria-label="Priority"
                     type="number"
@@ -379,7 +379,7 @@ export function TasksView() {
                     onChange={(e) => update(index, { priority: Number(e.target.value) || 0 })}
                   />
                 </td>
-                <td>
+                <td data-label="Watchdog (ms)">
                   <input
                     aria-label="Watchdog"
                     type="number"
@@ -390,7 +390,7 @@ export function TasksView() {
                     onChange={(e) => update(index, { watchdog_ms: e.target.value ? Number(e.target.value) : null })}
                   />
                 </td>
-                <td>
+                <td data-label="Programs, in the order they run" className="task-programs-cell">
                   <ol className="task-programs" aria-label={`Programs of ${task.name}`}>
                     {runs.map((program, p) => (
                       <li key={p /* not its name: renaming the instance keeps the field focused */}>
