@@ -12,6 +12,8 @@ from playwright.sync_api import expect
 
 from .conftest import ARTIFACTS
 from .steps import _request, new_pou, new_project, store_project
+from .test_project_operations import menu_action as menu
+from .test_project_operations import tree
 
 pytestmark = pytest.mark.browser
 
@@ -51,16 +53,6 @@ ITEMS = {
         }
     ],
 }
-
-
-def tree(page):
-    return page.get_by_role("navigation", name="Project tree")
-
-
-def menu(page, item: str, action: str) -> None:
-    """Opens the "⋯" menu of ``item`` in the tree and chooses ``action``."""
-    tree(page).get_by_role("button", name=f"Actions for {item}", exact=True).click()
-    tree(page).get_by_role("menuitem", name=action).click()
 
 
 def stored(server: str) -> dict:
