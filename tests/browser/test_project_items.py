@@ -122,6 +122,16 @@ def test_a_type_deleted_and_duplicated_and_a_task_duplicated_from_the_tree_each_
     page.screenshot(path=str(ARTIFACTS / "task-duplicated.png"))
     page.get_by_role("button", name="Undo duplicate task Fast").click()
     expect(tasks.get_by_role("listitem")).to_have_text([re.compile(r"^Fast every T#10ms")])
+    # Delete the task: nothing names a task, but its runs stop with it
+    menu(page, "task Fast", "Delete…")
+    dialog = page.get_by_role("dialog", name="Delete task Fast")
+    expect(dialog).to_contain_text("Fast runs Main: those runs stop with it.")
+    expect(dialog).to_contain_text("Nothing refers to task Fast.")
+    dialog.get_by_role("button", name="Delete task Fast").click()
+    expect(tasks.get_by_role("listitem")).to_have_count(0)
+    page.get_by_role("button", name="Undo delete task Fast").click()
+    expect(tasks.get_by_role("listitem")).to_have_text([re.compile(r"^Fast every T#10ms")])
+
     # each undo gave the working copy back as it was: with the task duplicated once more and saved, the
     # project is the one stored at the start plus that copy
     menu(page, "task Fast", "Duplicate…")

@@ -149,6 +149,8 @@ export interface ItemOperations {
   references(project: Project): Promise<Reference[]>;
   /** The working copy without the item. */
   remove(project: Project): Project;
+  /** What else deleting it does, in words (a task's runs stop), or null. */
+  consequence?(project: Project): string | null;
   /** The unsaved-changes keys a change of the item marks, and the tabs deleting it closes. */
   changed: string[];
   closed?: string[];
@@ -181,6 +183,10 @@ const pouOperations = (pou: Pou): ItemOperations => ({
 export function DeleteDialog({ name, item, onClose }: { name: string; item: ItemOperations; onClose(): void }) {
   const [references, setReferences] = useState<Reference[] | null>(null);
   const [error, setError] = useState<string | null>(null);
+  const [consequence] = useState(() => {
+    const project = workspaceStore.getState().project;
+    return project ? (item.consequence?.(project) ?? null) : null;
+  });
   useEffect(() => {
     const project = workspaceStore.getState().project;
     if (project) item.references(project).then(setReferences, (err) => setError(message(err)));
@@ -193,6 +199,7 @@ export function DeleteDialog({ name, item, onClose }: { name: string; item: Item
   };
   return (
     <Dialog title={`Delete ${name}`} onClose={onClose}>
+      {consequence ? <p>{consequence}</p> : null}
       {references === null && !error ? <p>Looking for uses of {name}…</p> : null}
       {references?.length ? <p>These places use {name} and will no longer compile:</p> : null}
       {references ? <ReferenceList references={references} empty={`Nothing refers to ${name}.`} /> : null}

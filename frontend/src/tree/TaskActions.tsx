@@ -4,13 +4,19 @@
 import { useMemo, useState, type FormEvent } from "react";
 import { DeleteDialog, Dialog, DialogFooter, DuplicateDialog, TreeActions, type ItemOperations } from "./PouActions";
 import { workspaceStore } from "../store/project";
-import { duplicateTask, renameTask, taskCopyName, withoutTask } from "../store/tasks";
+import { duplicateTask, renameTask, runsOf, taskCopyName, withoutTask } from "../store/tasks";
 
 const TASKS = ["part:tasks"];
 
 const taskOperations = (task: string): ItemOperations => ({
   references: async () => [],
   remove: (project) => withoutTask(project, task),
+  consequence: (project) => {
+    const runs = runsOf(project)
+      .resources.flatMap((r) => r.tasks)
+      .find((t) => t.name === task)?.instances;
+    return runs?.length ? `${task} runs ${runs.join(", ")}: those runs stop with it.` : null;
+  },
   changed: TASKS,
   copyName: (project) => taskCopyName(project, task),
   copy: async (project, name) => duplicateTask(project, task, name),
