@@ -131,6 +131,13 @@ def test_a_type_deleted_and_duplicated_and_a_task_duplicated_from_the_tree_each_
     expect(tasks.get_by_role("listitem")).to_have_count(0)
     page.get_by_role("button", name="Undo delete task Fast").click()
     expect(tasks.get_by_role("listitem")).to_have_text([re.compile(r"^Fast every T#10ms")])
+    # the Tasks editor's Delete is one undoable step too
+    tree(page).get_by_role("button", name=re.compile(r"^Tasks \d")).click()
+    editor = page.get_by_role("region", name="Tasks editor")
+    editor.get_by_role("button", name="Delete task Fast").click()
+    expect(editor.get_by_role("row", name="Task Fast")).to_have_count(0)
+    page.get_by_role("button", name="Undo delete task Fast").click()
+    expect(editor.get_by_role("row", name="Task Fast")).to_have_count(1)
 
     # each undo gave the working copy back as it was: with the task duplicated once more and saved, the
     # project is the one stored at the start plus that copy

@@ -18,7 +18,7 @@ import { useOnline } from "../online/store";
 import { taskIndexOf, type ProjectPart } from "../store/parts";
 import { structMembers, TYPE_KINDS, typeRows, withNewType, withStructMembers, type TypeKind } from "../store/types";
 import type { DeclRow } from "../iec/declarations";
-import { useWorkspace } from "../store/project";
+import { useWorkspace, workspaceStore } from "../store/project";
 import { FormError } from "../ui/FormError";
 import { asInstance, runField } from "../store/bindings";
 import { RunBindings } from "./RunBindings";
@@ -474,7 +474,13 @@ export function TasksView() {
                     type="button"
                     aria-label={`Delete task ${task.name}`}
                     disabled={disabled}
-                    onClick={() => setTasks(tasks.filter((_, i) => i !== index))}
+                    onClick={() => {
+                      // one undoable step, as from the tree's menu
+                      const ws = workspaceStore.getState();
+                      if (!ws.project) return;
+                      const rest = tasks.filter((_, i) => i !== index);
+                      ws.applyOperation(`delete task ${task.name}`, { ...ws.project, tasks: rest }, ["part:tasks"]);
+                    }}
                   >
                     Delete
                   </button>
