@@ -24,6 +24,8 @@ describe("the parts' tab keys (issue 22: a POU called Types or Tasks)", () => {
     for (const part of PROJECT_PARTS) expect(part).not.toMatch(/^[A-Za-z_][A-Za-z0-9_]*$/);
     expect(isProjectPart("Types")).toBe(false);
     expect(isProjectPart("Tasks")).toBe(false);
+    expect(isProjectPart("constructor")).toBe(false); // an object's own keys only
+    expect(migratedTab("toString")).toBe("toString");
     expect(partLabel("part:types")).toBe("Types");
     expect(partLabel("part:exercise")).toBe("Exercise");
     expect(partLabel("Types")).toBe("Types"); // a POU's name is its own label

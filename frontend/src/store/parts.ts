@@ -18,7 +18,8 @@ export const PROJECT_PARTS = Object.keys(PART_LABELS) as ProjectPart[];
 /** The exercise statement's tab and unsaved-changes key (a lab bench project's; hmi/shell.tsx shows it). */
 export const EXERCISE_TAB = "part:exercise";
 
-export const isProjectPart = (tab: string): tab is ProjectPart => tab in PART_LABELS;
+// Own keys only: `in` would also find "constructor" or "toString", which are POU names too.
+export const isProjectPart = (tab: string): tab is ProjectPart => Object.hasOwn(PART_LABELS, tab);
 
 /** What the user reads for a tab or unsaved-changes key: a part's label, else the key (a POU's name, a test
  * file's path). */
@@ -34,12 +35,15 @@ const LEGACY_KEYS: Record<string, string> = {
 
 /** A stored tab key as it is now: an old part key (its label) becomes the part's key. An old tab "Types" was
  * the Types editor even when a POU of that name existed (the collision this prefix ends). */
-export const migratedTab = (key: string): string => LEGACY_KEYS[key] ?? key;
+export const migratedTab = (key: string): string => (Object.hasOwn(LEGACY_KEYS, key) ? LEGACY_KEYS[key]! : key);
 
 /** Stored unsaved-changes keys as they are now. An old "Types" may also have meant a POU of that name
  * (`isPou`), which then stays marked too: marking more as unsaved loses nothing. */
 export function migratedChanged(keys: readonly string[], isPou: (name: string) => boolean): string[] {
-  const out = keys.flatMap((k) => (LEGACY_KEYS[k] ? (isPou(k) ? [LEGACY_KEYS[k], k] : [LEGACY_KEYS[k]]) : [k]));
+  const out = keys.flatMap((k) => {
+    const part = migratedTab(k);
+    return part === k ? [k] : isPou(k) ? [part, k] : [part];
+  });
   return [...new Set(out)];
 }
 
