@@ -96,15 +96,26 @@ def test_the_printer_writes_textual_sfc_that_parses_back_to_the_same_tree():
     assert parse_source(print_source(tree)).ast == tree
 
 
-@given(sfc_bodies())
+@given(sfc_bodies(named=True))
 @settings(max_examples=30)
 def test_written_textual_sfc_reads_back_as_the_same_chart(body):
+    """Random charts, some of whose transitions read named transitions in ST or IL: the same chart and the same
+    named transitions come back; the read chart is drawn from its graph (branches may change places), and its text
+    read and written again is the same text."""
     original = sfc_project(body)
     result = export_project_st(original, sfc_text=True)
     assert [d.format() for d in result.diagnostics] == []
     again, diagnostics = source_to_project(result.text, "again")
     assert [d.format() for d in diagnostics if d.severity == "error"] == []
     assert semantics(again.pou("Seq").body) == semantics(original.pou("Seq").body)
+    assert _named(again.pou("Seq").body) == _named(original.pou("Seq").body)
+    written = export_project_st(again, sfc_text=True).text  # the chart redrawn from its graph: then stable
+    assert export_project_st(source_to_project(written, "third")[0], sfc_text=True).text == written
+
+
+def _named(body: SfcBody) -> list[tuple[str, str, object]]:
+    """The named transitions (their order in the text is that of the chart, not of the list)."""
+    return sorted((t.name, t.language, t.body) for t in body.transitions)
 
 
 def test_parallel_branches_and_priorities_in_text():
@@ -238,7 +249,7 @@ def _nested_semantics(body: SfcBody) -> tuple:
     return semantics(plain), charts
 
 
-@given(sfc_bodies(nested=True))
+@given(sfc_bodies(nested=True, named=True))
 @settings(max_examples=30)
 def test_written_textual_sfc_with_an_action_chart_reads_back_as_the_same_charts(body):
     original = sfc_project(body)
@@ -247,6 +258,7 @@ def test_written_textual_sfc_with_an_action_chart_reads_back_as_the_same_charts(
     again, diagnostics = source_to_project(result.text, "again")
     assert [d.format() for d in diagnostics if d.severity == "error"] == []
     assert _nested_semantics(again.pou("Seq").body) == _nested_semantics(original.pou("Seq").body)
+    assert _named(again.pou("Seq").body) == _named(original.pou("Seq").body)
 
 
 NAMED = [  # (name, language, body): T1 the accumulator after its last line (IL), T2 an ST expression
@@ -323,8 +335,21 @@ def test_a_named_transition_in_ld_or_used_by_no_chart_transition_is_refused_by_n
     """An LD (or FBD) named transition has no textual form (B.1.6's textual transitions are ST or IL); nor has a
     named transition that no chart transition has as its whole condition (it would be lost): EXPORT-UNSUPPORTED in
     the transition's file."""
-    ld = {"name": "Ready", "language": "ld", "body": {"networks": [{"id": "n1", "elements": [
-        {"type": "contact", "id": "c1", "var": "go"}, {"type": "coil", "id": "k1", "var": "Ready"}]}]}}  # fmt: skip
+    ld = {
+        "name": "Ready",
+        "language": "ld",
+        "body": {
+            "networks": [
+                {
+                    "id": "n1",
+                    "elements": [
+                        {"type": "contact", "id": "c1", "var": "go"},
+                        {"type": "coil", "id": "k1", "var": "Ready"},
+                    ],
+                }
+            ]
+        },
+    }
     unused = {"name": "Spare", "language": "st", "body": "go"}
     chart = [step("S0"), tr("Ready"), step("S1"), tr("NOT Spare"), jump("S0")]
     pou = sfc_pou("Main", "VAR go : BOOL; END_VAR", chart, transitions=[ld, unused])
