@@ -4,9 +4,13 @@ Reading: the steps (``INITIAL_STEP``/``STEP`` with their ``action(qualifier[, ti
 transitions (``TRANSITION [name] [(PRIORITY := n)] FROM a TO (b, c) := condition; END_TRANSITION``, in the order
 written: the earlier of two transitions leaving one step comes first, as the left one of a drawn chart) and the
 ``ACTION``s (ST, or a chart of their own: IEC's ``ACTION name: function_block_body END_ACTION`` allows an SFC body)
-make a graph that ``model.sfc_graph.graph_chart`` draws as a chart; texts keep their source.
-Writing: the chart's graph as the same constructs, ST actions as typed (what IEC text cannot say - entry and exit
-actions, time limits, actions in LD or FBD - is refused or named, see ``sfc_to_text``).
+make a graph that ``model.sfc_graph.graph_chart`` draws as a chart; texts keep their source. A named ``TRANSITION``
+is a named transition (``:= expression;`` in ST, ``... TO b:`` and an instruction list in IL, blanked for the ST
+parser by ``il_parser.blank_il_bodies``) that its chart transition reads by name.
+Writing: the chart's graph as the same constructs, ST actions as typed, a transition whose condition is the name of
+an ST or IL named transition as that ``TRANSITION name`` (what IEC text cannot say - entry and exit actions, time
+limits, actions or named transitions in LD or FBD, a named transition no chart transition has as its condition -
+is refused by name, see ``sfc_to_text``).
 """
 
 from __future__ import annotations
