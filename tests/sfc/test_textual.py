@@ -404,3 +404,42 @@ END_PROGRAM
             "an IL transition condition is kept as a named transition: give it a name (TRANSITION name FROM)",
         ),
     ]
+
+
+def test_a_hand_written_il_transition_condition_reads_as_a_named_il_transition():
+    """B.1.6 ``transition_condition ::= ':' simple_instruction_list``, keywords in any case, a priority and a
+    simultaneous divergence before the ``:``; a step called TOP and a comment do not disturb the reader."""
+    text = """PROGRAM P
+  VAR a, b : BOOL; END_VAR
+  INITIAL_STEP TOP:
+  END_STEP
+  transition Go (PRIORITY := 2) from TOP to (S1, S2):
+    LD a (* TO x: *)
+    AND b
+  end_transition
+  STEP S1:
+  END_STEP
+  STEP S2:
+  END_STEP
+  TRANSITION FROM (S1, S2) TO TOP
+    := NOT a;
+  END_TRANSITION
+END_PROGRAM
+"""
+    proj, diagnostics = source_to_project(text, "p")
+    assert [d.format() for d in diagnostics] == []
+    body = proj.pou("P").body
+    assert [(t.name, t.language, t.body) for t in body.transitions] == [("Go", "il", "LD a (* TO x: *)\nAND b")]
+    top, go = body.chart.elements[:2]
+    assert (top.name, go.condition, go.priority) == ("TOP", "Go", 2)
+    run_table(
+        proj,
+        """
+        scan a b || Go TOP.X S1.X S2.X
+        0    1 0 || 0  1     0   0
+        1    1 1 || 1  0     1   1
+        2    1 1 || 1  0     1   1
+        3    0 1 || 0  1     0   0
+        """,
+        pou="P",
+    )

@@ -305,7 +305,7 @@ def blank_il_bodies(text: str) -> tuple[str, set[str]]:
 
 #: The head of a textual SFC transition whose condition is IL (``TRANSITION [name] [(PRIORITY := n)] FROM a TO b:``,
 #: B.1.6's ``transition_condition ::= ':' simple_instruction_list``); its instructions follow, up to END_TRANSITION.
-IL_TRANSITION_HEAD = r"\bTRANSITION\b(?:[^:;]|:=)*?\bTO\s*(?:[A-Za-z_]\w*|\([^)]*\))\s*:(?!=)"
+IL_TRANSITION_HEAD = r"\bTRANSITION\b(?:[^:;]|:=)*?\bTO\b\s*(?:[A-Za-z_]\w*|\([^)]*\))\s*:(?!=)"
 
 _SFC_PART_BOUNDS = re.compile(
     r"'(?:[^'$\n]|\$.)*'|\"(?:[^\"$\n]|\$.)*\"|\(\*[\s\S]*?\*\)|//[^\n]*"
