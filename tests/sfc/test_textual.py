@@ -14,7 +14,7 @@ from ladderlab.st.project_text import source_to_project
 from tests.support import external
 
 from .strategies import sfc_bodies
-from .support import build, jump, par, project, run_table, sfc_pou, step, tr
+from .support import build, jump, ld_network, par, project, run_table, sfc_pou, step, tr
 from .test_plcopen import semantics, sfc_project
 
 COUNTER = """FUNCTION_BLOCK CounterSFC
@@ -338,17 +338,7 @@ def test_a_named_transition_in_ld_or_used_by_no_chart_transition_is_refused_by_n
     ld = {
         "name": "Ready",
         "language": "ld",
-        "body": {
-            "networks": [
-                {
-                    "id": "n1",
-                    "elements": [
-                        {"type": "contact", "id": "c1", "var": "go"},
-                        {"type": "coil", "id": "k1", "var": "Ready"},
-                    ],
-                }
-            ]
-        },
+        "body": ld_network({"type": "contact", "id": "c1", "var": "go"}, {"type": "coil", "id": "k1", "var": "Ready"}),
     }
     unused = {"name": "Spare", "language": "st", "body": "go"}
     chart = [step("S0"), tr("Ready"), step("S1"), tr("NOT Spare"), jump("S0")]
