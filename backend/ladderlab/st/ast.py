@@ -485,13 +485,14 @@ class SfcStep:
 
 @dataclass(slots=True)
 class SfcTransition:
-    """``TRANSITION [name] [(PRIORITY := n)] FROM steps TO steps := condition; END_TRANSITION``."""
+    """``TRANSITION [name] [(PRIORITY := n)] FROM steps TO steps := condition; END_TRANSITION``, or ``... TO steps:
+    IL instructions END_TRANSITION`` (``condition`` None: the instructions are read from the source)."""
 
     name: str | None
     priority: int | None
     sources: list[str]
     targets: list[str]
-    condition: Expr
+    condition: Expr | None
     span: Span = _span()
 
 

@@ -295,7 +295,7 @@ def blank_il_bodies(text: str) -> tuple[str, set[str]]:
             pieces += [text[copied:body_start], re.sub(r"[^\n]", " ", text[body_start:body_end])]
             copied = body_end
             continue
-        for action_start, action_end in _il_actions(text[body_start:body_end]):  # textual SFC (docs/sfc.md)
+        for action_start, action_end in _il_sfc_parts(text[body_start:body_end]):  # textual SFC (docs/sfc.md)
             start_at, end_at = body_start + action_start, body_start + action_end
             pieces += [text[copied:start_at], re.sub(r"[^\n]", " ", text[start_at:end_at])]
             copied = end_at
@@ -303,26 +303,38 @@ def blank_il_bodies(text: str) -> tuple[str, set[str]]:
     return "".join(pieces), names
 
 
-_ACTION_BOUNDS = re.compile(
+#: The head of a textual SFC transition whose condition is IL (``TRANSITION [name] [(PRIORITY := n)] FROM a TO b:``,
+#: B.1.6's ``transition_condition ::= ':' simple_instruction_list``); its instructions follow, up to END_TRANSITION.
+IL_TRANSITION_HEAD = r"\bTRANSITION\b(?:[^:;]|:=)*?\bTO\b\s*(?:[A-Za-z_]\w*|\([^)]*\))\s*:(?!=)"
+
+_SFC_PART_BOUNDS = re.compile(
     r"'(?:[^'$\n]|\$.)*'|\"(?:[^\"$\n]|\$.)*\"|\(\*[\s\S]*?\*\)|//[^\n]*"
-    r"|\b(ACTION)\s+[A-Za-z_]\w*\s*:|\b(END_ACTION)\b",
+    rf"|\b(ACTION)\s+[A-Za-z_]\w*\s*:|\b(END_ACTION)\b|({IL_TRANSITION_HEAD})|\b(END_TRANSITION)\b",
     re.IGNORECASE,
 )
 
 
-def _il_actions(body: str) -> list[tuple[int, int]]:
+def _il_sfc_parts(body: str) -> list[tuple[int, int]]:
     """The offsets of the bodies of the ``ACTION name: ... END_ACTION`` in a textual SFC body that are IL (an SFC
-    action written in IL, SFC-02): ``st/sfc_text.py`` reads them from the original text."""
+    action written in IL, SFC-02), and of the IL conditions of its transitions (``TRANSITION ... TO b: ...
+    END_TRANSITION``, a named transition in IL): ``st/sfc_text.py`` reads them from the original text."""
     found: list[tuple[int, int]] = []
     opened: list[int] = []
-    for match in _ACTION_BOUNDS.finditer(body):
+    transition: int | None = None
+    for match in _SFC_PART_BOUNDS.finditer(body):
         if match.group(1):
             opened.append(match.end())
         elif match.group(2) and opened:
             start = opened.pop()
             if looks_like_il(body[start : match.start()]):
                 found.append((start, match.start()))
-    return found
+        elif match.group(3):
+            transition = match.end()
+        elif match.group(4) and transition is not None:
+            if looks_like_il(body[transition : match.start()]):
+                found.append((transition, match.start()))
+            transition = None
+    return sorted(found)
 
 
 def _body_bounds(unit: str) -> tuple[int, int] | None:

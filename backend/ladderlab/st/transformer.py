@@ -237,7 +237,8 @@ class AstBuilder(Transformer):
         name = next((str(x) for x in c[1:2] if isinstance(x, Token) and x.type == "IDENT"), None)
         priority = next((int(str(x)) for x in c if isinstance(x, Token) and x.type == "INTEGER"), None)
         steps = [x for x in c if isinstance(x, list)]
-        return ast.SfcTransition(name, priority, steps[0], steps[1], c[-2], span_of(c))
+        condition = c[-2] if not isinstance(c[-2], list) else None  # None: IL, read from the source
+        return ast.SfcTransition(name, priority, steps[0], steps[1], condition, span_of(c))
 
     def sfc_steps(self, c):
         return [str(x) for x in c]
