@@ -119,9 +119,14 @@ _TABLE: list[tuple[str, str, Severity, str]] = [
     ("diagram", "INSTANCE-TYPE", "error", "A box's instance is not an instance of the function block it calls."),
     ("diagram", "MISSING-PIN", "error", "An input of a box is not connected."),
     ("diagram", "IN-OUT", "error", "An in-out pin of a box is fed a computed value instead of a variable."),
-    ("diagram", "BAD-LABEL", "error", "A network label is not an identifier or an unsigned integer."),
-    ("diagram", "DUPLICATE-LABEL", "error", "Two networks of a POU have the same label."),
-    ("diagram", "UNKNOWN-LABEL", "error", "A jump names a label no network of the POU has."),
+    (
+        "diagram",
+        "BAD-LABEL",
+        "error",
+        "A network or CFC label is not an identifier or an unsigned integer, or FBD has a label element.",
+    ),
+    ("diagram", "DUPLICATE-LABEL", "error", "Two networks of a POU (two labels of a CFC chart) have the same label."),
+    ("diagram", "UNKNOWN-LABEL", "error", "A jump names a label no network of the POU (no label of the chart) has."),
     ("diagram", "DUPLICATE-ID", "error", "Two networks or elements of a POU have the same id."),
     # ladder diagram (ir/lower_ld.py)
     ("ld", "LD-PARALLEL", "error", "A parallel branch has fewer than two branches."),
@@ -143,7 +148,7 @@ _TABLE: list[tuple[str, str, Severity, str]] = [
     ),
     ("fbd", "FBD-UNKNOWN-PIN", "error", "A wire or flag uses a pin the block does not have."),
     ("fbd", "FBD-PIN-FLAG", "error", "An output pin has an edge flag."),
-    ("fbd", "CFC-JUMP", "error", "A CFC chart has a jump: a chart has no networks or labels to jump to."),
+    ("fbd", "CFC-JUMP-CONDITION", "error", "A jump on a CFC chart has no condition wired into its input."),
     # building and running
     ("build", "IR-UNSUPPORTED", "error", "The program uses something LadderLab cannot run yet."),
     ("build", "IR-EN-CALL", "error", "A call with EN/ENO stands where its statement cannot be lifted out."),

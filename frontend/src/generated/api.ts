@@ -1380,6 +1380,23 @@ export interface components {
        */
       type: "jump";
     };
+    /**
+     * FbdLabel
+     * @description A jump target on a CFC chart (CODESYS's CFC label): the chart's jumps to ``name`` go on at its execution
+     *     order number. FBD labels its networks instead (``FbdNetwork.label``), so an FBD network refuses one.
+     */
+    FbdLabel: {
+      /** Id */
+      id: string;
+      /** Name */
+      name: string;
+      pos?: components["schemas"]["Position"] | null;
+      /**
+       * @description discriminator enum property added by openapi-typescript
+       * @enum {string}
+       */
+      type: "label";
+    };
     /** FbdNetwork */
     FbdNetwork: {
       /** Comment */
@@ -1395,6 +1412,7 @@ export interface components {
         | components["schemas"]["OutputNode"]
         | components["schemas"]["FbdJump"]
         | components["schemas"]["FbdReturn"]
+        | components["schemas"]["FbdLabel"]
         | components["schemas"]["Connector"]
         | components["schemas"]["Continuation"]
         | components["schemas"]["FbdComment"]
@@ -3764,6 +3782,7 @@ export type ExampleInfo = components["schemas"]["ExampleInfo"];
 export type FbdBody = components["schemas"]["FbdBody"];
 export type FbdComment = components["schemas"]["FbdComment"];
 export type FbdJump = components["schemas"]["FbdJump"];
+export type FbdLabel = components["schemas"]["FbdLabel"];
 export type FbdNetwork = components["schemas"]["FbdNetwork"];
 export type FbdOrder = components["schemas"]["FbdOrder"];
 export type FbdReturn = components["schemas"]["FbdReturn"];
