@@ -15,7 +15,7 @@ from ladderlab.ir.lower_project import lower_project
 from ladderlab.model import fbd
 from ladderlab.model.cfc import CfcBody
 from ladderlab.model.project import Pou
-from tests.ir.diagram_support import blk, errors, flabel, fjump, fret, inp, net, out, project, simulate, trace
+from tests.ir.diagram_support import blk, errors, fjump, flabel, fret, inp, net, out, project, simulate, trace
 
 DECLS = "VAR a, x, y, z, n : INT; skip, back, stop : BOOL; END_VAR"
 

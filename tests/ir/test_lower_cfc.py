@@ -16,7 +16,7 @@ from ladderlab.ir.lower_fbd import evaluation_order
 from ladderlab.model import fbd
 from ladderlab.model.cfc import CfcBody
 from ladderlab.model.project import Pou
-from tests.ir.diagram_support import blk, errors, fret, inp, net, out, simulate, trace
+from tests.ir.diagram_support import blk, fret, inp, net, out, simulate, trace
 
 
 def cfc_pou(name: str, declarations: str, chart: fbd.FbdNetwork) -> Pou:
