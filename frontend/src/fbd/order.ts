@@ -2,12 +2,12 @@
 // docs/diagrams.md "Evaluation order"): "run earlier/later" swaps a block or output node with its
 // neighbour in the order the lowering reports, unless one feeds the other - data flow always wins.
 // On a CFC chart (docs/diagrams.md "CFC") the order list is the order: every executed element
-// (blocks, outputs, returns) moves freely, and a wire against the order carries the previous scan.
+// (blocks, outputs, jumps, labels, returns) moves freely, and a wire against the order carries the previous scan.
 import { kindOf, networksOf, nodesOf, wiresOf, type FbdBody, type FbdNetwork, type PinRef } from "./model";
 import type { EditResult } from "./ops";
 
 /** Elements with an execution order number on a CFC chart (inputs are read where they are used). */
-const EXECUTED = new Set(["block", "output", "jump", "return"]);
+const EXECUTED = new Set(["block", "output", "jump", "label", "return"]);
 
 /** Nodes whose place the `order` list decides (inputs follow their consumer; in FBD jumps and returns run last). */
 export const ordered = (network: FbdNetwork, id: string, chart = false): boolean => {

@@ -219,6 +219,13 @@ export function FbdNodeView({ data, selected }: NodeProps<FbdFlowNode>) {
         );
       case "return":
         return <span className="fbd-keyword">RETURN</span>;
+      case "label":
+        return (
+          <>
+            <TextField node={node} text={(node as { name: string }).name} placeholder="label" label="Label name" />
+            <span className="fbd-keyword">:</span>
+          </>
+        );
       default:
         return (
           <TextField
