@@ -2276,6 +2276,11 @@ export interface components {
        */
       abstract?: boolean;
       /**
+       * Actions
+       * @description Function blocks only: their ACTIONs outside SFC (CODESYS), ST bodies.
+       */
+      actions?: components["schemas"]["PouAction"][];
+      /**
        * Body
        * @default
        */
@@ -2334,6 +2339,22 @@ export interface components {
        * @description Functions only: the result type.
        */
       return_type?: string | null;
+    };
+    /**
+     * PouAction
+     * @description An ACTION of a FUNCTION_BLOCK outside SFC (CODESYS; IEC 61131-3 ed. 2's action syntax): statements that run
+     *     on the variables of the instance it is called on - ``inst.Action();`` in ST, ``CAL inst.Action`` in IL,
+     *     ``Action();`` in the FB itself (IL-08). No variables or parameters of its own (docs/st.md, "Actions").
+     */
+    PouAction: {
+      /**
+       * Body
+       * @description ST statements.
+       * @default
+       */
+      body?: string;
+      /** Name */
+      name: string;
     };
     /**
      * PrintDocument
@@ -3818,6 +3839,7 @@ export type PinRef = components["schemas"]["PinRef"];
 export type PlantSymbol = components["schemas"]["PlantSymbol"];
 export type Position = components["schemas"]["Position"];
 export type Pou = components["schemas"]["Pou"];
+export type PouAction = components["schemas"]["PouAction"];
 export type PrintDocument = components["schemas"]["PrintDocument"];
 export type ProgramInstance = components["schemas"]["ProgramInstance"];
 export type Project = components["schemas"]["Project"];
