@@ -125,6 +125,7 @@ def st_pou(project: Project, pou: Pou, checked: CheckResult) -> ExportedPou:
             return_type=pou.return_type,
             declarations=_declarations(pou.declarations, declarations),
             body=body,
+            actions=pou.actions,  # ST already (an FB's actions outside SFC)
         ),
         source_map,
         [d for d in diagnostics if d.severity != "error"],
