@@ -377,7 +377,7 @@ export function FbdEditor({
     const network = networks[0];
     if (!network) return;
     dataFlowOf(network).then(
-      ({ order }) => apply(orderByDataFlow(body, network.id, order)),
+      ({ order }) => apply(orderByDataFlow(body, network.id, order, orders.get(network.id) ?? [])),
       () => setMessage("The data-flow order could not be computed; try again in a moment."),
     );
   };
