@@ -49,9 +49,7 @@ def run(source: str, gos: list[bool]) -> list[tuple[int, int]]:
 EXPECTED = [(2, 2), (4, 0), (2, 2)]
 
 
-def test_an_action_called_with_the_instances_input_in_il_IL_08():
-    """``CALC Inst.Reset(In := FALSE)``: the seed's call, conditional on the CR (IL-14)."""
-    source = f"""PROGRAM P
+IL_CALL = f"""PROGRAM P
 {DECLS}
 CAL Inst(In := TRUE)
 CAL Inst(In := TRUE)
@@ -63,7 +61,11 @@ LD Inst.out
 ST ERG
 END_PROGRAM
 """
-    assert run(source, [False, True, False]) == EXPECTED
+
+
+def test_an_action_called_with_the_instances_input_in_il_IL_08():
+    """``CALC Inst.Reset(In := FALSE)``: the seed's call, conditional on the CR (IL-14)."""
+    assert run(IL_CALL, [False, True, False]) == EXPECTED
 
 
 def test_the_same_action_call_in_st_IL_08():
@@ -199,18 +201,7 @@ def test_the_il_call_of_an_action_exports_as_st_that_runs_alike_IL_08():
     traces as the IL over 200 random scans."""
     from tests.interchange.st_support import body, exported, same_traces
 
-    source = f"""PROGRAM P
-{DECLS}
-CAL Inst(In := TRUE)
-LD Inst.out
-ST before
-LD go
-CALC Inst.Reset(In := FALSE)
-LD Inst.out
-ST ERG
-END_PROGRAM
-"""
-    project, diagnostics = source_to_project(source + COUNTER)
+    project, diagnostics = source_to_project(IL_CALL + COUNTER)
     assert diagnostics == []
     text = body(exported(project, "P").text)
     assert "IF go THEN\n    Inst.In := FALSE;\n    Inst.Reset();\nEND_IF;" in text
