@@ -113,7 +113,7 @@ _TABLE: list[tuple[str, str, Severity, str]] = [
     ("diagram", "INPUT-WRITE", "error", "A coil or output writes an input of the POU."),
     ("diagram", "UNKNOWN-CALL", "error", "A box calls a function or function block that does not exist."),
     ("diagram", "PLANT", "error", "A box calls a plant (plants run in the plant task, never called)."),
-    ("diagram", "NOT-CALLABLE", "error", "A box calls a program."),
+    ("diagram", "NOT-CALLABLE", "error", "A box in a function or function block calls a program."),
     ("diagram", "NO-INSTANCE", "error", "A function block box has no instance."),
     ("diagram", "INSTANCE", "error", "A function box has an instance."),
     ("diagram", "INSTANCE-TYPE", "error", "A box's instance is not an instance of the function block it calls."),

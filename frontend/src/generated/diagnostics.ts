@@ -430,12 +430,12 @@ export const DIAGNOSTICS = {
     "FBD-NOT-CALLABLE": {
       anchor: "ld-not-callable-fbd-not-callable",
       area: "diagram",
-      example: "a box calling the program Main",
+      example: "a box in the function block Valve calling the program Main",
       example_language: "text",
       example_note: "",
-      fix: "programs are run by tasks; make the POU a function block to call it from a box.",
+      fix: "only programs call programs (as in ST): call it from a program's box, or make the called POU a function block and give the box an instance.",
       severity: "error",
-      summary: "A box calls a program.",
+      summary: "A box in a function or function block calls a program.",
     },
     "FBD-ORDER": {
       anchor: "fbd-order",
@@ -771,12 +771,12 @@ export const DIAGNOSTICS = {
     "LD-NOT-CALLABLE": {
       anchor: "ld-not-callable-fbd-not-callable",
       area: "diagram",
-      example: "a box calling the program Main",
+      example: "a box in the function block Valve calling the program Main",
       example_language: "text",
       example_note: "",
-      fix: "programs are run by tasks; make the POU a function block to call it from a box.",
+      fix: "only programs call programs (as in ST): call it from a program's box, or make the called POU a function block and give the box an instance.",
       severity: "error",
-      summary: "A box calls a program.",
+      summary: "A box in a function or function block calls a program.",
     },
     "LD-PARALLEL": {
       anchor: "ld-parallel",

@@ -24,7 +24,7 @@ from ...ir.lower_fbd import root_names  # the variable an output node writes, ex
 from ...model import fbd
 from ...st import ast
 from ...st.checker import check_operand
-from .elements import PouScope, callee_of, function_call, operand, output_pin, owner, text_of
+from .elements import PouScope, box_instance, callee_of, function_call, operand, output_pin, owner, text_of
 from .network import ChartJump, ChartLabel, Control, NetworkCode, Use, Value
 
 
@@ -75,7 +75,7 @@ class _Network:
         callee = callee_of(self.scope.checked, producer.call)
         if callee.is_fb and source.pin in callee.output_names():
             flags = _flags(producer).get(source.pin)
-            pin = output_pin(callee, operand(producer.instance), source.pin)
+            pin = output_pin(callee, box_instance(callee, producer.instance), source.pin)
             return Text(ast.Unary("NOT", pin) if flags is not None and flags.negated else pin)
         for consumer, sources in self.graph.inputs.items():
             target, fed = self.graph.nodes[consumer], sources.get("IN")
@@ -161,7 +161,7 @@ class _Network:
     def block(self, node: fbd.Block) -> None:
         scope, code = self.scope, self.code
         callee = callee_of(scope.checked, node.call)
-        instance = operand(node.instance) if callee.is_fb else None
+        instance = box_instance(callee, node.instance)
         name = owner(callee, instance)
         flags = _flags(node)
         inputs: dict[str, PinValue] = {}
