@@ -650,7 +650,7 @@ def test_sfc_and_il_pous_import_actions_outside_sfc_and_foreign_add_data_are_rep
             "PLCOPEN-UNSUPPORTED",
             "Main",
             "action 'Blink' of POU Main was not imported: LadderLab imports an SFC POU's or a function block's "
-            "actions written in ST",
+            "actions with ST bodies",
         ),
         (
             "PLCOPEN-ADDDATA",

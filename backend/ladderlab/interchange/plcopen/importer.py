@@ -305,7 +305,7 @@ class _Importer:
             r.report(
                 "PLCOPEN-UNSUPPORTED",
                 f"action '{item.get('name', '')}' of POU {pou.name} was not imported: LadderLab imports "
-                f"{what} actions written in ST",
+                f"{what} actions with ST bodies",
                 item,
                 severity="warning",
                 pou=pou.name,
