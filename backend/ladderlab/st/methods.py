@@ -57,6 +57,8 @@ def declare_methods(
                     body=accessor.body,
                 )
                 members.append((as_method, prop.name, f"{prop.name}.{kind}"))
+    members_word = "methods, properties or actions" if actions else "methods or properties"
+    member_word = "method, property or action" if actions else "method or property"
     for method, name, label in members:
         report = checker._reporter(method_file(fb.name, label, "declarations"), f"{fb.name}.{label}")
         key = label.upper()
@@ -67,10 +69,10 @@ def declare_methods(
         check_identifier(name, None, report)
         upper = name.upper()
         if key in fb.methods or (key != upper and upper in fb.methods):  # (methods are declared first)
-            report("ST-DUPLICATE", f"{fb.name} has two methods, properties or actions called '{name}'", None)
+            report("ST-DUPLICATE", f"{fb.name} has two {members_word} called '{name}'", None)
             continue
         if upper in fb.symbols:
-            report("ST-DUPLICATE", f"'{name}' is both a variable and a method, property or action of {fb.name}", None)
+            report("ST-DUPLICATE", f"'{name}' is both a variable and a {member_word} of {fb.name}", None)
             continue
         info = PouInfo(f"{fb.name}.{label}", "FUNCTION", "st", None)
         action = any(method is a for a in as_actions)
