@@ -116,8 +116,12 @@ class Declarations:
     def declare(self, hint: str, type_text: str, var_class: str | None = None) -> str:
         var_class = var_class or self.temp_class
         name = self.names.fresh(hint)
-        self.items.append((name, type_text, var_class))
+        self.add(name, type_text, var_class)
         return name
+
+    def add(self, name: str, type_text: str, var_class: str = "VAR_TEMP") -> None:
+        """A variable whose name ``names`` already reserved."""
+        self.items.append((name, type_text, var_class))
 
 
 class NetworkCode:
