@@ -159,7 +159,8 @@ class AstBuilder(Transformer):
         methods = [x for x in rest if isinstance(x, ast.MethodDecl)]
         sfc = next((x for x in rest if isinstance(x, ast.Sfc)), None)
         properties = [x for x in rest if isinstance(x, ast.PropertyDecl)]
-        members = (ast.VarBlock, ast.Sfc, ast.MethodDecl, ast.PropertyDecl)
+        actions = [x for x in rest if isinstance(x, ast.ActionDecl)]
+        members = (ast.VarBlock, ast.Sfc, ast.MethodDecl, ast.PropertyDecl, ast.ActionDecl)
         body = [x for x in rest if not isinstance(x, members)]
         return ast.Pou(
             "FUNCTION_BLOCK",
@@ -171,10 +172,14 @@ class AstBuilder(Transformer):
             sfc,
             methods=methods,
             properties=properties,
+            actions=actions,
             modifier=modifier,
             extends=extends,
             implements=implements,
         )
+
+    def pou_action(self, c):
+        return ast.ActionDecl(str(c[1]), list(c[2:-1]), span_of(c))
 
     def property_decl(self, c):
         modifiers = [x for x in c[1:] if isinstance(x, str) and not isinstance(x, Token)]

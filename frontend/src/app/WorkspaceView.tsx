@@ -67,6 +67,7 @@ import { FormError } from "../ui/FormError";
 
 // Loaded on first use, each in its own chunk: the ST views (CodeMirror) and the FBD editor (@xyflow).
 const StPouView = lazy(() => import("./StViews").then((m) => ({ default: m.StPouView })));
+const ActionsView = lazy(() => import("./ActionsView").then((m) => ({ default: m.ActionsView })));
 const TestFileView = lazy(() => import("./StViews").then((m) => ({ default: m.TestFileView })));
 const FbdPouView = lazy(() => import("../fbd/FbdPouView").then((m) => ({ default: m.FbdPouView })));
 const ShellTab = lazy(() => import("../hmi/ShellTab").then((m) => ({ default: m.ShellTab })));
@@ -455,7 +456,7 @@ function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
 const TREE_MIN_PX = 160;
 const TREE_MAX_PX = 480;
 
-type PouMode = "body" | "declarations" | "variables" | "st";
+type PouMode = "body" | "declarations" | "variables" | "st" | "actions";
 
 function ProjectPartView({ part }: { part: ProjectPart }) {
   return (
@@ -500,6 +501,9 @@ function PouView({ name }: { name: string }) {
     { id: "declarations", label: "Declarations" },
     { id: "variables", label: "Variables" },
     ...(pou.language !== "st" ? [{ id: "st" as const, label: "View as ST" }] : []),
+    ...(pou.kind === "function_block"
+      ? [{ id: "actions" as const, label: `Actions (${pou.actions?.length ?? 0})` }]
+      : []),
   ];
   let content;
   if (mode === "declarations") {
@@ -511,6 +515,8 @@ function PouView({ name }: { name: string }) {
         focus={focus?.part === "declarations" && focus.line != null ? { line: focus.line, seq: focus.seq } : null}
       />
     );
+  } else if (mode === "actions") {
+    content = <ActionsView pou={pou} />;
   } else if (mode === "variables") {
     content = <VariablesView pou={pou} instancePicker={<InstancePicker pou={pou.name} />} />;
   } else if (mode === "st") {
@@ -544,7 +550,9 @@ function PouView({ name }: { name: string }) {
         ? `The variables of ${name}`
         : mode === "st"
           ? `The ST view of ${name}`
-          : `The ${LANGUAGE[pou.language]} editor of ${name}`;
+          : mode === "actions"
+            ? `The actions of ${name}`
+            : `The ${LANGUAGE[pou.language]} editor of ${name}`;
   return (
     <div className="pou-view">
       <div className="pou-modes" role="tablist" aria-label={`${name} views`}>
