@@ -24,6 +24,7 @@ from ..model.diagnostics import Diagnostic
 from . import ast
 from .comments import attach_comments, blank_nested_comments
 from .errors import describe_unexpected, last_token, literal_problem, would_accept
+from .fast_lalr import NotFast, fast_parse
 from .lark_cache import cached_lark
 from .nesting import too_deep
 from .quick_decls import quick_declarations
@@ -251,8 +252,12 @@ _NESTING_NEEDS = 100  # characters: a shorter text cannot nest anywhere near the
 def _run(text: str, start: str, file: str | None, pou: str | None = None) -> ParseResult:
     diagnostics: list[Diagnostic] = []
     report = _Reporter(diagnostics, file, pou, text)
+    parser = _parser(start in _TEST_STARTS)
     try:
-        tree = _parser(start in _TEST_STARTS).parse(text, start=start, on_error=report.recover)
+        try:
+            tree = fast_parse(parser, text, start)
+        except NotFast:  # an error: lark reports it and recovers where it can
+            tree = parser.parse(text, start=start, on_error=report.recover)
     except UnexpectedInput as error:
         if not report.seen(error):
             report.add(error)

@@ -1,0 +1,152 @@
+"""A faster run of a lark LALR parser (contextual lexer) over text without errors: the same tables, the same
+terminals, the same callbacks (so the same AST, spans included), one loop instead of lark's layers.
+
+lark's own loop spends most of its time between the lexer and the parser (a generator, a lexer object per
+state, a line counter object, ``feed_token`` per token). ``fast_parse`` does the same steps inline. It only
+handles input lark parses without an error: at the first token the lexer or the tables do not accept it raises
+``NotFast``, and the caller parses the text again with lark itself, which reports and recovers as before
+(parser.py). Which lark internals it reads is listed in ``_Tables``; ``tests/st/test_fast_lalr.py`` compares it
+with lark on every parser test input and on random programs.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+from lark import Lark, Token
+from lark.parsers.lalr_analysis import Shift
+
+_new_token = Token._future_new  # Token(...) without its check of a deprecated keyword
+
+
+class NotFast(Exception):
+    """The text has an error (or something the fast loop does not do): parse it with lark."""
+
+
+@dataclass(frozen=True)
+class _Scanner:
+    """What lark's ``BasicLexer`` of one parser state matches with: its regexes (``Scanner._mres``), the
+    keyword check of names (``UnlessCallback``), and which terminals are skipped or may hold line breaks."""
+
+    patterns: tuple[Any, ...]
+    callbacks: dict[str, Any]
+    ignore: frozenset[str]
+    newline: frozenset[str]
+
+
+class _Tables:
+    """lark's parse table, callbacks and per-state lexers of one ``Lark`` object, read once."""
+
+    def __init__(self, parser: Lark) -> None:
+        frontend = parser.parser
+        table = frontend.parser._parse_table
+        self.start_states = table.start_states
+        self.end_states = table.end_states
+        self.callbacks = callbacks = frontend.parser.parser.callbacks
+        # state -> terminal or rule name -> a shift's next state (an int), or a reduction as
+        # (symbols it pops, the rule's callback, the rule's name): no Rule hashed or looked into per step
+        reductions: dict[Any, tuple[int, Any, str]] = {}
+        self.states: dict[int, dict[str, Any]] = {}
+        for state, actions in table.states.items():
+            row: dict[str, Any] = {}
+            for kind, (action, arg) in actions.items():
+                if action is Shift:
+                    row[kind] = arg
+                else:
+                    reduction = reductions.get(arg)
+                    if reduction is None:
+                        reduction = reductions[arg] = (len(arg.expansion), callbacks[arg], arg.origin.name)
+                    row[kind] = reduction
+            self.states[state] = row
+        lexers = frontend.lexer.lexers
+        made: dict[int, _Scanner] = {}
+        self.scanners: dict[int, _Scanner] = {}
+        for state, lexer in lexers.items():
+            scanner = made.get(id(lexer))
+            if scanner is None:
+                built = lexer.scanner  # builds lark's scanner and its callbacks
+                scanner = _Scanner(
+                    tuple(built._mres), dict(lexer.callback), frozenset(lexer.ignore_types), lexer.newline_types
+                )
+                made[id(lexer)] = scanner
+            self.scanners[state] = scanner
+
+
+_tables: dict[int, _Tables] = {}
+
+
+def fast_parse(parser: Lark, text: str, start: str) -> Any:
+    """What ``parser.parse(text, start=start)`` returns, for a text it parses without an error; else ``NotFast``."""
+    tables = _tables.get(id(parser))
+    if tables is None:
+        tables = _tables[id(parser)] = _Tables(parser)
+    states = tables.states
+    scanners = tables.scanners
+    callbacks = tables.callbacks
+    end_state = tables.end_states[start]
+    state_stack = [tables.start_states[start]]
+    value_stack: list[Any] = []
+    pos, line, line_start, end = 0, 1, 0, len(text)
+    token = None
+    while pos < end:
+        state = state_stack[-1]
+        scanner = scanners[state]
+        for pattern in scanner.patterns:
+            match = pattern.match(text, pos)
+            if match:
+                break
+        else:
+            raise NotFast
+        value = match.group(0)
+        kind = match.lastgroup
+        start_pos, start_line, start_column = pos, line, pos - line_start + 1
+        if kind in scanner.newline:
+            breaks = value.count("\n")
+            if breaks:
+                line += breaks
+                line_start = pos + value.rindex("\n") + 1
+        pos += len(value)
+        if kind in scanner.ignore:
+            if kind in scanner.callbacks:
+                raise NotFast  # an ignored terminal with a callback (none in our grammars)
+            continue
+        token = _new_token(kind, value, start_pos, start_line, start_column, line, pos - line_start + 1, pos)
+        callback = scanner.callbacks.get(kind)
+        if callback is not None:
+            token = callback(token)  # a keyword matched as a name gets the keyword's type
+        _feed(token, state_stack, value_stack, states, callbacks, end_state)
+    if token is not None:
+        last = Token.new_borrow_pos("$END", "", token)
+    else:
+        last = Token("$END", "", 0, 1, 1)
+    return _feed(last, state_stack, value_stack, states, callbacks, end_state, True)
+
+
+def _feed(token: Token, state_stack, value_stack, states, callbacks, end_state, is_end=False) -> Any:
+    """lark's ``ParserState.feed_token``, raising ``NotFast`` where lark raises ``UnexpectedToken``."""
+    kind = token.type
+    while True:
+        action = states[state_stack[-1]].get(kind)
+        if action is None:
+            raise NotFast
+        if action.__class__ is int:  # shift
+            if is_end:
+                raise NotFast
+            state_stack.append(action)
+            callback = callbacks.get(kind)
+            value_stack.append(token if callback is None else callback(token))
+            return None
+        size, callback, name = action
+        if size:
+            values = value_stack[-size:]
+            del state_stack[-size:]
+            del value_stack[-size:]
+        else:
+            values = []
+        value = callback(values)
+        new_state = states[state_stack[-1]][name]
+        state_stack.append(new_state)
+        value_stack.append(value)
+        if is_end and new_state == end_state:
+            return value
