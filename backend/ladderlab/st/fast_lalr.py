@@ -11,10 +11,12 @@ with lark on every parser test input and on random programs.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from typing import Any
 
 from lark import Lark, Token
+from lark.parse_tree_builder import ExpandSingleChild
 from lark.parsers.lalr_analysis import Shift
 
 _new_token = Token._future_new  # Token(...) without its check of a deprecated keyword
@@ -56,7 +58,10 @@ class _Tables:
                 else:
                     reduction = reductions.get(arg)
                     if reduction is None:
-                        reduction = reductions[arg] = (len(arg.expansion), callbacks[arg], arg.origin.name)
+                        callback = callbacks[arg]
+                        if len(arg.expansion) == 1 and type(callback) is ExpandSingleChild:
+                            callback = None  # ``?rule: one_symbol``: its value is its child's, nothing to call
+                        reduction = reductions[arg] = (len(arg.expansion), callback, arg.origin.name)
                     row[kind] = reduction
             self.states[state] = row
         lexers = frontend.lexer.lexers
@@ -71,6 +76,25 @@ class _Tables:
                 )
                 made[id(lexer)] = scanner
             self.scanners[state] = scanner
+        self.skip_blanks = _only_ws_starts_blank(parser)
+
+
+def _only_ws_starts_blank(parser: Lark) -> bool:
+    """Whether blanks can be skipped without asking the state's scanner: ``WS`` is the ignored ``[ \\t\\f\\r\\n]+``
+    and no other terminal matches text that starts with a blank (so lark's scanner would always pick ``WS``)."""
+    terminals = {t.name: t.pattern.to_regexp() for t in parser.terminals}
+    ws = terminals.get("WS")
+    if ws is None or "WS" not in parser.lexer_conf.ignore:
+        return False
+    if {chr(c) for c in range(256) if re.fullmatch(ws, chr(c) * 2)} != set(_BLANK_CHARS):
+        return False
+    samples = [blank + rest for blank in _BLANK_CHARS for rest in ("", "a", "1", "'", "(", "*)", "\n")]
+    others = [re.compile(regexp, parser.options.g_regex_flags) for name, regexp in terminals.items() if name != "WS"]
+    return not any(other.match(sample) for other in others for sample in samples)
+
+
+_BLANK_CHARS = " \t\f\r\n"
+_BLANKS = re.compile(r"[ \t\f\r\n]+")
 
 
 _tables: dict[int, _Tables] = {}
@@ -89,7 +113,16 @@ def fast_parse(parser: Lark, text: str, start: str) -> Any:
     value_stack: list[Any] = []
     pos, line, line_start, end = 0, 1, 0, len(text)
     token = None
+    skip_blanks = tables.skip_blanks
     while pos < end:
+        if skip_blanks and text[pos] in _BLANK_CHARS:  # the commonest ignored text, without the state's scanner
+            value = _BLANKS.match(text, pos).group(0)  # type: ignore[union-attr]  # text[pos] is a blank
+            breaks = value.count("\n")
+            if breaks:
+                line += breaks
+                line_start = pos + value.rindex("\n") + 1
+            pos += len(value)
+            continue
         state = state_stack[-1]
         scanner = scanners[state]
         for pattern in scanner.patterns:
@@ -138,6 +171,11 @@ def _feed(token: Token, state_stack, value_stack, states, callbacks, end_state, 
             value_stack.append(token if callback is None else callback(token))
             return None
         size, callback, name = action
+        if callback is None:  # a single child that is its own value: only the state changes
+            new_state = state_stack[-1] = states[state_stack[-2]][name]
+            if is_end and new_state == end_state:
+                return value_stack[-1]
+            continue
         if size:
             values = value_stack[-size:]
             del state_stack[-size:]
