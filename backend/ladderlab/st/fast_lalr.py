@@ -148,7 +148,28 @@ def fast_parse(parser: Lark, text: str, start: str) -> Any:
         callback = scanner.callbacks.get(kind)
         if callback is not None:
             token = callback(token)  # a keyword matched as a name gets the keyword's type
-        _feed(token, state_stack, value_stack, states, callbacks, end_state)
+        kind = token.type
+        while True:  # _feed, inline: the loop runs for every token
+            action = states[state_stack[-1]].get(kind)
+            if action is None:
+                raise NotFast
+            if action.__class__ is int:  # shift
+                state_stack.append(action)
+                callback = callbacks.get(kind)
+                value_stack.append(token if callback is None else callback(token))
+                break
+            size, callback, name = action
+            if callback is None:  # a single child that is its own value: only the state changes
+                state_stack[-1] = states[state_stack[-2]][name]
+                continue
+            if size:
+                values = value_stack[-size:]
+                del state_stack[-size:]
+                del value_stack[-size:]
+            else:
+                values = []
+            state_stack.append(states[state_stack[-1]][name])
+            value_stack.append(callback(values))
     if token is not None:
         last = Token.new_borrow_pos("$END", "", token)
     else:
