@@ -98,13 +98,20 @@ _BLANKS = re.compile(r"[ \t\f\r\n]+")
 
 
 _tables: dict[int, _Tables] = {}
+_NO_TABLES: Any = object()  # the lark in use is not laid out as _Tables expects
 
 
 def fast_parse(parser: Lark, text: str, start: str) -> Any:
     """What ``parser.parse(text, start=start)`` returns, for a text it parses without an error; else ``NotFast``."""
     tables = _tables.get(id(parser))
     if tables is None:
-        tables = _tables[id(parser)] = _Tables(parser)
+        try:
+            tables = _Tables(parser)
+        except (AttributeError, KeyError, TypeError):  # another lark's internals: lark alone parses (slower)
+            tables = None
+        tables = _tables[id(parser)] = tables or _NO_TABLES
+    if tables is _NO_TABLES:
+        raise NotFast
     states = tables.states
     scanners = tables.scanners
     callbacks = tables.callbacks
