@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from lark import Lark, Token
+from lark.lexer import UnlessCallback
 from lark.parse_tree_builder import ExpandSingleChild
 from lark.parsers.lalr_analysis import Shift
 
@@ -35,6 +36,7 @@ class _Scanner:
     callbacks: dict[str, Any]
     ignore: frozenset[str]
     newline: frozenset[str]
+    keywords: dict[str, dict[str, str]]  # terminal -> its keywords' upper case -> their terminal (UnlessCallback's)
 
 
 class _Tables:
@@ -72,11 +74,28 @@ class _Tables:
             if scanner is None:
                 built = lexer.scanner  # builds lark's scanner and its callbacks
                 scanner = _Scanner(
-                    tuple(built._mres), dict(lexer.callback), frozenset(lexer.ignore_types), lexer.newline_types
+                    tuple(built._mres),
+                    dict(lexer.callback),
+                    frozenset(lexer.ignore_types),
+                    lexer.newline_types,
+                    {kind: words for kind, callback in lexer.callback.items() if (words := _keywords(callback))},
                 )
                 made[id(lexer)] = scanner
             self.scanners[state] = scanner
         self.skip_blanks = _only_ws_starts_blank(parser)
+
+
+def _keywords(callback: Any) -> dict[str, str] | None:
+    """lark's keyword check of a name (``UnlessCallback``: the first case-insensitive keyword the name matches
+    in full) as a table by upper case, when all its keywords are case-insensitive words; else None."""
+    if type(callback) is not UnlessCallback:
+        return None
+    words: dict[str, str] = {}
+    for terminal in callback.scanner.terminals:
+        if terminal.pattern.type != "str" or list(terminal.pattern.flags) != ["i"]:
+            return None
+        words.setdefault(terminal.pattern.value.upper(), terminal.name)
+    return words
 
 
 def _only_ws_starts_blank(parser: Lark) -> bool:
@@ -152,9 +171,15 @@ def fast_parse(parser: Lark, text: str, start: str) -> Any:
                 raise NotFast  # an ignored terminal with a callback (none in our grammars)
             continue
         token = _new_token(kind, value, start_pos, start_line, start_column, line, pos - line_start + 1, pos)
-        callback = scanner.callbacks.get(kind)
-        if callback is not None:
-            token = callback(token)  # a keyword matched as a name gets the keyword's type
+        words = scanner.keywords.get(kind)
+        if words is not None and value.isascii():  # (re's IGNORECASE also folds a few non-ASCII letters)
+            keyword = words.get(value.upper())
+            if keyword is not None:
+                token.type = keyword  # a keyword matched as a name gets the keyword's type
+        else:
+            callback = scanner.callbacks.get(kind)
+            if callback is not None:
+                token = callback(token)
         kind = token.type
         while True:  # _feed, inline: the loop runs for every token
             action = states[state_stack[-1]].get(kind)
