@@ -19,6 +19,7 @@ from typing import Any
 from lark import Lark, Token
 from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedToken
 
+from .. import limits
 from ..iec.elementary import ALIASES, ELEMENTARY, GENERIC, STRING_TYPES
 from ..model.diagnostics import Diagnostic
 from . import ast
@@ -235,7 +236,7 @@ def _prepare(text: str, nested_comments: bool) -> str:
 
 
 def _finish(result: ParseResult, original: str, file: str | None = None, pou: str | None = None) -> ParseResult:
-    if result.ast is not None and len(original) >= _NESTING_NEEDS:
+    if result.ast is not None and len(original) >= _nesting_needs():
         deep = too_deep(result.ast)
         if deep is not None:  # nothing after the parser may meet nesting beyond the limits (st/nesting.py)
             message, span = deep
@@ -246,7 +247,11 @@ def _finish(result: ParseResult, original: str, file: str | None = None, pou: st
     return result
 
 
-_NESTING_NEEDS = 100  # characters: a shorter text cannot nest anywhere near the limits
+def _nesting_needs() -> int:
+    """Characters a text needs before it can cross a nesting limit (shorter ones skip the walk): every level of
+    an expression takes at least one character of its own (an operator, a bracket, a name), every level of
+    statements at least 15 (``IF a THEN`` ... ``END_IF``; CASE, FOR, WHILE and REPEAT take more)."""
+    return min(limits.EXPRESSION_DEPTH.value, limits.STATEMENT_DEPTH.value * 15)
 
 
 def _run(text: str, start: str, file: str | None, pou: str | None = None) -> ParseResult:
