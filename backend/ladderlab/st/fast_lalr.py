@@ -20,7 +20,17 @@ from lark.lexer import UnlessCallback
 from lark.parse_tree_builder import ExpandSingleChild
 from lark.parsers.lalr_analysis import Shift
 
-_new_token = Token._future_new  # Token(...) without its check of a deprecated keyword
+_new_str = str.__new__
+
+
+def _new_token(
+    kind: str, value: str, start_pos: int, line: int, column: int, end_line: int, end_column: int, end_pos: int
+) -> Token:
+    """``Token(kind, value, ...)`` as lark's ``Token._future_new`` makes it, without its layers of calls."""
+    token = _new_str(Token, value)
+    token.type, token.start_pos, token.value, token.line, token.column = kind, start_pos, value, line, column
+    token.end_line, token.end_column, token.end_pos = end_line, end_column, end_pos
+    return token
 
 
 class NotFast(Exception):
