@@ -99,3 +99,18 @@ def test_every_oscat_unit_parses_to_lark_s_tree() -> None:
     text = blank_nested_comments(external("oscat", "oscat.st").read_text(encoding="utf-8"))
     fast = sum(same_as_lark(unit.text) for unit in split_units(text))
     assert fast > 500  # the units lark parses without an error (all but a few of OSCAT's)
+
+
+def _comment_text(text: str) -> str:
+    while "(*" in text or "*)" in text:
+        text = text.replace("(*", "(").replace("*)", ")")
+    return text
+
+
+@given(st.text(alphabet="ab(*)\n\r\t é", max_size=30), st.text(alphabet="ab(*)\n\r\t é", max_size=30))
+def test_blanked_comments_keep_only_their_line_breaks(outer, inner) -> None:
+    """ST-04: a nested comment becomes spaces, its line breaks kept, so every later line and column stays."""
+    text = f"x (* {_comment_text(outer)} (* {_comment_text(inner)} *) *) y"
+    blanked = blank_nested_comments(text)
+    assert len(blanked) == len(text) and blanked.startswith("x ") and blanked.endswith(" y")
+    assert all(b == (c if c == "\n" else " ") for b, c in zip(blanked[2:-2], text[2:-2], strict=True))

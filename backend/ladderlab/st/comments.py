@@ -48,7 +48,8 @@ def _comment_end(text: str, position: int) -> int | None:
 
 
 def _blank(comment: str) -> str:
-    return re.sub(r"[^\n]", " ", comment)
+    """Every character but the line breaks as a space (lines and columns stay where they were)."""
+    return "\n".join(" " * len(line) for line in comment.split("\n"))
 
 
 def attach_comments(tree: Any, text: str) -> None:
