@@ -14,6 +14,7 @@ from hypothesis import strategies as st
 from ladderlab.st import ast
 from ladderlab.st.comments import blank_nested_comments
 from ladderlab.st.fast_lalr import NotFast, fast_parse
+from ladderlab.st.nesting import too_deep
 from ladderlab.st.parser import _parser, split_units
 from ladderlab.st.printer import print_source, print_statements
 from ladderlab.st.transformer import StSyntaxError
@@ -45,7 +46,7 @@ def same_as_lark(text: str, start: str = "start_source") -> bool:
     """Whether the fast loop gives lark's outcome for ``text``; False when it hands the text back (an error)."""
     parser = _parser()
     try:
-        fast = outcome(lambda text, start: fast_parse(parser, text, start), text, start)
+        fast = outcome(lambda text, start: fast_parse(parser, text, start)[0], text, start)
     except NotFast:
         return False
     assert fast == outcome(parser.parse, text, start)
@@ -54,8 +55,9 @@ def same_as_lark(text: str, start: str = "start_source") -> bool:
 
 def test_a_program_parses_to_lark_s_tree_with_its_spans() -> None:
     assert same_as_lark(VALID)
-    tree = fast_parse(_parser(), VALID, "start_source")
+    tree, tokens = fast_parse(_parser(), VALID, "start_source")
     assert isinstance(tree, ast.Source) and tree.items[0].span == ast.Span(1, 1, 7, 19)
+    assert tokens == len(list(_parser().lex(VALID)))
 
 
 def test_a_syntax_error_is_handed_back_to_lark() -> None:
@@ -114,3 +116,48 @@ def test_blanked_comments_keep_only_their_line_breaks(outer, inner) -> None:
     blanked = blank_nested_comments(text)
     assert len(blanked) == len(text) and blanked.startswith("x ") and blanked.endswith(" y")
     assert all(b == (c if c == "\n" else " ") for b, c in zip(blanked[2:-2], text[2:-2], strict=True))
+
+
+def nesting_bound_holds(text: str, start: str = "start_source") -> None:
+    """The parser skips the nesting walk when 2 levels a token (expressions) or 4 tokens a level (statements)
+    cannot reach the limit (parser._may_nest_too_deep): the walk itself finds nothing deeper then."""
+    try:
+        tree, tokens = fast_parse(_parser(), text, start)
+    except (NotFast, StSyntaxError):
+        return
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setenv("LADDERLAB_MAX_EXPRESSION_DEPTH", str(2 * tokens))
+        patch.setenv("LADDERLAB_MAX_STATEMENT_DEPTH", str(max(1, tokens // 4)))
+        assert too_deep(tree) is None, text
+
+
+@pytest.mark.parametrize(
+    "body",
+    [
+        "x := " + "-" * 30 + "1;",
+        "x := " + "f(" * 20 + "1" + ")" * 20 + ";",
+        "x := " + "-" * 20 + "INT#5;",
+        "x := " + "NOT " * 20 + "TRUE;",
+        "x := a" + ".b" * 20 + ";",
+        "x := a" + "[1]" * 20 + ";",
+        "x := a" + "^" * 20 + ";",
+        "IF a THEN " * 20 + "END_IF;" * 20,
+        "WHILE a DO " * 20 + "END_WHILE;" * 20,
+        "REPEAT " * 20 + "UNTIL a END_REPEAT;" * 20,
+        "CASE a OF 1: " * 20 + "END_CASE;" * 20,
+    ],
+)
+def test_the_nesting_walk_is_skipped_only_where_nothing_can_be_too_deep(body: str) -> None:
+    nesting_bound_holds(body, "start_stmts")
+    nesting_bound_holds(f"PROGRAM p\nVAR x : INT := {'-' * 10}1; END_VAR\n{body}\nEND_PROGRAM\n")
+
+
+@given(st.lists(pous, min_size=1, max_size=2))
+def test_random_programs_nest_within_the_bound_of_their_tokens(items) -> None:
+    nesting_bound_holds(print_source(ast.Source(items)))
+
+
+def test_oscat_units_nest_within_the_bound_of_their_tokens() -> None:
+    text = blank_nested_comments(external("oscat", "oscat.st").read_text(encoding="utf-8"))
+    for unit in split_units(text):
+        nesting_bound_holds(unit.text)

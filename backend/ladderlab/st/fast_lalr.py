@@ -130,8 +130,9 @@ _tables: dict[int, _Tables] = {}
 _NO_TABLES: Any = object()  # the lark in use is not laid out as _Tables expects
 
 
-def fast_parse(parser: Lark, text: str, start: str) -> Any:
-    """What ``parser.parse(text, start=start)`` returns, for a text it parses without an error; else ``NotFast``."""
+def fast_parse(parser: Lark, text: str, start: str) -> tuple[Any, int]:
+    """What ``parser.parse(text, start=start)`` returns, for a text it parses without an error, and how many
+    tokens the text has (comments and blanks aside); else ``NotFast``."""
     tables = _tables.get(id(parser))
     if tables is None:
         try:
@@ -149,6 +150,7 @@ def fast_parse(parser: Lark, text: str, start: str) -> Any:
     value_stack: list[Any] = []
     pos, line, line_start, end = 0, 1, 0, len(text)
     token = None
+    tokens = 0
     skip_blanks = tables.skip_blanks
     while pos < end:
         if skip_blanks and text[pos] in _BLANK_CHARS:  # the commonest ignored text, without the state's scanner
@@ -181,6 +183,7 @@ def fast_parse(parser: Lark, text: str, start: str) -> Any:
                 raise NotFast  # an ignored terminal with a callback (none in our grammars)
             continue
         token = _new_token(kind, value, start_pos, start_line, start_column, line, pos - line_start + 1, pos)
+        tokens += 1
         words = scanner.keywords.get(kind)
         if words is not None and value.isascii():  # (re's IGNORECASE also folds a few non-ASCII letters)
             keyword = words.get(value.upper())
@@ -216,7 +219,7 @@ def fast_parse(parser: Lark, text: str, start: str) -> Any:
         last = Token.new_borrow_pos("$END", "", token)
     else:
         last = Token("$END", "", 0, 1, 1)
-    return _feed(last, state_stack, value_stack, states, callbacks, end_state, True)
+    return _feed(last, state_stack, value_stack, states, callbacks, end_state, True), tokens
 
 
 def _feed(token: Token, state_stack, value_stack, states, callbacks, end_state, is_end=False) -> Any:

@@ -48,6 +48,7 @@ class ParseResult:
 
     ast: Any
     diagnostics: list[Diagnostic] = field(default_factory=list)
+    tokens: int | None = field(default=None, compare=False, repr=False)  # how many, when the fast loop counted
 
     @property
     def ok(self) -> bool:
@@ -236,7 +237,7 @@ def _prepare(text: str, nested_comments: bool) -> str:
 
 
 def _finish(result: ParseResult, original: str, file: str | None = None, pou: str | None = None) -> ParseResult:
-    if result.ast is not None and len(original) >= _nesting_needs():
+    if result.ast is not None and _may_nest_too_deep(result, original):
         deep = too_deep(result.ast)
         if deep is not None:  # nothing after the parser may meet nesting beyond the limits (st/nesting.py)
             message, span = deep
@@ -247,20 +248,27 @@ def _finish(result: ParseResult, original: str, file: str | None = None, pou: st
     return result
 
 
-def _nesting_needs() -> int:
-    """Characters a text needs before it can cross a nesting limit (shorter ones skip the walk): every level of
-    an expression takes at least one character of its own (an operator, a bracket, a name), every level of
-    statements at least 15 (``IF a THEN`` ... ``END_IF``; CASE, FOR, WHILE and REPEAT take more)."""
-    return min(limits.EXPRESSION_DEPTH.value, limits.STATEMENT_DEPTH.value * 15)
+def _may_nest_too_deep(result: ParseResult, original: str) -> bool:
+    """Whether the text is long enough to cross a nesting limit as set now (shorter ones skip the walk). In
+    characters: every level of an expression takes at least one of its own (an operator, a bracket, a name),
+    every level of statements at least 15 (``IF a THEN`` ... ``END_IF``; CASE, FOR, WHILE and REPEAT take
+    more). In tokens, when the fast loop counted them: an expression level takes a token of its own but for
+    nodes that wrap one child without a token (a positional argument, a typed literal's value), never two
+    such in a row, so at most 2 levels a token; a statement level takes at least 4 (``IF c THEN END_IF``)."""
+    expression_limit, statement_limit = limits.EXPRESSION_DEPTH.value, limits.STATEMENT_DEPTH.value
+    if result.tokens is not None:
+        return 2 * result.tokens > expression_limit or result.tokens > 4 * statement_limit
+    return len(original) >= min(expression_limit, statement_limit * 15)
 
 
 def _run(text: str, start: str, file: str | None, pou: str | None = None) -> ParseResult:
     diagnostics: list[Diagnostic] = []
     report = _Reporter(diagnostics, file, pou, text)
     parser = _parser(start in _TEST_STARTS)
+    tokens = None
     try:
         try:
-            tree = fast_parse(parser, text, start)
+            tree, tokens = fast_parse(parser, text, start)
         except NotFast:  # an error: lark reports it and recovers where it can
             tree = parser.parse(text, start=start, on_error=report.recover)
     except UnexpectedInput as error:
@@ -273,7 +281,7 @@ def _run(text: str, start: str, file: str | None, pou: str | None = None) -> Par
     except RecursionError:
         diagnostics.append(syntax_diagnostic("the text is nested too deeply to parse", ast.Span(1, 1, 1, 1), file, pou))
         return ParseResult(None, diagnostics)
-    return ParseResult(tree, diagnostics)
+    return ParseResult(tree, diagnostics, tokens)
 
 
 def syntax_diagnostic(
