@@ -152,105 +152,77 @@ def fast_parse(parser: Lark, text: str, start: str) -> tuple[Any, int]:
     token = None
     tokens = 0
     skip_blanks = tables.skip_blanks
-    while pos < end:
-        if skip_blanks and text[pos] in _BLANK_CHARS:  # the commonest ignored text, without the state's scanner
-            value = _BLANKS.match(text, pos).group(0)  # type: ignore[union-attr]  # text[pos] is a blank
-            breaks = value.count("\n")
-            if breaks:
-                line += breaks
-                line_start = pos + value.rindex("\n") + 1
+    while True:
+        if pos < end:
+            if skip_blanks and text[pos] in _BLANK_CHARS:  # the commonest ignored text, without the state's scanner
+                value = _BLANKS.match(text, pos).group(0)  # type: ignore[union-attr]  # text[pos] is a blank
+                breaks = value.count("\n")
+                if breaks:
+                    line += breaks
+                    line_start = pos + value.rindex("\n") + 1
+                pos += len(value)
+                continue
+            state = state_stack[-1]
+            scanner = scanners[state]
+            for pattern in scanner.patterns:
+                match = pattern.match(text, pos)
+                if match:
+                    break
+            else:
+                raise NotFast
+            value = match.group(0)
+            kind = match.lastgroup
+            start_pos, start_line, start_column = pos, line, pos - line_start + 1
+            if kind in scanner.newline:
+                breaks = value.count("\n")
+                if breaks:
+                    line += breaks
+                    line_start = pos + value.rindex("\n") + 1
             pos += len(value)
-            continue
-        state = state_stack[-1]
-        scanner = scanners[state]
-        for pattern in scanner.patterns:
-            match = pattern.match(text, pos)
-            if match:
-                break
+            if kind in scanner.ignore:
+                if kind in scanner.callbacks:
+                    raise NotFast  # an ignored terminal with a callback (none in our grammars)
+                continue
+            token = _new_token(kind, value, start_pos, start_line, start_column, line, pos - line_start + 1, pos)
+            tokens += 1
+            words = scanner.keywords.get(kind)
+            if words is not None and value.isascii():  # (re's IGNORECASE also folds a few non-ASCII letters)
+                keyword = words.get(value.upper())
+                if keyword is not None:
+                    token.type = keyword  # a keyword matched as a name gets the keyword's type
+            else:
+                callback = scanner.callbacks.get(kind)
+                if callback is not None:
+                    token = callback(token)
+            is_end = False
         else:
-            raise NotFast
-        value = match.group(0)
-        kind = match.lastgroup
-        start_pos, start_line, start_column = pos, line, pos - line_start + 1
-        if kind in scanner.newline:
-            breaks = value.count("\n")
-            if breaks:
-                line += breaks
-                line_start = pos + value.rindex("\n") + 1
-        pos += len(value)
-        if kind in scanner.ignore:
-            if kind in scanner.callbacks:
-                raise NotFast  # an ignored terminal with a callback (none in our grammars)
-            continue
-        token = _new_token(kind, value, start_pos, start_line, start_column, line, pos - line_start + 1, pos)
-        tokens += 1
-        words = scanner.keywords.get(kind)
-        if words is not None and value.isascii():  # (re's IGNORECASE also folds a few non-ASCII letters)
-            keyword = words.get(value.upper())
-            if keyword is not None:
-                token.type = keyword  # a keyword matched as a name gets the keyword's type
-        else:
-            callback = scanner.callbacks.get(kind)
-            if callback is not None:
-                token = callback(token)
+            token = Token.new_borrow_pos("$END", "", token) if token is not None else Token("$END", "", 0, 1, 1)
+            is_end = True
         kind = token.type
-        while True:  # _feed, inline: the loop runs for every token
+        while True:  # lark's ParserState.feed_token, raising NotFast where lark raises UnexpectedToken
             action = states[state_stack[-1]].get(kind)
             if action is None:
                 raise NotFast
             if action.__class__ is int:  # shift
+                if is_end:
+                    raise NotFast
                 state_stack.append(action)
                 callback = callbacks.get(kind)
                 value_stack.append(token if callback is None else callback(token))
                 break
             size, callback, name = action
             if callback is None:  # a single child that is its own value: only the state changes
-                state_stack[-1] = states[state_stack[-2]][name]
-                continue
-            if size:
-                values = value_stack[-size:]
-                del state_stack[-size:]
-                del value_stack[-size:]
+                new_state = state_stack[-1] = states[state_stack[-2]][name]
             else:
-                values = []
-            state_stack.append(states[state_stack[-1]][name])
-            value_stack.append(callback(values))
-    if token is not None:
-        last = Token.new_borrow_pos("$END", "", token)
-    else:
-        last = Token("$END", "", 0, 1, 1)
-    return _feed(last, state_stack, value_stack, states, callbacks, end_state, True), tokens
-
-
-def _feed(token: Token, state_stack, value_stack, states, callbacks, end_state, is_end=False) -> Any:
-    """lark's ``ParserState.feed_token``, raising ``NotFast`` where lark raises ``UnexpectedToken``."""
-    kind = token.type
-    while True:
-        action = states[state_stack[-1]].get(kind)
-        if action is None:
-            raise NotFast
-        if action.__class__ is int:  # shift
-            if is_end:
-                raise NotFast
-            state_stack.append(action)
-            callback = callbacks.get(kind)
-            value_stack.append(token if callback is None else callback(token))
-            return None
-        size, callback, name = action
-        if callback is None:  # a single child that is its own value: only the state changes
-            new_state = state_stack[-1] = states[state_stack[-2]][name]
+                if size:
+                    values = value_stack[-size:]
+                    del state_stack[-size:]
+                    del value_stack[-size:]
+                else:
+                    values = []
+                value = callback(values)
+                new_state = states[state_stack[-1]][name]
+                state_stack.append(new_state)
+                value_stack.append(value)
             if is_end and new_state == end_state:
-                return value_stack[-1]
-            continue
-        if size:
-            values = value_stack[-size:]
-            del state_stack[-size:]
-            del value_stack[-size:]
-        else:
-            values = []
-        value = callback(values)
-        new_state = states[state_stack[-1]][name]
-        state_stack.append(new_state)
-        value_stack.append(value)
-        if is_end and new_state == end_state:
-            return value
+                return value_stack[-1], tokens
