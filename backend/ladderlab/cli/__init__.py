@@ -268,8 +268,9 @@ def _built(project: Project, variant: str = "fast") -> Build | None:
 def _run(args: argparse.Namespace) -> int:
     from ..engine.inputs import AppliedInput
     from ..simulation.conditions import BadCondition, parse_condition
+    from ..simulation.events import parse_events
     from ..simulation.recording import Recording
-    from .run import parse_duration, parse_events, parse_fault, parse_set, run_scans
+    from .run import parse_duration, parse_fault, parse_set, run_scans
 
     try:
         sets = [parse_set(text) for text in args.sets]
@@ -338,11 +339,11 @@ def _print_rows(rows: Iterator[Row], watch: list[str], form: str, command: str) 
 def _replay(args: argparse.Namespace) -> int:
     """The rows of a recorded run again: the same project revision, the same inputs at the same scans."""
     from ..simulation.recording import read_recording
-    from .run import parse_events, run_scans
+    from .run import run_scans
 
     try:
         recording = read_recording(args.recording)
-        events = parse_events(recording.events_text(), f"{args.recording} inputs")
+        events = recording.scheduled(str(args.recording))
     except ValueError as error:
         print(f"ladderlab replay: {error}", file=sys.stderr)
         return EXIT_USAGE
