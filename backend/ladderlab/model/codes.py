@@ -19,6 +19,9 @@ from typing import Literal
 
 Severity = Literal["error", "warning", "info"]
 
+#: The code of every runtime fault of a running program (engine.codegen.faults; the server reports a lost one).
+RUNTIME_FAULT = "ENGINE-RUNTIME"
+
 
 @dataclass(frozen=True)
 class Code:

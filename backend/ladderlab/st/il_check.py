@@ -20,7 +20,8 @@ from ..iec.spelling import did_you_mean
 from . import ast
 from . import types as t
 from .body import BodyChecker, Report
-from .il_parser import FB_INPUT_OPERATORS, OPERATORS, IlBody, IlInstruction
+from .il_parser import IlBody, IlInstruction
+from .il_words import FB_INPUT_OPERATORS, OPERATORS
 from .methods import action_inputs
 from .symbols import CheckResult, PouInfo, Symbol
 from .types import ERROR, Type

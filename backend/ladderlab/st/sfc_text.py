@@ -33,7 +33,8 @@ from ..model.sfc import (
 )
 from ..model.sfc_graph import ImportedStep, ImportedTransition, UnstructuredChart, chart_graph, graph_chart
 from . import ast
-from .il_parser import IL_TRANSITION_HEAD, looks_like_il
+from .il_parser import IL_TRANSITION_HEAD
+from .il_words import looks_like_il
 
 
 def sfc_from_text(pou: ast.Pou, between, file: str | None = None) -> tuple[SfcBody, list[Diagnostic]]:

@@ -53,8 +53,27 @@ def _end(item: Any) -> tuple[int, int] | None:
 
 
 def span_of(children: Any) -> ast.Span:
-    start = _start(children)
-    end = _end(children)
+    """From the start of the first child to the end of the last one that has a place (runs for most nodes: the
+    usual case, a first and last child that are tokens or placed nodes, is decided without the walk)."""
+    start = end = None
+    if children.__class__ is list and children:
+        first, last = children[0], children[-1]
+        if isinstance(first, Token):
+            start = first.line, first.column
+        else:
+            span = getattr(first, "span", None)
+            if span is not None and span.line:
+                start = span.line, span.column
+        if isinstance(last, Token):
+            end = last.end_line, last.end_column
+        else:
+            span = getattr(last, "span", None)
+            if span is not None and span.line:
+                end = span.end_line, span.end_column
+    if start is None:
+        start = _start(children)
+    if end is None:
+        end = _end(children)
     if start is None or end is None:
         return ast.NO_SPAN
     return ast.Span(start[0], start[1], end[0], end[1])

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 from ..model import Pou
 from ..model.project import Language, Method, PouAction, PouKind, Property
-from ..st.il_parser import looks_like_il
+from ..st.il_words import looks_like_il
 
 _TOKEN = re.compile(
     r"""
