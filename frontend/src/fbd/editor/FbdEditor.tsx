@@ -19,7 +19,6 @@ import {
   useMemo,
   useReducer,
   useRef,
-  type KeyboardEvent,
   type MouseEvent,
   type ReactNode,
 } from "react";
@@ -30,7 +29,8 @@ import { instanceName, symbolNames, type VariableDeclaration } from "../../ld/ed
 import { EditorNotices } from "../../ld/editor/EditorNotices";
 import type { LdOnlineActions } from "../../ld/editor/LdEditor";
 import { OperandEditor } from "../../ld/editor/OperandEditor";
-import { clipboardActions, type LastClip } from "../../ld/editor/systemClipboard";
+import type { LastClip } from "../../ui/systemClipboard";
+import { useEditorRoot, type KeyHandlers } from "../../ui/useEditorRoot";
 import { OperandValuePrompt, type ValueRequest } from "../../ld/editor/ValuePrompt";
 import { onlineOperandItems } from "../../online/operandCommands";
 import { referencesItem } from "../../xref/store";
@@ -78,7 +78,7 @@ import {
   targetNetwork as targetNetworkOf,
   type FbdEditorState,
 } from "./editorState";
-import { dispatchKey, keysOf, type CommandOf } from "../../keys/keymap";
+import { keysOf, type CommandOf } from "../../keys/keymap";
 import { ShortcutHelp } from "../../keys/ShortcutHelp";
 
 /** A toolbar tooltip: the action and its key from the keymap. */
@@ -310,10 +310,15 @@ export function FbdEditor({
     if (!network) return void setMessage("Add a network to paste into.");
     apply(pasteClip(body, network, clip));
   };
-  const clipboard = clipboardActions(
-    { take, paste: pasteText, isClip: (text) => parseClip(text) !== null, locked },
-    lastClip,
-  );
+  const editor = useEditorRoot({
+    root,
+    scope: "fbd",
+    handlers: () => keyActions,
+    busy: editing !== null || picker !== null || networkText !== null,
+    clipboard: { take, paste: pasteText, isClip: (text) => parseClip(text) !== null, locked },
+    last: lastClip,
+  });
+  const clipboard = editor;
 
   const reorder = (delta: -1 | 1) => {
     const id = selectedNodes[0];
@@ -576,12 +581,8 @@ export function FbdEditor({
   }, [revealed]);
 
   /** What each FBD key does (src/keys/keymap.ts, scope "fbd"); false when it does not apply now. */
-  const keyActions: Record<CommandOf<"fbd">, () => boolean> = {
+  const keyActions: KeyHandlers<"fbd"> = {
     delete: () => (deleteSelection(), true),
-    // Copy, cut and paste arrive as clipboard events (below), which reach the system clipboard.
-    copy: () => false,
-    cut: () => false,
-    paste: () => false,
     undo: () => !locked && (onHistoryChange(undo(history)), true),
     redo: () => !locked && (onHistoryChange(redo(history)), true),
     "run-earlier": () => (reorder(-1), true),
@@ -593,12 +594,7 @@ export function FbdEditor({
       debug.toggle(target);
       return true;
     },
-  };
-
-  const onKeyDown = (event: KeyboardEvent<HTMLDivElement>) => {
-    if (editing || picker || networkText || (event.target as HTMLElement).closest("input, textarea, .ld-context-menu"))
-      return;
-    dispatchKey("fbd", event, keyActions);
+    "zoom-fit": () => (dispatch({ type: "fit" }), true),
   };
 
   const single = singleNode(state);
@@ -620,12 +616,9 @@ export function FbdEditor({
     <FbdEditorContext.Provider value={api}>
       <div
         className={`fbd-editor${locked ? " fbd-readonly" : ""}`}
-        ref={root}
-        tabIndex={0}
+        {...editor.rootProps}
         role="application"
         aria-label={chart ? "Continuous function chart editor" : "Function block diagram editor"}
-        onKeyDown={onKeyDown}
-        {...clipboard.events}
       >
         <div className="ld-toolbar fbd-toolbar" role="toolbar" aria-label="FBD editing">
           <div className="ld-toolbar-group fbd-palette" aria-label="Add (click, or drag onto a network)">
@@ -675,6 +668,14 @@ export function FbdEditor({
                 )
               : null}
             {tool("arrange", "Auto-arrange", autoArrange, !locked && networks.length > 0)}
+            {tool(
+              "zoom-fit",
+              "Zoom to fit",
+              () => dispatch({ type: "fit" }),
+              networks.length > 0,
+              keyed("zoom-fit"),
+              "Zoom every network so all its nodes show",
+            )}
             {tool("delete", "Delete", deleteSelection, !locked && (!!selection || !!networkSelected), keyed("delete"))}
           </div>
           {chart ? null : (
@@ -751,6 +752,7 @@ export function FbdEditor({
               breakpoint={debug?.networks.has(network.id) ?? false}
               halted={halted?.network === network.id}
               fallback={fallbacks.get(network.id)!}
+              fitRequest={state.fitRequest}
               height={heightOf(network)}
               overlay={
                 networkText?.network === network.id ? (

@@ -56,6 +56,8 @@ export interface FbdEditorState {
   near: ReadonlySet<string>;
   /** The halt place and focus request last acted on, and the network to scroll to for them. */
   revealed: { halt: string | null; focus: number | null; network: string | null };
+  /** Counts "Zoom to fit" requests; each canvas fits its network to a new one (NetworkCanvas). */
+  fitRequest: number;
 }
 
 export const INITIAL_STATE: FbdEditorState = {
@@ -71,6 +73,7 @@ export const INITIAL_STATE: FbdEditorState = {
   help: false,
   near: new Set(),
   revealed: { halt: null, focus: null, network: null },
+  fitRequest: 0,
 };
 
 type PinChange = { id: string; selected: boolean };
@@ -93,6 +96,7 @@ export type FbdEditorAction =
   | { type: "valuePrompt"; request: ValueRequest | null }
   | { type: "help"; open: boolean | "toggle" }
   | { type: "near"; network: string; near: boolean }
+  | { type: "fit" }
   /**
    * A new halt place (`haltKey` changed) or focus request (`focus.seq` changed) selects its place in
    * `body`, once; the halt wins when both are new.
@@ -197,6 +201,8 @@ export function fbdEditorReducer(state: FbdEditorState, action: FbdEditorAction)
     }
     case "reveal":
       return reveal(state, action);
+    case "fit":
+      return { ...state, fitRequest: state.fitRequest + 1 };
   }
 }
 

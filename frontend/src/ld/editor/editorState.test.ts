@@ -12,9 +12,9 @@ import {
   operandText,
   pastePlace,
   valueOperand,
-  zoomed,
   type LdEditorState,
 } from "./editorState";
+import { zoomed } from "../../ui/zoom";
 
 /** Two networks: n1 holds contact c1 (Start), contact c2 (Stop) and coil q1 (Motor) in series; n2 is empty. */
 const BODY: LdBody = {
