@@ -131,6 +131,28 @@ def test_fbd_input_opens_the_same_dialog(page, server):
     page.keyboard.press("ArrowDown")  # VAR_INPUT
     page.keyboard.press("Enter")
     expect(dialog).to_have_count(0)
+    # An input whose dialog was dismissed: its node's menu brings the dialog back (issue 22 item 7), with the
+    # type of the pin it feeds when wired, BOOL here; a declared input's menu has no such entry.
+    page.get_by_role("toolbar", name="FBD editing").get_by_role("button", name="Input", exact=True).drag_to(
+        canvas, target_position={"x": 60, "y": 120}
+    )
+    page.get_by_role("combobox", name="Input operand").press_sequentially("Limit")
+    page.keyboard.press("Enter")
+    dialog = page.get_by_role("dialog", name="Declare variable Limit")
+    expect(dialog).to_be_visible()
+    page.keyboard.press("Escape")
+    expect(dialog).to_have_count(0)
+    editor.locator(".fbd-node", has_text="Limit").click(button="right")
+    page.get_by_role("menuitem", name=re.compile("^Declare Limit…")).click()
+    expect(dialog).to_be_visible()
+    expect(dialog.get_by_label("Type of the new variable")).to_have_value("BOOL")
+    page.keyboard.press("Escape")
+    expect(dialog).to_have_count(0)
+    page.keyboard.press("Escape")  # the menu
+    editor.locator(".fbd-node", has_text="Setpoint").click(button="right")
+    expect(page.get_by_role("menuitem", name=re.compile("^Edit text"))).to_be_visible()
+    expect(page.get_by_role("menuitem", name=re.compile("^Declare"))).to_have_count(0)
+    page.keyboard.press("Escape")
     page.keyboard.press("Control+s")
     page.get_by_text("All changes saved").wait_for()
     assert saved(server, "autofbd")["pous"][0]["declarations"] == (

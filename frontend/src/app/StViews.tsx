@@ -5,7 +5,7 @@ import { DeclareDialog } from "../declarations/DeclareDialog";
 import type { NewVariable } from "../store/newVariable";
 import type { Pou } from "../generated/api";
 import { useOnline } from "../online/store";
-import { panelsStore, usePanels } from "../panels/store";
+import { panelsStore, usePanels } from "../store/panels";
 import { IL_OPERATOR_COMPLETIONS } from "../st/ilLanguage";
 import { StEditor } from "../st/StEditor";
 import { StOnlineBar } from "../st/StOnlineBar";

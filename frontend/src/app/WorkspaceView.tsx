@@ -25,7 +25,7 @@ import { SimulationBar } from "../online/SimulationBar";
 import { HistoryBanner } from "../online/HistoryBar";
 import { instanceOf, useLdOnline } from "../online/useLdOnline";
 import { BottomPanels } from "../panels/BottomPanels";
-import { focusOf, panelOf, panelsStore, usePanels } from "../panels/store";
+import { focusOf, panelOf, panelsStore, usePanels } from "../store/panels";
 import { parseDeclarations } from "../iec/declarations";
 import { isTestPath, pouOf, symbolsOf, testPath, useWorkspace, workspaceStore } from "../store/project";
 import { coverageMarks, coverageOf } from "../tests/coverage";

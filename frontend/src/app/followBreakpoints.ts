@@ -3,7 +3,7 @@
 // arrives here (PouActions' rename, the ST editor's line mapping), so only what is really gone is dropped.
 import { debugStore } from "../debug/store";
 import { goneBecause } from "../debug/follow";
-import { panelsStore } from "../panels/store";
+import { panelsStore } from "../store/panels";
 import { workspaceStore } from "../store/project";
 
 /** Starts following the open project; returns the function that stops it. A new message shows the Breakpoints

@@ -4,7 +4,7 @@
 import { useCallback, useEffect, useMemo, useState } from "react";
 import type { LibraryEntry, SymbolInfo } from "../generated/api";
 import type { Pou } from "../generated/api";
-import type { LdOnlineActions } from "../ld/editor/LdEditor";
+import type { LdOnlineActions } from "./operandCommands";
 import type { LdBody } from "../ld/model";
 import type { OnlineView } from "../ld/view/types";
 import { bindLd, ldOnlineView, operandPath } from "./ldBinding";

@@ -10,7 +10,7 @@ import { offline, onlineStore } from "../online/store";
 import { emptyWorkspace, workspaceStore } from "../store/project";
 import { breakpointBody, describePlace } from "../debug/place";
 import { BreakpointsPanel } from "./BreakpointsPanel";
-import { emptyPanels, panelsStore } from "./store";
+import { emptyPanels, panelsStore } from "../store/panels";
 
 const project: Project = {
   name: "motor",

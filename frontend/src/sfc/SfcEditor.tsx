@@ -9,9 +9,9 @@
 import { useCallback, useEffect, useMemo, useReducer, useRef, useState, type MouseEvent, type ReactNode } from "react";
 import type { Diagnostic } from "../generated/api";
 import type { SfcAction, SfcNamedTransition } from "../generated/api";
-import { MenuList, type MenuItem } from "../ld/editor/ContextMenu";
-import type { LdOnlineActions } from "../ld/editor/LdEditor";
-import { OperandValuePrompt } from "../ld/editor/ValuePrompt";
+import { MenuList, type MenuItem } from "../ui/MenuList";
+import type { LdOnlineActions } from "../online/operandCommands";
+import { OperandValuePrompt } from "../online/ValuePrompt";
 import { canRedo, canUndo, record, redo, undo, type History } from "../store/history";
 import { onlineOperandItems } from "../online/operandCommands";
 import { keysOf, type CommandOf } from "../keys/keymap";

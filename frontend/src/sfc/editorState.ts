@@ -6,8 +6,8 @@
 // (what Enter edits, what Delete removes, what Copy takes, what Ctrl+Enter opens, what F9 toggles) live
 // here too.
 import type { SfcAction } from "../generated/api";
-import type { MenuItem } from "../ld/editor/ContextMenu";
-import type { ValueRequest } from "../ld/editor/ValuePrompt";
+import type { MenuItem } from "../ui/MenuList";
+import type { ValueRequest } from "../online/ValuePrompt";
 import { zoomedTo, type ZoomStep } from "../ui/zoom";
 import { kindOf, locate, type SfcBody, type SfcStep } from "./model";
 import * as ops from "./ops";

@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { focusOf } from "../panels/store";
+import { focusOf } from "./panels";
 import { partOf, taskIndexOf } from "./parts";
 
 describe("diagnostics of the project's parts", () => {

@@ -13,25 +13,17 @@ import "./fbd.css";
 import { COMMAND_ICONS } from "../../ui/icons";
 import { ToolButton } from "../../ui/ToolButton";
 import type { Connection } from "@xyflow/react";
-import {
-  useCallback,
-  useEffect,
-  useMemo,
-  useReducer,
-  useRef,
-  type MouseEvent,
-  type ReactNode,
-} from "react";
+import { useCallback, useEffect, useMemo, useReducer, useRef, type MouseEvent, type ReactNode } from "react";
 import type { Diagnostic, FbdOrder, LibraryEntry, SymbolInfo } from "../../generated/api";
 import { BoxPicker } from "../../ld/editor/BoxPicker";
-import { MenuList, type MenuItem } from "../../ld/editor/ContextMenu";
+import { MenuList, type MenuItem } from "../../ui/MenuList";
 import { instanceName, symbolNames, type VariableDeclaration } from "../../ld/editor/declare";
 import { EditorNotices } from "../../ld/editor/EditorNotices";
-import type { LdOnlineActions } from "../../ld/editor/LdEditor";
-import { OperandEditor } from "../../ld/editor/OperandEditor";
+import type { LdOnlineActions } from "../../online/operandCommands";
+import { OperandEditor } from "../../ui/OperandEditor";
 import type { LastClip } from "../../ui/systemClipboard";
 import { useEditorRoot, type KeyHandlers } from "../../ui/useEditorRoot";
-import { OperandValuePrompt, type ValueRequest } from "../../ld/editor/ValuePrompt";
+import { OperandValuePrompt, type ValueRequest } from "../../online/ValuePrompt";
 import { onlineOperandItems } from "../../online/operandCommands";
 import { referencesItem } from "../../xref/store";
 import { canRedo, canUndo, record, redo, undo, type History } from "../../store/history";

@@ -6,9 +6,9 @@
 // with the caller. The pure questions the editor asks of a body (which network new things go into, what
 // Delete and Copy take, the type a new variable is offered with, the variable behind a pin) live here too.
 import type { LibraryEntry, SymbolInfo } from "../../generated/api";
-import type { MenuItem } from "../../ld/editor/ContextMenu";
+import type { MenuItem } from "../../ui/MenuList";
 import { concrete, undeclared, type VariableDeclaration } from "../../ld/editor/declare";
-import type { ValueRequest } from "../../ld/editor/ValuePrompt";
+import type { ValueRequest } from "../../online/ValuePrompt";
 import { clipOf, type FbdClip } from "../clipboard";
 import { outputType } from "../compat";
 import {

@@ -32,17 +32,18 @@ import {
   type CommandContext,
   type CommandGroup,
 } from "./commands";
-import { ContextMenu, type MenuItem } from "./ContextMenu";
+import { ContextMenu } from "./ContextMenu";
+import type { MenuItem } from "../../ui/MenuList";
 import { IlView } from "./IlView";
 import { declareOffer, instanceName, symbolNames, type VariableDeclaration } from "./declare";
 import { extend, navigate, type Direction } from "./navigation";
-import { OperandEditor } from "./OperandEditor";
+import { OperandEditor } from "../../ui/OperandEditor";
 import { setDraggedOperand } from "./dragOperand";
 import { EditorNotices } from "./EditorNotices";
 import type { LastClip } from "../../ui/systemClipboard";
 import { useEditorRoot, type KeyHandlers } from "../../ui/useEditorRoot";
 import { fitZoom, type ZoomStep } from "../../ui/zoom";
-import { OperandValuePrompt, type ValueRequest } from "./ValuePrompt";
+import { OperandValuePrompt, type ValueRequest } from "../../online/ValuePrompt";
 import {
   clipOf,
   fieldLabel,
@@ -56,7 +57,7 @@ import {
   variableOf,
   type Editing,
 } from "./editorState";
-import { onlineOperandItems } from "../../online/operandCommands";
+import { onlineOperandItems, type LdOnlineActions } from "../../online/operandCommands";
 import { referencesItem } from "../../xref/store";
 import { keysOf } from "../../keys/keymap";
 import { ShortcutHelp } from "../../keys/ShortcutHelp";
@@ -93,20 +94,6 @@ export interface LdEditorProps {
 export interface LdDebugging {
   marks: DebugMarks;
   toggle(target: { network: string } | { element: string }): void;
-}
-
-/** What the diagram can ask of a running simulation, by operand text (the caller maps it to a path). */
-export interface LdOnlineActions {
-  /**
-   * Prepares a value (double-click, CODESYS): `text` when given, else a BOOL's prepared value toggles;
-   * false when the variable is not a BOOL and a value must be asked for. `type`: what the diagram
-   * knows of it (a contact's variable is a BOOL), for before its first value arrives.
-   */
-  prepare(operand: string, text?: string, type?: string): boolean;
-  write(operand: string, text: string): void;
-  force(operand: string, value: boolean | string): void;
-  unforce(operand: string): void;
-  watch(operand: string): void;
 }
 
 const TOOLBAR: { group: CommandGroup; ids: string[] }[] = [

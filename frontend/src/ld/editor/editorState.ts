@@ -11,7 +11,7 @@ import type { EditResult, OperandField } from "../ops";
 import type { Selection } from "../view/types";
 import { selectedNetwork } from "./commands";
 import type { VariableDeclaration } from "./declare";
-import type { ValueRequest } from "./ValuePrompt";
+import type { ValueRequest } from "../../online/ValuePrompt";
 import { zoomed, type ZoomStep } from "../../ui/zoom";
 
 export type Editing =
