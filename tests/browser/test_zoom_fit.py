@@ -70,6 +70,7 @@ def _project() -> dict:
 
 
 def _inside(inner: dict, outer: dict) -> bool:
+    print("inner", inner, "outer", outer)
     return (
         inner["x"] >= outer["x"] - 0.5
         and inner["y"] >= outer["y"] - 0.5

@@ -12,7 +12,7 @@ import { StOnlineBar } from "../st/StOnlineBar";
 import { useStAssist } from "../st/useStAssist";
 import { useStOnline } from "../st/useStOnline";
 import { describeBreakpoint } from "../debug/breakpoints";
-import { movedLine } from "../debug/follow";
+import { movedLine } from "../breakpointPlaces/follow";
 import { debugStore, useDebug } from "../debug/store";
 import { useTestCheck, useTestCompletions } from "../tests/assist";
 import { coverageLines, coverageOf } from "../tests/coverage";

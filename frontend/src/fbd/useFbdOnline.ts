@@ -7,7 +7,7 @@ import type { Pou } from "../generated/api";
 import type { LdOnlineActions } from "../online/operandCommands";
 import { partElements, partMonitor } from "../online/parts";
 import { onlineStore, useOnline } from "../online/store";
-import { useShownInstance, onlineReadOnly, operandActions } from "../online/useLdOnline";
+import { useShownInstance, onlineReadOnly, operandActions } from "../online/editorOnline";
 import type { FbdBody, Lookup } from "./model";
 import { bindFbd, fbdOnlineView, type FbdOnlineView } from "./online";
 

@@ -10,7 +10,7 @@ import { MenuList } from "../ui/MenuList";
 import { OperandValuePrompt } from "../online/ValuePrompt";
 import { onlineOperandItems, operandCommands } from "../online/operandCommands";
 import { onlineStore, useOnline } from "../online/store";
-import { useShownInstance } from "../online/useLdOnline";
+import { useShownInstance } from "../online/editorOnline";
 import {
   concretePath,
   describe,

@@ -1,6 +1,6 @@
 // The "⋯" menu of a task in the project tree: rename it (one undoable step; nothing else names a task).
 import { useState, type FormEvent } from "react";
-import { Dialog, DialogFooter, TreeActions } from "./PouActions";
+import { Dialog, DialogFooter, TreeActions } from "../ui/TreeActions";
 import { workspaceStore } from "../store/project";
 import { renameTask } from "../store/tasks";
 

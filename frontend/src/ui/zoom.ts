@@ -9,28 +9,33 @@ export interface Size {
   height: number;
 }
 
-/** The zoom range of the diagram editors: 50 % to 200 %. */
+/** The zoom range of the keys and the wheel: 50 % to 200 %. */
 export const ZOOM_MIN = 0.5;
 export const ZOOM_MAX = 2;
+/** Fit goes further down, so a long POU still fits (TwinCAT's zoom list starts at 25 % too). */
+export const FIT_MIN = 0.25;
 
 const clamp = (zoom: number, min: number, max: number) => Math.min(max, Math.max(min, zoom));
 
 /**
  * The largest zoom at which `content` (at zoom 1) fits inside `view`, within [min, max], rounded down
- * to whole percent so rounding never lets the diagram overflow. A diagram too large for `min` stays at
- * `min` (the view scrolls); an empty diagram or view keeps 100 %.
+ * to whole percent so rounding never lets the diagram overflow. A diagram too large even at `min` stays
+ * at `min` (the view scrolls); an empty diagram or view keeps 100 %.
  */
-export function fitZoom(content: Size, view: Size, min = ZOOM_MIN, max = ZOOM_MAX): number {
+export function fitZoom(content: Size, view: Size, min = FIT_MIN, max = ZOOM_MAX): number {
   if (content.width <= 0 || content.height <= 0 || view.width <= 0 || view.height <= 0) return 1;
   const zoom = Math.min(view.width / content.width, view.height / content.height);
   return clamp(Math.floor(zoom * 100) / 100, min, max);
 }
 
-/** The next zoom in 10 % steps from 50 % to 200 % (LD and FBD); reset is 100 %. */
+/**
+ * The next zoom in 10 % steps from 50 % to 200 % (LD); reset is 100 %. Below 50 % (a fit) zooming out
+ * stays and zooming in steps up from there.
+ */
 export function zoomed(zoom: number, step: ZoomStep): number {
   if (step === "reset") return 1;
   const next = Math.round((zoom + (step === "in" ? 0.1 : -0.1)) * 10) / 10;
-  return clamp(next, ZOOM_MIN, ZOOM_MAX);
+  return clamp(next, Math.min(zoom, ZOOM_MIN), ZOOM_MAX);
 }
 
 /** The next of `levels` (ascending) above or below `zoom` (SFC's preset levels); reset is 100 %. */
