@@ -48,9 +48,9 @@ def _fbd_body() -> dict:
 
 
 def _sfc_body() -> dict:
-    """Nine steps in sequence, a jump back: taller than the view at 100 %."""
+    """Five steps in sequence, a jump back: taller than the view at 100 %."""
     elements: list[dict] = []
-    for i in range(9):
+    for i in range(5):
         elements.append({"type": "step", "id": f"s{i}", "name": f"Step{i}", "actions": []})
         elements.append({"type": "transition", "id": f"t{i}", "condition": f"x{i}"})
     elements.append({"type": "jump", "id": "j", "target": "Step0"})
@@ -70,7 +70,6 @@ def _project() -> dict:
 
 
 def _inside(inner: dict, outer: dict) -> bool:
-    print("inner", inner, "outer", outer)
     return (
         inner["x"] >= outer["x"] - 0.5
         and inner["y"] >= outer["y"] - 0.5
