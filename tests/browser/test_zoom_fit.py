@@ -78,27 +78,30 @@ def _inside(inner: dict, outer: dict) -> bool:
     )
 
 
+def _fits(editor, toolbar: str, diagram, view, zoom, reset_key: str, actual_size: str) -> None:
+    """``diagram`` overflows ``view`` at 100 %; the toolbar's "Zoom to fit" puts it wholly inside, ``reset_key``
+    goes back to 100 % (``zoom`` shows ``actual_size``), and Ctrl+Shift+H fits it again."""
+    assert not _inside(diagram.bounding_box(), view.bounding_box())
+    editor.get_by_role("toolbar", name=toolbar).get_by_role("button", name="Zoom to fit").click()
+    expect(zoom).not_to_have_text(actual_size)
+    assert _inside(diagram.bounding_box(), view.bounding_box())
+    editor.press(reset_key)
+    expect(zoom).to_have_text(actual_size)
+    assert not _inside(diagram.bounding_box(), view.bounding_box())
+    editor.press("Control+Shift+H")
+    expect(zoom).not_to_have_text(actual_size)
+    assert _inside(diagram.bounding_box(), view.bounding_box())
+
+
 def test_ld_zoom_to_fit_shows_every_network(page, server):
     store_project(server, _project())
     page.goto(server)
     open_pou(page, "zoomfit", "Ladder")
     editor = page.get_by_role("application", name="Ladder diagram editor")
-    canvas, scroller = editor.locator(".ld-canvas"), editor.locator(".ld-scroller")
     editor.locator("g.ld-element.ld-coil").first.wait_for()
-    assert not _inside(canvas.bounding_box(), scroller.bounding_box())  # taller than the view at 100 %
-
-    editor.get_by_role("toolbar", name="LD editing").get_by_role("button", name="Zoom to fit").click()
-    expect(editor.get_by_role("button", name="Zoom", exact=True)).not_to_have_text("100%")
-    assert _inside(canvas.bounding_box(), scroller.bounding_box())
+    zoom = editor.get_by_role("button", name="Zoom", exact=True)
+    _fits(editor, "LD editing", editor.locator(".ld-canvas"), editor.locator(".ld-scroller"), zoom, "Control+0", "100%")
     expect(editor.locator("g.ld-element.ld-coil")).to_have_count(12)  # every network drawn
-
-    # Ctrl+0 goes back to 100 %, Ctrl+Shift+H fits again.
-    editor.press("Control+0")
-    expect(editor.get_by_role("button", name="Zoom", exact=True)).to_have_text("100%")
-    assert not _inside(canvas.bounding_box(), scroller.bounding_box())
-    editor.press("Control+Shift+H")
-    expect(editor.get_by_role("button", name="Zoom", exact=True)).not_to_have_text("100%")
-    assert _inside(canvas.bounding_box(), scroller.bounding_box())
 
 
 def test_fbd_zoom_to_fit_shows_every_node_of_each_network(page, server):
@@ -153,16 +156,6 @@ def test_sfc_zoom_to_fit_shows_the_whole_chart(page, server):
     page.goto(server)
     open_pou(page, "zoomfit", "Chart")
     editor = page.get_by_role("application", name="Sequential function chart editor")
-    chart, scroll = editor.locator("svg.sfc-canvas"), editor.locator(".sfc-scroll")
+    chart = editor.locator("svg.sfc-canvas")
     chart.wait_for()
-    assert not _inside(chart.bounding_box(), scroll.bounding_box())  # taller than the view at 100 %
-
-    editor.get_by_role("toolbar", name="SFC editing").get_by_role("button", name="Zoom to fit").click()
-    expect(editor.get_by_label("Zoom")).not_to_have_text("100 %")
-    assert _inside(chart.bounding_box(), scroll.bounding_box())
-
-    editor.press("0")  # 100 %
-    expect(editor.get_by_label("Zoom")).to_have_text("100 %")
-    editor.press("Control+Shift+H")
-    expect(editor.get_by_label("Zoom")).not_to_have_text("100 %")
-    assert _inside(chart.bounding_box(), scroll.bounding_box())
+    _fits(editor, "SFC editing", chart, editor.locator(".sfc-scroll"), editor.get_by_label("Zoom"), "0", "100 %")
