@@ -1,6 +1,7 @@
 """Standard FB calls inlined into the fast and monitor code (issue 27, codegen/inline_fbs.py): the pasted body is
-the FB's own ``execute``, so it must act exactly as calling it, call after call, whatever the inputs and the clock;
-a mocked instance (another class) is still called and counted."""
+the FB's own ``execute``, so it must act exactly as calling it, call after call, whatever the inputs and the clock,
+also where it reads its inputs from the locals they were just assigned; in a unit test program a mocked instance
+(another class) is still called and counted, and only there is the body guarded by the instance's class."""
 
 from __future__ import annotations
 
@@ -9,7 +10,11 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from ladderlab.engine.codegen.inline_fbs import inline_body
+from ladderlab.engine.compile import compile_program
+from ladderlab.engine.simulation import Simulation
 from ladderlab.engine.stdlib import STANDARD_FBS
+from ladderlab.ir.lower_project import lower_project
+from ladderlab.st.project_text import source_to_project
 
 from ..support import fuzz_settings
 from .test_simulation_st import simulation
@@ -34,28 +39,53 @@ def test_the_ten_standard_fbs_and_the_typed_counters_are_inlined():
     )
 )
 def test_the_inlined_body_acts_as_the_call(name, calls):
+    """Pasted as it is, and with every input read from the local it was just assigned (``known``)."""
     cls = STANDARD_FBS[name]
-    called, pasted = cls(), cls()
+    called, pasted, known = cls(), cls(), cls()
     body = compile("\n".join(inline_body(name, "ll_fb", "now")), f"<inline {name}>", "exec")
+    locals_ = tuple((pin, f"ll_t_{pin}") for pin in cls.INPUTS)
+    with_locals = compile("\n".join(inline_body(name, "ll_fb", "now", locals_)), f"<inline {name}>", "exec")
+    assert all(
+        f"ll_fb.{pin}" not in line
+        for line in inline_body(name, "ll_fb", "now", locals_)
+        for pin in cls.INPUTS
+        if not line.lstrip().startswith(f"ll_fb.{pin} =")
+    )
     now = 0
     for flags, preset, step in calls:
         now += step
-        for fb in (called, pasted):
-            for pin, flag in zip([p for p in cls.INPUTS if p not in ("PT", "PV")], flags):
-                setattr(fb, pin, flag)
-            if "PT" in cls.INPUTS:
-                fb.PT = preset
-            if "PV" in cls.INPUTS:
-                fb.PV = preset // 10
+        inputs = dict(zip([p for p in cls.INPUTS if p not in ("PT", "PV")], flags))
+        inputs |= {"PT": preset} if "PT" in cls.INPUTS else {}
+        inputs |= {"PV": preset // 10} if "PV" in cls.INPUTS else {}
+        for fb in (called, pasted, known):
+            for pin, value in inputs.items():
+                setattr(fb, pin, value)
         called.execute(now)
         exec(body, {}, {"ll_fb": pasted, "now": now})
-        assert _slots(pasted) == _slots(called)
+        exec(with_locals, {}, {"ll_fb": known, "now": now} | {f"ll_t_{pin}": value for pin, value in inputs.items()})
+        assert _slots(pasted) == _slots(called) == _slots(known)
 
 
-def test_a_mocked_timer_is_called_not_inlined():
+def test_a_simulation_pastes_the_body_without_a_class_guard_and_refuses_a_mock():
     sim = simulation(
         "PROGRAM Main VAR t : TON; go : BOOL := TRUE; END_VAR t(IN := go, PT := T#20ms); END_PROGRAM",
     )
+    assert "fb_TON" not in sim.compiled.source.split("# ---- fast variant")[1]
+    sim.cycle(3)
+    assert sim.read("MAIN.T.Q") is True
+    with pytest.raises(RuntimeError, match="MOCK needs a program lowered with its unit tests"):
+        sim.mock(sim.value(sim.location("MAIN.T")))
+
+
+def test_a_mocked_timer_of_a_unit_test_program_is_called_not_inlined():
+    project, diagnostics = source_to_project(
+        "PROGRAM Main VAR t : TON; go : BOOL := TRUE; END_VAR t(IN := go, PT := T#20ms); END_PROGRAM", "test"
+    )
+    assert project is not None, diagnostics
+    lowered = lower_project(project)
+    assert lowered.program is not None
+    lowered.program.mockable = True  # as ir/lower_tests.py lowers a test file's program
+    sim = Simulation(compile_program(lowered.program, "fast"))
     assert "if ll_fb.__class__ is fb_TON:" in sim.compiled.source
     sim.cycle(3)
     assert sim.read("MAIN.T.Q") is True

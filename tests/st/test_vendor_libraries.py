@@ -18,6 +18,8 @@ from hypothesis import strategies as st
 
 from ladderlab.cli import main
 from ladderlab.engine.simulation import Simulation
+from ladderlab.interchange.plcopen.exporter import export_plcopen
+from ladderlab.interchange.plcopen.importer import import_plcopen
 from ladderlab.interchange.st.project import export_project_st
 from ladderlab.model import Project
 from ladderlab.simulation.build import build_project
@@ -248,3 +250,23 @@ def test_the_st_export_names_the_libraries_and_runs_with_them(
     path.write_text(text, encoding="utf-8")
     assert main(["run", str(path), "--library", "Tc2_Math", "--watch", "Main.r"]) == 0
     assert capsys.readouterr().out.splitlines()[-1].split() == ["0", "10", "-1.5"]  # the sign of the dividend
+
+
+def test_plcopen_xml_carries_the_libraries_and_reports_one_it_does_not_ship() -> None:
+    project = _project("PROGRAM Main\nVAR r : LREAL; END_VAR\nr := MODABS(-7.5, 2.0);\nEND_PROGRAM\n", ["Tc2_Math"])
+    document = export_plcopen(project)
+    imported = import_plcopen(document)
+    assert imported.project is not None and imported.diagnostics == []
+    assert imported.project.libraries == ["Tc2_Math"]
+    build = build_project(imported.project)
+    assert build.compiled is not None, [d.format() for d in build.diagnostics]
+    sim = build.simulation()
+    sim.cycle(1)
+    assert sim.read("Main.r") == 0.5  # Beckhoff: MODABS(-7.5, 2.0) is the positive remainder 0.5
+
+    foreign = document.replace(b'name="Tc2_Math"', b'name="Tc2_System"')
+    imported = import_plcopen(foreign, file="p.xml")
+    assert imported.project is not None and imported.project.libraries == []
+    [warning] = imported.diagnostics
+    assert (warning.code, warning.severity) == ("PLCOPEN-UNSUPPORTED", "warning")
+    assert warning.message.startswith("library 'Tc2_System' is not one LadderLab ships (Tc2_Math, Tc2_Utilities)")

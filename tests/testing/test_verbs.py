@@ -6,7 +6,9 @@ that sees IN rise, Q when ET >= PT; CTU counts rising edges), worked out by hand
 
 from __future__ import annotations
 
-from .helpers import at, outcomes, run
+from ladderlab.testing.run import Options, prepare, run_tests
+
+from .helpers import FILE, at, outcomes, project, run
 
 NL = chr(10)
 
@@ -237,3 +239,80 @@ END_TEST
 """
     results = run("", TEXT)
     assert outcomes(results) == {"ton": None}
+
+
+TIMED = """
+PROGRAM Main
+VAR go : BOOL; t : TON; done : BOOL; END_VAR
+t(IN := go, PT := T#20ms);
+done := t.Q;
+END_PROGRAM
+"""
+
+
+def test_a_mocked_standard_timer_keeps_its_inputs_and_never_runs_its_body():
+    """A standard FB's body is pasted in place of its call (docs/runtime.md); a mocked TON must still skip it:
+    IN and PT are written, Q and ET stay what the test set (docs/testing.md, MOCK)."""
+    text = """
+TEST 'mocked timer'
+  MOCK Main.t;
+  Main.go := TRUE;
+  RUN_FOR(T#50ms);
+  ASSERT_FALSE(Main.done, 'the mocked TON never sets Q');
+  ASSERT_EQ(Main.t.ET, T#0ms);
+  ASSERT_TRUE(Main.t.IN, 'callers still write its inputs');
+  ASSERT_EQ(Main.t.PT, T#20ms);
+  Main.t.Q := TRUE;
+  RUN_SCANS(1);
+  ASSERT_TRUE(Main.done, 'the output the test set is read');
+END_TEST
+TEST 'real timer'
+  Main.go := TRUE;
+  RUN_FOR(T#50ms);
+  ASSERT_TRUE(Main.done, 'IEC TON: Q once IN has been TRUE for PT');
+END_TEST
+"""
+    for monitor in (False, True):  # the fast and the monitor variant both paste the body
+        prepared = prepare(project(TIMED), FILE, text, monitor=monitor)
+        assert prepared.compiled is not None
+        assert outcomes(list(run_tests(prepared, Options()))) == {"mocked timer": None, "real timer": None}
+
+
+SHAPES = """
+INTERFACE I_Shape
+METHOD Area : INT
+END_METHOD
+END_INTERFACE
+FUNCTION_BLOCK Square IMPLEMENTS I_Shape
+METHOD Area : INT
+Area := 4;
+END_METHOD
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK Base
+VAR_OUTPUT n : INT; END_VAR
+n := n + 1;
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK Derived EXTENDS Base
+SUPER^();
+n := n + 10;
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR s : Square; i : I_Shape; a : INT; d : Derived; END_VAR
+i := s;
+a := i.Area();
+d();
+END_PROGRAM
+"""
+
+
+def test_a_unit_test_runs_interface_dispatch_and_super_body_calls_as_the_simulation_does():
+    """Regression: the program a test file runs lost the project's method dispatch table and SUPER^() bodies, so
+    ``i.Area()`` through an interface gave 0 in a test while the simulation gave 4."""
+    text = """
+TEST 'object orientation'
+  RUN_SCANS(1);
+  ASSERT_EQ(Main.a, 4, 'Square.Area through I_Shape');
+  ASSERT_EQ(Main.d.n, 11, 'the base body (+1) then the derived one (+10)');
+END_TEST
+"""
+    assert outcomes(run(SHAPES, text)) == {"object orientation": None}

@@ -491,7 +491,10 @@ class Simulation:
         self._ns[names.function(pou.name)] = function
 
     def mock(self, obj: object) -> None:
-        """From now on calls of this FB instance are counted and its body does not run (MOCK)."""
+        """From now on calls of this FB instance are counted and its body does not run (MOCK). Only a program
+        lowered for unit tests (``mockable``) calls a standard FB's body through its class."""
+        if not self.compiled.program.mockable:
+            raise RuntimeError("MOCK needs a program lowered with its unit tests (ir.Program.mockable)")
         self.mocks.mock(obj)
 
     # ------------------------------------------------------------------ debugging

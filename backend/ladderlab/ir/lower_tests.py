@@ -117,7 +117,16 @@ def lower_test_file(project: Project, text: str, file: str) -> TestProgram:
     if lowered.program is None or has_errors(diagnostics):
         return TestProgram(None, diagnostics=diagnostics)
     globals_ = lowered.program.globals + [slot for name, slot in image.items() if name not in known]
-    program = Program({**lowered.program.pous, **pous, **builder.stubs}, globals_, lowered.program.tasks)
+    program = Program(
+        {**lowered.program.pous, **pous, **builder.stubs},
+        globals_,
+        lowered.program.tasks,
+        access=lowered.program.access,
+        places=lowered.program.places,
+        dispatch=lowered.program.dispatch,
+        base_bodies=lowered.program.base_bodies,
+        mockable=True,
+    )
     return TestProgram(program, builder.tests, builder.sites, list(builder.stubs), diagnostics)
 
 

@@ -406,6 +406,9 @@ class Program:
     dispatch: dict[str, dict[str, str]] = field(default_factory=dict)
     #: function blocks whose body a derived one runs with ``SUPER^()`` (``FbCall.body``), upper case
     base_bodies: frozenset[str] = frozenset()
+    #: FB instances may be mocked (a unit test program, engine/doubles.py swaps an instance's class): the standard
+    #: FB bodies pasted in place of their calls are guarded by the instance's class
+    mockable: bool = False
 
     def program_instances(self) -> list[ProgramInstance]:
         """The instances to create: ``instances``, or one per PROGRAM named after it."""

@@ -32,11 +32,23 @@ _OPERATOR_FUNCTIONS = {
 _ATOM = re.compile(r"(?:[A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z_][A-Za-z0-9_]*)*|\d+)\Z")
 _COMPARISONS = frozenset({"EQ", "NE", "LT", "LE", "GT", "GE"})
 _SHORT_CIRCUIT = {"AND_THEN": "and", "OR_ELSE": "or"}
+#: BOOL AND / OR whose right operand is a plain read (below): Python's ``and`` / ``or`` skip the read when the left
+#: operand decides, which changes nothing (the read has no effect and cannot fault) and halves an LD series's cost.
+_BOOL_LOGIC = {"AND": "and", "OR": "or"}
 
 
 def _atom(code: str) -> bool:
     """A name, attribute or non-negative number (needs no parentheses); most expressions fail the first test."""
     return " " not in code and "(" not in code and _ATOM.match(code) is not None
+
+
+def _plain_read(e: ir.Expr, code: str) -> bool:
+    """Whether ``e`` (emitted as ``code``) is a BOOL constant, a BOOL variable read as a plain name or attribute
+    chain, or NOT of one: evaluating it has no effect and cannot fault, so it may be skipped. Indexed, dereferenced
+    and VAR_IN_OUT reads are not atoms and stay evaluated."""
+    if isinstance(e, ir.Unary) and e.op == "NOT":
+        return code.startswith("(not ") and code.endswith(")") and _plain_read(e.operand, code[5:-1])
+    return isinstance(e, (ir.Var, ir.Const)) and e.type == t.BOOL and _atom(code)
 
 
 def literal(value: object) -> str:
@@ -147,6 +159,8 @@ class Expressions:
             return f"ll_ptr_add({left}, {offset}, {byte_size(b.type.target)}, {what!r})"
         if isinstance(b.left.type, t.Reference):  # EQ / NE: one variable referred to (runtime.Ref), or both NULL
             return f"({left} {'==' if b.op == 'EQ' else '!='} {right})"
+        if b.op in _BOOL_LOGIC and b.type == t.BOOL and _plain_read(b.right, right):
+            return f"({left} {_BOOL_LOGIC[b.op]} {right})"
         types = (self.scalar(b.left.type, b.op), self.scalar(b.right.type, b.op))
         result = None if b.op in _COMPARISONS else self.scalar(b.type, b.op)
         return self.standard(_OPERATOR_FUNCTIONS[b.op], [left, right], types, result)

@@ -1,16 +1,17 @@
 """Standard FB calls inlined: the body of the FB's own ``execute`` pasted where the call is.
 
 A method call costs as much as a timer's whole body, so the fast and monitor variants paste the body of a standard
-FB's ``execute`` (engine/stdlib/fbs.py, the one definition of its behaviour) in place of the call, guarded by the
-instance's class (a mocked instance, docs/testing.md, has another class and is called as before)::
+FB's ``execute`` (engine/stdlib/fbs.py, the one definition of its behaviour) in place of the call. An input just
+assigned a local or a constant is read from there (``known``), not back from the instance::
 
     ll_fb = self.v_T1
-    ll_fb.IN = ...
-    if ll_fb.__class__ is fb_TON:
-        if not ll_fb.IN:
-            ...
-    else:
-        ll_fb.execute(now)
+    ll_fb.IN = ll_t___P_2
+    ll_fb.PT = 100
+    if not ll_t___P_2:
+        ...
+
+In a unit test program (``ir.Program.mockable``) the body is guarded by the instance's class: a mocked instance,
+docs/testing.md, has another class and is called as before (``else: ll_fb.execute(now)``).
 
 The body is taken from the method's source with ``ast``, not copied: ``self`` becomes the instance's local,
 the clock argument the scan's clock, the method's locals ``ll_s_<name>``, and an early ``return`` becomes the
@@ -34,10 +35,11 @@ class _NotInlinable(Exception):
     pass
 
 
-@functools.cache
-def inline_body(fb: str, instance: str, now: str) -> tuple[str, ...] | None:
+@functools.lru_cache(maxsize=4096)
+def inline_body(fb: str, instance: str, now: str, known: tuple[tuple[str, str], ...] = ()) -> tuple[str, ...] | None:
     """The lines of standard FB ``fb``'s ``execute`` acting on the local ``instance`` at clock ``now`` (None: not
-    inlinable), indented from column 0."""
+    inlinable), indented from column 0. ``known``: (input, code) pairs, the code of a local or a constant the input
+    was just assigned, read in its place (an input the body assigns itself is read from the instance)."""
     cls = STANDARD_FBS.get(fb.upper())
     if cls is None:
         return None
@@ -56,7 +58,39 @@ def inline_body(fb: str, instance: str, now: str) -> tuple[str, ...] | None:
         body = _without_returns([s for s in function.body if not _docstring(s)])
     except _NotInlinable:
         return None
+    body = [_KnownInputs(instance, dict(known), _assigned_attributes(body, instance)).visit(s) for s in body]
     return tuple(ast.unparse(ast.Module(body=body or [ast.Pass()], type_ignores=[])).splitlines())
+
+
+class _KnownInputs(ast.NodeTransformer):
+    """Reads of ``instance.<input>`` replaced by the code the input was just assigned (``inline_body``'s ``known``)."""
+
+    def __init__(self, instance: str, known: dict[str, str], assigned: set[str]) -> None:
+        self.instance = instance
+        self.known = {pin: code for pin, code in known.items() if pin not in assigned}
+
+    def visit_Attribute(self, node: ast.Attribute) -> ast.AST:
+        if (
+            isinstance(node.ctx, ast.Load)
+            and isinstance(node.value, ast.Name)
+            and node.value.id == self.instance
+            and node.attr in self.known
+        ):
+            return ast.parse(self.known[node.attr], mode="eval").body
+        return self.generic_visit(node)
+
+
+def _assigned_attributes(body: list[ast.stmt], instance: str) -> set[str]:
+    """The attributes of ``instance`` the statements assign."""
+    return {
+        node.attr
+        for statement in body
+        for node in ast.walk(statement)
+        if isinstance(node, ast.Attribute)
+        and isinstance(node.ctx, ast.Store)
+        and isinstance(node.value, ast.Name)
+        and node.value.id == instance
+    }
 
 
 def _docstring(statement: ast.stmt) -> bool:

@@ -17,6 +17,7 @@ code: context.ProbeTable). In the debug variant every pause point is
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager, nullcontext
 from typing import ClassVar
@@ -546,13 +547,19 @@ class Statements:
         def emit() -> None:
             fb = "ll_fb"  # FB calls do not nest: one temporary serves them all
             self.src.line(f"{fb} = {code}")
+            known = []
             for pin, value in s.inputs:
-                self._fb_input(fb, ty, user, pin, value)
+                assigned = self._fb_input(fb, ty, user, pin, value)
+                if assigned is not None and _local_or_constant(assigned[1]):
+                    known.append(assigned)
             call = f"{fb}.execute({self.now})"
-            inline = None if user is not None or self.module.debug else inline_body(ty.fb, fb, self.now)
+            inline = None if user is not None or self.module.debug else inline_body(ty.fb, fb, self.now, tuple(known))
             if s.body is not None:
                 self._base_body(fb, s.body)
-            elif inline is not None:  # the body of the standard FB's execute, for its own class (inline_fbs.py)
+            elif inline is not None and not self.module.program.mockable:  # the body of its execute (inline_fbs.py)
+                for line in inline:
+                    self.src.line(line)
+            elif inline is not None:  # a unit test may mock the instance: the body for the FB's own class only
                 self.src.line(f"if {fb}.__class__ is {names.std_fb(ty.fb.upper())}:")
                 with self.src.indent():
                     for line in inline:
@@ -589,7 +596,10 @@ class Statements:
         with self.src.indent():
             self.src.line(f"{fb}.ll_pr, {fb}.ll_px = {saved}")
 
-    def _fb_input(self, fb: str, ty: t.FbInstance, user: ir.Pou | None, pin: str, value: ir.Expr) -> None:
+    def _fb_input(
+        self, fb: str, ty: t.FbInstance, user: ir.Pou | None, pin: str, value: ir.Expr
+    ) -> tuple[str, str] | None:
+        """Assign an input pin; returns (attribute of ``fb``, code assigned) for a scalar input of ``fb`` itself."""
         owner, attr = self.x.member_parts(fb, ty, pin)
         pin_type = self.x.member_type(ty, pin)
         if user is not None:
@@ -598,15 +608,17 @@ class Statements:
                 if not isinstance(value, ir.Var):
                     raise CodegenError(f"VAR_IN_OUT {pin} needs a variable")
                 self.src.line(f"{owner}.{attr} = {self.x.ref(value)}")
-                return
+                return None
             if slot.var_class != "VAR_INPUT":
                 raise CodegenError(f"{pin} is not an input of {user.name}")
         elif pin.upper() not in std_fb_class(ty.fb).INPUTS:  # type: ignore[union-attr]
             raise CodegenError(f"{pin} is not an input of {ty.fb}")
         if is_composite(pin_type):
             self.src.line(f"ll_assign({owner}.{attr}, {self.x.expr(value)})")
-        else:
-            self.src.line(f"{owner}.{attr} = {self.x.stored(value, pin_type)}")
+            return None
+        code = self.x.stored(value, pin_type)
+        self.src.line(f"{owner}.{attr} = {code}")
+        return (attr, code) if owner == fb else None
 
     def _copy_out(
         self, source: str, source_type: t.IrType, target: ir.Var, checked: bool = True, probe: ir.Probe | None = None
@@ -670,6 +682,15 @@ class Statements:
 
 
 _STRAIGHT = (ir.Assign, ir.Probe, ir.FbCall, ir.FnCall)  # statements that never skip what follows
+#: A local variable of the generated function or a number / BOOL constant: what an inlined standard FB body may read
+#: in place of the input just assigned it (nothing between the assignment and the body can change it)
+_LOCAL_OR_CONSTANT = re.compile(r"(?!ll_s_|ll_fb\b)[A-Za-z_][A-Za-z0-9_]*|\(?-?\d+(?:\.\d+)?(?:e[+-]?\d+)?\)?")
+
+
+def _local_or_constant(code: str) -> bool:
+    return _LOCAL_OR_CONSTANT.fullmatch(code) is not None
+
+
 #: Branches of one if/elif chain (CPython's compiler recurses once per elif); longer chains go in groups.
 CHAIN_BRANCHES = 64
 #: A body nested this deep (indentation levels), or inside this many loops of one Python function, is

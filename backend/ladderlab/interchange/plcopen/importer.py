@@ -21,12 +21,13 @@ import xml.etree.ElementTree as ET
 from collections import Counter as Tally
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import cast, get_args
 
 from ...model.cfc import CfcBody
 from ...model.diagnostics import Diagnostic
 from ...model.fbd import FbdBody
 from ...model.ld import LdBody
-from ...model.project import Pou, Project, TestFile
+from ...model.project import LibraryName, Pou, Project, TestFile
 from ...st import ast
 from ...st.parser import parse_declarations, parse_source
 from ...st.printer import print_declarations, print_source, print_type
@@ -65,6 +66,7 @@ from .xml_io import (
     foreign_data,
     info,
     info_text,
+    library_names,
     local,
     namespace,
     test_texts,
@@ -169,6 +171,7 @@ class _Importer:
                 severity="warning",
             )
         tests = [TestFile(name=test, text=text) for test, text in test_texts(ours)]
+        libraries = self.libraries(ours, root)
         return Project(
             name=name,
             types=types,
@@ -177,7 +180,24 @@ class _Importer:
             tasks=tasks,
             configuration=configuration,
             tests=tests,
+            libraries=libraries,
         )
+
+    def libraries(self, ours: ET.Element | None, root: ET.Element) -> list[LibraryName]:
+        """The vendor libraries LadderLab's data names; one it does not ship is reported and left out."""
+        known: list[LibraryName] = []
+        for name in library_names(ours):
+            if name in get_args(LibraryName):
+                known.append(cast(LibraryName, name))
+            else:
+                self.reader.report(
+                    "PLCOPEN-UNSUPPORTED",
+                    f"library '{name}' is not one LadderLab ships ({', '.join(get_args(LibraryName))}); "
+                    "it was left out, and calls of its functions are unknown",
+                    root,
+                    severity="warning",
+                )
+        return known
 
     # ------------------------------------------------------------ addData bookkeeping
 

@@ -91,6 +91,21 @@ def ladderlab_tests(add_data: ET.Element, tests: list[tuple[str, str]]) -> None:
         ET.SubElement(info, f"{{{LADDERLAB_NS}}}test", {"name": name}).text = text
 
 
+def ladderlab_libraries(add_data: ET.Element, libraries: list[str]) -> None:
+    """Carry the project's vendor libraries (``<ll:library name=...>``) in ``ladderlab_data``'s result: PLCopen
+    XML has no place for a library reference, and without them the project's calls of LTRUNC & co. fail."""
+    info = add_data[0][0]
+    for name in libraries:
+        ET.SubElement(info, f"{{{LADDERLAB_NS}}}library", {"name": name})
+
+
+def library_names(node: ET.Element | None) -> list[str]:
+    """The library names carried in the project's ``<ll:info>`` (``ladderlab_libraries``)."""
+    if node is None:
+        return []
+    return [found.get("name", "") for found in node.findall(f"{{{LADDERLAB_NS}}}library")]
+
+
 def to_bytes(root: ET.Element) -> bytes:
     """Serialise a built document (its root gets the default PLCopen namespace declaration).
 
