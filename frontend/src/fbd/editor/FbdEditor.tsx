@@ -310,7 +310,6 @@ export function FbdEditor({
     clipboard: { take, paste: pasteText, isClip: (text) => parseClip(text) !== null, locked },
     last: lastClip,
   });
-  const clipboard = editor;
 
   const reorder = (delta: -1 | 1) => {
     const id = selectedNodes[0];
@@ -416,7 +415,7 @@ export function FbdEditor({
         ]
       : [];
     const clip: MenuItem[] = [
-      { id: "copy", label: "Copy", keys: keysOf("fbd", "copy"), run: () => clipboard.copy(false) },
+      { id: "copy", label: "Copy", keys: keysOf("fbd", "copy"), run: () => editor.copy(false) },
       ...(locked
         ? []
         : [
@@ -702,8 +701,8 @@ export function FbdEditor({
             </div>
           )}
           <div className="ld-toolbar-group">
-            {tool("copy", "Copy", () => clipboard.copy(false), selectedNodes.length > 0, keyed("copy"))}
-            {tool("paste", "Paste", clipboard.paste, !locked, keyed("paste"))}
+            {tool("copy", "Copy", () => editor.copy(false), selectedNodes.length > 0, keyed("copy"))}
+            {tool("paste", "Paste", editor.paste, !locked, keyed("paste"))}
             {tool("undo", "Undo", () => onHistoryChange(undo(history)), !locked && canUndo(history), keyed("undo"))}
             {tool("redo", "Redo", () => onHistoryChange(redo(history)), !locked && canRedo(history), keyed("redo"))}
           </div>
