@@ -177,16 +177,7 @@ def test_the_trace_chart_and_the_timeline_move_together(page, server):
     page.get_by_role("button", name="Start trace").click()
     status = page.get_by_role("status", name="Trace state")
     status.filter(has_text="Recording").wait_for()
-    for number in (1, 2, 3):
-        cycle.click()
-        scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
-    start = page.locator('g.ld-element[data-id="start"]')
-    start.locator(".ld-hit").dblclick()
-    start.locator(".ld-prepared").filter(has_text="<TRUE>").wait_for()
-    page.keyboard.press("Control+F7")
-    for number in (4, 5, 6):
-        cycle.click()
-        scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
+    _start_written_before_scan_4(page, scan, cycle)
     status.filter(has_text="Recording · 6 samples").wait_for()
     _coil(page, "on")
 
@@ -206,3 +197,114 @@ def test_the_trace_chart_and_the_timeline_move_together(page, server):
     banner.filter(has_text="Viewing scan 5 (history)").wait_for()
     page.wait_for_function("() => document.querySelector('.trace-plot')?.dataset.viewingScan === '5'")
     motor.filter(has_text=re.compile("^TRUE$")).wait_for()
+
+
+def test_the_timeline_marks_the_scan_a_trace_trigger_fired_at(page, server):
+    """Issue 23 item 3: a trace of Motor triggered on its rising edge; Start is written before scan 4, so Motor
+    rises at the end of scan 4 and the trace says so; the timeline marks scan 4 in the trigger's colour (a trigger
+    outranks the write of the same scan), and a click on the mark shows scan 4 with the coil on."""
+    scan, cycle = _online_motor(page, server)
+    page.get_by_role("tab", name="Trace").click()
+    page.get_by_label("Variable to trace").fill("Motor")
+    page.keyboard.press("Enter")
+    page.get_by_label("Trigger variable").fill("Motor")
+    page.get_by_label("Trigger condition").select_option("rising")
+    page.get_by_role("button", name="Start trace").click()
+    status = page.get_by_role("status", name="Trace state")
+    status.filter(has_text="Waiting for the trigger").wait_for()
+    _start_written_before_scan_4(page, scan, cycle)
+    status.filter(has_text="triggered at scan 4").wait_for()
+
+    timeline = page.get_by_role("group", name="Scan history")
+    mark = timeline.locator('.history-mark[data-mark-scan="4"]')
+    mark.wait_for()
+    assert mark.get_attribute("class") == "history-mark trigger"
+    assert mark.get_attribute("aria-label") == "scan 4: trigger, write"
+    assert timeline.locator(".history-mark").count() == 1  # nothing else happened in scans 1 to 6
+    mark.click()
+    page.get_by_role("status", name="History view").filter(has_text="Viewing scan 4 (history)").wait_for()
+    _coil(page, "on")
+
+
+def _halted_networks(page) -> list[str]:
+    return page.eval_on_selector_all("svg.ld-network.ld-halted", "els => els.map(e => e.dataset.network)")
+
+
+def test_step_through_a_past_scan_network_by_network(page, server):
+    """Issue 23 item 3 ("one network within a scan"): scan 4 (the first after Start was written) shown, then
+    stepped through: before network 1 runs, the Motor coil has not run in this scan (drawn as not executed) and network 1 is
+    marked; one step later network 2 is marked and the seal-in has switched the coil on; the steps go on through
+    networks 3 and 4, the lines of the ST block Blinker that network 4 calls and the FBD program Scaling's network
+    (each shown in its editor, the point marked), and the last step ends the scan; "Whole scan" shows scan 4 complete again. The live simulation and its history are not changed: scan 5
+    still shows the coil on, and the counter of the live scans stays at 6."""
+    scan, cycle = _online_motor(page, server)
+    _start_written_before_scan_4(page, scan, cycle)
+    timeline = page.get_by_role("group", name="Scan history")
+    timeline.get_by_role("slider", name="Scan").fill("4")
+    banner = page.get_by_role("status", name="History view")
+    banner.filter(has_text="Viewing scan 4 (history)").wait_for()
+    _coil(page, "on")
+
+    stepping = page.get_by_role("group", name="Step through the scan")
+    point = stepping.get_by_label("Step point")
+    stepping.get_by_role("button", name="Step into this scan").click()
+    point.filter(has_text="Scan 4, halted before MAIN, network 1").wait_for()
+    page.wait_for_function("() => document.querySelector('svg.ld-network.ld-halted')?.dataset.network === 'seal_in'")
+    page.wait_for_function(  # not run yet in this scan: drawn neither energised nor off
+        "() => { const c = document.querySelector('g.ld-coil[data-id=motor]')?.classList;"
+        " return c && !c.contains('ld-on') && !c.contains('ld-off'); }"
+    )
+    assert scan.inner_text() == "4"
+    page.screenshot(path=str(ARTIFACTS / "history-step-network-1.png"))
+
+    stepping.get_by_role("button", name="Next step").click()
+    point.filter(has_text="Scan 4, halted before MAIN, network 2").wait_for()
+    page.wait_for_function("() => document.querySelector('svg.ld-network.ld-halted')?.dataset.network === 'run_timer'")
+    _coil(page, "on")  # network 1 ran: Start OR Motor, AND NOT Stop
+    points = []
+    for _ in range(40):  # the rest of the scan
+        text = point.inner_text()
+        if text == "Scan 4 ran to its end":
+            break
+        points.append(text.removeprefix("Scan 4, halted before "))
+        if text.endswith("SCALING, network 1"):  # the FBD program, shown in its editor with the network marked
+            page.locator('.fbd-network.fbd-network-halted[data-network="speed"]').wait_for()
+        stepping.get_by_role("button", name="Next step").click()
+        page.wait_for_function(
+            "(text) => document.querySelector('[aria-label=\"Step point\"]')?.textContent !== text", arg=text
+        )
+    assert points == [
+        "MAIN, network 2",
+        "MAIN, network 3",
+        "MAIN, network 4",
+        *[f"BLINKER (MAIN.BLINK), line {line}" for line in (1, 2, 3, 4)],  # the ST block network 4 calls
+        "SCALING, network 1",  # the task's second program, in FBD
+    ]
+    assert point.inner_text() == "Scan 4 ran to its end"
+    assert stepping.get_by_role("button", name="Next step").is_disabled()
+    page.get_by_role("navigation", name="Project tree").get_by_role("button", name=re.compile("^Main")).click()
+    _coil(page, "on")  # the steps showed Blinker and Scaling in their editors; Main at the scan's end
+    assert _halted_networks(page) == []
+
+    stepping.get_by_role("button", name="Whole scan").click()
+    point.filter(has_text="Step through scan 4").wait_for()
+    timeline.get_by_role("button", name="▶").click()
+    banner.filter(has_text="Viewing scan 5 (history)").wait_for()
+    _coil(page, "on")
+    timeline.get_by_role("button", name="Live").click()
+    banner.wait_for(state="detached")
+    scan.filter(has_text=re.compile("^6$")).wait_for()
+
+
+def _start_written_before_scan_4(page, scan, cycle) -> None:
+    """Three single cycles, Start prepared TRUE and written (Ctrl+F7: before the next scan), three more cycles."""
+    for number in (1, 2, 3):
+        cycle.click()
+        scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
+    start = page.locator('g.ld-element[data-id="start"]')
+    start.locator(".ld-hit").dblclick()
+    start.locator(".ld-prepared").filter(has_text="<TRUE>").wait_for()
+    page.keyboard.press("Control+F7")
+    for number in (4, 5, 6):
+        cycle.click()
+        scan.filter(has_text=re.compile(f"^{number}$")).wait_for()

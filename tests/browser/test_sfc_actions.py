@@ -39,6 +39,14 @@ def sfc_project(name: str, declarations: str, elements: list, actions: list) -> 
     return Project(name=name, pous=[pou]).model_dump(mode="json", exclude_none=True)
 
 
+def open_chart(page, server, project: str, declarations: str, elements: list, actions: list):
+    """Stores the project ``project`` with the SFC program Main, opens Main and returns its chart editor."""
+    store_project(server, sfc_project(project, declarations, elements, actions))
+    page.goto(server)
+    open_pou(page, project, "Main")
+    return chart_editor(page)
+
+
 def chart_editor(page):
     editor = page.get_by_role("application", name="Sequential function chart editor")
     editor.wait_for()
@@ -83,10 +91,7 @@ def test_an_fbd_action_is_drawn_and_counts_online_while_its_step_is_active(page,
         {"type": "transition", "id": "t2", "condition": "FALSE"},
         {"type": "jump", "id": "j1", "target": "Init"},
     ]
-    store_project(server, sfc_project("fbdact", "VAR\n    go : BOOL;\n    n : INT;\nEND_VAR", chart, []))
-    page.goto(server)
-    open_pou(page, "fbdact", "Main")
-    editor = chart_editor(page)
+    editor = open_chart(page, server, "fbdact", "VAR\n    go : BOOL;\n    n : INT;\nEND_VAR", chart, [])
 
     # A new action in FBD, associated with Init (N) through the qualifier picker.
     add_action(page, editor, "Count", "fbd", "Init")
@@ -188,10 +193,7 @@ def test_breakpoints_on_an_st_action_line_and_an_ld_action_network_halt_and_step
         {"name": "Lamp", "language": "ld", "body": lamp},
     ]
     declarations = "VAR\n    n, m : INT;\n    on, shown : BOOL;\nEND_VAR"
-    store_project(server, sfc_project("bpact", declarations, chart, actions))
-    page.goto(server)
-    open_pou(page, "bpact", "Main")
-    editor = chart_editor(page)
+    editor = open_chart(page, server, "bpact", declarations, chart, actions)
     n, m = watch(page, "Main.n"), watch(page, "Main.m")
 
     # A breakpoint on line 2 of the ST action Fill (gutter click); listed with the action it is in.
@@ -255,10 +257,7 @@ def test_an_sfc_action_is_drawn_and_its_chart_runs_online_while_the_action_is_ac
     ]
     declarations = "VAR\n    go, next : BOOL;\n    a : INT;\nEND_VAR"
     actions = [{"name": "IncA", "language": "st", "body": "a := a + 1;"}]
-    store_project(server, sfc_project("sfcact", declarations, chart, actions))
-    page.goto(server)
-    open_pou(page, "sfcact", "Main")
-    editor = chart_editor(page)
+    editor = open_chart(page, server, "sfcact", declarations, chart, actions)
 
     # A new action Seq in SFC, associated with M0 (N); opened, it is a chart of its own with its initial step.
     add_action(page, editor, "Seq", "sfc", "M0")

@@ -7,9 +7,11 @@ exactly the same, whatever the inputs, checkpoints and evictions in between."""
 
 from __future__ import annotations
 
+import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
+from ladderlab.engine.compile import compile_program
 from ladderlab.engine.inputs import InputEvent
 from ladderlab.engine.simulation import Simulation
 from ladderlab.model import ld
@@ -17,12 +19,15 @@ from ladderlab.model.project import Pou
 from ladderlab.simulation.build import build_project
 from ladderlab.simulation.history import History, HistoryUnavailable
 from ladderlab.st.project_text import source_to_project
+from ladderlab.storage.load import load_project_path
 from tests.interchange.st_support import as_st
 from tests.interchange.test_st_equivalence import RICH, rich_elements, rich_series
 from tests.interchange.test_st_fbd_equivalence import programs as fbd_programs
+from tests.ir.diagram_support import lower_ok
 from tests.ir.diagram_support import project as diagram_project
 from tests.ir.test_diagram_equivalence import _Ids
-from tests.support import fuzz_settings
+from tests.ir.test_il_online import il_pou
+from tests.support import EXAMPLES, fuzz_settings
 
 # Timers (TON, TOF, TP) on the virtual clock, edge triggers (R_TRIG, F_TRIG), a counter and arithmetic: the
 # state a replay must carry exactly. Two tasks at different intervals so some scans run one task only.
@@ -434,3 +439,111 @@ def test_seeks_equal_the_live_scans_of_every_branch_after_forks(branches, forks)
                 continue
             runner.seek(scan, branch=number)
             assert runner.shown.snapshot() == values, f"branch {number}, scan {scan}"
+
+
+STEPPED = source_to_project(
+    """
+PROGRAM Main
+VAR
+    A, B, C : INT;
+END_VAR
+A := A + 1;
+B := A * 10;
+C := B + A;
+END_PROGRAM
+
+CONFIGURATION Cfg
+    RESOURCE Res ON PLC
+        TASK Fast (INTERVAL := T#10ms, PRIORITY := 1);
+        PROGRAM Main WITH Fast : Main;
+    END_RESOURCE
+END_CONFIGURATION
+"""
+)[0]
+
+
+def test_step_through_a_past_scan_line_by_line_without_changing_the_history():
+    """Issue 23 item 3 ("one network within a scan"): scan 2 (the third) replayed in the debug variant from the
+    state scan 1 left (A = 2, B = 20, C = 22), its recorded write A := 100 applied at its start; each step halts
+    before the next line, so the values are those of the lines run so far: line 6 (A := A + 1) halts with
+    A = 100, line 7 after it with A = 101, line 8 with B = 1010, and the end of the scan has C = 1111, which is
+    what a seek to scan 2 shows. The live simulation and the recorded scans are untouched."""
+    sim = Simulation(build_project(STEPPED, "monitor").compiled)
+    history = History(sim, min_interval=1)
+    _record(sim, history)
+    sim.cycle(2)
+    sim.write("Main.A", 100)
+    sim.cycle(2)
+    live = sim.snapshot()
+    debug = build_project(STEPPED, "debug").compiled
+
+    stepper = history.stepper(2, debug)
+    seen = []
+    halt = stepper.step("statement")
+    while halt is not None:
+        values = stepper.snapshot()
+        seen.append((halt.origin.line, values["MAIN.A"], values["MAIN.B"], values["MAIN.C"]))
+        halt = stepper.step("statement")
+    assert seen == [(6, 100, 20, 22), (7, 101, 20, 22), (8, 101, 1010, 22)]
+    end = stepper.snapshot()
+    assert (end["MAIN.A"], end["MAIN.B"], end["MAIN.C"]) == (101, 1010, 1111)
+    assert end == history.seek(2).snapshot()
+    assert stepper.scan_count == 3 and stepper.time_ms == 30.0
+
+    assert sim.snapshot() == live and sim.scan_count == 4  # the live simulation did not move
+    assert history.seek(3).snapshot()["MAIN.C"] == 1122  # A 102, B 1020: the scans after it stay as recorded
+    first = history.stepper(0, debug)  # the first scan starts from the initial checkpoint
+    assert first.step("statement").origin.line == 6 and first.snapshot()["MAIN.A"] == 0
+    with pytest.raises(HistoryUnavailable, match=r"^scan 4 has not run yet \(the last scan is 3\)$"):
+        history.stepper(4, debug)
+
+
+def test_step_through_a_past_scan_of_il_from_load_to_load():
+    """IL (tests/ir/test_il_online.py's program): scan 1 replayed with its recorded write a := 5; a step halts at
+    each load, jump or call (ON-04): LD a (line 1, a = 5), LD a (line 4, after a := a + 1: 6), JMPC done (line 6,
+    6 > 2), then the jump skips the CAL and lands on LD a (line 11) with b still 10 from scan 0; the scan ends
+    with b = 60."""
+    program = lower_ok(il_pou())
+    sim = Simulation(program, variant="monitor")
+    history = History(sim, min_interval=1)
+    _record(sim, history)
+    sim.cycle(1)
+    sim.write("Main.a", 5)
+    sim.cycle(1)
+    stepper = history.stepper(1, compile_program(program, "debug"))
+    seen = []
+    halt = stepper.step("statement")
+    while halt is not None:
+        seen.append((halt.origin.line, stepper.read("Main.a"), stepper.read("Main.b")))
+        halt = stepper.step("statement")
+    assert seen == [(1, 5, 10), (4, 6, 10), (6, 6, 10), (11, 6, 10)]
+    assert (stepper.read("Main.a"), stepper.read("Main.b")) == (6, 60)
+    assert stepper.snapshot() == history.seek(1).snapshot()
+
+
+def test_step_over_a_call_in_a_past_scan():
+    """The example motor, scan 3 (0-based; Start written before it): "statement" steps into the ST block
+    Blinker that LD network lamp calls and on into the FBD program Scaling; "over" stays in the POU it started in
+    and its callers, as a live step over does (engine/debug.py STEP_ENDS): Main's four networks, then the scan's
+    end. Both end where a seek to that scan ends."""
+    project = load_project_path(EXAMPLES / "motor")
+    sim = Simulation(build_project(project, "monitor").compiled)
+    history = History(sim)
+    _record(sim, history)
+    sim.cycle(3)
+    sim.write("Start", True)
+    sim.cycle(3)
+    debug = build_project(project, "debug").compiled
+    walked = {}
+    for granularity in ("statement", "over"):
+        stepper = history.stepper(3, debug)
+        points = []
+        halt = stepper.step(granularity)
+        while halt is not None:
+            points.append((halt.origin.pou.upper(), halt.origin.network or halt.origin.line))
+            halt = stepper.step(granularity)
+        assert stepper.snapshot() == history.seek(3).snapshot()
+        walked[granularity] = points
+    main = [("MAIN", network) for network in ("seal_in", "run_timer", "count_starts", "lamp")]
+    assert walked["statement"] == [*main, *[("BLINKER", line) for line in (1, 2, 3, 4)], ("SCALING", "speed")]
+    assert walked["over"] == main

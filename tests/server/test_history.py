@@ -239,3 +239,80 @@ def test_a_session_downloads_as_a_recording_that_ladderlab_replay_prints(
     assert refused.json()["detail"]["message"] == (
         "this session cannot be replayed from scan 0 by ladderlab replay: it continued from a past scan"
     )
+
+
+def test_step_through_a_past_scan_line_by_line(client: TestClient, counter: str, registry: SimulationRegistry) -> None:
+    """Issue 23 item 3 ("one network within a scan"): scan 3 shown, then stepped through in the debug variant
+    from the state scan 2 left (Count 2, Flag FALSE after two toggles) with its recorded write Divisor := 4 applied
+    at its start: before line 1 Count is 2; before line 2 Count is 3 and Flag still FALSE; before line 3 Flag is
+    TRUE and Result still 100; at the end Result is 25. The live simulation (scan 5) and the history stay."""
+    cycle = f"/api/simulations/{counter}/cycle"
+    for _ in range(2):
+        client.post(cycle)
+    with client.websocket_connect(f"/api/simulations/{counter}/ws") as ws:
+        subscribe(ws, ["Main.Count", "Main.Flag", "Main.Result"])
+        ws.send_json({"type": "write", "path": "Main.Divisor", "value": 4})
+        for _ in range(3):
+            ws.send_json({"type": "single_cycle"})
+        recv_until(ws, lambda m: m["type"] == "values" and m["scan"] == 5)
+        step = f"/api/simulations/{counter}/history/step"
+        refused = client.post(step, json={})
+        assert refused.status_code == 409
+        assert refused.json()["detail"]["message"] == "go to a past scan first: a step goes through the scan shown"
+        client.post(f"/api/simulations/{counter}/seek", json={"scan": 3})
+        seen: dict[str, object] = {}
+        points = []
+        for _ in range(4):
+            info = client.post(step, json={"granularity": "statement"}).json()
+            stepping = info["history"]["stepping"]
+            found = recv_until(
+                ws, lambda m, point=stepping: m["type"] == "values" and m["history"]["stepping"] == point
+            )
+            for m in [*found[1], found[0]]:
+                if m["type"] == "values":
+                    seen.update(m["changed"])
+            assert found[0]["scan"] == 3
+            at = stepping["at"]
+            points.append((at and (at["pou"], at["line"]), seen["MAIN.COUNT"], seen["MAIN.FLAG"], seen["MAIN.RESULT"]))
+        assert points == [
+            (("MAIN", 1), 2, False, 100),
+            (("MAIN", 2), 3, False, 100),
+            (("MAIN", 3), 3, True, 100),
+            (None, 3, True, 25),
+        ]
+        ended = client.post(step, json={})
+        assert ended.json()["detail"]["message"] == "scan 3 ran to its end: go to a scan to step through it"
+        live = entry(registry, counter).handle
+        assert live.read("Main.Count") == 5
+        ws.send_json({"type": "fork"})  # from the end of the stepped scan: its state, as the seek had it
+        recv_until(ws, lambda m: m["type"] == "values" and m["history"]["branch"] == 2)
+        assert (live.read("Main.Count"), live.read("Main.Result")) == (3, 25)
+        info = client.post(f"/api/simulations/{counter}/seek", json={"scan": 3}).json()
+        assert info["history"]["stepping"] is None
+
+
+def test_a_step_through_refuses_what_it_cannot_redo(client: TestClient, counter: str) -> None:
+    """A scan that ended with a runtime error (Divisor 0 at scan 3) cannot be stepped through again (its view is
+    the checkpoint after it); a continue from a scan halted in a step waits for the step to end."""
+    cycle = f"/api/simulations/{counter}/cycle"
+    step = f"/api/simulations/{counter}/history/step"
+    client.post(cycle)
+    client.post(cycle)
+    with client.websocket_connect(f"/api/simulations/{counter}/ws") as ws:
+        subscribe(ws, ["Main.Count"])
+        ws.send_json({"type": "write", "path": "Main.Divisor", "value": 0})
+        ws.send_json({"type": "single_cycle"})
+        recv_until(ws, of_type("status", state="faulted"))
+    client.post(f"/api/simulations/{counter}/seek", json={"scan": 3})
+    refused = client.post(step, json={})
+    assert refused.status_code == 409
+    assert refused.json()["detail"]["message"] == "scan 3 cannot be stepped through: it ended with a runtime error"
+
+    client.post(f"/api/simulations/{counter}/seek", json={"scan": 2})
+    halted = client.post(step, json={}).json()["history"]["stepping"]
+    assert halted["at"]["line"] == 1
+    with client.websocket_connect(f"/api/simulations/{counter}/ws") as ws:
+        subscribe(ws, ["Main.Count"])
+        ws.send_json({"type": "fork"})
+        error = recv_until(ws, of_type("error"))[0]
+        assert error["message"] == "the scan shown is halted in a step through it: step to its end first"

@@ -63,3 +63,26 @@ def test_step_to_the_next_transition_from_stopped_and_from_a_running_halt(
         recv_until(ws, of_type("status", state="running"))  # it was running: it runs on
         n = handle.read("Main.n")
         recv_until(ws, lambda m: m["type"] == "values" and m["changed"].get("MAIN.N", 0) > n + 2)  # S0 counts again
+
+
+def test_while_halted_before_the_transitions_a_condition_shows_its_last_computed_value(
+    client: TestClient, workspace: Workspace, registry: SimulationRegistry
+) -> None:
+    """Issue 24 item 3: a breakpoint on S1 halts scan 1 before its transitions are evaluated; the frame of the halt
+    gives t1's condition as computed in scan 0 (go TRUE: TRUE, t1 fired), not None (the chart showed "?")."""
+    sim_id, ids = chart_simulation(client, workspace)
+    condition = f"Main/{ids['T1']}.COND"
+    with client.websocket_connect(f"/api/simulations/{sim_id}/ws") as ws:
+        assert recv(ws)["state"] == "stopped"
+        subscribe(ws, [], elements=[{"pou_instance": "Main", "ids": [f"{ids['T1']}.COND"]}])
+        ws.send_json({"type": "write", "path": "Main.go", "value": True})
+        ws.send_json({"type": "single_cycle"})  # scan 0: t1 = go = TRUE fires, S1 active
+        recv_until(ws, lambda m: m["type"] == "values" and m["power"].get(condition) is True)
+        ws.send_json({"type": "write", "path": "Main.go", "value": False})
+        ws.send_json({"type": "breakpoint_set", "pou": "Main", "element": ids["S1"]})
+        ws.send_json({"type": "single_cycle"})  # scan 1 halts at S1, before its conditions
+        _, seen = recv_until(ws, of_type("status", state="halted"))
+        frame, more = recv_until(ws, of_type("values"))
+        frames = [m for m in [*seen, *more, frame] if m["type"] == "values"]
+        # the frames are changes: t1's condition is not sent again as None (unknown), it stays scan 0's TRUE
+        assert [m["power"].get(condition, "unchanged") for m in frames] == ["unchanged"] * len(frames)

@@ -24,6 +24,7 @@ class _Drawer:
         self.steps: dict[tuple, list[str]] = {}  # parallel context -> step names in it
         self.jumps: list[tuple[dict, tuple, int]] = []
         self.actions: set[str] = set()
+        self.pool = ["Act1", "Act2", "Act3"]  # the actions steps of the chart being drawn associate
 
     def new(self, prefix: str) -> str:
         self.count += 1
@@ -35,7 +36,7 @@ class _Drawer:
         associations = []
         for _ in range(self.draw(st.integers(0, 2))):
             qualifier = self.draw(st.sampled_from(QUALIFIERS))
-            action = self.draw(st.sampled_from(["Act1", "Act2", "Act3"]))
+            action = self.draw(st.sampled_from(self.pool))
             self.actions.add(action)
             item = {"id": self.new("a"), "qualifier": qualifier, "action": action}
             if qualifier in TIMED_QUALIFIERS:
@@ -81,14 +82,16 @@ class _Drawer:
         self.jumps.append((made, context, len(self.steps.get(context, []))))
         return made
 
-    def chart(self) -> list:
-        elements = [self.step_like((), 0, first=True)]
+    def chart(self, root: tuple = ()) -> list:
+        """``root``: the context of the chart's main sequence (an action's chart has its own, so its jumps stay in it)."""
+        elements = [self.step_like(root, 0, first=True)]
         for _ in range(self.draw(st.integers(0, 3))):
-            elements += [self.trans_like((), 0), self.step_like((), 0)]
+            elements += [self.trans_like(root, 0), self.step_like(root, 0)]
         if self.draw(st.booleans()):
-            elements += [self.trans_like((), 0), self.jump(())]
+            elements += [self.trans_like(root, 0), self.jump(root)]
         for made, context, before in self.jumps:  # back to a step drawn before the jump: a loop
             made["target"] = self.draw(st.sampled_from(self.steps[context][: max(before, 1)]))
+        self.jumps = []
         return elements
 
 
@@ -99,11 +102,30 @@ def charts(draw) -> list:
 
 
 @st.composite
-def sfc_bodies(draw) -> dict:
-    """A random SFC body: a chart, the ST actions it names and the BOOL conditions it reads."""
+def sfc_bodies(draw, nested: bool = False) -> dict:
+    """A random SFC body: a chart, the ST or IL actions it names and the BOOL conditions it reads. ``nested``: also an
+    action ``Sub`` written in SFC (a random chart whose steps associate In1, In2), associated with the initial step
+    with a random qualifier (SFC-02, docs/sfc.md "Actions written in SFC")."""
     drawer = _Drawer(draw)
     chart = drawer.chart()
-    actions = [
-        {"name": name, "language": "st", "body": f"n := n + {i + 1};"} for i, name in enumerate(sorted(drawer.actions))
-    ]
+    actions = [_action(draw, name, "n", i + 1) for i, name in enumerate(sorted(drawer.actions))]
+    if nested:
+        outer = drawer.actions
+        drawer.actions, drawer.pool = set(), ["In1", "In2"]
+        inner = drawer.chart(root=("Sub",))
+        actions += [_action(draw, name, "m", i + 1) for i, name in enumerate(sorted(drawer.actions))]
+        actions.append({"name": "Sub", "language": "sfc", "body": {"elements": inner}})
+        qualifier = draw(st.sampled_from(QUALIFIERS))
+        association = {"id": drawer.new("a"), "qualifier": qualifier, "action": "Sub"}
+        if qualifier in TIMED_QUALIFIERS:
+            association["time"] = f"T#{draw(st.integers(1, 9)) * 10}ms"
+        chart[0]["actions"].append(association)
+        drawer.actions = outer
     return {"chart": {"elements": chart}, "actions": actions}
+
+
+def _action(draw, name: str, counter: str, step: int) -> dict:
+    """An action adding ``step`` to ``counter``, written in ST or in IL (SFC-02) as drawn."""
+    if draw(st.booleans()):
+        return {"name": name, "language": "il", "body": f"LD {counter}\nADD {step}\nST {counter}"}
+    return {"name": name, "language": "st", "body": f"{counter} := {counter} + {step};"}

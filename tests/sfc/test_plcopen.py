@@ -24,8 +24,14 @@ from .support import build
 
 
 def sfc_project(body: dict) -> Project:
-    conditions = sorted({t["condition"] for t in _transitions(body["chart"]["elements"])})
-    declarations = f"VAR {', '.join(conditions)} : BOOL; n : INT; END_VAR" if conditions else "VAR n : INT; END_VAR"
+    """A program ``Seq`` of ``body`` with the BOOL conditions of its charts (its own and its SFC actions') and the
+    counters its actions add to (``n``, ``m``: tests/sfc/strategies.py)."""
+    charts = [body["chart"], *(a["body"] for a in body.get("actions", []) if a["language"] == "sfc")]
+    conditions = sorted({t["condition"] for chart in charts for t in _transitions(chart["elements"])})
+    counters = "n, m : INT;"
+    declarations = (
+        f"VAR {', '.join(conditions)} : BOOL; {counters} END_VAR" if conditions else f"VAR {counters} END_VAR"
+    )
     pou = Pou(name="Seq", kind="program", language="sfc", declarations=declarations, body=body)
     return Project(name="sfc", pous=[pou], tasks=[Task(name="t", interval="T#10ms", programs=["Seq"])])
 

@@ -92,14 +92,50 @@ def test_the_error_analysis_flags_export_and_run_alike():
     same_traces(proj, scans=300, seed=5)
 
 
-def test_an_action_written_in_sfc_is_refused_by_name():
+@given(sfc_bodies(nested=True), st.integers(0, 1000))
+@settings(max_examples=20)
+def test_random_charts_with_an_action_written_in_sfc_export_to_st_that_runs_identically(body, seed):
+    """SFC-02 in the ST export: a random chart whose initial step associates ``Sub``, an action written in SFC (a
+    random chart of its own), with a random qualifier; both run scan by scan alike under random writes."""
+    same_traces(sfc_project(body), scans=60, seed=seed)
+
+
+def test_an_action_written_in_sfc_exports_its_chart_final_run_and_restart():
+    """The ST export of test_sfc_actions' chart: Seq's chart runs inside Seq's IF, closes in Seq's final run (its
+    steps left, IncB's final run) and starts again from I0. The traces agree scan by scan, and the random writes
+    reached every case the docs name: Seq's final run (A without Q) with I1 active before it, and a later
+    activation starting from I0."""
     from .test_sfc_actions import chart
 
-    result = export_pou_st(chart(), "Main")
-    assert result.text == ""
-    assert (
-        "EXPORT-UNSUPPORTED",
-        "Main/actions/Seq",
-        "the action Seq is written in SFC; the ST export writes one chart per POU: move its chart into a "
-        "function block written in SFC and call that in an action",
-    ) in [(d.code, d.file, d.message) for d in result.diagnostics]
+    proj = chart()
+    text = exported(proj, "Main").text
+    assert "Seq_closing := NOT Seq.Q;" in text and "FOR sfc_pass_Seq := 2 TO 3 DO" in text
+    trace = same_traces(proj, scans=400, seed=11)
+    finals = [i for i, row in enumerate(trace) if row["MAIN.SEQ.A"] and not row["MAIN.SEQ.Q"]]
+    assert any(trace[i - 1]["MAIN.I1.X"] for i in finals if i), "no final run with I1 active in the trace"
+    assert all(trace[i]["MAIN.I0.X"] and not trace[i]["MAIN.I1.X"] for i in finals)
+
+
+def test_an_action_chart_with_entry_exit_actions_limits_and_flags_exports_alike():
+    """Entry and exit actions and a time limit inside an action's chart, with SFCInit, SFCReset, SFCPause,
+    SFCQuitError, SFCError and SFCCurrentStep written at random (they reset the inner chart too)."""
+    from .test_sfc_actions import seq_action
+
+    decls = f"VAR go, next, back : BOOL; a, b, c : INT; {ALL_FLAGS} END_VAR"
+    inner = [
+        step("I0", "N IncA", entry="In", exit="Out"),
+        tr("next"),
+        step("I1", "N IncB", max_time="T#30ms"),
+        tr("back AND I1.T > T#20ms"),
+        jump("I0"),
+    ]
+    main = [step("M0", "N Seq"), tr("go"), step("M1", "P IncC"), tr("back"), jump("M0")]
+    actions = {
+        "IncA": "a := a + 1;",
+        "IncB": "b := b + 1;",
+        "IncC": "c := c + 1;",
+        "In": "c := c * 2;",
+        "Out": "c := c - 1;",
+    }
+    proj = project(sfc_pou("Main", decls, main, actions, extra_actions=[seq_action(inner)]))
+    same_traces(proj, scans=400, seed=13)

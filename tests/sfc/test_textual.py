@@ -7,13 +7,14 @@ from hypothesis import given, settings
 from ladderlab.interchange.st.export import export_pou_st
 from ladderlab.interchange.st.project import export_project_st
 from ladderlab.model import Pou, Task
+from ladderlab.model.sfc import SfcBody, SfcChart
 from ladderlab.st.parser import parse_source
 from ladderlab.st.printer import print_source
 from ladderlab.st.project_text import source_to_project
 from tests.support import external
 
 from .strategies import sfc_bodies
-from .support import build, jump, par, project, sfc_pou, step, tr
+from .support import build, jump, par, project, run_table, sfc_pou, step, tr
 from .test_plcopen import semantics, sfc_project
 
 COUNTER = """FUNCTION_BLOCK CounterSFC
@@ -156,11 +157,93 @@ END_PROGRAM
     assert isinstance(project_.pou("P"), Pou)
 
 
-def test_an_action_written_in_sfc_has_no_textual_form_here_and_is_refused_by_name():
+NESTED = """PROGRAM Main
+  VAR go, next, back : BOOL; a, b : INT; END_VAR
+  INITIAL_STEP M0:
+    Seq(N);
+  END_STEP
+  TRANSITION FROM M0 TO M1
+    := go;
+  END_TRANSITION
+  STEP M1:
+  END_STEP
+  TRANSITION FROM M1 TO M0
+    := back;
+  END_TRANSITION
+  ACTION Seq:
+    INITIAL_STEP I0:
+      IncA(N);
+    END_STEP
+    TRANSITION FROM I0 TO I1
+      := next;
+    END_TRANSITION
+    STEP I1:
+      IncB(N);
+    END_STEP
+    TRANSITION FROM I1 TO I0
+      := FALSE;
+    END_TRANSITION
+  END_ACTION
+  ACTION IncA:
+    a := a + 1;
+  END_ACTION
+  ACTION IncB:
+    b := b + 1;
+  END_ACTION
+END_PROGRAM
+"""
+
+
+def test_an_action_written_in_sfc_reads_from_text_and_runs_like_the_drawn_one():
+    """SFC-02 in textual SFC: IEC's ``ACTION name: function_block_body END_ACTION`` takes a chart as the body
+    (B.1.6); the action Seq of test_sfc_actions written so reads as an SFC action and runs the same scan table as
+    the drawn one (test_an_sfc_action_runs_its_chart_while_active_and_closes_it_in_its_final_run)."""
+    proj, diagnostics = source_to_project(NESTED, "nested")
+    assert [d.format() for d in diagnostics] == []
+    seq = proj.pou("Main").body.action("Seq")
+    assert seq.language == "sfc" and [e.name for e in seq.body.elements if e.type == "step"] == ["I0", "I1"]
+    run_table(
+        proj,
+        """
+        scan go next back || Seq.Q Seq.A I0.X I1.X a b M0.X M1.X
+        0    0  0    0    || 1     1     1    0    1 0 1    0
+        1    0  1    0    || 1     1     0    1    2 0 1    0
+        2    0  0    0    || 1     1     0    1    3 1 1    0
+        3    1  0    0    || 1     1     0    1    3 2 0    1
+        4    0  0    0    || 0     1     1    0    3 3 0    1
+        5    0  0    0    || 0     0     1    0    3 3 0    1
+        6    0  0    1    || 0     0     1    0    3 3 1    0
+        7    0  0    0    || 1     1     1    0    4 3 1    0
+        """,
+    )
+
+
+def test_an_action_written_in_sfc_is_written_as_a_chart_inside_its_action():
     from .test_sfc_actions import chart
 
     result = export_pou_st(chart(), "Main", sfc_text=True)
-    assert result.text == ""
-    assert ("EXPORT-UNSUPPORTED", "the action Seq is written in SFC: textual SFC has ST actions") in [
-        (d.code, d.message) for d in result.diagnostics
-    ]
+    assert [d.format() for d in result.diagnostics] == []
+    assert "    ACTION Seq:\n        INITIAL_STEP I0:\n            IncA(N);\n        END_STEP\n" in result.text
+    again, diagnostics = source_to_project(result.text, "again")
+    assert [d.format() for d in diagnostics] == []
+    assert _nested_semantics(again.pou("Main").body) == _nested_semantics(chart().pou("Main").body)
+    tree = parse_source(result.text).ast
+    assert parse_source(print_source(tree)).ast == tree
+
+
+def _nested_semantics(body: SfcBody) -> tuple:
+    """The POU chart's semantics and each SFC action's chart's (ids differ after a round trip)."""
+    charts = {a.name: semantics(SfcBody(chart=a.body)) for a in body.actions if isinstance(a.body, SfcChart)}
+    plain = body.model_copy(update={"actions": [a for a in body.actions if not isinstance(a.body, SfcChart)]})
+    return semantics(plain), charts
+
+
+@given(sfc_bodies(nested=True))
+@settings(max_examples=30)
+def test_written_textual_sfc_with_an_action_chart_reads_back_as_the_same_charts(body):
+    original = sfc_project(body)
+    result = export_project_st(original, sfc_text=True)
+    assert [d.format() for d in result.diagnostics] == []
+    again, diagnostics = source_to_project(result.text, "again")
+    assert [d.format() for d in diagnostics if d.severity == "error"] == []
+    assert _nested_semantics(again.pou("Seq").body) == _nested_semantics(original.pou("Seq").body)

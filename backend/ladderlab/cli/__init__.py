@@ -18,6 +18,7 @@ from ..model.schema import SCHEMA_MODELS, schema_of
 from ..simulation.build import build_project
 from ..simulation.check import check_project
 from ..simulation.conditions import BadCondition, parse_condition
+from ..simulation.events import parse_events
 from ..simulation.recording import Recording, read_recording
 from ..storage import StorageError, load_project_path
 from ..storage.atomic import write_atomic
@@ -26,7 +27,7 @@ from ..storage.text_files import CLI_HINT, xml_for_parser
 from .doc import add_doc_command
 from .encoding import add_encoding_option, encoding_of
 from .libraries import add_library_option, using_libraries
-from .run import Row, jsonl_line, parse_duration, parse_events, parse_fault, parse_set, run_scans, table_lines
+from .run import Row, jsonl_line, parse_duration, parse_fault, parse_set, run_scans, table_lines
 from .test import add_test_command
 
 if TYPE_CHECKING:  # the server is imported only by the commands that start it
@@ -333,7 +334,7 @@ def _replay(args: argparse.Namespace) -> int:
     """The rows of a recorded run again: the same project revision, the same inputs at the same scans."""
     try:
         recording = read_recording(args.recording)
-        events = parse_events(recording.events_text(), f"{args.recording} inputs")
+        events = recording.scheduled(str(args.recording))
     except ValueError as error:
         print(f"ladderlab replay: {error}", file=sys.stderr)
         return EXIT_USAGE

@@ -15,12 +15,13 @@ import re
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 
-from ..engine.inputs import InputEvent, InputRefused
+from ..engine.inputs import InputEvent
 from ..engine.simulation import Simulation
 from ..iec.literals import decode_duration, decode_string
 from ..ir.types import Elementary
 from ..model.faults import FAULT_MODES
 from ..simulation.conditions import Condition
+from ..simulation.events import Scheduled, scan_inputs
 
 _DURATION = re.compile(r"(?:T|TIME)?#?((?:\d+(?:\.\d+)?(?:d|h|ms|m|s|us|ns)_?)+)", re.IGNORECASE)
 
@@ -44,45 +45,6 @@ def parse_set(text: str) -> SetAction:
     if at and tail.strip().isdigit():
         value, scan = head, int(tail)
     return SetAction(path.strip(), value.strip(), scan)
-
-
-@dataclass(frozen=True)
-class Scheduled:
-    """An input event to submit just before scan number ``scan``."""
-
-    scan: int
-    event: InputEvent
-
-
-def parse_events(text: str, name: str) -> list[Scheduled]:
-    """The events of a JSON-lines file (blank lines skipped); ValueError naming the file and line."""
-    found = []
-    for number, line in enumerate(text.splitlines(), 1):
-        if not line.strip():
-            continue
-        where = f"{name}:{number}"
-        try:
-            data = json.loads(line)
-        except ValueError as error:
-            raise ValueError(f"{where}: not JSON: {error}") from None
-        if not isinstance(data, dict):
-            raise ValueError(f"{where}: an event is a JSON object such as {EVENT_EXAMPLE}")
-        scan = data.get("scan")
-        if not isinstance(scan, int) or isinstance(scan, bool) or scan < 0:
-            raise ValueError(f"{where}: scan must be the number of the scan it applies before (0 for the first)")
-        if data.get("phase", "start") != "start":
-            raise ValueError(
-                f"{where}: this event was applied while scan {scan} was halted at a breakpoint; "
-                "ladderlab run replays events at the start of scans only"
-            )
-        try:
-            found.append(Scheduled(scan, InputEvent.from_json(data)))
-        except (InputRefused, TypeError) as error:
-            raise ValueError(f"{where}: {error}") from None
-    return sorted(found, key=lambda scheduled: scheduled.scan)
-
-
-EVENT_EXAMPLE = '{"scan": 3, "kind": "panel", "path": "Start", "value": true}'
 
 
 def parse_fault(text: str, seed: int) -> Scheduled:
@@ -143,17 +105,10 @@ def run_scans(
     for path in watch:
         sim.location(path)
     writes = [Scheduled(s.scan, InputEvent("write", s.path, _typed_text(sim, s), source="cli")) for s in sets]
-    pending = sorted(writes, key=lambda s: s.scan) + list(events)
-    pending.sort(key=lambda s: s.scan)
-    scan = 0
-    while (scan < cycles) if cycles is not None else (sim.next_scan_time() <= (for_ms or 0.0)):
-        while pending and pending[0].scan <= scan:
-            sim.submit(pending.pop(0).event)
-        sim.cycle(1)
+    for scan in scan_inputs(sim, [*writes, *events], cycles=cycles, for_ms=for_ms):
         yield Row(scan, sim.time_ms, {path: sim.read(path) for path in watch})
         if sim.fault is not None or (until is not None and until.holds(sim)):
             return
-        scan += 1
 
 
 def _typed_text(sim: Simulation, action: SetAction) -> str:

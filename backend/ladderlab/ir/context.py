@@ -231,6 +231,9 @@ class PouContext:
         self.slots.append(slot)
         self._taken.add(slot.name)
 
+    def has_slot(self, name: str) -> bool:
+        return name in self._taken
+
     def reserve(self, slots: list[Slot]) -> None:
         """Keep ``hidden`` from naming a slot like one of ``slots`` (a base's, which SUPER^() shares)."""
         self._taken.update(slot.name for slot in slots)

@@ -25,12 +25,20 @@ def lower_il_body(pou: ModelPou, ctx: PouContext) -> list[Block]:
     info = ctx.info
     if info is None or info.body is None:
         return []
-    for symbol in info.accumulators:  # the hidden current-result variables (one per type and '(' depth)
+    return lower_il(info.body, info.accumulators, info.il_values, ctx)
+
+
+def lower_il(statements: list[ast.Stmt], accumulators: list, il_values: list[IlValue], ctx: PouContext) -> list[Block]:
+    """Checked IL (an IL POU's body, or an IL action or transition of an SFC POU) as blocks: one for the
+    instructions before the first label, then one labelled block per label."""
+    for symbol in accumulators:  # the hidden current-result variables (one per type and '(' depth)
+        if ctx.has_slot(symbol.name.upper()):  # another IL part of the POU made it: the CR is not kept between parts
+            continue
         ir_type = ctx.types.type_of(symbol.type, symbol.type_spec)
         ctx.add_slot(Slot(symbol.name.upper(), "VAR", ir_type, ir_default(ir_type), hidden=True))
     blocks = [Block([], Origin(ctx.name))]
-    values = list(reversed(info.il_values))  # by index, next one last
-    for index, statement in enumerate(info.body):
+    values = list(reversed(il_values))  # by index, next one last
+    for index, statement in enumerate(statements):
         while values and values[-1].index == index:
             blocks[-1].statements += _probe(values.pop(), ctx)
         if isinstance(statement, ast.Label):

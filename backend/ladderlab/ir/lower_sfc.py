@@ -32,12 +32,16 @@ from ..model.sfc import TIMED_QUALIFIERS, SfcAction, SfcBody, SfcChart, SfcNamed
 from ..model.sfc_graph import ChartGraph, chart_graph
 from ..st import ast
 from ..st import types as st_types
+from ..st.il_check import ACCUMULATOR_PREFIX
 from ..st.parser import parse_expression
-from ..st.sfc import action_file, chart_file, transition_file
+from ..st.printer import print_expression
+from ..st.sfc import action_file, chart_file, il_key, transition_file
 from ..st.symbols import PouInfo
 from .context import PouContext
 from .diagram_operands import At, Operands
+from .lower_expr import lower_to
 from .lower_fbd import lower_fbd_body
+from .lower_il import lower_il
 from .lower_ld import lower_ld_body
 from .lower_st import lower_statements
 from .nodes import (
@@ -103,6 +107,14 @@ END_LABEL = "__SFC_END"
 PASS_LABEL = "__SFC_PASS"
 #: The action passes of a scan, in order (see the module docstring).
 EXIT_PASS, ENTRY_PASS, FINAL_PASS, ACTIVE_PASS = 0, 1, 2, 3
+
+
+#: The suffix of the probe of a transition's condition (``t3.COND``), computed every scan.
+CONDITION_PROBE = ".COND"
+
+
+def condition_probe(element: str) -> str:
+    return f"{element}{CONDITION_PROBE}"
 
 
 def lower_sfc_body(pou: ModelPou, ctx: PouContext) -> list[Block]:
@@ -194,6 +206,7 @@ class SfcLowering:
         #: the chart each action is used in (associated, entry or exit): None (the POU's) or an SFC action's name
         self.used_in: dict[str, str | None] = {}
         self.condition_vars: dict[int, Var] = {}  # id of a graph transition -> its condition's flag
+        self.passes_made: dict[str | None, list[tuple[SfcAction, dict[int, list[str]]]]] = {}
 
     # ------------------------------------------------------------ helpers
     def origin(self, element: str | None = None) -> Origin:
@@ -614,8 +627,11 @@ class SfcLowering:
     def action_passes(self, owner: str | None = None) -> list[tuple[SfcAction, dict[int, list[str]]]]:
         """Every action of one chart (``owner``: None for the POU's, else the SFC action's; alphabetical) with the
         passes it runs in: EXIT_PASS and ENTRY_PASS with the steps (upper case) whose leaving or entering runs it,
-        FINAL_PASS and ACTIVE_PASS (no steps) when steps associate it. (The ST export writes the same passes.)"""
-        out = []
+        FINAL_PASS and ACTIVE_PASS (no steps) when steps associate it. (The ST export writes the same passes: made
+        once per chart, so an unused action is reported once.)"""
+        if owner in self.passes_made:
+            return self.passes_made[owner]
+        out = self.passes_made[owner] = []
         for action in sorted(self.body.actions, key=lambda a: a.name.upper()):
             key = action.name.upper()
             if self.used_in.get(key) != owner:
@@ -699,6 +715,11 @@ class SfcLowering:
                         Origin(self.name, body=body),
                     )
                 ]
+            if action.language == "il":
+                il = self.info.il_parts.get(il_key("actions", action.name))
+                if il is None:
+                    return []
+                return self.rebodied(lower_il(il.statements, il.accumulators, il.values, self.ctx), body, skip)
             if isinstance(action.body, (ld.LdBody, fbd.FbdBody)):
                 return self.diagram(action.body, action.language, body, skip)
             if isinstance(action.body, SfcChart):
@@ -733,6 +754,11 @@ class SfcLowering:
     def diagram(self, networks: ld.LdBody | fbd.FbdBody, language: str, body: str, skip: str) -> list[Block]:
         stand_in = self.pou.model_copy(update={"language": language, "body": networks})
         lowered = (lower_ld_body if language == "ld" else lower_fbd_body)(stand_in, self.ctx)
+        return self.rebodied(lowered, body, skip)
+
+    def rebodied(self, lowered: list[Block], body: str, skip: str) -> list[Block]:
+        """The blocks of an LD, FBD or IL action or transition as part of the SFC POU (see ``_rebody``); labels get
+        the ``<body>/`` prefix too."""
         out = []
         for block in lowered:
             block.statements = _rebody(block.statements, body, skip, self.ctx)
@@ -762,6 +788,8 @@ class SfcLowering:
 
     def named_transition(self, transition: SfcNamedTransition, result: Var, body: str) -> list[Block]:
         origin = Origin(self.name, body=body)
+        if transition.language == "il":
+            return self.il_transition(transition, result, body)
         if isinstance(transition.body, str):
             value = self.condition(transition.body, None, "the transition")
             return [Block([Assign(result, value, origin)], origin)] if value is not None else []
@@ -771,6 +799,36 @@ class SfcLowering:
         blocks = [Block([Assign(result, FALSE, origin)], origin)]
         blocks += self.diagram(diagram, transition.language, body, skip)
         blocks.append(Block([], origin, skip))
+        return blocks
+
+    def il_transition(self, transition: SfcNamedTransition, result: Var, body: str) -> list[Block]:
+        """A transition written in IL (as in CODESYS): its value is the accumulator after the last instruction, a
+        BOOL. SFC-03: it assigns nothing (no ST, STN, S, R), calls no FB instance or program (CAL, FB input
+        operators) and does not end early (RET: the accumulator then is no value of the end)."""
+        il = self.info.il_parts.get(il_key("transitions", transition.name))
+        if il is None:
+            return []
+        origin = Origin(self.name, body=body)
+        problems = 0
+        for statement in il.statements:
+            problem = _il_transition_problem(statement, transition.name)
+            if problem is not None:
+                self.ctx.report("SFC-CONDITION", problem, line=statement.span.line, column=statement.span.column)
+                problems += 1
+        end = il.end
+        if end is None or not st_types.same(end.type, st_types.BOOL):
+            held = f"holds {end.type}" if end is not None else "holds no one value"
+            self.ctx.report(
+                "SFC-CONDITION",
+                f"the transition {transition.name} is the accumulator after its last line, a BOOL: there it {held}",
+                line=end.line if end is not None else None,
+            )
+            return []
+        if problems:
+            return []
+        blocks = self.rebodied(lower_il(il.statements, il.accumulators, il.values, self.ctx), body, "")
+        value = lower_to(end.value, self.ctx, BOOL)
+        blocks.append(Block([Assign(result, value, origin)], origin))
         return blocks
 
     def check_transition_diagram(self, transition: SfcNamedTransition, diagram: ld.LdBody | fbd.FbdBody) -> None:
@@ -843,7 +901,7 @@ class SfcLowering:
             origin = self.origin(element.id)
             if value is not None:
                 out.append(Assign(flag, value, origin))
-                out.append(Probe(f"{element.id}.COND", flag, self.origin()))
+                out.append(Probe(condition_probe(element.id), flag, self.origin()))
         return out
 
     def evolution(self, graph: ChartGraph, owner: str | None = None) -> list[Stmt]:
@@ -902,6 +960,31 @@ class SfcLowering:
             for slots in (s for s in self.steps.values() if s.owner is None):  # drawing order: right-most last
                 out.append(If([(slots.x, [Assign(current, Const(slots.step.name, current.type), origin)])], [], origin))
         return out
+
+
+#: IL operators that assign (SFC-03 forbids them in a transition); CAL and FB input operators become FB calls.
+_IL_ASSIGNS = frozenset({"ST", "STN", "S", "R"})
+
+
+def _il_transition_problem(statement: ast.Stmt, name: str) -> str | None:
+    """Why a checked IL statement (st/il_check.py) has no place in a transition, or None."""
+    if isinstance(statement, ast.Return) or (
+        isinstance(statement, ast.If) and any(isinstance(s, ast.Return) for _, b in statement.branches for s in b)
+    ):
+        return f"the transition {name} is the accumulator after its last line: RET has no place in it"
+    if isinstance(statement, ast.If):
+        inner = [s for _, b in statement.branches for s in b]
+        return next((p for p in (_il_transition_problem(s, name) for s in inner) if p), None)
+    if isinstance(statement, ast.CallStmt):
+        callee = getattr(statement.call, "callee", statement.call)
+        return f"a transition cannot call {print_expression(callee)}: call it in an action"
+    if isinstance(statement, ast.Assign) and not _accumulator(statement.target):
+        return f"a transition cannot assign {print_expression(statement.target)}: it only gives its value ({name})"
+    return None
+
+
+def _accumulator(target: ast.Expr) -> bool:
+    return isinstance(target, ast.Name) and target.name.upper().startswith(ACCUMULATOR_PREFIX)
 
 
 def _calls(node: object) -> Iterable[ast.Call]:

@@ -230,6 +230,15 @@ class SeekScan(BaseModel):
     scan: int = Field(ge=0)
 
 
+class HistoryStep(BaseModel):
+    """Body of ``POST /api/simulations/{id}/history/step``: how far one step through the scan shown goes
+    (``statement``: the next network or line, into calls; ``over`` past the calls; ``out`` of the POU)."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    granularity: Literal["statement", "over", "out", "network"] = "statement"
+
+
 class HistoryFound(BaseModel):
     """``GET /api/simulations/{id}/history/find``: the scan where the variable changed (null: none kept)."""
 

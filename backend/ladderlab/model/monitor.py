@@ -335,6 +335,12 @@ class DisplayType(BaseModel):
     names: dict[str, str] | None = Field(default=None, description="An enumeration's value names by value.")
 
 
+class HistoryStepPoint(BaseModel):
+    """Where a step through the scan shown (``POST .../history/step``) stands."""
+
+    at: At | None = Field(default=None, description="The network or line it halted before; null: the scan ended.")
+
+
 class HistoryRange(BaseModel):
     """The scans the scan history can show (numbered as ``values.scan``), and the one shown (null: live)."""
 
@@ -346,6 +352,14 @@ class HistoryRange(BaseModel):
     marked: int = Field(default=0, description="Grows when a scan gets a mark: fetch history/marks again.")
     branch: int = Field(default=1, description="The live branch (a fork, continue from here, starts a new one).")
     viewing_branch: int | None = Field(default=None, description="The branch of the scan shown; null: live.")
+    recording: bool = Field(
+        default=False,
+        description="An opened recording, history only: no scan runs and no input applies until a continue from "
+        "one of its scans (fork).",
+    )
+    stepping: HistoryStepPoint | None = Field(
+        default=None, description="The scan shown is being stepped through; null: it is shown complete."
+    )
 
 
 class Values(BaseModel):

@@ -116,11 +116,11 @@ class SfcChart(BaseModel):
         return data
 
 
-SfcLanguage = Literal["st", "ld", "fbd", "sfc"]
+SfcLanguage = Literal["st", "il", "ld", "fbd", "sfc"]
 
 
 class SfcAction(BaseModel):
-    """A named action (SFC-02): ST statements, LD or FBD networks, or a chart of its own."""
+    """A named action (SFC-02): ST statements, IL instructions (text), LD or FBD networks, or a chart of its own."""
 
     model_config = ConfigDict(extra="forbid")
 
@@ -132,24 +132,25 @@ class SfcAction(BaseModel):
     @model_validator(mode="before")
     @classmethod
     def _body_matches_language(cls, data: Any) -> Any:
-        return _typed_body(data, {"st": str, "ld": LdBody, "fbd": FbdBody, "sfc": SfcChart})
+        return _typed_body(data, {"st": str, "il": str, "ld": LdBody, "fbd": FbdBody, "sfc": SfcChart})
 
 
 class SfcNamedTransition(BaseModel):
-    """A transition condition written on its own (SFC-03): an ST expression, or LD/FBD networks whose coil or output
-    named like the transition gives its value. A chart transition whose condition is this name reads it."""
+    """A transition condition written on its own (SFC-03): an ST expression, IL instructions whose accumulator at the
+    end gives its value (as in CODESYS), or LD/FBD networks whose coil or output named like the transition gives its
+    value. A chart transition whose condition is this name reads it."""
 
     model_config = ConfigDict(extra="forbid")
 
     name: str
-    language: Literal["st", "ld", "fbd"] = "st"
+    language: Literal["st", "il", "ld", "fbd"] = "st"
     body: str | LdBody | FbdBody = "FALSE"
     comment: str | None = None
 
     @model_validator(mode="before")
     @classmethod
     def _body_matches_language(cls, data: Any) -> Any:
-        return _typed_body(data, {"st": str, "ld": LdBody, "fbd": FbdBody})
+        return _typed_body(data, {"st": str, "il": str, "ld": LdBody, "fbd": FbdBody})
 
 
 class SfcBody(BaseModel):
@@ -197,7 +198,7 @@ def _typed_body(data: Any, types: dict[str, Any]) -> Any:
         return data
     if expected is str:
         if not isinstance(body, str):
-            raise ValueError(f"a body in {str(language).upper()} must be a string of ST")
+            raise ValueError(f"a body in {str(language).upper()} must be a string of {str(language).upper()}")
         return {**data, "body": body.rstrip()}
     if isinstance(body, str) and not body.strip():
         return {**data, "body": expected()}
@@ -219,6 +220,17 @@ def walk(elements: list[SfcElement]) -> Iterator[SfcElement]:
 
 def steps(elements: list[SfcElement]) -> Iterator[SfcStep]:
     return (e for e in walk(elements) if isinstance(e, SfcStep))
+
+
+def prefix_ids(chart: SfcChart, prefix: str) -> SfcChart:
+    """``chart`` with ``prefix`` before every element and association id: an action's chart read from a file whose
+    ids restart in every body (PLCopen, textual SFC) keeps ids unique in the POU (probes and breakpoints name
+    elements by id)."""
+    for element in walk(chart.elements):
+        element.id = prefix + element.id
+        for association in element.actions if isinstance(element, SfcStep) else []:
+            association.id = prefix + association.id
+    return chart
 
 
 def _deepest(elements: Any) -> str | None:

@@ -12,22 +12,25 @@ from __future__ import annotations
 import json
 from typing import Annotated, Any
 
-from fastapi import APIRouter, Body, Depends, Request, Response, status
+from fastapi import APIRouter, Body, Depends, Query, Request, Response, status
+from starlette.concurrency import run_in_threadpool
 
 from ..model.api import (
     HistoryDiff,
     HistoryFound,
     HistoryMark,
+    HistoryStep,
     IoPoint,
     ResetSimulation,
     ScanTimes,
     SeekScan,
     SimulationInfo,
 )
-from ..simulation.recording import Recording
+from ..simulation.recording import Recording, parse_recording
 from ..simulation.registry import SimulationEntry, SimulationRegistry
 from ..simulation.remote import BuildFailed
 from ..simulation.runner import CommandError
+from ..storage.workspace import StoredProject, Workspace
 from .context import WorkspaceDep, modified_at, registry_of
 from .errors import ApiError, responses, summarise
 
@@ -52,15 +55,78 @@ _DESCRIBED = responses(404, 409, 422)
 def create_simulation(name: str, workspace: WorkspaceDep, registry: RegistryDep, response: Response) -> SimulationInfo:
     """Build the saved project (monitor variant) into a stopped simulation, in a process of its own."""
     registry.check_room()
-    stored = workspace.load(name)
+    entry = _built(name, workspace.load(name), registry)
+    response.headers["Location"] = f"/api/simulations/{entry.id}"
+    return simulation_info(entry)
+
+
+def _built(name: str, stored: StoredProject, registry: SimulationRegistry) -> SimulationEntry:
+    """A new simulation of the saved project ``stored``; 422 with the diagnostics when it does not compile."""
     try:
-        entry = registry.create(stored.project, stored.revision)
+        return registry.create(stored.project, stored.revision)
     except BuildFailed as failure:
         errors = [d for d in failure.diagnostics if d.severity == "error"]
         reason = summarise(errors) if errors else failure.message
         raise ApiError(422, f"project {name!r} does not compile: {reason}", failure.diagnostics) from None
+
+
+@router.post(
+    "/api/projects/{name}/recordings",
+    status_code=status.HTTP_201_CREATED,
+    response_model=SimulationInfo,
+    responses=responses(404, 409, 413, 422, 429),
+    openapi_extra={
+        "requestBody": {
+            "required": True,
+            "content": {"application/json": {"schema": {"type": "string", "description": "a recording file"}}},
+        }
+    },
+)
+async def open_recording(
+    name: str,
+    request: Request,
+    workspace: WorkspaceDep,
+    registry: RegistryDep,
+    response: Response,
+    file: Annotated[str, Query(description="the file's name, for the messages")] = "the recording",
+) -> SimulationInfo:
+    """Open a recording (the file ``ladderlab run --record`` writes or "Download recording" gives) as a
+    history-only simulation of the saved project: its scans are run at once with their recorded inputs, as
+    ``ladderlab replay`` runs them, so every one can be viewed, compared and continued from. 409 when the project
+    is not at the recording's revision, 422 when the file is not a recording."""
+    data = await request.body()
+    return await run_in_threadpool(_open_recording, name, data, file, workspace, registry, response)
+
+
+def _open_recording(
+    name: str, data: bytes, file: str, workspace: Workspace, registry: SimulationRegistry, response: Response
+) -> SimulationInfo:
+    registry.check_room()
+    stored = workspace.load(name)
+    try:
+        record = parse_recording(data, file)
+    except ValueError as error:
+        raise ApiError(422, str(error)) from None
+    if record.revision != stored.revision:
+        raise ApiError(
+            409,
+            f"{file} was recorded with revision {record.revision} of {record.project}; project {name!r} is now at "
+            f"revision {stored.revision}: open it in the project as it was when it was recorded",
+        )
+    entry = _built(name, stored, registry)
+    timeout = entry.handle.settings.build_timeout_s  # the scans run at once: as long as a history question
+    try:
+        info = _command(entry, "open_recording", timeout=timeout, inputs=record.inputs, scans=record.scans)
+    except ApiError:
+        registry.delete(entry.id)
+        raise
+    except TimeoutError:
+        registry.delete(entry.id)
+        raise ApiError(
+            422, f"{file}: its {record.scans} scans did not run within {timeout:g} s (the server's build_timeout_s)"
+        ) from None
     response.headers["Location"] = f"/api/simulations/{entry.id}"
-    return simulation_info(entry)
+    return info
 
 
 @router.get("/api/simulations", response_model=list[SimulationInfo])
@@ -180,6 +246,24 @@ def seek(sim_id: str, registry: RegistryDep, body: Annotated[SeekScan, Body()]) 
 def live(sim_id: str, registry: RegistryDep) -> SimulationInfo:
     """Show the live scans again after a seek."""
     return _command(registry.get(sim_id), "live")
+
+
+@router.post("/api/simulations/{sim_id}/history/step", response_model=SimulationInfo, responses=_DESCRIBED)
+def history_step(
+    sim_id: str, registry: RegistryDep, body: Annotated[HistoryStep | None, Body()] = None
+) -> SimulationInfo:
+    """Step through the scan shown (after a seek): the first step replays it in the debug variant from the scan
+    before it and halts at its first network or line, each next one at the next; the values and power flow are
+    those of that point (``history.stepping`` says where). The history and the live simulation stay as they are."""
+    granularity = body.granularity if body is not None else "statement"
+    entry = registry.get(sim_id)
+    timeout = entry.handle.settings.build_timeout_s  # the first step compiles the debug variant
+    try:
+        return _command(entry, "history_step", timeout=timeout, granularity=granularity)
+    except TimeoutError:
+        raise ApiError(
+            409, f"the step did not end within {timeout:g} s: the scan shown shows where it stands"
+        ) from None
 
 
 @router.get("/api/simulations/{sim_id}/history/find", response_model=HistoryFound, responses=_DESCRIBED)

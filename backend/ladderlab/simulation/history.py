@@ -31,6 +31,7 @@ from collections import deque
 from collections.abc import Callable
 from dataclasses import dataclass, replace
 
+from ..engine.compile import CompiledProgram
 from ..engine.inputs import AppliedInput, InputEvent
 from ..engine.simulation import Simulation
 from ..engine.state import PathTable, SimState
@@ -268,6 +269,31 @@ class History:
                     replay.cycle(1)
             self._replay_at = scan + 1
         return replay
+
+    def stepper(self, scan: int, debug: CompiledProgram) -> Simulation:
+        """A new simulation of ``debug`` (the program's debug variant) at the start of ``scan``: the state the scan
+        before it left, with ``scan``'s recorded inputs waiting, so ``step`` goes through that scan network by
+        network or line by line and its end is what ``seek(scan)`` shows. Neither the live simulation nor the
+        replay is touched, so the history stays as recorded. HistoryUnavailable outside the history (a seek's
+        words), or saying why (``it ...``) for a scan that cannot be redone (changed at a breakpoint, ended with a
+        fault, at a time the schedule did not choose) or whose previous state is no longer kept."""
+        if not self.first <= scan <= self.last:
+            self.seek(scan)  # raises HistoryUnavailable with the words of a seek
+        if scan < self.checkpoints[0].scan:
+            raise HistoryUnavailable("it is the oldest scan kept: the state before it is no longer in the history")
+        if scan in self._times:
+            raise HistoryUnavailable("it ran at a time of its caller's choosing")
+        if scan in self._barriers:
+            raise HistoryUnavailable(
+                "it ended with a runtime error" if scan in self._errors else "it was changed while halted"
+            )
+        checkpoint = self._checkpoint_at(scan)
+        state = checkpoint.state(self._paths) if checkpoint.scan == scan else self.seek(scan - 1).state()
+        stepper = Simulation(debug)
+        stepper.restore(state)
+        for line in self._inputs.get(scan, ()):
+            stepper.submit(InputEvent.from_json(json.loads(line)))
+        return stepper
 
     def changed(self, path: str, scan: int, direction: int) -> int | None:
         """The nearest scan after (``direction`` 1) or before (-1) ``scan`` that changed ``path``: whose end

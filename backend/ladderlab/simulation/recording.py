@@ -16,6 +16,8 @@ import json
 from dataclasses import dataclass
 from pathlib import Path
 
+from .events import Scheduled, events_text, parse_events
+
 FORMAT = "ladderlab-recording"
 VERSION = 1
 
@@ -42,28 +44,44 @@ class Recording:
 
     def events_text(self) -> str:
         """The inputs as the lines of an ``--events`` file."""
-        return "".join(json.dumps(line) + "\n" for line in self.inputs)
+        return events_text(self.inputs)
+
+    def scheduled(self, name: str) -> list[Scheduled]:
+        """The inputs, each with the scan it applies before (ValueError naming ``name``'s inputs and the line)."""
+        return parse_events(self.events_text(), f"{name} inputs")
 
 
 def read_recording(path: Path) -> Recording:
     """The recording in ``path``; ValueError in the user's words when it is not one this version reads."""
     try:
-        data = json.loads(path.read_text(encoding="utf-8"))
+        data = path.read_bytes()
     except FileNotFoundError:
         raise ValueError(f"{path}: no such file") from None
+    return parse_recording(data, str(path))
+
+
+def parse_recording(data: bytes, name: str) -> Recording:
+    """The recording in ``data`` (a file called ``name`` in the messages): ValueError in the user's words when it
+    is not one this version reads. The CLI reads files, the server uploads (the browser's "Open recording")."""
+    try:
+        document = json.loads(data.decode("utf-8"))
     except (UnicodeDecodeError, ValueError) as error:
-        raise ValueError(f"{path}: not a recording (not JSON text: {error})") from None
-    if not isinstance(data, dict) or data.get("format") != FORMAT:
-        raise ValueError(f"{path}: not a recording of ladderlab run --record")
-    if data.get("version") != VERSION:
+        raise ValueError(f"{name}: not a recording (not JSON text: {error})") from None
+    if not isinstance(document, dict) or document.get("format") != FORMAT:
+        raise ValueError(f"{name}: not a recording of ladderlab run --record or of a simulation's download")
+    if document.get("version") != VERSION:
         raise ValueError(
-            f"{path}: a recording of format version {data.get('version')!r}; this ladderlab reads {VERSION}"
+            f"{name}: a recording of format version {document.get('version')!r}; this ladderlab reads {VERSION}"
         )
     fields = {"project": str, "revision": str, "scans": int, "inputs": list}
-    for name, kind in fields.items():
-        if not isinstance(data.get(name), kind):
-            raise ValueError(f"{path}: the recording's {name} is missing or not a {kind.__name__}")
-    watch = data.get("watch")
+    for field, kind in fields.items():
+        if not isinstance(document.get(field), kind):
+            raise ValueError(f"{name}: the recording's {field} is missing or not a {kind.__name__}")
+    watch = document.get("watch")
     if watch is not None and not (isinstance(watch, list) and all(isinstance(p, str) for p in watch)):
-        raise ValueError(f"{path}: the recording's watch is not a list of paths")
-    return Recording(data["project"], data["revision"], data["scans"], watch, data["inputs"])
+        raise ValueError(f"{name}: the recording's watch is not a list of paths")
+    if document["scans"] < 0:
+        raise ValueError(f"{name}: the recording's scans is negative")
+    recording = Recording(document["project"], document["revision"], document["scans"], watch, document["inputs"])
+    recording.scheduled(name)  # the inputs are checked here, so a bad line is reported before anything runs
+    return recording

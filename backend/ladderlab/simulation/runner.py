@@ -44,7 +44,7 @@ from dataclasses import dataclass
 from typing import Any, ClassVar, Protocol
 
 from ..engine.codegen.faults import Fault
-from ..engine.compile import CompileError
+from ..engine.compile import CompiledProgram, CompileError, compile_program
 from ..engine.debug import Halt
 from ..engine.inputs import AppliedInput, InputEvent, InputRefused
 from ..engine.paths import Location, UnknownPath
@@ -52,8 +52,10 @@ from ..engine.simulation import Simulation
 from ..engine.tasks import Pacer
 from ..ir import nodes as ir
 from ..ir import types as t
+from ..ir.lower_sfc import CONDITION_PROBE
 from ..model.monitor import MAX_SPEED, MIN_SPEED, At, DisplayType, ErrorCode, Log, LogKind, LogLevel, TraceTrigger
 from .conditions import BadCondition, Condition, parse_condition
+from .events import events_text, parse_events, scan_inputs
 from .history import History, HistoryUnavailable
 from .trace import TraceBook, TraceRefused, plan_trace
 
@@ -210,10 +212,13 @@ class SimRunner:
         self._view_history: History | None = None  # the history the scan shown comes from
         self._view: Simulation | None = None
         self._viewing: int | None = None  # the scan shown, numbered as frames number them (scans completed)
+        self._stepping = False  # the scan shown is being stepped through (history_step): the view is its stepper
+        self._debug_program: CompiledProgram | None = None  # what a step through a past scan runs (compiled once)
         self._union_locations: dict[str, Location] = {}
         self._view_reader = self._reader
         self._until: Condition | None = None
         self._until_ms: float | None = None
+        self._recording_only = False  # an opened recording: history only until a fork (open_recording)
 
     # ------------------------------------------------------------------ other threads
 
@@ -251,6 +256,12 @@ class SimRunner:
         try:
             if handler is None:
                 raise CommandError("bad_state", f"unknown command {op!r}")
+            if self._recording_only and op in self._LIVE_OPS:
+                raise CommandError(
+                    "bad_state",
+                    "this simulation shows a recording, history only: go to one of its scans and continue from "
+                    "there (Continue from here) to run it or change its inputs",
+                )
             result = handler(self, **args)
         except CommandError as error:
             failure = error
@@ -408,7 +419,7 @@ class SimRunner:
         self.sink.frame(
             {
                 "seq": self._seq,
-                "scan": sim.scan_count,
+                "scan": self._viewing if self._stepping else sim.scan_count,  # halted within the scan shown
                 "time_ms": sim.time_ms,
                 "history": self.history_range(),
                 "wall": time.time(),  # when these values were read (latency measurements)
@@ -423,10 +434,14 @@ class SimRunner:
         )
 
     def _states(self, instance: str, every: bool, ids: tuple[str, ...]) -> dict[str, object]:
-        """Each watched element's state: its value when it ran in the last scan, else None."""
+        """Each watched element's state: its value when it ran in the last scan, else None. An SFC transition's
+        condition is its last computed value: a scan halted before the transitions has not computed it yet, and the
+        chart shows the value of the scan before, not "?" (docs/sfc.md)."""
         view = self.shown.probes(instance, None if every else ids)
         elements = sorted((view.values.keys() | view.executed).union(ids)) if every else ids
-        return {e: (view.values.get(e) if e in view.executed else None) for e in elements}
+        return {
+            e: (view.values.get(e) if e in view.executed or e.endswith(CONDITION_PROBE) else None) for e in elements
+        }
 
     # ------------------------------------------------------------------ run control
 
@@ -644,7 +659,41 @@ class SimRunner:
             "marked": history.marked,
             "branch": len(self.branches) + 1,
             "viewing_branch": self._branch_number(viewed) if viewed is not None else None,
+            "recording": self._recording_only,
+            "stepping": self._step_point(),
         }
+
+    def _step_point(self) -> dict[str, Any] | None:
+        """Where the step through the scan shown stands (``at`` null: the scan ran to its end); None: no step."""
+        if not self._stepping or self._view is None:
+            return None
+        halted = self._view.halted
+        at = at_halt(halted) if halted is not None else None
+        return {"at": at.model_dump() if at is not None else None}
+
+    def open_recording(self, inputs: list[dict[str, Any]], scans: int) -> dict[str, Any] | None:
+        """Run a recording's ``scans`` at once, each one's recorded ``inputs`` (``AppliedInput.to_json()`` lines)
+        submitted before it as ``ladderlab replay`` does, into the history of this new simulation; then show its
+        last scan. The simulation stays history only (``_LIVE_OPS`` are refused) until a ``fork``."""
+        history = self._recorded()
+        if self.sim.scan_count != 0 or self.journal:
+            raise CommandError("bad_state", "a recording opens in a new simulation, before its first scan")
+        try:
+            scheduled = parse_events(events_text(inputs), "the recording's inputs")
+        except ValueError as error:
+            raise CommandError("bad_value", str(error)) from None
+        try:
+            for _ in scan_inputs(self.sim, scheduled, cycles=scans):
+                self._settle()
+                if self.sim.fault is not None:
+                    break  # as ladderlab replay: the scan that faulted is the recording's last
+        except (UnknownPath, InputRefused, ValueError) as error:
+            raise CommandError("bad_value", f"the recording's inputs do not fit this project: {error}") from None
+        self._recording_only = True
+        self._log("state", "info", f"opened a recording of {self.sim.scan_count} scans: history only")
+        if history.last < history.first:
+            return self.history_range()  # no scan: nothing to show
+        return self.seek(history.last + 1)
 
     def _branch_number(self, history: History) -> int:
         return self.branches.index(history) + 1 if history in self.branches else len(self.branches) + 1
@@ -673,11 +722,46 @@ class SimRunner:
             raise CommandError("bad_value", _shown_numbers(scan, history)) from None
         self._view, self._viewing, self._view_history, self._full = view, scan, history, True
         self._view_reader = view.reader(self._union_locations)
+        self._stepping = False
         return self.history_range()
 
     def live(self) -> None:
         """Show the live scans again."""
         self._view, self._viewing, self._view_history, self._full = None, None, None, True
+        self._stepping = False
+
+    def history_step(self, granularity: str = "statement") -> dict[str, Any] | None:
+        """Step through the scan shown: the first step replays it in the debug variant from the state the scan
+        before it left, its recorded inputs applied at its start (``History.stepper``), and halts at its first
+        network or line (``statement``; ``over`` and ``out`` as live); each further step halts at the next one,
+        and after the last the scan is complete, as the seek showed it. The frames show the values and power flow
+        of the point reached; the history and the live simulation stay as they are. A seek or live leaves."""
+        history, scan = self._view_history, self._viewing
+        if history is None or scan is None:
+            raise CommandError("bad_state", "go to a past scan first: a step goes through the scan shown")
+        if granularity not in ("statement", "over", "out", "network"):
+            raise CommandError(
+                "bad_value", f"a step through a past scan is statement, over, out or network, not {granularity!r}"
+            )
+        view = self._view
+        if not self._stepping:
+            try:
+                view = history.stepper(scan - 1, self._debug_variant())
+            except HistoryUnavailable as error:
+                raise CommandError("bad_state", f"scan {scan} cannot be stepped through: {error}") from None
+        elif view is None or view.halted is None:
+            raise CommandError("bad_state", f"scan {scan} ran to its end: go to a scan to step through it")
+        assert view is not None
+        view.step(granularity)
+        self._view, self._stepping, self._full = view, True, True
+        self._view_reader = view.reader(self._union_locations)
+        return self.history_range()
+
+    def _debug_variant(self) -> CompiledProgram:
+        if self._debug_program is None:
+            program = self.sim.variant_program("debug")
+            self._debug_program = program or compile_program(self.sim.compiled.program, "debug")
+        return self._debug_program
 
     #: Earlier branches kept beside the live one; a fork beyond them drops the oldest.
     MAX_BRANCHES = 3
@@ -688,6 +772,8 @@ class SimRunner:
         history, view = self._recorded(), self._view
         if view is None or self._viewing is None:
             raise CommandError("bad_state", "go to a past scan first: continue from here starts from the scan shown")
+        if view.halted is not None:
+            raise CommandError("bad_state", "the scan shown is halted in a step through it: step to its end first")
         if self.sim.halted is not None:
             raise CommandError(
                 "bad_state", "the live scan is halted: continue or reset it before continuing from another"
@@ -705,6 +791,7 @@ class SimRunner:
             self.branches.pop(0)  # the oldest branch goes: all branches share the one budget
         self.history = History(self.sim, budget_bytes=budget - sum(b.size for b in self.branches))
         self._seen_scans, self._seen_faults, self._faulted = self.sim.scan_count, 0, False
+        self._recording_only = False
         self.live()
         self._log(
             "state", "info", f"continued from scan {scan} of branch {origin}: branch {len(self.branches) + 1} is live"
@@ -757,7 +844,7 @@ class SimRunner:
 
     def _back_to_view(self) -> None:
         """A search moved the replay: back to the scan shown."""
-        if self._viewing is not None and self._view_history is not None:
+        if self._viewing is not None and self._view_history is not None and not self._stepping:
             self._view = self._view_history.seek(self._viewing - 1)
 
     def set_speed(self, scale: float) -> None:
@@ -939,7 +1026,15 @@ class SimRunner:
         "history_diff": history_diff,
         "history_marks": history_marks,
         "fork": fork,
+        "open_recording": open_recording,
+        "history_step": history_step,
     }
+
+    #: What runs scans or applies inputs: refused while an opened recording is shown (history only).
+    _LIVE_OPS: ClassVar[frozenset[str]] = frozenset(
+        {"run", "reset", "single_cycle", "continue", "step", "write", "force", "unforce", "unforce_all", "panel"}
+        | {"inject", "inject_clear", "run_until"}
+    )
 
 
 def _shown_numbers(scan: int, history: History) -> str:

@@ -497,8 +497,10 @@ class SfcTransition:
 
 @dataclass(slots=True)
 class SfcAction:
+    """``ACTION name: statements END_ACTION``, or a chart of its own (an action written in SFC)."""
+
     name: str
-    body: list[Stmt]
+    body: list[Stmt] | Sfc
     span: Span = _span()
 
 

@@ -138,10 +138,7 @@ class ProjectChecker:
                 self._check_body(info, bodies[pou.name])
             if info is not None and info.name == pou.name and pou.name in actions:
                 check_actions(
-                    lambda file, info=info: BodyChecker(self.result, info, self._reporter(file, info.name)),
-                    pou,
-                    info,
-                    actions[pou.name],
+                    self.result, lambda file, info=info: self._reporter(file, info.name), pou, info, actions[pou.name]
                 )
         self._check_recursion()
         self.result.configuration = check_configuration(self.result, self.project, self.resolve, self._reporter_for)

@@ -78,6 +78,9 @@ class IlResult:
     result_assigned: bool = False
     values: list[IlValue] = field(default_factory=list)
     step_lines: frozenset[int] = frozenset()
+    #: the accumulator after the last instruction, when the end is reached with one typed value (an IL transition's
+    #: value, as in CODESYS); None: no value (an empty body, a jump or RET last, a type error, types that differ)
+    end: IlValue | None = None
 
 
 class _AccumulatorChecker(BodyChecker):
@@ -137,7 +140,15 @@ class _Translator:
             else:
                 self._check_back_edge(label, state, instruction)
         symbols = list(self.accumulators.values())
-        return IlResult(self.out, symbols, self.checker.result_assigned, self.values, frozenset(self.step_lines))
+        result = IlResult(self.out, symbols, self.checker.result_assigned, self.values, frozenset(self.step_lines))
+        cr = self.cr
+        if self.reachable and isinstance(cr, Cr) and cr.type is not ERROR and body.instructions:
+            span = body.instructions[-1].span
+            value = self._value(cr, span)
+            ty = self.silent.expr(value)  # typed like every statement the lowering reads
+            if ty is not ERROR:
+                result.end = IlValue(span.line, len(self.out), value, t.concrete(ty))
+        return result
 
     def _record(self, instruction: IlInstruction, start: int) -> None:
         """The accumulator after ``instruction`` for online mode, and whether a single step stops at its line.

@@ -294,8 +294,35 @@ def blank_il_bodies(text: str) -> tuple[str, set[str]]:
             names.add(unit.pou.upper())
             pieces += [text[copied:body_start], re.sub(r"[^\n]", " ", text[body_start:body_end])]
             copied = body_end
+            continue
+        for action_start, action_end in _il_actions(text[body_start:body_end]):  # textual SFC (docs/sfc.md)
+            start_at, end_at = body_start + action_start, body_start + action_end
+            pieces += [text[copied:start_at], re.sub(r"[^\n]", " ", text[start_at:end_at])]
+            copied = end_at
     pieces.append(text[copied:])
     return "".join(pieces), names
+
+
+_ACTION_BOUNDS = re.compile(
+    r"'(?:[^'$\n]|\$.)*'|\"(?:[^\"$\n]|\$.)*\"|\(\*[\s\S]*?\*\)|//[^\n]*"
+    r"|\b(ACTION)\s+[A-Za-z_]\w*\s*:|\b(END_ACTION)\b",
+    re.IGNORECASE,
+)
+
+
+def _il_actions(body: str) -> list[tuple[int, int]]:
+    """The offsets of the bodies of the ``ACTION name: ... END_ACTION`` in a textual SFC body that are IL (an SFC
+    action written in IL, SFC-02): ``st/sfc_text.py`` reads them from the original text."""
+    found: list[tuple[int, int]] = []
+    opened: list[int] = []
+    for match in _ACTION_BOUNDS.finditer(body):
+        if match.group(1):
+            opened.append(match.end())
+        elif match.group(2) and opened:
+            start = opened.pop()
+            if looks_like_il(body[start : match.start()]):
+                found.append((start, match.start()))
+    return found
 
 
 def _body_bounds(unit: str) -> tuple[int, int] | None:

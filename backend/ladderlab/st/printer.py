@@ -298,7 +298,12 @@ def print_sfc(sfc: ast.Sfc, level: int = 0) -> str:
                 f"{pad}{INDENT}:= {_expr(item.condition, 0)};\n{pad}END_TRANSITION\n"
             )
         else:
-            out.append(f"{pad}ACTION {item.name}:\n{print_statements(item.body, level + 1)}{pad}END_ACTION\n")
+            body = (
+                print_sfc(item.body, level + 1)
+                if isinstance(item.body, ast.Sfc)
+                else print_statements(item.body, level + 1)
+            )
+            out.append(f"{pad}ACTION {item.name}:\n{body}{pad}END_ACTION\n")
     return "".join(out)
 
 

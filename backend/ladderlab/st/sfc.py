@@ -5,8 +5,9 @@ SFC-06), per action (an ``ACTION_CONTROL``: ``Action.Q`` the action flag, ``Acti
 action control block) and per named transition (a BOOL, written by the transition's own body and read by
 the chart). They are declared after the user's variables, so the bodies, the chart's expressions and other
 POUs (``boolvar := sfc1.step1.X;``) see them; they are read-only for programs (the chart sets them).
-ST actions are checked like ST bodies; where a diagnostic is reported: ``<POU>/chart`` (with the element id
-of the step), ``<POU>/actions/<name>`` and ``<POU>/transitions/<name>`` (line and column in that text).
+ST and IL actions are checked like ST and IL bodies (an IL named transition like an IL body); where a diagnostic is
+reported: ``<POU>/chart`` (with the element id of the step), ``<POU>/actions/<name>`` and
+``<POU>/transitions/<name>`` (line and column in that text).
 """
 
 from __future__ import annotations
@@ -18,8 +19,11 @@ from ..model.project import Pou
 from ..model.sfc import SfcBody, steps
 from . import ast
 from . import types as t
+from .body import BodyChecker
+from .il_check import check_il_body
+from .il_parser import IlParseResult, parse_il
 from .parser import ParseResult, parse_statements
-from .symbols import PouInfo, Symbol
+from .symbols import CheckResult, PouInfo, Symbol
 
 #: What an implicit symbol stands for (``Symbol.implicit``).
 STEP, ACTION, TRANSITION = "step", "action", "transition"
@@ -37,15 +41,29 @@ def transition_file(pou: str, transition: str) -> str:
     return f"{pou}/transitions/{transition}"
 
 
-def parse_actions(pou: Pou) -> dict[str, ParseResult]:
-    """The ST actions of an SFC POU, parsed (by upper-case name); the parse diagnostics are in the results."""
+def il_key(part: str, name: str) -> str:
+    """The key of an IL action (``part`` "actions") or IL named transition ("transitions") in ``PouInfo.il_parts``:
+    its ``Origin.body``."""
+    return f"{part}/{name}"
+
+
+def parse_actions(pou: Pou) -> dict[str, ParseResult | IlParseResult]:
+    """The ST and IL actions of an SFC POU (by upper-case name) and its IL named transitions (by their
+    ``il_key``), parsed; the parse diagnostics are in the results."""
     body = pou.body
     assert isinstance(body, SfcBody)
-    return {
-        action.name.upper(): parse_statements(action.body, file=action_file(pou.name, action.name), pou=pou.name)
-        for action in body.actions
-        if action.language == "st" and isinstance(action.body, str)
-    }
+    out: dict[str, ParseResult | IlParseResult] = {}
+    for action in body.actions:
+        file = action_file(pou.name, action.name)
+        if action.language == "st" and isinstance(action.body, str):
+            out[action.name.upper()] = parse_statements(action.body, file=file, pou=pou.name)
+        elif action.language == "il" and isinstance(action.body, str):
+            out[action.name.upper()] = parse_il(action.body, file=file, pou=pou.name)
+    for transition in body.transitions:
+        if transition.language == "il" and isinstance(transition.body, str):
+            file = transition_file(pou.name, transition.name)
+            out[il_key("transitions", transition.name)] = parse_il(transition.body, file=file, pou=pou.name)
+    return out
 
 
 def declare_implicit(pou: Pou, info: PouInfo, diagnostics: list[Diagnostic]) -> None:
@@ -117,15 +135,33 @@ def _declare(
     )
 
 
-def check_actions(checker_factory, pou: Pou, info: PouInfo, parsed: dict[str, ParseResult]) -> None:
-    """Check the ST actions of ``pou`` (``checker_factory(file)`` makes a body checker reporting into ``file``);
-    the checked statements go to ``info.actions``."""
-    for name, result in parsed.items():
-        if result.ast is None:
-            info.actions[name] = None
-            continue
-        assert isinstance(pou.body, SfcBody)
-        action = next(a for a in pou.body.actions if a.name.upper() == name)
-        checker = checker_factory(action_file(pou.name, action.name))
-        checker.statements(result.ast)
-        info.actions[name] = result.ast
+def check_actions(
+    checked: CheckResult, reporter, pou: Pou, info: PouInfo, parsed: dict[str, ParseResult | IlParseResult]
+) -> None:
+    """Check the ST and IL actions and IL named transitions of ``pou`` (``reporter(file)`` reports into ``file``);
+    the checked statements of actions go to ``info.actions``, an IL part's checked form to ``info.il_parts``."""
+    assert isinstance(pou.body, SfcBody)
+    for action in pou.body.actions:
+        result = parsed.get(action.name.upper())
+        if result is not None:
+            info.actions[action.name.upper()] = _check(checked, reporter, info, result, "actions", action.name)
+    for transition in pou.body.transitions:
+        result = parsed.get(il_key("transitions", transition.name))
+        if result is not None:
+            _check(checked, reporter, info, result, "transitions", transition.name)
+
+
+def _check(
+    checked: CheckResult, reporter, info: PouInfo, result: ParseResult | IlParseResult, part: str, name: str
+) -> list[ast.Stmt] | None:
+    report = reporter((action_file if part == "actions" else transition_file)(info.name, name))
+    if isinstance(result, IlParseResult):
+        if result.body is None:
+            return None
+        il = check_il_body(checked, info, result.body, report)
+        info.il_parts[il_key(part, name)] = il
+        return il.statements
+    if result.ast is None:
+        return None
+    BodyChecker(checked, info, report).statements(result.ast)
+    return result.ast

@@ -3,17 +3,31 @@
 Reading: the steps (``INITIAL_STEP``/``STEP`` with their ``action(qualifier[, time])`` associations), the
 transitions (``TRANSITION [name] [(PRIORITY := n)] FROM a TO (b, c) := condition; END_TRANSITION``, in the order
 written: the earlier of two transitions leaving one step comes first, as the left one of a drawn chart) and the
-``ACTION``s (ST) make a graph that ``model.sfc_graph.graph_chart`` draws as a chart; texts keep their source.
+``ACTION``s (ST, or a chart of their own: IEC's ``ACTION name: function_block_body END_ACTION`` allows an SFC body)
+make a graph that ``model.sfc_graph.graph_chart`` draws as a chart; texts keep their source.
 Writing: the chart's graph as the same constructs, ST actions as typed (what IEC text cannot say - entry and exit
 actions, time limits, actions in LD or FBD - is refused or named, see ``sfc_to_text``).
 """
 
 from __future__ import annotations
 
+import textwrap
+
 from ..model.diagnostics import Diagnostic
-from ..model.sfc import QUALIFIERS, TIMED_QUALIFIERS, SfcAction, SfcAssociation, SfcBody, SfcStep, SfcTransition
+from ..model.sfc import (
+    QUALIFIERS,
+    TIMED_QUALIFIERS,
+    SfcAction,
+    SfcAssociation,
+    SfcBody,
+    SfcChart,
+    SfcStep,
+    SfcTransition,
+    prefix_ids,
+)
 from ..model.sfc_graph import ImportedStep, ImportedTransition, UnstructuredChart, chart_graph, graph_chart
 from . import ast
+from .il_parser import looks_like_il
 
 
 def sfc_from_text(pou: ast.Pou, between, file: str | None = None) -> tuple[SfcBody, list[Diagnostic]]:
@@ -39,28 +53,54 @@ def sfc_from_text(pou: ast.Pou, between, file: str | None = None) -> tuple[SfcBo
         span = node.span
         return between((span.line, span.column), (span.end_line, span.end_column))
 
-    steps, transitions, actions = [], [], []
-    for number, item in enumerate(pou.sfc.items, 1):
+    actions: list[SfcAction] = []
+    chart = _chart(pou.sfc, "", actions, report, text, between)
+    if chart is None:
+        return SfcBody(actions=actions), diagnostics
+    return SfcBody(chart=chart, actions=actions), diagnostics
+
+
+def _chart(sfc: ast.Sfc, owner: str, actions: list[SfcAction], report, text, between) -> SfcChart | None:
+    """The chart of ``sfc`` (``owner``: the action it is the body of, or ""); its actions, and those of the charts
+    inside them, are added to ``actions`` (the POU's, one list for all charts)."""
+    steps, transitions = [], []
+    for number, item in enumerate(sfc.items, 1):
         if isinstance(item, ast.SfcStep):
             associations = [a for a in (_association(a, number, report, text) for a in item.associations) if a]
-            steps.append(ImportedStep(SfcStep(id=f"s{number}", name=item.name, actions=associations), item.initial))
+            step = SfcStep(id=f"s{number}", name=item.name, actions=associations)
+            steps.append(ImportedStep(step, item.initial))
         elif isinstance(item, ast.SfcTransition):
             condition = SfcTransition(id=f"t{number}", condition=text(item.condition), priority=item.priority)
             transitions.append(ImportedTransition(condition, list(item.sources), list(item.targets)))
+        elif isinstance(item.body, ast.Sfc):  # an action written in SFC (docs/sfc.md)
+            inner = _chart(item.body, item.name, actions, report, text, between)
+            body = prefix_ids(inner, f"{item.name}_") if inner is not None else SfcChart()
+            actions.append(SfcAction(name=item.name, language="sfc", body=body))
+        elif not item.body and looks_like_il(written := _action_text(item, between)):  # blanked for the ST parser
+            actions.append(SfcAction(name=item.name, language="il", body=written))
         else:
             body = ""
             if item.body:  # to END_ACTION: a statement's span ends before its ';'
                 first, end = item.body[0].span, item.span
                 body = between((first.line, first.column), (end.end_line, end.end_column - len("END_ACTION"))).rstrip()
             actions.append(SfcAction(name=item.name, language="st", body=body))
+    what = f"the chart of action {owner}" if owner else "the chart"
     try:
         chart, unreachable = graph_chart(steps, transitions)
     except UnstructuredChart as error:
-        report(f"the chart of {pou.name} cannot be drawn: {error}", pou.sfc)
-        return SfcBody(actions=actions), diagnostics
+        report(f"{what} cannot be drawn: {error}", sfc)
+        return None
     for name in unreachable:
-        report(f"step {name} is reached from no initial step: it was left out", pou.sfc, "warning")
-    return SfcBody(chart=chart, actions=actions), diagnostics
+        report(f"step {name} is reached from no initial step: it was left out", sfc, "warning")
+    return chart
+
+
+def _action_text(item: ast.SfcAction, between) -> str:
+    """What an ``ACTION name: ... END_ACTION`` holds in the original text, dedented (an IL action's instructions)."""
+    span = item.span
+    text = between((span.line, span.column), (span.end_line, span.end_column - len("END_ACTION")))
+    inner = text.split(":", 1)[1] if ":" in text else ""
+    return textwrap.dedent(inner.strip("\n").rstrip()).strip("\n")
 
 
 def _association(item: ast.SfcAssociation, number: int, report, text) -> SfcAssociation | None:
@@ -76,35 +116,25 @@ def _association(item: ast.SfcAssociation, number: int, report, text) -> SfcAsso
 
 
 def sfc_to_text(name: str, body: SfcBody, indent: str = "    ") -> tuple[str, list[Diagnostic]]:
-    """The textual SFC of a chart (steps, transitions, ST actions), and why it cannot be written if it cannot."""
-    graph = chart_graph(body.chart)
+    """The textual SFC of a chart (steps, transitions, actions: ST, or a chart of their own inside ``ACTION``), and
+    why it cannot be written if it cannot."""
     problems: list[Diagnostic] = []
 
     def refuse(message: str) -> None:
         problems.append(Diagnostic(code="EXPORT-UNSUPPORTED", pou=name, message=message))
 
-    lines: list[str] = []
-    for key, node in graph.steps.items():
-        step = node.step
-        if step.entry or step.exit or step.min_time or step.max_time:
-            refuse(f"step {step.name} has entry or exit actions or time limits, which textual SFC cannot say")
-        lines.append(f"{indent}{'INITIAL_STEP' if node.initial else 'STEP'} {step.name}:")
-        for association in step.actions:
-            args = [association.qualifier] + ([association.time.strip()] if association.time else [])
-            lines.append(f"{indent * 2}{association.action}({', '.join(args)});")
-        lines.append(f"{indent}END_STEP")
-        for transition in (t for t in graph.evaluation_order() if t.sources and t.sources[0] == key):
-            element = transition.transition
-            priority = f" (PRIORITY := {element.priority})" if element.priority is not None else ""
-            steps = [
-                _list(graph.steps[s].step.name for s in names) for names in (transition.sources, transition.targets)
-            ]
-            lines.append(f"{indent}TRANSITION{priority} FROM {steps[0]} TO {steps[1]}")
-            lines.append(f"{indent * 2}:= {element.condition.strip()};")
-            lines.append(f"{indent}END_TRANSITION")
+    lines = _chart_lines(body.chart, indent, 1, refuse)
     for action in body.actions:
+        if isinstance(action.body, SfcChart):
+            lines.append(f"{indent}ACTION {action.name}:")
+            lines += _chart_lines(action.body, indent, 2, refuse)
+            lines.append(f"{indent}END_ACTION")
+            continue
         if not isinstance(action.body, str):
-            refuse(f"the action {action.name} is written in {action.language.upper()}: textual SFC has ST actions")
+            refuse(
+                f"the action {action.name} is written in {action.language.upper()}: textual SFC has ST, IL and SFC "
+                "actions"
+            )
             continue
         lines.append(f"{indent}ACTION {action.name}:")
         lines += [f"{indent * 2}{line}".rstrip() for line in action.body.splitlines()]
@@ -112,6 +142,32 @@ def sfc_to_text(name: str, body: SfcBody, indent: str = "    ") -> tuple[str, li
     if body.transitions:
         refuse("named transitions have no textual SFC form here: write their condition in the chart")
     return "\n".join(lines), problems
+
+
+def _chart_lines(chart: SfcChart, indent: str, level: int, refuse) -> list[str]:
+    """The steps and transitions of one chart (the POU's, or an action's inside its ``ACTION``) at ``level``."""
+    graph = chart_graph(chart)
+    pad = indent * level
+    lines: list[str] = []
+    for key, node in graph.steps.items():
+        step = node.step
+        if step.entry or step.exit or step.min_time or step.max_time:
+            refuse(f"step {step.name} has entry or exit actions or time limits, which textual SFC cannot say")
+        lines.append(f"{pad}{'INITIAL_STEP' if node.initial else 'STEP'} {step.name}:")
+        for association in step.actions:
+            args = [association.qualifier] + ([association.time.strip()] if association.time else [])
+            lines.append(f"{pad}{indent}{association.action}({', '.join(args)});")
+        lines.append(f"{pad}END_STEP")
+        for transition in (t for t in graph.evaluation_order() if t.sources and t.sources[0] == key):
+            element = transition.transition
+            priority = f" (PRIORITY := {element.priority})" if element.priority is not None else ""
+            steps = [
+                _list(graph.steps[s].step.name for s in names) for names in (transition.sources, transition.targets)
+            ]
+            lines.append(f"{pad}TRANSITION{priority} FROM {steps[0]} TO {steps[1]}")
+            lines.append(f"{pad}{indent}:= {element.condition.strip()};")
+            lines.append(f"{pad}END_TRANSITION")
+    return lines
 
 
 def _list(names) -> str:

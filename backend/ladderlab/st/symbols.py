@@ -64,6 +64,7 @@ class PouInfo:
     accumulators: list[Symbol] = field(default_factory=list)  # IL POUs: the hidden current-result variables
     il_values: list = field(default_factory=list)  # IL POUs: the accumulator after each line (il_check.IlValue)
     il_step_lines: frozenset[int] = frozenset()  # IL POUs: the lines a single step stops at (ON-04)
+    il_parts: dict = field(default_factory=dict)  # SFC POUs: IL actions and transitions, checked (st.sfc.il_key)
     methods: dict[str, PouInfo] = field(default_factory=dict)  # a function block's METHODs by upper-case name
     method: MethodInfo | None = None  # set on a METHOD: its FB, name as written and modifiers
     base: PouInfo | None = None  # the function block this one EXTENDS (st/inheritance.py)

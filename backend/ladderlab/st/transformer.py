@@ -243,7 +243,9 @@ class AstBuilder(Transformer):
         return [str(x) for x in c]
 
     def sfc_action(self, c):
-        return ast.SfcAction(str(c[1]), [x for x in c[2:-1] if x is not None], span_of(c))
+        rest = [x for x in c[2:-1] if x is not None]
+        body = rest[0] if len(rest) == 1 and isinstance(rest[0], ast.Sfc) else rest
+        return ast.SfcAction(str(c[1]), body, span_of(c))
 
     def type_block(self, c):
         return ast.TypeBlock(c[1:-1], span_of(c))

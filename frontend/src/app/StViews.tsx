@@ -4,6 +4,7 @@ import { useMemo, useState } from "react";
 import { DeclareDialog } from "../declarations/DeclareDialog";
 import type { NewVariable } from "../store/newVariable";
 import type { Pou } from "../generated/api";
+import { haltedAt } from "../online/monitor";
 import { useOnline } from "../online/store";
 import { panelsStore, usePanels } from "../store/panels";
 import { IL_OPERATOR_COMPLETIONS } from "../st/ilLanguage";
@@ -49,7 +50,7 @@ export function StPouView({ pou }: { pou: Pou }) {
     () => allBreakpoints.flatMap((b) => ("line" in b && b.pou.toUpperCase() === upper ? [b.line] : [])),
     [allBreakpoints, upper],
   );
-  const at = useOnline((s) => (s.monitor.state === "halted" ? s.monitor.at : null));
+  const at = useOnline((s) => haltedAt(s.monitor));
   const covered = useTests((s) => coverageOf(s.coverage, pou.name));
   const debug = {
     breakpoints: lines,

@@ -43,6 +43,7 @@ import { ToolButton } from "../ui/ToolButton";
 import { ImportPlcopen } from "../interchange/ImportPlcopen";
 import { appStore } from "../store/workspace";
 import { DebugBar } from "../debug/DebugBar";
+import { describeHalt } from "../debug/breakpoints";
 import { useLdDebugging } from "../debug/ldDebugging";
 import { revealPlace } from "../debug/reveal";
 import { debugStore } from "../debug/store";
@@ -781,7 +782,16 @@ export function WorkspaceView() {
         </SidePanel>
       )}
       <div className="editor-area">
-        <HistoryBanner />
+        <HistoryBanner
+          describe={(at) =>
+            describeHalt(
+              at,
+              networksOf(at.pou, at.body),
+              at.element && !at.body ? elementText(at.pou, at.element) : null,
+            )
+          }
+          reveal={revealPlace}
+        />
         <ViewBoundary name="The debugging bar">
           <DebugBar networksOf={networksOf} elementText={elementText} reveal={revealPlace} />
         </ViewBoundary>

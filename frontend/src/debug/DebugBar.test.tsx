@@ -28,7 +28,13 @@ describe("DebugBar (issue 9: stepping a halted scan)", () => {
     expect(screen.queryByRole("region", { name: "Debugging" })).toBeNull();
     halt({ pou: "MAIN", instance: "MAIN", network: "n2" });
     expect(screen.getByRole("status").textContent).toBe("Halted at MAIN, network 2");
-    expect(reveal).toHaveBeenLastCalledWith({ pou: "MAIN", network: "n2", element: undefined, line: undefined });
+    expect(reveal).toHaveBeenLastCalledWith({
+      pou: "MAIN",
+      network: "n2",
+      element: undefined,
+      line: undefined,
+      body: null,
+    });
     for (const name of ["Step over", "Step into", "Step out", "Step network", "Step cycle", "Continue"])
       fireEvent.click(screen.getByRole("button", { name }));
     expect(send.mock.calls.map(([m]) => m)).toEqual([
@@ -52,6 +58,12 @@ describe("DebugBar (issue 9: stepping a halted scan)", () => {
     render(<DebugBar networksOf={networksOf} reveal={reveal} />);
     halt({ pou: "Calc", instance: "MAIN.C1", line: 4 });
     expect(screen.getByRole("status").textContent).toBe("Halted at Calc (MAIN.C1), line 4");
-    expect(reveal).toHaveBeenLastCalledWith({ pou: "Calc", network: undefined, element: undefined, line: 4 });
+    expect(reveal).toHaveBeenLastCalledWith({
+      pou: "Calc",
+      network: undefined,
+      element: undefined,
+      line: 4,
+      body: null,
+    });
   });
 });

@@ -27,7 +27,14 @@ export function DebugBar({ networksOf, elementText, reveal }: DebugBarProps) {
 
   // A new halt shows its location in the editor.
   useEffect(() => {
-    if (halted) reveal({ pou: halted.pou, network: halted.network, element: halted.element, line: halted.line });
+    if (halted)
+      reveal({
+        pou: halted.pou,
+        network: halted.network,
+        element: halted.element,
+        line: halted.line,
+        body: halted.body ?? null,
+      });
   }, [halted, reveal]);
 
   if (!halted) return null;

@@ -5,6 +5,7 @@ import type { LdDebugging } from "../ld/editor/LdEditor";
 import { locate, type LdBody } from "../ld/model";
 import type { DebugMarks } from "../ld/view/types";
 import type { At } from "../online/protocol";
+import { haltedAt } from "../online/monitor";
 import { useOnline } from "../online/store";
 import type { Breakpoint } from "./breakpoints";
 import { debugStore, isEnabled, useDebug } from "./store";
@@ -38,7 +39,7 @@ export function ldDebugMarks(
 export function useLdDebugging(pou: string, body: LdBody): LdDebugging {
   const breakpoints = useDebug((s) => s.breakpoints);
   const disabled = useDebug((s) => s.disabled);
-  const halted = useOnline((s) => (s.monitor.state === "halted" ? s.monitor.at : null));
+  const halted = useOnline((s) => haltedAt(s.monitor));
   return useMemo(
     () => ({
       marks: ldDebugMarks(pou, body, breakpoints, disabled, halted),

@@ -8,6 +8,8 @@ export interface Place {
   network?: string | null;
   element?: string | null;
   line?: number | null;
+  /** The SFC action or named transition it is in ("actions/Fill"). */
+  body?: string | null;
 }
 
 export function revealPlace(target: Place): void {

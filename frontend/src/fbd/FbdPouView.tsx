@@ -4,6 +4,7 @@ import { useCallback, useMemo, type ReactNode } from "react";
 import type { FbdBody, Pou } from "../generated/api";
 import type { History } from "../store/history";
 import { debugStore, useDebug } from "../debug/store";
+import { haltedAt } from "../online/monitor";
 import { useOnline } from "../online/store";
 import { useWorkspace } from "../store/project";
 import { useDiagramPou } from "../ld/useDiagramPou";
@@ -31,7 +32,7 @@ export function FbdPouView({
   const live = useFbdOnline(pou, body, lookup, symbolsLoaded ? symbols : null);
 
   const breakpoints = useDebug((s) => s.breakpoints);
-  const at = useOnline((s) => (s.monitor.state === "halted" ? s.monitor.at : null));
+  const at = useOnline((s) => haltedAt(s.monitor));
   const upper = name.toUpperCase();
   const covered = useTests((s) => coverageOf(s.coverage, name));
   const coverage = useMemo(() => coverageMarks(covered), [covered]);

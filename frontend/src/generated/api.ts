@@ -339,6 +339,29 @@ export interface paths {
     patch?: never;
     trace?: never;
   };
+  "/api/projects/{name}/recordings": {
+    parameters: {
+      query?: never;
+      header?: never;
+      path?: never;
+      cookie?: never;
+    };
+    get?: never;
+    put?: never;
+    /**
+     * Open Recording
+     * @description Open a recording (the file ``ladderlab run --record`` writes or "Download recording" gives) as a
+     *     history-only simulation of the saved project: its scans are run at once with their recorded inputs, as
+     *     ``ladderlab replay`` runs them, so every one can be viewed, compared and continued from. 409 when the project
+     *     is not at the recording's revision, 422 when the file is not a recording.
+     */
+    post: operations["open_recording_api_projects__name__recordings_post"];
+    delete?: never;
+    options?: never;
+    head?: never;
+    patch?: never;
+    trace?: never;
+  };
   "/api/projects/{name}/rename": {
     parameters: {
       query?: never;
@@ -599,6 +622,28 @@ export interface paths {
     patch?: never;
     trace?: never;
   };
+  "/api/simulations/{sim_id}/history/step": {
+    parameters: {
+      query?: never;
+      header?: never;
+      path?: never;
+      cookie?: never;
+    };
+    get?: never;
+    put?: never;
+    /**
+     * History Step
+     * @description Step through the scan shown (after a seek): the first step replays it in the debug variant from the scan
+     *     before it and halts at its first network or line, each next one at the next; the values and power flow are
+     *     those of that point (``history.stepping`` says where). The history and the live simulation stay as they are.
+     */
+    post: operations["history_step_api_simulations__sim_id__history_step_post"];
+    delete?: never;
+    options?: never;
+    head?: never;
+    patch?: never;
+    trace?: never;
+  };
   "/api/simulations/{sim_id}/inputs": {
     parameters: {
       query?: never;
@@ -848,6 +893,32 @@ export interface components {
        * @default
        */
       declarations?: string;
+    };
+    /**
+     * At
+     * @description Where the scan halted or a fault happened.
+     */
+    At: {
+      /**
+       * Body
+       * @description In an SFC POU: actions/<name> or transitions/<name>.
+       */
+      body?: string | null;
+      /** Column */
+      column?: number | null;
+      /** Element */
+      element?: string | null;
+      /**
+       * Instance
+       * @description POU instance path; null inside a FUNCTION.
+       */
+      instance?: string | null;
+      /** Line */
+      line?: number | null;
+      /** Network */
+      network?: string | null;
+      /** Pou */
+      pou: string;
     };
     /**
      * Bar
@@ -1533,6 +1604,14 @@ export interface components {
        */
       marked?: number;
       /**
+       * Recording
+       * @description An opened recording, history only: no scan runs and no input applies until a continue from one of its scans (fork).
+       * @default false
+       */
+      recording?: boolean;
+      /** @description The scan shown is being stepped through; null: it is shown complete. */
+      stepping?: components["schemas"]["HistoryStepPoint"] | null;
+      /**
        * Viewing
        * @description The scan shown instead of the live one; null: live.
        */
@@ -1542,6 +1621,27 @@ export interface components {
        * @description The branch of the scan shown; null: live.
        */
       viewing_branch?: number | null;
+    };
+    /**
+     * HistoryStep
+     * @description Body of ``POST /api/simulations/{id}/history/step``: how far one step through the scan shown goes
+     *     (``statement``: the next network or line, into calls; ``over`` past the calls; ``out`` of the POU).
+     */
+    HistoryStep: {
+      /**
+       * Granularity
+       * @default statement
+       * @enum {string}
+       */
+      granularity?: "statement" | "over" | "out" | "network";
+    };
+    /**
+     * HistoryStepPoint
+     * @description Where a step through the scan shown (``POST .../history/step``) stands.
+     */
+    HistoryStepPoint: {
+      /** @description The network or line it halted before; null: the scan ended. */
+      at?: components["schemas"]["At"] | null;
     };
     /**
      * ImportReport
@@ -2824,7 +2924,7 @@ export interface components {
     };
     /**
      * SfcAction
-     * @description A named action (SFC-02): ST statements, LD or FBD networks, or a chart of its own.
+     * @description A named action (SFC-02): ST statements, IL instructions (text), LD or FBD networks, or a chart of its own.
      */
     SfcAction: {
       /**
@@ -2843,7 +2943,7 @@ export interface components {
        * @default st
        * @enum {string}
        */
-      language?: "st" | "ld" | "fbd" | "sfc";
+      language?: "st" | "il" | "ld" | "fbd" | "sfc";
       /** Name */
       name: string;
     };
@@ -2946,8 +3046,9 @@ export interface components {
     };
     /**
      * SfcNamedTransition
-     * @description A transition condition written on its own (SFC-03): an ST expression, or LD/FBD networks whose coil or output
-     *     named like the transition gives its value. A chart transition whose condition is this name reads it.
+     * @description A transition condition written on its own (SFC-03): an ST expression, IL instructions whose accumulator at the
+     *     end gives its value (as in CODESYS), or LD/FBD networks whose coil or output named like the transition gives its
+     *     value. A chart transition whose condition is this name reads it.
      */
     SfcNamedTransition: {
       /**
@@ -2962,7 +3063,7 @@ export interface components {
        * @default st
        * @enum {string}
        */
-      language?: "st" | "ld" | "fbd";
+      language?: "st" | "il" | "ld" | "fbd";
       /** Name */
       name: string;
     };
@@ -3740,6 +3841,7 @@ export interface components {
   pathItems: never;
 }
 export type Accessor = components["schemas"]["Accessor"];
+export type At = components["schemas"]["At"];
 export type Bar = components["schemas"]["Bar"];
 export type Block = components["schemas"]["Block"];
 export type Box = components["schemas"]["Box"];
@@ -3773,6 +3875,8 @@ export type HistoryDiff = components["schemas"]["HistoryDiff"];
 export type HistoryFound = components["schemas"]["HistoryFound"];
 export type HistoryMark = components["schemas"]["HistoryMark"];
 export type HistoryRange = components["schemas"]["HistoryRange"];
+export type HistoryStep = components["schemas"]["HistoryStep"];
+export type HistoryStepPoint = components["schemas"]["HistoryStepPoint"];
 export type ImportReport = components["schemas"]["ImportReport"];
 export type IndicatorState = components["schemas"]["IndicatorState"];
 export type InputNode = components["schemas"]["InputNode"];
@@ -4761,6 +4865,81 @@ export interface operations {
       };
     };
   };
+  open_recording_api_projects__name__recordings_post: {
+    parameters: {
+      query?: {
+        /** @description the file's name, for the messages */
+        file?: string;
+      };
+      header?: never;
+      path: {
+        name: string;
+      };
+      cookie?: never;
+    };
+    requestBody: {
+      content: {
+        "application/json": string;
+      };
+    };
+    responses: {
+      /** @description Successful Response */
+      201: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["SimulationInfo"];
+        };
+      };
+      /** @description No such project or POU. */
+      404: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["ErrorResponse"];
+        };
+      };
+      /** @description The project already exists, or a save is based on an old revision (ConflictDetail). */
+      409: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json":
+            components["schemas"]["ErrorResponse"] | components["schemas"]["ConflictResponse"];
+        };
+      };
+      /** @description The request body or the project is too large. */
+      413: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["ErrorResponse"];
+        };
+      };
+      /** @description Bad name, invalid model or a project that does not load; see the diagnostics. */
+      422: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["ErrorResponse"];
+        };
+      };
+      /** @description Too many projects in the workspace. */
+      429: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["ErrorResponse"];
+        };
+      };
+    };
+  };
   rename_project_api_projects__name__rename_post: {
     parameters: {
       query?: never;
@@ -5358,6 +5537,60 @@ export interface operations {
         };
         content: {
           "application/json": components["schemas"]["HistoryMark"][];
+        };
+      };
+      /** @description No such project or POU. */
+      404: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["ErrorResponse"];
+        };
+      };
+      /** @description The project already exists, or a save is based on an old revision (ConflictDetail). */
+      409: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json":
+            components["schemas"]["ErrorResponse"] | components["schemas"]["ConflictResponse"];
+        };
+      };
+      /** @description Bad name, invalid model or a project that does not load; see the diagnostics. */
+      422: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["ErrorResponse"];
+        };
+      };
+    };
+  };
+  history_step_api_simulations__sim_id__history_step_post: {
+    parameters: {
+      query?: never;
+      header?: never;
+      path: {
+        sim_id: string;
+      };
+      cookie?: never;
+    };
+    requestBody?: {
+      content: {
+        "application/json": components["schemas"]["HistoryStep"] | null;
+      };
+    };
+    responses: {
+      /** @description Successful Response */
+      200: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["SimulationInfo"];
         };
       };
       /** @description No such project or POU. */

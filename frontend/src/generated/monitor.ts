@@ -590,6 +590,14 @@ export interface HistoryRange {
    */
   marked?: number;
   /**
+   * An opened recording, history only: no scan runs and no input applies until a continue from one of its scans (fork).
+   */
+  recording?: boolean;
+  /**
+   * The scan shown is being stepped through; null: it is shown complete.
+   */
+  stepping?: HistoryStepPoint | null;
+  /**
    * The scan shown instead of the live one; null: live.
    */
   viewing?: number | null;
@@ -597,6 +605,39 @@ export interface HistoryRange {
    * The branch of the scan shown; null: live.
    */
   viewing_branch?: number | null;
+}
+/**
+ * Where a step through the scan shown (``POST .../history/step``) stands.
+ *
+ * This interface was referenced by `MonitorProtocol`'s JSON-Schema
+ * via the `definition` "HistoryStepPoint".
+ */
+export interface HistoryStepPoint {
+  /**
+   * The network or line it halted before; null: the scan ended.
+   */
+  at?: At | null;
+}
+/**
+ * Where the scan halted or a fault happened.
+ *
+ * This interface was referenced by `MonitorProtocol`'s JSON-Schema
+ * via the `definition` "At".
+ */
+export interface At {
+  /**
+   * In an SFC POU: actions/<name> or transitions/<name>.
+   */
+  body?: string | null;
+  column?: number | null;
+  element?: string | null;
+  /**
+   * POU instance path; null inside a FUNCTION.
+   */
+  instance?: string | null;
+  line?: number | null;
+  network?: string | null;
+  pou: string;
 }
 /**
  * What a client needs to show a value as IEC text: TIME and dates arrive as ms, enumerations as ints.
@@ -626,27 +667,6 @@ export interface Status {
   at?: At | null;
   state: "running" | "stopped" | "halted" | "faulted";
   type: "status";
-}
-/**
- * Where the scan halted or a fault happened.
- *
- * This interface was referenced by `MonitorProtocol`'s JSON-Schema
- * via the `definition` "At".
- */
-export interface At {
-  /**
-   * In an SFC POU: actions/<name> or transitions/<name>.
-   */
-  body?: string | null;
-  column?: number | null;
-  element?: string | null;
-  /**
-   * POU instance path; null inside a FUNCTION.
-   */
-  instance?: string | null;
-  line?: number | null;
-  network?: string | null;
-  pou: string;
 }
 /**
  * New samples of this client's trace since its previous chunk, sent at its monitor interval.

@@ -1,6 +1,6 @@
 import { describe, expect, it } from "vitest";
-import { findPlaceholder, markClass, markOffset, shownScan, stepScan } from "./HistoryBar";
-import { applyMessage, emptyMonitor } from "./monitor";
+import { findPlaceholder, markClass, markOffset, shownScan, stepScan, steppingText } from "./HistoryBar";
+import { applyMessage, emptyMonitor, haltedAt } from "./monitor";
 
 describe("scan history in the monitor state (issue 23)", () => {
   it("takes the history range of every values message, and null when a message has none", () => {
@@ -46,5 +46,26 @@ describe("scan history in the monitor state (issue 23)", () => {
     expect(findPlaceholder("changed", "Main.Motor")).toBe("Main.Motor");
     expect(findPlaceholder("true", "Main.Motor")).toBe("a condition, e.g. on Main.Motor");
     expect(findPlaceholder("changed", undefined)).toBe("a variable, e.g. Main.Motor");
+  });
+});
+
+describe("stepping through a past scan (issue 23)", () => {
+  const at = { pou: "MAIN", network: "2" };
+  const live = { pou: "MAIN", line: 7 };
+  const history = { first: 1, last: 9, viewing: 4 };
+
+  it("marks the step's point while one runs, the live halt otherwise", () => {
+    expect(haltedAt({ state: "halted", at: live, history: { ...history, stepping: { at } } })).toBe(at);
+    expect(haltedAt({ state: "halted", at: live, history: { ...history, stepping: { at: null } } })).toBeNull();
+    expect(haltedAt({ state: "halted", at: live, history })).toBe(live);
+    expect(haltedAt({ state: "running", at: live, history: null })).toBeNull();
+  });
+
+  it("says where the step stands", () => {
+    expect(steppingText(4, null, null)).toBe(
+      "Step through scan 4: network by network (LD, FBD), line by line (ST, IL)",
+    );
+    expect(steppingText(4, { at }, "MAIN, network 2")).toBe("Scan 4, halted before MAIN, network 2");
+    expect(steppingText(4, { at: null }, null)).toBe("Scan 4 ran to its end");
   });
 });

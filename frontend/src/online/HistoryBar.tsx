@@ -3,11 +3,12 @@
 // that scan as it was: every watched value, the LD power flow, FBD pins and ST inline values come from
 // the server recomputing it, while the live scans go on. "Live" shows them again. The banner over the
 // editors says that the diagrams show the past. "Find" jumps to the previous or next scan where a
-// variable changed or a condition (as Run until takes it: Motor, Tank.Level >= 80) became TRUE.
+// variable changed or a condition (as Run until takes it: Motor, Tank.Level >= 80) became TRUE. "Step into this scan"
+// replays the scan shown in the debug code and goes through it network by network or line by line.
 import { useEffect, useState } from "react";
 import type { HistoryMark } from "../generated/api";
-import { findInHistory, historyDiff, historyMarks } from "./api";
-import type { Value } from "./protocol";
+import { findInHistory, historyDiff, historyMarks, historyStep } from "./api";
+import type { Value, Where } from "./protocol";
 import { formatValue } from "./values";
 import { onlineStore, useOnline } from "./store";
 
@@ -67,7 +68,7 @@ export function HistoryBar() {
         Live
       </button>
       <span className="history-range" aria-label="History kept">
-        from scan {history.first}
+        {history.recording ? "recording · history only · " : ""}from scan {history.first}
         {(history.branch ?? 1) > 1 ? ` · branch ${history.branch} live` : ""}
       </span>
       <HistoryFind scan={scan} />
@@ -192,14 +193,23 @@ function HistoryFind({ scan }: { scan: number }) {
 }
 
 /** Over the editors while a past scan is shown: the diagrams' values are that scan's, not live. */
-export function HistoryBanner() {
+export interface HistoryBannerProps {
+  /** A halt point in words ("MAIN, network 2"), as the debug bar says it. */
+  describe(at: Where): string;
+  /** Shows a location in its editor (opens the POU, selects the network or the line). */
+  reveal(place: { pou: string; network?: string | null; element?: string | null; line?: number | null }): void;
+}
+
+export function HistoryBanner({ describe, reveal }: HistoryBannerProps) {
   const viewing = useOnline((s) => (s.phase === "online" ? (s.monitor.history?.viewing ?? null) : null));
+  const recording = useOnline((s) => s.monitor.history?.recording ?? false);
   const timeMs = useOnline((s) => s.monitor.timeMs);
   if (viewing === null) return null;
   return (
     <div className="history-banner-area">
       <div className="history-banner" role="status" aria-label="History view">
-        Viewing scan {viewing} (history) · t = {timeMs} ms · the values are those of that scan; the simulation goes on
+        Viewing scan {viewing} (history) · t = {timeMs} ms · the values are those of that scan
+        {recording ? " of the recording" : "; the simulation goes on"}
         <button type="button" onClick={onlineStore.getState().goLive}>
           Back to live
         </button>
@@ -211,7 +221,60 @@ export function HistoryBanner() {
           Continue from here
         </button>
       </div>
+      <HistoryStepping viewing={viewing} describe={describe} reveal={reveal} />
       <HistoryCompare viewing={viewing} />
+    </div>
+  );
+}
+
+/** What the step through the scan shown says: where it halted (`where`, in words), or that the scan ran to its end. */
+export function steppingText(viewing: number, stepping: object | null | undefined, where: string | null): string {
+  if (!stepping) return `Step through scan ${viewing}: network by network (LD, FBD), line by line (ST, IL)`;
+  return where ? `Scan ${viewing}, halted before ${where}` : `Scan ${viewing} ran to its end`;
+}
+
+/** Step through the scan shown (replayed from the scan before it, in the debug code): the diagrams and values show
+ * the point reached, the network or line about to run is marked and shown; the recorded history does not change. */
+function HistoryStepping({ viewing, describe, reveal }: { viewing: number } & HistoryBannerProps) {
+  const stepping = useOnline((s) => s.monitor.history?.stepping ?? null);
+  const at = stepping?.at ?? null;
+  useEffect(() => {
+    if (at) reveal({ pou: at.pou, network: at.network, element: at.element, line: at.line });
+  }, [at, reveal]);
+  const [note, setNote] = useState<string | null>(null);
+  const ended = stepping != null && !stepping.at;
+  const step = async (granularity: "statement" | "over") => {
+    const id = onlineStore.getState().simulation;
+    if (!id) return;
+    try {
+      await historyStep(id, granularity);
+      setNote(null);
+    } catch (err) {
+      setNote(err instanceof Error ? err.message : String(err));
+    }
+  };
+  return (
+    <div className="history-stepping" role="group" aria-label="Step through the scan">
+      <span aria-label="Step point">{steppingText(viewing, stepping, at ? describe(at) : null)}</span>
+      <button
+        type="button"
+        onClick={() => void step("statement")}
+        disabled={ended}
+        title="Run the scan shown to its next network or line (into the blocks it calls)"
+      >
+        {stepping ? "Next step" : "Step into this scan"}
+      </button>
+      {stepping ? (
+        <button type="button" onClick={() => void step("over")} disabled={ended} title="Past the calls">
+          Step over
+        </button>
+      ) : null}
+      {stepping ? (
+        <button type="button" onClick={() => onlineStore.getState().seek(viewing)} title="The scan complete again">
+          Whole scan
+        </button>
+      ) : null}
+      {note ? <span role="alert">{note}</span> : null}
     </div>
   );
 }

@@ -1,7 +1,7 @@
 // The simulation controls, always visible over the editor: Check, Compile & simulate, Run, Stop,
 // Single cycle, Reset, Go offline; the online/offline state; the number of active forces with
 // Release all forces; the prepared values (force / write / clear); scan counter, virtual time and
-// the last scan time; the scan history's timeline (HistoryBar.tsx). Check checks the working copy and never saves;
+// the last scan time; the scan history's timeline (HistoryBar.tsx) and Open recording (OpenRecording.tsx). Check checks the working copy and never saves;
 // Compile & simulate compiles the saved project, so with unsaved changes it asks: save and compile, compile the
 // saved version, or cancel. Keys (CODESYS's) come from the keymap and are handled by app/useAppKeys.ts.
 import { panelsStore, usePanels } from "../store/panels";
@@ -11,6 +11,7 @@ import { formatClock } from "./values";
 import { useStore } from "zustand";
 import { createStore } from "zustand/vanilla";
 import { HistoryBar } from "./HistoryBar";
+import { OpenRecording } from "./OpenRecording";
 import { keysOf, type CommandOf } from "../keys/keymap";
 import { CheckCheck, Cpu, LockOpen, Play, RotateCcw, Square, StepForward, Unplug } from "lucide-react";
 import { ToolButton } from "../ui/ToolButton";
@@ -89,6 +90,7 @@ export function SimulationBar() {
   const lastScanMs = useOnline((s) => s.lastScanMs);
   const error = useOnline((s) => s.error);
   const checking = usePanels((s) => s.checking);
+  const recording = useOnline((s) => s.monitor.history?.recording ?? false); // history only: no scan runs
   const online = phase === "online";
   const running = state === "running";
   const s = onlineStore.getState();
@@ -120,7 +122,14 @@ export function SimulationBar() {
       >
         <Cpu size={16} aria-hidden="true" /> Compile &amp; simulate
       </button>
-      <ToolButton icon={Play} label="Run" keys={keysOf("app", "run")} onClick={s.run} disabled={!online || running} />
+      <OpenRecording />
+      <ToolButton
+        icon={Play}
+        label="Run"
+        keys={keysOf("app", "run")}
+        onClick={s.run}
+        disabled={!online || running || recording}
+      />
       <ToolButton
         icon={Square}
         label="Stop"
@@ -133,9 +142,9 @@ export function SimulationBar() {
         label="Single cycle"
         keys={keysOf("app", "single-cycle")}
         onClick={s.singleCycle}
-        disabled={!online}
+        disabled={!online || recording}
       />
-      <ToolButton icon={RotateCcw} label="Reset" onClick={() => void s.reset()} disabled={!online} />
+      <ToolButton icon={RotateCcw} label="Reset" onClick={() => void s.reset()} disabled={!online || recording} />
       <ToolButton
         icon={Unplug}
         label="Go offline"

@@ -10,6 +10,20 @@ export function createSimulation(project: string): Promise<SimulationInfo> {
   return unwrap(http.POST("/api/projects/{name}/simulations", { params: { path: { name: project } } }));
 }
 
+/** Opens a recording (the file `ladderlab run --record` writes or "Download recording" gives) as a history-only
+ * simulation of the saved project; `file` names it in the server's messages (409: another revision of the project,
+ * 422: not a recording). */
+export function openRecording(project: string, text: string, file: string): Promise<SimulationInfo> {
+  return unwrap(
+    http.POST("/api/projects/{name}/recordings", {
+      params: { path: { name: project }, query: { file } },
+      body: text,
+      bodySerializer: (body: string) => body,
+      headers: { "Content-Type": "application/json" },
+    }),
+  );
+}
+
 export function getSimulation(id: string): Promise<SimulationInfo> {
   return unwrap(http.GET("/api/simulations/{sim_id}", simulation(id)));
 }
@@ -47,6 +61,12 @@ export async function findInHistory(
 }
 
 /** The newest scans of the history with an input or a runtime error: the timeline's marks. */
+/** One step through the scan shown: the first replays it from the scan before and halts at its first network or
+ * line, each next at the next one (the values come with the frames; `history.stepping` says where). */
+export function historyStep(id: string, granularity: "statement" | "over" = "statement"): Promise<SimulationInfo> {
+  return unwrap(http.POST("/api/simulations/{sim_id}/history/step", { ...simulation(id), body: { granularity } }));
+}
+
 export function historyMarks(id: string): Promise<HistoryMark[]> {
   return unwrap(http.GET("/api/simulations/{sim_id}/history/marks", simulation(id)));
 }

@@ -57,6 +57,14 @@ export interface MonitorState {
   history: HistoryRange | null;
 }
 
+/** Where the editors mark a halt (the network or line): in a step through a past scan (history), its point (null
+ * once the scan ended); else where the live scan is halted. */
+export function haltedAt(monitor: Pick<MonitorState, "state" | "at" | "history">): Where | null {
+  const stepping = monitor.history?.stepping;
+  if (stepping) return stepping.at ?? null;
+  return monitor.state === "halted" ? monitor.at : null;
+}
+
 /** The online log keeps this many entries (older ones are dropped). */
 export const LOG_LIMIT = 5000;
 

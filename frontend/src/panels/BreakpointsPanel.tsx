@@ -57,6 +57,7 @@ function BreakpointRow({
               network: "network" in bp ? bp.network : null,
               element: "element" in bp ? bp.element : null,
               line: "line" in bp ? bp.line : null,
+              body: bp.body ?? null,
             })
           }
         >

@@ -827,6 +827,7 @@ function NewPart(props: { kind: "action" | "transition"; body: SfcBody; apply(re
         onChange={(e) => setLanguage(e.target.value as ops.PartLanguage)}
       >
         <option value="st">ST</option>
+        <option value="il">IL</option>
         <option value="ld">LD</option>
         <option value="fbd">FBD</option>
         {props.kind === "action" ? <option value="sfc">SFC</option> : null}

@@ -1,8 +1,8 @@
 // An SFC POU in the workspace: the chart editor with the live check of the working copy (POST /api/check),
 // online mode (active steps and actions, step times, every condition, forces on step flags through the
 // watch list and the step's context), breakpoints on steps and transitions, "step to the next transition",
-// and the POU's actions and named transitions opened in the ST, LD or FBD editor (their lines and networks
-// take breakpoints too, with the part they are in).
+// and the POU's actions and named transitions opened in the ST, IL, LD or FBD editor (their lines and networks
+// take breakpoints too, with the part they are in; an IL part shows its accumulator after each line online).
 import { useCallback, useEffect, useMemo, useState, type ReactNode } from "react";
 import type { Diagnostic, LibraryEntry, SymbolInfo } from "../generated/api";
 import type { FbdBody, LdBody, Pou, SfcAction, SfcNamedTransition } from "../generated/api";
@@ -16,8 +16,11 @@ import { onlineStore, useOnline } from "../online/store";
 import { useLdOnline } from "../ld/useLdOnline";
 import { onlineReadOnly, useShownInstance } from "../online/editorOnline";
 import { useFbdOnline } from "../fbd/useFbdOnline";
+import { usePanels } from "../panels/store";
 import { useWorkspace } from "../store/project";
-import { StEditor } from "../st/StEditor";
+import { StEditor, type StEditorProps } from "../st/StEditor";
+import { accumulatorMarks } from "../st/ilOnline";
+import { IL_OPERATOR_COMPLETIONS } from "../st/ilLanguage";
 import { useStAssist } from "../st/useStAssist";
 import { actionChartOf, type ActionChartBody, type SfcBody } from "./model";
 import { bindSfc, sfcOnlineView } from "./online";
@@ -118,16 +121,18 @@ export function SfcPouView({
       halted: at && at.pou.toUpperCase() === upper && !at.body ? (at.element ?? null) : null,
     };
   }, [breakpoints, at, upper]);
-  // A halt inside an action or named transition shows it; so does a halt at an element of an action's chart.
-  const mineHalt = at && at.pou.toUpperCase() === upper ? at : null;
-  const haltedPart =
-    mineHalt?.body ?? (mineHalt?.element ? actionChartOf(history.present, mineHalt.element) : null) ?? null;
-  const [haltSeen, setHaltSeen] = useState<string | null>(null);
-  if (haltedPart !== haltSeen) {
-    setHaltSeen(haltedPart);
-    if (haltedPart) {
-      const [kind, partName] = haltedPart.split("/", 2);
-      setPart({ kind: kind === "actions" ? "action" : "transition", name: partName! });
+  // A place revealed in this POU (the Breakpoints panel's "Show in the editor", a diagnostic, a halt: the debug
+  // bar reveals it) opens the action or named transition it is in, or the chart (an element of an action's chart
+  // opens that action).
+  const focus = usePanels((s) => (s.focus?.pou.toUpperCase() === upper ? s.focus : null));
+  // (null at first: "Show in the editor" opens the POU and reveals the place at once, before this view is made)
+  const [focusSeen, setFocusSeen] = useState<typeof focus>(null);
+  if (focus !== focusSeen) {
+    setFocusSeen(focus);
+    if (focus) {
+      const target = focus.body ?? (focus.element ? actionChartOf(history.present, focus.element) : null);
+      const [kind, partName] = target ? target.split("/", 2) : [];
+      setPart(target ? { kind: kind === "actions" ? "action" : "transition", name: partName! } : null);
     }
   }
 
@@ -172,6 +177,7 @@ export function SfcPouView({
             diagnostics={diagnostics}
             completions={completions}
             readOnly={readOnly}
+            focusLine={focus?.body && focus.line != null ? { line: focus.line, seq: focus.seq } : null}
             onChange={(content) => setHistory(name, record(history, setPartBody(body, part.kind, part.name, content)))}
           />
         ) : (
@@ -193,6 +199,7 @@ export function SfcPouView({
       readOnly={readOnly}
       readOnlyActions={readOnly ? onlineActions : undefined}
       onOpen={setPart}
+      focus={focus?.element && !focus.body ? { element: focus.element, seq: focus.seq } : null}
       debugging={{ marks, toggle: (element) => debugStore.getState().toggle({ pou: name, element }) }}
       toolbarExtra={stepToTransition}
       onlineActions={flagCommands}
@@ -247,6 +254,7 @@ function PartEditor(props: {
   diagnostics: Diagnostic[];
   completions: ReturnType<typeof useStAssist>["completions"];
   readOnly: string | null;
+  focusLine: { line: number; seq: number } | null;
   onChange(content: SfcAction["body"]): void;
 }) {
   const { pou, part, item } = props;
@@ -264,18 +272,31 @@ function PartEditor(props: {
   const table = useWorkspace((s) => s.symbols[pou.name]);
   const symbols = useMemo(() => (table ? [...table.symbols, ...table.globals] : []), [table]);
   const [histories, setHistories] = useState<Record<string, History<LdBody | FbdBody>>>({});
+  const il = item.language === "il";
+  const text = typeof item.body === "string" ? item.body : "";
+  const ilOnline = useIlPartOnline(pou, body, il ? text : null);
+  const completions = useMemo(
+    () =>
+      il
+        ? { ...props.completions, options: [...IL_OPERATOR_COMPLETIONS, ...props.completions.options] }
+        : props.completions,
+    [il, props.completions],
+  );
   if (typeof item.body === "string" || item.body === undefined) {
     const lines = breakpoints.flatMap((b) => ("line" in b && inPart(b) ? [b.line] : []));
     return (
       <StEditor
         key={file}
-        text={typeof item.body === "string" ? item.body : ""}
+        text={text}
         onChange={(text) => props.onChange(text)}
         file={file}
         diagnostics={mine}
-        completions={props.completions}
+        completions={completions}
         readOnly={props.readOnly}
         label={`${pou.name} ${part.kind} ${part.name}`}
+        language={il ? "il" : "st"}
+        online={ilOnline}
+        focusLine={props.focusLine}
         debug={{
           breakpoints: lines,
           halted: at && inPart({ pou: at.pou, body: at.body ?? undefined }) && at.line != null ? at.line : null,
@@ -315,6 +336,27 @@ function PartEditor(props: {
       halted={at && at.body === body ? { network: at.network ?? null, element: null } : null}
     />
   );
+}
+
+/** Online, an IL action or transition (`text`; null: not IL) shows the accumulator after each line, from the
+ * probes of its part (`body`, "actions/Count") in the POU's instance, as an IL POU does (ilOnline.ts). */
+function useIlPartOnline(pou: Pou, body: string, text: string | null): StEditorProps["online"] {
+  const live = useOnline((s) => s.phase !== "offline");
+  const monitor = useOnline((s) => s.monitor);
+  const instance = useShownInstance(pou);
+  const key = `il:${pou.name}/${body}`;
+  const on = live && instance !== null && text !== null;
+  useEffect(() => {
+    onlineStore
+      .getState()
+      .subscribe(key, on ? { paths: [], elements: [{ pou_instance: instance!, ids: null }] } : null);
+  }, [key, on, instance]);
+  useEffect(() => () => onlineStore.getState().subscribe(key, null), [key]);
+  return useMemo(() => {
+    if (!on) return undefined;
+    const marks = accumulatorMarks(text!, monitor, instance!, body).map((m) => ({ ...m, accumulator: true }));
+    return { occurrences: [], marks, describe: () => "", onMenu: () => undefined, onPrepare: () => undefined };
+  }, [on, text, monitor, instance, body]);
 }
 
 /** What the LD and FBD editors of a part share: where it is, its checks and its undo history. */

@@ -104,6 +104,14 @@ describe("SFC edits keep the chart well formed", () => {
     expect("error" in ops.setStep(body, chartOf(body)[2]!.id, { name: "a__b" })).toBe(true);
   });
 
+  it("adds actions and named transitions written in IL as text (SFC-02): an empty action, a transition LD FALSE", () => {
+    let body = chart();
+    body = ok(ops.addAction(body, "Count", "il")).body;
+    body = ok(ops.addNamedTransition(body, "Ready", "il")).body;
+    expect(body.actions).toEqual([{ name: "Count", language: "il", body: "" }]);
+    expect(body.transitions).toEqual([{ name: "Ready", language: "il", body: "LD FALSE" }]);
+  });
+
   it("copies a step with its transition and pastes it below a transition with new ids and names", () => {
     let body = chart();
     body = ok(ops.insertBelow(body, chartOf(body)[2]!.id)).body; // Init1 t Step1 t Step2

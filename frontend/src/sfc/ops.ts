@@ -292,9 +292,11 @@ export function removeAssociation(body: SfcBody, stepId: string, associationId: 
 
 // ------------------------------------------------------------------ actions and named transitions
 
-export type PartLanguage = "st" | "ld" | "fbd" | "sfc";
+export type PartLanguage = "st" | "il" | "ld" | "fbd" | "sfc";
 
-const emptyBody = (language: PartLanguage, st: string) => (language === "st" ? st : { networks: [] });
+/** A new part's body: ST text (`st`), IL text (`il`: a transition is its accumulator at the end), or networks. */
+const emptyBody = (language: PartLanguage, st: string, il: string) =>
+  language === "st" ? st : language === "il" ? il : { networks: [] };
 
 /** A new action chart: an initial step, a transition FALSE and the jump back, named and numbered to be unique in
  * the POU (steps and element ids are shared by all of its charts). */
@@ -316,7 +318,7 @@ export function addAction(body: SfcBody, name: string, language: PartLanguage): 
   const copy = clone(body);
   const problem = nameProblem(copy, name);
   if (problem) return { error: problem };
-  const made = language === "sfc" ? emptyChart(copy, name) : emptyBody(language, "");
+  const made = language === "sfc" ? emptyChart(copy, name) : emptyBody(language, "", "");
   (copy.actions ??= []).push({ name, language, body: made } as SfcAction);
   return { body: copy };
 }
@@ -325,7 +327,11 @@ export function addNamedTransition(body: SfcBody, name: string, language: PartLa
   const copy = clone(body);
   const problem = nameProblem(copy, name);
   if (problem) return { error: problem };
-  (copy.transitions ??= []).push({ name, language, body: emptyBody(language, "FALSE") } as SfcNamedTransition);
+  (copy.transitions ??= []).push({
+    name,
+    language,
+    body: emptyBody(language, "FALSE", "LD FALSE"),
+  } as SfcNamedTransition);
   return { body: copy };
 }
 

@@ -12,9 +12,10 @@ export interface AccumulatorMark {
   shown: ValueShown;
 }
 
-/** The probe ids of an instance's accumulator values in `monitor`: line -> [id, type]. */
-function probes(monitor: MonitorState, instance: string): Map<number, [string, string]> {
-  const prefix = powerKey(instance, "");
+/** The probe ids of an instance's accumulator values in `monitor`: line -> [id, type]. `part`: an IL action or
+ * transition of an SFC POU ("actions/Count"), whose probes carry it as prefix. */
+function probes(monitor: MonitorState, instance: string, part: string): Map<number, [string, string]> {
+  const prefix = powerKey(instance, part ? `${part}/` : "");
   const found = new Map<number, [string, string]>();
   for (const key of Object.keys(monitor.power)) {
     if (!key.startsWith(prefix)) continue;
@@ -24,9 +25,10 @@ function probes(monitor: MonitorState, instance: string): Map<number, [string, s
   return found;
 }
 
-/** The accumulator marks of IL `body` for `instance`: one at the end of each line that ran in the last scan. */
-export function accumulatorMarks(body: string, monitor: MonitorState, instance: string): AccumulatorMark[] {
-  const byLine = probes(monitor, instance);
+/** The accumulator marks of IL `body` for `instance`: one at the end of each line that ran in the last scan.
+ * `part`: the body is an IL action or transition of an SFC POU ("actions/Count"), not the POU's own. */
+export function accumulatorMarks(body: string, monitor: MonitorState, instance: string, part = ""): AccumulatorMark[] {
+  const byLine = probes(monitor, instance, part);
   if (byLine.size === 0) return [];
   const marks: AccumulatorMark[] = [];
   let start = 0;

@@ -9,6 +9,7 @@ import type { Pou } from "../generated/api";
 import { MenuList } from "../ui/MenuList";
 import { OperandValuePrompt } from "../online/ValuePrompt";
 import { onlineOperandItems, operandCommands } from "../online/operandCommands";
+import { haltedAt } from "../online/monitor";
 import { onlineStore, useOnline } from "../online/store";
 import { useShownInstance } from "../online/editorOnline";
 import {
@@ -43,7 +44,7 @@ export function useStOnline(pou: Pou, body: string, scope: Scope): StOnline {
   const [menu, setMenu] = useState<{ occurrence: Occurrence; x: number; y: number } | null>(null);
   const [prompt, setPrompt] = useState<{ occurrence: Occurrence; action: "write" | "force" | "prepare" } | null>(null);
   const live = phase !== "offline";
-  const at = monitor.state === "halted" ? monitor.at : null;
+  const at = haltedAt(monitor);
   const haltedHere = at?.instance && at.pou.toUpperCase() === pou.name.toUpperCase() ? at.instance.toUpperCase() : null;
   const shown = useShownInstance(pou);
   const instance = haltedHere ?? shown;

@@ -18,6 +18,8 @@ export interface Focus {
   line?: number | null;
   /** The declarations or the body (diagnostics name the file `<POU>/declarations` or `<POU>/body`). */
   part?: "declarations" | "body" | null;
+  /** An action or named transition of an SFC POU the place is in ("actions/Fill"; the file `<POU>/actions/Fill`). */
+  body?: string | null;
   /** Increases with every request, so revealing the same place twice still moves the editor. */
   seq: number;
 }
@@ -61,7 +63,15 @@ export function focusOf(d: Diagnostic): Omit<Focus, "seq"> | null {
   if (projectPart) return { pou: projectPart, network: null, element: null, line: d.line ?? null, part: null };
   if (!d.pou) return null;
   const part = d.file?.endsWith("/declarations") ? "declarations" : d.file?.endsWith("/body") ? "body" : null;
-  return { pou: d.pou, network: d.network ?? null, element: d.element ?? null, line: d.line ?? null, part };
+  const sfcPart = /^[^/]+\/((?:actions|transitions)\/[^/]+)$/.exec(d.file ?? "")?.[1] ?? null;
+  return {
+    pou: d.pou,
+    network: d.network ?? null,
+    element: d.element ?? null,
+    line: d.line ?? null,
+    part: part ?? (sfcPart ? "body" : null),
+    body: sfcPart,
+  };
 }
 
 export const emptyPanels: PanelsData = {

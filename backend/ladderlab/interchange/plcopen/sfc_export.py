@@ -37,12 +37,12 @@ def write_sfc_pou(node: ET.Element, body: SfcBody, diagram: DiagramWriter) -> ET
         actions = sub(node, "actions")
         for action in body.actions:
             holder = sub(actions, "action", {"name": action.name})
-            _write_text_or_diagram(sub(holder, "body"), action.body, diagram)
+            _write_text_or_diagram(sub(holder, "body"), action.language, action.body, diagram)
     if body.transitions:
         transitions = sub(node, "transitions")
         for transition in body.transitions:
             holder = sub(transitions, "transition", {"name": transition.name})
-            _write_text_or_diagram(sub(holder, "body"), transition.body, diagram)
+            _write_text_or_diagram(sub(holder, "body"), transition.language, transition.body, diagram)
     holder = sub(node, "body")
     sfc = sub(holder, "SFC")
     named = {t.name.upper() for t in body.transitions}
@@ -56,9 +56,9 @@ def carried_text(body: SfcBody) -> str:
     return json.dumps(body.model_dump(mode="json", exclude_none=True), sort_keys=True, ensure_ascii=False)
 
 
-def _write_text_or_diagram(holder: ET.Element, body: object, diagram: DiagramWriter) -> None:
+def _write_text_or_diagram(holder: ET.Element, language: str, body: object, diagram: DiagramWriter) -> None:
     if isinstance(body, str):
-        formatted_text(holder, "ST", body)
+        formatted_text(holder, "IL" if language == "il" else "ST", body)
     elif isinstance(body, (LdBody, FbdBody)):
         diagram(holder, body)
     elif isinstance(body, SfcChart):  # an action written in SFC

@@ -30,7 +30,7 @@ from ...model.sfc import (
     SfcNamedTransition,
     SfcStep,
     SfcTransition,
-    walk,
+    prefix_ids,
 )
 from ...model.sfc_graph import ImportedStep, ImportedTransition, UnstructuredChart, graph_chart
 from ...st import ast
@@ -129,7 +129,7 @@ class SfcImporter:
         if made is None:
             return
         language, body = made
-        if isinstance(body, str):
+        if language == "st" and isinstance(body, str):
             body = self.transition_text(body, name, holder)
         self.transitions.append(SfcNamedTransition(name=name, language=language, body=body))  # type: ignore[arg-type]  # ST, LD or FBD
 
@@ -160,20 +160,15 @@ class SfcImporter:
         tag = local(language) if language is not None else "ST"
         if tag == "ST":
             return "st", text_content(language)
+        if tag == "IL":  # SFC-02: an action or named transition written in IL (docs/il.md)
+            return "il", text_content(language).strip("\n")
         if tag in ("LD", "FBD") and body is not None:
             return self.diagram(body, what)
         if tag == "SFC" and action is not None and language is not None:
             drawn = self.chart(language)
             if drawn is None:
                 return None
-            # local ids restart in every body: the chart's element ids get the action's name, so they stay unique
-            # in the POU (probes and breakpoints name elements by id)
-            prefix = f"{action}_"
-            for element in walk(drawn.elements):
-                element.id = prefix + element.id
-                for association in element.actions if isinstance(element, SfcStep) else []:
-                    association.id = prefix + association.id
-            return "sfc", drawn
+            return "sfc", prefix_ids(drawn, f"{action}_")  # local ids restart in every body
         self.report(f"{what} is written in {tag}, which LadderLab cannot import here", language)
         return None
 
@@ -319,11 +314,11 @@ class SfcImporter:
                 text = reference.get("name", "FALSE")
             elif inline is not None:
                 made = self.body_of(inline, f"the condition of transition {e.local_id}")
-                if made is not None and isinstance(made[1], str):
+                if made is not None and made[0] == "st" and isinstance(made[1], str):
                     text = made[1].strip().rstrip(";").strip() or "FALSE"
                 elif made is not None:
                     text = self.fresh(f"Transition{e.local_id}")
-                    self.transitions.append(SfcNamedTransition(name=text, language=made[0], body=made[1]))  # type: ignore[arg-type]  # LD or FBD
+                    self.transitions.append(SfcNamedTransition(name=text, language=made[0], body=made[1]))  # type: ignore[arg-type]  # IL, LD or FBD
             else:
                 drawn = self.drawn_condition(self.r.child(condition, "connectionPointIn"), e.local_id, condition)
                 text = drawn if drawn is not None else "FALSE"

@@ -97,8 +97,12 @@ class Declarations:
 
     def declare(self, hint: str, type_text: str, var_class: str = "VAR_TEMP") -> str:
         name = self.names.fresh(hint)
-        self.items.append((name, type_text, var_class))
+        self.add(name, type_text, var_class)
         return name
+
+    def add(self, name: str, type_text: str, var_class: str = "VAR_TEMP") -> None:
+        """A variable whose name ``names`` already reserved."""
+        self.items.append((name, type_text, var_class))
 
 
 class NetworkCode:

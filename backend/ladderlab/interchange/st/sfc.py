@@ -13,9 +13,10 @@ steps, action controls, passes and transition order are the lowering's own):
   condition into a flag, the transitions that fire (priority, then drawing order; a step is taken once), then
   the steps they leave (``Fill(X := FALSE);``) and enter (``Drain.X := TRUE;``).
 
-ST actions are written as typed; LD and FBD actions and transitions through the network exporters. A RETURN in an
-action (ending the action, not the POU) has no ST form inside the loop: such a POU is refused with a located
-diagnostic.
+ST actions are written as typed; IL actions and transitions through the IL export (``il.py``: a RET ends the
+action, an IL transition's value is its accumulator at the end); LD and FBD actions and transitions through the
+network exporters; an action written in SFC as its chart, the same way. A RETURN in an ST action (ending the action,
+not the POU) has no ST form inside the loop: such a POU is refused with a located diagnostic.
 """
 
 from __future__ import annotations
@@ -29,16 +30,18 @@ from ...ir.lower_sfc import ACTIVE_PASS, EXIT_PASS, FINAL_PASS, PIN, TABLE_FLAG,
 from ...ir.sfc_analysis import BOOL_FIELDS, STRING_FIELDS, Part, condition_parts
 from ...model import Diagnostic, Pou, Project, fbd, ld
 from ...model.sfc import SfcBody, SfcChart
+from ...model.sfc_graph import ChartGraph
 from ...st import ast
 from ...st import types as st_types
 from ...st.nesting import nodes
 from ...st.parser import parse_statements
-from ...st.printer import print_expression
-from ...st.sfc import action_file
+from ...st.printer import print_expression, print_statements
+from ...st.sfc import action_file, il_key
 from ...st.symbols import CheckResult, Symbol
 from .body import Network, body_lines, comment, network_title
 from .elements import PouScope
 from .fbd import fbd_network
+from .il import IlRefused, il_as_st, il_refused
 from .ld import ld_network
 from .names import Names
 from .network import Declarations, plan
@@ -61,19 +64,6 @@ def st_sfc_pou(project: Project, pou: Pou, checked: CheckResult, diagnostics: li
     blocks = lowering.blocks()
     if any(d.severity == "error" for d in diagnostics):
         return SfcExport(None, diagnostics)
-    nested = [
-        Diagnostic(
-            code="EXPORT-UNSUPPORTED",
-            message=f"the action {action.name} is written in SFC; the ST export writes one chart per POU: "
-            "move its chart into a function block written in SFC and call that in an action",
-            pou=pou.name,
-            file=action_file(pou.name, action.name),
-        )
-        for action in pou.body.actions
-        if isinstance(action.body, SfcChart)
-    ]
-    if nested:
-        return SfcExport(None, diagnostics + nested)
     writer = _Writer(pou, checked, lowering, ir.Pou(ctx.name, "program", ctx.slots, blocks))
     text = writer.body()
     if writer.problems:
@@ -94,6 +84,7 @@ def st_sfc_pou(project: Project, pou: Pou, checked: CheckResult, diagnostics: li
 class _Writer:
     def __init__(self, pou: Pou, checked: CheckResult, lowering: SfcLowering, lowered: ir.Pou):
         self.pou = pou
+        self.info = lowering.info
         self.body_model: SfcBody = lowering.body
         self.checked = checked
         self.plan = lowering
@@ -127,10 +118,13 @@ class _Writer:
                 )
         assert lowering.graph_made is not None
         self.graph = lowering.graph_made
-        for transition in self.graph.transitions:
-            element = transition.transition
-            self.names[(element.id, "c")] = self.declarations.declare(f"{element.id}_c", "BOOL", "VAR_TEMP")
-            self.names[(element.id, "f")] = self.declarations.declare(f"{element.id}_fires", "BOOL", "VAR_TEMP")
+        #: every chart of the POU: its own (None) and each SFC action's (upper-case name)
+        self.graphs: dict[str | None, ChartGraph] = {None: self.graph, **lowering.inner}
+        for graph in self.graphs.values():
+            for transition in graph.transitions:
+                element = transition.transition
+                self.names[(element.id, "c")] = self.declarations.declare(f"{element.id}_c", "BOOL", "VAR_TEMP")
+                self.names[(element.id, "f")] = self.declarations.declare(f"{element.id}_fires", "BOOL", "VAR_TEMP")
         self.quit_memory = (
             self.declarations.declare("sfc_quit_mem", "BOOL", "VAR") if "SFCQUITERROR" in lowering.flags else None
         )
@@ -143,10 +137,16 @@ class _Writer:
             if self.analysis is not None and self.analysis.table is not None
             else None
         )
-        self.passes = lowering.action_passes()
-        self.counter = (
-            self.declarations.declare("sfc_pass", "INT", "VAR_TEMP") if any(p for _, p in self.passes) else None
-        )
+        self.passes = {owner: lowering.action_passes(owner) for owner in self.graphs}
+        self.counters: dict[str | None, str] = {}
+        self.closing: dict[str, str] = {}
+        for owner, passes in self.passes.items():
+            if any(p for _, p in passes):
+                suffix = "" if owner is None else f"_{lowering.inner_name(owner)}"
+                self.counters[owner] = self.declarations.declare(f"sfc_pass{suffix}", "INT", "VAR_TEMP")
+            if owner is not None:
+                name = lowering.inner_name(owner)
+                self.closing[owner] = self.declarations.declare(f"{name}_closing", "BOOL", "VAR_TEMP")
 
     # ------------------------------------------------------------ text
     def line(self, text: str = "") -> None:
@@ -187,10 +187,11 @@ class _Writer:
 
     def body(self) -> str:
         self.flags_part()
-        self.steps_part()
-        self.controls_part()
-        self.actions_part()
-        self.transitions_part()
+        self.steps_part(None)
+        self.controls_part(None)
+        self.actions_part(None)
+        self.named_transitions_part()
+        self.transitions_part(None)
         return "\n".join(self.lines)
 
     # ------------------------------------------------------------ 1. flags
@@ -241,10 +242,11 @@ class _Writer:
             for part in ("mem", "entered", "left"):
                 if (key, part) in self.names:
                     self.line(f"{self.names[(key, part)]} := FALSE;")
-            if slots.initial:
-                initial = name
-        if initial is not None:
-            self.line(f"{initial}.X := TRUE;")
+        for slots in self.plan.steps.values():
+            if slots.initial:  # of the POU's chart and of every action's chart
+                self.line(f"{slots.step.name}.X := TRUE;")
+                if slots.owner is None:
+                    initial = slots.step.name
         for key, control in self.plan.controls.items():
             pins = ", ".join(
                 [*(f"{pin} := FALSE" for pin in PIN.values() if pin in control.inputs and pin != "R"), "R := TRUE"]
@@ -285,11 +287,14 @@ class _Writer:
         """The parts of the conditions leaving the step that hold them, into the table and the string."""
         if self.analysis is None or self.analysis_count is None:
             return
+        graph = self.graphs.get(self.plan.steps[key].owner)
+        if graph is None:
+            return
         self.clear_analysis()
         count = self.analysis_count
         self.line(f"{count} := 0;")
         table, text = self.flags.get(TABLE_FLAG), self.flag("SFCERRORANALYZATION")
-        for transition in self.graph.evaluation_order():
+        for transition in graph.evaluation_order():
             if key not in transition.sources:
                 continue
             condition = transition.transition.condition.strip()
@@ -324,11 +329,13 @@ class _Writer:
         self.line("END_IF;")
 
     # ------------------------------------------------------------ 2. steps
-    def steps_part(self) -> None:
+    def steps_part(self, owner: str | None) -> None:
         self.line(comment("steps: their time, entering and leaving, time limits"))
         error, enable = self.flag("SFCERROR"), self.flag("SFCENABLELIMIT")
         where, pou = self.flag("SFCERRORSTEP"), self.flag("SFCERRORPOU")
         for key, slots in self.plan.steps.items():
+            if slots.owner != owner:
+                continue
             name = slots.step.name
             self.line(f"{name}();")
             if (key, "mem") in self.names:
@@ -356,8 +363,8 @@ class _Writer:
                 self.line("END_IF;")
 
     # ------------------------------------------------------------ 3. action control
-    def controls_part(self) -> None:
-        active = [(key, c) for key, c in self.plan.controls.items() if c.inputs]
+    def controls_part(self, owner: str | None) -> None:
+        active = [(key, c) for key, c in self.plan.controls.items() if c.inputs and c.owner == owner]
         if not active:
             return
         self.line(comment("action control (IEC 61131-3 ACTION_CONTROL): the qualifiers of the active steps"))
@@ -379,19 +386,20 @@ class _Writer:
                 self.line(f"{control.name} := {instance}.Q;")
 
     # ------------------------------------------------------------ 4. actions
-    def actions_part(self) -> None:
-        if self.counter is None:
+    def actions_part(self, owner: str | None) -> None:
+        counter = self.counters.get(owner)
+        if counter is None:
             return
-        numbers = sorted({n for _, passes in self.passes for n in passes})
+        numbers = sorted({n for _, passes in self.passes[owner] for n in passes})
         self.line(
             comment(
                 "actions: exit actions, entry actions, final runs (A and not Q), active actions (Q); "
                 "alphabetical in each pass"
             )
         )
-        self.line(f"FOR {self.counter} := {numbers[0]} TO {numbers[-1]} DO")
+        self.line(f"FOR {counter} := {numbers[0]} TO {numbers[-1]} DO")
         self.depth += 1
-        for action, passes in self.passes:
+        for action, passes in self.passes[owner]:
             if not passes:
                 continue
             terms = []
@@ -404,15 +412,67 @@ class _Writer:
                     part = "leaving" if number == EXIT_PASS else "entering"
                     when = " OR ".join(self.names[(k, part)] for k in keys)
                     when = f"({when})" if len(keys) > 1 else when
-                terms.append(f"({self.counter} = {number} AND {when})")
+                terms.append(f"({counter} = {number} AND {when})")
             self.line(f"IF {' OR '.join(terms)} THEN")
             self.depth += 1
             self.line(comment(f"action {action.name}"))
-            self.text_or_networks(action.body, f"actions/{action.name}", action_file(self.pou.name, action.name))
+            if isinstance(action.body, SfcChart):
+                self.inner_chart(action.name.upper())
+            elif action.language == "il":
+                self.il_part("actions", action.name)
+            else:
+                self.text_or_networks(action.body, f"actions/{action.name}", action_file(self.pou.name, action.name))
             self.depth -= 1
             self.line("END_IF;")
         self.depth -= 1
         self.line("END_FOR;")
+
+    def inner_chart(self, owner: str) -> None:
+        """An action written in SFC, as ``ir/lower_sfc.py`` runs it: while the action is active (Q) one scan of its
+        chart; in its final run the chart closes (its steps are left, no transition fires, the initial step is set
+        again)."""
+        closing = self.closing[owner]
+        mine = [slots for slots in self.plan.steps.values() if slots.owner == owner]
+        self.line(f"{closing} := NOT {self.plan.controls[owner].name}.Q;")
+        self.line(f"IF {closing} THEN")
+        for slots in mine:
+            self.line(f"{INDENT}{slots.step.name}(X := FALSE);")
+        self.line("END_IF;")
+        self.steps_part(owner)
+        self.controls_part(owner)
+        self.actions_part(owner)
+        self.line(f"IF NOT {closing} THEN")
+        self.depth += 1
+        self.transitions_part(owner)
+        self.depth -= 1
+        self.line("END_IF;")
+        self.line(f"IF {closing} THEN")
+        for slots in mine:
+            if slots.initial:
+                self.line(f"{INDENT}{slots.step.name}.X := TRUE;")
+        self.line("END_IF;")
+
+    def il_part(self, part: str, name: str) -> None:
+        """An IL action (a RET ends it) or IL named transition (the accumulator at its end is its value) as ST, through
+        the IL POU export (``il.py``); its accumulators are variables of the POU."""
+        il = self.info.il_parts[il_key(part, name)]
+        statements = list(il.statements)
+        if part == "transitions":
+            assert il.end is not None  # the lowering refused the transition otherwise
+            statements.append(ast.Assign(ast.Name(name), il.end.value))
+        file = f"{self.pou.name}/{part}/{name}"
+        what = f"the IL {'action' if part == 'actions' else 'transition'} {name}"
+        try:
+            body, kept = il_as_st(statements, il.accumulators, self.declarations.names, returns=part == "actions")
+        except IlRefused as refused:
+            self.problems.append(il_refused(refused, self.pou.name, file, what))
+            return
+        if _returns(body):
+            self.refuse(f"a RET inside a loop or branch of {what} ends only the action; ST has no such statement", file)
+        for name_, acc in kept:
+            self.declarations.add(name_, str(acc.type), "VAR")
+        for text_line in print_statements(body).rstrip("\n").splitlines():
+            self.line(text_line)
 
     def text_or_networks(self, body: object, part: str, file: str) -> None:
         if isinstance(body, str):
@@ -458,22 +518,27 @@ class _Writer:
         self.problems.append(Diagnostic(code="EXPORT-UNSUPPORTED", message=message, pou=self.pou.name, file=file))
 
     # ------------------------------------------------------------ 5. transitions
-    def transitions_part(self) -> None:
+    def named_transitions_part(self) -> None:
         for transition in self.body_model.transitions:
             self.line(comment(f"transition {transition.name}"))
-            if isinstance(transition.body, str):
+            if transition.language == "il":
+                self.il_part("transitions", transition.name)
+            elif isinstance(transition.body, str):
                 self.line(f"{transition.name} := {transition.body.strip()};")
             else:
                 self.line(f"{transition.name} := FALSE;")
                 self.networks(
                     transition.body, f"transitions/{transition.name}", f"{self.pou.name}/transitions/{transition.name}"
                 )
+
+    def transitions_part(self, owner: str | None) -> None:
+        graph = self.graphs[owner]
         self.line(comment("transitions: every condition, then those that fire (a step is taken once)"))
-        for transition in self.graph.transitions:
+        for transition in graph.transitions:
             element = transition.transition
             self.line(f"{self.names[(element.id, 'c')]} := {element.condition.strip()};")
         tip, tip_mode = self.flag("SFCTIP"), self.flag("SFCTIPMODE")
-        for transition in self.graph.evaluation_order():
+        for transition in graph.evaluation_order():
             element = transition.transition
             terms = []
             takes = []
@@ -495,26 +560,28 @@ class _Writer:
                 for taken in takes:
                     self.line(f"{INDENT}{taken} := TRUE;")
                 self.line("END_IF;")
-        for transition in self.graph.transitions:
+        for transition in graph.transitions:
             self.line(f"IF {self.names[(transition.transition.id, 'f')]} THEN")
             for key in transition.sources:
                 self.line(f"{INDENT}{self.step_name(key)}(X := FALSE);")
                 if (key, "left") in self.names:
                     self.line(f"{INDENT}{self.names[(key, 'left')]} := TRUE;")
             self.line("END_IF;")
-        for transition in self.graph.transitions:
+        for transition in graph.transitions:
             self.line(f"IF {self.names[(transition.transition.id, 'f')]} THEN")
             for key in transition.targets:
                 self.line(f"{INDENT}{self.step_name(key)}.X := TRUE;")
                 if (key, "entered") in self.names:
                     self.line(f"{INDENT}{self.names[(key, 'entered')]} := TRUE;")
             self.line("END_IF;")
+        if owner is not None:  # the flags are about the POU's chart
+            return
         if (trans := self.flag("SFCTRANS")) and self.graph.transitions:
             fired = " OR ".join(self.names[(t.transition.id, "f")] for t in self.graph.transitions)
             self.line(f"{trans} := {fired};")
         if current := self.flag("SFCCURRENTSTEP"):
             self.line(f"{current} := '';")
-            for slots in self.plan.steps.values():
+            for slots in (s for s in self.plan.steps.values() if s.owner is None):
                 self.line(f"IF {slots.step.name}.X THEN")
                 self.line(f"{INDENT}{current} := '{slots.step.name}';")
                 self.line("END_IF;")
