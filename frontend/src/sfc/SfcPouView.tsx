@@ -16,7 +16,7 @@ import { onlineStore, useOnline } from "../online/store";
 import { useLdOnline } from "../ld/useLdOnline";
 import { onlineReadOnly, useShownInstance } from "../online/editorOnline";
 import { useFbdOnline } from "../fbd/useFbdOnline";
-import { usePanels } from "../panels/store";
+import { usePanels } from "../store/panels";
 import { useWorkspace } from "../store/project";
 import { StEditor, type StEditorProps } from "../st/StEditor";
 import { accumulatorMarks } from "../st/ilOnline";
