@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 
-from .steps import new_pou, new_project
+from .steps import new_pou, new_project, open_pou, store_project
 
 pytestmark = pytest.mark.browser
 
@@ -34,3 +34,37 @@ def test_a_placed_node_takes_the_typed_name(page, server: str, how: str) -> None
     assert node_box["y"] <= field_box["y"] + field_box["height"] / 2 <= node_box["y"] + node_box["height"]
     page.keyboard.press("Enter")
     page.locator(".react-flow__node .fbd-text", has_text="Speed").wait_for()
+
+
+def test_the_field_stays_on_the_node_while_it_suggests_names(page, server: str) -> None:
+    """With variables to suggest, the list opens below the field; the field stays on the node (the list in the
+    node's flow drew it ~60 px above the node)."""
+    store_project(
+        server,
+        {
+            "name": "named",
+            "pous": [
+                {
+                    "name": "Main",
+                    "kind": "program",
+                    "language": "fbd",
+                    "declarations": "VAR\n    Speed : INT;\n    Start : BOOL;\n    Total : INT;\nEND_VAR",
+                    "body": {"networks": [{"id": "n1", "nodes": [], "wires": []}]},
+                }
+            ],
+        },
+    )
+    page.goto(server)
+    open_pou(page, "named", "Main")
+    canvas = page.locator(".fbd-network .react-flow__pane").first
+    canvas.wait_for()
+    page.get_by_role("toolbar", name="FBD editing").get_by_role("button", name="Input", exact=True).click()
+    field = page.get_by_role("combobox", name="Input operand")
+    field.wait_for()
+    page.keyboard.type("S")
+    suggestions = page.get_by_role("listbox")
+    suggestions.get_by_role("option").first.wait_for()
+    node = page.locator(".react-flow__node").filter(has=field)
+    field_box, node_box, list_box = field.bounding_box(), node.bounding_box(), suggestions.bounding_box()
+    assert node_box["y"] <= field_box["y"] + field_box["height"] / 2 <= node_box["y"] + node_box["height"]
+    assert list_box["y"] >= field_box["y"] + field_box["height"] - 1  # below the field

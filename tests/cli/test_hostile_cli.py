@@ -114,7 +114,7 @@ def test_an_unwritable_output_is_a_message_not_a_traceback(capsys, tmp_path: Pat
 
 
 def test_a_bug_is_one_line_with_exit_70(capsys, monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setattr("ladderlab.cli.check_project", lambda project: 1 / 0)
+    monkeypatch.setattr("ladderlab.simulation.check.check_project", lambda project: 1 / 0)
     assert main(["check", str(EXAMPLES / "motor")]) == EXIT_INTERNAL
     err = capsys.readouterr().err
     assert err == "ladderlab: internal error: ZeroDivisionError: division by zero (please report it)\n"

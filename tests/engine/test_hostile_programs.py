@@ -216,6 +216,25 @@ def test_nesting_beyond_the_documented_limits_is_a_located_error(monkeypatch: py
     assert error.message.startswith("this expression nests deeper than the limit of 1,000 levels")
 
 
+@pytest.mark.parametrize(
+    ("setting", "body", "code_line"),
+    [
+        # the tightest texts: one character per expression level, 15 per statement level (the parser skips
+        # the nesting walk for texts too short to cross a limit: st/parser.py, _nesting_needs)
+        ("LADDERLAB_MAX_EXPRESSION_DEPTH", "x:=" + "-" * 12 + "1;", 1),
+        ("LADDERLAB_MAX_STATEMENT_DEPTH", "IF b THEN " * 11 + "END_IF;" * 11, 1),
+        ("LADDERLAB_MAX_STATEMENT_DEPTH", "IF(b)THEN\n" * 11 + "END_IF\n" * 11, 11),
+    ],
+)
+def test_the_shortest_texts_beyond_a_lowered_limit_are_refused(
+    monkeypatch: pytest.MonkeyPatch, setting: str, body: str, code_line: int
+) -> None:
+    monkeypatch.setenv(setting, "10")
+    project = Project(name="p", pous=[st("Main", "VAR x : DINT; b : BOOL; END_VAR", body)])
+    [error] = [d for d in build_project(project, "fast").diagnostics if d.severity == "error"]
+    assert (error.code, error.line) == ("ST-TOO-DEEP", code_line)
+
+
 # ----------------------------------------------------------------- size limits (issue 18 item 5)
 
 

@@ -649,7 +649,8 @@ def test_sfc_and_il_pous_import_actions_outside_sfc_and_foreign_add_data_are_rep
         (
             "PLCOPEN-UNSUPPORTED",
             "Main",
-            "action 'Blink' of POU Main was not imported: only SFC POUs have actions in LadderLab",
+            "action 'Blink' of POU Main was not imported: LadderLab imports an SFC POU's or a function block's "
+            "actions with ST bodies",
         ),
         (
             "PLCOPEN-ADDDATA",

@@ -80,6 +80,10 @@ def fjump(id: str, target: str) -> fbd.FbdJump:
     return fbd.FbdJump(id=id, target=target)
 
 
+def flabel(id: str, name: str) -> fbd.FbdLabel:
+    return fbd.FbdLabel(id=id, name=name)
+
+
 def fret(id: str) -> fbd.FbdReturn:
     return fbd.FbdReturn(id=id)
 

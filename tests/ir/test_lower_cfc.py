@@ -16,7 +16,7 @@ from ladderlab.ir.lower_fbd import evaluation_order
 from ladderlab.model import fbd
 from ladderlab.model.cfc import CfcBody
 from ladderlab.model.project import Pou
-from tests.ir.diagram_support import blk, errors, fjump, fret, inp, net, out, simulate, trace
+from tests.ir.diagram_support import blk, fret, inp, net, out, simulate, trace
 
 
 def cfc_pou(name: str, declarations: str, chart: fbd.FbdNetwork) -> Pou:
@@ -122,14 +122,6 @@ def test_return_acts_at_its_order_number_CFC_02():
     )
     sim = simulate(cfc_pou("Main", INTS, chart))
     assert trace(sim, "Main", [{"cond": True}, {"cond": False}], ["x", "y"]) == [(1, 0), (1, 1)]
-
-
-def test_jump_on_a_chart_is_a_located_error():
-    chart = net("chart", [fjump("j", "Skip")], [])
-    assert errors(cfc_pou("Main", INTS, chart)) == [
-        "POU Main, chart, jump to Skip: error CFC-JUMP: jump to 'Skip': a CFC chart has no networks or labels to jump "
-        "to; use a conditional return, or EN inputs to skip blocks"
-    ]
 
 
 def test_a_chart_is_one_network_CFC_01():

@@ -250,10 +250,11 @@ def test_a_program_in_a_block_a_bit_as_output_and_a_malformed_label():
         net("n1", [blk("x", "Other")], []),
         net("n2", [inp("i", "a"), out("o", "w.3")], [("i.OUT", "o.IN")]),
         net("n3", [], [], label="2go"),
+        kind="function_block",
     )
     assert errors(main, other) == [
         "POU Main, network 3 \"2go\": error FBD-BAD-LABEL: network label '2go' must be an identifier or an unsigned "
         "integer",
-        "POU Main, network 1, Other: error FBD-NOT-CALLABLE: Other is a program: programs are run by tasks, not called "
-        "from a diagram",
+        "POU Main, network 1, Other: error FBD-NOT-CALLABLE: a function block cannot call the program Other: only "
+        "programs call programs",
     ]

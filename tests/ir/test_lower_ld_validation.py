@@ -117,10 +117,6 @@ CASES = {
         rung("n1", box("x", "SEL", IN0="n", IN1="1")),
         "POU Main, network 1, SEL: error LD-BOX-POWER: SEL has no BOOL output to pass the power flow on: switch on EN/ENO",
     ),
-    "program called from a box": (
-        rung("n1", box("x", "Other")),
-        "POU Main, network 1, Other: error LD-NOT-CALLABLE: Other is a program: programs are run by tasks, not called from a diagram",
-    ),
     "unknown jump target": (
         rung("n1", contact("c", "a"), jump("j", "nowhere")),
         "POU Main, network 1, jump to nowhere: error LD-UNKNOWN-LABEL: jump to 'nowhere', but no network of this POU has that label",

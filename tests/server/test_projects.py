@@ -377,6 +377,7 @@ def test_save_new_pou_appends_it(client: TestClient, motor: str) -> None:
     oo_defaults = {
         "methods": [],
         "properties": [],
+        "actions": [],
         "extends": None,
         "implements": [],
         "abstract": False,

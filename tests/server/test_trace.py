@@ -16,7 +16,8 @@ from ladderlab.model import Project, Task
 from ladderlab.model.monitor import MAX_TRACE_SAMPLES, TraceTrigger
 from ladderlab.simulation.build import build_project
 from ladderlab.simulation.registry import SimulationRegistry
-from ladderlab.simulation.trace import TraceBook, TraceInbox, plan_trace
+from ladderlab.simulation.trace import TraceBook, plan_trace
+from ladderlab.simulation.trace_inbox import TraceInbox
 from ladderlab.storage import Workspace
 
 from .helpers import st_program

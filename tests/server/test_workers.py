@@ -23,8 +23,8 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from ladderlab.model import Project, Task
+from ladderlab.simulation.commands import changes
 from ladderlab.simulation.registry import SimulationRegistry, SimulationSettings
-from ladderlab.simulation.runner import changes
 from ladderlab.simulation.supervisor import receive
 from ladderlab.storage import Workspace
 from tests.support import NESTED_LOOPS, NESTED_LOOPS_DECLARATIONS

@@ -5,7 +5,8 @@ simultaneous divergence whose branches start with a step and end with a step-lik
 are a transition or an alternative divergence whose first branch joins the others (the rest may end with a jump).
 Jumps go back to a step drawn before them in the same simultaneous branch (or the main sequence): loops, as charts
 use jumps; every chart drawn is safe. (A forward jump is tested on its own in test_graph.py.)
-Conditions are unique (``c<n>``), so a transition can be recognised after a round trip.
+Conditions are unique (``c<n>``), so a transition can be recognised after a round trip; with ``named``, a transition
+may instead read the named transition ``T<n>`` (SFC-03), written in ST (``c<n>``) or IL (``LD c<n>``).
 """
 
 from __future__ import annotations
@@ -25,6 +26,7 @@ class _Drawer:
         self.jumps: list[tuple[dict, tuple, int]] = []
         self.actions: set[str] = set()
         self.pool = ["Act1", "Act2", "Act3"]  # the actions steps of the chart being drawn associate
+        self.transitions: list[dict] = []  # every transition drawn, in all charts
 
     def new(self, prefix: str) -> str:
         self.count += 1
@@ -49,6 +51,7 @@ class _Drawer:
         out = {"type": "transition", "id": f"t{number}", "condition": f"c{number}"}
         if self.draw(st.integers(0, 5)) == 0:
             out["priority"] = self.draw(st.integers(0, 3))
+        self.transitions.append(out)
         return out
 
     def step_like(self, context: tuple, depth: int, first: bool = False) -> dict:
@@ -102,10 +105,11 @@ def charts(draw) -> list:
 
 
 @st.composite
-def sfc_bodies(draw, nested: bool = False) -> dict:
+def sfc_bodies(draw, nested: bool = False, named: bool = False) -> dict:
     """A random SFC body: a chart, the ST or IL actions it names and the BOOL conditions it reads. ``nested``: also an
     action ``Sub`` written in SFC (a random chart whose steps associate In1, In2), associated with the initial step
-    with a random qualifier (SFC-02, docs/sfc.md "Actions written in SFC")."""
+    with a random qualifier (SFC-02, docs/sfc.md "Actions written in SFC"). ``named``: some transitions read a named
+    transition ``T<n>`` in ST or IL that reads their condition ``c<n>``."""
     drawer = _Drawer(draw)
     chart = drawer.chart()
     actions = [_action(draw, name, "n", i + 1) for i, name in enumerate(sorted(drawer.actions))]
@@ -121,7 +125,15 @@ def sfc_bodies(draw, nested: bool = False) -> dict:
             association["time"] = f"T#{draw(st.integers(1, 9)) * 10}ms"
         chart[0]["actions"].append(association)
         drawer.actions = outer
-    return {"chart": {"elements": chart}, "actions": actions}
+    transitions = []
+    for transition in drawer.transitions if named else []:
+        if draw(st.booleans()):
+            condition = transition["condition"]
+            transition["condition"] = f"T{condition[1:]}"
+            il = draw(st.booleans())
+            body = f"LD {condition}" if il else condition
+            transitions.append({"name": transition["condition"], "language": "il" if il else "st", "body": body})
+    return {"chart": {"elements": chart}, "actions": actions, "transitions": transitions}
 
 
 def _action(draw, name: str, counter: str, step: int) -> dict:

@@ -54,6 +54,11 @@ def jump(target: str) -> dict:
     return {"type": "jump", "id": _id("j"), "target": target}
 
 
+def ld_network(*elements: dict) -> dict:
+    """An LD body (an action's or a named transition's) of one network holding ``elements``."""
+    return {"networks": [{"id": _id("n"), "elements": list(elements)}]}
+
+
 def sfc_pou(
     name: str,
     declarations: str,

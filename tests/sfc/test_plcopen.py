@@ -25,9 +25,12 @@ from .support import build
 
 def sfc_project(body: dict) -> Project:
     """A program ``Seq`` of ``body`` with the BOOL conditions of its charts (its own and its SFC actions') and the
-    counters its actions add to (``n``, ``m``: tests/sfc/strategies.py)."""
+    counters its actions add to (``n``, ``m``: tests/sfc/strategies.py); a condition that is a named transition is
+    not declared, the ``c<n>`` the named transition reads is."""
     charts = [body["chart"], *(a["body"] for a in body.get("actions", []) if a["language"] == "sfc")]
-    conditions = sorted({t["condition"] for chart in charts for t in _transitions(chart["elements"])})
+    named = body.get("transitions", [])
+    written = {t["condition"] for chart in charts for t in _transitions(chart["elements"])}
+    conditions = sorted(written - {t["name"] for t in named} | {t["body"].split()[-1] for t in named})
     counters = "n, m : INT;"
     declarations = (
         f"VAR {', '.join(conditions)} : BOOL; {counters} END_VAR" if conditions else f"VAR {counters} END_VAR"

@@ -7,7 +7,7 @@ import pytest
 from ladderlab.ir.lower_project import lower_project
 from ladderlab.model import Pou
 
-from .support import alt, assoc, jump, par, project, sfc_pou, step, tr
+from .support import alt, assoc, jump, ld_network, par, project, sfc_pou, step, tr
 
 DECLS = "VAR go, x, Lamp : BOOL; n : INT; t1 : TON; END_VAR"
 
@@ -155,19 +155,12 @@ def test_a_transition_written_in_ld_may_not_assign_or_call_a_function_block():
     transition = {
         "name": "Ready",
         "language": "ld",
-        "body": {
-            "networks": [
-                {
-                    "id": "n1",
-                    "elements": [
-                        {"type": "contact", "id": "c1", "var": "go"},
-                        {"type": "box", "id": "b1", "call": "TON", "instance": "t1", "inputs": {"PT": "T#1s"}},
-                        {"type": "coil", "id": "k1", "var": "Lamp"},
-                        {"type": "coil", "id": "k2", "var": "Ready"},
-                    ],
-                }
-            ]
-        },
+        "body": ld_network(
+            {"type": "contact", "id": "c1", "var": "go"},
+            {"type": "box", "id": "b1", "call": "TON", "instance": "t1", "inputs": {"PT": "T#1s"}},
+            {"type": "coil", "id": "k1", "var": "Lamp"},
+            {"type": "coil", "id": "k2", "var": "Ready"},
+        ),
     }
     found = problems(sfc_pou("Main", DECLS, [step("S0"), tr("Ready"), jump("S0")], transitions=[transition]))
     sfc03 = [(f, e, m) for c, f, e, m in found if c == "SFC-CONDITION"]

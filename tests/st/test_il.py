@@ -5,7 +5,8 @@ from __future__ import annotations
 
 import pytest
 
-from ladderlab.st.il_parser import looks_like_il, parse_il
+from ladderlab.st.il_parser import parse_il
+from ladderlab.st.il_words import looks_like_il
 from ladderlab.st.project_text import source_to_project
 from tests.ir.helpers import errors
 

@@ -11,15 +11,9 @@ from collections.abc import Iterator
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from ..engine.codegen import VARIANTS
-from ..engine.inputs import AppliedInput
+from ..engine.variants import VARIANTS
 from ..model import has_errors
 from ..model.schema import SCHEMA_MODELS, schema_of
-from ..simulation.build import build_project
-from ..simulation.check import check_project
-from ..simulation.conditions import BadCondition, parse_condition
-from ..simulation.events import parse_events
-from ..simulation.recording import Recording, read_recording
 from ..storage import StorageError, load_project_path
 from ..storage.atomic import write_atomic
 from ..storage.project_folder import revision_of
@@ -27,13 +21,13 @@ from ..storage.text_files import CLI_HINT, xml_for_parser
 from .doc import add_doc_command
 from .encoding import add_encoding_option, encoding_of
 from .libraries import add_library_option, using_libraries
-from .run import Row, jsonl_line, parse_duration, parse_fault, parse_set, run_scans, table_lines
 from .test import add_test_command
 
-if TYPE_CHECKING:  # the server is imported only by the commands that start it
+if TYPE_CHECKING:  # the server and the compiler are imported only by the commands that use them (issue 27)
     from ..model import Project
     from ..server.security import Security
     from ..simulation.build import Build
+    from .run import Row
 
 EXIT_OK, EXIT_ERRORS, EXIT_USAGE, EXIT_RUNTIME, EXIT_NOT_REACHED, EXIT_INTERNAL = 0, 1, 2, 3, 4, 70
 #: How many scans ``--until`` runs at most when neither --cycles nor --for says.
@@ -242,6 +236,8 @@ def _load(args: argparse.Namespace) -> Project:
 
 
 def _check(args: argparse.Namespace) -> int:
+    from ..simulation.check import check_project
+
     project = _load(args)
     diagnostics = check_project(project)
     if args.format == "json":
@@ -261,6 +257,8 @@ def _build(args: argparse.Namespace, variant: str = "fast") -> Build | None:
 
 def _built(project: Project, variant: str = "fast") -> Build | None:
     """Build ``project``; prints the diagnostics and returns None when it has errors."""
+    from ..simulation.build import build_project
+
     build = build_project(project, variant)
     for diagnostic in build.diagnostics:
         print(diagnostic.format(), file=sys.stderr)
@@ -268,6 +266,12 @@ def _built(project: Project, variant: str = "fast") -> Build | None:
 
 
 def _run(args: argparse.Namespace) -> int:
+    from ..engine.inputs import AppliedInput
+    from ..simulation.conditions import BadCondition, parse_condition
+    from ..simulation.events import parse_events
+    from ..simulation.recording import Recording
+    from .run import parse_duration, parse_fault, parse_set, run_scans
+
     try:
         sets = [parse_set(text) for text in args.sets]
         for_ms = parse_duration(args.for_) if args.for_ is not None else None
@@ -320,6 +324,8 @@ def _run(args: argparse.Namespace) -> int:
 
 
 def _print_rows(rows: Iterator[Row], watch: list[str], form: str, command: str) -> int:
+    from .run import jsonl_line, table_lines
+
     try:
         lines = (jsonl_line(row) for row in rows) if form == "jsonl" else table_lines(rows, watch)
         for line in lines:
@@ -332,6 +338,9 @@ def _print_rows(rows: Iterator[Row], watch: list[str], form: str, command: str) 
 
 def _replay(args: argparse.Namespace) -> int:
     """The rows of a recorded run again: the same project revision, the same inputs at the same scans."""
+    from ..simulation.recording import read_recording
+    from .run import run_scans
+
     try:
         recording = read_recording(args.recording)
         events = recording.scheduled(str(args.recording))

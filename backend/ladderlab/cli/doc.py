@@ -20,7 +20,6 @@ import tempfile
 from pathlib import Path
 
 from ..server.app import STATIC_DIR
-from ..simulation.document import UnknownPou, print_document
 from ..storage import load_project_path
 from ..storage.atomic import write_atomic
 
@@ -44,6 +43,8 @@ def add_doc_command(sub: argparse._SubParsersAction[argparse.ArgumentParser]) ->
 
 
 def run_doc_command(args: argparse.Namespace) -> int:
+    from ..simulation.document import UnknownPou, print_document
+
     suffix = args.output.suffix.lower()
     if suffix not in (".pdf", ".html", ".htm"):
         print(f"ladderlab doc: {args.output}: the output must end in .pdf or .html", file=sys.stderr)

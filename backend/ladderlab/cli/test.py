@@ -12,14 +12,15 @@ import argparse
 import json
 import sys
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from ..storage import load_project_path
 from ..storage.atomic import write_atomic
-from ..testing.grade import grade
-from ..testing.report import jsonl_report, junit_report, result_lines, text_report
-from ..testing.run import DEFAULT_SCAN_BUDGET, Options
-from ..testing.suite import run_suite, suite_files
+from ..testing import DEFAULT_SCAN_BUDGET
 from .encoding import add_encoding_option, encoding_of
+
+if TYPE_CHECKING:  # the test runner imports the compiler: imported when a command runs tests (issue 27)
+    from ..testing.run import Options
 
 
 def add_test_command(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -43,6 +44,10 @@ def add_test_command(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -
 
 
 def run_test_command(args: argparse.Namespace) -> int:
+    from ..testing.report import jsonl_report, junit_report, result_lines, text_report
+    from ..testing.run import Options
+    from ..testing.suite import run_suite, suite_files
+
     if args.max_scans < 1:
         print("ladderlab test: --max-scans must be at least 1", file=sys.stderr)
         return 2
@@ -87,6 +92,9 @@ def run_test_command(args: argparse.Namespace) -> int:
 
 
 def _grade(args: argparse.Namespace, options: Options) -> int:
+    from ..testing.grade import grade
+    from ..testing.suite import run_suite, suite_files
+
     lines = []
     for folder in args.projects:
         project = load_project_path(folder, encoding_of(args))

@@ -44,7 +44,12 @@ class Callee:
 
     @functools.cached_property
     def is_fb(self) -> bool:  # asked several times for every box
-        return self.std_fb is not None or (self.pou is not None and self.pou.kind == "FUNCTION_BLOCK")
+        return self.std_fb is not None or (self.pou is not None and self.pou.kind in ("FUNCTION_BLOCK", "PROGRAM"))
+
+    @property
+    def is_program(self) -> bool:
+        """A PROGRAM box (seed 003's FBD program call): called like an FB whose one instance is the program."""
+        return self.pou is not None and self.pou.kind == "PROGRAM"
 
     def input_names(self) -> list[str]:
         """The declared inputs (VAR_IN_OUT included) in formal order; an extensible function's minimum."""
@@ -156,6 +161,24 @@ def resolve_callee(ops: Operands, call: str, instance: str | None, at: At) -> tu
             )
             return None
         return callee, None
+    if callee.is_program:  # its one instance is the program itself (docs/st.md, "Program calls")
+        caller = ops.ctx.info.kind if ops.ctx.info is not None else "PROGRAM"
+        if caller != "PROGRAM":
+            ops.report(
+                at,
+                f"{ops.lang}-NOT-CALLABLE",
+                f"a {caller.lower().replace('_', ' ')} cannot call the program {callee.name}: only programs call "
+                "programs",
+            )
+            return None
+        if instance and instance.strip() and instance.strip().upper() != callee.name.upper():
+            ops.report(
+                at,
+                f"{ops.lang}-INSTANCE",
+                f"{callee.name} is a program: its one instance is the program itself (remove '{instance.strip()}')",
+            )
+            return None
+        return callee, callee.name
     if not instance or not instance.strip():
         ops.report(
             at,
@@ -186,13 +209,6 @@ def _callee(ops: Operands, name: str, at: At) -> Callee | None:
             f"{ops.lang}-PLANT",
             f"{pou.name} is a plant: it models the process and runs in the plant task before every scan; "
             "control code cannot call it",
-        )
-        return None
-    if pou is not None and pou.kind == "PROGRAM":
-        ops.report(
-            at,
-            f"{ops.lang}-NOT-CALLABLE",
-            f"{pou.name} is a program: programs are run by tasks, not called from a diagram",
         )
         return None
     if pou is not None:
@@ -271,6 +287,8 @@ def check_call(
 
 
 def _fb(callee: Callee, node: ast.Call) -> t.FbType | None:
+    if callee.is_program:  # the pins of the program's one instance, as an FB type's (lower_st.fb_pins)
+        return t.FbType(callee.pou.name, pou=callee.pou)
     return node.callee.ty if callee.is_fb else None
 
 

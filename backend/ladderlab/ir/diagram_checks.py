@@ -1,4 +1,4 @@
-"""Validation shared by the LD and FBD lowerings: element ids, network labels and jump targets.
+"""Validation shared by the LD, FBD and CFC lowerings: element ids, network and chart labels, jump targets.
 
 Both languages locate problems the same way (POU, network, element, pin) and
 follow the same label rules (GR-03, GR-09): a label is an identifier or an
@@ -64,16 +64,43 @@ def check_labels(networks: Iterable[object], report: Report, lang: str) -> dict[
     return labels
 
 
+def check_chart_labels(labels: Iterable[tuple[str, str]], report: Report, *, network: str) -> dict[str, str]:
+    """A CFC chart's label elements, (element id, name) in the chart's order: report malformed and duplicate
+    names (GR-03's rule for network labels); return {canonical label: element id} of the usable ones."""
+    found: dict[str, str] = {}
+    for element, name in labels:
+        if not _LABEL.match(name.strip()):
+            report(
+                "FBD-BAD-LABEL",
+                f"label '{name}' must be an identifier or an unsigned integer",
+                network=network,
+                element=element,
+            )
+        elif canonical_label(name) in found:
+            report("FBD-DUPLICATE-LABEL", f"label '{name}' is on the chart twice", network=network, element=element)
+        else:
+            found[canonical_label(name)] = element
+    return found
+
+
 def check_jump_target(
-    target: str, labels: dict[str, str], report: Report, lang: str, *, network: str, element: str
+    target: str,
+    labels: dict[str, str],
+    report: Report,
+    lang: str,
+    *,
+    network: str,
+    element: str,
+    holder: str = "no network of this POU has",
 ) -> str | None:
-    """The canonical label a jump goes to, or None (reported) when no network of the POU has it."""
+    """The canonical label a jump goes to, or None (reported) when no network of the POU (``holder``: the
+    chart) has it."""
     key = canonical_label(target)
     if key in labels:
         return key
     report(
         f"{lang}-UNKNOWN-LABEL",
-        f"jump to '{target}', but no network of this POU has that label" + did_you_mean(target, labels),
+        f"jump to '{target}', but {holder} that label" + did_you_mean(target, labels),
         network=network,
         element=element,
     )

@@ -78,6 +78,9 @@ class Operands:
         self.shapes = CallShapes(self)  # box call templates (diagram_calls)
         self._temps: dict[IrType, list[Var]] = {}
         self._used: dict[IrType, int] = {}
+        #: every temporary its own slot kept between scans (a CFC chart with jumps: a value whose producer a jump
+        #: skipped is read as it was left, never as another value's leftover)
+        self.kept_temps = False
         self._muted: list[str] | None = None
         self._clean_targets: set[tuple] = set()  # (type, class, constness) of variables written without a word
 
@@ -91,6 +94,8 @@ class Operands:
         Each is written before it is read within its network, so all networks share the same few
         slots: a 10,000-network POU does not get 50,000 slots, and the scan touches few names.
         """
+        if self.kept_temps:
+            return self.ctx.hidden("P" if ty == BOOL else "T", ty)
         pool = self._temps.setdefault(ty, [])
         used = self._used.get(ty, 0)
         if used == len(pool):

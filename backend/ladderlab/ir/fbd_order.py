@@ -15,8 +15,8 @@ IEC 61131-3 8.1.5 (GR-05, GR-06) and 8.3 (GR-30) as LadderLab applies them:
 * Output nodes run after their source; input nodes are read just before their
   first consumer; jumps and returns run last, once every other node of the
   network is evaluated (GR-05 c).
-* A CFC chart (``explicit=True``, CFC-02) runs its blocks, outputs, jumps and
-  returns in the ``order`` list's order whatever the wiring (elements it leaves
+* A CFC chart (``explicit=True``, CFC-02) runs its blocks, outputs, jumps,
+  labels and returns in the ``order`` list's order whatever the wiring (elements it leaves
   out follow in the FBD order above); every wire into an element that runs
   before the wire's producer is feedback.
 
@@ -39,7 +39,7 @@ from .diagram_checks import Report
 # (ABC) node classes, and the structure of a large diagram asks it some 100 times per network.
 PRODUCERS = frozenset({"block", "input", "continuation"})  # nodes with an output pin
 CONSUMERS = frozenset({"block", "output", "jump", "return", "connector"})  # nodes with an input pin
-CONTROL = frozenset({"jump", "return"})
+CONTROL = frozenset({"jump", "return", "label"})  # labels: CFC charts only (an FBD network reports one)
 # The one pin of the simple nodes, as the editor draws them.
 SIMPLE_OUT = "OUT"
 SIMPLE_IN = "IN"
@@ -50,6 +50,7 @@ _KIND = {
     "output": "an output",
     "jump": "a jump",
     "return": "a return",
+    "label": "a label",
     "connector": "a connector",
     "continuation": "a continuation",
     "comment": "a comment",
@@ -87,6 +88,8 @@ class NetworkGraph:
                 visitor.block(node)
             elif kind == "output":
                 visitor.output_node(node)
+            elif kind == "label":
+                visitor.label(node)
             else:
                 visitor.control(node)
 
@@ -96,6 +99,7 @@ class NodeVisitor(Protocol):
     def block(self, node: fbd.Block) -> None: ...
     def output_node(self, node: fbd.OutputNode) -> None: ...
     def control(self, node: fbd.FbdJump | fbd.FbdReturn) -> None: ...
+    def label(self, node: fbd.FbdLabel) -> None: ...
 
 
 def wire_text(wire: fbd.Wire, names: NetworkNames) -> str:
@@ -327,7 +331,7 @@ def _order(graph: NetworkGraph, network: fbd.FbdNetwork, report: Report) -> list
 _NONE: dict[str, Source] = {}  # no inputs (read only)
 
 #: The elements of a CFC chart that have an execution order number (input nodes are read where used).
-EXECUTED = frozenset({"block", "output", "jump", "return"})
+EXECUTED = frozenset({"block", "output", "jump", "return", "label"})
 
 
 def _explicit_order(graph: NetworkGraph, network: fbd.FbdNetwork) -> list[str]:

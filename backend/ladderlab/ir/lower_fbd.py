@@ -26,7 +26,14 @@ from ..st import ast
 from ..st import types as t
 from .context import PouContext
 from .diagram_calls import Callee, PinValue, call_ast, check_call, lower_call, resolve_callee, type_call
-from .diagram_checks import canonical_label, check_jump_target, check_labels, check_unique_ids, check_unique_networks
+from .diagram_checks import (
+    canonical_label,
+    check_chart_labels,
+    check_jump_target,
+    check_labels,
+    check_unique_ids,
+    check_unique_networks,
+)
 from .diagram_operands import At, Operands
 from .fbd_order import Analyses, NetworkGraph, Source, analyse, wire_text
 from .lower_expr import convert
@@ -69,27 +76,33 @@ def lower_fbd_body(pou: ModelPou, ctx: PouContext) -> list[Block]:
 
 
 def lower_cfc_body(pou: ModelPou, ctx: PouContext) -> list[Block]:
-    """A CFC chart as one IR block: its elements in their execution order numbers' order (CFC-02,
-    fbd_order), otherwise lowered exactly as an FBD network."""
+    """A CFC chart: its elements in their execution order numbers' order (CFC-02, fbd_order), otherwise lowered
+    exactly as an FBD network; each label element starts a labelled IR block its jumps go to (a jump skips the
+    elements numbered between it and its label; backward, the engine's watchdog bounds the loop)."""
     body: CfcBody = pou.body  # type: ignore[assignment]  # language "cfc": the model made the body a CfcBody
     ctx.places = Places(body)
-    check_unique_ids(((1, body.chart.id, node.id) for node in body.chart.nodes), ctx.report, "FBD")
-    for node in body.chart.nodes:
-        if isinstance(node, fbd.FbdJump):
-            ctx.report(
-                "CFC-JUMP",
-                f"jump to '{node.target}': a CFC chart has no networks or labels to jump to; use a conditional "
-                "return, or EN inputs to skip blocks",
-                network=body.chart.id,
-                element=node.id,
-            )
-    return [_Network(ctx, Operands(ctx, "FBD"), {}, body.chart, explicit=True).lower(Analyses())]
+    chart = body.chart
+    check_unique_ids(((1, chart.id, node.id) for node in chart.nodes), ctx.report, "FBD")
+    labels = check_chart_labels(
+        ((node.id, node.name) for node in chart.nodes if isinstance(node, fbd.FbdLabel)), ctx.report, network=chart.id
+    )
+    ops = Operands(ctx, "FBD")
+    ops.kept_temps = any(isinstance(node, fbd.FbdJump) for node in chart.nodes)
+    return _Network(ctx, ops, labels, chart, explicit=True).lower_chart()
 
 
 def evaluation_order(network: fbd.FbdNetwork, explicit: bool = False) -> list[str]:
     """The node ids of ``network`` in the order they run, for the editor's execution-order badges;
     ``explicit``: a CFC chart (its ``order`` list decides, CFC-02)."""
     return analyse(network, lambda *_args, **_kwargs: None, explicit).order
+
+
+@dataclass(frozen=True)
+class _LabelMark:
+    """Where a CFC chart's label stands among the chart's statements: a new IR block starts there."""
+
+    label: str
+    origin: Origin
 
 
 @dataclass
@@ -112,7 +125,7 @@ class _Network:
     ):
         self.ctx, self.ops, self.labels, self.network = ctx, ops, labels, network
         self.explicit = explicit  # a CFC chart: its order list is the order (CFC-02)
-        self.out: list[Stmt | list[Stmt]] = []  # a block's statements are a list in its place (_Chained)
+        self.out: list[Stmt | _LabelMark | list[Stmt]] = []  # a block's statements are a list in its place (_Chained)
         self.chained: dict[str, _Chained] = {}  # chained blocks waiting for the block they feed
         #: (producer id, PIN) -> what its consumers read; missing when the producer could not be lowered
         self.values: dict[tuple[str, str], PinValue] = {}
@@ -128,6 +141,28 @@ class _Network:
         self.loops: dict[tuple[str, str], tuple[Var, t.Type]] = {}
 
     def lower(self, analyses: Analyses) -> Block:
+        """The network as one IR block, labelled when it is a jump target."""
+        statements = self._statements(analyses)
+        label = canonical_label(self.network.label) if self.network.label else None
+        return Block(
+            [s for s in statements if not isinstance(s, _LabelMark)],  # an FBD network's labels were reported
+            diagram_origin(self.ctx.name, self.network.id),
+            label if label is not None and self.labels.get(label) == self.network.id else None,
+        )
+
+    def lower_chart(self) -> list[Block]:
+        """A CFC chart as IR blocks: the elements before the first label, then one labelled block per label (from
+        its order number on); a first block with nothing in it is left out."""
+        blocks = [Block([], diagram_origin(self.ctx.name, self.network.id))]
+        for statement in self._statements(Analyses()):
+            if isinstance(statement, _LabelMark):
+                blocks.append(Block([], statement.origin, statement.label))
+            else:
+                blocks[-1].statements.append(statement)
+        return blocks if blocks[0].statements or len(blocks) == 1 else blocks[1:]
+
+    def _statements(self, analyses: Analyses) -> list[Stmt | _LabelMark]:
+        """The statements of the nodes in their order (a CFC chart's labels marked where they stand)."""
         self.ops.new_network()
         if self.explicit:
             self.graph = graph = analyse(self.network, self.ctx.report, explicit=True)
@@ -147,12 +182,7 @@ class _Network:
         for block in list(self.chained.values()):  # chained into a block that was not lowered: typed alone
             if self.chained.pop(block.node.id, None) is not None:
                 self._lower_block(block, None)
-        label = canonical_label(self.network.label) if self.network.label else None
-        return Block(
-            [s for item in self.out for s in (item if isinstance(item, list) else (item,))],
-            diagram_origin(self.ctx.name, self.network.id),
-            label if label is not None and self.labels.get(label) == self.network.id else None,
-        )
+        return [s for item in self.out for s in (item if isinstance(item, list) else (item,))]
 
     # ------------------------------------------------------------ helpers
     def at(self, node: str, pin: str | None = None) -> At:
@@ -317,6 +347,14 @@ class _Network:
         """GR-07..10: unwired, a jump or return always acts; wired, when its input is TRUE."""
         origin = self.origin(node.id)
         wired = "IN" in self.graph.inputs.get(node.id, {})
+        if self.explicit and isinstance(node, fbd.FbdJump) and not wired:
+            self.ops.report(
+                self.at(node.id, "IN"),
+                "CFC-JUMP-CONDITION",
+                f"the jump to '{node.target}' has no condition: wire a BOOL value into its input (TRUE for a jump "
+                "every scan)",
+            )
+            return
         value = self.source(node.id, "IN")
         if (node.id, "IN") in self.graph.broken or (wired and value is None):
             return  # reported where the wire breaks or the value fails
@@ -324,14 +362,33 @@ class _Network:
         if condition is None:
             return
         self.out.append(Probe(node.id, condition, origin))
-        if isinstance(node, fbd.FbdJump) and not self.explicit:  # a chart's jumps are reported (CFC-JUMP)
+        if isinstance(node, fbd.FbdJump):
+            holder = "no label element of the chart has" if self.explicit else "no network of this POU has"
             label = check_jump_target(
-                node.target, self.labels, self.ctx.report, "FBD", network=self.network.id, element=node.id
+                node.target,
+                self.labels,
+                self.ctx.report,
+                "FBD",
+                network=self.network.id,
+                element=node.id,
+                holder=holder,
             )
             if label is not None:
                 self.out.append(Jump(label, None if condition == TRUE else condition, origin))
         else:
             self.out.append(Return(origin) if condition == TRUE else If([(condition, [Return(origin)])], [], origin))
+
+    def label(self, node: fbd.FbdLabel) -> None:
+        """A CFC chart's label: the chart's IR block for its jumps starts here (``lower_chart``). FBD labels
+        networks, not elements."""
+        if not self.explicit:
+            self.ops.report(
+                self.at(node.id),
+                "FBD-BAD-LABEL",
+                f"label '{node.name}' is an element: in FBD give the network the label (label elements are CFC's)",
+            )
+        elif self.labels.get(canonical_label(node.name)) == node.id:
+            self.out.append(_LabelMark(canonical_label(node.name), self.origin(node.id)))
 
     def bool_value(self, value: PinValue, at: At, what: str) -> Expr | None:
         expr, ty = self.expr(value, at, what)

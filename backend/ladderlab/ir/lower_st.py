@@ -191,6 +191,8 @@ def lower_fb_call(call: ast.Call, ctx: PouContext, origin: Origin) -> list[Stmt]
     An output that needs a conversion or is negated (``NOT Q => y``) becomes an
     Assign after the call; with EN those run only when the call ran (ENO).
     """
+    if isinstance(call.ref, PouInfo) and call.ref.kind == "PROGRAM":  # an LD/FBD program box: its one instance
+        return _program_call(call, call.ref, ctx, origin)
     fb = call.callee.ty
     if not isinstance(fb, t.FbType):
         raise LoweringError(None)

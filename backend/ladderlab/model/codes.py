@@ -19,6 +19,9 @@ from typing import Literal
 
 Severity = Literal["error", "warning", "info"]
 
+#: The code of every runtime fault of a running program (engine.codegen.faults; the server reports a lost one).
+RUNTIME_FAULT = "ENGINE-RUNTIME"
+
 
 @dataclass(frozen=True)
 class Code:
@@ -113,15 +116,20 @@ _TABLE: list[tuple[str, str, Severity, str]] = [
     ("diagram", "INPUT-WRITE", "error", "A coil or output writes an input of the POU."),
     ("diagram", "UNKNOWN-CALL", "error", "A box calls a function or function block that does not exist."),
     ("diagram", "PLANT", "error", "A box calls a plant (plants run in the plant task, never called)."),
-    ("diagram", "NOT-CALLABLE", "error", "A box calls a program."),
+    ("diagram", "NOT-CALLABLE", "error", "A box in a function or function block calls a program."),
     ("diagram", "NO-INSTANCE", "error", "A function block box has no instance."),
     ("diagram", "INSTANCE", "error", "A function box has an instance."),
     ("diagram", "INSTANCE-TYPE", "error", "A box's instance is not an instance of the function block it calls."),
     ("diagram", "MISSING-PIN", "error", "An input of a box is not connected."),
     ("diagram", "IN-OUT", "error", "An in-out pin of a box is fed a computed value instead of a variable."),
-    ("diagram", "BAD-LABEL", "error", "A network label is not an identifier or an unsigned integer."),
-    ("diagram", "DUPLICATE-LABEL", "error", "Two networks of a POU have the same label."),
-    ("diagram", "UNKNOWN-LABEL", "error", "A jump names a label no network of the POU has."),
+    (
+        "diagram",
+        "BAD-LABEL",
+        "error",
+        "A network or CFC label is not an identifier or an unsigned integer, or FBD has a label element.",
+    ),
+    ("diagram", "DUPLICATE-LABEL", "error", "Two networks of a POU (two labels of a CFC chart) have the same label."),
+    ("diagram", "UNKNOWN-LABEL", "error", "A jump names a label no network of the POU (no label of the chart) has."),
     ("diagram", "DUPLICATE-ID", "error", "Two networks or elements of a POU have the same id."),
     # ladder diagram (ir/lower_ld.py)
     ("ld", "LD-PARALLEL", "error", "A parallel branch has fewer than two branches."),
@@ -143,7 +151,7 @@ _TABLE: list[tuple[str, str, Severity, str]] = [
     ),
     ("fbd", "FBD-UNKNOWN-PIN", "error", "A wire or flag uses a pin the block does not have."),
     ("fbd", "FBD-PIN-FLAG", "error", "An output pin has an edge flag."),
-    ("fbd", "CFC-JUMP", "error", "A CFC chart has a jump: a chart has no networks or labels to jump to."),
+    ("fbd", "CFC-JUMP-CONDITION", "error", "A jump on a CFC chart has no condition wired into its input."),
     # building and running
     ("build", "IR-UNSUPPORTED", "error", "The program uses something LadderLab cannot run yet."),
     ("build", "IR-EN-CALL", "error", "A call with EN/ENO stands where its statement cannot be lifted out."),

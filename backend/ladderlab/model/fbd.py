@@ -64,6 +64,14 @@ class FbdReturn(_Node):
     type: Literal["return"] = "return"
 
 
+class FbdLabel(_Node):
+    """A jump target on a CFC chart (CODESYS's CFC label): the chart's jumps to ``name`` go on at its execution
+    order number. FBD labels its networks instead (``FbdNetwork.label``), so an FBD network refuses one."""
+
+    type: Literal["label"] = "label"
+    name: str
+
+
 class Connector(_Node):
     type: Literal["connector"] = "connector"
     name: str
@@ -87,7 +95,7 @@ class FbdComment(_Node):
 
 
 FbdNode = Annotated[
-    Block | InputNode | OutputNode | FbdJump | FbdReturn | Connector | Continuation | FbdComment,
+    Block | InputNode | OutputNode | FbdJump | FbdReturn | FbdLabel | Connector | Continuation | FbdComment,
     Field(discriminator="type"),
 ]
 

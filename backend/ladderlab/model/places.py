@@ -86,6 +86,8 @@ def _fbd_names(network: fbd.FbdNetwork) -> dict[str, tuple[str, bool]]:
             names[node.id] = (f"jump to {node.target}", False)
         elif isinstance(node, fbd.FbdReturn):
             names[node.id] = ("RETURN", False)
+        elif isinstance(node, fbd.FbdLabel):
+            names[node.id] = (f"label {node.name}", False)
         elif isinstance(node, fbd.Connector):
             names[node.id] = (f"connector {node.name}", False)
         elif isinstance(node, fbd.Continuation):

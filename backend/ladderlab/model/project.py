@@ -85,6 +85,19 @@ class Property(BaseModel):
     set: Accessor | None = None
 
 
+class PouAction(BaseModel):
+    """An ACTION of a FUNCTION_BLOCK outside SFC (CODESYS; IEC 61131-3 ed. 2's action syntax): statements that run
+    on the variables of the instance it is called on - ``inst.Action();`` in ST, ``CAL inst.Action`` in IL,
+    ``Action();`` in the FB itself (IL-08). No variables or parameters of its own (docs/st.md, "Actions")."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    name: str
+    body: str = Field(default="", description="ST statements.")
+
+    _normalise_texts = field_validator("body", mode="before")(_strip_trailing_whitespace)
+
+
 class Pou(BaseModel):
     """A program organisation unit. ``body`` is ST or IL text, an ``LdBody``, an ``FbdBody``, a ``CfcBody`` (one
     FBD chart) or an ``SfcBody`` per ``language``."""
@@ -99,6 +112,9 @@ class Pou(BaseModel):
     body: str | LdBody | CfcBody | FbdBody | SfcBody = ""
     methods: list[Method] = Field(default_factory=list, description="Function blocks only: their METHODs.")
     properties: list[Property] = Field(default_factory=list, description="Function blocks only: their PROPERTYs.")
+    actions: list[PouAction] = Field(
+        default_factory=list, description="Function blocks only: their ACTIONs outside SFC (CODESYS), ST bodies."
+    )
     extends: str | None = Field(default=None, description="Function blocks only: the function block it EXTENDS.")
     implements: list[str] = Field(
         default_factory=list, description="Function blocks only: the INTERFACEs (declared in the types) it IMPLEMENTS."

@@ -6,7 +6,7 @@ This module only assembles the app; routes live in one module per resource
 
 from __future__ import annotations
 
-import asyncio
+import threading
 from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
 from pathlib import Path
@@ -47,7 +47,9 @@ _PLACEHOLDER = """<!doctype html>
 
 @asynccontextmanager
 async def _lifespan(app: FastAPI) -> AsyncIterator[None]:
-    await asyncio.to_thread(registry_of(app).warm)  # the first simulation opens fast (docs/architecture.md)
+    # the worker machinery starts beside the server, which answers meanwhile: a first simulation asked for before
+    # it is ready waits for it (docs/architecture.md; startup, issue 27)
+    threading.Thread(target=registry_of(app).warm, name="ladderlab-warm", daemon=True).start()
     yield
     registry = getattr(app.state, "simulations", None)
     if registry is not None:  # end the simulations' and builds' processes with the server

@@ -8,7 +8,6 @@ from __future__ import annotations
 
 from fastapi import APIRouter
 
-from ..ir.lower_fbd import evaluation_order
 from ..model.api import FbdOrder
 from ..model.fbd import FbdNetwork
 from .errors import responses
@@ -20,4 +19,6 @@ router = APIRouter(prefix="/api/fbd", tags=["fbd"])
 def network_order(network: FbdNetwork, chart: bool = False) -> FbdOrder:
     """``chart``: a CFC chart, whose order list is the order (CFC-02); without it, the FBD order - data flow
     first, the order list among what the wiring leaves open - which is also a chart's "order by data flow"."""
+    from ..ir.lower_fbd import evaluation_order
+
     return FbdOrder(order=evaluation_order(network, explicit=chart))

@@ -11,12 +11,6 @@ from typing import Annotated
 
 from fastapi import APIRouter, Query, Request, Response, status
 
-from ..interchange.ld_il import network_il
-from ..interchange.plants import for_export
-from ..interchange.plcopen.exporter import PlcopenExportError, export_plcopen
-from ..interchange.plcopen.importer import import_plcopen
-from ..interchange.st.export import export_pou_st
-from ..interchange.st.project import export_project_st
 from ..model import has_errors
 from ..model.api import ImportReport, LdAsIl, ProjectSummary, SourceMapEntry, StExport
 from ..model.ld import LdNetwork
@@ -38,6 +32,10 @@ def export_st(
 ) -> StExport:
     """The saved project (or one POU) as IEC ST that runs identically; each exported line maps to its network.
     The whole project's control program leaves the plants out unless ``with_plants``."""
+    from ..interchange.plants import for_export
+    from ..interchange.st.export import export_pou_st
+    from ..interchange.st.project import export_project_st
+
     project = workspace.load(name).project
     if pou is not None and project.pou(pou) is None:
         raise ApiError(404, f"project {name!r} has no POU {pou!r}")
@@ -64,6 +62,9 @@ def export_xml(
     with_plants: Annotated[bool, Query(description="keep the project's plants (as programs)")] = False,
 ) -> Response:
     """The saved project as a PLCopen TC6 v2.01 document, as a download (its plants only ``with_plants``)."""
+    from ..interchange.plants import for_export
+    from ..interchange.plcopen.exporter import PlcopenExportError, export_plcopen
+
     project = workspace.load(name).project
     try:
         data = export_plcopen(for_export(project, with_plants))
@@ -77,6 +78,8 @@ def export_xml(
 @router.post("/api/ld/il", response_model=LdAsIl, responses=responses(422))
 def ld_as_il(network: LdNetwork) -> LdAsIl:
     """One LD network as IL, for the editor's read-only "View as IL" (issue 26); stateless."""
+    from ..interchange.ld_il import network_il
+
     made = network_il(network)
     return LdAsIl(text=made.text, reason=made.reason)
 
@@ -101,6 +104,8 @@ async def import_xml(
     name: Annotated[str | None, Query(description="project name (default: the document's)")] = None,
 ) -> ImportReport:
     """Store a PLCopen XML document (the request body) as a new project; warnings come back with it."""
+    from ..interchange.plcopen.importer import import_plcopen
+
     if name is not None:
         check_project_name(name)
     result = import_plcopen(await request.body(), name=name, file="upload.xml")

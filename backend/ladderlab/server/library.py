@@ -5,7 +5,6 @@ from __future__ import annotations
 from fastapi import APIRouter, Query
 
 from ..model.api import LibraryEntry
-from ..simulation.library import standard_entries, user_entries
 from .context import WorkspaceDep
 from .errors import responses
 
@@ -17,6 +16,8 @@ def get_library(
     workspace: WorkspaceDep,
     project: str | None = Query(default=None, description="Add this project's functions and FBs."),
 ) -> list[LibraryEntry]:
+    from ..simulation.library import standard_entries, user_entries
+
     entries = list(standard_entries())
     if project is not None:
         entries += user_entries(workspace.load(project).project)

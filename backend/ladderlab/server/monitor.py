@@ -35,9 +35,9 @@ from pydantic import BaseModel, TypeAdapter, ValidationError
 from starlette.websockets import WebSocketDisconnect
 
 from ..model import monitor as m
+from ..simulation.commands import CommandError, changes
 from ..simulation.registry import SimulationEntry, SimulationSettings, UnknownSimulation
 from ..simulation.remote import Frame, SimulationHandle, Watch
-from ..simulation.runner import CommandError, changes
 from .context import registry_of
 from .security import websocket_origin_allowed
 

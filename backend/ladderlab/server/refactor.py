@@ -10,7 +10,6 @@ from fastapi import APIRouter
 
 from ..model import Diagnostic
 from ..model.api import DuplicateRequest, ReferenceList, ReferencesRequest, RenameRequest, RenameResult
-from ..st import refactor
 from ..storage import NotFoundError
 from .errors import ApiError, responses
 from .limits import LimitsDep, check_project_size
@@ -21,6 +20,8 @@ router = APIRouter(prefix="/api/refactor", tags=["refactor"])
 @router.post("/rename", response_model=RenameResult, responses=responses(413, 422))
 def rename(body: RenameRequest, limits: LimitsDep) -> RenameResult:
     """The project with ``old_name`` renamed to ``new_name`` in every POU, diagram, task and test file."""
+    from ..st import refactor
+
     check_project_size(body.project, limits)
     _refuse(refactor.new_name_problem(body.project, body.old_name, body.new_name), "$.new_name")
     project, changes = refactor.rename(body.project, body.old_name, body.new_name)
@@ -30,6 +31,8 @@ def rename(body: RenameRequest, limits: LimitsDep) -> RenameResult:
 @router.post("/references", response_model=ReferenceList, responses=responses(413, 422))
 def references(body: ReferencesRequest, limits: LimitsDep) -> ReferenceList:
     """Every place that uses ``name`` (what deleting it would break)."""
+    from ..st import refactor
+
     check_project_size(body.project, limits)
     return ReferenceList(references=refactor.references(body.project, body.name))
 
@@ -37,6 +40,8 @@ def references(body: ReferencesRequest, limits: LimitsDep) -> ReferenceList:
 @router.post("/duplicate", response_model=RenameResult, responses=responses(404, 413, 422))
 def duplicate(body: DuplicateRequest, limits: LimitsDep) -> RenameResult:
     """The project with a copy of POU ``name`` called ``new_name`` (nothing else changes)."""
+    from ..st import refactor
+
     check_project_size(body.project, limits)
     if body.project.pou(body.name) is None:
         raise NotFoundError("POU", body.name)

@@ -26,10 +26,10 @@ from ..model.api import (
     SeekScan,
     SimulationInfo,
 )
+from ..simulation.commands import CommandError
 from ..simulation.recording import Recording, parse_recording
 from ..simulation.registry import SimulationEntry, SimulationRegistry
 from ..simulation.remote import BuildFailed
-from ..simulation.runner import CommandError
 from ..storage.workspace import StoredProject, Workspace
 from .context import WorkspaceDep, modified_at, registry_of
 from .errors import ApiError, responses, summarise

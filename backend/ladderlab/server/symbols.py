@@ -3,26 +3,27 @@ instance tree of the watch list and the Variables view (what a program, FB insta
 array holds: ``GET /api/projects/{name}/variables?path=``).
 
 They come from the ST checker, which resolves every POU's declarations before (and
-independently of) its body, so the table is complete while the body has errors.
+independently of) its body, so the table is complete while the body has errors. The checker (and the parser
+under it) is imported at the first request, not with the server (startup, issue 27).
 """
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from fastapi import APIRouter
 
-from ..engine.paths import GLOBALS_PREFIX, tokens
 from ..iec.spelling import did_you_mean
 from ..model import Project
 from ..model.api import SymbolTable, VariableChildren, VariableNode
-from ..simulation.document import symbol_info
 from ..st import types as t
-from ..st.checker import check_project as check_st
-from ..st.configuration import InstanceInfo
-from ..st.printer import print_type
-from ..st.symbols import CheckResult, PouInfo, Symbol
 from ..storage import NotFoundError
 from .context import WorkspaceDep
 from .errors import ApiError, responses
+
+if TYPE_CHECKING:
+    from ..st.configuration import InstanceInfo
+    from ..st.symbols import CheckResult, PouInfo, Symbol
 
 router = APIRouter(prefix="/api/projects", tags=["symbols"])
 
@@ -32,6 +33,9 @@ _SHARED_TEXTS = {"types", "globals"}
 
 def symbol_table(project: Project, pou_name: str) -> SymbolTable:
     """The POU's symbols in declaration order, the globals, and the diagnostics that concern them."""
+    from ..simulation.document import symbol_info
+    from ..st.checker import check_project as check_st
+
     pou = project.pou(pou_name)
     if pou is None:
         raise NotFoundError("POU", pou_name)
@@ -67,6 +71,8 @@ def _expandable(ty: t.Type) -> bool:
 
 
 def _variable(symbol: Symbol, path: str) -> VariableNode:
+    from ..st.printer import print_type
+
     return VariableNode(
         name=symbol.name,
         path=path,
@@ -111,6 +117,8 @@ def _members(ty: t.Type, path: str, indices: tuple[int, ...]) -> tuple[list[Vari
 
 def _walk(result: CheckResult, path: str) -> tuple[t.Type, tuple[int, ...]]:
     """The type of the variable at ``path`` (and the indices of a partly indexed array at its end)."""
+    from ..engine.paths import GLOBALS_PREFIX, tokens
+
     parts = tokens(path)
     if not parts or parts[0][0] != "name":
         raise ApiError(422, f"{path!r} is not a variable path")
@@ -188,6 +196,8 @@ def _top_names(result: CheckResult) -> list[str]:
 def variable_children(project: Project, path: str) -> VariableChildren:
     """What the variable at ``path`` holds, for the watch list's and the Variables view's tree; the programs
     and the globals when ``path`` is empty."""
+    from ..st.checker import check_project as check_st
+
     result = check_st(project)
     text = path.strip()
     if not text:

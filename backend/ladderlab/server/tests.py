@@ -16,12 +16,11 @@ from __future__ import annotations
 import asyncio
 import threading
 from collections.abc import AsyncIterator
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from fastapi import APIRouter, Request
 from fastapi.responses import StreamingResponse
 
-from ..ir.lower_tests import LoweredTest
 from ..model import Project
 from ..model.api import (
     CoverageInfo,
@@ -37,16 +36,16 @@ from ..model.api import (
     TestSummary,
 )
 from ..simulation.remote import BuildFailed, Maker
-from ..st.parser import parse_tests
 from ..storage.project_folder import revision_of
-from ..testing.online import failed_test_simulation
-from ..testing.report import result_json
-from ..testing.run import Options, Prepared, TestResult, prepare
-from ..testing.suite import FileOutcome, SuiteFile, run_suite, suite_files
 from .context import registry_of
 from .errors import ApiError, responses
 from .limits import LimitsDep, check_project_size
 from .simulations import simulation_info
+
+if TYPE_CHECKING:  # the test runner imports the compiler: imported at the first request (startup, issue 27)
+    from ..ir.lower_tests import LoweredTest
+    from ..testing.run import Prepared, TestResult
+    from ..testing.suite import FileOutcome, SuiteFile
 
 router = APIRouter(prefix="/api/tests", tags=["tests"])
 
@@ -54,6 +53,9 @@ router = APIRouter(prefix="/api/tests", tags=["tests"])
 @router.post("/list", response_model=TestListing, responses=responses(413, 422))
 def list_tests(project: Project, limits: LimitsDep) -> TestListing:
     """The test files of the working copy and the tests in each (parsed only: nothing runs)."""
+    from ..st.parser import parse_tests
+    from ..testing.suite import suite_files
+
     check_project_size(project, limits)
     files = []
     for file in suite_files(project):
@@ -66,6 +68,8 @@ def list_tests(project: Project, limits: LimitsDep) -> TestListing:
 @router.post("/check", response_model=TestFileInfo, responses=responses(404, 413, 422))
 def check_tests(body: TestCheckRequest, limits: LimitsDep) -> TestFileInfo:
     """Every diagnostic of one test file with the working copy: the ST editor's live diagnostics."""
+    from ..testing.run import prepare
+
     check_project_size(body.project, limits)
     file = _file(body.project, body.file)
     prepared = prepare(body.project, file.path, file.text)
@@ -80,6 +84,8 @@ _EVENTS: dict[int | str, dict[str, Any]] = {
 @router.post("/run", responses={**_EVENTS, **responses(404, 413, 422)})
 async def run_tests(body: TestRunRequest, limits: LimitsDep) -> StreamingResponse:
     """Run every test, one file's or one test; answers a stream of ``TestEvent`` JSON lines."""
+    from ..testing.suite import suite_files
+
     check_project_size(body.project, limits)
     files = [_file(body.project, body.file)] if body.file is not None else suite_files(body.project)
     return StreamingResponse(_stream(body.project, files, body.test, body.coverage), media_type="application/x-ndjson")
@@ -88,6 +94,8 @@ async def run_tests(body: TestRunRequest, limits: LimitsDep) -> StreamingRespons
 @router.post("/open", response_model=SimulationInfo, status_code=201, responses=responses(404, 409, 413, 422, 429))
 def open_failure(body: TestOpenRequest, request: Request, limits: LimitsDep) -> SimulationInfo:
     """Run the failing test again in a new simulation's process and open its last state there (stopped)."""
+    from ..testing.online import failed_test_simulation
+
     check_project_size(body.project, limits)
     registry = registry_of(request.app)
     registry.check_room()
@@ -101,6 +109,8 @@ def open_failure(body: TestOpenRequest, request: Request, limits: LimitsDep) -> 
 
 
 def _file(project: Project, path: str) -> SuiteFile:
+    from ..testing.suite import suite_files
+
     found = next((f for f in suite_files(project) if f.path == path), None)
     if found is None:
         raise ApiError(404, f"project {project.name!r} has no test file {path!r}")
@@ -108,6 +118,8 @@ def _file(project: Project, path: str) -> SuiteFile:
 
 
 def _file_info(outcome: FileOutcome | Prepared, tests: list[LoweredTest]) -> TestFileInfo:
+    from ..testing.suite import FileOutcome
+
     return TestFileInfo(
         file=outcome.path if isinstance(outcome, FileOutcome) else outcome.file,
         tests=[TestCaseInfo(name=t.name, line=t.line) for t in tests],
@@ -116,6 +128,9 @@ def _file_info(outcome: FileOutcome | Prepared, tests: list[LoweredTest]) -> Tes
 
 
 async def _stream(project: Project, files: list[SuiteFile], test: str | None, coverage: bool) -> AsyncIterator[str]:
+    from ..testing.run import Options
+    from ..testing.suite import run_suite
+
     loop = asyncio.get_running_loop()
     queue: asyncio.Queue[str | None] = asyncio.Queue()
 
@@ -154,4 +169,6 @@ async def _stream(project: Project, files: list[SuiteFile], test: str | None, co
 
 
 def _result(result: TestResult) -> TestResultInfo:
+    from ..testing.report import result_json
+
     return TestResultInfo.model_validate(result_json(result))

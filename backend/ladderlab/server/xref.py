@@ -9,8 +9,6 @@ from fastapi import APIRouter, Query
 
 from ..model.api import PrintDocument
 from ..model.xref import XrefList
-from ..simulation.document import UnknownPou, print_document
-from ..simulation.xref import cross_reference
 from ..storage import NotFoundError
 from .context import WorkspaceDep
 from .errors import responses
@@ -21,6 +19,8 @@ router = APIRouter(prefix="/api/projects", tags=["xref"])
 @router.get("/{name}/xref", response_model=XrefList, responses=responses(404, 422))
 def get_xref(name: str, workspace: WorkspaceDep) -> XrefList:
     """Every variable and direct address: where it is declared, read, written and (FB instances) called."""
+    from ..simulation.xref import cross_reference
+
     return cross_reference(workspace.load(name).project)
 
 
@@ -28,6 +28,8 @@ def get_xref(name: str, workspace: WorkspaceDep) -> XrefList:
 def get_document(name: str, workspace: WorkspaceDep, pou: Annotated[list[str] | None, Query()] = None) -> PrintDocument:
     """What the print view draws: the saved project (or the POUs named by ``pou``, repeatable), its revision,
     each POU's declarations, the block catalogue and the cross-reference list."""
+    from ..simulation.document import UnknownPou, print_document
+
     try:
         return print_document(workspace.load(name).project, pou)
     except UnknownPou as error:

@@ -19,9 +19,9 @@ from multiprocessing.process import BaseProcess
 
 from ..model import Diagnostic, Project
 from .supervisor import kill, receive, start_process
-from .worker import serve_builds
 
 BUILD_LIMIT = "BUILD-LIMIT"
+SERVE_BUILDS = "ladderlab.simulation.worker:serve_builds"  # by name: the server does not import the compiler
 
 
 class BuildError(Exception):
@@ -93,7 +93,9 @@ class BuildPool:
                 return self._idle.pop()
             self._started += 1
         try:
-            process, connection = start_process(serve_builds, self.memory_bytes, name="ladderlab-build")
+            process, connection = start_process(
+                "ladderlab.simulation.worker:serve_builds", self.memory_bytes, name="ladderlab-build"
+            )
         except BaseException:
             self._forget_one()
             raise

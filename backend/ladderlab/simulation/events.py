@@ -7,9 +7,11 @@ from __future__ import annotations
 import json
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
-from ..engine.inputs import InputEvent, InputRefused
-from ..engine.simulation import Simulation
+if TYPE_CHECKING:  # the engine: imported where events are parsed or run (the server starts without it: issue 27)
+    from ..engine.inputs import InputEvent
+    from ..engine.simulation import Simulation
 
 
 @dataclass(frozen=True)
@@ -22,6 +24,8 @@ class Scheduled:
 
 def parse_events(text: str, name: str) -> list[Scheduled]:
     """The events of a JSON-lines file (blank lines skipped); ValueError naming the file and line."""
+    from ..engine.inputs import InputEvent, InputRefused
+
     found = []
     for number, line in enumerate(text.splitlines(), 1):
         if not line.strip():

@@ -112,9 +112,12 @@ class SimulationRegistry:
 
     def warm(self) -> None:
         """Start the worker machinery now (the fork server, one build process), so the first simulation and
-        the first check do not wait for it (the server calls this before it starts answering)."""
-        self.hub  # noqa: B018
-        self.builds.warm()
+        the first check do not wait for it (the server calls this in a thread as it starts; a server closed
+        meanwhile starts nothing more)."""
+        if not self._stop.is_set():
+            self.hub  # noqa: B018
+        if not self._stop.is_set():
+            self.builds.warm()
 
     def check(self, project: Project) -> list[Diagnostic]:
         """Every diagnostic of ``project``, from a build process (raises ``builds.BuildError`` at a limit)."""

@@ -30,16 +30,20 @@ from concurrent.futures import Future
 from dataclasses import dataclass, field
 from multiprocessing.connection import Connection
 from multiprocessing.process import BaseProcess
-from typing import Any, Protocol
+from typing import TYPE_CHECKING, Any, Protocol
 
-from ..engine.codegen.faults import RUNTIME_FAULT
-from ..engine.simulation import Simulation
 from ..model import Diagnostic
+from ..model.codes import RUNTIME_FAULT
 from ..model.monitor import DisplayType, Log, LogKind, LogLevel, Status
-from .runner import CommandError
+from .commands import CommandError
 from .supervisor import WorkerHub, kill, start_process
-from .trace import TraceInbox
-from .worker import run_simulation
+from .trace_inbox import TraceInbox
+
+if TYPE_CHECKING:
+    from ..engine.simulation import Simulation
+
+#: The simulation process's function, by name: the server does not import the compiler (startup, issue 27).
+RUN_SIMULATION = "ladderlab.simulation.worker:run_simulation"
 
 
 @dataclass(frozen=True)
@@ -163,7 +167,9 @@ class SimulationHandle:
     def launch(self) -> None:
         """Start the process and wait until it has built the project; raises ``BuildFailed``."""
         ready: Future[None] = Future()
-        process, connection = start_process(run_simulation, self.spec, name="ladderlab-simulation")
+        process, connection = start_process(
+            "ladderlab.simulation.worker:run_simulation", self.spec, name="ladderlab-simulation"
+        )
         with self._lock:
             self._process, self._connection, self._ready = process, connection, ready
             self._launched = self.last_heard = time.monotonic()

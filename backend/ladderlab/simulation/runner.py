@@ -53,24 +53,14 @@ from ..engine.tasks import Pacer
 from ..ir import nodes as ir
 from ..ir import types as t
 from ..ir.lower_sfc import CONDITION_PROBE
-from ..model.monitor import MAX_SPEED, MIN_SPEED, At, DisplayType, ErrorCode, Log, LogKind, LogLevel, TraceTrigger
+from ..model.monitor import MAX_SPEED, MIN_SPEED, At, DisplayType, Log, LogKind, LogLevel, TraceTrigger
+from .commands import CommandError, changes
 from .conditions import BadCondition, Condition, parse_condition
 from .events import events_text, parse_events, scan_inputs
 from .history import History, HistoryUnavailable
 from .trace import TraceBook, TraceRefused, plan_trace
 
 log = logging.getLogger(__name__)
-
-_MISSING = object()
-
-
-class CommandError(Exception):
-    """A command the simulation refuses; ``code`` is an ``Error`` message code (bad_path, bad_value, bad_state)."""
-
-    def __init__(self, code: ErrorCode, message: str) -> None:
-        super().__init__(message)
-        self.code: ErrorCode = code
-        self.message = message
 
 
 class Sink(Protocol):
@@ -85,20 +75,6 @@ class Sink(Protocol):
 
 #: How a submitted command is answered: (result, None) or (None, the refusal).
 Reply = Callable[[object, CommandError | None], None]
-
-
-def changes(sent: dict[str, object], current: dict[str, object]) -> dict[str, object]:
-    """The entries of ``current`` that are new or differ from ``sent``: another value, another type (TRUE is
-    not 1), but a NaN that stays NaN has not changed. Runs for every watched value of every frame."""
-    changed = {}
-    for key, value in current.items():
-        old = sent.get(key, _MISSING)
-        if value == old and type(value) is type(old):
-            continue
-        if value != value and type(old) is float and old != old:  # NaN stays NaN
-            continue
-        changed[key] = value
-    return changed
 
 
 def at_halt(halt: Halt) -> At:

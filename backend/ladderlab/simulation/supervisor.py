@@ -17,6 +17,7 @@ from workers are read with ``receive``: plain data only, never objects.
 from __future__ import annotations
 
 import contextlib
+import importlib
 import io
 import logging
 import multiprocessing
@@ -78,20 +79,23 @@ def _start_fork_server() -> None:
         log.exception("the fork server did not start")
 
 
-def _with_settings(settings: dict[str, str], target: Callable[..., None], *args: Any) -> None:
-    """Run ``target`` with the server's ``LADDERLAB_*`` settings as they are now (the fork server's environment
-    is the one it started with; the documented limits are read from these: docs/security.md)."""
+def _with_settings(settings: dict[str, str], target: str, *args: Any) -> None:
+    """Run the function ``target`` names with the server's ``LADDERLAB_*`` settings as they are now (the fork
+    server's environment is the one it started with; the documented limits are read from these: docs/security.md)."""
     for key in [key for key in os.environ if key.startswith("LADDERLAB_")]:
         del os.environ[key]
     os.environ.update(settings)
-    target(*args)
+    module, function = target.split(":")
+    getattr(importlib.import_module(module), function)(*args)
 
 
-def start_process(target: Callable[..., None], *args: Any, name: str) -> tuple[BaseProcess, Connection]:
+def start_process(target: str, *args: Any, name: str) -> tuple[BaseProcess, Connection]:
     """Start ``target(connection, *args)`` in a worker process; returns it and the server's end of the connection.
 
-    ``target`` must be importable by name: the worker does not import the server's main module (multiprocessing
-    would run a main script again in every worker, costing time and running code not meant to run there)."""
+    ``target`` is a function's name, ``"package.module:function"``: the worker imports it (the server never
+    imports the worker's modules, which import the compiler: startup, issue 27), and the worker does not import
+    the server's main module (multiprocessing would run a main script again in every worker, costing time and
+    running code not meant to run there)."""
     context = worker_context()
     ours, theirs = context.Pipe()
     settings = {key: value for key, value in os.environ.items() if key.startswith("LADDERLAB_")}

@@ -10,7 +10,6 @@ keeps the ring buffer it draws; the server holds only samples not taken yet, at 
 
 from __future__ import annotations
 
-import threading
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
@@ -18,7 +17,7 @@ from typing import Any
 from ..engine.paths import Location
 from ..engine.simulation import Simulation
 from ..ir import types as t
-from ..model.monitor import MAX_TRACE_SAMPLES, TraceData, TraceTrigger, TraceTriggered
+from ..model.monitor import MAX_TRACE_SAMPLES, TraceTrigger
 
 
 class TraceRefused(ValueError):
@@ -191,66 +190,3 @@ class TraceBook:
 
     def drop(self, owner: object) -> None:
         self._traces.pop(owner, None)
-
-
-class TraceInbox:
-    """The server's side: chunks from the simulation's frames, merged per client until its sender takes them.
-
-    Threads: the supervisor adds, the event loop takes; hence the lock."""
-
-    def __init__(self) -> None:
-        self._lock = threading.Lock()
-        self._running: set[object] = set()
-        self._pending: dict[object, dict[str, Any]] = {}
-
-    def open(self, owner: object) -> None:
-        """``owner`` starts a trace: what is pending of its previous one is dropped."""
-        with self._lock:
-            self._running.add(owner)
-            self._pending.pop(owner, None)
-
-    def add(self, owner: object, chunk: dict[str, Any]) -> None:
-        with self._lock:
-            if owner not in self._running:
-                return
-            pending = self._pending.get(owner)
-            if pending is None or pending["id"] != chunk["id"]:
-                self._pending[owner] = pending = {**chunk, "values": {p: list(v) for p, v in chunk["values"].items()}}
-                pending["scans"], pending["time_ms"] = list(chunk["scans"]), list(chunk["time_ms"])
-            else:
-                pending["scans"] += chunk["scans"]
-                pending["time_ms"] += chunk["time_ms"]
-                for path, column in chunk["values"].items():
-                    pending["values"][path] += column
-                pending["state"] = chunk["state"]
-                pending["triggered"] = pending["triggered"] or chunk["triggered"]
-                pending["lost"] += chunk["lost"]
-            excess = len(pending["scans"]) - MAX_TRACE_SAMPLES
-            if excess > 0:  # the client is not taking them: keep the newest
-                del pending["scans"][:excess], pending["time_ms"][:excess]
-                for column in pending["values"].values():
-                    del column[:excess]
-                pending["lost"] += excess
-
-    def take(self, owner: object) -> TraceData | None:
-        """``owner``'s samples since its previous chunk, or None; a finished trace is forgotten with its last chunk."""
-        with self._lock:
-            pending = self._pending.pop(owner, None)
-            if pending is None:
-                return None
-            if pending["state"] == "done":
-                self._running.discard(owner)
-        triggered = pending["triggered"]
-        return TraceData.model_construct(
-            type="trace_data",
-            **{**pending, "triggered": TraceTriggered(**triggered) if triggered is not None else None},
-        )
-
-    def active(self, owner: object) -> bool:
-        with self._lock:
-            return owner in self._running
-
-    def drop(self, owner: object) -> None:
-        with self._lock:
-            self._running.discard(owner)
-            self._pending.pop(owner, None)

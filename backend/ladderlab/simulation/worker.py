@@ -31,7 +31,8 @@ from typing import Any
 from ..model import Diagnostic, Project, has_errors
 from .build import build_project
 from .check import check_project
-from .runner import CommandError, Reply, SimRunner
+from .commands import CommandError
+from .runner import Reply, SimRunner
 
 log = logging.getLogger(__name__)
 

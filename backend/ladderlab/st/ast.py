@@ -485,13 +485,14 @@ class SfcStep:
 
 @dataclass(slots=True)
 class SfcTransition:
-    """``TRANSITION [name] [(PRIORITY := n)] FROM steps TO steps := condition; END_TRANSITION``."""
+    """``TRANSITION [name] [(PRIORITY := n)] FROM steps TO steps := condition; END_TRANSITION``, or ``... TO steps:
+    IL instructions END_TRANSITION`` (``condition`` None: the instructions are read from the source)."""
 
     name: str | None
     priority: int | None
     sources: list[str]
     targets: list[str]
-    condition: Expr
+    condition: Expr | None
     span: Span = _span()
 
 
@@ -546,6 +547,15 @@ class PropertyDecl:
 
 
 @dataclass(slots=True)
+class ActionDecl:
+    """A function block's ``ACTION name: statements END_ACTION`` (outside SFC, CODESYS)."""
+
+    name: str
+    body: list[Stmt]
+    span: Span = _span()
+
+
+@dataclass(slots=True)
 class InterfaceDecl:
     """``INTERFACE name [EXTENDS i, ...] METHOD prototypes END_INTERFACE``."""
 
@@ -566,6 +576,7 @@ class Pou:
     sfc: Sfc | None = None  # a body written in textual SFC (``body`` is then empty)
     methods: list[MethodDecl] = field(default_factory=list)  # a function block's METHODs
     properties: list[PropertyDecl] = field(default_factory=list)  # a function block's PROPERTYs
+    actions: list[ActionDecl] = field(default_factory=list)  # a function block's ACTIONs (outside SFC)
     modifier: str | None = None  # a function block's FINAL or ABSTRACT
     extends: str | None = None  # the function block it EXTENDS
     implements: list[str] = field(default_factory=list)  # the INTERFACEs it IMPLEMENTS

@@ -452,8 +452,22 @@ class BodyChecker:
 
     # ------------------------------------------------------------ statements
     def statements(self, body: list[ast.Stmt]) -> None:
+        if any(isinstance(s, ast.CallStmt) and isinstance(s.call, ast.Call) and s.call.args for s in body):
+            body[:] = self._with_action_inputs(body)
         for stmt in body:
             self.statement(stmt)
+
+    def _with_action_inputs(self, body: list[ast.Stmt]) -> list[ast.Stmt]:
+        """``Inst.Reset(In := FALSE);`` calls an ACTION: the instance's inputs are assigned first (methods.py)."""
+        from .methods import action_inputs  # methods imports this module
+
+        silent = BodyChecker(self.result, self.pou, lambda *args, **kwargs: None)
+        out: list[ast.Stmt] = []
+        for stmt in body:
+            if isinstance(stmt, ast.CallStmt) and isinstance(stmt.call, ast.Call):
+                out += action_inputs(silent, stmt.call)
+            out.append(stmt)
+        return out
 
     def _names_program(self, node: ast.Expr) -> bool:
         """Whether ``node`` is a bare name that means a PROGRAM POU (no variable of that name hides it)."""

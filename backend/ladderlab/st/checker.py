@@ -122,8 +122,8 @@ class ProjectChecker:
         methods = []
         for pou in self.project.pous:
             info = self.result.pous.get(pou.name.upper())
-            if (pou.methods or pou.properties) and info is not None and info.name == pou.name:
-                methods += declare_methods(self, info, pou.methods, pou.properties)
+            if (pou.methods or pou.properties or pou.actions) and info is not None and info.name == pou.name:
+                methods += declare_methods(self, info, pou.methods, pou.properties, pou.actions)
         blocks = [info for info in self.result.pous.values() if info.kind == "FUNCTION_BLOCK"]
         check_overrides(self, blocks)
         check_implementations(self, blocks)

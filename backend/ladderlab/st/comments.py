@@ -11,8 +11,6 @@ from __future__ import annotations
 import re
 from typing import Any
 
-from . import ast
-
 _OUTSIDE = re.compile(r"'(?:[^'$\n]|\$.)*'|\"(?:[^\"$\n]|\$.)*\"|//[^\n]*|\{[^}]*\}|(\(\*)")
 _INSIDE = re.compile(r"\(\*|\*\)")
 _TRAILING = re.compile(r"[ \t]*;?[ \t]*(?:\(\*(.*?)\*\)|//(.*))")
@@ -50,7 +48,8 @@ def _comment_end(text: str, position: int) -> int | None:
 
 
 def _blank(comment: str) -> str:
-    return re.sub(r"[^\n]", " ", comment)
+    """Every character but the line breaks as a space (lines and columns stay where they were)."""
+    return "\n".join(" " * len(line) for line in comment.split("\n"))
 
 
 def attach_comments(tree: Any, text: str) -> None:
@@ -66,6 +65,8 @@ def attach_comments(tree: Any, text: str) -> None:
 
 
 def _var_decls(tree: Any):
+    from . import ast  # here: storage splits files with this module's blanking, without the AST (issue 27)
+
     if isinstance(tree, list):
         for item in tree:
             yield from _var_decls(item)

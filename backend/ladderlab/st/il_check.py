@@ -20,7 +20,9 @@ from ..iec.spelling import did_you_mean
 from . import ast
 from . import types as t
 from .body import BodyChecker, Report
-from .il_parser import FB_INPUT_OPERATORS, OPERATORS, IlBody, IlInstruction
+from .il_parser import IlBody, IlInstruction
+from .il_words import FB_INPUT_OPERATORS, OPERATORS
+from .methods import action_inputs
 from .symbols import CheckResult, PouInfo, Symbol
 from .types import ERROR, Type
 
@@ -445,7 +447,7 @@ class _Translator:
             if operand is None:
                 return
             call = ast.Call(operand, [], operand.span)
-        self._guarded(instruction, ast.CallStmt(call, instruction.span))
+        self._guarded(instruction, *action_inputs(self.silent, call), ast.CallStmt(call, instruction.span))
 
     def _return(self, instruction: IlInstruction) -> None:
         if instruction.operands:
@@ -455,13 +457,14 @@ class _Translator:
         if instruction.operator == "RET":
             self.reachable = False
 
-    def _guarded(self, instruction: IlInstruction, statement: ast.Stmt) -> None:
+    def _guarded(self, instruction: IlInstruction, *statements: ast.Stmt) -> None:
         if instruction.operator.endswith(("C", "CN")):
             cond = self._guard(instruction)
             if cond is not None:
-                self._emit(ast.If([(cond, [statement])], None, instruction.span))
+                self._emit(ast.If([(cond, list(statements))], None, instruction.span))
         else:
-            self._emit(statement)
+            for statement in statements:
+                self._emit(statement)
 
     def _fb_input(self, instruction: IlInstruction) -> None:
         """``PV C10`` = ``CAL C10(PV := CR)`` (IL-24, IEC 61131-3 ed. 2 Table 52)."""

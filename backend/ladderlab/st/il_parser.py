@@ -18,38 +18,11 @@ from lark.exceptions import UnexpectedInput
 
 from ..model.diagnostics import Diagnostic
 from . import ast
-from .comments import blank_nested_comments
+from .il_words import DEFERRABLE, blank_comments, looks_like_il
 from .lark_cache import cached_lark
 from .parser import parse_expression, syntax_diagnostic
 
 GRAMMAR = pathlib.Path(__file__).with_name("il.lark")
-
-#: Operators whose ``(`` defers them (IL-13, IL-06, IL-24), and their N (negated operand) forms.
-DEFERRABLE = frozenset(
-    {"AND", "ANDN", "&", "&N", "OR", "ORN", "XOR", "XORN", "ADD", "SUB", "MUL", "DIV", "MOD"}
-    | {"GT", "GE", "EQ", "NE", "LE", "LT"}
-)
-#: Every operator word of the IL tables (IL-03, IL-20..IL-24); other words are function names (IL-04, IL-30).
-OPERATORS = DEFERRABLE | {
-    "LD",
-    "LDN",
-    "ST",
-    "STN",
-    "S",
-    "R",
-    "NOT",
-    "JMP",
-    "JMPC",
-    "JMPCN",
-    "CAL",
-    "CALC",
-    "CALCN",
-    "RET",
-    "RETC",
-    "RETCN",
-}
-#: FB input operators (IL-24, IEC 61131-3 ed. 2 Table 52): ``PV C10`` calls C10 with PV := the accumulator.
-FB_INPUT_OPERATORS = frozenset({"S1", "R1", "CLK", "CU", "CD", "PV", "IN", "PT"})
 
 
 @dataclass
@@ -81,15 +54,6 @@ class IlParseResult:
     @property
     def ok(self) -> bool:
         return not any(d.severity == "error" for d in self.diagnostics)
-
-
-_COMMENT_OR_STRING = re.compile(r"'(?:[^'$\n]|\$.)*'|\"(?:[^\"$\n]|\$.)*\"|(//[^\n]*)")
-
-
-def blank_comments(text: str) -> str:
-    """``(* *)`` (nested too) and ``//`` comments -> spaces, strings untouched (IL-03)."""
-    text = blank_nested_comments(text)
-    return _COMMENT_OR_STRING.sub(lambda m: " " * len(m.group(1)) if m.group(1) else m.group(0), text)
 
 
 class _Lines(Transformer):
@@ -236,33 +200,6 @@ def _parse_piece(text: str, start: Token, end: Token, file, pou, diagnostics):
 
 # ---------------------------------------------------------------- IL POUs in IEC source files
 
-_IL_START = re.compile(
-    r"[ \t]*(?:[A-Za-z_][A-Za-z0-9_]*[ \t]*:(?!=)[ \t]*(?:\n|$)"  # a label on its own line (ST has none)
-    r"|(?:[A-Za-z_][A-Za-z0-9_]*[ \t]*:(?!=)[ \t]*)?(?P<word>[A-Za-z_][A-Za-z0-9_]*)(?P<rest>[^\n]*))",
-)
-_NOT_AN_OPERAND = re.compile(r"\s*(?::=|\(|\.|\[|\^|;|$)")
-
-
-def looks_like_il(body: str) -> bool:
-    """Whether a POU body is IL: its first instruction is an IL operator (IL-01) or it starts with a label."""
-    for line in blank_comments(body).split("\n"):
-        if not line.strip():
-            continue
-        match = _IL_START.match(line)
-        if match is None:
-            return False
-        word = match.group("word")
-        if word is None:
-            return True
-        rest = match.group("rest")
-        if rest.rstrip().endswith(";"):  # an ST statement (``r REF= x;``): no IL instruction ends with ';'
-            return False
-        if word.upper() in ("NOT", "RET", "RETC", "RETCN") and not rest.strip():
-            return True
-        return word.upper() in OPERATORS | FB_INPUT_OPERATORS and _NOT_AN_OPERAND.match(rest) is None
-    return False
-
-
 _BODY_BOUNDS = re.compile(
     r"'(?:[^'$\n]|\$.)*'|\"(?:[^\"$\n]|\$.)*\"|\(\*[\s\S]*?\*\)|//[^\n]*"
     r"|\b(END_VAR|END_FUNCTION_BLOCK|END_FUNCTION|END_PROGRAM)\b",
@@ -295,7 +232,7 @@ def blank_il_bodies(text: str) -> tuple[str, set[str]]:
             pieces += [text[copied:body_start], re.sub(r"[^\n]", " ", text[body_start:body_end])]
             copied = body_end
             continue
-        for action_start, action_end in _il_actions(text[body_start:body_end]):  # textual SFC (docs/sfc.md)
+        for action_start, action_end in _il_sfc_parts(text[body_start:body_end]):  # textual SFC (docs/sfc.md)
             start_at, end_at = body_start + action_start, body_start + action_end
             pieces += [text[copied:start_at], re.sub(r"[^\n]", " ", text[start_at:end_at])]
             copied = end_at
@@ -303,26 +240,38 @@ def blank_il_bodies(text: str) -> tuple[str, set[str]]:
     return "".join(pieces), names
 
 
-_ACTION_BOUNDS = re.compile(
+#: The head of a textual SFC transition whose condition is IL (``TRANSITION [name] [(PRIORITY := n)] FROM a TO b:``,
+#: B.1.6's ``transition_condition ::= ':' simple_instruction_list``); its instructions follow, up to END_TRANSITION.
+IL_TRANSITION_HEAD = r"\bTRANSITION\b(?:[^:;]|:=)*?\bTO\b\s*(?:[A-Za-z_]\w*|\([^)]*\))\s*:(?!=)"
+
+_SFC_PART_BOUNDS = re.compile(
     r"'(?:[^'$\n]|\$.)*'|\"(?:[^\"$\n]|\$.)*\"|\(\*[\s\S]*?\*\)|//[^\n]*"
-    r"|\b(ACTION)\s+[A-Za-z_]\w*\s*:|\b(END_ACTION)\b",
+    rf"|\b(ACTION)\s+[A-Za-z_]\w*\s*:|\b(END_ACTION)\b|({IL_TRANSITION_HEAD})|\b(END_TRANSITION)\b",
     re.IGNORECASE,
 )
 
 
-def _il_actions(body: str) -> list[tuple[int, int]]:
+def _il_sfc_parts(body: str) -> list[tuple[int, int]]:
     """The offsets of the bodies of the ``ACTION name: ... END_ACTION`` in a textual SFC body that are IL (an SFC
-    action written in IL, SFC-02): ``st/sfc_text.py`` reads them from the original text."""
+    action written in IL, SFC-02), and of the IL conditions of its transitions (``TRANSITION ... TO b: ...
+    END_TRANSITION``, a named transition in IL): ``st/sfc_text.py`` reads them from the original text."""
     found: list[tuple[int, int]] = []
     opened: list[int] = []
-    for match in _ACTION_BOUNDS.finditer(body):
+    transition: int | None = None
+    for match in _SFC_PART_BOUNDS.finditer(body):
         if match.group(1):
             opened.append(match.end())
         elif match.group(2) and opened:
             start = opened.pop()
             if looks_like_il(body[start : match.start()]):
                 found.append((start, match.start()))
-    return found
+        elif match.group(3):
+            transition = match.end()
+        elif match.group(4) and transition is not None:
+            if looks_like_il(body[transition : match.start()]):
+                found.append((transition, match.start()))
+            transition = None
+    return sorted(found)
 
 
 def _body_bounds(unit: str) -> tuple[int, int] | None:

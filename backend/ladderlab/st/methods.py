@@ -13,7 +13,7 @@ import copy
 from typing import Any
 
 from ..iec.spelling import did_you_mean
-from ..model.project import Method, Property
+from ..model.project import Method, PouAction, Property
 from . import ast
 from . import types as t
 from .parser import parse_declarations, parse_statements, parse_type
@@ -32,15 +32,19 @@ def method_file(fb: str, method: str, part: str) -> str:
 
 
 def declare_methods(
-    checker: Any, fb: PouInfo, methods: list[Method], properties: list[Property] = ()
+    checker: Any, fb: PouInfo, methods: list[Method], properties: list[Property] = (), actions: list[PouAction] = ()
 ) -> list[tuple[PouInfo, Method]]:
-    """Register and declare the methods of ``fb`` (``checker``: the ProjectChecker), and its PROPERTYs' accessors
-    as methods ``<P>.GET`` (returning the property's type) and ``<P>.SET`` (whose input is the property's name);
+    """Register and declare the methods of ``fb`` (``checker``: the ProjectChecker), its PROPERTYs' accessors
+    as methods ``<P>.GET`` (returning the property's type) and ``<P>.SET`` (whose input is the property's name),
+    and its ACTIONs (CODESYS, IL-08) as public methods without variables or result: an action runs on the
+    instance's variables like a method, so ``inst.A()``, ``CAL inst.A`` and ``A()`` inside the FB are method calls;
     their bodies are parsed and checked later by ``check_method_body``, once every POU and method is declared."""
     from .checker import check_identifier  # the checker imports this module
 
     declared = []
     members = [(method, method.name, method.name) for method in methods]
+    as_actions = [Method(name=action.name, body=action.body) for action in actions]
+    members += [(method, method.name, method.name) for method in as_actions]
     for prop in properties:
         for kind, accessor in (("GET", prop.get), ("SET", prop.set)):
             if accessor is not None:
@@ -53,22 +57,26 @@ def declare_methods(
                     body=accessor.body,
                 )
                 members.append((as_method, prop.name, f"{prop.name}.{kind}"))
+    members_word = "methods, properties or actions" if actions else "methods or properties"
+    member_word = "method, property or action" if actions else "method or property"
     for method, name, label in members:
         report = checker._reporter(method_file(fb.name, label, "declarations"), f"{fb.name}.{label}")
         key = label.upper()
         if fb.kind != "FUNCTION_BLOCK":
-            report("ST-DECL", f"only a function block has methods, not a {fb.kind.lower().replace('_', ' ')}", None)
+            what = "actions" if any(method is a for a in as_actions) else "methods"
+            report("ST-DECL", f"only a function block has {what}, not a {fb.kind.lower().replace('_', ' ')}", None)
             continue
         check_identifier(name, None, report)
         upper = name.upper()
         if key in fb.methods or (key != upper and upper in fb.methods):  # (methods are declared first)
-            report("ST-DUPLICATE", f"{fb.name} has two methods or properties called '{name}'", None)
+            report("ST-DUPLICATE", f"{fb.name} has two {members_word} called '{name}'", None)
             continue
         if upper in fb.symbols:
-            report("ST-DUPLICATE", f"'{name}' is both a variable and a method or property of {fb.name}", None)
+            report("ST-DUPLICATE", f"'{name}' is both a variable and a {member_word} of {fb.name}", None)
             continue
         info = PouInfo(f"{fb.name}.{label}", "FUNCTION", "st", None)
-        info.method = MethodInfo(fb, name, method.access, method.final, method.abstract, key)
+        action = any(method is a for a in as_actions)
+        info.method = MethodInfo(fb, name, method.access, method.final, method.abstract, key, action)
         info.symbols[THIS] = Symbol(
             THIS, "VAR_IN_OUT", t.FbType(fb.name, pou=fb), ast.NamedType(fb.name), pou=info.name
         )
@@ -165,6 +173,24 @@ def method_callee(checker: Any, callee: ast.Expr) -> tuple[PouInfo, ast.Expr | N
         return None
     checker.expr(base)
     return found, base
+
+
+def action_inputs(checker: Any, call: ast.Call) -> list[ast.Stmt]:
+    """``Inst.Reset(In := FALSE)`` (IL-08 and its ST form, seed 003; CODESYS): an action has no parameters of its
+    own, so the inputs it is called with are the instance's - returned as assignments to run first, and taken
+    off ``call``. Any other call: nothing (``checker``: a body checker of the caller, not reporting)."""
+    if not call.args or not isinstance(call.callee, ast.Member):
+        return []
+    found = method_callee(checker, copy.deepcopy(call.callee))
+    if found is None or found[1] is None or not found[0].method.action:
+        return []
+    if any(arg.name is None or arg.output for arg in call.args):
+        return []  # the call check reports it as written (an action takes no outputs or positional values)
+    inputs: list[ast.Stmt] = [
+        ast.Assign(ast.Member(copy.deepcopy(found[1]), arg.name, arg.span), arg.value, arg.span) for arg in call.args
+    ]
+    call.args = []
+    return inputs
 
 
 SUPER = "SUPER"

@@ -27,29 +27,55 @@ def too_deep(root: Any) -> tuple[str, ast.Span] | None:
     """(message, span of the construct that crosses a limit), or None."""
     max_expression, max_statement = limits.EXPRESSION_DEPTH.value, limits.STATEMENT_DEPTH.value
     todo: list[tuple[Any, int, int, ast.Span]] = [(root, 0, 0, ast.NO_SPAN)]
+    kinds = _KINDS
     while todo:
         node, expressions, statements, near = todo.pop()
-        if isinstance(node, (list, tuple)):
+        known = kinds.get(node.__class__)
+        if known is None:
+            known = _kind(node.__class__)
+        kind, children = known
+        if kind is _SEQUENCE:
             todo.extend((item, expressions, statements, near) for item in node)
             continue
-        if not is_dataclass(node):
+        if kind is _LEAF:
             continue
         span = getattr(node, "span", None) or near
-        if isinstance(node, COMPOUND):
+        if kind is _COMPOUND:
             statements += 1
             if statements > max_statement:
                 return limits.STATEMENT_DEPTH.too_deep("this statement"), span
-        elif not isinstance(node, _STATEMENTS) and span is not ast.NO_SPAN:
+            expressions = 0
+        elif kind is _STATEMENT:
+            expressions = 0
+        elif span is not ast.NO_SPAN:
             expressions += 1
             if expressions > max_expression:
                 return limits.EXPRESSION_DEPTH.too_deep("this expression"), span
-        if isinstance(node, _STATEMENTS):
-            expressions = 0
-        for name in _children(type(node)):
+        for name in children:
             value = getattr(node, name)
             if value is not None and not isinstance(value, (str, int, float, bool)):
                 todo.append((value, expressions, statements, span))
     return None
+
+
+_SEQUENCE, _LEAF, _COMPOUND, _STATEMENT, _OTHER = "sequence", "leaf", "compound", "statement", "other"
+#: type -> (what too_deep does with its nodes, the fields it walks into): decided once per type
+_KINDS: dict[type, tuple[str, tuple[str, ...]]] = {}
+
+
+def _kind(kind: type) -> tuple[str, tuple[str, ...]]:
+    if issubclass(kind, (list, tuple)):
+        found = (_SEQUENCE, ())
+    elif not is_dataclass(kind):
+        found = (_LEAF, ())
+    elif issubclass(kind, COMPOUND):
+        found = (_COMPOUND, _children(kind))
+    elif issubclass(kind, _STATEMENTS):
+        found = (_STATEMENT, _children(kind))
+    else:
+        found = (_OTHER, _children(kind))
+    _KINDS[kind] = found
+    return found
 
 
 def nodes(root: Any) -> Iterator[Any]:

@@ -19,11 +19,13 @@ from typing import Any
 from lark import Lark, Token
 from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedToken
 
+from .. import limits
 from ..iec.elementary import ALIASES, ELEMENTARY, GENERIC, STRING_TYPES
 from ..model.diagnostics import Diagnostic
 from . import ast
 from .comments import attach_comments, blank_nested_comments
 from .errors import describe_unexpected, last_token, literal_problem, would_accept
+from .fast_lalr import NotFast, fast_parse
 from .lark_cache import cached_lark
 from .nesting import too_deep
 from .quick_decls import quick_declarations
@@ -46,6 +48,7 @@ class ParseResult:
 
     ast: Any
     diagnostics: list[Diagnostic] = field(default_factory=list)
+    tokens: int | None = field(default=None, compare=False, repr=False)  # how many, when the fast loop counted
 
     @property
     def ok(self) -> bool:
@@ -234,7 +237,7 @@ def _prepare(text: str, nested_comments: bool) -> str:
 
 
 def _finish(result: ParseResult, original: str, file: str | None = None, pou: str | None = None) -> ParseResult:
-    if result.ast is not None and len(original) >= _NESTING_NEEDS:
+    if result.ast is not None and _may_nest_too_deep(result, original):
         deep = too_deep(result.ast)
         if deep is not None:  # nothing after the parser may meet nesting beyond the limits (st/nesting.py)
             message, span = deep
@@ -245,14 +248,29 @@ def _finish(result: ParseResult, original: str, file: str | None = None, pou: st
     return result
 
 
-_NESTING_NEEDS = 100  # characters: a shorter text cannot nest anywhere near the limits
+def _may_nest_too_deep(result: ParseResult, original: str) -> bool:
+    """Whether the text is long enough to cross a nesting limit as set now (shorter ones skip the walk). In
+    characters: every level of an expression takes at least one of its own (an operator, a bracket, a name),
+    every level of statements at least 15 (``IF a THEN`` ... ``END_IF``; CASE, FOR, WHILE and REPEAT take
+    more). In tokens, when the fast loop counted them: an expression level takes a token of its own but for
+    nodes that wrap one child without a token (a positional argument, a typed literal's value), never two
+    such in a row, so at most 2 levels a token; a statement level takes at least 4 (``IF c THEN END_IF``)."""
+    expression_limit, statement_limit = limits.EXPRESSION_DEPTH.value, limits.STATEMENT_DEPTH.value
+    if result.tokens is not None:
+        return 2 * result.tokens > expression_limit or result.tokens > 4 * statement_limit
+    return len(original) >= min(expression_limit, statement_limit * 15)
 
 
 def _run(text: str, start: str, file: str | None, pou: str | None = None) -> ParseResult:
     diagnostics: list[Diagnostic] = []
     report = _Reporter(diagnostics, file, pou, text)
+    parser = _parser(start in _TEST_STARTS)
+    tokens = None
     try:
-        tree = _parser(start in _TEST_STARTS).parse(text, start=start, on_error=report.recover)
+        try:
+            tree, tokens = fast_parse(parser, text, start)
+        except NotFast:  # an error: lark reports it and recovers where it can
+            tree = parser.parse(text, start=start, on_error=report.recover)
     except UnexpectedInput as error:
         if not report.seen(error):
             report.add(error)
@@ -263,7 +281,7 @@ def _run(text: str, start: str, file: str | None, pou: str | None = None) -> Par
     except RecursionError:
         diagnostics.append(syntax_diagnostic("the text is nested too deeply to parse", ast.Span(1, 1, 1, 1), file, pou))
         return ParseResult(None, diagnostics)
-    return ParseResult(tree, diagnostics)
+    return ParseResult(tree, diagnostics, tokens)
 
 
 def syntax_diagnostic(

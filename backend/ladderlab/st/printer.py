@@ -293,10 +293,11 @@ def print_sfc(sfc: ast.Sfc, level: int = 0) -> str:
         elif isinstance(item, ast.SfcTransition):
             name = f" {item.name}" if item.name else ""
             priority = f" (PRIORITY := {item.priority})" if item.priority is not None else ""
-            out.append(
-                f"{pad}TRANSITION{name}{priority} FROM {_step_list(item.sources)} TO {_step_list(item.targets)}\n"
-                f"{pad}{INDENT}:= {_expr(item.condition, 0)};\n{pad}END_TRANSITION\n"
-            )
+            head = f"{pad}TRANSITION{name}{priority} FROM {_step_list(item.sources)} TO {_step_list(item.targets)}"
+            if item.condition is None:  # IL: the tree has no instructions (blanked), as an IL action's body
+                out.append(f"{head}:\n{pad}END_TRANSITION\n")
+            else:
+                out.append(f"{head}\n{pad}{INDENT}:= {_expr(item.condition, 0)};\n{pad}END_TRANSITION\n")
         else:
             body = (
                 print_sfc(item.body, level + 1)

@@ -7,12 +7,15 @@ examples can go through ``check_project`` exactly like edited projects.
 
 from __future__ import annotations
 
+import bisect
+
 from ..model.diagnostics import Diagnostic
 from ..model.project import (
     Accessor,
     Configuration,
     Method,
     Pou,
+    PouAction,
     ProgramInstance,
     Project,
     Property,
@@ -40,6 +43,11 @@ class _Text:
 
     def offset(self, line: int, column: int) -> int:
         return self.starts[line - 1] + column - 1
+
+    def position(self, offset: int) -> tuple[int, int]:
+        """The (line, column) of a character offset."""
+        line = bisect.bisect_right(self.starts, offset)
+        return line, offset - self.starts[line - 1] + 1
 
     def between(self, start: tuple[int, int], end: tuple[int, int]) -> str:
         return self.text[self.offset(*start) : self.offset(*end)]
@@ -90,7 +98,7 @@ def source_to_project(
 
 def _pou(pou: ast.Pou, source: _Text, language: str) -> Pou:
     end = (pou.span.end_line, pou.span.end_column - len(f"END_{pou.kind}"))
-    members = sorted(pou.methods + pou.properties, key=lambda m: (m.span.end_line, m.span.end_column))
+    members = sorted(pou.methods + pou.properties + pou.actions, key=lambda m: (m.span.end_line, m.span.end_column))
     declarations, body = _parts(pou, pou.var_blocks + members, end, source, language)
     return Pou(
         name=pou.name,
@@ -101,6 +109,7 @@ def _pou(pou: ast.Pou, source: _Text, language: str) -> Pou:
         body=_keep_lines(*body),
         methods=[_method(method, source) for method in pou.methods],
         properties=[_property(prop, source) for prop in pou.properties],
+        actions=[_action(action, source) for action in pou.actions],
         extends=pou.extends,
         implements=pou.implements,
         abstract=pou.modifier == "ABSTRACT",
@@ -123,6 +132,13 @@ def _parts(pou, leading: list, end: tuple[int, int], source: _Text, language: st
         if language == "il":  # the blanked IL body left no statements: it starts on the line after the header
             body_start = min((pou.span.line + 1, 1), end)
     return declarations, (source.between(body_start, end), body_start)
+
+
+def _action(action: ast.ActionDecl, source: _Text) -> PouAction:
+    """The statements between ``ACTION name:`` and ``END_ACTION``, as written."""
+    end = (action.span.end_line, action.span.end_column - len("END_ACTION"))
+    start = source.position(source.text.index(":", source.offset(action.span.line, action.span.column)) + 1)
+    return PouAction(name=action.name, body=_keep_lines(source.between(start, end), start))
 
 
 def _method(method: ast.MethodDecl, source: _Text) -> Method:

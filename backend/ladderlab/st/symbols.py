@@ -133,6 +133,7 @@ class MethodInfo:
     final: bool = False
     abstract: bool = False
     key: str = ""  # its key in ``owner.methods``: the upper-case name; a PROPERTY's accessors ``<P>.GET`` / ``.SET``
+    action: bool = False  # an ACTION of the FB (CODESYS, IL-08): no variables of its own
 
     def __post_init__(self) -> None:
         self.key = self.key or self.name.upper()

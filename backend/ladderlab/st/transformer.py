@@ -53,8 +53,27 @@ def _end(item: Any) -> tuple[int, int] | None:
 
 
 def span_of(children: Any) -> ast.Span:
-    start = _start(children)
-    end = _end(children)
+    """From the start of the first child to the end of the last one that has a place (runs for most nodes: the
+    usual case, a first and last child that are tokens or placed nodes, is decided without the walk)."""
+    start = end = None
+    if children.__class__ is list and children:
+        first, last = children[0], children[-1]
+        if isinstance(first, Token):
+            start = first.line, first.column
+        else:
+            span = getattr(first, "span", None)
+            if span is not None and span.line:
+                start = span.line, span.column
+        if isinstance(last, Token):
+            end = last.end_line, last.end_column
+        else:
+            span = getattr(last, "span", None)
+            if span is not None and span.line:
+                end = span.end_line, span.end_column
+    if start is None:
+        start = _start(children)
+    if end is None:
+        end = _end(children)
     if start is None or end is None:
         return ast.NO_SPAN
     return ast.Span(start[0], start[1], end[0], end[1])
@@ -159,7 +178,8 @@ class AstBuilder(Transformer):
         methods = [x for x in rest if isinstance(x, ast.MethodDecl)]
         sfc = next((x for x in rest if isinstance(x, ast.Sfc)), None)
         properties = [x for x in rest if isinstance(x, ast.PropertyDecl)]
-        members = (ast.VarBlock, ast.Sfc, ast.MethodDecl, ast.PropertyDecl)
+        actions = [x for x in rest if isinstance(x, ast.ActionDecl)]
+        members = (ast.VarBlock, ast.Sfc, ast.MethodDecl, ast.PropertyDecl, ast.ActionDecl)
         body = [x for x in rest if not isinstance(x, members)]
         return ast.Pou(
             "FUNCTION_BLOCK",
@@ -171,10 +191,14 @@ class AstBuilder(Transformer):
             sfc,
             methods=methods,
             properties=properties,
+            actions=actions,
             modifier=modifier,
             extends=extends,
             implements=implements,
         )
+
+    def pou_action(self, c):
+        return ast.ActionDecl(str(c[1]), list(c[2:-1]), span_of(c))
 
     def property_decl(self, c):
         modifiers = [x for x in c[1:] if isinstance(x, str) and not isinstance(x, Token)]
@@ -237,7 +261,8 @@ class AstBuilder(Transformer):
         name = next((str(x) for x in c[1:2] if isinstance(x, Token) and x.type == "IDENT"), None)
         priority = next((int(str(x)) for x in c if isinstance(x, Token) and x.type == "INTEGER"), None)
         steps = [x for x in c if isinstance(x, list)]
-        return ast.SfcTransition(name, priority, steps[0], steps[1], c[-2], span_of(c))
+        condition = c[-2] if not isinstance(c[-2], list) else None  # None: IL, read from the source
+        return ast.SfcTransition(name, priority, steps[0], steps[1], condition, span_of(c))
 
     def sfc_steps(self, c):
         return [str(x) for x in c]

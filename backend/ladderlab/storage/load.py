@@ -10,7 +10,6 @@ from filelock import FileLock
 from pydantic import ValidationError
 
 from ..model import Diagnostic, Project
-from ..st.project_text import source_to_project
 from . import journal
 from .errors import ProjectLoadError, json_text_problem, validation_diagnostics
 from .project_folder import PROJECT_FILE, is_project_file, read_project_folder
@@ -79,6 +78,8 @@ def project_from_st(text: str, *, name: str, file: str) -> Project:
     becomes the project's tasks; POU texts keep the file's line numbers, so later
     diagnostics point into it.
     """
+    from ..st.project_text import source_to_project  # the parser: imported at first use (startup, issue 27)
+
     project, diagnostics = source_to_project(text, name)
     errors = [d for d in diagnostics if d.severity == "error"]
     if project is None or errors:

@@ -106,8 +106,8 @@ def test_path(name: str) -> str:
     return f"{TESTS_DIR}/{name}{TEST_SUFFIX}"
 
 
-#: The object orientation's fields of a POU, left out of its file when they hold their defaults.
-OO_KEYS = ("methods", "properties", "implements", "abstract", "final")
+#: The object orientation's fields of a POU (and its actions), left out of its file when they hold their defaults.
+OO_KEYS = ("methods", "properties", "actions", "implements", "abstract", "final")
 
 
 def pou_file(pou: Pou) -> tuple[str, str]:

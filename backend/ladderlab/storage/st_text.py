@@ -12,8 +12,8 @@ import re
 from dataclasses import dataclass
 
 from ..model import Pou
-from ..model.project import Language, Method, PouKind, Property
-from ..st.il_parser import looks_like_il
+from ..model.project import Language, Method, PouAction, PouKind, Property
+from ..st.il_words import looks_like_il
 
 _TOKEN = re.compile(
     r"""
@@ -189,6 +189,7 @@ def compose_pou_text(pou: Pou) -> str:
         parts.append(pou.declarations)
     parts += [_method_text(method) for method in pou.methods]
     parts += [_property_text(prop) for prop in pou.properties]
+    parts += [_action_text(action) for action in pou.actions]
     if pou.body:
         parts.append(pou.body)
     parts.append(POU_END[pou.kind])
@@ -199,6 +200,10 @@ def _method_text(method: Method) -> str:
     modifiers = [method.access, *(["FINAL"] if method.final else []), *(["ABSTRACT"] if method.abstract else [])]
     header = f"METHOD {' '.join(modifiers)} {method.name}" + (f" : {method.return_type}" if method.return_type else "")
     return "\n".join([header, *_texts(method.declarations, method.body), "END_METHOD"])
+
+
+def _action_text(action: PouAction) -> str:
+    return "\n".join([f"ACTION {action.name}:", *_texts(action.body), "END_ACTION"])
 
 
 def _property_text(prop: Property) -> str:

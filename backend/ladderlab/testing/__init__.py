@@ -5,3 +5,6 @@ for the generated code; ``suite.py`` finds a project's test files and runs them 
 when there are many); ``report.py`` writes text, jsonl and JUnit XML; ``coverage.py`` collects what the
 tests never executed or energised; ``grade.py`` scores exercises. Shared by the CLI and the server.
 """
+
+#: Scans one test may run at most (here, not in run.py: the command line shows it without the compiler).
+DEFAULT_SCAN_BUDGET = 1_000_000

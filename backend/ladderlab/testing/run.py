@@ -25,10 +25,9 @@ from ..ir.lower_tests import LoweredTest, Site, lower_test_file
 from ..model.diagnostics import Diagnostic
 from ..model.project import Project
 from ..simulation.build import Build, task_watchdogs
+from . import DEFAULT_SCAN_BUDGET
 from .coverage import Coverage, instrument
 from .host import Failure, Host, TestFailure
-
-DEFAULT_SCAN_BUDGET = 1_000_000
 
 
 @dataclass(frozen=True)

@@ -10,6 +10,7 @@ import type { Task } from "../generated/api";
 import { DeclarationsEditor } from "../declarations/DeclarationsEditor";
 import { useDeclarableTypes } from "../store/declarableTypes";
 import { RenameDialog } from "../tree/PouActions";
+import { TypeActions } from "../tree/TypeActions";
 import { usePanels } from "../store/panels";
 import { LazyStEditor, LOADING } from "./lazy";
 import { useLiveCheck } from "../store/useLiveCheck";
@@ -17,7 +18,7 @@ import { useOnline } from "../online/store";
 import { taskIndexOf, type ProjectPart } from "../store/parts";
 import { structMembers, TYPE_KINDS, typeRows, withNewType, withStructMembers, type TypeKind } from "../store/types";
 import type { DeclRow } from "../iec/declarations";
-import { useWorkspace } from "../store/project";
+import { useWorkspace, workspaceStore } from "../store/project";
 import { FormError } from "../ui/FormError";
 import { asInstance, runField } from "../store/bindings";
 import { RunBindings } from "./RunBindings";
@@ -34,8 +35,11 @@ function usePartDiagnostics(): Diagnostic[] {
 
 /** The line a clicked diagnostic of this part asks to reveal. */
 function usePartFocus(part: ProjectPart) {
-  return usePanels((s) =>
-    s.focus?.pou === part && s.focus.line != null ? { line: s.focus.line, seq: s.focus.seq } : null,
+  const focus = usePanels((s) => s.focus);
+  // derived outside the selector: a selector returning a new object every time renders without end
+  return useMemo(
+    () => (focus?.pou === part && focus.line != null ? { line: focus.line, seq: focus.seq } : null),
+    [focus, part],
   );
 }
 
@@ -47,7 +51,7 @@ export function GlobalsView() {
   const setGlobals = useWorkspace((s) => s.setGlobals);
   const types = useDeclarableTypes();
   const diagnostics = usePartDiagnostics().filter((d) => d.file === "globals");
-  const focus = usePartFocus("Global variables");
+  const focus = usePartFocus("part:globals");
   const phase = useOnline((s) => s.phase);
   return (
     <div className="pou-view part-view" aria-label="Global variables editor" role="region">
@@ -70,7 +74,7 @@ export function TypesView() {
   const text = useWorkspace((s) => s.project?.types ?? "");
   const setTypes = useWorkspace((s) => s.setTypes);
   const diagnostics = usePartDiagnostics();
-  const focus = usePartFocus("Types");
+  const focus = usePartFocus("part:types");
   const phase = useOnline((s) => s.phase);
   const [jump, setJump] = useState<{ line: number; seq: number } | null>(null);
   const [name, setName] = useState("");
@@ -138,6 +142,7 @@ export function TypesView() {
                   >
                     <PencilLine size={14} aria-hidden="true" />
                   </button>
+                  <TypeActions type={r.name} disabledBecause={readOnly ?? undefined} />
                 </td>
               </tr>
             ))}
@@ -312,7 +317,7 @@ export function TasksView() {
     update(index, { programs: list });
   };
   return (
-    <div className="pou-view part-view" role="region" aria-label="Tasks editor">
+    <div className="pou-view part-view tasks-view" role="region" aria-label="Tasks editor">
       {tasks.length === 0 ? (
         <p className="tree-empty">No tasks: every program runs in the default task every 10 ms.</p>
       ) : null}
@@ -338,7 +343,7 @@ export function TasksView() {
             const runs = task.programs ?? [];
             return (
               <tr key={index} aria-label={`Task ${task.name}`} className={problems.length ? "task-invalid" : undefined}>
-                <td>
+                <td data-label="Name">
                   <input
                     aria-label="Task name"
                     value={task.name}
@@ -346,7 +351,7 @@ export function TasksView() {
                     onChange={(e) => update(index, { name: e.target.value })}
                   />
                 </td>
-                <td>
+                <td data-label="Interval">
                   <input
                     aria-label="Interval"
                     value={task.interval ?? ""}
@@ -355,7 +360,7 @@ export function TasksView() {
                     onChange={(e) => update(index, { interval: e.target.value || null })}
                   />
                 </td>
-                <td>
+                <td data-label="SINGLE (event)">
                   <input
                     aria-label="SINGLE"
                     value={task.single ?? ""}
@@ -364,7 +369,7 @@ export function TasksView() {
                     onChange={(e) => update(index, { single: e.target.value || null })}
                   />
                 </td>
-                <td>
+                <td data-label="Priority">
                   <input
                     aria-label="Priority"
                     type="number"
@@ -374,7 +379,7 @@ export function TasksView() {
                     onChange={(e) => update(index, { priority: Number(e.target.value) || 0 })}
                   />
                 </td>
-                <td>
+                <td data-label="Watchdog (ms)">
                   <input
                     aria-label="Watchdog"
                     type="number"
@@ -385,7 +390,7 @@ export function TasksView() {
                     onChange={(e) => update(index, { watchdog_ms: e.target.value ? Number(e.target.value) : null })}
                   />
                 </td>
-                <td>
+                <td data-label="Programs, in the order they run" className="task-programs-cell">
                   <ol className="task-programs" aria-label={`Programs of ${task.name}`}>
                     {runs.map((program, p) => (
                       <li key={p /* not its name: renaming the instance keeps the field focused */}>
@@ -469,7 +474,13 @@ export function TasksView() {
                     type="button"
                     aria-label={`Delete task ${task.name}`}
                     disabled={disabled}
-                    onClick={() => setTasks(tasks.filter((_, i) => i !== index))}
+                    onClick={() => {
+                      // one undoable step, as from the tree's menu
+                      const ws = workspaceStore.getState();
+                      if (!ws.project) return;
+                      const rest = tasks.filter((_, i) => i !== index);
+                      ws.applyOperation(`delete task ${task.name}`, { ...ws.project, tasks: rest }, ["part:tasks"]);
+                    }}
                   >
                     Delete
                   </button>

@@ -34,6 +34,7 @@ import { testsStore, useTests } from "../tests/store";
 import { runsOf } from "../store/tasks";
 import { useDiagramPou } from "../ld/useDiagramPou";
 import { TaskActions } from "../tree/TaskActions";
+import { TypesInTree } from "../tree/TypeActions";
 import { followBreakpoints } from "./followBreakpoints";
 import { partAt, elementText as sfcElementText, type SfcBody } from "../sfc/model";
 import { ExportMenu } from "../interchange/ExportMenu";
@@ -58,7 +59,7 @@ import { LOADING } from "./lazy";
 import { useHidden, useStoredSize } from "../store/layout";
 import { KindPicker, PouActions } from "../tree/PouActions";
 import { TestFileActions } from "../tests/TestFileActions";
-import { isProjectPart, PROJECT_PARTS, type ProjectPart } from "../store/parts";
+import { isProjectPart, PART_LABELS, PROJECT_PARTS, type ProjectPart } from "../store/parts";
 import { PouMembers } from "../tree/PouMembers";
 import { typeRows } from "../store/types";
 import { keepSession, restoreSession, type SessionStores } from "./session";
@@ -67,6 +68,7 @@ import { FormError } from "../ui/FormError";
 
 // Loaded on first use, each in its own chunk: the ST views (CodeMirror) and the FBD editor (@xyflow).
 const StPouView = lazy(() => import("./StViews").then((m) => ({ default: m.StPouView })));
+const ActionsView = lazy(() => import("./ActionsView").then((m) => ({ default: m.ActionsView })));
 const TestFileView = lazy(() => import("./StViews").then((m) => ({ default: m.TestFileView })));
 const FbdPouView = lazy(() => import("../fbd/FbdPouView").then((m) => ({ default: m.FbdPouView })));
 const ShellTab = lazy(() => import("../hmi/ShellTab").then((m) => ({ default: m.ShellTab })));
@@ -249,9 +251,9 @@ function TestFilesTree() {
 
 /** What the tree says of a project part: how many types, globals, tasks it has. */
 function partSummary(project: Project, part: ProjectPart): string {
-  if (part === "Tasks") return project.tasks?.length ? `${project.tasks.length}` : "default";
-  if (part === "Library manager") return project.libraries?.length ? `${project.libraries.length}` : "none";
-  if (part === "Types") return `${typeRows(project.types ?? "").length}`;
+  if (part === "part:tasks") return project.tasks?.length ? `${project.tasks.length}` : "default";
+  if (part === "part:libraries") return project.libraries?.length ? `${project.libraries.length}` : "none";
+  if (part === "part:types") return `${typeRows(project.types ?? "").length}`;
   const parsed = parseDeclarations(project.globals ?? "");
   return parsed.ok ? `${parsed.rows.length}` : "";
 }
@@ -314,7 +316,7 @@ function ProjectTree() {
                 aria-current={active === part ? "true" : undefined}
                 onClick={() => openPou(part)}
               >
-                <span className="tree-name">{part}</span>
+                <span className="tree-name">{PART_LABELS[part]}</span>
                 <span className="tree-meta">{partSummary(project, part)}</span>
                 {changed.includes(part) ? (
                   <span className="unsaved" aria-label="unsaved changes">
@@ -322,6 +324,7 @@ function ProjectTree() {
                   </span>
                 ) : null}
               </button>
+              {part === "part:types" ? <TypesInTree text={project.types ?? ""} /> : null}
             </li>
           ))}
         </ul>
@@ -401,7 +404,12 @@ function Tabs() {
               </span>
             ) : null}
           </button>
-          <button type="button" className="tab-close" aria-label={`Close ${pou}`} onClick={() => closeTab(pou)}>
+          <button
+            type="button"
+            className="tab-close"
+            aria-label={`Close ${tabLabel(pou)}`}
+            onClick={() => closeTab(pou)}
+          >
             ×
           </button>
         </div>
@@ -449,17 +457,17 @@ function LdPouView({ pou, history }: { pou: Pou; history: History<LdBody> }) {
 const TREE_MIN_PX = 160;
 const TREE_MAX_PX = 480;
 
-type PouMode = "body" | "declarations" | "variables" | "st";
+type PouMode = "body" | "declarations" | "variables" | "st" | "actions";
 
 function ProjectPartView({ part }: { part: ProjectPart }) {
   return (
-    <ViewBoundary name={`The ${part} editor`}>
+    <ViewBoundary name={`The ${PART_LABELS[part]} editor`}>
       <Suspense fallback={LOADING}>
-        {part === "Global variables" ? (
+        {part === "part:globals" ? (
           <GlobalsView />
-        ) : part === "Types" ? (
+        ) : part === "part:types" ? (
           <TypesView />
-        ) : part === "Library manager" ? (
+        ) : part === "part:libraries" ? (
           <LibrariesView />
         ) : (
           <TasksView />
@@ -494,6 +502,9 @@ function PouView({ name }: { name: string }) {
     { id: "declarations", label: "Declarations" },
     { id: "variables", label: "Variables" },
     ...(pou.language !== "st" ? [{ id: "st" as const, label: "View as ST" }] : []),
+    ...(pou.kind === "function_block"
+      ? [{ id: "actions" as const, label: `Actions (${pou.actions?.length ?? 0})` }]
+      : []),
   ];
   let content;
   if (mode === "declarations") {
@@ -505,6 +516,8 @@ function PouView({ name }: { name: string }) {
         focus={focus?.part === "declarations" && focus.line != null ? { line: focus.line, seq: focus.seq } : null}
       />
     );
+  } else if (mode === "actions") {
+    content = <ActionsView pou={pou} />;
   } else if (mode === "variables") {
     content = <VariablesView pou={pou} instancePicker={<InstancePicker pou={pou.name} />} />;
   } else if (mode === "st") {
@@ -538,7 +551,9 @@ function PouView({ name }: { name: string }) {
         ? `The variables of ${name}`
         : mode === "st"
           ? `The ST view of ${name}`
-          : `The ${LANGUAGE[pou.language]} editor of ${name}`;
+          : mode === "actions"
+            ? `The actions of ${name}`
+            : `The ${LANGUAGE[pou.language]} editor of ${name}`;
   return (
     <div className="pou-view">
       <div className="pou-modes" role="tablist" aria-label={`${name} views`}>
@@ -712,7 +727,11 @@ export function WorkspaceView() {
         />
         <h2>{name}</h2>
         <span className={`save-state${changed.length ? " dirty" : ""}`} role="status">
-          {saving ? "Saving…" : changed.length ? `Unsaved changes in ${changed.join(", ")}` : "All changes saved"}
+          {saving
+            ? "Saving…"
+            : changed.length
+              ? `Unsaved changes in ${changed.map(tabLabel).join(", ")}`
+              : "All changes saved"}
         </span>
         <ToolButton
           icon={Save}

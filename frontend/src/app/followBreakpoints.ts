@@ -4,13 +4,16 @@
 import { debugStore } from "../debug/store";
 import { goneBecause } from "../breakpointPlaces/follow";
 import { panelsStore } from "../store/panels";
+import { onlineStore } from "../online/store";
 import { workspaceStore } from "../store/project";
 
 /** Starts following the open project; returns the function that stops it. A new message shows the Breakpoints
- * panel, where it is. */
+ * panel, where it is, and goes into the online log with the session's other events. */
 export function followBreakpoints(): () => void {
   const showNotice = debugStore.subscribe((state, previous) => {
-    if (state.notice && state.notice !== previous.notice) panelsStore.getState().show("breakpoints");
+    if (!state.notice || state.notice === previous.notice) return;
+    panelsStore.getState().show("breakpoints");
+    onlineStore.getState().note("warning", state.notice);
   });
   const follow = workspaceStore.subscribe((state, previous) => {
     const next = state.project;

@@ -15,6 +15,7 @@ const project: Project = {
   pous: [
     { name: "Main", kind: "program", language: "ld", declarations: "", body: motorMain },
     { name: "Calc", kind: "program", language: "st", declarations: "", body: "" },
+    { name: "Types", kind: "program", language: "st", declarations: "", body: "" },
   ],
 };
 
@@ -89,6 +90,27 @@ describe("the session of a project (issue 17: restored after a reload)", () => {
     expect(s.online.getState()).toMatchObject({ phase: "offline", simulation: null, watch: ["A"] });
     s.storage.setItem("ladderlab:session:demo", "{not json");
     expect(loadSession("demo", s.storage)).toMatchObject({ watch: [], tabs: [], simulation: null });
+  });
+
+  it("opens the tabs of a session kept before the parts had their own keys as those parts (issue 22)", async () => {
+    const s = stores([]);
+    // kept by an older version: the parts' tabs were named by their labels, so "Types" was the Types editor
+    const legacy = { tabs: ["Types", "Main", "Global variables", "Library manager"], active: "Types" };
+    s.storage.setItem("ladderlab:session:demo", JSON.stringify(legacy));
+    await s.workspace.getState().open("demo");
+    await restoreSession("demo", s, s.storage);
+    expect(s.workspace.getState()).toMatchObject({
+      tabs: ["part:types", "Main", "part:globals", "part:libraries"],
+      active: "part:types",
+    });
+    // the POU called Types has a tab of its own beside the Types editor, and both are kept under their keys
+    const stop = keepSession("demo", s, s.storage);
+    s.workspace.getState().openPou("Types");
+    stop();
+    expect(loadSession("demo", s.storage)).toMatchObject({
+      tabs: ["part:types", "Main", "part:globals", "part:libraries", "Types"],
+      active: "Types",
+    });
   });
 
   it("remembers the project open last", () => {

@@ -7,6 +7,7 @@ import type { OnlineState } from "../online/store";
 import type { TraceState } from "../trace/store";
 import type { TriggerForm } from "../trace/trigger";
 import type { WorkspaceState } from "../store/project";
+import { migratedTab } from "../store/parts";
 
 export interface TraceSetup {
   paths: string[];
@@ -28,6 +29,8 @@ export interface Session {
 
 const emptySession: Session = { watch: [], watchExpanded: [], trace: null, tabs: [], active: null, simulation: null };
 const sessionKey = (project: string) => `ladderlab:session:${project}`;
+/** 2: the project parts' tabs are keyed `part:<id>` (store/parts.ts); an entry without it has the old keys. */
+const SESSION_VERSION = 2;
 const LAST_PROJECT = "ladderlab:last-project";
 
 const strings = (value: unknown): string[] =>
@@ -39,6 +42,7 @@ export function loadSession(project: string, storage: Storage): Session {
     const kept = JSON.parse(storage.getItem(sessionKey(project)) ?? "null") as Partial<Record<keyof Session, unknown>>;
     if (!kept || typeof kept !== "object") return emptySession;
     const trace = kept.trace as Partial<TraceSetup> | null | undefined;
+    const tab = (key: string) => ((kept as { version?: unknown }).version === SESSION_VERSION ? key : migratedTab(key));
     return {
       watch: strings(kept.watch),
       watchExpanded: strings(kept.watchExpanded),
@@ -52,8 +56,8 @@ export function loadSession(project: string, storage: Storage): Session {
               laneView: trace.laneView !== false,
             }
           : null,
-      tabs: strings(kept.tabs),
-      active: typeof kept.active === "string" ? kept.active : null,
+      tabs: strings(kept.tabs).map(tab),
+      active: typeof kept.active === "string" ? tab(kept.active) : null,
       simulation: typeof kept.simulation === "string" ? kept.simulation : null,
     };
   } catch {
@@ -63,7 +67,7 @@ export function loadSession(project: string, storage: Storage): Session {
 
 function saveSession(project: string, session: Session, storage: Storage): void {
   try {
-    storage.setItem(sessionKey(project), JSON.stringify(session));
+    storage.setItem(sessionKey(project), JSON.stringify({ ...session, version: SESSION_VERSION }));
   } catch {
     // storage full or refused: the session works until the page is reloaded
   }

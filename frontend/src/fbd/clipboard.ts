@@ -6,7 +6,7 @@ import { networksOf, nodesOf, wiresOf, type FbdBody, type FbdNetwork, type FbdNo
 import { PREFIX, usedIds, type EditResult } from "./ops";
 
 const FORMAT = "ladderlab/fbd-clip";
-const KINDS = new Set(["block", "input", "output", "jump", "return", "connector", "continuation", "comment"]);
+const KINDS = new Set(["block", "input", "output", "jump", "return", "label", "connector", "continuation", "comment"]);
 export const PASTE_OFFSET = 30;
 
 export interface FbdClip {

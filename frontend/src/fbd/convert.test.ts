@@ -39,7 +39,8 @@ describe("FBD -> CFC", () => {
     ]);
     expect(fbdToCfc(bodyOf(arithmetic(), jumping), orders, () => 100)).toEqual({
       ok: false,
-      error: "Network 2 jumps to End: a CFC chart has no networks to jump to. Remove the jump first.",
+      error:
+        "Network 2 jumps to End: a CFC chart has no networks to jump to (its jumps go to label elements). Remove the jump first.",
     });
     const k = (network: FbdNetwork): FbdNetwork => ({
       ...network,
@@ -74,6 +75,20 @@ describe("CFC -> FBD", () => {
       error:
         'The chart runs SUB as number 1, where data flow would run ADD: FBD cannot keep that order. Use "Order by ' +
         'data flow" first (it changes what the chart computes), or keep the chart.',
+    });
+  });
+
+  it("refuses a chart with jumps or labels (issue 26: CFC jumps go to label elements, FBD jumps to networks)", () => {
+    const labelled = bodyOf({
+      ...arithmetic(),
+      id: "chart",
+      nodes: [...arithmetic().nodes!, { type: "label" as const, id: "l", name: "Again" }],
+    });
+    expect(cfcToFbd(labelled, ["add", "sub", "r"], flow)).toEqual({
+      ok: false,
+      error:
+        "The chart has a label: a chart's jumps go to its label elements, FBD's to whole networks. Remove the " +
+        "jumps and labels first, or keep the chart.",
     });
   });
 });

@@ -44,7 +44,7 @@ export function fbdToCfc(
       if (kindOf(node) === "jump")
         return {
           ok: false,
-          error: `Network ${number} jumps to ${(node as { target: string }).target}: a CFC chart has no networks to jump to. Remove the jump first.`,
+          error: `Network ${number} jumps to ${(node as { target: string }).target}: a CFC chart has no networks to jump to (its jumps go to label elements). Remove the jump first.`,
         };
       if (kindOf(node) === "connector") {
         const name = (node as { name: string }).name.toUpperCase();
@@ -71,6 +71,14 @@ export function fbdToCfc(
  */
 export function cfcToFbd(body: FbdBody, chartOrder: readonly string[], flowOrder: readonly string[]): Converted {
   const chart = networksOf(body)[0] ?? { id: "chart" };
+  const control = nodesOf(chart).find((n) => kindOf(n) === "jump" || kindOf(n) === "label");
+  if (control)
+    return {
+      ok: false,
+      error:
+        `The chart has ${kindOf(control) === "jump" ? "a jump" : "a label"}: a chart's jumps go to its label ` +
+        `elements, FBD's to whole networks. Remove the jumps and labels first, or keep the chart.`,
+    };
   const numbers = executed(chart, chartOrder);
   const flow = executed(chart, flowOrder);
   const at = numbers.findIndex((id, i) => flow[i] !== id);

@@ -12,6 +12,7 @@ export type {
   FbdBody,
   FbdComment,
   FbdJump,
+  FbdLabel,
   FbdNetwork,
   FbdReturn,
   InputNode,
@@ -163,6 +164,7 @@ export function nodePins(node: FbdNode, network: FbdNetwork, lookup: Lookup, sym
       return { inputs: [{ name: SIMPLE_IN, type: "BOOL" }], outputs: [] };
     case "connector":
       return { inputs: [{ name: SIMPLE_IN }], outputs: [] };
+    case "label":
     case "continuation":
       return { inputs: [], outputs: [{ name: SIMPLE_OUT }] };
     case "comment":

@@ -37,6 +37,7 @@ export const PREFIX: Record<NonNullable<FbdNode["type"]>, string> = {
   output: "out",
   jump: "jump",
   return: "ret",
+  label: "label",
   connector: "con",
   continuation: "cont",
   comment: "note",
@@ -101,6 +102,7 @@ export type NodeSpec =
   | { type: "output"; var?: string; mode?: OutputMode }
   | { type: "jump"; target?: string }
   | { type: "return" }
+  | { type: "label"; name?: string }
   | { type: "connector"; name?: string }
   | { type: "continuation"; name?: string }
   | { type: "comment"; text?: string };
@@ -130,6 +132,8 @@ function nodeOf(spec: NodeSpec, id: string, pos: Position): FbdNode {
       return { type: "jump", id, pos, target: spec.target ?? "" };
     case "return":
       return { type: "return", id, pos };
+    case "label":
+      return { type: "label", id, pos, name: spec.name ?? "" };
     case "connector":
     case "continuation":
       return { type: spec.type, id, pos, name: spec.name ?? "" };
@@ -176,8 +180,8 @@ export function moveNodes(body: FbdBody, positions: ReadonlyMap<string, Position
   return done({ ...body, networks }, [...positions.keys()]);
 }
 
-/** The text of a node: an input's operand, an output's variable, a jump's target, a connector's name, a block's
- * instance, a comment's text. */
+/** The text of a node: an input's operand, an output's variable, a jump's target, a connector's or a CFC label's
+ * name, a block's instance, a comment's text. */
 export function setNodeText(body: FbdBody, id: string, text: string): EditResult {
   const value = text.trim();
   const next = updateNode(body, id, (node) => {
@@ -190,6 +194,7 @@ export function setNodeText(body: FbdBody, id: string, text: string): EditResult
         return { ...node, target: value };
       case "connector":
       case "continuation":
+      case "label":
         return { ...node, name: value };
       case "block":
         return { ...node, instance: value || null };
@@ -313,7 +318,7 @@ export function arrangeNetwork(
 ): EditResult {
   const net = networksOf(body).find((n) => n.id === network);
   if (!net) return fail(`There is no network ${network}.`);
-  const laid = arranged(net, height);
+  const laid = arranged(net, height, order);
   // the order pinned: a chart's execution order numbers (returns too) stay as they were
   const kept = order?.filter((id) => ordered(net, id, chart));
   const next = kept?.length ? { ...laid, order: kept } : laid;

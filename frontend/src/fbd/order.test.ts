@@ -38,6 +38,24 @@ describe("CFC execution order", () => {
     const result = orderByDataFlow(chart(), "n1", ["a", "b", "add", "c", "sub", "r", "ret"]);
     expect(result.ok && result.body.networks![0]!.order).toEqual(["add", "sub", "r", "ret"]);
   });
+
+  it("keeps jumps and labels at their numbers, ordering by data flow only between them (issue 26)", () => {
+    const jumping = bodyOf({
+      ...arithmetic(),
+      nodes: [
+        ...(arithmetic().nodes ?? []),
+        { type: "jump", id: "j", target: "L" },
+        { type: "label", id: "l", name: "L" },
+      ],
+    });
+    // numbered: sub, j, r, add, l -> the data flow (add before sub before r) may not carry add over the jump
+    const flow = ["a", "b", "add", "c", "sub", "r", "j", "l"];
+    const result = orderByDataFlow(jumping, "n1", flow, ["sub", "j", "r", "add", "l"]);
+    expect(result.ok && result.body.networks![0]!.order).toEqual(["sub", "j", "add", "r", "l"]);
+    // without the chart's numbers (not known yet), the FBD order as it is
+    const plain = orderByDataFlow(jumping, "n1", flow);
+    expect(plain.ok && plain.body.networks![0]!.order).toEqual(["add", "sub", "r", "j", "l"]);
+  });
 });
 
 describe("auto-arrange on a chart", () => {

@@ -2,12 +2,12 @@
 // docs/diagrams.md "Evaluation order"): "run earlier/later" swaps a block or output node with its
 // neighbour in the order the lowering reports, unless one feeds the other - data flow always wins.
 // On a CFC chart (docs/diagrams.md "CFC") the order list is the order: every executed element
-// (blocks, outputs, returns) moves freely, and a wire against the order carries the previous scan.
+// (blocks, outputs, jumps, labels, returns) moves freely, and a wire against the order carries the previous scan.
 import { kindOf, networksOf, nodesOf, wiresOf, type FbdBody, type FbdNetwork, type PinRef } from "./model";
 import type { EditResult } from "./ops";
 
 /** Elements with an execution order number on a CFC chart (inputs are read where they are used). */
-const EXECUTED = new Set(["block", "output", "jump", "return"]);
+const EXECUTED = new Set(["block", "output", "jump", "label", "return"]);
 
 /** Nodes whose place the `order` list decides (inputs follow their consumer; in FBD jumps and returns run last). */
 export const ordered = (network: FbdNetwork, id: string, chart = false): boolean => {
@@ -40,11 +40,37 @@ export function feedbackPins(network: FbdNetwork, order: readonly string[]): Set
   return found;
 }
 
-/** "Order by data flow" on a chart: its executed elements in `flow`, the FBD order the backend reported. */
-export function orderByDataFlow(body: FbdBody, networkId: string, flow: readonly string[]): EditResult {
+/**
+ * "Order by data flow" on a chart: its executed elements in `flow`, the FBD order the backend reported. A chart with
+ * jumps or labels keeps them at their numbers (`current`, the chart's order): the data flow orders the elements
+ * between two of them only, so no element changes side of a jump or label (which would change what is skipped).
+ */
+export function orderByDataFlow(
+  body: FbdBody,
+  networkId: string,
+  flow: readonly string[],
+  current: readonly string[] = [],
+): EditResult {
   const network = networksOf(body).find((n) => n.id === networkId);
   if (!network) return { ok: false, error: `There is no network ${networkId}.` };
-  const order = flow.filter((id) => ordered(network, id, true));
+  let order = flow.filter((id) => ordered(network, id, true));
+  const fixed = new Set(
+    nodesOf(network)
+      .filter((n) => kindOf(n) === "jump" || kindOf(n) === "label")
+      .map((n) => n.id),
+  );
+  const numbered = current.filter((id) => ordered(network, id, true));
+  if (fixed.size && numbered.length === order.length) {
+    const place = new Map(order.map((id, i) => [id, i]));
+    const segments: string[][] = [[]];
+    for (const id of numbered) {
+      if (fixed.has(id)) segments.push([id], []);
+      else segments[segments.length - 1]!.push(id);
+    }
+    order = segments.flatMap((s) =>
+      s.length === 1 && fixed.has(s[0]!) ? s : s.sort((a, b) => place.get(a)! - place.get(b)!),
+    );
+  }
   const networks = networksOf(body).map((n) => (n.id === networkId ? { ...n, order } : n));
   return { ok: true, body: { ...body, networks }, select: [] };
 }

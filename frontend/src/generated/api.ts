@@ -1451,6 +1451,23 @@ export interface components {
        */
       type: "jump";
     };
+    /**
+     * FbdLabel
+     * @description A jump target on a CFC chart (CODESYS's CFC label): the chart's jumps to ``name`` go on at its execution
+     *     order number. FBD labels its networks instead (``FbdNetwork.label``), so an FBD network refuses one.
+     */
+    FbdLabel: {
+      /** Id */
+      id: string;
+      /** Name */
+      name: string;
+      pos?: components["schemas"]["Position"] | null;
+      /**
+       * @description discriminator enum property added by openapi-typescript
+       * @enum {string}
+       */
+      type: "label";
+    };
     /** FbdNetwork */
     FbdNetwork: {
       /** Comment */
@@ -1466,6 +1483,7 @@ export interface components {
         | components["schemas"]["OutputNode"]
         | components["schemas"]["FbdJump"]
         | components["schemas"]["FbdReturn"]
+        | components["schemas"]["FbdLabel"]
         | components["schemas"]["Connector"]
         | components["schemas"]["Continuation"]
         | components["schemas"]["FbdComment"]
@@ -2358,6 +2376,11 @@ export interface components {
        */
       abstract?: boolean;
       /**
+       * Actions
+       * @description Function blocks only: their ACTIONs outside SFC (CODESYS), ST bodies.
+       */
+      actions?: components["schemas"]["PouAction"][];
+      /**
        * Body
        * @default
        */
@@ -2416,6 +2439,22 @@ export interface components {
        * @description Functions only: the result type.
        */
       return_type?: string | null;
+    };
+    /**
+     * PouAction
+     * @description An ACTION of a FUNCTION_BLOCK outside SFC (CODESYS; IEC 61131-3 ed. 2's action syntax): statements that run
+     *     on the variables of the instance it is called on - ``inst.Action();`` in ST, ``CAL inst.Action`` in IL,
+     *     ``Action();`` in the FB itself (IL-08). No variables or parameters of its own (docs/st.md, "Actions").
+     */
+    PouAction: {
+      /**
+       * Body
+       * @description ST statements.
+       * @default
+       */
+      body?: string;
+      /** Name */
+      name: string;
     };
     /**
      * PrintDocument
@@ -3866,6 +3905,7 @@ export type ExampleInfo = components["schemas"]["ExampleInfo"];
 export type FbdBody = components["schemas"]["FbdBody"];
 export type FbdComment = components["schemas"]["FbdComment"];
 export type FbdJump = components["schemas"]["FbdJump"];
+export type FbdLabel = components["schemas"]["FbdLabel"];
 export type FbdNetwork = components["schemas"]["FbdNetwork"];
 export type FbdOrder = components["schemas"]["FbdOrder"];
 export type FbdReturn = components["schemas"]["FbdReturn"];
@@ -3903,6 +3943,7 @@ export type PinRef = components["schemas"]["PinRef"];
 export type PlantSymbol = components["schemas"]["PlantSymbol"];
 export type Position = components["schemas"]["Position"];
 export type Pou = components["schemas"]["Pou"];
+export type PouAction = components["schemas"]["PouAction"];
 export type PrintDocument = components["schemas"]["PrintDocument"];
 export type ProgramInstance = components["schemas"]["ProgramInstance"];
 export type Project = components["schemas"]["Project"];

@@ -111,15 +111,15 @@ export const DIAGNOSTICS = {
       severity: "error",
       summary: "A check or build ran out of its time or memory.",
     },
-    "CFC-JUMP": {
-      anchor: "cfc-jump",
+    "CFC-JUMP-CONDITION": {
+      anchor: "cfc-jump-condition",
       area: "fbd",
-      example: "a jump to 'Skip' on a CFC chart",
+      example: "a jump to 'Over' on a CFC chart with nothing wired into its input",
       example_language: "text",
       example_note: "",
-      fix: "a CFC chart is one chart without networks, so there is no label to jump to: end the POU early with a (conditional) return, or switch on EN of the blocks to skip and wire the condition to it.",
+      fix: "a CFC jump acts on its BOOL input (CODESYS refuses an unconnected one too): wire the condition into it, or an input `TRUE` for a jump in every scan.",
       severity: "error",
-      summary: "A CFC chart has a jump: a chart has no networks or labels to jump to.",
+      summary: "A jump on a CFC chart has no condition wired into its input.",
     },
     CONFLICT: {
       anchor: "conflict",
@@ -281,9 +281,10 @@ export const DIAGNOSTICS = {
       example: 'a network labelled "1x"',
       example_language: "text",
       example_note: "",
-      fix: "a label is an identifier (`Fault`) or an unsigned integer (`10`).",
+      fix: "a label is an identifier (`Fault`) or an unsigned integer (`10`). FBD labels networks (the network's label field); label elements stand on CFC charts only.",
       severity: "error",
-      summary: "A network label is not an identifier or an unsigned integer.",
+      summary:
+        "A network or CFC label is not an identifier or an unsigned integer, or FBD has a label element.",
     },
     "FBD-BAD-WIRE": {
       anchor: "fbd-bad-wire",
@@ -333,7 +334,7 @@ export const DIAGNOSTICS = {
       example_note: "",
       fix: "labels are unique within a POU (without case): rename one.",
       severity: "error",
-      summary: "Two networks of a POU have the same label.",
+      summary: "Two networks of a POU (two labels of a CFC chart) have the same label.",
     },
     "FBD-FEEDBACK": {
       anchor: "fbd-feedback",
@@ -429,12 +430,12 @@ export const DIAGNOSTICS = {
     "FBD-NOT-CALLABLE": {
       anchor: "ld-not-callable-fbd-not-callable",
       area: "diagram",
-      example: "a box calling the program Main",
+      example: "a box in the function block Valve calling the program Main",
       example_language: "text",
       example_note: "",
-      fix: "programs are run by tasks; make the POU a function block to call it from a box.",
+      fix: "only programs call programs (as in ST): call it from a program's box, or make the called POU a function block and give the box an instance.",
       severity: "error",
-      summary: "A box calls a program.",
+      summary: "A box in a function or function block calls a program.",
     },
     "FBD-ORDER": {
       anchor: "fbd-order",
@@ -482,9 +483,9 @@ export const DIAGNOSTICS = {
       example: 'a jump to "Nxet" while the label is "Next"',
       example_language: "text",
       example_note: "",
-      fix: "jump to a label a network of the same POU has (the message suggests the nearest).",
+      fix: "jump to a label a network of the same POU has (on a CFC chart: a label element of the chart); the message suggests the nearest.",
       severity: "error",
-      summary: "A jump names a label no network of the POU has.",
+      summary: "A jump names a label no network of the POU (no label of the chart) has.",
     },
     "FBD-UNKNOWN-PIN": {
       anchor: "fbd-unknown-pin",
@@ -632,9 +633,10 @@ export const DIAGNOSTICS = {
       example: 'a network labelled "1x"',
       example_language: "text",
       example_note: "",
-      fix: "a label is an identifier (`Fault`) or an unsigned integer (`10`).",
+      fix: "a label is an identifier (`Fault`) or an unsigned integer (`10`). FBD labels networks (the network's label field); label elements stand on CFC charts only.",
       severity: "error",
-      summary: "A network label is not an identifier or an unsigned integer.",
+      summary:
+        "A network or CFC label is not an identifier or an unsigned integer, or FBD has a label element.",
     },
     "LD-BIT-TARGET": {
       anchor: "ld-bit-target",
@@ -684,7 +686,7 @@ export const DIAGNOSTICS = {
       example_note: "",
       fix: "labels are unique within a POU (without case): rename one.",
       severity: "error",
-      summary: "Two networks of a POU have the same label.",
+      summary: "Two networks of a POU (two labels of a CFC chart) have the same label.",
     },
     "LD-IN-OUT": {
       anchor: "ld-in-out-fbd-in-out",
@@ -769,12 +771,12 @@ export const DIAGNOSTICS = {
     "LD-NOT-CALLABLE": {
       anchor: "ld-not-callable-fbd-not-callable",
       area: "diagram",
-      example: "a box calling the program Main",
+      example: "a box in the function block Valve calling the program Main",
       example_language: "text",
       example_note: "",
-      fix: "programs are run by tasks; make the POU a function block to call it from a box.",
+      fix: "only programs call programs (as in ST): call it from a program's box, or make the called POU a function block and give the box an instance.",
       severity: "error",
-      summary: "A box calls a program.",
+      summary: "A box in a function or function block calls a program.",
     },
     "LD-PARALLEL": {
       anchor: "ld-parallel",
@@ -813,9 +815,9 @@ export const DIAGNOSTICS = {
       example: 'a jump to "Nxet" while the label is "Next"',
       example_language: "text",
       example_note: "",
-      fix: "jump to a label a network of the same POU has (the message suggests the nearest).",
+      fix: "jump to a label a network of the same POU has (on a CFC chart: a label element of the chart); the message suggests the nearest.",
       severity: "error",
-      summary: "A jump names a label no network of the POU has.",
+      summary: "A jump names a label no network of the POU (no label of the chart) has.",
     },
     "LD-UNKNOWN-PIN": {
       anchor: "ld-unknown-pin",

@@ -3,6 +3,7 @@
 import MarkdownIt from "markdown-it";
 import { useMemo, useState } from "react";
 import { useWorkspace, workspaceStore } from "../store/project";
+import { EXERCISE_TAB } from "../store/parts";
 
 const markdown = new MarkdownIt({ html: false, linkify: true });
 
@@ -34,7 +35,7 @@ export function ExerciseView() {
           onChange={(e) =>
             workspaceStore
               .getState()
-              .setProjectPart("exercise", (project) => ({ ...project, exercise: e.target.value }))
+              .setProjectPart(EXERCISE_TAB, (project) => ({ ...project, exercise: e.target.value }))
           }
         />
       ) : text.trim() ? (

@@ -1,20 +1,23 @@
 // What the app shell shows of panels and exercises: the project tree's Panels section and the keys of
 // the tabs that are no POU (a panel: editor and online view; the exercise statement; their content is
-// ShellTab.tsx, loaded on first use). Tab keys start with PANEL_TAB or are EXERCISE_TAB, which no POU
-// name can be.
+// ShellTab.tsx, loaded on first use). Tab keys start with PANEL_TAB or are EXERCISE_TAB (store/parts.ts), which
+// no POU name can be (both hold a ':').
 import { useState, type FormEvent } from "react";
 import { createStore } from "zustand/vanilla";
 import type { Panel } from "../generated/api";
 import { useWorkspace, workspaceStore } from "../store/project";
 import { panelChange, withPanel } from "./history";
 import { newPanel } from "./model";
+import { EXERCISE_TAB, partLabel } from "../store/parts";
+
+export { EXERCISE_TAB };
 
 export const PANEL_TAB = "hmi:";
-export const EXERCISE_TAB = "exercise";
 
 export const isShellTab = (key: string | null): boolean => !!key && (key.startsWith(PANEL_TAB) || key === EXERCISE_TAB);
+/** What a tab or an unsaved-changes entry shows: a panel's name, a project part's label, a POU's name. */
 export const tabLabel = (key: string): string =>
-  key === EXERCISE_TAB ? "Exercise" : key.startsWith(PANEL_TAB) ? `${key.slice(PANEL_TAB.length)} (panel)` : key;
+  key.startsWith(PANEL_TAB) ? `${key.slice(PANEL_TAB.length)} (panel)` : partLabel(key);
 
 const NAME = /^[A-Za-z_][A-Za-z0-9_]{0,63}$/;
 const NO_PANELS: Panel[] = [];

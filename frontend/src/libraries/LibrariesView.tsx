@@ -20,7 +20,7 @@ export function LibrariesView() {
   const setProjectPart = useWorkspace((s) => s.setProjectPart);
   const online = useOnline((s) => s.phase) !== "offline";
   const use = (name: LibraryName, on: boolean) =>
-    setProjectPart("Library manager", (project) => ({ ...project, libraries: toggled(libraries, name, on) }));
+    setProjectPart("part:libraries", (project) => ({ ...project, libraries: toggled(libraries, name, on) }));
   return (
     <div className="pou-view part-view" role="region" aria-label="Library manager">
       <p className="tree-empty">

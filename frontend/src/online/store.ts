@@ -15,6 +15,7 @@ import {
   logLocal,
   pathKey,
   powerKey,
+  type LogEntry,
   type MonitorState,
 } from "./monitor";
 import {
@@ -119,6 +120,8 @@ export interface OnlineActions {
   setInstance(pou: string, instance: string): void;
   /** Sends any client message (breakpoints, continue, step); false and a log line when not connected. */
   send(msg: ClientMessage): boolean;
+  /** A note of this browser's in the online log (e.g. a breakpoint removed because its place is gone). */
+  note(level: LogEntry["level"], message: string): void;
   /** Hears every server message after it is folded into `monitor` (e.g. trace chunks); returns the unsubscribe. */
   listen(listener: (msg: ServerMessage) => void): () => void;
 }
@@ -415,6 +418,10 @@ export function createOnlineStore(
       },
 
       send,
+
+      note(level, text) {
+        set({ monitor: logLocal(get().monitor, level, text) });
+      },
 
       listen(listener) {
         listeners.add(listener);

@@ -133,6 +133,13 @@ export function StEditor({
           EditorView.theme({
             "&": { height: "100%" },
             ".cm-scroller": { overflow: "auto", fontFamily: "ui-monospace, monospace" },
+            // the line numbers in the app's colours (CodeMirror's own gutter is light grey, also in the dark theme)
+            ".cm-gutters": {
+              backgroundColor: "var(--panel)",
+              color: "var(--muted)",
+              borderRight: "1px solid var(--border-soft)",
+            },
+            ".cm-activeLineGutter": { backgroundColor: "var(--surface-2)", color: "var(--text)" },
           }),
           EditorView.updateListener.of((u) => {
             if (!u.docChanged) return;

@@ -5,7 +5,7 @@ import { useStore } from "zustand";
 import { createStore, type StoreApi } from "zustand/vanilla";
 import { ApiError, projectApi, SaveConflictError, type ProjectApi } from "../api/client";
 import type { ConflictDetail, Diagnostic, LibraryEntry, SymbolInfo, SymbolTable } from "../generated/api";
-import type { FbdBody, LdBody, Pou, Project, SfcBody, Task, TestFile } from "../generated/api";
+import type { FbdBody, LdBody, Pou, PouAction, Project, SfcBody, Task, TestFile } from "../generated/api";
 import { historyOf, type History } from "./history";
 import { addDeclaration, type VariableDeclaration } from "./declarations";
 import { isGlobalClass } from "./newVariable";
@@ -67,6 +67,8 @@ export interface WorkspaceActions {
   setDeclarations(pou: string, text: string): void;
   /** The new text of an ST POU's body (marks it unsaved and keeps a draft, like any edit). */
   setStBody(pou: string, text: string): void;
+  /** The new ACTIONs of a function block (outside SFC, ST bodies; docs/st.md "ACTION"). */
+  setActions(pou: string, actions: PouAction[]): void;
   /** Replaces the rest of the project (panels, the exercise): `key` names the change in `changed`. */
   setProjectPart(key: string, update: (project: Project) => Project): void;
   /** Opens a tab that is no POU (a panel, the exercise: keys of src/hmi/shell.tsx). */
@@ -368,6 +370,10 @@ export function createWorkspaceStore(
         replacePou(pou, (p) => ({ ...p, declarations: text }));
       },
 
+      setActions(pou, actions) {
+        replacePou(pou, (p) => ({ ...p, actions }));
+      },
+
       setStBody(pou, text) {
         if (pouOf(get().project, pou)?.body === text) return;
         replacePou(pou, (p) => ({ ...p, body: text }));
@@ -400,15 +406,15 @@ export function createWorkspaceStore(
       },
 
       setGlobals(text) {
-        if (get().project?.globals !== text) replaceProject("Global variables", (p) => ({ ...p, globals: text }));
+        if (get().project?.globals !== text) replaceProject("part:globals", (p) => ({ ...p, globals: text }));
       },
 
       setTypes(text) {
-        if (get().project?.types !== text) replaceProject("Types", (p) => ({ ...p, types: text }));
+        if (get().project?.types !== text) replaceProject("part:types", (p) => ({ ...p, types: text }));
       },
 
       setTasks(tasks) {
-        replaceProject("Tasks", (p) => ({ ...p, tasks }));
+        replaceProject("part:tasks", (p) => ({ ...p, tasks }));
       },
 
       setTestText(path, text) {

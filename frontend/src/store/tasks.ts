@@ -1,7 +1,8 @@
 // What a project runs, as the project tree lists it: its own tasks, or its configuration's resources with
 // their tasks and the program instances each runs (issue 16; the model is backend/ladderlab/model/project.py).
 import type { ProgramInstance, Project, Task } from "../generated/api";
-import { identifierProblem } from "../iec/identifier";
+import { copyName, identifierProblem } from "../iec/identifier";
+import { asInstance } from "./bindings";
 
 export interface TaskLine {
   name: string;
@@ -71,17 +72,71 @@ export function renameTask(project: Project, oldName: string, newName: string): 
   const all = [...(project.tasks ?? []), ...resources.flatMap((r) => r.tasks ?? [])];
   if (all.some((t) => t.name !== oldName && t.name.toUpperCase() === name.toUpperCase()))
     return `There is already a task called ${name}.`;
-  const renamed = (tasks: Task[] | undefined) => tasks?.map((t) => (t.name === oldName ? { ...t, name } : t));
+  return withTaskLists(project, (tasks) => tasks.map((t) => (t.name === oldName ? { ...t, name } : t)));
+}
+
+/** The project with `update` applied to each of its task lists: its own, and each resource's. */
+function withTaskLists(project: Project, update: (tasks: Task[]) => Task[]): Project {
   return {
     ...project,
-    ...(project.tasks ? { tasks: renamed(project.tasks) } : {}),
+    ...(project.tasks ? { tasks: update(project.tasks) } : {}),
     ...(project.configuration
       ? {
           configuration: {
             ...project.configuration,
-            resources: resources.map((r) => ({ ...r, tasks: renamed(r.tasks) })),
+            resources: (project.configuration.resources ?? []).map((r) => ({ ...r, tasks: update(r.tasks ?? []) })),
           },
         }
       : {}),
   };
+}
+
+/** The project without task `name`; its programs no longer run (nothing else names a task). */
+export const withoutTask = (project: Project, name: string): Project =>
+  withTaskLists(project, (tasks) => tasks.filter((t) => t.name !== name));
+
+/** Every task of the project: its own, and its configuration's resources'. */
+const allTasks = (project: Project): Task[] => [
+  ...(project.tasks ?? []),
+  ...(project.configuration?.resources ?? []).flatMap((r) => r.tasks ?? []),
+];
+
+/** Every program instance's name (a plain run is an instance named after its program), unscheduled ones too. */
+function instanceNames(project: Project): string[] {
+  const runs = [
+    ...allTasks(project).flatMap((t) => t.programs ?? []),
+    ...(project.configuration?.resources ?? []).flatMap((r) => r.programs ?? []),
+  ];
+  return runs.map((run) => asInstance(run).name);
+}
+
+/** The name a copy of task `name` gets unless the user types another: `name`_copy (the next free one). */
+export const taskCopyName = (project: Project, name: string): string =>
+  copyName(
+    allTasks(project).map((t) => t.name),
+    name,
+  );
+
+/** The project with a copy of task `name` called `copy` right after it (in the project's tasks or its
+ * resource's), running an instance of each of its programs under a new name (watch paths start with an
+ * instance's name: two of one name would be one state) with the same parameter bindings; or why not. */
+export function duplicateTask(project: Project, name: string, copy: string): Project | string {
+  const original = allTasks(project).find((t) => t.name === name);
+  if (!original) return `There is no task ${name}.`;
+  const task = copy.trim();
+  const problem =
+    identifierProblem(task) ??
+    (allTasks(project).some((t) => t.name.toUpperCase() === task.toUpperCase())
+      ? `There is already a task called ${task}.`
+      : null);
+  if (problem) return problem;
+  const taken = [...instanceNames(project), ...(project.pous ?? []).map((p) => p.name)];
+  const programs = (original.programs ?? []).map((run): ProgramInstance => {
+    const instance = asInstance(run);
+    const renamed = { ...instance, name: copyName(taken, instance.name) };
+    taken.push(renamed.name);
+    return renamed;
+  });
+  const duplicate: Task = { ...original, name: task, programs };
+  return withTaskLists(project, (tasks) => tasks.flatMap((t) => (t === original ? [t, duplicate] : [t])));
 }

@@ -1,5 +1,7 @@
 import { describe, expect, it } from "vitest";
-import { structMembers, typeRows, withNewType, withStructMembers } from "./types";
+import type { Project } from "../generated/api";
+import { typeCopyName, withoutTypeIn, withTypeCopyIn } from "./types";
+import { structMembers, typeLines, typeRows, withNewType, withoutType, withStructMembers, withTypeCopy } from "./types";
 
 describe("the Types editor's list", () => {
   it("lists every top-level type with its kind and line, not STRUCT members or comments", () => {
@@ -75,5 +77,86 @@ describe("a STRUCT's members as a table (issue 22 item 2)", () => {
     );
     expect(structMembers(edited, "Point")?.map((m) => m.name)).toEqual(["x", "Label"]);
     expect(withStructMembers(text, "Point", [])).toContain("Point : STRUCT\n    END_STRUCT;");
+  });
+});
+
+describe("deleting and duplicating a type (issue 22 item 1)", () => {
+  const text = [
+    "TYPE",
+    "    Point : STRUCT",
+    "        x : INT; (* ; in a comment *)",
+    "        y : INT;",
+    "    END_STRUCT;",
+    "    Mode : (Idle, Run) := Idle;",
+    "END_TYPE",
+    "",
+    "TYPE",
+    "    Speed : INT;",
+    "END_TYPE",
+    "",
+  ].join("\n");
+
+  it("removes a STRUCT from its name to the ';' after END_STRUCT, and the others stay as they were", () => {
+    expect(withoutType(text, "point")).toBe(
+      ["TYPE", "    Mode : (Idle, Run) := Idle;", "END_TYPE", "", "TYPE", "    Speed : INT;", "END_TYPE", ""].join(
+        "\n",
+      ),
+    );
+  });
+
+  it("removes a TYPE block left empty", () => {
+    expect(withoutType(text, "Speed")).toBe(text.split("\n").slice(0, 7).join("\n") + "\n");
+    expect(withoutType(withoutType(withoutType(text, "Speed"), "Mode"), "Point")).toBe("");
+    expect(withoutType(text, "Nothing")).toBe(text);
+  });
+
+  it("knows the lines of a declaration (its own name there is no use of it)", () => {
+    expect(typeLines(text, "Point")).toEqual({ first: 2, last: 5 });
+    expect(typeLines(text, "Speed")).toEqual({ first: 10, last: 10 });
+    expect(typeLines(text, "Nothing")).toBeNull();
+  });
+
+  it("declares a copy right after the original, under the new name, with the same members", () => {
+    const copied = withTypeCopy(text, "Point", "Point_copy")!;
+    expect(copied.split("\n").slice(1, 9)).toEqual([
+      "    Point : STRUCT",
+      "        x : INT; (* ; in a comment *)",
+      "        y : INT;",
+      "    END_STRUCT;",
+      "    Point_copy : STRUCT",
+      "        x : INT; (* ; in a comment *)",
+      "        y : INT;",
+      "    END_STRUCT;",
+    ]);
+    expect(typeRows(copied).map((r) => [r.name, r.kind])).toEqual([
+      ["Point", "struct"],
+      ["Point_copy", "struct"],
+      ["Mode", "enum"],
+      ["Speed", "alias"],
+    ]);
+    expect(withTypeCopy(text, "Mode", "Mode2")!.split("\n")[6]).toBe("    Mode2 : (Idle, Run) := Idle;");
+    expect(withTypeCopy(text, "Nothing", "X")).toBeNull();
+  });
+});
+
+describe("a type deleted or copied in the project (issue 22 item 1)", () => {
+  const project: Project = {
+    name: "p",
+    types: "TYPE\n    Valve : (Shut, Open);\nEND_TYPE\n",
+    pous: [{ name: "Valve_copy", kind: "program", language: "st", body: "" }],
+  };
+
+  it("names the copy after the types and POUs there are, and refuses a taken name", () => {
+    expect(typeCopyName(project, "Valve")).toBe("Valve_copy2");
+    expect(withTypeCopyIn(project, "Valve", "valve_COPY")).toBe("There is already a type or POU called Valve_copy.");
+    expect(withTypeCopyIn(project, "Valve", "VALVE")).toBe("There is already a type or POU called Valve.");
+    expect(withTypeCopyIn(project, "Nothing", "X")).toBe("There is no type Nothing.");
+    expect((withTypeCopyIn(project, "Valve", "Flap") as Project).types).toBe(
+      "TYPE\n    Valve : (Shut, Open);\n    Flap : (Shut, Open);\nEND_TYPE\n",
+    );
+  });
+
+  it("deletes the type's declaration and its emptied TYPE block", () => {
+    expect(withoutTypeIn(project, "Valve")).toEqual({ ...project, types: "" });
   });
 });

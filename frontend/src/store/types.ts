@@ -1,6 +1,8 @@
 // The user types of a project's TYPE text, as the Types editor lists them, and the templates it adds
 // (STRUCT, enumeration, array, subrange, alias: IEC 61131-3 2.3.3), and the members of a STRUCT as table rows.
+import type { Project } from "../generated/api";
 import { parseDeclarations, printDeclarations, type DeclRow } from "../iec/declarations";
+import { copyName, identifierProblem } from "../iec/identifier";
 
 export type TypeKind = "struct" | "enum" | "array" | "subrange" | "alias";
 
@@ -21,10 +23,17 @@ export const TYPE_KINDS: { kind: TypeKind; label: string; template(name: string)
 
 const blankComments = (text: string) => text.replace(/\(\*[\s\S]*?\*\)|\/\/[^\n]*/g, (c) => c.replace(/[^\n]/g, " "));
 
-/** The types declared at the top level of the TYPE blocks, with their kind and line. */
-export function typeRows(text: string): TypeRow[] {
+/** A type's declaration: its row, and where it is in the text (from its name to its closing ';'). */
+interface TypeDeclaration extends TypeRow {
+  start: number;
+  end: number;
+  /** Where its TYPE ... END_TYPE block is. */
+  block: { start: number; end: number };
+}
+
+function typeDeclarations(text: string): TypeDeclaration[] {
   const body = blankComments(text);
-  const rows: TypeRow[] = [];
+  const found: TypeDeclaration[] = [];
   const block = /\bTYPE\b([\s\S]*?)\bEND_TYPE\b/gi;
   for (let b = block.exec(body); b; b = block.exec(body)) {
     const start = b.index + 4;
@@ -36,10 +45,53 @@ export function typeRows(text: string): TypeRow[] {
       const head = m[2]!.toUpperCase();
       const kind: TypeKind =
         head === "STRUCT" ? "struct" : head === "(" ? "enum" : head === "ARRAY" ? "array" : head ? "subrange" : "alias";
-      rows.push({ name: m[1]!, kind, line: text.slice(0, at).split("\n").length });
+      const semicolon = top.indexOf(";", m.index + m[0].length);
+      const end = semicolon < 0 ? start + top.length : start + semicolon + 1;
+      const line = text.slice(0, at).split("\n").length;
+      found.push({ name: m[1]!, kind, line, start: at, end, block: { start: b.index, end: b.index + b[0].length } });
     }
   }
-  return rows;
+  return found;
+}
+
+/** The types declared at the top level of the TYPE blocks, with their kind and line. */
+export function typeRows(text: string): TypeRow[] {
+  return typeDeclarations(text).map(({ name, kind, line }) => ({ name, kind, line }));
+}
+
+const declarationOf = (text: string, name: string) =>
+  typeDeclarations(text).find((d) => d.name.toUpperCase() === name.toUpperCase());
+
+/** The first and last line of type `name`'s own declaration (its uses there are no references), or null. */
+export function typeLines(text: string, name: string): { first: number; last: number } | null {
+  const found = declarationOf(text, name);
+  return found ? { first: found.line, last: text.slice(0, found.end).split("\n").length } : null;
+}
+
+/** `text` without type `name`'s declaration; a TYPE block left empty goes too. */
+export function withoutType(text: string, name: string): string {
+  const found = declarationOf(text, name);
+  if (!found) return text;
+  const lineStart = text.lastIndexOf("\n", found.start - 1) + 1;
+  const from = text.slice(lineStart, found.start).trim() ? found.start : lineStart;
+  const to = /^[ \t]*\n/.exec(text.slice(found.end))?.[0].length ?? 0;
+  const rest = text.slice(0, from) + text.slice(found.end + to);
+  const block = { start: found.block.start, end: found.block.end - (found.end + to - from) };
+  const inside = blankComments(rest.slice(block.start + 4, block.end - 8));
+  if (inside.trim()) return rest;
+  // the block is empty now: drop it with the blank lines around it
+  const joined = [rest.slice(0, block.start).trimEnd(), rest.slice(block.end).trim()].filter(Boolean).join("\n\n");
+  return joined ? `${joined}\n` : "";
+}
+
+/** `text` with a copy of type `name` called `copy` declared right after it, or null when there is no `name`. */
+export function withTypeCopy(text: string, name: string, copy: string): string | null {
+  const found = declarationOf(text, name);
+  if (!found) return null;
+  const lineStart = text.lastIndexOf("\n", found.start - 1) + 1;
+  const indent = /^[ \t]*/.exec(text.slice(lineStart))![0];
+  const declaration = copy + text.slice(found.start + found.name.length, found.end);
+  return `${text.slice(0, found.end)}\n${indent}${declaration}${text.slice(found.end)}`;
 }
 
 /** `text` with a new type `name` of `kind` in a TYPE block of its own at the end. */
@@ -75,4 +127,29 @@ export function withStructMembers(text: string, name: string, members: readonly 
   const printed = printDeclarations(members.map((m) => ({ ...m, varClass: "VAR", address: "" })));
   const lines = members.length ? printed.split("\n").slice(1, -1) : [];
   return `${text.slice(0, span.start)}\n${lines.map((l) => `    ${l}\n`).join("")}    ${text.slice(span.end)}`;
+}
+
+/** The project without type `name` (what still uses it no longer compiles: the delete dialog lists it). */
+export const withoutTypeIn = (project: Project, name: string): Project => ({
+  ...project,
+  types: withoutType(project.types ?? "", name),
+});
+
+/** Types and POUs share one namespace (a variable's type may name either): the names a new type may not take. */
+const takenNames = (project: Project) => [
+  ...typeRows(project.types ?? "").map((r) => r.name),
+  ...(project.pous ?? []).map((p) => p.name),
+];
+
+/** The name a copy of type `name` gets unless the user types another. */
+export const typeCopyName = (project: Project, name: string): string => copyName(takenNames(project), name);
+
+/** The project with a copy of type `name` called `copy` declared right after it, or why not. */
+export function withTypeCopyIn(project: Project, name: string, copy: string): Project | string {
+  const wanted = copy.trim();
+  const taken = takenNames(project).find((t) => t.toUpperCase() === wanted.toUpperCase());
+  const problem = identifierProblem(wanted) ?? (taken ? `There is already a type or POU called ${taken}.` : null);
+  if (problem) return problem;
+  const types = withTypeCopy(project.types ?? "", name, wanted);
+  return types === null ? `There is no type ${name}.` : { ...project, types };
 }

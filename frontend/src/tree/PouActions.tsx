@@ -1,9 +1,9 @@
 // The project tree's menu of a POU: rename (everywhere, with a preview), duplicate, change the kind of an
 // empty POU, delete (listing what refers to it). Each is one undoable step of the working copy
 // (workspace store's applyOperation); nothing is saved until the user saves.
-import { useEffect, useState, type FormEvent } from "react";
+import { useEffect, useMemo, useState, type FormEvent } from "react";
 import type { Reference } from "../generated/api";
-import type { Pou } from "../generated/api";
+import type { Pou, Project } from "../generated/api";
 import { cfcToFbd, fbdToCfc } from "../fbd/convert";
 import { networksOf, nodesOf, type FbdBody, type FbdNetwork } from "../fbd/model";
 import { fetchChartOrder, fetchOrder } from "../fbd/useOrder";
@@ -12,7 +12,6 @@ import { debugStore } from "../debug/store";
 import { renamedPou } from "../breakpointPlaces/follow";
 import {
   changedParts,
-  copyName,
   describeReference,
   duplicated,
   isEmptyPou,
@@ -23,6 +22,7 @@ import {
 import { emptyDeclarations, workspaceStore } from "../store/project";
 import { FormError } from "../ui/FormError";
 import { Dialog, DialogFooter, TreeActions, type MenuEntry } from "../ui/TreeActions";
+import { copyName } from "../iec/identifier";
 
 type Action = "rename" | "duplicate" | "kind" | "convert" | "delete";
 
@@ -132,30 +132,70 @@ export function RenameDialog({ current, isPou, onClose }: { current: string; isP
   );
 }
 
-/** Delete: what still refers to the POU (those places will no longer compile), then one step. */
-function DeleteDialog({ pou, onClose }: { pou: Pou; onClose(): void }) {
+/** How a project item (a POU, a type, a task) is deleted or duplicated, for the dialogs below. */
+export interface ItemOperations {
+  /** What refers to the item (deleting it breaks those places). */
+  references(project: Project): Promise<Reference[]>;
+  /** The working copy without the item. */
+  remove(project: Project): Project;
+  /** What else deleting it does, in words (a task's runs stop), or null. */
+  consequence?(project: Project): string | null;
+  /** The unsaved-changes keys a change of the item marks, and the tabs deleting it closes. */
+  changed: string[];
+  closed?: string[];
+  /** The name a copy gets unless the user types another. */
+  copyName(project: Project): string;
+  /** The working copy with a copy called `name`, or why not (a thrown error says so too). */
+  copy(project: Project, name: string): Promise<Project | string>;
+  /** The keys a new copy marks unsaved, and what opens it. */
+  copyChanged(name: string): string[];
+  open?(name: string): void;
+}
+
+/** The operations of a POU (the server's refactoring finds its uses and copies it). */
+const pouOperations = (pou: Pou): ItemOperations => ({
+  references: (project) => referencesTo(project, pou.name),
+  remove: (project) => ({ ...project, pous: (project.pous ?? []).filter((p) => p.name !== pou.name) }),
+  changed: [pou.name],
+  closed: [pou.name],
+  copyName: (project) =>
+    copyName(
+      (project.pous ?? []).map((p) => p.name),
+      pou.name,
+    ),
+  copy: (project, name) => duplicated(project, pou.name, name),
+  copyChanged: (name) => [name],
+  open: (name) => workspaceStore.getState().openPou(name),
+});
+
+/** Delete: what still refers to the item (those places will no longer compile), then one undoable step. */
+export function DeleteDialog({ name, item, onClose }: { name: string; item: ItemOperations; onClose(): void }) {
   const [references, setReferences] = useState<Reference[] | null>(null);
   const [error, setError] = useState<string | null>(null);
+  const [consequence] = useState(() => {
+    const project = workspaceStore.getState().project;
+    return project ? (item.consequence?.(project) ?? null) : null;
+  });
   useEffect(() => {
     const project = workspaceStore.getState().project;
-    if (project) referencesTo(project, pou.name).then(setReferences, (err) => setError(message(err)));
-  }, [pou.name]);
+    if (project) item.references(project).then(setReferences, (err) => setError(message(err)));
+  }, [item]);
   const remove = () => {
     const ws = workspaceStore.getState();
     if (!ws.project) return;
-    const pous = (ws.project.pous ?? []).filter((p) => p.name !== pou.name);
-    ws.applyOperation(`delete ${pou.name}`, { ...ws.project, pous }, [pou.name], { closed: [pou.name] });
+    ws.applyOperation(`delete ${name}`, item.remove(ws.project), item.changed, { closed: item.closed ?? [] });
     onClose();
   };
   return (
-    <Dialog title={`Delete ${pou.name}`} onClose={onClose}>
-      {references === null && !error ? <p>Looking for uses of {pou.name}…</p> : null}
-      {references?.length ? <p>These places use {pou.name} and will no longer compile:</p> : null}
-      {references ? <ReferenceList references={references} empty={`Nothing refers to ${pou.name}.`} /> : null}
+    <Dialog title={`Delete ${name}`} onClose={onClose}>
+      {consequence ? <p>{consequence}</p> : null}
+      {references === null && !error ? <p>Looking for uses of {name}…</p> : null}
+      {references?.length ? <p>These places use {name} and will no longer compile:</p> : null}
+      {references ? <ReferenceList references={references} empty={`Nothing refers to ${name}.`} /> : null}
       <FormError error={error} />
       <div className="dialog-buttons">
         <button type="button" onClick={remove} disabled={references === null && !error} autoFocus>
-          Delete {pou.name}
+          Delete {name}
         </button>
         <button type="button" onClick={onClose}>
           Cancel
@@ -165,26 +205,28 @@ function DeleteDialog({ pou, onClose }: { pou: Pou; onClose(): void }) {
   );
 }
 
-function DuplicateDialog({ pou, onClose }: { pou: Pou; onClose(): void }) {
-  const [name, setName] = useState(() => copyName(workspaceStore.getState().project ?? { name: "" }, pou.name));
+/** Duplicate: the copy's name (a free one offered), then one undoable step. */
+export function DuplicateDialog({ name, item, onClose }: { name: string; item: ItemOperations; onClose(): void }) {
+  const [copy, setCopy] = useState(() => item.copyName(workspaceStore.getState().project ?? { name: "" }));
   const [error, setError] = useState<string | null>(null);
   const submit = async (e: FormEvent) => {
     e.preventDefault();
     const ws = workspaceStore.getState();
     if (!ws.project) return;
     try {
-      const next = await duplicated(ws.project, pou.name, name.trim());
-      ws.applyOperation(`duplicate ${pou.name}`, next, [name.trim()]);
-      ws.openPou(name.trim());
+      const next = await item.copy(ws.project, copy.trim());
+      if (typeof next === "string") return setError(next);
+      ws.applyOperation(`duplicate ${name}`, next, item.copyChanged(copy.trim()));
+      item.open?.(copy.trim());
       onClose();
     } catch (err) {
       setError(message(err));
     }
   };
   return (
-    <Dialog title={`Duplicate ${pou.name}`} onClose={onClose}>
+    <Dialog title={`Duplicate ${name}`} onClose={onClose}>
       <form onSubmit={(e) => void submit(e)}>
-        <input aria-label="Name of the copy" autoFocus value={name} onChange={(e) => setName(e.target.value)} />
+        <input aria-label="Name of the copy" autoFocus value={copy} onChange={(e) => setCopy(e.target.value)} />
         <DialogFooter error={error} submit="Duplicate" onClose={onClose} />
       </form>
     </Dialog>
@@ -291,6 +333,7 @@ export function KindPicker({ kind, onChange }: { kind: Pou["kind"]; onChange(kin
 /** The "⋯" button of a POU in the tree and its menu. */
 export function PouActions({ pou }: { pou: Pou }) {
   const empty = isEmptyPou(pou);
+  const operations = useMemo(() => pouOperations(pou), [pou]);
   const entries: MenuEntry<Action>[] = [
     { action: "rename", label: "Rename…" },
     { action: "duplicate", label: "Duplicate…" },
@@ -312,13 +355,13 @@ export function PouActions({ pou }: { pou: Pou }) {
         action === "rename" ? (
           <RenameDialog current={pou.name} isPou onClose={close} />
         ) : action === "duplicate" ? (
-          <DuplicateDialog pou={pou} onClose={close} />
+          <DuplicateDialog name={pou.name} item={operations} onClose={close} />
         ) : action === "kind" ? (
           <KindDialog pou={pou} onClose={close} />
         ) : action === "convert" ? (
           <ConvertDialog pou={pou} onClose={close} />
         ) : (
-          <DeleteDialog pou={pou} onClose={close} />
+          <DeleteDialog name={pou.name} item={operations} onClose={close} />
         )
       }
     />

@@ -7,13 +7,14 @@ function memberLabel(name: string, type: string | null | undefined, access: stri
 }
 
 /**
- * A function block's methods and properties under it in the project tree (docs/st.md, object orientation), with
+ * A function block's methods, properties and actions under it in the project tree (docs/st.md, object orientation), with
  * the FB it extends; choosing one opens the FB, whose file holds them.
  */
 export function PouMembers({ pou, open }: { pou: Pou; open(): void }) {
   const methods = pou.methods ?? [];
   const properties = pou.properties ?? [];
-  if (!methods.length && !properties.length && !pou.extends && !pou.implements?.length) return null;
+  const actions = pou.actions ?? [];
+  if (!methods.length && !properties.length && !actions.length && !pou.extends && !pou.implements?.length) return null;
   const heritage = [
     pou.extends ? `EXTENDS ${pou.extends}` : "",
     pou.implements?.length ? `IMPLEMENTS ${pou.implements.join(", ")}` : "",
@@ -35,6 +36,14 @@ export function PouMembers({ pou, open }: { pou: Pou; open(): void }) {
             <button type="button" className="tree-item tree-member" onClick={open}>
               <span className="tree-kind">P</span>
               <span className="tree-name">{memberLabel(p.name, p.type, p.access)}</span>
+            </button>
+          </li>
+        ))}
+        {actions.map((a) => (
+          <li key={`a-${a.name}`}>
+            <button type="button" className="tree-item tree-member" onClick={open}>
+              <span className="tree-kind">A</span>
+              <span className="tree-name">{a.name}</span>
             </button>
           </li>
         ))}

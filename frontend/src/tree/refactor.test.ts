@@ -1,6 +1,7 @@
 import { describe, expect, it } from "vitest";
 import type { Pou } from "../generated/api";
-import { changedParts, copyName, describeReference, isEmptyPou, renamedPath } from "./refactor";
+import { changedParts, describeReference, isEmptyPou, renamedPath } from "./refactor";
+import { copyName } from "../iec/identifier";
 
 const pou = (declarations: string, body: Pou["body"], language: Pou["language"] = "st"): Pou => ({
   name: "P",
@@ -27,8 +28,8 @@ describe("project operations' pure facts", () => {
   });
 
   it("names the next free copy", () => {
-    const project = { name: "p", pous: [pou("", ""), { ...pou("", ""), name: "P_copy" }] };
-    expect(copyName(project, "P")).toBe("P_copy2");
+    expect(copyName(["P", "p_COPY"], "P")).toBe("P_copy2");
+    expect(copyName([], "P")).toBe("P_copy");
   });
 
   it("says where a reference is in the tree's words", () => {
@@ -61,6 +62,6 @@ describe("the parts a rename marks unsaved (issue 22 item 1)", () => {
         { part: "types", line: 3, text: "T" },
         { part: "test", file: "tests/t.st", line: 1, text: "Go" },
       ]),
-    ).toEqual(["Global variables", "Tasks", "Types", "tests/t.st"]);
+    ).toEqual(["part:globals", "part:tasks", "part:types", "tests/t.st"]);
   });
 });

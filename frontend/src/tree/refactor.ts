@@ -4,6 +4,7 @@
 import { http, unwrap } from "../api/client";
 import type { Reference } from "../generated/api";
 import type { Pou, Project } from "../generated/api";
+import { typeLines } from "../store/types";
 
 /** The working copy with `oldName` renamed to `newName` in every POU, diagram, task and test file. */
 export const renameEverywhere = (project: Project, oldName: string, newName: string) =>
@@ -12,6 +13,14 @@ export const renameEverywhere = (project: Project, oldName: string, newName: str
 /** Every place in the working copy that uses `name` (what deleting it would break). */
 export const referencesTo = async (project: Project, name: string) =>
   (await unwrap(http.POST("/api/refactor/references", { body: { project, name } }))).references;
+
+/** Every place that uses type `name`, its own declaration left out (store/types.ts typeLines). */
+export async function typeReferences(project: Project, name: string): Promise<Reference[]> {
+  const own = typeLines(project.types ?? "", name);
+  const isOwn = (r: Reference) =>
+    r.part === "types" && own !== null && r.line != null && r.line >= own.first && r.line <= own.last;
+  return (await referencesTo(project, name)).filter((r) => !isOwn(r));
+}
 
 /** The working copy with a copy of POU `name` called `newName`. */
 export const duplicated = async (project: Project, name: string, newName: string) =>
@@ -54,22 +63,13 @@ export function renamedPath(path: string, oldName: string, newName: string): str
   return first.toUpperCase() === oldName.toUpperCase() ? [newName, ...rest].join(".") : path;
 }
 
-/** The next free name for a copy of `name` (Name_copy, Name_copy2, ...). */
-export function copyName(project: Project, name: string): string {
-  const taken = new Set((project.pous ?? []).map((p) => p.name.toUpperCase()));
-  for (let i = 1; ; i++) {
-    const candidate = `${name}_copy${i === 1 ? "" : i}`;
-    if (!taken.has(candidate.toUpperCase())) return candidate;
-  }
-}
-
 /** The project parts (as the unsaved-changes list names them) a rename's changes touch outside the POUs. */
 export function changedParts(changes: readonly Reference[]): string[] {
   const parts = new Set<string>();
   for (const c of changes) {
-    if (c.part === "globals") parts.add("Global variables");
-    else if (c.part === "types") parts.add("Types");
-    else if (c.part === "task") parts.add("Tasks");
+    if (c.part === "globals") parts.add("part:globals");
+    else if (c.part === "types") parts.add("part:types");
+    else if (c.part === "task") parts.add("part:tasks");
     else if (c.part === "test" && c.file) parts.add(c.file);
   }
   return [...parts];

@@ -117,6 +117,7 @@ export const COMMAND_ICONS: Readonly<Record<string, Icon>> = {
   parallel: Split,
   jump: CornerDownRight,
   return: CornerUpLeft,
+  label: Tag,
   input: FbdInputIcon,
   output: FbdOutputIcon,
   connector: ConnectorIcon,

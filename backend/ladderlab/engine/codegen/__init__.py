@@ -5,6 +5,7 @@ per PROGRAM / FUNCTION_BLOCK, a function per FUNCTION, a class per structure
 type, the globals. ``engine.compile`` compiles it; ``engine.simulation`` runs it.
 """
 
-from .module import VARIANTS, Generated, generate
+from ..variants import VARIANTS
+from .module import Generated, generate
 
 __all__ = ["VARIANTS", "Generated", "generate"]

@@ -15,6 +15,7 @@ from types import FrameType
 
 from ...ir import nodes as ir
 from ...ir import types as t
+from ...model.codes import RUNTIME_FAULT
 from ...model.diagnostics import Diagnostic
 from ...model.places import ProjectPlaces
 from ..errors import OUT_OF_MEMORY, WATCHDOG, PlcRuntimeError
@@ -25,8 +26,6 @@ from .module import Generated
 from .runtime import WatchdogTimeout, reference_text
 from .scope import global_owner
 from .typeinfo import is_composite
-
-RUNTIME_FAULT = "ENGINE-RUNTIME"
 
 
 @dataclass(frozen=True)

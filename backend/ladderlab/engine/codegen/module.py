@@ -6,6 +6,7 @@ from dataclasses import dataclass
 
 from ...ir import nodes as ir
 from ...model.diagnostics import Diagnostic
+from ..variants import VARIANTS
 from . import names
 from .context import CodegenError, ModuleContext, PausePoint, diagnostic
 from .layout import slots_source
@@ -13,9 +14,6 @@ from .pou import emit_function, emit_inits, emit_instance_class, emit_located_in
 from .scope import global_owner
 from .source import Source
 from .tasks import emit_tasks
-
-#: fast: no hooks; monitor: probes record power flow; debug: probes and pause points (generators).
-VARIANTS = ("fast", "monitor", "debug")
 
 
 @dataclass
@@ -163,4 +161,4 @@ def program_globals(module: ModuleContext) -> list[ir.Slot]:
     return [p.slot for p in module.globals.places.values()]
 
 
-__all__ = ["VARIANTS", "Generated", "generate"]
+__all__ = ["Generated", "generate"]

@@ -153,7 +153,7 @@ def group_by_ladderlab(graph: Graph, reader: Reader, listing: NetworkList | None
         group = groups.get(element.network or "")
         if group is None:
             return None
-        if element.tag == "label":
+        if element.tag == "label" and element.model_id is None:  # the network's label (with an id: a CFC label)
             group.label = header_text(graph, reader, local_id)
         elif element.tag == "comment" and element.model_id is None:  # the network's comment
             group.comment = header_text(graph, reader, local_id)

@@ -134,6 +134,10 @@ class _Exporter:
         if isinstance(pou.body, SfcBody):
             write_sfc_pou(node, pou.body, lambda holder, networks: self.diagram(holder, networks, pou.name))
             return
+        if pou.actions:  # a function block's actions outside SFC: TC6 <actions> with ST bodies (IL-08)
+            actions = sub(node, "actions")
+            for action in pou.actions:
+                formatted_text(sub(sub(actions, "action", {"name": action.name}), "body"), "ST", action.body)
         body = sub(node, "body")
         if isinstance(pou.body, (LdBody, FbdBody)):
             self.diagram(body, pou.body, pou.name)

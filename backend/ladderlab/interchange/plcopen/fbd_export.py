@@ -25,6 +25,7 @@ from ...model.fbd import (
     Connector,
     FbdComment,
     FbdJump,
+    FbdLabel,
     FbdNetwork,
     FbdNode,
     FbdReturn,
@@ -276,6 +277,10 @@ class FbdExporter:
             element = sub(self.parent, "jump" if isinstance(node, FbdJump) else "return", attrs)
             position(element, "position", x, y_exact)
             single_input(element)
+            return 20
+        if isinstance(node, FbdLabel):  # a CFC chart's label (TC6 <label>, with its execution order number)
+            attrs = {"localId": local_id, "height": 20, "width": NODE_W, "label": node.name, "executionOrderId": order}
+            position(sub(self.parent, "label", attrs), "position", x, y_exact)
             return 20
         if isinstance(node, FbdComment):  # a free comment box: its size as drawn (issue 28)
             width, height = node.width or NODE_W, node.height or 40

@@ -28,6 +28,7 @@ from ...model.fbd import (
     FbdBody,
     FbdComment,
     FbdJump,
+    FbdLabel,
     FbdNetwork,
     FbdNode,
     FbdReturn,
@@ -50,6 +51,7 @@ _PREFIX = {
     "outVariable": "output",
     "jump": "jump",
     "return": "ret",
+    "label": "label",
     "connector": "connector",
     "continuation": "continuation",
     "inOutVariable": "output",
@@ -248,6 +250,8 @@ class FbdImporter:
             self.add(element, FbdJump(id=node_id, pos=pos, target=element.node.get("label", "")))
         elif tag == "return":
             self.add(element, FbdReturn(id=node_id, pos=pos))
+        elif tag == "label":  # a CFC chart's label element (a network's label is its header, not a member)
+            self.add(element, FbdLabel(id=node_id, pos=pos, name=element.node.get("label", "")))
         elif tag == "connector":
             self.add(element, Connector(id=node_id, pos=pos, name=element.node.get("name", "")))
         elif tag == "continuation":

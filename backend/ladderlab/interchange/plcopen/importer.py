@@ -27,7 +27,7 @@ from ...model.cfc import CfcBody
 from ...model.diagnostics import Diagnostic
 from ...model.fbd import FbdBody
 from ...model.ld import LdBody
-from ...model.project import LibraryName, Pou, Project, TestFile
+from ...model.project import LibraryName, Pou, PouAction, Project, TestFile
 from ...st import ast
 from ...st.parser import parse_declarations, parse_source
 from ...st.printer import print_declarations, print_source, print_type
@@ -283,11 +283,41 @@ class _Importer:
         return declarations, return_type
 
     def pou(self, node: ET.Element, pou: Pou, signatures: Signatures) -> Pou | None:
+        made = self._pou_body(node, pou, signatures)
+        bodies = self.reader.children(node, "body")
+        first = next(self.reader.elements(bodies[0]), None) if bodies else None
+        if made is None or (first is not None and local(first) == "SFC"):
+            return made
+        actions = self.actions(node, made)
+        return made.model_copy(update={"actions": actions}) if actions else made
+
+    def actions(self, node: ET.Element, pou: Pou) -> list[PouAction]:
+        """A function block's ``<actions>`` outside SFC (CODESYS, IL-08): the ones written in ST; any other is
+        reported and left out."""
+        r = self.reader
+        found: list[PouAction] = []
+        for item in r.children(r.child(node, "actions"), "action"):
+            language = next(r.elements(r.child(item, "body")), None) if r.child(item, "body") is not None else None
+            if pou.kind == "function_block" and language is not None and local(language) == "ST":
+                found.append(PouAction(name=item.get("name", ""), body=text_content(language)))
+                continue
+            what = "a function block's" if pou.kind == "function_block" else "an SFC POU's or a function block's"
+            r.report(
+                "PLCOPEN-UNSUPPORTED",
+                f"action '{item.get('name', '')}' of POU {pou.name} was not imported: LadderLab imports "
+                f"{what} actions with ST bodies",
+                item,
+                severity="warning",
+                pou=pou.name,
+            )
+        return found
+
+    def _pou_body(self, node: ET.Element, pou: Pou, signatures: Signatures) -> Pou | None:
         r = self.reader
         bodies = r.children(node, "body")
         first = next(r.elements(bodies[0]), None) if bodies else None
         if first is None or local(first) != "SFC":
-            for tag in ("actions", "transitions"):
+            for tag in ("transitions",):
                 for item in r.children(r.child(node, tag), tag[:-1]):
                     r.report(
                         "PLCOPEN-UNSUPPORTED",

@@ -42,6 +42,14 @@ def operand(text: str) -> Any:
     return node
 
 
+def box_instance(callee: Callee, written: str | None) -> Any:
+    """The instance a box's call runs (None for a function): an FB's as written; a program's is the program itself
+    (its one instance, ``PRGexample2(in_var := a)``)."""
+    if not callee.is_fb:
+        return None
+    return ast.Name(callee.name) if callee.is_program else operand(written)
+
+
 def callee_of(checked: CheckResult, call: str) -> Callee:
     """The user POU, standard function or standard FB a box calls (the lowering already resolved it)."""
     name = call.strip()

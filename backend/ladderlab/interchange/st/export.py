@@ -13,10 +13,12 @@ is checked by the project's own ST checker before it is returned.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Any
 
 from ...ir.diagram_checks import canonical_label
 from ...ir.lower_project import lower_pou
 from ...model import Diagnostic, Pou, Project, has_errors
+from ...model.fbd import FbdJump, FbdNetwork
 from ...model.sfc import SfcBody
 from ...st.checker import check_project
 from ...st.columns import align_declarations
@@ -29,7 +31,7 @@ from .fbd import fbd_network
 from .il import il_to_st
 from .ld import ld_network
 from .names import Names
-from .network import Declarations, plan
+from .network import Declarations, Planned, chart_segments, plan
 from .sfc import st_sfc_pou
 
 SourceMap = list[tuple[int, str, str | None]]
@@ -98,18 +100,18 @@ def st_pou(project: Project, pou: Pou, checked: CheckResult) -> ExportedPou:
     declarations = Declarations(Names.for_pou(checked, pou.name))
     scope = PouScope(checked, info, declarations)
     networks: list[Network] = []
-    for index, network in enumerate(pou.body.networks):
+    if pou.language == "cfc":
+        networks, labels = _chart(scope, pou.body.chart, lowered, declarations)
+    for index, network in enumerate(pou.body.networks if pou.language != "cfc" else []):
         if pou.language == "ld":
             code = ld_network(scope, network, index + 1)
         else:
-            code = fbd_network(scope, network, lowered, explicit=pou.language == "cfc")
-        if pou.language == "cfc":
-            lines = [comment("CFC chart: its elements in their execution order (CFC-02)")]
-        else:
-            lines = network_title(index + 1, network.label, network.comment)
+            code = fbd_network(scope, network, lowered)
+        lines = network_title(index + 1, network.label, network.comment)
         controls = [(c.label, c.element) for c in code.controls]
         networks.append(Network(network.id, lines, plan(code, declarations), controls))
-    labels = {canonical_label(n.label): index for index, n in enumerate(pou.body.networks) if n.label}
+    if pou.language != "cfc":
+        labels = {canonical_label(n.label): index for index, n in enumerate(pou.body.networks) if n.label}
     lines = body_lines(networks, labels, declarations)
     body = "\n".join(line.text for line in lines)
     source_map = [
@@ -123,10 +125,32 @@ def st_pou(project: Project, pou: Pou, checked: CheckResult) -> ExportedPou:
             return_type=pou.return_type,
             declarations=_declarations(pou.declarations, declarations),
             body=body,
+            actions=pou.actions,  # ST already (an FB's actions outside SFC)
         ),
         source_map,
         [d for d in diagnostics if d.severity != "error"],
     )
+
+
+def _chart(
+    scope: PouScope, chart: FbdNetwork, lowered: Any, declarations: Declarations
+) -> tuple[list[Network], dict[str, int]]:
+    """A CFC chart as the networks ``body_lines`` writes: its statements in execution order (CFC-02), cut at its
+    labels and after its jumps, so a jump is a network's jump to a labelled network - forward and nested, ``IF NOT
+    cond THEN`` around what it skips; otherwise the state machine (docs/diagrams.md, "CFC")."""
+    if any(isinstance(node, FbdJump) for node in chart.nodes):
+        declarations.temp_class = "VAR"  # a skipped producer's value is read later as it was left
+    planned = plan(fbd_network(scope, chart, lowered, explicit=True), declarations)
+    networks: list[Network] = []
+    labels: dict[str, int] = {}
+    for index, (statements, label, jump) in enumerate(chart_segments(planned)):
+        title = [comment("CFC chart: its elements in their execution order (CFC-02)")] if index == 0 else []
+        if label is not None:
+            labels[label.label] = index
+        controls = [(jump[0], jump[2])] if jump else []
+        conditions = [jump[1]] if jump else []
+        networks.append(Network(chart.id, title, Planned(statements, conditions), controls))
+    return networks, labels
 
 
 def textual_sfc(project: Project, pou: Pou) -> StExport:

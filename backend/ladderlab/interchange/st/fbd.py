@@ -24,8 +24,8 @@ from ...ir.lower_fbd import root_names  # the variable an output node writes, ex
 from ...model import fbd
 from ...st import ast
 from ...st.checker import check_operand
-from .elements import PouScope, callee_of, function_call, operand, output_pin, owner, text_of
-from .network import Control, NetworkCode, Use, Value
+from .elements import PouScope, box_instance, callee_of, function_call, operand, output_pin, owner, text_of
+from .network import ChartJump, ChartLabel, Control, NetworkCode, Use, Value
 
 
 @dataclass(frozen=True)
@@ -75,7 +75,7 @@ class _Network:
         callee = callee_of(self.scope.checked, producer.call)
         if callee.is_fb and source.pin in callee.output_names():
             flags = _flags(producer).get(source.pin)
-            pin = output_pin(callee, operand(producer.instance), source.pin)
+            pin = output_pin(callee, box_instance(callee, producer.instance), source.pin)
             return Text(ast.Unary("NOT", pin) if flags is not None and flags.negated else pin)
         for consumer, sources in self.graph.inputs.items():
             target, fed = self.graph.nodes[consumer], sources.get("IN")
@@ -123,8 +123,16 @@ class _Network:
         target_type = self.type_of(node.var) if isinstance(value, Value) and node.mode == "normal" else None
         self.scope.coil(self.code, node.mode, operand(node.var), self.read(value), node.id, guard, target_type)
 
+    def label(self, node: fbd.FbdLabel) -> None:
+        """A CFC label: the chart's ST is cut here (a step that may write anything: no value moves across it)."""
+        self.code.step([ChartLabel(canonical_label(node.name))], node.id, None)
+
     def control(self, node: fbd.FbdJump | fbd.FbdReturn) -> None:
-        if self.explicit:  # a CFC return acts at its place in the order (a chart has no jumps: CFC-JUMP)
+        if self.explicit and isinstance(node, fbd.FbdJump):  # a CFC jump acts where its number puts it
+            condition = self.read(self.source(node.id, "IN"))  # wired: CFC-JUMP-CONDITION refused the others
+            self.code.step([ChartJump(canonical_label(node.target), condition)], node.id, None)
+            return
+        if self.explicit:  # a CFC return acts at its place in the order
             statement = ast.Return()
             if "IN" in self.graph.inputs.get(node.id, {}):
                 statement = ast.If([(self.read(self.source(node.id, "IN")), [statement])])
@@ -153,7 +161,7 @@ class _Network:
     def block(self, node: fbd.Block) -> None:
         scope, code = self.scope, self.code
         callee = callee_of(scope.checked, node.call)
-        instance = operand(node.instance) if callee.is_fb else None
+        instance = box_instance(callee, node.instance)
         name = owner(callee, instance)
         flags = _flags(node)
         inputs: dict[str, PinValue] = {}

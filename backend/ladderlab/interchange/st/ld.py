@@ -18,7 +18,7 @@ from typing import Any
 from ...ir.diagram_checks import canonical_label
 from ...model import ld
 from ...st import ast
-from .elements import PouScope, callee_of, function_call, operand, output_pin, owner, text_of
+from .elements import PouScope, box_instance, callee_of, function_call, operand, output_pin, owner, text_of
 from .network import TRUE, Control, NetworkCode, Use, Value, conjunction, disjunction
 
 _COMPARE = {"GT": ">", "GE": ">=", "EQ": "=", "LE": "<=", "LT": "<", "NE": "<>"}
@@ -124,7 +124,7 @@ class _Rung:
             )
         outputs = {pin.upper(): operand(text) for pin, text in box.outputs.items()}
         target = outputs.pop("OUT", None) if not callee.is_fb else None
-        instance = operand(box.instance) if callee.is_fb else None
+        instance = box_instance(callee, box.instance)
         enable = power.value(code, box.id, self.hint) if box.en else None
         if box.en:
             en = Use(enable) if enable is not None else TRUE

@@ -88,14 +88,33 @@ class Control:
     element: str
 
 
+@dataclass(frozen=True)
+class ChartJump:
+    """A CFC chart's jump, as a statement of its step: the chart's ST is cut after it (``chart_segments``)."""
+
+    label: str  # canonical
+    cond: Any
+
+
+@dataclass(frozen=True)
+class ChartLabel:
+    """A CFC chart's label, as a statement of its step: the chart's ST is cut before it."""
+
+    label: str  # canonical
+
+
 @dataclass
 class Declarations:
-    """Variables the export adds to a POU: (name, type text, VAR or VAR_TEMP) in the order they were made."""
+    """Variables the export adds to a POU: (name, type text, VAR or VAR_TEMP) in the order they were made;
+    ``temp_class``: the class of the temporaries (VAR where a jump may skip the statement that writes one, so
+    it keeps its value as the diagram's does)."""
 
     names: Names
     items: list[tuple[str, str, str]] = field(default_factory=list)
+    temp_class: str = "VAR_TEMP"
 
-    def declare(self, hint: str, type_text: str, var_class: str = "VAR_TEMP") -> str:
+    def declare(self, hint: str, type_text: str, var_class: str | None = None) -> str:
+        var_class = var_class or self.temp_class
         name = self.names.fresh(hint)
         self.add(name, type_text, var_class)
         return name
@@ -241,6 +260,22 @@ def plan(code: NetworkCode, declarations: Declarations) -> Planned:
                 statements.append((op.element, ast.Assign(ast.Name(name), expr)))
     conditions = [resolve(Use(c.cond)) if c.cond is not None else None for c in code.controls]
     return Planned(statements, conditions)
+
+
+def chart_segments(planned: Planned) -> list[tuple[list[tuple[str | None, ast.Stmt]], ChartLabel | None, tuple]]:
+    """A planned CFC chart cut at its labels and after its jumps: per segment its statements, the label it starts
+    with (None: the first) and its jump at the end (``(label, cond, element)``, or ``()``)."""
+    segments: list[tuple[list[tuple[str | None, ast.Stmt]], ChartLabel | None, tuple]] = [([], None, ())]
+    for element, statement in planned.statements:
+        if isinstance(statement, ChartLabel):
+            segments.append(([], statement, ()))
+        elif isinstance(statement, ChartJump):
+            statements, label, _ = segments[-1]
+            segments[-1] = (statements, label, (statement.label, statement.cond, element))
+            segments.append(([], None, ()))
+        else:
+            segments[-1][0].append((element, statement))
+    return [segment for segment in segments if segment[0] or segment[1] is not None or segment[2]] or segments[:1]
 
 
 def _computed_from(op: Value, value: Value) -> bool:

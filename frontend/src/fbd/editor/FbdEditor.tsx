@@ -117,13 +117,15 @@ export interface FbdEditorProps {
   dataFlowOf?(network: FbdNetwork): Promise<FbdOrder>;
 }
 
-type PaletteKind = "input" | "output" | "block" | "jump" | "return" | "connector" | "continuation" | "comment";
+type PaletteKind =
+  "input" | "output" | "block" | "jump" | "label" | "return" | "connector" | "continuation" | "comment";
 
 const PALETTE: { kind: PaletteKind; label: string }[] = [
   { kind: "input", label: "Input" },
   { kind: "output", label: "Output" },
   { kind: "block", label: "Block…" },
-  { kind: "jump", label: "Jump" }, // not on a CFC chart: it has no labels to jump to (CFC-JUMP)
+  { kind: "jump", label: "Jump" },
+  { kind: "label", label: "Label" }, // CFC only: FBD labels its networks
   { kind: "return", label: "Return" },
   { kind: "connector", label: "Connector" },
   { kind: "continuation", label: "Continuation" },
@@ -135,11 +137,12 @@ const COLUMN_OF: Record<PaletteKind, number> = {
   block: 240,
   output: 480,
   jump: 480,
+  label: 20,
   return: 480,
   connector: 480,
   comment: 20,
 };
-const WITH_TEXT = new Set(["input", "output", "jump", "connector", "continuation", "comment"]);
+const WITH_TEXT = new Set(["input", "output", "jump", "label", "connector", "continuation", "comment"]);
 const OUTPUT_MODES: { mode: OutputMode; label: string }[] = [
   { mode: "normal", label: "Output: normal" },
   { mode: "negated", label: "Output: negated" },
@@ -323,7 +326,7 @@ export function FbdEditor({
     const network = networks[0];
     if (!network) return;
     dataFlowOf(network).then(
-      ({ order }) => apply(orderByDataFlow(body, network.id, order)),
+      ({ order }) => apply(orderByDataFlow(body, network.id, order, orders.get(network.id) ?? [])),
       () => setMessage("The data-flow order could not be computed; try again in a moment."),
     );
   };
@@ -613,7 +616,7 @@ export function FbdEditor({
       >
         <div className="ld-toolbar fbd-toolbar" role="toolbar" aria-label="FBD editing">
           <div className="ld-toolbar-group fbd-palette" aria-label="Add (click, or drag onto a network)">
-            {PALETTE.filter(({ kind }) => !chart || kind !== "jump").map(({ kind, label }) => (
+            {PALETTE.filter(({ kind }) => chart || kind !== "label").map(({ kind, label }) => (
               <button
                 key={kind}
                 type="button"

@@ -150,7 +150,9 @@ export function FbdNodeView({ data, selected }: NodeProps<FbdFlowNode>) {
   const online = api.online;
   const skipped = online ? !executed(online, node.id) : false;
   const operand = operandOf(node);
-  const shown = online && (kind === "input" || kind === "output") ? nodeValue(node.id, operand) : null;
+  // a jump shows its condition (its probe), as CODESYS shows the value at a CFC jump's input
+  const shown =
+    online && (kind === "input" || kind === "output" || kind === "jump") ? nodeValue(node.id, operand) : null;
   const forced = shown?.forced ?? false;
   const classes = [
     "fbd-node",
@@ -219,6 +221,13 @@ export function FbdNodeView({ data, selected }: NodeProps<FbdFlowNode>) {
         );
       case "return":
         return <span className="fbd-keyword">RETURN</span>;
+      case "label":
+        return (
+          <>
+            <TextField node={node} text={(node as { name: string }).name} placeholder="label" label="Label name" />
+            <span className="fbd-keyword">:</span>
+          </>
+        );
       default:
         return (
           <TextField

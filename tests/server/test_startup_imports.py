@@ -1,0 +1,61 @@
+"""``ladderlab serve`` starts without the compiler (issue 27, startup): the web process imports lark, the IR, the
+code generator and the interchange code at their first use, never to answer ``/api/health``.
+
+The serve command runs for real in a fresh interpreter, up to the point where uvicorn would start serving; what
+it imported by then is read from ``sys.modules``. The second test makes sure the check is not vacuous: a request
+that needs the compiler does import it, in the same kind of process.
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+#: What only a build, a worker or an export needs (the fork server imports them for the workers).
+COMPILER = ("lark", "ladderlab.ir", "ladderlab.engine.codegen", "ladderlab.interchange", "ladderlab.st.parser")
+
+_SERVE_UNTIL_UVICORN_RUNS = """
+import json, sys
+import uvicorn
+COMPILER = tuple(sys.argv[2].split(","))
+def report(self):
+    loaded = [m for m in sys.modules if any(m == c or m.startswith(c + ".") for c in COMPILER)]
+    print("LOADED " + json.dumps(sorted(loaded)))
+uvicorn.Server.run = report
+from ladderlab.cli import main
+main(["serve", "--port", "8765", "--workspace", sys.argv[1]])
+"""
+
+
+def _loaded_by_serve(workspace: Path) -> list[str]:
+    done = subprocess.run(
+        [sys.executable, "-c", _SERVE_UNTIL_UVICORN_RUNS, str(workspace), ",".join(COMPILER)],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=True,
+    )
+    line = next(line for line in done.stdout.splitlines() if line.startswith("LOADED "))
+    return json.loads(line.removeprefix("LOADED "))
+
+
+def test_serve_imports_no_compiler_before_it_answers(tmp_path: Path) -> None:
+    assert _loaded_by_serve(tmp_path / "workspace") == []
+
+
+def test_the_first_export_imports_the_compiler_in_the_web_process(tmp_path: Path) -> None:
+    """The same probe sees the compiler once a route needs it (the check above can fail)."""
+    code = (
+        "import sys; from fastapi.testclient import TestClient; from ladderlab.server.app import create_app;"
+        "from ladderlab.storage import Workspace; from ladderlab.examples import seed_workspace;"
+        "w = Workspace(sys.argv[1]); name = seed_workspace(w); client = TestClient(create_app(w), base_url='http://127.0.0.1');"
+        "assert client.get(f'/api/projects/{name}/export/st').status_code == 200;"
+        "print(sorted({m.split('.')[0] if m.startswith('lark') else '.'.join(m.split('.')[:2]) for m in sys.modules"
+        " if m.startswith(('lark', 'ladderlab.ir', 'ladderlab.interchange'))}))"
+    )
+    done = subprocess.run(
+        [sys.executable, "-c", code, str(tmp_path / "ws")], capture_output=True, text=True, timeout=120, check=True
+    )
+    assert done.stdout.strip() == "['ladderlab.interchange', 'ladderlab.ir', 'lark']"
