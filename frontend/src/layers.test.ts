@@ -4,6 +4,7 @@
 // beside them must pass. The imported files are real ones, so the resolver finds them as in the app.
 import { ESLint } from "eslint";
 import { describe, expect, it } from "vitest";
+import { cyclicImports, folderGraph, type FolderGraph } from "./test/folderGraph";
 
 const eslint = new ESLint({ cwd: new URL("..", import.meta.url).pathname });
 
@@ -60,4 +61,39 @@ describe("frontend layers (eslint.config.js)", () => {
     },
     60_000,
   );
+});
+
+// No import cycles among the folders (issue 19): the layer rule above keeps the store, the bottom
+// modules and the shell apart; among the features, a folder that imports another is never imported back,
+// directly or through other folders. `make test` fails on a new cycle and names its imports.
+describe("no import cycles among the frontend's folders (src/test/folderGraph.ts)", () => {
+  const graph = folderGraph(new URL(".", import.meta.url).pathname);
+  const withImport = (from: string, to: string): FolderGraph =>
+    new Map([...graph, [from, new Set([...(graph.get(from) ?? []), to])]]);
+
+  it("finds the app's folder imports", () => {
+    // Real imports of today's app, one feature on another and on the bottom layers.
+    expect([...(graph.get("fbd") ?? [])]).toEqual(expect.arrayContaining(["ld", "online", "ui", "store"]));
+    expect([...(graph.get("ld") ?? [])]).toEqual(expect.arrayContaining(["online", "ui", "keys"]));
+  });
+
+  it("has none", () => {
+    expect(cyclicImports(graph)).toEqual([]);
+  });
+
+  it("fails on a cycle: online importing ld again (ld imports online)", () => {
+    expect(cyclicImports(withImport("online", "ld"))).toEqual(expect.arrayContaining(["ld -> online", "online -> ld"]));
+  });
+
+  it("names every import on a longer cycle, and only those", () => {
+    const chain: FolderGraph = new Map([
+      ["a", new Set(["b"])],
+      ["b", new Set(["c"])],
+      ["c", new Set(["a", "d"])],
+      ["d", new Set<string>()],
+    ]);
+    expect(cyclicImports(chain)).toEqual(["a -> b", "b -> c", "c -> a"]);
+    chain.get("c")!.delete("a");
+    expect(cyclicImports(chain)).toEqual([]);
+  });
 });

@@ -33,6 +33,18 @@ def type_operand(page, name: str) -> None:
     page.keyboard.press("Enter")
 
 
+def add_input(page, canvas, operand: str, y: int):
+    """Drags an input from the FBD palette onto ``canvas`` at height ``y`` and names it: the declare dialog opens."""
+    page.get_by_role("toolbar", name="FBD editing").get_by_role("button", name="Input", exact=True).drag_to(
+        canvas, target_position={"x": 60, "y": y}
+    )
+    page.get_by_role("combobox", name="Input operand").press_sequentially(operand)
+    page.keyboard.press("Enter")
+    dialog = page.get_by_role("dialog", name=f"Declare variable {operand}")
+    expect(dialog).to_be_visible()
+    return dialog
+
+
 def test_ld_declare_dialog_is_driven_by_the_keyboard(page, server):
     new_project(page, server, "autodecl")
     new_pou(page, "Main")
@@ -117,13 +129,7 @@ def test_fbd_input_opens_the_same_dialog(page, server):
     editor.get_by_role("button", name="Add network").click()
     canvas = editor.locator(".fbd-network .react-flow__pane").first
     canvas.wait_for()
-    page.get_by_role("toolbar", name="FBD editing").get_by_role("button", name="Input", exact=True).drag_to(
-        canvas, target_position={"x": 60, "y": 40}
-    )
-    page.get_by_role("combobox", name="Input operand").press_sequentially("Setpoint")
-    page.keyboard.press("Enter")
-    dialog = page.get_by_role("dialog", name="Declare variable Setpoint")
-    expect(dialog).to_be_visible()
+    dialog = add_input(page, canvas, "Setpoint", 40)
     assert focused_label(page) == "Type of the new variable"
     page.keyboard.type("REA")
     page.keyboard.press("Enter")  # REAL, the highlighted completion
@@ -131,6 +137,22 @@ def test_fbd_input_opens_the_same_dialog(page, server):
     page.keyboard.press("ArrowDown")  # VAR_INPUT
     page.keyboard.press("Enter")
     expect(dialog).to_have_count(0)
+    # An input whose dialog was dismissed: its node's menu brings the dialog back (issue 22 item 7), with the
+    # type of the pin it feeds when wired, BOOL here; a declared input's menu has no such entry.
+    dialog = add_input(page, canvas, "Limit", 120)
+    page.keyboard.press("Escape")
+    expect(dialog).to_have_count(0)
+    editor.locator(".fbd-node", has_text="Limit").click(button="right")
+    page.get_by_role("menuitem", name=re.compile("^Declare Limit…")).click()
+    expect(dialog).to_be_visible()
+    expect(dialog.get_by_label("Type of the new variable")).to_have_value("BOOL")
+    page.keyboard.press("Escape")
+    expect(dialog).to_have_count(0)
+    page.keyboard.press("Escape")  # the menu
+    editor.locator(".fbd-node", has_text="Setpoint").click(button="right")
+    expect(page.get_by_role("menuitem", name=re.compile("^Edit text"))).to_be_visible()
+    expect(page.get_by_role("menuitem", name=re.compile("^Declare"))).to_have_count(0)
+    page.keyboard.press("Escape")
     page.keyboard.press("Control+s")
     page.get_by_text("All changes saved").wait_for()
     assert saved(server, "autofbd")["pous"][0]["declarations"] == (

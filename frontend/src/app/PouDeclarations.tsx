@@ -3,7 +3,7 @@
 import { useMemo } from "react";
 import type { Diagnostic, Pou } from "../generated/api";
 import { DeclarationsEditor } from "../declarations/DeclarationsEditor";
-import { usePanels } from "../panels/store";
+import { usePanels } from "../store/panels";
 import { useDeclarableTypes } from "../store/declarableTypes";
 import { useWorkspace } from "../store/project";
 

@@ -5,7 +5,7 @@ import { useState, type ReactNode } from "react";
 import type { Pou } from "../generated/api";
 import { pathKey } from "../online/monitor";
 import { useOnline } from "../online/store";
-import { useShownInstance } from "../online/useLdOnline";
+import { useShownInstance } from "../online/editorOnline";
 import { ChildRows, TreeHead, type Expansion } from "../panels/VariableTree";
 
 export function VariablesView({ pou, instancePicker }: { pou: Pou; instancePicker?: ReactNode }) {

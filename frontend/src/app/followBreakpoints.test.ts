@@ -2,7 +2,7 @@ import { afterEach, beforeEach, describe, expect, it } from "vitest";
 import type { Project } from "../generated/api";
 import { debugStore } from "../debug/store";
 import { onlineStore } from "../online/store";
-import { panelsStore } from "../panels/store";
+import { panelsStore } from "../store/panels";
 import { emptyWorkspace, workspaceStore } from "../store/project";
 import { followBreakpoints } from "./followBreakpoints";
 

@@ -2,8 +2,8 @@
 // element or line is gone is dropped with a message. Renames and ST line edits move them before the change
 // arrives here (PouActions' rename, the ST editor's line mapping), so only what is really gone is dropped.
 import { debugStore } from "../debug/store";
-import { goneBecause } from "../debug/follow";
-import { panelsStore } from "../panels/store";
+import { goneBecause } from "../breakpointPlaces/follow";
+import { panelsStore } from "../store/panels";
 import { onlineStore } from "../online/store";
 import { workspaceStore } from "../store/project";
 

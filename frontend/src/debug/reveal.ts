@@ -1,6 +1,6 @@
 // Shows a place of the project in its editor: opens the POU (named in any case: the simulation
 // reports halts in the compiled spelling) and asks the editor to select and scroll to the place.
-import { methodPlace, panelsStore } from "../panels/store";
+import { methodPlace, panelsStore } from "../store/panels";
 import { workspaceStore } from "../store/project";
 
 export interface Place {

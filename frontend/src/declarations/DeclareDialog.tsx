@@ -4,7 +4,7 @@
 // initial value, comment, Declare, Cancel; Enter declares, Escape cancels (or first closes the type
 // suggestions). It floats over the editor, so opening it never shifts the diagram under the pointer.
 import { useEffect, useMemo, useRef, useState } from "react";
-import { defaultSuggestion, suggest } from "../ld/editor/OperandEditor";
+import { defaultSuggestion, suggest } from "../ui/OperandEditor";
 import { DECLARE_CLASSES, declareProblem, type NewVariable } from "../store/newVariable";
 import "./declare.css";
 

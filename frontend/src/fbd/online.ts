@@ -5,7 +5,7 @@
 // are bound as LD boxes are (online/pinValues.ts): an FB instance's from the instance, a
 // function's inputs from the wire feeding them, its outputs from their probes.
 import type { SymbolInfo } from "../generated/api";
-import { operandPath } from "../online/ldBinding";
+import { operandPath } from "../online/monitor";
 import { powerKey, type MonitorState } from "../online/monitor";
 import {
   bindBoxPins,

@@ -4,10 +4,10 @@
 import { useCallback, useEffect, useMemo, useState } from "react";
 import type { SymbolInfo } from "../generated/api";
 import type { Pou } from "../generated/api";
-import type { LdOnlineActions } from "../ld/editor/LdEditor";
+import type { LdOnlineActions } from "../online/operandCommands";
 import { partElements, partMonitor } from "../online/parts";
 import { onlineStore, useOnline } from "../online/store";
-import { useShownInstance, onlineReadOnly, operandActions } from "../online/useLdOnline";
+import { useShownInstance, onlineReadOnly, operandActions } from "../online/editorOnline";
 import type { FbdBody, Lookup } from "./model";
 import { bindFbd, fbdOnlineView, type FbdOnlineView } from "./online";
 

@@ -4,7 +4,7 @@
 import { useEffect, useMemo, useState, type ReactNode } from "react";
 import { projectApi } from "../api/client";
 import type { SymbolInfo, IndicatorState as State, Motion, Panel, SwitchPosition as Position } from "../generated/api";
-import { OperandEditor } from "../ld/editor/OperandEditor";
+import { OperandEditor } from "../ui/OperandEditor";
 import { plainSymbol, useWorkspace } from "../store/project";
 import { candidates } from "../trace/candidates";
 import { SYMBOL_SHAPES, updateWidget, type Widget, type WidgetType } from "./model";

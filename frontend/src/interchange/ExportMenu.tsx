@@ -5,7 +5,7 @@ import { Download } from "lucide-react";
 import { useRef, useState } from "react";
 import { interchangeApi, type InterchangeApi } from "./api";
 import { printUrl } from "../print/data";
-import { downloadText } from "./download";
+import { downloadText } from "../ui/download";
 import { failure } from "./outcome";
 import { Problems, type Outcome } from "./Problems";
 

@@ -1,6 +1,6 @@
 // Turns a failed interchange call into an Outcome the UI lists (message plus diagnostics).
 import { ApiError } from "../api/client";
-import { diagnosticsOf } from "./download";
+import { diagnosticsOf } from "../ui/download";
 import type { Outcome } from "./Problems";
 
 export function failure(what: string, err: unknown): Outcome {

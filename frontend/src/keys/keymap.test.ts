@@ -74,6 +74,18 @@ describe("the keymap (issue 17: one table for every editor and the help)", () =>
       expect(keysOf("ld", id), id).not.toBe("");
   });
 
+  it("zooms the diagrams by the keymap: Ctrl+=, Ctrl++ (with or without Shift), Ctrl+-, Ctrl+0, and fit on Ctrl+Shift+H", () => {
+    const ld = (key: string, mods = {}) => commandsFor("ld", press(key, { ctrl: true, ...mods }));
+    expect(ld("=")).toEqual(["zoom-in"]);
+    expect(ld("+", { shift: true })).toEqual(["zoom-in"]);
+    expect(ld("+")).toEqual(["zoom-in"]); // the numeric keypad's plus
+    expect(ld("-")).toEqual(["zoom-out"]);
+    expect(ld("0")).toEqual(["zoom-reset"]);
+    for (const scope of ["ld", "fbd", "sfc"] as const)
+      expect(commandsFor(scope, press("H", { ctrl: true, shift: true })), scope).toEqual(["zoom-fit"]);
+    expect(ld("h")).toEqual([]);
+  });
+
   it("keeps the browser from acting on the function keys it binds (F5 never reloads the page)", () => {
     expect([...RESERVED_KEYS].sort()).toEqual(["F10", "F11", "F12", "F2", "F5", "F7", "F8", "F9"]);
   });

@@ -42,6 +42,12 @@ const APP = [
   },
 ] as const;
 
+/**
+ * Zoom to fit: CODESYS and TwinCAT offer it only in the zoom list of their toolbars, with no key; this is
+ * draw.io's "Fit window" key (Ctrl+0 stays "100 %", as in browsers and the LD editor before).
+ */
+const FIT_KEYS = "Ctrl+Shift+H";
+
 const LD = [
   { scope: "ld", command: "contact", keys: "C", label: "Insert a contact after the selection" },
   { scope: "ld", command: "contact-before", keys: "Shift+C", label: "Insert a contact before the selection" },
@@ -93,6 +99,10 @@ const LD = [
     label: "Extend the selection along a branch",
   },
   { scope: "ld", command: "clear-selection", keys: "Escape", label: "Clear the selection" },
+  { scope: "ld", command: "zoom-in", keys: "Ctrl+= / Ctrl++", label: "Zoom in (also Ctrl+wheel)" },
+  { scope: "ld", command: "zoom-out", keys: "Ctrl+-", label: "Zoom out (also Ctrl+wheel)" },
+  { scope: "ld", command: "zoom-reset", keys: "Ctrl+0", label: "Zoom to 100 %" },
+  { scope: "ld", command: "zoom-fit", keys: FIT_KEYS, label: "Zoom to fit the whole diagram in the view" },
   {
     scope: "ld",
     command: "toggle-breakpoint",
@@ -111,6 +121,7 @@ const FBD = [
   { scope: "fbd", command: "run-earlier", keys: "Alt+ArrowUp", label: "Run the selected block earlier" },
   { scope: "fbd", command: "run-later", keys: "Alt+ArrowDown", label: "Run the selected block later" },
   { scope: "fbd", command: "clear-selection", keys: "Escape", label: "Clear the selection" },
+  { scope: "fbd", command: "zoom-fit", keys: FIT_KEYS, label: "Zoom every network to fit its canvas" },
   {
     scope: "fbd",
     command: "toggle-breakpoint",
@@ -137,6 +148,7 @@ const SFC = [
   { scope: "sfc", command: "zoom-in", keys: "=", label: "Zoom in" },
   { scope: "sfc", command: "zoom-out", keys: "-", label: "Zoom out" },
   { scope: "sfc", command: "zoom-reset", keys: "0", label: "Zoom to 100 %" },
+  { scope: "sfc", command: "zoom-fit", keys: FIT_KEYS, label: "Zoom to fit the whole chart in the view" },
   {
     scope: "sfc",
     command: "move-selection",
@@ -204,10 +216,10 @@ export const SCOPE_TITLES: Record<KeyScope, string> = {
 
 export type KeyPress = Pick<KeyboardEvent, "key" | "ctrlKey" | "metaKey" | "shiftKey" | "altKey">;
 
-/** The alternatives of `keys` ("Delete / Backspace") as the key and its exact modifiers. */
+/** The alternatives of `keys` ("Delete / Backspace", "Ctrl++") as the key and its exact modifiers. */
 function parse(keys: string): { key: string; ctrl: boolean; alt: boolean; shift: boolean }[] {
   return keys.split(" / ").map((alternative) => {
-    const parts = alternative.split("+");
+    const parts = alternative.endsWith("++") ? [...alternative.slice(0, -2).split("+"), "+"] : alternative.split("+");
     const last = parts[parts.length - 1]!;
     const mods = new Set(parts.slice(0, -1));
     return {
@@ -219,14 +231,17 @@ function parse(keys: string): { key: string; ctrl: boolean; alt: boolean; shift:
   });
 }
 
-/** Whether a key press is one of `keys`' alternatives with exactly its modifiers (Cmd counts as Ctrl). */
+/**
+ * Whether a key press is one of `keys`' alternatives with exactly its modifiers (Cmd counts as Ctrl;
+ * "+" is typed with Shift on most layouts, so Shift does not count for it).
+ */
 export function matches(keys: string, event: KeyPress): boolean {
   return parse(keys).some(
     (k) =>
       event.key.toLowerCase() === k.key.toLowerCase() &&
       k.ctrl === (event.ctrlKey || event.metaKey) &&
       k.alt === event.altKey &&
-      k.shift === event.shiftKey,
+      (k.shift === event.shiftKey || k.key === "+"),
   );
 }
 
@@ -238,24 +253,6 @@ export function commandsFor<S extends KeyScope>(scope: S, event: KeyPress): Comm
 /** The keys of a command as the help and tooltips show them ("" when it has none). */
 export function keysOf<S extends KeyScope>(scope: S, command: CommandOf<S> | string): string {
   return KEYMAP.find((b) => b.scope === scope && b.command === command)?.keys ?? "";
-}
-
-/**
- * Runs the first handler of the commands bound to `event` in `scope` that takes it (returns true),
- * and then keeps the browser from acting on the key too. Returns whether one did.
- */
-export function dispatchKey<S extends KeyScope>(
-  scope: S,
-  event: KeyPress & Pick<KeyboardEvent, "preventDefault">,
-  handlers: Record<CommandOf<S>, () => boolean>,
-): boolean {
-  for (const command of commandsFor(scope, event)) {
-    if (handlers[command]()) {
-      event.preventDefault();
-      return true;
-    }
-  }
-  return false;
 }
 
 /**

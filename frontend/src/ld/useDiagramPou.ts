@@ -4,8 +4,8 @@
 import { useMemo } from "react";
 import type { Diagnostic, LibraryEntry, SymbolInfo } from "../generated/api";
 import type { VariableDeclaration } from "./editor/declare";
-import { usePanels, type Focus } from "../panels/store";
-import { useLiveCheck } from "../st/useLiveCheck";
+import { usePanels, type Focus } from "../store/panels";
+import { useLiveCheck } from "../store/useLiveCheck";
 import { diagramDiagnostics, symbolsOf, useWorkspace } from "../store/project";
 
 export interface DiagramPou {

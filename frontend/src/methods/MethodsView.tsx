@@ -3,9 +3,9 @@
 // texts, edited in the ST editor with the live check's diagnostics; breakpoints in a method's body.
 import { useState, type FormEvent } from "react";
 import type { Accessor, Method, Pou, Property } from "../generated/api";
-import { useTextDebug } from "../debug/useTextDebug";
+import { useTextDebug } from "../breakpointPlaces/useTextDebug";
 import { useOnline } from "../online/store";
-import type { Focus } from "../panels/store";
+import type { Focus } from "../store/panels";
 import { StEditor } from "../st/StEditor";
 import { useStAssist } from "../st/useStAssist";
 import { workspaceStore } from "../store/project";

@@ -1,7 +1,7 @@
 // The method and property operations of the Methods tab (issue 25): pure edits of a function block.
 import { describe, expect, it } from "vitest";
 import type { Pou } from "../generated/api";
-import { focusOf, methodPlace } from "../panels/store";
+import { focusOf, methodPlace } from "../store/panels";
 import { addMember, changeMember, deleteMember, memberFile, memberOf, renameMember, type Edited } from "./members";
 
 const fb: Pou = {

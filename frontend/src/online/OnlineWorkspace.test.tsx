@@ -4,7 +4,7 @@ import { beforeEach, describe, expect, it, vi } from "vitest";
 import App from "../app/App";
 import type { Diagnostic } from "../generated/api";
 import { motorMain } from "../ld/fixtures";
-import { emptyPanels, panelsStore } from "../panels/store";
+import { emptyPanels, panelsStore } from "../store/panels";
 import { emptyWorkspace, plainSymbol, workspaceStore } from "../store/project";
 import { appStore, initialData } from "../store/workspace";
 import { offline, onlineStore } from "./store";

@@ -4,7 +4,7 @@
 // the last scan time; the scan history's timeline (HistoryBar.tsx) and Open recording (OpenRecording.tsx). Check checks the working copy and never saves;
 // Compile & simulate compiles the saved project, so with unsaved changes it asks: save and compile, compile the
 // saved version, or cancel. Keys (CODESYS's) come from the keymap and are handled by app/useAppKeys.ts.
-import { panelsStore, usePanels } from "../panels/store";
+import { panelsStore, usePanels } from "../store/panels";
 import { workspaceStore } from "../store/project";
 import { onlineStore, useOnline } from "./store";
 import { formatClock } from "./values";

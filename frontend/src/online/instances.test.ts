@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { instanceOf } from "./useLdOnline";
+import { instanceOf } from "./editorOnline";
 
 describe("which instance an online view shows", () => {
   const choices = { MAIN: ["MAIN"], BLINKER: ["MAIN.BLINK"], PULSE: ["MAIN.P1", "MAIN.P2"] };

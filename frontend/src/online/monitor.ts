@@ -1,6 +1,7 @@
 // What the browser knows about a running simulation, folded from the server's monitor messages.
 // Pure functions only (the store and the views call them), so the handling of every message kind
 // is unit-tested without a socket. Paths are compared in upper case, as IEC names ignore case.
+import type { SymbolInfo } from "../generated/api";
 import type { DisplayType, HistoryRange, Log } from "../generated/monitor";
 import type { PowerState, ServerMessage, SimulationState, Value, Where } from "./protocol";
 
@@ -185,3 +186,21 @@ export function keepSubscribed(
 
 /** The key of an element's power in `values.power`. */
 export const powerKey = (instance: string, id: string): string => `${instance}/${id}`;
+
+/** A variable operand: names with member/index access (`T1.Q`, `A[3]`); literals and addresses are not. */
+const VARIABLE = /^[A-Za-z_][A-Za-z0-9_]*(\.[A-Za-z_][A-Za-z0-9_]*|\[\s*\d+\s*\])*$/;
+const LITERALS = new Set(["TRUE", "FALSE"]);
+
+/**
+ * The canonical simulation path of an operand in POU instance `instance`, as the server names it
+ * in its messages: the instance's own variable (`MAIN.START`) or a global (`ALARM`); null for
+ * literals and addresses.
+ */
+export function operandPath(operand: string, instance: string, symbols: readonly SymbolInfo[]): string | null {
+  const text = operand.trim();
+  if (!VARIABLE.test(text) || LITERALS.has(text.toUpperCase())) return null;
+  const head = text.split(/[.[]/, 1)[0]!.toUpperCase();
+  const symbol = symbols.find((s) => s.name.toUpperCase() === head);
+  const global = symbol?.var_class === "VAR_GLOBAL" || symbol?.var_class === "VAR_EXTERNAL";
+  return pathKey(global ? text : `${instance}.${text}`);
+}

@@ -2,11 +2,24 @@
 // (CODESYS's double-click: a BOOL toggles its prepared value, other types ask for one), write,
 // force and release go to the online store as simulation paths, and one list of context menu items
 // (the editors render it with the LD context menu and ask for values with ValuePrompt).
-import type { LdOnlineActions } from "../ld/editor/LdEditor";
-import type { MenuItem } from "../ld/editor/ContextMenu";
+import type { MenuItem } from "../ui/MenuList";
 import { pathKey } from "./monitor";
 import { parseValue } from "./values";
 import type { Value } from "./protocol";
+
+/** What a diagram or the ST editor can ask of a running simulation, by operand text (the caller maps it to a path). */
+export interface LdOnlineActions {
+  /**
+   * Prepares a value (double-click, CODESYS): `text` when given, else a BOOL's prepared value toggles;
+   * false when the variable is not a BOOL and a value must be asked for. `type`: what the diagram
+   * knows of it (a contact's variable is a BOOL), for before its first value arrives.
+   */
+  prepare(operand: string, text?: string, type?: string): boolean;
+  write(operand: string, text: string): void;
+  force(operand: string, value: boolean | string): void;
+  unforce(operand: string): void;
+  watch(operand: string): void;
+}
 
 const isBool = (value: Value | undefined, type: string | undefined) =>
   typeof value === "boolean" || type?.toUpperCase() === "BOOL";

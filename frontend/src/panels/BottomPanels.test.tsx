@@ -1,7 +1,7 @@
 import { act, fireEvent, render, screen } from "@testing-library/react";
 import { beforeEach, describe, expect, it } from "vitest";
 import { BottomPanels } from "./BottomPanels";
-import { clampHeight, emptyPanels, PANEL_HEIGHT_LIMITS, panelsStore } from "./store";
+import { clampHeight, emptyPanels, PANEL_HEIGHT_LIMITS, panelsStore } from "../store/panels";
 
 beforeEach(() => panelsStore.setState(emptyPanels));
 

@@ -9,7 +9,7 @@ import { useTests } from "../tests/store";
 import { DiagnosticsPanel } from "./DiagnosticsPanel";
 import { IoPanel } from "./IoPanel";
 import { LogPanel } from "./LogPanel";
-import { panelsStore, usePanels, type PanelId } from "./store";
+import { panelsStore, usePanels, type PanelId } from "../store/panels";
 import { WatchPanel } from "./WatchPanel";
 import { ViewBoundary } from "../ui/ViewBoundary";
 import { Splitter } from "../ui/Splitter";

@@ -8,9 +8,9 @@ import type { ClientMessage } from "../online/protocol";
 import { emptyMonitor } from "../online/monitor";
 import { offline, onlineStore } from "../online/store";
 import { emptyWorkspace, workspaceStore } from "../store/project";
-import { breakpointBody, describePlace } from "../debug/place";
+import { breakpointBody, describePlace } from "../breakpointPlaces/place";
 import { BreakpointsPanel } from "./BreakpointsPanel";
-import { emptyPanels, panelsStore } from "./store";
+import { emptyPanels, panelsStore } from "../store/panels";
 
 const project: Project = {
   name: "motor",

@@ -5,7 +5,7 @@ import type { Pou } from "../generated/api";
 import { breakpointKey, type Breakpoint } from "../debug/breakpoints";
 import { revealPlace } from "../debug/reveal";
 import { debugStore, isEnabled, useDebug } from "../debug/store";
-import { breakpointBody, describePlace } from "../debug/place";
+import { breakpointBody, describePlace } from "../breakpointPlaces/place";
 import type { At } from "../online/protocol";
 import { useOnline } from "../online/store";
 import { useWorkspace } from "../store/project";

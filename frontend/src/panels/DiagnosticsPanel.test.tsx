@@ -4,7 +4,7 @@ import { fireEvent, render, screen, waitFor } from "@testing-library/react";
 import { beforeEach, describe, expect, it } from "vitest";
 import type { Diagnostic } from "../generated/api";
 import { DiagnosticsPanel, placeOf } from "./DiagnosticsPanel";
-import { emptyPanels, panelsStore } from "./store";
+import { emptyPanels, panelsStore } from "../store/panels";
 
 beforeEach(() => panelsStore.setState(emptyPanels));
 

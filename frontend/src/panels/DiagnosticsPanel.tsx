@@ -5,7 +5,7 @@
 import { useState } from "react";
 import type { Diagnostic } from "../generated/api";
 import { useCatalogue, type Catalogue } from "./catalogue";
-import { focusOf, panelOf, usePanels } from "./store";
+import { focusOf, panelOf, usePanels } from "../store/panels";
 
 const RANK = { error: 0, warning: 1, info: 2 } as const;
 

@@ -3,7 +3,7 @@
 // browser's own notes (refused requests, a lost connection); each with its scan and virtual time.
 // Filter by kind; export what is shown as CSV.
 import { useEffect, useMemo, useRef, useState } from "react";
-import { downloadText } from "../interchange/download";
+import { downloadText } from "../ui/download";
 import { LOG_KINDS, type LogEntry, type LogKind } from "../online/monitor";
 import { useOnline } from "../online/store";
 import { formatClock } from "../online/values";

@@ -6,7 +6,7 @@
 import { useMemo, useRef } from "react";
 import type { LibraryEntry, PrintDocument as Doc, SymbolInfo, XrefEntry } from "../generated/api";
 import type { Pou } from "../generated/api";
-import { downloadText } from "../interchange/download";
+import { downloadText } from "../ui/download";
 import type { FbdBody } from "../fbd/model";
 import type { LdBody } from "../ld/model";
 import { highlightLines, Tokens } from "../stview/highlight";

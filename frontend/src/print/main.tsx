@@ -4,7 +4,7 @@ import { StrictMode, useEffect, useState } from "react";
 import { createRoot } from "react-dom/client";
 import { flushSync } from "react-dom";
 import type { PrintDocument as Doc } from "../generated/api";
-import { downloadText } from "../interchange/download";
+import { downloadText } from "../ui/download";
 import { embeddedDocument, fetchDocument, printUrl, requestOf, type PrintRequest } from "./data";
 import { PrintDocument } from "./PrintDocument";
 import { staticHtml } from "./html";

@@ -1,30 +1,36 @@
 // The SFC editor: the chart drawn from its structure (layout.ts, so every chart it draws is well formed),
 // the toolbar and keys of the keymap's "sfc" scope (insert a step and a transition below, alternative and
 // simultaneous branches, jump, associate an action with its qualifier, delete, copy/paste through the system
-// clipboard, undo/redo, zoom), arrow-key navigation across the chart, and a properties panel for the selection
-// (step name, action associations with the qualifier picker and time, entry and exit actions, time limits;
-// a transition's condition and priority; a jump's target). The actions and named transitions are listed
+// clipboard, undo/redo, zoom and fit), arrow-key navigation across the chart, and a properties panel for the
+// selection (step name, action associations with the qualifier picker and time, entry and exit actions, time
+// limits; a transition's condition and priority; a jump's target). The actions and named transitions are listed
 // below; "Open" shows one in its own editor (the caller's). The undo history is the caller's (one per POU).
-import {
-  useCallback,
-  useEffect,
-  useMemo,
-  useRef,
-  useState,
-  type KeyboardEvent,
-  type MouseEvent,
-  type ReactNode,
-} from "react";
+// Its state machine is sfc/editorState.ts; the root's keys and clipboard are ui/useEditorRoot.ts.
+import { useCallback, useEffect, useMemo, useReducer, useRef, useState, type MouseEvent, type ReactNode } from "react";
 import type { Diagnostic } from "../generated/api";
 import type { SfcAction, SfcNamedTransition } from "../generated/api";
-import { MenuList, type MenuItem } from "../ld/editor/ContextMenu";
-import { clipboardActions, type LastClip } from "../ld/editor/systemClipboard";
-import type { LdOnlineActions } from "../ld/editor/LdEditor";
-import { OperandValuePrompt, type ValueRequest } from "../ld/editor/ValuePrompt";
+import { MenuList, type MenuItem } from "../ui/MenuList";
+import type { LdOnlineActions } from "../online/operandCommands";
+import { OperandValuePrompt } from "../online/ValuePrompt";
 import { canRedo, canUndo, record, redo, undo, type History } from "../store/history";
 import { onlineOperandItems } from "../online/operandCommands";
-import { dispatchKey, keysOf, type CommandOf } from "../keys/keymap";
+import { keysOf, type CommandOf } from "../keys/keymap";
 import { ShortcutHelp } from "../keys/ShortcutHelp";
+import type { LastClip } from "../ui/systemClipboard";
+import { useEditorRoot, type KeyHandlers } from "../ui/useEditorRoot";
+import { fitZoom } from "../ui/zoom";
+import {
+  breakable,
+  clipText,
+  deletion,
+  editingOf,
+  INITIAL_STATE,
+  openedAction,
+  pasting,
+  sfcEditorReducer,
+  ZOOM_LEVELS,
+  type Editing,
+} from "./editorState";
 import { layoutChart, neighbour, type Direction } from "./layout";
 import {
   QUALIFIERS,
@@ -67,9 +73,10 @@ export interface SfcEditorProps {
 }
 
 type Command = CommandOf<"sfc">;
-type Editing = { kind: "name" | "condition" | "target"; id: string } | null;
 
-const ZOOMS = [0.5, 0.67, 0.8, 1, 1.25, 1.5, 2];
+const ARROWS: Record<string, Direction> = { ArrowUp: "up", ArrowDown: "down", ArrowLeft: "left", ArrowRight: "right" };
+/** Room kept around a fitted chart for the scroll area's edges. */
+const FIT_MARGIN = 8;
 /** The last fragment copied in this tab (the browser may keep its clipboard closed to the toolbar's Paste). */
 const lastClip: LastClip = { text: null };
 
@@ -77,40 +84,24 @@ export function SfcEditor(props: SfcEditorProps) {
   const { history, onHistoryChange, readOnly } = props;
   const body = history.present;
   const elements = chartOf(body);
-  const [selected, setSelected] = useState<string | null>(null);
-  const [association, setAssociation] = useState<string | null>(null);
-  const [message, setMessage] = useState<string | null>(null);
-  const [zoom, setZoom] = useState(3);
-  const [help, setHelp] = useState(false);
-  const [editing, setEditing] = useState<Editing>(null);
-  const [associating, setAssociating] = useState(false);
-  const [menu, setMenu] = useState<{ x: number; y: number; groups: MenuItem[][] } | null>(null);
-  const [valuePrompt, setValuePrompt] = useState<ValueRequest | null>(null);
+  const [state, dispatch] = useReducer(sfcEditorReducer, INITIAL_STATE);
+  const { selected, association, message, zoom, help, editing, associating, menu, valuePrompt } = state;
   const root = useRef<HTMLDivElement>(null);
+  const scroll = useRef<HTMLDivElement>(null);
   const layout = useMemo(() => layoutChart(elements), [elements]);
   const place = selected ? locate(body, selected) : undefined;
+  const setMessage = (text: string | null) => dispatch({ type: "message", text });
+  const select = (id: string | null) => dispatch({ type: "select", id });
 
-  // A diagnostic clicked elsewhere selects its element here.
-  const [focusSeen, setFocusSeen] = useState(props.focus);
-  if (props.focus !== focusSeen) {
-    setFocusSeen(props.focus);
-    if (props.focus?.element) setSelected(props.focus.element);
-  }
-  useEffect(() => {
-    if (!selected) return;
-    root.current?.querySelector(`[data-sfc-id="${CSS.escape(selected)}"]`)?.scrollIntoView?.({ block: "nearest" });
-  }, [selected]);
+  // A diagnostic clicked elsewhere selects its element here (while rendering, as the request arrives).
+  if (props.focus && props.focus.seq !== state.focusSeen) dispatch({ type: "focus", focus: props.focus });
 
   const apply = useCallback(
     (result: ops.EditResult) => {
-      if ("error" in result) {
-        setMessage(result.error);
-        return false;
-      }
-      setMessage(null);
-      onHistoryChange(record(history, result.body));
-      if (result.select !== undefined) setSelected(result.select);
-      return true;
+      const ok = !("error" in result);
+      if (ok) onHistoryChange(record(history, result.body));
+      dispatch({ type: "edited", result });
+      return ok;
     },
     [history, onHistoryChange],
   );
@@ -124,94 +115,95 @@ export function SfcEditor(props: SfcEditorProps) {
     return apply(fn(selected ?? "")) || true;
   };
 
-  const clipboard = clipboardActions(
-    {
-      take: (cut) => {
-        const fragment = selected ? ops.copyFragment(body, selected) : null;
-        if (!fragment) return null;
-        if (cut && editable) apply(ops.remove(body, selected!));
-        return ops.serializeFragment(fragment);
-      },
-      paste: (text) => {
-        const fragment = text ? ops.parseFragment(text) : null;
-        if (!fragment) setMessage("The clipboard holds no SFC steps or transitions.");
-        else if (!selected) setMessage("Select where to paste first.");
-        else apply(ops.pasteFragment(body, selected, fragment));
-      },
-      isClip: (text) => ops.parseFragment(text) !== null,
-      locked: !editable,
-    },
-    lastClip,
-  );
+  /** Zoom so the whole chart fits the scroll area (ui/zoom.ts). */
+  const fit = () => {
+    const view = scroll.current;
+    if (!view) return false;
+    const room = { width: view.clientWidth - FIT_MARGIN, height: view.clientHeight - FIT_MARGIN };
+    dispatch({ type: "zoomTo", zoom: fitZoom(layout, room) });
+    return true;
+  };
 
-  const handlers: Record<Command, () => boolean> = {
+  const handlers: KeyHandlers<"sfc"> = {
     "insert-step": () => editable && apply(ops.insertBelow(body, selected)),
     alternative: need((id) => ops.addAlternative(body, id)),
     parallel: need((id) => ops.addParallel(body, id)),
     jump: need((id) => ops.addJump(body, id)),
     associate: () => {
       if (!editable || !place || kindOf(place.element) !== "step") return false;
-      setAssociating(true);
+      dispatch({ type: "associating", open: true });
       return true;
     },
     edit: () => {
-      if (!editable || !place) return false;
-      const kind = kindOf(place.element);
-      if (kind === "step") setEditing({ kind: "name", id: place.element.id });
-      else if (kind === "transition") setEditing({ kind: "condition", id: place.element.id });
-      else if (kind === "jump") setEditing({ kind: "target", id: place.element.id });
-      else return false;
-      return true;
+      const next = editable ? editingOf(body, selected) : null;
+      if (next) dispatch({ type: "edit", editing: next });
+      return next !== null;
     },
     open: () => {
-      const row =
-        place && kindOf(place.element) === "step"
-          ? (place.element as SfcStep).actions?.find((a) => a.id === association)
-          : undefined;
-      const action = row && body.actions?.find((a) => a.name.toUpperCase() === row.action.toUpperCase());
+      const action = openedAction(state, body);
       if (!action || !props.onOpen) return false;
       props.onOpen({ kind: "action", name: action.name });
       return true;
     },
     delete: () => {
-      if (!editable || !selected) return false;
-      if (association && place) return apply(ops.removeAssociation(body, place.element.id, association));
-      return apply(ops.remove(body, selected)) && (setSelected(null), true);
+      const result = editable ? deletion(state, body) : null;
+      if (!result) return false;
+      const removesElement = !association || !place;
+      return apply(result) && (removesElement && select(null), true);
     },
     "delete-branch": () => (editable && selected ? apply(ops.removeBranch(body, selected)) : false),
-    // Copy, cut and paste arrive as clipboard events (below), which reach the system clipboard.
-    copy: () => false,
-    cut: () => false,
-    paste: () => false,
     undo: () => editable && canUndo(history) && (onHistoryChange(undo(history)), true),
     redo: () => editable && canRedo(history) && (onHistoryChange(redo(history)), true),
-    "zoom-in": () => (setZoom((z) => Math.min(ZOOMS.length - 1, z + 1)), true),
-    "zoom-out": () => (setZoom((z) => Math.max(0, z - 1)), true),
-    "zoom-reset": () => (setZoom(3), true),
-    "move-selection": () => false, // the arrows are handled below with their direction
-    "clear-selection": () => (setSelected(null), setAssociation(null), true),
+    "zoom-in": () => (dispatch({ type: "zoom", step: "in" }), true),
+    "zoom-out": () => (dispatch({ type: "zoom", step: "out" }), true),
+    "zoom-reset": () => (dispatch({ type: "zoom", step: "reset" }), true),
+    "zoom-fit": fit,
+    "move-selection": () => false, // the arrows are handled with their direction (keyHandlers)
+    "clear-selection": () => (select(null), true),
     "toggle-breakpoint": () => {
-      if (!props.debugging || !place) return false;
-      const kind = kindOf(place.element);
-      if (kind !== "step" && kind !== "transition") return false;
-      props.debugging.toggle(place.element.id);
+      if (!props.debugging || !breakable(body, selected)) return false;
+      props.debugging.toggle(selected!);
       return true;
     },
   };
+  const keyHandlers = (event: { key: string }): KeyHandlers<"sfc"> => ({
+    ...handlers,
+    "move-selection": () => (select(neighbour(layout, selected, ARROWS[event.key]!)), true),
+  });
+
+  const editor = useEditorRoot({
+    root,
+    scope: "sfc",
+    handlers: keyHandlers,
+    clipboard: {
+      take: (cut) => {
+        const text = clipText(state, body);
+        if (text !== null && cut && editable) apply(ops.remove(body, selected!));
+        return text;
+      },
+      paste: (text) => apply(pasting(state, body, text)),
+      isClip: (text) => ops.parseFragment(text) !== null,
+      locked: !editable,
+    },
+    last: lastClip,
+    onZoom: (step) => dispatch({ type: "zoom", step }),
+  });
 
   /** The context menu of a step or transition: its breakpoint; online, a step's flag X (write, force, watch). */
   const openMenu = (id: string, event: MouseEvent) => {
     const element = locate(body, id)?.element;
-    const kind = element ? kindOf(element) : null;
-    if (kind !== "step" && kind !== "transition") return;
+    if (!element || !breakable(body, id)) return;
     event.preventDefault();
-    setSelected(id);
-    setAssociation(null);
+    select(id);
     const groups: MenuItem[][] = [];
     const { onlineActions, debugging } = props;
-    if (kind === "step" && onlineActions) {
+    if (kindOf(element) === "step" && onlineActions) {
       const operand = `${(element as SfcStep).name}.X`;
-      groups.push(onlineOperandItems(operand, onlineActions, (action) => setValuePrompt({ operand, action })));
+      groups.push(
+        onlineOperandItems(operand, onlineActions, (action) =>
+          dispatch({ type: "valuePrompt", request: { operand, action } }),
+        ),
+      );
     }
     if (debugging)
       groups.push([
@@ -224,25 +216,10 @@ export function SfcEditor(props: SfcEditorProps) {
       ]);
     if (!groups.length) return;
     const box = root.current?.getBoundingClientRect();
-    setMenu({ x: event.clientX - (box?.left ?? 0), y: event.clientY - (box?.top ?? 0), groups });
-  };
-
-  const onKeyDown = (event: KeyboardEvent) => {
-    if ((event.target as HTMLElement).closest("input, select, textarea")) return;
-    const arrows: Record<string, Direction> = {
-      ArrowUp: "up",
-      ArrowDown: "down",
-      ArrowLeft: "left",
-      ArrowRight: "right",
-    };
-    const direction = arrows[event.key];
-    if (direction && !event.ctrlKey && !event.altKey && !event.metaKey && !event.shiftKey) {
-      event.preventDefault();
-      setAssociation(null);
-      setSelected(neighbour(layout, selected, direction));
-      return;
-    }
-    if (dispatchKey("sfc", event, handlers)) return;
+    dispatch({
+      type: "menu",
+      menu: { x: event.clientX - (box?.left ?? 0), y: event.clientY - (box?.top ?? 0), groups },
+    });
   };
 
   const toolbar: { label: string; command: Command; enabled: boolean }[] = [
@@ -260,19 +237,17 @@ export function SfcEditor(props: SfcEditorProps) {
     { label: "Paste", command: "paste", enabled: editable && !!place },
     { label: "Undo", command: "undo", enabled: editable && canUndo(history) },
     { label: "Redo", command: "redo", enabled: editable && canRedo(history) },
-    { label: "Zoom in", command: "zoom-in", enabled: zoom < ZOOMS.length - 1 },
-    { label: "Zoom out", command: "zoom-out", enabled: zoom > 0 },
+    { label: "Zoom in", command: "zoom-in", enabled: zoom < ZOOM_LEVELS[ZOOM_LEVELS.length - 1]! },
+    { label: "Zoom out", command: "zoom-out", enabled: zoom > ZOOM_LEVELS[0]! },
+    { label: "Zoom to fit", command: "zoom-fit", enabled: elements.length > 0 },
   ];
 
   return (
     <div
       className={`sfc-editor${readOnly ? " sfc-readonly" : ""}`}
-      ref={root}
-      tabIndex={0}
+      {...editor.rootProps}
       role="application"
       aria-label="Sequential function chart editor"
-      onKeyDown={onKeyDown}
-      {...clipboard.events}
     >
       <div className="ld-toolbar sfc-toolbar" role="toolbar" aria-label="SFC editing">
         {toolbar.map(({ label, command, enabled }) => (
@@ -283,20 +258,25 @@ export function SfcEditor(props: SfcEditorProps) {
             title={keysOf("sfc", command) ? `${label} (${keysOf("sfc", command)})` : label}
             onMouseDown={(e) => e.preventDefault()}
             onClick={() => {
-              if (command === "copy" || command === "cut") clipboard.copy(command === "cut");
-              else if (command === "paste") clipboard.paste();
+              if (command === "copy" || command === "cut") editor.copy(command === "cut");
+              else if (command === "paste") editor.paste();
               else handlers[command]();
-              root.current?.focus();
+              editor.focus();
             }}
           >
             {label}
           </button>
         ))}
         <span className="sfc-zoom" aria-label="Zoom">
-          {Math.round(ZOOMS[zoom]! * 100)} %
+          {Math.round(zoom * 100)} %
         </span>
         {props.toolbarExtra}
-        <button type="button" className="ld-help-button" aria-expanded={help} onClick={() => setHelp((h) => !h)}>
+        <button
+          type="button"
+          className="ld-help-button"
+          aria-expanded={help}
+          onClick={() => dispatch({ type: "help", open: "toggle" })}
+        >
           Shortcuts
         </button>
       </div>
@@ -310,20 +290,22 @@ export function SfcEditor(props: SfcEditorProps) {
           {message}
         </div>
       ) : null}
-      {help ? <ShortcutHelp scopes={["sfc", "app"]} onClose={() => setHelp(false)} /> : null}
-      {menu ? <MenuList x={menu.x} y={menu.y} groups={menu.groups} onClose={() => setMenu(null)} /> : null}
+      {help ? <ShortcutHelp scopes={["sfc", "app"]} onClose={() => dispatch({ type: "help", open: false })} /> : null}
+      {menu ? (
+        <MenuList x={menu.x} y={menu.y} groups={menu.groups} onClose={() => dispatch({ type: "menu", menu: null })} />
+      ) : null}
       {valuePrompt && props.onlineActions ? (
         <OperandValuePrompt
           request={valuePrompt}
           commands={props.onlineActions}
           onDone={() => {
-            setValuePrompt(null);
-            root.current?.focus();
+            dispatch({ type: "valuePrompt", request: null });
+            editor.focus();
           }}
         />
       ) : null}
       <div className="sfc-main">
-        <div className="sfc-scroll">
+        <div className="sfc-scroll" ref={scroll}>
           {elements.length === 0 ? (
             <p className="placeholder">
               The chart is empty:{" "}
@@ -339,30 +321,21 @@ export function SfcEditor(props: SfcEditorProps) {
               diagnostics={props.diagnostics}
               online={props.online}
               marks={props.debugging?.marks}
-              scale={ZOOMS[zoom]}
+              scale={zoom}
               onSelect={(id, event) => {
-                root.current?.focus();
-                setAssociation(null);
-                setSelected(id);
-                if (id && event.altKey && props.debugging) {
-                  const kind = kindOf(locate(body, id)?.element ?? ({ type: "jump" } as never));
-                  if (kind === "step" || kind === "transition") props.debugging.toggle(id);
-                }
+                editor.focus();
+                select(id);
+                if (id && event.altKey && props.debugging && breakable(body, id)) props.debugging.toggle(id);
               }}
               onSelectAssociation={(step, row) => {
-                root.current?.focus();
-                setSelected(step);
-                setAssociation(row);
+                editor.focus();
+                dispatch({ type: "selectAssociation", step, row });
               }}
               onContextMenu={openMenu}
               onDoubleClick={(id) => {
-                setSelected(id);
-                if (editable) {
-                  const kind = kindOf(locate(body, id)?.element ?? ({ type: "alternative" } as never));
-                  if (kind === "step") setEditing({ kind: "name", id });
-                  if (kind === "transition") setEditing({ kind: "condition", id });
-                  if (kind === "jump") setEditing({ kind: "target", id });
-                }
+                select(id);
+                const next = editable ? editingOf(body, id) : null;
+                if (next) dispatch({ type: "edit", editing: next });
               }}
             />
           )}
@@ -373,14 +346,14 @@ export function SfcEditor(props: SfcEditorProps) {
             selected={selected}
             association={association}
             editing={editing}
-            setEditing={setEditing}
+            setEditing={(next) => dispatch({ type: "edit", editing: next })}
             associating={associating}
-            setAssociating={setAssociating}
+            setAssociating={(open) => dispatch({ type: "associating", open })}
             variables={props.variables ?? []}
             readOnly={!editable}
             apply={apply}
             onOpen={props.onOpen}
-            onSelectAssociation={setAssociation}
+            onSelectAssociation={(row) => dispatch({ type: "selectAssociation", step: selected!, row })}
           />
           <Parts body={body} readOnly={!editable} apply={apply} onOpen={props.onOpen} />
         </aside>

@@ -5,7 +5,7 @@ import { afterEach, describe, expect, it, vi } from "vitest";
 import type { CheckReport, Diagnostic } from "../generated/api";
 import type { Project } from "../generated/api";
 import { StEditor } from "./StEditor";
-import { CHECK_DELAY_MS, useLiveCheck } from "./useLiveCheck";
+import { CHECK_DELAY_MS, useLiveCheck } from "../store/useLiveCheck";
 
 const viewIn = (container: HTMLElement) =>
   EditorView.findFromDOM(container.querySelector(".cm-editor") as HTMLElement)!;

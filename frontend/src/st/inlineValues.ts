@@ -7,7 +7,7 @@
 // (`IN :=`) are never taken for variables. An element with an expression index (`a[i + 1]`) shows none.
 import { StateEffect, StateField, type Extension } from "@codemirror/state";
 import { Decoration, EditorView, hoverTooltip, WidgetType, type DecorationSet } from "@codemirror/view";
-import { operandPath } from "../online/ldBinding";
+import { operandPath } from "../online/monitor";
 import { pathKey, type MonitorState } from "../online/monitor";
 import type { Value } from "../online/protocol";
 import { preparedText, shownOf, type Prepared, type ValueShown } from "../online/shown";

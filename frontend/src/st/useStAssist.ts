@@ -8,7 +8,7 @@ import { useWorkspace } from "../store/project";
 import { memberCompletions, stCompletions, type StCompletions } from "./completion";
 import type { Scope } from "./members";
 import { stScope, workingLibrary } from "./scope";
-import { useLiveCheck } from "./useLiveCheck";
+import { useLiveCheck } from "../store/useLiveCheck";
 
 export function useStAssist(pou: Pou): { diagnostics: Diagnostic[]; completions: StCompletions; scope: Scope } {
   const project = useWorkspace((s) => s.project);

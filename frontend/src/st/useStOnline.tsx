@@ -6,12 +6,12 @@
 // An IL body also shows the accumulator after each line (ilOnline.ts), from the instance's probes.
 import { useEffect, useMemo, useState, type ReactNode } from "react";
 import type { Pou } from "../generated/api";
-import { ContextMenu } from "../ld/editor/ContextMenu";
-import { OperandValuePrompt } from "../ld/editor/ValuePrompt";
+import { MenuList } from "../ui/MenuList";
+import { OperandValuePrompt } from "../online/ValuePrompt";
 import { onlineOperandItems, operandCommands } from "../online/operandCommands";
 import { haltedAt } from "../online/monitor";
 import { onlineStore, useOnline } from "../online/store";
-import { useShownInstance } from "../online/useLdOnline";
+import { useShownInstance } from "../online/editorOnline";
 import {
   concretePath,
   describe,
@@ -103,15 +103,17 @@ export function useStOnline(pou: Pou, body: string, scope: Scope): StOnline {
       {menu && view ? (
         // The menu is placed at the click's viewport coordinates.
         <div style={{ position: "fixed", left: 0, top: 0, zIndex: 30 }}>
-          <ContextMenu
+          <MenuList
             x={menu.x}
             y={menu.y}
-            extra={onlineOperandItems(
-              menu.occurrence.text,
-              commands,
-              (action) => setPrompt({ occurrence: menu.occurrence, action }),
-              menu.occurrence.type.toUpperCase() === "BOOL",
-            )}
+            groups={[
+              onlineOperandItems(
+                menu.occurrence.text,
+                commands,
+                (action) => setPrompt({ occurrence: menu.occurrence, action }),
+                menu.occurrence.type.toUpperCase() === "BOOL",
+              ),
+            ]}
             onClose={() => setMenu(null)}
           />
         </div>

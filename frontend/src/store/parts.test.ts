@@ -1,6 +1,6 @@
 import { describe, expect, it } from "vitest";
 import type { Project } from "../generated/api";
-import { focusOf } from "../panels/store";
+import { focusOf } from "./panels";
 import { loadDraft, saveDraft } from "./drafts";
 import { isProjectPart, migratedChanged, migratedTab, partLabel, partOf, PROJECT_PARTS, taskIndexOf } from "./parts";
 import { MemoryStorage } from "../test/memoryStorage";

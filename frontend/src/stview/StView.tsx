@@ -4,7 +4,7 @@
 import { useEffect, useMemo, useState } from "react";
 import { ApiError, exportSt } from "../api/client";
 import type { Diagnostic, StExport } from "../generated/api";
-import { downloadText } from "../interchange/download";
+import { downloadText } from "../ui/download";
 import { placeOf } from "../panels/DiagnosticsPanel";
 import { highlightLines, Tokens } from "./highlight";
 

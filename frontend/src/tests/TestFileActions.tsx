@@ -1,7 +1,7 @@
 // The project tree's menu of a test file: rename and delete, each one undoable step of the working copy
 // (workspace store's applyOperation), saved with the project (the old tests/<name>.st goes on save).
 import { useState, type FormEvent } from "react";
-import { Dialog, DialogFooter, TreeActions } from "../tree/PouActions";
+import { Dialog, DialogFooter, TreeActions } from "../ui/TreeActions";
 import { testNameProblem, testPath, workspaceStore } from "../store/project";
 
 function RenameTestDialog({ name, onClose }: { name: string; onClose(): void }) {

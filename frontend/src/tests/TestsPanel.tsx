@@ -5,9 +5,9 @@
 import { useEffect } from "react";
 import type { Diagnostic, TestFailureInfo, TestResultInfo } from "../generated/api";
 import type { Project } from "../generated/api";
-import { panelsStore } from "../panels/store";
+import { panelsStore } from "../store/panels";
 import { useWorkspace, workspaceStore } from "../store/project";
-import { CHECK_DELAY_MS } from "../st/useLiveCheck";
+import { CHECK_DELAY_MS } from "../store/useLiveCheck";
 import { resultKey, testsStore, useTests } from "./store";
 
 /** Opens a test file in the editor at a line. */

@@ -10,7 +10,7 @@ import { memberCompletions, stCompletions, type StCompletions } from "../st/comp
 import { structTypes } from "../st/members";
 import { tokenize } from "../st/language";
 import { declaredSymbols, workingLibrary } from "../st/scope";
-import { CHECK_DELAY_MS } from "../st/useLiveCheck";
+import { CHECK_DELAY_MS } from "../store/useLiveCheck";
 import { useWorkspace } from "../store/project";
 import { testsApi, type TestsApi } from "./api";
 import { IEC } from "../generated/iec";

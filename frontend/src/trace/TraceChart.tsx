@@ -5,7 +5,7 @@
 import { useEffect, useEffectEvent, useRef, useState } from "react";
 import uPlot from "uplot";
 import "uplot/dist/uPlot.min.css";
-import { usePanels } from "../panels/store";
+import { usePanels } from "../store/panels";
 import { chartData, legendValue, LANE, type ChartData } from "./chartData";
 import type { Kind } from "./csv";
 import type { SampleRing } from "./ring";

@@ -3,7 +3,7 @@
 // samples stream in and show as a chart (or a table), Export CSV saves them.
 import { lazy, Suspense, useEffect, useMemo, useState, type FormEvent } from "react";
 import { projectApi } from "../api/client";
-import { downloadText } from "../interchange/download";
+import { downloadText } from "../ui/download";
 import { pathKey } from "../online/monitor";
 import { onlineStore, useOnline } from "../online/store";
 import { useWorkspace } from "../store/project";

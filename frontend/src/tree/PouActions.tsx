@@ -1,7 +1,7 @@
 // The project tree's menu of a POU: rename (everywhere, with a preview), duplicate, change the kind of an
 // empty POU, delete (listing what refers to it). Each is one undoable step of the working copy
 // (workspace store's applyOperation); nothing is saved until the user saves.
-import { useEffect, useMemo, useState, type FormEvent, type ReactNode } from "react";
+import { useEffect, useMemo, useState, type FormEvent } from "react";
 import type { Reference } from "../generated/api";
 import type { Pou, Project } from "../generated/api";
 import { cfcToFbd, fbdToCfc } from "../fbd/convert";
@@ -9,7 +9,7 @@ import { networksOf, nodesOf, type FbdBody, type FbdNetwork } from "../fbd/model
 import { fetchChartOrder, fetchOrder } from "../fbd/useOrder";
 import { onlineStore } from "../online/store";
 import { debugStore } from "../debug/store";
-import { renamedPou } from "../debug/follow";
+import { renamedPou } from "../breakpointPlaces/follow";
 import {
   changedParts,
   describeReference,
@@ -21,6 +21,7 @@ import {
 } from "./refactor";
 import { emptyDeclarations, workspaceStore } from "../store/project";
 import { FormError } from "../ui/FormError";
+import { Dialog, DialogFooter, TreeActions, type MenuEntry } from "../ui/TreeActions";
 import { copyName } from "../iec/identifier";
 
 type Action = "rename" | "duplicate" | "kind" | "convert" | "delete";
@@ -40,18 +41,6 @@ export const KIND_HELP: Record<Pou["kind"], { label: string; help: string }> = {
 };
 
 const message = (err: unknown) => (err instanceof Error ? err.message : String(err));
-
-/** A modal dialog of the project tree's menus (Escape closes it). */
-export function Dialog({ title, children, onClose }: { title: string; children: ReactNode; onClose(): void }) {
-  return (
-    <div className="ld-dialog-backdrop" onKeyDown={(e) => e.key === "Escape" && onClose()}>
-      <div className="ld-dialog project-dialog" role="dialog" aria-label={title}>
-        <h2>{title}</h2>
-        {children}
-      </div>
-    </div>
-  );
-}
 
 function ReferenceList({ references, empty }: { references: Reference[]; empty: string }) {
   if (!references.length) return <p className="tree-empty">{empty}</p>;
@@ -337,78 +326,6 @@ export function KindPicker({ kind, onChange }: { kind: Pou["kind"]; onChange(kin
         ))}
       </select>
       <p className="kind-help">{KIND_HELP[kind].help}</p>
-    </>
-  );
-}
-
-/** One entry of a tree item's menu: the action it opens, its label, and why it is disabled (if it is). */
-export interface MenuEntry<A extends string> {
-  action: A;
-  label: string;
-  disabledBecause?: string;
-}
-
-/** The "⋯" button of an item of the project tree (a POU, a test file) and its menu; a chosen entry opens the
- * dialog `dialog` returns for it, which calls `close` when done. */
-export function TreeActions<A extends string>({
-  item,
-  entries,
-  dialog,
-}: {
-  item: string;
-  entries: readonly MenuEntry<A>[];
-  dialog(action: A, close: () => void): ReactNode;
-}) {
-  const [menu, setMenu] = useState(false);
-  const [action, setAction] = useState<A | null>(null);
-  const close = () => setAction(null);
-  return (
-    <span className="tree-actions">
-      <button
-        type="button"
-        className="tree-actions-button"
-        aria-label={`Actions for ${item}`}
-        aria-haspopup="menu"
-        aria-expanded={menu}
-        onClick={() => setMenu((m) => !m)}
-      >
-        ⋯
-      </button>
-      {menu ? (
-        <div className="tree-menu" role="menu" aria-label={`${item} actions`}>
-          {entries.map((entry) => (
-            <button
-              key={entry.action}
-              type="button"
-              role="menuitem"
-              disabled={entry.disabledBecause !== undefined}
-              title={entry.disabledBecause}
-              onClick={() => {
-                setMenu(false);
-                setAction(entry.action);
-              }}
-            >
-              {entry.label}
-            </button>
-          ))}
-        </div>
-      ) : null}
-      {action !== null ? dialog(action, close) : null}
-    </span>
-  );
-}
-
-/** The end of a dialog's form: the error of the last attempt (if any), the submit button and Cancel. */
-export function DialogFooter({ error, submit, onClose }: { error: string | null; submit: string; onClose(): void }) {
-  return (
-    <>
-      <FormError error={error} />
-      <div className="dialog-buttons">
-        <button type="submit">{submit}</button>
-        <button type="button" onClick={onClose}>
-          Cancel
-        </button>
-      </div>
     </>
   );
 }

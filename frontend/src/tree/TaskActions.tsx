@@ -2,7 +2,8 @@
 // names), delete it. Each is one undoable step (nothing else names a task, so only the tasks change); the
 // duplicate and delete dialogs are the POUs' (PouActions).
 import { useMemo, useState, type FormEvent } from "react";
-import { DeleteDialog, Dialog, DialogFooter, DuplicateDialog, TreeActions, type ItemOperations } from "./PouActions";
+import { Dialog, DialogFooter, TreeActions } from "../ui/TreeActions";
+import { DeleteDialog, DuplicateDialog, type ItemOperations } from "./PouActions";
 import { workspaceStore } from "../store/project";
 import { duplicateTask, renameTask, runsOf, taskCopyName, withoutTask } from "../store/tasks";
 

@@ -2,11 +2,12 @@
 // everywhere, duplicate it, delete it (listing every variable, STRUCT member, other type and FB pin that uses
 // it, by POU and line). Each is one undoable step; the dialogs are the POUs' (PouActions).
 import { useMemo } from "react";
-import { DeleteDialog, DuplicateDialog, RenameDialog, TreeActions, type ItemOperations } from "./PouActions";
+import { TreeActions } from "../ui/TreeActions";
+import { DeleteDialog, DuplicateDialog, RenameDialog, type ItemOperations } from "./PouActions";
 import { typeReferences } from "./refactor";
 import { typeCopyName, typeRows, withoutTypeIn, withTypeCopyIn } from "../store/types";
 import { workspaceStore } from "../store/project";
-import { panelsStore } from "../panels/store";
+import { panelsStore } from "../store/panels";
 
 const TYPES = ["part:types"];
 

@@ -13,6 +13,7 @@ import {
   Keyboard,
   LayoutGrid,
   ListEnd,
+  Maximize,
   ListOrdered,
   ListPlus,
   ListStart,
@@ -143,5 +144,6 @@ export const COMMAND_ICONS: Readonly<Record<string, Icon>> = {
   redo: Redo2,
   "zoom-in": ZoomIn,
   "zoom-out": ZoomOut,
+  "zoom-fit": Maximize,
   shortcuts: Keyboard,
 };

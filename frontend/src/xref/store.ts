@@ -3,7 +3,7 @@
 import { useStore } from "zustand";
 import { createStore, type StoreApi } from "zustand/vanilla";
 import type { XrefEntry, XrefList } from "../generated/api";
-import { panelsStore } from "../panels/store";
+import { panelsStore } from "../store/panels";
 import { workspaceStore } from "../store/project";
 import { getXref } from "./api";
 import { entryKey, entryOf, rootOf } from "./model";

@@ -13,31 +13,23 @@ import "./fbd.css";
 import { COMMAND_ICONS } from "../../ui/icons";
 import { ToolButton } from "../../ui/ToolButton";
 import type { Connection } from "@xyflow/react";
-import {
-  useCallback,
-  useEffect,
-  useMemo,
-  useRef,
-  useState,
-  type KeyboardEvent,
-  type MouseEvent,
-  type ReactNode,
-} from "react";
+import { useCallback, useEffect, useMemo, useReducer, useRef, type MouseEvent, type ReactNode } from "react";
 import type { Diagnostic, FbdOrder, LibraryEntry, SymbolInfo } from "../../generated/api";
 import { BoxPicker } from "../../ld/editor/BoxPicker";
-import { MenuList, type MenuItem } from "../../ld/editor/ContextMenu";
-import { concrete, instanceName, symbolNames, undeclared, type VariableDeclaration } from "../../ld/editor/declare";
+import { MenuList, type MenuItem } from "../../ui/MenuList";
+import { instanceName, symbolNames, type VariableDeclaration } from "../../ld/editor/declare";
 import { EditorNotices } from "../../ld/editor/EditorNotices";
-import type { LdOnlineActions } from "../../ld/editor/LdEditor";
-import { OperandEditor } from "../../ld/editor/OperandEditor";
-import { clipboardActions, type LastClip } from "../../ld/editor/systemClipboard";
-import { OperandValuePrompt, type ValueRequest } from "../../ld/editor/ValuePrompt";
+import type { LdOnlineActions } from "../../online/operandCommands";
+import { OperandEditor } from "../../ui/OperandEditor";
+import type { LastClip } from "../../ui/systemClipboard";
+import { useEditorRoot, type KeyHandlers } from "../../ui/useEditorRoot";
+import { OperandValuePrompt, type ValueRequest } from "../../online/ValuePrompt";
 import { onlineOperandItems } from "../../online/operandCommands";
 import { referencesItem } from "../../xref/store";
 import { canRedo, canUndo, record, redo, undo, type History } from "../../store/history";
 
-import { clipOf, parseClip, pasteClip, serializeClip } from "../clipboard";
-import { outputType, refusal } from "../compat";
+import { parseClip, pasteClip, serializeClip } from "../clipboard";
+import { refusal } from "../compat";
 import {
   findNode,
   kindOf,
@@ -45,7 +37,6 @@ import {
   nextInput,
   nodePins,
   nodesOf,
-  wireKey,
   wiresOf,
   type Block,
   type FbdBody,
@@ -61,8 +52,25 @@ import { feedbackPins, moveInOrder, orderByDataFlow, orderNumbers, ordered } fro
 import { fetchChartOrder, fetchOrder, useEvaluationOrder } from "../useOrder";
 import { FbdEditorContext, type FbdEditorApi, type NodeView } from "./context";
 import { pinOfHandle } from "./FbdNodeView";
-import { DRAG_FORMAT, NetworkCanvas, type NetworkSelection } from "./NetworkCanvas";
-import { dispatchKey, keysOf, type CommandOf } from "../../keys/keymap";
+import { DRAG_FORMAT, NetworkCanvas } from "./NetworkCanvas";
+import {
+  breakpointTarget,
+  clipOfSelection,
+  declareOffer,
+  deletion,
+  fbdEditorReducer,
+  INITIAL_STATE,
+  instancesOf,
+  nodeChanged,
+  nodeVariable,
+  pinOperand,
+  revealPending,
+  selectedNetworkIndex,
+  singleNode,
+  targetNetwork as targetNetworkOf,
+  type FbdEditorState,
+} from "./editorState";
+import { keysOf, type CommandOf } from "../../keys/keymap";
 import { ShortcutHelp } from "../../keys/ShortcutHelp";
 
 /** A toolbar tooltip: the action and its key from the keymap. */
@@ -109,7 +117,6 @@ export interface FbdEditorProps {
   dataFlowOf?(network: FbdNetwork): Promise<FbdOrder>;
 }
 
-type Selection = NetworkSelection & { network: string };
 type PaletteKind =
   "input" | "output" | "block" | "jump" | "label" | "return" | "connector" | "continuation" | "comment";
 
@@ -170,30 +177,23 @@ export function FbdEditor({
 }: FbdEditorProps) {
   const body = history.present;
   const root = useRef<HTMLDivElement>(null);
-  const [selection, setSelection] = useState<Selection | null>(null);
-  const [networkSelected, setNetworkSelected] = useState<string | null>(null);
-  const [editing, setEditing] = useState<string | null>(null);
-  const [networkText, setNetworkText] = useState<{ network: string; field: "label" | "comment" } | null>(null);
-  const [picker, setPicker] = useState<{ network: string | null; pos: Position | null } | null>(null);
-  const [menu, setMenu] = useState<{ x: number; y: number; groups: MenuItem[][] } | null>(null);
-  const [message, setMessage] = useState<string | null>(null);
-  const [offer, setOffer] = useState<VariableDeclaration | null>(null);
-  const [valuePrompt, setValuePrompt] = useState<ValueRequest | null>(null);
-  const [help, setHelp] = useState(false);
+  const [state, dispatch] = useReducer(fbdEditorReducer, INITIAL_STATE);
+  const { selection, networkSelected, editing, networkText, picker, menu, message, offer, valuePrompt, help, near } =
+    state;
+  const setMessage = (text: string | null) => dispatch({ type: "message", text });
+  const setEditing = (id: string | null) => dispatch({ type: "edit", id });
+  const setNetworkText = (text: FbdEditorState["networkText"]) => dispatch({ type: "networkText", text });
+  const setPicker = (at: FbdEditorState["picker"]) => dispatch({ type: "picker", at });
+  const setOffer = (next: VariableDeclaration | null) => dispatch({ type: "offer", offer: next });
+  const setValuePrompt = (request: ValueRequest | null) => dispatch({ type: "valuePrompt", request });
 
   const byName = useMemo(() => new Map(library.map((e) => [e.name.toUpperCase(), e])), [library]);
   const lookup = useCallback((call: string) => byName.get(call.toUpperCase()), [byName]);
   const known = useMemo(() => symbolNames(symbols), [symbols]);
-  const [near, setNear] = useState<ReadonlySet<string>>(new Set());
-  const onNear = useCallback((network: string, isNear: boolean) => {
-    setNear((current) => {
-      if (current.has(network) === isNear) return current;
-      const next = new Set(current);
-      if (isNear) next.add(network);
-      else next.delete(network);
-      return next;
-    });
-  }, []);
+  const onNear = useCallback(
+    (network: string, isNear: boolean) => dispatch({ type: "near", network, near: isNear }),
+    [],
+  );
   useEffect(() => {
     onVisibleChange?.([...near]);
   }, [near, onVisibleChange]);
@@ -220,30 +220,14 @@ export function FbdEditor({
 
   const apply = useCallback(
     (result: ops.EditResult) => {
-      if (!result.ok) {
-        setMessage(result.error);
-        return false;
-      }
-      setMessage(null);
-      onHistoryChange(record(history, result.body));
-      const [first] = result.select;
-      const network =
-        first && networksOf(result.body).find((n) => n.id === first || nodesOf(n).some((node) => node.id === first));
-      if (network && network.id === first) {
-        setSelection(null);
-        setNetworkSelected(network.id);
-      } else if (network) {
-        setSelection({ network: network.id, nodes: result.select, edges: [] });
-        setNetworkSelected(null);
-      }
-      return true;
+      if (result.ok) onHistoryChange(record(history, result.body));
+      dispatch({ type: "edited", result });
+      return result.ok;
     },
     [history, onHistoryChange],
   );
 
-  /** The network new things go into: the selected one, else the last. */
-  const targetNetwork = (): string | null =>
-    selection?.network ?? networkSelected ?? networks[networks.length - 1]?.id ?? null;
+  const targetNetwork = () => targetNetworkOf(state, body);
 
   /** A free spot in the column new nodes of `kind` go to: below what is there. */
   const freeSpot = (network: FbdNetwork, kind: PaletteKind): Position => {
@@ -279,14 +263,7 @@ export function FbdEditor({
     const at = picker;
     setPicker(null);
     root.current?.focus();
-    const used = new Set([
-      ...known,
-      ...networks.flatMap((n) =>
-        nodesOf(n).flatMap((node) =>
-          kindOf(node) === "block" && (node as Block).instance ? [(node as Block).instance!.toUpperCase()] : [],
-        ),
-      ),
-    ]);
+    const used = new Set([...known, ...instancesOf(body)]);
     const instance = entry.kind === "function_block" ? instanceName(entry.name, used) : null;
     const result = addNode(
       { type: "block", call: entry.name, instance, en },
@@ -296,28 +273,6 @@ export function FbdEditor({
     if (result?.ok && instance && onDeclareVariable) setOffer({ name: instance, type: entry.name });
   };
 
-  /** The type to offer for a new variable typed into node `id`. */
-  const guessType = (next: FbdBody, id: string): string => {
-    const at = findNode(next, id);
-    if (!at) return "BOOL";
-    const { network, node } = at;
-    if (kindOf(node) === "block") return (node as Block).call;
-    if (kindOf(node) === "output") {
-      if (((node as { mode?: OutputMode }).mode ?? "normal") !== "normal") return "BOOL";
-      const feed = wiresOf(network).find((w) => w.to.node === id);
-      const type = feed ? outputType(network, feed.from, lookup, symbols) : undefined;
-      return type ? concrete(type === "ANY_LITERAL_INT" ? "ANY_INT" : type) : "BOOL";
-    }
-    const use = wiresOf(network).find((w) => w.from.node === id);
-    const consumer = use && nodesOf(network).find((n) => n.id === use.to.node);
-    const pin =
-      consumer &&
-      nodePins(consumer, network, lookup, symbols).inputs.find(
-        (p) => p.name.toUpperCase() === use.to.pin.toUpperCase(),
-      );
-    return pin?.type ? concrete(pin.type) : "BOOL";
-  };
-
   const commitEdit = (id: string, text: string) => {
     setEditing(null);
     root.current?.focus();
@@ -325,33 +280,23 @@ export function FbdEditor({
     if (!at) return;
     const result = ops.setNodeText(body, id, text);
     if (!result.ok) return void setMessage(result.error);
-    const kind = kindOf(at.node);
-    const changed = JSON.stringify(findNode(result.body, id)?.node) !== JSON.stringify(at.node);
-    if (changed) apply(result);
-    const name = kind === "input" || kind === "output" || kind === "block" ? undeclared(text, known) : null;
-    setOffer(name && onDeclareVariable ? { name, type: guessType(result.body, id) } : null);
+    if (nodeChanged(body, result.body, id)) apply(result);
+    const declaration = declareOffer(result.body, id, text, known, lookup, symbols);
+    setOffer(declaration && onDeclareVariable ? declaration : null);
   };
 
   const selectedNodes = selection?.nodes ?? [];
   const deleteSelection = () => {
-    if (locked) return;
-    if (selection && (selection.nodes.length || selection.edges.length)) {
-      const network = networks.find((n) => n.id === selection.network);
-      const cut = network ? wiresOf(network).filter((w) => selection.edges.includes(wireKey(w))) : [];
-      const withoutWires = cut.length
-        ? ops.disconnect(body, selection.network, cut)
-        : ({ ok: true, body, select: [] } as ops.EditResult);
-      if (withoutWires.ok) apply(ops.deleteNodes(withoutWires.body, selection.nodes));
-      setSelection(null);
-    } else if (networkSelected) apply(ops.deleteNetworks(body, [networkSelected]));
+    const result = locked ? null : deletion(state, body);
+    if (!result) return;
+    if (apply(result) && selection) dispatch({ type: "select", selection: null });
   };
 
   const take = (cut: boolean): string | null => {
-    const network = selection && networks.find((n) => n.id === selection.network);
-    if (!network || !selection?.nodes.length) return null;
-    const text = serializeClip(clipOf(network, selection.nodes));
-    if (cut && !locked) apply(ops.deleteNodes(body, selection.nodes));
-    return text;
+    const clip = clipOfSelection(state, body);
+    if (!clip) return null;
+    if (cut && !locked) apply(ops.deleteNodes(body, selection!.nodes));
+    return serializeClip(clip);
   };
   const pasteText = (text: string | null) => {
     const clip = text ? parseClip(text) : null;
@@ -360,10 +305,14 @@ export function FbdEditor({
     if (!network) return void setMessage("Add a network to paste into.");
     apply(pasteClip(body, network, clip));
   };
-  const clipboard = clipboardActions(
-    { take, paste: pasteText, isClip: (text) => parseClip(text) !== null, locked },
-    lastClip,
-  );
+  const editor = useEditorRoot({
+    root,
+    scope: "fbd",
+    handlers: () => keyActions,
+    busy: editing !== null || picker !== null || networkText !== null,
+    clipboard: { take, paste: pasteText, isClip: (text) => parseClip(text) !== null, locked },
+    last: lastClip,
+  });
 
   const reorder = (delta: -1 | 1) => {
     const id = selectedNodes[0];
@@ -395,10 +344,13 @@ export function FbdEditor({
     event.preventDefault();
     event.stopPropagation();
     const box = root.current?.getBoundingClientRect();
-    setMenu({
-      x: event.clientX - (box?.left ?? 0),
-      y: event.clientY - (box?.top ?? 0),
-      groups: groups.filter((g) => g.length),
+    dispatch({
+      type: "menu",
+      menu: {
+        x: event.clientX - (box?.left ?? 0),
+        y: event.clientY - (box?.top ?? 0),
+        groups: groups.filter((g) => g.length),
+      },
     });
   };
 
@@ -408,7 +360,8 @@ export function FbdEditor({
   };
 
   const nodeMenu = (network: string, node: FbdNode, event: MouseEvent) => {
-    if (!selectedNodes.includes(node.id)) setSelection({ network, nodes: [node.id], edges: [] });
+    if (!selectedNodes.includes(node.id))
+      dispatch({ type: "select", selection: { network, nodes: [node.id], edges: [] } });
     const kind = kindOf(node);
     const net = networks.find((n) => n.id === network)!;
     const edit: MenuItem[] = locked
@@ -465,7 +418,7 @@ export function FbdEditor({
         ]
       : [];
     const clip: MenuItem[] = [
-      { id: "copy", label: "Copy", keys: keysOf("fbd", "copy"), run: () => clipboard.copy(false) },
+      { id: "copy", label: "Copy", keys: keysOf("fbd", "copy"), run: () => editor.copy(false) },
       ...(locked
         ? []
         : [
@@ -478,9 +431,15 @@ export function FbdEditor({
           ]),
     ];
     const operand = operandOf(node);
-    const named = operand ?? (kind === "block" ? (node as Block).instance?.trim() || null : null);
+    const named = nodeVariable(node);
     const references: MenuItem[] = named ? [referencesItem(named)] : [];
-    openMenu(event, [onlineItems(operand), edit, order, debugItems, references, clip]);
+    // The declare dialog again (after Escape, or for a name pasted in): the node's undeclared variable.
+    const offered =
+      named && onDeclareVariable && !locked ? declareOffer(body, node.id, named, known, lookup, symbols) : null;
+    const declare: MenuItem[] = offered
+      ? [{ id: "declare", label: `Declare ${offered.name}…`, run: () => setOffer(offered) }]
+      : [];
+    openMenu(event, [onlineItems(operand), edit, declare, order, debugItems, references, clip]);
   };
 
   const pinMenu = (node: FbdNode, pin: string, side: "in" | "out", event: MouseEvent) => {
@@ -541,24 +500,6 @@ export function FbdEditor({
     if (onlineActions && operand && !onlineActions.prepare(operand, undefined, type))
       setValuePrompt({ operand, action: "prepare" });
   };
-  /** The variable behind a block pin: the FB instance's pin, or the input node wired to it. */
-  const pinOperand = (block: Block, side: "in" | "out", pin: string): string | null => {
-    const entry = lookup(block.call);
-    const declared = entry
-      ? [...entry.inputs, ...entry.in_outs, ...entry.outputs].some((p) => p.name.toUpperCase() === pin.toUpperCase())
-      : false;
-    if (entry?.kind === "function_block" && block.instance?.trim() && declared)
-      return `${block.instance.trim()}.${pin}`;
-    const network = findNode(body, block.id)?.network;
-    const wire =
-      side === "in"
-        ? network &&
-          wiresOf(network).find((w) => w.to.node === block.id && w.to.pin.toUpperCase() === pin.toUpperCase())
-        : undefined;
-    const source = wire && network ? nodesOf(network).find((n) => n.id === wire.from.node) : undefined;
-    return source && kindOf(source) === "input" ? operandOf(source) : null;
-  };
-
   const api: FbdEditorApi = {
     readOnly: locked,
     symbols,
@@ -577,7 +518,7 @@ export function FbdEditor({
       const network = findNode(body, node.id)?.network;
       const pins = network ? nodePins(node, network, lookup, symbols) : null;
       const type = (side === "in" ? pins?.inputs : pins?.outputs)?.find((p) => p.name === pin)?.type;
-      prepare(pinOperand(node as Block, side, pin), type);
+      prepare(pinOperand(body, node as Block, side, pin, lookup), type);
     },
   };
 
@@ -586,24 +527,7 @@ export function FbdEditor({
       network: string,
       nodes: readonly { id: string; selected: boolean }[],
       edges: readonly { id: string; selected: boolean }[],
-    ) => {
-      setSelection((current) => {
-        const base = current?.network === network ? current : { network, nodes: [], edges: [] };
-        const nextNodes = new Set(base.nodes);
-        const nextEdges = new Set(base.edges);
-        for (const c of nodes) {
-          if (c.selected) nextNodes.add(c.id);
-          else nextNodes.delete(c.id);
-        }
-        for (const c of edges) {
-          if (c.selected) nextEdges.add(c.id);
-          else nextEdges.delete(c.id);
-        }
-        if (!nextNodes.size && !nextEdges.size) return current?.network === network ? null : current; // another network's canvas letting go
-        return { network, nodes: [...nextNodes], edges: [...nextEdges] };
-      });
-      if (nodes.some((c) => c.selected) || edges.some((c) => c.selected)) setNetworkSelected(null);
-    },
+    ) => dispatch({ type: "selectChanges", network, nodes, edges }),
     [],
   );
 
@@ -641,23 +565,9 @@ export function FbdEditor({
   // arrives: later edits do not move the selection) and scrolls its network into view.
   const halted = debug?.halted;
   const haltKey = halted ? `${halted.network ?? ""}:${halted.element ?? ""}` : null;
-  const focusSeq = focus?.seq ?? null;
-  const [revealed, setRevealed] = useState<{ halt: string | null; focus: number | null; network: string | null }>({
-    halt: null,
-    focus: null,
-    network: null,
-  });
-  if (haltKey !== revealed.halt || focusSeq !== revealed.focus) {
-    const place = haltKey !== revealed.halt && halted ? halted : focusSeq !== revealed.focus ? focus : null;
-    const network = place
-      ? ((place.element ? findNode(body, place.element)?.network.id : place.network) ?? null)
-      : null;
-    if (place && network) {
-      if (place.element) setSelection({ network, nodes: [place.element], edges: [] });
-      else setNetworkSelected(network);
-    }
-    setRevealed({ halt: haltKey, focus: focusSeq, network });
-  }
+  if (revealPending(state, haltKey, focus?.seq ?? null))
+    dispatch({ type: "reveal", halt: { key: haltKey, place: halted }, focus, body });
+  const { revealed } = state;
   useEffect(() => {
     const network = revealed.network;
     if (network)
@@ -665,39 +575,25 @@ export function FbdEditor({
   }, [revealed]);
 
   /** What each FBD key does (src/keys/keymap.ts, scope "fbd"); false when it does not apply now. */
-  const keyActions: Record<CommandOf<"fbd">, () => boolean> = {
+  const keyActions: KeyHandlers<"fbd"> = {
     delete: () => (deleteSelection(), true),
-    // Copy, cut and paste arrive as clipboard events (below), which reach the system clipboard.
-    copy: () => false,
-    cut: () => false,
-    paste: () => false,
     undo: () => !locked && (onHistoryChange(undo(history)), true),
     redo: () => !locked && (onHistoryChange(redo(history)), true),
     "run-earlier": () => (reorder(-1), true),
     "run-later": () => (reorder(1), true),
-    "clear-selection": () => {
-      setSelection(null);
-      setNetworkSelected(null);
-      setMenu(null);
-      return true;
-    },
+    "clear-selection": () => (dispatch({ type: "clear" }), true),
     "toggle-breakpoint": () => {
-      const element = selectedNodes.length === 1 ? selectedNodes[0] : undefined;
-      const network = networkSelected ?? selection?.network;
-      if (!debug || (!element && !network)) return false;
-      debug.toggle(element ? { element } : { network: network! });
+      const target = breakpointTarget(state);
+      if (!debug || !target) return false;
+      debug.toggle(target);
       return true;
     },
+    "zoom-fit": () => (dispatch({ type: "fit" }), true),
   };
 
-  const onKeyDown = (event: KeyboardEvent<HTMLDivElement>) => {
-    if (editing || picker || networkText || (event.target as HTMLElement).closest("input, textarea, .ld-context-menu"))
-      return;
-    dispatchKey("fbd", event, keyActions);
-  };
-
-  const selectedBlock = selectedNodes.length === 1 ? findNode(body, selectedNodes[0]!)?.node : undefined;
-  const netIndex = networks.findIndex((n) => n.id === (networkSelected ?? selection?.network));
+  const single = singleNode(state);
+  const selectedBlock = single ? findNode(body, single)?.node : undefined;
+  const netIndex = selectedNetworkIndex(state, body);
   const tool = (id: string, label: string, run: () => void, enabled = !locked, keys?: string, hint?: string) => (
     <ToolButton
       icon={COMMAND_ICONS[id]!}
@@ -714,12 +610,9 @@ export function FbdEditor({
     <FbdEditorContext.Provider value={api}>
       <div
         className={`fbd-editor${locked ? " fbd-readonly" : ""}`}
-        ref={root}
-        tabIndex={0}
+        {...editor.rootProps}
         role="application"
         aria-label={chart ? "Continuous function chart editor" : "Function block diagram editor"}
-        onKeyDown={onKeyDown}
-        {...clipboard.events}
       >
         <div className="ld-toolbar fbd-toolbar" role="toolbar" aria-label="FBD editing">
           <div className="ld-toolbar-group fbd-palette" aria-label="Add (click, or drag onto a network)">
@@ -769,6 +662,14 @@ export function FbdEditor({
                 )
               : null}
             {tool("arrange", "Auto-arrange", autoArrange, !locked && networks.length > 0)}
+            {tool(
+              "zoom-fit",
+              "Zoom to fit",
+              () => dispatch({ type: "fit" }),
+              networks.length > 0,
+              keyed("zoom-fit"),
+              "Zoom every network so all its nodes show",
+            )}
             {tool("delete", "Delete", deleteSelection, !locked && (!!selection || !!networkSelected), keyed("delete"))}
           </div>
           {chart ? null : (
@@ -803,8 +704,8 @@ export function FbdEditor({
             </div>
           )}
           <div className="ld-toolbar-group">
-            {tool("copy", "Copy", () => clipboard.copy(false), selectedNodes.length > 0, keyed("copy"))}
-            {tool("paste", "Paste", clipboard.paste, !locked, keyed("paste"))}
+            {tool("copy", "Copy", () => editor.copy(false), selectedNodes.length > 0, keyed("copy"))}
+            {tool("paste", "Paste", editor.paste, !locked, keyed("paste"))}
             {tool("undo", "Undo", () => onHistoryChange(undo(history)), !locked && canUndo(history), keyed("undo"))}
             {tool("redo", "Redo", () => onHistoryChange(redo(history)), !locked && canRedo(history), keyed("redo"))}
           </div>
@@ -813,10 +714,10 @@ export function FbdEditor({
             label="Shortcuts"
             className="ld-help-button"
             aria-expanded={help}
-            onClick={() => setHelp((h) => !h)}
+            onClick={() => dispatch({ type: "help", open: "toggle" })}
           />
         </div>
-        {help ? <ShortcutHelp scopes={["fbd", "app"]} onClose={() => setHelp(false)} /> : null}
+        {help ? <ShortcutHelp scopes={["fbd", "app"]} onClose={() => dispatch({ type: "help", open: false })} /> : null}
         <EditorNotices
           readOnly={readOnly}
           readOnlyActions={readOnlyActions}
@@ -845,6 +746,7 @@ export function FbdEditor({
               breakpoint={debug?.networks.has(network.id) ?? false}
               halted={halted?.network === network.id}
               fallback={fallbacks.get(network.id)!}
+              fitRequest={state.fitRequest}
               height={heightOf(network)}
               overlay={
                 networkText?.network === network.id ? (
@@ -863,10 +765,7 @@ export function FbdEditor({
                 ) : null
               }
               onSelectChanges={onSelectChanges}
-              onSelectNetwork={(id) => {
-                setNetworkSelected(id);
-                setSelection(null);
-              }}
+              onSelectNetwork={(network) => dispatch({ type: "selectNetwork", network })}
               onToggleBreakpoint={(id) => debug?.toggle({ network: id })}
               onEditText={(id, field) => !locked && setNetworkText({ network: id, field })}
               onMove={(_id, positions) => {
@@ -893,7 +792,9 @@ export function FbdEditor({
         {networks.length === 0 ? (
           <p className="ld-empty-hint">This POU has no networks yet: add a node from the palette, or "Add network".</p>
         ) : null}
-        {menu ? <MenuList x={menu.x} y={menu.y} groups={menu.groups} onClose={() => setMenu(null)} /> : null}
+        {menu ? (
+          <MenuList x={menu.x} y={menu.y} groups={menu.groups} onClose={() => dispatch({ type: "menu", menu: null })} />
+        ) : null}
         {valuePrompt && onlineActions ? (
           <OperandValuePrompt
             request={valuePrompt}

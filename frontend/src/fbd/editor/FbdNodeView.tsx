@@ -4,7 +4,7 @@
 import { Handle, Position, type Node, type NodeProps } from "@xyflow/react";
 import type { Block, FbdComment, FbdNetwork, FbdNode, OutputMode, PinDef } from "../model";
 import { kindOf } from "../model";
-import { OperandEditor } from "../../ld/editor/OperandEditor";
+import { OperandEditor } from "../../ui/OperandEditor";
 import { pinKey } from "../../online/pinValues";
 import { shownOf, type ValueShown } from "../../online/shown";
 import { ValueTag } from "../../online/ValueTag";

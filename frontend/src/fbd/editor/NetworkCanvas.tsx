@@ -22,6 +22,7 @@ import { nodesOf, wireKey, wiresOf, type FbdNetwork, type FbdNode, type Position
 import { probeOf, type FbdOnlineView } from "../online";
 import { FbdNodeView, type FbdFlowNode } from "./FbdNodeView";
 import { OrthogonalEdge } from "./OrthogonalEdge";
+import { fitZoom } from "../../ui/zoom";
 
 export const DRAG_FORMAT = "application/x-ladderlab-fbd";
 const NODE_TYPES = { fbd: FbdNodeView };
@@ -31,6 +32,8 @@ const MIN_HEIGHT = 170;
 const ORIGIN = { x: 12, y: 16, zoom: 1 };
 const MAX_HEIGHT = 560;
 const CHART_HEIGHT = 420;
+const MIN_ZOOM = 0.25;
+const MAX_ZOOM = 2;
 
 export interface NetworkSelection {
   nodes: readonly string[];
@@ -75,6 +78,8 @@ export interface NetworkCanvasProps {
   onNear(network: string, near: boolean): void;
   /** Drawn for a printed document (src/print): always mounted, every node shown, no controls or grid. */
   print?: boolean;
+  /** Counts the editor's "Zoom to fit" requests: each new one fits every node into the canvas (0: none yet). */
+  fitRequest?: number;
 }
 
 /** Print: once the nodes are measured, zoom so the whole network fits the width, and say the height it needs. */
@@ -93,6 +98,20 @@ function usePrintFit(
     void flow.setViewport({ x: ORIGIN.x * zoom, y: ORIGIN.y * zoom, zoom });
     fit(Math.ceil((bounds.y + bounds.height + 2 * ORIGIN.y) * zoom));
   }, [print, initialized, flow, host, fit]);
+}
+
+/** The editor's "Zoom to fit" (toolbar, Ctrl+Shift+H): once measured, every node of the network in view (ui/zoom.ts). */
+function useFitRequest(request: number | undefined, host: React.RefObject<HTMLDivElement | null>) {
+  const flow = useReactFlow();
+  const initialized = useNodesInitialized();
+  useEffect(() => {
+    const view = host.current;
+    if (!request || !initialized || !view) return;
+    const bounds = flow.getNodesBounds(flow.getNodes());
+    const content = { width: bounds.width + 2 * ORIGIN.x, height: bounds.height + 2 * ORIGIN.y };
+    const zoom = fitZoom(content, { width: view.clientWidth, height: view.clientHeight }, MIN_ZOOM, MAX_ZOOM);
+    void flow.setViewport({ x: (ORIGIN.x - bounds.x) * zoom, y: (ORIGIN.y - bounds.y) * zoom, zoom });
+  }, [request, initialized, flow, host]);
 }
 
 /** The canvas height that shows every node of the network at zoom 1 (at most MAX_HEIGHT on screen). */
@@ -145,6 +164,7 @@ function Canvas(props: NetworkCanvasProps & { onPrintHeight(height: number): voi
   const flow = useReactFlow();
   const host = useRef<HTMLDivElement>(null);
   usePrintFit(props.print, host, props.onPrintHeight);
+  useFitRequest(props.fitRequest, host);
   const built = useMemo(
     (): FbdFlowNode[] =>
       nodesOf(network).map((node) => ({
@@ -273,8 +293,8 @@ function Canvas(props: NetworkCanvasProps & { onPrintHeight(height: number): voi
         preventScrolling={false}
         zoomActivationKeyCode="Control"
         defaultViewport={ORIGIN}
-        minZoom={0.25}
-        maxZoom={2}
+        minZoom={MIN_ZOOM}
+        maxZoom={MAX_ZOOM}
         proOptions={{ hideAttribution: true }}
       >
         {props.print ? null : <Background gap={20} size={1} />}

@@ -1,17 +1,8 @@
-// Right-click menu: the commands available for what was clicked, grouped like the toolbar.
-import { useEffect, useRef } from "react";
+// The LD right-click menu: the commands available for what was clicked, grouped like the toolbar (ui/MenuList).
+import { MenuList, type MenuItem } from "../../ui/MenuList";
 import { available, commandKeys, COMMANDS, type CommandContext, type CommandGroup } from "./commands";
 
 const GROUP_ORDER: CommandGroup[] = ["insert", "mode", "edit", "clipboard", "network", "history"];
-
-/** An item that is not an editor command (breakpoints; online: write, force, watch). */
-export interface MenuItem {
-  id: string;
-  label: string;
-  /** Its shortcut, shown like a command's. */
-  keys?: string;
-  run(): void;
-}
 
 export interface ContextMenuProps {
   x: number;
@@ -31,62 +22,4 @@ export function ContextMenu({ x, y, ctx, extra = [], onClose }: ContextMenuProps
     group.map((c): MenuItem => ({ id: c.id, label: c.label, keys: commandKeys(c), run: () => c.run(ctx!) })),
   );
   return <MenuList x={x} y={y} groups={extra.length ? [[...extra], ...items] : items} onClose={onClose} />;
-}
-
-/** A menu of grouped items at (x, y); closes on a click outside, Escape, or after running an item. */
-export function MenuList({
-  x,
-  y,
-  groups,
-  onClose,
-}: {
-  x: number;
-  y: number;
-  groups: readonly (readonly MenuItem[])[];
-  onClose(): void;
-}) {
-  const menu = useRef<HTMLUListElement>(null);
-  useEffect(() => {
-    menu.current?.querySelector<HTMLButtonElement>("button")?.focus();
-    const close = (e: MouseEvent) => {
-      if (!menu.current?.contains(e.target as Node)) onClose();
-    };
-    window.addEventListener("mousedown", close);
-    return () => window.removeEventListener("mousedown", close);
-  }, [onClose]);
-  const run = (item: MenuItem) => {
-    onClose();
-    item.run();
-  };
-  return (
-    <ul
-      ref={menu}
-      className="ld-context-menu"
-      role="menu"
-      style={{ left: x, top: y }}
-      onKeyDown={(e) => {
-        e.stopPropagation();
-        if (e.key === "Escape") onClose();
-        const items = [...(menu.current?.querySelectorAll<HTMLButtonElement>("button") ?? [])];
-        const at = items.indexOf(document.activeElement as HTMLButtonElement);
-        if (e.key === "ArrowDown") items[(at + 1) % items.length]?.focus();
-        if (e.key === "ArrowUp") items[(at - 1 + items.length) % items.length]?.focus();
-      }}
-    >
-      {groups.map((group, i) => (
-        <li key={group[0]?.id ?? i} role="none" className={i > 0 ? "ld-menu-group" : undefined}>
-          <ul role="none">
-            {group.map((item) => (
-              <li key={item.id} role="none">
-                <button type="button" role="menuitem" onClick={() => run(item)}>
-                  <span>{item.label}</span>
-                  {item.keys ? <kbd>{item.keys}</kbd> : null}
-                </button>
-              </li>
-            ))}
-          </ul>
-        </li>
-      ))}
-    </ul>
-  );
 }

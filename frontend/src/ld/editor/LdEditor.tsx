@@ -32,15 +32,18 @@ import {
   type CommandContext,
   type CommandGroup,
 } from "./commands";
-import { ContextMenu, type MenuItem } from "./ContextMenu";
+import { ContextMenu } from "./ContextMenu";
+import type { MenuItem } from "../../ui/MenuList";
 import { IlView } from "./IlView";
 import { declareOffer, instanceName, symbolNames, type VariableDeclaration } from "./declare";
 import { extend, navigate, type Direction } from "./navigation";
-import { OperandEditor } from "./OperandEditor";
+import { OperandEditor } from "../../ui/OperandEditor";
 import { setDraggedOperand } from "./dragOperand";
 import { EditorNotices } from "./EditorNotices";
-import { clipboardActions, type LastClip } from "./systemClipboard";
-import { OperandValuePrompt, type ValueRequest } from "./ValuePrompt";
+import type { LastClip } from "../../ui/systemClipboard";
+import { useEditorRoot, type KeyHandlers } from "../../ui/useEditorRoot";
+import { fitZoom, type ZoomStep } from "../../ui/zoom";
+import { OperandValuePrompt, type ValueRequest } from "../../online/ValuePrompt";
 import {
   clipOf,
   fieldLabel,
@@ -53,11 +56,10 @@ import {
   valueOperand,
   variableOf,
   type Editing,
-  type ZoomStep,
 } from "./editorState";
-import { onlineOperandItems } from "../../online/operandCommands";
+import { onlineOperandItems, type LdOnlineActions } from "../../online/operandCommands";
 import { referencesItem } from "../../xref/store";
-import { commandsFor, keysOf } from "../../keys/keymap";
+import { keysOf } from "../../keys/keymap";
 import { ShortcutHelp } from "../../keys/ShortcutHelp";
 import "../ld.css";
 import { Keyboard, ZoomIn, ZoomOut } from "lucide-react";
@@ -94,20 +96,6 @@ export interface LdDebugging {
   toggle(target: { network: string } | { element: string }): void;
 }
 
-/** What the diagram can ask of a running simulation, by operand text (the caller maps it to a path). */
-export interface LdOnlineActions {
-  /**
-   * Prepares a value (double-click, CODESYS): `text` when given, else a BOOL's prepared value toggles;
-   * false when the variable is not a BOOL and a value must be asked for. `type`: what the diagram
-   * knows of it (a contact's variable is a BOOL), for before its first value arrives.
-   */
-  prepare(operand: string, text?: string, type?: string): boolean;
-  write(operand: string, text: string): void;
-  force(operand: string, value: boolean | string): void;
-  unforce(operand: string): void;
-  watch(operand: string): void;
-}
-
 const TOOLBAR: { group: CommandGroup; ids: string[] }[] = [
   { group: "insert", ids: ["contact", "contact-nc", "coil", "compare", "box", "parallel", "jump", "return"] },
   { group: "edit", ids: ["cycle-mode", "toggle-en", "delete"] },
@@ -119,13 +107,19 @@ const TOOLBAR: { group: CommandGroup; ids: string[] }[] = [
   { group: "history", ids: ["undo", "redo"] },
 ];
 
-/** The keys of the LD scope that are not editing commands (COMMANDS): selection and breakpoints. */
-export const LD_EDITOR_KEYS = ["move-selection", "extend-selection", "clear-selection", "toggle-breakpoint"] as const;
+/** The keys of the LD scope that are not editing commands (COMMANDS): selection, breakpoints, zoom. */
+export const LD_EDITOR_KEYS = [
+  "move-selection",
+  "extend-selection",
+  "clear-selection",
+  "toggle-breakpoint",
+  "zoom-in",
+  "zoom-out",
+  "zoom-reset",
+  "zoom-fit",
+] as const;
 type LdEditorKey = (typeof LD_EDITOR_KEYS)[number];
 const CLIPBOARD_COMMANDS: ReadonlySet<string> = new Set(["copy", "cut", "paste"]);
-
-/** Ctrl + these keys zoom (as in browsers and CODESYS). */
-const ZOOM_KEYS: Record<string, ZoomStep> = { "+": "in", "=": "in", "-": "out", "0": "reset" };
 
 const NO_LIBRARY: readonly LibraryEntry[] = [];
 const NO_SYMBOLS: readonly SymbolInfo[] = [];
@@ -264,10 +258,15 @@ export function LdEditor({
     }
     return serializeClip(clip);
   };
-  const clipboard = clipboardActions(
-    { take, paste: pasteText, isClip: (text) => parseClip(text) !== null, locked: readOnly !== null },
-    lastClip,
-  );
+  const editor = useEditorRoot({
+    root,
+    scope: "ld",
+    handlers: (event) => keyHandlers(event),
+    busy: editing !== null || picker,
+    clipboard: { take, paste: pasteText, isClip: (text) => parseClip(text) !== null, locked: readOnly !== null },
+    last: lastClip,
+    onZoom: setZoom,
+  });
 
   const ctx: CommandContext = {
     body,
@@ -291,8 +290,8 @@ export function LdEditor({
     },
     openBoxPicker: () => setPicker(true),
     editNetwork,
-    copy: clipboard.copy,
-    paste: clipboard.paste,
+    copy: editor.copy,
+    paste: editor.paste,
   };
 
   const pickBox = (entry: LibraryEntry, en: boolean) => {
@@ -405,8 +404,16 @@ export function LdEditor({
     return network ? { network } : null;
   };
 
+  /** Zoom so the whole diagram fits the scroller (ui/zoom.ts). */
+  const fit = () => {
+    const view = root.current?.querySelector(".ld-scroller");
+    if (!view) return false;
+    dispatch({ type: "zoomTo", zoom: fitZoom(layout, { width: view.clientWidth, height: view.clientHeight }) });
+    return true;
+  };
+
   /** The editor's keys besides its commands (src/keys/keymap.ts, scope "ld"); each says whether it acted. */
-  const keyActions = (event: KeyboardEvent<HTMLDivElement>): Record<LdEditorKey, () => boolean> => ({
+  const keyActions = (event: KeyboardEvent<HTMLElement>): Record<LdEditorKey, () => boolean> => ({
     "move-selection": () => {
       selectAndReveal(navigate(body, layout, liveSelection, ARROWS[event.key]!), body);
       return true;
@@ -428,42 +435,19 @@ export function LdEditor({
       if (target) debugging!.toggle(target);
       return debugging !== undefined;
     },
+    "zoom-in": () => (setZoom("in"), true),
+    "zoom-out": () => (setZoom("out"), true),
+    "zoom-reset": () => (setZoom("reset"), true),
+    "zoom-fit": fit,
   });
-
-  // Ctrl+wheel zooms the diagram, not the page: a native listener, since React's wheel listeners are
-  // passive and cannot stop the browser's page zoom.
-  useEffect(() => {
-    const editor = root.current;
-    if (!editor) return;
-    const onWheel = (event: WheelEvent) => {
-      if (!event.ctrlKey || event.deltaY === 0) return;
-      event.preventDefault();
-      dispatch({ type: "zoom", step: event.deltaY < 0 ? "in" : "out" });
-    };
-    editor.addEventListener("wheel", onWheel, { passive: false });
-    return () => editor.removeEventListener("wheel", onWheel);
-  }, []);
-
-  const onKeyDown = (event: KeyboardEvent<HTMLDivElement>) => {
-    if (editing || picker || (event.target as HTMLElement).closest("input, textarea, .ld-context-menu")) return;
-    const zoomTo = event.ctrlKey && !event.altKey ? ZOOM_KEYS[event.key] : undefined;
-    if (zoomTo) {
-      event.preventDefault(); // not the browser's page zoom
-      setZoom(zoomTo);
-      return;
-    }
-    const actions = keyActions(event);
-    for (const id of commandsFor("ld", event)) {
-      // Copy, cut and paste arrive as clipboard events (below), which reach the system clipboard.
-      if (CLIPBOARD_COMMANDS.has(id)) return;
-      const command = id in actions ? null : COMMANDS.find((c) => c.id === id);
-      const done = command ? available(command, ctx) && (command.run(ctx), true) : actions[id as LdEditorKey]();
-      if (done) {
-        event.preventDefault();
-        return;
-      }
-    }
-  };
+  /** Every LD key: the editing commands (when available) and the editor's own keys. */
+  function keyHandlers(event: KeyboardEvent<HTMLElement>): KeyHandlers<"ld"> {
+    const commands = COMMANDS.filter((c) => !CLIPBOARD_COMMANDS.has(c.id)).map((c) => [
+      c.id,
+      () => available(c, ctx) && (c.run(ctx), true),
+    ]);
+    return { ...Object.fromEntries(commands), ...keyActions(event) } as KeyHandlers<"ld">;
+  }
 
   /** The items of the context menu besides the editing commands: breakpoints, online commands on the selected element's variable. */
   const extraItems = (): MenuItem[] => {
@@ -549,12 +533,9 @@ export function LdEditor({
   return (
     <div
       className={`ld-editor${readOnly ? " ld-readonly" : ""}`}
-      ref={root}
-      tabIndex={0}
+      {...editor.rootProps}
       role="application"
       aria-label="Ladder diagram editor"
-      onKeyDown={onKeyDown}
-      {...clipboard.events}
       onMouseDown={(e) => {
         if (e.target === e.currentTarget || (e.target as HTMLElement).classList.contains("ld-canvas")) select(null);
       }}
@@ -584,6 +565,13 @@ export function LdEditor({
             {Math.round(zoom * 100)}%
           </button>
           <ToolButton icon={ZoomIn} label="Zoom in" keys="Ctrl++ or Ctrl+wheel" onClick={() => setZoom("in")} />
+          <ToolButton
+            icon={COMMAND_ICONS["zoom-fit"]!}
+            label="Zoom to fit"
+            keys={keysOf("ld", "zoom-fit")}
+            onMouseDown={(e) => e.preventDefault()}
+            onClick={fit}
+          />
         </div>
         <ToolButton
           icon={Keyboard}

@@ -12,7 +12,6 @@ import {
   operandText,
   pastePlace,
   valueOperand,
-  zoomed,
   type LdEditorState,
 } from "./editorState";
 
@@ -126,15 +125,11 @@ describe("LD editor state: overlays and zoom", () => {
     expect(reduce(open, { type: "help", open: "toggle" }).help).toBe(false);
   });
 
-  it("zooms in 10 % steps between 50 % and 200 %, and back to 100 %", () => {
-    expect(zoomed(1, "in")).toBe(1.1);
-    expect(zoomed(1, "out")).toBe(0.9);
-    expect(zoomed(0.5, "out")).toBe(0.5);
-    expect(zoomed(2, "in")).toBe(2);
-    expect(zoomed(1.7, "reset")).toBe(1);
-    let zoom = 1;
-    for (let i = 0; i < 7; i++) zoom = zoomed(zoom, "in");
-    expect(zoom).toBe(1.7); // no float drift (0.1 seven times)
+  it("zooms by the keys' steps and to a fitted zoom", () => {
+    const fitted = run({ type: "zoom", step: "in" }, { type: "zoomTo", zoom: 0.73 });
+    expect(fitted.zoom).toBe(0.73);
+    expect(reduce(fitted, { type: "zoom", step: "in" }).zoom).toBe(0.8);
+    expect(reduce(fitted, { type: "zoom", step: "reset" }).zoom).toBe(1);
   });
 });
 

@@ -11,7 +11,8 @@ import type { EditResult, OperandField } from "../ops";
 import type { Selection } from "../view/types";
 import { selectedNetwork } from "./commands";
 import type { VariableDeclaration } from "./declare";
-import type { ValueRequest } from "./ValuePrompt";
+import type { ValueRequest } from "../../online/ValuePrompt";
+import { zoomed, type ZoomStep } from "../../ui/zoom";
 
 export type Editing =
   | { kind: "operand"; id: string; field: OperandField; x: number; y: number }
@@ -63,8 +64,6 @@ export const INITIAL_STATE: LdEditorState = {
   focusSeen: null,
 };
 
-export type ZoomStep = "in" | "out" | "reset";
-
 export type LdEditorAction =
   /** `anchor` undefined: the first selected element (none for a place or network). */
   | { type: "select"; selection: Selection | null; anchor?: string | null }
@@ -83,17 +82,10 @@ export type LdEditorAction =
   | { type: "dropping"; dropping: boolean }
   | { type: "help"; open: boolean | "toggle" }
   | { type: "zoom"; step: ZoomStep }
+  /** Fit: the zoom the editor measured (ui/zoom.ts fitZoom). */
+  | { type: "zoomTo"; zoom: number }
   | { type: "valuePrompt"; request: ValueRequest | null }
   | { type: "asIl"; network: string | null };
-
-/** Zoom steps of the diagram: 10 % from 50 % to 200 %, 100 % on reset. */
-export const ZOOM_MIN = 0.5;
-export const ZOOM_MAX = 2;
-export function zoomed(zoom: number, step: ZoomStep): number {
-  if (step === "reset") return 1;
-  const next = Math.round((zoom + (step === "in" ? 0.1 : -0.1)) * 10) / 10;
-  return Math.min(ZOOM_MAX, Math.max(ZOOM_MIN, next));
-}
 
 function select(state: LdEditorState, selection: Selection | null, anchor?: string | null): LdEditorState {
   const first = selection?.kind === "elements" ? selection.ids[0]! : null;
@@ -148,6 +140,8 @@ export function ldEditorReducer(state: LdEditorState, action: LdEditorAction): L
       return { ...state, help: action.open === "toggle" ? !state.help : action.open };
     case "zoom":
       return { ...state, zoom: zoomed(state.zoom, action.step) };
+    case "zoomTo":
+      return { ...state, zoom: action.zoom };
     case "valuePrompt":
       return { ...state, valuePrompt: action.request };
     case "asIl":

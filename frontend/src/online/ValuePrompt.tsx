@@ -1,7 +1,7 @@
 // A small dialog asking for a value to write or force (online mode); the text goes to the server
 // as typed (TRUE, 42, T#5s), which checks it against the variable's type.
 import { useState } from "react";
-import type { LdOnlineActions } from "./LdEditor";
+import type { LdOnlineActions } from "./operandCommands";
 
 export interface ValuePromptProps {
   title: string;

@@ -4,9 +4,9 @@
 import { useMemo } from "react";
 import { haltedAt } from "../online/monitor";
 import { useOnline } from "../online/store";
-import { describeBreakpoint } from "./breakpoints";
+import { describeBreakpoint } from "../debug/breakpoints";
 import { movedLine } from "./follow";
-import { debugStore, useDebug } from "./store";
+import { debugStore, useDebug } from "../debug/store";
 
 export function useTextDebug(pou: string) {
   const upper = pou.toUpperCase();

@@ -3,7 +3,7 @@
 // line is gone is dropped with a message, never left pointing at something else. Pure: the debug store
 // applies the results and the workspace says when the project changed.
 import type { Pou, Project } from "../generated/api";
-import { describeBreakpoint, type Breakpoint } from "./breakpoints";
+import { describeBreakpoint, type Breakpoint } from "../debug/breakpoints";
 import { breakpointBody, describePlace } from "./place";
 
 /** `bp` of POU `oldName` (case-insensitive) as a breakpoint of `newName`; others unchanged. */

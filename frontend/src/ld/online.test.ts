@@ -1,9 +1,9 @@
 import { describe, expect, it } from "vitest";
 import type { LibraryEntry, SymbolInfo } from "../generated/api";
-import { bodyOf, c, net, par, q } from "../ld/fixtures";
-import type { LdElement } from "../ld/model";
-import { bindLd, ldOnlineView, operandPath, operandsOf } from "./ldBinding";
-import { applyMessage, emptyMonitor } from "./monitor";
+import { bodyOf, c, net, par, q } from "./fixtures";
+import type { LdElement } from "./model";
+import { bindLd, ldOnlineView, operandsOf } from "./online";
+import { applyMessage, emptyMonitor, operandPath } from "../online/monitor";
 
 const sym = (name: string, type: string, var_class = "VAR"): SymbolInfo => ({
   name,

@@ -1,6 +1,6 @@
 // A text field for an operand, with autocomplete from the POU's symbols and the globals.
 import { useEffect, useMemo, useRef, useState, type CSSProperties } from "react";
-import type { SymbolInfo } from "../../generated/api";
+import type { SymbolInfo } from "../generated/api";
 
 export interface OperandEditorProps {
   label: string;

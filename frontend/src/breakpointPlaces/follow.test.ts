@@ -2,7 +2,7 @@ import { describe, expect, it } from "vitest";
 import type { ClientMessage } from "../online/protocol";
 import type { Project } from "../generated/api";
 import { goneBecause, movedLine, renamedPou } from "./follow";
-import { createDebugStore } from "./store";
+import { createDebugStore } from "../debug/store";
 
 const project: Project = {
   name: "p",

@@ -4,7 +4,7 @@
 import type { LdBody, Pou } from "../generated/api";
 import { locate } from "../ld/model";
 import { partAt, elementText as sfcElementText, type SfcBody } from "../sfc/model";
-import { partName, type Breakpoint } from "./breakpoints";
+import { partName, type Breakpoint } from "../debug/breakpoints";
 
 /** The networks of a diagram body (LD or FBD), enough to number and name them. */
 type Networks = readonly { id: string; label?: string | null; comment?: string | null }[];

@@ -2,10 +2,10 @@
 // monitor's values map back onto the operand texts and box pins the diagram draws. Power comes from
 // the engine per element id (never recomputed here); an element the last scan skipped has power null.
 import type { LibraryEntry, SymbolInfo } from "../generated/api";
-import { walk, type Box, type LdBody, type LdElement } from "../ld/model";
-import { boxPins } from "../ld/pins";
-import type { OnlineView } from "../ld/view/types";
-import { pathKey, powerKey, type MonitorState } from "./monitor";
+import { walk, type Box, type LdBody, type LdElement } from "./model";
+import { boxPins } from "./pins";
+import type { OnlineView } from "./view/types";
+import { operandPath, powerKey, type MonitorState } from "../online/monitor";
 import {
   bindBoxPins,
   diagramBinding,
@@ -14,12 +14,8 @@ import {
   type DiagramBinding,
   type PinBinding,
   type PinSource,
-} from "./pinValues";
-import type { Prepared } from "./shown";
-
-/** A variable operand: names with member/index access (`T1.Q`, `A[3]`); literals and addresses are not. */
-const VARIABLE = /^[A-Za-z_][A-Za-z0-9_]*(\.[A-Za-z_][A-Za-z0-9_]*|\[\s*\d+\s*\])*$/;
-const LITERALS = new Set(["TRUE", "FALSE"]);
+} from "../online/pinValues";
+import type { Prepared } from "../online/shown";
 
 /** The variable operands one element shows (contact/coil variable, compare sides, box pins). */
 export function operandsOf(element: LdElement): string[] {
@@ -37,20 +33,6 @@ export function operandsOf(element: LdElement): string[] {
     default:
       return [];
   }
-}
-
-/**
- * The canonical simulation path of an operand in POU instance `instance`, as the server names it
- * in its messages: the instance's own variable (`MAIN.START`) or a global (`ALARM`); null for
- * literals and addresses.
- */
-export function operandPath(operand: string, instance: string, symbols: readonly SymbolInfo[]): string | null {
-  const text = operand.trim();
-  if (!VARIABLE.test(text) || LITERALS.has(text.toUpperCase())) return null;
-  const head = text.split(/[.[]/, 1)[0]!.toUpperCase();
-  const symbol = symbols.find((s) => s.name.toUpperCase() === head);
-  const global = symbol?.var_class === "VAR_GLOBAL" || symbol?.var_class === "VAR_EXTERNAL";
-  return pathKey(global ? text : `${instance}.${text}`);
 }
 
 /** What an LD view subscribes and how the values map back onto its operands and boxes. */

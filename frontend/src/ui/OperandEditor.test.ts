@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import type { SymbolInfo } from "../../generated/api";
+import type { SymbolInfo } from "../generated/api";
 import { defaultSuggestion, suggest } from "./OperandEditor";
 
 const sym = (name: string): SymbolInfo => ({

@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { focusOf } from "./store";
+import { focusOf } from "./panels";
 
 describe("the place a diagnostic of an SFC action or transition reveals", () => {
   it("names the action or transition as the part of the POU's body it is in, with its line", () => {

@@ -5,8 +5,8 @@ import { createStore, type StoreApi } from "zustand/vanilla";
 import { checkUnsaved } from "../api/client";
 import type { CheckReport, Diagnostic } from "../generated/api";
 import type { Project } from "../generated/api";
-import { storedSize, storeSize } from "../store/layout";
-import { partOf } from "../store/parts";
+import { storedSize, storeSize } from "./layout";
+import { partOf } from "./parts";
 
 export type PanelId = "diagnostics" | "watch" | "io" | "log" | "breakpoints" | "trace" | "tests" | "xref";
 

@@ -1,4 +1,4 @@
-// The plumbing between a diagram editor's clipboard (LD and FBD alike) and the browser's: the copy,
+// The plumbing between a diagram editor's clipboard (LD, FBD and SFC alike) and the browser's: the copy,
 // cut and paste events on the editor, and toolbar/menu Copy and Paste through navigator.clipboard,
 // which fall back to the last clip copied in this tab when the browser keeps its clipboard closed.
 import type { ClipboardEvent } from "react";

@@ -1,0 +1,69 @@
+// Connects one LD editor to online mode: subscribes the networks in view of a program's POU, turns
+// the monitor into the diagram's online view (power, values of operands and box pins, ld/online.ts),
+// and maps the diagram's operand commands onto simulation paths (online/editorOnline.ts).
+import { useCallback, useEffect, useMemo, useState } from "react";
+import type { LibraryEntry, Pou, SymbolInfo } from "../generated/api";
+import { onlineReadOnly, operandActions, useLibraryLookup, useShownInstance } from "../online/editorOnline";
+import type { LdOnlineActions } from "../online/operandCommands";
+import { partElements, partMonitor } from "../online/parts";
+import { onlineStore, useOnline } from "../online/store";
+import type { LdBody } from "./model";
+import { bindLd, ldOnlineView } from "./online";
+import type { OnlineView } from "./view/types";
+
+export interface LdOnline {
+  online?: OnlineView;
+  readOnly: string | null;
+  actions?: LdOnlineActions;
+  onVisibleChange(networks: readonly string[]): void;
+}
+
+/**
+ * `symbols` null: the POU's symbol table has not arrived, so its operands cannot be told apart as
+ * its own variables or globals yet; nothing is bound (no wrong paths) until it has. `part`: the body is
+ * an SFC action or transition of the POU ("actions/Fill", online/parts.ts).
+ */
+export function useLdOnline(
+  pou: Pou,
+  body: LdBody,
+  symbols: readonly SymbolInfo[] | null,
+  library: readonly LibraryEntry[],
+  part?: string,
+): LdOnline {
+  const phase = useOnline((s) => s.phase);
+  const monitor = useOnline((s) => s.monitor);
+  const prepared = useOnline((s) => s.prepared);
+  const [visible, setVisible] = useState<ReadonlySet<string> | null>(null);
+  const instance = useShownInstance(pou);
+  const key = part ? `ld:${pou.name}/${part}` : `ld:${pou.name}`;
+  const live = phase !== "offline";
+  const lookup = useLibraryLookup(library);
+
+  const binding = useMemo(
+    () => (instance && symbols ? bindLd(body, instance, symbols, lookup, visible ?? undefined) : null),
+    [body, instance, symbols, lookup, visible],
+  );
+
+  useEffect(() => {
+    onlineStore
+      .getState()
+      .subscribe(
+        key,
+        live && binding ? { paths: binding.paths, elements: partElements(binding.elements, part) } : null,
+      );
+  }, [key, live, binding, part]);
+  useEffect(() => () => onlineStore.getState().subscribe(key, null), [key]);
+
+  const onVisibleChange = useCallback((networks: readonly string[]) => setVisible(new Set(networks)), []);
+  const online = useMemo(
+    () => (live && binding ? ldOnlineView(partMonitor(monitor, instance, part), binding, prepared) : undefined),
+    [live, binding, monitor, prepared, instance, part],
+  );
+
+  const actions = useMemo(
+    () => (live && instance && symbols ? operandActions(instance, symbols) : undefined),
+    [live, instance, symbols],
+  );
+  const readOnly = onlineReadOnly(pou, live, instance);
+  return { online, readOnly, actions, onVisibleChange };
+}
