@@ -330,8 +330,7 @@ def _order(graph: NetworkGraph, network: fbd.FbdNetwork, report: Report) -> list
 
 _NONE: dict[str, Source] = {}  # no inputs (read only)
 
-#: The elements of a CFC chart that have an execution order number (input nodes are read where used).
-EXECUTED = frozenset({"block", "output", "jump", "return", "label"})
+EXECUTED = frozenset(fbd.EXECUTED_ELEMENTS)
 
 
 def _explicit_order(graph: NetworkGraph, network: fbd.FbdNetwork) -> list[str]:

@@ -19,6 +19,7 @@ from ..iec.elementary import ALIASES, ELEMENTARY, GENERIC, STRING_TYPES
 from ..iec.literals import LITERAL_FORMS
 from ..iec.value_text import format_value
 from ..iec.values import f32
+from ..model.fbd import EXECUTED_ELEMENTS
 from . import types as t
 from .libraries import library_catalogue
 from .parser import TEST_KEYWORDS, grammar_keywords, literal_patterns
@@ -128,6 +129,7 @@ def vocabulary() -> dict[str, Any]:
             for fb in stdlib.FUNCTION_BLOCKS.values()
         ],
         "libraries": library_catalogue(),
+        "cfc_executed_elements": list(EXECUTED_ELEMENTS),
         "keywords": sorted(grammar_keywords() - TEST_KEYWORDS),
         "test_keywords": sorted(TEST_KEYWORDS),
         "test_verbs": [{"name": verb, "signature": signature} for verb, signature in SIGNATURES.items()],

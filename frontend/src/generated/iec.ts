@@ -9,6 +9,7 @@ export const IEC = {
     LTOD: "LTIME_OF_DAY",
     TOD: "TIME_OF_DAY",
   },
+  cfc_executed_elements: ["block", "output", "jump", "label", "return"],
   conversions: {
     description:
       "every elementary type converts to every other one with a function named so (FUN-10)",
