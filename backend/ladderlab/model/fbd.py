@@ -94,8 +94,8 @@ class FbdComment(_Node):
     height: float | None = Field(default=None, gt=0)
 
 
-#: The elements of a CFC chart that have an execution order number (CFC-02; input nodes are read where used). The
-#: lowering orders them (ir/fbd_order.py) and the editor moves them (frontend/src/fbd/order.ts, through iec.json).
+#: The elements of a CFC chart that have an execution order number (CFC-02; input nodes are read where used): the
+#: lowering orders them (ir/fbd_order.py); the editor's copy (frontend/src/fbd/order.ts) is checked by its test.
 EXECUTED_ELEMENTS: tuple[str, ...] = ("block", "output", "jump", "label", "return")
 
 FbdNode = Annotated[

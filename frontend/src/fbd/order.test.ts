@@ -4,7 +4,8 @@ import { describe, expect, it } from "vitest";
 import { arithmetic, bodyOf } from "./fixtures";
 import type { FbdBody } from "./model";
 import { arrangeNetwork } from "./ops";
-import { feedbackPins, moveInOrder, orderByDataFlow, orderNumbers } from "./order";
+import { IEC } from "../generated/iec";
+import { EXECUTED, feedbackPins, moveInOrder, orderByDataFlow, orderNumbers } from "./order";
 
 // arithmetic(): inputs a, b -> add -> sub (with input c) -> output r
 const chart = (): FbdBody =>
@@ -79,5 +80,11 @@ describe("feedback pins online", () => {
       wires: [...(network().wires ?? []), { from: { node: "sub", pin: "OUT" }, to: { node: "sub", pin: "IN2" } }],
     };
     expect([...feedbackPins(loop, ["add", "sub", "r"])]).toEqual(["sub/in:IN2"]);
+  });
+});
+
+describe("the elements with an execution order number", () => {
+  it("are the backend's (model/fbd.py EXECUTED_ELEMENTS, through iec.json)", () => {
+    expect([...EXECUTED].sort()).toEqual([...IEC.cfc_executed_elements].sort());
   });
 });

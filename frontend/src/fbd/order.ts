@@ -5,10 +5,13 @@
 // (blocks, outputs, jumps, labels, returns) moves freely, and a wire against the order carries the previous scan.
 import { kindOf, networksOf, nodesOf, wiresOf, type FbdBody, type FbdNetwork, type PinRef } from "./model";
 import type { EditResult } from "./ops";
-import { IEC } from "../generated/iec";
 
-/** Elements with an execution order number on a CFC chart (inputs are read where they are used): model/fbd.py's. */
-const EXECUTED = new Set<string>(IEC.cfc_executed_elements);
+/**
+ * Elements with an execution order number on a CFC chart (inputs are read where they are used): model/fbd.py's
+ * EXECUTED_ELEMENTS, checked against iec.json by order.test.ts (read from there, the whole vocabulary would load
+ * with the project tree).
+ */
+export const EXECUTED: ReadonlySet<string> = new Set(["block", "output", "jump", "label", "return"]);
 
 /** Nodes whose place the `order` list decides (inputs follow their consumer; in FBD jumps and returns run last). */
 export const ordered = (network: FbdNetwork, id: string, chart = false): boolean => {
