@@ -1,13 +1,13 @@
 // Connects the FBD editor to online mode, as useLdOnline does for LD: subscribes the probes and
 // variables of the POU's instance, turns the monitor into the diagram's online view, and offers
 // the operand commands (write, force, release, watch) on simulation paths.
-import { useCallback, useEffect, useMemo, useState } from "react";
+import { useCallback, useMemo, useState } from "react";
 import type { SymbolInfo } from "../generated/api";
 import type { Pou } from "../generated/api";
 import type { LdOnlineActions } from "../online/operandCommands";
-import { partElements, partMonitor } from "../online/parts";
-import { onlineStore, useOnline } from "../online/store";
-import { useShownInstance, onlineReadOnly, operandActions } from "../online/editorOnline";
+import { partMonitor } from "../online/parts";
+import { useOnline } from "../online/store";
+import { useDiagramSubscription, useShownInstance, onlineReadOnly, operandActions } from "../online/editorOnline";
 import type { FbdBody, Lookup } from "./model";
 import { bindFbd, fbdOnlineView, type FbdOnlineView } from "./online";
 
@@ -48,15 +48,7 @@ export function useFbdOnline(
     () => (instance && symbols ? bindFbd(body, instance, lookup, symbols, visible ?? undefined, feedback) : null),
     [body, instance, lookup, symbols, visible, feedback],
   );
-  useEffect(() => {
-    onlineStore
-      .getState()
-      .subscribe(
-        key,
-        live && binding ? { paths: binding.paths, elements: partElements(binding.elements, part) } : null,
-      );
-  }, [key, live, binding, part]);
-  useEffect(() => () => onlineStore.getState().subscribe(key, null), [key]);
+  useDiagramSubscription(key, live, binding, part);
 
   const online = useMemo(
     () => (live && binding ? fbdOnlineView(partMonitor(monitor, instance, part), binding, prepared) : undefined),

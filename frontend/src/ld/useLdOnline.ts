@@ -1,12 +1,18 @@
 // Connects one LD editor to online mode: subscribes the networks in view of a program's POU, turns
 // the monitor into the diagram's online view (power, values of operands and box pins, ld/online.ts),
 // and maps the diagram's operand commands onto simulation paths (online/editorOnline.ts).
-import { useCallback, useEffect, useMemo, useState } from "react";
+import { useCallback, useMemo, useState } from "react";
 import type { LibraryEntry, Pou, SymbolInfo } from "../generated/api";
-import { onlineReadOnly, operandActions, useLibraryLookup, useShownInstance } from "../online/editorOnline";
+import {
+  onlineReadOnly,
+  operandActions,
+  useDiagramSubscription,
+  useLibraryLookup,
+  useShownInstance,
+} from "../online/editorOnline";
 import type { LdOnlineActions } from "../online/operandCommands";
-import { partElements, partMonitor } from "../online/parts";
-import { onlineStore, useOnline } from "../online/store";
+import { partMonitor } from "../online/parts";
+import { useOnline } from "../online/store";
 import type { LdBody } from "./model";
 import { bindLd, ldOnlineView } from "./online";
 import type { OnlineView } from "./view/types";
@@ -44,15 +50,7 @@ export function useLdOnline(
     [body, instance, symbols, lookup, visible],
   );
 
-  useEffect(() => {
-    onlineStore
-      .getState()
-      .subscribe(
-        key,
-        live && binding ? { paths: binding.paths, elements: partElements(binding.elements, part) } : null,
-      );
-  }, [key, live, binding, part]);
-  useEffect(() => () => onlineStore.getState().subscribe(key, null), [key]);
+  useDiagramSubscription(key, live, binding, part);
 
   const onVisibleChange = useCallback((networks: readonly string[]) => setVisible(new Set(networks)), []);
   const online = useMemo(

@@ -1,13 +1,15 @@
 // What every editor needs online (LD, FBD, SFC, ST): the instance a POU's view shows, why a diagram is
 // read-only online, the library lookup, and the diagram's operand commands (prepare, write, force,
 // watch) mapped onto simulation paths.
-import { useMemo } from "react";
+import { useEffect, useMemo } from "react";
 import type { LibraryEntry, SymbolInfo } from "../generated/api";
 import type { Pou } from "../generated/api";
 import type { LdOnlineActions } from "./operandCommands";
 import { operandPath } from "./monitor";
 import { operandCommands } from "./operandCommands";
-import { useOnline } from "./store";
+import { partElements } from "./parts";
+import type { ElementSubscription } from "./protocol";
+import { onlineStore, useOnline } from "./store";
 
 /**
  * The instance whose values a POU's online view shows: a program is its own instance; a function
@@ -59,4 +61,25 @@ export function onlineReadOnly(pou: Pick<Pou, "kind" | "name">, live: boolean, i
       : pou.kind === "function_block"
         ? `Online: name the instance of ${pou.name} to show (e.g. MAIN.${pou.name.toUpperCase()}1). Go offline to edit.`
         : `Online: a function has no instance to show. Go offline to edit.`;
+}
+
+/**
+ * Subscribes a diagram's bound variable paths and elements while online (`part`: the body is an SFC action or
+ * transition of the POU, online/parts.ts), and ends the subscription when the editor goes.
+ */
+export function useDiagramSubscription(
+  key: string,
+  live: boolean,
+  binding: { paths: string[]; elements: readonly ElementSubscription[] } | null,
+  part?: string,
+): void {
+  useEffect(() => {
+    onlineStore
+      .getState()
+      .subscribe(
+        key,
+        live && binding ? { paths: binding.paths, elements: partElements(binding.elements, part) } : null,
+      );
+  }, [key, live, binding, part]);
+  useEffect(() => () => onlineStore.getState().subscribe(key, null), [key]);
 }
