@@ -49,11 +49,12 @@ def test_an_fbd_block_calls_a_program_IL_08():
     assert trace(sim, "Main", [{"a": 33}, {"a": 5}], ["erg"]) == [(34,), (6,)]
 
 
-def ld_main() -> Pou:
+def ld_main(kind: str = "program") -> Pou:
     return ld_pou(
         "Main",
         "VAR a, erg : INT; go : BOOL; END_VAR",
         rung("r1", contact("c", "go"), box("b", "PRGexample2", en=True, in_var="a", outputs={"out_var": "erg"})),
+        kind=kind,
     )
 
 
@@ -67,6 +68,14 @@ def test_an_ld_box_calls_a_program_under_en_IL_08():
 def test_a_program_box_in_a_function_block_is_a_located_error():
     assert errors(fbd_main("function_block"), PRG) == [
         "POU Main, network 1, PRGexample2: error FBD-NOT-CALLABLE: a function block cannot call the program "
+        "PRGexample2: only programs call programs"
+    ]
+
+
+def test_a_program_box_in_an_ld_function_block_is_a_located_error():
+    """As in ST (only programs call programs, docs/st.md "Program calls"), also in LD."""
+    assert errors(ld_main("function_block"), PRG) == [
+        "POU Main, network 1, PRGexample2: error LD-NOT-CALLABLE: a function block cannot call the program "
         "PRGexample2: only programs call programs"
     ]
 
