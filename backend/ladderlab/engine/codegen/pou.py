@@ -75,7 +75,7 @@ def emit_instance_class(module: ModuleContext, pou: ir.Pou, decls: Source, code:
     decls.line(f"class {cls}(ll_Addressable):")
     with decls.indent():
         decls.line(f"# {pou.kind.upper().replace('_', ' ')} {names.comment_text(pou.name)} ({pou.language.upper()})")
-        extra = [f"ll_p{page}" for page in range(1, layout.pages)] + (["ll_pr", "ll_px"] if module.probes else [])
+        extra = [f"ll_p{page}" for page in range(1, layout.pages)] + (["ll_pr", "ll_px", "ll_v"] if module.probes else [])
         decls.line(f"__slots__ = {slots_source(layout.page_attrs(0) + extra)}")
         decls.line()
         decls.line("def __init__(self):")
@@ -86,6 +86,7 @@ def emit_instance_class(module: ModuleContext, pou: ir.Pou, decls: Source, code:
                 table = module.probe_table(pou.name)
                 decls.line(f"self.ll_pr = [ll_unset] * {len(table.elements)}")
                 decls.line(f"self.ll_px = [-1] * {table.group_count}")
+                decls.line(f"self.ll_v = [True] * {table.networks}  # networks viewed (Simulation.view)")
             decls.line("self.ll_init(False)")
         decls.line()
         _emit_init(module, pou, scope, decls)
@@ -335,6 +336,8 @@ def _emit_chunk(
             _unpack_reference(slot, src)
         if statements.probed:
             src.line("ll_pr, ll_px, ll_k = self.ll_pr, self.ll_px, ll_scan")
+        if statements.guarded:
+            src.line("ll_view = self.ll_v")
         src.extend(statements.outlines)
         src.extend(body)
         if module.debug and prologue_depth:

@@ -63,6 +63,8 @@ class Statements:
         self.probes = self.module.probe_table(scope.pou.name) if self.module.probes else None
         self.group: int | None = None  # the probe group of the straight run of code being emitted
         self.probed = False  # a probe was emitted: the chunk loads ll_pr, ll_px, ll_k
+        self.guarded = False  # a network's probes depend on ``ll_v`` (``block``): the chunk loads it (``ll_view``)
+        self.network: int | None = None  # the viewed network whose probes are being emitted
         self._following: ir.Probe | None = None  # the probe after the statement being emitted
         self._fused = False  # the last assignment also recorded the probe after it
         self.deferred = deferred  # id() of the probes read after the scan (deferred.py)
@@ -114,7 +116,43 @@ class Statements:
         if self.module.debug:
             with self.src.at(self.module.origin(origin)):
                 self.pause("network" if origin.network is not None else "entry", origin)
-        self.statements(block.statements, own_group=not self.plan.straight)
+        network = self._viewable(block)
+        if network is None or self.debug:  # the debug variant stores every probe, numbered and grouped the same
+            self.network = network
+            self.statements(block.statements, own_group=network is not None or not self.plan.straight)
+            self.network = None
+            if network is not None:
+                self.group = None
+            return
+        self.guarded = True
+        self.src.line(f"if ll_view[{network}]:  # viewed by a monitor: record the power flow")
+        with self.src.indent():
+            self.network = network
+            self.statements(block.statements)
+            self.network = None
+        self.src.line("else:")
+        with self.src.indent():
+            probes, self.probes = self.probes, None
+            try:
+                self.statements(block.statements)
+            finally:
+                self.probes = probes
+        self.group = None  # the probes after it run whether or not it was viewed
+
+    def _viewable(self, block: ir.Block) -> int | None:
+        """The number of a network whose probes the monitor variant stores only while it is viewed (``ll_v``):
+        a network of a PROGRAM or FUNCTION_BLOCK body (not one a derived FB runs with ``SUPER^()``, whose probes
+        go elsewhere). None: its probes are stored in every scan."""
+        pou = self.scope.pou
+        if (
+            self.probes is None
+            or block.origin.network is None
+            or pou.kind == "function"
+            or self.scope.function
+            or pou.name.upper() in self.module.program.base_bodies
+        ):
+            return None
+        return self.probes.new_network()
 
     def statements(self, statements: list[ir.Stmt], own_group: bool = True) -> None:
         """``own_group``: the probes here start a group of their own (else the blocks of a straight
@@ -212,7 +250,7 @@ class Statements:
             self._set(code, self.x.stored(value, ty), probe)
 
     def _if(self, s: ir.If, oid: int) -> None:
-        if not self.module.probes and _only_probes(s):
+        if self.probes is None and _only_probes(s):
             return  # e.g. the EN-guarded probes of a box: nothing left to run in the fast variant
         self._chain([(self._condition(cond), body) for cond, body in s.branches], s.orelse)
 
@@ -503,7 +541,7 @@ class Statements:
         if self.group is None:
             self.group = self.probes.new_group()  # type: ignore[union-attr]
             self.src.line(f"ll_px[{self.group}] = ll_k")
-        return self.probes.probe(s.element, self.group, constant)  # type: ignore[union-attr]
+        return self.probes.probe(s.element, self.group, constant, self.network)  # type: ignore[union-attr]
 
     def _defer(self, s: ir.Probe) -> None:
         index = self._record(s)
