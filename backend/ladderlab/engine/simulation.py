@@ -642,17 +642,19 @@ class Simulation:
         """Whether the last scan recorded the probes of the instance's ``network``: viewed since before it began."""
         return obj.ll_v[network] and self._viewed_since.get((instance, network), -1) < self._stamp  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
 
-    def view(self, viewed: dict[str, Iterable[str] | None]) -> None:
+    def view(self, viewed: dict[str, Iterable[str] | None] | None) -> None:
         """Record the power flow (monitor variant) only of the networks that hold ``viewed``'s elements: POU instance
-        path -> element ids (None: all its networks); the networks of other instances record none. A network costs
-        its probes only while viewed (docs/runtime.md, "Viewed networks"); a network starts being viewed with the
-        next scan (``probes`` lists its elements as ``unknown`` until then). The debug variant records every probe."""
-        self._viewed = {key.strip().upper(): ids for key, ids in viewed.items()}
+        path -> element ids (None: all its networks); the networks of other instances record none; ``viewed`` None:
+        every network (as a new simulation does). A network costs its probes only while viewed (docs/runtime.md,
+        "Viewed networks"); one starts being recorded with the next scan (``probes`` lists its elements as
+        ``unknown`` until then). The debug variant records every probe. Which networks are viewed is part of the
+        state (``state``), so a restored scan knows which networks it recorded."""
+        self._viewed = None if viewed is None else {key.strip().upper(): ids for key, ids in viewed.items()}
         for key, (obj, pou) in self._instances_by_path().items():
             table = self._context_probes(pou)
             if table is None or not table.networks:
                 continue
-            ids = self._viewed.get(key, ())
+            ids = None if self._viewed is None else self._viewed.get(key, ())
             if ids is None:
                 wanted = set(range(table.networks))
             else:
@@ -1008,6 +1010,9 @@ class Simulation:
             event = InputEvent.from_json(data)
             location = self._resolver.resolve(event.path) if event.path else None
             self._pending.append((event, location, self._prepare(event, location)[1]))
+        self._viewed_since.clear()  # the state says which networks its last scan recorded (ll_v)
+        if self._viewed is not None:  # this simulation's monitor views these from the next scan on
+            self.view(self._viewed)
 
     def snapshot(self) -> dict[str, object]:
         """Every elementary variable of every program instance and every global: path -> value."""

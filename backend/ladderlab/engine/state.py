@@ -293,9 +293,6 @@ class _Missing:
 
 
 _MISSING = _Missing()
-#: Slots that are no state: Python's, and ``ll_v`` (the networks the live monitor views, Simulation.view): a
-#: replay of a past scan records the power flow of every network.
-_NOT_STATE = frozenset({"__dict__", "__weakref__", "ll_v"})
 _SCALAR_TYPES = frozenset({bool, int, float, str, bytes, type(None), type(UNSET)})
 _PLANS: weakref.WeakKeyDictionary[type, _Plan] = weakref.WeakKeyDictionary()  # a recompiled program's go
 
@@ -304,5 +301,5 @@ def _slot_names(cls: type) -> list[str]:
     names: list[str] = []
     for klass in reversed(cls.__mro__):
         slots = klass.__dict__.get("__slots__", ())
-        names += [slots] if isinstance(slots, str) else [s for s in slots if s not in _NOT_STATE]
+        names += [slots] if isinstance(slots, str) else [s for s in slots if s not in ("__dict__", "__weakref__")]
     return names
