@@ -81,8 +81,8 @@ class Statements:
             self.src.line("pass")
             return
         if not self.plan.jumps:
-            for block in blocks:
-                self.block(block)
+            for run in self._runs(blocks):
+                self.view_run(run)
             return
         for block in self.plan.duplicates:
             if any(block is mine for mine in blocks):
@@ -100,12 +100,52 @@ class Statements:
                     self.segment = segment
                     self.src.line(f"if ll_b <= {segment}:")
                 with self.src.indent():
-                    self.block(block)
+                    self.view_run([block])
             self._store_countdown()
             self.src.line("break" if self.plan.inline else f"return {self.plan.ends(self.chunk)}")
         self.counting = False
 
-    def block(self, block: ir.Block) -> None:
+    def _runs(self, blocks: list[ir.Block]) -> Iterator[list[ir.Block]]:
+        """The blocks in runs that share one view flag (``view_run``): up to VIEW_RUN consecutive viewable networks
+        (a flag per network would cost a sixth of a plain network's scan), every other block alone."""
+        run: list[ir.Block] = []
+        for block in blocks:
+            viewable = self._viewable(block)
+            if run and (not viewable or len(run) == VIEW_RUN):
+                yield run
+                run = []
+            if viewable:
+                run.append(block)
+            else:
+                yield [block]
+        if run:
+            yield run
+
+    def view_run(self, run: list[ir.Block]) -> None:
+        """Blocks whose probes the monitor variant stores only while a client views them: ``if ll_view[u]:`` the
+        blocks with their probes, ``else:`` without (the fast variant's code). ``u`` numbers the run in the POU's
+        ProbeTable (``networks``, ``network_of``), the same in the debug variant, which stores every probe."""
+        unit = self.probes.new_network() if self._viewable(run[0]) else None  # type: ignore[union-attr]
+        if unit is None or self.debug:
+            for block in run:
+                self.block(block, unit)
+            return
+        self.guarded = True
+        self.src.line(f"if ll_view[{unit}]:  # viewed by a monitor: record the power flow")
+        with self.src.indent():
+            for block in run:
+                self.block(block, unit)
+        self.src.line("else:")
+        with self.src.indent():
+            probes, self.probes = self.probes, None
+            try:
+                for block in run:
+                    self.block(block)
+            finally:
+                self.probes = probes
+
+    def block(self, block: ir.Block, unit: int | None = None) -> None:
+        """One block; ``unit``: its run of viewed networks (``view_run``), whose blocks each start a probe group."""
         origin = block.origin
         if origin.network is not None:
             self.src.line(
@@ -116,43 +156,25 @@ class Statements:
         if self.module.debug:
             with self.src.at(self.module.origin(origin)):
                 self.pause("network" if origin.network is not None else "entry", origin)
-        network = self._viewable(block)
-        if network is None or self.debug:  # the debug variant stores every probe, numbered and grouped the same
-            self.network = network
-            self.statements(block.statements, own_group=network is not None or not self.plan.straight)
-            self.network = None
-            if network is not None:
-                self.group = None
+        if unit is None:
+            self.statements(block.statements, own_group=not self.plan.straight)
             return
-        self.guarded = True
-        self.src.line(f"if ll_view[{network}]:  # viewed by a monitor: record the power flow")
-        with self.src.indent():
-            self.network = network
-            self.statements(block.statements)
-            self.network = None
-        self.src.line("else:")
-        with self.src.indent():
-            probes, self.probes = self.probes, None
-            try:
-                self.statements(block.statements)
-            finally:
-                self.probes = probes
-        self.group = None  # the probes after it run whether or not it was viewed
+        self.network = unit
+        self.statements(block.statements)
+        self.network, self.group = None, None  # the probes after it run whether or not it was viewed
 
-    def _viewable(self, block: ir.Block) -> int | None:
-        """The number of a network whose probes the monitor variant stores only while it is viewed (``ll_v``):
-        a network of a PROGRAM or FUNCTION_BLOCK body (not one a derived FB runs with ``SUPER^()``, whose probes
-        go elsewhere). None: its probes are stored in every scan."""
+    def _viewable(self, block: ir.Block) -> bool:
+        """Whether the monitor variant stores the block's probes only while it is viewed (``ll_v``): a network of
+        a PROGRAM or FUNCTION_BLOCK body (not of one a derived FB runs with ``SUPER^()``, whose probes go
+        elsewhere). Else its probes are stored in every scan."""
         pou = self.scope.pou
-        if (
+        return not (
             self.probes is None
             or block.origin.network is None
             or pou.kind == "function"
             or self.scope.function
             or pou.name.upper() in self.module.program.base_bodies
-        ):
-            return None
-        return self.probes.new_network()
+        )
 
     def statements(self, statements: list[ir.Stmt], own_group: bool = True) -> None:
         """``own_group``: the probes here start a group of their own (else the blocks of a straight
@@ -731,6 +753,8 @@ def _local_or_constant(code: str) -> bool:
 
 #: Branches of one if/elif chain (CPython's compiler recurses once per elif); longer chains go in groups.
 CHAIN_BRANCHES = 64
+#: Consecutive networks sharing one view flag (``view_run``): viewing 20 networks records at most 32.
+VIEW_RUN = 8
 #: A body nested this deep (indentation levels), or inside this many loops of one Python function, is
 #: moved into a function of its own (``Statements._outline``): CPython allows 100 and 20.
 OUTLINE_DEPTH = 60
