@@ -17,7 +17,8 @@ What the runner has to say goes to a ``Sink``:
   state (so a halt shows the values of the halt point): what changed since the previous frame in
   the values and element states that some client watches, the forced paths, the trace samples
   recorded since, and the figures of ``info``. Only the watched paths and the watched elements
-  (the networks a client has in view) are read, never a whole POU (``Simulation.probes``).
+  (the networks a client has in view) are read, never a whole POU (``Simulation.probes``), and only the
+  networks some client views record their power flow at all (``Simulation.view``; ``_view_networks``).
 
 Every message is plain data (dicts, lists, strings, numbers), so it can cross a process
 boundary or a network (docs/architecture.md, "Online mode").
