@@ -99,6 +99,9 @@ class _Checker:
         elif isinstance(e, ir.AddressOf):
             self.var(e.var)
             assert isinstance(e.type, t.Reference) and value_type(e.type.target) == value_type(e.var.type), e
+        elif isinstance(e, ir.View):
+            self.expr(e.value)
+            assert isinstance(e.type, t.Reference) and isinstance(e.value.type, t.Reference), e
         elif isinstance(e, ir.Unary):
             self.expr(e.operand)
             assert value_type(e.operand.type) == value_type(e.type), e  # type: ignore[union-attr]

@@ -36,10 +36,27 @@ from ..st.methods import is_self, is_super
 from ..st.printer import print_expression
 from ..st.rules import EnumValue
 from ..st.symbols import PouInfo, PropertyRef, Symbol
+from .byte_layout import byte_layout
 from .context import PouContext
 from .lower_types import LoweringError, byte_size, engine_value, ir_default
 from .method_outputs import output_arguments
-from .nodes import AddressOf, Assign, Binary, Call, Const, Convert, Deref, Expr, FnCall, Index, Member, Stmt, Unary, Var
+from .nodes import (
+    AddressOf,
+    Assign,
+    Binary,
+    Call,
+    Const,
+    Convert,
+    Deref,
+    Expr,
+    FnCall,
+    Index,
+    Member,
+    Stmt,
+    Unary,
+    Var,
+    View,
+)
 from .types import BOOL, Array, Elementary, FbInstance, IrType, Reference, Struct, Subrange, describe
 
 POINTER_ARITHMETIC = "pointer arithmetic is not supported: a reference reaches its variable only"
@@ -130,17 +147,22 @@ def interface_value(node: ast.Expr, ctx: PouContext, target: Reference) -> Expr:
 
 
 def _reference_to(expr: Expr, target: Reference, node: ast.Expr) -> Expr:
-    """A reference stored as a reference to ``target.target``: NULL, or one to a variable of that very type (a
-    ``POINTER TO BYTE`` cannot stand for another variable: the engine's references keep their target's type)."""
+    """A reference stored as a reference to ``target.target``: NULL, one to a variable of that very type, or a
+    ``View`` of the variable's bytes as that type (a ``POINTER TO BYTE`` over a STRING: ir/byte_layout.py) when
+    both types have a byte layout."""
     if isinstance(expr, Const) and expr.value is None:
         return Const(None, target)
-    if isinstance(expr.type, Reference) and _same_target(expr.type.target, target.target):
+    if not isinstance(expr.type, Reference):
+        raise LoweringError(f"a {_reference_text(target)} cannot refer to {_referred_text(expr.type)}", node)
+    if _same_target(expr.type.target, target.target):
         return expr
-    raise LoweringError(
-        f"a {_reference_text(target)} cannot refer to {_referred_text(expr.type)}: LadderLab's references keep "
-        "their target's type (no reinterpretation of memory)",
-        node,
-    )
+    whole, seen = byte_layout(expr.type.target), byte_layout(target.target)
+    for problem in (whole, seen):
+        if isinstance(problem, str):
+            raise LoweringError(
+                f"a {_reference_text(target)} cannot see {_referred_text(expr.type)} as bytes: {problem}", node
+            )
+    return View(expr, target, whole, seen)  # type: ignore[arg-type]  # both specs (checked above)
 
 
 def _same_target(a: IrType, b: IrType) -> bool:

@@ -181,8 +181,15 @@ class Expressions:
         return self.standard(c.function, args, types, runtime_name(c.type))
 
     def address_of(self, a: ir.AddressOf) -> str:
-        """``REF(x)``: a ``runtime.Ref`` to the variable's ``(container, key)``."""
+        """``REF(x)``: a ``runtime.Ref`` to the variable's ``(container, key)``; a ``FrameRef`` to a FUNCTION's own
+        variable, which dangles once the call returned."""
+        if a.var.scope == "local" and a.var.name.upper() in self.scope.framed:
+            return f"ll_FrameRef(*{self.ref(a.var)}, {a.text!r}, ll_fr)"
         return f"ll_Ref(*{self.ref(a.var)}, {a.text!r})"
+
+    def view(self, v: ir.View) -> str:
+        """A pointer seeing its target's bytes as another type (engine/codegen/views.py)."""
+        return f"ll_view({self.expr(v.value)}, {v.whole!r}, {v.seen!r})"
 
     def attempt(self, a: ir.Attempt) -> str:
         """``?=``: the reference when its instance's class is one of the FBs implementing the interface, else NULL."""
@@ -381,6 +388,7 @@ _HANDLERS = {
     ir.Call: Expressions.call,
     ir.Convert: Expressions.convert,
     ir.AddressOf: Expressions.address_of,
+    ir.View: Expressions.view,
     ir.Attempt: Expressions.attempt,
 }
 
