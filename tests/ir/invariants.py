@@ -109,6 +109,10 @@ class _Checker:
             self.expr(e.left)
             self.expr(e.right)
             operand = value_type(e.left.type)  # type: ignore[union-attr]
+            if isinstance(e.type, t.Reference):  # pointer arithmetic: p +/- an integer number of bytes
+                assert e.op in ("ADD", "SUB") and operand == e.type, e
+                assert e.right.type.info.category == "int", e  # type: ignore[union-attr]
+                return
             assert operand == value_type(e.right.type), f"Binary operands differ: {e}"  # type: ignore[union-attr]
             assert e.type == (t.BOOL if e.op in COMPARISONS else operand), e
         elif isinstance(e, ir.Call):
