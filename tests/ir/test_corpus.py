@@ -53,7 +53,7 @@ def test_oscat_pous_without_errors_satisfy_the_ir_invariants(oscat):
         result = lower_project(project)
     assert result.program is not None
     check_program(result.program)
-    assert len(result.program.pous) >= 290  # 298 of 542: the rest use CODESYS implicit conversions or those
+    assert len(result.program.pous) >= 310  # 319 of 542: the rest use CODESYS implicit conversions or those
 
 
 @given(data=st.data())

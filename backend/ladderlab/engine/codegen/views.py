@@ -134,24 +134,26 @@ class ViewRef(Ref):
         super().__init__(c, k, origin + moved)
         self.whole, self.offset, self.seen, self.origin, self.frame = whole, offset, seen, origin, frame
 
-    def _bytes(self) -> tuple[object, int]:
+    def _target(self, size: int) -> object:
+        """The variable, once the ``size`` bytes from ``offset`` on are known to lie inside it (and its call alive)."""
         if self.frame is not None and not self.frame.alive:
             raise dangling(self.text, self.frame)
-        if not 0 <= self.offset <= self.whole.size - self.seen.size:
-            raise pointer_outside_bytes(f"the pointer {self.text}", self.offset, self.seen.size, self.whole.size)
-        return (self.c if self.k is None else self.c[self.k]), self.offset  # type: ignore[index]  # see __init__
+        if not 0 <= self.offset <= self.whole.size - size:
+            raise pointer_outside_bytes(f"the pointer {self.text}", self.offset, size, self.whole.size)
+        return self.c if self.k is None else self.c[self.k]  # type: ignore[index]  # see __init__
 
     @property
     def v(self) -> object:
-        value, offset = self._bytes()
-        if isinstance(self.seen, ArrayLayout):
+        if isinstance(self.seen, ArrayLayout):  # each element is checked when it is read or written
+            self._target(0)
             return ArrayView(self, self.seen)
-        return self.seen.decode(self.whole.read(value, offset, self.seen.size))
+        value = self._target(self.seen.size)
+        return self.seen.decode(self.whole.read(value, self.offset, self.seen.size))
 
     @v.setter
     def v(self, new: object) -> None:
-        value, offset = self._bytes()
-        written = self.whole.write(value, offset, self.seen.encode(new))
+        value = self._target(self.seen.size)
+        written = self.whole.write(value, self.offset, self.seen.encode(new))
         if self.k is not None and written is not value:
             self.c[self.k] = written  # type: ignore[index]  # as above
 
