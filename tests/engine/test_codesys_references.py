@@ -98,7 +98,9 @@ END_PROGRAM
     for scan in range(1, 4):
         sim.cycle(1)
         assert sim.read("Main.y") == 3 * scan + 1  # a := a * 3 through r, then F := a + 1
-    found = errors(text.replace("VAR_INPUT a : INT; END_VAR", "VAR CONSTANT a : INT := 2; END_VAR").replace("F(k)", "F()"))
+    found = errors(
+        text.replace("VAR_INPUT a : INT; END_VAR", "VAR CONSTANT a : INT := 2; END_VAR").replace("F(k)", "F()")
+    )
     assert len(found) == 1 and "ST-REF: REF= cannot refer to the CONSTANT a" in found[0], found
 
 

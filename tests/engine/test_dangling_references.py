@@ -116,7 +116,9 @@ def test_a_reference_escaping_its_call_is_stored_but_reading_it_later_is_a_locat
     sim.cycle(3)
     fault = sim.fault
     assert fault is not None and (fault.code, fault.scan) == ("dangling_reference", 2)  # the third scan, from 0
-    assert fault.message == "dangling reference: ADR(x) refers to a variable of a call of FUNCTION KEEP that has returned"
+    assert (
+        fault.message == "dangling reference: ADR(x) refers to a variable of a call of FUNCTION KEEP that has returned"
+    )
     assert (fault.pou, fault.origin.line) == ("MAIN", 15)  # z := kept^;
     assert fault.values["KEPT"] == "ADR(x)"  # the pointer the statement reads through
     assert (sim.read("Main.y"), sim.read("Main.z")) == (31, 0)  # the call of that scan ran, the read did not

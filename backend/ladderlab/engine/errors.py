@@ -90,6 +90,13 @@ def pointer_outside_bytes(what: str, offset: int, size: int, whole: int) -> PlcR
     return PlcRuntimeError(INDEX_RANGE, f"{what} reaches {reach} of a {whole}-byte variable: outside it")
 
 
+def pointers_unordered(op: str, left: str, right: str) -> PlcRuntimeError:
+    """``p < q`` with pointers into different variables (or NULL): LadderLab's variables have no addresses to order."""
+    return PlcRuntimeError(
+        INVALID_ARGUMENT, f"{left} {op} {right}: only pointers into one variable (an array, a STRING) can be ordered"
+    )
+
+
 def dangling_reference(text: str, function: str) -> PlcRuntimeError:
     """A reference to a variable of a FUNCTION call, used after that call returned (IEC 61131-3 ed. 3 6.4.4.10:
     the variable no longer exists; CODESYS would read whatever reuses its memory)."""

@@ -474,16 +474,18 @@ def _short_circuit(node: ast.Binary, op: str, ctx: PouContext) -> Expr:
 
 def _reference_operation(node: ast.Binary, op: str, ctx: PouContext) -> Expr:
     """``r1 = r2``, ``r <> NULL``: whether two references refer to one variable. ``p + n`` / ``p - n`` (bytes,
-    CODESYS): the pointer moved along the array it points into (the engine checks it stays there). Ordering
-    would compare memory addresses, which the engine's references have not got."""
+    CODESYS): the pointer moved along the array it points into (the engine checks it stays there). ``p < q`` ...
+    order two pointers into one variable by the byte they point to (the engine faults on different variables)."""
     if op in ("ADD", "SUB") and isinstance(node.left.ty, t.PointerType) and t.in_family(node.right.ty, "ANY_INT"):
         pointer = lower_expr(node.left, ctx)
         offset = lower_expr(node.right, ctx, Elementary("DINT"))
         return Binary(op, pointer, offset, pointer.type)  # type: ignore[arg-type]  # a Reference is a value type here
+    if op in ("ADD", "SUB"):
+        raise LoweringError(POINTER_ARITHMETIC, node)
     if op not in ("EQ", "NE"):
-        raise LoweringError(
-            POINTER_ARITHMETIC if op in ("ADD", "SUB") else f"references cannot be compared by '{node.op}'", node
-        )
+        if not (isinstance(node.left.ty, t.PointerType) and isinstance(node.right.ty, t.PointerType)):
+            raise LoweringError(f"'{node.op}' orders two pointers, not a pointer and a number", node)
+        return Binary(op, lower_expr(node.left, ctx), lower_expr(node.right, ctx), BOOL)  # type: ignore[arg-type]
     left, right = lower_expr(node.left, ctx), lower_expr(node.right, ctx)
     if isinstance(left, Const) and left.value in (None, 0):  # NULL (an interface's 0) takes the other's type
         left = Const(None, right.type)

@@ -17,6 +17,7 @@ into one stays valid.
 from __future__ import annotations
 
 import math
+import operator
 from collections.abc import Callable
 from typing import Any
 
@@ -29,10 +30,19 @@ from ..errors import (
     for_step_zero,
     null_dereference,
     pointer_outside,
+    pointers_unordered,
 )
 from ..process_image import ProcessImage
 from ..stdlib import INLINE_NAMES, STANDARD_FBS
 from . import names
+
+#: The orderings of pointers (``pointer_order``).
+ORDERS: dict[str, Callable[[int, int], bool]] = {
+    "<": operator.lt,
+    "<=": operator.le,
+    ">": operator.gt,
+    ">=": operator.ge,
+}
 
 #: Loop back-edges between two clock readings of the watchdog (``ll_wb``, statements.py).
 WATCHDOG_EVERY = 256
@@ -185,6 +195,13 @@ class Ref:
     def __reduce__(self) -> tuple[type[str], tuple[str]]:
         return str, (self.text,)
 
+    def place(self, size: int) -> tuple[object, int]:
+        """The variable a pointer points into (by identity) and the byte it points to there: an element of an array
+        (a list; ``size`` bytes each) is a place in it, anything else the variable's start."""
+        if isinstance(self.c, list) and isinstance(self.k, int):
+            return id(self.c), self.k * size
+        return (id(self.c), self.k), 0
+
     def shifted(self, offset: int, size: int, what: str) -> Ref:
         """``p + offset`` (bytes, CODESYS): ``offset / size`` elements further along the array p points into; an
         offset that is no whole number of elements, or a result outside the array (one past its end is allowed) is
@@ -200,6 +217,17 @@ class Ref:
             raise pointer_outside(f"{what} moved by {whole}", position, length, size)
         origin, moved = (self.origin, self.moved + offset) if isinstance(self, ElementRef) else (self.text, offset)
         return ElementRef(self.c, position, origin, moved, getattr(self, "frame", None))
+
+
+def pointer_order(left: Ref | None, right: Ref | None, left_size: int, right_size: int, op: str) -> bool:
+    """``p < q`` (and ``<=``, ``>``, ``>=``): the bytes two pointers into one variable point to, compared (CODESYS
+    compares addresses); pointers into different variables, or NULL, have no order here: a fault."""
+    if left is None or right is None:
+        raise pointers_unordered(op, reference_text(left), reference_text(right))
+    (mine, at), (theirs, there) = left.place(left_size), right.place(right_size)
+    if mine != theirs:
+        raise pointers_unordered(op, left.text, right.text)
+    return ORDERS[op](at, there)
 
 
 def reference_text(value: object) -> str:
@@ -407,6 +435,7 @@ def namespace() -> dict[str, object]:
         ll_Frame=Frame,
         ll_deref=deref,
         ll_ptr_add=pointer_add,
+        ll_ptr_order=pointer_order,
         ll_view=view,
         ll_inf=math.inf,
         ll_nan=math.nan,

@@ -167,6 +167,9 @@ class ViewRef(Ref):
     def __setitem__(self, key: str, value: object) -> None:
         self.v = value
 
+    def place(self, size: int) -> tuple[object, int]:
+        return (id(self.c) if self.k is None else (id(self.c), self.k)), self.offset
+
     def shifted(self, offset: int, size: int, what: str) -> ViewRef:
         """``p + offset`` bytes, whatever the size of what p sees: anywhere from the variable's start to one past
         its end."""
