@@ -7,8 +7,11 @@ reference has no frame at all. Expected values are worked out by hand or by the 
 
 from __future__ import annotations
 
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
+
+from ladderlab.engine.paths import NoTarget
 
 from .test_references import build
 
@@ -113,6 +116,8 @@ def test_a_reference_escaping_its_call_is_stored_but_reading_it_later_is_a_locat
     sim = build(ESCAPING).simulation()
     sim.cycle(2)  # the reference is kept in a global, never read after the call: no fault
     assert sim.fault is None and (sim.read("Main.y"), sim.read("GVL.kept")) == (21, "ADR(x)")
+    with pytest.raises(NoTarget, match="KEPT\\^: dangling reference: ADR\\(x\\) refers to"):
+        sim.read("GVL.kept^")  # online (ON-11): the path names no variable now
     sim.cycle(3)
     fault = sim.fault
     assert fault is not None and (fault.code, fault.scan) == ("dangling_reference", 2)  # the third scan, from 0

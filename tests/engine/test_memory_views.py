@@ -142,3 +142,13 @@ def test_any_byte_written_into_a_dword_changes_exactly_that_byte(value, index, b
 _BYTE_SIM = simulation(
     "d : DWORD; i : INT; b, old : BYTE; pb : POINTER TO BYTE;", "pb := ADR(d);\npb := pb + i;\nold := pb^;\npb^ := b;"
 )
+
+
+def test_an_online_path_through_a_byte_pointer_reads_and_writes_the_byte_it_points_to():
+    """ON-11: ``Main.pb^`` names the byte pb sees (the second of the DWORD, little-endian 16#33)."""
+    sim = simulation("d : DWORD := 16#11223344; pb : POINTER TO BYTE;", "pb := ADR(d);\npb := pb + 1;")
+    sim.cycle(1)
+    assert (sim.read("Main.pb"), sim.read("Main.pb^")) == ("ADR(d) + 1", 0x33)
+    sim.write("Main.pb^", 0xAA)
+    sim.cycle(1)
+    assert sim.read("Main.d") == 0x1122AA44

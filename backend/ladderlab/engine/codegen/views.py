@@ -159,6 +159,9 @@ class ViewRef(Ref):
 
     @property
     def pair(self) -> tuple[object, object]:
+        """``(self, "v")``: a VAR_IN_OUT or an online path reaches the bytes through ``v``; checked here, so an
+        online path through a pointer outside its variable (or dangling) names no variable (engine/paths.py)."""
+        self._target(0 if isinstance(self.seen, ArrayLayout) else self.seen.size)
         return (self, "v")
 
     def __getitem__(self, key: str) -> object:  # (self, "v") as a VAR_IN_OUT reference
