@@ -152,3 +152,12 @@ def test_an_online_path_through_a_byte_pointer_reads_and_writes_the_byte_it_poin
     sim.write("Main.pb^", 0xAA)
     sim.cycle(1)
     assert sim.read("Main.d") == 0x1122AA44
+
+
+def test_a_whole_array_read_through_a_view_is_a_copy():
+    sim = simulation(
+        "s : STRING[3] := 'AB'; pa : POINTER TO ARRAY [0..3] OF BYTE; x : ARRAY [0..3] OF BYTE;",
+        "pa := ADR(s);\nx := pa^;\npa^[0] := 67;\nx[1] := 9;",
+    )
+    sim.cycle(1)
+    assert (sim.fault, sim.read("Main.x"), sim.read("Main.s")) == (None, [65, 9, 0, 0], "CB")  # 'A' 'B' NUL NUL
