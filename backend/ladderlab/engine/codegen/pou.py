@@ -75,7 +75,9 @@ def emit_instance_class(module: ModuleContext, pou: ir.Pou, decls: Source, code:
     decls.line(f"class {cls}(ll_Addressable):")
     with decls.indent():
         decls.line(f"# {pou.kind.upper().replace('_', ' ')} {names.comment_text(pou.name)} ({pou.language.upper()})")
-        extra = [f"ll_p{page}" for page in range(1, layout.pages)] + (["ll_pr", "ll_px", "ll_v"] if module.probes else [])
+        extra = [f"ll_p{page}" for page in range(1, layout.pages)] + (
+            ["ll_pr", "ll_px", "ll_v"] if module.probes else []
+        )
         decls.line(f"__slots__ = {slots_source(layout.page_attrs(0) + extra)}")
         decls.line()
         decls.line("def __init__(self):")
