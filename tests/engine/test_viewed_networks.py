@@ -1,11 +1,12 @@
 """Monitoring records only the networks a client views (issue 27): what a monitor frame shows is exact.
 
 The monitor variant stores a network's probes only while ``ll_v[n]`` says a client views it
-(``Simulation.view``, docs/runtime.md "Viewed networks"). The reference here is a second simulation of the same
-program recording every network, as the monitor variant did before; both run the same random LD programs under
+(``Simulation.view``, docs/runtime.md "Viewed networks"). The reference here is the debug variant of the same
+program, which records every probe in every scan and shares no code with the monitor variant; both run the same random LD programs under
 the same random writes while the views change between scans:
 
-* engine: every element of a network viewed since before the last scan shows what the reference shows (value,
+* engine (also with chunks small enough that each has its twin without probes, run while none of its networks
+  is viewed): every element of a network viewed since before the last scan shows what the reference shows (value,
   executed or not); the elements of a network viewed only since then are ``unknown``, never a stale value;
 * runner: the power flow a client holds after each frame (full frames replaced, the others applied as changes)
   equals the reference's at that frame's scan, every watched element included, also the networks a client
@@ -15,9 +16,11 @@ the same random writes while the views change between scans:
 
 from __future__ import annotations
 
+import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
+from ladderlab.engine.codegen import chunks
 from ladderlab.engine.simulation import Simulation
 from ladderlab.simulation.build import build_project
 from ladderlab.simulation.runner import SimRunner
@@ -43,16 +46,20 @@ def _shown(sim: Simulation, ids: list[str]) -> dict[str, object]:
     return {e: view.values.get(e) if e in view.executed else None for e in ids if e not in view.unknown}
 
 
-def _pair(project) -> tuple[Simulation, Simulation]:
-    build = build_project(project, "monitor")
-    assert build.compiled is not None, [d.message for d in build.diagnostics]
-    return build.simulation(), build.simulation()
+def _pair(project, chunk_statements: int = chunks.CHUNK_STATEMENTS) -> tuple[Simulation, Simulation]:
+    """A simulation of the monitor variant and the reference: the debug variant, which records every probe."""
+    with pytest.MonkeyPatch.context() as patch:  # small chunks: each has its twin without probes (codegen/pou.py)
+        patch.setattr(chunks, "CHUNK_STATEMENTS", chunk_statements)
+        builds = [build_project(project, variant) for variant in ("monitor", "debug")]
+        assert all(build.compiled is not None for build in builds), [d.message for d in builds[0].diagnostics]
+    return builds[0].simulation(), builds[1].simulation()
 
 
+@pytest.mark.parametrize("chunk_statements", [3, chunks.CHUNK_STATEMENTS])
 @fuzz_settings(fast=25)
 @given(project=ld_programs(), steps=st.lists(st.tuples(_views, _writes), min_size=1, max_size=8))
-def test_viewed_networks_show_what_recording_every_network_shows(project, steps):
-    viewed_sim, reference = _pair(project)
+def test_viewed_networks_show_what_recording_every_network_shows(chunk_statements, project, steps):
+    viewed_sim, reference = _pair(project, chunk_statements)
     networks = _networks(viewed_sim)
     viewed: set[int] = set()
     for scan, (view, writes) in enumerate(steps):
@@ -105,7 +112,7 @@ class _Frames:
     seek=st.integers(0, 20),
 )
 def test_frames_show_the_power_flow_of_every_watched_element_exactly(project, steps, seek):
-    live, reference = _pair(project)
+    live, reference = _pair(project, 3)
     networks = _networks(live)
     frames = _Frames()
     runner = SimRunner(live, frames, history_bytes=1 << 24)
