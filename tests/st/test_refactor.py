@@ -152,6 +152,35 @@ def test_renaming_a_global_or_a_program_changes_task_triggers_and_program_instan
     assert [(c.part, c.text) for c in changes] == [("task", "Tank1 : Main")]
 
 
+def test_a_renamed_global_or_program_renames_the_first_name_of_every_panel_path() -> None:
+    """Operator panel widgets name variables by path (docs/hmi.md): a path whose first name is the renamed
+    global or program follows it, in every binding field (bind, visible, a motion, a trend's paths); a member
+    or a longer name that only starts alike keeps its text, as an address does."""
+    lamp = {"type": "lamp", "id": "run", "x": 0, "y": 0, "w": 20, "h": 20, "bind": "Go", "visible": "Main.Go"}
+    lamp["move_x"] = {"path": "go[2]", "distance": 50}
+    trend = {"type": "trend", "id": "t", "x": 0, "y": 40, "w": 200, "h": 100, "paths": ["Main.Level", "GoFast"]}
+    trend["paths"].append("%IX0.0")
+    project = Project.model_validate(
+        {
+            "name": "hmi",
+            "globals": "VAR_GLOBAL Go : BOOL; GoFast : BOOL; END_VAR",
+            "pous": [{"name": "Main", "kind": "program", "language": "st", "declarations": "", "body": ""}],
+            "panels": [{"name": "Operator", "widgets": [lamp, trend]}],
+        }
+    )
+    renamed, changes = rename(project, "GO", "Start")
+    widgets = renamed.panels[0].widgets
+    assert (widgets[0].bind, widgets[0].visible, widgets[0].move_x.path) == ("Start", "Main.Go", "Start[2]")
+    assert widgets[1].paths == ["Main.Level", "GoFast", "%IX0.0"]
+    assert [(c.part, c.panel, c.element, c.text) for c in changes if c.part == "panel"] == [
+        ("panel", "Operator", "run", "Go"),
+        ("panel", "Operator", "run", "go[2]"),
+    ]
+    renamed, changes = rename(project, "Main", "Filler")
+    assert (renamed.panels[0].widgets[0].visible, renamed.panels[0].widgets[1].paths[0]) == ("Filler.Go", "Filler.Level")
+    assert [(r.element, r.text) for r in references(project, "main")] == [("run", "Main.Go"), ("t", "Main.Level")]
+
+
 def test_references_leave_out_the_definition() -> None:
     found = references(_project(), "Main")
     assert [(r.part, r.task, r.file) for r in found] == [("task", "Fast", None), ("test", None, "tests/t.st")]

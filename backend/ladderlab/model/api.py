@@ -423,7 +423,8 @@ class TestCheckRequest(BaseModel):
 class Reference(BaseModel):
     """One place that uses a project-level name (a POU, type or global), as a rename changes it or a
     delete would break it: the POU and its part, the line of a text or the network and element of a
-    diagram, the task, and the text there (the line, or the operand) as it was."""
+    diagram, the task, the operator panel and widget, and the text there (the line, the operand, the
+    widget's variable path) as it was."""
 
     pou: str | None = None
     part: Literal[
@@ -439,6 +440,7 @@ class Reference(BaseModel):
         "test",
         "extends",
         "implements",
+        "panel",
     ]
     member: str | None = Field(
         default=None,
@@ -452,6 +454,7 @@ class Reference(BaseModel):
     element: str | None = None
     task: str | None = None
     file: str | None = None
+    panel: str | None = Field(default=None, description="An operator panel's name (``element``: its widget's id).")
     text: str = ""
 
 

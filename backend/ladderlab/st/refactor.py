@@ -3,7 +3,8 @@
 A project-level name (a POU, a user type, a global variable) is used by ST texts (declarations,
 bodies, globals, types, test files, a function block's methods and properties), by its EXTENDS and IMPLEMENTS,
 by LD/FBD operands (contacts, coils, compares, box calls,
-instances and pin operands, FBD blocks and nodes) and by tasks (the programs they run). Renaming
+instances and pin operands, FBD blocks and nodes), by tasks (the programs they run) and by operator panels (a
+widget's variable path starts with a global or a program: ``Start``, ``Main.Level``). Renaming
 finds every use as an ST identifier token: comments, strings, literals (``T#5s``, ``16#FF``),
 direct addresses (``%IX0.1``) and member names after a ``.`` are never touched, so ``x.Main`` or
 ``'Main'`` keep their text. IEC names are case-insensitive; the new spelling replaces every use.
@@ -15,6 +16,7 @@ import re
 from typing import Any
 
 from ..model.api import Reference
+from ..model.hmi import MOTION_FIELDS, PATH_FIELDS
 from ..model.names import pou_name_problem
 from ..model.project import Project
 from .comments import blank_nested_comments
@@ -26,6 +28,8 @@ _TOKEN = re.compile(
     r"""|(?P<name>[A-Za-z_][A-Za-z0-9_]*)"""
 )
 _MEMBER = re.compile(r"\.\s*$")
+#: The first name of a variable path (``Main`` of ``Main.T1.Q``, ``Arr`` of ``Arr[2]``): a global or a program.
+_PATH_HEAD = re.compile(r"^\s*([A-Za-z_][A-Za-z0-9_]*)(?=\s*(?:$|[.\[]))")
 
 #: Keys of LD/FBD element objects whose value is ST operand text (a name, an expression, a call).
 _OPERAND_KEYS = ("var", "left", "right", "call", "instance", "expr")
@@ -115,6 +119,9 @@ def _visit(data: dict[str, Any], old: str, new: str, found: list[Reference], ski
     for test in data["tests"]:
         path = f"tests/{test['name']}.st"
         test["text"] = _text(test["text"], old, new, found, Reference(part="test", file=path))
+    for panel in data["panels"]:
+        for widget in panel["widgets"]:
+            _widget(widget, old, new, found, Reference(part="panel", panel=panel["name"], element=widget["id"]))
 
 
 def _object_orientation(pou: dict[str, Any], old: str, new: str, found: list[Reference]) -> None:
@@ -169,6 +176,26 @@ def _task(task: dict[str, Any], old: str, new: str, found: list[Reference]) -> N
                 if name_spans(value, old):
                     found.append(where.model_copy(update={"text": f"{program['name']}.{pin} := {value}"}))
                     pins[pin] = rename_in_text(value, old, new)
+
+
+def _widget(widget: dict[str, Any], old: str, new: str, found: list[Reference], where: Reference) -> None:
+    """A dumped panel widget's variable paths renamed in place where their first name is ``old``."""
+
+    def renamed(path: str) -> str:
+        head = _PATH_HEAD.match(path)
+        if head is None or head.group(1).upper() != old.upper():
+            return path
+        found.append(where.model_copy(update={"text": path}))
+        return path[: head.start(1)] + new + path[head.end(1) :]
+
+    for field in PATH_FIELDS:
+        if widget.get(field):
+            widget[field] = renamed(widget[field])
+    for field in MOTION_FIELDS:
+        if widget.get(field):
+            widget[field]["path"] = renamed(widget[field]["path"])
+    if widget.get("paths"):
+        widget["paths"] = [renamed(path) for path in widget["paths"]]
 
 
 def _body(body: Any, old: str, new: str, found: list[Reference], pou: str) -> Any:

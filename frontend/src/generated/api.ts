@@ -2698,7 +2698,8 @@ export interface components {
      * Reference
      * @description One place that uses a project-level name (a POU, type or global), as a rename changes it or a
      *     delete would break it: the POU and its part, the line of a text or the network and element of a
-     *     diagram, the task, and the text there (the line, or the operand) as it was.
+     *     diagram, the task, the operator panel and widget, and the text there (the line, the operand, the
+     *     widget's variable path) as it was.
      */
     Reference: {
       /** Element */
@@ -2719,6 +2720,11 @@ export interface components {
       /** Network Number */
       network_number?: number | null;
       /**
+       * Panel
+       * @description An operator panel's name (``element``: its widget's id).
+       */
+      panel?: string | null;
+      /**
        * Part
        * @enum {string}
        */
@@ -2734,7 +2740,8 @@ export interface components {
         | "task"
         | "test"
         | "extends"
-        | "implements";
+        | "implements"
+        | "panel";
       /** Pou */
       pou?: string | null;
       /** Task */
