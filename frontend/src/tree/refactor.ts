@@ -4,7 +4,18 @@
 import { http, unwrap } from "../api/client";
 import type { Reference } from "../generated/api";
 import type { Pou, Project } from "../generated/api";
+import { panelChange } from "../hmi/history";
+import { globalLine } from "../store/globals";
 import { typeLines } from "../store/types";
+
+/** A use of a name in this browser's session, not in the project: a watch list row or a traced variable. */
+export interface SessionUse {
+  part: "watch" | "trace";
+  text: string;
+}
+
+/** A place that uses a name: in the project (the server finds it) or in the session. */
+export type Use = Reference | SessionUse;
 
 /** The working copy with `oldName` renamed to `newName` in every POU, diagram, task and test file. */
 export const renameEverywhere = (project: Project, oldName: string, newName: string) =>
@@ -22,12 +33,30 @@ export async function typeReferences(project: Project, name: string): Promise<Re
   return (await referencesTo(project, name)).filter((r) => !isOwn(r));
 }
 
+/** Every place that uses global variable `name`, its own declaration left out (store/globals.ts globalLine). */
+export async function globalReferences(project: Project, name: string): Promise<Reference[]> {
+  const own = globalLine(project.globals ?? "", name);
+  return (await referencesTo(project, name)).filter((r) => !(r.part === "globals" && r.line === own));
+}
+
+/** The watch list rows and traced variables whose path starts with `name` (a global or a program). */
+export function sessionUses(name: string, watch: readonly string[], traced: readonly string[]): SessionUse[] {
+  const uses = (part: SessionUse["part"], paths: readonly string[]) =>
+    paths.filter((p) => renamedPath(p, name, "") !== p).map((text) => ({ part, text }));
+  return [...uses("watch", watch), ...uses("trace", traced)];
+}
+
 /** The working copy with a copy of POU `name` called `newName`. */
 export const duplicated = async (project: Project, name: string, newName: string) =>
   (await unwrap(http.POST("/api/refactor/duplicate", { body: { project, name, new_name: newName } }))).project;
 
-/** Where a reference is, in the words of the project tree ("Main, declarations line 2", "task Fast"). */
-export function describeReference(r: Reference): string {
+const inSession = (use: Use): use is SessionUse => use.part === "watch" || use.part === "trace";
+
+/** Where a reference is, in the words of the project tree ("Main, declarations line 2", "task Fast", "Watch list"). */
+export function describeReference(use: Use): string {
+  if (inSession(use)) return use.part === "watch" ? "Watch list" : "Trace";
+  const r: Reference = use;
+  if (r.part === "panel") return `panel ${r.panel}, widget ${r.element}`;
   if (r.part === "task") return `task ${r.task}`;
   if (r.part === "test") return `${r.file} line ${r.line}`;
   if (r.part === "globals") return `Global variables line ${r.line}`;
@@ -56,11 +85,12 @@ export function isEmptyPou(pou: Pou): boolean {
   return declared === "" && empty;
 }
 
-/** A watch path after `oldName` (a program or global) became `newName`: the first part only, as IEC names
- * are case-insensitive (MAIN.x -> Plant.x); other paths stay as typed. */
+/** A watch or trace path after `oldName` (a program or global) became `newName`: its first name only, in any
+ * case as IEC names are case-insensitive (MAIN.x -> Plant.x, Arr[1] -> Table[1]); other paths stay as typed.
+ * The server renames operator panels' paths the same way (st/refactor.py _PATH_HEAD). */
 export function renamedPath(path: string, oldName: string, newName: string): string {
-  const [first = "", ...rest] = path.split(".");
-  return first.toUpperCase() === oldName.toUpperCase() ? [newName, ...rest].join(".") : path;
+  const head = /^[A-Za-z_][A-Za-z0-9_]*(?=$|[.[])/.exec(path)?.[0];
+  return head?.toUpperCase() === oldName.toUpperCase() ? newName + path.slice(head.length) : path;
 }
 
 /** The project parts (as the unsaved-changes list names them) a rename's changes touch outside the POUs. */
@@ -71,6 +101,7 @@ export function changedParts(changes: readonly Reference[]): string[] {
     else if (c.part === "types") parts.add("part:types");
     else if (c.part === "task") parts.add("part:tasks");
     else if (c.part === "test" && c.file) parts.add(c.file);
+    else if (c.part === "panel" && c.panel) parts.add(panelChange(c.panel));
   }
   return [...parts];
 }
