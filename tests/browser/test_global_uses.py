@@ -52,7 +52,9 @@ PROJECT = {
     "panels": [
         {
             "name": "Operator",
-            "widgets": [{"type": "lamp", "id": "run", "x": 20, "y": 20, "w": 30, "h": 30, "label": "run", "bind": "Go"}],
+            "widgets": [
+                {"type": "lamp", "id": "run", "x": 20, "y": 20, "w": 30, "h": 30, "label": "run", "bind": "Go"}
+            ],
         }
     ],
 }
@@ -74,7 +76,9 @@ def test_a_global_deleted_from_the_table_lists_every_use_undoes_and_saves(page, 
     panels.get_by_label("Variable to trace").press("Enter")
     expect(panels.get_by_role("list", name="Traced variables")).to_contain_text("Go")
 
-    page.get_by_role("navigation", name="Project tree").get_by_role("button", name=re.compile("^Global variables")).click()
+    page.get_by_role("navigation", name="Project tree").get_by_role(
+        "button", name=re.compile("^Global variables")
+    ).click()
     editor = page.get_by_role("region", name="Global variables editor")
     editor.get_by_role("button", name="Remove Go").click()
     dialog = page.get_by_role("dialog", name="Delete global Go")

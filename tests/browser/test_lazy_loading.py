@@ -60,7 +60,15 @@ def test_st_and_fbd_editors_load_on_first_use(page, server: str) -> None:
     page.wait_for_load_state("networkidle")
     loaded = " ".join(scripts)
     assert "StEditor" not in loaded and "FbdPouView" not in loaded
-    for rare in ("diagnostics-", "TracePanel", "TestsPanel", "XrefPanel", "BreakpointsPanel", "ProjectParts", "dialogs-"):
+    for rare in (
+        "diagnostics-",
+        "TracePanel",
+        "TestsPanel",
+        "XrefPanel",
+        "BreakpointsPanel",
+        "ProjectParts",
+        "dialogs-",
+    ):
         assert rare not in loaded, f"{rare} is loaded before it is used"
     entry = [size for url, size in sizes.items() if "/assets/index-" in url]
     print(f"entry chunk {entry} bytes, opening scripts {sum(sizes.values())} bytes")

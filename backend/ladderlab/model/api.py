@@ -441,6 +441,7 @@ class Reference(BaseModel):
         "extends",
         "implements",
         "panel",
+        "method",
     ]
     member: str | None = Field(
         default=None,
@@ -464,6 +465,18 @@ class RenameRequest(BaseModel):
     model_config = ConfigDict(extra="forbid")
 
     project: Project
+    old_name: str
+    new_name: str
+
+
+class MemberRenameRequest(BaseModel):
+    """Body of ``POST /api/refactor/rename-member``: method or property ``old_name`` of function block ``pou`` renamed
+    with every call (issue 25 item 5)."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    project: Project
+    pou: str
     old_name: str
     new_name: str
 
