@@ -107,7 +107,7 @@ class MemberUses:
                     continue
                 if before.group("head") is not None and before.group("head").upper() not in self.instances:
                     continue
-            elif not (self.inside or self.own and scanned[match.end() :].lstrip().startswith("(")):
+            elif not (self.inside or (self.own and scanned[match.end() :].lstrip().startswith("("))):
                 continue
             found.append((match.start(), match.end()))
         return found
@@ -173,7 +173,7 @@ def _instances(declarations: str, family: frozenset[str]) -> frozenset[str]:
     """The names declared in ``declarations`` as an instance of one of ``family``, an array of them or a reference
     or pointer to one (upper case); nothing when the text does not parse (the check reports it)."""
     parsed = parse_declarations(declarations)
-    found = set()
+    found: set[str] = set()
     for block in parsed.ast or []:
         for decl in block.decls:
             spec = decl.type
@@ -217,14 +217,14 @@ def member_name_problem(project: Project, fb: str, old: str, new: str) -> str | 
     """Why method or property ``old`` of function block ``fb`` cannot become ``new`` (no such member, not an
     identifier, another member's name), or None."""
     pou = project.pou(fb)
-    members = [*(pou.methods if pou else []), *(pou.properties if pou else [])]
-    if pou is None or not any(m.name.upper() == old.upper() for m in members):
+    members = [m.name for m in pou.methods] + [p.name for p in pou.properties] if pou else []
+    if not any(m.upper() == old.upper() for m in members):
         return f"{fb} has no method or property called {old}"
     problem = pou_name_problem(new)
     if problem:
         return f"{new or 'an empty name'} is no IEC name: {problem}"
-    other = next((m for m in members if m.name.upper() == new.upper() and m.name.upper() != old.upper()), None)
-    return f"{fb} already has a member called {other.name}" if other else None
+    other = next((m for m in members if m.upper() == new.upper() and m.upper() != old.upper()), None)
+    return f"{fb} already has a member called {other}" if other else None
 
 
 def duplicate_pou(project: Project, name: str, copy: str) -> Project:
@@ -394,8 +394,8 @@ def _element(item: dict[str, Any], old: Target, new: str, found: list[Reference]
         if isinstance(value, str) and (spans := _spans(value, old)):
             found.append(here.model_copy(update={"text": value}))
             item[key] = _replaced(value, spans, new)
-    for pins in (item.get("inputs"), item.get("outputs")):
-        for pin, value in (pins or {}).items():
+    for pins in (item.get("inputs") or {}, item.get("outputs") or {}):
+        for pin, value in pins.items():
             if isinstance(value, str):
                 if spans := _spans(value, old):
                     found.append(here.model_copy(update={"text": f"{pin} := {value}"}))
