@@ -11,7 +11,14 @@ import { onlineStore } from "../online/store";
 import { debugStore } from "../debug/store";
 import { renamedPou } from "../breakpointPlaces/follow";
 import { traceStore } from "../trace/store";
-import { changedParts, describeReference, renamedPath, renameEverywhere, type Use } from "./refactor";
+import {
+  changedParts,
+  describeReference,
+  renamedPath,
+  renameEverywhere,
+  renameMemberEverywhere,
+  type Use,
+} from "./refactor";
 import { emptyDeclarations, workspaceStore } from "../store/project";
 import { FormError } from "../ui/FormError";
 import { Dialog, DialogFooter } from "../ui/TreeActions";
@@ -34,11 +41,29 @@ function ReferenceList({ references, empty }: { references: readonly Use[]; empt
 }
 
 /**
- * Rename a project-level name (a POU, a user type, a global variable) everywhere: the new name, a preview
- * of every change the server's refactoring makes, then one undoable step. A POU's open tab follows it.
+ * Rename a project-level name (a POU, a user type, a global variable) everywhere, or a method or property of
+ * function block `member` with its calls: the new name, a preview of every change the server's refactoring
+ * makes, then one undoable step. A POU's open tab follows it; the session's watch and trace paths follow a
+ * project-level name.
  */
-export function RenameDialog({ current, isPou, onClose }: { current: string; isPou: boolean; onClose(): void }) {
-  const [name, setName] = useState(current);
+export function RenameDialog({
+  current,
+  isPou,
+  member,
+  initial,
+  onClose,
+  onRenamed,
+}: {
+  current: string;
+  isPou: boolean;
+  /** The function block whose method or property `current` is. */
+  member?: string;
+  /** The new name to start from (else `current`). */
+  initial?: string;
+  onClose(): void;
+  onRenamed?(name: string): void;
+}) {
+  const [name, setName] = useState(initial ?? current);
   const [preview, setPreview] = useState<{ name: string; changes: Reference[]; session: Use[] } | null>(null);
   const [error, setError] = useState<string | null>(null);
   const [result, setResult] = useState<Awaited<ReturnType<typeof renameEverywhere>> | null>(null);
@@ -67,18 +92,23 @@ export function RenameDialog({ current, isPou, onClose }: { current: string; isP
           ],
           { renamed },
         );
-      // The session's paths follow (the watch list, the trace): the preview listed them.
-      const renamedIn = (paths: readonly string[]) => paths.map((p) => renamedPath(p, current, preview.name));
-      const online = onlineStore.getState();
-      online.restoreWatch(renamedIn(online.watch), renamedIn(online.watchExpanded));
-      traceStore.setState({ paths: renamedIn(traceStore.getState().paths) });
+      if (!member) {
+        // The session's paths follow (the watch list, the trace): the preview listed them.
+        const renamedIn = (paths: readonly string[]) => paths.map((p) => renamedPath(p, current, preview.name));
+        const online = onlineStore.getState();
+        online.restoreWatch(renamedIn(online.watch), renamedIn(online.watchExpanded));
+        traceStore.setState({ paths: renamedIn(traceStore.getState().paths) });
+      }
+      onRenamed?.(preview.name);
       onClose();
       return;
     }
     try {
-      const answer = await renameEverywhere(project, current, name.trim());
+      const answer = member
+        ? await renameMemberEverywhere(project, member, current, name.trim())
+        : await renameEverywhere(project, current, name.trim());
       setResult(answer);
-      setPreview({ name: name.trim(), changes: answer.changes, session: sessionUsesOf(current) });
+      setPreview({ name: name.trim(), changes: answer.changes, session: member ? [] : sessionUsesOf(current) });
       setError(null);
     } catch (err) {
       setError(message(err));
@@ -88,7 +118,7 @@ export function RenameDialog({ current, isPou, onClose }: { current: string; isP
   const ready = preview !== null && preview.name === name.trim();
   const places = preview ? preview.changes.length + preview.session.length : 0;
   return (
-    <Dialog title={`Rename ${current}`} onClose={onClose}>
+    <Dialog title={`Rename ${member ? `${member}.` : ""}${current}`} onClose={onClose}>
       <form onSubmit={(e) => void submit(e)}>
         <input
           aria-label="New name"

@@ -1,7 +1,15 @@
 import { afterEach, describe, expect, it, vi } from "vitest";
 import type { Pou, Reference } from "../generated/api";
 import { jsonResponse, stubFetch } from "../test/fetchStub";
-import { changedParts, describeReference, globalReferences, isEmptyPou, renamedPath, sessionUses } from "./refactor";
+import {
+  changedParts,
+  describeReference,
+  globalReferences,
+  isEmptyPou,
+  renamedPath,
+  renameMemberEverywhere,
+  sessionUses,
+} from "./refactor";
 import { copyName } from "../iec/identifier";
 
 const pou = (declarations: string, body: Pou["body"], language: Pou["language"] = "st"): Pou => ({
@@ -98,5 +106,19 @@ describe("what uses a global variable (issue 22 item 1: its delete lists them)",
       { part: "watch", text: "Go.x" },
       { part: "trace", text: "GO" },
     ]);
+  });
+});
+
+describe("a method renamed with its calls (issue 25 item 5)", () => {
+  afterEach(() => vi.unstubAllGlobals());
+
+  it("asks the server's member rename for the working copy and lists the declaration by its function block", async () => {
+    const project = { name: "p" };
+    const answer = { project, changes: [{ part: "method", pou: "Counter", member: "Old", text: "METHOD Old" }] };
+    const { sent } = stubFetch(() => jsonResponse(answer));
+    expect(await renameMemberEverywhere(project, "Counter", "Old", "Bump")).toEqual(answer);
+    expect(sent.map((r) => [r.method, r.path])).toEqual([["POST", "/api/refactor/rename-member"]]);
+    expect(JSON.parse(sent[0]!.body)).toEqual({ project, pou: "Counter", old_name: "Old", new_name: "Bump" });
+    expect(describeReference({ part: "method", pou: "Counter", member: "Old", text: "METHOD Old" })).toBe("Counter");
   });
 });

@@ -21,6 +21,11 @@ export type Use = Reference | SessionUse;
 export const renameEverywhere = (project: Project, oldName: string, newName: string) =>
   unwrap(http.POST("/api/refactor/rename", { body: { project, old_name: oldName, new_name: newName } }));
 
+/** The working copy with method or property `oldName` of function block `pou` called `newName`, with its overrides
+ * and every call (issue 25 item 5). */
+export const renameMemberEverywhere = (project: Project, pou: string, oldName: string, newName: string) =>
+  unwrap(http.POST("/api/refactor/rename-member", { body: { project, pou, old_name: oldName, new_name: newName } }));
+
 /** Every place in the working copy that uses `name` (what deleting it would break). */
 export const referencesTo = async (project: Project, name: string) =>
   (await unwrap(http.POST("/api/refactor/references", { body: { project, name } }))).references;
@@ -57,6 +62,7 @@ export function describeReference(use: Use): string {
   if (inSession(use)) return use.part === "watch" ? "Watch list" : "Trace";
   const r: Reference = use;
   if (r.part === "panel") return `panel ${r.panel}, widget ${r.element}`;
+  if (r.part === "method") return `${r.pou}`; // listed with its text: "METHOD Bump"
   if (r.part === "task") return `task ${r.task}`;
   if (r.part === "test") return `${r.file} line ${r.line}`;
   if (r.part === "globals") return `Global variables line ${r.line}`;
