@@ -17,6 +17,7 @@ import {
   renamedPath,
   renameEverywhere,
   renameMemberEverywhere,
+  renamedPous,
   type Use,
 } from "./refactor";
 import { emptyDeclarations, workspaceStore } from "../store/project";
@@ -74,10 +75,12 @@ export function RenameDialog({
     if (preview && result && preview.name === name.trim()) {
       const renamed: Record<string, string> = isPou ? { [current]: preview.name } : {};
       const changedPous = new Set(preview.changes.map((c) => c.pou).filter((p): p is string => !!p));
-      // The POU's breakpoints take its new name before the project changes (else they would be dropped as gone).
-      if (isPou)
+      // Breakpoints on the POU (or on the method and its overrides) take the new name before the project changes
+      // (else they would be dropped as gone).
+      const pous = renamedPous(current, preview.name, isPou, preview.changes);
+      if (pous.length)
         debugStore.getState().follow(
-          (bp) => renamedPou(bp, current, preview.name),
+          (bp) => pous.reduce((moved, [from, to]) => renamedPou(moved, from, to), bp),
           () => "",
         );
       workspaceStore
@@ -97,7 +100,9 @@ export function RenameDialog({
         const renamedIn = (paths: readonly string[]) => paths.map((p) => renamedPath(p, current, preview.name));
         const online = onlineStore.getState();
         online.restoreWatch(renamedIn(online.watch), renamedIn(online.watchExpanded));
-        traceStore.setState({ paths: renamedIn(traceStore.getState().paths) });
+        const trace = traceStore.getState();
+        const trigger = { ...trace.trigger, path: renamedPath(trace.trigger.path, current, preview.name) };
+        traceStore.setState({ paths: renamedIn(trace.paths), trigger });
       }
       onRenamed?.(preview.name);
       onClose();

@@ -32,9 +32,11 @@ export interface ItemOperations extends DeleteOperations {
   open?(name: string): void;
 }
 
-/** The watch list rows and traced variables of this session whose path starts with `name`. */
-export const sessionUsesOf = (name: string) =>
-  sessionUses(name, onlineStore.getState().watch, traceStore.getState().paths);
+/** The watch list rows, traced variables and trace trigger of this session whose path starts with `name`. */
+export function sessionUsesOf(name: string) {
+  const trace = traceStore.getState();
+  return sessionUses(name, onlineStore.getState().watch, trace.paths, trace.trigger.path);
+}
 
 /** The operations of a POU (the server's refactoring finds its uses and copies it). */
 export const pouOperations = (pou: Pou): ItemOperations => ({

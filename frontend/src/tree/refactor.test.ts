@@ -7,6 +7,7 @@ import {
   globalReferences,
   isEmptyPou,
   renamedPath,
+  renamedPous,
   renameMemberEverywhere,
   sessionUses,
 } from "./refactor";
@@ -101,11 +102,14 @@ describe("what uses a global variable (issue 22 item 1: its delete lists them)",
   });
 
   it("includes the watch list rows and traced variables that start with it, not those of a longer name", () => {
-    expect(sessionUses("Go", ["go", "Main.Go", "GoFast", "Go.x"], ["GO", "Level"])).toEqual([
+    expect(sessionUses("Go", ["go", "Main.Go", "GoFast", "Go.x"], ["GO", "Level"], "go")).toEqual([
       { part: "watch", text: "go" },
       { part: "watch", text: "Go.x" },
       { part: "trace", text: "GO" },
+      { part: "trigger", text: "go" },
     ]);
+    expect(sessionUses("Go", [], [], "")).toEqual([]);
+    expect(describeReference({ part: "trigger", text: "Go" })).toBe("Trace trigger");
   });
 });
 
@@ -120,5 +124,20 @@ describe("a method renamed with its calls (issue 25 item 5)", () => {
     expect(sent.map((r) => [r.method, r.path])).toEqual([["POST", "/api/refactor/rename-member"]]);
     expect(JSON.parse(sent[0]!.body)).toEqual({ project, pou: "Counter", old_name: "Old", new_name: "Bump" });
     expect(describeReference({ part: "method", pou: "Counter", member: "Old", text: "METHOD Old" })).toBe("Counter");
+  });
+
+  it("moves the breakpoints of the method and its overrides (engine POUs F.M), or of a renamed POU", () => {
+    const changes: Reference[] = [
+      { part: "method", pou: "Counter", member: "Old", text: "METHOD Old" },
+      { part: "body", pou: "Counter", member: "Twice", line: 1, text: "Old();" },
+      { part: "method", pou: "Fast", member: "old", text: "METHOD old" },
+      { part: "method", pou: "Tank", member: "Old", text: "PROPERTY Old" },
+    ];
+    expect(renamedPous("Old", "Bump", false, changes)).toEqual([
+      ["Counter.Old", "Counter.Bump"],
+      ["Fast.old", "Fast.Bump"],
+    ]);
+    expect(renamedPous("Main", "Plant", true, [])).toEqual([["Main", "Plant"]]);
+    expect(renamedPous("Speed", "Velocity", false, [{ part: "globals", line: 2, text: "Speed : INT;" }])).toEqual([]);
   });
 });

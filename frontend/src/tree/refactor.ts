@@ -8,9 +8,10 @@ import { panelChange } from "../hmi/history";
 import { globalLine } from "../store/globals";
 import { typeLines } from "../store/types";
 
-/** A use of a name in this browser's session, not in the project: a watch list row or a traced variable. */
+/** A use of a name in this browser's session, not in the project: a watch list row, a traced variable or the
+ * trace's trigger. */
 export interface SessionUse {
-  part: "watch" | "trace";
+  part: "watch" | "trace" | "trigger";
   text: string;
 }
 
@@ -44,22 +45,42 @@ export async function globalReferences(project: Project, name: string): Promise<
   return (await referencesTo(project, name)).filter((r) => !(r.part === "globals" && r.line === own));
 }
 
-/** The watch list rows and traced variables whose path starts with `name` (a global or a program). */
-export function sessionUses(name: string, watch: readonly string[], traced: readonly string[]): SessionUse[] {
+/** The watch list rows, traced variables and trace trigger whose path starts with `name` (a global or a program). */
+export function sessionUses(
+  name: string,
+  watch: readonly string[],
+  traced: readonly string[],
+  trigger = "",
+): SessionUse[] {
   const uses = (part: SessionUse["part"], paths: readonly string[]) =>
     paths.filter((p) => renamedPath(p, name, "") !== p).map((text) => ({ part, text }));
-  return [...uses("watch", watch), ...uses("trace", traced)];
+  return [...uses("watch", watch), ...uses("trace", traced), ...uses("trigger", trigger ? [trigger] : [])];
+}
+
+/** The engine's POUs a rename renames, as [old, new] pairs for the breakpoints on them: a POU itself, or a method
+ * `F.M` and its overrides (the changes list each declaration as part "method"). */
+export function renamedPous(
+  current: string,
+  next: string,
+  isPou: boolean,
+  changes: readonly Reference[],
+): [string, string][] {
+  if (isPou) return [[current, next]];
+  return changes
+    .filter((c) => c.part === "method" && (c.text ?? "").startsWith("METHOD "))
+    .map((c) => [`${c.pou}.${c.member}`, `${c.pou}.${next}`]);
 }
 
 /** The working copy with a copy of POU `name` called `newName`. */
 export const duplicated = async (project: Project, name: string, newName: string) =>
   (await unwrap(http.POST("/api/refactor/duplicate", { body: { project, name, new_name: newName } }))).project;
 
-const inSession = (use: Use): use is SessionUse => use.part === "watch" || use.part === "trace";
+const inSession = (use: Use): use is SessionUse =>
+  use.part === "watch" || use.part === "trace" || use.part === "trigger";
 
 /** Where a reference is, in the words of the project tree ("Main, declarations line 2", "task Fast", "Watch list"). */
 export function describeReference(use: Use): string {
-  if (inSession(use)) return use.part === "watch" ? "Watch list" : "Trace";
+  if (inSession(use)) return { watch: "Watch list", trace: "Trace", trigger: "Trace trigger" }[use.part];
   const r: Reference = use;
   if (r.part === "panel") return `panel ${r.panel}, widget ${r.element}`;
   if (r.part === "method") return `${r.pou}`; // listed with its text: "METHOD Bump"
