@@ -1,8 +1,8 @@
 """A global variable deleted from the Global variables table lists every use first (issue 22 item 1: "delete
 (with a list of what refers to it)"): the ST line, the LD contact by network number and label, the task's SINGLE
-trigger, the operator panel's widget, the watch list row and the traced variable, not its own declaration. The
-delete is one undoable step, and what is saved is the globals without it. A rename from the same table previews
-the watch list row with the project's places and renames it too. Screenshots go to tests/browser/artifacts/.
+trigger, the operator panel's widget, the watch list row, the traced variable and the trace's trigger, not its own
+declaration. The delete is one undoable step, and what is saved is the globals without it. A rename from the same
+table previews the watch list row with the project's places and renames it too. Screenshots go to tests/browser/artifacts/.
 """
 
 from __future__ import annotations
@@ -75,6 +75,7 @@ def test_a_global_deleted_from_the_table_lists_every_use_undoes_and_saves(page, 
     panels.get_by_label("Variable to trace").fill("Go")
     panels.get_by_label("Variable to trace").press("Enter")
     expect(panels.get_by_role("list", name="Traced variables")).to_contain_text("Go")
+    panels.get_by_label("Trigger variable").fill("go")
 
     page.get_by_role("navigation", name="Project tree").get_by_role(
         "button", name=re.compile("^Global variables")
@@ -91,6 +92,7 @@ def test_a_global_deleted_from_the_table_lists_every_use_undoes_and_saves(page, 
         "panel Operator, widget run Go",
         "Watch list Go",
         "Trace Go",
+        "Trace trigger go",
     ]
     expect(dialog).to_contain_text("These places use global Go and will no longer compile:")
     page.screenshot(path=str(ARTIFACTS / "global-delete-references.png"))
