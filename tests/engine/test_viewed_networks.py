@@ -142,3 +142,32 @@ def test_frames_show_the_power_flow_of_every_watched_element_exactly(project, st
         runner.live()
         runner._settle(publish=True)
         assert frames.power["MAIN"] == _shown(reference, list(watched))
+
+
+def test_a_fault_in_a_chunk_nobody_views_is_reported_as_in_the_fast_variant():
+    """A chunk whose networks nobody views runs its twin without probes: a fault there names the same network,
+    box and values as the fast variant's report."""
+    from ladderlab.model import ld
+    from ladderlab.model.project import Pou, Project
+
+    networks = [
+        ld.LdNetwork(id=f"n{i}", elements=[ld.Contact(id=f"a{i}", var="B0"), ld.Coil(id=f"c{i}", var="B1")])
+        for i in range(10)
+    ]
+    divide = ld.Box(id="d", call="DIV", en=True, inputs={"IN1": "X", "IN2": "Y"}, outputs={"OUT": "X"})
+    networks.append(ld.LdNetwork(id="nd", elements=[ld.Contact(id="a", var="B0"), divide, ld.Coil(id="c", var="B1")]))
+    declarations = "VAR B0 : BOOL := TRUE; B1 : BOOL; X : INT := 7; Y : INT; END_VAR"
+    pou = Pou(name="Main", kind="program", language="ld", declarations=declarations, body=ld.LdBody(networks=networks))
+    reports = []
+    for variant in ("fast", "monitor"):
+        with pytest.MonkeyPatch.context() as patch:
+            patch.setattr(chunks, "CHUNK_STATEMENTS", 3)
+            sim = build_project(Project(name="p", pous=[pou]), variant).simulation()
+        if variant == "monitor":
+            assert "ll_kf" in sim.compiled.source  # the chunks have their twins
+            sim.view({})
+        sim.cycle(1)
+        assert sim.fault is not None
+        reports.append(sim.fault.diagnostic().message)
+    assert reports[0] == reports[1]
+    assert "division by zero: 7 / 0 at POU MAIN, network 11, DIV" in reports[1]
