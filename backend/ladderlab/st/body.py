@@ -422,6 +422,8 @@ class BodyChecker:
                 return combined
             self.report("ST-TYPE-MISMATCH", f"{op} needs BOOL or bit strings (ANY_BIT), not {combined}", node)
             return ERROR
+        if t.codesys_typing() and t.category(combined) == "bits":
+            return combined  # CODESYS: arithmetic on a bit string, as the unsigned integer of its width
         if op == "MOD":
             if t.in_family(combined, "ANY_INT"):
                 return combined

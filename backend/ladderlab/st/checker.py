@@ -591,7 +591,8 @@ def _parse_types(text: str, *, file: str, pou: None = None):
 def check_project(project: Project) -> CheckResult:
     """Parse and check every text of ``project`` and of the libraries it uses; see ``CheckResult`` for what is
     resolved."""
-    return ProjectChecker(with_libraries(project)).run()
+    with t.typing_rules(project.typing):
+        return ProjectChecker(with_libraries(project)).run()
 
 
 def check_identifier(name: str, node: Any, report: Reporter) -> None:
