@@ -109,6 +109,8 @@ class _Walker:
             if node.ty.info.signed or node.op == "+":
                 return self._promote(node)
             return self._refuse(node, f"'{node.op}' on")
+        if node.op in ("=", "<>"):
+            return self.equality(node)
         inner = min(cut, width) if node.op in _BITWISE and cut is not None and width is not None else None
         promoted = self.expr(node.left, inner) | self.expr(node.right, inner)
         if not promoted or node.op in _COMPARISONS:  # a comparison works in its operands' lub (the lowering)
@@ -116,6 +118,19 @@ class _Walker:
         if node.op in ("/", "MOD", "+", "-", "*"):
             return self._promote(node)
         return self._refuse(node, f"'{node.op}' on")
+
+    def equality(self, node: ast.Binary) -> bool:
+        """``(w2 - 1) = w1`` on unsigned narrow operands is FALSE on every target (CODESYS "Operators", example 2):
+        a register below 0, read signed or unsigned, equals no value of a narrow unsigned type. So an unsigned
+        ``-`` compared for equality with one computes in DINT too."""
+        for side, other in ((node.left, node.right), (node.right, node.left)):
+            if _unsigned_narrow(other.ty) and _unsigned_subtraction(side):
+                self.expr(side.left, None)
+                self.expr(side.right, None)
+                self._promote(side)
+                continue
+            self.expr(side, None)
+        return False
 
     def call(self, node: ast.Call, cut: int | None) -> bool:
         name = node.callee.name.upper() if isinstance(node.callee, ast.Name) else ""
@@ -150,7 +165,9 @@ _EXPRESSIONS = (ast.Binary, ast.Unary, ast.Call, ast.Member, ast.Deref, ast.Inde
 
 def _conversion_target(name: str) -> str | None:
     """``WORD`` for ``TO_WORD`` / ``DINT_TO_WORD`` (an integer or bit-string conversion), else None."""
-    target = name.removeprefix("TO_") if name.startswith("TO_") else name.rpartition("_TO_")[2] if "_TO_" in name else ""
+    target = (
+        name.removeprefix("TO_") if name.startswith("TO_") else name.rpartition("_TO_")[2] if "_TO_" in name else ""
+    )
     return target if _width(t.elementary(target)) is not None else None
 
 
@@ -181,6 +198,15 @@ def _any_integer(callee: Any, position: int, arg: ast.Arg) -> bool:
     name = arg.name if arg.name is not None else callee.input_name(position)
     pin = callee.pin(name) if name is not None else None
     return pin is not None and not pin.generic and pin.type == "ANY_INT"
+
+
+def _unsigned_subtraction(node: Any) -> bool:
+    return isinstance(node, ast.Binary) and node.op == "-" and _unsigned_narrow(node.ty) and not _literal_only(node)
+
+
+def _unsigned_narrow(ty: Any) -> bool:
+    width = _width(ty)
+    return width is not None and width < REGISTER_BITS and not ty.info.signed
 
 
 def _literal_only(node: Any) -> bool:
