@@ -167,3 +167,13 @@ def test_iec_typing_stays_the_default_and_refuses_all_of_it():
         "ST-TYPE-MISMATCH 8",
         "ST-TYPE-MISMATCH 9",
     ]
+
+
+def test_a_bit_string_indexes_an_array_and_selects_a_case_branch():
+    """CODESYS takes a BYTE as an array index and a CASE selector, as its unsigned value: a[b] with b = 3 is the
+    element 30, CASE b OF 3: 'three' branch."""
+    text = program(
+        "a : ARRAY [0..5] OF INT := [0, 10, 20, 30, 40, 50]; b : BYTE := 3; x : INT; branch : INT;",
+        "x := a[b]; CASE b OF 1: branch := 1; 3: branch := 3; ELSE branch := -1; END_CASE;",
+    )
+    assert _scan(text, "x", "branch") == [30, 3]

@@ -315,7 +315,7 @@ class BodyChecker:
         base = self.expr(node.base)
         for index in node.indices:
             index_type = self.expr(index)
-            if index_type is not ERROR and not t.in_family(index_type, "ANY_INT"):
+            if index_type is not ERROR and not t.counts(index_type):
                 self.report("ST-TYPE-MISMATCH", f"an array index must be an integer (ANY_INT), not {index_type}", index)
         if isinstance(base, t.ArrayType):
             if len(node.indices) != len(base.dims):

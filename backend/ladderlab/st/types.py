@@ -279,6 +279,12 @@ def _widens_name(s: str, d: str, codesys: bool = False) -> bool:
     return s == "REAL" and d == "LREAL"  # integer -> REAL always needs a conversion (ST-20)
 
 
+def counts(t: Type) -> bool:
+    """Whether ``t`` may index an array or select a CASE branch: an integer (ANY_INT), or under CODESYS typing also
+    a bit string (its value as the unsigned integer of its width)."""
+    return in_family(t, "ANY_INT") or (codesys_typing() and category(t) == "bits")
+
+
 def narrows(target: Type, source: Type) -> bool:
     """CODESYS typing: an integer or bit string stored in a narrower (or differently signed) one, or an LREAL in a
     REAL: accepted with a warning, the value cut to the target's bits (LREAL: rounded to binary32) as CODESYS does."""
