@@ -32,7 +32,7 @@ def add_library_option(command: argparse.ArgumentParser) -> None:
 def using_libraries(project: Project, args: argparse.Namespace) -> Project:
     """``project`` with the ``--library`` options added to the libraries it lists, and the ``--typing`` rules."""
     extra = [name for name in args.library if name not in project.libraries]
-    update: dict = {"libraries": [*project.libraries, *extra]} if extra else {}
+    update: dict[str, object] = {"libraries": [*project.libraries, *extra]} if extra else {}
     if getattr(args, "typing", None) is not None:
         update["typing"] = args.typing
     return project.model_copy(update=update) if update else project
