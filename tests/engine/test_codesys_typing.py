@@ -177,3 +177,11 @@ def test_a_bit_string_indexes_an_array_and_selects_a_case_branch():
         "x := a[b]; CASE b OF 1: branch := 1; 3: branch := 3; ELSE branch := -1; END_CASE;",
     )
     assert _scan(text, "x", "branch") == [30, 3]
+
+
+def test_min_and_max_of_a_register_value_choose_among_the_uncut_values():
+    """``MAX(links, i - 1)`` in CODESYS compares the register's values: with i = -32768 (INT), i - 1 is -32769 in
+    the 32-bit register, so MAX(-32768, -32769) = -32768; a 16-bit INT would have wrapped i - 1 to 32767 and chosen
+    it. Stored into an INT the result is -32768 either way only when chosen from the uncut values."""
+    text = program("links : INT := -32768; i : INT := -32768; rechts : INT;", "rechts := MAX(links, i - 1);")
+    assert _scan(text, "rechts") == [-32768]

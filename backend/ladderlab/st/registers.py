@@ -13,8 +13,8 @@ INT); this pass, run on a checked body, finds where that would give another valu
   an unsigned ``+`` of two 16-bit values never leaves DINT); a division, MOD or negation of such a value too;
 * what the register's value would be is unknown or target dependent, it is refused with ST-CODESYS-REGISTER, located
   at the operation: an unsigned ``-`` or ``*`` (the register's sign), a typed conversion ``INT_TO_REAL`` of a
-  promoted value (converted before or after the cut?), a bitwise operation, shift or generic function (MIN, LIMIT)
-  of one, a FOR loop's end or step.
+  promoted value (converted before or after the cut?), a bitwise operation or shift of one, a FOR loop's end or
+  step. MIN, MAX, LIMIT, SEL, MUX and MOVE of a promoted value give one of their inputs: they compute in DINT too.
 
 Operations of 32 bits wrap in 32 bits, as on a 32-bit target (x86, ARM); CODESYS on x64 computes them in 64 bits and
 may give another value on an overflow (docs/st.md "CODESYS typing").
@@ -33,6 +33,9 @@ from .symbols import PouInfo, Symbol
 REGISTER_BITS = 32
 _MODULAR = frozenset({"+", "-", "*"})
 _COMPARISONS = frozenset({"=", "<>", "<", ">", "<=", ">="})
+_COMPARING = frozenset({"GT", "GE", "EQ", "LE", "LT", "NE"})
+#: Standard functions whose result is one of their (generic) inputs.
+_SELECTING = frozenset({"MIN", "MAX", "LIMIT", "SEL", "MUX", "MOVE"})
 DINT = t.Elementary("DINT")
 _BITWISE = frozenset({"AND", "OR", "XOR"})
 
@@ -141,9 +144,13 @@ class _Walker:
                 promoted |= self.expr(arg.value, _width(t.elementary(target)))
             elif self.expr(arg.value, _width(_input_type(node.ref, position, arg))):
                 promoted |= not _any_integer(node.ref, position, arg)
-        if promoted and not name.startswith("TO_"):  # an overloaded TO_x takes the promoted type as it is
-            self._refuse(node, "a call of")
-        return False
+        if not promoted or name.startswith("TO_"):  # an overloaded TO_x takes the promoted type as it is
+            return False
+        if name in _COMPARING:  # GT(a, b) ...: compares in its arguments' lub, as the operators do
+            return False
+        if name in _SELECTING and isinstance(node.ref, stdlib.StdFunction) and node.ref.result == stdlib.T:
+            return self._promote(node)  # MIN, LIMIT, SEL ... give one of their inputs: the register's value
+        return self._refuse(node, "a call of")
 
     def _promote(self, node: Any) -> bool:
         node.ty = DINT
