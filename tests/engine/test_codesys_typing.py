@@ -185,3 +185,25 @@ def test_min_and_max_of_a_register_value_choose_among_the_uncut_values():
     it. Stored into an INT the result is -32768 either way only when chosen from the uncut values."""
     text = program("links : INT := -32768; i : INT := -32768; rechts : INT;", "rechts := MAX(links, i - 1);")
     assert _scan(text, "rechts") == [-32768]
+
+
+def test_an_action_computes_in_the_register_too():
+    """The register rule holds in a function block's ACTION as in its body (example 1): d := i1 + i2 with INT 30000
+    and 30000 is 60000 in a DINT; ``q := (w - 1) < w`` on a WORD is refused there too (ST-CODESYS-REGISTER)."""
+    fb = """
+FUNCTION_BLOCK Adder
+VAR i1 : INT := 30000; i2 : INT := 30000; END_VAR
+VAR_OUTPUT d : DINT; END_VAR
+ACTION Add:
+    d := i1 + i2;
+END_ACTION
+END_FUNCTION_BLOCK
+"""
+    text = fb + program("adder : Adder; d : DINT;", "adder.Add(); d := adder.d;")
+    assert _scan(text, "d") == [60000]
+    refused = fb.replace("d := i1 + i2;", "d := i1 + i2;\n    q := (w - 1) < w;").replace(
+        "VAR_OUTPUT d : DINT; END_VAR", "VAR_OUTPUT d : DINT; END_VAR\nVAR w : WORD; q : BOOL; END_VAR"
+    )
+    assert [line.split(":")[0] for line in _diagnostics(refused + program("adder : Adder;", "adder.Add();"))] == [
+        "ST-CODESYS-REGISTER 8"
+    ]
