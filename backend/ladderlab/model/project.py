@@ -19,6 +19,9 @@ PROJECT_FORMAT: ProjectFormat = "ladderlab/1"
 #: runs in the plant task before the control tasks of every scan and cannot be called from control code.
 PouKind = Literal["program", "function_block", "function", "plant"]
 Language = Literal["st", "ld", "fbd", "cfc", "il", "sfc"]
+#: The type rules a project's ST is checked by: IEC 61131-3 (strict, the default) or CODESYS V3's (docs/st.md).
+Typing = Literal["iec", "codesys"]
+
 #: Vendor compatibility libraries a project may use, as a TwinCAT project adds them in its library manager; their
 #: functions are ST source shipped with LadderLab (st/library_sources/, docs/st.md "Vendor libraries").
 LibraryName = Literal["Tc2_Math", "Tc2_Utilities"]
@@ -264,6 +267,11 @@ class Project(BaseModel):
         default_factory=list,
         description="Vendor compatibility libraries the project uses; a POU of the project shadows a library "
         "function of the same name.",
+    )
+    typing: Typing = Field(
+        default="iec",
+        description="Type rules of the ST checker: 'iec' (IEC 61131-3, the default) or 'codesys' (CODESYS V3's "
+        'arithmetic on bit strings, shifts on integers, implicit conversions; docs/st.md "CODESYS typing").',
     )
 
     _normalise_texts = field_validator("types", "globals", "exercise", mode="before")(_strip_trailing_whitespace)
