@@ -18,23 +18,10 @@ from fastapi.staticfiles import StaticFiles
 from .. import __version__
 from ..model.api import Health
 from ..storage import Workspace
-from . import (
-    auth,
-    fbd,
-    interchange,
-    library,
-    live_check,
-    monitor,
-    projects,
-    refactor,
-    simulations,
-    symbols,
-    tests,
-    xref,
-)
 from .context import registry_of
 from .errors import install_error_handlers
 from .limits import BodySizeLimit, JsonGuard, Limits, WebsocketLimit
+from .routes import LazyRoutes
 from .security import Security, SecurityMiddleware
 
 STATIC_DIR = Path(__file__).parent / "static"
@@ -63,7 +50,10 @@ def create_app(workspace: Workspace, limits: Limits | None = None, security: Sec
     app.state.limits = limits or Limits()
     app.state.security = security or Security()
     install_error_handlers(app)
-    # the last added runs first: security checks, open websockets, body size, JSON guard
+    # the ~50 API routes build their validators when their modules are imported (~0.25 s of CPU): they are included
+    # at the first request other than /api/health, or the first OpenAPI document (startup, issue 27)
+    LazyRoutes.install(app, lambda: _include_routes(app))
+    # the last added runs first: security checks, open websockets, body size, JSON guard, the lazy routes
     app.add_middleware(JsonGuard)
     app.add_middleware(BodySizeLimit, max_bytes=app.state.limits.max_body_bytes)
     app.add_middleware(WebsocketLimit, max_open=app.state.limits.max_websockets)
@@ -73,23 +63,18 @@ def create_app(workspace: Workspace, limits: Limits | None = None, security: Sec
     async def health() -> Health:  # on the event loop: answers whatever the worker threads are doing
         return Health(status="ok", version=__version__)
 
-    for module in (
-        projects,
-        symbols,
-        library,
-        simulations,
-        monitor,
-        interchange,
-        fbd,
-        live_check,
-        refactor,
-        auth,
-        tests,
-        xref,
-    ):
-        app.include_router(module.router)
-    app.include_router(projects.examples_router)
+    return app
 
+
+def _include_routes(app: FastAPI) -> None:
+    """The API's routes, then the browser app under ``/`` (a catch-all mount, so last)."""
+    from . import auth, fbd, interchange, library, live_check, monitor, projects, refactor, simulations, symbols
+    from . import tests, xref
+
+    for module in (projects, symbols, library, simulations, monitor, interchange, fbd, live_check, refactor, auth, tests):
+        app.include_router(module.router)
+    app.include_router(xref.router)
+    app.include_router(projects.examples_router)
     if (STATIC_DIR / "index.html").is_file():
         app.mount("/", StaticFiles(directory=STATIC_DIR, html=True), name="app")
     else:
@@ -97,5 +82,3 @@ def create_app(workspace: Workspace, limits: Limits | None = None, security: Sec
         @app.get("/", response_class=HTMLResponse, include_in_schema=False)
         def placeholder() -> str:
             return _PLACEHOLDER
-
-    return app
