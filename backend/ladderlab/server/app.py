@@ -68,12 +68,36 @@ def create_app(workspace: Workspace, limits: Limits | None = None, security: Sec
 
 def _include_routes(app: FastAPI) -> None:
     """The API's routes, then the browser app under ``/`` (a catch-all mount, so last)."""
-    from . import auth, fbd, interchange, library, live_check, monitor, projects, refactor, simulations, symbols
-    from . import tests, xref
+    from . import (
+        fbd,
+        interchange,
+        library,
+        live_check,
+        login,
+        monitor,
+        projects,
+        refactor,
+        simulations,
+        symbols,
+        tests,
+        xref,
+    )
 
-    for module in (projects, symbols, library, simulations, monitor, interchange, fbd, live_check, refactor, auth, tests):
+    for module in (
+        projects,
+        symbols,
+        library,
+        simulations,
+        monitor,
+        interchange,
+        fbd,
+        live_check,
+        refactor,
+        login,
+        tests,
+        xref,
+    ):
         app.include_router(module.router)
-    app.include_router(xref.router)
     app.include_router(projects.examples_router)
     if (STATIC_DIR / "index.html").is_file():
         app.mount("/", StaticFiles(directory=STATIC_DIR, html=True), name="app")
