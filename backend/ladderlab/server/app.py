@@ -7,6 +7,7 @@ This module only assembles the app; routes live in one module per resource
 from __future__ import annotations
 
 import threading
+import warnings
 from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
 from pathlib import Path
@@ -14,9 +15,11 @@ from pathlib import Path
 from fastapi import FastAPI, Request, Response
 from fastapi.responses import HTMLResponse
 from fastapi.staticfiles import StaticFiles
+from pydantic.warnings import UnsupportedFieldAttributeWarning
 
 from .. import __version__
 from ..model.api import Health
+from ..model.base import build_all
 from ..storage import Workspace
 from .context import registry_of
 from .errors import install_error_handlers
@@ -76,6 +79,11 @@ async def _health_answer(request: Request) -> Response:
 def _include_routes(app: FastAPI) -> None:
     """The API's routes (``/api/health`` again, for the OpenAPI document), then the browser app under ``/`` (a
     catch-all mount, so last)."""
+    build_all()
+    # FastAPI wraps a body parameter's model in ``Annotated[Model, Field(alias=...)]`` and silences pydantic's warning
+    # about that alias while it builds the validator; over a deferred model the validator is built at the first request
+    # instead, outside FastAPI's filter, so the filter is the app's (fastapi/_compat/v2.py ModelField.__post_init__)
+    warnings.filterwarnings("ignore", category=UnsupportedFieldAttributeWarning)
     from . import (
         fbd,
         interchange,
