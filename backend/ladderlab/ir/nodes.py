@@ -59,7 +59,7 @@ def node_fields(node: Any) -> dict[str, Any]:
 def node_copy(node: T, changes: dict[str, Any]) -> T:
     """A copy of an IR node with ``changes``, without the frozen dataclasses' checks or ``__post_init__``."""
     copy = object.__new__(type(node))
-    for name in node.__slots__:  # type: ignore[attr-defined]
+    for name in node.__slots__:  # type: ignore[attr-defined]  # every IR node class has slots
         object.__setattr__(copy, name, changes[name] if name in changes else getattr(node, name))
     return copy
 

@@ -35,7 +35,7 @@ class LazyRoutes:
             lazy.ensure()
             return openapi()
 
-        app.openapi = openapi_with_routes  # type: ignore[method-assign]
+        app.openapi = openapi_with_routes  # type: ignore[method-assign]  # FastAPI documents replacing it
         app.add_middleware(_Middleware, lazy=lazy)
 
     def ensure(self) -> None:
