@@ -79,7 +79,7 @@ async def _health_answer(request: Request) -> Response:
 def _include_routes(app: FastAPI) -> None:
     """The API's routes (``/api/health`` again, for the OpenAPI document), then the browser app under ``/`` (a
     catch-all mount, so last)."""
-    build_all()
+    build_all()  # the deferred models (model/base.py), here with the routes rather than in the first answers
     # FastAPI wraps a body parameter's model in ``Annotated[Model, Field(alias=...)]`` and silences pydantic's warning
     # about that alias while it builds the validator; over a deferred model the validator is built at the first request
     # instead, outside FastAPI's filter, so the filter is the app's (fastapi/_compat/v2.py ModelField.__post_init__)
