@@ -4,8 +4,9 @@ from __future__ import annotations
 
 from typing import Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validator, model_validator
+from pydantic import ConfigDict, Field, ValidationInfo, field_validator, model_validator
 
+from .base import Model
 from .cfc import CfcBody
 from .fbd import FbdBody
 from .hmi import Panel
@@ -47,7 +48,7 @@ def _strip_trailing_whitespace(value: Any) -> Any:
 MethodAccess = Literal["PUBLIC", "PRIVATE", "PROTECTED", "INTERNAL"]
 
 
-class Method(BaseModel):
+class Method(Model):
     """A METHOD of a FUNCTION_BLOCK (IEC 61131-3 ed. 3, CODESYS): its own variables and ST body; it works on the
     variables of the instance it is called on (docs/st.md, object orientation)."""
 
@@ -64,7 +65,7 @@ class Method(BaseModel):
     _normalise_texts = field_validator("declarations", "body", mode="before")(_strip_trailing_whitespace)
 
 
-class Accessor(BaseModel):
+class Accessor(Model):
     """A PROPERTY's GET or SET: its own variables and ST body (GET assigns the property's name, SET reads it)."""
 
     model_config = ConfigDict(extra="forbid")
@@ -75,7 +76,7 @@ class Accessor(BaseModel):
     _normalise_texts = field_validator("declarations", "body", mode="before")(_strip_trailing_whitespace)
 
 
-class Property(BaseModel):
+class Property(Model):
     """A PROPERTY of a FUNCTION_BLOCK (CODESYS, IEC 61131-3 ed. 3 draft): read as ``inst.P`` through its GET,
     written as ``inst.P := v`` through its SET; a missing accessor makes it write-only or read-only."""
 
@@ -88,7 +89,7 @@ class Property(BaseModel):
     set: Accessor | None = None
 
 
-class PouAction(BaseModel):
+class PouAction(Model):
     """An ACTION of a FUNCTION_BLOCK outside SFC (CODESYS; IEC 61131-3 ed. 2's action syntax): statements that run
     on the variables of the instance it is called on - ``inst.Action();`` in ST, ``CAL inst.Action`` in IL,
     ``Action();`` in the FB itself (IL-08). No variables or parameters of its own (docs/st.md, "Actions")."""
@@ -101,7 +102,7 @@ class PouAction(BaseModel):
     _normalise_texts = field_validator("body", mode="before")(_strip_trailing_whitespace)
 
 
-class Pou(BaseModel):
+class Pou(Model):
     """A program organisation unit. ``body`` is ST or IL text, an ``LdBody``, an ``FbdBody``, a ``CfcBody`` (one
     FBD chart) or an ``SfcBody`` per ``language``."""
 
@@ -156,7 +157,7 @@ class Pou(BaseModel):
         return self
 
 
-class ProgramInstance(BaseModel):
+class ProgramInstance(Model):
     """A program instance: ``PROGRAM name WITH task : type (inputs, outputs)`` (IEC 61131-3 2.7.1, CFG-06)."""
 
     model_config = ConfigDict(extra="forbid")
@@ -174,7 +175,7 @@ class ProgramInstance(BaseModel):
     )
 
 
-class Task(BaseModel):
+class Task(Model):
     model_config = ConfigDict(extra="forbid")
 
     name: str
@@ -198,7 +199,7 @@ class Task(BaseModel):
     )
 
 
-class Resource(BaseModel):
+class Resource(Model):
     """A RESOURCE of a configuration (``RESOURCE name ON processor``): its globals and its tasks."""
 
     model_config = ConfigDict(extra="forbid")
@@ -214,7 +215,7 @@ class Resource(BaseModel):
     _normalise_texts = field_validator("globals", mode="before")(_strip_trailing_whitespace)
 
 
-class Configuration(BaseModel):
+class Configuration(Model):
     """The IEC configuration a project runs as (CONFIGURATION ... END_CONFIGURATION, CFG-01..08)."""
 
     model_config = ConfigDict(extra="forbid")
@@ -231,7 +232,7 @@ class Configuration(BaseModel):
         return [task for resource in self.resources for task in resource.tasks]
 
 
-class TestFile(BaseModel):
+class TestFile(Model):
     """A file of unit tests, ``tests/<name>.st`` in the project folder (docs/testing.md).
 
     Tests a teacher hides from students live in ``tests/hidden/`` and are not part of the model: the
@@ -244,7 +245,7 @@ class TestFile(BaseModel):
     _normalise_texts = field_validator("text", mode="before")(_strip_trailing_whitespace)
 
 
-class Project(BaseModel):
+class Project(Model):
     model_config = ConfigDict(extra="forbid")
 
     name: str
