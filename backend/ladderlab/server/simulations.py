@@ -116,10 +116,10 @@ def _open_recording(
     entry = _built(name, stored, registry)
     timeout = entry.handle.settings.build_timeout_s  # the scans run at once: as long as a history question
     try:
-        info = _command(entry, "open_recording", timeout=timeout, inputs=record.inputs, scans=record.scans)
-    except ApiError:
+        info = simulation_info(entry, entry.handle.open_recording(record.inputs, record.scans, timeout))
+    except CommandError as error:
         registry.delete(entry.id)
-        raise
+        raise ApiError(409 if error.code == "bad_state" else 422, error.message) from None
     except TimeoutError:
         registry.delete(entry.id)
         raise ApiError(
@@ -166,7 +166,8 @@ def stop(sim_id: str, registry: RegistryDep, response: Response) -> SimulationIn
 def reset(sim_id: str, registry: RegistryDep, body: Annotated[ResetSimulation | None, Body()] = None) -> SimulationInfo:
     """Stop and restart warm (RETAIN variables keep their values) or cold; clears faults; forces stay.
 
-    A simulation whose process was ended (it stopped answering or crashed) starts again in a new one."""
+    A simulation whose process was ended (it stopped answering or crashed) starts again in a new one; one opened from
+    a recording opens it again there (history only). A recording shown history only is not reset (409)."""
     entry = registry.get(sim_id)
     if not entry.handle.alive:
         try:

@@ -27,7 +27,7 @@ import time
 from collections import deque
 from collections.abc import Callable, Sequence
 from concurrent.futures import Future
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from multiprocessing.connection import Connection
 from multiprocessing.process import BaseProcess
 from typing import TYPE_CHECKING, Any, Protocol
@@ -152,6 +152,7 @@ class SimulationHandle:
         self._send_lock = threading.Lock()
         self._listeners: list[Listener] = []
         self._watches: dict[int, dict[str, Any]] = {}  # client key -> its watch request (sent again after a restart)
+        self._recording: dict[str, Any] | None = None  # the recording opened (open_recording): opened again by restart
         self._requests = _Requests()
         self._process: BaseProcess | None = None
         self._connection: Connection | None = None
@@ -281,7 +282,8 @@ class SimulationHandle:
             waiting, self._requests.waiting = self._requests.waiting, {}
             self.status = Status(type="status", state="faulted")
             fault = Diagnostic(code=RUNTIME_FAULT, message=reason)
-            self.info = {**self.info, "state": "faulted", "fault": fault.model_dump(mode="json")}
+            self.info = {**self.info, "state": "faulted", "fault": fault.model_dump(mode="json"), "history": None}
+            self.frame = replace(self.frame, seq=self.frame.seq + 1, history=None)  # the history was in the process
             listeners = list(self._listeners)
         self._end_process()
         self.traces = TraceInbox()
@@ -290,10 +292,21 @@ class SimulationHandle:
         self._record(Log(type="log", kind=kind, level="error", message=reason))
         for listener in listeners:
             listener.event(self.status)
+            listener.frame()
 
     def restart(self) -> None:
-        """Start a new process for a simulation whose process was ended (a reset of a faulted simulation)."""
+        """Start a new process for a simulation whose process was ended (a reset of a faulted simulation). A
+        simulation opened from a recording opens it again: its recorded scans are never lost, and are history only
+        again (what ran after a "Continue from here" was in the process that ended)."""
         self.launch()
+        recording = self._recording
+        if recording is not None:
+            try:
+                self.command("open_recording", timeout=self.settings.build_timeout_s, **recording)
+            except (CommandError, TimeoutError) as error:
+                self._end_process()
+                reason = error.message if isinstance(error, CommandError) else "it did not run in time"
+                raise BuildFailed(f"the recording could not be opened again: {reason}") from None
         with self._lock:
             watches = list(self._watches.items())
             listeners = list(self._listeners)
@@ -305,12 +318,24 @@ class SimulationHandle:
                 type="log",
                 kind="system",
                 level="info",
-                message="started again in a new process: variables have their initial values, "
-                "forces and breakpoints are cleared",
+                message="started again in a new process: "
+                + (
+                    f"the recording of {recording['scans']} scans is open again, history only (what ran after "
+                    "Continue from here is lost); forces and breakpoints are cleared"
+                    if recording is not None
+                    else "variables have their initial values, forces and breakpoints are cleared"
+                ),
             )
         )
         for listener in listeners:
             listener.event(status)
+
+    def open_recording(self, inputs: list[dict[str, Any]], scans: int, timeout: float) -> dict[str, Any]:
+        """Run a recording's scans into this new simulation's history (``SimRunner.open_recording``); kept, so a
+        ``restart`` after a crash opens it again. The simulation's ``info`` afterwards."""
+        info = self.command("open_recording", timeout=timeout, inputs=inputs, scans=scans)
+        self._recording = {"inputs": inputs, "scans": scans}
+        return info
 
     @property
     def alive(self) -> bool:
