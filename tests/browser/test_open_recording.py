@@ -117,15 +117,24 @@ def _children(pid: int) -> set[int]:
     return found
 
 
-def _server_workers(workspace: Path) -> set[int]:
-    """The worker processes (forked by the fork server) of the ``ladderlab serve`` over ``workspace``."""
+def _simulation_workers(workspace: Path) -> set[int]:
+    """The simulation processes of the ``ladderlab serve`` over ``workspace``: forked by its fork server, with the
+    thread that links them to the server beside the engine's (a build worker has one thread)."""
     servers = [
         int(entry)
         for entry in os.listdir("/proc")
         if entry.isdigit() and str(workspace).encode() in _cmdline(int(entry))
     ]
     assert len(servers) == 1, servers
-    return {worker for child in _children(servers[0]) for worker in _children(child)}
+    workers = {worker for child in _children(servers[0]) for worker in _children(child)}
+    return {worker for worker in workers if len(_listing(f"/proc/{worker}/task")) >= 2}
+
+
+def _listing(folder: str) -> list[str]:
+    try:
+        return os.listdir(folder)
+    except OSError:
+        return []
 
 
 def _cmdline(pid: int) -> bytes:
@@ -148,7 +157,7 @@ def test_reset_after_a_crash_opens_the_recording_again(page, server, tmp_path: P
     )
     open_pou(page, "motor", "Main")
     page.locator('g.ld-element[data-id="motor"]').wait_for()
-    before = _server_workers(workspace)
+    before = _simulation_workers(workspace)
 
     bar = page.get_by_role("toolbar", name="Simulation")
     bar.get_by_label("Recording file").set_input_files(str(recording))
@@ -166,7 +175,7 @@ def test_reset_after_a_crash_opens_the_recording_again(page, server, tmp_path: P
     page.get_by_test_id("scan-count").filter(has_text=re.compile("^5$")).wait_for()
     assert reset.is_enabled()
 
-    workers = _server_workers(workspace) - before
+    workers = _simulation_workers(workspace) - before
     assert len(workers) == 1, workers  # the simulation's process
     browser_errors.allow(r"ended unexpectedly")
     os.kill(workers.pop(), signal.SIGKILL)
