@@ -7,6 +7,8 @@ exactly the same, whatever the inputs, checkpoints and evictions in between."""
 
 from __future__ import annotations
 
+import time
+
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
@@ -547,3 +549,39 @@ def test_step_over_a_call_in_a_past_scan():
     main = [("MAIN", network) for network in ("seal_in", "run_timer", "count_starts", "lamp")]
     assert walked["statement"] == [*main, *[("BLINKER", line) for line in (1, 2, 3, 4)], ("SCALING", "speed")]
     assert walked["over"] == main
+
+
+SPIN = """
+PROGRAM Main
+VAR
+    n, i, x : DINT;
+END_VAR
+x := 0;
+FOR i := 1 TO n DO
+    x := x + 1;
+END_FOR
+END_PROGRAM
+"""
+
+
+def test_a_replay_runs_under_the_watchdogs_of_the_live_tasks():
+    """A scan that ran live under a 60 s watchdog (the task's budget; the engine's default is 0.1 s) but takes longer
+    than 0.1 s of CPU is replayed under the same budget: the seek shows what ran live, not a watchdog trip."""
+    project, _ = source_to_project(SPIN)
+    sim = build_project(project, "monitor").simulation(watchdog_s=60.0)
+    history = History(sim, min_interval=1)
+    _record(sim, history)
+    sim.cycle(1)
+    loops = 1
+    while True:  # enough loops to take 0.15 s of CPU on this machine, at least
+        sim.write("Main.n", loops)
+        started = time.thread_time()
+        sim.cycle(1)
+        if time.thread_time() - started > 0.15:
+            break
+        loops *= 4
+    assert sim.fault is None and sim.read("Main.x") == loops
+    last = sim.scan_count - 1
+    replay = history.seek(last)
+    assert replay.fault is None and replay.read("Main.x") == loops
+    assert replay.snapshot() == sim.snapshot()

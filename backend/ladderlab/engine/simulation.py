@@ -183,6 +183,11 @@ class Simulation:
         self.compiled = compiled
         self._attach_debugger()
 
+    @property
+    def watchdogs(self) -> dict[str, float]:
+        """Each task's watchdog budget in seconds, by task name: a replay of its scans runs under the same ones."""
+        return {task.name: task.watchdog_s for task in self._tasks}
+
     def variant_program(self, variant: str) -> CompiledProgram | None:
         """This simulation's program compiled as ``variant``, when it was (a scan history replays the monitor code)."""
         return self._variants.get(variant)

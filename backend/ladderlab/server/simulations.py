@@ -258,12 +258,14 @@ def history_step(
     those of that point (``history.stepping`` says where). The history and the live simulation stay as they are."""
     granularity = body.granularity if body is not None else "statement"
     entry = registry.get(sim_id)
-    timeout = entry.handle.settings.build_timeout_s  # the first step compiles the debug variant
+    timeout = entry.handle.settings.history_timeout_s  # the first step compiles the debug variant too
     try:
         return _command(entry, "history_step", timeout=timeout, granularity=granularity)
     except TimeoutError:
         raise ApiError(
-            409, f"the step did not end within {timeout:g} s: the scan shown shows where it stands"
+            409,
+            f"the step did not end within {timeout:g} s (the server's history_timeout_s): the scan shown shows "
+            "where it stands once it ends",
         ) from None
 
 
@@ -298,10 +300,15 @@ def history_marks(sim_id: str, registry: RegistryDep) -> list[HistoryMark]:
 
 def _history_call(entry: SimulationEntry, op: str, args: dict[str, Any]) -> Any:
     """A question to the scan history: it replays scans, so it may take longer than a command."""
+    timeout = entry.handle.settings.history_timeout_s
     try:
-        return entry.handle.call(op, timeout=entry.handle.settings.build_timeout_s, **args)
+        return entry.handle.call(op, timeout=timeout, **args)
     except CommandError as error:
         raise ApiError(409 if error.code == "bad_state" else 422, error.message) from None
+    except TimeoutError:
+        raise ApiError(
+            409, f"the scan history did not answer within {timeout:g} s (the server's history_timeout_s)"
+        ) from None
 
 
 @router.delete(

@@ -289,7 +289,7 @@ class History:
             )
         checkpoint = self._checkpoint_at(scan)
         state = checkpoint.state(self._paths) if checkpoint.scan == scan else self.seek(scan - 1).state()
-        stepper = Simulation(debug)
+        stepper = Simulation(debug, watchdog_s=self.live.watchdogs)
         stepper.restore(state)
         for line in self._inputs.get(scan, ()):
             stepper.submit(InputEvent.from_json(json.loads(line)))
@@ -349,7 +349,8 @@ class History:
 
     def _replay_sim(self) -> Simulation:
         if self._replay is None:
-            self._replay = Simulation(self.live.variant_program("monitor") or self.live.compiled)
+            program = self.live.variant_program("monitor") or self.live.compiled
+            self._replay = Simulation(program, watchdog_s=self.live.watchdogs)  # the live scans' budgets, not 0.1 s
         return self._replay
 
 

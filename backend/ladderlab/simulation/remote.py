@@ -114,6 +114,7 @@ class WorkerSettings:
     beat_s: float
     log_entries: int
     history_bytes: int = 256 * 1024 * 1024  # the scan history's budget (0: no history)
+    history_timeout_s: float = 30.0  # the longest the server waits for a question to the scan history
 
 
 @dataclass
