@@ -552,8 +552,9 @@ def test_step_through_a_past_scan_of_il_from_load_to_load():
 def test_step_over_a_call_in_a_past_scan():
     """The example motor, scan 3 (0-based; Start written before it): "statement" steps into the ST block
     Blinker that LD network lamp calls and on into the FBD program Scaling; "over" stays in the POU it started in
-    and its callers, as a live step over does (engine/debug.py STEP_ENDS): Main's four networks, then the scan's
-    end. Both end where a seek to that scan ends."""
+    and its callers, and from Main's last network goes on to the next program of the task, Scaling (as CODESYS
+    steps over the end of a program; engine/debug.py ``_over``). The live debugger stepping its own scan 3 halts
+    at the same points. Both end where a seek to that scan ends."""
     project = load_project_path(EXAMPLES / "motor")
     sim = Simulation(build_project(project, "monitor").compiled)
     history = History(sim)
@@ -565,16 +566,106 @@ def test_step_over_a_call_in_a_past_scan():
     walked = {}
     for granularity in ("statement", "over"):
         stepper = history.stepper(3, debug)
-        points = []
-        halt = stepper.step(granularity)
-        while halt is not None:
-            points.append((halt.origin.pou.upper(), halt.origin.network or halt.origin.line))
-            halt = stepper.step(granularity)
+        walked[granularity] = _walk(stepper, [granularity])
         assert stepper.snapshot() == history.seek(3).snapshot()
-        walked[granularity] = points
+        live = Simulation(debug)
+        live.cycle(3)
+        live.write("Start", True)
+        assert _walk(live, [granularity]) == walked[granularity]
     main = [("MAIN", network) for network in ("seal_in", "run_timer", "count_starts", "lamp")]
     assert walked["statement"] == [*main, *[("BLINKER", line) for line in (1, 2, 3, 4)], ("SCALING", "speed")]
-    assert walked["over"] == main
+    assert walked["over"] == [*main, ("SCALING", "speed")]
+
+
+def _walk(sim: Simulation, granularities: list[str]) -> list[tuple[str, object]]:
+    """The halts of one scan stepped through with ``granularities`` in turn (the last one repeated to its end)."""
+    points = []
+    for number in range(1000):
+        halt = sim.step(granularities[min(number, len(granularities) - 1)])
+        if halt is None:
+            return points
+        points.append((halt.origin.pou.upper(), halt.origin.network or halt.origin.line))
+    raise AssertionError("the scan did not end")
+
+
+OVER_THE_END = """
+FUNCTION_BLOCK Counter
+VAR_OUTPUT
+    n : INT;
+END_VAR
+n := n + 1;
+n := n * 2;
+END_FUNCTION_BLOCK
+
+PROGRAM First
+VAR
+    c : Counter;
+    x, y : INT;
+END_VAR
+x := 1;
+c();
+y := c.n;
+END_PROGRAM
+
+PROGRAM Second
+VAR
+    z : INT;
+END_VAR
+z := z + 1;
+z := z + 2;
+END_PROGRAM
+
+PROGRAM Other
+VAR
+    w : INT;
+END_VAR
+w := 5;
+END_PROGRAM
+
+CONFIGURATION Cfg
+    RESOURCE Res ON PLC
+        TASK Main (INTERVAL := T#10ms, PRIORITY := 1);
+        TASK Later (INTERVAL := T#10ms, PRIORITY := 2);
+        PROGRAM First WITH Main : First;
+        PROGRAM Second WITH Main : Second;
+        PROGRAM Other WITH Later : Other;
+    END_RESOURCE
+END_CONFIGURATION
+"""
+
+
+F15, F16, F17 = ("FIRST", 15), ("FIRST", 16), ("FIRST", 17)  # OVER_THE_END's statements by (POU, line)
+C6, C7, S24, S25 = ("COUNTER", 6), ("COUNTER", 7), ("SECOND", 24), ("SECOND", 25)
+
+
+@pytest.mark.parametrize(
+    ("granularities", "halts"),
+    [
+        # into Counter; over its last statement: the caller's next one (CODESYS "Step Over"); over First's last
+        # statement: the next program of its task, Second; over Second's last: the scan's end (Other runs in
+        # another task)
+        (["statement", "statement", "statement", "over"], [F15, F16, C6, C7, F17, S24, S25]),
+        (["over"], [F15, F16, F17, S24, S25]),
+        # out of Counter: the caller, after the call
+        (["statement", "statement", "statement", "out", "over"], [F15, F16, C6, F17, S24, S25]),
+        (["statement"], [F15, F16, C6, C7, F17, S24, S25, ("OTHER", 32)]),
+    ],
+)
+def test_step_over_the_end_of_a_pou_live_and_in_a_past_scan(granularities, halts):
+    """hist4 item 3: a step over at the last statement of a called POU halts at the caller's next statement; at
+    the end of a program, at the next program of the same task (not another task's). The live debugger stepping
+    its scan 2 and the history's stepper going through the recorded scan 2 halt at the same points."""
+    project, _ = source_to_project(OVER_THE_END)
+    debug = build_project(project, "debug").compiled
+    live = Simulation(debug)
+    live.cycle(2)
+    sim = Simulation(build_project(project, "monitor").compiled)
+    history = History(sim, min_interval=1)
+    _record(sim, history)
+    sim.cycle(3)
+    lived = _walk(live, granularities)
+    assert lived == halts
+    assert _walk(history.stepper(2, debug), granularities) == lived
 
 
 SPIN = """
