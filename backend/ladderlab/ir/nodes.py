@@ -162,6 +162,18 @@ class AddressOf:
 
 
 @dataclass(frozen=True)
+class View:
+    """The reference ``value`` seen as a pointer to another type (``type``, a ``Reference``): CODESYS's
+    ``pt := ADR(str)`` with ``pt : POINTER TO BYTE``. ``whole`` and ``seen`` are the byte layouts
+    (ir/byte_layout.py) of what ``value`` points to and of what the view reads and writes."""
+
+    value: Expr
+    type: IrType
+    whole: tuple
+    seen: tuple
+
+
+@dataclass(frozen=True)
 class Attempt:
     """``?=``'s value: the reference ``value`` (to an FB instance) when the instance's FB is one of ``blocks`` (those
     implementing the target's interface), else NULL (IEC 61131-3 ed. 3, 6.6.6.7)."""
@@ -171,7 +183,7 @@ class Attempt:
     type: IrType
 
 
-Expr = Const | Var | Unary | Binary | Call | Convert | AddressOf | Attempt
+Expr = Const | Var | Unary | Binary | Call | Convert | AddressOf | View | Attempt
 
 # --------------------------------------------------------------------------- statements
 

@@ -201,7 +201,7 @@ export const DIAGNOSTICS = {
       example: "ratio := 10 / divisor;   (* divisor = 0 *)",
       example_language: "st",
       example_note: "",
-      fix: "the message names the fault (division_by_zero, index_out_of_range, subrange_violation, for_step_zero, watchdog, out_of_memory), where it happened (line, or network and element) and the values of the variables of the statement; guard the statement (`IF divisor <> 0 THEN ...`) and reset the simulation.",
+      fix: "the message names the fault (division_by_zero, index_out_of_range, subrange_violation, for_step_zero, null_dereference, dangling_reference, invalid_argument, watchdog, out_of_memory), where it happened (line, or network and element) and the values of the variables of the statement; guard the statement (`IF divisor <> 0 THEN ...`) and reset the simulation.",
       severity: "error",
       summary: "The running program stopped with a runtime fault.",
     },
@@ -1439,11 +1439,11 @@ export const DIAGNOSTICS = {
       anchor: "st-ref",
       area: "st",
       example:
-        "FUNCTION Twice : INT\nVAR_INPUT x : INT; END_VAR\nVAR p : REF_TO INT; END_VAR\np := REF(x);",
+        "PROGRAM Main\nVAR CONSTANT limit : INT := 10; END_VAR\nVAR_TEMP t : INT; END_VAR\nVAR p : REF_TO INT; END_VAR\np := REF(limit);   (* or REF(t) *)",
       example_language: "st",
       example_note:
-        "A reference to a variable of a FUNCTION or a VAR_TEMP (gone after the call), or to a CONSTANT.",
-      fix: "refer to a variable that outlives the call (a FUNCTION_BLOCK's or program's variable, a global), or pass the value itself.",
+        "A reference to a CONSTANT (it could be written through the reference), to a program's or function block's VAR_TEMP, or to another function's result. A FUNCTION's own variables may be referred to: a reference used after the call returned is the runtime fault `dangling_reference` (ENGINE-RUNTIME).",
+      fix: "refer to a variable that outlives the call (a FUNCTION_BLOCK's or program's VAR, a global), or copy the constant into a variable.",
       severity: "error",
       summary: "A reference (REF, ADR) to a variable that may not be referred to.",
     },
