@@ -12,9 +12,9 @@ at a breakpoint (``halt``-phase inputs), a scan that ended with a fault (a watch
 machine's speed), a scan a reset ended while halted. Checkpoints are taken adaptively: every
 ``interval`` scans, where the interval keeps the CPU time spent capturing near ``overhead`` (3 %) of the CPU
 time of the scans - the scans after a capture pay a little more, refilling the caches it went through, so the
-recording as a whole stays near 5 % - and the replay of one interval within ``seek_ms``; or after ``log_bytes`` of input log. Checkpoints and
-log live in ``budget_bytes`` (default 256 MB): the oldest checkpoint and the log before the next one go
-first, so history is available from ``first`` on.
+recording as a whole stays near 5 % - and the replay of one interval within ``seek_ms``; or after
+``log_bytes`` of input log. Checkpoints and log live in ``budget_bytes`` (default 256 MB): the oldest
+checkpoint and the log before the next one go first, so history is available from ``first`` on.
 
     history = History(sim)        # records from now on (it sets sim.on_scan; call history.applied(...)
     history.seek(42)              #   from sim.on_input). Returns the replay simulation at scan 42's end.
