@@ -300,6 +300,11 @@ class SimulationHandle:
         simulation opened from a recording opens it again: its recorded scans are never lost, and are history only
         again (what ran after a "Continue from here" was in the process that ended)."""
         self.launch()
+        with self._lock:
+            watches = list(self._watches.items())
+            listeners = list(self._listeners)
+        for key, watch in watches:  # first: the recording's last scan is then shown with every watched value
+            self.call("watch", key=key, **watch)
         recording = self._recording
         if recording is not None:
             try:
@@ -309,11 +314,7 @@ class SimulationHandle:
                 reason = error.message if isinstance(error, CommandError) else "it did not run in time"
                 raise BuildFailed(f"the recording could not be opened again: {reason}") from None
         with self._lock:
-            watches = list(self._watches.items())
-            listeners = list(self._listeners)
             status = self.status
-        for key, watch in watches:
-            self.call("watch", key=key, **watch)
         self._record(
             Log(
                 type="log",
