@@ -423,7 +423,8 @@ class TestCheckRequest(BaseModel):
 class Reference(BaseModel):
     """One place that uses a project-level name (a POU, type or global), as a rename changes it or a
     delete would break it: the POU and its part, the line of a text or the network and element of a
-    diagram, the task, and the text there (the line, or the operand) as it was."""
+    diagram, the task, the operator panel and widget, and the text there (the line, the operand, the
+    widget's variable path) as it was."""
 
     pou: str | None = None
     part: Literal[
@@ -439,6 +440,8 @@ class Reference(BaseModel):
         "test",
         "extends",
         "implements",
+        "panel",
+        "method",
     ]
     member: str | None = Field(
         default=None,
@@ -452,6 +455,7 @@ class Reference(BaseModel):
     element: str | None = None
     task: str | None = None
     file: str | None = None
+    panel: str | None = Field(default=None, description="An operator panel's name (``element``: its widget's id).")
     text: str = ""
 
 
@@ -461,6 +465,18 @@ class RenameRequest(BaseModel):
     model_config = ConfigDict(extra="forbid")
 
     project: Project
+    old_name: str
+    new_name: str
+
+
+class MemberRenameRequest(BaseModel):
+    """Body of ``POST /api/refactor/rename-member``: method or property ``old_name`` of function block ``pou`` renamed
+    with every call (issue 25 item 5)."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    project: Project
+    pou: str
     old_name: str
     new_name: str
 

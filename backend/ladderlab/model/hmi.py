@@ -25,6 +25,10 @@ Binding = Annotated[str, Field(min_length=1, max_length=200, pattern=r"^[^\n\r]+
 Literal_ = bool | int | float | str
 
 _ID = r"^[A-Za-z_][A-Za-z0-9_-]{0,63}$"
+#: The fields of a widget that hold one variable path (the rename refactoring rewrites them too, st/refactor.py);
+#: a motion's path is in ``MOTION_FIELDS``' ``path``, a trend's in its list ``paths``.
+PATH_FIELDS = ("bind", "fault", "visible")
+MOTION_FIELDS = ("move_x", "move_y")
 MAX_CANVAS = 4000
 MAX_WIDGETS = 500
 
@@ -64,11 +68,11 @@ class _Widget(BaseModel):
         """Every variable path the widget reads or writes, with the field that holds it (``bind``,
         ``paths[1]``, ``move_x.path``), in field order."""
         found: list[tuple[str, str]] = []
-        for field in ("bind", "fault", "visible"):
+        for field in PATH_FIELDS:
             path = getattr(self, field, None)
             if path:
                 found.append((field, path))
-        for field in ("move_x", "move_y"):
+        for field in MOTION_FIELDS:
             motion = getattr(self, field)
             if motion is not None:
                 found.append((f"{field}.path", motion.path))
