@@ -485,7 +485,7 @@ def _reference_operation(node: ast.Binary, op: str, ctx: PouContext) -> Expr:
     if op not in ("EQ", "NE"):
         if not (isinstance(node.left.ty, t.PointerType) and isinstance(node.right.ty, t.PointerType)):
             raise LoweringError(f"'{node.op}' orders two pointers, not a pointer and a number", node)
-        return Binary(op, lower_expr(node.left, ctx), lower_expr(node.right, ctx), BOOL)  # type: ignore[arg-type]
+        return Binary(op, lower_expr(node.left, ctx), lower_expr(node.right, ctx), BOOL)  # type: ignore[arg-type]  # LT..GE
     left, right = lower_expr(node.left, ctx), lower_expr(node.right, ctx)
     if isinstance(left, Const) and left.value in (None, 0):  # NULL (an interface's 0) takes the other's type
         left = Const(None, right.type)

@@ -15,7 +15,9 @@ from __future__ import annotations
 
 from typing import Annotated, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
+from pydantic import ConfigDict, Field, field_validator, model_validator
+
+from .base import Model
 
 #: A colour as ``#rrggbb``: all a widget's SVG needs, and nothing a browser could misread.
 Colour = Annotated[str, Field(pattern=r"^#[0-9a-fA-F]{6}$", description="A colour, #rrggbb.")]
@@ -33,7 +35,7 @@ MAX_CANVAS = 4000
 MAX_WIDGETS = 500
 
 
-class Motion(BaseModel):
+class Motion(Model):
     """A move by a variable's value: ``min`` leaves the widget where it is placed, ``max`` moves it by ``distance``
     pixels (negative: left or up), values in between in proportion, values outside held at the ends."""
 
@@ -51,7 +53,7 @@ class Motion(BaseModel):
         return self
 
 
-class _Widget(BaseModel):
+class _Widget(Model):
     model_config = ConfigDict(extra="forbid")
 
     id: str = Field(pattern=_ID, description="Unique within the panel: the widget's name in the log and in tests.")
@@ -96,7 +98,7 @@ class ToggleSwitch(_Widget):
     bind: Binding
 
 
-class SwitchPosition(BaseModel):
+class SwitchPosition(Model):
     model_config = ConfigDict(extra="forbid")
 
     label: str = Field(max_length=40)
@@ -131,7 +133,7 @@ class Lamp(_Widget):
     blink_ms: int = Field(default=500, ge=100, le=5000, description="Half a blink period.")
 
 
-class IndicatorState(BaseModel):
+class IndicatorState(Model):
     model_config = ConfigDict(extra="forbid")
 
     value: Literal_
@@ -263,7 +265,7 @@ Widget = Annotated[
 INPUT_WIDGETS = ("push_button", "toggle_switch", "selector_switch", "emergency_stop", "numeric_input", "slider")
 
 
-class Panel(BaseModel):
+class Panel(Model):
     """One operator panel: ``hmi/<name>.json``."""
 
     model_config = ConfigDict(extra="forbid")

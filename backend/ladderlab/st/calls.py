@@ -388,6 +388,24 @@ def _std_call(checker: Any, node: ast.Call, function: stdlib.StdFunction) -> Typ
     return generic
 
 
+#: Shifts and rotations, which CODESYS typing also applies to integers (as the bits of their type).
+_SHIFTS = frozenset({"SHL", "SHR", "ROL", "ROR"})
+
+
+def _codesys_shift(function: stdlib.StdFunction, value: Type) -> bool:
+    return function.name.upper() in _SHIFTS and t.codesys_typing() and t.in_family(value, "ANY_INT")
+
+
+def _takes(family: str, fixed: Type | None, value: Type) -> bool:
+    """Whether a non-generic input of type (or family) ``family`` takes ``value``: a member of the family, or
+    assignable to the named type. CODESYS typing also gives an ANY_INT input a bit string (SHL's N as a BYTE)."""
+    if t.in_family(value, family):
+        return True
+    if fixed is None:
+        return family == "ANY_INT" and t.codesys_typing() and t.category(value) == "bits"
+    return t.assignable(fixed, value) != "error"
+
+
 def _generic_type(checker: Any, node: ast.Call, function: stdlib.StdFunction, bound) -> Type:
     """Type every argument; the generic inputs share one type T within the pin's family (FUN-02).
 
@@ -401,7 +419,7 @@ def _generic_type(checker: Any, node: ast.Call, function: stdlib.StdFunction, bo
             value = checker.expr(arg.value, fixed)
             if value is ERROR:
                 return ERROR
-            if not t.in_family(value, pin.type) and t.assignable(fixed or t.ERROR, value) == "error":
+            if not _takes(pin.type, fixed, value):
                 message = f"input {pin.name} of {function.name} must be {pin.type}, not {value}"
                 checker.report("ST-TYPE-MISMATCH", message, arg.value)
             continue
@@ -433,7 +451,7 @@ def _generic_type(checker: Any, node: ast.Call, function: stdlib.StdFunction, bo
     if shared is None:
         return ERROR if generic_pins and function.result == stdlib.T else t.VOID
     family = generic_pins[0].type
-    if not t.in_family(shared, family):
+    if not t.in_family(shared, family) and not _codesys_shift(function, shared):
         checker.report("ST-TYPE-MISMATCH", f"{function.name} works on {family}, not on {shared}", node)
         return ERROR
     if function.result != stdlib.T:  # a comparison: T takes no context from the BOOL result

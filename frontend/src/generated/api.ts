@@ -2617,6 +2617,13 @@ export interface components {
        * @default
        */
       types?: string;
+      /**
+       * Typing
+       * @description Type rules of the ST checker: 'iec' (IEC 61131-3, the default) or 'codesys' (CODESYS V3's arithmetic on bit strings, shifts on integers, implicit conversions; docs/st.md "CODESYS typing").
+       * @default iec
+       * @enum {string}
+       */
+      typing?: "iec" | "codesys";
     };
     /**
      * ProjectDocument

@@ -1203,6 +1203,17 @@ export const DIAGNOSTICS = {
       severity: "warning",
       summary: "Two CASE labels overlap: only the first branch ever runs.",
     },
+    "ST-CODESYS-REGISTER": {
+      anchor: "st-codesys-register",
+      area: "st",
+      example: "VAR w : WORD; q : BOOL; END_VAR\nq := (w - 1) < w;",
+      example_language: "st",
+      example_note:
+        "With CODESYS typing, CODESYS computes `w - 1` in a register of at least 32 bits; whether that register reads as -1 or as 4294967295 here depends on the target, so LadderLab does not guess.",
+      fix: "cut the value to its type first (`TO_WORD(w - 1) < w`), or compute in a wider type (`TO_DINT(w) - 1 < TO_DINT(w)`).",
+      severity: "error",
+      summary: "CODESYS typing: a value would depend on the width of the PLC's registers.",
+    },
     "ST-CONFIG": {
       anchor: "st-config",
       area: "st",
@@ -1284,6 +1295,17 @@ export const DIAGNOSTICS = {
       fix: "nothing needs fixing (the conversion loses nothing); write `SINT_TO_INT(small)` to make it explicit.",
       severity: "warning",
       summary: "A value is widened to a larger type without an explicit conversion.",
+    },
+    "ST-IMPLICIT-NARROW": {
+      anchor: "st-implicit-narrow",
+      area: "st",
+      example: "VAR d : DINT := 70000; small : INT; END_VAR\nsmall := d;",
+      example_language: "st",
+      example_note:
+        'In a project with CODESYS typing (docs/st.md "CODESYS typing") the value is stored cut to the target\'s bits, as CODESYS does (4464 here).',
+      fix: "write the conversion (`small := DINT_TO_INT(d);`) to say the cut is meant.",
+      severity: "warning",
+      summary: "CODESYS typing: a value is narrowed to a smaller type implicitly.",
     },
     "ST-INDEX": {
       anchor: "st-index",

@@ -161,7 +161,7 @@ class Expressions:
         if isinstance(b.left.type, t.Reference) and b.op in ("EQ", "NE"):  # one variable referred to, or both NULL
             return f"({left} {'==' if b.op == 'EQ' else '!='} {right})"
         if isinstance(b.left.type, t.Reference):  # LT ...: the bytes two pointers into one variable point to
-            sizes = f"{byte_size(b.left.type.target)}, {byte_size(b.right.type.target)}"  # type: ignore[union-attr]
+            sizes = f"{byte_size(b.left.type.target)}, {byte_size(b.right.type.target)}"  # type: ignore[union-attr]  # both pointers (checker)
             return f"ll_ptr_order({left}, {right}, {sizes}, {_ORDERINGS[b.op]!r})"
         if b.op in _BOOL_LOGIC and b.type == t.BOOL and _plain_read(b.right, right):
             return f"({left} {_BOOL_LOGIC[b.op]} {right})"
