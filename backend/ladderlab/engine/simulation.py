@@ -89,6 +89,8 @@ class ProbeView:
 
     values: dict[str, object]
     executed: frozenset[str]
+    #: Elements of networks the last scan did not record (``Simulation.view``): their state is not known.
+    unknown: frozenset[str] = frozenset()
 
 
 class Simulation:
@@ -149,6 +151,8 @@ class Simulation:
         self._links: dict[str, dict[str, str]] = {}  # their VAR_IN_OUT links to program instances
         self.mocks = Mocks()
         self._deferred_locations: dict[tuple[str, int], Location] = {}  # (program, probe number) -> its variable
+        self._viewed: dict[str, Iterable[str] | None] | None = None  # ``view``'s argument; None: every network
+        self._viewed_since: dict[tuple[str, int], int] = {}  # (instance, network) -> the stamp it was viewed from
         self._attach_debugger()
         self._initialise(warm=False)
 
@@ -211,6 +215,8 @@ class Simulation:
         self._ns["ll_config_init"](warm)
         self._schedule.reset_triggers()
         self._paths = None
+        if self._viewed is not None:  # fresh instances record every network
+            self.view(self._viewed)
 
     @property
     def time_ms(self) -> float:
@@ -621,8 +627,15 @@ class Simulation:
             values, stamps = obj.ll_pr, obj.ll_px  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
         found_values: dict[str, object] = {}
         executed: list[str] = []
+        unknown: list[str] = []
         stamp, constants, groups, names_ = self._stamp, table.constants, table.groups, table.elements
+        function = pou is not None and pou.kind == "function"  # (a FUNCTION's networks are always recorded)
+        network_of = table.network_of if self.variant == "monitor" and not function else {}
         for index in indices:
+            network = network_of.get(index)
+            if network is not None and not self._recorded(key, obj, network):
+                unknown.append(names_[index])
+                continue
             value = values[index]
             if value is UNSET and index in constants and any(stamps[g] >= 0 for g in groups[index]):
                 value = constants[index]  # recorded by the group stamp alone
@@ -630,7 +643,39 @@ class Simulation:
                 found_values[names_[index]] = value
             if any(stamps[g] == stamp for g in groups[index]):
                 executed.append(names_[index])
-        return ProbeView(found_values, frozenset(executed))
+        return ProbeView(found_values, frozenset(executed), frozenset(unknown))
+
+    def _recorded(self, instance: str, obj: object, network: int) -> bool:
+        """Whether the last scan recorded the probes of the instance's ``network``: viewed since before it began."""
+        return obj.ll_v[network] and self._viewed_since.get((instance, network), -1) < self._stamp  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
+
+    def view(self, viewed: dict[str, Iterable[str] | None] | None) -> None:
+        """Record the power flow (monitor variant) only of the networks that hold ``viewed``'s elements: POU instance
+        path -> element ids (None: all its networks); the networks of other instances record none; ``viewed`` None:
+        every network (as a new simulation does). A network costs its probes only while viewed (docs/runtime.md,
+        "Viewed networks"); one starts being recorded with the next scan (``probes`` lists its elements as
+        ``unknown`` until then). The debug variant records every probe. Which networks are viewed is part of the
+        state (``state``), so a restored scan knows which networks it recorded."""
+        self._viewed = None if viewed is None else {key.strip().upper(): ids for key, ids in viewed.items()}
+        for key, (obj, pou) in self._instances_by_path().items():
+            table = self._context_probes(pou)
+            if table is None or not table.networks:
+                continue
+            ids = None if self._viewed is None else self._viewed.get(key, ())
+            if ids is None:
+                wanted = set(range(table.networks))
+            else:
+                indices = (table.index(e) for e in ids)
+                wanted = {table.network_of[i] for i in indices if i is not None and i in table.network_of}
+            flags = obj.ll_v  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
+            for network in range(table.networks):
+                on = network in wanted
+                if on and not flags[network]:
+                    self._viewed_since[(key, network)] = self._stamp
+                flags[network] = on
+
+    def _context_probes(self, pou: str) -> ProbeTable | None:
+        return self.compiled.generated.context.probe_tables.get(pou.upper())
 
     def _read_deferred(self, obj: object, table: ProbeTable) -> None:
         """Fill in the probes the monitor code reads after the scan (codegen/deferred.py); never-run ones stay unset."""
@@ -972,6 +1017,9 @@ class Simulation:
             event = InputEvent.from_json(data)
             location = self._resolver.resolve(event.path) if event.path else None
             self._pending.append((event, location, self._prepare(event, location)[1]))
+        self._viewed_since.clear()  # the state says which networks its last scan recorded (ll_v)
+        if self._viewed is not None:  # this simulation's monitor views these from the next scan on
+            self.view(self._viewed)
 
     def snapshot(self) -> dict[str, object]:
         """Every elementary variable of every program instance and every global: path -> value."""

@@ -262,6 +262,7 @@ class History:
             checkpoint = self._checkpoint_at(scan)
             if not (self._replay_at is not None and checkpoint.scan <= self._replay_at <= scan):
                 self._restore(checkpoint)  # else: go on from where the last seek left the replay (a step forward)
+                replay.view(None)  # the replayed scans record every network, whichever the live monitor viewed
             assert self._replay_at is not None
             for number in range(self._replay_at, scan + 1):
                 for line in self._inputs.get(number, ()):

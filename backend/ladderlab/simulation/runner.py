@@ -17,7 +17,8 @@ What the runner has to say goes to a ``Sink``:
   state (so a halt shows the values of the halt point): what changed since the previous frame in
   the values and element states that some client watches, the forced paths, the trace samples
   recorded since, and the figures of ``info``. Only the watched paths and the watched elements
-  (the networks a client has in view) are read, never a whole POU (``Simulation.probes``).
+  (the networks a client has in view) are read, never a whole POU (``Simulation.probes``), and only the
+  networks some client views record their power flow at all (``Simulation.view``; ``_view_networks``).
 
 Every message is plain data (dicts, lists, strings, numbers), so it can cross a process
 boundary or a network (docs/architecture.md, "Online mode").
@@ -48,7 +49,7 @@ from ..engine.compile import CompiledProgram, CompileError, compile_program
 from ..engine.debug import Halt
 from ..engine.inputs import AppliedInput, InputEvent, InputRefused
 from ..engine.paths import Location, UnknownPath
-from ..engine.simulation import Simulation
+from ..engine.simulation import ProbeView, Simulation
 from ..engine.tasks import Pacer
 from ..ir import nodes as ir
 from ..ir import types as t
@@ -195,6 +196,9 @@ class SimRunner:
         self._until: Condition | None = None
         self._until_ms: float | None = None
         self._recording_only = False  # an opened recording: history only until a fork (open_recording)
+        #: the history's replays of the last scan, by instance, for networks viewed since it (``_replayed``)
+        self._replayed_views: tuple[tuple[History | None, int], dict[str, ProbeView]] = ((None, -1), {})
+        self._view_networks()  # nobody watches yet: no network records its power flow
 
     # ------------------------------------------------------------------ other threads
 
@@ -412,12 +416,36 @@ class SimRunner:
     def _states(self, instance: str, every: bool, ids: tuple[str, ...]) -> dict[str, object]:
         """Each watched element's state: its value when it ran in the last scan, else None. An SFC transition's
         condition is its last computed value: a scan halted before the transitions has not computed it yet, and the
-        chart shows the value of the scan before, not "?" (docs/sfc.md)."""
+        chart shows the value of the scan before, not "?" (docs/sfc.md). Elements of a network viewed only since the
+        last scan are left out (not recorded yet: the next scan records them)."""
         view = self.shown.probes(instance, None if every else ids)
+        if view.unknown and not self._running and self._view is None:
+            view = self._replayed(instance, view)
         elements = sorted((view.values.keys() | view.executed).union(ids)) if every else ids
         return {
-            e: (view.values.get(e) if e in view.executed or e.endswith(CONDITION_PROBE) else None) for e in elements
+            e: (view.values.get(e) if e in view.executed or e.endswith(CONDITION_PROBE) else None)
+            for e in elements
+            if e not in view.unknown
         }
+
+    def _replayed(self, instance: str, view: ProbeView) -> ProbeView:
+        """``view`` with its unknown elements (networks viewed only since the last scan) read from the replay of that
+        scan in the history; a running simulation's next scan records them anyway."""
+        scan = self.sim.scan_count - 1
+        if self.history is None or not self.history.first <= scan <= self.history.last:
+            return view
+        if self._replayed_views[0] != (self.history, scan):  # (commands while stopped: one replay per scan)
+            self._replayed_views = ((self.history, scan), {})
+        views = self._replayed_views[1]
+        if instance not in views:
+            views[instance] = self.history.seek(scan).probes(instance)
+        replayed = views[instance]
+        values = {e: replayed.values[e] for e in view.unknown if e in replayed.values}
+        return ProbeView(
+            {**view.values, **values},
+            view.executed | (replayed.executed & view.unknown),
+            view.unknown & replayed.unknown,
+        )
 
     # ------------------------------------------------------------------ run control
 
@@ -948,7 +976,15 @@ class SimRunner:
                 every, known = instances.get(instance, (False, {}))
                 instances[instance] = (every or ids is None, {**known, **dict.fromkeys(ids or ())})
         self._union = {instance: (every, tuple(ids)) for instance, (every, ids) in instances.items()}
+        self._view_networks()
         self._full = True
+
+    def _view_networks(self) -> None:
+        """The live simulation records the power flow of the networks some client views, no other
+        (``Simulation.view``). A network viewed after the last scan shows that scan from its replay in the history
+        (``_states``), so without a history every network is recorded."""
+        if self.sim.variant in ("monitor", "debug") and self.history is not None:
+            self.sim.view({instance: None if every else ids for instance, (every, ids) in self._union.items()})
 
     # ------------------------------------------------------------------ traces
 

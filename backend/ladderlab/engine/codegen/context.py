@@ -72,18 +72,24 @@ class ProbeTable:
     #: The variable each deferred probe reads, as a path below the program instance (``T1.Q``), so a monitor
     #: can read a few of them without ``ll_read_probes`` reading them all.
     deferred_paths: dict[int, str] = field(default_factory=dict)
+    #: Networks whose probes the monitor variant stores only while a client views them (``ll_v[n]``, see
+    #: ``Statements.block``): their count, and each probe's network (absent: stored in every scan).
+    networks: int = 0
+    network_of: dict[int, int] = field(default_factory=dict)
     _index: dict[str, int] = field(default_factory=dict)
 
     def index(self, element: str) -> int | None:
         """The probe number of ``element`` (None: not probed)."""
         return self._index.get(element)
 
-    def probe(self, element: str, group: int, constant: object = UNSET) -> int:
+    def probe(self, element: str, group: int, constant: object = UNSET, network: int | None = None) -> int:
         index = self._index.get(element)
         if index is None:
             index = self._index[element] = len(self.elements)
             self.elements.append(element)
             self.groups.append([])
+            if network is not None:
+                self.network_of[index] = network
         groups = self.groups[index]
         if not groups or groups[-1] != group:  # groups are numbered in emission order
             groups.append(group)
@@ -94,6 +100,10 @@ class ProbeTable:
     def new_group(self) -> int:
         self.group_count += 1
         return self.group_count - 1
+
+    def new_network(self) -> int:
+        self.networks += 1
+        return self.networks - 1
 
 
 @dataclass

@@ -63,6 +63,8 @@ class Statements:
         self.probes = self.module.probe_table(scope.pou.name) if self.module.probes else None
         self.group: int | None = None  # the probe group of the straight run of code being emitted
         self.probed = False  # a probe was emitted: the chunk loads ll_pr, ll_px, ll_k
+        self.guarded = False  # a network's probes depend on ``ll_v`` (``block``): the chunk loads it (``ll_view``)
+        self.network: int | None = None  # the viewed network whose probes are being emitted
         self._following: ir.Probe | None = None  # the probe after the statement being emitted
         self._fused = False  # the last assignment also recorded the probe after it
         self.deferred = deferred  # id() of the probes read after the scan (deferred.py)
@@ -79,8 +81,8 @@ class Statements:
             self.src.line("pass")
             return
         if not self.plan.jumps:
-            for block in blocks:
-                self.block(block)
+            for run in self._runs(blocks):
+                self.view_run(run)
             return
         for block in self.plan.duplicates:
             if any(block is mine for mine in blocks):
@@ -98,12 +100,52 @@ class Statements:
                     self.segment = segment
                     self.src.line(f"if ll_b <= {segment}:")
                 with self.src.indent():
-                    self.block(block)
+                    self.view_run([block])
             self._store_countdown()
             self.src.line("break" if self.plan.inline else f"return {self.plan.ends(self.chunk)}")
         self.counting = False
 
-    def block(self, block: ir.Block) -> None:
+    def _runs(self, blocks: list[ir.Block]) -> Iterator[list[ir.Block]]:
+        """The blocks in runs that share one view flag (``view_run``): up to VIEW_RUN consecutive viewable networks
+        (a flag per network would cost a sixth of a plain network's scan), every other block alone."""
+        run: list[ir.Block] = []
+        for block in blocks:
+            viewable = self._viewable(block)
+            if run and (not viewable or len(run) == VIEW_RUN):
+                yield run
+                run = []
+            if viewable:
+                run.append(block)
+            else:
+                yield [block]
+        if run:
+            yield run
+
+    def view_run(self, run: list[ir.Block]) -> None:
+        """Blocks whose probes the monitor variant stores only while a client views them: ``if ll_view[u]:`` the
+        blocks with their probes, ``else:`` without (the fast variant's code). ``u`` numbers the run in the POU's
+        ProbeTable (``networks``, ``network_of``), the same in the debug variant, which stores every probe."""
+        unit = self.probes.new_network() if self._viewable(run[0]) else None  # type: ignore[union-attr]
+        if unit is None or self.debug:
+            for block in run:
+                self.block(block, unit)
+            return
+        self.guarded = True
+        self.src.line(f"if ll_view[{unit}]:  # viewed by a monitor: record the power flow")
+        with self.src.indent():
+            for block in run:
+                self.block(block, unit)
+        self.src.line("else:")
+        with self.src.indent():
+            probes, self.probes = self.probes, None
+            try:
+                for block in run:
+                    self.block(block)
+            finally:
+                self.probes = probes
+
+    def block(self, block: ir.Block, unit: int | None = None) -> None:
+        """One block; ``unit``: its run of viewed networks (``view_run``), whose blocks each start a probe group."""
         origin = block.origin
         if origin.network is not None:
             self.src.line(
@@ -114,7 +156,25 @@ class Statements:
         if self.module.debug:
             with self.src.at(self.module.origin(origin)):
                 self.pause("network" if origin.network is not None else "entry", origin)
-        self.statements(block.statements, own_group=not self.plan.straight)
+        if unit is None:
+            self.statements(block.statements, own_group=not self.plan.straight)
+            return
+        self.network = unit
+        self.statements(block.statements)
+        self.network, self.group = None, None  # the probes after it run whether or not it was viewed
+
+    def _viewable(self, block: ir.Block) -> bool:
+        """Whether the monitor variant stores the block's probes only while it is viewed (``ll_v``): a network of
+        a PROGRAM or FUNCTION_BLOCK body (not of one a derived FB runs with ``SUPER^()``, whose probes go
+        elsewhere). Else its probes are stored in every scan."""
+        pou = self.scope.pou
+        return not (
+            self.probes is None
+            or block.origin.network is None
+            or pou.kind == "function"
+            or self.scope.function
+            or pou.name.upper() in self.module.program.base_bodies
+        )
 
     def statements(self, statements: list[ir.Stmt], own_group: bool = True) -> None:
         """``own_group``: the probes here start a group of their own (else the blocks of a straight
@@ -212,7 +272,7 @@ class Statements:
             self._set(code, self.x.stored(value, ty), probe)
 
     def _if(self, s: ir.If, oid: int) -> None:
-        if not self.module.probes and _only_probes(s):
+        if self.probes is None and _only_probes(s):
             return  # e.g. the EN-guarded probes of a box: nothing left to run in the fast variant
         self._chain([(self._condition(cond), body) for cond, body in s.branches], s.orelse)
 
@@ -503,7 +563,7 @@ class Statements:
         if self.group is None:
             self.group = self.probes.new_group()  # type: ignore[union-attr]
             self.src.line(f"ll_px[{self.group}] = ll_k")
-        return self.probes.probe(s.element, self.group, constant)  # type: ignore[union-attr]
+        return self.probes.probe(s.element, self.group, constant, self.network)  # type: ignore[union-attr]
 
     def _defer(self, s: ir.Probe) -> None:
         index = self._record(s)
@@ -693,6 +753,8 @@ def _local_or_constant(code: str) -> bool:
 
 #: Branches of one if/elif chain (CPython's compiler recurses once per elif); longer chains go in groups.
 CHAIN_BRANCHES = 64
+#: Consecutive networks sharing one view flag (``view_run``): viewing 20 networks records at most 32.
+VIEW_RUN = 8
 #: A body nested this deep (indentation levels), or inside this many loops of one Python function, is
 #: moved into a function of its own (``Statements._outline``): CPython allows 100 and 20.
 OUTLINE_DEPTH = 60
