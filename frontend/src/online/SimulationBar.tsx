@@ -14,7 +14,8 @@ import { HistoryBar } from "./HistoryBar";
 import { OpenRecording } from "./OpenRecording";
 import { keysOf, type CommandOf } from "../keys/keymap";
 import { CheckCheck, Cpu, LockOpen, Play, RotateCcw, Square, StepForward, Unplug } from "lucide-react";
-import { ToolButton } from "../ui/ToolButton";
+import { useRef } from "react";
+import { OverflowBar, toolItem, type BarItem, type Tool } from "../ui/OverflowBar";
 
 /** Saves pending changes; the project's name once it is saved, else null (the save's message is shown). */
 async function savedProject(): Promise<string | null> {
@@ -103,70 +104,144 @@ export function SimulationBar() {
         : phase === "compiling"
           ? "Compiling…"
           : "Connecting…";
-  return (
-    <div className={`simulation-bar phase-${phase}${running ? " running" : ""}`} role="toolbar" aria-label="Simulation">
-      <CompileQuestion />
-      <button
-        type="button"
-        onClick={() => void checkWorkingCopy()}
-        disabled={checking}
-        title={titled("Check the project as it is (nothing is saved)", "check")}
-      >
-        <CheckCheck size={16} aria-hidden="true" /> Check
+  const recording_ = useRef<HTMLSpanElement>(null);
+  const busy = phase === "compiling" || phase === "connecting";
+  const textTool = (tool: Tool, text: string, title: string): BarItem => ({
+    key: tool.id,
+    node: (
+      <button type="button" onClick={tool.run} disabled={tool.disabled} title={title}>
+        <tool.icon size={16} aria-hidden="true" /> {text}
       </button>
-      <button
-        type="button"
-        onClick={() => void compileSaved()}
-        disabled={phase === "compiling" || phase === "connecting"}
-        title={titled("Compile & simulate", "go-online")}
-      >
-        <Cpu size={16} aria-hidden="true" /> Compile &amp; simulate
-      </button>
-      <OpenRecording />
-      <ToolButton
-        icon={Play}
-        label="Run"
-        keys={keysOf("app", "run")}
-        onClick={s.run}
-        disabled={!online || running || recording}
-      />
-      <ToolButton
-        icon={Square}
-        label="Stop"
-        keys={keysOf("app", "stop")}
-        onClick={s.stop}
-        disabled={!online || !(running || state === "halted")}
-      />
-      <ToolButton
-        icon={StepForward}
-        label="Single cycle"
-        keys={keysOf("app", "single-cycle")}
-        onClick={s.singleCycle}
-        disabled={!online || recording}
-      />
-      <ToolButton icon={RotateCcw} label="Reset" onClick={() => void s.reset()} disabled={!online || recording} />
-      <ToolButton
-        icon={Unplug}
-        label="Go offline"
-        keys={keysOf("app", "go-offline")}
-        onClick={() => void s.goOffline()}
-        disabled={phase === "offline"}
-      />
-      <span className="online-state" role="status" aria-label="Online state">
-        <span className="online-dot" aria-hidden="true" />
-        {label}
-      </span>
-      <span className={`force-count${forces ? " forcing" : ""}`} role="status" aria-label="Active forces">
-        {forces} forced
-      </span>
-      <ToolButton
-        icon={LockOpen}
-        label="Release all forces"
-        keys={keysOf("app", "release-forces")}
-        onClick={s.unforceAll}
-        disabled={!online || forces === 0}
-      />
-      {prepared ? (
+    ),
+    entries: [{ id: tool.id, label: tool.label, keys: tool.keys, disabled: tool.disabled, run: tool.run }],
+    priority: 3,
+  });
+  // One row (ui/OverflowBar.tsx): as it narrows, Open recording, Reset and Release all forces go into More first;
+  // the state, the force count and the scan figures always stay.
+  const items: BarItem[] = [
+    textTool(
+      {
+        id: "check",
+        icon: CheckCheck,
+        label: "Check",
+        keys: keysOf("app", "check"),
+        disabled: checking,
+        run: () => void checkWorkingCopy(),
+      },
+      "Check",
+      titled("Check the project as it is (nothing is saved)", "check"),
+    ),
+    textTool(
+      {
+        id: "compile",
+        icon: Cpu,
+        label: "Compile & simulate",
+        keys: keysOf("app", "go-online"),
+        disabled: busy,
+        run: () => void compileSaved(),
+      },
+      "Compile & simulate",
+      titled("Compile & simulate", "go-online"),
+    ),
+    {
+      key: "open-recording",
+      node: (
+        <span ref={recording_} className="open-recording">
+          <OpenRecording />
+        </span>
+      ),
+      // the bar's own button (kept out of sight when it does not fit) opens the file chooser
+      entries: [
+        {
+          id: "open-recording",
+          label: "Open recording…",
+          disabled: busy,
+          run: () => recording_.current?.querySelector("button")?.click(),
+        },
+      ],
+      priority: 0,
+    },
+    toolItem(
+      {
+        id: "run",
+        icon: Play,
+        label: "Run",
+        keys: keysOf("app", "run"),
+        run: s.run,
+        disabled: !online || running || recording,
+      },
+      { group: true, priority: 3 },
+    ),
+    toolItem(
+      {
+        id: "stop",
+        icon: Square,
+        label: "Stop",
+        keys: keysOf("app", "stop"),
+        run: s.stop,
+        disabled: !online || !(running || state === "halted"),
+      },
+      { priority: 3 },
+    ),
+    toolItem(
+      {
+        id: "single-cycle",
+        icon: StepForward,
+        label: "Single cycle",
+        keys: keysOf("app", "single-cycle"),
+        run: s.singleCycle,
+        disabled: !online || recording,
+      },
+      { priority: 3 },
+    ),
+    toolItem(
+      { id: "reset", icon: RotateCcw, label: "Reset", run: () => void s.reset(), disabled: !online || recording },
+      { priority: 1 },
+    ),
+    toolItem(
+      {
+        id: "go-offline",
+        icon: Unplug,
+        label: "Go offline",
+        keys: keysOf("app", "go-offline"),
+        run: () => void s.goOffline(),
+        disabled: phase === "offline",
+      },
+      { priority: 2 },
+    ),
+    {
+      key: "state",
+      node: (
+        <span className="online-state" role="status" aria-label="Online state">
+          <span className="online-dot" aria-hidden="true" />
+          {label}
+        </span>
+      ),
+    },
+    {
+      key: "forces",
+      node: (
+        <span className={`force-count${forces ? " forcing" : ""}`} role="status" aria-label="Active forces">
+          {forces} forced
+        </span>
+      ),
+    },
+    toolItem(
+      {
+        id: "release-forces",
+        icon: LockOpen,
+        label: "Release all forces",
+        keys: keysOf("app", "release-forces"),
+        run: s.unforceAll,
+        disabled: !online || forces === 0,
+      },
+      { priority: 1 },
+    ),
+  ];
+  if (prepared)
+    items.push({
+      key: "prepared",
+      node: (
         <span className="prepared" role="group" aria-label="Prepared values">
           {prepared} prepared
           <button
@@ -189,18 +264,38 @@ export function SimulationBar() {
             Clear
           </button>
         </span>
-      ) : null}
-      <span className="scan-info" aria-label="Scan statistics">
-        <span>
-          scan <strong data-testid="scan-count">{scan}</strong>
-        </span>
-        <span>
-          t = <strong>{formatClock(timeMs)}</strong>
-        </span>
-        <span>
-          last scan <strong>{lastScanMs === null ? "—" : `${lastScanMs.toFixed(3)} ms`}</strong>
-        </span>
-      </span>
+      ),
+      entries: [
+        {
+          id: "force-prepared",
+          label: `Force the ${prepared} prepared values`,
+          keys: keysOf("app", "force-prepared"),
+          disabled: !online,
+          run: () => s.applyPrepared("force"),
+        },
+        {
+          id: "write-prepared",
+          label: `Write the ${prepared} prepared values`,
+          keys: keysOf("app", "write-prepared"),
+          disabled: !online,
+          run: () => s.applyPrepared("write"),
+        },
+        { id: "clear-prepared", label: "Forget the prepared values", run: s.clearPrepared },
+      ],
+      priority: 2,
+      group: true,
+    });
+  items.push({ key: "scan", node: <ScanFigures scan={scan} timeMs={timeMs} lastScanMs={lastScanMs} /> });
+  return (
+    <div className={`simulation-bar phase-${phase}${running ? " running" : ""}`} role="toolbar" aria-label="Simulation">
+      <CompileQuestion />
+      <OverflowBar
+        role="group"
+        label="Simulation commands"
+        className="simulation-row"
+        moreLabel="More simulation commands"
+        items={items}
+      />
       <HistoryBar />
       {error ? (
         <span className="online-error" role="alert">
@@ -208,5 +303,17 @@ export function SimulationBar() {
         </span>
       ) : null}
     </div>
+  );
+}
+
+/** The scan counter, the virtual time and the last scan's duration in one compact line; the tooltip says it in words. */
+function ScanFigures({ scan, timeMs, lastScanMs }: { scan: number; timeMs: number; lastScanMs: number | null }) {
+  const clock = formatClock(timeMs);
+  const last = lastScanMs === null ? "—" : `${lastScanMs.toFixed(3)} ms`;
+  const words = `Scan ${scan}; virtual time t = ${clock}; last scan ${lastScanMs === null ? "not measured yet" : `took ${last}`}`;
+  return (
+    <span className="scan-info" aria-label="Scan statistics" title={words}>
+      scan <strong data-testid="scan-count">{scan}</strong> · <strong>{clock}</strong> · <strong>{last}</strong>
+    </span>
   );
 }

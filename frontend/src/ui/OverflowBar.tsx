@@ -60,7 +60,7 @@ export interface OverflowBarProps {
   items: readonly BarItem[];
   /** The bar's accessible name. */
   label?: string;
-  role?: "toolbar" | "tablist";
+  role?: "toolbar" | "tablist" | "group";
   className?: string;
   /** The More button's name ("More tools", "More panels"). */
   moreLabel?: string;
