@@ -130,3 +130,90 @@ def test_every_bar_is_one_row_inside_the_window_for_each_editor(page, server: st
         assert editor["height"] >= 0.6 * height, (kind, editor)
         assert _problems(page, width, height) == [], (kind, width, theme, "panels hidden")
         page.get_by_role("button", name="Show panels").click()
+
+
+def _more(page, bar, name: str) -> list[str]:
+    """Opens the bar's More menu ``name`` from the keyboard; the names of its entries (without their shortcuts)."""
+    bar.get_by_role("button", name=name).focus()
+    page.keyboard.press("Enter")
+    menu = page.get_by_role("menu")
+    menu.wait_for()
+    return menu.locator("button > span").all_inner_texts()
+
+
+def _shown(bar) -> list[str]:
+    return [button.get_attribute("aria-label") or button.inner_text() for button in bar.get_by_role("button").all()]
+
+
+def test_what_does_not_fit_is_in_more_and_runs_from_there_at_1024x768(page, server: str) -> None:
+    page.set_viewport_size({"width": 1024, "height": 768})
+    _store(server)
+    page.goto(server)
+    open_pou(page, "fit", "Main")
+    page.locator('g.ld-element[data-id="start"] .ld-hit').click()  # network 1 selected
+    toolbar = page.get_by_role("toolbar", name="LD editing")
+    shown = _shown(toolbar)
+    assert shown[-1] == "More tools"
+    moved = _more(page, toolbar, "More tools")
+    # every tool is in the row or in More, once; what is in More keeps its shortcut
+    assert sorted(shown[:-1] + moved) == sorted(LD_TOOLS)
+    assert "Contact" in shown and "Network comment…" in moved
+    menu = page.get_by_role("menu")
+    expect(menu.get_by_role("menuitem", name=re.compile("^Copy"))).to_contain_text("Ctrl+C")
+    page.screenshot(path=str(ARTIFACTS / "toolbar-fit-more-1024x768.png"))
+    menu.get_by_role("menuitem", name=re.compile("^Network comment")).click()
+    comment = page.get_by_label("Network comment", exact=True)
+    expect(comment).to_be_focused()
+    comment.fill("Seal-in")
+    comment.press("Enter")
+    expect(page.locator(".ld-editor")).to_contain_text("Seal-in")
+
+    # the simulation bar's commands: online, what does not fit runs from its More menu too
+    go_online(page)
+    bar = page.get_by_role("toolbar", name="Simulation")
+    moved = _more(page, bar, "More simulation commands")
+    assert moved == ["Open recording…"]  # the run controls, the state and the figures stay in the row
+    assert {"Check", "Compile & simulate", "Run", "Stop", "Single cycle", "Go offline"} <= set(_shown(bar))
+    with page.expect_file_chooser() as chooser:
+        page.get_by_role("menu").get_by_role("menuitem", name="Open recording…").click()
+    assert not chooser.value.is_multiple()
+
+    # the panel tabs: a panel whose tab is in More shows from there, and its tab joins the row
+    tabs = page.get_by_role("tablist", name="Panel tabs")
+    assert "Cross references" not in _shown(tabs)
+    assert "Cross references" in _more(page, tabs, "More panels")
+    page.get_by_role("menu").get_by_role("menuitem", name="Cross references").click()
+    expect(tabs.get_by_role("tab", name="Cross references")).to_have_attribute("aria-selected", "true")
+    assert _problems(page, 1024, 768) == []
+
+
+#: The LD toolbar's tools, by name (README "LD editor"; the zoom percentage is the button "Zoom").
+LD_TOOLS = [
+    "Contact",
+    "NC contact",
+    "Coil",
+    "Compare",
+    "Box…",
+    "Parallel branch",
+    "Jump",
+    "Return",
+    "Next mode",
+    "EN/ENO",
+    "Delete",
+    "New network below",
+    "Duplicate network",
+    "Move network up",
+    "Move network down",
+    "Network label…",
+    "Network comment…",
+    "Copy",
+    "Cut",
+    "Paste",
+    "Undo",
+    "Redo",
+    "Zoom out",
+    "Zoom",
+    "Zoom in",
+    "Zoom to fit",
+    "Shortcuts",
+]

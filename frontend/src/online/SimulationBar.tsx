@@ -15,7 +15,7 @@ import { OpenRecording } from "./OpenRecording";
 import { keysOf, type CommandOf } from "../keys/keymap";
 import { CheckCheck, Cpu, LockOpen, Play, RotateCcw, Square, StepForward, Unplug } from "lucide-react";
 import { useRef } from "react";
-import { OverflowBar, toolItem, type BarItem, type Tool } from "../ui/OverflowBar";
+import { OverflowBar, toolItem, type BarItem } from "../ui/OverflowBar";
 
 /** Saves pending changes; the project's name once it is saved, else null (the save's message is shown). */
 async function savedProject(): Promise<string | null> {
@@ -106,42 +106,32 @@ export function SimulationBar() {
           : "Connecting…";
   const recording_ = useRef<HTMLSpanElement>(null);
   const busy = phase === "compiling" || phase === "connecting";
-  const textTool = (tool: Tool, text: string, title: string): BarItem => ({
-    key: tool.id,
-    node: (
-      <button type="button" onClick={tool.run} disabled={tool.disabled} title={title}>
-        <tool.icon size={16} aria-hidden="true" /> {text}
-      </button>
-    ),
-    entries: [{ id: tool.id, label: tool.label, keys: tool.keys, disabled: tool.disabled, run: tool.run }],
-    priority: 3,
-  });
   // One row (ui/OverflowBar.tsx): as it narrows, Open recording, Reset and Release all forces go into More first;
   // the state, the force count and the scan figures always stay.
   const items: BarItem[] = [
-    textTool(
+    toolItem(
       {
         id: "check",
         icon: CheckCheck,
         label: "Check",
         keys: keysOf("app", "check"),
+        hint: "the project as it is (nothing is saved)",
         disabled: checking,
         run: () => void checkWorkingCopy(),
       },
-      "Check",
-      titled("Check the project as it is (nothing is saved)", "check"),
+      { priority: 3 },
     ),
-    textTool(
+    toolItem(
       {
         id: "compile",
         icon: Cpu,
         label: "Compile & simulate",
         keys: keysOf("app", "go-online"),
+        hint: "saves first when you choose, since the server compiles the saved project",
         disabled: busy,
         run: () => void compileSaved(),
       },
-      "Compile & simulate",
-      titled("Compile & simulate", "go-online"),
+      { priority: 4 },
     ),
     {
       key: "open-recording",
@@ -170,7 +160,7 @@ export function SimulationBar() {
         run: s.run,
         disabled: !online || running || recording,
       },
-      { group: true, priority: 3 },
+      { group: true, priority: 4 },
     ),
     toolItem(
       {
@@ -181,7 +171,7 @@ export function SimulationBar() {
         run: s.stop,
         disabled: !online || !(running || state === "halted"),
       },
-      { priority: 3 },
+      { priority: 4 },
     ),
     toolItem(
       {
@@ -192,7 +182,7 @@ export function SimulationBar() {
         run: s.singleCycle,
         disabled: !online || recording,
       },
-      { priority: 3 },
+      { priority: 4 },
     ),
     toolItem(
       { id: "reset", icon: RotateCcw, label: "Reset", run: () => void s.reset(), disabled: !online || recording },
