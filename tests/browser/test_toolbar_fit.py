@@ -160,6 +160,8 @@ def test_what_does_not_fit_is_in_more_and_runs_from_there_at_1024x768(page, serv
     assert "Contact" in shown and "Network comment…" in moved
     menu = page.get_by_role("menu")
     expect(menu.get_by_role("menuitem", name=re.compile("^Copy"))).to_contain_text("Ctrl+C")
+    box = menu.bounding_box()
+    assert box["x"] >= 0 and box["x"] + box["width"] <= 1024 and box["y"] + box["height"] <= 768, box
     page.screenshot(path=str(ARTIFACTS / "toolbar-fit-more-1024x768.png"))
     menu.get_by_role("menuitem", name=re.compile("^Network comment")).click()
     comment = page.get_by_label("Network comment", exact=True)

@@ -70,7 +70,7 @@ export function OverflowBar({ items, label, role = "toolbar", className, moreLab
   const bar = useRef<HTMLDivElement>(null);
   const more = useRef<HTMLButtonElement>(null);
   const [shown, setShown] = useState<readonly boolean[]>(() => items.map(() => true));
-  const [menu, setMenu] = useState<{ x: number; y: number } | null>(null);
+  const [menu, setMenu] = useState<{ right: number; top: number } | null>(null);
   const keys = items.map((item) => item.key).join(" ");
   const pinned = items.map((item) => !item.entries?.length).join(" ");
 
@@ -108,7 +108,7 @@ export function OverflowBar({ items, label, role = "toolbar", className, moreLab
   }
   const openMenu = () => {
     const box = more.current!.getBoundingClientRect();
-    setMenu({ x: Math.max(0, Math.min(box.left, window.innerWidth - 260)), y: box.bottom + 2 });
+    setMenu({ right: Math.max(0, document.documentElement.clientWidth - box.right), top: box.bottom + 2 });
   };
   const close = () => {
     setMenu(null);
@@ -129,7 +129,13 @@ export function OverflowBar({ items, label, role = "toolbar", className, moreLab
         <MoreButton button={more} label={moreLabel} open={!!menu} onToggle={() => (menu ? close() : openMenu())} />
       ) : null}
       {menu && hidden.length
-        ? createPortal(<MenuList x={menu.x} y={menu.y} groups={groups} onClose={close} />, document.body)
+        ? createPortal(
+            // under the More button, its right edge on the button's (the bar ends at the window's right)
+            <div className="overflow-menu" style={{ right: menu.right, top: menu.top }}>
+              <MenuList x={0} y={0} groups={groups} onClose={close} />
+            </div>,
+            document.body,
+          )
         : null}
     </div>
   );
