@@ -229,52 +229,29 @@ export function SimulationBar() {
     ),
   ];
   if (prepared)
-    items.push({
-      key: "prepared",
-      node: (
-        <span className="prepared" role="group" aria-label="Prepared values">
-          {prepared} prepared
-          <button
-            type="button"
-            onClick={() => s.applyPrepared("force")}
-            disabled={!online}
-            title={titled("Force the prepared values", "force-prepared")}
-          >
-            Force
-          </button>
-          <button
-            type="button"
-            onClick={() => s.applyPrepared("write")}
-            disabled={!online}
-            title={titled("Write the prepared values", "write-prepared")}
-          >
-            Write
-          </button>
+    items.push(
+      {
+        key: "prepared",
+        node: (
+          <span className="prepared" role="status" aria-label="Prepared values">
+            {prepared} prepared
+          </span>
+        ),
+        group: true,
+      },
+      textItem("force-prepared", "Force", "Force the prepared values", !online, () => s.applyPrepared("force")),
+      textItem("write-prepared", "Write", "Write the prepared values", !online, () => s.applyPrepared("write")),
+      {
+        key: "clear-prepared",
+        node: (
           <button type="button" onClick={s.clearPrepared} title="Forget the prepared values">
             Clear
           </button>
-        </span>
-      ),
-      entries: [
-        {
-          id: "force-prepared",
-          label: `Force the ${prepared} prepared values`,
-          keys: keysOf("app", "force-prepared"),
-          disabled: !online,
-          run: () => s.applyPrepared("force"),
-        },
-        {
-          id: "write-prepared",
-          label: `Write the ${prepared} prepared values`,
-          keys: keysOf("app", "write-prepared"),
-          disabled: !online,
-          run: () => s.applyPrepared("write"),
-        },
-        { id: "clear-prepared", label: "Forget the prepared values", run: s.clearPrepared },
-      ],
-      priority: 2,
-      group: true,
-    });
+        ),
+        entries: [{ id: "clear-prepared", label: "Forget the prepared values", run: s.clearPrepared }],
+        priority: 2,
+      },
+    );
   items.push({ key: "scan", node: <ScanFigures scan={scan} timeMs={timeMs} lastScanMs={lastScanMs} /> });
   return (
     <div className={`simulation-bar phase-${phase}${running ? " running" : ""}`} role="toolbar" aria-label="Simulation">
@@ -294,6 +271,26 @@ export function SimulationBar() {
       ) : null}
     </div>
   );
+}
+
+/** A text button for a keyed command on the prepared values; in More it says what it does with its key. */
+function textItem(
+  command: "force-prepared" | "write-prepared",
+  text: string,
+  label: string,
+  disabled: boolean,
+  run: () => void,
+): BarItem {
+  return {
+    key: command,
+    node: (
+      <button type="button" onClick={run} disabled={disabled} title={titled(label, command)}>
+        {text}
+      </button>
+    ),
+    entries: [{ id: command, label, keys: keysOf("app", command), disabled, run }],
+    priority: 2,
+  };
 }
 
 /** The scan counter, the virtual time and the last scan's duration in one compact line; the tooltip says it in words. */
