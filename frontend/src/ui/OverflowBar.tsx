@@ -80,7 +80,9 @@ export function OverflowBar({ items, label, role = "toolbar", className, moreLab
     const measure = () => {
       const style = getComputedStyle(element);
       const gap = parseFloat(style.columnGap) || 0;
-      const available = element.clientWidth - parseFloat(style.paddingLeft) - parseFloat(style.paddingRight);
+      const available =
+        element.clientWidth - (parseFloat(style.paddingLeft) || 0) - (parseFloat(style.paddingRight) || 0);
+      if (element.clientWidth === 0) return; // not laid out (hidden, or jsdom): nothing to measure, all stay
       const cells = [...element.querySelectorAll<HTMLElement>(":scope > .overflow-item")];
       const next = fitItems({
         widths: cells.map((cell) => cell.getBoundingClientRect().width),
@@ -93,6 +95,7 @@ export function OverflowBar({ items, label, role = "toolbar", className, moreLab
       setShown((before) => (before.length === next.length && before.every((s, i) => s === next[i]) ? before : next));
     };
     measure();
+    if (typeof ResizeObserver === "undefined") return; // jsdom (Vitest): no layout, every item shows
     const observer = new ResizeObserver(measure);
     observer.observe(element);
     for (const cell of element.querySelectorAll(":scope > .overflow-item")) observer.observe(cell);
