@@ -29,14 +29,16 @@ PROJECT = {
 }
 
 
-#: Issue 22 item 8: the entry chunk (app shell, LD editor, panels) at most 450 kB minified.
-ENTRY_CHUNK_LIMIT = 450_000
+#: Issue 22 item 8: the entry chunk (app shell, LD editor, panels) at most 450 kB minified; 420.9 kB on 2026-11-28
+#: once the tree's dialogs load on first use (445 kB before): the bound keeps a small margin above that.
+ENTRY_CHUNK_LIMIT = 425_000
 #: Everything the browser runs before the first POU opens: the entry chunk and the chunks it imports (472 kB on
 #: 2026-11-27 with the declare dialog, breakpoints that follow edits and the task menu; 486 kB after the fifth
-#: session's tree menus for types and tasks, history stepping and opened recordings, pointer rows online; the issue's
-#: target is the entry chunk's 450 kB, this bound catches what moves out of it into chunks loaded at once anyway).
-#: Next to cut: the tree's dialogs (tree/PouActions.tsx, 13 kB before minifying) can load when a menu opens.
-OPENING_SCRIPTS_LIMIT = 490_000
+#: session's tree menus for types and tasks, history stepping and opened recordings, pointer rows online; 475.1 kB
+#: on 2026-11-28 with the tree's dialogs (tree/dialogs.tsx: rename, delete, duplicate, kind, FBD <-> CFC with its
+#: conversion) loaded when a menu entry is first chosen; the issue's target is the entry chunk's 450 kB, this bound
+#: catches what moves out of it into chunks loaded at once anyway).
+OPENING_SCRIPTS_LIMIT = 480_000
 
 
 def test_st_and_fbd_editors_load_on_first_use(page, server: str) -> None:
@@ -58,9 +60,18 @@ def test_st_and_fbd_editors_load_on_first_use(page, server: str) -> None:
     page.wait_for_load_state("networkidle")
     loaded = " ".join(scripts)
     assert "StEditor" not in loaded and "FbdPouView" not in loaded
-    for rare in ("diagnostics-", "TracePanel", "TestsPanel", "XrefPanel", "BreakpointsPanel", "ProjectParts"):
+    for rare in (
+        "diagnostics-",
+        "TracePanel",
+        "TestsPanel",
+        "XrefPanel",
+        "BreakpointsPanel",
+        "ProjectParts",
+        "dialogs-",
+    ):
         assert rare not in loaded, f"{rare} is loaded before it is used"
     entry = [size for url, size in sizes.items() if "/assets/index-" in url]
+    print(f"entry chunk {entry} bytes, opening scripts {sum(sizes.values())} bytes")
     assert len(entry) == 1 and entry[0] <= ENTRY_CHUNK_LIMIT, entry
     assert sum(sizes.values()) <= OPENING_SCRIPTS_LIMIT, sizes
 
@@ -73,3 +84,9 @@ def test_st_and_fbd_editors_load_on_first_use(page, server: str) -> None:
     tree.get_by_role("button", name=re.compile("^Blocks")).click()
     page.get_by_role("button", name="Add network").first.wait_for()
     assert any("FbdPouView" in url for url in scripts)
+
+    # the tree's dialogs come when a menu entry is first chosen, and then work
+    tree.get_by_role("button", name="Actions for Lad", exact=True).click()
+    page.get_by_role("menu", name="Lad actions").get_by_role("menuitem", name="Rename…").click()
+    page.get_by_role("dialog", name="Rename Lad").get_by_role("button", name="Cancel").click()
+    assert any("/dialogs-" in url for url in scripts)

@@ -52,3 +52,42 @@ def test_a_library_function_builds_once_its_library_is_ticked_and_runs(page, ser
     go_online(page)
     expect(watch(page, "Main.r")).to_have_text("-0.25")  # the fraction keeps the sign of the input
     expect(math.get_by_role("checkbox")).to_be_disabled()  # online: the project is not edited
+
+
+CODESYS_PROJECT = {
+    "name": "codesys",
+    "pous": [
+        {
+            "name": "Main",
+            "kind": "program",
+            "language": "st",
+            "declarations": "VAR\n    a : BYTE := 200;\n    b : BYTE;\nEND_VAR",
+            "body": "b := a + 100;",
+        }
+    ],
+}
+
+
+def test_codesys_typing_chosen_in_the_library_manager_builds_bit_string_arithmetic(page, server: str) -> None:
+    """IEC refuses BYTE + 100 (ST-20); choosing the CODESYS V3 type rules in the Library manager makes it build,
+    and online b is 200 + 100 cut to a BYTE: 44 (CODESYS "Operators", example 3; docs/st.md "CODESYS typing")."""
+    store_project(server, CODESYS_PROJECT)
+    page.goto(server)
+    open_pou(page, "codesys", "Main")
+    page.keyboard.press("Control+Shift+B")  # Check
+    problems = panel_tab(page, "Diagnostics").get_by_role("list", name="Diagnostics")
+    problems.get_by_text("'+' needs numbers (ANY_NUM), not BYTE").wait_for()
+
+    tree = page.get_by_role("navigation", name="Project tree")
+    tree.get_by_role("button", name="Library manager").click()
+    rules = page.get_by_role("region", name="Library manager").get_by_role("group", name="Type rules")
+    expect(rules.get_by_role("radio", name="IEC 61131-3")).to_be_checked()
+    rules.get_by_role("radio", name="CODESYS V3").check()
+    expect(tree.get_by_role("button", name="Library manager")).to_contain_text("CODESYS typing")
+
+    page.keyboard.press("Control+s")
+    page.get_by_text("All changes saved").wait_for()
+    assert _request("GET", f"{server}/api/projects/codesys")["project"]["typing"] == "codesys"
+    go_online(page)
+    expect(watch(page, "Main.b")).to_have_text("44")
+    expect(rules.get_by_role("radio", name="CODESYS V3")).to_be_disabled()  # online: the project is not edited

@@ -1,7 +1,7 @@
 """Issue 25: methods and properties of a function block edited in the browser (CODESYS's objects under an FB). In
 the FB's Methods tab a method is added, given a result type, declarations and a body in the ST editor, saved and
-run: Main's call of it gives the value the method computes; a property's GET is edited; a method is renamed and
-another deleted; a breakpoint in the method's body halts there online. Expected values follow from the texts."""
+run: Main's call of it gives the value the method computes; a property's GET is edited; a method is renamed with
+Main's call of it (previewed, one undo step) and another deleted; a breakpoint in the method's body halts there online. Expected values follow from the texts."""
 
 from __future__ import annotations
 
@@ -31,7 +31,7 @@ PROJECT = {
             "kind": "program",
             "language": "st",
             "declarations": "VAR\n    c : Counter;\n    y : INT;\n    lv : INT;\nEND_VAR",
-            "body": "c();\ny := c.Scaled(k := 3);\nlv := c.Level;\nc.Bump();",
+            "body": "c();\ny := c.Scaled(k := 3);\nlv := c.Level;\nc.Old();",
         },
     ],
 }
@@ -59,9 +59,29 @@ def test_add_edit_rename_and_delete_methods_then_run_and_halt_in_one(page, serve
     page.get_by_role("button", name="Add method", exact=True).click()
     expect(page.get_by_text("Counter already has a method called Scaled.")).to_be_visible()
 
+    # Renaming Old previews its declaration and Main's call (issue 25 item 5); one undo step takes both back.
     members.get_by_role("button", name="Old").click()
     page.get_by_label("New name of Old").fill("Bump")
     page.get_by_role("button", name="Rename", exact=True).click()
+    dialog = page.get_by_role("dialog", name="Rename Counter.Old")
+    expect(dialog.get_by_label("New name")).to_have_value("Bump")
+    dialog.get_by_role("button", name="Preview").click()
+    places = dialog.get_by_role("list", name="References").locator("li")
+    places.first.wait_for()
+    assert places.all_inner_texts() == ["Counter METHOD Old", "Main, body line 4 c.Old();"]
+    page.screenshot(path=str(ARTIFACTS / "methods-rename-preview.png"))
+    dialog.get_by_role("button", name="Rename", exact=True).click()
+    expect(dialog).to_have_count(0)
+    expect(members.get_by_role("button")).to_have_text(["MBump", "MUnused", "MScaled", "PLevel"])
+    page.get_by_role("button", name="Undo rename Old to Bump").click()
+    expect(members.get_by_role("button")).to_have_text(["MOld", "MUnused", "MScaled", "PLevel"])
+    members.get_by_role("button", name="Old").click()
+    page.get_by_label("New name of Old").fill("Bump")
+    page.get_by_role("button", name="Rename", exact=True).click()
+    dialog.get_by_role("button", name="Preview").click()
+    dialog.get_by_role("list", name="References").locator("li").first.wait_for()
+    dialog.get_by_role("button", name="Rename", exact=True).click()
+    expect(dialog).to_have_count(0)
     editor(page, "Counter.Bump body").fill("n := n + 10;")
     members.get_by_role("button", name="Unused").click()
     page.get_by_role("button", name="Delete Unused", exact=True).click()
@@ -77,6 +97,8 @@ def test_add_edit_rename_and_delete_methods_then_run_and_halt_in_one(page, serve
         ("Bump", None, "n := n + 10;"),
         ("Scaled", "INT", "Scaled := n * k;"),
     ]
+    main = _request("GET", f"{server}/api/projects/methods")["project"]["pous"][1]
+    assert main["body"] == "c();\ny := c.Scaled(k := 3);\nlv := c.Level;\nc.Bump();"
 
     # Online: one cycle gives what the texts compute. Scan 1: c() makes n 1, Scaled gives 1 * 3, Level 1 * 2,
     # then Bump adds 10 (n = 11).

@@ -196,7 +196,8 @@ def test_values_on_every_pin_and_the_instance_tree(page, server):
 def test_breakpoints_and_stepping_with_codesys_keys(page, server):
     """F9 sets a breakpoint on the selected network, F5 runs into it; F11 steps into the Blinker FB (its
     ST opens at line 1), F10 steps over its statements, Shift+F11 steps out: the scan ends and the
-    next one halts at the breakpoint again. Shift+F5 stops."""
+    next one halts at the breakpoint again; F10 over Main's last network halts in the task's next program,
+    Scaling, and F10 over its last network ends the scan. Shift+F5 stops."""
     page.goto(server)
     open_pou(page, "motor", "Main")
     element(page, "running_on").locator(".ld-hit").click()
@@ -228,7 +229,9 @@ def test_breakpoints_and_stepping_with_codesys_keys(page, server):
         "n => Number(document.querySelector('[data-testid=scan-count]').textContent) === n", arg=halted_scan + 1
     )
     debug.get_by_text("Halted at MAIN, network 4").wait_for()
-    page.keyboard.press("F10")  # over the last network of Main: this scan ends, the next halts here again
+    page.keyboard.press("F10")  # over the last network of Main: the next program of the task, Scaling (CODESYS)
+    debug.get_by_text(re.compile(r"^Halted at SCALING, network 1$", re.I)).wait_for()
+    page.keyboard.press("F10")  # over the last network of the task's last program: this scan ends, the next halts
     page.wait_for_function(
         "n => Number(document.querySelector('[data-testid=scan-count]').textContent) === n", arg=halted_scan + 2
     )

@@ -78,20 +78,30 @@ def test_reference_to_misuse_is_refused(declarations, body, message):
     assert any(message in e for e in found), found
 
 
-def test_a_reference_to_a_function_variable_is_refused():
+def test_a_reference_bound_to_a_function_variable_works_during_the_call_and_a_constant_is_refused():
+    """REF= to a FUNCTION's own input is accepted since references into a call are checked at run time (issue 25:
+    the reference dies with the call, tests/engine/test_dangling_references.py); one to a CONSTANT is ST-REF."""
     text = """FUNCTION F : INT
 VAR_INPUT a : INT; END_VAR
 VAR r : REFERENCE TO INT; END_VAR
 r REF= a;
-F := r;
+r := r * 3;
+F := a + 1;
 END_FUNCTION
 PROGRAM Main
-VAR y : INT; END_VAR
-y := F(1);
+VAR y : INT; k : INT; END_VAR
+k := k + 1;
+y := F(k);
 END_PROGRAM
 """
-    found = errors(text)
-    assert len(found) == 1 and "ST-REF: REF= cannot refer to 'a', a variable of the function F" in found[0], found
+    sim = build(text).simulation()
+    for scan in range(1, 4):
+        sim.cycle(1)
+        assert sim.read("Main.y") == 3 * scan + 1  # a := a * 3 through r, then F := a + 1
+    found = errors(
+        text.replace("VAR_INPUT a : INT; END_VAR", "VAR CONSTANT a : INT := 2; END_VAR").replace("F(k)", "F()")
+    )
+    assert len(found) == 1 and "ST-REF: REF= cannot refer to the CONSTANT a" in found[0], found
 
 
 def test_st_export_writes_reference_to_and_ref_assign_back():

@@ -286,10 +286,32 @@ def test_rotation_matches_a_bit_string_rotation(type_name, data):
     assert call("SHL", [type_name, "INT"], type_name, x, n) == (int(bits[n:] + "0" * n, 2) if n < width else 0)
 
 
-@pytest.mark.parametrize("types", [["BOOL", "INT"], ["REAL", "INT"], ["INT", "INT"], ["BYTE", "REAL"]])
+@pytest.mark.parametrize("types", [["BOOL", "INT"], ["REAL", "INT"], ["BYTE", "REAL"], ["INT", "LREAL"]])
 def test_shift_rejects_non_bit_strings_FUN_40(types):
+    """BOOL and REAL are never shifted; an integer is, under CODESYS typing only (the checker decides: ST-20)."""
     with pytest.raises(TypeError):
         make_function("SHL", types, types[0])
+
+
+@pytest.mark.parametrize("type_name", ["SINT", "INT", "DINT", "LINT", "USINT", "UINT"])
+@given(data=st.data())
+def test_integer_shifts_work_on_the_bits_of_their_type_CODESYS(type_name, data):
+    """CODESYS typing: SHL/ROL/ROR on an integer work on the two's complement bits of its type, read back in it;
+    SHR of a signed one is arithmetic (filled with the sign bit: floor division by 2^n), of an unsigned one logical."""
+    x = data.draw(ints(type_name))
+    n = data.draw(st.integers(0, 80))
+    low, high = int_range(type_name)
+    width = (high - low).bit_length()
+    bits = format(x % (1 << width), f"0{width}b")
+
+    def signed(pattern: str) -> int:
+        value = int(pattern, 2)
+        return value - (1 << width) if low < 0 and value >> (width - 1) else value
+
+    k = n % width
+    assert call("ROL", [type_name, "INT"], type_name, x, n) == signed(bits[k:] + bits[:k])
+    assert call("SHL", [type_name, "INT"], type_name, x, n) == (signed(bits[n:] + "0" * n) if n < width else 0)
+    assert call("SHR", [type_name, "INT"], type_name, x, n) == (x // (1 << n) if low < 0 or n < width else 0)
 
 
 # --- FUN-50, APB-02, ST-35: Boolean and bitwise -------------------------------------------------

@@ -3,7 +3,9 @@ to pointers": ``piData[i] := (piData + i * SIZEOF(INT))^``, not ``(piData + i)^`
 ``=`` and ``<>`` as the usual operations on pointers, and ``p <> 0`` is how CODESYS code tests for a pointer that
 points nowhere). ``p[i]`` is the i-th element on from where p points, read and written, with the same located fault
 as ``p + n`` when it leaves the array; ``p = q`` / ``p <> q`` compare what two pointers point to, ``p = 0`` whether
-p is NULL; ordering pointers stays refused. Expected values are worked out by hand from the program texts."""
+p is NULL; ``p < q`` (issue 25 item 3) orders two pointers into one variable by the byte they point to, and is a
+located fault for pointers into different variables or NULL (LadderLab's variables have no addresses to order).
+Expected values are worked out by hand from the program texts."""
 
 from __future__ import annotations
 
@@ -58,7 +60,7 @@ def test_pointer_comparisons_with_each_other_null_and_zero():
 @pytest.mark.parametrize(
     ("body", "message"),
     [
-        ("IF p < q THEN x := 1; END_IF;", "references cannot be compared by '<'"),
+        ("IF p < 5 THEN x := 1; END_IF;", "'<' needs operands of the same type"),
         ("IF p = 5 THEN x := 1; END_IF;", "'=' needs operands of the same type: REF_TO INT and ANY_INT literal"),
         ("x := p[1, 2];", "a pointer takes one index: p[i] is (p + i * SIZEOF(p^))^"),
         ("WHILE p[i] > 0 DO i := i + 1; END_WHILE;", "p[i] cannot be evaluated here in the right order"),
@@ -69,3 +71,48 @@ def test_what_stays_refused(body, message):
     assert any(message in d.message for d in result.diagnostics if d.severity == "error"), [
         d.format() for d in result.diagnostics
     ]
+
+
+@settings(max_examples=40, deadline=None)
+@given(first=st.integers(0, 3), second=st.integers(0, 3))
+def test_pointers_into_one_array_are_ordered_by_element_like_their_indices(first, second):
+    sim = _ORDER_SIM
+    sim.write("Main.i", first)
+    sim.write("Main.j", second)
+    sim.cycle(1)
+    assert sim.fault is None
+    expected = [first < second, first <= second, first > second, first >= second]
+    assert [sim.read(f"Main.{v}") for v in ("lt", "le", "gt", "ge")] == expected
+
+
+_ORDER_SIM = simulation(
+    ARRAY + " j : INT; lt, le, gt, ge : BOOL;",
+    "p := ADR(a[0]) + i * SIZEOF(a[0]);\nq := ADR(a[j]);\nlt := p < q;\nle := p <= q;\ngt := p > q;\nge := p >= q;",
+)
+
+
+def test_a_byte_pointer_walking_a_string_stops_at_a_pointer_to_its_end():
+    """OSCAT's loops ``WHILE pt < stop DO``: both pointers see the same STRING's bytes."""
+    sim = simulation(
+        "s : STRING[10] := 'abcd'; pt, stop : POINTER TO BYTE; n : INT;",
+        "pt := ADR(s);\nstop := ADR(s);\nstop := stop + LEN(s);\nn := 0;\n"
+        "WHILE pt < stop DO\n  pt^ := pt^ XOR 16#20;\n  pt := pt + 1;\n  n := n + 1;\nEND_WHILE;",
+    )
+    sim.cycle(1)
+    assert (sim.read("Main.s"), sim.read("Main.n"), sim.fault) == ("ABCD", 4, None)
+
+
+@pytest.mark.parametrize(
+    ("body", "message", "line"),
+    [
+        ("p := ADR(a[0]);\nq := ADR(x);\ny := SEL(p < q, 1, 2);", "ADR(a[0]) < ADR(x)", 3),
+        ("p := ADR(a[0]);\ny := SEL(p >= q, 1, 2);", "ADR(a[0]) >= NULL", 2),
+    ],
+)
+def test_ordering_pointers_into_different_variables_or_null_is_a_located_fault(body, message, line):
+    sim = simulation(ARRAY, body)
+    sim.cycle(1)
+    fault = sim.fault
+    assert fault is not None and fault.code == "invalid_argument"
+    assert fault.message == f"{message}: only pointers into one variable (an array, a STRING) can be ordered"
+    assert (fault.pou, fault.origin.line) == ("MAIN", 5 + line)  # TYPES, PROGRAM, VAR, declarations, END_VAR

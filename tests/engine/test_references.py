@@ -81,7 +81,9 @@ def test_dereferencing_null_is_a_located_fault_in_the_scan_it_happens():
     assert sim.read("Main.k") == 3
 
 
-def test_references_that_would_dangle_or_write_a_constant_are_located_errors():
+def test_references_to_a_program_temporary_or_a_constant_and_retain_references_are_located_errors():
+    """A reference to a FUNCTION's own variable is no longer refused (F: checked at run time, test_dangling_
+    references.py); a program's VAR_TEMP, a CONSTANT and a RETAIN reference still are."""
     text = (
         "FUNCTION F : INT\nVAR_INPUT a : INT; END_VAR\nVAR r : REF_TO INT; END_VAR\nr := REF(a);\nF := a;\n"
         "END_FUNCTION\n"
@@ -92,12 +94,8 @@ def test_references_that_would_dangle_or_write_a_constant_are_located_errors():
     assert [d.format() for d in build_project(project).diagnostics] == [
         "Main/declarations:11:12, POU Main: error ST-DECL: a REF_TO INT cannot be RETAIN: a restart makes the "
         "variables it refers to anew (set it again after one)",
-        "F/body:4:10, POU F: error ST-REF: REF cannot refer to 'a', a variable of the function F: it lives only "
-        "while the call runs, the reference would outlive it (declare it in a program or function block, or as a "
-        "global)",
-        "Main/body:12:10, POU Main: error ST-REF: REF cannot refer to 't', a variable of VAR_TEMP: it lives only "
-        "while the call runs, the reference would outlive it (declare it in a program or function block, or as a "
-        "global)",
+        "Main/body:12:10, POU Main: error ST-REF: REF cannot refer to 't', a VAR_TEMP: it lives only while the call "
+        "runs, the reference would outlive it (declare it in VAR of the program or function block, or as a global)",
         "Main/body:13:10, POU Main: error ST-REF: REF cannot refer to the CONSTANT c: it could be written through "
         "the reference",
     ]

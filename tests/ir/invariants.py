@@ -99,6 +99,9 @@ class _Checker:
         elif isinstance(e, ir.AddressOf):
             self.var(e.var)
             assert isinstance(e.type, t.Reference) and value_type(e.type.target) == value_type(e.var.type), e
+        elif isinstance(e, ir.View):
+            self.expr(e.value)
+            assert isinstance(e.type, t.Reference) and isinstance(e.value.type, t.Reference), e
         elif isinstance(e, ir.Unary):
             self.expr(e.operand)
             assert value_type(e.operand.type) == value_type(e.type), e  # type: ignore[union-attr]
@@ -106,6 +109,10 @@ class _Checker:
             self.expr(e.left)
             self.expr(e.right)
             operand = value_type(e.left.type)  # type: ignore[union-attr]
+            if isinstance(e.type, t.Reference):  # pointer arithmetic: p +/- an integer number of bytes
+                assert e.op in ("ADD", "SUB") and operand == e.type, e
+                assert e.right.type.info.category == "int", e  # type: ignore[union-attr]
+                return
             assert operand == value_type(e.right.type), f"Binary operands differ: {e}"  # type: ignore[union-attr]
             assert e.type == (t.BOOL if e.op in COMPARISONS else operand), e
         elif isinstance(e, ir.Call):

@@ -33,15 +33,13 @@ def oscat():
     return project, result
 
 
-def test_oscat_lowers_without_exceptions_and_only_pointer_tricks_are_unsupported(oscat):
-    """References run (REF_TO, POINTER TO, ADR, ^, pointer arithmetic along an array); what the engine refuses is a
-    pointer that reinterprets its target's memory (a POINTER TO DWORD to a REAL), which OSCAT's buffer helpers use."""
+def test_oscat_lowers_without_exceptions_and_without_lowering_errors(oscat):
+    """References run (REF_TO, POINTER TO, ADR, ^, pointer arithmetic), also into a function's own variables
+    (checked at run time) and seeing memory as another type (a POINTER TO DWORD over a REAL, a REF_TO BYTE over a
+    STRING: ir/byte_layout.py): no POU of OSCAT needs what the lowering refuses (5 before byte views, 36 before
+    pointer arithmetic ran, 74 before references)."""
     project, result = oscat
-    lowering = [d for d in result.diagnostics if d.code.startswith("IR-")]
-    assert {d.code for d in lowering} == {"IR-UNSUPPORTED"}
-    reinterpreting = [d for d in lowering if "references keep their target's type" in d.message]
-    assert len(reinterpreting) == len(lowering)
-    assert 3 <= len({d.pou for d in lowering}) <= 10  # 5 (36 before pointer arithmetic ran, 74 before references)
+    assert [d.format() for d in result.diagnostics if d.code.startswith("IR-")] == []
 
 
 def test_oscat_pous_without_errors_satisfy_the_ir_invariants(oscat):
@@ -55,7 +53,7 @@ def test_oscat_pous_without_errors_satisfy_the_ir_invariants(oscat):
         result = lower_project(project)
     assert result.program is not None
     check_program(result.program)
-    assert len(result.program.pous) >= 255  # 263 of 542: the rest use CODESYS implicit conversions, pointers or those
+    assert len(result.program.pous) >= 310  # 319 of 542: the rest use CODESYS implicit conversions or those
 
 
 @given(data=st.data())
@@ -89,9 +87,10 @@ def test_ironplc_end_to_end_programs_lower():
 
 
 def test_ironplc_benchmark_programs_lower():
-    """All but oscat_expn and oscat_gcd (SHL/SHR on integers, refused by the checker) and oscat_lambert_w (pointers)."""
+    """All but oscat_expn and oscat_gcd (SHL/SHR on integers, refused by the checker); oscat_lambert_w lowers since
+    a POINTER TO DWORD may see a REAL's bits."""
     files = sorted(external("ironplc-benchmarks", "programs").glob("*.st"))
-    assert len(files) == 13 and _lower_all([f.read_text(encoding="utf-8") for f in files]) == 10
+    assert len(files) == 13 and _lower_all([f.read_text(encoding="utf-8") for f in files]) == 11
 
 
 def test_motor_example_blinker_lowers():

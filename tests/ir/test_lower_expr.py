@@ -9,7 +9,7 @@ from ladderlab.iec.values import f32
 from ladderlab.ir import nodes as ir
 from ladderlab.ir.context import PouContext
 from ladderlab.ir.lower_expr import lower_expr
-from ladderlab.ir.types import Elementary, Enum, Subrange
+from ladderlab.ir.types import Elementary, Enum, Reference, Subrange
 from ladderlab.st.checker import check_operand, check_project
 from ladderlab.st.project_text import source_to_project
 from tests.ir.helpers import (
@@ -269,17 +269,24 @@ def test_call_with_en_that_cannot_keep_its_order_is_refused():
 
 
 def test_unsupported_expressions_are_located_errors():
-    """References reach their variable only (pointer arithmetic moves along an array, tests/engine/
-    test_pointer_arithmetic.py): no reinterpretation of another type's memory, no ordering of addresses."""
+    """A pointer may see another type's bytes only where LadderLab lays them out as CODESYS does (ir/byte_layout.py:
+    not a TIME, whose bytes in CODESYS are not the value LadderLab keeps); an INT seen as bytes is a View."""
     text = (
-        "PROGRAM P\nVAR i : INT; b : BOOL; p : POINTER TO INT; q : POINTER TO BYTE; END_VAR\n"
-        "b := ADR(i) = ADR(i);\np := ADR(i) + 0;\nq := ADR(i);\nb := p < p;\nEND_PROGRAM\n"
+        "PROGRAM P\nVAR i : INT; t : TIME; b : BOOL; q : POINTER TO BYTE; END_VAR\n"
+        "b := ADR(i) = ADR(i);\nq := ADR(i);\nq := ADR(t);\nb := q < q;\nEND_PROGRAM\n"
     )
     assert errors(text) == [
-        "P/body:5:6, POU P: error IR-UNSUPPORTED: a REF_TO BYTE cannot refer to an INT: LadderLab's references keep "
-        "their target's type (no reinterpretation of memory)",
-        "P/body:6:6, POU P: error IR-UNSUPPORTED: references cannot be compared by '<'",
+        "P/body:5:6, POU P: error IR-UNSUPPORTED: a REF_TO BYTE cannot see a TIME as bytes: a TIME (its bytes in "
+        "CODESYS are not the value LadderLab keeps)",
     ]
+    compare, view, order = program_body(
+        "i : INT; b : BOOL; q : POINTER TO BYTE;", "b := i = i;\nq := ADR(i);\nb := q < q;"
+    )
+    to_int, to_byte = Reference(INT), Reference(BYTE)
+    assert view.value == ir.View(
+        ir.AddressOf(local("I", INT), to_int, "ADR(i)"), to_byte, ("int", 2, True), ("int", 1, False)
+    )
+    assert order.value == ir.Binary("LT", local("Q", to_byte), local("Q", to_byte), BOOL)
 
 
 def test_sizeof_is_a_constant_in_bytes():

@@ -1,4 +1,5 @@
-"""diagram_origin: the same Origin as the dataclass constructor makes (equal, same hash, frozen, same repr)."""
+"""diagram_origin: the same Origin as the dataclass constructor makes (equal, same hash, frozen, same repr); the IR
+nodes have slots, and their fast copy is ``dataclasses.replace``."""
 
 from __future__ import annotations
 
@@ -8,7 +9,9 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
+from ladderlab.ir import nodes
 from ladderlab.ir.nodes import Origin, diagram_origin
+from ladderlab.ir.types import BOOL
 
 _TEXT = st.text(min_size=1, max_size=8)
 
@@ -21,3 +24,23 @@ def test_diagram_origin_is_the_constructors_origin(pou: str, network: str, eleme
     assert dataclasses.asdict(made) == dataclasses.asdict(expected)  # every field set, none left out
     with pytest.raises(dataclasses.FrozenInstanceError):
         made.element = "other"  # type: ignore[misc]
+
+
+def test_every_ir_node_has_slots_and_no_instance_dict() -> None:
+    """A 50,000-network build keeps millions of IR nodes: a ``__dict__`` each took ~130 MB more at the peak and one
+    object more per node for the build's collection (issue 27, benchmarks/build.py)."""
+    classes = [c for c in vars(nodes).values() if isinstance(c, type) and dataclasses.is_dataclass(c)]
+    assert len(classes) > 25
+    assert [c.__name__ for c in classes if c.__module__ == nodes.__name__ and "__slots__" not in vars(c)] == []
+    assert not hasattr(diagram_origin("P", "n1", "c1"), "__dict__")
+
+
+@given(_TEXT, st.integers(), _TEXT)
+def test_node_copy_is_dataclasses_replace(name: str, line: int, element: str) -> None:
+    """The box templates' copy (no __post_init__, no frozen checks) makes what ``dataclasses.replace`` makes."""
+    var = nodes.Var("local", name, BOOL)
+    origin = nodes.Origin("P", line=line)
+    assign = nodes.Assign(var, nodes.Const(True, BOOL), origin)
+    other = diagram_origin("P", "n2", element)
+    assert nodes.node_copy(assign, {"origin": other}) == dataclasses.replace(assign, origin=other)
+    assert nodes.node_fields(assign) == {f.name: getattr(assign, f.name) for f in dataclasses.fields(assign)}

@@ -4,14 +4,18 @@ variable changed. Scans are numbered as ``values.scan`` (scans completed): Count
 
 from __future__ import annotations
 
+import dataclasses
 import json
 from pathlib import Path
 
 from fastapi.testclient import TestClient
 
+from ladderlab.model import Project
 from ladderlab.simulation.registry import SimulationRegistry
+from ladderlab.storage import Workspace
 
-from .test_simulations_support import counter, entry, of_type, recv_until, registry, subscribe
+from .helpers import st_program
+from .test_simulations_support import FAST, counter, entry, install, of_type, recv_until, registry, subscribe
 
 __all__ = ["counter", "registry"]  # fixtures
 
@@ -316,3 +320,86 @@ def test_a_step_through_refuses_what_it_cannot_redo(client: TestClient, counter:
         ws.send_json({"type": "fork"})
         error = recv_until(ws, of_type("error"))[0]
         assert error["message"] == "the scan shown is halted in a step through it: step to its end first"
+
+
+#: Main calls Spin, which loops ``n`` times: the scan where ``n`` is large takes long, in a step through it too.
+SPIN_PROJECT = {
+    "name": "spin",
+    "pous": [
+        {
+            **st_program(
+                "Spin",
+                "VAR_INPUT\n    n : DINT;\nEND_VAR\nVAR\n    i : DINT;\nEND_VAR",
+                "Spin := 0;\nFOR i := 1 TO n DO\n    Spin := Spin + 1;\nEND_FOR",
+            ),
+            "kind": "function",
+            "return_type": "DINT",
+        },
+        st_program(
+            "Main",
+            "VAR\n    n : DINT;\n    x : DINT;\n    Count : INT;\nEND_VAR",
+            "Count := Count + 1;\nx := Spin(n);\nCount := Count + 0;",
+        ),
+    ],
+    "tasks": [{"name": "Fast", "interval": "T#10ms", "programs": ["Main"]}],
+}
+SPINS = 400_000
+
+
+def test_a_step_that_does_not_end_in_time_is_refused_and_touches_nothing(
+    client: TestClient, workspace: Workspace
+) -> None:
+    """hist4 item 2: ``POST .../history/step`` waits ``history_timeout_s`` (the server's setting, 1 s here) for the
+    step; a step over the call of a function that loops 400,000 times in the debug variant takes longer, so it is
+    refused (409, in words) while it goes on; once it ends the scan shown is halted after the call (line 3, x as the
+    loop left it). The live simulation (3 scans, n back to 0) and the recorded scans stay as they were."""
+    settings = dataclasses.replace(FAST, history_timeout_s=1.0, watchdog_s=60.0)
+    registry = install(client, settings)
+    try:
+        workspace.create(Project.model_validate(SPIN_PROJECT))
+        sim = client.post("/api/projects/spin/simulations").json()["id"]
+        step = f"/api/simulations/{sim}/history/step"
+        with client.websocket_connect(f"/api/simulations/{sim}/ws") as ws:
+            subscribe(ws, ["Main.x", "Main.Count", "Main.n"])
+            ws.send_json({"type": "single_cycle"})
+            ws.send_json({"type": "write", "path": "Main.n", "value": SPINS})
+            ws.send_json({"type": "single_cycle"})
+            ws.send_json({"type": "write", "path": "Main.n", "value": 0})
+            ws.send_json({"type": "single_cycle"})
+            recv_until(ws, lambda m: m["type"] == "values" and m["scan"] == 3, timeout=30)
+            client.post(f"/api/simulations/{sim}/seek", json={"scan": 2})
+            lines = [client.post(step, json={"granularity": "statement"}).json() for _ in range(2)]
+            assert [info["history"]["stepping"]["at"]["line"] for info in lines] == [1, 2]
+
+            refused = client.post(step, json={"granularity": "over"})
+            assert refused.status_code == 409
+            assert refused.json()["detail"]["message"] == (
+                "the step did not end within 1 s (the server's history_timeout_s): the scan shown shows where it "
+                "stands once it ends"
+            )
+            ended, before = recv_until(
+                ws,
+                lambda m: m["type"] == "values" and ((m["history"]["stepping"] or {}).get("at") or {}).get("line") == 3,
+                timeout=60,
+            )
+            seen: dict[str, object] = {}
+            for message in [*before, ended]:
+                if message["type"] == "values":
+                    seen.update(message["changed"])
+            assert (ended["scan"], seen["MAIN.X"], seen["MAIN.COUNT"], seen["MAIN.N"]) == (2, SPINS, 2, SPINS)
+
+        live = registry.get(sim).handle
+        assert [live.read(path) for path in ("Main.Count", "Main.n", "Main.x")] == [3, 0, 0]
+        info = client.get(f"/api/simulations/{sim}").json()
+        assert (info["scan_count"], info["history"]["first"], info["history"]["last"]) == (3, 1, 3)
+        with client.websocket_connect(f"/api/simulations/{sim}/ws") as ws:
+            seen = dict(subscribe(ws, ["Main.x", "Main.Count"])["changed"])
+            for scan, x in ((1, 0), (2, SPINS), (3, 0)):
+                ws.send_json({"type": "seek", "scan": scan})
+                shown, before = recv_until(ws, _values(viewing=scan), timeout=30)
+                for message in [*before, shown]:
+                    if message["type"] == "values":
+                        seen.update(message["changed"])
+                assert (seen["MAIN.COUNT"], seen["MAIN.X"]) == (scan, x)
+    finally:
+        registry.close()

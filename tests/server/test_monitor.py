@@ -319,7 +319,10 @@ def test_element_breakpoints_and_power_flow_in_ladder(client: TestClient, motor_
         status, _ = recv_until(ws, of_type("status", state="halted"))
         assert status["at"]["network"] == "lamp"
         ws.send_json({"type": "breakpoint_clear"})
-        ws.send_json({"type": "step", "granularity": "over"})  # the last network of Main: the scan ends
+        ws.send_json({"type": "step", "granularity": "over"})  # the last network of Main: the task's next program
+        status, _ = recv_until(ws, of_type("status", state="halted"))
+        assert (status["at"]["pou"], status["at"]["network"]) == ("SCALING", "speed")
+        ws.send_json({"type": "step", "granularity": "over"})  # the last network of the last program: the scan ends
         recv_until(ws, of_type("status", state="stopped"))
 
 

@@ -12,17 +12,33 @@ from __future__ import annotations
 
 import dataclasses
 import json
+import os
+import signal
 
 from fastapi.testclient import TestClient
 
 from ladderlab.simulation.registry import SimulationRegistry
 from ladderlab.storage import Workspace
 
-from .test_simulations_support import FAST, counter_project, install, of_type, recv_until, registry, subscribe
+from .test_simulations_support import (
+    FAST,
+    counter_project,
+    install,
+    log_of,
+    of_type,
+    recv_until,
+    registry,
+    subscribe,
+    wait_for,
+)
 
 __all__ = ["registry"]  # fixture
 
 WATCH = ["Main.Count", "Main.Idle", "Main.Result"]
+HISTORY_ONLY = (
+    "this simulation shows a recording, history only: go to one of its scans and continue from there "
+    "(Continue from here) to run it or change its inputs"
+)
 
 
 def _recording(revision: str, scans: int = 6, inputs: list[dict[str, object]] | None = None) -> bytes:
@@ -204,3 +220,103 @@ def test_a_recording_too_long_to_run_in_time_is_refused_and_left_behind(
         assert client.get("/api/simulations").json() == []
     finally:
         registry.close()
+
+
+def _values(ws, seen: dict[str, object], scan: int, branch: int | None = None) -> list[object]:
+    """Seek ``scan`` (of ``branch``) and return Count, Idle, Result and Kept as that scan left them."""
+    ws.send_json({"type": "seek", "scan": scan, **({"branch": branch} if branch is not None else {})})
+    _seen(seen, recv_until(ws, _viewing(scan)))
+    return [seen[p] for p in ("MAIN.COUNT", "MAIN.IDLE", "MAIN.RESULT", "MAIN.KEPT")]
+
+
+def _history(client: TestClient, sim: str) -> tuple[object, ...]:
+    history = client.get(f"/api/simulations/{sim}").json()["history"]
+    return history["first"], history["last"], history["viewing"], history["branch"], history["recording"]
+
+
+def test_reset_of_an_opened_recording_is_refused_while_history_only_then_acts_on_the_live_branch(
+    client: TestClient, workspace: Workspace, registry: SimulationRegistry
+) -> None:
+    """Issue 23 (hist4 item 1): a recording shown history only is not reset (as it is not run: the recording ends
+    where it ended); after "Continue from here" a warm or a cold reset acts on the live branch as any reset does,
+    is recorded in its history like any input, and the recording stays viewable as branch 1."""
+    revision = workspace.create(counter_project())
+    sim = _open(client, _recording(revision)).json()["id"]
+    for body in (None, {"cold": False}, {"cold": True}):
+        refused = client.post(f"/api/simulations/{sim}/reset", json=body)
+        assert refused.status_code == 409
+        assert refused.json()["detail"]["message"] == HISTORY_ONLY
+    assert _history(client, sim) == (1, 6, 6, 1, True)  # nothing changed
+
+    with client.websocket_connect(f"/api/simulations/{sim}/ws") as ws:
+        seen = dict(subscribe(ws, [*WATCH, "Main.Kept"])["changed"])
+        assert _values(ws, seen, 4) == [4, 42, 25, 0]
+        ws.send_json({"type": "fork"})  # the live branch 2 starts from scan 4
+        recv_until(ws, lambda m: m["type"] == "values" and (m.get("history") or {}).get("branch") == 2)
+        ws.send_json({"type": "write", "path": "Main.Kept", "value": 5})  # RETAIN: a warm reset keeps it
+        ws.send_json({"type": "single_cycle"})
+        _seen(seen, recv_until(ws, lambda m: m["type"] == "values" and m["scan"] == 5))
+        assert [seen[p] for p in ("MAIN.COUNT", "MAIN.IDLE", "MAIN.RESULT", "MAIN.KEPT")] == [5, 42, 25, 5]
+
+        warm = client.post(f"/api/simulations/{sim}/reset", json={"cold": False})
+        assert warm.status_code == 200, warm.text
+        assert client.post(f"/api/simulations/{sim}/cycle").json()["scan_count"] == 6
+        cold = client.post(f"/api/simulations/{sim}/reset", json={"cold": True})
+        assert cold.status_code == 200, cold.text
+        info = client.post(f"/api/simulations/{sim}/cycle").json()
+        assert (info["state"], info["scan_count"], info["fault"]) == ("stopped", 7, None)
+        assert info["history"]["recording"] is False and info["history"]["branch"] == 2
+        # the live branch's history offers the scan continued from and every scan since, before and after the resets
+        assert (info["history"]["first"], info["history"]["last"]) == (4, 7)
+        # each scan as IEC 61131-3 restarts leave it: a warm restart re-initialises all but RETAIN, a cold one all
+        assert _values(ws, seen, 5) == [5, 42, 25, 5]
+        assert _values(ws, seen, 6) == [1, 7, 100, 5]  # warm: Count, Idle, Divisor start again; Kept stays
+        assert _values(ws, seen, 7) == [1, 7, 100, 0]  # cold: Kept too
+        assert _values(ws, seen, 6, branch=1) == [6, 42, 25, 0]  # the recording is kept as it was
+        assert _values(ws, seen, 1, branch=1) == [1, 7, 100, 0]
+
+
+def test_a_crashed_simulation_opened_from_a_recording_opens_it_again_on_reset(
+    client: TestClient, workspace: Workspace, registry: SimulationRegistry
+) -> None:
+    """Issue 23 (hist4 item 1): the process of a simulation opened from a recording crashes (history only, then
+    after a fork): while it is gone no history is offered (it was in the process); the reset that starts a new
+    process opens the recording again, history only, its scans as they were recorded. What ran after "Continue
+    from here" was only in the process that crashed; the log says so."""
+    revision = workspace.create(counter_project())
+    sim = _open(client, _recording(revision)).json()["id"]
+    handle = registry.get(sim).handle
+    with client.websocket_connect(f"/api/simulations/{sim}/ws") as ws:
+        seen = dict(subscribe(ws, [*WATCH, "Main.Kept"])["changed"])
+        for fork_first in (False, True):
+            if fork_first:
+                assert _values(ws, seen, 2) == [2, 7, 100, 0]
+                ws.send_json({"type": "fork"})
+                recv_until(ws, lambda m: m["type"] == "values" and (m.get("history") or {}).get("branch") == 2)
+                ws.send_json({"type": "single_cycle"})
+                recv_until(ws, lambda m: m["type"] == "values" and m["scan"] == 3)
+            process = handle.process
+            os.kill(process.pid, signal.SIGKILL)
+            log, _ = recv_until(ws, log_of("fault"))
+            assert log["message"].startswith("the simulation's process ended unexpectedly (exit code -9")
+            recv_until(ws, lambda m: m["type"] == "values" and m["history"] is None)  # nothing to view
+            wait_for(lambda p=process: p.exitcode is not None)
+            info = client.get(f"/api/simulations/{sim}").json()
+            assert (info["state"], info["history"]) == ("faulted", None)
+
+            reset = client.post(f"/api/simulations/{sim}/reset")
+            assert reset.status_code == 200, reset.text
+            info = reset.json()
+            assert (info["state"], info["scan_count"], info["fault"]) == ("stopped", 6, None)
+            assert _history(client, sim) == (1, 6, 6, 1, True)
+            note, before = recv_until(ws, log_of("system"))
+            _seen(seen, (note, before))
+            assert note["message"] == (
+                "started again in a new process: the recording of 6 scans is open again, history only (what ran "
+                "after Continue from here is lost); forces and breakpoints are cleared"
+            )
+            _seen(seen, recv_until(ws, _viewing(6)))
+            for scan, values in {3: [3, 42, 100, 0], 4: [4, 42, 25, 0], 6: [6, 42, 25, 0]}.items():
+                assert _values(ws, seen, scan) == values
+            ws.send_json({"type": "single_cycle"})
+            assert recv_until(ws, of_type("error"))[0]["message"] == HISTORY_ONLY

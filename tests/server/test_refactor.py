@@ -70,3 +70,23 @@ def test_duplicate_adds_a_copy_after_the_original(client: TestClient) -> None:
     assert pous[1]["body"] == BLINK["body"]
     missing = client.post("/api/refactor/duplicate", json={"project": PROJECT, "name": "Nope", "new_name": "X"})
     assert missing.status_code == 404
+
+
+def test_a_method_renamed_with_its_calls_or_refused_with_the_reason(client: TestClient) -> None:
+    """Issue 25 item 5: POST /api/refactor/rename-member renames a function block's method and its calls."""
+    blink = {**BLINK, "methods": [{"name": "Toggle", "declarations": "", "body": "Q := NOT Q;"}]}
+    main = {**MAIN, "body": "b(IN := lamp);\nb.Toggle();\nlamp := b.Q;"}
+    project = {**PROJECT, "pous": [blink, main]}
+    body = {"project": project, "pou": "Blink", "old_name": "Toggle", "new_name": "Flip"}
+    response = client.post("/api/refactor/rename-member", json=body)
+    assert response.status_code == 200
+    answer = response.json()
+    assert answer["project"]["pous"][0]["methods"][0]["name"] == "Flip"
+    assert answer["project"]["pous"][1]["body"] == "b(IN := lamp);\nb.Flip();\nlamp := b.Q;"
+    assert [(c["part"], c["pou"], c["line"], c["text"]) for c in answer["changes"]] == [
+        ("method", "Blink", None, "METHOD Toggle"),
+        ("body", "Main", 2, "b.Toggle();"),
+    ]
+    refused = client.post("/api/refactor/rename-member", json={**body, "new_name": "q q"})
+    assert refused.status_code == 422
+    assert "q q is no IEC name" in refused.json()["detail"]["message"]

@@ -268,7 +268,7 @@ def test_login_and_logout_with_a_password(workspace: Workspace) -> None:
 
 
 def test_password_guessing_is_throttled(workspace: Workspace, monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setattr("ladderlab.server.auth.FAILURE_DELAY_S", 0)
+    monkeypatch.setattr("ladderlab.server.login.FAILURE_DELAY_S", 0)
     auth = Auth("correct horse battery", "password")
     client = TestClient(create_app(workspace, security=Security(auth=auth)), base_url="http://localhost:8000")
     statuses = [client.post("/api/login", json={"secret": f"guess{i}"}).status_code for i in range(12)]

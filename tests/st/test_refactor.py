@@ -152,6 +152,38 @@ def test_renaming_a_global_or_a_program_changes_task_triggers_and_program_instan
     assert [(c.part, c.text) for c in changes] == [("task", "Tank1 : Main")]
 
 
+def test_a_renamed_global_or_program_renames_the_first_name_of_every_panel_path() -> None:
+    """Operator panel widgets name variables by path (docs/hmi.md): a path whose first name is the renamed
+    global or program follows it, in every binding field (bind, visible, a motion, a trend's paths); a member
+    or a longer name that only starts alike keeps its text, as an address does."""
+    lamp = {"type": "lamp", "id": "run", "x": 0, "y": 0, "w": 20, "h": 20, "bind": "Go", "visible": "Main.Go"}
+    lamp["move_x"] = {"path": "go[2]", "distance": 50}
+    trend = {"type": "trend", "id": "t", "x": 0, "y": 40, "w": 200, "h": 100, "paths": ["Main.Level", "GoFast"]}
+    trend["paths"].append("%IX0.0")
+    project = Project.model_validate(
+        {
+            "name": "hmi",
+            "globals": "VAR_GLOBAL Go : BOOL; GoFast : BOOL; END_VAR",
+            "pous": [{"name": "Main", "kind": "program", "language": "st", "declarations": "", "body": ""}],
+            "panels": [{"name": "Operator", "widgets": [lamp, trend]}],
+        }
+    )
+    renamed, changes = rename(project, "GO", "Start")
+    widgets = renamed.panels[0].widgets
+    assert (widgets[0].bind, widgets[0].visible, widgets[0].move_x.path) == ("Start", "Main.Go", "Start[2]")
+    assert widgets[1].paths == ["Main.Level", "GoFast", "%IX0.0"]
+    assert [(c.part, c.panel, c.element, c.text) for c in changes if c.part == "panel"] == [
+        ("panel", "Operator", "run", "Go"),
+        ("panel", "Operator", "run", "go[2]"),
+    ]
+    renamed, changes = rename(project, "Main", "Filler")
+    assert (renamed.panels[0].widgets[0].visible, renamed.panels[0].widgets[1].paths[0]) == (
+        "Filler.Go",
+        "Filler.Level",
+    )
+    assert [(r.element, r.text) for r in references(project, "main")] == [("run", "Main.Go"), ("t", "Main.Level")]
+
+
 def test_references_leave_out_the_definition() -> None:
     found = references(_project(), "Main")
     assert [(r.part, r.task, r.file) for r in found] == [("task", "Fast", None), ("test", None, "tests/t.st")]
@@ -295,3 +327,78 @@ def test_renaming_rewrites_extends_implements_and_method_and_property_texts() ->
     sim.write("Main.q.s.w", 3)
     sim.cycle(1)
     assert sim.read("Main.n") == 2 * 3
+
+
+COUNTERS = """
+TYPE
+  Other : STRUCT Bump : INT; END_STRUCT;
+END_TYPE
+FUNCTION_BLOCK Counter
+VAR_OUTPUT n : INT; END_VAR
+METHOD Bump : INT
+VAR_INPUT step : INT; END_VAR
+n := n + step;
+Bump := n;
+END_METHOD
+METHOD Twice : INT
+Twice := THIS^.Bump(step := 1) + Bump(step := 1);
+END_METHOD
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK Fast EXTENDS Counter
+METHOD Bump : INT
+VAR_INPUT step : INT; END_VAR
+Bump := SUPER^.Bump(step := step * 10);
+END_METHOD
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR c : Counter; f : Fast; cs : ARRAY[1..2] OF Counter; r : INT; t : INT; other : Other; END_VAR
+r := c.Bump(step := 2) + cs[1].Bump(step := 1);
+t := f.Twice();
+other.Bump := 5; (* c.Bump in a comment *)
+END_PROGRAM
+"""
+
+
+def test_renaming_a_method_renames_its_overrides_and_every_call() -> None:
+    """Issue 25 item 5: a method renamed in the Methods tab takes its calls along: ``inst.Old(...)`` through an
+    instance, an array element and an LD box ``inst.Old``, ``THIS^.Old``, ``SUPER^.Old`` and a bare ``Old(...)`` in
+    the function block and those extending it, whose override is renamed too; a structure's member of the same name
+    and a comment keep their text. The renamed project builds and computes what the original computed."""
+    from ladderlab.model.project import Pou
+    from ladderlab.simulation.build import build_project
+    from ladderlab.st.project_text import source_to_project
+    from ladderlab.st.refactor import member_name_problem, rename_member
+    from tests.ir.diagram_support import box, contact, ld_pou, rung
+
+    project, _ = source_to_project(COUNTERS, "counters")
+    bump = box("b1", "k.Bump", en=True, step="3", outputs={"OUT": "got"})
+    project.pous.append(ld_pou("Lad", "VAR k : Counter; got : INT; END_VAR", rung("n1", contact("c1", "TRUE"), bump)))
+    renamed, changes = rename_member(project, "Counter", "bump", "Add")
+    counter, fast, main, lad = (renamed.pou(n) for n in ("Counter", "Fast", "Main", "Lad"))
+    assert [m.name for m in counter.methods] == ["Add", "Twice"] and [m.name for m in fast.methods] == ["Add"]
+    assert counter.methods[1].body.strip() == "Twice := THIS^.Add(step := 1) + Add(step := 1);"
+    assert counter.methods[0].body.strip() == "n := n + step;\nAdd := n;"  # its result variable too
+    assert fast.methods[0].body.strip() == "Add := SUPER^.Add(step := step * 10);"
+    assert main.body.strip().splitlines() == [
+        "r := c.Add(step := 2) + cs[1].Add(step := 1);",
+        "t := f.Twice();",
+        "other.Bump := 5; (* c.Bump in a comment *)",
+    ]
+    assert Pou.model_validate(lad).body.networks[0].elements[1].call == "k.Add"
+    assert [(c.part, c.pou, c.member, c.text) for c in changes] == [
+        ("method", "Counter", "Bump", "METHOD Bump"),
+        ("body", "Counter", "Bump", "Bump := n;"),
+        ("body", "Counter", "Twice", "Twice := THIS^.Bump(step := 1) + Bump(step := 1);"),
+        ("method", "Fast", "Bump", "METHOD Bump"),
+        ("body", "Fast", "Bump", "Bump := SUPER^.Bump(step := step * 10);"),
+        ("body", "Main", None, "r := c.Bump(step := 2) + cs[1].Bump(step := 1);"),
+        ("network", "Lad", None, "k.Bump"),
+    ]
+    for before_after in (project, renamed):
+        sim = build_project(before_after).simulation()
+        sim.cycle(1)
+        # c: 0 + 2; cs[1]: 0 + 1; f.Twice: two Fast bumps of 10 each -> 10 + 20; k: 3
+        assert (sim.read("Main.r"), sim.read("Main.t"), sim.read("Lad.got")) == (2 + 1, 10 + 20, 3)
+    assert member_name_problem(project, "Counter", "Bump", "twice") == "Counter already has a member called Twice"
+    assert member_name_problem(project, "Counter", "Nope", "X") == "Counter has no method or property called Nope"
+    assert member_name_problem(project, "Counter", "Bump", "1x").startswith("1x is no IEC name")

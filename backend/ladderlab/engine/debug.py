@@ -50,10 +50,17 @@ def _within(frames: tuple, start: tuple) -> bool:
     return frames == start[: len(frames)]
 
 
-#: A step ``over`` ends in the POU call where it started, or in a caller once that call returned (not in
-#: calls made from it, nor in a sibling call); a step ``out`` ends in a caller.
+def _over(frames: tuple, start: tuple) -> bool:
+    """Whether a step ``over`` that started in ``start`` ends at a halt in ``frames`` (both begin with the task's
+    frame): in the POU call where it started, or in a caller once that call returned (not in calls made from it,
+    nor in a sibling call); once the program it started in returned, in the next program its task runs. As in
+    CODESYS: after a called POU's last statement the caller's next one, after a program's the next program's."""
+    return _within(frames, start) or (len(frames) == 2 and frames[0] is start[0])
+
+
+#: Which halts end a step ``over`` (``_over``) or ``out`` (in a caller).
 STEP_ENDS = {
-    "over": _within,
+    "over": _over,
     "out": lambda frames, start: len(frames) < len(start) and _within(frames, start),
 }
 

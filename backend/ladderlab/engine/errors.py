@@ -64,6 +64,7 @@ def check_subrange(value: int, low: int, high: int) -> int:
 
 FOR_STEP_ZERO = "for_step_zero"
 NULL_DEREFERENCE = "null_dereference"
+DANGLING_REFERENCE = "dangling_reference"
 WATCHDOG = "watchdog"
 OUT_OF_MEMORY = "out_of_memory"
 
@@ -79,6 +80,29 @@ def pointer_outside(what: str, position: int, length: int, size: int | None = No
     elements = f"{length} element(s)" + (f" of {size} byte(s)" if size is not None else "")
     return PlcRuntimeError(
         INDEX_RANGE, f"{what} reaches element {position} of {elements}: outside the variable it points into"
+    )
+
+
+def pointer_outside_bytes(what: str, offset: int, size: int, whole: int) -> PlcRuntimeError:
+    """A pointer seeing memory as another type (``POINTER TO BYTE`` over a STRING) that would read, write or move
+    outside the ``whole`` bytes of the variable it points into; ``size``: the bytes an access covers (0: a move)."""
+    reach = f"bytes {offset}..{offset + size - 1}" if size else f"byte {offset}"
+    return PlcRuntimeError(INDEX_RANGE, f"{what} reaches {reach} of a {whole}-byte variable: outside it")
+
+
+def pointers_unordered(op: str, left: str, right: str) -> PlcRuntimeError:
+    """``p < q`` with pointers into different variables (or NULL): LadderLab's variables have no addresses to order."""
+    return PlcRuntimeError(
+        INVALID_ARGUMENT, f"{left} {op} {right}: only pointers into one variable (an array, a STRING) can be ordered"
+    )
+
+
+def dangling_reference(text: str, function: str) -> PlcRuntimeError:
+    """A reference to a variable of a FUNCTION call, used after that call returned (IEC 61131-3 ed. 3 6.4.4.10:
+    the variable no longer exists; CODESYS would read whatever reuses its memory)."""
+    return PlcRuntimeError(
+        DANGLING_REFERENCE,
+        f"dangling reference: {text} refers to a variable of a call of FUNCTION {function} that has returned",
     )
 
 

@@ -183,6 +183,11 @@ class Simulation:
         self.compiled = compiled
         self._attach_debugger()
 
+    @property
+    def watchdogs(self) -> dict[str, float]:
+        """Each task's watchdog budget in seconds, by task name: a replay of its scans runs under the same ones."""
+        return {task.name: task.watchdog_s for task in self._tasks}
+
     def variant_program(self, variant: str) -> CompiledProgram | None:
         """This simulation's program compiled as ``variant``, when it was (a scan history replays the monitor code)."""
         return self._variants.get(variant)
@@ -534,12 +539,14 @@ class Simulation:
         return halt
 
     def _call_frames(self) -> tuple[object, ...]:
-        """The POU calls the halted scan is suspended in, outermost first: its generators (``yield from``
-        chains one per call), without the chunk functions that hold parts of one POU's body."""
+        """The task and the POU calls the halted scan is suspended in, outermost first: their generators
+        (``yield from`` chains one per call), without the scan's own (``_debug_scan``, ``_debug_tasks``) and the
+        chunk functions that hold parts of one POU's body."""
         frames: list[object] = []
         frame = cast("Generator[object, None, None] | None", self._scan)  # the debug scan is a generator
         while frame is not None:
-            if not names.is_chunk_function(frame.gi_code.co_name):
+            code = frame.gi_code
+            if code not in _SCHEDULER_CODE and not names.is_chunk_function(code.co_name):
                 frames.append(frame)
             frame = frame.gi_yieldfrom
         return tuple(frames)
@@ -983,3 +990,7 @@ def _indices(table: ProbeTable, elements: Iterable[str] | None) -> Iterable[int]
     if elements is None:
         return range(len(table.elements))
     return [index for index in map(table.index, dict.fromkeys(elements)) if index is not None]
+
+
+#: The debug scan's own generators, above the task's: no call of the program's (Simulation._call_frames).
+_SCHEDULER_CODE = (Simulation._debug_scan.__code__, Simulation._debug_tasks.__code__)

@@ -27,7 +27,7 @@ from typing import TYPE_CHECKING, Any, NamedTuple
 
 from ..st import ast
 from ..st import types as t
-from .nodes import Binary, Call, Convert, Expr, FbCall, FnCall, Index, Origin, Stmt, Unary, Var
+from .nodes import Binary, Call, Convert, Expr, FbCall, FnCall, Index, Origin, Stmt, Unary, Var, node_copy, node_fields
 from .types import BOOL, Elementary, IrType
 
 if TYPE_CHECKING:
@@ -237,18 +237,20 @@ def _binder(node: Any, names: frozenset[str]) -> Callable[[dict[str, Expr]], Any
         return lambda bindings: kind(item if bind is None else bind(bindings) for item, bind in zip(node, items))
     if not isinstance(node, _COMPOSITE):
         return None
-    fields = {name: bind for name, value in vars(node).items() if (bind := _binder(value, names)) is not None}
-    return (lambda bindings: _copy(node, {name: bind(bindings) for name, bind in fields.items()})) if fields else None
+    fields = {name: bind for name, value in node_fields(node).items() if (bind := _binder(value, names)) is not None}
+    return (
+        (lambda bindings: node_copy(node, {name: bind(bindings) for name, bind in fields.items()})) if fields else None
+    )
 
 
 def _statement_binder(statement: Stmt, names: frozenset[str]) -> Callable[[dict[str, Expr], Origin], Stmt]:
     """How to copy a (flat) template statement with its placeholders bound, at a box's origin."""
     fields = {
         name: bind
-        for name, value in vars(statement).items()
+        for name, value in node_fields(statement).items()
         if name != "origin" and (bind := _binder(value, names)) is not None
     }
-    return lambda bindings, origin: _copy(
+    return lambda bindings, origin: node_copy(
         statement, {"origin": origin, **{name: bind(bindings) for name, bind in fields.items()}}
     )
 
@@ -257,11 +259,3 @@ def _select(value: Expr, placeholder: Var) -> Var:
     """A member of a bound FB instance: the placeholder's selectors below the instance's own path."""
     assert isinstance(value, Var)
     return Var(value.scope, value.name, placeholder.type, (*value.path, *placeholder.path))
-
-
-def _copy(node: Any, changes: dict[str, Any]) -> Any:
-    """A copy of an IR dataclass with ``changes`` (without the frozen dataclasses' per-field setattr calls)."""
-    copy = object.__new__(type(node))
-    copy.__dict__.update(vars(node))
-    copy.__dict__.update(changes)
-    return copy

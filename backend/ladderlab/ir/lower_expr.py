@@ -36,10 +36,27 @@ from ..st.methods import is_self, is_super
 from ..st.printer import print_expression
 from ..st.rules import EnumValue
 from ..st.symbols import PouInfo, PropertyRef, Symbol
+from .byte_layout import byte_layout
 from .context import PouContext
 from .lower_types import LoweringError, byte_size, engine_value, ir_default
 from .method_outputs import output_arguments
-from .nodes import AddressOf, Assign, Binary, Call, Const, Convert, Deref, Expr, FnCall, Index, Member, Stmt, Unary, Var
+from .nodes import (
+    AddressOf,
+    Assign,
+    Binary,
+    Call,
+    Const,
+    Convert,
+    Deref,
+    Expr,
+    FnCall,
+    Index,
+    Member,
+    Stmt,
+    Unary,
+    Var,
+    View,
+)
 from .types import BOOL, Array, Elementary, FbInstance, IrType, Reference, Struct, Subrange, describe
 
 POINTER_ARITHMETIC = "pointer arithmetic is not supported: a reference reaches its variable only"
@@ -130,17 +147,22 @@ def interface_value(node: ast.Expr, ctx: PouContext, target: Reference) -> Expr:
 
 
 def _reference_to(expr: Expr, target: Reference, node: ast.Expr) -> Expr:
-    """A reference stored as a reference to ``target.target``: NULL, or one to a variable of that very type (a
-    ``POINTER TO BYTE`` cannot stand for another variable: the engine's references keep their target's type)."""
+    """A reference stored as a reference to ``target.target``: NULL, one to a variable of that very type, or a
+    ``View`` of the variable's bytes as that type (a ``POINTER TO BYTE`` over a STRING: ir/byte_layout.py) when
+    both types have a byte layout."""
     if isinstance(expr, Const) and expr.value is None:
         return Const(None, target)
-    if isinstance(expr.type, Reference) and _same_target(expr.type.target, target.target):
+    if not isinstance(expr.type, Reference):
+        raise LoweringError(f"a {_reference_text(target)} cannot refer to {_referred_text(expr.type)}", node)
+    if _same_target(expr.type.target, target.target):
         return expr
-    raise LoweringError(
-        f"a {_reference_text(target)} cannot refer to {_referred_text(expr.type)}: LadderLab's references keep "
-        "their target's type (no reinterpretation of memory)",
-        node,
-    )
+    whole, seen = byte_layout(expr.type.target), byte_layout(target.target)
+    for problem in (whole, seen):
+        if isinstance(problem, str):
+            raise LoweringError(
+                f"a {_reference_text(target)} cannot see {_referred_text(expr.type)} as bytes: {problem}", node
+            )
+    return View(expr, target, whole, seen)  # type: ignore[arg-type]  # both specs (checked above)
 
 
 def _same_target(a: IrType, b: IrType) -> bool:
@@ -452,16 +474,18 @@ def _short_circuit(node: ast.Binary, op: str, ctx: PouContext) -> Expr:
 
 def _reference_operation(node: ast.Binary, op: str, ctx: PouContext) -> Expr:
     """``r1 = r2``, ``r <> NULL``: whether two references refer to one variable. ``p + n`` / ``p - n`` (bytes,
-    CODESYS): the pointer moved along the array it points into (the engine checks it stays there). Ordering
-    would compare memory addresses, which the engine's references have not got."""
+    CODESYS): the pointer moved along the array it points into (the engine checks it stays there). ``p < q`` ...
+    order two pointers into one variable by the byte they point to (the engine faults on different variables)."""
     if op in ("ADD", "SUB") and isinstance(node.left.ty, t.PointerType) and t.in_family(node.right.ty, "ANY_INT"):
         pointer = lower_expr(node.left, ctx)
         offset = lower_expr(node.right, ctx, Elementary("DINT"))
         return Binary(op, pointer, offset, pointer.type)  # type: ignore[arg-type]  # a Reference is a value type here
+    if op in ("ADD", "SUB"):
+        raise LoweringError(POINTER_ARITHMETIC, node)
     if op not in ("EQ", "NE"):
-        raise LoweringError(
-            POINTER_ARITHMETIC if op in ("ADD", "SUB") else f"references cannot be compared by '{node.op}'", node
-        )
+        if not (isinstance(node.left.ty, t.PointerType) and isinstance(node.right.ty, t.PointerType)):
+            raise LoweringError(f"'{node.op}' orders two pointers, not a pointer and a number", node)
+        return Binary(op, lower_expr(node.left, ctx), lower_expr(node.right, ctx), BOOL)  # type: ignore[arg-type]  # LT..GE
     left, right = lower_expr(node.left, ctx), lower_expr(node.right, ctx)
     if isinstance(left, Const) and left.value in (None, 0):  # NULL (an interface's 0) takes the other's type
         left = Const(None, right.type)

@@ -66,6 +66,11 @@ def lower_project(project: Project, checked: CheckResult | None = None) -> Lower
 
 
 def _lower_project(project: Project, checked: CheckResult | None) -> LoweringResult:
+    with st_types.typing_rules(project.typing):  # the checker's type rules, which the lowering mirrors (in this thread)
+        return _lower_typed_project(project, checked)
+
+
+def _lower_typed_project(project: Project, checked: CheckResult | None) -> LoweringResult:
     project = with_libraries(project)
     too_large = source_too_large(project)
     if too_large is not None:  # refused before it is parsed: a build needs ~800 MB per MB of ST

@@ -10,16 +10,18 @@ See docs/ir.md for the invariants.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Literal
+from typing import Any, Literal, TypeVar
 
 from ..model.places import ProjectPlaces
 from ..model.validate import PLANT_TASK
 from .types import IrType
 
+T = TypeVar("T")
+
 # --------------------------------------------------------------------------- origin
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Origin:
     """Where a node came from: an ST span, or a network and element of a diagram. ``body`` names the part of an SFC
     POU the span or network lies in (an action or a named transition); None: the POU's own body, or its chart."""
@@ -35,36 +37,53 @@ class Origin:
 
 
 def diagram_origin(pou: str, network: str, element: str | None = None) -> Origin:
-    """``Origin(pou, network=network, element=element)``, made without the frozen dataclass's seven
-    ``object.__setattr__`` calls: a 10,000-network diagram makes one per element (1.4 -> 0.4 us each).
+    """``Origin(pou, network=network, element=element)``, made without the frozen dataclass's eight
+    ``object.__setattr__`` calls: a 10,000-network diagram makes one per element.
     (tests/ir/test_nodes.py checks it equals the constructor's object.)"""
     origin = object.__new__(Origin)
-    origin.__dict__.update(
-        pou=pou, line=None, column=None, end_line=None, end_column=None, network=network, element=element, body=None
-    )
+    for set_slot, value in zip(_ORIGIN_SLOTS, (pou, None, None, None, None, network, element, None), strict=True):
+        set_slot(origin, value)
     return origin
+
+
+#: The slot setters of Origin's fields, in order (a slot's descriptor sets it past the frozen ``__setattr__``).
+_ORIGIN_SLOTS = tuple(getattr(Origin, name).__set__ for name in Origin.__slots__)
+
+
+def node_fields(node: Any) -> dict[str, Any]:
+    """An IR node's fields by name (the nodes have slots, no ``__dict__``: memory and collections of a large
+    build, issue 27)."""
+    return {name: getattr(node, name) for name in node.__slots__}
+
+
+def node_copy(node: T, changes: dict[str, Any]) -> T:
+    """A copy of an IR node with ``changes``, without the frozen dataclasses' checks or ``__post_init__``."""
+    copy = object.__new__(type(node))
+    for name in node.__slots__:  # type: ignore[attr-defined]  # every IR node class has slots
+        object.__setattr__(copy, name, changes[name] if name in changes else getattr(node, name))
+    return copy
 
 
 # --------------------------------------------------------------------------- expressions
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Const:
     value: object
     type: IrType
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Index:
     indices: tuple[Expr, ...]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Member:
     name: str
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Deref:
     """``^``: the variable a reference (REF_TO / POINTER TO) refers to; a NULL reference is a runtime error."""
 
@@ -75,7 +94,7 @@ Scope = Literal["local", "global"]
 SELF = "__SELF"
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Var:
     """A variable access path: a root slot then array indices (Index), struct/FB member selections (Member) and
     dereferences of references (Deref).
@@ -93,14 +112,14 @@ class Var:
     path: tuple[Selector, ...] = ()
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Unary:
     op: Literal["NEG", "NOT"]
     operand: Expr
     type: IrType
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Binary:
     """Arithmetic, comparison or boolean operator on operands of one type (after conversions)."""
 
@@ -128,7 +147,7 @@ class Binary:
     type: IrType
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Call:
     """A function call: a standard function (by name, specialised to ``arg_types``) or a user function.
 
@@ -144,14 +163,14 @@ class Call:
     virtual: bool = False
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Convert:
     operand: Expr
     source: IrType
     type: IrType
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class AddressOf:
     """``REF(x)`` / ``ADR(x)``: a reference (``type``, a ``Reference``) to the variable ``var``; ``text`` is the
     call as written, which the online views show as the reference's value."""
@@ -161,7 +180,19 @@ class AddressOf:
     text: str
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
+class View:
+    """The reference ``value`` seen as a pointer to another type (``type``, a ``Reference``): CODESYS's
+    ``pt := ADR(str)`` with ``pt : POINTER TO BYTE``. ``whole`` and ``seen`` are the byte layouts
+    (ir/byte_layout.py) of what ``value`` points to and of what the view reads and writes."""
+
+    value: Expr
+    type: IrType
+    whole: tuple
+    seen: tuple
+
+
+@dataclass(frozen=True, slots=True)
 class Attempt:
     """``?=``'s value: the reference ``value`` (to an FB instance) when the instance's FB is one of ``blocks`` (those
     implementing the target's interface), else NULL (IEC 61131-3 ed. 3, 6.6.6.7)."""
@@ -171,19 +202,19 @@ class Attempt:
     type: IrType
 
 
-Expr = Const | Var | Unary | Binary | Call | Convert | AddressOf | Attempt
+Expr = Const | Var | Unary | Binary | Call | Convert | AddressOf | View | Attempt
 
 # --------------------------------------------------------------------------- statements
 
 
-@dataclass
+@dataclass(slots=True)
 class Assign:
     target: Var
     value: Expr
     origin: Origin
 
 
-@dataclass
+@dataclass(slots=True)
 class If:
     branches: list[tuple[Expr, list[Stmt]]]
     orelse: list[Stmt]
@@ -193,7 +224,7 @@ class If:
 CaseLabel = int | tuple[int, int]
 
 
-@dataclass
+@dataclass(slots=True)
 class Case:
     selector: Expr
     branches: list[tuple[list[CaseLabel], list[Stmt]]]
@@ -201,7 +232,7 @@ class Case:
     origin: Origin
 
 
-@dataclass
+@dataclass(slots=True)
 class For:
     var: Var
     start: Expr
@@ -211,38 +242,38 @@ class For:
     origin: Origin
 
 
-@dataclass
+@dataclass(slots=True)
 class While:
     cond: Expr
     body: list[Stmt]
     origin: Origin
 
 
-@dataclass
+@dataclass(slots=True)
 class Repeat:
     body: list[Stmt]
     until: Expr
     origin: Origin
 
 
-@dataclass
+@dataclass(slots=True)
 class Exit:
     origin: Origin
 
 
-@dataclass
+@dataclass(slots=True)
 class Continue:
     """CONTINUE: on to the next iteration of the innermost loop (a REPEAT's UNTIL is tested first)."""
 
     origin: Origin
 
 
-@dataclass
+@dataclass(slots=True)
 class Return:
     origin: Origin
 
 
-@dataclass
+@dataclass(slots=True)
 class FbCall:
     """Call an FB instance: set inputs, run one call with the scan's clock, copy outputs out.
 
@@ -259,7 +290,7 @@ class FbCall:
     body: str | None = None
 
 
-@dataclass
+@dataclass(slots=True)
 class FnCall:
     """A function call as a statement, with EN/ENO: LD/FBD boxes and ST calls that use EN or ENO.
 
@@ -275,7 +306,7 @@ class FnCall:
     eno: Var | None = None
 
 
-@dataclass
+@dataclass(slots=True)
 class Jump:
     """Go to the network block ``label`` of the same POU when ``cond`` holds (None: always)."""
 
@@ -284,7 +315,7 @@ class Jump:
     origin: Origin
 
 
-@dataclass
+@dataclass(slots=True)
 class Probe:
     """Record ``value`` as element ``element``'s power flow / pin value in this scan (monitoring only).
 
@@ -297,7 +328,7 @@ class Probe:
     kind: Literal["element", "transition"] = "element"
 
 
-@dataclass
+@dataclass(slots=True)
 class Block:
     """One network (LD/FBD) or the whole body (ST); ``label`` is its jump target, if any."""
 
@@ -314,7 +345,7 @@ Stmt = Assign | If | Case | For | While | Repeat | Exit | Continue | Return | Fb
 VarClass = Literal["VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_EXTERNAL", "VAR_TEMP", "VAR_GLOBAL"]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class ReferenceInit:
     """The initial value ``REF(x)`` of a reference slot: the whole variable ``name`` of this POU (``local``) or a
     global, or its array element ``x[index]`` (constant indices, as declared), made after every other slot is
@@ -326,7 +357,7 @@ class ReferenceInit:
     index: tuple[int, ...] = ()
 
 
-@dataclass
+@dataclass(slots=True)
 class Slot:
     """A declared variable of a POU (or a global): its storage, type and initial value."""
 
@@ -340,7 +371,7 @@ class Slot:
     hidden: bool = False
 
 
-@dataclass
+@dataclass(slots=True)
 class Pou:
     name: str
     kind: Literal["program", "function_block", "function"]
@@ -357,7 +388,7 @@ class Pou:
     live_clock: bool = False
 
 
-@dataclass
+@dataclass(slots=True)
 class ProgramInstance:
     """A program instance: an object of its PROGRAM's class that the engine keeps among the globals, so
     paths start with its name (``INST.X``) and RETAIN / warm restarts treat it like a global FB instance.
@@ -371,7 +402,7 @@ class ProgramInstance:
     init: list[tuple[Var, Const, bool]] = field(default_factory=list)
 
 
-@dataclass
+@dataclass(slots=True)
 class TaskSpec:
     """A task: cyclic every ``interval_ms`` (None: only on SINGLE), once on each rising edge of ``single``
     (a BOOL variable's path; with an interval, the task is cyclic while it is FALSE, CFG-05), in ``priority``
@@ -388,7 +419,7 @@ class TaskSpec:
     plant: bool = False  # the plant task: runs the plants first in every scan (engine/tasks.py)
 
 
-@dataclass
+@dataclass(slots=True)
 class Program:
     """Everything the engine needs: all POUs, the globals, the program instances and the task configuration.
 

@@ -9,15 +9,16 @@ from __future__ import annotations
 from datetime import datetime
 from typing import Literal
 
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import ConfigDict, Field
 
+from .base import Model
 from .diagnostics import Diagnostic
 from .monitor import HistoryRange, Value
 from .project import Project
 from .xref import XrefList
 
 
-class ProjectSummary(BaseModel):
+class ProjectSummary(Model):
     """One row of ``GET /api/projects``; a project whose files do not load has no revision and says why in
     ``problems`` (located in its files), so it is listed rather than silently missing."""
 
@@ -28,7 +29,7 @@ class ProjectSummary(BaseModel):
     problems: list[Diagnostic] = Field(default_factory=list)
 
 
-class CreateProject(BaseModel):
+class CreateProject(Model):
     """Body of ``POST /api/projects``: an empty project, or a copy of a shipped example."""
 
     model_config = ConfigDict(extra="forbid")
@@ -42,7 +43,7 @@ class CreateProject(BaseModel):
     )
 
 
-class ExampleInfo(BaseModel):
+class ExampleInfo(Model):
     """``GET /api/examples``: a shipped example project ("New from example")."""
 
     name: str
@@ -53,7 +54,7 @@ class ExampleInfo(BaseModel):
     panels: list[str] = Field(default_factory=list)
 
 
-class RenameProject(BaseModel):
+class RenameProject(Model):
     """Body of ``POST /api/projects/{name}/rename``."""
 
     model_config = ConfigDict(extra="forbid")
@@ -61,7 +62,7 @@ class RenameProject(BaseModel):
     new_name: str
 
 
-class ProjectDocument(BaseModel):
+class ProjectDocument(Model):
     """``GET /api/projects/{name}``: the project and the revision a later save must name in ``If-Match``."""
 
     name: str
@@ -70,20 +71,20 @@ class ProjectDocument(BaseModel):
     project: Project
 
 
-class SaveResult(BaseModel):
+class SaveResult(Model):
     """Answer to a successful save: the new revision (also sent as the ``ETag`` header)."""
 
     revision: str
     modified: datetime
 
 
-class CheckReport(BaseModel):
+class CheckReport(Model):
     """``POST /api/projects/{name}/check``: every diagnostic of the saved project."""
 
     diagnostics: list[Diagnostic]
 
 
-class SymbolInfo(BaseModel):
+class SymbolInfo(Model):
     """One declared variable, for the variable table and operand autocomplete."""
 
     name: str
@@ -98,7 +99,7 @@ class SymbolInfo(BaseModel):
     constant: bool
 
 
-class SymbolTable(BaseModel):
+class SymbolTable(Model):
     """``GET /api/projects/{name}/pous/{pou}/symbols``."""
 
     pou: str
@@ -109,7 +110,7 @@ class SymbolTable(BaseModel):
     )
 
 
-class VariableNode(BaseModel):
+class VariableNode(Model):
     """One variable of the instance tree (ON-10): a POU's variable, an FB's pin or variable, a field, an element."""
 
     name: str = Field(description="As declared ('RunTimer', 'ET'), or an array element's index ('[3]').")
@@ -128,7 +129,7 @@ class VariableNode(BaseModel):
     )
 
 
-class VariableChildren(BaseModel):
+class VariableChildren(Model):
     """``GET /api/projects/{name}/variables?path=``: what one variable of the saved project holds.
 
     No path: the programs (each its own instance) and the global variables."""
@@ -139,14 +140,14 @@ class VariableChildren(BaseModel):
     more: int = Field(default=0, description="Array elements left out after the first ones (too many to list).")
 
 
-class Pin(BaseModel):
+class Pin(Model):
     """A parameter of a library function or function block."""
 
     name: str
     type: str = Field(description="Elementary type, user type, or generic family such as ANY_NUM.")
 
 
-class LibraryEntry(BaseModel):
+class LibraryEntry(Model):
     """One function or function block the box picker offers (EN/ENO are implicit on all of them)."""
 
     name: str
@@ -167,14 +168,14 @@ class LibraryEntry(BaseModel):
     )
 
 
-class ErrorDetail(BaseModel):
+class ErrorDetail(Model):
     """The ``detail`` of every error response except save conflicts."""
 
     message: str
     diagnostics: list[Diagnostic] = Field(default_factory=list)
 
 
-class ConflictDetail(BaseModel):
+class ConflictDetail(Model):
     """The ``detail`` of a 409 from a save based on an old revision."""
 
     message: str
@@ -183,7 +184,7 @@ class ConflictDetail(BaseModel):
     current_modified: datetime | None
 
 
-class ScanTimes(BaseModel):
+class ScanTimes(Model):
     """Wall time of the scans run so far, in milliseconds (halted time excluded)."""
 
     min: float
@@ -192,7 +193,7 @@ class ScanTimes(BaseModel):
     last: float
 
 
-class IoPoint(BaseModel):
+class IoPoint(Model):
     """One direct address the program uses, for the I/O view."""
 
     area: Literal["I", "Q", "M", "S"] = Field(description="I inputs, Q outputs, M memory, S the Mosaic system area.")
@@ -204,7 +205,7 @@ class IoPoint(BaseModel):
     )
 
 
-class SimulationInfo(BaseModel):
+class SimulationInfo(Model):
     """``GET /api/simulations/{id}``: one live simulation of a saved project."""
 
     id: str
@@ -234,7 +235,7 @@ class SimulationInfo(BaseModel):
     )
 
 
-class SeekScan(BaseModel):
+class SeekScan(Model):
     """Body of ``POST /api/simulations/{id}/seek``: the scan to show, numbered as ``scan_count``."""
 
     model_config = ConfigDict(extra="forbid")
@@ -242,7 +243,7 @@ class SeekScan(BaseModel):
     scan: int = Field(ge=0)
 
 
-class HistoryStep(BaseModel):
+class HistoryStep(Model):
     """Body of ``POST /api/simulations/{id}/history/step``: how far one step through the scan shown goes
     (``statement``: the next network or line, into calls; ``over`` past the calls; ``out`` of the POU)."""
 
@@ -251,13 +252,13 @@ class HistoryStep(BaseModel):
     granularity: Literal["statement", "over", "out", "network"] = "statement"
 
 
-class HistoryFound(BaseModel):
+class HistoryFound(Model):
     """``GET /api/simulations/{id}/history/find``: the scan where the variable changed (null: none kept)."""
 
     scan: int | None
 
 
-class HistoryMark(BaseModel):
+class HistoryMark(Model):
     """A scan with something from outside (the inputs' kinds: write, force, release, panel, fault, reset...),
     a runtime error (``error``), a breakpoint hit (``breakpoint``: the scan halted there) or a trace's trigger
     (``trigger``: it fired at the end of that scan)."""
@@ -266,7 +267,7 @@ class HistoryMark(BaseModel):
     kinds: list[str]
 
 
-class HistoryDiff(BaseModel):
+class HistoryDiff(Model):
     """``GET /api/simulations/{id}/history/diff``: the variables that differ between the ends of two scans."""
 
     model_config = ConfigDict(ser_json_inf_nan="strings")
@@ -276,7 +277,7 @@ class HistoryDiff(BaseModel):
     differences: dict[str, list[Value]] = Field(description="Canonical path -> [its value in first, in second].")
 
 
-class ResetSimulation(BaseModel):
+class ResetSimulation(Model):
     """Body of ``POST /api/simulations/{id}/reset``: warm (RETAIN kept) or cold restart."""
 
     model_config = ConfigDict(extra="forbid")
@@ -284,7 +285,7 @@ class ResetSimulation(BaseModel):
     cold: bool = False
 
 
-class SourceMapEntry(BaseModel):
+class SourceMapEntry(Model):
     """A line of exported ST (1-based) and the network / element it came from."""
 
     line: int
@@ -292,7 +293,7 @@ class SourceMapEntry(BaseModel):
     element: str | None = None
 
 
-class StExport(BaseModel):
+class StExport(Model):
     """``GET /api/projects/{name}/export/st``: the complete IEC text of a POU or the project, with its source map."""
 
     text: str
@@ -300,32 +301,32 @@ class StExport(BaseModel):
     diagnostics: list[Diagnostic] = Field(default_factory=list)
 
 
-class ImportReport(BaseModel):
+class ImportReport(Model):
     """``POST /api/import/plcopen``: the stored project and what the import had to say (warnings)."""
 
     project: ProjectSummary
     diagnostics: list[Diagnostic] = Field(default_factory=list)
 
 
-class FbdOrder(BaseModel):
+class FbdOrder(Model):
     """``POST /api/fbd/order``: the node ids of one FBD network in the order the scan runs them."""
 
     order: list[str] = Field(description="Blocks, input, output, jump and return nodes; connectors have no place.")
 
 
-class LdAsIl(BaseModel):
+class LdAsIl(Model):
     """``POST /api/ld/il``: an LD network as IL ("View as IL", read-only), or why it has no IL equivalent."""
 
     text: str | None = Field(description="The IL text; null when the network has no plain IL equivalent.")
     reason: str | None = Field(default=None, description="Why there is no IL (the element and what it needs).")
 
 
-class TestCaseInfo(BaseModel):
+class TestCaseInfo(Model):
     name: str
     line: int = Field(description="Line of its TEST keyword in the test file.")
 
 
-class TestFileInfo(BaseModel):
+class TestFileInfo(Model):
     """A test file's tests, or the diagnostics that keep it from compiling."""
 
     file: str = Field(description="tests/<name>.st")
@@ -333,13 +334,13 @@ class TestFileInfo(BaseModel):
     diagnostics: list[Diagnostic] = Field(default_factory=list)
 
 
-class TestListing(BaseModel):
+class TestListing(Model):
     """``POST /api/tests/list``: every test file of the working copy and its tests (parsed, not run)."""
 
     files: list[TestFileInfo]
 
 
-class TestFailureInfo(BaseModel):
+class TestFailureInfo(Model):
     message: str
     line: int | None = None
     column: int | None = None
@@ -350,7 +351,7 @@ class TestFailureInfo(BaseModel):
     kind: str = Field(description="assertion, timeout, budget, fault, watchdog, memory or error")
 
 
-class TestResultInfo(BaseModel):
+class TestResultInfo(Model):
     file: str
     name: str
     line: int
@@ -360,7 +361,7 @@ class TestResultInfo(BaseModel):
     failure: TestFailureInfo | None = None
 
 
-class CoverageInfo(BaseModel):
+class CoverageInfo(Model):
     """What the tests never executed or energised in one POU (element ids of LD/FBD, body lines of ST)."""
 
     language: str
@@ -371,7 +372,7 @@ class CoverageInfo(BaseModel):
     never_executed_lines: list[int] = Field(default_factory=list)
 
 
-class TestSummary(BaseModel):
+class TestSummary(Model):
     passed: int
     failed: int
     skipped: int
@@ -379,7 +380,7 @@ class TestSummary(BaseModel):
     seconds: float
 
 
-class TestEvent(BaseModel):
+class TestEvent(Model):
     """One line of the ``POST /api/tests/run`` stream: a file prepared (its tests or its diagnostics), a test's
     result, or the end (summary, and coverage per POU when asked for)."""
 
@@ -390,7 +391,7 @@ class TestEvent(BaseModel):
     coverage: dict[str, CoverageInfo] | None = None
 
 
-class TestRunRequest(BaseModel):
+class TestRunRequest(Model):
     """Body of ``POST /api/tests/run``: the working copy, and which tests (none: all; a file; one test)."""
 
     model_config = ConfigDict(extra="forbid")
@@ -401,7 +402,7 @@ class TestRunRequest(BaseModel):
     coverage: bool = False
 
 
-class TestOpenRequest(BaseModel):
+class TestOpenRequest(Model):
     """Body of ``POST /api/tests/open``: the failing test whose last state is to be opened online."""
 
     model_config = ConfigDict(extra="forbid")
@@ -411,7 +412,7 @@ class TestOpenRequest(BaseModel):
     test: str
 
 
-class TestCheckRequest(BaseModel):
+class TestCheckRequest(Model):
     """Body of ``POST /api/tests/check``: the diagnostics of one test file of the working copy (ST editor)."""
 
     model_config = ConfigDict(extra="forbid")
@@ -420,10 +421,11 @@ class TestCheckRequest(BaseModel):
     file: str
 
 
-class Reference(BaseModel):
+class Reference(Model):
     """One place that uses a project-level name (a POU, type or global), as a rename changes it or a
     delete would break it: the POU and its part, the line of a text or the network and element of a
-    diagram, the task, and the text there (the line, or the operand) as it was."""
+    diagram, the task, the operator panel and widget, and the text there (the line, the operand, the
+    widget's variable path) as it was."""
 
     pou: str | None = None
     part: Literal[
@@ -439,6 +441,8 @@ class Reference(BaseModel):
         "test",
         "extends",
         "implements",
+        "panel",
+        "method",
     ]
     member: str | None = Field(
         default=None,
@@ -452,10 +456,11 @@ class Reference(BaseModel):
     element: str | None = None
     task: str | None = None
     file: str | None = None
+    panel: str | None = Field(default=None, description="An operator panel's name (``element``: its widget's id).")
     text: str = ""
 
 
-class RenameRequest(BaseModel):
+class RenameRequest(Model):
     """Body of ``POST /api/refactor/rename``: the (unsaved) project and the name to rename in it."""
 
     model_config = ConfigDict(extra="forbid")
@@ -465,14 +470,26 @@ class RenameRequest(BaseModel):
     new_name: str
 
 
-class RenameResult(BaseModel):
+class MemberRenameRequest(Model):
+    """Body of ``POST /api/refactor/rename-member``: method or property ``old_name`` of function block ``pou`` renamed
+    with every call (issue 25 item 5)."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    project: Project
+    pou: str
+    old_name: str
+    new_name: str
+
+
+class RenameResult(Model):
     """The renamed project (nothing is stored) and every place that changed, for the preview."""
 
     project: Project
     changes: list[Reference]
 
 
-class ReferencesRequest(BaseModel):
+class ReferencesRequest(Model):
     """Body of ``POST /api/refactor/references``: the (unsaved) project and the name whose uses are wanted."""
 
     model_config = ConfigDict(extra="forbid")
@@ -481,11 +498,11 @@ class ReferencesRequest(BaseModel):
     name: str
 
 
-class ReferenceList(BaseModel):
+class ReferenceList(Model):
     references: list[Reference]
 
 
-class DuplicateRequest(BaseModel):
+class DuplicateRequest(Model):
     """Body of ``POST /api/refactor/duplicate``: a copy of POU ``name`` called ``new_name``."""
 
     model_config = ConfigDict(extra="forbid")
@@ -495,7 +512,7 @@ class DuplicateRequest(BaseModel):
     new_name: str
 
 
-class PrintDocument(BaseModel):
+class PrintDocument(Model):
     """What a printed project document holds (issue 28): the print view draws it with the editors' own layout
     and SVG drawing; ``GET /api/projects/{name}/document`` and ``ladderlab doc`` make it."""
 
@@ -509,7 +526,7 @@ class PrintDocument(BaseModel):
     xref: XrefList
 
 
-class Health(BaseModel):
+class Health(Model):
     """``GET /api/health``: the server answers, and which version it is."""
 
     status: str = Field(description='"ok" while the server answers.')

@@ -98,6 +98,8 @@ _TABLE: list[tuple[str, str, Severity, str]] = [
     ("st", "ST-AMBIGUOUS", "error", "An enumeration value belongs to several enumerations."),
     ("st", "ST-TYPE-MISMATCH", "error", "A value of one type is used where another type is needed."),
     ("st", "ST-IMPLICIT-CONV", "warning", "A value is widened to a larger type without an explicit conversion."),
+    ("st", "ST-IMPLICIT-NARROW", "warning", "CODESYS typing: a value is narrowed to a smaller type implicitly."),
+    ("st", "ST-CODESYS-REGISTER", "error", "CODESYS typing: a value would depend on the width of the PLC's registers."),
     ("st", "ST-RANGE", "error", "A constant lies outside the range of its type."),
     ("st", "ST-INDEX", "error", "An array index or range is wrong."),
     ("st", "ST-CONST-EXPR", "error", "A constant expression is needed here."),

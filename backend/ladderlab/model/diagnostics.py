@@ -6,14 +6,15 @@ problem the same way and jump to where it is.
 
 from __future__ import annotations
 
-from pydantic import BaseModel, ConfigDict, Field, field_validator
+from pydantic import ConfigDict, Field, field_validator
 
 from . import codes
+from .base import Model
 
 Severity = codes.Severity
 
 
-class Diagnostic(BaseModel):
+class Diagnostic(Model):
     """A problem found in a project, with as much location as applies."""
 
     model_config = ConfigDict(extra="forbid")

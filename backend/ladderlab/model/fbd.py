@@ -8,12 +8,13 @@ from __future__ import annotations
 
 from typing import Annotated, Literal
 
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import ConfigDict, Field
 
+from .base import Model
 from .ld import CoilMode
 
 
-class Position(BaseModel):
+class Position(Model):
     """Finite coordinates only: NaN/inf would not survive the JSON project files."""
 
     model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
@@ -22,14 +23,14 @@ class Position(BaseModel):
     y: float
 
 
-class PinFlags(BaseModel):
+class PinFlags(Model):
     model_config = ConfigDict(extra="forbid")
 
     negated: bool = False
     edge: Literal["rising", "falling"] | None = None
 
 
-class _Node(BaseModel):
+class _Node(Model):
     model_config = ConfigDict(extra="forbid")
 
     id: str = Field(min_length=1)
@@ -104,14 +105,14 @@ FbdNode = Annotated[
 ]
 
 
-class PinRef(BaseModel):
+class PinRef(Model):
     model_config = ConfigDict(extra="forbid")
 
     node: str
     pin: str
 
 
-class Wire(BaseModel):
+class Wire(Model):
     """A connection from an output pin to an input pin (``from`` is a Python keyword, hence the alias)."""
 
     model_config = ConfigDict(extra="forbid", populate_by_name=True, serialize_by_alias=True)
@@ -120,7 +121,7 @@ class Wire(BaseModel):
     to: PinRef
 
 
-class FbdNetwork(BaseModel):
+class FbdNetwork(Model):
     model_config = ConfigDict(extra="forbid")
 
     id: str = Field(min_length=1)
@@ -133,7 +134,7 @@ class FbdNetwork(BaseModel):
     )
 
 
-class FbdBody(BaseModel):
+class FbdBody(Model):
     model_config = ConfigDict(extra="forbid")
 
     networks: list[FbdNetwork] = Field(default_factory=list)

@@ -15,7 +15,9 @@ from __future__ import annotations
 
 from typing import Annotated, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
+from pydantic import ConfigDict, Field, field_validator, model_validator
+
+from .base import Model
 
 #: A colour as ``#rrggbb``: all a widget's SVG needs, and nothing a browser could misread.
 Colour = Annotated[str, Field(pattern=r"^#[0-9a-fA-F]{6}$", description="A colour, #rrggbb.")]
@@ -25,11 +27,15 @@ Binding = Annotated[str, Field(min_length=1, max_length=200, pattern=r"^[^\n\r]+
 Literal_ = bool | int | float | str
 
 _ID = r"^[A-Za-z_][A-Za-z0-9_-]{0,63}$"
+#: The fields of a widget that hold one variable path (the rename refactoring rewrites them too, st/refactor.py);
+#: a motion's path is in ``MOTION_FIELDS``' ``path``, a trend's in its list ``paths``.
+PATH_FIELDS = ("bind", "fault", "visible")
+MOTION_FIELDS = ("move_x", "move_y")
 MAX_CANVAS = 4000
 MAX_WIDGETS = 500
 
 
-class Motion(BaseModel):
+class Motion(Model):
     """A move by a variable's value: ``min`` leaves the widget where it is placed, ``max`` moves it by ``distance``
     pixels (negative: left or up), values in between in proportion, values outside held at the ends."""
 
@@ -47,7 +53,7 @@ class Motion(BaseModel):
         return self
 
 
-class _Widget(BaseModel):
+class _Widget(Model):
     model_config = ConfigDict(extra="forbid")
 
     id: str = Field(pattern=_ID, description="Unique within the panel: the widget's name in the log and in tests.")
@@ -64,11 +70,11 @@ class _Widget(BaseModel):
         """Every variable path the widget reads or writes, with the field that holds it (``bind``,
         ``paths[1]``, ``move_x.path``), in field order."""
         found: list[tuple[str, str]] = []
-        for field in ("bind", "fault", "visible"):
+        for field in PATH_FIELDS:
             path = getattr(self, field, None)
             if path:
                 found.append((field, path))
-        for field in ("move_x", "move_y"):
+        for field in MOTION_FIELDS:
             motion = getattr(self, field)
             if motion is not None:
                 found.append((f"{field}.path", motion.path))
@@ -92,7 +98,7 @@ class ToggleSwitch(_Widget):
     bind: Binding
 
 
-class SwitchPosition(BaseModel):
+class SwitchPosition(Model):
     model_config = ConfigDict(extra="forbid")
 
     label: str = Field(max_length=40)
@@ -127,7 +133,7 @@ class Lamp(_Widget):
     blink_ms: int = Field(default=500, ge=100, le=5000, description="Half a blink period.")
 
 
-class IndicatorState(BaseModel):
+class IndicatorState(Model):
     model_config = ConfigDict(extra="forbid")
 
     value: Literal_
@@ -259,7 +265,7 @@ Widget = Annotated[
 INPUT_WIDGETS = ("push_button", "toggle_switch", "selector_switch", "emergency_stop", "numeric_input", "slider")
 
 
-class Panel(BaseModel):
+class Panel(Model):
     """One operator panel: ``hmi/<name>.json``."""
 
     model_config = ConfigDict(extra="forbid")

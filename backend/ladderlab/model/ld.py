@@ -10,16 +10,17 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, model_validator
+from pydantic import ConfigDict, Field, model_validator
 
 from .. import limits
+from .base import Model
 
 ContactMode = Literal["no", "nc", "p", "n"]
 CoilMode = Literal["normal", "negated", "set", "reset", "p", "n"]
 CompareOp = Literal["GT", "GE", "EQ", "LE", "LT", "NE"]
 
 
-class _Element(BaseModel):
+class _Element(Model):
     model_config = ConfigDict(extra="forbid")
 
     id: str = Field(min_length=1, description="Unique within the POU; the probe id for live power flow.")
@@ -79,7 +80,7 @@ Parallel.model_rebuild()
 Box.model_rebuild()
 
 
-class LdNetwork(BaseModel):
+class LdNetwork(Model):
     model_config = ConfigDict(extra="forbid")
 
     id: str = Field(min_length=1)
@@ -99,7 +100,7 @@ class LdNetwork(BaseModel):
         return data
 
 
-class LdBody(BaseModel):
+class LdBody(Model):
     model_config = ConfigDict(extra="forbid")
 
     networks: list[LdNetwork] = Field(default_factory=list)

@@ -15,8 +15,9 @@ from __future__ import annotations
 
 from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, model_validator
+from pydantic import ConfigDict, Field, model_validator
 
+from .base import Model
 from .faults import FaultMode
 
 #: A value a client may write or force: a JSON scalar, or IEC literal text (``'T#1s'``, ``'16#FF'``).
@@ -34,14 +35,14 @@ MIN_SPEED = 0.1
 MAX_SPEED = 100.0
 
 
-class _Request(BaseModel):
+class _Request(Model):
     model_config = ConfigDict(extra="forbid")
 
 
 # --------------------------------------------------------------------------- client -> server
 
 
-class ElementSubscription(BaseModel):
+class ElementSubscription(Model):
     """The power flow of graphical elements of one POU instance (an LD/FBD view)."""
 
     model_config = ConfigDict(extra="forbid")
@@ -313,7 +314,7 @@ ClientMessage = Annotated[
 # --------------------------------------------------------------------------- server -> client
 
 
-class At(BaseModel):
+class At(Model):
     """Where the scan halted or a fault happened."""
 
     pou: str
@@ -325,7 +326,7 @@ class At(BaseModel):
     body: str | None = Field(default=None, description="In an SFC POU: actions/<name> or transitions/<name>.")
 
 
-class DisplayType(BaseModel):
+class DisplayType(Model):
     """What a client needs to show a value as IEC text: TIME and dates arrive as ms, enumerations as ints."""
 
     name: str = Field(
@@ -335,13 +336,13 @@ class DisplayType(BaseModel):
     names: dict[str, str] | None = Field(default=None, description="An enumeration's value names by value.")
 
 
-class HistoryStepPoint(BaseModel):
+class HistoryStepPoint(Model):
     """Where a step through the scan shown (``POST .../history/step``) stands."""
 
     at: At | None = Field(default=None, description="The network or line it halted before; null: the scan ended.")
 
 
-class HistoryRange(BaseModel):
+class HistoryRange(Model):
     """The scans the scan history can show (numbered as ``values.scan``), and the one shown (null: live)."""
 
     first: int = Field(description="The oldest scan kept (older ones were dropped for the memory budget).")
@@ -362,7 +363,7 @@ class HistoryRange(BaseModel):
     )
 
 
-class Values(BaseModel):
+class Values(Model):
     """What changed in this client's subscription since the previous ``values`` message to it.
 
     The first message after a ``subscribe`` holds every subscribed value. ``power`` is keyed
@@ -392,7 +393,7 @@ class Values(BaseModel):
     )
 
 
-class Status(BaseModel):
+class Status(Model):
     """The simulation's state: sent on connecting and whenever it changes. ``faulted`` is a stop by a fault."""
 
     type: Literal["status"]
@@ -400,14 +401,14 @@ class Status(BaseModel):
     at: At | None = None
 
 
-class TraceTriggered(BaseModel):
+class TraceTriggered(Model):
     """The scan that fired a trace's trigger (its first sample)."""
 
     scan: int
     time_ms: float
 
 
-class TraceData(BaseModel):
+class TraceData(Model):
     """New samples of this client's trace since its previous chunk, sent at its monitor interval.
 
     This replaces the single ``trace`` message sent once a trace was complete: a chart must update
@@ -434,7 +435,7 @@ LogKind = Literal["state", "write", "force", "release", "panel", "inject", "brea
 LogLevel = Literal["info", "warning", "error"]
 
 
-class Log(BaseModel):
+class Log(Model):
     """An entry of the online log (ON-15): run/stop, writes, forces set and released, panel events and injected
     faults (``panel``, ``inject``: at the scan they applied), breakpoint hits, watchdog trips, runtime errors,
     and notes of the server (``system``: dropped messages, deletion)."""
@@ -452,7 +453,7 @@ class Log(BaseModel):
 ErrorCode = Literal["bad_json", "bad_message", "bad_path", "bad_value", "bad_state", "too_large", "too_many"]
 
 
-class Error(BaseModel):
+class Error(Model):
     """A request of this client was refused; the connection and the simulation carry on."""
 
     type: Literal["error"]
@@ -463,7 +464,7 @@ class Error(BaseModel):
 ServerMessage = Annotated[Values | Status | TraceData | Log | Error, Field(discriminator="type")]
 
 
-class MonitorProtocol(BaseModel):
+class MonitorProtocol(Model):
     """Container so both directions land in one schema file (``monitor.schema.json``)."""
 
     client: ClientMessage

@@ -4,8 +4,9 @@ from __future__ import annotations
 
 from typing import Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validator, model_validator
+from pydantic import ConfigDict, Field, ValidationInfo, field_validator, model_validator
 
+from .base import Model
 from .cfc import CfcBody
 from .fbd import FbdBody
 from .hmi import Panel
@@ -19,6 +20,9 @@ PROJECT_FORMAT: ProjectFormat = "ladderlab/1"
 #: runs in the plant task before the control tasks of every scan and cannot be called from control code.
 PouKind = Literal["program", "function_block", "function", "plant"]
 Language = Literal["st", "ld", "fbd", "cfc", "il", "sfc"]
+#: The type rules a project's ST is checked by: IEC 61131-3 (strict, the default) or CODESYS V3's (docs/st.md).
+Typing = Literal["iec", "codesys"]
+
 #: Vendor compatibility libraries a project may use, as a TwinCAT project adds them in its library manager; their
 #: functions are ST source shipped with LadderLab (st/library_sources/, docs/st.md "Vendor libraries").
 LibraryName = Literal["Tc2_Math", "Tc2_Utilities"]
@@ -44,7 +48,7 @@ def _strip_trailing_whitespace(value: Any) -> Any:
 MethodAccess = Literal["PUBLIC", "PRIVATE", "PROTECTED", "INTERNAL"]
 
 
-class Method(BaseModel):
+class Method(Model):
     """A METHOD of a FUNCTION_BLOCK (IEC 61131-3 ed. 3, CODESYS): its own variables and ST body; it works on the
     variables of the instance it is called on (docs/st.md, object orientation)."""
 
@@ -61,7 +65,7 @@ class Method(BaseModel):
     _normalise_texts = field_validator("declarations", "body", mode="before")(_strip_trailing_whitespace)
 
 
-class Accessor(BaseModel):
+class Accessor(Model):
     """A PROPERTY's GET or SET: its own variables and ST body (GET assigns the property's name, SET reads it)."""
 
     model_config = ConfigDict(extra="forbid")
@@ -72,7 +76,7 @@ class Accessor(BaseModel):
     _normalise_texts = field_validator("declarations", "body", mode="before")(_strip_trailing_whitespace)
 
 
-class Property(BaseModel):
+class Property(Model):
     """A PROPERTY of a FUNCTION_BLOCK (CODESYS, IEC 61131-3 ed. 3 draft): read as ``inst.P`` through its GET,
     written as ``inst.P := v`` through its SET; a missing accessor makes it write-only or read-only."""
 
@@ -85,7 +89,7 @@ class Property(BaseModel):
     set: Accessor | None = None
 
 
-class PouAction(BaseModel):
+class PouAction(Model):
     """An ACTION of a FUNCTION_BLOCK outside SFC (CODESYS; IEC 61131-3 ed. 2's action syntax): statements that run
     on the variables of the instance it is called on - ``inst.Action();`` in ST, ``CAL inst.Action`` in IL,
     ``Action();`` in the FB itself (IL-08). No variables or parameters of its own (docs/st.md, "Actions")."""
@@ -98,7 +102,7 @@ class PouAction(BaseModel):
     _normalise_texts = field_validator("body", mode="before")(_strip_trailing_whitespace)
 
 
-class Pou(BaseModel):
+class Pou(Model):
     """A program organisation unit. ``body`` is ST or IL text, an ``LdBody``, an ``FbdBody``, a ``CfcBody`` (one
     FBD chart) or an ``SfcBody`` per ``language``."""
 
@@ -153,7 +157,7 @@ class Pou(BaseModel):
         return self
 
 
-class ProgramInstance(BaseModel):
+class ProgramInstance(Model):
     """A program instance: ``PROGRAM name WITH task : type (inputs, outputs)`` (IEC 61131-3 2.7.1, CFG-06)."""
 
     model_config = ConfigDict(extra="forbid")
@@ -171,7 +175,7 @@ class ProgramInstance(BaseModel):
     )
 
 
-class Task(BaseModel):
+class Task(Model):
     model_config = ConfigDict(extra="forbid")
 
     name: str
@@ -195,7 +199,7 @@ class Task(BaseModel):
     )
 
 
-class Resource(BaseModel):
+class Resource(Model):
     """A RESOURCE of a configuration (``RESOURCE name ON processor``): its globals and its tasks."""
 
     model_config = ConfigDict(extra="forbid")
@@ -211,7 +215,7 @@ class Resource(BaseModel):
     _normalise_texts = field_validator("globals", mode="before")(_strip_trailing_whitespace)
 
 
-class Configuration(BaseModel):
+class Configuration(Model):
     """The IEC configuration a project runs as (CONFIGURATION ... END_CONFIGURATION, CFG-01..08)."""
 
     model_config = ConfigDict(extra="forbid")
@@ -228,7 +232,7 @@ class Configuration(BaseModel):
         return [task for resource in self.resources for task in resource.tasks]
 
 
-class TestFile(BaseModel):
+class TestFile(Model):
     """A file of unit tests, ``tests/<name>.st`` in the project folder (docs/testing.md).
 
     Tests a teacher hides from students live in ``tests/hidden/`` and are not part of the model: the
@@ -241,7 +245,7 @@ class TestFile(BaseModel):
     _normalise_texts = field_validator("text", mode="before")(_strip_trailing_whitespace)
 
 
-class Project(BaseModel):
+class Project(Model):
     model_config = ConfigDict(extra="forbid")
 
     name: str
@@ -264,6 +268,11 @@ class Project(BaseModel):
         default_factory=list,
         description="Vendor compatibility libraries the project uses; a POU of the project shadows a library "
         "function of the same name.",
+    )
+    typing: Typing = Field(
+        default="iec",
+        description="Type rules of the ST checker: 'iec' (IEC 61131-3, the default) or 'codesys' (CODESYS V3's "
+        'arithmetic on bit strings, shifts on integers, implicit conversions; docs/st.md "CODESYS typing").',
     )
 
     _normalise_texts = field_validator("types", "globals", "exercise", mode="before")(_strip_trailing_whitespace)

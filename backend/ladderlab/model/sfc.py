@@ -15,9 +15,10 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, model_validator
+from pydantic import ConfigDict, Field, model_validator
 
 from .. import limits
+from .base import Model
 from .fbd import FbdBody
 from .ld import LdBody
 
@@ -28,7 +29,7 @@ TIMED_QUALIFIERS = frozenset({"L", "D", "SD", "DS", "SL"})
 QUALIFIERS: tuple[str, ...] = ("N", "R", "S", "L", "D", "P", "P1", "P0", "SD", "DS", "SL")
 
 
-class _Item(BaseModel):
+class _Item(Model):
     model_config = ConfigDict(extra="forbid")
 
     id: str = Field(min_length=1, description="Unique within the POU: probes, breakpoints and diagnostics use it.")
@@ -98,7 +99,7 @@ SfcAlternative.model_rebuild()
 SfcParallel.model_rebuild()
 
 
-class SfcChart(BaseModel):
+class SfcChart(Model):
     """A sequence of chart elements: the POU's chart, or the body of an action written in SFC."""
 
     model_config = ConfigDict(extra="forbid")
@@ -119,7 +120,7 @@ class SfcChart(BaseModel):
 SfcLanguage = Literal["st", "il", "ld", "fbd", "sfc"]
 
 
-class SfcAction(BaseModel):
+class SfcAction(Model):
     """A named action (SFC-02): ST statements, IL instructions (text), LD or FBD networks, or a chart of its own."""
 
     model_config = ConfigDict(extra="forbid")
@@ -135,7 +136,7 @@ class SfcAction(BaseModel):
         return _typed_body(data, {"st": str, "il": str, "ld": LdBody, "fbd": FbdBody, "sfc": SfcChart})
 
 
-class SfcNamedTransition(BaseModel):
+class SfcNamedTransition(Model):
     """A transition condition written on its own (SFC-03): an ST expression, IL instructions whose accumulator at the
     end gives its value (as in CODESYS), or LD/FBD networks whose coil or output named like the transition gives its
     value. A chart transition whose condition is this name reads it."""
@@ -153,7 +154,7 @@ class SfcNamedTransition(BaseModel):
         return _typed_body(data, {"st": str, "il": str, "ld": LdBody, "fbd": FbdBody})
 
 
-class SfcBody(BaseModel):
+class SfcBody(Model):
     """The body of an SFC POU: the chart (its first step is the initial step), the actions, the named transitions."""
 
     model_config = ConfigDict(extra="forbid")

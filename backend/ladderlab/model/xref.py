@@ -4,12 +4,14 @@ from __future__ import annotations
 
 from typing import Literal
 
-from pydantic import BaseModel, Field
+from pydantic import Field
+
+from .base import Model
 
 AccessKind = Literal["declared", "read", "write", "call"]
 
 
-class XrefAccess(BaseModel):
+class XrefAccess(Model):
     """One place a variable occurs: its declaration, a read, a write, or a call of an FB instance."""
 
     kind: AccessKind
@@ -25,7 +27,7 @@ class XrefAccess(BaseModel):
     path: str = Field(description="What was accessed, e.g. 'RunTimer.Q' or 'arr[i]' (indices as '[]').")
 
 
-class XrefEntry(BaseModel):
+class XrefEntry(Model):
     """A variable: a global, or one POU's own."""
 
     name: str
@@ -37,5 +39,5 @@ class XrefEntry(BaseModel):
     accesses: list[XrefAccess]
 
 
-class XrefList(BaseModel):
+class XrefList(Model):
     entries: list[XrefEntry]

@@ -1,4 +1,5 @@
-"""Refactoring the browser's working copy: rename a name everywhere, list what uses a name, duplicate a POU.
+"""Refactoring the browser's working copy: rename a name everywhere (or a function block's method or property with
+its calls), list what uses a name, duplicate a POU.
 
 Stateless like the live check: the browser sends its (unsaved) project and gets the changed project back
 for a preview; nothing is stored until the user saves. The logic lives in ``st/refactor.py``.
@@ -9,7 +10,14 @@ from __future__ import annotations
 from fastapi import APIRouter
 
 from ..model import Diagnostic
-from ..model.api import DuplicateRequest, ReferenceList, ReferencesRequest, RenameRequest, RenameResult
+from ..model.api import (
+    DuplicateRequest,
+    MemberRenameRequest,
+    ReferenceList,
+    ReferencesRequest,
+    RenameRequest,
+    RenameResult,
+)
 from ..storage import NotFoundError
 from .errors import ApiError, responses
 from .limits import LimitsDep, check_project_size
@@ -25,6 +33,17 @@ def rename(body: RenameRequest, limits: LimitsDep) -> RenameResult:
     check_project_size(body.project, limits)
     _refuse(refactor.new_name_problem(body.project, body.old_name, body.new_name), "$.new_name")
     project, changes = refactor.rename(body.project, body.old_name, body.new_name)
+    return RenameResult(project=project, changes=changes)
+
+
+@router.post("/rename-member", response_model=RenameResult, responses=responses(413, 422))
+def rename_member(body: MemberRenameRequest, limits: LimitsDep) -> RenameResult:
+    """The project with a function block's method or property renamed, with its overrides and every call."""
+    from ..st import refactor
+
+    check_project_size(body.project, limits)
+    _refuse(refactor.member_name_problem(body.project, body.pou, body.old_name, body.new_name), "$.new_name")
+    project, changes = refactor.rename_member(body.project, body.pou, body.old_name, body.new_name)
     return RenameResult(project=project, changes=changes)
 
 

@@ -116,10 +116,10 @@ def _open_recording(
     entry = _built(name, stored, registry)
     timeout = entry.handle.settings.build_timeout_s  # the scans run at once: as long as a history question
     try:
-        info = _command(entry, "open_recording", timeout=timeout, inputs=record.inputs, scans=record.scans)
-    except ApiError:
+        info = simulation_info(entry, entry.handle.open_recording(record.inputs, record.scans, timeout))
+    except CommandError as error:
         registry.delete(entry.id)
-        raise
+        raise ApiError(409 if error.code == "bad_state" else 422, error.message) from None
     except TimeoutError:
         registry.delete(entry.id)
         raise ApiError(
@@ -166,7 +166,8 @@ def stop(sim_id: str, registry: RegistryDep, response: Response) -> SimulationIn
 def reset(sim_id: str, registry: RegistryDep, body: Annotated[ResetSimulation | None, Body()] = None) -> SimulationInfo:
     """Stop and restart warm (RETAIN variables keep their values) or cold; clears faults; forces stay.
 
-    A simulation whose process was ended (it stopped answering or crashed) starts again in a new one."""
+    A simulation whose process was ended (it stopped answering or crashed) starts again in a new one; one opened from
+    a recording opens it again there (history only). A recording shown history only is not reset (409)."""
     entry = registry.get(sim_id)
     if not entry.handle.alive:
         try:
@@ -257,12 +258,14 @@ def history_step(
     those of that point (``history.stepping`` says where). The history and the live simulation stay as they are."""
     granularity = body.granularity if body is not None else "statement"
     entry = registry.get(sim_id)
-    timeout = entry.handle.settings.build_timeout_s  # the first step compiles the debug variant
+    timeout = entry.handle.settings.history_timeout_s  # the first step compiles the debug variant too
     try:
         return _command(entry, "history_step", timeout=timeout, granularity=granularity)
     except TimeoutError:
         raise ApiError(
-            409, f"the step did not end within {timeout:g} s: the scan shown shows where it stands"
+            409,
+            f"the step did not end within {timeout:g} s (the server's history_timeout_s): the scan shown shows "
+            "where it stands once it ends",
         ) from None
 
 
@@ -297,10 +300,15 @@ def history_marks(sim_id: str, registry: RegistryDep) -> list[HistoryMark]:
 
 def _history_call(entry: SimulationEntry, op: str, args: dict[str, Any]) -> Any:
     """A question to the scan history: it replays scans, so it may take longer than a command."""
+    timeout = entry.handle.settings.history_timeout_s
     try:
-        return entry.handle.call(op, timeout=entry.handle.settings.build_timeout_s, **args)
+        return entry.handle.call(op, timeout=timeout, **args)
     except CommandError as error:
         raise ApiError(409 if error.code == "bad_state" else 422, error.message) from None
+    except TimeoutError:
+        raise ApiError(
+            409, f"the scan history did not answer within {timeout:g} s (the server's history_timeout_s)"
+        ) from None
 
 
 @router.delete(

@@ -2,9 +2,9 @@
 
 ``supervisor.py`` starts simulation and build workers by forking a fork server that has
 imported this module, so a new worker starts with everything a build needs already in memory
-(the ST parser's tables, the lowering and code generator caches): the first simulation of a
-project opens without paying for a cold interpreter. The warm-up objects are then frozen out of
-the garbage collector's view (``gc.freeze``), so the forked workers share their pages instead
+(the ST parser's tables, the lowering and code generator caches, the pydantic models' validators):
+the first simulation of a project opens without paying for a cold interpreter. The warm-up objects are then
+frozen out of the garbage collector's view (``gc.freeze``), so the forked workers share their pages instead
 of copying them on the first collection.
 """
 
@@ -13,6 +13,7 @@ from __future__ import annotations
 import gc
 
 from ..model import Project
+from ..model.base import build_all
 from . import worker  # noqa: F401  (the worker's own imports)
 from .build import build_project
 
@@ -79,7 +80,9 @@ _WARM_UP = {
 
 
 def warm_up() -> None:
-    """Build a small project in every variant a server uses, so their caches are filled before forking."""
+    """Build a small project in every variant a server uses, so their caches are filled before forking; build
+    every pydantic model (they are built at first use: model/base.py), so no worker builds one."""
+    build_all()
     project = Project.model_validate(_WARM_UP)
     for variant in ("monitor", "debug"):
         build = build_project(project, variant)

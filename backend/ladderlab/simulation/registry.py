@@ -47,6 +47,7 @@ class SimulationSettings:
     history_mb: int = 256  # each simulation's scan history (issue 23): checkpoints and input log; 0: none
     build_timeout_s: float = 30.0  # wall time of one build (a check, or compiling a simulation)
     grace_s: float = 2.0  # a simulation's process that sends nothing for this long is ended
+    history_timeout_s: float = 30.0  # a question to the scan history (find, diff, a step through a past scan)
     answer_s: float = 0.05  # REST stop answers within this, even while a long scan runs
     beat_s: float = 0.25  # a simulation's process says it is alive at least this often
     build_workers: int = 2  # processes checking projects (POST /api/check) at the same time
@@ -65,6 +66,7 @@ class SimulationSettings:
             history_bytes=self.history_mb * MB,
             build_timeout_s=self.build_timeout_s,
             grace_s=self.grace_s,
+            history_timeout_s=self.history_timeout_s,
             beat_s=self.beat_s,
             log_entries=self.log_entries,
         )

@@ -27,7 +27,7 @@ import time
 from collections import deque
 from collections.abc import Callable, Sequence
 from concurrent.futures import Future
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from multiprocessing.connection import Connection
 from multiprocessing.process import BaseProcess
 from typing import TYPE_CHECKING, Any, Protocol
@@ -114,6 +114,7 @@ class WorkerSettings:
     beat_s: float
     log_entries: int
     history_bytes: int = 256 * 1024 * 1024  # the scan history's budget (0: no history)
+    history_timeout_s: float = 30.0  # the longest the server waits for a question to the scan history
 
 
 @dataclass
@@ -152,6 +153,7 @@ class SimulationHandle:
         self._send_lock = threading.Lock()
         self._listeners: list[Listener] = []
         self._watches: dict[int, dict[str, Any]] = {}  # client key -> its watch request (sent again after a restart)
+        self._recording: dict[str, Any] | None = None  # the recording opened (open_recording): opened again by restart
         self._requests = _Requests()
         self._process: BaseProcess | None = None
         self._connection: Connection | None = None
@@ -281,7 +283,8 @@ class SimulationHandle:
             waiting, self._requests.waiting = self._requests.waiting, {}
             self.status = Status(type="status", state="faulted")
             fault = Diagnostic(code=RUNTIME_FAULT, message=reason)
-            self.info = {**self.info, "state": "faulted", "fault": fault.model_dump(mode="json")}
+            self.info = {**self.info, "state": "faulted", "fault": fault.model_dump(mode="json"), "history": None}
+            self.frame = replace(self.frame, seq=self.frame.seq + 1, history=None)  # the history was in the process
             listeners = list(self._listeners)
         self._end_process()
         self.traces = TraceInbox()
@@ -290,27 +293,51 @@ class SimulationHandle:
         self._record(Log(type="log", kind=kind, level="error", message=reason))
         for listener in listeners:
             listener.event(self.status)
+            listener.frame()
 
     def restart(self) -> None:
-        """Start a new process for a simulation whose process was ended (a reset of a faulted simulation)."""
+        """Start a new process for a simulation whose process was ended (a reset of a faulted simulation). A
+        simulation opened from a recording opens it again: its recorded scans are never lost, and are history only
+        again (what ran after a "Continue from here" was in the process that ended)."""
         self.launch()
         with self._lock:
             watches = list(self._watches.items())
             listeners = list(self._listeners)
-            status = self.status
-        for key, watch in watches:
+        for key, watch in watches:  # first: the recording's last scan is then shown with every watched value
             self.call("watch", key=key, **watch)
+        recording = self._recording
+        if recording is not None:
+            try:
+                self.command("open_recording", timeout=self.settings.build_timeout_s, **recording)
+            except (CommandError, TimeoutError) as error:
+                self._end_process()
+                reason = error.message if isinstance(error, CommandError) else "it did not run in time"
+                raise BuildFailed(f"the recording could not be opened again: {reason}") from None
+        with self._lock:
+            status = self.status
         self._record(
             Log(
                 type="log",
                 kind="system",
                 level="info",
-                message="started again in a new process: variables have their initial values, "
-                "forces and breakpoints are cleared",
+                message="started again in a new process: "
+                + (
+                    f"the recording of {recording['scans']} scans is open again, history only (what ran after "
+                    "Continue from here is lost); forces and breakpoints are cleared"
+                    if recording is not None
+                    else "variables have their initial values, forces and breakpoints are cleared"
+                ),
             )
         )
         for listener in listeners:
             listener.event(status)
+
+    def open_recording(self, inputs: list[dict[str, Any]], scans: int, timeout: float) -> dict[str, Any]:
+        """Run a recording's scans into this new simulation's history (``SimRunner.open_recording``); kept, so a
+        ``restart`` after a crash opens it again. The simulation's ``info`` afterwards."""
+        info = self.command("open_recording", timeout=timeout, inputs=inputs, scans=scans)
+        self._recording = {"inputs": inputs, "scans": scans}
+        return info
 
     @property
     def alive(self) -> bool:

@@ -315,7 +315,7 @@ class BodyChecker:
         base = self.expr(node.base)
         for index in node.indices:
             index_type = self.expr(index)
-            if index_type is not ERROR and not t.in_family(index_type, "ANY_INT"):
+            if index_type is not ERROR and not t.counts(index_type):
                 self.report("ST-TYPE-MISMATCH", f"an array index must be an integer (ANY_INT), not {index_type}", index)
         if isinstance(base, t.ArrayType):
             if len(node.indices) != len(base.dims):
@@ -422,6 +422,8 @@ class BodyChecker:
                 return combined
             self.report("ST-TYPE-MISMATCH", f"{op} needs BOOL or bit strings (ANY_BIT), not {combined}", node)
             return ERROR
+        if t.codesys_typing() and t.category(combined) == "bits":
+            return combined  # CODESYS: arithmetic on a bit string, as the unsigned integer of its width
         if op == "MOD":
             if t.in_family(combined, "ANY_INT"):
                 return combined

@@ -388,6 +388,24 @@ def _std_call(checker: Any, node: ast.Call, function: stdlib.StdFunction) -> Typ
     return generic
 
 
+#: Shifts and rotations, which CODESYS typing also applies to integers (as the bits of their type).
+_SHIFTS = frozenset({"SHL", "SHR", "ROL", "ROR"})
+
+
+def _codesys_shift(function: stdlib.StdFunction, value: Type) -> bool:
+    return function.name.upper() in _SHIFTS and t.codesys_typing() and t.in_family(value, "ANY_INT")
+
+
+def _takes(family: str, fixed: Type | None, value: Type) -> bool:
+    """Whether a non-generic input of type (or family) ``family`` takes ``value``: a member of the family, or
+    assignable to the named type. CODESYS typing also gives an ANY_INT input a bit string (SHL's N as a BYTE)."""
+    if t.in_family(value, family):
+        return True
+    if fixed is None:
+        return family == "ANY_INT" and t.codesys_typing() and t.category(value) == "bits"
+    return t.assignable(fixed, value) != "error"
+
+
 def _generic_type(checker: Any, node: ast.Call, function: stdlib.StdFunction, bound) -> Type:
     """Type every argument; the generic inputs share one type T within the pin's family (FUN-02).
 
@@ -401,7 +419,7 @@ def _generic_type(checker: Any, node: ast.Call, function: stdlib.StdFunction, bo
             value = checker.expr(arg.value, fixed)
             if value is ERROR:
                 return ERROR
-            if not t.in_family(value, pin.type) and t.assignable(fixed or t.ERROR, value) == "error":
+            if not _takes(pin.type, fixed, value):
                 message = f"input {pin.name} of {function.name} must be {pin.type}, not {value}"
                 checker.report("ST-TYPE-MISMATCH", message, arg.value)
             continue
@@ -433,7 +451,7 @@ def _generic_type(checker: Any, node: ast.Call, function: stdlib.StdFunction, bo
     if shared is None:
         return ERROR if generic_pins and function.result == stdlib.T else t.VOID
     family = generic_pins[0].type
-    if not t.in_family(shared, family):
+    if not t.in_family(shared, family) and not _codesys_shift(function, shared):
         checker.report("ST-TYPE-MISMATCH", f"{function.name} works on {family}, not on {shared}", node)
         return ERROR
     if function.result != stdlib.T:  # a comparison: T takes no context from the BOOL result
@@ -473,24 +491,28 @@ def _system_call(checker: Any, node: ast.Call, name: str) -> Type:
 
 
 def unreferable(checker: Any, value: ast.Expr) -> str | None:
-    """Why a reference to ``value`` would outlive its variable or break a rule (None: it may be referred to).
-    IEC 61131-3 ed. 3 6.4.4.10: no reference to a temporary - a VAR_TEMP or a function's variable lives only
-    while the call runs - so a reference never dangles; and none to a CONSTANT, which could then be written."""
+    """Why a reference to ``value`` is certainly wrong (None: it may be referred to). A FUNCTION's own variables
+    (its result, inputs, in-outs, locals and VAR_TEMP) may be: the engine marks such a reference dead when the
+    call returns and a dereference after that is the runtime fault ``dangling_reference`` (CODESYS accepts them,
+    OSCAT's string functions walk their own input with ``pt := ADR(str)``). Refused: another function's result, a
+    program's or FB's VAR_TEMP (the fast variants keep it in a Python local, no variable to refer to) and a
+    CONSTANT, which could then be written."""
     root = value
     while isinstance(root, (ast.Member, ast.Index)):
         root = root.base
+    own_function = checker.pou is not None and checker.pou.kind == "FUNCTION"
     if isinstance(root, ast.Name) and isinstance(root.ref, PouInfo):
+        if own_function and root.ref.name.upper() == checker.pou.name.upper():
+            return None  # the function's own result variable
         return f"the result of the function {root.ref.name}: it lives only while the call runs"
     if not isinstance(root, ast.Name) or not isinstance(root.ref, Symbol):
         return None  # through a reference (r^.x): the variable r refers to
     symbol: Symbol = root.ref
     if symbol.constant:
         return f"the CONSTANT {symbol.name}: it could be written through the reference"
-    function = checker.pou is not None and checker.pou.kind == "FUNCTION" and symbol.pou is not None
-    if symbol.var_class == "VAR_TEMP" or (function and symbol.var_class != "VAR_EXTERNAL"):
-        where = "VAR_TEMP" if symbol.var_class == "VAR_TEMP" else f"the function {checker.pou.name}"
+    if symbol.var_class == "VAR_TEMP" and not own_function:
         return (
-            f"'{symbol.name}', a variable of {where}: it lives only while the call runs, the reference would "
-            "outlive it (declare it in a program or function block, or as a global)"
+            f"'{symbol.name}', a VAR_TEMP: it lives only while the call runs, the reference would outlive it "
+            "(declare it in VAR of the program or function block, or as a global)"
         )
     return None

@@ -13,7 +13,7 @@ from .types import ERROR
 
 def check_case(checker: Any, stmt: ast.Case) -> None:
     selector = checker.expr(stmt.selector)
-    if selector is not ERROR and not (t.in_family(selector, "ANY_INT") or isinstance(selector, t.EnumType)):
+    if selector is not ERROR and not (t.counts(selector) or isinstance(selector, t.EnumType)):
         checker.report(
             "ST-TYPE-MISMATCH", f"the CASE selector must be an integer or an enumeration, not {selector}", stmt.selector
         )

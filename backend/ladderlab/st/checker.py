@@ -35,6 +35,7 @@ from .parser import (
     parse_type,
     reserved_words,
 )
+from .registers import check_registers
 from .rules import assignable_or_report, check_init, constant_value
 from .sfc import check_actions, declare_implicit, parse_actions
 from .symbols import CheckResult, PouInfo, Symbol, TypeDef
@@ -528,6 +529,7 @@ class ProjectChecker:
         else:
             checker = BodyChecker(self.result, info, report)
             checker.statements(body)
+            check_registers(body, report)
             info.body, assigned = body, checker.result_assigned
         if info.kind == "FUNCTION" and not assigned and info.return_type not in (None, ERROR):
             report(
@@ -591,7 +593,8 @@ def _parse_types(text: str, *, file: str, pou: None = None):
 def check_project(project: Project) -> CheckResult:
     """Parse and check every text of ``project`` and of the libraries it uses; see ``CheckResult`` for what is
     resolved."""
-    return ProjectChecker(with_libraries(project)).run()
+    with t.typing_rules(project.typing):
+        return ProjectChecker(with_libraries(project)).run()
 
 
 def check_identifier(name: str, node: Any, report: Reporter) -> None:

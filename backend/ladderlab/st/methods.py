@@ -18,6 +18,7 @@ from . import ast
 from . import types as t
 from .parser import parse_declarations, parse_statements, parse_type
 from .printer import print_expression
+from .registers import check_registers
 from .symbols import THIS, MethodInfo, PouInfo, PropertyRef, Symbol
 from .types import ERROR, VOID, Type
 
@@ -139,6 +140,7 @@ def check_method_body(checker: Any, info: PouInfo, method: Method) -> None:
         return
     body = BodyChecker(checker.result, info, report)
     body.statements(parsed.ast)
+    check_registers(parsed.ast, report)
     info.body = parsed.ast
     fb.calls |= {name for name in info.calls if name != fb.name.upper()}
 

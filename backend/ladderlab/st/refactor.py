@@ -3,7 +3,8 @@
 A project-level name (a POU, a user type, a global variable) is used by ST texts (declarations,
 bodies, globals, types, test files, a function block's methods and properties), by its EXTENDS and IMPLEMENTS,
 by LD/FBD operands (contacts, coils, compares, box calls,
-instances and pin operands, FBD blocks and nodes) and by tasks (the programs they run). Renaming
+instances and pin operands, FBD blocks and nodes), by tasks (the programs they run) and by operator panels (a
+widget's variable path starts with a global or a program: ``Start``, ``Main.Level``). Renaming
 finds every use as an ST identifier token: comments, strings, literals (``T#5s``, ``16#FF``),
 direct addresses (``%IX0.1``) and member names after a ``.`` are never touched, so ``x.Main`` or
 ``'Main'`` keep their text. IEC names are case-insensitive; the new spelling replaces every use.
@@ -12,12 +13,16 @@ direct addresses (``%IX0.1``) and member names after a ``.`` are never touched, 
 from __future__ import annotations
 
 import re
-from typing import Any
+from dataclasses import dataclass
+from typing import Any, TypeAlias
 
 from ..model.api import Reference
+from ..model.hmi import MOTION_FIELDS, PATH_FIELDS
 from ..model.names import pou_name_problem
 from ..model.project import Project
+from . import ast
 from .comments import blank_nested_comments
+from .parser import parse_declarations
 
 #: Tokens that are never a name: strings, comments, pragmas, typed literal values, numbers, addresses.
 _TOKEN = re.compile(
@@ -26,6 +31,8 @@ _TOKEN = re.compile(
     r"""|(?P<name>[A-Za-z_][A-Za-z0-9_]*)"""
 )
 _MEMBER = re.compile(r"\.\s*$")
+#: The first name of a variable path (``Main`` of ``Main.T1.Q``, ``Arr`` of ``Arr[2]``): a global or a program.
+_PATH_HEAD = re.compile(r"^\s*([A-Za-z_][A-Za-z0-9_]*)(?=\s*(?:$|[.\[]))")
 
 #: Keys of LD/FBD element objects whose value is ST operand text (a name, an expression, a call).
 _OPERAND_KEYS = ("var", "left", "right", "call", "instance", "expr")
@@ -47,11 +54,134 @@ def name_spans(text: str, name: str) -> list[tuple[int, int]]:
 
 def rename_in_text(text: str, old: str, new: str) -> str:
     """``text`` with every identifier use of ``old`` spelt ``new``."""
+    return _replaced(text, name_spans(text, old), new)
+
+
+def _replaced(text: str, spans: list[tuple[int, int]], new: str) -> str:
     pieces, copied = [], 0
-    for start, end in name_spans(text, old):
+    for start, end in spans:
         pieces += [text[copied:start], new]
         copied = end
     return "".join(pieces) + text[copied:]
+
+
+#: What a rename looks for: a project-level name, or a method or property of a function block (``MemberUses``).
+Target: TypeAlias = "str | MemberUses"
+
+
+def _spans(text: str, old: Target) -> list[tuple[int, int]]:
+    return name_spans(text, old) if isinstance(old, str) else old.spans(text)
+
+
+#: What stands before ``.M`` when ``M`` is a member of an instance: ``inst``, ``inst[i]``, ``ref^``, ``THIS^``,
+#: ``SUPER^`` (a name after another ``.`` is a member of something else: its type is not known here).
+_MEMBER_OF = re.compile(
+    r"(?:(?<![.\w])(?P<self>THIS|SUPER)\s*\^|(?<![.\w])(?P<head>[A-Za-z_]\w*)\s*(?:\[[^\[\]]*\]\s*)?\^?)\s*\.\s*$",
+    re.IGNORECASE,
+)
+
+
+@dataclass(frozen=True)
+class MemberUses:
+    """The uses of method or property ``name`` of a function block in one scope: ``inst.name`` for an instance
+    (or an array of instances, or a reference to one) named in ``instances``, and, inside the function block or
+    one that extends it (``own``), ``THIS^.name``, ``SUPER^.name`` and a bare call ``name(...)``; inside the method
+    itself (``inside``) every bare ``name`` (its result variable, a recursive call)."""
+
+    name: str
+    instances: frozenset[str]
+    own: bool
+    inside: bool = False
+
+    def spans(self, text: str) -> list[tuple[int, int]]:
+        scanned = blank_nested_comments(text)
+        found = []
+        for match in _TOKEN.finditer(scanned):
+            if match.group("name") is None or match.group("name").upper() != self.name.upper():
+                continue
+            if _MEMBER.search(scanned, 0, match.start()):
+                before = _MEMBER_OF.search(scanned[max(0, match.start() - 200) : match.start()])
+                if before is None:
+                    continue
+                if before.group("self") is not None and not self.own:
+                    continue
+                if before.group("head") is not None and before.group("head").upper() not in self.instances:
+                    continue
+            elif not (self.inside or (self.own and scanned[match.end() :].lstrip().startswith("("))):
+                continue
+            found.append((match.start(), match.end()))
+        return found
+
+
+def rename_member(project: Project, fb: str, old: str, new: str) -> tuple[Project, list[Reference]]:
+    """``project`` with method or property ``old`` of function block ``fb`` called ``new``: its declaration, the
+    same member of every function block extending ``fb`` (an override keeps overriding), and every use through an
+    instance declared in the POU, the method or the globals (``inst.Old(...)``, ``arr[i].Old``, ``r^.Old``, LD/FBD
+    boxes ``inst.Old``) or inside the family (``THIS^.Old``, ``SUPER^.Old``, ``Old(...)``); and what changed.
+    An instance reached through a structure or another instance (``a.b.Old``) is not followed: the check then
+    reports the call it no longer finds."""
+    data = project.model_dump(by_alias=True)
+    family = _extending(data["pous"], fb)
+    globals_ = _instances(data["globals"], family)
+    changes: list[Reference] = []
+    for pou in data["pous"]:
+        name, own = pou["name"], pou["name"].upper() in family
+        instances = globals_ | _instances(pou["declarations"], family)
+        uses = MemberUses(old, instances, own)
+        pou["body"] = _body(pou["body"], uses, new, changes, name)
+        for member in pou.get("methods") or []:  # (listed under their names as they were)
+            inside = own and member["name"].upper() == old.upper()
+            scope = MemberUses(old, instances | _instances(member["declarations"], family), own, inside)
+            where = Reference(pou=name, part="body", member=member["name"])
+            if inside:
+                changes.append(
+                    Reference(pou=name, part="method", member=member["name"], text=f"METHOD {member['name']}")
+                )
+                member["name"] = new
+            member["body"] = _text(member["body"], scope, new, changes, where)
+        for prop in pou.get("properties") or []:
+            accessors = [(kind.upper(), prop[kind]) for kind in ("get", "set") if prop.get(kind) is not None]
+            for kind, accessor in accessors:
+                scope = MemberUses(old, instances | _instances(accessor["declarations"], family), own)
+                where = Reference(pou=name, part="body", member=f"{prop['name']}.{kind}")
+                accessor["body"] = _text(accessor["body"], scope, new, changes, where)
+            if own and prop["name"].upper() == old.upper():
+                changes.append(Reference(pou=name, part="method", member=prop["name"], text=f"PROPERTY {prop['name']}"))
+                prop["name"] = new
+    uses = MemberUses(old, globals_, own=False)
+    for test in data["tests"]:
+        path = f"tests/{test['name']}.st"
+        test["text"] = _text(test["text"], uses, new, changes, Reference(part="test", file=path))
+    return Project.model_validate(data), changes
+
+
+def _extending(pous: list[dict[str, Any]], fb: str) -> frozenset[str]:
+    """``fb`` and every function block that extends it, directly or not (upper case)."""
+    family = {fb.upper()}
+    grew = True
+    while grew:
+        grew = False
+        for pou in pous:
+            parent = (pou.get("extends") or "").upper()
+            if parent in family and pou["name"].upper() not in family:
+                family.add(pou["name"].upper())
+                grew = True
+    return frozenset(family)
+
+
+def _instances(declarations: str, family: frozenset[str]) -> frozenset[str]:
+    """The names declared in ``declarations`` as an instance of one of ``family``, an array of them or a reference
+    or pointer to one (upper case); nothing when the text does not parse (the check reports it)."""
+    parsed = parse_declarations(declarations)
+    found: set[str] = set()
+    for block in parsed.ast or []:
+        for decl in block.decls:
+            spec = decl.type
+            while isinstance(spec, (ast.ArrayType, ast.PointerType)):
+                spec = spec.element if isinstance(spec, ast.ArrayType) else spec.target
+            if isinstance(spec, ast.NamedType) and spec.name.upper() in family:
+                found.update(n.name.upper() for n in decl.names if n.name)
+    return frozenset(found)
 
 
 def references(project: Project, name: str) -> list[Reference]:
@@ -81,6 +211,20 @@ def new_name_problem(project: Project, old: str, new: str) -> str | None:
     if other is not None and other.name.upper() != old.upper():
         return f"there is already a POU called {other.name}"
     return None
+
+
+def member_name_problem(project: Project, fb: str, old: str, new: str) -> str | None:
+    """Why method or property ``old`` of function block ``fb`` cannot become ``new`` (no such member, not an
+    identifier, another member's name), or None."""
+    pou = project.pou(fb)
+    members = [m.name for m in pou.methods] + [p.name for p in pou.properties] if pou else []
+    if not any(m.upper() == old.upper() for m in members):
+        return f"{fb} has no method or property called {old}"
+    problem = pou_name_problem(new)
+    if problem:
+        return f"{new or 'an empty name'} is no IEC name: {problem}"
+    other = next((m for m in members if m.upper() == new.upper() and m.upper() != old.upper()), None)
+    return f"{fb} already has a member called {other}" if other else None
 
 
 def duplicate_pou(project: Project, name: str, copy: str) -> Project:
@@ -115,6 +259,9 @@ def _visit(data: dict[str, Any], old: str, new: str, found: list[Reference], ski
     for test in data["tests"]:
         path = f"tests/{test['name']}.st"
         test["text"] = _text(test["text"], old, new, found, Reference(part="test", file=path))
+    for panel in data["panels"]:
+        for widget in panel["widgets"]:
+            _widget(widget, old, new, found, Reference(part="panel", panel=panel["name"], element=widget["id"]))
 
 
 def _object_orientation(pou: dict[str, Any], old: str, new: str, found: list[Reference]) -> None:
@@ -171,7 +318,27 @@ def _task(task: dict[str, Any], old: str, new: str, found: list[Reference]) -> N
                     pins[pin] = rename_in_text(value, old, new)
 
 
-def _body(body: Any, old: str, new: str, found: list[Reference], pou: str) -> Any:
+def _widget(widget: dict[str, Any], old: str, new: str, found: list[Reference], where: Reference) -> None:
+    """A dumped panel widget's variable paths renamed in place where their first name is ``old``."""
+
+    def renamed(path: str) -> str:
+        head = _PATH_HEAD.match(path)
+        if head is None or head.group(1).upper() != old.upper():
+            return path
+        found.append(where.model_copy(update={"text": path}))
+        return path[: head.start(1)] + new + path[head.end(1) :]
+
+    for field in PATH_FIELDS:
+        if widget.get(field):
+            widget[field] = renamed(widget[field])
+    for field in MOTION_FIELDS:
+        if widget.get(field):
+            widget[field]["path"] = renamed(widget[field]["path"])
+    if widget.get("paths"):
+        widget["paths"] = [renamed(path) for path in widget["paths"]]
+
+
+def _body(body: Any, old: Target, new: str, found: list[Reference], pou: str) -> Any:
     """A dumped POU, SFC action or transition body renamed in place: ST/IL text, LD/FBD networks, an SFC chart."""
     if isinstance(body, str):
         return _text(body, old, new, found, Reference(pou=pou, part="body"))
@@ -192,23 +359,23 @@ def _body(body: Any, old: str, new: str, found: list[Reference], pou: str) -> An
     return body
 
 
-def _chart(chart: dict[str, Any], old: str, new: str, found: list[Reference], pou: str) -> None:
+def _chart(chart: dict[str, Any], old: Target, new: str, found: list[Reference], pou: str) -> None:
     """An SFC chart's transition conditions and the BOOL variables its steps' associations name."""
     for element in chart.get("elements", []):
         if element.get("type") == "transition":
             where = Reference(pou=pou, part="transition", element=element.get("id"))
             element["condition"] = _text(element["condition"], old, new, found, where)
         for association in element.get("actions", []):
-            if association["action"].upper() == old.upper():
+            if isinstance(old, str) and association["action"].upper() == old.upper():
                 found.append(Reference(pou=pou, part="step", element=element.get("id"), text=association["action"]))
                 association["action"] = new
         for branch in element.get("branches", []):
             _chart({"elements": branch}, old, new, found, pou)
 
 
-def _text(text: str, old: str, new: str, found: list[Reference], where: Reference) -> str:
+def _text(text: str, old: Target, new: str, found: list[Reference], where: Reference) -> str:
     """ST ``text`` renamed; one reference (``where`` with the line) per line that uses ``old``, as it was."""
-    spans = name_spans(text, old)
+    spans = _spans(text, old)
     lines = text.split("\n")
     seen: set[int] = set()
     for start, _ in spans:
@@ -216,23 +383,23 @@ def _text(text: str, old: str, new: str, found: list[Reference], where: Referenc
         if line not in seen:
             seen.add(line)
             found.append(where.model_copy(update={"line": line, "text": lines[line - 1].strip()}))
-    return rename_in_text(text, old, new) if spans and new != old else text
+    return _replaced(text, spans, new) if spans and new != old else text
 
 
-def _element(item: dict[str, Any], old: str, new: str, found: list[Reference], where: Reference) -> None:
+def _element(item: dict[str, Any], old: Target, new: str, found: list[Reference], where: Reference) -> None:
     """One LD element or FBD node: its operands, box input operands and outputs, nested branches."""
     here = where.model_copy(update={"element": item.get("id")})
     for key in _OPERAND_KEYS:
         value = item.get(key)
-        if isinstance(value, str) and name_spans(value, old):
+        if isinstance(value, str) and (spans := _spans(value, old)):
             found.append(here.model_copy(update={"text": value}))
-            item[key] = rename_in_text(value, old, new)
-    for pins in (item.get("inputs"), item.get("outputs")):
-        for pin, value in (pins or {}).items():
+            item[key] = _replaced(value, spans, new)
+    for pins in (item.get("inputs") or {}, item.get("outputs") or {}):
+        for pin, value in pins.items():
             if isinstance(value, str):
-                if name_spans(value, old):
+                if spans := _spans(value, old):
                     found.append(here.model_copy(update={"text": f"{pin} := {value}"}))
-                    pins[pin] = rename_in_text(value, old, new)
+                    pins[pin] = _replaced(value, spans, new)
             else:
                 for nested in value:
                     _element(nested, old, new, found, where)

@@ -33,6 +33,15 @@ def assignable_or_report(checker: Any, target: Type, value: Type, node, what: st
     if verdict == "widen":
         checker.report("ST-IMPLICIT-CONV", f"{value} is converted implicitly to {target}", node, severity="warning")
         return True
+    if verdict == "narrow":
+        checker.report(
+            "ST-IMPLICIT-NARROW",
+            f"{value} is narrowed implicitly to {target} (CODESYS typing): the value is cut as {value}_TO_{target} "
+            "does; write the conversion to say so",
+            node,
+            severity="warning",
+        )
+        return True
     if isinstance(value, t.UntypedInt) and isinstance(target, t.Elementary) and target.category in ("int", "bits"):
         checker.report(
             "ST-RANGE", f"{value.value} is out of range for {target} ({target.info.min}..{target.info.max})", node

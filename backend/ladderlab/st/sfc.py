@@ -23,6 +23,7 @@ from .body import BodyChecker
 from .il_check import check_il_body
 from .il_parser import IlParseResult, parse_il
 from .parser import ParseResult, parse_statements
+from .registers import check_registers
 from .symbols import CheckResult, PouInfo, Symbol
 
 #: What an implicit symbol stands for (``Symbol.implicit``).
@@ -164,4 +165,5 @@ def _check(
     if result.ast is None:
         return None
     BodyChecker(checked, info, report).statements(result.ast)
+    check_registers(result.ast, report)
     return result.ast

@@ -10,6 +10,9 @@ explicit ``*_TO_*`` conversion.
 from __future__ import annotations
 
 import functools
+from collections.abc import Iterator
+from contextlib import contextmanager
+from contextvars import ContextVar
 from dataclasses import dataclass, field
 from math import isfinite
 from typing import Any
@@ -230,18 +233,67 @@ def takes_literal(target: Type, literal: Type) -> bool:
     return isinstance(literal, UntypedReal) and target.category == "real"
 
 
+#: The project's type rules while it is checked and lowered (Project.typing): "iec", or "codesys" for CODESYS V3's
+#: implicit conversions and arithmetic on bit strings (docs/st.md "CODESYS typing"). Set by ``typing_rules``.
+_TYPING: ContextVar[str] = ContextVar("typing", default="iec")
+
+
+@contextmanager
+def typing_rules(typing: str) -> Iterator[None]:
+    """Check (and lower) under the project's type rules: the rules below read them."""
+    token = _TYPING.set(typing)
+    try:
+        yield
+    finally:
+        _TYPING.reset(token)
+
+
+def codesys_typing() -> bool:
+    """Whether the project being checked uses CODESYS V3's type rules."""
+    return _TYPING.get() == "codesys"
+
+
 def _widens(source: Elementary, target: Elementary) -> bool:
-    return _widens_name(source.name, target.name)
+    return _widens_name(source.name, target.name, codesys_typing())
+
+
+#: CODESYS computes a bit string as the unsigned integer of its width (BYTE as USINT ...).
+UNSIGNED_OF_BITS = dict(zip(_BITS, _UNSIGNED))
 
 
 @functools.cache
-def _widens_name(s: str, d: str) -> bool:
+def _widens_name(s: str, d: str, codesys: bool = False) -> bool:
     for chain in (_SIGNED, _UNSIGNED, _BITS):
         if s in chain and d in chain:
             return chain.index(s) < chain.index(d)
     if s in _UNSIGNED and d in _SIGNED:
         return _UNSIGNED.index(s) < _SIGNED.index(d)
+    if codesys:
+        # CODESYS V3: a bit string is the unsigned integer of its width; every integer becomes a REAL or LREAL
+        if s in _BITS:
+            return UNSIGNED_OF_BITS[s] == d or _widens_name(UNSIGNED_OF_BITS[s], d, True)
+        if s in _UNSIGNED and d in _BITS:
+            return _UNSIGNED.index(s) <= _BITS.index(d)
+        if d in ("REAL", "LREAL") and (s in _SIGNED or s in _UNSIGNED):
+            return True
     return s == "REAL" and d == "LREAL"  # integer -> REAL always needs a conversion (ST-20)
+
+
+def counts(t: Type) -> bool:
+    """Whether ``t`` may index an array or select a CASE branch: an integer (ANY_INT), or under CODESYS typing also
+    a bit string (its value as the unsigned integer of its width)."""
+    return in_family(t, "ANY_INT") or (codesys_typing() and category(t) == "bits")
+
+
+def narrows(target: Type, source: Type) -> bool:
+    """CODESYS typing: an integer or bit string stored in a narrower (or differently signed) one, or an LREAL in a
+    REAL: accepted with a warning, the value cut to the target's bits (LREAL: rounded to binary32) as CODESYS does."""
+    if not (codesys_typing() and isinstance(target, Elementary) and isinstance(source, Elementary)):
+        return False
+    integers = ("int", "bits")
+    if target.category in integers and source.category in integers:
+        return True
+    return target.name == "REAL" and source.name == "LREAL"
 
 
 # Candidates for the smallest common type, smallest first (of one width only one can fit both).
@@ -250,11 +302,13 @@ _WIDENING_ORDER += ("REAL", "LREAL")
 
 
 @functools.cache
-def _lub_name(a: str, b: str) -> str | None:
+def _lub_name(a: str, b: str, codesys: bool = False) -> str | None:
     if a == b:
         return a
+    if codesys and a in _BITS and b in _BITS:  # two bit strings stay a bit string
+        return _lub_name(a, b)
     for name in _WIDENING_ORDER:
-        if (name == a or _widens_name(a, name)) and (name == b or _widens_name(b, name)):
+        if (name == a or _widens_name(a, name, codesys)) and (name == b or _widens_name(b, name, codesys)):
             return name
     return None
 
@@ -266,7 +320,7 @@ def lub(a: Type, b: Type) -> Type | None:
     if same(a, b):
         return b if a is ERROR else a
     if isinstance(a, Elementary) and isinstance(b, Elementary):
-        name = _lub_name(a.name, b.name)
+        name = _lub_name(a.name, b.name, codesys_typing())
         return None if name is None else (a if name == a.name else b if name == b.name else Elementary(name))
     return None
 
@@ -286,7 +340,8 @@ def same(a: Type, b: Type) -> bool:
 
 
 def assignable(target: Type, source: Type) -> str | None:
-    """None when ``source`` may be stored in ``target``; "widen" for a lossless implicit conversion; else "error"."""
+    """None when ``source`` may be stored in ``target``; "widen" for a lossless implicit conversion; "narrow" for a
+    lossy one CODESYS typing accepts (``narrows``); else "error"."""
     if same(target, source):
         return None
     if isinstance(target, InterfaceType):  # an instance (or interface) that implements it, or NULL
@@ -297,7 +352,7 @@ def assignable(target: Type, source: Type) -> str | None:
         return "widen"
     if isinstance(target, PointerType) and isinstance(source, PointerType):
         return "widen"
-    return "error"
+    return "narrow" if narrows(target, source) else "error"
 
 
 def common(a: Type, b: Type) -> tuple[Type, str | None]:

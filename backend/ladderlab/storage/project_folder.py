@@ -2,7 +2,7 @@
 
 Layout::
 
-    project.json        name, format, POU order, tasks, configuration, vendor libraries used
+    project.json        name, format, POU order, tasks, configuration, vendor libraries used, typing
     types.st            TYPE ... END_TYPE blocks
     globals.st          VAR_GLOBAL ... END_VAR blocks
     pous/<name>.st      ST POUs as complete IEC text (PROGRAM ... END_PROGRAM)
@@ -86,6 +86,8 @@ def project_files(project: Project) -> dict[str, str]:
         meta["panels"] = [p.name for p in project.panels]
     if project.libraries:
         meta["libraries"] = list(project.libraries)
+    if project.typing != "iec":
+        meta["typing"] = project.typing
     files = {
         PROJECT_FILE: dump_json(meta),
         TYPES_FILE: _text_file(project.types),
@@ -195,6 +197,7 @@ def read_project_folder(folder: Path, encoding: str | None = None, hint: str = H
         "globals": read.text(folder / GLOBALS_FILE, GLOBALS_FILE) or "",
         "exercise": read.text(folder / EXERCISE_FILE, EXERCISE_FILE) or "",
         "libraries": meta.get("libraries", []),
+        "typing": meta.get("typing", "iec"),
     }
     project = None
     try:

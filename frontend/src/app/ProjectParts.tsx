@@ -1,5 +1,5 @@
 // Editors of the project's own parts: the global variables (the declarations table and text of the
-// POUs), the types (text with a list of the types and a form that adds a STRUCT, enumeration, array,
+// POUs; a row is renamed everywhere and deleted through the tree's dialogs, listing its uses), the types (text with a list of the types and a form that adds a STRUCT, enumeration, array,
 // subrange or alias) and the tasks (cyclic interval or SINGLE event, priority, watchdog, the programs each
 // runs in order, each run's instance name and parameter bindings).
 // Each shows the live check of the working copy where it applies, like the POU editors.
@@ -9,7 +9,8 @@ import type { Diagnostic } from "../generated/api";
 import type { Task } from "../generated/api";
 import { DeclarationsEditor } from "../declarations/DeclarationsEditor";
 import { useDeclarableTypes } from "../store/declarableTypes";
-import { RenameDialog } from "../tree/PouActions";
+import { DeleteDialog, RenameDialog } from "../tree/lazyDialogs";
+import { globalOperations } from "../tree/operations";
 import { TypeActions } from "../tree/TypeActions";
 import { usePanels } from "../store/panels";
 import { LazyStEditor, LOADING } from "./lazy";
@@ -47,6 +48,8 @@ const readOnlyWhenOnline = (phase: string) => (phase === "offline" ? null : "Onl
 
 export function GlobalsView() {
   const [renaming, setRenaming] = useState<string | null>(null);
+  const [removing, setRemoving] = useState<string | null>(null);
+  const removal = useMemo(() => (removing ? globalOperations(removing) : null), [removing]);
   const text = useWorkspace((s) => s.project?.globals ?? "");
   const setGlobals = useWorkspace((s) => s.setGlobals);
   const types = useDeclarableTypes();
@@ -64,8 +67,12 @@ export function GlobalsView() {
         readOnly={readOnlyWhenOnline(phase)}
         newClass="VAR_GLOBAL"
         onRename={setRenaming}
+        onRemove={setRemoving}
       />
       {renaming ? <RenameDialog current={renaming} isPou={false} onClose={() => setRenaming(null)} /> : null}
+      {removing && removal ? (
+        <DeleteDialog name={`global ${removing}`} item={removal} onClose={() => setRemoving(null)} />
+      ) : null}
     </div>
   );
 }

@@ -57,7 +57,8 @@ import { VariablesView } from "./VariablesView";
 import { InstancePicker, OnlineActions } from "./InstancePicker";
 import { LOADING } from "./lazy";
 import { useHidden, useStoredSize } from "../store/layout";
-import { KindPicker, PouActions } from "../tree/PouActions";
+import { PouActions } from "../tree/PouActions";
+import { KindPicker } from "../tree/kinds";
 import { TestFileActions } from "../tests/TestFileActions";
 import { isProjectPart, PART_LABELS, PROJECT_PARTS, type ProjectPart } from "../store/parts";
 import { PouMembers } from "../tree/PouMembers";
@@ -253,7 +254,10 @@ function TestFilesTree() {
 /** What the tree says of a project part: how many types, globals, tasks it has. */
 function partSummary(project: Project, part: ProjectPart): string {
   if (part === "part:tasks") return project.tasks?.length ? `${project.tasks.length}` : "default";
-  if (part === "part:libraries") return project.libraries?.length ? `${project.libraries.length}` : "none";
+  if (part === "part:libraries") {
+    const count = project.libraries?.length ? `${project.libraries.length}` : "none";
+    return project.typing === "codesys" ? `${count}, CODESYS typing` : count;
+  }
   if (part === "part:types") return `${typeRows(project.types ?? "").length}`;
   const parsed = parseDeclarations(project.globals ?? "");
   return parsed.ok ? `${parsed.rows.length}` : "";

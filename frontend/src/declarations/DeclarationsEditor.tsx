@@ -22,6 +22,9 @@ export interface DeclarationsEditorProps {
   newClass?: string;
   /** Offers "Rename everywhere" on each row (the globals: a project-level name, see tree/refactor.ts). */
   onRename?(name: string): void;
+  /** Removes a named row through the caller (the globals: the delete dialog lists its uses first); without it
+   * the row goes at once. */
+  onRemove?(name: string): void;
 }
 
 type Mode = "table" | "text";
@@ -44,6 +47,7 @@ export function DeclarationsEditor({
   readOnly = null,
   newClass = "VAR",
   onRename,
+  onRemove,
 }: DeclarationsEditorProps) {
   const focusLine = focus?.line ?? null;
   const [mode, setMode] = useState<Mode>("table");
@@ -231,7 +235,7 @@ export function DeclarationsEditor({
                       type="button"
                       aria-label={`Remove ${r.name}`}
                       disabled={!editable}
-                      onClick={() => update(rows.filter((_, k) => k !== i))}
+                      onClick={() => (onRemove && r.name ? onRemove(r.name) : update(rows.filter((_, k) => k !== i)))}
                     >
                       ×
                     </button>

@@ -499,6 +499,26 @@ export interface paths {
     patch?: never;
     trace?: never;
   };
+  "/api/refactor/rename-member": {
+    parameters: {
+      query?: never;
+      header?: never;
+      path?: never;
+      cookie?: never;
+    };
+    get?: never;
+    put?: never;
+    /**
+     * Rename Member
+     * @description The project with a function block's method or property renamed, with its overrides and every call.
+     */
+    post: operations["rename_member_api_refactor_rename_member_post"];
+    delete?: never;
+    options?: never;
+    head?: never;
+    patch?: never;
+    trace?: never;
+  };
   "/api/simulations": {
     parameters: {
       query?: never;
@@ -1949,6 +1969,20 @@ export interface components {
       secret: string;
     };
     /**
+     * MemberRenameRequest
+     * @description Body of ``POST /api/refactor/rename-member``: method or property ``old_name`` of function block ``pou`` renamed
+     *     with every call (issue 25 item 5).
+     */
+    MemberRenameRequest: {
+      /** New Name */
+      new_name: string;
+      /** Old Name */
+      old_name: string;
+      /** Pou */
+      pou: string;
+      project: components["schemas"]["Project"];
+    };
+    /**
      * Method
      * @description A METHOD of a FUNCTION_BLOCK (IEC 61131-3 ed. 3, CODESYS): its own variables and ST body; it works on the
      *     variables of the instance it is called on (docs/st.md, object orientation).
@@ -2583,6 +2617,13 @@ export interface components {
        * @default
        */
       types?: string;
+      /**
+       * Typing
+       * @description Type rules of the ST checker: 'iec' (IEC 61131-3, the default) or 'codesys' (CODESYS V3's arithmetic on bit strings, shifts on integers, implicit conversions; docs/st.md "CODESYS typing").
+       * @default iec
+       * @enum {string}
+       */
+      typing?: "iec" | "codesys";
     };
     /**
      * ProjectDocument
@@ -2698,7 +2739,8 @@ export interface components {
      * Reference
      * @description One place that uses a project-level name (a POU, type or global), as a rename changes it or a
      *     delete would break it: the POU and its part, the line of a text or the network and element of a
-     *     diagram, the task, and the text there (the line, or the operand) as it was.
+     *     diagram, the task, the operator panel and widget, and the text there (the line, the operand, the
+     *     widget's variable path) as it was.
      */
     Reference: {
       /** Element */
@@ -2719,6 +2761,11 @@ export interface components {
       /** Network Number */
       network_number?: number | null;
       /**
+       * Panel
+       * @description An operator panel's name (``element``: its widget's id).
+       */
+      panel?: string | null;
+      /**
        * Part
        * @enum {string}
        */
@@ -2734,7 +2781,9 @@ export interface components {
         | "task"
         | "test"
         | "extends"
-        | "implements";
+        | "implements"
+        | "panel"
+        | "method";
       /** Pou */
       pou?: string | null;
       /** Task */
@@ -3940,6 +3989,7 @@ export type LdBody = components["schemas"]["LdBody"];
 export type LdNetwork = components["schemas"]["LdNetwork"];
 export type LibraryEntry = components["schemas"]["LibraryEntry"];
 export type Login = components["schemas"]["Login"];
+export type MemberRenameRequest = components["schemas"]["MemberRenameRequest"];
 export type Method = components["schemas"]["Method"];
 export type Motion = components["schemas"]["Motion"];
 export type Multistate = components["schemas"]["Multistate"];
@@ -5283,6 +5333,48 @@ export interface operations {
     requestBody: {
       content: {
         "application/json": components["schemas"]["RenameRequest"];
+      };
+    };
+    responses: {
+      /** @description Successful Response */
+      200: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["RenameResult"];
+        };
+      };
+      /** @description The request body or the project is too large. */
+      413: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["ErrorResponse"];
+        };
+      };
+      /** @description Bad name, invalid model or a project that does not load; see the diagnostics. */
+      422: {
+        headers: {
+          [name: string]: unknown;
+        };
+        content: {
+          "application/json": components["schemas"]["ErrorResponse"];
+        };
+      };
+    };
+  };
+  rename_member_api_refactor_rename_member_post: {
+    parameters: {
+      query?: never;
+      header?: never;
+      path?: never;
+      cookie?: never;
+    };
+    requestBody: {
+      content: {
+        "application/json": components["schemas"]["MemberRenameRequest"];
       };
     };
     responses: {

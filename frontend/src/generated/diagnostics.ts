@@ -201,7 +201,7 @@ export const DIAGNOSTICS = {
       example: "ratio := 10 / divisor;   (* divisor = 0 *)",
       example_language: "st",
       example_note: "",
-      fix: "the message names the fault (division_by_zero, index_out_of_range, subrange_violation, for_step_zero, watchdog, out_of_memory), where it happened (line, or network and element) and the values of the variables of the statement; guard the statement (`IF divisor <> 0 THEN ...`) and reset the simulation.",
+      fix: "the message names the fault (division_by_zero, index_out_of_range, subrange_violation, for_step_zero, null_dereference, dangling_reference, invalid_argument, watchdog, out_of_memory), where it happened (line, or network and element) and the values of the variables of the statement; guard the statement (`IF divisor <> 0 THEN ...`) and reset the simulation.",
       severity: "error",
       summary: "The running program stopped with a runtime fault.",
     },
@@ -1203,6 +1203,17 @@ export const DIAGNOSTICS = {
       severity: "warning",
       summary: "Two CASE labels overlap: only the first branch ever runs.",
     },
+    "ST-CODESYS-REGISTER": {
+      anchor: "st-codesys-register",
+      area: "st",
+      example: "VAR w : WORD; q : BOOL; END_VAR\nq := (w - 1) < w;",
+      example_language: "st",
+      example_note:
+        "With CODESYS typing, CODESYS computes `w - 1` in a register of at least 32 bits; whether that register reads as -1 or as 4294967295 here depends on the target, so LadderLab does not guess.",
+      fix: "cut the value to its type first (`TO_WORD(w - 1) < w`), or compute in a wider type (`TO_DINT(w) - 1 < TO_DINT(w)`).",
+      severity: "error",
+      summary: "CODESYS typing: a value would depend on the width of the PLC's registers.",
+    },
     "ST-CONFIG": {
       anchor: "st-config",
       area: "st",
@@ -1284,6 +1295,17 @@ export const DIAGNOSTICS = {
       fix: "nothing needs fixing (the conversion loses nothing); write `SINT_TO_INT(small)` to make it explicit.",
       severity: "warning",
       summary: "A value is widened to a larger type without an explicit conversion.",
+    },
+    "ST-IMPLICIT-NARROW": {
+      anchor: "st-implicit-narrow",
+      area: "st",
+      example: "VAR d : DINT := 70000; small : INT; END_VAR\nsmall := d;",
+      example_language: "st",
+      example_note:
+        'In a project with CODESYS typing (docs/st.md "CODESYS typing") the value is stored cut to the target\'s bits, as CODESYS does (4464 here).',
+      fix: "write the conversion (`small := DINT_TO_INT(d);`) to say the cut is meant.",
+      severity: "warning",
+      summary: "CODESYS typing: a value is narrowed to a smaller type implicitly.",
     },
     "ST-INDEX": {
       anchor: "st-index",
@@ -1439,11 +1461,11 @@ export const DIAGNOSTICS = {
       anchor: "st-ref",
       area: "st",
       example:
-        "FUNCTION Twice : INT\nVAR_INPUT x : INT; END_VAR\nVAR p : REF_TO INT; END_VAR\np := REF(x);",
+        "PROGRAM Main\nVAR CONSTANT limit : INT := 10; END_VAR\nVAR_TEMP t : INT; END_VAR\nVAR p : REF_TO INT; END_VAR\np := REF(limit);   (* or REF(t) *)",
       example_language: "st",
       example_note:
-        "A reference to a variable of a FUNCTION or a VAR_TEMP (gone after the call), or to a CONSTANT.",
-      fix: "refer to a variable that outlives the call (a FUNCTION_BLOCK's or program's variable, a global), or pass the value itself.",
+        "A reference to a CONSTANT (it could be written through the reference), to a program's or function block's VAR_TEMP, or to another function's result. A FUNCTION's own variables may be referred to: a reference used after the call returned is the runtime fault `dangling_reference` (ENGINE-RUNTIME).",
+      fix: "refer to a variable that outlives the call (a FUNCTION_BLOCK's or program's VAR, a global), or copy the constant into a variable.",
       severity: "error",
       summary: "A reference (REF, ADR) to a variable that may not be referred to.",
     },

@@ -1,27 +1,18 @@
 import { describe, expect, it } from "vitest";
-import type { LibraryEntry, SymbolInfo } from "../generated/api";
+import type { LibraryEntry } from "../generated/api";
 import { bodyOf, c, net, par, q } from "./fixtures";
 import type { LdElement } from "./model";
 import { bindLd, ldOnlineView, operandsOf } from "./online";
 import { applyMessage, emptyMonitor, operandPath } from "../online/monitor";
+import { symbol } from "../test/symbols";
 
-const sym = (name: string, type: string, var_class = "VAR"): SymbolInfo => ({
-  name,
-  type,
-  var_class,
-  initial: null,
-  address: null,
-  comment: null,
-  retain: false,
-  constant: false,
-});
 const SYMBOLS = [
-  sym("Start", "BOOL"),
-  sym("Stop", "BOOL"),
-  sym("Motor", "BOOL"),
-  sym("T1", "TON"),
-  sym("Count", "INT"),
-  sym("Alarm", "BOOL", "VAR_GLOBAL"),
+  symbol("Start", "BOOL"),
+  symbol("Stop", "BOOL"),
+  symbol("Motor", "BOOL"),
+  symbol("T1", "TON"),
+  symbol("Count", "INT"),
+  symbol("Alarm", "BOOL", "VAR_GLOBAL"),
 ];
 
 // Motor := (Start OR Motor) AND NOT Stop
@@ -108,7 +99,7 @@ const boxes = bodyOf(
     outputs: { OUT: "Count" },
   }),
 );
-const BOX_SYMBOLS = [...SYMBOLS, sym("Speed", "REAL"), sym("Total", "REAL")];
+const BOX_SYMBOLS = [...SYMBOLS, symbol("Speed", "REAL"), symbol("Total", "REAL")];
 
 describe("box pins online (issue 17: values on every pin)", () => {
   it("reads every pin of an FB instance from the instance, wired or not (a TON's ET)", () => {

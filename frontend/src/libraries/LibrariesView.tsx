@@ -8,7 +8,18 @@ import { useOnline } from "../online/store";
 import { useWorkspace } from "../store/project";
 
 type LibraryName = NonNullable<Project["libraries"]>[number];
+type Typing = NonNullable<Project["typing"]>;
 const NONE: readonly LibraryName[] = [];
+
+/** The ST type rules a project may use (Project.typing, docs/st.md "CODESYS typing"). */
+const TYPINGS: readonly { value: Typing; label: string; note: string }[] = [
+  { value: "iec", label: "IEC 61131-3", note: "operands of one type; explicit conversions (the default)" },
+  {
+    value: "codesys",
+    label: "CODESYS V3",
+    note: "arithmetic on BYTE/WORD/DWORD, SHL/SHR on integers, implicit conversions, 32-bit intermediate results",
+  },
+];
 
 /** ``libraries`` with ``name`` added or removed, in the catalogue's order (project.json diffs stay small). */
 export function toggled(libraries: readonly LibraryName[], name: LibraryName, on: boolean): LibraryName[] {
@@ -17,12 +28,29 @@ export function toggled(libraries: readonly LibraryName[], name: LibraryName, on
 
 export function LibrariesView() {
   const libraries = useWorkspace((s) => s.project?.libraries ?? NONE);
+  const typing = useWorkspace((s) => s.project?.typing ?? "iec");
   const setProjectPart = useWorkspace((s) => s.setProjectPart);
   const online = useOnline((s) => s.phase) !== "offline";
   const use = (name: LibraryName, on: boolean) =>
     setProjectPart("part:libraries", (project) => ({ ...project, libraries: toggled(libraries, name, on) }));
+  const setTyping = (value: Typing) => setProjectPart("part:libraries", (project) => ({ ...project, typing: value }));
   return (
     <div className="pou-view part-view" role="region" aria-label="Library manager">
+      <fieldset aria-label="Type rules">
+        <legend>Type rules of the project&apos;s ST</legend>
+        {TYPINGS.map((t) => (
+          <label key={t.value}>
+            <input
+              type="radio"
+              name="typing"
+              checked={typing === t.value}
+              disabled={online}
+              onChange={() => setTyping(t.value)}
+            />{" "}
+            <strong>{t.label}</strong> - {t.note}
+          </label>
+        ))}
+      </fieldset>
       <p className="tree-empty">
         Vendor compatibility libraries for code brought from TwinCAT. A POU of the project with the same name as a
         library function is used instead of it.

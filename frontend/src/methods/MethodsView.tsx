@@ -1,5 +1,5 @@
 // The Methods tab of a function block (issue 25, CODESYS's objects under an FB): its methods and properties listed,
-// added, renamed and deleted; a method's result type, declarations and body, and a property's type and GET / SET
+// added, renamed (with every call, previewed: the tree's rename dialog) and deleted; a method's result type, declarations and body, and a property's type and GET / SET
 // texts, edited in the ST editor with the live check's diagnostics; breakpoints in a method's body.
 import { useState, type FormEvent } from "react";
 import type { Accessor, Method, Pou, Property } from "../generated/api";
@@ -10,6 +10,7 @@ import { StEditor } from "../st/StEditor";
 import { useStAssist } from "../st/useStAssist";
 import { workspaceStore } from "../store/project";
 import { FormError } from "../ui/FormError";
+import { RenameDialog } from "../tree/lazyDialogs";
 import {
   addMember,
   changeMember,
@@ -33,6 +34,8 @@ export function MethodsView({ pou, focus }: { pou: Pou; focus: Focus | null }) {
   }
   const [name, setName] = useState("");
   const [error, setError] = useState<string | null>(null);
+  /** The new name of the selected member while the rename's preview shows. */
+  const [renaming, setRenaming] = useState<string | null>(null);
   const online = useOnline((s) => s.phase !== "offline");
   const found = selected ? memberOf(pou, selected) : null;
   /** An edit of the FB as one undoable step (add, rename, delete); a refusal is shown instead. */
@@ -86,9 +89,12 @@ export function MethodsView({ pou, focus }: { pou: Pou; focus: Focus | null }) {
             kind={found.kind}
             member={found.member}
             readOnly={online ? "Online: go offline to edit." : null}
-            onRename={(text) =>
-              operate(`Rename ${found.member.name}`, renameMember(pou, found.member.name, text), text.trim())
-            }
+            onRename={(text) => {
+              // refused here at once (a taken name); else the preview of every call it changes
+              const edited = renameMember(pou, found.member.name, text);
+              setError(edited.ok ? null : edited.error);
+              if (edited.ok) setRenaming(text.trim());
+            }}
             onDelete={() =>
               operate(`Delete ${found.member.name}`, { ok: true, pou: deleteMember(pou, found.member.name) }, null)
             }
@@ -96,6 +102,16 @@ export function MethodsView({ pou, focus }: { pou: Pou; focus: Focus | null }) {
         ) : (
           <p className="panel-empty">{pou.name} has no methods or properties yet: name one and add it.</p>
         )}
+        {found && renaming !== null ? (
+          <RenameDialog
+            current={found.member.name}
+            isPou={false}
+            member={pou.name}
+            initial={renaming}
+            onRenamed={setSelected}
+            onClose={() => setRenaming(null)}
+          />
+        ) : null}
       </div>
     </div>
   );

@@ -52,7 +52,8 @@ export function addMember(pou: Pou, kind: MemberKind, text: string): Edited {
   return { ok: true, pou: { ...pou, properties: [...(pou.properties ?? []), property] } };
 }
 
-/** The member renamed (its declaration only: calls of it keep the old name and are reported until changed). */
+/** The member renamed, its declaration only, or why not (a taken name): the Methods tab asks this first, then the
+ * server renames the calls too (tree/refactor.ts renameMemberEverywhere). */
 export function renameMember(pou: Pou, name: string, text: string): Edited {
   const next = text.trim();
   const error = refused(pou, next, name);

@@ -1,7 +1,7 @@
 import { EditorView } from "@codemirror/view";
 import { act, fireEvent, render } from "@testing-library/react";
 import { describe, expect, it, vi } from "vitest";
-import type { LibraryEntry, SymbolInfo } from "../generated/api";
+import type { LibraryEntry } from "../generated/api";
 import { emptyMonitor } from "../online/monitor";
 import type { Value } from "../online/protocol";
 import {
@@ -14,6 +14,7 @@ import {
 } from "./inlineValues";
 import { structTypes, type Scope } from "./members";
 import { StEditor } from "./StEditor";
+import { symbol } from "../test/symbols";
 
 const pin = (name: string, type: string) => ({ name, type });
 const TON: LibraryEntry = {
@@ -27,16 +28,6 @@ const TON: LibraryEntry = {
   outputs: [pin("Q", "BOOL"), pin("ET", "TIME")],
   return_type: null,
 };
-const symbol = (name: string, type: string, var_class = "VAR"): SymbolInfo => ({
-  name,
-  type,
-  var_class,
-  initial: null,
-  address: null,
-  comment: null,
-  retain: false,
-  constant: false,
-});
 const scope: Scope = {
   symbols: [
     symbol("Start", "BOOL"),

@@ -1,10 +1,11 @@
 import { CompletionContext } from "@codemirror/autocomplete";
 import { EditorState } from "@codemirror/state";
 import { describe, expect, it } from "vitest";
-import type { LibraryEntry, SymbolInfo } from "../generated/api";
+import type { LibraryEntry } from "../generated/api";
 import { memberCompletions, stCompletionSource, stCompletions } from "./completion";
 import { membersOf, structTypes, typeOfChain, type Scope } from "./members";
 import { declaredSymbols, stScope, workingLibrary } from "./scope";
+import { symbol } from "../test/symbols";
 
 const pin = (name: string, type: string) => ({ name, type });
 const TON: LibraryEntry = {
@@ -40,16 +41,6 @@ const ABS: LibraryEntry = {
   outputs: [],
   return_type: "ANY_NUM",
 };
-const symbol = (name: string, type: string, var_class = "VAR"): SymbolInfo => ({
-  name,
-  type,
-  var_class,
-  initial: null,
-  address: null,
-  comment: null,
-  retain: false,
-  constant: false,
-});
 
 const TYPES = `TYPE
     Point : STRUCT

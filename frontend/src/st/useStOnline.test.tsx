@@ -1,26 +1,17 @@
 import { act, fireEvent, render, renderHook, screen } from "@testing-library/react";
 import { afterEach, describe, expect, it, vi } from "vitest";
-import type { LibraryEntry, SymbolInfo } from "../generated/api";
+import type { LibraryEntry } from "../generated/api";
 import type { Pou } from "../generated/api";
 import { emptyMonitor } from "../online/monitor";
 import { offline, onlineStore } from "../online/store";
 import { structTypes, type Scope } from "./members";
 import { useStOnline } from "./useStOnline";
+import { symbol } from "../test/symbols";
 
-const sym = (name: string, type: string, var_class = "VAR"): SymbolInfo => ({
-  name,
-  type,
-  var_class,
-  initial: null,
-  address: null,
-  comment: null,
-  retain: false,
-  constant: false,
-});
 const counter: Pou = { name: "Counter", kind: "function_block", language: "st", declarations: "", body: "" };
 const BODY = "IF Enable THEN\n    Count := Count + 1;\nEND_IF;";
 const scope: Scope = {
-  symbols: [sym("Enable", "BOOL", "VAR_INPUT"), sym("Count", "INT", "VAR_OUTPUT")],
+  symbols: [symbol("Enable", "BOOL", "VAR_INPUT"), symbol("Count", "INT", "VAR_OUTPUT")],
   library: [] as LibraryEntry[],
   structs: structTypes(""),
 };

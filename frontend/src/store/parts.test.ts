@@ -12,6 +12,7 @@ describe("diagnostics of the project's parts", () => {
     expect(partOf(global)).toBe("part:globals");
     expect(partOf({ code: "X", message: "", file: "types" })).toBe("part:types");
     expect(partOf(task)).toBe("part:tasks");
+    expect(partOf({ code: "BAD-FILE", message: "", json_path: "$.typing" })).toBe("part:libraries");
     expect(partOf({ code: "X", message: "", file: "Main/body", pou: "Main" })).toBeNull();
     expect(taskIndexOf(task)).toBe(3);
     expect(taskIndexOf(global)).toBeNull();

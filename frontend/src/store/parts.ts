@@ -52,7 +52,7 @@ export function partOf(d: Diagnostic): ProjectPart | null {
   if (d.file === "globals") return "part:globals";
   if (d.file === "types") return "part:types";
   if (d.json_path?.startsWith("$.tasks")) return "part:tasks";
-  if (d.json_path?.startsWith("$.libraries")) return "part:libraries";
+  if (d.json_path?.startsWith("$.libraries") || d.json_path?.startsWith("$.typing")) return "part:libraries";
   return null;
 }
 

@@ -1,17 +1,8 @@
 import { describe, expect, it } from "vitest";
-import type { LibraryEntry, SymbolInfo, SymbolTable } from "../generated/api";
+import type { LibraryEntry, SymbolTable } from "../generated/api";
 import { traceCandidates } from "./candidates";
+import { symbol } from "../test/symbols";
 
-const symbol = (name: string, type: string, var_class = "VAR"): SymbolInfo => ({
-  name,
-  type,
-  var_class,
-  address: null,
-  comment: null,
-  constant: false,
-  initial: null,
-  retain: false,
-});
 const ton: LibraryEntry = {
   name: "TON",
   kind: "function_block",

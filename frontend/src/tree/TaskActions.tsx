@@ -3,7 +3,8 @@
 // duplicate and delete dialogs are the POUs' (PouActions).
 import { useMemo, useState, type FormEvent } from "react";
 import { Dialog, DialogFooter, TreeActions } from "../ui/TreeActions";
-import { DeleteDialog, DuplicateDialog, type ItemOperations } from "./PouActions";
+import { DeleteDialog, DuplicateDialog } from "./lazyDialogs";
+import type { ItemOperations } from "./operations";
 import { workspaceStore } from "../store/project";
 import { duplicateTask, renameTask, runsOf, taskCopyName, withoutTask } from "../store/tasks";
 

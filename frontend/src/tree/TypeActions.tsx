@@ -1,9 +1,10 @@
 // The "⋯" menu of a user type (the project tree under Types, and the Types editor's list): rename it
 // everywhere, duplicate it, delete it (listing every variable, STRUCT member, other type and FB pin that uses
-// it, by POU and line). Each is one undoable step; the dialogs are the POUs' (PouActions).
+// it, by POU and line). Each is one undoable step; the dialogs are the POUs' (dialogs.tsx).
 import { useMemo } from "react";
 import { TreeActions } from "../ui/TreeActions";
-import { DeleteDialog, DuplicateDialog, RenameDialog, type ItemOperations } from "./PouActions";
+import { DeleteDialog, DuplicateDialog, RenameDialog } from "./lazyDialogs";
+import type { ItemOperations } from "./operations";
 import { typeReferences } from "./refactor";
 import { typeCopyName, typeRows, withoutTypeIn, withTypeCopyIn } from "../store/types";
 import { workspaceStore } from "../store/project";

@@ -4,11 +4,28 @@
 import { http, unwrap } from "../api/client";
 import type { Reference } from "../generated/api";
 import type { Pou, Project } from "../generated/api";
+import { panelChange } from "../hmi/history";
+import { globalLine } from "../store/globals";
 import { typeLines } from "../store/types";
+
+/** A use of a name in this browser's session, not in the project: a watch list row, a traced variable or the
+ * trace's trigger. */
+export interface SessionUse {
+  part: "watch" | "trace" | "trigger";
+  text: string;
+}
+
+/** A place that uses a name: in the project (the server finds it) or in the session. */
+export type Use = Reference | SessionUse;
 
 /** The working copy with `oldName` renamed to `newName` in every POU, diagram, task and test file. */
 export const renameEverywhere = (project: Project, oldName: string, newName: string) =>
   unwrap(http.POST("/api/refactor/rename", { body: { project, old_name: oldName, new_name: newName } }));
+
+/** The working copy with method or property `oldName` of function block `pou` called `newName`, with its overrides
+ * and every call (issue 25 item 5). */
+export const renameMemberEverywhere = (project: Project, pou: string, oldName: string, newName: string) =>
+  unwrap(http.POST("/api/refactor/rename-member", { body: { project, pou, old_name: oldName, new_name: newName } }));
 
 /** Every place in the working copy that uses `name` (what deleting it would break). */
 export const referencesTo = async (project: Project, name: string) =>
@@ -22,12 +39,51 @@ export async function typeReferences(project: Project, name: string): Promise<Re
   return (await referencesTo(project, name)).filter((r) => !isOwn(r));
 }
 
+/** Every place that uses global variable `name`, its own declaration left out (store/globals.ts globalLine). */
+export async function globalReferences(project: Project, name: string): Promise<Reference[]> {
+  const own = globalLine(project.globals ?? "", name);
+  return (await referencesTo(project, name)).filter((r) => !(r.part === "globals" && r.line === own));
+}
+
+/** The watch list rows, traced variables and trace trigger whose path starts with `name` (a global or a program). */
+export function sessionUses(
+  name: string,
+  watch: readonly string[],
+  traced: readonly string[],
+  trigger = "",
+): SessionUse[] {
+  const uses = (part: SessionUse["part"], paths: readonly string[]) =>
+    paths.filter((p) => renamedPath(p, name, "") !== p).map((text) => ({ part, text }));
+  return [...uses("watch", watch), ...uses("trace", traced), ...uses("trigger", trigger ? [trigger] : [])];
+}
+
+/** The engine's POUs a rename renames, as [old, new] pairs for the breakpoints on them: a POU itself, or a method
+ * `F.M` and its overrides (the changes list each declaration as part "method"). */
+export function renamedPous(
+  current: string,
+  next: string,
+  isPou: boolean,
+  changes: readonly Reference[],
+): [string, string][] {
+  if (isPou) return [[current, next]];
+  return changes
+    .filter((c) => c.part === "method" && (c.text ?? "").startsWith("METHOD "))
+    .map((c) => [`${c.pou}.${c.member}`, `${c.pou}.${next}`]);
+}
+
 /** The working copy with a copy of POU `name` called `newName`. */
 export const duplicated = async (project: Project, name: string, newName: string) =>
   (await unwrap(http.POST("/api/refactor/duplicate", { body: { project, name, new_name: newName } }))).project;
 
-/** Where a reference is, in the words of the project tree ("Main, declarations line 2", "task Fast"). */
-export function describeReference(r: Reference): string {
+const inSession = (use: Use): use is SessionUse =>
+  use.part === "watch" || use.part === "trace" || use.part === "trigger";
+
+/** Where a reference is, in the words of the project tree ("Main, declarations line 2", "task Fast", "Watch list"). */
+export function describeReference(use: Use): string {
+  if (inSession(use)) return { watch: "Watch list", trace: "Trace", trigger: "Trace trigger" }[use.part];
+  const r: Reference = use;
+  if (r.part === "panel") return `panel ${r.panel}, widget ${r.element}`;
+  if (r.part === "method") return `${r.pou}`; // listed with its text: "METHOD Bump"
   if (r.part === "task") return `task ${r.task}`;
   if (r.part === "test") return `${r.file} line ${r.line}`;
   if (r.part === "globals") return `Global variables line ${r.line}`;
@@ -56,11 +112,12 @@ export function isEmptyPou(pou: Pou): boolean {
   return declared === "" && empty;
 }
 
-/** A watch path after `oldName` (a program or global) became `newName`: the first part only, as IEC names
- * are case-insensitive (MAIN.x -> Plant.x); other paths stay as typed. */
+/** A watch or trace path after `oldName` (a program or global) became `newName`: its first name only, in any
+ * case as IEC names are case-insensitive (MAIN.x -> Plant.x, Arr[1] -> Table[1]); other paths stay as typed.
+ * The server renames operator panels' paths the same way (st/refactor.py _PATH_HEAD). */
 export function renamedPath(path: string, oldName: string, newName: string): string {
-  const [first = "", ...rest] = path.split(".");
-  return first.toUpperCase() === oldName.toUpperCase() ? [newName, ...rest].join(".") : path;
+  const head = /^[A-Za-z_][A-Za-z0-9_]*(?=$|[.[])/.exec(path)?.[0];
+  return head?.toUpperCase() === oldName.toUpperCase() ? newName + path.slice(head.length) : path;
 }
 
 /** The project parts (as the unsaved-changes list names them) a rename's changes touch outside the POUs. */
@@ -71,6 +128,7 @@ export function changedParts(changes: readonly Reference[]): string[] {
     else if (c.part === "types") parts.add("part:types");
     else if (c.part === "task") parts.add("part:tasks");
     else if (c.part === "test" && c.file) parts.add(c.file);
+    else if (c.part === "panel" && c.panel) parts.add(panelChange(c.panel));
   }
   return [...parts];
 }

@@ -1,17 +1,8 @@
 import { describe, expect, it } from "vitest";
-import type { SymbolInfo } from "../generated/api";
 import { defaultSuggestion, suggest } from "./OperandEditor";
+import { symbol } from "../test/symbols";
 
-const sym = (name: string): SymbolInfo => ({
-  name,
-  type: "BOOL",
-  var_class: "VAR",
-  initial: null,
-  address: null,
-  comment: null,
-  retain: false,
-  constant: false,
-});
+const sym = (name: string) => symbol(name, "BOOL");
 const symbols = [sym("Motor"), sym("Start"), sym("StartCount"), sym("Remote")];
 
 describe("operand autocomplete: what Enter and Tab take", () => {

@@ -32,6 +32,7 @@ _OPERATOR_FUNCTIONS = {
 _ATOM = re.compile(r"(?:[A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z_][A-Za-z0-9_]*)*|\d+)\Z")
 _COMPARISONS = frozenset({"EQ", "NE", "LT", "LE", "GT", "GE"})
 _SHORT_CIRCUIT = {"AND_THEN": "and", "OR_ELSE": "or"}
+_ORDERINGS = {"LT": "<", "LE": "<=", "GT": ">", "GE": ">="}
 #: BOOL AND / OR whose right operand is a plain read (below): Python's ``and`` / ``or`` skip the read when the left
 #: operand decides, which changes nothing (the read has no effect and cannot fault) and halves an LD series's cost.
 _BOOL_LOGIC = {"AND": "and", "OR": "or"}
@@ -157,8 +158,11 @@ class Expressions:
             offset = right if b.op == "ADD" else f"-({right})"
             what = f"the pointer {var_text(b.left)}" if isinstance(b.left, ir.Var) else "the pointer"
             return f"ll_ptr_add({left}, {offset}, {byte_size(b.type.target)}, {what!r})"
-        if isinstance(b.left.type, t.Reference):  # EQ / NE: one variable referred to (runtime.Ref), or both NULL
+        if isinstance(b.left.type, t.Reference) and b.op in ("EQ", "NE"):  # one variable referred to, or both NULL
             return f"({left} {'==' if b.op == 'EQ' else '!='} {right})"
+        if isinstance(b.left.type, t.Reference):  # LT ...: the bytes two pointers into one variable point to
+            sizes = f"{byte_size(b.left.type.target)}, {byte_size(b.right.type.target)}"  # type: ignore[union-attr]  # both pointers (checker)
+            return f"ll_ptr_order({left}, {right}, {sizes}, {_ORDERINGS[b.op]!r})"
         if b.op in _BOOL_LOGIC and b.type == t.BOOL and _plain_read(b.right, right):
             return f"({left} {_BOOL_LOGIC[b.op]} {right})"
         types = (self.scalar(b.left.type, b.op), self.scalar(b.right.type, b.op))
@@ -181,8 +185,15 @@ class Expressions:
         return self.standard(c.function, args, types, runtime_name(c.type))
 
     def address_of(self, a: ir.AddressOf) -> str:
-        """``REF(x)``: a ``runtime.Ref`` to the variable's ``(container, key)``."""
+        """``REF(x)``: a ``runtime.Ref`` to the variable's ``(container, key)``; a ``FrameRef`` to a FUNCTION's own
+        variable, which dangles once the call returned."""
+        if a.var.scope == "local" and a.var.name.upper() in self.scope.framed:
+            return f"ll_FrameRef(*{self.ref(a.var)}, {a.text!r}, ll_fr)"
         return f"ll_Ref(*{self.ref(a.var)}, {a.text!r})"
+
+    def view(self, v: ir.View) -> str:
+        """A pointer seeing its target's bytes as another type (engine/codegen/views.py)."""
+        return f"ll_view({self.expr(v.value)}, {v.whole!r}, {v.seen!r})"
 
     def attempt(self, a: ir.Attempt) -> str:
         """``?=``: the reference when its instance's class is one of the FBs implementing the interface, else NULL."""
@@ -381,6 +392,7 @@ _HANDLERS = {
     ir.Call: Expressions.call,
     ir.Convert: Expressions.convert,
     ir.AddressOf: Expressions.address_of,
+    ir.View: Expressions.view,
     ir.Attempt: Expressions.attempt,
 }
 

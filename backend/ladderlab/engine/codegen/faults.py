@@ -9,7 +9,7 @@ that frame (the instance, the function's locals, the globals).
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from types import FrameType
 
@@ -21,7 +21,7 @@ from ...model.places import ProjectPlaces
 from ..errors import OUT_OF_MEMORY, WATCHDOG, PlcRuntimeError
 from . import names
 from .context import ModuleContext, std_pin_type
-from .mentions import referenced_locals, statement_vars, var_text
+from .mentions import boxed_locals, statement_vars, var_text
 from .module import Generated
 from .runtime import WatchdogTimeout, reference_text
 from .scope import global_owner
@@ -129,12 +129,12 @@ def make_fault(
     if frame is not None and origin is not None:
         reader = _FrameReader(generated.context, frame, ns, origin.pou)
         statement = generated.origin_statements.get(oid)  # type: ignore[arg-type]
-        for var in statement_vars(statement) if statement is not None else ():
+        for var, pointer in _with_pointers(statement_vars(statement) if statement is not None else []):
             try:
                 value = reader.read(var)
             except Exception:
                 continue
-            if isinstance(var.type, t.Reference):
+            if pointer or isinstance(var.type, t.Reference):
                 values[var_text(var)] = reference_text(value)
             elif not isinstance(value, (list, tuple)) and not hasattr(value, "__slots__"):
                 values[var_text(var)] = value
@@ -157,6 +157,19 @@ def _deepest_generated_frame(error: BaseException, filename: str) -> tuple[Frame
     return found
 
 
+def _with_pointers(variables: list[ir.Var]) -> Iterator[tuple[ir.Var, bool]]:
+    """Each variable, after the pointers it is reached through (``p`` for ``p^``, with True): a fault in a
+    dereference (NULL, dangling, outside) shows the pointer's own value."""
+    seen: set[ir.Var] = set()
+    for var in variables:
+        for i, selector in enumerate(var.path):
+            pointer = ir.Var(var.scope, var.name, var.type, var.path[:i])
+            if isinstance(selector, ir.Deref) and pointer not in seen and pointer not in variables:
+                seen.add(pointer)
+                yield pointer, True
+        yield var, False
+
+
 class _FrameReader:
     """Reads IR variables in a frame of generated code, the way the generated code reaches them."""
 
@@ -164,7 +177,7 @@ class _FrameReader:
         self.context, self.locals, self.ns = context, frame.f_locals, ns
         self.pou = context.pous[pou.upper()]
         self.slots = {s.name.upper(): s for s in self.pou.slots}
-        self.boxed = referenced_locals(self.pou) if self.pou.kind == "function" else set()
+        self.boxed = boxed_locals(self.pou) if self.pou.kind == "function" else set()
 
     def read(self, var: ir.Var) -> object:
         value, ty = self.root(var)

@@ -9,51 +9,37 @@ from ...ir import nodes as ir
 from ...ir import types as t
 
 
-def expression_vars(e: ir.Expr | None) -> Iterator[ir.Var]:
+def expression_nodes(e: ir.Expr | None) -> Iterator[ir.Expr]:
+    """Every node of an expression, outermost first, index expressions and call arguments included."""
     if e is None:
         return
+    yield e
     if isinstance(e, ir.Var):
-        yield e
         for selector in e.path:
             if isinstance(selector, ir.Index):
                 for index in selector.indices:
-                    yield from expression_vars(index)
-    elif isinstance(e, ir.Unary):
-        yield from expression_vars(e.operand)
+                    yield from expression_nodes(index)
     elif isinstance(e, ir.Binary):
-        yield from expression_vars(e.left)
-        yield from expression_vars(e.right)
+        yield from expression_nodes(e.left)
+        yield from expression_nodes(e.right)
     elif isinstance(e, ir.Call):
         for a in (*e.args, *e.in_outs):
-            yield from expression_vars(a)
-    elif isinstance(e, ir.Convert):
-        yield from expression_vars(e.operand)
+            yield from expression_nodes(a)
+    elif isinstance(e, (ir.Unary, ir.Convert)):
+        yield from expression_nodes(e.operand)
     elif isinstance(e, ir.AddressOf):
-        yield from expression_vars(e.var)
-    elif isinstance(e, ir.Attempt):
-        yield from expression_vars(e.value)
+        yield from expression_nodes(e.var)
+    elif isinstance(e, (ir.Attempt, ir.View)):
+        yield from expression_nodes(e.value)
+
+
+def expression_vars(e: ir.Expr | None) -> Iterator[ir.Var]:
+    return (n for n in expression_nodes(e) if isinstance(n, ir.Var))
 
 
 def calls_in(e: ir.Expr | None) -> Iterator[ir.Call]:
     """Every function call in an expression, index expressions included."""
-    if isinstance(e, ir.Call):
-        yield e
-        for a in (*e.args, *e.in_outs):
-            yield from calls_in(a)
-    elif isinstance(e, ir.Var):
-        for selector in e.path:
-            if isinstance(selector, ir.Index):
-                for index in selector.indices:
-                    yield from calls_in(index)
-    elif isinstance(e, ir.Binary):
-        yield from calls_in(e.left)
-        yield from calls_in(e.right)
-    elif isinstance(e, (ir.Unary, ir.Convert)):
-        yield from calls_in(e.operand)
-    elif isinstance(e, ir.AddressOf):
-        yield from calls_in(e.var)
-    elif isinstance(e, ir.Attempt):
-        yield from calls_in(e.value)
+    return (n for n in expression_nodes(e) if isinstance(n, ir.Call))
 
 
 def own_expressions(s: ir.Stmt) -> Iterable[ir.Expr | None]:
@@ -131,6 +117,20 @@ def _index_text(e: ir.Expr) -> str:
     return "..."
 
 
+def addressed_locals(pou: ir.Pou) -> set[str]:
+    """The POU's own variables (not its in-outs or externals) that its body takes REF()/ADR() of: a FUNCTION that
+    has any gives each call a ``runtime.Frame`` so a reference into it dangles once the call returned."""
+    own = {s.name.upper() for s in pou.slots if s.var_class not in ("VAR_IN_OUT", "VAR_EXTERNAL")}
+    found: set[str] = set()
+    for block in pou.blocks:
+        for s in walk(block.statements):
+            for e in own_expressions(s):
+                for node in expression_nodes(e):
+                    if isinstance(node, ir.AddressOf) and node.var.scope == "local" and node.var.name.upper() in own:
+                        found.add(node.var.name.upper())
+    return found
+
+
 def referenced_locals(pou: ir.Pou, by_value: Callable[[str], bool] = lambda fb: False) -> set[str]:
     """The POU's own slots passed whole by reference somewhere in its body (to a VAR_IN_OUT): a FUNCTION boxes
     them in a 1-element list, the fast variant keeps none of them in a local (scope.temp_locals). The inputs of
@@ -151,3 +151,9 @@ def referenced_locals(pou: ir.Pou, by_value: Callable[[str], bool] = lambda fb: 
             ):  # a global FB instance's VAR_IN_OUT pin (boxing an input is harmless)
                 found.update(v.name.upper() for _, v in s.inputs if whole_local(v))
     return found
+
+
+def boxed_locals(pou: ir.Pou) -> set[str]:
+    """The variables a FUNCTION keeps in a 1-element list, so a reference can name them as ``(list, 0)``: those
+    passed whole to a VAR_IN_OUT and those it takes REF()/ADR() of."""
+    return referenced_locals(pou) | addressed_locals(pou)

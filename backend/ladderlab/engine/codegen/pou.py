@@ -26,7 +26,7 @@ from .constructors import construct
 from .context import CodegenError, ModuleContext, diagnostic
 from .deferred import deferred_probes
 from .layout import slots_source
-from .mentions import referenced_locals
+from .mentions import addressed_locals, boxed_locals
 from .scope import Scope, global_owner
 from .source import Source
 from .statements import Statements
@@ -375,7 +375,8 @@ def _unpack_reference(slot: ir.Slot, src: Source) -> None:
 def emit_function(module: ModuleContext, pou: ir.Pou, decls: Source, code: Source) -> None:
     """The function into ``code`` (never chunked: its variables are locals); its probe lists into ``decls``."""
     scope = Scope(module, pou)
-    scope.boxed = referenced_locals(pou)
+    scope.boxed = boxed_locals(pou)
+    scope.framed = addressed_locals(pou)
     scope.result_slot()  # raises when missing
     inputs = [s for s in pou.slots if s.var_class == "VAR_INPUT"]
     params = [names.slot(s.name) for s in inputs] + [f"r_{names.escape(s.name)}" for s in scope.in_outs]
@@ -387,6 +388,8 @@ def emit_function(module: ModuleContext, pou: ir.Pou, decls: Source, code: Sourc
     code.line(f"def {names.function(pou.name)}({', '.join(params)}):")
     with code.indent():
         code.line(f"# FUNCTION {names.comment_text(pou.name)} ({pou.language.upper()})")
+        if scope.framed:  # references into this call dangle once it returns (runtime.Frame)
+            code.line(f"ll_fr = ll_Frame({pou.name!r})")
         for slot in scope.in_outs:
             _unpack_reference(slot, code)
         for slot in inputs:

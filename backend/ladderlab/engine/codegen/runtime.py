@@ -17,6 +17,7 @@ into one stays valid.
 from __future__ import annotations
 
 import math
+import operator
 from collections.abc import Callable
 from typing import Any
 
@@ -25,13 +26,23 @@ from ..errors import (
     PlcRuntimeError,
     check_index,
     check_subrange,
+    dangling_reference,
     for_step_zero,
     null_dereference,
     pointer_outside,
+    pointers_unordered,
 )
 from ..process_image import ProcessImage
 from ..stdlib import INLINE_NAMES, STANDARD_FBS
 from . import names
+
+#: The orderings of pointers (``pointer_order``).
+ORDERS: dict[str, Callable[[int, int], bool]] = {
+    "<": operator.lt,
+    "<=": operator.le,
+    ">": operator.gt,
+    ">=": operator.ge,
+}
 
 #: Loop back-edges between two clock readings of the watchdog (``ll_wb``, statements.py).
 WATCHDOG_EVERY = 256
@@ -184,22 +195,105 @@ class Ref:
     def __reduce__(self) -> tuple[type[str], tuple[str]]:
         return str, (self.text,)
 
+    def place(self, size: int) -> tuple[object, int]:
+        """The variable a pointer points into (by identity) and the byte it points to there: an element of an array
+        (a list; ``size`` bytes each) is a place in it, anything else the variable's start."""
+        if isinstance(self.c, list) and isinstance(self.k, int):
+            return id(self.c), self.k * size
+        return (id(self.c), self.k), 0
+
+    def shifted(self, offset: int, size: int, what: str) -> Ref:
+        """``p + offset`` (bytes, CODESYS): ``offset / size`` elements further along the array p points into; an
+        offset that is no whole number of elements, or a result outside the array (one past its end is allowed) is
+        a fault. A pointer to a variable that is no array element moves nowhere: only ``p + 0``."""
+        if offset == 0:
+            return self
+        steps, rest = divmod(offset, size)
+        in_array = isinstance(self.c, list) and isinstance(self.k, int)
+        length = len(self.c) if in_array else 1  # type: ignore[arg-type]  # a list
+        position = (self.k if in_array else 0) + steps  # type: ignore[operator]  # an int key
+        if rest or not in_array or not 0 <= position <= length:
+            whole = f"{offset} bytes (not a whole number of elements)" if rest else f"{offset} bytes"
+            raise pointer_outside(f"{what} moved by {whole}", position, length, size)
+        origin, moved = (self.origin, self.moved + offset) if isinstance(self, ElementRef) else (self.text, offset)
+        return ElementRef(self.c, position, origin, moved, getattr(self, "frame", None))
+
+
+def pointer_order(left: Ref | None, right: Ref | None, left_size: int, right_size: int, op: str) -> bool:
+    """``p < q`` (and ``<=``, ``>``, ``>=``): the bytes two pointers into one variable point to, compared (CODESYS
+    compares addresses); pointers into different variables, or NULL, have no order here: a fault."""
+    if left is None or right is None:
+        raise pointers_unordered(op, reference_text(left), reference_text(right))
+    (mine, at), (theirs, there) = left.place(left_size), right.place(right_size)
+    if mine != theirs:
+        raise pointers_unordered(op, left.text, right.text)
+    return ORDERS[op](at, there)
+
 
 def reference_text(value: object) -> str:
     """How the online views and snapshots show a reference: ``NULL``, or the REF() it was made by."""
     return "NULL" if value is None else str(value.text if isinstance(value, Ref) else value)
 
 
+class Frame:
+    """One call of a FUNCTION whose body takes REF()/ADR() of its own variables: ``alive`` until the call returns
+    (``end``), after which a reference into it dangles. Functions that take no such reference have none."""
+
+    __slots__ = ("alive", "name")
+
+    def __init__(self, name: str) -> None:
+        self.alive, self.name = True, name
+
+    def end(self, result: object) -> object:
+        """The call returns ``result``: its variables are gone."""
+        self.alive = False
+        return result
+
+
+class FrameRef(Ref):
+    """A reference to a variable of a FUNCTION call (``frame``): reading or writing it after the call returned is
+    the fault ``dangling_reference``, never the stale value."""
+
+    __slots__ = ("frame",)
+
+    def __init__(self, container: object, key: object, text: str, frame: Frame) -> None:
+        super().__init__(container, key, text)
+        self.frame = frame
+
+    @property
+    def v(self) -> object:
+        if not self.frame.alive:
+            raise dangling(self.text, self.frame)
+        return self.c[self.k]  # type: ignore[index]  # a list or an Addressable
+
+    @v.setter
+    def v(self, value: object) -> None:
+        if not self.frame.alive:
+            raise dangling(self.text, self.frame)
+        self.c[self.k] = value  # type: ignore[index]  # as above
+
+    @property
+    def pair(self) -> tuple[object, object]:
+        if not self.frame.alive:
+            raise dangling(self.text, self.frame)
+        return self.c, self.k
+
+
+def dangling(text: str, frame: Frame) -> PlcRuntimeError:
+    return dangling_reference(text, frame.name)
+
+
 class ElementRef(Ref):
     """A pointer moved by arithmetic (``p + SIZEOF(x)``) along the array (a list) its element belongs to: it may
-    point one past the last element (a loop's end), but reading or writing there is a fault, never a Python error."""
+    point one past the last element (a loop's end), but reading or writing there is a fault, never a Python error;
+    ``frame``: the FUNCTION call whose variable the array is (FrameRef), or None."""
 
-    __slots__ = ("moved", "origin")
+    __slots__ = ("frame", "moved", "origin")
 
-    def __init__(self, container: list, key: int, origin: str, moved: int) -> None:
+    def __init__(self, container: list, key: int, origin: str, moved: int, frame: Frame | None = None) -> None:
         sign = "+" if moved >= 0 else "-"
         super().__init__(container, key, f"{origin} {sign} {abs(moved)}")
-        self.origin, self.moved = origin, moved  # the REF()/ADR() it started from and the bytes it moved since
+        self.origin, self.moved, self.frame = origin, moved, frame  # the REF()/ADR() it started from, bytes since
 
     @property
     def v(self) -> object:
@@ -214,6 +308,8 @@ class ElementRef(Ref):
         return self.c, self._checked()
 
     def _checked(self) -> int:
+        if self.frame is not None and not self.frame.alive:
+            raise dangling(self.text, self.frame)
         length = len(self.c)  # type: ignore[arg-type]  # a list
         if not 0 <= self.k < length:  # type: ignore[operator]  # an int key
             raise pointer_outside(f"the pointer {self.text}", self.k, length)  # type: ignore[arg-type]  # an int key
@@ -221,23 +317,10 @@ class ElementRef(Ref):
 
 
 def pointer_add(ref: Ref | None, offset: int, size: int, what: str) -> Ref:
-    """``p + offset`` (bytes, CODESYS): ``offset / size`` elements further along the array p points into; a NULL
-    ``p``, an offset that is no whole number of elements, or a result outside the array (one past its end is
-    allowed) is a fault. A pointer to a variable that is no array element moves nowhere: only ``p + 0``."""
+    """``p + offset`` (bytes, CODESYS): where ``Ref.shifted`` says; a NULL ``p`` is a fault."""
     if ref is None:
         raise null_dereference(what)
-    if offset == 0:
-        return ref
-    steps, rest = divmod(offset, size)
-    in_array = isinstance(ref.c, list) and isinstance(ref.k, int)
-    length = len(ref.c) if in_array else 1  # type: ignore[arg-type]  # a list
-    position = (ref.k if in_array else 0) + steps  # type: ignore[operator]  # an int key
-    if rest or not in_array or not 0 <= position <= length:
-        whole = f"{offset} bytes (not a whole number of elements)" if rest else f"{offset} bytes"
-        raise pointer_outside(f"{what} moved by {whole}", position, length, size)
-    if isinstance(ref, ElementRef):
-        return ElementRef(ref.c, position, ref.origin, ref.moved + offset)
-    return ElementRef(ref.c, position, ref.text, offset)
+    return ref.shifted(offset, size, what)
 
 
 def deref(ref: Ref | None, what: str) -> Ref:
@@ -335,6 +418,8 @@ FB_CLASSES: dict[str, type] = _addressable_fbs()
 
 def namespace() -> dict[str, object]:
     """Fresh globals for executing one generated module."""
+    from .views import view  # views.ViewRef derives from Ref: it imports this module
+
     ns: dict[str, object] = dict(INLINE_NAMES)
     ns.update(
         ll_ix=check_index,
@@ -346,8 +431,12 @@ def namespace() -> dict[str, object]:
         ll_for_range=for_range,
         ll_ref=dummy_reference,
         ll_Ref=Ref,
+        ll_FrameRef=FrameRef,
+        ll_Frame=Frame,
         ll_deref=deref,
         ll_ptr_add=pointer_add,
+        ll_ptr_order=pointer_order,
+        ll_view=view,
         ll_inf=math.inf,
         ll_nan=math.nan,
         ll_Addressable=Addressable,

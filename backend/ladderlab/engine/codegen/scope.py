@@ -45,6 +45,7 @@ class Scope:
         self.slots = {s.name.upper(): s for s in pou.slots if s.var_class != "VAR_EXTERNAL"}
         self.in_outs = [s for s in self.slots.values() if s.var_class == "VAR_IN_OUT"]
         self.boxed: set[str] = set()
+        self.framed: set[str] = set()  # a FUNCTION's variables it takes REF()/ADR() of: its calls have a Frame
         self.pages_used: set[int] = set()
         self._temps = 0
         self._roots: dict[tuple[str, str], tuple[str, t.IrType, int]] = {}
@@ -164,7 +165,8 @@ class Scope:
         if not self.function:
             return "return"
         name = self.result_slot().name
-        return f"return {names.slot(name)}{'[0]' if name.upper() in self.boxed else ''}"
+        result = f"{names.slot(name)}{'[0]' if name.upper() in self.boxed else ''}"
+        return f"return ll_fr.end({result})" if self.framed else f"return {result}"
 
 
 def temp_locals(module: ModuleContext, pou: ir.Pou) -> dict[str, str]:

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 
-from ...iec.values import resolve
+from ...iec.values import resolve, wrap_expr
 from ..errors import division_by_zero, index_out_of_range
 from .build import HELPERS, Impl, finite_args
 
@@ -100,6 +100,12 @@ def shr(x: int, n: int, bits: int) -> int:
     return x >> n if 0 <= n < bits else 0
 
 
+def sar(x: int, n: int) -> int:
+    """SHR of a signed integer (CODESYS typing): an arithmetic shift, filled with the sign bit (so -1 from n >=
+    its width on for a negative x, as CODESYS documents for signed types); a negative n shifts nothing out: 0."""
+    return x >> n if n >= 0 else 0
+
+
 def rol(x: int, n: int, bits: int) -> int:
     """Rotate left by n mod width (so a negative n rotates right)."""
     n %= bits
@@ -157,6 +163,7 @@ HELPERS.update(
     ll__pow=power,
     ll__shl=shl,
     ll__shr=shr,
+    ll__sar=sar,
     ll__rol=rol,
     ll__ror=ror,
     ll__limit=limit,
@@ -196,23 +203,28 @@ def chain(op: str, types: tuple[str, ...], result: str) -> Impl:
     return Impl(expr, result)
 
 
+#: CODESYS typing computes on bit strings as on the unsigned integers of their width (the checker decides when).
+_NUM_OR_BITS = _NUM | {"bits"}
+_INT_OR_BITS = _INT | {"bits"}
+
+
 def arithmetic(name: str, op: str):
     def implement(types: tuple[str, ...], result: str | None) -> Impl:
-        _numeric(name, types, _NUM)
+        _numeric(name, types, _NUM_OR_BITS)
         return chain(op, types, result or types[0])
 
     return implement
 
 
 def divide(types: tuple[str, ...], result: str | None) -> Impl:
-    _numeric("DIV", types, _NUM)
+    _numeric("DIV", types, _NUM_OR_BITS)
     result = result or types[0]
     helper = "ll__fdiv" if resolve(result).category == "real" else "ll__idiv"
     return Impl(f"{helper}(a0, a1)", result)
 
 
 def modulo(types: tuple[str, ...], result: str | None) -> Impl:
-    _numeric("MOD", types, _INT)  # FUN-32: ANY_INT only
+    _numeric("MOD", types, _INT_OR_BITS)  # FUN-32: ANY_INT only (bit strings: CODESYS typing)
     return Impl("ll__imod(a0, a1)", result or types[0])
 
 
@@ -256,12 +268,28 @@ def _bit_widths(name: str, types: tuple[str, ...]) -> int:
 
 def shift(name: str):
     def implement(types: tuple[str, ...], result: str | None) -> Impl:
+        if categories(types[:1]) == ("int",):  # CODESYS typing: an integer shifted as the bits of its type
+            return _integer_shift(name, types)
         bits = _bit_widths(name, types[:1])
-        if bits == 1 or categories(types[1:]) != ("int",):  # FUN-40: BOOL rejected, N is ANY_INT
+        if bits == 1 or categories(types[1:])[0] not in _INT_OR_BITS:  # FUN-40: BOOL rejected, N is ANY_INT
             raise reject(name, types)
         return Impl(f"ll__{name.lower()}(a0, a1, {bits})")
 
     return implement
+
+
+def _integer_shift(name: str, types: tuple[str, ...]) -> Impl:
+    """SHL/SHR/ROL/ROR of an integer (CODESYS typing): on the bits of the input's type ("the number of bits CODESYS
+    uses is defined by the data type of the input"); an unsigned integer as its bit string, a signed one as its
+    two's complement bits read back as signed, SHR of a signed one arithmetic (``sar``)."""
+    if categories(types[1:])[0] not in _INT_OR_BITS:
+        raise reject(name, types)
+    elem = resolve(types[0]).elem
+    if not elem.signed:
+        return Impl(f"ll__{name.lower()}(a0, a1, {elem.bits})")
+    if name == "SHR":
+        return Impl("ll__sar(a0, a1)")
+    return Impl(wrap_expr(f"ll__{name.lower()}(a0 & {(1 << elem.bits) - 1}, a1, {elem.bits})", types[0]))
 
 
 def bitwise(name: str, op: str):

@@ -35,7 +35,16 @@ from .ld_export import LdExporter
 from .methods import oo_attributes, oo_texts, write_inheritance, write_methods
 from .sfc_export import write_sfc_pou
 from .vars import parse_type_text, write_data_type, write_type, write_var_list
-from .xml_io import formatted_text, ladderlab_data, ladderlab_libraries, ladderlab_tests, q, sub, to_bytes
+from .xml_io import (
+    formatted_text,
+    ladderlab_data,
+    ladderlab_libraries,
+    ladderlab_tests,
+    ladderlab_typing,
+    q,
+    sub,
+    to_bytes,
+)
 
 POU_TYPE = {"program": "program", "function_block": "functionBlock", "function": "function"}
 
@@ -89,6 +98,7 @@ class _Exporter:
         )
         ladderlab_tests(ours, [(test.name, test.text) for test in self.project.tests])
         ladderlab_libraries(ours, list(self.project.libraries))
+        ladderlab_typing(ours, self.project.typing)
         if self.problems:
             raise PlcopenExportError(self.problems)
         return to_bytes(root)

@@ -27,7 +27,7 @@ from ...model.cfc import CfcBody
 from ...model.diagnostics import Diagnostic
 from ...model.fbd import FbdBody
 from ...model.ld import LdBody
-from ...model.project import LibraryName, Pou, PouAction, Project, TestFile
+from ...model.project import LibraryName, Pou, PouAction, Project, TestFile, Typing
 from ...st import ast
 from ...st.parser import parse_declarations, parse_source
 from ...st.printer import print_declarations, print_source, print_type
@@ -71,6 +71,7 @@ from .xml_io import (
     namespace,
     test_texts,
     text_content,
+    typing_rules,
 )
 from .xml_safety import XmlInputError, parse_untrusted_xml
 
@@ -181,7 +182,21 @@ class _Importer:
             configuration=configuration,
             tests=tests,
             libraries=libraries,
+            typing=self.typing(ours, root),
         )
+
+    def typing(self, ours: ET.Element | None, root: ET.Element) -> Typing:
+        """The type rules LadderLab's data names (IEC when none); unknown rules are reported, and IEC is used."""
+        rules = typing_rules(ours)
+        if rules is None or rules in get_args(Typing):
+            return cast(Typing, rules or "iec")
+        self.reader.report(
+            "PLCOPEN-UNSUPPORTED",
+            f"type rules '{rules}' are not ones LadderLab knows ({', '.join(get_args(Typing))}); IEC rules are used",
+            root,
+            severity="warning",
+        )
+        return "iec"
 
     def libraries(self, ours: ET.Element | None, root: ET.Element) -> list[LibraryName]:
         """The vendor libraries LadderLab's data names; one it does not ship is reported and left out."""

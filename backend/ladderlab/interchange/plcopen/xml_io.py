@@ -99,6 +99,19 @@ def ladderlab_libraries(add_data: ET.Element, libraries: list[str]) -> None:
         ET.SubElement(info, f"{{{LADDERLAB_NS}}}library", {"name": name})
 
 
+def ladderlab_typing(add_data: ET.Element, typing: str) -> None:
+    """Carry the project's type rules (``<ll:typing rules="codesys"/>``, only when not IEC) in ``ladderlab_data``'s
+    result: PLCopen XML has no such setting, and the project's CODESYS-typed ST would not build without it."""
+    if typing != "iec":
+        ET.SubElement(add_data[0][0], f"{{{LADDERLAB_NS}}}typing", {"rules": typing})
+
+
+def typing_rules(node: ET.Element | None) -> str | None:
+    """The type rules carried in the project's ``<ll:info>`` (``ladderlab_typing``), None when there are none."""
+    found = node.find(f"{{{LADDERLAB_NS}}}typing") if node is not None else None
+    return found.get("rules") if found is not None else None
+
+
 def library_names(node: ET.Element | None) -> list[str]:
     """The library names carried in the project's ``<ll:info>`` (``ladderlab_libraries``)."""
     if node is None:

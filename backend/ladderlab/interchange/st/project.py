@@ -36,6 +36,10 @@ def export_project_st(project: Project, *, sfc_text: bool = False) -> StExport:
         names = ", ".join(project.libraries)
         options = " ".join(f"--library {name}" for name in project.libraries)
         parts.append(f"(* Uses the vendor libraries {names}: ladderlab check/run ... {options} *)")
+    if project.typing != "iec":  # nor its type rules (docs/st.md "CODESYS typing")
+        parts.append(
+            f"(* Checked with {project.typing.upper()} typing: ladderlab check/run ... --typing {project.typing} *)"
+        )
     if project.types.strip():
         parts.append(project.types.strip("\n"))
     if project.globals.strip():
@@ -71,11 +75,11 @@ def export_project_st(project: Project, *, sfc_text: bool = False) -> StExport:
 
 
 def verify_text(text: str, project: Project) -> list[Diagnostic]:
-    """The exported file must read back into a project (with the same vendor libraries, which the text names in a
-    comment) that checks without errors; else say so."""
+    """The exported file must read back into a project (with the same vendor libraries and type rules, which the
+    text names in a comment) that checks without errors; else say so."""
     read, diagnostics = source_to_project(text, project.name)
     if read is not None:
-        read = read.model_copy(update={"libraries": project.libraries})
+        read = read.model_copy(update={"libraries": project.libraries, "typing": project.typing})
         diagnostics = diagnostics + check_project(read).diagnostics
     return [
         Diagnostic(

@@ -1,0 +1,234 @@
+"""Memory seen through a pointer of another type (CODESYS ``pt := ADR(x)`` with ``pt : POINTER TO BYTE``).
+
+LadderLab keeps values as Python objects, not bytes; a view reads and writes the bytes a CODESYS PLC on x86/ARM
+would hold, little-endian, computed from the value on each access: ``Layout.read`` encodes only the part of the
+variable the access covers, ``Layout.write`` splices new bytes in and decodes the variable again. A write whose
+bytes the variable cannot hold exactly (a BOOL byte of 2, a character after a STRING's terminator) is a fault, so
+no value changes other than the bytes written. The layouts come from the lowering as specs
+(ir/byte_layout.py): ``("int", size, signed)``, ``("real", size)``, ``("bool",)``, ``("string", n)``,
+``("array", count, element spec)``.
+"""
+
+from __future__ import annotations
+
+import functools
+import struct
+from typing import Any
+
+from ..errors import INDEX_RANGE, PlcRuntimeError, pointer_outside_bytes
+from .runtime import Ref, dangling
+
+_INT_FORMATS = {(1, False): "<B", (1, True): "<b", (2, False): "<H", (2, True): "<h"}
+_INT_FORMATS |= {(4, False): "<I", (4, True): "<i", (8, False): "<Q", (8, True): "<q"}
+
+
+def _not_kept(what: str) -> PlcRuntimeError:
+    return PlcRuntimeError(INDEX_RANGE, f"writing through a pointer would give {what}, which the variable cannot hold")
+
+
+class Scalar:
+    """An integer, bit string, BOOL or REAL: ``struct`` packs it little-endian."""
+
+    def __init__(self, fmt: str, size: int, kind: str) -> None:
+        self.codec, self.size, self.kind = struct.Struct(fmt), size, kind
+
+    def encode(self, value: Any) -> bytes:
+        return self.codec.pack(value)
+
+    def decode(self, data: bytes) -> Any:
+        value = self.codec.unpack(data)[0]
+        return value != 0 if self.kind == "bool" else value
+
+    def read(self, value: Any, offset: int, size: int) -> bytes:
+        return self.codec.pack(value)[offset : offset + size]
+
+    def write(self, value: Any, offset: int, data: bytes) -> Any:
+        whole = bytearray(self.codec.pack(value))
+        whole[offset : offset + len(data)] = data
+        new = self.decode(bytes(whole))
+        if self.codec.pack(new) != whole:  # a BOOL byte other than 0 / 1, a REAL NaN payload Python cannot keep
+            raise _not_kept(f"the bytes {bytes(whole).hex()} for a {self.kind}")
+        return new
+
+
+class String:
+    """STRING[n]: n + 1 bytes, the characters (one byte each), a NUL terminator, then zeros: a STRING holds only
+    its text, so the bytes after its terminator read 0 and a character written there is a fault."""
+
+    def __init__(self, length: int) -> None:
+        self.length, self.size = length, length + 1
+
+    def encode(self, value: str) -> bytes:
+        return value.encode("latin-1").ljust(self.size, b"\0")
+
+    def decode(self, data: bytes) -> str:
+        return data.split(b"\0", 1)[0].decode("latin-1")
+
+    def read(self, value: str, offset: int, size: int) -> bytes:
+        return self.encode(value)[offset : offset + size]
+
+    def write(self, value: str, offset: int, data: bytes) -> str:
+        whole = bytearray(self.encode(value))
+        whole[offset : offset + len(data)] = data
+        new = self.decode(bytes(whole))
+        if len(new) > self.length or self.encode(new) != whole:
+            raise _not_kept(f"a STRING[{self.length}] with characters after its terminator (or none)")
+        return new
+
+
+class ArrayLayout:
+    """An array (a list) of ``count`` elements laid one after the other, no padding: only the elements an access
+    covers are encoded."""
+
+    def __init__(self, count: int, element: Any) -> None:
+        self.count, self.element = count, element
+        self.size = count * element.size
+
+    def encode(self, value: list) -> bytes:
+        return b"".join(self.element.encode(v) for v in value)
+
+    def decode(self, data: bytes) -> list:
+        step = self.element.size
+        return [self.element.decode(data[i : i + step]) for i in range(0, len(data), step)]
+
+    def read(self, value: list, offset: int, size: int) -> bytes:
+        step = self.element.size
+        first, last = offset // step, (offset + size - 1) // step
+        parts = [self.element.read(value[i], 0, step) for i in range(first, last + 1)]
+        start = offset - first * step
+        return b"".join(parts)[start : start + size]
+
+    def write(self, value: list, offset: int, data: bytes) -> list:
+        step = self.element.size
+        end = offset + len(data)
+        for i in range(offset // step, (end - 1) // step + 1):
+            low, high = max(offset, i * step), min(end, (i + 1) * step)
+            value[i] = self.element.write(value[i], low - i * step, data[low - offset : high - offset])
+        return value
+
+
+@functools.cache
+def layout(spec: tuple) -> Any:
+    """The runtime layout of a spec from the lowering (ir/byte_layout.py)."""
+    kind = spec[0]
+    if kind == "int":
+        return Scalar(_INT_FORMATS[(spec[1], spec[2])], spec[1], "int")
+    if kind == "real":
+        return Scalar("<f" if spec[1] == 4 else "<d", spec[1], "real")
+    if kind == "bool":
+        return Scalar("<B", 1, "bool")
+    if kind == "string":
+        return String(spec[1])
+    return ArrayLayout(spec[1], layout(spec[2]))
+
+
+class ViewRef(Ref):
+    """A pointer that sees the variable ``(c, k)`` (laid out as ``whole``; ``k`` None: the array ``c`` itself) from
+    byte ``offset`` on as a value of the ``seen`` layout. It may point one past the variable's end, not read or
+    write there; ``frame`` is the function call whose variable it is (runtime.Frame), None for any other."""
+
+    __slots__ = ("frame", "offset", "origin", "seen", "whole")
+
+    def __init__(self, c: object, k: object, whole: Any, offset: int, seen: Any, origin: str, frame: Any) -> None:
+        moved = f" + {offset}" if offset else ""
+        super().__init__(c, k, origin + moved)
+        self.whole, self.offset, self.seen, self.origin, self.frame = whole, offset, seen, origin, frame
+
+    def _target(self, size: int) -> object:
+        """The variable, once the ``size`` bytes from ``offset`` on are known to lie inside it (and its call alive)."""
+        if self.frame is not None and not self.frame.alive:
+            raise dangling(self.text, self.frame)
+        if not 0 <= self.offset <= self.whole.size - size:
+            raise pointer_outside_bytes(f"the pointer {self.text}", self.offset, size, self.whole.size)
+        return self.c if self.k is None else self.c[self.k]  # type: ignore[index]  # see __init__
+
+    @property
+    def v(self) -> object:
+        if isinstance(self.seen, ArrayLayout):  # each element is checked when it is read or written
+            self._target(0)
+            return ArrayView(self, self.seen)
+        value = self._target(self.seen.size)
+        return self.seen.decode(self.whole.read(value, self.offset, self.seen.size))
+
+    @v.setter
+    def v(self, new: object) -> None:
+        value = self._target(self.seen.size)
+        written = self.whole.write(value, self.offset, self.seen.encode(new))
+        if self.k is not None and written is not value:
+            self.c[self.k] = written  # type: ignore[index]  # as above
+
+    @property
+    def pair(self) -> tuple[object, object]:
+        """``(self, "v")``: a VAR_IN_OUT or an online path reaches the bytes through ``v``; checked here, so an
+        online path through a pointer outside its variable (or dangling) names no variable (engine/paths.py)."""
+        self._target(0 if isinstance(self.seen, ArrayLayout) else self.seen.size)
+        return (self, "v")
+
+    def __getitem__(self, key: str) -> object:  # (self, "v") as a VAR_IN_OUT reference
+        return self.v
+
+    def __setitem__(self, key: str, value: object) -> None:
+        self.v = value
+
+    def place(self, size: int) -> tuple[object, int]:
+        return (id(self.c) if self.k is None else (id(self.c), self.k)), self.offset
+
+    def shifted(self, offset: int, size: int, what: str) -> ViewRef:
+        """``p + offset`` bytes, whatever the size of what p sees: anywhere from the variable's start to one past
+        its end."""
+        position = self.offset + offset
+        if not 0 <= position <= self.whole.size:
+            raise pointer_outside_bytes(f"{what} moved by {offset} bytes", position, 0, self.whole.size)
+        return ViewRef(self.c, self.k, self.whole, position, self.seen, self.origin, self.frame)
+
+    def __eq__(self, other: object) -> bool:
+        if isinstance(other, ViewRef):
+            return other.c is self.c and other.k == self.k and other.offset == self.offset
+        return self.offset == 0 and isinstance(other, Ref) and other.c is self.c and other.k == self.k
+
+    def __hash__(self) -> int:
+        return hash((id(self.c), self.k, self.offset))
+
+
+class ArrayView:
+    """``pt^`` of a pointer to an array seen over other memory: ``pt^[i]`` reads and writes element i's bytes alone
+    (OSCAT's ``REF_TO ARRAY[1..255] OF BYTE`` over a shorter STRING reads only the characters it indexes)."""
+
+    __slots__ = ("ref", "seen")
+
+    def __init__(self, ref: ViewRef, seen: ArrayLayout) -> None:
+        self.ref, self.seen = ref, seen
+
+    def _element(self, index: int) -> ViewRef:
+        ref, step = self.ref, self.seen.element.size
+        return ViewRef(ref.c, ref.k, ref.whole, ref.offset + index * step, self.seen.element, ref.origin, ref.frame)
+
+    def __getitem__(self, index: int) -> object:
+        return self._element(index).v
+
+    def __setitem__(self, index: int, value: object) -> None:
+        self._element(index).v = value
+
+    def __len__(self) -> int:
+        return self.seen.count
+
+    def __iter__(self):
+        return (self[i] for i in range(self.seen.count))
+
+
+def view(ref: Ref | None, whole: tuple, seen: tuple) -> ViewRef | None:
+    """``ref`` (a pointer to a value laid out as ``whole``) seen as a pointer to ``seen``. A pointer to an array
+    element sees the whole (innermost) array from that element on, so it may walk to its neighbours."""
+    if ref is None:
+        return None
+    seen_layout = layout(seen)
+    if isinstance(ref, ViewRef):
+        return ViewRef(ref.c, ref.k, ref.whole, ref.offset, seen_layout, ref.origin, ref.frame)
+    element = layout(whole)
+    frame = getattr(ref, "frame", None)
+    if isinstance(ref.c, list) and isinstance(ref.k, int):
+        array = ArrayLayout(len(ref.c), element)
+        origin = ref.origin if hasattr(ref, "origin") else ref.text
+        offset = ref.k * element.size if 0 <= ref.k <= len(ref.c) else -1
+        return ViewRef(ref.c, None, array, offset, seen_layout, origin, frame)
+    return ViewRef(ref.c, ref.k, element, 0, seen_layout, ref.text, frame)

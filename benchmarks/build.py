@@ -1,0 +1,120 @@
+"""Build benchmark (issue 27 item 3): a 50,000-network LD program from the project model to runnable code.
+
+The networks are diagrams.py's (``--| A |--|/ B |--( C )--``, every fourth with a TON, a CTU and an ADD); the
+program's declarations are ~2.5 MB of text, so the source limit is raised for the run. Each run is a fresh
+process (the build's heap must not meet a previous one's) and reports process CPU seconds of the lowering (the ST
+check of the declarations, then the networks), of the compile step split into the code generator, CPython's
+``compile()`` of the generated pieces and the collection that ends the build's collector pause
+(ladderlab/collector.py), and the peak resident set (``ru_maxrss``) with what the model alone takes. Targets: at
+most 6 s of CPU and 600 MB peak. Prints one line per run and the median, with the load average.
+"""
+
+from __future__ import annotations
+
+import argparse
+import gc
+import json
+import os
+import pathlib
+import resource
+import statistics
+import subprocess
+import sys
+import time
+from collections.abc import Callable
+from typing import Any, TypeVar
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+sys.path[:0] = [str(ROOT / "backend"), str(ROOT)]
+
+from benchmarks.common import load_average  # noqa: E402
+
+NETWORKS = 50_000
+T = TypeVar("T")
+
+
+def _peak_mb() -> float:
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+
+
+def measure(networks: int) -> dict[str, float]:
+    """One build in this process: CPU seconds per phase and peak MB."""
+    os.environ["LADDERLAB_MAX_SOURCE_CHARACTERS"] = str(100 * networks)  # ~50 characters of declarations a network
+    from benchmarks.diagrams import project
+    from ladderlab.engine import compile as compiling
+    from ladderlab.ir.lower_project import lower_project
+    from ladderlab.st.parser import parse_expression
+
+    spent: dict[str, float] = {"generate": 0.0, "compile()": 0.0, "collection": 0.0}
+
+    def timed(name: str, function: Callable[..., T]) -> Callable[..., T]:
+        def wrapper(*args: Any, **kwargs: Any) -> T:
+            started = time.thread_time()  # the build runs in a thread of its own (ladderlab/deep.py)
+            try:
+                return function(*args, **kwargs)
+            finally:
+                spent[name] += time.thread_time() - started
+
+        return wrapper
+
+    compiling.generate = timed("generate", compiling.generate)
+    compiling._compile_piece = timed("compile()", compiling._compile_piece)
+    gc.collect = timed("collection", gc.collect)  # ladderlab/collector.py's one collection at the end of a pause
+    parse_expression("0")  # the parser's tables load once per process
+    model = project("ld", networks)
+    model_mb = _peak_mb()
+    started = time.process_time()
+    lowered = lower_project(model)
+    lowering = time.process_time() - started
+    assert lowered.program is not None, [d.format() for d in lowered.diagnostics[:5]]
+    lowering_collection = spent["collection"]
+    compiling.compile_program(lowered.program, "fast")
+    total = time.process_time() - started
+    return {
+        "lowering": lowering,
+        "lowering collection": lowering_collection,
+        "compile": total - lowering,
+        "generate": spent["generate"],
+        "compile()": spent["compile()"],
+        "total": total,
+        "model MB": model_mb,
+        "peak MB": _peak_mb(),
+    }
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--runs", type=int, default=3, help="fresh processes (default 3)")
+    parser.add_argument("--networks", type=int, default=NETWORKS)
+    parser.add_argument("--one", action="store_true", help="measure one build in this process (JSON)")
+    args = parser.parse_args()
+    if args.one:
+        print(json.dumps(measure(args.networks)))
+        return
+    runs = []
+    for _ in range(args.runs):
+        done = subprocess.run(
+            [sys.executable, __file__, "--one", "--networks", str(args.networks)],
+            check=True,
+            capture_output=True,
+            text=True,
+        )
+        run = json.loads(done.stdout.splitlines()[-1])
+        runs.append(run)
+        print(_line(run))
+    median = {key: statistics.median(run[key] for run in runs) for key in runs[0]}
+    print(
+        f"{args.networks:,} LD networks, median of {len(runs)}: {_line(median)} (targets 6 s, 600 MB); {load_average()}"
+    )
+
+
+def _line(run: dict[str, float]) -> str:
+    return (
+        f"lowering {run['lowering']:.2f} s CPU (collection {run['lowering collection']:.2f}), compile "
+        f"{run['compile']:.2f} (generate {run['generate']:.2f}, compile() {run['compile()']:.2f}), total "
+        f"{run['total']:.2f} s; peak {run['peak MB']:.0f} MB (model {run['model MB']:.0f} MB)"
+    )
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,209 @@
+"""CODESYS typing (``Project.typing = "codesys"``, issue 25): CODESYS V3's arithmetic on bit strings, shifts on
+integers, implicit conversions and its wide registers, scan by scan (ST-20 stays the IEC default).
+
+Every expected value comes from CODESYS's documentation, quoted in the test's docstring:
+
+* "Operators" (content.helpme-codesys.com, _cds_struct_reference_operators): "The CODESYS compiler ... computes
+  temporary results always with the native size ... at least with 32-bit temporary values on x86 and ARM systems";
+  its examples 1-4 with wVar/dwVar (quoted below);
+* "Operator: SHL" / "SHR": "Note the number of bits which CODESYS uses for this operation as defined by the data
+  type of the input variable in" (16#45 SHL 2 is 16#14 in a BYTE, 16#0114 in a WORD; SHR 2 is 16#11); SHR of a
+  signed type: "an arithmetic shift will be executed ..., that means it will be filled with the value of the
+  topmost bit" (CODESYS V2.3 / ABB Automation Builder's CODESYS help);
+* Beckhoff's TwinCAT 3 (CODESYS V3) "Type conversion operators": "Conversions from a 'smaller' type to a 'larger'
+  type, such as from BYTE to INT or from WORD to DINT ... are also possible implicitly".
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from ladderlab.simulation.build import build_project
+from ladderlab.st.project_text import source_to_project
+
+from .ed3_support import program
+
+VARIANTS = ("fast", "debug")
+
+
+def _build(text: str, typing: str = "codesys", variant: str = "fast"):
+    project, diagnostics = source_to_project(text, "codesys")
+    assert project is not None and not [d for d in diagnostics if d.severity == "error"], diagnostics
+    return build_project(project.model_copy(update={"typing": typing}), variant)
+
+
+def _scan(text: str, *paths: str, variant: str = "fast", scans: int = 1) -> list:
+    result = _build(text, variant=variant)
+    assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
+    sim = result.simulation()
+    sim.cycle(scans)
+    assert sim.fault is None, sim.fault.text()
+    return [sim.read(f"Main.{p}") for p in paths]
+
+
+def _diagnostics(text: str, typing: str = "codesys", severity: str = "error") -> list[str]:
+    return [f"{d.code} {d.line}: {d.message}" for d in _build(text, typing).diagnostics if d.severity == severity]
+
+
+@pytest.mark.parametrize("variant", VARIANTS)
+def test_the_register_is_not_cut_before_a_wider_variable_or_a_comparison(variant):
+    """CODESYS "Operators", example 1: ``wVar := 65535; dwVar := wVar + 1;`` - "the result in dwVar is 65536".
+    Example 2: ``bVar1 := (wVar1 + 1) = wVar2; bVar2 := (wVar2 - 1) = wVar1;`` with wVar1 = 65535, wVar2 = 0:
+    "the result (bVar1, bVar2) of both comparisons is FALSE" on 32- and 64-bit hardware (not cut to 0 / 65535).
+    Example 3: ``wVar3 := wVar1 + 1; bVar1 := wVar3 = wVar2;``: "truncated to the target data type WORD", TRUE.
+    Example 4: ``TO_WORD(wVar1 + 1) = wVar2`` and ``TO_WORD(wVar2 - 1) = wVar1``: both TRUE (16-bit)."""
+    text = program(
+        "wVar : WORD := 65535; dwVar : DWORD; wVar1 : WORD := 65535; wVar2 : WORD; wVar3 : WORD;"
+        "ex2 : BOOL := TRUE; ex2b : BOOL := TRUE; ex3 : BOOL; ex4a : BOOL; ex4b : BOOL;",
+        """
+dwVar := wVar + 1;
+ex2 := (wVar1 + 1) = wVar2;
+ex2b := (wVar2 - 1) = wVar1;
+wVar3 := wVar1 + 1;
+ex3 := wVar3 = wVar2;
+ex4a := TO_WORD(wVar1 + 1) = wVar2;
+ex4b := TO_WORD(wVar2 - 1) = wVar1;
+""",
+    )
+    assert _scan(text, "dwVar", "ex2", "ex2b", "wVar3", "ex3", "ex4a", "ex4b", variant=variant) == [
+        65536,
+        False,
+        False,
+        0,
+        True,
+        True,
+        True,
+    ]
+
+
+def test_signed_operations_compute_in_the_32_bit_register():
+    """At least 32 bits on x86/ARM ("Operators"): INT 30000 + 30000 stored in a DINT is 60000 (not -5536 as a 16-bit
+    INT would give), ``i + 1 > i`` with i = 32767 is TRUE (32768 > 32767), and ``(i + 1) / 2`` is 16384; stored in an
+    INT the same sum is cut to 16 bits: 60000 - 65536 = -5536 (example 3's truncation)."""
+    text = program(
+        "i1 : INT := 30000; i2 : INT := 30000; i : INT := 32767; d : DINT; q : BOOL; half : DINT; cut : INT;",
+        "d := i1 + i2; q := i + 1 > i; half := (i + 1) / 2; cut := i1 + i2;",
+    )
+    assert _scan(text, "d", "q", "half", "cut") == [60000, True, 16384, -5536]
+
+
+def test_a_register_value_the_target_decides_is_refused_where_it_is():
+    """Where the register's value is target dependent, nothing is guessed: an unsigned subtraction that may go
+    below 0 compared by '<' (a signed or an unsigned 32/64-bit register gives opposite answers), and a typed
+    conversion of a promoted value. Each is ST-CODESYS-REGISTER at its line; example 4's fix (TO_WORD) builds."""
+    text = program(
+        "w : WORD; q : BOOL; r : REAL; i : INT;",
+        "q := (w - 1) < w;\nr := INT_TO_REAL(i + 1);\nq := TO_WORD(w - 1) < w;\nr := TO_REAL(i + 1);",
+    )
+    found = _diagnostics(text)
+    assert [line.split(":")[0] for line in found] == ["ST-CODESYS-REGISTER 6", "ST-CODESYS-REGISTER 7"]
+    assert "depends on the target" in found[0] and "TO_WORD" in found[0]
+
+
+@pytest.mark.parametrize("variant", VARIANTS)
+def test_arithmetic_on_bit_strings_as_unsigned_integers(variant):
+    """BYTE 200 + 100 stored in a BYTE: 300 cut to 8 bits = 44 (example 3); DWORD 16#FFFF_FFFF + 1 in a DWORD wraps
+    to 0 (32 bits, the register's width on x86/ARM); 7 / 2 on BYTEs is 3, DWORD 100 MOD 7 is 2, WORD 3 * 5 is 15."""
+    text = program(
+        "b1 : BYTE := 200; b2 : BYTE := 100; b : BYTE; dw : DWORD := 16#FFFF_FFFF; seven : BYTE := 7;"
+        "quotient : BYTE; rest : DWORD; big : DWORD := 100; w : WORD := 3; product : WORD;",
+        "b := b1 + b2; dw := dw + 1; quotient := seven / 2; rest := big MOD 7; product := w * 5;",
+    )
+    assert _scan(text, "b", "dw", "quotient", "rest", "product", variant=variant) == [44, 0, 3, 2, 15]
+
+
+@pytest.mark.parametrize("variant", VARIANTS)
+def test_shifts_on_integers_use_the_bits_of_the_input_type(variant):
+    """SHL: "the number of bits ... as defined by the data type of the input": BYTE 16#45 SHL 2 = 16#14, WORD 16#45
+    SHL 2 = 16#0114, SHR 2 = 16#11. On an INT, SHL(2024, 14) keeps 16 bits: 2024 = 2#111_1110_1000, shifted by 14
+    only its two low bits (00) stay, so 0 (OSCAT's LEAP_YEAR relies on it). SHR of a signed -16 by 2 is an
+    arithmetic shift: -4; SHR(UINT 40000, 3) = 5000; ROL(SINT -128, 1): 2#1000_0000 rotated is 2#0000_0001 = 1.
+    N may be a BYTE (the help's own example declares ``n : BYTE``)."""
+    text = program(
+        "in_byte : BYTE := 16#45; in_word : WORD := 16#45; n : BYTE := 2; b : BYTE; w : WORD; r : WORD;"
+        "year : INT := 2024; leap : INT := 1; neg : INT := -16; sar : INT; u : UINT := 40000; us : UINT;"
+        "s : SINT := -128; rot : SINT;",
+        "b := SHL(in_byte, n); w := SHL(in_word, n); r := SHR(in_word, n); leap := SHL(year, 14);"
+        "sar := SHR(neg, 2); us := SHR(u, 3); rot := ROL(s, 1);",
+    )
+    assert _scan(text, "b", "w", "r", "leap", "sar", "us", "rot", variant=variant) == [
+        0x14,
+        0x0114,
+        0x11,
+        0,
+        -4,
+        5000,
+        1,
+    ]
+
+
+def test_implicit_widening_and_narrowing():
+    """Implicit conversion "from a smaller type to a larger type" (BYTE to INT, WORD to DINT) and an integer into a
+    REAL: r := i with i = 3 is 3.0, r * b = 1.5 * 4 = 6.0, BYTE 200 into an INT is 200. A DINT 70000 stored in an INT
+    is cut to 16 bits (example 3): 70000 - 65536 = 4464, with the warning ST-IMPLICIT-NARROW."""
+    text = program(
+        "i : INT := 3; r : REAL; x : REAL := 1.5; b : BYTE := 4; prod : REAL; big : BYTE := 200; wide : INT;"
+        "d : DINT := 70000; small : INT;",
+        "r := i; prod := x * b; wide := big; small := d;",
+    )
+    assert _scan(text, "r", "prod", "wide", "small") == [3.0, 6.0, 200, 4464]
+    warnings = _diagnostics(text, severity="warning")
+    assert [w for w in warnings if w.startswith("ST-IMPLICIT-NARROW")] == [
+        "ST-IMPLICIT-NARROW 6: DINT is narrowed implicitly to INT (CODESYS typing): the value is cut as DINT_TO_INT "
+        "does; write the conversion to say so"
+    ]
+
+
+def test_iec_typing_stays_the_default_and_refuses_all_of_it():
+    """ST-20: without the setting, bit strings are not numbers, SHR takes ANY_BIT, an INT is not a REAL."""
+    text = program(
+        "b : BYTE; i : INT; r : REAL; n : BYTE;",
+        "b := b + 1;\ni := SHR(i, 1);\nr := i;\nb := SHR(b, n);",
+    )
+    found = _diagnostics(text, typing="iec")
+    assert [line.split(":")[0] for line in found] == [
+        "ST-TYPE-MISMATCH 6",
+        "ST-TYPE-MISMATCH 7",
+        "ST-TYPE-MISMATCH 8",
+        "ST-TYPE-MISMATCH 9",
+    ]
+
+
+def test_a_bit_string_indexes_an_array_and_selects_a_case_branch():
+    """CODESYS takes a BYTE as an array index and a CASE selector, as its unsigned value: a[b] with b = 3 is the
+    element 30, CASE b OF 3: 'three' branch."""
+    text = program(
+        "a : ARRAY [0..5] OF INT := [0, 10, 20, 30, 40, 50]; b : BYTE := 3; x : INT; branch : INT;",
+        "x := a[b]; CASE b OF 1: branch := 1; 3: branch := 3; ELSE branch := -1; END_CASE;",
+    )
+    assert _scan(text, "x", "branch") == [30, 3]
+
+
+def test_min_and_max_of_a_register_value_choose_among_the_uncut_values():
+    """``MAX(links, i - 1)`` in CODESYS compares the register's values: with i = -32768 (INT), i - 1 is -32769 in
+    the 32-bit register, so MAX(-32768, -32769) = -32768; a 16-bit INT would have wrapped i - 1 to 32767 and chosen
+    it. Stored into an INT the result is -32768 either way only when chosen from the uncut values."""
+    text = program("links : INT := -32768; i : INT := -32768; rechts : INT;", "rechts := MAX(links, i - 1);")
+    assert _scan(text, "rechts") == [-32768]
+
+
+def test_an_action_computes_in_the_register_too():
+    """The register rule holds in a function block's ACTION as in its body (example 1): d := i1 + i2 with INT 30000
+    and 30000 is 60000 in a DINT; ``q := (w - 1) < w`` on a WORD is refused there too (ST-CODESYS-REGISTER)."""
+    fb = """
+FUNCTION_BLOCK Adder
+VAR i1 : INT := 30000; i2 : INT := 30000; END_VAR
+VAR_OUTPUT d : DINT; END_VAR
+ACTION Add:
+    d := i1 + i2;
+END_ACTION
+END_FUNCTION_BLOCK
+"""
+    text = fb + program("adder : Adder; d : DINT;", "adder.Add(); d := adder.d;")
+    assert _scan(text, "d") == [60000]
+    refused = fb.replace("d := i1 + i2;", "d := i1 + i2;\n    q := (w - 1) < w;").replace(
+        "VAR_OUTPUT d : DINT; END_VAR", "VAR_OUTPUT d : DINT; END_VAR\nVAR w : WORD; q : BOOL; END_VAR"
+    )
+    assert [line.split(":")[0] for line in _diagnostics(refused + program("adder : Adder;", "adder.Add();"))] == [
+        "ST-CODESYS-REGISTER 8"
+    ]
