@@ -227,32 +227,9 @@ export function SimulationBar() {
       },
       { priority: 1 },
     ),
+    ...(prepared ? preparedItems(prepared, online) : []),
+    { key: "scan", node: <ScanFigures scan={scan} timeMs={timeMs} lastScanMs={lastScanMs} /> },
   ];
-  if (prepared)
-    items.push(
-      {
-        key: "prepared",
-        node: (
-          <span className="prepared" role="status" aria-label="Prepared values">
-            {prepared} prepared
-          </span>
-        ),
-        group: true,
-      },
-      textItem("force-prepared", "Force", "Force the prepared values", !online, () => s.applyPrepared("force")),
-      textItem("write-prepared", "Write", "Write the prepared values", !online, () => s.applyPrepared("write")),
-      {
-        key: "clear-prepared",
-        node: (
-          <button type="button" onClick={s.clearPrepared} title="Forget the prepared values">
-            Clear
-          </button>
-        ),
-        entries: [{ id: "clear-prepared", label: "Forget the prepared values", run: s.clearPrepared }],
-        priority: 2,
-      },
-    );
-  items.push({ key: "scan", node: <ScanFigures scan={scan} timeMs={timeMs} lastScanMs={lastScanMs} /> });
   return (
     <div className={`simulation-bar phase-${phase}${running ? " running" : ""}`} role="toolbar" aria-label="Simulation">
       <CompileQuestion />
@@ -271,6 +248,34 @@ export function SimulationBar() {
       ) : null}
     </div>
   );
+}
+
+/** The prepared values: their count always in the row; Force, Write and Clear go into More when they do not fit. */
+function preparedItems(prepared: number, online: boolean): BarItem[] {
+  const s = onlineStore.getState();
+  return [
+    {
+      key: "prepared",
+      node: (
+        <span className="prepared" role="status" aria-label="Prepared values">
+          {prepared} prepared
+        </span>
+      ),
+      group: true,
+    },
+    textItem("force-prepared", "Force", "Force the prepared values", !online, () => s.applyPrepared("force")),
+    textItem("write-prepared", "Write", "Write the prepared values", !online, () => s.applyPrepared("write")),
+    {
+      key: "clear-prepared",
+      node: (
+        <button type="button" onClick={s.clearPrepared} title="Forget the prepared values">
+          Clear
+        </button>
+      ),
+      entries: [{ id: "clear-prepared", label: "Forget the prepared values", run: s.clearPrepared }],
+      priority: 2,
+    },
+  ];
 }
 
 /** A text button for a keyed command on the prepared values; in More it says what it does with its key. */

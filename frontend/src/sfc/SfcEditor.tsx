@@ -256,6 +256,7 @@ export function SfcEditor(props: SfcEditorProps) {
 
   // One row (ui/OverflowBar.tsx): as it narrows, zoom and clipboard go into More first, the chart tools last.
   const toolbarItems: BarItem[] = [
+    // eslint-disable-next-line react-hooks/refs -- toolItem keeps `run` for the click and the More entry, never calls it
     ...toolbar.map(({ label, command, enabled }, i) =>
       toolItem(
         {
@@ -267,6 +268,7 @@ export function SfcEditor(props: SfcEditorProps) {
           run: () => {
             if (command === "copy" || command === "cut") editor.copy(command === "cut");
             else if (command === "paste") editor.paste();
+            // eslint-disable-next-line react-hooks/refs -- runs on a click or a More entry, not during render
             else handlers[command]();
             editor.focus();
           },

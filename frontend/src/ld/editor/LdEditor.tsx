@@ -584,6 +584,7 @@ export function LdEditor({
       { priority: 1 },
     ),
     toolItem(
+      // eslint-disable-next-line react-hooks/refs -- toolItem keeps `fit` for the click and the More entry, never calls it
       {
         id: "zoom-fit",
         icon: COMMAND_ICONS["zoom-fit"]!,
