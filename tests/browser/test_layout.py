@@ -80,7 +80,7 @@ def _open_zoomed(page, server: str):
     open_pou(page, "zoom", "Main")
     contact = page.locator('g.ld-element[data-id="c1"] rect.ld-hit')
     contact.wait_for()
-    zoom = page.get_by_role("group", name="Zoom").get_by_role("button", name="Zoom", exact=True)
+    zoom = page.get_by_role("toolbar", name="LD editing").get_by_role("button", name="Zoom", exact=True)
     return contact, contact.bounding_box()["width"], zoom
 
 

@@ -205,9 +205,9 @@ def test_new_user_draws_an_sfc_program(page, server):
 
     # Zoom with the keys; the toolbar shows the factor.
     editor.press("=")
-    expect(editor.get_by_label("Zoom")).to_have_text("125 %")
+    expect(editor.get_by_label("Zoom", exact=True)).to_have_text("125 %")
     editor.press("0")
-    expect(editor.get_by_label("Zoom")).to_have_text("100 %")
+    expect(editor.get_by_label("Zoom", exact=True)).to_have_text("100 %")
 
     # The jump's target, picked from the steps.
     jump = editor.locator("g.sfc-jump")

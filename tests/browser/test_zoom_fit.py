@@ -158,4 +158,12 @@ def test_sfc_zoom_to_fit_shows_the_whole_chart(page, server):
     editor = page.get_by_role("application", name="Sequential function chart editor")
     chart = editor.locator("svg.sfc-canvas")
     chart.wait_for()
-    _fits(editor, "SFC editing", chart, editor.locator(".sfc-scroll"), editor.get_by_label("Zoom"), "0", "100 %")
+    _fits(
+        editor,
+        "SFC editing",
+        chart,
+        editor.locator(".sfc-scroll"),
+        editor.get_by_label("Zoom", exact=True),
+        "0",
+        "100 %",
+    )

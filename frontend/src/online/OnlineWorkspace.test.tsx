@@ -164,7 +164,7 @@ describe("online LD in the app (issue 7 online mode)", () => {
     // Double-click prepares FALSE for Start (TRUE now), shown as <FALSE>; Ctrl+F7 writes it (CODESYS).
     fireEvent.doubleClick(element(editor, "start"));
     expect(element(editor, "start").querySelector(".ld-prepared")!.textContent).toBe("<FALSE>");
-    expect(screen.getByRole("group", { name: "Prepared values" }).textContent).toContain("1 prepared");
+    expect(screen.getByRole("status", { name: "Prepared values" }).textContent).toContain("1 prepared");
     fireEvent.keyDown(window, { key: "F7", ctrlKey: true });
     expect(socket.sent.at(-1)).toEqual({ type: "write", path: "MAIN.START", value: false });
     expect(element(editor, "start").querySelector(".ld-prepared")).toBeNull();

@@ -14,7 +14,8 @@ import { HistoryBar } from "./HistoryBar";
 import { OpenRecording } from "./OpenRecording";
 import { keysOf, type CommandOf } from "../keys/keymap";
 import { CheckCheck, Cpu, LockOpen, Play, RotateCcw, Square, StepForward, Unplug } from "lucide-react";
-import { ToolButton } from "../ui/ToolButton";
+import { useRef } from "react";
+import { OverflowBar, toolItem, type BarItem } from "../ui/OverflowBar";
 
 /** Saves pending changes; the project's name once it is saved, else null (the save's message is shown). */
 async function savedProject(): Promise<string | null> {
@@ -103,104 +104,142 @@ export function SimulationBar() {
         : phase === "compiling"
           ? "Compiling…"
           : "Connecting…";
+  const recording_ = useRef<HTMLSpanElement>(null);
+  const busy = phase === "compiling" || phase === "connecting";
+  // One row (ui/OverflowBar.tsx): as it narrows, Open recording, Reset and Release all forces go into More first;
+  // the state, the force count and the scan figures always stay.
+  const items: BarItem[] = [
+    toolItem(
+      {
+        id: "check",
+        icon: CheckCheck,
+        label: "Check",
+        keys: keysOf("app", "check"),
+        hint: "the project as it is (nothing is saved)",
+        disabled: checking,
+        run: () => void checkWorkingCopy(),
+      },
+      { priority: 3 },
+    ),
+    toolItem(
+      {
+        id: "compile",
+        icon: Cpu,
+        label: "Compile & simulate",
+        keys: keysOf("app", "go-online"),
+        hint: "saves first when you choose, since the server compiles the saved project",
+        disabled: busy,
+        run: () => void compileSaved(),
+      },
+      { priority: 4 },
+    ),
+    {
+      key: "open-recording",
+      node: (
+        <span ref={recording_} className="open-recording">
+          <OpenRecording />
+        </span>
+      ),
+      // the bar's own button (kept out of sight when it does not fit) opens the file chooser
+      entries: [
+        {
+          id: "open-recording",
+          label: "Open recording…",
+          disabled: busy,
+          run: () => recording_.current?.querySelector("button")?.click(),
+        },
+      ],
+      priority: 0,
+    },
+    toolItem(
+      {
+        id: "run",
+        icon: Play,
+        label: "Run",
+        keys: keysOf("app", "run"),
+        run: s.run,
+        disabled: !online || running || recording,
+      },
+      { group: true, priority: 4 },
+    ),
+    toolItem(
+      {
+        id: "stop",
+        icon: Square,
+        label: "Stop",
+        keys: keysOf("app", "stop"),
+        run: s.stop,
+        disabled: !online || !(running || state === "halted"),
+      },
+      { priority: 4 },
+    ),
+    toolItem(
+      {
+        id: "single-cycle",
+        icon: StepForward,
+        label: "Single cycle",
+        keys: keysOf("app", "single-cycle"),
+        run: s.singleCycle,
+        disabled: !online || recording,
+      },
+      { priority: 4 },
+    ),
+    toolItem(
+      { id: "reset", icon: RotateCcw, label: "Reset", run: () => void s.reset(), disabled: !online || recording },
+      { priority: 1 },
+    ),
+    toolItem(
+      {
+        id: "go-offline",
+        icon: Unplug,
+        label: "Go offline",
+        keys: keysOf("app", "go-offline"),
+        run: () => void s.goOffline(),
+        disabled: phase === "offline",
+      },
+      { priority: 2 },
+    ),
+    {
+      key: "state",
+      node: (
+        <span className="online-state" role="status" aria-label="Online state">
+          <span className="online-dot" aria-hidden="true" />
+          {label}
+        </span>
+      ),
+    },
+    {
+      key: "forces",
+      node: (
+        <span className={`force-count${forces ? " forcing" : ""}`} role="status" aria-label="Active forces">
+          {forces} forced
+        </span>
+      ),
+    },
+    toolItem(
+      {
+        id: "release-forces",
+        icon: LockOpen,
+        label: "Release all forces",
+        keys: keysOf("app", "release-forces"),
+        run: s.unforceAll,
+        disabled: !online || forces === 0,
+      },
+      { priority: 1 },
+    ),
+    ...(prepared ? preparedItems(prepared, online) : []),
+    { key: "scan", node: <ScanFigures scan={scan} timeMs={timeMs} lastScanMs={lastScanMs} /> },
+  ];
   return (
     <div className={`simulation-bar phase-${phase}${running ? " running" : ""}`} role="toolbar" aria-label="Simulation">
       <CompileQuestion />
-      <button
-        type="button"
-        onClick={() => void checkWorkingCopy()}
-        disabled={checking}
-        title={titled("Check the project as it is (nothing is saved)", "check")}
-      >
-        <CheckCheck size={16} aria-hidden="true" /> Check
-      </button>
-      <button
-        type="button"
-        onClick={() => void compileSaved()}
-        disabled={phase === "compiling" || phase === "connecting"}
-        title={titled("Compile & simulate", "go-online")}
-      >
-        <Cpu size={16} aria-hidden="true" /> Compile &amp; simulate
-      </button>
-      <OpenRecording />
-      <ToolButton
-        icon={Play}
-        label="Run"
-        keys={keysOf("app", "run")}
-        onClick={s.run}
-        disabled={!online || running || recording}
+      <OverflowBar
+        role="group"
+        label="Simulation commands"
+        className="simulation-row"
+        moreLabel="More simulation commands"
+        items={items}
       />
-      <ToolButton
-        icon={Square}
-        label="Stop"
-        keys={keysOf("app", "stop")}
-        onClick={s.stop}
-        disabled={!online || !(running || state === "halted")}
-      />
-      <ToolButton
-        icon={StepForward}
-        label="Single cycle"
-        keys={keysOf("app", "single-cycle")}
-        onClick={s.singleCycle}
-        disabled={!online || recording}
-      />
-      <ToolButton icon={RotateCcw} label="Reset" onClick={() => void s.reset()} disabled={!online || recording} />
-      <ToolButton
-        icon={Unplug}
-        label="Go offline"
-        keys={keysOf("app", "go-offline")}
-        onClick={() => void s.goOffline()}
-        disabled={phase === "offline"}
-      />
-      <span className="online-state" role="status" aria-label="Online state">
-        <span className="online-dot" aria-hidden="true" />
-        {label}
-      </span>
-      <span className={`force-count${forces ? " forcing" : ""}`} role="status" aria-label="Active forces">
-        {forces} forced
-      </span>
-      <ToolButton
-        icon={LockOpen}
-        label="Release all forces"
-        keys={keysOf("app", "release-forces")}
-        onClick={s.unforceAll}
-        disabled={!online || forces === 0}
-      />
-      {prepared ? (
-        <span className="prepared" role="group" aria-label="Prepared values">
-          {prepared} prepared
-          <button
-            type="button"
-            onClick={() => s.applyPrepared("force")}
-            disabled={!online}
-            title={titled("Force the prepared values", "force-prepared")}
-          >
-            Force
-          </button>
-          <button
-            type="button"
-            onClick={() => s.applyPrepared("write")}
-            disabled={!online}
-            title={titled("Write the prepared values", "write-prepared")}
-          >
-            Write
-          </button>
-          <button type="button" onClick={s.clearPrepared} title="Forget the prepared values">
-            Clear
-          </button>
-        </span>
-      ) : null}
-      <span className="scan-info" aria-label="Scan statistics">
-        <span>
-          scan <strong data-testid="scan-count">{scan}</strong>
-        </span>
-        <span>
-          t = <strong>{formatClock(timeMs)}</strong>
-        </span>
-        <span>
-          last scan <strong>{lastScanMs === null ? "—" : `${lastScanMs.toFixed(3)} ms`}</strong>
-        </span>
-      </span>
       <HistoryBar />
       {error ? (
         <span className="online-error" role="alert">
@@ -208,5 +247,65 @@ export function SimulationBar() {
         </span>
       ) : null}
     </div>
+  );
+}
+
+/** The prepared values: their count always in the row; Force, Write and Clear go into More when they do not fit. */
+function preparedItems(prepared: number, online: boolean): BarItem[] {
+  const s = onlineStore.getState();
+  return [
+    {
+      key: "prepared",
+      node: (
+        <span className="prepared" role="status" aria-label="Prepared values">
+          {prepared} prepared
+        </span>
+      ),
+      group: true,
+    },
+    textItem("force-prepared", "Force", "Force the prepared values", !online, () => s.applyPrepared("force")),
+    textItem("write-prepared", "Write", "Write the prepared values", !online, () => s.applyPrepared("write")),
+    {
+      key: "clear-prepared",
+      node: (
+        <button type="button" onClick={s.clearPrepared} title="Forget the prepared values">
+          Clear
+        </button>
+      ),
+      entries: [{ id: "clear-prepared", label: "Forget the prepared values", run: s.clearPrepared }],
+      priority: 2,
+    },
+  ];
+}
+
+/** A text button for a keyed command on the prepared values; in More it says what it does with its key. */
+function textItem(
+  command: "force-prepared" | "write-prepared",
+  text: string,
+  label: string,
+  disabled: boolean,
+  run: () => void,
+): BarItem {
+  return {
+    key: command,
+    node: (
+      <button type="button" onClick={run} disabled={disabled} title={titled(label, command)}>
+        {text}
+      </button>
+    ),
+    entries: [{ id: command, label, keys: keysOf("app", command), disabled, run }],
+    priority: 2,
+  };
+}
+
+/** The scan counter, the virtual time and the last scan's duration in one compact line; the tooltip says it in words. */
+function ScanFigures({ scan, timeMs, lastScanMs }: { scan: number; timeMs: number; lastScanMs: number | null }) {
+  const clock = formatClock(timeMs);
+  const last = lastScanMs === null ? "—" : `${lastScanMs.toFixed(3)} ms`;
+  const words = `Scan ${scan}; virtual time t = ${clock}; last scan ${lastScanMs === null ? "not measured yet" : `took ${last}`}`;
+  return (
+    <span className="scan-info" aria-label="Scan statistics" title={words}>
+      scan <strong data-testid="scan-count">{scan}</strong> · <strong>{clock}</strong> · <strong>{last}</strong>
+    </span>
   );
 }

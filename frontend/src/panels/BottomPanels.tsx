@@ -13,6 +13,7 @@ import { panelsStore, usePanels, type PanelId } from "../store/panels";
 import { WatchPanel } from "./WatchPanel";
 import { ViewBoundary } from "../ui/ViewBoundary";
 import { Splitter } from "../ui/Splitter";
+import { OverflowBar } from "../ui/OverflowBar";
 
 // The panels used now and then are loaded when first shown (issue 22 item 8: the initial chunk).
 const TracePanel = lazy(() => import("../trace/TracePanel").then((m) => ({ default: m.TracePanel })));
@@ -78,13 +79,22 @@ export function BottomPanels({ onReveal, pathOfOperand }: BottomPanelsProps) {
   return (
     <section className="bottom-panels" aria-label="Panels" onMouseUp={drop}>
       <PanelResizer />
-      <div className="panel-tabs" role="tablist">
-        {tabs.map((t) => (
-          <button key={t.id} type="button" role="tab" aria-selected={panel === t.id} onClick={() => show(t.id)}>
-            {t.label}
-          </button>
-        ))}
-      </div>
+      <OverflowBar
+        className="panel-tabs"
+        role="tablist"
+        label="Panel tabs"
+        moreLabel="More panels"
+        items={tabs.map((t) => ({
+          key: t.id,
+          node: (
+            <button type="button" role="tab" aria-selected={panel === t.id} onClick={() => show(t.id)}>
+              {t.label}
+            </button>
+          ),
+          // the panel shown keeps its tab in the row
+          entries: panel === t.id ? [] : [{ id: t.id, label: t.label, run: () => show(t.id) }],
+        }))}
+      />
       <div className="panel-body" role="tabpanel">
         <ViewBoundary key={panel} name={`The ${PANEL_NAMES[panel]}`}>
           <Suspense fallback={<p className="panel-empty">Loading…</p>}>{body[panel]}</Suspense>

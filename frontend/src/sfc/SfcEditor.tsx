@@ -48,6 +48,18 @@ import {
 import * as ops from "./ops";
 import { SfcDiagram, type SfcMarks, type SfcOnlineView } from "./SfcDiagram";
 import "./sfc.css";
+import { OverflowBar, helpItem, toolItem, type BarItem } from "../ui/OverflowBar";
+import { COMMAND_ICONS } from "../ui/icons";
+
+/** How long a tool stays in the toolbar as it narrows (the chart tools default to 2): higher stays longer. */
+const TOOL_PRIORITY: Partial<Record<string, number>> = {
+  "insert-step": 3,
+  copy: 0,
+  paste: 0,
+  "zoom-in": 1,
+  "zoom-out": 1,
+  "zoom-fit": 1,
+};
 
 export type SfcPart = { kind: "action" | "transition"; name: string };
 
@@ -242,6 +254,40 @@ export function SfcEditor(props: SfcEditorProps) {
     { label: "Zoom to fit", command: "zoom-fit", enabled: elements.length > 0 },
   ];
 
+  // One row (ui/OverflowBar.tsx): as it narrows, zoom and clipboard go into More first, the chart tools last.
+  const toolbarItems: BarItem[] = [
+    // eslint-disable-next-line react-hooks/refs -- toolItem keeps `run` for the click and the More entry, never calls it
+    ...toolbar.map(({ label, command, enabled }, i) =>
+      toolItem(
+        {
+          id: command,
+          icon: COMMAND_ICONS[command === "parallel" ? "sfc-parallel" : command]!,
+          label,
+          keys: keysOf("sfc", command) || undefined,
+          disabled: !enabled,
+          run: () => {
+            if (command === "copy" || command === "cut") editor.copy(command === "cut");
+            else if (command === "paste") editor.paste();
+            // eslint-disable-next-line react-hooks/refs -- runs on a click or a More entry, not during render
+            else handlers[command]();
+            editor.focus();
+          },
+        },
+        { group: i === 0 || command === "copy" || command === "zoom-in", priority: TOOL_PRIORITY[command] ?? 2 },
+      ),
+    ),
+    {
+      key: "zoom",
+      node: (
+        <span className="sfc-zoom" aria-label="Zoom">
+          {Math.round(zoom * 100)} %
+        </span>
+      ),
+    },
+    ...(props.toolbarExtra ? [{ key: "extra", node: props.toolbarExtra, group: true }] : []),
+    helpItem(help, () => dispatch({ type: "help", open: "toggle" })),
+  ];
+
   return (
     <div
       className={`sfc-editor${readOnly ? " sfc-readonly" : ""}`}
@@ -249,37 +295,7 @@ export function SfcEditor(props: SfcEditorProps) {
       role="application"
       aria-label="Sequential function chart editor"
     >
-      <div className="ld-toolbar sfc-toolbar" role="toolbar" aria-label="SFC editing">
-        {toolbar.map(({ label, command, enabled }) => (
-          <button
-            key={command}
-            type="button"
-            disabled={!enabled}
-            title={keysOf("sfc", command) ? `${label} (${keysOf("sfc", command)})` : label}
-            onMouseDown={(e) => e.preventDefault()}
-            onClick={() => {
-              if (command === "copy" || command === "cut") editor.copy(command === "cut");
-              else if (command === "paste") editor.paste();
-              else handlers[command]();
-              editor.focus();
-            }}
-          >
-            {label}
-          </button>
-        ))}
-        <span className="sfc-zoom" aria-label="Zoom">
-          {Math.round(zoom * 100)} %
-        </span>
-        {props.toolbarExtra}
-        <button
-          type="button"
-          className="ld-help-button"
-          aria-expanded={help}
-          onClick={() => dispatch({ type: "help", open: "toggle" })}
-        >
-          Shortcuts
-        </button>
-      </div>
+      <OverflowBar className="ld-toolbar sfc-toolbar" label="SFC editing" moreLabel="More tools" items={toolbarItems} />
       {readOnly ? (
         <div className="ld-banner" role="status">
           {readOnly} {props.readOnlyActions}

@@ -8,6 +8,8 @@ export interface MenuItem {
   label: string;
   /** Its shortcut, shown like a command's. */
   keys?: string;
+  /** Shown but not runnable now (a toolbar command moved into a More menu keeps its state). */
+  disabled?: boolean;
   run(): void;
 }
 
@@ -25,7 +27,7 @@ export function MenuList({
 }) {
   const menu = useRef<HTMLUListElement>(null);
   useEffect(() => {
-    menu.current?.querySelector<HTMLButtonElement>("button")?.focus();
+    menu.current?.querySelector<HTMLButtonElement>("button:not(:disabled)")?.focus();
     const close = (e: MouseEvent) => {
       if (!menu.current?.contains(e.target as Node)) onClose();
     };
@@ -45,7 +47,7 @@ export function MenuList({
       onKeyDown={(e) => {
         e.stopPropagation();
         if (e.key === "Escape") onClose();
-        const items = [...(menu.current?.querySelectorAll<HTMLButtonElement>("button") ?? [])];
+        const items = [...(menu.current?.querySelectorAll<HTMLButtonElement>("button:not(:disabled)") ?? [])];
         const at = items.indexOf(document.activeElement as HTMLButtonElement);
         if (e.key === "ArrowDown") items[(at + 1) % items.length]?.focus();
         if (e.key === "ArrowUp") items[(at - 1 + items.length) % items.length]?.focus();
@@ -56,7 +58,7 @@ export function MenuList({
           <ul role="none">
             {group.map((item) => (
               <li key={item.id} role="none">
-                <button type="button" role="menuitem" onClick={() => run(item)}>
+                <button type="button" role="menuitem" disabled={item.disabled} onClick={() => run(item)}>
                   <span>{item.label}</span>
                   {item.keys ? <kbd>{item.keys}</kbd> : null}
                 </button>

@@ -1,6 +1,6 @@
 // One icon button of a compact toolbar (issue 22 item 7): the icon alone, its name as the accessible
 // name and tooltip, with the shortcut in the tooltip.
-import type { ButtonHTMLAttributes } from "react";
+import type { ButtonHTMLAttributes, Ref } from "react";
 import type { Icon } from "./icons";
 
 export interface ToolButtonProps extends Omit<ButtonHTMLAttributes<HTMLButtonElement>, "children" | "title"> {
@@ -11,6 +11,7 @@ export interface ToolButtonProps extends Omit<ButtonHTMLAttributes<HTMLButtonEle
   keys?: string;
   /** What the tool does in more words, after its name in the tooltip. */
   hint?: string;
+  ref?: Ref<HTMLButtonElement>;
 }
 
 /** The tooltip of a tool: its name, and its shortcut when it has one. */

@@ -3,6 +3,10 @@
 // currentColor), since no icon library has them.
 import {
   ArrowDown,
+  Columns2,
+  GitFork,
+  Link,
+  SquarePlus,
   ArrowUp,
   ClipboardPaste,
   Copy,
@@ -146,4 +150,8 @@ export const COMMAND_ICONS: Readonly<Record<string, Icon>> = {
   "zoom-out": ZoomOut,
   "zoom-fit": Maximize,
   shortcuts: Keyboard,
+  "insert-step": SquarePlus,
+  alternative: GitFork,
+  "sfc-parallel": Columns2,
+  associate: Link,
 };

@@ -75,6 +75,8 @@ export function useEditorRoot<S extends KeyScope>(options: EditorRootOptions<S>)
 
   const onKeyDown = (event: KeyboardEvent<HTMLElement>) => {
     if (options.busy || (event.target as HTMLElement).closest(FIELDS)) return;
+    // Enter and Space on a focused button (a toolbar's, its More) press that button, not the editor's command
+    if ((event.key === "Enter" || event.key === " ") && (event.target as HTMLElement).closest("button")) return;
     runKey(options.scope, event, options.handlers(event));
   };
 

@@ -11,7 +11,7 @@ import "../../ld/ld.css";
 import { useNodeLayout } from "./useNodeLayout";
 import "./fbd.css";
 import { COMMAND_ICONS } from "../../ui/icons";
-import { ToolButton } from "../../ui/ToolButton";
+import { OverflowBar, helpItem, toolItem, type BarItem, type Tool } from "../../ui/OverflowBar";
 import type { Connection } from "@xyflow/react";
 import { useCallback, useEffect, useMemo, useReducer, useRef, type MouseEvent, type ReactNode } from "react";
 import type { Diagnostic, FbdOrder, LibraryEntry, SymbolInfo } from "../../generated/api";
@@ -594,17 +594,135 @@ export function FbdEditor({
   const single = singleNode(state);
   const selectedBlock = single ? findNode(body, single)?.node : undefined;
   const netIndex = selectedNetworkIndex(state, body);
-  const tool = (id: string, label: string, run: () => void, enabled = !locked, keys?: string, hint?: string) => (
-    <ToolButton
-      icon={COMMAND_ICONS[id]!}
-      label={label}
-      keys={keys}
-      hint={hint}
-      disabled={!enabled}
-      onMouseDown={(e) => e.preventDefault()}
-      onClick={run}
-    />
-  );
+  const tool = (id: string, label: string, run: () => void, enabled = !locked, keys?: string, hint?: string): Tool => ({
+    id,
+    icon: COMMAND_ICONS[id]!,
+    label,
+    run,
+    disabled: !enabled,
+    keys,
+    hint,
+  });
+
+  // The toolbar, one row: as it narrows, the network and clipboard tools go into More first, the palette last.
+  const grouped = (tools: (Tool | null)[], priority: number): BarItem[] =>
+    tools.filter((t): t is Tool => t !== null).map((t, i) => toolItem(t, { group: i === 0, priority }));
+  const toolbarItems: BarItem[] = [
+    ...PALETTE.filter(({ kind }) => chart || kind !== "label").map(({ kind, label }, i): BarItem => ({
+      key: `palette-${kind}`,
+      node: (
+        <button
+          type="button"
+          className="tool-button"
+          aria-label={label}
+          draggable={!locked}
+          disabled={locked}
+          title={`Add ${label.replace("…", "")} (or drag it onto a network)`}
+          onDragStart={(e) => {
+            e.dataTransfer.setData(DRAG_FORMAT, kind);
+            e.dataTransfer.effectAllowed = "copy";
+          }}
+          onClick={() => paletteAdd(kind, targetNetwork(), null)}
+        >
+          <PaletteIcon kind={kind} />
+        </button>
+      ),
+      entries: [
+        {
+          id: `palette-${kind}`,
+          label: `Add ${label}`,
+          disabled: locked,
+          run: () => paletteAdd(kind, targetNetwork(), null),
+        },
+      ],
+      group: i === 0,
+      priority: 3,
+    })),
+    ...grouped(
+      [
+        tool(
+          "add-input",
+          "Add input",
+          () => selectedBlock && addInput(selectedBlock.id),
+          !locked &&
+            !!selectedBlock &&
+            kindOf(selectedBlock) === "block" &&
+            !!nextInput(
+              selectedBlock as Block,
+              lookup((selectedBlock as Block).call),
+              wiresOf(findNode(body, selectedBlock.id)!.network),
+            ),
+        ),
+        tool("run-earlier", "Run earlier", () => reorder(-1), !locked && !!selectedBlock, keyed("run-earlier")),
+        tool("run-later", "Run later", () => reorder(1), !locked && !!selectedBlock, keyed("run-later")),
+        chart
+          ? tool(
+              "order-by-flow",
+              "Order by data flow",
+              orderChartByDataFlow,
+              !locked && networks.length > 0,
+              undefined,
+              "Number every element after the elements feeding it (the current numbers break ties)",
+            )
+          : null,
+        tool("arrange", "Auto-arrange", autoArrange, !locked && networks.length > 0),
+        tool(
+          "zoom-fit",
+          "Zoom to fit",
+          () => dispatch({ type: "fit" }),
+          networks.length > 0,
+          keyed("zoom-fit"),
+          "Zoom every network so all its nodes show",
+        ),
+        tool("delete", "Delete", deleteSelection, !locked && (!!selection || !!networkSelected), keyed("delete")),
+      ],
+      2,
+    ),
+    ...(chart
+      ? []
+      : grouped(
+          [
+            tool("network-add", "Add network", () =>
+              apply(ops.addNetwork(body, netIndex < 0 ? networks.length : netIndex + 1)),
+            ),
+            tool(
+              "network-up",
+              "Network up",
+              () => apply(ops.moveNetwork(body, networks[netIndex]!.id, -1)),
+              !locked && netIndex > 0,
+            ),
+            tool(
+              "network-down",
+              "Network down",
+              () => apply(ops.moveNetwork(body, networks[netIndex]!.id, 1)),
+              !locked && netIndex >= 0 && netIndex < networks.length - 1,
+            ),
+            tool(
+              "network-label",
+              "Label",
+              () => setNetworkText({ network: networks[netIndex]!.id, field: "label" }),
+              !locked && netIndex >= 0,
+            ),
+            tool(
+              "network-comment",
+              "Comment",
+              () => setNetworkText({ network: networks[netIndex]!.id, field: "comment" }),
+              !locked && netIndex >= 0,
+            ),
+          ],
+          0,
+        )),
+    ...grouped(
+      [
+        tool("copy", "Copy", () => editor.copy(false), selectedNodes.length > 0, keyed("copy")),
+        tool("paste", "Paste", editor.paste, !locked, keyed("paste")),
+        tool("undo", "Undo", () => onHistoryChange(undo(history)), !locked && canUndo(history), keyed("undo")),
+        tool("redo", "Redo", () => onHistoryChange(redo(history)), !locked && canRedo(history), keyed("redo")),
+      ],
+      1,
+    ),
+    helpItem(help, () => dispatch({ type: "help", open: "toggle" })),
+  ];
 
   return (
     <FbdEditorContext.Provider value={api}>
@@ -614,109 +732,12 @@ export function FbdEditor({
         role="application"
         aria-label={chart ? "Continuous function chart editor" : "Function block diagram editor"}
       >
-        <div className="ld-toolbar fbd-toolbar" role="toolbar" aria-label="FBD editing">
-          <div className="ld-toolbar-group fbd-palette" aria-label="Add (click, or drag onto a network)">
-            {PALETTE.filter(({ kind }) => chart || kind !== "label").map(({ kind, label }) => (
-              <button
-                key={kind}
-                type="button"
-                className="tool-button"
-                aria-label={label}
-                draggable={!locked}
-                disabled={locked}
-                title={`Add ${label.replace("…", "")} (or drag it onto a network)`}
-                onDragStart={(e) => {
-                  e.dataTransfer.setData(DRAG_FORMAT, kind);
-                  e.dataTransfer.effectAllowed = "copy";
-                }}
-                onClick={() => paletteAdd(kind, targetNetwork(), null)}
-              >
-                <PaletteIcon kind={kind} />
-              </button>
-            ))}
-          </div>
-          <div className="ld-toolbar-group">
-            {tool(
-              "add-input",
-              "Add input",
-              () => selectedBlock && addInput(selectedBlock.id),
-              !locked &&
-                !!selectedBlock &&
-                kindOf(selectedBlock) === "block" &&
-                !!nextInput(
-                  selectedBlock as Block,
-                  lookup((selectedBlock as Block).call),
-                  wiresOf(findNode(body, selectedBlock.id)!.network),
-                ),
-            )}
-            {tool("run-earlier", "Run earlier", () => reorder(-1), !locked && !!selectedBlock, keyed("run-earlier"))}
-            {tool("run-later", "Run later", () => reorder(1), !locked && !!selectedBlock, keyed("run-later"))}
-            {chart
-              ? tool(
-                  "order-by-flow",
-                  "Order by data flow",
-                  orderChartByDataFlow,
-                  !locked && networks.length > 0,
-                  undefined,
-                  "Number every element after the elements feeding it (the current numbers break ties)",
-                )
-              : null}
-            {tool("arrange", "Auto-arrange", autoArrange, !locked && networks.length > 0)}
-            {tool(
-              "zoom-fit",
-              "Zoom to fit",
-              () => dispatch({ type: "fit" }),
-              networks.length > 0,
-              keyed("zoom-fit"),
-              "Zoom every network so all its nodes show",
-            )}
-            {tool("delete", "Delete", deleteSelection, !locked && (!!selection || !!networkSelected), keyed("delete"))}
-          </div>
-          {chart ? null : (
-            <div className="ld-toolbar-group">
-              {tool("network-add", "Add network", () =>
-                apply(ops.addNetwork(body, netIndex < 0 ? networks.length : netIndex + 1)),
-              )}
-              {tool(
-                "network-up",
-                "Network up",
-                () => apply(ops.moveNetwork(body, networks[netIndex]!.id, -1)),
-                !locked && netIndex > 0,
-              )}
-              {tool(
-                "network-down",
-                "Network down",
-                () => apply(ops.moveNetwork(body, networks[netIndex]!.id, 1)),
-                !locked && netIndex >= 0 && netIndex < networks.length - 1,
-              )}
-              {tool(
-                "network-label",
-                "Label",
-                () => setNetworkText({ network: networks[netIndex]!.id, field: "label" }),
-                !locked && netIndex >= 0,
-              )}
-              {tool(
-                "network-comment",
-                "Comment",
-                () => setNetworkText({ network: networks[netIndex]!.id, field: "comment" }),
-                !locked && netIndex >= 0,
-              )}
-            </div>
-          )}
-          <div className="ld-toolbar-group">
-            {tool("copy", "Copy", () => editor.copy(false), selectedNodes.length > 0, keyed("copy"))}
-            {tool("paste", "Paste", editor.paste, !locked, keyed("paste"))}
-            {tool("undo", "Undo", () => onHistoryChange(undo(history)), !locked && canUndo(history), keyed("undo"))}
-            {tool("redo", "Redo", () => onHistoryChange(redo(history)), !locked && canRedo(history), keyed("redo"))}
-          </div>
-          <ToolButton
-            icon={COMMAND_ICONS.shortcuts!}
-            label="Shortcuts"
-            className="ld-help-button"
-            aria-expanded={help}
-            onClick={() => dispatch({ type: "help", open: "toggle" })}
-          />
-        </div>
+        <OverflowBar
+          className="ld-toolbar fbd-toolbar"
+          label="FBD editing"
+          moreLabel="More tools"
+          items={toolbarItems}
+        />
         {help ? <ShortcutHelp scopes={["fbd", "app"]} onClose={() => dispatch({ type: "help", open: false })} /> : null}
         <EditorNotices
           readOnly={readOnly}

@@ -62,9 +62,9 @@ import { referencesItem } from "../../xref/store";
 import { keysOf } from "../../keys/keymap";
 import { ShortcutHelp } from "../../keys/ShortcutHelp";
 import "../ld.css";
-import { Keyboard, ZoomIn, ZoomOut } from "lucide-react";
+import { ZoomIn, ZoomOut } from "lucide-react";
 import { COMMAND_ICONS } from "../../ui/icons";
-import { ToolButton } from "../../ui/ToolButton";
+import { OverflowBar, helpItem, toolItem, type BarItem } from "../../ui/OverflowBar";
 
 export interface LdEditorProps {
   history: History<LdBody>;
@@ -106,6 +106,16 @@ const TOOLBAR: { group: CommandGroup; ids: string[] }[] = [
   { group: "clipboard", ids: ["copy", "cut", "paste"] },
   { group: "history", ids: ["undo", "redo"] },
 ];
+
+/** How long each group stays in the toolbar as it narrows (ui/OverflowBar.tsx): higher stays longer. */
+const TOOL_PRIORITY: Record<CommandGroup, number> = {
+  insert: 3,
+  edit: 2,
+  mode: 2,
+  history: 2,
+  network: 0,
+  clipboard: 0,
+};
 
 /** The keys of the LD scope that are not editing commands (COMMANDS): selection, breakpoints, zoom. */
 export const LD_EDITOR_KEYS = [
@@ -530,6 +540,63 @@ export function LdEditor({
     )
   ) : null;
 
+  // The toolbar, one row: as it narrows, the clipboard and network tools go into More first, the insert tools last.
+  const toolbarItems: BarItem[] = [
+    ...TOOLBAR.flatMap(({ group, ids }) =>
+      ids.map((id, i) => {
+        const command = COMMANDS.find((c) => c.id === id)!;
+        return toolItem(
+          {
+            id,
+            icon: COMMAND_ICONS[id]!,
+            label: command.label,
+            keys: commandKeys(command) || undefined,
+            disabled: !available(command, ctx),
+            run: () => command.run(ctx),
+          },
+          { group: i === 0, priority: TOOL_PRIORITY[group] },
+        );
+      }),
+    ),
+    toolItem(
+      { id: "zoom-out", icon: ZoomOut, label: "Zoom out", keys: "Ctrl+- or Ctrl+wheel", run: () => setZoom("out") },
+      { group: true, priority: 1 },
+    ),
+    {
+      key: "zoom",
+      node: (
+        <button type="button" title="Actual size (Ctrl+0)" aria-label="Zoom" onClick={() => setZoom("reset")}>
+          {Math.round(zoom * 100)}%
+        </button>
+      ),
+      entries: [
+        {
+          id: "zoom",
+          label: `Actual size (now ${Math.round(zoom * 100)}%)`,
+          keys: "Ctrl+0",
+          run: () => setZoom("reset"),
+        },
+      ],
+      priority: 1,
+    },
+    toolItem(
+      { id: "zoom-in", icon: ZoomIn, label: "Zoom in", keys: "Ctrl++ or Ctrl+wheel", run: () => setZoom("in") },
+      { priority: 1 },
+    ),
+    toolItem(
+      // eslint-disable-next-line react-hooks/refs -- toolItem keeps `fit` for the click and the More entry, never calls it
+      {
+        id: "zoom-fit",
+        icon: COMMAND_ICONS["zoom-fit"]!,
+        label: "Zoom to fit",
+        keys: keysOf("ld", "zoom-fit"),
+        run: fit,
+      },
+      { priority: 1 },
+    ),
+    helpItem(help, () => dispatch({ type: "help", open: "toggle" })),
+  ];
+
   return (
     <div
       className={`ld-editor${readOnly ? " ld-readonly" : ""}`}
@@ -540,47 +607,7 @@ export function LdEditor({
         if (e.target === e.currentTarget || (e.target as HTMLElement).classList.contains("ld-canvas")) select(null);
       }}
     >
-      <div className="ld-toolbar" role="toolbar" aria-label="LD editing">
-        {TOOLBAR.map(({ group, ids }) => (
-          <div key={group} className="ld-toolbar-group">
-            {ids.map((id) => {
-              const command = COMMANDS.find((c) => c.id === id)!;
-              return (
-                <ToolButton
-                  key={id}
-                  icon={COMMAND_ICONS[id]!}
-                  label={command.label}
-                  keys={commandKeys(command) || undefined}
-                  disabled={!available(command, ctx)}
-                  onMouseDown={(e) => e.preventDefault()}
-                  onClick={() => command.run(ctx)}
-                />
-              );
-            })}
-          </div>
-        ))}
-        <div className="ld-toolbar-group" role="group" aria-label="Zoom">
-          <ToolButton icon={ZoomOut} label="Zoom out" keys="Ctrl+- or Ctrl+wheel" onClick={() => setZoom("out")} />
-          <button type="button" title="Actual size (Ctrl+0)" aria-label="Zoom" onClick={() => setZoom("reset")}>
-            {Math.round(zoom * 100)}%
-          </button>
-          <ToolButton icon={ZoomIn} label="Zoom in" keys="Ctrl++ or Ctrl+wheel" onClick={() => setZoom("in")} />
-          <ToolButton
-            icon={COMMAND_ICONS["zoom-fit"]!}
-            label="Zoom to fit"
-            keys={keysOf("ld", "zoom-fit")}
-            onMouseDown={(e) => e.preventDefault()}
-            onClick={fit}
-          />
-        </div>
-        <ToolButton
-          icon={Keyboard}
-          label="Shortcuts"
-          className="ld-help-button"
-          aria-expanded={help}
-          onClick={() => dispatch({ type: "help", open: "toggle" })}
-        />
-      </div>
+      <OverflowBar className="ld-toolbar" label="LD editing" moreLabel="More tools" items={toolbarItems} />
       {help ? <ShortcutHelp scopes={["ld", "app"]} onClose={() => dispatch({ type: "help", open: false })} /> : null}
       <EditorNotices
         readOnly={readOnly}
