@@ -30,15 +30,16 @@ PROJECT = {
 
 
 #: Issue 22 item 8: the entry chunk (app shell, LD editor, panels) at most 450 kB minified; 420.9 kB on 2026-11-28
-#: once the tree's dialogs load on first use (445 kB before): the bound keeps a small margin above that.
-ENTRY_CHUNK_LIMIT = 425_000
+#: once the tree's dialogs load on first use (445 kB before); 426.4 kB with the toolbars' measured "More" menu
+#: (ui/OverflowBar.tsx, ui24): the bound keeps a small margin above that.
+ENTRY_CHUNK_LIMIT = 430_000
 #: Everything the browser runs before the first POU opens: the entry chunk and the chunks it imports (472 kB on
 #: 2026-11-27 with the declare dialog, breakpoints that follow edits and the task menu; 486 kB after the fifth
 #: session's tree menus for types and tasks, history stepping and opened recordings, pointer rows online; 475.1 kB
 #: on 2026-11-28 with the tree's dialogs (tree/dialogs.tsx: rename, delete, duplicate, kind, FBD <-> CFC with its
 #: conversion) loaded when a menu entry is first chosen; the issue's target is the entry chunk's 450 kB, this bound
-#: catches what moves out of it into chunks loaded at once anyway).
-OPENING_SCRIPTS_LIMIT = 480_000
+#: catches what moves out of it into chunks loaded at once anyway; 480.7 kB with the "More" menu).
+OPENING_SCRIPTS_LIMIT = 485_000
 
 
 def test_st_and_fbd_editors_load_on_first_use(page, server: str) -> None:
