@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import hashlib
 import itertools
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cached_property
 from types import CodeType
 
@@ -76,6 +76,15 @@ class CompiledProgram:
         no scan can overrun it, and the engine does not read the CPU clock to arm it."""
         return any(_calls_watchdog(code) for code in self.pieces)
 
+    def own_code(self) -> CompiledProgram:
+        """This program with code objects of its own, for a simulation that runs in turns with another of it.
+
+        CPython specialises a code object's bytecode for the classes and globals it meets (the inline caches of
+        3.11), and each simulation has classes of its own (``namespace``): two simulations running the same code
+        objects in turns undo each other's specialisation. A scan history's replay did that to the live scan,
+        which ran several times slower for a while after each seek."""
+        return replace(self, pieces=tuple(_own_code(code) for code in self.pieces))
+
     def namespace(self) -> dict[str, object]:
         """Execute the module in fresh globals: classes, functions and (uninitialised) globals objects."""
         ns = namespace()
@@ -90,6 +99,11 @@ class CompiledProgram:
         ns["ll_halt"] = [False] * len(self.generated.pauses)
         for code in self.pieces[self.generated.code_from :]:
             exec(code, ns)
+
+
+def _own_code(code: CodeType) -> CodeType:
+    """A copy of ``code`` and of the code objects it holds (a module's functions), not yet specialised."""
+    return code.replace(co_consts=tuple(_own_code(c) if isinstance(c, CodeType) else c for c in code.co_consts))
 
 
 def _calls_watchdog(code: CodeType) -> bool:

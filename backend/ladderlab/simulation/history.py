@@ -353,7 +353,7 @@ class History:
 
     def _replay_sim(self) -> Simulation:
         if self._replay is None:
-            program = self.live.variant_program("monitor") or self.live.compiled
+            program = (self.live.variant_program("monitor") or self.live.compiled).own_code()  # see own_code
             self._replay = Simulation(program, watchdog_s=self.live.watchdogs)  # the live scans' budgets, not 0.1 s
         return self._replay
 
