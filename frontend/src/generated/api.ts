@@ -741,7 +741,8 @@ export interface paths {
      * Reset
      * @description Stop and restart warm (RETAIN variables keep their values) or cold; clears faults; forces stay.
      *
-     *     A simulation whose process was ended (it stopped answering or crashed) starts again in a new one.
+     *     A simulation whose process was ended (it stopped answering or crashed) starts again in a new one; one opened from
+     *     a recording opens it again there (history only). A recording shown history only is not reset (409).
      */
     post: operations["reset_api_simulations__sim_id__reset_post"];
     delete?: never;
