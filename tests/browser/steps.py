@@ -89,8 +89,10 @@ def panel_tab(page, name: str):
     """Shows the bottom panel whose tab starts with ``name`` ("Watch list", "Online log") and returns the panels."""
     panels = page.get_by_role("region", name="Panels")
     tab = panels.get_by_role("tab", name=re.compile(f"^{re.escape(name)}"))
+    more = panels.get_by_role("button", name="More panels")
+    tab.or_(more).first.wait_for()  # the row is measured after the page renders: wait for either, not a guess
     if tab.count() == 0:  # a narrow window: the tabs that do not fit are in the row's More menu
-        panels.get_by_role("button", name="More panels").click()
+        more.click()
         page.get_by_role("menuitem", name=re.compile(f"^{re.escape(name)}")).click()
     else:
         tab.click()
