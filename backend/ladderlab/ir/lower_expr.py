@@ -476,7 +476,7 @@ def _reference_operation(node: ast.Binary, op: str, ctx: PouContext) -> Expr:
     """``r1 = r2``, ``r <> NULL``: whether two references refer to one variable. ``p + n`` / ``p - n`` (bytes,
     CODESYS): the pointer moved along the array it points into (the engine checks it stays there). ``p < q`` ...
     order two pointers into one variable by the byte they point to (the engine faults on different variables)."""
-    if op in ("ADD", "SUB") and isinstance(node.left.ty, t.PointerType) and t.in_family(node.right.ty, "ANY_INT"):
+    if op in ("ADD", "SUB") and isinstance(node.left.ty, t.PointerType) and t.moves_a_pointer(node.right.ty):
         pointer = lower_expr(node.left, ctx)
         offset = lower_expr(node.right, ctx, Elementary("DINT"))
         return Binary(op, pointer, offset, pointer.type)  # type: ignore[arg-type]  # a Reference is a value type here

@@ -370,8 +370,8 @@ class BodyChecker:
             return left  # ST-21: TIME * ANY_NUM, TIME / ANY_NUM (the number keeps its own type); LTIME alike
         if op == "*" and t.category(right) == "time" and t.in_family(left, "ANY_NUM"):
             return right
-        if op in ("+", "-") and isinstance(left, t.PointerType) and t.in_family(right, "ANY_INT"):
-            return left  # pointer arithmetic in bytes (TYP-43)
+        if op in ("+", "-") and isinstance(left, t.PointerType) and t.moves_a_pointer(right):
+            return left  # pointer arithmetic in bytes (TYP-43; CODESYS: also by a bit string)
         if op in ("=", "<>") and reference_comparison(left, right):
             return t.BOOL
         if op == "+" and isinstance(left, t.StringType) and isinstance(right, t.StringType):
