@@ -362,6 +362,9 @@ def _date_and_time() -> list[StdFunction]:
         )
         for name, a, b, result, text in table
     ]
+    rows.append(  # CODESYS: T_PLC_MS of OSCAT reads it
+        _fn("TIME", [], "TIME", "date and time", "CODESYS: the time since the PLC started (the virtual clock)", "CODESYS")
+    )
     rows += [
         _fn(
             "MULTIME",
