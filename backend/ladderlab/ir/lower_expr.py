@@ -591,6 +591,8 @@ def _sizeof(node: ast.Call, ctx: PouContext, target: IrType) -> Const:
         ty = ctx.types.type_of(
             named if named is not None else typedef.type if typedef else None, ast.NamedType(argument.name)
         )
+    elif isinstance(argument.ty, t.InterfaceType):
+        raise LoweringError("SIZEOF of an interface variable is refused: LadderLab does not lay out what it holds")
     else:
         ty = lower_expr(argument, ctx).type
     return Const(engine_value(byte_size(ty), target), target)
