@@ -481,6 +481,11 @@ FUNCTIONS: dict[str, StdFunction] = {
 FUNCTION_BLOCKS: dict[str, StdFunctionBlock] = {fb.name: fb for fb in _function_blocks()}
 
 
+#: Vendor system functions (not IEC's) a project may define itself: its own POU of that name is called instead
+#: (IronPLC's ``allow_time_as_function_name``: a user ``FUNCTION TIME``).
+REDEFINABLE = frozenset({"TIME"})
+
+
 def function(name: str) -> StdFunction | None:
     return FUNCTIONS.get(name.upper())
 

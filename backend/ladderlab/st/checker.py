@@ -164,7 +164,7 @@ class ProjectChecker:
             if upper in self.result.pous:
                 where("ST-DUPLICATE", f"there is already a POU called '{pou.name}'", None)
                 continue
-            if stdlib.function(upper) or stdlib.function_block(upper):
+            if (stdlib.function(upper) or stdlib.function_block(upper)) and upper not in stdlib.REDEFINABLE:
                 where(
                     "ST-DUPLICATE",
                     f"'{pou.name}' is a standard function or function block name and cannot be redefined",
