@@ -206,3 +206,29 @@ def test_part_of_an_element_sees_the_bytes_of_two_neighbours_little_endian():
     )
     sim.cycle(1)
     assert (sim.read("Main.y"), sim.read("Main.a")) == (30738, [-13004, 22187])
+
+
+@settings(max_examples=20, deadline=None)  # (each example builds a project)
+@given(st.lists(st.integers(-3, 3), min_size=1, max_size=6))
+def test_any_byte_walk_of_an_int_pointer_reads_two_little_endian_bytes_or_faults(steps):
+    """Property: a POINTER TO INT walked byte by byte over ARRAY [0..2] OF INT [1, 2, 3] (CODESYS: any byte offset;
+    the bytes are 01 00 02 00 03 00) reads bytes k and k + 1 little-endian (b[k] + 256 * b[k + 1]) while both lie
+    inside the 6 bytes; a move outside 0..6 (6: one past the end) faults there, a read from byte 5 or 6 at the read."""
+    moves = "".join(f"p := p + {step};\n" for step in steps)
+    sim = simulation(
+        "a : ARRAY [0..2] OF INT := [1, 2, 3]; p : POINTER TO INT; w : INT := -1;",
+        "p := ADR(a[0]);\n" + moves + "w := p^;",
+    )
+    sim.cycle(1)
+    position = 0
+    for step in steps:
+        position += step
+        if not 0 <= position <= 6:
+            assert sim.fault is not None and sim.fault.code == "index_out_of_range"
+            return
+    data = [1, 0, 2, 0, 3, 0]
+    if position > 4:
+        assert sim.fault is not None and sim.fault.code == "index_out_of_range"
+        assert sim.read("Main.w") == -1
+    else:
+        assert sim.fault is None and sim.read("Main.w") == data[position] + 256 * data[position + 1]
