@@ -10,9 +10,7 @@ from __future__ import annotations
 
 from .test_references import build
 
-PLC_MS = (
-    "FUNCTION PLC_MS : DWORD\nVAR tx : TIME; END_VAR\ntx := TIME();\nPLC_MS := TIME_TO_DWORD(tx);\nEND_FUNCTION\n"
-)
+PLC_MS = "FUNCTION PLC_MS : DWORD\nVAR tx : TIME; END_VAR\ntx := TIME();\nPLC_MS := TIME_TO_DWORD(tx);\nEND_FUNCTION\n"
 
 
 def _simulation(body: str, declarations: str):
@@ -51,8 +49,10 @@ def test_past_two_to_the_31_milliseconds_the_dword_keeps_counting_and_wraps_at_2
 def test_a_project_may_define_its_own_time_function_and_calls_that():
     """TIME() is CODESYS's, not IEC's: a project's own FUNCTION TIME is no redefinition of a standard function and
     is what ``TIME()`` calls there (IronPLC end_to_end_time_function, allow_time_as_function_name)."""
-    result = build("FUNCTION TIME : TIME\nTIME := T#5s;\nEND_FUNCTION\nPROGRAM Main\nVAR t : TIME; END_VAR\n"
-                   "t := TIME();\nEND_PROGRAM\n")
+    result = build(
+        "FUNCTION TIME : TIME\nTIME := T#5s;\nEND_FUNCTION\nPROGRAM Main\nVAR t : TIME; END_VAR\n"
+        "t := TIME();\nEND_PROGRAM\n"
+    )
     assert [d.format() for d in result.diagnostics] == []
     sim = result.simulation()
     sim.cycle(3)

@@ -362,9 +362,8 @@ def _date_and_time() -> list[StdFunction]:
         )
         for name, a, b, result, text in table
     ]
-    rows.append(  # CODESYS: T_PLC_MS of OSCAT reads it
-        _fn("TIME", [], "TIME", "date and time", "CODESYS: the time since the PLC started (the virtual clock)", "CODESYS")
-    )
+    clock = "CODESYS: the time since the PLC started (the virtual clock)"
+    rows.append(_fn("TIME", [], "TIME", "date and time", clock, "CODESYS"))  # OSCAT's T_PLC_MS reads it
     rows += [
         _fn(
             "MULTIME",
