@@ -96,19 +96,29 @@ def test_leaving_the_object_is_a_located_fault(declarations, body, message, line
 def test_any_walk_stays_inside_or_faults_where_it_leaves(steps):
     """Property: a walk of whole elements over ARRAY [0..4] OF INT either ends on the element a model of it says,
     or faults at the first step leaving 0..5 (5: one past the end, allowed)."""
-    moves = "".join(f"p := p + {2 * step};\n" for step in steps)
-    sim = simulation(
+    sim, position = _walk(
         "a : ARRAY [0..4] OF INT := [0, 1, 2, 3, 4]; p : POINTER TO INT; seen : INT := -1;",
-        "p := ADR(a[0]);\n" + moves + "IF p <> ADR(a[0]) + 10 THEN seen := p^; END_IF;",
+        [2 * step for step in steps],
+        "IF p <> ADR(a[0]) + 10 THEN seen := p^; END_IF;",
+        10,
     )
+    if position is not None:
+        assert sim.fault is None and sim.read("Main.seen") == (position // 2 if position < 10 else -1)
+
+
+def _walk(declarations: str, moves: list[int], then: str, end: int):
+    """A program moving ``p := ADR(a[0])`` by each of ``moves`` bytes, then running ``then``, scanned once; and the
+    byte the pointer ends on, or None after checking that the run faulted where a move left 0..end (one past the
+    end of the array: allowed)."""
+    sim = simulation(declarations, "p := ADR(a[0]);\n" + "".join(f"p := p + {m};\n" for m in moves) + then)
     sim.cycle(1)
     position = 0
-    for step in steps:
-        position += step
-        if not 0 <= position <= 5:
+    for move in moves:
+        position += move
+        if not 0 <= position <= end:
             assert sim.fault is not None and sim.fault.code == "index_out_of_range"
-            return
-    assert sim.fault is None and sim.read("Main.seen") == (position if position < 5 else -1)
+            return sim, None
+    return sim, position
 
 
 def test_a_state_with_a_moved_pointer_pickles_and_restores():
@@ -214,19 +224,12 @@ def test_any_byte_walk_of_an_int_pointer_reads_two_little_endian_bytes_or_faults
     """Property: a POINTER TO INT walked byte by byte over ARRAY [0..2] OF INT [1, 2, 3] (CODESYS: any byte offset;
     the bytes are 01 00 02 00 03 00) reads bytes k and k + 1 little-endian (b[k] + 256 * b[k + 1]) while both lie
     inside the 6 bytes; a move outside 0..6 (6: one past the end) faults there, a read from byte 5 or 6 at the read."""
-    moves = "".join(f"p := p + {step};\n" for step in steps)
-    sim = simulation(
-        "a : ARRAY [0..2] OF INT := [1, 2, 3]; p : POINTER TO INT; w : INT := -1;",
-        "p := ADR(a[0]);\n" + moves + "w := p^;",
+    sim, position = _walk(
+        "a : ARRAY [0..2] OF INT := [1, 2, 3]; p : POINTER TO INT; w : INT := -1;", steps, "w := p^;", 6
     )
-    sim.cycle(1)
-    position = 0
-    for step in steps:
-        position += step
-        if not 0 <= position <= 6:
-            assert sim.fault is not None and sim.fault.code == "index_out_of_range"
-            return
     data = [1, 0, 2, 0, 3, 0]
+    if position is None:
+        return
     if position > 4:
         assert sim.fault is not None and sim.fault.code == "index_out_of_range"
         assert sim.read("Main.w") == -1
