@@ -56,18 +56,22 @@ def test_bytes_of_a_byte_array_and_elements_of_a_structure_array():
             "variable it points into",
             2,
         ),
-        (
-            "a : ARRAY [1..3] OF INT; p : POINTER TO INT;",
-            "p := ADR(a[1]);\np := p + 1;",
-            "the pointer P moved by 1 bytes (not a whole number of elements) reaches element 0 of 3 element(s) of "
-            "2 byte(s): outside the variable it points into",
-            2,
+        (  # part of an element: the INT at bytes 5..6 of the 6-byte array
+            "a : ARRAY [1..3] OF INT; p : POINTER TO INT; y : INT;",
+            "p := ADR(a[1]);\np := p + 5;\ny := p^;",
+            "the pointer ADR(a[1]) + 5 reaches bytes 5..6 of a 6-byte variable: outside it",
+            3,
+        ),
+        (  # one past the end of a variable that is no array element: allowed, not dereferenced
+            "x : DINT; p : POINTER TO DINT;",
+            "p := ADR(x);\np := p + 4;\np^ := 1;",
+            "the pointer ADR(x) + 4 reaches bytes 4..7 of a 4-byte variable: outside it",
+            3,
         ),
         (
             "x : DINT; p : POINTER TO DINT;",
-            "p := ADR(x);\np := p + 4;",
-            "the pointer P moved by 4 bytes reaches element 1 of 1 element(s) of 4 byte(s): outside the variable "
-            "it points into",
+            "p := ADR(x);\np := p + 5;",
+            "the pointer P moved by 5 bytes reaches byte 5 of a 4-byte variable: outside it",
             2,
         ),
         (
@@ -92,19 +96,29 @@ def test_leaving_the_object_is_a_located_fault(declarations, body, message, line
 def test_any_walk_stays_inside_or_faults_where_it_leaves(steps):
     """Property: a walk of whole elements over ARRAY [0..4] OF INT either ends on the element a model of it says,
     or faults at the first step leaving 0..5 (5: one past the end, allowed)."""
-    moves = "".join(f"p := p + {2 * step};\n" for step in steps)
-    sim = simulation(
+    sim, position = _walk(
         "a : ARRAY [0..4] OF INT := [0, 1, 2, 3, 4]; p : POINTER TO INT; seen : INT := -1;",
-        "p := ADR(a[0]);\n" + moves + "IF p <> ADR(a[0]) + 10 THEN seen := p^; END_IF;",
+        [2 * step for step in steps],
+        "IF p <> ADR(a[0]) + 10 THEN seen := p^; END_IF;",
+        10,
     )
+    if position is not None:
+        assert sim.fault is None and sim.read("Main.seen") == (position // 2 if position < 10 else -1)
+
+
+def _walk(declarations: str, moves: list[int], then: str, end: int):
+    """A program moving ``p := ADR(a[0])`` by each of ``moves`` bytes, then running ``then``, scanned once; and the
+    byte the pointer ends on, or None after checking that the run faulted where a move left 0..end (one past the
+    end of the array: allowed)."""
+    sim = simulation(declarations, "p := ADR(a[0]);\n" + "".join(f"p := p + {m};\n" for m in moves) + then)
     sim.cycle(1)
     position = 0
-    for step in steps:
-        position += step
-        if not 0 <= position <= 5:
+    for move in moves:
+        position += move
+        if not 0 <= position <= end:
             assert sim.fault is not None and sim.fault.code == "index_out_of_range"
-            return
-    assert sim.fault is None and sim.read("Main.seen") == (position if position < 5 else -1)
+            return sim, None
+    return sim, position
 
 
 def test_a_state_with_a_moved_pointer_pickles_and_restores():
@@ -177,3 +191,47 @@ def test_seed_000_ex_3_13_a_pointer_initialised_once_faults_when_it_leaves_the_a
     )
     assert (fault.pou, fault.origin.line) == ("EXAMPLEPTRERR", text.splitlines().index("  intPTR^ := 22;") + 1)
     assert sim.read("arrayINT") == expected
+
+
+def test_a_pointer_moved_by_a_dword_walks_the_bytes_of_a_string():
+    """OSCAT's CODE: ``PT := ADR(STR) + INT_TO_DWORD(pos - 1); CODE := pt^`` (CODESYS adds a DWORD to an address).
+    The pointer to the STRING moves byte by byte through its text (STRING: one byte a character, then a NUL), and a
+    POINTER TO BYTE made of it reads and writes that character: 'ABC' has 'B' (66) at byte 1."""
+    sim = simulation(
+        "str : STRING := 'ABC'; pos : INT := 2; pt : POINTER TO BYTE; w : WORD := 2; c : BYTE; nul : BYTE;",
+        "pt := ADR(str) + INT_TO_DWORD(pos - 1);\nc := pt^;\npt^ := 98;\npt := ADR(str) + w + 1;\nnul := pt^;",
+    )
+    sim.cycle(1)
+    assert (sim.read("Main.c"), sim.read("Main.str"), sim.read("Main.nul")) == (66, "AbC", 0)
+    assert sim.read("Main.pt") == "ADR(str) + 3"
+
+
+def test_part_of_an_element_sees_the_bytes_of_two_neighbours_little_endian():
+    """CODESYS on x86/ARM: ARRAY [0..1] OF INT [16#1234, 16#5678] is the bytes 34 12 78 56; an INT pointer one byte
+    on reads 12 78 (16#7812 = 30738) and writing 16#ABCD there stores CD AB: a[0] = 16#CD34 (-13004 as an INT),
+    a[1] = 16#56AB (22187)."""
+    sim = simulation(
+        "a : ARRAY [0..1] OF INT := [16#1234, 16#5678]; p : POINTER TO INT; y : INT;",
+        "p := ADR(a[0]) + 1;\ny := p^;\np^ := WORD_TO_INT(16#ABCD);",
+    )
+    sim.cycle(1)
+    assert (sim.read("Main.y"), sim.read("Main.a")) == (30738, [-13004, 22187])
+
+
+@settings(max_examples=20, deadline=None)  # (each example builds a project)
+@given(st.lists(st.integers(-3, 3), min_size=1, max_size=6))
+def test_any_byte_walk_of_an_int_pointer_reads_two_little_endian_bytes_or_faults(steps):
+    """Property: a POINTER TO INT walked byte by byte over ARRAY [0..2] OF INT [1, 2, 3] (CODESYS: any byte offset;
+    the bytes are 01 00 02 00 03 00) reads bytes k and k + 1 little-endian (b[k] + 256 * b[k + 1]) while both lie
+    inside the 6 bytes; a move outside 0..6 (6: one past the end) faults there, a read from byte 5 or 6 at the read."""
+    sim, position = _walk(
+        "a : ARRAY [0..2] OF INT := [1, 2, 3]; p : POINTER TO INT; w : INT := -1;", steps, "w := p^;", 6
+    )
+    data = [1, 0, 2, 0, 3, 0]
+    if position is None:
+        return
+    if position > 4:
+        assert sim.fault is not None and sim.fault.code == "index_out_of_range"
+        assert sim.read("Main.w") == -1
+    else:
+        assert sim.fault is None and sim.read("Main.w") == data[position] + 256 * data[position + 1]

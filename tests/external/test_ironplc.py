@@ -65,5 +65,5 @@ def test_ironplc_benchmark_programs_reach_their_known_states():
 # Floors: raise them when the engine gets better. What fails today, by cause, is listed in docs/st.md
 # ("The IronPLC end-to-end suite"): TwinCAT libraries and IronPLC intrinsics, BOOL assigned to integers, and
 # decisions where the spec disagrees with IronPLC (BCD typing, integer EXPT bases, MUX clamping ...).
-FLOOR_E2E = 872
+FLOOR_E2E = 873
 FLOOR_BENCHMARKS = 10

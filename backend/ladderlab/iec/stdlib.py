@@ -362,6 +362,8 @@ def _date_and_time() -> list[StdFunction]:
         )
         for name, a, b, result, text in table
     ]
+    clock = "CODESYS: the time since the PLC started (the virtual clock)"
+    rows.append(_fn("TIME", [], "TIME", "date and time", clock, "CODESYS"))  # OSCAT's T_PLC_MS reads it
     rows += [
         _fn(
             "MULTIME",
@@ -476,6 +478,11 @@ FUNCTIONS: dict[str, StdFunction] = {
 }
 #: Every standard function block by upper-case name.
 FUNCTION_BLOCKS: dict[str, StdFunctionBlock] = {fb.name: fb for fb in _function_blocks()}
+
+
+#: Vendor system functions (not IEC's) a project may define itself: its own POU of that name is called instead
+#: (IronPLC's ``allow_time_as_function_name``: a user ``FUNCTION TIME``).
+REDEFINABLE = frozenset({"TIME"})
 
 
 def function(name: str) -> StdFunction | None:

@@ -472,13 +472,19 @@ def _short_circuit(node: ast.Binary, op: str, ctx: PouContext) -> Expr:
     return Binary(op, left, right, BOOL)  # type: ignore[arg-type]  # op is AND_THEN or OR_ELSE
 
 
+#: The unsigned integer a bit string of each width holds, as CODESYS adds it to an address.
+_UNSIGNED = {8: "USINT", 16: "UINT", 32: "UDINT", 64: "ULINT"}
+
+
 def _reference_operation(node: ast.Binary, op: str, ctx: PouContext) -> Expr:
     """``r1 = r2``, ``r <> NULL``: whether two references refer to one variable. ``p + n`` / ``p - n`` (bytes,
     CODESYS): the pointer moved along the array it points into (the engine checks it stays there). ``p < q`` ...
     order two pointers into one variable by the byte they point to (the engine faults on different variables)."""
-    if op in ("ADD", "SUB") and isinstance(node.left.ty, t.PointerType) and t.in_family(node.right.ty, "ANY_INT"):
+    if op in ("ADD", "SUB") and isinstance(node.left.ty, t.PointerType) and t.moves_a_pointer(node.right.ty):
         pointer = lower_expr(node.left, ctx)
         offset = lower_expr(node.right, ctx, Elementary("DINT"))
+        if isinstance(offset.type, Elementary) and offset.type.info.category == "bits":  # the number it holds
+            offset = convert(offset, Elementary(_UNSIGNED[offset.type.info.bits]))
         return Binary(op, pointer, offset, pointer.type)  # type: ignore[arg-type]  # a Reference is a value type here
     if op in ("ADD", "SUB"):
         raise LoweringError(POINTER_ARITHMETIC, node)
@@ -591,6 +597,8 @@ def _sizeof(node: ast.Call, ctx: PouContext, target: IrType) -> Const:
         ty = ctx.types.type_of(
             named if named is not None else typedef.type if typedef else None, ast.NamedType(argument.name)
         )
+    elif isinstance(argument.ty, t.InterfaceType):
+        raise LoweringError("SIZEOF of an interface variable is refused: LadderLab does not lay out what it holds")
     else:
         ty = lower_expr(argument, ctx).type
     return Const(engine_value(byte_size(ty), target), target)

@@ -33,6 +33,8 @@ from ..st.symbols import CheckResult, PouInfo, Symbol, TypeDef
 from .nodes import ReferenceInit, Slot
 from .types import Array, Elementary, Enum, FbInstance, IrType, Reference, Struct, StructField, Subrange
 
+#: SIZEOF of a pointer (POINTER TO, REF_TO): an address of a 32-bit target; a 64-bit CODESYS target has 8.
+POINTER_BYTES = 4
 _ALIAS_DEPTH = 64  # longer TYPE alias chains than this are cycles the checker already reported
 
 
@@ -366,7 +368,8 @@ def ir_default(type: IrType) -> object:
 
 def byte_size(type: IrType) -> int:
     """SIZEOF (TYP-45) as CODESYS counts: the type's width, BOOL 1, STRING[n] n + 1, enumerations 4 (stored as
-    DINT), arrays and structures the sum of their elements (no padding)."""
+    DINT), a pointer 4 (an address of the 32-bit x86/ARM target LadderLab computes as, docs/st.md), arrays and
+    structures the sum of their elements (no padding)."""
     if isinstance(type, Subrange):
         return byte_size(type.base)
     if isinstance(type, Elementary):
@@ -379,7 +382,12 @@ def byte_size(type: IrType) -> int:
         return _size(type) * byte_size(type.element)
     if isinstance(type, Struct):
         return sum(byte_size(f.type) for f in type.fields)
-    raise LoweringError("SIZEOF of a function block instance is not supported")
+    if isinstance(type, Reference):
+        return POINTER_BYTES
+    raise LoweringError(
+        "SIZEOF of a function block instance is refused: CODESYS counts the instance's hidden data too (its method "
+        "table pointer, the alignment of its members), which LadderLab does not lay out"
+    )
 
 
 def scalar_count(type: IrType) -> int:

@@ -71,12 +71,17 @@ class BodyChecker:
         self.result_assigned = False
         #: The access typed as the REFERENCE TO itself, not read through (REF='s target, ^'s base, __ISVALIDREF)
         self.keep_reference: ast.Expr | None = None
+        #: While a POU's declarations are checked: its VAR CONSTANTs, also those declared further down, so
+        #: ``fifo : ARRAY[0..n] OF DWORD`` may come before ``VAR CONSTANT n : INT := 16;`` (CODESYS, OSCAT's FIFO_16)
+        self.constants_ahead: dict[str, Symbol] = {}
 
     # ------------------------------------------------------------ names
     def lookup(self, name: str) -> Symbol | None:
         upper = name.upper()
         if self.pou is not None and upper in self.pou.symbols:
             return self.pou.symbols[upper]
+        if self.constants_ahead and upper in self.constants_ahead:
+            return self.constants_ahead[upper]
         if self.pou is not None and self.pou.method is not None and upper in self.pou.method.owner.symbols:
             return self.pou.method.owner.symbols[upper]  # a method works on its instance's variables
         return self.result.globals.get(upper)
@@ -370,8 +375,8 @@ class BodyChecker:
             return left  # ST-21: TIME * ANY_NUM, TIME / ANY_NUM (the number keeps its own type); LTIME alike
         if op == "*" and t.category(right) == "time" and t.in_family(left, "ANY_NUM"):
             return right
-        if op in ("+", "-") and isinstance(left, t.PointerType) and t.in_family(right, "ANY_INT"):
-            return left  # pointer arithmetic in bytes (TYP-43)
+        if op in ("+", "-") and isinstance(left, t.PointerType) and t.moves_a_pointer(right):
+            return left  # pointer arithmetic in bytes (TYP-43; CODESYS: also by a bit string)
         if op in ("=", "<>") and reference_comparison(left, right):
             return t.BOOL
         if op == "+" and isinstance(left, t.StringType) and isinstance(right, t.StringType):

@@ -164,7 +164,7 @@ class ProjectChecker:
             if upper in self.result.pous:
                 where("ST-DUPLICATE", f"there is already a POU called '{pou.name}'", None)
                 continue
-            if stdlib.function(upper) or stdlib.function_block(upper):
+            if (stdlib.function(upper) or stdlib.function_block(upper)) and upper not in stdlib.REDEFINABLE:
                 where(
                     "ST-DUPLICATE",
                     f"'{pou.name}' is a standard function or function block name and cannot be redefined",
@@ -372,6 +372,7 @@ class ProjectChecker:
             self._declare_return_type(pou, info)
         elif info.kind == "FUNCTION":
             report("ST-DECL", f"the function {pou.name} needs a return type", None)
+        checker.constants_ahead = self._constants(blocks, info)
         for block in blocks:
             if block.kind not in _ALLOWED[info.kind]:
                 report(
@@ -381,6 +382,16 @@ class ProjectChecker:
         for symbol in info.symbols.values():
             if isinstance(symbol.type, t.FbType) and symbol.type.pou is not None:
                 info.calls.add(symbol.type.pou.name.upper())
+
+    def _constants(self, blocks: list[ast.VarBlock], info: PouInfo) -> dict[str, Symbol]:
+        """The POU's ``VAR CONSTANT`` variables, declared aside (their diagnostics come when they are declared in
+        order), for the declarations that use one declared further down."""
+        constants: dict[str, Symbol] = {}
+        silent = BodyChecker(self.result, info, lambda *args, **kwargs: None)
+        for block in blocks:
+            if block.constant and block.kind == "VAR":
+                self.declare_block(block, constants, silent, info)
+        return constants
 
     def _declare_return_type(self, pou, info: PouInfo) -> None:
         """A function's result type: any type specification (``STRING[20]``, ``INT (0..100)``, a TYPE's name);

@@ -248,6 +248,12 @@ def typing_rules(typing: str) -> Iterator[None]:
         _TYPING.reset(token)
 
 
+def moves_a_pointer(t: Type) -> bool:
+    """Whether ``p + n`` / ``p - n`` may take ``n`` of this type: an integer (TYP-43) or a bit string wider than BOOL,
+    which CODESYS adds to an address as the unsigned number it is (OSCAT: ``ADR(str) + INT_TO_DWORD(pos - 1)``)."""
+    return in_family(t, "ANY_INT") or category(t) == "bits"
+
+
 def codesys_typing() -> bool:
     """Whether the project being checked uses CODESYS V3's type rules."""
     return _TYPING.get() == "codesys"

@@ -2474,6 +2474,14 @@ export const IEC = {
       result: "LDATE_AND_TIME",
     },
     {
+      description: "CODESYS: the time since the PLC started (the virtual clock)",
+      extensible: false,
+      group: "date and time",
+      inputs: [],
+      name: "TIME",
+      result: "TIME",
+    },
+    {
       description: "duration times a number (= MUL_TIME)",
       extensible: false,
       group: "date and time",

@@ -316,13 +316,6 @@ class ElementRef(Ref):
         return self.k  # type: ignore[return-value]  # an int key
 
 
-def pointer_add(ref: Ref | None, offset: int, size: int, what: str) -> Ref:
-    """``p + offset`` (bytes, CODESYS): where ``Ref.shifted`` says; a NULL ``p`` is a fault."""
-    if ref is None:
-        raise null_dereference(what)
-    return ref.shifted(offset, size, what)
-
-
 def deref(ref: Ref | None, what: str) -> Ref:
     """``ref`` itself, to be read or written through; a NULL ``ref`` is a fault naming ``what``."""
     if ref is None:
@@ -418,7 +411,7 @@ FB_CLASSES: dict[str, type] = _addressable_fbs()
 
 def namespace() -> dict[str, object]:
     """Fresh globals for executing one generated module."""
-    from .views import view  # views.ViewRef derives from Ref: it imports this module
+    from .views import pointer_add, view  # views.ViewRef derives from Ref: it imports this module
 
     ns: dict[str, object] = dict(INLINE_NAMES)
     ns.update(

@@ -15,7 +15,7 @@ import functools
 import struct
 from typing import Any
 
-from ..errors import INDEX_RANGE, PlcRuntimeError, pointer_outside_bytes
+from ..errors import INDEX_RANGE, PlcRuntimeError, null_dereference, pointer_outside_bytes
 from .runtime import Ref, dangling
 
 _INT_FORMATS = {(1, False): "<B", (1, True): "<b", (2, False): "<H", (2, True): "<h"}
@@ -232,3 +232,16 @@ def view(ref: Ref | None, whole: tuple, seen: tuple) -> ViewRef | None:
         offset = ref.k * element.size if 0 <= ref.k <= len(ref.c) else -1
         return ViewRef(ref.c, None, array, offset, seen_layout, origin, frame)
     return ViewRef(ref.c, ref.k, element, 0, seen_layout, ref.text, frame)
+
+
+def pointer_add(ref: Ref | None, offset: int, size: int, what: str, spec: tuple | None) -> Ref:
+    """``p + offset`` (bytes, CODESYS) for a pointer to ``size``-byte values laid out as ``spec`` (None: no byte
+    layout). Whole elements along the array p points into stay an element reference (``Ref.shifted``); any other
+    move (part of an element, away from a variable that is no array element: ``ADR(str) + 3``) sees the variable's
+    bytes from there as p's type, a ``ViewRef`` that faults outside the variable. A NULL ``p`` is a fault."""
+    if ref is None:
+        raise null_dereference(what)
+    in_array = isinstance(ref.c, list) and isinstance(ref.k, int)
+    if spec is None or isinstance(ref, ViewRef) or offset == 0 or (in_array and offset % size == 0):
+        return ref.shifted(offset, size, what)
+    return view(ref, spec, spec).shifted(offset, size, what)  # type: ignore[union-attr]  # ref is no NULL

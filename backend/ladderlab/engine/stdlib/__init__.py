@@ -29,7 +29,7 @@ from .conversions import conversion_function, conversion_names, convert, convert
 from .ed3_conversions import ed3_conversions
 from .fbs import STANDARD_FBS, FunctionBlock, pins
 from .strings import concat, find_position, length, positional
-from .timefuncs import TIME_FUNCTIONS, time_lengths
+from .timefuncs import TIME_FUNCTIONS, clock, time_lengths
 
 Implement = Callable[[tuple[str, ...], "str | None"], Impl]
 
@@ -114,6 +114,7 @@ def _table() -> dict[str, StandardFunction]:
     rows += [
         ("MULTIME", 2, False, TIME_FUNCTIONS["MUL_TIME"], "FUN-85"),
         ("DIVTIME", 2, False, TIME_FUNCTIONS["DIV_TIME"], "FUN-85"),
+        ("TIME", 0, False, clock, "CODESYS"),
     ]
     rows += [(name, 1, False, conversion_function(*pair), "FUN-10") for name, pair in conversion_names().items()]
     rows += [(name, 1, False, implement, "FUN-10") for name, implement in ed3_conversions().items()]

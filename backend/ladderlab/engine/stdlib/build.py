@@ -174,6 +174,11 @@ def call_text(name: str, args: tuple) -> str:
 _UNSAFE = (ast.IfExp, ast.BoolOp, ast.Lambda, ast.NamedExpr, ast.comprehension)
 
 
+#: Globals of each generated module a template may name besides the helpers: ``ll_now``, the clock at the start of
+#: the running scan (CODESYS ``TIME()``). A standalone callable has none of them: such a function is always inlined.
+MODULE_NAMES = frozenset({"ll_now"})
+
+
 @cache
 def inline_template(body: str, arity: int) -> str | None:
     """``body`` with parameter i replaced by ``({i})``, or None when inlining could change what is evaluated."""
@@ -185,7 +190,7 @@ def inline_template(body: str, arity: int) -> str | None:
         if isinstance(node, ast.Name):
             if _is_param(node.id):
                 found.append((node.col_offset, int(node.id[1:])))
-            elif node.id not in HELPERS and not hasattr(builtins, node.id):
+            elif node.id not in HELPERS and node.id not in MODULE_NAMES and not hasattr(builtins, node.id):
                 return None
     # each input exactly once, and in the IEC left-to-right order
     if [index for _, index in sorted(found)] != list(range(arity)):

@@ -101,3 +101,10 @@ def scale(name: str, int_expr: str, real_expr: str):
 TIME_FUNCTIONS = {name: fixed(name) for name in _FIXED}
 TIME_FUNCTIONS["MUL_TIME"] = scale("MUL_TIME", "a0 * a1", "ll__round(a0 * a1)")
 TIME_FUNCTIONS["DIV_TIME"] = scale("DIV_TIME", "ll__idiv(a0, a1)", "ll__tdiv(a0, a1)")
+
+
+def clock(types: tuple[str, ...], result_type: str | None) -> Impl:
+    """CODESYS ``TIME()``: the milliseconds since the PLC started, here the simulation's virtual clock at the start of
+    the running scan (``ll_now``, a global of each generated module: the call is always inlined there), wrapping as
+    TIME does."""
+    return Impl("int(ll_now)", "TIME")  # whole milliseconds (a task may run every 0.5 ms)
