@@ -125,7 +125,7 @@ class CompiledProgram:
     def compile_viewed(self, ns: dict[str, object], pou: str, flags: list[bool]) -> None:
         """Compile now, between scans, the chunks of ``pou`` (upper case) that its runs viewed (``flags``, its
         ``ll_v``) make the next scan call, so no scan pays for a compile (nor its watchdog)."""
-        for index, piece in self.generated.lazy.items():
+        for piece in self.generated.lazy.values():
             if piece.pou == pou and True in flags[piece.runs.start : piece.runs.stop]:
                 stand_in = ns.get(piece.function)
                 if isinstance(stand_in, _CompiledAtFirstCall) and stand_in.program is self:
@@ -136,7 +136,7 @@ class _CompiledAtFirstCall:
     """Stands in a namespace for a function whose piece is compiled at first call: compiles it, defines the function
     in its place (the callers look it up by name each time) and runs it, so that first call is the function's own."""
 
-    __slots__ = ("program", "index", "ns")
+    __slots__ = ("index", "ns", "program")
 
     def __init__(self, program: CompiledProgram, index: int, ns: dict[str, object]) -> None:
         self.program, self.index, self.ns = program, index, ns
