@@ -28,8 +28,10 @@ from collections.abc import Callable
 from typing import Any, TypeVar
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
-BACKEND = os.environ.get("LADDERLAB_BENCH_BACKEND", str(ROOT / "backend"))  # --backend, handed to each run
+BACKEND = str(pathlib.Path(os.environ.get("LADDERLAB_BENCH_BACKEND", ROOT / "backend")).resolve())  # --backend
 sys.path[:0] = [BACKEND, str(ROOT)]
+
+import ladderlab  # noqa: E402, F401  # from BACKEND, before benchmarks/diagrams.py puts this checkout's first
 
 from benchmarks.common import load_average  # noqa: E402
 
@@ -65,6 +67,7 @@ def measure(networks: int, variant: str) -> dict[str, float]:
     compiling.generate = timed("generate", compiling.generate)
     compiling._compile_piece = timed("compile()", compiling._compile_piece)
     gc.collect = timed("collection", gc.collect)  # ladderlab/collector.py's one collection at the end of a pause
+    assert pathlib.Path(compiling.__file__).is_relative_to(BACKEND), compiling.__file__
     parse_expression("0")  # the parser's tables load once per process
     model = project("ld", networks)
     model_mb = _peak_mb()
@@ -105,7 +108,7 @@ def main() -> None:
         print(json.dumps(measure(args.networks, args.variant)))
         return
     runs = []
-    environment = {**os.environ, "LADDERLAB_BENCH_BACKEND": args.backend or BACKEND}
+    environment = {**os.environ, "LADDERLAB_BENCH_BACKEND": str(pathlib.Path(args.backend or BACKEND).resolve())}
     for _ in range(args.runs):
         done = subprocess.run(
             [sys.executable, __file__, "--one", "--networks", str(args.networks), "--variant", args.variant],
