@@ -32,7 +32,6 @@ BACKEND = str(pathlib.Path(os.environ.get("LADDERLAB_BENCH_BACKEND", ROOT / "bac
 sys.path[:0] = [BACKEND, str(ROOT)]
 
 import ladderlab  # noqa: E402, F401  # from BACKEND, before benchmarks/diagrams.py puts this checkout's first
-
 from benchmarks.common import load_average  # noqa: E402
 
 NETWORKS = 50_000
