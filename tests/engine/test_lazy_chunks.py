@@ -196,3 +196,33 @@ def test_a_fault_in_a_chunk_compiled_at_first_use_is_reported_as_in_the_fast_var
         reports.append(sim.fault.diagnostic().message)
     assert reports[0] == reports[1]
     assert "division by zero: 7 / 0 at POU MAIN, network 9, DIV" in reports[1]
+
+
+def test_a_chunk_compiled_at_its_first_call_does_not_count_against_the_watchdog(monkeypatch):
+    """The compile runs inside the scan when no view came first: the task's budget stops meanwhile. Here each
+    compile takes 10 s of the watchdog's clock; the loop of the function network 11 calls checks the clock."""
+    spin = Pou(
+        name="Spin",
+        kind="function",
+        language="st",
+        return_type="INT",
+        declarations="VAR_INPUT N : INT; END_VAR VAR I : INT; END_VAR",
+        body="FOR I := 1 TO N DO Spin := Spin + 1; END_FOR;",
+    )
+    project = _project()
+    main = project.pous[0]
+    call = ld.Box(id="s", call="SPIN", en=True, inputs={"N": "1000"}, outputs={"OUT": "X"})
+    main.body.networks[-1].elements.insert(2, call)
+    project = project.model_copy(update={"pous": [main, spin]})
+    compiled = _build(project, "monitor")
+    clock = [0.0]
+    code = CompiledProgram.code
+
+    def slow_code(self, index):
+        clock[0] += 10.0
+        return code(self, index)
+
+    monkeypatch.setattr(CompiledProgram, "code", slow_code)
+    sim = Simulation(compiled, watchdog_s=0.1, watchdog_clock=lambda: clock[0])
+    assert sim.cycle(1) == 1 and sim.fault is None
+    assert clock[0] == 10.0 * len(compiled.generated.lazy) and sim.read("Main.X") == 1000
