@@ -77,6 +77,7 @@ def generate(program: ir.Program, variant: str = "fast") -> Generated:
     src.piece()
     code_line = len(src.lines)
     src.extend(code)
+    del decls, code  # their lists of lines: not held at the peak, when the text is joined
     pieces = _pieces(src)
     return Generated(
         source=src.text(),
