@@ -20,6 +20,7 @@ from ladderlab.model import ld
 from ladderlab.model.project import Pou, Project, Task
 from ladderlab.simulation.build import build_project
 from ladderlab.simulation.runner import SimRunner
+from tests.engine.test_viewed_networks import _Frames  # a client's power flow, from the frames
 
 NETWORKS = 12
 
@@ -117,22 +118,6 @@ def test_a_new_simulation_records_every_network_compiling_each_chunk_at_its_firs
     every = [e for n in range(NETWORKS) for e in _network_ids(n)]
     assert _shown(sim, every) == _shown(reference, every)
     assert _shown(sim, _network_ids(0)) == {"a0": True, "b0": True, "c0": True}
-
-
-class _Frames:
-    def __init__(self) -> None:
-        self.power: dict[str, dict[str, object]] = {}
-
-    def status(self, state, at) -> None: ...
-
-    def log(self, entry) -> None: ...
-
-    def frame(self, frame) -> None:
-        for instance, states in frame["power"].items():
-            if frame["full"]:
-                self.power[instance] = dict(states)
-            else:
-                self.power.setdefault(instance, {}).update(states)
 
 
 def test_a_view_started_on_a_stopped_simulation_shows_the_last_scan_exactly():
