@@ -116,6 +116,7 @@ class Simulation:
         self._clock = wall_clock
         self._watchdog = Watchdog(watchdog_clock, self._ns["ll_wb"])
         self._ns["ll_wd"] = self._watchdog.check
+        self._ns["ll_watchdog"] = self._watchdog  # a chunk compiled at first call stops it meanwhile (compile.py)
         self._tasks: list[Task] = task_table(compiled.program, watchdog_s)
         self._schedule = Schedule(self._tasks)
         self._resolver = Resolver(self._context)
@@ -673,6 +674,7 @@ class Simulation:
                 if on and not flags[network]:
                     self._viewed_since[(key, network)] = self._stamp
                 flags[network] = on
+            self.compiled.compile_viewed(self._ns, pou.upper(), flags)
 
     def _context_probes(self, pou: str) -> ProbeTable | None:
         return self.compiled.generated.context.probe_tables.get(pou.upper())

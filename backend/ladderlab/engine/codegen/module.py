@@ -12,7 +12,7 @@ from .context import CodegenError, ModuleContext, PausePoint, diagnostic
 from .layout import slots_source
 from .pou import emit_function, emit_inits, emit_instance_class, emit_located_inits, emit_reference_inits, emit_struct
 from .scope import global_owner
-from .source import Source
+from .source import LazyPiece, Source
 from .tasks import emit_tasks
 
 
@@ -24,6 +24,7 @@ class Generated:
     variant: str
     pieces: list[tuple[int, int, int]]  # compiled separately: (first line, 0-based; start, end in ``source``)
     code_from: int  # pieces from this one on are the variant's code; those before, declarations
+    lazy: dict[int, LazyPiece]  # piece index -> the function it defines, compiled at first use (compile.py)
     line_origins: list[int | None]
     origins: list[ir.Origin]
     origin_statements: dict[int, ir.Stmt]
@@ -76,11 +77,14 @@ def generate(program: ir.Program, variant: str = "fast") -> Generated:
     src.piece()
     code_line = len(src.lines)
     src.extend(code)
+    del decls, code  # their lists of lines: not held at the peak, when the text is joined
+    pieces = _pieces(src)
     return Generated(
         source=src.text(),
         variant=variant,
-        pieces=_pieces(src),
+        pieces=pieces,
         code_from=sum(1 for first in {0, *src.breaks} if first < code_line),
+        lazy={index: src.lazy[first] for index, (first, _, _) in enumerate(pieces) if first in src.lazy},
         line_origins=src.line_origins,
         origins=module.origins,
         origin_statements=module.origin_statements,

@@ -28,7 +28,7 @@ from .deferred import deferred_probes
 from .layout import slots_source
 from .mentions import addressed_locals, boxed_locals
 from .scope import Scope, global_owner
-from .source import Source
+from .source import LazyPiece, Source
 from .statements import Statements
 from .typeinfo import is_composite
 
@@ -239,6 +239,7 @@ def _emit_execute(module: ModuleContext, pou: ir.Pou, scope: Scope, src: Source)
     if not plan.inline:
         for number in range(len(plan.chunks)):
             chunk = names.chunk_function(number, key)
+            start = len(src.lines)
             src.piece()
             src.line(f"def {chunk}(self, now{', ll_b' if plan.jumps else ''}):")
             first, last = plan.chunks[number][0].origin, plan.chunks[number][-1].origin
@@ -251,6 +252,7 @@ def _emit_execute(module: ModuleContext, pou: ir.Pou, scope: Scope, src: Source)
             src.line()
             if table is not None and table.networks > runs and not module.debug and not plan.jumps:
                 calls.append(_emit_unviewed_twin(scope, plan, number, key, src, (runs, table.networks)))
+                src.lazy[start] = LazyPiece(chunk, pou.name.upper(), range(runs, table.networks))
             else:
                 calls.append(f"{chunk}(self, now)")
     src.piece()
