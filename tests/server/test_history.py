@@ -344,6 +344,7 @@ SPIN_PROJECT = {
     "tasks": [{"name": "Fast", "interval": "T#10ms", "programs": ["Main"]}],
 }
 SPINS = 400_000
+SEEK_SPINS = 12_000_000  # some 86 ns each in the monitor variant here: a seek over them takes about 1 s
 
 
 def test_a_step_that_does_not_end_in_time_is_refused_and_touches_nothing(
@@ -401,5 +402,58 @@ def test_a_step_that_does_not_end_in_time_is_refused_and_touches_nothing(
                     if message["type"] == "values":
                         seen.update(message["changed"])
                 assert (seen["MAIN.COUNT"], seen["MAIN.X"]) == (scan, x)
+    finally:
+        registry.close()
+
+
+def test_a_seek_that_does_not_end_in_time_is_refused_and_touches_nothing(
+    client: TestClient, workspace: Workspace
+) -> None:
+    """hist5 item 1: ``POST .../seek`` waits ``history_timeout_s`` (0.1 s here) like a step, find or diff: the seek
+    to scan 2, whose replay runs the call of a function that loops 12 million times again, takes longer, so it is
+    refused (409, in words) while the simulation's process goes on with it; once it ends, scan 2 is shown (x as the
+    loop left it). The live simulation (3 scans, n back to 0) and the recorded scans stay; the next seek works."""
+    settings = dataclasses.replace(FAST, history_timeout_s=0.1, watchdog_s=60.0)
+    registry = install(client, settings)
+    try:
+        workspace.create(Project.model_validate(SPIN_PROJECT))
+        sim = client.post("/api/projects/spin/simulations").json()["id"]
+        with client.websocket_connect(f"/api/simulations/{sim}/ws") as ws:
+            subscribe(ws, ["Main.x", "Main.Count", "Main.n"])
+            ws.send_json({"type": "single_cycle"})
+            ws.send_json({"type": "write", "path": "Main.n", "value": SEEK_SPINS})
+            ws.send_json({"type": "single_cycle"})
+            ws.send_json({"type": "write", "path": "Main.n", "value": 0})
+            ws.send_json({"type": "single_cycle"})
+            recv_until(ws, lambda m: m["type"] == "values" and m["scan"] == 3, timeout=30)
+
+            refused = client.post(f"/api/simulations/{sim}/seek", json={"scan": 2})
+            assert refused.status_code == 409
+            assert refused.json()["detail"]["message"] == (
+                "the seek to scan 2 did not end within 0.1 s (the server's history_timeout_s): scan 2 is shown once "
+                "it ends"
+            )
+            shown, before = recv_until(ws, _values(viewing=2), timeout=60)
+            seen: dict[str, object] = {}
+            for message in [*before, shown]:
+                if message["type"] == "values":
+                    seen.update(message["changed"])
+            assert (shown["scan"], seen["MAIN.X"], seen["MAIN.COUNT"], seen["MAIN.N"]) == (2, SEEK_SPINS, 2, SEEK_SPINS)
+
+        live = registry.get(sim).handle
+        assert [live.read(path) for path in ("Main.Count", "Main.n", "Main.x")] == [3, 0, 0]
+        info = client.get(f"/api/simulations/{sim}").json()
+        assert (info["scan_count"], info["history"]["first"], info["history"]["last"]) == (3, 1, 3)
+        assert info["state"] == "stopped"
+        answered = client.post(f"/api/simulations/{sim}/seek", json={"scan": 1})
+        assert answered.status_code == 200
+        assert {key: answered.json()["history"][key] for key in ("first", "last", "viewing")} == {
+            "first": 1,
+            "last": 3,
+            "viewing": 1,
+        }
+        with client.websocket_connect(f"/api/simulations/{sim}/ws") as ws:
+            seen = dict(subscribe(ws, ["Main.x", "Main.Count", "Main.n"])["changed"])
+            assert (seen["MAIN.COUNT"], seen["MAIN.X"], seen["MAIN.N"]) == (1, 0, 0)
     finally:
         registry.close()
