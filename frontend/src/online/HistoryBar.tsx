@@ -27,6 +27,7 @@ export function HistoryBar() {
   const history = useOnline((s) => s.monitor.history);
   const online = useOnline((s) => s.phase === "online");
   const simulation = useOnline((s) => s.simulation);
+  const refused = useOnline((s) => s.historyError);
   if (!online || !history || history.last < history.first) return null;
   const s = onlineStore.getState();
   const scan = shownScan(history);
@@ -37,7 +38,7 @@ export function HistoryBar() {
     <span className={`history-bar${viewing ? " viewing" : ""}`} role="group" aria-label="Scan history">
       <button
         type="button"
-        onClick={() => back !== null && s.seek(back)}
+        onClick={() => back !== null && void s.seek(back)}
         disabled={back === null}
         title="One scan back"
       >
@@ -51,26 +52,31 @@ export function HistoryBar() {
           max={history.last}
           step={1}
           value={scan}
-          onChange={(event) => s.seek(Number(event.target.value))}
+          onChange={(event) => void s.seek(Number(event.target.value))}
           title={`History from scan ${history.first} to ${history.last}`}
         />
         <HistoryMarks first={history.first} last={history.last} marked={history.marked ?? 0} />
       </span>
       <button
         type="button"
-        onClick={() => forward !== null && s.seek(forward)}
+        onClick={() => forward !== null && void s.seek(forward)}
         disabled={forward === null}
         title="One scan forward"
       >
         ▶
       </button>
-      <button type="button" onClick={s.goLive} disabled={!viewing} title="Show the live scans again">
+      <button type="button" onClick={() => void s.goLive()} disabled={!viewing} title="Show the live scans again">
         Live
       </button>
       <span className="history-range" aria-label="History kept">
         {history.recording ? "recording · history only · " : ""}from scan {history.first}
         {(history.branch ?? 1) > 1 ? ` · branch ${history.branch} live` : ""}
       </span>
+      {refused ? (
+        <span className="history-note" role="alert" aria-label="History refused">
+          {refused}
+        </span>
+      ) : null}
       <HistoryFind scan={scan} />
       {simulation ? (
         <a
@@ -127,7 +133,7 @@ function HistoryMarks({ first, last, marked }: { first: number; last: number; ma
             style={{ left: `${markOffset(mark.scan, first, last)}%` }}
             title={`scan ${mark.scan}: ${mark.kinds.join(", ")}`}
             aria-label={`scan ${mark.scan}: ${mark.kinds.join(", ")}`}
-            onClick={() => onlineStore.getState().seek(mark.scan)}
+            onClick={() => void onlineStore.getState().seek(mark.scan)}
           />
         ))}
     </span>
@@ -153,7 +159,7 @@ function HistoryFind({ scan }: { scan: number }) {
     try {
       const found = await findInHistory(s.simulation, scan, direction, query);
       setNote(found === null ? `no scan ${direction > 0 ? "after" : "before"} ${scan} in the history` : null);
-      if (found !== null) s.seek(found);
+      if (found !== null) await s.seek(found);
     } catch (err) {
       setNote(err instanceof Error ? err.message : String(err));
     }
@@ -210,7 +216,7 @@ export function HistoryBanner({ describe, reveal }: HistoryBannerProps) {
       <div className="history-banner" role="status" aria-label="History view">
         Viewing scan {viewing} (history) · t = {timeMs} ms · the values are those of that scan
         {recording ? " of the recording" : "; the simulation goes on"}
-        <button type="button" onClick={onlineStore.getState().goLive}>
+        <button type="button" onClick={() => void onlineStore.getState().goLive()}>
           Back to live
         </button>
         <button
@@ -270,7 +276,7 @@ function HistoryStepping({ viewing, describe, reveal }: { viewing: number } & Hi
         </button>
       ) : null}
       {stepping ? (
-        <button type="button" onClick={() => onlineStore.getState().seek(viewing)} title="The scan complete again">
+        <button type="button" onClick={() => void onlineStore.getState().seek(viewing)} title="The scan complete again">
           Whole scan
         </button>
       ) : null}
