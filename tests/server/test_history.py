@@ -15,7 +15,17 @@ from ladderlab.simulation.registry import SimulationRegistry
 from ladderlab.storage import Workspace
 
 from .helpers import st_program
-from .test_simulations_support import FAST, counter, entry, install, of_type, recv_until, registry, subscribe
+from .test_simulations_support import (
+    FAST,
+    counter,
+    counter_project,
+    entry,
+    install,
+    of_type,
+    recv_until,
+    registry,
+    subscribe,
+)
 
 __all__ = ["counter", "registry"]  # fixtures
 
@@ -457,3 +467,24 @@ def test_a_seek_that_does_not_end_in_time_is_refused_and_touches_nothing(
             assert (seen["MAIN.COUNT"], seen["MAIN.X"], seen["MAIN.N"]) == (1, 0, 0)
     finally:
         registry.close()
+
+
+def test_the_history_budget_is_the_servers_history_mb(client: TestClient, workspace: Workspace) -> None:
+    """Issue 23 item 1 ("default 256 MB, configurable"): ``history_mb`` 3 gives each simulation a history of 3 MiB
+    (the default, 256 MiB, is in test_seek_over_rest_and_the_history_in_the_simulation_info); 0 keeps none, and a
+    seek says so."""
+    workspace.create(counter_project())
+    for history_mb, budget in ((3, 3 * 1024 * 1024), (0, None)):
+        registry = install(client, dataclasses.replace(FAST, history_mb=history_mb))
+        try:
+            sim = client.post("/api/projects/counter/simulations").json()["id"]
+            info = client.post(f"/api/simulations/{sim}/cycle").json()
+            assert (info["history"] or {}).get("budget_bytes") == budget
+            if budget is None:
+                refused = client.post(f"/api/simulations/{sim}/seek", json={"scan": 1})
+                assert refused.status_code == 409
+                assert refused.json()["detail"]["message"] == (
+                    "this simulation keeps no scan history (the server's history_mb is 0)"
+                )
+        finally:
+            registry.close()
