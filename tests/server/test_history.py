@@ -488,3 +488,43 @@ def test_the_history_budget_is_the_servers_history_mb(client: TestClient, worksp
                 )
         finally:
             registry.close()
+
+
+def test_step_back_through_a_past_scan(client: TestClient, counter: str) -> None:
+    """Issue 23 item 3 (stepping back and forth one network or line within a scan): scan 3 of the counter stepped
+    to before line 3, then back: before line 2 Count is 3 (line 1 ran) and Flag FALSE, before line 1 Count is 2;
+    a step back from there is refused in words; a step forward goes to line 2 again. Reference values: Count counts
+    the scans, Flag toggles every scan (FALSE after the two scans before scan 3)."""
+    cycle = f"/api/simulations/{counter}/cycle"
+    for _ in range(4):
+        client.post(cycle)
+    step = f"/api/simulations/{counter}/history/step"
+    with client.websocket_connect(f"/api/simulations/{counter}/ws") as ws:
+        seen = dict(subscribe(ws, ["Main.Count", "Main.Flag"])["changed"])
+        refused = client.post(f"/api/simulations/{counter}/history/step", json={"granularity": "back"})
+        assert refused.json()["detail"]["message"] == "go to a past scan first: a step goes through the scan shown"
+        client.post(f"/api/simulations/{counter}/seek", json={"scan": 3})
+        refused = client.post(step, json={"granularity": "back"})
+        assert refused.status_code == 409
+        assert refused.json()["detail"]["message"] == (
+            "step into the scan shown first: a step back goes to the point before the one reached"
+        )
+        points = []
+        for granularity in ("statement", "statement", "statement", "back", "back", "statement"):
+            info = client.post(step, json={"granularity": granularity}).json()
+            stepping = info["history"]["stepping"]
+            found = recv_until(
+                ws, lambda m, point=stepping: m["type"] == "values" and m["history"]["stepping"] == point
+            )
+            for m in [*found[1], found[0]]:
+                if m["type"] == "values":
+                    seen.update(m["changed"])
+            points.append((stepping["at"]["line"], seen["MAIN.COUNT"], seen["MAIN.FLAG"]))
+            if granularity == "back" and stepping["at"]["line"] == 1:
+                refused = client.post(step, json={"granularity": "back"})
+                assert refused.status_code == 409
+                assert refused.json()["detail"]["message"] == (
+                    "scan 3 is halted before its first network or line: go one scan back to see the one before"
+                )
+        assert points == [(1, 2, False), (2, 3, False), (3, 3, True), (2, 3, False), (1, 2, False), (2, 3, False)]
+        assert client.get(f"/api/simulations/{counter}").json()["scan_count"] == 4

@@ -239,6 +239,14 @@ export function steppingText(viewing: number, stepping: object | null | undefine
   return where ? `Scan ${viewing}, halted before ${where}` : `Scan ${viewing} ran to its end`;
 }
 
+/** What an arrow key does in the stepping group: → the next step (into the scan first), ← back one (while
+ * stepping); null: nothing (another key, or → after the scan's end). */
+export function steppingKey(key: string, stepping: boolean, ended: boolean): "statement" | "back" | null {
+  if (key === "ArrowRight" && !ended) return "statement";
+  if (key === "ArrowLeft" && stepping) return "back";
+  return null;
+}
+
 /** Step through the scan shown (replayed from the scan before it, in the debug code): the diagrams and values show
  * the point reached, the network or line about to run is marked and shown; the recorded history does not change. */
 function HistoryStepping({ viewing, describe, reveal }: { viewing: number } & HistoryBannerProps) {
@@ -249,7 +257,7 @@ function HistoryStepping({ viewing, describe, reveal }: { viewing: number } & Hi
   }, [at, reveal]);
   const [note, setNote] = useState<string | null>(null);
   const ended = stepping != null && !stepping.at;
-  const step = async (granularity: "statement" | "over") => {
+  const step = async (granularity: "statement" | "over" | "back") => {
     const id = onlineStore.getState().simulation;
     if (!id) return;
     try {
@@ -260,16 +268,32 @@ function HistoryStepping({ viewing, describe, reveal }: { viewing: number } & Hi
     }
   };
   return (
-    <div className="history-stepping" role="group" aria-label="Step through the scan">
+    <div
+      className="history-stepping"
+      role="group"
+      aria-label="Step through the scan"
+      title="← and → step back and forth while a button here has the focus"
+      onKeyDown={(event) => {
+        const by = steppingKey(event.key, stepping != null, ended);
+        if (!by) return;
+        event.preventDefault();
+        void step(by);
+      }}
+    >
       <span aria-label="Step point">{steppingText(viewing, stepping, at ? describe(at) : null)}</span>
       <button
         type="button"
         onClick={() => void step("statement")}
         disabled={ended}
-        title="Run the scan shown to its next network or line (into the blocks it calls)"
+        title="Run the scan shown to its next network or line (into the blocks it calls; →)"
       >
         {stepping ? "Next step" : "Step into this scan"}
       </button>
+      {stepping ? (
+        <button type="button" onClick={() => void step("back")} title="Back to the network or line before (←)">
+          Step back
+        </button>
+      ) : null}
       {stepping ? (
         <button type="button" onClick={() => void step("over")} disabled={ended} title="Past the calls">
           Step over

@@ -72,8 +72,12 @@ export async function findInHistory(
 }
 
 /** One step through the scan shown: the first replays it from the scan before and halts at its first network or
- * line, each next at the next one (the values come with the frames; `history.stepping` says where). */
-export function historyStep(id: string, granularity: "statement" | "over" = "statement"): Promise<SimulationInfo> {
+ * line, each next at the next one, `back` at the one before (the values come with the frames; `history.stepping`
+ * says where). */
+export function historyStep(
+  id: string,
+  granularity: "statement" | "over" | "back" = "statement",
+): Promise<SimulationInfo> {
   return unwrap(http.POST("/api/simulations/{sim_id}/history/step", { ...simulation(id), body: { granularity } }));
 }
 
