@@ -232,7 +232,7 @@ def _halted_networks(page) -> list[str]:
 
 def test_step_through_a_past_scan_network_by_network(page, server):
     """Issue 23 item 3 ("one network within a scan"): scan 4 (the first after Start was written) shown, then
-    stepped through: before network 1 runs, the Motor coil has not run in this scan (drawn as not executed) and network 1 is
+    stepped through (and one network back and forth: Step back, the arrow keys in the stepping group): before network 1 runs, the Motor coil has not run in this scan (drawn as not executed) and network 1 is
     marked; one step later network 2 is marked and the seal-in has switched the coil on; the steps go on through
     networks 3 and 4, the lines of the ST block Blinker that network 4 calls and the FBD program Scaling's network
     (each shown in its editor, the point marked), and the last step ends the scan; "Whole scan" shows scan 4 complete again. The live simulation and its history are not changed: scan 5
@@ -261,6 +261,16 @@ def test_step_through_a_past_scan_network_by_network(page, server):
     point.filter(has_text="Scan 4, halted before MAIN, network 2").wait_for()
     page.wait_for_function("() => document.querySelector('svg.ld-network.ld-halted')?.dataset.network === 'run_timer'")
     _coil(page, "on")  # network 1 ran: Start OR Motor, AND NOT Stop
+    stepping.get_by_role("button", name="Step back").click()  # back one network: the coil not run yet again
+    point.filter(has_text="Scan 4, halted before MAIN, network 1").wait_for()
+    page.wait_for_function("() => document.querySelector('svg.ld-network.ld-halted')?.dataset.network === 'seal_in'")
+    stepping.get_by_role("button", name="Next step").press("ArrowRight")  # the keys of the stepping group: forth
+    point.filter(has_text="Scan 4, halted before MAIN, network 2").wait_for()
+    _coil(page, "on")
+    stepping.get_by_role("button", name="Next step").press("ArrowLeft")  # and back
+    point.filter(has_text="Scan 4, halted before MAIN, network 1").wait_for()
+    stepping.get_by_role("button", name="Next step").click()
+    point.filter(has_text="Scan 4, halted before MAIN, network 2").wait_for()
     points = []
     for _ in range(40):  # the rest of the scan
         text = point.inner_text()
