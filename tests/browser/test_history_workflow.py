@@ -14,7 +14,7 @@ from pathlib import Path
 import pytest
 
 from .conftest import ARTIFACTS
-from .steps import go_online, open_pou
+from .steps import go_online, open_pou, watch
 
 pytestmark = pytest.mark.browser
 
@@ -48,6 +48,8 @@ def test_go_back_to_a_scan_and_see_the_diagram_as_it_was(page, server):
         cycle.click()
         scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
     _coil(page, "on")
+    watched = watch(page, "Motor")  # the watch list shows the scan shown too
+    watched.filter(has_text=re.compile("^TRUE$")).wait_for()
 
     timeline = page.get_by_role("group", name="Scan history")
     slider = timeline.get_by_role("slider", name="Scan")
@@ -57,6 +59,7 @@ def test_go_back_to_a_scan_and_see_the_diagram_as_it_was(page, server):
     banner.filter(has_text="Viewing scan 2 (history)").wait_for()
     scan.filter(has_text=re.compile("^2$")).wait_for()
     _coil(page, "off")
+    watched.filter(has_text=re.compile("^FALSE$")).wait_for()
     page.screenshot(path=str(ARTIFACTS / "history-scan-2.png"))
 
     page.get_by_role("button", name="Show differences").click()  # with the live scan (6) by default
