@@ -422,7 +422,8 @@ def test_a_seek_that_does_not_end_in_time_is_refused_and_touches_nothing(
     """hist5 item 1: ``POST .../seek`` waits ``history_timeout_s`` (0.1 s here) like a step, find or diff: the seek
     to scan 2, whose replay runs the call of a function that loops 12 million times again, takes longer, so it is
     refused (409, in words) while the simulation's process goes on with it; once it ends, scan 2 is shown (x as the
-    loop left it). The live simulation (3 scans, n back to 0) and the recorded scans stay; the next seek works."""
+    loop left it). The live simulation (3 scans, n back to 0) and the recorded scans stay; the next seek works. A seek
+    over the websocket is refused alike (an error message in the same words)."""
     settings = dataclasses.replace(FAST, history_timeout_s=0.1, watchdog_s=60.0)
     registry = install(client, settings)
     try:
@@ -465,6 +466,15 @@ def test_a_seek_that_does_not_end_in_time_is_refused_and_touches_nothing(
         with client.websocket_connect(f"/api/simulations/{sim}/ws") as ws:
             seen = dict(subscribe(ws, ["Main.x", "Main.Count", "Main.n"])["changed"])
             assert (seen["MAIN.COUNT"], seen["MAIN.X"], seen["MAIN.N"]) == (1, 0, 0)
+            ws.send_json({"type": "seek", "scan": 2})  # the websocket's seek waits as long, in the same words
+            error = recv_until(ws, of_type("error"), timeout=30)[0]
+            assert error == {
+                "type": "error",
+                "code": "bad_state",
+                "message": "the seek to scan 2 did not end within 0.1 s (the server's history_timeout_s): scan 2 is "
+                "shown once it ends",
+            }
+            recv_until(ws, _values(viewing=2), timeout=60)
     finally:
         registry.close()
 

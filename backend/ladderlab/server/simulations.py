@@ -242,8 +242,12 @@ def seek(sim_id: str, registry: RegistryDep, body: Annotated[SeekScan, Body()]) 
     ``POST .../live``; the live scans go on. Scans are numbered as ``scan_count`` (422 outside the history).
     409 when the replay does not end within ``history_timeout_s``: it goes on, and shows the scan once it ends."""
     entry = registry.get(sim_id)
-    late = (f"the seek to scan {body.scan} did not end", f"scan {body.scan} is shown once it ends")
-    return simulation_info(entry, _history_request(entry, "seek", late, scan=body.scan)["info"])
+    return simulation_info(entry, _history_request(entry, "seek", seek_late(body.scan), scan=body.scan)["info"])
+
+
+def seek_late(scan: int) -> tuple[str, str]:
+    """What a seek that does not end within ``history_timeout_s`` is refused with (REST and websocket)."""
+    return f"the seek to scan {scan} did not end", f"scan {scan} is shown once it ends"
 
 
 @router.post("/api/simulations/{sim_id}/live", response_model=SimulationInfo, responses=_DESCRIBED)
@@ -314,9 +318,13 @@ def _history_request(entry: SimulationEntry, op: str, late: tuple[str, str | Non
     except CommandError as error:
         raise ApiError(409 if error.code == "bad_state" else 422, error.message) from None
     except TimeoutError:
-        what, then = late
-        after = f": {then}" if then else ""
-        raise ApiError(409, f"{what} within {timeout:g} s (the server's history_timeout_s){after}") from None
+        raise ApiError(409, late_message(late, timeout)) from None
+
+
+def late_message(late: tuple[str, str | None], timeout: float) -> str:
+    """The words of a refusal after ``timeout`` seconds: what did not end (and what happens once it does)."""
+    what, then = late
+    return f"{what} within {timeout:g} s (the server's history_timeout_s)" + (f": {then}" if then else "")
 
 
 @router.delete(
