@@ -146,7 +146,8 @@ def test_go_back_to_a_scan_and_see_the_diagram_as_it_was(page, server):
 
 def test_the_timeline_marks_the_scan_a_breakpoint_halted_in(page, server):
     """Issue 23 item 3: a breakpoint on network 2 halts the third scan; once that scan completes, the timeline
-    marks it as a breakpoint hit (its own colour), and a click on the mark shows that scan."""
+    marks it as a breakpoint hit (its own colour), and a click on the mark shows that scan; a force before scan 5
+    marks that scan as an input."""
     scan, cycle = _online_motor(page, server)
     for number in (1, 2):
         cycle.click()
@@ -167,6 +168,15 @@ def test_the_timeline_marks_the_scan_a_breakpoint_halted_in(page, server):
     assert mark.get_attribute("class") == "history-mark breakpoint"
     mark.click()
     page.get_by_role("status", name="History view").filter(has_text="Viewing scan 3 (history)").wait_for()
+
+    start = page.locator('g.ld-element[data-id="start"]')  # a force (F7) before scan 5: marked as an input
+    start.locator(".ld-hit").dblclick()
+    start.locator(".ld-prepared").filter(has_text="<TRUE>").wait_for()
+    page.keyboard.press("F7")
+    cycle.click()
+    forced = timeline.get_by_role("button", name="scan 5: force")
+    forced.wait_for()
+    assert forced.get_attribute("class") == "history-mark"
 
 
 def test_the_trace_chart_and_the_timeline_move_together(page, server):
