@@ -14,7 +14,7 @@ from pathlib import Path
 import pytest
 
 from .conftest import ARTIFACTS
-from .steps import go_online, open_pou
+from .steps import go_online, open_pou, watch
 
 pytestmark = pytest.mark.browser
 
@@ -48,6 +48,8 @@ def test_go_back_to_a_scan_and_see_the_diagram_as_it_was(page, server):
         cycle.click()
         scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
     _coil(page, "on")
+    watched = watch(page, "Motor")  # the watch list shows the scan shown too
+    watched.filter(has_text=re.compile("^TRUE$")).wait_for()
 
     timeline = page.get_by_role("group", name="Scan history")
     slider = timeline.get_by_role("slider", name="Scan")
@@ -57,6 +59,7 @@ def test_go_back_to_a_scan_and_see_the_diagram_as_it_was(page, server):
     banner.filter(has_text="Viewing scan 2 (history)").wait_for()
     scan.filter(has_text=re.compile("^2$")).wait_for()
     _coil(page, "off")
+    watched.filter(has_text=re.compile("^FALSE$")).wait_for()
     page.screenshot(path=str(ARTIFACTS / "history-scan-2.png"))
 
     page.get_by_role("button", name="Show differences").click()  # with the live scan (6) by default
@@ -143,7 +146,8 @@ def test_go_back_to_a_scan_and_see_the_diagram_as_it_was(page, server):
 
 def test_the_timeline_marks_the_scan_a_breakpoint_halted_in(page, server):
     """Issue 23 item 3: a breakpoint on network 2 halts the third scan; once that scan completes, the timeline
-    marks it as a breakpoint hit (its own colour), and a click on the mark shows that scan."""
+    marks it as a breakpoint hit (its own colour), and a click on the mark shows that scan; a force before scan 5
+    marks that scan as an input."""
     scan, cycle = _online_motor(page, server)
     for number in (1, 2):
         cycle.click()
@@ -164,6 +168,15 @@ def test_the_timeline_marks_the_scan_a_breakpoint_halted_in(page, server):
     assert mark.get_attribute("class") == "history-mark breakpoint"
     mark.click()
     page.get_by_role("status", name="History view").filter(has_text="Viewing scan 3 (history)").wait_for()
+
+    start = page.locator('g.ld-element[data-id="start"]')  # a force (F7) before scan 5: marked as an input
+    start.locator(".ld-hit").dblclick()
+    start.locator(".ld-prepared").filter(has_text="<TRUE>").wait_for()
+    page.keyboard.press("F7")
+    cycle.click()
+    forced = timeline.get_by_role("button", name="scan 5: force")
+    forced.wait_for()
+    assert forced.get_attribute("class") == "history-mark"
 
 
 def test_the_trace_chart_and_the_timeline_move_together(page, server):
@@ -232,7 +245,7 @@ def _halted_networks(page) -> list[str]:
 
 def test_step_through_a_past_scan_network_by_network(page, server):
     """Issue 23 item 3 ("one network within a scan"): scan 4 (the first after Start was written) shown, then
-    stepped through: before network 1 runs, the Motor coil has not run in this scan (drawn as not executed) and network 1 is
+    stepped through (and one network back and forth: Step back, the arrow keys in the stepping group): before network 1 runs, the Motor coil has not run in this scan (drawn as not executed) and network 1 is
     marked; one step later network 2 is marked and the seal-in has switched the coil on; the steps go on through
     networks 3 and 4, the lines of the ST block Blinker that network 4 calls and the FBD program Scaling's network
     (each shown in its editor, the point marked), and the last step ends the scan; "Whole scan" shows scan 4 complete again. The live simulation and its history are not changed: scan 5
@@ -261,6 +274,16 @@ def test_step_through_a_past_scan_network_by_network(page, server):
     point.filter(has_text="Scan 4, halted before MAIN, network 2").wait_for()
     page.wait_for_function("() => document.querySelector('svg.ld-network.ld-halted')?.dataset.network === 'run_timer'")
     _coil(page, "on")  # network 1 ran: Start OR Motor, AND NOT Stop
+    stepping.get_by_role("button", name="Step back").click()  # back one network: the coil not run yet again
+    point.filter(has_text="Scan 4, halted before MAIN, network 1").wait_for()
+    page.wait_for_function("() => document.querySelector('svg.ld-network.ld-halted')?.dataset.network === 'seal_in'")
+    stepping.get_by_role("button", name="Next step").press("ArrowRight")  # the keys of the stepping group: forth
+    point.filter(has_text="Scan 4, halted before MAIN, network 2").wait_for()
+    _coil(page, "on")
+    stepping.get_by_role("button", name="Next step").press("ArrowLeft")  # and back
+    point.filter(has_text="Scan 4, halted before MAIN, network 1").wait_for()
+    stepping.get_by_role("button", name="Next step").click()
+    point.filter(has_text="Scan 4, halted before MAIN, network 2").wait_for()
     points = []
     for _ in range(40):  # the rest of the scan
         text = point.inner_text()

@@ -730,3 +730,19 @@ def test_the_replay_runs_code_objects_of_its_own_so_a_seek_leaves_the_live_scan_
     assert replay.snapshot() == sim.snapshot()
     live, own = _code_objects(sim), _code_objects(replay)
     assert live and own and not live & own
+
+
+def test_a_checkpoint_follows_every_log_bytes_of_inputs():
+    """Issue 23 item 1 ("or every few MB of input log"): with checkpoints due only every 1,000 scans, a history
+    whose ``log_bytes`` is 300 takes one at the end of the scan whose inputs bring the log since the last one to
+    300 bytes or more: each write ``{"kind":"write","path":"Main.Level","value":NN}`` is 47 bytes and 8 of
+    bookkeeping, so the sixth write (330 bytes) does, and the count starts again from there."""
+    sim = Simulation(COMPILED)
+    history = History(sim, min_interval=1_000, seek_ms=1e9, log_bytes=300)
+    _record(sim, history)
+    for value in range(10, 22):  # one write before each of scans 0 to 11
+        sim.write("Main.Level", value)
+        sim.cycle(1)
+    assert [c.scan for c in history.checkpoints] == [0, 6, 12]
+    assert history.log_size == 12 * (47 + 8)
+    assert history.seek(8).snapshot()["MAIN.LEVEL"] == 18

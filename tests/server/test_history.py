@@ -15,7 +15,17 @@ from ladderlab.simulation.registry import SimulationRegistry
 from ladderlab.storage import Workspace
 
 from .helpers import st_program
-from .test_simulations_support import FAST, counter, entry, install, of_type, recv_until, registry, subscribe
+from .test_simulations_support import (
+    FAST,
+    counter,
+    counter_project,
+    entry,
+    install,
+    of_type,
+    recv_until,
+    registry,
+    subscribe,
+)
 
 __all__ = ["counter", "registry"]  # fixtures
 
@@ -344,6 +354,7 @@ SPIN_PROJECT = {
     "tasks": [{"name": "Fast", "interval": "T#10ms", "programs": ["Main"]}],
 }
 SPINS = 400_000
+SEEK_SPINS = 12_000_000  # some 86 ns each in the monitor variant here: a seek over them takes about 1 s
 
 
 def test_a_step_that_does_not_end_in_time_is_refused_and_touches_nothing(
@@ -403,3 +414,127 @@ def test_a_step_that_does_not_end_in_time_is_refused_and_touches_nothing(
                 assert (seen["MAIN.COUNT"], seen["MAIN.X"]) == (scan, x)
     finally:
         registry.close()
+
+
+def test_a_seek_that_does_not_end_in_time_is_refused_and_touches_nothing(
+    client: TestClient, workspace: Workspace
+) -> None:
+    """hist5 item 1: ``POST .../seek`` waits ``history_timeout_s`` (0.1 s here) like a step, find or diff: the seek
+    to scan 2, whose replay runs the call of a function that loops 12 million times again, takes longer, so it is
+    refused (409, in words) while the simulation's process goes on with it; once it ends, scan 2 is shown (x as the
+    loop left it). The live simulation (3 scans, n back to 0) and the recorded scans stay; the next seek works. A seek
+    over the websocket is refused alike (an error message in the same words)."""
+    settings = dataclasses.replace(FAST, history_timeout_s=0.1, watchdog_s=60.0)
+    registry = install(client, settings)
+    try:
+        workspace.create(Project.model_validate(SPIN_PROJECT))
+        sim = client.post("/api/projects/spin/simulations").json()["id"]
+        with client.websocket_connect(f"/api/simulations/{sim}/ws") as ws:
+            subscribe(ws, ["Main.x", "Main.Count", "Main.n"])
+            ws.send_json({"type": "single_cycle"})
+            ws.send_json({"type": "write", "path": "Main.n", "value": SEEK_SPINS})
+            ws.send_json({"type": "single_cycle"})
+            ws.send_json({"type": "write", "path": "Main.n", "value": 0})
+            ws.send_json({"type": "single_cycle"})
+            recv_until(ws, lambda m: m["type"] == "values" and m["scan"] == 3, timeout=30)
+
+            refused = client.post(f"/api/simulations/{sim}/seek", json={"scan": 2})
+            assert refused.status_code == 409
+            assert refused.json()["detail"]["message"] == (
+                "the seek to scan 2 did not end within 0.1 s (the server's history_timeout_s): scan 2 is shown once "
+                "it ends"
+            )
+            shown, before = recv_until(ws, _values(viewing=2), timeout=60)
+            seen: dict[str, object] = {}
+            for message in [*before, shown]:
+                if message["type"] == "values":
+                    seen.update(message["changed"])
+            assert (shown["scan"], seen["MAIN.X"], seen["MAIN.COUNT"], seen["MAIN.N"]) == (2, SEEK_SPINS, 2, SEEK_SPINS)
+
+        live = registry.get(sim).handle
+        assert [live.read(path) for path in ("Main.Count", "Main.n", "Main.x")] == [3, 0, 0]
+        info = client.get(f"/api/simulations/{sim}").json()
+        assert (info["scan_count"], info["history"]["first"], info["history"]["last"]) == (3, 1, 3)
+        assert info["state"] == "stopped"
+        answered = client.post(f"/api/simulations/{sim}/seek", json={"scan": 1})
+        assert answered.status_code == 200
+        assert {key: answered.json()["history"][key] for key in ("first", "last", "viewing")} == {
+            "first": 1,
+            "last": 3,
+            "viewing": 1,
+        }
+        with client.websocket_connect(f"/api/simulations/{sim}/ws") as ws:
+            seen = dict(subscribe(ws, ["Main.x", "Main.Count", "Main.n"])["changed"])
+            assert (seen["MAIN.COUNT"], seen["MAIN.X"], seen["MAIN.N"]) == (1, 0, 0)
+            ws.send_json({"type": "seek", "scan": 2})  # the websocket's seek waits as long, in the same words
+            error = recv_until(ws, of_type("error"), timeout=30)[0]
+            assert error == {
+                "type": "error",
+                "code": "bad_state",
+                "message": "the seek to scan 2 did not end within 0.1 s (the server's history_timeout_s): scan 2 is "
+                "shown once it ends",
+            }
+            recv_until(ws, _values(viewing=2), timeout=60)
+    finally:
+        registry.close()
+
+
+def test_the_history_budget_is_the_servers_history_mb(client: TestClient, workspace: Workspace) -> None:
+    """Issue 23 item 1 ("default 256 MB, configurable"): ``history_mb`` 3 gives each simulation a history of 3 MiB
+    (the default, 256 MiB, is in test_seek_over_rest_and_the_history_in_the_simulation_info); 0 keeps none, and a
+    seek says so."""
+    workspace.create(counter_project())
+    for history_mb, budget in ((3, 3 * 1024 * 1024), (0, None)):
+        registry = install(client, dataclasses.replace(FAST, history_mb=history_mb))
+        try:
+            sim = client.post("/api/projects/counter/simulations").json()["id"]
+            info = client.post(f"/api/simulations/{sim}/cycle").json()
+            assert (info["history"] or {}).get("budget_bytes") == budget
+            if budget is None:
+                refused = client.post(f"/api/simulations/{sim}/seek", json={"scan": 1})
+                assert refused.status_code == 409
+                assert refused.json()["detail"]["message"] == (
+                    "this simulation keeps no scan history (the server's history_mb is 0)"
+                )
+        finally:
+            registry.close()
+
+
+def test_step_back_through_a_past_scan(client: TestClient, counter: str) -> None:
+    """Issue 23 item 3 (stepping back and forth one network or line within a scan): scan 3 of the counter stepped
+    to before line 3, then back: before line 2 Count is 3 (line 1 ran) and Flag FALSE, before line 1 Count is 2;
+    a step back from there is refused in words; a step forward goes to line 2 again. Reference values: Count counts
+    the scans, Flag toggles every scan (FALSE after the two scans before scan 3)."""
+    cycle = f"/api/simulations/{counter}/cycle"
+    for _ in range(4):
+        client.post(cycle)
+    step = f"/api/simulations/{counter}/history/step"
+    with client.websocket_connect(f"/api/simulations/{counter}/ws") as ws:
+        seen = dict(subscribe(ws, ["Main.Count", "Main.Flag"])["changed"])
+        refused = client.post(f"/api/simulations/{counter}/history/step", json={"granularity": "back"})
+        assert refused.json()["detail"]["message"] == "go to a past scan first: a step goes through the scan shown"
+        client.post(f"/api/simulations/{counter}/seek", json={"scan": 3})
+        refused = client.post(step, json={"granularity": "back"})
+        assert refused.status_code == 409
+        assert refused.json()["detail"]["message"] == (
+            "step into the scan shown first: a step back goes to the point before the one reached"
+        )
+        points = []
+        for granularity in ("statement", "statement", "statement", "back", "back", "statement"):
+            info = client.post(step, json={"granularity": granularity}).json()
+            stepping = info["history"]["stepping"]
+            found = recv_until(
+                ws, lambda m, point=stepping: m["type"] == "values" and m["history"]["stepping"] == point
+            )
+            for m in [*found[1], found[0]]:
+                if m["type"] == "values":
+                    seen.update(m["changed"])
+            points.append((stepping["at"]["line"], seen["MAIN.COUNT"], seen["MAIN.FLAG"]))
+            if granularity == "back" and stepping["at"]["line"] == 1:
+                refused = client.post(step, json={"granularity": "back"})
+                assert refused.status_code == 409
+                assert refused.json()["detail"]["message"] == (
+                    "scan 3 is halted before its first network or line: go one scan back to see the one before"
+                )
+        assert points == [(1, 2, False), (2, 3, False), (3, 3, True), (2, 3, False), (1, 2, False), (2, 3, False)]
+        assert client.get(f"/api/simulations/{counter}").json()["scan_count"] == 4

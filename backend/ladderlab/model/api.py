@@ -245,11 +245,12 @@ class SeekScan(Model):
 
 class HistoryStep(Model):
     """Body of ``POST /api/simulations/{id}/history/step``: how far one step through the scan shown goes
-    (``statement``: the next network or line, into calls; ``over`` past the calls; ``out`` of the POU)."""
+    (``statement``: the next network or line, into calls; ``over`` past the calls; ``out`` of the POU; ``back``:
+    to the point before the one reached)."""
 
     model_config = ConfigDict(extra="forbid")
 
-    granularity: Literal["statement", "over", "out", "network"] = "statement"
+    granularity: Literal["statement", "over", "out", "network", "back"] = "statement"
 
 
 class HistoryFound(Model):

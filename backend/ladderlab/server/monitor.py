@@ -28,6 +28,7 @@ import itertools
 import json
 import logging
 from collections import deque
+from concurrent.futures import Future
 from typing import Any
 
 from fastapi import APIRouter, WebSocket
@@ -40,6 +41,7 @@ from ..simulation.registry import SimulationEntry, SimulationSettings, UnknownSi
 from ..simulation.remote import Frame, SimulationHandle, Watch
 from .context import registry_of
 from .security import websocket_origin_allowed
+from .simulations import late_message, seek_late
 
 log = logging.getLogger(__name__)
 
@@ -231,10 +233,24 @@ class MonitorClient:
                 await simulation.acall("trace_stop", owner=self.key)
                 self.trace_due = self.loop.time()
                 self.wake.set()
+            case m.Seek(scan=scan, branch=branch):
+                await self._history(simulation.request("seek", scan=scan, branch=branch), seek_late(scan))
             case m.BreakpointSet(pou=pou) | m.BreakpointClear(pou=pou):
                 await simulation.acall(request.type, pou=pou, **_where(request))
             case _:  # the other commands are the simulation's by the same name and fields
                 await simulation.acall(request.type, **request.model_dump(exclude={"type"}))
+
+    async def _history(self, request: Future[dict[str, Any]], late: tuple[str, str | None]) -> None:
+        """Wait for a request to the scan history at most ``history_timeout_s``, as REST does (``_history_request``),
+        then refuse it in the words of ``late``; the simulation's process goes on with it, and this client's next
+        messages are read meanwhile."""
+        timeout = self.settings.history_timeout_s
+        answer = asyncio.wrap_future(request)
+        answer.add_done_callback(lambda done: done.cancelled() or done.exception())  # a late failure: seen, dropped
+        try:
+            await asyncio.wait_for(asyncio.shield(answer), timeout)
+        except TimeoutError:
+            raise CommandError("bad_state", late_message(late, timeout)) from None
 
     async def _subscribe(self, request: m.Subscribe) -> None:
         limits = self.settings

@@ -239,8 +239,15 @@ def recording(sim_id: str, registry: RegistryDep, workspace: WorkspaceDep) -> Re
 @router.post("/api/simulations/{sim_id}/seek", response_model=SimulationInfo, responses=_DESCRIBED)
 def seek(sim_id: str, registry: RegistryDep, body: Annotated[SeekScan, Body()]) -> SimulationInfo:
     """Show a past scan (issue 23): its values and power flow, recomputed from the scan history, until
-    ``POST .../live``; the live scans go on. Scans are numbered as ``scan_count`` (422 outside the history)."""
-    return _command(registry.get(sim_id), "seek", scan=body.scan)
+    ``POST .../live``; the live scans go on. Scans are numbered as ``scan_count`` (422 outside the history).
+    409 when the replay does not end within ``history_timeout_s``: it goes on, and shows the scan once it ends."""
+    entry = registry.get(sim_id)
+    return simulation_info(entry, _history_request(entry, "seek", seek_late(body.scan), scan=body.scan)["info"])
+
+
+def seek_late(scan: int) -> tuple[str, str]:
+    """What a seek that does not end within ``history_timeout_s`` is refused with (REST and websocket)."""
+    return f"the seek to scan {scan} did not end", f"scan {scan} is shown once it ends"
 
 
 @router.post("/api/simulations/{sim_id}/live", response_model=SimulationInfo, responses=_DESCRIBED)
@@ -258,15 +265,8 @@ def history_step(
     those of that point (``history.stepping`` says where). The history and the live simulation stay as they are."""
     granularity = body.granularity if body is not None else "statement"
     entry = registry.get(sim_id)
-    timeout = entry.handle.settings.history_timeout_s  # the first step compiles the debug variant too
-    try:
-        return _command(entry, "history_step", timeout=timeout, granularity=granularity)
-    except TimeoutError:
-        raise ApiError(
-            409,
-            f"the step did not end within {timeout:g} s (the server's history_timeout_s): the scan shown shows "
-            "where it stands once it ends",
-        ) from None
+    late = ("the step did not end", "the scan shown shows where it stands once it ends")  # the first compiles too
+    return simulation_info(entry, _history_request(entry, "history_step", late, granularity=granularity)["info"])
 
 
 @router.get("/api/simulations/{sim_id}/history/find", response_model=HistoryFound, responses=_DESCRIBED)
@@ -298,17 +298,33 @@ def history_marks(sim_id: str, registry: RegistryDep) -> list[HistoryMark]:
     return [HistoryMark(**mark) for mark in _history_call(registry.get(sim_id), "history_marks", {})]
 
 
+#: What a question to the history that does not end in time is refused with (it goes on; its answer is lost).
+_UNANSWERED = ("the scan history did not answer", None)
+
+
 def _history_call(entry: SimulationEntry, op: str, args: dict[str, Any]) -> Any:
-    """A question to the scan history: it replays scans, so it may take longer than a command."""
+    """A question to the scan history (find, diff, marks): its ``result``."""
+    return _history_request(entry, op, _UNANSWERED, **args)["result"]
+
+
+def _history_request(entry: SimulationEntry, op: str, late: tuple[str, str | None], **args: Any) -> dict[str, Any]:
+    """Run ``op`` on the scan history: it replays scans, so it may take longer than a command, up to
+    ``history_timeout_s``; then 409 in the words of ``late`` (what did not end, what happens once it does): the
+    simulation's process goes on with it, the live scans wait meanwhile and are not changed. The reply: ``result``
+    and ``info``."""
     timeout = entry.handle.settings.history_timeout_s
     try:
-        return entry.handle.call(op, timeout=timeout, **args)
+        return entry.handle.request(op, **args).result(timeout)
     except CommandError as error:
         raise ApiError(409 if error.code == "bad_state" else 422, error.message) from None
     except TimeoutError:
-        raise ApiError(
-            409, f"the scan history did not answer within {timeout:g} s (the server's history_timeout_s)"
-        ) from None
+        raise ApiError(409, late_message(late, timeout)) from None
+
+
+def late_message(late: tuple[str, str | None], timeout: float) -> str:
+    """The words of a refusal after ``timeout`` seconds: what did not end (and what happens once it does)."""
+    what, then = late
+    return f"{what} within {timeout:g} s (the server's history_timeout_s)" + (f": {then}" if then else "")
 
 
 @router.delete(

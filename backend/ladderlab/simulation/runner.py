@@ -189,7 +189,8 @@ class SimRunner:
         self._view_history: History | None = None  # the history the scan shown comes from
         self._view: Simulation | None = None
         self._viewing: int | None = None  # the scan shown, numbered as frames number them (scans completed)
-        self._stepping = False  # the scan shown is being stepped through (history_step): the view is its stepper
+        #: the steps taken through the scan shown (history_step), by granularity; while any, the view is their stepper
+        self._steps: list[str] = []
         self._debug_program: CompiledProgram | None = None  # what a step through a past scan runs (compiled once)
         self._union_locations: dict[str, Location] = {}
         self._view_reader = self._reader
@@ -399,7 +400,7 @@ class SimRunner:
         self.sink.frame(
             {
                 "seq": self._seq,
-                "scan": self._viewing if self._stepping else sim.scan_count,  # halted within the scan shown
+                "scan": self._viewing if self._steps else sim.scan_count,  # halted within the scan shown
                 "time_ms": sim.time_ms,
                 "history": self.history_range(),
                 "wall": time.time(),  # when these values were read (latency measurements)
@@ -669,7 +670,7 @@ class SimRunner:
 
     def _step_point(self) -> dict[str, Any] | None:
         """Where the step through the scan shown stands (``at`` null: the scan ran to its end); None: no step."""
-        if not self._stepping or self._view is None:
+        if not self._steps or self._view is None:
             return None
         halted = self._view.halted
         at = at_halt(halted) if halted is not None else None
@@ -726,38 +727,52 @@ class SimRunner:
             raise CommandError("bad_value", _shown_numbers(scan, history)) from None
         self._view, self._viewing, self._view_history, self._full = view, scan, history, True
         self._view_reader = view.reader(self._union_locations)
-        self._stepping = False
+        self._steps = []
         return self.history_range()
 
     def live(self) -> None:
         """Show the live scans again."""
         self._view, self._viewing, self._view_history, self._full = None, None, None, True
-        self._stepping = False
+        self._steps = []
 
     def history_step(self, granularity: str = "statement") -> dict[str, Any] | None:
         """Step through the scan shown: the first step replays it in the debug variant from the state the scan
         before it left, its recorded inputs applied at its start (``History.stepper``), and halts at its first
         network or line (``statement``; ``over`` and ``out`` as live); each further step halts at the next one,
-        and after the last the scan is complete, as the seek showed it. The frames show the values and power flow
-        of the point reached; the history and the live simulation stay as they are. A seek or live leaves."""
+        and after the last the scan is complete, as the seek showed it. ``back`` goes to the point before the one
+        reached: the scan replayed again with one step less. The frames show the values and power flow of the
+        point reached; the history and the live simulation stay as they are. A seek or live leaves."""
         history, scan = self._view_history, self._viewing
         if history is None or scan is None:
             raise CommandError("bad_state", "go to a past scan first: a step goes through the scan shown")
-        if granularity not in ("statement", "over", "out", "network"):
+        if granularity not in ("statement", "over", "out", "network", "back"):
             raise CommandError(
-                "bad_value", f"a step through a past scan is statement, over, out or network, not {granularity!r}"
+                "bad_value",
+                f"a step through a past scan is statement, over, out, network or back, not {granularity!r}",
             )
-        view = self._view
-        if not self._stepping:
+        if granularity == "back":
+            if len(self._steps) < 2:
+                raise CommandError(
+                    "bad_state",
+                    f"scan {scan} is halted before its first network or line: go one scan back to see the one before"
+                    if self._steps
+                    else "step into the scan shown first: a step back goes to the point before the one reached",
+                )
+            steps = self._steps[:-1]
+        elif self._steps and (self._view is None or self._view.halted is None):
+            raise CommandError("bad_state", f"scan {scan} ran to its end: go to a scan to step through it")
+        else:
+            steps = [*self._steps, granularity]
+        view = self._view if self._steps and granularity != "back" else None
+        if view is None:
             try:
                 view = history.stepper(scan - 1, self._debug_variant())
             except HistoryUnavailable as error:
                 raise CommandError("bad_state", f"scan {scan} cannot be stepped through: {error}") from None
-        elif view is None or view.halted is None:
-            raise CommandError("bad_state", f"scan {scan} ran to its end: go to a scan to step through it")
-        assert view is not None
-        view.step(granularity)
-        self._view, self._stepping, self._full = view, True, True
+            for taken in steps[:-1]:  # the steps before the last again (none on the first step)
+                view.step(taken)
+        view.step(steps[-1])
+        self._view, self._steps, self._full = view, steps, True
         self._view_reader = view.reader(self._union_locations)
         return self.history_range()
 
@@ -848,7 +863,7 @@ class SimRunner:
 
     def _back_to_view(self) -> None:
         """A search moved the replay: back to the scan shown."""
-        if self._viewing is not None and self._view_history is not None and not self._stepping:
+        if self._viewing is not None and self._view_history is not None and not self._steps:
             self._view = self._view_history.seek(self._viewing - 1)
 
     def set_speed(self, scale: float) -> None:

@@ -34,6 +34,8 @@ function stores(running: string[] = []) {
     listSimulations: vi.fn(async () => running.map((id) => simulation(id))),
     resetSimulation: vi.fn(),
     deleteSimulation: vi.fn(async () => undefined),
+    seekScan: vi.fn(),
+    goLive: vi.fn(),
   };
   const sockets: string[] = [];
   const socket = (url: string) => {

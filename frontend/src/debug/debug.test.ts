@@ -185,6 +185,8 @@ describe("debug store (issue 9: breakpoints, continue, step)", () => {
         listSimulations: async () => [info],
         resetSimulation: async () => info,
         deleteSimulation: async () => undefined,
+        seekScan: async () => info,
+        goLive: async () => info,
       },
       () => {
         const s = {

@@ -764,6 +764,7 @@ export interface paths {
      * Seek
      * @description Show a past scan (issue 23): its values and power flow, recomputed from the scan history, until
      *     ``POST .../live``; the live scans go on. Scans are numbered as ``scan_count`` (422 outside the history).
+     *     409 when the replay does not end within ``history_timeout_s``: it goes on, and shows the scan once it ends.
      */
     post: operations["seek_api_simulations__sim_id__seek_post"];
     delete?: never;
@@ -1664,7 +1665,8 @@ export interface components {
     /**
      * HistoryStep
      * @description Body of ``POST /api/simulations/{id}/history/step``: how far one step through the scan shown goes
-     *     (``statement``: the next network or line, into calls; ``over`` past the calls; ``out`` of the POU).
+     *     (``statement``: the next network or line, into calls; ``over`` past the calls; ``out`` of the POU; ``back``:
+     *     to the point before the one reached).
      */
     HistoryStep: {
       /**
@@ -1672,7 +1674,7 @@ export interface components {
        * @default statement
        * @enum {string}
        */
-      granularity?: "statement" | "over" | "out" | "network";
+      granularity?: "statement" | "over" | "out" | "network" | "back";
     };
     /**
      * HistoryStepPoint

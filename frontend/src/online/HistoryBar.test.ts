@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { findPlaceholder, markClass, markOffset, shownScan, stepScan, steppingText } from "./HistoryBar";
+import { findPlaceholder, markClass, markOffset, shownScan, stepScan, steppingKey, steppingText } from "./HistoryBar";
 import { applyMessage, emptyMonitor, haltedAt } from "./monitor";
 
 describe("scan history in the monitor state (issue 23)", () => {
@@ -67,5 +67,14 @@ describe("stepping through a past scan (issue 23)", () => {
     );
     expect(steppingText(4, { at }, "MAIN, network 2")).toBe("Scan 4, halted before MAIN, network 2");
     expect(steppingText(4, { at: null }, null)).toBe("Scan 4 ran to its end");
+  });
+
+  it("steps forth with → (into the scan first) and back with ← while stepping", () => {
+    expect(steppingKey("ArrowRight", false, false)).toBe("statement");
+    expect(steppingKey("ArrowRight", true, false)).toBe("statement");
+    expect(steppingKey("ArrowRight", true, true)).toBeNull(); // the scan ran to its end
+    expect(steppingKey("ArrowLeft", true, true)).toBe("back");
+    expect(steppingKey("ArrowLeft", false, false)).toBeNull(); // not stepping: the slider's ← steps one scan
+    expect(steppingKey("Enter", true, false)).toBeNull();
   });
 });

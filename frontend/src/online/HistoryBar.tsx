@@ -27,6 +27,7 @@ export function HistoryBar() {
   const history = useOnline((s) => s.monitor.history);
   const online = useOnline((s) => s.phase === "online");
   const simulation = useOnline((s) => s.simulation);
+  const refused = useOnline((s) => s.historyError);
   if (!online || !history || history.last < history.first) return null;
   const s = onlineStore.getState();
   const scan = shownScan(history);
@@ -37,7 +38,7 @@ export function HistoryBar() {
     <span className={`history-bar${viewing ? " viewing" : ""}`} role="group" aria-label="Scan history">
       <button
         type="button"
-        onClick={() => back !== null && s.seek(back)}
+        onClick={() => back !== null && void s.seek(back)}
         disabled={back === null}
         title="One scan back"
       >
@@ -51,26 +52,31 @@ export function HistoryBar() {
           max={history.last}
           step={1}
           value={scan}
-          onChange={(event) => s.seek(Number(event.target.value))}
+          onChange={(event) => void s.seek(Number(event.target.value))}
           title={`History from scan ${history.first} to ${history.last}`}
         />
         <HistoryMarks first={history.first} last={history.last} marked={history.marked ?? 0} />
       </span>
       <button
         type="button"
-        onClick={() => forward !== null && s.seek(forward)}
+        onClick={() => forward !== null && void s.seek(forward)}
         disabled={forward === null}
         title="One scan forward"
       >
         ▶
       </button>
-      <button type="button" onClick={s.goLive} disabled={!viewing} title="Show the live scans again">
+      <button type="button" onClick={() => void s.goLive()} disabled={!viewing} title="Show the live scans again">
         Live
       </button>
       <span className="history-range" aria-label="History kept">
         {history.recording ? "recording · history only · " : ""}from scan {history.first}
         {(history.branch ?? 1) > 1 ? ` · branch ${history.branch} live` : ""}
       </span>
+      {refused ? (
+        <span className="history-note" role="alert" aria-label="History refused">
+          {refused}
+        </span>
+      ) : null}
       <HistoryFind scan={scan} />
       {simulation ? (
         <a
@@ -127,7 +133,7 @@ function HistoryMarks({ first, last, marked }: { first: number; last: number; ma
             style={{ left: `${markOffset(mark.scan, first, last)}%` }}
             title={`scan ${mark.scan}: ${mark.kinds.join(", ")}`}
             aria-label={`scan ${mark.scan}: ${mark.kinds.join(", ")}`}
-            onClick={() => onlineStore.getState().seek(mark.scan)}
+            onClick={() => void onlineStore.getState().seek(mark.scan)}
           />
         ))}
     </span>
@@ -153,7 +159,7 @@ function HistoryFind({ scan }: { scan: number }) {
     try {
       const found = await findInHistory(s.simulation, scan, direction, query);
       setNote(found === null ? `no scan ${direction > 0 ? "after" : "before"} ${scan} in the history` : null);
-      if (found !== null) s.seek(found);
+      if (found !== null) await s.seek(found);
     } catch (err) {
       setNote(err instanceof Error ? err.message : String(err));
     }
@@ -210,7 +216,7 @@ export function HistoryBanner({ describe, reveal }: HistoryBannerProps) {
       <div className="history-banner" role="status" aria-label="History view">
         Viewing scan {viewing} (history) · t = {timeMs} ms · the values are those of that scan
         {recording ? " of the recording" : "; the simulation goes on"}
-        <button type="button" onClick={onlineStore.getState().goLive}>
+        <button type="button" onClick={() => void onlineStore.getState().goLive()}>
           Back to live
         </button>
         <button
@@ -233,6 +239,14 @@ export function steppingText(viewing: number, stepping: object | null | undefine
   return where ? `Scan ${viewing}, halted before ${where}` : `Scan ${viewing} ran to its end`;
 }
 
+/** What an arrow key does in the stepping group: → the next step (into the scan first), ← back one (while
+ * stepping); null: nothing (another key, or → after the scan's end). */
+export function steppingKey(key: string, stepping: boolean, ended: boolean): "statement" | "back" | null {
+  if (key === "ArrowRight" && !ended) return "statement";
+  if (key === "ArrowLeft" && stepping) return "back";
+  return null;
+}
+
 /** Step through the scan shown (replayed from the scan before it, in the debug code): the diagrams and values show
  * the point reached, the network or line about to run is marked and shown; the recorded history does not change. */
 function HistoryStepping({ viewing, describe, reveal }: { viewing: number } & HistoryBannerProps) {
@@ -243,7 +257,7 @@ function HistoryStepping({ viewing, describe, reveal }: { viewing: number } & Hi
   }, [at, reveal]);
   const [note, setNote] = useState<string | null>(null);
   const ended = stepping != null && !stepping.at;
-  const step = async (granularity: "statement" | "over") => {
+  const step = async (granularity: "statement" | "over" | "back") => {
     const id = onlineStore.getState().simulation;
     if (!id) return;
     try {
@@ -254,23 +268,39 @@ function HistoryStepping({ viewing, describe, reveal }: { viewing: number } & Hi
     }
   };
   return (
-    <div className="history-stepping" role="group" aria-label="Step through the scan">
+    <div
+      className="history-stepping"
+      role="group"
+      aria-label="Step through the scan"
+      title="← and → step back and forth while a button here has the focus"
+      onKeyDown={(event) => {
+        const by = steppingKey(event.key, stepping != null, ended);
+        if (!by) return;
+        event.preventDefault();
+        void step(by);
+      }}
+    >
       <span aria-label="Step point">{steppingText(viewing, stepping, at ? describe(at) : null)}</span>
       <button
         type="button"
         onClick={() => void step("statement")}
         disabled={ended}
-        title="Run the scan shown to its next network or line (into the blocks it calls)"
+        title="Run the scan shown to its next network or line (into the blocks it calls; →)"
       >
         {stepping ? "Next step" : "Step into this scan"}
       </button>
+      {stepping ? (
+        <button type="button" onClick={() => void step("back")} title="Back to the network or line before (←)">
+          Step back
+        </button>
+      ) : null}
       {stepping ? (
         <button type="button" onClick={() => void step("over")} disabled={ended} title="Past the calls">
           Step over
         </button>
       ) : null}
       {stepping ? (
-        <button type="button" onClick={() => onlineStore.getState().seek(viewing)} title="The scan complete again">
+        <button type="button" onClick={() => void onlineStore.getState().seek(viewing)} title="The scan complete again">
           Whole scan
         </button>
       ) : null}

@@ -38,6 +38,17 @@ export function resetSimulation(id: string, cold = false): Promise<SimulationInf
   return unwrap(http.POST("/api/simulations/{sim_id}/reset", { ...simulation(id), body: { cold } }));
 }
 
+/** Shows past scan `scan` (numbered as `values.scan` numbers scans) until `goLive`; the live scans go on. A 409
+ * ApiError says why it was refused, e.g. that its replay did not end within the server's history_timeout_s. */
+export function seekScan(id: string, scan: number): Promise<SimulationInfo> {
+  return unwrap(http.POST("/api/simulations/{sim_id}/seek", { ...simulation(id), body: { scan } }));
+}
+
+/** Shows the live scans again after `seekScan`. */
+export function goLive(id: string): Promise<SimulationInfo> {
+  return unwrap(http.POST("/api/simulations/{sim_id}/live", simulation(id)));
+}
+
 export async function deleteSimulation(id: string): Promise<void> {
   await unwrap(http.DELETE("/api/simulations/{sim_id}", simulation(id)));
 }
@@ -60,13 +71,17 @@ export async function findInHistory(
   return found.scan ?? null;
 }
 
-/** The newest scans of the history with an input or a runtime error: the timeline's marks. */
 /** One step through the scan shown: the first replays it from the scan before and halts at its first network or
- * line, each next at the next one (the values come with the frames; `history.stepping` says where). */
-export function historyStep(id: string, granularity: "statement" | "over" = "statement"): Promise<SimulationInfo> {
+ * line, each next at the next one, `back` at the one before (the values come with the frames; `history.stepping`
+ * says where). */
+export function historyStep(
+  id: string,
+  granularity: "statement" | "over" | "back" = "statement",
+): Promise<SimulationInfo> {
   return unwrap(http.POST("/api/simulations/{sim_id}/history/step", { ...simulation(id), body: { granularity } }));
 }
 
+/** The newest scans of the history with an input or a runtime error: the timeline's marks. */
 export function historyMarks(id: string): Promise<HistoryMark[]> {
   return unwrap(http.GET("/api/simulations/{sim_id}/history/marks", simulation(id)));
 }
@@ -89,6 +104,8 @@ export interface SimulationApi {
   listSimulations(): Promise<SimulationInfo[]>;
   resetSimulation(id: string, cold?: boolean): Promise<SimulationInfo>;
   deleteSimulation(id: string): Promise<void>;
+  seekScan(id: string, scan: number): Promise<SimulationInfo>;
+  goLive(id: string): Promise<SimulationInfo>;
 }
 
 export const simulationApi: SimulationApi = {
@@ -97,4 +114,6 @@ export const simulationApi: SimulationApi = {
   listSimulations,
   resetSimulation,
   deleteSimulation,
+  seekScan,
+  goLive,
 };

@@ -55,6 +55,8 @@ function setup(overrides: Partial<SimulationApi> = {}) {
     listSimulations: vi.fn(async () => [info(3, 0.4)]),
     resetSimulation: vi.fn(async () => info(0, 0)),
     deleteSimulation: vi.fn(async () => undefined),
+    seekScan: vi.fn(async () => info(3, 0.4)),
+    goLive: vi.fn(async () => info(3, 0.4)),
     ...overrides,
   };
   const store = createOnlineStore(
@@ -316,6 +318,65 @@ describe("online store", () => {
     await store.getState().goOffline();
     await vi.advanceTimersByTimeAsync(3000);
     expect(api.getSimulation).toHaveBeenCalledTimes(2);
+  });
+});
+
+describe("going to a past scan (issue 23: REST seek, refused in words)", () => {
+  /** A seek the test answers when it wants: `answer(i)` ends the i-th, `refuse(i, why)` refuses it. */
+  function pending() {
+    const calls: { what: string; resolve: () => void; reject: (err: Error) => void }[] = [];
+    const call = (what: string) =>
+      new Promise<SimulationInfo>((resolve, reject) => {
+        calls.push({ what, resolve: () => resolve(info(3, 0.4)), reject });
+      });
+    return {
+      calls,
+      seekScan: vi.fn((_id: string, scan: number) => call(`seek ${scan}`)),
+      goLive: vi.fn(() => call("live")),
+    };
+  }
+
+  it("sends one seek at a time in the order asked, the newest of those asked meanwhile, then back to live", async () => {
+    const server = pending();
+    const { store, sockets } = setup({ seekScan: server.seekScan, goLive: server.goLive });
+    await store.getState().compile("demo");
+    sockets[0]!.open();
+    const first = store.getState().seek(4);
+    void store.getState().seek(5); // a drag of the slider: 5 and 6 asked while 4 runs; only 6 is sent
+    void store.getState().seek(6);
+    await vi.advanceTimersByTimeAsync(0);
+    expect(server.calls.map((c) => c.what)).toEqual(["seek 4"]);
+    server.calls[0]!.resolve();
+    await vi.advanceTimersByTimeAsync(0);
+    expect(server.calls.map((c) => c.what)).toEqual(["seek 4", "seek 6"]);
+    const live = store.getState().goLive();
+    server.calls[1]!.resolve();
+    await vi.advanceTimersByTimeAsync(0);
+    expect(server.calls.map((c) => c.what)).toEqual(["seek 4", "seek 6", "live"]);
+    server.calls[2]!.resolve();
+    await Promise.all([first, live]);
+    expect(server.seekScan).toHaveBeenCalledWith("s1", 6);
+    expect(sockets[0]!.sent.filter((m) => (m as { type: string }).type !== "subscribe")).toEqual([]);
+    expect(store.getState().historyError).toBeNull();
+  });
+
+  it("keeps the server's words when a seek is refused, until a seek is answered", async () => {
+    const server = pending();
+    const { store, sockets } = setup({ seekScan: server.seekScan, goLive: server.goLive });
+    await store.getState().compile("demo");
+    sockets[0]!.open();
+    const why =
+      "the seek to scan 2 did not end within 30 s (the server's history_timeout_s): scan 2 is shown once it ends";
+    const refused = store.getState().seek(2);
+    await vi.advanceTimersByTimeAsync(0);
+    server.calls[0]!.reject(new ApiError(why, 409, { message: why }));
+    await refused;
+    expect(store.getState().historyError).toBe(why);
+    const next = store.getState().seek(1);
+    await vi.advanceTimersByTimeAsync(0);
+    server.calls[1]!.resolve();
+    await next;
+    expect(store.getState().historyError).toBeNull();
   });
 });
 

@@ -75,6 +75,8 @@ export interface OnlineData {
    * writes them. Keyed by upper-case path; the value as it will be sent.
    */
   prepared: Readonly<Record<string, WriteValue>>;
+  /** Why the last seek (or back to live) was refused, in the server's words; null once one is answered. */
+  historyError: string | null;
 }
 
 export interface OnlineActions {
@@ -98,10 +100,12 @@ export interface OnlineActions {
   force(path: string, value: WriteValue): void;
   unforce(path: string): void;
   unforceAll(): void;
-  /** Shows past scan `scan` from the scan history (values as `values.scan` numbers them); the live scans go on. */
-  seek(scan: number): void;
+  /** Shows past scan `scan` from the scan history (values as `values.scan` numbers them); the live scans go on.
+   * Seeks and goLive go one at a time in the order asked; while one runs, only the newest asked waits (a drag of
+   * the slider does not queue every scan it passes). A refusal lands in `historyError`. */
+  seek(scan: number): Promise<void>;
   /** Shows the live scans again after `seek`. */
-  goLive(): void;
+  goLive(): Promise<void>;
   /** Continues from the scan shown: a new branch of the history becomes live (the old one is kept). */
   fork(): void;
   /** Prepares `value` for `path` (null: drops its prepared value). */
@@ -140,6 +144,7 @@ export const offline: Omit<OnlineData, "views" | "watch" | "watchExpanded" | "in
   monitor: emptyMonitor,
   lastScanMs: null,
   prepared: {},
+  historyError: null,
 };
 
 /** The union of every view's subscription: paths without repeats, element ids merged per instance. */
@@ -224,6 +229,30 @@ export function createOnlineStore(
         s.onmessage = null;
         s.close();
       }
+    };
+
+    /** The scan to show next (`"live"`: the live scans) and the request under way, if any (see `seek`). */
+    let wanted: number | "live" | null = null;
+    let showing: Promise<void> | null = null;
+    const show = (target: number | "live"): Promise<void> => {
+      wanted = target;
+      if (showing) return showing;
+      showing = (async () => {
+        while (wanted !== null) {
+          const id = get().simulation;
+          const next: number | "live" = wanted;
+          wanted = null;
+          if (!id) break;
+          try {
+            await (next === "live" ? api.goLive(id) : api.seekScan(id, next));
+            if (get().simulation === id) set({ historyError: null });
+          } catch (err) {
+            if (get().simulation === id) set({ historyError: message(err) });
+          }
+        }
+        showing = null;
+      })();
+      return showing;
     };
 
     let retry: ReturnType<typeof setTimeout> | null = null;
@@ -375,8 +404,8 @@ export function createOnlineStore(
       force: (path, value) => void get().send({ type: "force", path, value }),
       unforce: (path) => void get().send({ type: "unforce", path }),
       unforceAll: () => void get().send({ type: "unforce_all" }),
-      seek: (scan) => void get().send({ type: "seek", scan }),
-      goLive: () => void get().send({ type: "live" }),
+      seek: (scan) => show(scan),
+      goLive: () => show("live"),
       fork: () => void get().send({ type: "fork" }),
 
       prepare(path, value) {

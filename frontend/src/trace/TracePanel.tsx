@@ -266,7 +266,7 @@ export function TracePanel() {
   const showScan = (scan: number) => {
     const online = onlineStore.getState();
     const history = online.monitor.history;
-    if (history && scan >= history.first && scan <= history.last) online.seek(scan);
+    if (history && scan >= history.first && scan <= history.last) void online.seek(scan);
   };
   const exportCsv = () => {
     if (!ring) return;
