@@ -176,3 +176,21 @@ def test_codesys_oo_documents_in_shared_external_import_and_build():
         result = import_plcopen(path.read_bytes(), file=str(path))
         assert result.project is not None, path
         assert [d.format() for d in build_project(result.project).diagnostics if d.severity == "error"] == [], path
+
+
+def test_a_property_of_a_codesys_interface_is_reported_not_dropped_silently():
+    text = FIXTURE.read_text()
+    prop = (
+        '<data name="http://www.3s-software.com/plcopenxml/property" handleUnknown="implementation">'
+        '<Property name="Level"><interface><returnType><INT /></returnType></interface></Property></data>'
+    )
+    marker = '<Interface name="IBase" ObjectId="5f1c1a35-0d87-4bd4-9f2c-3a1b7d1b0a10">\n        <addData>'
+    assert marker in text
+    result = import_plcopen(text.replace(marker, marker + prop).encode())
+    assert [(d.code, d.severity, d.message) for d in result.diagnostics if d.code == "PLCOPEN-UNSUPPORTED"] == [
+        (
+            "PLCOPEN-UNSUPPORTED",
+            "warning",
+            "the PROPERTY Level of INTERFACE IBase was left out: LadderLab's INTERFACEs declare methods only",
+        )
+    ]

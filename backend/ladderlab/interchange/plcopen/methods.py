@@ -222,6 +222,14 @@ def read_interfaces(
             lines.append(f"METHOD {method.get('name', '')}" + (f" : {return_type}" if return_type else ""))
             lines += [text] if text else []
             lines.append("END_METHOD")
+        for prop in _entries(element, reader, PROPERTY_DATA, "Property"):
+            reader.report(
+                "PLCOPEN-UNSUPPORTED",
+                f"the PROPERTY {prop.get('name', '')} of INTERFACE {name} was left out: LadderLab's INTERFACEs "
+                "declare methods only",
+                prop,
+                severity="warning",
+            )
         found.append((name, "\n".join([*lines, "END_INTERFACE"])))
     return found
 
