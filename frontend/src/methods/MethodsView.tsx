@@ -1,4 +1,5 @@
-// The Methods tab of a function block (issue 25, CODESYS's objects under an FB): its methods and properties listed,
+// The Methods tab of a function block (issue 25, CODESYS's objects under an FB): its methods and properties listed, their
+// access (PUBLIC/PRIVATE/PROTECTED/INTERNAL), FINAL and ABSTRACT set,
 // added, renamed (with every call, previewed: the tree's rename dialog) and deleted; a method's result type, declarations and body, and a property's type and GET / SET
 // texts, edited in the ST editor with the live check's diagnostics; breakpoints in a method's body.
 import { useState, type FormEvent } from "react";
@@ -18,9 +19,18 @@ import {
   memberFile,
   memberOf,
   renameMember,
+  ACCESS_MEANING,
+  withModifier,
+  type Access,
   type Edited,
   type MemberKind,
 } from "./members";
+
+/** What FINAL and ABSTRACT mean, as the checkboxes' tooltips say. */
+const MODIFIER_MEANING = {
+  final: "FINAL: a function block derived from this one cannot override it",
+  abstract: "ABSTRACT: no body here; the function block is ABSTRACT and a derived one implements it",
+};
 
 export function MethodsView({ pou, focus }: { pou: Pou; focus: Focus | null }) {
   const [selected, setSelected] = useState<string | null>(
@@ -210,6 +220,35 @@ function MemberEditor({
             }
           />
         </label>
+        <label title={ACCESS_MEANING[member.access ?? "PUBLIC"]}>
+          Access{" "}
+          <select
+            aria-label={`Access of ${member.name}`}
+            value={member.access ?? "PUBLIC"}
+            disabled={readOnly !== null}
+            onChange={(e) => change<Method | Property>((m) => ({ ...m, access: e.target.value as Access }))}
+          >
+            {(Object.keys(ACCESS_MEANING) as Access[]).map((access) => (
+              <option key={access} value={access}>
+                {access}
+              </option>
+            ))}
+          </select>
+        </label>
+        {kind === "method"
+          ? (["final", "abstract"] as const).map((which) => (
+              <label key={which} title={MODIFIER_MEANING[which]}>
+                <input
+                  type="checkbox"
+                  aria-label={`${which.toUpperCase()} ${member.name}`}
+                  checked={Boolean((member as Method)[which])}
+                  disabled={readOnly !== null}
+                  onChange={(e) => change<Method>((m) => withModifier(m, which, e.target.checked))}
+                />{" "}
+                {which.toUpperCase()}
+              </label>
+            ))
+          : null}
         {readOnly === null ? (
           <>
             <input
