@@ -27,6 +27,7 @@ from ...model.project import Accessor, Method, Pou, Property
 from ...st import ast
 from ...st.parser import parse_declarations, parse_source
 from ...st.printer import print_type
+from ...storage.st_text import method_header
 from .vars import parse_type_text, write_type, write_var_list
 from .xml_io import Reader, formatted_text, info_text, local, sub, text_content
 
@@ -153,13 +154,6 @@ def write_methods(node: ET.Element, pou: Pou) -> ET.Element | None:
                     write_var_list(interface, block)
                 formatted_text(sub(holder, "body"), "ST", accessor.body)
     return add
-
-
-def method_header(method: Method) -> str:
-    """A method's first line as ST writes it: ``METHOD PRIVATE FINAL Name : INT``."""
-    words = ["METHOD", method.access, "FINAL" if method.final else "", "ABSTRACT" if method.abstract else ""]
-    result = f" : {method.return_type}" if method.return_type else ""
-    return " ".join(w for w in words if w) + f" {method.name}{result}"
 
 
 def _write_method(
