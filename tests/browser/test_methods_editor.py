@@ -9,7 +9,7 @@ import pytest
 from playwright.sync_api import expect
 
 from .conftest import ARTIFACTS
-from .steps import _request, go_online, open_pou, store_project, watch
+from .steps import _request, go_online, open_pou, panel_tab, store_project, watch
 from .test_cfc_workflow import cycles
 
 pytestmark = pytest.mark.browser
@@ -122,3 +122,84 @@ def test_add_edit_rename_and_delete_methods_then_run_and_halt_in_one(page, serve
     debug.get_by_text("Halted at COUNTER.SCALED, line 1").wait_for()
     expect(editor(page, "Counter.Scaled body").locator(".cm-halted-line")).to_have_text("Scaled := n * k;")
     page.screenshot(path=str(ARTIFACTS / "methods-breakpoint.png"))
+
+
+SPECIFIERS = {
+    "name": "specifiers",
+    "pous": [
+        {
+            "name": "Counter",
+            "kind": "function_block",
+            "language": "st",
+            "declarations": "VAR\n    n : INT;\nEND_VAR",
+            "body": "",
+            "methods": [
+                {"name": "Clamp", "return_type": "INT", "body": "Clamp := n;"},
+                {"name": "Total", "return_type": "INT", "body": "Total := Clamp();"},
+            ],
+        },
+        {
+            "name": "Bigger",
+            "kind": "function_block",
+            "language": "st",
+            "extends": "Counter",
+            "declarations": "",
+            "body": "",
+            "methods": [{"name": "Total", "return_type": "INT", "body": "Total := 2;"}],
+        },
+        {
+            "name": "Main",
+            "kind": "program",
+            "language": "st",
+            "declarations": "VAR\n    c : Counter;\n    b : Bigger;\n    y : INT;\nEND_VAR",
+            "body": "y := c.Clamp() + b.Total();",
+        },
+    ],
+}
+
+
+def test_access_final_and_abstract_are_set_in_the_methods_tab_saved_exported_and_checked(page, server):
+    """Issue 25 item 5: Clamp made PRIVATE and Total FINAL in the browser; the tree shows them, the save keeps them,
+    the ST export writes them, and the check locates Main's call of the PRIVATE method and Bigger's override of the
+    FINAL one. FINAL and ABSTRACT exclude each other."""
+    store_project(server, SPECIFIERS)
+    page.goto(server)
+    open_pou(page, "specifiers", "Counter")
+    page.get_by_role("tab", name="Methods").click()
+    members = page.get_by_role("list", name="Methods and properties of Counter")
+    members.get_by_role("button", name="Clamp").click()
+    expect(page.get_by_label("Access of Clamp")).to_have_value("PUBLIC")
+    page.get_by_label("Access of Clamp").select_option("PRIVATE")
+    tree = page.get_by_role("navigation", name="Project tree")
+    expect(tree.get_by_role("button", name="Clamp : INT (PRIVATE)")).to_be_visible()
+
+    members.get_by_role("button", name="Total").click()
+    final, abstract = page.get_by_label("FINAL Total"), page.get_by_label("ABSTRACT Total")
+    final.check()
+    abstract.check()
+    expect(final).not_to_be_checked()
+    expect(tree.get_by_role("button", name="Total : INT (ABSTRACT)")).to_be_visible()
+    abstract.uncheck()
+    final.check()
+    expect(abstract).not_to_be_checked()
+    expect(tree.get_by_role("button", name="Total : INT (FINAL)")).to_be_visible()
+    page.screenshot(path=str(ARTIFACTS / "methods-specifiers.png"))
+
+    page.keyboard.press("Control+s")
+    page.get_by_text("All changes saved").wait_for()
+    project = _request("GET", f"{server}/api/projects/specifiers")["project"]
+    assert [(m["name"], m["access"], m["final"], m["abstract"]) for m in project["pous"][0]["methods"]] == [
+        ("Clamp", "PRIVATE", False, False),
+        ("Total", "PUBLIC", True, False),
+    ]
+    text = _request("GET", f"{server}/api/projects/specifiers/export/st")["text"]
+    assert "METHOD PRIVATE Clamp : INT" in text and "METHOD PUBLIC FINAL Total : INT" in text
+
+    page.keyboard.press("Control+Shift+B")  # Check
+    panels = panel_tab(page, "Diagnostics")
+    items = panels.get_by_role("list", name="Diagnostics").locator(":scope > li")
+    expect(items).to_have_count(2)
+    texts = " | ".join(items.all_inner_texts())
+    assert "the method Counter.Clamp is PRIVATE: only its own function block may call it" in texts
+    assert "Counter.Total is FINAL: Bigger cannot override it" in texts
+    expect(panels.get_by_role("button", name="ST-NOT-ACCESSIBLE")).to_be_visible()
