@@ -210,8 +210,8 @@ def new_name_problem(project: Project, old: str, new: str) -> str | None:
 
 
 def member_name_problem(project: Project, fb: str, old: str, new: str) -> str | None:
-    """Why method or property ``old`` of function block ``fb`` cannot become ``new`` (no such member, not an
-    identifier, another member's name), or None."""
+    """Why method or property ``old`` of function block (or INTERFACE) ``fb`` cannot become ``new`` (no such member,
+    not an identifier, the name of another member of ``fb`` or of an FB or INTERFACE renamed with it), or None."""
     pou = project.pou(fb)
     members = (
         [m.name for m in pou.methods] + [p.name for p in pou.properties] if pou else _interface_members(project, fb)
@@ -222,7 +222,15 @@ def member_name_problem(project: Project, fb: str, old: str, new: str) -> str | 
     if problem:
         return f"{new or 'an empty name'} is no IEC name: {problem}"
     other = next((m for m in members if m.upper() == new.upper() and m.upper() != old.upper()), None)
-    return f"{fb} already has a member called {other}" if other else None
+    if other:
+        return f"{fb} already has a member called {other}"
+    data = project.model_dump(by_alias=True)
+    types = ProjectTypes.of(data)
+    names = {p["name"].upper(): p["name"] for p in data["pous"]}
+    for kind in sorted(types.group(fb, old) - {fb.upper()}):
+        if new.upper() in types.members.get(kind, set()) and new.upper() != old.upper():
+            return f"{names.get(kind, kind)}, renamed with it, already has a member called {new}"
+    return None
 
 
 def _interface_members(project: Project, name: str) -> list[str]:

@@ -1,6 +1,6 @@
 // The method and property operations of the Methods tab (issue 25): pure edits of a function block.
 import { describe, expect, it } from "vitest";
-import type { Pou } from "../generated/api";
+import type { Method, Pou } from "../generated/api";
 import { focusOf, methodPlace } from "../store/panels";
 import {
   addMember,
@@ -94,7 +94,7 @@ describe("places in a member's texts", () => {
 });
 
 describe("method specifiers", () => {
-  const bump = fb.methods![0];
+  const bump: Method = { name: "Bump", access: "PUBLIC", final: false, abstract: false, declarations: "", body: "" };
   it("FINAL and ABSTRACT exclude each other: setting one clears the other, clearing leaves the other", () => {
     const final = withModifier(bump, "final", true);
     expect([final.final, final.abstract]).toEqual([true, false]);
