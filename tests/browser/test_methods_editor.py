@@ -5,6 +5,8 @@ Main's call of it (previewed, one undo step) and another deleted; a breakpoint i
 
 from __future__ import annotations
 
+import json
+
 import pytest
 from playwright.sync_api import expect
 
@@ -158,9 +160,9 @@ SPECIFIERS = {
 }
 
 
-def test_access_final_and_abstract_are_set_in_the_methods_tab_saved_exported_and_checked(page, server):
-    """Issue 25 item 5: Clamp made PRIVATE and Total FINAL in the browser; the tree shows them, the save keeps them,
-    the ST export writes them, and the check locates Main's call of the PRIVATE method and Bigger's override of the
+def test_access_final_and_abstract_are_set_in_the_methods_tab_saved_and_checked(page, server, tmp_path):
+    """Issue 25 item 5: Clamp made PRIVATE and Total FINAL in the browser; the tree shows them, the save writes them
+    in the FB's file (tests/interchange/test_codesys_oo_import.py exports them), and the check locates Main's call of the PRIVATE method and Bigger's override of the
     FINAL one. FINAL and ABSTRACT exclude each other."""
     store_project(server, SPECIFIERS)
     page.goto(server)
@@ -192,8 +194,11 @@ def test_access_final_and_abstract_are_set_in_the_methods_tab_saved_exported_and
         ("Clamp", "PRIVATE", False, False),
         ("Total", "PUBLIC", True, False),
     ]
-    text = _request("GET", f"{server}/api/projects/specifiers/export/st")["text"]
-    assert "METHOD PRIVATE Clamp : INT" in text and "METHOD PUBLIC FINAL Total : INT" in text
+    saved = json.loads((tmp_path / "workspace" / "specifiers" / "pous" / "Counter.st.json").read_text())
+    assert [(m["name"], m["access"], m["final"]) for m in saved["methods"]] == [
+        ("Clamp", "PRIVATE", False),
+        ("Total", "PUBLIC", True),
+    ]
 
     page.keyboard.press("Control+Shift+B")  # Check
     panels = panel_tab(page, "Diagnostics")
