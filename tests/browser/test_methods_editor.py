@@ -208,3 +208,97 @@ def test_access_final_and_abstract_are_set_in_the_methods_tab_saved_and_checked(
     assert "the method Counter.Clamp is PRIVATE: only its own function block may call it" in texts
     assert "Counter.Total is FINAL: Bigger cannot override it" in texts
     expect(panels.get_by_role("button", name="ST-NOT-ACCESSIBLE")).to_be_visible()
+
+
+INTERFACED = {
+    "name": "interfaced",
+    "types": "INTERFACE IBump\nMETHOD Bump : INT\nEND_METHOD\nEND_INTERFACE",
+    "pous": [
+        {
+            "name": "Counter",
+            "kind": "function_block",
+            "language": "st",
+            "implements": ["IBump"],
+            "declarations": "VAR\n    n : INT;\nEND_VAR",
+            "body": "",
+            "methods": [{"name": "Bump", "return_type": "INT", "body": "n := n + 1;\nBump := n;"}],
+        },
+        {
+            "name": "Other",
+            "kind": "function_block",
+            "language": "st",
+            "implements": ["IBump"],
+            "declarations": "",
+            "body": "",
+            "methods": [{"name": "Bump", "return_type": "INT", "body": "Bump := 7;"}],
+        },
+        {
+            "name": "Holder",
+            "kind": "function_block",
+            "language": "st",
+            "declarations": "VAR_OUTPUT\n    inner : Counter;\nEND_VAR",
+            "body": "",
+        },
+        {
+            "name": "Main",
+            "kind": "program",
+            "language": "st",
+            "declarations": "VAR\n    h : Holder;\n    o : Other;\n    i : IBump;\n    a : INT;\n    b : INT;\nEND_VAR",
+            "body": "a := h.inner.Bump();\ni := o;\nb := i.Bump();",
+        },
+    ],
+}
+
+
+def test_renaming_an_interface_method_from_the_methods_tab_renames_it_everywhere_in_one_undo_step(page, server):
+    """Issue 25 item 5 (rename): Counter's Bump implements IBump's, so renaming it in the Methods tab previews and
+    renames IBump's METHOD line, Other's implementation, the call through the member path h.inner and the one
+    through the interface variable i; one Undo takes all of it back."""
+    store_project(server, INTERFACED)
+    page.goto(server)
+    open_pou(page, "interfaced", "Counter")
+    page.get_by_role("tab", name="Methods").click()
+    members = page.get_by_role("list", name="Methods and properties of Counter")
+    members.get_by_role("button", name="Bump").click()
+    page.get_by_label("New name of Bump").fill("Add")
+    page.get_by_role("button", name="Rename", exact=True).click()
+    dialog = page.get_by_role("dialog", name="Rename Counter.Bump")
+    dialog.get_by_role("button", name="Preview").click()
+    places = dialog.get_by_role("list", name="References").locator("li")
+    places.first.wait_for()
+    assert places.all_inner_texts() == [
+        "Types line 2 METHOD Bump : INT",
+        "Counter METHOD Bump",
+        "Counter.Bump, body line 2 Bump := n;",
+        "Other METHOD Bump",
+        "Other.Bump, body line 1 Bump := 7;",
+        "Main, body line 1 a := h.inner.Bump();",
+        "Main, body line 3 b := i.Bump();",
+    ]
+    dialog.get_by_role("button", name="Rename", exact=True).click()
+    expect(dialog).to_have_count(0)
+    expect(members.get_by_role("button")).to_have_text(["MAdd"])
+    page.get_by_role("button", name="Undo rename Bump to Add").click()
+    expect(members.get_by_role("button")).to_have_text(["MBump"])
+    page.keyboard.press("Control+s")
+    page.get_by_text("All changes saved").wait_for()
+    assert _request("GET", f"{server}/api/projects/interfaced")["project"]["types"] == INTERFACED["types"]
+
+    members.get_by_role("button", name="Bump").click()
+    page.get_by_label("New name of Bump").fill("Add")
+    page.get_by_role("button", name="Rename", exact=True).click()
+    dialog.get_by_role("button", name="Preview").click()
+    dialog.get_by_role("list", name="References").locator("li").first.wait_for()
+    dialog.get_by_role("button", name="Rename", exact=True).click()
+    expect(dialog).to_have_count(0)
+    page.keyboard.press("Control+s")
+    page.get_by_text("All changes saved").wait_for()
+    project = _request("GET", f"{server}/api/projects/interfaced")["project"]
+    assert project["types"] == "INTERFACE IBump\nMETHOD Add : INT\nEND_METHOD\nEND_INTERFACE"
+    assert [(p["name"], [m["name"] for m in p.get("methods") or []]) for p in project["pous"]] == [
+        ("Counter", ["Add"]),
+        ("Other", ["Add"]),
+        ("Holder", []),
+        ("Main", []),
+    ]
+    assert project["pous"][3]["body"] == "a := h.inner.Add();\ni := o;\nb := i.Add();"
