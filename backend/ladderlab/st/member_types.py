@@ -53,7 +53,11 @@ class ProjectTypes:
                     if isinstance(decl.type, ast.StructType):
                         members = decl.type.members
                         types.fields[decl.name.upper()] = {
-                            n.name.upper(): kind for d in members if (kind := _type_name(d.type)) for n in d.names
+                            n.name.upper(): kind
+                            for d in members
+                            if (kind := _type_name(d.type))
+                            for n in d.names
+                            if n.name
                         }
         own: dict[str, dict[str, str]] = {}
         for pou in data["pous"]:

@@ -199,7 +199,7 @@ def write_interfaces(add: ET.Element, types: str) -> None:
 
 
 def read_interfaces(
-    root: ET.Element, reader: Reader, declarations: Callable[[ET.Element], tuple]
+    root: ET.Element, reader: Reader, declarations: Callable[[ET.Element], tuple[str, str | None]]
 ) -> list[tuple[str, str]]:
     """The INTERFACEs of CODESYS's (or TwinCAT's) project addData as (name, ST text): method prototypes with their
     variables and result (read by ``declarations``), EXTENDS from the header text."""
