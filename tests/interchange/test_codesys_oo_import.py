@@ -194,3 +194,25 @@ def test_a_property_of_a_codesys_interface_is_reported_not_dropped_silently():
             "the PROPERTY Level of INTERFACE IBase was left out: LadderLab's INTERFACEs declare methods only",
         )
     ]
+
+
+def test_the_st_export_writes_every_specifier_and_imports_back_the_same():
+    """Issue 25 item 5: PRIVATE, PROTECTED, INTERNAL, FINAL and ABSTRACT as the ST export writes them after METHOD,
+    read back to the same methods."""
+    from ladderlab.interchange.st.project import export_project_st
+
+    original, diagnostics = source_to_project(SOURCE, "oo")
+    assert diagnostics == [] and original is not None
+    text = export_project_st(original).text
+    for header in (
+        "METHOD PUBLIC ABSTRACT Area : INT",
+        "METHOD PROTECTED Bump : INT",
+        "METHOD INTERNAL FINAL Seen : INT",
+        "METHOD PRIVATE Hidden",
+    ):
+        assert header in text
+    again, diagnostics = source_to_project(text, "oo")
+    assert diagnostics == [] and again is not None
+    assert [(m.name, m.access, m.final, m.abstract) for m in again.pous[0].methods] == [
+        (m.name, m.access, m.final, m.abstract) for m in original.pous[0].methods
+    ]
