@@ -440,6 +440,9 @@ VAR_OUTPUT inner : Counter; END_VAR
 END_FUNCTION_BLOCK
 FUNCTION_BLOCK Outer
 VAR_OUTPUT holder : Holder; pair : ARRAY[1..2] OF Holder; END_VAR
+METHOD Poke : INT
+Poke := THIS^.holder.inner.Bump(step := 0);
+END_METHOD
 END_FUNCTION_BLOCK
 PROGRAM Main
 VAR o : Outer; h : Holder; i : IBump; x : Other; u : Unrelated; a, b, c, d, e : INT; END_VAR
@@ -457,7 +460,8 @@ END_PROGRAM
 def test_renaming_an_interface_method_renames_implementations_member_chains_and_interface_calls(start) -> None:
     """Issue 25 item 5 (rename): Bump of IBump, of Counter and of Other is one member (both FBs implement IBump), so
     renaming it from any of the three renames all three declarations and every call: through member paths
-    (``h.inner.Bump``, ``o.holder.inner.Bump``, ``o.pair[2].inner.Bump``, typed by each step's declaration), through
+    (``h.inner.Bump``, ``o.holder.inner.Bump``, ``o.pair[2].inner.Bump``, ``THIS^.holder.inner.Bump``, typed by each
+    step's declaration), through
     the interface variable ``i`` and the instance ``x``; Unrelated's own Bump keeps its name. The project computes
     the same before and after."""
     from ladderlab.simulation.build import build_project
@@ -480,7 +484,9 @@ def test_renaming_an_interface_method_renames_implementations_member_chains_and_
         ("Counter", ["Add"]),
         ("Other", ["Add"]),
         ("Unrelated", ["Bump"]),
+        ("Outer", ["Poke"]),
     ]
+    assert renamed.pou("Outer").methods[0].body.strip() == "Poke := THIS^.holder.inner.Add(step := 0);"
     assert renamed.pou("Main").body.strip().splitlines() == [
         "a := h.inner.Add(step := 1);",
         "b := o.holder.inner.Add(step := 2) + o . pair[2].inner.Add(step := 3);",
@@ -495,6 +501,7 @@ def test_renaming_an_interface_method_renames_implementations_member_chains_and_
         ("body", "Counter", "Bump", "Bump := n;"),
         ("method", "Other", "Bump", "METHOD Bump"),
         ("body", "Other", "Bump", "Bump := total;"),
+        ("body", "Outer", "Poke", "Poke := THIS^.holder.inner.Bump(step := 0);"),
         ("body", "Main", None, "a := h.inner.Bump(step := 1);"),
         ("body", "Main", None, "b := o.holder.inner.Bump(step := 2) + o . pair[2].inner.Bump(step := 3);"),
         ("body", "Main", None, "c := i.Bump(step := 1);"),

@@ -115,8 +115,8 @@ class MemberUses:
         return found
 
     def _of_group(self, path: list[str]) -> bool:
-        if path[0].upper() in ("THIS", "SUPER") and len(path) == 1:
-            return self.own
+        if path[0].upper() in ("THIS", "SUPER"):  # THIS^.a.b: ``a`` is a variable of the FB, in ``scope``
+            return self.own if len(path) == 1 else self.types.resolve(self.scope, path[1:]) in self.group
         return self.types.resolve(self.scope, path) in self.group
 
 
