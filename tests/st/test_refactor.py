@@ -6,7 +6,7 @@ from __future__ import annotations
 import re
 
 import pytest
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from ladderlab.model.project import Project
@@ -552,3 +552,40 @@ END_FUNCTION_BLOCK
         ("Beside", ["Area"]),
     ]
     assert renamed.pou("Base").methods[1].body.strip() == "Twice := Size() * 2;"
+
+
+def _holders() -> str:
+    """H1 holds a Counter (``inner``) and an Unrelated (``other``), both with a method Bump; Hk holds an H(k-1)."""
+    parts = [INTERFACED.split("FUNCTION_BLOCK Holder")[0]]
+    parts.append("FUNCTION_BLOCK H1\nVAR_OUTPUT inner : Counter; other : Unrelated; END_VAR\nEND_FUNCTION_BLOCK\n")
+    for k in range(2, 5):
+        parts.append(f"FUNCTION_BLOCK H{k}\nVAR_OUTPUT inner : H{k - 1}; END_VAR\nEND_FUNCTION_BLOCK\n")
+    return "".join(parts)
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    st.lists(
+        st.tuples(st.integers(1, 4), st.sampled_from(["inner", "other"]), st.sampled_from([".", " . ", ".\n"])),
+        min_size=1,
+        max_size=6,
+    )
+)
+def test_a_member_path_is_renamed_exactly_when_its_declared_type_shares_the_member(calls) -> None:
+    """Issue 25 item 5 (rename): ``hK.inner...inner.leaf.Bump()`` through K nested holders (any spacing around the
+    dots) ends at a Counter when the leaf is ``inner`` (renamed with Counter's Bump) and at an Unrelated when it is
+    ``other`` (kept): the expected text is built from that rule, not from the refactoring."""
+    from ladderlab.st.project_text import source_to_project
+    from ladderlab.st.refactor import rename_member
+
+    def call(k: int, leaf: str, dot: str, method: str) -> str:
+        return f"x := h{k}{(dot + 'inner') * (k - 1)}{dot}{leaf}{dot}{method}(step := 1);"
+
+    declarations = " ".join(f"h{k} : H{k};" for k in range(1, 5))
+    body = "\n".join(call(k, leaf, dot, "Bump") for k, leaf, dot in calls)
+    source = _holders() + f"PROGRAM Main\nVAR {declarations} x : INT; END_VAR\n{body}\nEND_PROGRAM\n"
+    project, diagnostics = source_to_project(source, "paths")
+    assert diagnostics == [] and project is not None
+    renamed, _ = rename_member(project, "Counter", "Bump", "Add")
+    expected = [call(k, leaf, dot, "Add" if leaf == "inner" else "Bump") for k, leaf, dot in calls]
+    assert renamed.pou("Main").body.strip() == "\n".join(expected)
