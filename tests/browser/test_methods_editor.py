@@ -209,6 +209,20 @@ def test_access_final_and_abstract_are_set_in_the_methods_tab_saved_and_checked(
     assert "Counter.Total is FINAL: Bigger cannot override it" in texts
     expect(panels.get_by_role("button", name="ST-NOT-ACCESSIBLE")).to_be_visible()
 
+    # The FB itself made ABSTRACT (FINAL, then ABSTRACT: the two exclude each other): Main's instance of it is refused.
+    page.get_by_label("FINAL Counter").check()
+    page.get_by_label("ABSTRACT Counter").check()
+    expect(page.get_by_label("FINAL Counter")).not_to_be_checked()
+    page.keyboard.press("Control+s")
+    page.get_by_text("All changes saved").wait_for()
+    saved = json.loads((tmp_path / "workspace" / "specifiers" / "pous" / "Counter.st.json").read_text())
+    assert (saved.get("abstract"), saved.get("final")) == (True, None)
+    page.keyboard.press("Control+Shift+B")
+    expect(items).to_have_count(3)
+    assert "Counter is ABSTRACT: declare an instance of a function block derived from it" in " ".join(
+        items.all_inner_texts()
+    )
+
 
 INTERFACED = {
     "name": "interfaced",

@@ -26,6 +26,12 @@ import {
   type MemberKind,
 } from "./members";
 
+/** What ABSTRACT and FINAL mean for the function block itself, as its checkboxes' tooltips say. */
+const FB_MODIFIER_MEANING = {
+  abstract: "ABSTRACT: no instance of it can be declared; it may have ABSTRACT methods for derived FBs to implement",
+  final: "FINAL: no function block can extend it",
+};
+
 /** What FINAL and ABSTRACT mean, as the checkboxes' tooltips say. */
 const MODIFIER_MEANING = {
   final: "FINAL: a function block derived from this one cannot override it",
@@ -66,6 +72,26 @@ export function MethodsView({ pou, focus }: { pou: Pou; focus: Focus | null }) {
   return (
     <div className="methods-view" style={{ display: "flex", gap: "0.75rem", height: "100%", minHeight: 0 }}>
       <div style={{ flex: "0 0 14rem", display: "flex", flexDirection: "column", gap: "0.5rem" }}>
+        <div className="methods-fb" style={{ display: "flex", gap: "0.5rem" }}>
+          {(["abstract", "final"] as const).map((which) => (
+            <label key={which} title={FB_MODIFIER_MEANING[which]}>
+              <input
+                type="checkbox"
+                aria-label={`${which.toUpperCase()} ${pou.name}`}
+                checked={Boolean(pou[which])}
+                disabled={online}
+                onChange={(e) =>
+                  operate(
+                    `make ${pou.name} ${e.target.checked ? "" : "not "}${which.toUpperCase()}`,
+                    { ok: true, pou: withModifier(pou, which, e.target.checked) },
+                    selected,
+                  )
+                }
+              />{" "}
+              {which.toUpperCase()}
+            </label>
+          ))}
+        </div>
         <ul className="tree-members" aria-label={`Methods and properties of ${pou.name}`}>
           {(pou.methods ?? []).map((m) => (
             <MemberRow key={`m-${m.name}`} kind="M" name={m.name} selected={selected} onSelect={setSelected} />

@@ -102,6 +102,10 @@ describe("method specifiers", () => {
     expect([abstract.final, abstract.abstract]).toEqual([false, true]);
     expect(withModifier(abstract, "final", false).abstract).toBe(true);
   });
+  it("exclude each other on a function block too", () => {
+    const final = withModifier(fb, "final", true);
+    expect([final.final, final.abstract, withModifier(final, "abstract", true).final]).toEqual([true, false, false]);
+  });
   it("are written as ST writes them after METHOD, PUBLIC left out", () => {
     expect(modifiersText(bump)).toBe("");
     expect(modifiersText({ ...bump, access: "PRIVATE", final: true })).toBe("PRIVATE FINAL");

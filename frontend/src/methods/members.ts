@@ -25,11 +25,15 @@ export function modifiersText(member: { access?: Access; final?: boolean; abstra
   return words.filter(Boolean).join(" ");
 }
 
-/** A method made FINAL or ABSTRACT: the two exclude each other (a FINAL method cannot be left to a derived FB to
- * implement), so setting one clears the other. */
-export function withModifier(method: Method, which: "final" | "abstract", on: boolean): Method {
+/** A method or function block made FINAL or ABSTRACT: the two exclude each other (what is FINAL cannot be left to
+ * a derived FB to implement), so setting one clears the other. */
+export function withModifier<T extends { final?: boolean; abstract?: boolean }>(
+  item: T,
+  which: "final" | "abstract",
+  on: boolean,
+): T {
   const other = which === "final" ? "abstract" : "final";
-  return { ...method, [which]: on, ...(on ? { [other]: false } : {}) };
+  return { ...item, [which]: on, ...(on ? { [other]: false } : {}) };
 }
 export type Edited = { ok: true; pou: Pou } | { ok: false; error: string };
 
