@@ -43,6 +43,19 @@ def editor(page, label: str):
     return page.get_by_role("textbox", name=label)
 
 
+def preview_rename(page, members, fb: str, old: str, new: str):
+    """Renames member ``old`` of ``fb`` to ``new`` in the Methods tab up to the preview: the dialog and its places."""
+    members.get_by_role("button", name=old).click()
+    page.get_by_label(f"New name of {old}").fill(new)
+    page.get_by_role("button", name="Rename", exact=True).click()
+    dialog = page.get_by_role("dialog", name=f"Rename {fb}.{old}")
+    expect(dialog.get_by_label("New name")).to_have_value(new)
+    dialog.get_by_role("button", name="Preview").click()
+    places = dialog.get_by_role("list", name="References").locator("li")
+    places.first.wait_for()
+    return dialog, places.all_inner_texts()
+
+
 def test_add_edit_rename_and_delete_methods_then_run_and_halt_in_one(page, server):
     store_project(server, PROJECT)
     page.goto(server)
@@ -62,26 +75,15 @@ def test_add_edit_rename_and_delete_methods_then_run_and_halt_in_one(page, serve
     expect(page.get_by_text("Counter already has a method called Scaled.")).to_be_visible()
 
     # Renaming Old previews its declaration and Main's call (issue 25 item 5); one undo step takes both back.
-    members.get_by_role("button", name="Old").click()
-    page.get_by_label("New name of Old").fill("Bump")
-    page.get_by_role("button", name="Rename", exact=True).click()
-    dialog = page.get_by_role("dialog", name="Rename Counter.Old")
-    expect(dialog.get_by_label("New name")).to_have_value("Bump")
-    dialog.get_by_role("button", name="Preview").click()
-    places = dialog.get_by_role("list", name="References").locator("li")
-    places.first.wait_for()
-    assert places.all_inner_texts() == ["Counter METHOD Old", "Main, body line 4 c.Old();"]
+    dialog, places = preview_rename(page, members, "Counter", "Old", "Bump")
+    assert places == ["Counter METHOD Old", "Main, body line 4 c.Old();"]
     page.screenshot(path=str(ARTIFACTS / "methods-rename-preview.png"))
     dialog.get_by_role("button", name="Rename", exact=True).click()
     expect(dialog).to_have_count(0)
     expect(members.get_by_role("button")).to_have_text(["MBump", "MUnused", "MScaled", "PLevel"])
     page.get_by_role("button", name="Undo rename Old to Bump").click()
     expect(members.get_by_role("button")).to_have_text(["MOld", "MUnused", "MScaled", "PLevel"])
-    members.get_by_role("button", name="Old").click()
-    page.get_by_label("New name of Old").fill("Bump")
-    page.get_by_role("button", name="Rename", exact=True).click()
-    dialog.get_by_role("button", name="Preview").click()
-    dialog.get_by_role("list", name="References").locator("li").first.wait_for()
+    dialog, _ = preview_rename(page, members, "Counter", "Old", "Bump")
     dialog.get_by_role("button", name="Rename", exact=True).click()
     expect(dialog).to_have_count(0)
     editor(page, "Counter.Bump body").fill("n := n + 10;")
@@ -273,14 +275,8 @@ def test_renaming_an_interface_method_from_the_methods_tab_renames_it_everywhere
     open_pou(page, "interfaced", "Counter")
     page.get_by_role("tab", name="Methods").click()
     members = page.get_by_role("list", name="Methods and properties of Counter")
-    members.get_by_role("button", name="Bump").click()
-    page.get_by_label("New name of Bump").fill("Add")
-    page.get_by_role("button", name="Rename", exact=True).click()
-    dialog = page.get_by_role("dialog", name="Rename Counter.Bump")
-    dialog.get_by_role("button", name="Preview").click()
-    places = dialog.get_by_role("list", name="References").locator("li")
-    places.first.wait_for()
-    assert places.all_inner_texts() == [
+    dialog, places = preview_rename(page, members, "Counter", "Bump", "Add")
+    assert places == [
         "Types line 2 METHOD Bump : INT",
         "Counter METHOD Bump",
         "Counter.Bump, body line 2 Bump := n;",
@@ -298,11 +294,7 @@ def test_renaming_an_interface_method_from_the_methods_tab_renames_it_everywhere
     page.get_by_text("All changes saved").wait_for()
     assert _request("GET", f"{server}/api/projects/interfaced")["project"]["types"] == INTERFACED["types"]
 
-    members.get_by_role("button", name="Bump").click()
-    page.get_by_label("New name of Bump").fill("Add")
-    page.get_by_role("button", name="Rename", exact=True).click()
-    dialog.get_by_role("button", name="Preview").click()
-    dialog.get_by_role("list", name="References").locator("li").first.wait_for()
+    dialog, _ = preview_rename(page, members, "Counter", "Bump", "Add")
     dialog.get_by_role("button", name="Rename", exact=True).click()
     expect(dialog).to_have_count(0)
     page.keyboard.press("Control+s")
