@@ -5,7 +5,8 @@ from __future__ import annotations
 
 import re
 
-from hypothesis import given
+import pytest
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from ladderlab.model.project import Project
@@ -402,3 +403,189 @@ def test_renaming_a_method_renames_its_overrides_and_every_call() -> None:
     assert member_name_problem(project, "Counter", "Bump", "twice") == "Counter already has a member called Twice"
     assert member_name_problem(project, "Counter", "Nope", "X") == "Counter has no method or property called Nope"
     assert member_name_problem(project, "Counter", "Bump", "1x").startswith("1x is no IEC name")
+
+
+INTERFACED = """
+INTERFACE IBump
+METHOD Bump : INT
+VAR_INPUT step : INT; END_VAR
+END_METHOD
+END_INTERFACE
+FUNCTION_BLOCK Counter IMPLEMENTS IBump
+VAR n : INT; END_VAR
+METHOD Bump : INT
+VAR_INPUT step : INT; END_VAR
+n := n + step;
+Bump := n;
+END_METHOD
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK Other IMPLEMENTS IBump
+VAR total : INT; END_VAR
+METHOD Bump : INT
+VAR_INPUT step : INT; END_VAR
+total := total + 100 * step;
+Bump := total;
+END_METHOD
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK Unrelated
+VAR k : INT; END_VAR
+METHOD Bump : INT
+VAR_INPUT step : INT; END_VAR
+k := k + 1000;
+Bump := k;
+END_METHOD
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK Holder
+VAR_OUTPUT inner : Counter; END_VAR
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK Outer
+VAR_OUTPUT holder : Holder; pair : ARRAY[1..2] OF Holder; END_VAR
+METHOD Poke : INT
+Poke := THIS^.holder.inner.Bump(step := 0);
+END_METHOD
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR o : Outer; h : Holder; i : IBump; x : Other; u : Unrelated; a, b, c, d, e : INT; END_VAR
+a := h.inner.Bump(step := 1);
+b := o.holder.inner.Bump(step := 2) + o . pair[2].inner.Bump(step := 3);
+i := x;
+c := i.Bump(step := 1);
+d := u.Bump(step := 1);
+e := x.Bump(step := 1);
+END_PROGRAM
+"""
+
+
+@pytest.mark.parametrize("start", ["Counter", "Other", "IBump"])
+def test_renaming_an_interface_method_renames_implementations_member_chains_and_interface_calls(start) -> None:
+    """Issue 25 item 5 (rename): Bump of IBump, of Counter and of Other is one member (both FBs implement IBump), so
+    renaming it from any of the three renames all three declarations and every call: through member paths
+    (``h.inner.Bump``, ``o.holder.inner.Bump``, ``o.pair[2].inner.Bump``, ``THIS^.holder.inner.Bump``, typed by each
+    step's declaration), through
+    the interface variable ``i`` and the instance ``x``; Unrelated's own Bump keeps its name. The project computes
+    the same before and after."""
+    from ladderlab.simulation.build import build_project
+    from ladderlab.st.project_text import source_to_project
+    from ladderlab.st.refactor import member_name_problem, rename_member
+
+    project, diagnostics = source_to_project(INTERFACED, "itf")
+    assert diagnostics == [] and project is not None
+    assert member_name_problem(project, start, "bump", "Add") is None
+    clash = project.model_copy(deep=True)
+    clash.pou("Other").methods[0].name = "Add"  # Other's Bump would then be Add twice
+    if start != "Other":
+        assert (
+            member_name_problem(clash, start, "Bump", "add")
+            == "Other, renamed with it, already has a member called add"
+        )
+    renamed, changes = rename_member(project, start, "bump", "Add")
+    assert renamed.types == project.types.replace("METHOD Bump", "METHOD Add")
+    assert [(p.name, [m.name for m in p.methods]) for p in renamed.pous if p.methods] == [
+        ("Counter", ["Add"]),
+        ("Other", ["Add"]),
+        ("Unrelated", ["Bump"]),
+        ("Outer", ["Poke"]),
+    ]
+    assert renamed.pou("Outer").methods[0].body.strip() == "Poke := THIS^.holder.inner.Add(step := 0);"
+    assert renamed.pou("Main").body.strip().splitlines() == [
+        "a := h.inner.Add(step := 1);",
+        "b := o.holder.inner.Add(step := 2) + o . pair[2].inner.Add(step := 3);",
+        "i := x;",
+        "c := i.Add(step := 1);",
+        "d := u.Bump(step := 1);",
+        "e := x.Add(step := 1);",
+    ]
+    assert [(c.part, c.pou, c.member, c.text) for c in changes] == [
+        ("types", None, "IBump.Bump", "METHOD Bump : INT"),
+        ("method", "Counter", "Bump", "METHOD Bump"),
+        ("body", "Counter", "Bump", "Bump := n;"),
+        ("method", "Other", "Bump", "METHOD Bump"),
+        ("body", "Other", "Bump", "Bump := total;"),
+        ("body", "Outer", "Poke", "Poke := THIS^.holder.inner.Bump(step := 0);"),
+        ("body", "Main", None, "a := h.inner.Bump(step := 1);"),
+        ("body", "Main", None, "b := o.holder.inner.Bump(step := 2) + o . pair[2].inner.Bump(step := 3);"),
+        ("body", "Main", None, "c := i.Bump(step := 1);"),
+        ("body", "Main", None, "e := x.Bump(step := 1);"),
+    ]
+    assert changes[0].line == 2  # the types text's line of IBump's METHOD Bump
+    for before_after in (project, renamed):
+        result = build_project(before_after)
+        assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
+        sim = result.simulation()
+        sim.cycle(1)
+        # h.inner: 0 + 1; o.holder.inner 2, o.pair[2].inner 3; x through i: 100, then x directly: 200; u: 1000
+        assert [sim.read(f"Main.{v}") for v in "abcde"] == [1, 2 + 3, 100, 1000, 200]
+
+
+def test_renaming_an_override_renames_the_base_method_it_overrides() -> None:
+    """An override and the method it overrides are one member: renaming it in the derived FB renames the base's
+    (and the base's bare calls of it), as renaming the base's renames the override; the FB beside them keeps its own."""
+    from ladderlab.st.project_text import source_to_project
+    from ladderlab.st.refactor import rename_member
+
+    source = """
+FUNCTION_BLOCK Base
+METHOD Area : INT
+Area := 1;
+END_METHOD
+METHOD Twice : INT
+Twice := Area() * 2;
+END_METHOD
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK Square EXTENDS Base
+METHOD Area : INT
+Area := 4;
+END_METHOD
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK Beside
+METHOD Area : INT
+Area := 9;
+END_METHOD
+END_FUNCTION_BLOCK
+"""
+    project, diagnostics = source_to_project(source, "over")
+    assert diagnostics == [] and project is not None
+    renamed, _ = rename_member(project, "Square", "Area", "Size")
+    assert [(p.name, [m.name for m in p.methods]) for p in renamed.pous] == [
+        ("Base", ["Size", "Twice"]),
+        ("Square", ["Size"]),
+        ("Beside", ["Area"]),
+    ]
+    assert renamed.pou("Base").methods[1].body.strip() == "Twice := Size() * 2;"
+
+
+def _holders() -> str:
+    """H1 holds a Counter (``inner``) and an Unrelated (``other``), both with a method Bump; Hk holds an H(k-1)."""
+    parts = [INTERFACED.split("FUNCTION_BLOCK Holder")[0]]
+    parts.append("FUNCTION_BLOCK H1\nVAR_OUTPUT inner : Counter; other : Unrelated; END_VAR\nEND_FUNCTION_BLOCK\n")
+    for k in range(2, 5):
+        parts.append(f"FUNCTION_BLOCK H{k}\nVAR_OUTPUT inner : H{k - 1}; END_VAR\nEND_FUNCTION_BLOCK\n")
+    return "".join(parts)
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    st.lists(
+        st.tuples(st.integers(1, 4), st.sampled_from(["inner", "other"]), st.sampled_from([".", " . ", ".\n"])),
+        min_size=1,
+        max_size=6,
+    )
+)
+def test_a_member_path_is_renamed_exactly_when_its_declared_type_shares_the_member(calls) -> None:
+    """Issue 25 item 5 (rename): ``hK.inner...inner.leaf.Bump()`` through K nested holders (any spacing around the
+    dots) ends at a Counter when the leaf is ``inner`` (renamed with Counter's Bump) and at an Unrelated when it is
+    ``other`` (kept): the expected text is built from that rule, not from the refactoring."""
+    from ladderlab.st.project_text import source_to_project
+    from ladderlab.st.refactor import rename_member
+
+    def call(k: int, leaf: str, dot: str, method: str) -> str:
+        return f"x := h{k}{(dot + 'inner') * (k - 1)}{dot}{leaf}{dot}{method}(step := 1);"
+
+    declarations = " ".join(f"h{k} : H{k};" for k in range(1, 5))
+    body = "\n".join(call(k, leaf, dot, "Bump") for k, leaf, dot in calls)
+    source = _holders() + f"PROGRAM Main\nVAR {declarations} x : INT; END_VAR\n{body}\nEND_PROGRAM\n"
+    project, diagnostics = source_to_project(source, "paths")
+    assert diagnostics == [] and project is not None
+    renamed, _ = rename_member(project, "Counter", "Bump", "Add")
+    expected = [call(k, leaf, dot, "Add" if leaf == "inner" else "Bump") for k, leaf, dot in calls]
+    assert renamed.pou("Main").body.strip() == "\n".join(expected)

@@ -22,7 +22,8 @@ from ..model.names import pou_name_problem
 from ..model.project import Project
 from . import ast
 from .comments import blank_nested_comments
-from .parser import parse_declarations
+from .member_types import ProjectTypes, declared_types
+from .parser import parse_source
 
 #: Tokens that are never a name: strings, comments, pragmas, typed literal values, numbers, addresses.
 _TOKEN = re.compile(
@@ -73,23 +74,28 @@ def _spans(text: str, old: Target) -> list[tuple[int, int]]:
     return name_spans(text, old) if isinstance(old, str) else old.spans(text)
 
 
-#: What stands before ``.M`` when ``M`` is a member of an instance: ``inst``, ``inst[i]``, ``ref^``, ``THIS^``,
-#: ``SUPER^`` (a name after another ``.`` is a member of something else: its type is not known here).
+#: The path before ``.M``: ``a``, ``a.b``, ``a[i].b^``, ``THIS^``, ``SUPER^`` (indices and dereferences do not
+#: change which type's member ``M`` is).
 _MEMBER_OF = re.compile(
-    r"(?:(?<![.\w])(?P<self>THIS|SUPER)\s*\^|(?<![.\w])(?P<head>[A-Za-z_]\w*)\s*(?:\[[^\[\]]*\]\s*)?\^?)\s*\.\s*$",
+    r"(?<![.\w])(?P<path>(?:THIS|SUPER)\s*\^|[A-Za-z_]\w*(?:\s*(?:\[[^\[\]]*\]\s*)?\^?\s*\.\s*[A-Za-z_]\w*)*)"
+    r"\s*(?:\[[^\[\]]*\]\s*)?\^?\s*\.\s*$",
     re.IGNORECASE,
 )
+_INDEX = re.compile(r"\[[^\[\]]*\]|\^|\s")
 
 
 @dataclass(frozen=True)
 class MemberUses:
-    """The uses of method or property ``name`` of a function block in one scope: ``inst.name`` for an instance
-    (or an array of instances, or a reference to one) named in ``instances``, and, inside the function block or
-    one that extends it (``own``), ``THIS^.name``, ``SUPER^.name`` and a bare call ``name(...)``; inside the method
-    itself (``inside``) every bare ``name`` (its result variable, a recursive call)."""
+    """The uses of method or property ``name`` of the function blocks and INTERFACEs in ``group`` in one scope:
+    ``path.name`` where ``path`` (``inst``, ``a.b``, ``arr[i]``, ``r^``) is typed by ``scope`` (variable -> type) and
+    ``types`` as one of ``group``, and, inside a function block of the group (``own``), ``THIS^.name``,
+    ``SUPER^.name`` and a bare call ``name(...)``; inside the method itself (``inside``) every bare ``name`` (its
+    result variable, a recursive call)."""
 
     name: str
-    instances: frozenset[str]
+    scope: dict[str, str]
+    group: frozenset[str]
+    types: ProjectTypes
     own: bool
     inside: bool = False
 
@@ -100,88 +106,78 @@ class MemberUses:
             if match.group("name") is None or match.group("name").upper() != self.name.upper():
                 continue
             if _MEMBER.search(scanned, 0, match.start()):
-                before = _MEMBER_OF.search(scanned[max(0, match.start() - 200) : match.start()])
-                if before is None:
-                    continue
-                if before.group("self") is not None and not self.own:
-                    continue
-                if before.group("head") is not None and before.group("head").upper() not in self.instances:
+                before = _MEMBER_OF.search(scanned[max(0, match.start() - 300) : match.start()])
+                if before is None or not self._of_group(_INDEX.sub("", before.group("path")).split(".")):
                     continue
             elif not (self.inside or (self.own and scanned[match.end() :].lstrip().startswith("("))):
                 continue
             found.append((match.start(), match.end()))
         return found
 
+    def _of_group(self, path: list[str]) -> bool:
+        if path[0].upper() in ("THIS", "SUPER"):  # THIS^.a.b: ``a`` is a variable of the FB, in ``scope``
+            return self.own if len(path) == 1 else self.types.resolve(self.scope, path[1:]) in self.group
+        return self.types.resolve(self.scope, path) in self.group
+
 
 def rename_member(project: Project, fb: str, old: str, new: str) -> tuple[Project, list[Reference]]:
-    """``project`` with method or property ``old`` of function block ``fb`` called ``new``: its declaration, the
-    same member of every function block extending ``fb`` (an override keeps overriding), and every use through an
-    instance declared in the POU, the method or the globals (``inst.Old(...)``, ``arr[i].Old``, ``r^.Old``, LD/FBD
-    boxes ``inst.Old``) or inside the family (``THIS^.Old``, ``SUPER^.Old``, ``Old(...)``); and what changed.
-    An instance reached through a structure or another instance (``a.b.Old``) is not followed: the check then
-    reports the call it no longer finds."""
+    """``project`` with method or property ``old`` of function block (or INTERFACE) ``fb`` called ``new``: its
+    declaration and that of every FB and INTERFACE sharing it (``ProjectTypes.group``: overrides, the base it
+    overrides, interface methods and their implementations), and every use through a variable typed as one of them
+    (``inst.Old(...)``, ``a.b.Old``, ``arr[i].Old``, ``r^.Old``, ``itf.Old()``, LD/FBD boxes ``inst.Old``) or inside
+    one of those FBs (``THIS^.Old``, ``SUPER^.Old``, ``Old(...)``); and what changed. A path through a property or a
+    function's result is not followed: the check then reports the call it no longer finds."""
     data = project.model_dump(by_alias=True)
-    family = _extending(data["pous"], fb)
-    globals_ = _instances(data["globals"], family)
+    types = ProjectTypes.of(data)
+    group = types.group(fb, old)
+    globals_ = declared_types(data["globals"])
     changes: list[Reference] = []
+    data["types"] = _interface_methods(data["types"], group, old, new, changes)
     for pou in data["pous"]:
-        name, own = pou["name"], pou["name"].upper() in family
-        instances = globals_ | _instances(pou["declarations"], family)
-        uses = MemberUses(old, instances, own)
-        pou["body"] = _body(pou["body"], uses, new, changes, name)
+        name, own = pou["name"], pou["name"].upper() in group
+        scope = globals_ | types.fields.get(name.upper(), {}) | declared_types(pou["declarations"])
+        pou["body"] = _body(pou["body"], MemberUses(old, scope, group, types, own), new, changes, name)
         for member in pou.get("methods") or []:  # (listed under their names as they were)
             inside = own and member["name"].upper() == old.upper()
-            scope = MemberUses(old, instances | _instances(member["declarations"], family), own, inside)
+            uses = MemberUses(old, scope | declared_types(member["declarations"]), group, types, own, inside)
             where = Reference(pou=name, part="body", member=member["name"])
             if inside:
                 changes.append(
                     Reference(pou=name, part="method", member=member["name"], text=f"METHOD {member['name']}")
                 )
                 member["name"] = new
-            member["body"] = _text(member["body"], scope, new, changes, where)
+            member["body"] = _text(member["body"], uses, new, changes, where)
         for prop in pou.get("properties") or []:
             accessors = [(kind.upper(), prop[kind]) for kind in ("get", "set") if prop.get(kind) is not None]
             for kind, accessor in accessors:
-                scope = MemberUses(old, instances | _instances(accessor["declarations"], family), own)
+                uses = MemberUses(old, scope | declared_types(accessor["declarations"]), group, types, own)
                 where = Reference(pou=name, part="body", member=f"{prop['name']}.{kind}")
-                accessor["body"] = _text(accessor["body"], scope, new, changes, where)
+                accessor["body"] = _text(accessor["body"], uses, new, changes, where)
             if own and prop["name"].upper() == old.upper():
                 changes.append(Reference(pou=name, part="method", member=prop["name"], text=f"PROPERTY {prop['name']}"))
                 prop["name"] = new
-    uses = MemberUses(old, globals_, own=False)
+    uses = MemberUses(old, globals_, group, types, own=False)
     for test in data["tests"]:
         path = f"tests/{test['name']}.st"
         test["text"] = _text(test["text"], uses, new, changes, Reference(part="test", file=path))
     return Project.model_validate(data), changes
 
 
-def _extending(pous: list[dict[str, Any]], fb: str) -> frozenset[str]:
-    """``fb`` and every function block that extends it, directly or not (upper case)."""
-    family = {fb.upper()}
-    grew = True
-    while grew:
-        grew = False
-        for pou in pous:
-            parent = (pou.get("extends") or "").upper()
-            if parent in family and pou["name"].upper() not in family:
-                family.add(pou["name"].upper())
-                grew = True
-    return frozenset(family)
-
-
-def _instances(declarations: str, family: frozenset[str]) -> frozenset[str]:
-    """The names declared in ``declarations`` as an instance of one of ``family``, an array of them or a reference
-    or pointer to one (upper case); nothing when the text does not parse (the check reports it)."""
-    parsed = parse_declarations(declarations)
-    found: set[str] = set()
-    for block in parsed.ast or []:
-        for decl in block.decls:
-            spec = decl.type
-            while isinstance(spec, (ast.ArrayType, ast.PointerType)):
-                spec = spec.element if isinstance(spec, ast.ArrayType) else spec.target
-            if isinstance(spec, ast.NamedType) and spec.name.upper() in family:
-                found.update(n.name.upper() for n in decl.names if n.name)
-    return frozenset(found)
+def _interface_methods(types: str, group: frozenset[str], old: str, new: str, found: list[Reference]) -> str:
+    """The types text with the METHOD ``old`` of every INTERFACE in ``group`` called ``new``."""
+    parsed = parse_source(types)
+    lines = types.split("\n")
+    for item in parsed.ast.items if parsed.ast is not None else []:
+        if not isinstance(item, ast.InterfaceDecl) or item.name.upper() not in group:
+            continue
+        for method in item.methods:
+            line = method.span.line - 1
+            spans = name_spans(lines[line], old) if method.name.upper() == old.upper() else []
+            if spans:
+                where = Reference(part="types", member=f"{item.name}.{method.name}", line=line + 1)
+                found.append(where.model_copy(update={"text": lines[line].strip()}))
+                lines[line] = _replaced(lines[line], spans[:1], new)
+    return "\n".join(lines)
 
 
 def references(project: Project, name: str) -> list[Reference]:
@@ -214,17 +210,35 @@ def new_name_problem(project: Project, old: str, new: str) -> str | None:
 
 
 def member_name_problem(project: Project, fb: str, old: str, new: str) -> str | None:
-    """Why method or property ``old`` of function block ``fb`` cannot become ``new`` (no such member, not an
-    identifier, another member's name), or None."""
+    """Why method or property ``old`` of function block (or INTERFACE) ``fb`` cannot become ``new`` (no such member,
+    not an identifier, the name of another member of ``fb`` or of an FB or INTERFACE renamed with it), or None."""
     pou = project.pou(fb)
-    members = [m.name for m in pou.methods] + [p.name for p in pou.properties] if pou else []
+    members = (
+        [m.name for m in pou.methods] + [p.name for p in pou.properties] if pou else _interface_members(project, fb)
+    )
     if not any(m.upper() == old.upper() for m in members):
         return f"{fb} has no method or property called {old}"
     problem = pou_name_problem(new)
     if problem:
         return f"{new or 'an empty name'} is no IEC name: {problem}"
     other = next((m for m in members if m.upper() == new.upper() and m.upper() != old.upper()), None)
-    return f"{fb} already has a member called {other}" if other else None
+    if other:
+        return f"{fb} already has a member called {other}"
+    data = project.model_dump(by_alias=True)
+    types = ProjectTypes.of(data)
+    names = {p["name"].upper(): p["name"] for p in data["pous"]}
+    for kind in sorted(types.group(fb, old) - {fb.upper()}):
+        if new.upper() in types.members.get(kind, set()) and new.upper() != old.upper():
+            return f"{names.get(kind, kind)}, renamed with it, already has a member called {new}"
+    return None
+
+
+def _interface_members(project: Project, name: str) -> list[str]:
+    """The methods of INTERFACE ``name`` of the project's types text (none when there is no such INTERFACE)."""
+    parsed = parse_source(project.types)
+    items = parsed.ast.items if parsed.ast is not None else []
+    found = (i for i in items if isinstance(i, ast.InterfaceDecl) and i.name.upper() == name.upper())
+    return [m.name for m in next(found, ast.InterfaceDecl(name, [], [])).methods]
 
 
 def duplicate_pou(project: Project, name: str, copy: str) -> Project:

@@ -196,10 +196,15 @@ def compose_pou_text(pou: Pou) -> str:
     return "\n".join(parts) + "\n"
 
 
-def _method_text(method: Method) -> str:
+def method_header(method: Method) -> str:
+    """A method's first line as ST writes it: ``METHOD PRIVATE FINAL Name : INT`` (also CODESYS's header text in
+    PLCopen)."""
     modifiers = [method.access, *(["FINAL"] if method.final else []), *(["ABSTRACT"] if method.abstract else [])]
-    header = f"METHOD {' '.join(modifiers)} {method.name}" + (f" : {method.return_type}" if method.return_type else "")
-    return "\n".join([header, *_texts(method.declarations, method.body), "END_METHOD"])
+    return f"METHOD {' '.join(modifiers)} {method.name}" + (f" : {method.return_type}" if method.return_type else "")
+
+
+def _method_text(method: Method) -> str:
+    return "\n".join([method_header(method), *_texts(method.declarations, method.body), "END_METHOD"])
 
 
 def _action_text(action: PouAction) -> str:

@@ -1,4 +1,5 @@
-// The Methods tab of a function block (issue 25, CODESYS's objects under an FB): its methods and properties listed,
+// The Methods tab of a function block (issue 25, CODESYS's objects under an FB): its methods and properties listed, their
+// access (PUBLIC/PRIVATE/PROTECTED/INTERNAL), FINAL and ABSTRACT set,
 // added, renamed (with every call, previewed: the tree's rename dialog) and deleted; a method's result type, declarations and body, and a property's type and GET / SET
 // texts, edited in the ST editor with the live check's diagnostics; breakpoints in a method's body.
 import { useState, type FormEvent } from "react";
@@ -18,9 +19,24 @@ import {
   memberFile,
   memberOf,
   renameMember,
+  ACCESS_MEANING,
+  withModifier,
+  type Access,
   type Edited,
   type MemberKind,
 } from "./members";
+
+/** What ABSTRACT and FINAL mean for the function block itself, as its checkboxes' tooltips say. */
+const FB_MODIFIER_MEANING = {
+  abstract: "ABSTRACT: no instance of it can be declared; it may have ABSTRACT methods for derived FBs to implement",
+  final: "FINAL: no function block can extend it",
+};
+
+/** What FINAL and ABSTRACT mean, as the checkboxes' tooltips say. */
+const MODIFIER_MEANING = {
+  final: "FINAL: a function block derived from this one cannot override it",
+  abstract: "ABSTRACT: no body here; the function block is ABSTRACT and a derived one implements it",
+};
 
 export function MethodsView({ pou, focus }: { pou: Pou; focus: Focus | null }) {
   const [selected, setSelected] = useState<string | null>(
@@ -56,6 +72,26 @@ export function MethodsView({ pou, focus }: { pou: Pou; focus: Focus | null }) {
   return (
     <div className="methods-view" style={{ display: "flex", gap: "0.75rem", height: "100%", minHeight: 0 }}>
       <div style={{ flex: "0 0 14rem", display: "flex", flexDirection: "column", gap: "0.5rem" }}>
+        <div className="methods-fb" style={{ display: "flex", gap: "0.5rem" }}>
+          {(["abstract", "final"] as const).map((which) => (
+            <label key={which} title={FB_MODIFIER_MEANING[which]}>
+              <input
+                type="checkbox"
+                aria-label={`${which.toUpperCase()} ${pou.name}`}
+                checked={Boolean(pou[which])}
+                disabled={online}
+                onChange={(e) =>
+                  operate(
+                    `make ${pou.name} ${e.target.checked ? "" : "not "}${which.toUpperCase()}`,
+                    { ok: true, pou: withModifier(pou, which, e.target.checked) },
+                    selected,
+                  )
+                }
+              />{" "}
+              {which.toUpperCase()}
+            </label>
+          ))}
+        </div>
         <ul className="tree-members" aria-label={`Methods and properties of ${pou.name}`}>
           {(pou.methods ?? []).map((m) => (
             <MemberRow key={`m-${m.name}`} kind="M" name={m.name} selected={selected} onSelect={setSelected} />
@@ -210,6 +246,35 @@ function MemberEditor({
             }
           />
         </label>
+        <label title={ACCESS_MEANING[member.access ?? "PUBLIC"]}>
+          Access{" "}
+          <select
+            aria-label={`Access of ${member.name}`}
+            value={member.access ?? "PUBLIC"}
+            disabled={readOnly !== null}
+            onChange={(e) => change<Method | Property>((m) => ({ ...m, access: e.target.value as Access }))}
+          >
+            {(Object.keys(ACCESS_MEANING) as Access[]).map((access) => (
+              <option key={access} value={access}>
+                {access}
+              </option>
+            ))}
+          </select>
+        </label>
+        {kind === "method"
+          ? (["final", "abstract"] as const).map((which) => (
+              <label key={which} title={MODIFIER_MEANING[which]}>
+                <input
+                  type="checkbox"
+                  aria-label={`${which.toUpperCase()} ${member.name}`}
+                  checked={Boolean((member as Method)[which])}
+                  disabled={readOnly !== null}
+                  onChange={(e) => change<Method>((m) => withModifier(m, which, e.target.checked))}
+                />{" "}
+                {which.toUpperCase()}
+              </label>
+            ))
+          : null}
         {readOnly === null ? (
           <>
             <input

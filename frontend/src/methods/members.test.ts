@@ -1,8 +1,18 @@
 // The method and property operations of the Methods tab (issue 25): pure edits of a function block.
 import { describe, expect, it } from "vitest";
-import type { Pou } from "../generated/api";
+import type { Method, Pou } from "../generated/api";
 import { focusOf, methodPlace } from "../store/panels";
-import { addMember, changeMember, deleteMember, memberFile, memberOf, renameMember, type Edited } from "./members";
+import {
+  addMember,
+  changeMember,
+  deleteMember,
+  memberFile,
+  memberOf,
+  modifiersText,
+  renameMember,
+  withModifier,
+  type Edited,
+} from "./members";
 
 const fb: Pou = {
   name: "Counter",
@@ -80,5 +90,26 @@ describe("places in a member's texts", () => {
   it("a halt in a method, named as the engine names it, is its FB and the member", () => {
     expect(methodPlace("COUNTER.SCALED")).toEqual({ pou: "COUNTER", member: "SCALED" });
     expect(methodPlace("MAIN")).toBeNull();
+  });
+});
+
+describe("method specifiers", () => {
+  const bump: Method = { name: "Bump", access: "PUBLIC", final: false, abstract: false, declarations: "", body: "" };
+  it("FINAL and ABSTRACT exclude each other: setting one clears the other, clearing leaves the other", () => {
+    const final = withModifier(bump, "final", true);
+    expect([final.final, final.abstract]).toEqual([true, false]);
+    const abstract = withModifier(final, "abstract", true);
+    expect([abstract.final, abstract.abstract]).toEqual([false, true]);
+    expect(withModifier(abstract, "final", false).abstract).toBe(true);
+  });
+  it("exclude each other on a function block too", () => {
+    const final = withModifier(fb, "final", true);
+    expect([final.final, final.abstract, withModifier(final, "abstract", true).final]).toEqual([true, false, false]);
+  });
+  it("are written as ST writes them after METHOD, PUBLIC left out", () => {
+    expect(modifiersText(bump)).toBe("");
+    expect(modifiersText({ ...bump, access: "PRIVATE", final: true })).toBe("PRIVATE FINAL");
+    expect(modifiersText({ ...bump, access: "PROTECTED", abstract: true })).toBe("PROTECTED ABSTRACT");
+    expect(modifiersText({ access: "INTERNAL" })).toBe("INTERNAL");
   });
 });

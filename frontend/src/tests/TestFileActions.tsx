@@ -1,6 +1,7 @@
 // The project tree's menu of a test file: rename and delete, each one undoable step of the working copy
 // (workspace store's applyOperation), saved with the project (the old tests/<name>.st goes on save).
 import { useState, type FormEvent } from "react";
+import { ConfirmButtons, NameField } from "../ui/NameField";
 import { Dialog, DialogFooter, TreeActions } from "../ui/TreeActions";
 import { testNameProblem, testPath, workspaceStore } from "../store/project";
 
@@ -24,8 +25,7 @@ function RenameTestDialog({ name, onClose }: { name: string; onClose(): void }) 
     <Dialog title={`Rename ${testPath(name)}`} onClose={onClose}>
       <form onSubmit={submit}>
         <label>
-          New name{" "}
-          <input aria-label="New test file name" value={text} onChange={(e) => setText(e.target.value)} autoFocus />
+          New name <NameField label="New test file name" value={text} onChange={setText} />
         </label>
         <DialogFooter error={error} submit="Rename" onClose={onClose} />
       </form>
@@ -46,14 +46,7 @@ function DeleteTestDialog({ name, onClose }: { name: string; onClose(): void }) 
   return (
     <Dialog title={`Delete ${testPath(name)}`} onClose={onClose}>
       <p>The file and its tests leave the project when you save (Undo takes it back until then).</p>
-      <div className="dialog-buttons">
-        <button type="button" onClick={remove} autoFocus>
-          Delete
-        </button>
-        <button type="button" onClick={onClose}>
-          Cancel
-        </button>
-      </div>
+      <ConfirmButtons confirm="Delete" onConfirm={remove} onClose={onClose} />
     </Dialog>
   );
 }

@@ -1,9 +1,15 @@
 import type { Pou } from "../generated/api";
+import { modifiersText, type Access } from "../methods/members";
 
-/** What a member row says: `Name : TYPE`, and the access specifier when it is not PUBLIC (CODESYS's tree). */
-function memberLabel(name: string, type: string | null | undefined, access: string | undefined): string {
+/** What a member row says: `Name : TYPE`, and its specifiers when it has any beyond PUBLIC (CODESYS's tree). */
+function memberLabel(
+  name: string,
+  type: string | null | undefined,
+  member: { access?: Access; final?: boolean; abstract?: boolean },
+): string {
   const typed = type ? `${name} : ${type}` : name;
-  return access && access !== "PUBLIC" ? `${typed} (${access})` : typed;
+  const modifiers = modifiersText(member);
+  return modifiers ? `${typed} (${modifiers})` : typed;
 }
 
 /**
@@ -27,7 +33,7 @@ export function PouMembers({ pou, open }: { pou: Pou; open(member: string | null
           <li key={`m-${m.name}`}>
             <button type="button" className="tree-item tree-member" onClick={() => open(m.name)}>
               <span className="tree-kind">M</span>
-              <span className="tree-name">{memberLabel(m.name, m.return_type, m.access)}</span>
+              <span className="tree-name">{memberLabel(m.name, m.return_type, m)}</span>
             </button>
           </li>
         ))}
@@ -35,7 +41,7 @@ export function PouMembers({ pou, open }: { pou: Pou; open(member: string | null
           <li key={`p-${p.name}`}>
             <button type="button" className="tree-item tree-member" onClick={() => open(p.name)}>
               <span className="tree-kind">P</span>
-              <span className="tree-name">{memberLabel(p.name, p.type, p.access)}</span>
+              <span className="tree-name">{memberLabel(p.name, p.type, p)}</span>
             </button>
           </li>
         ))}

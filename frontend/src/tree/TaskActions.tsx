@@ -2,6 +2,7 @@
 // names), delete it. Each is one undoable step (nothing else names a task, so only the tasks change); the
 // duplicate and delete dialogs are the POUs' (PouActions).
 import { useMemo, useState, type FormEvent } from "react";
+import { NameField } from "../ui/NameField";
 import { Dialog, DialogFooter, TreeActions } from "../ui/TreeActions";
 import { DeleteDialog, DuplicateDialog } from "./lazyDialogs";
 import type { ItemOperations } from "./operations";
@@ -43,13 +44,7 @@ function RenameTaskDialog({ task, onClose }: { task: string; onClose(): void }) 
   return (
     <Dialog title={`Rename task ${task}`} onClose={onClose}>
       <form onSubmit={submit}>
-        <input
-          aria-label="New name"
-          autoFocus
-          value={name}
-          onChange={(e) => setName(e.target.value)}
-          spellCheck={false}
-        />
+        <NameField label="New name" value={name} onChange={setName} />
         <DialogFooter error={error} submit="Rename" onClose={onClose} />
       </form>
     </Dialog>

@@ -22,6 +22,7 @@ import {
 } from "./refactor";
 import { emptyDeclarations, workspaceStore } from "../store/project";
 import { FormError } from "../ui/FormError";
+import { ConfirmButtons, NameField } from "../ui/NameField";
 import { Dialog, DialogFooter } from "../ui/TreeActions";
 import { KIND_HELP, KindPicker } from "./kinds";
 import { sessionUsesOf, type DeleteOperations, type ItemOperations } from "./operations";
@@ -125,13 +126,7 @@ export function RenameDialog({
   return (
     <Dialog title={`Rename ${member ? `${member}.` : ""}${current}`} onClose={onClose}>
       <form onSubmit={(e) => void submit(e)}>
-        <input
-          aria-label="New name"
-          autoFocus
-          value={name}
-          onChange={(e) => setName(e.target.value)}
-          spellCheck={false}
-        />
+        <NameField label="New name" value={name} onChange={setName} />
         {ready ? (
           <>
             <p>
@@ -171,14 +166,12 @@ export function DeleteDialog({ name, item, onClose }: { name: string; item: Dele
       {references?.length ? <p>These places use {name} and will no longer compile:</p> : null}
       {references ? <ReferenceList references={references} empty={`Nothing refers to ${name}.`} /> : null}
       <FormError error={error} />
-      <div className="dialog-buttons">
-        <button type="button" onClick={remove} disabled={references === null && !error} autoFocus>
-          Delete {name}
-        </button>
-        <button type="button" onClick={onClose}>
-          Cancel
-        </button>
-      </div>
+      <ConfirmButtons
+        confirm={`Delete ${name}`}
+        onConfirm={remove}
+        onClose={onClose}
+        disabled={references === null && !error}
+      />
     </Dialog>
   );
 }
@@ -204,7 +197,7 @@ export function DuplicateDialog({ name, item, onClose }: { name: string; item: I
   return (
     <Dialog title={`Duplicate ${name}`} onClose={onClose}>
       <form onSubmit={(e) => void submit(e)}>
-        <input aria-label="Name of the copy" autoFocus value={copy} onChange={(e) => setCopy(e.target.value)} />
+        <NameField label="Name of the copy" value={copy} onChange={setCopy} />
         <DialogFooter error={error} submit="Duplicate" onClose={onClose} />
       </form>
     </Dialog>
@@ -232,12 +225,7 @@ export function KindDialog({ pou, onClose }: { pou: Pou; onClose(): void }) {
     <Dialog title={`Kind of ${pou.name}`} onClose={onClose}>
       <form onSubmit={change}>
         <KindPicker kind={kind} onChange={setKind} />
-        <div className="dialog-buttons">
-          <button type="submit">Change kind</button>
-          <button type="button" onClick={onClose}>
-            Cancel
-          </button>
-        </div>
+        <DialogFooter error={null} submit="Change kind" onClose={onClose} />
       </form>
     </Dialog>
   );

@@ -2,6 +2,7 @@
 // dialog an entry opens with its footer (the last attempt's error, submit, Cancel).
 import { useState, type ReactNode } from "react";
 import { FormError } from "./FormError";
+import { ConfirmButtons } from "./NameField";
 
 /** A modal dialog of the project tree's menus (Escape closes it). */
 export function Dialog({ title, children, onClose }: { title: string; children: ReactNode; onClose(): void }) {
@@ -77,12 +78,7 @@ export function DialogFooter({ error, submit, onClose }: { error: string | null;
   return (
     <>
       <FormError error={error} />
-      <div className="dialog-buttons">
-        <button type="submit">{submit}</button>
-        <button type="button" onClick={onClose}>
-          Cancel
-        </button>
-      </div>
+      <ConfirmButtons confirm={submit} onClose={onClose} />
     </>
   );
 }

@@ -32,7 +32,7 @@ from .body import NETWORK_GAP, Counter, write_network_list
 from .configuration import write_instances
 from .fbd_export import FbdExporter
 from .ld_export import LdExporter
-from .methods import oo_attributes, oo_texts, write_inheritance, write_methods
+from .methods import oo_attributes, oo_texts, write_inheritance, write_interfaces, write_methods
 from .sfc_export import write_sfc_pou
 from .vars import parse_type_text, write_data_type, write_type, write_var_list
 from .xml_io import (
@@ -99,6 +99,7 @@ class _Exporter:
         ladderlab_tests(ours, [(test.name, test.text) for test in self.project.tests])
         ladderlab_libraries(ours, list(self.project.libraries))
         ladderlab_typing(ours, self.project.typing)
+        write_interfaces(ours, self.project.types)
         if self.problems:
             raise PlcopenExportError(self.problems)
         return to_bytes(root)

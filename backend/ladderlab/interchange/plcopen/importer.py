@@ -47,12 +47,16 @@ from .fbd_import import FbdImporter, fbd_groups, place_comments
 from .graph import read_graph, resolve_continuations
 from .ld_import import LdImporter, ld_groups
 from .methods import (
+    ACCESS_DATA,
     INHERITANCE_DATA,
+    INTERFACE_DATA,
     METHOD_DATA,
     PLAINTEXT_DATA,
     PROPERTY_DATA,
     read_extends,
+    read_fb_modifiers,
     read_implements,
+    read_interfaces,
     read_methods,
     read_properties,
 )
@@ -85,6 +89,8 @@ _UNDERSTOOD = {
     (INHERITANCE_DATA, "Inheritance"),
     (PROPERTY_DATA, "Property"),
     (PLAINTEXT_DATA, "InterfaceAsPlainText"),
+    (ACCESS_DATA, "AccessModifiers"),
+    (INTERFACE_DATA, "Interface"),
 }
 
 
@@ -159,6 +165,9 @@ class _Importer:
         pous = [self.pou(node, p, signatures) for node, p in zip(pou_nodes, interfaces) if p is not None]
         self.collect_foreign(root)
         types = self.types(r.path(root, "types", "dataTypes"), info_text(ours, "types"))
+        types = _with_interfaces(
+            types, read_interfaces(root, r, lambda holder: _method_interface(r, VarReader(r), holder))
+        )
         configurations = r.children(r.path(root, "instances", "configurations"), "configuration")
         carried = info_text(ours, "globals")
         read_list = lambda lists, own: self.globals(lists, own if own is not None else carried)  # noqa: E731
@@ -273,8 +282,11 @@ class _Importer:
             extends=oo.get("extends") or read_extends(interface, r),
             implements=[i.strip() for i in oo.get("implements", "").split(",") if i.strip()]
             or read_implements(node, r),
-            abstract=oo.get("abstract") == "true",
-            final=oo.get("final") == "true",
+            **(
+                {"abstract": oo.get("abstract") == "true", "final": oo.get("final") == "true"}
+                if ours is not None
+                else read_fb_modifiers(node, r)
+            ),
         )
 
     def text_declaration(
@@ -419,6 +431,15 @@ class _Importer:
 
 
 # ---------------------------------------------------------------- regenerating typed XML from carried texts
+
+
+def _with_interfaces(types: str, interfaces: list[tuple[str, str]]) -> str:
+    """The types text with the INTERFACEs another tool's addData declares that it does not already have."""
+    parsed = parse_source(types)
+    items = parsed.ast.items if parsed.ast is not None else []
+    known = {item.name.upper() for item in items if isinstance(item, ast.InterfaceDecl)}
+    added = [text for name, text in interfaces if name.upper() not in known]
+    return "\n\n".join([types, *added] if types else added)
 
 
 def _declaration_elements(text: str) -> list[ET.Element] | None:

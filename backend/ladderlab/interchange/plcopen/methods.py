@@ -6,10 +6,14 @@ A function block's METHODs: ``<pou><addData><data name=".../plcopenxml/method" h
 </interface><GetAccessor><interface/><body/></GetAccessor><SetAccessor>...</SetAccessor></Property></data>`` (either
 accessor first); EXTENDS: ``<interface><addData><data name=".../plcopenxml/pouinheritance"><Inheritance>
 <Extends>Base</Extends></Inheritance>``; IMPLEMENTS: the header of the declaration CODESYS writes as text
-(``.../plcopenxml/interfaceasplaintext``: ``FUNCTION_BLOCK F EXTENDS B IMPLEMENTS I1, I2``). What CODESYS does not
-say in typed XML (PRIVATE, FINAL, ABSTRACT, the texts as typed) travels in LadderLab's ``<ll:info>`` (``methods``,
-``properties``: the model's JSON). INTERFACEs live in the project's types text, which LadderLab's addData carries
-verbatim (docs/plcopen.md).
+(``.../plcopenxml/interfaceasplaintext``: ``FUNCTION_BLOCK F EXTENDS B IMPLEMENTS I1, I2``). A method's access
+(``<interface><addData><data name=".../plcopenxml/accessmodifiers"><AccessModifiers Private="true"/>``, PUBLIC when
+absent) and its header as text (``METHOD PUBLIC FINAL M : INT`` in the method's ``.../interfaceasplaintext``: FINAL and
+ABSTRACT, which CODESYS's typed XML does not say). INTERFACEs: the project's ``<addData><data
+name=".../plcopenxml/interface"><Interface name="I">`` with its method prototypes as a POU's (in its addData; TwinCAT
+lists them in ``<Methods>``) and EXTENDS in its header text. The texts as typed travel in LadderLab's ``<ll:info>``
+(``methods``, ``properties``: the model's JSON; INTERFACEs in the project's types text, carried verbatim;
+docs/plcopen.md).
 """
 
 from __future__ import annotations
@@ -20,7 +24,10 @@ import xml.etree.ElementTree as ET
 from collections.abc import Callable
 
 from ...model.project import Accessor, Method, Pou, Property
-from ...st.parser import parse_declarations
+from ...st import ast
+from ...st.parser import parse_declarations, parse_source
+from ...st.printer import print_type
+from ...storage.st_text import method_header
 from .vars import parse_type_text, write_type, write_var_list
 from .xml_io import Reader, formatted_text, info_text, local, sub, text_content
 
@@ -28,6 +35,10 @@ METHOD_DATA = "http://www.3s-software.com/plcopenxml/method"
 INHERITANCE_DATA = "http://www.3s-software.com/plcopenxml/pouinheritance"
 PROPERTY_DATA = "http://www.3s-software.com/plcopenxml/property"
 PLAINTEXT_DATA = "http://www.3s-software.com/plcopenxml/interfaceasplaintext"
+ACCESS_DATA = "http://www.3s-software.com/plcopenxml/accessmodifiers"
+INTERFACE_DATA = "http://www.3s-software.com/plcopenxml/interface"
+ACCESS = ("PUBLIC", "PRIVATE", "PROTECTED", "INTERNAL")
+_INTERFACE_EXTENDS = re.compile(r"^\s*INTERFACE\s+\w+\s+EXTENDS\s+([A-Za-z_][\w\s,]*)", re.IGNORECASE)
 _IMPLEMENTS = re.compile(r"\bIMPLEMENTS\s+([A-Za-z_][\w\s,]*)", re.IGNORECASE)
 
 
@@ -76,14 +87,14 @@ def read_properties(
 
 def read_implements(node: ET.Element, reader: Reader) -> list[str]:
     """The INTERFACEs a function block IMPLEMENTS, from the header of CODESYS's declaration text."""
-    for data in reader.children(reader.child(node, "addData"), "data"):
-        if data.get("name") == PLAINTEXT_DATA:
-            holder = next((c for c in data if isinstance(c.tag, str) and local(c) == "InterfaceAsPlainText"), None)
-            header = text_content(holder).strip().split("\n", 1)[0] if holder is not None else ""
-            found = _IMPLEMENTS.search(header)
-            if found:
-                return [name.strip() for name in found.group(1).split(",") if name.strip()]
-    return []
+    found = _IMPLEMENTS.search(_plain_header(node, reader))
+    return [name.strip() for name in found.group(1).split(",") if name.strip()] if found else []
+
+
+def read_fb_modifiers(node: ET.Element, reader: Reader) -> dict[str, bool]:
+    """ABSTRACT and FINAL of a function block, from the header of CODESYS's declaration text."""
+    header = _IMPLEMENTS.sub("", _plain_header(node, reader)).upper().split()
+    return {"abstract": "ABSTRACT" in header, "final": "FINAL" in header}
 
 
 def _entries(node: ET.Element, reader: Reader, data_name: str, tag: str) -> list[ET.Element]:
@@ -113,24 +124,21 @@ def write_inheritance(interface_data: ET.Element, pou: Pou) -> None:
 
 def write_methods(node: ET.Element, pou: Pou) -> ET.Element | None:
     """The POU's ``<addData>`` with one CODESYS entry per METHOD and PROPERTY and, for IMPLEMENTS, CODESYS's
-    declaration text (None when it has none of them)."""
-    if not (pou.methods or pou.properties or pou.implements):
+    declaration text for what only its header says (IMPLEMENTS, ABSTRACT, FINAL; None when it has none of them)."""
+    if not (pou.methods or pou.properties or pou.implements or pou.abstract or pou.final):
         return None
     add = sub(node, "addData")
-    if pou.implements:
-        header = f"FUNCTION_BLOCK {pou.name}" + (f" EXTENDS {pou.extends}" if pou.extends else "")
+    if pou.implements or pou.abstract or pou.final:
+        words = ["FUNCTION_BLOCK", "ABSTRACT" if pou.abstract else "", "FINAL" if pou.final else "", pou.name]
+        extends = f" EXTENDS {pou.extends}" if pou.extends else ""
+        implements = f" IMPLEMENTS {', '.join(pou.implements)}" if pou.implements else ""
         data = sub(add, "data", {"name": PLAINTEXT_DATA, "handleUnknown": "implementation"})
-        text = f"{header} IMPLEMENTS {', '.join(pou.implements)}\n{pou.declarations}"
+        text = " ".join(w for w in words if w) + f"{extends}{implements}\n{pou.declarations}"
         formatted_text(data, "InterfaceAsPlainText", text)
     for method in pou.methods:
-        data = sub(add, "data", {"name": METHOD_DATA, "handleUnknown": "implementation"})
-        element = sub(data, "Method", {"name": method.name})
-        interface = sub(element, "interface")
         spec = parse_type_text(method.return_type) if method.return_type else None
-        if spec is not None:
-            write_type(sub(interface, "returnType"), spec)
-        for block in parse_declarations(method.declarations).ast or []:
-            write_var_list(interface, block)
+        blocks = parse_declarations(method.declarations).ast or []
+        element = _write_method(add, method.name, spec, blocks, method.access, method_header(method))
         formatted_text(sub(element, "body"), "ST", method.body)
     for prop in pou.properties:
         data = sub(add, "data", {"name": PROPERTY_DATA, "handleUnknown": "implementation"})
@@ -148,11 +156,101 @@ def write_methods(node: ET.Element, pou: Pou) -> ET.Element | None:
     return add
 
 
+def _write_method(
+    add: ET.Element, name: str, spec: ast.TypeSpec | None, blocks: list[ast.VarBlock], access: str, header: str
+) -> ET.Element:
+    """One CODESYS method entry in ``add``: its interface (result, variables, access) and header text."""
+    data = sub(add, "data", {"name": METHOD_DATA, "handleUnknown": "implementation"})
+    element = sub(data, "Method", {"name": name})
+    interface = sub(element, "interface")
+    if spec is not None:
+        write_type(sub(interface, "returnType"), spec)
+    for block in blocks:
+        write_var_list(interface, block)
+    if access != "PUBLIC":
+        modifiers = sub(
+            sub(sub(interface, "addData"), "data", {"name": ACCESS_DATA, "handleUnknown": "implementation"}),
+            "AccessModifiers",
+        )
+        modifiers.set(access.capitalize(), "true")
+    plain = sub(sub(element, "addData"), "data", {"name": PLAINTEXT_DATA, "handleUnknown": "implementation"})
+    formatted_text(plain, "InterfaceAsPlainText", header)
+    return element
+
+
+def write_interfaces(add: ET.Element, types: str) -> None:
+    """The project's INTERFACEs (from its types text) as CODESYS's entries in the project's ``add``(Data)."""
+    parsed = parse_source(types, file="types.st")
+    for item in parsed.ast.items if parsed.ast is not None else []:
+        if not isinstance(item, ast.InterfaceDecl):
+            continue
+        data = sub(add, "data", {"name": INTERFACE_DATA, "handleUnknown": "implementation"})
+        element = sub(data, "Interface", {"name": item.name})
+        methods = sub(element, "addData")
+        for method in item.methods:
+            access = next((m for m in method.modifiers if m in ACCESS), "PUBLIC")
+            returns = f" : {print_type(method.return_type)}" if method.return_type is not None else ""
+            _write_method(
+                methods, method.name, method.return_type, method.var_blocks, access, f"METHOD {method.name}{returns}"
+            )
+        extends = f" EXTENDS {', '.join(item.extends)}" if item.extends else ""
+        plain = sub(methods, "data", {"name": PLAINTEXT_DATA, "handleUnknown": "implementation"})
+        formatted_text(plain, "InterfaceAsPlainText", f"INTERFACE {item.name}{extends}")
+
+
+def read_interfaces(
+    root: ET.Element, reader: Reader, declarations: Callable[[ET.Element], tuple[str, str | None]]
+) -> list[tuple[str, str]]:
+    """The INTERFACEs of CODESYS's (or TwinCAT's) project addData as (name, ST text): method prototypes with their
+    variables and result (read by ``declarations``), EXTENDS from the header text."""
+    found = []
+    for element in _entries(root, reader, INTERFACE_DATA, "Interface"):
+        name = element.get("name", "")
+        header = _plain_header(element, reader)
+        extends = _INTERFACE_EXTENDS.match(header)
+        lines = [f"INTERFACE {name}" + (f" EXTENDS {extends.group(1).strip()}" if extends else "")]
+        listed = [c for holder in reader.children(element, "Methods") for c in reader.children(holder, "Method")]
+        for method in listed + _entries(element, reader, METHOD_DATA, "Method"):
+            interface = reader.child(method, "interface")
+            text, return_type = declarations(interface) if interface is not None else ("", None)
+            lines.append(f"METHOD {method.get('name', '')}" + (f" : {return_type}" if return_type else ""))
+            lines += [text] if text else []
+            lines.append("END_METHOD")
+        for prop in _entries(element, reader, PROPERTY_DATA, "Property"):
+            reader.report(
+                "PLCOPEN-UNSUPPORTED",
+                f"the PROPERTY {prop.get('name', '')} of INTERFACE {name} was left out: LadderLab's INTERFACEs "
+                "declare methods only",
+                prop,
+                severity="warning",
+            )
+        found.append((name, "\n".join([*lines, "END_INTERFACE"])))
+    return found
+
+
+def _plain_header(element: ET.Element, reader: Reader) -> str:
+    """The first line of an element's ``InterfaceAsPlainText`` (in its addData as CODESYS writes it, or a direct
+    child as TwinCAT does); empty when it has none."""
+    holders = _entries(element, reader, PLAINTEXT_DATA, "InterfaceAsPlainText") + reader.children(
+        element, "InterfaceAsPlainText"
+    )
+    return text_content(holders[0]).strip().split("\n", 1)[0] if holders else ""
+
+
+def _modifiers(method: ET.Element, interface: ET.Element | None, reader: Reader) -> dict[str, object]:
+    """A CODESYS method's access (its AccessModifiers, PUBLIC when none), FINAL and ABSTRACT (its header text)."""
+    access = "PUBLIC"
+    for modifiers in _entries(interface, reader, ACCESS_DATA, "AccessModifiers") if interface is not None else []:
+        access = next((a for a in ACCESS if modifiers.get(a.capitalize()) == "true"), access)
+    header = _plain_header(method, reader).upper().split(":", 1)[0].split()
+    return {"access": access, "final": "FINAL" in header, "abstract": "ABSTRACT" in header}
+
+
 def read_methods(
     node: ET.Element, ours: ET.Element | None, reader: Reader, declarations: Callable[[ET.Element], str]
 ) -> list[Method]:
     """A function block's METHODs: LadderLab's own JSON when it carries it, else CODESYS's method entries (their
-    interface read by ``declarations``; PUBLIC, the default, since CODESYS's typed XML does not say)."""
+    interface read by ``declarations``, access, FINAL and ABSTRACT by ``_modifiers``)."""
     carried = info_text(ours, "methods")
     if carried:
         return [Method.model_validate(item) for item in json.loads(carried)]
@@ -166,6 +264,7 @@ def read_methods(
             methods.append(
                 Method(
                     name=element.get("name", ""),
+                    **_modifiers(element, interface, reader),  # type: ignore[arg-type]
                     return_type=return_type,
                     declarations=text,
                     body=_st_body(element, reader),
