@@ -10,8 +10,8 @@ the same random writes while the views change between scans:
   executed or not); the elements of a network viewed only since then are ``unknown``, never a stale value;
 * runner: the power flow a client holds after each frame (full frames replaced, the others applied as changes)
   equals the reference's at that frame's scan, every watched element included, also the networks a client
-  scrolled to while the simulation was stopped (read from the history's replay of that scan) and after a seek to
-  a past scan and back.
+  scrolled to while the simulation was stopped (read from the history's replay of that scan), after a seek to
+  a past scan (whose replay records only the viewed networks), other networks viewed while it is shown, and back.
 """
 
 from __future__ import annotations
@@ -110,8 +110,9 @@ class _Frames:
     project=ld_programs(),
     steps=st.lists(st.tuples(_views, _writes, st.integers(0, 2)), min_size=1, max_size=8),
     seek=st.integers(0, 20),
+    later=st.lists(st.integers(0, 7), min_size=1, max_size=4),
 )
-def test_frames_show_the_power_flow_of_every_watched_element_exactly(project, steps, seek):
+def test_frames_show_the_power_flow_of_every_watched_element_exactly(project, steps, seek, later):
     live, reference = _pair(project, 3)
     networks = _networks(live)
     frames = _Frames()
@@ -139,9 +140,17 @@ def test_frames_show_the_power_flow_of_every_watched_element_exactly(project, st
         runner._settle(publish=True)
         watched = runner._union["MAIN"][1]
         assert frames.power["MAIN"] == {e: shown[scan][e] for e in watched}
+        # the replay recorded only the networks viewed (their probed code compiles at first use: History.viewed)
+        unviewed = [e for e in every if e not in watched]
+        assert runner.shown.probes("Main", unviewed).unknown == set(unviewed)
+        # other networks viewed while the past scan is shown: it is replayed again and shows them as they were
+        ids = [e for n in sorted({n % len(networks) for n in later}) for e in networks[n]]
+        runner.watch("client", [], [("Main", ids)])
+        runner._settle(publish=True)
+        assert frames.power["MAIN"] == {e: shown[scan][e] for e in ids}
         runner.live()
         runner._settle(publish=True)
-        assert frames.power["MAIN"] == _shown(reference, list(watched))
+        assert frames.power["MAIN"] == _shown(reference, ids)
 
 
 def test_a_fault_in_a_chunk_nobody_views_is_reported_as_in_the_fast_variant():

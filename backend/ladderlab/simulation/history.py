@@ -30,7 +30,7 @@ import statistics
 import time
 import zlib
 from collections import deque
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, replace
 
 from ..engine.compile import CompiledProgram
@@ -102,6 +102,11 @@ class History:
         self._replay: Simulation | None = None
         self._ended: int | None = None  # the last scan recorded, once recording ended (``end``)
         self._replay_at: int | None = None  # scans the replay simulation has completed (its scan_count)
+        #: the networks a replayed scan records its power flow in (``Simulation.view``'s argument; None: every
+        #: network). The runner sets the networks its clients view: the others' probed code is compiled only at
+        #: first use, so recording every network would make the first seek of a large program compile it all.
+        self.viewed: dict[str, Iterable[str] | None] | None = None
+        self._replay_viewed: dict[str, Iterable[str] | None] | None = None  # what the replay records now
         sim.on_scan = self._scanned
         self._checkpoint()
 
@@ -260,9 +265,11 @@ class History:
             self._restore(self._checkpoint_at(scan + 1))
         else:
             checkpoint = self._checkpoint_at(scan)
-            if not (self._replay_at is not None and checkpoint.scan <= self._replay_at <= scan):
-                self._restore(checkpoint)  # else: go on from where the last seek left the replay (a step forward)
-                replay.view(None)  # the replayed scans record every network, whichever the live monitor viewed
+            going_on = self._replay_at is not None and checkpoint.scan <= self._replay_at <= scan
+            if not (going_on and self._replay_viewed == self.viewed):  # else: a step forward from the last seek
+                self._restore(checkpoint)
+                replay.view(self.viewed)  # whichever networks the live monitor recorded when the checkpoint was taken
+                self._replay_viewed = self.viewed
             assert self._replay_at is not None
             for number in range(self._replay_at, scan + 1):
                 for line in self._inputs.get(number, ()):

@@ -35,6 +35,7 @@ breakpoint is set or a scan is halted (a step), between scans, keeping all state
 
 from __future__ import annotations
 
+import contextlib
 import logging
 import random
 import threading
@@ -809,6 +810,7 @@ class SimRunner:
         ):
             self.branches.pop(0)  # the oldest branch goes: all branches share the one budget
         self.history = History(self.sim, budget_bytes=budget - sum(b.size for b in self.branches))
+        self.history.viewed = history.viewed
         self._seen_scans, self._seen_faults, self._faulted = self.sim.scan_count, 0, False
         self._recording_only = False
         self.live()
@@ -997,9 +999,23 @@ class SimRunner:
     def _view_networks(self) -> None:
         """The live simulation records the power flow of the networks some client views, no other
         (``Simulation.view``). A network viewed after the last scan shows that scan from its replay in the history
-        (``_states``), so without a history every network is recorded."""
-        if self.sim.variant in ("monitor", "debug") and self.history is not None:
-            self.sim.view({instance: None if every else ids for instance, (every, ids) in self._union.items()})
+        (``_states``), so without a history every network is recorded. The histories' replays record the same
+        networks (``History.viewed``: the others' probed code is compiled at first use), and a past scan shown
+        is replayed again when they change, so what a client views of it is recorded, never unknown."""
+        if self.sim.variant not in ("monitor", "debug") or self.history is None:
+            return
+        viewed = {instance: None if every else ids for instance, (every, ids) in self._union.items()}
+        self.sim.view(viewed)
+        changed = viewed != self.history.viewed
+        for history in (*self.branches, self.history):
+            history.viewed = viewed
+        if changed:  # the replays of the last scan kept recorded only the networks viewed then
+            self._replayed_views = ((None, -1), {})
+        shown, scan = self._view_history, self._viewing
+        if changed and self._view is not None and not self._steps and shown is not None and scan is not None:
+            with contextlib.suppress(HistoryUnavailable):  # dropped from the history meanwhile: shown as it was
+                self._view = shown.seek(scan - 1)
+                self._view_reader = self._view.reader(self._union_locations)
 
     # ------------------------------------------------------------------ traces
 
