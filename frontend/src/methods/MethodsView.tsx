@@ -21,10 +21,10 @@ import {
   renameMember,
   ACCESS_MEANING,
   withModifier,
-  type Access,
   type Edited,
   type MemberKind,
 } from "./members";
+import type { Access } from "../tree/modifiers";
 
 /** What ABSTRACT and FINAL mean for the function block itself, as its checkboxes' tooltips say. */
 const FB_MODIFIER_MEANING = {

@@ -1,3 +1,4 @@
+// @vitest-environment jsdom
 // The method and property operations of the Methods tab (issue 25): pure edits of a function block.
 import { describe, expect, it } from "vitest";
 import type { Method, Pou } from "../generated/api";
@@ -8,11 +9,11 @@ import {
   deleteMember,
   memberFile,
   memberOf,
-  modifiersText,
   renameMember,
   withModifier,
   type Edited,
 } from "./members";
+import { modifiersText } from "../tree/modifiers";
 
 const fb: Pou = {
   name: "Counter",

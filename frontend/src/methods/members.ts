@@ -2,9 +2,9 @@
 // POU, each giving the new POU or the reason it is refused (names are IEC identifiers, unique among the FB's
 // methods and properties, case-insensitively, as the checker requires).
 import type { Accessor, Method, Pou, Property } from "../generated/api";
+import type { Access } from "../tree/modifiers";
 
 export type MemberKind = "method" | "property";
-export type Access = NonNullable<Method["access"]>;
 
 /** Who may call a method or use a property, per access specifier (IEC 61131-3 ed. 3, CODESYS); the Methods tab's
  * choices. A Record, so a specifier added to the model (backend model/project.py MethodAccess) fails to compile here. */
@@ -14,16 +14,6 @@ export const ACCESS_MEANING: Record<Access, string> = {
   PROTECTED: "its function block and those derived from it",
   INTERNAL: "code of this project (its namespace)",
 };
-
-/** A method's specifiers as the ST text writes them after METHOD: `PRIVATE FINAL` (PUBLIC left out). */
-export function modifiersText(member: { access?: Access; final?: boolean; abstract?: boolean }): string {
-  const words = [
-    member.access && member.access !== "PUBLIC" ? member.access : "",
-    member.final ? "FINAL" : "",
-    member.abstract ? "ABSTRACT" : "",
-  ];
-  return words.filter(Boolean).join(" ");
-}
 
 /** A method or function block made FINAL or ABSTRACT: the two exclude each other (what is FINAL cannot be left to
  * a derived FB to implement), so setting one clears the other. */

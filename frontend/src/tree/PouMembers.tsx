@@ -1,5 +1,5 @@
 import type { Pou } from "../generated/api";
-import { modifiersText, type Access } from "../methods/members";
+import { modifiersText, type Access } from "./modifiers";
 
 /** What a member row says: `Name : TYPE`, and its specifiers when it has any beyond PUBLIC (CODESYS's tree). */
 function memberLabel(
