@@ -33,7 +33,9 @@ export default defineConfig({
     },
   },
   test: {
-    environment: "jsdom",
+    // Most tests are pure logic and run in node; a file that renders or needs the DOM says
+    // `// @vitest-environment jsdom` (setting up jsdom for every file took 40 % of the run).
+    environment: "node",
     include: ["src/**/*.test.{ts,tsx}"],
     setupFiles: ["src/test/setup.ts"],
     restoreMocks: true,

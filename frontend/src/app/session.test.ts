@@ -1,3 +1,4 @@
+// @vitest-environment jsdom
 import { describe, expect, it, vi } from "vitest";
 import type { ProjectApi } from "../api/client";
 import type { SimulationInfo } from "../generated/api";

@@ -1,3 +1,4 @@
+// @vitest-environment jsdom
 import { afterEach, beforeEach, describe, expect, it, vi } from "vitest";
 import { debugStore } from "../debug/store";
 import { emptyMonitor } from "../online/monitor";

@@ -1,3 +1,4 @@
+// @vitest-environment jsdom
 import { describe, expect, it } from "vitest";
 import type { ClientMessage } from "../online/protocol";
 import type { Project } from "../generated/api";

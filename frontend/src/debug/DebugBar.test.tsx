@@ -1,3 +1,4 @@
+// @vitest-environment jsdom
 import type { ClientMessage } from "../online/protocol";
 import { act, fireEvent, render, screen } from "@testing-library/react";
 import { afterEach, describe, expect, it, vi } from "vitest";

@@ -1,3 +1,4 @@
+// @vitest-environment jsdom
 import type { ClientMessage } from "../online/protocol";
 import fc from "fast-check";
 import { describe, expect, it, vi } from "vitest";

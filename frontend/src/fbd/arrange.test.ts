@@ -1,3 +1,4 @@
+// @vitest-environment jsdom
 // Auto-arrange of a network with a feedback loop (issue 22 item 6): data flows left to right, the wire that
 // closes the loop is the only one running back, around the blocks, and the execution order is kept.
 import { describe, expect, it } from "vitest";

@@ -1,3 +1,4 @@
+// @vitest-environment jsdom
 // Which wires the FBD editor accepts (issue 9: "Wires only connect type-compatible pins").
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";

@@ -1,3 +1,4 @@
+// @vitest-environment jsdom
 // FBD <-> CFC conversion (issue 26 brief item 5): networks stacked on one chart numbered in their FBD order;
 // a chart back to FBD only when its numbers are the data-flow order.
 import { describe, expect, it } from "vitest";

@@ -1,3 +1,4 @@
+// @vitest-environment jsdom
 // Online FBD (issue 9 "Online mode for FBD"): the probes a view subscribes and what wires show.
 import { describe, expect, it } from "vitest";
 import { emptyMonitor, powerKey } from "../online/monitor";

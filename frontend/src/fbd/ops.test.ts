@@ -1,3 +1,4 @@
+// @vitest-environment jsdom
 // FBD model operations (issue 9 "FBD editor"): nodes, wires, pins, order, arrange, undo, clipboard.
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";

@@ -1,3 +1,4 @@
+// @vitest-environment jsdom
 // A CFC chart's execution order (docs/diagrams.md "CFC", CFC-02): numbers over the executed elements,
 // moves that may go against the wiring, and "order by data flow" from the backend's FBD order.
 import { describe, expect, it } from "vitest";

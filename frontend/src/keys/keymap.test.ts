@@ -1,3 +1,4 @@
+// @vitest-environment jsdom
 import { describe, expect, it } from "vitest";
 import { COMMANDS } from "../ld/editor/commands";
 import { LD_EDITOR_KEYS } from "../ld/editor/LdEditor";

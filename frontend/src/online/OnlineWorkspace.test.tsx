@@ -1,3 +1,4 @@
+// @vitest-environment jsdom
 // The app with online mode, the bottom panels and the ST view, over a faked server and websocket.
 import { act, fireEvent, render, screen, waitFor, within } from "@testing-library/react";
 import { beforeEach, describe, expect, it, vi } from "vitest";

@@ -1,3 +1,4 @@
+// @vitest-environment jsdom
 // The Diagnostics panel: places in the user's words (issue 22 item 5) and each code's catalogue entry
 // (issue 19 item 5: docs/diagnostics.md through src/generated/diagnostics.ts).
 import { fireEvent, render, screen, waitFor } from "@testing-library/react";

@@ -1,3 +1,4 @@
+// @vitest-environment jsdom
 import { forEachDiagnostic } from "@codemirror/lint";
 import { EditorView } from "@codemirror/view";
 import { act, fireEvent, render, renderHook } from "@testing-library/react";

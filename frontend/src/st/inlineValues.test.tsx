@@ -1,3 +1,4 @@
+// @vitest-environment jsdom
 import { EditorView } from "@codemirror/view";
 import { act, fireEvent, render } from "@testing-library/react";
 import { describe, expect, it, vi } from "vitest";

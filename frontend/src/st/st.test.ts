@@ -1,3 +1,4 @@
+// @vitest-environment jsdom
 import { StringStream } from "@codemirror/language";
 import { Text } from "@codemirror/state";
 import { CompletionContext } from "@codemirror/autocomplete";

@@ -1,3 +1,4 @@
+// @vitest-environment jsdom
 // The sizes the user drags the side panels to are kept within their limits and across reloads.
 import { act, renderHook } from "@testing-library/react";
 import { describe, expect, it } from "vitest";

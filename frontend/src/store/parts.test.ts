@@ -1,3 +1,4 @@
+// @vitest-environment jsdom
 import { describe, expect, it } from "vitest";
 import type { Project } from "../generated/api";
 import { focusOf } from "./panels";

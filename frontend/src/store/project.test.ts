@@ -1,3 +1,4 @@
+// @vitest-environment jsdom
 import { describe, expect, it, vi } from "vitest";
 import { SaveConflictError, type ProjectApi } from "../api/client";
 import type { ProjectDocument } from "../generated/api";

@@ -1,3 +1,4 @@
+// @vitest-environment jsdom
 // The run stream (issue 20): JSON lines arrive in chunks cut anywhere; each complete line is one event.
 import { afterEach, describe, expect, it, vi } from "vitest";
 import type { TestEvent } from "../generated/api";

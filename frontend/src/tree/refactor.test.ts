@@ -1,3 +1,4 @@
+// @vitest-environment jsdom
 import { afterEach, describe, expect, it, vi } from "vitest";
 import type { Pou, Reference } from "../generated/api";
 import { jsonResponse, stubFetch } from "../test/fetchStub";

@@ -1,3 +1,4 @@
+// @vitest-environment jsdom
 // The theme chosen in one session is the one the next opens with; without a choice the system's decides.
 import { describe, expect, it } from "vitest";
 import { applyTheme, initialTheme } from "./theme";

@@ -1,3 +1,4 @@
+// @vitest-environment jsdom
 // The diagram editors' root wiring (issue 19): keys run through the keymap to the editor's handlers,
 // fields and overlays keep their keys, clipboard keys are left to the browser's clipboard events, and
 // Ctrl+wheel zooms. A small editor of the "fbd" scope stands for LD, FBD and SFC, which all use the hook.

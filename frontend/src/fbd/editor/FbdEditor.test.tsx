@@ -1,3 +1,4 @@
+// @vitest-environment jsdom
 // The FBD editor in jsdom: palette, operand entry with the declare offer, node and pin menus,
 // order badges from the (faked) backend, undo. Dragging and wiring run in the browser test.
 import { act, fireEvent, render, screen, waitFor, within } from "@testing-library/react";

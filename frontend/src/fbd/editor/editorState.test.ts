@@ -1,3 +1,4 @@
+// @vitest-environment jsdom
 // The FBD editor's transitions without React (issue 19): selection in a network's canvas and of a
 // whole network, an edit's outcome, halt and focus requests, overlays, the networks near the viewport,
 // and the pure questions (where new things go, what Delete and Copy take, what F9 toggles, the type a
