@@ -9,12 +9,18 @@ from __future__ import annotations
 
 import json
 import re
+import urllib.request
+from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
+from playwright.sync_api import expect
 
+from tests.live_server import LiveServer
+
+from .bench_steps import expect_on
 from .conftest import ARTIFACTS
-from .steps import go_online, open_pou, watch
+from .steps import go_online, open_pou, store_project, watch
 
 pytestmark = pytest.mark.browser
 
@@ -331,3 +337,152 @@ def _start_written_before_scan_4(page, scan, cycle) -> None:
     for number in (4, 5, 6):
         cycle.click()
         scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
+
+
+def _st_project(name: str, declarations: str, body: str, panels: list | None = None) -> dict:
+    main = {"name": "Main", "kind": "program", "language": "st", "declarations": declarations, "body": body}
+    return {"name": name, "pous": [main], "panels": panels or []}
+
+
+def _cycles(page, scan, cycle, numbers) -> None:
+    for number in numbers:
+        cycle.click()
+        scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
+
+
+def test_the_timeline_marks_the_scan_that_ended_with_a_runtime_error(page, server, browser_errors):
+    """Issue 23 item 3 (marks for runtime errors): Main counts its scans and divides 100 by Divisor; Divisor is
+    written 0 from the watch list after scan 3, so scan 4 divides by zero and the simulation faults. The timeline
+    marks scan 4 in the error colour (an error outranks the write of the same scan), and a click on the mark shows
+    scan 4's values: Count 4, Divisor 0; scan 2 shows Count 2, Divisor 1, Result 100."""
+    browser_errors.allow(r"division by zero|divide by zero")  # the fault the test provokes, should the page log it
+    declarations = "VAR\n    Count : INT;\n    Divisor : INT := 1;\n    Result : INT;\nEND_VAR"
+    store_project(server, _st_project("divide", declarations, "Count := Count + 1;\nResult := 100 / Divisor;"))
+    page.goto(server)
+    open_pou(page, "divide", "Main")
+    go_online(page, run=False)
+    scan, cycle = page.get_by_test_id("scan-count"), page.get_by_role("button", name="Single cycle")
+    count, divisor, result = (watch(page, path) for path in ("Main.Count", "Main.Divisor", "Main.Result"))
+    _cycles(page, scan, cycle, (1, 2, 3))
+    result.filter(has_text=re.compile("^100$")).wait_for()
+    page.get_by_label("New value for Main.Divisor").fill("0")
+    page.get_by_role("region", name="Panels").locator('tr[data-path="MAIN.DIVISOR"]').get_by_role(
+        "button", name="Write"
+    ).click()
+    cycle.click()  # scan 4 divides by zero
+    page.get_by_role("status", name="Online state").filter(has_text="faulted").wait_for()
+    count.filter(has_text=re.compile("^4$")).wait_for()
+
+    timeline = page.get_by_role("group", name="Scan history")
+    mark = timeline.locator('.history-mark[data-mark-scan="4"]')
+    mark.wait_for()
+    assert mark.get_attribute("class") == "history-mark error"
+    assert mark.get_attribute("aria-label") == "scan 4: error, write"
+    assert timeline.locator(".history-mark").count() == 1  # nothing else happened in scans 1 to 4
+
+    slider = timeline.get_by_role("slider", name="Scan")
+    slider.fill("2")
+    banner = page.get_by_role("status", name="History view")
+    banner.filter(has_text="Viewing scan 2 (history)").wait_for()
+    count.filter(has_text=re.compile("^2$")).wait_for()
+    divisor.filter(has_text=re.compile("^1$")).wait_for()
+    result.filter(has_text=re.compile("^100$")).wait_for()
+    mark.click()
+    banner.filter(has_text="Viewing scan 4 (history)").wait_for()
+    count.filter(has_text=re.compile("^4$")).wait_for()
+    divisor.filter(has_text=re.compile("^0$")).wait_for()
+    page.screenshot(path=str(ARTIFACTS / "history-error-mark.png"))
+
+
+@pytest.fixture
+def small_history_server(tmp_path: Path, chromium_path: str) -> Iterator[str]:
+    """A server whose simulations keep 1 MB of scan history each (``--history-mb 1``)."""
+    live = LiveServer(tmp_path / "small", tmp_path / "small-server.log", "--history-mb", "1")
+    try:
+        yield live.start().url
+    finally:
+        live.stop()
+
+
+def _info(server: str, simulation: str) -> dict:
+    with urllib.request.urlopen(f"{server}/api/simulations/{simulation}", timeout=30) as response:
+        return json.load(response)
+
+
+def test_the_timeline_says_from_which_scan_history_is_available_once_the_oldest_is_dropped(page, small_history_server):
+    """Issue 23 item 1 ("the oldest history is dropped first and the UI says from which scan history is available"):
+    a server with 1 MB of history per simulation runs a program whose 20,000 LREALs change every scan (each
+    checkpoint about 100 kB even compressed); after a few hundred scans the oldest checkpoints are gone. Stopped, the
+    timeline says "from scan N" with N the first scan the server reports (GET /api/simulations/ID), N > 1, the
+    slider starts at N, and the back button is disabled there."""
+    server = small_history_server
+    declarations = "VAR\n    Noise : ARRAY[1..20000] OF LREAL;\n    I : DINT;\n    Seed : LREAL := 0.5;\nEND_VAR"
+    body = "FOR I := 1 TO 20000 DO\n    Seed := Seed * 3.9 * (1.0 - Seed);\n    Noise[I] := Seed;\nEND_FOR;"
+    store_project(server, _st_project("big", declarations, body))
+    page.goto(server)
+    open_pou(page, "big", "Main")
+    go_online(page, run=True)
+    timeline = page.get_by_role("group", name="Scan history")
+    recording = timeline.get_by_role("link", name="Download recording").get_attribute("href")
+    simulation = re.fullmatch(r"/api/simulations/([^/]+)/recording", recording or "").group(1)
+    page.wait_for_function(
+        "() => Number(document.querySelector('[aria-label=\"Scan history\"] input')?.min) > 1", timeout=120_000
+    )
+    page.get_by_role("button", name="Stop", exact=True).click()
+    page.get_by_role("status", name="Online state").filter(has_text="Online · stopped").wait_for()
+
+    history = _info(server, simulation)["history"]
+    first = history["first"]
+    assert first > 1 and history["budget_bytes"] == 1024 * 1024
+    expect(timeline.get_by_label("History kept")).to_have_text(f"from scan {first}")
+    slider = timeline.get_by_role("slider", name="Scan")
+    assert slider.get_attribute("min") == str(first)
+    slider.fill(str(first))
+    banner = page.get_by_role("status", name="History view")
+    banner.filter(has_text=f"Viewing scan {first} (history)").wait_for()
+    expect(timeline.get_by_role("button", name="◀")).to_be_disabled()  # no scan before the first one kept
+    slider.focus()
+    page.keyboard.press("ArrowLeft")
+    page.keyboard.press("Home")
+    expect(slider).to_have_value(str(first))
+    assert banner.inner_text().startswith(f"Viewing scan {first} (history)")
+
+
+def test_an_operator_panel_shows_the_past_scan_while_it_is_viewed(page, server):
+    """Issue 23 item 2 ("the watch list and panels show exactly what that scan computed"): the panel Desk's lamp
+    shows Main.Lamp (Count >= 3) and its numeric display Main.Count; after five single cycles they show 5 and on;
+    scan 2 viewed, they show 2 and off; back to live, 5 and on again."""
+    desk = {
+        "name": "Desk",
+        "widgets": [
+            {"type": "lamp", "id": "lamp1", "x": 20, "y": 20, "w": 30, "h": 30, "bind": "Main.Lamp"},
+            {"type": "numeric_display", "id": "count1", "x": 80, "y": 20, "w": 120, "h": 30, "bind": "Main.Count"},
+        ],
+    }
+    declarations = "VAR\n    Count : INT;\n    Lamp : BOOL;\nEND_VAR"
+    store_project(server, _st_project("desk", declarations, "Count := Count + 1;\nLamp := Count >= 3;", [desk]))
+    page.goto(server)
+    page.get_by_role("navigation", name="Projects").get_by_role("button", name=re.compile("^desk")).click()
+    page.get_by_role("heading", name="desk").wait_for()
+    tree = page.get_by_role("navigation", name="Project tree")
+    tree.get_by_role("button", name=re.compile("^Desk")).filter(has_text="HMI").click()
+    page.locator('svg.hmi-canvas[data-panel="Desk"]').wait_for()
+    go_online(page, run=False)
+    scan, cycle = page.get_by_test_id("scan-count"), page.get_by_role("button", name="Single cycle")
+    _cycles(page, scan, cycle, (1, 2, 3, 4, 5))
+    display = page.locator('[data-widget="count1"] [data-text]').first
+    expect(display).to_have_attribute("data-text", "5")
+    expect_on(page, "lamp1")
+
+    timeline = page.get_by_role("group", name="Scan history")
+    timeline.get_by_role("slider", name="Scan").fill("2")
+    banner = page.get_by_role("status", name="History view")
+    banner.filter(has_text="Viewing scan 2 (history)").wait_for()
+    expect(display).to_have_attribute("data-text", "2")
+    expect_on(page, "lamp1", False)
+    page.screenshot(path=str(ARTIFACTS / "history-panel-scan-2.png"))
+
+    timeline.get_by_role("button", name="Live").click()
+    banner.wait_for(state="detached")
+    expect(display).to_have_attribute("data-text", "5")
+    expect_on(page, "lamp1")

@@ -80,6 +80,7 @@ def test_a_password_file_replaces_the_token(tmp_path: Path) -> None:
         (["--password-file", "/nonexistent/password"], "cannot read a password from /nonexistent/password"),
         (["--allowed-host", "*"], "--allowed-host '*' needs --allow-remote or --password-file"),
         (["--host", "0.0.0.0"], "pass --allow-remote to serve other machines"),
+        (["--history-mb", "-1"], "argument --history-mb: '-1' is not a whole number >= 0"),
     ],
 )
 def test_serve_refuses_unsafe_or_broken_options(tmp_path: Path, args: list[str], message: str) -> None:
@@ -87,6 +88,21 @@ def test_serve_refuses_unsafe_or_broken_options(tmp_path: Path, args: list[str],
     assert result.returncode == 2
     assert message in result.stderr
     assert "Traceback" not in result.stderr
+
+
+def test_history_mb_is_each_simulations_history_budget(tmp_path: Path) -> None:
+    """Issue 23 item 1 ("default 256 MB, configurable"): ``--history-mb 3`` gives a simulation 3 MiB of history."""
+    server = LiveServer(tmp_path / "ws", tmp_path / "server.log", "--history-mb", "3").start()
+    try:
+        with httpx.Client(base_url=server.url, timeout=30) as http:
+            created = http.post("/api/projects/motor/simulations", json={})  # the example the server seeds
+            assert created.status_code == 201, created.text
+            simulation = created.json()["id"]
+            info = http.post(f"/api/simulations/{simulation}/cycle", json={}).json()
+            assert info["history"]["budget_bytes"] == 3 * 1024 * 1024
+            http.delete(f"/api/simulations/{simulation}")
+    finally:
+        server.stop()
 
 
 def test_a_short_password_is_refused(tmp_path: Path) -> None:

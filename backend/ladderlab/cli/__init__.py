@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING
 from ..engine.variants import VARIANTS
 from ..model import has_errors
 from ..model.schema import SCHEMA_MODELS, schema_of
+from ..simulation.registry import SimulationRegistry, SimulationSettings
 from ..storage import StorageError, load_project_path
 from ..storage.atomic import write_atomic
 from ..storage.project_folder import revision_of
@@ -101,6 +102,14 @@ def _parser() -> argparse.ArgumentParser:
     )
     serve.add_argument(
         "--secure-cookies", action="store_true", help="mark the session cookie Secure (behind a TLS proxy)"
+    )
+    serve.add_argument(
+        "--history-mb",
+        type=_non_negative,
+        default=SimulationSettings.history_mb,
+        metavar="MB",
+        help="scan history kept per simulation: checkpoints and input log, the oldest dropped first "
+        f"(default {SimulationSettings.history_mb}; 0: none)",
     )
     serve.set_defaults(func=_serve)
 
@@ -469,6 +478,17 @@ def _is_loopback(host: str) -> bool:
         return False
 
 
+def _non_negative(text: str) -> int:
+    """An argparse type: a whole number >= 0."""
+    try:
+        number = int(text)
+    except ValueError:
+        number = -1
+    if number < 0:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number >= 0")
+    return number
+
+
 def _serve(args: argparse.Namespace) -> int:
     import uvicorn
 
@@ -500,8 +520,10 @@ def _serve(args: argparse.Namespace) -> int:
         print(f"LadderLab on {url} (workspace {workspace.root})")
     open_files = raise_open_files_limit()
     limits = Limits(max_websockets=min(Limits.max_websockets, open_files // 2))
+    app = create_app(workspace, limits, security)
+    app.state.simulations = SimulationRegistry(SimulationSettings(history_mb=args.history_mb))
     config = uvicorn.Config(
-        create_app(workspace, limits, security),
+        app,
         host=args.host,
         port=args.port,
         log_level="warning",
