@@ -85,6 +85,9 @@ class Expressions:
         #: Where the lines computing a deep expression's parts go (just before the statement that uses it);
         #: None where no line may go (a condition the statement re-evaluates: see Statements).
         self.sink: Source | None = None
+        #: (code, local): an FB instance's code and the local that holds it right after its call (``ll_fb``), read
+        #: through the local while the statements after the call are assignments (Statements sets and clears it)
+        self.alias: tuple[str, str] | None = None
 
     # ------------------------------------------------------------------ dispatch
 
@@ -284,6 +287,8 @@ class Expressions:
         """Source of the variable ``v`` (readable and assignable) and its declared type."""
         code, ty = self.scope.root(v)
         for number, selector in enumerate(v.path):
+            if self.alias is not None and code == self.alias[0]:
+                code = self.alias[1]
             if isinstance(selector, ir.Deref):
                 if not isinstance(ty, t.Reference):
                     raise CodegenError(f"'^' on a {describe(ty)}")
