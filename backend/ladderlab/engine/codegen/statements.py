@@ -75,6 +75,7 @@ class Statements:
         #: id() of the statements whose store into a temporary local nothing reads (liveness.py), left out where no
         #: probe is recorded
         self.dead: set[int] = set()
+        self.temps = frozenset(scope.temp_locals.values())  # the temporaries' locals
         if scope.temp_locals and not self.debug:
             temps = frozenset(scope.temp_locals)
             live_out = frozenset() if plan.inline else temps  # (the next chunk takes the temporaries over)
@@ -203,12 +204,14 @@ class Statements:
                 s for s in statements if type(s) is not ir.Probe and not (type(s) is ir.Assign and id(s) in dead)
             ]
         self.x.alias = None
+        self.x.forward = {}
         for i, s in enumerate(statements):
             if fused:  # the previous statement recorded this probe
                 fused = False
                 continue
             if type(s) is not ir.Assign and type(s) is not ir.Probe:
                 self.x.alias = None  # (only an assignment surely leaves ``ll_fb`` as the last FB call set it)
+                self.x.forward = {}
             if probes:
                 following = statements[i + 1] if i + 1 < len(statements) else None
                 self._following = following if isinstance(following, ir.Probe) else None
@@ -218,6 +221,7 @@ class Statements:
             if not isinstance(s, _STRAIGHT) and not _straight(s):
                 self.group = None  # what follows may run without what came before
         self.x.alias = None
+        self.x.forward = {}
         if own_group:
             self.group = outer
         if all(line.lstrip().startswith("#") for line in self.src.lines[before:]):  # nothing but comments, or nothing
@@ -278,13 +282,32 @@ class Statements:
             self.src.line(f"{code} = {value}")
 
     def store(self, target: ir.Var, value: ir.Expr, probe: ir.Probe | None = None) -> None:
+        forward = self.x.forward
+        if forward and (next(calls_in(value), None) is not None or next(calls_in(target), None) is not None):
+            forward.clear()  # a call may write any variable before the read
         code, ty = self.x.access(target)
         if isinstance(ty, t.FbInstance):
             raise CodegenError("an FB instance cannot be assigned")
         if is_composite(ty):
             self.src.line(f"ll_assign({code}, {self.x.expr(value)})")
-        else:
-            self._set(code, self.x.stored(value, ty), probe)
+            forward.clear()
+            return
+        stored = self.x.stored(value, ty)
+        self._set(code, stored, probe)
+        self._forward(code, stored)
+
+    def _forward(self, code: str, stored: str) -> None:
+        """After ``code = stored``: where no probe is recorded, reads of the variable ``code`` take the temporary
+        local ``stored`` until anything but an assignment to a temporary local runs (a store to memory may reach
+        the variable through another path). Exact: the variable holds that very value meanwhile."""
+        forward = self.x.forward
+        if code in self.temps:
+            for key in [key for key, local in forward.items() if local == code]:
+                del forward[key]  # the local changes: the variable no longer holds it
+            return
+        forward.clear()
+        if self.probes is None and not self.debug and stored in self.temps and _PLAIN_CHAIN.fullmatch(code):
+            forward[code] = stored
 
     def _if(self, s: ir.If, oid: int) -> None:
         if self.probes is None and _only_probes(s):
