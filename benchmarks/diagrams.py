@@ -12,6 +12,7 @@ each of ``--runs`` fresh processes per language, then the build's best / median 
 from __future__ import annotations
 
 import argparse
+import os
 import pathlib
 import re
 import statistics
@@ -20,7 +21,9 @@ import sys
 import time
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
-sys.path[:0] = [str(ROOT / "backend"), str(ROOT)]
+#: The engine measured: this checkout's, or another's (``LADDERLAB_ROOT=/path/to/base``) with these benchmarks
+ENGINE = pathlib.Path(os.environ.get("LADDERLAB_ROOT") or ROOT) / "backend"
+sys.path[:0] = [str(ENGINE), str(ROOT)]
 
 from ladderlab.engine.compile import compile_program  # noqa: E402
 from ladderlab.engine.simulation import Simulation  # noqa: E402

@@ -18,18 +18,16 @@ benchmarks/peers.py`` (``LADDERLAB_ROOT=/path/to/base`` measures that checkout's
 
 from __future__ import annotations
 
-import os
 import pathlib
 import sys
 import time
 from collections.abc import Callable
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
-BASE = pathlib.Path(os.environ.get("LADDERLAB_ROOT") or ROOT)  # the engine measured: another checkout's, to compare
-sys.path[:0] = [str(BASE / "backend"), str(ROOT)]
+sys.path[:0] = [str(ROOT)]
 
 from benchmarks.common import load_average  # noqa: E402
-from benchmarks.diagrams import NETWORKS, project  # noqa: E402
+from benchmarks.diagrams import ENGINE, NETWORKS, project  # noqa: E402  # (puts the engine measured on the path)
 from benchmarks.diagrams import TIMED as TIMED_EVERY  # noqa: E402
 from ladderlab.engine.compile import compile_program  # noqa: E402
 from ladderlab.engine.simulation import Simulation  # noqa: E402
@@ -148,7 +146,7 @@ def lower_bound(timed: int = TIMED_EVERY) -> None:
         f"{NETWORKS} LD networks ({program}), per scan (CPU, best of {ROUNDS}): LadderLab {off:.0f} us, "
         f"hand-written Python {bound:.0f} us: {off / bound:.2f}x the lower bound (target <= 1.5x); monitoring on "
         f"{on:.0f} us = {on / off:.2f}x off (target <= 1.3x); same values: {'yes' if same else 'NO'}; "
-        f"{load_average()}"
+        f"engine {ENGINE.parent}; {load_average()}"
     )
 
 
