@@ -114,7 +114,13 @@ def project(language: str, networks: int, timed: int = TIMED) -> Project:
         if language == "ld"
         else fbd.FbdBody(networks=[fbd_network(n) for n in range(networks)])
     )
-    pou = Pou(name="Main", kind="program", language=language, declarations=declarations(networks, timed if language == "ld" else TIMED), body=body)
+    pou = Pou(
+        name="Main",
+        kind="program",
+        language=language,
+        declarations=declarations(networks, timed if language == "ld" else TIMED),
+        body=body,
+    )
     return Project(name="bench", pous=[pou], tasks=[Task(name="main", interval="T#10ms", programs=["Main"])])
 
 

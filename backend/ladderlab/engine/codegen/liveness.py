@@ -103,9 +103,7 @@ def _temp(var: ir.Var, temps: frozenset[str]) -> str | None:
 
 def _reads(e: ir.Expr | None, temps: frozenset[str]) -> set[str]:
     return {
-        name
-        for node in expression_nodes(e)
-        if isinstance(node, ir.Var) and (name := _temp(node, temps)) is not None
+        name for node in expression_nodes(e) if isinstance(node, ir.Var) and (name := _temp(node, temps)) is not None
     }
 
 
