@@ -12,6 +12,7 @@ each of ``--runs`` fresh processes per language, then the build's best / median 
 from __future__ import annotations
 
 import argparse
+import os
 import pathlib
 import re
 import statistics
@@ -20,7 +21,9 @@ import sys
 import time
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
-sys.path[:0] = [str(ROOT / "backend"), str(ROOT)]
+#: The engine measured: this checkout's, or another's (``LADDERLAB_ROOT=/path/to/base``) with these benchmarks
+ENGINE = pathlib.Path(os.environ.get("LADDERLAB_ROOT") or ROOT) / "backend"
+sys.path[:0] = [str(ENGINE), str(ROOT)]
 
 from ladderlab.engine.compile import compile_program  # noqa: E402
 from ladderlab.engine.simulation import Simulation  # noqa: E402
@@ -32,22 +35,27 @@ from ladderlab.st.parser import parse_expression  # noqa: E402
 NETWORKS = 10_000
 
 
-def declarations(networks: int) -> str:
+#: Every TIMED-th network has the timer, counter and adder branches; ``peers.py``'s counter/timer-heavy variant
+#: gives them to every network (``timed=1``).
+TIMED = 4
+
+
+def declarations(networks: int, timed: int = TIMED) -> str:
     lines = ["VAR"]
     for n in range(networks):
         lines.append(f"    A{n}, B{n}, C{n} : BOOL;")
-        if n % 4 == 0:
+        if n % timed == 0:
             lines.append(f"    T{n} : TON; K{n} : CTU; X{n} : INT; Y{n} : BOOL;")
     return "\n".join(lines + ["END_VAR"])
 
 
-def ld_network(n: int) -> ld.LdNetwork:
+def ld_network(n: int, timed: int = TIMED) -> ld.LdNetwork:
     elements: list = [
         ld.Contact(id=f"a{n}", var=f"A{n}"),
         ld.Contact(id=f"b{n}", var=f"B{n}", mode="nc"),
         ld.Coil(id=f"c{n}", var=f"C{n}"),
     ]
-    if n % 4:
+    if n % timed:
         return ld.LdNetwork(id=f"n{n}", elements=elements)
     timers = [
         ld.Contact(id=f"tc{n}", var=f"C{n}"),
@@ -99,13 +107,20 @@ def fbd_network(n: int) -> fbd.FbdNetwork:
     return fbd.FbdNetwork(id=f"n{n}", nodes=nodes, wires=wires)
 
 
-def project(language: str, networks: int) -> Project:
+def project(language: str, networks: int, timed: int = TIMED) -> Project:
+    """``timed``: every how many networks have the timer, counter and adder (LD only; FBD every fourth)."""
     body = (
-        ld.LdBody(networks=[ld_network(n) for n in range(networks)])
+        ld.LdBody(networks=[ld_network(n, timed) for n in range(networks)])
         if language == "ld"
         else fbd.FbdBody(networks=[fbd_network(n) for n in range(networks)])
     )
-    pou = Pou(name="Main", kind="program", language=language, declarations=declarations(networks), body=body)
+    pou = Pou(
+        name="Main",
+        kind="program",
+        language=language,
+        declarations=declarations(networks, timed if language == "ld" else TIMED),
+        body=body,
+    )
     return Project(name="bench", pous=[pou], tasks=[Task(name="main", interval="T#10ms", programs=["Main"])])
 
 

@@ -3,7 +3,9 @@
 * **Hand-written Python**, the lower bound: the 10,000-network LD program of ``diagrams.py`` written the way a
   Python programmer would write it by hand (power flow in locals, TON and CTU inlined with their state on the
   program object, the INT addition wrapped in place). It computes the same values as LadderLab's scan (checked
-  after the runs); the ratio LadderLab / hand-written is the gap to what Python allows (target <= 1.5x).
+  after the runs); the ratio LadderLab / hand-written is the gap to what Python allows (target <= 1.5x). Twice:
+  the program of ``diagrams.py`` (a timer, a counter and an adder every fourth network) and its counter/timer-heavy
+  variant (all three in every network), each against a hand-written program computing the same values.
 * **pyrung** (``pip install '.[bench]'``): the boolean networks of the same program (``A AND NOT B -> C``) as
   pyrung rungs, run by its interpreter (``PLC``) and by its compiled kernel (``CompiledPLC``), against LadderLab
   scanning the same networks.
@@ -11,7 +13,7 @@
 
 Every figure is the CPU time per scan of a batch of scans, the contenders taking turns batch by batch in the
 same process (so a load change hits them alike), best of the rounds; run with ``.venv/bin/python
-benchmarks/peers.py``.
+benchmarks/peers.py`` (``LADDERLAB_ROOT=/path/to/base`` measures that checkout's engine with these benchmarks).
 """
 
 from __future__ import annotations
@@ -22,10 +24,11 @@ import time
 from collections.abc import Callable
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
-sys.path[:0] = [str(ROOT / "backend"), str(ROOT)]
+sys.path[:0] = [str(ROOT)]
 
 from benchmarks.common import load_average  # noqa: E402
-from benchmarks.diagrams import NETWORKS, project  # noqa: E402
+from benchmarks.diagrams import ENGINE, NETWORKS, project  # noqa: E402  # (puts the engine measured on the path)
+from benchmarks.diagrams import TIMED as TIMED_EVERY  # noqa: E402
 from ladderlab.engine.compile import compile_program  # noqa: E402
 from ladderlab.engine.simulation import Simulation  # noqa: E402
 from ladderlab.ir.lower_project import lower_project  # noqa: E402
@@ -65,9 +68,9 @@ TIMED = """    if not c:
 PART = 500
 
 
-def handwritten(networks: int) -> tuple[list[object], Callable[[int], None]]:
+def handwritten(networks: int, timed: int = TIMED_EVERY) -> tuple[list[object], Callable[[int], None]]:
     """The program's state objects (PART networks' variables each, at their initial values) and its scan
-    function ``scan(now)``."""
+    function ``scan(now)``; every ``timed``-th network has the timer, counter and adder."""
     states, parts = [], []
     for first in range(0, networks, PART):
         initial: dict[str, object] = {}
@@ -75,7 +78,7 @@ def handwritten(networks: int) -> tuple[list[object], Callable[[int], None]]:
         for n in range(first, min(first + PART, networks)):
             initial |= {f"A{n}": False, f"B{n}": False, f"C{n}": False}
             body.append(NETWORK.format(n=n))
-            if n % 4 == 0:
+            if n % timed == 0:
                 initial |= {f"T{n}_run": False, f"T{n}_Q": False, f"T{n}_ET": 0, f"T{n}_start": 0}
                 initial |= {f"K{n}_CV": 0, f"K{n}_cu": False, f"K{n}_Q": False, f"X{n}": 0, f"Y{n}": False}
                 body.append(TIMED.format(n=n))
@@ -101,16 +104,17 @@ def _per_scan_us(run: Callable[[int], None], scans: int) -> float:
     return (time.thread_time() - start) / scans * 1e6
 
 
-def _ld_simulation(networks: int, variant: str = "fast") -> Simulation:
-    lowered = lower_project(project("ld", networks))
+def _ld_simulation(networks: int, variant: str = "fast", timed: int = TIMED_EVERY) -> Simulation:
+    lowered = lower_project(project("ld", networks, timed))
     assert lowered.program is not None
     return Simulation(compile_program(lowered.program, variant))
 
 
-def lower_bound() -> None:
-    """LadderLab (fast and monitor variant) against the hand-written program, batches of scans taking turns."""
-    fast, monitor = _ld_simulation(NETWORKS), _ld_simulation(NETWORKS, "monitor")
-    states, scan = handwritten(NETWORKS)
+def lower_bound(timed: int = TIMED_EVERY) -> None:
+    """LadderLab (fast and monitor variant) against the hand-written program, batches of scans taking turns;
+    ``timed``: every how many networks have a timer, a counter and an adder."""
+    fast, monitor = _ld_simulation(NETWORKS, timed=timed), _ld_simulation(NETWORKS, "monitor", timed)
+    states, scan = handwritten(NETWORKS, timed)
     for n in range(0, NETWORKS, 3):  # a third of the rungs conduct, as in diagrams.py
         for sim in (fast, monitor):
             sim.write(f"Main.A{n}", True)
@@ -134,14 +138,15 @@ def lower_bound() -> None:
     same = all(
         fast.read(f"Main.{name}") == variable(name, n) == monitor.read(f"Main.{name}")
         for n in range(NETWORKS)
-        for name in ([f"C{n}", f"X{n}", f"Y{n}"] if n % 4 == 0 else [f"C{n}"])
-    ) and all(fast.read(f"Main.K{n}.CV") == variable(f"K{n}_CV", n) for n in range(0, NETWORKS, 4))
+        for name in ([f"C{n}", f"X{n}", f"Y{n}"] if n % timed == 0 else [f"C{n}"])
+    ) and all(fast.read(f"Main.K{n}.CV") == variable(f"K{n}_CV", n) for n in range(0, NETWORKS, timed))
     off, on, bound = min(ours), min(watched), min(theirs)
+    program = "diagrams.py" if timed == TIMED_EVERY else "a TON, CTU and ADD in every network"
     print(
-        f"{NETWORKS} LD networks (diagrams.py), per scan (CPU, best of {ROUNDS}): LadderLab {off:.0f} us, "
+        f"{NETWORKS} LD networks ({program}), per scan (CPU, best of {ROUNDS}): LadderLab {off:.0f} us, "
         f"hand-written Python {bound:.0f} us: {off / bound:.2f}x the lower bound (target <= 1.5x); monitoring on "
         f"{on:.0f} us = {on / off:.2f}x off (target <= 1.3x); same values: {'yes' if same else 'NO'}; "
-        f"{load_average()}"
+        f"engine {ENGINE.parent}; {load_average()}"
     )
 
 
@@ -175,6 +180,7 @@ def pyrung_peer() -> None:
 
 def main() -> None:
     lower_bound()
+    lower_bound(timed=1)  # the counter/timer-heavy variant
     pyrung_peer()
 
 

@@ -53,8 +53,12 @@ def _series(draw, ids: _Ids, depth: int) -> list:
     return elements
 
 
-def _end(draw, ids: _Ids) -> list:
-    kind = draw(st.sampled_from(["coil", "coil", "ton", "ctu", "trig", "add"]))
+def _end(draw, ids: _Ids, fork: bool = True) -> list:
+    kind = draw(st.sampled_from(["coil", "coil", "ton", "ctu", "trig", "add", *(["fork"] * fork)]))
+    if kind == "fork":  # branches that each end in a coil or box (diagrams.py's timer networks): a coil's variable
+        # read by a contact of a later branch, FB outputs read right after the call, ORs of the branches unread
+        branches = [[*_series(draw, ids, 0), *_end(draw, ids, fork=False)] for _ in range(draw(st.integers(2, 3)))]
+        return [ld.Parallel(id=ids("f"), branches=branches)]
     if kind == "coil":
         mode = draw(st.sampled_from(["normal", "negated", "set", "reset", "p", "n"]))
         return [ld.Coil(id=ids("o"), var=draw(st.sampled_from(BOOLS)), mode=mode)]
@@ -154,3 +158,55 @@ def test_a_fault_report_shows_the_temporaries_as_the_debug_variant_does():
         reports.append(sim.fault.diagnostic().message)
     assert reports[0] == reports[1]
     assert "division by zero: 7 / 0" in reports[0] and "__P = True" in reports[0]
+
+
+def test_the_fast_code_shapes_keep_iec_values():
+    """Each shape of the fast code (docs/runtime.md, "Dead stores, forwarding, FB outputs") against values worked
+    out from IEC 61131-3 by hand, in every variant: a coil's variable read by a later branch after a reset coil
+    changed it (a store forwarded to a read must not outlive the reset's IF), a TON whose constant PT expired
+    (ET = PT, SFB-17: the folded ``pt if pt > 0 else 0``), and an ADD whose unread ENO is dropped (X still counts)."""
+    reset_then_read = ld.LdNetwork(
+        id="n1",
+        elements=[
+            ld.Contact(id="a", var="B0"),
+            ld.Parallel(
+                id="p",
+                branches=[
+                    [ld.Coil(id="c", var="B2")],
+                    [ld.Coil(id="r", var="B2", mode="reset")],
+                    [ld.Contact(id="d", var="B2"), ld.Coil(id="e", var="B3")],
+                ],
+            ),
+        ],
+    )
+    timer = ld.LdNetwork(
+        id="n2",
+        elements=[
+            ld.Contact(id="f", var="B0"),
+            ld.Box(id="t", call="TON", instance="T1", inputs={"PT": "T#30ms"}),
+            ld.Coil(id="g", var="B4"),
+        ],
+    )
+    adder = ld.LdNetwork(
+        id="n3",
+        elements=[
+            ld.Contact(id="h", var="B0"),
+            ld.Box(id="x", call="ADD", en=True, inputs={"IN1": "X", "IN2": "1"}, outputs={"OUT": "X"}),
+        ],
+    )
+    pou = Pou(
+        name="Main",
+        kind="program",
+        language="ld",
+        declarations=DECLARATIONS.replace("B0, ", "").replace("VAR ", "VAR B0 : BOOL := TRUE; "),
+        body=ld.LdBody(networks=[reset_then_read, timer, adder]),
+    )
+    project = Project(name="p", pous=[pou], tasks=[Task(name="main", interval="T#10ms", programs=["Main"])])
+    for variant in ("fast", "monitor", "debug"):
+        build = build_project(project, variant)
+        assert build.compiled is not None, [d.message for d in build.diagnostics]
+        sim = build.simulation()
+        sim.cycle(6)  # 60 ms with B0 TRUE from the first scan: the 30 ms timer has expired
+        assert sim.read("Main.B2") is False and sim.read("Main.B3") is False, variant  # reset, then read
+        assert sim.read("Main.T1.ET") == 30 and sim.read("Main.T1.Q") is True and sim.read("Main.B4") is True, variant
+        assert sim.read("Main.X") == 6, variant

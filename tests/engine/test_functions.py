@@ -386,6 +386,29 @@ def test_selection_vectors_FUN_60_62(name, types, args, expected):
     assert call(name, types, types[-1], *args) == expected
 
 
+NAN = math.nan
+
+
+@pytest.mark.parametrize(
+    "name, types, args",
+    [
+        ("MAX", ["REAL"] * 2, (0.0, NAN)),
+        ("MAX", ["REAL"] * 2, (NAN, 0.0)),
+        ("MIN", ["LREAL"] * 2, (NAN, -1.0)),
+        ("MIN", ["LREAL"] * 2, (-1.0, NAN)),
+        ("MAX", ["REAL"] * 3, (1.0, NAN, 2.0)),
+        ("MIN", ["REAL"] * 3, (1.0, 2.0, NAN)),
+        ("LIMIT", ["REAL"] * 3, (0.0, NAN, 1.0)),
+        ("LIMIT", ["REAL"] * 3, (NAN, 0.5, 1.0)),
+        ("LIMIT", ["LREAL"] * 3, (0.0, 0.5, NAN)),
+    ],
+)
+def test_a_nan_argument_of_max_min_and_limit_gives_nan_whatever_its_place_FUN_60(name, types, args):
+    """IEC leaves NaN to IEEE 754, whose 2019 maximum/minimum propagate it; a bare comparison would answer NaN or
+    the other number depending on the order of the arguments."""
+    assert math.isnan(call(name, types, types[-1], *args))
+
+
 @pytest.mark.parametrize("k", [-1, 3, 100])
 def test_mux_selector_out_of_range_is_a_fault_FUN_61(k):
     for form in (False, True):

@@ -291,6 +291,8 @@ def evaluate(e, ty: str, values: dict[str, object]):
     args = [evaluate(x, ty, values) if isinstance(x, tuple) else x for x in e[1:]]
     if kind == "SEL":
         return args[2] if args[0] else args[1]
+    if kind in ("MAX", "MIN", "LIMIT") and any(a != a for a in args):
+        return math.nan  # of REALs, a NaN argument gives NaN whatever its place (IEEE 754-2019 maximum/minimum)
     if kind == "MAX":
         return max(args)
     if kind == "MIN":

@@ -393,10 +393,7 @@ def test_a_step_that_does_not_end_in_time_is_refused_and_touches_nothing(
                 lambda m: m["type"] == "values" and ((m["history"]["stepping"] or {}).get("at") or {}).get("line") == 3,
                 timeout=60,
             )
-            seen: dict[str, object] = {}
-            for message in [*before, ended]:
-                if message["type"] == "values":
-                    seen.update(message["changed"])
+            seen = _changed([*before, ended])
             assert (ended["scan"], seen["MAIN.X"], seen["MAIN.COUNT"], seen["MAIN.N"]) == (2, SPINS, 2, SPINS)
 
         live = registry.get(sim).handle
@@ -408,12 +405,19 @@ def test_a_step_that_does_not_end_in_time_is_refused_and_touches_nothing(
             for scan, x in ((1, 0), (2, SPINS), (3, 0)):
                 ws.send_json({"type": "seek", "scan": scan})
                 shown, before = recv_until(ws, _values(viewing=scan), timeout=30)
-                for message in [*before, shown]:
-                    if message["type"] == "values":
-                        seen.update(message["changed"])
+                seen.update(_changed([*before, shown]))
                 assert (seen["MAIN.COUNT"], seen["MAIN.X"]) == (scan, x)
     finally:
         registry.close()
+
+
+def _changed(messages: list[dict]) -> dict[str, object]:
+    """The values the ``values`` messages among ``messages`` changed, the later ones winning."""
+    seen: dict[str, object] = {}
+    for message in messages:
+        if message["type"] == "values":
+            seen.update(message["changed"])
+    return seen
 
 
 def test_a_seek_that_does_not_end_in_time_is_refused_and_touches_nothing(
@@ -445,10 +449,7 @@ def test_a_seek_that_does_not_end_in_time_is_refused_and_touches_nothing(
                 "it ends"
             )
             shown, before = recv_until(ws, _values(viewing=2), timeout=60)
-            seen: dict[str, object] = {}
-            for message in [*before, shown]:
-                if message["type"] == "values":
-                    seen.update(message["changed"])
+            seen = _changed([*before, shown])
             assert (shown["scan"], seen["MAIN.X"], seen["MAIN.COUNT"], seen["MAIN.N"]) == (2, SEEK_SPINS, 2, SEEK_SPINS)
 
         live = registry.get(sim).handle

@@ -49,6 +49,7 @@ from .codegen.typeinfo import runtime_name
 from .compile import CompiledProgram, compile_program
 from .debug import STEP_ENDS, Debugger, Halt
 from .doubles import Mocks
+from .frames import FramePlan, frame_plan
 from .inputs import AppliedInput, Injection, InputEvent, InputRefused, immediate, injection
 from .paths import Location, LocationReader, NoTarget, Resolver, Roots, UnknownPath, coerce_for, leaves, plain
 from .process_image import AREA_ORDER, IoPoint, ProcessImage, key_of, located_address, view_kind
@@ -151,7 +152,10 @@ class Simulation:
         self._instances: dict[str, tuple[object, str]] = {}  # upper-case path -> (instance, upper-case POU name)
         self._links: dict[str, dict[str, str]] = {}  # their VAR_IN_OUT links to program instances
         self.mocks = Mocks()
-        self._deferred_locations: dict[tuple[str, int], Location] = {}  # (program, probe number) -> its variable
+        #: (program, probe number) -> (container, key) of its variable (_read_some_deferred)
+        self._deferred_pairs: dict[tuple[str, int], tuple[object, object]] = {}
+        #: (instance or function, elements or None) -> how a frame reads them (frames.py)
+        self._frame_plans: dict[tuple[str, tuple[str, ...] | None], FramePlan] = {}
         self._viewed: dict[str, Iterable[str] | None] | None = None  # ``view``'s argument; None: every network
         self._viewed_since: dict[tuple[str, int], int] = {}  # (instance, network) -> the stamp it was viewed from
         self._attach_debugger()
@@ -243,6 +247,7 @@ class Simulation:
         self.submit(InputEvent("reset", cold=cold))
 
     def _reset(self, cold: bool, initialise: bool = True) -> None:
+        self._deferred_pairs.clear()  # (a restart may make new FB instances: arrays of them are rebuilt)
         if self._scan is not None:
             self._scan.close()  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
             self.scan_count += 1  # the abandoned scan keeps its number: the next scan has the next one
@@ -605,11 +610,13 @@ class Simulation:
             raise RuntimeError("probes need a simulation built with variant='monitor' or 'debug'")
         key = instance.strip().upper()
         pou = self._context.pous.get(key)
-        if pou is not None and pou.kind == "function":
-            escaped = names.escape(pou.name)
+        function = pou is not None and pou.kind == "function"  # (a FUNCTION's networks are always recorded)
+        wanted = None if elements is None else tuple(elements)
+        recorded: dict[int, bool] = {}
+        if function:
+            escaped = names.escape(pou.name)  # type: ignore[union-attr]
             values, stamps = self._ns[f"ll_pr_{escaped}"], self._ns[f"ll_px_{escaped}"]
-            table = self.compiled.generated.context.probes_of(pou.name)
-            indices = _indices(table, elements)
+            plan = self._frame_plan(key, self.compiled.generated.context.probes_of(pou.name), wanted, False)  # type: ignore[union-attr]
         else:
             found = self._instances_by_path().get(key)
             if found is None:
@@ -620,31 +627,25 @@ class Simulation:
                 raise UnknownPath(f"no POU instance {instance!r}{did_you_mean(instance, known)}")
             obj, pou_key = found
             table = self.compiled.generated.context.probes_of(pou_key)
-            indices = _indices(table, elements)
+            plan = self._frame_plan(key, table, wanted, self.variant == "monitor")
+            recorded = {network: self._recorded(key, obj, network) for network in plan.networks}
             if elements is None:
                 self._read_deferred(obj, table)
             else:
-                self._read_some_deferred(key, obj, table, indices)
+                self._read_some_deferred(key, obj, table, plan.deferred, recorded)
             values, stamps = obj.ll_pr, obj.ll_px  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
-        found_values: dict[str, object] = {}
-        executed: list[str] = []
-        unknown: list[str] = []
-        stamp, constants, groups, names_ = self._stamp, table.constants, table.groups, table.elements
-        function = pou is not None and pou.kind == "function"  # (a FUNCTION's networks are always recorded)
-        network_of = table.network_of if self.variant == "monitor" and not function else {}
-        for index in indices:
-            network = network_of.get(index)
-            if network is not None and not self._recorded(key, obj, network):
-                unknown.append(names_[index])
-                continue
-            value = values[index]
-            if value is UNSET and index in constants and any(stamps[g] >= 0 for g in groups[index]):
-                value = constants[index]  # recorded by the group stamp alone
-            if value is not UNSET:
-                found_values[names_[index]] = value
-            if any(stamps[g] == stamp for g in groups[index]):
-                executed.append(names_[index])
+        found_values, executed, unknown = plan.read(values, stamps, self._stamp, recorded, UNSET)
         return ProbeView(found_values, frozenset(executed), frozenset(unknown))
+
+    def _frame_plan(self, key: str, table: ProbeTable, elements: tuple[str, ...] | None, networks: bool) -> FramePlan:
+        """``frame_plan`` of these elements, kept for the next frame (a client asks for the same ones each time)."""
+        plans = self._frame_plans
+        plan = plans.get((key, elements))
+        if plan is None:
+            if len(plans) >= _FRAME_PLANS:
+                plans.clear()
+            plan = plans[(key, elements)] = frame_plan(table, elements, networks)
+        return plan
 
     def _recorded(self, instance: str, obj: object, network: int) -> bool:
         """Whether the last scan recorded the probes of the instance's ``network``: viewed since before it began."""
@@ -689,22 +690,36 @@ class Simulation:
             if all(stamps[g] < 0 for g in table.groups[index]):
                 values[index] = UNSET
 
-    def _read_some_deferred(self, program: str, obj: object, table: ProbeTable, indices: Iterable[int]) -> None:
-        """``_read_deferred`` for the probes ``indices`` only: each reads its variable through a resolved path."""
-        if not table.deferred_paths or self.variant != "monitor":
+    def _read_some_deferred(
+        self,
+        program: str,
+        obj: object,
+        table: ProbeTable,
+        deferred: Iterable[tuple[int, int | None, int, tuple[int, ...]]],
+        recorded: dict[int, bool],
+    ) -> None:
+        """``_read_deferred`` for the ``deferred`` probes (number, network run, groups: ``FramePlan.deferred``) only,
+        those of networks the last scan recorded: each reads its variable where its path led the first time (a
+        deferred probe's path has members only; ``reset`` and ``restore`` forget the places)."""
+        if self.variant != "monitor":
             return
         values, stamps = obj.ll_pr, obj.ll_px  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
-        for index in indices:
-            path = table.deferred_paths.get(index)
-            if path is None:
-                continue
-            if all(stamps[g] < 0 for g in table.groups[index]):
+        pairs = self._deferred_pairs
+        for index, network, first, more in deferred:
+            if network is not None and not recorded[network]:
+                continue  # (shown as unknown)
+            last = stamps[first] if first >= 0 else -1
+            for g in more:
+                last = max(last, stamps[g])
+            if last < 0:  # never ran
                 values[index] = UNSET
                 continue
-            location = self._deferred_locations.get((program, index))
-            if location is None:
-                location = self._deferred_locations[(program, index)] = self._resolver.resolve(f"{program}.{path}")
-            values[index] = location.get(self._roots)
+            pair = pairs.get((program, index))
+            if pair is None:
+                location = self._resolver.resolve(f"{program}.{table.deferred_paths[index]}")
+                pair = pairs[(program, index)] = location.reference(self._roots)
+            container, key = pair
+            values[index] = container[key]  # type: ignore[index]  # an instance or a page (Addressable)
 
     # ------------------------------------------------------------------ instances
 
@@ -1035,11 +1050,8 @@ def _set(location: Location, roots: Roots, value: object) -> None:
         location.set(roots, value)
 
 
-def _indices(table: ProbeTable, elements: Iterable[str] | None) -> Iterable[int]:
-    """Probe numbers of ``elements`` in ``table`` (unknown ones left out); every probe when None."""
-    if elements is None:
-        return range(len(table.elements))
-    return [index for index in map(table.index, dict.fromkeys(elements)) if index is not None]
+#: Frame plans a simulation keeps (Simulation._frame_plan): a few clients' views of a few POUs each
+_FRAME_PLANS = 64
 
 
 #: The debug scan's own generators, above the task's: no call of the program's (Simulation._call_frames).

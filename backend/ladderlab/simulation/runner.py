@@ -41,7 +41,7 @@ import random
 import threading
 import time
 from collections import deque
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from typing import Any, ClassVar, Protocol
 
@@ -1004,7 +1004,9 @@ class SimRunner:
         is replayed again when they change, so what a client views of it is recorded, never unknown."""
         if self.sim.variant not in ("monitor", "debug") or self.history is None:
             return
-        viewed = {instance: None if every else ids for instance, (every, ids) in self._union.items()}
+        viewed: dict[str, Iterable[str] | None] = {
+            instance: None if every else ids for instance, (every, ids) in self._union.items()
+        }
         self.sim.view(viewed)
         changed = viewed != self.history.viewed
         for history in (*self.branches, self.history):

@@ -86,6 +86,11 @@ class Expressions:
         #: Where the lines computing a deep expression's parts go (just before the statement that uses it);
         #: None where no line may go (a condition the statement re-evaluates: see Statements).
         self.sink: Source | None = None
+        #: (code, local): an FB instance's code and the local that holds it right after its call (``ll_fb``), read
+        #: through the local while the statements after the call are assignments (Statements sets and clears it)
+        self.alias: tuple[str, str] | None = None
+        #: variable code -> the temporary local it was just assigned from: a read takes the local (Statements.store)
+        self.forward: dict[str, str] = {}
 
     # ------------------------------------------------------------------ dispatch
 
@@ -283,10 +288,17 @@ class Expressions:
     def var(self, v: ir.Var) -> str:
         return self.access(v)[0] if v.path else self.scope.root(v)[0]
 
+    def read(self, v: ir.Var) -> str:
+        """``var`` as read in an expression: the local a variable was just assigned from, if any (``forward``)."""
+        code = self.var(v)
+        return self.forward.get(code, code) if self.forward else code
+
     def access(self, v: ir.Var) -> tuple[str, t.IrType]:
         """Source of the variable ``v`` (readable and assignable) and its declared type."""
         code, ty = self.scope.root(v)
         for number, selector in enumerate(v.path):
+            if self.alias is not None and code == self.alias[0]:
+                code = self.alias[1]
             if isinstance(selector, ir.Deref):
                 if not isinstance(ty, t.Reference):
                     raise CodegenError(f"'^' on a {describe(ty)}")
@@ -389,7 +401,7 @@ class Expressions:
 
 _HANDLERS = {
     ir.Const: Expressions.const,
-    ir.Var: Expressions.var,
+    ir.Var: Expressions.read,
     ir.Binary: Expressions.binary,
     ir.Unary: Expressions.unary,
     ir.Call: Expressions.call,

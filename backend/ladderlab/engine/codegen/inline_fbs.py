@@ -59,6 +59,7 @@ def inline_body(fb: str, instance: str, now: str, known: tuple[tuple[str, str], 
     except _NotInlinable:
         return None
     body = [_KnownInputs(instance, dict(known), _assigned_attributes(body, instance)).visit(s) for s in body]
+    body = _propagated(body)
     return tuple(ast.unparse(ast.Module(body=body or [ast.Pass()], type_ignores=[])).splitlines())
 
 
@@ -78,6 +79,98 @@ class _KnownInputs(ast.NodeTransformer):
         ):
             return ast.parse(self.known[node.attr], mode="eval").body
         return self.generic_visit(node)
+
+
+def _propagated(body: list[ast.stmt]) -> list[ast.stmt]:
+    """``body`` without the copies into a method local assigned nowhere else (``ll_s_cu = ll_t___P_3``,
+    the ``pt`` of ``elapsed, pt = now - ll_fb._start, 100``): its reads use the copied local or constant instead,
+    which nothing in the body assigns (the body assigns only its own locals and the instance's attributes), and a
+    conditional on two constants that results (``pt if pt > 0 else 0``) is folded."""
+    stores: dict[str, int] = {}
+    for statement in body:
+        for node in ast.walk(statement):
+            if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Store):
+                stores[node.id] = stores.get(node.id, 0) + 1
+    copies: dict[str, ast.expr] = {}
+    kept = _without_copies(body, stores, copies)
+    if not copies:
+        return body
+    return [ast.fix_missing_locations(_Copies(copies).visit(statement)) for statement in kept]
+
+
+def _without_copies(body: list[ast.stmt], stores: dict[str, int], copies: dict[str, ast.expr]) -> list[ast.stmt]:
+    """``body`` (and the branches of its ``if`` statements) without the copies ``_propagated`` removes, which go
+    into ``copies``."""
+    kept: list[ast.stmt] = []
+    for statement in body:
+        if isinstance(statement, ast.If):
+            statement.body = _without_copies(statement.body, stores, copies) or [ast.Pass()]
+            statement.orelse = _without_copies(statement.orelse, stores, copies)
+        elif isinstance(statement, ast.Assign) and len(statement.targets) == 1:
+            pairs = _pairs(statement.targets[0], statement.value)
+            left = []
+            for target, value in pairs:
+                if (
+                    isinstance(target, ast.Name)
+                    and stores.get(target.id) == 1
+                    and (isinstance(value, ast.Constant) or (isinstance(value, ast.Name) and value.id not in stores))
+                ):
+                    copies[target.id] = value
+                else:
+                    left.append((target, value))
+            if len(left) < len(pairs):
+                if not left:
+                    continue
+                statement = _assignment(left)
+        kept.append(statement)
+    return kept
+
+
+def _pairs(target: ast.expr, value: ast.expr) -> list[tuple[ast.expr, ast.expr]]:
+    if isinstance(target, ast.Tuple) and isinstance(value, ast.Tuple) and len(target.elts) == len(value.elts):
+        return list(zip(target.elts, value.elts))
+    return [(target, value)]
+
+
+def _assignment(pairs: list[tuple[ast.expr, ast.expr]]) -> ast.Assign:
+    if len(pairs) == 1:
+        return ast.Assign(targets=[pairs[0][0]], value=pairs[0][1])
+    targets = ast.Tuple(elts=[t for t, _ in pairs], ctx=ast.Store())
+    return ast.Assign(targets=[targets], value=ast.Tuple(elts=[v for _, v in pairs], ctx=ast.Load()))
+
+
+class _Copies(ast.NodeTransformer):
+    """Reads of the propagated locals replaced by what they copied; conditionals on constants folded."""
+
+    def __init__(self, copies: dict[str, ast.expr]) -> None:
+        self.copies = copies
+
+    def visit_Name(self, node: ast.Name) -> ast.AST:
+        if isinstance(node.ctx, ast.Load) and node.id in self.copies:
+            return copy.deepcopy(self.copies[node.id])
+        return node
+
+    def visit_IfExp(self, node: ast.IfExp) -> ast.AST:
+        self.generic_visit(node)
+        test = node.test
+        if (
+            isinstance(test, ast.Compare)
+            and len(test.ops) == 1
+            and type(test.ops[0]) in _FOLDED
+            and isinstance(test.left, ast.Constant)
+            and isinstance(test.comparators[0], ast.Constant)
+        ):
+            decided = _FOLDED[type(test.ops[0])](test.left.value, test.comparators[0].value)
+            return node.body if decided else node.orelse
+        return node
+
+
+_FOLDED = {
+    ast.Gt: lambda a, b: a > b,
+    ast.GtE: lambda a, b: a >= b,
+    ast.Lt: lambda a, b: a < b,
+    ast.LtE: lambda a, b: a <= b,
+}
 
 
 def _assigned_attributes(body: list[ast.stmt], instance: str) -> set[str]:

@@ -31,6 +31,7 @@ from .chunks import ChunkPlan
 from .context import CodegenError, diagnostic, std_fb_class
 from .expressions import Expressions, literal
 from .inline_fbs import inline_body
+from .liveness import dead_stores
 from .mentions import calls_in, expression_vars, nested, walk
 from .runtime import UNSET
 from .scope import Scope
@@ -71,6 +72,14 @@ class Statements:
         self.reads: list[str] = []  # their ``ll_pr[i] = value`` lines, for the chunk's ll_read_probes part
         self._line: int | None = None
         self.counting = False  # ``ll_w`` holds the watchdog countdown (inside a loop or the jump dispatch loop)
+        #: id() of the statements whose store into a temporary local nothing reads (liveness.py), left out where no
+        #: probe is recorded
+        self.dead: set[int] = set()
+        self.temps = frozenset(scope.temp_locals.values())  # the temporaries' locals
+        if scope.temp_locals and not self.debug:
+            temps = frozenset(scope.temp_locals)
+            live_out = frozenset() if plan.inline else temps  # (the next chunk takes the temporaries over)
+            self.dead = dead_stores(plan.chunks[chunk], temps, live_out, self.module.probes)
 
     # ------------------------------------------------------------------ blocks
 
@@ -190,11 +199,19 @@ class Statements:
         fused = False
         probes = self.probes is not None
         if not probes:  # the fast variant records none: more than half the statements of an LD/FBD body
-            statements = [s for s in statements if type(s) is not ir.Probe]
+            dead = self.dead
+            statements = [
+                s for s in statements if type(s) is not ir.Probe and not (type(s) is ir.Assign and id(s) in dead)
+            ]
+        self.x.alias = None
+        self.x.forward = {}
         for i, s in enumerate(statements):
             if fused:  # the previous statement recorded this probe
                 fused = False
                 continue
+            if type(s) is not ir.Assign and type(s) is not ir.Probe:
+                self.x.alias = None  # (only an assignment surely leaves ``ll_fb`` as the last FB call set it)
+                self.x.forward = {}
             if probes:
                 following = statements[i + 1] if i + 1 < len(statements) else None
                 self._following = following if isinstance(following, ir.Probe) else None
@@ -203,6 +220,8 @@ class Statements:
             fused = self._fused and isinstance(s, (ir.Assign, ir.FnCall))
             if not isinstance(s, _STRAIGHT) and not _straight(s):
                 self.group = None  # what follows may run without what came before
+        self.x.alias = None
+        self.x.forward = {}
         if own_group:
             self.group = outer
         if all(line.lstrip().startswith("#") for line in self.src.lines[before:]):  # nothing but comments, or nothing
@@ -263,13 +282,32 @@ class Statements:
             self.src.line(f"{code} = {value}")
 
     def store(self, target: ir.Var, value: ir.Expr, probe: ir.Probe | None = None) -> None:
+        forward = self.x.forward
+        if forward and (next(calls_in(value), None) is not None or next(calls_in(target), None) is not None):
+            forward.clear()  # a call may write any variable before the read
         code, ty = self.x.access(target)
         if isinstance(ty, t.FbInstance):
             raise CodegenError("an FB instance cannot be assigned")
         if is_composite(ty):
             self.src.line(f"ll_assign({code}, {self.x.expr(value)})")
-        else:
-            self._set(code, self.x.stored(value, ty), probe)
+            forward.clear()
+            return
+        stored = self.x.stored(value, ty)
+        self._set(code, stored, probe)
+        self._forward(code, stored)
+
+    def _forward(self, code: str, stored: str) -> None:
+        """After ``code = stored``: where no probe is recorded, reads of the variable ``code`` take the temporary
+        local ``stored`` until anything but an assignment to a temporary local runs (a store to memory may reach
+        the variable through another path). Exact: the variable holds that very value meanwhile."""
+        forward = self.x.forward
+        if code in self.temps:
+            for key in [key for key, local in forward.items() if local == code]:
+                del forward[key]  # the local changes: the variable no longer holds it
+            return
+        forward.clear()
+        if self.probes is None and not self.debug and stored in self.temps and _PLAIN_CHAIN.fullmatch(code):
+            forward[code] = stored
 
     def _if(self, s: ir.If, oid: int) -> None:
         if self.probes is None and _only_probes(s):
@@ -570,11 +608,12 @@ class Statements:
         self.probes.deferred.append(index)  # type: ignore[union-attr]
         var: ir.Var = s.value  # type: ignore[assignment]  # deferred.py: a variable of the program, members only
         self.probes.deferred_paths[index] = ".".join([var.name, *(m.name for m in var.path)])  # type: ignore
-        saved, self.x.sink = self.x.sink, None  # read after the scan, in another function: no lines before it
+        # read after the scan, in another function: no lines before it, no local of this one
+        saved, self.x.sink, alias, self.x.alias = self.x.sink, None, self.x.alias, None
         try:
             self.reads.append(f"ll_pr[{index}] = {self.x.expr(s.value)}  # {names.comment_text(s.element)}")
         finally:
-            self.x.sink = saved
+            self.x.sink, self.x.alias = saved, alias
         self.src.line(f"# ll_pr[{index}] is read after the scan  # {names.comment_text(s.element)}")
 
     def _paused(self, s: ir.Probe) -> None:
@@ -633,10 +672,17 @@ class Statements:
                 owner, attr = self.x.member_parts(fb, ty, pin)
                 pin_type = self.x.member_type(ty, pin)
                 self._copy_out(f"{owner}.{attr}", pin_type, target)
-            if s.eno is not None:
-                self.src.line(f"{self.x.var(s.eno)} = True")
+            if eno is not None:
+                self.src.line(f"{self.x.var(eno)} = True")
 
-        self._guarded(s.en, s.eno, emit)
+        eno = self._eno(s)
+        self._guarded(s.en, eno, emit)
+        if s.en is None and user is None and not self.debug and _PLAIN_CHAIN.fullmatch(code):
+            self.x.alias = (code, "ll_fb")  # the outputs read next: ``ll_fb.Q``, not ``self.v_T1.Q`` again
+
+    def _eno(self, s: ir.FbCall | ir.FnCall) -> ir.Var | None:
+        """The call's ENO target, None when it has none or its store is dead where no probe is recorded."""
+        return None if self.probes is None and id(s) in self.dead else s.eno
 
     def _base_body(self, fb: str, base: str) -> None:
         """``SUPER^()``: the base's body on the instance ``fb``; its probes go to the base class's
@@ -693,9 +739,10 @@ class Statements:
     def _fncall(self, s: ir.FnCall, oid: int) -> None:
         call = s.call
         probe = self._take_probe() if s.en is None and s.eno is None else None
+        eno = self._eno(s)
 
         def emit() -> None:
-            if s.eno is not None and not call.user:
+            if eno is not None and not call.user:
                 types = tuple(self.x.scalar(ty, call.function) for ty in call.arg_types)
                 wrapped = self.x.wrapped(call.function, types, runtime_name(call.type))
                 if wrapped is not None:  # typed arithmetic inline: ENO is "the result fits"
@@ -704,7 +751,7 @@ class Statements:
                     self.src.line(f"{value} = {wrapped[1].format(exact)}")
                     if s.target is not None:
                         self._copy_out(value, call.type, s.target, checked=False)
-                    self.src.line(f"{self.x.var(s.eno)} = {exact} == {value}")
+                    self.src.line(f"{self.x.var(eno)} = {exact} == {value}")
                     return
                 fn = self.x.checked(call.function, types, runtime_name(call.type))
                 value, warning = self.scope.temp("v"), self.scope.temp("warn")
@@ -712,17 +759,17 @@ class Statements:
                 self.src.line(f"{value}, {warning} = {fn}({args})")
                 if s.target is not None:
                     self._copy_out(value, call.type, s.target, checked=False)
-                self.src.line(f"{self.x.var(s.eno)} = {warning} is None")
+                self.src.line(f"{self.x.var(eno)} = {warning} is None")
                 return
             result = self.x.expr(call)
             if s.target is not None:
                 self._copy_out(result, call.type, s.target, checked=call.user, probe=probe)
             else:
                 self.src.line(result)
-            if s.eno is not None:
-                self.src.line(f"{self.x.var(s.eno)} = True")
+            if eno is not None:
+                self.src.line(f"{self.x.var(eno)} = True")
 
-        self._guarded(s.en, s.eno, emit)
+        self._guarded(s.en, eno, emit)
 
     _HANDLERS: ClassVar[dict[type, Callable[..., None]]] = {
         ir.Assign: _assign,
@@ -745,6 +792,10 @@ _STRAIGHT = (ir.Assign, ir.Probe, ir.FbCall, ir.FnCall)  # statements that never
 #: A local variable of the generated function or a number / BOOL constant: what an inlined standard FB body may read
 #: in place of the input just assigned it (nothing between the assignment and the body can change it)
 _LOCAL_OR_CONSTANT = re.compile(r"(?!ll_s_|ll_fb\b)[A-Za-z_][A-Za-z0-9_]*|\(?-?\d+(?:\.\d+)?(?:e[+-]?\d+)?\)?")
+
+
+#: An FB instance reached through attributes only (no index, no in-out reference): the same object all along
+_PLAIN_CHAIN = re.compile(r"[A-Za-z_]\w*(?:\.\w+)*")
 
 
 def _local_or_constant(code: str) -> bool:

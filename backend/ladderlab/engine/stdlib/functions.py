@@ -122,6 +122,18 @@ def limit(mn, x, mx):
     return x if x <= mx else mx
 
 
+def limit_real(mn, x, mx):
+    """LIMIT of REALs: a NaN among the arguments gives NaN, as MAX and MIN of REALs do (``extreme``)."""
+    if mn != mn or x != x or mx != mx:
+        return math.nan
+    return limit(mn, x, mx)
+
+
+def extreme_real(pick, *args):
+    """MAX or MIN (``pick``) of three or more REALs: NaN if any is NaN, whatever its place."""
+    return math.nan if any(a != a for a in args) else pick(args)
+
+
 def mux_error(k: int, n: int):
     raise index_out_of_range(k, 0, n - 1, "MUX selector K")
 
@@ -167,6 +179,8 @@ HELPERS.update(
     ll__rol=rol,
     ll__ror=ror,
     ll__limit=limit,
+    ll__limit_real=limit_real,
+    ll__extreme_real=extreme_real,
     ll__mux_error=mux_error,
     ll__round=round_half_even,
     ll__trunc=trunc,
@@ -312,16 +326,22 @@ def select(types: tuple[str, ...], result: str | None) -> Impl:
 
 
 def extreme(name: str, op: str):
+    """MAX and MIN (FUN-60). Of REALs, a NaN argument gives NaN whatever its place (IEEE 754-2019 maximum and
+    minimum): a bare comparison would give NaN or the other number depending on the order of the arguments."""
+
     def implement(types: tuple[str, ...], result: str | None) -> Impl:
+        args = ", ".join(f"a{i}" for i in range(len(types)))
+        real = "real" in categories(types)
         if len(types) == 2:
-            return Impl(f"a0 if a0 {op} a1 else a1")
-        return Impl(f"{name.lower()}({', '.join(f'a{i}' for i in range(len(types)))})")
+            return Impl(f"a0 if a0 {op} a1 or a0 != a0 else a1" if real else f"a0 if a0 {op} a1 else a1")
+        return Impl(f"ll__extreme_real({name.lower()}, {args})" if real else f"{name.lower()}({args})")
 
     return implement
 
 
 def limiter(types: tuple[str, ...], result: str | None) -> Impl:
-    return Impl("ll__limit(a0, a1, a2)")  # LIMIT(MN, IN, MX)
+    real = "real" in categories(types)
+    return Impl(f"ll__limit{'_real' if real else ''}(a0, a1, a2)")  # LIMIT(MN, IN, MX)
 
 
 def multiplexer(types: tuple[str, ...], result: str | None) -> Impl:

@@ -1,0 +1,128 @@
+"""Stores of power-flow temporaries that nothing reads: left out of the code that records no probes.
+
+The LD/FBD lowering gives every element's power flow and every box's ENO a hidden VAR_TEMP (``__P``, ``__P_1``..),
+which the fast and monitor variants keep in Python locals (scope.temp_locals). Many are written only for their
+probe: the OR of a network's parallel branches at its right end, the ENO of an ADD box nothing is wired to. Where
+no probe is recorded (the fast variant, the monitor variant's unviewed networks and twins) such a store is dead:
+nothing reads the local before it is written again or the chunk ends. ``dead_stores`` finds them with a
+backward liveness pass over a chunk's blocks, so ``Statements`` can skip them.
+
+Exact by construction: only stores into a temporary local are dropped, only when the local is not live after
+them, and only when computing the value cannot fault or call anything (an assignment whose value is a plain
+read or a logical / comparison operator over such reads; an ENO store, which is a constant or a comparison of
+two locals). At a chunk's end every temporary is live (the next chunk takes them over), except after the last
+chunk. A probe that may read a temporary a network has not assigned yet (one that reads the value of an
+earlier network) keeps it live at that network's start, because a viewed network records its probes while
+the networks before it ran without theirs. Loops, CASE, jumps and anything else this pass does not model make
+every temporary live (nothing is dropped across them).
+"""
+
+from __future__ import annotations
+
+from ...ir import nodes as ir
+from .mentions import expression_nodes, walk
+
+#: Operators whose result is computed without a call that could fault (boolean logic and comparisons).
+_PURE_OPERATORS = frozenset({"AND", "OR", "XOR", "AND_THEN", "OR_ELSE", "EQ", "NE", "LT", "LE", "GT", "GE"})
+
+
+def dead_stores(blocks: list[ir.Block], temps: frozenset[str], live_out: frozenset[str], probes: bool) -> set[int]:
+    """``id()`` of the statements of ``blocks`` whose store into a temporary (upper-case names ``temps``) is dead:
+    an ``Assign`` to leave out, or an ``FnCall`` / ``FbCall`` whose ENO store to leave out. ``live_out``: the
+    temporaries read after the blocks; ``probes``: the code records probes where a network is viewed."""
+    dead: set[int] = set()
+    if not temps:
+        return dead
+    live = set(live_out)
+    for block in reversed(blocks):
+        live = _backward(block.statements, live, temps, dead)
+        if probes:
+            live |= _exposed_probe_reads(block.statements, temps)
+    return dead
+
+
+def _backward(statements: list[ir.Stmt], live: set[str], temps: frozenset[str], dead: set[int]) -> set[str]:
+    """The temporaries live before ``statements`` given those live after; records dead stores in ``dead``."""
+    for s in reversed(statements):
+        kind = type(s)
+        if kind is ir.Probe:
+            continue  # (read only where recorded: see _exposed_probe_reads)
+        if kind is ir.Assign:
+            target = _temp(s.target, temps)
+            if target is not None and not s.target.path:
+                if target not in live and _pure(s.value):
+                    dead.add(id(s))
+                    continue
+                live = (live - {target}) | _reads(s.value, temps)
+            else:
+                live = live | _reads(s.target, temps) | _reads(s.value, temps)
+        elif kind is ir.If:
+            after = live
+            live = set()
+            for cond, body in s.branches:
+                live |= _backward(body, set(after), temps, dead) | _reads(cond, temps)
+            live |= _backward(s.orelse, set(after), temps, dead)
+        elif kind is ir.FnCall or kind is ir.FbCall:
+            eno = _temp(s.eno, temps) if s.eno is not None and not s.eno.path else None
+            if eno is not None:
+                if eno not in live:
+                    dead.add(id(s))
+                live = live - {eno}  # written on every path: TRUE when the call ran, FALSE when EN was FALSE
+            if kind is ir.FnCall:
+                expressions = (s.en, s.call, s.target)
+            else:
+                expressions = (s.en, s.instance, *(e for _, e in s.inputs), *(v for _, v in s.outputs))
+            for e in expressions:
+                live = live | _reads(e, temps)
+        else:  # loops, CASE, RETURN, EXIT, jumps: nothing is dropped across them
+            return set(temps)
+    return live
+
+
+def _exposed_probe_reads(statements: list[ir.Stmt], temps: frozenset[str]) -> set[str]:
+    """Temporaries a probe of this block may read before the block's own top-level statements assign them."""
+    assigned: set[str] = set()
+    exposed: set[str] = set()
+    for s in statements:
+        for inner in walk([s]):
+            if type(inner) is ir.Probe:
+                exposed |= _reads(inner.value, temps) - assigned
+        if type(s) is ir.Assign and not s.target.path:
+            target = _temp(s.target, temps)
+            if target is not None:
+                assigned.add(target)
+    return exposed
+
+
+def _temp(var: ir.Var, temps: frozenset[str]) -> str | None:
+    if var.scope != "local":
+        return None
+    name = var.name.upper()
+    return name if name in temps else None
+
+
+def _reads(e: ir.Expr | None, temps: frozenset[str]) -> set[str]:
+    return {
+        name for node in expression_nodes(e) if isinstance(node, ir.Var) and (name := _temp(node, temps)) is not None
+    }
+
+
+def _pure(e: ir.Expr) -> bool:
+    """Computing ``e`` cannot fault or call anything: constants, reads without index or dereference, NOT, and
+    logical / comparison operators over such operands."""
+    for node in expression_nodes(e):
+        kind = type(node)
+        if kind is ir.Const:
+            continue
+        if kind is ir.Var:
+            if any(not isinstance(selector, ir.Member) for selector in node.path):
+                return False
+        elif kind is ir.Unary:
+            if node.op != "NOT":
+                return False
+        elif kind is ir.Binary:
+            if node.op not in _PURE_OPERATORS:
+                return False
+        else:
+            return False
+    return True
