@@ -234,15 +234,21 @@ def test_the_timeline_marks_the_scan_a_trace_trigger_fired_at(page, server):
     _start_written_before_scan_4(page, scan, cycle)
     status.filter(has_text="triggered at scan 4").wait_for()
 
-    timeline = page.get_by_role("group", name="Scan history")
-    mark = timeline.locator('.history-mark[data-mark-scan="4"]')
-    mark.wait_for()
-    assert mark.get_attribute("class") == "history-mark trigger"
-    assert mark.get_attribute("aria-label") == "scan 4: trigger, write"
-    assert timeline.locator(".history-mark").count() == 1  # nothing else happened in scans 1 to 6
+    timeline, mark = _the_only_mark(page, 4, "history-mark trigger", "scan 4: trigger, write")  # none in 1-3, 5, 6
     mark.click()
     page.get_by_role("status", name="History view").filter(has_text="Viewing scan 4 (history)").wait_for()
     _coil(page, "on")
+
+
+def _the_only_mark(page, scan: int, colour: str, label: str):
+    """The timeline and its one mark, which is at ``scan``, of the class ``colour``, named ``label``."""
+    timeline = page.get_by_role("group", name="Scan history")
+    mark = timeline.locator(f'.history-mark[data-mark-scan="{scan}"]')
+    mark.wait_for()
+    assert mark.get_attribute("class") == colour
+    assert mark.get_attribute("aria-label") == label
+    assert timeline.locator(".history-mark").count() == 1
+    return timeline, mark
 
 
 def _halted_networks(page) -> list[str]:
@@ -327,16 +333,12 @@ def test_step_through_a_past_scan_network_by_network(page, server):
 
 def _start_written_before_scan_4(page, scan, cycle) -> None:
     """Three single cycles, Start prepared TRUE and written (Ctrl+F7: before the next scan), three more cycles."""
-    for number in (1, 2, 3):
-        cycle.click()
-        scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
+    _cycles(page, scan, cycle, (1, 2, 3))
     start = page.locator('g.ld-element[data-id="start"]')
     start.locator(".ld-hit").dblclick()
     start.locator(".ld-prepared").filter(has_text="<TRUE>").wait_for()
     page.keyboard.press("Control+F7")
-    for number in (4, 5, 6):
-        cycle.click()
-        scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
+    _cycles(page, scan, cycle, (4, 5, 6))
 
 
 def _st_project(name: str, declarations: str, body: str, panels: list | None = None) -> dict:
@@ -345,6 +347,7 @@ def _st_project(name: str, declarations: str, body: str, panels: list | None = N
 
 
 def _cycles(page, scan, cycle, numbers) -> None:
+    """Single cycles, each awaited until the scan counter shows its number."""
     for number in numbers:
         cycle.click()
         scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
@@ -373,12 +376,7 @@ def test_the_timeline_marks_the_scan_that_ended_with_a_runtime_error(page, serve
     page.get_by_role("status", name="Online state").filter(has_text="faulted").wait_for()
     count.filter(has_text=re.compile("^4$")).wait_for()
 
-    timeline = page.get_by_role("group", name="Scan history")
-    mark = timeline.locator('.history-mark[data-mark-scan="4"]')
-    mark.wait_for()
-    assert mark.get_attribute("class") == "history-mark error"
-    assert mark.get_attribute("aria-label") == "scan 4: error, write"
-    assert timeline.locator(".history-mark").count() == 1  # nothing else happened in scans 1 to 4
+    timeline, mark = _the_only_mark(page, 4, "history-mark error", "scan 4: error, write")  # none in scans 1 to 3
 
     slider = timeline.get_by_role("slider", name="Scan")
     slider.fill("2")
