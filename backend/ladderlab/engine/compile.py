@@ -152,7 +152,7 @@ class _CompiledAtFirstCall:
         function = self.define()
         if left is not None:
             watchdog.resume(left)  # type: ignore[union-attr]  # set with left
-        return function(*args)  # type: ignore[operator]
+        return function(*args)  # type: ignore[operator]  # the namespace is untyped
 
 
 def _own_code(code: CodeType) -> CodeType:

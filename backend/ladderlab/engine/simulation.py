@@ -614,9 +614,9 @@ class Simulation:
         wanted = None if elements is None else tuple(elements)
         recorded: dict[int, bool] = {}
         if function:
-            escaped = names.escape(pou.name)  # type: ignore[union-attr]
+            escaped = names.escape(pou.name)  # type: ignore[union-attr]  # function: pou is set
             values, stamps = self._ns[f"ll_pr_{escaped}"], self._ns[f"ll_px_{escaped}"]
-            plan = self._frame_plan(key, self.compiled.generated.context.probes_of(pou.name), wanted, False)  # type: ignore[union-attr]
+            plan = self._frame_plan(key, self.compiled.generated.context.probes_of(pou.name), wanted, False)  # type: ignore[union-attr]  # as above
         else:
             found = self._instances_by_path().get(key)
             if found is None:

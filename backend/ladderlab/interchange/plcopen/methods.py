@@ -264,7 +264,7 @@ def read_methods(
             methods.append(
                 Method(
                     name=element.get("name", ""),
-                    **_modifiers(element, interface, reader),  # type: ignore[arg-type]
+                    **_modifiers(element, interface, reader),  # type: ignore[arg-type]  # values typed by _modifiers
                     return_type=return_type,
                     declarations=text,
                     body=_st_body(element, reader),
