@@ -9,6 +9,8 @@ HOST   ?= 127.0.0.1
 PORT   ?= 8000
 SUDO   := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 PYTEST_ARGS ?=
+# pytest-xdist: one worker per core, each test file on one worker (its module fixtures built once, in order)
+XDIST ?= -n auto --dist loadfile
 
 .PHONY: run test lint test-slow bench schema frontend chromium clean
 
@@ -19,7 +21,7 @@ run: $(VENV)/.installed frontend
 
 test: $(VENV)/.installed chromium $(FRONTEND_DEPS) frontend lint
 	cd frontend && npm run --silent check:types && npm test --silent
-	$(PY) -m pytest -q $(PYTEST_ARGS)
+	$(PY) -m pytest -q $(XDIST) $(PYTEST_ARGS)
 
 # Lint, format and layer checks (docs/architecture.md), and ESLint (typescript-eslint, React hooks) on the frontend;
 # `ruff format .` and `npm run format` (frontend) fix the format.
@@ -32,7 +34,7 @@ lint: $(VENV)/.installed $(FRONTEND_DEPS)
 	cd frontend && npm run lint -- --max-warnings 0
 
 test-slow: $(VENV)/.installed chromium
-	LADDERLAB_HYPOTHESIS=thorough $(PY) -m pytest -q -m "slow or not slow" $(PYTEST_ARGS)
+	LADDERLAB_HYPOTHESIS=thorough $(PY) -m pytest -q $(XDIST) -m "slow or not slow" $(PYTEST_ARGS)
 
 bench: $(VENV)/.installed
 	@for script in benchmarks/*.py; do echo "== $$script"; $(PY) $$script || exit 1; done

@@ -18,6 +18,23 @@ settings.register_profile("thorough", max_examples=1000, deadline=None)
 settings.load_profile(os.environ.get("LADDERLAB_HYPOTHESIS", "ci"))
 
 
+def pytest_sessionfinish(session):
+    """In a pytest-xdist worker, hands this worker's corpus pass rates to the controller, which prints them."""
+    from tests.support import PASS_RATES
+
+    output = getattr(session.config, "workeroutput", None)
+    if output is not None:
+        output["pass_rates"] = dict(PASS_RATES)
+
+
+@pytest.hookimpl(optionalhook=True)
+def pytest_testnodedown(node, error):
+    """pytest-xdist, in the controller: a worker that ended brought the pass rates its tests recorded."""
+    from tests.support import PASS_RATES
+
+    PASS_RATES.update(getattr(node, "workeroutput", {}).get("pass_rates", {}))
+
+
 def pytest_terminal_summary(terminalreporter):
     """Prints the external-corpus pass rates the corpus tests recorded in ``tests.support.PASS_RATES``."""
     from tests.support import PASS_RATES
