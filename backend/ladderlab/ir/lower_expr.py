@@ -49,6 +49,7 @@ from .nodes import (
     Convert,
     Deref,
     Expr,
+    Fit,
     FnCall,
     Index,
     Member,
@@ -125,6 +126,8 @@ def _lower(node: ast.Expr, ctx: PouContext, expected: IrType | None) -> Expr:
         return _unary(node, ctx)
     if isinstance(node, ast.Binary):
         return _binary(node, ctx)
+    if isinstance(node, ast.Fit):
+        return Fit(lower_expr(node.operand, ctx), ctx.ir_type(ty), print_expression(node.operand))
     return _call(node, ctx)
 
 
