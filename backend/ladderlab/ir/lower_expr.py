@@ -38,6 +38,7 @@ from ..st.rules import EnumValue
 from ..st.symbols import PouInfo, PropertyRef, Symbol
 from .byte_layout import byte_layout
 from .context import PouContext
+from .codesys_dates import in_seconds
 from .lower_types import LoweringError, byte_size, engine_value, ir_default
 from .method_outputs import output_arguments
 from .nodes import (
@@ -678,7 +679,7 @@ def std_call(node: ast.Call, ctx: PouContext) -> Call:
         lower_to(bound[index].value, ctx, target) if index in bound else Const(ir_default(target), target)
         for index, target in enumerate(types)
     )
-    return Call(function.name, args, types, result)  # (a call statement's node has no .ty)
+    return in_seconds(Call(function.name, args, types, result))  # (a call statement's node has no .ty)
 
 
 def _signature(
