@@ -37,8 +37,8 @@ from ..st.printer import print_expression
 from ..st.rules import EnumValue
 from ..st.symbols import PouInfo, PropertyRef, Symbol
 from .byte_layout import byte_layout
-from .context import PouContext
 from .codesys_dates import in_seconds
+from .context import PouContext
 from .lower_types import LoweringError, byte_size, engine_value, ir_default
 from .method_outputs import output_arguments
 from .nodes import (
