@@ -12,7 +12,7 @@ from __future__ import annotations
 from ..iec.elementary import ELEMENTARY
 from ..st import types as st_types
 from .lower_types import LoweringError
-from .nodes import Call
+from .nodes import Call, Expr
 from .types import Elementary
 
 DWORD = Elementary("DWORD")
@@ -39,6 +39,6 @@ def in_seconds(call: Call) -> Call:
                 f"{name} under CODESYS typing: CODESYS stores a {target.name} as whole seconds, and how it rounds a "
                 "REAL to them is not documented; convert the REAL to a DWORD first"
             )
-        stored = call.args[0] if source == DWORD else Call(f"{source.name}_TO_DWORD", call.args, (source,), DWORD)
-        return Call("CODESYS_SECONDS_DATE", (stored,), (DWORD,), target)
+        dword: Expr = call.args[0] if source == DWORD else Call(f"{source.name}_TO_DWORD", call.args, (source,), DWORD)
+        return Call("CODESYS_SECONDS_DATE", (dword,), (DWORD,), target)
     return call

@@ -94,14 +94,14 @@ class _Walker:
         """Walk the expression ``holder.key`` (``holder[key]`` in a list), cut to ``cut`` bits (None: it is not), and
         wrap it in ``ast.Fit`` when it is a FIT or, ``exact``, when its user would give a target's result for a
         promoted value. True when it stays promoted (a DINT)."""
-        node = holder[key] if isinstance(holder, list) else getattr(holder, key)  # type: ignore[index]  # list: an int key
+        node = holder[key] if isinstance(key, int) else getattr(holder, key)
         state = self.expr(node, cut)
         if state == FIT or (state and exact):
             fit = ast.Fit(node, node.span, self.narrow[id(node)])
-            if isinstance(holder, list):
-                holder[key] = fit  # type: ignore[index]  # list: an int key
+            if isinstance(key, int):
+                holder[key] = fit
             else:
-                setattr(holder, key, fit)  # type: ignore[arg-type]  # an object: a slot's name
+                setattr(holder, key, fit)
             return False
         return bool(state)
 
