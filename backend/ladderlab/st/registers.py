@@ -170,7 +170,8 @@ class _Walker:
         for position, arg in enumerate(node.args):
             width = _width(t.elementary(target)) if target is not None else _width(_input_type(node.ref, position, arg))
             wide = target is None and _any_integer(node.ref, position, arg)  # SHL's N takes a DINT as well
-            if self.operand(arg, "value", width, exact=not wide and _same_for_its_own_values(name)):
+            exact = not wide and _same_for_its_own_values(node.ref, name)
+            if self.operand(arg, "value", width, exact=exact):
                 promoted |= not wide
         if not promoted or name.startswith("TO_"):  # an overloaded TO_x takes the promoted type as it is
             return False
@@ -207,11 +208,14 @@ def _conversion_target(name: str) -> str | None:
     return target if _width(t.elementary(target)) is not None else None
 
 
-def _same_for_its_own_values(name: str) -> bool:
-    """Whether the standard function ``name`` gives the same result for a value of its input's narrow type whether
-    that value is cut or still in a wider register: a typed conversion (``INT_TO_DWORD``: a value, converted) and SHR
-    (floor(value / 2^N), signed or not, whatever the width). Not SHL or ROL (bits leave the narrow type), ABS
-    (ABS(-32768) overflows an INT only), an overloaded TO_x (it takes the register's type)."""
+def _same_for_its_own_values(callee: Any, name: str) -> bool:
+    """Whether ``callee`` is a standard function (``name``) that gives the same result for a value of its input's
+    narrow type whether that value is cut or still in a wider register: a typed conversion (``INT_TO_DWORD``: a
+    value, converted) and SHR (floor(value / 2^N), signed or not, whatever the width). Not SHL or ROL (bits leave the
+    narrow type), ABS (ABS(-32768) overflows an INT only), an overloaded TO_x (it takes the register's type), a user
+    function (whatever its name)."""
+    if not isinstance(callee, stdlib.StdFunction):
+        return False
     return name == "SHR" or ("_TO_" in name and not name.startswith("TO_"))
 
 
