@@ -88,15 +88,22 @@ def test_signed_operations_compute_in_the_32_bit_register():
 
 
 def test_a_register_value_the_target_decides_is_refused_where_it_is():
-    """Where the register's value is target dependent, nothing is guessed: an unsigned subtraction that may go
-    below 0 compared by '<' (a signed or an unsigned 32/64-bit register gives opposite answers), and a typed
-    conversion of a promoted value. Each is ST-CODESYS-REGISTER at its line; example 4's fix (TO_WORD) builds."""
+    """Where even a value of the operation's own type gives another result in a wider register, nothing is guessed:
+    SHL(i + 1, 8) keeps 16 or 32 bits (16#0101 SHL 8 is 16#0100 in an INT, 16#0001_0100 in a DINT), NOT (w + 1) on a
+    WORD flips 16 or 32 bits, and ABS(i - 1) with i = -32768, stored in an INT, is -32767 from the register, 32767
+    from a wrapped INT. Each is ST-CODESYS-REGISTER at its line; example 4's fix (TO_WORD) and an overloaded TO_x
+    build. Where a value of the operation's own type is enough, it builds with a run-time check instead
+    (tests/engine/test_codesys_register_fits.py)."""
     text = program(
-        "w : WORD; q : BOOL; r : REAL; i : INT;",
-        "q := (w - 1) < w;\nr := INT_TO_REAL(i + 1);\nq := TO_WORD(w - 1) < w;\nr := TO_REAL(i + 1);",
+        "w : WORD; d : DINT; dw : DWORD; i : INT;",
+        "d := SHL(i + 1, 8);\ndw := NOT (w + 1);\ni := ABS(i - 1);\nd := SHL(TO_INT(i + 1), 8);\nd := TO_DINT(i + 1);",
     )
     found = _diagnostics(text)
-    assert [line.split(":")[0] for line in found] == ["ST-CODESYS-REGISTER 6", "ST-CODESYS-REGISTER 7"]
+    assert [line.split(":")[0] for line in found] == [
+        "ST-CODESYS-REGISTER 6",
+        "ST-CODESYS-REGISTER 7",
+        "ST-CODESYS-REGISTER 8",
+    ]
     assert "depends on the target" in found[0] and "TO_WORD" in found[0]
 
 
@@ -189,7 +196,7 @@ def test_min_and_max_of_a_register_value_choose_among_the_uncut_values():
 
 def test_an_action_computes_in_the_register_too():
     """The register rule holds in a function block's ACTION as in its body (example 1): d := i1 + i2 with INT 30000
-    and 30000 is 60000 in a DINT; ``q := (w - 1) < w`` on a WORD is refused there too (ST-CODESYS-REGISTER)."""
+    and 30000 is 60000 in a DINT; ``dw := NOT (w + 1)`` on a WORD is refused there too (ST-CODESYS-REGISTER)."""
     fb = """
 FUNCTION_BLOCK Adder
 VAR i1 : INT := 30000; i2 : INT := 30000; END_VAR
@@ -201,8 +208,8 @@ END_FUNCTION_BLOCK
 """
     text = fb + program("adder : Adder; d : DINT;", "adder.Add(); d := adder.d;")
     assert _scan(text, "d") == [60000]
-    refused = fb.replace("d := i1 + i2;", "d := i1 + i2;\n    q := (w - 1) < w;").replace(
-        "VAR_OUTPUT d : DINT; END_VAR", "VAR_OUTPUT d : DINT; END_VAR\nVAR w : WORD; q : BOOL; END_VAR"
+    refused = fb.replace("d := i1 + i2;", "d := i1 + i2;\n    dw := NOT (w + 1);").replace(
+        "VAR_OUTPUT d : DINT; END_VAR", "VAR_OUTPUT d : DINT; END_VAR\nVAR w : WORD; dw : DWORD; END_VAR"
     )
     assert [line.split(":")[0] for line in _diagnostics(refused + program("adder : Adder;", "adder.Add();"))] == [
         "ST-CODESYS-REGISTER 8"

@@ -62,6 +62,18 @@ def check_subrange(value: int, low: int, high: int) -> int:
     raise PlcRuntimeError(SUBRANGE, f"{value} is outside the subrange {low}..{high}")
 
 
+def check_fit(value: int, low: int, high: int, text: str, type_name: str) -> int:
+    """``value`` unchanged when it lies in low..high: the value of ``text``, a CODESYS register holding an operation
+    of type ``type_name``, which every target gives alike only there (st/registers.py); raises otherwise."""
+    if low <= value <= high:
+        return value
+    raise PlcRuntimeError(
+        OVERFLOW,
+        f"'{text}' is {value} here, outside {type_name} ({low}..{high}): CODESYS computes it in a register whose "
+        "width and sign depend on the target, and so does what the program makes of this value",
+    )
+
+
 FOR_STEP_ZERO = "for_step_zero"
 NULL_DEREFERENCE = "null_dereference"
 DANGLING_REFERENCE = "dangling_reference"

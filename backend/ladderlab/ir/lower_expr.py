@@ -37,6 +37,7 @@ from ..st.printer import print_expression
 from ..st.rules import EnumValue
 from ..st.symbols import PouInfo, PropertyRef, Symbol
 from .byte_layout import byte_layout
+from .codesys_dates import in_seconds
 from .context import PouContext
 from .lower_types import LoweringError, byte_size, engine_value, ir_default
 from .method_outputs import output_arguments
@@ -49,6 +50,7 @@ from .nodes import (
     Convert,
     Deref,
     Expr,
+    Fit,
     FnCall,
     Index,
     Member,
@@ -125,6 +127,8 @@ def _lower(node: ast.Expr, ctx: PouContext, expected: IrType | None) -> Expr:
         return _unary(node, ctx)
     if isinstance(node, ast.Binary):
         return _binary(node, ctx)
+    if isinstance(node, ast.Fit):
+        return Fit(lower_expr(node.operand, ctx), ctx.ir_type(ty), print_expression(node.operand))
     return _call(node, ctx)
 
 
@@ -675,7 +679,7 @@ def std_call(node: ast.Call, ctx: PouContext) -> Call:
         lower_to(bound[index].value, ctx, target) if index in bound else Const(ir_default(target), target)
         for index, target in enumerate(types)
     )
-    return Call(function.name, args, types, result)  # (a call statement's node has no .ty)
+    return in_seconds(Call(function.name, args, types, result))  # (a call statement's node has no .ty)
 
 
 def _signature(

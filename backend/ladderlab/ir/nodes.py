@@ -171,6 +171,16 @@ class Convert:
 
 
 @dataclass(frozen=True, slots=True)
+class Fit:
+    """CODESYS typing: ``operand``, a narrow operation computed as CODESYS's register computes it (a DINT), which must
+    lie in ``type``'s range (st/registers.py; ``text`` is the operation as written, for the fault's message)."""
+
+    operand: Expr
+    type: IrType
+    text: str
+
+
+@dataclass(frozen=True, slots=True)
 class AddressOf:
     """``REF(x)`` / ``ADR(x)``: a reference (``type``, a ``Reference``) to the variable ``var``; ``text`` is the
     call as written, which the online views show as the reference's value."""
@@ -202,7 +212,7 @@ class Attempt:
     type: IrType
 
 
-Expr = Const | Var | Unary | Binary | Call | Convert | AddressOf | View | Attempt
+Expr = Const | Var | Unary | Binary | Call | Convert | Fit | AddressOf | View | Attempt
 
 # --------------------------------------------------------------------------- statements
 

@@ -182,6 +182,18 @@ class Binary:
     ty: Any = _annotation()
 
 
+@dataclass(slots=True)
+class Fit:
+    """Not written by anyone: CODESYS typing's register pass (st/registers.py) wraps ``operand``, a narrow operation
+    computed as CODESYS's register computes it (its type DINT), where what the target does with that register value
+    would decide the result (``INT_TO_DWORD(pos - 1)``). The value must lie in ``ty``, the operation's own type: there
+    every target gives the same result; outside it the run faults, located (never one target's value silently)."""
+
+    operand: Expr
+    span: Span = _span()
+    ty: Any = _annotation()
+
+
 Expr = (
     IntLit
     | RealLit
@@ -197,6 +209,7 @@ Expr = (
     | Call
     | Unary
     | Binary
+    | Fit
 )
 LITERALS = (IntLit, RealLit, BoolLit, StringLit, TimeLit, TypedLit)
 

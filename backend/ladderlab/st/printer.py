@@ -44,6 +44,8 @@ def print_expression(expr: ast.Expr) -> str:
 
 
 def _precedence(expr: ast.Expr) -> int:
+    if isinstance(expr, ast.Fit):  # printed as the operation it checks
+        return _precedence(expr.operand)
     if isinstance(expr, ast.Binary):
         return _PRECEDENCE[expr.op]
     if isinstance(expr, ast.Unary):
@@ -57,6 +59,8 @@ def _expr(expr: ast.Expr, minimum: int) -> str:
 
 
 def _bare(expr: ast.Expr) -> str:
+    if isinstance(expr, ast.Fit):
+        return _bare(expr.operand)
     if isinstance(expr, ast.Binary):
         level = _PRECEDENCE[expr.op]
         right = _power_operand(expr.right) if expr.op == "**" else _expr(expr.right, level + 1)

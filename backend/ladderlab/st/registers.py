@@ -11,10 +11,14 @@ INT); this pass, run on a checked body, finds where that would give another valu
 * anywhere else (a comparison, a division, an index, a REAL, a wider variable) a signed operation narrower than 32
   bits, and an unsigned ``+``, compute in DINT instead, as the 32-bit register does (their node's type becomes DINT;
   an unsigned ``+`` of two 16-bit values never leaves DINT); a division, MOD or negation of such a value too;
-* what the register's value would be is unknown or target dependent, it is refused with ST-CODESYS-REGISTER, located
-  at the operation: an unsigned ``-`` or ``*`` (the register's sign), a typed conversion ``INT_TO_REAL`` of a
-  promoted value (converted before or after the cut?), a bitwise operation or shift of one, a FOR loop's end or
-  step. MIN, MAX, LIMIT, SEL, MUX and MOVE of a promoted value give one of their inputs: they compute in DINT too.
+* where the register's value is target dependent (an unsigned ``-`` or ``*``: the register's sign) or its user would
+  give a target's result for it (a typed conversion ``INT_TO_REAL`` of a promoted value: converted before or after
+  the cut?; SHR; a FOR loop's end or step), the operation computes in DINT and is wrapped in ``ast.Fit``: its value
+  must lie in the operation's own type, where the cut changes nothing and every target gives the same result; the
+  run faults, located, when it does not (``INT_TO_DWORD(pos - 1)`` for any pos but -32768). A user that gives
+  another result for the same value in a wider register (a bitwise operation, NOT, another shift or function of a
+  promoted value) is refused with ST-CODESYS-REGISTER, located at the operation. MIN, MAX, LIMIT, SEL, MUX and MOVE
+  of a promoted value give one of their inputs: they compute in DINT too.
 
 Operations of 32 bits wrap in 32 bits, as on a 32-bit target (x86, ARM); CODESYS on x64 computes them in 64 bits and
 may give another value on an overflow (docs/st.md "CODESYS typing").
@@ -38,6 +42,9 @@ _COMPARING = frozenset({"GT", "GE", "EQ", "LE", "LT", "NE"})
 _SELECTING = frozenset({"MIN", "MAX", "LIMIT", "SEL", "MUX", "MOVE"})
 DINT = t.Elementary("DINT")
 _BITWISE = frozenset({"AND", "OR", "XOR"})
+#: ``expr``'s answer for a value computed in DINT that is target independent only within its own type: whoever uses
+#: it wraps it in ``ast.Fit`` (an unsigned ``-`` or ``*`` used uncut).
+FIT = "fit"
 
 
 def check_registers(body: list[ast.Stmt], report: Any) -> None:
@@ -56,37 +63,57 @@ def _width(ty: Any) -> int | None:
 class _Walker:
     def __init__(self, report: Any):
         self.report = report
+        self.narrow: dict[int, Any] = {}  # id of a promoted node -> its type before (what its ast.Fit checks)
 
     def statements(self, value: Any) -> None:
         """Every expression in a statement, a list of them or a part of one (an IF's branch, a CASE label ...)."""
         if isinstance(value, ast.Assign):
             self.expr(value.target, None)
-            self.expr(value.value, _width(getattr(value.target, "ty", None)))
+            self.operand(value, "value", _width(getattr(value.target, "ty", None)))
         elif isinstance(value, ast.For):
-            self.expr(value.start, _width(getattr(value.var, "ty", None)))
-            for bound in (value.end, value.step):  # compared with the variable each time: not cut
-                if bound is not None and self.expr(bound, None):
-                    self._refuse(bound, "a FOR loop's end or step of")
+            self.operand(value, "start", _width(getattr(value.var, "ty", None)))
+            for bound in ("end", "step"):  # compared with the variable each time: not cut
+                if getattr(value, bound) is not None:
+                    self.operand(value, bound, None, exact=True)
             self.statements(value.body)
-        elif isinstance(value, _EXPRESSIONS):
+        elif isinstance(value, _EXPRESSIONS):  # an IF's or a WHILE's condition: a BOOL
             self.expr(value, None)
         elif isinstance(value, (list, tuple)):
             for item in value:
                 self.statements(item)
         elif hasattr(value, "__slots__") and not isinstance(value, ast.LITERALS):
             for name in value.__slots__:
-                if name not in ("span", "ty", "ref"):
+                if name in ("span", "ty", "ref"):
+                    continue
+                if isinstance(getattr(value, name), _EXPRESSIONS):  # a CASE's selector ...
+                    self.operand(value, name, None)
+                else:
                     self.statements(getattr(value, name))
 
-    def expr(self, node: Any, cut: int | None) -> bool:
+    def operand(self, holder: Any, key: str | int, cut: int | None, exact: bool = False) -> bool:
+        """Walk the expression ``holder.key`` (``holder[key]`` in a list), cut to ``cut`` bits (None: it is not), and
+        wrap it in ``ast.Fit`` when it is a FIT or, ``exact``, when its user would give a target's result for a
+        promoted value. True when it stays promoted (a DINT)."""
+        node = holder[key] if isinstance(key, int) else getattr(holder, key)
+        state = self.expr(node, cut)
+        if state == FIT or (state and exact):
+            fit = ast.Fit(node, node.span, self.narrow[id(node)])
+            if isinstance(key, int):
+                holder[key] = fit
+            else:
+                setattr(holder, key, fit)
+            return False
+        return bool(state)
+
+    def expr(self, node: Any, cut: int | None) -> bool | str:
         """Walk ``node``, whose value is cut to ``cut`` bits before anything else sees it (None: it is not); True
-        when its type became DINT (computed as the register does)."""
+        when its type became DINT (computed as the register does), FIT when its user must check it too."""
         if isinstance(node, ast.Binary):
             return self.binary(node, cut)
         if isinstance(node, ast.Unary):
             width = _width(node.ty)
             inner = min(cut, width) if cut is not None and width is not None else None
-            if self.expr(node.operand, inner):
+            if self.operand(node, "operand", inner):
                 return self._promote(node) if node.op == "-" else self._refuse(node, "NOT of")
             return False
         if isinstance(node, ast.Call):
@@ -95,27 +122,27 @@ class _Walker:
             self.expr(node.base, None)
         elif isinstance(node, ast.Index):
             self.expr(node.base, None)
-            for index in node.indices:
-                self.expr(index, None)
+            for position in range(len(node.indices)):
+                self.operand(node.indices, position, None)
         return False
 
-    def binary(self, node: ast.Binary, cut: int | None) -> bool:
+    def binary(self, node: ast.Binary, cut: int | None) -> bool | str:
         width = _width(node.ty)
         narrow = width is not None and width < REGISTER_BITS and not isinstance(node.ty, t.UNTYPED)
         if node.op in _MODULAR and narrow and cut is not None and cut <= width:
-            self.expr(node.left, width)  # cut: exact modulo 2^width, operands promoted or not
-            self.expr(node.right, width)
+            self.operand(node, "left", width)  # cut: exact modulo 2^width, operands promoted or not
+            self.operand(node, "right", width)
             return False
         if node.op in _MODULAR and narrow and not _literal_only(node):
-            self.expr(node.left, None)
-            self.expr(node.right, None)
-            if node.ty.info.signed or node.op == "+":
-                return self._promote(node)
-            return self._refuse(node, f"'{node.op}' on")
+            self.operand(node, "left", None)
+            self.operand(node, "right", None)
+            register_sign_decides = not node.ty.info.signed and node.op != "+"
+            self._promote(node)
+            return FIT if register_sign_decides else True
         if node.op in ("=", "<>"):
             return self.equality(node)
         inner = min(cut, width) if node.op in _BITWISE and cut is not None and width is not None else None
-        promoted = self.expr(node.left, inner) | self.expr(node.right, inner)
+        promoted = self.operand(node, "left", inner) | self.operand(node, "right", inner)
         if not promoted or node.op in _COMPARISONS:  # a comparison works in its operands' lub (the lowering)
             return False
         if node.op in ("/", "MOD", "+", "-", "*"):
@@ -126,13 +153,14 @@ class _Walker:
         """``(w2 - 1) = w1`` on unsigned narrow operands is FALSE on every target (CODESYS "Operators", example 2):
         a register below 0, read signed or unsigned, equals no value of a narrow unsigned type. So an unsigned
         ``-`` compared for equality with one computes in DINT too."""
-        for side, other in ((node.left, node.right), (node.right, node.left)):
-            if _unsigned_narrow(other.ty) and _unsigned_subtraction(side):
-                self.expr(side.left, None)
-                self.expr(side.right, None)
-                self._promote(side)
+        for side, other in (("left", node.right), ("right", node.left)):
+            operation = getattr(node, side)
+            if _unsigned_narrow(other.ty) and _unsigned_subtraction(operation):
+                self.operand(operation, "left", None)
+                self.operand(operation, "right", None)
+                self._promote(operation)
                 continue
-            self.expr(side, None)
+            self.operand(node, side, None)
         return False
 
     def call(self, node: ast.Call, cut: int | None) -> bool:
@@ -140,10 +168,11 @@ class _Walker:
         target = _conversion_target(name)
         promoted = False
         for position, arg in enumerate(node.args):
-            if target is not None:
-                promoted |= self.expr(arg.value, _width(t.elementary(target)))
-            elif self.expr(arg.value, _width(_input_type(node.ref, position, arg))):
-                promoted |= not _any_integer(node.ref, position, arg)
+            width = _width(t.elementary(target)) if target is not None else _width(_input_type(node.ref, position, arg))
+            wide = target is None and _any_integer(node.ref, position, arg)  # SHL's N takes a DINT as well
+            exact = not wide and _same_for_its_own_values(node.ref, name)
+            if self.operand(arg, "value", width, exact=exact):
+                promoted |= not wide
         if not promoted or name.startswith("TO_"):  # an overloaded TO_x takes the promoted type as it is
             return False
         if name in _COMPARING:  # GT(a, b) ...: compares in its arguments' lub, as the operators do
@@ -153,6 +182,7 @@ class _Walker:
         return self._refuse(node, "a call of")
 
     def _promote(self, node: Any) -> bool:
+        self.narrow.setdefault(id(node), node.ty)
         node.ty = DINT
         return True
 
@@ -176,6 +206,17 @@ def _conversion_target(name: str) -> str | None:
         name.removeprefix("TO_") if name.startswith("TO_") else name.rpartition("_TO_")[2] if "_TO_" in name else ""
     )
     return target if _width(t.elementary(target)) is not None else None
+
+
+def _same_for_its_own_values(callee: Any, name: str) -> bool:
+    """Whether ``callee`` is a standard function (``name``) that gives the same result for a value of its input's
+    narrow type whether that value is cut or still in a wider register: a typed conversion (``INT_TO_DWORD``: a
+    value, converted) and SHR (floor(value / 2^N), signed or not, whatever the width). Not SHL or ROL (bits leave the
+    narrow type), ABS (ABS(-32768) overflows an INT only), an overloaded TO_x (it takes the register's type), a user
+    function (whatever its name)."""
+    if not isinstance(callee, stdlib.StdFunction):
+        return False
+    return name == "SHR" or ("_TO_" in name and not name.startswith("TO_"))
 
 
 def _input_type(callee: Any, position: int, arg: ast.Arg) -> Any:

@@ -1206,11 +1206,11 @@ export const DIAGNOSTICS = {
     "ST-CODESYS-REGISTER": {
       anchor: "st-codesys-register",
       area: "st",
-      example: "VAR w : WORD; q : BOOL; END_VAR\nq := (w - 1) < w;",
+      example: "VAR i : INT; d : DINT; END_VAR\nd := SHL(i + 1, 8);",
       example_language: "st",
       example_note:
-        "With CODESYS typing, CODESYS computes `w - 1` in a register of at least 32 bits; whether that register reads as -1 or as 4294967295 here depends on the target, so LadderLab does not guess.",
-      fix: "cut the value to its type first (`TO_WORD(w - 1) < w`), or compute in a wider type (`TO_DINT(w) - 1 < TO_DINT(w)`).",
+        "With CODESYS typing, CODESYS computes `i + 1` in a register of at least 32 bits; whether SHL then keeps 16 or 32 bits of the shifted value depends on the target, so LadderLab does not guess. Where a value of the operation's own type gives the same result on every target (`INT_TO_DWORD(pos - 1)`, `SHR(n + 1, 1)`, a FOR loop's end, an unsigned `-` compared), the program builds and checks that value when it runs: outside its type, the located fault `overflow`.",
+      fix: "cut the value to its type first (`SHL(TO_INT(i + 1), 8)` shifts an INT), or compute in a wider type (`SHL(TO_DINT(i) + 1, 8)`).",
       severity: "error",
       summary: "CODESYS typing: a value would depend on the width of the PLC's registers.",
     },

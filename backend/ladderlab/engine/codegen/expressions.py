@@ -219,6 +219,12 @@ class Expressions:
             return f"ll_sub({converted}, {c.type.low!r}, {c.type.high!r})"
         return converted
 
+    def fit(self, f: ir.Fit) -> str:
+        """A register value checked to lie in its operation's own type (CODESYS typing, st/registers.py)."""
+        name = self.scalar(f.type, "a register check")
+        low, high = values.value_range(name)  # type: ignore[misc]  # an integer or bit-string type (st/registers.py)
+        return f"ll_fit({self.expr(f.operand)}, {low!r}, {high!r}, {f.text!r}, {name!r})"
+
     # ------------------------------------------------------------------ calls
 
     def standard(self, name: str, args: list[str], types: tuple[str, ...], result: str | None) -> str:
@@ -406,6 +412,7 @@ _HANDLERS = {
     ir.Unary: Expressions.unary,
     ir.Call: Expressions.call,
     ir.Convert: Expressions.convert,
+    ir.Fit: Expressions.fit,
     ir.AddressOf: Expressions.address_of,
     ir.View: Expressions.view,
     ir.Attempt: Expressions.attempt,

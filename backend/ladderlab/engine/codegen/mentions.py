@@ -25,7 +25,7 @@ def expression_nodes(e: ir.Expr | None) -> Iterator[ir.Expr]:
     elif isinstance(e, ir.Call):
         for a in (*e.args, *e.in_outs):
             yield from expression_nodes(a)
-    elif isinstance(e, (ir.Unary, ir.Convert)):
+    elif isinstance(e, (ir.Unary, ir.Convert, ir.Fit)):
         yield from expression_nodes(e.operand)
     elif isinstance(e, ir.AddressOf):
         yield from expression_nodes(e.var)

@@ -24,6 +24,7 @@ from typing import Any
 from ..errors import (
     WATCHDOG,
     PlcRuntimeError,
+    check_fit,
     check_index,
     check_subrange,
     dangling_reference,
@@ -417,6 +418,7 @@ def namespace() -> dict[str, object]:
     ns.update(
         ll_ix=check_index,
         ll_sub=check_subrange,
+        ll_fit=check_fit,
         ll_copy=deep_copy,
         ll_assign=assign_into,
         ll_with=with_values,

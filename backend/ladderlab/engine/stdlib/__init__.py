@@ -23,6 +23,7 @@ from functools import cache
 from ...iec import values
 from ...iec.stdlib import OPERATOR_OVERLOADS, long_time_name
 from ..errors import PlcRuntimeError, PlcWarning
+from . import codesys_dates
 from . import functions as f
 from .build import HELPERS, Impl, Specialised, specialise
 from .conversions import conversion_function, conversion_names, convert, converter
@@ -116,6 +117,7 @@ def _table() -> dict[str, StandardFunction]:
         ("DIVTIME", 2, False, TIME_FUNCTIONS["DIV_TIME"], "FUN-85"),
         ("TIME", 0, False, clock, "CODESYS"),
     ]
+    rows += [(name, 1, False, implement, "CODESYS") for name, implement in codesys_dates.FUNCTIONS.items()]
     rows += [(name, 1, False, conversion_function(*pair), "FUN-10") for name, pair in conversion_names().items()]
     rows += [(name, 1, False, implement, "FUN-10") for name, implement in ed3_conversions().items()]
     return {name: StandardFunction(name, inputs, ext, implement, spec) for name, inputs, ext, implement, spec in rows}
