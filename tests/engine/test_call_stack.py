@@ -6,6 +6,9 @@ initial values (IEC 61131-3: a function's variables are initialised at each call
 
 from __future__ import annotations
 
+import pytest
+
+from ladderlab.engine.paths import UnknownPath
 from ladderlab.engine.simulation import Simulation
 from ladderlab.ir.lower_project import lower_project
 from ladderlab.st.project_text import source_to_project
@@ -192,3 +195,17 @@ def test_every_call_starts_from_the_initial_values_and_nothing_is_shown_when_not
     assert sim.halted is None and sim.call_stack() == ()
     sim.cycle(1)  # the next scan: x = 8; the method's variables are fresh again (TMP was 14 when its call ended)
     assert variables(sim)["N"] == ("input", 8) and variables(sim)["TMP"] == ("var", 0)
+
+
+def test_a_path_into_a_method_or_function_is_refused_and_says_where_its_variables_are_shown():
+    """As CODESYS: a call's variables exist only in the call, so the watch list cannot name them."""
+    sim = simulation()
+    sim.set_breakpoint("Clamp", line=line("Clamp := tmp;"))
+    sim.cycle(1)  # refused while halted in the call too: a path names a variable of every scan, not of one call
+    one_call = (
+        "its variables live for one call only, so no path names them; they are shown while a scan is halted in it"
+    )
+    with pytest.raises(UnknownPath, match=f"MAIN.M.Start is a METHOD of MOTOR: {one_call}"):
+        sim.location("Main.m.Start.tmp")
+    with pytest.raises(UnknownPath, match=f"Clamp is a FUNCTION: {one_call}"):
+        sim.location("Clamp.tmp")
