@@ -82,12 +82,16 @@ def test_the_halted_status_carries_the_call_stack_and_a_write_updates_it(
             variable("INC", "result", "INT", 0),
         ]
         ws.send_json({"type": "continue"})  # the same breakpoint, now in Main's Inc(x): another stack
-        status, _ = recv_until(ws, of_type("status", state="halted"))
+        status, seen = recv_until(ws, of_type("status", state="halted"))
+        assert [m["message"] for m in seen if m["type"] == "log" and m["kind"] == "breakpoint"] == [
+            f"halted at the breakpoint at INC, line {line('Inc := c;')}"
+        ]  # a new halt at the same line: logged, and its stack sent
         assert [where(f) for f in status["stack"]] == [at("MAIN", "MAIN", "Inc(x);"), at("INC", None, "Inc := c;")]
         assert status["stack"][1]["variables"][0] == variable("C", "in_out", "INT", 5)  # x = 4, plus 1
         ws.send_json({"type": "write", "path": "Main.x", "value": 100})  # c refers to x: shown at once
-        status, _ = recv_until(ws, of_type("status", state="halted"))
+        status, seen = recv_until(ws, of_type("status", state="halted"))
         assert status["stack"][1]["variables"][0] == variable("C", "in_out", "INT", 100)
+        assert [m["kind"] for m in seen if m["type"] == "log"] == ["write"]  # the same halt: not logged again
         ws.send_json({"type": "breakpoint_clear"})
         ws.send_json({"type": "continue"})
         status, _ = recv_until(ws, of_type("status", state="stopped"))

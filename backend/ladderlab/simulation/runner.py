@@ -190,7 +190,7 @@ class SimRunner:
         self._run_since: float | None = None
         self._last_publish = float("-inf")
         self._status: tuple[str, At | None, list[CallFrame]] = (self._state(), None, [])
-        self._stack_of: Halt | None = None  # the halt the call stack in ``_status`` was read at
+        self._halt_seen: Halt | None = None  # the halt ``_status`` is about (a new one is logged, its stack read)
         self._fault_report: tuple[Fault | None, dict[str, Any] | None] = (None, None)
         # watches: each client's, and their union (what a frame reads)
         self._watches: dict[object, _Watch] = {}
@@ -327,12 +327,15 @@ class SimRunner:
             if sim.halted is None and sim.debugger is not None:
                 sim.debugger.waiting_for_transition = False  # stopped before a transition fired
         state = self._state()
-        status = (state, at_halt(sim.halted) if sim.halted is not None else None, self._call_stack(publish))
+        halt = sim.halted
+        new_halt = halt is not None and halt is not self._halt_seen
+        self._halt_seen = halt
+        status = (state, at_halt(halt) if halt is not None else None, self._call_stack(new_halt or publish))
         changed = status != self._status
         if changed:
             self._status = status
             at = status[1].model_dump() if status[1] is not None else None
-            if sim.halted is not None and sim.halted.reason == "breakpoint":
+            if new_halt and halt is not None and halt.reason == "breakpoint":  # (not again after a write)
                 self._log("breakpoint", "info", f"halted at the breakpoint at {_where(status[1])}", at=at)
                 if self.history is not None:
                     self.history.mark(sim.scan_count, "breakpoint")  # the scan halted in (not completed yet)
@@ -343,17 +346,12 @@ class SimRunner:
         if publish or changed or now - self._last_publish >= self.publish_s:
             self._publish(now)
 
-    def _call_stack(self, command: bool) -> list[CallFrame]:
-        """The halted scan's call stack: read at a new halt and after a command (a write while halted may change
-        a value a call's VAR_IN_OUT refers to); nothing else changes it while the scan stays halted."""
-        halt = self.sim.halted
-        if halt is None:
-            self._stack_of = None
+    def _call_stack(self, read: bool) -> list[CallFrame]:
+        """The halted scan's call stack, read (``read``) at a new halt and after a command (a write while halted
+        may change a value a call's VAR_IN_OUT refers to); nothing else changes it while the scan stays halted."""
+        if self.sim.halted is None:
             return []
-        if command or halt is not self._stack_of:
-            self._stack_of = halt
-            return [call_frame(frame) for frame in self.sim.call_stack()]
-        return self._status[2]
+        return [call_frame(frame) for frame in self.sim.call_stack()] if read else self._status[2]
 
     def _fit_variant(self) -> None:
         """Debug code only while debugging: a breakpoint is set or a scan is halted; else the monitor code."""
