@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import pytest
 
+from ladderlab.engine.call_stack import call_stack
 from ladderlab.engine.paths import UnknownPath
 from ladderlab.engine.simulation import Simulation
 from ladderlab.ir.lower_project import lower_project
@@ -209,3 +210,24 @@ def test_a_path_into_a_method_or_function_is_refused_and_says_where_its_variable
         sim.location("Main.m.Start.tmp")
     with pytest.raises(UnknownPath, match=f"Clamp is a FUNCTION: {one_call}"):
         sim.location("Clamp.tmp")
+
+
+def test_a_variable_the_call_does_not_hold_is_listed_without_a_value_and_with_the_reason():
+    """Never a stale or made-up value: a call whose frame lacks a variable (here a stand-in generator of Clamp's name
+    with no locals at all) lists each one with why it shows none."""
+    sim = simulation()
+    sim.set_breakpoint("Clamp", line=line("Clamp := tmp;"))
+    sim.cycle(1)
+    namespace: dict[str, object] = {}
+    exec("def f_CLAMP():\n    yield", namespace)  # the generated function's name (names.function("CLAMP"))
+    function = namespace["f_CLAMP"]
+    assert callable(function)
+    stand_in = function()
+    next(stand_in)
+    (frame,) = call_stack([stand_in], sim.halted, sim.compiled.generated, lambda obj: None)
+    assert (frame.pou, frame.kind) == ("CLAMP", "function")
+    assert [(v.name, v.value, v.reason) for v in frame.variables][:2] == [
+        ("V", None, "not held in the call's frame ('v_V')"),
+        ("LO", None, "not held in the call's frame ('v_LO')"),
+    ]
+    assert all(v.value is None and v.reason for v in frame.variables)
