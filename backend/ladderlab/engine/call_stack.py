@@ -87,7 +87,7 @@ def call_stack(
     frames = []
     for number, (pou, call, deepest) in enumerate(calls):
         innermost = number == len(calls) - 1
-        origin = halt.origin if innermost else _origin(generated, deepest.gi_frame)
+        origin = halt.origin if innermost else _origin(generated, deepest.gi_frame, pou)
         element = (halt.point.element or origin.element) if innermost else origin.element
         frames.append(_frame(generated, pou, call.gi_frame, origin, element, instance_path))
     return tuple(frames)
@@ -101,12 +101,11 @@ def _pous_by_code(generated: Generated) -> dict[str, ir.Pou]:
     }
 
 
-def _origin(generated: Generated, frame: FrameType) -> ir.Origin:
-    """The origin of the statement a suspended call stands in (making a call: ``yield from``)."""
+def _origin(generated: Generated, frame: FrameType, pou: ir.Pou) -> ir.Origin:
+    """The origin of the statement a suspended call stands in (making a call: ``yield from``); just its POU for a
+    generated line that belongs to no statement (none is known to make a call)."""
     oid = generated.line_origins[frame.f_lineno - 1]
-    if oid is None:
-        raise RuntimeError(f"no origin for line {frame.f_lineno} of the generated code")
-    return generated.origins[oid]
+    return generated.origins[oid] if oid is not None else ir.Origin(pou.name)
 
 
 def _frame(

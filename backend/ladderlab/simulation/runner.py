@@ -351,7 +351,13 @@ class SimRunner:
         may change a value a call's VAR_IN_OUT refers to); nothing else changes it while the scan stays halted."""
         if self.sim.halted is None:
             return []
-        return [call_frame(frame) for frame in self.sim.call_stack()] if read else self._status[2]
+        if not read:
+            return self._status[2]
+        try:
+            return [call_frame(frame) for frame in self.sim.call_stack()]
+        except Exception:  # a bug here must not end the engine thread: the halt is shown, without its stack
+            log.exception("reading the call stack failed")
+            return []
 
     def _fit_variant(self) -> None:
         """Debug code only while debugging: a breakpoint is set or a scan is halted; else the monitor code."""
