@@ -47,7 +47,7 @@ def test_connecting_reports_the_state_then_a_full_snapshot_of_the_subscription(
 ) -> None:
     client.post(f"/api/simulations/{counter}/cycle")
     with client.websocket_connect(ws_url(counter)) as ws:
-        assert recv(ws) == {"type": "status", "state": "stopped", "at": None}
+        assert recv(ws) == {"type": "status", "state": "stopped", "at": None, "stack": []}
         first = subscribe(ws, ["Main.Count", "main.flag", "MAIN.Idle"])
         history = first.pop("history")  # the scan history (test_history.py): scan 1 is kept, none viewed
         assert (history["first"], history["last"], history["viewing"]) == (1, 1, None)

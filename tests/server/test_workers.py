@@ -292,7 +292,7 @@ def test_a_reload_within_the_grace_period_reattaches_to_the_running_simulation(
 ) -> None:
     sim_id = run_and_leave(client, workspace)
     with client.websocket_connect(ws_url(sim_id)) as ws:  # the reload: same id, at once
-        assert recv(ws) == {"type": "status", "state": "running", "at": None}
+        assert recv(ws) == {"type": "status", "state": "running", "at": None, "stack": []}
         first = subscribe(ws, ["Main.Count"])
         time.sleep(0.8)  # twice the grace period, attached
         recv_until(ws, lambda m: m["type"] == "values" and m["scan"] > first["scan"] + 20)

@@ -38,6 +38,13 @@ _DEREF = object()  # step into a VAR_IN_OUT reference
 _TOKEN = re.compile(r"\s*(?:(?P<name>[A-Za-z_][A-Za-z0-9_]*)|(?P<int>[+-]?\d+)|(?P<punct>[.\[\],^]))")
 
 
+#: Why no path reaches a FUNCTION's or METHOD's variables (CODESYS shows them only in a halted call, too).
+_ONE_CALL = (
+    "its variables live for one call only, so no path names them; they are shown while a scan is halted in it "
+    "(the call stack, and inline in its editor)"
+)
+
+
 class UnknownPath(KeyError):
     def __str__(self) -> str:
         return str(self.args[0])
@@ -235,6 +242,9 @@ class Resolver:
         if place is None:
             candidates = [p.slot.name for p in self.context.globals.places.values() if not p.slot.hidden]
             if top:
+                pou = self.context.pous.get(name.upper())
+                if pou is not None and pou.kind == "function":
+                    raise UnknownPath(f"{name} is a FUNCTION: {_ONE_CALL}")
                 candidates += list(self.access)
                 raise UnknownPath(f"unknown variable or program {name!r}{did_you_mean(name, candidates)}")
             raise UnknownPath(f"unknown global variable {name!r}{did_you_mean(name, candidates)}")
@@ -307,6 +317,8 @@ class Resolver:
                     slot = layout.located[member.upper()]
                     location = located_location(f"{path}.{slot.name}", slot.type, located_address(slot.address))
                     return location.path, location.type, location
+                if inner is None and f"{user.name}.{member}".upper() in self.context.pous:
+                    raise UnknownPath(f"{path}.{member} is a METHOD of {user.name}: {_ONE_CALL}")
                 if inner is None:
                     what = path if path.upper() == ty.fb.upper() else f"{path} ({ty.fb})"  # a program instance: MAIN
                     raise UnknownPath(f"{what} has no variable {member!r}{did_you_mean(member, _visible(layout))}")

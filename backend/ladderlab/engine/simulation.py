@@ -32,14 +32,16 @@ from __future__ import annotations
 
 import contextlib
 import time
-from collections.abc import Callable, Generator, Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, replace
+from types import GeneratorType
 from typing import Any, cast
 
 from ..iec.addresses import parse_address
 from ..iec.spelling import did_you_mean
 from ..ir import nodes as ir
 from ..ir import types as t
+from .call_stack import CallFrame, call_stack
 from .codegen import names
 from .codegen.context import ProbeTable
 from .codegen.faults import Fault, make_fault
@@ -552,16 +554,24 @@ class Simulation:
 
     def _call_frames(self) -> tuple[object, ...]:
         """The task and the POU calls the halted scan is suspended in, outermost first: their generators
-        (``yield from`` chains one per call), without the scan's own (``_debug_scan``, ``_debug_tasks``) and the
-        chunk functions that hold parts of one POU's body."""
-        frames: list[object] = []
-        frame = cast("Generator[object, None, None] | None", self._scan)  # the debug scan is a generator
+        (``yield from`` chains one per call), without the chunk functions that hold parts of one POU's body."""
+        return tuple(g for g in self._generators() if not names.is_chunk_function(g.gi_code.co_name))
+
+    def _generators(self) -> Iterator[GeneratorType]:
+        """The generators of the halted scan, outermost first, without the scan's own (``_debug_scan``,
+        ``_debug_tasks``): the task's, then each POU call's and its body's parts, each suspended in the next."""
+        frame = cast("GeneratorType | None", self._scan)  # the debug scan is a generator
         while frame is not None:
-            code = frame.gi_code
-            if code not in _SCHEDULER_CODE and not names.is_chunk_function(code.co_name):
-                frames.append(frame)
+            if frame.gi_code not in _SCHEDULER_CODE:
+                yield frame
             frame = frame.gi_yieldfrom
-        return tuple(frames)
+
+    def call_stack(self) -> tuple[CallFrame, ...]:
+        """The POU calls the halted scan stands in, outermost first, with a FUNCTION's or METHOD's own variables
+        (engine/call_stack.py); empty when not halted."""
+        if self.halted is None:
+            return ()
+        return call_stack(self._generators(), self.halted, self.compiled.generated, self._instance_path)
 
     def _continue(self, granularity: str | None) -> Halt | None:
         self.debugger.arm(granularity)  # type: ignore[union-attr]  # the debug variant is in use on this path

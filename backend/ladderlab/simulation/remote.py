@@ -200,7 +200,7 @@ class SimulationHandle:
         elif kind == "reply":
             self._on_reply(message)
         elif kind == "status":
-            status = Status(type="status", state=message["state"], at=message["at"])
+            status = Status(type="status", state=message["state"], at=message["at"], stack=message["stack"])
             with self._lock:
                 self.status = status
                 listeners = list(self._listeners)

@@ -43,8 +43,9 @@ import time
 from collections import deque
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
-from typing import Any, ClassVar, Protocol
+from typing import Any, ClassVar, Protocol, cast
 
+from ..engine import call_stack as engine_stack
 from ..engine.codegen.faults import Fault
 from ..engine.compile import CompiledProgram, CompileError, compile_program
 from ..engine.debug import Halt
@@ -55,7 +56,19 @@ from ..engine.tasks import Pacer
 from ..ir import nodes as ir
 from ..ir import types as t
 from ..ir.lower_sfc import CONDITION_PROBE
-from ..model.monitor import MAX_SPEED, MIN_SPEED, At, DisplayType, Log, LogKind, LogLevel, TraceTrigger
+from ..model.monitor import (
+    MAX_SPEED,
+    MIN_SPEED,
+    At,
+    CallFrame,
+    DisplayType,
+    Log,
+    LogKind,
+    LogLevel,
+    StackVariable,
+    TraceTrigger,
+    Value,
+)
 from .commands import CommandError, changes
 from .conditions import BadCondition, Condition, parse_condition
 from .events import events_text, parse_events, scan_inputs
@@ -68,7 +81,7 @@ log = logging.getLogger(__name__)
 class Sink(Protocol):
     """Where a runner's messages go (plain data; called on the engine thread)."""
 
-    def status(self, state: str, at: dict[str, Any] | None) -> None: ...
+    def status(self, state: str, at: dict[str, Any] | None, stack: list[dict[str, Any]]) -> None: ...
 
     def log(self, entry: dict[str, Any]) -> None: ...
 
@@ -79,30 +92,39 @@ class Sink(Protocol):
 Reply = Callable[[object, CommandError | None], None]
 
 
-def at_halt(halt: Halt) -> At:
-    origin = halt.origin
+def _at(origin: ir.Origin, instance: str | None, element: str | None) -> At:
     return At(
         pou=origin.pou,
-        instance=halt.instance,
+        instance=instance,
         network=origin.network,
-        element=halt.point.element or origin.element,
+        element=element,
         line=origin.line,
         column=origin.column,
         body=origin.body,
     )
 
 
+def at_halt(halt: Halt) -> At:
+    return _at(halt.origin, halt.instance, halt.point.element or halt.origin.element)
+
+
 def at_origin(origin: ir.Origin | None, pou: str | None, instance: str | None) -> At | None:
     if origin is None:
         return At(pou=pou, instance=instance) if pou else None
-    return At(
-        pou=origin.pou,
-        instance=instance,
-        network=origin.network,
-        element=origin.element,
-        line=origin.line,
-        column=origin.column,
-        body=origin.body,
+    return _at(origin, instance, origin.element)
+
+
+def call_frame(frame: engine_stack.CallFrame) -> CallFrame:
+    """A call of the halted scan as the status message carries it: its values shown as every online value is."""
+    return CallFrame(
+        kind=frame.kind,
+        at=_at(frame.origin, frame.instance, frame.element),
+        variables=[
+            StackVariable(
+                name=v.name, kind=v.kind, type=display_type(v.type), value=cast("Value", v.value), reason=v.reason
+            )
+            for v in frame.variables  # (values are plain data: paths.plain)
+        ],
     )
 
 
@@ -167,7 +189,8 @@ class SimRunner:
         self._real_s = 0.0
         self._run_since: float | None = None
         self._last_publish = float("-inf")
-        self._status: tuple[str, At | None] = (self._state(), None)
+        self._status: tuple[str, At | None, list[CallFrame]] = (self._state(), None, [])
+        self._halt_seen: Halt | None = None  # the halt ``_status`` is about (a new one is logged, its stack read)
         self._fault_report: tuple[Fault | None, dict[str, Any] | None] = (None, None)
         # watches: each client's, and their union (what a frame reads)
         self._watches: dict[object, _Watch] = {}
@@ -304,21 +327,37 @@ class SimRunner:
             if sim.halted is None and sim.debugger is not None:
                 sim.debugger.waiting_for_transition = False  # stopped before a transition fired
         state = self._state()
-        status = (state, at_halt(sim.halted) if sim.halted is not None else None)
+        halt = sim.halted
+        new_halt = halt is not None and halt is not self._halt_seen
+        self._halt_seen = halt
+        status = (state, at_halt(halt) if halt is not None else None, self._call_stack(new_halt or publish))
         changed = status != self._status
         if changed:
             self._status = status
             at = status[1].model_dump() if status[1] is not None else None
-            if sim.halted is not None and sim.halted.reason == "breakpoint":
+            if new_halt and halt is not None and halt.reason == "breakpoint":  # (not again after a write)
                 self._log("breakpoint", "info", f"halted at the breakpoint at {_where(status[1])}", at=at)
                 if self.history is not None:
                     self.history.mark(sim.scan_count, "breakpoint")  # the scan halted in (not completed yet)
-            self.sink.status(state, at)
+            self.sink.status(state, at, [frame.model_dump() for frame in status[2]])
         # A new state (above all a halt) is followed at once by the values of that moment, so a client
         # shows the values at the halt point, not those of the last periodic frame.
         now = self.clock()
         if publish or changed or now - self._last_publish >= self.publish_s:
             self._publish(now)
+
+    def _call_stack(self, read: bool) -> list[CallFrame]:
+        """The halted scan's call stack, read (``read``) at a new halt and after a command (a write while halted
+        may change a value a call's VAR_IN_OUT refers to); nothing else changes it while the scan stays halted."""
+        if self.sim.halted is None:
+            return []
+        if not read:
+            return self._status[2]
+        try:
+            return [call_frame(frame) for frame in self.sim.call_stack()]
+        except Exception:  # a bug here must not end the engine thread: the halt is shown, without its stack
+            log.exception("reading the call stack failed")
+            return []
 
     def _fit_variant(self) -> None:
         """Debug code only while debugging: a breakpoint is set or a scan is halted; else the monitor code."""

@@ -56,8 +56,8 @@ class Link:
             self.last_sent = time.monotonic()
 
     # the runner's Sink
-    def status(self, state: str, at: dict[str, Any] | None) -> None:
-        self.send({"type": "status", "state": state, "at": at})
+    def status(self, state: str, at: dict[str, Any] | None, stack: list[dict[str, Any]]) -> None:
+        self.send({"type": "status", "state": state, "at": at, "stack": stack})
 
     def log(self, entry: dict[str, Any]) -> None:
         self.send({"type": "log", "entry": entry})

@@ -496,13 +496,16 @@ function PouView({ name }: { name: string }) {
   const project = useWorkspace((s) => s.name);
   const unsaved = useWorkspace((s) => s.changed.includes(name));
   const focus = usePanels((s) => (s.focus?.pou.toUpperCase() === name.toUpperCase() ? s.focus : null));
-  const [mode, setMode] = useState<PouMode>("body");
+  // A diagnostic clicked for this POU, or a halt or call in it, shows the part it is in (as the request arrives,
+  // while rendering; also when it opens the POU: a method's call from the call stack opens its FB's Methods tab).
+  const modeOf = (f: typeof focus): PouMode =>
+    f?.member ? "methods" : f?.part === "declarations" ? "declarations" : "body";
+  const [mode, setMode] = useState<PouMode>(() => modeOf(focus));
   const phase = useOnline((s) => s.phase);
-  // A diagnostic clicked for this POU shows the part it is in (as the request arrives, while rendering).
   const [focusSeen, setFocusSeen] = useState(focus);
   if (focus !== focusSeen) {
     setFocusSeen(focus);
-    if (focus) setMode(focus.member ? "methods" : focus.part === "declarations" ? "declarations" : "body");
+    if (focus) setMode(modeOf(focus));
   }
   if (!pou || !project) return <p className="placeholder">{name} is no longer in this project.</p>;
   const modes: { id: PouMode; label: string }[] = [

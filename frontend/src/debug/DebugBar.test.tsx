@@ -67,4 +67,32 @@ describe("DebugBar (issue 9: stepping a halted scan)", () => {
       body: null,
     });
   });
+
+  it("lists the call stack outermost first; choosing a call opens its POU where it stands", () => {
+    onlineStore.setState({ phase: "online", send: vi.fn(() => true) });
+    const reveal = vi.fn();
+    render(<DebugBar networksOf={networksOf} reveal={reveal} />);
+    const stack = [
+      { kind: "program" as const, at: { pou: "MAIN", instance: "MAIN", network: "n1" } },
+      { kind: "method" as const, at: { pou: "MOTOR.START", instance: "MAIN.M", line: 19 } },
+      { kind: "function" as const, at: { pou: "CLAMP", line: 8 } },
+    ];
+    act(() => onlineStore.setState({ monitor: { ...emptyMonitor, state: "halted", at: stack[2]!.at, stack } }));
+    const calls = screen.getByRole("navigation", { name: "Call stack" });
+    const items = [...calls.querySelectorAll("li")];
+    expect(items.map((li) => li.textContent)).toEqual([
+      "MAIN, network 1",
+      "MOTOR.START (MAIN.M), line 19",
+      "CLAMP, line 8",
+    ]);
+    expect(items.map((li) => li.getAttribute("aria-current"))).toEqual([null, null, "step"]);
+    fireEvent.click(screen.getByRole("button", { name: "MOTOR.START (MAIN.M), line 19" }));
+    expect(reveal).toHaveBeenLastCalledWith({
+      pou: "MOTOR.START",
+      network: undefined,
+      element: undefined,
+      line: 19,
+      body: null,
+    });
+  });
 });

@@ -1,4 +1,4 @@
-// The halted scan: where it stands (revealed in its editor when it halts) and what to do next:
+// The halted scan: where it stands (revealed in its editor when it halts), its call stack, and what to do next:
 // Continue, Step over, Step into, Step out, Step network, Step cycle, Stop (the keys of the keymap,
 // CODESYS's, handled by app/useAppKeys.ts). Breakpoints are set in the editors and listed in the
 // Breakpoints panel.
@@ -6,6 +6,7 @@ import { useEffect } from "react";
 import { onlineStore, useOnline } from "../online/store";
 import { keysOf } from "../keys/keymap";
 import { describeHalt } from "./breakpoints";
+import { CallStack } from "./CallStack";
 import type { Place } from "./reveal";
 import { useDebug } from "./store";
 
@@ -80,6 +81,7 @@ export function DebugBar({ networksOf, elementText, reveal }: DebugBarProps) {
       >
         Stop
       </button>
+      <CallStack networksOf={networksOf} elementText={elementText} reveal={reveal} />
     </div>
   );
 }

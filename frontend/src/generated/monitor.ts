@@ -665,8 +665,57 @@ export interface DisplayType {
  */
 export interface Status {
   at?: At | null;
+  /**
+   * While halted: the POU calls the scan stands in, outermost first.
+   */
+  stack?: CallFrame[];
   state: "running" | "stopped" | "halted" | "faulted";
   type: "status";
+}
+/**
+ * One POU call a halted scan stands in (the call stack, outermost first; ON-03): ``at`` is where it stands -
+ * the halt point in the last one, the call it makes in the others - in its POU (a method as ``<FB>.<M>``) and
+ * instance (a method's too); ``variables`` are a FUNCTION's or METHOD's own.
+ *
+ * This interface was referenced by `MonitorProtocol`'s JSON-Schema
+ * via the `definition` "CallFrame".
+ */
+export interface CallFrame {
+  at: At;
+  kind: "program" | "function_block" | "function" | "method";
+  /**
+   * A FUNCTION's or METHOD's inputs, outputs, in-outs, VAR, VAR_TEMP, result.
+   */
+  variables?: StackVariable[];
+}
+/**
+ * A variable of a FUNCTION's or METHOD's call in a halted scan: it lives for that call only, so no path
+ * reaches it. ``value`` as in ``values.changed`` (shown as ``type`` says); none, with ``reason``, when it
+ * cannot be read exactly.
+ *
+ * This interface was referenced by `MonitorProtocol`'s JSON-Schema
+ * via the `definition` "StackVariable".
+ */
+export interface StackVariable {
+  kind: "input" | "output" | "in_out" | "var" | "temp" | "result";
+  /**
+   * As declared; the result is named like the function, method or property.
+   */
+  name: string;
+  /**
+   * Why no value is shown.
+   */
+  reason?: string | null;
+  type: DisplayType;
+  value?:
+    | boolean
+    | number
+    | string
+    | unknown[]
+    | {
+        [k: string]: unknown;
+      }
+    | null;
 }
 /**
  * New samples of this client's trace since its previous chunk, sent at its monitor interval.

@@ -1,12 +1,14 @@
 // The Methods tab of a function block (issue 25, CODESYS's objects under an FB): its methods and properties listed, their
 // access (PUBLIC/PRIVATE/PROTECTED/INTERNAL), FINAL and ABSTRACT set,
 // added, renamed (with every call, previewed: the tree's rename dialog) and deleted; a method's result type, declarations and body, and a property's type and GET / SET
-// texts, edited in the ST editor with the live check's diagnostics; breakpoints in a method's body.
+// texts, edited in the ST editor with the live check's diagnostics; breakpoints in a method's body, and its own
+// variables' values inline while the scan is halted in a call of it.
 import { useState, type FormEvent } from "react";
 import type { Accessor, Method, Pou, Property } from "../generated/api";
 import { useTextDebug } from "../breakpointPlaces/useTextDebug";
 import { useOnline } from "../online/store";
 import type { Focus } from "../store/panels";
+import { useCallValues } from "../st/callValues";
 import { StEditor } from "../st/StEditor";
 import { useStAssist } from "../st/useStAssist";
 import { workspaceStore } from "../store/project";
@@ -209,6 +211,8 @@ function MemberEditor({
   };
   const typeField = kind === "method" ? ((member as Method).return_type ?? "") : (member as Property).type;
   const debug = useTextDebug(`${pou.name}.${member.name}`); // the engine's POU of a method: FB.M
+  // halted in a call of the method: its own variables' values inline
+  const call = useCallValues(kind === "method" ? `${pou.name}.${member.name}` : null, (member as Method).body ?? "");
   const text = (label: string, value: string, file: string, onChange: (text: string) => void, debugged = false) => (
     <div key={file} style={{ flex: "1 1 0", minHeight: "6rem", overflow: "hidden", borderBottom: "1px solid #ccc" }}>
       <StEditor
@@ -220,6 +224,7 @@ function MemberEditor({
         readOnly={readOnly}
         label={label}
         debug={debugged ? debug : undefined}
+        online={debugged ? call : undefined}
         focusLine={
           focus?.line != null && file.endsWith(`/${focus.part ?? "body"}`) ? { line: focus.line, seq: focus.seq } : null
         }

@@ -1,6 +1,6 @@
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
-import { applyMessage, emptyMonitor, keepSubscribed, LOG_LIMIT, type MonitorState } from "./monitor";
+import { applyMessage, emptyMonitor, haltedCall, keepSubscribed, LOG_LIMIT, type MonitorState } from "./monitor";
 import { parseServerMessage, type ServerMessage, type ValuesMessage } from "./protocol";
 
 const values = (
@@ -56,6 +56,20 @@ describe("monitor message handling (issue 6 websocket messages)", () => {
     s = applyMessage(s, { type: "status", state: "running" });
     expect(s.state).toBe("running");
     expect(s.at).toBeNull();
+  });
+
+  it("keeps the call stack of a halt until the next state, and finds the call of a POU in it", () => {
+    const stack = [
+      { kind: "program" as const, at: { pou: "MAIN", instance: "MAIN", line: 3 } },
+      { kind: "method" as const, at: { pou: "MOTOR.START", instance: "MAIN.M", line: 2 }, variables: [] },
+    ];
+    let s = applyMessage(emptyMonitor, { type: "status", state: "halted", at: stack[1]!.at, stack });
+    expect(haltedCall(s, "Motor.Start")).toBe(stack[1]);
+    expect(haltedCall(s, "Clamp")).toBeNull();
+    expect(haltedCall({ ...s, history: { first: 1, last: 2, stepping: { at: null } } }, "Motor.Start")).toBeNull();
+    s = applyMessage(s, { type: "status", state: "running", stack });
+    expect(s.stack).toEqual([]);
+    expect(haltedCall(s, "Motor.Start")).toBeNull();
   });
 
   it("appends log and error messages in order with their scan (the server's, else the current one)", () => {

@@ -2,7 +2,7 @@
 // Pure functions only (the store and the views call them), so the handling of every message kind
 // is unit-tested without a socket. Paths are compared in upper case, as IEC names ignore case.
 import type { SymbolInfo } from "../generated/api";
-import type { DisplayType, HistoryRange, Log } from "../generated/monitor";
+import type { CallFrame, DisplayType, HistoryRange, Log } from "../generated/monitor";
 import type { PowerState, ServerMessage, SimulationState, Value, Where } from "./protocol";
 
 /** What a log entry is about (ON-15), as the server's `log` messages say. */
@@ -42,6 +42,8 @@ export interface MonitorState {
   state: SimulationState | null;
   /** Where a halted simulation stopped. */
   at: Where | null;
+  /** The POU calls the halted scan stands in, outermost first, with a FUNCTION's or METHOD's own variables. */
+  stack: readonly CallFrame[];
   /** Latest value of every subscribed path, keyed by the upper-case path. */
   values: Readonly<Record<string, Value>>;
   /** How to show each subscribed path's value (from the snapshot after a subscribe), same keys. */
@@ -65,6 +67,13 @@ export function haltedAt(monitor: Pick<MonitorState, "state" | "at" | "history">
   return monitor.state === "halted" ? monitor.at : null;
 }
 
+/** The call of POU `pou` (a method as `FB.M`, any case) the live scan is halted in, if any: its own variables' values.
+ * A POU is called at most once in a stack (no recursion, POU-02). A step through a past scan has no call stack. */
+export function haltedCall(monitor: Pick<MonitorState, "state" | "stack" | "history">, pou: string): CallFrame | null {
+  if (monitor.state !== "halted" || monitor.history?.stepping) return null;
+  return monitor.stack.find((f) => f.at.pou.toUpperCase() === pou.toUpperCase()) ?? null;
+}
+
 /** The online log keeps this many entries (older ones are dropped). */
 export const LOG_LIMIT = 5000;
 
@@ -73,6 +82,7 @@ export const emptyMonitor: MonitorState = {
   timeMs: 0,
   state: null,
   at: null,
+  stack: [],
   values: {},
   types: {},
   forced: new Set(),
@@ -134,8 +144,15 @@ export function applyMessage(state: MonitorState, message: ServerMessage): Monit
         history: message.history ?? null,
       };
     }
-    case "status":
-      return { ...state, state: message.state, at: message.state === "halted" ? (message.at ?? null) : null };
+    case "status": {
+      const halted = message.state === "halted";
+      return {
+        ...state,
+        state: message.state,
+        at: halted ? (message.at ?? null) : null,
+        stack: halted ? (message.stack ?? []) : [],
+      };
+    }
     case "log":
       return appendLog(
         state,

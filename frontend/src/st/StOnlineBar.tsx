@@ -16,6 +16,8 @@ export function StOnlineBar({ online, instancePicker }: { online: StOnline; inst
       </label>
       {online.instance ? (
         <span className="st-online-instance">Instance {online.instance}</span>
+      ) : online.view ? (
+        <span>The halted call&apos;s values.</span>
       ) : (
         <span>No instance shown.</span>
       )}

@@ -3,7 +3,8 @@
 // halt), turns the monitor's values into inline marks and hover text, prepares a value on a
 // double-click (CODESYS) and offers write / force / release from a right click with the LD
 // editor's menu and value prompt. An array element `a[i]` acts on the element `i` names now.
-// An IL body also shows the accumulator after each line (ilOnline.ts), from the instance's probes.
+// An IL body also shows the accumulator after each line (ilOnline.ts), from the instance's probes. A FUNCTION has
+// no instance: its own variables show while the scan is halted in a call of it (callValues.ts).
 import { useEffect, useMemo, useState, type ReactNode } from "react";
 import type { Pou } from "../generated/api";
 import { MenuList } from "../ui/MenuList";
@@ -21,6 +22,7 @@ import {
   type Occurrence,
   type StOnlineView,
 } from "./inlineValues";
+import { useCallValues } from "./callValues";
 import { accumulatorMarks } from "./ilOnline";
 import type { Scope } from "./members";
 
@@ -127,5 +129,7 @@ export function useStOnline(pou: Pou, body: string, scope: Scope): StOnline {
       ) : null}
     </>
   );
-  return { live, instance, showValues, setShowValues, view, overlay };
+  const call = useCallValues(pou.kind === "function" ? pou.name : null, body);
+  const called = call && !showValues ? { ...call, marks: [] } : call;
+  return { live, instance, showValues, setShowValues, view: view ?? called, overlay };
 }

@@ -56,6 +56,11 @@ def function(name: str) -> str:
     return "f_" + escape(name)
 
 
+def execute_function(name: str) -> str:
+    """The body of a PROGRAM / FUNCTION_BLOCK (its class's ``execute``; a derived FB's ``SUPER^()`` calls it)."""
+    return "ll_x_" + escape(name)
+
+
 def dispatch_table(method: str) -> str:
     """The table of a method's implementations by instance class (``ll_virtual``, a METHOD's dynamic dispatch)."""
     return "ll_vt_" + escape(method)

@@ -256,7 +256,8 @@ def _emit_execute(module: ModuleContext, pou: ir.Pou, scope: Scope, src: Source)
             else:
                 calls.append(f"{chunk}(self, now)")
     src.piece()
-    src.line(f"def ll_x_{key}(self, now):")
+    execute = names.execute_function(pou.name)
+    src.line(f"def {execute}(self, now):")
     with src.indent():
         src.line(f"# {cls}.execute")
         loaded: set[int] = set()
@@ -285,7 +286,7 @@ def _emit_execute(module: ModuleContext, pou: ir.Pou, scope: Scope, src: Source)
         if module.debug:
             src.line("return")
             src.line("yield  # a generator even when no pause point is reached")
-    src.line(f"{cls}.execute = ll_x_{key}")
+    src.line(f"{cls}.execute = {execute}")
     src.line()
     if any(reads):
         _emit_reader(cls, key, reads, src)

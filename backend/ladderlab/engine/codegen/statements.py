@@ -687,7 +687,7 @@ class Statements:
     def _base_body(self, fb: str, base: str) -> None:
         """``SUPER^()``: the base's body on the instance ``fb``; its probes go to the base class's
         ``ll_super_probes`` meanwhile, not into the instance's own (numbered for its own body)."""
-        run = f"ll_x_{names.escape(base)}({fb}, {self.now})"
+        run = f"{names.execute_function(base)}({fb}, {self.now})"
         run = f"yield from {run}" if self.module.debug else run
         if not self.module.probes:
             self.src.line(run)
