@@ -80,17 +80,23 @@ def _backward(statements: list[ir.Stmt], live: set[str], temps: frozenset[str], 
 
 
 def _exposed_probe_reads(statements: list[ir.Stmt], temps: frozenset[str]) -> set[str]:
-    """Temporaries a probe of this block may read before the block's own top-level statements assign them."""
+    """Temporaries a probe of this block may read before the block's own top-level statements assign them (an
+    assignment, or a call's ENO, which it writes on every path: without it, the ENO of every ADD box would stay
+    live through the networks up to the next probe reading that temporary, and be computed where nothing reads it)."""
     assigned: set[str] = set()
     exposed: set[str] = set()
     for s in statements:
         for inner in walk([s]):
             if type(inner) is ir.Probe:
                 exposed |= _reads(inner.value, temps) - assigned
-        if type(s) is ir.Assign and not s.target.path:
+        kind = type(s)
+        target = None
+        if kind is ir.Assign and not s.target.path:
             target = _temp(s.target, temps)
-            if target is not None:
-                assigned.add(target)
+        elif (kind is ir.FnCall or kind is ir.FbCall) and s.eno is not None and not s.eno.path:
+            target = _temp(s.eno, temps)
+        if target is not None:
+            assigned.add(target)
     return exposed
 
 
