@@ -21,8 +21,8 @@ _NO_CONSTANT = object()
 class FramePlan:
     """The probes of some elements of one POU, as ``Simulation.probes`` reads them."""
 
-    #: (probe number, element id, network run or None, first group or -1, further groups, constant or
-    #: _NO_CONSTANT)
+    #: (number of the probe holding the value: its own or, for an alias, its source's; element id, network run or
+    #: None, first group or -1, further groups, constant or _NO_CONSTANT)
     rows: tuple[tuple[int, str, int | None, int, tuple[int, ...], object], ...]
     networks: tuple[int, ...]  # the distinct network runs of the rows
     #: (probe number, network run, first group, further groups) of the rows read after the scan
@@ -62,11 +62,12 @@ def frame_plan(table: ProbeTable, elements: Iterable[str] | None, networks: bool
     else:
         indices = [index for index in map(table.index, dict.fromkeys(elements)) if index is not None]
     network_of = table.network_of if networks else {}
+    aliases = table.aliases  # (stored once, in the same group: ``ProbeTable.aliases``)
     rows = []
     for index in indices:
         groups = table.groups[index]
         constant = table.constants.get(index, _NO_CONSTANT)
         first = groups[0] if groups else -1  # (-1: no group, never ran)
-        rows.append((index, table.elements[index], network_of.get(index), first, tuple(groups[1:]), constant))
+        rows.append((aliases.get(index, index), table.elements[index], network_of.get(index), first, tuple(groups[1:]), constant))
     deferred = tuple((row[0], row[2], row[3], row[4]) for row in rows if row[0] in table.deferred_paths)
     return FramePlan(tuple(rows), tuple(sorted({row[2] for row in rows if row[2] is not None})), deferred)

@@ -188,10 +188,15 @@ class Simulation:
             raise ValueError(f"that is not the {variant} variant of this simulation's program")
         if self.variant == "monitor":  # the debug code stores every probe: start from complete lists
             for obj, pou in self._instances_by_path().values():
-                self._read_deferred(obj, self.compiled.generated.context.probes_of(pou))
+                table = self.compiled.generated.context.probes_of(pou)
+                self._read_deferred(obj, table)
+                values = obj.ll_pr  # type: ignore[attr-defined]  # generated POU classes and their namespace are untyped
+                for alias, source in table.aliases.items():  # (the monitor code stores their value once)
+                    values[alias] = values[source]
         self._variants[variant] = compiled
         compiled.install(self._ns)
         self.compiled = compiled
+        self._frame_plans.clear()  # (a plan reads its variant's table: aliases, network runs)
         self._attach_debugger()
 
     @property

@@ -72,6 +72,9 @@ class ProbeTable:
     #: The variable each deferred probe reads, as a path below the program instance (``T1.Q``), so a monitor
     #: can read a few of them without ``ll_read_probes`` reading them all.
     deferred_paths: dict[int, str] = field(default_factory=dict)
+    #: Probes whose value is another's, stored once (``Statements._same_probe``): probe number -> the probe
+    #: number it reads (monitor variant; its readers go through ``frames.frame_plan``)
+    aliases: dict[int, int] = field(default_factory=dict)
     #: Networks whose probes the monitor variant stores only while a client views them (``ll_v[n]``, see
     #: ``Statements.block``): their count, and each probe's network (absent: stored in every scan).
     networks: int = 0

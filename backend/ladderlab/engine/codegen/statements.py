@@ -68,6 +68,9 @@ class Statements:
         self.network: int | None = None  # the viewed network whose probes are being emitted
         self._following: ir.Probe | None = None  # the probe after the statement being emitted
         self._fused = False  # the last assignment also recorded the probe after it
+        #: The last ``ll_pr[i] = <temporary> = value`` line (``_set``): its Source, line count after it, group,
+        #: temporary and probe number, for a probe right after it of the same temporary (``_same_probe``)
+        self._probed_temp: tuple[Source, int, int | None, str, int] | None = None
         self.deferred = deferred  # id() of the probes read after the scan (deferred.py)
         self.reads: list[str] = []  # their ``ll_pr[i] = value`` lines, for the chunk's ll_read_probes part
         self._line: int | None = None
@@ -275,11 +278,38 @@ class Statements:
             self._defer(probe)
             self._fused = True
         elif probe is not None and isinstance(probe.value, ir.Var) and self.x.expr(probe.value) in (code, value):
-            self.src.line(f"ll_pr[{self._record(probe)}] = {code} = {value}  # {names.comment_text(probe.element)}")
+            source = self._same_probe(value)
+            index = self._record(probe)
+            comment = names.comment_text(probe.element)
+            if source is not None:
+                self.probes.aliases[index] = source  # type: ignore[union-attr]  # a probe was just recorded
+                self.src.line(f"{code} = {value}  # ll_pr[{index}] is ll_pr[{source}]  # {comment}")
+            else:
+                self.src.line(f"ll_pr[{index}] = {code} = {value}  # {comment}")
+                if code in self.temps:
+                    self._probed_temp = (self.src, len(self.src.lines), self.group, code, index)
             self._fused = True
             self._paused(probe)
         else:
             self.src.line(f"{code} = {value}")
+
+    def _same_probe(self, value: str) -> int | None:
+        """The probe number whose store holds ``value`` already, so a probe of it need not be stored (a coil right
+        after the contact or box that computed its power flow: ``ll_pr[i] = ll_t___P_1 = ..`` then
+        ``self.v_C = ll_t___P_1``): the line before (comments aside) stored that temporary with its probe, in the
+        same group, so both probes are recorded together or not at all. Only in the monitor variant's viewed networks
+        (``block``): the debug variant can halt between the two and shows the elements that ran so far, and a
+        FUNCTION's probe lists are part of a captured state, which a debug simulation may restore
+        (``ProbeTable.aliases``; the monitor variant fills them in when it switches to the debug one)."""
+        last = self._probed_temp
+        if last is None or self.debug or self.network is None or self.group is None:
+            return None
+        src, count, group, temp, index = last
+        if src is not self.src or group != self.group or temp != value:
+            return None
+        if any(not line.lstrip().startswith("#") for line in src.lines[count:]):
+            return None
+        return index
 
     def store(self, target: ir.Var, value: ir.Expr, probe: ir.Probe | None = None) -> None:
         forward = self.x.forward
