@@ -85,12 +85,13 @@ def test_property_monitor_and_debug_variants_record_the_same_power_flow(program,
     lowered = _program(pou)
     monitor, debug, switching = (Simulation(lowered, variant=v) for v in ("monitor", "debug", "monitor"))
     always, boxes = _unguarded(pou), _boxes(pou)
+    view = monitor.probes("Main")
     for scan, mask in enumerate(masks):
         counted = {c: monitor.read(f"Main.{c}") for c in COUNTERS}
         if scan % every == 0:
             switching.use_variant("debug" if switching.variant == "monitor" else "monitor")
-            if scan:  # the last scan's power flow, as the other variant read it (a coil's probe: ProbeTable.aliases)
-                assert switching.probes("Main") == view, f"before scan {scan}: switching lost probes"
+            # the last scan's power flow, as the other variant reads it (a coil's probe: ProbeTable.aliases)
+            assert switching.probes("Main") == view, f"before scan {scan}: switching lost probes"
         for sim in (monitor, debug, switching):
             for bit, name in enumerate(INPUTS):
                 sim.write(f"Main.{name}", bool(mask >> bit & 1))

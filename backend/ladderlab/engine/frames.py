@@ -68,6 +68,7 @@ def frame_plan(table: ProbeTable, elements: Iterable[str] | None, networks: bool
         groups = table.groups[index]
         constant = table.constants.get(index, _NO_CONSTANT)
         first = groups[0] if groups else -1  # (-1: no group, never ran)
-        rows.append((aliases.get(index, index), table.elements[index], network_of.get(index), first, tuple(groups[1:]), constant))
+        stored = aliases.get(index, index)
+        rows.append((stored, table.elements[index], network_of.get(index), first, tuple(groups[1:]), constant))
     deferred = tuple((row[0], row[2], row[3], row[4]) for row in rows if row[0] in table.deferred_paths)
     return FramePlan(tuple(rows), tuple(sorted({row[2] for row in rows if row[2] is not None})), deferred)
