@@ -8,6 +8,7 @@
 import { useEffect, useState } from "react";
 import type { HistoryMark } from "../generated/api";
 import { findInHistory, historyDiff, historyMarks, historyStep } from "./api";
+import { CallStack } from "./CallStack";
 import type { Value, Where } from "./protocol";
 import { formatValue } from "./values";
 import { onlineStore, useOnline } from "./store";
@@ -305,6 +306,7 @@ function HistoryStepping({ viewing, describe, reveal }: { viewing: number } & Hi
         </button>
       ) : null}
       {note ? <span role="alert">{note}</span> : null}
+      <CallStack stack={stepping?.stack ?? []} describe={describe} reveal={reveal} />
     </div>
   );
 }
