@@ -2,12 +2,12 @@
 // Continue, Step over, Step into, Step out, Step network, Step cycle, Stop (the keys of the keymap,
 // CODESYS's, handled by app/useAppKeys.ts). Breakpoints are set in the editors and listed in the
 // Breakpoints panel.
-import { useEffect } from "react";
 import type { At } from "../online/protocol";
 import { onlineStore, useOnline } from "../online/store";
 import { keysOf } from "../keys/keymap";
 import { describeHalt } from "./breakpoints";
 import { CallStack } from "../online/CallStack";
+import { useRevealHalt } from "../online/useRevealHalt";
 import type { Place } from "./reveal";
 import { useDebug } from "./store";
 
@@ -34,17 +34,7 @@ export function DebugBar({ networksOf, elementText, reveal }: DebugBarProps) {
       where.element && !where.body ? elementText?.(where.pou, where.element) : null,
     );
 
-  // A new halt shows its location in the editor.
-  useEffect(() => {
-    if (halted)
-      reveal({
-        pou: halted.pou,
-        network: halted.network,
-        element: halted.element,
-        line: halted.line,
-        body: halted.body ?? null,
-      });
-  }, [halted, reveal]);
+  useRevealHalt(halted, reveal); // a new halt shows its location in the editor
 
   if (!halted) return null;
   return (

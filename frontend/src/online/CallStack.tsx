@@ -4,6 +4,8 @@
 // show inline.
 import type { CallFrame } from "../generated/monitor";
 import type { At } from "./protocol";
+import type { HaltPlace } from "./useRevealHalt";
+import type { HaltPlace } from "./useRevealHalt";
 
 export interface CallStackProps {
   /** The calls, outermost first: the halted live scan's, or those of a step through a past scan. */
@@ -11,13 +13,7 @@ export interface CallStackProps {
   /** Where a call stands in words ("MAIN, line 3"), as the halt is described. */
   describe(at: At): string;
   /** Shows a place in its editor (debug/reveal.ts's revealPlace: a method's call opens its FB's Methods tab). */
-  reveal(target: {
-    pou: string;
-    network?: string | null;
-    element?: string | null;
-    line?: number | null;
-    body?: string | null;
-  }): void;
+  reveal(target: HaltPlace): void;
 }
 
 export function CallStack({ stack, describe, reveal }: CallStackProps) {
