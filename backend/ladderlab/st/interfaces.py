@@ -52,19 +52,16 @@ def declare_interfaces(checker: Any, decls: list[ast.InterfaceDecl]) -> None:
             if method.name.upper() in info.methods:
                 report("ST-DUPLICATE", f"{decl.name} has two methods called '{method.name}'", method)
                 continue
-            prototype = _prototype(checker, info, method.name, method.name, report)
+            prototype = _prototype(info, method.name, method.name)
+            body = BodyChecker(checker.result, prototype, report)
             if method.return_type is not None:
                 prototype.return_spec = method.return_type
-                prototype.return_type = checker.resolve(
-                    method.return_type, BodyChecker(checker.result, prototype, report)
-                )
+                prototype.return_type = checker.resolve(method.return_type, body)
             for block in method.var_blocks:
                 if block.kind not in _ALLOWED:
                     report("ST-DECL", f"an interface's method declares its parameters only, not {block.kind}", block)
                     continue
-                checker.declare_block(
-                    block, prototype.symbols, BodyChecker(checker.result, prototype, report), prototype
-                )
+                checker.declare_block(block, prototype.symbols, body, prototype)
             if method.body:
                 report(
                     "ST-DECL", f"{decl.name}.{method.name} is a prototype: an interface's method has no body", method
@@ -75,7 +72,7 @@ def declare_interfaces(checker: Any, decls: list[ast.InterfaceDecl]) -> None:
             _declare_property(checker, info, prop, report)
 
 
-def _prototype(checker: Any, info: PouInfo, name: str, key: str, report) -> PouInfo:
+def _prototype(info: PouInfo, name: str, key: str) -> PouInfo:
     """An interface's method (or property accessor ``<P>.GET`` / ``.SET``) as a function ``<I>.<key>`` whose
     ``THIS`` is the interface: what a call through an interface variable passes (ir/lower_project.py)."""
     prototype = PouInfo(f"{info.name}.{key}", "FUNCTION", "st", None)
@@ -110,7 +107,7 @@ def _declare_property(checker: Any, info: PouInfo, prop: ast.PropertyDecl, repor
                 f"in its {accessor.kind}",
                 accessor,
             )
-        prototype = _prototype(checker, info, prop.name, f"{prop.name}.{accessor.kind}", report)
+        prototype = _prototype(info, prop.name, f"{prop.name}.{accessor.kind}")
         ty = checker.resolve(prop.type, BodyChecker(checker.result, prototype, report))
         if accessor.kind == "GET":
             prototype.return_spec, prototype.return_type = prop.type, ty
