@@ -5,7 +5,6 @@
 import type { CallFrame } from "../generated/monitor";
 import type { At } from "./protocol";
 import type { HaltPlace } from "./useRevealHalt";
-import type { HaltPlace } from "./useRevealHalt";
 
 export interface CallStackProps {
   /** The calls, outermost first: the halted live scan's, or those of a step through a past scan. */
