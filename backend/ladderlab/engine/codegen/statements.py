@@ -75,11 +75,14 @@ class Statements:
         #: id() of the statements whose store into a temporary local nothing reads (liveness.py), left out where no
         #: probe is recorded
         self.dead: set[int] = set()
+        #: id() of the stores into a temporary local only the next statement reads (liveness.py, ``_fold``), mapped
+        #: to whether a variable's read may replace it there; where no probe is recorded
+        self.folds: dict[int, bool] = {}
         self.temps = frozenset(scope.temp_locals.values())  # the temporaries' locals
         if scope.temp_locals and not self.debug:
             temps = frozenset(scope.temp_locals)
             live_out = frozenset() if plan.inline else temps  # (the next chunk takes the temporaries over)
-            self.dead = dead_stores(plan.chunks[chunk], temps, live_out, self.module.probes)
+            self.dead, self.folds = dead_stores(plan.chunks[chunk], temps, live_out, self.module.probes)
 
     # ------------------------------------------------------------------ blocks
 
@@ -205,6 +208,8 @@ class Statements:
             ]
         self.x.alias = None
         self.x.forward = {}
+        folds = self.folds if not probes else None
+        folded: tuple[str, str] | None = None  # a temporary's local and the value the statement reads in its place
         for i, s in enumerate(statements):
             if fused:  # the previous statement recorded this probe
                 fused = False
@@ -212,11 +217,20 @@ class Statements:
             if type(s) is not ir.Assign and type(s) is not ir.Probe:
                 self.x.alias = None  # (only an assignment surely leaves ``ll_fb`` as the last FB call set it)
                 self.x.forward = {}
+            if folded is not None:
+                self.x.forward[folded[0]] = folded[1]
+            elif folds and isinstance(s, ir.Assign) and id(s) in folds:
+                folded = self._fold(s, folds[id(s)])
+                if folded is not None:
+                    continue
             if probes:
                 following = statements[i + 1] if i + 1 < len(statements) else None
                 self._following = following if isinstance(following, ir.Probe) else None
             self._fused = False
             self.statement(s)
+            if folded is not None:
+                self.x.forward.pop(folded[0], None)
+                folded = None
             fused = self._fused and isinstance(s, (ir.Assign, ir.FnCall))
             if not isinstance(s, _STRAIGHT) and not _straight(s):
                 self.group = None  # what follows may run without what came before
@@ -295,6 +309,18 @@ class Statements:
         stored = self.x.stored(value, ty)
         self._set(code, stored, probe)
         self._forward(code, stored)
+
+    def _fold(self, s: ir.Assign, once: bool) -> tuple[str, str] | None:
+        """The temporary's local and the value of ``s`` (a store into it that only the next statement reads,
+        liveness.py) when the next statement reads that value in its place (None: ``s`` is emitted): a local or a
+        constant, or a variable read as a plain attribute chain where the next statement is an assignment reading
+        the temporary once (a read of memory may take the place of a read of a local, not of two)."""
+        code, ty = self.x.access(s.target)
+        value = self.x.stored(s.value, ty)
+        constant = value.isdigit() or value in ("True", "False")
+        if value in self.temps or constant or (once and _PLAIN_CHAIN.fullmatch(value)):
+            return code, value
+        return None
 
     def _forward(self, code: str, stored: str) -> None:
         """After ``code = stored``: where no probe is recorded, reads of the variable ``code`` take the temporary
