@@ -68,6 +68,9 @@ class Statements:
         self.network: int | None = None  # the viewed network whose probes are being emitted
         self._following: ir.Probe | None = None  # the probe after the statement being emitted
         self._fused = False  # the last assignment also recorded the probe after it
+        #: the last line of an inlined FB body when it stores an output: (its source, line index, ``ll_fb.Q``, the
+        #: value stored)
+        self._output_line: tuple[Source, int, str, str] | None = None
         self.deferred = deferred  # id() of the probes read after the scan (deferred.py)
         self.reads: list[str] = []  # their ``ll_pr[i] = value`` lines, for the chunk's ll_read_probes part
         self._line: int | None = None
@@ -292,8 +295,26 @@ class Statements:
             self.src.line(f"ll_pr[{self._record(probe)}] = {code} = {value}  # {names.comment_text(probe.element)}")
             self._fused = True
             self._paused(probe)
+        elif self._chained(code, value):
+            return
         else:
             self.src.line(f"{code} = {value}")
+
+    def _chained(self, code: str, value: str) -> bool:
+        """``code = value`` merged into the line before when that line is an inlined FB body's last, storing the
+        output ``value`` reads (``ll_fb.Q = ll_fb.CV >= 5``): ``self.v_Y0 = ll_fb.Q = ll_fb.CV >= 5`` spares the
+        read of the output just stored. Exact: nothing runs between, and both stores are plain attribute stores
+        (the target's order does not matter: neither store can fault or be seen before the other)."""
+        held = self._output_line
+        if held is None or held[0] is not self.src or len(self.src.lines) != held[1] + 1 or held[2] != value:
+            return False
+        if not _PLAIN_CHAIN.fullmatch(code):
+            return False
+        line = self.src.lines[held[1]]
+        indent = line[: len(line) - len(line.lstrip())]
+        self.src.lines[held[1]] = f"{indent}{code} = {value} = {held[3]}"
+        self._output_line = None
+        return True
 
     def store(self, target: ir.Var, value: ir.Expr, probe: ir.Probe | None = None) -> None:
         forward = self.x.forward
@@ -684,6 +705,9 @@ class Statements:
             elif inline is not None and not self.module.program.mockable:  # the body of its execute (inline_fbs.py)
                 for line in inline:
                     self.src.line(line)
+                last = _OUTPUT_STORE.fullmatch(inline[-1])
+                if last is not None and s.en is None and self.probes is None:
+                    self._output_line = (self.src, len(self.src.lines) - 1, last[1], last[2])
             elif inline is not None:  # a unit test may mock the instance: the body for the FB's own class only
                 self.src.line(f"if {fb}.__class__ is {names.std_fb(ty.fb.upper())}:")
                 with self.src.indent():
@@ -822,6 +846,9 @@ _LOCAL_OR_CONSTANT = re.compile(r"(?!ll_s_|ll_fb\b)[A-Za-z_][A-Za-z0-9_]*|\(?-?\
 
 #: An FB instance reached through attributes only (no index, no in-out reference): the same object all along
 _PLAIN_CHAIN = re.compile(r"[A-Za-z_]\w*(?:\.\w+)*")
+#: An inlined FB body's last line when it stores one output at the body's top level (``ll_fb.Q = ll_fb.CV >= 5``;
+#: not ``ll_fb._running = ll_fb.Q = False``)
+_OUTPUT_STORE = re.compile(r"(ll_fb\.[A-Za-z]\w*) = ((?:(?! = ).)+)")
 
 
 def _local_or_constant(code: str) -> bool:
