@@ -58,7 +58,8 @@ def _backward(
 ) -> set[str]:
     """The temporaries live before ``statements`` given those live after; records dead stores in ``dead`` and the
     stores only the next statement reads in ``folds``."""
-    following: tuple[ir.Stmt, set[str]] | None = None  # the next statement that runs where no probe is recorded
+    #: the next statement that runs where no probe is recorded, and the temporaries live after and before it
+    following: tuple[ir.Stmt, set[str], set[str]] | None = None
     for s in reversed(statements):
         kind = type(s)
         if kind is ir.Probe:
@@ -70,9 +71,9 @@ def _backward(
                 if target not in live and _pure(s.value):
                     dead.add(id(s))
                     continue
-                if following is not None and _pure(s.value):
+                if following is not None:
                     once = _fold(target, *following, temps)
-                    if once is not None:
+                    if once is not None and _pure(s.value):
                         folds[id(s)] = once
                 live = (live - {target}) | _reads(s.value, temps)
             else:
@@ -97,24 +98,23 @@ def _backward(
                 live = live | _reads(e, temps)
         else:  # loops, CASE, RETURN, EXIT, jumps: nothing is dropped across them
             return set(temps)
-        following = (s, after)
+        following = (s, after, live)
     return live
 
 
-def _fold(temp: str, s: ir.Stmt, after: set[str], temps: frozenset[str]) -> bool | None:
+def _fold(temp: str, s: ir.Stmt, after: set[str], before: set[str], temps: frozenset[str]) -> bool | None:
     """Whether the store into ``temp`` right before ``s`` may be read in its place by ``s`` (None: not): ``temp``
-    is dead after ``s`` and read only by its expressions, which cannot call anything (an ``Assign`` of a pure value
-    to a variable without index, or an FB call without EN whose inputs are pure) and cannot write what the value
-    reads before reading it. True: ``s`` is an assignment reading ``temp`` exactly once."""
-    if temp in after:
+    is dead after ``s`` (``after``) and read by it (live ``before``) only in expressions that cannot call anything
+    (an ``Assign`` of a pure value to a variable without index, or the inputs of an FB call without EN, all pure)
+    and so cannot write what the value reads before reading it. True: ``s`` is an assignment reading ``temp``
+    exactly once."""
+    if temp in after or temp not in before:
         return None
     if type(s) is ir.Assign:
-        if not _pure(s.value) or any(not isinstance(selector, ir.Member) for selector in s.target.path):
-            return None
-        if temp in _reads(s.target, temps):
+        if any(not isinstance(selector, ir.Member) for selector in s.target.path) or not _pure(s.value):
             return None
         reads = sum(1 for node in expression_nodes(s.value) if isinstance(node, ir.Var) and _temp(node, temps) == temp)
-        return reads == 1 if reads else None
+        return reads == 1
     if type(s) is ir.FbCall and s.en is None and all(_pure(e) for _, e in s.inputs):
         if temp in _reads(s.instance, temps) or any(temp in _reads(v, temps) for _, v in s.outputs):
             return None

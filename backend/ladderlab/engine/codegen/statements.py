@@ -222,9 +222,12 @@ class Statements:
                 self.x.forward = {}
             if folded is not None:
                 self.x.forward[folded[0]] = folded[1]
-            elif folds and isinstance(s, ir.Assign) and id(s) in folds:
-                folded = self._fold(s, folds[id(s)])
-                if folded is not None:
+            if folds and isinstance(s, ir.Assign) and id(s) in folds:
+                fold = self._fold(s, folds[id(s)])  # (its value may read the one before, folded too)
+                if fold is not None:
+                    if folded is not None:
+                        self.x.forward.pop(folded[0], None)
+                    folded = fold
                     continue
             if probes:
                 following = statements[i + 1] if i + 1 < len(statements) else None
@@ -334,12 +337,15 @@ class Statements:
     def _fold(self, s: ir.Assign, once: bool) -> tuple[str, str] | None:
         """The temporary's local and the value of ``s`` (a store into it that only the next statement reads,
         liveness.py) when the next statement reads that value in its place (None: ``s`` is emitted): a local or a
-        constant, or a variable read as a plain attribute chain where the next statement is an assignment reading
-        the temporary once (a read of memory may take the place of a read of a local, not of two)."""
+        constant, or, where the next statement is an assignment reading the temporary once, any value of at most
+        ``FOLDED_PARENTHESES`` parentheses (computing it once there instead of here changes nothing: it is pure)."""
+        if not once and isinstance(s.value, ir.Var) and s.value.path:
+            return None  # (an FB's output, ``ll_fb.Q``: a read of memory)
         code, ty = self.x.access(s.target)
         value = self.x.stored(s.value, ty)
-        constant = value.isdigit() or value in ("True", "False")
-        if value in self.temps or constant or (once and _PLAIN_CHAIN.fullmatch(value)):
+        if value in self.temps or value.isdigit() or value in ("True", "False"):
+            return code, value
+        if once and value.count("(") <= FOLDED_PARENTHESES:
             return code, value
         return None
 
@@ -855,6 +861,8 @@ def _local_or_constant(code: str) -> bool:
     return _LOCAL_OR_CONSTANT.fullmatch(code) is not None
 
 
+#: Parentheses a folded value may have (``_fold``): folds of folds nest, and CPython's parser refuses 200 levels
+FOLDED_PARENTHESES = 8
 #: Branches of one if/elif chain (CPython's compiler recurses once per elif); longer chains go in groups.
 CHAIN_BRANCHES = 64
 #: Consecutive networks sharing one view flag (``view_run``): viewing 20 networks records at most 32.
