@@ -39,7 +39,8 @@ def _contact(draw, ids: _Ids) -> ld.Contact:
 
 
 def _series(draw, ids: _Ids, depth: int) -> list:
-    elements: list = []
+    # now and then a long run of contacts: folds of folds, bounded by FOLDED_PARENTHESES (codegen/statements.py)
+    elements: list = [_contact(draw, ids) for _ in range(10 if depth == 2 and draw(st.integers(0, 4)) == 0 else 0)]
     for _ in range(draw(st.integers(1, 3))):
         if depth > 0 and draw(st.integers(0, 3)) == 0:
             branches = [_series(draw, ids, depth - 1) for _ in range(draw(st.integers(2, 3)))]
