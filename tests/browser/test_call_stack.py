@@ -5,6 +5,8 @@ inspectable). Expected values follow from the texts: x = 7, so Start gets n = 7 
 
 from __future__ import annotations
 
+import re
+
 import pytest
 from playwright.sync_api import expect
 
@@ -87,3 +89,37 @@ def test_halted_in_a_function_called_by_a_method_the_call_stack_and_each_calls_o
     expect(calls).to_have_text(["MAIN, line 1", "MOTOR.START (MAIN.M), line 3"])
     expect(inline_values(page, "Motor.Start body")).to_have_text(["14", "7", "14", "0"])
     page.screenshot(path=str(ARTIFACTS / "call-stack-method.png"))
+
+
+def test_a_step_through_a_past_scan_shows_the_call_stack_of_the_point_reached(page, server):
+    """Issue 23 item 3 with issue 25 item 6: scan 2 of three, stepped through line by line from the history's
+    timeline, halts in Clamp with the same call stack and the same values a live halt there shows (the scan before
+    left x = 7: Start gets n = 7 and passes tmp = 14); the method's call opens it in the Methods tab with its own."""
+    store_project(server, PROJECT)
+    page.goto(server)
+    open_pou(page, "stack", "Main")
+    go_online(page, run=False)
+    scan, cycle = page.get_by_test_id("scan-count"), page.get_by_role("button", name="Single cycle")
+    for number in (1, 2, 3):
+        cycle.click()
+        scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
+    page.get_by_role("group", name="Scan history").get_by_role("slider", name="Scan").fill("2")
+    page.get_by_role("status", name="History view").filter(has_text="Viewing scan 2 (history)").wait_for()
+
+    stepping = page.get_by_role("group", name="Step through the scan")
+    point = stepping.get_by_label("Step point")
+    stepping.get_by_role("button", name="Step into this scan").click()
+    point.filter(has_text="Scan 2, halted before MAIN, line 1").wait_for()
+    calls = stepping.get_by_role("navigation", name="Call stack").locator("li")
+    expect(calls).to_have_text(["MAIN, line 1"])
+    for text in ("MOTOR.START, line 1", "MOTOR.START, line 2", "CLAMP, line 1"):
+        stepping.get_by_role("button", name="Next step").click()
+        point.filter(has_text=f"Scan 2, halted before {text}").wait_for()
+    expect(calls).to_have_text(["MAIN, line 1", "MOTOR.START (MAIN.M), line 2", "CLAMP, line 1"])
+    expect(inline_values(page, "Clamp body")).to_have_text(["7", "14", "7", "10", "7", "10", "0", "7"])
+    page.screenshot(path=str(ARTIFACTS / "call-stack-history-step.png"))
+
+    calls.get_by_role("button", name="MOTOR.START (MAIN.M), line 2").click()
+    expect(page.get_by_role("tab", name="Methods")).to_have_attribute("aria-selected", "true")
+    expect(inline_values(page, "Motor.Start body")).to_have_text(["14", "7", "14", "0"])
+    assert scan.inner_text() == "2"  # the scan shown; the live simulation stays at 3

@@ -39,7 +39,8 @@ def _contact(draw, ids: _Ids) -> ld.Contact:
 
 
 def _series(draw, ids: _Ids, depth: int) -> list:
-    elements: list = []
+    # now and then a long run of contacts: folds of folds, bounded by FOLDED_PARENTHESES (codegen/statements.py)
+    elements: list = [_contact(draw, ids) for _ in range(10 if depth == 2 and draw(st.integers(0, 4)) == 0 else 0)]
     for _ in range(draw(st.integers(1, 3))):
         if depth > 0 and draw(st.integers(0, 3)) == 0:
             branches = [_series(draw, ids, depth - 1) for _ in range(draw(st.integers(2, 3)))]
@@ -133,7 +134,8 @@ def test_power_flow_temporaries_are_locals_of_the_fast_code_only():
     debug = build_project(project, "debug").compiled
     assert fast is not None and debug is not None
     body = fast.source[fast.source.index("def ll_x_MAIN") :]
-    assert "ll_t___P_1 = (ll_t___P and (not self.v_B1))" in body and "self.v___P" not in body
+    # (the series' power flow is read in its place: only the coil uses it, liveness.py's folds)
+    assert "self.v_B2 = (self.v_B0 and (not self.v_B1))" in body and "self.v___P" not in body
     assert "self.v___P_1 = (self.v___P and (not self.v_B1))" in debug.source
 
 
@@ -210,3 +212,69 @@ def test_the_fast_code_shapes_keep_iec_values():
         assert sim.read("Main.B2") is False and sim.read("Main.B3") is False, variant  # reset, then read
         assert sim.read("Main.T1.ET") == 30 and sim.read("Main.T1.Q") is True and sim.read("Main.B4") is True, variant
         assert sim.read("Main.X") == 6, variant
+
+
+def test_a_long_series_folds_into_bounded_expressions():
+    """Folds of folds nest one parenthesis each (``FOLDED_PARENTHESES`` stops them): a series of 60 contacts
+    compiles and conducts only while every contact does."""
+    contacts = [ld.Contact(id=f"c{n}", var=BOOLS[n % 3]) for n in range(60)]
+    network = ld.LdNetwork(id="n1", elements=[*contacts, ld.Coil(id="o", var="B5")])
+    pou = Pou(name="Main", kind="program", language="ld", declarations=DECLARATIONS, body=ld.LdBody(networks=[network]))
+    sim = build_project(Project(name="p", pous=[pou]), "fast").simulation()
+    for values in [(True, True, False), (True, True, True)]:
+        for name, value in zip(BOOLS, values, strict=False):
+            sim.write(f"Main.{name}", value)
+        sim.cycle(1)
+        assert sim.read("Main.B5") is all(values)
+
+
+def test_folded_temporaries_and_a_chained_counter_output_keep_iec_values():
+    """The shapes of liveness.py's folds and of a coil chained to an inlined FB's last output store (docs/runtime.md,
+    "Folded temporaries"), in every variant, against IEC values: a series ``A AND NOT B``, and a CTU (PV 2) whose Q
+    drives a coil: Q := CV >= PV after the second rising edge of CU (SFB-13), and CV stays at the INT maximum on a
+    further edge (it counts only while CV < 32767)."""
+    series = ld.LdNetwork(
+        id="n1",
+        elements=[ld.Contact(id="a", var="B0"), ld.Contact(id="b", var="B1", mode="nc"), ld.Coil(id="c", var="B2")],
+    )
+    counter = ld.LdNetwork(
+        id="n2",
+        elements=[
+            ld.Contact(id="d", var="B3"),
+            ld.Box(id="k", call="CTU", instance="K1", inputs={"PV": "2"}),
+            ld.Coil(id="e", var="B4"),
+        ],
+    )
+    pou = Pou(
+        name="Main",
+        kind="program",
+        language="ld",
+        declarations=DECLARATIONS,
+        body=ld.LdBody(networks=[series, counter]),
+    )
+    project = Project(name="p", pous=[pou], tasks=[Task(name="main", interval="T#10ms", programs=["Main"])])
+    for variant in ("fast", "monitor", "debug"):
+        build = build_project(project, variant)
+        assert build.compiled is not None, [d.message for d in build.diagnostics]
+        if variant == "fast":
+            source = build.compiled.source
+            assert "self.v_B2 = (self.v_B0 and (not self.v_B1))" in source
+            assert "self.v_B4 = ll_fb.Q = ll_fb.CV >= 2" in source
+        sim = build.simulation()
+        seen = []
+        for b0, b1, b3 in [(True, False, True), (True, True, False), (False, False, True), (True, False, True)]:
+            for name, value in (("B0", b0), ("B1", b1), ("B3", b3)):
+                sim.write(f"Main.{name}", value)
+            sim.cycle(1)
+            seen.append((sim.read("Main.B2"), sim.read("Main.K1.CV"), sim.read("Main.K1.Q"), sim.read("Main.B4")))
+        assert seen == [
+            (True, 1, False, False),
+            (False, 1, False, False),
+            (False, 2, True, True),
+            (True, 2, True, True),
+        ]
+        sim.write("Main.K1.CV", 32767)
+        for b3 in (False, True):
+            sim.write("Main.B3", b3)
+            sim.cycle(1)
+        assert sim.read("Main.K1.CV") == 32767 and sim.read("Main.B4") is True, variant

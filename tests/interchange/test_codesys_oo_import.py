@@ -191,7 +191,8 @@ def test_a_property_of_a_codesys_interface_is_reported_not_dropped_silently():
         (
             "PLCOPEN-UNSUPPORTED",
             "warning",
-            "the PROPERTY Level of INTERFACE IBase was left out: LadderLab's INTERFACEs declare methods only",
+            "the PROPERTY Level of INTERFACE IBase was left out: LadderLab does not read CODESYS's interface "
+            "properties yet (declare it in the INTERFACE's ST text)",
         )
     ]
 

@@ -96,3 +96,46 @@ def test_the_halted_status_carries_the_call_stack_and_a_write_updates_it(
         ws.send_json({"type": "continue"})
         status, _ = recv_until(ws, of_type("status", state="stopped"))
         assert status["stack"] == []
+
+
+def test_a_step_through_a_past_scan_carries_the_call_stack_of_the_point_reached(
+    client: TestClient, workspace: Workspace, registry: SimulationRegistry
+) -> None:
+    """Issue 23 item 3 with issue 25 item 6: stepping line by line through scan 2 (replayed from the state scan 1
+    left: x = 5) halts in Inc twice, each time with the call stack the live debugger shows. In the method's call, n
+    (2) went to Inc's in-out and became 3; in Main's own call, c refers to x and became 6."""
+    project, diagnostics = source_to_project(TEXT, "stack")
+    assert project is not None and diagnostics == []
+    workspace.create(project)
+    sim_id = client.post("/api/projects/stack/simulations").json()["id"]
+    for _ in range(3):
+        client.post(f"/api/simulations/{sim_id}/cycle")
+    client.post(f"/api/simulations/{sim_id}/seek", json={"scan": 2})
+    stacks_in_inc = []
+    for _ in range(20):  # a bounded walk: the scan has fewer points than this
+        stepping = client.post(f"/api/simulations/{sim_id}/history/step", json={"granularity": "statement"}).json()[
+            "history"
+        ]["stepping"]
+        if stepping["at"] is None:
+            assert stepping["stack"] == []
+            break
+        innermost = stepping["stack"][-1]["at"]
+        assert (innermost["pou"], innermost["line"]) == (stepping["at"]["pou"], stepping["at"]["line"])
+        if (stepping["at"]["pou"], stepping["at"]["line"]) == ("INC", line("Inc := c;")):
+            stacks_in_inc.append(stepping["stack"])
+    assert [[where(f) for f in stack] for stack in stacks_in_inc] == [
+        [
+            at("MAIN", "MAIN", "y := m.Start(n := 2);"),
+            at("MOTOR.START", "MAIN.M", "Start := Inc(n) * 10;"),
+            at("INC", None, "Inc := c;"),
+        ],
+        [at("MAIN", "MAIN", "Inc(x);"), at("INC", None, "Inc := c;")],
+    ]
+    method, inc = stacks_in_inc[0][1], stacks_in_inc[0][2]
+    assert method["variables"] == [
+        variable("N", "input", "INT", 3),
+        variable("R", "var", "REAL", 1.5),
+        variable("START", "result", "INT", 0),
+    ]
+    assert inc["variables"][0] == variable("C", "in_out", "INT", 3)
+    assert stacks_in_inc[1][1]["variables"][0] == variable("C", "in_out", "INT", 6)

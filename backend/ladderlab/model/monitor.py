@@ -336,10 +336,39 @@ class DisplayType(Model):
     names: dict[str, str] | None = Field(default=None, description="An enumeration's value names by value.")
 
 
+class StackVariable(Model):
+    """A variable of a FUNCTION's or METHOD's call in a halted scan: it lives for that call only, so no path
+    reaches it. ``value`` as in ``values.changed`` (shown as ``type`` says); none, with ``reason``, when it
+    cannot be read exactly."""
+
+    model_config = ConfigDict(ser_json_inf_nan="strings")
+
+    name: str = Field(description="As declared; the result is named like the function, method or property.")
+    kind: Literal["input", "output", "in_out", "var", "temp", "result"]
+    type: DisplayType
+    value: Value = None
+    reason: str | None = Field(default=None, description="Why no value is shown.")
+
+
+class CallFrame(Model):
+    """One POU call a halted scan stands in (the call stack, outermost first; ON-03): ``at`` is where it stands -
+    the halt point in the last one, the call it makes in the others - in its POU (a method as ``<FB>.<M>``) and
+    instance (a method's too); ``variables`` are a FUNCTION's or METHOD's own."""
+
+    kind: Literal["program", "function_block", "function", "method"]
+    at: At
+    variables: list[StackVariable] = Field(
+        default_factory=list, description="A FUNCTION's or METHOD's inputs, outputs, in-outs, VAR, VAR_TEMP, result."
+    )
+
+
 class HistoryStepPoint(Model):
     """Where a step through the scan shown (``POST .../history/step``) stands."""
 
     at: At | None = Field(default=None, description="The network or line it halted before; null: the scan ended.")
+    stack: list[CallFrame] = Field(
+        default_factory=list, description="The POU calls the step stands in, outermost first (as a halt's ``stack``)."
+    )
 
 
 class HistoryRange(Model):
@@ -390,32 +419,6 @@ class Values(Model):
         default=None,
         description="The scan history; while ``viewing`` is set, scan, time_ms, changed, power, forced and "
         "injected are those of that past scan.",
-    )
-
-
-class StackVariable(Model):
-    """A variable of a FUNCTION's or METHOD's call in a halted scan: it lives for that call only, so no path
-    reaches it. ``value`` as in ``values.changed`` (shown as ``type`` says); none, with ``reason``, when it
-    cannot be read exactly."""
-
-    model_config = ConfigDict(ser_json_inf_nan="strings")
-
-    name: str = Field(description="As declared; the result is named like the function, method or property.")
-    kind: Literal["input", "output", "in_out", "var", "temp", "result"]
-    type: DisplayType
-    value: Value = None
-    reason: str | None = Field(default=None, description="Why no value is shown.")
-
-
-class CallFrame(Model):
-    """One POU call a halted scan stands in (the call stack, outermost first; ON-03): ``at`` is where it stands -
-    the halt point in the last one, the call it makes in the others - in its POU (a method as ``<FB>.<M>``) and
-    instance (a method's too); ``variables`` are a FUNCTION's or METHOD's own."""
-
-    kind: Literal["program", "function_block", "function", "method"]
-    at: At
-    variables: list[StackVariable] = Field(
-        default_factory=list, description="A FUNCTION's or METHOD's inputs, outputs, in-outs, VAR, VAR_TEMP, result."
     )
 
 

@@ -114,6 +114,16 @@ def at_origin(origin: ir.Origin | None, pou: str | None, instance: str | None) -
     return _at(origin, instance, origin.element)
 
 
+def read_call_stack(sim: Simulation) -> list[CallFrame]:
+    """The call stack of ``sim``'s halted scan (the live one, or a step through a past scan). A bug here must not
+    end the engine thread: the halt is then shown without its stack, and the log says why."""
+    try:
+        return [call_frame(frame) for frame in sim.call_stack()]
+    except Exception:
+        log.exception("reading the call stack failed")
+        return []
+
+
 def call_frame(frame: engine_stack.CallFrame) -> CallFrame:
     """A call of the halted scan as the status message carries it: its values shown as every online value is."""
     return CallFrame(
@@ -353,11 +363,7 @@ class SimRunner:
             return []
         if not read:
             return self._status[2]
-        try:
-            return [call_frame(frame) for frame in self.sim.call_stack()]
-        except Exception:  # a bug here must not end the engine thread: the halt is shown, without its stack
-            log.exception("reading the call stack failed")
-            return []
+        return read_call_stack(self.sim)
 
     def _fit_variant(self) -> None:
         """Debug code only while debugging: a breakpoint is set or a scan is halted; else the monitor code."""
@@ -713,8 +719,9 @@ class SimRunner:
         if not self._steps or self._view is None:
             return None
         halted = self._view.halted
-        at = at_halt(halted) if halted is not None else None
-        return {"at": at.model_dump() if at is not None else None}
+        if halted is None:
+            return {"at": None, "stack": []}
+        return {"at": at_halt(halted).model_dump(), "stack": [f.model_dump() for f in read_call_stack(self._view)]}
 
     def open_recording(self, inputs: list[dict[str, Any]], scans: int) -> dict[str, Any] | None:
         """Run a recording's ``scans`` at once, each one's recorded ``inputs`` (``AppliedInput.to_json()`` lines)

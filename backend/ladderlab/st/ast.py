@@ -570,12 +570,13 @@ class ActionDecl:
 
 @dataclass(slots=True)
 class InterfaceDecl:
-    """``INTERFACE name [EXTENDS i, ...] METHOD prototypes END_INTERFACE``."""
+    """``INTERFACE name [EXTENDS i, ...] METHOD and PROPERTY prototypes END_INTERFACE``."""
 
     name: str
     extends: list[str]
     methods: list[MethodDecl]
     span: Span = _span()
+    properties: list[PropertyDecl] = field(default_factory=list)  # PROPERTY prototypes: accessors without body
 
 
 @dataclass(slots=True)

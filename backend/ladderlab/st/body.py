@@ -241,12 +241,17 @@ class BodyChecker:
             return ERROR
         if isinstance(base, t.FbType):
             return self._fb_member(node, base)
-        if isinstance(base, t.InterfaceType):  # only its methods are called through it (st/interfaces.py)
+        if isinstance(base, t.InterfaceType):  # its methods are called, its properties read and written
+            found = check_property(self, node, base.info)
+            if found is not None:
+                return found
             if base.info.find_method(node.name) is not None:
                 self.report("ST-NOT-CALLABLE", f"'{node.name}' is a method of {base.name}: call it (add the ( ))", node)
                 return ERROR
-            names = [m.method.name for i in base.info.all_interfaces() for m in i.methods.values()]
-            message = f"{base.name} has no method '{node.name}'" + did_you_mean(node.name, names)
+            members = [m.method for i in base.info.all_interfaces() for m in i.methods.values()]
+            what = "method or property" if any(m.key != m.name.upper() for m in members) else "method"
+            names = list(dict.fromkeys(m.name for m in members))
+            message = f"{base.name} has no {what} '{node.name}'" + did_you_mean(node.name, names)
             self.report("ST-UNKNOWN-MEMBER", message, node)
             return ERROR
         part = partial_access(node.name)

@@ -14,6 +14,7 @@ from ..iec.spelling import did_you_mean
 from . import ast
 from . import types as t
 from .inheritance import signature_difference
+from .methods import property_of
 from .symbols import THIS, MethodInfo, PouInfo, Symbol
 
 _ALLOWED = {"VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT"}
@@ -48,30 +49,71 @@ def declare_interfaces(checker: Any, decls: list[ast.InterfaceDecl]) -> None:
             else:
                 info.interfaces.append(base)
         for method in decl.methods:
-            upper = method.name.upper()
-            if upper in info.methods:
+            if method.name.upper() in info.methods:
                 report("ST-DUPLICATE", f"{decl.name} has two methods called '{method.name}'", method)
                 continue
-            prototype = PouInfo(f"{decl.name}.{method.name}", "FUNCTION", "st", None)
-            prototype.method = MethodInfo(info, method.name, abstract=True)
-            this = t.InterfaceType(info.name, info)
-            prototype.symbols[THIS] = Symbol(THIS, "VAR_IN_OUT", this, ast.NamedType(info.name), pou=prototype.name)
-            checker_ = BodyChecker(checker.result, prototype, report)
+            prototype = _prototype(info, method.name, method.name)
+            body = BodyChecker(checker.result, prototype, report)
             if method.return_type is not None:
                 prototype.return_spec = method.return_type
-                prototype.return_type = checker.resolve(method.return_type, checker_)
+                prototype.return_type = checker.resolve(method.return_type, body)
             for block in method.var_blocks:
                 if block.kind not in _ALLOWED:
                     report("ST-DECL", f"an interface's method declares its parameters only, not {block.kind}", block)
                     continue
-                checker.declare_block(block, prototype.symbols, checker_, prototype)
+                checker.declare_block(block, prototype.symbols, body, prototype)
             if method.body:
                 report(
                     "ST-DECL", f"{decl.name}.{method.name} is a prototype: an interface's method has no body", method
                 )
             if set(method.modifiers) - {"PUBLIC"}:
                 report("ST-DECL", "an interface's methods are PUBLIC: they take no other modifier", method)
-            info.methods[upper] = prototype
+        for prop in decl.properties:
+            _declare_property(checker, info, prop, report)
+
+
+def _prototype(info: PouInfo, name: str, key: str) -> PouInfo:
+    """An interface's method (or property accessor ``<P>.GET`` / ``.SET``) as a function ``<I>.<key>`` whose
+    ``THIS`` is the interface: what a call through an interface variable passes (ir/lower_project.py)."""
+    prototype = PouInfo(f"{info.name}.{key}", "FUNCTION", "st", None)
+    prototype.method = MethodInfo(info, name, abstract=True, key=key.upper())
+    this = t.InterfaceType(info.name, info)
+    prototype.symbols[THIS] = Symbol(THIS, "VAR_IN_OUT", this, ast.NamedType(info.name), pou=prototype.name)
+    info.methods[key.upper()] = prototype
+    return prototype
+
+
+def _declare_property(checker: Any, info: PouInfo, prop: ast.PropertyDecl, report) -> None:
+    """A PROPERTY prototype (CODESYS): its accessors as prototypes ``<I>.<P>.GET`` (returning the property's type)
+    and ``<I>.<P>.SET`` (whose input is the property's name), as an FB's property (st/methods.py), without bodies."""
+    from .body import BodyChecker
+
+    upper = prop.name.upper()
+    if upper in info.methods or f"{upper}.GET" in info.methods or f"{upper}.SET" in info.methods:
+        report("ST-DUPLICATE", f"{info.name} has two methods or properties called '{prop.name}'", prop)
+        return
+    if set(prop.modifiers) - {"PUBLIC"}:
+        report("ST-DECL", "an interface's properties are PUBLIC: they take no other modifier", prop)
+    if not prop.accessors:
+        report("ST-DECL", f"the property {info.name}.{prop.name} declares neither GET nor SET", prop)
+    for accessor in prop.accessors:
+        if f"{upper}.{accessor.kind}" in info.methods:
+            report("ST-DUPLICATE", f"the property {info.name}.{prop.name} has two {accessor.kind}s", accessor)
+            continue
+        if accessor.var_blocks or accessor.body:
+            report(
+                "ST-DECL",
+                f"{info.name}.{prop.name} is a prototype: an interface's property has no variables or statements "
+                f"in its {accessor.kind}",
+                accessor,
+            )
+        prototype = _prototype(info, prop.name, f"{prop.name}.{accessor.kind}")
+        ty = checker.resolve(prop.type, BodyChecker(checker.result, prototype, report))
+        if accessor.kind == "GET":
+            prototype.return_spec, prototype.return_type = prop.type, ty
+        else:
+            value = Symbol(prop.name, "VAR_INPUT", ty, prop.type, pou=prototype.name)
+            prototype.symbols[upper] = value
 
 
 def link_implements(checker: Any, project: Any) -> None:
@@ -99,12 +141,18 @@ def link_implements(checker: Any, project: Any) -> None:
 
 def check_implementations(checker: Any, blocks: list[PouInfo]) -> None:
     """Every method of every interface a function block implements (directly or through its base) is one of its
-    methods, its own or inherited, with the same parameters and result."""
+    methods, its own or inherited, with the same parameters and result; every PROPERTY one of its properties with
+    the same type and (at least) the accessors the interface declares."""
     for fb in blocks:
         report = checker._reporter(f"{fb.name}/declarations", fb.name)
         for interface in fb.all_interfaces():
+            accessors = [p for p in interface.methods.values() if p.method.key != p.method.name.upper()]
+            for name in dict.fromkeys(p.method.name for p in accessors):  # each property once
+                _check_property(fb, interface, name, report)
             for prototype in interface.methods.values():
                 name = prototype.method.name
+                if prototype.method.key != name.upper():
+                    continue
                 found = fb.find_method(prototype.method.key)
                 if found is None:
                     if not fb.abstract:
@@ -115,6 +163,24 @@ def check_implementations(checker: Any, blocks: list[PouInfo]) -> None:
                     report("ST-DECL", f"{found.name} implements {prototype.name} but {difference}", None)
                 elif found.method.access != "PUBLIC":
                     report("ST-DECL", f"{found.name} implements {prototype.name}, so it must be PUBLIC", None)
+
+
+def _check_property(fb: PouInfo, interface: PouInfo, name: str, report) -> None:
+    """The PROPERTY ``name`` of ``interface`` (checked once, whichever accessors it declares) in ``fb``."""
+    wanted, found = property_of(interface, name), property_of(fb, name)
+    if found is None:
+        if not fb.abstract:
+            report("ST-DECL", f"{fb.name} implements {interface.name} but has no property {name}", None)
+        return
+    what = f"the property {fb.name}.{found.name} implements {interface.name}.{wanted.name}"
+    pairs = (("GET", wanted.getter, found.getter), ("SET", wanted.setter, found.setter))
+    missing = [kind for kind, declared, implemented in pairs if declared is not None and implemented is None]
+    if not t.same(found.type, wanted.type):
+        report("ST-DECL", f"{what} but its type is {found.type}, not {wanted.type}", None)
+    elif missing:
+        report("ST-DECL", f"{what} but has no {' or '.join(missing)}, which the interface declares", None)
+    elif (found.getter or found.setter).method.access != "PUBLIC":
+        report("ST-DECL", f"{what}, so it must be PUBLIC", None)
 
 
 def check_attempt(checker: Any, stmt: ast.Assign) -> None:

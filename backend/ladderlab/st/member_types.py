@@ -47,7 +47,7 @@ class ProjectTypes:
         for item in parsed.ast.items if parsed.ast is not None else []:
             if isinstance(item, ast.InterfaceDecl):
                 types.interface_bases[item.name.upper()] = [e.upper() for e in item.extends]
-                types.members[item.name.upper()] = {m.name.upper() for m in item.methods}
+                types.members[item.name.upper()] = {m.name.upper() for m in [*item.methods, *item.properties]}
             elif isinstance(item, ast.TypeBlock):
                 for decl in item.decls:
                     if isinstance(decl.type, ast.StructType):

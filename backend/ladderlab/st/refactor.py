@@ -125,7 +125,8 @@ def rename_member(project: Project, fb: str, old: str, new: str) -> tuple[Projec
     declaration and that of every FB and INTERFACE sharing it (``ProjectTypes.group``: overrides, the base it
     overrides, interface methods and their implementations), and every use through a variable typed as one of them
     (``inst.Old(...)``, ``a.b.Old``, ``arr[i].Old``, ``r^.Old``, ``itf.Old()``, LD/FBD boxes ``inst.Old``) or inside
-    one of those FBs (``THIS^.Old``, ``SUPER^.Old``, ``Old(...)``); and what changed. A path through a property or a
+    one of those FBs (``THIS^.Old``, ``SUPER^.Old``, ``Old(...)``, a property's bare ``Old``: the value its GET
+    assigns and its SET reads, or a use in the FB's code); and what changed. A path through a property or a
     function's result is not followed: the check then reports the call it no longer finds."""
     data = project.model_dump(by_alias=True)
     types = ProjectTypes.of(data)
@@ -135,11 +136,15 @@ def rename_member(project: Project, fb: str, old: str, new: str) -> tuple[Projec
     data["types"] = _interface_methods(data["types"], group, old, new, changes)
     for pou in data["pous"]:
         name, own = pou["name"], pou["name"].upper() in group
+        # a property of the group's FBs is also used by its bare name in their code (where no variable hides it)
+        is_property = own and any(p["name"].upper() == old.upper() for p in pou.get("properties") or [])
         scope = globals_ | types.fields.get(name.upper(), {}) | declared_types(pou["declarations"])
-        pou["body"] = _body(pou["body"], MemberUses(old, scope, group, types, own), new, changes, name)
+        pou["body"] = _body(pou["body"], MemberUses(old, scope, group, types, own, is_property), new, changes, name)
         for member in pou.get("methods") or []:  # (listed under their names as they were)
+            local = declared_types(member["declarations"])
             inside = own and member["name"].upper() == old.upper()
-            uses = MemberUses(old, scope | declared_types(member["declarations"]), group, types, own, inside)
+            bare = inside or (is_property and old.upper() not in local)
+            uses = MemberUses(old, scope | local, group, types, own, bare)
             where = Reference(pou=name, part="body", member=member["name"])
             if inside:
                 changes.append(
@@ -150,7 +155,8 @@ def rename_member(project: Project, fb: str, old: str, new: str) -> tuple[Projec
         for prop in pou.get("properties") or []:
             accessors = [(kind.upper(), prop[kind]) for kind in ("get", "set") if prop.get(kind) is not None]
             for kind, accessor in accessors:
-                uses = MemberUses(old, scope | declared_types(accessor["declarations"]), group, types, own)
+                local = declared_types(accessor["declarations"])
+                uses = MemberUses(old, scope | local, group, types, own, is_property and old.upper() not in local)
                 where = Reference(pou=name, part="body", member=f"{prop['name']}.{kind}")
                 accessor["body"] = _text(accessor["body"], uses, new, changes, where)
             if own and prop["name"].upper() == old.upper():
@@ -164,13 +170,13 @@ def rename_member(project: Project, fb: str, old: str, new: str) -> tuple[Projec
 
 
 def _interface_methods(types: str, group: frozenset[str], old: str, new: str, found: list[Reference]) -> str:
-    """The types text with the METHOD ``old`` of every INTERFACE in ``group`` called ``new``."""
+    """The types text with the METHOD or PROPERTY ``old`` of every INTERFACE in ``group`` called ``new``."""
     parsed = parse_source(types)
     lines = types.split("\n")
     for item in parsed.ast.items if parsed.ast is not None else []:
         if not isinstance(item, ast.InterfaceDecl) or item.name.upper() not in group:
             continue
-        for method in item.methods:
+        for method in [*item.methods, *item.properties]:
             line = method.span.line - 1
             spans = name_spans(lines[line], old) if method.name.upper() == old.upper() else []
             if spans:
@@ -234,11 +240,12 @@ def member_name_problem(project: Project, fb: str, old: str, new: str) -> str | 
 
 
 def _interface_members(project: Project, name: str) -> list[str]:
-    """The methods of INTERFACE ``name`` of the project's types text (none when there is no such INTERFACE)."""
+    """The methods and properties of INTERFACE ``name`` of the project's types text (none when there is no such
+    INTERFACE)."""
     parsed = parse_source(project.types)
     items = parsed.ast.items if parsed.ast is not None else []
-    found = (i for i in items if isinstance(i, ast.InterfaceDecl) and i.name.upper() == name.upper())
-    return [m.name for m in next(found, ast.InterfaceDecl(name, [], [])).methods]
+    found = next((i for i in items if isinstance(i, ast.InterfaceDecl) and i.name.upper() == name.upper()), None)
+    return [m.name for m in [*found.methods, *found.properties]] if found is not None else []
 
 
 def duplicate_pou(project: Project, name: str, copy: str) -> Project:

@@ -225,7 +225,8 @@ class AstBuilder(Transformer):
 
     def interface_decl(self, c):
         methods = [x for x in c if isinstance(x, ast.MethodDecl)]
-        return ast.InterfaceDecl(str(c[1]), c[2] or [], methods, span_of(c))
+        properties = [x for x in c if isinstance(x, ast.PropertyDecl)]
+        return ast.InterfaceDecl(str(c[1]), c[2] or [], methods, span_of(c), properties)
 
     def fb_extends_interfaces(self, c):
         return [str(x) for x in c[1:]]

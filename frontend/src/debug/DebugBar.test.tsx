@@ -68,6 +68,24 @@ describe("DebugBar (issue 9: stepping a halted scan)", () => {
     });
   });
 
+  it("reveals a halt point once: not again when a status repeats it (a write while halted), again when it moves", () => {
+    onlineStore.setState({ phase: "online", send: vi.fn(() => true) });
+    const reveal = vi.fn();
+    render(<DebugBar networksOf={networksOf} reveal={reveal} />);
+    halt({ pou: "Calc", instance: "MAIN.C1", line: 4 });
+    halt({ pou: "Calc", instance: "MAIN.C1", line: 4 }); // the same point, a new message: the call opened stays
+    expect(reveal).toHaveBeenCalledTimes(1);
+    halt({ pou: "Calc", instance: "MAIN.C1", line: 5 });
+    expect(reveal).toHaveBeenCalledTimes(2);
+    expect(reveal).toHaveBeenLastCalledWith({
+      pou: "Calc",
+      network: undefined,
+      element: undefined,
+      line: 5,
+      body: null,
+    });
+  });
+
   it("lists the call stack outermost first; choosing a call opens its POU where it stands", () => {
     onlineStore.setState({ phase: "online", send: vi.fn(() => true) });
     const reveal = vi.fn();

@@ -2,11 +2,12 @@
 // Continue, Step over, Step into, Step out, Step network, Step cycle, Stop (the keys of the keymap,
 // CODESYS's, handled by app/useAppKeys.ts). Breakpoints are set in the editors and listed in the
 // Breakpoints panel.
-import { useEffect } from "react";
+import type { At } from "../online/protocol";
 import { onlineStore, useOnline } from "../online/store";
 import { keysOf } from "../keys/keymap";
 import { describeHalt } from "./breakpoints";
-import { CallStack } from "./CallStack";
+import { CallStack } from "../online/CallStack";
+import { useRevealHalt } from "../online/useRevealHalt";
 import type { Place } from "./reveal";
 import { useDebug } from "./store";
 
@@ -24,31 +25,21 @@ export function DebugBar({ networksOf, elementText, reveal }: DebugBarProps) {
   const state = useOnline((s) => s.monitor.state);
   const at = useOnline((s) => s.monitor.at);
   const debug = useDebug((s) => s);
+  const stack = useOnline((s) => s.monitor.stack);
   const halted = state === "halted" && at ? at : null;
+  const describe = (where: At) =>
+    describeHalt(
+      where,
+      networksOf(where.pou, where.body),
+      where.element && !where.body ? elementText?.(where.pou, where.element) : null,
+    );
 
-  // A new halt shows its location in the editor.
-  useEffect(() => {
-    if (halted)
-      reveal({
-        pou: halted.pou,
-        network: halted.network,
-        element: halted.element,
-        line: halted.line,
-        body: halted.body ?? null,
-      });
-  }, [halted, reveal]);
+  useRevealHalt(halted, reveal); // a new halt shows its location in the editor
 
   if (!halted) return null;
   return (
     <div className="debug-bar debug-halted" role="region" aria-label="Debugging">
-      <span role="status">
-        Halted at{" "}
-        {describeHalt(
-          halted,
-          networksOf(halted.pou, halted.body),
-          halted.element && !halted.body ? elementText?.(halted.pou, halted.element) : null,
-        )}
-      </span>
+      <span role="status">Halted at {describe(halted)}</span>
       <button type="button" onClick={debug.resume} title={`Continue (${keysOf("app", "run")})`}>
         Continue
       </button>
@@ -81,7 +72,7 @@ export function DebugBar({ networksOf, elementText, reveal }: DebugBarProps) {
       >
         Stop
       </button>
-      <CallStack networksOf={networksOf} elementText={elementText} reveal={reveal} />
+      <CallStack stack={stack} describe={describe} reveal={reveal} />
     </div>
   );
 }

@@ -1089,6 +1089,25 @@ export interface components {
       type: "box";
     };
     /**
+     * CallFrame
+     * @description One POU call a halted scan stands in (the call stack, outermost first; ON-03): ``at`` is where it stands -
+     *     the halt point in the last one, the call it makes in the others - in its POU (a method as ``<FB>.<M>``) and
+     *     instance (a method's too); ``variables`` are a FUNCTION's or METHOD's own.
+     */
+    CallFrame: {
+      at: components["schemas"]["At"];
+      /**
+       * Kind
+       * @enum {string}
+       */
+      kind: "program" | "function_block" | "function" | "method";
+      /**
+       * Variables
+       * @description A FUNCTION's or METHOD's inputs, outputs, in-outs, VAR, VAR_TEMP, result.
+       */
+      variables?: components["schemas"]["StackVariable"][];
+    };
+    /**
      * CfcBody
      * @description A CFC POU's body: ``networks`` holds exactly one network, the chart.
      */
@@ -1333,6 +1352,24 @@ export interface components {
        * @enum {string}
        */
       severity?: "error" | "warning" | "info";
+    };
+    /**
+     * DisplayType
+     * @description What a client needs to show a value as IEC text: TIME and dates arrive as ms, enumerations as ints.
+     */
+    DisplayType: {
+      /**
+       * Name
+       * @description The IEC elementary type (TIME, DATE, WORD...; a subrange's base type), or the name of the enumeration, structure or FB type.
+       */
+      name: string;
+      /**
+       * Names
+       * @description An enumeration's value names by value.
+       */
+      names?: {
+        [key: string]: string;
+      } | null;
     };
     /**
      * DuplicateRequest
@@ -1683,6 +1720,11 @@ export interface components {
     HistoryStepPoint: {
       /** @description The network or line it halted before; null: the scan ended. */
       at?: components["schemas"]["At"] | null;
+      /**
+       * Stack
+       * @description The POU calls the step stands in, outermost first (as a halt's ``stack``).
+       */
+      stack?: components["schemas"]["CallFrame"][];
     };
     /**
      * ImportReport
@@ -3422,6 +3464,40 @@ export interface components {
       /** Text */
       text: string;
     };
+    /**
+     * StackVariable
+     * @description A variable of a FUNCTION's or METHOD's call in a halted scan: it lives for that call only, so no path
+     *     reaches it. ``value`` as in ``values.changed`` (shown as ``type`` says); none, with ``reason``, when it
+     *     cannot be read exactly.
+     */
+    StackVariable: {
+      /**
+       * Kind
+       * @enum {string}
+       */
+      kind: "input" | "output" | "in_out" | "var" | "temp" | "result";
+      /**
+       * Name
+       * @description As declared; the result is named like the function, method or property.
+       */
+      name: string;
+      /**
+       * Reason
+       * @description Why no value is shown.
+       */
+      reason?: string | null;
+      type: components["schemas"]["DisplayType"];
+      /** Value */
+      value?:
+        | boolean
+        | number
+        | string
+        | unknown[]
+        | {
+            [key: string]: unknown;
+          }
+        | null;
+    };
     /** SwitchPosition */
     SwitchPosition: {
       /** Label */
@@ -3947,6 +4023,7 @@ export type At = components["schemas"]["At"];
 export type Bar = components["schemas"]["Bar"];
 export type Block = components["schemas"]["Block"];
 export type Box = components["schemas"]["Box"];
+export type CallFrame = components["schemas"]["CallFrame"];
 export type CfcBody = components["schemas"]["CfcBody"];
 export type CheckReport = components["schemas"]["CheckReport"];
 export type Coil = components["schemas"]["Coil"];
@@ -3960,6 +4037,7 @@ export type Continuation = components["schemas"]["Continuation"];
 export type CoverageInfo = components["schemas"]["CoverageInfo"];
 export type CreateProject = components["schemas"]["CreateProject"];
 export type Diagnostic = components["schemas"]["Diagnostic"];
+export type DisplayType = components["schemas"]["DisplayType"];
 export type DuplicateRequest = components["schemas"]["DuplicateRequest"];
 export type EmergencyStop = components["schemas"]["EmergencyStop"];
 export type ErrorDetail = components["schemas"]["ErrorDetail"];
@@ -4043,6 +4121,7 @@ export type SimulationInfo = components["schemas"]["SimulationInfo"];
 export type Slider = components["schemas"]["Slider"];
 export type SourceMapEntry = components["schemas"]["SourceMapEntry"];
 export type StExport = components["schemas"]["StExport"];
+export type StackVariable = components["schemas"]["StackVariable"];
 export type SwitchPosition = components["schemas"]["SwitchPosition"];
 export type SymbolInfo = components["schemas"]["SymbolInfo"];
 export type SymbolTable = components["schemas"]["SymbolTable"];

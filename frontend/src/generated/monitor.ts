@@ -617,6 +617,10 @@ export interface HistoryStepPoint {
    * The network or line it halted before; null: the scan ended.
    */
   at?: At | null;
+  /**
+   * The POU calls the step stands in, outermost first (as a halt's ``stack``).
+   */
+  stack?: CallFrame[];
 }
 /**
  * Where the scan halted or a fault happened.
@@ -638,39 +642,6 @@ export interface At {
   line?: number | null;
   network?: string | null;
   pou: string;
-}
-/**
- * What a client needs to show a value as IEC text: TIME and dates arrive as ms, enumerations as ints.
- *
- * This interface was referenced by `MonitorProtocol`'s JSON-Schema
- * via the `definition` "DisplayType".
- */
-export interface DisplayType {
-  /**
-   * The IEC elementary type (TIME, DATE, WORD...; a subrange's base type), or the name of the enumeration, structure or FB type.
-   */
-  name: string;
-  /**
-   * An enumeration's value names by value.
-   */
-  names?: {
-    [k: string]: string;
-  } | null;
-}
-/**
- * The simulation's state: sent on connecting and whenever it changes. ``faulted`` is a stop by a fault.
- *
- * This interface was referenced by `MonitorProtocol`'s JSON-Schema
- * via the `definition` "Status".
- */
-export interface Status {
-  at?: At | null;
-  /**
-   * While halted: the POU calls the scan stands in, outermost first.
-   */
-  stack?: CallFrame[];
-  state: "running" | "stopped" | "halted" | "faulted";
-  type: "status";
 }
 /**
  * One POU call a halted scan stands in (the call stack, outermost first; ON-03): ``at`` is where it stands -
@@ -716,6 +687,39 @@ export interface StackVariable {
         [k: string]: unknown;
       }
     | null;
+}
+/**
+ * What a client needs to show a value as IEC text: TIME and dates arrive as ms, enumerations as ints.
+ *
+ * This interface was referenced by `MonitorProtocol`'s JSON-Schema
+ * via the `definition` "DisplayType".
+ */
+export interface DisplayType {
+  /**
+   * The IEC elementary type (TIME, DATE, WORD...; a subrange's base type), or the name of the enumeration, structure or FB type.
+   */
+  name: string;
+  /**
+   * An enumeration's value names by value.
+   */
+  names?: {
+    [k: string]: string;
+  } | null;
+}
+/**
+ * The simulation's state: sent on connecting and whenever it changes. ``faulted`` is a stop by a fault.
+ *
+ * This interface was referenced by `MonitorProtocol`'s JSON-Schema
+ * via the `definition` "Status".
+ */
+export interface Status {
+  at?: At | null;
+  /**
+   * While halted: the POU calls the scan stands in, outermost first.
+   */
+  stack?: CallFrame[];
+  state: "running" | "stopped" | "halted" | "faulted";
+  type: "status";
 }
 /**
  * New samples of this client's trace since its previous chunk, sent at its monitor interval.

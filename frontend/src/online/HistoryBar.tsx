@@ -8,6 +8,8 @@
 import { useEffect, useState } from "react";
 import type { HistoryMark } from "../generated/api";
 import { findInHistory, historyDiff, historyMarks, historyStep } from "./api";
+import { CallStack } from "./CallStack";
+import { type HaltPlace, useRevealHalt } from "./useRevealHalt";
 import type { Value, Where } from "./protocol";
 import { formatValue } from "./values";
 import { onlineStore, useOnline } from "./store";
@@ -203,7 +205,7 @@ export interface HistoryBannerProps {
   /** A halt point in words ("MAIN, network 2"), as the debug bar says it. */
   describe(at: Where): string;
   /** Shows a location in its editor (opens the POU, selects the network or the line). */
-  reveal(place: { pou: string; network?: string | null; element?: string | null; line?: number | null }): void;
+  reveal(place: HaltPlace): void;
 }
 
 export function HistoryBanner({ describe, reveal }: HistoryBannerProps) {
@@ -252,9 +254,7 @@ export function steppingKey(key: string, stepping: boolean, ended: boolean): "st
 function HistoryStepping({ viewing, describe, reveal }: { viewing: number } & HistoryBannerProps) {
   const stepping = useOnline((s) => s.monitor.history?.stepping ?? null);
   const at = stepping?.at ?? null;
-  useEffect(() => {
-    if (at) reveal({ pou: at.pou, network: at.network, element: at.element, line: at.line });
-  }, [at, reveal]);
+  useRevealHalt(at, reveal);
   const [note, setNote] = useState<string | null>(null);
   const ended = stepping != null && !stepping.at;
   const step = async (granularity: "statement" | "over" | "back") => {
@@ -305,6 +305,7 @@ function HistoryStepping({ viewing, describe, reveal }: { viewing: number } & Hi
         </button>
       ) : null}
       {note ? <span role="alert">{note}</span> : null}
+      <CallStack stack={stepping?.stack ?? []} describe={describe} reveal={reveal} />
     </div>
   );
 }

@@ -1,6 +1,14 @@
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
-import { applyMessage, emptyMonitor, haltedCall, keepSubscribed, LOG_LIMIT, type MonitorState } from "./monitor";
+import {
+  applyMessage,
+  emptyMonitor,
+  haltedCall,
+  haltedStack,
+  keepSubscribed,
+  LOG_LIMIT,
+  type MonitorState,
+} from "./monitor";
 import { parseServerMessage, type ServerMessage, type ValuesMessage } from "./protocol";
 
 const values = (
@@ -67,6 +75,9 @@ describe("monitor message handling (issue 6 websocket messages)", () => {
     expect(haltedCall(s, "Motor.Start")).toBe(stack[1]);
     expect(haltedCall(s, "Clamp")).toBeNull();
     expect(haltedCall({ ...s, history: { first: 1, last: 2, stepping: { at: null } } }, "Motor.Start")).toBeNull();
+    const past = { first: 1, last: 2, stepping: { at: stack[1]!.at, stack: [stack[1]!] } };
+    expect(haltedCall({ ...s, state: "running", history: past }, "Motor.Start")).toBe(stack[1]); // a step's own stack
+    expect(haltedStack({ ...s, state: "running", history: past })).toEqual([stack[1]]);
     s = applyMessage(s, { type: "status", state: "running", stack });
     expect(s.stack).toEqual([]);
     expect(haltedCall(s, "Motor.Start")).toBeNull();

@@ -67,11 +67,20 @@ export function haltedAt(monitor: Pick<MonitorState, "state" | "at" | "history">
   return monitor.state === "halted" ? monitor.at : null;
 }
 
-/** The call of POU `pou` (a method as `FB.M`, any case) the live scan is halted in, if any: its own variables' values.
- * A POU is called at most once in a stack (no recursion, POU-02). A step through a past scan has no call stack. */
+const NO_CALLS: readonly CallFrame[] = [];
+
+/** The POU calls the editors show: those of the point a step through a past scan (history) reached, else those of
+ * the halted live scan; none otherwise (the same empty list each time, so a selector of it stays stable). */
+export function haltedStack(monitor: Pick<MonitorState, "state" | "stack" | "history">): readonly CallFrame[] {
+  const stepping = monitor.history?.stepping;
+  if (stepping) return stepping.stack ?? NO_CALLS;
+  return monitor.state === "halted" ? monitor.stack : NO_CALLS;
+}
+
+/** The call of POU `pou` (a method as `FB.M`, any case) the halted scan stands in, if any: its own variables'
+ * values. A POU is called at most once in a stack (no recursion, POU-02). */
 export function haltedCall(monitor: Pick<MonitorState, "state" | "stack" | "history">, pou: string): CallFrame | null {
-  if (monitor.state !== "halted" || monitor.history?.stepping) return null;
-  return monitor.stack.find((f) => f.at.pou.toUpperCase() === pou.toUpperCase()) ?? null;
+  return haltedStack(monitor).find((f) => f.at.pou.toUpperCase() === pou.toUpperCase()) ?? null;
 }
 
 /** The online log keeps this many entries (older ones are dropped). */

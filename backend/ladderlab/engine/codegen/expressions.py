@@ -172,7 +172,8 @@ class Expressions:
             sizes = f"{byte_size(b.left.type.target)}, {byte_size(b.right.type.target)}"  # type: ignore[union-attr]  # both pointers (checker)
             return f"ll_ptr_order({left}, {right}, {sizes}, {_ORDERINGS[b.op]!r})"
         if b.op in _BOOL_LOGIC and b.type == t.BOOL and _plain_read(b.right, right):
-            return f"({left} {_BOOL_LOGIC[b.op]} {right})"
+            # ``x AND x`` is x: an LD contact on the coil just set (``C`` read through the local it was set from)
+            return left if left == right else f"({left} {_BOOL_LOGIC[b.op]} {right})"
         types = (self.scalar(b.left.type, b.op), self.scalar(b.right.type, b.op))
         result = None if b.op in _COMPARISONS else self.scalar(b.type, b.op)
         return self.standard(_OPERATOR_FUNCTIONS[b.op], [left, right], types, result)

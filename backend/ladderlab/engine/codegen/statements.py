@@ -71,6 +71,9 @@ class Statements:
         #: The last ``ll_pr[i] = <temporary> = value`` line (``_set``): its Source, line count after it, group,
         #: temporary and probe number, for a probe right after it of the same temporary (``_same_probe``)
         self._probed_temp: tuple[Source, int, int | None, str, int] | None = None
+        #: the last line of an inlined FB body when it stores an output: (its source, line index, ``ll_fb.Q``, the
+        #: value stored)
+        self._output_line: tuple[Source, int, str, str] | None = None
         self.deferred = deferred  # id() of the probes read after the scan (deferred.py)
         self.reads: list[str] = []  # their ``ll_pr[i] = value`` lines, for the chunk's ll_read_probes part
         self._line: int | None = None
@@ -78,11 +81,14 @@ class Statements:
         #: id() of the statements whose store into a temporary local nothing reads (liveness.py), left out where no
         #: probe is recorded
         self.dead: set[int] = set()
+        #: id() of the stores into a temporary local only the next statement reads (liveness.py, ``_fold``), mapped
+        #: to whether a variable's read may replace it there; where no probe is recorded
+        self.folds: dict[int, bool] = {}
         self.temps = frozenset(scope.temp_locals.values())  # the temporaries' locals
         if scope.temp_locals and not self.debug:
             temps = frozenset(scope.temp_locals)
             live_out = frozenset() if plan.inline else temps  # (the next chunk takes the temporaries over)
-            self.dead = dead_stores(plan.chunks[chunk], temps, live_out, self.module.probes)
+            self.dead, self.folds = dead_stores(plan.chunks[chunk], temps, live_out, self.module.probes)
 
     # ------------------------------------------------------------------ blocks
 
@@ -208,6 +214,8 @@ class Statements:
             ]
         self.x.alias = None
         self.x.forward = {}
+        folds = self.folds if not probes else None
+        folded: tuple[str, str] | None = None  # a temporary's local and the value the statement reads in its place
         for i, s in enumerate(statements):
             if fused:  # the previous statement recorded this probe
                 fused = False
@@ -215,11 +223,23 @@ class Statements:
             if type(s) is not ir.Assign and type(s) is not ir.Probe:
                 self.x.alias = None  # (only an assignment surely leaves ``ll_fb`` as the last FB call set it)
                 self.x.forward = {}
+            if folded is not None:
+                self.x.forward[folded[0]] = folded[1]
+            if folds and isinstance(s, ir.Assign) and id(s) in folds:
+                fold = self._fold(s, folds[id(s)])  # (its value may read the one before, folded too)
+                if fold is not None:
+                    if folded is not None:
+                        self.x.forward.pop(folded[0], None)
+                    folded = fold
+                    continue
             if probes:
                 following = statements[i + 1] if i + 1 < len(statements) else None
                 self._following = following if isinstance(following, ir.Probe) else None
             self._fused = False
             self.statement(s)
+            if folded is not None:
+                self.x.forward.pop(folded[0], None)
+                folded = None
             fused = self._fused and isinstance(s, (ir.Assign, ir.FnCall))
             if not isinstance(s, _STRAIGHT) and not _straight(s):
                 self.group = None  # what follows may run without what came before
@@ -290,6 +310,8 @@ class Statements:
                     self._probed_temp = (self.src, len(self.src.lines), self.group, code, index)
             self._fused = True
             self._paused(probe)
+        elif self._chained(code, value):
+            return
         else:
             self.src.line(f"{code} = {value}")
 
@@ -311,6 +333,22 @@ class Statements:
             return None
         return index
 
+    def _chained(self, code: str, value: str) -> bool:
+        """``code = value`` merged into the line before when that line is an inlined FB body's last, storing the
+        output ``value`` reads (``ll_fb.Q = ll_fb.CV >= 5``): ``self.v_Y0 = ll_fb.Q = ll_fb.CV >= 5`` spares the
+        read of the output just stored. Exact: nothing runs between, and both stores are plain attribute stores
+        (the target's order does not matter: neither store can fault or be seen before the other)."""
+        held = self._output_line
+        if held is None or held[0] is not self.src or len(self.src.lines) != held[1] + 1 or held[2] != value:
+            return False
+        if not _PLAIN_CHAIN.fullmatch(code):
+            return False
+        line = self.src.lines[held[1]]
+        indent = line[: len(line) - len(line.lstrip())]
+        self.src.lines[held[1]] = f"{indent}{code} = {value} = {held[3]}"
+        self._output_line = None
+        return True
+
     def store(self, target: ir.Var, value: ir.Expr, probe: ir.Probe | None = None) -> None:
         forward = self.x.forward
         if forward and (next(calls_in(value), None) is not None or next(calls_in(target), None) is not None):
@@ -325,6 +363,21 @@ class Statements:
         stored = self.x.stored(value, ty)
         self._set(code, stored, probe)
         self._forward(code, stored)
+
+    def _fold(self, s: ir.Assign, once: bool) -> tuple[str, str] | None:
+        """The temporary's local and the value of ``s`` (a store into it that only the next statement reads,
+        liveness.py) when the next statement reads that value in its place (None: ``s`` is emitted): a local or a
+        constant, or, where the next statement is an assignment reading the temporary once, any value of at most
+        ``FOLDED_PARENTHESES`` parentheses (computing it once there instead of here changes nothing: it is pure)."""
+        if not once and isinstance(s.value, ir.Var) and s.value.path:
+            return None  # (an FB's output, ``ll_fb.Q``: a read of memory)
+        code, ty = self.x.access(s.target)
+        value = self.x.stored(s.value, ty)
+        if value in self.temps or value.isdigit() or value in ("True", "False"):
+            return code, value
+        if once and value.count("(") <= FOLDED_PARENTHESES:
+            return code, value
+        return None
 
     def _forward(self, code: str, stored: str) -> None:
         """After ``code = stored``: where no probe is recorded, reads of the variable ``code`` take the temporary
@@ -688,6 +741,9 @@ class Statements:
             elif inline is not None and not self.module.program.mockable:  # the body of its execute (inline_fbs.py)
                 for line in inline:
                     self.src.line(line)
+                last = _OUTPUT_STORE.fullmatch(inline[-1])
+                if last is not None and s.en is None and self.probes is None:
+                    self._output_line = (self.src, len(self.src.lines) - 1, last[1], last[2])
             elif inline is not None:  # a unit test may mock the instance: the body for the FB's own class only
                 self.src.line(f"if {fb}.__class__ is {names.std_fb(ty.fb.upper())}:")
                 with self.src.indent():
@@ -826,12 +882,17 @@ _LOCAL_OR_CONSTANT = re.compile(r"(?!ll_s_|ll_fb\b)[A-Za-z_][A-Za-z0-9_]*|\(?-?\
 
 #: An FB instance reached through attributes only (no index, no in-out reference): the same object all along
 _PLAIN_CHAIN = re.compile(r"[A-Za-z_]\w*(?:\.\w+)*")
+#: An inlined FB body's last line when it stores one output at the body's top level (``ll_fb.Q = ll_fb.CV >= 5``;
+#: not ``ll_fb._running = ll_fb.Q = False``)
+_OUTPUT_STORE = re.compile(r"(ll_fb\.[A-Za-z]\w*) = ((?:(?! = ).)+)")
 
 
 def _local_or_constant(code: str) -> bool:
     return _LOCAL_OR_CONSTANT.fullmatch(code) is not None
 
 
+#: Parentheses a folded value may have (``_fold``): folds of folds nest, and CPython's parser refuses 200 levels
+FOLDED_PARENTHESES = 8
 #: Branches of one if/elif chain (CPython's compiler recurses once per elif); longer chains go in groups.
 CHAIN_BRANCHES = 64
 #: Consecutive networks sharing one view flag (``view_run``): viewing 20 networks records at most 32.

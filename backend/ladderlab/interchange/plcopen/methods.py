@@ -179,7 +179,8 @@ def _write_method(
 
 
 def write_interfaces(add: ET.Element, types: str) -> None:
-    """The project's INTERFACEs (from its types text) as CODESYS's entries in the project's ``add``(Data)."""
+    """The project's INTERFACEs (from its types text) as CODESYS's entries in the project's ``add``(Data): their
+    methods. Their PROPERTYs travel in LadderLab's types text only: how CODESYS writes them is not known here."""
     parsed = parse_source(types, file="types.st")
     for item in parsed.ast.items if parsed.ast is not None else []:
         if not isinstance(item, ast.InterfaceDecl):
@@ -219,8 +220,8 @@ def read_interfaces(
         for prop in _entries(element, reader, PROPERTY_DATA, "Property"):
             reader.report(
                 "PLCOPEN-UNSUPPORTED",
-                f"the PROPERTY {prop.get('name', '')} of INTERFACE {name} was left out: LadderLab's INTERFACEs "
-                "declare methods only",
+                f"the PROPERTY {prop.get('name', '')} of INTERFACE {name} was left out: LadderLab does not read "
+                "CODESYS's interface properties yet (declare it in the INTERFACE's ST text)",
                 prop,
                 severity="warning",
             )
