@@ -56,6 +56,20 @@ def inline_values(page, label: str):
     return page.get_by_role("textbox", name=label).locator(".cm-st-value")
 
 
+def halted_in_clamp_then_open_the_method(page, calls, screenshot: str) -> None:
+    """Halted before Clamp's first line in the call from Motor.Start: the call stack, Clamp's own values inline; then
+    the method's call chosen opens it in Motor's Methods tab with its own values."""
+    expect(calls).to_have_text(["MAIN, line 1", "MOTOR.START (MAIN.M), line 2", "CLAMP, line 1"])
+    # Clamp(14, 10) halted before its first statement: tmp still has its declared initial 7, the result its 0
+    # (tmp v | tmp hi tmp hi | Clamp tmp)
+    expect(inline_values(page, "Clamp body")).to_have_text(["7", "14", "7", "10", "7", "10", "0", "7"])
+    page.screenshot(path=str(ARTIFACTS / screenshot))
+    # Start's body with its own n = 7, tmp = 14 and result 0 (count is the instance's: not a variable of the call)
+    calls.get_by_role("button", name="MOTOR.START (MAIN.M), line 2").click()
+    expect(page.get_by_role("tab", name="Methods")).to_have_attribute("aria-selected", "true")
+    expect(inline_values(page, "Motor.Start body")).to_have_text(["14", "7", "14", "0"])
+
+
 def test_halted_in_a_function_called_by_a_method_the_call_stack_and_each_calls_own_values(page, server):
     store_project(server, PROJECT)
     page.goto(server)
@@ -70,17 +84,7 @@ def test_halted_in_a_function_called_by_a_method_the_call_stack_and_each_calls_o
     debug = page.get_by_role("region", name="Debugging")
     debug.get_by_text("Halted at CLAMP, line 1").wait_for()
     calls = debug.get_by_role("navigation", name="Call stack").locator("li")
-    expect(calls).to_have_text(["MAIN, line 1", "MOTOR.START (MAIN.M), line 2", "CLAMP, line 1"])
-    # Clamp(14, 10) halted before its first statement: tmp still has its declared initial 7, the result its 0
-    # (tmp v | tmp hi tmp hi | Clamp tmp)
-    expect(inline_values(page, "Clamp body")).to_have_text(["7", "14", "7", "10", "7", "10", "0", "7"])
-    page.screenshot(path=str(ARTIFACTS / "call-stack-function.png"))
-
-    # The method's call: Motor's Methods tab, Start's body with its own n = 7, tmp = 14 and result 0 (count is the
-    # instance's: not a variable of the call)
-    calls.get_by_role("button", name="MOTOR.START (MAIN.M), line 2").click()
-    expect(page.get_by_role("tab", name="Methods")).to_have_attribute("aria-selected", "true")
-    expect(inline_values(page, "Motor.Start body")).to_have_text(["14", "7", "14", "0"])
+    halted_in_clamp_then_open_the_method(page, calls, "call-stack-function.png")
 
     # Step out of Clamp (it clamps tmp to 10 and returns; count becomes 10): halted at the method's next line, Clamp's
     # call gone from the stack
@@ -115,11 +119,5 @@ def test_a_step_through_a_past_scan_shows_the_call_stack_of_the_point_reached(pa
     for text in ("MOTOR.START, line 1", "MOTOR.START, line 2", "CLAMP, line 1"):
         stepping.get_by_role("button", name="Next step").click()
         point.filter(has_text=f"Scan 2, halted before {text}").wait_for()
-    expect(calls).to_have_text(["MAIN, line 1", "MOTOR.START (MAIN.M), line 2", "CLAMP, line 1"])
-    expect(inline_values(page, "Clamp body")).to_have_text(["7", "14", "7", "10", "7", "10", "0", "7"])
-    page.screenshot(path=str(ARTIFACTS / "call-stack-history-step.png"))
-
-    calls.get_by_role("button", name="MOTOR.START (MAIN.M), line 2").click()
-    expect(page.get_by_role("tab", name="Methods")).to_have_attribute("aria-selected", "true")
-    expect(inline_values(page, "Motor.Start body")).to_have_text(["14", "7", "14", "0"])
+    halted_in_clamp_then_open_the_method(page, calls, "call-stack-history-step.png")
     assert scan.inner_text() == "2"  # the scan shown; the live simulation stays at 3
