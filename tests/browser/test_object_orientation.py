@@ -1,5 +1,5 @@
 """Object orientation in the browser (issue 25, item 5): the project tree shows a function block's methods and
-properties under it (with EXTENDS / IMPLEMENTS), choosing one opens the FB, and a program that calls methods,
+properties under it (with EXTENDS / IMPLEMENTS), choosing one opens it in the FB's Methods tab, and a program that calls methods,
 properties and an interface runs online with the values worked out by hand. Screenshot in tests/browser/artifacts/.
 """
 
@@ -61,8 +61,9 @@ def test_methods_and_properties_in_the_tree_and_online(page, server) -> None:
     expect(tree.get_by_role("list", name="Counter members")).to_have_text("EXTENDS Base IMPLEMENTS ICount")
     page.screenshot(path=str(ARTIFACTS / "oop-tree.png"))
 
-    base.get_by_role("button", name="Add : INT").click()
-    page.get_by_label("Base body").wait_for()  # the FB whose file holds the method is open
+    base.get_by_role("button", name="Add : INT").click()  # the FB holding the method opens on it, as CODESYS does
+    expect(page.get_by_role("tab", name="Methods")).to_have_attribute("aria-selected", "true")
+    expect(page.get_by_role("textbox", name="Base.Add body")).to_contain_text("Bump(n);Add := sum;")
 
     open_pou(page, "oop", "Main")
     seen = watch(page, "Main.seen")
