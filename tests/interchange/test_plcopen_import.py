@@ -760,3 +760,26 @@ def test_a_declaration_the_importer_cannot_read_is_reported_with_its_pou():
     assert [(d.code, d.severity, d.pou, d.message) for d in result.diagnostics] == [
         ("PLCOPEN-DECL", "error", "Main", "a type element is empty; assumed BOOL")
     ]
+
+
+def test_a_pou_the_importer_cannot_take_as_it_is_is_reported_with_its_pou():
+    """PLCOPEN-POU (docs/diagnostics.md), with no external file needed: a FUNCTION without a return type (the
+    error of ironplc's plcopen-cdata.xml sample: kept, so its text is not lost, for the user to give it one) and an
+    unknown pouType (left out) are errors; the other POUs of the document are imported."""
+    result = import_plcopen(
+        project_xml(
+            pou_xml("Twice", "<xhtml:p>Twice := 2;</xhtml:p>", language="ST", pou_type="function")
+            + pou_xml("Thing", "<xhtml:p>x := TRUE;</xhtml:p>", language="ST", pou_type="class")
+            + pou_xml("Main", "<xhtml:p></xhtml:p>", language="ST")
+        )
+    )
+    assert [(d.code, d.severity, d.pou, d.message) for d in result.diagnostics] == [
+        ("PLCOPEN-POU", "error", "Twice", "function 'Twice' has no return type"),
+        (
+            "PLCOPEN-POU",
+            "error",
+            "Thing",
+            "POU 'Thing' has pouType 'class'; expected program, functionBlock or function",
+        ),
+    ]
+    assert [(p.name, p.return_type) for p in result.project.pous] == [("Twice", None), ("Main", None)]
