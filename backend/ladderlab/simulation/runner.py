@@ -225,6 +225,7 @@ class SimRunner:
         self._viewing: int | None = None  # the scan shown, numbered as frames number them (scans completed)
         #: the steps taken through the scan shown (history_step), by granularity; while any, the view is their stepper
         self._steps: list[str] = []
+        self._step_point_of: tuple[Halt, dict[str, Any]] | None = None  # the halt of a step and what frames say of it
         self._debug_program: CompiledProgram | None = None  # what a step through a past scan runs (compiled once)
         self._union_locations: dict[str, Location] = {}
         self._view_reader = self._reader
@@ -721,7 +722,10 @@ class SimRunner:
         halted = self._view.halted
         if halted is None:
             return {"at": None, "stack": []}
-        return {"at": at_halt(halted).model_dump(), "stack": [f.model_dump() for f in read_call_stack(self._view)]}
+        if self._step_point_of is None or self._step_point_of[0] is not halted:  # (every frame asks: read it once)
+            stack = [f.model_dump() for f in read_call_stack(self._view)]
+            self._step_point_of = (halted, {"at": at_halt(halted).model_dump(), "stack": stack})
+        return self._step_point_of[1]
 
     def open_recording(self, inputs: list[dict[str, Any]], scans: int) -> dict[str, Any] | None:
         """Run a recording's ``scans`` at once, each one's recorded ``inputs`` (``AppliedInput.to_json()`` lines)
