@@ -54,6 +54,7 @@ def test_every_control_of_the_history_bar_is_inside_the_window_at_1024x768(page,
         cycle.click()
         scan.filter(has_text=re.compile(f"^{number}$")).wait_for()
     start.locator(".ld-hit").dblclick()
+    start.locator(".ld-prepared").filter(has_text="<TRUE>").wait_for()  # (Ctrl+F7 before it writes nothing)
     page.keyboard.press("Control+F7")  # a write: the timeline gets a mark
     for number in (3, 4):
         cycle.click()
