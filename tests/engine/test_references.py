@@ -1,6 +1,6 @@
 """References (IEC 61131-3 ed. 3, 6.4.4.10: ``REF_TO``, ``REF()``, ``NULL``, ``^``; CODESYS ``POINTER TO``, ``ADR``):
 read and assigned through, scan by scan, in member and index chains and as VAR_IN_OUT arguments; a NULL dereference
-is a located fault; references to temporaries and constants are refused; a state round trip keeps the program's
+is a located fault; references to constants are refused; a state round trip keeps the program's
 values. Expected values are worked out by hand from the program text.
 """
 
@@ -81,9 +81,10 @@ def test_dereferencing_null_is_a_located_fault_in_the_scan_it_happens():
     assert sim.read("Main.k") == 3
 
 
-def test_references_to_a_program_temporary_or_a_constant_and_retain_references_are_located_errors():
-    """A reference to a FUNCTION's own variable is no longer refused (F: checked at run time, test_dangling_
-    references.py); a program's VAR_TEMP, a CONSTANT and a RETAIN reference still are."""
+def test_references_to_a_constant_and_retain_references_are_located_errors():
+    """A reference to a FUNCTION's own variable or to a program's VAR_TEMP is no longer refused (checked at run
+    time: test_dangling_references.py, test_temp_references.py); one to a CONSTANT and a RETAIN reference still
+    are."""
     text = (
         "FUNCTION F : INT\nVAR_INPUT a : INT; END_VAR\nVAR r : REF_TO INT; END_VAR\nr := REF(a);\nF := a;\n"
         "END_FUNCTION\n"
@@ -94,8 +95,6 @@ def test_references_to_a_program_temporary_or_a_constant_and_retain_references_a
     assert [d.format() for d in build_project(project).diagnostics] == [
         "Main/declarations:11:12, POU Main: error ST-DECL: a REF_TO INT cannot be RETAIN: a restart makes the "
         "variables it refers to anew (set it again after one)",
-        "Main/body:12:10, POU Main: error ST-REF: REF cannot refer to 't', a VAR_TEMP: it lives only while the call "
-        "runs, the reference would outlive it (declare it in VAR of the program or function block, or as a global)",
         "Main/body:13:10, POU Main: error ST-REF: REF cannot refer to the CONSTANT c: it could be written through "
         "the reference",
     ]

@@ -109,12 +109,12 @@ def pointers_unordered(op: str, left: str, right: str) -> PlcRuntimeError:
     )
 
 
-def dangling_reference(text: str, function: str) -> PlcRuntimeError:
-    """A reference to a variable of a FUNCTION call, used after that call returned (IEC 61131-3 ed. 3 6.4.4.10:
-    the variable no longer exists; CODESYS would read whatever reuses its memory)."""
+def dangling_reference(text: str, call: str) -> PlcRuntimeError:
+    """A reference to a variable of a FUNCTION call (or a VAR_TEMP of a PROGRAM / FUNCTION_BLOCK call; ``call``:
+    ``FUNCTION F``), used after that call returned (IEC 61131-3 ed. 3 6.4.4.10: the variable no longer exists;
+    CODESYS would read whatever reuses its memory)."""
     return PlcRuntimeError(
-        DANGLING_REFERENCE,
-        f"dangling reference: {text} refers to a variable of a call of FUNCTION {function} that has returned",
+        DANGLING_REFERENCE, f"dangling reference: {text} refers to a variable of a call of {call} that has returned"
     )
 
 

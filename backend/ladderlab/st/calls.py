@@ -492,11 +492,11 @@ def _system_call(checker: Any, node: ast.Call, name: str) -> Type:
 
 def unreferable(checker: Any, value: ast.Expr) -> str | None:
     """Why a reference to ``value`` is certainly wrong (None: it may be referred to). A FUNCTION's own variables
-    (its result, inputs, in-outs, locals and VAR_TEMP) may be: the engine marks such a reference dead when the
-    call returns and a dereference after that is the runtime fault ``dangling_reference`` (CODESYS accepts them,
-    OSCAT's string functions walk their own input with ``pt := ADR(str)``). Refused: another function's result, a
-    program's or FB's VAR_TEMP (the fast variants keep it in a Python local, no variable to refer to) and a
-    CONSTANT, which could then be written."""
+    (its result, inputs, in-outs, locals and VAR_TEMP) and a program's or FB's VAR_TEMP may be: the engine marks
+    such a reference dead when the call returns and a dereference after that is the runtime fault
+    ``dangling_reference`` (CODESYS accepts them: OSCAT's string functions walk their own input with
+    ``pt := ADR(str)``, FBs a temporary buffer). Refused: another function's result and a CONSTANT, which could
+    then be written."""
     root = value
     while isinstance(root, (ast.Member, ast.Index)):
         root = root.base
@@ -510,9 +510,4 @@ def unreferable(checker: Any, value: ast.Expr) -> str | None:
     symbol: Symbol = root.ref
     if symbol.constant:
         return f"the CONSTANT {symbol.name}: it could be written through the reference"
-    if symbol.var_class == "VAR_TEMP" and not own_function:
-        return (
-            f"'{symbol.name}', a VAR_TEMP: it lives only while the call runs, the reference would outlive it "
-            "(declare it in VAR of the program or function block, or as a global)"
-        )
     return None

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from functools import lru_cache
+from functools import cached_property, lru_cache
 
 from ...iec import stdlib as catalogue
 from ...ir import nodes as ir
@@ -14,6 +14,7 @@ from ..process_image import ProcessImage, image_view_name, key_of, located_addre
 from ..stdlib import STANDARD_FBS
 from . import names
 from .layout import Layout
+from .mentions import addresses_in_out
 from .runtime import UNSET
 from .typeinfo import runtime_name
 
@@ -137,6 +138,12 @@ class ModuleContext:
             ir.Slot(i.name.upper(), "VAR_GLOBAL", t.FbInstance(i.pou.upper()), None, i.retain) for i in self.instances
         ]
         self.globals = Layout(instance_slots + self.program.globals)
+
+    @cached_property
+    def in_outs_addressed(self) -> bool:
+        """Whether some POU takes REF()/ADR() of its own VAR_IN_OUT (mentions.addresses_in_out): only then does a
+        call pass its own call's variables to an in-out with the call's frame (runtime.FramedPair)."""
+        return any(addresses_in_out(pou) for pou in self.pous.values())
 
     @property
     def located(self) -> list[ir.Slot]:

@@ -194,11 +194,28 @@ class Expressions:
         return self.standard(c.function, args, types, runtime_name(c.type))
 
     def address_of(self, a: ir.AddressOf) -> str:
-        """``REF(x)``: a ``runtime.Ref`` to the variable's ``(container, key)``; a ``FrameRef`` to a FUNCTION's own
-        variable, which dangles once the call returned."""
-        if a.var.scope == "local" and a.var.name.upper() in self.scope.framed:
-            return f"ll_FrameRef(*{self.ref(a.var)}, {a.text!r}, ll_fr)"
-        return f"ll_Ref(*{self.ref(a.var)}, {a.text!r})"
+        """``REF(x)``: a ``runtime.Ref`` to the variable's ``(container, key)``; a ``FrameRef`` to a variable of
+        this call that has a frame (a FUNCTION's own, a VAR_TEMP), which dangles once the call returned. Of a
+        variable reached through a pointer or a VAR_IN_OUT, ``ll_io_ref`` gives the frame of the call whose
+        variable that is, if any (runtime.in_out_ref)."""
+        var, ref = a.var, self.ref(a.var)
+        derefs = [n for n, selector in enumerate(var.path) if isinstance(selector, ir.Deref)]
+        if derefs:  # (the pointer's pair is read again: a path's pointers and indices have no side effects)
+            pointer = self.ref(ir.Var(var.scope, var.name, var.type, var.path[: derefs[-1] + 1]))
+            return f"ll_io_ref({pointer}, *{ref}, {a.text!r})"
+        if var.scope == "local" and var.name.upper() in self.scope.framed:
+            return f"ll_FrameRef(*{ref}, {a.text!r}, ll_fr)"
+        slot = self.scope.slots.get(var.name.upper()) if var.scope == "local" else None
+        if slot is not None and slot.var_class == "VAR_IN_OUT":
+            return f"ll_io_ref(r_{names.escape(slot.name)}, *{ref}, {a.text!r})"
+        return f"ll_Ref(*{ref}, {a.text!r})"
+
+    def in_out_argument(self, v: ir.Var) -> str:
+        """``ref(v)`` passed to a VAR_IN_OUT; a variable of this call that has a frame passes it along
+        (``runtime.FramedPair``), so a REF() the callee takes of its in-out dies with this call."""
+        code = self.ref(v)
+        own = v.scope == "local" and not any(isinstance(selector, ir.Deref) for selector in v.path)
+        return f"ll_Pair(*{code}, ll_fr)" if own and v.name.upper() in self.scope.framed else code
 
     def view(self, v: ir.View) -> str:
         """A pointer seeing its target's bytes as another type (engine/codegen/views.py)."""
@@ -271,7 +288,7 @@ class Expressions:
                 f"the call passes {len(c.args)} and {len(c.in_outs)}"
             )
         args = [self.value_for(a, slot.type) for a, slot in zip(c.args, inputs)]
-        args += [self.ref(v) for v in c.in_outs]
+        args += [self.in_out_argument(v) for v in c.in_outs]
         if c.virtual and c.function.upper() in self.module.program.dispatch:  # a method: by its instance's FB
             call = f"ll_virtual({names.dispatch_table(callee.name)}, {len(inputs)}, {', '.join(args)})"
         else:

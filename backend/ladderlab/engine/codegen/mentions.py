@@ -119,16 +119,57 @@ def _index_text(e: ir.Expr) -> str:
 
 def addressed_locals(pou: ir.Pou) -> set[str]:
     """The POU's own variables (not its in-outs or externals) that its body takes REF()/ADR() of: a FUNCTION that
-    has any gives each call a ``runtime.Frame`` so a reference into it dangles once the call returned."""
-    own = {s.name.upper() for s in pou.slots if s.var_class not in ("VAR_IN_OUT", "VAR_EXTERNAL")}
+    has any gives each call a ``runtime.Frame`` so a reference into it dangles once the call returned (a PROGRAM /
+    FUNCTION_BLOCK: when any is a VAR_TEMP, ``addressed_temps``)."""
+    return _addressed(pou, {s.name.upper() for s in pou.slots if s.var_class not in ("VAR_IN_OUT", "VAR_EXTERNAL")})
+
+
+def addresses_in_out(pou: ir.Pou) -> bool:
+    """Whether the POU's body takes REF()/ADR() of (a part of) its own VAR_IN_OUT: such a reference refers to the
+    caller's variable, so a caller passing its own call's variable makes it carry the call's frame."""
+    return bool(_addressed(pou, {s.name.upper() for s in pou.slots if s.var_class == "VAR_IN_OUT"}))
+
+
+def _addressed(pou: ir.Pou, names: set[str]) -> set[str]:
+    """Those of the local variables ``names`` that the body takes REF()/ADR() of (or of a part of)."""
     found: set[str] = set()
     for block in pou.blocks:
         for s in walk(block.statements):
             for e in own_expressions(s):
                 for node in expression_nodes(e):
-                    if isinstance(node, ir.AddressOf) and node.var.scope == "local" and node.var.name.upper() in own:
+                    if isinstance(node, ir.AddressOf) and node.var.scope == "local" and node.var.name.upper() in names:
                         found.add(node.var.name.upper())
     return found
+
+
+def passed_in_out(pou: ir.Pou, in_out_pin: Callable[[str, str], bool]) -> set[str]:
+    """The POU's own variables (not its in-outs or externals) passed, whole or a part, to a VAR_IN_OUT: of a
+    function or method called, or a pin of an FB called for which ``in_out_pin(fb type, pin)`` holds."""
+    own = {s.name.upper() for s in pou.slots if s.var_class not in ("VAR_IN_OUT", "VAR_EXTERNAL")}
+
+    def root(v: object) -> str | None:
+        if not isinstance(v, ir.Var) or v.scope != "local" or any(isinstance(p, ir.Deref) for p in v.path):
+            return None
+        return v.name.upper() if v.name.upper() in own else None
+
+    found: set[str | None] = set()
+    for block in pou.blocks:
+        for s in walk(block.statements):
+            for e in own_expressions(s):
+                for call in calls_in(e):
+                    found.update(root(v) for v in call.in_outs)
+            if isinstance(s, ir.FbCall) and isinstance(s.instance.type, t.FbInstance):
+                fb = s.instance.type.fb
+                found.update(root(v) for pin, v in s.inputs if in_out_pin(fb, pin))
+    found.discard(None)
+    return found  # type: ignore[return-value]  # None discarded
+
+
+def addressed_temps(pou: ir.Pou) -> set[str]:
+    """The VAR_TEMP of a PROGRAM / FUNCTION_BLOCK that its body takes REF()/ADR() of: its calls then have a
+    ``runtime.Frame``, as a FUNCTION's do, for the VAR_TEMP live only while the call runs."""
+    temps = {s.name.upper() for s in pou.slots if s.var_class == "VAR_TEMP"}
+    return addressed_locals(pou) & temps
 
 
 def referenced_locals(pou: ir.Pou, by_value: Callable[[str], bool] = lambda fb: False) -> set[str]:

@@ -15,7 +15,8 @@ the debug variant they are generators.
 from __future__ import annotations
 
 import re
-from contextlib import nullcontext
+from collections.abc import Iterator
+from contextlib import contextmanager, nullcontext
 
 from ...ir import nodes as ir
 from ...ir import types as t
@@ -26,8 +27,8 @@ from .constructors import construct
 from .context import CodegenError, ModuleContext, diagnostic
 from .deferred import deferred_probes
 from .layout import slots_source
-from .mentions import addressed_locals, boxed_locals
-from .scope import Scope, global_owner
+from .mentions import boxed_locals
+from .scope import Scope, framed_variables, global_owner
 from .source import LazyPiece, Source
 from .statements import Statements
 from .typeinfo import is_composite
@@ -231,9 +232,14 @@ def _target(place) -> str:
 
 
 def _emit_execute(module: ModuleContext, pou: ir.Pou, scope: Scope, src: Source) -> None:
-    """``ll_x_NAME(self, now)``: VAR_TEMP initialisation, then the body inline or its chunk functions in order."""
+    """``ll_x_NAME(self, now)``: VAR_TEMP initialisation, then the body inline or its chunk functions in order.
+
+    A body whose VAR_TEMP need a frame (``scope.framed``: scope.framed_variables) makes a ``runtime.Frame`` per
+    call, ended however the call ends (``try``/``finally``), and is never chunked: the frame is a local of
+    ``execute``."""
     cls, key = names.pou_class(pou.name), names.escape(pou.name)
-    plan = chunk_plan(pou.blocks, chunked=True)
+    scope.framed = framed_variables(module, pou)
+    plan = chunk_plan(pou.blocks, chunked=not scope.framed)
     deferred = frozenset(deferred_probes(pou)) if module.variant == "monitor" else frozenset()
     calls, reads = [], []
     if not plan.inline:
@@ -260,6 +266,8 @@ def _emit_execute(module: ModuleContext, pou: ir.Pou, scope: Scope, src: Source)
     src.line(f"def {execute}(self, now):")
     with src.indent():
         src.line(f"# {cls}.execute")
+        if scope.framed:  # references into this call's VAR_TEMP dangle once it returns
+            src.line(_new_frame(pou))
         loaded: set[int] = set()
         for slot in scope.slots.values():
             if slot.var_class == "VAR_TEMP":
@@ -275,7 +283,8 @@ def _emit_execute(module: ModuleContext, pou: ir.Pou, scope: Scope, src: Source)
                 if value is not None:
                     src.line(f"{_target(place)} = {value}")
         if plan.inline:
-            reads.append(_emit_chunk(scope, plan, 0, src, deferred, prologue_depth=0))
+            with _ending_frame(scope, src):
+                reads.append(_emit_chunk(scope, plan, 0, src, deferred, prologue_depth=0))
         elif plan.jumps:
             _emit_dispatch(module, plan, [call.removesuffix("(self, now)") for call in calls], src)
         else:
@@ -290,6 +299,20 @@ def _emit_execute(module: ModuleContext, pou: ir.Pou, scope: Scope, src: Source)
     src.line()
     if any(reads):
         _emit_reader(cls, key, reads, src)
+
+
+@contextmanager
+def _ending_frame(scope: Scope, src: Source) -> Iterator[None]:
+    """The body emitted inside ends the call's frame however it leaves (its end, a RETURN, a fault), if it has one."""
+    if not scope.framed:
+        yield
+        return
+    src.line("try:")
+    with src.indent():
+        yield
+    src.line("finally:")
+    with src.indent():
+        src.line("ll_fr.end(None)")
 
 
 def _emit_unviewed_twin(
@@ -417,7 +440,7 @@ def emit_function(module: ModuleContext, pou: ir.Pou, decls: Source, code: Sourc
     """The function into ``code`` (never chunked: its variables are locals); its probe lists into ``decls``."""
     scope = Scope(module, pou)
     scope.boxed = boxed_locals(pou)
-    scope.framed = addressed_locals(pou)
+    scope.framed = framed_variables(module, pou)
     scope.result_slot()  # raises when missing
     inputs = [s for s in pou.slots if s.var_class == "VAR_INPUT"]
     params = [names.slot(s.name) for s in inputs] + [f"r_{names.escape(s.name)}" for s in scope.in_outs]
@@ -430,7 +453,7 @@ def emit_function(module: ModuleContext, pou: ir.Pou, decls: Source, code: Sourc
     with code.indent():
         code.line(f"# FUNCTION {names.comment_text(pou.name)} ({pou.language.upper()})")
         if scope.framed:  # references into this call dangle once it returns (runtime.Frame)
-            code.line(f"ll_fr = ll_Frame({pou.name!r})")
+            code.line(_new_frame(pou))
         for slot in scope.in_outs:
             _unpack_reference(slot, code)
         for slot in inputs:
@@ -463,6 +486,13 @@ def emit_function(module: ModuleContext, pou: ir.Pou, decls: Source, code: Sourc
             f"ll_pr_{key} = [ll_unset] * {len(table.elements)}  # probes of FUNCTION {names.comment_text(pou.name)}"
         )
         decls.line(f"ll_px_{key} = [-1] * {table.group_count}")
+
+
+def _new_frame(pou: ir.Pou) -> str:
+    """The line making a call's ``runtime.Frame``, named as the fault names the call (a METHOD is an ``<FB>.<M>``
+    function: no FUNCTION has a dot)."""
+    kind = pou.kind.upper() if pou.kind != "function" else "METHOD" if "." in pou.name else "FUNCTION"
+    return f"ll_fr = ll_Frame({pou.name!r}{'' if kind == 'FUNCTION' else f', {kind!r}'})"
 
 
 def emit_struct(module: ModuleContext, struct: t.Struct, cls: str, src: Source) -> None:

@@ -237,13 +237,14 @@ def reference_text(value: object) -> str:
 
 
 class Frame:
-    """One call of a FUNCTION whose body takes REF()/ADR() of its own variables: ``alive`` until the call returns
-    (``end``), after which a reference into it dangles. Functions that take no such reference have none."""
+    """One call of a FUNCTION whose body takes REF()/ADR() of its own variables, or of a PROGRAM /
+    FUNCTION_BLOCK whose body takes them of its VAR_TEMP: ``alive`` until the call returns (``end``), after which
+    a reference into it dangles. POUs that take no such reference have none. ``kind``: the POU's, for the fault."""
 
-    __slots__ = ("alive", "name")
+    __slots__ = ("alive", "kind", "name")
 
-    def __init__(self, name: str) -> None:
-        self.alive, self.name = True, name
+    def __init__(self, name: str, kind: str = "FUNCTION") -> None:
+        self.alive, self.name, self.kind = True, name, kind
 
     def end(self, result: object) -> object:
         """The call returns ``result``: its variables are gone."""
@@ -252,8 +253,8 @@ class Frame:
 
 
 class FrameRef(Ref):
-    """A reference to a variable of a FUNCTION call (``frame``): reading or writing it after the call returned is
-    the fault ``dangling_reference``, never the stale value."""
+    """A reference to a variable of a FUNCTION call or a VAR_TEMP of a PROGRAM / FUNCTION_BLOCK call (``frame``):
+    reading or writing it after the call returned is the fault ``dangling_reference``, never the stale value."""
 
     __slots__ = ("frame",)
 
@@ -277,11 +278,32 @@ class FrameRef(Ref):
     def pair(self) -> tuple[object, object]:
         if not self.frame.alive:
             raise dangling(self.text, self.frame)
-        return self.c, self.k
+        return FramedPair(self.c, self.k, self.frame)
+
+
+class FramedPair(tuple):
+    """A VAR_IN_OUT argument ``(container, key)`` naming a variable of a call that has a ``frame`` (a function's
+    local, a program's or FB's VAR_TEMP): a REF() the callee takes of its in-out refers to the caller's variable,
+    so it dies with the caller's call (``in_out_ref``), not the callee's. A plain tuple everywhere else."""
+
+    frame: Frame
+
+    def __new__(cls, container: object, key: object, frame: Frame) -> FramedPair:
+        pair = super().__new__(cls, (container, key))
+        pair.frame = frame
+        return pair
+
+
+def in_out_ref(source: object, container: object, key: object, text: str) -> Ref:
+    """``REF()`` of a variable reached through ``source`` (a VAR_IN_OUT's ``(container, key)``, or the pair of
+    the pointer a path dereferences last): a ``FrameRef`` when that variable belongs to a call with a frame, so it
+    dangles once that call returned, else a plain ``Ref``."""
+    frame = getattr(source, "frame", None)
+    return Ref(container, key, text) if frame is None else FrameRef(container, key, text, frame)
 
 
 def dangling(text: str, frame: Frame) -> PlcRuntimeError:
-    return dangling_reference(text, frame.name)
+    return dangling_reference(text, f"{frame.kind} {frame.name}")
 
 
 class ElementRef(Ref):
@@ -306,7 +328,8 @@ class ElementRef(Ref):
 
     @property
     def pair(self) -> tuple[object, object]:
-        return self.c, self._checked()
+        key = self._checked()
+        return (self.c, key) if self.frame is None else FramedPair(self.c, key, self.frame)
 
     def _checked(self) -> int:
         if self.frame is not None and not self.frame.alive:
@@ -428,6 +451,8 @@ def namespace() -> dict[str, object]:
         ll_Ref=Ref,
         ll_FrameRef=FrameRef,
         ll_Frame=Frame,
+        ll_Pair=FramedPair,
+        ll_io_ref=in_out_ref,
         ll_deref=deref,
         ll_ptr_add=pointer_add,
         ll_ptr_order=pointer_order,

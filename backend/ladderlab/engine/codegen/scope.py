@@ -23,7 +23,7 @@ from ...ir import types as t
 from . import names
 from .context import CodegenError, ModuleContext, std_fb_class
 from .layout import Layout, Place
-from .mentions import referenced_locals, walk
+from .mentions import addressed_locals, addressed_temps, passed_in_out, referenced_locals, walk
 from .typeinfo import is_composite
 
 
@@ -45,7 +45,8 @@ class Scope:
         self.slots = {s.name.upper(): s for s in pou.slots if s.var_class != "VAR_EXTERNAL"}
         self.in_outs = [s for s in self.slots.values() if s.var_class == "VAR_IN_OUT"]
         self.boxed: set[str] = set()
-        self.framed: set[str] = set()  # a FUNCTION's variables it takes REF()/ADR() of: its calls have a Frame
+        #: the variables a FUNCTION (or VAR_TEMP a PROGRAM / FB) takes REF()/ADR() of: its calls have a Frame
+        self.framed: set[str] = set()
         self.pages_used: set[int] = set()
         self._temps = 0
         self._roots: dict[tuple[str, str], tuple[str, t.IrType, int]] = {}
@@ -167,6 +168,27 @@ class Scope:
         name = self.result_slot().name
         result = f"{names.slot(name)}{'[0]' if name.upper() in self.boxed else ''}"
         return f"return ll_fr.end({result})" if self.framed else f"return {result}"
+
+
+def framed_variables(module: ModuleContext, pou: ir.Pou) -> set[str]:
+    """The variables (upper case) whose references die with the POU's call, so that its calls have a
+    ``runtime.Frame``: a FUNCTION's own variables, a PROGRAM's / FB's VAR_TEMP, that the body takes REF()/ADR() of,
+    and, when some POU takes REF()/ADR() of its VAR_IN_OUT, those passed to an in-out (the reference the callee
+    takes refers to them). Empty for the many POUs that do neither: their code has no frame."""
+    if pou.kind == "function":
+        own, kept = addressed_locals(pou), None
+    else:
+        own, kept = addressed_temps(pou), {s.name.upper() for s in pou.slots if s.var_class == "VAR_TEMP"}
+    if not module.in_outs_addressed:
+        return own
+    passed = passed_in_out(pou, lambda fb, pin: _in_out_pin(module, fb, pin))
+    return own | (passed if kept is None else passed & kept)
+
+
+def _in_out_pin(module: ModuleContext, fb: str, pin: str) -> bool:
+    layout = module.layouts.get(fb.upper())
+    place = layout.get(pin) if layout is not None else None
+    return place is not None and place.slot.var_class == "VAR_IN_OUT"
 
 
 def temp_locals(module: ModuleContext, pou: ir.Pou) -> dict[str, str]:
