@@ -18,6 +18,7 @@ from ladderlab.engine.codegen import chunks
 from ladderlab.model import ld
 from ladderlab.model.project import Pou, Project, Task
 from ladderlab.simulation.build import build_project
+from ladderlab.st.project_text import source_to_project
 from tests.support import fuzz_settings
 
 BOOLS = [f"B{i}" for i in range(6)]
@@ -278,3 +279,71 @@ def test_folded_temporaries_and_a_chained_counter_output_keep_iec_values():
             sim.write("Main.B3", b3)
             sim.cycle(1)
         assert sim.read("Main.K1.CV") == 32767 and sim.read("Main.B4") is True, variant
+
+
+TEMP_REFERENCES = """
+FUNCTION_BLOCK Walker
+VAR_INPUT n : INT; END_VAR
+VAR_OUTPUT sum : INT; whole : INT; END_VAR
+VAR_TEMP buf : ARRAY[1..4] OF INT; t : INT; i : INT; pt : POINTER TO INT; rt : REF_TO INT; END_VAR
+FOR i := 1 TO 4 DO
+  buf[i] := n * i;
+END_FOR;
+pt := ADR(buf[1]);
+sum := 0;
+FOR i := 1 TO 4 DO
+  sum := sum + pt^;
+  pt := pt + SIZEOF(buf[1]);
+END_FOR;
+rt := REF(t);
+rt^ := rt^ + n;
+whole := t + rt^;
+END_FUNCTION_BLOCK
+FUNCTION Bump : INT
+VAR_IN_OUT io : INT; END_VAR
+VAR p : REF_TO INT; END_VAR
+p := REF(io);
+p^ := p^ + 1;
+Bump := io;
+END_FUNCTION
+PROGRAM Main
+VAR w : Walker; k : INT; peek : BOOL; kept : POINTER TO INT; late, doubled, bumped : INT; END_VAR
+VAR_TEMP tp : INT; pm : POINTER TO INT; END_VAR
+w(n := k);
+pm := ADR(tp);
+pm^ := tp + k * 2;
+bumped := Bump(tp);
+doubled := tp;
+IF peek THEN
+  late := kept^;
+END_IF;
+kept := pm;
+END_PROGRAM
+"""
+
+_temp_writes = st.lists(st.tuples(st.integers(-3000, 3000), st.booleans()), min_size=1, max_size=8)
+
+
+@fuzz_settings(fast=20)
+@given(writes=_temp_writes)
+def test_the_variants_agree_on_references_to_temporaries_and_their_dangling_faults(writes):
+    """References to VAR_TEMP (a program's and an FB's, tests/engine/test_temp_references.py) and to a function's
+    VAR_IN_OUT bound to one: the fast and monitor variants (an inline body with a frame) against the debug variant,
+    scan by scan under random inputs (INT overflow wraps alike); a ``peek`` reads a pointer kept from the last scan:
+    NULL the first time, dangling after, the same fault in every variant."""
+    project, diagnostics = source_to_project(TEMP_REFERENCES, "temps")
+    assert project is not None and diagnostics == []
+    fast, monitor, debug = (build_project(project, variant).simulation() for variant in ("fast", "monitor", "debug"))
+    for scan, (k, peek) in enumerate(writes):
+        for sim in (fast, monitor, debug):
+            sim.write("Main.k", k)
+            sim.write("Main.peek", peek)
+            sim.cycle(1)
+        assert fast.snapshot() == debug.snapshot() == monitor.snapshot(), f"scan {scan}"
+        faults = [None if sim.fault is None else (sim.fault.code, sim.fault.message) for sim in (fast, monitor, debug)]
+        assert faults[0] == faults[1] == faults[2], f"scan {scan}"
+        if peek:  # kept was NULL before the first scan, and refers to a gone tp after it
+            assert faults[0] is not None and faults[0][0] == ("null_dereference" if scan == 0 else "dangling_reference")
+            break
+        assert faults[0] is None
+        assert fast.read("Main.doubled") == fast.read("Main.bumped") == ((k * 2 + 1 + 32768) & 0xFFFF) - 32768

@@ -13,6 +13,8 @@ by hand from the program text, in each engine variant (fast, monitor, debug: doc
 
 from __future__ import annotations
 
+import pickle
+
 import pytest
 
 from ladderlab.engine.paths import NoTarget
@@ -415,3 +417,45 @@ END_PROGRAM
         fault = sim.fault
         assert fault is not None and (fault.code, fault.origin.line) == ("dangling_reference", 8), variant
         assert fault.message.startswith("dangling reference: ADR(p^) refers to a variable of a call of FUNCTION_BLOCK")
+
+
+HOLDER = """
+FUNCTION_BLOCK Holder
+VAR_IN_OUT io : INT; END_VAR
+VAR_OUTPUT o : INT; END_VAR
+VAR p : POINTER TO INT; END_VAR
+p := ADR(io);
+p^ := p^ + 1;
+o := p^;
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR h : Holder; k : INT; END_VAR
+VAR_TEMP t : INT; END_VAR
+k := k + 1;
+t := k * 10;
+IF k = 2 THEN
+  RETURN;
+END_IF;
+h(io := t);
+END_PROGRAM
+"""
+
+
+@pytest.mark.parametrize("variant", VARIANTS)
+def test_an_fb_in_out_bound_to_a_temporary_and_a_captured_state(variant):
+    """An FB's in-out bound to the program's VAR_TEMP: through ADR(io) the FB writes the program's t (t = 10k + 1,
+    o = t). A state captured between scans (the in-out's reference is left out, docs/runtime.md) pickles and
+    restores; the FB's p then refers to a gone t. Scan 2 leaves by RETURN before the call: its frame ends too."""
+    sim = build(HOLDER, variant).simulation()
+    sim.cycle(1)
+    assert (sim.fault, sim.read("Main.t"), sim.read("Main.h.o"), sim.read("Main.h.p")) == (None, 11, 11, "ADR(io)")
+    sim.cycle(1)
+    assert (sim.fault, sim.read("Main.t"), sim.read("Main.h.o")) == (None, 20, 11)  # RETURN: h not called
+    with pytest.raises(
+        NoTarget, match="dangling reference: ADR\\(io\\) refers to a variable of a call of PROGRAM MAIN"
+    ):
+        sim.read("Main.h.p^")
+    restored = build(HOLDER, variant).simulation()
+    restored.restore(pickle.loads(pickle.dumps(sim.state())))
+    restored.cycle(1)
+    assert (restored.fault, restored.read("Main.t"), restored.read("Main.h.o")) == (None, 31, 31)

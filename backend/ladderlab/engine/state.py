@@ -26,7 +26,7 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any
 
-from .codegen.runtime import UNSET, Ref
+from .codegen.runtime import UNSET, FramedPair, Ref
 
 if TYPE_CHECKING:
     from .simulation import Simulation
@@ -84,7 +84,7 @@ def data_of(value: object) -> object:
         if _SCALAR_TYPES.issuperset(map(type, value)):  # in C: an array of scalars or a probe list, copied whole
             return value.copy()
         return [data_of(item) for item in value]
-    if value.__class__ is tuple or isinstance(value, Ref):  # a VAR_IN_OUT reference (container, key), a REF_TO
+    if value.__class__ is tuple or isinstance(value, (Ref, FramedPair)):  # a VAR_IN_OUT reference, a REF_TO
         return REFERENCE
     if isinstance(value, _SCALARS):
         return value
