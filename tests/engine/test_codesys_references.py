@@ -1,6 +1,6 @@
 """CODESYS ``REFERENCE TO`` (issue 25, item 1): bound with ``REF=``, read and written through without ``^``, as array
 elements, structure and array targets, named types; ``__ISVALIDREF``; the engine stays memory safe - an unbound
-reference read is the located NULL fault, a reference to a function's variable is refused (ST-REF) - and SIZEOF.
+reference read is the located NULL fault, a reference to a CONSTANT is refused (ST-REF) - and SIZEOF.
 Expected values are the referent's, computed by hand from the program text."""
 
 from __future__ import annotations

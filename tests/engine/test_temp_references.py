@@ -459,3 +459,39 @@ def test_an_fb_in_out_bound_to_a_temporary_and_a_captured_state(variant):
     restored.restore(pickle.loads(pickle.dumps(sim.state())))
     restored.cycle(1)
     assert (restored.fault, restored.read("Main.t"), restored.read("Main.h.o")) == (None, 31, 31)
+
+
+@pytest.mark.parametrize("variant", VARIANTS)
+def test_a_codesys_reference_bound_to_a_temporary_with_ref_assign(variant):
+    """CODESYS ``REFERENCE TO`` bound with ``REF=`` to a VAR_TEMP: read and written without ``^`` in the call (t := 3k
+    through r, out = t + 1); kept in the FB's VAR, read in the next call, it is the fault."""
+    text = """
+FUNCTION_BLOCK Bound
+VAR_OUTPUT out : INT; END_VAR
+VAR kept : REFERENCE TO INT; k : INT; END_VAR
+VAR_TEMP t : INT; r : REFERENCE TO INT; END_VAR
+k := k + 1;
+IF k = 3 THEN
+  out := kept;
+END_IF;
+r REF= t;
+r := k * 3;
+out := t + 1;
+kept REF= t;
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR b : Bound; END_VAR
+b();
+END_PROGRAM
+"""
+    sim = build(text, variant).simulation()
+    for k in (1, 2):
+        sim.cycle(1)
+        assert (sim.fault, sim.read("Main.b.out")) == (None, 3 * k + 1)
+    sim.cycle(1)
+    fault = sim.fault
+    assert fault is not None and (fault.code, fault.origin.line) == ("dangling_reference", 8)
+    assert (
+        fault.message
+        == "dangling reference: REF(t) refers to a variable of a call of FUNCTION_BLOCK BOUND that has returned"
+    )
