@@ -22,7 +22,7 @@ from ...ir.types import describe
 from ..stdlib import specialised
 from . import names
 from .context import CodegenError, std_fb_class, std_pin_type
-from .mentions import var_text
+from .mentions import calls_in, var_text
 from .scope import Scope
 from .source import Source
 from .typeinfo import is_composite, runtime_name, store_code, store_value
@@ -200,7 +200,7 @@ class Expressions:
         variable that is, if any (runtime.in_out_ref)."""
         var, ref = a.var, self.ref(a.var)
         derefs = [n for n, selector in enumerate(var.path) if isinstance(selector, ir.Deref)]
-        if derefs:  # (the pointer's pair is read again: a path's pointers and indices have no side effects)
+        if derefs and next(calls_in(var), None) is None:  # (the pointer's pair is read again: no call in the path)
             pointer = self.ref(ir.Var(var.scope, var.name, var.type, var.path[: derefs[-1] + 1]))
             return f"ll_io_ref({pointer}, *{ref}, {a.text!r})"
         if var.scope == "local" and var.name.upper() in self.scope.framed:

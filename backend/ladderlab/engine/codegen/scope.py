@@ -45,7 +45,7 @@ class Scope:
         self.slots = {s.name.upper(): s for s in pou.slots if s.var_class != "VAR_EXTERNAL"}
         self.in_outs = [s for s in self.slots.values() if s.var_class == "VAR_IN_OUT"]
         self.boxed: set[str] = set()
-        #: the variables a FUNCTION (or VAR_TEMP a PROGRAM / FB) takes REF()/ADR() of: its calls have a Frame
+        #: the variables whose references die with the call (framed_variables): its calls have a Frame
         self.framed: set[str] = set()
         self.pages_used: set[int] = set()
         self._temps = 0
