@@ -100,3 +100,30 @@ def test_watching_writing_and_forcing_through_pointers_over_the_websocket(
         ws.send_json({"type": "single_cycle"})  # still connected and running
         message, _ = recv_until(ws, of_type("values", scan=3))
         assert message["changed"] == {"MAIN.RP^.X": 3}
+
+
+def test_a_pointer_to_a_temporary_shows_its_value_and_no_target_once_the_call_returned(
+    client: TestClient, workspace: Workspace, registry: SimulationRegistry
+) -> None:
+    """ON-11 with a pointer to the program's VAR_TEMP (issue 25, tests/engine/test_temp_references.py): watched
+    between scans, the pointer shows its value (the ADR() it holds) and its target no value (the VAR_TEMP lived only
+    while the scan's call ran: never the slot's next value); writing the target is refused with the reason, the
+    connection staying open. Within the call the program read t through it (seen = 5 + 1 each scan)."""
+    declarations = "VAR\n    kept : POINTER TO INT;\n    seen : INT;\nEND_VAR\nVAR_TEMP\n    t : INT;\nEND_VAR"
+    body = "t := 5;\nkept := ADR(t);\nkept^ := kept^ + 1;\nseen := seen + t;\n"
+    workspace.create(Project(name="ptr", pous=[st_program("Main", declarations, body)]))
+    assert children(client, "Main.kept") == [node("kept^", "Main.kept^", "INT")]
+    sim_id = client.post("/api/projects/ptr/simulations").json()["id"]
+    with client.websocket_connect(f"/api/simulations/{sim_id}/ws") as ws:
+        recv(ws)
+        first = subscribe(ws, ["Main.kept", "Main.kept^", "Main.seen"])
+        assert first["changed"] == {"MAIN.KEPT": "NULL", "MAIN.KEPT^": None, "MAIN.SEEN": 0}
+        ws.send_json({"type": "single_cycle"})
+        message, _ = recv_until(ws, of_type("values", scan=1))
+        assert message["changed"] == {"MAIN.KEPT": "ADR(t)", "MAIN.SEEN": 6}  # KEPT^ still no value
+        ws.send_json({"type": "write", "path": "Main.kept^", "value": 1})
+        error, _ = recv_until(ws, of_type("error"))
+        assert "dangling reference: ADR(t) refers to a variable of a call of PROGRAM MAIN" in error["message"]
+        ws.send_json({"type": "single_cycle"})
+        message, _ = recv_until(ws, of_type("values", scan=2))
+        assert message["changed"] == {"MAIN.SEEN": 12}
