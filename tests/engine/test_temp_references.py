@@ -495,3 +495,35 @@ END_PROGRAM
         fault.message
         == "dangling reference: REF(t) refers to a variable of a call of FUNCTION_BLOCK BOUND that has returned"
     )
+
+
+@pytest.mark.parametrize("variant", VARIANTS)
+def test_a_derived_blocks_temporaries_outlive_its_call_of_the_base_body(variant):
+    """SUPER^() runs the base's body, which has a frame of its own (its VAR_TEMP t): when that call returns, the
+    derived body's reference to its own u still works (u := 7, then + 1 after SUPER^(); b = 4; d = 8 + 4)."""
+    text = """
+FUNCTION_BLOCK Base
+VAR_OUTPUT b : INT; END_VAR
+VAR_TEMP t : INT; p : POINTER TO INT; END_VAR
+p := ADR(t);
+p^ := 4;
+b := t;
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK Derived EXTENDS Base
+VAR_OUTPUT d : INT; END_VAR
+VAR_TEMP u : INT; q : POINTER TO INT; END_VAR
+q := ADR(u);
+q^ := 7;
+SUPER^();
+q^ := q^ + 1;
+d := u + b;
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR x : Derived; END_VAR
+x();
+END_PROGRAM
+"""
+    sim = build(text, variant).simulation()
+    for _ in range(2):
+        sim.cycle(1)
+        assert (sim.fault, sim.read("Main.x.b"), sim.read("Main.x.d")) == (None, 4, 12)
