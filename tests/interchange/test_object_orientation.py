@@ -157,3 +157,83 @@ END_PROGRAM
     sim = build_project(result.project).simulation()
     sim.cycle(1)
     assert (sim.read("Main.l"), sim.read("Main.r")) == (42, 21)
+
+
+PROGRAM_METHODS = """
+PROGRAM Store
+VAR total : INT; END_VAR
+METHOD PRIVATE Put : INT
+VAR_INPUT n : INT; END_VAR
+total := total + n;
+Put := total;
+END_METHOD
+METHOD Twice : INT
+VAR_OUTPUT was : INT; END_VAR
+was := total;
+Twice := THIS^.Put(total);
+END_METHOD
+PROPERTY Sum : INT
+GET
+Sum := total;
+END_GET
+SET
+total := Sum;
+END_SET
+END_PROPERTY
+Put(1);
+END_PROGRAM
+PROGRAM Main
+VAR a : INT; b : INT; s : INT; END_VAR
+a := Store.Twice(was => b);
+IF a > 10 THEN
+    Store.Sum := 0;
+END_IF;
+s := Store.Sum;
+END_PROGRAM
+"""
+
+
+def program_values(project) -> list[tuple[int, int, int]]:
+    """(Main.a, Main.b, Main.s) for three scans; by hand: Store adds 1, then Main's Twice doubles the total (was is
+    the total before) and a total above 10 is set back to 0 through the property's SET: total 1 -> 2 (a 2, b 1);
+    3 -> 6 (a 6, b 3); 7 -> 14 > 10 -> 0 (a 14, b 7, s 0)."""
+    result = build_project(project)
+    assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
+    sim = result.simulation()
+    return [(sim.cycle(1), sim.read("Main.a"), sim.read("Main.b"), sim.read("Main.s"))[1:] for _ in range(3)]
+
+
+PROGRAM_EXPECTED = [(2, 1, 2), (6, 3, 6), (14, 7, 0)]
+
+
+def test_a_programs_methods_and_properties_survive_the_st_export_and_plcopen():
+    """Issue 25 item 5 (CODESYS: methods and properties of a PROGRAM): the ST export writes them inside the PROGRAM
+    and imports back the same; PLCopen carries them as it carries an FB's, with LadderLab's data and without it
+    (CODESYS's ``.../plcopenxml/method`` and ``.../property`` entries alone); each import runs to the same values."""
+    original, diagnostics = source_to_project(PROGRAM_METHODS, "pm")
+    assert original is not None and diagnostics == []
+    assert program_values(original) == PROGRAM_EXPECTED
+    text = export_project_st(original).text
+    assert "METHOD PRIVATE Put : INT" in text and "PROPERTY PUBLIC Sum : INT" in text
+    assert text.index("PROGRAM Store") < text.index("METHOD PRIVATE Put") < text.index("END_PROGRAM")
+    again, diagnostics = source_to_project(text, "pm")
+    assert diagnostics == [] and again is not None
+    store = again.pou("Store")
+    assert ([m.name for m in store.methods], [p.name for p in store.properties]) == (["Put", "Twice"], ["Sum"])
+    assert program_values(again) == PROGRAM_EXPECTED
+    imported = import_plcopen(export_plcopen(original), name="pm")
+    assert imported.diagnostics == [] and imported.project == original
+    document = ET.fromstring(export_plcopen(original))
+    for parent in list(document.iter()):
+        for child in list(parent):
+            if child.get("name") == LADDERLAB_DATA:
+                parent.remove(child)
+    bare = import_plcopen(ET.tostring(document), name="pm")
+    assert bare.diagnostics == []
+    store = bare.project.pou("Store")
+    assert (store.kind, [(m.name, m.access) for m in store.methods]) == (
+        "program",
+        [("Put", "PRIVATE"), ("Twice", "PUBLIC")],
+    )
+    assert [p.name for p in store.properties] == ["Sum"] and "total := Sum;" in store.properties[0].set.body
+    assert program_values(bare.project) == PROGRAM_EXPECTED
