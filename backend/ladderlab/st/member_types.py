@@ -34,7 +34,7 @@ def _type_name(spec: ast.TypeSpec) -> str | None:
 class ProjectTypes:
     """The function blocks, programs, structures and INTERFACEs of a dumped project, by upper-case name."""
 
-    fields: dict[str, dict[str, str]] = field(default_factory=dict)  # FB (with inherited), PROGRAM or STRUCT: member -> type
+    fields: dict[str, dict[str, str]] = field(default_factory=dict)  # FB (inherited too), PROGRAM, STRUCT: var -> type
     bases: dict[str, str] = field(default_factory=dict)  # FB -> the FB it EXTENDS
     implements: dict[str, list[str]] = field(default_factory=dict)  # FB -> its INTERFACEs
     interface_bases: dict[str, list[str]] = field(default_factory=dict)  # INTERFACE -> those it EXTENDS

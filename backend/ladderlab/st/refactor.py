@@ -126,8 +126,8 @@ def rename_member(project: Project, fb: str, old: str, new: str) -> tuple[Projec
     overrides, interface methods and their implementations), and every use through a variable typed as one of them
     (``inst.Old(...)``, ``a.b.Old``, ``arr[i].Old``, ``r^.Old``, ``itf.Old()``, ``Prog.Old()``, LD/FBD boxes
     ``inst.Old``) or inside one of those FBs or programs (``THIS^.Old``, ``SUPER^.Old``, ``Old(...)``, a property's
-    bare ``Old``: the value its GET assigns and its SET reads, or a use in their code); and what changed. A path through a property or a
-    function's result is not followed: the check then reports the call it no longer finds."""
+    bare ``Old``: the value its GET assigns and its SET reads, or a use in their code); and what changed. A path
+    through a property or a function's result is not followed: the check then reports the call it no longer finds."""
     data = project.model_dump(by_alias=True)
     types = ProjectTypes.of(data)
     group = types.group(fb, old)
