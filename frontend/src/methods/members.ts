@@ -54,7 +54,9 @@ function refused(pou: Pou, name: string, except?: string): string | null {
 export function addMember(pou: Pou, kind: MemberKind, text: string): Edited {
   const name = text.trim();
   const error =
-    pou.kind !== "function_block" ? "Only a function block has methods and properties." : refused(pou, name);
+    pou.kind !== "function_block" && pou.kind !== "program"
+      ? "Only a function block or a program has methods and properties."
+      : refused(pou, name);
   if (error) return { ok: false, error };
   if (kind === "method") {
     const method: Method = {
