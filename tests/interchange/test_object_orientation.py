@@ -12,6 +12,7 @@ from ladderlab.interchange.plcopen.exporter import export_plcopen
 from ladderlab.interchange.plcopen.importer import import_plcopen
 from ladderlab.interchange.plcopen.xml_io import LADDERLAB_DATA
 from ladderlab.interchange.st.project import export_project_st
+from ladderlab.model.project import Method
 from ladderlab.simulation.build import build_project
 from ladderlab.st.project_text import source_to_project
 
@@ -237,3 +238,64 @@ def test_a_programs_methods_and_properties_survive_the_st_export_and_plcopen():
     )
     assert [p.name for p in store.properties] == ["Sum"] and "total := Sum;" in store.properties[0].set.body
     assert program_values(bare.project) == PROGRAM_EXPECTED
+
+
+SFC_WITH_METHOD = """
+PROGRAM Seq
+VAR n : INT; END_VAR
+METHOD Bump : INT
+VAR_INPUT inc : INT; END_VAR
+n := n + inc;
+Bump := n;
+END_METHOD
+INITIAL_STEP S1:
+  Count(N);
+END_STEP
+STEP S2:
+END_STEP
+TRANSITION FROM S1 TO S2 := n >= 3;
+END_TRANSITION
+TRANSITION FROM S2 TO S1 := FALSE;
+END_TRANSITION
+ACTION Count:
+  Bump(inc := 1);
+END_ACTION
+END_PROGRAM
+"""
+
+
+def test_diagram_and_sfc_programs_keep_their_methods_through_the_st_export():
+    """A program's methods are ST whatever its body's language: the ST export of an LD program and of an SFC one
+    (its scan as ST, and IEC textual SFC) writes them in the PROGRAM, and the text imports back with them and runs to
+    the same values. By hand, per scan: Lad's rung calls Lad.Twice through THIS^ (k + 2); Seq's step S1 runs Count
+    (N), which calls Bump(1), until n >= 3 takes the transition: n 1, 2, 3 (S2 active after scan 3); scan 4 runs Count
+    a last time as its step has left (IEC 61131-3's final scan of an action, Q falling): 4, then 4."""
+    from tests.ir.diagram_support import box, contact, ld_pou, rung
+
+    project, diagnostics = source_to_project(SFC_WITH_METHOD, "diagrams")
+    assert diagnostics == [] and project is not None
+    assert [m.name for m in project.pou("Seq").methods] == ["Bump"]  # (the textual SFC import keeps them)
+    twice = Method(name="Twice", return_type="INT", body="k := k + 2;\nTwice := k;")
+    lad = ld_pou(
+        "Lad",
+        "VAR q : INT; k : INT; END_VAR",
+        rung("n1", contact("c", "TRUE"), box("b", "THIS^.Twice", en=True, outputs={"OUT": "q"})),
+    )
+    project.pous.append(lad.model_copy(update={"methods": [twice]}))
+
+    def scans(made) -> list[tuple]:
+        result = build_project(made)
+        assert [d.format() for d in result.diagnostics if d.severity == "error"] == []
+        sim = result.simulation()
+        return [(sim.cycle(1), sim.read("Seq.n"), sim.read("Seq.S2.X"), sim.read("Lad.q"))[1:] for _ in range(5)]
+
+    expected = [(1, False, 2), (2, False, 4), (3, True, 6), (4, True, 8), (4, True, 10)]
+    assert scans(project) == expected
+    for sfc_text in (False, True):
+        exported = export_project_st(project, sfc_text=sfc_text)
+        assert exported.diagnostics == [] and "METHOD PUBLIC Twice : INT" in exported.text
+        assert "METHOD PUBLIC Bump : INT" in exported.text
+        again, diagnostics = source_to_project(exported.text, "diagrams")
+        assert diagnostics == [] and again is not None
+        assert [[m.name for m in again.pou(name).methods] for name in ("Seq", "Lad")] == [["Bump"], ["Twice"]]
+        assert scans(again) == expected

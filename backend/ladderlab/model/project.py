@@ -115,7 +115,9 @@ class Pou(Model):
     declarations: str = Field(default="", description="ST text of the VAR...END_VAR blocks, as typed.")
     body: str | LdBody | CfcBody | FbdBody | SfcBody = ""
     methods: list[Method] = Field(default_factory=list, description="Function blocks and programs only: their METHODs.")
-    properties: list[Property] = Field(default_factory=list, description="Function blocks and programs only: their PROPERTYs.")
+    properties: list[Property] = Field(
+        default_factory=list, description="Function blocks and programs only: their PROPERTYs."
+    )
     actions: list[PouAction] = Field(
         default_factory=list, description="Function blocks only: their ACTIONs outside SFC (CODESYS), ST bodies."
     )
