@@ -361,3 +361,29 @@ def test_a_breakpoint_in_a_program_method_halts_in_each_call_with_the_call_stack
     ]
     assert sim.resume() is None and sim.halted is None
     assert (sim.read("Tally.count"), sim.read("User.r"), sim.read("User.d")) == (7, 7, 14)
+
+
+def test_a_plants_methods_run_in_the_plant_and_control_code_cannot_call_them():
+    """A plant (issue 21) is a PROGRAM that models the process: its own body calls its method (level rises by 1 each
+    scan), while control code calling ``Tank.Fill()`` or reading its property is ST-PLANT at the call, as calling the
+    plant itself is."""
+    from ladderlab.model.project import Accessor, Property
+
+    tank = Pou(
+        name="Tank",
+        kind="plant",
+        language="st",
+        declarations="VAR level : INT; END_VAR",
+        body="level := level + Fill();",
+        methods=[Method(name="Fill", return_type="INT", body="Fill := 1;")],
+        properties=[Property(name="Height", type="INT", get=Accessor(body="Height := level;"))],
+    )
+    main = Pou(name="Main", kind="program", language="st", declarations="VAR x : INT; END_VAR", body="")
+    sim = build_project(Project(name="p", pous=[tank, main])).simulation()
+    sim.cycle(3)
+    assert sim.read("Tank.level") == 3
+    calling = main.model_copy(update={"body": "x := Tank.Fill();\nx := Tank.Height;"})
+    found = [
+        (d.code, d.file, d.line, d.column) for d in build_project(Project(name="p", pous=[tank, calling])).diagnostics
+    ]
+    assert found == [("ST-PLANT", "Main/body", 1, 6), ("ST-PLANT", "Main/body", 2, 6)]

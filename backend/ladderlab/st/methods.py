@@ -237,8 +237,17 @@ def this_type(checker: Any, node: ast.Deref) -> Type | None:
 
 
 def check_access(checker: Any, info: MethodInfo, node: ast.Expr, what: str, verb: str) -> None:
-    """PRIVATE: only the FB's own code may use it; PROTECTED: also the FBs derived from it (located error)."""
+    """PRIVATE: only the FB's own code may use it; PROTECTED: also the FBs derived from it; a plant's (a PROGRAM
+    modelling the process, issue 21): only the plant itself (located errors)."""
     caller_fb = _own_fb(checker.pou)
+    if info.owner.plant and caller_fb is not info.owner:
+        checker.report(
+            "ST-PLANT",
+            f"{what} {info.owner.name}.{info.name} belongs to the plant {info.owner.name}, which models the process: "
+            f"control code cannot {verb} it (read and write the signals it shares instead)",
+            node,
+        )
+        return
     if (info.access == "PRIVATE" and caller_fb is not info.owner) or (
         info.access == "PROTECTED" and (caller_fb is None or not caller_fb.derives_from(info.owner))
     ):
