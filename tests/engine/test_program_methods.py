@@ -224,8 +224,21 @@ END_RESOURCE
 END_CONFIGURATION
 """
     project, _ = source_to_project(text, "p")
-    found = [(d.code, d.file, d.line, d.column) for d in build_project(project).diagnostics if d.severity == "error"]
-    assert found == [("IR-UNSUPPORTED", "User/body", 11, 6)]
+    found = [
+        (d.code, d.file, d.line, d.column, d.message)
+        for d in build_project(project).diagnostics
+        if d.severity == "error"
+    ]
+    assert found == [
+        (
+            "IR-UNSUPPORTED",
+            "User/body",
+            11,
+            6,
+            "the program Counter runs as its instances a, b: other POUs call the instance named like the program "
+            "(PROGRAM Counter : Counter in the configuration)",
+        )
+    ]
 
 
 def test_private_and_protected_methods_of_a_program_are_refused_outside_it():
