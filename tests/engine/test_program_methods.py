@@ -400,3 +400,25 @@ def test_a_plants_methods_run_in_the_plant_and_control_code_cannot_call_them():
         (d.code, d.file, d.line, d.column) for d in build_project(Project(name="p", pous=[tank, calling])).diagnostics
     ]
     assert found == [("ST-PLANT", "Main/body", 1, 6), ("ST-PLANT", "Main/body", 2, 6)]
+
+
+def test_a_test_file_calls_a_program_method_between_scans():
+    """A TEST (docs/testing.md) reaches the program through its link ``Tally``: ``Tally.Add(n := 5)`` runs on the
+    program's instance (count 0 -> 5), then one scan of Tally's body adds 1 and 2 (8 <= 20: no Reset); the property
+    reads 8 * 10."""
+    from tests.testing.helpers import outcomes
+    from tests.testing.helpers import run as run_tests
+
+    tests = """
+TEST 'a program method from a test'
+  ASSERT_EQ(Tally.Add(n := 5), 5);
+  ASSERT_EQ(Tally.count, 5);
+  RUN_SCANS(1);
+  ASSERT_EQ(Tally.count, 8);
+  ASSERT_EQ(Tally.Level, 80);
+  ASSERT_EQ(Tally.last, 6 + 8);
+END_TEST
+"""
+    assert outcomes(run_tests(TALLY, tests)) == {"a program method from a test": None}
+    failing = tests.replace("ASSERT_EQ(Tally.count, 8);", "ASSERT_EQ(Tally.count, 9);")
+    assert outcomes(run_tests(TALLY, failing))["a program method from a test"] is not None
