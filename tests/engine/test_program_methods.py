@@ -422,3 +422,10 @@ END_TEST
     assert outcomes(run_tests(TALLY, tests)) == {"a program method from a test": None}
     failing = tests.replace("ASSERT_EQ(Tally.count, 8);", "ASSERT_EQ(Tally.count, 9);")
     assert outcomes(run_tests(TALLY, failing))["a program method from a test"] is not None
+
+
+def test_a_program_method_does_not_call_a_program():
+    """POU-32 (functions and FBs cannot call programs) holds for methods, a program's too: the message names the
+    method, not the function it is checked as."""
+    text = "PROGRAM Main\nMETHOD M\nO();\nEND_METHOD\nM();\nEND_PROGRAM\nPROGRAM O\nEND_PROGRAM\n"
+    assert errors(text) == [("ST-NOT-CALLABLE", "Main.M/body", "a method cannot call the program O")]
