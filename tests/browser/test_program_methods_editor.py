@@ -1,7 +1,7 @@
 """Issue 25 item 5: a METHOD of a PROGRAM edited in the browser (CODESYS has them). The program's Methods tab adds
 a method (without the FINAL / ABSTRACT a function block's has: nothing extends a program), the tree lists it under
 the program and opens it, the program's body calls it bare and through ``THIS^`` and another program as
-``Main.Add``; saved and run, the values are the ones worked out from the texts; a breakpoint in the method's body
+``Main.Add``; a rename there and back takes those calls along; saved and run, the values are the ones worked out from the texts; a breakpoint in the method's body
 halts in the engine's POU ``MAIN.ADD`` with the call stack Main -> Main.Add (ON-03)."""
 
 from __future__ import annotations
@@ -14,7 +14,7 @@ from playwright.sync_api import expect
 from .conftest import ARTIFACTS
 from .steps import _request, go_online, open_pou, store_project, watch
 from .test_cfc_workflow import cycles
-from .test_methods_editor import editor
+from .test_methods_editor import editor, preview_rename
 
 pytestmark = pytest.mark.browser
 
@@ -52,20 +52,48 @@ def test_a_program_method_is_added_called_run_and_halted_in(page, server, tmp_pa
     page.get_by_role("button", name="Add method", exact=True).click()
     page.get_by_label("Result type of Add").fill("INT")
     editor(page, "Main.Add declarations").fill("VAR_INPUT\n    k : INT;\nEND_VAR")
-    editor(page, "Main.Add body").fill("total := total + k;\nAdd := total;")
     expect(members.get_by_role("button")).to_have_text(["MAdd"])
     expect(page.get_by_label("FINAL Add")).to_have_count(0)
     tree = page.get_by_role("navigation", name="Project tree")
     expect(tree.get_by_role("button", name="Add : INT")).to_be_visible()
 
     page.get_by_role("tab", name="Body").click()
-    editor(page, "Main body").fill("r := Add(k := 1);\nr := r + THIS^.Add(k := 2);")
+    editor(page, "Main body").fill("r := Put(k := 1);\nr := r + THIS^.Put(k := 2);")
+    page.get_by_role("tab", name="Methods").click()
+    editor(page, "Main.Add body").fill("total := total + k;\nAdd := total;")
+
+    # Renamed Put, then back to Add: the preview lists the method, its result variable, Main's bare and THIS^ calls
+    # (here still Put: not the method's) and Other's Main.Add call
+    dialog, places = preview_rename(page, members, "Main", "Add", "Put")
+    assert places == [
+        "Main METHOD Add",
+        "Main.Add, body line 2 Add := total;",
+        "Other, body line 1 x := Main.Add(k := 10);",
+    ]
+    dialog.get_by_role("button", name="Rename", exact=True).click()
+    expect(dialog).to_have_count(0)
+    expect(members.get_by_role("button")).to_have_text(["MPut"])
+    dialog, places = preview_rename(page, members, "Main", "Put", "Add")
+    assert places == [
+        "Main, body line 1 r := Put(k := 1);",
+        "Main, body line 2 r := r + THIS^.Put(k := 2);",
+        "Main METHOD Put",
+        "Main.Put, body line 2 Put := total;",
+        "Other, body line 1 x := Main.Put(k := 10);",
+    ]
+    dialog.get_by_role("button", name="Rename", exact=True).click()
+    expect(dialog).to_have_count(0)
     page.keyboard.press("Control+s")
     page.get_by_text("All changes saved").wait_for()
-    main = _request("GET", f"{server}/api/projects/progmeth")["project"]["pous"][0]
+    project = _request("GET", f"{server}/api/projects/progmeth")["project"]
+    main, other = project["pous"]
     assert [(m["name"], m["return_type"], m["body"]) for m in main["methods"]] == [
         ("Add", "INT", "total := total + k;\nAdd := total;")
     ]
+    assert (main["body"], other["body"]) == (
+        "r := Add(k := 1);\nr := r + THIS^.Add(k := 2);",
+        "x := Main.Add(k := 10);",
+    )
     saved = json.loads((tmp_path / "workspace" / "progmeth" / "pous" / "Main.st.json").read_text())
     assert [m["name"] for m in saved["methods"]] == ["Add"]
 
