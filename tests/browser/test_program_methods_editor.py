@@ -62,8 +62,8 @@ def test_a_program_method_is_added_called_run_and_halted_in(page, server, tmp_pa
     page.get_by_role("tab", name="Methods").click()
     editor(page, "Main.Add body").fill("total := total + k;\nAdd := total;")
 
-    # Renamed Put, then back to Add: the preview lists the method, its result variable, Main's bare and THIS^ calls
-    # (here still Put: not the method's) and Other's Main.Add call
+    # Renamed Put: the preview lists the method, its result variable and Other's Main.Add call (Main's body calls
+    # Put, no method yet: untouched); back to Add, also Main's bare and THIS^ calls of it
     dialog, places = preview_rename(page, members, "Main", "Add", "Put")
     assert places == [
         "Main METHOD Add",
