@@ -212,8 +212,8 @@ def is_super(node: ast.Expr) -> bool:
 
 
 def this_type(checker: Any, node: ast.Deref) -> Type | None:
-    """``THIS^`` in a function block or its method: the instance the code runs on; ``SUPER^``: the same seen as
-    the FB's base. None: neither (or a variable declared with that name)."""
+    """``THIS^`` in a function block, a program or their methods: the instance the code runs on; ``SUPER^``: the
+    same seen as the FB's base. None: neither (or a variable declared with that name)."""
     caller, base = checker.pou, node.base
     if not isinstance(base, ast.Name) or base.name.upper() not in (THIS, SUPER):
         return None
@@ -223,7 +223,9 @@ def this_type(checker: Any, node: ast.Deref) -> Type | None:
     owner = _own_fb(caller)
     if owner is None:
         checker.report(
-            "ST-UNKNOWN-VAR", f"{base.name.upper()}^ is only known in a function block and its methods", node
+            "ST-UNKNOWN-VAR",
+            f"{base.name.upper()}^ is only known in a function block, a program and their methods",
+            node,
         )
         return ERROR
     if base.name.upper() == THIS:
