@@ -10,8 +10,8 @@ export type MemberKind = "method" | "property";
  * choices. A Record, so a specifier added to the model (backend model/project.py MethodAccess) fails to compile here. */
 export const ACCESS_MEANING: Record<Access, string> = {
   PUBLIC: "any code may use it",
-  PRIVATE: "only its own function block",
-  PROTECTED: "its function block and those derived from it",
+  PRIVATE: "only its own function block or program",
+  PROTECTED: "its function block and those derived from it (a program: only itself)",
   INTERNAL: "code of this project (its namespace)",
 };
 
