@@ -429,3 +429,46 @@ def test_a_program_method_does_not_call_a_program():
     method, not the function it is checked as."""
     text = "PROGRAM Main\nMETHOD M\nO();\nEND_METHOD\nM();\nEND_PROGRAM\nPROGRAM O\nEND_PROGRAM\n"
     assert errors(text) == [("ST-NOT-CALLABLE", "Main.M/body", "a method cannot call the program O")]
+
+
+def test_an_ld_box_and_an_fbd_block_call_a_program_method():
+    """In LD and FBD a method call is a box ``Prog.M`` (CODESYS), as ``inst.M`` is for an FB: the LD box (EN from a
+    TRUE contact) puts 5 into Store, then the FBD block puts 3 and reads the output ``was`` (the total before): per
+    scan +8 in all, so after scan k: Lad.r = 8k - 3, Side.f = 8k, Side.g = 8k - 3."""
+    from tests.ir.diagram_support import blk, box, contact, fbd_pou, inp, ld_pou, net, out, rung
+
+    store = """
+PROGRAM Store
+VAR total : INT; END_VAR
+METHOD Put : INT
+VAR_INPUT n : INT; END_VAR
+VAR_OUTPUT was : INT; END_VAR
+was := total;
+total := total + n;
+Put := total;
+END_METHOD
+END_PROGRAM
+"""
+    project, diagnostics = source_to_project(store, "boxes")
+    assert project is not None and diagnostics == []
+    puts = box("b1", "Store.Put", en=True, n="5", outputs={"OUT": "r"})
+    network = net(
+        "n1",
+        [inp("i", "3"), blk("a", "Store.Put"), out("o", "f"), out("w", "g")],
+        [("i.OUT", "a.n"), ("a.OUT", "o.IN"), ("a.was", "w.IN")],
+        order=["a", "o", "w"],
+    )
+    project.pous += [
+        ld_pou("Lad", "VAR r : INT; END_VAR", rung("n1", contact("k", "TRUE"), puts)),
+        fbd_pou("Side", "VAR f : INT; g : INT; END_VAR", network),
+    ]
+    sim = run_project(project)
+    for k in (1, 2, 3):
+        sim.cycle(1)
+        assert (sim.read("Lad.r"), sim.read("Side.f"), sim.read("Side.g")) == (8 * k - 3, 8 * k, 8 * k - 3)
+
+
+def run_project(project):
+    result = build_project(project)
+    assert [d.format() for d in result.diagnostics] == []
+    return result.simulation()
